@@ -1,0 +1,56 @@
+"""Write files so that a failure never leaves half an output behind.
+
+Each writer renders into a temporary file in the target directory and renames it over the target
+(``os.replace`` is atomic on POSIX). :class:`OutputSet` stages several files and commits them only
+when all were rendered, which is what ``vei compile`` needs: either every output or none.
+"""
+
+from __future__ import annotations
+
+import os
+import tempfile
+from pathlib import Path
+
+
+def write_bytes_atomic(path: Path, data: bytes) -> None:
+    """Write ``data`` to ``path`` through a temporary file and a rename."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    try:
+        with os.fdopen(fd, "wb") as fh:
+            fh.write(data)
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
+
+
+class OutputSet:
+    """Collect rendered outputs in memory and write all of them, or none, on :meth:`commit`."""
+
+    def __init__(self) -> None:
+        self._files: dict[Path, bytes] = {}
+
+    def add(self, path: Path, data: bytes | str) -> None:
+        self._files[Path(path)] = data.encode("utf-8") if isinstance(data, str) else data
+
+    @property
+    def paths(self) -> list[Path]:
+        return list(self._files)
+
+    def commit(self) -> None:
+        staged: list[tuple[str, Path]] = []
+        try:
+            for path, data in self._files.items():
+                path.parent.mkdir(parents=True, exist_ok=True)
+                fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+                with os.fdopen(fd, "wb") as fh:
+                    fh.write(data)
+                staged.append((tmp, path))
+        except BaseException:
+            for tmp, _ in staged:
+                Path(tmp).unlink(missing_ok=True)
+            raise
+        for tmp, path in staged:
+            os.replace(tmp, path)

@@ -1,0 +1,180 @@
+"""Load and check a ``vei-clip/1`` file.
+
+Two layers: the JSON Schema (``schemas/clip.schema.json``) pins types, ranges and allowed fields; the
+checks here pin what a schema cannot say (strictly increasing times, annotations inside the GPS time
+span, tracks that are not empty). Every failure is one :class:`VeiInputError` naming the field.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from functools import lru_cache
+from importlib import resources
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from vei_scenario.clip.model import (
+    DEFAULT_EGO_LENGTH_M,
+    DEFAULT_EGO_WIDTH_M,
+    SCOOTER_CATEGORIES,
+    Annotations,
+    Clip,
+    EgoTrack,
+    Observation,
+)
+from vei_scenario.errors import VeiInputError
+
+
+@lru_cache(maxsize=1)
+def clip_schema() -> dict:
+    text = resources.files("vei_scenario").joinpath("data/clip.schema.json").read_text("utf-8")
+    return json.loads(text)
+
+
+def _reject_constant(name: str) -> Any:
+    raise ValueError(f"{name} is not a number JSON allows")
+
+
+def _field_path(parts) -> str:
+    out = ""
+    for p in parts:
+        out += f"[{p}]" if isinstance(p, int) else (f".{p}" if out else str(p))
+    return out or "(top level)"
+
+
+def _read_json(path: Path) -> Any:
+    if not path.is_file():
+        raise VeiInputError(path, "", "file not found")
+    try:
+        text = path.read_text("utf-8")
+    except UnicodeDecodeError as exc:
+        raise VeiInputError(path, "", f"not UTF-8 text ({exc.reason} at byte {exc.start})") from None
+    except OSError as exc:
+        raise VeiInputError(path, "", f"cannot read: {exc.strerror or exc}") from None
+    try:
+        return json.loads(text, parse_constant=_reject_constant)
+    except json.JSONDecodeError as exc:
+        raise VeiInputError(path, f"line {exc.lineno} column {exc.colno}", f"invalid JSON: {exc.msg}") from None
+    except ValueError as exc:  # NaN / Infinity literals
+        raise VeiInputError(path, "", f"invalid JSON: {exc}") from None
+
+
+def _schema_check(path: Path, doc: Any) -> None:
+    import jsonschema
+
+    validator = jsonschema.Draft202012Validator(clip_schema())
+    errors = sorted(validator.iter_errors(doc), key=lambda e: (len(e.absolute_path), list(map(str, e.absolute_path))))
+    if not errors:
+        return
+    err = jsonschema.exceptions.best_match(errors)
+    where = _field_path(err.absolute_path)
+    if err.validator == "additionalProperties":
+        reason = f"{err.message} (extra fields belong under an 'extensions' object)"
+    elif err.validator == "const" and list(err.absolute_path) == ["format"]:
+        reason = f"unsupported format {err.instance!r}; expected 'vei-clip/1'"
+    else:
+        reason = err.message
+    raise VeiInputError(path, where, reason)
+
+
+def _strictly_increasing(path: Path, values: np.ndarray, field: str) -> None:
+    bad = np.nonzero(np.diff(values) <= 0)[0]
+    if bad.size:
+        i = int(bad[0]) + 1
+        what = "duplicate" if values[i] == values[i - 1] else "decreasing"
+        raise VeiInputError(
+            path, field.format(i=i), f"times must be strictly increasing ({what}: {values[i]!r} after {values[i - 1]!r})"
+        )
+
+
+def load_clip(path: str | Path) -> Clip:
+    """Read, validate and normalise a clip file. Raises :class:`VeiInputError` on any bad input."""
+    path = Path(path)
+    doc = _read_json(path)
+    _schema_check(path, doc)
+
+    ego_doc = doc["ego"]
+    samples = ego_doc["samples"]
+    cols = {k: np.array([float(s[k]) for s in samples]) for k in ("t", "lat", "lon", "heading_deg", "speed_mps")}
+    for k, arr in cols.items():  # json forbids NaN already; huge exponents can still overflow to inf
+        bad = np.nonzero(~np.isfinite(arr))[0]
+        if bad.size:
+            raise VeiInputError(path, f"ego.samples[{int(bad[0])}].{k}", "not a finite number")
+    _strictly_increasing(path, cols["t"], "ego.samples[{i}].t")
+    ego = EgoTrack(
+        t=cols["t"],
+        lat=cols["lat"],
+        lon=cols["lon"],
+        heading_deg=cols["heading_deg"],
+        speed_mps=cols["speed_mps"],
+        length_m=float(ego_doc.get("length_m", DEFAULT_EGO_LENGTH_M)),
+        width_m=float(ego_doc.get("width_m", DEFAULT_EGO_WIDTH_M)),
+    )
+
+    ann_doc = doc["annotations"]
+    offset = float(ann_doc.get("time_offset_s", 0.0))
+    y_axis = ann_doc.get("y_axis", "right")
+    frames = ann_doc["frames"]
+    frame_t = np.array([float(f["t"]) for f in frames])
+    if not np.all(np.isfinite(frame_t)):
+        i = int(np.nonzero(~np.isfinite(frame_t))[0][0])
+        raise VeiInputError(path, f"annotations.frames[{i}].t", "not a finite number")
+    _strictly_increasing(path, frame_t, "annotations.frames[{i}].t")
+
+    t0, t1 = ego.t[0], ego.t[-1]
+    observations: list[Observation] = []
+    categories: dict[str, str] = {}
+    for i, frame in enumerate(frames):
+        t_gps = frame_t[i] + offset
+        seen: set[str] = set()
+        for j, obj in enumerate(frame["objects"]):
+            where = f"annotations.frames[{i}].objects[{j}]"
+            tid = obj["track_id"]
+            if tid in seen:
+                raise VeiInputError(path, f"{where}.track_id", f"track {tid!r} appears twice in one frame")
+            seen.add(tid)
+            if categories.setdefault(tid, obj["category"]) != obj["category"]:
+                raise VeiInputError(
+                    path, f"{where}.category", f"track {tid!r} changes category ({categories[tid]!r} → {obj['category']!r})"
+                )
+            if not (t0 - 1e-9 <= t_gps <= t1 + 1e-9):
+                raise VeiInputError(
+                    path,
+                    f"annotations.frames[{i}].t",
+                    f"annotation at GPS time {t_gps:.3f} s (t + time_offset_s) lies outside the ego GPS span "
+                    f"[{t0:.3f}, {t1:.3f}] s",
+                )
+            for k in ("x_m", "y_m"):
+                if not math.isfinite(float(obj[k])):
+                    raise VeiInputError(path, f"{where}.{k}", "not a finite number")
+            observations.append(Observation(float(frame_t[i]), tid, obj["category"], float(obj["x_m"]), float(obj["y_m"]), i))
+
+    annotations = Annotations(offset, y_axis, frame_t, tuple(observations))
+    scooters = annotations.tracks(SCOOTER_CATEGORIES)
+    if not scooters:
+        raise VeiInputError(
+            path, "annotations.frames", f"no e-scooter track (category one of {sorted(SCOOTER_CATEGORIES)})"
+        )
+    for tid, obs in scooters.items():
+        if len(obs) < 2:
+            raise VeiInputError(
+                path,
+                f"annotations.frames[{obs[0].frame_index}].objects",
+                f"track {tid!r} has {len(obs)} observation; at least 2 are needed to reconstruct a trajectory",
+            )
+
+    osm_path = None
+    if "map" in doc and "osm" in doc["map"]:
+        osm_path = (path.parent / doc["map"]["osm"]).resolve()
+    return Clip(
+        path=path,
+        id=doc["id"],
+        recorded_at=doc.get("recorded_at"),
+        ego=ego,
+        annotations=annotations,
+        osm_path=osm_path,
+        extensions=doc.get("extensions", {}),
+    )

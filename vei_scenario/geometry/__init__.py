@@ -1,0 +1,1 @@
+"""Geometry and reconstruction: map projection, time sync, ego frame → world, resampling, conflicts."""

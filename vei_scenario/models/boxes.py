@@ -1,0 +1,37 @@
+"""Oriented bounding boxes and their overlap by the separating-axis theorem, vectorised.
+
+Two convex boxes in the plane are disjoint iff some edge normal of one of them separates their
+projections; four axes suffice for two rectangles. Arrays broadcast, so the same code checks one pair
+per step in the interpreter or thousands of (shift, time) pairs in the conflict analysis.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+
+def box_corners(x, y, yaw, length, width) -> np.ndarray:
+    """Corners (..., 4, 2) of boxes centred at (x, y), counter-clockwise."""
+    x, y, yaw = np.broadcast_arrays(np.asarray(x, float), np.asarray(y, float), np.asarray(yaw, float))
+    c, s = np.cos(yaw), np.sin(yaw)
+    hl, hw = 0.5 * length, 0.5 * width
+    local = np.array([[hl, hw], [-hl, hw], [-hl, -hw], [hl, -hw]])
+    cx = x[..., None] + c[..., None] * local[:, 0] - s[..., None] * local[:, 1]
+    cy = y[..., None] + s[..., None] * local[:, 0] + c[..., None] * local[:, 1]
+    return np.stack([cx, cy], axis=-1)
+
+
+def boxes_overlap(xa, ya, yawa, la, wa, xb, yb, yawb, lb, wb) -> np.ndarray:
+    """True where box A and box B intersect (touching counts as intersecting)."""
+    dx = np.asarray(xb, float) - np.asarray(xa, float)
+    dy = np.asarray(yb, float) - np.asarray(ya, float)
+    ca, sa = np.cos(yawa), np.sin(yawa)
+    cb, sb = np.cos(yawb), np.sin(yawb)
+    sep = np.zeros(np.broadcast(dx, dy, ca, cb).shape, bool)
+    # Axes: A's x and y, B's x and y. Projection radius of a box on unit axis (ux, uy):
+    # hl*|u·e_long| + hw*|u·e_lat|.
+    for ux, uy in ((ca, sa), (-sa, ca), (cb, sb), (-sb, cb)):
+        ra = 0.5 * la * np.abs(ux * ca + uy * sa) + 0.5 * wa * np.abs(-ux * sa + uy * ca)
+        rb = 0.5 * lb * np.abs(ux * cb + uy * sb) + 0.5 * wb * np.abs(-ux * sb + uy * cb)
+        sep |= np.abs(dx * ux + dy * uy) > ra + rb
+    return ~sep
