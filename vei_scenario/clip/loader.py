@@ -86,7 +86,9 @@ def _strictly_increasing(path: Path, values: np.ndarray, field: str) -> None:
         i = int(bad[0]) + 1
         what = "duplicate" if values[i] == values[i - 1] else "decreasing"
         raise VeiInputError(
-            path, field.format(i=i), f"times must be strictly increasing ({what}: {values[i]!r} after {values[i - 1]!r})"
+            path,
+            field.format(i=i),
+            f"times must be strictly increasing ({what}: {values[i]!r} after {values[i - 1]!r})",
         )
 
 
@@ -138,7 +140,9 @@ def load_clip(path: str | Path) -> Clip:
             seen.add(tid)
             if categories.setdefault(tid, obj["category"]) != obj["category"]:
                 raise VeiInputError(
-                    path, f"{where}.category", f"track {tid!r} changes category ({categories[tid]!r} → {obj['category']!r})"
+                    path,
+                    f"{where}.category",
+                    f"track {tid!r} changes category ({categories[tid]!r} → {obj['category']!r})",
                 )
             if not (t0 - 1e-9 <= t_gps <= t1 + 1e-9):
                 raise VeiInputError(
@@ -150,7 +154,9 @@ def load_clip(path: str | Path) -> Clip:
             for k in ("x_m", "y_m"):
                 if not math.isfinite(float(obj[k])):
                     raise VeiInputError(path, f"{where}.{k}", "not a finite number")
-            observations.append(Observation(float(frame_t[i]), tid, obj["category"], float(obj["x_m"]), float(obj["y_m"]), i))
+            observations.append(
+                Observation(float(frame_t[i]), tid, obj["category"], float(obj["x_m"]), float(obj["y_m"]), i)
+            )
 
     annotations = Annotations(offset, y_axis, frame_t, tuple(observations))
     scooters = annotations.tracks(SCOOTER_CATEGORIES)

@@ -107,19 +107,30 @@ def analyse_conflict(
         window = (ego.t >= te - SHIFT_SCAN_S - 5) & (ego.t <= te + SHIFT_SCAN_S + 5)
         et = ego.t[window]
         qx, qy, qyaw = state_at(scooter, et[None, :] - shifts[:, None])
-        hit = boxes_overlap(
-            ego.x[window], ego.y[window], ego.yaw[window], *ego_box, qx, qy, qyaw, *scooter_box
-        ).any(axis=1)
+        hit = boxes_overlap(ego.x[window], ego.y[window], ego.yaw[window], *ego_box, qx, qy, qyaw, *scooter_box).any(
+            axis=1
+        )
         centre = int(np.argmin(np.abs(shifts - shift)))
         if hit.any():
             idx = np.nonzero(hit)[0]
             # The contiguous run nearest the conflict shift.
             runs = np.split(idx, np.nonzero(np.diff(idx) > 1)[0] + 1)
-            run = min(runs, key=lambda r: 0 if r[0] <= centre <= r[-1] else min(abs(r[0] - centre), abs(r[-1] - centre)))
+            run = min(
+                runs, key=lambda r: 0 if r[0] <= centre <= r[-1] else min(abs(r[0] - centre), abs(r[-1] - centre))
+            )
             interval = (float(shifts[run[0]]), float(shifts[run[-1]]))
     return Conflict(
-        track_id, float(px), float(py), float(dist), float(te), float(ts), float(shift), bool(reaches),
-        rec_dist, rec_coll, interval,
+        track_id,
+        float(px),
+        float(py),
+        float(dist),
+        float(te),
+        float(ts),
+        float(shift),
+        bool(reaches),
+        rec_dist,
+        rec_coll,
+        interval,
     )
 
 

@@ -12,13 +12,17 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from scipy.interpolate import make_smoothing_spline
-
 from vei_scenario.clip.model import SCOOTER_CATEGORIES, Clip
 from vei_scenario.geometry.angles import slerp_yaw, unwrap_continuous
 from vei_scenario.geometry.frames import ego_to_world
 from vei_scenario.geometry.projection import LocalProjection
-from vei_scenario.geometry.resample import Trajectory, output_grid, position_spline, resample_keyframes
+from vei_scenario.geometry.resample import (
+    Trajectory,
+    output_grid,
+    position_spline,
+    resample_keyframes,
+    smoothing_spline,
+)
 
 #: A gap between two observations of one track longer than this is reported (the spline bridges it).
 GAP_REPORT_S = 2.5
@@ -88,12 +92,15 @@ def reconstruct(clip: Clip, rate_hz: float = 10.0, smooth: bool = True) -> Recon
     fix_x, fix_y = proj.forward(ego.lat, ego.lon)
     fix_yaw = unwrap_continuous(proj.heading_to_yaw(ego.lat, ego.lon, ego.heading_deg))
     if smooth and fix_t.size >= 5:
-        fix_yaw = make_smoothing_spline(fix_t, fix_yaw)(fix_t)
+        fix_yaw = smoothing_spline(fix_t, fix_yaw)(fix_t)
 
     sx, sy = position_spline(fix_t, fix_x, fix_y, smooth)
     grid = output_grid(0.0, float(fix_t[-1]), rate_hz)
     ego_traj = Trajectory(
-        grid, np.asarray(sx(grid)), np.asarray(sy(grid)), slerp_yaw(fix_t, fix_yaw, grid),
+        grid,
+        np.asarray(sx(grid)),
+        np.asarray(sy(grid)),
+        slerp_yaw(fix_t, fix_yaw, grid),
         np.hypot(sx(grid, 1), sy(grid, 1)),
     )
 

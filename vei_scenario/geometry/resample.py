@@ -48,11 +48,40 @@ def output_grid(t_start: float, t_end: float, rate_hz: float) -> np.ndarray:
     return grid[keep]
 
 
+#: Generalised cross-validation runs on at most this many samples (scipy's GCV costs a Python loop per
+#: sample and evaluation); the penalty it finds applies to the whole series, whose noise and sampling
+#: interval are the same throughout a clip.
+GCV_WINDOW = 400
+
+
+def smoothing_spline(t: np.ndarray, y: np.ndarray):
+    """Cubic smoothing spline of y(t) with the penalty chosen by generalised cross-validation."""
+    if t.size <= GCV_WINDOW:
+        return make_smoothing_spline(t, y)
+    probe = make_smoothing_spline(t[:GCV_WINDOW], y[:GCV_WINDOW])
+    lam = _penalty_of(probe, t[:GCV_WINDOW], y[:GCV_WINDOW])
+    return make_smoothing_spline(t, y, lam=lam)
+
+
+def _penalty_of(spline, t: np.ndarray, y: np.ndarray) -> float:
+    """Recover the GCV penalty scipy chose (it is not returned) by matching the fit at the samples."""
+    target = spline(t)
+    lo, hi = -12.0, 6.0
+    for _ in range(60):  # bisection on log10(lam): the residual grows monotonically with lam
+        mid = 0.5 * (lo + hi)
+        res = np.sum((make_smoothing_spline(t, y, lam=10**mid)(t) - y) ** 2)
+        if res < np.sum((target - y) ** 2):
+            lo = mid
+        else:
+            hi = mid
+    return float(10 ** (0.5 * (lo + hi)))
+
+
 def position_spline(t: np.ndarray, x: np.ndarray, y: np.ndarray, smooth: bool) -> tuple:
-    """Cubic splines x(t), y(t). ``smooth`` picks a smoothing spline with the penalty chosen by
-    generalised cross-validation (for noisy GPS); otherwise an interpolating not-a-knot spline."""
+    """Cubic splines x(t), y(t). ``smooth`` picks smoothing splines with the penalty chosen by
+    generalised cross-validation (for noisy GPS); otherwise interpolating not-a-knot splines."""
     if smooth and t.size >= 5:
-        return make_smoothing_spline(t, x), make_smoothing_spline(t, y)
+        return smoothing_spline(t, x), smoothing_spline(t, y)
     return CubicSpline(t, x), CubicSpline(t, y)
 
 

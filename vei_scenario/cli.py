@@ -1,0 +1,97 @@
+"""``vei``: the command line, a thin layer over the library.
+
+Each sub-command parses its arguments and calls one library function. User errors
+(:class:`~vei_scenario.errors.VeiInputError`) print one line ``vei: error: FILE: FIELD: REASON`` and
+exit with code 2; validation findings exit with 1.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from vei_scenario import __version__
+from vei_scenario.errors import VeiInputError
+
+EXIT_USER_ERROR = 2
+
+
+def _osc_minor(text: str) -> int:
+    parts = text.split(".")
+    if len(parts) != 2 or parts[0] != "1" or not parts[1].isdigit():
+        raise argparse.ArgumentTypeError(f"expected 1.0, 1.1, 1.2 or 1.3, not {text!r}")
+    return int(parts[1])
+
+
+def _cmd_compile(args: argparse.Namespace) -> int:
+    from vei_scenario.compiler import CompileOptions, compile_clip
+    from vei_scenario.reports.compile_report import compile_report
+
+    opts = CompileOptions(
+        rate_hz=args.rate,
+        osc_minor_version=args.osc_version,
+        osm=Path(args.osm) if args.osm else None,
+        osm_fetch=args.osm_fetch,
+        no_map=args.no_map,
+        threat=args.threat,
+        variants_dir=Path(args.variants) if args.variants else None,
+    )
+    result = compile_clip(args.clip, args.output, opts)
+    print(compile_report(result))
+    return 0
+
+
+def _cmd_validate(args: argparse.Namespace) -> int:
+    from vei_scenario.openscenario.validation import format_problems, validate_files
+
+    problems = validate_files([Path(f) for f in args.files])
+    print(format_problems(problems, args.format, [Path(f) for f in args.files]))
+    return 1 if problems else 0
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="vei", description="Annotated vehicle–e-scooter clips → ASAM OpenSCENARIO/OpenDRIVE test scenarios."
+    )
+    parser.add_argument("--version", action="version", version=f"vei-scenario {__version__}")
+    sub = parser.add_subparsers(dest="command", required=True)
+
+    c = sub.add_parser("compile", help="compile an annotated clip into OpenSCENARIO + OpenDRIVE")
+    c.add_argument("clip", help="vei-clip/1 JSON file")
+    c.add_argument(
+        "-o", "--output", required=True, help="scenario file to write (.xosc); .xodr and .variations.xosc go beside it"
+    )
+    c.add_argument("--rate", type=float, default=10.0, help="output rate of the trajectories in Hz (default 10)")
+    c.add_argument("--osc-version", type=_osc_minor, default=3, help="OpenSCENARIO version 1.0..1.3 (default 1.3)")
+    c.add_argument("--osm", help="OpenStreetMap XML file (overrides the clip's map.osm)")
+    c.add_argument(
+        "--osm-fetch", action="store_true", help="download the map by bounding box (needs network and osmnx)"
+    )
+    c.add_argument("--no-map", action="store_true", help="ignore any map and fit a road to the ego track")
+    c.add_argument("--threat", help="track id of the threat scooter (default: smallest conflict margin)")
+    c.add_argument("--variants", metavar="DIR", help="also write one fully resolved .xosc per variation into DIR")
+    c.set_defaults(func=_cmd_compile)
+
+    v = sub.add_parser("validate", help="check .xosc/.xodr files against the ASAM XSDs and VEI's own rules")
+    v.add_argument("files", nargs="+")
+    v.add_argument("--format", choices=("text", "json"), default="text")
+    v.set_defaults(func=_cmd_validate)
+    return parser
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    try:
+        return args.func(args)
+    except VeiInputError as exc:
+        print(f"vei: error: {exc}", file=sys.stderr)
+        return EXIT_USER_ERROR
+    except KeyboardInterrupt:
+        print("vei: interrupted", file=sys.stderr)
+        return 130
+
+
+if __name__ == "__main__":
+    sys.exit(main())

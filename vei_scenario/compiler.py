@@ -1,0 +1,137 @@
+"""``compile_clip``: the whole compile pipeline, clip file in, scenario files out.
+
+clip → reconstruction (projection, time sync, world frame, resampling) → road network → conflict
+analysis and scenario model → OpenSCENARIO + OpenDRIVE + variation files. Everything is rendered in
+memory and written only when every file rendered and passed the structural checks, each file through a
+temporary file and a rename, so a failure leaves no output behind.
+"""
+
+from __future__ import annotations
+
+import xml.etree.ElementTree as ET
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import shapely
+
+from vei_scenario.atomic_io import OutputSet
+from vei_scenario.clip import load_clip
+from vei_scenario.errors import VeiInputError
+from vei_scenario.geometry.reconstruct import Reconstruction, reconstruct
+from vei_scenario.openscenario.distribution_writer import (
+    distribution_xml,
+    variant_combinations,
+    variant_filename,
+)
+from vei_scenario.openscenario.scenario_writer import SUPPORTED_MINOR_VERSIONS, scenario_xml
+from vei_scenario.roads.fitted_road import fitted_road_element
+from vei_scenario.roads.netconvert import run_netconvert
+from vei_scenario.roads.opendrive_lanes import read_lane_areas_from_bytes, share_on_lanes
+from vei_scenario.roads.opendrive_output import finalize_opendrive
+from vei_scenario.roads.osm_region import DEFAULT_MARGIN_M, crop_osm, fetch_osm
+from vei_scenario.scenario.model import ScenarioModel, build_model
+
+
+@dataclass(frozen=True)
+class CompileOptions:
+    rate_hz: float = 10.0
+    osc_minor_version: int = 3
+    osm: Path | None = None  # overrides the clip's map.osm
+    osm_fetch: bool = False  # download the map by bounding box (online only)
+    no_map: bool = False  # ignore any map: fit a road to the ego track
+    map_margin_m: float = DEFAULT_MARGIN_M
+    threat: str | None = None
+    variants_dir: Path | None = None
+    smooth: bool = True
+
+
+@dataclass
+class CompileResult:
+    model: ScenarioModel
+    reconstruction: Reconstruction
+    road_source: str  # "osm:<file>" or "fitted"
+    ego_on_lanes: float  # share of ego GPS fixes inside driving lanes of the road network
+    written: list[Path] = field(default_factory=list)
+    notes: list[str] = field(default_factory=list)
+
+
+def _check_options(opts: CompileOptions) -> None:
+    if not (0.5 <= opts.rate_hz <= 1000):
+        raise VeiInputError(None, "--rate", f"{opts.rate_hz} Hz is outside 0.5..1000 Hz")
+    if opts.osc_minor_version not in SUPPORTED_MINOR_VERSIONS:
+        raise VeiInputError(None, "--osc-version", f"1.{opts.osc_minor_version} is not supported (1.0 to 1.3)")
+
+
+def _road_network(rec: Reconstruction, opts: CompileOptions, out_dir: Path, notes: list[str]) -> tuple[bytes, str]:
+    clip = rec.clip
+    osm = None if opts.no_map else (opts.osm or clip.osm_path)
+    if opts.osm_fetch and not opts.no_map and opts.osm is None:
+        osm = fetch_osm(rec.bbox_latlon(opts.map_margin_m), out_dir / "map.osm")
+    proj = rec.projection.proj_string
+    if osm is not None:
+        region = crop_osm(Path(osm), rec.bbox_latlon(opts.map_margin_m))
+        if region.n_missing_nodes:
+            notes.append(f"map: {region.n_missing_nodes} node references outside the extract were dropped")
+        raw = run_netconvert(region.xml, proj, Path(osm))
+        return finalize_opendrive(raw, clip.id, proj, clip.recorded_at), f"osm:{Path(osm).name}"
+    try:
+        raw = ET.tostring(fitted_road_element(rec.ego))
+    except ValueError as exc:
+        raise VeiInputError(clip.path, "ego.samples", str(exc)) from None
+    west, south, east, north = shapely.union_all([a.polygon for a in read_lane_areas_from_bytes(raw)]).bounds
+    return finalize_opendrive(raw, clip.id, proj, clip.recorded_at, (west, south, east, north)), "fitted"
+
+
+def compile_clip(clip_path: str | Path, output: str | Path, options: CompileOptions | None = None) -> CompileResult:
+    """Compile ``clip_path`` into ``output`` (a ``.xosc`` path) plus its ``.xodr`` and variation files."""
+    opts = options or CompileOptions()
+    _check_options(opts)
+    output = Path(output)
+    if output.suffix != ".xosc":
+        raise VeiInputError(output, "-o", "the output must be a .xosc file")
+    clip = load_clip(clip_path)
+    rec = reconstruct(clip, rate_hz=opts.rate_hz, smooth=opts.smooth)
+    notes: list[str] = []
+    for tid, cat in sorted(rec.skipped_tracks.items()):
+        notes.append(f"track {tid}: category {cat!r} is not modelled; skipped")
+    for tid, track in sorted(rec.scooters.items()):
+        for a, b in track.gaps:
+            notes.append(f"track {tid}: not observed for {b - a:.1f} s (t = {a:.1f}..{b:.1f} s); spline-bridged")
+
+    xodr = _road_network(rec, opts, output.parent, notes)
+    xodr_bytes, road_source = xodr
+    stem = output.stem
+    xodr_path = output.with_suffix(".xodr")
+    model = build_model(rec, threat=opts.threat, name=stem)
+    model = _with_road_file(model, xodr_path.name)
+    share = share_on_lanes(read_lane_areas_from_bytes(xodr_bytes), rec.ego_fix_x, rec.ego_fix_y)
+
+    outputs = OutputSet()
+    outputs.add(output, scenario_xml(model, opts.osc_minor_version))
+    outputs.add(xodr_path, xodr_bytes)
+    # ParameterValueDistribution exists since OpenSCENARIO 1.1; a 1.0 scenario gets a 1.1 distribution.
+    dist_minor = max(opts.osc_minor_version, 1)
+    if dist_minor != opts.osc_minor_version:
+        notes.append("OpenSCENARIO 1.0 has no ParameterValueDistribution: the variations file is written as 1.1")
+    outputs.add(output.with_name(f"{stem}.variations.xosc"), distribution_xml(model, output.name, dist_minor))
+    if opts.variants_dir is not None:
+        vdir = Path(opts.variants_dir)
+        for i, values in enumerate(variant_combinations(model)):
+            vmodel = _with_road_file(model, _relative(xodr_path, vdir))
+            outputs.add(
+                vdir / variant_filename(i, values), scenario_xml(vmodel, opts.osc_minor_version, resolved=values)
+            )
+    outputs.commit()
+    return CompileResult(model, rec, road_source, share, outputs.paths, notes)
+
+
+def _relative(target: Path, from_dir: Path) -> str:
+    import os
+
+    return Path(os.path.relpath(target.resolve(), from_dir.resolve())).as_posix()
+
+
+def _with_road_file(model: ScenarioModel, road_file: str) -> ScenarioModel:
+    from dataclasses import replace
+
+    return replace(model, road_file=road_file)

@@ -1,0 +1,1 @@
+"""OpenSCENARIO/OpenDRIVE files: writing the compiled scenario and validating any such file."""

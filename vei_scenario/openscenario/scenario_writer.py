@@ -1,0 +1,260 @@
+"""ScenarioModel → ASAM OpenSCENARIO XML through scenariogeneration's object model.
+
+Structure of a compiled scenario:
+
+* ``ParameterDeclarations``: TimeShift, RiderType, CapEnabled, EgoCruiseSpeed, ConflictTimeShift.
+* ``Entities``: ``Ego`` (car) with the ``CollisionAvoidancePlanner`` controller, one bicycle-category
+  vehicle per scooter track; the threat scooter carries the ``SocialForceModel`` controller. Controller
+  properties hold every model parameter (``$``-references where a scenario parameter decides).
+* ``Init``: every entity teleported to its first pose at its first speed.
+* Story ``Reconstruction``: every moving entity follows its reconstructed trajectory
+  (``FollowTrajectoryAction``, Polyline with vertex times in scenario time, absolute timing; the threat
+  scooter's timing ``offset`` is ``$TimeShift``).
+* Story ``Controllers``: the social force model is activated when ``RiderType`` is ``normal`` or
+  ``aggressive`` and the planner when ``CapEnabled`` is true (``ParameterCondition`` triggers, which
+  every OpenSCENARIO 1.x version has).
+* Stop trigger at the end of the clip.
+
+With ``resolved`` parameter values instead, the same structure is written with literal values, no
+parameter declarations and the parameter conditions decided at compile time, for tools that do not
+support parameters.
+"""
+
+from __future__ import annotations
+
+import datetime as dt
+import xml.etree.ElementTree as ET
+
+from lxml import etree
+from scenariogeneration import xosc
+from scenariogeneration.xosc.exceptions import OpenSCENARIOVersionError
+
+from vei_scenario.errors import VeiInputError
+from vei_scenario.geometry.angles import wrap_pi
+from vei_scenario.safe_xml import safe_parser
+from vei_scenario.scenario.model import EntitySpec, ScenarioModel
+from vei_scenario.scenario.parameters import format_value
+
+AUTHOR = "vei-scenario"
+SFM_CONTROLLER = "SocialForceModel"
+CAP_CONTROLLER = "CollisionAvoidancePlanner"
+SUPPORTED_MINOR_VERSIONS = (0, 1, 2, 3)
+
+
+def header_date(model: ScenarioModel) -> dt.datetime:
+    """The header date: the clip's recording time, never the wall clock (byte-for-byte output)."""
+    if model.date:
+        try:
+            return dt.datetime.fromisoformat(model.date.replace("Z", "+00:00")).replace(tzinfo=None, microsecond=0)
+        except ValueError:
+            pass
+    return dt.datetime(1970, 1, 1)
+
+
+def _num(v: float, digits: int = 4) -> float:
+    r = round(float(v), digits)
+    return 0.0 if r == 0 else r
+
+
+def _ref(name: str, resolved: dict | None, type_: str) -> str:
+    """``$Name`` in a parametrised scenario, the literal value in a resolved one."""
+    return format_value(type_, resolved[name]) if resolved is not None else f"${name}"
+
+
+def _vehicle(e: EntitySpec) -> xosc.Vehicle:
+    category = xosc.VehicleCategory.car if e.category == "car" else xosc.VehicleCategory.bicycle
+    box = xosc.BoundingBox(e.width_m, e.length_m, e.height_m, 0.0, 0.0, e.height_m / 2)
+    if e.category == "car":
+        front = xosc.Axle(0.52, 0.65, 1.6, 0.3 * e.length_m, 0.325)
+        rear = xosc.Axle(0.0, 0.65, 1.6, -0.3 * e.length_m, 0.325)
+        return xosc.Vehicle(e.name, category, box, front, rear, 50.0, 4.0, 9.0)
+    front = xosc.Axle(0.6, 0.2, 0.1, 0.4, 0.1)
+    rear = xosc.Axle(0.0, 0.2, 0.1, -0.4, 0.1)
+    return xosc.Vehicle(e.name, category, box, front, rear, 7.0, 2.0, 3.5)
+
+
+def _properties(values: dict[str, object]) -> xosc.Properties:
+    props = xosc.Properties()
+    for k, v in values.items():
+        props.add_property(k, v if isinstance(v, str) else format_value("double", v))
+    return props
+
+
+def _sfm_controller(model: ScenarioModel, resolved: dict | None) -> xosc.Controller:
+    values: dict[str, object] = {"riderType": _ref("RiderType", resolved, "string"), "route": f"{model.threat}_route"}
+    values.update(model.sfm.properties())
+    return xosc.Controller(SFM_CONTROLLER, _properties(values))
+
+
+def _cap_controller(model: ScenarioModel, resolved: dict | None) -> xosc.Controller:
+    values: dict[str, object] = {
+        "enabled": _ref("CapEnabled", resolved, "boolean"),
+        "cruiseSpeed": _ref("EgoCruiseSpeed", resolved, "double"),
+        "threatEntity": model.threat,
+    }
+    values.update(model.cap.properties())
+    return xosc.Controller(CAP_CONTROLLER, _properties(values))
+
+
+def _polyline(e: EntitySpec) -> xosc.Polyline:
+    tr = e.trajectory
+    yaw = wrap_pi(tr.yaw)
+    positions = [xosc.WorldPosition(_num(x), _num(y), 0.0, _num(h, 6)) for x, y, h in zip(tr.x, tr.y, yaw)]
+    return xosc.Polyline([_num(t, 3) for t in tr.t], positions)
+
+
+def _override(minor_version: int) -> xosc.Priority:
+    """The priority that replaces running events: ``overwrite`` before 1.2, ``override`` since."""
+    return xosc.Priority.override if minor_version >= 2 else xosc.Priority.overwrite
+
+
+def _trajectory_event(e: EntitySpec, offset: str | float, minor_version: int) -> xosc.Event:
+    traj = xosc.Trajectory(f"{e.name}_route", False)
+    traj.add_shape(_polyline(e))
+    action = xosc.FollowTrajectoryAction(
+        traj, xosc.FollowingMode.position, xosc.ReferenceContext.absolute, scale=1, offset=offset
+    )
+    event = xosc.Event(f"{e.name}FollowsTrajectory", _override(minor_version))
+    event.add_action(f"{e.name}FollowTrajectory", action)
+    event.add_trigger(_at_start(f"{e.name}TrajectoryStart"))
+    return event
+
+
+def _at_start(name: str) -> xosc.ValueTrigger:
+    return xosc.ValueTrigger(name, 0, xosc.ConditionEdge.none, xosc.SimulationTimeCondition(0, xosc.Rule.greaterThan))
+
+
+def _parameter_trigger(name: str, alternatives: list[tuple[str, str]]) -> xosc.Trigger:
+    """Start trigger true when any (parameter, value) pair holds: one condition group per pair (OR)."""
+    trigger = xosc.Trigger()
+    for i, (param, value) in enumerate(alternatives):
+        group = xosc.ConditionGroup()
+        group.add_condition(
+            xosc.ValueTrigger(
+                f"{name}{i}", 0, xosc.ConditionEdge.none, xosc.ParameterCondition(param, value, xosc.Rule.equalTo)
+            )
+        )
+        trigger.add_conditiongroup(group)
+    return trigger
+
+
+def build_scenario(model: ScenarioModel, minor_version: int = 3, resolved: dict | None = None) -> xosc.Scenario:
+    """The scenariogeneration object of the scenario (``resolved``: literal parameter values)."""
+    params = xosc.ParameterDeclarations()
+    if resolved is None:
+        for p in model.parameters:
+            params.add_parameter(xosc.Parameter(p.name, getattr(xosc.ParameterType, p.type), p.literal(p.default)))
+
+    entities = xosc.Entities()
+    for e in model.entities:
+        if e.name == "Ego":
+            entities.add_scenario_object(e.name, _vehicle(e), _cap_controller(model, resolved))
+        elif e.name == model.threat:
+            entities.add_scenario_object(e.name, _vehicle(e), _sfm_controller(model, resolved))
+        else:
+            entities.add_scenario_object(e.name, _vehicle(e))
+
+    init = xosc.Init()
+    step = xosc.TransitionDynamics(xosc.DynamicsShapes.step, xosc.DynamicsDimension.time, 0)
+    for e in model.entities:
+        tr = e.trajectory
+        init.add_init_action(
+            e.name,
+            xosc.TeleportAction(
+                xosc.WorldPosition(_num(tr.x[0]), _num(tr.y[0]), 0.0, _num(float(wrap_pi(tr.yaw[0])), 6))
+            ),
+        )
+        init.add_init_action(e.name, xosc.AbsoluteSpeedAction(_num(tr.speed[0], 3), step))
+
+    replay = xosc.Story("Reconstruction")
+    act = xosc.Act("ReplayRecordedTrajectories", _at_start("ReplayStart"))
+    for e in model.entities:
+        if e.name == model.threat:
+            offset: str | float = _ref("TimeShift", resolved, "double")
+            offset = float(offset) if resolved is not None else offset
+        else:
+            offset = 0
+        maneuver = xosc.Maneuver(f"{e.name}Replay")
+        maneuver.add_event(_trajectory_event(e, offset, minor_version))
+        group = xosc.ManeuverGroup(f"{e.name}ReplayGroup")
+        group.add_actor(e.name)
+        group.add_maneuver(maneuver)
+        act.add_maneuver_group(group)
+    replay.add_act(act)
+
+    controllers = xosc.Story("Controllers")
+    ctl_act = xosc.Act("ActivateControllers", _at_start("ControllersStart"))
+    activations = [
+        (
+            model.threat,
+            "ActivateSocialForce",
+            [("RiderType", "normal"), ("RiderType", "aggressive")],
+            xosc.ActivateControllerAction(lateral=True, longitudinal=True),
+        ),
+        (
+            "Ego",
+            "ActivateCollisionAvoidance",
+            [("CapEnabled", "true")],
+            xosc.ActivateControllerAction(lateral=False, longitudinal=True),
+        ),
+    ]
+    for actor, event_name, conditions, action in activations:
+        if resolved is not None:
+            if not any(format_value("string", resolved[p]).lower() == v for p, v in conditions):
+                continue
+            trigger: xosc.Trigger | xosc.ValueTrigger = _at_start(f"{event_name}Start")
+        else:
+            trigger = _parameter_trigger(f"{event_name}When", conditions)
+        event = xosc.Event(event_name, xosc.Priority.parallel)
+        event.add_action(event_name, action)
+        event.add_trigger(trigger)
+        maneuver = xosc.Maneuver(f"{event_name}Maneuver")
+        maneuver.add_event(event)
+        group = xosc.ManeuverGroup(f"{event_name}Group")
+        group.add_actor(actor)
+        group.add_maneuver(maneuver)
+        ctl_act.add_maneuver_group(group)
+    if ctl_act.maneuvergroup:
+        controllers.add_act(ctl_act)
+
+    stop = xosc.ValueTrigger(
+        "EndOfClip",
+        0,
+        xosc.ConditionEdge.rising,
+        xosc.SimulationTimeCondition(_num(model.duration_s, 3), xosc.Rule.greaterThan),
+        "stop",
+    )
+    board = xosc.StoryBoard(init, stop)
+    board.add_story(replay)
+    if ctl_act.maneuvergroup:
+        board.add_story(controllers)
+
+    road = xosc.RoadNetwork(roadfile=model.road_file)
+    return xosc.Scenario(
+        model.name,
+        AUTHOR,
+        params,
+        entities,
+        board,
+        road,
+        xosc.Catalog(),
+        osc_minor_version=minor_version,
+        creation_date=header_date(model),
+    )
+
+
+def render(element_owner) -> bytes:
+    """Pretty XML bytes of a scenariogeneration object (via lxml; minidom is too slow for long clips)."""
+    data = ET.tostring(element_owner.get_element(), encoding="utf-8")
+    root = etree.fromstring(data, safe_parser())
+    etree.indent(root, space="  ")
+    return etree.tostring(root, xml_declaration=True, encoding="UTF-8", pretty_print=True)
+
+
+def scenario_xml(model: ScenarioModel, minor_version: int = 3, resolved: dict | None = None) -> bytes:
+    try:
+        return render(build_scenario(model, minor_version, resolved))
+    except OpenSCENARIOVersionError as exc:
+        raise VeiInputError(
+            None, "--osc-version", f"the scenario is not expressible in OpenSCENARIO 1.{minor_version}: {exc}"
+        ) from None

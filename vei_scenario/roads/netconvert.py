@@ -1,0 +1,84 @@
+"""Run SUMO's netconvert to turn OSM XML into OpenDRIVE in the scenario's own projection.
+
+netconvert comes with the ``eclipse-sumo`` wheel. It is given the scenario's PROJ string and told not
+to shift the origin, so its OpenDRIVE coordinates are the scenario's metres and its ``geoReference``
+names the same projection.
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+import subprocess
+import tempfile
+from pathlib import Path
+
+from vei_scenario.errors import VeiInputError
+
+#: netconvert options, each with the reason it is here.
+NETCONVERT_OPTIONS = [
+    "--offset.disable-normalization",
+    "true",  # keep the scenario's origin
+    "--keep-edges.by-vclass",
+    "passenger,bicycle",  # roads cars or scooters use; no footpaths
+    "--geometry.remove",
+    "true",  # merge straight runs of nodes into one geometry
+    "--junctions.join",
+    "true",  # one junction per real intersection
+    "--roundabouts.guess",
+    "true",
+    "--tls.discard-simple",
+    "true",
+    "--output.street-names",
+    "true",
+    "--osm.elevation",
+    "false",
+    "--no-warnings",
+    "true",
+]
+
+
+def find_netconvert() -> str:
+    """The netconvert executable: ``$VEI_NETCONVERT``, the eclipse-sumo wheel, ``$SUMO_HOME`` or PATH."""
+    env = os.environ.get("VEI_NETCONVERT")
+    if env:
+        if not (Path(env).is_file() and os.access(env, os.X_OK)):
+            raise VeiInputError(None, "VEI_NETCONVERT", f"{env} is not an executable file")
+        return env
+    candidates = []
+    try:
+        import sumo  # the eclipse-sumo wheel
+
+        candidates.append(Path(sumo.SUMO_HOME) / "bin" / "netconvert")
+    except ImportError:
+        pass
+    if os.environ.get("SUMO_HOME"):
+        candidates.append(Path(os.environ["SUMO_HOME"]) / "bin" / "netconvert")
+    for c in candidates:
+        if c.is_file() and os.access(c, os.X_OK):
+            return str(c)
+    found = shutil.which("netconvert")
+    if found:
+        return found
+    raise VeiInputError(None, "netconvert", "SUMO netconvert not found; install it with: pip install eclipse-sumo")
+
+
+def run_netconvert(osm_xml: bytes, proj_string: str, osm_source: Path, timeout_s: float = 120.0) -> bytes:
+    """OpenDRIVE bytes for ``osm_xml``; failures name the map file ``osm_source``."""
+    exe = find_netconvert()
+    with tempfile.TemporaryDirectory(prefix="vei-netconvert-") as tmp:
+        src, dst = Path(tmp) / "region.osm", Path(tmp) / "region.xodr"
+        src.write_bytes(osm_xml)
+        cmd = [exe, "--osm-files", str(src), "--opendrive-output", str(dst), "--proj", proj_string, *NETCONVERT_OPTIONS]
+        try:
+            proc = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout_s, check=False)
+        except OSError as exc:
+            raise VeiInputError(osm_source, "netconvert", f"could not start {exe}: {exc.strerror or exc}") from None
+        except subprocess.TimeoutExpired:
+            raise VeiInputError(osm_source, "netconvert", f"timed out after {timeout_s:.0f} s") from None
+        if proc.returncode != 0 or not dst.is_file():
+            lines = [ln.strip() for ln in (proc.stderr + proc.stdout).splitlines() if ln.strip()]
+            errors = [ln for ln in lines if ln.lower().startswith(("error", "fatal"))] or lines[-1:]
+            detail = errors[0] if errors else f"exit code {proc.returncode}"
+            raise VeiInputError(osm_source, "netconvert", f"failed: {detail}")
+        return dst.read_bytes()

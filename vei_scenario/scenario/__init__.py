@@ -1,0 +1,1 @@
+"""The VEI scenario model: what a compiled scenario contains, independent of file formats."""

@@ -1,0 +1,98 @@
+"""Build the VEI scenario model from a reconstruction: entities, threat, parameters, variations."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from vei_scenario.geometry.conflict import Conflict, analyse_conflict, primary_threat
+from vei_scenario.geometry.reconstruct import Reconstruction
+from vei_scenario.geometry.resample import Trajectory
+from vei_scenario.models.cap import CapParameters
+from vei_scenario.models.sfm import RIDER_TYPES, SfmParameters
+from vei_scenario.scenario.parameters import ParameterSpec, declared_parameters
+
+#: E-scooter with a standing rider (m): deck and bars ~1.1–1.2 m long, shoulders ~0.6 m, ~1.9 m tall.
+SCOOTER_BOX_M = (1.2, 0.6, 1.9)
+EGO_HEIGHT_M = 1.5
+#: Timing shifts of the variation set, around the conflict shift (s).
+SHIFT_OFFSETS_S = (-1.0, -0.5, 0.0, 0.5, 1.0)
+
+
+@dataclass(frozen=True)
+class EntitySpec:
+    name: str
+    category: str  # "car" or "bicycle" (OpenSCENARIO VehicleCategory)
+    length_m: float
+    width_m: float
+    height_m: float
+    trajectory: Trajectory
+
+
+@dataclass(frozen=True)
+class ScenarioModel:
+    name: str
+    description: str
+    date: str | None
+    proj_string: str
+    entities: tuple[EntitySpec, ...]  # Ego first, then scooters by track id
+    threat: str
+    conflicts: dict[str, Conflict]
+    parameters: tuple[ParameterSpec, ...]
+    sfm: SfmParameters = field(default_factory=SfmParameters)
+    cap: CapParameters = field(default_factory=CapParameters)
+    duration_s: float = 0.0
+    #: The OpenDRIVE file as the scenario's LogicFile names it (relative to the .xosc).
+    road_file: str = "scenario.xodr"
+
+    @property
+    def ego(self) -> EntitySpec:
+        return self.entities[0]
+
+    def parameter(self, name: str) -> ParameterSpec:
+        return next(p for p in self.parameters if p.name == name)
+
+    def defaults(self) -> dict[str, object]:
+        return {p.name: p.default for p in self.parameters}
+
+    def variations(self) -> dict[str, list[object]]:
+        """The seed method's variations: timing shifts (0 and around the conflict shift), the three
+        rider types, CAP off/on."""
+        c = self.parameter("ConflictTimeShift").default
+        shifts = sorted({0.0, *(round(float(c) + o, 3) for o in SHIFT_OFFSETS_S)})
+        return {"TimeShift": shifts, "RiderType": list(RIDER_TYPES), "CapEnabled": [False, True]}
+
+
+def build_model(rec: Reconstruction, threat: str | None = None, name: str | None = None) -> ScenarioModel:
+    """Entities from the reconstruction, conflicts for every scooter, the threat and the parameters."""
+    clip = rec.clip
+    ego = EntitySpec("Ego", "car", clip.ego.length_m, clip.ego.width_m, EGO_HEIGHT_M, rec.ego)
+    scooters = tuple(
+        EntitySpec(tid, "bicycle", *SCOOTER_BOX_M, track.trajectory) for tid, track in sorted(rec.scooters.items())
+    )
+    ego_box = (ego.length_m, ego.width_m)
+    conflicts = {
+        s.name: analyse_conflict(s.name, rec.ego, s.trajectory, ego_box, (s.length_m, s.width_m)) for s in scooters
+    }
+    if threat is None:
+        threat = primary_threat(conflicts)
+    elif threat not in conflicts:
+        from vei_scenario.errors import VeiInputError
+
+        raise VeiInputError(
+            clip.path, "--threat", f"no e-scooter track {threat!r} (tracks: {', '.join(sorted(conflicts))})"
+        )
+    cruise = float(np.median(clip.ego.speed_mps))
+    params = tuple(declared_parameters(cruise, conflicts[threat].time_shift_s))
+    return ScenarioModel(
+        name=name or clip.id,
+        description=f"Reconstructed vehicle–e-scooter interaction from clip {clip.id}",
+        date=clip.recorded_at,
+        proj_string=rec.projection.proj_string,
+        entities=(ego, *scooters),
+        threat=threat,
+        conflicts=conflicts,
+        parameters=params,
+        duration_s=rec.duration_s,
+    )
