@@ -54,7 +54,7 @@ def _hermite_piece(x0, y0, h0, x1, y1, h1) -> xodr.ParamPoly3:
     return xodr.ParamPoly3(0.0, b[0], cc[0], d[0], 0.0, b[1], cc[1], d[1], prange="normalized")
 
 
-def fitted_road_element(ego: Trajectory, rev_minor: int = 6):
+def fitted_road_element(ego: Trajectory, rev_minor: int = 7):
     """An ``<OpenDRIVE>`` element (scenariogeneration) with one two-lane road along the ego track."""
     px, py, heading = _path_samples(ego)
     n_seg = max(1, int(round((px.size - 1) * 0.5 / SEGMENT_M)))

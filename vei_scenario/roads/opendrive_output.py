@@ -2,13 +2,15 @@
 
 netconvert and scenariogeneration both stamp the wall-clock time into the header (and netconvert its
 whole configuration, with temporary paths, into a comment). Here comments go, the header date becomes
-the clip's recording time (or is left out), and the ``geoReference`` carries the scenario projection.
+the clip's recording time (or is left out), the ``geoReference`` carries the scenario projection, and
+paramPoly3 lengths are repaired (:mod:`vei_scenario.roads.opendrive_repair`).
 """
 
 from __future__ import annotations
 
 from lxml import etree
 
+from vei_scenario.roads.opendrive_repair import repair_parampoly3_lengths
 from vei_scenario.safe_xml import safe_parser
 
 
@@ -22,6 +24,7 @@ def finalize_opendrive(
     """Normalised OpenDRIVE bytes. ``bounds`` (west, south, east, north in metres) replaces a header
     extent that is missing or all zero, as scenariogeneration leaves it."""
     root = etree.fromstring(xodr, safe_parser(remove_comments=True)) if isinstance(xodr, bytes) else xodr
+    repair_parampoly3_lengths(root)
     for c in root.xpath("//comment()"):
         c.getparent().remove(c)
     header = root.find("header")
