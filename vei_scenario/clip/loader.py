@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 from functools import lru_cache
 from importlib import resources
 from pathlib import Path
@@ -34,8 +35,14 @@ def clip_schema() -> dict:
     return json.loads(text)
 
 
+class _NonJsonConstant(ValueError):
+    def __init__(self, name: str) -> None:
+        super().__init__(name)
+        self.name = name
+
+
 def _reject_constant(name: str) -> Any:
-    raise ValueError(f"{name} is not a number JSON allows")
+    raise _NonJsonConstant(name)
 
 
 def _field_path(parts) -> str:
@@ -58,8 +65,13 @@ def _read_json(path: Path) -> Any:
         return json.loads(text, parse_constant=_reject_constant)
     except json.JSONDecodeError as exc:
         raise VeiInputError(path, f"line {exc.lineno} column {exc.colno}", f"invalid JSON: {exc.msg}") from None
-    except ValueError as exc:  # NaN / Infinity literals
-        raise VeiInputError(path, "", f"invalid JSON: {exc}") from None
+    except _NonJsonConstant as exc:  # NaN / Infinity literals, which Python accepts and JSON does not
+        m = re.search(rf"(?<![\w\"]){re.escape(exc.name)}(?![\w\"])", text)
+        where = ""
+        if m:
+            line = text.count("\n", 0, m.start()) + 1
+            where = f"line {line} column {m.start() - text.rfind(chr(10), 0, m.start())}"
+        raise VeiInputError(path, where, f"invalid JSON: {exc.name} is not a number JSON allows") from None
 
 
 def _schema_check(path: Path, doc: Any) -> None:
@@ -131,6 +143,13 @@ def load_clip(path: str | Path) -> Clip:
     categories: dict[str, str] = {}
     for i, frame in enumerate(frames):
         t_gps = frame_t[i] + offset
+        if not (t0 - 1e-9 <= t_gps <= t1 + 1e-9):
+            raise VeiInputError(
+                path,
+                f"annotations.frames[{i}].t",
+                f"annotation at GPS time {t_gps:.3f} s (t + time_offset_s) lies outside the ego GPS span "
+                f"[{t0:.3f}, {t1:.3f}] s",
+            )
         seen: set[str] = set()
         for j, obj in enumerate(frame["objects"]):
             where = f"annotations.frames[{i}].objects[{j}]"
@@ -143,13 +162,6 @@ def load_clip(path: str | Path) -> Clip:
                     path,
                     f"{where}.category",
                     f"track {tid!r} changes category ({categories[tid]!r} → {obj['category']!r})",
-                )
-            if not (t0 - 1e-9 <= t_gps <= t1 + 1e-9):
-                raise VeiInputError(
-                    path,
-                    f"annotations.frames[{i}].t",
-                    f"annotation at GPS time {t_gps:.3f} s (t + time_offset_s) lies outside the ego GPS span "
-                    f"[{t0:.3f}, {t1:.3f}] s",
                 )
             for k in ("x_m", "y_m"):
                 if not math.isfinite(float(obj[k])):

@@ -25,6 +25,8 @@ from vei_scenario.models.boxes import boxes_overlap
 SHIFT_STEP_S = 0.02
 #: Half-width of that scan around the conflict shift (s).
 SHIFT_SCAN_S = 6.0
+#: Time step of the replay in that scan (s).
+SCAN_DT_S = 0.01
 
 
 @dataclass(frozen=True)
@@ -104,12 +106,11 @@ def analyse_conflict(
     interval = None
     if reaches:
         shifts = shift + np.arange(-SHIFT_SCAN_S, SHIFT_SCAN_S + 1e-9, SHIFT_STEP_S)
-        window = (ego.t >= te - SHIFT_SCAN_S - 5) & (ego.t <= te + SHIFT_SCAN_S + 5)
-        et = ego.t[window]
+        # Replay both on a 10 ms grid around the conflict, finer than any output rate.
+        et = np.arange(max(te - SHIFT_SCAN_S - 5, ego.t[0]), min(te + SHIFT_SCAN_S + 5, ego.t[-1]), SCAN_DT_S)
+        ex, ey, eyaw = state_at(ego, et)
         qx, qy, qyaw = state_at(scooter, et[None, :] - shifts[:, None])
-        hit = boxes_overlap(ego.x[window], ego.y[window], ego.yaw[window], *ego_box, qx, qy, qyaw, *scooter_box).any(
-            axis=1
-        )
+        hit = boxes_overlap(ex, ey, eyaw, *ego_box, qx, qy, qyaw, *scooter_box).any(axis=1)
         centre = int(np.argmin(np.abs(shifts - shift)))
         if hit.any():
             idx = np.nonzero(hit)[0]

@@ -11,13 +11,14 @@ import numpy as np
 
 
 def box_corners(x, y, yaw, length, width) -> np.ndarray:
-    """Corners (..., 4, 2) of boxes centred at (x, y), counter-clockwise."""
-    x, y, yaw = np.broadcast_arrays(np.asarray(x, float), np.asarray(y, float), np.asarray(yaw, float))
-    c, s = np.cos(yaw), np.sin(yaw)
+    """Corners (..., 4, 2) of boxes centred at (x, y), counter-clockwise; all arguments broadcast."""
+    x, y, yaw, length, width = np.broadcast_arrays(*(np.asarray(v, float) for v in (x, y, yaw, length, width)))
+    c, s = np.cos(yaw)[..., None], np.sin(yaw)[..., None]
     hl, hw = 0.5 * length, 0.5 * width
-    local = np.array([[hl, hw], [-hl, hw], [-hl, -hw], [hl, -hw]])
-    cx = x[..., None] + c[..., None] * local[:, 0] - s[..., None] * local[:, 1]
-    cy = y[..., None] + s[..., None] * local[:, 0] + c[..., None] * local[:, 1]
+    lx = np.stack([hl, -hl, -hl, hl], axis=-1)
+    ly = np.stack([hw, hw, -hw, -hw], axis=-1)
+    cx = x[..., None] + c * lx - s * ly
+    cy = y[..., None] + s * lx + c * ly
     return np.stack([cx, cy], axis=-1)
 
 

@@ -1,0 +1,77 @@
+"""Shared fixtures: the bundled examples compiled once, noise-free clips, the ASAM QC checker."""
+
+from __future__ import annotations
+
+import glob
+import importlib.util
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+EXAMPLES = ROOT / "examples"
+EXAMPLE_NAMES = ("case_study", "multi_scooter", "no_map")
+
+
+def _qc_venv() -> Path | None:
+    for cand in (os.environ.get("VEI_QC_VENV"), ROOT / ".venv-qc"):
+        if cand and (Path(cand) / "bin" / "qc_openscenario").exists():
+            return Path(cand)
+    return None
+
+
+if _qc_venv() is not None:  # lets vei's XSD locator find the schemas in the checker's venv
+    os.environ.setdefault("VEI_QC_VENV", str(_qc_venv()))
+
+
+@pytest.fixture(scope="session")
+def qc_venv() -> Path:
+    """The ASAM Quality Checker's own venv; required in CI, skipped elsewhere when absent."""
+    venv = _qc_venv()
+    if venv is None:
+        if os.environ.get("CI"):
+            pytest.fail("CI needs the ASAM Quality Checker venv (.venv-qc or VEI_QC_VENV); see README")
+        pytest.skip("ASAM Quality Checker venv not installed (.venv-qc)")
+    return venv
+
+
+@pytest.fixture(scope="session")
+def compiled(tmp_path_factory) -> dict:
+    """Each example compiled once: {name: CompileResult}, case study with resolved variants."""
+    from vei_scenario.compiler import CompileOptions, compile_clip
+
+    out = tmp_path_factory.mktemp("compiled")
+    results = {}
+    for name in EXAMPLE_NAMES:
+        variants = out / name / "variants" if name == "case_study" else None
+        results[name] = compile_clip(
+            EXAMPLES / name / "clip.json", out / name / "scenario.xosc", CompileOptions(variants_dir=variants)
+        )
+    return results
+
+
+@pytest.fixture(scope="session")
+def noise_free_dir(tmp_path_factory) -> Path:
+    """The example clips regenerated without GPS noise (with their ground truth)."""
+    out = tmp_path_factory.mktemp("noise_free")
+    subprocess.run(
+        [sys.executable, str(EXAMPLES / "generate_examples.py"), "--noise-free", str(out)],
+        check=True,
+        capture_output=True,
+    )
+    return out
+
+
+def load_generator():
+    spec = importlib.util.spec_from_file_location("generate_examples", EXAMPLES / "generate_examples.py")
+    mod = importlib.util.module_from_spec(spec)
+    sys.modules["generate_examples"] = mod
+    spec.loader.exec_module(mod)
+    return mod
+
+
+def site_packages(venv: Path) -> Path:
+    return Path(sorted(glob.glob(str(venv / "lib" / "python*" / "site-packages")))[0])
