@@ -19,7 +19,7 @@ EXAMPLE_NAMES = ("case_study", "multi_scooter", "no_map")
 def _qc_venv() -> Path | None:
     for cand in (os.environ.get("VEI_QC_VENV"), ROOT / ".venv-qc"):
         if cand and (Path(cand) / "bin" / "qc_openscenario").exists():
-            return Path(cand)
+            return Path(cand).resolve()
     return None
 
 

@@ -106,9 +106,13 @@ def analyse_conflict(
     interval = None
     if reaches:
         shifts = shift + np.arange(-SHIFT_SCAN_S, SHIFT_SCAN_S + 1e-9, SHIFT_STEP_S)
-        # Replay both on a 10 ms grid around the conflict, finer than any output rate.
+        # Replay both on a 10 ms grid around the conflict, finer than any output rate, keeping only the
+        # instants when the ego is close enough to the scooter's path for the boxes to touch at all.
         et = np.arange(max(te - SHIFT_SCAN_S - 5, ego.t[0]), min(te + SHIFT_SCAN_S + 5, ego.t[-1]), SCAN_DT_S)
         ex, ey, eyaw = state_at(ego, et)
+        contact_range = 0.5 * (np.hypot(*ego_box) + np.hypot(*scooter_box)) + 1e-6
+        near = shapely.distance(shapely.points(ex, ey), sc_line) <= contact_range
+        et, ex, ey, eyaw = et[near], ex[near], ey[near], eyaw[near]
         qx, qy, qyaw = state_at(scooter, et[None, :] - shifts[:, None])
         hit = boxes_overlap(ex, ey, eyaw, *ego_box, qx, qy, qyaw, *scooter_box).any(axis=1)
         centre = int(np.argmin(np.abs(shifts - shift)))

@@ -51,23 +51,26 @@ def output_grid(t_start: float, t_end: float, rate_hz: float) -> np.ndarray:
 #: Generalised cross-validation runs on at most this many samples (scipy's GCV costs a Python loop per
 #: sample and evaluation); the penalty it finds applies to the whole series, whose noise and sampling
 #: interval are the same throughout a clip.
-GCV_WINDOW = 400
+GCV_WINDOW = 100
 
 
-def smoothing_spline(t: np.ndarray, y: np.ndarray):
-    """Cubic smoothing spline of y(t) with the penalty chosen by generalised cross-validation."""
-    if t.size <= GCV_WINDOW:
-        return make_smoothing_spline(t, y)
-    probe = make_smoothing_spline(t[:GCV_WINDOW], y[:GCV_WINDOW])
-    lam = _penalty_of(probe, t[:GCV_WINDOW], y[:GCV_WINDOW])
-    return make_smoothing_spline(t, y, lam=lam)
+def gcv_penalty(t: np.ndarray, y: np.ndarray) -> float:
+    """The smoothing penalty generalised cross-validation picks on the first ``GCV_WINDOW`` samples."""
+    n = min(t.size, GCV_WINDOW)
+    probe = make_smoothing_spline(t[:n], y[:n])
+    return _penalty_of(probe, t[:n], y[:n])
+
+
+def smoothing_spline(t: np.ndarray, y: np.ndarray, lam: float | None = None):
+    """Cubic smoothing spline of y(t); penalty ``lam`` or, by default, the GCV choice."""
+    return make_smoothing_spline(t, y, lam=gcv_penalty(t, y) if lam is None else lam)
 
 
 def _penalty_of(spline, t: np.ndarray, y: np.ndarray) -> float:
     """Recover the GCV penalty scipy chose (it is not returned) by matching the fit at the samples."""
     target = spline(t)
     lo, hi = -12.0, 6.0
-    for _ in range(60):  # bisection on log10(lam): the residual grows monotonically with lam
+    for _ in range(40):  # bisection on log10(lam): the residual grows monotonically with lam
         mid = 0.5 * (lo + hi)
         res = np.sum((make_smoothing_spline(t, y, lam=10**mid)(t) - y) ** 2)
         if res < np.sum((target - y) ** 2):
@@ -81,7 +84,9 @@ def position_spline(t: np.ndarray, x: np.ndarray, y: np.ndarray, smooth: bool) -
     """Cubic splines x(t), y(t). ``smooth`` picks smoothing splines with the penalty chosen by
     generalised cross-validation (for noisy GPS); otherwise interpolating not-a-knot splines."""
     if smooth and t.size >= 5:
-        return smoothing_spline(t, x), smoothing_spline(t, y)
+        # One receiver, one noise level: the penalty GCV picks for east serves north too.
+        lam = gcv_penalty(t, x)
+        return smoothing_spline(t, x, lam), smoothing_spline(t, y, lam)
     return CubicSpline(t, x), CubicSpline(t, y)
 
 

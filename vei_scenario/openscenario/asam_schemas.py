@@ -59,6 +59,7 @@ def _candidate_roots() -> list[Path]:
             roots.append(Path(next(iter(spec.submodule_search_locations))).parent)
     venv = os.environ.get("VEI_QC_VENV")
     if venv:
+        venv = str(Path(venv).resolve())
         roots.extend(Path(p) for p in sorted(glob.glob(os.path.join(venv, "lib", "python*", "site-packages"))))
     return roots
 
