@@ -2,14 +2,15 @@
 
 clip → reconstruction (projection, time sync, world frame, resampling) → road network → conflict
 analysis and scenario model → OpenSCENARIO + OpenDRIVE + variation files. Everything is rendered in
-memory and written only when every file rendered and passed the structural checks, each file through a
-temporary file and a rename, so a failure leaves no output behind.
+memory and written only when every file rendered, each file through a temporary file and a rename, so
+a failure leaves no output behind.
 """
 
 from __future__ import annotations
 
+import os
 import xml.etree.ElementTree as ET
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 import shapely
@@ -126,12 +127,8 @@ def compile_clip(clip_path: str | Path, output: str | Path, options: CompileOpti
 
 
 def _relative(target: Path, from_dir: Path) -> str:
-    import os
-
     return Path(os.path.relpath(target.resolve(), from_dir.resolve())).as_posix()
 
 
 def _with_road_file(model: ScenarioModel, road_file: str) -> ScenarioModel:
-    from dataclasses import replace
-
     return replace(model, road_file=road_file)

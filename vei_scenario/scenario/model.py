@@ -6,6 +6,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from vei_scenario.errors import VeiInputError
 from vei_scenario.geometry.conflict import Conflict, analyse_conflict, primary_threat
 from vei_scenario.geometry.reconstruct import Reconstruction
 from vei_scenario.geometry.resample import Trajectory
@@ -78,8 +79,6 @@ def build_model(rec: Reconstruction, threat: str | None = None, name: str | None
     if threat is None:
         threat = primary_threat(conflicts)
     elif threat not in conflicts:
-        from vei_scenario.errors import VeiInputError
-
         raise VeiInputError(
             clip.path, "--threat", f"no e-scooter track {threat!r} (tracks: {', '.join(sorted(conflicts))})"
         )
