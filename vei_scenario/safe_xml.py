@@ -12,16 +12,13 @@ from lxml import etree
 
 from vei_scenario.errors import VeiInputError
 
+#: Parser options that make XML inert: no entity expansion, no DTD, no network, no huge trees. Shared by
+#: the tree parser below and the streaming ``etree.iterparse`` of large OSM files.
+SAFE_OPTIONS = {"resolve_entities": False, "no_network": True, "load_dtd": False, "huge_tree": False}
+
 
 def safe_parser(remove_comments: bool = False) -> etree.XMLParser:
-    return etree.XMLParser(
-        resolve_entities=False,
-        no_network=True,
-        load_dtd=False,
-        dtd_validation=False,
-        huge_tree=False,
-        remove_comments=remove_comments,
-    )
+    return etree.XMLParser(dtd_validation=False, remove_comments=remove_comments, **SAFE_OPTIONS)
 
 
 def parse_xml(path: Path | str, remove_comments: bool = False) -> etree._ElementTree:

@@ -14,6 +14,7 @@ from pathlib import Path
 from lxml import etree
 
 from vei_scenario.errors import VeiInputError
+from vei_scenario.safe_xml import SAFE_OPTIONS
 
 #: Margin added around the scenario's bounding box before cropping (m).
 DEFAULT_MARGIN_M = 60.0
@@ -28,16 +29,7 @@ class OsmRegion:
 
 
 def _iter(path: Path, tags: tuple[str, ...]):
-    return etree.iterparse(
-        str(path),
-        events=("end",),
-        tag=tags,
-        resolve_entities=False,
-        no_network=True,
-        load_dtd=False,
-        huge_tree=False,
-        remove_comments=True,
-    )
+    return etree.iterparse(str(path), events=("end",), tag=tags, remove_comments=True, **SAFE_OPTIONS)
 
 
 def _float_attr(path: Path, el, name: str) -> float:
@@ -63,9 +55,7 @@ def crop_osm(path: Path, bbox: tuple[float, float, float, float]) -> OsmRegion:
     needed: set[str] = set()
     try:
         root_seen = False
-        for _, el in etree.iterparse(
-            str(path), events=("start",), resolve_entities=False, no_network=True, load_dtd=False, huge_tree=False
-        ):
+        for _, el in etree.iterparse(str(path), events=("start",), **SAFE_OPTIONS):
             if el.tag != "osm":
                 raise VeiInputError(
                     path, f"line {el.sourceline}", f"root element is <{el.tag}>, expected <osm> (OSM XML)"
