@@ -84,9 +84,12 @@ class DensePath:
     y: np.ndarray
     yaw: np.ndarray
 
+    def __post_init__(self) -> None:
+        self.yaw_continuous = np.unwrap(self.yaw)
+
     def at(self, s) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         s = np.asarray(s, float)
-        yaw = np.interp(s, self.s, np.unwrap(self.yaw))
+        yaw = np.interp(s, self.s, self.yaw_continuous)
         return np.interp(s, self.s, self.x), np.interp(s, self.s, self.y), yaw
 
 
