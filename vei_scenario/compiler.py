@@ -12,25 +12,24 @@ import os
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass, field, replace
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import shapely
 
 from vei_scenario.atomic_io import OutputSet
 from vei_scenario.clip import load_clip
 from vei_scenario.errors import VeiInputError
-from vei_scenario.geometry.reconstruct import Reconstruction, reconstruct
-from vei_scenario.openscenario.distribution_writer import (
-    distribution_xml,
-    variant_combinations,
-    variant_filename,
-)
-from vei_scenario.openscenario.scenario_writer import SUPPORTED_MINOR_VERSIONS, scenario_xml
-from vei_scenario.roads.fitted_road import fitted_road_element
-from vei_scenario.roads.netconvert import run_netconvert
+from vei_scenario.geometry.projection import LocalProjection
+from vei_scenario.geometry.scene_box import coarse_bbox_latlon
+from vei_scenario.openscenario import SUPPORTED_MINOR_VERSIONS
+from vei_scenario.roads.netconvert import NetconvertJob
 from vei_scenario.roads.opendrive_lanes import read_lane_areas_from_bytes, share_on_lanes
 from vei_scenario.roads.opendrive_output import finalize_opendrive
 from vei_scenario.roads.osm_region import DEFAULT_MARGIN_M, crop_osm, fetch_osm
-from vei_scenario.scenario.model import ScenarioModel, build_model
+
+if TYPE_CHECKING:
+    from vei_scenario.geometry.reconstruct import Reconstruction
+    from vei_scenario.scenario.model import ScenarioModel
 
 
 @dataclass(frozen=True)
@@ -63,24 +62,47 @@ def _check_options(opts: CompileOptions) -> None:
         raise VeiInputError(None, "--osc-version", f"1.{opts.osc_minor_version} is not supported (1.0 to 1.3)")
 
 
-def _road_network(rec: Reconstruction, opts: CompileOptions, out_dir: Path, notes: list[str]) -> tuple[bytes, str]:
-    clip = rec.clip
+@dataclass
+class _RoadJob:
+    """The road network in the making: netconvert running in the background, or a road to fit."""
+
+    proj_string: str
+    source: str  # "osm:<file name>" or "fitted"
+    netconvert: NetconvertJob | None = None
+
+    def cancel(self) -> None:
+        if self.netconvert is not None:
+            self.netconvert.cancel()
+
+
+def _start_road_network(clip, proj: LocalProjection, opts: CompileOptions, out_dir: Path, notes: list[str]) -> _RoadJob:
+    """Crop the map and start netconvert (or decide on a fitted road) before the reconstruction."""
     osm = None if opts.no_map else (opts.osm or clip.osm_path)
+    box = coarse_bbox_latlon(clip, proj, opts.map_margin_m)
     if opts.osm_fetch and not opts.no_map and opts.osm is None:
-        osm = fetch_osm(rec.bbox_latlon(opts.map_margin_m), out_dir / "map.osm")
-    proj = rec.projection.proj_string
-    if osm is not None:
-        region = crop_osm(Path(osm), rec.bbox_latlon(opts.map_margin_m))
-        if region.n_missing_nodes:
-            notes.append(f"map: {region.n_missing_nodes} node references outside the extract were dropped")
-        raw = run_netconvert(region.xml, proj, Path(osm))
-        return finalize_opendrive(raw, clip.id, proj, clip.recorded_at), f"osm:{Path(osm).name}"
+        osm = fetch_osm(box, out_dir / "map.osm")
+    if osm is None:
+        return _RoadJob(proj.proj_string, "fitted")
+    region = crop_osm(Path(osm), box)
+    if region.n_missing_nodes:
+        notes.append(f"map: {region.n_missing_nodes} node references outside the extract were dropped")
+    job = NetconvertJob(region.xml, proj.proj_string, Path(osm))
+    return _RoadJob(proj.proj_string, f"osm:{Path(osm).name}", job)
+
+
+def _finish_road_network(job: _RoadJob, rec) -> bytes:
+    """The normalised OpenDRIVE bytes of the road network."""
+    clip = rec.clip
+    if job.netconvert is not None:
+        return finalize_opendrive(job.netconvert.result(), clip.id, job.proj_string, clip.recorded_at)
+    from vei_scenario.roads.fitted_road import fitted_road_element
+
     try:
         raw = ET.tostring(fitted_road_element(rec.ego))
     except ValueError as exc:
         raise VeiInputError(clip.path, "ego.samples", str(exc)) from None
-    west, south, east, north = shapely.union_all([a.polygon for a in read_lane_areas_from_bytes(raw)]).bounds
-    return finalize_opendrive(raw, clip.id, proj, clip.recorded_at, (west, south, east, north)), "fitted"
+    bounds = shapely.union_all([a.polygon for a in read_lane_areas_from_bytes(raw)]).bounds
+    return finalize_opendrive(raw, clip.id, job.proj_string, clip.recorded_at, bounds)
 
 
 def compile_clip(clip_path: str | Path, output: str | Path, options: CompileOptions | None = None) -> CompileResult:
@@ -91,21 +113,38 @@ def compile_clip(clip_path: str | Path, output: str | Path, options: CompileOpti
     if output.suffix != ".xosc":
         raise VeiInputError(output, "-o", "the output must be a .xosc file")
     clip = load_clip(clip_path)
-    rec = reconstruct(clip, rate_hz=opts.rate_hz, smooth=opts.smooth)
+    proj = LocalProjection(float(clip.ego.lat[0]), float(clip.ego.lon[0]))
     notes: list[str] = []
-    for tid, cat in sorted(rec.skipped_tracks.items()):
-        notes.append(f"track {tid}: category {cat!r} is not modelled; skipped")
-    for tid, track in sorted(rec.scooters.items()):
-        for a, b in track.gaps:
-            notes.append(f"track {tid}: not observed for {b - a:.1f} s (t = {a:.1f}..{b:.1f} s); spline-bridged")
+    road = _start_road_network(clip, proj, opts, output.parent, notes)
+    try:
+        # The heavy imports (scipy, scenariogeneration: ~1 s) and the reconstruction overlap with
+        # netconvert, which runs on the other core.
+        from vei_scenario.geometry.reconstruct import reconstruct
+        from vei_scenario.scenario.model import build_model
 
-    xodr = _road_network(rec, opts, output.parent, notes)
-    xodr_bytes, road_source = xodr
-    stem = output.stem
-    xodr_path = output.with_suffix(".xodr")
-    model = build_model(rec, threat=opts.threat, name=stem)
-    model = _with_road_file(model, xodr_path.name)
-    share = share_on_lanes(read_lane_areas_from_bytes(xodr_bytes), rec.ego_fix_x, rec.ego_fix_y)
+        rec = reconstruct(clip, rate_hz=opts.rate_hz, smooth=opts.smooth)
+        for tid, cat in sorted(rec.skipped_tracks.items()):
+            notes.append(f"track {tid}: category {cat!r} is not modelled; skipped")
+        for tid, track in sorted(rec.scooters.items()):
+            for a, b in track.gaps:
+                notes.append(f"track {tid}: not observed for {b - a:.1f} s (t = {a:.1f}..{b:.1f} s); spline-bridged")
+        stem = output.stem
+        xodr_path = output.with_suffix(".xodr")
+        model = _with_road_file(build_model(rec, threat=opts.threat, name=stem), xodr_path.name)
+        xodr_bytes = _finish_road_network(road, rec)
+    except BaseException:
+        road.cancel()
+        raise
+    road_source = road.source
+    ego_box = (rec.ego_fix_x.min(), rec.ego_fix_y.min(), rec.ego_fix_x.max(), rec.ego_fix_y.max())
+    share = share_on_lanes(read_lane_areas_from_bytes(xodr_bytes, bbox=ego_box), rec.ego_fix_x, rec.ego_fix_y)
+
+    from vei_scenario.openscenario.distribution_writer import (
+        distribution_xml,
+        variant_combinations,
+        variant_filename,
+    )
+    from vei_scenario.openscenario.scenario_writer import scenario_xml
 
     outputs = OutputSet()
     outputs.add(output, scenario_xml(model, opts.osc_minor_version))

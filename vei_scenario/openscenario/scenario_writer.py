@@ -38,7 +38,6 @@ from vei_scenario.scenario.parameters import format_value
 AUTHOR = "vei-scenario"
 SFM_CONTROLLER = "SocialForceModel"
 CAP_CONTROLLER = "CollisionAvoidancePlanner"
-SUPPORTED_MINOR_VERSIONS = (0, 1, 2, 3)
 
 
 def header_date(model: ScenarioModel) -> dt.datetime:

@@ -63,22 +63,50 @@ def find_netconvert() -> str:
     raise VeiInputError(None, "netconvert", "SUMO netconvert not found; install it with: pip install eclipse-sumo")
 
 
+class NetconvertJob:
+    """netconvert running in the background, so it overlaps with the reconstruction (two cores)."""
+
+    def __init__(self, osm_xml: bytes, proj_string: str, osm_source: Path, timeout_s: float = 120.0) -> None:
+        self.osm_source = osm_source
+        self.timeout_s = timeout_s
+        exe = find_netconvert()
+        self._tmp = tempfile.TemporaryDirectory(prefix="vei-netconvert-")
+        src, self._dst = Path(self._tmp.name) / "region.osm", Path(self._tmp.name) / "region.xodr"
+        src.write_bytes(osm_xml)
+        cmd = [exe, "--osm-files", str(src), "--opendrive-output", str(self._dst), "--proj", proj_string]
+        try:
+            self._proc = subprocess.Popen(
+                [*cmd, *NETCONVERT_OPTIONS], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True
+            )
+        except OSError as exc:
+            self._tmp.cleanup()
+            raise VeiInputError(osm_source, "netconvert", f"could not start {exe}: {exc.strerror or exc}") from None
+
+    def result(self) -> bytes:
+        """Wait for netconvert; the OpenDRIVE bytes, or a VeiInputError naming the map file."""
+        try:
+            try:
+                out, err = self._proc.communicate(timeout=self.timeout_s)
+            except subprocess.TimeoutExpired:
+                self._proc.kill()
+                self._proc.communicate()
+                raise VeiInputError(self.osm_source, "netconvert", f"timed out after {self.timeout_s:.0f} s") from None
+            if self._proc.returncode != 0 or not self._dst.is_file():
+                lines = [ln.strip() for ln in (err + out).splitlines() if ln.strip()]
+                errors = [ln for ln in lines if ln.lower().startswith(("error", "fatal"))] or lines[-1:]
+                detail = errors[0] if errors else f"exit code {self._proc.returncode}"
+                raise VeiInputError(self.osm_source, "netconvert", f"failed: {detail}")
+            return self._dst.read_bytes()
+        finally:
+            self._tmp.cleanup()
+
+    def cancel(self) -> None:
+        if self._proc.poll() is None:
+            self._proc.kill()
+            self._proc.communicate()
+        self._tmp.cleanup()
+
+
 def run_netconvert(osm_xml: bytes, proj_string: str, osm_source: Path, timeout_s: float = 120.0) -> bytes:
     """OpenDRIVE bytes for ``osm_xml``; failures name the map file ``osm_source``."""
-    exe = find_netconvert()
-    with tempfile.TemporaryDirectory(prefix="vei-netconvert-") as tmp:
-        src, dst = Path(tmp) / "region.osm", Path(tmp) / "region.xodr"
-        src.write_bytes(osm_xml)
-        cmd = [exe, "--osm-files", str(src), "--opendrive-output", str(dst), "--proj", proj_string, *NETCONVERT_OPTIONS]
-        try:
-            proc = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout_s, check=False)
-        except OSError as exc:
-            raise VeiInputError(osm_source, "netconvert", f"could not start {exe}: {exc.strerror or exc}") from None
-        except subprocess.TimeoutExpired:
-            raise VeiInputError(osm_source, "netconvert", f"timed out after {timeout_s:.0f} s") from None
-        if proc.returncode != 0 or not dst.is_file():
-            lines = [ln.strip() for ln in (proc.stderr + proc.stdout).splitlines() if ln.strip()]
-            errors = [ln for ln in lines if ln.lower().startswith(("error", "fatal"))] or lines[-1:]
-            detail = errors[0] if errors else f"exit code {proc.returncode}"
-            raise VeiInputError(osm_source, "netconvert", f"failed: {detail}")
-        return dst.read_bytes()
+    return NetconvertJob(osm_xml, proj_string, osm_source, timeout_s).result()

@@ -114,16 +114,31 @@ def read_lane_areas(path: Path | str, step_m: float = 0.5) -> list[LaneArea]:
     return lane_areas(parse_xml(path).getroot(), step_m)
 
 
-def read_lane_areas_from_bytes(data: bytes, step_m: float = 0.5) -> list[LaneArea]:
-    return lane_areas(etree.fromstring(data, safe_parser()), step_m)
+def read_lane_areas_from_bytes(
+    data: bytes, step_m: float = 0.5, bbox: tuple[float, float, float, float] | None = None
+) -> list[LaneArea]:
+    return lane_areas(etree.fromstring(data, safe_parser()), step_m, bbox)
 
 
-def lane_areas(root, step_m: float = 0.5) -> list[LaneArea]:
-    """Lane polygons of an ``<OpenDRIVE>`` element."""
+#: Roads whose reference line stays this far outside the ``bbox`` of :func:`lane_areas` are skipped (m);
+#: wider than any plausible carriageway.
+BBOX_MARGIN_M = 30.0
+
+
+def lane_areas(root, step_m: float = 0.5, bbox: tuple[float, float, float, float] | None = None) -> list[LaneArea]:
+    """Lane polygons of an ``<OpenDRIVE>`` element, optionally only of the roads near ``bbox``
+    (min x, min y, max x, max y)."""
     areas: list[LaneArea] = []
     for road in root.iter("road"):
         s, x, y, hdg = reference_line(road, step_m)
         if s.size < 2:
+            continue
+        if bbox is not None and (
+            x.max() < bbox[0] - BBOX_MARGIN_M
+            or y.max() < bbox[1] - BBOX_MARGIN_M
+            or x.min() > bbox[2] + BBOX_MARGIN_M
+            or y.min() > bbox[3] + BBOX_MARGIN_M
+        ):
             continue
         lanes = road.find("lanes")
         offsets = [tuple(_f(o, k) for k in ("s", "a", "b", "c", "d")) for o in lanes.findall("laneOffset")]
