@@ -34,7 +34,7 @@ def test_perpendicular_crossing_shift_and_collision_interval_are_analytic():
     tol = SHIFT_STEP_S + SCAN_DT_S  # the scan's shift step plus its time step
     assert c.collision_shifts_s[0] == pytest.approx(lo, abs=tol)
     assert c.collision_shifts_s[1] == pytest.approx(hi, abs=tol)
-    assert not c.recorded_collision
+    assert not c.unshifted_collision
 
 
 def test_parallel_paths_do_not_reach_the_ego():
@@ -55,7 +55,7 @@ def test_threats_of_the_examples(compiled):
     c = compiled["case_study"].model.conflicts["scooter_1"]
     assert c.time_shift_s == pytest.approx(2.2, abs=0.15)
     assert c.collision_shifts_s[0] < c.time_shift_s < c.collision_shifts_s[1]
-    assert not c.recorded_collision
+    assert not c.unshifted_collision
 
 
 def test_box_overlap_agrees_with_shapely_on_10000_random_pairs():

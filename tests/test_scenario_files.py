@@ -134,7 +134,9 @@ def test_threat_timing_offset_is_the_timeshift_parameter(compiled):
         if g.find(".//Timing") is not None
     }
     assert timings["scooter_1"].get("offset") == "$TimeShift"
-    assert timings["Ego"].get("offset") in ("0", "0.0")
+    assert "Ego" not in timings  # the ego follows its path at $EgoCruiseSpeed, no timing
+    ego_init = next(p for p in root.iter("Private") if p.get("entityRef") == "Ego")
+    assert ego_init.find(".//AbsoluteTargetSpeed").get("value") == "$EgoCruiseSpeed"
     assert all(t.get("domainAbsoluteRelative") == "absolute" and float(t.get("scale")) == 1 for t in timings.values())
     declared = {d.get("name"): d for d in root.iter("ParameterDeclaration")}
     assert {"TimeShift", "RiderType", "CapEnabled", "EgoCruiseSpeed"} <= declared.keys()

@@ -39,8 +39,8 @@ class Conflict:
     t_scooter_s: float
     time_shift_s: float  # shift that makes the scooter reach the point with the ego
     reaches_ego_path: bool
-    recorded_min_distance_m: float  # closest centre distance as recorded (shift 0)
-    recorded_collision: bool
+    unshifted_min_distance_m: float  # closest centre distance at shift 0
+    unshifted_collision: bool
     collision_shifts_s: tuple[float, float] | None  # contiguous shift interval with box contact
 
     @property
@@ -98,7 +98,7 @@ def analyse_conflict(
     reach = 0.5 * (ego_box[1] + scooter_box[1])  # lateral half-widths: boxes can touch across the gap
     reaches = dist <= reach
 
-    # Recorded (shift 0) closeness and contact, on the ego's clock.
+    # Closeness and contact at shift 0, on the ego's clock.
     sx, sy, syaw = state_at(scooter, ego.t)
     rec_dist = float(np.min(np.hypot(sx - ego.x, sy - ego.y)))
     rec_coll = bool(np.any(boxes_overlap(ego.x, ego.y, ego.yaw, *ego_box, sx, sy, syaw, *scooter_box)))

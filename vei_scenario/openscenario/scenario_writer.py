@@ -6,10 +6,12 @@ Structure of a compiled scenario:
 * ``Entities``: ``Ego`` (car) with the ``CollisionAvoidancePlanner`` controller, one bicycle-category
   vehicle per scooter track; the threat scooter carries the ``SocialForceModel`` controller. Controller
   properties hold every model parameter (``$``-references where a scenario parameter decides).
-* ``Init``: every entity teleported to its first pose at its first speed.
+* ``Init``: every entity teleported to its first pose; the ego at ``$EgoCruiseSpeed``, the scooters at
+  their first recorded speed.
 * Story ``Reconstruction``: every moving entity follows its reconstructed trajectory
-  (``FollowTrajectoryAction``, Polyline with vertex times in scenario time, absolute timing; the threat
-  scooter's timing ``offset`` is ``$TimeShift``).
+  (``FollowTrajectoryAction``, Polyline with vertex times in scenario time). Scooters replay with
+  absolute timing (the threat's ``offset`` is ``$TimeShift``); the ego follows the path only
+  (``TimeReference/None``), so it holds its cruise speed unless the planner takes over.
 * Story ``Controllers``: the social force model is activated when ``RiderType`` is ``normal`` or
   ``aggressive`` and the planner when ``CapEnabled`` is true (``ParameterCondition`` triggers, which
   every OpenSCENARIO 1.x version has).
@@ -107,12 +109,17 @@ def _override(minor_version: int) -> xosc.Priority:
     return xosc.Priority.override if minor_version >= 2 else xosc.Priority.overwrite
 
 
-def _trajectory_event(e: EntitySpec, offset: str | float, minor_version: int) -> xosc.Event:
+def _trajectory_event(e: EntitySpec, offset: str | float | None, minor_version: int) -> xosc.Event:
+    """Follow the reconstructed path; with ``offset`` None the path only (speed from elsewhere),
+    otherwise with absolute timing shifted by ``offset``."""
     traj = xosc.Trajectory(f"{e.name}_route", False)
     traj.add_shape(_polyline(e))
-    action = xosc.FollowTrajectoryAction(
-        traj, xosc.FollowingMode.position, xosc.ReferenceContext.absolute, scale=1, offset=offset
-    )
+    if offset is None:
+        action = xosc.FollowTrajectoryAction(traj, xosc.FollowingMode.position)
+    else:
+        action = xosc.FollowTrajectoryAction(
+            traj, xosc.FollowingMode.position, xosc.ReferenceContext.absolute, scale=1, offset=offset
+        )
     event = xosc.Event(f"{e.name}FollowsTrajectory", _override(minor_version))
     event.add_action(f"{e.name}FollowTrajectory", action)
     event.add_trigger(_at_start(f"{e.name}TrajectoryStart"))
@@ -163,13 +170,20 @@ def build_scenario(model: ScenarioModel, minor_version: int = 3, resolved: dict 
                 xosc.WorldPosition(_num(tr.x[0]), _num(tr.y[0]), 0.0, _num(float(wrap_pi(tr.yaw[0])), 6))
             ),
         )
-        init.add_init_action(e.name, xosc.AbsoluteSpeedAction(_num(tr.speed[0], 3), step))
+        if e.name == "Ego":  # the ego drives its path at the cruise speed unless the planner takes over
+            cruise = _ref("EgoCruiseSpeed", resolved, "double")
+            speed: str | float = float(cruise) if resolved is not None else cruise
+        else:
+            speed = _num(tr.speed[0], 3)
+        init.add_init_action(e.name, xosc.AbsoluteSpeedAction(speed, step))
 
     replay = xosc.Story("Reconstruction")
     act = xosc.Act("ReplayRecordedTrajectories", _at_start("ReplayStart"))
     for e in model.entities:
-        if e.name == model.threat:
-            offset: str | float = _ref("TimeShift", resolved, "double")
+        if e.name == "Ego":
+            offset: str | float | None = None
+        elif e.name == model.threat:
+            offset = _ref("TimeShift", resolved, "double")
             offset = float(offset) if resolved is not None else offset
         else:
             offset = 0

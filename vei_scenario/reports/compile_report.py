@@ -36,8 +36,8 @@ def compile_report(result: CompileResult) -> str:
                 f"path stays {c.path_distance_m:.2f} m from the ego's: no conflict"
             )
         lines.append(
-            f"        recorded: min centre distance {c.recorded_min_distance_m:.2f} m, "
-            f"{'COLLISION' if c.recorded_collision else 'no collision'}"
+            f"        at TimeShift 0: min centre distance {c.unshifted_min_distance_m:.2f} m, "
+            f"{'COLLISION' if c.unshifted_collision else 'no collision'}"
         )
     if not math.isfinite(m.conflicts[m.threat].margin_s):
         lines.append("note: no scooter path reaches the ego's; the threat is the closest one")

@@ -17,7 +17,8 @@ from vei_scenario.scenario.parameters import ParameterSpec, declared_parameters
 #: E-scooter with a standing rider (m): deck and bars ~1.1–1.2 m long, shoulders ~0.6 m, ~1.9 m tall.
 SCOOTER_BOX_M = (1.2, 0.6, 1.9)
 EGO_HEIGHT_M = 1.5
-#: Timing shifts of the variation set, around the conflict shift (s).
+#: Timing shifts of the variation set, around the conflict shift (s). The SFM's desired speed defaults
+#: to the threat's median recorded speed, so that a model rider keeps the recorded pace.
 SHIFT_OFFSETS_S = (-1.0, -0.5, 0.0, 0.5, 1.0)
 
 
@@ -73,8 +74,10 @@ def build_model(rec: Reconstruction, threat: str | None = None, name: str | None
         EntitySpec(tid, "bicycle", *SCOOTER_BOX_M, track.trajectory) for tid, track in sorted(rec.scooters.items())
     )
     ego_box = (ego.length_m, ego.width_m)
+    cruise = float(np.median(clip.ego.speed_mps))
+    driven = ego_at_constant_speed(rec.ego, cruise)
     conflicts = {
-        s.name: analyse_conflict(s.name, rec.ego, s.trajectory, ego_box, (s.length_m, s.width_m)) for s in scooters
+        s.name: analyse_conflict(s.name, driven, s.trajectory, ego_box, (s.length_m, s.width_m)) for s in scooters
     }
     if threat is None:
         threat = primary_threat(conflicts)
@@ -82,8 +85,8 @@ def build_model(rec: Reconstruction, threat: str | None = None, name: str | None
         raise VeiInputError(
             clip.path, "--threat", f"no e-scooter track {threat!r} (tracks: {', '.join(sorted(conflicts))})"
         )
-    cruise = float(np.median(clip.ego.speed_mps))
     params = tuple(declared_parameters(cruise, conflicts[threat].time_shift_s))
+    threat_speed = float(np.median(rec.scooters[threat].trajectory.speed))
     return ScenarioModel(
         name=name or clip.id,
         description=f"Reconstructed vehicle–e-scooter interaction from clip {clip.id}",
@@ -93,5 +96,18 @@ def build_model(rec: Reconstruction, threat: str | None = None, name: str | None
         threat=threat,
         conflicts=conflicts,
         parameters=params,
+        sfm=SfmParameters(v0_mps=round(threat_speed, 2)),
         duration_s=rec.duration_s,
     )
+
+
+def ego_at_constant_speed(ego: Trajectory, speed_mps: float) -> Trajectory:
+    """The ego as the scenario drives it without the planner: its path at a constant speed from t = 0.
+
+    The conflict analysis times the ego this way, so that ``ConflictTimeShift`` centres the collision
+    for the scenario as written, not for the recorded speed profile (they differ by ~0.1 s here).
+    """
+    arc = ego.arc_length()
+    t = arc / max(speed_mps, 0.1)
+    keep = np.concatenate([[True], np.diff(t) > 1e-9])
+    return Trajectory(t[keep], ego.x[keep], ego.y[keep], ego.yaw[keep], np.full(int(keep.sum()), speed_mps))

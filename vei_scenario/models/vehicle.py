@@ -1,0 +1,40 @@
+"""Longitudinal vehicle model: an entity moving along its path by arc length.
+
+State (s, v, a). The commanded acceleration is reached at most at ``jerk_max`` and clipped to
+[−max_decel, max_accel]; speed never goes below zero. Each step integrates the constant acceleration of
+the step exactly, stopping at v = 0 inside the step if it comes to rest, so that braking distances match
+v²/(2a) plus the jerk ramp (see tests/test_models.py).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True)
+class VehicleLimits:
+    max_accel_mps2: float = 4.0
+    max_decel_mps2: float = 9.0
+    #: Jerk limit (m/s³); 50 m/s³ lets an emergency brake build up in ~0.15 s, typical of AEB actuators.
+    jerk_max_mps3: float = 50.0
+
+
+@dataclass
+class Longitudinal:
+    s: float
+    v: float
+    a: float = 0.0
+
+
+def longitudinal_step(state: Longitudinal, a_cmd: float, limits: VehicleLimits, dt: float) -> Longitudinal:
+    target = max(-limits.max_decel_mps2, min(limits.max_accel_mps2, a_cmd))
+    da = limits.jerk_max_mps3 * dt
+    a = max(state.a - da, min(state.a + da, target))
+    v0 = state.v
+    if v0 <= 0.0 and a <= 0.0:
+        return Longitudinal(state.s, 0.0, 0.0)
+    v1 = v0 + a * dt
+    if v1 < 0.0:  # comes to rest inside the step
+        t_stop = v0 / -a
+        return Longitudinal(state.s + v0 * t_stop + 0.5 * a * t_stop * t_stop, 0.0, a)
+    return Longitudinal(state.s + v0 * dt + 0.5 * a * dt * dt, v1, a)
