@@ -1,13 +1,14 @@
 """The ego's collision-avoidance planner (CAP): parameters and state machine.
 
 A finite state machine: cruise (PID on speed towards the cruise speed along the ego's waypoints),
-emergency brake when the threat is in the ego's path corridor and the gap is below
-d_safe = v²/(2·a_max) + v·t_h + d0, resume when clear. Pure numerical code shared by the interpreter,
+emergency brake when the threat will be in the ego's path corridor and the gap to that conflict is
+below d_safe = v²/(2·a_max) + v·t_h + d0, resume when clear. Pure numerical code shared by the interpreter,
 the batch engine and the FMU tests; the compiler writes the parameters into the controller properties.
 """
 
 from __future__ import annotations
 
+import math
 from dataclasses import asdict, dataclass
 
 
@@ -26,8 +27,10 @@ class CapParameters:
     #: Comfortable acceleration limits in cruise (m/s²).
     max_accel_mps2: float = 2.0
     max_cruise_decel_mps2: float = 3.0
-    #: Extra half-width of the path corridor beyond the two boxes (m).
+    #: Margin of the path corridor around the ego box, at each side and in front (m).
     corridor_margin_m: float = 0.5
+    #: Look-ahead of the conflict prediction (s); beyond it a predicted conflict is ignored.
+    horizon_s: float = 6.0
 
     def d_safe_m(self, v_mps: float) -> float:
         """Safety distance d_safe = v²/(2·a_max) + v·t_h + d0."""
@@ -54,29 +57,14 @@ class CapState:
 
 @dataclass(frozen=True)
 class ThreatView:
-    """The threat seen from the ego's path: ``gap_m`` along the path from the ego's front to the near
-    edge of the threat (negative once beside or behind), ``lateral_m`` offset of the threat's centre
-    from the path, ``lateral_rate_mps`` its rate of change (positive: moving left)."""
+    """The threat as the planner sees it: ``time_to_conflict_s``, the constant-velocity time until the
+    threat's box touches the ego's path corridor (the ego box widened by the corridor margin on both
+    sides and lengthened by it in front); ``inf`` when they do not meet."""
 
-    gap_m: float
-    lateral_m: float
-    lateral_rate_mps: float
+    time_to_conflict_s: float
 
-
-def in_corridor(view: ThreatView, half_width_m: float, ego_speed_mps: float) -> bool:
-    """The threat is, or will be when the ego gets there, inside the path corridor.
-
-    Constant-velocity prediction over the time the ego needs to close the gap: a crossing scooter that
-    is still beside the road but will be in the ego's path when the ego arrives counts, one that will
-    have left it does not.
-    """
-    if view.gap_m < -0.5:
-        return False
-    if abs(view.lateral_m) <= half_width_m:
-        return True
-    horizon = max(view.gap_m, 0.0) / max(ego_speed_mps, 0.1)
-    later = view.lateral_m + view.lateral_rate_mps * horizon
-    return min(view.lateral_m, later) <= half_width_m and max(view.lateral_m, later) >= -half_width_m
+    def in_path(self, horizon_s: float) -> bool:
+        return self.time_to_conflict_s <= horizon_s
 
 
 def cap_step(
@@ -85,26 +73,27 @@ def cap_step(
     cruise_speed_mps: float,
     ego_speed_mps: float,
     view: ThreatView | None,
-    corridor_half_width_m: float,
     dt: float,
 ) -> tuple[CapState, float, float]:
     """One planner step: (new state, acceleration command m/s², d_safe m).
 
     Cruise: PID on speed towards ``cruise_speed_mps``, limited to the comfort band, with conditional
-    integration (anti-windup). Emergency brake when the threat is in the corridor ahead and the gap is
-    below d_safe: the deceleration that stops ``d0`` short of the threat, saturated at ``a_max``.
-    Resume cruise when the threat has left the corridor or is no longer ahead.
+    integration (anti-windup). Emergency brake when the threat will be in the ego's path corridor and
+    the distance the ego covers before that moment, gap = v · time_to_conflict, is below
+    d_safe = v²/(2·a_max) + v·t_h + d0: the deceleration that stops ``d0`` short of the conflict,
+    saturated at ``a_max``. Resume cruise once no conflict is predicted.
     """
     v = ego_speed_mps
     d_safe = params.d_safe_m(v)
-    threat_ahead = view is not None and in_corridor(view, corridor_half_width_m, v)
+    in_path = view is not None and view.in_path(params.horizon_s)
+    gap = v * view.time_to_conflict_s if in_path else math.inf
     mode = state.mode
-    if mode == CRUISE and threat_ahead and view.gap_m < d_safe:
+    if mode == CRUISE and in_path and gap < d_safe:
         mode = BRAKE
-    elif mode == BRAKE and not threat_ahead:
+    elif mode == BRAKE and not in_path:
         mode = CRUISE
     if mode == BRAKE:
-        room = max(view.gap_m - params.d0_m, 0.05)
+        room = max(gap - params.d0_m, 0.05)
         a_cmd = -min(params.a_max_mps2, v * v / (2 * room)) if v > 0 else 0.0
         return CapState(BRAKE, state.integral, None), a_cmd, d_safe
     error = cruise_speed_mps - v

@@ -1,0 +1,22 @@
+"""The built-in OpenSCENARIO interpreter: runs the compiled XML (or any file in the supported subset).
+
+``document`` loads and resolves parameters, ``storyboard`` holds element states, triggers and
+conditions, ``actions`` and ``controllers`` set what moves the entities, ``engine`` steps everything.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from vei_scenario.interpreter.document import load_scenario
+from vei_scenario.interpreter.engine import DEFAULT_MAX_TIME_S, RunResult, Simulation
+
+
+def run_scenario(
+    path: str | Path, parameters: dict[str, str] | None = None, dt: float = 0.01, max_time_s: float = DEFAULT_MAX_TIME_S
+) -> RunResult:
+    """Load ``path``, apply parameter overrides, run at the fixed step ``dt``."""
+    return Simulation(load_scenario(path, parameters), dt, max_time_s).run()
+
+
+__all__ = ["RunResult", "Simulation", "load_scenario", "run_scenario"]

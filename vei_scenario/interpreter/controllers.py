@@ -1,0 +1,192 @@
+"""Runtime controllers, bound to entities by Assign/ActivateController actions.
+
+A controller that is active for a domain moves its entity in :meth:`move` and returns True; returning
+False leaves the entity to its default motion (trajectory replay, speed actions). The models
+themselves are the pure functions of :mod:`vei_scenario.models`; here they only meet the entities.
+New controllers register in ``CONTROLLERS`` by the OpenSCENARIO ``Controller`` name.
+"""
+
+from __future__ import annotations
+
+import math
+
+from vei_scenario.errors import VeiInputError
+from vei_scenario.interpreter.entities import Entity, Polyline
+from vei_scenario.models.boxes import time_to_contact_scalar
+from vei_scenario.models.cap import CapParameters, CapState, ThreatView, cap_step
+from vei_scenario.models.sfm import RIDER_TYPES, SfmParameters, SfmState, sfm_step
+from vei_scenario.models.vehicle import Longitudinal, longitudinal_step
+
+#: Spacing of the route waypoints the social force model steers at (m). Closer waypoints would keep
+#: the destination within ~σ of the rider and slow it below v0.
+WAYPOINT_SPACING_M = 6.0
+
+
+def advance_along(e: Entity, ds: float) -> None:
+    """Move an entity ``ds`` metres along its followed path, or straight ahead without one."""
+    f = e.follower
+    if f is not None:
+        f.s = min(f.s + ds, f.polyline.length)
+        e.x, e.y, e.yaw = f.polyline.at_s(f.s)
+    else:
+        e.x += ds * math.cos(e.yaw)
+        e.y += ds * math.sin(e.yaw)
+    e.traveled += ds
+
+
+def threat_view(ego: Entity, threat: Entity, margin_m: float) -> ThreatView:
+    """Time until the threat's box meets the ego's path corridor: the ego box widened by ``margin_m``
+    on each side and lengthened by it in front, both moving at constant velocity."""
+    ex, ey, eyaw, el, ew = ego.box()
+    c, s = math.cos(eyaw), math.sin(eyaw)
+    corridor = (ex + 0.5 * margin_m * c, ey + 0.5 * margin_m * s, eyaw, el + margin_m, ew + 2 * margin_m)
+    return ThreatView(time_to_contact_scalar(corridor, ego.velocity(), threat.box(), threat.velocity()))
+
+
+class Controller:
+    domains: tuple[str, ...] = ()
+
+    def __init__(self, name: str, props: dict[str, str], el, ctx) -> None:
+        self.name, self.props, self.el = name, props, el
+
+    def move(self, e: Entity, ctx, dt: float) -> bool:  # pragma: no cover - interface
+        raise NotImplementedError
+
+
+class SocialForceController(Controller):
+    """The e-scooter rider: steers at waypoints of its recorded route with the social force model.
+    ``riderType`` normal: destination and repulsion from the ego; aggressive: no repulsion; replay:
+    the controller leaves the entity to its recorded trajectory."""
+
+    domains = ("lateral", "longitudinal")
+
+    def __init__(self, name, props, el, ctx) -> None:
+        super().__init__(name, props, el, ctx)
+        self.params = SfmParameters.from_properties(props)
+        self.rider = props.get("riderType", "normal")
+        if self.rider not in RIDER_TYPES:
+            raise ctx.error(el, f"riderType {self.rider!r} is not one of {', '.join(RIDER_TYPES)}")
+        self.ego_name = props.get("egoEntity", "Ego")
+        self.route_name = props.get("route")
+        self.route: list[tuple[float, float]] | None = None
+        self.state: SfmState | None = None
+        self.t_start = 0.0
+        self.v_start = 0.0
+
+    def _prepare(self, e: Entity, ctx) -> None:
+        polyline = ctx.trajectories.get(self.route_name) if self.route_name else None
+        if polyline is None and e.follower is not None:
+            polyline = e.follower.polyline
+        if polyline is None:
+            raise ctx.error(self.el, f"SocialForceModel on {e.name}: no route (a 'route' property or a trajectory)")
+        n = max(1, int(polyline.length // WAYPOINT_SPACING_M))
+        self.route = [polyline.at_s(polyline.length * (i + 1) / n)[:2] for i in range(n)]
+        f = e.follower
+        if f is not None and f.timing is not None and polyline.timed:
+            # Ride from the moment the recording starts, shifted like the replay would be.
+            self.t_start = f.sim_time_of(polyline.ts[0])
+            dt0 = polyline.ts[1] - polyline.ts[0] if len(polyline.ts) > 1 else 1.0
+            self.v_start = (polyline.s[1] - polyline.s[0]) / dt0 if len(polyline.ts) > 1 else 0.0
+        else:
+            self.t_start, self.v_start = ctx.t, e.speed
+        if self.ego_name not in ctx.entities:
+            raise ctx.error(self.el, f"SocialForceModel: no ego entity {self.ego_name!r}")
+
+    def move(self, e: Entity, ctx, dt: float) -> bool:
+        if self.rider == "replay":
+            return False
+        if self.route is None:
+            self._prepare(e, ctx)
+        if ctx.t + dt < self.t_start - 1e-9:  # not yet on the road: wait where the recording starts
+            return False
+        if self.state is None:
+            self.state = SfmState(e.x, e.y, self.v_start * math.cos(e.yaw), self.v_start * math.sin(e.yaw))
+        ego = ctx.entities[self.ego_name]
+        old_speed = e.speed
+        self.state = sfm_step(self.state, self.route, self.params, self.rider == "normal", ego.box(), dt)
+        st = self.state
+        speed = math.hypot(st.vx, st.vy)
+        e.traveled += math.hypot(st.x - e.x, st.y - e.y)
+        e.x, e.y, e.speed = st.x, st.y, speed
+        if speed > 0.05:
+            e.yaw = math.atan2(st.vy, st.vx)
+        e.accel = (speed - old_speed) / dt
+        e.status = f"sfm_{self.rider}"
+        return True
+
+
+class CollisionAvoidanceController(Controller):
+    """The ego's collision-avoidance planner: longitudinal only; the path stays the followed one."""
+
+    domains = ("longitudinal",)
+
+    def __init__(self, name, props, el, ctx) -> None:
+        super().__init__(name, props, el, ctx)
+        self.params = CapParameters.from_properties(props)
+        self.enabled = props.get("enabled", "true") == "true"
+        self.cruise = float(props.get("cruiseSpeed", "nan"))
+        if not math.isfinite(self.cruise) or self.cruise < 0:
+            raise ctx.error(el, "CollisionAvoidancePlanner needs a non-negative property cruiseSpeed")
+        self.threat = props.get("threatEntity")
+        self.state = CapState()
+        self.d_safe = math.nan
+
+    def move(self, e: Entity, ctx, dt: float) -> bool:
+        if not self.enabled:
+            return False
+        threat = ctx.entities.get(self.threat)
+        if threat is None:
+            raise ctx.error(self.el, f"CollisionAvoidancePlanner: threatEntity {self.threat!r} is not an entity")
+        view = threat_view(e, threat, self.params.corridor_margin_m)
+        self.state, a_cmd, self.d_safe = cap_step(self.state, self.params, self.cruise, e.speed, view, dt)
+        lon = longitudinal_step(Longitudinal(0.0, e.speed, e.accel), a_cmd, e.limits, dt)
+        advance_along(e, lon.s)
+        e.speed, e.accel = lon.v, lon.a
+        e.status = f"cap_{self.state.mode}"
+        return True
+
+
+CONTROLLERS = {
+    "SocialForceModel": SocialForceController,
+    "CollisionAvoidancePlanner": CollisionAvoidanceController,
+}
+
+
+def make_controller(el, ctx) -> Controller:
+    """A runtime controller from a ``<Controller>`` element."""
+    name = el.get("name", "")
+    props = {p.get("name"): p.get("value") for p in el.iterfind("Properties/Property")}
+    cls = CONTROLLERS.get(name)
+    if cls is None:
+        raise VeiInputError(
+            ctx.path,
+            f"line {el.sourceline}",
+            f"controller {name!r} is not supported by vei run (supported: {', '.join(CONTROLLERS)})",
+        )
+    return cls(name, props, el, ctx)
+
+
+def polyline_from(el, ctx) -> Polyline:
+    """A ``<Trajectory>``'s polyline (the only shape vei run follows)."""
+    if el.get("closed", "false") == "true":
+        raise ctx.error(el, "closed trajectories are not supported")
+    shape = el.find("Shape")
+    if shape is None or shape.find("Polyline") is None:
+        kind = shape[0].tag if shape is not None and len(shape) else "none"
+        raise ctx.error(el, f"trajectory shape <{kind}> is not supported (Polyline only)")
+    xs, ys, hs, ts = [], [], [], []
+    for v in shape.find("Polyline").iterfind("Vertex"):
+        wp = v.find("Position/WorldPosition")
+        if wp is None:
+            pos = v.find("Position")
+            kind = pos[0].tag if pos is not None and len(pos) else "none"
+            raise ctx.error(v, f"vertex position <{kind}> is not supported (WorldPosition only)")
+        xs.append(float(wp.get("x")))
+        ys.append(float(wp.get("y")))
+        hs.append(float(wp.get("h")) if wp.get("h") is not None else None)
+        ts.append(float(v.get("time")) if v.get("time") is not None else None)
+    if len(xs) < 2:
+        raise ctx.error(el, "a polyline needs at least two vertices")
+    if all(t is not None for t in ts) and any(b <= a for a, b in zip(ts, ts[1:])):
+        raise ctx.error(el, "polyline vertex times must increase")
+    return Polyline(xs, ys, hs, ts)

@@ -1,0 +1,146 @@
+"""Load an OpenSCENARIO scenario for execution: safe parsing and parameter resolution.
+
+Every attribute holding ``$Name`` or ``${expression}`` is replaced by its value before the storyboard is
+built, scope by scope (a ``ParameterDeclarations`` inside a Story or Maneuver adds to the scope of that
+element). ``--param Name=Value`` overrides a top-level declaration; an unknown name or a value of the
+wrong type is refused, as is any reference to an undeclared parameter, naming the line.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+from lxml import etree
+
+from vei_scenario.errors import VeiInputError
+from vei_scenario.interpreter.expressions import ExpressionError, evaluate
+from vei_scenario.safe_xml import parse_xml
+
+_REF = re.compile(r"^\$([A-Za-z_][A-Za-z0-9_]*)$")
+
+
+@dataclass
+class ScenarioDocument:
+    path: Path
+    root: etree._Element  # parameters resolved in place
+    minor_version: int
+    parameters: dict[str, str]  # top-level values after overrides
+    parameter_types: dict[str, str]
+    road_file: Path | None
+
+
+def _check_type(type_: str, value: str) -> str | None:
+    """None when ``value`` is a valid literal of the OpenSCENARIO parameter type, else the reason."""
+    try:
+        if type_ == "double":
+            float(value)
+        elif type_ in ("int", "integer", "unsignedInt", "unsignedShort"):
+            n = int(value)
+            if type_.startswith("unsigned") and n < 0:
+                return "must not be negative"
+        elif type_ == "boolean" and value not in ("true", "false"):
+            return "must be true or false"
+    except ValueError:
+        return f"is not a valid {type_}"
+    return None
+
+
+def _format_number(value: float) -> str:
+    return repr(int(value)) if value.is_integer() and abs(value) < 1e15 else repr(value)
+
+
+def _resolve_value(path: Path, el, attr: str, value: str, scope: dict[str, str]) -> str:
+    m = _REF.match(value)
+    if m:
+        name = m.group(1)
+        if name not in scope:
+            raise VeiInputError(
+                path, f"line {el.sourceline}", f'<{el.tag} {attr}="{value}">: parameter ${name} is not declared'
+            )
+        return scope[name]
+    if value.startswith("${") and value.endswith("}"):
+        try:
+            return _format_number(evaluate(value[2:-1], scope))
+        except ExpressionError as exc:
+            raise VeiInputError(path, f"line {el.sourceline}", f'<{el.tag} {attr}="{value}">: {exc}') from None
+    return value
+
+
+def _declare(path: Path, decls, scope: dict[str, str], types: dict[str, str]) -> None:
+    for d in decls.iterfind("ParameterDeclaration"):
+        name, type_ = d.get("name"), d.get("parameterType", "string")
+        value = _resolve_value(path, d, "value", d.get("value", ""), scope)
+        problem = _check_type(type_, value)
+        if problem:
+            raise VeiInputError(path, f"line {d.sourceline}", f"parameter {name} = {value!r} {problem}")
+        scope[name] = value
+        types[name] = type_
+
+
+def _substitute(path: Path, el, scope: dict[str, str], types: dict[str, str]) -> None:
+    local = el.find("ParameterDeclarations")
+    if local is not None and el.tag != "OpenSCENARIO":
+        scope = dict(scope)
+        _declare(path, local, scope, dict(types))
+    for attr, value in el.attrib.items():
+        if "$" in value and not (el.tag == "ParameterDeclaration" and attr == "name"):
+            el.set(attr, _resolve_value(path, el, attr, value, scope))
+    for child in el:
+        if isinstance(child.tag, str) and child.tag != "ParameterDeclarations":
+            _substitute(path, child, scope, types)
+
+
+def load_scenario(path: str | Path, overrides: dict[str, str] | None = None) -> ScenarioDocument:
+    path = Path(path)
+    tree = parse_xml(path)
+    if tree.docinfo.internalDTD is not None:
+        raise VeiInputError(path, "line 1", "DTDs are not accepted in OpenSCENARIO files")
+    root = tree.getroot()
+    if root.tag != "OpenSCENARIO":
+        raise VeiInputError(path, f"line {root.sourceline}", f"root element <{root.tag}> is not <OpenSCENARIO>")
+    header = root.find("FileHeader")
+    try:
+        major, minor = int(header.get("revMajor")), int(header.get("revMinor"))
+    except (AttributeError, TypeError, ValueError):
+        raise VeiInputError(path, f"line {root.sourceline}", "FileHeader without numeric revMajor/revMinor") from None
+    if major != 1 or minor > 3:
+        raise VeiInputError(
+            path, f"line {header.sourceline}", f"OpenSCENARIO {major}.{minor} is not supported (1.0-1.3)"
+        )
+    if root.find("Storyboard") is None:
+        kind = (
+            "a ParameterValueDistribution" if root.find("ParameterValueDistribution") is not None else "not a scenario"
+        )
+        raise VeiInputError(path, f"line {root.sourceline}", f"{kind}: no <Storyboard> to run")
+
+    scope: dict[str, str] = {}
+    types: dict[str, str] = {}
+    top = root.find("ParameterDeclarations")
+    if top is not None:
+        _declare(path, top, scope, types)
+    for name, value in (overrides or {}).items():
+        if name not in scope:
+            known = ", ".join(sorted(scope)) or "none"
+            raise VeiInputError(path, "--param", f"unknown parameter {name!r} (declared: {known})")
+        problem = _check_type(types[name], value)
+        if problem:
+            raise VeiInputError(path, "--param", f"{name}={value!r} {problem} ({types[name]} parameter)")
+        scope[name] = value
+    if overrides:  # later declarations may depend on overridden ones: re-declare in order
+        fixed = dict(overrides)
+        scope, types = {}, {}
+        for d in top.iterfind("ParameterDeclaration"):
+            name = d.get("name")
+            value = fixed[name] if name in fixed else _resolve_value(path, d, "value", d.get("value", ""), scope)
+            scope[name], types[name] = value, d.get("parameterType", "string")
+    _substitute(path, root, scope, types)
+
+    road_file = None
+    logic = root.find("RoadNetwork/LogicFile")
+    if logic is not None and logic.get("filepath"):
+        road_file = (path.parent / logic.get("filepath")).resolve()
+        if not road_file.is_file():
+            raise VeiInputError(path, f"line {logic.sourceline}", f"road network {logic.get('filepath')!r} not found")
+    return ScenarioDocument(path, root, minor, scope, types, road_file)

@@ -1,0 +1,375 @@
+"""The fixed-step engine: builds entities and the storyboard from a loaded scenario and runs them.
+
+Each step, in this order: the storyboard (stop trigger, act and event triggers, element states), the
+actions (which set what moves the entities), the motion of every entity (active controller, else its
+followed trajectory or speed), collision detection between all oriented boxes, and recording.
+Outputs (CSV, metrics, plots) are made from the returned :class:`RunResult` elsewhere.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from vei_scenario.interpreter.actions import global_actions, private_actions
+from vei_scenario.interpreter.controllers import advance_along, make_controller, polyline_from
+from vei_scenario.interpreter.document import ScenarioDocument
+from vei_scenario.interpreter.entities import Entity
+from vei_scenario.interpreter.storyboard import COMPLETE, RUNNING, STANDBY, Context, Element, Trigger
+from vei_scenario.models.boxes import boxes_overlap_scalar
+from vei_scenario.models.vehicle import VehicleLimits
+
+#: Runs end here at the latest (s) when the storyboard has no stop trigger that fires.
+DEFAULT_MAX_TIME_S = 600.0
+
+
+@dataclass
+class EntityTrace:
+    name: str
+    category: str
+    length: float
+    width: float
+    t: np.ndarray
+    x: np.ndarray
+    y: np.ndarray
+    yaw: np.ndarray
+    speed: np.ndarray
+    accel: np.ndarray
+    status: list[str]
+
+
+@dataclass
+class RunResult:
+    scenario: str
+    dt: float
+    t: np.ndarray
+    traces: dict[str, EntityTrace]
+    collisions: list[tuple[float, str, str]]  # onset time and the two entities
+    parameters: dict[str, str]
+    ego: str
+    threat: str | None
+    signals: dict[str, np.ndarray] = field(default_factory=dict)  # e.g. the planner's d_safe
+    end_reason: str = ""
+
+
+def _entity(obj, ctx) -> Entity:
+    name = obj.get("name")
+    if obj.find("CatalogReference") is not None:
+        raise ctx.error(obj.find("CatalogReference"), "catalog references are not supported by vei run")
+    kind = next((c for c in obj if c.tag in ("Vehicle", "Pedestrian", "MiscObject")), None)
+    if kind is None:
+        raise ctx.error(obj, f"entity {name!r}: only Vehicle, Pedestrian and MiscObject are supported")
+    box = kind.find("BoundingBox")
+    dims, centre = box.find("Dimensions"), box.find("Center")
+    category = kind.get("vehicleCategory") or kind.get("pedestrianCategory") or kind.get("miscObjectCategory") or ""
+    perf = kind.find("Performance")
+    limits = VehicleLimits()
+    if perf is not None:
+        limits = VehicleLimits(
+            float(perf.get("maxAcceleration")), float(perf.get("maxDeceleration")), limits.jerk_max_mps3
+        )
+    return Entity(
+        name,
+        category,
+        float(dims.get("length")),
+        float(dims.get("width")),
+        float(dims.get("height")),
+        float(centre.get("x", "0")),
+        limits,
+    )
+
+
+class Simulation:
+    def __init__(self, doc: ScenarioDocument, dt: float = 0.01, max_time_s: float = DEFAULT_MAX_TIME_S) -> None:
+        root = doc.root
+        self.doc, self.dt, self.max_time = doc, dt, max_time_s
+        self.ctx = Context(doc.path, 0.0, dt, 0, {}, dict(doc.parameters))
+        ctx = self.ctx
+        ctx.trajectories = {}
+        for traj in root.iter("Trajectory"):
+            if traj.get("name"):
+                ctx.trajectories[traj.get("name")] = polyline_from(traj, ctx)
+        for sel in root.iter("EntitySelection"):
+            raise ctx.error(sel, "entity selections are not supported by vei run")
+        for obj in root.iterfind("Entities/ScenarioObject"):
+            ctx.entities[obj.get("name")] = _entity(obj, ctx)
+        if not ctx.entities:
+            raise ctx.error(root, "the scenario has no entities")
+        for obj in root.iterfind("Entities/ScenarioObject"):
+            ctrl = obj.find("ObjectController/Controller")
+            if obj.find("ObjectController/CatalogReference") is not None:
+                raise ctx.error(obj.find("ObjectController"), "controller catalogs are not supported by vei run")
+            if ctrl is not None:
+                c = make_controller(ctrl, ctx)
+                ctx.entities[obj.get("name")].controllers[c.name] = c
+
+        self.init_actions = []
+        for private in root.iterfind("Storyboard/Init/Actions/Private"):
+            name = private.get("entityRef")
+            if name not in ctx.entities:
+                raise ctx.error(private, f"Init: no entity named {name!r}")
+            for pa in private.iterfind("PrivateAction"):
+                self.init_actions.extend(private_actions(pa, name, ctx))
+        for ga in root.iterfind("Storyboard/Init/Actions/GlobalAction"):
+            self.init_actions.extend(global_actions(ga, ctx))
+        for ua in root.iterfind("Storyboard/Init/Actions/UserDefinedAction"):
+            raise ctx.error(ua, "user-defined actions are not supported by vei run")
+
+        board = root.find("Storyboard")
+        stop = board.find("StopTrigger")
+        self.stop_trigger = Trigger(stop, ctx) if stop is not None else None
+        self.stories = [self._story(s) for s in board.iterfind("Story")]
+        self.ego, self.threat = self._roles()
+
+    # --- building -----------------------------------------------------------------------------------
+    def _story(self, el) -> Element:
+        ctx = self.ctx
+        return Element("Story", el, ctx, [self._act(a) for a in el.iterfind("Act")])
+
+    def _act(self, el) -> Element:
+        return Element("Act", el, self.ctx, [self._group(g) for g in el.iterfind("ManeuverGroup")])
+
+    def _group(self, el) -> Element:
+        ctx = self.ctx
+        actors = [r.get("entityRef") for r in el.iterfind("Actors/EntityRef")]
+        for a in actors:
+            if a not in ctx.entities:
+                raise ctx.error(el, f"ManeuverGroup {el.get('name')!r}: no entity named {a!r}")
+        if el.find("CatalogReference") is not None:
+            raise ctx.error(el.find("CatalogReference"), "maneuver catalogs are not supported by vei run")
+        return Element("ManeuverGroup", el, ctx, [self._maneuver(m, actors) for m in el.iterfind("Maneuver")])
+
+    def _maneuver(self, el, actors) -> Element:
+        return Element("Maneuver", el, self.ctx, [self._event(e, actors) for e in el.iterfind("Event")])
+
+    def _event(self, el, actors) -> Element:
+        ctx = self.ctx
+        event = Element("Event", el, ctx, [self._action(a, actors) for a in el.iterfind("Action")])
+        event.priority = el.get("priority", "overwrite")
+        return event
+
+    def _action(self, el, actors) -> Element:
+        ctx = self.ctx
+        action = Element("Action", el, ctx)
+        pa, ga = el.find("PrivateAction"), el.find("GlobalAction")
+        if pa is not None:
+            if not actors:
+                raise ctx.error(el, "a private action needs actors")
+            for a in actors:
+                action.actions.extend(private_actions(pa, a, ctx))
+        elif ga is not None:
+            action.actions.extend(global_actions(ga, ctx))
+        else:
+            kind = el[0].tag if len(el) else "nothing"
+            raise ctx.error(el, f"action <{kind}> is not supported by vei run")
+        return action
+
+    def _roles(self) -> tuple[str, str | None]:
+        """The ego (entity named Ego, else the first) and its threat (the planner's threatEntity,
+        else the nearest other entity at the start)."""
+        names = list(self.ctx.entities)
+        ego = "Ego" if "Ego" in names else names[0]
+        for c in self.ctx.entities[ego].controllers.values():
+            t = c.props.get("threatEntity")
+            if t in self.ctx.entities:
+                return ego, t
+        others = [n for n in names if n != ego]
+        return ego, (others[0] if others else None)
+
+    # --- running ------------------------------------------------------------------------------------
+    def _start_event(self, ev: Element, running: list[Element]) -> None:
+        ctx = self.ctx
+        if ev.priority == "skip" and running:
+            ev.mark("skipTransition", ctx.step)
+            return
+        if ev.priority in ("override", "overwrite"):
+            for r in running:
+                r.complete(ctx, "stopTransition")
+        ev.start(ctx)
+        for a in ev.children:
+            a.start(ctx)
+            for act in a.actions:
+                act.start(ctx)
+
+    def _storyboard(self) -> bool:
+        """Advance states; False when the storyboard has ended."""
+        ctx = self.ctx
+        if self.stop_trigger is not None and self.stop_trigger.evaluate(ctx):
+            return False
+        for story in self.stories:
+            if story.state == STANDBY:
+                story.start(ctx)
+            if story.state != RUNNING:
+                continue
+            for act in story.children:
+                if act.state == STANDBY and (act.start_trigger is None or act.start_trigger.evaluate(ctx)):
+                    act.start(ctx)
+                    for g in act.children:
+                        g.start(ctx)
+                        for m in g.children:
+                            m.start(ctx)
+                if act.state != RUNNING:
+                    continue
+                if act.stop_trigger is not None and act.stop_trigger.evaluate(ctx):
+                    act.complete(ctx, "stopTransition")
+                    continue
+                for g in act.children:
+                    for m in g.children:
+                        if m.state != RUNNING:
+                            continue
+                        running = [e for e in m.children if e.state == RUNNING]
+                        for ev in m.children:
+                            if ev.state == STANDBY and (ev.start_trigger is None or ev.start_trigger.evaluate(ctx)):
+                                self._start_event(ev, [r for r in running if r is not ev])
+        return True
+
+    def _complete_finished(self) -> None:
+        ctx = self.ctx
+
+        def done(el: Element) -> bool:
+            return el.state == COMPLETE
+
+        for story in self.stories:
+            if story.state != RUNNING:
+                continue
+            for act in story.children:
+                if act.state != RUNNING:
+                    continue
+                for g in act.children:
+                    for m in g.children:
+                        for ev in m.children:
+                            if ev.state != RUNNING:
+                                continue
+                            for a in ev.children:
+                                if a.state == RUNNING:
+                                    for act_rt in a.actions:
+                                        act_rt.update(ctx)
+                                    if all(x.done for x in a.actions):
+                                        a.complete(ctx)
+                            if all(done(a) for a in ev.children):
+                                ev.complete(ctx)
+                                if ev.executions < ev.max_executions:
+                                    ev.state = STANDBY
+                        if m.state == RUNNING and all(done(e) for e in m.children):
+                            m.complete(ctx)
+                    if g.state == RUNNING and all(done(m) for m in g.children):
+                        g.complete(ctx)
+                if all(done(g) for g in act.children):
+                    act.complete(ctx)
+            if all(done(a) for a in story.children):
+                story.complete(ctx)
+
+    def _move(self, e: Entity) -> None:
+        ctx, dt = self.ctx, self.dt
+        for domain in ("lateral", "longitudinal"):
+            ctrl = e.active.get(domain)
+            if ctrl is not None and ctrl.move(e, ctx, dt):
+                return
+        e.status = "default"
+        f = e.follower
+        t_next = ctx.t + dt
+        if f is not None and f.timing is not None and f.polyline.timed:
+            target = f.polyline.s_at_time(f.trajectory_time(t_next))
+            if f.mode == "position":
+                x, y, h = f.polyline.at_time(f.trajectory_time(t_next))
+                speed = (target - f.s) / dt
+                e.accel, e.speed = (speed - e.speed) / dt, speed
+                e.traveled += abs(target - f.s)
+                f.s = target
+                e.x, e.y, e.yaw = x, y, h
+                e.status = "replay"
+                return
+            # follow: track the timed position with the entity's acceleration limits
+            v_target = (target - f.s) / dt
+            a = max(-e.limits.max_decel_mps2, min(e.limits.max_accel_mps2, (v_target - e.speed) / dt))
+            v = max(0.0, e.speed + a * dt)
+            advance_along(e, 0.5 * (e.speed + v) * dt)
+            e.speed, e.accel = v, a
+            e.status = "follow"
+            return
+        v0 = e.speed
+        if e.speed_profile is not None:
+            v, finished = e.speed_profile.speed(t_next)
+            e.speed = v
+            if finished:
+                e.speed_profile = None
+        e.accel = (e.speed - v0) / dt
+        advance_along(e, 0.5 * (v0 + e.speed) * dt)
+
+    def run(self) -> RunResult:
+        ctx, dt = self.ctx, self.dt
+        names = list(ctx.entities)
+        rec = {n: ([], [], [], [], [], [], []) for n in names}
+        times: list[float] = []
+        d_safe: list[float] = []
+        cap = next((c for c in ctx.entities[self.ego].controllers.values() if hasattr(c, "d_safe")), None)
+        collisions: list[tuple[float, str, str]] = []
+
+        def record() -> None:
+            times.append(ctx.t)
+            for n in names:
+                e = ctx.entities[n]
+                r = rec[n]
+                r[0].append(e.x)
+                r[1].append(e.y)
+                r[2].append(e.yaw)
+                r[3].append(e.speed)
+                r[4].append(e.accel)
+                r[5].append(e.status)
+            d_safe.append(cap.d_safe if cap is not None else math.nan)
+
+        for a in self.init_actions:
+            a.start(ctx)
+        self._collide(collisions)
+        record()
+        reason = f"time limit {self.max_time:g} s"
+        while ctx.t < self.max_time - 1e-9:
+            if not self._storyboard():
+                reason = "storyboard stop trigger"
+                break
+            for a in self.init_actions:
+                if not a.done:
+                    a.update(ctx)
+            for n in names:
+                self._move(ctx.entities[n])
+            self._complete_finished()
+            ctx.step += 1
+            ctx.t = round(ctx.step * dt, 9)
+            self._collide(collisions)
+            record()
+            if all(s.state == COMPLETE for s in self.stories) and self.stop_trigger is None:
+                reason = "all stories complete"
+                break
+        t = np.array(times)
+        traces = {}
+        for n in names:
+            e, r = ctx.entities[n], rec[n]
+            traces[n] = EntityTrace(n, e.category, e.length, e.width, t, *(np.array(v) for v in r[:5]), r[5])
+        return RunResult(
+            str(self.doc.path),
+            dt,
+            t,
+            traces,
+            collisions,
+            dict(ctx.parameters),
+            self.ego,
+            self.threat,
+            {"d_safe": np.array(d_safe)},
+            reason,
+        )
+
+    def _collide(self, collisions: list) -> None:
+        ctx = self.ctx
+        names = list(ctx.entities)
+        now: set[frozenset[str]] = set()
+        boxes = {n: ctx.entities[n].box() for n in names}
+        for i, a in enumerate(names):
+            for b in names[i + 1 :]:
+                if boxes_overlap_scalar(boxes[a], boxes[b]):
+                    pair = frozenset((a, b))
+                    now.add(pair)
+                    if pair not in ctx.colliding:
+                        collisions.append((ctx.t, a, b))
+        ctx.colliding = now

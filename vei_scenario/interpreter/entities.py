@@ -1,0 +1,144 @@
+"""Runtime entities: pose, speed, box, and what moves them (path follower, speed profile, controllers)."""
+
+from __future__ import annotations
+
+import bisect
+import math
+from dataclasses import dataclass, field
+
+from vei_scenario.models.vehicle import VehicleLimits
+
+
+def _wrap(a: float) -> float:
+    return (a + math.pi) % (2 * math.pi) - math.pi
+
+
+class Polyline:
+    """A trajectory shape: vertices with optional times and headings; evaluated by time or arc length."""
+
+    def __init__(self, xs: list[float], ys: list[float], hs: list[float | None], ts: list[float | None]) -> None:
+        self.xs, self.ys, self.ts = xs, ys, ts
+        self.s = [0.0]
+        for i in range(1, len(xs)):
+            self.s.append(self.s[-1] + math.hypot(xs[i] - xs[i - 1], ys[i] - ys[i - 1]))
+        seg = [math.atan2(ys[i + 1] - ys[i], xs[i + 1] - xs[i]) for i in range(len(xs) - 1)] or [hs[0] or 0.0]
+        self.hs = [h if h is not None else seg[min(i, len(seg) - 1)] for i, h in enumerate(hs)]
+        self.timed = all(t is not None for t in ts)
+
+    @property
+    def length(self) -> float:
+        return self.s[-1]
+
+    def _lerp(self, i: int, f: float) -> tuple[float, float, float]:
+        j = min(i + 1, len(self.xs) - 1)
+        h0, h1 = self.hs[i], self.hs[j]
+        return (
+            self.xs[i] + f * (self.xs[j] - self.xs[i]),
+            self.ys[i] + f * (self.ys[j] - self.ys[i]),
+            _wrap(h0 + f * _wrap(h1 - h0)),
+        )
+
+    def at_time(self, t: float) -> tuple[float, float, float]:
+        ts = self.ts
+        if t <= ts[0]:
+            return self.xs[0], self.ys[0], self.hs[0]
+        if t >= ts[-1]:
+            return self.xs[-1], self.ys[-1], self.hs[-1]
+        i = bisect.bisect_right(ts, t) - 1
+        return self._lerp(i, (t - ts[i]) / (ts[i + 1] - ts[i]))
+
+    def at_s(self, s: float) -> tuple[float, float, float]:
+        if s <= 0:
+            return self.xs[0], self.ys[0], self.hs[0]
+        if s >= self.s[-1]:
+            return self.xs[-1], self.ys[-1], self.hs[-1]
+        i = bisect.bisect_right(self.s, s) - 1
+        ds = self.s[i + 1] - self.s[i]
+        return self._lerp(i, 0.0 if ds <= 0 else (s - self.s[i]) / ds)
+
+    def s_at_time(self, t: float) -> float:
+        ts = self.ts
+        if t <= ts[0]:
+            return 0.0
+        if t >= ts[-1]:
+            return self.s[-1]
+        i = bisect.bisect_right(ts, t) - 1
+        return self.s[i] + (t - ts[i]) / (ts[i + 1] - ts[i]) * (self.s[i + 1] - self.s[i])
+
+
+@dataclass
+class PathFollower:
+    """A running FollowTrajectoryAction on its entity."""
+
+    polyline: Polyline
+    timing: tuple[str, float, float] | None  # (absolute|relative, scale, offset) or None: path only
+    mode: str  # "position" or "follow"
+    t_start: float
+    s: float = 0.0
+
+    def trajectory_time(self, t_sim: float) -> float:
+        domain, scale, offset = self.timing
+        base = 0.0 if domain == "absolute" else self.t_start
+        return (t_sim - base - offset) / scale
+
+    def sim_time_of(self, t_traj: float) -> float:
+        domain, scale, offset = self.timing
+        return t_traj * scale + offset + (0.0 if domain == "absolute" else self.t_start)
+
+    def finished(self, t_sim: float) -> bool:
+        if self.timing is not None and self.polyline.timed:
+            return self.trajectory_time(t_sim) >= self.polyline.ts[-1]
+        return self.s >= self.polyline.length - 1e-9
+
+
+@dataclass
+class SpeedProfile:
+    """A running SpeedAction: speed from v0 to v1 over ``duration`` with a transition shape."""
+
+    v0: float
+    v1: float
+    t0: float
+    duration: float
+    shape: str
+
+    def speed(self, t: float) -> tuple[float, bool]:
+        if self.duration <= 0:
+            return self.v1, True
+        x = min(max((t - self.t0) / self.duration, 0.0), 1.0)
+        if self.shape == "cubic":
+            f = x * x * (3 - 2 * x)
+        elif self.shape == "sinusoidal":
+            f = 0.5 * (1 - math.cos(math.pi * x))
+        else:
+            f = x
+        return self.v0 + (self.v1 - self.v0) * f, x >= 1.0
+
+
+@dataclass
+class Entity:
+    name: str
+    category: str
+    length: float
+    width: float
+    height: float
+    center_x: float  # box centre relative to the reference point, along the heading
+    limits: VehicleLimits
+    x: float = 0.0
+    y: float = 0.0
+    yaw: float = 0.0
+    speed: float = 0.0
+    accel: float = 0.0
+    follower: PathFollower | None = None
+    speed_profile: SpeedProfile | None = None
+    controllers: dict = field(default_factory=dict)  # name -> runtime controller
+    active: dict = field(default_factory=dict)  # domain ("lateral"/"longitudinal") -> controller
+    status: str = "default"
+    traveled: float = 0.0
+
+    def box(self) -> tuple[float, float, float, float, float]:
+        """(centre x, centre y, yaw, length, width) of the bounding box."""
+        c, s = math.cos(self.yaw), math.sin(self.yaw)
+        return self.x + c * self.center_x, self.y + s * self.center_x, self.yaw, self.length, self.width
+
+    def velocity(self) -> tuple[float, float]:
+        return self.speed * math.cos(self.yaw), self.speed * math.sin(self.yaw)

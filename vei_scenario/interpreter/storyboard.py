@@ -1,0 +1,378 @@
+"""Storyboard logic: elements with states, triggers with edges and delays, and conditions.
+
+Knows nothing of how entities move: conditions read the :class:`Context` (time, entities, parameters,
+collisions), and actions are started and stopped through the small interface in
+:mod:`vei_scenario.interpreter.actions`. A new condition is one class and one line in ``CONDITIONS``.
+"""
+
+from __future__ import annotations
+
+import math
+from collections import deque
+from dataclasses import dataclass, field
+
+from vei_scenario.errors import VeiInputError
+from vei_scenario.models.boxes import box_distance, time_to_contact
+
+STANDBY, RUNNING, COMPLETE = "standby", "running", "complete"
+
+
+@dataclass
+class Context:
+    """What conditions and actions see of the simulation."""
+
+    path: object  # the scenario file, for error messages
+    t: float
+    dt: float
+    step: int
+    entities: dict
+    parameters: dict[str, str]
+    elements: dict[tuple[str, str], Element] = field(default_factory=dict)
+    colliding: set[frozenset[str]] = field(default_factory=set)
+    trajectories: dict = field(default_factory=dict)  # Trajectory name -> Polyline
+
+    def error(self, el, reason: str) -> VeiInputError:
+        return VeiInputError(self.path, f"line {el.sourceline}", reason)
+
+
+def compare(rule: str, a: float, b: float) -> bool:
+    if rule == "greaterThan":
+        return a > b
+    if rule == "lessThan":
+        return a < b
+    if rule == "greaterOrEqual":
+        return a >= b
+    if rule == "lessOrEqual":
+        return a <= b
+    if rule == "equalTo":
+        return abs(a - b) <= 1e-9 * max(1.0, abs(b))
+    if rule == "notEqualTo":
+        return abs(a - b) > 1e-9 * max(1.0, abs(b))
+    raise ValueError(rule)
+
+
+# --- conditions -------------------------------------------------------------------------------------
+
+
+class Condition:
+    """Raw truth of a condition; edges and delays are applied by :class:`ConditionRunner`."""
+
+    def test(self, ctx: Context) -> bool:  # pragma: no cover - interface
+        raise NotImplementedError
+
+
+class SimulationTime(Condition):
+    def __init__(self, el, ctx: Context) -> None:
+        self.value, self.rule = float(el.get("value")), el.get("rule")
+
+    def test(self, ctx: Context) -> bool:
+        return compare(self.rule, ctx.t, self.value)
+
+
+class ParameterCondition(Condition):
+    def __init__(self, el, ctx: Context) -> None:
+        self.name, self.value, self.rule = el.get("parameterRef"), el.get("value"), el.get("rule")
+        if self.name not in ctx.parameters:
+            raise ctx.error(el, f"ParameterCondition on undeclared parameter {self.name!r}")
+
+    def test(self, ctx: Context) -> bool:
+        current = ctx.parameters[self.name]
+        try:
+            return compare(self.rule, float(current), float(self.value))
+        except ValueError:
+            if self.rule == "equalTo":
+                return current == self.value
+            if self.rule == "notEqualTo":
+                return current != self.value
+            return False
+
+
+class StoryboardElementState(Condition):
+    TYPES = {
+        "story": "Story",
+        "act": "Act",
+        "maneuverGroup": "ManeuverGroup",
+        "maneuver": "Maneuver",
+        "event": "Event",
+        "action": "Action",
+    }
+
+    def __init__(self, el, ctx: Context) -> None:
+        self.key = (self.TYPES.get(el.get("storyboardElementType"), ""), el.get("storyboardElementRef"))
+        self.state = el.get("state")
+        self.el = el
+
+    def test(self, ctx: Context) -> bool:
+        target = ctx.elements.get(self.key)
+        if target is None:
+            raise ctx.error(self.el, f"StoryboardElementStateCondition: no {self.key[0]} named {self.key[1]!r}")
+        if self.state.endswith("State"):
+            return target.state == self.state[: -len("State")]
+        return target.transitions.get(self.state, -10) >= ctx.step - 1
+
+
+class _EntityCondition(Condition):
+    """Base for conditions evaluated for triggering entities (any/all)."""
+
+    def __init__(self, el, ctx: Context, triggering: list[str], rule: str) -> None:
+        self.el, self.triggering, self.rule_any = el, triggering, rule == "any"
+
+    def for_entity(self, ctx: Context, name: str) -> bool:  # pragma: no cover - interface
+        raise NotImplementedError
+
+    def test(self, ctx: Context) -> bool:
+        results = (self.for_entity(ctx, n) for n in self.triggering)
+        return any(results) if self.rule_any else all(results)
+
+
+def _entity(ctx: Context, el, name: str):
+    if name not in ctx.entities:
+        raise ctx.error(el, f"no entity named {name!r}")
+    return ctx.entities[name]
+
+
+class Collision(_EntityCondition):
+    def __init__(self, el, ctx, triggering, rule) -> None:
+        super().__init__(el, ctx, triggering, rule)
+        ref = el.find("EntityRef")
+        by_type = el.find("ByType")
+        if ref is not None:
+            self.targets = [ref.get("entityRef")]
+            _entity(ctx, el, self.targets[0])
+        elif by_type is not None:
+            kind = by_type.get("type") or by_type.get("objectType")
+            self.targets = [n for n, e in ctx.entities.items() if e.category == kind or kind == "vehicle"]
+        else:
+            raise ctx.error(el, "CollisionCondition needs EntityRef or ByType")
+
+    def for_entity(self, ctx: Context, name: str) -> bool:
+        return any(frozenset((name, t)) in ctx.colliding for t in self.targets if t != name)
+
+
+def _relative(ctx, el, a, b, kind: str, freespace: bool) -> tuple[float, float]:
+    """Distance and its rate of change between entities a and b (``kind``: cartesian/euclidian,
+    longitudinal or lateral in a's frame; ``freespace``: between the boxes)."""
+    ax, ay, ayaw, al, aw = a.box()
+    bx, by, byaw, bl, bw = b.box()
+    (avx, avy), (bvx, bvy) = a.velocity(), b.velocity()
+    rx, ry, vx, vy = bx - ax, by - ay, bvx - avx, bvy - avy
+    if kind in ("cartesianDistance", "euclidianDistance", "euclideanDistance"):
+        if freespace:
+            d = float(box_distance(ax, ay, ayaw, al, aw, bx, by, byaw, bl, bw))
+            d2 = float(
+                box_distance(
+                    ax + avx * 1e-3, ay + avy * 1e-3, ayaw, al, aw, bx + bvx * 1e-3, by + bvy * 1e-3, byaw, bl, bw
+                )
+            )
+            return d, (d2 - d) / 1e-3
+        d = math.hypot(rx, ry)
+        return d, (rx * vx + ry * vy) / d if d > 1e-12 else 0.0
+    c, s = math.cos(a.yaw), math.sin(a.yaw)
+    if kind == "longitudinal":
+        d, rate = c * rx + s * ry, c * vx + s * vy
+        half = 0.5 * (al + bl * abs(math.cos(byaw - ayaw)) + bw * abs(math.sin(byaw - ayaw))) if freespace else 0.0
+    elif kind == "lateral":
+        d, rate = -s * rx + c * ry, -s * vx + c * vy
+        half = 0.5 * (aw + bw * abs(math.cos(byaw - ayaw)) + bl * abs(math.sin(byaw - ayaw))) if freespace else 0.0
+    else:
+        raise ctx.error(el, f"relativeDistanceType {kind!r} is not supported")
+    sign = 1.0 if d >= 0 else -1.0
+    return max(abs(d) - half, 0.0), sign * rate
+
+
+def _distance_kind(ctx, el) -> str:
+    if el.get("coordinateSystem", "entity") not in ("entity",):
+        raise ctx.error(el, f"coordinateSystem {el.get('coordinateSystem')!r} is not supported (entity only)")
+    if el.get("alongRoute") == "true" or el.get("routingAlgorithm") not in (None, "undefined"):
+        raise ctx.error(el, "distances along routes are not supported")
+    return el.get("relativeDistanceType", "cartesianDistance")
+
+
+class TimeToCollision(_EntityCondition):
+    def __init__(self, el, ctx, triggering, rule) -> None:
+        super().__init__(el, ctx, triggering, rule)
+        self.value, self.rule = float(el.get("value")), el.get("rule")
+        self.freespace = el.get("freespace", "false") == "true"
+        self.kind = _distance_kind(ctx, el)
+        target = el.find("TimeToCollisionConditionTarget")
+        ref = target.find("EntityRef") if target is not None else None
+        if ref is None:
+            raise ctx.error(el, "TimeToCollisionCondition: only an EntityRef target is supported")
+        self.target = ref.get("entityRef")
+        _entity(ctx, el, self.target)
+
+    def ttc(self, ctx: Context, name: str) -> float:
+        a, b = ctx.entities[name], ctx.entities[self.target]
+        if self.freespace and self.kind in ("cartesianDistance", "euclidianDistance", "euclideanDistance"):
+            (avx, avy), (bvx, bvy) = a.velocity(), b.velocity()
+            return float(
+                time_to_contact(*a.box()[:3], a.length, a.width, avx, avy, *b.box()[:3], b.length, b.width, bvx, bvy)
+            )
+        d, rate = _relative(ctx, self.el, a, b, self.kind, self.freespace)
+        return d / -rate if rate < -1e-9 else math.inf
+
+    def for_entity(self, ctx: Context, name: str) -> bool:
+        ttc = self.ttc(ctx, name)
+        return math.isfinite(ttc) and compare(self.rule, ttc, self.value)
+
+
+class RelativeDistance(_EntityCondition):
+    def __init__(self, el, ctx, triggering, rule) -> None:
+        super().__init__(el, ctx, triggering, rule)
+        self.value, self.rule = float(el.get("value")), el.get("rule")
+        self.freespace = el.get("freespace", "false") == "true"
+        self.kind = _distance_kind(ctx, el)
+        self.target = el.get("entityRef")
+        _entity(ctx, el, self.target)
+
+    def for_entity(self, ctx: Context, name: str) -> bool:
+        d, _ = _relative(ctx, self.el, ctx.entities[name], ctx.entities[self.target], self.kind, self.freespace)
+        return compare(self.rule, d, self.value)
+
+
+class Distance(_EntityCondition):
+    def __init__(self, el, ctx, triggering, rule) -> None:
+        super().__init__(el, ctx, triggering, rule)
+        self.value, self.rule = float(el.get("value")), el.get("rule")
+        self.freespace = el.get("freespace", "false") == "true"
+        _distance_kind(ctx, el)
+        wp = el.find("Position/WorldPosition")
+        if wp is None:
+            raise ctx.error(el, "DistanceCondition: only a WorldPosition is supported")
+        self.px, self.py = float(wp.get("x")), float(wp.get("y"))
+
+    def for_entity(self, ctx: Context, name: str) -> bool:
+        e = ctx.entities[name]
+        if self.freespace:
+            bx, by, byaw, bl, bw = e.box()
+            d = float(box_distance(bx, by, byaw, bl, bw, self.px, self.py, 0.0, 0.0, 0.0))
+        else:
+            d = math.hypot(e.x - self.px, e.y - self.py)
+        return compare(self.rule, d, self.value)
+
+
+class Speed(_EntityCondition):
+    def __init__(self, el, ctx, triggering, rule) -> None:
+        super().__init__(el, ctx, triggering, rule)
+        self.value, self.rule = float(el.get("value")), el.get("rule")
+
+    def for_entity(self, ctx: Context, name: str) -> bool:
+        return compare(self.rule, ctx.entities[name].speed, self.value)
+
+
+VALUE_CONDITIONS = {
+    "SimulationTimeCondition": SimulationTime,
+    "ParameterCondition": ParameterCondition,
+    "StoryboardElementStateCondition": StoryboardElementState,
+}
+ENTITY_CONDITIONS = {
+    "CollisionCondition": Collision,
+    "TimeToCollisionCondition": TimeToCollision,
+    "DistanceCondition": Distance,
+    "RelativeDistanceCondition": RelativeDistance,
+    "SpeedCondition": Speed,
+}
+
+
+class ConditionRunner:
+    """A ``<Condition>``: its raw test, the edge it fires on and its delay."""
+
+    def __init__(self, el, ctx: Context) -> None:
+        self.el = el
+        self.edge = el.get("conditionEdge", "none")
+        self.delay = float(el.get("delay", "0") or 0)
+        self.prev: bool | None = None
+        self.history: deque[tuple[float, bool]] = deque()
+        by_value, by_entity = el.find("ByValueCondition"), el.find("ByEntityCondition")
+        if by_value is not None and len(by_value):
+            kind = by_value[0]
+            cls = VALUE_CONDITIONS.get(kind.tag)
+            if cls is None:
+                raise ctx.error(kind, f"<{kind.tag}> is not supported by vei run")
+            self.condition = cls(kind, ctx)
+        elif by_entity is not None:
+            trig = by_entity.find("TriggeringEntities")
+            kind_parent = by_entity.find("EntityCondition")
+            if trig is None or kind_parent is None or not len(kind_parent):
+                raise ctx.error(by_entity, "ByEntityCondition needs TriggeringEntities and an EntityCondition")
+            kind = kind_parent[0]
+            cls = ENTITY_CONDITIONS.get(kind.tag)
+            if cls is None:
+                raise ctx.error(kind, f"<{kind.tag}> is not supported by vei run")
+            names = [r.get("entityRef") for r in trig.iterfind("EntityRef")]
+            for n in names:
+                _entity(ctx, trig, n)
+            self.condition = cls(kind, ctx, names, trig.get("triggeringEntitiesRule", "any"))
+        else:
+            raise ctx.error(el, "condition without ByValueCondition or ByEntityCondition")
+
+    def evaluate(self, ctx: Context) -> bool:
+        raw = self.condition.test(ctx)
+        prev, self.prev = self.prev, raw
+        if self.edge == "rising":
+            value = raw and prev is False
+        elif self.edge == "falling":
+            value = (not raw) and prev is True
+        elif self.edge == "risingOrFalling":
+            value = prev is not None and raw != prev
+        else:
+            value = raw
+        if self.delay <= 0:
+            return value
+        self.history.append((ctx.t, value))
+        result = False
+        while self.history and self.history[0][0] <= ctx.t - self.delay + 1e-9:
+            result = self.history.popleft()[1]
+        return result
+
+
+class Trigger:
+    """OR over condition groups, AND within a group; every condition is evaluated every step so that
+    edges and delays see an unbroken history."""
+
+    def __init__(self, el, ctx: Context) -> None:
+        self.groups = [
+            [ConditionRunner(c, ctx) for c in g.iterfind("Condition")] for g in el.iterfind("ConditionGroup")
+        ]
+
+    def evaluate(self, ctx: Context) -> bool:
+        results = [[c.evaluate(ctx) for c in g] for g in self.groups]
+        return any(all(r) for r in results if r)
+
+
+# --- elements ---------------------------------------------------------------------------------------
+
+
+class Element:
+    def __init__(self, kind: str, el, ctx: Context, children: list[Element] | None = None) -> None:
+        self.kind, self.name, self.el = kind, el.get("name", ""), el
+        self.state = STANDBY
+        self.children = children or []
+        self.transitions: dict[str, int] = {}
+        self.max_executions = int(el.get("maximumExecutionCount", "1"))
+        self.executions = 0
+        start, stop = el.find("StartTrigger"), el.find("StopTrigger")
+        self.start_trigger = Trigger(start, ctx) if start is not None else None
+        self.stop_trigger = Trigger(stop, ctx) if stop is not None else None
+        self.actions: list = []  # runtime actions of an Action element
+        ctx.elements.setdefault((kind, self.name), self)
+
+    def mark(self, transition: str, step: int) -> None:
+        self.transitions[transition] = step
+
+    def start(self, ctx: Context) -> None:
+        self.state = RUNNING
+        self.executions += 1
+        self.mark("startTransition", ctx.step)
+
+    def complete(self, ctx: Context, transition: str = "endTransition") -> None:
+        """Move to complete: ``endTransition`` when done, ``stopTransition`` when stopped (the
+        children are stopped too)."""
+        if transition == "stopTransition":
+            for c in self.children:
+                if c.state != COMPLETE:
+                    c.complete(ctx, transition)
+            for a in self.actions:
+                a.stop(ctx)
+        self.state = COMPLETE
+        self.mark(transition, ctx.step)
