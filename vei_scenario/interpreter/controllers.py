@@ -13,7 +13,7 @@ import math
 from vei_scenario.errors import VeiInputError
 from vei_scenario.interpreter.entities import Entity, Polyline
 from vei_scenario.models.boxes import time_to_contact_scalar
-from vei_scenario.models.cap import CapParameters, CapState, ThreatView, cap_step
+from vei_scenario.models.cap import BRAKE, CapParameters, CapState, ThreatView, cap_step
 from vei_scenario.models.sfm import RIDER_TYPES, SfmParameters, SfmState, sfm_step
 from vei_scenario.models.vehicle import Longitudinal, longitudinal_step
 
@@ -34,13 +34,15 @@ def advance_along(e: Entity, ds: float) -> None:
     e.traveled += ds
 
 
-def threat_view(ego: Entity, threat: Entity, margin_m: float) -> ThreatView:
+def threat_view(ego: Entity, threat: Entity, margin_m: float, ego_speed: float | None = None) -> ThreatView:
     """Time until the threat's box meets the ego's path corridor: the ego box widened by ``margin_m``
-    on each side and lengthened by it in front, both moving at constant velocity."""
+    on each side and lengthened by it in front, both moving at constant velocity (the ego at
+    ``ego_speed`` along its heading when given)."""
     ex, ey, eyaw, el, ew = ego.box()
     c, s = math.cos(eyaw), math.sin(eyaw)
     corridor = (ex + 0.5 * margin_m * c, ey + 0.5 * margin_m * s, eyaw, el + margin_m, ew + 2 * margin_m)
-    return ThreatView(time_to_contact_scalar(corridor, ego.velocity(), threat.box(), threat.velocity()))
+    v = ego.velocity() if ego_speed is None else (ego_speed * c, ego_speed * s)
+    return ThreatView(time_to_contact_scalar(corridor, v, threat.box(), threat.velocity()))
 
 
 class Controller:
@@ -138,7 +140,10 @@ class CollisionAvoidanceController(Controller):
         if threat is None:
             raise ctx.error(self.el, f"CollisionAvoidancePlanner: threatEntity {self.threat!r} is not an entity")
         view = threat_view(e, threat, self.params.corridor_margin_m)
-        self.state, a_cmd, self.d_safe = cap_step(self.state, self.params, self.cruise, e.speed, view, dt)
+        resume = (
+            threat_view(e, threat, self.params.corridor_margin_m, self.cruise) if self.state.mode == BRAKE else None
+        )
+        self.state, a_cmd, self.d_safe = cap_step(self.state, self.params, self.cruise, e.speed, view, dt, resume)
         lon = longitudinal_step(Longitudinal(0.0, e.speed, e.accel), a_cmd, e.limits, dt)
         advance_along(e, lon.s)
         e.speed, e.accel = lon.v, lon.a

@@ -74,14 +74,18 @@ def cap_step(
     ego_speed_mps: float,
     view: ThreatView | None,
     dt: float,
+    resume_view: ThreatView | None = None,
 ) -> tuple[CapState, float, float]:
     """One planner step: (new state, acceleration command m/s², d_safe m).
 
     Cruise: PID on speed towards ``cruise_speed_mps``, limited to the comfort band, with conditional
     integration (anti-windup). Emergency brake when the threat will be in the ego's path corridor and
     the distance the ego covers before that moment, gap = v · time_to_conflict, is below
-    d_safe = v²/(2·a_max) + v·t_h + d0: the deceleration that stops ``d0`` short of the conflict,
-    saturated at ``a_max``. Resume cruise once no conflict is predicted.
+    d_safe = v²/(2·a_max) + v·t_h + d0: the deceleration that stops ``d0`` short of the conflict, at
+    least the comfort deceleration, saturated at ``a_max``. Resume cruise once no conflict is predicted at the speed cruise would
+    return to (``resume_view``: the threat seen with the ego at its cruise velocity; defaults to
+    ``view``); resuming as soon as the slowed ego no longer meets the threat would drive it into the
+    threat's wake.
     """
     v = ego_speed_mps
     d_safe = params.d_safe_m(v)
@@ -90,11 +94,16 @@ def cap_step(
     mode = state.mode
     if mode == CRUISE and in_path and gap < d_safe:
         mode = BRAKE
-    elif mode == BRAKE and not in_path:
-        mode = CRUISE
+    elif mode == BRAKE:
+        check = resume_view if resume_view is not None else view
+        if not (check is not None and check.in_path(params.horizon_s)):
+            mode = CRUISE
     if mode == BRAKE:
+        # Stop d0 short of the conflict; while not yet clear to resume, brake at least at the comfort
+        # level rather than coast towards a crossing that has only moved out of reach for now.
         room = max(gap - params.d0_m, 0.05)
-        a_cmd = -min(params.a_max_mps2, v * v / (2 * room)) if v > 0 else 0.0
+        need = v * v / (2 * room) if math.isfinite(gap) else 0.0
+        a_cmd = -min(params.a_max_mps2, max(need, params.max_cruise_decel_mps2)) if v > 0 else 0.0
         return CapState(BRAKE, state.integral, None), a_cmd, d_safe
     error = cruise_speed_mps - v
     deriv = 0.0 if state.prev_error is None else (error - state.prev_error) / dt

@@ -1,0 +1,122 @@
+"""The time series metrics are computed from: the ego and one other entity, plus derived signals."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import cached_property
+
+import numpy as np
+
+from vei_scenario.models.boxes import box_distance, boxes_overlap, time_to_contact
+
+
+@dataclass(frozen=True)
+class MetricConfig:
+    """Thresholds of the seed method's TTC zones and of the comfort score."""
+
+    safe_ttc_s: float = 3.0  # safe zone: TTC ≥ 3 s
+    alert_ttc_s: float = 2.0  # attention: 2–3 s; alert: < 2 s
+    zone_ttc: str = "approx"  # which TTC the zones and the safety index use: "approx" (the seed's) or "2d"
+    comfort_accel_mps2: float = 2.0
+    comfort_jerk_mps3: float = 2.0
+    near_miss_ttc_s: tuple[float, float] = (0.5, 1.5)
+
+
+@dataclass
+class Track:
+    name: str
+    length: float
+    width: float
+    x: np.ndarray
+    y: np.ndarray
+    yaw: np.ndarray
+    speed: np.ndarray
+    accel: np.ndarray
+
+    @property
+    def vx(self) -> np.ndarray:
+        return self.speed * np.cos(self.yaw)
+
+    @property
+    def vy(self) -> np.ndarray:
+        return self.speed * np.sin(self.yaw)
+
+
+@dataclass
+class PairSeries:
+    t: np.ndarray
+    ego: Track
+    other: Track
+
+    @classmethod
+    def from_run(cls, result, other: str | None = None) -> PairSeries:
+        """The ego and ``other`` (default: the run's threat) from a :class:`RunResult`."""
+        name = other or result.threat
+        tracks = []
+        for n in (result.ego, name):
+            tr = result.traces[n]
+            tracks.append(Track(n, tr.length, tr.width, tr.x, tr.y, tr.yaw, tr.speed, tr.accel))
+        return cls(result.t, *tracks)
+
+    def _boxes(self):
+        e, o = self.ego, self.other
+        return (e.x, e.y, e.yaw, e.length, e.width, o.x, o.y, o.yaw, o.length, o.width)
+
+    @cached_property
+    def dt(self) -> float:
+        return float(np.median(np.diff(self.t))) if self.t.size > 1 else 0.0
+
+    @cached_property
+    def gap(self) -> np.ndarray:
+        """Shortest distance between the two boxes (m); 0 while they overlap."""
+        return box_distance(*self._boxes())
+
+    @cached_property
+    def contact(self) -> np.ndarray:
+        return boxes_overlap(*self._boxes())
+
+    @cached_property
+    def closing_rate(self) -> np.ndarray:
+        """−d(gap)/dt (m/s): positive while the boxes approach each other."""
+        return -np.gradient(self.gap, self.t) if self.t.size > 1 else np.zeros_like(self.gap)
+
+    @cached_property
+    def path_gap(self) -> np.ndarray:
+        """Gap (m) from the ego's front to the other's near edge while the other is ahead within the
+        ego's lane band (its box overlaps the band of the ego's width along its heading); inf otherwise."""
+        e, o = self.ego, self.other
+        c, s = np.cos(e.yaw), np.sin(e.yaw)
+        dx, dy = o.x - e.x, o.y - e.y
+        rel = o.yaw - e.yaw
+        ahead = (
+            c * dx + s * dy - 0.5 * e.length - 0.5 * (o.length * np.abs(np.cos(rel)) + o.width * np.abs(np.sin(rel)))
+        )
+        lateral = np.abs(-s * dx + c * dy)
+        half_band = 0.5 * e.width + 0.5 * (o.length * np.abs(np.sin(rel)) + o.width * np.abs(np.cos(rel)))
+        return np.where((lateral <= half_band) & (ahead >= 0), ahead, np.inf)
+
+    @cached_property
+    def ttc_approx(self) -> np.ndarray:
+        """The seed paper's approximation TTC ≈ gap / v_ego (s), gap the :attr:`path_gap` to the other
+        in front of the ego; inf when nothing is ahead in the lane band or the ego stands still."""
+        v = self.ego.speed
+        with np.errstate(divide="ignore", invalid="ignore"):
+            out = np.where((v > 1e-3) & np.isfinite(self.path_gap), self.path_gap / v, np.inf)
+        return np.where(self.contact, 0.0, out)
+
+    @cached_property
+    def ttc_2d(self) -> np.ndarray:
+        """Time until the boxes touch if both keep their velocity (s); inf if they never do."""
+        e, o = self.ego, self.other
+        return time_to_contact(
+            e.x, e.y, e.yaw, e.length, e.width, e.vx, e.vy, o.x, o.y, o.yaw, o.length, o.width, o.vx, o.vy
+        )
+
+    def zone_ttc(self, cfg: MetricConfig) -> np.ndarray:
+        return self.ttc_approx if cfg.zone_ttc == "approx" else self.ttc_2d
+
+    def zones(self, cfg: MetricConfig) -> np.ndarray:
+        """Per step: 0 safe (TTC ≥ safe), 1 attention, 2 alert (< alert threshold), 3 collision."""
+        ttc = self.zone_ttc(cfg)
+        z = np.where(ttc >= cfg.safe_ttc_s, 0, np.where(ttc >= cfg.alert_ttc_s, 1, 2))
+        return np.where(self.contact, 3, z)
