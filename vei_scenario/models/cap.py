@@ -82,10 +82,10 @@ def cap_step(
     integration (anti-windup). Emergency brake when the threat will be in the ego's path corridor and
     the distance the ego covers before that moment, gap = v · time_to_conflict, is below
     d_safe = v²/(2·a_max) + v·t_h + d0: the deceleration that stops ``d0`` short of the conflict, at
-    least the comfort deceleration, saturated at ``a_max``. Resume cruise once no conflict is predicted at the speed cruise would
-    return to (``resume_view``: the threat seen with the ego at its cruise velocity; defaults to
-    ``view``); resuming as soon as the slowed ego no longer meets the threat would drive it into the
-    threat's wake.
+    least the comfort deceleration, saturated at ``a_max``. Resume cruise once no conflict is
+    predicted at the speed cruise would return to (``resume_view``: the threat seen with the ego at
+    its cruise velocity; defaults to ``view``); resuming as soon as the slowed ego no longer meets the
+    threat would drive it into the threat's wake.
     """
     v = ego_speed_mps
     d_safe = params.d_safe_m(v)
