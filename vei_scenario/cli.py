@@ -50,6 +50,26 @@ def _cmd_validate(args: argparse.Namespace) -> int:
     return 1 if problems else 0
 
 
+def _cmd_run(args: argparse.Namespace) -> int:
+    from vei_scenario.runner import parse_param_overrides, run_to, summary_text
+
+    report = run_to(args.scenario, args.output, parse_param_overrides(args.param), args.dt, plots=not args.no_plots)
+    print(summary_text(report.metrics))
+    for p in report.written:
+        print(f"wrote {p}")
+    return 0
+
+
+def _cmd_study(args: argparse.Namespace) -> int:
+    from vei_scenario.study import run_study, table_text
+
+    report = run_study(args.input, args.output, args.dt, args.time_shift, plots=not args.no_plots)
+    print(f"{report.scenario}: five configurations at TimeShift {report.time_shift_s:+.3f} s")
+    print(table_text(report.rows))
+    print(f"wrote {len(report.written)} files under {args.output}")
+    return 0
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="vei", description="Annotated vehicle–e-scooter clips → ASAM OpenSCENARIO/OpenDRIVE test scenarios."
@@ -72,6 +92,22 @@ def build_parser() -> argparse.ArgumentParser:
     c.add_argument("--threat", help="track id of the threat scooter (default: smallest conflict margin)")
     c.add_argument("--variants", metavar="DIR", help="also write one fully resolved .xosc per variation into DIR")
     c.set_defaults(func=_cmd_compile)
+
+    r = sub.add_parser("run", help="run a scenario with the built-in interpreter; write trajectories, metrics, plots")
+    r.add_argument("scenario", help="OpenSCENARIO file (.xosc)")
+    r.add_argument("--param", action="append", default=[], metavar="NAME=VALUE", help="override a parameter")
+    r.add_argument("--dt", type=float, default=0.01, help="fixed step in s (default 0.01)")
+    r.add_argument("-o", "--output", help="directory for trajectories.csv, metrics.json and plots")
+    r.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
+    r.set_defaults(func=_cmd_run)
+
+    st = sub.add_parser("study", help="the seed paper's five configurations at the collision timing shift")
+    st.add_argument("input", help="clip (.json) or compiled scenario (.xosc)")
+    st.add_argument("-o", "--output", required=True, help="directory for the study")
+    st.add_argument("--dt", type=float, default=0.01)
+    st.add_argument("--time-shift", type=float, help="TimeShift to use (default: the scenario's ConflictTimeShift)")
+    st.add_argument("--no-plots", action="store_true")
+    st.set_defaults(func=_cmd_study)
 
     v = sub.add_parser("validate", help="check .xosc/.xodr files against the ASAM XSDs and VEI's own rules")
     v.add_argument("files", nargs="+")

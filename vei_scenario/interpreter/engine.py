@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from pathlib import Path
 
 import numpy as np
 
@@ -52,6 +53,7 @@ class RunResult:
     threat: str | None
     signals: dict[str, np.ndarray] = field(default_factory=dict)  # e.g. the planner's d_safe
     end_reason: str = ""
+    road_file: Path | None = None
 
 
 def _entity(obj, ctx) -> Entity:

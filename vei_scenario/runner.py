@@ -1,0 +1,126 @@
+"""``run_to``: run a scenario file and write its trajectories, metrics and plots.
+
+The library behind ``vei run``: interpreter → metrics → outputs, everything rendered first and
+written together (temporary files and renames), so a failed run leaves nothing half-written.
+"""
+
+from __future__ import annotations
+
+import io
+import json
+from dataclasses import dataclass
+from pathlib import Path
+
+from vei_scenario.atomic_io import OutputSet
+from vei_scenario.errors import VeiInputError
+from vei_scenario.interpreter import RunResult, run_scenario
+from vei_scenario.metrics import MetricConfig, PairSeries, compute_metrics
+
+
+@dataclass
+class RunReport:
+    result: RunResult
+    metrics: dict
+    written: list[Path]
+
+
+def parse_param_overrides(items: list[str]) -> dict[str, str]:
+    """``Name=Value`` strings of ``--param`` into a dict."""
+    out: dict[str, str] = {}
+    for item in items:
+        name, sep, value = item.partition("=")
+        if not sep or not name.strip():
+            raise VeiInputError(None, "--param", f"{item!r} is not Name=Value")
+        out[name.strip()] = value.strip()
+    return out
+
+
+def trajectories_csv(result: RunResult) -> str:
+    buf = io.StringIO()
+    buf.write("time,entity,x,y,heading,speed,acceleration,controller_state\n")
+    names = list(result.traces)
+    for i, t in enumerate(result.t):
+        for n in names:
+            tr = result.traces[n]
+            buf.write(
+                f"{t:.3f},{n},{tr.x[i]:.4f},{tr.y[i]:.4f},{tr.yaw[i]:.5f},{tr.speed[i]:.4f},{tr.accel[i]:.4f},"
+                f"{tr.status[i]}\n"
+            )
+    return buf.getvalue()
+
+
+def metrics_document(result: RunResult, cfg: MetricConfig) -> dict:
+    """metrics.json: the ego against its threat, plus every contact between any two entities."""
+    metrics = compute_metrics(PairSeries.from_run(result), cfg) if result.threat else {}
+    return {
+        "scenario": Path(result.scenario).name,
+        "parameters": result.parameters,
+        "dt_s": result.dt,
+        "duration_s": round(float(result.t[-1]), 3),
+        "end_reason": result.end_reason,
+        "ego": result.ego,
+        "threat": result.threat,
+        "metrics": metrics,
+        "collisions": [{"time_s": round(t, 3), "entities": [a, b]} for t, a, b in result.collisions],
+        "ttc_zones_use": cfg.zone_ttc,
+    }
+
+
+def summary_text(doc: dict) -> str:
+    m = doc["metrics"]
+    params = ", ".join(f"{k}={v}" for k, v in doc["parameters"].items())
+    lines = [f"{doc['scenario']} ({params}); {doc['duration_s']:.2f} s at dt {doc['dt_s']} s ({doc['end_reason']})"]
+    if m:
+        coll = f"COLLISION at {m['collision_time_s']} s" if m["collision"] else "no collision"
+        z = m["ttc_zones_s"]
+        lines += [
+            f"{doc['ego']} vs {doc['threat']}: {coll}; min gap {m['min_gap_m']} m; min TTC {m['min_ttc_s']} s "
+            f"(approx {m['min_ttc_approx_s']} s); ACT {m['act_min_s']} s; PET {m['pet_s']} s",
+            f"safety index {m['safety_index']} (safe {z['safe']} s, attention {z['attention']} s, "
+            f"alert {z['alert']} s, collision {z['collision']} s); EI max {m['ei_max_mps']} m/s; "
+            f"DRAC max {m['drac_max_mps2']} m/s²",
+            f"ego: peak deceleration {m['peak_decel_mps2']} m/s², max jerk {m['max_jerk_mps3']} m/s³, "
+            f"comfort {m['comfort_score']}",
+        ]
+    return "\n".join(lines)
+
+
+def run_files(result: RunResult, doc: dict, cfg: MetricConfig, plots: bool = True) -> dict[str, bytes | str]:
+    """The files of one run, by name: trajectories.csv, metrics.json and (with ``plots``) PNGs."""
+    files: dict[str, bytes | str] = {
+        "trajectories.csv": trajectories_csv(result),
+        "metrics.json": json.dumps(doc, indent=2) + "\n",
+    }
+    if plots:
+        from vei_scenario.reports import run_plots
+
+        runs = [("run", result)]
+        files["trajectories.png"] = run_plots.trajectories_png(runs, result.road_file)
+        files["speeds.png"] = run_plots.speeds_png(runs)
+        files["gap_ttc.png"] = run_plots.gap_ttc_png(runs, cfg)
+    return files
+
+
+def run_to(
+    scenario: str | Path,
+    out_dir: str | Path | None,
+    parameters: dict[str, str] | None = None,
+    dt: float = 0.01,
+    plots: bool = True,
+    cfg: MetricConfig | None = None,
+) -> RunReport:
+    """Run ``scenario`` and, with ``out_dir``, write its files there (all or nothing)."""
+    if not (1e-4 <= dt <= 0.5):
+        raise VeiInputError(None, "--dt", f"{dt} s is outside 0.0001..0.5 s")
+    cfg = cfg or MetricConfig()
+    result = run_scenario(scenario, parameters, dt)
+    doc = metrics_document(result, cfg)
+    written: list[Path] = []
+    if out_dir is not None:
+        out = Path(out_dir)
+        files = OutputSet()
+        for name, data in run_files(result, doc, cfg, plots).items():
+            files.add(out / name, data)
+        files.commit()
+        written = files.paths
+    return RunReport(result, doc, written)

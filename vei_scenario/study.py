@@ -1,0 +1,136 @@
+"""``run_study``: the seed paper's five-configuration study of one interaction.
+
+1 replay, no CAP; 2 normal SFM rider, no CAP; 3 aggressive SFM rider, no CAP; 4 normal + CAP;
+5 aggressive + CAP, all at the collision timing shift the compiler found (``ConflictTimeShift``).
+Input: a clip (compiled first, into ``out/scenario/``) or a compiled scenario.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+from dataclasses import dataclass
+from pathlib import Path
+
+from vei_scenario.atomic_io import OutputSet
+from vei_scenario.errors import VeiInputError
+from vei_scenario.interpreter import run_scenario
+from vei_scenario.interpreter.document import load_scenario
+from vei_scenario.metrics import MetricConfig
+from vei_scenario.runner import metrics_document, run_files
+
+CONFIGURATIONS = (
+    (1, "replay, no CAP", {"RiderType": "replay", "CapEnabled": "false"}),
+    (2, "normal SFM, no CAP", {"RiderType": "normal", "CapEnabled": "false"}),
+    (3, "aggressive SFM, no CAP", {"RiderType": "aggressive", "CapEnabled": "false"}),
+    (4, "normal SFM + CAP", {"RiderType": "normal", "CapEnabled": "true"}),
+    (5, "aggressive SFM + CAP", {"RiderType": "aggressive", "CapEnabled": "true"}),
+)
+TABLE_COLUMNS = (
+    "config",
+    "description",
+    "collision",
+    "collision_time_s",
+    "min_gap_m",
+    "min_ttc_s",
+    "act_min_s",
+    "safety_index",
+)
+
+
+@dataclass
+class StudyReport:
+    scenario: Path
+    time_shift_s: float
+    rows: list[dict]
+    written: list[Path]
+
+
+def _scenario_for(input_path: Path, out_dir: Path) -> Path:
+    if input_path.suffix == ".json":
+        from vei_scenario.compiler import compile_clip
+
+        target = out_dir / "scenario" / "scenario.xosc"
+        compile_clip(input_path, target)
+        return target
+    if input_path.suffix != ".xosc":
+        raise VeiInputError(input_path, "", "vei study takes a clip (.json) or a compiled scenario (.xosc)")
+    return input_path
+
+
+#: (header, row key, width, number format) of the printed table.
+_TABLE = (
+    ("#", "config", 3, None),
+    ("configuration", "description", 24, None),
+    ("collision", "collision", 10, None),
+    ("t_coll s", "collision_time_s", 10, ".2f"),
+    ("min gap m", "min_gap_m", 11, ".2f"),
+    ("min TTC s", "min_ttc_s", 11, ".2f"),
+    ("ACT s", "act_min_s", 8, ".2f"),
+    ("S", "safety_index", 7, ".2f"),
+)
+
+
+def table_text(rows: list[dict]) -> str:
+    def cell(value, width: int, spec: str | None, left: bool) -> str:
+        if isinstance(value, bool):
+            text = "yes" if value else "no"
+        elif value is None:
+            text = "-"
+        else:
+            text = format(value, spec) if spec else str(value)
+        return text.ljust(width) if left else text.rjust(width)
+
+    head = "".join(cell(h, w, None, i < 2) for i, (h, _, w, _) in enumerate(_TABLE))
+    out = [head, "-" * len(head)]
+    for r in rows:
+        out.append("".join(cell(r[k], w, spec, i < 2) for i, (_, k, w, spec) in enumerate(_TABLE)))
+    return "\n".join(out)
+
+
+def run_study(
+    input_path: str | Path, out_dir: str | Path, dt: float = 0.01, time_shift_s: float | None = None, plots: bool = True
+) -> StudyReport:
+    out = Path(out_dir)
+    scenario = _scenario_for(Path(input_path), out)
+    declared = load_scenario(scenario).parameters
+    for name in ("TimeShift", "RiderType", "CapEnabled"):
+        if name not in declared:
+            raise VeiInputError(scenario, "ParameterDeclarations", f"a vei study needs the parameter {name}")
+    if time_shift_s is None:
+        if "ConflictTimeShift" not in declared:
+            raise VeiInputError(scenario, "ParameterDeclarations", "no ConflictTimeShift; give --time-shift")
+        time_shift_s = float(declared["ConflictTimeShift"])
+    cfg = MetricConfig()
+    files = OutputSet()
+    rows, runs = [], []
+    for number, description, params in CONFIGURATIONS:
+        values = {**params, "TimeShift": repr(float(time_shift_s))}
+        result = run_scenario(scenario, values, dt)
+        doc = metrics_document(result, cfg)
+        for name, data in run_files(result, doc, cfg, plots=False).items():
+            files.add(out / f"config{number}" / name, data)
+        m = doc["metrics"]
+        rows.append({"config": number, "description": description, **{k: m.get(k) for k in TABLE_COLUMNS[2:]}})
+        runs.append((f"{number} {description}", result))
+    buf = io.StringIO()
+    writer = csv.DictWriter(buf, fieldnames=list(TABLE_COLUMNS), lineterminator="\n")
+    writer.writeheader()
+    writer.writerows(rows)
+    files.add(out / "study.csv", buf.getvalue())
+    files.add(
+        out / "study.json",
+        json.dumps(
+            {"scenario": str(scenario), "time_shift_s": time_shift_s, "dt_s": dt, "configurations": rows}, indent=2
+        )
+        + "\n",
+    )
+    if plots:
+        from vei_scenario.reports import run_plots
+
+        files.add(out / "trajectories.png", run_plots.trajectories_png(runs, runs[0][1].road_file))
+        files.add(out / "speeds.png", run_plots.speeds_png(runs))
+        files.add(out / "gap_ttc.png", run_plots.gap_ttc_png(runs, cfg))
+    files.commit()
+    return StudyReport(scenario, float(time_shift_s), rows, files.paths)
