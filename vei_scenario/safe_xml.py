@@ -35,6 +35,6 @@ def parse_xml(path: Path | str, remove_comments: bool = False) -> etree._Element
     except OSError as exc:
         raise VeiInputError(path, "", f"cannot read: {exc.strerror or exc}") from None
     docinfo = tree.docinfo
-    if docinfo.internalDTD is not None and len(docinfo.internalDTD.iterentities()) > 0:
+    if docinfo.internalDTD is not None and any(True for _ in docinfo.internalDTD.iterentities()):
         raise VeiInputError(path, "line 1", "XML entity declarations are not accepted (entity expansion is disabled)")
     return tree

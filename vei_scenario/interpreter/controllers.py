@@ -20,6 +20,9 @@ from vei_scenario.models.vehicle import Longitudinal, longitudinal_step
 #: Spacing of the route waypoints the social force model steers at (m). Closer waypoints would keep
 #: the destination within ~σ of the rider and slow it below v0.
 WAYPOINT_SPACING_M = 6.0
+#: The recorded route ends where the camera lost the scooter, not where the rider stopped: the model
+#: rider carries on straight for this far (m) instead of braking onto the last recorded point.
+ROUTE_EXTENSION_M = 100.0
 
 
 def advance_along(e: Entity, ds: float) -> None:
@@ -83,6 +86,8 @@ class SocialForceController(Controller):
             raise ctx.error(self.el, f"SocialForceModel on {e.name}: no route (a 'route' property or a trajectory)")
         n = max(1, int(polyline.length // WAYPOINT_SPACING_M))
         self.route = [polyline.at_s(polyline.length * (i + 1) / n)[:2] for i in range(n)]
+        ex, ey, eh = polyline.at_s(polyline.length)
+        self.route.append((ex + ROUTE_EXTENSION_M * math.cos(eh), ey + ROUTE_EXTENSION_M * math.sin(eh)))
         f = e.follower
         if f is not None and f.timing is not None and polyline.timed:
             # Ride from the moment the recording starts, shifted like the replay would be.

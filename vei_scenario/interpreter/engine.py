@@ -360,6 +360,7 @@ class Simulation:
             self.threat,
             {"d_safe": np.array(d_safe)},
             reason,
+            self.doc.road_file,
         )
 
     def _collide(self, collisions: list) -> None:

@@ -117,11 +117,15 @@ def drac_max_mps2(p: PairSeries, cfg: MetricConfig) -> float:
     return _r(float(drac.max()) if drac.size else 0.0)
 
 
+#: Paths meeting at less than this angle (deg) are following or merging, not crossing: no PET.
+PET_MIN_CROSSING_ANGLE_DEG = 20.0
+
+
 def pet_s(p: PairSeries, cfg: MetricConfig) -> float | None:
     """Post-Encroachment Time (s) for crossing conflicts (Allen et al. 1978): the time between the
     first road user leaving the conflict area and the second entering it. The conflict area is where
     the areas swept by the two boxes overlap. 0 when both occupy it at once; None without a conflict
-    area."""
+    area or when the paths meet at less than 20° (following traffic, for which PET is undefined)."""
     e, o = p.ego, p.other
     step = max(1, int(round(0.05 / p.dt))) if p.dt > 0 else 1
     idx = np.arange(0, p.t.size, step)
@@ -132,9 +136,14 @@ def pet_s(p: PairSeries, cfg: MetricConfig) -> float | None:
     if area.is_empty or area.area < 1e-6:
         return None
     shapely.prepare(area)
-    te = p.t[idx][shapely.intersects(area, pe)]
-    to = p.t[idx][shapely.intersects(area, po)]
+    in_e, in_o = shapely.intersects(area, pe), shapely.intersects(area, po)
+    te, to = p.t[idx][in_e], p.t[idx][in_o]
     if te.size == 0 or to.size == 0:
+        return None
+    he = np.angle(np.mean(np.exp(1j * e.yaw[idx][in_e])))
+    ho = np.angle(np.mean(np.exp(1j * o.yaw[idx][in_o])))
+    crossing = abs(np.degrees(np.angle(np.exp(1j * (he - ho)))))
+    if min(crossing, 180.0 - crossing) < PET_MIN_CROSSING_ANGLE_DEG:
         return None
     if te[0] <= to[0]:
         first_exit, second_entry = te[-1], to[0]

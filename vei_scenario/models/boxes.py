@@ -90,11 +90,14 @@ def time_to_contact(xa, ya, yawa, la, wa, vxa, vya, xb, yb, yawb, lb, wb, vxb, v
         p = dx * ux + dy * uy
         q = wx * ux + wy * uy
         moving = np.abs(q) > 1e-12
+        inside = np.abs(p) <= r
         with np.errstate(divide="ignore", invalid="ignore"):
-            t1 = np.where(moving, (-r - p) / q, np.where(np.abs(p) <= r, -np.inf, np.inf))
-            t2 = np.where(moving, (r - p) / q, np.where(np.abs(p) <= r, np.inf, -np.inf))
-        enter = np.maximum(enter, np.minimum(t1, t2))
-        leave = np.minimum(leave, np.maximum(t1, t2))
+            t1, t2 = (-r - p) / q, (r - p) / q
+        # Without relative motion along u the axis overlaps always (inside) or never.
+        lo = np.where(moving, np.minimum(t1, t2), np.where(inside, -np.inf, np.inf))
+        hi = np.where(moving, np.maximum(t1, t2), np.where(inside, np.inf, -np.inf))
+        enter = np.maximum(enter, lo)
+        leave = np.minimum(leave, hi)
     hit = (enter <= leave) & (leave >= 0)
     return np.where(hit, np.maximum(enter, 0.0), np.inf)
 

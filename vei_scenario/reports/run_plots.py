@@ -97,7 +97,16 @@ def gap_ttc_png(results: list[tuple[str, object]], cfg: MetricConfig) -> bytes:
         name = label if len(results) > 1 else r.threat
         ax1.plot(r.t, pair.gap, lw=1.3, label=name)
         ttc = pair.zone_ttc(cfg)
-        ax2.plot(r.t, np.where(np.isfinite(ttc), ttc, np.nan), lw=1.3, label=f"{name} ({cfg.zone_ttc})")
+        line = ax2.plot(r.t, np.where(np.isfinite(ttc), ttc, np.nan), lw=1.6, label=f"{name}: TTC {cfg.zone_ttc}")
+        ttc2 = pair.ttc_2d
+        ax2.plot(
+            r.t,
+            np.where(np.isfinite(ttc2), ttc2, np.nan),
+            lw=1.0,
+            ls=":",
+            color=line[0].get_color(),
+            label=f"{name}: TTC 2-D",
+        )
     top = 8.0
     ax2.axhspan(cfg.safe_ttc_s, top, color=ZONE_COLOURS["safe"], zorder=0)
     ax2.axhspan(cfg.alert_ttc_s, cfg.safe_ttc_s, color=ZONE_COLOURS["attention"], zorder=0)
@@ -106,7 +115,7 @@ def gap_ttc_png(results: list[tuple[str, object]], cfg: MetricConfig) -> bytes:
     ax1.set_ylabel("gap between boxes (m)")
     ax2.set_ylabel("TTC (s)")
     ax2.set_xlabel("time (s)")
-    ax1.set_title("Gap and TTC (zones: safe ≥ 3 s, attention 2–3 s, alert < 2 s)")
+    ax1.set_title("Gap and TTC (zones on the headway TTC ≈ gap/v: safe ≥ 3 s, attention 2–3 s, alert < 2 s)")
     for ax in (ax1, ax2):
         ax.grid(alpha=0.3)
         ax.legend(fontsize=7)

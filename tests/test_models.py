@@ -1,0 +1,126 @@
+"""The pure models against analytic solutions and independent references."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+import shapely
+
+from vei_scenario.interpreter.controllers import ROUTE_EXTENSION_M, WAYPOINT_SPACING_M
+from vei_scenario.models.boxes import time_to_contact, time_to_contact_scalar
+from vei_scenario.models.cap import BRAKE, CRUISE, CapParameters, CapState, ThreatView, cap_step
+from vei_scenario.models.sfm import SfmParameters, SfmState, sfm_step
+from vei_scenario.models.vehicle import Longitudinal, VehicleLimits, longitudinal_step
+
+
+def test_sfm_without_ego_converges_to_v0_towards_its_destination():
+    p = SfmParameters(v0_mps=4.5)
+    state = SfmState(0.0, 0.0, 0.0, 0.0)
+    dest = [(600.0, 800.0)]  # 1 km away, bearing atan2(800, 600)
+    for _ in range(1500):  # 15 s
+        state = sfm_step(state, dest, p, True, None, 0.01)
+    speed = math.hypot(state.vx, state.vy)
+    # v_des = v0 d / sqrt(d² + σ²) differs from v0 by < 1e-6 this far from the destination
+    assert speed == pytest.approx(4.5, rel=1e-3)
+    assert math.atan2(state.vy, state.vx) == pytest.approx(math.atan2(800, 600), abs=1e-4)
+
+
+def test_sfm_relaxation_matches_the_first_order_solution():
+    """Far from the destination and below the limits, m dv/dt = k (v0 − v): v(t) = v0 (1 − e^(−t/τ))."""
+    p = SfmParameters(v0_mps=4.0, tau_s=0.5, max_accel_mps2=100.0, max_decel_mps2=100.0)
+    state = SfmState(0.0, 0.0, 0.0, 0.0)
+    for _ in range(50):
+        state = sfm_step(state, [(1e5, 0.0)], p, False, None, 0.001)
+    assert state.vx == pytest.approx(4.0 * (1 - math.exp(-0.05 / 0.5)), rel=2e-3)
+
+
+def test_aggressive_rider_without_ego_stays_within_1m_of_its_route(compiled):
+    track = compiled["case_study"].reconstruction.scooters["scooter_1"].trajectory
+    route_line = shapely.LineString(track.xy)
+    length = route_line.length
+    n = max(1, int(length // WAYPOINT_SPACING_M))
+    route = [tuple(route_line.interpolate(length * (i + 1) / n).coords[0]) for i in range(n)]
+    h = track.yaw[-1]
+    route.append((track.x[-1] + ROUTE_EXTENSION_M * math.cos(h), track.y[-1] + ROUTE_EXTENSION_M * math.sin(h)))
+    p = SfmParameters(v0_mps=float(np.median(track.speed)))
+    state = SfmState(
+        track.x[0], track.y[0], track.speed[0] * math.cos(track.yaw[0]), track.speed[0] * math.sin(track.yaw[0])
+    )
+    worst = 0.0
+    for _ in range(int((track.t[-1] - track.t[0]) / 0.01)):
+        state = sfm_step(state, route, p, False, None, 0.01)
+        worst = max(worst, route_line.distance(shapely.Point(state.x, state.y)))
+    assert worst <= 1.0, worst
+
+
+def test_repulsion_pushes_the_normal_rider_away_from_the_ego():
+    p = SfmParameters()
+    ego_box = (0.0, 0.0, 0.0, 4.8, 1.9)  # ego at the origin, facing +x
+    s = SfmState(0.0, 2.5, 4.0, 0.0)  # rider passing 1.55 m beside the ego's side
+    pushed = sfm_step(s, [(100.0, 2.5)], p, True, ego_box, 0.01)
+    free = sfm_step(s, [(100.0, 2.5)], p, False, ego_box, 0.01)
+    assert pushed.vy > free.vy + 1e-3  # pushed in +y, away from the box side
+
+
+@pytest.mark.parametrize("v0, a_max, jerk", [(10.0, 6.0, 50.0), (5.6, 6.0, 50.0), (20.0, 8.0, 1e9), (3.0, 2.0, 20.0)])
+def test_braking_distance_matches_the_analytic_stop(v0, a_max, jerk):
+    limits = VehicleLimits(max_accel_mps2=4.0, max_decel_mps2=a_max, jerk_max_mps3=jerk)
+    st = Longitudinal(0.0, v0, 0.0)
+    for _ in range(100_000):
+        st = longitudinal_step(st, -a_max, limits, 0.01)
+        if st.v == 0.0:
+            break
+    # Jerk ramp to a_max over T = a/j, then constant deceleration: s = v T − j T³/6 + v1²/(2a).
+    T = min(a_max / jerk, v0 / a_max)
+    v1 = v0 - 0.5 * jerk * T * T
+    analytic = v0 * T - jerk * T**3 / 6 + v1 * v1 / (2 * a_max)
+    assert st.s == pytest.approx(analytic, rel=0.01)
+    if jerk > 1e6:
+        assert st.s == pytest.approx(v0 * v0 / (2 * a_max), rel=0.01)
+
+
+def test_ttc_agrees_with_analytic_crossing_geometry():
+    rng = np.random.default_rng(3)
+    for _ in range(200):
+        v_e, v_s = rng.uniform(3, 15), rng.uniform(1, 6)
+        gap_x, gap_y = rng.uniform(10, 60), rng.uniform(5, 40)
+        le, we, ls, ws = 4.8, 1.9, 1.2, 0.6
+        # Ego along +x from the origin; scooter along +y at x = gap_x, starting at y = −gap_y.
+        # Contact needs |x_rel| ≤ (le + ws)/2 and |y_rel| ≤ (we + ls)/2 at the same time.
+        tx = ((gap_x - (le + ws) / 2) / v_e, (gap_x + (le + ws) / 2) / v_e)
+        ty = ((gap_y - (we + ls) / 2) / v_s, (gap_y + (we + ls) / 2) / v_s)
+        lo, hi = max(tx[0], ty[0]), min(tx[1], ty[1])
+        expected = lo if lo <= hi else math.inf
+        got = float(time_to_contact(0, 0, 0, le, we, v_e, 0, gap_x, -gap_y, math.pi / 2, ls, ws, 0, v_s))
+        scalar = time_to_contact_scalar((0, 0, 0, le, we), (v_e, 0), (gap_x, -gap_y, math.pi / 2, ls, ws), (0, v_s))
+        assert got == pytest.approx(expected, abs=1e-9) or (math.isinf(got) and math.isinf(expected))
+        assert scalar == pytest.approx(got, abs=1e-12) or (math.isinf(scalar) and math.isinf(got))
+
+
+def test_cap_brakes_below_d_safe_and_resumes_when_clear():
+    p = CapParameters()
+    v = 5.6
+    d_safe = v * v / (2 * p.a_max_mps2) + v * p.t_h_s + p.d0_m
+    assert p.d_safe_m(v) == pytest.approx(d_safe)
+    # Conflict 3 s ahead: gap = 16.8 m > d_safe: keep cruising.
+    st, a, _ = cap_step(CapState(), p, 5.6, v, ThreatView(3.0), 0.01)
+    assert st.mode == CRUISE and abs(a) < 1e-9
+    # Conflict 1 s ahead: gap 5.6 m < d_safe: brake to stop d0 short: a = v²/(2 (gap − d0)), capped.
+    st, a, _ = cap_step(CapState(), p, 5.6, v, ThreatView(1.0), 0.01)
+    assert st.mode == BRAKE and a == pytest.approx(-min(p.a_max_mps2, v * v / (2 * (5.6 - p.d0_m))))
+    # Clear at cruise speed: resume and accelerate back towards the cruise speed.
+    st, a, _ = cap_step(st, p, 5.6, 2.0, ThreatView(math.inf), 0.01, ThreatView(math.inf))
+    assert st.mode == CRUISE and a > 0
+
+
+def test_speed_loop_of_the_default_gains_is_stable_and_well_damped():
+    from vei_scenario.models.cap_analysis import analyse_speed_loop
+
+    loop = analyse_speed_loop()
+    assert loop.stable and np.all(loop.poles.real < 0)
+    assert loop.overshoot_pct < 5.0 and loop.settling_time_s < 5.0
+    assert loop.steady_state_error < 1e-9
+    # The analysis can fail: a negative gain destabilises the loop.
+    assert not analyse_speed_loop(CapParameters(kp=-1.0)).stable
