@@ -193,3 +193,20 @@ def test_study_from_a_clip_prints_the_table(tmp_path, capsys):
     assert [c["collision"] for c in table["configurations"]] == [True, True, True, False, False]
     assert (tmp_path / "study" / "scenario" / "scenario.xosc").is_file()
     shutil.rmtree(tmp_path / "study")
+
+
+def test_the_hand_written_scenarios_are_valid_openscenario(qc_venv):
+    from vei_scenario.openscenario.validation import validate_files
+
+    assert validate_files([DATA / "following_brake.xosc", DATA / "outside_subset.xosc"]) == []
+
+
+def test_selected_triggering_entities_are_refused_not_ignored(tmp_path, capsys):
+    src = tmp_path / "s.xosc"
+    src.write_text(
+        (DATA / "following_brake.xosc")
+        .read_text()
+        .replace('selectTriggeringEntities="false"', 'selectTriggeringEntities="true"')
+    )
+    code, err = _run(capsys, src)
+    assert code == 2 and "selectTriggeringEntities" in err and "line" in err

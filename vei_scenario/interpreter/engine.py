@@ -141,6 +141,8 @@ class Simulation:
                 raise ctx.error(el, f"ManeuverGroup {el.get('name')!r}: no entity named {a!r}")
         if el.find("CatalogReference") is not None:
             raise ctx.error(el.find("CatalogReference"), "maneuver catalogs are not supported by vei run")
+        if el.find("Actors").get("selectTriggeringEntities", "false") == "true":
+            raise ctx.error(el.find("Actors"), "selectTriggeringEntities=true is not supported by vei run")
         return Element("ManeuverGroup", el, ctx, [self._maneuver(m, actors) for m in el.iterfind("Maneuver")])
 
     def _maneuver(self, el, actors) -> Element:
