@@ -70,6 +70,32 @@ def _cmd_study(args: argparse.Namespace) -> int:
     return 0
 
 
+def _cmd_sweep(args: argparse.Namespace) -> int:
+    from vei_scenario.sweep import run_sweep
+
+    report = run_sweep(
+        args.scenario,
+        args.output,
+        args.vary,
+        args.dist,
+        args.seed,
+        args.dt,
+        args.executor,
+        args.scheduler,
+        args.workers,
+        args.emit_xosc,
+        args.quiet,
+    )
+    ok = [r for r in report.rows if r["status"] == "ok"]
+    coll = sum(1 for r in ok if r["metrics"].get("collision"))
+    print(
+        f"{len(report.rows)} variants ({', '.join(report.varied)}): {coll} collide, {len(ok) - coll} do not, "
+        f"{len(report.rows) - len(ok)} failed"
+    )
+    print(f"wrote {args.output}/catalog.csv, catalog.json, report.html")
+    return 0
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="vei", description="Annotated vehicle–e-scooter clips → ASAM OpenSCENARIO/OpenDRIVE test scenarios."
@@ -108,6 +134,26 @@ def build_parser() -> argparse.ArgumentParser:
     st.add_argument("--time-shift", type=float, help="TimeShift to use (default: the scenario's ConflictTimeShift)")
     st.add_argument("--no-plots", action="store_true")
     st.set_defaults(func=_cmd_study)
+
+    sw = sub.add_parser("sweep", help="run a catalog of parameter variants; catalog.csv/json and report.html")
+    sw.add_argument("scenario", help="OpenSCENARIO file (.xosc)")
+    sw.add_argument(
+        "--vary",
+        action="append",
+        default=[],
+        metavar="NAME=A:B:STEP|NAME=V1,V2",
+        help="a varied parameter (repeatable; the catalog is their cartesian product)",
+    )
+    sw.add_argument("--dist", help="take variants from an OpenSCENARIO ParameterValueDistribution file")
+    sw.add_argument("--seed", type=int, help="seed of stochastic distributions (default: the file's randomSeed)")
+    sw.add_argument("-o", "--output", required=True)
+    sw.add_argument("--dt", type=float, default=0.01)
+    sw.add_argument("--executor", choices=("local", "dask"), default="local")
+    sw.add_argument("--scheduler", help="Dask scheduler address (default: a LocalCluster on this machine)")
+    sw.add_argument("--workers", type=int, help="local worker processes (default: all cores)")
+    sw.add_argument("--emit-xosc", action="store_true", help="also write one scenario file per variant")
+    sw.add_argument("--quiet", action="store_true", help="no progress bar")
+    sw.set_defaults(func=_cmd_sweep)
 
     v = sub.add_parser("validate", help="check .xosc/.xodr files against the ASAM XSDs and VEI's own rules")
     v.add_argument("files", nargs="+")

@@ -31,7 +31,7 @@ class ScenarioDocument:
     road_file: Path | None
 
 
-def _check_type(type_: str, value: str) -> str | None:
+def check_type(type_: str, value: str) -> str | None:
     """None when ``value`` is a valid literal of the OpenSCENARIO parameter type, else the reason."""
     try:
         if type_ == "double":
@@ -72,7 +72,7 @@ def _declare(path: Path, decls, scope: dict[str, str], types: dict[str, str]) ->
     for d in decls.iterfind("ParameterDeclaration"):
         name, type_ = d.get("name"), d.get("parameterType", "string")
         value = _resolve_value(path, d, "value", d.get("value", ""), scope)
-        problem = _check_type(type_, value)
+        problem = check_type(type_, value)
         if problem:
             raise VeiInputError(path, f"line {d.sourceline}", f"parameter {name} = {value!r} {problem}")
         scope[name] = value
@@ -124,7 +124,7 @@ def load_scenario(path: str | Path, overrides: dict[str, str] | None = None) -> 
         if name not in scope:
             known = ", ".join(sorted(scope)) or "none"
             raise VeiInputError(path, "--param", f"unknown parameter {name!r} (declared: {known})")
-        problem = _check_type(types[name], value)
+        problem = check_type(types[name], value)
         if problem:
             raise VeiInputError(path, "--param", f"{name}={value!r} {problem} ({types[name]} parameter)")
         scope[name] = value

@@ -1,0 +1,96 @@
+"""``run_sweep``: evaluate a catalog of variants and write catalog.csv, catalog.json and report.html."""
+
+from __future__ import annotations
+
+import os
+import sys
+from dataclasses import dataclass
+from pathlib import Path
+
+from vei_scenario.atomic_io import OutputSet
+from vei_scenario.errors import VeiInputError
+from vei_scenario.interpreter.document import load_scenario
+from vei_scenario.sweep.catalog import catalog_csv, catalog_json, variant_xosc
+from vei_scenario.sweep.evaluate import evaluate_dask, evaluate_local, iter_rows
+from vei_scenario.sweep.report_html import report_html
+from vei_scenario.variation import cartesian, parse_vary, read_distribution
+
+
+@dataclass
+class SweepReport:
+    rows: list[dict]
+    written: list[Path]
+    varied: list[str]
+
+
+def _progress_bar(total: int, quiet: bool):
+    """A tqdm bar with rate and ETA on a terminal; nothing in CI or when piped."""
+    if quiet or os.environ.get("CI") or not sys.stderr.isatty():
+        return None
+    from tqdm import tqdm
+
+    return tqdm(total=total, unit="variant", dynamic_ncols=True, file=sys.stderr)
+
+
+def build_variants(
+    scenario: Path, vary: list[str], dist: Path | None, seed: int | None
+) -> tuple[list[dict], list[str]]:
+    doc = load_scenario(scenario)
+    declared = doc.parameter_types
+    defaults = dict(doc.parameters)
+    axes = [parse_vary(v, declared) for v in vary]
+    if dist is not None:
+        extra = read_distribution(dist, declared, seed)
+        base = cartesian(axes, defaults) if axes else [dict(defaults)]
+        variants = [{**b, **e} for e in extra for b in base]
+        varied = list(dict.fromkeys([a[0] for a in axes] + [k for e in extra for k in e]))
+    else:
+        if not axes:
+            raise VeiInputError(None, "--vary", "nothing to vary: give --vary or --dist")
+        variants = cartesian(axes, defaults)
+        varied = [a[0] for a in axes]
+    return variants, varied
+
+
+def run_sweep(
+    scenario: str | Path,
+    out_dir: str | Path,
+    vary: list[str] | None = None,
+    dist: str | Path | None = None,
+    seed: int | None = None,
+    dt: float = 0.01,
+    executor: str = "local",
+    scheduler: str | None = None,
+    workers: int | None = None,
+    emit_xosc: bool = False,
+    quiet: bool = False,
+) -> SweepReport:
+    scenario = Path(scenario)
+    out = Path(out_dir)
+    variants, varied = build_variants(scenario, vary or [], Path(dist) if dist else None, seed)
+    bar = _progress_bar(len(variants), quiet)
+    tick = bar.update if bar is not None else None
+    try:
+        if executor == "dask":
+            outcomes = evaluate_dask(str(scenario.resolve()), variants, dt, scheduler, tick)
+        elif executor == "local":
+            outcomes = evaluate_local(str(scenario.resolve()), variants, dt, workers, tick)
+        else:
+            raise VeiInputError(None, "--executor", f"{executor!r} is not local or dask")
+    finally:
+        if bar is not None:
+            bar.close()
+    rows = iter_rows(variants, outcomes)
+    names = list(load_scenario(scenario).parameters)
+    files = OutputSet()
+    if emit_xosc:
+        for r in rows:
+            rel = f"variants/variant_{r['variant']:05d}.xosc"
+            files.add(out / rel, variant_xosc(scenario, r["parameters"], out / "variants"))
+            r["xosc"] = rel
+    meta = {"scenario": str(scenario), "dt_s": dt, "varied": varied, "count": len(rows)}
+    files.add(out / "catalog.csv", catalog_csv(rows, names))
+    files.add(out / "catalog.json", catalog_json(rows, meta))
+    files.add(out / "report.html", report_html(rows, names, varied, meta))
+    files.commit()
+    return SweepReport(rows, files.paths, varied)

@@ -1,0 +1,70 @@
+"""Catalog files: catalog.csv / catalog.json (one row per variant), optional per-variant scenarios."""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import os
+from pathlib import Path
+
+from lxml import etree
+
+from vei_scenario.safe_xml import parse_xml
+
+
+def flat_metrics(metrics: dict) -> dict[str, object]:
+    out: dict[str, object] = {}
+    for k, v in metrics.items():
+        if isinstance(v, dict):
+            for kk, vv in v.items():
+                out[f"{k}.{kk}"] = vv
+        elif isinstance(v, list):
+            out[k] = "+".join(map(str, v))
+        else:
+            out[k] = v
+    return out
+
+
+def catalog_csv(rows: list[dict], parameter_names: list[str]) -> str:
+    metric_cols: list[str] = []
+    for r in rows:
+        for k in flat_metrics(r["metrics"]):
+            if k not in metric_cols:
+                metric_cols.append(k)
+    buf = io.StringIO()
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow(["variant", *parameter_names, "status", "error", "xosc", *metric_cols])
+    for r in rows:
+        m = flat_metrics(r["metrics"])
+        w.writerow(
+            [
+                r["variant"],
+                *(r["parameters"][p] for p in parameter_names),
+                r["status"],
+                r["error"],
+                r.get("xosc", ""),
+                *("" if m.get(c) is None else m.get(c) for c in metric_cols),
+            ]
+        )
+    return buf.getvalue()
+
+
+def catalog_json(rows: list[dict], meta: dict) -> str:
+    return json.dumps({**meta, "variants": rows}, indent=1) + "\n"
+
+
+def variant_xosc(scenario: Path, values: dict[str, str], target_dir: Path) -> bytes:
+    """The scenario with its parameter declarations set to the variant's values, its LogicFile
+    re-pointed from ``target_dir``: any OpenSCENARIO tool runs it as this variant."""
+    root = parse_xml(scenario).getroot()
+    for d in root.iterfind("ParameterDeclarations/ParameterDeclaration"):
+        if d.get("name") in values:
+            d.set("value", values[d.get("name")])
+    for tag in ("LogicFile", "SceneGraphFile"):
+        for el in root.iter(tag):
+            ref = el.get("filepath")
+            if ref and "$" not in ref:
+                src = (scenario.parent / ref).resolve()
+                el.set("filepath", Path(os.path.relpath(src, target_dir.resolve())).as_posix())
+    return etree.tostring(root, xml_declaration=True, encoding="UTF-8", pretty_print=True)

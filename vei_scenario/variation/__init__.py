@@ -1,0 +1,195 @@
+"""Parameter variations: ``--vary`` specifications and OpenSCENARIO ParameterValueDistribution files.
+
+Both produce a list of variants, each a full ``{parameter: value-string}`` assignment checked against
+the scenario's declared parameters and their types. Stochastic distributions draw from a seeded
+generator, so a catalog reproduces exactly.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+from pathlib import Path
+
+import numpy as np
+
+from vei_scenario.errors import VeiInputError
+from vei_scenario.interpreter.document import check_type
+from vei_scenario.safe_xml import parse_xml
+
+#: Cap on the variants one sweep may ask for (a typo in a step should not ask for billions).
+MAX_VARIANTS = 2_000_000
+
+
+def _fmt(v: float) -> str:
+    r = round(float(v), 10)
+    return repr(int(r)) if r.is_integer() else repr(r)
+
+
+def parse_vary(spec: str, declared: dict[str, str]) -> tuple[str, list[str]]:
+    """``Name=start:stop:step`` (inclusive) or ``Name=v1,v2,...`` against the declared types."""
+    name, sep, values = spec.partition("=")
+    name = name.strip()
+    if not sep or not name or not values.strip():
+        raise VeiInputError(None, "--vary", f"{spec!r} is not Name=start:stop:step or Name=v1,v2")
+    if name not in declared:
+        raise VeiInputError(None, "--vary", f"unknown parameter {name!r} (declared: {', '.join(sorted(declared))})")
+    if values.count(":") == 2 and "," not in values:
+        try:
+            start, stop, step = (float(x) for x in values.split(":"))
+        except ValueError:
+            raise VeiInputError(None, "--vary", f"{spec!r}: start:stop:step must be numbers") from None
+        if not all(math.isfinite(x) for x in (start, stop, step)) or step <= 0 or stop < start:
+            raise VeiInputError(None, "--vary", f"{spec!r} is an empty range (need start <= stop and step > 0)")
+        n = int(math.floor((stop - start) / step + 1e-9)) + 1
+        if n > MAX_VARIANTS:
+            raise VeiInputError(None, "--vary", f"{spec!r} gives {n} values")
+        out = [_fmt(start + i * step) for i in range(n)]
+    else:
+        out = [v.strip() for v in values.split(",")]
+        if any(not v for v in out):
+            raise VeiInputError(None, "--vary", f"{spec!r} has an empty value")
+    for v in out:
+        problem = check_type(declared[name], v)
+        if problem:
+            raise VeiInputError(None, "--vary", f"{name}={v!r} {problem} ({declared[name]} parameter)")
+    return name, out
+
+
+def cartesian(axes: list[tuple[str, list[str]]], defaults: dict[str, str]) -> list[dict[str, str]]:
+    names = [a[0] for a in axes]
+    if len(set(names)) != len(names):
+        raise VeiInputError(None, "--vary", "a parameter is varied twice")
+    total = math.prod(len(a[1]) for a in axes) if axes else 1
+    if total > MAX_VARIANTS:
+        raise VeiInputError(None, "--vary", f"{total} variants exceed the limit of {MAX_VARIANTS}")
+    out = []
+    for combo in itertools.product(*(a[1] for a in axes)):
+        v = dict(defaults)
+        v.update(zip(names, combo))
+        out.append(v)
+    return out
+
+
+def _f(path: Path, el, name: str) -> float:
+    try:
+        v = float(el.get(name))
+    except (TypeError, ValueError):
+        raise VeiInputError(
+            path, f"line {el.sourceline}", f"<{el.tag}> {name}={el.get(name)!r} is not a number"
+        ) from None
+    if not math.isfinite(v):
+        raise VeiInputError(path, f"line {el.sourceline}", f"<{el.tag}> {name} is not finite")
+    return v
+
+
+def _range(path: Path, el) -> tuple[float, float] | None:
+    r = el.find("Range")
+    if r is None:
+        return None
+    lo, hi = _f(path, r, "lowerLimit"), _f(path, r, "upperLimit")
+    if hi < lo:
+        raise VeiInputError(path, f"line {r.sourceline}", "Range upperLimit is below lowerLimit")
+    return lo, hi
+
+
+def _deterministic_single(path: Path, el) -> list[str]:
+    kind = el[0] if len(el) else None
+    if kind is not None and kind.tag == "DistributionSet":
+        return [e.get("value") for e in kind.iterfind("Element")]
+    if kind is not None and kind.tag == "DistributionRange":
+        step = _f(path, kind, "stepWidth")
+        lo, hi = _range(path, kind)
+        if step <= 0:
+            raise VeiInputError(path, f"line {kind.sourceline}", "stepWidth must be positive")
+        n = int(math.floor((hi - lo) / step + 1e-9)) + 1
+        return [_fmt(lo + i * step) for i in range(n)]
+    tag = kind.tag if kind is not None else "nothing"
+    raise VeiInputError(path, f"line {el.sourceline}", f"<{tag}> distributions are not supported")
+
+
+def _sample(path: Path, el, rng: np.random.Generator, n: int) -> list[str]:
+    kind = el[0] if len(el) else None
+    tag = kind.tag if kind is not None else "nothing"
+    if tag == "ProbabilityDistributionSet":
+        elems = list(kind.iterfind("Element"))
+        w = np.array([_f(path, e, "weight") for e in elems])
+        if np.any(w < 0) or w.sum() <= 0:
+            raise VeiInputError(path, f"line {kind.sourceline}", "weights must be non-negative and not all zero")
+        idx = rng.choice(len(elems), size=n, p=w / w.sum())
+        return [elems[i].get("value") for i in idx]
+    if tag == "Histogram":
+        bins = list(kind.iterfind("Bin"))
+        w = np.array([_f(path, b, "weight") for b in bins])
+        ranges = [_range(path, b) for b in bins]
+        idx = rng.choice(len(bins), size=n, p=w / w.sum())
+        return [_fmt(rng.uniform(*ranges[i])) for i in idx]
+    rng_range = _range(path, kind) if kind is not None else None
+    if tag == "UniformDistribution":
+        return [_fmt(v) for v in rng.uniform(*rng_range, size=n)]
+
+    def draw() -> float:
+        if tag == "NormalDistribution":
+            return rng.normal(_f(path, kind, "expectedValue"), math.sqrt(_f(path, kind, "variance")))
+        if tag == "LogNormalDistribution":
+            # expectedValue and variance are those of the log-normal variable itself.
+            mean, var = _f(path, kind, "expectedValue"), _f(path, kind, "variance")
+            s2 = math.log(1 + var / (mean * mean))
+            return rng.lognormal(math.log(mean) - s2 / 2, math.sqrt(s2))
+        if tag == "PoissonDistribution":
+            return float(rng.poisson(_f(path, kind, "expectedValue")))
+        raise VeiInputError(path, f"line {el.sourceline}", f"<{tag}> distributions are not supported")
+
+    out = []
+    for _ in range(n):
+        for _attempt in range(10_000):  # truncation to the Range by rejection
+            v = draw()
+            if rng_range is None or rng_range[0] <= v <= rng_range[1]:
+                break
+        else:
+            raise VeiInputError(path, f"line {kind.sourceline}", "the Range excludes almost every sample")
+        out.append(_fmt(v))
+    return out
+
+
+def read_distribution(path: str | Path, declared: dict[str, str], seed: int | None = None) -> list[dict[str, str]]:
+    """Variants of a ParameterValueDistribution file (values not yet merged with defaults)."""
+    path = Path(path)
+    root = parse_xml(path).getroot()
+    pvd = root.find("ParameterValueDistribution")
+    if root.tag != "OpenSCENARIO" or pvd is None:
+        raise VeiInputError(path, f"line {root.sourceline}", "not an OpenSCENARIO ParameterValueDistribution file")
+    variants: list[dict[str, str]]
+    det, sto = pvd.find("Deterministic"), pvd.find("Stochastic")
+    if det is not None:
+        axes = []
+        for single in det.iterfind("DeterministicSingleParameterDistribution"):
+            axes.append((single.get("parameterName"), _deterministic_single(path, single), single))
+        sets = []
+        for multi in det.iterfind("DeterministicMultiParameterDistribution/ValueSetDistribution"):
+            for vs in multi.iterfind("ParameterValueSet"):
+                sets.append({a.get("parameterRef"): a.get("value") for a in vs.iterfind("ParameterAssignment")})
+        base = [dict(zip([a[0] for a in axes], combo)) for combo in itertools.product(*(a[1] for a in axes))]
+        variants = [{**b, **s} for b in base for s in (sets or [{}])]
+        named = [(a[0], a[2]) for a in axes] + [(k, multi) for s in sets for k in s]
+    elif sto is not None:
+        n = int(_f(path, sto, "numberOfTestRuns"))
+        seed_value = seed if seed is not None else int(_f(path, sto, "randomSeed")) if sto.get("randomSeed") else 0
+        rng = np.random.default_rng(seed_value)
+        columns = {}
+        named = []
+        for d in sto.iterfind("StochasticDistribution"):
+            columns[d.get("parameterName")] = _sample(path, d, rng, n)
+            named.append((d.get("parameterName"), d))
+        variants = [{k: v[i] for k, v in columns.items()} for i in range(n)]
+    else:
+        raise VeiInputError(path, f"line {pvd.sourceline}", "neither Deterministic nor Stochastic")
+    for name, el in named:
+        if name not in declared:
+            raise VeiInputError(path, f"line {el.sourceline}", f"varies {name!r}, which the scenario does not declare")
+    for v in variants:
+        for k, value in v.items():
+            problem = check_type(declared[k], value)
+            if problem:
+                raise VeiInputError(path, "", f"{k}={value!r} {problem} ({declared[k]} parameter)")
+    return variants
