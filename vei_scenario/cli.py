@@ -96,6 +96,57 @@ def _cmd_sweep(args: argparse.Namespace) -> int:
     return 0
 
 
+def _pair(text: str) -> tuple[float, float]:
+    parts = text.split(":")
+    try:
+        lo, hi = float(parts[0]), float(parts[1])
+    except (IndexError, ValueError):
+        raise argparse.ArgumentTypeError(f"expected LOW:HIGH, not {text!r}") from None
+    if len(parts) != 2 or hi < lo:
+        raise argparse.ArgumentTypeError(f"expected LOW:HIGH with LOW <= HIGH, not {text!r}")
+    return lo, hi
+
+
+def _cmd_risk(args: argparse.Namespace) -> int:
+    from vei_scenario.risk import find_risk
+
+    results = find_risk(
+        args.scenario,
+        args.output,
+        args.target,
+        args.vary,
+        args.band,
+        args.window,
+        args.coarse,
+        args.tol,
+        args.dt,
+        args.workers,
+    )
+    for r in results:
+        fixed = ", ".join(f"{k}={v}" for k, v in r.parameters.items() if k in {v.split("=")[0] for v in args.vary})
+        spans = "; ".join(f"TimeShift {a:+.3f}..{b:+.3f} s" for a, b in r.intervals) or "none found"
+        print(f"{args.target} {('(' + fixed + ') ') if fixed else ''}: {spans} [{r.evaluations} runs]")
+        for note in r.open_edges:
+            print(f"  note: {note}: widen --window")
+    if args.output:
+        print(f"wrote {args.output}/risk.json and the critical scenarios")
+    return 0
+
+
+def _cmd_check(args: argparse.Namespace) -> int:
+    from vei_scenario.ci_check import run_suite
+
+    results = run_suite(args.suite, args.junit)
+    for r in results:
+        state = "ERROR" if r.errors else "FAIL" if r.failures else "ok"
+        print(f"{state:<6}{r.case.name} ({r.seconds:.2f} s)")
+        for line in r.errors + r.failures:
+            print(f"      {line}")
+    bad = sum(1 for r in results if r.errors or r.failures)
+    print(f"{len(results) - bad} passed, {bad} failed")
+    return 1 if bad else 0
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="vei", description="Annotated vehicle–e-scooter clips → ASAM OpenSCENARIO/OpenDRIVE test scenarios."
@@ -154,6 +205,24 @@ def build_parser() -> argparse.ArgumentParser:
     sw.add_argument("--emit-xosc", action="store_true", help="also write one scenario file per variant")
     sw.add_argument("--quiet", action="store_true", help="no progress bar")
     sw.set_defaults(func=_cmd_sweep)
+
+    rk = sub.add_parser("risk", help="find the TimeShift intervals of collisions or near misses (bisection)")
+    rk.add_argument("scenario")
+    rk.add_argument("--target", choices=("collision", "near-miss"), default="collision")
+    rk.add_argument("--vary", action="append", default=[], help="other parameters to search separately")
+    rk.add_argument("--band", type=_pair, default=(0.5, 1.5), help="near-miss band of the minimum TTC, s (0.5:1.5)")
+    rk.add_argument("--window", type=_pair, help="TimeShift window (default: ConflictTimeShift ± 6 s)")
+    rk.add_argument("--coarse", type=float, default=0.5, help="bracketing step, s (default 0.5)")
+    rk.add_argument("--tol", type=float, default=0.01, help="edge tolerance, s (default 0.01)")
+    rk.add_argument("--dt", type=float, default=0.01)
+    rk.add_argument("--workers", type=int)
+    rk.add_argument("-o", "--output", help="directory for risk.json and the critical scenarios")
+    rk.set_defaults(func=_cmd_risk)
+
+    ck = sub.add_parser("check", help="run a suite of scenario expectations (for CI); JUnit XML")
+    ck.add_argument("suite", help="suite file (.toml)")
+    ck.add_argument("--junit", help="write JUnit XML here")
+    ck.set_defaults(func=_cmd_check)
 
     v = sub.add_parser("validate", help="check .xosc/.xodr files against the ASAM XSDs and VEI's own rules")
     v.add_argument("files", nargs="+")

@@ -1,0 +1,166 @@
+"""``find_risk``: the TimeShift intervals where an interaction becomes a collision or a near miss.
+
+The seed method's dynamic risk generation, done by bracketing and bisection instead of a blind grid:
+the conflict shift found by the compiler and a coarse scan of the window give points on both sides of
+every edge; each edge is then bisected to the tolerance. With other varied parameters (``--vary``),
+each combination is searched separately.
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from vei_scenario.atomic_io import OutputSet
+from vei_scenario.errors import VeiInputError
+from vei_scenario.interpreter.document import load_scenario
+from vei_scenario.sweep.catalog import variant_xosc
+from vei_scenario.sweep.evaluate import evaluate_local, evaluate_variant
+from vei_scenario.variation import cartesian, parse_vary
+
+TARGETS = ("collision", "near-miss")
+
+
+@dataclass
+class RiskSearch:
+    parameters: dict[str, str]  # the fixed values of this combination
+    intervals: list[tuple[float, float]]  # TimeShift intervals where the target holds
+    open_edges: list[str] = field(default_factory=list)  # edges that touch the search window
+    evaluations: int = 0
+
+
+def _holds(metrics: dict, target: str, band: tuple[float, float]) -> bool:
+    if target == "collision":
+        return bool(metrics.get("collision"))
+    ttc = metrics.get("min_ttc_s")
+    return not metrics.get("collision") and ttc is not None and band[0] <= ttc <= band[1]
+
+
+def search_combination(
+    scenario: str,
+    base: dict[str, str],
+    target: str,
+    band: tuple[float, float],
+    window: tuple[float, float],
+    coarse: float,
+    tol: float,
+    dt: float,
+    seeds: list[float],
+    workers: int | None,
+) -> RiskSearch:
+    cache: dict[float, bool] = {}
+
+    def values(shift: float) -> dict[str, str]:
+        return {**base, "TimeShift": repr(round(shift, 9))}
+
+    def check(outcome: dict, shift: float) -> bool:
+        if outcome["status"] != "ok":
+            raise VeiInputError(scenario, "TimeShift", f"variant at TimeShift {shift:g} failed: {outcome['error']}")
+        return _holds(outcome["metrics"], target, band)
+
+    lo, hi = window
+    n = int((hi - lo) / coarse + 1e-9) + 1
+    grid = sorted({round(lo + i * coarse, 9) for i in range(n)} | {round(s, 9) for s in seeds if lo <= s <= hi})
+    outcomes = evaluate_local(scenario, [values(s) for s in grid], dt, workers)
+    for s, o in zip(grid, outcomes):
+        cache[s] = check(o, s)
+
+    def holds(shift: float) -> bool:
+        if shift not in cache:
+            cache[shift] = check(evaluate_variant(scenario, values(shift), dt), shift)
+        return cache[shift]
+
+    edges: list[tuple[float, bool]] = []  # (edge position, True if the target starts there)
+    for a, b in zip(grid, grid[1:]):
+        if cache[a] == cache[b]:
+            continue
+        x0, x1 = a, b
+        while x1 - x0 > tol:
+            mid = round(0.5 * (x0 + x1), 9)
+            if holds(mid) == cache[a]:
+                x0 = mid
+            else:
+                x1 = mid
+        # The edge lies in (x0, x1]: report the last point inside the target set.
+        edges.append((x1 if not cache[a] else x0, not cache[a]))
+    intervals, open_edges = [], []
+    start = grid[0] if cache[grid[0]] else None
+    if start is not None:
+        open_edges.append(f"target holds at the window's lower end {grid[0]:g}")
+    for pos, rising in edges:
+        if rising:
+            start = pos
+        elif start is not None:
+            intervals.append((start, pos))
+            start = None
+    if start is not None:
+        intervals.append((start, grid[-1]))
+        open_edges.append(f"target holds at the window's upper end {grid[-1]:g}")
+    return RiskSearch(base, intervals, open_edges, len(cache))
+
+
+def find_risk(
+    scenario: str | Path,
+    out_dir: str | Path | None,
+    target: str = "collision",
+    vary: list[str] | None = None,
+    band: tuple[float, float] = (0.5, 1.5),
+    window: tuple[float, float] | None = None,
+    coarse: float = 0.5,
+    tol: float = 0.01,
+    dt: float = 0.01,
+    workers: int | None = None,
+) -> list[RiskSearch]:
+    scenario = Path(scenario)
+    if target not in TARGETS:
+        raise VeiInputError(None, "--target", f"{target!r} is not one of {', '.join(TARGETS)}")
+    if not (0 < tol < coarse):
+        raise VeiInputError(None, "--tol", "need 0 < tol < coarse step")
+    doc = load_scenario(scenario)
+    if "TimeShift" not in doc.parameters:
+        raise VeiInputError(scenario, "ParameterDeclarations", "risk search varies TimeShift, which is not declared")
+    axes = [parse_vary(v, doc.parameter_types) for v in (vary or [])]
+    if any(a[0] == "TimeShift" for a in axes):
+        raise VeiInputError(None, "--vary", "TimeShift is what the risk search varies; vary other parameters")
+    conflict = float(doc.parameters.get("ConflictTimeShift", "0"))
+    window = window or (round(conflict - 6.0, 3), round(conflict + 6.0, 3))
+    if window[1] <= window[0]:
+        raise VeiInputError(None, "--window", "empty TimeShift window")
+    combos = cartesian(axes, dict(doc.parameters)) if axes else [dict(doc.parameters)]
+    results = [
+        search_combination(str(scenario.resolve()), c, target, band, window, coarse, tol, dt, [conflict], workers)
+        for c in combos
+    ]
+    if out_dir is not None:
+        out = Path(out_dir)
+        files = OutputSet()
+        doc_out = {
+            "scenario": str(scenario),
+            "target": target,
+            "band_s": list(band),
+            "window_s": list(window),
+            "tolerance_s": tol,
+            "searches": [],
+        }
+        for k, r in enumerate(results):
+            entry = {
+                "parameters": {a[0]: r.parameters[a[0]] for a in axes},
+                "intervals": [],
+                "open_edges": r.open_edges,
+                "evaluations": r.evaluations,
+            }
+            for j, (a, b) in enumerate(r.intervals):
+                files_rel = {}
+                for label, shift in (("start", a), ("mid", 0.5 * (a + b)), ("end", b)):
+                    rel = f"critical/search{k:02d}_interval{j}_{label}.xosc"
+                    files.add(
+                        out / rel,
+                        variant_xosc(scenario, {**r.parameters, "TimeShift": repr(round(shift, 4))}, out / "critical"),
+                    )
+                    files_rel[label] = rel
+                entry["intervals"].append({"time_shift_s": [round(a, 4), round(b, 4)], "scenarios": files_rel})
+            doc_out["searches"].append(entry)
+        files.add(out / "risk.json", json.dumps(doc_out, indent=2) + "\n")
+        files.commit()
+    return results
