@@ -25,10 +25,12 @@ def _series_plot(rows: list[dict], x_param: str, groups: list[str], metric: str,
     keys = sorted({tuple(r["parameters"][g] for g in groups) for r in rows})
     for key in keys:
         sel = [r for r in rows if tuple(r["parameters"][g] for g in groups) == key and r["status"] == "ok"]
+        if not sel:  # every variant of this group failed: listed under "Failed variants"
+            continue
         sel.sort(key=lambda r: float(r["parameters"][x_param]))
         x = np.array([float(r["parameters"][x_param]) for r in sel])
         y = np.array([np.nan if r["metrics"].get(metric) is None else float(r["metrics"][metric]) for r in sel])
-        coll = np.array([bool(r["metrics"].get("collision")) for r in sel])
+        coll = np.array([bool(r["metrics"].get("collision")) for r in sel], dtype=bool)
         name = ", ".join(f"{g}={k}" for g, k in zip(groups, key)) or "all"
         line = ax.plot(x, y, lw=1.3, marker=".", ms=3, label=name)
         ax.plot(x[coll], y[coll], "x", color=line[0].get_color(), ms=6)
