@@ -29,6 +29,7 @@ def _progress_bar(total: int, quiet: bool):
         return None
     from tqdm import tqdm
 
+    tqdm.monitor_interval = 0  # no monitor thread: the local executor forks worker processes
     return tqdm(total=total, unit="variant", dynamic_ncols=True, file=sys.stderr)
 
 

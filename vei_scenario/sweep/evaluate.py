@@ -55,7 +55,9 @@ def evaluate_local(
             if progress:
                 progress(len(c))
         return out
-    ctx = None if sys.platform == "win32" else __import__("multiprocessing").get_context("forkserver")
+    # fork: workers inherit the imported modules (1.8x on 2 cores vs 1.2x with forkserver for 64
+    # variants); the parent runs no threads at this point (the progress bar's monitor is disabled).
+    ctx = None if sys.platform != "linux" else __import__("multiprocessing").get_context("fork")
     with ProcessPoolExecutor(max_workers=workers, mp_context=ctx) as pool:
         for c, rows in zip(chunks, pool.map(_chunk, [scenario] * len(chunks), chunks, [dt] * len(chunks))):
             out.extend(rows)
