@@ -6,6 +6,7 @@ disabled. A syntax error becomes a :class:`~vei_scenario.errors.VeiInputError` n
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 from lxml import etree
@@ -38,3 +39,16 @@ def parse_xml(path: Path | str, remove_comments: bool = False) -> etree._Element
     if docinfo.internalDTD is not None and any(True for _ in docinfo.internalDTD.iterentities()):
         raise VeiInputError(path, "line 1", "XML entity declarations are not accepted (entity expansion is disabled)")
     return tree
+
+
+def float_attribute(path: Path | str | None, el, name: str) -> float:
+    """A finite number from attribute ``name`` of ``el``; a VeiInputError naming the line otherwise."""
+    try:
+        v = float(el.get(name))
+    except (TypeError, ValueError):
+        raise VeiInputError(
+            path, f"line {el.sourceline}", f"<{el.tag}> {name}={el.get(name)!r} is not a number"
+        ) from None
+    if not math.isfinite(v):
+        raise VeiInputError(path, f"line {el.sourceline}", f"<{el.tag}> {name} is not finite")
+    return v

@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 
 from vei_scenario.errors import VeiInputError
 from vei_scenario.models.boxes import box_distance, time_to_contact
+from vei_scenario.openscenario import STORYBOARD_ELEMENT_TYPES
 
 STANDBY, RUNNING, COMPLETE = "standby", "running", "complete"
 
@@ -88,17 +89,8 @@ class ParameterCondition(Condition):
 
 
 class StoryboardElementState(Condition):
-    TYPES = {
-        "story": "Story",
-        "act": "Act",
-        "maneuverGroup": "ManeuverGroup",
-        "maneuver": "Maneuver",
-        "event": "Event",
-        "action": "Action",
-    }
-
     def __init__(self, el, ctx: Context) -> None:
-        self.key = (self.TYPES.get(el.get("storyboardElementType"), ""), el.get("storyboardElementRef"))
+        self.key = (STORYBOARD_ELEMENT_TYPES.get(el.get("storyboardElementType"), ""), el.get("storyboardElementRef"))
         self.state = el.get("state")
         self.el = el
 

@@ -23,6 +23,7 @@ from pathlib import Path
 from lxml import etree
 
 from vei_scenario.errors import VeiInputError
+from vei_scenario.openscenario import STORYBOARD_ELEMENT_TYPES
 from vei_scenario.openscenario.asam_schemas import xsd_path
 from vei_scenario.safe_xml import safe_parser
 
@@ -41,14 +42,6 @@ class Problem:
 
 _PARAM_REF = re.compile(r"\$\{([^}]*)\}|^\$([A-Za-z_][A-Za-z0-9_]*)$")
 _EXPR_NAME = re.compile(r"\$([A-Za-z_][A-Za-z0-9_]*)")
-_STORYBOARD_TYPES = {
-    "story": "Story",
-    "act": "Act",
-    "maneuverGroup": "ManeuverGroup",
-    "maneuver": "Maneuver",
-    "event": "Event",
-    "action": "Action",
-}
 
 
 @cache
@@ -178,11 +171,11 @@ def _reference_problems(path: Path, root, problems: list[Problem]) -> None:
                     )
                 )
     elements: dict[str, set[str]] = {}
-    for tag in _STORYBOARD_TYPES.values():
+    for tag in STORYBOARD_ELEMENT_TYPES.values():
         elements[tag] = {e.get("name") for e in root.iter(tag) if e.get("name")}
     elements["Action"] |= {e.get("name") for e in root.iter("PrivateAction", "GlobalAction", "UserDefinedAction")}
     for cond in root.iter("StoryboardElementStateCondition"):
-        kind = _STORYBOARD_TYPES.get(cond.get("storyboardElementType", ""))
+        kind = STORYBOARD_ELEMENT_TYPES.get(cond.get("storyboardElementType", ""))
         ref = cond.get("storyboardElementRef", "")
         if kind and ref and "$" not in ref and ref not in elements[kind]:
             problems.append(

@@ -14,7 +14,7 @@ from pathlib import Path
 from lxml import etree
 
 from vei_scenario.errors import VeiInputError
-from vei_scenario.safe_xml import SAFE_OPTIONS
+from vei_scenario.safe_xml import SAFE_OPTIONS, float_attribute
 
 #: Margin added around the scenario's bounding box before cropping (m).
 DEFAULT_MARGIN_M = 60.0
@@ -30,18 +30,6 @@ class OsmRegion:
 
 def _iter(path: Path, tags: tuple[str, ...]):
     return etree.iterparse(str(path), events=("end",), tag=tags, remove_comments=True, **SAFE_OPTIONS)
-
-
-def _float_attr(path: Path, el, name: str) -> float:
-    try:
-        v = float(el.get(name))
-    except (TypeError, ValueError):
-        raise VeiInputError(
-            path, f"line {el.sourceline}", f"<node> attribute {name}={el.get(name)!r} is not a number"
-        ) from None
-    if v != v or v in (float("inf"), float("-inf")):
-        raise VeiInputError(path, f"line {el.sourceline}", f"<node> attribute {name} is not finite")
-    return v
 
 
 def crop_osm(path: Path, bbox: tuple[float, float, float, float]) -> OsmRegion:
@@ -66,7 +54,7 @@ def crop_osm(path: Path, bbox: tuple[float, float, float, float]) -> OsmRegion:
             raise VeiInputError(path, "", "empty OSM file")
         for _, el in _iter(path, ("node", "way")):
             if el.tag == "node":
-                lat, lon = _float_attr(path, el, "lat"), _float_attr(path, el, "lon")
+                lat, lon = float_attribute(path, el, "lat"), float_attribute(path, el, "lon")
                 if not (-90 <= lat <= 90 and -180 <= lon <= 180):
                     raise VeiInputError(path, f"line {el.sourceline}", f"<node> position ({lat}, {lon}) out of range")
                 if south <= lat <= north and west <= lon <= east:

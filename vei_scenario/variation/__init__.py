@@ -15,7 +15,7 @@ import numpy as np
 
 from vei_scenario.errors import VeiInputError
 from vei_scenario.interpreter.document import check_type
-from vei_scenario.safe_xml import parse_xml
+from vei_scenario.safe_xml import float_attribute, parse_xml
 
 #: Cap on the variants one sweep may ask for (a typo in a step should not ask for billions).
 MAX_VARIANTS = 2_000_000
@@ -71,23 +71,11 @@ def cartesian(axes: list[tuple[str, list[str]]], defaults: dict[str, str]) -> li
     return out
 
 
-def _f(path: Path, el, name: str) -> float:
-    try:
-        v = float(el.get(name))
-    except (TypeError, ValueError):
-        raise VeiInputError(
-            path, f"line {el.sourceline}", f"<{el.tag}> {name}={el.get(name)!r} is not a number"
-        ) from None
-    if not math.isfinite(v):
-        raise VeiInputError(path, f"line {el.sourceline}", f"<{el.tag}> {name} is not finite")
-    return v
-
-
 def _range(path: Path, el) -> tuple[float, float] | None:
     r = el.find("Range")
     if r is None:
         return None
-    lo, hi = _f(path, r, "lowerLimit"), _f(path, r, "upperLimit")
+    lo, hi = float_attribute(path, r, "lowerLimit"), float_attribute(path, r, "upperLimit")
     if hi < lo:
         raise VeiInputError(path, f"line {r.sourceline}", "Range upperLimit is below lowerLimit")
     return lo, hi
@@ -98,7 +86,7 @@ def _deterministic_single(path: Path, el) -> list[str]:
     if kind is not None and kind.tag == "DistributionSet":
         return [e.get("value") for e in kind.iterfind("Element")]
     if kind is not None and kind.tag == "DistributionRange":
-        step = _f(path, kind, "stepWidth")
+        step = float_attribute(path, kind, "stepWidth")
         lo, hi = _range(path, kind)
         if step <= 0:
             raise VeiInputError(path, f"line {kind.sourceline}", "stepWidth must be positive")
@@ -113,14 +101,14 @@ def _sample(path: Path, el, rng: np.random.Generator, n: int) -> list[str]:
     tag = kind.tag if kind is not None else "nothing"
     if tag == "ProbabilityDistributionSet":
         elems = list(kind.iterfind("Element"))
-        w = np.array([_f(path, e, "weight") for e in elems])
+        w = np.array([float_attribute(path, e, "weight") for e in elems])
         if np.any(w < 0) or w.sum() <= 0:
             raise VeiInputError(path, f"line {kind.sourceline}", "weights must be non-negative and not all zero")
         idx = rng.choice(len(elems), size=n, p=w / w.sum())
         return [elems[i].get("value") for i in idx]
     if tag == "Histogram":
         bins = list(kind.iterfind("Bin"))
-        w = np.array([_f(path, b, "weight") for b in bins])
+        w = np.array([float_attribute(path, b, "weight") for b in bins])
         ranges = [_range(path, b) for b in bins]
         idx = rng.choice(len(bins), size=n, p=w / w.sum())
         return [_fmt(rng.uniform(*ranges[i])) for i in idx]
@@ -130,14 +118,16 @@ def _sample(path: Path, el, rng: np.random.Generator, n: int) -> list[str]:
 
     def draw() -> float:
         if tag == "NormalDistribution":
-            return rng.normal(_f(path, kind, "expectedValue"), math.sqrt(_f(path, kind, "variance")))
+            return rng.normal(
+                float_attribute(path, kind, "expectedValue"), math.sqrt(float_attribute(path, kind, "variance"))
+            )
         if tag == "LogNormalDistribution":
             # expectedValue and variance are those of the log-normal variable itself.
-            mean, var = _f(path, kind, "expectedValue"), _f(path, kind, "variance")
+            mean, var = float_attribute(path, kind, "expectedValue"), float_attribute(path, kind, "variance")
             s2 = math.log(1 + var / (mean * mean))
             return rng.lognormal(math.log(mean) - s2 / 2, math.sqrt(s2))
         if tag == "PoissonDistribution":
-            return float(rng.poisson(_f(path, kind, "expectedValue")))
+            return float(rng.poisson(float_attribute(path, kind, "expectedValue")))
         raise VeiInputError(path, f"line {el.sourceline}", f"<{tag}> distributions are not supported")
 
     out = []
@@ -173,8 +163,10 @@ def read_distribution(path: str | Path, declared: dict[str, str], seed: int | No
         variants = [{**b, **s} for b in base for s in (sets or [{}])]
         named = [(a[0], a[2]) for a in axes] + [(k, multi) for s in sets for k in s]
     elif sto is not None:
-        n = int(_f(path, sto, "numberOfTestRuns"))
-        seed_value = seed if seed is not None else int(_f(path, sto, "randomSeed")) if sto.get("randomSeed") else 0
+        n = int(float_attribute(path, sto, "numberOfTestRuns"))
+        seed_value = (
+            seed if seed is not None else int(float_attribute(path, sto, "randomSeed")) if sto.get("randomSeed") else 0
+        )
         rng = np.random.default_rng(seed_value)
         columns = {}
         named = []
