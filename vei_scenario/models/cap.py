@@ -11,6 +11,8 @@ from __future__ import annotations
 import math
 from dataclasses import asdict, dataclass
 
+import numpy as np
+
 
 @dataclass(frozen=True)
 class CapParameters:
@@ -116,3 +118,47 @@ def cap_step(
     if a_cmd != a_raw:  # saturated: do not integrate further (anti-windup)
         integral = state.integral
     return CapState(CRUISE, integral, error), a_cmd, d_safe
+
+
+def cap_step_arrays(
+    brake: np.ndarray,
+    integral: np.ndarray,
+    prev_error: np.ndarray,
+    params: CapParameters,
+    cruise_speed_mps: np.ndarray,
+    ego_speed_mps: np.ndarray,
+    time_to_conflict_s: np.ndarray,
+    dt: float,
+    resume_time_to_conflict_s: np.ndarray | None = None,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """:func:`cap_step` for many planners at once: (brake, integral, prev_error, a_cmd, d_safe).
+
+    ``brake`` is the mode as a boolean array, ``prev_error`` NaN where the scalar state has None,
+    ``time_to_conflict_s`` inf where there is no threat view. Same operations in the same order as the
+    scalar planner, which tests/test_models.py checks on 10 000 random states."""
+    v = np.asarray(ego_speed_mps, float)
+    ttc = np.asarray(time_to_conflict_s, float)
+    d_safe = v * v / (2 * params.a_max_mps2) + v * params.t_h_s + params.d0_m
+    in_path = ttc <= params.horizon_s
+    with np.errstate(invalid="ignore"):
+        gap = np.where(in_path, v * ttc, np.inf)
+    check = ttc if resume_time_to_conflict_s is None else np.asarray(resume_time_to_conflict_s, float)
+    was_brake = np.asarray(brake, bool)
+    now_brake = np.where(was_brake, check <= params.horizon_s, in_path & (gap < d_safe))
+    room = np.maximum(gap - params.d0_m, 0.05)
+    need = np.where(np.isfinite(gap), v * v / (2 * room), 0.0)
+    a_brake = np.where(v > 0, -np.minimum(params.a_max_mps2, np.maximum(need, params.max_cruise_decel_mps2)), 0.0)
+    error = np.asarray(cruise_speed_mps, float) - v
+    prev = np.asarray(prev_error, float)
+    deriv = np.where(np.isnan(prev), 0.0, (error - prev) / dt)
+    integral_next = integral + error * dt
+    a_raw = params.kp * error + params.ki * integral_next + params.kd * deriv
+    a_cruise = np.maximum(-params.max_cruise_decel_mps2, np.minimum(params.max_accel_mps2, a_raw))
+    integral_next = np.where(a_cruise != a_raw, integral, integral_next)
+    return (
+        now_brake,
+        np.where(now_brake, integral, integral_next),
+        np.where(now_brake, np.nan, error),
+        np.where(now_brake, a_brake, a_cruise),
+        d_safe,
+    )

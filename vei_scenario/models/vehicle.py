@@ -10,6 +10,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+import numpy as np
+
 
 @dataclass(frozen=True)
 class VehicleLimits:
@@ -38,3 +40,20 @@ def longitudinal_step(state: Longitudinal, a_cmd: float, limits: VehicleLimits, 
         t_stop = v0 / -a
         return Longitudinal(state.s + v0 * t_stop + 0.5 * a * t_stop * t_stop, 0.0, a)
     return Longitudinal(state.s + v0 * dt + 0.5 * a * dt * dt, v1, a)
+
+
+def longitudinal_step_arrays(s, v, a, a_cmd, limits: VehicleLimits, dt: float):
+    """:func:`longitudinal_step` for many vehicles at once: (s, v, a) arrays."""
+    s, v0, a0 = (np.asarray(q, float) for q in (s, v, a))
+    target = np.maximum(-limits.max_decel_mps2, np.minimum(limits.max_accel_mps2, np.asarray(a_cmd, float)))
+    da = limits.jerk_max_mps3 * dt
+    acc = np.maximum(a0 - da, np.minimum(a0 + da, target))
+    resting = (v0 <= 0.0) & (acc <= 0.0)
+    v1 = v0 + acc * dt
+    stops = ~resting & (v1 < 0.0)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t_stop = np.where(stops, v0 / -acc, 0.0)
+    s_next = np.where(
+        resting, s, np.where(stops, s + v0 * t_stop + 0.5 * acc * t_stop * t_stop, s + v0 * dt + 0.5 * acc * dt * dt)
+    )
+    return s_next, np.where(resting | stops, 0.0, v1), np.where(resting, 0.0, acc)
