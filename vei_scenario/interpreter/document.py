@@ -51,7 +51,7 @@ def _format_number(value: float) -> str:
     return repr(int(value)) if value.is_integer() and abs(value) < 1e15 else repr(value)
 
 
-def _resolve_value(path: Path, el, attr: str, value: str, scope: dict[str, str]) -> str:
+def resolve_value(path: Path, el, attr: str, value: str, scope: dict[str, str]) -> str:
     m = _REF.match(value)
     if m:
         name = m.group(1)
@@ -71,7 +71,7 @@ def _resolve_value(path: Path, el, attr: str, value: str, scope: dict[str, str])
 def _declare(path: Path, decls, scope: dict[str, str], types: dict[str, str]) -> None:
     for d in decls.iterfind("ParameterDeclaration"):
         name, type_ = d.get("name"), d.get("parameterType", "string")
-        value = _resolve_value(path, d, "value", d.get("value", ""), scope)
+        value = resolve_value(path, d, "value", d.get("value", ""), scope)
         problem = check_type(type_, value)
         if problem:
             raise VeiInputError(path, f"line {d.sourceline}", f"parameter {name} = {value!r} {problem}")
@@ -86,7 +86,7 @@ def _substitute(path: Path, el, scope: dict[str, str], types: dict[str, str]) ->
         _declare(path, local, scope, dict(types))
     for attr, value in el.attrib.items():
         if "$" in value and not (el.tag == "ParameterDeclaration" and attr == "name"):
-            el.set(attr, _resolve_value(path, el, attr, value, scope))
+            el.set(attr, resolve_value(path, el, attr, value, scope))
     for child in el:
         if isinstance(child.tag, str) and child.tag != "ParameterDeclarations":
             _substitute(path, child, scope, types)
@@ -133,7 +133,7 @@ def load_scenario(path: str | Path, overrides: dict[str, str] | None = None) -> 
         scope, types = {}, {}
         for d in top.iterfind("ParameterDeclaration"):
             name = d.get("name")
-            value = fixed[name] if name in fixed else _resolve_value(path, d, "value", d.get("value", ""), scope)
+            value = fixed[name] if name in fixed else resolve_value(path, d, "value", d.get("value", ""), scope)
             scope[name], types[name] = value, d.get("parameterType", "string")
     _substitute(path, root, scope, types)
 
