@@ -51,3 +51,19 @@ def test_batch_trajectories_equal_vei_run(compiled):
 def test_other_structures_are_refused():
     with pytest.raises(NotBatchable):
         BatchScenario(DATA / "following_brake.xosc")
+
+
+def test_batch_metrics_equal_vei_run_metrics(compiled):
+    from vei_scenario.batch import batch_pair
+    from vei_scenario.metrics import PairSeries, compute_metrics, compute_metrics_batch
+
+    xosc = compiled["case_study"].written[0]
+    variants = [
+        {"TimeShift": ts, "RiderType": rt, "CapEnabled": cap}
+        for ts in ("0", "2.2")
+        for rt in ("replay", "aggressive")
+        for cap in ("false", "true")
+    ]
+    rows = compute_metrics_batch(batch_pair(BatchScenario(xosc).run(variants)))
+    for v, row in zip(variants, rows):
+        assert row == compute_metrics(PairSeries.from_run(run_scenario(xosc, v))), v

@@ -125,6 +125,26 @@ class BatchResult:
     widths: list[float]
 
 
+def batch_pair(result: BatchResult):
+    """The ego and the threat of every variant, as one batch :class:`PairSeries`."""
+    from vei_scenario.metrics.series import PairSeries, Track
+
+    def track(name: str) -> Track:
+        k = result.names.index(name)
+        return Track(
+            name,
+            result.lengths[k],
+            result.widths[k],
+            result.x[k],
+            result.y[k],
+            result.yaw[k],
+            result.speed[k],
+            result.accel[k],
+        )
+
+    return PairSeries(result.t, track(result.ego), track(result.threat))
+
+
 class BatchScenario:
     """The vei-compiled scenario, ready to run for arrays of parameter values."""
 

@@ -1,7 +1,9 @@
-"""The metrics. Each: ``metric(pair, cfg) -> value``; formula and source in its docstring.
+"""The metrics. Each: ``metric(pair, cfg) -> array``; formula and source in its docstring.
 
-Time-integrated values use the run's fixed step. Infinite or undefined values are returned as
-``None`` so that metrics.json stays valid JSON.
+A metric reduces over the last (time) axis and keeps any leading axes, so the same code scores one
+``vei run`` (arrays of shape (T,)) and a batch of variants (shape (V, T)). Values are raw here;
+:func:`to_python` rounds them and turns undefined values (NaN, inf) into ``None``, the same way for
+both paths. Time-integrated values use the run's fixed step.
 """
 
 from __future__ import annotations
@@ -14,82 +16,75 @@ import shapely
 from vei_scenario.metrics.series import MetricConfig, PairSeries
 from vei_scenario.models.boxes import box_corners
 
-
-def _finite_or_none(v: float) -> float | None:
-    return float(v) if math.isfinite(v) else None
+ZONES = ("safe", "attention", "alert", "collision")
 
 
-def _r(v: float | None, digits: int = 4) -> float | None:
-    return None if v is None else round(float(v), digits)
-
-
-def collision(p: PairSeries, cfg: MetricConfig) -> bool:
+def collision(p: PairSeries, cfg: MetricConfig) -> np.ndarray:
     """Whether the oriented bounding boxes intersected at any step (separating-axis test)."""
-    return bool(p.contact.any())
+    return p.contact.any(axis=-1)
 
 
-def collision_time_s(p: PairSeries, cfg: MetricConfig) -> float | None:
+def collision_time_s(p: PairSeries, cfg: MetricConfig) -> np.ndarray:
     """Time of the first contact of the two boxes (s), or None."""
-    idx = np.nonzero(p.contact)[0]
-    return _r(p.t[idx[0]], 3) if idx.size else None
+    first = np.argmax(p.contact, axis=-1)
+    return np.where(p.contact.any(axis=-1), p.t[first], np.nan)
 
 
-def collision_entities(p: PairSeries, cfg: MetricConfig) -> list[str]:
-    """The two entities of the contact, or an empty list."""
-    return [p.ego.name, p.other.name] if p.contact.any() else []
+def collision_entities(p: PairSeries, cfg: MetricConfig) -> np.ndarray:
+    """The two entities of the contact, or an empty list (a flag here; names in :func:`to_python`)."""
+    return p.contact.any(axis=-1)
 
 
-def min_gap_m(p: PairSeries, cfg: MetricConfig) -> float:
+def min_gap_m(p: PairSeries, cfg: MetricConfig) -> np.ndarray:
     """Minimum shortest distance between the two boxes (m); 0 on contact."""
-    return _r(p.gap.min())
+    return p.gap.min(axis=-1)
 
 
-def min_ttc_s(p: PairSeries, cfg: MetricConfig) -> float | None:
+def min_ttc_s(p: PairSeries, cfg: MetricConfig) -> np.ndarray:
     """Minimum 2-D time to collision (s): the time until the oriented boxes first touch if both keep
     their current velocity, solved exactly on the four separating axes. Correct for crossing paths,
     not only for same-direction traffic (Hayward 1972 defines TTC; the 2-D form follows e.g. Ward et
     al. 2015). 0 on contact; None when the boxes never approach to contact."""
-    return _r(_finite_or_none(p.ttc_2d.min()))
+    return p.ttc_2d.min(axis=-1)
 
 
-def min_ttc_approx_s(p: PairSeries, cfg: MetricConfig) -> float | None:
-    """Minimum of the seed paper's approximation TTC ≈ gap / v_ego (s)."""
-    return _r(_finite_or_none(p.ttc_approx.min()))
+def min_ttc_approx_s(p: PairSeries, cfg: MetricConfig) -> np.ndarray:
+    """Minimum of the seed paper's approximation TTC ≈ gap / v_ego (s), gap to the other road user
+    ahead in the ego's lane band; None when nothing is ever ahead."""
+    return p.ttc_approx.min(axis=-1)
 
 
 def _zone_times(p: PairSeries, cfg: MetricConfig) -> np.ndarray:
     z = p.zones(cfg)
-    return np.array([(z == k).sum() for k in range(4)]) * p.dt
+    return np.stack([(z == k).sum(axis=-1) for k in range(4)]) * p.dt
 
 
-def ttc_zones_s(p: PairSeries, cfg: MetricConfig) -> dict[str, float]:
+def ttc_zones_s(p: PairSeries, cfg: MetricConfig) -> dict[str, np.ndarray]:
     """Time spent in each TTC zone (s) (the seed method): safe TTC ≥ 3 s, attention 2–3 s, alert
     < 2 s, collision while the boxes touch; thresholds in ``MetricConfig``."""
-    safe, att, alert, coll = _zone_times(p, cfg)
-    return {"safe": _r(safe, 3), "attention": _r(att, 3), "alert": _r(alert, 3), "collision": _r(coll, 3)}
+    return dict(zip(ZONES, _zone_times(p, cfg)))
 
 
-def safety_index(p: PairSeries, cfg: MetricConfig) -> float:
+def safety_index(p: PairSeries, cfg: MetricConfig) -> np.ndarray:
     """S = (T_safe + T_attention) / T_total, and S = 0 if a collision occurs (the seed method)."""
-    if p.contact.any():
-        return 0.0
     times = _zone_times(p, cfg)
-    total = times.sum()
-    return _r((times[0] + times[1]) / total) if total > 0 else 1.0
+    total = times.sum(axis=0)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        s = np.where(total > 0, (times[0] + times[1]) / total, 1.0)
+    return np.where(p.contact.any(axis=-1), 0.0, s)
 
 
-def act_min_s(p: PairSeries, cfg: MetricConfig) -> float | None:
+def act_min_s(p: PairSeries, cfg: MetricConfig) -> np.ndarray:
     """Minimum Anticipated Collision Time (s): ACT = δ / (dδ/dt closing), δ the shortest distance
     between the two boxes and its closing rate (Venthuruthiyil & Chunchu 2022). 0 on contact; None
     when the boxes never close in."""
     rate = p.closing_rate
     with np.errstate(divide="ignore", invalid="ignore"):
         act = np.where(rate > 1e-6, p.gap / rate, np.inf)
-    act = np.where(p.contact, 0.0, act)
-    return _r(_finite_or_none(act.min()))
+    return np.where(p.contact, 0.0, act).min(axis=-1)
 
 
-def ei_max_mps(p: PairSeries, cfg: MetricConfig) -> float:
+def ei_max_mps(p: PairSeries, cfg: MetricConfig) -> np.ndarray:
     """Maximum Emergency Index (m/s): EI = InDepth / TTC2D (Cheng et al. 2025). InDepth = D_safe − MFD:
     how deep the two safety regions would intrude into each other on the current relative course,
     MFD the closest-approach distance of the centres under constant relative velocity, D_safe the sum
@@ -105,27 +100,23 @@ def ei_max_mps(p: PairSeries, cfg: MetricConfig) -> float:
         in_depth = np.where(closing, d_safe - mfd, 0.0)
         ttc = np.maximum(p.ttc_2d, p.dt)
         ei = np.where((in_depth > 0) & np.isfinite(p.ttc_2d), in_depth / ttc, 0.0)
-    return _r(float(ei.max()) if ei.size else 0.0)
+    return ei.max(axis=-1)
 
 
-def drac_max_mps2(p: PairSeries, cfg: MetricConfig) -> float:
+def drac_max_mps2(p: PairSeries, cfg: MetricConfig) -> np.ndarray:
     """Maximum Deceleration Rate to Avoid a Crash (m/s²): DRAC = v_c² / (2 δ), v_c the closing rate of
     the box gap δ (Almqvist et al. 1991, with the gap between boxes instead of bumper distance)."""
     rate, gap = p.closing_rate, p.gap
     with np.errstate(divide="ignore", invalid="ignore"):
         drac = np.where((rate > 0) & (gap > 1e-3), rate * rate / (2 * gap), 0.0)
-    return _r(float(drac.max()) if drac.size else 0.0)
+    return drac.max(axis=-1)
 
 
 #: Paths meeting at less than this angle (deg) are following or merging, not crossing: no PET.
 PET_MIN_CROSSING_ANGLE_DEG = 20.0
 
 
-def pet_s(p: PairSeries, cfg: MetricConfig) -> float | None:
-    """Post-Encroachment Time (s) for crossing conflicts (Allen et al. 1978): the time between the
-    first road user leaving the conflict area and the second entering it. The conflict area is where
-    the areas swept by the two boxes overlap. 0 when both occupy it at once; None without a conflict
-    area or when the paths meet at less than 20° (following traffic, for which PET is undefined)."""
+def _pet_one(p: PairSeries) -> float:
     e, o = p.ego, p.other
     step = max(1, int(round(0.05 / p.dt))) if p.dt > 0 else 1
     idx = np.arange(0, p.t.size, step)
@@ -134,53 +125,62 @@ def pet_s(p: PairSeries, cfg: MetricConfig) -> float | None:
     pe, po = shapely.polygons(ce), shapely.polygons(co)
     area = shapely.intersection(shapely.union_all(pe), shapely.union_all(po))
     if area.is_empty or area.area < 1e-6:
-        return None
+        return math.nan
     shapely.prepare(area)
     in_e, in_o = shapely.intersects(area, pe), shapely.intersects(area, po)
     te, to = p.t[idx][in_e], p.t[idx][in_o]
     if te.size == 0 or to.size == 0:
-        return None
+        return math.nan
     he = np.angle(np.mean(np.exp(1j * e.yaw[idx][in_e])))
     ho = np.angle(np.mean(np.exp(1j * o.yaw[idx][in_o])))
     crossing = abs(np.degrees(np.angle(np.exp(1j * (he - ho)))))
     if min(crossing, 180.0 - crossing) < PET_MIN_CROSSING_ANGLE_DEG:
-        return None
+        return math.nan
     if te[0] <= to[0]:
         first_exit, second_entry = te[-1], to[0]
     else:
         first_exit, second_entry = to[-1], te[0]
-    return _r(max(0.0, second_entry - first_exit), 3)
+    return max(0.0, float(second_entry - first_exit))
 
 
-def peak_decel_mps2(p: PairSeries, cfg: MetricConfig) -> float:
+def pet_s(p: PairSeries, cfg: MetricConfig) -> np.ndarray:
+    """Post-Encroachment Time (s) for crossing conflicts (Allen et al. 1978): the time between the
+    first road user leaving the conflict area and the second entering it. The conflict area is where
+    the areas swept by the two boxes overlap. 0 when both occupy it at once; None without a conflict
+    area or when the paths meet at less than 20° (following traffic, for which PET is undefined)."""
+    if p.gap.ndim == 1:
+        return np.array(_pet_one(p))
+    return np.array([_pet_one(p.variant(i)) for i in range(p.gap.shape[0])])
+
+
+def peak_decel_mps2(p: PairSeries, cfg: MetricConfig) -> np.ndarray:
     """Largest deceleration of the ego (m/s², positive)."""
-    return _r(max(0.0, -float(p.ego.accel.min())))
+    return np.maximum(0.0, -p.ego.accel.min(axis=-1))
 
 
-def max_jerk_mps3(p: PairSeries, cfg: MetricConfig) -> float:
+def _jerk(p: PairSeries) -> np.ndarray:
+    return np.gradient(p.ego.accel, p.t, axis=-1) if p.t.size > 1 else np.zeros_like(p.ego.accel)
+
+
+def max_jerk_mps3(p: PairSeries, cfg: MetricConfig) -> np.ndarray:
     """Largest absolute jerk of the ego (m/s³), from its acceleration by finite differences."""
-    if p.t.size < 2:
-        return 0.0
-    return _r(float(np.abs(np.gradient(p.ego.accel, p.t)).max()))
+    return np.abs(_jerk(p)).max(axis=-1)
 
 
-def comfort_score(p: PairSeries, cfg: MetricConfig) -> float:
+def comfort_score(p: PairSeries, cfg: MetricConfig) -> np.ndarray:
     """Share of the run in which the ego stays within comfortable limits, |a| ≤ 2 m/s² and |jerk| ≤
     2 m/s³ (1 = always; thresholds in ``MetricConfig``). Comfort limits of this order are common in
     ride-comfort studies (e.g. Bae et al. 2020 for automated vehicles); LinguaSim reports comfort as a
     criticality companion in the same spirit."""
-    if p.t.size < 2:
-        return 1.0
-    jerk = np.gradient(p.ego.accel, p.t)
-    ok = (np.abs(p.ego.accel) <= cfg.comfort_accel_mps2 + 1e-9) & (np.abs(jerk) <= cfg.comfort_jerk_mps3 + 1e-9)
-    return _r(float(ok.mean()))
+    ok = (np.abs(p.ego.accel) <= cfg.comfort_accel_mps2 + 1e-9) & (np.abs(_jerk(p)) <= cfg.comfort_jerk_mps3 + 1e-9)
+    return ok.mean(axis=-1)
 
 
-def near_miss(p: PairSeries, cfg: MetricConfig) -> bool:
+def near_miss(p: PairSeries, cfg: MetricConfig) -> np.ndarray:
     """No contact, and the minimum 2-D TTC inside the near-miss band (default 0.5–1.5 s)."""
     lo, hi = cfg.near_miss_ttc_s
-    m = p.ttc_2d.min()
-    return bool(not p.contact.any() and lo <= m <= hi)
+    m = p.ttc_2d.min(axis=-1)
+    return ~p.contact.any(axis=-1) & (lo <= m) & (m <= hi)
 
 
 METRICS = {
@@ -201,3 +201,23 @@ METRICS = {
     "comfort_score": comfort_score,
     "near_miss": near_miss,
 }
+
+#: Decimal places of each reported value (bool metrics are reported as booleans).
+DIGITS = {"collision_time_s": 3, "ttc_zones_s": 3, "pet_s": 3}
+BOOLEAN = {"collision", "near_miss"}
+
+
+def _number(v: float, digits: int) -> float | None:
+    v = float(v)
+    return round(v, digits) if math.isfinite(v) else None
+
+
+def to_python(name: str, raw, index: tuple = (), names: tuple[str, str] = ("", "")):
+    """The JSON value of metric ``name`` for the variant at ``index`` of its raw array(s)."""
+    if name == "ttc_zones_s":
+        return {z: _number(raw[z][index], 3) for z in ZONES}
+    if name == "collision_entities":
+        return list(names) if bool(raw[index]) else []
+    if name in BOOLEAN:
+        return bool(raw[index])
+    return _number(raw[index], DIGITS.get(name, 4))

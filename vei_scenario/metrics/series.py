@@ -44,6 +44,8 @@ class Track:
 
 @dataclass
 class PairSeries:
+    """Two road users over time; arrays (T,) for one run or (V, T) for a batch of variants."""
+
     t: np.ndarray
     ego: Track
     other: Track
@@ -57,6 +59,14 @@ class PairSeries:
             tr = result.traces[n]
             tracks.append(Track(n, tr.length, tr.width, tr.x, tr.y, tr.yaw, tr.speed, tr.accel))
         return cls(result.t, *tracks)
+
+    def variant(self, i: int) -> PairSeries:
+        """The pair of one variant of a batch (arrays (V, T) → (T,))."""
+
+        def one(tr: Track) -> Track:
+            return Track(tr.name, tr.length, tr.width, tr.x[i], tr.y[i], tr.yaw[i], tr.speed[i], tr.accel[i])
+
+        return PairSeries(self.t, one(self.ego), one(self.other))
 
     def _boxes(self):
         e, o = self.ego, self.other
@@ -78,7 +88,7 @@ class PairSeries:
     @cached_property
     def closing_rate(self) -> np.ndarray:
         """−d(gap)/dt (m/s): positive while the boxes approach each other."""
-        return -np.gradient(self.gap, self.t) if self.t.size > 1 else np.zeros_like(self.gap)
+        return -np.gradient(self.gap, self.t, axis=-1) if self.t.size > 1 else np.zeros_like(self.gap)
 
     @cached_property
     def path_gap(self) -> np.ndarray:
