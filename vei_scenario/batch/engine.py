@@ -154,6 +154,7 @@ class BatchScenario:
         sim = Simulation(doc, dt)
         ctx = sim.ctx
         self.defaults = dict(doc.parameters)
+        self.types = dict(doc.parameter_types)
         self.names = list(ctx.entities)
         self.ego, self.threat = sim.ego, sim.threat
         if self.ego != self.names[0] or self.threat is None:
@@ -233,6 +234,20 @@ class BatchScenario:
         self.rider_raw = self._prop(self.threat, "riderType")
         self.enabled_raw = self._prop(self.ego, "enabled")
         self.cruise_raw = self._prop(self.ego, "cruiseSpeed")
+
+    def accepts(self, values: dict[str, str]) -> bool:
+        """Whether this variant's values are all valid (others go through the interpreter, which
+        reports exactly what is wrong with them)."""
+        from vei_scenario.interpreter.document import check_type
+        from vei_scenario.models.sfm import RIDER_TYPES
+
+        scope = {**self.defaults, **values}
+        if any(k not in self.types or check_type(self.types[k], v) for k, v in values.items()):
+            return False
+        try:
+            return self._resolved(self.rider_raw, scope) in RIDER_TYPES
+        except Exception:  # noqa: BLE001 - anything unresolvable is for the interpreter to report
+            return False
 
     def _prop(self, entity: str, name: str):
         for obj in self.raw.iterfind("Entities/ScenarioObject"):

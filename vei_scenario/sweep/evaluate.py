@@ -30,8 +30,37 @@ def evaluate_variant(scenario: str, values: dict[str, str], dt: float) -> dict:
         return {"status": "error", "error": f"{type(exc).__name__}: {exc}", "metrics": {}}
 
 
+_BATCH: dict[tuple[str, float], object] = {}
+
+
+def _batch_engine(scenario: str, dt: float):
+    """The batch engine for a vei-compiled scenario (cached per process), or None for other files."""
+    from vei_scenario.batch import BatchScenario, NotBatchable
+
+    key = (scenario, dt)
+    if key not in _BATCH:
+        try:
+            _BATCH[key] = BatchScenario(scenario, dt)
+        except (NotBatchable, VeiError):
+            _BATCH[key] = None
+    return _BATCH[key]
+
+
 def _chunk(scenario: str, chunk: list[dict[str, str]], dt: float) -> list[dict]:
-    return [evaluate_variant(scenario, v, dt) for v in chunk]
+    """Rows of a chunk: vei-compiled scenarios through the batch engine (rows identical to ``vei run``,
+    see tests/test_batch_engine.py), everything else and invalid values through the interpreter."""
+    engine = _batch_engine(scenario, dt)
+    rows: list[dict | None] = [None] * len(chunk)
+    if engine is not None:
+        from vei_scenario.batch import batch_pair
+        from vei_scenario.metrics import compute_metrics_batch
+
+        ok = [i for i, v in enumerate(chunk) if engine.accepts(v)]
+        if ok:
+            metrics = compute_metrics_batch(batch_pair(engine.run([chunk[i] for i in ok])), MetricConfig())
+            for i, m in zip(ok, metrics):
+                rows[i] = {"status": "ok", "error": "", "metrics": m}
+    return [r if r is not None else evaluate_variant(scenario, v, dt) for r, v in zip(rows, chunk)]
 
 
 def _chunks(variants: list[dict[str, str]], size: int) -> list[list[dict[str, str]]]:
@@ -46,7 +75,7 @@ def evaluate_local(
     progress: Callable[[int], None] | None = None,
 ) -> list[dict]:
     workers = workers or os.cpu_count() or 1
-    size = max(1, min(16, len(variants) // (4 * workers) or 1))
+    size = max(1, min(256, -(-len(variants) // workers)))
     chunks = _chunks(variants, size)
     out: list[dict] = []
     if workers == 1 or len(chunks) == 1:
@@ -95,7 +124,7 @@ def evaluate_dask(
         )
         client = Client(cluster)
     try:
-        chunks = _chunks(variants, max(1, min(16, len(variants) // 32 or 1)))
+        chunks = _chunks(variants, max(1, min(256, len(variants) // 8 or 1)))
         futures = [client.submit(_chunk, scenario, c, dt, pure=False) for c in chunks]
         index = {f.key: i for i, f in enumerate(futures)}
         results: list[list[dict] | None] = [None] * len(futures)
