@@ -65,24 +65,16 @@ class PathArrays:
         ds = self.s[i + 1] - self.s[i]
         with np.errstate(divide="ignore", invalid="ignore"):
             f = np.where(ds <= 0, 0.0, (s - self.s[i]) / ds)
-        x, y, h = self._lerp(i, f)
-        lo, hi = s <= 0, s >= self.s[-1]
-        return (
-            np.where(lo, self.x[0], np.where(hi, self.x[-1], x)),
-            np.where(lo, self.y[0], np.where(hi, self.y[-1], y)),
-            np.where(lo, self.h[0], np.where(hi, self.h[-1], h)),
-        )
+        return self._held(self._lerp(i, f), s <= 0, s >= self.s[-1])
+
+    def _held(self, pose, before, after):
+        """Hold the first vertex before the path and the last one after it, as Polyline does."""
+        return tuple(np.where(before, v[0], np.where(after, v[-1], q)) for v, q in zip((self.x, self.y, self.h), pose))
 
     def at_time(self, t):
         ts = self.t
         i = np.clip(np.searchsorted(ts, t, side="right") - 1, 0, ts.size - 2)
-        x, y, h = self._lerp(i, (t - ts[i]) / (ts[i + 1] - ts[i]))
-        lo, hi = t <= ts[0], t >= ts[-1]
-        return (
-            np.where(lo, self.x[0], np.where(hi, self.x[-1], x)),
-            np.where(lo, self.y[0], np.where(hi, self.y[-1], y)),
-            np.where(lo, self.h[0], np.where(hi, self.h[-1], h)),
-        )
+        return self._held(self._lerp(i, (t - ts[i]) / (ts[i + 1] - ts[i])), t <= ts[0], t >= ts[-1])
 
     def s_at_time(self, t):
         ts = self.t
