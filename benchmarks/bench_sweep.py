@@ -56,8 +56,10 @@ def main() -> int:
         f"parallel/serial speed-up {serial * n / parallel:.2f}x"
     )
     print(f"peak resident memory of one process: {peak / 1024:.0f} MiB")
-    print("vei-compiled scenarios run through the batch engine; the per-variant metrics (PET with shapely, box "
-          "distances over the whole run) dominate and keep the 10 s target out of reach")
+    print(
+        "vei-compiled scenarios run through the batch engine; the per-variant metrics (PET with shapely, box "
+        "distances over the whole run) dominate and keep the 10 s target out of reach"
+    )
     return 0
 
 

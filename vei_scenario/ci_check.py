@@ -32,6 +32,7 @@ from lxml import etree
 from vei_scenario.atomic_io import write_bytes_atomic
 from vei_scenario.errors import VeiError, VeiInputError
 from vei_scenario.metrics import METRICS
+from vei_scenario.safe_xml import parse_xml
 
 if sys.version_info >= (3, 11):
     import tomllib
@@ -166,7 +167,7 @@ def _validate(scenario: Path) -> list[str]:
     from vei_scenario.openscenario.validation import validate_files
 
     files = [scenario]
-    logic = etree.parse(str(scenario), etree.XMLParser(resolve_entities=False, no_network=True)).find(".//LogicFile")
+    logic = parse_xml(scenario).find(".//LogicFile")
     if logic is not None and logic.get("filepath") and (scenario.parent / logic.get("filepath")).is_file():
         files.append(scenario.parent / logic.get("filepath"))
     try:

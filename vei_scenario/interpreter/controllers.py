@@ -34,7 +34,6 @@ def advance_along(e: Entity, ds: float) -> None:
     else:
         e.x += ds * math.cos(e.yaw)
         e.y += ds * math.sin(e.yaw)
-    e.traveled += ds
 
 
 def threat_view(ego: Entity, threat: Entity, margin_m: float, ego_speed: float | None = None) -> ThreatView:
@@ -113,7 +112,6 @@ class SocialForceController(Controller):
         self.state = sfm_step(self.state, self.route, self.params, self.rider == "normal", ego.box(), dt)
         st = self.state
         speed = math.hypot(st.vx, st.vy)
-        e.traveled += math.hypot(st.x - e.x, st.y - e.y)
         e.x, e.y, e.speed = st.x, st.y, speed
         if speed > 0.05:
             e.yaw = math.atan2(st.vy, st.vx)
@@ -136,7 +134,6 @@ class CollisionAvoidanceController(Controller):
             raise ctx.error(el, "CollisionAvoidancePlanner needs a non-negative property cruiseSpeed")
         self.threat = props.get("threatEntity")
         self.state = CapState()
-        self.d_safe = math.nan
 
     def move(self, e: Entity, ctx, dt: float) -> bool:
         if not self.enabled:
@@ -148,7 +145,7 @@ class CollisionAvoidanceController(Controller):
         resume = (
             threat_view(e, threat, self.params.corridor_margin_m, self.cruise) if self.state.mode == BRAKE else None
         )
-        self.state, a_cmd, self.d_safe = cap_step(self.state, self.params, self.cruise, e.speed, view, dt, resume)
+        self.state, a_cmd, _ = cap_step(self.state, self.params, self.cruise, e.speed, view, dt, resume)
         lon = longitudinal_step(Longitudinal(0.0, e.speed, e.accel), a_cmd, e.limits, dt)
         advance_along(e, lon.s)
         e.speed, e.accel = lon.v, lon.a

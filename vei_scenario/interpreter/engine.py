@@ -8,8 +8,7 @@ Outputs (CSV, metrics, plots) are made from the returned :class:`RunResult` else
 
 from __future__ import annotations
 
-import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -51,7 +50,6 @@ class RunResult:
     parameters: dict[str, str]
     ego: str
     threat: str | None
-    signals: dict[str, np.ndarray] = field(default_factory=dict)  # e.g. the planner's d_safe
     end_reason: str = ""
     road_file: Path | None = None
 
@@ -280,7 +278,6 @@ class Simulation:
                 x, y, h = f.polyline.at_time(f.trajectory_time(t_next))
                 speed = (target - f.s) / dt
                 e.accel, e.speed = (speed - e.speed) / dt, speed
-                e.traveled += abs(target - f.s)
                 f.s = target
                 e.x, e.y, e.yaw = x, y, h
                 e.status = "replay"
@@ -307,8 +304,6 @@ class Simulation:
         names = list(ctx.entities)
         rec = {n: ([], [], [], [], [], [], []) for n in names}
         times: list[float] = []
-        d_safe: list[float] = []
-        cap = next((c for c in ctx.entities[self.ego].controllers.values() if hasattr(c, "d_safe")), None)
         collisions: list[tuple[float, str, str]] = []
 
         def record() -> None:
@@ -322,7 +317,6 @@ class Simulation:
                 r[3].append(e.speed)
                 r[4].append(e.accel)
                 r[5].append(e.status)
-            d_safe.append(cap.d_safe if cap is not None else math.nan)
 
         for a in self.init_actions:
             a.start(ctx)
@@ -360,7 +354,6 @@ class Simulation:
             dict(ctx.parameters),
             self.ego,
             self.threat,
-            {"d_safe": np.array(d_safe)},
             reason,
             self.doc.road_file,
         )

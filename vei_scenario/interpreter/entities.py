@@ -133,7 +133,6 @@ class Entity:
     controllers: dict = field(default_factory=dict)  # name -> runtime controller
     active: dict = field(default_factory=dict)  # domain ("lateral"/"longitudinal") -> controller
     status: str = "default"
-    traveled: float = 0.0
 
     def box(self) -> tuple[float, float, float, float, float]:
         """(centre x, centre y, yaw, length, width) of the bounding box."""

@@ -13,6 +13,8 @@ from dataclasses import asdict, dataclass
 
 import numpy as np
 
+from vei_scenario.models.properties import from_properties
+
 
 @dataclass(frozen=True)
 class CapParameters:
@@ -46,8 +48,7 @@ class CapParameters:
 
     @classmethod
     def from_properties(cls, props: dict[str, str]) -> CapParameters:
-        names = set(cls.__dataclass_fields__)
-        return cls(**{k: float(v) for k, v in props.items() if k in names})
+        return from_properties(cls, props)
 
 
 CRUISE, BRAKE = "cruise", "brake"

@@ -13,6 +13,8 @@ from dataclasses import asdict, dataclass
 
 import numpy as np
 
+from vei_scenario.models.properties import from_properties
+
 RIDER_TYPES = ("replay", "normal", "aggressive")
 
 
@@ -46,9 +48,7 @@ class SfmParameters:
 
     @classmethod
     def from_properties(cls, props: dict[str, str]) -> SfmParameters:
-        """Parameters from OpenSCENARIO controller properties (unknown names ignored, missing defaulted)."""
-        names = set(cls.__dataclass_fields__)
-        return cls(**{k: float(v) for k, v in props.items() if k in names})
+        return from_properties(cls, props)
 
 
 @dataclass

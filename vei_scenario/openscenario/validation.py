@@ -46,7 +46,7 @@ _EXPR_NAME = re.compile(r"\$([A-Za-z_][A-Za-z0-9_]*)")
 
 @cache
 def _schema(path: Path):
-    doc = etree.parse(str(path), etree.XMLParser(resolve_entities=False, no_network=True))
+    doc = etree.parse(str(path), safe_parser())
     return etree.XMLSchema(doc)
 
 

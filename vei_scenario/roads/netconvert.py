@@ -105,8 +105,3 @@ class NetconvertJob:
             self._proc.kill()
             self._proc.communicate()
         self._tmp.cleanup()
-
-
-def run_netconvert(osm_xml: bytes, proj_string: str, osm_source: Path, timeout_s: float = 120.0) -> bytes:
-    """OpenDRIVE bytes for ``osm_xml``; failures name the map file ``osm_source``."""
-    return NetconvertJob(osm_xml, proj_string, osm_source, timeout_s).result()
