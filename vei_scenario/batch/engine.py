@@ -17,12 +17,7 @@ from pathlib import Path
 
 import numpy as np
 
-from vei_scenario.interpreter.controllers import (
-    ROUTE_EXTENSION_M,
-    WAYPOINT_SPACING_M,
-    CollisionAvoidanceController,
-    SocialForceController,
-)
+from vei_scenario.interpreter.controllers import CollisionAvoidanceController, SocialForceController, rider_route
 from vei_scenario.interpreter.document import load_scenario, resolve_value
 from vei_scenario.interpreter.engine import Simulation
 from vei_scenario.interpreter.entities import Polyline
@@ -137,6 +132,19 @@ def batch_pair(result: BatchResult):
     return PairSeries(result.t, track(result.ego), track(result.threat))
 
 
+@dataclass
+class Resolved:
+    """Per-variant values of a batch (arrays over variants)."""
+
+    duration: float
+    rider: np.ndarray
+    sfm_on: np.ndarray
+    cap_on: np.ndarray
+    cruise_mps: np.ndarray
+    offsets: dict[str, np.ndarray]  # timing offset per timed entity
+    init_speed: dict[str, np.ndarray]
+
+
 class BatchScenario:
     """The vei-compiled scenario, ready to run for arrays of parameter values."""
 
@@ -219,6 +227,17 @@ class BatchScenario:
             self.activation[actor] = groups
         if set(self.activation) != {self.ego, self.threat}:
             raise NotBatchable("expected activations of the planner and of the rider")
+        starts = set()
+        for act in raw.iterfind("Storyboard/Story/Act"):
+            conds = act.findall("StartTrigger/ConditionGroup/Condition")
+            st = act.find("StartTrigger//SimulationTimeCondition")
+            if len(conds) != 1 or st is None or st.get("rule") != "greaterThan" or float(conds[0].get("delay", 0)):
+                raise NotBatchable("acts must start on one SimulationTime > t condition")
+            starts.add(float(resolve_value(self.path, st, "value", st.get("value"), self.defaults)))
+        if len(starts) != 1:
+            raise NotBatchable("all acts must start at the same time")
+        #: The entities keep their Init speed and heading until the first step that begins after this.
+        self.behaviour_start_s = starts.pop()
         stop = raw.find("Storyboard/StopTrigger//SimulationTimeCondition")
         if stop is None or stop.get("rule") != "greaterThan":
             raise NotBatchable("the storyboard must stop on SimulationTime > duration")
@@ -253,8 +272,8 @@ class BatchScenario:
         el, value = raw
         return resolve_value(self.path, el, "value", value, scope)
 
-    def run(self, variants: list[dict[str, str]]) -> BatchResult:
-        dt, V, E = self.dt, len(variants), len(self.names)
+    def resolve(self, variants: list[dict[str, str]]) -> Resolved:
+        """What the variants' parameter values decide, per variant."""
         scopes = [{**self.defaults, **v} for v in variants]
 
         def per_variant(raw) -> list[str]:
@@ -271,28 +290,40 @@ class BatchScenario:
         stop_values = {float(v) for v in per_variant(self.stop_raw)}
         if len(stop_values) != 1:
             raise NotBatchable("variants with different durations")
-        duration = stop_values.pop()
         rider = np.array(per_variant(self.rider_raw))
-        sfm_on = active(self.threat) & np.isin(rider, ("normal", "aggressive"))
+        return Resolved(
+            stop_values.pop(),
+            rider,
+            active(self.threat) & np.isin(rider, ("normal", "aggressive")),
+            active(self.ego) & (np.array(per_variant(self.enabled_raw)) == "true"),
+            np.array([float(v) for v in per_variant(self.cruise_raw)]),
+            {n: np.array([float(v) for v in per_variant(raw)]) for n, raw in self.offset_raw.items()},
+            {n: np.array([float(v) for v in per_variant(self.init_speed_raw[n])]) for n in self.names},
+        )
+
+    def run(self, variants: list[dict[str, str]]) -> BatchResult:
+        dt, V, E = self.dt, len(variants), len(self.names)
+        r = self.resolve(variants)
+        duration, rider, sfm_on, cap_on, cruise, offsets = (
+            r.duration,
+            r.rider,
+            r.sfm_on,
+            r.cap_on,
+            r.cruise_mps,
+            r.offsets,
+        )
         repulsive = rider == "normal"
-        cap_on = active(self.ego) & (np.array(per_variant(self.enabled_raw)) == "true")
-        cruise = np.array([float(v) for v in per_variant(self.cruise_raw)])
-        offsets = {n: np.array([float(v) for v in per_variant(raw)]) for n, raw in self.offset_raw.items()}
 
         x = np.empty((E, V))
         y, yaw, speed, accel = np.empty((E, V)), np.empty((E, V)), np.empty((E, V)), np.zeros((E, V))
         for k, n in enumerate(self.names):
             x[k], y[k], yaw[k] = self.init_pose[n]
-            speed[k] = [float(v) for v in per_variant(self.init_speed_raw[n])]
+            speed[k] = r.init_speed[n]
         fs = np.zeros((E, V))
         ti = self.names.index(self.threat)
         threat_path, threat_poly, _ = self.paths[self.threat]
         # The rider's route and start, as SocialForceController._prepare builds them.
-        n_wp = max(1, int(threat_poly.length // WAYPOINT_SPACING_M))
-        route = [threat_poly.at_s(threat_poly.length * (i + 1) / n_wp)[:2] for i in range(n_wp)]
-        ex_, ey_, eh_ = threat_poly.at_s(threat_poly.length)
-        route.append((ex_ + ROUTE_EXTENSION_M * math.cos(eh_), ey_ + ROUTE_EXTENSION_M * math.sin(eh_)))
-        route = np.array(route)
+        route = np.array(rider_route(threat_poly))
         t_start = threat_poly.ts[0] * 1.0 + offsets[self.threat]
         v_start = (threat_poly.s[1] - threat_poly.s[0]) / (threat_poly.ts[1] - threat_poly.ts[0])
         sfm = None  # (x, y, vx, vy, wp) once riding
@@ -341,7 +372,7 @@ class BatchScenario:
             if raw_stop and prev_raw_stop is False:
                 break
             prev_raw_stop = raw_stop
-            if not started and t > 0:
+            if not started and t > self.behaviour_start_s:
                 started = True
                 fs[0] = self.paths[self.ego][0].project(x[0], y[0])
             t_next = t + dt

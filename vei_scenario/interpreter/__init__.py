@@ -13,10 +13,15 @@ from vei_scenario.interpreter.engine import DEFAULT_MAX_TIME_S, RunResult, Simul
 
 
 def run_scenario(
-    path: str | Path, parameters: dict[str, str] | None = None, dt: float = 0.01, max_time_s: float = DEFAULT_MAX_TIME_S
+    path: str | Path,
+    parameters: dict[str, str] | None = None,
+    dt: float = 0.01,
+    max_time_s: float = DEFAULT_MAX_TIME_S,
+    coupling: str = "sequential",
 ) -> RunResult:
-    """Load ``path``, apply parameter overrides, run at the fixed step ``dt``."""
-    return Simulation(load_scenario(path, parameters), dt, max_time_s).run()
+    """Load ``path``, apply parameter overrides, run at the fixed step ``dt`` (``coupling``: see
+    :data:`~vei_scenario.interpreter.engine.COUPLINGS`)."""
+    return Simulation(load_scenario(path, parameters), dt, max_time_s, coupling).run()
 
 
 __all__ = ["RunResult", "Simulation", "load_scenario", "run_scenario"]

@@ -25,6 +25,16 @@ WAYPOINT_SPACING_M = 6.0
 ROUTE_EXTENSION_M = 100.0
 
 
+def rider_route(polyline: Polyline) -> list[tuple[float, float]]:
+    """The waypoints the rider steers at: every ~``WAYPOINT_SPACING_M`` along its recorded path, plus
+    one ``ROUTE_EXTENSION_M`` beyond its end along the last heading."""
+    n = max(1, int(polyline.length // WAYPOINT_SPACING_M))
+    route = [polyline.at_s(polyline.length * (i + 1) / n)[:2] for i in range(n)]
+    ex, ey, eh = polyline.at_s(polyline.length)
+    route.append((ex + ROUTE_EXTENSION_M * math.cos(eh), ey + ROUTE_EXTENSION_M * math.sin(eh)))
+    return route
+
+
 def advance_along(e: Entity, ds: float) -> None:
     """Move an entity ``ds`` metres along its followed path, or straight ahead without one."""
     f = e.follower
@@ -83,10 +93,7 @@ class SocialForceController(Controller):
             polyline = e.follower.polyline
         if polyline is None:
             raise ctx.error(self.el, f"SocialForceModel on {e.name}: no route (a 'route' property or a trajectory)")
-        n = max(1, int(polyline.length // WAYPOINT_SPACING_M))
-        self.route = [polyline.at_s(polyline.length * (i + 1) / n)[:2] for i in range(n)]
-        ex, ey, eh = polyline.at_s(polyline.length)
-        self.route.append((ex + ROUTE_EXTENSION_M * math.cos(eh), ey + ROUTE_EXTENSION_M * math.sin(eh)))
+        self.route = rider_route(polyline)
         f = e.follower
         if f is not None and f.timing is not None and polyline.timed:
             # Ride from the moment the recording starts, shifted like the replay would be.
@@ -107,7 +114,7 @@ class SocialForceController(Controller):
             return False
         if self.state is None:
             self.state = SfmState(e.x, e.y, self.v_start * math.cos(e.yaw), self.v_start * math.sin(e.yaw))
-        ego = ctx.entities[self.ego_name]
+        ego = ctx.observed(self.ego_name)
         old_speed = e.speed
         self.state = sfm_step(self.state, self.route, self.params, self.rider == "normal", ego.box(), dt)
         st = self.state
@@ -134,11 +141,12 @@ class CollisionAvoidanceController(Controller):
             raise ctx.error(el, "CollisionAvoidancePlanner needs a non-negative property cruiseSpeed")
         self.threat = props.get("threatEntity")
         self.state = CapState()
+        self.held_command = 0.0  # Jacobi coupling: the command computed in the previous step
 
     def move(self, e: Entity, ctx, dt: float) -> bool:
         if not self.enabled:
             return False
-        threat = ctx.entities.get(self.threat)
+        threat = ctx.observed(self.threat)
         if threat is None:
             raise ctx.error(self.el, f"CollisionAvoidancePlanner: threatEntity {self.threat!r} is not an entity")
         view = threat_view(e, threat, self.params.corridor_margin_m)
@@ -146,6 +154,8 @@ class CollisionAvoidanceController(Controller):
             threat_view(e, threat, self.params.corridor_margin_m, self.cruise) if self.state.mode == BRAKE else None
         )
         self.state, a_cmd, _ = cap_step(self.state, self.params, self.cruise, e.speed, view, dt, resume)
+        if ctx.snapshot is not None:  # Jacobi: the vehicle gets this command at the next step
+            a_cmd, self.held_command = self.held_command, a_cmd
         lon = longitudinal_step(Longitudinal(0.0, e.speed, e.accel), a_cmd, e.limits, dt)
         advance_along(e, lon.s)
         e.speed, e.accel = lon.v, lon.a

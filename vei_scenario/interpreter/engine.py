@@ -8,6 +8,7 @@ Outputs (CSV, metrics, plots) are made from the returned :class:`RunResult` else
 
 from __future__ import annotations
 
+import copy
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -23,6 +24,13 @@ from vei_scenario.models.vehicle import VehicleLimits
 
 #: Runs end here at the latest (s) when the storyboard has no stop trigger that fires.
 DEFAULT_MAX_TIME_S = 600.0
+
+#: How entities see each other within a step. ``sequential`` (default, Gauss-Seidel): entities move
+#: in declaration order and each sees those moved before it at their new state. ``jacobi``: every
+#: entity sees the others as they were at the start of the step and the planner's command reaches the
+#: vehicle one step later (it starts at 0) — what a co-simulation master does that steps all FMUs on
+#: the outputs of the previous communication point (libcosim's fixed-step algorithm).
+COUPLINGS = ("sequential", "jacobi")
 
 
 @dataclass
@@ -82,9 +90,17 @@ def _entity(obj, ctx) -> Entity:
 
 
 class Simulation:
-    def __init__(self, doc: ScenarioDocument, dt: float = 0.01, max_time_s: float = DEFAULT_MAX_TIME_S) -> None:
+    def __init__(
+        self,
+        doc: ScenarioDocument,
+        dt: float = 0.01,
+        max_time_s: float = DEFAULT_MAX_TIME_S,
+        coupling: str = "sequential",
+    ) -> None:
         root = doc.root
-        self.doc, self.dt, self.max_time = doc, dt, max_time_s
+        if coupling not in COUPLINGS:
+            raise ValueError(f"coupling must be one of {', '.join(COUPLINGS)}")
+        self.doc, self.dt, self.max_time, self.coupling = doc, dt, max_time_s, coupling
         self.ctx = Context(doc.path, 0.0, dt, 0, {}, dict(doc.parameters))
         ctx = self.ctx
         ctx.trajectories = {}
@@ -330,8 +346,11 @@ class Simulation:
             for a in self.init_actions:
                 if not a.done:
                     a.update(ctx)
+            if self.coupling == "jacobi":
+                ctx.snapshot = {n: copy.copy(e) for n, e in ctx.entities.items()}
             for n in names:
                 self._move(ctx.entities[n])
+            ctx.snapshot = None
             self._complete_finished()
             ctx.step += 1
             ctx.t = round(ctx.step * dt, 9)

@@ -31,6 +31,15 @@ class Context:
     elements: dict[tuple[str, str], Element] = field(default_factory=dict)
     colliding: set[frozenset[str]] = field(default_factory=set)
     trajectories: dict = field(default_factory=dict)  # Trajectory name -> Polyline
+    #: Under Jacobi coupling: every entity as it was at the start of the step (see engine.COUPLINGS).
+    snapshot: dict | None = None
+
+    def observed(self, name: str):
+        """Entity ``name`` as other entities' controllers see it now: its current state under
+        sequential coupling, its state at the start of the step under Jacobi coupling."""
+        if self.snapshot is not None:
+            return self.snapshot.get(name)
+        return self.entities.get(name)
 
     def error(self, el, reason: str) -> VeiInputError:
         return VeiInputError(self.path, f"line {el.sourceline}", reason)

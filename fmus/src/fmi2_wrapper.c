@@ -1,0 +1,296 @@
+/* fmi2_wrapper.c: the FMI 2.0 co-simulation interface over a vei model (see fmu_instance.h).
+ *
+ * Errors never abort the host: a refused call logs one message through the importer's logger with
+ * status fmi2Error and returns fmi2Error; the instance then refuses further calls until reset.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "fmi2Functions.h"
+#include "fmu_instance.h"
+
+typedef struct {
+    fmi2CallbackFunctions cb;
+    char name[128];
+    int logging_on;
+} Fmi2Data;
+
+static void log_error(Instance *m, const char *message) {
+    Fmi2Data *w = (Fmi2Data *)m->wrapper;
+    if (w->cb.logger) w->cb.logger(w->cb.componentEnvironment, w->name, fmi2Error, "logStatusError", "%s", message);
+}
+
+#define INST ((Instance *)c)
+#define CHECK_ALIVE(fn)                                                        \
+    do {                                                                       \
+        if (c == NULL) return fmi2Error;                                       \
+        if (INST->failed) {                                                    \
+            log_error(INST, fn ": the instance is in error state (reset it)"); \
+            return fmi2Error;                                                  \
+        }                                                                      \
+    } while (0)
+
+const char *fmi2GetTypesPlatform(void) { return fmi2TypesPlatform; }
+const char *fmi2GetVersion(void) { return fmi2Version; }
+
+fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean loggingOn, size_t n, const fmi2String categories[]) {
+    (void)n, (void)categories;
+    if (c == NULL) return fmi2Error;
+    ((Fmi2Data *)INST->wrapper)->logging_on = loggingOn;
+    return fmi2OK;
+}
+
+fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2String fmuGUID,
+                              fmi2String fmuResourceLocation, const fmi2CallbackFunctions *functions,
+                              fmi2Boolean visible, fmi2Boolean loggingOn) {
+    (void)fmuResourceLocation, (void)visible;
+    if (functions == NULL) return NULL;
+    const char *name = instanceName ? instanceName : "";
+    if (fmuType != fmi2CoSimulation || fmuGUID == NULL || strcmp(fmuGUID, MODEL_GUID) != 0) {
+        if (functions->logger)
+            functions->logger(functions->componentEnvironment, name, fmi2Error, "logStatusError",
+                              fmuType != fmi2CoSimulation ? "only co-simulation is supported"
+                                                          : "GUID does not match this binary (" MODEL_GUID ")");
+        return NULL;
+    }
+    Instance *m = (Instance *)calloc(1, sizeof(Instance));
+    Fmi2Data *w = (Fmi2Data *)calloc(1, sizeof(Fmi2Data));
+    if (m == NULL || w == NULL) {
+        free(m), free(w);
+        return NULL;
+    }
+    w->cb = *functions;
+    snprintf(w->name, sizeof w->name, "%s", name);
+    w->logging_on = loggingOn;
+    m->wrapper = w;
+    m->log_error = log_error;
+    vei_set_start_values(m);
+    return m;
+}
+
+void fmi2FreeInstance(fmi2Component c) {
+    if (c == NULL) return;
+    free(INST->wrapper);
+    free(c);
+}
+
+fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean toleranceDefined, fmi2Real tolerance,
+                               fmi2Real startTime, fmi2Boolean stopTimeDefined, fmi2Real stopTime) {
+    (void)toleranceDefined, (void)tolerance, (void)stopTimeDefined, (void)stopTime;
+    CHECK_ALIVE("fmi2SetupExperiment");
+    INST->time = startTime;
+    return fmi2OK;
+}
+
+fmi2Status fmi2EnterInitializationMode(fmi2Component c) {
+    CHECK_ALIVE("fmi2EnterInitializationMode");
+    return fmi2OK;
+}
+
+fmi2Status fmi2ExitInitializationMode(fmi2Component c) {
+    CHECK_ALIVE("fmi2ExitInitializationMode");
+    if (model_initialize(INST) != 0) return fmi2Error;
+    INST->initialized = 1;
+    return fmi2OK;
+}
+
+fmi2Status fmi2Terminate(fmi2Component c) { return c ? fmi2OK : fmi2Error; }
+
+fmi2Status fmi2Reset(fmi2Component c) {
+    if (c == NULL) return fmi2Error;
+    vei_set_start_values(INST);
+    return fmi2OK;
+}
+
+/* ---- getters and setters ------------------------------------------------------------------- */
+#define RANGE_CHECK(fn, vr, count)                                                         \
+    if ((vr) >= (count)) {                                                                 \
+        vei_fail(INST, fn ": value reference %u is not a variable of this type", (unsigned)(vr)); \
+        return fmi2Error;                                                                  \
+    }
+
+fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Real value[]) {
+    CHECK_ALIVE("fmi2GetReal");
+    for (size_t k = 0; k < nvr; k++) {
+        RANGE_CHECK("fmi2GetReal", vr[k], N_REAL);
+        value[k] = INST->r[vr[k]];
+    }
+    return fmi2OK;
+}
+
+fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Integer value[]) {
+    CHECK_ALIVE("fmi2GetInteger");
+    for (size_t k = 0; k < nvr; k++) {
+        RANGE_CHECK("fmi2GetInteger", vr[k], N_INTEGER);
+        value[k] = INST->i[vr[k]];
+    }
+    return fmi2OK;
+}
+
+fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Boolean value[]) {
+    CHECK_ALIVE("fmi2GetBoolean");
+    for (size_t k = 0; k < nvr; k++) {
+        RANGE_CHECK("fmi2GetBoolean", vr[k], N_BOOLEAN);
+        value[k] = INST->b[vr[k]] ? fmi2True : fmi2False;
+    }
+    return fmi2OK;
+}
+
+fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2String value[]) {
+    CHECK_ALIVE("fmi2GetString");
+    for (size_t k = 0; k < nvr; k++) {
+        RANGE_CHECK("fmi2GetString", vr[k], N_STRING);
+        value[k] = INST->s[vr[k]];
+    }
+    return fmi2OK;
+}
+
+#define SETTABLE_CHECK(fn, causality_table, vr)                                                      \
+    if (!vei_settable(INST, causality_table[vr])) {                                                  \
+        vei_fail(INST, fn ": value reference %u cannot be set now (%s)", (unsigned)(vr),             \
+                 causality_table[vr] == 'o' ? "an output" : "a fixed parameter after initialization"); \
+        return fmi2Error;                                                                            \
+    }
+
+fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Real value[]) {
+    CHECK_ALIVE("fmi2SetReal");
+    for (size_t k = 0; k < nvr; k++) {
+        RANGE_CHECK("fmi2SetReal", vr[k], N_REAL);
+        SETTABLE_CHECK("fmi2SetReal", REAL_CAUSALITY, vr[k]);
+        if (!isfinite(value[k])) {
+            vei_fail(INST, "fmi2SetReal: %s = %g is not a finite number", real_name(vr[k]), value[k]);
+            return fmi2Error;
+        }
+        INST->r[vr[k]] = value[k];
+    }
+    return fmi2OK;
+}
+
+fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Integer value[]) {
+    CHECK_ALIVE("fmi2SetInteger");
+    for (size_t k = 0; k < nvr; k++) {
+        RANGE_CHECK("fmi2SetInteger", vr[k], N_INTEGER);
+        SETTABLE_CHECK("fmi2SetInteger", INTEGER_CAUSALITY, vr[k]);
+        INST->i[vr[k]] = value[k];
+    }
+    return fmi2OK;
+}
+
+fmi2Status fmi2SetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Boolean value[]) {
+    CHECK_ALIVE("fmi2SetBoolean");
+    for (size_t k = 0; k < nvr; k++) {
+        RANGE_CHECK("fmi2SetBoolean", vr[k], N_BOOLEAN);
+        SETTABLE_CHECK("fmi2SetBoolean", BOOLEAN_CAUSALITY, vr[k]);
+        INST->b[vr[k]] = value[k] != fmi2False;
+    }
+    return fmi2OK;
+}
+
+fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2String value[]) {
+    CHECK_ALIVE("fmi2SetString");
+    for (size_t k = 0; k < nvr; k++) {
+        RANGE_CHECK("fmi2SetString", vr[k], N_STRING);
+        SETTABLE_CHECK("fmi2SetString", STRING_CAUSALITY, vr[k]);
+        if (value[k] == NULL || strlen(value[k]) >= VEI_STRING_CAPACITY) {
+            vei_fail(INST, "fmi2SetString: value reference %u: NULL or longer than %d characters", (unsigned)vr[k],
+                     VEI_STRING_CAPACITY - 1);
+            return fmi2Error;
+        }
+        strcpy(INST->s[vr[k]], value[k]);
+    }
+    return fmi2OK;
+}
+
+/* ---- co-simulation ------------------------------------------------------------------------- */
+fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint, fmi2Real communicationStepSize,
+                      fmi2Boolean noSetFMUStatePriorToCurrentPoint) {
+    (void)noSetFMUStatePriorToCurrentPoint;
+    CHECK_ALIVE("fmi2DoStep");
+    if (!INST->initialized) {
+        vei_fail(INST, "fmi2DoStep: called before fmi2ExitInitializationMode");
+        return fmi2Error;
+    }
+    if (!(communicationStepSize > 0) || !isfinite(currentCommunicationPoint)) {
+        vei_fail(INST, "fmi2DoStep: the step size must be positive (got %g)", communicationStepSize);
+        return fmi2Error;
+    }
+    if (model_do_step(INST, currentCommunicationPoint, communicationStepSize) != 0) return fmi2Error;
+    INST->time = currentCommunicationPoint + communicationStepSize;
+    return fmi2OK;
+}
+
+fmi2Status fmi2CancelStep(fmi2Component c) { return c ? fmi2Error : fmi2Error; }
+
+fmi2Status fmi2GetStatus(fmi2Component c, const fmi2StatusKind s, fmi2Status *value) {
+    (void)c, (void)s, (void)value;
+    return fmi2Discard;
+}
+fmi2Status fmi2GetRealStatus(fmi2Component c, const fmi2StatusKind s, fmi2Real *value) {
+    if (c == NULL || s != fmi2LastSuccessfulTime) return fmi2Discard;
+    *value = INST->time;
+    return fmi2OK;
+}
+fmi2Status fmi2GetIntegerStatus(fmi2Component c, const fmi2StatusKind s, fmi2Integer *value) {
+    (void)c, (void)s, (void)value;
+    return fmi2Discard;
+}
+fmi2Status fmi2GetBooleanStatus(fmi2Component c, const fmi2StatusKind s, fmi2Boolean *value) {
+    (void)c, (void)s, (void)value;
+    return fmi2Discard;
+}
+fmi2Status fmi2GetStringStatus(fmi2Component c, const fmi2StatusKind s, fmi2String *value) {
+    (void)c, (void)s, (void)value;
+    return fmi2Discard;
+}
+
+/* ---- optional capabilities this FMU does not declare (canGetAndSetFMUstate etc. are false) ---- */
+static fmi2Status unsupported(fmi2Component c, const char *fn) {
+    if (c != NULL) {
+        char msg[128];
+        snprintf(msg, sizeof msg, "%s is not supported by this FMU", fn);
+        log_error(INST, msg);
+    }
+    return fmi2Error;
+}
+fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate *s) {
+    (void)s;
+    return unsupported(c, "fmi2GetFMUstate");
+}
+fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate s) {
+    (void)s;
+    return unsupported(c, "fmi2SetFMUstate");
+}
+fmi2Status fmi2FreeFMUstate(fmi2Component c, fmi2FMUstate *s) {
+    (void)s;
+    return unsupported(c, "fmi2FreeFMUstate");
+}
+fmi2Status fmi2SerializedFMUstateSize(fmi2Component c, fmi2FMUstate s, size_t *n) {
+    (void)s, (void)n;
+    return unsupported(c, "fmi2SerializedFMUstateSize");
+}
+fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate s, fmi2Byte b[], size_t n) {
+    (void)s, (void)b, (void)n;
+    return unsupported(c, "fmi2SerializeFMUstate");
+}
+fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte b[], size_t n, fmi2FMUstate *s) {
+    (void)b, (void)n, (void)s;
+    return unsupported(c, "fmi2DeSerializeFMUstate");
+}
+fmi2Status fmi2GetDirectionalDerivative(fmi2Component c, const fmi2ValueReference u[], size_t nu,
+                                        const fmi2ValueReference z[], size_t nz, const fmi2Real dv[],
+                                        fmi2Real dz[]) {
+    (void)u, (void)nu, (void)z, (void)nz, (void)dv, (void)dz;
+    return unsupported(c, "fmi2GetDirectionalDerivative");
+}
+fmi2Status fmi2SetRealInputDerivatives(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                                       const fmi2Integer order[], const fmi2Real value[]) {
+    (void)vr, (void)nvr, (void)order, (void)value;
+    return unsupported(c, "fmi2SetRealInputDerivatives");
+}
+fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                                        const fmi2Integer order[], fmi2Real value[]) {
+    (void)vr, (void)nvr, (void)order, (void)value;
+    return unsupported(c, "fmi2GetRealOutputDerivatives");
+}

@@ -1,0 +1,280 @@
+/* vei_models.c: see vei_models.h. Every function follows its Python original line by line. */
+#include "vei_models.h"
+
+#include <math.h>
+#include <stddef.h>
+
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
+
+double vei_hypot(double x, double y) { return hypot(x, y); }
+
+double vei_wrap_angle(double a) {
+    /* Python's (a + pi) % (2 pi) - pi: the remainder takes the divisor's sign. */
+    const double two_pi = 2.0 * M_PI;
+    double r = fmod(a + M_PI, two_pi);
+    if (r != 0.0 && r < 0.0) r += two_pi;
+    return r - M_PI;
+}
+
+static double dmin(double a, double b) { return a < b ? a : b; }
+static double dmax(double a, double b) { return a > b ? a : b; }
+
+double vei_time_to_contact(const VeiBox *a, double vxa, double vya, const VeiBox *b, double vxb, double vyb) {
+    double dx = b->x - a->x, dy = b->y - a->y, wx = vxb - vxa, wy = vyb - vya;
+    double ca = cos(a->yaw), sa = sin(a->yaw), cb = cos(b->yaw), sb = sin(b->yaw);
+    double axes[4][2] = {{ca, sa}, {-sa, ca}, {cb, sb}, {-sb, cb}};
+    double enter = -INFINITY, leave = INFINITY;
+    for (int k = 0; k < 4; k++) {
+        double ux = axes[k][0], uy = axes[k][1];
+        double r = 0.5 * a->length * fabs(ux * ca + uy * sa) + 0.5 * a->width * fabs(-ux * sa + uy * ca);
+        r += 0.5 * b->length * fabs(ux * cb + uy * sb) + 0.5 * b->width * fabs(-ux * sb + uy * cb);
+        double p = dx * ux + dy * uy, q = wx * ux + wy * uy;
+        if (fabs(q) <= 1e-12) {
+            if (fabs(p) > r) return INFINITY;
+            continue;
+        }
+        double t1 = (-r - p) / q, t2 = (r - p) / q;
+        enter = dmax(enter, dmin(t1, t2));
+        leave = dmin(leave, dmax(t1, t2));
+    }
+    return (enter <= leave && leave >= 0) ? dmax(enter, 0.0) : INFINITY;
+}
+
+int vei_boxes_overlap(const VeiBox *a, const VeiBox *b) {
+    double dx = b->x - a->x, dy = b->y - a->y;
+    double ca = cos(a->yaw), sa = sin(a->yaw), cb = cos(b->yaw), sb = sin(b->yaw);
+    double axes[4][2] = {{ca, sa}, {-sa, ca}, {cb, sb}, {-sb, cb}};
+    for (int k = 0; k < 4; k++) {
+        double ux = axes[k][0], uy = axes[k][1];
+        double ra = 0.5 * a->length * fabs(ux * ca + uy * sa) + 0.5 * a->width * fabs(-ux * sa + uy * ca);
+        double rb = 0.5 * b->length * fabs(ux * cb + uy * sb) + 0.5 * b->width * fabs(-ux * sb + uy * cb);
+        if (fabs(dx * ux + dy * uy) > ra + rb) return 0;
+    }
+    return 1;
+}
+
+/* ---------------------------------------------------------------------------------------------- */
+static void closest_point_on_box(double px, double py, const VeiBox *b, double *qx, double *qy) {
+    double c = cos(b->yaw), s = sin(b->yaw);
+    double dx = px - b->x, dy = py - b->y;
+    double lx = dmax(-0.5 * b->length, dmin(0.5 * b->length, c * dx + s * dy));
+    double ly = dmax(-0.5 * b->width, dmin(0.5 * b->width, -s * dx + c * dy));
+    *qx = b->x + c * lx - s * ly;
+    *qy = b->y + s * lx + c * ly;
+}
+
+void vei_sfm_acceleration(const VeiSfmState *st, double dest_x, double dest_y, const VeiSfmParams *p,
+                          int repulsive, const VeiBox *ego, double *ax, double *ay) {
+    double ex = dest_x - st->x, ey = dest_y - st->y;
+    double scale = p->v0_mps / sqrt(ex * ex + ey * ey + p->sigma_m * p->sigma_m);
+    double k = p->mass_kg / p->tau_s;
+    double fx = k * (ex * scale - st->vx);
+    double fy = k * (ey * scale - st->vy);
+    if (repulsive && ego != NULL) {
+        double qx, qy;
+        closest_point_on_box(st->x, st->y, ego, &qx, &qy);
+        double nx = st->x - qx, ny = st->y - qy;
+        double d = hypot(nx, ny);
+        if (d > 1e-9) {
+            double mag = p->repulsion_n * exp(-d / p->repulsion_range_m);
+            fx += mag * nx / d;
+            fy += mag * ny / d;
+        } else { /* inside the ego box: push away from its centre */
+            nx = st->x - ego->x;
+            ny = st->y - ego->y;
+            double n = hypot(nx, ny);
+            if (n == 0.0) n = 1.0;
+            fx += p->repulsion_n * nx / n;
+            fy += p->repulsion_n * ny / n;
+        }
+    }
+    *ax = fx / p->mass_kg;
+    *ay = fy / p->mass_kg;
+}
+
+void vei_sfm_step(VeiSfmState *st, const double *route_x, const double *route_y, int n, const VeiSfmParams *p,
+                  int repulsive, const VeiBox *ego, double dt) {
+    int wp = st->waypoint;
+    while (wp < n - 1) {
+        double wx = route_x[wp], wy = route_y[wp], nx_ = route_x[wp + 1], ny_ = route_y[wp + 1];
+        int near = hypot(wx - st->x, wy - st->y) <= p->waypoint_radius_m;
+        int passed = (st->x - wx) * (nx_ - wx) + (st->y - wy) * (ny_ - wy) > 0;
+        if (near || passed)
+            wp += 1;
+        else
+            break;
+    }
+    double ax, ay;
+    vei_sfm_acceleration(st, route_x[wp], route_y[wp], p, repulsive, ego, &ax, &ay);
+    double speed = hypot(st->vx, st->vy);
+    if (speed > 1e-9) {
+        double ux = st->vx / speed, uy = st->vy / speed;
+        double a_long = ax * ux + ay * uy;
+        double a_lat_x = ax - a_long * ux, a_lat_y = ay - a_long * uy;
+        a_long = dmax(-p->max_decel_mps2, dmin(p->max_accel_mps2, a_long));
+        ax = a_long * ux + a_lat_x;
+        ay = a_long * uy + a_lat_y;
+    }
+    double a = hypot(ax, ay);
+    if (a > p->max_decel_mps2) {
+        ax = ax * p->max_decel_mps2 / a;
+        ay = ay * p->max_decel_mps2 / a;
+    }
+    double vx = st->vx + ax * dt, vy = st->vy + ay * dt;
+    double v = hypot(vx, vy);
+    if (v > p->max_speed_mps) {
+        vx = vx * p->max_speed_mps / v;
+        vy = vy * p->max_speed_mps / v;
+    }
+    st->x = st->x + 0.5 * (st->vx + vx) * dt;
+    st->y = st->y + 0.5 * (st->vy + vy) * dt;
+    st->vx = vx;
+    st->vy = vy;
+    st->waypoint = wp;
+}
+
+/* ---------------------------------------------------------------------------------------------- */
+double vei_cap_step(VeiCapState *st, const VeiCapParams *p, double cruise, double v, double ttc, double resume_ttc,
+                    double dt, double *d_safe) {
+    double ds = v * v / (2 * p->a_max_mps2) + v * p->t_h_s + p->d0_m;
+    *d_safe = ds;
+    int in_path = ttc <= p->horizon_s;
+    double gap = in_path ? v * ttc : INFINITY;
+    int brake = st->brake;
+    if (!brake && in_path && gap < ds)
+        brake = 1;
+    else if (brake && !(resume_ttc <= p->horizon_s))
+        brake = 0;
+    if (brake) {
+        double room = dmax(gap - p->d0_m, 0.05);
+        double need = isfinite(gap) ? v * v / (2 * room) : 0.0;
+        double a_cmd = v > 0 ? -dmin(p->a_max_mps2, dmax(need, p->max_cruise_decel_mps2)) : 0.0;
+        st->brake = 1;
+        st->has_prev = 0;
+        return a_cmd;
+    }
+    double error = cruise - v;
+    double deriv = st->has_prev ? (error - st->prev_error) / dt : 0.0;
+    double integral = st->integral + error * dt;
+    double a_raw = p->kp * error + p->ki * integral + p->kd * deriv;
+    double a_cmd = dmax(-p->max_cruise_decel_mps2, dmin(p->max_accel_mps2, a_raw));
+    if (a_cmd != a_raw) integral = st->integral; /* saturated: anti-windup */
+    st->brake = 0;
+    st->integral = integral;
+    st->prev_error = error;
+    st->has_prev = 1;
+    return a_cmd;
+}
+
+double vei_threat_time_to_conflict(const VeiBox *ego, double ego_speed, double margin, const VeiBox *threat,
+                                   double threat_vx, double threat_vy) {
+    double c = cos(ego->yaw), s = sin(ego->yaw);
+    VeiBox corridor = {ego->x + 0.5 * margin * c, ego->y + 0.5 * margin * s, ego->yaw, ego->length + margin,
+                       ego->width + 2 * margin};
+    return vei_time_to_contact(&corridor, ego_speed * c, ego_speed * s, threat, threat_vx, threat_vy);
+}
+
+/* ---------------------------------------------------------------------------------------------- */
+void vei_longitudinal_step(VeiLongitudinal *st, double a_cmd, const VeiVehicleLimits *lim, double dt) {
+    double target = dmax(-lim->max_decel_mps2, dmin(lim->max_accel_mps2, a_cmd));
+    double da = lim->jerk_max_mps3 * dt;
+    double a = dmax(st->a - da, dmin(st->a + da, target));
+    double v0 = st->v;
+    if (v0 <= 0.0 && a <= 0.0) {
+        st->v = 0.0;
+        st->a = 0.0;
+        return;
+    }
+    double v1 = v0 + a * dt;
+    if (v1 < 0.0) { /* comes to rest inside the step */
+        double t_stop = v0 / -a;
+        st->s = st->s + v0 * t_stop + 0.5 * a * t_stop * t_stop;
+        st->v = 0.0;
+        st->a = a;
+        return;
+    }
+    st->s = st->s + v0 * dt + 0.5 * a * dt * dt;
+    st->v = v1;
+    st->a = a;
+}
+
+/* ---------------------------------------------------------------------------------------------- */
+void vei_polyline_init(VeiPolyline *p) {
+    p->s[0] = 0.0;
+    for (int i = 1; i < p->n; i++) p->s[i] = p->s[i - 1] + hypot(p->x[i] - p->x[i - 1], p->y[i] - p->y[i - 1]);
+}
+
+double vei_polyline_length(const VeiPolyline *p) { return p->s[p->n - 1]; }
+
+static int bisect_right(const double *a, int n, double v) {
+    int lo = 0, hi = n;
+    while (lo < hi) {
+        int mid = (lo + hi) / 2;
+        if (v < a[mid])
+            hi = mid;
+        else
+            lo = mid + 1;
+    }
+    return lo;
+}
+
+static void lerp(const VeiPolyline *p, int i, double f, double *x, double *y, double *h) {
+    int j = i + 1 < p->n - 1 ? i + 1 : p->n - 1;
+    double h0 = p->h[i], h1 = p->h[j];
+    *x = p->x[i] + f * (p->x[j] - p->x[i]);
+    *y = p->y[i] + f * (p->y[j] - p->y[i]);
+    *h = vei_wrap_angle(h0 + f * vei_wrap_angle(h1 - h0));
+}
+
+void vei_polyline_at_s(const VeiPolyline *p, double s, double *x, double *y, double *h) {
+    if (s <= 0) {
+        *x = p->x[0], *y = p->y[0], *h = p->h[0];
+        return;
+    }
+    if (s >= p->s[p->n - 1]) {
+        *x = p->x[p->n - 1], *y = p->y[p->n - 1], *h = p->h[p->n - 1];
+        return;
+    }
+    int i = bisect_right(p->s, p->n, s) - 1;
+    double ds = p->s[i + 1] - p->s[i];
+    lerp(p, i, ds <= 0 ? 0.0 : (s - p->s[i]) / ds, x, y, h);
+}
+
+void vei_polyline_at_time(const VeiPolyline *p, double t, double *x, double *y, double *h) {
+    const double *ts = p->t;
+    if (t <= ts[0]) {
+        *x = p->x[0], *y = p->y[0], *h = p->h[0];
+        return;
+    }
+    if (t >= ts[p->n - 1]) {
+        *x = p->x[p->n - 1], *y = p->y[p->n - 1], *h = p->h[p->n - 1];
+        return;
+    }
+    int i = bisect_right(ts, p->n, t) - 1;
+    lerp(p, i, (t - ts[i]) / (ts[i + 1] - ts[i]), x, y, h);
+}
+
+double vei_polyline_s_at_time(const VeiPolyline *p, double t) {
+    const double *ts = p->t;
+    if (t <= ts[0]) return 0.0;
+    if (t >= ts[p->n - 1]) return p->s[p->n - 1];
+    int i = bisect_right(ts, p->n, t) - 1;
+    return p->s[i] + (t - ts[i]) / (ts[i + 1] - ts[i]) * (p->s[i + 1] - p->s[i]);
+}
+
+double vei_polyline_project(const VeiPolyline *p, double px, double py) {
+    double best = 0.0, best_d = INFINITY;
+    for (int i = 0; i < p->n - 1; i++) {
+        double ax = p->x[i], ay = p->y[i], bx = p->x[i + 1], by = p->y[i + 1];
+        double L2 = (bx - ax) * (bx - ax) + (by - ay) * (by - ay);
+        double f = L2 == 0 ? 0.0 : dmax(0.0, dmin(1.0, ((px - ax) * (bx - ax) + (py - ay) * (by - ay)) / L2));
+        double d = hypot(ax + f * (bx - ax) - px, ay + f * (by - ay) - py);
+        if (d < best_d - 1e-12) {
+            best = p->s[i] + f * (p->s[i + 1] - p->s[i]);
+            best_d = d;
+        }
+    }
+    return best;
+}

@@ -1,0 +1,74 @@
+/* vei_models.h: the numerical models of vei-scenario in C, for the FMUs.
+ *
+ * Each function mirrors a Python function of vei_scenario.models (or vei_scenario.interpreter) operation
+ * for operation, so that the FMUs reproduce `vei run`; tests/test_fmu_models.py compares them on
+ * 10 000 random states. Pure functions: no allocation, no I/O, no global state.
+ */
+#ifndef VEI_MODELS_H
+#define VEI_MODELS_H
+
+typedef struct { double x, y, yaw, length, width; } VeiBox;
+
+/* vei_scenario.models.boxes.time_to_contact_scalar: time until two boxes moving at constant velocity
+ * first touch; 0 when they overlap now, INFINITY when they never will. */
+double vei_time_to_contact(const VeiBox *a, double vxa, double vya, const VeiBox *b, double vxb, double vyb);
+
+/* vei_scenario.models.boxes.boxes_overlap_scalar */
+int vei_boxes_overlap(const VeiBox *a, const VeiBox *b);
+
+/* --- social force model (vei_scenario.models.sfm) --- */
+typedef struct {
+    double v0_mps, mass_kg, tau_s, sigma_m, repulsion_n, repulsion_range_m, waypoint_radius_m;
+    double max_speed_mps, max_accel_mps2, max_decel_mps2;
+} VeiSfmParams;
+
+typedef struct { double x, y, vx, vy; int waypoint; } VeiSfmState;
+
+void vei_sfm_acceleration(const VeiSfmState *st, double dest_x, double dest_y, const VeiSfmParams *p,
+                          int repulsive, const VeiBox *ego, double *ax, double *ay);
+/* One explicit step (sfm_step); route of n >= 1 waypoints; ego may be NULL. */
+void vei_sfm_step(VeiSfmState *st, const double *route_x, const double *route_y, int n, const VeiSfmParams *p,
+                  int repulsive, const VeiBox *ego, double dt);
+
+/* --- collision-avoidance planner (vei_scenario.models.cap) --- */
+typedef struct {
+    double a_max_mps2, t_h_s, d0_m, kp, ki, kd, max_accel_mps2, max_cruise_decel_mps2, corridor_margin_m,
+        horizon_s;
+} VeiCapParams;
+
+typedef struct { int brake; double integral; double prev_error; int has_prev; } VeiCapState;
+
+/* One planner step (cap_step): returns the acceleration command; *d_safe receives d_safe.
+ * ttc / resume_ttc: time to conflict (INFINITY: no conflict); resume_ttc is used only in BRAKE. */
+double vei_cap_step(VeiCapState *st, const VeiCapParams *p, double cruise, double v, double ttc, double resume_ttc,
+                    double dt, double *d_safe);
+
+/* The planner's view of the threat (interpreter.controllers.threat_view): the threat's box against
+ * the ego's path corridor, the ego moving at `ego_speed` along its heading. */
+double vei_threat_time_to_conflict(const VeiBox *ego, double ego_speed, double margin, const VeiBox *threat,
+                                   double threat_vx, double threat_vy);
+
+/* --- longitudinal vehicle (vei_scenario.models.vehicle) --- */
+typedef struct { double s, v, a; } VeiLongitudinal;
+typedef struct { double max_accel_mps2, max_decel_mps2, jerk_max_mps3; } VeiVehicleLimits;
+void vei_longitudinal_step(VeiLongitudinal *st, double a_cmd, const VeiVehicleLimits *lim, double dt);
+
+/* --- polylines (vei_scenario.interpreter.entities.Polyline) --- */
+typedef struct {
+    const double *x, *y, *h, *t; /* t may be NULL (untimed) */
+    double *s;                   /* cumulative arc length, filled by vei_polyline_init */
+    int n;
+} VeiPolyline;
+
+void vei_polyline_init(VeiPolyline *p);
+double vei_polyline_length(const VeiPolyline *p);
+void vei_polyline_at_s(const VeiPolyline *p, double s, double *x, double *y, double *h);
+void vei_polyline_at_time(const VeiPolyline *p, double t, double *x, double *y, double *h);
+double vei_polyline_s_at_time(const VeiPolyline *p, double t);
+/* Arc length of the closest point of the path (FollowTrajectory without timing starts there). */
+double vei_polyline_project(const VeiPolyline *p, double px, double py);
+
+double vei_wrap_angle(double a);
+double vei_hypot(double x, double y);
+
+#endif

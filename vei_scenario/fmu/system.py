@@ -1,0 +1,206 @@
+"""The closed loop of a vei-compiled scenario as FMU parameters and connections, and as an SSP 1.0
+package (``vei fmu system``).
+
+The loop: the ego vehicle FMU (its path, Init pose and speed), the planner FMU (the scenario's
+CollisionAvoidancePlanner properties and CapEnabled) and the e-scooter FMU (the threat's recorded
+track and TimeShift, its route, RiderType), connected as ``vei run`` couples the entities. Values are
+read through the batch engine's reading of the scenario, so a scenario it cannot run in batch (not of
+the structure ``vei compile`` writes) is refused with the reason.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from lxml import etree
+
+from vei_scenario.errors import VeiInputError
+from vei_scenario.fmu.packaging import zip_bytes
+from vei_scenario.fmu.variables import MAX_PATH, MAX_ROUTE, SPECS
+from vei_scenario.atomic_io import write_bytes_atomic
+
+#: (from component, output) -> [(to component, input)]: the couplings of vei run's step.
+CONNECTIONS = (
+    ("ego", "x", "cap", "ego_x"),
+    ("ego", "y", "cap", "ego_y"),
+    ("ego", "yaw", "cap", "ego_yaw"),
+    ("ego", "speed", "cap", "ego_speed"),
+    ("ego", "x", "sfm", "ego_x"),
+    ("ego", "y", "sfm", "ego_y"),
+    ("ego", "yaw", "sfm", "ego_yaw"),
+    ("sfm", "x", "cap", "threat_x"),
+    ("sfm", "y", "cap", "threat_y"),
+    ("sfm", "yaw", "cap", "threat_yaw"),
+    ("sfm", "speed", "cap", "threat_speed"),
+    ("cap", "a_cmd", "ego", "a_cmd"),
+)
+
+#: Step order of a sequential (Gauss-Seidel) master reproducing vei run's default coupling: the
+#: planner samples ego and threat at the start of the step, the ego moves with its command, the rider
+#: reacts to the ego's new position.
+SEQUENTIAL_ORDER = ("cap", "ego", "sfm")
+
+
+@dataclass
+class ClosedLoop:
+    """Parameter values per component (FMU variable name -> value) and the run's timing."""
+
+    parameters: dict[str, dict[str, float | int | bool | str]] = field(default_factory=dict)
+    dt: float = 0.01
+    stop_time: float = 25.0
+    entities: dict[str, str] = field(default_factory=dict)  # component -> scenario entity name
+
+    @property
+    def steps(self) -> int:
+        """Communication steps of vei run's run: it stops at the first step starting after the
+        storyboard's stop time."""
+        n = 0
+        while round(n * self.dt, 9) <= self.stop_time:
+            n += 1
+        return n
+
+
+def closed_loop(scenario: str | Path, values: dict[str, str] | None = None, dt: float = 0.01) -> ClosedLoop:
+    """The closed loop of ``scenario`` with parameter overrides ``values`` at step ``dt``."""
+    from vei_scenario.batch import BatchScenario, NotBatchable
+
+    try:
+        b = BatchScenario(scenario, dt)
+    except NotBatchable as exc:
+        raise VeiInputError(scenario, "", f"not a vei-compiled closed loop: {exc}") from None
+    if len(b.names) != 2:
+        raise VeiInputError(scenario, "", f"the FMU loop holds the ego and one scooter; the scenario has {b.names}")
+    r = b.resolve([values or {}])
+    ego, threat = b.names.index(b.ego), b.names.index(b.threat)
+    _, ego_poly, _ = b.paths[b.ego]
+    _, track, _ = b.paths[b.threat]
+    from vei_scenario.interpreter.controllers import rider_route
+
+    route = rider_route(track)
+    for what, n, cap in (("ego path", len(ego_poly.xs), MAX_PATH), ("scooter track", len(track.xs), MAX_PATH)):
+        if n > cap:
+            raise VeiInputError(scenario, "", f"the {what} has {n} vertices; the FMUs hold at most {cap}")
+    if len(route) > MAX_ROUTE:
+        raise VeiInputError(scenario, "", f"the route has {len(route)} waypoints; the FMU holds at most {MAX_ROUTE}")
+    start = b.behaviour_start_s
+
+    def arrays(prefix: str, seqs: dict[str, list[float]]) -> dict[str, float]:
+        return {f"{prefix}_{k}[{i + 1}]": float(v) for k, seq in seqs.items() for i, v in enumerate(seq)}
+
+    ex, ey, eyaw = b.init_pose[b.ego]
+    sx, sy, syaw = b.init_pose[b.threat]
+    cap_props = {k: float(v) for k, v in b.cap_params.properties().items()}
+    sfm_props = {k: float(v) for k, v in b.sfm_params.properties().items()}
+    rider = str(r.rider[0])
+    loop = ClosedLoop(dt=dt, stop_time=r.duration, entities={"ego": b.ego, "sfm": b.threat, "cap": b.ego})
+    loop.parameters["ego"] = {
+        "max_accel_mps2": b.limits.max_accel_mps2,
+        "max_decel_mps2": b.limits.max_decel_mps2,
+        "jerk_max_mps3": b.limits.jerk_max_mps3,
+        "x0": ex,
+        "y0": ey,
+        "yaw0": eyaw,
+        "speed0": float(r.init_speed[b.ego][0]),
+        "behaviour_start_s": start,
+        "path_n": len(ego_poly.xs),
+        **arrays("path", {"x": ego_poly.xs, "y": ego_poly.ys, "h": ego_poly.hs}),
+    }
+    loop.parameters["cap"] = {
+        **cap_props,
+        "enabled": bool(r.cap_on[0]),
+        "cruise_speed_mps": float(r.cruise_mps[0]),
+        "ego_length_m": b.length[ego],
+        "ego_width_m": b.width[ego],
+        "threat_length_m": b.length[threat],
+        "threat_width_m": b.width[threat],
+        "behaviour_start_s": start,
+    }
+    loop.parameters["sfm"] = {
+        **sfm_props,
+        # the rider rides only where the scenario activates it; otherwise it replays
+        "rider_type": rider if bool(r.sfm_on[0]) else "replay",
+        "length_m": b.length[threat],
+        "width_m": b.width[threat],
+        "ego_length_m": b.length[ego],
+        "ego_width_m": b.width[ego],
+        "x0": sx,
+        "y0": sy,
+        "yaw0": syaw,
+        "speed0": float(r.init_speed[b.threat][0]),
+        "behaviour_start_s": start,
+        "time_shift_s": float(r.offsets[b.threat][0]),
+        "track_n": len(track.xs),
+        **arrays("track", {"t": track.ts, "x": track.xs, "y": track.ys, "h": track.hs}),
+        "route_n": len(route),
+        **arrays("route", {"x": [p[0] for p in route], "y": [p[1] for p in route]}),
+    }
+    return loop
+
+
+_NS = {
+    "ssd": "http://ssp-standard.org/SSP1/SystemStructureDescription",
+    "ssc": "http://ssp-standard.org/SSP1/SystemStructureCommon",
+    "ssv": "http://ssp-standard.org/SSP1/SystemStructureParameterValues",
+}
+
+
+def _q(prefix: str, tag: str) -> str:
+    return f"{{{_NS[prefix]}}}{tag}"
+
+
+def system_structure(loop: ClosedLoop, name: str = "vei_closed_loop") -> bytes:
+    """SystemStructure.ssd (SSP 1.0): the three FMUs as components under ``resources/``, their
+    connectors, parameter values bound inline, the connections and the default experiment."""
+    root = etree.Element(_q("ssd", "SystemStructureDescription"), nsmap=_NS, version="1.0", name=name)
+    system = etree.SubElement(root, _q("ssd", "System"), name=name)
+    elements = etree.SubElement(system, _q("ssd", "Elements"))
+    for comp in ("ego", "cap", "sfm"):
+        spec = SPECS[comp]
+        el = etree.SubElement(
+            elements,
+            _q("ssd", "Component"),
+            name=comp,
+            type="application/x-fmu-sharedlibrary",
+            source=f"resources/{spec.identifier}.fmu",
+        )
+        connectors = etree.SubElement(el, _q("ssd", "Connectors"))
+        for v in spec.variables:
+            if v.causality in ("input", "output"):
+                c = etree.SubElement(connectors, _q("ssd", "Connector"), name=v.name, kind=v.causality)
+                etree.SubElement(c, _q("ssc", v.type))
+        bindings = etree.SubElement(el, _q("ssd", "ParameterBindings"))
+        binding = etree.SubElement(bindings, _q("ssd", "ParameterBinding"))
+        values = etree.SubElement(binding, _q("ssd", "ParameterValues"))
+        pset = etree.SubElement(values, _q("ssv", "ParameterSet"), version="1.0", name=f"{comp}_parameters")
+        params = etree.SubElement(pset, _q("ssv", "Parameters"))
+        types = {s.name: s.var.type for s in spec.scalars()}
+        for pname, value in loop.parameters[comp].items():
+            p = etree.SubElement(params, _q("ssv", "Parameter"), name=pname)
+            etree.SubElement(p, _q("ssv", types[pname]), value=_ssv_value(value))
+    conns = etree.SubElement(system, _q("ssd", "Connections"))
+    for a, out, b, inp in CONNECTIONS:
+        etree.SubElement(
+            conns, _q("ssd", "Connection"), startElement=a, startConnector=out, endElement=b, endConnector=inp
+        )
+    etree.SubElement(
+        root, _q("ssd", "DefaultExperiment"), startTime="0.0", stopTime=repr(round(loop.steps * loop.dt, 9))
+    )
+    return etree.tostring(root, xml_declaration=True, encoding="UTF-8", pretty_print=True)
+
+
+def _ssv_value(v) -> str:
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, float):
+        return repr(v)
+    return str(v)
+
+
+def write_ssp(loop: ClosedLoop, fmus: dict[str, Path], out: Path) -> Path:
+    """``out`` (.ssp): SystemStructure.ssd plus the FMUs under resources/."""
+    entries = {"SystemStructure.ssd": system_structure(loop)}
+    for comp, path in fmus.items():
+        entries[f"resources/{SPECS[comp].identifier}.fmu"] = Path(path).read_bytes()
+    write_bytes_atomic(out, zip_bytes(entries))
+    return out
