@@ -54,11 +54,59 @@ def _cmd_validate(args: argparse.Namespace) -> int:
 def _cmd_run(args: argparse.Namespace) -> int:
     from vei_scenario.runner import parse_param_overrides, run_to, summary_text
 
-    report = run_to(args.scenario, args.output, parse_param_overrides(args.param), args.dt, plots=not args.no_plots)
+    report = run_to(
+        args.scenario,
+        args.output,
+        parse_param_overrides(args.param),
+        args.dt,
+        plots=not args.no_plots,
+        coupling=args.coupling,
+    )
     print(summary_text(report.metrics))
     for p in report.written:
         print(f"wrote {p}")
     return 0
+
+
+def _models(names: list[str]) -> list[str]:
+    from vei_scenario.fmu import MODELS
+
+    return list(MODELS) if not names or "all" in names else names
+
+
+def _cmd_fmu_build(args: argparse.Namespace) -> int:
+    from vei_scenario.fmu import build_fmus
+
+    for path in build_fmus(_models(args.models), args.output, args.backend, args.fmi).values():
+        print(f"wrote {path}")
+    return 0
+
+
+def _cmd_fmu_system(args: argparse.Namespace) -> int:
+    from vei_scenario.fmu import build_system
+    from vei_scenario.runner import parse_param_overrides
+
+    path = build_system(
+        args.scenario, args.output, parse_param_overrides(args.param), args.dt, args.backend, args.fmi
+    )
+    print(f"wrote {path}")
+    return 0
+
+
+def _cmd_fmu_cosim(args: argparse.Namespace) -> int:
+    from vei_scenario.fmu import cosimulate
+    from vei_scenario.fmu.cosim import write_record_csv
+    from vei_scenario.runner import parse_param_overrides
+
+    rep = cosimulate(
+        args.scenario, args.engine, parse_param_overrides(args.param), args.dt, args.coupling, args.backend, args.fmi
+    )
+    dev = ", ".join(f"{k} {v:.3g} m" for k, v in rep.max_deviation_m.items())
+    print(f"{args.engine} ({rep.coupling} coupling, {rep.steps} steps): largest deviation from vei run: {dev}")
+    if args.output:
+        print(f"wrote {write_record_csv(rep.record, rep.loop, Path(args.output))}")
+    worst = max(rep.max_deviation_m.values())
+    return 0 if worst <= args.tolerance else 1
 
 
 def _cmd_study(args: argparse.Namespace) -> int:
@@ -177,6 +225,13 @@ def build_parser() -> argparse.ArgumentParser:
     r.add_argument("--dt", type=float, default=0.01, help="fixed step in s (default 0.01)")
     r.add_argument("-o", "--output", help="directory for trajectories.csv, metrics.json and plots")
     r.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
+    r.add_argument(
+        "--coupling",
+        choices=("sequential", "jacobi"),
+        default="sequential",
+        help="how entities see each other within a step: sequential (default) or jacobi (as a co-simulation "
+        "master stepping all FMUs on the previous outputs)",
+    )
     r.set_defaults(func=_cmd_run)
 
     st = sub.add_parser("study", help="the seed paper's five configurations at the collision timing shift")
@@ -224,6 +279,34 @@ def build_parser() -> argparse.ArgumentParser:
     ck.add_argument("suite", help="suite file (.toml)")
     ck.add_argument("--junit", help="write JUnit XML here")
     ck.set_defaults(func=_cmd_check)
+
+    fm = sub.add_parser("fmu", help="the models as FMI co-simulation FMUs; the closed loop as SSP; co-simulation")
+    fsub = fm.add_subparsers(dest="fmu_command", required=True)
+    fb = fsub.add_parser("build", help="build FMUs: sfm (e-scooter), cap (planner), ego (vehicle) or all")
+    fb.add_argument("models", nargs="*", choices=("sfm", "cap", "ego", "all", []), help="default: all")
+    fb.add_argument("-o", "--output", default="fmus/dist", help="directory for the .fmu files (default fmus/dist)")
+    fb.add_argument("--backend", choices=("native", "python"), default="native")
+    fb.add_argument("--fmi", type=int, choices=(2, 3), default=2, help="FMI version (default 2)")
+    fb.set_defaults(func=_cmd_fmu_build)
+    fs = fsub.add_parser("system", help="the scenario's closed loop (ego + scooter + planner) as an SSP 1.0 package")
+    fs.add_argument("scenario", help="vei-compiled OpenSCENARIO file (.xosc)")
+    fs.add_argument("-o", "--output", required=True, help="SSP file to write (.ssp)")
+    fs.add_argument("--param", action="append", default=[], metavar="NAME=VALUE", help="override a parameter")
+    fs.add_argument("--dt", type=float, default=0.01, help="communication step in s (default 0.01)")
+    fs.add_argument("--backend", choices=("native", "python"), default="native")
+    fs.add_argument("--fmi", type=int, choices=(2, 3), default=2)
+    fs.set_defaults(func=_cmd_fmu_system)
+    fc = fsub.add_parser("cosim", help="run the closed loop in a co-simulation engine and compare it with vei run")
+    fc.add_argument("scenario", help="vei-compiled OpenSCENARIO file (.xosc)")
+    fc.add_argument("--engine", choices=("fmpy", "libcosim"), default="fmpy")
+    fc.add_argument("--coupling", choices=("sequential", "jacobi"), help="fmpy master only (default sequential)")
+    fc.add_argument("--param", action="append", default=[], metavar="NAME=VALUE")
+    fc.add_argument("--dt", type=float, default=0.01)
+    fc.add_argument("--backend", choices=("native", "python"), default="native")
+    fc.add_argument("--fmi", type=int, choices=(2, 3), default=2)
+    fc.add_argument("--tolerance", type=float, default=1e-6, help="exit 1 above this deviation in m (1e-6)")
+    fc.add_argument("-o", "--output", help="write the co-simulated trajectories (CSV) here")
+    fc.set_defaults(func=_cmd_fmu_cosim)
 
     v = sub.add_parser("validate", help="check .xosc/.xodr files against the ASAM XSDs and VEI's own rules")
     v.add_argument("files", nargs="+")

@@ -108,12 +108,13 @@ def run_to(
     dt: float = 0.01,
     plots: bool = True,
     cfg: MetricConfig | None = None,
+    coupling: str = "sequential",
 ) -> RunReport:
     """Run ``scenario`` and, with ``out_dir``, write its files there (all or nothing)."""
     if not (1e-4 <= dt <= 0.5):
         raise VeiInputError(None, "--dt", f"{dt} s is outside 0.0001..0.5 s")
     cfg = cfg or MetricConfig()
-    result = run_scenario(scenario, parameters, dt)
+    result = run_scenario(scenario, parameters, dt, coupling=coupling)
     doc = metrics_document(result, cfg)
     written: list[Path] = []
     if out_dir is not None:

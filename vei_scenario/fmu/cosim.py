@@ -76,12 +76,23 @@ class _Slave:
         self.in_index = {n: i for i, n in enumerate(self.inputs)}
         f = self.fmu
         if self.fmi3:
-            self._raw_get = lambda: f.fmi3GetFloat64(f.component, self._out_vr, len(self.outputs), self._out_val, len(self.outputs))
-            self._raw_set = lambda: f.fmi3SetFloat64(f.component, self._in_vr, len(self.inputs), self._in_val, len(self.inputs))
+            self._raw_get = lambda: f.fmi3GetFloat64(
+                f.component, self._out_vr, len(self.outputs), self._out_val, len(self.outputs)
+            )
+            self._raw_set = lambda: f.fmi3SetFloat64(
+                f.component, self._in_vr, len(self.inputs), self._in_val, len(self.inputs)
+            )
             flags = [ctypes.c_bool() for _ in range(3)]
             last = ctypes.c_double()
             self._raw_step = lambda t, h: f.fmi3DoStep(
-                f.component, t, h, True, ctypes.byref(flags[0]), ctypes.byref(flags[1]), ctypes.byref(flags[2]), ctypes.byref(last)
+                f.component,
+                t,
+                h,
+                True,
+                ctypes.byref(flags[0]),
+                ctypes.byref(flags[1]),
+                ctypes.byref(flags[2]),
+                ctypes.byref(last),
             )
         else:
             self._raw_get = lambda: f.fmi2GetReal(f.component, self._out_vr, len(self.outputs), self._out_val)
@@ -117,9 +128,7 @@ def run_fmpy(loop: ClosedLoop, fmus: dict[str, Path], coupling: str = "sequentia
     try:
         for comp in ("ego", "cap", "sfm"):
             slaves[comp] = _Slave(comp, fmus[comp], loop.parameters[comp], work)
-        links = [
-            (slaves[a], slaves[a].out_index[o], slaves[b], slaves[b].in_index[i]) for a, o, b, i in CONNECTIONS
-        ]
+        links = [(slaves[a], slaves[a].out_index[o], slaves[b], slaves[b].in_index[i]) for a, o, b, i in CONNECTIONS]
         into: dict[str, list] = {c: [x for x in links if x[2].comp == c] for c in slaves}
         n, h = loop.steps, loop.dt
         rec = {c: {q: np.empty(n + 1) for q in RECORDED[c]} for c in slaves}
@@ -160,7 +169,10 @@ def run_fmpy(loop: ClosedLoop, fmus: dict[str, Path], coupling: str = "sequentia
 def run_libcosim(ssp: Path, loop: ClosedLoop) -> dict[str, dict[str, np.ndarray]]:
     """The SSP package through libcosim's fixed-step (Jacobi) algorithm."""
     from libcosimpy.CosimExecution import CosimExecution
+    from libcosimpy.CosimLogging import CosimLogLevel, log_output_level
     from libcosimpy.CosimObserver import CosimObserver
+
+    log_output_level(CosimLogLevel.WARNING)  # its debug log prints every XML element it parses
 
     ex = CosimExecution.from_ssp_file(str(ssp), step_size=round(loop.dt * 1e9))  # ns
     obs = CosimObserver.create_last_value()
@@ -192,3 +204,16 @@ def compare_with_run(rec: dict[str, dict[str, np.ndarray]], run, loop: ClosedLoo
         n = min(tr.x.size, rec[comp]["x"].size)
         out[comp] = float(np.max(np.hypot(tr.x[:n] - rec[comp]["x"][:n], tr.y[:n] - rec[comp]["y"][:n])))
     return out
+
+
+def write_record_csv(rec: dict[str, dict[str, np.ndarray]], loop: ClosedLoop, path: Path) -> Path:
+    """The co-simulated trajectories as CSV: t, then component.output columns."""
+    from vei_scenario.atomic_io import write_bytes_atomic
+
+    cols = [(c, q) for c in ("ego", "sfm", "cap") for q in RECORDED[c]]
+    n = rec["ego"]["x"].size
+    lines = ["t," + ",".join(f"{c}.{q}" for c, q in cols)]
+    for k in range(n):
+        lines.append(f"{round(k * loop.dt, 9):.9g}," + ",".join(f"{rec[c][q][k]:.17g}" for c, q in cols))
+    write_bytes_atomic(path, ("\n".join(lines) + "\n").encode())
+    return path

@@ -8,7 +8,7 @@ import uuid
 from lxml import etree
 
 from vei_scenario import __version__
-from vei_scenario.fmu.variables import ModelSpec, Scalar
+from vei_scenario.fmu.variables import ModelSpec
 
 #: SI base-unit exponents of the units the variables use.
 UNITS = {
@@ -42,7 +42,7 @@ def _fmt(value) -> str:
 
 
 def _units(spec: ModelSpec, parent, fmi3: bool) -> None:
-    used = sorted({v.unit for v in spec.variables if v.unit})
+    used = sorted({v.unit for v in spec.variables if v.unit} | ({"s"} if fmi3 else set()))
     if not used:
         return
     defs = etree.SubElement(parent, "UnitDefinitions")
@@ -51,9 +51,17 @@ def _units(spec: ModelSpec, parent, fmi3: bool) -> None:
         etree.SubElement(unit, "BaseUnit", {k: str(e) for k, e in UNITS[u].items()})
 
 
-def fmi2(spec: ModelSpec, guid_: str, source_files: list[str] | None, step_size: float = 0.01, **cs_attrs) -> bytes:
-    """FMI 2.0 modelDescription.xml. Outputs are ``initial="calculated"`` (set from the parameters on
-    leaving initialization) and listed as InitialUnknowns; they have no direct feedthrough (the models
+def fmi2(
+    spec: ModelSpec,
+    guid_: str,
+    source_files: list[str] | None,
+    step_size: float = 0.01,
+    global_value_references: bool = False,
+    **cs_attrs,
+) -> bytes:
+    """FMI 2.0 modelDescription.xml; value references count per type (the C FMUs) or across all
+    types (``global_value_references``: pythonfmu's numbering). Outputs are ``initial="calculated"``
+    (set from the parameters on leaving initialization) and listed as InitialUnknowns; they have no direct feedthrough (the models
     compute them in doStep), hence empty Output dependencies."""
     root = etree.Element(
         "fmiModelDescription",
@@ -85,7 +93,8 @@ def fmi2(spec: ModelSpec, guid_: str, source_files: list[str] | None, step_size:
     outputs: list[int] = []
     for index, s in enumerate(spec.scalars(), start=1):
         v = s.var
-        attrs = {"name": s.name, "valueReference": str(s.vr), "causality": v.causality, "variability": v.variability}
+        vr = index - 1 if global_value_references else s.vr
+        attrs = {"name": s.name, "valueReference": str(vr), "causality": v.causality, "variability": v.variability}
         if v.description:
             attrs["description"] = v.description
         if v.causality == "output":
@@ -113,7 +122,7 @@ _FMI3_TYPES = {"Real": "Float64", "Integer": "Int32", "Boolean": "Boolean", "Str
 
 def fmi3(spec: ModelSpec, token: str, step_size: float = 0.01) -> bytes:
     """FMI 3.0 modelDescription.xml (co-simulation). Value references are unique across types
-    (:meth:`ModelSpec.fmi3_vr`); arrays stay runs of scalars so the FMI 2 and 3 FMUs look alike."""
+    (:meth:`ModelSpec.fmi3_vrs`); arrays stay runs of scalars so the FMI 2 and 3 FMUs look alike."""
     root = etree.Element(
         "fmiModelDescription",
         fmiVersion="3.0",
@@ -137,10 +146,21 @@ def fmi3(spec: ModelSpec, token: str, step_size: float = 0.01) -> bytes:
     etree.SubElement(cats, "Category", name="logStatusError", description="errors of the FMU")
     etree.SubElement(root, "DefaultExperiment", startTime="0.0", stepSize=repr(step_size))
     mv = etree.SubElement(root, "ModelVariables")
+    etree.SubElement(
+        mv,
+        "Float64",
+        name="time",
+        valueReference=str(len(spec.scalars())),
+        causality="independent",
+        variability="continuous",
+        unit="s",
+        description="simulation time",
+    )
     outputs: list[int] = []
-    for s in _fmi3_order(spec):
+    vrs = spec.fmi3_vrs()
+    for s in sorted(spec.scalars(), key=lambda s: vrs[s.name]):
         v = s.var
-        vr = spec.fmi3_vr(s.name)
+        vr = vrs[s.name]
         attrs = {"name": s.name, "valueReference": str(vr), "causality": v.causality, "variability": v.variability}
         if v.description:
             attrs["description"] = v.description
@@ -161,7 +181,3 @@ def fmi3(spec: ModelSpec, token: str, step_size: float = 0.01) -> bytes:
     for vr in outputs:
         etree.SubElement(ms, "InitialUnknown", valueReference=str(vr))
     return etree.tostring(root, xml_declaration=True, encoding="UTF-8", pretty_print=True)
-
-
-def _fmi3_order(spec: ModelSpec) -> list[Scalar]:
-    return sorted(spec.scalars(), key=lambda s: spec.fmi3_vr(s.name))

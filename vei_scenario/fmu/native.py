@@ -140,11 +140,7 @@ def build_native(spec: ModelSpec, out_dir: Path, fmi: int = 2) -> Path:
         proc = subprocess.run(cmd, cwd=build, capture_output=True, text=True)
         if proc.returncode != 0:
             raise VeiInputError(None, f"compiling {spec.identifier}", proc.stderr.strip()[-2000:])
-        md = (
-            model_description.fmi2(spec, guid, sorted(sources))
-            if fmi == 2
-            else model_description.fmi3(spec, guid)
-        )
+        md = model_description.fmi2(spec, guid, sorted(sources)) if fmi == 2 else model_description.fmi3(spec, guid)
         entries = {"modelDescription.xml": md, f"binaries/{_platform(fmi)}/{binary.name}": binary.read_bytes()}
         entries.update({f"sources/{n}": d for n, d in files.items()})
         if fmi == 3:

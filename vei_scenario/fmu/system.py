@@ -15,10 +15,10 @@ from pathlib import Path
 
 from lxml import etree
 
+from vei_scenario.atomic_io import write_bytes_atomic
 from vei_scenario.errors import VeiInputError
 from vei_scenario.fmu.packaging import zip_bytes
 from vei_scenario.fmu.variables import MAX_PATH, MAX_ROUTE, SPECS
-from vei_scenario.atomic_io import write_bytes_atomic
 
 #: (from component, output) -> [(to component, input)]: the couplings of vei run's step.
 CONNECTIONS = (

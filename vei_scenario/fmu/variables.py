@@ -9,14 +9,15 @@ Defaults come from the model parameter dataclasses, so an FMU built without a sc
 from __future__ import annotations
 
 from dataclasses import dataclass, fields
+from functools import cached_property
 
 from vei_scenario.models.cap import CapParameters
 from vei_scenario.models.sfm import SfmParameters
 from vei_scenario.models.vehicle import VehicleLimits
 
 #: Capacity of path and track arrays (vertices) and of the rider's route (waypoints).
-MAX_PATH = 1024
-MAX_ROUTE = 256
+MAX_PATH = 512
+MAX_ROUTE = 128
 
 RIDER_TYPE_CODES = {"replay": 0, "normal": 1, "aggressive": 2}
 MODELS = ("sfm", "cap", "ego")
@@ -62,8 +63,12 @@ class ModelSpec:
     variables: tuple[Variable, ...]
 
     def scalars(self, type_: str | None = None) -> list[Scalar]:
-        """Scalars in value-reference order; value references count per type from 0 (FMI 2), or across
-        all types when ``type_`` is None (the order of the modelDescription)."""
+        """Scalars in the order of the modelDescription (``type_`` None) or of one type; value
+        references count per type from 0 (FMI 2)."""
+        return [s for s in self._scalars if type_ is None or s.var.type == type_]
+
+    @cached_property
+    def _scalars(self) -> list[Scalar]:
         out: list[Scalar] = []
         counters: dict[str, int] = {}
         for v in self.variables:
@@ -73,14 +78,15 @@ class ModelSpec:
                 counters[v.type] = vr + 1
                 name = f"{v.name}[{k + 1}]" if v.size else v.name
                 out.append(Scalar(v, name, vr, v.start))
-        return [s for s in out if type_ is None or s.var.type == type_]
+        return out
 
     def vr(self, name: str) -> int:
         """Value reference of a scalar by name (its type's space)."""
-        for s in self.scalars():
-            if s.name == name:
-                return s.vr
-        raise KeyError(name)
+        return self._by_name[name].vr
+
+    @cached_property
+    def _by_name(self) -> dict[str, Scalar]:
+        return {s.name: s for s in self._scalars}
 
     def first_vr(self, v: Variable) -> int:
         return next(s.vr for s in self.scalars() if s.var is v)
@@ -88,16 +94,13 @@ class ModelSpec:
     def variable(self, name: str) -> Variable:
         return next(v for v in self.variables if v.name == name)
 
-    def fmi3_vr(self, name: str) -> int:
-        """FMI 3 value references are unique across types: Real first, then Integer, Boolean, String."""
-        offset = 0
+    def fmi3_vrs(self) -> dict[str, int]:
+        """FMI 3 value references, unique across types: Real first, then Integer, Boolean, String."""
+        out: dict[str, int] = {}
         for t in ("Real", "Integer", "Boolean", "String"):
-            sc = self.scalars(t)
-            for s in sc:
-                if s.name == name:
-                    return offset + s.vr
-            offset += len(sc)
-        raise KeyError(name)
+            base = len(out)
+            out.update({s.name: base + s.vr for s in self.scalars(t)})
+        return out
 
 
 def _params(dataclass_, units: dict[str, str], prefix: str = "") -> list[Variable]:

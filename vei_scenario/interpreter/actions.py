@@ -8,8 +8,6 @@ ActivateControllerAction, ParameterSetAction. Anything else is refused with its 
 
 from __future__ import annotations
 
-import math
-
 from vei_scenario.interpreter.controllers import make_controller, polyline_from
 from vei_scenario.interpreter.entities import PathFollower, SpeedProfile
 
@@ -127,16 +125,7 @@ class FollowTrajectory(Action):
         e = ctx.entities[self.entity]
         e.follower = PathFollower(self.polyline, self.timing, self.mode, ctx.t, self.initial_s)
         if self.timing is None:  # continue from where the entity is: its projection onto the path
-            best, best_d = 0.0, math.inf
-            xs, ys, ss = self.polyline.xs, self.polyline.ys, self.polyline.s
-            for i in range(len(xs) - 1):
-                ax, ay, bx, by = xs[i], ys[i], xs[i + 1], ys[i + 1]
-                L2 = (bx - ax) ** 2 + (by - ay) ** 2
-                f = 0.0 if L2 == 0 else max(0.0, min(1.0, ((e.x - ax) * (bx - ax) + (e.y - ay) * (by - ay)) / L2))
-                d = math.hypot(ax + f * (bx - ax) - e.x, ay + f * (by - ay) - e.y)
-                if d < best_d - 1e-12:
-                    best, best_d = ss[i] + f * (ss[i + 1] - ss[i]), d
-            e.follower.s = max(best, self.initial_s)
+            e.follower.s = max(self.polyline.project(e.x, e.y), self.initial_s)
 
     def update(self, ctx) -> None:
         e = ctx.entities[self.entity]

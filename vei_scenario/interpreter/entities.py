@@ -56,6 +56,19 @@ class Polyline:
         ds = self.s[i + 1] - self.s[i]
         return self._lerp(i, 0.0 if ds <= 0 else (s - self.s[i]) / ds)
 
+    def project(self, px: float, py: float) -> float:
+        """Arc length of the point of the path closest to (px, py) (the first of equally close ones)."""
+        best, best_d = 0.0, math.inf
+        xs, ys, ss = self.xs, self.ys, self.s
+        for i in range(len(xs) - 1):
+            ax, ay, bx, by = xs[i], ys[i], xs[i + 1], ys[i + 1]
+            L2 = (bx - ax) ** 2 + (by - ay) ** 2
+            f = 0.0 if L2 == 0 else max(0.0, min(1.0, ((px - ax) * (bx - ax) + (py - ay) * (by - ay)) / L2))
+            d = math.hypot(ax + f * (bx - ax) - px, ay + f * (by - ay) - py)
+            if d < best_d - 1e-12:
+                best, best_d = ss[i] + f * (ss[i + 1] - ss[i]), d
+        return best
+
     def s_at_time(self, t: float) -> float:
         ts = self.ts
         if t <= ts[0]:
