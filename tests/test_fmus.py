@@ -100,7 +100,6 @@ def test_native_fmus_are_self_contained_and_reproducible(fmu_sets, tmp_path):
 
 def test_fmu_sources_rebuild_on_the_importers_side(fmu_sets, tmp_path):
     """An importer rebuilds the binary from sources/ alone (the SourceFiles of the modelDescription)."""
-    from fmpy import read_model_description
 
     fmu = fmu_sets["native-fmi2"]["ego"]
     with zipfile.ZipFile(fmu) as zf:

@@ -86,9 +86,7 @@ def _cmd_fmu_system(args: argparse.Namespace) -> int:
     from vei_scenario.fmu import build_system
     from vei_scenario.runner import parse_param_overrides
 
-    path = build_system(
-        args.scenario, args.output, parse_param_overrides(args.param), args.dt, args.backend, args.fmi
-    )
+    path = build_system(args.scenario, args.output, parse_param_overrides(args.param), args.dt, args.backend, args.fmi)
     print(f"wrote {path}")
     return 0
 

@@ -118,9 +118,16 @@ class _Slave:
         self.fmu.freeInstance()
 
 
-def run_fmpy(loop: ClosedLoop, fmus: dict[str, Path], coupling: str = "sequential") -> dict[str, dict[str, np.ndarray]]:
+def run_fmpy(
+    loop: ClosedLoop, fmus: dict[str, Path], coupling: str = "sequential", timings: dict | None = None
+) -> dict[str, dict[str, np.ndarray]]:
     """The closed loop through fmpy: ``sequential`` steps planner, ego, rider in turn, each on the
-    newest outputs (vei run's default coupling); ``jacobi`` steps all on the previous outputs."""
+    newest outputs (vei run's default coupling); ``jacobi`` steps all on the previous outputs.
+    ``timings`` receives ``load_s`` (extract, read modelDescription, instantiate, set parameters)
+    and ``run_s`` (the steps)."""
+    import time
+
+    t_load = time.perf_counter()
     if coupling not in COUPLINGS:
         raise ValueError(f"coupling must be one of {', '.join(COUPLINGS)}")
     work = Path(tempfile.mkdtemp(prefix="vei-cosim-"))
@@ -140,6 +147,7 @@ def run_fmpy(loop: ClosedLoop, fmus: dict[str, Path], coupling: str = "sequentia
 
         for c, s in slaves.items():
             record(0, c, s.get())
+        t_run = time.perf_counter()
         for k in range(n):
             t = round(k * h, 9)
             if coupling == "jacobi":
@@ -159,6 +167,8 @@ def run_fmpy(loop: ClosedLoop, fmus: dict[str, Path], coupling: str = "sequentia
                     s.set()
                     s.step(t, h)
                     record(k + 1, c, s.get())
+        if timings is not None:
+            timings.update(load_s=t_run - t_load, run_s=time.perf_counter() - t_run)
         return rec
     finally:
         for s in slaves.values():

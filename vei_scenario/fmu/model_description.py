@@ -61,8 +61,8 @@ def fmi2(
 ) -> bytes:
     """FMI 2.0 modelDescription.xml; value references count per type (the C FMUs) or across all
     types (``global_value_references``: pythonfmu's numbering). Outputs are ``initial="calculated"``
-    (set from the parameters on leaving initialization) and listed as InitialUnknowns; they have no direct feedthrough (the models
-    compute them in doStep), hence empty Output dependencies."""
+    (set from the parameters on leaving initialization) and listed as InitialUnknowns; they have no
+    direct feedthrough (the models compute them in doStep), hence empty Output dependencies."""
     root = etree.Element(
         "fmiModelDescription",
         fmiVersion="2.0",
