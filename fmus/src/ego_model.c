@@ -33,12 +33,7 @@ int model_initialize(Instance *m) {
 int model_do_step(Instance *m, double t, double h) {
     ModelState *ms = &m->ms;
     if (!(t > R(BEHAVIOUR_START_S))) { /* not started: straight ahead at the current speed */
-        double v0 = R(SPEED);
-        R(ACCEL) = (R(SPEED) - v0) / h;
-        double ds = 0.5 * (v0 + R(SPEED)) * h;
-        R(X) = R(X) + ds * cos(R(YAW));
-        R(Y) = R(Y) + ds * sin(R(YAW));
-        R(S) = R(S) + ds;
+        R(S) = R(S) + vei_straight_ahead(&R(X), &R(Y), R(YAW), R(SPEED), &R(ACCEL), h);
         return 0;
     }
     if (!isfinite(R(A_CMD))) return vei_fail(m, "a_cmd is not finite");

@@ -58,11 +58,7 @@ int model_do_step(Instance *m, double t, double h) {
     ModelState *ms = &m->ms;
     double t_next = t + h;
     if (!(t > R(BEHAVIOUR_START_S))) { /* not started: straight ahead at the current speed */
-        double v0 = R(SPEED);
-        R(ACCEL) = (R(SPEED) - v0) / h;
-        double ds = 0.5 * (v0 + R(SPEED)) * h;
-        R(X) = R(X) + ds * cos(R(YAW));
-        R(Y) = R(Y) + ds * sin(R(YAW));
+        vei_straight_ahead(&R(X), &R(Y), R(YAW), R(SPEED), &R(ACCEL), h);
     } else {
         if (ms->rider != 0 && !ms->riding && t_next >= ms->t_start - 1e-9) {
             ms->riding = 1;

@@ -18,6 +18,15 @@ double vei_wrap_angle(double a) {
     return r - M_PI;
 }
 
+double vei_straight_ahead(double *x, double *y, double yaw, double speed, double *accel, double dt) {
+    double v0 = speed;
+    *accel = (speed - v0) / dt;
+    double ds = 0.5 * (v0 + speed) * dt;
+    *x = *x + ds * cos(yaw);
+    *y = *y + ds * sin(yaw);
+    return ds;
+}
+
 static double dmin(double a, double b) { return a < b ? a : b; }
 static double dmax(double a, double b) { return a > b ? a : b; }
 

@@ -68,6 +68,10 @@ double vei_polyline_s_at_time(const VeiPolyline *p, double t);
 /* Arc length of the closest point of the path (FollowTrajectory without timing starts there). */
 double vei_polyline_project(const VeiPolyline *p, double px, double py);
 
+/* Before its behaviour starts an entity keeps its Init speed and heading (the interpreter's motion of
+ * an entity without a trajectory or speed action). Returns the distance moved. */
+double vei_straight_ahead(double *x, double *y, double yaw, double speed, double *accel, double dt);
+
 double vei_wrap_angle(double a);
 double vei_hypot(double x, double y);
 

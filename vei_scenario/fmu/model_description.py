@@ -8,6 +8,7 @@ import uuid
 from lxml import etree
 
 from vei_scenario import __version__
+from vei_scenario.fmu.packaging import xml_value
 from vei_scenario.fmu.variables import ModelSpec
 
 #: SI base-unit exponents of the units the variables use.
@@ -31,14 +32,6 @@ def guid(spec: ModelSpec, flavour: str) -> str:
     flavour (native / python, FMI version), and is the same on every build of the same inputs."""
     text = repr((spec.identifier, flavour, [(s.name, s.vr, s.var.type, s.var.causality) for s in spec.scalars()]))
     return "{" + str(uuid.UUID(hashlib.sha256(text.encode()).hexdigest()[:32])) + "}"
-
-
-def _fmt(value) -> str:
-    if isinstance(value, bool):
-        return "true" if value else "false"
-    if isinstance(value, float):
-        return repr(value)
-    return str(value)
 
 
 def _units(spec: ModelSpec, parent, fmi3: bool) -> None:
@@ -103,7 +96,7 @@ def fmi2(
         sv = etree.SubElement(mv, "ScalarVariable", attrs)
         tattrs = {}
         if v.causality != "output":
-            tattrs["start"] = _fmt(s.start)
+            tattrs["start"] = xml_value(s.start)
         if v.unit and v.type == "Real":
             tattrs["unit"] = v.unit
         etree.SubElement(sv, v.type, tattrs)
@@ -169,7 +162,7 @@ def fmi3(spec: ModelSpec, token: str, step_size: float = 0.01) -> bytes:
             outputs.append(vr)
         else:
             if v.type != "String":
-                attrs["start"] = _fmt(s.start)
+                attrs["start"] = xml_value(s.start)
         if v.unit and v.type == "Real":
             attrs["unit"] = v.unit
         el = etree.SubElement(mv, _FMI3_TYPES[v.type], attrs)

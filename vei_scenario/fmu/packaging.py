@@ -11,6 +11,15 @@ from vei_scenario.atomic_io import write_bytes_atomic
 _EPOCH = (1980, 1, 1, 0, 0, 0)
 
 
+def xml_value(value) -> str:
+    """A value as an XML attribute of FMI/SSP: booleans lower-case, floats round-tripping exactly."""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, float):
+        return repr(value)
+    return str(value)
+
+
 def zip_bytes(entries: dict[str, bytes]) -> bytes:
     """A zip archive of ``entries`` (path -> content), the same bytes for the same entries."""
     buf = io.BytesIO()

@@ -17,7 +17,7 @@ from lxml import etree
 
 from vei_scenario.atomic_io import write_bytes_atomic
 from vei_scenario.errors import VeiInputError
-from vei_scenario.fmu.packaging import zip_bytes
+from vei_scenario.fmu.packaging import xml_value, zip_bytes
 from vei_scenario.fmu.variables import MAX_PATH, MAX_ROUTE, SPECS
 
 #: (from component, output) -> [(to component, input)]: the couplings of vei run's step.
@@ -177,7 +177,7 @@ def system_structure(loop: ClosedLoop, name: str = "vei_closed_loop") -> bytes:
         types = {s.name: s.var.type for s in spec.scalars()}
         for pname, value in loop.parameters[comp].items():
             p = etree.SubElement(params, _q("ssv", "Parameter"), name=pname)
-            etree.SubElement(p, _q("ssv", types[pname]), value=_ssv_value(value))
+            etree.SubElement(p, _q("ssv", types[pname]), value=xml_value(value))
     conns = etree.SubElement(system, _q("ssd", "Connections"))
     for a, out, b, inp in CONNECTIONS:
         etree.SubElement(
@@ -187,14 +187,6 @@ def system_structure(loop: ClosedLoop, name: str = "vei_closed_loop") -> bytes:
         root, _q("ssd", "DefaultExperiment"), startTime="0.0", stopTime=repr(round(loop.steps * loop.dt, 9))
     )
     return etree.tostring(root, xml_declaration=True, encoding="UTF-8", pretty_print=True)
-
-
-def _ssv_value(v) -> str:
-    if isinstance(v, bool):
-        return "true" if v else "false"
-    if isinstance(v, float):
-        return repr(v)
-    return str(v)
 
 
 def write_ssp(loop: ClosedLoop, fmus: dict[str, Path], out: Path) -> Path:
