@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import ctypes
 import math
+import os
 import re
 import shutil
 import subprocess
@@ -541,3 +542,11 @@ def test_fmu_commands_report_user_errors_in_one_line(case_study, tmp_path):
             text=True,
         )
         assert out.returncode == 2 and "FMI 2.0 FMUs only" in out.stderr
+    out = subprocess.run(
+        [sys.executable, "-m", "vei_scenario", "fmu", "build", "ego", "-o", str(tmp_path / "e")],
+        capture_output=True,
+        text=True,
+        env={**os.environ, "CC": "/nonexistent/cc"},
+    )
+    assert out.returncode == 2 and "CC='/nonexistent/cc' is not an executable" in out.stderr
+    assert not (tmp_path / "e").exists() or not any((tmp_path / "e").iterdir())

@@ -281,7 +281,7 @@ def build_parser() -> argparse.ArgumentParser:
     fm = sub.add_parser("fmu", help="the models as FMI co-simulation FMUs; the closed loop as SSP; co-simulation")
     fsub = fm.add_subparsers(dest="fmu_command", required=True)
     fb = fsub.add_parser("build", help="build FMUs: sfm (e-scooter), cap (planner), ego (vehicle) or all")
-    fb.add_argument("models", nargs="*", choices=("sfm", "cap", "ego", "all", []), help="default: all")
+    fb.add_argument("models", nargs="*", metavar="MODEL", help="sfm, cap, ego or all (default: all)")
     fb.add_argument("-o", "--output", default="fmus/dist", help="directory for the .fmu files (default fmus/dist)")
     fb.add_argument("--backend", choices=("native", "python"), default="native")
     fb.add_argument("--fmi", type=int, choices=(2, 3), default=2, help="FMI version (default 2)")

@@ -42,9 +42,12 @@ def fmi_header_dir() -> Path:
 
 
 def compiler() -> str:
-    cc = os.environ.get("CC") or shutil.which("cc") or shutil.which("gcc")
+    """The C compiler: $CC if set, else cc or gcc on the PATH."""
+    wanted = os.environ.get("CC")
+    cc = shutil.which(wanted) if wanted else (shutil.which("cc") or shutil.which("gcc"))
     if not cc:
-        raise VeiInputError(None, "vei fmu build", "no C compiler found (set CC, or install gcc)")
+        what = f"CC={wanted!r} is not an executable" if wanted else "no C compiler found (install gcc or set CC)"
+        raise VeiInputError(None, "vei fmu build", what)
     return cc
 
 
