@@ -34,7 +34,7 @@ def _loop(scenario: Path):
 def measure(scenario: Path, backend: str) -> dict:
     """Per-step cost per model and closed-loop wall times for one backend (one process)."""
     from vei_scenario.fmu import MODELS, build_fmus
-    from vei_scenario.fmu.cosim import _Slave, run_fmpy, run_libcosim
+    from vei_scenario.fmu.cosim import FmuInstance, run_fmpy, run_libcosim
     from vei_scenario.fmu.system import write_ssp
 
     values, loop = _loop(scenario)
@@ -43,7 +43,7 @@ def measure(scenario: Path, backend: str) -> dict:
         fmus = build_fmus(list(MODELS), Path(tmp) / "fmus", backend)
         if backend == "native":  # a Python FMU may be instantiated once per process: loops only
             for m in MODELS:
-                s = _Slave(m, fmus[m], loop.parameters[m], Path(tmp) / "step")
+                s = FmuInstance(m, fmus[m], loop.parameters[m], Path(tmp) / "step")
                 n = loop.steps
                 t0 = time.perf_counter()
                 for k in range(n):
@@ -85,12 +85,12 @@ def python_per_step(scenario: Path) -> dict:
 
 def _python_step(model: str, scenario: Path) -> float:
     from vei_scenario.fmu import build_fmus
-    from vei_scenario.fmu.cosim import _Slave
+    from vei_scenario.fmu.cosim import FmuInstance
 
     _, loop = _loop(scenario)
     with tempfile.TemporaryDirectory(prefix="vei-bench-pyfmu-") as tmp:
         fmu = build_fmus([model], Path(tmp), "python")[model]
-        s = _Slave(model, fmu, loop.parameters[model], Path(tmp) / "x")
+        s = FmuInstance(model, fmu, loop.parameters[model], Path(tmp) / "x")
         t0 = time.perf_counter()
         for k in range(loop.steps):
             s.step(round(k * loop.dt, 9), loop.dt)

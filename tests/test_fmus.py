@@ -550,3 +550,12 @@ def test_fmu_commands_report_user_errors_in_one_line(case_study, tmp_path):
     )
     assert out.returncode == 2 and "CC='/nonexistent/cc' is not an executable" in out.stderr
     assert not (tmp_path / "e").exists() or not any((tmp_path / "e").iterdir())
+    out = subprocess.run(
+        [sys.executable, "-m", "vei_scenario", "fmu", "cosim", str(case_study), "--param", "EgoCruiseSpeed=-1"],
+        capture_output=True,
+        text=True,
+    )
+    assert out.returncode == 2 and out.stderr.strip() == (
+        "vei: error: ego: the FMU refused: fmi2ExitInitializationMode failed with status 3 (error)."
+    )
+    assert "speed0 must not be negative (got -1)" in out.stdout  # the FMU's own log line

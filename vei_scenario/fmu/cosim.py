@@ -14,6 +14,7 @@ from pathlib import Path
 
 import numpy as np
 
+from vei_scenario.errors import VeiInputError
 from vei_scenario.fmu.system import CONNECTIONS, SEQUENTIAL_ORDER, ClosedLoop
 from vei_scenario.fmu.variables import SPECS
 
@@ -21,7 +22,7 @@ RECORDED = {"ego": ("x", "y", "yaw", "speed", "accel"), "sfm": ("x", "y", "yaw",
 COUPLINGS = ("sequential", "jacobi")
 
 
-class _Slave:
+class FmuInstance:
     """One FMU instance driven through fmpy's FMI 2 / FMI 3 bindings, with prebuilt ctypes buffers
     (the master calls it ~10 times per step)."""
 
@@ -130,11 +131,14 @@ def run_fmpy(
     t_load = time.perf_counter()
     if coupling not in COUPLINGS:
         raise ValueError(f"coupling must be one of {', '.join(COUPLINGS)}")
+    from fmpy.fmi1 import FMICallException
+
     work = Path(tempfile.mkdtemp(prefix="vei-cosim-"))
-    slaves: dict[str, _Slave] = {}
+    slaves: dict[str, FmuInstance] = {}
+    comp = ""
     try:
         for comp in ("ego", "cap", "sfm"):
-            slaves[comp] = _Slave(comp, fmus[comp], loop.parameters[comp], work)
+            slaves[comp] = FmuInstance(comp, fmus[comp], loop.parameters[comp], work)
         links = [(slaves[a], slaves[a].out_index[o], slaves[b], slaves[b].in_index[i]) for a, o, b, i in CONNECTIONS]
         into: dict[str, list] = {c: [x for x in links if x[2].comp == c] for c in slaves}
         n, h = loop.steps, loop.dt
@@ -161,7 +165,7 @@ def run_fmpy(
                     record(k + 1, c, s.get())
             else:
                 for c in SEQUENTIAL_ORDER:
-                    s = slaves[c]
+                    s = slaves[comp := c]
                     for a, ia, b, ib in into[c]:
                         b._in_val[ib] = a._out_val[ia]
                     s.set()
@@ -170,6 +174,8 @@ def run_fmpy(
         if timings is not None:
             timings.update(load_s=t_run - t_load, run_s=time.perf_counter() - t_run)
         return rec
+    except FMICallException as exc:  # the FMU logged why (through fmpy's logger) and refused
+        raise VeiInputError(None, f"{comp or 'FMU'}", f"the FMU refused: {exc}") from None
     finally:
         for s in slaves.values():
             s.close()
