@@ -57,8 +57,8 @@ def main() -> int:
     )
     print(f"peak resident memory of one process: {peak / 1024:.0f} MiB")
     print(
-        "vei-compiled scenarios run through the batch engine; the per-variant metrics (PET with shapely, box "
-        "distances over the whole run) dominate and keep the 10 s target out of reach"
+        "vei-compiled scenarios run through the batch engine (numpy): per variant and core ~9 ms of simulation "
+        "and ~9 ms of metrics (box distances, 2-D TTC, PET) keep the 10 s target out of reach"
     )
     return 0
 
