@@ -314,6 +314,9 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def main(argv: list[str] | None = None) -> int:
+    # vei's numpy work is element-wise; idle OpenBLAS threads would only spin beside the sweep's own
+    # worker threads (set before numpy is first imported, which the commands do lazily)
+    os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
     parser = build_parser()
     args = parser.parse_args(argv)
     try:

@@ -31,6 +31,22 @@ def evaluate_variant(scenario: str, values: dict[str, str], dt: float) -> dict:
 
 
 _BATCH: dict[tuple[str, float], object] = {}
+_NATIVE: dict[tuple[str, float], object] = {}
+
+
+def _native_engine(scenario: str, dt: float):
+    """The compiled kernel for a vei-compiled two-entity scenario (cached per process), or None."""
+    from vei_scenario.batch import NotBatchable
+    from vei_scenario.batch.native import NativeBatch
+
+    key = (scenario, dt)
+    if key not in _NATIVE:
+        engine = _batch_engine(scenario, dt)
+        try:
+            _NATIVE[key] = NativeBatch(engine) if engine is not None else None
+        except NotBatchable:
+            _NATIVE[key] = None
+    return _NATIVE[key]
 
 
 def _batch_engine(scenario: str, dt: float):
@@ -47,11 +63,18 @@ def _batch_engine(scenario: str, dt: float):
 
 
 def _chunk(scenario: str, chunk: list[dict[str, str]], dt: float) -> list[dict]:
-    """Rows of a chunk: vei-compiled scenarios through the batch engine (rows identical to ``vei run``,
-    see tests/test_batch_engine.py), everything else and invalid values through the interpreter."""
+    """Rows of a chunk: vei-compiled scenarios through the compiled kernel or the numpy batch engine
+    (rows identical to ``vei run``: tests/test_batch_native.py, tests/test_batch_engine.py),
+    everything else and invalid values through the interpreter."""
     engine = _batch_engine(scenario, dt)
+    native = _native_engine(scenario, dt)
     rows: list[dict | None] = [None] * len(chunk)
-    if engine is not None:
+    if native is not None:
+        ok = [i for i, v in enumerate(chunk) if engine.accepts(v)]
+        if ok:
+            for i, m in zip(ok, native.metrics([chunk[i] for i in ok])):
+                rows[i] = {"status": "ok", "error": "", "metrics": m}
+    elif engine is not None:
         from vei_scenario.batch import batch_pair
         from vei_scenario.metrics import compute_metrics_batch
 
@@ -75,6 +98,9 @@ def evaluate_local(
     progress: Callable[[int], None] | None = None,
 ) -> list[dict]:
     workers = workers or os.cpu_count() or 1
+    native = _native_engine(scenario, dt)
+    if native is not None:
+        return _evaluate_native(native, scenario, variants, dt, workers, progress)
     size = max(1, min(256, -(-len(variants) // workers)))
     chunks = _chunks(variants, size)
     out: list[dict] = []
@@ -93,6 +119,30 @@ def evaluate_local(
             if progress:
                 progress(len(c))
     return out
+
+
+def _evaluate_native(native, scenario, variants, dt, workers, progress) -> list[dict]:
+    """The compiled kernel on ``workers`` threads, 500 variants a task; values it cannot take go
+    through the interpreter, which reports what is wrong with them."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    engine = native.batch
+    rows: list[dict | None] = [None] * len(variants)
+    ok = [i for i, v in enumerate(variants) if engine.accepts(v)]
+    tasks = [ok[k : k + 500] for k in range(0, len(ok), 500)]
+    prepared = [native.prepare([variants[i] for i in t]) for t in tasks]
+    with ThreadPoolExecutor(max_workers=workers) as pool:
+        for t, (out, _) in zip(tasks, pool.map(native.run, prepared)):
+            for i, m in zip(t, native.rows(out)):
+                rows[i] = {"status": "ok", "error": "", "metrics": m}
+            if progress:
+                progress(len(t))
+    for i, r in enumerate(rows):
+        if r is None:
+            rows[i] = evaluate_variant(scenario, variants[i], dt)
+            if progress:
+                progress(1)
+    return rows
 
 
 def evaluate_dask(

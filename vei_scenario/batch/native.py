@@ -1,0 +1,295 @@
+"""The compiled sweep kernel (``fmus/src/vei_batch.c`` over the FMUs' C models): each variant of a
+vei-compiled two-entity scenario simulated and scored in C, several variants at a time on threads.
+
+It follows :class:`~vei_scenario.batch.engine.BatchScenario` step for step and the metric functions of
+:mod:`vei_scenario.metrics.definitions` operation for operation, so its rows equal ``vei run``'s
+(tests/test_batch_native.py). The library is compiled once with the system C compiler into a cache
+(``$VEI_CACHE_DIR``, default ``~/.cache/vei-scenario``); without a compiler sweeps use the numpy batch
+engine.
+"""
+
+from __future__ import annotations
+
+import ctypes
+import hashlib
+import math
+import os
+import subprocess
+import tempfile
+from concurrent.futures import ThreadPoolExecutor
+from pathlib import Path
+
+import numpy as np
+
+from vei_scenario.batch.engine import BatchScenario, NotBatchable
+from vei_scenario.metrics.definitions import METRICS, ZONES, to_python
+from vei_scenario.metrics.series import MetricConfig
+
+SOURCES = ("vei_models.c", "vei_batch.c")
+HEADERS = ("vei_models.h", "vei_batch.h")
+FLAGS = ("-shared", "-fPIC", "-O2", "-std=c99", "-ffp-contract=off")
+N_OUT = 18
+
+_D = ctypes.c_double
+_P = ctypes.POINTER(ctypes.c_double)
+
+
+class _Polyline(ctypes.Structure):
+    _fields_ = [("x", _P), ("y", _P), ("h", _P), ("t", _P), ("s", _P), ("n", ctypes.c_int)]
+
+
+def _doubles(names: str) -> list[tuple[str, type]]:
+    return [(n, _D) for n in names.split()]
+
+
+class _Scene(ctypes.Structure):
+    _fields_ = [
+        ("t", _P),
+        ("n_steps", ctypes.c_int),
+        *_doubles("dt behaviour_start"),
+        ("grad_a", _P),
+        ("grad_b", _P),
+        ("grad_c", _P),
+        *_doubles("grad_dx0 grad_dxn"),
+        ("grad_uniform", ctypes.c_int),
+        ("grad_h", _D),
+        ("ego_path", _Polyline),
+        ("track", _Polyline),
+        ("route_x", _P),
+        ("route_y", _P),
+        ("route_n", ctypes.c_int),
+        *_doubles("v_start ego_x0 ego_y0 ego_yaw0 threat_x0 threat_y0 threat_yaw0"),
+        *_doubles("ego_length ego_width threat_length threat_width"),
+        ("cap", _D * 10),
+        ("sfm", _D * 10),
+        ("limits", _D * 3),
+        *_doubles("metric_dt safe_ttc alert_ttc comfort_accel comfort_jerk near_lo near_hi"),
+        ("zone_ttc_2d", ctypes.c_int),
+        ("pet_step", ctypes.c_int),
+        *_doubles("pet_reach ei_d_safe"),
+    ]
+
+
+class _Variant(ctypes.Structure):
+    _fields_ = [
+        ("cap_on", ctypes.c_int),
+        ("sfm_on", ctypes.c_int),
+        ("repulsive", ctypes.c_int),
+        *_doubles("cruise offset ego_speed0 threat_speed0"),
+    ]
+
+
+def _cache_dir() -> Path:
+    return Path(os.environ.get("VEI_CACHE_DIR") or Path.home() / ".cache" / "vei-scenario")
+
+
+_LIB: list = []
+
+
+def load_kernel():
+    """The compiled kernel (built on first use), or None when no C compiler can build it."""
+    if _LIB:
+        return _LIB[0]
+    from vei_scenario.errors import VeiInputError
+    from vei_scenario.fmu.native import c_source_dir, compiler
+
+    lib = None
+    try:
+        src = c_source_dir()
+        cc = compiler()
+        digest = hashlib.sha256()
+        for name in (*SOURCES, *HEADERS):
+            digest.update((src / name).read_bytes())
+        digest.update(" ".join((cc, *FLAGS)).encode())
+        target = _cache_dir() / f"libvei_batch-{digest.hexdigest()[:16]}.so"
+        if not target.exists():
+            target.parent.mkdir(parents=True, exist_ok=True)
+            fd, tmp = tempfile.mkstemp(prefix=".libvei_batch-", suffix=".so", dir=target.parent)
+            os.close(fd)
+            proc = subprocess.run(
+                [cc, *FLAGS, "-o", tmp, *(str(src / s) for s in SOURCES), "-lm"], capture_output=True, text=True
+            )
+            if proc.returncode != 0:
+                Path(tmp).unlink(missing_ok=True)
+                raise OSError(proc.stderr)
+            os.replace(tmp, target)
+        lib = ctypes.CDLL(str(target))
+        lib.vei_batch_run.argtypes = [ctypes.POINTER(_Scene), ctypes.POINTER(_Variant), ctypes.c_int, _P, _P]
+        lib.vei_batch_run.restype = ctypes.c_int
+    except (OSError, VeiInputError):
+        lib = None
+    _LIB.append(lib)
+    return lib
+
+
+def _ptr(a: np.ndarray):
+    return a.ctypes.data_as(_P)
+
+
+class NativeBatch:
+    """A :class:`BatchScenario` run by the compiled kernel: ``metrics(variants)`` gives ``vei run``'s
+    metric dicts, ``trajectories(variants)`` the recorded states (for tests)."""
+
+    def __init__(self, batch: BatchScenario, cfg: MetricConfig | None = None) -> None:
+        if len(batch.names) != 2:
+            raise NotBatchable("the compiled kernel runs the ego and one scooter")
+        self.batch, self.cfg = batch, cfg or MetricConfig()
+        self.lib = load_kernel()
+        if self.lib is None:
+            raise NotBatchable("no C compiler for the compiled kernel")
+        self._keep: list = []
+        self._scene_cache: dict[float, _Scene] = {}
+
+    def _arr(self, values) -> np.ndarray:
+        a = np.ascontiguousarray(np.asarray(values, float))
+        self._keep.append(a)
+        return a
+
+    def _polyline(self, poly, timed: bool) -> _Polyline:
+        x, y, h, s = (self._arr(v) for v in (poly.xs, poly.ys, poly.hs, poly.s))
+        t = self._arr(poly.ts) if timed else None
+        return _Polyline(_ptr(x), _ptr(y), _ptr(h), _ptr(t) if t is not None else None, _ptr(s), len(poly.xs))
+
+    def _scene(self, duration: float) -> _Scene:
+        if duration in self._scene_cache:
+            return self._scene_cache[duration]
+        b, cfg, dt = self.batch, self.cfg, self.batch.dt
+        if not duration >= 0:
+            raise NotBatchable("negative duration")
+        times = [0.0]
+        while not times[-1] > duration and times[-1] < 600.0 - 1e-9:
+            times.append(round(len(times) * dt, 9))
+        t = self._arr(times)
+        n = t.size
+        diffs = np.diff(t)
+        uniform = bool((diffs == diffs[0]).all())
+        dx1, dx2 = diffs[:-1], diffs[1:]
+        ga = self._arr(-(dx2) / (dx1 * (dx1 + dx2)))
+        gb = self._arr((dx2 - dx1) / (dx1 * dx2))
+        gc = self._arr(dx1 / (dx2 * (dx1 + dx2)))
+        ego, threat = b.ego, b.threat
+        _, ego_poly, _ = b.paths[ego]
+        _, track, _ = b.paths[threat]
+        from vei_scenario.interpreter.controllers import rider_route
+
+        route = np.array(rider_route(track))
+        rx, ry = self._arr(route[:, 0]), self._arr(route[:, 1])
+        ie, it = b.names.index(ego), b.names.index(threat)
+        el, ew, tl, tw = b.length[ie], b.width[ie], b.length[it], b.width[it]
+        metric_dt = float(np.median(diffs)) if n > 1 else 0.0
+        scene = _Scene(
+            _ptr(t),
+            n - 1,
+            dt,
+            b.behaviour_start_s,
+            _ptr(ga),
+            _ptr(gb),
+            _ptr(gc),
+            diffs[0],
+            diffs[-1],
+            int(uniform),
+            diffs[0],
+            self._polyline(ego_poly, False),
+            self._polyline(track, True),
+            _ptr(rx),
+            _ptr(ry),
+            route.shape[0],
+            (track.s[1] - track.s[0]) / (track.ts[1] - track.ts[0]),
+            *b.init_pose[ego],
+            *b.init_pose[threat],
+            el,
+            ew,
+            tl,
+            tw,
+            (_D * 10)(*b.cap_params.properties().values()),
+            (_D * 10)(*b.sfm_params.properties().values()),
+            (_D * 3)(b.limits.max_accel_mps2, b.limits.max_decel_mps2, b.limits.jerk_max_mps3),
+            metric_dt,
+            cfg.safe_ttc_s,
+            cfg.alert_ttc_s,
+            cfg.comfort_accel_mps2,
+            cfg.comfort_jerk_mps3,
+            cfg.near_miss_ttc_s[0],
+            cfg.near_miss_ttc_s[1],
+            int(cfg.zone_ttc != "approx"),
+            max(1, int(round(0.05 / metric_dt))) if metric_dt > 0 else 1,
+            0.5 * (math.hypot(el, ew) + math.hypot(tl, tw)),
+            0.5 * (math.hypot(el, ew) + math.hypot(tl, tw)),
+        )
+        self._scene_cache[duration] = scene
+        return scene
+
+    def prepare(self, variants: list[dict[str, str]]) -> tuple[_Scene, ctypes.Array]:
+        """The kernel's input for ``variants`` (Python work: do it before handing runs to threads)."""
+        b = self.batch
+        r = b.resolve(variants)
+        arr = (_Variant * len(variants))()
+        for i in range(len(variants)):
+            arr[i] = _Variant(
+                int(r.cap_on[i]),
+                int(r.sfm_on[i]),
+                int(r.rider[i] == "normal"),
+                r.cruise_mps[i],
+                r.offsets[b.threat][i],
+                r.init_speed[b.ego][i],
+                r.init_speed[b.threat][i],
+            )
+        return self._scene(r.duration), arr
+
+    def run(self, prepared, threads: int = 1, record: bool = False):
+        """(outputs (V, 18), trajectories (V, 10, T) or None) of prepared variants, on ``threads``
+        threads (the kernel releases the GIL)."""
+        scene, arr = prepared
+        n = len(arr)
+        out = np.empty((n, N_OUT))
+        traj = np.empty((n, 10, scene.n_steps + 1)) if record else None
+        bounds = np.linspace(0, n, max(1, min(threads, n)) + 1).astype(int)
+        if len(bounds) == 2:
+            self._run(scene, arr, 0, n, out, traj)
+        else:
+            with ThreadPoolExecutor(max_workers=len(bounds) - 1) as pool:
+                jobs = [
+                    pool.submit(self._run, scene, arr, bounds[k], bounds[k + 1], out, traj)
+                    for k in range(len(bounds) - 1)
+                ]
+                for job in jobs:
+                    job.result()
+        return out, traj
+
+    def _run(self, scene, arr, lo: int, hi: int, out: np.ndarray, traj: np.ndarray | None) -> None:
+        base = ctypes.cast(ctypes.byref(arr, lo * ctypes.sizeof(_Variant)), ctypes.POINTER(_Variant))
+        o = out[lo:hi]
+        tr = traj[lo:hi] if traj is not None else None
+        if self.lib.vei_batch_run(ctypes.byref(scene), base, hi - lo, _ptr(o), _ptr(tr) if tr is not None else None):
+            raise MemoryError("vei_batch_run: out of memory")
+
+    def metrics(self, variants: list[dict[str, str]], threads: int = 1) -> list[dict]:
+        """``vei run``'s metrics of every variant (the same dicts as :func:`compute_metrics`)."""
+        out, _ = self.run(self.prepare(variants), threads)
+        return self.rows(out)
+
+    def rows(self, out: np.ndarray) -> list[dict]:
+        return metric_rows(out, (self.batch.ego, self.batch.threat))
+
+
+def metric_rows(out: np.ndarray, who: tuple[str, str]) -> list[dict]:
+    raw = {
+        "collision": out[:, 0] != 0,
+        "collision_time_s": out[:, 1],
+        "collision_entities": out[:, 0] != 0,
+        "min_gap_m": out[:, 2],
+        "min_ttc_s": out[:, 3],
+        "min_ttc_approx_s": out[:, 4],
+        "ttc_zones_s": dict(zip(ZONES, (out[:, 5], out[:, 6], out[:, 7], out[:, 8]))),
+        "safety_index": out[:, 9],
+        "act_min_s": out[:, 10],
+        "ei_max_mps": out[:, 11],
+        "drac_max_mps2": out[:, 12],
+        "pet_s": out[:, 13],
+        "peak_decel_mps2": out[:, 14],
+        "max_jerk_mps3": out[:, 15],
+        "comfort_score": out[:, 16],
+        "near_miss": out[:, 17] != 0,
+    }
+    assert list(raw) == list(METRICS)
+    return [{n: to_python(n, r, (i,), who) for n, r in raw.items()} for i in range(out.shape[0])]
