@@ -14,19 +14,8 @@
 static double dmin(double a, double b) { return a < b ? a : b; }
 static double dmax(double a, double b) { return a > b ? a : b; }
 
-/* Boxes with their heading's cosine and sine computed once per step (the same values the models
- * compute from the heading each time they need them). */
-typedef struct {
-    double x, y, yaw, length, width, c, s;
-} TrigBox;
-
-static TrigBox trig_box(double x, double y, double yaw, double length, double width) {
-    TrigBox b = {x, y, yaw, length, width, cos(yaw), sin(yaw)};
-    return b;
-}
-
 /* Offsets (ox, oy) of a point outside a box along the box's axes; its distance is hypot(ox, oy). */
-static void point_box_offsets(double px, double py, const TrigBox *b, double *ox, double *oy) {
+static void point_box_offsets(double px, double py, const VeiTrigBox *b, double *ox, double *oy) {
     double dx = px - b->x, dy = py - b->y;
     double lx = b->c * dx + b->s * dy, ly = -b->s * dx + b->c * dy;
     *ox = dmax(fabs(lx) - 0.5 * b->length, 0.0);
@@ -36,7 +25,7 @@ static void point_box_offsets(double px, double py, const TrigBox *b, double *ox
 /* The least corner-to-box distance min_k hypot(ox_k, oy_k), with hypot evaluated only for corners whose
  * squared distance is within 1e-9 (relative) of the least: hypot is monotonic, so the corners left out
  * cannot give the minimum, and the result equals the minimum over all eight hypot values. */
-static double corners_to_box(const TrigBox *a, const TrigBox *b, double *best_d2, double ox[4], double oy[4]) {
+static double corners_to_box(const VeiTrigBox *a, const VeiTrigBox *b, double *best_d2, double ox[4], double oy[4]) {
     double c = a->c, s = a->s, hl = 0.5 * a->length, hw = 0.5 * a->width;
     const double lx[4] = {hl, -hl, -hl, hl}, ly[4] = {hw, hw, -hw, -hw};
     double least = INFINITY;
@@ -49,7 +38,7 @@ static double corners_to_box(const TrigBox *a, const TrigBox *b, double *best_d2
     return least;
 }
 
-static double box_gap(const TrigBox *a, const TrigBox *b) {
+static double box_gap(const VeiTrigBox *a, const VeiTrigBox *b) {
     double oxa[4], oya[4], oxb[4], oyb[4], la, lb;
     corners_to_box(a, b, &la, oxa, oya);
     corners_to_box(b, a, &lb, oxb, oyb);
@@ -59,50 +48,6 @@ static double box_gap(const TrigBox *a, const TrigBox *b) {
         if (oxb[k] * oxb[k] + oyb[k] * oyb[k] <= limit) best = dmin(best, hypot(oxb[k], oyb[k]));
     }
     return best;
-}
-
-/* vei_boxes_overlap and vei_time_to_contact with precomputed cosines and sines */
-static int overlap(const TrigBox *a, const TrigBox *b) {
-    double dx = b->x - a->x, dy = b->y - a->y;
-    double ca = a->c, sa = a->s, cb = b->c, sb = b->s;
-    double axes[4][2] = {{ca, sa}, {-sa, ca}, {cb, sb}, {-sb, cb}};
-    for (int k = 0; k < 4; k++) {
-        double ux = axes[k][0], uy = axes[k][1];
-        double ra = 0.5 * a->length * fabs(ux * ca + uy * sa) + 0.5 * a->width * fabs(-ux * sa + uy * ca);
-        double rb = 0.5 * b->length * fabs(ux * cb + uy * sb) + 0.5 * b->width * fabs(-ux * sb + uy * cb);
-        if (fabs(dx * ux + dy * uy) > ra + rb) return 0;
-    }
-    return 1;
-}
-
-static double time_to_contact(const TrigBox *a, double vxa, double vya, const TrigBox *b, double vxb, double vyb) {
-    double dx = b->x - a->x, dy = b->y - a->y, wx = vxb - vxa, wy = vyb - vya;
-    double ca = a->c, sa = a->s, cb = b->c, sb = b->s;
-    double axes[4][2] = {{ca, sa}, {-sa, ca}, {cb, sb}, {-sb, cb}};
-    double enter = -INFINITY, leave = INFINITY;
-    for (int k = 0; k < 4; k++) {
-        double ux = axes[k][0], uy = axes[k][1];
-        double r = 0.5 * a->length * fabs(ux * ca + uy * sa) + 0.5 * a->width * fabs(-ux * sa + uy * ca);
-        r += 0.5 * b->length * fabs(ux * cb + uy * sb) + 0.5 * b->width * fabs(-ux * sb + uy * cb);
-        double p = dx * ux + dy * uy, q = wx * ux + wy * uy;
-        if (fabs(q) <= 1e-12) {
-            if (fabs(p) > r) return INFINITY;
-            continue;
-        }
-        double t1 = (-r - p) / q, t2 = (r - p) / q;
-        enter = dmax(enter, dmin(t1, t2));
-        leave = dmin(leave, dmax(t1, t2));
-    }
-    return (enter <= leave && leave >= 0) ? dmax(enter, 0.0) : INFINITY;
-}
-
-/* vei_threat_time_to_conflict with the ego's cosine and sine computed once */
-static double time_to_conflict(const TrigBox *ego, double ego_speed, double margin, const TrigBox *threat, double tvx,
-                               double tvy) {
-    double c = ego->c, s = ego->s;
-    TrigBox corridor = {ego->x + 0.5 * margin * c, ego->y + 0.5 * margin * s, ego->yaw, ego->length + margin,
-                        ego->width + 2 * margin, c, s};
-    return time_to_contact(&corridor, ego_speed * c, ego_speed * s, threat, tvx, tvy);
 }
 
 enum { EX, EY, EYAW, ESPEED, EACCEL, TX, TY, TYAW, TSPEED, TACCEL, NTRAJ };
@@ -139,12 +84,12 @@ static void simulate(const VeiBatchScene *sc, const VeiBatchVariant *v, double *
         /* the ego: the planner where it is on, else its path at constant speed */
         double v0 = speed[0];
         if (v->cap_on) {
-            TrigBox ego = trig_box(x[0], y[0], yaw[0], sc->ego_length, sc->ego_width);
-            TrigBox threat = trig_box(x[1], y[1], yaw[1], sc->threat_length, sc->threat_width);
+            VeiTrigBox ego = vei_trig_box(x[0], y[0], yaw[0], sc->ego_length, sc->ego_width);
+            VeiTrigBox threat = vei_trig_box(x[1], y[1], yaw[1], sc->threat_length, sc->threat_width);
             double tvx = speed[1] * threat.c, tvy = speed[1] * threat.s;
             double m = sc->cap.corridor_margin_m;
-            double ttc = time_to_conflict(&ego, v0, m, &threat, tvx, tvy);
-            double resume = cap.brake ? time_to_conflict(&ego, v->cruise, m, &threat, tvx, tvy) : ttc;
+            double ttc = vei_trig_time_to_conflict(&ego, v0, m, &threat, tvx, tvy);
+            double resume = cap.brake ? vei_trig_time_to_conflict(&ego, v->cruise, m, &threat, tvx, tvy) : ttc;
             double d_safe;
             double a_cmd = vei_cap_step(&cap, &sc->cap, v->cruise, v0, ttc, resume, dt, &d_safe);
             VeiLongitudinal lon = {0.0, v0, accel[0]};
@@ -244,13 +189,13 @@ static double pet(const VeiBatchScene *sc, double *tr[NTRAJ], int n, int *in_e, 
             int i = ie[a] * step;
             double ex = tr[EX][i], ey = tr[EY][i];
             if (ex < bx0 - reach || ex > bx1 + reach || ey < by0 - reach || ey > by1 + reach) continue;
-            TrigBox eb = trig_box(ex, ey, tr[EYAW][i], sc->ego_length, sc->ego_width);
+            VeiTrigBox eb = vei_trig_box(ex, ey, tr[EYAW][i], sc->ego_length, sc->ego_width);
             for (int b = b0; b < b1; b++) {
                 int j = io[b] * step;
                 double dx = ex - tr[TX][j], dy = ey - tr[TY][j];
                 if (dx * dx + dy * dy > reach * reach) continue;
-                TrigBox ob = trig_box(tr[TX][j], tr[TY][j], tr[TYAW][j], sc->threat_length, sc->threat_width);
-                if (overlap(&eb, &ob)) in_e[ie[a]] = in_o[io[b]] = any = 1;
+                VeiTrigBox ob = vei_trig_box(tr[TX][j], tr[TY][j], tr[TYAW][j], sc->threat_length, sc->threat_width);
+                if (vei_trig_boxes_overlap(&eb, &ob)) in_e[ie[a]] = in_o[io[b]] = any = 1;
             }
         }
     }
@@ -289,16 +234,16 @@ static void score(const VeiBatchScene *sc, double *tr[NTRAJ], Scratch *w, double
     for (int k = 0; k < n; k++) {
         double ex = tr[EX][k], ey = tr[EY][k], eyaw = tr[EYAW][k], ev = tr[ESPEED][k];
         double ox = tr[TX][k], oy = tr[TY][k], oyaw = tr[TYAW][k], ov = tr[TSPEED][k];
-        TrigBox eb = trig_box(ex, ey, eyaw, sc->ego_length, sc->ego_width);
-        TrigBox ob = trig_box(ox, oy, oyaw, sc->threat_length, sc->threat_width);
-        int contact = overlap(&eb, &ob);
+        VeiTrigBox eb = vei_trig_box(ex, ey, eyaw, sc->ego_length, sc->ego_width);
+        VeiTrigBox ob = vei_trig_box(ox, oy, oyaw, sc->threat_length, sc->threat_width);
+        int contact = vei_trig_boxes_overlap(&eb, &ob);
         w->contact[k] = contact;
         if (contact && !any_contact) any_contact = 1, first_contact = k;
         double gap = contact ? 0.0 : box_gap(&eb, &ob);
         w->gap[k] = gap;
         min_gap = dmin(min_gap, gap);
         double evx = ev * eb.c, evy = ev * eb.s, ovx = ov * ob.c, ovy = ov * ob.s;
-        double ttc2d = time_to_contact(&eb, evx, evy, &ob, ovx, ovy);
+        double ttc2d = vei_trig_time_to_contact(&eb, evx, evy, &ob, ovx, ovy);
         min_ttc = dmin(min_ttc, ttc2d);
         /* the seed's approximation: gap to the other ahead in the ego's lane band / v_ego */
         double c = eb.c, s = eb.s, dx = ox - ex, dy = oy - ey, rel = oyaw - eyaw;

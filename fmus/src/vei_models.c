@@ -30,9 +30,15 @@ double vei_straight_ahead(double *x, double *y, double yaw, double speed, double
 static double dmin(double a, double b) { return a < b ? a : b; }
 static double dmax(double a, double b) { return a > b ? a : b; }
 
-double vei_time_to_contact(const VeiBox *a, double vxa, double vya, const VeiBox *b, double vxb, double vyb) {
+VeiTrigBox vei_trig_box(double x, double y, double yaw, double length, double width) {
+    VeiTrigBox b = {x, y, yaw, length, width, cos(yaw), sin(yaw)};
+    return b;
+}
+
+double vei_trig_time_to_contact(const VeiTrigBox *a, double vxa, double vya, const VeiTrigBox *b, double vxb,
+                                double vyb) {
     double dx = b->x - a->x, dy = b->y - a->y, wx = vxb - vxa, wy = vyb - vya;
-    double ca = cos(a->yaw), sa = sin(a->yaw), cb = cos(b->yaw), sb = sin(b->yaw);
+    double ca = a->c, sa = a->s, cb = b->c, sb = b->s;
     double axes[4][2] = {{ca, sa}, {-sa, ca}, {cb, sb}, {-sb, cb}};
     double enter = -INFINITY, leave = INFINITY;
     for (int k = 0; k < 4; k++) {
@@ -51,9 +57,9 @@ double vei_time_to_contact(const VeiBox *a, double vxa, double vya, const VeiBox
     return (enter <= leave && leave >= 0) ? dmax(enter, 0.0) : INFINITY;
 }
 
-int vei_boxes_overlap(const VeiBox *a, const VeiBox *b) {
+int vei_trig_boxes_overlap(const VeiTrigBox *a, const VeiTrigBox *b) {
     double dx = b->x - a->x, dy = b->y - a->y;
-    double ca = cos(a->yaw), sa = sin(a->yaw), cb = cos(b->yaw), sb = sin(b->yaw);
+    double ca = a->c, sa = a->s, cb = b->c, sb = b->s;
     double axes[4][2] = {{ca, sa}, {-sa, ca}, {cb, sb}, {-sb, cb}};
     for (int k = 0; k < 4; k++) {
         double ux = axes[k][0], uy = axes[k][1];
@@ -64,7 +70,18 @@ int vei_boxes_overlap(const VeiBox *a, const VeiBox *b) {
     return 1;
 }
 
-/* ---------------------------------------------------------------------------------------------- */
+double vei_time_to_contact(const VeiBox *a, double vxa, double vya, const VeiBox *b, double vxb, double vyb) {
+    VeiTrigBox ta = vei_trig_box(a->x, a->y, a->yaw, a->length, a->width);
+    VeiTrigBox tb = vei_trig_box(b->x, b->y, b->yaw, b->length, b->width);
+    return vei_trig_time_to_contact(&ta, vxa, vya, &tb, vxb, vyb);
+}
+
+int vei_boxes_overlap(const VeiBox *a, const VeiBox *b) {
+    VeiTrigBox ta = vei_trig_box(a->x, a->y, a->yaw, a->length, a->width);
+    VeiTrigBox tb = vei_trig_box(b->x, b->y, b->yaw, b->length, b->width);
+    return vei_trig_boxes_overlap(&ta, &tb);
+}
+
 static void closest_point_on_box(double px, double py, const VeiBox *b, double *qx, double *qy) {
     double c = cos(b->yaw), s = sin(b->yaw);
     double dx = px - b->x, dy = py - b->y;
@@ -177,12 +194,19 @@ double vei_cap_step(VeiCapState *st, const VeiCapParams *p, double cruise, doubl
     return a_cmd;
 }
 
+double vei_trig_time_to_conflict(const VeiTrigBox *ego, double ego_speed, double margin, const VeiTrigBox *threat,
+                                 double threat_vx, double threat_vy) {
+    double c = ego->c, s = ego->s;
+    VeiTrigBox corridor = {ego->x + 0.5 * margin * c, ego->y + 0.5 * margin * s, ego->yaw, ego->length + margin,
+                           ego->width + 2 * margin, c, s};
+    return vei_trig_time_to_contact(&corridor, ego_speed * c, ego_speed * s, threat, threat_vx, threat_vy);
+}
+
 double vei_threat_time_to_conflict(const VeiBox *ego, double ego_speed, double margin, const VeiBox *threat,
                                    double threat_vx, double threat_vy) {
-    double c = cos(ego->yaw), s = sin(ego->yaw);
-    VeiBox corridor = {ego->x + 0.5 * margin * c, ego->y + 0.5 * margin * s, ego->yaw, ego->length + margin,
-                       ego->width + 2 * margin};
-    return vei_time_to_contact(&corridor, ego_speed * c, ego_speed * s, threat, threat_vx, threat_vy);
+    VeiTrigBox te = vei_trig_box(ego->x, ego->y, ego->yaw, ego->length, ego->width);
+    VeiTrigBox tt = vei_trig_box(threat->x, threat->y, threat->yaw, threat->length, threat->width);
+    return vei_trig_time_to_conflict(&te, ego_speed, margin, &tt, threat_vx, threat_vy);
 }
 
 /* ---------------------------------------------------------------------------------------------- */

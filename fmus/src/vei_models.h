@@ -16,6 +16,16 @@ double vei_time_to_contact(const VeiBox *a, double vxa, double vya, const VeiBox
 /* vei_scenario.models.boxes.boxes_overlap_scalar */
 int vei_boxes_overlap(const VeiBox *a, const VeiBox *b);
 
+/* A box with the cosine and sine of its heading, for code that tests one box many times (the sweep
+ * kernel); the functions below are the two above with the trigonometry done once. */
+typedef struct { double x, y, yaw, length, width, c, s; } VeiTrigBox;
+VeiTrigBox vei_trig_box(double x, double y, double yaw, double length, double width);
+double vei_trig_time_to_contact(const VeiTrigBox *a, double vxa, double vya, const VeiTrigBox *b, double vxb,
+                                double vyb);
+int vei_trig_boxes_overlap(const VeiTrigBox *a, const VeiTrigBox *b);
+double vei_trig_time_to_conflict(const VeiTrigBox *ego, double ego_speed, double margin, const VeiTrigBox *threat,
+                                 double threat_vx, double threat_vy);
+
 /* --- social force model (vei_scenario.models.sfm) --- */
 typedef struct {
     double v0_mps, mass_kg, tau_s, sigma_m, repulsion_n, repulsion_range_m, waypoint_radius_m;
