@@ -12,8 +12,7 @@ import math
 
 from vei_scenario.fmu.variables import CAP, EGO, MAX_PATH, MAX_ROUTE, SFM, ModelSpec
 from vei_scenario.interpreter.entities import Polyline
-from vei_scenario.models.boxes import time_to_contact_scalar
-from vei_scenario.models.cap import BRAKE, CapParameters, CapState, ThreatView, cap_step
+from vei_scenario.models.cap import BRAKE, CapParameters, CapState, ThreatView, cap_step, threat_in_corridor
 from vei_scenario.models.sfm import RIDER_TYPES, SfmParameters, SfmState, sfm_step
 from vei_scenario.models.vehicle import Longitudinal, VehicleLimits, longitudinal_step
 
@@ -129,18 +128,11 @@ class CapModel(FmuModel):
         self.initialized = True
 
     def _view(self, speed: float) -> ThreatView:
-        v, m = self.values, self.params.corridor_margin_m
-        c, s = math.cos(v["ego_yaw"]), math.sin(v["ego_yaw"])
-        corridor = (
-            v["ego_x"] + 0.5 * m * c,
-            v["ego_y"] + 0.5 * m * s,
-            v["ego_yaw"],
-            v["ego_length_m"] + m,
-            v["ego_width_m"] + 2 * m,
-        )
+        v = self.values
+        ego = (v["ego_x"], v["ego_y"], v["ego_yaw"], v["ego_length_m"], v["ego_width_m"])
         threat = (v["threat_x"], v["threat_y"], v["threat_yaw"], v["threat_length_m"], v["threat_width_m"])
         tv = (v["threat_speed"] * math.cos(v["threat_yaw"]), v["threat_speed"] * math.sin(v["threat_yaw"]))
-        return ThreatView(time_to_contact_scalar(corridor, (speed * c, speed * s), threat, tv))
+        return threat_in_corridor(ego, speed, self.params.corridor_margin_m, threat, tv)
 
     def do_step(self, t: float, h: float) -> None:
         v = self.values

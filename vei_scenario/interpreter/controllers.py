@@ -12,8 +12,7 @@ import math
 
 from vei_scenario.errors import VeiInputError
 from vei_scenario.interpreter.entities import Entity, Polyline
-from vei_scenario.models.boxes import time_to_contact_scalar
-from vei_scenario.models.cap import BRAKE, CapParameters, CapState, ThreatView, cap_step
+from vei_scenario.models.cap import BRAKE, CapParameters, CapState, ThreatView, cap_step, threat_in_corridor
 from vei_scenario.models.sfm import RIDER_TYPES, SfmParameters, SfmState, sfm_step
 from vei_scenario.models.vehicle import Longitudinal, longitudinal_step
 
@@ -50,11 +49,8 @@ def threat_view(ego: Entity, threat: Entity, margin_m: float, ego_speed: float |
     """Time until the threat's box meets the ego's path corridor: the ego box widened by ``margin_m``
     on each side and lengthened by it in front, both moving at constant velocity (the ego at
     ``ego_speed`` along its heading when given)."""
-    ex, ey, eyaw, el, ew = ego.box()
-    c, s = math.cos(eyaw), math.sin(eyaw)
-    corridor = (ex + 0.5 * margin_m * c, ey + 0.5 * margin_m * s, eyaw, el + margin_m, ew + 2 * margin_m)
-    v = ego.velocity() if ego_speed is None else (ego_speed * c, ego_speed * s)
-    return ThreatView(time_to_contact_scalar(corridor, v, threat.box(), threat.velocity()))
+    speed = ego.speed if ego_speed is None else ego_speed
+    return threat_in_corridor(ego.box(), speed, margin_m, threat.box(), threat.velocity())
 
 
 class Controller:

@@ -13,6 +13,7 @@ from dataclasses import asdict, dataclass
 
 import numpy as np
 
+from vei_scenario.models.boxes import time_to_contact_scalar
 from vei_scenario.models.properties import from_properties
 
 
@@ -71,6 +72,24 @@ class ThreatView:
 
     def in_path(self, horizon_s: float) -> bool:
         return self.time_to_conflict_s <= horizon_s
+
+
+def threat_in_corridor(
+    ego_box: tuple[float, float, float, float, float],
+    ego_speed_mps: float,
+    margin_m: float,
+    threat_box: tuple[float, float, float, float, float],
+    threat_velocity: tuple[float, float],
+) -> ThreatView:
+    """The planner's view of the threat: the constant-velocity time until the threat's box (x, y, yaw,
+    length, width) meets the ego's path corridor, the ego box widened by ``margin_m`` on each side and
+    lengthened by it in front, the ego moving at ``ego_speed_mps`` along its heading."""
+    ex, ey, eyaw, el, ew = ego_box
+    c, s = math.cos(eyaw), math.sin(eyaw)
+    corridor = (ex + 0.5 * margin_m * c, ey + 0.5 * margin_m * s, eyaw, el + margin_m, ew + 2 * margin_m)
+    return ThreatView(
+        time_to_contact_scalar(corridor, (ego_speed_mps * c, ego_speed_mps * s), threat_box, threat_velocity)
+    )
 
 
 def cap_step(
