@@ -69,20 +69,18 @@ def _chunk(scenario: str, chunk: list[dict[str, str]], dt: float) -> list[dict]:
     engine = _batch_engine(scenario, dt)
     native = _native_engine(scenario, dt)
     rows: list[dict | None] = [None] * len(chunk)
-    if native is not None:
-        ok = [i for i, v in enumerate(chunk) if engine.accepts(v)]
-        if ok:
-            for i, m in zip(ok, native.metrics([chunk[i] for i in ok])):
-                rows[i] = {"status": "ok", "error": "", "metrics": m}
-    elif engine is not None:
-        from vei_scenario.batch import batch_pair
-        from vei_scenario.metrics import compute_metrics_batch
+    ok = [i for i, v in enumerate(chunk) if engine.accepts(v)] if engine is not None else []
+    if ok:
+        accepted = [chunk[i] for i in ok]
+        if native is not None:
+            metrics = native.metrics(accepted)
+        else:
+            from vei_scenario.batch import batch_pair
+            from vei_scenario.metrics import compute_metrics_batch
 
-        ok = [i for i, v in enumerate(chunk) if engine.accepts(v)]
-        if ok:
-            metrics = compute_metrics_batch(batch_pair(engine.run([chunk[i] for i in ok])), MetricConfig())
-            for i, m in zip(ok, metrics):
-                rows[i] = {"status": "ok", "error": "", "metrics": m}
+            metrics = compute_metrics_batch(batch_pair(engine.run(accepted)), MetricConfig())
+        for i, m in zip(ok, metrics):
+            rows[i] = {"status": "ok", "error": "", "metrics": m}
     return [r if r is not None else evaluate_variant(scenario, v, dt) for r, v in zip(rows, chunk)]
 
 
