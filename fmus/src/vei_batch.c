@@ -22,10 +22,8 @@ static void point_box_offsets(double px, double py, const VeiTrigBox *b, double 
     *oy = dmax(fabs(ly) - 0.5 * b->width, 0.0);
 }
 
-/* The least corner-to-box distance min_k hypot(ox_k, oy_k), with hypot evaluated only for corners whose
- * squared distance is within 1e-9 (relative) of the least: hypot is monotonic, so the corners left out
- * cannot give the minimum, and the result equals the minimum over all eight hypot values. */
-static double corners_to_box(const VeiTrigBox *a, const VeiTrigBox *b, double *best_d2, double ox[4], double oy[4]) {
+/* The offsets of a's corners from b, and the least squared corner distance. */
+static double corners_to_box(const VeiTrigBox *a, const VeiTrigBox *b, double ox[4], double oy[4]) {
     double c = a->c, s = a->s, hl = 0.5 * a->length, hw = 0.5 * a->width;
     const double lx[4] = {hl, -hl, -hl, hl}, ly[4] = {hw, hw, -hw, -hw};
     double least = INFINITY;
@@ -34,14 +32,15 @@ static double corners_to_box(const VeiTrigBox *a, const VeiTrigBox *b, double *b
         double d2 = ox[k] * ox[k] + oy[k] * oy[k];
         if (d2 < least) least = d2;
     }
-    *best_d2 = least;
     return least;
 }
 
+/* The least corner-to-box distance min_k hypot(ox_k, oy_k) both ways, with hypot evaluated only for
+ * corners whose squared distance is within 1e-9 (relative) of the least: hypot is monotonic, so the
+ * corners left out cannot give the minimum, and the result equals the minimum over all eight. */
 static double box_gap(const VeiTrigBox *a, const VeiTrigBox *b) {
-    double oxa[4], oya[4], oxb[4], oyb[4], la, lb;
-    corners_to_box(a, b, &la, oxa, oya);
-    corners_to_box(b, a, &lb, oxb, oyb);
+    double oxa[4], oya[4], oxb[4], oyb[4];
+    double la = corners_to_box(a, b, oxa, oya), lb = corners_to_box(b, a, oxb, oyb);
     double limit = dmin(la, lb) * (1.0 + 1e-9), best = INFINITY;
     for (int k = 0; k < 4; k++) {
         if (oxa[k] * oxa[k] + oya[k] * oya[k] <= limit) best = dmin(best, hypot(oxa[k], oya[k]));
@@ -157,7 +156,7 @@ static double circular_mean_angle(const double *yaw, const int *in, int n) {
 
 static double pet(const VeiBatchScene *sc, double *tr[NTRAJ], int n, int *in_e, int *in_o, int *ie, int *io) {
     int step = sc->pet_step, m = 0;
-    double reach = sc->pet_reach;
+    double reach = sc->radius_sum;
     double exmin = INFINITY, exmax = -INFINITY, eymin = INFINITY, eymax = -INFINITY;
     double oxmin = INFINITY, oxmax = -INFINITY, oymin = INFINITY, oymax = -INFINITY;
     for (int k = 0; k < n; k += step, m++) {
@@ -263,7 +262,7 @@ static void score(const VeiBatchScene *sc, double *tr[NTRAJ], Scratch *w, double
         double v2 = vx * vx + vy * vy;
         int closing = (rx * vx + ry * vy) < 0;
         double mfd = v2 > 1e-12 ? fabs(rx * vy - ry * vx) / sqrt(v2) : hypot(rx, ry);
-        double in_depth = closing ? sc->ei_d_safe - mfd : 0.0;
+        double in_depth = closing ? sc->radius_sum - mfd : 0.0;
         double ttc_ei = dmax(ttc2d, sc->metric_dt);
         double ei = (in_depth > 0 && isfinite(ttc2d)) ? in_depth / ttc_ei : 0.0;
         ei_max = dmax(ei_max, ei);

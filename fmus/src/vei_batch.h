@@ -32,7 +32,7 @@ typedef struct {
     double safe_ttc, alert_ttc, comfort_accel, comfort_jerk, near_lo, near_hi;
     int zone_ttc_2d;
     int pet_step;
-    double pet_reach, ei_d_safe;
+    double radius_sum; /* sum of the circumscribed radii: PET's reach and EI's safety distance */
 } VeiBatchScene;
 
 typedef struct {

@@ -17,7 +17,12 @@ from pathlib import Path
 
 import numpy as np
 
-from vei_scenario.interpreter.controllers import CollisionAvoidanceController, SocialForceController, rider_route
+from vei_scenario.interpreter.controllers import (
+    CollisionAvoidanceController,
+    SocialForceController,
+    recorded_start_speed,
+    rider_route,
+)
 from vei_scenario.interpreter.document import load_scenario, resolve_value
 from vei_scenario.interpreter.engine import Simulation
 from vei_scenario.interpreter.entities import Polyline
@@ -325,7 +330,7 @@ class BatchScenario:
         # The rider's route and start, as SocialForceController._prepare builds them.
         route = np.array(rider_route(threat_poly))
         t_start = threat_poly.ts[0] * 1.0 + offsets[self.threat]
-        v_start = (threat_poly.s[1] - threat_poly.s[0]) / (threat_poly.ts[1] - threat_poly.ts[0])
+        v_start = recorded_start_speed(threat_poly)
         sfm = None  # (x, y, vx, vy, wp) once riding
         riding = np.zeros(V, bool)
         brake = np.zeros(V, bool)

@@ -66,7 +66,7 @@ class _Scene(ctypes.Structure):
         *_doubles("metric_dt safe_ttc alert_ttc comfort_accel comfort_jerk near_lo near_hi"),
         ("zone_ttc_2d", ctypes.c_int),
         ("pet_step", ctypes.c_int),
-        *_doubles("pet_reach ei_d_safe"),
+        ("radius_sum", _D),
     ]
 
 
@@ -170,7 +170,7 @@ class NativeBatch:
         ego, threat = b.ego, b.threat
         _, ego_poly, _ = b.paths[ego]
         _, track, _ = b.paths[threat]
-        from vei_scenario.interpreter.controllers import rider_route
+        from vei_scenario.interpreter.controllers import recorded_start_speed, rider_route
 
         route = np.array(rider_route(track))
         rx, ry = self._arr(route[:, 0]), self._arr(route[:, 1])
@@ -194,7 +194,7 @@ class NativeBatch:
             _ptr(rx),
             _ptr(ry),
             route.shape[0],
-            (track.s[1] - track.s[0]) / (track.ts[1] - track.ts[0]),
+            recorded_start_speed(track),
             *b.init_pose[ego],
             *b.init_pose[threat],
             el,
@@ -213,7 +213,6 @@ class NativeBatch:
             cfg.near_miss_ttc_s[1],
             int(cfg.zone_ttc != "approx"),
             max(1, int(round(0.05 / metric_dt))) if metric_dt > 0 else 1,
-            0.5 * (math.hypot(el, ew) + math.hypot(tl, tw)),
             0.5 * (math.hypot(el, ew) + math.hypot(tl, tw)),
         )
         self._scene_cache[duration] = scene

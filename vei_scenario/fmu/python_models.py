@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 
 from vei_scenario.fmu.variables import CAP, EGO, MAX_PATH, MAX_ROUTE, SFM, ModelSpec
+from vei_scenario.interpreter.controllers import recorded_start_speed
 from vei_scenario.interpreter.entities import Polyline
 from vei_scenario.models.cap import BRAKE, CapParameters, CapState, ThreatView, cap_step, threat_in_corridor
 from vei_scenario.models.sfm import RIDER_TYPES, SfmParameters, SfmState, sfm_step
@@ -73,7 +74,7 @@ class SfmModel(FmuModel):
         self.route = list(zip(self.array("route_x", nr), self.array("route_y", nr)))
         self.riding, self.fs, self.state = False, 0.0, None
         self.t_start = ts[0] * 1.0 + v["time_shift_s"]
-        self.v_start = (self.track.s[1] - self.track.s[0]) / (ts[1] - ts[0])
+        self.v_start = recorded_start_speed(self.track)
         v.update(x=v["x0"], y=v["y0"], yaw=v["yaw0"], speed=v["speed0"], accel=0.0, riding=False, waypoint=0)
         v["vx"], v["vy"] = v["speed"] * math.cos(v["yaw"]), v["speed"] * math.sin(v["yaw"])
         self.initialized = True

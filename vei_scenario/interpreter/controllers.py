@@ -34,6 +34,13 @@ def rider_route(polyline: Polyline) -> list[tuple[float, float]]:
     return route
 
 
+def recorded_start_speed(polyline: Polyline) -> float:
+    """The speed of the recording's first segment: the model rider starts at it."""
+    if len(polyline.ts) < 2:
+        return 0.0
+    return (polyline.s[1] - polyline.s[0]) / (polyline.ts[1] - polyline.ts[0])
+
+
 def advance_along(e: Entity, ds: float) -> None:
     """Move an entity ``ds`` metres along its followed path, or straight ahead without one."""
     f = e.follower
@@ -94,8 +101,7 @@ class SocialForceController(Controller):
         if f is not None and f.timing is not None and polyline.timed:
             # Ride from the moment the recording starts, shifted like the replay would be.
             self.t_start = f.sim_time_of(polyline.ts[0])
-            dt0 = polyline.ts[1] - polyline.ts[0] if len(polyline.ts) > 1 else 1.0
-            self.v_start = (polyline.s[1] - polyline.s[0]) / dt0 if len(polyline.ts) > 1 else 0.0
+            self.v_start = recorded_start_speed(polyline)
         else:
             self.t_start, self.v_start = ctx.t, e.speed
         if self.ego_name not in ctx.entities:

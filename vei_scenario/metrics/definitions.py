@@ -83,6 +83,13 @@ def act_min_s(p: PairSeries, cfg: MetricConfig) -> np.ndarray:
     return np.where(p.contact, 0.0, act).min(axis=-1)
 
 
+def _circumradii(p: PairSeries) -> float:
+    """Sum of the two boxes' circumscribed radii (half diagonals): EI's safety distance, and the
+    centre distance beyond which two boxes cannot touch."""
+    e, o = p.ego, p.other
+    return 0.5 * (math.hypot(e.length, e.width) + math.hypot(o.length, o.width))
+
+
 def ei_max_mps(p: PairSeries, cfg: MetricConfig) -> np.ndarray:
     """Maximum Emergency Index (m/s): EI = InDepth / TTC2D (Cheng et al. 2025). InDepth = D_safe − MFD:
     how deep the two safety regions would intrude into each other on the current relative course,
@@ -95,7 +102,7 @@ def ei_max_mps(p: PairSeries, cfg: MetricConfig) -> np.ndarray:
     closing = (rx * vx + ry * vy) < 0
     with np.errstate(divide="ignore", invalid="ignore"):
         mfd = np.where(v2 > 1e-12, np.abs(rx * vy - ry * vx) / np.sqrt(v2), np.hypot(rx, ry))
-        d_safe = 0.5 * (math.hypot(e.length, e.width) + math.hypot(o.length, o.width))
+        d_safe = _circumradii(p)
         in_depth = np.where(closing, d_safe - mfd, 0.0)
         ttc = np.maximum(p.ttc_2d, p.dt)
         ei = np.where((in_depth > 0) & np.isfinite(p.ttc_2d), in_depth / ttc, 0.0)
@@ -127,7 +134,7 @@ def conflict_area_samples(p: PairSeries) -> tuple[np.ndarray, np.ndarray, np.nda
     ex, ey, eyaw = e.x[idx], e.y[idx], e.yaw[idx]
     ox, oy, oyaw = o.x[idx], o.y[idx], o.yaw[idx]
     in_e, in_o = np.zeros(idx.size, bool), np.zeros(idx.size, bool)
-    reach = 0.5 * (math.hypot(e.length, e.width) + math.hypot(o.length, o.width))
+    reach = _circumradii(p)
 
     def near(x, y, bx, by):
         return np.nonzero(
