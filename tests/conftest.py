@@ -75,3 +75,15 @@ def load_generator():
 
 def site_packages(venv: Path) -> Path:
     return Path(sorted(glob.glob(str(venv / "lib" / "python*" / "site-packages")))[0])
+
+
+@pytest.fixture(scope="session")
+def esmini():
+    """esmini, the reference player: ``$VEI_ESMINI`` or ``../shared/esmini/bin/esmini`` beside the
+    checkout. Skipped where it is absent (a user's machine); CI has it and so runs the cross-checks."""
+    from vei_scenario.conformance.esmini import find_esmini
+
+    found = find_esmini(ROOT.parent / "shared" / "esmini" / "bin" / "esmini")
+    if found is None:
+        pytest.skip("esmini not found (set VEI_ESMINI or place it at ../shared/esmini/bin/esmini)")
+    return found

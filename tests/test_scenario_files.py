@@ -126,14 +126,14 @@ def test_trajectories_are_polylines_with_scenario_times(compiled):
     assert ego_t[0] == 0.0 and ego_t[-1] == pytest.approx(25.0)
 
 
-def test_threat_timing_offset_is_the_timeshift_parameter(compiled):
+def test_threat_timing_offset_is_minus_the_timeshift_parameter(compiled):
     root = etree.parse(str(compiled["case_study"].written[0])).getroot()
     timings = {
         g.find("Actors/EntityRef").get("entityRef"): g.find(".//Timing")
         for g in root.iter("ManeuverGroup")
         if g.find(".//Timing") is not None
     }
-    assert timings["scooter_1"].get("offset") == "$TimeShift"
+    assert timings["scooter_1"].get("offset") == "${-$TimeShift}"  # esmini: trajectory time t + offset
     assert "Ego" not in timings  # the ego follows its path at $EgoCruiseSpeed, no timing
     ego_init = next(p for p in root.iter("Private") if p.get("entityRef") == "Ego")
     assert ego_init.find(".//AbsoluteTargetSpeed").get("value") == "$EgoCruiseSpeed"

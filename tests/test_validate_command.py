@@ -33,7 +33,7 @@ def test_clean_files_exit_0(scenario_dir, capsys, qc_venv):
 
 
 RULE_CASES = {
-    "parameter.undeclared": ('offset="$TimeShift"', 'offset="$Shift2"'),
+    "parameter.undeclared": ('offset="${-$TimeShift}"', 'offset="${-$Shift2}"'),
     "trajectory.vertex-time": ('<Vertex time="0.1">', '<Vertex time="0.0">'),
     "reference.dangling": ('<EntityRef entityRef="scooter_1"/>', '<EntityRef entityRef="scooter_7"/>'),
     "file.missing": ('<LogicFile filepath="scenario.xodr"/>', '<LogicFile filepath="missing.xodr"/>'),

@@ -144,7 +144,7 @@ def compile_clip(clip_path: str | Path, output: str | Path, options: CompileOpti
         variant_combinations,
         variant_filename,
     )
-    from vei_scenario.openscenario.scenario_writer import scenario_xml
+    from vei_scenario.openscenario.scenario_writer import declares_time_shift, scenario_xml
 
     outputs = OutputSet()
     outputs.add(output, scenario_xml(model, opts.osc_minor_version))
@@ -153,7 +153,14 @@ def compile_clip(clip_path: str | Path, output: str | Path, options: CompileOpti
     dist_minor = max(opts.osc_minor_version, 1)
     if dist_minor != opts.osc_minor_version:
         notes.append("OpenSCENARIO 1.0 has no ParameterValueDistribution: the variations file is written as 1.1")
-    outputs.add(output.with_name(f"{stem}.variations.xosc"), distribution_xml(model, output.name, dist_minor))
+        notes.append(
+            "OpenSCENARIO 1.0 has no expressions for the Timing offset ${-$TimeShift}: the 1.0 scenario replays the"
+            " threat as recorded and declares no TimeShift (the --variants files carry each shift)"
+        )
+    outputs.add(
+        output.with_name(f"{stem}.variations.xosc"),
+        distribution_xml(model, output.name, dist_minor, time_shift=declares_time_shift(opts.osc_minor_version)),
+    )
     if opts.variants_dir is not None:
         vdir = Path(opts.variants_dir)
         for i, values in enumerate(variant_combinations(model)):

@@ -52,3 +52,8 @@ def float_attribute(path: Path | str | None, el, name: str) -> float:
     if not math.isfinite(v):
         raise VeiInputError(path, f"line {el.sourceline}", f"<{el.tag}> {name} is not finite")
     return v
+
+
+def first_element(el):
+    """The first child of ``el`` that is an element (comments and processing instructions skipped)."""
+    return next((c for c in el if isinstance(c.tag, str)), None)

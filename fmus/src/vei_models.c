@@ -275,14 +275,22 @@ void vei_polyline_at_s(const VeiPolyline *p, double s, double *x, double *y, dou
     lerp(p, i, ds <= 0 ? 0.0 : (s - p->s[i]) / ds, x, y, h);
 }
 
+/* Speed of the last segment of a timed polyline (Polyline.end_speed). */
+static double end_speed(const VeiPolyline *p) {
+    const int e = p->n - 1;
+    return (p->s[e] - p->s[e - 1]) / (p->t[e] - p->t[e - 1]);
+}
+
 void vei_polyline_at_time(const VeiPolyline *p, double t, double *x, double *y, double *h) {
     const double *ts = p->t;
     if (t <= ts[0]) {
         *x = p->x[0], *y = p->y[0], *h = p->h[0];
         return;
     }
-    if (t >= ts[p->n - 1]) {
-        *x = p->x[p->n - 1], *y = p->y[p->n - 1], *h = p->h[p->n - 1];
+    if (t >= ts[p->n - 1]) { /* after the recording: on along the last heading at the last speed */
+        const int e = p->n - 1;
+        double d = (t - ts[e]) * end_speed(p);
+        *x = p->x[e] + d * cos(p->h[e]), *y = p->y[e] + d * sin(p->h[e]), *h = p->h[e];
         return;
     }
     int i = bisect_right(ts, p->n, t) - 1;
@@ -292,7 +300,7 @@ void vei_polyline_at_time(const VeiPolyline *p, double t, double *x, double *y, 
 double vei_polyline_s_at_time(const VeiPolyline *p, double t) {
     const double *ts = p->t;
     if (t <= ts[0]) return 0.0;
-    if (t >= ts[p->n - 1]) return p->s[p->n - 1];
+    if (t >= ts[p->n - 1]) return p->s[p->n - 1] + (t - ts[p->n - 1]) * end_speed(p);
     int i = bisect_right(ts, p->n, t) - 1;
     return p->s[i] + (t - ts[i]) / (ts[i + 1] - ts[i]) * (p->s[i + 1] - p->s[i]);
 }

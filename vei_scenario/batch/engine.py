@@ -49,6 +49,7 @@ class PathArrays:
         self.x, self.y, self.h = np.array(p.xs), np.array(p.ys), np.array(p.hs)
         self.s = np.array(p.s)
         self.t = np.array(p.ts, float) if p.timed else None
+        self.end_speed = p.end_speed if p.timed else 0.0
         self.length = p.length
 
     def _lerp(self, i, f):
@@ -68,19 +69,27 @@ class PathArrays:
         return self._held(self._lerp(i, f), s <= 0, s >= self.s[-1])
 
     def _held(self, pose, before, after):
-        """Hold the first vertex before the path and the last one after it, as Polyline does."""
+        """Hold the first vertex before the path and the last one after it, as Polyline.at_s does."""
         return tuple(np.where(before, v[0], np.where(after, v[-1], q)) for v, q in zip((self.x, self.y, self.h), pose))
 
     def at_time(self, t):
+        """Polyline.at_time: held before the start, continued along the last heading after the end."""
         ts = self.t
         i = np.clip(np.searchsorted(ts, t, side="right") - 1, 0, ts.size - 2)
-        return self._held(self._lerp(i, (t - ts[i]) / (ts[i + 1] - ts[i])), t <= ts[0], t >= ts[-1])
+        x, y, h = self._held(self._lerp(i, (t - ts[i]) / (ts[i + 1] - ts[i])), t <= ts[0], t >= ts[-1])
+        d = (t - ts[-1]) * self.end_speed
+        after = t >= ts[-1]
+        return (
+            np.where(after, self.x[-1] + d * math.cos(self.h[-1]), x),
+            np.where(after, self.y[-1] + d * math.sin(self.h[-1]), y),
+            h,
+        )
 
     def s_at_time(self, t):
         ts = self.t
         i = np.clip(np.searchsorted(ts, t, side="right") - 1, 0, ts.size - 2)
         s = self.s[i] + (t - ts[i]) / (ts[i + 1] - ts[i]) * (self.s[i + 1] - self.s[i])
-        return np.where(t <= ts[0], 0.0, np.where(t >= ts[-1], self.s[-1], s))
+        return np.where(t <= ts[0], 0.0, np.where(t >= ts[-1], self.s[-1] + (t - ts[-1]) * self.end_speed, s))
 
     def project(self, px, py):
         """Arc length of the closest point of the path (the interpreter's FollowTrajectory start)."""
@@ -146,7 +155,7 @@ class Resolved:
     sfm_on: np.ndarray
     cap_on: np.ndarray
     cruise_mps: np.ndarray
-    offsets: dict[str, np.ndarray]  # timing offset per timed entity
+    delays: dict[str, np.ndarray]  # per timed entity: how late it plays its trajectory (−Timing offset)
     init_speed: dict[str, np.ndarray]
 
 
@@ -236,12 +245,16 @@ class BatchScenario:
         for act in raw.iterfind("Storyboard/Story/Act"):
             conds = act.findall("StartTrigger/ConditionGroup/Condition")
             st = act.find("StartTrigger//SimulationTimeCondition")
-            if len(conds) != 1 or st is None or st.get("rule") != "greaterThan" or float(conds[0].get("delay", 0)):
-                raise NotBatchable("acts must start on one SimulationTime > t condition")
-            starts.add(float(resolve_value(self.path, st, "value", st.get("value"), self.defaults)))
+            rule = st.get("rule") if st is not None else None
+            if len(conds) != 1 or rule not in ("greaterThan", "greaterOrEqual") or float(conds[0].get("delay", 0)):
+                raise NotBatchable("acts must start on one SimulationTime > t or >= t condition")
+            value = float(resolve_value(self.path, st, "value", st.get("value"), self.defaults))
+            # "t >= v" on the step grid is "t > v - dt/2": one threshold for both rules.
+            starts.add(value - 0.5 * dt if rule == "greaterOrEqual" else value)
         if len(starts) != 1:
             raise NotBatchable("all acts must start at the same time")
-        #: The entities keep their Init speed and heading until the first step that begins after this.
+        #: The entities keep their Init speed and heading until the first step that begins after this
+        #: (below 0 when the acts start at the first step).
         self.behaviour_start_s = starts.pop()
         stop = raw.find("Storyboard/StopTrigger//SimulationTimeCondition")
         if stop is None or stop.get("rule") != "greaterThan":
@@ -302,20 +315,20 @@ class BatchScenario:
             active(self.threat) & np.isin(rider, ("normal", "aggressive")),
             active(self.ego) & (np.array(per_variant(self.enabled_raw)) == "true"),
             np.array([float(v) for v in per_variant(self.cruise_raw)]),
-            {n: np.array([float(v) for v in per_variant(raw)]) for n, raw in self.offset_raw.items()},
+            {n: -np.array([float(v) for v in per_variant(raw)]) for n, raw in self.offset_raw.items()},
             {n: np.array([float(v) for v in per_variant(self.init_speed_raw[n])]) for n in self.names},
         )
 
     def run(self, variants: list[dict[str, str]]) -> BatchResult:
         dt, V, E = self.dt, len(variants), len(self.names)
         r = self.resolve(variants)
-        duration, rider, sfm_on, cap_on, cruise, offsets = (
+        duration, rider, sfm_on, cap_on, cruise, delays = (
             r.duration,
             r.rider,
             r.sfm_on,
             r.cap_on,
             r.cruise_mps,
-            r.offsets,
+            r.delays,
         )
         repulsive = rider == "normal"
 
@@ -329,7 +342,7 @@ class BatchScenario:
         threat_path, threat_poly, _ = self.paths[self.threat]
         # The rider's route and start, as SocialForceController._prepare builds them.
         route = np.array(rider_route(threat_poly))
-        t_start = threat_poly.ts[0] * 1.0 + offsets[self.threat]
+        t_start = threat_poly.ts[0] * 1.0 + delays[self.threat]
         v_start = recorded_start_speed(threat_poly)
         sfm = None  # (x, y, vx, vy, wp) once riding
         riding = np.zeros(V, bool)
@@ -395,7 +408,7 @@ class BatchScenario:
                         path, x, y, yaw, speed, accel, fs, cap_on, cruise, ti, brake, integral, prev_err, dt
                     )
                     continue
-                tt = (t_next - offsets.get(n, np.zeros(V))) / 1.0
+                tt = t_next - delays.get(n, np.zeros(V))
                 target = path.s_at_time(tt)
                 px, py, ph = path.at_time(tt)
                 spd = (target - fs[k]) / dt

@@ -229,7 +229,7 @@ class NativeBatch:
                 int(r.sfm_on[i]),
                 int(r.rider[i] == "normal"),
                 r.cruise_mps[i],
-                r.offsets[b.threat][i],
+                r.delays[b.threat][i],
                 r.init_speed[b.ego][i],
                 r.init_speed[b.threat][i],
             )

@@ -129,7 +129,7 @@ def closed_loop(scenario: str | Path, values: dict[str, str] | None = None, dt: 
         "yaw0": syaw,
         "speed0": float(r.init_speed[b.threat][0]),
         "behaviour_start_s": start,
-        "time_shift_s": float(r.offsets[b.threat][0]),
+        "time_shift_s": float(r.delays[b.threat][0]),
         "track_n": len(track.xs),
         **arrays("track", {"t": track.ts, "x": track.xs, "y": track.ys, "h": track.hs}),
         "route_n": len(route),

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from vei_scenario.interpreter.controllers import make_controller, polyline_from
 from vei_scenario.interpreter.entities import PathFollower, SpeedProfile
+from vei_scenario.safe_xml import first_element
 
 
 class Action:
@@ -111,6 +112,8 @@ class FollowTrajectory(Action):
         if timing is not None:
             if not self.polyline.timed:
                 raise ctx.error(timing, "Timing needs a time on every vertex")
+            if any(b <= a for a, b in zip(self.polyline.ts, self.polyline.ts[1:])):
+                raise ctx.error(traj, "polyline vertex times must increase when the trajectory is timed")
             scale = float(timing.get("scale", "1"))
             if scale <= 0:
                 raise ctx.error(timing, "Timing scale must be positive")
@@ -126,6 +129,8 @@ class FollowTrajectory(Action):
         e.follower = PathFollower(self.polyline, self.timing, self.mode, ctx.t, self.initial_s)
         if self.timing is None:  # continue from where the entity is: its projection onto the path
             e.follower.s = max(self.polyline.project(e.x, e.y), self.initial_s)
+        elif self.mode == "position" and ctx.initializing:  # logged at t = 0 on its trajectory
+            e.x, e.y, e.yaw = self.polyline.at_time(e.follower.trajectory_time(ctx.t))
 
     def update(self, ctx) -> None:
         e = ctx.entities[self.entity]
@@ -194,9 +199,9 @@ class ParameterSet(Action):
 
 def private_actions(pa, entity: str, ctx) -> list[Action]:
     """Runtime actions of a ``<PrivateAction>`` for one entity."""
-    if not len(pa):
+    kind = first_element(pa)
+    if kind is None:
         raise ctx.error(pa, "empty PrivateAction")
-    kind = pa[0]
     if kind.tag == "TeleportAction":
         return [Teleport(entity, kind, ctx)]
     if kind.tag == "LongitudinalAction" and kind.find("SpeedAction") is not None:
@@ -215,12 +220,13 @@ def private_actions(pa, entity: str, ctx) -> list[Action]:
         return out
     if kind.tag == "ActivateControllerAction":  # OpenSCENARIO 1.0/1.1 place it directly here
         return [ActivateController(entity, kind, ctx)]
-    inner = kind[0].tag if len(kind) else ""
+    inner_el = first_element(kind)
+    inner = inner_el.tag if inner_el is not None else ""
     raise ctx.error(kind, f"<{kind.tag}>{'/<' + inner + '>' if inner else ''} is not supported by vei run")
 
 
 def global_actions(ga, ctx) -> list[Action]:
-    kind = ga[0] if len(ga) else None
+    kind = first_element(ga)
     if kind is not None and kind.tag == "ParameterAction" and kind.find("SetAction") is not None:  # 1.0
         return [ParameterSet(kind.get("parameterRef"), kind.find("SetAction").get("value"), kind, ctx)]
     if kind is not None and kind.tag == "ParameterSetAction":

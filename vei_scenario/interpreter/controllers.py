@@ -206,6 +206,4 @@ def polyline_from(el, ctx) -> Polyline:
         ts.append(float(v.get("time")) if v.get("time") is not None else None)
     if len(xs) < 2:
         raise ctx.error(el, "a polyline needs at least two vertices")
-    if all(t is not None for t in ts) and any(b <= a for a, b in zip(ts, ts[1:])):
-        raise ctx.error(el, "polyline vertex times must increase")
     return Polyline(xs, ys, hs, ts)

@@ -46,6 +46,7 @@ class EntityTrace:
     speed: np.ndarray
     accel: np.ndarray
     status: list[str]
+    center_x: float = 0.0  # box centre ahead of the reference point (x, y) along the heading (m)
 
 
 @dataclass
@@ -78,13 +79,17 @@ def _entity(obj, ctx) -> Entity:
         limits = VehicleLimits(
             float(perf.get("maxAcceleration")), float(perf.get("maxDeceleration")), limits.jerk_max_mps3
         )
+    # esmini's reading, followed here: the position is the rear axle, so the box centre lies
+    # Center.x - RearAxle.positionX ahead of it (the two agree when the rear axle is at 0).
+    rear = kind.find("Axles/RearAxle")
+    rear_x = float(rear.get("positionX", "0")) if rear is not None else 0.0
     return Entity(
         name,
         category,
         float(dims.get("length")),
         float(dims.get("width")),
         float(dims.get("height")),
-        float(centre.get("x", "0")),
+        float(centre.get("x", "0")) - rear_x,
         limits,
     )
 
@@ -334,8 +339,10 @@ class Simulation:
                 r[4].append(e.accel)
                 r[5].append(e.status)
 
+        ctx.initializing = True
         for a in self.init_actions:
             a.start(ctx)
+        ctx.initializing = False
         self._collide(collisions)
         record()
         reason = f"time limit {self.max_time:g} s"
@@ -363,7 +370,9 @@ class Simulation:
         traces = {}
         for n in names:
             e, r = ctx.entities[n], rec[n]
-            traces[n] = EntityTrace(n, e.category, e.length, e.width, t, *(np.array(v) for v in r[:5]), r[5])
+            traces[n] = EntityTrace(
+                n, e.category, e.length, e.width, t, *(np.array(v) for v in r[:5]), r[5], e.center_x
+            )
         return RunResult(
             str(self.doc.path),
             dt,

@@ -38,12 +38,22 @@ class Polyline:
             _wrap(h0 + f * _wrap(h1 - h0)),
         )
 
+    @property
+    def end_speed(self) -> float:
+        """Speed of the last segment of a timed polyline: a replayed road user keeps it afterwards."""
+        return (self.s[-1] - self.s[-2]) / (self.ts[-1] - self.ts[-2])
+
     def at_time(self, t: float) -> tuple[float, float, float]:
+        """Pose at trajectory time ``t``: the first vertex before the first time (the road user waits
+        where its recording starts); after the last time it carries on along the last vertex's heading
+        at :attr:`end_speed`, as esmini's default behaviour does once the trajectory action ends."""
         ts = self.ts
         if t <= ts[0]:
             return self.xs[0], self.ys[0], self.hs[0]
         if t >= ts[-1]:
-            return self.xs[-1], self.ys[-1], self.hs[-1]
+            d = (t - ts[-1]) * self.end_speed
+            h = self.hs[-1]
+            return self.xs[-1] + d * math.cos(h), self.ys[-1] + d * math.sin(h), h
         i = bisect.bisect_right(ts, t) - 1
         return self._lerp(i, (t - ts[i]) / (ts[i + 1] - ts[i]))
 
@@ -70,11 +80,12 @@ class Polyline:
         return best
 
     def s_at_time(self, t: float) -> float:
+        """Arc length at trajectory time ``t`` (continued past the end as :meth:`at_time` does)."""
         ts = self.ts
         if t <= ts[0]:
             return 0.0
         if t >= ts[-1]:
-            return self.s[-1]
+            return self.s[-1] + (t - ts[-1]) * self.end_speed
         i = bisect.bisect_right(ts, t) - 1
         return self.s[i] + (t - ts[i]) / (ts[i + 1] - ts[i]) * (self.s[i + 1] - self.s[i])
 
@@ -90,13 +101,17 @@ class PathFollower:
     s: float = 0.0
 
     def trajectory_time(self, t_sim: float) -> float:
+        """The trajectory time played at simulation time ``t_sim``: ``t * scale + offset``, with t
+        counted from 0 (absolute) or from the action's start (relative) — the reading esmini
+        implements, so a positive offset plays the trajectory earlier."""
         domain, scale, offset = self.timing
         base = 0.0 if domain == "absolute" else self.t_start
-        return (t_sim - base - offset) / scale
+        return (t_sim - base) * scale + offset
 
     def sim_time_of(self, t_traj: float) -> float:
+        """Inverse of :meth:`trajectory_time`."""
         domain, scale, offset = self.timing
-        return t_traj * scale + offset + (0.0 if domain == "absolute" else self.t_start)
+        return (t_traj - offset) / scale + (0.0 if domain == "absolute" else self.t_start)
 
     def finished(self, t_sim: float) -> bool:
         if self.timing is not None and self.polyline.timed:

@@ -14,6 +14,7 @@ from dataclasses import dataclass, field
 from vei_scenario.errors import VeiInputError
 from vei_scenario.models.boxes import box_distance, time_to_contact
 from vei_scenario.openscenario import STORYBOARD_ELEMENT_TYPES
+from vei_scenario.safe_xml import first_element
 
 STANDBY, RUNNING, COMPLETE = "standby", "running", "complete"
 
@@ -33,6 +34,8 @@ class Context:
     trajectories: dict = field(default_factory=dict)  # Trajectory name -> Polyline
     #: Under Jacobi coupling: every entity as it was at the start of the step (see engine.COUPLINGS).
     snapshot: dict | None = None
+    #: True while the Init actions start (before the first record at t = 0).
+    initializing: bool = False
 
     def observed(self, name: str):
         """Entity ``name`` as other entities' controllers see it now: its current state under
@@ -285,8 +288,8 @@ class ConditionRunner:
         self.prev: bool | None = None
         self.history: deque[tuple[float, bool]] = deque()
         by_value, by_entity = el.find("ByValueCondition"), el.find("ByEntityCondition")
-        if by_value is not None and len(by_value):
-            kind = by_value[0]
+        if by_value is not None and first_element(by_value) is not None:
+            kind = first_element(by_value)
             cls = VALUE_CONDITIONS.get(kind.tag)
             if cls is None:
                 raise ctx.error(kind, f"<{kind.tag}> is not supported by vei run")
@@ -294,9 +297,9 @@ class ConditionRunner:
         elif by_entity is not None:
             trig = by_entity.find("TriggeringEntities")
             kind_parent = by_entity.find("EntityCondition")
-            if trig is None or kind_parent is None or not len(kind_parent):
+            kind = first_element(kind_parent) if kind_parent is not None else None
+            if trig is None or kind is None:
                 raise ctx.error(by_entity, "ByEntityCondition needs TriggeringEntities and an EntityCondition")
-            kind = kind_parent[0]
             cls = ENTITY_CONDITIONS.get(kind.tag)
             if cls is None:
                 raise ctx.error(kind, f"<{kind.tag}> is not supported by vei run")

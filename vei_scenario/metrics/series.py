@@ -57,7 +57,10 @@ class PairSeries:
         tracks = []
         for n in (result.ego, name):
             tr = result.traces[n]
-            tracks.append(Track(n, tr.length, tr.width, tr.x, tr.y, tr.yaw, tr.speed, tr.accel))
+            x, y = tr.x, tr.y
+            if tr.center_x:  # the metrics measure boxes: move the reference point to the box centre
+                x, y = x + tr.center_x * np.cos(tr.yaw), y + tr.center_x * np.sin(tr.yaw)
+            tracks.append(Track(n, tr.length, tr.width, x, y, tr.yaw, tr.speed, tr.accel))
         return cls(result.t, *tracks)
 
     def variant(self, i: int) -> PairSeries:

@@ -13,10 +13,15 @@ from vei_scenario.scenario.model import ScenarioModel
 from vei_scenario.scenario.parameters import format_value
 
 
-def distribution_xml(model: ScenarioModel, scenario_file: str, minor_version: int = 3) -> bytes:
-    """Deterministic distribution: one DistributionSet per varied parameter (their cartesian product)."""
+def distribution_xml(
+    model: ScenarioModel, scenario_file: str, minor_version: int = 3, time_shift: bool = True
+) -> bytes:
+    """Deterministic distribution: one DistributionSet per varied parameter (their cartesian product);
+    without ``time_shift`` for a scenario that declares no ``TimeShift`` (OpenSCENARIO 1.0)."""
     det = xosc.Deterministic()
     for name, values in model.variations().items():
+        if name == "TimeShift" and not time_shift:
+            continue
         dset = xosc.DistributionSet()
         type_ = model.parameter(name).type
         for v in values:

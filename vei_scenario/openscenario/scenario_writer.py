@@ -10,7 +10,8 @@ Structure of a compiled scenario:
   their first recorded speed.
 * Story ``Reconstruction``: every moving entity follows its reconstructed trajectory
   (``FollowTrajectoryAction``, Polyline with vertex times in scenario time). Scooters replay with
-  absolute timing (the threat's ``offset`` is ``$TimeShift``); the ego follows the path only
+  absolute timing (the threat's ``offset`` is ``${-$TimeShift}``: see :func:`threat_offset`); the ego
+  follows the path only
   (``TimeReference/None``), so it holds its cruise speed unless the planner takes over.
 * Story ``Controllers``: the social force model is activated when ``RiderType`` is ``normal`` or
   ``aggressive`` and the planner when ``CapEnabled`` is true (``ParameterCondition`` triggers, which
@@ -63,14 +64,19 @@ def _ref(name: str, resolved: dict | None, type_: str) -> str:
 
 
 def _vehicle(e: EntitySpec) -> xosc.Vehicle:
+    """The entity's vehicle. Reference-point convention: the position of a compiled entity is its
+    recorded point (the ego's GPS fix, the annotated centre of a scooter), the centre of its bounding
+    box (``Center x = 0``), and the rear axle is declared there (``positionX = 0``). esmini places the
+    box at ``Center.x - RearAxle.positionX`` ahead of the position, vei at ``Center.x``: with the
+    rear axle at 0 both put the box where the models, the metrics and the collision check have it."""
     category = xosc.VehicleCategory.car if e.category == "car" else xosc.VehicleCategory.bicycle
     box = xosc.BoundingBox(e.width_m, e.length_m, e.height_m, 0.0, 0.0, e.height_m / 2)
     if e.category == "car":
         front = xosc.Axle(0.52, 0.65, 1.6, 0.3 * e.length_m, 0.325)
-        rear = xosc.Axle(0.0, 0.65, 1.6, -0.3 * e.length_m, 0.325)
+        rear = xosc.Axle(0.0, 0.65, 1.6, 0.0, 0.325)
         return xosc.Vehicle(e.name, category, box, front, rear, 50.0, 4.0, 9.0)
     front = xosc.Axle(0.6, 0.2, 0.1, 0.4, 0.1)
-    rear = xosc.Axle(0.0, 0.2, 0.1, -0.4, 0.1)
+    rear = xosc.Axle(0.0, 0.2, 0.1, 0.0, 0.1)
     return xosc.Vehicle(e.name, category, box, front, rear, 7.0, 2.0, 3.5)
 
 
@@ -122,12 +128,36 @@ def _trajectory_event(e: EntitySpec, offset: str | float | None, minor_version: 
         )
     event = xosc.Event(f"{e.name}FollowsTrajectory", _override(minor_version))
     event.add_action(f"{e.name}FollowTrajectory", action)
-    event.add_trigger(_at_start(f"{e.name}TrajectoryStart"))
+    event.add_trigger(_at_start(f"{e.name}TrajectoryStart", minor_version))
     return event
 
 
-def _at_start(name: str) -> xosc.ValueTrigger:
-    return xosc.ValueTrigger(name, 0, xosc.ConditionEdge.none, xosc.SimulationTimeCondition(0, xosc.Rule.greaterThan))
+def declares_time_shift(minor_version: int) -> bool:
+    """Whether a parametrised scenario of this version declares ``TimeShift``: its Timing offset is the
+    expression ``${-$TimeShift}``, and OpenSCENARIO 1.0 has no expressions."""
+    return minor_version >= 1
+
+
+def threat_offset(resolved: dict | None, minor_version: int) -> str | float:
+    """The threat's Timing ``offset``. Players map simulation time t to trajectory time
+    ``t * scale + offset`` (esmini's reading, and vei's), so a scooter delayed by ``TimeShift`` seconds
+    has offset ``-TimeShift``. A 1.0 scenario, which cannot negate a parameter, replays as recorded
+    (its ``--variants`` files carry each shift as a literal)."""
+    if resolved is not None:
+        return 0.0 - float(resolved["TimeShift"])
+    return "${-$TimeShift}" if declares_time_shift(minor_version) else 0.0
+
+
+def _at_start(name: str, minor_version: int) -> xosc.ValueTrigger:
+    """True from the first evaluation (t = 0): the replay moves from the first step in vei and in
+    esmini alike (``SimulationTime > 0`` would leave one step of Init motion before it). OpenSCENARIO
+    1.0 has no ``greaterOrEqual``: there it is ``SimulationTime > -1``."""
+    cond = (
+        xosc.SimulationTimeCondition(0, xosc.Rule.greaterOrEqual)
+        if minor_version >= 1
+        else xosc.SimulationTimeCondition(-1, xosc.Rule.greaterThan)
+    )
+    return xosc.ValueTrigger(name, 0, xosc.ConditionEdge.none, cond)
 
 
 def _parameter_trigger(name: str, alternatives: list[tuple[str, str]]) -> xosc.Trigger:
@@ -149,6 +179,8 @@ def build_scenario(model: ScenarioModel, minor_version: int = 3, resolved: dict 
     params = xosc.ParameterDeclarations()
     if resolved is None:
         for p in model.parameters:
+            if p.name == "TimeShift" and not declares_time_shift(minor_version):
+                continue
             params.add_parameter(xosc.Parameter(p.name, getattr(xosc.ParameterType, p.type), p.literal(p.default)))
 
     entities = xosc.Entities()
@@ -173,18 +205,19 @@ def build_scenario(model: ScenarioModel, minor_version: int = 3, resolved: dict 
         if e.name == "Ego":  # the ego drives its path at the cruise speed unless the planner takes over
             cruise = _ref("EgoCruiseSpeed", resolved, "double")
             speed: str | float = float(cruise) if resolved is not None else cruise
+        elif tr.t[0] > 0:  # waits where its recording starts
+            speed = 0.0
         else:
             speed = _num(tr.speed[0], 3)
         init.add_init_action(e.name, xosc.AbsoluteSpeedAction(speed, step))
 
     replay = xosc.Story("Reconstruction")
-    act = xosc.Act("ReplayRecordedTrajectories", _at_start("ReplayStart"))
+    act = xosc.Act("ReplayRecordedTrajectories", _at_start("ReplayStart", minor_version))
     for e in model.entities:
         if e.name == "Ego":
             offset: str | float | None = None
         elif e.name == model.threat:
-            offset = _ref("TimeShift", resolved, "double")
-            offset = float(offset) if resolved is not None else offset
+            offset = threat_offset(resolved, minor_version)
         else:
             offset = 0
         maneuver = xosc.Maneuver(f"{e.name}Replay")
@@ -196,7 +229,7 @@ def build_scenario(model: ScenarioModel, minor_version: int = 3, resolved: dict 
     replay.add_act(act)
 
     controllers = xosc.Story("Controllers")
-    ctl_act = xosc.Act("ActivateControllers", _at_start("ControllersStart"))
+    ctl_act = xosc.Act("ActivateControllers", _at_start("ControllersStart", minor_version))
     activations = [
         (
             model.threat,
@@ -215,7 +248,7 @@ def build_scenario(model: ScenarioModel, minor_version: int = 3, resolved: dict 
         if resolved is not None:
             if not any(format_value("string", resolved[p]).lower() == v for p, v in conditions):
                 continue
-            trigger: xosc.Trigger | xosc.ValueTrigger = _at_start(f"{event_name}Start")
+            trigger: xosc.Trigger | xosc.ValueTrigger = _at_start(f"{event_name}Start", minor_version)
         else:
             trigger = _parameter_trigger(f"{event_name}When", conditions)
         event = xosc.Event(event_name, xosc.Priority.parallel)

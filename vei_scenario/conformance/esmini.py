@@ -1,0 +1,240 @@
+"""Play a scenario in esmini (the reference OpenSCENARIO player) and compare it with ``vei run``.
+
+esmini is not a dependency: give its binary explicitly or through ``VEI_ESMINI``. It has no option to
+override a parameter, so a run with parameters plays a copy of the file with those declarations
+changed (and its relative file references made absolute); esmini evaluates the expressions itself.
+
+Compared per entity on the common time grid: the reference point (esmini logs the entity position,
+which is the reference point in both players), and the collision verdict with its onset time.
+"""
+
+from __future__ import annotations
+
+import csv
+import os
+import shutil
+import subprocess
+import tempfile
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from vei_scenario.errors import VeiInputError
+from vei_scenario.safe_xml import parse_xml
+
+
+def find_esmini(explicit: str | Path | None = None) -> Path | None:
+    """The esmini binary: ``explicit``, else ``$VEI_ESMINI``, else ``esmini`` on the PATH; None if absent."""
+    for candidate in (explicit, os.environ.get("VEI_ESMINI"), shutil.which("esmini")):
+        if candidate and Path(candidate).is_file() and os.access(candidate, os.X_OK):
+            return Path(candidate).resolve()
+    return None
+
+
+@dataclass
+class Track:
+    t: np.ndarray
+    x: np.ndarray
+    y: np.ndarray
+    h: np.ndarray
+    speed: np.ndarray
+
+
+@dataclass
+class EsminiRun:
+    tracks: dict[str, Track]
+    collisions: list[tuple[float, str, str]]  # onset time and the two entities
+    seconds: float = 0.0
+
+
+@dataclass
+class EntityComparison:
+    entity: str
+    max_deviation_m: float
+    at_time_s: float
+    compared_until_s: float
+    samples: int
+
+
+@dataclass
+class Comparison:
+    entities: list[EntityComparison]
+    vei_collisions: list[tuple[float, str, str]]
+    esmini_collisions: list[tuple[float, str, str]]
+    notes: list[str] = field(default_factory=list)
+
+    @property
+    def max_deviation_m(self) -> float:
+        return max((e.max_deviation_m for e in self.entities), default=0.0)
+
+    def collision_time_difference_s(self) -> float | None:
+        """|Δ onset| of the first collision when both players see one, else None."""
+        if self.vei_collisions and self.esmini_collisions:
+            return abs(self.vei_collisions[0][0] - self.esmini_collisions[0][0])
+        return None
+
+    @property
+    def same_verdict(self) -> bool:
+        return bool(self.vei_collisions) == bool(self.esmini_collisions)
+
+
+_PATH_ATTRS = (("LogicFile", "filepath"), ("SceneGraphFile", "filepath"), ("Directory", "path"))
+
+
+def _prepared_copy(xosc: Path, parameters: dict[str, str], workdir: Path) -> Path:
+    """A copy of ``xosc`` in ``workdir`` with parameter defaults overridden and file references absolute."""
+    tree = parse_xml(xosc)
+    root = tree.getroot()
+    known = set()
+    for decl in root.iterfind("ParameterDeclarations/ParameterDeclaration"):
+        known.add(decl.get("name"))
+        if decl.get("name") in parameters:
+            decl.set("value", str(parameters[decl.get("name")]))
+    unknown = set(parameters) - known
+    if unknown:
+        raise VeiInputError(xosc, "--param", f"unknown parameter(s) {', '.join(sorted(unknown))}")
+    for tag, attr in _PATH_ATTRS:
+        for el in root.iter(tag):
+            value = el.get(attr)
+            if value and not value.startswith("$") and not Path(value).is_absolute():
+                el.set(attr, str((xosc.parent / value).resolve()))
+    out = workdir / xosc.name
+    tree.write(str(out), xml_declaration=True, encoding="UTF-8")
+    return out
+
+
+def read_esmini_csv(path: Path) -> EsminiRun:
+    """esmini's ``--csv_logger`` file: one row per step, a block of columns per entity."""
+    with open(path, newline="") as fh:
+        rows = list(csv.reader(fh))
+    head = next(i for i, r in enumerate(rows) if r and r[0].strip().startswith("Index"))
+    header = [c.strip() for c in rows[head]]
+    blocks: list[dict[str, int]] = []
+    for i, name in enumerate(header):
+        if name.startswith("#"):
+            k, _, rest = name[1:].partition(" ")
+            k = int(k)
+            while len(blocks) < k:
+                blocks.append({})
+            blocks[k - 1][rest.split(" [")[0]] = i
+    data = [[c.strip() for c in r] for r in rows[head + 1 :] if len(r) > 2]
+    t = np.array([float(r[1]) for r in data])
+    tracks: dict[str, Track] = {}
+    ids: dict[str, str] = {}
+    colliding: dict[frozenset, bool] = {}
+    collisions: list[tuple[float, str, str]] = []
+    for b in blocks:
+        name = data[0][b["Entity_Name"]]
+        ids[data[0][b["Entity_ID"]]] = name
+
+        def col(key: str, b=b) -> np.ndarray:
+            return np.array([float(r[b[key]]) for r in data])
+
+        tracks[name] = Track(
+            t, col("World_Position_X"), col("World_Position_Y"), col("World_Heading_Angle"), col("Current_Speed")
+        )
+    for k, r in enumerate(data):
+        now = set()
+        for b in blocks:
+            me = r[b["Entity_Name"]]
+            for other in r[b["collision_ids"]].split():
+                if other in ids and ids[other] != me:
+                    now.add(frozenset((me, ids[other])))
+        for pair in now - {p for p, v in colliding.items() if v}:
+            a, c = sorted(pair)
+            collisions.append((float(t[k]), a, c))
+        colliding = {p: True for p in now}
+    return EsminiRun(tracks, collisions)
+
+
+def run_esmini(
+    esmini: Path,
+    xosc: str | Path,
+    dt: float = 0.01,
+    parameters: dict[str, str] | None = None,
+    timeout_s: float = 120.0,
+) -> EsminiRun:
+    """Play ``xosc`` headless at the fixed step ``dt`` with collision detection; its logged tracks."""
+    import time
+
+    xosc = Path(xosc).resolve()
+    with tempfile.TemporaryDirectory(prefix="vei-esmini-") as tmp:
+        work = Path(tmp)
+        played = _prepared_copy(xosc, parameters, work) if parameters else xosc
+        log = work / "log.csv"
+        cmd = [str(esmini), "--headless", "--osc", str(played), "--fixed_timestep", repr(dt), "--csv_logger"]
+        cmd += [str(log), "--collision", "--disable_stdout", "--disable_log"]
+        start = time.perf_counter()
+        proc = subprocess.run(cmd, cwd=work, capture_output=True, text=True, timeout=timeout_s)
+        seconds = time.perf_counter() - start
+        if proc.returncode != 0 or not log.is_file():
+            tail = (proc.stdout + proc.stderr).strip().splitlines()[-3:]
+            raise RuntimeError(f"esmini failed on {xosc.name} (exit {proc.returncode}): {' | '.join(tail)}")
+        run = read_esmini_csv(log)
+    run.seconds = seconds
+    return run
+
+
+def compare_runs(vei_result, esmini_run: EsminiRun, until: dict[str, float] | None = None) -> Comparison:
+    """Largest distance between the two players' reference points per entity, on the common time grid
+    (up to ``until[entity]`` where given), and both collision lists."""
+    until = until or {}
+    out: list[EntityComparison] = []
+    notes: list[str] = []
+    for name, trace in vei_result.traces.items():
+        es = esmini_run.tracks.get(name)
+        if es is None:
+            notes.append(f"{name}: not in esmini's log")
+            continue
+        keys = {round(float(t), 6): i for i, t in enumerate(es.t)}
+        limit = until.get(name, float("inf"))
+        pairs = [(i, keys[round(float(t), 6)]) for i, t in enumerate(trace.t) if round(float(t), 6) in keys]
+        pairs = [(i, j) for i, j in pairs if trace.t[i] <= limit + 1e-9]
+        if not pairs:
+            notes.append(f"{name}: no common time steps")
+            continue
+        vi, ej = np.array([p[0] for p in pairs]), np.array([p[1] for p in pairs])
+        d = np.hypot(trace.x[vi] - es.x[ej], trace.y[vi] - es.y[ej])
+        k = int(np.argmax(d))
+        out.append(EntityComparison(name, float(d[k]), float(trace.t[vi[k]]), float(trace.t[vi[-1]]), len(pairs)))
+    vei_coll = [(float(t), *sorted((a, b))) for t, a, b in vei_result.collisions]
+    return Comparison(out, vei_coll, esmini_run.collisions, notes)
+
+
+def recording_ends(xosc: str | Path, parameters: dict[str, str] | None = None) -> dict[str, float]:
+    """Simulation time at which each entity's timed trajectory ends (its recording, for a compiled
+    scenario), read from the scenario with ``parameters`` applied: ``(t_last - offset) / scale``."""
+    from vei_scenario.interpreter.document import load_scenario
+
+    doc = load_scenario(xosc, parameters)
+    ends: dict[str, float] = {}
+
+    def note(actor: str, fta) -> None:
+        timing = fta.find("TimeReference/Timing")
+        times = [v.get("time") for v in fta.iter("Vertex")]
+        if timing is None or timing.get("domainAbsoluteRelative") != "absolute" or not times or None in times:
+            return
+        scale, offset = float(timing.get("scale", "1")), float(timing.get("offset", "0"))
+        ends[actor] = max(ends.get(actor, float("-inf")), (float(times[-1]) - offset) / scale)
+
+    for private in doc.root.iterfind("Storyboard/Init/Actions/Private"):
+        for fta in private.iter("FollowTrajectoryAction"):
+            note(private.get("entityRef"), fta)
+    for group in doc.root.iter("ManeuverGroup"):
+        for ref in group.iterfind("Actors/EntityRef"):
+            for fta in group.iter("FollowTrajectoryAction"):
+                note(ref.get("entityRef"), fta)
+    return ends
+
+
+def cross_check(
+    esmini: Path, xosc: str | Path, parameters: dict[str, str] | None = None, dt: float = 0.01
+) -> Comparison:
+    """``vei run`` and esmini on the same file and parameters; timed entities compared up to the end
+    of their trajectory (what a player does afterwards is its own default behaviour)."""
+    from vei_scenario.interpreter import run_scenario
+
+    parameters = parameters or {}
+    result = run_scenario(xosc, parameters, dt)
+    return compare_runs(result, run_esmini(esmini, xosc, dt, parameters), recording_ends(xosc, parameters))
