@@ -84,3 +84,29 @@ def test_timing_offset_reading_matches_esmini(tmp_path, esmini):
     assert e.compared_until_s == pytest.approx(end)
     tr = result.traces["A"]
     assert tr.x[250] == pytest.approx(20.0) and tr.x[-1] == pytest.approx(20.0 + 8.0 * (tr.t[-1] - end))
+
+
+#: esmini 3.6 examples that vei plays today within 0.10 m (benchmarks/conformance_esmini.py lists all).
+AGREEING_EXAMPLES = (
+    "straight_500m",
+    "straight_500m_pedestrian",
+    "override_bb",
+    "tunnels",
+    "left-hand-traffic_using_road_rule",
+)
+
+
+@pytest.mark.parametrize("name", AGREEING_EXAMPLES)
+def test_esmini_examples_play_the_same(esmini, name):
+    """Catalogs, lane positions, lane keeping, lane changes, speed actions and entity conditions on
+    esmini's own scenarios: every entity within 0.10 m of esmini, the same collisions."""
+    from vei_scenario.conformance.esmini import compare_runs, run_esmini
+    from vei_scenario.interpreter import run_scenario
+
+    path = esmini.parents[1] / "xosc" / f"{name}.xosc"
+    if not path.is_file():
+        pytest.skip(f"{path} not shipped beside esmini")
+    c = compare_runs(run_scenario(path, {}, DT), run_esmini(esmini, path, DT))
+    assert c.entities and not c.notes
+    assert c.max_deviation_m <= 0.10, c.entities
+    assert [(a, b) for _, a, b in c.vei_collisions] == [(a, b) for _, a, b in c.esmini_collisions]

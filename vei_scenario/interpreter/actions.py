@@ -8,8 +8,11 @@ ActivateControllerAction, ParameterSetAction. Anything else is refused with its 
 
 from __future__ import annotations
 
+import math
+
 from vei_scenario.interpreter.controllers import make_controller, polyline_from
 from vei_scenario.interpreter.entities import PathFollower, SpeedProfile
+from vei_scenario.interpreter.positions import resolve as resolve_position
 from vei_scenario.safe_xml import first_element
 
 
@@ -28,19 +31,205 @@ class Action:
 
 class Teleport(Action):
     def __init__(self, entity: str, el, ctx) -> None:
-        wp = el.find("Position/WorldPosition")
-        if wp is None:
-            pos = el.find("Position")
-            kind = pos[0].tag if pos is not None and len(pos) else "none"
-            raise ctx.error(el, f"TeleportAction position <{kind}> is not supported (WorldPosition only)")
-        self.entity = entity
-        self.x, self.y, self.h = float(wp.get("x")), float(wp.get("y")), float(wp.get("h", "0"))
+        pos = el.find("Position")
+        kind = first_element(pos) if pos is not None else None
+        if kind is None or kind.tag not in SUPPORTED_POSITIONS:
+            raise ctx.error(
+                el, f"TeleportAction position <{kind.tag if kind is not None else 'none'}> is not supported"
+            )
+        self.entity, self.pos = entity, pos
 
     def start(self, ctx) -> None:
         e = ctx.entities[self.entity]
-        e.x, e.y, e.yaw = self.x, self.y, self.h
-        if e.follower is not None:
-            e.follower = None
+        pose = resolve_position(ctx, self.pos)  # relative positions are taken when the action starts
+        e.x, e.y, e.yaw, e.lane = pose.x, pose.y, pose.h, pose.lane
+        e.follower = None
+        e.lateral = None
+        self.done = True
+
+
+SUPPORTED_POSITIONS = (
+    "WorldPosition",
+    "RelativeWorldPosition",
+    "RelativeObjectPosition",
+    "LanePosition",
+    "RoadPosition",
+    "RelativeLanePosition",
+    "RelativeRoadPosition",
+)
+
+
+def lane_keep(e, ds: float, ctx) -> None:
+    """Move ``e`` ``ds`` metres along its lane (esmini's default behaviour), on across road ends and
+    junctions, with a running lane change shifting it sideways."""
+    net = ctx.roads
+    st = e.lane
+    road = net.road(st.road)
+    forward = road.drives_forward(st.lane)
+    # ds is travelled along the lane: scale to reference-line arc length where the lane is offset on a curve
+    t_now = road.lane_center_t(st.s, st.lane) + st.offset
+    x0, y0, _ = road.world(st.s, t_now)
+    x1, y1, _ = road.world(min(st.s + 0.01, road.length) if st.s + 0.01 <= road.length else st.s - 0.01, t_now)
+    stretch = math.hypot(x1 - x0, y1 - y0) / 0.01 or 1.0
+    s = st.s + (ds if forward else -ds) / stretch
+    while s > road.length or s < 0.0:
+        at_end = s > road.length
+        over = s - road.length if at_end else -s
+        nxt = net.next_road(road, st.lane, at_end)
+        if nxt is None:
+            s = min(max(s, 0.0), road.length)
+            break
+        road, st.lane, start = nxt
+        s = over if start else road.length - over
+        forward = road.drives_forward(st.lane)
+    sec_lanes = road.section(s).lanes
+    if st.lane not in sec_lanes:  # the lane ends in a new lane section: the nearest lane on the same side
+        same = [k for k in sec_lanes if (k > 0) == (st.lane > 0)] or list(sec_lanes)
+        st.lane = min(same, key=lambda k: abs(k - st.lane)) if same else st.lane
+    st.road, st.s = road.id, s
+    if e.lateral is not None:
+        st.offset = e.lateral.offset(e, ctx, road)
+    x, y, h = road.world(s, road.lane_center_t(s, st.lane) + st.offset)
+    moved = math.hypot(x - e.x, y - e.y)
+    e.x, e.y = x, y
+    base = h if forward else h + math.pi
+    e.yaw = math.atan2(math.sin(base), math.cos(base))
+    if e.lateral is not None and moved > 1e-9:
+        e.yaw = e.lateral.heading(e, base)
+
+
+def _shape(shape: str, x: float) -> float:
+    x = min(max(x, 0.0), 1.0)
+    if shape == "step":
+        return 1.0
+    if shape == "cubic":
+        return x * x * (3 - 2 * x)
+    if shape == "sinusoidal":
+        return 0.5 * (1 - math.cos(math.pi * x))
+    return x
+
+
+class LaneChangeRuntime:
+    """A lateral transition from the lane the entity was in to the target lane (and target offset)."""
+
+    def __init__(
+        self,
+        start_road,
+        start_lane: int,
+        start_offset: float,
+        target_lane: int,
+        target_offset: float,
+        shape: str,
+        dimension: str,
+        value: float,
+        t0: float,
+        odo0: float,
+    ) -> None:
+        self.start_lane, self.start_offset = start_lane, start_offset
+        self.target_lane, self.target_offset = target_lane, target_offset
+        self.shape, self.dimension, self.value = shape, dimension, value
+        self.t0, self.odo0 = t0, odo0
+        self.fraction = 0.0
+        self.prev_t: float | None = None
+
+    def progress(self, e, ctx) -> float:
+        if self.value <= 0 or self.shape == "step":
+            return 1.0
+        done = (ctx.t + ctx.dt - self.t0) if self.dimension == "time" else (e.odometer - self.odo0)
+        return min(max(done / self.value, 0.0), 1.0)
+
+    def offset(self, e, ctx, road) -> float:
+        """Offset from the target lane's centre at the entity's current s."""
+        s = e.lane.s
+        try:
+            t_start = road.lane_center_t(s, self.start_lane) + self.start_offset
+        except KeyError:
+            t_start = road.lane_center_t(s, self.target_lane) + self.start_offset
+        t_target = road.lane_center_t(s, self.target_lane) + self.target_offset
+        self.fraction = self.progress(e, ctx)
+        f = _shape(self.shape, self.fraction)
+        return (1 - f) * t_start + f * t_target - road.lane_center_t(s, self.target_lane)
+
+    def heading(self, e, base: float) -> float:
+        return base if self.fraction >= 1.0 else _heading_of_motion(e, base)
+
+
+def _heading_of_motion(e, base: float) -> float:
+    prev = getattr(e, "_prev_xy", None)
+    e._prev_xy = (e.x, e.y)
+    if prev is None:
+        return base
+    dx, dy = e.x - prev[0], e.y - prev[1]
+    return math.atan2(dy, dx) if math.hypot(dx, dy) > 1e-6 else base
+
+
+class LaneChange(Action):
+    """LaneChangeAction: to an absolute lane or one relative to an entity's, over time or distance."""
+
+    def __init__(self, entity: str, el, ctx) -> None:
+        self.entity, self.el = entity, el
+        dyn = el.find("LaneChangeActionDynamics")
+        self.shape = dyn.get("dynamicsShape")
+        self.dimension = dyn.get("dynamicsDimension")
+        self.value = float(dyn.get("value"))
+        if self.shape not in ("step", "linear", "cubic", "sinusoidal") or self.dimension not in ("time", "distance"):
+            raise ctx.error(dyn, f"lane change dynamics {self.shape}/{self.dimension} are not supported")
+        target = first_element(el.find("LaneChangeTarget"))
+        self.target = target
+        self.target_offset = float(el.get("targetLaneOffset", "0") or 0)
+        if target is None or target.tag not in ("AbsoluteTargetLane", "RelativeTargetLane"):
+            raise ctx.error(el, "LaneChangeTarget must be AbsoluteTargetLane or RelativeTargetLane")
+
+    def start(self, ctx) -> None:
+        from vei_scenario.interpreter.positions import _entity_lane
+
+        e, st = _entity_lane(ctx, self.el, self.entity)
+        e.lane = st
+        e.follower = None
+        if self.target.tag == "AbsoluteTargetLane":
+            lane = int(self.target.get("value"))
+        else:
+            _, ref = _entity_lane(ctx, self.el, self.target.get("entityRef"))
+            road = ctx.roads.road(ref.road)
+            forward = road.drives_forward(ref.lane)
+            lane = ref.lane
+            n = int(self.target.get("value"))
+            for _ in range(abs(n)):  # positive: to the left of the reference's driving direction
+                left = (n > 0) == forward
+                lane += 1 if left else -1
+                if lane == 0:
+                    lane += 1 if left else -1
+        e.lateral = LaneChangeRuntime(
+            None,
+            st.lane,
+            st.offset,
+            lane,
+            self.target_offset,
+            self.shape,
+            self.dimension,
+            self.value,
+            ctx.t,
+            e.odometer,
+        )
+        e.lane.lane = lane
+        e.lane.offset = e.lateral.offset(e, ctx, ctx.roads.road(st.road))
+        e._prev_xy = None
+
+    def update(self, ctx) -> None:
+        e = ctx.entities[self.entity]
+        self.done = e.lateral is None or e.lateral.fraction >= 1.0
+        if self.done and e.lateral is not None:
+            e.lane.offset = self.target_offset
+            e.lateral = None
+
+    def stop(self, ctx) -> None:
+        ctx.entities[self.entity].lateral = None
+
+
+class Ignored(Action):
+    """An action with no effect on motion or on what vei measures (appearance, visibility)."""
+
+    def __init__(self, *_args) -> None:
         self.done = True
 
 
@@ -58,8 +247,7 @@ class Speed(Action):
         if absolute is not None:
             self.target = ("absolute", float(absolute.get("value")), None, None)
         elif relative is not None:
-            if relative.get("continuous", "false") == "true":
-                raise ctx.error(relative, "continuous RelativeTargetSpeed is not supported")
+            self.continuous = relative.get("continuous", "false") == "true"
             ref = relative.get("entityRef")
             if ref not in ctx.entities:
                 raise ctx.error(relative, f"no entity named {ref!r}")
@@ -89,9 +277,20 @@ class Speed(Action):
         if duration == 0.0:
             e.speed = v1
 
+    continuous = False
+
     def update(self, ctx) -> None:
         e = ctx.entities[self.entity]
         p = e.speed_profile
+        if self.continuous:  # keeps the relative speed after the transition; never ends by itself
+            _, value, ref, vtype = self.target
+            base = ctx.entities[ref].speed
+            target = base + value if vtype == "delta" else base * value
+            if p is None or ctx.t >= p.t0 + p.duration - 1e-9:
+                e.speed_profile = SpeedProfile(target, target, ctx.t, 0.0, "step")
+            else:
+                p.v1 = target
+            return
         self.done = p is None or ctx.t >= p.t0 + p.duration - 1e-9
 
     def stop(self, ctx) -> None:
@@ -206,6 +405,10 @@ def private_actions(pa, entity: str, ctx) -> list[Action]:
         return [Teleport(entity, kind, ctx)]
     if kind.tag == "LongitudinalAction" and kind.find("SpeedAction") is not None:
         return [Speed(entity, kind.find("SpeedAction"), ctx)]
+    if kind.tag == "LateralAction" and kind.find("LaneChangeAction") is not None:
+        return [LaneChange(entity, kind.find("LaneChangeAction"), ctx)]
+    if kind.tag in ("VisibilityAction", "AppearanceAction"):
+        return [Ignored()]
     if kind.tag == "RoutingAction" and kind.find("FollowTrajectoryAction") is not None:
         return [FollowTrajectory(entity, kind.find("FollowTrajectoryAction"), ctx)]
     if kind.tag == "ControllerAction":
@@ -231,4 +434,6 @@ def global_actions(ga, ctx) -> list[Action]:
         return [ParameterSet(kind.get("parameterRef"), kind.find("SetAction").get("value"), kind, ctx)]
     if kind is not None and kind.tag == "ParameterSetAction":
         return [ParameterSet(kind.get("parameterRef"), kind.get("value"), kind, ctx)]
+    if kind is not None and kind.tag == "EnvironmentAction":  # weather and light: no effect on motion
+        return [Ignored()]
     raise ctx.error(ga, f"global action <{kind.tag if kind is not None else ''}> is not supported by vei run")

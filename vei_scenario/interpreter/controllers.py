@@ -194,15 +194,22 @@ def polyline_from(el, ctx) -> Polyline:
         kind = shape[0].tag if shape is not None and len(shape) else "none"
         raise ctx.error(el, f"trajectory shape <{kind}> is not supported (Polyline only)")
     xs, ys, hs, ts = [], [], [], []
+    from vei_scenario.interpreter.positions import resolve
+
     for v in shape.find("Polyline").iterfind("Vertex"):
         wp = v.find("Position/WorldPosition")
-        if wp is None:
+        if wp is not None:
+            xs.append(float(wp.get("x")))
+            ys.append(float(wp.get("y")))
+            hs.append(float(wp.get("h")) if wp.get("h") is not None else None)
+        else:  # road-based vertices are placed once, when the scenario is built
             pos = v.find("Position")
-            kind = pos[0].tag if pos is not None and len(pos) else "none"
-            raise ctx.error(v, f"vertex position <{kind}> is not supported (WorldPosition only)")
-        xs.append(float(wp.get("x")))
-        ys.append(float(wp.get("y")))
-        hs.append(float(wp.get("h")) if wp.get("h") is not None else None)
+            if pos is None:
+                raise ctx.error(v, "vertex without a Position")
+            pose = resolve(ctx, pos)
+            xs.append(pose.x)
+            ys.append(pose.y)
+            hs.append(pose.h)
         ts.append(float(v.get("time")) if v.get("time") is not None else None)
     if len(xs) < 2:
         raise ctx.error(el, "a polyline needs at least two vertices")

@@ -79,17 +79,87 @@ def _declare(path: Path, decls, scope: dict[str, str], types: dict[str, str]) ->
         types[name] = type_
 
 
-def _substitute(path: Path, el, scope: dict[str, str], types: dict[str, str]) -> None:
+class Catalogs:
+    """Catalog entries by (catalog name, entry name), read lazily from the scenario's
+    ``CatalogLocations`` directories (every ``.xosc`` file in them)."""
+
+    def __init__(self, path: Path, root) -> None:
+        self.path = path
+        self.dirs = [
+            (path.parent / d.get("path")).resolve()
+            for d in root.iterfind("CatalogLocations/*/Directory")
+            if d.get("path") and not d.get("path").startswith("$")
+        ]
+        self._entries: dict[tuple[str, str], object] | None = None
+
+    def entry(self, ref):
+        if self._entries is None:
+            self._entries = {}
+            for d in self.dirs:
+                for f in sorted(d.glob("*.xosc")) if d.is_dir() else []:
+                    for cat in parse_xml(f).getroot().iterfind("Catalog"):
+                        for item in cat:
+                            if isinstance(item.tag, str) and item.get("name"):
+                                self._entries.setdefault((cat.get("name"), item.get("name")), item)
+        found = self._entries.get((ref.get("catalogName"), ref.get("entryName")))
+        if found is None:
+            where = ", ".join(str(d) for d in self.dirs) or "no CatalogLocations"
+            raise VeiInputError(
+                self.path,
+                f"line {ref.sourceline}",
+                f"catalog entry {ref.get('catalogName')}/{ref.get('entryName')} not found ({where})",
+            )
+        return found
+
+
+def _resolve_catalog_reference(path: Path, ref, scope: dict[str, str], catalogs: Catalogs) -> None:
+    """Replace ``<CatalogReference>`` by a copy of its entry, the entry's parameters set by the
+    reference's ``ParameterAssignments`` (resolved in the scenario's scope)."""
+    import copy
+
+    for attr in ("catalogName", "entryName"):
+        if "$" in (ref.get(attr) or ""):
+            ref.set(attr, resolve_value(path, ref, attr, ref.get(attr), scope))
+    entry = copy.deepcopy(catalogs.entry(ref))
+    assigned = {}
+    for a in ref.iterfind("ParameterAssignments/ParameterAssignment"):
+        assigned[a.get("parameterRef", "").lstrip("$")] = resolve_value(path, a, "value", a.get("value", ""), scope)
+    local: dict[str, str] = {}
+    decls = entry.find("ParameterDeclarations")
+    if decls is not None:
+        for d in decls.iterfind("ParameterDeclaration"):
+            name = d.get("name")
+            local[name] = (
+                assigned[name] if name in assigned else resolve_value(path, d, "value", d.get("value", ""), local)
+            )
+        entry.remove(decls)
+    unknown = set(assigned) - set(local)
+    if unknown:
+        raise VeiInputError(
+            path, f"line {ref.sourceline}", f"catalog entry has no parameter(s) {', '.join(sorted(unknown))}"
+        )
+    _substitute(path, entry, {**scope, **local}, {}, catalogs)
+    ref.getparent().replace(ref, entry)
+
+
+def _substitute(path: Path, el, scope: dict[str, str], types: dict[str, str], catalogs: Catalogs | None = None) -> None:
+    if el.tag == "CatalogReference" and catalogs is not None and el.getparent().tag != "Catalog":
+        _resolve_catalog_reference(path, el, scope, catalogs)
+        return
     local = el.find("ParameterDeclarations")
     if local is not None and el.tag != "OpenSCENARIO":
         scope = dict(scope)
         _declare(path, local, scope, dict(types))
     for attr, value in el.attrib.items():
         if "$" in value and not (el.tag == "ParameterDeclaration" and attr == "name"):
-            el.set(attr, resolve_value(path, el, attr, value, scope))
-    for child in el:
+            try:
+                el.set(attr, resolve_value(path, el, attr, value, scope))
+            except VeiInputError:
+                if attr != "name":  # a name is only an identifier: esmini's string expressions may stay
+                    raise
+    for child in list(el):
         if isinstance(child.tag, str) and child.tag != "ParameterDeclarations":
-            _substitute(path, child, scope, types)
+            _substitute(path, child, scope, types, catalogs)
 
 
 def _drop_keeping_tail(node) -> None:
@@ -148,7 +218,7 @@ def load_scenario(path: str | Path, overrides: dict[str, str] | None = None) -> 
             name = d.get("name")
             value = fixed[name] if name in fixed else resolve_value(path, d, "value", d.get("value", ""), scope)
             scope[name], types[name] = value, d.get("parameterType", "string")
-    _substitute(path, root, scope, types)
+    _substitute(path, root, scope, types, Catalogs(path, root))
 
     road_file = None
     logic = root.find("RoadNetwork/LogicFile")

@@ -9,12 +9,13 @@ Outputs (CSV, metrics, plots) are made from the returned :class:`RunResult` else
 from __future__ import annotations
 
 import copy
+import math
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
-from vei_scenario.interpreter.actions import global_actions, private_actions
+from vei_scenario.interpreter.actions import global_actions, lane_keep, private_actions
 from vei_scenario.interpreter.controllers import advance_along, make_controller, polyline_from
 from vei_scenario.interpreter.document import ScenarioDocument
 from vei_scenario.interpreter.entities import Entity
@@ -108,6 +109,7 @@ class Simulation:
         self.doc, self.dt, self.max_time, self.coupling = doc, dt, max_time_s, coupling
         self.ctx = Context(doc.path, 0.0, dt, 0, {}, dict(doc.parameters))
         ctx = self.ctx
+        ctx.road_file = doc.road_file
         ctx.trajectories = {}
         for traj in root.iter("Trajectory"):
             if traj.get("name"):
@@ -285,6 +287,16 @@ class Simulation:
                 story.complete(ctx)
 
     def _move(self, e: Entity) -> None:
+        x0, y0 = e.x, e.y
+        self._motion(e)
+        e.odometer += math.hypot(e.x - x0, e.y - y0)
+        if abs(e.speed) < 1e-9:
+            if e.standing_since is None:
+                e.standing_since = self.ctx.t + self.dt
+        else:
+            e.standing_since = None
+
+    def _motion(self, e: Entity) -> None:
         ctx, dt = self.ctx, self.dt
         for domain in ("lateral", "longitudinal"):
             ctrl = e.active.get(domain)
@@ -318,7 +330,11 @@ class Simulation:
             if finished:
                 e.speed_profile = None
         e.accel = (e.speed - v0) / dt
-        advance_along(e, 0.5 * (v0 + e.speed) * dt)
+        ds = 0.5 * (v0 + e.speed) * dt
+        if e.lane is not None and f is None:
+            lane_keep(e, ds, ctx)
+        else:
+            advance_along(e, ds)
 
     def run(self) -> RunResult:
         ctx, dt = self.ctx, self.dt

@@ -161,6 +161,10 @@ class Entity:
     controllers: dict = field(default_factory=dict)  # name -> runtime controller
     active: dict = field(default_factory=dict)  # domain ("lateral"/"longitudinal") -> controller
     status: str = "default"
+    lane: object = None  # positions.LaneState while the entity keeps a lane by default
+    lateral: object = None  # a running lane change (actions.LaneChangeRuntime)
+    odometer: float = 0.0  # distance travelled (m), for TraveledDistanceCondition
+    standing_since: float | None = None  # simulation time the entity came to a standstill
 
     def box(self) -> tuple[float, float, float, float, float]:
         """(centre x, centre y, yaw, length, width) of the bounding box."""

@@ -36,6 +36,18 @@ class Context:
     snapshot: dict | None = None
     #: True while the Init actions start (before the first record at t = 0).
     initializing: bool = False
+    road_file: object = None  # the scenario's OpenDRIVE file, loaded on first use
+
+    @property
+    def roads(self):
+        """The scenario's road network (None without one), loaded when a position first needs it."""
+        if self.road_file is None:
+            return None
+        if "_roads" not in self.__dict__:
+            from vei_scenario.roads.road_model import RoadNetwork
+
+            self.__dict__["_roads"] = RoadNetwork.load(self.road_file)
+        return self.__dict__["_roads"]
 
     def observed(self, name: str):
         """Entity ``name`` as other entities' controllers see it now: its current state under
@@ -240,10 +252,10 @@ class Distance(_EntityCondition):
         self.value, self.rule = float(el.get("value")), el.get("rule")
         self.freespace = el.get("freespace", "false") == "true"
         _distance_kind(ctx, el)
-        wp = el.find("Position/WorldPosition")
-        if wp is None:
-            raise ctx.error(el, "DistanceCondition: only a WorldPosition is supported")
-        self.px, self.py = float(wp.get("x")), float(wp.get("y"))
+        from vei_scenario.interpreter.positions import resolve
+
+        pose = resolve(ctx, el.find("Position"))
+        self.px, self.py = pose.x, pose.y
 
     def for_entity(self, ctx: Context, name: str) -> bool:
         e = ctx.entities[name]
@@ -264,6 +276,104 @@ class Speed(_EntityCondition):
         return compare(self.rule, ctx.entities[name].speed, self.value)
 
 
+class ReachPosition(_EntityCondition):
+    def __init__(self, el, ctx, triggering, rule) -> None:
+        from vei_scenario.interpreter.positions import resolve
+
+        super().__init__(el, ctx, triggering, rule)
+        self.tolerance = float(el.get("tolerance"))
+        pose = resolve(ctx, el.find("Position"))
+        self.px, self.py = pose.x, pose.y
+
+    def for_entity(self, ctx: Context, name: str) -> bool:
+        e = ctx.entities[name]
+        return math.hypot(e.x - self.px, e.y - self.py) <= self.tolerance
+
+
+class TraveledDistance(_EntityCondition):
+    def __init__(self, el, ctx, triggering, rule) -> None:
+        super().__init__(el, ctx, triggering, rule)
+        self.value = float(el.get("value"))
+
+    def for_entity(self, ctx: Context, name: str) -> bool:
+        return ctx.entities[name].odometer >= self.value
+
+
+class StandStill(_EntityCondition):
+    def __init__(self, el, ctx, triggering, rule) -> None:
+        super().__init__(el, ctx, triggering, rule)
+        self.duration = float(el.get("duration"))
+
+    def for_entity(self, ctx: Context, name: str) -> bool:
+        since = ctx.entities[name].standing_since
+        return since is not None and ctx.t - since >= self.duration - 1e-9
+
+
+class RelativeSpeed(_EntityCondition):
+    def __init__(self, el, ctx, triggering, rule) -> None:
+        super().__init__(el, ctx, triggering, rule)
+        self.value, self.rule, self.target = float(el.get("value")), el.get("rule"), el.get("entityRef")
+        _entity(ctx, el, self.target)
+
+    def for_entity(self, ctx: Context, name: str) -> bool:
+        return compare(self.rule, ctx.entities[name].speed - ctx.entities[self.target].speed, self.value)
+
+
+class Acceleration(_EntityCondition):
+    def __init__(self, el, ctx, triggering, rule) -> None:
+        super().__init__(el, ctx, triggering, rule)
+        self.value, self.rule = float(el.get("value")), el.get("rule")
+
+    def for_entity(self, ctx: Context, name: str) -> bool:
+        return compare(self.rule, ctx.entities[name].accel, self.value)
+
+
+class TimeHeadway(_EntityCondition):
+    """Headway time: distance to the target divided by the triggering entity's speed (inf standing)."""
+
+    def __init__(self, el, ctx, triggering, rule) -> None:
+        super().__init__(el, ctx, triggering, rule)
+        self.value, self.rule, self.target = float(el.get("value")), el.get("rule"), el.get("entityRef")
+        self.freespace = el.get("freespace", "false") == "true"
+        self.kind = el.get("relativeDistanceType", "longitudinal")
+        if el.get("alongRoute") == "true":
+            self.kind = "longitudinal"
+        _entity(ctx, el, self.target)
+
+    def for_entity(self, ctx: Context, name: str) -> bool:
+        e = ctx.entities[name]
+        d, _ = _relative(ctx, self.el, e, ctx.entities[self.target], self.kind, self.freespace)
+        if self.kind == "longitudinal":
+            c, s = math.cos(e.yaw), math.sin(e.yaw)
+            t = ctx.entities[self.target]
+            if c * (t.x - e.x) + s * (t.y - e.y) < 0:  # the target is behind: no headway
+                return False
+        if e.speed <= 1e-9:
+            return False
+        return compare(self.rule, d / e.speed, self.value)
+
+
+class EndOfRoad(_EntityCondition):
+    def __init__(self, el, ctx, triggering, rule) -> None:
+        super().__init__(el, ctx, triggering, rule)
+        self.duration = float(el.get("duration"))
+        self.since: dict[str, float] = {}
+
+    def for_entity(self, ctx: Context, name: str) -> bool:
+        e = ctx.entities[name]
+        at_end = False
+        if e.lane is not None:
+            road = ctx.roads.road(e.lane.road)
+            forward = road.drives_forward(e.lane.lane)
+            edge = e.lane.s >= road.length - 1e-6 if forward else e.lane.s <= 1e-6
+            at_end = edge and ctx.roads.next_road(road, e.lane.lane, forward) is None
+        if not at_end:
+            self.since.pop(name, None)
+            return False
+        start = self.since.setdefault(name, ctx.t)
+        return ctx.t - start >= self.duration - 1e-9
+
+
 VALUE_CONDITIONS = {
     "SimulationTimeCondition": SimulationTime,
     "ParameterCondition": ParameterCondition,
@@ -275,6 +385,13 @@ ENTITY_CONDITIONS = {
     "DistanceCondition": Distance,
     "RelativeDistanceCondition": RelativeDistance,
     "SpeedCondition": Speed,
+    "ReachPositionCondition": ReachPosition,
+    "TraveledDistanceCondition": TraveledDistance,
+    "StandStillCondition": StandStill,
+    "RelativeSpeedCondition": RelativeSpeed,
+    "AccelerationCondition": Acceleration,
+    "TimeHeadwayCondition": TimeHeadway,
+    "EndOfRoadCondition": EndOfRoad,
 }
 
 

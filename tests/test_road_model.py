@@ -1,0 +1,113 @@
+# ruff: noqa: E501  (hand-written OpenDRIVE/OpenSCENARIO keep their XML lines whole)
+"""The OpenDRIVE road model against analytic geometry, and lane positions / catalogs in vei run."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from scipy.special import fresnel
+
+from vei_scenario.roads.road_model import Geometry, RoadNetwork
+
+
+def test_arc_follows_its_circle():
+    g = Geometry(0.0, 10.0, 5.0, 0.3, 50.0, "arc", {"curvature": 0.02})
+    r = 1 / 0.02
+    cx, cy = 10.0 - r * math.sin(0.3), 5.0 + r * math.cos(0.3)  # centre to the left
+    for ds in np.linspace(0, 50, 11):
+        x, y, h = g.pose(float(ds))
+        assert math.hypot(x - cx, y - cy) == pytest.approx(r, abs=1e-9)
+        assert h == pytest.approx(0.3 + 0.02 * ds, abs=1e-12)
+
+
+def test_spiral_matches_fresnel_integrals():
+    """Clothoid from curvature 0 to k1 over L: x = a·C(u/a'), y = a·S(u/a') with a = sqrt(π·L/k1)."""
+    L, k1 = 80.0, 0.025
+    g = Geometry(0.0, 0.0, 0.0, 0.0, L, "spiral", {"curvStart": 0.0, "curvEnd": k1})
+    a = math.sqrt(math.pi * L / k1)
+    for ds in (10.0, 40.0, 80.0):
+        S, C = fresnel(ds / a)
+        x, y, h = g.pose(ds)
+        assert x == pytest.approx(a * C, abs=1e-9) and y == pytest.approx(a * S, abs=1e-9)
+        assert h == pytest.approx(0.5 * k1 / L * ds * ds, abs=1e-12)
+
+
+def test_param_poly3_straight_and_lane_centres(tmp_path):
+    xodr = tmp_path / "r.xodr"
+    xodr.write_text(
+        """<OpenDRIVE><header revMajor="1" revMinor="6"/>
+<road id="7" length="100" junction="-1"><planView>
+<geometry s="0" x="1" y="2" hdg="0.5" length="100"><paramPoly3 aU="0" bU="1" cU="0" dU="0" aV="0" bV="0" cV="0" dV="0" pRange="arcLength"/></geometry>
+</planView><lanes><laneOffset s="0" a="0.5" b="0" c="0" d="0"/><laneSection s="0">
+<left><lane id="1" type="driving"><width sOffset="0" a="3.0" b="0" c="0" d="0"/></lane></left>
+<center><lane id="0" type="none"/></center>
+<right><lane id="-1" type="driving"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane>
+<lane id="-2" type="driving"><width sOffset="0" a="3.0" b="0" c="0" d="0"/></lane></right>
+</laneSection></lanes></road></OpenDRIVE>"""
+    )
+    net = RoadNetwork.load(xodr)
+    road = net.road("7")
+    assert road.lane_center_t(30, -1) == pytest.approx(0.5 - 1.75)
+    assert road.lane_center_t(30, -2) == pytest.approx(0.5 - 3.5 - 1.5)
+    assert road.lane_center_t(30, 1) == pytest.approx(0.5 + 1.5)
+    x, y, h = road.world(30.0, road.lane_center_t(30, -2))
+    t = -4.5
+    assert (x, y) == pytest.approx(
+        (1 + 30 * math.cos(0.5) - t * math.sin(0.5), 2 + 30 * math.sin(0.5) + t * math.cos(0.5))
+    )
+    rp = net.project(x, y)
+    assert rp.road.id == "7" and rp.lane == -2 and rp.s == pytest.approx(30.0, abs=1e-6)
+
+
+def test_catalog_entity_keeps_its_lane_at_its_speed(tmp_path):
+    """A catalog vehicle (parameter assigned by the reference) on a LanePosition, no controller:
+    it keeps its lane at its speed, as esmini's default controller does."""
+    from vei_scenario.interpreter import run_scenario
+
+    (tmp_path / "cat").mkdir()
+    (tmp_path / "cat" / "v.xosc").write_text(
+        """<OpenSCENARIO><FileHeader revMajor="1" revMinor="2" date="2024-01-01T00:00:00" description="c" author="t"/>
+<Catalog name="VehicleCatalog"><Vehicle name="car" vehicleCategory="car">
+<ParameterDeclarations><ParameterDeclaration name="Len" parameterType="double" value="4"/></ParameterDeclarations>
+<BoundingBox><Center x="1.3" y="0" z="0.7"/><Dimensions width="1.8" length="$Len" height="1.4"/></BoundingBox>
+<Performance maxSpeed="60" maxAcceleration="5" maxDeceleration="9"/>
+<Axles><FrontAxle maxSteering="0.5" wheelDiameter="0.6" trackWidth="1.6" positionX="2.6" positionZ="0.3"/>
+<RearAxle maxSteering="0" wheelDiameter="0.6" trackWidth="1.6" positionX="0" positionZ="0.3"/></Axles>
+<Properties/></Vehicle></Catalog></OpenSCENARIO>"""
+    )
+    (tmp_path / "road.xodr").write_text(
+        """<OpenDRIVE><header revMajor="1" revMinor="6"/><road id="1" length="300" junction="-1"><planView>
+<geometry s="0" x="0" y="0" hdg="0" length="300"><line/></geometry></planView>
+<lanes><laneSection s="0"><center><lane id="0" type="none"/></center>
+<right><lane id="-1" type="driving"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></right>
+</laneSection></lanes></road></OpenDRIVE>"""
+    )
+    (tmp_path / "s.xosc").write_text(
+        """<OpenSCENARIO><FileHeader revMajor="1" revMinor="2" date="2024-01-01T00:00:00" description="s" author="t"/>
+<ParameterDeclarations><ParameterDeclaration name="L" parameterType="double" value="4.6"/></ParameterDeclarations>
+<CatalogLocations><VehicleCatalog><Directory path="cat"/></VehicleCatalog></CatalogLocations>
+<RoadNetwork><LogicFile filepath="road.xodr"/></RoadNetwork>
+<Entities><ScenarioObject name="Ego"><CatalogReference catalogName="VehicleCatalog" entryName="car">
+<ParameterAssignments><ParameterAssignment parameterRef="Len" value="$L"/></ParameterAssignments></CatalogReference>
+</ScenarioObject></Entities>
+<Storyboard><Init><Actions><Private entityRef="Ego">
+<PrivateAction><TeleportAction><Position><LanePosition roadId="1" laneId="-1" s="20" offset="0"/></Position></TeleportAction></PrivateAction>
+<PrivateAction><LongitudinalAction><SpeedAction><SpeedActionDynamics dynamicsShape="step" value="0" dynamicsDimension="time"/>
+<SpeedActionTarget><AbsoluteTargetSpeed value="10"/></SpeedActionTarget></SpeedAction></LongitudinalAction></PrivateAction>
+</Private></Actions></Init>
+<StopTrigger><ConditionGroup><Condition name="end" delay="0" conditionEdge="rising"><ByValueCondition>
+<SimulationTimeCondition value="5" rule="greaterThan"/></ByValueCondition></Condition></ConditionGroup></StopTrigger>
+</Storyboard></OpenSCENARIO>"""
+    )
+    r = run_scenario(tmp_path / "s.xosc", {"L": "5.0"})
+    tr = r.traces["Ego"]
+    assert tr.length == 5.0 and tr.center_x == pytest.approx(1.3)
+    k = int(np.argmin(np.abs(tr.t - 4.0)))
+    assert tr.x[k] == pytest.approx(20 + 10 * 4.0, abs=1e-9) and tr.y[k] == pytest.approx(-1.75, abs=1e-12)
+    with pytest.raises(Exception, match="catalog entry VehicleCatalog/nope not found"):
+        (tmp_path / "bad.xosc").write_text(
+            (tmp_path / "s.xosc").read_text().replace('entryName="car"', 'entryName="nope"')
+        )
+        run_scenario(tmp_path / "bad.xosc")

@@ -1,0 +1,138 @@
+"""OpenSCENARIO positions → world poses, on the scenario's road network where they need one.
+
+Supported: WorldPosition, RelativeWorldPosition, RelativeObjectPosition, LanePosition, RoadPosition,
+RelativeLanePosition, RelativeRoadPosition. A road-based position also gives the :class:`LaneState`
+an entity keeps when it drives on by default (esmini's default controller: keep the lane at the
+current speed). Orientation: absolute, or relative to the road's driving direction (default).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from vei_scenario.safe_xml import first_element
+
+
+@dataclass
+class LaneState:
+    """Where a lane-keeping entity is: road, lane, s along the road, offset from the lane centre."""
+
+    road: str
+    lane: int
+    s: float
+    offset: float = 0.0
+
+
+@dataclass
+class Pose:
+    x: float
+    y: float
+    h: float
+    lane: LaneState | None = None
+
+
+def _wrap(a: float) -> float:
+    return (a + math.pi) % (2 * math.pi) - math.pi
+
+
+def _num(el, name: str, default: float = 0.0) -> float:
+    v = el.get(name)
+    return float(v) if v not in (None, "") else default
+
+
+def _orient(el, base_h: float) -> float:
+    o = el.find("Orientation")
+    if o is None:
+        return base_h
+    h = _num(o, "h")
+    return h if o.get("type", "relative") == "absolute" else base_h + h
+
+
+def _network(ctx, el):
+    net = getattr(ctx, "roads", None)
+    if net is None:
+        raise ctx.error(el, f"<{el.tag}> needs a road network (RoadNetwork/LogicFile)")
+    return net
+
+
+def lane_pose(ctx, el, road_id: str, lane_id: int, s: float, offset: float) -> Pose:
+    net = _network(ctx, el)
+    try:
+        road = net.road(road_id)
+        t = road.lane_center_t(s, lane_id) + (offset if lane_id < 0 else offset)
+    except KeyError as exc:
+        raise ctx.error(el, f"<{el.tag}>: {exc.args[0] if exc.args else exc}") from None
+    x, y, h = road.world(s, t)
+    drive_h = h if road.drives_forward(lane_id) else h + math.pi
+    return Pose(x, y, _wrap(_orient(el, drive_h)), LaneState(road.id, lane_id, s, offset))
+
+
+def _entity_lane(ctx, el, name: str) -> tuple[object, LaneState]:
+    e = ctx.entities.get(name)
+    if e is None:
+        raise ctx.error(el, f"no entity named {name!r}")
+    if e.lane is not None:
+        return e, e.lane
+    rp = _network(ctx, el).project(e.x, e.y)
+    if rp is None or rp.lane is None:
+        raise ctx.error(el, f"<{el.tag}>: {name} is not on a lane")
+    return e, LaneState(rp.road.id, rp.lane, rp.s, rp.t - rp.road.lane_center_t(rp.s, rp.lane))
+
+
+def resolve(ctx, pos) -> Pose:
+    """The pose of a ``<Position>`` element (its first child decides the kind)."""
+    el = first_element(pos) if pos.tag == "Position" else pos
+    if el is None:
+        raise ctx.error(pos, "empty Position")
+    tag = el.tag
+    if tag == "WorldPosition":
+        return Pose(_num(el, "x"), _num(el, "y"), _num(el, "h"))
+    if tag in ("RelativeWorldPosition", "RelativeObjectPosition"):
+        ref = ctx.entities.get(el.get("entityRef"))
+        if ref is None:
+            raise ctx.error(el, f"no entity named {el.get('entityRef')!r}")
+        dx, dy = _num(el, "dx"), _num(el, "dy")
+        if tag == "RelativeObjectPosition":
+            c, s = math.cos(ref.yaw), math.sin(ref.yaw)
+            dx, dy = c * dx - s * dy, s * dx + c * dy
+            return Pose(ref.x + dx, ref.y + dy, _wrap(_orient(el, ref.yaw)))
+        return Pose(ref.x + dx, ref.y + dy, _wrap(_orient(el, ref.yaw)))
+    if tag == "LanePosition":
+        return lane_pose(ctx, el, el.get("roadId"), int(el.get("laneId")), _num(el, "s"), _num(el, "offset"))
+    if tag == "RoadPosition":
+        net = _network(ctx, el)
+        try:
+            road = net.road(el.get("roadId"))
+        except KeyError as exc:
+            raise ctx.error(el, str(exc.args[0])) from None
+        s, t = _num(el, "s"), _num(el, "t")
+        x, y, h = road.world(s, t)
+        lane = road.lane_at(s, t)
+        state = LaneState(road.id, lane, s, t - road.lane_center_t(s, lane)) if lane is not None else None
+        base = h if lane is None or road.drives_forward(lane) else h + math.pi
+        return Pose(x, y, _wrap(_orient(el, base)), state)
+    if tag in ("RelativeLanePosition", "RelativeRoadPosition"):
+        e, st = _entity_lane(ctx, el, el.get("entityRef"))
+        road = _network(ctx, el).road(st.road)
+        forward = road.drives_forward(st.lane)
+        if tag == "RelativeRoadPosition":
+            s = st.s + _num(el, "ds")
+            t = road.lane_center_t(st.s, st.lane) + st.offset + _num(el, "dt")
+            x, y, h = road.world(s, t)
+            lane = road.lane_at(s, t)
+            state = LaneState(road.id, lane, s, t - road.lane_center_t(s, lane)) if lane is not None else None
+            base = h if lane is None or road.drives_forward(lane) else h + math.pi
+            return Pose(x, y, _wrap(_orient(el, base)), state)
+        d_lane = int(_num(el, "dLane"))
+        lane = st.lane
+        step = 1 if lane > 0 else -1
+        for _ in range(abs(d_lane)):  # dLane counts towards the left of the entity's driving direction
+            toward_left = (d_lane > 0) == forward
+            lane += step if toward_left == (lane > 0) else -step
+            if lane == 0:
+                lane += 1 if toward_left == forward else -1
+        ds = _num(el, "ds", _num(el, "dsLane"))
+        s = st.s + (ds if forward else -ds)
+        return lane_pose(ctx, el, road.id, lane, s, _num(el, "offset"))
+    raise ctx.error(el, f"position <{tag}> is not supported by vei run")
