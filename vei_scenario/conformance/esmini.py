@@ -122,7 +122,7 @@ def read_esmini_csv(path: Path) -> EsminiRun:
     t = np.array([float(r[1]) for r in data])
     tracks: dict[str, Track] = {}
     ids: dict[str, str] = {}
-    colliding: dict[frozenset, bool] = {}
+    colliding: set[frozenset] = set()
     collisions: list[tuple[float, str, str]] = []
     for b in blocks:
         name = data[0][b["Entity_Name"]]
@@ -141,10 +141,10 @@ def read_esmini_csv(path: Path) -> EsminiRun:
             for other in r[b["collision_ids"]].split():
                 if other in ids and ids[other] != me:
                     now.add(frozenset((me, ids[other])))
-        for pair in now - {p for p, v in colliding.items() if v}:
+        for pair in now - colliding:
             a, c = sorted(pair)
             collisions.append((float(t[k]), a, c))
-        colliding = {p: True for p in now}
+        colliding = now
     return EsminiRun(tracks, collisions)
 
 

@@ -11,7 +11,8 @@ from __future__ import annotations
 import math
 
 from vei_scenario.interpreter.controllers import make_controller, polyline_from
-from vei_scenario.interpreter.entities import PathFollower, SpeedProfile
+from vei_scenario.interpreter.entities import PathFollower, SpeedProfile, transition_fraction
+from vei_scenario.interpreter.positions import entity_lane, lane_shift
 from vei_scenario.interpreter.positions import resolve as resolve_position
 from vei_scenario.safe_xml import first_element
 
@@ -69,7 +70,7 @@ def lane_keep(e, ds: float, ctx) -> None:
     # ds is travelled along the lane: scale to reference-line arc length where the lane is offset on a curve
     t_now = road.lane_center_t(st.s, st.lane) + st.offset
     x0, y0, _ = road.world(st.s, t_now)
-    x1, y1, _ = road.world(min(st.s + 0.01, road.length) if st.s + 0.01 <= road.length else st.s - 0.01, t_now)
+    x1, y1, _ = road.world(st.s + 0.01 if st.s + 0.01 <= road.length else st.s - 0.01, t_now)
     stretch = math.hypot(x1 - x0, y1 - y0) / 0.01 or 1.0
     s = st.s + (ds if forward else -ds) / stretch
     while s > road.length or s < 0.0:
@@ -98,23 +99,11 @@ def lane_keep(e, ds: float, ctx) -> None:
         e.yaw = e.lateral.heading(e, base)
 
 
-def _shape(shape: str, x: float) -> float:
-    x = min(max(x, 0.0), 1.0)
-    if shape == "step":
-        return 1.0
-    if shape == "cubic":
-        return x * x * (3 - 2 * x)
-    if shape == "sinusoidal":
-        return 0.5 * (1 - math.cos(math.pi * x))
-    return x
-
-
 class LaneChangeRuntime:
     """A lateral transition from the lane the entity was in to the target lane (and target offset)."""
 
     def __init__(
         self,
-        start_road,
         start_lane: int,
         start_offset: float,
         target_lane: int,
@@ -130,7 +119,7 @@ class LaneChangeRuntime:
         self.shape, self.dimension, self.value = shape, dimension, value
         self.t0, self.odo0 = t0, odo0
         self.fraction = 0.0
-        self.prev_t: float | None = None
+        self.prev_xy: tuple[float, float] | None = None  # where the entity was a step ago
 
     def progress(self, e, ctx) -> float:
         if self.value <= 0 or self.shape == "step":
@@ -147,20 +136,16 @@ class LaneChangeRuntime:
             t_start = road.lane_center_t(s, self.target_lane) + self.start_offset
         t_target = road.lane_center_t(s, self.target_lane) + self.target_offset
         self.fraction = self.progress(e, ctx)
-        f = _shape(self.shape, self.fraction)
+        f = transition_fraction(self.shape, self.fraction)
         return (1 - f) * t_start + f * t_target - road.lane_center_t(s, self.target_lane)
 
     def heading(self, e, base: float) -> float:
-        return base if self.fraction >= 1.0 else _heading_of_motion(e, base)
-
-
-def _heading_of_motion(e, base: float) -> float:
-    prev = getattr(e, "_prev_xy", None)
-    e._prev_xy = (e.x, e.y)
-    if prev is None:
-        return base
-    dx, dy = e.x - prev[0], e.y - prev[1]
-    return math.atan2(dy, dx) if math.hypot(dx, dy) > 1e-6 else base
+        """During the transition the entity heads where it moves (``base`` on the first step)."""
+        prev, self.prev_xy = self.prev_xy, (e.x, e.y)
+        if self.fraction >= 1.0 or prev is None:
+            return base
+        dx, dy = e.x - prev[0], e.y - prev[1]
+        return math.atan2(dy, dx) if math.hypot(dx, dy) > 1e-6 else base
 
 
 class LaneChange(Action):
@@ -181,26 +166,16 @@ class LaneChange(Action):
             raise ctx.error(el, "LaneChangeTarget must be AbsoluteTargetLane or RelativeTargetLane")
 
     def start(self, ctx) -> None:
-        from vei_scenario.interpreter.positions import _entity_lane
-
-        e, st = _entity_lane(ctx, self.el, self.entity)
+        e, st = entity_lane(ctx, self.el, self.entity)
         e.lane = st
         e.follower = None
         if self.target.tag == "AbsoluteTargetLane":
             lane = int(self.target.get("value"))
         else:
-            _, ref = _entity_lane(ctx, self.el, self.target.get("entityRef"))
-            road = ctx.roads.road(ref.road)
-            forward = road.drives_forward(ref.lane)
-            lane = ref.lane
-            n = int(self.target.get("value"))
-            for _ in range(abs(n)):  # positive: to the left of the reference's driving direction
-                left = (n > 0) == forward
-                lane += 1 if left else -1
-                if lane == 0:
-                    lane += 1 if left else -1
+            _, ref = entity_lane(ctx, self.el, self.target.get("entityRef"))
+            forward = ctx.roads.road(ref.road).drives_forward(ref.lane)
+            lane = lane_shift(ref.lane, int(self.target.get("value")), forward)
         e.lateral = LaneChangeRuntime(
-            None,
             st.lane,
             st.offset,
             lane,
@@ -213,7 +188,6 @@ class LaneChange(Action):
         )
         e.lane.lane = lane
         e.lane.offset = e.lateral.offset(e, ctx, ctx.roads.road(st.road))
-        e._prev_xy = None
 
     def update(self, ctx) -> None:
         e = ctx.entities[self.entity]
@@ -255,6 +229,8 @@ class Speed(Action):
         else:
             raise ctx.error(target, "SpeedActionTarget without a target speed")
 
+    continuous = False  # RelativeTargetSpeed continuous="true": keep following the reference's speed
+
     def start(self, ctx) -> None:
         e = ctx.entities[self.entity]
         kind, value, ref, vtype = self.target
@@ -276,8 +252,6 @@ class Speed(Action):
         e.speed_profile = SpeedProfile(v0, v1, ctx.t, duration, self.shape)
         if duration == 0.0:
             e.speed = v1
-
-    continuous = False
 
     def update(self, ctx) -> None:
         e = ctx.entities[self.entity]

@@ -162,15 +162,6 @@ def _substitute(path: Path, el, scope: dict[str, str], types: dict[str, str], ca
             _substitute(path, child, scope, types, catalogs)
 
 
-def _drop_keeping_tail(node) -> None:
-    parent, prev = node.getparent(), node.getprevious()
-    if prev is not None:
-        prev.tail = (prev.tail or "") + node.tail
-    else:
-        parent.text = (parent.text or "") + node.tail
-    parent.remove(node)
-
-
 def load_scenario(path: str | Path, overrides: dict[str, str] | None = None) -> ScenarioDocument:
     path = Path(path)
     tree = parse_xml(path)
@@ -178,9 +169,7 @@ def load_scenario(path: str | Path, overrides: dict[str, str] | None = None) -> 
         raise VeiInputError(path, "line 1", "DTDs are not accepted in OpenSCENARIO files")
     root = tree.getroot()
     # Comments and processing instructions may stand anywhere; the interpreter reads elements only.
-    for junk in root.xpath("//comment() | //processing-instruction()"):
-        if junk.getparent() is not None:
-            junk.getparent().remove(junk) if junk.tail is None else _drop_keeping_tail(junk)
+    etree.strip_elements(root, etree.Comment, etree.ProcessingInstruction, with_tail=False)
     if root.tag != "OpenSCENARIO":
         raise VeiInputError(path, f"line {root.sourceline}", f"root element <{root.tag}> is not <OpenSCENARIO>")
     header = root.find("FileHeader")

@@ -119,6 +119,16 @@ class PathFollower:
         return self.s >= self.polyline.length - 1e-9
 
 
+def transition_fraction(shape: str, x: float) -> float:
+    """How far a transition of OpenSCENARIO ``dynamicsShape`` has come at progress ``x`` in [0, 1]
+    (linear for any other shape; a step has no progress to speak of)."""
+    if shape == "cubic":
+        return x * x * (3 - 2 * x)
+    if shape == "sinusoidal":
+        return 0.5 * (1 - math.cos(math.pi * x))
+    return x
+
+
 @dataclass
 class SpeedProfile:
     """A running SpeedAction: speed from v0 to v1 over ``duration`` with a transition shape."""
@@ -133,13 +143,7 @@ class SpeedProfile:
         if self.duration <= 0:
             return self.v1, True
         x = min(max((t - self.t0) / self.duration, 0.0), 1.0)
-        if self.shape == "cubic":
-            f = x * x * (3 - 2 * x)
-        elif self.shape == "sinusoidal":
-            f = 0.5 * (1 - math.cos(math.pi * x))
-        else:
-            f = x
-        return self.v0 + (self.v1 - self.v0) * f, x >= 1.0
+        return self.v0 + (self.v1 - self.v0) * transition_fraction(self.shape, x), x >= 1.0
 
 
 @dataclass

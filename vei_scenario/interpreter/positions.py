@@ -60,7 +60,7 @@ def lane_pose(ctx, el, road_id: str, lane_id: int, s: float, offset: float) -> P
     net = _network(ctx, el)
     try:
         road = net.road(road_id)
-        t = road.lane_center_t(s, lane_id) + (offset if lane_id < 0 else offset)
+        t = road.lane_center_t(s, lane_id) + offset
     except KeyError as exc:
         raise ctx.error(el, f"<{el.tag}>: {exc.args[0] if exc.args else exc}") from None
     x, y, h = road.world(s, t)
@@ -68,7 +68,7 @@ def lane_pose(ctx, el, road_id: str, lane_id: int, s: float, offset: float) -> P
     return Pose(x, y, _wrap(_orient(el, drive_h)), LaneState(road.id, lane_id, s, offset))
 
 
-def _entity_lane(ctx, el, name: str) -> tuple[object, LaneState]:
+def entity_lane(ctx, el, name: str) -> tuple[object, LaneState]:
     e = ctx.entities.get(name)
     if e is None:
         raise ctx.error(el, f"no entity named {name!r}")
@@ -78,6 +78,17 @@ def _entity_lane(ctx, el, name: str) -> tuple[object, LaneState]:
     if rp is None or rp.lane is None:
         raise ctx.error(el, f"<{el.tag}>: {name} is not on a lane")
     return e, LaneState(rp.road.id, rp.lane, rp.s, rp.t - rp.road.lane_center_t(rp.s, rp.lane))
+
+
+def lane_shift(lane: int, n: int, forward: bool) -> int:
+    """The lane ``n`` lanes to the left (negative: right) of ``lane`` as seen in its driving direction
+    (``forward``: towards increasing s). Lane ids grow to the left of the reference line; 0 is none."""
+    step = 1 if (n > 0) == forward else -1
+    for _ in range(abs(n)):
+        lane += step
+        if lane == 0:
+            lane += step
+    return lane
 
 
 def resolve(ctx, pos) -> Pose:
@@ -93,10 +104,9 @@ def resolve(ctx, pos) -> Pose:
         if ref is None:
             raise ctx.error(el, f"no entity named {el.get('entityRef')!r}")
         dx, dy = _num(el, "dx"), _num(el, "dy")
-        if tag == "RelativeObjectPosition":
+        if tag == "RelativeObjectPosition":  # dx, dy in the object's frame
             c, s = math.cos(ref.yaw), math.sin(ref.yaw)
             dx, dy = c * dx - s * dy, s * dx + c * dy
-            return Pose(ref.x + dx, ref.y + dy, _wrap(_orient(el, ref.yaw)))
         return Pose(ref.x + dx, ref.y + dy, _wrap(_orient(el, ref.yaw)))
     if tag == "LanePosition":
         return lane_pose(ctx, el, el.get("roadId"), int(el.get("laneId")), _num(el, "s"), _num(el, "offset"))
@@ -113,7 +123,7 @@ def resolve(ctx, pos) -> Pose:
         base = h if lane is None or road.drives_forward(lane) else h + math.pi
         return Pose(x, y, _wrap(_orient(el, base)), state)
     if tag in ("RelativeLanePosition", "RelativeRoadPosition"):
-        e, st = _entity_lane(ctx, el, el.get("entityRef"))
+        e, st = entity_lane(ctx, el, el.get("entityRef"))
         road = _network(ctx, el).road(st.road)
         forward = road.drives_forward(st.lane)
         if tag == "RelativeRoadPosition":
@@ -124,14 +134,7 @@ def resolve(ctx, pos) -> Pose:
             state = LaneState(road.id, lane, s, t - road.lane_center_t(s, lane)) if lane is not None else None
             base = h if lane is None or road.drives_forward(lane) else h + math.pi
             return Pose(x, y, _wrap(_orient(el, base)), state)
-        d_lane = int(_num(el, "dLane"))
-        lane = st.lane
-        step = 1 if lane > 0 else -1
-        for _ in range(abs(d_lane)):  # dLane counts towards the left of the entity's driving direction
-            toward_left = (d_lane > 0) == forward
-            lane += step if toward_left == (lane > 0) else -step
-            if lane == 0:
-                lane += 1 if toward_left == forward else -1
+        lane = lane_shift(st.lane, int(_num(el, "dLane")), forward)
         ds = _num(el, "ds", _num(el, "dsLane"))
         s = st.s + (ds if forward else -ds)
         return lane_pose(ctx, el, road.id, lane, s, _num(el, "offset"))

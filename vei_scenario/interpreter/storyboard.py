@@ -268,12 +268,16 @@ class Distance(_EntityCondition):
 
 
 class Speed(_EntityCondition):
+    """Compares the entity's ``quantity`` (an Entity attribute) with the condition's value."""
+
+    quantity = "speed"
+
     def __init__(self, el, ctx, triggering, rule) -> None:
         super().__init__(el, ctx, triggering, rule)
         self.value, self.rule = float(el.get("value")), el.get("rule")
 
     def for_entity(self, ctx: Context, name: str) -> bool:
-        return compare(self.rule, ctx.entities[name].speed, self.value)
+        return compare(self.rule, getattr(ctx.entities[name], self.quantity), self.value)
 
 
 class ReachPosition(_EntityCondition):
@@ -319,13 +323,8 @@ class RelativeSpeed(_EntityCondition):
         return compare(self.rule, ctx.entities[name].speed - ctx.entities[self.target].speed, self.value)
 
 
-class Acceleration(_EntityCondition):
-    def __init__(self, el, ctx, triggering, rule) -> None:
-        super().__init__(el, ctx, triggering, rule)
-        self.value, self.rule = float(el.get("value")), el.get("rule")
-
-    def for_entity(self, ctx: Context, name: str) -> bool:
-        return compare(self.rule, ctx.entities[name].accel, self.value)
+class Acceleration(Speed):
+    quantity = "accel"
 
 
 class TimeHeadway(_EntityCondition):
