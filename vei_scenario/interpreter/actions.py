@@ -46,6 +46,7 @@ class Teleport(Action):
         e.x, e.y, e.yaw, e.lane = pose.x, pose.y, pose.h, pose.lane
         e.follower = None
         e.lateral = None
+        e.placed = not ctx.initializing  # esmini leaves a teleported entity where it put it for this step
         self.done = True
 
 
@@ -66,23 +67,27 @@ def lane_keep(e, ds: float, ctx) -> None:
     net = ctx.roads
     st = e.lane
     road = net.road(st.road)
-    forward = road.drives_forward(st.lane)
+    forward = st.forward
     # ds is travelled along the lane: scale to reference-line arc length where the lane is offset on a curve
     t_now = road.lane_center_t(st.s, st.lane) + st.offset
-    x0, y0, _ = road.world(st.s, t_now)
-    x1, y1, _ = road.world(st.s + 0.01 if st.s + 0.01 <= road.length else st.s - 0.01, t_now)
-    stretch = math.hypot(x1 - x0, y1 - y0) / 0.01 or 1.0
+    stretch = max(1.0 - t_now * road.curvature(st.s), 0.05)
+    if e.lateral is not None:  # heading across the lane: only the along-road part of the step moves s
+        road_h = road.ref_pose(st.s)[2] + (0.0 if forward else math.pi)
+        ds *= abs(math.cos(e.yaw - road_h))
     s = st.s + (ds if forward else -ds) / stretch
     while s > road.length or s < 0.0:
         at_end = s > road.length
         over = s - road.length if at_end else -s
         nxt = net.next_road(road, st.lane, at_end)
-        if nxt is None:
-            s = min(max(s, 0.0), road.length)
+        if nxt is None:  # the end of the road: it stops there, and stands once it cannot move (esmini)
+            edge = road.length if at_end else 0.0
+            if road.id == st.road and abs(st.s - edge) < 1e-9:
+                e.speed = 0.0
+            s = edge
             break
         road, st.lane, start = nxt
         s = over if start else road.length - over
-        forward = road.drives_forward(st.lane)
+        forward = st.forward = start
     sec_lanes = road.section(s).lanes
     if st.lane not in sec_lanes:  # the lane ends in a new lane section: the nearest lane on the same side
         same = [k for k in sec_lanes if (k > 0) == (st.lane > 0)] or list(sec_lanes)
@@ -93,7 +98,8 @@ def lane_keep(e, ds: float, ctx) -> None:
     x, y, h = road.world(s, road.lane_center_t(s, st.lane) + st.offset)
     moved = math.hypot(x - e.x, y - e.y)
     e.x, e.y = x, y
-    base = h if forward else h + math.pi
+    base = road.lane_heading(s, road.lane_center_t(s, st.lane) + st.offset)
+    base = base if forward else base + math.pi
     e.yaw = math.atan2(math.sin(base), math.cos(base))
     if e.lateral is not None and moved > 1e-9:
         e.yaw = e.lateral.heading(e, base)
@@ -173,8 +179,7 @@ class LaneChange(Action):
             lane = int(self.target.get("value"))
         else:
             _, ref = entity_lane(ctx, self.el, self.target.get("entityRef"))
-            forward = ctx.roads.road(ref.road).drives_forward(ref.lane)
-            lane = lane_shift(ref.lane, int(self.target.get("value")), forward)
+            lane = lane_shift(ref.lane, int(self.target.get("value")), ref.forward)
         e.lateral = LaneChangeRuntime(
             st.lane,
             st.offset,
@@ -205,6 +210,10 @@ class Ignored(Action):
 
     def __init__(self, *_args) -> None:
         self.done = True
+
+
+#: Peak rate of a unit transition over unit time, per dynamicsShape (the slope of transition_fraction).
+PEAK_RATE = {"linear": 1.0, "cubic": 1.5, "sinusoidal": math.pi / 2, "step": 0.0}
 
 
 class Speed(Action):
@@ -240,15 +249,19 @@ class Speed(Action):
             base = ctx.entities[ref].speed
             v1 = base + value if vtype == "delta" else base * value
         v0 = e.speed
-        if self.shape == "step" or self.value <= 0:
+        if self.shape == "step" or self.value == 0 or (self.value < 0 and self.dimension != "rate"):
             duration = 0.0
         elif self.dimension == "time":
             duration = self.value
         elif self.dimension == "rate":
-            duration = abs(v1 - v0) / self.value
+            duration = abs((v1 - v0) / self.value)  # a rate may be written with the sign of the change
         else:  # distance: the time to cover it at the mean speed of the transition
             mean = 0.5 * (v0 + v1)
             duration = self.value / mean if mean > 1e-9 else 0.0
+        if e.performance and duration > 0.0:  # as esmini: stretch the transition to the vehicle's limits
+            limit = e.limits.max_accel_mps2 if v1 > v0 else e.limits.max_decel_mps2
+            if limit > 0:
+                duration = max(duration, PEAK_RATE[self.shape] * abs(v1 - v0) / limit)
         e.speed_profile = SpeedProfile(v0, v1, ctx.t, duration, self.shape)
         if duration == 0.0:
             e.speed = v1

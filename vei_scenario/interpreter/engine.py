@@ -92,6 +92,7 @@ def _entity(obj, ctx) -> Entity:
         float(dims.get("height")),
         float(centre.get("x", "0")) - rear_x,
         limits,
+        performance=perf is not None,
     )
 
 
@@ -223,6 +224,7 @@ class Simulation:
         ctx = self.ctx
         if self.stop_trigger is not None and self.stop_trigger.evaluate(ctx):
             return False
+        starting: list[tuple[Element, list[Element]]] = []
         for story in self.stories:
             if story.state == STANDBY:
                 story.start(ctx)
@@ -247,7 +249,11 @@ class Simulation:
                         running = [e for e in m.children if e.state == RUNNING]
                         for ev in m.children:
                             if ev.state == STANDBY and (ev.start_trigger is None or ev.start_trigger.evaluate(ctx)):
-                                self._start_event(ev, [r for r in running if r is not ev])
+                                starting.append((ev, [r for r in running if r is not ev]))
+        # every trigger sees the same state: events start after all were evaluated (a teleport started
+        # by one event must not hide the condition that starts another)
+        for ev, others in starting:
+            self._start_event(ev, others)
         return True
 
     def _complete_finished(self) -> None:
@@ -287,6 +293,9 @@ class Simulation:
                 story.complete(ctx)
 
     def _move(self, e: Entity) -> None:
+        if e.placed:
+            e.placed = False
+            return
         x0, y0 = e.x, e.y
         self._motion(e)
         e.odometer += math.hypot(e.x - x0, e.y - y0)
@@ -330,7 +339,7 @@ class Simulation:
             if finished:
                 e.speed_profile = None
         e.accel = (e.speed - v0) / dt
-        ds = 0.5 * (v0 + e.speed) * dt
+        ds = e.speed * dt  # esmini's default controller: the step's new speed over the whole step
         if e.lane is not None and f is None:
             lane_keep(e, ds, ctx)
         else:

@@ -169,6 +169,8 @@ class Entity:
     lateral: object = None  # a running lane change (actions.LaneChangeRuntime)
     odometer: float = 0.0  # distance travelled (m), for TraveledDistanceCondition
     standing_since: float | None = None  # simulation time the entity came to a standstill
+    placed: bool = False  # teleported during this step: it does not move until the next one
+    performance: bool = False  # limits come from the entity's <Performance> (speed changes obey them)
 
     def box(self) -> tuple[float, float, float, float, float]:
         """(centre x, centre y, yaw, length, width) of the bounding box."""

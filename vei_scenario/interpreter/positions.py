@@ -22,6 +22,7 @@ class LaneState:
     lane: int
     s: float
     offset: float = 0.0
+    forward: bool = True  # moves towards increasing s (taken from its heading, as esmini does)
 
 
 @dataclass
@@ -41,6 +42,11 @@ def _num(el, name: str, default: float = 0.0) -> float:
     return float(v) if v not in (None, "") else default
 
 
+def _heads_forward(h: float, road_h: float) -> bool:
+    """Whether heading ``h`` points along the road's increasing s (its reference heading ``road_h``)."""
+    return math.cos(h - road_h) >= 0.0
+
+
 def _orient(el, base_h: float) -> float:
     o = el.find("Orientation")
     if o is None:
@@ -56,7 +62,9 @@ def _network(ctx, el):
     return net
 
 
-def lane_pose(ctx, el, road_id: str, lane_id: int, s: float, offset: float) -> Pose:
+def lane_pose(ctx, el, road_id: str, lane_id: int, s: float, offset: float, forward: bool | None = None) -> Pose:
+    """Pose on a lane, heading its driving direction, or along increasing s when ``forward`` says so
+    (a position relative to an entity takes that entity's direction, as esmini does)."""
     net = _network(ctx, el)
     try:
         road = net.road(road_id)
@@ -64,8 +72,20 @@ def lane_pose(ctx, el, road_id: str, lane_id: int, s: float, offset: float) -> P
     except KeyError as exc:
         raise ctx.error(el, f"<{el.tag}>: {exc.args[0] if exc.args else exc}") from None
     x, y, h = road.world(s, t)
-    drive_h = h if road.drives_forward(lane_id) else h + math.pi
-    return Pose(x, y, _wrap(_orient(el, drive_h)), LaneState(road.id, lane_id, s, offset))
+    forward = road.drives_forward(lane_id) if forward is None else forward
+    drive_h = _wrap(_orient(el, h if forward else h + math.pi))
+    return Pose(x, y, drive_h, LaneState(road.id, lane_id, s, offset, _heads_forward(drive_h, h)))
+
+
+def _road_pose(el, road, s: float, t: float) -> Pose:
+    x, y, h = road.world(s, t)
+    lane = road.lane_at(s, t)
+    base = h if lane is None or road.drives_forward(lane) else h + math.pi
+    pose_h = _wrap(_orient(el, base))
+    if lane is None:
+        return Pose(x, y, pose_h)
+    state = LaneState(road.id, lane, s, t - road.lane_center_t(s, lane), _heads_forward(pose_h, h))
+    return Pose(x, y, pose_h, state)
 
 
 def entity_lane(ctx, el, name: str) -> tuple[object, LaneState]:
@@ -77,7 +97,9 @@ def entity_lane(ctx, el, name: str) -> tuple[object, LaneState]:
     rp = _network(ctx, el).project(e.x, e.y)
     if rp is None or rp.lane is None:
         raise ctx.error(el, f"<{el.tag}>: {name} is not on a lane")
-    return e, LaneState(rp.road.id, rp.lane, rp.s, rp.t - rp.road.lane_center_t(rp.s, rp.lane))
+    h_ref = rp.road.ref_pose(rp.s)[2]
+    offset = rp.t - rp.road.lane_center_t(rp.s, rp.lane)
+    return e, LaneState(rp.road.id, rp.lane, rp.s, offset, _heads_forward(e.yaw, h_ref))
 
 
 def lane_shift(lane: int, n: int, forward: bool) -> int:
@@ -117,25 +139,17 @@ def resolve(ctx, pos) -> Pose:
         except KeyError as exc:
             raise ctx.error(el, str(exc.args[0])) from None
         s, t = _num(el, "s"), _num(el, "t")
-        x, y, h = road.world(s, t)
-        lane = road.lane_at(s, t)
-        state = LaneState(road.id, lane, s, t - road.lane_center_t(s, lane)) if lane is not None else None
-        base = h if lane is None or road.drives_forward(lane) else h + math.pi
-        return Pose(x, y, _wrap(_orient(el, base)), state)
+        return _road_pose(el, road, s, t)
     if tag in ("RelativeLanePosition", "RelativeRoadPosition"):
         e, st = entity_lane(ctx, el, el.get("entityRef"))
         road = _network(ctx, el).road(st.road)
-        forward = road.drives_forward(st.lane)
+        forward = st.forward  # "ahead" and "left" as the reference entity drives
         if tag == "RelativeRoadPosition":
             s = st.s + _num(el, "ds")
             t = road.lane_center_t(st.s, st.lane) + st.offset + _num(el, "dt")
-            x, y, h = road.world(s, t)
-            lane = road.lane_at(s, t)
-            state = LaneState(road.id, lane, s, t - road.lane_center_t(s, lane)) if lane is not None else None
-            base = h if lane is None or road.drives_forward(lane) else h + math.pi
-            return Pose(x, y, _wrap(_orient(el, base)), state)
+            return _road_pose(el, road, s, t)
         lane = lane_shift(st.lane, int(_num(el, "dLane")), forward)
         ds = _num(el, "ds", _num(el, "dsLane"))
         s = st.s + (ds if forward else -ds)
-        return lane_pose(ctx, el, road.id, lane, s, _num(el, "offset"))
+        return lane_pose(ctx, el, road.id, lane, s, _num(el, "offset"), forward)
     raise ctx.error(el, f"position <{tag}> is not supported by vei run")

@@ -170,6 +170,8 @@ def _relative(ctx, el, a, b, kind: str, freespace: bool) -> tuple[float, float]:
     longitudinal or lateral in a's frame; ``freespace``: between the boxes)."""
     ax, ay, ayaw, al, aw = a.box()
     bx, by, byaw, bl, bw = b.box()
+    if not freespace:  # between reference points (esmini), not box centres
+        ax, ay, bx, by = a.x, a.y, b.x, b.y
     (avx, avy), (bvx, bvy) = a.velocity(), b.velocity()
     rx, ry, vx, vy = bx - ax, by - ay, bvx - avx, bvy - avy
     if kind in ("cartesianDistance", "euclidianDistance", "euclideanDistance"):
@@ -334,19 +336,19 @@ class TimeHeadway(_EntityCondition):
         super().__init__(el, ctx, triggering, rule)
         self.value, self.rule, self.target = float(el.get("value")), el.get("rule"), el.get("entityRef")
         self.freespace = el.get("freespace", "false") == "true"
-        self.kind = el.get("relativeDistanceType", "longitudinal")
-        if el.get("alongRoute") == "true":
-            self.kind = "longitudinal"
+        # OpenSCENARIO 1.0 alongRoute: true along the road (longitudinal), false straight (euclidean)
+        along = el.get("alongRoute")
+        default = "euclidianDistance" if along == "false" else "longitudinal"
+        self.kind = el.get("relativeDistanceType", default)
         _entity(ctx, el, self.target)
 
     def for_entity(self, ctx: Context, name: str) -> bool:
         e = ctx.entities[name]
         d, _ = _relative(ctx, self.el, e, ctx.entities[self.target], self.kind, self.freespace)
-        if self.kind == "longitudinal":
-            c, s = math.cos(e.yaw), math.sin(e.yaw)
-            t = ctx.entities[self.target]
-            if c * (t.x - e.x) + s * (t.y - e.y) < 0:  # the target is behind: no headway
-                return False
+        c, s = math.cos(e.yaw), math.sin(e.yaw)
+        t = ctx.entities[self.target]
+        if c * (t.x - e.x) + s * (t.y - e.y) <= 0:  # the target is not ahead: no headway
+            return False
         if e.speed <= 1e-9:
             return False
         return compare(self.rule, d / e.speed, self.value)
@@ -363,7 +365,7 @@ class EndOfRoad(_EntityCondition):
         at_end = False
         if e.lane is not None:
             road = ctx.roads.road(e.lane.road)
-            forward = road.drives_forward(e.lane.lane)
+            forward = e.lane.forward
             edge = e.lane.s >= road.length - 1e-6 if forward else e.lane.s <= 1e-6
             at_end = edge and ctx.roads.next_road(road, e.lane.lane, forward) is None
         if not at_end:
@@ -472,7 +474,9 @@ class Element:
         self.max_executions = int(el.get("maximumExecutionCount", "1"))
         self.executions = 0
         start, stop = el.find("StartTrigger"), el.find("StopTrigger")
-        self.start_trigger = Trigger(start, ctx) if start is not None else None
+        # an empty <StartTrigger/> starts the element at once, as no trigger does (esmini's reading)
+        has_start = start is not None and start.find("ConditionGroup") is not None
+        self.start_trigger = Trigger(start, ctx) if has_start else None
         self.stop_trigger = Trigger(stop, ctx) if stop is not None else None
         self.actions: list = []  # runtime actions of an Action element
         ctx.elements.setdefault((kind, self.name), self)

@@ -144,15 +144,14 @@ class Road:
         g = self.geometries[k]
         return g.pose(min(s - g.s, g.length))
 
+    superelevation: list[tuple[float, float, float, float, float]] = field(default_factory=list)
+
     def lane_offset(self, s: float) -> float:
-        if not self.offsets:
-            return 0.0
-        k = bisect.bisect_right([o[0] for o in self.offsets], s) - 1
-        if k < 0:
-            return 0.0
-        s0, a, b, c, d = self.offsets[k]
-        u = s - s0
-        return a + b * u + c * u * u + d * u**3
+        return _cubic_at(self.offsets, s)
+
+    def roll(self, s: float) -> float:
+        """Superelevation (rad) at ``s``: a banked road is narrower seen from above by cos(roll)."""
+        return _cubic_at(self.superelevation, s)
 
     def section(self, s: float) -> LaneSection:
         k = max(0, bisect.bisect_right([sec.s for sec in self.sections], s + 1e-9) - 1)
@@ -178,9 +177,32 @@ class Road:
         inner, outer = self.lane_borders(s, lane_id)
         return 0.5 * (inner + outer)
 
+    def curvature(self, s: float, eps: float = 0.05) -> float:
+        """Curvature of the reference line at ``s`` (1/m, positive turning left)."""
+        a, b = max(s - eps, 0.0), min(s + eps, self.length)
+        if b <= a:
+            return 0.0
+        dh = self.ref_pose(b)[2] - self.ref_pose(a)[2]
+        return math.atan2(math.sin(dh), math.cos(dh)) / (b - a)
+
+    def lane_heading(self, s: float, t: float, eps: float = 0.05) -> float:
+        """Heading of the curve at constant ``t`` through ``s``: the reference heading, turned where a
+        changing superelevation moves the curve sideways as seen from above."""
+        h = self.ref_pose(s)[2]
+        if not self.superelevation:
+            return h
+        a, b = max(s - eps, 0.0), min(s + eps, self.length)
+        if b <= a:
+            return h
+        dt_ds = t * (math.cos(self.roll(b)) - math.cos(self.roll(a))) / (b - a)
+        along = 1.0 - t * math.cos(self.roll(s)) * self.curvature(s)
+        return h + math.atan2(dt_ds, along)
+
     def world(self, s: float, t: float) -> tuple[float, float, float]:
         """World x, y and reference-line heading of road coordinates (s, t)."""
         x, y, h = self.ref_pose(s)
+        if self.superelevation:
+            t *= math.cos(self.roll(s))
         return x - t * math.sin(h), y + t * math.cos(h), h
 
     def lane_at(self, s: float, t: float) -> int | None:
@@ -268,6 +290,8 @@ class RoadNetwork:
             s = _refine(road, x, y, float(ss[k]), float(ss[1] - ss[0]))
             rx, ry, rh = road.ref_pose(s)
             t = -(x - rx) * math.sin(rh) + (y - ry) * math.cos(rh)
+            if road.superelevation:
+                t /= math.cos(road.roll(s))
             along = (x - rx) * math.cos(rh) + (y - ry) * math.sin(rh)
             lane = road.lane_at(s, t) if abs(along) < 0.5 else None
             dist = 0.0 if lane is not None else math.hypot(x - rx, y - ry)
@@ -376,4 +400,17 @@ def _road(r) -> Road:
         _link(r.find("link/predecessor")),
         _link(r.find("link/successor")),
         r.get("rule", "RHT"),
+        sorted(_poly(e) for e in r.iterfind("lateralProfile/superelevation")),
     )
+
+
+def _cubic_at(polys: list[tuple[float, float, float, float, float]], s: float) -> float:
+    """Value at ``s`` of OpenDRIVE's piecewise cubic records (s0, a, b, c, d); 0 before the first."""
+    if not polys:
+        return 0.0
+    k = bisect.bisect_right([p[0] for p in polys], s) - 1
+    if k < 0:
+        return 0.0
+    s0, a, b, c, d = polys[k]
+    u = s - s0
+    return a + b * u + c * u * u + d * u**3
