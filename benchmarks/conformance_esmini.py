@@ -51,21 +51,21 @@ def main() -> int:
     rows = []
     for path in sorted(Path(args.examples).glob("*.xosc")):
         special = esmini_specific(path)
+        try:
+            es = run_esmini(esmini, path, 0.01)
+        except Exception as exc:  # noqa: BLE001 - a conformance table reports every failure
+            rows.append((path.name, "esmini fails", str(exc).splitlines()[0][:160], special))
+            continue
         start = time.perf_counter()
         try:
             result = run_scenario(path, {}, 0.01)
         except VeiInputError as exc:
             rows.append((path.name, "refused", str(exc).split(": ", 1)[-1], special))
             continue
-        except Exception as exc:  # noqa: BLE001 - a conformance table reports every failure
+        except Exception as exc:  # noqa: BLE001
             rows.append((path.name, "error", f"{type(exc).__name__}: {exc}", special))
             continue
         vei_s = time.perf_counter() - start
-        try:
-            es = run_esmini(esmini, path, 0.01)
-        except Exception as exc:  # noqa: BLE001
-            rows.append((path.name, "esmini failed", str(exc), special))
-            continue
         c = compare_runs(result, es)
         worst = max(c.entities, key=lambda e: e.max_deviation_m) if c.entities else None
         verdict = "agrees" if worst and worst.max_deviation_m <= args.tolerance and c.same_verdict else "differs"
@@ -84,6 +84,9 @@ def main() -> int:
         else:
             print(f"{name:48s} {verdict:8s} {detail}{tag}")
     print("; ".join(f"{v}: {n}" for v, n in sorted(counts.items())), f"(of {len(rows)})")
+    plain = [r for r in rows if not r[3] and r[1] != "esmini fails"]
+    agree = sum(1 for r in plain if r[1] == "agrees")
+    print(f"of the {len(plain)} examples esmini plays without an esmini-specific controller: {agree} agree")
     return 0
 
 

@@ -199,7 +199,12 @@ def compare_runs(vei_result, esmini_run: EsminiRun, until: dict[str, float] | No
         k = int(np.argmax(d))
         out.append(EntityComparison(name, float(d[k]), float(trace.t[vi[k]]), float(trace.t[vi[-1]]), len(pairs)))
     vei_coll = [(float(t), *sorted((a, b))) for t, a, b in vei_result.collisions]
-    return Comparison(out, vei_coll, esmini_run.collisions, notes)
+    # esmini adds entities of its own (a truck's trailer "Truck+"): their collisions are not comparable
+    known = set(vei_result.traces)
+    es_coll = [c for c in esmini_run.collisions if c[1] in known and c[2] in known]
+    if len(es_coll) < len(esmini_run.collisions):
+        notes.append("esmini collisions with entities vei does not model were left out")
+    return Comparison(out, vei_coll, es_coll, notes)
 
 
 def recording_ends(xosc: str | Path, parameters: dict[str, str] | None = None) -> dict[str, float]:

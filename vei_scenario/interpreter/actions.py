@@ -10,10 +10,11 @@ from __future__ import annotations
 
 import math
 
-from vei_scenario.interpreter.controllers import make_controller, polyline_from
+from vei_scenario.interpreter.controllers import make_controller
 from vei_scenario.interpreter.entities import PathFollower, SpeedProfile, transition_fraction
-from vei_scenario.interpreter.positions import entity_lane, lane_shift
+from vei_scenario.interpreter.positions import entity_lane, lane_shift, lane_state_at
 from vei_scenario.interpreter.positions import resolve as resolve_position
+from vei_scenario.interpreter.shapes import polyline_from
 from vei_scenario.safe_xml import first_element
 
 
@@ -71,7 +72,7 @@ def lane_keep(e, ds: float, ctx) -> None:
     # ds is travelled along the lane: scale to reference-line arc length where the lane is offset on a curve
     t_now = road.lane_center_t(st.s, st.lane) + st.offset
     stretch = max(1.0 - t_now * road.curvature(st.s), 0.05)
-    if e.lateral is not None:  # heading across the lane: only the along-road part of the step moves s
+    if e.lateral is not None and e.lateral.projects_step:  # only the along-road part of the step moves s
         road_h = road.ref_pose(st.s)[2] + (0.0 if forward else math.pi)
         ds *= abs(math.cos(e.yaw - road_h))
     s = st.s + (ds if forward else -ds) / stretch
@@ -125,12 +126,14 @@ class LaneChangeRuntime:
         self.shape, self.dimension, self.value = shape, dimension, value
         self.t0, self.odo0 = t0, odo0
         self.fraction = 0.0
+        self.projects_step = True  # a lane change (esmini): s advances by the step's along-road part
+        self.steps_ahead = 1  # progress at the end of the step being taken (esmini)
         self.prev_xy: tuple[float, float] | None = None  # where the entity was a step ago
 
     def progress(self, e, ctx) -> float:
         if self.value <= 0 or self.shape == "step":
             return 1.0
-        done = (ctx.t + ctx.dt - self.t0) if self.dimension == "time" else (e.odometer - self.odo0)
+        done = (ctx.t + self.steps_ahead * ctx.dt - self.t0) if self.dimension == "time" else (e.odometer - self.odo0)
         return min(max(done / self.value, 0.0), 1.0)
 
     def offset(self, e, ctx, road) -> float:
@@ -200,6 +203,60 @@ class LaneChange(Action):
         if self.done and e.lateral is not None:
             e.lane.offset = self.target_offset
             e.lateral = None
+
+    def stop(self, ctx) -> None:
+        ctx.entities[self.entity].lateral = None
+
+
+class LaneOffset(Action):
+    """LaneOffsetAction: to an absolute offset from the lane centre, or relative to another entity's,
+    shaped so the lateral acceleration peaks at ``maxLateralAcc`` (esmini's reading: the transition
+    time follows from the offset change and that limit)."""
+
+    def __init__(self, entity: str, el, ctx) -> None:
+        self.entity, self.el = entity, el
+        dyn = el.find("LaneOffsetActionDynamics")
+        self.shape = dyn.get("dynamicsShape", "sinusoidal")
+        self.max_acc = float(dyn.get("maxLateralAcc") or 0.0)
+        if self.shape not in ("step", "linear", "cubic", "sinusoidal"):
+            raise ctx.error(dyn, f"lane offset dynamicsShape {self.shape!r} is not supported")
+        target = first_element(el.find("LaneOffsetTarget"))
+        if target is None or target.tag not in ("AbsoluteTargetLaneOffset", "RelativeTargetLaneOffset"):
+            raise ctx.error(el, "LaneOffsetTarget must be AbsoluteTargetLaneOffset or RelativeTargetLaneOffset")
+        self.target = target
+
+    def _duration(self, change: float) -> float:
+        if self.shape == "step" or change == 0.0 or self.max_acc <= 0.0:
+            return 0.0
+        if self.shape == "sinusoidal":  # a = (Δ/2)(π/T)² at the ends
+            return math.pi * math.sqrt(change / (2.0 * self.max_acc))
+        if self.shape == "cubic":  # a = 6Δ/T² at the ends
+            return math.sqrt(6.0 * change / self.max_acc)
+        return math.sqrt(change / self.max_acc)  # linear: bounded as if over one unit of jerk-free time
+
+    def start(self, ctx) -> None:
+        e, st = entity_lane(ctx, self.el, self.entity)
+        e.lane, e.follower = st, None
+        value = float(self.target.get("value"))
+        if self.target.tag == "RelativeTargetLaneOffset":
+            _, ref = entity_lane(ctx, self.el, self.target.get("entityRef"))
+            value += ref.offset
+        self.goal = value
+        duration = self._duration(abs(value - st.offset))
+        e.lateral = LaneChangeRuntime(
+            st.lane, st.offset, st.lane, value, self.shape, "time", duration, ctx.t, e.odometer
+        )
+        e.lateral.projects_step = False  # esmini's lane offset keeps the full step along the road
+        e.lateral.steps_ahead = 0  # ... and does not move in its first step
+        e.lane.offset = e.lateral.offset(e, ctx, ctx.roads.road(st.road))
+
+    def update(self, ctx) -> None:
+        e = ctx.entities[self.entity]
+        if e.lateral is not None and e.lateral.fraction >= 1.0:
+            e.lane.offset = self.goal
+            e.lateral = None
+        # ends when the offset is reached, continuous or not (esmini: the entity keeps the offset)
+        self.done = e.lateral is None
 
     def stop(self, ctx) -> None:
         ctx.entities[self.entity].lateral = None
@@ -292,7 +349,12 @@ class FollowTrajectory(Action):
             traj = el.find("Trajectory")
         if traj is None:
             raise ctx.error(el, "FollowTrajectoryAction: only an inline Trajectory is supported (no catalogs)")
-        self.polyline = polyline_from(traj, ctx)
+        self.traj = traj
+        # vertices relative to an entity are placed when the action starts (esmini), others now
+        relative = any(isinstance(x.tag, str) and x.tag.startswith("Relative") for x in traj.iter())
+        unplaced_clothoid = traj.find("Shape/Clothoid") is not None and traj.find("Shape/Clothoid/Position") is None
+        unplaced_clothoid |= traj.find("Shape/ClothoidSpline") is not None and not list(traj.iter("PositionStart"))
+        self.polyline = polyline_from(traj, ctx, place=not (relative or unplaced_clothoid))
         tref = el.find("TimeReference")
         timing = tref.find("Timing") if tref is not None else None
         if timing is not None:
@@ -312,15 +374,25 @@ class FollowTrajectory(Action):
 
     def start(self, ctx) -> None:
         e = ctx.entities[self.entity]
+        if self.polyline.xs is None:
+            self.polyline = polyline_from(self.traj, ctx, entity=self.entity)
         e.follower = PathFollower(self.polyline, self.timing, self.mode, ctx.t, self.initial_s)
-        if self.timing is None:  # continue from where the entity is: its projection onto the path
+        if self.timing is None and ctx.initializing:  # placed on its path at t = 0 (esmini)
+            e.follower.s = self.initial_s
+            e.x, e.y, e.yaw = self.polyline.at_s(self.initial_s)
+        elif self.timing is None:  # continue from where the entity is: its projection onto the path
             e.follower.s = max(self.polyline.project(e.x, e.y), self.initial_s)
-        elif self.mode == "position" and ctx.initializing:  # logged at t = 0 on its trajectory
+        elif ctx.initializing:  # logged at t = 0 on its trajectory
             e.x, e.y, e.yaw = self.polyline.at_time(e.follower.trajectory_time(ctx.t))
+        e.lane = None
 
     def update(self, ctx) -> None:
         e = ctx.entities[self.entity]
         self.done = e.follower is None or e.follower.finished(ctx.t)
+        if self.done and e.follower is not None and e.follower.timing is None and ctx.roads is not None:
+            # the path ends on a lane: the entity drives on along it by default, as esmini's does
+            e.lane = lane_state_at(ctx.roads, e)
+            e.follower = None  # (an Init action is never stopped)
 
     def stop(self, ctx) -> None:
         ctx.entities[self.entity].follower = None
@@ -394,6 +466,8 @@ def private_actions(pa, entity: str, ctx) -> list[Action]:
         return [Speed(entity, kind.find("SpeedAction"), ctx)]
     if kind.tag == "LateralAction" and kind.find("LaneChangeAction") is not None:
         return [LaneChange(entity, kind.find("LaneChangeAction"), ctx)]
+    if kind.tag == "LateralAction" and kind.find("LaneOffsetAction") is not None:
+        return [LaneOffset(entity, kind.find("LaneOffsetAction"), ctx)]
     if kind.tag in ("VisibilityAction", "AppearanceAction"):
         return [Ignored()]
     if kind.tag == "RoutingAction" and kind.find("FollowTrajectoryAction") is not None:

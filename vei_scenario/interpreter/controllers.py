@@ -183,34 +183,3 @@ def make_controller(el, ctx) -> Controller:
             f"controller {name!r} is not supported by vei run (supported: {', '.join(CONTROLLERS)})",
         )
     return cls(name, props, el, ctx)
-
-
-def polyline_from(el, ctx) -> Polyline:
-    """A ``<Trajectory>``'s polyline (the only shape vei run follows)."""
-    if el.get("closed", "false") == "true":
-        raise ctx.error(el, "closed trajectories are not supported")
-    shape = el.find("Shape")
-    if shape is None or shape.find("Polyline") is None:
-        kind = shape[0].tag if shape is not None and len(shape) else "none"
-        raise ctx.error(el, f"trajectory shape <{kind}> is not supported (Polyline only)")
-    xs, ys, hs, ts = [], [], [], []
-    from vei_scenario.interpreter.positions import resolve
-
-    for v in shape.find("Polyline").iterfind("Vertex"):
-        wp = v.find("Position/WorldPosition")
-        if wp is not None:
-            xs.append(float(wp.get("x")))
-            ys.append(float(wp.get("y")))
-            hs.append(float(wp.get("h")) if wp.get("h") is not None else None)
-        else:  # road-based vertices are placed once, when the scenario is built
-            pos = v.find("Position")
-            if pos is None:
-                raise ctx.error(v, "vertex without a Position")
-            pose = resolve(ctx, pos)
-            xs.append(pose.x)
-            ys.append(pose.y)
-            hs.append(pose.h)
-        ts.append(float(v.get("time")) if v.get("time") is not None else None)
-    if len(xs) < 2:
-        raise ctx.error(el, "a polyline needs at least two vertices")
-    return Polyline(xs, ys, hs, ts)

@@ -81,33 +81,48 @@ def _declare(path: Path, decls, scope: dict[str, str], types: dict[str, str]) ->
 
 class Catalogs:
     """Catalog entries by (catalog name, entry name), read lazily from the scenario's
-    ``CatalogLocations`` directories (every ``.xosc`` file in them)."""
+    ``CatalogLocations`` directories (every ``.xosc`` file in them).
+
+    A reference whose catalog name matches no ``<Catalog name>`` is looked up, as esmini does, by its
+    entry name in the directories of the location of that name (``<EnvironmentCatalog>`` for
+    ``catalogName="EnvironmentCatalog"``), then among all entries if only one has that name."""
 
     def __init__(self, path: Path, root) -> None:
         self.path = path
         self.dirs = [
-            (path.parent / d.get("path")).resolve()
+            (d.getparent().tag, (path.parent / d.get("path")).resolve())
             for d in root.iterfind("CatalogLocations/*/Directory")
             if d.get("path") and not d.get("path").startswith("$")
         ]
         self._entries: dict[tuple[str, str], object] | None = None
+        self._by_location: dict[tuple[str, str], object] = {}
+        self._by_name: dict[str, list] = {}
+
+    def _load(self) -> None:
+        self._entries = {}
+        for location, d in self.dirs:
+            for f in sorted(d.glob("*.xosc")) if d.is_dir() else []:
+                for cat in parse_xml(f).getroot().iterfind("Catalog"):
+                    for item in cat:
+                        if isinstance(item.tag, str) and item.get("name"):
+                            name = item.get("name")
+                            self._entries.setdefault((cat.get("name"), name), item)
+                            self._by_location.setdefault((location, name), item)
+                            self._by_name.setdefault(name, []).append(item)
 
     def entry(self, ref):
         if self._entries is None:
-            self._entries = {}
-            for d in self.dirs:
-                for f in sorted(d.glob("*.xosc")) if d.is_dir() else []:
-                    for cat in parse_xml(f).getroot().iterfind("Catalog"):
-                        for item in cat:
-                            if isinstance(item.tag, str) and item.get("name"):
-                                self._entries.setdefault((cat.get("name"), item.get("name")), item)
-        found = self._entries.get((ref.get("catalogName"), ref.get("entryName")))
+            self._load()
+        catalog, name = ref.get("catalogName"), ref.get("entryName")
+        found = self._entries.get((catalog, name))
         if found is None:
-            where = ", ".join(str(d) for d in self.dirs) or "no CatalogLocations"
+            found = self._by_location.get((catalog, name))
+        if found is None and len(self._by_name.get(name, [])) == 1:
+            found = self._by_name[name][0]
+        if found is None:
+            where = ", ".join(str(d) for _, d in self.dirs) or "no CatalogLocations"
             raise VeiInputError(
-                self.path,
-                f"line {ref.sourceline}",
-                f"catalog entry {ref.get('catalogName')}/{ref.get('entryName')} not found ({where})",
+                self.path, f"line {ref.sourceline}", f"catalog entry {catalog}/{name} not found ({where})"
             )
         return found
 

@@ -16,9 +16,10 @@ from pathlib import Path
 import numpy as np
 
 from vei_scenario.interpreter.actions import global_actions, lane_keep, private_actions
-from vei_scenario.interpreter.controllers import advance_along, make_controller, polyline_from
+from vei_scenario.interpreter.controllers import advance_along, make_controller
 from vei_scenario.interpreter.document import ScenarioDocument
 from vei_scenario.interpreter.entities import Entity
+from vei_scenario.interpreter.shapes import polyline_from
 from vei_scenario.interpreter.storyboard import COMPLETE, RUNNING, STANDBY, Context, Element, Trigger
 from vei_scenario.models.boxes import boxes_overlap_scalar
 from vei_scenario.models.vehicle import VehicleLimits
@@ -111,16 +112,17 @@ class Simulation:
         self.ctx = Context(doc.path, 0.0, dt, 0, {}, dict(doc.parameters))
         ctx = self.ctx
         ctx.road_file = doc.road_file
-        ctx.trajectories = {}
-        for traj in root.iter("Trajectory"):
-            if traj.get("name"):
-                ctx.trajectories[traj.get("name")] = polyline_from(traj, ctx)
         for sel in root.iter("EntitySelection"):
             raise ctx.error(sel, "entity selections are not supported by vei run")
         for obj in root.iterfind("Entities/ScenarioObject"):
             ctx.entities[obj.get("name")] = _entity(obj, ctx)
         if not ctx.entities:
             raise ctx.error(root, "the scenario has no entities")
+        ctx.trajectories = {}  # by name, for controllers that follow a route (world positions)
+        for traj in root.iter("Trajectory"):
+            relative = any(isinstance(x.tag, str) and x.tag.startswith("Relative") for x in traj.iter())
+            if traj.get("name") and not relative and traj.find("Shape/Polyline") is not None:
+                ctx.trajectories[traj.get("name")] = polyline_from(traj, ctx)
         for obj in root.iterfind("Entities/ScenarioObject"):
             ctrl = obj.find("ObjectController/Controller")
             if obj.find("ObjectController/CatalogReference") is not None:
@@ -342,6 +344,11 @@ class Simulation:
         ds = e.speed * dt  # esmini's default controller: the step's new speed over the whole step
         if e.lane is not None and f is None:
             lane_keep(e, ds, ctx)
+        elif f is not None and f.s + ds > f.polyline.length:  # past the end: on along its last heading
+            over = f.s + ds - f.polyline.length
+            advance_along(e, ds - over)
+            e.x += over * math.cos(e.yaw)
+            e.y += over * math.sin(e.yaw)
         else:
             advance_along(e, ds)
 

@@ -25,6 +25,15 @@ class Polyline:
         self.hs = [h if h is not None else seg[min(i, len(seg) - 1)] for i, h in enumerate(hs)]
         self.timed = all(t is not None for t in ts)
 
+    @classmethod
+    def unplaced(cls, ts: list[float | None]) -> Polyline:
+        """Vertex times only: a trajectory whose positions are resolved when its action starts."""
+        p = cls.__new__(cls)
+        p.xs = p.ys = p.hs = None
+        p.ts = ts
+        p.timed = all(t is not None for t in ts)
+        return p
+
     @property
     def length(self) -> float:
         return self.s[-1]

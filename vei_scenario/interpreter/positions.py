@@ -94,12 +94,20 @@ def entity_lane(ctx, el, name: str) -> tuple[object, LaneState]:
         raise ctx.error(el, f"no entity named {name!r}")
     if e.lane is not None:
         return e, e.lane
-    rp = _network(ctx, el).project(e.x, e.y)
-    if rp is None or rp.lane is None:
+    state = lane_state_at(_network(ctx, el), e)
+    if state is None:
         raise ctx.error(el, f"<{el.tag}>: {name} is not on a lane")
+    return e, state
+
+
+def lane_state_at(net, e) -> LaneState | None:
+    """Where entity ``e`` is on the road network as a lane state (None off the lanes)."""
+    rp = net.project(e.x, e.y)
+    if rp is None or rp.lane is None:
+        return None
     h_ref = rp.road.ref_pose(rp.s)[2]
     offset = rp.t - rp.road.lane_center_t(rp.s, rp.lane)
-    return e, LaneState(rp.road.id, rp.lane, rp.s, offset, _heads_forward(e.yaw, h_ref))
+    return LaneState(rp.road.id, rp.lane, rp.s, offset, _heads_forward(e.yaw, h_ref))
 
 
 def lane_shift(lane: int, n: int, forward: bool) -> int:

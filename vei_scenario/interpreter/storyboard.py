@@ -380,7 +380,33 @@ VALUE_CONDITIONS = {
     "ParameterCondition": ParameterCondition,
     "StoryboardElementStateCondition": StoryboardElementState,
 }
+#: Lane types a vehicle may be on without being "off road" (OffroadCondition).
+DRIVABLE_LANE_TYPES = {
+    "driving", "entry", "exit", "onRamp", "offRamp", "connectingRamp", "bidirectional", "stop", "border", "shoulder",
+}  # fmt: skip
+
+
+class Offroad(_EntityCondition):
+    """OffroadCondition: the entity has been off every drivable lane for ``duration``."""
+
+    def __init__(self, el, ctx, triggering, rule) -> None:
+        super().__init__(el, ctx, triggering, rule)
+        self.duration = float(el.get("duration"))
+        self.since: dict[str, float] = {}
+
+    def for_entity(self, ctx: Context, name: str) -> bool:
+        e = ctx.entities[name]
+        rp = ctx.roads.project(e.x, e.y) if ctx.roads is not None else None
+        lane = rp.road.section(rp.s).lanes.get(rp.lane) if rp is not None and rp.lane is not None else None
+        if lane is not None and lane.type in DRIVABLE_LANE_TYPES:
+            self.since.pop(name, None)
+            return False
+        start = self.since.setdefault(name, ctx.t)
+        return ctx.t - start >= self.duration - 1e-9
+
+
 ENTITY_CONDITIONS = {
+    "OffroadCondition": Offroad,
     "CollisionCondition": Collision,
     "TimeToCollisionCondition": TimeToCollision,
     "DistanceCondition": Distance,
@@ -480,6 +506,14 @@ class Element:
         self.stop_trigger = Trigger(stop, ctx) if stop is not None else None
         self.actions: list = []  # runtime actions of an Action element
         ctx.elements.setdefault((kind, self.name), self)
+        # esmini's qualified references "Event::Action", "Maneuver::Event::Action", ...: every
+        # descendant is also known by its path from each of its ancestors
+        self.descendants: list[tuple[str, str, Element]] = []
+        for c in self.children:
+            self.descendants.append((c.kind, c.name, c))
+            self.descendants += [(k, f"{c.name}::{q}", d) for k, q, d in c.descendants]
+        for k, q, d in self.descendants:
+            ctx.elements.setdefault((k, f"{self.name}::{q}"), d)
 
     def mark(self, transition: str, step: int) -> None:
         self.transitions[transition] = step
