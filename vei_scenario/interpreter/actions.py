@@ -89,6 +89,14 @@ def lane_keep(e, ds: float, ctx) -> None:
         road, st.lane, start = nxt
         s = over if start else road.length - over
         forward = st.forward = start
+    if road.id == st.road:  # lane links across the lane sections passed on this road
+        k0, k1 = road.section_index(st.s), road.section_index(s)
+        step = 1 if k1 > k0 else -1
+        for k in range(k0, k1, step):
+            lane = road.sections[k].lanes.get(st.lane)
+            link = (lane.successor if step > 0 else lane.predecessor) if lane is not None else None
+            if link is not None and link in road.sections[k + step].lanes:
+                st.lane = link
     sec_lanes = road.section(s).lanes
     if st.lane not in sec_lanes:  # the lane ends in a new lane section: the nearest lane on the same side
         same = [k for k in sec_lanes if (k > 0) == (st.lane > 0)] or list(sec_lanes)
@@ -136,17 +144,26 @@ class LaneChangeRuntime:
         done = (ctx.t + self.steps_ahead * ctx.dt - self.t0) if self.dimension == "time" else (e.odometer - self.odo0)
         return min(max(done / self.value, 0.0), 1.0)
 
+    #: (road, section index) the start and target lane ids belong to (set by the action)
+    start_where: tuple[str, int] | None = None
+    target_where: tuple[str, int] | None = None
+
+    def _t(self, road, s: float, lane: int, where: tuple[str, int] | None) -> float:
+        if where is not None and where[0] == road.id and where[1] < len(road.sections):
+            return road.lane_center_t_in(where[1], s, lane)
+        return road.lane_center_t(s, lane)
+
     def offset(self, e, ctx, road) -> float:
-        """Offset from the target lane's centre at the entity's current s."""
+        """Offset from the centre of the entity's current lane at its current s."""
         s = e.lane.s
         try:
-            t_start = road.lane_center_t(s, self.start_lane) + self.start_offset
+            t_start = self._t(road, s, self.start_lane, self.start_where) + self.start_offset
         except KeyError:
-            t_start = road.lane_center_t(s, self.target_lane) + self.start_offset
-        t_target = road.lane_center_t(s, self.target_lane) + self.target_offset
+            t_start = self._t(road, s, self.target_lane, self.target_where) + self.start_offset
+        t_target = self._t(road, s, self.target_lane, self.target_where) + self.target_offset
         self.fraction = self.progress(e, ctx)
         f = transition_fraction(self.shape, self.fraction)
-        return (1 - f) * t_start + f * t_target - road.lane_center_t(s, self.target_lane)
+        return (1 - f) * t_start + f * t_target - road.lane_center_t(s, e.lane.lane)
 
     def heading(self, e, base: float) -> float:
         """During the transition the entity heads where it moves (``base`` on the first step)."""
@@ -178,11 +195,14 @@ class LaneChange(Action):
         e, st = entity_lane(ctx, self.el, self.entity)
         e.lane = st
         e.follower = None
+        road = ctx.roads.road(st.road)
+        here = road.section_index(st.s)
         if self.target.tag == "AbsoluteTargetLane":
-            lane = int(self.target.get("value"))
+            lane, where = int(self.target.get("value")), (road.id, here)
         else:
             _, ref = entity_lane(ctx, self.el, self.target.get("entityRef"))
             lane = lane_shift(ref.lane, int(self.target.get("value")), ref.forward)
+            where = (ref.road, ctx.roads.road(ref.road).section_index(ref.s))
         e.lateral = LaneChangeRuntime(
             st.lane,
             st.offset,
@@ -194,13 +214,22 @@ class LaneChange(Action):
             ctx.t,
             e.odometer,
         )
-        e.lane.lane = lane
-        e.lane.offset = e.lateral.offset(e, ctx, ctx.roads.road(st.road))
+        e.lateral.start_where, e.lateral.target_where = (road.id, here), where
+        # the entity now keeps the target lane, named as in its own lane section where it has a name
+        mapped = road.map_lane(lane, where[1], here) if where[0] == road.id else None
+        if mapped is not None or lane in road.section(st.s).lanes:
+            e.lane.lane = mapped if mapped is not None else lane
+        e.lane.offset = e.lateral.offset(e, ctx, road)
 
     def update(self, ctx) -> None:
         e = ctx.entities[self.entity]
         self.done = e.lateral is None or e.lateral.fraction >= 1.0
         if self.done and e.lateral is not None:
+            rt, road = e.lateral, ctx.roads.road(e.lane.road)
+            if rt.target_where is not None and rt.target_where[0] == road.id:
+                mapped = road.map_lane(rt.target_lane, rt.target_where[1], road.section_index(e.lane.s))
+                if mapped is not None:
+                    e.lane.lane = mapped
             e.lane.offset = self.target_offset
             e.lateral = None
 

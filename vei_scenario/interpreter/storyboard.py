@@ -186,6 +186,16 @@ def _relative(ctx, el, a, b, kind: str, freespace: bool) -> tuple[float, float]:
         d = math.hypot(rx, ry)
         return d, (rx * vx + ry * vy) / d if d > 1e-12 else 0.0
     c, s = math.cos(a.yaw), math.sin(a.yaw)
+    if kind == "alongRoad":
+        la, lb = a.lane, b.lane
+        if la is not None and lb is not None and la.road == lb.road:  # s difference, a's driving sense
+            sign = 1.0 if la.forward else -1.0
+            d = sign * (lb.s - la.s)
+            rate = b.speed * math.cos(byaw - ayaw) - a.speed
+            half = 0.5 * (al + bl) if freespace else 0.0
+            direction = 1.0 if d >= 0 else -1.0
+            return max(abs(d) - half, 0.0), direction * rate
+        kind = "longitudinal"  # not on one road: along a's heading
     if kind == "longitudinal":
         d, rate = c * rx + s * ry, c * vx + s * vy
         half = 0.5 * (al + bl * abs(math.cos(byaw - ayaw)) + bw * abs(math.sin(byaw - ayaw))) if freespace else 0.0
@@ -201,8 +211,10 @@ def _relative(ctx, el, a, b, kind: str, freespace: bool) -> tuple[float, float]:
 def _distance_kind(ctx, el) -> str:
     if el.get("coordinateSystem", "entity") not in ("entity",):
         raise ctx.error(el, f"coordinateSystem {el.get('coordinateSystem')!r} is not supported (entity only)")
-    if el.get("alongRoute") == "true" or el.get("routingAlgorithm") not in (None, "undefined"):
-        raise ctx.error(el, "distances along routes are not supported")
+    if el.get("routingAlgorithm") not in (None, "undefined"):
+        raise ctx.error(el, f"routingAlgorithm {el.get('routingAlgorithm')!r} is not supported")
+    if el.get("alongRoute") == "true":  # OpenSCENARIO 1.0: along the road (s), see _relative
+        return "alongRoad"
     return el.get("relativeDistanceType", "cartesianDistance")
 
 
@@ -380,6 +392,54 @@ VALUE_CONDITIONS = {
     "ParameterCondition": ParameterCondition,
     "StoryboardElementStateCondition": StoryboardElementState,
 }
+class RelativeClearance(_EntityCondition):
+    """RelativeClearanceCondition: the lanes ``RelativeLaneRange`` away from the entity's (left
+    positive, as it drives) exist where it is, run its way (unless ``oppositeLanes``), and hold no
+    other entity (or none of the listed ones) from ``distanceBackward`` behind to ``distanceForward``
+    ahead along the road."""
+
+    def __init__(self, el, ctx, triggering, rule) -> None:
+        super().__init__(el, ctx, triggering, rule)
+        self.forward_m = float(el.get("distanceForward", "0") or 0)
+        self.backward_m = float(el.get("distanceBackward", "0") or 0)
+        self.opposite = el.get("oppositeLanes", "false") == "true"
+        self.freespace = el.get("freeSpace", el.get("freespace", "false")) == "true"
+        ranges = [(int(r.get("from")), int(r.get("to"))) for r in el.iterfind("RelativeLaneRange")]
+        self.ranges = ranges or [(-100, 100)]
+        self.only = [r.get("entityRef") for r in el.iterfind("EntityRef")]
+
+    def for_entity(self, ctx: Context, name: str) -> bool:
+        from vei_scenario.interpreter.positions import lane_shift
+
+        e = ctx.entities[name]
+        if e.lane is None:
+            return False
+        road = ctx.roads.road(e.lane.road)
+        lanes = road.section(e.lane.s).lanes
+        wanted: set[int] = set()
+        for lo, hi in self.ranges:
+            for k in range(lo, hi + 1):
+                lane = lane_shift(e.lane.lane, k, e.lane.forward) if k else e.lane.lane
+                if lane not in lanes or lanes[lane].type not in DRIVABLE_LANE_TYPES:
+                    continue
+                if not self.opposite and road.drives_forward(lane) != road.drives_forward(e.lane.lane):
+                    continue
+                wanted.add(lane)
+        if not wanted:
+            return False
+        sign = 1.0 if e.lane.forward else -1.0
+        for other_name, o in ctx.entities.items():
+            if other_name == name or (self.only and other_name not in self.only):
+                continue
+            if o.lane is None or o.lane.road != e.lane.road or o.lane.lane not in wanted:
+                continue
+            ds = sign * (o.lane.s - e.lane.s)
+            half = 0.5 * (e.length + o.length) if self.freespace else 0.0
+            if -self.backward_m - half <= ds <= self.forward_m + half:
+                return False
+        return True
+
+
 #: Lane types a vehicle may be on without being "off road" (OffroadCondition).
 DRIVABLE_LANE_TYPES = {
     "driving", "entry", "exit", "onRamp", "offRamp", "connectingRamp", "bidirectional", "stop", "border", "shoulder",
@@ -407,6 +467,7 @@ class Offroad(_EntityCondition):
 
 ENTITY_CONDITIONS = {
     "OffroadCondition": Offroad,
+    "RelativeClearanceCondition": RelativeClearance,
     "CollisionCondition": Collision,
     "TimeToCollisionCondition": TimeToCollision,
     "DistanceCondition": Distance,

@@ -173,6 +173,27 @@ class Road:
             t += sign * (lane.width(ds) if lane else 0.0)
         return t, t + sign * sec.lanes[lane_id].width(ds)
 
+    def map_lane(self, lane_id: int, from_k: int, to_k: int) -> int | None:
+        """The id lane ``lane_id`` of section ``from_k`` has in section ``to_k``, through the lane links
+        (None where a link is missing: the lane starts or ends in between)."""
+        step = 1 if to_k > from_k else -1
+        for k in range(from_k, to_k, step):
+            lane = self.sections[k].lanes.get(lane_id)
+            nxt = (lane.successor if step > 0 else lane.predecessor) if lane is not None else None
+            if nxt is None or nxt not in self.sections[k + step].lanes:
+                return None
+            lane_id = nxt
+        return lane_id
+
+    def lane_center_t_in(self, k: int, s: float, lane_id: int) -> float:
+        """Centre t of lane ``lane_id`` of section ``k``, at ``s`` held inside that section (a lane
+        that begins or ends there is taken at its first or last point)."""
+        lo = self.sections[k].s
+        hi = self.sections[k + 1].s - 1e-9 if k + 1 < len(self.sections) else self.length
+        s_in = min(max(s, lo), hi)
+        mapped = self.map_lane(lane_id, k, self.section_index(s_in))
+        return self.lane_center_t(s_in, mapped if mapped is not None else lane_id)
+
     def lane_center_t(self, s: float, lane_id: int) -> float:
         inner, outer = self.lane_borders(s, lane_id)
         return 0.5 * (inner + outer)
