@@ -111,3 +111,77 @@ def test_catalog_entity_keeps_its_lane_at_its_speed(tmp_path):
             (tmp_path / "s.xosc").read_text().replace('entryName="car"', 'entryName="nope"')
         )
         run_scenario(tmp_path / "bad.xosc")
+
+
+def test_trajectory_clothoid_matches_fresnel_integrals():
+    """The sampled Clothoid shape of a trajectory (heading quadratic in arc length) against Fresnel."""
+    from vei_scenario.interpreter.shapes import clothoid_points
+
+    L, rate = 60.0, 0.0005  # curvature from 0 rising by 0.0005 1/m per m
+    x, y, h = clothoid_points(0.0, 0.0, 0.0, 0.0, rate, L)
+    a = math.sqrt(math.pi / rate)
+    S, C = fresnel(L / a)
+    assert x[-1] == pytest.approx(a * C, abs=1e-6) and y[-1] == pytest.approx(a * S, abs=1e-6)
+    assert h[-1] == pytest.approx(0.5 * rate * L * L, abs=1e-12)
+    assert np.max(np.hypot(np.diff(x), np.diff(y))) <= 0.05 + 1e-9
+
+
+def _two_section_road(tmp_path, banked: bool = False):
+    xodr = tmp_path / "s.xodr"
+    bank = (
+        '<lateralProfile><superelevation s="0" a="-1.0471975511965976" b="0" c="0" d="0"/></lateralProfile>'
+        if banked
+        else ""
+    )
+    xodr.write_text(
+        f"""<OpenDRIVE><header revMajor="1" revMinor="6"/>
+<road id="1" length="200" junction="-1"><planView><geometry s="0" x="0" y="0" hdg="0" length="200"><line/></geometry></planView>{bank}
+<lanes>
+<laneSection s="0"><center><lane id="0" type="none"/></center><right>
+  <lane id="-1" type="driving"><link><successor id="-2"/></link><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></right></laneSection>
+<laneSection s="100"><center><lane id="0" type="none"/></center><right>
+  <lane id="-1" type="driving"><width sOffset="0" a="3.0" b="0" c="0" d="0"/></lane>
+  <lane id="-2" type="driving"><link><predecessor id="-1"/></link><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></right></laneSection>
+</lanes></road></OpenDRIVE>"""
+    )
+    return RoadNetwork.load(xodr)
+
+
+def test_lane_links_across_sections_and_superelevation(tmp_path):
+    road = _two_section_road(tmp_path).road("1")
+    assert road.map_lane(-1, 0, 1) == -2 and road.map_lane(-2, 1, 0) == -1 and road.map_lane(-1, 1, 0) is None
+    assert road.lane_center_t(50, -1) == pytest.approx(-1.75) and road.lane_center_t(150, -2) == pytest.approx(-4.75)
+    banked = _two_section_road(tmp_path, banked=True).road("1")
+    # 60° of bank: the lane is half as far from the reference line seen from above
+    assert banked.world(50, -1.75)[1] == pytest.approx(-0.875, abs=1e-12)
+
+
+def _lane_keeping_scenario(tmp_path, xodr_name: str, story: str = "") -> object:
+    from vei_scenario.interpreter import run_scenario
+
+    xosc = tmp_path / "k.xosc"
+    xosc.write_text(
+        f"""<OpenSCENARIO><FileHeader revMajor="1" revMinor="2" date="2024-01-01T00:00:00" description="" author=""/>
+<RoadNetwork><LogicFile filepath="{xodr_name}"/></RoadNetwork>
+<Entities><ScenarioObject name="A"><Vehicle name="v" vehicleCategory="car"><BoundingBox><Center x="0" y="0" z="0"/><Dimensions width="2" length="4" height="1.5"/></BoundingBox>
+<Performance maxSpeed="50" maxAcceleration="5" maxDeceleration="10"/><Axles><FrontAxle maxSteering="0.5" wheelDiameter="0.6" trackWidth="1.6" positionX="2.8" positionZ="0.3"/><RearAxle maxSteering="0" wheelDiameter="0.6" trackWidth="1.6" positionX="0" positionZ="0.3"/></Axles><Properties/></Vehicle></ScenarioObject></Entities>
+<Storyboard><Init><Actions><Private entityRef="A">
+<PrivateAction><TeleportAction><Position><LanePosition roadId="1" laneId="-1" s="10" offset="0"/></Position></TeleportAction></PrivateAction>
+<PrivateAction><LongitudinalAction><SpeedAction><SpeedActionDynamics dynamicsShape="cubic" dynamicsDimension="time" value="1"/><SpeedActionTarget><AbsoluteTargetSpeed value="20"/></SpeedActionTarget></SpeedAction></LongitudinalAction></PrivateAction>
+</Private></Actions></Init>{story}
+<StopTrigger><ConditionGroup><Condition name="end" delay="0" conditionEdge="none"><ByValueCondition><SimulationTimeCondition value="14" rule="greaterThan"/></ByValueCondition></Condition></ConditionGroup></StopTrigger>
+</Storyboard></OpenSCENARIO>"""
+    )
+    return run_scenario(xosc, {}, 0.01)
+
+
+def test_lane_keeping_follows_lane_links_and_performance_limits(tmp_path):
+    _two_section_road(tmp_path)
+    tr = _lane_keeping_scenario(tmp_path, "s.xodr").traces["A"]
+    # the cubic 0 -> 20 m/s in 1 s would peak at 30 m/s²; stretched to maxAcceleration 5: 1.5·20/5 = 6 s
+    k = int(np.argmax(tr.speed >= 20.0 - 1e-9))
+    assert tr.t[k] == pytest.approx(6.0, abs=0.011) and np.max(tr.accel) <= 5.0 + 1e-6
+    # lane -1 links to lane -2 at s = 100: the car follows the link (without it: lane -1, y = -1.5)
+    assert np.all(np.abs(tr.y[tr.x < 99.9] + 1.75) < 1e-9) and np.all(np.abs(tr.y[tr.x > 100.1] + 4.75) < 1e-9)
+    # the end of the road: it stops there and stands
+    assert tr.x[-1] == pytest.approx(200.0) and tr.speed[-1] == 0.0

@@ -59,6 +59,7 @@ SUPPORTED_POSITIONS = (
     "RoadPosition",
     "RelativeLanePosition",
     "RelativeRoadPosition",
+    "RoutePosition",
 )
 
 
@@ -79,7 +80,7 @@ def lane_keep(e, ds: float, ctx) -> None:
     while s > road.length or s < 0.0:
         at_end = s > road.length
         over = s - road.length if at_end else -s
-        nxt = net.next_road(road, st.lane, at_end)
+        nxt = net.next_road(road, st.lane, at_end, e.route.next_road(road.id) if e.route else None)
         if nxt is None:  # the end of the road: it stops there, and stands once it cannot move (esmini)
             edge = road.length if at_end else 0.0
             if road.id == st.road and abs(st.s - edge) < 1e-9:
@@ -291,6 +292,41 @@ class LaneOffset(Action):
         ctx.entities[self.entity].lateral = None
 
 
+class AssignRoute(Action):
+    """AssignRouteAction: the entity takes the route's roads at junctions from now on."""
+
+    def __init__(self, entity: str, el, ctx) -> None:
+        self.entity, self.el = entity, el
+
+    def start(self, ctx) -> None:
+        from vei_scenario.interpreter.positions import route_from
+
+        ctx.entities[self.entity].route = route_from(ctx, self.el.find("Route"), self.el)
+        self.done = True
+
+
+class AcquirePosition(Action):
+    """AcquirePositionAction: a route from where the entity is to the position, taken at junctions."""
+
+    def __init__(self, entity: str, el, ctx) -> None:
+        self.entity, self.el = entity, el
+
+    def start(self, ctx) -> None:
+        from vei_scenario.interpreter.routes import plan_route
+
+        e, st = entity_lane(ctx, self.el, self.entity)
+        goal = resolve_position(ctx, self.el.find("Position"))
+        if goal.lane is None:
+            raise ctx.error(self.el, "AcquirePositionAction: the position is not on a lane")
+        e.lane = st
+        goal_road = ctx.roads.road(goal.lane.road)
+        e.route = plan_route(
+            ctx.roads,
+            [(st.road, st.s, st.forward), (goal_road.id, goal.lane.s, goal_road.drives_forward(goal.lane.lane))],
+        )
+        self.done = True
+
+
 class Ignored(Action):
     """An action with no effect on motion or on what vei measures (appearance, visibility)."""
 
@@ -419,7 +455,11 @@ class FollowTrajectory(Action):
         e = ctx.entities[self.entity]
         self.done = e.follower is None or e.follower.finished(ctx.t)
         if self.done and e.follower is not None and e.follower.timing is None and ctx.roads is not None:
-            # the path ends on a lane: the entity drives on along it by default, as esmini's does
+            # the path ends on a lane: the entity drives on along it by default, as esmini's does. (An
+            # entity with one of vei's model controllers — a compiled ego — stops at its path's end,
+            # as the batch engine, the kernel and the FMUs do.)
+            if e.controllers:
+                return
             e.lane = lane_state_at(ctx.roads, e)
             e.follower = None  # (an Init action is never stopped)
 
@@ -484,6 +524,15 @@ class ParameterSet(Action):
         self.done = True
 
 
+class SignalState(Action):
+    def __init__(self, name: str, state: str) -> None:
+        self.name, self.state = name, state
+
+    def start(self, ctx) -> None:
+        ctx.signals[self.name] = self.state
+        self.done = True
+
+
 def private_actions(pa, entity: str, ctx) -> list[Action]:
     """Runtime actions of a ``<PrivateAction>`` for one entity."""
     kind = first_element(pa)
@@ -497,6 +546,10 @@ def private_actions(pa, entity: str, ctx) -> list[Action]:
         return [LaneChange(entity, kind.find("LaneChangeAction"), ctx)]
     if kind.tag == "LateralAction" and kind.find("LaneOffsetAction") is not None:
         return [LaneOffset(entity, kind.find("LaneOffsetAction"), ctx)]
+    if kind.tag == "RoutingAction" and kind.find("AcquirePositionAction") is not None:
+        return [AcquirePosition(entity, kind.find("AcquirePositionAction"), ctx)]
+    if kind.tag == "RoutingAction" and kind.find("AssignRouteAction") is not None:
+        return [AssignRoute(entity, kind.find("AssignRouteAction"), ctx)]
     if kind.tag in ("VisibilityAction", "AppearanceAction"):
         return [Ignored()]
     if kind.tag == "RoutingAction" and kind.find("FollowTrajectoryAction") is not None:
@@ -524,6 +577,9 @@ def global_actions(ga, ctx) -> list[Action]:
         return [ParameterSet(kind.get("parameterRef"), kind.find("SetAction").get("value"), kind, ctx)]
     if kind is not None and kind.tag == "ParameterSetAction":
         return [ParameterSet(kind.get("parameterRef"), kind.get("value"), kind, ctx)]
+    state = ga.find("InfrastructureAction/TrafficSignalAction/TrafficSignalStateAction")
+    if state is not None:  # signal states: for TrafficSignalConditions (no default driver obeys them)
+        return [SignalState(state.get("name"), state.get("state"))]
     if kind is not None and kind.tag == "EnvironmentAction":  # weather and light: no effect on motion
         return [Ignored()]
     raise ctx.error(ga, f"global action <{kind.tag if kind is not None else ''}> is not supported by vei run")

@@ -344,7 +344,7 @@ class Simulation:
         ds = e.speed * dt  # esmini's default controller: the step's new speed over the whole step
         if e.lane is not None and f is None:
             lane_keep(e, ds, ctx)
-        elif f is not None and f.s + ds > f.polyline.length:  # past the end: on along its last heading
+        elif f is not None and f.s + ds > f.polyline.length and not e.controllers:  # on past the end (esmini)
             over = f.s + ds - f.polyline.length
             advance_along(e, ds - over)
             e.x += over * math.cos(e.yaw)

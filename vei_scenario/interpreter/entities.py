@@ -178,6 +178,7 @@ class Entity:
     lateral: object = None  # a running lane change (actions.LaneChangeRuntime)
     odometer: float = 0.0  # distance travelled (m), for TraveledDistanceCondition
     standing_since: float | None = None  # simulation time the entity came to a standstill
+    route: object = None  # routes.Route assigned by AssignRouteAction
     placed: bool = False  # teleported during this step: it does not move until the next one
     performance: bool = False  # limits come from the entity's <Performance> (speed changes obey them)
 

@@ -160,4 +160,34 @@ def resolve(ctx, pos) -> Pose:
         ds = _num(el, "ds", _num(el, "dsLane"))
         s = st.s + (ds if forward else -ds)
         return lane_pose(ctx, el, road.id, lane, s, _num(el, "offset"), forward)
+    if tag == "RoutePosition":
+        route = route_from(ctx, el.find("RouteRef/Route"), el)
+        coords = el.find("InRoutePosition/FromLaneCoordinates")
+        if coords is None:
+            raise ctx.error(el, "RoutePosition: only InRoutePosition/FromLaneCoordinates is supported")
+        leg, s = route.at(_num(coords, "pathS"))
+        lane = int(coords.get("laneId"))
+        return lane_pose(ctx, el, leg.road, lane, s, _num(coords, "laneOffset"), leg.forward)
     raise ctx.error(el, f"position <{tag}> is not supported by vei run")
+
+
+def route_from(ctx, route_el, at):
+    """The planned :class:`~vei_scenario.interpreter.routes.Route` of a ``<Route>`` element."""
+    from vei_scenario.interpreter.routes import plan_route
+
+    if route_el is None:
+        raise ctx.error(at, "a route must be given inline or from a catalog")
+    net = _network(ctx, at)
+    points = []
+    for wp in route_el.iterfind("Waypoint"):
+        pose = resolve(ctx, wp.find("Position"))
+        if pose.lane is None:
+            raise ctx.error(wp, "waypoint is not on a lane")
+        road = net.road(pose.lane.road)
+        points.append((road.id, pose.lane.s, road.drives_forward(pose.lane.lane)))
+    if len(points) < 2:
+        raise ctx.error(route_el, "a route needs at least two waypoints")
+    route = plan_route(net, points)
+    if route is None:
+        raise ctx.error(route_el, "no chain of roads joins the route's waypoints")
+    return route

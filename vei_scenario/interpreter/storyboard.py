@@ -32,6 +32,7 @@ class Context:
     elements: dict[tuple[str, str], Element] = field(default_factory=dict)
     colliding: set[frozenset[str]] = field(default_factory=set)
     trajectories: dict = field(default_factory=dict)  # Trajectory name -> Polyline
+    signals: dict[str, str] = field(default_factory=dict)  # traffic signal name -> state
     #: Under Jacobi coupling: every entity as it was at the start of the step (see engine.COUPLINGS).
     snapshot: dict | None = None
     #: True while the Init actions start (before the first record at t = 0).
@@ -209,8 +210,11 @@ def _relative(ctx, el, a, b, kind: str, freespace: bool) -> tuple[float, float]:
 
 
 def _distance_kind(ctx, el) -> str:
-    if el.get("coordinateSystem", "entity") not in ("entity",):
-        raise ctx.error(el, f"coordinateSystem {el.get('coordinateSystem')!r} is not supported (entity only)")
+    system = el.get("coordinateSystem", "entity")
+    if system not in ("entity", "road", "lane"):
+        raise ctx.error(el, f"coordinateSystem {system!r} is not supported (entity, road, lane)")
+    if system != "entity" and el.get("relativeDistanceType") == "longitudinal":
+        return "alongRoad"
     if el.get("routingAlgorithm") not in (None, "undefined"):
         raise ctx.error(el, f"routingAlgorithm {el.get('routingAlgorithm')!r} is not supported")
     if el.get("alongRoute") == "true":  # OpenSCENARIO 1.0: along the road (s), see _relative
@@ -265,14 +269,17 @@ class Distance(_EntityCondition):
         super().__init__(el, ctx, triggering, rule)
         self.value, self.rule = float(el.get("value")), el.get("rule")
         self.freespace = el.get("freespace", "false") == "true"
-        _distance_kind(ctx, el)
+        self.kind = _distance_kind(ctx, el)
         from vei_scenario.interpreter.positions import resolve
 
         pose = resolve(ctx, el.find("Position"))
-        self.px, self.py = pose.x, pose.y
+        self.px, self.py, self.lane = pose.x, pose.y, pose.lane
 
     def for_entity(self, ctx: Context, name: str) -> bool:
         e = ctx.entities[name]
+        if self.kind == "alongRoad" and self.lane is not None and e.lane is not None and e.lane.road == self.lane.road:
+            d = abs(self.lane.s - e.lane.s) - (0.5 * e.length if self.freespace else 0.0)
+            return compare(self.rule, max(d, 0.0), self.value)
         if self.freespace:
             bx, by, byaw, bl, bw = e.box()
             d = float(box_distance(bx, by, byaw, bl, bw, self.px, self.py, 0.0, 0.0, 0.0))
@@ -387,11 +394,24 @@ class EndOfRoad(_EntityCondition):
         return ctx.t - start >= self.duration - 1e-9
 
 
+class TrafficSignal(Condition):
+    """TrafficSignalCondition: the signal's state, as the last TrafficSignalStateAction set it."""
+
+    def __init__(self, el, ctx: Context) -> None:
+        self.name, self.state = el.get("name"), el.get("state")
+
+    def test(self, ctx: Context) -> bool:
+        return ctx.signals.get(self.name) == self.state
+
+
 VALUE_CONDITIONS = {
+    "TrafficSignalCondition": TrafficSignal,
     "SimulationTimeCondition": SimulationTime,
     "ParameterCondition": ParameterCondition,
     "StoryboardElementStateCondition": StoryboardElementState,
 }
+
+
 class RelativeClearance(_EntityCondition):
     """RelativeClearanceCondition: the lanes ``RelativeLaneRange`` away from the entity's (left
     positive, as it drives) exist where it is, run its way (unless ``oppositeLanes``), and hold no

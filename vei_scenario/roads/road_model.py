@@ -323,9 +323,12 @@ class RoadNetwork:
                 best, best_key = RoadPoint(road, s, t, lane, dist), key
         return best
 
-    def next_road(self, road: Road, lane_id: int, at_end: bool) -> tuple[Road, int, bool] | None:
+    def next_road(
+        self, road: Road, lane_id: int, at_end: bool, prefer: str | None = None
+    ) -> tuple[Road, int, bool] | None:
         """Where a road user in ``lane_id`` continues after leaving ``road`` at its end (``at_end``) or
-        start: (road, lane, entering at its start)."""
+        start: (road, lane, entering at its start); at a junction the connecting road ``prefer``
+        (a route's) when it leads on from here, else the first connection from the lane."""
         link = road.successor if at_end else road.predecessor
         if link is None:
             return None
@@ -340,8 +343,18 @@ class RoadNetwork:
             new_lane = linked if linked is not None else lane_id
             target_sec = nxt.sections[0] if start else nxt.sections[-1]
             return (nxt, new_lane, start) if new_lane in target_sec.lanes else None
-        for conn in self.junctions.get(link.id, []):
-            if conn.incoming != road.id or lane_id not in conn.lane_links:
+        conns = [c for c in self.junctions.get(link.id, []) if c.incoming == road.id]
+        wanted = [c for c in conns if c.connecting == prefer and c.lane_links]
+        if wanted:
+            c = wanted[0]
+            to = c.lane_links.get(lane_id)
+            if to is None:  # the route turns from another lane: the linked lane nearest to ours
+                to = c.lane_links[min(c.lane_links, key=lambda k: abs(k - lane_id))]
+            nxt = self.roads.get(c.connecting)
+            if nxt is not None:
+                return nxt, to, c.contact != "end"
+        for conn in conns:
+            if lane_id not in conn.lane_links:
                 continue
             nxt = self.roads.get(conn.connecting)
             if nxt is None:

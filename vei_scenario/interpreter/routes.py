@@ -1,0 +1,126 @@
+"""Routes (AssignRouteAction, RoutePosition): waypoints joined by the shortest chain of roads.
+
+A route is planned once, as esmini does for ``routeStrategy="shortest"``: from each waypoint to the
+next, the chain of roads (through junctions' connecting roads) of least length, each road driven
+towards increasing or decreasing s. An entity on a route takes, at a junction, the connecting road
+its route goes on with; a RoutePosition lies ``pathS`` metres along the route from its first waypoint.
+"""
+
+from __future__ import annotations
+
+import heapq
+from dataclasses import dataclass
+
+from vei_scenario.roads.road_model import RoadNetwork
+
+#: (road id, s, driven towards increasing s there — None when either way will do)
+Waypoint = tuple[str, float, "bool | None"]
+
+
+@dataclass(frozen=True)
+class Leg:
+    road: str
+    forward: bool  # driven towards increasing s
+    s_from: float
+    s_to: float
+
+    @property
+    def length(self) -> float:
+        return abs(self.s_to - self.s_from)
+
+
+def _exits(net: RoadNetwork, road_id: str, forward: bool) -> list[tuple[str, bool]]:
+    """Roads reachable on leaving ``road_id`` at its end (forward) or start, with the direction they
+    are then driven in."""
+    road = net.road(road_id)
+    link = road.successor if forward else road.predecessor
+    if link is None:
+        return []
+    if link.kind == "road":
+        return [(link.id, link.contact != "end")] if link.id in net.roads else []
+    out = []
+    for conn in net.junctions.get(link.id, []):
+        if conn.incoming == road_id and conn.connecting in net.roads:
+            out.append((conn.connecting, conn.contact != "end"))
+    return out
+
+
+def _leg_between(net: RoadNetwork, a: Waypoint, b: Waypoint) -> list[Leg] | None:
+    """Shortest chain of legs from road position ``a`` to ``b``, arriving in the driving direction of
+    ``b``'s lane when it has one (None when unreachable)."""
+    (ra, sa, a_forward), (rb, sb, b_forward) = a, b
+    if ra == rb:
+        return [Leg(ra, sb >= sa, sa, sb)]
+    best: list[Leg] | None = None
+    best_cost = float("inf")
+    heap: list = []
+    n = 0
+    for forward in (True, False) if a_forward is None else (a_forward,):
+        road = net.road(ra)
+        first = Leg(ra, forward, sa, road.length if forward else 0.0)
+        heapq.heappush(heap, (first.length, n, [first]))
+        n += 1
+    seen: set[tuple[str, bool]] = set()
+    while heap:
+        cost, _, legs = heapq.heappop(heap)
+        if cost >= best_cost:
+            break
+        last = legs[-1]
+        if (last.road, last.forward) in seen:
+            continue
+        seen.add((last.road, last.forward))
+        for nxt, fwd in _exits(net, last.road, last.forward):
+            road = net.road(nxt)
+            start = 0.0 if fwd else road.length
+            if nxt == rb:
+                end = Leg(nxt, fwd, start, sb)
+                if b_forward is not None and fwd != b_forward:
+                    continue
+                if (sb >= start) == fwd or abs(sb - start) < 1e-9:
+                    total = cost + end.length
+                    if total < best_cost:
+                        best, best_cost = [*legs, end], total
+                continue
+            leg = Leg(nxt, fwd, start, road.length if fwd else 0.0)
+            heapq.heappush(heap, (cost + leg.length, n, [*legs, leg]))
+            n += 1
+    return best
+
+
+@dataclass
+class Route:
+    legs: list[Leg]
+
+    @property
+    def roads(self) -> list[str]:
+        return [leg.road for leg in self.legs]
+
+    def at(self, path_s: float) -> tuple[Leg, float]:
+        """The leg and the road s ``path_s`` metres along the route (clamped to its ends)."""
+        left = max(path_s, 0.0)
+        for leg in self.legs:
+            if left <= leg.length or leg is self.legs[-1]:
+                left = min(left, leg.length)
+                return leg, leg.s_from + (left if leg.forward else -left)
+            left -= leg.length
+        raise ValueError("empty route")
+
+    def next_road(self, current: str) -> str | None:
+        """The road the route takes after ``current`` (None off the route or at its end)."""
+        for a, b in zip(self.legs, self.legs[1:]):
+            if a.road == current and b.road != current:
+                return b.road
+        return None
+
+
+def plan_route(net: RoadNetwork, waypoints: list[Waypoint]) -> Route | None:
+    legs: list[Leg] = []
+    for a, b in zip(waypoints, waypoints[1:]):
+        part = _leg_between(net, a, b)
+        if part is None:
+            return None
+        if legs and legs[-1].road == part[0].road:  # join the legs on the waypoint's road
+            legs[-1] = Leg(legs[-1].road, legs[-1].forward, legs[-1].s_from, part[0].s_to)
+            part = part[1:]
+        legs += part
+    return Route(legs)
