@@ -14,7 +14,7 @@ from vei_scenario.interpreter.controllers import make_controller
 from vei_scenario.interpreter.entities import PathFollower, SpeedProfile, transition_fraction
 from vei_scenario.interpreter.positions import entity_lane, lane_shift, lane_state_at
 from vei_scenario.interpreter.positions import resolve as resolve_position
-from vei_scenario.interpreter.shapes import polyline_from
+from vei_scenario.interpreter.shapes import placed_when_built, polyline_from
 from vei_scenario.safe_xml import first_element
 
 
@@ -129,14 +129,18 @@ class LaneChangeRuntime:
         value: float,
         t0: float,
         odo0: float,
+        projects_step: bool = True,
+        steps_ahead: int = 1,
     ) -> None:
+        """``projects_step``: s advances by the along-road part of each step (esmini's lane change; its
+        lane offset keeps the full step). ``steps_ahead``: the progress applied in a step is that at its
+        end (1, lane change) or at its start (0, lane offset: no motion in the first step)."""
         self.start_lane, self.start_offset = start_lane, start_offset
         self.target_lane, self.target_offset = target_lane, target_offset
         self.shape, self.dimension, self.value = shape, dimension, value
         self.t0, self.odo0 = t0, odo0
         self.fraction = 0.0
-        self.projects_step = True  # a lane change (esmini): s advances by the step's along-road part
-        self.steps_ahead = 1  # progress at the end of the step being taken (esmini)
+        self.projects_step, self.steps_ahead = projects_step, steps_ahead
         self.prev_xy: tuple[float, float] | None = None  # where the entity was a step ago
 
     def progress(self, e, ctx) -> float:
@@ -274,10 +278,8 @@ class LaneOffset(Action):
         self.goal = value
         duration = self._duration(abs(value - st.offset))
         e.lateral = LaneChangeRuntime(
-            st.lane, st.offset, st.lane, value, self.shape, "time", duration, ctx.t, e.odometer
+            st.lane, st.offset, st.lane, value, self.shape, "time", duration, ctx.t, e.odometer, False, 0
         )
-        e.lateral.projects_step = False  # esmini's lane offset keeps the full step along the road
-        e.lateral.steps_ahead = 0  # ... and does not move in its first step
         e.lane.offset = e.lateral.offset(e, ctx, ctx.roads.road(st.road))
 
     def update(self, ctx) -> None:
@@ -416,10 +418,7 @@ class FollowTrajectory(Action):
             raise ctx.error(el, "FollowTrajectoryAction: only an inline Trajectory is supported (no catalogs)")
         self.traj = traj
         # vertices relative to an entity are placed when the action starts (esmini), others now
-        relative = any(isinstance(x.tag, str) and x.tag.startswith("Relative") for x in traj.iter())
-        unplaced_clothoid = traj.find("Shape/Clothoid") is not None and traj.find("Shape/Clothoid/Position") is None
-        unplaced_clothoid |= traj.find("Shape/ClothoidSpline") is not None and not list(traj.iter("PositionStart"))
-        self.polyline = polyline_from(traj, ctx, place=not (relative or unplaced_clothoid))
+        self.polyline = polyline_from(traj, ctx, place=placed_when_built(traj))
         tref = el.find("TimeReference")
         timing = tref.find("Timing") if tref is not None else None
         if timing is not None:

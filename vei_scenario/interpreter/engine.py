@@ -19,7 +19,7 @@ from vei_scenario.interpreter.actions import global_actions, lane_keep, private_
 from vei_scenario.interpreter.controllers import advance_along, make_controller
 from vei_scenario.interpreter.document import ScenarioDocument
 from vei_scenario.interpreter.entities import Entity
-from vei_scenario.interpreter.shapes import polyline_from
+from vei_scenario.interpreter.shapes import placed_when_built, polyline_from
 from vei_scenario.interpreter.storyboard import COMPLETE, RUNNING, STANDBY, Context, Element, Trigger
 from vei_scenario.models.boxes import boxes_overlap_scalar
 from vei_scenario.models.vehicle import VehicleLimits
@@ -120,8 +120,7 @@ class Simulation:
             raise ctx.error(root, "the scenario has no entities")
         ctx.trajectories = {}  # by name, for controllers that follow a route (world positions)
         for traj in root.iter("Trajectory"):
-            relative = any(isinstance(x.tag, str) and x.tag.startswith("Relative") for x in traj.iter())
-            if traj.get("name") and not relative and traj.find("Shape/Polyline") is not None:
+            if traj.get("name") and traj.find("Shape/Polyline") is not None and placed_when_built(traj):
                 ctx.trajectories[traj.get("name")] = polyline_from(traj, ctx)
         for obj in root.iterfind("Entities/ScenarioObject"):
             ctrl = obj.find("ObjectController/Controller")

@@ -66,6 +66,17 @@ def _clothoid(el, ctx, start) -> tuple[list, list, list, float]:
     return list(x), list(y), list(h), _num(ctx, el, "length")
 
 
+def placed_when_built(traj) -> bool:
+    """Whether a ``<Trajectory>``'s points can be placed when the scenario is built: none is relative
+    to an entity and every clothoid has a start position (else they are placed when its action
+    starts, where the entities then are)."""
+    if any(isinstance(x.tag, str) and x.tag.startswith("Relative") for x in traj.iter()):
+        return False
+    if traj.find("Shape/Clothoid") is not None and traj.find("Shape/Clothoid/Position") is None:
+        return False
+    return traj.find("Shape/ClothoidSpline") is None or any(True for _ in traj.iter("PositionStart"))
+
+
 def polyline_from(el, ctx, place: bool = True, entity: str | None = None) -> Polyline:
     """A ``<Trajectory>``'s shape as a polyline (Polyline, Clothoid, ClothoidSpline); with ``place``
     False only the vertex times are read (positions relative to entities are placed when the action

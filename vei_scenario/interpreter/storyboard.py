@@ -373,25 +373,35 @@ class TimeHeadway(_EntityCondition):
         return compare(self.rule, d / e.speed, self.value)
 
 
-class EndOfRoad(_EntityCondition):
+class _HeldCondition(_EntityCondition):
+    """True once the entity's :meth:`holds` has been true without a break for ``duration``."""
+
     def __init__(self, el, ctx, triggering, rule) -> None:
         super().__init__(el, ctx, triggering, rule)
         self.duration = float(el.get("duration"))
         self.since: dict[str, float] = {}
 
+    def holds(self, ctx: Context, e) -> bool:  # pragma: no cover - interface
+        raise NotImplementedError
+
     def for_entity(self, ctx: Context, name: str) -> bool:
-        e = ctx.entities[name]
-        at_end = False
-        if e.lane is not None:
-            road = ctx.roads.road(e.lane.road)
-            forward = e.lane.forward
-            edge = e.lane.s >= road.length - 1e-6 if forward else e.lane.s <= 1e-6
-            at_end = edge and ctx.roads.next_road(road, e.lane.lane, forward) is None
-        if not at_end:
+        if not self.holds(ctx, ctx.entities[name]):
             self.since.pop(name, None)
             return False
         start = self.since.setdefault(name, ctx.t)
         return ctx.t - start >= self.duration - 1e-9
+
+
+class EndOfRoad(_HeldCondition):
+    """EndOfRoadCondition: stuck at a road end with nothing linked beyond it."""
+
+    def holds(self, ctx: Context, e) -> bool:
+        if e.lane is None:
+            return False
+        road = ctx.roads.road(e.lane.road)
+        forward = e.lane.forward
+        edge = e.lane.s >= road.length - 1e-6 if forward else e.lane.s <= 1e-6
+        return edge and ctx.roads.next_road(road, e.lane.lane, forward) is None
 
 
 class TrafficSignal(Condition):
@@ -466,23 +476,13 @@ DRIVABLE_LANE_TYPES = {
 }  # fmt: skip
 
 
-class Offroad(_EntityCondition):
+class Offroad(_HeldCondition):
     """OffroadCondition: the entity has been off every drivable lane for ``duration``."""
 
-    def __init__(self, el, ctx, triggering, rule) -> None:
-        super().__init__(el, ctx, triggering, rule)
-        self.duration = float(el.get("duration"))
-        self.since: dict[str, float] = {}
-
-    def for_entity(self, ctx: Context, name: str) -> bool:
-        e = ctx.entities[name]
+    def holds(self, ctx: Context, e) -> bool:
         rp = ctx.roads.project(e.x, e.y) if ctx.roads is not None else None
         lane = rp.road.section(rp.s).lanes.get(rp.lane) if rp is not None and rp.lane is not None else None
-        if lane is not None and lane.type in DRIVABLE_LANE_TYPES:
-            self.since.pop(name, None)
-            return False
-        start = self.since.setdefault(name, ctx.t)
-        return ctx.t - start >= self.duration - 1e-9
+        return lane is None or lane.type not in DRIVABLE_LANE_TYPES
 
 
 ENTITY_CONDITIONS = {
