@@ -1,9 +1,8 @@
 """Actions: built from the XML once, then started, stepped and stopped by the engine.
 
-Supported: TeleportAction (WorldPosition), SpeedAction (absolute or relative target; step, linear,
-cubic, sinusoidal over time, rate or distance), FollowTrajectoryAction (Polyline; no timing or Timing
-absolute/relative with scale and offset; following mode position or follow), AssignControllerAction,
-ActivateControllerAction, ParameterSetAction. Anything else is refused with its line.
+Teleport, Speed, LaneChange, LaneOffset, AssignRoute, AcquirePosition, FollowTrajectory, controller
+and parameter actions, traffic signal states; LongitudinalDistance lives in ``longitudinal.py``. The
+README lists what each supports; anything else is refused with its line.
 """
 
 from __future__ import annotations
@@ -45,6 +44,8 @@ class Teleport(Action):
         e = ctx.entities[self.entity]
         pose = resolve_position(ctx, self.pos)  # relative positions are taken when the action starts
         e.x, e.y, e.yaw, e.lane = pose.x, pose.y, pose.h, pose.lane
+        if e.lane is None and ctx.roads is not None:  # placed by world coordinates: on a lane if it is on one
+            e.lane = lane_state_at(ctx.roads, e)
         e.follower = None
         e.lateral = None
         e.placed = not ctx.initializing  # esmini leaves a teleported entity where it put it for this step
@@ -110,7 +111,7 @@ def lane_keep(e, ds: float, ctx) -> None:
     e.x, e.y = x, y
     base = road.lane_heading(s, road.lane_center_t(s, st.lane) + st.offset)
     base = base if forward else base + math.pi
-    e.yaw = math.atan2(math.sin(base), math.cos(base))
+    e.yaw = math.atan2(math.sin(base + st.heading), math.cos(base + st.heading))
     if e.lateral is not None and moved > 1e-9:
         e.yaw = e.lateral.heading(e, base)
 
@@ -200,6 +201,7 @@ class LaneChange(Action):
         e, st = entity_lane(ctx, self.el, self.entity)
         e.lane = st
         e.follower = None
+        st.heading = 0.0  # a lateral transition ends heading along the lane
         road = ctx.roads.road(st.road)
         here = road.section_index(st.s)
         if self.target.tag == "AbsoluteTargetLane":
@@ -271,6 +273,7 @@ class LaneOffset(Action):
     def start(self, ctx) -> None:
         e, st = entity_lane(ctx, self.el, self.entity)
         e.lane, e.follower = st, None
+        st.heading = 0.0
         value = float(self.target.get("value"))
         if self.target.tag == "RelativeTargetLaneOffset":
             _, ref = entity_lane(ctx, self.el, self.target.get("entityRef"))
@@ -386,12 +389,16 @@ class Speed(Action):
             limit = e.limits.max_accel_mps2 if v1 > v0 else e.limits.max_decel_mps2
             if limit > 0:
                 duration = max(duration, PEAK_RATE[self.shape] * abs(v1 - v0) / limit)
+        e.take_longitudinal(self, ctx)
         e.speed_profile = SpeedProfile(v0, v1, ctx.t, duration, self.shape)
         if duration == 0.0:
             e.speed = v1
 
     def update(self, ctx) -> None:
         e = ctx.entities[self.entity]
+        if e.longitudinal is not self:  # another longitudinal action took over
+            self.done = True
+            return
         p = e.speed_profile
         if self.continuous:  # keeps the relative speed after the transition; never ends by itself
             _, value, ref, vtype = self.target
@@ -460,6 +467,8 @@ class FollowTrajectory(Action):
             if e.controllers:
                 return
             e.lane = lane_state_at(ctx.roads, e)
+            if e.lane is not None:  # it turns to drive along the lane (esmini), unlike a placed entity
+                e.lane.heading = 0.0
             e.follower = None  # (an Init action is never stopped)
 
     def stop(self, ctx) -> None:
@@ -541,6 +550,10 @@ def private_actions(pa, entity: str, ctx) -> list[Action]:
         return [Teleport(entity, kind, ctx)]
     if kind.tag == "LongitudinalAction" and kind.find("SpeedAction") is not None:
         return [Speed(entity, kind.find("SpeedAction"), ctx)]
+    if kind.tag == "LongitudinalAction" and kind.find("LongitudinalDistanceAction") is not None:
+        from vei_scenario.interpreter.longitudinal import LongitudinalDistance  # (it builds on this module)
+
+        return [LongitudinalDistance(entity, kind.find("LongitudinalDistanceAction"), ctx)]
     if kind.tag == "LateralAction" and kind.find("LaneChangeAction") is not None:
         return [LaneChange(entity, kind.find("LaneChangeAction"), ctx)]
     if kind.tag == "LateralAction" and kind.find("LaneOffsetAction") is not None:

@@ -333,7 +333,7 @@ class Simulation:
             e.speed, e.accel = v, a
             e.status = "follow"
             return
-        v0 = e.speed
+        v0 = e.step_speed  # (an action stepped before the move may have set the speed already)
         if e.speed_profile is not None:
             v, finished = e.speed_profile.speed(t_next)
             e.speed = v
@@ -373,6 +373,8 @@ class Simulation:
         ctx.initializing = True
         for a in self.init_actions:
             a.start(ctx)
+        for a in list(ctx.stepping):  # Init actions that act every step act once before t = 0 is logged
+            a.step(ctx)
         ctx.initializing = False
         self._collide(collisions)
         record()
@@ -384,6 +386,10 @@ class Simulation:
             for a in self.init_actions:
                 if not a.done:
                     a.update(ctx)
+            for e in ctx.entities.values():
+                e.step_speed = e.speed
+            for a in list(ctx.stepping):
+                a.step(ctx)
             if self.coupling == "jacobi":
                 ctx.snapshot = {n: copy.copy(e) for n, e in ctx.entities.items()}
             for n in names:

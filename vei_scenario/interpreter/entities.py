@@ -181,6 +181,16 @@ class Entity:
     route: object = None  # routes.Route assigned by AssignRouteAction
     placed: bool = False  # teleported during this step: it does not move until the next one
     performance: bool = False  # limits come from the entity's <Performance> (speed changes obey them)
+    longitudinal: object = None  # the running action that sets the speed (SpeedAction, distance keeping)
+    step_speed: float = 0.0  # speed at the start of the current step (for the logged acceleration)
+
+    def take_longitudinal(self, action, ctx) -> None:
+        """``action`` now sets this entity's speed: the one that did so before ends (one action per
+        domain, as esmini and the standard's conflict rule have it)."""
+        old, self.longitudinal = self.longitudinal, action
+        if old is not None and old is not action and not old.done:
+            old.stop(ctx)
+            old.done = True
 
     def box(self) -> tuple[float, float, float, float, float]:
         """(centre x, centre y, yaw, length, width) of the bounding box."""

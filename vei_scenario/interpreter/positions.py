@@ -23,6 +23,15 @@ class LaneState:
     s: float
     offset: float = 0.0
     forward: bool = True  # moves towards increasing s (taken from its heading, as esmini does)
+    #: Heading relative to the direction of travel along the road, kept while it drives on (esmini
+    #: keeps a relative orientation: an entity placed at an angle moves along the lane at that angle).
+    heading: float = 0.0
+
+
+def _relative_heading(h: float, road_h: float) -> tuple[bool, float]:
+    """(moves towards increasing s, heading relative to that direction of travel)."""
+    forward = _heads_forward(h, road_h)
+    return forward, _wrap(h - (road_h if forward else road_h + math.pi))
 
 
 @dataclass
@@ -74,7 +83,7 @@ def lane_pose(ctx, el, road_id: str, lane_id: int, s: float, offset: float, forw
     x, y, h = road.world(s, t)
     forward = road.drives_forward(lane_id) if forward is None else forward
     drive_h = _wrap(_orient(el, h if forward else h + math.pi))
-    return Pose(x, y, drive_h, LaneState(road.id, lane_id, s, offset, _heads_forward(drive_h, h)))
+    return Pose(x, y, drive_h, LaneState(road.id, lane_id, s, offset, *_relative_heading(drive_h, h)))
 
 
 def _road_pose(el, road, s: float, t: float) -> Pose:
@@ -84,7 +93,7 @@ def _road_pose(el, road, s: float, t: float) -> Pose:
     pose_h = _wrap(_orient(el, base))
     if lane is None:
         return Pose(x, y, pose_h)
-    state = LaneState(road.id, lane, s, t - road.lane_center_t(s, lane), _heads_forward(pose_h, h))
+    state = LaneState(road.id, lane, s, t - road.lane_center_t(s, lane), *_relative_heading(pose_h, h))
     return Pose(x, y, pose_h, state)
 
 
@@ -107,7 +116,7 @@ def lane_state_at(net, e) -> LaneState | None:
         return None
     h_ref = rp.road.ref_pose(rp.s)[2]
     offset = rp.t - rp.road.lane_center_t(rp.s, rp.lane)
-    return LaneState(rp.road.id, rp.lane, rp.s, offset, _heads_forward(e.yaw, h_ref))
+    return LaneState(rp.road.id, rp.lane, rp.s, offset, *_relative_heading(e.yaw, h_ref))
 
 
 def lane_shift(lane: int, n: int, forward: bool) -> int:

@@ -33,6 +33,8 @@ class Context:
     colliding: set[frozenset[str]] = field(default_factory=set)
     trajectories: dict = field(default_factory=dict)  # Trajectory name -> Polyline
     signals: dict[str, str] = field(default_factory=dict)  # traffic signal name -> state
+    #: Running actions stepped before the entities move (they read the state all triggers saw).
+    stepping: list = field(default_factory=list)
     #: Under Jacobi coupling: every entity as it was at the start of the step (see engine.COUPLINGS).
     snapshot: dict | None = None
     #: True while the Init actions start (before the first record at t = 0).

@@ -250,9 +250,10 @@ class Road:
 @dataclass
 class Connection:
     incoming: str
-    connecting: str
+    connecting: str  # the connecting road, or in a direct junction the linked road itself
     contact: str
     lane_links: dict[int, int]
+    direct: bool = False  # a direct junction: roads meet without a connecting road, both ways
 
 
 @dataclass
@@ -285,9 +286,11 @@ class RoadNetwork:
         junctions: dict[str, list[Connection]] = {}
         for j in root.iterfind("junction"):
             conns = []
+            direct = j.get("type") == "direct"
             for c in j.iterfind("connection"):
                 links = {int(ll.get("from")): int(ll.get("to")) for ll in c.iterfind("laneLink")}
-                conns.append(Connection(c.get("incomingRoad"), c.get("connectingRoad"), c.get("contactPoint"), links))
+                other = c.get("linkedRoad") if direct else c.get("connectingRoad")
+                conns.append(Connection(c.get("incomingRoad"), other, c.get("contactPoint"), links, direct))
             junctions[j.get("id")] = conns
         return cls(roads, junctions, path)
 
@@ -360,6 +363,15 @@ class RoadNetwork:
             if nxt is None:
                 continue
             return nxt, conn.lane_links[lane_id], conn.contact != "end"
+        for conn in self.junctions.get(link.id, []):  # a direct junction entered from its linked road
+            if not conn.direct or conn.connecting != road.id:
+                continue
+            back = {to: frm for frm, to in conn.lane_links.items()}
+            nxt = self.roads.get(conn.incoming)
+            if lane_id not in back or nxt is None:
+                continue
+            via_end = nxt.successor is not None and nxt.successor.kind == "junction" and nxt.successor.id == link.id
+            return nxt, back[lane_id], not via_end
         return None
 
 

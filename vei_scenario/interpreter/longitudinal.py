@@ -1,0 +1,122 @@
+"""LongitudinalDistanceAction: keep a distance or time gap to another entity, ahead of it or behind.
+
+Without DynamicConstraints the entity is put at the requested distance every step and given the
+reference's speed (the reading of esmini and the standard: "as fast as possible"). With them it is
+driven by a critically damped spring on the distance error, its stiffness scaled by the permitted
+acceleration (when too far) or deceleration (when too close), the acceleration clipped to those
+limits and, when rates are given, changed no faster than them; the speed stays within ``maxSpeed``.
+This is the controller esmini 3.6 implements, so both players keep the same gaps.
+"""
+
+from __future__ import annotations
+
+import math
+
+from vei_scenario.interpreter.actions import Action, lane_keep
+from vei_scenario.interpreter.controllers import advance_along
+
+#: Spring stiffness per m/s² of permitted acceleration (1/s²): the gap closes in a few seconds.
+SPRING_PER_ACCEL = 0.4
+
+
+def longitudinal_gap(a, b, freespace: bool, system: str) -> float:
+    """Signed distance from ``a`` to ``b`` along ``a``'s direction of travel (positive: ``b`` ahead).
+
+    Between reference points in the entity frame, or as a difference of s when ``system`` is road or
+    lane and both are on one road. With ``freespace`` the gap between the boxes along ``a``'s
+    heading, 0 while their projections on that axis overlap (side by side)."""
+    if freespace:
+        c, s = math.cos(a.yaw), math.sin(a.yaw)
+        ax, ay, _, al, aw = a.box()
+        bx, by, byaw, bl, bw = b.box()
+        own = c * ax + s * ay
+        other = c * bx + s * by
+        half_b = 0.5 * (bl * abs(math.cos(byaw - a.yaw)) + bw * abs(math.sin(byaw - a.yaw)))
+        lo_a, hi_a, lo_b, hi_b = own - 0.5 * al, own + 0.5 * al, other - half_b, other + half_b
+        if hi_a < lo_b:
+            return lo_b - hi_a
+        if hi_b < lo_a:
+            return hi_b - lo_a
+        return 0.0
+    la, lb = a.lane, b.lane
+    if system in ("road", "lane") and la is not None and lb is not None and la.road == lb.road:
+        return (lb.s - la.s) if la.forward else (la.s - lb.s)
+    return math.cos(a.yaw) * (b.x - a.x) + math.sin(a.yaw) * (b.y - a.y)
+
+
+class LongitudinalDistance(Action):
+    """A running LongitudinalDistanceAction; stepped before the entities move, as esmini does."""
+
+    def __init__(self, entity: str, el, ctx) -> None:
+        self.entity, self.ref = entity, el.get("entityRef")
+        if self.ref not in ctx.entities:
+            raise ctx.error(el, f"LongitudinalDistanceAction: no entity named {self.ref!r}")
+        if (el.get("distance") is None) == (el.get("timeGap") is None):
+            raise ctx.error(el, "LongitudinalDistanceAction needs exactly one of distance and timeGap")
+        self.by_time = el.get("timeGap") is not None
+        self.value = abs(float(el.get("timeGap") if self.by_time else el.get("distance")))
+        self.freespace = el.get("freespace", "false") == "true"
+        self.continuous = el.get("continuous", "false") == "true"
+        self.system = el.get("coordinateSystem", "entity")
+        if self.system not in ("entity", "road", "lane"):
+            raise ctx.error(el, f"coordinateSystem {self.system!r} is not supported (entity, road, lane)")
+        self.displacement = el.get("displacement", "trailingReferencedEntity")
+        if self.displacement not in ("trailingReferencedEntity", "leadingReferencedEntity", "any"):
+            raise ctx.error(el, f"displacement {self.displacement!r} is not one of OpenSCENARIO's")
+        dyn = el.find("DynamicConstraints")
+
+        def get(name: str) -> float:  # an absent constraint does not constrain
+            value = dyn.get(name) if dyn is not None else None
+            return float(value) if value is not None else math.inf
+
+        self.max_accel, self.max_decel = get("maxAcceleration"), get("maxDeceleration")
+        self.max_speed = get("maxSpeed")
+        self.accel_rate, self.decel_rate = get("maxAccelerationRate"), get("maxDecelerationRate")
+
+    def start(self, ctx) -> None:
+        e, ref = ctx.entities[self.entity], ctx.entities[self.ref]
+        self.side = 1.0  # +1: behind the reference (trailing), -1: ahead of it (leading)
+        if self.displacement == "leadingReferencedEntity":
+            self.side = -1.0
+        elif self.displacement == "any":  # keep the side it is on when the action starts
+            self.side = -1.0 if longitudinal_gap(e, ref, self.freespace, "entity") < 0.0 else 1.0
+        self.accel = 0.0
+        e.take_longitudinal(self, ctx)
+        ctx.stepping.append(self)
+
+    def step(self, ctx) -> None:
+        """Set the entity's speed (or place it) for the coming step from the gap now."""
+        e, ref = ctx.entities[self.entity], ctx.entities[self.ref]
+        # every step is a whole step, the one it starts in too (esmini); in Init it only places
+        dt = 0.0 if ctx.initializing else ctx.dt
+        gap = longitudinal_gap(e, ref, self.freespace, self.system)
+        wanted = self.side * (abs(ref.speed) * self.value if self.by_time else self.value)
+        error = gap - wanted
+        if not self.continuous and abs(error) < 0.1:
+            self.done = True
+        if math.isinf(self.max_accel) and math.isinf(self.max_decel):  # at the distance, at its speed
+            if e.lane is not None and ctx.roads is not None:
+                lane_keep(e, error, ctx)
+            else:
+                advance_along(e, error)
+            e.speed = ref.speed
+            return
+        k = (self.max_accel if error < 0.0 else self.max_decel) * SPRING_PER_ACCEL
+        acc = error * k - (e.speed - ref.speed) * 2.0 * math.sqrt(k)
+        acc = max(-self.max_decel, min(self.max_accel, acc))
+        # the acceleration grows in size no faster than the rate of its sign
+        if acc < 0.0 and acc < self.accel:
+            acc = max(self.accel - (self.decel_rate * dt if dt > 0.0 else 0.0), acc)
+        elif acc >= 0.0 and acc > self.accel:
+            acc = min(self.accel + (self.accel_rate * dt if dt > 0.0 else 0.0), acc)
+        self.accel = acc
+        e.speed = max(-self.max_speed, min(self.max_speed, e.speed + acc * dt))
+
+    def stop(self, ctx) -> None:
+        self.done = True
+        if self in ctx.stepping:
+            ctx.stepping.remove(self)
+
+    def update(self, ctx) -> None:
+        if self.done and self in ctx.stepping:
+            ctx.stepping.remove(self)
