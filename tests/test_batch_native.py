@@ -76,6 +76,30 @@ def test_without_a_compiler_sweeps_fall_back_to_numpy_with_the_same_rows(xosc, t
     monkeypatch.setattr(evaluate, "_NATIVE", {})
     monkeypatch.setenv("CC", str(tmp_path / "no-such-cc"))
     monkeypatch.setenv("VEI_CACHE_DIR", str(tmp_path / "cache"))
+    monkeypatch.setenv("VEI_KERNEL", "cache")  # as if installed from a wheel built without a compiler
     assert native_mod.load_kernel() is None
     assert evaluate._native_engine(str(xosc), 0.01) is None
     assert evaluate.evaluate_local(str(xosc), variants, 0.01, workers=1) == compiled_rows
+
+
+def test_kernel_built_at_install_is_used_unless_its_sources_changed(xosc, tmp_path, monkeypatch):
+    """pip install builds the kernel (setup.py); it is loaded while it matches the C sources shipped
+    beside it, and gives the rows of the kernel compiled on demand. Edited sources are compiled anew."""
+    from vei_scenario.fmu.native import compiler
+
+    try:
+        compiler()
+    except Exception:
+        pytest.skip("no C compiler: the package was installed without its kernel")
+    packaged = native_mod.packaged_kernel()
+    assert packaged is not None and packaged.is_file(), "setup.py did not build vei_scenario.batch._kernel"
+    monkeypatch.setattr(native_mod, "_LIB", [])
+    assert native_mod.load_kernel()._name == str(packaged)
+    variants = _variants(6, 7)
+    rows = NativeBatch(BatchScenario(xosc)).metrics(variants)
+    monkeypatch.setattr(native_mod, "_LIB", [])
+    monkeypatch.setenv("VEI_CACHE_DIR", str(tmp_path / "cache"))
+    monkeypatch.setattr(native_mod, "source_digest", lambda src: "edited sources")
+    lib = native_mod.load_kernel()
+    assert lib is not None and lib._name != str(packaged) and str(tmp_path / "cache") in lib._name
+    assert NativeBatch(BatchScenario(xosc)).metrics(variants) == rows

@@ -11,6 +11,18 @@ import os
 import tempfile
 from pathlib import Path
 
+_UMASK: list[int] = []
+
+
+def _default_mode() -> int:
+    """The mode ``open()`` gives a new file (0666 less the umask): a temporary file is created 0600,
+    and renaming it must not make every output private to its owner."""
+    if not _UMASK:
+        mask = os.umask(0o022)  # read the umask (there is no other way) and put it back at once
+        os.umask(mask)
+        _UMASK.append(mask)
+    return 0o666 & ~_UMASK[0]
+
 
 def write_bytes_atomic(path: Path, data: bytes) -> None:
     """Write ``data`` to ``path`` through a temporary file and a rename."""
@@ -20,6 +32,7 @@ def write_bytes_atomic(path: Path, data: bytes) -> None:
     try:
         with os.fdopen(fd, "wb") as fh:
             fh.write(data)
+        os.chmod(tmp, _default_mode())
         os.replace(tmp, path)
     except BaseException:
         Path(tmp).unlink(missing_ok=True)
@@ -47,6 +60,7 @@ class OutputSet:
                 fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
                 with os.fdopen(fd, "wb") as fh:
                     fh.write(data)
+                os.chmod(tmp, _default_mode())
                 staged.append((tmp, path))
         except BaseException:
             for tmp, _ in staged:

@@ -139,7 +139,8 @@ def _cmd_sweep(args: argparse.Namespace) -> int:
         f"{len(report.rows)} variants ({', '.join(report.varied)}): {coll} collide, {len(ok) - coll} do not, "
         f"{len(report.rows) - len(ok)} failed"
     )
-    print(f"wrote {args.output}/catalog.csv, catalog.json, report.html")
+    out = Path(args.output)
+    print(f"wrote {out / 'catalog.csv'}, {out / 'catalog.json'}, {out / 'report.html'}")
     return 0
 
 
@@ -194,6 +195,9 @@ def _cmd_check(args: argparse.Namespace) -> int:
     return 1 if bad else 0
 
 
+BACKEND_HELP = "native: C models compiled into the FMU (default); python: pythonfmu (needs the [fmu] extra)"
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="vei", description="Annotated vehicle–e-scooter clips → ASAM OpenSCENARIO/OpenDRIVE test scenarios."
@@ -235,9 +239,9 @@ def build_parser() -> argparse.ArgumentParser:
     st = sub.add_parser("study", help="the seed paper's five configurations at the collision timing shift")
     st.add_argument("input", help="clip (.json) or compiled scenario (.xosc)")
     st.add_argument("-o", "--output", required=True, help="directory for the study")
-    st.add_argument("--dt", type=float, default=0.01)
+    st.add_argument("--dt", type=float, default=0.01, help="fixed step in s (default 0.01)")
     st.add_argument("--time-shift", type=float, help="TimeShift to use (default: the scenario's ConflictTimeShift)")
-    st.add_argument("--no-plots", action="store_true")
+    st.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
     st.set_defaults(func=_cmd_study)
 
     sw = sub.add_parser("sweep", help="run a catalog of parameter variants; catalog.csv/json and report.html")
@@ -251,9 +255,14 @@ def build_parser() -> argparse.ArgumentParser:
     )
     sw.add_argument("--dist", help="take variants from an OpenSCENARIO ParameterValueDistribution file")
     sw.add_argument("--seed", type=int, help="seed of stochastic distributions (default: the file's randomSeed)")
-    sw.add_argument("-o", "--output", required=True)
-    sw.add_argument("--dt", type=float, default=0.01)
-    sw.add_argument("--executor", choices=("local", "dask"), default="local")
+    sw.add_argument("-o", "--output", required=True, help="directory for catalog.csv, catalog.json, report.html")
+    sw.add_argument("--dt", type=float, default=0.01, help="fixed step in s (default 0.01)")
+    sw.add_argument(
+        "--executor",
+        choices=("local", "dask"),
+        default="local",
+        help="local: the compiled kernel on all cores (else worker processes); dask: a Dask cluster",
+    )
     sw.add_argument("--scheduler", help="Dask scheduler address (default: a LocalCluster on this machine)")
     sw.add_argument("--workers", type=int, help="local worker processes (default: all cores)")
     sw.add_argument("--emit-xosc", action="store_true", help="also write one scenario file per variant")
@@ -261,15 +270,20 @@ def build_parser() -> argparse.ArgumentParser:
     sw.set_defaults(func=_cmd_sweep)
 
     rk = sub.add_parser("risk", help="find the TimeShift intervals of collisions or near misses (bisection)")
-    rk.add_argument("scenario")
-    rk.add_argument("--target", choices=("collision", "near-miss"), default="collision")
+    rk.add_argument("scenario", help="vei-compiled OpenSCENARIO file (.xosc)")
+    rk.add_argument(
+        "--target",
+        choices=("collision", "near-miss"),
+        default="collision",
+        help="what to find: collisions (default) or near misses (minimum TTC within --band)",
+    )
     rk.add_argument("--vary", action="append", default=[], help="other parameters to search separately")
     rk.add_argument("--band", type=_pair, default=(0.5, 1.5), help="near-miss band of the minimum TTC, s (0.5:1.5)")
     rk.add_argument("--window", type=_pair, help="TimeShift window (default: ConflictTimeShift ± 6 s)")
     rk.add_argument("--coarse", type=float, default=0.5, help="bracketing step, s (default 0.5)")
     rk.add_argument("--tol", type=float, default=0.01, help="edge tolerance, s (default 0.01)")
-    rk.add_argument("--dt", type=float, default=0.01)
-    rk.add_argument("--workers", type=int)
+    rk.add_argument("--dt", type=float, default=0.01, help="fixed step in s (default 0.01)")
+    rk.add_argument("--workers", type=int, help="worker processes (default: all cores)")
     rk.add_argument("-o", "--output", help="directory for risk.json and the critical scenarios")
     rk.set_defaults(func=_cmd_risk)
 
@@ -283,7 +297,7 @@ def build_parser() -> argparse.ArgumentParser:
     fb = fsub.add_parser("build", help="build FMUs: sfm (e-scooter), cap (planner), ego (vehicle) or all")
     fb.add_argument("models", nargs="*", metavar="MODEL", help="sfm, cap, ego or all (default: all)")
     fb.add_argument("-o", "--output", default="fmus/dist", help="directory for the .fmu files (default fmus/dist)")
-    fb.add_argument("--backend", choices=("native", "python"), default="native")
+    fb.add_argument("--backend", choices=("native", "python"), default="native", help=BACKEND_HELP)
     fb.add_argument("--fmi", type=int, choices=(2, 3), default=2, help="FMI version (default 2)")
     fb.set_defaults(func=_cmd_fmu_build)
     fs = fsub.add_parser("system", help="the scenario's closed loop (ego + scooter + planner) as an SSP 1.0 package")
@@ -291,24 +305,29 @@ def build_parser() -> argparse.ArgumentParser:
     fs.add_argument("-o", "--output", required=True, help="SSP file to write (.ssp)")
     fs.add_argument("--param", action="append", default=[], metavar="NAME=VALUE", help="override a parameter")
     fs.add_argument("--dt", type=float, default=0.01, help="communication step in s (default 0.01)")
-    fs.add_argument("--backend", choices=("native", "python"), default="native")
-    fs.add_argument("--fmi", type=int, choices=(2, 3), default=2)
+    fs.add_argument("--backend", choices=("native", "python"), default="native", help=BACKEND_HELP)
+    fs.add_argument("--fmi", type=int, choices=(2, 3), default=2, help="FMI version of the FMUs (default 2)")
     fs.set_defaults(func=_cmd_fmu_system)
     fc = fsub.add_parser("cosim", help="run the closed loop in a co-simulation engine and compare it with vei run")
     fc.add_argument("scenario", help="vei-compiled OpenSCENARIO file (.xosc)")
-    fc.add_argument("--engine", choices=("fmpy", "libcosim"), default="fmpy")
+    fc.add_argument(
+        "--engine",
+        choices=("fmpy", "libcosim"),
+        default="fmpy",
+        help="co-simulation master: fmpy (default) or libcosim (needs the [fmu] extra)",
+    )
     fc.add_argument("--coupling", choices=("sequential", "jacobi"), help="fmpy master only (default sequential)")
-    fc.add_argument("--param", action="append", default=[], metavar="NAME=VALUE")
-    fc.add_argument("--dt", type=float, default=0.01)
-    fc.add_argument("--backend", choices=("native", "python"), default="native")
-    fc.add_argument("--fmi", type=int, choices=(2, 3), default=2)
+    fc.add_argument("--param", action="append", default=[], metavar="NAME=VALUE", help="override a parameter")
+    fc.add_argument("--dt", type=float, default=0.01, help="communication step in s (default 0.01)")
+    fc.add_argument("--backend", choices=("native", "python"), default="native", help=BACKEND_HELP)
+    fc.add_argument("--fmi", type=int, choices=(2, 3), default=2, help="FMI version of the FMUs (default 2)")
     fc.add_argument("--tolerance", type=float, default=1e-6, help="exit 1 above this deviation in m (1e-6)")
     fc.add_argument("-o", "--output", help="write the co-simulated trajectories (CSV) here")
     fc.set_defaults(func=_cmd_fmu_cosim)
 
     v = sub.add_parser("validate", help="check .xosc/.xodr files against the ASAM XSDs and VEI's own rules")
-    v.add_argument("files", nargs="+")
-    v.add_argument("--format", choices=("text", "json"), default="text")
+    v.add_argument("files", nargs="+", help=".xosc and .xodr files")
+    v.add_argument("--format", choices=("text", "json"), default="text", help="text (default) or JSON for other tools")
     v.set_defaults(func=_cmd_validate)
     return parser
 

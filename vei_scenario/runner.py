@@ -66,6 +66,11 @@ def metrics_document(result: RunResult, cfg: MetricConfig) -> dict:
     }
 
 
+def _seconds(value, none: str) -> str:
+    """A time in s, or what its absence means (a metric is None when the event never happens)."""
+    return none if value is None else f"{value} s"
+
+
 def summary_text(doc: dict) -> str:
     m = doc["metrics"]
     params = ", ".join(f"{k}={v}" for k, v in doc["parameters"].items())
@@ -73,15 +78,25 @@ def summary_text(doc: dict) -> str:
     if m:
         coll = f"COLLISION at {m['collision_time_s']} s" if m["collision"] else "no collision"
         z = m["ttc_zones_s"]
+        never = "none (never on a collision course)"
         lines += [
-            f"{doc['ego']} vs {doc['threat']}: {coll}; min gap {m['min_gap_m']} m; min TTC {m['min_ttc_s']} s "
-            f"(approx {m['min_ttc_approx_s']} s); ACT {m['act_min_s']} s; PET {m['pet_s']} s",
+            f"{doc['ego']} vs {doc['threat']}: {coll}; min gap {m['min_gap_m']} m; "
+            f"min TTC {_seconds(m['min_ttc_s'], never)} (approx {_seconds(m['min_ttc_approx_s'], never)}); "
+            f"ACT {_seconds(m['act_min_s'], 'none (never closing)')}; "
+            f"PET {_seconds(m['pet_s'], 'none (paths do not cross)')}",
             f"safety index {m['safety_index']} (safe {z['safe']} s, attention {z['attention']} s, "
             f"alert {z['alert']} s, collision {z['collision']} s); EI max {m['ei_max_mps']} m/s; "
             f"DRAC max {m['drac_max_mps2']} m/s²",
             f"ego: peak deceleration {m['peak_decel_mps2']} m/s², max jerk {m['max_jerk_mps3']} m/s³, "
             f"comfort {m['comfort_score']}",
         ]
+    # every pair that touched, not only the ego and its threat (road users also collide with each other)
+    hits = doc.get("collisions") or []
+    if hits:
+        listed = "; ".join(f"{' and '.join(c['entities'])} at {c['time_s']} s" for c in hits)
+        lines.append(f"collisions ({len(hits)}): {listed}")
+    else:
+        lines.append("collisions: none between any entities")
     return "\n".join(lines)
 
 

@@ -235,22 +235,38 @@ static void score(const VeiBatchScene *sc, double *tr[NTRAJ], Scratch *w, double
         double ox = tr[TX][k], oy = tr[TY][k], oyaw = tr[TYAW][k], ov = tr[TSPEED][k];
         VeiTrigBox eb = vei_trig_box(ex, ey, eyaw, sc->ego_length, sc->ego_width);
         VeiTrigBox ob = vei_trig_box(ox, oy, oyaw, sc->threat_length, sc->threat_width);
-        int contact = vei_trig_boxes_overlap(&eb, &ob);
+        double evx = ev * eb.c, evy = ev * eb.s, ovx = ov * ob.c, ovy = ov * ob.s;
+        double rx = ox - ex, ry = oy - ey, vx = ovx - evx, vy = ovy - evy;
+        double v2 = vx * vx + vy * vy, d2 = rx * rx + ry * ry;
+        int closing = (rx * vx + ry * vy) < 0;
+        double mfd = v2 > 1e-12 ? fabs(rx * vy - ry * vx) / sqrt(v2) : hypot(rx, ry);
+        /* Each box lies within its circumscribed circle. Where the circles are apart now (no contact)
+         * or stay apart at constant velocity (no time to contact), the box tests are left out: they
+         * would give the same answer, so every output stays bit-identical (~99 % of steps). */
+        double reach = sc->radius_sum * (1.0 + 1e-9);
+        int apart_now = d2 > reach * reach;
+        int apart_ahead = apart_now && (!closing || mfd > reach);
+        int contact = apart_now ? 0 : vei_trig_boxes_overlap(&eb, &ob);
         w->contact[k] = contact;
         if (contact && !any_contact) any_contact = 1, first_contact = k;
         double gap = contact ? 0.0 : box_gap(&eb, &ob);
         w->gap[k] = gap;
         min_gap = dmin(min_gap, gap);
-        double evx = ev * eb.c, evy = ev * eb.s, ovx = ov * ob.c, ovy = ov * ob.s;
-        double ttc2d = vei_trig_time_to_contact(&eb, evx, evy, &ob, ovx, ovy);
+        double ttc2d = apart_ahead ? INFINITY : vei_trig_time_to_contact(&eb, evx, evy, &ob, ovx, ovy);
         min_ttc = dmin(min_ttc, ttc2d);
-        /* the seed's approximation: gap to the other ahead in the ego's lane band / v_ego */
-        double c = eb.c, s = eb.s, dx = ox - ex, dy = oy - ey, rel = oyaw - eyaw;
-        double cr = fabs(cos(rel)), sr = fabs(sin(rel));
-        double ahead = c * dx + s * dy - 0.5 * sc->ego_length - 0.5 * (sc->threat_length * cr + sc->threat_width * sr);
+        /* the seed's approximation: gap to the other ahead in the ego's lane band / v_ego; the band is
+         * at most half the ego's width plus half the other's diagonal wide, so beyond that the other's
+         * relative heading is not needed */
+        double c = eb.c, s = eb.s, dx = rx, dy = ry;
         double lateral = fabs(-s * dx + c * dy);
-        double half_band = 0.5 * sc->ego_width + 0.5 * (sc->threat_length * sr + sc->threat_width * cr);
-        double path_gap = (lateral <= half_band && ahead >= 0) ? ahead : INFINITY;
+        double path_gap = INFINITY;
+        if (lateral <= sc->band_reach) {
+            double rel = oyaw - eyaw, cr = fabs(cos(rel)), sr = fabs(sin(rel));
+            double ahead =
+                c * dx + s * dy - 0.5 * sc->ego_length - 0.5 * (sc->threat_length * cr + sc->threat_width * sr);
+            double half_band = 0.5 * sc->ego_width + 0.5 * (sc->threat_length * sr + sc->threat_width * cr);
+            if (lateral <= half_band && ahead >= 0) path_gap = ahead;
+        }
         double ttc_approx = (ev > 1e-3 && isfinite(path_gap)) ? path_gap / ev : INFINITY;
         if (contact) ttc_approx = 0.0;
         min_ttc_approx = dmin(min_ttc_approx, ttc_approx);
@@ -258,10 +274,6 @@ static void score(const VeiBatchScene *sc, double *tr[NTRAJ], Scratch *w, double
         int z = contact ? 3 : (zt >= sc->safe_ttc ? 0 : (zt >= sc->alert_ttc ? 1 : 2));
         zone[z]++;
         /* Emergency Index */
-        double rx = ox - ex, ry = oy - ey, vx = ovx - evx, vy = ovy - evy;
-        double v2 = vx * vx + vy * vy;
-        int closing = (rx * vx + ry * vy) < 0;
-        double mfd = v2 > 1e-12 ? fabs(rx * vy - ry * vx) / sqrt(v2) : hypot(rx, ry);
         double in_depth = closing ? sc->radius_sum - mfd : 0.0;
         double ttc_ei = dmax(ttc2d, sc->metric_dt);
         double ei = (in_depth > 0 && isfinite(ttc2d)) ? in_depth / ttc_ei : 0.0;
@@ -298,7 +310,7 @@ static void score(const VeiBatchScene *sc, double *tr[NTRAJ], Scratch *w, double
     out[OUT_EI_MAX] = ei_max;
     out[OUT_DRAC_MAX] = drac_max;
     out[OUT_PET] = pet(sc, tr, n, w->in_e, w->in_o, w->ie, w->io);
-    out[OUT_PEAK_DECEL] = dmax(0.0, -peak);
+    out[OUT_PEAK_DECEL] = dmax(0.0, -peak) + 0.0; /* + 0.0: never -0.0, as in the Python metric */
     out[OUT_MAX_JERK] = jerk_max;
     out[OUT_COMFORT] = (double)comfortable / n;
     out[OUT_NEAR_MISS] = !any_contact && sc->near_lo <= min_ttc && min_ttc <= sc->near_hi;

@@ -33,6 +33,7 @@ typedef struct {
     int zone_ttc_2d;
     int pet_step;
     double radius_sum; /* sum of the circumscribed radii: PET's reach and EI's safety distance */
+    double band_reach; /* widest the approximate TTC's lane band can be (half ego width + half other diagonal) */
 } VeiBatchScene;
 
 typedef struct {

@@ -3,9 +3,11 @@ vei-compiled two-entity scenario simulated and scored in C, several variants at 
 
 It follows :class:`~vei_scenario.batch.engine.BatchScenario` step for step and the metric functions of
 :mod:`vei_scenario.metrics.definitions` operation for operation, so its rows equal ``vei run``'s
-(tests/test_batch_native.py). The library is compiled once with the system C compiler into a cache
-(``$VEI_CACHE_DIR``, default ``~/.cache/vei-scenario``); without a compiler sweeps use the numpy batch
-engine.
+(tests/test_batch_native.py). The kernel is built with the package (the extension
+``vei_scenario.batch._kernel``, see setup.py), so a wheel carries it. Where the build had no compiler,
+it is compiled once on first use with the system C compiler into a cache (``$VEI_CACHE_DIR``, default
+``~/.cache/vei-scenario``); without either, sweeps use the numpy batch engine. ``VEI_KERNEL=cache``
+skips the packaged one, ``VEI_KERNEL=numpy`` both.
 """
 
 from __future__ import annotations
@@ -27,7 +29,7 @@ from vei_scenario.metrics.series import MetricConfig
 
 SOURCES = ("vei_models.c", "vei_batch.c")
 HEADERS = ("vei_models.h", "vei_batch.h")
-FLAGS = ("-shared", "-fPIC", "-O2", "-std=c99", "-ffp-contract=off")
+FLAGS = ("-shared", "-fPIC", "-O3", "-std=c99", "-ffp-contract=off")
 N_OUT = 18
 
 _D = ctypes.c_double
@@ -67,6 +69,7 @@ class _Scene(ctypes.Structure):
         ("zone_ttc_2d", ctypes.c_int),
         ("pet_step", ctypes.c_int),
         ("radius_sum", _D),
+        ("band_reach", _D),
     ]
 
 
@@ -86,6 +89,25 @@ def _cache_dir() -> Path:
 _LIB: list = []
 
 
+def packaged_kernel() -> Path | None:
+    """The kernel built with the package (the ``vei_scenario.batch._kernel`` extension), if it was."""
+    import importlib.util
+
+    spec = importlib.util.find_spec("vei_scenario.batch._kernel")
+    return Path(spec.origin) if spec is not None and spec.origin else None
+
+
+def source_digest(src: Path) -> str:
+    """What setup.py stamps into the packaged kernel: a hash of the C files it compiles."""
+    return hashlib.sha256(b"".join((src / n).read_bytes() for n in (*SOURCES, *HEADERS))).hexdigest()[:16]
+
+
+def _bind(lib):
+    lib.vei_batch_run.argtypes = [ctypes.POINTER(_Scene), ctypes.POINTER(_Variant), ctypes.c_int, _P, _P]
+    lib.vei_batch_run.restype = ctypes.c_int
+    return lib
+
+
 def load_kernel():
     """The compiled kernel (built on first use), or None when no C compiler can build it."""
     if _LIB:
@@ -94,8 +116,19 @@ def load_kernel():
     from vei_scenario.fmu.native import c_source_dir, compiler
 
     lib = None
+    choice = os.environ.get("VEI_KERNEL", "")
+    packaged = packaged_kernel() if choice not in ("cache", "numpy") else None
     try:
+        if choice == "numpy":
+            raise OSError("VEI_KERNEL=numpy")
         src = c_source_dir()
+        if packaged is not None:
+            built = ctypes.CDLL(str(packaged))
+            built.vei_kernel_digest.restype = ctypes.c_char_p
+            if built.vei_kernel_digest().decode() == source_digest(src):
+                lib = _bind(built)
+                _LIB.append(lib)
+                return lib
         cc = compiler()
         digest = hashlib.sha256()
         for name in (*SOURCES, *HEADERS):
@@ -113,9 +146,7 @@ def load_kernel():
                 Path(tmp).unlink(missing_ok=True)
                 raise OSError(proc.stderr)
             os.replace(tmp, target)
-        lib = ctypes.CDLL(str(target))
-        lib.vei_batch_run.argtypes = [ctypes.POINTER(_Scene), ctypes.POINTER(_Variant), ctypes.c_int, _P, _P]
-        lib.vei_batch_run.restype = ctypes.c_int
+        lib = _bind(ctypes.CDLL(str(target)))
     except (OSError, VeiInputError):
         lib = None
     _LIB.append(lib)
@@ -214,6 +245,7 @@ class NativeBatch:
             int(cfg.zone_ttc != "approx"),
             max(1, int(round(0.05 / metric_dt))) if metric_dt > 0 else 1,
             0.5 * (math.hypot(el, ew) + math.hypot(tl, tw)),
+            (0.5 * ew + 0.5 * math.hypot(tl, tw)) * (1.0 + 1e-9) + 1e-12,
         )
         self._scene_cache[duration] = scene
         return scene

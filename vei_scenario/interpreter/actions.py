@@ -44,8 +44,8 @@ class Teleport(Action):
         e = ctx.entities[self.entity]
         pose = resolve_position(ctx, self.pos)  # relative positions are taken when the action starts
         e.x, e.y, e.yaw, e.lane = pose.x, pose.y, pose.h, pose.lane
-        if e.lane is None and ctx.roads is not None:  # placed by world coordinates: on a lane if it is on one
-            e.lane = lane_state_at(ctx.roads, e)
+        # placed by world coordinates: it takes up the lane it is on when it first drives by default
+        e.find_lane = e.lane is None and ctx.road_file is not None
         e.follower = None
         e.lateral = None
         e.placed = not ctx.initializing  # esmini leaves a teleported entity where it put it for this step
@@ -455,7 +455,7 @@ class FollowTrajectory(Action):
             e.follower.s = max(self.polyline.project(e.x, e.y), self.initial_s)
         elif ctx.initializing:  # logged at t = 0 on its trajectory
             e.x, e.y, e.yaw = self.polyline.at_time(e.follower.trajectory_time(ctx.t))
-        e.lane = None
+        e.lane, e.find_lane = None, False
 
     def update(self, ctx) -> None:
         e = ctx.entities[self.entity]

@@ -19,6 +19,7 @@ from vei_scenario.interpreter.actions import global_actions, lane_keep, private_
 from vei_scenario.interpreter.controllers import advance_along, make_controller
 from vei_scenario.interpreter.document import ScenarioDocument
 from vei_scenario.interpreter.entities import Entity
+from vei_scenario.interpreter.positions import ensure_lane
 from vei_scenario.interpreter.shapes import placed_when_built, polyline_from
 from vei_scenario.interpreter.storyboard import COMPLETE, RUNNING, STANDBY, Context, Element, Trigger
 from vei_scenario.models.boxes import boxes_overlap_scalar
@@ -341,6 +342,8 @@ class Simulation:
                 e.speed_profile = None
         e.accel = (e.speed - v0) / dt
         ds = e.speed * dt  # esmini's default controller: the step's new speed over the whole step
+        if f is None:  # (projecting onto the network is costly: only once it drives by lane)
+            ensure_lane(ctx, e)
         if e.lane is not None and f is None:
             lane_keep(e, ds, ctx)
         elif f is not None and f.s + ds > f.polyline.length and not e.controllers:  # on past the end (esmini)

@@ -182,6 +182,7 @@ class Entity:
     placed: bool = False  # teleported during this step: it does not move until the next one
     performance: bool = False  # limits come from the entity's <Performance> (speed changes obey them)
     longitudinal: object = None  # the running action that sets the speed (SpeedAction, distance keeping)
+    find_lane: bool = False  # placed off the lane model: look up its lane when it first needs one
     step_speed: float = 0.0  # speed at the start of the current step (for the logged acceleration)
 
     def take_longitudinal(self, action, ctx) -> None:

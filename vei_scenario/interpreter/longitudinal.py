@@ -14,6 +14,7 @@ import math
 
 from vei_scenario.interpreter.actions import Action, lane_keep
 from vei_scenario.interpreter.controllers import advance_along
+from vei_scenario.interpreter.positions import ensure_lane
 
 #: Spring stiffness per m/s² of permitted acceleration (1/s²): the gap closes in a few seconds.
 SPRING_PER_ACCEL = 0.4
@@ -87,6 +88,8 @@ class LongitudinalDistance(Action):
     def step(self, ctx) -> None:
         """Set the entity's speed (or place it) for the coming step from the gap now."""
         e, ref = ctx.entities[self.entity], ctx.entities[self.ref]
+        ensure_lane(ctx, e)
+        ensure_lane(ctx, ref)
         # every step is a whole step, the one it starts in too (esmini); in Init it only places
         dt = 0.0 if ctx.initializing else ctx.dt
         gap = longitudinal_gap(e, ref, self.freespace, self.system)

@@ -119,6 +119,13 @@ def lane_state_at(net, e) -> LaneState | None:
     return LaneState(rp.road.id, rp.lane, rp.s, offset, *_relative_heading(e.yaw, h_ref))
 
 
+def ensure_lane(ctx, e) -> None:
+    """Give an entity placed by world coordinates (``find_lane``) the lane it is on, once it needs one."""
+    if e.find_lane:
+        e.find_lane = False
+        e.lane = lane_state_at(ctx.roads, e)
+
+
 def lane_shift(lane: int, n: int, forward: bool) -> int:
     """The lane ``n`` lanes to the left (negative: right) of ``lane`` as seen in its driving direction
     (``forward``: towards increasing s). Lane ids grow to the left of the reference line; 0 is none."""

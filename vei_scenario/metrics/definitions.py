@@ -184,7 +184,7 @@ def pet_s(p: PairSeries, cfg: MetricConfig) -> np.ndarray:
 
 def peak_decel_mps2(p: PairSeries, cfg: MetricConfig) -> np.ndarray:
     """Largest deceleration of the ego (m/s², positive)."""
-    return np.maximum(0.0, -p.ego.accel.min(axis=-1))
+    return np.maximum(0.0, -p.ego.accel.min(axis=-1)) + 0.0  # (+ 0.0: no "-0.0" when it never brakes)
 
 
 def _jerk(p: PairSeries) -> np.ndarray:

@@ -51,7 +51,11 @@ def catalog_csv(rows: list[dict], parameter_names: list[str]) -> str:
 
 
 def catalog_json(rows: list[dict], meta: dict) -> str:
-    return json.dumps({**meta, "variants": rows}, indent=1) + "\n"
+    """The catalog as one JSON document: the sweep's description, then one variant per line (written by
+    json's C encoder, which ``indent`` would switch off: 10 000 rows in ~0.1 s instead of ~1 s)."""
+    head = json.dumps(meta, indent=1)[:-2]  # without the closing brace
+    body = ",\n".join(json.dumps(r) for r in rows)
+    return f'{head},\n "variants": [\n{body}\n ]\n}}\n' if meta else f'{{\n "variants": [\n{body}\n ]\n}}\n'
 
 
 def variant_xosc(scenario: Path, values: dict[str, str], target_dir: Path) -> bytes:

@@ -6,27 +6,40 @@ import base64
 import html
 import io
 
-import matplotlib
+import numpy as np
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+
+def _figure(figsize: tuple[float, float]):
+    """A figure drawn by Agg without pyplot (whose import and global state a report does not need)."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=figsize)
+    FigureCanvasAgg(fig)
+    return fig
 
 
 def _png(fig) -> str:
     buf = io.BytesIO()
     fig.savefig(buf, format="png", dpi=100, metadata={"Software": None})
-    plt.close(fig)
     return base64.b64encode(buf.getvalue()).decode()
 
 
+def _runs(flags: np.ndarray) -> list[tuple[int, int]]:
+    """(first, last) index of each run of consecutive True values."""
+    edges = np.diff(np.concatenate(([0], flags.astype(np.int8), [0])))
+    return list(zip(np.flatnonzero(edges == 1), np.flatnonzero(edges == -1) - 1))
+
+
 def _series_plot(rows: list[dict], x_param: str, groups: list[str], metric: str, label: str) -> str:
-    fig, ax = plt.subplots(figsize=(8, 3.6))
-    keys = sorted({tuple(r["parameters"][g] for g in groups) for r in rows})
-    for key in keys:
-        sel = [r for r in rows if tuple(r["parameters"][g] for g in groups) == key and r["status"] == "ok"]
-        if not sel:  # every variant of this group failed: listed under "Failed variants"
-            continue
+    fig = _figure((8, 3.6))
+    ax = fig.add_subplot()
+    by_key: dict[tuple, list[dict]] = {}
+    for r in rows:
+        if r["status"] == "ok":
+            by_key.setdefault(tuple(r["parameters"][g] for g in groups), []).append(r)
+    for key in sorted(by_key):  # a group whose every variant failed is listed under "Failed variants"
+        sel = by_key[key]
         sel.sort(key=lambda r: float(r["parameters"][x_param]))
         x = np.array([float(r["parameters"][x_param]) for r in sel])
         y = np.array([np.nan if r["metrics"].get(metric) is None else float(r["metrics"][metric]) for r in sel])
@@ -34,10 +47,10 @@ def _series_plot(rows: list[dict], x_param: str, groups: list[str], metric: str,
         name = ", ".join(f"{g}={k}" for g, k in zip(groups, key)) or "all"
         line = ax.plot(x, y, lw=1.3, marker=".", ms=3, label=name)
         ax.plot(x[coll], y[coll], "x", color=line[0].get_color(), ms=6)
-        if coll.any():  # shade this group's collision region
+        if coll.any():  # shade this group's collision region: one band per run of colliding variants
             step = np.median(np.diff(x)) if x.size > 1 else 0.1
-            for xi in x[coll]:
-                ax.axvspan(xi - step / 2, xi + step / 2, color="red", alpha=0.04, lw=0)
+            for i, j in _runs(coll):
+                ax.axvspan(x[i] - step / 2, x[j] + step / 2, color="red", alpha=0.04, lw=0)
     ax.set_xlabel(x_param)
     ax.set_ylabel(label)
     ax.grid(alpha=0.3)

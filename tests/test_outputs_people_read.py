@@ -1,0 +1,107 @@
+"""What people read: file modes, the run summary's wording, no negative zeros."""
+
+from __future__ import annotations
+
+import math
+import os
+import stat
+import subprocess
+import sys
+from types import SimpleNamespace
+
+import numpy as np
+import pytest
+
+from vei_scenario.metrics.definitions import peak_decel_mps2
+from vei_scenario.runner import summary_text
+
+
+@pytest.mark.parametrize("umask, mode", [(0o022, 0o644), (0o027, 0o640)])
+def test_outputs_get_the_mode_of_a_new_file_under_the_umask(tmp_path, umask, mode):
+    """Temporary files are created 0600; the renamed outputs must not stay private to their owner."""
+    code = (
+        "import os, sys\n"
+        f"os.umask({umask})\n"
+        "from pathlib import Path\n"
+        "from vei_scenario.atomic_io import OutputSet, write_bytes_atomic\n"
+        "d = Path(sys.argv[1])\n"
+        "write_bytes_atomic(d / 'one.txt', b'1')\n"
+        "s = OutputSet(); s.add(d / 'two.txt', 'two'); s.commit()\n"
+    )
+    subprocess.run([sys.executable, "-c", code, str(tmp_path)], check=True)
+    for name in ("one.txt", "two.txt"):
+        assert stat.S_IMODE(os.stat(tmp_path / name).st_mode) == mode, name
+
+
+def _doc(metrics_overrides: dict, collisions: list) -> dict:
+    metrics = {
+        "collision": False,
+        "collision_time_s": None,
+        "min_gap_m": 4.2,
+        "min_ttc_s": None,
+        "min_ttc_approx_s": None,
+        "act_min_s": None,
+        "pet_s": None,
+        "safety_index": 1.0,
+        "ttc_zones_s": {"safe": 25.0, "attention": 0.0, "alert": 0.0, "collision": 0.0},
+        "ei_max_mps": 0.0,
+        "drac_max_mps2": 0.0,
+        "peak_decel_mps2": 0.0,
+        "max_jerk_mps3": 0.0,
+        "comfort_score": 1.0,
+        **metrics_overrides,
+    }
+    return {
+        "scenario": "s.xosc",
+        "parameters": {},
+        "duration_s": 25.0,
+        "dt_s": 0.01,
+        "end_reason": "time limit 25 s",
+        "ego": "Ego",
+        "threat": "scooter_1",
+        "metrics": metrics,
+        "collisions": collisions,
+    }
+
+
+def test_summary_says_what_a_missing_time_means_and_lists_every_collision():
+    text = summary_text(_doc({}, [{"time_s": 8.86, "entities": ["scooter_2", "scooter_3"]}]))
+    assert "None" not in text
+    assert "min TTC none (never on a collision course)" in text
+    # the ego and its threat did not collide, two other road users did: the summary says so
+    assert "no collision" in text and "collisions (1): scooter_2 and scooter_3 at 8.86 s" in text
+    calm = summary_text(_doc({"min_ttc_s": 1.55, "act_min_s": 1.2, "pet_s": 1.5}, []))
+    assert "min TTC 1.55 s" in calm and "ACT 1.2 s" in calm and "collisions: none between any entities" in calm
+
+
+def test_peak_deceleration_of_an_ego_that_never_brakes_is_plus_zero():
+    p = SimpleNamespace(ego=SimpleNamespace(accel=np.array([0.0, 0.0, 0.5])))
+    value = float(peak_decel_mps2(p, None))
+    assert value == 0.0 and math.copysign(1.0, value) == 1.0 and repr(value) == "0.0"
+
+
+def test_every_command_line_option_says_what_it_does():
+    import argparse
+
+    from vei_scenario.cli import build_parser
+
+    def walk(parser, path):
+        for action in parser._actions:
+            if isinstance(action, argparse._SubParsersAction):
+                for name, sub in action.choices.items():
+                    yield from walk(sub, f"{path} {name}")
+            elif not isinstance(action, (argparse._HelpAction, argparse._VersionAction)):
+                yield f"{path} {'/'.join(action.option_strings) or action.dest}", action.help
+
+    missing = [name for name, text in walk(build_parser(), "vei") if not text]
+    assert not missing, missing
+
+
+def test_sweep_names_the_files_it_wrote(tmp_path, capsys, monkeypatch):
+    from vei_scenario import cli
+
+    report = SimpleNamespace(rows=[], varied=["TimeShift"])
+    monkeypatch.setattr("vei_scenario.sweep.run_sweep", lambda *a, **k: report)
+    cli.main(["sweep", "s.xosc", "--vary", "TimeShift=0:1:1", "-o", f"{tmp_path}/catalog/"])
+    out = capsys.readouterr().out
+    assert f"{tmp_path}/catalog/catalog.csv" in out and "//" not in out
