@@ -128,9 +128,12 @@ def _evaluate_native(native, scenario, variants, dt, workers, progress) -> list[
     rows: list[dict | None] = [None] * len(variants)
     ok = [i for i, v in enumerate(variants) if engine.accepts(v)]
     tasks = [ok[k : k + 500] for k in range(0, len(ok), 500)]
-    prepared = [native.prepare([variants[i] for i in t]) for t in tasks]
+
+    def task(t: list[int]):  # preparing (Python) overlaps with the other threads' kernel runs (no GIL)
+        return native.run(native.prepare([variants[i] for i in t]))
+
     with ThreadPoolExecutor(max_workers=workers) as pool:
-        for t, (out, _) in zip(tasks, pool.map(native.run, prepared)):
+        for t, (out, _) in zip(tasks, pool.map(task, tasks)):
             for i, m in zip(t, native.rows(out)):
                 rows[i] = {"status": "ok", "error": "", "metrics": m}
             if progress:
