@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Generate the bundled example clips and their ground truth.
 
-Three clips, each a ``clip.json`` plus a ``ground_truth.json`` the tests measure reconstruction
+Four clips, each a ``clip.json`` plus a ``ground_truth.json`` the tests measure reconstruction
 against:
 
 * ``case_study``: the seed paper's case study re-created on a real street. The ego drives north-west
@@ -10,6 +10,8 @@ against:
   no collision as recorded.
 * ``multi_scooter``: the same street with three scooters (two crossing, 3.0 s and 1.4 s ahead of the
   ego, one oncoming and occluded for a while) and a pedestrian track that vei skips.
+* ``stop_and_go``: the case study's street; the scooter slows down, stops 4 m short of the ego's lane
+  for 3 s, then sets off from standstill and crosses about 2 s ahead of the ego.
 * ``no_map``: an S-curved road with no map (vei fits a road to the ego track); annotations use the
   ``y_axis: "left"`` convention.
 
@@ -144,6 +146,38 @@ class Mover:
 
     def speed(self, t):
         return self.v0 + self.dv * np.sin(2 * np.pi * np.asarray(t, float) / self.period)
+
+    def state(self, t):
+        x, y, yaw = self.path.at(self.s(t))
+        return x, y, yaw, self.speed(t)
+
+    def time_at(self, s_target: float) -> float:
+        t = np.linspace(-60, 120, 180001)
+        return float(np.interp(s_target, self.s(t), t))
+
+
+@dataclass
+class ProfileMover:
+    """An entity moving along a path with a piecewise-linear speed profile: speed ``knots_v`` at
+    times ``knots_t`` (held before the first and after the last), s(t) its exact integral."""
+
+    path: DensePath
+    s0: float
+    knots_t: tuple[float, ...]
+    knots_v: tuple[float, ...]
+
+    def speed(self, t):
+        return np.interp(np.asarray(t, float), self.knots_t, self.knots_v)
+
+    def s(self, t):
+        t = np.asarray(t, float)
+        kt, kv = np.asarray(self.knots_t, float), np.asarray(self.knots_v, float)
+        seg = np.concatenate([[0.0], np.cumsum(0.5 * (kv[1:] + kv[:-1]) * np.diff(kt))])
+        tc = np.clip(t, kt[0], kt[-1])
+        i = np.clip(np.searchsorted(kt, tc, side="right") - 1, 0, kt.size - 2)
+        v_at = self.speed(tc)
+        inside = seg[i] + 0.5 * (kv[i] + v_at) * (tc - kt[i])
+        return self.s0 + inside + kv[0] * np.minimum(t - kt[0], 0.0) + kv[-1] * np.maximum(t - kt[-1], 0.0)
 
     def state(self, t):
         x, y, yaw = self.path.at(self.s(t))
@@ -376,7 +410,29 @@ def helsinki_specs() -> list[ClipSpec]:
         osm="../maps/helsinki_center.osm",
         seed=11,
     )
-    return [case, multi]
+    # stop_and_go: the scooter rides at 4.6 m/s, slows down, stops 4 m short of the ego's lane for 3 s
+    # (the ego still 40 m away, in view), then sets off from standstill and crosses 2 s ahead of the ego
+    ego3 = ego_mover()
+    cp = crossing_point(ego3.path, scooter_sw)
+    stop_t, stop_s = 4.0, s_of_point(scooter_sw, cp) - 4.0
+    knots_t = (0.0, 1.0, 3.0, stop_t, stop_t + 3.0, stop_t + 5.5, 25.0)
+    knots_v = (4.6, 4.6, 1.5, 0.0, 0.0, 3.5, 3.5)
+    rider = ProfileMover(scooter_sw, 0.0, knots_t, knots_v)
+    rider.s0 = stop_s - float(rider.s(stop_t) - rider.s0)
+    stop = ClipSpec(
+        name="stop_and_go",
+        clip_id="stop-and-go",
+        frame=f,
+        ego=ego3,
+        actors=[Actor("scooter_1", "e-scooter", rider)],
+        duration_s=25.0,
+        y_axis="right",
+        time_offset_s=0.2,
+        first_frame_s=0.45,
+        osm="../maps/helsinki_center.osm",
+        seed=19,
+    )
+    return [case, multi, stop]
 
 
 def no_map_spec() -> ClipSpec:

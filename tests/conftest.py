@@ -13,7 +13,7 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLES = ROOT / "examples"
-EXAMPLE_NAMES = ("case_study", "multi_scooter", "no_map")
+EXAMPLE_NAMES = ("case_study", "multi_scooter", "no_map", "stop_and_go")
 
 
 def _qc_venv() -> Path | None:

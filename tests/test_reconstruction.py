@@ -49,12 +49,55 @@ def test_noise_free_keyframes_within_5cm_and_3deg(noise_free_dir, name):
     assert ego <= 0.05, f"ego position error {ego:.4f} m"
 
 
+#: Largest keyframe error (m, deg) and ego error (m) measured on the bundled (noisy) examples, with
+#: 10-25 % headroom: a regression in smoothing or frame handling breaks them. stop_and_go: the 10° is
+#: where the scooter sets off again, 0.46 m of GPS error seen from the car over a 0.2 m/s departure.
+NOISY_BOUNDS = {
+    "case_study": (1.25, 4.5, 1.3),
+    "multi_scooter": (1.25, 4.5, 1.3),
+    "no_map": (1.25, 4.5, 1.3),
+    "stop_and_go": (0.6, 12.0, 0.9),
+}
+
+
 @pytest.mark.parametrize("name", EXAMPLE_NAMES)
 def test_noisy_examples_stay_within_measured_bounds(name):
-    # Figures measured on the bundled (noisy) examples: keyframes ≤ 0.99 m / 4.1°, ego ≤ 1.06 m.
-    # The bounds leave 10-25 % headroom; a regression in smoothing or frame handling breaks them.
     pos, hdg, ego = keyframe_errors(EXAMPLES / name / "clip.json", EXAMPLES / name / "ground_truth.json")
-    assert pos <= 1.25 and hdg <= 4.5 and ego <= 1.3, (pos, hdg, ego)
+    max_pos, max_hdg, max_ego = NOISY_BOUNDS[name]
+    assert pos <= max_pos and hdg <= max_hdg and ego <= max_ego, (pos, hdg, ego)
+
+
+def _progress(traj, along: np.ndarray) -> np.ndarray:
+    return traj.x * along[0] + traj.y * along[1]
+
+
+@pytest.mark.parametrize("noise", ["noise-free", "noisy"])
+def test_a_scooter_that_stops_stays_stopped_and_never_runs_backwards(noise_free_dir, noise):
+    """stop_and_go: the scooter stops for 3 s and sets off again. Reconstructed, it never moves against
+    its direction of travel, stands still (within 1 mm, noise-free) between the keyframes where it stood,
+    and faces its way while standing (a spline of position over time overshoots and turns it round)."""
+    root = noise_free_dir if noise == "noise-free" else EXAMPLES
+    clip = root / "stop_and_go" / "clip.json"
+    truth = json.loads((root / "stop_and_go" / "ground_truth.json").read_text())
+    rec = reconstruct(load_clip(clip))
+    track = rec.scooters["scooter_1"]
+    traj = track.trajectory
+    kf = truth["keyframes"]["scooter_1"]
+    gx, gy = rec.projection.forward([k["lat"] for k in kf], [k["lon"] for k in kf])
+    along = np.array([gx[-1] - gx[0], gy[-1] - gy[0]]) / np.hypot(gx[-1] - gx[0], gy[-1] - gy[0])
+    assert np.diff(_progress(traj, along)).min() >= -1e-9
+    # its true standstill: keyframes with speed 0; in between, the reconstruction stands too
+    standing = [k for k, f in enumerate(kf) if f["speed_mps"] == 0.0]
+    assert len(standing) >= 2
+    t0, t1 = track.key_t[standing[0]], track.key_t[standing[-1]]
+    inside = (traj.t >= t0) & (traj.t <= t1)
+    moved = np.hypot(np.ptp(traj.x[inside]), np.ptp(traj.y[inside]))
+    heading = np.degrees(np.abs(wrap_pi(traj.yaw - np.arctan2(along[1], along[0]))))
+    if noise == "noise-free":
+        assert moved <= 1e-3 and np.all(traj.speed[inside] <= 1e-9)
+        assert heading.max() <= 5.0
+    else:  # the GPS-borne drift of a standing scooter is not taken for motion
+        assert moved <= 1e-3 and heading[inside].max() <= 12.0
 
 
 def test_heading_conversion_matches_geodesic_azimuth():

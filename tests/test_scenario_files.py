@@ -122,8 +122,15 @@ def test_trajectories_are_polylines_with_scenario_times(compiled):
         assert np.all(np.diff(t) > 0)
         assert np.allclose(t, e.trajectory.t, atol=5e-4)
         assert np.hypot(x - e.trajectory.x, y - e.trajectory.y).max() < 1e-3
-    ego_t, _, _ = _polyline(root, "Ego")
-    assert ego_t[0] == 0.0 and ego_t[-1] == pytest.approx(25.0)
+    ego_t, ex, ey = _polyline(root, "Ego")
+    assert ego_t[0] == 0.0 and ego_t[-2] == pytest.approx(25.0)
+    # past its recording the ego's path runs straight on, far enough for the whole run at cruise speed
+    h = result.model.entities[0].trajectory.yaw[-2]
+    across = np.cos(h) * (ey[-1] - ey[-2]) - np.sin(h) * (ex[-1] - ex[-2])
+    assert across == pytest.approx(0.0, abs=1e-3)
+    cruise = float(result.model.parameter("EgoCruiseSpeed").default)
+    length = np.hypot(np.diff(ex), np.diff(ey)).sum()
+    assert length >= cruise * 25.0 + 9.9
 
 
 def test_threat_timing_offset_is_minus_the_timeshift_parameter(compiled):

@@ -17,10 +17,12 @@ from vei_scenario.geometry.angles import slerp_yaw, unwrap_continuous
 from vei_scenario.geometry.frames import ego_to_world
 from vei_scenario.geometry.projection import LocalProjection
 from vei_scenario.geometry.resample import (
+    SAME_POINT_M,
+    SAME_POINT_PER_SCATTER,
     Trajectory,
     output_grid,
     position_spline,
-    resample_keyframes,
+    resample_path,
     smoothing_spline,
 )
 
@@ -95,6 +97,10 @@ def reconstruct(clip: Clip, rate_hz: float = 10.0, smooth: bool = True) -> Recon
         fix_yaw = smoothing_spline(fix_t, fix_yaw)(fix_t)
 
     sx, sy = position_spline(fix_t, fix_x, fix_y, smooth)
+    # how far the GPS fixes scatter about the ego's track: annotated positions inherit it, so a road user
+    # that stands still seems to drift by about as much (resample_path must not take that for motion)
+    gps_scatter = float(np.sqrt(np.mean((sx(fix_t) - fix_x) ** 2 + (sy(fix_t) - fix_y) ** 2)))
+    standing_m = max(SAME_POINT_M, SAME_POINT_PER_SCATTER * gps_scatter)
     grid = output_grid(0.0, float(fix_t[-1]), rate_hz)
     ego_traj = Trajectory(
         grid,
@@ -120,7 +126,7 @@ def reconstruct(clip: Clip, rate_hz: float = 10.0, smooth: bool = True) -> Recon
         # Step 6: ego frame → world, with the annotation's lateral axis convention.
         wx, wy = ego_to_world([o.x_m for o in obs], [o.y_m for o in obs], ann.y_axis, ex, ey, eyaw)
         # Step 7: cubic spline positions and SLERP headings at the output rate.
-        traj, kyaw = resample_keyframes(kt, wx, wy, rate_hz, smooth=smooth)
+        traj, kyaw = resample_path(kt, wx, wy, rate_hz, smooth=smooth, standing_m=standing_m)
         dt = np.diff(kt)
         gaps = tuple((float(kt[i]), float(kt[i + 1])) for i in np.nonzero(dt > GAP_REPORT_S)[0])
         scooters[tid] = ScooterTrack(tid, obs[0].category, kt, wx, wy, kyaw, traj, gaps)

@@ -1,11 +1,18 @@
-"""Sparse keyframes → trajectories at the output rate: cubic-spline positions, SLERP headings."""
+"""Sparse keyframes → trajectories at the output rate: cubic-spline positions, SLERP headings.
+
+Annotated road users are resampled along their path (:func:`resample_path`): a cubic spline through the
+keyframes where they moved, travelled at a monotone (shape-preserving, PCHIP) pace. A road user that
+stops stays where it stopped, facing where it was going, and never runs backwards between keyframes, as
+a cubic spline of position over time does around a stop.
+"""
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.interpolate import CubicSpline, make_smoothing_spline
+from scipy.interpolate import CubicSpline, PchipInterpolator, make_smoothing_spline
 
 from vei_scenario.geometry.angles import slerp_yaw
 
@@ -88,6 +95,80 @@ def position_spline(t: np.ndarray, x: np.ndarray, y: np.ndarray, smooth: bool) -
         lam = gcv_penalty(t, x)
         return smoothing_spline(t, x, lam), smoothing_spline(t, y, lam)
     return CubicSpline(t, x), CubicSpline(t, y)
+
+
+#: A keyframe this close to the last point the road user was seen moving from is taken as standing
+#: there (noise-free standstill moves millimetres) ...
+SAME_POINT_M = 0.05
+#: ... or this many times the scatter of the positions it is computed from (the ego's GPS), whichever
+#: is larger: a road user seen from a GPS-positioned car seems to drift while it stands.
+SAME_POINT_PER_SCATTER = 3.0
+#: Below this speed along its path a road user's heading is taken from where it goes, not its motion.
+SLOW_MPS = 0.5
+
+
+def standing_keyframes(x_key: np.ndarray, y_key: np.ndarray, tolerance_m: float) -> np.ndarray:
+    """Index of the keyframe each keyframe stands at: itself where the road user moved on from the
+    last such keyframe by more than ``tolerance_m``, else that keyframe."""
+    at = np.zeros(x_key.size, int)
+    for k in range(1, x_key.size):
+        j = at[k - 1]
+        at[k] = k if math.hypot(x_key[k] - x_key[j], y_key[k] - y_key[j]) > tolerance_m else j
+    return at
+
+
+def resample_path(
+    t_key: np.ndarray,
+    x_key: np.ndarray,
+    y_key: np.ndarray,
+    rate_hz: float,
+    smooth: bool = False,
+    standing_m: float = SAME_POINT_M,
+) -> tuple[Trajectory, np.ndarray]:
+    """Resample an annotated road user's keyframes at ``rate_hz``; returns the trajectory and the
+    headings at the keyframes.
+
+    A road user that keeps moving: cubic splines of position over time (smoothing splines with the
+    GCV penalty with ``smooth`` and five or more keyframes), headings SLERPed between the spline's
+    directions of motion at the keyframes. One that stops (keyframes within ``standing_m`` of where
+    it stood): the path is the spline through the keyframes where it moved
+    on, over their times u without the standstills; it runs along it at u(t), the monotone PCHIP
+    interpolant of u at the keyframes, so it stays
+    where it stopped, facing where it was going, and never runs backwards (a spline of position over
+    time through a stop overshoots and returns)."""
+    grid = output_grid(float(t_key[0]), float(t_key[-1]), rate_hz)
+    at = standing_keyframes(x_key, y_key, standing_m)
+    node = np.unique(at)
+    if node.size == t_key.size:  # it never stands still
+        return resample_keyframes(t_key, x_key, y_key, rate_hz, smooth=smooth)
+    if node.size == 1:  # it never moves: where it was seen first
+        m = grid.size
+        still = Trajectory(grid, np.full(m, x_key[0]), np.full(m, y_key[0]), np.zeros(m), np.zeros(m))
+        return still, np.zeros(t_key.size)
+    # the path's parameter: time with the standstills taken out (a stop lasts one keyframe interval),
+    # so the spline sees a road user that slows down and sets off again, not one that hovers
+    after = np.minimum(node + 1, t_key.size - 1)
+    tau = np.concatenate([[t_key[node[0]]], t_key[node[0]] + np.cumsum(t_key[after[:-1]] - t_key[node[:-1]])])
+    # shape-preserving (PCHIP) through the (smoothed) points it moved on from: where the points progress
+    # one way, so does the path between them — no overshoot past a stop and back
+    sx, sy = position_spline(tau, x_key[node], y_key[node], smooth)
+    cx, cy = PchipInterpolator(tau, sx(tau)), PchipInterpolator(tau, sy(tau))
+    u_key = tau[np.searchsorted(node, at)]
+    u_of_t = PchipInterpolator(t_key, u_key)
+    u, du = u_of_t(grid), np.maximum(u_of_t(grid, 1), 0.0)
+    vx, vy = cx(u, 1), cy(u, 1)
+    # heading at a keyframe: the path's direction there, but around a standstill (slow, or against the
+    # way it goes on) the direction from the point it came from to the point it goes on to
+    kvx, kvy = cx(u_key, 1), cy(u_key, 1)
+    yaw_key = np.arctan2(kvy, kvx)
+    slot = np.searchsorted(node, at)
+    prev_n, next_n = node[np.maximum(slot - 1, 0)], node[np.minimum(slot + 1, node.size - 1)]
+    chord_x, chord_y = x_key[next_n] - x_key[prev_n], y_key[next_n] - y_key[prev_n]
+    slow = (np.hypot(kvx, kvy) < SLOW_MPS) | (kvx * chord_x + kvy * chord_y <= 0.0) | (at != np.arange(at.size))
+    yaw_key = np.where(slow, np.arctan2(chord_y, chord_x), yaw_key)
+    yaw = slerp_yaw(t_key, yaw_key, grid)
+    traj = Trajectory(grid, np.asarray(cx(u)), np.asarray(cy(u)), yaw, np.hypot(vx, vy) * du)
+    return traj, yaw_key
 
 
 def resample_keyframes(

@@ -69,12 +69,16 @@ class ScenarioModel:
 def build_model(rec: Reconstruction, threat: str | None = None, name: str | None = None) -> ScenarioModel:
     """Entities from the reconstruction, conflicts for every scooter, the threat and the parameters."""
     clip = rec.clip
-    ego = EntitySpec("Ego", "car", clip.ego.length_m, clip.ego.width_m, EGO_HEIGHT_M, rec.ego)
+    cruise = float(np.median(clip.ego.speed_mps))
+    # the ego drives its path at the cruise speed: where that takes it past the end of its recording it
+    # runs straight on (as esmini's default does on), not stopping dead where the path ends
+    short = cruise * rec.duration_s - float(rec.ego.arc_length()[-1])
+    ego_path = with_run_out(rec.ego, max(short, 0.0) + EGO_RUN_OUT_MARGIN_M)
+    ego = EntitySpec("Ego", "car", clip.ego.length_m, clip.ego.width_m, EGO_HEIGHT_M, ego_path)
     scooters = tuple(
         EntitySpec(tid, "bicycle", *SCOOTER_BOX_M, track.trajectory) for tid, track in sorted(rec.scooters.items())
     )
     ego_box = (ego.length_m, ego.width_m)
-    cruise = float(np.median(clip.ego.speed_mps))
     driven = ego_at_constant_speed(rec.ego, cruise)
     conflicts = {
         s.name: analyse_conflict(s.name, driven, s.trajectory, ego_box, (s.length_m, s.width_m)) for s in scooters
@@ -98,6 +102,22 @@ def build_model(rec: Reconstruction, threat: str | None = None, name: str | None
         parameters=params,
         sfm=SfmParameters(v0_mps=round(threat_speed, 2)),
         duration_s=rec.duration_s,
+    )
+
+
+#: How far the ego's path runs on beyond what driving it at the cruise speed needs (m).
+EGO_RUN_OUT_MARGIN_M = 10.0
+
+
+def with_run_out(traj: Trajectory, metres: float) -> Trajectory:
+    """``traj`` with one more sample ``metres`` straight ahead of its last, reached at its last speed."""
+    h, v = float(traj.yaw[-1]), max(float(traj.speed[-1]), 0.1)
+    return Trajectory(
+        np.append(traj.t, traj.t[-1] + metres / v),
+        np.append(traj.x, traj.x[-1] + metres * np.cos(h)),
+        np.append(traj.y, traj.y[-1] + metres * np.sin(h)),
+        np.append(traj.yaw, h),
+        np.append(traj.speed, traj.speed[-1]),
     )
 
 
