@@ -67,6 +67,57 @@ def test_every_fmu_passes_fmpy_validate(fmu_sets):
         assert out.returncode == 0 and "No problems found" in out.stdout, (p, out.stdout, out.stderr)
 
 
+def test_every_fmu_simulates_with_its_own_default_start_values(fmu_sets):
+    """A host that sets nothing (fmpy's simulate_fmu, the Reference FMUs' fmusim) must be able to run
+    each FMU: the default track of the scooter FMU runs 1 m/s along x, its times increasing."""
+    from fmpy import simulate_fmu
+
+    for flavour, fmus in fmu_sets.items():
+        for model, path in fmus.items():
+            if flavour.startswith("python"):
+                # a pythonfmu FMU embeds an interpreter: in a Python host it is run out of process, which
+                # leaves without interpreter teardown (where pythonfmu crashes)
+                code = (
+                    "import os, sys, numpy as np; from fmpy import simulate_fmu\n"
+                    "r = simulate_fmu(sys.argv[1], stop_time=2.0, step_size=0.01, output_interval=0.01)\n"
+                    "print(r['time'][-1], all(np.all(np.isfinite(r[n])) for n in r.dtype.names "
+                    "if r[n].dtype.kind == 'f'), flush=True)\n"
+                    "os._exit(0)"
+                )
+                out = subprocess.run([sys.executable, "-c", code, str(path)], capture_output=True, text=True)
+                assert out.returncode == 0 and out.stdout.split() == ["2.0", "True"], (model, out.stderr[-500:])
+                continue
+            res = simulate_fmu(str(path), stop_time=2.0, step_size=0.01, output_interval=0.01)
+            assert res["time"][-1] == pytest.approx(2.0), (flavour, model)
+            assert all(np.all(np.isfinite(res[n])) for n in res.dtype.names if res[n].dtype.kind == "f")
+            if model == "sfm":  # a replay of the default track: x = t
+                res = simulate_fmu(
+                    str(path), stop_time=2.0, step_size=0.01, output_interval=0.01, start_values={"rider_type": "replay"}
+                )
+                k = int(np.argmin(np.abs(res["time"] - 1.5)))
+                assert res["x"][k] == pytest.approx(1.5, abs=1e-9) and res["speed"][k] == pytest.approx(1.0)
+
+
+def test_a_per_scenario_build_reproduces_the_scenario_alone(case_study, conflict_shift, tmp_path):
+    """`vei fmu build --scenario`: the scenario's thousands of values are the start values, so the
+    scooter FMU run by a host that sets nothing replays the scooter exactly as `vei run` does."""
+    from fmpy import read_model_description, simulate_fmu
+
+    values = {"TimeShift": conflict_shift, "RiderType": "replay", "CapEnabled": "false"}
+    fmus = build_fmus(["sfm", "ego"], tmp_path, scenario=case_study, values=values)
+    md = read_model_description(str(fmus["sfm"]))
+    assert md.defaultExperiment.stopTime == "25.01"
+    run = run_scenario(case_study, values)
+    res = simulate_fmu(str(fmus["sfm"]), step_size=0.01, output_interval=0.01)
+    trace = run.traces[run.threat]
+    t = np.round(res["time"], 6)
+    k = np.searchsorted(np.round(trace.t, 6), t)
+    assert np.array_equal(np.round(trace.t[k], 6), t) and t[-1] == pytest.approx(25.01)
+    assert np.max(np.hypot(res["x"] - trace.x[k], res["y"] - trace.y[k])) <= 1e-6
+    with pytest.raises(Exception, match="native backend"):
+        build_fmus(["sfm"], tmp_path / "py", backend="python", scenario=case_study)
+
+
 def test_every_fmu_passes_fmutool_check(fmu_sets, tmp_path):
     fmutool = Path(sys.executable).parent / "fmutool"
     for kind, fmus in fmu_sets.items():

@@ -105,3 +105,44 @@ def test_sweep_names_the_files_it_wrote(tmp_path, capsys, monkeypatch):
     cli.main(["sweep", "s.xosc", "--vary", "TimeShift=0:1:1", "-o", f"{tmp_path}/catalog/"])
     out = capsys.readouterr().out
     assert f"{tmp_path}/catalog/catalog.csv" in out and "//" not in out
+
+
+def test_run_scenario_takes_python_booleans_and_numbers(compiled):
+    from vei_scenario.interpreter import run_scenario
+
+    xosc = compiled["case_study"].written[0]
+    typed = run_scenario(xosc, {"CapEnabled": True, "TimeShift": 1.5, "RiderType": "normal"})
+    texts = run_scenario(xosc, {"CapEnabled": "true", "TimeShift": "1.5", "RiderType": "normal"})
+    assert typed.parameters["CapEnabled"] == "true" and typed.parameters["TimeShift"] == "1.5"
+    assert np.array_equal(typed.traces["Ego"].x, texts.traces["Ego"].x)
+
+
+def test_readme_python_example_runs_as_written_without_the_xsds():
+    """The README's Python API block, in a fresh interpreter with no VEI_QC_VENV (a user's machine)."""
+    from conftest import ROOT
+
+    text = (ROOT / "README.md").read_text()
+    block = text.split("## Python API", 1)[1].split("```python\n", 1)[1].split("```", 1)[0]
+    env = {k: v for k, v in os.environ.items() if k not in ("VEI_QC_VENV", "VEI_ASAM_SCHEMAS")}
+    proc = subprocess.run([sys.executable, "-c", block], cwd=ROOT, env=env, capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stderr[-2000:]
+    assert "scooter_1" in proc.stdout
+
+
+def test_ci_workflow_example_installs_from_the_checkout_and_annotates_junit():
+    """No package index has vei-scenario: the example workflow must install it from the checkout, run the
+    suite that tests/test_sweep_risk_check.py shows passing, and turn its JUnit file into annotations."""
+    import yaml
+
+    from conftest import ROOT
+
+    wf = yaml.safe_load((ROOT / "examples" / "ci" / "vei-check.yml").read_text())
+    steps = next(iter(wf["jobs"].values()))["steps"]
+    runs = "\n".join(s.get("run", "") for s in steps)
+    assert "pip install vei-scenario" not in runs and ".venv/bin/pip install ." in runs
+    check = next(s["run"] for s in steps if "vei check" in s.get("run", ""))
+    suite = check.split("vei check", 1)[1].split()[0]
+    junit = check.split("--junit", 1)[1].split()[0]
+    assert (ROOT / suite).is_file()
+    report = next(s for s in steps if "junit-report" in s.get("uses", ""))
+    assert report["with"]["report_paths"] == junit and report.get("if") == "always()"

@@ -235,3 +235,22 @@ def test_sweep_bad_input_is_exit_2_with_no_output(tmp_path, capsys, case_xosc):
         assert not (tmp_path / "o").exists()
     err = capsys.readouterr().err
     assert "unknown parameter 'Nope'" in err and "empty range" in err and "nothing to vary" in err
+
+
+def test_without_schemas_check_and_validate_say_what_they_skipped(tmp_path, capsys, case_xosc, monkeypatch):
+    """No ASAM XSDs on the machine: `vei check` still runs but says (and writes into JUnit) that it did
+    not validate against them; `vei validate --format json` answers in JSON."""
+    from vei_scenario.openscenario import asam_schemas
+
+    monkeypatch.setattr(asam_schemas, "schema_dir", lambda package: None)
+    suite = tmp_path / "suite.toml"
+    suite.write_text(f'[[case]]\nname = "c"\nscenario = "{case_xosc}"\nexpect = ["collision == false"]\n')
+    junit = tmp_path / "junit.xml"
+    main(["check", str(suite), "--junit", str(junit)])
+    out = capsys.readouterr().out
+    assert "warning: XSD validation skipped" in out
+    err = etree.parse(str(junit)).getroot().find("testsuite/testcase/system-err")
+    assert err is not None and "XSD validation skipped" in err.text
+    code = main(["validate", str(case_xosc), "--format", "json"])
+    doc = json.loads(capsys.readouterr().out)
+    assert code == 2 and doc["valid"] is False and "schema" in doc["error"]

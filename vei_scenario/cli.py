@@ -8,6 +8,7 @@ exit with code 2; validation findings exit with 1.
 from __future__ import annotations
 
 import argparse
+import json
 import os
 import sys
 from pathlib import Path
@@ -46,8 +47,15 @@ def _cmd_compile(args: argparse.Namespace) -> int:
 def _cmd_validate(args: argparse.Namespace) -> int:
     from vei_scenario.openscenario.validation import format_problems, validate_files
 
-    problems = validate_files([Path(f) for f in args.files])
-    print(format_problems(problems, args.format, [Path(f) for f in args.files]))
+    files = [Path(f) for f in args.files]
+    try:
+        problems = validate_files(files)
+    except VeiInputError as exc:
+        if args.format != "json":
+            raise
+        print(json.dumps({"valid": False, "files": [str(f) for f in files], "problems": [], "error": str(exc)}))
+        return EXIT_USER_ERROR
+    print(format_problems(problems, args.format, files))
     return 1 if problems else 0
 
 
@@ -77,7 +85,10 @@ def _models(names: list[str]) -> list[str]:
 def _cmd_fmu_build(args: argparse.Namespace) -> int:
     from vei_scenario.fmu import build_fmus
 
-    for path in build_fmus(_models(args.models), args.output, args.backend, args.fmi).values():
+    from vei_scenario.runner import parse_param_overrides
+
+    values = parse_param_overrides(args.param) if args.scenario else None
+    for path in build_fmus(_models(args.models), args.output, args.backend, args.fmi, args.scenario, values).values():
         print(f"wrote {path}")
     return 0
 
@@ -188,7 +199,7 @@ def _cmd_check(args: argparse.Namespace) -> int:
     for r in results:
         state = "ERROR" if r.errors else "FAIL" if r.failures else "ok"
         print(f"{state:<6}{r.case.name} ({r.seconds:.2f} s)")
-        for line in r.errors + r.failures:
+        for line in r.errors + r.failures + [f"warning: {w}" for w in r.warnings]:
             print(f"      {line}")
     bad = sum(1 for r in results if r.errors or r.failures)
     print(f"{len(results) - bad} passed, {bad} failed")
@@ -299,6 +310,14 @@ def build_parser() -> argparse.ArgumentParser:
     fb.add_argument("-o", "--output", default="fmus/dist", help="directory for the .fmu files (default fmus/dist)")
     fb.add_argument("--backend", choices=("native", "python"), default="native", help=BACKEND_HELP)
     fb.add_argument("--fmi", type=int, choices=(2, 3), default=2, help="FMI version (default 2)")
+    fb.add_argument(
+        "--scenario",
+        metavar="XOSC",
+        help="vei-compiled scenario whose values become the FMUs' start values (and stop time)",
+    )
+    fb.add_argument(
+        "--param", action="append", default=[], metavar="NAME=VALUE", help="override a scenario parameter"
+    )
     fb.set_defaults(func=_cmd_fmu_build)
     fs = fsub.add_parser("system", help="the scenario's closed loop (ego + scooter + planner) as an SSP 1.0 package")
     fs.add_argument("scenario", help="vei-compiled OpenSCENARIO file (.xosc)")

@@ -21,8 +21,20 @@ BACKENDS = ("native", "python")
 ENGINES = ("fmpy", "libcosim")
 
 
-def build_fmus(models: list[str], out_dir: str | Path, backend: str = "native", fmi: int = 2) -> dict[str, Path]:
-    """Build the FMUs of ``models`` (sfm, cap, ego) into ``out_dir``; returns model -> .fmu path."""
+def build_fmus(
+    models: list[str],
+    out_dir: str | Path,
+    backend: str = "native",
+    fmi: int = 2,
+    scenario: str | Path | None = None,
+    values: dict[str, str] | None = None,
+) -> dict[str, Path]:
+    """Build the FMUs of ``models`` (sfm, cap, ego) into ``out_dir``; returns model -> .fmu path.
+
+    With ``scenario`` (a vei-compiled .xosc, parameter overrides ``values``) every parameter starts at
+    the scenario's value (its track, path, route, boxes, planner and rider settings: thousands of
+    scalars nobody sets by hand) and the default experiment runs as long as the scenario, so the FMUs
+    reproduce it alone or in any co-simulation host without a parameter file."""
     if backend not in BACKENDS:
         raise VeiInputError(None, "--backend", f"{backend!r} is not one of {', '.join(BACKENDS)}")
     if fmi not in (2, 3):
@@ -32,12 +44,20 @@ def build_fmus(models: list[str], out_dir: str | Path, backend: str = "native", 
     unknown = [m for m in models if m not in MODELS]
     if unknown:
         raise VeiInputError(None, "models", f"unknown model {unknown[0]!r} (choose from {', '.join(MODELS)}, all)")
+    specs = {m: SPECS[m] for m in models}
+    if scenario is not None:
+        if backend != "native":
+            raise VeiInputError(None, "--scenario", "per-scenario FMUs are built with the native backend")
+        from vei_scenario.fmu.system import closed_loop
+
+        loop = closed_loop(scenario, values)
+        specs = {m: SPECS[m].with_starts(loop.parameters[m], loop.steps * loop.dt) for m in models}
     out: dict[str, Path] = {}
     for m in models:
         if backend == "native":
             from vei_scenario.fmu.native import build_native
 
-            out[m] = build_native(SPECS[m], Path(out_dir), fmi)
+            out[m] = build_native(specs[m], Path(out_dir), fmi)
         else:
             from vei_scenario.fmu.python_backend import build_python
 

@@ -81,7 +81,10 @@ def fmi2(
     _units(spec, root, False)
     cats = etree.SubElement(root, "LogCategories")
     etree.SubElement(cats, "Category", name="logStatusError", description="errors of the FMU")
-    etree.SubElement(root, "DefaultExperiment", startTime="0.0", stepSize=repr(step_size))
+    experiment = {"startTime": "0.0", "stepSize": repr(step_size)}
+    if spec.stop_time is not None:  # a per-scenario build runs as long as the scenario
+        experiment["stopTime"] = repr(float(spec.stop_time))
+    etree.SubElement(root, "DefaultExperiment", experiment)
     mv = etree.SubElement(root, "ModelVariables")
     outputs: list[int] = []
     for index, s in enumerate(spec.scalars(), start=1):
@@ -137,7 +140,10 @@ def fmi3(spec: ModelSpec, token: str, step_size: float = 0.01) -> bytes:
     _units(spec, root, True)
     cats = etree.SubElement(root, "LogCategories")
     etree.SubElement(cats, "Category", name="logStatusError", description="errors of the FMU")
-    etree.SubElement(root, "DefaultExperiment", startTime="0.0", stepSize=repr(step_size))
+    experiment = {"startTime": "0.0", "stepSize": repr(step_size)}
+    if spec.stop_time is not None:  # a per-scenario build runs as long as the scenario
+        experiment["stopTime"] = repr(float(spec.stop_time))
+    etree.SubElement(root, "DefaultExperiment", experiment)
     mv = etree.SubElement(root, "ModelVariables")
     etree.SubElement(
         mv,

@@ -76,8 +76,9 @@ def variables_header(spec: ModelSpec, guid: str) -> str:
         for v in spec.variables:
             if v.type == t:
                 lines.append(f"#define VR_{v.c_name} {spec.first_vr(v)}")
-                if v.size == 0 and v.causality != "output":
-                    starts.append(_start_c(arr, f"VR_{v.c_name}", v.type, v.start))
+        for sc in scalars:  # (the instance is zeroed first: array elements that start at 0 need no line)
+            if sc.var.causality != "output" and (sc.var.size == 0 or sc.start not in (0, 0.0, False, "")):
+                starts.append(_start_c(arr, str(sc.vr), sc.var.type, sc.start))
     names = ["static inline const char *real_name(unsigned vr) {", "    static char buf[64];"]
     for v in spec.variables:
         if v.type != "Real":

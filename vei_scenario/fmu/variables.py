@@ -8,7 +8,7 @@ Defaults come from the model parameter dataclasses, so an FMU built without a sc
 
 from __future__ import annotations
 
-from dataclasses import dataclass, fields
+from dataclasses import dataclass, fields, replace
 from functools import cached_property
 
 from vei_scenario.models.cap import CapParameters
@@ -28,7 +28,7 @@ class Variable:
     name: str
     type: str  # Real | Integer | Boolean | String
     causality: str  # parameter | input | output
-    start: float | int | bool | str | None
+    start: float | int | bool | str | tuple | None  # an array: one value for all, or a tuple per element
     unit: str = ""
     description: str = ""
     size: int = 0  # > 0: an array of this many scalars name[1..size]
@@ -61,6 +61,16 @@ class ModelSpec:
     title: str
     description: str
     variables: tuple[Variable, ...]
+    #: Start values that replace the table's, by scalar name (a per-scenario build, see :meth:`with_starts`).
+    starts: tuple[tuple[str, float | int | bool | str], ...] = ()
+    stop_time: float | None = None  # DefaultExperiment stopTime of a per-scenario build
+
+    def with_starts(self, values: dict[str, float | int | bool | str], stop_time: float | None = None) -> ModelSpec:
+        """This model with ``values`` (scalar name -> value, e.g. ``track_t[3]``) as start values."""
+        unknown = sorted(set(values) - {sc.name for sc in self.scalars()})
+        if unknown:
+            raise KeyError(f"{self.identifier} has no variable {unknown[0]!r}")
+        return replace(self, starts=tuple(sorted(values.items())), stop_time=stop_time)
 
     def scalars(self, type_: str | None = None) -> list[Scalar]:
         """Scalars in the order of the modelDescription (``type_`` None) or of one type; value
@@ -71,13 +81,15 @@ class ModelSpec:
     def _scalars(self) -> list[Scalar]:
         out: list[Scalar] = []
         counters: dict[str, int] = {}
+        given = dict(self.starts)
         for v in self.variables:
             n = v.size or 1
             for k in range(n):
                 vr = counters.get(v.type, 0)
                 counters[v.type] = vr + 1
                 name = f"{v.name}[{k + 1}]" if v.size else v.name
-                out.append(Scalar(v, name, vr, v.start))
+                start = v.start[k] if isinstance(v.start, tuple) else v.start
+                out.append(Scalar(v, name, vr, given.get(name, start)))
         return out
 
     def vr(self, name: str) -> int:
@@ -197,6 +209,8 @@ def _outputs_pose(what: str) -> list[Variable]:
     ]
 
 
+_COUNT = tuple(float(k) for k in range(MAX_PATH))  # 0, 1, 2, ...
+
 SFM = ModelSpec(
     "sfm",
     "vei_sfm",
@@ -212,8 +226,9 @@ SFM = ModelSpec(
         _START,
         Variable("time_shift_s", "Real", "parameter", 0.0, "s", "timing offset of the recorded track (TimeShift)"),
         Variable("track_n", "Integer", "parameter", 2, "", f"vertices used of the recorded track (2..{MAX_PATH})"),
-        Variable("track_t", "Real", "parameter", 0.0, "s", "recorded track: vertex times", MAX_PATH),
-        Variable("track_x", "Real", "parameter", 0.0, "m", "recorded track: vertex x", MAX_PATH),
+        # defaults: a track that runs 1 m/s along x, a vertex a second (times must increase)
+        Variable("track_t", "Real", "parameter", _COUNT, "s", "recorded track: vertex times", MAX_PATH),
+        Variable("track_x", "Real", "parameter", _COUNT, "m", "recorded track: vertex x", MAX_PATH),
         Variable("track_y", "Real", "parameter", 0.0, "m", "recorded track: vertex y", MAX_PATH),
         Variable("track_h", "Real", "parameter", 0.0, "rad", "recorded track: vertex headings", MAX_PATH),
         Variable("route_n", "Integer", "parameter", 1, "", f"waypoints used of the route (1..{MAX_ROUTE})"),

@@ -14,12 +14,13 @@ from vei_scenario.interpreter.engine import DEFAULT_MAX_TIME_S, RunResult, Simul
 
 def run_scenario(
     path: str | Path,
-    parameters: dict[str, str] | None = None,
+    parameters: dict[str, object] | None = None,
     dt: float = 0.01,
     max_time_s: float = DEFAULT_MAX_TIME_S,
     coupling: str = "sequential",
 ) -> RunResult:
-    """Load ``path``, apply parameter overrides, run at the fixed step ``dt`` (``coupling``: see
+    """Load ``path``, apply parameter overrides (strings as in the file, or Python booleans and
+    numbers), run at the fixed step ``dt`` (``coupling``: see
     :data:`~vei_scenario.interpreter.engine.COUPLINGS`)."""
     return Simulation(load_scenario(path, parameters), dt, max_time_s, coupling).run()
 

@@ -177,7 +177,17 @@ def _substitute(path: Path, el, scope: dict[str, str], types: dict[str, str], ca
             _substitute(path, child, scope, types, catalogs)
 
 
-def load_scenario(path: str | Path, overrides: dict[str, str] | None = None) -> ScenarioDocument:
+def parameter_text(value: object) -> str:
+    """A parameter value as OpenSCENARIO writes it: Python booleans as true/false, numbers by repr (so
+    ``run_scenario(p, {"CapEnabled": True, "TimeShift": 1.5})`` means what it says)."""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, (int, float)):
+        return repr(value)
+    return value if isinstance(value, str) else str(value)
+
+
+def load_scenario(path: str | Path, overrides: dict[str, object] | None = None) -> ScenarioDocument:
     path = Path(path)
     tree = parse_xml(path)
     if tree.docinfo.internalDTD is not None:
@@ -207,7 +217,8 @@ def load_scenario(path: str | Path, overrides: dict[str, str] | None = None) -> 
     top = root.find("ParameterDeclarations")
     if top is not None:
         _declare(path, top, scope, types)
-    for name, value in (overrides or {}).items():
+    overrides = {name: parameter_text(value) for name, value in (overrides or {}).items()}
+    for name, value in overrides.items():
         if name not in scope:
             known = ", ".join(sorted(scope)) or "none"
             raise VeiInputError(path, "--param", f"unknown parameter {name!r} (declared: {known})")
