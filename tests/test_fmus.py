@@ -91,9 +91,8 @@ def test_every_fmu_simulates_with_its_own_default_start_values(fmu_sets):
             assert res["time"][-1] == pytest.approx(2.0), (flavour, model)
             assert all(np.all(np.isfinite(res[n])) for n in res.dtype.names if res[n].dtype.kind == "f")
             if model == "sfm":  # a replay of the default track: x = t
-                res = simulate_fmu(
-                    str(path), stop_time=2.0, step_size=0.01, output_interval=0.01, start_values={"rider_type": "replay"}
-                )
+                replay = {"rider_type": "replay"}
+                res = simulate_fmu(str(path), stop_time=2.0, step_size=0.01, output_interval=0.01, start_values=replay)
                 k = int(np.argmin(np.abs(res["time"] - 1.5)))
                 assert res["x"][k] == pytest.approx(1.5, abs=1e-9) and res["speed"][k] == pytest.approx(1.0)
 

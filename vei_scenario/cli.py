@@ -84,7 +84,6 @@ def _models(names: list[str]) -> list[str]:
 
 def _cmd_fmu_build(args: argparse.Namespace) -> int:
     from vei_scenario.fmu import build_fmus
-
     from vei_scenario.runner import parse_param_overrides
 
     values = parse_param_overrides(args.param) if args.scenario else None
@@ -315,9 +314,7 @@ def build_parser() -> argparse.ArgumentParser:
         metavar="XOSC",
         help="vei-compiled scenario whose values become the FMUs' start values (and stop time)",
     )
-    fb.add_argument(
-        "--param", action="append", default=[], metavar="NAME=VALUE", help="override a scenario parameter"
-    )
+    fb.add_argument("--param", action="append", default=[], metavar="NAME=VALUE", help="override a scenario parameter")
     fb.set_defaults(func=_cmd_fmu_build)
     fs = fsub.add_parser("system", help="the scenario's closed loop (ego + scooter + planner) as an SSP 1.0 package")
     fs.add_argument("scenario", help="vei-compiled OpenSCENARIO file (.xosc)")
