@@ -100,14 +100,23 @@ def test_every_fmu_simulates_with_its_own_default_start_values(fmu_sets):
 def test_a_per_scenario_build_reproduces_the_scenario_alone(case_study, conflict_shift, tmp_path):
     """`vei fmu build --scenario`: the scenario's thousands of values are the start values, so the
     scooter FMU run by a host that sets nothing replays the scooter exactly as `vei run` does."""
-    from fmpy import read_model_description, simulate_fmu
-
     values = {"TimeShift": conflict_shift, "RiderType": "replay", "CapEnabled": "false"}
     fmus = build_fmus(["sfm", "ego"], tmp_path, scenario=case_study, values=values)
-    md = read_model_description(str(fmus["sfm"]))
-    assert md.defaultExperiment.stopTime == "25.01"
+    with zipfile.ZipFile(fmus["sfm"]) as zf:
+        assert (
+            '<DefaultExperiment startTime="0.0" stepSize="0.01" stopTime="25.01"/>'
+            in zf.read("modelDescription.xml").decode()
+        )
     run = run_scenario(case_study, values)
-    res = simulate_fmu(str(fmus["sfm"]), step_size=0.01, output_interval=0.01)
+    # simulated by a fresh process with nothing but fmpy and the FMU (a host that sets nothing)
+    code = (
+        "import sys, numpy as np; from fmpy import simulate_fmu\n"
+        "r = simulate_fmu(sys.argv[1], step_size=0.01, output_interval=0.01)\n"
+        "np.savez(sys.argv[2], time=r['time'], x=r['x'], y=r['y'])"
+    )
+    out = tmp_path / "sim.npz"
+    subprocess.run([sys.executable, "-c", code, str(fmus["sfm"]), str(out)], check=True)
+    res = np.load(out)
     trace = run.traces[run.threat]
     t = np.round(res["time"], 6)
     k = np.searchsorted(np.round(trace.t, 6), t)
@@ -459,10 +468,24 @@ def test_bad_parameters_are_refused_by_the_fmi3_and_python_fmus(fmu_sets, capfd)
     from fmpy.fmi2 import FMU2Slave
     from fmpy.fmi3 import FMU3Slave
 
-    for kind, status, reason in (
-        ("native-fmi3", "3 (error)", "mass_kg must be positive (got -1)"),
-        ("python-fmi2", "4 (fatal)", "mass_kg and tau_s must be positive"),
-    ):
+    # the pythonfmu FMU in a process of its own: its embedded interpreter corrupts the host's heap
+    code = (
+        "import os, sys; from fmpy import extract, read_model_description; from fmpy.fmi2 import FMU2Slave\n"
+        "md = read_model_description(sys.argv[1]); vr = {v.name: v.valueReference for v in md.modelVariables}\n"
+        "fmu = FMU2Slave(guid=md.guid, unzipDirectory=extract(sys.argv[1]), modelIdentifier='vei_sfm',"
+        " instanceName='bad')\n"
+        "fmu.instantiate(loggingOn=True); fmu.setupExperiment(); fmu.enterInitializationMode()\n"
+        "fmu.setReal([vr['mass_kg']], [-1.0])\n"
+        "try:\n    fmu.exitInitializationMode(); print('accepted')\n"
+        "except Exception as e:\n    print('refused:', e)\n"
+        "sys.stdout.flush(); os._exit(0)"
+    )
+    out = subprocess.run(
+        [sys.executable, "-c", code, str(fmu_sets["python-fmi2"]["sfm"])], capture_output=True, text=True
+    )
+    assert "refused:" in out.stdout and "4 (fatal)" in out.stdout, out.stdout + out.stderr
+    assert "mass_kg and tau_s must be positive" in out.stdout + out.stderr
+    for kind, status, reason in (("native-fmi3", "3 (error)", "mass_kg must be positive (got -1)"),):
         path = fmu_sets[kind]["sfm"]
         md = read_model_description(str(path))
         vr = {v.name: v.valueReference for v in md.modelVariables}

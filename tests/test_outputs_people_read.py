@@ -146,3 +146,34 @@ def test_ci_workflow_example_installs_from_the_checkout_and_annotates_junit():
     assert (ROOT / suite).is_file()
     report = next(s for s in steps if "junit-report" in s.get("uses", ""))
     assert report["with"]["report_paths"] == junit and report.get("if") == "always()"
+
+
+def _row(i: int, shift: float, **m) -> dict:
+    metrics = {"collision": False, "near_miss": False, "min_gap_m": 5.0, "min_ttc_s": None, "safety_index": 1.0}
+    metrics.update(m)
+    return {"variant": i, "parameters": {"TimeShift": repr(shift), "RiderType": "normal"}, "status": "ok",
+            "error": "", "metrics": metrics}  # fmt: skip
+
+
+def test_report_ranks_collisions_by_impact_speed_and_shows_what_s_hides():
+    import re
+
+    from vei_scenario.sweep.report_html import report_html
+
+    zero = {"min_gap_m": 0.0, "min_ttc_s": 0.0, "safety_index": 0.0, "collision": True}
+    rows = [
+        _row(0, -1.0, impact_speed_mps=2.0, **zero),
+        _row(1, -0.5, impact_speed_mps=8.0, **zero),
+        _row(2, 0.0, impact_speed_mps=5.0, **zero),
+        _row(3, 0.5, min_gap_m=0.15, min_ttc_s=2.5, near_miss=False),  # a close pass that S scores 1.0
+        _row(4, 1.0, min_gap_m=3.0, min_ttc_s=1.0, near_miss=True, safety_index=0.9),
+        _row(5, 1.5),  # never on a collision course: no TTC
+    ]
+    text = report_html(rows, ["TimeShift", "RiderType"], ["TimeShift", "RiderType"], {"scenario": "s", "dt_s": 0.01})
+    collisions = text.split("Most severe collisions", 1)[1].split("Closest passes", 1)[0]
+    assert re.findall(r"<tr><td>(\d+)</td>", collisions) == ["1", "2", "0"]  # 8, 5, 2 m/s
+    passes = text.split("Closest passes", 1)[1].split("What the safety index hides", 1)[0]
+    assert re.findall(r"<tr><td>(\d+)</td>", passes) == ["3", "4", "5"]  # by minimum gap
+    assert "1 near misses by TTC" in passes
+    assert "1 variants score S ≥ 0.99 while passing within 0.5 m" in text
+    assert "TimeShift (s)" in text and "1 variants have no TTC" in text

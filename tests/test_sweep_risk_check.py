@@ -147,7 +147,7 @@ def test_sweep_rows_equal_single_runs_and_report_failures(case_xosc, tmp_path, c
         table[0]
     )
     html = (tmp_path / "cat" / "report.html").read_text()
-    assert "Most critical variants" in html and html.count("data:image/png;base64,") == 3
+    assert "Most severe collisions" in html and html.count("data:image/png;base64,") == 3
     assert "variants/variant_" in html
 
 

@@ -228,7 +228,7 @@ static void score(const VeiBatchScene *sc, double *tr[NTRAJ], Scratch *w, double
     const int n = sc->n_steps + 1;
     const double *t = sc->t;
     int any_contact = 0, first_contact = -1;
-    double min_gap = INFINITY, min_ttc = INFINITY, min_ttc_approx = INFINITY, ei_max = -INFINITY;
+    double min_gap = INFINITY, min_ttc = INFINITY, min_ttc_approx = INFINITY, ei_max = -INFINITY, impact = NAN;
     long zone[4] = {0, 0, 0, 0};
     for (int k = 0; k < n; k++) {
         double ex = tr[EX][k], ey = tr[EY][k], eyaw = tr[EYAW][k], ev = tr[ESPEED][k];
@@ -248,7 +248,7 @@ static void score(const VeiBatchScene *sc, double *tr[NTRAJ], Scratch *w, double
         int apart_ahead = apart_now && (!closing || mfd > reach);
         int contact = apart_now ? 0 : vei_trig_boxes_overlap(&eb, &ob);
         w->contact[k] = contact;
-        if (contact && !any_contact) any_contact = 1, first_contact = k;
+        if (contact && !any_contact) any_contact = 1, first_contact = k, impact = hypot(vx, vy);
         double gap = contact ? 0.0 : box_gap(&eb, &ob);
         w->gap[k] = gap;
         min_gap = dmin(min_gap, gap);
@@ -314,6 +314,7 @@ static void score(const VeiBatchScene *sc, double *tr[NTRAJ], Scratch *w, double
     out[OUT_MAX_JERK] = jerk_max;
     out[OUT_COMFORT] = (double)comfortable / n;
     out[OUT_NEAR_MISS] = !any_contact && sc->near_lo <= min_ttc && min_ttc <= sc->near_hi;
+    out[OUT_IMPACT_SPEED] = impact;
 }
 
 int vei_batch_run(const VeiBatchScene *sc, const VeiBatchVariant *v, int n_variants, double *out, double *traj) {

@@ -31,7 +31,7 @@ from vei_scenario.metrics.series import MetricConfig
 SOURCES = ("vei_models.c", "vei_batch.c")
 HEADERS = ("vei_models.h", "vei_batch.h")
 FLAGS = ("-shared", "-fPIC", "-O3", "-std=c99", "-ffp-contract=off")
-N_OUT = 18
+N_OUT = 19
 
 _D = ctypes.c_double
 _P = ctypes.POINTER(ctypes.c_double)
@@ -272,7 +272,7 @@ class NativeBatch:
         return self._scene(r.duration), arr
 
     def run(self, prepared, threads: int = 1, record: bool = False):
-        """(outputs (V, 18), trajectories (V, 10, T) or None) of prepared variants, on ``threads``
+        """(outputs (V, 19), trajectories (V, 10, T) or None) of prepared variants, on ``threads``
         threads (the kernel releases the GIL)."""
         scene, arr = prepared
         n = len(arr)
@@ -322,6 +322,7 @@ def metric_rows(out: np.ndarray, who: tuple[str, str]) -> list[dict]:
         "collision": hit,
         "collision_time_s": number(1, "collision_time_s"),
         "collision_entities": [list(who) if h else [] for h in hit],
+        "impact_speed_mps": number(18, "impact_speed_mps"),
         "min_gap_m": number(2, "min_gap_m"),
         "min_ttc_s": number(3, "min_ttc_s"),
         "min_ttc_approx_s": number(4, "min_ttc_approx_s"),

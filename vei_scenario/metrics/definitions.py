@@ -29,6 +29,15 @@ def collision_time_s(p: PairSeries, cfg: MetricConfig) -> np.ndarray:
     return np.where(p.contact.any(axis=-1), p.t[first], np.nan)
 
 
+def impact_speed_mps(p: PairSeries, cfg: MetricConfig) -> np.ndarray:
+    """Speed of the two relative to each other at the first contact (m/s), |v_other − v_ego|: how
+    violent a collision is (the Δv of the pair), or None without one."""
+    first = np.argmax(p.contact, axis=-1)
+    rel = np.hypot(p.other.vx - p.ego.vx, p.other.vy - p.ego.vy)
+    at = np.take_along_axis(rel, np.asarray(first)[..., None], axis=-1)[..., 0]
+    return np.where(p.contact.any(axis=-1), at, np.nan)
+
+
 def collision_entities(p: PairSeries, cfg: MetricConfig) -> np.ndarray:
     """The two entities of the contact, or an empty list (a flag here; names in :func:`to_python`)."""
     return p.contact.any(axis=-1)
@@ -216,6 +225,7 @@ METRICS = {
     "collision": collision,
     "collision_time_s": collision_time_s,
     "collision_entities": collision_entities,
+    "impact_speed_mps": impact_speed_mps,
     "min_gap_m": min_gap_m,
     "min_ttc_s": min_ttc_s,
     "min_ttc_approx_s": min_ttc_approx_s,

@@ -31,13 +31,26 @@ def _runs(flags: np.ndarray) -> list[tuple[int, int]]:
     return list(zip(np.flatnonzero(edges == 1), np.flatnonzero(edges == -1) - 1))
 
 
-def _series_plot(rows: list[dict], x_param: str, groups: list[str], metric: str, label: str) -> str:
-    fig = _figure((8, 3.6))
+#: Units of the parameters vei-compiled scenarios declare (labels say what a number means).
+UNITS = {"TimeShift": "s", "ConflictTimeShift": "s", "EgoCruiseSpeed": "m/s", "SfmDesiredSpeed": "m/s"}
+
+
+def _label(param: str) -> str:
+    return f"{param} ({UNITS[param]})" if param in UNITS else param
+
+
+def _series_plot(
+    rows: list[dict], x_param: str, groups: list[str], metric: str, label: str, xlim: tuple[float, float]
+) -> tuple[str, int]:
+    """The metric over ``x_param``, one line per group; (PNG, variants without a value). Variants with
+    no value (no TTC: never on a collision course) are marked along the top edge, not dropped."""
+    fig = _figure((11, 5.0))
     ax = fig.add_subplot()
     by_key: dict[tuple, list[dict]] = {}
     for r in rows:
         if r["status"] == "ok":
             by_key.setdefault(tuple(r["parameters"][g] for g in groups), []).append(r)
+    missing = 0
     for key in sorted(by_key):  # a group whose every variant failed is listed under "Failed variants"
         sel = by_key[key]
         sel.sort(key=lambda r: float(r["parameters"][x_param]))
@@ -46,17 +59,63 @@ def _series_plot(rows: list[dict], x_param: str, groups: list[str], metric: str,
         coll = np.array([bool(r["metrics"].get("collision")) for r in sel], dtype=bool)
         name = ", ".join(f"{g}={k}" for g, k in zip(groups, key)) or "all"
         line = ax.plot(x, y, lw=1.3, marker=".", ms=3, label=name)
-        ax.plot(x[coll], y[coll], "x", color=line[0].get_color(), ms=6)
+        colour = line[0].get_color()
+        ax.plot(x[coll], y[coll], "x", color=colour, ms=6)
+        none = np.isnan(y)
+        missing += int(none.sum())
+        if none.any():  # at the top edge, in axes coordinates
+            ax.plot(x[none], np.full(none.sum(), 0.98), "^", color=colour, ms=3, transform=ax.get_xaxis_transform())
         if coll.any():  # shade this group's collision region: one band per run of colliding variants
             step = np.median(np.diff(x)) if x.size > 1 else 0.1
             for i, j in _runs(coll):
                 ax.axvspan(x[i] - step / 2, x[j] + step / 2, color="red", alpha=0.04, lw=0)
-    ax.set_xlabel(x_param)
+    ax.set_xlim(*xlim)
+    ax.set_xlabel(_label(x_param))
     ax.set_ylabel(label)
     ax.grid(alpha=0.3)
-    ax.legend(fontsize=7)
-    ax.set_title(f"{label} over {x_param} (× collision, red band: collision region)")
-    return _png(fig)
+    ax.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=3, frameon=False)  # off the data
+    title = f"{label} over {_label(x_param)}: × collision, red band: collision region"
+    if missing:
+        title += f"; ▲ at the top: no value ({missing} variants)"
+    ax.set_title(title, fontsize=10)
+    fig.subplots_adjust(left=0.07, right=0.98, top=0.93, bottom=0.27)
+    return _png(fig), missing
+
+
+#: A near miss closer than this still scores a perfect safety index when its TTC stays out of the
+#: alert zone: the report counts those.
+CLOSE_PASS_M = 0.5
+
+
+def _cell(v) -> str:
+    return "–" if v is None else html.escape(str(v))
+
+
+def _table(rows: list[dict], varied: list[str], columns: list[tuple[str, str]]) -> list[str]:
+    out = ["<table><tr><th>#</th>", *(f"<th>{html.escape(_label(p))}</th>" for p in varied)]
+    out += [f"<th>{html.escape(h)}</th>" for _, h in columns] + ["<th>scenario</th></tr>"]
+    for r in rows:
+        m = r["metrics"]
+        link = f"<a href='{html.escape(r['xosc'])}'>{html.escape(r['xosc'])}</a>" if r.get("xosc") else ""
+        cells = "".join(f"<td>{html.escape(str(r['parameters'][p]))}</td>" for p in varied)
+        values = "".join(
+            f"<td>{'<span class=coll>yes</span>' if k == 'collision' and m.get(k) else _cell(m.get(k))}</td>"
+            for k, _ in columns
+        )
+        out.append(f"<tr><td>{r['variant']}</td>{cells}{values}<td>{link}</td></tr>")
+    out.append("</table>")
+    return out
+
+
+def _severity(r: dict) -> tuple:
+    """Collisions first, the most violent first (impact speed: the pair's Δv at first contact); then
+    the rest by how close they came (minimum gap, then minimum TTC)."""
+    m = r["metrics"]
+    big = float("inf")
+    if m.get("collision"):
+        return (0, -(m.get("impact_speed_mps") or 0.0), r["variant"], 0)
+    ttc = m.get("min_ttc_s")
+    return (1, m.get("min_gap_m") if m.get("min_gap_m") is not None else big, big if ttc is None else ttc, r["variant"])
 
 
 def report_html(rows: list[dict], parameter_names: list[str], varied: list[str], meta: dict, top: int = 20) -> str:
@@ -65,12 +124,14 @@ def report_html(rows: list[dict], parameter_names: list[str], varied: list[str],
     n_coll = sum(1 for r in ok if r["metrics"].get("collision"))
     parts = [
         "<!doctype html><html><head><meta charset='utf-8'><title>vei sweep report</title>",
-        "<style>body{font-family:sans-serif;margin:2em;max-width:1100px}table{border-collapse:collapse}"
-        "td,th{border:1px solid #ccc;padding:3px 8px;font-size:13px}th{background:#f3f3f3}"
-        ".coll{color:#b00;font-weight:bold}</style></head><body>",
+        "<style>body{font-family:sans-serif;margin:2em;max-width:1400px}img{max-width:100%}"
+        "table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:3px 8px;font-size:13px}"
+        "th{background:#f3f3f3}.coll{color:#b00;font-weight:bold}.note{color:#555;max-width:60em}</style>"
+        "</head><body>",
         f"<h1>Sweep of {html.escape(meta['scenario'])}</h1>",
         f"<p>{len(rows)} variants: {len(ok) - n_coll} without collision, {n_coll} with collision, "
-        f"{len(failed)} failed. dt {meta['dt_s']} s. Varied: {html.escape(', '.join(varied) or 'nothing')}.</p>",
+        f"{len(failed)} failed. dt {meta['dt_s']} s. Varied: "
+        f"{html.escape(', '.join(_label(v) for v in varied) or 'nothing')}.</p>",
     ]
     numeric_x = (
         "TimeShift"
@@ -79,39 +140,58 @@ def report_html(rows: list[dict], parameter_names: list[str], varied: list[str],
     )
     if numeric_x and ok:
         groups = [p for p in varied if p != numeric_x]
+        xs = [float(r["parameters"][numeric_x]) for r in ok]
+        pad = 0.02 * (max(xs) - min(xs) or 1.0)
+        xlim = (min(xs) - pad, max(xs) + pad)  # one x-axis for every plot
         for metric, label in (
             ("safety_index", "safety index"),
             ("min_ttc_s", "minimum TTC (s)"),
             ("min_gap_m", "minimum gap (m)"),
         ):
-            parts.append(
-                f"<img alt='{label}' src='data:image/png;base64,"
-                f"{_series_plot(rows, numeric_x, groups, metric, label)}'>"
-            )
-    crit = sorted(
-        ok,
-        key=lambda r: (
-            not r["metrics"].get("collision"),
-            r["metrics"].get("safety_index", 1.0),
-            r["metrics"].get("min_ttc_s") if r["metrics"].get("min_ttc_s") is not None else 1e9,
-        ),
-    )
-    parts.append(f"<h2>Most critical variants (top {min(top, len(crit))})</h2><table><tr><th>#</th>")
-    parts += [f"<th>{html.escape(p)}</th>" for p in varied]
+            png, missing = _series_plot(rows, numeric_x, groups, metric, label, xlim)
+            parts.append(f"<img alt='{label}' src='data:image/png;base64,{png}'>")
+            if missing and metric == "min_ttc_s":
+                parts.append(
+                    f"<p class='note'>{missing} variants have no TTC: the two never head for a collision at "
+                    "constant velocity. They are the ▲ marks along the top, not left out.</p>"
+                )
+    crit = sorted(ok, key=_severity)
+    shown = [r for r in crit if r["metrics"].get("collision")][:top]
+    columns = [
+        ("collision", "collision"),
+        ("collision_time_s", "t coll (s)"),
+        ("impact_speed_mps", "impact speed (m/s)"),
+        ("ei_max_mps", "EI max (m/s)"),
+        ("drac_max_mps2", "DRAC max (m/s²)"),
+        ("min_gap_m", "min gap (m)"),
+        ("min_ttc_s", "min TTC (s)"),
+        ("pet_s", "PET (s)"),
+        ("safety_index", "S"),
+    ]
+    parts.append(f"<h2>Most severe collisions (top {len(shown)} of {n_coll})</h2>")
     parts.append(
-        "<th>collision</th><th>t coll (s)</th><th>min gap (m)</th><th>min TTC (s)</th><th>S</th><th>scenario</th></tr>"
+        "<p class='note'>Ranked by the impact speed: how fast the two met, relative to each other, at "
+        "first contact. Every collision has gap, TTC and safety index 0: they cannot rank them.</p>"
     )
-    for r in crit[:top]:
-        m = r["metrics"]
-        link = f"<a href='{html.escape(r['xosc'])}'>{html.escape(r['xosc'])}</a>" if r.get("xosc") else ""
-        cells = "".join(f"<td>{html.escape(str(r['parameters'][p]))}</td>" for p in varied)
-        coll = "<span class='coll'>yes</span>" if m.get("collision") else "no"
-        parts.append(
-            f"<tr><td>{r['variant']}</td>{cells}<td>{coll}</td><td>{m.get('collision_time_s')}</td>"
-            f"<td>{m.get('min_gap_m')}</td><td>{m.get('min_ttc_s')}</td><td>{m.get('safety_index')}</td>"
-            f"<td>{link}</td></tr>"
-        )
-    parts.append("</table>")
+    parts += _table(shown, varied, columns) if shown else ["<p>None.</p>"]
+    near = [r for r in crit if not r["metrics"].get("collision")][:top]
+    n_near = sum(1 for r in ok if r["metrics"].get("near_miss"))
+    parts.append(f"<h2>Closest passes without collision (top {len(near)}; {n_near} near misses by TTC)</h2>")
+    parts.append("<p class='note'>Ranked by the minimum gap, then the minimum TTC.</p>")
+    parts += _table(near, varied, [("near_miss", "near miss"), *columns[5:]]) if near else ["<p>None.</p>"]
+    hidden = [
+        r
+        for r in ok
+        if not r["metrics"].get("collision")
+        and (r["metrics"].get("safety_index") or 0.0) >= 0.99
+        and (r["metrics"].get("min_gap_m") if r["metrics"].get("min_gap_m") is not None else 1e9) < CLOSE_PASS_M
+    ]
+    parts.append(
+        "<h2>What the safety index hides</h2><p class='note'>S is the share of time outside the alert and "
+        "collision zones of the TTC. A pass at a small gap whose TTC never drops into the alert zone (a "
+        f"crossing, side by side) scores S = 1.0: {len(hidden)} variants score S ≥ 0.99 while passing "
+        f"within {CLOSE_PASS_M} m. Read S with the minimum gap and PET.</p>"
+    )
     if failed:
         parts.append("<h2>Failed variants</h2><ul>")
         parts += [f"<li>#{r['variant']}: {html.escape(r['error'])}</li>" for r in failed[:50]]
