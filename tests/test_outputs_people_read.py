@@ -177,3 +177,36 @@ def test_report_ranks_collisions_by_impact_speed_and_shows_what_s_hides():
     assert "1 near misses by TTC" in passes
     assert "1 variants score S ≥ 0.99 while passing within 0.5 m" in text
     assert "TimeShift (s)" in text and "1 variants have no TTC" in text
+
+
+def _figures(monkeypatch):
+    from vei_scenario.reports import run_plots
+
+    figs = []
+    monkeypatch.setattr(run_plots, "_png", lambda fig: figs.append(fig) or b"")
+    return run_plots, figs
+
+
+@pytest.mark.parametrize("shift, collides", [("0", False), ("conflict", True)])
+def test_run_plots_say_whether_there_was_a_collision_and_mark_time_on_the_paths(compiled, monkeypatch, shift, collides):
+    from vei_scenario.interpreter import load_scenario, run_scenario
+    from vei_scenario.metrics.series import MetricConfig
+
+    xosc = compiled["case_study"].written[0]
+    value = load_scenario(xosc).parameters["ConflictTimeShift"] if shift == "conflict" else shift
+    run = run_scenario(xosc, {"TimeShift": value, "RiderType": "replay", "CapEnabled": False})
+    assert bool(run.collisions) == collides
+    run_plots, figs = _figures(monkeypatch)
+    run_plots.trajectories_png([("run", run)], run.road_file)
+    ax = figs[-1].axes[0]
+    title = ax.get_title()
+    assert ("× first collision" in title) == collides and ("no collision" in title) != collides
+    # where each road user was 4 s in: a label on each path, at its position then
+    k = int(np.argmin(np.abs(run.t - 4.0)))
+    labels = [a for a in ax.texts if a.get_text() == "4 s"]
+    spots = {(round(a.xy[0], 6), round(a.xy[1], 6)) for a in labels}
+    for name in (run.ego, run.threat):
+        assert (round(run.traces[name].x[k], 6), round(run.traces[name].y[k], 6)) in spots
+    run_plots.gap_ttc_png([("run", run)], MetricConfig())
+    legend = [t.get_text() for t in figs[-1].axes[1].get_legend().get_texts()]
+    assert legend == ["headway TTC ≈ gap/v in the ego's path (zones)", "2-D TTC (not used for zones)"]

@@ -6,23 +6,33 @@ from __future__ import annotations
 import io
 from pathlib import Path
 
-import matplotlib
+import numpy as np
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+from vei_scenario.metrics.series import MetricConfig, PairSeries
+from vei_scenario.roads.opendrive_lanes import lane_areas
+from vei_scenario.safe_xml import parse_xml
 
-from vei_scenario.metrics.series import MetricConfig, PairSeries  # noqa: E402
-from vei_scenario.roads.opendrive_lanes import lane_areas  # noqa: E402
-from vei_scenario.safe_xml import parse_xml  # noqa: E402
+ZONE_COLOURS = {"safe": "#d9f0d3", "attention": "#fff3b0", "alert": "#f8c9c4", "collision": "#b30000"}
+#: One colour per run (configuration); within a run the ego is solid, the threat dashed, others dotted.
+RUN_COLOURS = ("tab:blue", "tab:orange", "tab:green", "tab:red", "tab:purple", "tab:brown", "tab:pink")
+#: Time marks on the paths: a dot every MARK_S, labelled every LABEL_S (same times on every path).
+MARK_S, LABEL_S = 1.0, 4.0
 
-ZONE_COLOURS = {"safe": "#d9f0d3", "attention": "#fff3b0", "alert": "#f8c9c4"}
+
+def _figure(figsize: tuple[float, float], rows: int = 1, sharex: bool = False):
+    """A figure drawn by Agg without pyplot (no global state, no GUI backend import)."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=figsize)
+    FigureCanvasAgg(fig)
+    axes = fig.subplots(rows, 1, sharex=sharex)
+    return fig, axes
 
 
 def _png(fig) -> bytes:
     buf = io.BytesIO()
     fig.savefig(buf, format="png", dpi=110, metadata={"Software": None})
-    plt.close(fig)
     return buf.getvalue()
 
 
@@ -38,27 +48,48 @@ def _road(ax, road_file: Path | None, bbox) -> None:
             ax.fill(x, y, color="#e4e4e4" if area.lane_type == "driving" else "#f2efe6", lw=0.3, ec="#bbbbbb", zorder=0)
 
 
+def _style(r, name: str) -> tuple[str, float]:
+    return ("-", 1.6) if name == r.ego else ("--", 1.4) if name == r.threat else (":", 1.1)
+
+
+def _colour(k: int, r, name: str, several: bool) -> str:
+    if several:  # one colour per run: its ego and threat belong together
+        return RUN_COLOURS[k % len(RUN_COLOURS)]
+    return "tab:blue" if name == r.ego else ("tab:red" if name == r.threat else "tab:gray")
+
+
+def _legend(ax, several: bool) -> None:
+    if several:  # below the axes, never over the data
+        ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.1), ncol=2, frameon=False)
+    else:
+        ax.legend(fontsize=7, loc="best")
+
+
 def trajectories_png(results: list[tuple[str, object]], road_file: Path | None) -> bytes:
-    """Paths of every entity on the road network; one style per run (label, RunResult)."""
-    fig, ax = plt.subplots(figsize=(7.5, 7.5))
+    """Paths of every entity on the road network, with time marks (a dot every second, labelled every
+    4 s, on every path: where each was at the same moment) and the first collision of each run."""
+    several = len(results) > 1
+    fig, ax = _figure((7.5, 8.5 if several else 7.5))
     xs = np.concatenate([tr.x for _, r in results for tr in r.traces.values()])
     ys = np.concatenate([tr.y for _, r in results for tr in r.traces.values()])
     pad = 15.0
     bbox = (xs.min() - pad, ys.min() - pad, xs.max() + pad, ys.max() + pad)
     _road(ax, road_file, bbox)
-    styles = ["-", "--", ":", "-.", (0, (5, 1))]
+    any_collision = False
     for k, (label, r) in enumerate(results):
+        marks = np.flatnonzero(np.isclose(np.mod(r.t + 1e-9, MARK_S), 0.0, atol=1e-6))
         for name, tr in r.traces.items():
-            colour = "tab:blue" if name == r.ego else ("tab:red" if name == r.threat else "tab:gray")
-            ax.plot(
-                tr.x,
-                tr.y,
-                ls=styles[k % len(styles)],
-                color=colour,
-                lw=1.4,
-                label=f"{label}: {name}" if len(results) > 1 else name,
-            )
+            ls, lw = _style(r, name)
+            colour = _colour(k, r, name, several)
+            ax.plot(tr.x, tr.y, ls=ls, color=colour, lw=lw, label=f"{label}: {name}" if several else name)
+            ax.plot(tr.x[marks], tr.y[marks], "o", color=colour, ms=2.5)
+            if k == 0:  # labels once: the runs share the clock
+                for i in marks:
+                    if abs(r.t[i] / LABEL_S - round(r.t[i] / LABEL_S)) < 1e-6:
+                        ax.annotate(f"{r.t[i]:g} s", (tr.x[i], tr.y[i]), fontsize=6, xytext=(3, 3),
+                                    textcoords="offset points", color=colour)  # fmt: skip
         for t, a, _b in r.collisions[:1]:
+            any_collision = True
             i = int(np.searchsorted(r.t, t))
             ax.plot(r.traces[a].x[i], r.traces[a].y[i], "kx", ms=10, mew=2)
     ax.set_xlim(bbox[0], bbox[2])
@@ -66,57 +97,87 @@ def trajectories_png(results: list[tuple[str, object]], road_file: Path | None) 
     ax.set_aspect("equal")
     ax.set_xlabel("x east (m)")
     ax.set_ylabel("y north (m)")
-    ax.set_title("Trajectories (× first collision)")
-    ax.legend(fontsize=7, loc="best")
+    marks_text = f"dots every {MARK_S:g} s, labels every {LABEL_S:g} s"
+    ax.set_title(f"Trajectories ({marks_text}; " + ("× first collision)" if any_collision else "no collision)"))
+    _legend(ax, several)
+    fig.tight_layout()
     return _png(fig)
 
 
 def speeds_png(results: list[tuple[str, object]]) -> bytes:
-    fig, ax = plt.subplots(figsize=(8, 4))
-    for label, r in results:
+    several = len(results) > 1
+    fig, ax = _figure((8, 4.8 if several else 4))
+    for k, (label, r) in enumerate(results):
         for name in (r.ego, r.threat):
             if name is None:
                 continue
-            tr = r.traces[name]
-            ax.plot(r.t, tr.speed, lw=1.3, label=f"{label}: {name}" if len(results) > 1 else name)
+            ls, lw = _style(r, name)
+            ax.plot(r.t, r.traces[name].speed, ls=ls, lw=lw, color=_colour(k, r, name, several),
+                    label=f"{label}: {name}" if several else name)  # fmt: skip
     ax.set_xlabel("time (s)")
     ax.set_ylabel("speed (m/s)")
-    ax.set_title("Speed profiles")
+    ax.set_title("Speed profiles" + (" (one colour per configuration; ego solid, threat dashed)" if several else ""))
     ax.grid(alpha=0.3)
-    ax.legend(fontsize=7)
+    _legend(ax, several)
+    fig.tight_layout()
     return _png(fig)
 
 
 def gap_ttc_png(results: list[tuple[str, object]], cfg: MetricConfig) -> bytes:
-    """Gap between the boxes and TTC over time, TTC zones shaded (safe ≥ 3 s, attention 2–3 s, alert)."""
-    fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(8, 6), sharex=True)
-    for label, r in results:
-        if r.threat is None:
-            continue
-        pair = PairSeries.from_run(r)
-        name = label if len(results) > 1 else r.threat
-        ax1.plot(r.t, pair.gap, lw=1.3, label=name)
-        ttc = pair.zone_ttc(cfg)
-        line = ax2.plot(r.t, np.where(np.isfinite(ttc), ttc, np.nan), lw=1.6, label=f"{name}: TTC {cfg.zone_ttc}")
-        ttc2 = pair.ttc_2d
-        ax2.plot(
-            r.t,
-            np.where(np.isfinite(ttc2), ttc2, np.nan),
-            lw=1.0,
-            ls=":",
-            color=line[0].get_color(),
-            label=f"{name}: TTC 2-D",
-        )
+    """Gap between the boxes and TTC over time. The background bands are the TTC zones; the solid line
+    is the TTC the zones and the safety index use (``cfg.zone_ttc``), and a strip per run above the
+    curves shows the zone of every step exactly as the metrics count it. The other TTC is dotted."""
+    from matplotlib.lines import Line2D
+
+    several = len(results) > 1
+    fig, (ax1, ax2) = _figure((9, 8 if several else 6.5), rows=2, sharex=True)
+    used = "headway TTC ≈ gap/v in the ego's path" if cfg.zone_ttc == "approx" else "2-D TTC"
+    other = "2-D TTC" if cfg.zone_ttc == "approx" else "headway TTC"
     top = 8.0
     ax2.axhspan(cfg.safe_ttc_s, top, color=ZONE_COLOURS["safe"], zorder=0)
     ax2.axhspan(cfg.alert_ttc_s, cfg.safe_ttc_s, color=ZONE_COLOURS["attention"], zorder=0)
     ax2.axhspan(0, cfg.alert_ttc_s, color=ZONE_COLOURS["alert"], zorder=0)
-    ax2.set_ylim(0, top)
+    runs = [(k, label, r) for k, (label, r) in enumerate(results) if r.threat is not None]
+    strip = 0.6  # height (on the TTC axis) of each run's zone strip, above the zone bands
+    for n, (k, label, r) in enumerate(runs):
+        pair = PairSeries.from_run(r)
+        colour = RUN_COLOURS[k % len(RUN_COLOURS)] if several else "tab:blue"
+        ax1.plot(r.t, pair.gap, lw=1.3, color=colour, label=label if several else r.threat)
+        zone_ttc = pair.zone_ttc(cfg)
+        other_ttc = pair.ttc_2d if cfg.zone_ttc == "approx" else pair.ttc_approx
+        # below the strips only, with a dot on every step (a TTC defined for single steps shows too)
+        ax2.plot(r.t, np.where(zone_ttc <= top, zone_ttc, np.nan), lw=1.6, color=colour, marker=".", ms=1.5)
+        ax2.plot(r.t, np.where(other_ttc <= top, other_ttc, np.nan), lw=1.0, ls=":", color=colour)
+        zones = pair.zones(cfg)
+        base = top + n * strip
+        for z, zname in enumerate(("safe", "attention", "alert", "collision")):
+            on = zones == z
+            if on.any():
+                ax2.fill_between(r.t, base + 0.1 * strip, base + 0.9 * strip, where=on, color=ZONE_COLOURS[zname],
+                                 lw=0, step="mid")  # fmt: skip
+        ax2.plot([r.t[0]], [base + 0.5 * strip], "s", color=colour, ms=5)  # whose strip this is
+    ax2.set_ylim(0, top + max(1, len(runs)) * strip)
+    ax2.set_yticks([t for t in ax2.get_yticks() if t <= top])
     ax1.set_ylabel("gap between boxes (m)")
     ax2.set_ylabel("TTC (s)")
     ax2.set_xlabel("time (s)")
-    ax1.set_title("Gap and TTC (zones on the headway TTC ≈ gap/v: safe ≥ 3 s, attention 2–3 s, alert < 2 s)")
+    ax1.set_title("Gap between the boxes", fontsize=10)
+    ax2.set_title(
+        f"TTC; zones (safe ≥ {cfg.safe_ttc_s:g} s, attention, alert < {cfg.alert_ttc_s:g} s) on the {used}."
+        "\nStrip above: each step's zone as the safety index counts it (dark red: contact)",
+        fontsize=9,
+    )
     for ax in (ax1, ax2):
         ax.grid(alpha=0.3)
-        ax.legend(fontsize=7)
+    styles = [
+        Line2D([], [], color="k", lw=1.6, label=f"{used} (zones)"),
+        Line2D([], [], color="k", lw=1.0, ls=":", label=f"{other} (not used for zones)"),
+    ]
+    ax2.legend(handles=styles, fontsize=7, loc="lower right")
+    if several:  # the runs, once, under the figure
+        fig.legend(*ax1.get_legend_handles_labels(), fontsize=8, loc="lower center", ncol=3, frameon=False)
+        fig.tight_layout(rect=(0, 0.07, 1, 1))
+    else:
+        ax1.legend(fontsize=7)
+        fig.tight_layout()
     return _png(fig)
