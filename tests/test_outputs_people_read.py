@@ -210,3 +210,23 @@ def test_run_plots_say_whether_there_was_a_collision_and_mark_time_on_the_paths(
     run_plots.gap_ttc_png([("run", run)], MetricConfig())
     legend = [t.get_text() for t in figs[-1].axes[1].get_legend().get_texts()]
     assert legend == ["headway TTC ≈ gap/v in the ego's path (zones)", "2-D TTC (not used for zones)"]
+
+
+def test_readme_run_example_prints_what_the_readme_shows(compiled):
+    """The lines under `$ vei run ...` in the README, against the command run on the compiled case study."""
+    from conftest import ROOT
+
+    text = (ROOT / "README.md").read_text()
+    block = text.split("$ vei run out/case_study/scenario.xosc", 1)[1].split("\n$ ", 1)[0]
+    args, *shown = block.strip("\n").splitlines()
+    params = args.split(" -o ")[0].split()
+    xosc = compiled["case_study"].written[0]
+    out = subprocess.run(
+        [sys.executable, "-m", "vei_scenario", "run", str(xosc), *params, "--no-plots"],
+        capture_output=True,
+        text=True,
+    )
+    assert out.returncode == 0, out.stderr
+    printed = out.stdout.splitlines()
+    for line in shown:
+        assert line in printed, (line, printed)

@@ -191,6 +191,24 @@ def _cmd_risk(args: argparse.Namespace) -> int:
     return 0
 
 
+def _cmd_view(args: argparse.Namespace) -> int:
+    from vei_scenario.reports.viewer import show, view_run_dir, view_scenario, write_animation
+    from vei_scenario.runner import parse_param_overrides
+
+    src = Path(args.input)
+    if src.is_dir():
+        view = view_run_dir(src, args.scenario)
+    elif src.is_file():
+        view = view_scenario(src, parse_param_overrides(args.param), args.dt)
+    else:
+        raise VeiInputError(src, "input", "not found (a .xosc scenario or a directory written by vei run -o)")
+    if args.output:
+        print(f"wrote {write_animation(view, args.output, args.fps, args.speed)}")
+    else:
+        show(view, args.fps, args.speed)
+    return 0
+
+
 def _cmd_check(args: argparse.Namespace) -> int:
     from vei_scenario.ci_check import run_suite
 
@@ -296,6 +314,16 @@ def build_parser() -> argparse.ArgumentParser:
     rk.add_argument("--workers", type=int, help="worker processes (default: all cores)")
     rk.add_argument("-o", "--output", help="directory for risk.json and the critical scenarios")
     rk.set_defaults(func=_cmd_risk)
+
+    vw = sub.add_parser("view", help="play a run on its road: moving boxes, trails, TTC zones, the collision")
+    vw.add_argument("input", help="scenario (.xosc, run here) or a directory written by vei run -o")
+    vw.add_argument("-o", "--output", help="write an animation (.gif, or .mp4 with ffmpeg) instead of a window")
+    vw.add_argument("--param", action="append", default=[], metavar="NAME=VALUE", help="override a parameter")
+    vw.add_argument("--dt", type=float, default=0.01, help="fixed step in s of the run (default 0.01)")
+    vw.add_argument("--fps", type=float, default=10.0, help="frames per second of the animation (default 10)")
+    vw.add_argument("--speed", type=float, default=1.0, help="playback speed, × real time (default 1)")
+    vw.add_argument("--scenario", help="with a run directory: the scenario, for the road and the boxes")
+    vw.set_defaults(func=_cmd_view)
 
     ck = sub.add_parser("check", help="run a suite of scenario expectations (for CI); JUnit XML")
     ck.add_argument("suite", help="suite file (.toml)")

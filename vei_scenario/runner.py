@@ -63,6 +63,11 @@ def metrics_document(result: RunResult, cfg: MetricConfig) -> dict:
         "metrics": metrics,
         "collisions": [{"time_s": round(t, 3), "entities": [a, b]} for t, a, b in result.collisions],
         "ttc_zones_use": cfg.zone_ttc,
+        # the boxes (centre ahead of the logged reference point): what `vei view RUN_DIR` draws
+        "entities": {
+            n: {"category": tr.category, "length_m": tr.length, "width_m": tr.width, "center_x_m": tr.center_x}
+            for n, tr in result.traces.items()
+        },
     }
 
 
