@@ -561,6 +561,40 @@ def test_python_fmus_close_the_loop_like_vei_run(case_study, conflict_shift, tmp
     assert rows[0].startswith("t,ego.x,ego.y") and len(rows) == 2503
 
 
+def test_the_ssp_runs_in_ecos_like_vei_run_jacobi(case_study, conflict_shift, tmp_path):
+    """A third SSP host: ecos applies a parameter set by name, so every component's set carries one name.
+    Stepped on the previous outputs (Jacobi), it must reproduce `vei run --coupling jacobi`."""
+    try:
+        import ecospy  # noqa: F401
+    except ImportError:
+        pytest.skip("ecospy is not installed (pip install ecospy)")
+    except OSError as exc:  # its native library needs Intel TBB
+        pytest.skip(f"ecos cannot load ({exc}): apt-get install libtbb12")
+    from vei_scenario.fmu import build_system
+
+    params = {"RiderType": "aggressive", "CapEnabled": "true", "TimeShift": conflict_shift}
+    ssp = build_system(case_study, tmp_path / "loop.ssp", params)
+    run = run_scenario(case_study, params, 0.01, coupling="jacobi")
+    code = (
+        "import sys, numpy as np; from ecospy import EcosSimulation\n"
+        "sim = EcosSimulation(step_size=0.01, ssp_path=sys.argv[1]); sim.init(parameter_set='scenario')\n"
+        "rec = []\n"
+        "for _ in range(int(sys.argv[3])):\n"
+        "    sim.step(); rec.append([sim.get_real(n) for n in ('ego::x', 'ego::y', 'sfm::x', 'sfm::y')])\n"
+        "sim.terminate(); sim.free(); np.save(sys.argv[2], np.array(rec))"
+    )
+    out = tmp_path / "ecos.npy"
+    proc = subprocess.run(
+        [sys.executable, "-c", code, str(ssp), str(out), str(run.t.size - 1)], capture_output=True, text=True
+    )
+    assert proc.returncode == 0, proc.stderr[-2000:]
+    rec = np.load(out)
+    ego, scooter = run.traces[run.ego], run.traces[run.threat]
+    assert np.hypot(rec[:, 0] - ego.x[1:], rec[:, 1] - ego.y[1:]).max() <= 1e-6
+    assert np.hypot(rec[:, 2] - scooter.x[1:], rec[:, 3] - scooter.y[1:]).max() <= 1e-6
+    assert np.ptp(rec[:, 2]) > 10.0  # the scooter moved: its parameters (track, route) were applied
+
+
 def test_the_coupling_scheme_matters(case_study, conflict_shift):
     """Jacobi and sequential coupling give different runs, so matching each engine's scheme is needed."""
     values = {**_config(5), "TimeShift": conflict_shift}

@@ -149,6 +149,11 @@ def _q(prefix: str, tag: str) -> str:
     return f"{{{_NS[prefix]}}}{tag}"
 
 
+#: The one name of every component's parameter set: SSP hosts that apply parameter sets by name (ecos:
+#: ``init(parameter_set=...)``, or its first set by default) then configure all three components.
+PARAMETER_SET = "scenario"
+
+
 def system_structure(loop: ClosedLoop, name: str = "vei_closed_loop") -> bytes:
     """SystemStructure.ssd (SSP 1.0): the three FMUs as components under ``resources/``, their
     connectors, parameter values bound inline, the connections and the default experiment."""
@@ -172,7 +177,7 @@ def system_structure(loop: ClosedLoop, name: str = "vei_closed_loop") -> bytes:
         bindings = etree.SubElement(el, _q("ssd", "ParameterBindings"))
         binding = etree.SubElement(bindings, _q("ssd", "ParameterBinding"))
         values = etree.SubElement(binding, _q("ssd", "ParameterValues"))
-        pset = etree.SubElement(values, _q("ssv", "ParameterSet"), version="1.0", name=f"{comp}_parameters")
+        pset = etree.SubElement(values, _q("ssv", "ParameterSet"), version="1.0", name=PARAMETER_SET)
         params = etree.SubElement(pset, _q("ssv", "Parameters"))
         types = {s.name: s.var.type for s in spec.scalars()}
         for pname, value in loop.parameters[comp].items():
