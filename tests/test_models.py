@@ -124,3 +124,18 @@ def test_speed_loop_of_the_default_gains_is_stable_and_well_damped():
     assert loop.steady_state_error < 1e-9
     # The analysis can fail: a negative gain destabilises the loop.
     assert not analyse_speed_loop(CapParameters(kp=-1.0)).stable
+
+
+def test_braking_to_a_standstill_keeps_within_the_jerk_limit():
+    """Full braking from 5 m/s: the deceleration eases off before the stop, so the vehicle comes to
+    rest with the acceleration back at zero and every step's change of acceleration within j·dt."""
+    from vei_scenario.models.vehicle import Longitudinal, VehicleLimits, longitudinal_step
+
+    lim, dt = VehicleLimits(), 0.01
+    st, accel = Longitudinal(0.0, 5.0, 0.0), [0.0]
+    for _ in range(400):
+        st = longitudinal_step(st, -lim.max_decel_mps2, lim, dt)
+        accel.append(st.a)
+    jerk = np.abs(np.diff(accel)) / dt
+    assert st.v == 0.0 and st.a == 0.0 and jerk.max() <= lim.jerk_max_mps3 * (1 + 1e-9)
+    assert min(accel) == pytest.approx(-lim.max_decel_mps2)  # it still brakes fully on the way

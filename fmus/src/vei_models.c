@@ -212,7 +212,10 @@ double vei_threat_time_to_conflict(const VeiBox *ego, double ego_speed, double m
 /* ---------------------------------------------------------------------------------------------- */
 void vei_longitudinal_step(VeiLongitudinal *st, double a_cmd, const VeiVehicleLimits *lim, double dt) {
     double target = dmax(-lim->max_decel_mps2, dmin(lim->max_accel_mps2, a_cmd));
+    /* the stop ramp (vehicle.py stop_ramp): ease off the braking at the jerk limit before standstill */
     double da = lim->jerk_max_mps3 * dt;
+    if (target < 0.0 && st->v > 0.0) /* the stop ramp of vehicle.py: ease off to zero by standstill */
+        target = dmax(target, -0.5 * (sqrt(da * da + 8.0 * lim->jerk_max_mps3 * st->v) - da));
     double a = dmax(st->a - da, dmin(st->a + da, target));
     double v0 = st->v;
     if (v0 <= 0.0 && a <= 0.0) {
