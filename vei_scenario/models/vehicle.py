@@ -10,7 +10,6 @@ jerk limit (:func:`stop_ramp`), so stopping does not exceed it either.
 from __future__ import annotations
 
 import math
-
 from dataclasses import dataclass
 
 import numpy as np
@@ -63,9 +62,7 @@ def longitudinal_step_arrays(s, v, a, a_cmd, limits: VehicleLimits, dt: float):
     s, v0, a0 = (np.asarray(q, float) for q in (s, v, a))
     target = np.maximum(-limits.max_decel_mps2, np.minimum(limits.max_accel_mps2, np.asarray(a_cmd, float)))
     jdt = limits.jerk_max_mps3 * dt
-    ramp = np.where(
-        v0 > 0.0, -0.5 * (np.sqrt(jdt * jdt + 8.0 * limits.jerk_max_mps3 * np.maximum(v0, 0.0)) - jdt), 0.0
-    )
+    ramp = np.where(v0 > 0.0, -0.5 * (np.sqrt(jdt * jdt + 8.0 * limits.jerk_max_mps3 * np.maximum(v0, 0.0)) - jdt), 0.0)
     target = np.where(target < 0.0, np.maximum(target, ramp), target)
     da = limits.jerk_max_mps3 * dt
     acc = np.maximum(a0 - da, np.minimum(a0 + da, target))
