@@ -230,3 +230,18 @@ def test_readme_run_example_prints_what_the_readme_shows(compiled):
     printed = out.stdout.splitlines()
     for line in shown:
         assert line in printed, (line, printed)
+
+
+def test_a_replayed_scooter_stands_until_first_seen_then_moves_on_never_back(compiled):
+    """Before its first sighting the scooter stands where it is first seen (speed 0, no motion); from
+    then on it replays forward: no step of its log goes against its direction of travel."""
+    from vei_scenario.interpreter import run_scenario
+
+    run = run_scenario(compiled["case_study"].written[0], {"RiderType": "replay", "CapEnabled": False})
+    tr = run.traces[run.threat]
+    first_seen = compiled["case_study"].model.entities[1].trajectory.t[0]
+    before = run.t < first_seen - 1e-9
+    assert before.sum() > 10 and np.ptp(tr.x[before]) == 0.0 and np.all(tr.speed[before] == 0.0)
+    step = np.hypot(np.diff(tr.x), np.diff(tr.y))
+    along = np.diff(tr.x) * np.cos(tr.yaw[1:]) + np.diff(tr.y) * np.sin(tr.yaw[1:])
+    assert np.all(along >= -1e-9) and step.max() < 0.1  # never back, never a jump (4.7 m/s · 0.01 s)
