@@ -97,6 +97,16 @@ def test_every_fmu_simulates_with_its_own_default_start_values(fmu_sets):
                 assert res["x"][k] == pytest.approx(1.5, abs=1e-9) and res["speed"][k] == pytest.approx(1.0)
 
 
+def test_a_c_host_that_sets_nothing_runs_every_native_fmu(fmu_sets, loader, tmp_path):
+    """As the Reference FMUs' fmusim does by default (fmusim itself is not on a package index here):
+    instantiate, initialise with the start values, step 2 s, with no parameter set."""
+    for model, path in fmu_sets["native-fmi2"].items():
+        cmds = ["init", *(f"step {k * 0.01!r} 0.01" for k in range(200)), "free"]
+        out = _host(loader, path, tmp_path / model, cmds)
+        assert "init 0" in out, (model, out[:5])
+        assert sum(1 for line in out if line.startswith("step 0")) == 200, (model, out[-5:])
+
+
 def test_a_per_scenario_build_reproduces_the_scenario_alone(case_study, conflict_shift, tmp_path):
     """`vei fmu build --scenario`: the scenario's thousands of values are the start values, so the
     scooter FMU run by a host that sets nothing replays the scooter exactly as `vei run` does."""
