@@ -245,3 +245,14 @@ def test_a_replayed_scooter_stands_until_first_seen_then_moves_on_never_back(com
     step = np.hypot(np.diff(tr.x), np.diff(tr.y))
     along = np.diff(tr.x) * np.cos(tr.yaw[1:]) + np.diff(tr.y) * np.sin(tr.yaw[1:])
     assert np.all(along >= -1e-9) and step.max() < 0.1  # never back, never a jump (4.7 m/s · 0.01 s)
+
+
+def test_package_metadata_uses_an_spdx_license_string():
+    """setuptools ≥ 77 deprecates the table form `license = { text = ... }` (a warning on every build)."""
+    import tomllib
+
+    from conftest import ROOT
+
+    meta = tomllib.loads((ROOT / "pyproject.toml").read_text())
+    assert meta["project"]["license"] == "Apache-2.0"
+    assert any(r.replace(" ", "").startswith("setuptools>=77") for r in meta["build-system"]["requires"])
