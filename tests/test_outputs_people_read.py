@@ -249,7 +249,10 @@ def test_a_replayed_scooter_stands_until_first_seen_then_moves_on_never_back(com
 
 def test_package_metadata_uses_an_spdx_license_string():
     """setuptools ≥ 77 deprecates the table form `license = { text = ... }` (a warning on every build)."""
-    import tomllib
+    try:
+        import tomllib
+    except ModuleNotFoundError:  # Python 3.10
+        import tomli as tomllib
 
     from conftest import ROOT
 
