@@ -27,8 +27,10 @@ def main() -> int:
     ap.add_argument("--variants", type=int, default=10_000)
     ap.add_argument("--serial-sample", type=int, default=16)
     ap.add_argument("--full", action="store_true")
+    ap.add_argument("--esmini-sample", type=int, default=8, help="esmini runs timed (0: none)")
     args = ap.parse_args()
     from vei_scenario.compiler import compile_clip
+    from vei_scenario.conformance.esmini import find_esmini, run_esmini
     from vei_scenario.sweep import build_variants, run_sweep
     from vei_scenario.sweep.evaluate import _native_engine, evaluate_local, evaluate_variant
 
@@ -56,6 +58,14 @@ def main() -> int:
         for v in variants[::step][:n_serial]:
             evaluate_variant(str(xosc), v, 0.01)
         serial = (time.perf_counter() - t0) / n_serial
+        # esmini on the same scenario, one process per variant (its library is not built here): the
+        # replay variants without the planner, the ones it can play (vei's controllers are its own)
+        es_times: list[float] = []
+        esmini = find_esmini(str(ROOT.parent / "shared" / "esmini" / "bin" / "esmini"))
+        if esmini is not None:
+            plain = [v for v in variants if v.get("RiderType") == "replay" and v.get("CapEnabled") == "false"]
+            for v in plain[:: max(1, len(plain) // args.esmini_sample)][: args.esmini_sample]:
+                es_times.append(run_esmini(esmini, xosc, 0.01, v).seconds)
         t_full = None
         if args.full:
             t0 = time.perf_counter()
@@ -71,6 +81,15 @@ def main() -> int:
         f"{n} variants ({collisions} collide): built in {t_build:.2f} s, evaluated in {t_eval:.2f} s "
         f"= {n / t_eval:.0f} variants/s (target ≤ 10 s for 10 000)"
     )
+    steps = 2501  # 25 s at 0.01 s
+    print(f"{n * steps / t_eval / 1e6:.1f} M variant-steps/s ({steps} steps a variant)")
+    if es_times:
+        es = sorted(es_times)[len(es_times) // 2]
+        print(
+            f"esmini 3.6, one process a variant (replay, no planner; median of {len(es_times)}): {es:.3f} s "
+            f"= {1 / es:.1f} variants/s; the vei sweep is {es / (t_eval / n):.0f}x faster a variant "
+            f"(esmini's library, for many variants in one process, is not built here)"
+        )
     print(
         f"serial vei-run path: {serial:.3f} s per variant; {n} extrapolated: {n * serial:.0f} s; "
         f"sweep/serial speed-up {n * serial / t_eval:.0f}x"
