@@ -5,8 +5,8 @@ from __future__ import annotations
 import base64
 import heapq
 import html
-from operator import itemgetter
 import io
+from operator import itemgetter
 
 import numpy as np
 
