@@ -131,16 +131,15 @@ def resample_path(
     A road user that keeps moving: cubic splines of position over time (smoothing splines with the
     GCV penalty with ``smooth`` and five or more keyframes), headings SLERPed between the spline's
     directions of motion at the keyframes. One that stops (keyframes within ``standing_m`` of where
-    it stood): the path is the spline through the keyframes where it moved
-    on, over their times u without the standstills; it runs along it at u(t), the monotone PCHIP
-    interpolant of u at the keyframes, so it stays
-    where it stopped, facing where it was going, and never runs backwards (a spline of position over
-    time through a stop overshoots and returns)."""
-    grid = output_grid(float(t_key[0]), float(t_key[-1]), rate_hz)
+    it stood): the path is the spline through the keyframes where it moved on, over their times u
+    without the standstills; it runs along it at u(t), the monotone PCHIP interpolant of u at the
+    keyframes, so it stays where it stopped, facing where it was going, and never runs backwards (a
+    spline of position over time through a stop overshoots and returns)."""
     at = standing_keyframes(x_key, y_key, standing_m)
     node = np.unique(at)
     if node.size == t_key.size:  # it never stands still
         return resample_keyframes(t_key, x_key, y_key, rate_hz, smooth=smooth)
+    grid = output_grid(float(t_key[0]), float(t_key[-1]), rate_hz)
     if node.size == 1:  # it never moves: where it was seen first
         m = grid.size
         still = Trajectory(grid, np.full(m, x_key[0]), np.full(m, y_key[0]), np.zeros(m), np.zeros(m))
