@@ -110,7 +110,8 @@ def _bind(lib):
 
 
 def load_kernel():
-    """The compiled kernel (built on first use), or None when no C compiler can build it."""
+    """The compiled kernel: the one built with the package while it matches the C sources shipped
+    beside it, else one compiled on first use into the cache; None without a compiler."""
     if _LIB:
         return _LIB[0]
     from vei_scenario.errors import VeiInputError
@@ -123,19 +124,17 @@ def load_kernel():
         if choice == "numpy":
             raise OSError("VEI_KERNEL=numpy")
         src = c_source_dir()
+        sources = source_digest(src)
         if packaged is not None:
             built = ctypes.CDLL(str(packaged))
             built.vei_kernel_digest.restype = ctypes.c_char_p
-            if built.vei_kernel_digest().decode() == source_digest(src):
+            if built.vei_kernel_digest().decode() == sources:
                 lib = _bind(built)
                 _LIB.append(lib)
                 return lib
         cc = compiler()
-        digest = hashlib.sha256()
-        for name in (*SOURCES, *HEADERS):
-            digest.update((src / name).read_bytes())
-        digest.update(" ".join((cc, *FLAGS)).encode())
-        target = _cache_dir() / f"libvei_batch-{digest.hexdigest()[:16]}.so"
+        key = hashlib.sha256(" ".join((sources, cc, *FLAGS)).encode()).hexdigest()[:16]
+        target = _cache_dir() / f"libvei_batch-{key}.so"
         if not target.exists():
             target.parent.mkdir(parents=True, exist_ok=True)
             fd, tmp = tempfile.mkstemp(prefix=".libvei_batch-", suffix=".so", dir=target.parent)
