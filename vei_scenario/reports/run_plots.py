@@ -3,12 +3,12 @@ TTC over time with the TTC zones shaded. PNG bytes, deterministic (no timestamps
 
 from __future__ import annotations
 
-import io
 from pathlib import Path
 
 import numpy as np
 
 from vei_scenario.metrics.series import MetricConfig, PairSeries
+from vei_scenario.reports.figures import agg_figure, png_bytes
 from vei_scenario.roads.opendrive_lanes import lane_areas
 from vei_scenario.safe_xml import parse_xml
 
@@ -20,20 +20,12 @@ MARK_S, LABEL_S = 1.0, 4.0
 
 
 def _figure(figsize: tuple[float, float], rows: int = 1, sharex: bool = False):
-    """A figure drawn by Agg without pyplot (no global state, no GUI backend import)."""
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    from matplotlib.figure import Figure
-
-    fig = Figure(figsize=figsize)
-    FigureCanvasAgg(fig)
-    axes = fig.subplots(rows, 1, sharex=sharex)
-    return fig, axes
+    fig = agg_figure(figsize)
+    return fig, fig.subplots(rows, 1, sharex=sharex)
 
 
 def _png(fig) -> bytes:
-    buf = io.BytesIO()
-    fig.savefig(buf, format="png", dpi=110, metadata={"Software": None})
-    return buf.getvalue()
+    return png_bytes(fig, 110)
 
 
 def _road(ax, road_file: Path | None, bbox) -> None:

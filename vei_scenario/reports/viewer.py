@@ -19,6 +19,7 @@ from pathlib import Path
 import numpy as np
 
 from vei_scenario.errors import VeiInputError
+from vei_scenario.models.boxes import box_corners
 
 ZONE_FACE = {0: "#4daf4a", 1: "#ffd92f", 2: "#e41a1c", 3: "#7f0000"}  # safe, attention, alert, collision
 ZONE_NAMES = ("safe", "attention", "alert", "COLLISION")
@@ -123,25 +124,21 @@ def frame_steps(view: View, fps: float, speed: float = 1.0) -> np.ndarray:
 
 
 def _corners(x: float, y: float, yaw: float, length: float, width: float, cx: float) -> np.ndarray:
-    c, s = math.cos(yaw), math.sin(yaw)
-    mx, my = x + c * cx, y + s * cx
-    hl, hw = 0.5 * length, 0.5 * width
-    local = ((hl, hw), (-hl, hw), (-hl, -hw), (hl, -hw))
-    return np.array([(mx + c * a - s * b, my + s * a + c * b) for a, b in local])
+    """The box's corners: its centre lies ``cx`` ahead of the logged reference point (x, y)."""
+    return box_corners(x + cx * math.cos(yaw), y + cx * math.sin(yaw), yaw, length, width)
 
 
 def render_frames(view: View, steps: np.ndarray, size_px: int = 640) -> Iterator[np.ndarray]:
     """RGB frames (H, W, 3 uint8) of the given steps."""
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    from matplotlib.figure import Figure
     from matplotlib.patches import Polygon
 
+    from vei_scenario.reports.figures import agg_figure
     from vei_scenario.reports.run_plots import _road
 
     run = view.run
     dpi = 100
-    fig = Figure(figsize=(size_px / dpi, size_px / dpi), dpi=dpi)
-    canvas = FigureCanvasAgg(fig)
+    fig = agg_figure((size_px / dpi, size_px / dpi), dpi)
+    canvas = fig.canvas
     ax = fig.add_axes((0.08, 0.07, 0.9, 0.86))
     xs = np.concatenate([tr.x for tr in run.traces.values()])
     ys = np.concatenate([tr.y for tr in run.traces.values()])

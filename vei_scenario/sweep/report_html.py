@@ -5,26 +5,15 @@ from __future__ import annotations
 import base64
 import heapq
 import html
-import io
 from operator import itemgetter
 
 import numpy as np
 
-
-def _figure(figsize: tuple[float, float]):
-    """A figure drawn by Agg without pyplot (whose import and global state a report does not need)."""
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    from matplotlib.figure import Figure
-
-    fig = Figure(figsize=figsize)
-    FigureCanvasAgg(fig)
-    return fig
+from vei_scenario.reports.figures import agg_figure, png_bytes
 
 
 def _png(fig) -> str:
-    buf = io.BytesIO()
-    fig.savefig(buf, format="png", dpi=100, metadata={"Software": None})
-    return base64.b64encode(buf.getvalue()).decode()
+    return base64.b64encode(png_bytes(fig, 100)).decode()
 
 
 def _runs(flags: np.ndarray) -> list[tuple[int, int]]:
@@ -79,7 +68,7 @@ def _series_plot(
 ) -> tuple[str, int]:
     """The metric over ``x_param``, one line per group; (PNG, variants without a value). Variants with
     no value (no TTC: never on a collision course) are marked along the top edge, not dropped."""
-    fig = _figure((11, 5.0))
+    fig = agg_figure((11, 5.0))
     ax = fig.add_subplot()
     missing = 0
     many = False
@@ -110,11 +99,10 @@ def _series_plot(
     ax.set_ylabel(label)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=3, frameon=False)  # off the data
-    title = f"{label} over {_label(x_param)}: × collision, red band: collision region"
-    if many:
-        title = f"{label} over {_label(x_param)}: red band: collision region"
+    marks = "red band: collision region" if many else "× collision, red band: collision region"
+    title = f"{label} over {_label(x_param)}: {marks}"
     if missing:
-        title += f"; {'▲' if not many else 'bar'} at the top: no value ({missing} variants)"
+        title += f"; {'bar' if many else '▲'} at the top: no value ({missing} variants)"
     ax.set_title(title, fontsize=10)
     fig.subplots_adjust(left=0.07, right=0.98, top=0.93, bottom=0.27)
     return _png(fig), missing
