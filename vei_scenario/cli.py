@@ -154,6 +154,26 @@ def _cmd_sweep(args: argparse.Namespace) -> int:
     return 0
 
 
+def _cmd_describe(args: argparse.Namespace) -> int:
+    from vei_scenario.language import describe_command
+
+    return describe_command(args)
+
+
+def _cmd_behaviours(args: argparse.Namespace) -> int:
+    from vei_scenario.language.behaviours import BEHAVIOURS
+
+    for name, mod in BEHAVIOURS.items():
+        print(f"{name:15s} {mod.AGENT}: {mod.SUMMARY}")
+        if args.verbose:
+            for p, v in mod.PARAMETERS.items():
+                print(f"    {p:18s} default {v.default:g}, {v.low:g}..{v.high:g}: {v.doc}")
+            for cls, ranges in mod.PROFILES.items():
+                spans = ", ".join(f"{k} {lo:g}..{hi:g}" for k, (lo, hi) in ranges.items())
+                print(f"    {cls:18s} {spans}")
+    return 0
+
+
 def _pair(text: str) -> tuple[float, float]:
     parts = text.split(":")
     try:
@@ -368,6 +388,24 @@ def build_parser() -> argparse.ArgumentParser:
     fc.add_argument("--tolerance", type=float, default=1e-6, help="exit 1 above this deviation in m (1e-6)")
     fc.add_argument("-o", "--output", help="write the co-simulated trajectories (CSV) here")
     fc.set_defaults(func=_cmd_fmu_cosim)
+
+    d = sub.add_parser("describe", help="scenarios from a description (LinguaSim method): generate, run, score, refine")
+    d.add_argument("text", nargs="?", help="the description (quote it); or --layers FILE")
+    d.add_argument("-o", "--output", required=True, help="output directory")
+    d.add_argument("--layers", help="a layers JSON file (vei-layers/1) instead of a description")
+    d.add_argument("--count", type=int, default=32, help="scenarios to generate (default 32)")
+    d.add_argument("--seed", type=int, default=0, help="seed of the sampling (default 0); scenario i uses seed*1000+i")
+    d.add_argument("--backend", choices=("rules", "llm"), default="rules", help="rules (offline, default) or llm")
+    d.add_argument("--llm-url", help="OpenAI-compatible endpoint base URL (or VEI_LLM_URL)")
+    d.add_argument("--llm-model", help="model name (or VEI_LLM_MODEL)")
+    d.add_argument("--refine", action="store_true", help="adjust towards the description's intent, up to 5 runs each")
+    d.add_argument("--jobs", type=int, default=None, help="worker processes (default: the CPU count)")
+    d.add_argument("--layers-only", action="store_true", help="write the layers JSON of each scenario, run nothing")
+    d.set_defaults(func=_cmd_describe)
+
+    b = sub.add_parser("behaviours", help="list the atomic behaviours of vei describe")
+    b.add_argument("-v", "--verbose", action="store_true", help="with their parameters and criticality ranges")
+    b.set_defaults(func=_cmd_behaviours)
 
     v = sub.add_parser("validate", help="check .xosc/.xodr files against the ASAM XSDs and VEI's own rules")
     v.add_argument("files", nargs="+", help=".xosc and .xodr files")

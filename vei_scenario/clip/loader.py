@@ -52,7 +52,8 @@ def _field_path(parts) -> str:
     return out or "(top level)"
 
 
-def _read_json(path: Path) -> Any:
+def read_json(path: Path) -> Any:
+    """Strict JSON (no NaN or Infinity literals) with errors naming the line and column."""
     if not path.is_file():
         raise VeiInputError(path, "", "file not found")
     try:
@@ -107,7 +108,7 @@ def _strictly_increasing(path: Path, values: np.ndarray, field: str) -> None:
 def load_clip(path: str | Path) -> Clip:
     """Read, validate and normalise a clip file. Raises :class:`VeiInputError` on any bad input."""
     path = Path(path)
-    doc = _read_json(path)
+    doc = read_json(path)
     _schema_check(path, doc)
 
     ego_doc = doc["ego"]

@@ -12,6 +12,7 @@ import math
 
 from vei_scenario.errors import VeiInputError
 from vei_scenario.interpreter.entities import Entity, Polyline
+from vei_scenario.interpreter.positions import ensure_lane
 from vei_scenario.models.cap import BRAKE, CapParameters, CapState, ThreatView, cap_step, threat_in_corridor
 from vei_scenario.models.sfm import RIDER_TYPES, SfmParameters, SfmState, sfm_step
 from vei_scenario.models.vehicle import Longitudinal, longitudinal_step
@@ -130,7 +131,9 @@ class SocialForceController(Controller):
 
 
 class CollisionAvoidanceController(Controller):
-    """The ego's collision-avoidance planner: longitudinal only; the path stays the followed one."""
+    """The ego's collision-avoidance planner: longitudinal only; the path stays the followed one (or
+    the lane, for an ego that drives by lane). It brakes for ``threatEntity`` and, when the property
+    ``watchEntities`` lists more (space-separated), for whichever of them meets its corridor first."""
 
     domains = ("longitudinal",)
 
@@ -142,28 +145,71 @@ class CollisionAvoidanceController(Controller):
         if not math.isfinite(self.cruise) or self.cruise < 0:
             raise ctx.error(el, "CollisionAvoidancePlanner needs a non-negative property cruiseSpeed")
         self.threat = props.get("threatEntity")
+        self.watch = [n for n in props.get("watchEntities", "").split() if n != self.threat]
+        if self.threat is None and not self.watch:
+            raise ctx.error(el, "CollisionAvoidancePlanner needs a threatEntity or watchEntities")
+        # optional adaptive cruise: follow the nearest watched entity ahead in the path at this time gap
+        self.follow_gap_s = float(props.get("followTimeGap", "0") or 0)
         self.state = CapState()
         self.held_command = 0.0  # Jacobi coupling: the command computed in the previous step
 
     def move(self, e: Entity, ctx, dt: float) -> bool:
         if not self.enabled:
             return False
-        threat = ctx.observed(self.threat)
-        if threat is None:
-            raise ctx.error(self.el, f"CollisionAvoidancePlanner: threatEntity {self.threat!r} is not an entity")
-        view = threat_view(e, threat, self.params.corridor_margin_m)
-        resume = (
-            threat_view(e, threat, self.params.corridor_margin_m, self.cruise) if self.state.mode == BRAKE else None
-        )
-        self.state, a_cmd, _ = cap_step(self.state, self.params, self.cruise, e.speed, view, dt, resume)
+        threats = []
+        for name in ([self.threat] if self.threat is not None else []) + self.watch:
+            other = ctx.observed(name)
+            if other is None:
+                raise ctx.error(self.el, f"CollisionAvoidancePlanner: {name!r} is not an entity")
+            threats.append(other)
+        margin = self.params.corridor_margin_m
+        view = min((threat_view(e, t, margin) for t in threats), key=lambda v: v.time_to_conflict_s)
+        resume = None
+        if self.state.mode == BRAKE:
+            resume = min((threat_view(e, t, margin, self.cruise) for t in threats), key=lambda v: v.time_to_conflict_s)
+        cruise = self._acc_target(e, threats) if self.follow_gap_s > 0 else self.cruise
+        self.state, a_cmd, _ = cap_step(self.state, self.params, cruise, e.speed, view, dt, resume)
         if ctx.snapshot is not None:  # Jacobi: the vehicle gets this command at the next step
             a_cmd, self.held_command = self.held_command, a_cmd
         lon = longitudinal_step(Longitudinal(0.0, e.speed, e.accel), a_cmd, e.limits, dt)
-        advance_along(e, lon.s)
+        if e.follower is None:  # an ego that drives by lane keeps to it
+            from vei_scenario.interpreter.actions import lane_keep  # (actions imports this module)
+
+            ensure_lane(ctx, e)
+            if e.lane is not None:
+                lane_keep(e, lon.s, ctx)
+            else:
+                advance_along(e, lon.s)
+        else:
+            advance_along(e, lon.s)
         e.speed, e.accel = lon.v, lon.a
         e.status = f"cap_{self.state.mode}"
         return True
 
+    def _acc_target(self, e: Entity, others: list[Entity]) -> float:
+        """The cruise target with adaptive cruise: the leader's speed plus a correction that closes the
+        gap to ``d0 + v·followTimeGap`` in ``ACC_RELAX_S``; the cruise speed when nobody leads. The
+        leader is the nearest entity whose box lies ahead of the ego and overlaps its path width."""
+        c, s = math.cos(e.yaw), math.sin(e.yaw)
+        best = None
+        for o in others:
+            dx, dy = o.x - e.x, o.y - e.y
+            ahead, side = dx * c + dy * s, -dx * s + dy * c
+            if ahead <= 0 or abs(side) > 0.5 * (e.width + o.width):
+                continue
+            gap = ahead - 0.5 * (e.length + o.length)
+            if best is None or gap < best[0]:
+                rel = math.cos(o.yaw - e.yaw)
+                best = (gap, o.speed * rel)
+        if best is None:
+            return self.cruise
+        gap, v_lead = best
+        desired = self.params.d0_m + e.speed * self.follow_gap_s
+        return max(0.0, min(self.cruise, v_lead + (gap - desired) / ACC_RELAX_S))
+
+
+#: Time in which the adaptive cruise closes a gap error (s).
+ACC_RELAX_S = 3.0
 
 CONTROLLERS = {
     "SocialForceModel": SocialForceController,

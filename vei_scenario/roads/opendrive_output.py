@@ -17,7 +17,7 @@ from vei_scenario.safe_xml import safe_parser
 def finalize_opendrive(
     xodr: bytes | etree._Element,
     name: str,
-    proj_string: str,
+    proj_string: str | None,
     date: str | None,
     bounds: tuple[float, float, float, float] | None = None,
 ) -> bytes:
@@ -27,6 +27,8 @@ def finalize_opendrive(
     repair_parampoly3_lengths(root)
     for c in root.xpath("//comment()"):
         c.getparent().remove(c)
+    for empty in root.xpath("//road/elevationProfile[not(*)] | //road/lateralProfile[not(*)]"):
+        empty.getparent().remove(empty)  # (scenariogeneration writes them; the XSD wants content)
     header = root.find("header")
     if header is None:
         raise ValueError("OpenDRIVE document without <header>")
@@ -39,10 +41,11 @@ def finalize_opendrive(
     if bounds is not None and all(v in (None, "0", "0.0") for v in extent):
         for k, v in zip(("west", "south", "east", "north"), bounds):
             header.set(k, f"{v:.2f}")
-    geo = header.find("geoReference")
-    if geo is None:
-        geo = etree.Element("geoReference")
-        header.insert(0, geo)
-    geo.text = etree.CDATA(proj_string)
+    if proj_string is not None:  # (a generated map has no place on earth: no geoReference)
+        geo = header.find("geoReference")
+        if geo is None:
+            geo = etree.Element("geoReference")
+            header.insert(0, geo)
+        geo.text = etree.CDATA(proj_string)
     etree.indent(root, space="    ")
     return etree.tostring(root, xml_declaration=True, encoding="UTF-8", pretty_print=True)

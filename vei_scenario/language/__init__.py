@@ -1,0 +1,92 @@
+"""Language → interactive scenario (the LinguaSim method).
+
+Pipeline: description → backend (``rules_backend`` offline and seeded, ``llm_backend`` optional, or
+layers JSON edited by hand) → layers (``layers``: environment, ego, adversaries with behaviour
+topologies, background; JSON Schema ``schemas/layers.schema.json``) → ``scenario_writer`` (maps,
+placement, ``behaviours``) → OpenSCENARIO + OpenDRIVE → ``evaluation`` (closed-loop run, EI, ACT,
+comfort, collisions) → ``refinement`` → ``describe`` (batches, CSV/JSON, HTML).
+"""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+from vei_scenario.errors import VeiInputError
+
+
+def describe_command(args) -> int:
+    """``vei describe``: the CLI layer over :func:`vei_scenario.language.describe.describe_batch`."""
+    from vei_scenario.language.describe import describe_batch
+    from vei_scenario.language.layers import load_layers
+    from vei_scenario.language.placement import PlacementError
+    from vei_scenario.language.rules_backend import NotUnderstood, layers_from_text, read
+
+    if (args.text is None) == (args.layers is None):
+        raise VeiInputError(None, "vei describe", "give either a description or --layers FILE")
+    if not 1 <= args.count <= 10000:
+        raise VeiInputError(None, "--count", f"{args.count} is outside 1..10000")
+    if args.seed < 0:
+        raise VeiInputError(None, "--seed", "must be non-negative")
+    out = Path(args.output)
+    if args.layers is not None:
+        fixed = load_layers(Path(args.layers))
+        count, text, backend = 1, fixed.get("description", ""), "layers"
+
+        def make(i: int) -> dict:
+            return fixed
+
+    elif args.backend == "llm":
+        from vei_scenario.language.llm_backend import layers_from_llm
+
+        count, text, backend = args.count, args.text, "llm"
+
+        def make(i: int) -> dict:
+            return layers_from_llm(text, args.seed * 1000 + i, args.llm_url, args.llm_model)
+
+    else:
+        count, text, backend = args.count, args.text, "rules"
+        try:
+            reading = read(text)
+        except NotUnderstood as exc:
+            raise VeiInputError(None, "description", str(exc)) from None
+        from vei_scenario.language.rules_backend import sample_layers
+
+        def make(i: int) -> dict:
+            return sample_layers(read(text), text, args.seed * 1000 + i)
+
+        del reading, layers_from_text
+    if args.layers_only:
+        import json
+
+        from vei_scenario.atomic_io import OutputSet
+        from vei_scenario.language.layers import validate_layers
+
+        files = OutputSet()
+        for i in range(count):
+            layers = make(i)
+            validate_layers(layers, f"scenario {i}")
+            files.add(out / f"scenario_{i:03d}" / "layers.json", json.dumps(layers, indent=2) + "\n")
+        files.commit()
+        print(f"wrote {count} layers file(s) under {out}")
+        return 0
+
+    def progress(done: int, total: int) -> None:
+        if sys.stderr.isatty():
+            print(f"\r{done}/{total} scenarios", end="" if done < total else "\n", file=sys.stderr, flush=True)
+
+    try:
+        _, doc = describe_batch(make, count, out, text, backend, args.seed, args.refine, args.jobs, progress)
+    except (PlacementError, ValueError, KeyError) as exc:
+        if isinstance(exc, VeiInputError):
+            raise
+        raise VeiInputError(args.layers, "layers", str(exc).strip("'\"")) from None
+    s = doc["summary"]
+    act = "none" if s["mean_min_act_s"] is None else f"{s['mean_min_act_s']} s"
+    print(
+        f"{s['scenarios']} scenario(s): crash rate {100 * s['crash_rate']:.1f} % ({s['crashes']}), mean min ACT {act}, "
+        f"mean comfort {s['mean_comfort']}, mean max EI {s['mean_max_ei_mps']} m/s; intent met {s['intent_met']}"
+        + (f" after {s['episodes_run']} runs" if args.refine else "")
+    )
+    print(f"wrote {out / 'batch.csv'}, {out / 'batch.json'}, {out / 'summary.html'} and {count} scenario folder(s)")
+    return 0

@@ -1,0 +1,124 @@
+"""What an atomic behaviour is: a named agent, a configuration with ranges, and OpenSCENARIO steps.
+
+A behaviour compiles to :class:`Step` s, each one OpenSCENARIO ``Event`` of the actor's maneuver;
+the steps of one behaviour run one after another (a step starts once the previous one is complete,
+and when its own conditions hold). The writer (:mod:`vei_scenario.language.scenario_writer`) chains
+behaviours into sequences and parallel groups with ``StoryboardElementStateCondition`` s.
+
+Configuration values carry units in their names (``_m``, ``_s``, ``_mps``, ``_mps2``). ``PROFILES``
+gives, per criticality word class (dangerous, moderate, safe), the ranges the rules backend samples
+from; :data:`Parameter.default` is what an unqualified description gets.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from scenariogeneration import xosc
+
+#: Standard gravity (m/s²): friction x g bounds braking.
+G = 9.81
+
+
+@dataclass(frozen=True)
+class Parameter:
+    default: float
+    low: float
+    high: float
+    doc: str
+
+
+@dataclass
+class Condition:
+    """A start condition of a step besides the previous step's completion.
+
+    kind: ``ego_within`` (the free-space longitudinal distance between the ego and the actor below
+    ``value`` m), ``ego_beyond`` (above it; OpenSCENARIO's distance has no sign, so a behaviour
+    passes "alongside" first to know which side it is on), ``time_gap`` (the ego's time headway to
+    the actor below ``value`` s)."""
+
+    kind: str
+    value: float
+    entity: str = "Ego"
+
+
+@dataclass
+class Step:
+    name: str
+    actions: list
+    conditions: list[Condition] = field(default_factory=list)
+    delay_s: float = 0.0
+    #: A step whose actions never end by themselves (continuous following, holding a speed) hands
+    #: over to what follows after ``hold_s`` seconds.
+    hold_s: float | None = None
+
+
+@dataclass
+class ActorContext:
+    """What a behaviour may know when it compiles: who acts, on which map, in which lanes."""
+
+    actor: str
+    actor_type: str
+    ego: str
+    ego_speed_mps: float
+    actor_speed_mps: float
+    ego_lane_id: int
+    actor_lane_id: int
+    actor_road: str
+    actor_s_m: float
+    lanes: int
+    friction: float
+    map_kind: str
+    #: (road id, s at its junction end) of the actor's approach, and the road a turn leads to
+    exits: dict[str, str] = field(default_factory=dict)
+    junction_end_s_m: float | None = None
+    #: For crossing behaviours: the path across the ego's road as world points, and the actor's
+    #: distance to the ego's lane centre along it (m); the ego's distance to the conflict (m).
+    crossing_path: list[tuple[float, float, float]] | None = None
+    crossing_distance_m: float | None = None
+    trajectories: dict[str, xosc.Trajectory] = field(default_factory=dict)
+
+    def max_decel(self, wanted: float) -> float:
+        """``wanted`` bounded by what the road's friction allows."""
+        return min(wanted, self.friction * G)
+
+
+def speed_action(speed: float, rate: float | None = None, time: float | None = None) -> xosc.AbsoluteSpeedAction:
+    """A speed change at a constant rate (m/s²) or over a time (s); a step change with neither."""
+    if rate is not None:
+        dyn = xosc.TransitionDynamics(xosc.DynamicsShapes.linear, xosc.DynamicsDimension.rate, round(rate, 3))
+    elif time is not None:
+        dyn = xosc.TransitionDynamics(xosc.DynamicsShapes.sinusoidal, xosc.DynamicsDimension.time, round(time, 3))
+    else:
+        dyn = xosc.TransitionDynamics(xosc.DynamicsShapes.step, xosc.DynamicsDimension.time, 0.0)
+    return xosc.AbsoluteSpeedAction(round(speed, 3), dyn)
+
+
+def lane_change_to_ego(ego: str, duration: float) -> xosc.RelativeLaneChangeAction:
+    dyn = xosc.TransitionDynamics(xosc.DynamicsShapes.sinusoidal, xosc.DynamicsDimension.time, round(duration, 3))
+    return xosc.RelativeLaneChangeAction(0, ego, dyn)
+
+
+def lane_change_to(lane_id: int, duration: float) -> xosc.AbsoluteLaneChangeAction:
+    dyn = xosc.TransitionDynamics(xosc.DynamicsShapes.sinusoidal, xosc.DynamicsDimension.time, round(duration, 3))
+    return xosc.AbsoluteLaneChangeAction(lane_id, dyn)
+
+
+def route_action(ctx: ActorContext, turn: str, exit_s_m: float = 40.0) -> xosc.AssignRouteAction:
+    """A route from the actor's position through the junction to the exit on side ``turn``
+    (straight, left, right): it leaves on the exit arm's lanes that drive away from the junction."""
+    exit_road = ctx.exits.get(turn)
+    if exit_road is None:
+        raise ValueError(f"{ctx.actor}: the {ctx.map_kind} map has no {turn} exit")
+    route = xosc.Route(f"{ctx.actor}_{turn}")
+    start = xosc.LanePosition(round(ctx.actor_s_m, 3), 0, ctx.actor_lane_id, ctx.actor_road)
+    route.add_waypoint(start, xosc.RouteStrategy.shortest)
+    route.add_waypoint(xosc.LanePosition(exit_s_m, 0, 1, exit_road), xosc.RouteStrategy.shortest)
+    return xosc.AssignRouteAction(route)
+
+
+def value(cfg: dict, params: dict[str, Parameter], name: str) -> float:
+    """A configuration value, its default when absent, clipped to the parameter's range."""
+    p = params[name]
+    v = float(cfg.get(name, p.default))
+    return min(max(v, p.low), p.high)

@@ -1,0 +1,54 @@
+"""cross in front: a vulnerable road user crosses the ego's road from the roadside.
+
+It waits at the kerb and sets off when the ego is close enough to meet it: the ego reaches the
+crossing point ``arrival_gap_s`` after the road user reaches the ego's lane (negative: before). It
+follows a straight path across (FollowTrajectoryAction, which esmini plays); an e-scooter or bicycle
+with ``agent`` = ``sfm`` rides it with the social force model instead, reacting to the ego.
+"""
+
+from __future__ import annotations
+
+from scenariogeneration import xosc
+
+from vei_scenario.language.behaviours.base import ActorContext, Condition, Parameter, Step, speed_action, value
+
+NAME = "cross_in_front"
+AGENT = "route follower (e-scooter social-force rider with agent=sfm)"
+SUMMARY = "Cross the ego's road from the kerb, timed to meet the ego."
+DEFAULT_SPAWN = {"relation": "roadside_right"}
+PARAMETERS = {
+    "crossing_speed_mps": Parameter(1.5, 0.5, 7.0, "speed across the road (m/s)"),
+    "arrival_gap_s": Parameter(
+        0.5, -3.0, 6.0, "the ego reaches the crossing this long after the road user reaches its lane (s)"
+    ),
+}
+PROFILES = {
+    "dangerous": {"arrival_gap_s": (-0.2, 0.3)},
+    "moderate": {"arrival_gap_s": (1.2, 1.8)},
+    "safe": {"arrival_gap_s": (3.0, 4.0)},
+}
+
+
+def trigger_distance_m(ctx: ActorContext, cfg: dict) -> float:
+    """Free-space distance of the ego at which the road user sets off."""
+    v = value(cfg, PARAMETERS, "crossing_speed_mps")
+    t_reach = (ctx.crossing_distance_m or 0.0) / v
+    return max(1.0, ctx.ego_speed_mps * (t_reach + value(cfg, PARAMETERS, "arrival_gap_s")))
+
+
+def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
+    if ctx.crossing_path is None:
+        raise ValueError(f"{ctx.actor}: cross_in_front needs a roadside spawn (roadside_right or roadside_left)")
+    traj = xosc.Trajectory(f"{ctx.actor}_crossing", False)
+    traj.add_shape(
+        xosc.Polyline(
+            [], [xosc.WorldPosition(round(x, 3), round(y, 3), 0, round(h, 5)) for x, y, h in ctx.crossing_path]
+        )
+    )
+    ctx.trajectories[traj.name] = traj
+    follow = xosc.FollowTrajectoryAction(traj, xosc.FollowingMode.position)
+    v = value(cfg, PARAMETERS, "crossing_speed_mps")
+    actions = [follow, speed_action(v, time=0.5)]
+    if cfg.get("agent") == "sfm" and ctx.actor_type in ("e-scooter", "bicycle"):
+        actions.append(xosc.ActivateControllerAction(lateral=True, longitudinal=True))
+    return [Step("cross", actions, conditions=[Condition("ego_within", round(trigger_distance_m(ctx, cfg), 2))])]

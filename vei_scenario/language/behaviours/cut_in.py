@@ -1,0 +1,76 @@
+"""cut in: from the neighbouring lane into the ego's lane, just in front of it.
+
+The actor drives in the lane beside the ego, ahead of it and slower (the ego closes in); when the
+free-space gap between them falls to ``gap_m`` it changes into the ego's lane over
+``lane_change_s`` (sinusoidal) and at the same time slows by ``brake_delta_mps`` at
+``brake_rate_mps2``. Gap, lane-change time and braking are what the criticality words set.
+"""
+
+from __future__ import annotations
+
+from vei_scenario.language.behaviours.base import (
+    ActorContext,
+    Condition,
+    Parameter,
+    Step,
+    lane_change_to_ego,
+    speed_action,
+    value,
+)
+
+NAME = "cut_in"
+AGENT = "route follower"
+SUMMARY = "Change into the ego's lane just in front of it once the gap has closed to gap_m."
+DEFAULT_SPAWN = {"relation": "left"}
+PARAMETERS = {
+    "gap_m": Parameter(10.0, 0.5, 80.0, "free-space gap to the ego when the lane change starts (m)"),
+    "lane_change_s": Parameter(2.5, 0.6, 6.0, "duration of the lane change (s)"),
+    "closing_mps": Parameter(2.0, 0.3, 10.0, "how much slower than the ego it drives before the cut-in (m/s)"),
+    "brake_delta_mps": Parameter(0.0, 0.0, 15.0, "further slow-down during the cut-in (m/s)"),
+    "brake_rate_mps2": Parameter(2.0, 0.3, 9.0, "rate of that slow-down (m/s²)"),
+    "lead_s": Parameter(2.5, 0.5, 8.0, "seconds of closing in before the gap is down to gap_m (sets the spawn)"),
+}
+PROFILES = {
+    "dangerous": {
+        "gap_m": (1.0, 6.0),
+        "lane_change_s": (1.0, 1.8),
+        "closing_mps": (2.0, 4.0),
+        "brake_delta_mps": (1.5, 4.5),
+        "brake_rate_mps2": (4.0, 7.0),
+    },
+    "moderate": {
+        "gap_m": (9.0, 14.0),
+        "lane_change_s": (2.0, 3.0),
+        "closing_mps": (1.5, 2.5),
+        "brake_delta_mps": (0.5, 1.5),
+        "brake_rate_mps2": (1.0, 2.0),
+    },
+    "safe": {
+        "gap_m": (28.0, 40.0),
+        "lane_change_s": (3.0, 4.5),
+        "closing_mps": (0.5, 1.0),
+        "brake_delta_mps": (0.0, 0.0),
+        "brake_rate_mps2": (0.5, 1.0),
+    },
+}
+
+
+def initial_speed(ego_speed: float, cfg: dict) -> float:
+    """The actor's speed before the cut-in: slower than the ego by ``closing_mps``."""
+    return max(1.0, ego_speed - value(cfg, PARAMETERS, "closing_mps"))
+
+
+def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
+    gap = value(cfg, PARAMETERS, "gap_m")
+    after = max(0.0, ctx.actor_speed_mps - value(cfg, PARAMETERS, "brake_delta_mps"))
+    rate = ctx.max_decel(value(cfg, PARAMETERS, "brake_rate_mps2"))
+    actions = [lane_change_to_ego(ctx.ego, value(cfg, PARAMETERS, "lane_change_s")), speed_action(after, rate=rate)]
+    return [Step("cut_in", actions, conditions=[Condition("ego_within", gap)])]
+
+
+def place(ego_speed: float, lengths_m: float, cfg: dict) -> tuple[float, float]:
+    """(spawn longitudinal_m, speed_mps): beside and ahead of the ego, ``lead_s`` seconds of closing
+    before the gap is down to ``gap_m``."""
+    closing = value(cfg, PARAMETERS, "closing_mps")
+    lead = float(cfg.get("lead_s", 2.5))
+    return lengths_m / 2 + value(cfg, PARAMETERS, "gap_m") + closing * lead, initial_speed(ego_speed, cfg)

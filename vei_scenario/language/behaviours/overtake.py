@@ -1,0 +1,56 @@
+"""overtake: pull out to the left, pass the ego, and return into its lane ``gap_m`` ahead of it."""
+
+from __future__ import annotations
+
+from vei_scenario.language.behaviours.base import (
+    ActorContext,
+    Condition,
+    Parameter,
+    Step,
+    lane_change_to,
+    lane_change_to_ego,
+    speed_action,
+    value,
+)
+
+NAME = "overtake"
+AGENT = "route follower"
+SUMMARY = "Pull out to the left, pass the ego and cut back in gap_m ahead of it."
+DEFAULT_SPAWN = {"relation": "behind"}
+PARAMETERS = {
+    "speed_gain_mps": Parameter(5.0, 1.0, 20.0, "how much faster than the ego it passes (m/s)"),
+    "gap_m": Parameter(12.0, 1.0, 60.0, "free-space gap ahead of the ego when it returns (m)"),
+    "lane_change_s": Parameter(2.5, 0.8, 6.0, "duration of each lane change (s)"),
+    "delay_s": Parameter(0.5, 0.0, 30.0, "wait before pulling out (s)"),
+}
+PROFILES = {
+    "dangerous": {"gap_m": (1.0, 4.0), "lane_change_s": (1.0, 1.6)},
+    "moderate": {"gap_m": (8.0, 14.0), "lane_change_s": (2.0, 3.0)},
+    "safe": {"gap_m": (25.0, 35.0), "lane_change_s": (3.0, 4.0)},
+}
+
+
+def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
+    dur = value(cfg, PARAMETERS, "lane_change_s")
+    # lane ids of right-hand traffic: the lane to the left of -k is -k+1; from -1 it is the oncoming +1
+    left = ctx.actor_lane_id + 1 if ctx.actor_lane_id != -1 else 1
+    fast = ctx.ego_speed_mps + value(cfg, PARAMETERS, "speed_gain_mps")
+    return [
+        Step(
+            "pull_out",
+            [lane_change_to(left, dur), speed_action(fast, rate=2.5)],
+            delay_s=value(cfg, PARAMETERS, "delay_s"),
+        ),
+        # alongside first (free space gap zero), then far enough ahead: the distance condition has no sign
+        Step("alongside", [speed_action(fast, rate=2.5)], conditions=[Condition("ego_within", 0.01)]),
+        Step(
+            "cut_back",
+            [lane_change_to_ego(ctx.ego, dur)],
+            conditions=[Condition("ego_beyond", value(cfg, PARAMETERS, "gap_m"))],
+        ),
+    ]
+
+
+def place(ego_speed: float, lengths_m: float, cfg: dict) -> tuple[float, float]:
+    """(spawn longitudinal_m, speed_mps): behind the ego, at its speed until it pulls out."""
+    return -(lengths_m / 2 + 15.0), ego_speed

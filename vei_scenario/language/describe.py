@@ -1,0 +1,216 @@
+"""``describe``: a description (or layers JSON) → a batch of scenarios, run, scored and refined.
+
+The library behind ``vei describe``. Per scenario ``i`` of a batch: layers from the backend (the
+rules backend with seed ``seed·1000 + i``), validated against ``schemas/layers.schema.json``,
+written as OpenSCENARIO + OpenDRIVE, run closed loop at the layers' rate and scored
+(:mod:`~vei_scenario.language.evaluation`); with ``refine``, adjusted towards the description's
+intent and run again, up to five episodes (:mod:`~vei_scenario.language.refinement`). Scenarios
+run in parallel worker processes; everything is rendered first and written together.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import multiprocessing
+import os
+import tempfile
+from collections.abc import Callable
+from dataclasses import dataclass
+from pathlib import Path
+
+from vei_scenario.atomic_io import OutputSet
+from vei_scenario.language.evaluation import evaluate, intent_met
+from vei_scenario.language.layers import validate_layers
+from vei_scenario.language.refinement import MAX_EPISODES, adjust
+from vei_scenario.language.scenario_writer import write_scenario
+
+SCENARIO_STEM = "scenario"
+
+
+@dataclass
+class ScenarioRecord:
+    index: int
+    layers: dict
+    files: dict[str, bytes]
+    outcome: dict
+    episodes: list[dict]
+
+
+def run_one(layers: dict, index: int, refine: bool) -> ScenarioRecord:
+    """Write, run and score one scenario; with ``refine``, adjust and rerun until its intent is met
+    or the episodes are spent."""
+    episodes: list[dict] = []
+    intent = layers.get("intent", "unspecified")
+    with tempfile.TemporaryDirectory(prefix="vei-describe-") as tmp:
+        for episode in range(MAX_EPISODES if refine else 1):
+            written = write_scenario(layers, SCENARIO_STEM, Path(tmp))
+            xosc = Path(tmp) / f"{SCENARIO_STEM}.xosc"
+            (Path(tmp) / f"{SCENARIO_STEM}.xodr").write_bytes(written.xodr)
+            xosc.write_bytes(written.xosc)
+            outcome = evaluate(xosc, float(layers.get("rate_hz", 20.0)))
+            met, direction = intent_met(intent, outcome)
+            episodes.append(
+                {
+                    "episode": episode + 1,
+                    "configuration": [
+                        {
+                            "adversary": a["name"],
+                            "spawn": a["spawn"],
+                            "speed_mps": a.get("speed_mps"),
+                            "behaviour": a["behaviour"],
+                        }
+                        for a in layers["adversaries"]
+                    ],
+                    "ego_collided": outcome["ego_collided"],
+                    "act_min_s": outcome["act_min_s"],
+                    "intent_met": met,
+                    "adjustment": direction or None,
+                }
+            )
+            if met or not refine or episode == MAX_EPISODES - 1:
+                break
+            layers = adjust(layers, direction, episode)
+    files = {f"{SCENARIO_STEM}.xosc": written.xosc, f"{SCENARIO_STEM}.xodr": written.xodr}
+    files["layers.json"] = (json.dumps(layers, indent=2, sort_keys=False) + "\n").encode()
+    return ScenarioRecord(index, layers, files, outcome, episodes)
+
+
+def _work(args) -> ScenarioRecord:
+    layers, index, refine = args
+    return run_one(layers, index, refine)
+
+
+def batch_summary(records: list[ScenarioRecord]) -> dict:
+    n = len(records)
+    acts = [r.outcome["act_min_s"] for r in records if r.outcome["act_min_s"] is not None]
+    comforts = [r.outcome["comfort"] for r in records if r.outcome["comfort"] is not None]
+    eis = [r.outcome["ei_max_mps"] for r in records]
+    crashes = sum(r.outcome["ego_collided"] for r in records)
+    return {
+        "scenarios": n,
+        "crash_rate": round(crashes / n, 4) if n else None,
+        "crashes": crashes,
+        "mean_min_act_s": round(sum(acts) / len(acts), 4) if acts else None,
+        "mean_comfort": round(sum(comforts) / len(comforts), 4) if comforts else None,
+        "mean_max_ei_mps": round(sum(eis) / len(eis), 4) if eis else None,
+        "intent_met": sum(r.episodes[-1]["intent_met"] for r in records),
+        "episodes_run": sum(len(r.episodes) for r in records),
+    }
+
+
+COLUMNS = [
+    "scenario",
+    "seed",
+    "map",
+    "weather",
+    "ego_speed_mps",
+    "behaviours",
+    "ego_collided",
+    "collided_with",
+    "act_min_s",
+    "ei_max_mps",
+    "min_ttc_s",
+    "alert_time_s",
+    "comfort",
+    "episodes",
+    "intent_met",
+]
+
+
+def _row(r: ScenarioRecord) -> dict:
+    o, lay = r.outcome, r.layers
+
+    def names(t):
+        if "behaviour" in t:
+            return [t["behaviour"]]
+        return [n for c in t.get("sequence", t.get("parallel", [])) for n in names(c)]
+
+    return {
+        "scenario": f"scenario_{r.index:03d}",
+        "seed": lay.get("seed"),
+        "map": lay["environment"]["map"]["kind"],
+        "weather": lay["environment"]["weather"]["condition"],
+        "ego_speed_mps": lay["ego"]["speed_mps"],
+        "behaviours": " ".join(f"{a['name']}:{'+'.join(names(a['behaviour']))}" for a in lay["adversaries"]),
+        "ego_collided": o["ego_collided"],
+        "collided_with": " ".join(o["collided_with"]),
+        "act_min_s": o["act_min_s"],
+        "ei_max_mps": o["ei_max_mps"],
+        "min_ttc_s": o["min_ttc_s"],
+        "alert_time_s": o["alert_time_s"],
+        "comfort": o["comfort"],
+        "episodes": len(r.episodes),
+        "intent_met": r.episodes[-1]["intent_met"],
+    }
+
+
+def batch_csv(records: list[ScenarioRecord]) -> str:
+    buf = io.StringIO()
+    w = csv.DictWriter(buf, COLUMNS, lineterminator="\n")
+    w.writeheader()
+    for r in records:
+        w.writerow({k: ("" if v is None else v) for k, v in _row(r).items()})
+    return buf.getvalue()
+
+
+def batch_document(description: str, backend: str, seed: int, refine: bool, records: list[ScenarioRecord]) -> dict:
+    return {
+        "description": description,
+        "backend": backend,
+        "seed": seed,
+        "refine": refine,
+        "summary": batch_summary(records),
+        "scenarios": [{**_row(r), "collisions": r.outcome["collisions"], "episodes": r.episodes} for r in records],
+    }
+
+
+def describe_batch(
+    make_layers: Callable[[int], dict],
+    count: int,
+    out_dir: Path | None,
+    description: str,
+    backend: str,
+    seed: int,
+    refine: bool = False,
+    jobs: int | None = None,
+    progress: Callable[[int, int], None] | None = None,
+) -> tuple[list[ScenarioRecord], dict]:
+    """Generate, run and score ``count`` scenarios (layers of scenario i: ``make_layers(i)``)."""
+    all_layers = []
+    for i in range(count):
+        layers = make_layers(i)
+        validate_layers(layers, f"scenario {i}")
+        all_layers.append(layers)
+    tasks = [(layers, i, refine) for i, layers in enumerate(all_layers)]
+    jobs = jobs or min(len(tasks), os.cpu_count() or 1)
+    records: list[ScenarioRecord] = []
+    if jobs > 1 and len(tasks) > 1:
+        with multiprocessing.get_context("fork").Pool(jobs) as pool:
+            for rec in pool.imap(_work, tasks):
+                records.append(rec)
+                if progress:
+                    progress(len(records), len(tasks))
+    else:
+        for t in tasks:
+            records.append(_work(t))
+            if progress:
+                progress(len(records), len(tasks))
+    doc = batch_document(description, backend, seed, refine, records)
+    if out_dir is not None:
+        from vei_scenario.language.report_html import summary_html
+
+        files = OutputSet()
+        for r in records:
+            for name, data in r.files.items():
+                files.add(out_dir / f"scenario_{r.index:03d}" / name, data)
+            if refine:
+                files.add(
+                    out_dir / f"scenario_{r.index:03d}" / "episodes.json", json.dumps(r.episodes, indent=2) + "\n"
+                )
+        files.add(out_dir / "batch.csv", batch_csv(records))
+        files.add(out_dir / "batch.json", json.dumps(doc, indent=2) + "\n")
+        files.add(out_dir / "summary.html", summary_html(doc))
+        files.commit()
+    return records, doc

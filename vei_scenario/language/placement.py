@@ -1,0 +1,115 @@
+"""Where the layers put the ego and the others, in OpenDRIVE lane terms.
+
+Lanes of the layers count from the kerb: lane 1 is the rightmost driving lane of the ego's
+direction (OpenDRIVE id ``-n`` on an ``n``-lane side), lane ``n`` the one next to the centre line
+(id ``-1``). A spawn relation is resolved against the ego's lane; one that names a lane the map
+does not have (``left`` of the leftmost lane) is refused with the reason, never moved silently.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from vei_scenario.language.maps import JUNCTION_RADIUS_M, LANE_WIDTH_M, MapInfo
+
+#: Default distance of the ego before the junction, curve or roundabout (m).
+DEFAULT_FEATURE_DISTANCE_M = 70.0
+#: Where the ego starts on a straight road (m from its start): room for traffic behind.
+STRAIGHT_START_S_M = 120.0
+#: Distance of the kerb-side start of a crossing road user beyond the outermost lane edge (m).
+KERB_OFFSET_M = 1.0
+DEFAULT_LONGITUDINAL_M = {"ahead": 30.0, "behind": -20.0, "left": 0.0, "right": 0.0, "oncoming": 90.0}
+
+
+class PlacementError(ValueError):
+    """A spawn the map cannot hold."""
+
+
+@dataclass(frozen=True)
+class Pose:
+    road: str
+    lane_id: int
+    s: float
+    #: Lateral offset from the lane centre (m); roadside spawns stand beyond the kerb.
+    offset: float = 0.0
+
+    @property
+    def against_reference(self) -> bool:
+        """Left lanes (positive ids) drive against the road's reference direction."""
+        return self.lane_id > 0
+
+
+def lane_id(lanes: int, lane: int) -> int:
+    """OpenDRIVE id of layers lane ``lane`` (1 = kerb) on the right side of an ``lanes``-lane road."""
+    if not 1 <= lane <= lanes:
+        raise PlacementError(f"lane {lane} does not exist: the road has {lanes} lane(s) per direction")
+    return -(lanes - lane + 1)
+
+
+def ego_pose(info: MapInfo, ego: dict) -> Pose:
+    lid = lane_id(info.lanes, int(ego["lane"]))
+    dist = float(ego.get("distance_m", DEFAULT_FEATURE_DISTANCE_M))
+    placement = ego["placement"]
+    if placement == "straight" or info.feature_s_m is None:
+        if placement not in ("straight",):
+            raise PlacementError(f"ego placement {placement!r} needs a map with one; this map is {info.kind!r}")
+        return Pose(info.ego_road, lid, min(STRAIGHT_START_S_M, info.ego_road_length_m / 3))
+    wanted = {"before_junction": ("crossroad",), "before_roundabout": ("roundabout",), "on_curve": ("curve",)}
+    if info.kind not in wanted.get(placement, ()):
+        raise PlacementError(f"ego placement {placement!r} does not fit a {info.kind!r} map")
+    if dist > info.feature_s_m - 5.0:
+        raise PlacementError(f"ego distance_m {dist} m is longer than the {info.feature_s_m:.0f} m road before it")
+    return Pose(info.ego_road, lid, info.feature_s_m - dist)
+
+
+def junction_conflict_m(info: MapInfo, ego_lane_id: int, relation: str, actor_lane_id: int) -> tuple[float, float]:
+    """(ego's distance from its junction entry to where the paths cross, actor's from its entry),
+    both going straight on a crossroad whose arms meet at right angles: the ego's lane centre lies
+    ``(k - 0.5)·w`` right of its arm's reference line, the actor's likewise."""
+    if info.kind != "crossroad":
+        raise PlacementError(f"spawn {relation!r} needs a crossroad map; this map is {info.kind!r}")
+    ek, ak = -ego_lane_id - 0.5, -actor_lane_id - 0.5
+    r, w = JUNCTION_RADIUS_M, LANE_WIDTH_M
+    if relation == "junction_left":
+        return r - ak * w, r + ek * w
+    if relation == "junction_right":
+        return r + ak * w, r - ek * w
+    raise PlacementError(f"no crossing path for {relation!r}")
+
+
+def adversary_pose(info: MapInfo, ego: Pose, spawn: dict) -> Pose:
+    rel = spawn["relation"]
+    lon = float(spawn.get("longitudinal_m", DEFAULT_LONGITUDINAL_M.get(rel, 40.0)))
+    n = info.lanes
+    if rel in ("ahead", "behind"):
+        return _on_road(info, Pose(ego.road, ego.lane_id, ego.s + lon))
+    if rel == "left":
+        if ego.lane_id == -1:
+            raise PlacementError("no lane left of the ego in its direction (it drives in the lane next to the centre)")
+        return _on_road(info, Pose(ego.road, ego.lane_id + 1, ego.s + lon))
+    if rel == "right":
+        if ego.lane_id == -n:
+            raise PlacementError("no lane right of the ego (it drives in the kerb lane)")
+        return _on_road(info, Pose(ego.road, ego.lane_id - 1, ego.s + lon))
+    if rel == "oncoming":
+        return _on_road(info, Pose(ego.road, 1, ego.s + lon))
+    if rel in ("junction_left", "junction_right", "junction_opposite"):
+        side = rel.split("_", 1)[1]
+        road = info.entrances.get(side)
+        if road is None:
+            raise PlacementError(f"spawn {rel!r} needs a junction; this map is {info.kind!r}")
+        # lon: the distance before its junction entry
+        return _on_road(info, Pose(road, -n, info.feature_s_m - lon))
+    if rel in ("roadside_right", "roadside_left"):
+        edge = n * LANE_WIDTH_M + KERB_OFFSET_M
+        lane = -n if rel == "roadside_right" else n
+        centre = (n - 0.5) * LANE_WIDTH_M
+        return _on_road(info, Pose(ego.road, lane, ego.s + lon, -(edge - centre) if lane < 0 else edge - centre))
+    raise PlacementError(f"unknown spawn relation {rel!r}")
+
+
+def _on_road(info: MapInfo, pose: Pose) -> Pose:
+    length = info.ego_road_length_m  # every generated arm and road the spawns use has this length
+    if not 0.0 <= pose.s <= length:
+        raise PlacementError(f"the spawn lies {pose.s:.1f} m along road {pose.road}, outside its 0..{length:.0f} m")
+    return pose

@@ -1,0 +1,480 @@
+"""The offline backend: a description in the vocabulary of :mod:`vei_scenario.language.vocabulary`
+→ layers, with unspecified details filled by seeded sampling.
+
+Reading: the text is cut into clauses (sentences, "then", "while"); in each clause the first actor
+named is the subject, and the behaviours, positions and criticality words of the clause belong to
+it. A clause without an actor continues the previous subject ("... and then stops"). Behaviours of
+one actor run in sequence, or in parallel when the clause starts with "while".
+
+Filling: what the text leaves open (speeds, gaps, weather, time of day, background traffic, a
+behaviour's configuration within the range of its criticality class) is drawn from
+``random.Random(seed)``, so one description gives many scenarios and the same seed the same ones.
+Words it cannot place are reported (:class:`NotUnderstood`), never skipped silently.
+"""
+
+from __future__ import annotations
+
+import random
+import re
+from dataclasses import dataclass, field
+
+from vei_scenario.language import vocabulary as V
+from vei_scenario.language.behaviours import BEHAVIOURS
+from vei_scenario.language.maps import ARM_LENGTH_M
+from vei_scenario.language.placement import DEFAULT_FEATURE_DISTANCE_M, junction_conflict_m, lane_id
+from vei_scenario.language.scenario_writer import TYPES
+
+CRITICALITY_CLASSES = ("dangerous", "moderate", "safe")
+
+
+class NotUnderstood(ValueError):
+    """The description has words the vocabulary cannot place."""
+
+    def __init__(self, words: list[str], text: str) -> None:
+        self.words = words
+        listed = ", ".join(f"'{w}'" for w in words)
+        super().__init__(
+            f"could not place {listed} (the words it knows: vei_scenario/language/vocabulary.py; "
+            "behaviours: `vei behaviours`)"
+        )
+
+
+def _phrase_table() -> dict[tuple[str, ...], tuple[str, object]]:
+    table: dict[tuple[str, ...], tuple[str, object]] = {}
+    groups = [
+        ("map", V.MAPS),
+        ("lanes", V.LANE_COUNTS),
+        ("weather", V.WEATHER),
+        ("time", V.TIMES),
+        ("density", V.DENSITY),
+        ("relation", V.RELATIONS),
+        ("behaviour", V.BEHAVIOURS),
+        ("ego_verb", V.EGO_VERBS),
+        ("criticality", V.CRITICALITY),
+        ("intent", V.INTENTS),
+        ("speed_word", V.SPEED_WORDS),
+    ]
+    for slot, words in groups:
+        for phrase, meaning in words.items():
+            table[tuple(phrase.split())] = (slot, meaning)
+    for phrase, meaning in V.ACTORS.items():
+        table[tuple(phrase.split())] = ("actor", meaning)
+    for phrase in V.PRONOUNS:
+        table[tuple(phrase.split())] = ("pronoun", None)
+    for phrase in V.SEQUENCE_WORDS:
+        table[tuple(phrase.split())] = ("sequence", None)
+    for phrase in V.PARALLEL_WORDS:
+        table[tuple(phrase.split())] = ("parallel", None)
+    return table
+
+
+TABLE = _phrase_table()
+LONGEST = max(len(k) for k in TABLE)
+_TOKEN = re.compile(r"\d+(?:\.\d+)?|km/h|m/s|[a-z][a-z'\-/]*|[.;,!?]")
+
+
+@dataclass
+class Mention:
+    slot: str
+    value: object
+    words: str
+
+
+@dataclass
+class ActorSpec:
+    kind: str
+    relation: str | None = None
+    distance_m: float | None = None
+    speed_mps: float | None = None
+    behaviours: list[tuple[str, dict, str | None, str]] = field(default_factory=list)  # name, cfg, class, link
+
+
+@dataclass
+class Reading:
+    """What the parser understood, before sampling."""
+
+    map_kind: str | None = None
+    lanes: int | None = None
+    weather: str | None = None
+    time: str | None = None
+    density: str | None = None
+    intent: str | None = None
+    ego_route: str | None = None
+    ego_speed_mps: float | None = None
+    ego_relation: str | None = None
+    actors: list[ActorSpec] = field(default_factory=list)
+
+
+def _scan(text: str) -> tuple[list[list[Mention]], list[str]]:
+    """Clauses of mentions, and the words nothing covers."""
+    tokens = _TOKEN.findall(text.lower().replace("\u2019", "'"))
+    clauses: list[list[Mention]] = [[]]
+    unknown: list[str] = []
+    i = 0
+    while i < len(tokens):
+        tok = tokens[i]
+        if tok in ".;!?":
+            clauses.append([])
+            i += 1
+            continue
+        if tok == ",":
+            i += 1
+            continue
+        if re.fullmatch(r"\d+(?:\.\d+)?", tok):
+            nxt = tokens[i + 1] if i + 1 < len(tokens) else ""
+            if nxt in V.SPEED_UNITS:
+                clauses[-1].append(Mention("speed", float(tok) * V.SPEED_UNITS[nxt], f"{tok} {nxt}"))
+                i += 2
+                continue
+            if nxt in ("m", "meters", "metres", "meter", "metre"):
+                clauses[-1].append(Mention("distance", float(tok), f"{tok} {nxt}"))
+                i += 2
+                continue
+            unknown.append(tok)
+            i += 1
+            continue
+        for k in range(min(LONGEST, len(tokens) - i), 0, -1):
+            key = tuple(tokens[i : i + k])
+            if key in TABLE:
+                slot, meaning = TABLE[key]
+                if slot in ("sequence", "parallel"):
+                    clauses.append([Mention(slot, None, " ".join(key))])
+                else:
+                    clauses[-1].append(Mention(slot, meaning, " ".join(key)))
+                i += k
+                break
+        else:
+            if tok not in V.FILLER:
+                unknown.append(tok)
+            i += 1
+    return [c for c in clauses if c], unknown
+
+
+def read(text: str) -> Reading:
+    """Parse ``text``; :class:`NotUnderstood` lists the words it could not place."""
+    clauses, unknown = _scan(text)
+    if unknown:
+        raise NotUnderstood(list(dict.fromkeys(unknown)), text)
+    r = Reading()
+    subject: ActorSpec | str | None = None
+    for clause in clauses:
+        link = "sequence"
+        if clause[0].slot == "parallel":
+            link = "parallel"
+        first_actor = next((m for m in clause if m.slot == "actor"), None)
+        if first_actor is not None:
+            subject = _subject(r, first_actor, clause)
+        crit = next((m.value for m in clause if m.slot == "criticality"), None)
+        behaviours_here: list[int] = []
+        for m in clause:
+            if m.slot == "map":
+                r.map_kind = r.map_kind if (r.map_kind and m.value == "straight") else m.value
+            elif m.slot == "lanes":
+                r.lanes = int(m.value)
+            elif m.slot == "weather":
+                r.weather = m.value
+            elif m.slot == "time":
+                r.time = m.value
+            elif m.slot == "density":
+                r.density = m.value
+            elif m.slot == "intent":
+                r.intent = m.value if r.intent in (None, "safe") or m.value != "safe" else r.intent
+            elif m.slot == "ego_verb":
+                if m.value:
+                    r.ego_route = m.value
+            elif m.slot == "relation":
+                if subject == "ego":
+                    r.ego_relation = m.value
+                elif (
+                    isinstance(subject, ActorSpec) and subject.relation is None and m is not _object_relation(clause, m)
+                ):
+                    subject.relation = m.value
+            elif m.slot == "distance" and isinstance(subject, ActorSpec):
+                subject.distance_m = m.value
+            elif m.slot in ("speed", "speed_word"):
+                _speed(r, subject, m)
+            elif m.slot == "behaviour":
+                name, cfg = m.value
+                if subject == "ego" or subject is None:
+                    if name == "forced_turn" and subject == "ego":
+                        r.ego_route = cfg.get("turn", "right")
+                        continue
+                    raise NotUnderstood([m.words], text)
+                subject.behaviours.append((name, dict(cfg), crit, link if not behaviours_here else "sequence"))
+                behaviours_here.append(len(subject.behaviours) - 1)
+        if crit is not None and not behaviours_here and isinstance(subject, ActorSpec) and subject.behaviours:
+            name, cfg, _, lk = subject.behaviours[-1]
+            subject.behaviours[-1] = (name, cfg, crit, lk)
+    return r
+
+
+def _object_relation(clause: list[Mention], m: Mention):
+    """A relation right after a second actor ("in front of the ego") describes that actor, not the
+    subject: return ``m`` then so that it is not taken as the subject's spawn."""
+    idx = clause.index(m)
+    actors_before = [x for x in clause[:idx] if x.slot == "actor"]
+    return m if len(actors_before) > 1 and actors_before[-1].value == ("ego", None) and m.value == "ahead" else None
+
+
+def _subject(r: Reading, mention: Mention, clause: list[Mention]) -> ActorSpec | str:
+    kind, vtype = mention.value
+    if kind == "ego":
+        return "ego"
+    # "the car" again: the actor of that type already named; "a car": a new one
+    article_new = True
+    words = mention.words
+    if words in ("vehicle", "car", "adversary") and r.actors:
+        article_new = False
+    same = [a for a in r.actors if a.kind == vtype]
+    if same and not article_new:
+        return same[-1]
+    if same and any(m.slot == "pronoun" for m in clause):
+        return same[-1]
+    spec = ActorSpec(vtype)
+    r.actors.append(spec)
+    return spec
+
+
+def _speed(r: Reading, subject, m: Mention) -> None:
+    if m.slot == "speed":
+        if subject == "ego" or subject is None:
+            r.ego_speed_mps = m.value
+        else:
+            subject.speed_mps = m.value
+    else:  # a speed word scales the sampled speed
+        if isinstance(subject, ActorSpec):
+            subject.speed_mps = -float(m.value)  # negative: a factor on the default, resolved later
+
+
+# --- sampling -------------------------------------------------------------------------------------------
+def _u(rng: random.Random, lo: float, hi: float) -> float:
+    return round(lo + (hi - lo) * rng.random(), 3)
+
+
+def _config(rng: random.Random, name: str, given: dict, crit: str | None) -> tuple[dict, str | None]:
+    mod = BEHAVIOURS[name]
+    profiles = mod.PROFILES
+    cls = crit if crit in profiles else (rng.choice(CRITICALITY_CLASSES) if profiles else None)
+    cfg: dict[str, object] = {}
+    ranges = profiles.get(cls, {}) if cls else {}
+    for pname in mod.PARAMETERS:
+        if pname in given:
+            cfg[pname] = given[pname]
+        elif pname in ranges:
+            cfg[pname] = _u(rng, *ranges[pname])
+    for k, v in given.items():
+        cfg.setdefault(k, v)
+    if "lead_s" in mod.PARAMETERS and "lead_s" not in cfg:
+        cfg["lead_s"] = _u(rng, 2.0, 3.0)
+    if cls:
+        cfg["criticality"] = cls
+    return cfg, cls
+
+
+def sample_layers(reading: Reading, text: str, seed: int) -> dict:
+    """The layers of one scenario of ``reading``, details drawn from ``seed``."""
+    rng = random.Random(seed)
+    behaviour_names = [b[0] for a in reading.actors for b in a.behaviours]
+    kind = reading.map_kind
+    if kind is None:
+        kind = "crossroad" if {"run_red_light", "forced_turn"} & set(behaviour_names) else "straight"
+    lanes = reading.lanes or 2
+    relations = {
+        a.relation or getattr(BEHAVIOURS[a.behaviours[0][0]], "DEFAULT_SPAWN", {}).get("relation")
+        for a in reading.actors
+        if a.behaviours
+    }
+    ego_lane = 1
+    if reading.ego_relation == "left" or ("right" in relations and "left" not in relations):
+        ego_lane = min(2, lanes)
+    placement = {
+        "straight": "straight",
+        "crossroad": "before_junction",
+        "curve": "on_curve",
+        "roundabout": "before_roundabout",
+    }[kind]
+    lo, hi = {"straight": (13.0, 17.0), "curve": (11.0, 15.0)}.get(kind, (10.0, 13.0))
+    ego_speed = reading.ego_speed_mps if reading.ego_speed_mps is not None else _u(rng, lo, hi)
+    weather = reading.weather or rng.choice(["clear", "clear", "cloudy"])
+    time = reading.time or f"{rng.randint(7, 18):02d}:{rng.choice([0, 15, 30, 45]):02d}"
+    density = reading.density or rng.choice(["none", "light"])
+    ego_distance = round(DEFAULT_FEATURE_DISTANCE_M + _u(rng, -10.0, 10.0), 3)
+    ego = {"placement": placement, "lane": ego_lane, "speed_mps": round(ego_speed, 3), "agent": "cap"}
+    if kind in ("crossroad", "roundabout", "curve"):
+        ego["distance_m"] = ego_distance
+    if kind in ("crossroad", "roundabout"):
+        ego["route"] = reading.ego_route if reading.ego_route in ("straight", "left", "right") else "straight"
+    intent = reading.intent or "unspecified"
+    adversaries = []
+    counts: dict[str, int] = {}
+    for spec in reading.actors:
+        if not spec.behaviours:
+            spec.behaviours.append(("keep_going", {}, None, "sequence"))
+        counts[spec.kind] = counts.get(spec.kind, 0) + 1
+        name = f"Adversary{len(adversaries) + 1}"
+        nodes = []
+        first_cfg: dict = {}
+        for idx, (bname, given, crit, link) in enumerate(spec.behaviours):
+            if crit is None and intent in ("near_miss", "collision"):
+                crit = "dangerous"
+            elif crit is None and intent == "safe":
+                crit = "safe"
+            cfg, _ = _config(rng, bname, given, crit)
+            if idx == 0:
+                first_cfg = cfg
+            nodes.append((link, {"behaviour": bname, "config": cfg}))
+        topology = _topology(nodes)
+        first = BEHAVIOURS[spec.behaviours[0][0]]
+        relation = spec.relation or getattr(first, "DEFAULT_SPAWN", {}).get("relation", "ahead")
+        given_speed = spec.speed_mps
+        if given_speed is not None and given_speed < 0:  # a speed word: a factor on the default speed
+            given_speed = _default_speed(spec.kind, relation, ego_speed) * -given_speed
+        if given_speed is None and relation in ("junction_left", "junction_right"):
+            given_speed = _u(rng, 9.0, 13.0)
+        spawn, speed = place_adversary(
+            spec.kind, relation, first.NAME, first_cfg, ego, lanes, given_speed, spec.distance_m
+        )
+        adversaries.append(
+            {"name": name, "type": spec.kind, "spawn": spawn, "speed_mps": round(speed, 3), "behaviour": topology}
+        )
+    layers = {
+        "format": "vei-layers/1",
+        "description": text,
+        "seed": seed,
+        "intent": intent,
+        "duration_s": 15.0,
+        "rate_hz": 20.0,
+        "environment": {
+            "map": {"kind": kind, "lanes_per_direction": lanes}
+            | ({"traffic_signals": True} if kind == "crossroad" else {}),
+            "weather": {"condition": weather},
+            "time_of_day": time,
+            "traffic_density": density,
+        },
+        "ego": ego,
+        "adversaries": adversaries,
+        "background": {"vehicles": []},
+    }
+    layers["background"]["vehicles"] = background(rng, layers)
+    return layers
+
+
+def _default_speed(kind: str, relation: str, ego_speed: float) -> float:
+    if TYPES[kind][1] not in ("pedestrian", "bicycle"):
+        return ego_speed
+    return 0.0 if relation.startswith("roadside") else 4.0
+
+
+def place_adversary(
+    kind: str,
+    relation: str,
+    behaviour_name: str,
+    cfg: dict,
+    ego: dict,
+    lanes: int,
+    speed: float | None = None,
+    distance_m: float | None = None,
+) -> tuple[dict, float]:
+    """(spawn, speed) of an adversary whose first behaviour is ``behaviour_name`` with ``cfg``: the
+    behaviour's own placement (a cut-in ahead by its gap plus closing), the timing of a junction
+    crossing or a kerb-side crossing, or ``distance_m`` as said. Refinement calls it again after
+    changing the configuration."""
+    mod = BEHAVIOURS[behaviour_name]
+    ego_speed = float(ego["speed_mps"])
+    lengths = TYPES["car"][0][0] + TYPES[kind][0][0]
+    spawn: dict[str, object] = {"relation": relation}
+    out_speed = _default_speed(kind, relation, ego_speed) if speed is None else speed
+    if relation in ("junction_left", "junction_right"):
+        spawn["longitudinal_m"] = round(_junction_spawn(ego, lanes, relation, out_speed, ego_speed, cfg), 3)
+    elif relation.startswith("roadside"):
+        v = float(cfg.get("crossing_speed_mps", 1.5 if kind == "pedestrian" else 4.0))
+        cfg.setdefault("crossing_speed_mps", v)
+        k = int(ego["lane"])
+        cross = (k - 0.5) * 3.5 + 1.0 if relation == "roadside_right" else (2 * lanes - k + 0.5) * 3.5 + 1.0
+        trigger = ego_speed * (cross / v + float(cfg.get("arrival_gap_s", 0.5)))
+        spawn["longitudinal_m"] = round(trigger + 15.0 + lengths / 2, 3)
+        out_speed = 0.0
+    elif hasattr(mod, "place"):
+        lon, placed_speed = mod.place(ego_speed, lengths, cfg)
+        if relation == "behind" and lon > 0:
+            lon = -lon
+        spawn["longitudinal_m"] = round(lon, 3)
+        out_speed = placed_speed if speed is None else speed
+    elif distance_m is not None:
+        spawn["longitudinal_m"] = distance_m if relation != "behind" else -distance_m
+    return spawn, round(out_speed, 3)
+
+
+def _topology(nodes: list[tuple[str, dict]]) -> dict:
+    """Nodes with their links → a topology: runs of "parallel" join the node before them."""
+    groups: list[list[dict]] = []
+    for link, node in nodes:
+        if link == "parallel" and groups:
+            groups[-1].append(node)
+        else:
+            groups.append([node])
+    items = [g[0] if len(g) == 1 else {"parallel": g} for g in groups]
+    return items[0] if len(items) == 1 else {"sequence": items}
+
+
+def _junction_spawn(ego: dict, lanes: int, relation: str, speed: float, ego_speed: float, cfg: dict) -> float:
+    """Distance before its junction entry that brings the actor to the ego's path ``arrival_gap_s``
+    after the ego (both at constant speed)."""
+    from vei_scenario.language.maps import MapInfo
+
+    info = MapInfo("crossroad", lanes, "1", ARM_LENGTH_M, feature_s_m=ARM_LENGTH_M)
+    ego_to, actor_to = junction_conflict_m(info, lane_id(lanes, ego["lane"]), relation, -lanes)
+    t_ego = (float(ego.get("distance_m", DEFAULT_FEATURE_DISTANCE_M)) + ego_to) / max(ego_speed, 0.5)
+    d = speed * (t_ego + float(cfg.get("arrival_gap_s", 0.5))) - actor_to
+    return min(max(d, 5.0), ARM_LENGTH_M - 5.0)
+
+
+#: Background vehicles per traffic density.
+DENSITY_COUNT = {"none": 0, "light": 2, "moderate": 5, "heavy": 9}
+BACKGROUND_SPACING_M = 25.0
+
+
+def background(rng: random.Random, layers: dict) -> list[dict]:
+    """Background vehicles that keep out of the ego's and the adversaries' lanes: the lanes of the
+    ego's road driving the other way (away from any junction), and same-direction lanes nobody uses."""
+    count = DENSITY_COUNT[layers["environment"]["traffic_density"]]
+    if count == 0:
+        return []
+    env = layers["environment"]["map"]
+    lanes = env.get("lanes_per_direction", 2)
+    length = (
+        ARM_LENGTH_M if env["kind"] in ("crossroad", "roundabout") else (400.0 if env["kind"] == "straight" else 480.0)
+    )
+    ego_lane = lane_id(lanes, layers["ego"]["lane"])
+    used = {ego_lane}
+    for adv in layers["adversaries"]:
+        rel = adv["spawn"]["relation"]
+        if rel == "left":
+            used.add(ego_lane + 1)
+        elif rel == "right":
+            used.add(ego_lane - 1)
+        elif rel == "oncoming":
+            used.add(1)
+        if "overtake" in str(adv["behaviour"]):
+            used.add(ego_lane + 1 if ego_lane != -1 else 1)
+    free = [k for k in range(1, lanes + 1) if k not in used] + [-k for k in range(1, lanes + 1) if -k not in used]
+    out: list[dict] = []
+    taken: dict[int, list[float]] = {}
+    speeds = {k: _u(rng, 9.0, 15.0) for k in free}
+    for _ in range(count * 10):
+        if len(out) == count or not free:
+            break
+        lane = rng.choice(free)
+        s = _u(rng, 10.0, length - 30.0)
+        if any(abs(s - o) < BACKGROUND_SPACING_M for o in taken.get(lane, [])):
+            continue
+        taken.setdefault(lane, []).append(s)
+        out.append(
+            {"road": "1", "lane": lane, "s_m": s, "speed_mps": speeds[lane], "type": rng.choice(["car", "car", "van"])}
+        )
+    return out
+
+
+def layers_from_text(text: str, seed: int) -> dict:
+    """Parse and sample: the layers of scenario ``seed`` of ``text``."""
+    return sample_layers(read(text), text, seed)

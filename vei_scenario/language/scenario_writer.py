@@ -1,0 +1,357 @@
+"""Layers → OpenSCENARIO XML + OpenDRIVE, through scenariogeneration's object model.
+
+Structure of a written scenario:
+
+* ``RoadNetwork``: the generated map (or the given OpenDRIVE file); traffic lights are dynamic
+  signals of the OpenDRIVE, set in ``Init`` (the ego's approach and the one opposite green, the
+  crossing approaches red).
+* ``Entities``: ``Ego`` (car) with the ``CollisionAvoidancePlanner`` (agent ``cap``: cruise at its
+  speed, emergency braking for every other entity), the adversaries by type, ``Background<k>``.
+* ``Init``: every entity on its lane at its speed; the ego's route through the junction; the
+  ``EnvironmentAction`` (weather, time of day, road friction).
+* Story ``Behaviours``: one maneuver group per adversary; each atomic behaviour is one or more
+  events, sequences chained by ``StoryboardElementStateCondition`` (the previous event complete, or
+  running for the behaviour's ``hold_s``), parallel branches started by the same condition;
+  ``priority="parallel"`` so that a starting event never cancels its concurrent sibling.
+* Stop trigger: the duration. A collision does not end the run (every scenario of a batch lasts as
+  long, so time shares such as comfort compare); it is recorded with who and when.
+"""
+
+from __future__ import annotations
+
+import datetime as dt
+import math
+import tempfile
+from dataclasses import dataclass
+from pathlib import Path
+
+from scenariogeneration import xosc
+
+from vei_scenario.language import maps, placement
+from vei_scenario.language.behaviours import behaviour
+from vei_scenario.language.behaviours.base import ActorContext, Condition, G
+from vei_scenario.models.cap import CapParameters
+from vei_scenario.roads.opendrive_output import finalize_opendrive
+from vei_scenario.roads.road_model import RoadNetwork
+
+AUTHOR = "vei-scenario describe"
+EGO = "Ego"
+DEFAULT_DURATION_S = 20.0
+#: The ego's adaptive-cruise time gap (s) when it follows a vehicle in its path.
+EGO_TIME_GAP_S = 1.5
+DEFAULT_RATE_HZ = 20.0
+#: Box (length, width, height m), category, mass (kg), max speed, acceleration, deceleration.
+TYPES = {
+    "car": ((4.6, 1.85, 1.5), "car", 1500.0, 50.0, 4.0, 9.0),
+    "van": ((5.3, 2.0, 2.2), "van", 2500.0, 40.0, 3.0, 8.0),
+    "truck": ((8.5, 2.5, 3.2), "truck", 12000.0, 30.0, 2.0, 7.0),
+    "bicycle": ((1.8, 0.6, 1.7), "bicycle", 90.0, 10.0, 2.0, 4.0),
+    "e-scooter": ((1.2, 0.6, 1.8), "bicycle", 95.0, 6.94, 2.0, 3.5),
+    "pedestrian": ((0.5, 0.6, 1.8), "pedestrian", 75.0, 3.0, 1.5, 3.0),
+}
+#: Signal state strings (red;yellow;green lamps), as esmini's examples write them.
+RED, GREEN = "on;off;off", "off;off;on"
+WEATHER = {  # cloud state, precipitation (type, intensity mm/h), fog visual range (m), default friction
+    "clear": ("free", ("dry", 0.0), 100000, 1.0),
+    "cloudy": ("overcast", ("dry", 0.0), 100000, 1.0),
+    "rain": ("overcast", ("rain", 4.0), 8000, 0.7),
+    "heavy_rain": ("rainy", ("rain", 20.0), 2000, 0.55),
+    "fog": ("overcast", ("dry", 0.0), 150, 0.9),
+    "snow": ("overcast", ("snow", 3.0), 3000, 0.35),
+}
+
+
+@dataclass
+class WrittenScenario:
+    xosc: bytes
+    xodr: bytes
+    actors: list[str]
+
+
+def friction(layers: dict) -> float:
+    w = layers["environment"]["weather"]
+    return float(w.get("friction", WEATHER[w["condition"]][3]))
+
+
+def _vehicle(name: str, kind: str, mu: float):
+    (length, width, height), category, mass, vmax, amax, dmax = TYPES[kind]
+    box = xosc.BoundingBox(width, length, height, 0.0, 0.0, height / 2)
+    dmax = round(min(dmax, mu * G), 3)
+    if category == "pedestrian":
+        return xosc.Pedestrian(name, mass, xosc.PedestrianCategory.pedestrian, box, model=kind)
+    front = xosc.Axle(0.5, 0.7, max(width - 0.2, 0.3), 0.3 * length if length > 3 else 0.5 * length, 0.35)
+    rear = xosc.Axle(0.0, 0.7, max(width - 0.2, 0.3), 0.0, 0.35)
+    cat = getattr(xosc.VehicleCategory, category)
+    return xosc.Vehicle(name, cat, box, front, rear, vmax, amax, dmax)
+
+
+def _properties(values: dict[str, object]) -> xosc.Properties:
+    props = xosc.Properties()
+    for k, v in values.items():
+        props.add_property(k, v if isinstance(v, str) else f"{v:g}")
+    return props
+
+
+def _lane_position(pose: placement.Pose) -> xosc.LanePosition:
+    orient = xosc.Orientation(h=math.pi, reference=xosc.ReferenceContext.relative) if pose.against_reference else None
+    args = (round(pose.s, 3), round(pose.offset, 3), pose.lane_id, pose.road)
+    return xosc.LanePosition(*args, orient) if orient is not None else xosc.LanePosition(*args)
+
+
+def _environment(layers: dict) -> xosc.EnvironmentAction:
+    env = layers["environment"]
+    cloud, (ptype, intensity), fog, _ = WEATHER[env["weather"]["condition"]]
+    hour, minute = (int(v) for v in env["time_of_day"].split(":"))
+    sun_elevation = max(-0.5, math.sin(math.pi * (hour + minute / 60 - 6) / 12)) * 1.0
+    weather = xosc.Weather(
+        cloudstate=getattr(
+            xosc.FractionalCloudCover, {"free": "zeroOktas", "overcast": "sevenOktas", "rainy": "eightOktas"}[cloud]
+        ),
+        sun=xosc.Sun(1000.0 if sun_elevation > 0 else 0.0, 0.0, round(sun_elevation, 3)),
+        fog=xosc.Fog(fog),
+        precipitation=xosc.Precipitation(getattr(xosc.PrecipitationType, ptype), intensity),
+    )
+    tod = xosc.TimeOfDay(False, 2025, 6, 1, hour, minute, 0)
+    road = xosc.RoadCondition(round(friction(layers), 3))
+    return xosc.EnvironmentAction(xosc.Environment("environment", tod, weather, road))
+
+
+class _Anchor:
+    """What the next element of a sequence waits for: an event in a state, after a delay."""
+
+    def __init__(self, event: str, state, delay: float = 0.0) -> None:
+        self.event, self.state, self.delay = event, state, delay
+
+
+def _condition(c: Condition, actor: str, name: str):
+    if c.kind in ("ego_within", "ego_beyond"):
+        rule = xosc.Rule.lessThan if c.kind == "ego_within" else xosc.Rule.greaterThan
+        cond = xosc.RelativeDistanceCondition(
+            round(c.value, 3), rule, xosc.RelativeDistanceType.longitudinal, actor, freespace=True
+        )
+        return xosc.EntityTrigger(name, 0, xosc.ConditionEdge.none, cond, c.entity)
+    if c.kind == "time_gap":
+        cond = xosc.TimeHeadwayCondition(actor, round(c.value, 3), xosc.Rule.lessThan, freespace=True)
+        return xosc.EntityTrigger(name, 0, xosc.ConditionEdge.none, cond, c.entity)
+    raise ValueError(f"unknown condition kind {c.kind!r}")
+
+
+class _StoryBuilder:
+    def __init__(self, actor: str, ctx: ActorContext) -> None:
+        self.actor, self.ctx = actor, ctx
+        self.maneuver = xosc.Maneuver(f"{actor}_behaviour")
+        self.count = 0
+
+    def emit(self, node: dict, after: list[_Anchor]) -> list[_Anchor]:
+        if "sequence" in node:
+            for child in node["sequence"]:
+                after = self.emit(child, after)
+            return after
+        if "parallel" in node:
+            ends: list[_Anchor] = []
+            for child in node["parallel"]:
+                ends += self.emit(child, after)
+            return ends
+        mod = behaviour(node["behaviour"])
+        cfg = dict(node.get("config", {}))
+        steps = mod.compile(self.ctx, cfg)
+        start = node.get("start", {})
+        prev = after
+        for i, step in enumerate(steps):
+            self.count += 1
+            name = f"{self.actor}_{self.count}_{step.name}"
+            event = xosc.Event(name, xosc.Priority.parallel)
+            for j, action in enumerate(step.actions):
+                event.add_action(f"{name}_action{j + 1}", action)
+            conditions = list(step.conditions)
+            delay = step.delay_s
+            if i == 0:
+                delay += float(start.get("delay_s", 0.0))
+                if "ego_within_m" in start:
+                    conditions.append(Condition("ego_within", float(start["ego_within_m"])))
+                if "ego_time_gap_s" in start:
+                    conditions.append(Condition("time_gap", float(start["ego_time_gap_s"])))
+            group = xosc.ConditionGroup()
+            k = 0
+            for anchor in prev:
+                k += 1
+                cond = xosc.StoryboardElementStateCondition(
+                    xosc.StoryboardElementType.event, anchor.event, anchor.state
+                )
+                group.add_condition(
+                    xosc.ValueTrigger(f"{name}_after{k}", round(anchor.delay + delay, 3), xosc.ConditionEdge.none, cond)
+                )
+            for c in conditions:
+                k += 1
+                trig = _condition(c, self.actor, f"{name}_when{k}")
+                group.add_condition(trig)
+            if k == 0 or (not prev and delay > 0):
+                cond = xosc.SimulationTimeCondition(round(delay, 3), xosc.Rule.greaterOrEqual)
+                group.add_condition(xosc.ValueTrigger(f"{name}_at", 0, xosc.ConditionEdge.none, cond))
+            trigger = xosc.Trigger("start")
+            trigger.add_conditiongroup(group)
+            event.add_trigger(trigger)
+            self.maneuver.add_event(event)
+            if step.hold_s is not None:
+                prev = [_Anchor(name, xosc.StoryboardElementState.startTransition, step.hold_s)]
+            else:
+                prev = [_Anchor(name, xosc.StoryboardElementState.completeState)]
+        return prev
+
+
+def _roads(layers: dict, out_dir: Path, stem: str) -> tuple[bytes, maps.MapInfo, str]:
+    spec = layers["environment"]["map"]
+    if spec["kind"] == "file":
+        raise placement.PlacementError("map kind 'file' is given by path: use environment.map.file with vei describe")
+    odr, info = maps.build_map(spec)
+    import xml.etree.ElementTree as ET
+
+    raw = finalize_opendrive(ET.tostring(odr.get_element()), f"{stem}", None, None)
+    return raw, info, f"{stem}.xodr"
+
+
+def write_scenario(layers: dict, stem: str, out_dir: Path) -> WrittenScenario:
+    """The scenario of ``layers`` as (xosc bytes, xodr bytes); the xosc refers to ``<stem>.xodr``
+    beside it. Raises :class:`~vei_scenario.language.placement.PlacementError` (or ValueError) with
+    the reason when the layers ask for what the map cannot hold."""
+    mu = friction(layers)
+    xodr_bytes, info, xodr_name = _roads(layers, out_dir, stem)
+    with tempfile.TemporaryDirectory() as tmp:  # the road model answers the geometry questions
+        path = Path(tmp) / "map.xodr"
+        path.write_bytes(xodr_bytes)
+        net = RoadNetwork.load(path)
+
+    ego = layers["ego"]
+    ego_pose = placement.ego_pose(info, ego)
+    ego_speed = float(ego["speed_mps"])
+    entities = xosc.Entities()
+    init = xosc.Init()
+    cap = CapParameters(a_max_mps2=round(min(CapParameters.a_max_mps2, mu * G), 3))
+    others = [a["name"] for a in layers["adversaries"]] + [
+        f"Background{k + 1}" for k in range(len(layers["background"]["vehicles"]))
+    ]
+    if ego.get("agent", "cap") == "cap":
+        props: dict[str, object] = {"enabled": "true", "cruiseSpeed": ego_speed, "followTimeGap": EGO_TIME_GAP_S}
+        if layers["adversaries"]:
+            props["threatEntity"] = layers["adversaries"][0]["name"]
+        props["watchEntities"] = " ".join(others)
+        props.update(cap.properties())
+        controller = xosc.Controller("CollisionAvoidancePlanner", _properties(props))
+        entities.add_scenario_object(EGO, _vehicle(EGO, "car", mu), controller)
+        init.add_init_action(EGO, xosc.ActivateControllerAction(lateral=False, longitudinal=True))
+    else:
+        entities.add_scenario_object(EGO, _vehicle(EGO, "car", mu))
+    init.add_init_action(EGO, xosc.TeleportAction(_lane_position(ego_pose)))
+    init.add_init_action(EGO, xosc.AbsoluteSpeedAction(ego_speed, _step()))
+    if info.exits:
+        route = xosc.Route("Ego_route")
+        route.add_waypoint(_lane_position(ego_pose), xosc.RouteStrategy.shortest)
+        exit_road = info.exits[ego.get("route", "straight")]
+        route.add_waypoint(xosc.LanePosition(40.0, 0, -ego_pose.lane_id, exit_road), xosc.RouteStrategy.shortest)
+        init.add_init_action(EGO, xosc.AssignRouteAction(route))
+    init.add_global_action(_environment(layers))
+    for road, signal in sorted(info.signals.items()):
+        green = road in (info.ego_road, info.entrances.get("opposite"))
+        init.add_global_action(xosc.TrafficSignalStateAction(signal, GREEN if green else RED))
+
+    story = xosc.Story("Behaviours")
+    act = xosc.Act("behaviours")
+    act_has_groups = False
+    for adv in layers["adversaries"]:
+        name, kind = adv["name"], adv["type"]
+        pose = placement.adversary_pose(info, ego_pose, adv["spawn"])
+        speed = float(adv.get("speed_mps", ego_speed if TYPES[kind][1] not in ("pedestrian", "bicycle") else 0.0))
+        ctx = ActorContext(
+            actor=name,
+            actor_type=kind,
+            ego=EGO,
+            ego_speed_mps=ego_speed,
+            actor_speed_mps=speed,
+            ego_lane_id=ego_pose.lane_id,
+            actor_lane_id=pose.lane_id,
+            actor_road=pose.road,
+            actor_s_m=pose.s,
+            lanes=info.lanes,
+            friction=mu,
+            map_kind=info.kind,
+            exits=info.exits,
+            junction_end_s_m=info.feature_s_m,
+        )
+        controller = None
+        if adv["spawn"]["relation"].startswith("roadside"):
+            road = net.road(pose.road)
+            t0 = road.lane_center_t(pose.s, pose.lane_id) + pose.offset
+            t_ego = road.lane_center_t(pose.s, ego_pose.lane_id)
+            path = [road.world(pose.s, t0 + f * (-2 * t0)) for f in (0.0, 1.0)]
+            heading = math.atan2(path[1][1] - path[0][1], path[1][0] - path[0][0])
+            ctx.crossing_path = [(x, y, heading) for x, y, _ in path]
+            ctx.crossing_distance_m = abs(t_ego - t0)
+            if kind in ("e-scooter", "bicycle"):
+                controller = xosc.Controller(
+                    "SocialForceModel",
+                    _properties({"riderType": "normal", "route": f"{name}_crossing", "egoEntity": EGO, "v0_mps": 4.5}),
+                )
+            position = xosc.WorldPosition(round(path[0][0], 3), round(path[0][1], 3), 0, round(heading, 5))
+        else:
+            position = _lane_position(pose)
+        if controller is not None:
+            entities.add_scenario_object(name, _vehicle(name, kind, mu), controller)
+        else:
+            entities.add_scenario_object(name, _vehicle(name, kind, mu))
+        init.add_init_action(name, xosc.TeleportAction(position))
+        init.add_init_action(name, xosc.AbsoluteSpeedAction(round(speed, 3), _step()))
+        builder = _StoryBuilder(name, ctx)
+        builder.emit(adv["behaviour"], [])
+        group = xosc.ManeuverGroup(f"{name}_group")
+        group.add_actor(name)
+        group.add_maneuver(builder.maneuver)
+        act.add_maneuver_group(group)
+        act_has_groups = True
+    for k, bg in enumerate(layers["background"]["vehicles"]):
+        name = f"Background{k + 1}"
+        entities.add_scenario_object(name, _vehicle(name, bg.get("type", "car"), mu))
+        pose = placement.Pose(bg["road"], int(bg["lane"]), float(bg["s_m"]))
+        init.add_init_action(name, xosc.TeleportAction(_lane_position(pose)))
+        init.add_init_action(name, xosc.AbsoluteSpeedAction(float(bg["speed_mps"]), _step()))
+
+    duration = float(layers.get("duration_s", DEFAULT_DURATION_S))
+    stop = xosc.ConditionGroup()
+    stop.add_condition(
+        xosc.ValueTrigger(
+            "duration", 0, xosc.ConditionEdge.rising, xosc.SimulationTimeCondition(duration, xosc.Rule.greaterThan)
+        )
+    )
+    stop_trigger = xosc.Trigger("stop")
+    stop_trigger.add_conditiongroup(stop)
+    board = xosc.StoryBoard(init, stop_trigger)
+    if act_has_groups:
+        story.add_act(act)
+        board.add_story(story)
+    network = xosc.RoadNetwork(roadfile=xodr_name)
+    scenario = xosc.Scenario(
+        layers.get("description", "language scenario")[:200] or "language scenario",
+        AUTHOR,
+        xosc.ParameterDeclarations(),
+        entities,
+        board,
+        network,
+        xosc.Catalog(),
+        osc_minor_version=3,
+        creation_date=dt.datetime(1970, 1, 1),
+    )
+    from lxml import etree
+
+    root = etree.fromstring(_tostring(scenario))
+    etree.indent(root, space="    ")
+    xml = etree.tostring(root, xml_declaration=True, encoding="UTF-8", pretty_print=True)
+    return WrittenScenario(xml, xodr_bytes, [a["name"] for a in layers["adversaries"]])
+
+
+def _step() -> xosc.TransitionDynamics:
+    return xosc.TransitionDynamics(xosc.DynamicsShapes.step, xosc.DynamicsDimension.time, 0.0)
+
+
+def _tostring(scenario: xosc.Scenario) -> bytes:
+    import xml.etree.ElementTree as ET
+
+    return ET.tostring(scenario.get_element(), encoding="utf-8")
