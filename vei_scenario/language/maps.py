@@ -25,7 +25,7 @@ from scenariogeneration import xodr
 LANE_WIDTH_M = 3.5
 #: Length of the straight roads, and of a crossroad's four arms (m).
 ROAD_LENGTH_M = 400.0
-ARM_LENGTH_M = 160.0
+ARM_LENGTH_M = 300.0
 #: Distance from the junction centre to where the arms start (m): room for the turning roads.
 JUNCTION_RADIUS_M = 14.0
 ROUNDABOUT_RADIUS_M = 30.0
@@ -83,7 +83,7 @@ def _signal(road_id: int, lanes: int) -> xodr.Signal:
     return xodr.Signal(
         s=ARM_LENGTH_M - 2.0,
         t=-(lanes * LANE_WIDTH_M + 1.0),
-        country="DEU",
+        country="OpenDRIVE",  # (esmini finds dynamic signals by it, not by DEU)
         Type=SIGNAL_TYPE,
         subtype="-1",
         id=str(road_id),

@@ -457,15 +457,20 @@ def background(rng: random.Random, layers: dict) -> list[dict]:
             used.add(1)
         if "overtake" in str(adv["behaviour"]):
             used.add(ego_lane + 1 if ego_lane != -1 else 1)
-    free = [k for k in range(1, lanes + 1) if k not in used] + [-k for k in range(1, lanes + 1) if -k not in used]
+    free = [k for k in range(1, lanes + 1) if k not in used]
+    if env["kind"] not in ("crossroad", "roundabout"):  # (towards a junction, players may choose other turns)
+        free += [-k for k in range(1, lanes + 1) if -k not in used]
     out: list[dict] = []
     taken: dict[int, list[float]] = {}
-    speeds = {k: _u(rng, 9.0, 15.0) for k in free}
+    junction = env["kind"] in ("crossroad", "roundabout")
+    # away from a junction they drive towards the arm's open end: start far enough from it
+    low_s, v_max = (length - 110.0, 12.0) if junction else (10.0, 15.0)
+    speeds = {k: _u(rng, 9.0, v_max) for k in free}
     for _ in range(count * 10):
         if len(out) == count or not free:
             break
         lane = rng.choice(free)
-        s = _u(rng, 10.0, length - 30.0)
+        s = _u(rng, low_s, length - 10.0)
         if any(abs(s - o) < BACKGROUND_SPACING_M for o in taken.get(lane, [])):
             continue
         taken.setdefault(lane, []).append(s)

@@ -39,6 +39,8 @@ EGO = "Ego"
 DEFAULT_DURATION_S = 20.0
 #: The ego's adaptive-cruise time gap (s) when it follows a vehicle in its path.
 EGO_TIME_GAP_S = 1.5
+#: A crossing road user's path goes on this far beyond the far kerb (m).
+CROSSING_BEYOND_M = 30.0
 DEFAULT_RATE_HZ = 20.0
 #: Box (length, width, height m), category, mass (kg), max speed, acceleration, deceleration.
 TYPES = {
@@ -206,7 +208,11 @@ def _roads(layers: dict, out_dir: Path, stem: str) -> tuple[bytes, maps.MapInfo,
     odr, info = maps.build_map(spec)
     import xml.etree.ElementTree as ET
 
-    raw = finalize_opendrive(ET.tostring(odr.get_element()), f"{stem}", None, None)
+    element = odr.get_element()
+    for signal in element.iter("signal"):  # scenariogeneration upper-cases the country; the XSD wants OpenDRIVE
+        if signal.get("country") == "OPENDRIVE":
+            signal.set("country", "OpenDRIVE")
+    raw = finalize_opendrive(ET.tostring(element), f"{stem}", None, None)
     return raw, info, f"{stem}.xodr"
 
 
@@ -282,7 +288,8 @@ def write_scenario(layers: dict, stem: str, out_dir: Path) -> WrittenScenario:
             road = net.road(pose.road)
             t0 = road.lane_center_t(pose.s, pose.lane_id) + pose.offset
             t_ego = road.lane_center_t(pose.s, ego_pose.lane_id)
-            path = [road.world(pose.s, t0 + f * (-2 * t0)) for f in (0.0, 1.0)]
+            # across the whole road and on beyond the far kerb, so that the path outlasts the run
+            path = [road.world(pose.s, t0 - f * t0) for f in (0.0, 2.0 + CROSSING_BEYOND_M / abs(t0))]
             heading = math.atan2(path[1][1] - path[0][1], path[1][0] - path[0][0])
             ctx.crossing_path = [(x, y, heading) for x, y, _ in path]
             ctx.crossing_distance_m = abs(t_ego - t0)

@@ -1,0 +1,227 @@
+"""vei describe: language → layers → OpenSCENARIO, closed-loop evaluation and refinement."""
+
+from __future__ import annotations
+
+import http.server
+import json
+import threading
+from pathlib import Path
+
+import pytest
+
+from vei_scenario.cli import main
+from vei_scenario.errors import VeiInputError
+from vei_scenario.language.behaviours import BEHAVIOURS
+from vei_scenario.language.describe import describe_batch
+from vei_scenario.language.layers import schema_problems
+from vei_scenario.language.paper import DESCRIPTIONS
+from vei_scenario.language.rules_backend import NotUnderstood, layers_from_text, read
+from vei_scenario.language.scenario_writer import write_scenario
+from vei_scenario.openscenario.validation import validate_files
+
+
+def _batch(name: str, count: int, refine: bool = False, out: Path | None = None, seed: int = 0):
+    text = DESCRIPTIONS[name]
+    return describe_batch(lambda i: layers_from_text(text, seed * 1000 + i), count, out, text, "rules", seed, refine)
+
+
+@pytest.mark.parametrize("name", list(DESCRIPTIONS))
+def test_paper_descriptions_give_valid_scenarios(name, tmp_path, qc_venv):
+    records, doc = _batch(name, 3, out=tmp_path)
+    files = sorted(tmp_path.rglob("scenario.xo*"))
+    assert len(files) == 6
+    assert validate_files(files) == []  # ASAM XSDs (OpenSCENARIO 1.3, OpenDRIVE) and vei's rules
+    assert all(r.outcome["duration_s"] >= 14.9 for r in records)  # vei run played them to the end
+
+
+def test_cut_in_criticality_orders_act_comfort_and_crash_rate():
+    s = {name: _batch(name, 32)[1]["summary"] for name in ("Dangerous", "Moderate", "Safe")}
+    d, m, safe = s["Dangerous"], s["Moderate"], s["Safe"]
+    assert d["mean_min_act_s"] < m["mean_min_act_s"] < safe["mean_min_act_s"]
+    assert d["mean_comfort"] < m["mean_comfort"] < safe["mean_comfort"]
+    assert d["crash_rate"] > 0 and m["crash_rate"] == 0 and safe["crash_rate"] == 0
+    refined = _batch("Dangerous", 32, refine=True)[1]["summary"]
+    assert refined["crash_rate"] < 0.10
+    assert refined["mean_min_act_s"] < m["mean_min_act_s"]
+    assert refined["episodes_run"] > 32  # some scenarios needed more than one episode
+
+
+def test_refinement_records_each_episode():
+    records, _ = _batch("Dangerous", 6, refine=True)
+    multi = [r for r in records if len(r.episodes) > 1]
+    assert multi
+    for r in multi:
+        assert [e["episode"] for e in r.episodes] == list(range(1, len(r.episodes) + 1))
+        assert r.episodes[0]["ego_collided"] and r.episodes[0]["adjustment"] == "soften"
+        gaps = [e["configuration"][0]["behaviour"]["config"]["gap_m"] for e in r.episodes]
+        assert gaps[1] > gaps[0]  # softened after the crash: the cut-in gap grew
+        assert r.episodes[-1]["intent_met"] or len(r.episodes) == 5
+
+
+def test_same_seed_same_bytes_other_seed_other_scenarios(tmp_path):
+    def files(out):
+        return {p.relative_to(out): p.read_bytes() for p in sorted(out.rglob("*")) if p.is_file()}
+
+    _batch("Running Red Light", 3, out=tmp_path / "a", seed=4)
+    _batch("Running Red Light", 3, out=tmp_path / "b", seed=4)
+    _batch("Running Red Light", 3, out=tmp_path / "c", seed=5)
+    a, b, c = files(tmp_path / "a"), files(tmp_path / "b"), files(tmp_path / "c")
+    assert a == b
+    assert a.keys() == c.keys() and a != c
+
+
+def test_unknown_words_are_named(capsys, tmp_path):
+    with pytest.raises(NotUnderstood) as exc:
+        read("A purple car zigzags wildly in front of the ego")
+    assert exc.value.words == ["purple", "zigzags", "wildly"]
+    assert main(["describe", "The ego drives; a car teleports", "-o", str(tmp_path / "x")]) == 2
+    err = capsys.readouterr().err
+    assert "could not place 'teleports'" in err and "Traceback" not in err
+    assert not (tmp_path / "x").exists()
+
+
+def test_reading_of_positions_sequences_and_words():
+    r = read(
+        "On a rainy evening the ego drives on a curved road. A truck behind follows the ego very closely, "
+        "then it overtakes. A pedestrian from the kerb crosses the road."
+    )
+    assert (r.map_kind, r.weather, r.time) == ("curve", "rain", "20:00")
+    truck, person = r.actors
+    assert truck.kind == "truck" and truck.relation == "behind"
+    assert [b[0] for b in truck.behaviours] == ["follow_vehicle", "overtake"]
+    assert truck.behaviours[0][2] == "dangerous"
+    assert person.kind == "pedestrian" and person.relation == "roadside_right"
+    layers = layers_from_text("The ego drives at 36 km/h. A car ahead brakes hard while it changes lanes.", 1)
+    assert layers["ego"]["speed_mps"] == pytest.approx(10.0)
+    assert "parallel" in layers["adversaries"][0]["behaviour"]
+
+
+def test_behaviour_library_is_complete_and_listed(capsys):
+    wanted = {
+        "keep_lane",
+        "change_speed",
+        "follow_vehicle",
+        "overtake",
+        "cut_in",
+        "sudden_stop",
+        "forced_turn",
+        "run_red_light",
+        "cross_in_front",
+        "stop",
+        "keep_going",
+    }
+    assert wanted <= set(BEHAVIOURS)
+    assert main(["behaviours", "-v"]) == 0
+    out = capsys.readouterr().out
+    assert all(name in out for name in wanted) and "ACC follower" in out and "gap_m" in out
+
+
+def test_layers_json_is_validated_and_runs(tmp_path, capsys):
+    layers = layers_from_text(DESCRIPTIONS["Sudden Stop"], 7)
+    good = tmp_path / "layers.json"
+    good.write_text(json.dumps(layers))
+    assert main(["describe", "--layers", str(good), "-o", str(tmp_path / "out")]) == 0
+    assert (tmp_path / "out" / "scenario_000" / "scenario.xosc").is_file()
+    layers["adversaries"][0]["behaviour"]["behaviour"] = "moonwalk"
+    layers["ego"]["lane"] = 9
+    bad = tmp_path / "bad.json"
+    bad.write_text(json.dumps(layers))
+    assert main(["describe", "--layers", str(bad), "-o", str(tmp_path / "out2")]) == 2
+    err = capsys.readouterr().err
+    assert "bad.json: ego/lane: 9 is greater than the maximum of 4" in err and "Traceback" not in err
+    layers["ego"]["lane"] = 1
+    assert any("unknown behaviour 'moonwalk'" in p for p in schema_problems(layers))
+
+
+def test_spawn_that_the_map_cannot_hold_is_refused(tmp_path):
+    layers = layers_from_text(DESCRIPTIONS["Moderate"], 1)
+    layers["ego"]["lane"] = 2  # the lane next to the centre line: nothing to its left in its direction
+    with pytest.raises(ValueError, match="no lane left of the ego"):
+        write_scenario(layers, "scenario", tmp_path)
+
+
+class _Replay(http.server.BaseHTTPRequestHandler):
+    answers: list[str] = []
+    requests: list[dict] = []
+
+    def do_POST(self):  # noqa: N802 (http.server's name)
+        body = json.loads(self.rfile.read(int(self.headers["Content-Length"])))
+        type(self).requests.append(body)
+        content = type(self).answers[min(len(type(self).requests) - 1, len(type(self).answers) - 1)]
+        data = json.dumps({"choices": [{"message": {"role": "assistant", "content": content}}]}).encode()
+        self.send_response(200)
+        self.send_header("Content-Type", "application/json")
+        self.send_header("Content-Length", str(len(data)))
+        self.end_headers()
+        self.wfile.write(data)
+
+    def log_message(self, *args):
+        pass
+
+
+@pytest.fixture()
+def replay_server():
+    server = http.server.HTTPServer(("127.0.0.1", 0), _Replay)
+    thread = threading.Thread(target=server.serve_forever, daemon=True)
+    thread.start()
+    _Replay.requests = []
+    yield f"http://127.0.0.1:{server.server_address[1]}/v1"
+    server.shutdown()
+
+
+def test_llm_backend_repairs_validates_and_retries(replay_server, tmp_path):
+    from vei_scenario.language.llm_backend import layers_from_llm
+
+    good = layers_from_text(DESCRIPTIONS["Safe"], 2)
+    for key in ("format", "background", "description", "seed"):
+        good.pop(key)  # repairable omissions
+    wrong = dict(good, ego=dict(good["ego"], placement="on_the_moon"))
+    _Replay.answers = [json.dumps(wrong), json.dumps(good)]
+    doc = layers_from_llm("a safe cut-in", 5, replay_server, "recorded")
+    assert doc["format"] == "vei-layers/1" and doc["background"] == {"vehicles": []} and doc["seed"] == 5
+    first, second = _Replay.requests
+    assert first["response_format"]["json_schema"]["schema"]["title"].startswith("vei-layers/1")
+    assert "ego/placement" in second["messages"][-1]["content"]  # the validator's finding went back
+    _Replay.answers = ["not json at all"]
+    _Replay.requests = []
+    with pytest.raises(VeiInputError, match="refused after 2 attempts"):
+        layers_from_llm("x", 1, replay_server, "recorded")
+    _Replay.answers = [json.dumps(good)]
+    code = main(
+        [
+            "describe",
+            "a safe cut-in",
+            "-o",
+            str(tmp_path / "llm"),
+            "--count",
+            "2",
+            "--backend",
+            "llm",
+            "--llm-url",
+            replay_server,
+            "--llm-model",
+            "recorded",
+            "--jobs",
+            "1",
+        ]
+    )
+    assert code == 0 and len(list((tmp_path / "llm").glob("scenario_*/scenario.xosc"))) == 2
+
+
+ESMINI_CASES = ["Dangerous", "Sudden Stop", "Running Red Light", "Force Right Turn"]
+
+
+@pytest.mark.parametrize("name", ESMINI_CASES)
+def test_esmini_plays_what_has_no_custom_controller(name, tmp_path, esmini):
+    from vei_scenario.conformance.esmini import cross_check
+
+    layers = layers_from_text(DESCRIPTIONS[name], 5)
+    layers["ego"]["agent"] = "lane_keep"  # no planner: every entity is esmini's default driver
+    layers["background"]["vehicles"] = []
+    w = write_scenario(layers, "scenario", tmp_path)
+    (tmp_path / "scenario.xodr").write_bytes(w.xodr)
+    (tmp_path / "scenario.xosc").write_bytes(w.xosc)
+    c = cross_check(esmini, tmp_path / "scenario.xosc", dt=0.05)
+    assert {e.entity for e in c.entities} == {"Ego", "Adversary1"}
+    assert max(e.max_deviation_m for e in c.entities) < 0.25, c.entities
+    assert [x[1:] for x in c.vei_collisions] == [x[1:] for x in c.esmini_collisions]
