@@ -24,14 +24,13 @@ def main() -> None:
     ap.add_argument("--seed", type=int, default=0)
     args = ap.parse_args()
     batches = [(name, False) for name in DESCRIPTIONS] + [("Dangerous", True)]
-    print(
-        f"{'batch':22s} {'CR %':>6s} {'ACT s':>7s} {'comfort':>8s} {'EI m/s':>7s} {'runs':>5s} {'s':>5s}   paper (ACT, comfort, CR)"
-    )
+    head = f"{'batch':22s} {'CR %':>6s} {'ACT s':>7s} {'comfort':>8s} {'EI m/s':>7s} {'runs':>5s} {'s':>5s}"
+    print(head + "   paper (ACT, comfort, CR)")
     for name, refine in batches:
         text = DESCRIPTIONS[name]
         t0 = time.perf_counter()
         _, doc = describe_batch(
-            lambda i: layers_from_text(text, args.seed * 1000 + i),
+            lambda i, text=text: layers_from_text(text, args.seed * 1000 + i),
             args.count,
             None,
             text,
