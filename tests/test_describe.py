@@ -133,11 +133,11 @@ def test_layers_json_is_validated_and_runs(tmp_path, capsys):
     assert any("unknown behaviour 'moonwalk'" in p for p in schema_problems(layers))
 
 
-def test_spawn_that_the_map_cannot_hold_is_refused(tmp_path):
+def test_spawn_that_the_map_cannot_hold_is_refused():
     layers = layers_from_text(DESCRIPTIONS["Moderate"], 1)
     layers["ego"]["lane"] = 2  # the lane next to the centre line: nothing to its left in its direction
     with pytest.raises(ValueError, match="no lane left of the ego"):
-        write_scenario(layers, "scenario", tmp_path)
+        write_scenario(layers, "scenario")
 
 
 class _Replay(http.server.BaseHTTPRequestHandler):
@@ -218,7 +218,7 @@ def test_esmini_plays_what_has_no_custom_controller(name, tmp_path, esmini):
     layers = layers_from_text(DESCRIPTIONS[name], 5)
     layers["ego"]["agent"] = "lane_keep"  # no planner: every entity is esmini's default driver
     layers["background"]["vehicles"] = []
-    w = write_scenario(layers, "scenario", tmp_path)
+    w = write_scenario(layers, "scenario")
     (tmp_path / "scenario.xodr").write_bytes(w.xodr)
     (tmp_path / "scenario.xosc").write_bytes(w.xosc)
     c = cross_check(esmini, tmp_path / "scenario.xosc", dt=0.05)

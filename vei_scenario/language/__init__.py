@@ -20,7 +20,7 @@ def describe_command(args) -> int:
     from vei_scenario.language.describe import describe_batch
     from vei_scenario.language.layers import load_layers
     from vei_scenario.language.placement import PlacementError
-    from vei_scenario.language.rules_backend import NotUnderstood, layers_from_text, read
+    from vei_scenario.language.rules_backend import NotUnderstood, read, sample_layers
 
     if (args.text is None) == (args.layers is None):
         raise VeiInputError(None, "vei describe", "give either a description or --layers FILE")
@@ -50,12 +50,10 @@ def describe_command(args) -> int:
             reading = read(text)
         except NotUnderstood as exc:
             raise VeiInputError(None, "description", str(exc)) from None
-        from vei_scenario.language.rules_backend import sample_layers
 
         def make(i: int) -> dict:
-            return sample_layers(read(text), text, args.seed * 1000 + i)
+            return sample_layers(reading, text, args.seed * 1000 + i)
 
-        del reading, layers_from_text
     if args.layers_only:
         import json
 

@@ -22,7 +22,7 @@ from pathlib import Path
 
 from vei_scenario.atomic_io import OutputSet
 from vei_scenario.language.evaluation import evaluate, intent_met
-from vei_scenario.language.layers import validate_layers
+from vei_scenario.language.layers import behaviour_nodes, validate_layers
 from vei_scenario.language.refinement import MAX_EPISODES, adjust
 from vei_scenario.language.scenario_writer import write_scenario
 
@@ -45,7 +45,7 @@ def run_one(layers: dict, index: int, refine: bool) -> ScenarioRecord:
     intent = layers.get("intent", "unspecified")
     with tempfile.TemporaryDirectory(prefix="vei-describe-") as tmp:
         for episode in range(MAX_EPISODES if refine else 1):
-            written = write_scenario(layers, SCENARIO_STEM, Path(tmp))
+            written = write_scenario(layers, SCENARIO_STEM)
             xosc = Path(tmp) / f"{SCENARIO_STEM}.xosc"
             (Path(tmp) / f"{SCENARIO_STEM}.xodr").write_bytes(written.xodr)
             xosc.write_bytes(written.xosc)
@@ -122,10 +122,8 @@ COLUMNS = [
 def _row(r: ScenarioRecord) -> dict:
     o, lay = r.outcome, r.layers
 
-    def names(t):
-        if "behaviour" in t:
-            return [t["behaviour"]]
-        return [n for c in t.get("sequence", t.get("parallel", [])) for n in names(c)]
+    def names(topology: dict) -> list[str]:
+        return [node["behaviour"] for _, node in behaviour_nodes(topology)]
 
     return {
         "scenario": f"scenario_{r.index:03d}",

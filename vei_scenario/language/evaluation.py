@@ -38,11 +38,8 @@ def evaluate(xosc: Path, rate_hz: float = 20.0) -> dict:
     ttcs = [m["min_ttc_s"] for m in per.values() if m["min_ttc_s"] is not None]
     collisions = [{"time_s": round(t, 3), "entities": [a, b]} for t, a, b in result.collisions]
     ego_hit = [c for c in collisions if ego in c["entities"]]
-    comfort = None
-    if adversaries:
-        comfort = per[adversaries[0]]["comfort_score"]
-    else:  # no adversary: the ego against itself would be meaningless; comfort needs the ego only
-        comfort = _comfort_only(result, cfg)
+    # comfort is the ego's alone: any pair gives it; without an adversary, the ego with anyone
+    comfort = per[adversaries[0]]["comfort_score"] if adversaries else _comfort_only(result, cfg)
     alert = sum(m["ttc_zones_s"]["alert"] + m["ttc_zones_s"]["collision"] for m in per.values())
     return {
         "ego_collided": bool(ego_hit),

@@ -31,7 +31,7 @@ def schema_problems(doc) -> list[str]:
     if problems:
         return problems
     for i, adv in enumerate(doc["adversaries"]):
-        for where, node in _behaviour_nodes(adv["behaviour"], f"adversaries/{i}/behaviour"):
+        for where, node in behaviour_nodes(adv["behaviour"], f"adversaries/{i}/behaviour"):
             mod = BEHAVIOURS.get(node["behaviour"])
             if mod is None:
                 problems.append(
@@ -49,12 +49,13 @@ def schema_problems(doc) -> list[str]:
     return problems
 
 
-def _behaviour_nodes(node: dict, where: str):
+def behaviour_nodes(node: dict, where: str = ""):
+    """Every atomic behaviour of a topology, in order, with its JSON path below ``where``."""
     if "behaviour" in node:
         yield where, node
     for key in ("sequence", "parallel"):
         for k, child in enumerate(node.get(key, [])):
-            yield from _behaviour_nodes(child, f"{where}/{key}/{k}")
+            yield from behaviour_nodes(child, f"{where}/{key}/{k}")
 
 
 def validate_layers(doc, source: str | Path) -> None:

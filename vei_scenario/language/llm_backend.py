@@ -44,13 +44,11 @@ def _repair(doc):
     doc.setdefault("background", {"vehicles": []})
     doc.setdefault("adversaries", [])
     for adv in doc.get("adversaries", []):
-        if isinstance(adv, dict):
-            for key in ("speed_mps",):
-                if isinstance(adv.get(key), str):
-                    try:
-                        adv[key] = float(adv[key])
-                    except ValueError:
-                        pass
+        if isinstance(adv, dict) and isinstance(adv.get("speed_mps"), str):
+            try:
+                adv["speed_mps"] = float(adv["speed_mps"])
+            except ValueError:
+                pass
     return doc
 
 

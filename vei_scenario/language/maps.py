@@ -124,17 +124,22 @@ def _crossroad_roads(lanes: int, signals: bool) -> tuple[xodr.OpenDrive, MapInfo
             junction.add_connection(i + 1, j + 1)
     odr.add_junction_creator(junction)
     odr.adjust_roads_and_lanes()
-    info = MapInfo(
-        "crossroad",
+    return odr, _four_arms("crossroad", lanes, {str(i + 1): str(i + 1) for i in range(4)} if signals else {})
+
+
+def _four_arms(kind: str, lanes: int, signals: dict[str, str]) -> MapInfo:
+    """The arm layout the crossroad and the roundabout share, seen by the ego on arm 1 (from the
+    east): arm 2 on its right, 3 ahead, 4 on its left; each arm both enters and leaves."""
+    return MapInfo(
+        kind,
         lanes,
         "1",
         ARM_LENGTH_M,
         feature_s_m=ARM_LENGTH_M,
         entrances={"right": "2", "opposite": "3", "left": "4"},
         exits={"right": "2", "straight": "3", "left": "4"},
-        signals={str(i + 1): str(i + 1) for i in range(4)} if signals else {},
+        signals=signals,
     )
-    return odr, info
 
 
 def _roundabout(lanes: int) -> tuple[xodr.OpenDrive, MapInfo]:
@@ -179,16 +184,7 @@ def _roundabout(lanes: int) -> tuple[xodr.OpenDrive, MapInfo]:
         junction.add_connection(before.id, after.id)
         odr.add_junction_creator(junction)
     odr.adjust_roads_and_lanes()
-    info = MapInfo(
-        "roundabout",
-        lanes,
-        "1",
-        ARM_LENGTH_M,
-        feature_s_m=ARM_LENGTH_M,
-        entrances={"right": "2", "opposite": "3", "left": "4"},
-        exits={"right": "2", "straight": "3", "left": "4"},
-    )
-    return odr, info
+    return odr, _four_arms("roundabout", lanes, {})
 
 
 def build_map(spec: dict) -> tuple[xodr.OpenDrive, MapInfo]:

@@ -12,19 +12,12 @@ from __future__ import annotations
 import copy
 
 from vei_scenario.language.behaviours import BEHAVIOURS
+from vei_scenario.language.layers import behaviour_nodes
 from vei_scenario.language.rules_backend import place_adversary
 
 MAX_EPISODES = 5
 #: Share of the way to the target profile's middle moved per episode (episode 1, 2, ...).
 STEP_FRACTIONS = (0.3, 0.4, 0.5, 0.6, 0.7)
-
-
-def _nodes(topology: dict):
-    if "behaviour" in topology:
-        yield topology
-    for key in ("sequence", "parallel"):
-        for child in topology.get(key, []):
-            yield from _nodes(child)
 
 
 def adjust(layers: dict, direction: str, episode: int) -> dict:
@@ -34,7 +27,7 @@ def adjust(layers: dict, direction: str, episode: int) -> dict:
     target = "safe" if direction == "soften" else "dangerous"
     for adv in out["adversaries"]:
         first = None
-        for node in _nodes(adv["behaviour"]):
+        for _, node in behaviour_nodes(adv["behaviour"]):
             mod = BEHAVIOURS[node["behaviour"]]
             ranges = mod.PROFILES.get(target, {})
             cfg = node.setdefault("config", {})

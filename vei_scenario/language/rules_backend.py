@@ -20,6 +20,7 @@ from dataclasses import dataclass, field
 
 from vei_scenario.language import vocabulary as V
 from vei_scenario.language.behaviours import BEHAVIOURS
+from vei_scenario.language.layers import behaviour_nodes
 from vei_scenario.language.maps import ARM_LENGTH_M
 from vei_scenario.language.placement import DEFAULT_FEATURE_DISTANCE_M, junction_conflict_m, lane_id
 from vei_scenario.language.scenario_writer import TYPES
@@ -306,15 +307,12 @@ def sample_layers(reading: Reading, text: str, seed: int) -> dict:
         ego["route"] = reading.ego_route if reading.ego_route in ("straight", "left", "right") else "straight"
     intent = reading.intent or "unspecified"
     adversaries = []
-    counts: dict[str, int] = {}
     for spec in reading.actors:
-        if not spec.behaviours:
-            spec.behaviours.append(("keep_going", {}, None, "sequence"))
-        counts[spec.kind] = counts.get(spec.kind, 0) + 1
+        behaviours = spec.behaviours or [("keep_going", {}, None, "sequence")]  # (the reading stays as read)
         name = f"Adversary{len(adversaries) + 1}"
         nodes = []
         first_cfg: dict = {}
-        for idx, (bname, given, crit, link) in enumerate(spec.behaviours):
+        for idx, (bname, given, crit, link) in enumerate(behaviours):
             if crit is None and intent in ("near_miss", "collision"):
                 crit = "dangerous"
             elif crit is None and intent == "safe":
@@ -324,7 +322,7 @@ def sample_layers(reading: Reading, text: str, seed: int) -> dict:
                 first_cfg = cfg
             nodes.append((link, {"behaviour": bname, "config": cfg}))
         topology = _topology(nodes)
-        first = BEHAVIOURS[spec.behaviours[0][0]]
+        first = BEHAVIOURS[behaviours[0][0]]
         relation = spec.relation or getattr(first, "DEFAULT_SPAWN", {}).get("relation", "ahead")
         given_speed = spec.speed_mps
         if given_speed is not None and given_speed < 0:  # a speed word: a factor on the default speed
@@ -455,7 +453,7 @@ def background(rng: random.Random, layers: dict) -> list[dict]:
             used.add(ego_lane - 1)
         elif rel == "oncoming":
             used.add(1)
-        if "overtake" in str(adv["behaviour"]):
+        if any(node["behaviour"] == "overtake" for _, node in behaviour_nodes(adv["behaviour"])):
             used.add(ego_lane + 1 if ego_lane != -1 else 1)
     free = [k for k in range(1, lanes + 1) if k not in used]
     if env["kind"] not in ("crossroad", "roundabout"):  # (towards a junction, players may choose other turns)

@@ -22,6 +22,7 @@ from __future__ import annotations
 import datetime as dt
 import math
 import tempfile
+import xml.etree.ElementTree as ET
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -31,6 +32,7 @@ from vei_scenario.language import maps, placement
 from vei_scenario.language.behaviours import behaviour
 from vei_scenario.language.behaviours.base import ActorContext, Condition, G
 from vei_scenario.models.cap import CapParameters
+from vei_scenario.openscenario.scenario_writer import render
 from vei_scenario.roads.opendrive_output import finalize_opendrive
 from vei_scenario.roads.road_model import RoadNetwork
 
@@ -201,13 +203,11 @@ class _StoryBuilder:
         return prev
 
 
-def _roads(layers: dict, out_dir: Path, stem: str) -> tuple[bytes, maps.MapInfo, str]:
+def _roads(layers: dict, stem: str) -> tuple[bytes, maps.MapInfo, str]:
     spec = layers["environment"]["map"]
     if spec["kind"] == "file":
         raise placement.PlacementError("map kind 'file' is given by path: use environment.map.file with vei describe")
     odr, info = maps.build_map(spec)
-    import xml.etree.ElementTree as ET
-
     element = odr.get_element()
     for signal in element.iter("signal"):  # scenariogeneration upper-cases the country; the XSD wants OpenDRIVE
         if signal.get("country") == "OPENDRIVE":
@@ -216,16 +216,21 @@ def _roads(layers: dict, out_dir: Path, stem: str) -> tuple[bytes, maps.MapInfo,
     return raw, info, f"{stem}.xodr"
 
 
-def write_scenario(layers: dict, stem: str, out_dir: Path) -> WrittenScenario:
+def _road_network(xodr_bytes: bytes) -> RoadNetwork:
+    """The road model of the written map, for geometry questions (it reads files)."""
+    with tempfile.TemporaryDirectory() as tmp:
+        path = Path(tmp) / "map.xodr"
+        path.write_bytes(xodr_bytes)
+        return RoadNetwork.load(path)
+
+
+def write_scenario(layers: dict, stem: str) -> WrittenScenario:
     """The scenario of ``layers`` as (xosc bytes, xodr bytes); the xosc refers to ``<stem>.xodr``
     beside it. Raises :class:`~vei_scenario.language.placement.PlacementError` (or ValueError) with
     the reason when the layers ask for what the map cannot hold."""
     mu = friction(layers)
-    xodr_bytes, info, xodr_name = _roads(layers, out_dir, stem)
-    with tempfile.TemporaryDirectory() as tmp:  # the road model answers the geometry questions
-        path = Path(tmp) / "map.xodr"
-        path.write_bytes(xodr_bytes)
-        net = RoadNetwork.load(path)
+    xodr_bytes, info, xodr_name = _roads(layers, stem)
+    net: RoadNetwork | None = None
 
     ego = layers["ego"]
     ego_pose = placement.ego_pose(info, ego)
@@ -262,7 +267,6 @@ def write_scenario(layers: dict, stem: str, out_dir: Path) -> WrittenScenario:
 
     story = xosc.Story("Behaviours")
     act = xosc.Act("behaviours")
-    act_has_groups = False
     for adv in layers["adversaries"]:
         name, kind = adv["name"], adv["type"]
         pose = placement.adversary_pose(info, ego_pose, adv["spawn"])
@@ -285,6 +289,7 @@ def write_scenario(layers: dict, stem: str, out_dir: Path) -> WrittenScenario:
         )
         controller = None
         if adv["spawn"]["relation"].startswith("roadside"):
+            net = net or _road_network(xodr_bytes)  # (only crossings ask the road model)
             road = net.road(pose.road)
             t0 = road.lane_center_t(pose.s, pose.lane_id) + pose.offset
             t_ego = road.lane_center_t(pose.s, ego_pose.lane_id)
@@ -313,7 +318,6 @@ def write_scenario(layers: dict, stem: str, out_dir: Path) -> WrittenScenario:
         group.add_actor(name)
         group.add_maneuver(builder.maneuver)
         act.add_maneuver_group(group)
-        act_has_groups = True
     for k, bg in enumerate(layers["background"]["vehicles"]):
         name = f"Background{k + 1}"
         entities.add_scenario_object(name, _vehicle(name, bg.get("type", "car"), mu))
@@ -331,7 +335,7 @@ def write_scenario(layers: dict, stem: str, out_dir: Path) -> WrittenScenario:
     stop_trigger = xosc.Trigger("stop")
     stop_trigger.add_conditiongroup(stop)
     board = xosc.StoryBoard(init, stop_trigger)
-    if act_has_groups:
+    if layers["adversaries"]:
         story.add_act(act)
         board.add_story(story)
     network = xosc.RoadNetwork(roadfile=xodr_name)
@@ -346,19 +350,8 @@ def write_scenario(layers: dict, stem: str, out_dir: Path) -> WrittenScenario:
         osc_minor_version=3,
         creation_date=dt.datetime(1970, 1, 1),
     )
-    from lxml import etree
-
-    root = etree.fromstring(_tostring(scenario))
-    etree.indent(root, space="    ")
-    xml = etree.tostring(root, xml_declaration=True, encoding="UTF-8", pretty_print=True)
-    return WrittenScenario(xml, xodr_bytes, [a["name"] for a in layers["adversaries"]])
+    return WrittenScenario(render(scenario), xodr_bytes, [a["name"] for a in layers["adversaries"]])
 
 
 def _step() -> xosc.TransitionDynamics:
     return xosc.TransitionDynamics(xosc.DynamicsShapes.step, xosc.DynamicsDimension.time, 0.0)
-
-
-def _tostring(scenario: xosc.Scenario) -> bytes:
-    import xml.etree.ElementTree as ET
-
-    return ET.tostring(scenario.get_element(), encoding="utf-8")
