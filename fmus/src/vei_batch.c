@@ -14,120 +14,166 @@
 static double dmin(double a, double b) { return a < b ? a : b; }
 static double dmax(double a, double b) { return a > b ? a : b; }
 
-/* Offsets (ox, oy) of a point outside a box along the box's axes; its distance is hypot(ox, oy). */
-static void point_box_offsets(double px, double py, const VeiTrigBox *b, double *ox, double *oy) {
-    double dx = px - b->x, dy = py - b->y;
-    double lx = b->c * dx + b->s * dy, ly = -b->s * dx + b->c * dy;
-    *ox = dmax(fabs(lx) - 0.5 * b->length, 0.0);
-    *oy = dmax(fabs(ly) - 0.5 * b->width, 0.0);
-}
-
-/* The offsets of a's corners from b, and the least squared corner distance. */
-static double corners_to_box(const VeiTrigBox *a, const VeiTrigBox *b, double ox[4], double oy[4]) {
-    double c = a->c, s = a->s, hl = 0.5 * a->length, hw = 0.5 * a->width;
-    const double lx[4] = {hl, -hl, -hl, hl}, ly[4] = {hw, hw, -hw, -hw};
+/* The least squared distance from a's corners to box b, worked out in b's frame: a's centre and half
+ * axes are turned into it once, and each corner is then a sum and a difference. */
+static double corners_to_box(const VeiTrigBox *a, const VeiTrigBox *b) {
+    double dx = a->x - b->x, dy = a->y - b->y;
+    double px = b->c * dx + b->s * dy, py = -b->s * dx + b->c * dy;
+    double cr = a->c * b->c + a->s * b->s, sr = a->s * b->c - a->c * b->s; /* a's heading relative to b's */
+    double hl = 0.5 * a->length, hw = 0.5 * a->width, bl = 0.5 * b->length, bw = 0.5 * b->width;
+    double ex = cr * hl, ey = sr * hl, fx = -sr * hw, fy = cr * hw; /* a's half axes */
+    const double cx[4] = {px + ex + fx, px - ex + fx, px - ex - fx, px + ex - fx};
+    const double cy[4] = {py + ey + fy, py - ey + fy, py - ey - fy, py + ey - fy};
     double least = INFINITY;
     for (int k = 0; k < 4; k++) {
-        point_box_offsets(a->x + c * lx[k] - s * ly[k], a->y + s * lx[k] + c * ly[k], b, &ox[k], &oy[k]);
-        double d2 = ox[k] * ox[k] + oy[k] * oy[k];
-        if (d2 < least) least = d2;
+        double ox = dmax(fabs(cx[k]) - bl, 0.0), oy = dmax(fabs(cy[k]) - bw, 0.0);
+        least = dmin(least, ox * ox + oy * oy);
     }
     return least;
 }
 
-/* The least corner-to-box distance min_k hypot(ox_k, oy_k) both ways, with hypot evaluated only for
- * corners whose squared distance is within 1e-9 (relative) of the least: hypot is monotonic, so the
- * corners left out cannot give the minimum, and the result equals the minimum over all eight. */
-static double box_gap(const VeiTrigBox *a, const VeiTrigBox *b) {
-    double oxa[4], oya[4], oxb[4], oyb[4];
-    double la = corners_to_box(a, b, oxa, oya), lb = corners_to_box(b, a, oxb, oyb);
-    double limit = dmin(la, lb) * (1.0 + 1e-9), best = INFINITY;
-    for (int k = 0; k < 4; k++) {
-        if (oxa[k] * oxa[k] + oya[k] * oya[k] <= limit) best = dmin(best, hypot(oxa[k], oya[k]));
-        if (oxb[k] * oxb[k] + oyb[k] * oyb[k] <= limit) best = dmin(best, hypot(oxb[k], oyb[k]));
-    }
-    return best;
-}
+/* Distance between two disjoint boxes: they are closest at a corner of one of them, so it is the least
+ * corner-to-box distance both ways; one square root of the least squared distance (sqrt is monotonic
+ * and correctly rounded, so this is the least of the eight distances). The operations differ from
+ * vei_scenario.models.boxes.box_distance's in order, so the two agree to ~1e-15 m
+ * (tests/test_batch_native.py), not bit for bit. */
+static double box_gap(const VeiTrigBox *a, const VeiTrigBox *b) { return sqrt(dmin(corners_to_box(a, b), corners_to_box(b, a))); }
 
 enum { EX, EY, EYAW, ESPEED, EACCEL, TX, TY, TYAW, TSPEED, TACCEL, NTRAJ };
+/* the cosine and sine of each recorded heading: computed once per step by the simulation and shared
+ * by the planner, the rider's repulsion from the ego and the metrics */
+enum { EC, ES, TC, TS, NTRIG };
+
+/* vei_trig_time_to_conflict where it can matter. The planner treats every time to conflict beyond its
+ * horizon as no conflict, and the boxes cannot touch before their circumscribed circles do: where the
+ * circles stay apart for longer than the horizon (with a margin of 1e-6 for rounding), the box test
+ * is skipped and INFINITY returned, which the planner treats exactly as it would the box test's value. */
+static double conflict(const VeiBatchScene *sc, double reach, const VeiTrigBox *ego, double ego_speed,
+                       const VeiTrigBox *threat, double tvx, double tvy) {
+    const double m = sc->cap.corridor_margin_m;
+    double cx = ego->x + 0.5 * m * ego->c, cy = ego->y + 0.5 * m * ego->s;
+    double rx = threat->x - cx, ry = threat->y - cy;
+    double wx = tvx - ego_speed * ego->c, wy = tvy - ego_speed * ego->s;
+    double r2 = rx * rx + ry * ry, gap2 = r2 - reach * reach;
+    if (gap2 > 0.0) {
+        double b = rx * wx + ry * wy, a = wx * wx + wy * wy;
+        if (b >= 0.0) return INFINITY; /* not closing: the circles never meet */
+        double disc = b * b - a * gap2;
+        if (disc < 0.0) return INFINITY; /* they pass each other */
+        double t_meet = gap2 / (-b + sqrt(disc));
+        if (t_meet > sc->cap.horizon_s * (1.0 + 1e-6) + 1e-9) return INFINITY;
+    }
+    return vei_trig_time_to_conflict(ego, ego_speed, m, threat, tvx, tvy);
+}
 
 /* ---- simulation -------------------------------------------------------------------------------- */
-static void simulate(const VeiBatchScene *sc, const VeiBatchVariant *v, double *tr[NTRAJ]) {
+/* One variant. With ego_given the ego's rows of tr and tg already hold its trajectory (a variant
+ * without the planner at the same speed ran before: the ego's motion does not depend on the rider). */
+static void simulate(const VeiBatchScene *sc, const VeiBatchVariant *v, double *tr[NTRAJ], double *tg[NTRIG],
+                     int ego_given, double reach) {
     const double dt = sc->dt;
     double x[2] = {sc->ego_x0, sc->threat_x0}, y[2] = {sc->ego_y0, sc->threat_y0};
     double yaw[2] = {sc->ego_yaw0, sc->threat_yaw0}, speed[2] = {v->ego_speed0, v->threat_speed0};
+    double c[2] = {cos(yaw[0]), cos(yaw[1])}, s[2] = {sin(yaw[0]), sin(yaw[1])};
     double accel[2] = {0.0, 0.0}, fs[2] = {0.0, 0.0};
     VeiCapState cap = {0, 0.0, 0.0, 0};
     VeiSfmState st = {0, 0, 0, 0, 0};
+    double rider_speed = 0.0; /* hypot(st.vx, st.vy) */
     int riding = 0, started = 0;
+    VeiCursor on_path = VEI_CURSOR_START, on_track = VEI_CURSOR_START;
     const double t_start = sc->track.t[0] * 1.0 + v->offset;
     const double length = vei_polyline_length(&sc->ego_path);
 #define RECORD(k)                                                                                   \
     do {                                                                                            \
-        tr[EX][k] = x[0], tr[EY][k] = y[0], tr[EYAW][k] = yaw[0], tr[ESPEED][k] = speed[0];         \
-        tr[EACCEL][k] = accel[0], tr[TX][k] = x[1], tr[TY][k] = y[1], tr[TYAW][k] = yaw[1];         \
-        tr[TSPEED][k] = speed[1], tr[TACCEL][k] = accel[1];                                         \
+        if (!ego_given) {                                                                           \
+            tr[EX][k] = x[0], tr[EY][k] = y[0], tr[EYAW][k] = yaw[0], tr[ESPEED][k] = speed[0];     \
+            tr[EACCEL][k] = accel[0], tg[EC][k] = c[0], tg[ES][k] = s[0];                           \
+        }                                                                                           \
+        tr[TX][k] = x[1], tr[TY][k] = y[1], tr[TYAW][k] = yaw[1], tr[TSPEED][k] = speed[1];         \
+        tr[TACCEL][k] = accel[1], tg[TC][k] = c[1], tg[TS][k] = s[1];                               \
+    } while (0)
+#define EGO_FROM_RECORD(k)                                                                          \
+    do {                                                                                            \
+        x[0] = tr[EX][k], y[0] = tr[EY][k], yaw[0] = tr[EYAW][k], speed[0] = tr[ESPEED][k];         \
+        accel[0] = tr[EACCEL][k], c[0] = tg[EC][k], s[0] = tg[ES][k];                               \
     } while (0)
     RECORD(0);
     for (int k = 0; k < sc->n_steps; k++) {
         double t = sc->t[k], t_next = t + dt;
         if (!started && t > sc->behaviour_start) {
             started = 1;
-            fs[0] = vei_polyline_project(&sc->ego_path, x[0], y[0]);
+            if (!ego_given) fs[0] = vei_polyline_project(&sc->ego_path, x[0], y[0]);
         }
-        if (!started) {
-            for (int e = 0; e < 2; e++) vei_straight_ahead(&x[e], &y[e], yaw[e], speed[e], &accel[e], dt);
+        if (!started) { /* vei_straight_ahead with the heading's cosine and sine kept */
+            for (int e = 0; e < 2; e++) {
+                double v0 = speed[e];
+                accel[e] = (speed[e] - v0) / dt;
+                double ds = 0.5 * (v0 + speed[e]) * dt;
+                x[e] = x[e] + ds * c[e];
+                y[e] = y[e] + ds * s[e];
+            }
+            if (ego_given) EGO_FROM_RECORD(k + 1);
             RECORD(k + 1);
             continue;
         }
         /* the ego: the planner where it is on, else its path at constant speed */
-        double v0 = speed[0];
-        if (v->cap_on) {
-            VeiTrigBox ego = vei_trig_box(x[0], y[0], yaw[0], sc->ego_length, sc->ego_width);
-            VeiTrigBox threat = vei_trig_box(x[1], y[1], yaw[1], sc->threat_length, sc->threat_width);
-            double tvx = speed[1] * threat.c, tvy = speed[1] * threat.s;
-            double m = sc->cap.corridor_margin_m;
-            double ttc = vei_trig_time_to_conflict(&ego, v0, m, &threat, tvx, tvy);
-            double resume = cap.brake ? vei_trig_time_to_conflict(&ego, v->cruise, m, &threat, tvx, tvy) : ttc;
-            double d_safe;
-            double a_cmd = vei_cap_step(&cap, &sc->cap, v->cruise, v0, ttc, resume, dt, &d_safe);
-            VeiLongitudinal lon = {0.0, v0, accel[0]};
-            vei_longitudinal_step(&lon, a_cmd, &sc->limits, dt);
-            fs[0] = dmin(fs[0] + lon.s, length);
-            speed[0] = lon.v;
-            accel[0] = lon.a;
+        if (ego_given) {
+            EGO_FROM_RECORD(k + 1);
         } else {
-            fs[0] = dmin(fs[0] + 0.5 * (v0 + v0) * dt, length);
-            accel[0] = (v0 - v0) / dt;
+            double v0 = speed[0];
+            if (v->cap_on) {
+                VeiTrigBox ego = {x[0], y[0], yaw[0], sc->ego_length, sc->ego_width, c[0], s[0]};
+                VeiTrigBox threat = {x[1], y[1], yaw[1], sc->threat_length, sc->threat_width, c[1], s[1]};
+                double tvx = speed[1] * threat.c, tvy = speed[1] * threat.s;
+                double ttc = conflict(sc, reach, &ego, v0, &threat, tvx, tvy);
+                double resume = cap.brake ? conflict(sc, reach, &ego, v->cruise, &threat, tvx, tvy) : ttc;
+                double d_safe;
+                double a_cmd = vei_cap_step(&cap, &sc->cap, v->cruise, v0, ttc, resume, dt, &d_safe);
+                VeiLongitudinal lon = {0.0, v0, accel[0]};
+                vei_longitudinal_step(&lon, a_cmd, &sc->limits, dt);
+                fs[0] = dmin(fs[0] + lon.s, length);
+                speed[0] = lon.v;
+                accel[0] = lon.a;
+            } else {
+                fs[0] = dmin(fs[0] + 0.5 * (v0 + v0) * dt, length);
+                accel[0] = (v0 - v0) / dt;
+            }
+            double before = yaw[0];
+            vei_polyline_at_s_seg(&sc->ego_path, fs[0], &on_path, &x[0], &y[0], &yaw[0]);
+            if (yaw[0] != before) c[0] = cos(yaw[0]), s[0] = sin(yaw[0]);
         }
-        vei_polyline_at_s(&sc->ego_path, fs[0], &x[0], &y[0], &yaw[0]);
         /* the threat: replay of its shifted track until the rider starts, then the social force model */
         if (v->sfm_on && !riding && t_next >= t_start - 1e-9) {
             riding = 1;
             st.x = x[1], st.y = y[1];
-            st.vx = sc->v_start * cos(yaw[1]), st.vy = sc->v_start * sin(yaw[1]);
+            st.vx = sc->v_start * c[1], st.vy = sc->v_start * s[1];
             st.waypoint = 0;
+            rider_speed = hypot(st.vx, st.vy);
         }
+        double before = yaw[1];
         if (riding) {
             VeiBox ego = {x[0], y[0], yaw[0], sc->ego_length, sc->ego_width};
-            vei_sfm_step(&st, sc->route_x, sc->route_y, sc->route_n, &sc->sfm, v->repulsive, &ego, dt);
-            double sp = hypot(st.vx, st.vy);
+            double sp = vei_sfm_step_trig(&st, rider_speed, sc->route_x, sc->route_y, sc->route_n, &sc->sfm,
+                                          v->repulsive, &ego, c[0], s[0], dt);
+            rider_speed = sp;
             accel[1] = (sp - speed[1]) / dt;
             x[1] = st.x, y[1] = st.y;
             if (sp > 0.05) yaw[1] = atan2(st.vy, st.vx);
             speed[1] = sp;
         } else {
             double tt = (t_next - v->offset) / 1.0;
-            double target = vei_polyline_s_at_time(&sc->track, tt);
+            double target = vei_polyline_s_at_time_seg(&sc->track, tt, &on_track);
             double spd = (target - fs[1]) / dt;
             accel[1] = (spd - speed[1]) / dt;
             speed[1] = spd;
             fs[1] = target;
-            vei_polyline_at_time(&sc->track, tt, &x[1], &y[1], &yaw[1]);
+            vei_polyline_at_time_seg(&sc->track, tt, &on_track, &x[1], &y[1], &yaw[1]);
         }
+        if (yaw[1] != before) c[1] = cos(yaw[1]), s[1] = sin(yaw[1]);
         RECORD(k + 1);
     }
 #undef RECORD
+#undef EGO_FROM_RECORD
 }
 
 /* ---- metrics ------------------------------------------------------------------------------------- */
@@ -154,7 +200,8 @@ static double circular_mean_angle(const double *yaw, const int *in, int n) {
     return atan2(ss / m, sc / m);
 }
 
-static double pet(const VeiBatchScene *sc, double *tr[NTRAJ], int n, int *in_e, int *in_o, int *ie, int *io) {
+static double pet(const VeiBatchScene *sc, double *tr[NTRAJ], double *tg[NTRIG], int n, int *in_e, int *in_o, int *ie,
+                  int *io) {
     int step = sc->pet_step, m = 0;
     double reach = sc->radius_sum;
     double exmin = INFINITY, exmax = -INFINITY, eymin = INFINITY, eymax = -INFINITY;
@@ -188,12 +235,13 @@ static double pet(const VeiBatchScene *sc, double *tr[NTRAJ], int n, int *in_e, 
             int i = ie[a] * step;
             double ex = tr[EX][i], ey = tr[EY][i];
             if (ex < bx0 - reach || ex > bx1 + reach || ey < by0 - reach || ey > by1 + reach) continue;
-            VeiTrigBox eb = vei_trig_box(ex, ey, tr[EYAW][i], sc->ego_length, sc->ego_width);
+            VeiTrigBox eb = {ex, ey, tr[EYAW][i], sc->ego_length, sc->ego_width, tg[EC][i], tg[ES][i]};
             for (int b = b0; b < b1; b++) {
                 int j = io[b] * step;
                 double dx = ex - tr[TX][j], dy = ey - tr[TY][j];
                 if (dx * dx + dy * dy > reach * reach) continue;
-                VeiTrigBox ob = vei_trig_box(tr[TX][j], tr[TY][j], tr[TYAW][j], sc->threat_length, sc->threat_width);
+                VeiTrigBox ob = {tr[TX][j], tr[TY][j], tr[TYAW][j], sc->threat_length, sc->threat_width,
+                                 tg[TC][j], tg[TS][j]};
                 if (vei_trig_boxes_overlap(&eb, &ob)) in_e[ie[a]] = in_o[io[b]] = any = 1;
             }
         }
@@ -224,7 +272,7 @@ typedef struct {
     int *contact, *in_e, *in_o, *ie, *io;
 } Scratch;
 
-static void score(const VeiBatchScene *sc, double *tr[NTRAJ], Scratch *w, double *out) {
+static void score(const VeiBatchScene *sc, double *tr[NTRAJ], double *tg[NTRIG], Scratch *w, double *out) {
     const int n = sc->n_steps + 1;
     const double *t = sc->t;
     int any_contact = 0, first_contact = -1;
@@ -233,13 +281,14 @@ static void score(const VeiBatchScene *sc, double *tr[NTRAJ], Scratch *w, double
     for (int k = 0; k < n; k++) {
         double ex = tr[EX][k], ey = tr[EY][k], eyaw = tr[EYAW][k], ev = tr[ESPEED][k];
         double ox = tr[TX][k], oy = tr[TY][k], oyaw = tr[TYAW][k], ov = tr[TSPEED][k];
-        VeiTrigBox eb = vei_trig_box(ex, ey, eyaw, sc->ego_length, sc->ego_width);
-        VeiTrigBox ob = vei_trig_box(ox, oy, oyaw, sc->threat_length, sc->threat_width);
+        VeiTrigBox eb = {ex, ey, eyaw, sc->ego_length, sc->ego_width, tg[EC][k], tg[ES][k]};
+        VeiTrigBox ob = {ox, oy, oyaw, sc->threat_length, sc->threat_width, tg[TC][k], tg[TS][k]};
         double evx = ev * eb.c, evy = ev * eb.s, ovx = ov * ob.c, ovy = ov * ob.s;
         double rx = ox - ex, ry = oy - ey, vx = ovx - evx, vy = ovy - evy;
         double v2 = vx * vx + vy * vy, d2 = rx * rx + ry * ry;
         int closing = (rx * vx + ry * vy) < 0;
-        double mfd = v2 > 1e-12 ? fabs(rx * vy - ry * vx) / sqrt(v2) : hypot(rx, ry);
+        /* the miss distance, needed only while closing */
+        double mfd = !closing ? 0.0 : v2 > 1e-12 ? fabs(rx * vy - ry * vx) / sqrt(v2) : hypot(rx, ry);
         /* Each box lies within its circumscribed circle. Where the circles are apart now (no contact)
          * or stay apart at constant velocity (no time to contact), the box tests are left out: they
          * would give the same answer, so every output stays bit-identical (~99 % of steps). */
@@ -309,7 +358,7 @@ static void score(const VeiBatchScene *sc, double *tr[NTRAJ], Scratch *w, double
     out[OUT_ACT_MIN] = act_min;
     out[OUT_EI_MAX] = ei_max;
     out[OUT_DRAC_MAX] = drac_max;
-    out[OUT_PET] = pet(sc, tr, n, w->in_e, w->in_o, w->ie, w->io);
+    out[OUT_PET] = pet(sc, tr, tg, n, w->in_e, w->in_o, w->ie, w->io);
     out[OUT_PEAK_DECEL] = dmax(0.0, -peak) + 0.0; /* + 0.0: never -0.0, as in the Python metric */
     out[OUT_MAX_JERK] = jerk_max;
     out[OUT_COMFORT] = (double)comfortable / n;
@@ -319,19 +368,52 @@ static void score(const VeiBatchScene *sc, double *tr[NTRAJ], Scratch *w, double
 
 int vei_batch_run(const VeiBatchScene *sc, const VeiBatchVariant *v, int n_variants, double *out, double *traj) {
     const int n = sc->n_steps + 1;
-    double *buf = (double *)malloc(sizeof(double) * (size_t)n * (NTRAJ + 3));
+    /* per variant: the trajectory, its headings' cosines and sines, gap, rate, jerk; then the ego's
+     * trajectory without the planner, kept for the next variant without it at the same speed */
+    enum { PER = NTRAJ + NTRIG + 3, EGO_ROWS = 7 };
+    double *buf = (double *)malloc(sizeof(double) * (size_t)n * (PER + EGO_ROWS));
     int *ibuf = (int *)malloc(sizeof(int) * (size_t)n * 5);
     if (buf == NULL || ibuf == NULL) {
         free(buf), free(ibuf);
         return -1;
     }
-    Scratch w = {buf + NTRAJ * n, buf + (NTRAJ + 1) * n, buf + (NTRAJ + 2) * n,
-                 ibuf, ibuf + n, ibuf + 2 * n, ibuf + 3 * n, ibuf + 4 * n};
+    double *rows = buf + (size_t)(NTRAJ + NTRIG) * n;
+    Scratch w = {rows, rows + n, rows + 2 * n, ibuf, ibuf + n, ibuf + 2 * n, ibuf + 3 * n, ibuf + 4 * n};
+    double *ego_rows = buf + (size_t)PER * n; /* x, y, yaw, speed, accel, cos, sin */
+    int have_ego = 0;
+    double ego_speed = 0.0;
+    const double m = sc->cap.corridor_margin_m;
+    const double reach =
+        (0.5 * hypot(sc->ego_length + m, sc->ego_width + 2 * m) + 0.5 * hypot(sc->threat_length, sc->threat_width)) *
+            (1.0 + 1e-6) +
+        1e-9;
     for (int i = 0; i < n_variants; i++) {
-        double *tr[NTRAJ];
+        double *tr[NTRAJ], *tg[NTRIG];
         for (int q = 0; q < NTRAJ; q++) tr[q] = traj ? traj + ((size_t)i * NTRAJ + q) * n : buf + (size_t)q * n;
-        simulate(sc, &v[i], tr);
-        score(sc, tr, &w, out + (size_t)i * VEI_BATCH_OUTPUTS);
+        for (int q = 0; q < NTRIG; q++) tg[q] = buf + (size_t)(NTRAJ + q) * n;
+        int ego_given = 0;
+        if (!v[i].cap_on) {
+            /* the same ego motion for every variant without the planner at one initial speed */
+            if (have_ego && memcmp(&ego_speed, &v[i].ego_speed0, sizeof ego_speed) == 0) ego_given = 1;
+            if (traj == NULL) {
+                for (int q = 0; q < 5; q++) tr[EX + q] = ego_rows + (size_t)q * n;
+                tg[EC] = ego_rows + (size_t)5 * n, tg[ES] = ego_rows + (size_t)6 * n;
+            } else if (ego_given) {
+                for (int q = 0; q < 5; q++) memcpy(tr[EX + q], ego_rows + (size_t)q * n, sizeof(double) * n);
+                memcpy(tg[EC], ego_rows + (size_t)5 * n, sizeof(double) * n);
+                memcpy(tg[ES], ego_rows + (size_t)6 * n, sizeof(double) * n);
+            }
+        }
+        simulate(sc, &v[i], tr, tg, ego_given, reach);
+        if (!v[i].cap_on && !ego_given) {
+            if (traj != NULL) {
+                for (int q = 0; q < 5; q++) memcpy(ego_rows + (size_t)q * n, tr[EX + q], sizeof(double) * n);
+                memcpy(ego_rows + (size_t)5 * n, tg[EC], sizeof(double) * n);
+                memcpy(ego_rows + (size_t)6 * n, tg[ES], sizeof(double) * n);
+            }
+            have_ego = 1, ego_speed = v[i].ego_speed0;
+        }
+        score(sc, tr, tg, &w, out + (size_t)i * VEI_BATCH_OUTPUTS);
     }
     free(buf);
     free(ibuf);

@@ -13,7 +13,9 @@ double vei_hypot(double x, double y) { return hypot(x, y); }
 double vei_wrap_angle(double a) {
     /* Python's (a + pi) % (2 pi) - pi: the remainder takes the divisor's sign. */
     const double two_pi = 2.0 * M_PI;
-    double r = fmod(a + M_PI, two_pi);
+    double x = a + M_PI;
+    if (x >= 0.0 && x < two_pi) return x - M_PI; /* fmod would return x itself: skip it */
+    double r = fmod(x, two_pi);
     if (r != 0.0 && r < 0.0) r += two_pi;
     return r - M_PI;
 }
@@ -82,8 +84,7 @@ int vei_boxes_overlap(const VeiBox *a, const VeiBox *b) {
     return vei_trig_boxes_overlap(&ta, &tb);
 }
 
-static void closest_point_on_box(double px, double py, const VeiBox *b, double *qx, double *qy) {
-    double c = cos(b->yaw), s = sin(b->yaw);
+static void closest_point_on_box(double px, double py, const VeiBox *b, double c, double s, double *qx, double *qy) {
     double dx = px - b->x, dy = py - b->y;
     double lx = dmax(-0.5 * b->length, dmin(0.5 * b->length, c * dx + s * dy));
     double ly = dmax(-0.5 * b->width, dmin(0.5 * b->width, -s * dx + c * dy));
@@ -91,8 +92,9 @@ static void closest_point_on_box(double px, double py, const VeiBox *b, double *
     *qy = b->y + s * lx + c * ly;
 }
 
-void vei_sfm_acceleration(const VeiSfmState *st, double dest_x, double dest_y, const VeiSfmParams *p,
-                          int repulsive, const VeiBox *ego, double *ax, double *ay) {
+/* vei_sfm_acceleration with the cosine and sine of the ego's heading given (c, s) */
+static void sfm_acceleration(const VeiSfmState *st, double dest_x, double dest_y, const VeiSfmParams *p, int repulsive,
+                             const VeiBox *ego, double c, double s, double *ax, double *ay) {
     double ex = dest_x - st->x, ey = dest_y - st->y;
     double scale = p->v0_mps / sqrt(ex * ex + ey * ey + p->sigma_m * p->sigma_m);
     double k = p->mass_kg / p->tau_s;
@@ -100,7 +102,7 @@ void vei_sfm_acceleration(const VeiSfmState *st, double dest_x, double dest_y, c
     double fy = k * (ey * scale - st->vy);
     if (repulsive && ego != NULL) {
         double qx, qy;
-        closest_point_on_box(st->x, st->y, ego, &qx, &qy);
+        closest_point_on_box(st->x, st->y, ego, c, s, &qx, &qy);
         double nx = st->x - qx, ny = st->y - qy;
         double d = hypot(nx, ny);
         if (d > 1e-9) {
@@ -120,12 +122,27 @@ void vei_sfm_acceleration(const VeiSfmState *st, double dest_x, double dest_y, c
     *ay = fy / p->mass_kg;
 }
 
-void vei_sfm_step(VeiSfmState *st, const double *route_x, const double *route_y, int n, const VeiSfmParams *p,
-                  int repulsive, const VeiBox *ego, double dt) {
+void vei_sfm_acceleration(const VeiSfmState *st, double dest_x, double dest_y, const VeiSfmParams *p,
+                          int repulsive, const VeiBox *ego, double *ax, double *ay) {
+    double c = ego != NULL ? cos(ego->yaw) : 1.0, s = ego != NULL ? sin(ego->yaw) : 0.0;
+    sfm_acceleration(st, dest_x, dest_y, p, repulsive, ego, c, s, ax, ay);
+}
+
+/* hypot(dx, dy) <= r, with hypot evaluated only where the squared distance cannot decide it (hypot is
+ * within an ulp of sqrt(dx^2 + dy^2), so the margins of 1e-9 leave the answer exact) */
+static int within(double dx, double dy, double r) {
+    double d2 = dx * dx + dy * dy, r2 = r * r;
+    if (d2 > r2 * (1.0 + 1e-9)) return 0;
+    if (d2 < r2 * (1.0 - 1e-9)) return 1;
+    return hypot(dx, dy) <= r;
+}
+
+double vei_sfm_step_trig(VeiSfmState *st, double speed, const double *route_x, const double *route_y, int n,
+                         const VeiSfmParams *p, int repulsive, const VeiBox *ego, double c, double s, double dt) {
     int wp = st->waypoint;
     while (wp < n - 1) {
         double wx = route_x[wp], wy = route_y[wp], nx_ = route_x[wp + 1], ny_ = route_y[wp + 1];
-        int near = hypot(wx - st->x, wy - st->y) <= p->waypoint_radius_m;
+        int near = within(wx - st->x, wy - st->y, p->waypoint_radius_m);
         int passed = (st->x - wx) * (nx_ - wx) + (st->y - wy) * (ny_ - wy) > 0;
         if (near || passed)
             wp += 1;
@@ -133,8 +150,7 @@ void vei_sfm_step(VeiSfmState *st, const double *route_x, const double *route_y,
             break;
     }
     double ax, ay;
-    vei_sfm_acceleration(st, route_x[wp], route_y[wp], p, repulsive, ego, &ax, &ay);
-    double speed = hypot(st->vx, st->vy);
+    sfm_acceleration(st, route_x[wp], route_y[wp], p, repulsive, ego, c, s, &ax, &ay);
     if (speed > 1e-9) {
         double ux = st->vx / speed, uy = st->vy / speed;
         double a_long = ax * ux + ay * uy;
@@ -143,8 +159,8 @@ void vei_sfm_step(VeiSfmState *st, const double *route_x, const double *route_y,
         ax = a_long * ux + a_lat_x;
         ay = a_long * uy + a_lat_y;
     }
-    double a = hypot(ax, ay);
-    if (a > p->max_decel_mps2) {
+    if (!within(ax, ay, p->max_decel_mps2)) {
+        double a = hypot(ax, ay);
         ax = ax * p->max_decel_mps2 / a;
         ay = ay * p->max_decel_mps2 / a;
     }
@@ -153,12 +169,20 @@ void vei_sfm_step(VeiSfmState *st, const double *route_x, const double *route_y,
     if (v > p->max_speed_mps) {
         vx = vx * p->max_speed_mps / v;
         vy = vy * p->max_speed_mps / v;
+        v = hypot(vx, vy);
     }
     st->x = st->x + 0.5 * (st->vx + vx) * dt;
     st->y = st->y + 0.5 * (st->vy + vy) * dt;
     st->vx = vx;
     st->vy = vy;
     st->waypoint = wp;
+    return v;
+}
+
+void vei_sfm_step(VeiSfmState *st, const double *route_x, const double *route_y, int n, const VeiSfmParams *p,
+                  int repulsive, const VeiBox *ego, double dt) {
+    double c = ego != NULL ? cos(ego->yaw) : 1.0, s = ego != NULL ? sin(ego->yaw) : 0.0;
+    vei_sfm_step_trig(st, hypot(st->vx, st->vy), route_x, route_y, n, p, repulsive, ego, c, s, dt);
 }
 
 /* ---------------------------------------------------------------------------------------------- */
@@ -264,7 +288,19 @@ static void lerp(const VeiPolyline *p, int i, double f, double *x, double *y, do
     *h = vei_wrap_angle(h0 + f * vei_wrap_angle(h1 - h0));
 }
 
-void vei_polyline_at_s(const VeiPolyline *p, double s, double *x, double *y, double *h) {
+/* bisect_right(a, n, v) - 1 for a[0] <= v < a[n - 1], starting from the cursor's segment when that is at or before
+ * the answer (a caller moving forward along a path finds its segment in a step or two) */
+static int seek(const double *a, int n, double v, VeiCursor *cur) {
+    int i = cur != NULL ? cur->seg : -1;
+    if (i < 0 || i >= n || a[i] > v)
+        i = bisect_right(a, n, v) - 1;
+    else
+        while (i + 1 < n && a[i + 1] <= v) i++;
+    if (cur != NULL) cur->seg = i;
+    return i;
+}
+
+void vei_polyline_at_s_seg(const VeiPolyline *p, double s, VeiCursor *cur, double *x, double *y, double *h) {
     if (s <= 0) {
         *x = p->x[0], *y = p->y[0], *h = p->h[0];
         return;
@@ -273,9 +309,13 @@ void vei_polyline_at_s(const VeiPolyline *p, double s, double *x, double *y, dou
         *x = p->x[p->n - 1], *y = p->y[p->n - 1], *h = p->h[p->n - 1];
         return;
     }
-    int i = bisect_right(p->s, p->n, s) - 1;
+    int i = seek(p->s, p->n, s, cur);
     double ds = p->s[i + 1] - p->s[i];
     lerp(p, i, ds <= 0 ? 0.0 : (s - p->s[i]) / ds, x, y, h);
+}
+
+void vei_polyline_at_s(const VeiPolyline *p, double s, double *x, double *y, double *h) {
+    vei_polyline_at_s_seg(p, s, NULL, x, y, h);
 }
 
 /* Speed of the last segment of a timed polyline (Polyline.end_speed). */
@@ -284,7 +324,7 @@ static double end_speed(const VeiPolyline *p) {
     return (p->s[e] - p->s[e - 1]) / (p->t[e] - p->t[e - 1]);
 }
 
-void vei_polyline_at_time(const VeiPolyline *p, double t, double *x, double *y, double *h) {
+void vei_polyline_at_time_seg(const VeiPolyline *p, double t, VeiCursor *cur, double *x, double *y, double *h) {
     const double *ts = p->t;
     if (t <= ts[0]) {
         *x = p->x[0], *y = p->y[0], *h = p->h[0];
@@ -292,21 +332,33 @@ void vei_polyline_at_time(const VeiPolyline *p, double t, double *x, double *y, 
     }
     if (t >= ts[p->n - 1]) { /* after the recording: on along the last heading at the last speed */
         const int e = p->n - 1;
-        double d = (t - ts[e]) * end_speed(p);
-        *x = p->x[e] + d * cos(p->h[e]), *y = p->y[e] + d * sin(p->h[e]), *h = p->h[e];
+        double d = (t - ts[e]) * end_speed(p), c, s;
+        if (cur != NULL && cur->has_end) {
+            c = cur->end_c, s = cur->end_s;
+        } else {
+            c = cos(p->h[e]), s = sin(p->h[e]);
+            if (cur != NULL) cur->end_c = c, cur->end_s = s, cur->has_end = 1;
+        }
+        *x = p->x[e] + d * c, *y = p->y[e] + d * s, *h = p->h[e];
         return;
     }
-    int i = bisect_right(ts, p->n, t) - 1;
+    int i = seek(ts, p->n, t, cur);
     lerp(p, i, (t - ts[i]) / (ts[i + 1] - ts[i]), x, y, h);
 }
 
-double vei_polyline_s_at_time(const VeiPolyline *p, double t) {
+void vei_polyline_at_time(const VeiPolyline *p, double t, double *x, double *y, double *h) {
+    vei_polyline_at_time_seg(p, t, NULL, x, y, h);
+}
+
+double vei_polyline_s_at_time_seg(const VeiPolyline *p, double t, VeiCursor *cur) {
     const double *ts = p->t;
     if (t <= ts[0]) return 0.0;
     if (t >= ts[p->n - 1]) return p->s[p->n - 1] + (t - ts[p->n - 1]) * end_speed(p);
-    int i = bisect_right(ts, p->n, t) - 1;
+    int i = seek(ts, p->n, t, cur);
     return p->s[i] + (t - ts[i]) / (ts[i + 1] - ts[i]) * (p->s[i + 1] - p->s[i]);
 }
+
+double vei_polyline_s_at_time(const VeiPolyline *p, double t) { return vei_polyline_s_at_time_seg(p, t, NULL); }
 
 double vei_polyline_project(const VeiPolyline *p, double px, double py) {
     double best = 0.0, best_d = INFINITY;

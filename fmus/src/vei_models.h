@@ -39,6 +39,10 @@ void vei_sfm_acceleration(const VeiSfmState *st, double dest_x, double dest_y, c
 /* One explicit step (sfm_step); route of n >= 1 waypoints; ego may be NULL. */
 void vei_sfm_step(VeiSfmState *st, const double *route_x, const double *route_y, int n, const VeiSfmParams *p,
                   int repulsive, const VeiBox *ego, double dt);
+/* The same step for a caller that knows the rider's speed hypot(vx, vy) and the cosine and sine of the
+ * ego's heading (the sweep kernel: no trigonometry twice); returns the new speed hypot(vx, vy). */
+double vei_sfm_step_trig(VeiSfmState *st, double speed, const double *route_x, const double *route_y, int n,
+                         const VeiSfmParams *p, int repulsive, const VeiBox *ego, double c, double s, double dt);
 
 /* --- collision-avoidance planner (vei_scenario.models.cap) --- */
 typedef struct {
@@ -75,6 +79,14 @@ double vei_polyline_length(const VeiPolyline *p);
 void vei_polyline_at_s(const VeiPolyline *p, double s, double *x, double *y, double *h);
 void vei_polyline_at_time(const VeiPolyline *p, double t, double *x, double *y, double *h);
 double vei_polyline_s_at_time(const VeiPolyline *p, double t);
+/* The three above for a caller moving forward along the path: a cursor (start it as VEI_CURSOR_START)
+ * carries the segment from one call to the next instead of a bisection each time, and the last
+ * heading's cosine and sine once computed; results are the same. */
+typedef struct { int seg, has_end; double end_c, end_s; } VeiCursor;
+#define VEI_CURSOR_START {-1, 0, 0.0, 0.0}
+void vei_polyline_at_s_seg(const VeiPolyline *p, double s, VeiCursor *cur, double *x, double *y, double *h);
+void vei_polyline_at_time_seg(const VeiPolyline *p, double t, VeiCursor *cur, double *x, double *y, double *h);
+double vei_polyline_s_at_time_seg(const VeiPolyline *p, double t, VeiCursor *cur);
 /* Arc length of the closest point of the path (FollowTrajectory without timing starts there). */
 double vei_polyline_project(const VeiPolyline *p, double px, double py);
 
