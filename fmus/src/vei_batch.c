@@ -287,14 +287,23 @@ static void score(const VeiBatchScene *sc, double *tr[NTRAJ], double *tg[NTRIG],
         double rx = ox - ex, ry = oy - ey, vx = ovx - evx, vy = ovy - evy;
         double v2 = vx * vx + vy * vy, d2 = rx * rx + ry * ry;
         int closing = (rx * vx + ry * vy) < 0;
-        /* the miss distance, needed only while closing */
-        double mfd = !closing ? 0.0 : v2 > 1e-12 ? fabs(rx * vy - ry * vx) / sqrt(v2) : hypot(rx, ry);
         /* Each box lies within its circumscribed circle. Where the circles are apart now (no contact)
          * or stay apart at constant velocity (no time to contact), the box tests are left out: they
          * would give the same answer, so every output stays bit-identical (~99 % of steps). */
         double reach = sc->radius_sum * (1.0 + 1e-9);
-        int apart_now = d2 > reach * reach;
-        int apart_ahead = apart_now && (!closing || mfd > reach);
+        int apart_now = d2 > reach * reach, apart_ahead = apart_now;
+        /* the miss distance while closing; where its square shows it beyond reach (margin 1e-9 over
+         * rounding) the time to contact is infinite and the Emergency Index 0, so it is not needed */
+        double mfd = 0.0;
+        if (closing) {
+            double cross = rx * vy - ry * vx;
+            if (apart_now && v2 > 1e-12 && cross * cross > reach * reach * v2 * (1.0 + 1e-9)) {
+                mfd = INFINITY;
+            } else {
+                mfd = v2 > 1e-12 ? fabs(cross) / sqrt(v2) : hypot(rx, ry);
+                apart_ahead = apart_now && mfd > reach;
+            }
+        }
         int contact = apart_now ? 0 : vei_trig_boxes_overlap(&eb, &ob);
         w->contact[k] = contact;
         if (contact && !any_contact) any_contact = 1, first_contact = k, impact = hypot(vx, vy);
@@ -334,11 +343,17 @@ static void score(const VeiBatchScene *sc, double *tr[NTRAJ], double *tg[NTRIG],
     long comfortable = 0;
     for (int k = 0; k < n; k++) {
         double rate = -w->rate[k], gap = w->gap[k];
-        double act = rate > 1e-6 ? gap / rate : INFINITY;
-        if (w->contact[k]) act = 0.0;
-        act_min = dmin(act_min, act);
-        double drac = (rate > 0 && gap > 1e-3) ? rate * rate / (2 * gap) : 0.0;
-        drac_max = dmax(drac_max, drac);
+        /* a division only where its quotient can move the minimum or maximum (margins 1e-12 over the
+         * rounding of the products, so the results are the same) */
+        if (w->contact[k])
+            act_min = dmin(act_min, 0.0);
+        else if (rate > 1e-6 && !(gap > act_min * rate * (1.0 + 1e-12)))
+            act_min = dmin(act_min, gap / rate);
+        if (rate > 0 && gap > 1e-3) {
+            if (!(rate * rate < drac_max * (2 * gap) * (1.0 - 1e-12))) drac_max = dmax(drac_max, rate * rate / (2 * gap));
+        } else {
+            drac_max = dmax(drac_max, 0.0);
+        }
         double a = tr[EACCEL][k];
         peak = dmin(peak, a);
         jerk_max = dmax(jerk_max, fabs(w->jerk[k]));

@@ -8,8 +8,10 @@ recursive-descent parser; nothing is passed to Python's ``eval``.
 
 from __future__ import annotations
 
+import functools
 import math
 import re
+from collections.abc import Callable
 
 _TOKEN = re.compile(
     r"\s*(?:(?P<num>\d+\.?\d*(?:[eE][+-]?\d+)?|\.\d+(?:[eE][+-]?\d+)?)|(?P<param>\$[A-Za-z_][A-Za-z0-9_]*)"
@@ -54,6 +56,30 @@ def _tokens(text: str) -> list[tuple[str, str]]:
 
 def evaluate(expression: str, parameters: dict[str, object]) -> float:
     """Value of ``expression`` (the text inside ``${...}``); parameters by name without ``$``."""
+    return compile_expression(expression)(parameters)
+
+
+def _number(value: object, name: str) -> float:
+    if isinstance(value, bool):
+        return 1.0 if value else 0.0
+    if isinstance(value, str):
+        if value in ("true", "false"):
+            return 1.0 if value == "true" else 0.0
+        try:
+            return float(value)
+        except ValueError:
+            raise ExpressionError(f"parameter ${name} = {value!r} is not a number") from None
+    return float(value)
+
+
+Compiled = Callable[[dict[str, object]], float]
+
+
+@functools.lru_cache(maxsize=1024)
+def compile_expression(expression: str) -> Compiled:
+    """``expression`` parsed once into a function of the parameters: a sweep evaluates the same few
+    expressions for every variant. Syntax errors raise here, value errors (an undeclared or non-numeric
+    parameter, division by zero, a function outside its domain) when the function is called."""
     toks = _tokens(expression)
     pos = 0
 
@@ -72,84 +98,93 @@ def evaluate(expression: str, parameters: dict[str, object]) -> float:
         pos += 1
         return tok
 
-    def number(value: object, name: str) -> float:
-        if isinstance(value, bool):
-            return 1.0 if value else 0.0
-        if isinstance(value, str):
-            if value in ("true", "false"):
-                return 1.0 if value == "true" else 0.0
-            try:
-                return float(value)
-            except ValueError:
-                raise ExpressionError(f"parameter ${name} = {value!r} is not a number") from None
-        return float(value)
-
-    def disjunction() -> float:
+    def disjunction() -> Compiled:
         left = conjunction()
         while peek() == ("name", "or"):
             take()
-            right = conjunction()
-            left = 1.0 if (left != 0 or right != 0) else 0.0
+            a, b = left, conjunction()
+            left = lambda p, a=a, b=b: 1.0 if (a(p) != 0) | (b(p) != 0) else 0.0  # noqa: E731  (both evaluated)
         return left
 
-    def conjunction() -> float:
+    def conjunction() -> Compiled:
         left = negation()
         while peek() == ("name", "and"):
             take()
-            right = negation()
-            left = 1.0 if (left != 0 and right != 0) else 0.0
+            a, b = left, negation()
+            left = lambda p, a=a, b=b: 1.0 if (a(p) != 0) & (b(p) != 0) else 0.0  # noqa: E731  (both evaluated)
         return left
 
-    def negation() -> float:
+    def negation() -> Compiled:
         if peek() == ("name", "not"):
             take()
-            return 0.0 if negation() != 0 else 1.0
+            a = negation()
+            return lambda p: 0.0 if a(p) != 0 else 1.0
         return additive()
 
-    def additive() -> float:
+    def additive() -> Compiled:
         left = multiplicative()
         while peek() in (("op", "+"), ("op", "-")):
             op = take()[1]
-            right = multiplicative()
-            left = left + right if op == "+" else left - right
+            a, b = left, multiplicative()
+            left = (lambda p, a=a, b=b: a(p) + b(p)) if op == "+" else (lambda p, a=a, b=b: a(p) - b(p))
         return left
 
-    def multiplicative() -> float:
+    def divide(a: Compiled, b: Compiled, op: str) -> Compiled:
+        def f(p: dict[str, object]) -> float:
+            left, right = a(p), b(p)
+            if right == 0:
+                raise ExpressionError("division by zero")
+            return left / right if op == "/" else math.fmod(left, right)
+
+        return f
+
+    def multiplicative() -> Compiled:
         left = unary()
         while peek() in (("op", "*"), ("op", "/"), ("op", "%")):
             op = take()[1]
-            right = unary()
-            if op == "*":
-                left *= right
-            elif right == 0:
-                raise ExpressionError("division by zero")
-            else:
-                left = left / right if op == "/" else math.fmod(left, right)
+            a, b = left, unary()
+            left = (lambda p, a=a, b=b: a(p) * b(p)) if op == "*" else divide(a, b, op)
         return left
 
-    def unary() -> float:
+    def unary() -> Compiled:
         if peek() == ("op", "-"):
             take()
-            return -unary()
+            a = unary()
+            return lambda p: -a(p)
         if peek() == ("op", "+"):
             take()
             return unary()
         return primary()
 
-    def primary() -> float:
-        tok = take()
-        kind, text = tok
-        if kind == "num":
-            return float(text)
-        if kind == "param":
-            name = text[1:]
-            if name not in parameters:
+    def parameter(name: str) -> Compiled:
+        def f(p: dict[str, object]) -> float:
+            if name not in p:
                 raise ExpressionError(f"parameter ${name} is not declared")
-            return number(parameters[name], name)
+            return _number(p[name], name)
+
+        return f
+
+    def call(name: str, fn, args: list[Compiled]) -> Compiled:
+        def f(p: dict[str, object]) -> float:
+            values = [a(p) for a in args]
+            try:
+                return float(fn(*values))
+            except (ValueError, OverflowError) as exc:
+                raise ExpressionError(f"{name}{tuple(values)}: {exc}") from None
+
+        return f
+
+    def primary() -> Compiled:
+        kind, text = take()
+        if kind == "num":
+            value = float(text)
+            return lambda p: value
+        if kind == "param":
+            return parameter(text[1:])
         if kind == "op" and text == "(":
-            value = disjunction()
+            inner = disjunction()
             take(")")
-            return value
+            return inner
         if kind == "name" and text in _FUNCTIONS:
             arity, fn = _FUNCTIONS[text]
             take("(")
@@ -160,13 +195,10 @@ def evaluate(expression: str, parameters: dict[str, object]) -> float:
             take(")")
             if len(args) != arity:
                 raise ExpressionError(f"{text}() takes {arity} argument(s), got {len(args)}")
-            try:
-                return float(fn(*args))
-            except (ValueError, OverflowError) as exc:
-                raise ExpressionError(f"{text}{tuple(args)}: {exc}") from None
+            return call(text, fn, args)
         raise ExpressionError(f"unexpected {text!r}")
 
-    value = disjunction()
+    compiled = disjunction()
     if pos != len(toks):
         raise ExpressionError(f"unexpected {toks[pos][1]!r}")
-    return value
+    return compiled

@@ -12,7 +12,8 @@ from vei_scenario.errors import VeiInputError
 from vei_scenario.interpreter.document import load_scenario
 from vei_scenario.sweep.catalog import catalog_csv, catalog_json, variant_xosc
 from vei_scenario.sweep.evaluate import evaluate_dask, evaluate_local, iter_rows
-from vei_scenario.sweep.report_html import report_html
+from vei_scenario.sweep.plot_worker import PlotWorker
+from vei_scenario.sweep.report_html import plot_inputs, report_html
 from vei_scenario.variation import cartesian, parse_vary, read_distribution
 
 
@@ -69,29 +70,34 @@ def run_sweep(
     scenario = Path(scenario)
     out = Path(out_dir)
     variants, varied = build_variants(scenario, vary or [], Path(dist) if dist else None, seed)
-    bar = _progress_bar(len(variants), quiet)
-    tick = bar.update if bar is not None else None
+    plotter = PlotWorker()  # before the evaluation's threads: it imports matplotlib meanwhile
     try:
-        if executor == "dask":
-            outcomes = evaluate_dask(str(scenario.resolve()), variants, dt, scheduler, tick)
-        elif executor == "local":
-            outcomes = evaluate_local(str(scenario.resolve()), variants, dt, workers, tick)
-        else:
-            raise VeiInputError(None, "--executor", f"{executor!r} is not local or dask")
+        bar = _progress_bar(len(variants), quiet)
+        tick = bar.update if bar is not None else None
+        try:
+            if executor == "dask":
+                outcomes = evaluate_dask(str(scenario.resolve()), variants, dt, scheduler, tick)
+            elif executor == "local":
+                outcomes = evaluate_local(str(scenario.resolve()), variants, dt, workers, tick)
+            else:
+                raise VeiInputError(None, "--executor", f"{executor!r} is not local or dask")
+        finally:
+            if bar is not None:
+                bar.close()
+        rows = iter_rows(variants, outcomes)
+        plotter.draw(plot_inputs(rows, varied))  # drawn in the worker while the catalog is written
+        names = list(load_scenario(scenario).parameters)
+        files = OutputSet()
+        if emit_xosc:
+            for r in rows:
+                rel = f"variants/variant_{r['variant']:05d}.xosc"
+                files.add(out / rel, variant_xosc(scenario, r["parameters"], out / "variants"))
+                r["xosc"] = rel
+        meta = {"scenario": str(scenario), "dt_s": dt, "varied": varied, "count": len(rows)}
+        files.add(out / "catalog.csv", catalog_csv(rows, names))
+        files.add(out / "catalog.json", catalog_json(rows, meta))
+        files.add(out / "report.html", report_html(rows, names, varied, meta, plots=plotter.plots()))
     finally:
-        if bar is not None:
-            bar.close()
-    rows = iter_rows(variants, outcomes)
-    names = list(load_scenario(scenario).parameters)
-    files = OutputSet()
-    if emit_xosc:
-        for r in rows:
-            rel = f"variants/variant_{r['variant']:05d}.xosc"
-            files.add(out / rel, variant_xosc(scenario, r["parameters"], out / "variants"))
-            r["xosc"] = rel
-    meta = {"scenario": str(scenario), "dt_s": dt, "varied": varied, "count": len(rows)}
-    files.add(out / "catalog.csv", catalog_csv(rows, names))
-    files.add(out / "catalog.json", catalog_json(rows, meta))
-    files.add(out / "report.html", report_html(rows, names, varied, meta))
+        plotter.close()
     files.commit()
     return SweepReport(rows, files.paths, varied)

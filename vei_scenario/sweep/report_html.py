@@ -144,7 +144,44 @@ def _severity(r: dict) -> tuple:
     return (1, m.get("min_gap_m") if m.get("min_gap_m") is not None else big, big if ttc is None else ttc, r["variant"])
 
 
-def report_html(rows: list[dict], parameter_names: list[str], varied: list[str], meta: dict, top: int = 20) -> str:
+#: The plots of the report: (metric, axis label).
+SERIES = (("safety_index", "safety index"), ("min_ttc_s", "minimum TTC (s)"), ("min_gap_m", "minimum gap (m)"))
+
+
+def plot_inputs(rows: list[dict], varied: list[str]) -> tuple | None:
+    """What the plots are drawn from, (x parameter, groups, x limits), or None when no varied parameter is
+    numeric or no variant ran: small (arrays, no rows), so it can be sent to another process."""
+    numeric_x = (
+        "TimeShift"
+        if "TimeShift" in varied
+        else next((p for p in varied if all(_is_number(r["parameters"][p]) for r in rows)), None)
+    )
+    if not numeric_x or not any(r["status"] == "ok" for r in rows):
+        return None
+    grouped = _groups(rows, numeric_x, [p for p in varied if p != numeric_x])
+    lo, hi = min(float(g[1][0]) for g in grouped), max(float(g[1][-1]) for g in grouped)
+    pad = 0.02 * (hi - lo or 1.0)
+    return numeric_x, grouped, (lo - pad, hi + pad)  # one x-axis for every plot
+
+
+def render_plots(inputs: tuple | None) -> list[tuple[str, int]]:
+    """The report's plots from :func:`plot_inputs`: (base64 PNG, variants without a value) per series."""
+    if inputs is None:
+        return []
+    numeric_x, grouped, xlim = inputs
+    return [_series_plot(grouped, numeric_x, metric, label, xlim) for metric, label in SERIES]
+
+
+def report_html(
+    rows: list[dict],
+    parameter_names: list[str],
+    varied: list[str],
+    meta: dict,
+    top: int = 20,
+    plots: list[tuple[str, int]] | None = None,
+) -> str:
+    """The report; ``plots`` are :func:`render_plots`' output when they were drawn elsewhere (the sweep
+    draws them in another process while it writes the catalog)."""
     ok = [r for r in rows if r["status"] == "ok"]
     failed = [r for r in rows if r["status"] != "ok"]
     n_coll = sum(1 for r in ok if r["metrics"].get("collision"))
@@ -159,29 +196,15 @@ def report_html(rows: list[dict], parameter_names: list[str], varied: list[str],
         f"{len(failed)} failed. dt {meta['dt_s']} s. Varied: "
         f"{html.escape(', '.join(_label(v) for v in varied) or 'nothing')}.</p>",
     ]
-    numeric_x = (
-        "TimeShift"
-        if "TimeShift" in varied
-        else next((p for p in varied if all(_is_number(r["parameters"][p]) for r in rows)), None)
-    )
-    if numeric_x and ok:
-        groups = [p for p in varied if p != numeric_x]
-        grouped = _groups(rows, numeric_x, groups)
-        lo, hi = min(float(g[1][0]) for g in grouped), max(float(g[1][-1]) for g in grouped)
-        pad = 0.02 * (hi - lo or 1.0)
-        xlim = (lo - pad, hi + pad)  # one x-axis for every plot
-        for metric, label in (
-            ("safety_index", "safety index"),
-            ("min_ttc_s", "minimum TTC (s)"),
-            ("min_gap_m", "minimum gap (m)"),
-        ):
-            png, missing = _series_plot(grouped, numeric_x, metric, label, xlim)
-            parts.append(f"<img alt='{label}' src='data:image/png;base64,{png}'>")
-            if missing and metric == "min_ttc_s":
-                parts.append(
-                    f"<p class='note'>{missing} variants have no TTC: the two never head for a collision at "
-                    "constant velocity. They are marked along the top edge, not left out.</p>"
-                )
+    if plots is None:
+        plots = render_plots(plot_inputs(rows, varied))
+    for (metric, label), (png, missing) in zip(SERIES, plots):
+        parts.append(f"<img alt='{label}' src='data:image/png;base64,{png}'>")
+        if missing and metric == "min_ttc_s":
+            parts.append(
+                f"<p class='note'>{missing} variants have no TTC: the two never head for a collision at "
+                "constant velocity. They are marked along the top edge, not left out.</p>"
+            )
     hits = [r for r in ok if r["metrics"].get("collision")]
     shown = heapq.nsmallest(top, hits, key=_severity)  # (linear in the variants, as sorting is not)
     columns = [
