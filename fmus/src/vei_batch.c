@@ -219,9 +219,20 @@ static double pet(const VeiBatchScene *sc, double *tr[NTRAJ], double *tg[NTRIG],
         if (ex >= oxmin - reach && ex <= oxmax + reach && ey >= oymin - reach && ey <= oymax + reach) ie[ne++] = i;
         if (ox >= exmin - reach && ox <= exmax + reach && oy >= eymin - reach && oy <= eymax + reach) io[no++] = i;
     }
-    /* pairs whose circumscribed circles meet: the other's samples in blocks of 16 (consecutive in
-     * time, so close together), a block skipped when its bounding box is out of reach */
+    /* pairs whose circumscribed circles meet: both sides' samples in blocks of 16 (consecutive in
+     * time, so close together), a pair of blocks skipped when their bounding boxes are out of reach */
     enum { BLOCK = 16 };
+    int n_eb = (ne + BLOCK - 1) / BLOCK;
+    double ebox[n_eb > 0 ? n_eb : 1][4];
+    for (int q = 0; q < n_eb; q++) {
+        double *bb = ebox[q];
+        bb[0] = INFINITY, bb[1] = -INFINITY, bb[2] = INFINITY, bb[3] = -INFINITY;
+        for (int a = q * BLOCK; a < ne && a < (q + 1) * BLOCK; a++) {
+            int i = ie[a] * step;
+            bb[0] = dmin(bb[0], tr[EX][i]), bb[1] = dmax(bb[1], tr[EX][i]);
+            bb[2] = dmin(bb[2], tr[EY][i]), bb[3] = dmax(bb[3], tr[EY][i]);
+        }
+    }
     int any = 0;
     for (int b0 = 0; b0 < no; b0 += BLOCK) {
         int b1 = b0 + BLOCK < no ? b0 + BLOCK : no;
@@ -231,18 +242,22 @@ static double pet(const VeiBatchScene *sc, double *tr[NTRAJ], double *tg[NTRIG],
             bx0 = dmin(bx0, tr[TX][j]), bx1 = dmax(bx1, tr[TX][j]);
             by0 = dmin(by0, tr[TY][j]), by1 = dmax(by1, tr[TY][j]);
         }
-        for (int a = 0; a < ne; a++) {
-            int i = ie[a] * step;
-            double ex = tr[EX][i], ey = tr[EY][i];
-            if (ex < bx0 - reach || ex > bx1 + reach || ey < by0 - reach || ey > by1 + reach) continue;
-            VeiTrigBox eb = {ex, ey, tr[EYAW][i], sc->ego_length, sc->ego_width, tg[EC][i], tg[ES][i]};
-            for (int b = b0; b < b1; b++) {
-                int j = io[b] * step;
-                double dx = ex - tr[TX][j], dy = ey - tr[TY][j];
-                if (dx * dx + dy * dy > reach * reach) continue;
-                VeiTrigBox ob = {tr[TX][j], tr[TY][j], tr[TYAW][j], sc->threat_length, sc->threat_width,
-                                 tg[TC][j], tg[TS][j]};
-                if (vei_trig_boxes_overlap(&eb, &ob)) in_e[ie[a]] = in_o[io[b]] = any = 1;
+        for (int q = 0; q < n_eb; q++) {
+            const double *bb = ebox[q];
+            if (bb[1] < bx0 - reach || bb[0] > bx1 + reach || bb[3] < by0 - reach || bb[2] > by1 + reach) continue;
+            for (int a = q * BLOCK; a < ne && a < (q + 1) * BLOCK; a++) {
+                int i = ie[a] * step;
+                double ex = tr[EX][i], ey = tr[EY][i];
+                if (ex < bx0 - reach || ex > bx1 + reach || ey < by0 - reach || ey > by1 + reach) continue;
+                VeiTrigBox eb = {ex, ey, tr[EYAW][i], sc->ego_length, sc->ego_width, tg[EC][i], tg[ES][i]};
+                for (int b = b0; b < b1; b++) {
+                    int j = io[b] * step;
+                    double dx = ex - tr[TX][j], dy = ey - tr[TY][j];
+                    if (dx * dx + dy * dy > reach * reach) continue;
+                    VeiTrigBox ob = {tr[TX][j], tr[TY][j], tr[TYAW][j], sc->threat_length, sc->threat_width,
+                                     tg[TC][j], tg[TS][j]};
+                    if (vei_trig_boxes_overlap(&eb, &ob)) in_e[ie[a]] = in_o[io[b]] = any = 1;
+                }
             }
         }
     }
