@@ -67,10 +67,29 @@ static double conflict(const VeiBatchScene *sc, double reach, const VeiTrigBox *
 }
 
 /* ---- simulation -------------------------------------------------------------------------------- */
+/* With the planner on, the ego moves the same in every variant at one initial and cruise speed until
+ * the planner first decides to brake: only that decision depends on the rider. The prefix of states
+ * before it, recorded from earlier variants, is followed while a variant's own decision is not to
+ * brake, and the variant works on from where it brakes or the prefix ends (~80 % of the planner's
+ * steps in the case study need no ego motion of their own). */
+enum { PX, PY, PYAW, PSPEED, PACCEL, PC, PS, NPREFIX };
+typedef struct {
+    double *row[NPREFIX];                 /* the ego's recorded state at each step */
+    double *fs, *integral, *prev_error;   /* before each step's decision: arc length, planner state */
+    int *has_prev, *seg;                  /* ... and the path cursor */
+} EgoSteps;
+typedef struct {
+    int len; /* states 0 .. len - 1 are known (0: none yet) */
+    double speed0, cruise;
+    EgoSteps at;
+} EgoPrefix;
+
 /* One variant. With ego_given the ego's rows of tr and tg already hold its trajectory (a variant
  * without the planner at the same speed ran before: the ego's motion does not depend on the rider). */
-static void simulate(const VeiBatchScene *sc, const VeiBatchVariant *v, double *tr[NTRAJ], double *tg[NTRIG],
-                     int ego_given, double reach) {
+/* Returns the step of the planner's first decision to brake (n_steps if it never brakes); aux (planner
+ * variants) receives the state before each decision of the steps it works out itself. */
+static int simulate(const VeiBatchScene *sc, const VeiBatchVariant *v, double *tr[NTRAJ], double *tg[NTRIG],
+                    int ego_given, const EgoPrefix *pre, EgoSteps *aux, double reach) {
     const double dt = sc->dt;
     double x[2] = {sc->ego_x0, sc->threat_x0}, y[2] = {sc->ego_y0, sc->threat_y0};
     double yaw[2] = {sc->ego_yaw0, sc->threat_yaw0}, speed[2] = {v->ego_speed0, v->threat_speed0};
@@ -79,7 +98,8 @@ static void simulate(const VeiBatchScene *sc, const VeiBatchVariant *v, double *
     VeiCapState cap = {0, 0.0, 0.0, 0};
     VeiSfmState st = {0, 0, 0, 0, 0};
     double rider_speed = 0.0; /* hypot(st.vx, st.vy) */
-    int riding = 0, started = 0;
+    int riding = 0, started = 0, first_brake = sc->n_steps;
+    int following = pre != NULL && pre->len > 0;
     VeiCursor on_path = VEI_CURSOR_START, on_track = VEI_CURSOR_START;
     const double t_start = sc->track.t[0] * 1.0 + v->offset;
     const double length = vei_polyline_length(&sc->ego_path);
@@ -97,12 +117,32 @@ static void simulate(const VeiBatchScene *sc, const VeiBatchVariant *v, double *
         x[0] = tr[EX][k], y[0] = tr[EY][k], yaw[0] = tr[EYAW][k], speed[0] = tr[ESPEED][k];         \
         accel[0] = tr[EACCEL][k], c[0] = tg[EC][k], s[0] = tg[ES][k];                               \
     } while (0)
+#define EGO_FROM_PREFIX(k)                                                                          \
+    do {                                                                                            \
+        x[0] = pre->at.row[PX][k], y[0] = pre->at.row[PY][k], yaw[0] = pre->at.row[PYAW][k];        \
+        speed[0] = pre->at.row[PSPEED][k], accel[0] = pre->at.row[PACCEL][k];                       \
+        c[0] = pre->at.row[PC][k], s[0] = pre->at.row[PS][k];                                       \
+    } while (0)
+#define PLANNER_FROM_PREFIX(k)                                                                      \
+    do {                                                                                            \
+        fs[0] = pre->at.fs[k], on_path.seg = pre->at.seg[k];                                        \
+        cap.brake = 0, cap.integral = pre->at.integral[k], cap.prev_error = pre->at.prev_error[k];  \
+        cap.has_prev = pre->at.has_prev[k];                                                         \
+    } while (0)
     RECORD(0);
     for (int k = 0; k < sc->n_steps; k++) {
         double t = sc->t[k], t_next = t + dt;
         if (!started && t > sc->behaviour_start) {
             started = 1;
-            if (!ego_given) fs[0] = vei_polyline_project(&sc->ego_path, x[0], y[0]);
+            if (!ego_given && !following) fs[0] = vei_polyline_project(&sc->ego_path, x[0], y[0]);
+        }
+        if (following && k + 1 >= pre->len) { /* the prefix ends here: on from its last state */
+            PLANNER_FROM_PREFIX(k);
+            following = 0;
+        }
+        if (aux != NULL && !following) {
+            aux->fs[k] = fs[0], aux->seg[k] = on_path.seg;
+            aux->integral[k] = cap.integral, aux->prev_error[k] = cap.prev_error, aux->has_prev[k] = cap.has_prev;
         }
         if (!started) { /* vei_straight_ahead with the heading's cosine and sine kept */
             for (int e = 0; e < 2; e++) {
@@ -113,6 +153,7 @@ static void simulate(const VeiBatchScene *sc, const VeiBatchVariant *v, double *
                 y[e] = y[e] + ds * s[e];
             }
             if (ego_given) EGO_FROM_RECORD(k + 1);
+            if (following) EGO_FROM_PREFIX(k + 1);
             RECORD(k + 1);
             continue;
         }
@@ -128,7 +169,19 @@ static void simulate(const VeiBatchScene *sc, const VeiBatchVariant *v, double *
                 double ttc = conflict(sc, reach, &ego, v0, &threat, tvx, tvy);
                 double resume = cap.brake ? conflict(sc, reach, &ego, v->cruise, &threat, tvx, tvy) : ttc;
                 double d_safe;
-                double a_cmd = vei_cap_step(&cap, &sc->cap, v->cruise, v0, ttc, resume, dt, &d_safe);
+                VeiCapState next = cap;
+                double a_cmd = vei_cap_step(&next, &sc->cap, v->cruise, v0, ttc, resume, dt, &d_safe);
+                if (next.brake && first_brake == sc->n_steps) first_brake = k;
+                if (following && !next.brake) { /* as the prefix did: its next state */
+                    cap = next;
+                    EGO_FROM_PREFIX(k + 1);
+                    goto threat;
+                }
+                if (following) { /* brakes where the prefix did not: on from here */
+                    PLANNER_FROM_PREFIX(k);
+                    following = 0;
+                }
+                cap = next;
                 VeiLongitudinal lon = {0.0, v0, accel[0]};
                 vei_longitudinal_step(&lon, a_cmd, &sc->limits, dt);
                 fs[0] = dmin(fs[0] + lon.s, length);
@@ -142,6 +195,7 @@ static void simulate(const VeiBatchScene *sc, const VeiBatchVariant *v, double *
             vei_polyline_at_s_seg(&sc->ego_path, fs[0], &on_path, &x[0], &y[0], &yaw[0]);
             if (yaw[0] != before) c[0] = cos(yaw[0]), s[0] = sin(yaw[0]);
         }
+    threat:
         /* the threat: replay of its shifted track until the rider starts, then the social force model */
         if (v->sfm_on && !riding && t_next >= t_start - 1e-9) {
             riding = 1;
@@ -174,6 +228,9 @@ static void simulate(const VeiBatchScene *sc, const VeiBatchVariant *v, double *
     }
 #undef RECORD
 #undef EGO_FROM_RECORD
+#undef EGO_FROM_PREFIX
+#undef PLANNER_FROM_PREFIX
+    return first_brake;
 }
 
 /* ---- metrics ------------------------------------------------------------------------------------- */
@@ -396,13 +453,38 @@ static void score(const VeiBatchScene *sc, double *tr[NTRAJ], double *tg[NTRIG],
     out[OUT_IMPACT_SPEED] = impact;
 }
 
+/* Keep the states of a planner variant that the prefix does not know yet: 0 .. first_brake are states
+ * before its first decision to brake. */
+static void extend_prefix(EgoPrefix *pre, const EgoSteps *aux, double *tr[NTRAJ], double *tg[NTRIG], int first_brake) {
+    const double *rows[NPREFIX] = {tr[EX], tr[EY], tr[EYAW], tr[ESPEED], tr[EACCEL], tg[EC], tg[ES]};
+    for (int k = pre->len; k <= first_brake; k++) {
+        for (int q = 0; q < NPREFIX; q++) pre->at.row[q][k] = rows[q][k];
+        pre->at.fs[k] = aux->fs[k], pre->at.integral[k] = aux->integral[k];
+        pre->at.prev_error[k] = aux->prev_error[k], pre->at.has_prev[k] = aux->has_prev[k];
+        pre->at.seg[k] = aux->seg[k];
+    }
+    if (first_brake + 1 > pre->len) pre->len = first_brake + 1;
+}
+
+static EgoSteps ego_steps(double *d, int *i, int n) {
+    EgoSteps e;
+    for (int q = 0; q < NPREFIX; q++) e.row[q] = d + (size_t)q * n;
+    e.fs = d + (size_t)NPREFIX * n, e.integral = d + (size_t)(NPREFIX + 1) * n;
+    e.prev_error = d + (size_t)(NPREFIX + 2) * n;
+    e.has_prev = i, e.seg = i + n;
+    return e;
+}
+
+static int same(double a, double b) { return memcmp(&a, &b, sizeof a) == 0; }
+
 int vei_batch_run(const VeiBatchScene *sc, const VeiBatchVariant *v, int n_variants, double *out, double *traj) {
     const int n = sc->n_steps + 1;
     /* per variant: the trajectory, its headings' cosines and sines, gap, rate, jerk; then the ego's
-     * trajectory without the planner, kept for the next variant without it at the same speed */
-    enum { PER = NTRAJ + NTRIG + 3, EGO_ROWS = 7 };
-    double *buf = (double *)malloc(sizeof(double) * (size_t)n * (PER + EGO_ROWS));
-    int *ibuf = (int *)malloc(sizeof(int) * (size_t)n * 5);
+     * trajectory without the planner, kept for the next variant without it at the same speed; then the
+     * planner's prefix and one variant's own planner states (EgoSteps: NPREFIX + 3 doubles, 2 ints) */
+    enum { PER = NTRAJ + NTRIG + 3, EGO_ROWS = 7, STEPS = NPREFIX + 3 };
+    double *buf = (double *)malloc(sizeof(double) * (size_t)n * (PER + EGO_ROWS + 2 * STEPS));
+    int *ibuf = (int *)malloc(sizeof(int) * (size_t)n * (5 + 2 * 2));
     if (buf == NULL || ibuf == NULL) {
         free(buf), free(ibuf);
         return -1;
@@ -410,6 +492,8 @@ int vei_batch_run(const VeiBatchScene *sc, const VeiBatchVariant *v, int n_varia
     double *rows = buf + (size_t)(NTRAJ + NTRIG) * n;
     Scratch w = {rows, rows + n, rows + 2 * n, ibuf, ibuf + n, ibuf + 2 * n, ibuf + 3 * n, ibuf + 4 * n};
     double *ego_rows = buf + (size_t)PER * n; /* x, y, yaw, speed, accel, cos, sin */
+    EgoPrefix prefix = {0, 0.0, 0.0, ego_steps(buf + (size_t)(PER + EGO_ROWS) * n, ibuf + 5 * n, n)};
+    EgoSteps own = ego_steps(buf + (size_t)(PER + EGO_ROWS + STEPS) * n, ibuf + 7 * n, n);
     int have_ego = 0;
     double ego_speed = 0.0;
     const double m = sc->cap.corridor_margin_m;
@@ -424,7 +508,7 @@ int vei_batch_run(const VeiBatchScene *sc, const VeiBatchVariant *v, int n_varia
         int ego_given = 0;
         if (!v[i].cap_on) {
             /* the same ego motion for every variant without the planner at one initial speed */
-            if (have_ego && memcmp(&ego_speed, &v[i].ego_speed0, sizeof ego_speed) == 0) ego_given = 1;
+            if (have_ego && same(ego_speed, v[i].ego_speed0)) ego_given = 1;
             if (traj == NULL) {
                 for (int q = 0; q < 5; q++) tr[EX + q] = ego_rows + (size_t)q * n;
                 tg[EC] = ego_rows + (size_t)5 * n, tg[ES] = ego_rows + (size_t)6 * n;
@@ -433,8 +517,12 @@ int vei_batch_run(const VeiBatchScene *sc, const VeiBatchVariant *v, int n_varia
                 memcpy(tg[EC], ego_rows + (size_t)5 * n, sizeof(double) * n);
                 memcpy(tg[ES], ego_rows + (size_t)6 * n, sizeof(double) * n);
             }
+        } else if (!(prefix.len > 0 && same(prefix.speed0, v[i].ego_speed0) && same(prefix.cruise, v[i].cruise))) {
+            prefix.len = 0, prefix.speed0 = v[i].ego_speed0, prefix.cruise = v[i].cruise; /* another ego */
         }
-        simulate(sc, &v[i], tr, tg, ego_given, reach);
+        int first_brake = simulate(sc, &v[i], tr, tg, ego_given, v[i].cap_on ? &prefix : NULL,
+                                   v[i].cap_on ? &own : NULL, reach);
+        if (v[i].cap_on) extend_prefix(&prefix, &own, tr, tg, first_brake);
         if (!v[i].cap_on && !ego_given) {
             if (traj != NULL) {
                 for (int q = 0; q < 5; q++) memcpy(ego_rows + (size_t)q * n, tr[EX + q], sizeof(double) * n);
