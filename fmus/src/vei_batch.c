@@ -85,11 +85,12 @@ typedef struct {
 } EgoPrefix;
 
 /* One variant. With ego_given the ego's rows of tr and tg already hold its trajectory (a variant
- * without the planner at the same speed ran before: the ego's motion does not depend on the rider). */
-/* Returns the step of the planner's first decision to brake (n_steps if it never brakes); aux (planner
+ * without the planner at the same speed ran before: the ego's motion does not depend on the rider);
+ * with threat_given the rider's rows do (a replayed or aggressive rider, who does not react to the
+ * ego, at the same time shift and speed ran before). Returns the step of the planner's first decision to brake (n_steps if it never brakes); aux (planner
  * variants) receives the state before each decision of the steps it works out itself. */
 static int simulate(const VeiBatchScene *sc, const VeiBatchVariant *v, double *tr[NTRAJ], double *tg[NTRIG],
-                    int ego_given, const EgoPrefix *pre, EgoSteps *aux, double reach) {
+                    int ego_given, int threat_given, const EgoPrefix *pre, EgoSteps *aux, double reach) {
     const double dt = sc->dt;
     double x[2] = {sc->ego_x0, sc->threat_x0}, y[2] = {sc->ego_y0, sc->threat_y0};
     double yaw[2] = {sc->ego_yaw0, sc->threat_yaw0}, speed[2] = {v->ego_speed0, v->threat_speed0};
@@ -109,8 +110,15 @@ static int simulate(const VeiBatchScene *sc, const VeiBatchVariant *v, double *t
             tr[EX][k] = x[0], tr[EY][k] = y[0], tr[EYAW][k] = yaw[0], tr[ESPEED][k] = speed[0];     \
             tr[EACCEL][k] = accel[0], tg[EC][k] = c[0], tg[ES][k] = s[0];                           \
         }                                                                                           \
-        tr[TX][k] = x[1], tr[TY][k] = y[1], tr[TYAW][k] = yaw[1], tr[TSPEED][k] = speed[1];         \
-        tr[TACCEL][k] = accel[1], tg[TC][k] = c[1], tg[TS][k] = s[1];                               \
+        if (!threat_given) {                                                                        \
+            tr[TX][k] = x[1], tr[TY][k] = y[1], tr[TYAW][k] = yaw[1], tr[TSPEED][k] = speed[1];     \
+            tr[TACCEL][k] = accel[1], tg[TC][k] = c[1], tg[TS][k] = s[1];                           \
+        }                                                                                           \
+    } while (0)
+#define THREAT_FROM_RECORD(k)                                                                       \
+    do {                                                                                            \
+        x[1] = tr[TX][k], y[1] = tr[TY][k], yaw[1] = tr[TYAW][k], speed[1] = tr[TSPEED][k];         \
+        accel[1] = tr[TACCEL][k], c[1] = tg[TC][k], s[1] = tg[TS][k];                               \
     } while (0)
 #define EGO_FROM_RECORD(k)                                                                          \
     do {                                                                                            \
@@ -154,6 +162,7 @@ static int simulate(const VeiBatchScene *sc, const VeiBatchVariant *v, double *t
             }
             if (ego_given) EGO_FROM_RECORD(k + 1);
             if (following) EGO_FROM_PREFIX(k + 1);
+            if (threat_given) THREAT_FROM_RECORD(k + 1);
             RECORD(k + 1);
             continue;
         }
@@ -196,6 +205,10 @@ static int simulate(const VeiBatchScene *sc, const VeiBatchVariant *v, double *t
             if (yaw[0] != before) c[0] = cos(yaw[0]), s[0] = sin(yaw[0]);
         }
     threat:
+        if (threat_given) {
+            THREAT_FROM_RECORD(k + 1);
+            continue;
+        }
         /* the threat: replay of its shifted track until the rider starts, then the social force model */
         if (v->sfm_on && !riding && t_next >= t_start - 1e-9) {
             riding = 1;
@@ -228,6 +241,7 @@ static int simulate(const VeiBatchScene *sc, const VeiBatchVariant *v, double *t
     }
 #undef RECORD
 #undef EGO_FROM_RECORD
+#undef THREAT_FROM_RECORD
 #undef EGO_FROM_PREFIX
 #undef PLANNER_FROM_PREFIX
     return first_brake;
@@ -477,13 +491,48 @@ static EgoSteps ego_steps(double *d, int *i, int n) {
 
 static int same(double a, double b) { return memcmp(&a, &b, sizeof a) == 0; }
 
+/* Rows of tr/tg kept from one variant for the next one that moves the same (the ego without the
+ * planner, or a rider who does not react to the ego): a key and 7 rows (x, y, yaw, speed, accel, cos, sin). */
+typedef struct {
+    int valid;
+    double key[3];
+    double *row[7];
+} Kept;
+
+static int kept_matches(const Kept *k, const double key[3]) {
+    return k->valid && memcmp(k->key, key, sizeof k->key) == 0;
+}
+
+/* Point the rows of one entity (first: EX or TX, trig: EC or TC) at the kept rows (no trajectory
+ * recorded) or copy the kept rows in (recording, when they are given). */
+static void use_kept(const Kept *k, int given, double *tr[NTRAJ], double *tg[NTRIG], int first, int trig,
+                     double *traj, int n) {
+    if (traj == NULL) {
+        for (int q = 0; q < 5; q++) tr[first + q] = k->row[q];
+        tg[trig] = k->row[5], tg[trig + 1] = k->row[6];
+    } else if (given) {
+        for (int q = 0; q < 5; q++) memcpy(tr[first + q], k->row[q], sizeof(double) * n);
+        memcpy(tg[trig], k->row[5], sizeof(double) * n), memcpy(tg[trig + 1], k->row[6], sizeof(double) * n);
+    }
+}
+
+static void keep(Kept *k, const double key[3], double *tr[NTRAJ], double *tg[NTRIG], int first, int trig,
+                 double *traj, int n) {
+    if (traj != NULL) { /* recorded into the trajectory: copy out */
+        for (int q = 0; q < 5; q++) memcpy(k->row[q], tr[first + q], sizeof(double) * n);
+        memcpy(k->row[5], tg[trig], sizeof(double) * n), memcpy(k->row[6], tg[trig + 1], sizeof(double) * n);
+    }
+    k->valid = 1;
+    memcpy(k->key, key, sizeof k->key);
+}
+
 int vei_batch_run(const VeiBatchScene *sc, const VeiBatchVariant *v, int n_variants, double *out, double *traj) {
     const int n = sc->n_steps + 1;
-    /* per variant: the trajectory, its headings' cosines and sines, gap, rate, jerk; then the ego's
-     * trajectory without the planner, kept for the next variant without it at the same speed; then the
-     * planner's prefix and one variant's own planner states (EgoSteps: NPREFIX + 3 doubles, 2 ints) */
-    enum { PER = NTRAJ + NTRIG + 3, EGO_ROWS = 7, STEPS = NPREFIX + 3 };
-    double *buf = (double *)malloc(sizeof(double) * (size_t)n * (PER + EGO_ROWS + 2 * STEPS));
+    /* per variant: the trajectory, its headings' cosines and sines, gap, rate, jerk; then the kept ego
+     * and rider rows; then the planner's prefix and one variant's own planner states (EgoSteps:
+     * NPREFIX + 3 doubles, 2 ints) */
+    enum { PER = NTRAJ + NTRIG + 3, KEPT = 7, STEPS = NPREFIX + 3 };
+    double *buf = (double *)malloc(sizeof(double) * (size_t)n * (PER + 2 * KEPT + 2 * STEPS));
     int *ibuf = (int *)malloc(sizeof(int) * (size_t)n * (5 + 2 * 2));
     if (buf == NULL || ibuf == NULL) {
         free(buf), free(ibuf);
@@ -491,46 +540,40 @@ int vei_batch_run(const VeiBatchScene *sc, const VeiBatchVariant *v, int n_varia
     }
     double *rows = buf + (size_t)(NTRAJ + NTRIG) * n;
     Scratch w = {rows, rows + n, rows + 2 * n, ibuf, ibuf + n, ibuf + 2 * n, ibuf + 3 * n, ibuf + 4 * n};
-    double *ego_rows = buf + (size_t)PER * n; /* x, y, yaw, speed, accel, cos, sin */
-    EgoPrefix prefix = {0, 0.0, 0.0, ego_steps(buf + (size_t)(PER + EGO_ROWS) * n, ibuf + 5 * n, n)};
-    EgoSteps own = ego_steps(buf + (size_t)(PER + EGO_ROWS + STEPS) * n, ibuf + 7 * n, n);
-    int have_ego = 0;
-    double ego_speed = 0.0;
+    Kept ego = {0, {0}, {0}}, rider = {0, {0}, {0}};
+    for (int q = 0; q < KEPT; q++) {
+        ego.row[q] = buf + (size_t)(PER + q) * n;
+        rider.row[q] = buf + (size_t)(PER + KEPT + q) * n;
+    }
+    EgoPrefix prefix = {0, 0.0, 0.0, ego_steps(buf + (size_t)(PER + 2 * KEPT) * n, ibuf + 5 * n, n)};
+    EgoSteps own = ego_steps(buf + (size_t)(PER + 2 * KEPT + STEPS) * n, ibuf + 7 * n, n);
     const double m = sc->cap.corridor_margin_m;
     const double reach =
         (0.5 * hypot(sc->ego_length + m, sc->ego_width + 2 * m) + 0.5 * hypot(sc->threat_length, sc->threat_width)) *
             (1.0 + 1e-6) +
         1e-9;
     for (int i = 0; i < n_variants; i++) {
+        const VeiBatchVariant *vi = &v[i];
         double *tr[NTRAJ], *tg[NTRIG];
         for (int q = 0; q < NTRAJ; q++) tr[q] = traj ? traj + ((size_t)i * NTRAJ + q) * n : buf + (size_t)q * n;
         for (int q = 0; q < NTRIG; q++) tg[q] = buf + (size_t)(NTRAJ + q) * n;
-        int ego_given = 0;
-        if (!v[i].cap_on) {
-            /* the same ego motion for every variant without the planner at one initial speed */
-            if (have_ego && same(ego_speed, v[i].ego_speed0)) ego_given = 1;
-            if (traj == NULL) {
-                for (int q = 0; q < 5; q++) tr[EX + q] = ego_rows + (size_t)q * n;
-                tg[EC] = ego_rows + (size_t)5 * n, tg[ES] = ego_rows + (size_t)6 * n;
-            } else if (ego_given) {
-                for (int q = 0; q < 5; q++) memcpy(tr[EX + q], ego_rows + (size_t)q * n, sizeof(double) * n);
-                memcpy(tg[EC], ego_rows + (size_t)5 * n, sizeof(double) * n);
-                memcpy(tg[ES], ego_rows + (size_t)6 * n, sizeof(double) * n);
-            }
-        } else if (!(prefix.len > 0 && same(prefix.speed0, v[i].ego_speed0) && same(prefix.cruise, v[i].cruise))) {
-            prefix.len = 0, prefix.speed0 = v[i].ego_speed0, prefix.cruise = v[i].cruise; /* another ego */
-        }
-        int first_brake = simulate(sc, &v[i], tr, tg, ego_given, v[i].cap_on ? &prefix : NULL,
-                                   v[i].cap_on ? &own : NULL, reach);
-        if (v[i].cap_on) extend_prefix(&prefix, &own, tr, tg, first_brake);
-        if (!v[i].cap_on && !ego_given) {
-            if (traj != NULL) {
-                for (int q = 0; q < 5; q++) memcpy(ego_rows + (size_t)q * n, tr[EX + q], sizeof(double) * n);
-                memcpy(ego_rows + (size_t)5 * n, tg[EC], sizeof(double) * n);
-                memcpy(ego_rows + (size_t)6 * n, tg[ES], sizeof(double) * n);
-            }
-            have_ego = 1, ego_speed = v[i].ego_speed0;
-        }
+        /* the ego without the planner moves the same at one initial speed */
+        const double ego_key[3] = {vi->ego_speed0, 0.0, 0.0};
+        int ego_given = !vi->cap_on && kept_matches(&ego, ego_key);
+        if (!vi->cap_on) use_kept(&ego, ego_given, tr, tg, EX, EC, traj, n);
+        /* a rider who does not react to the ego (replayed, or the social force model without the ego's
+         * repulsion) moves the same at one time shift and initial speed */
+        const int rider_kept = !vi->sfm_on || !vi->repulsive;
+        const double rider_key[3] = {vi->offset, (double)vi->sfm_on, vi->threat_speed0};
+        int threat_given = rider_kept && kept_matches(&rider, rider_key);
+        if (rider_kept) use_kept(&rider, threat_given, tr, tg, TX, TC, traj, n);
+        if (vi->cap_on && !(prefix.len > 0 && same(prefix.speed0, vi->ego_speed0) && same(prefix.cruise, vi->cruise)))
+            prefix.len = 0, prefix.speed0 = vi->ego_speed0, prefix.cruise = vi->cruise; /* another ego */
+        int first_brake = simulate(sc, vi, tr, tg, ego_given, threat_given, vi->cap_on ? &prefix : NULL,
+                                   vi->cap_on ? &own : NULL, reach);
+        if (vi->cap_on) extend_prefix(&prefix, &own, tr, tg, first_brake);
+        if (!vi->cap_on && !ego_given) keep(&ego, ego_key, tr, tg, EX, EC, traj, n);
+        if (rider_kept && !threat_given) keep(&rider, rider_key, tr, tg, TX, TC, traj, n);
         score(sc, tr, tg, &w, out + (size_t)i * VEI_BATCH_OUTPUTS);
     }
     free(buf);
