@@ -207,6 +207,7 @@ static int simulate(const VeiBatchScene *sc, const VeiBatchVariant *v, double *t
     threat:
         if (threat_given) {
             THREAT_FROM_RECORD(k + 1);
+            RECORD(k + 1); /* the ego's row */
             continue;
         }
         /* the threat: replay of its shifted track until the rider starts, then the social force model */
