@@ -164,12 +164,14 @@ def plot_inputs(rows: list[dict], varied: list[str]) -> tuple | None:
     return numeric_x, grouped, (lo - pad, hi + pad)  # one x-axis for every plot
 
 
-def render_plots(inputs: tuple | None) -> list[tuple[str, int]]:
-    """The report's plots from :func:`plot_inputs`: (base64 PNG, variants without a value) per series."""
+def render_plots(inputs: tuple | None, which: range | None = None) -> list[tuple[str, int]]:
+    """The report's plots from :func:`plot_inputs`: (base64 PNG, variants without a value) per series
+    (those of ``which``, default all)."""
     if inputs is None:
         return []
     numeric_x, grouped, xlim = inputs
-    return [_series_plot(grouped, numeric_x, metric, label, xlim) for metric, label in SERIES]
+    series = SERIES if which is None else [SERIES[i] for i in which]
+    return [_series_plot(grouped, numeric_x, metric, label, xlim) for metric, label in series]
 
 
 def report_html(
