@@ -16,43 +16,47 @@ from vei_scenario.sweep.report_html import SERIES, render_plots
 
 
 def _serve(conn) -> None:
-    """In the worker: import matplotlib, then draw what the parent sends (None: nothing). The last plot
-    is drawn by a fork of the worker, with matplotlib already imported: the three plots then share both
-    cores with the parent's catalog writing."""
+    """In the worker: import matplotlib, then draw what the parent sends (None: nothing). The plots
+    after the first are drawn by forks of the worker (matplotlib imported already): the three share
+    both cores with the parent's catalog writing."""
     try:
         from matplotlib import figure  # noqa: F401
         from matplotlib.backends import backend_agg  # noqa: F401  (the import is the point)
 
         inputs = conn.recv()
         if inputs is not None:
-            conn.send(_render_in_two(inputs))
+            conn.send(_render_each(inputs))
     except (EOFError, OSError, KeyboardInterrupt):
         pass
     finally:
         conn.close()
 
 
-def _render_in_two(inputs: tuple) -> list[tuple[str, int]]:
+def _render_each(inputs: tuple) -> list[tuple[str, int]]:
+    """Every plot but the first in a fork of its own (matplotlib is imported already), the first here."""
     import pickle
 
-    n = len(SERIES)
-    read_end, write_end = os.pipe()
-    pid = os.fork()
-    if pid == 0:  # the helper: the last plot, pickled into the pipe
-        try:
-            os.close(read_end)
-            with os.fdopen(write_end, "wb") as out:
-                pickle.dump(render_plots(inputs, range(n - 1, n)), out)
-        finally:
-            os._exit(0)
-    os.close(write_end)
-    plots = render_plots(inputs, range(n - 1))
-    with os.fdopen(read_end, "rb") as got:
-        try:
-            plots += pickle.load(got)
-        except (EOFError, pickle.UnpicklingError):  # the helper died: draw its plot here
-            plots += render_plots(inputs, range(n - 1, n))
-    os.waitpid(pid, 0)
+    helpers = []
+    for i in range(1, len(SERIES)):
+        read_end, write_end = os.pipe()
+        pid = os.fork()
+        if pid == 0:  # a helper: plot i, pickled into the pipe
+            try:
+                os.close(read_end)
+                with os.fdopen(write_end, "wb") as out:
+                    pickle.dump(render_plots(inputs, range(i, i + 1)), out)
+            finally:
+                os._exit(0)
+        os.close(write_end)
+        helpers.append((i, pid, read_end))
+    plots = render_plots(inputs, range(1))
+    for i, pid, read_end in helpers:
+        with os.fdopen(read_end, "rb") as got:
+            try:
+                plots += pickle.load(got)
+            except (EOFError, pickle.UnpicklingError):  # the helper died: draw its plot here
+                plots += render_plots(inputs, range(i, i + 1))
+        os.waitpid(pid, 0)
     return plots
 
 
