@@ -151,6 +151,36 @@ def test_sweep_rows_equal_single_runs_and_report_failures(case_xosc, tmp_path, c
     assert "variants/variant_" in html
 
 
+def test_report_drawn_in_the_worker_equals_one_drawn_in_process(case_xosc, tmp_path):
+    """run_sweep draws the report's plots in forked processes while it writes the catalog; the page
+    is the same bytes as drawing them in this process (and two sweeps give the same bytes)."""
+    import threading
+
+    from vei_scenario.interpreter.document import load_scenario
+    from vei_scenario.sweep.plot_worker import PlotWorker
+    from vei_scenario.sweep.report_html import plot_inputs, render_plots, report_html
+
+    vary = ["TimeShift=-1:2:0.5", "RiderType=normal,replay", "CapEnabled=true,false"]
+    rep = run_sweep(case_xosc, tmp_path / "a", vary, quiet=True)
+    again = run_sweep(case_xosc, tmp_path / "b", vary, quiet=True)
+    page = (tmp_path / "a" / "report.html").read_text(encoding="utf-8")
+    assert page == (tmp_path / "b" / "report.html").read_text(encoding="utf-8")
+    assert (tmp_path / "a" / "catalog.csv").read_bytes() == (tmp_path / "b" / "catalog.csv").read_bytes()
+    assert rep.rows == again.rows and page.count("data:image/png;base64,") == 3
+    meta = {"scenario": str(case_xosc), "dt_s": 0.01, "varied": rep.varied, "count": len(rep.rows)}
+    names = list(load_scenario(case_xosc).parameters)
+    assert page == report_html(rep.rows, names, rep.varied, meta)
+    # the worker itself (the sweep above used it only if this process had no other threads)
+    worker = PlotWorker()
+    try:
+        assert worker._proc is not None or threading.active_count() > 1, "the worker was not used"
+        inputs = plot_inputs(rep.rows, rep.varied)
+        worker.draw(inputs)
+        assert worker.plots() == render_plots(inputs)
+    finally:
+        worker.close()
+
+
 def test_dask_local_cluster_gives_the_same_catalog(case_xosc, tmp_path):
     vary = ["TimeShift=1.0:3.0:1.0", "CapEnabled=true,false"]
     local = run_sweep(case_xosc, tmp_path / "local", vary, workers=2, quiet=True)

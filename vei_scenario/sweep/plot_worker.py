@@ -1,16 +1,17 @@
-"""The sweep report's plots drawn in a second process, so that they cost no time of their own.
+"""The sweep report's plots drawn in other processes, so that they add little to a sweep's time.
 
 Importing matplotlib (~0.3 s) and drawing three plots (~0.3 s at 10 000 variants) would follow the
 evaluation on one core. Forked before the evaluation starts, the worker imports matplotlib while the
 kernel runs and draws while the parent writes the catalog; the PNGs are the bytes an in-process
-drawing gives (same code, same inputs). Where fork is not available or only one core is, the plots
-are drawn in-process.
+drawing gives (same code, same inputs). Where fork is not available, only one core is or the caller
+runs other threads, the plots are drawn in-process.
 """
 
 from __future__ import annotations
 
 import os
 import sys
+import threading
 
 from vei_scenario.sweep.report_html import SERIES, render_plots
 
@@ -69,7 +70,9 @@ class PlotWorker:
         self._proc = self._conn = None
         self._inputs: tuple | None = None
         self._sent = False
-        if sys.platform != "linux" or (os.cpu_count() or 1) < 2:
+        # fork only a process without other threads (a thread holding a lock at the fork would leave it
+        # held in the child): the command line; a library caller with threads draws in-process
+        if sys.platform != "linux" or (os.cpu_count() or 1) < 2 or threading.active_count() > 1:
             return
         import multiprocessing
 
