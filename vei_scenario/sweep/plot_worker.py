@@ -21,9 +21,7 @@ def _serve(conn) -> None:
     after the first are drawn by forks of the worker (matplotlib imported already): the three share
     both cores with the parent's catalog writing."""
     try:
-        from matplotlib import figure  # noqa: F401
-        from matplotlib.backends import backend_agg  # noqa: F401  (the import is the point)
-
+        _warm_up()
         inputs = conn.recv()
         if inputs is not None:
             conn.send(_render_each(inputs))
@@ -31,6 +29,21 @@ def _serve(conn) -> None:
         pass
     finally:
         conn.close()
+
+
+def _warm_up() -> None:
+    """Import matplotlib and draw a throw-away figure with text, markers and a legend: fonts and
+    caches are then loaded once, in the worker, before the variants finish (the forks inherit them)."""
+    from vei_scenario.reports.figures import agg_figure, png_bytes
+
+    fig = agg_figure((2, 1))
+    ax = fig.add_subplot()
+    ax.plot([0, 1], [0, 1], marker=".", label="x")
+    ax.plot([0], [1], "x")
+    ax.set_title("x", fontsize=10)
+    ax.set_xlabel("x")
+    ax.legend(fontsize=8)
+    png_bytes(fig, 10)
 
 
 def _render_each(inputs: tuple) -> list[tuple[str, int]]:
