@@ -264,12 +264,14 @@ static void gradient(const VeiBatchScene *sc, const double *f, int n, double *ou
     out[n - 1] = (f[n - 1] - f[n - 2]) / sc->grad_dxn;
 }
 
-static double circular_mean_angle(const double *yaw, const int *in, int n) {
-    double sc = 0.0, ss = 0.0;
+/* The mean direction of the flagged samples (every step-th record), from their headings' cosines and
+ * sines as the simulation computed them */
+static double circular_mean_angle(const double *c, const double *s, int step, const int *in, int n) {
+    double sum_c = 0.0, sum_s = 0.0;
     int m = 0;
     for (int i = 0; i < n; i++)
-        if (in[i]) sc += cos(yaw[i]), ss += sin(yaw[i]), m++;
-    return atan2(ss / m, sc / m);
+        if (in[i]) sum_c += c[i * step], sum_s += s[i * step], m++;
+    return atan2(sum_s / m, sum_c / m);
 }
 
 static double pet(const VeiBatchScene *sc, double *tr[NTRAJ], double *tg[NTRIG], int n, int *in_e, int *in_o, int *ie,
@@ -294,6 +296,8 @@ static double pet(const VeiBatchScene *sc, double *tr[NTRAJ], double *tg[NTRIG],
     /* pairs whose circumscribed circles meet: both sides' samples in blocks of 16 (consecutive in
      * time, so close together), a pair of blocks skipped when their bounding boxes are out of reach */
     enum { BLOCK = 16 };
+    const double tl = sc->threat_length, tw = sc->threat_width;
+    const double other_r2 = 0.25 * (tl * tl + tw * tw) * (1.0 + 1e-9); /* the other's circumradius squared */
     int n_eb = (ne + BLOCK - 1) / BLOCK;
     double ebox[n_eb > 0 ? n_eb : 1][4];
     for (int q = 0; q < n_eb; q++) {
@@ -326,6 +330,11 @@ static double pet(const VeiBatchScene *sc, double *tr[NTRAJ], double *tg[NTRIG],
                     int j = io[b] * step;
                     double dx = ex - tr[TX][j], dy = ey - tr[TY][j];
                     if (dx * dx + dy * dy > reach * reach) continue;
+                    /* the other's centre farther from the ego's box than the other's circumradius: apart */
+                    double lx = fabs(eb.c * dx + eb.s * dy) - 0.5 * sc->ego_length;
+                    double ly = fabs(-eb.s * dx + eb.c * dy) - 0.5 * sc->ego_width;
+                    lx = dmax(lx, 0.0), ly = dmax(ly, 0.0);
+                    if (lx * lx + ly * ly > other_r2) continue;
                     VeiTrigBox ob = {tr[TX][j], tr[TY][j], tr[TYAW][j], sc->threat_length, sc->threat_width,
                                      tg[TC][j], tg[TS][j]};
                     if (vei_trig_boxes_overlap(&eb, &ob)) in_e[ie[a]] = in_o[io[b]] = any = 1;
@@ -334,9 +343,8 @@ static double pet(const VeiBatchScene *sc, double *tr[NTRAJ], double *tg[NTRIG],
         }
     }
     if (!any) return NAN;
-    double eyaw[m], oyaw[m]; /* sampled headings */
-    for (int i = 0; i < m; i++) eyaw[i] = tr[EYAW][i * step], oyaw[i] = tr[TYAW][i * step];
-    double he = circular_mean_angle(eyaw, in_e, m), ho = circular_mean_angle(oyaw, in_o, m);
+    double he = circular_mean_angle(tg[EC], tg[ES], step, in_e, m);
+    double ho = circular_mean_angle(tg[TC], tg[TS], step, in_o, m);
     double d = he - ho;
     double crossing = fabs(atan2(sin(d), cos(d)) * (180.0 / M_PI));
     if (dmin(crossing, 180.0 - crossing) < 20.0) return NAN;
