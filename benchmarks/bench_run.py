@@ -72,6 +72,26 @@ def main() -> int:
         if proc.returncode != 0:
             raise SystemExit(proc.stderr)
         print(f"vei study examples/case_study/clip.json (compile + 5 runs + plots, new process): {wall:.2f} s")
+        # one whole `vei run --no-plots` process against esmini playing the same variant (issue #12)
+        values = {"TimeShift": shift, "RiderType": "aggressive", "CapEnabled": "true"}
+        params = [a for k, v in values.items() for a in ("--param", f"{k}={v}")]
+        vei = [sys.executable, "-m", "vei_scenario.cli", "run", str(xosc), "--no-plots", "-o", str(Path(tmp) / "r")]
+        vei_times = [_wall(vei + params) for _ in range(args.repeat)]
+        line = f"whole `vei run --no-plots` process, aggressive SFM + CAP: median {statistics.median(vei_times):.3f} s"
+        from vei_scenario.conformance.esmini import find_esmini, run_esmini
+
+        esmini = find_esmini(str(ROOT.parent / "shared" / "esmini" / "bin" / "esmini"))
+        if esmini is not None:  # its process only (the variant's file is written beforehand)
+            es = statistics.median(run_esmini(esmini, xosc, 0.01, values).seconds for _ in range(args.repeat))
+            line += f"; esmini 3.6 on the same variant {es:.3f} s ({statistics.median(vei_times) / es:.1f}x)"
+        print(line + " (target: no slower than esmini)")
+    return 0
+
+
+def _wall(cmd: list[str]) -> float:
+    a = time.perf_counter()
+    subprocess.run(cmd, check=True, capture_output=True)
+    return time.perf_counter() - a
     return 0
 
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Sweep throughput (issue #5): 10 000 variants of the case-study scenario (25 s at dt 0.01 s, run +
+"""Sweep throughput (issues #5, #12): 10 000 variants of the case-study scenario (25 s at dt 0.01 s, run +
 every metric of ``vei run``) through ``vei sweep``'s local executor on all cores, against serial
 ``vei run`` calls extrapolated from a sample. Target: ≤ 10 s wall, ≤ 2 GB peak memory.
 
@@ -116,8 +116,9 @@ def main() -> int:
         walls = sorted(w for w, _ in cli)
         cpus = sorted(c for _, c in cli)
         print(
-            f"whole `vei sweep` command, new process (start-up included), {len(cli)} runs: median {walls[len(walls) // 2]:.2f} s "
-            f"(min {walls[0]:.2f}, max {walls[-1]:.2f}; target ≤ 2 s), CPU {cpus[len(cpus) // 2]:.2f} s of both cores"
+            f"whole `vei sweep` command, new process (start-up included), {len(cli)} runs: "
+            f"median {walls[len(walls) // 2]:.2f} s (min {walls[0]:.2f}, max {walls[-1]:.2f}; target ≤ 2 s), "
+            f"CPU {cpus[len(cpus) // 2]:.2f} s of both cores"
         )
     print(f"peak resident memory: {peak / 1024:.0f} MiB (target ≤ 2048 MiB)")
     return 0
