@@ -82,3 +82,17 @@ def test_conflict_area_membership_agrees_with_shapely_on_curved_crossings(seed):
     te, to = t[::5][ref_e], t[::5][ref_o]
     first_exit, second_entry = (te[-1], to[0]) if te[0] <= to[0] else (to[-1], te[0])
     assert pet == pytest.approx(max(0.0, second_entry - first_exit), abs=1e-12) or math.isnan(pet)
+
+
+def test_median_equals_numpys_for_odd_and_even_counts():
+    """metrics.series.median stands in for np.median (which imports numpy.ma): the same value bit for
+    bit, the mean of the two middle values for an even count."""
+    import numpy as np
+
+    from vei_scenario.metrics.series import median
+
+    rng = np.random.default_rng(7)
+    for n in (1, 2, 3, 4, 5, 10, 11, 2501, 2502):
+        a = rng.normal(size=n) * 10 ** rng.uniform(-3, 3, size=n)
+        assert median(a) == float(np.median(a)), n
+    assert median(np.array([1.0, 2.0])) == 1.5

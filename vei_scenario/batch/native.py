@@ -26,7 +26,7 @@ import numpy as np
 
 from vei_scenario.batch.engine import BatchScenario, NotBatchable
 from vei_scenario.metrics.definitions import DIGITS, METRICS, ZONES
-from vei_scenario.metrics.series import MetricConfig
+from vei_scenario.metrics.series import MetricConfig, median
 
 SOURCES = ("vei_models.c", "vei_batch.c")
 HEADERS = ("vei_models.h", "vei_batch.h")
@@ -210,7 +210,7 @@ class NativeBatch:
         rx, ry = self._arr(route[:, 0]), self._arr(route[:, 1])
         ie, it = b.names.index(ego), b.names.index(threat)
         el, ew, tl, tw = b.length[ie], b.width[ie], b.length[it], b.width[it]
-        metric_dt = float(np.median(diffs)) if n > 1 else 0.0
+        metric_dt = median(diffs) if n > 1 else 0.0
         scene = _Scene(
             _ptr(t),
             n - 1,

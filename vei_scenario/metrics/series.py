@@ -10,6 +10,14 @@ import numpy as np
 from vei_scenario.models.boxes import box_distance, boxes_overlap, time_to_contact
 
 
+def median(values: np.ndarray) -> float:
+    """``np.median`` of finite values (the mean of the two middle ones for an even count), without the
+    import of numpy.ma that ``np.median`` triggers (8 ms of a 0.2 s ``vei run``)."""
+    s = np.sort(np.asarray(values, float), axis=None)
+    mid = s.size // 2
+    return float(s[mid]) if s.size % 2 else float((s[mid - 1] + s[mid]) / 2)
+
+
 @dataclass(frozen=True)
 class MetricConfig:
     """Thresholds of the seed method's TTC zones and of the comfort score."""
@@ -77,7 +85,7 @@ class PairSeries:
 
     @cached_property
     def dt(self) -> float:
-        return float(np.median(np.diff(self.t))) if self.t.size > 1 else 0.0
+        return median(np.diff(self.t)) if self.t.size > 1 else 0.0
 
     @cached_property
     def gap(self) -> np.ndarray:
