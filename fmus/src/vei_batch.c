@@ -15,13 +15,34 @@ static double dmin(double a, double b) { return a < b ? a : b; }
 static double dmax(double a, double b) { return a > b ? a : b; }
 
 /* The least squared distance from a's corners to box b, worked out in b's frame: a's centre and half
- * axes are turned into it once, and each corner is then a sum and a difference. */
+ * axes are turned into it once, and each corner is then a sum and a difference. With SSE2 (every
+ * x86-64) two corners at a time: the same operations in the same order, so the same bits. */
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 static double corners_to_box(const VeiTrigBox *a, const VeiTrigBox *b) {
     double dx = a->x - b->x, dy = a->y - b->y;
     double px = b->c * dx + b->s * dy, py = -b->s * dx + b->c * dy;
     double cr = a->c * b->c + a->s * b->s, sr = a->s * b->c - a->c * b->s; /* a's heading relative to b's */
     double hl = 0.5 * a->length, hw = 0.5 * a->width, bl = 0.5 * b->length, bw = 0.5 * b->width;
     double ex = cr * hl, ey = sr * hl, fx = -sr * hw, fy = cr * hw; /* a's half axes */
+#if defined(__SSE2__)
+    /* corners 0, 1 and 2, 3 side by side: (p + (+e, -e)) + f and (p - (+e, -e)) - f */
+    const __m128d sign = _mm_set1_pd(-0.0), zero = _mm_setzero_pd();
+    const __m128d E = _mm_set_pd(-ex, ex), EY = _mm_set_pd(-ey, ey);
+    const __m128d PX = _mm_set1_pd(px), PY = _mm_set1_pd(py), FX = _mm_set1_pd(fx), FY = _mm_set1_pd(fy);
+    const __m128d BL = _mm_set1_pd(bl), BW = _mm_set1_pd(bw);
+    __m128d x01 = _mm_add_pd(_mm_add_pd(PX, E), FX), x23 = _mm_sub_pd(_mm_sub_pd(PX, E), FX);
+    __m128d y01 = _mm_add_pd(_mm_add_pd(PY, EY), FY), y23 = _mm_sub_pd(_mm_sub_pd(PY, EY), FY);
+    __m128d ox01 = _mm_max_pd(_mm_sub_pd(_mm_andnot_pd(sign, x01), BL), zero);
+    __m128d oy01 = _mm_max_pd(_mm_sub_pd(_mm_andnot_pd(sign, y01), BW), zero);
+    __m128d ox23 = _mm_max_pd(_mm_sub_pd(_mm_andnot_pd(sign, x23), BL), zero);
+    __m128d oy23 = _mm_max_pd(_mm_sub_pd(_mm_andnot_pd(sign, y23), BW), zero);
+    __m128d d01 = _mm_add_pd(_mm_mul_pd(ox01, ox01), _mm_mul_pd(oy01, oy01));
+    __m128d d23 = _mm_add_pd(_mm_mul_pd(ox23, ox23), _mm_mul_pd(oy23, oy23));
+    __m128d m = _mm_min_pd(d01, d23);
+    return dmin(_mm_cvtsd_f64(m), _mm_cvtsd_f64(_mm_unpackhi_pd(m, m)));
+#else
     const double cx[4] = {px + ex + fx, px - ex + fx, px - ex - fx, px + ex - fx};
     const double cy[4] = {py + ey + fy, py - ey + fy, py - ey - fy, py + ey - fy};
     double least = INFINITY;
@@ -30,6 +51,7 @@ static double corners_to_box(const VeiTrigBox *a, const VeiTrigBox *b) {
         least = dmin(least, ox * ox + oy * oy);
     }
     return least;
+#endif
 }
 
 /* Distance between two disjoint boxes: they are closest at a corner of one of them, so it is the least
