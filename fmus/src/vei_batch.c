@@ -59,7 +59,9 @@ static double corners_to_box(const VeiTrigBox *a, const VeiTrigBox *b) {
  * and correctly rounded, so this is the least of the eight distances). The operations differ from
  * vei_scenario.models.boxes.box_distance's in order, so the two agree to ~1e-15 m
  * (tests/test_batch_native.py), not bit for bit. */
-static double box_gap(const VeiTrigBox *a, const VeiTrigBox *b) { return sqrt(dmin(corners_to_box(a, b), corners_to_box(b, a))); }
+static double box_gap(const VeiTrigBox *a, const VeiTrigBox *b) {
+    return sqrt(dmin(corners_to_box(a, b), corners_to_box(b, a)));
+}
 
 enum { EX, EY, EYAW, ESPEED, EACCEL, TX, TY, TYAW, TSPEED, TACCEL, NTRAJ };
 /* the cosine and sine of each recorded heading: computed once per step by the simulation and shared
@@ -109,8 +111,10 @@ typedef struct {
 /* One variant. With ego_given the ego's rows of tr and tg already hold its trajectory (a variant
  * without the planner at the same speed ran before: the ego's motion does not depend on the rider);
  * with threat_given the rider's rows do (a replayed or aggressive rider, who does not react to the
- * ego, at the same time shift and speed ran before). Returns the step of the planner's first decision to brake (n_steps if it never brakes); aux (planner
- * variants) receives the state before each decision of the steps it works out itself. */
+ * ego, at the same time shift and speed ran before); with pre, the planner's ego follows the prefix
+ * while it can. Returns the step of the planner's first decision to brake (n_steps if it never
+ * brakes); aux (planner variants) receives the state before each decision of the steps it works out
+ * itself. */
 static int simulate(const VeiBatchScene *sc, const VeiBatchVariant *v, double *tr[NTRAJ], double *tg[NTRIG],
                     int ego_given, int threat_given, const EgoPrefix *pre, EgoSteps *aux, double reach) {
     const double dt = sc->dt;
