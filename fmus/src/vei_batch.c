@@ -471,7 +471,8 @@ static void score(const VeiBatchScene *sc, double *tr[NTRAJ], double *tg[NTRIG],
         else if (rate > 1e-6 && !(gap > act_min * rate * (1.0 + 1e-12)))
             act_min = dmin(act_min, gap / rate);
         if (rate > 0 && gap > 1e-3) {
-            if (!(rate * rate < drac_max * (2 * gap) * (1.0 - 1e-12))) drac_max = dmax(drac_max, rate * rate / (2 * gap));
+            if (!(rate * rate < drac_max * (2 * gap) * (1.0 - 1e-12)))
+                drac_max = dmax(drac_max, rate * rate / (2 * gap));
         } else {
             drac_max = dmax(drac_max, 0.0);
         }
