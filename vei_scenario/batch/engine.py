@@ -169,6 +169,9 @@ class BatchScenario:
         ctx = sim.ctx
         self.defaults = dict(doc.parameters)
         self.types = dict(doc.parameter_types)
+        self._valid_values: set[tuple[str, str]] = set()
+        #: attribute values that are a plain ``$name`` (resolved by a lookup, as resolve_value does)
+        self._plain_ref = {f"${n}": n for n in self.defaults}
         self.names = list(ctx.entities)
         self.ego, self.threat = sim.ego, sim.threat
         if self.ego != self.names[0] or self.threat is None:
@@ -271,8 +274,13 @@ class BatchScenario:
         from vei_scenario.models.sfm import RIDER_TYPES
 
         scope = {**self.defaults, **values}
-        if any(k not in self.types or check_type(self.types[k], v) for k, v in values.items()):
-            return False
+        known = self._valid_values  # (name, value) pairs already checked: a sweep repeats most of them
+        for item in values.items():
+            if item not in known:
+                k, v = item
+                if k not in self.types or check_type(self.types[k], v):
+                    return False
+                known.add(item)
         try:
             return self._resolved(self.rider_raw, scope) in RIDER_TYPES
         except Exception:  # noqa: BLE001 - anything unresolvable is for the interpreter to report
@@ -288,6 +296,9 @@ class BatchScenario:
 
     def _resolved(self, raw, scope: dict[str, str]) -> str:
         el, value = raw
+        name = self._plain_ref.get(value)
+        if name is not None and name in scope:  # a plain declared $reference: its value
+            return scope[name]
         return resolve_value(self.path, el, "value", value, scope)
 
     def resolve(self, variants: list[dict[str, str]]) -> Resolved:

@@ -83,6 +83,17 @@ class _Variant(ctypes.Structure):
     ]
 
 
+#: _Variant's fields and offsets as a numpy structured dtype (for filling many at once)
+_VARIANT_DTYPE = np.dtype(
+    {
+        "names": [f[0] for f in _Variant._fields_],
+        "formats": [np.intc if f[1] is ctypes.c_int else np.float64 for f in _Variant._fields_],
+        "offsets": [getattr(_Variant, f[0]).offset for f in _Variant._fields_],
+        "itemsize": ctypes.sizeof(_Variant),
+    }
+)
+
+
 def _cache_dir() -> Path:
     return Path(os.environ.get("VEI_CACHE_DIR") or Path.home() / ".cache" / "vei-scenario")
 
@@ -258,16 +269,11 @@ class NativeBatch:
         b = self.batch
         r = b.resolve(variants)
         arr = (_Variant * len(variants))()
-        for i in range(len(variants)):
-            arr[i] = _Variant(
-                int(r.cap_on[i]),
-                int(r.sfm_on[i]),
-                int(r.rider[i] == "normal"),
-                r.cruise_mps[i],
-                r.delays[b.threat][i],
-                r.init_speed[b.ego][i],
-                r.init_speed[b.threat][i],
-            )
+        # filled column by column through a numpy view of the struct array (the C layout)
+        view = np.frombuffer(arr, dtype=_VARIANT_DTYPE)
+        view["cap_on"], view["sfm_on"], view["repulsive"] = r.cap_on, r.sfm_on, r.rider == "normal"
+        view["cruise"], view["offset"] = r.cruise_mps, r.delays[b.threat]
+        view["ego_speed0"], view["threat_speed0"] = r.init_speed[b.ego], r.init_speed[b.threat]
         return self._scene(r.duration), arr
 
     def run(self, prepared, threads: int = 1, record: bool = False):
