@@ -157,8 +157,9 @@ def test_report_drawn_in_the_worker_equals_one_drawn_in_process(case_xosc, tmp_p
     import threading
 
     from vei_scenario.interpreter.document import load_scenario
-    from vei_scenario.sweep.plot_worker import PlotWorker
-    from vei_scenario.sweep.report_html import plot_inputs, render_plots, report_html
+    from vei_scenario.reports.plot_worker import PlotWorker
+    from vei_scenario.reports.sweep_plots import render_plots
+    from vei_scenario.sweep.report_html import plot_inputs, report_html
 
     vary = ["TimeShift=-1:2:0.5", "RiderType=normal,replay", "CapEnabled=true,false"]
     rep = run_sweep(case_xosc, tmp_path / "a", vary, quiet=True)

@@ -128,21 +128,28 @@ def _cmd_study(args: argparse.Namespace) -> int:
 
 
 def _cmd_sweep(args: argparse.Namespace) -> int:
-    from vei_scenario.sweep import run_sweep
+    from vei_scenario.reports.plot_worker import PlotWorker
 
-    report = run_sweep(
-        args.scenario,
-        args.output,
-        args.vary,
-        args.dist,
-        args.seed,
-        args.dt,
-        args.executor,
-        args.scheduler,
-        args.workers,
-        args.emit_xosc,
-        args.quiet,
-    )
+    plotter = PlotWorker()  # forked first: it imports matplotlib while this process imports the sweep
+    try:
+        from vei_scenario.sweep import run_sweep
+
+        report = run_sweep(
+            args.scenario,
+            args.output,
+            args.vary,
+            args.dist,
+            args.seed,
+            args.dt,
+            args.executor,
+            args.scheduler,
+            args.workers,
+            args.emit_xosc,
+            args.quiet,
+            plotter,
+        )
+    finally:
+        plotter.close()
     ok = [r for r in report.rows if r["status"] == "ok"]
     coll = sum(1 for r in ok if r["metrics"].get("collision"))
     print(

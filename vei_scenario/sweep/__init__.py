@@ -10,9 +10,9 @@ from pathlib import Path
 from vei_scenario.atomic_io import OutputSet
 from vei_scenario.errors import VeiInputError
 from vei_scenario.interpreter.document import load_scenario
+from vei_scenario.reports.plot_worker import PlotWorker
 from vei_scenario.sweep.catalog import catalog_csv, catalog_json, variant_xosc
 from vei_scenario.sweep.evaluate import evaluate_dask, evaluate_local, iter_rows
-from vei_scenario.sweep.plot_worker import PlotWorker
 from vei_scenario.sweep.report_html import plot_inputs, report_html
 from vei_scenario.variation import cartesian, parse_vary, read_distribution
 
@@ -66,11 +66,15 @@ def run_sweep(
     workers: int | None = None,
     emit_xosc: bool = False,
     quiet: bool = False,
+    plotter: PlotWorker | None = None,
 ) -> SweepReport:
+    """Evaluate the variants and write the catalog and report. ``plotter``: a plot worker forked
+    earlier (the command line forks it before importing this package); ended here either way."""
     scenario = Path(scenario)
     out = Path(out_dir)
     variants, varied = build_variants(scenario, vary or [], Path(dist) if dist else None, seed)
-    plotter = PlotWorker()  # before the evaluation's threads: it imports matplotlib meanwhile
+    if plotter is None:
+        plotter = PlotWorker()  # before the evaluation's threads: it imports matplotlib meanwhile
     try:
         bar = _progress_bar(len(variants), quiet)
         tick = bar.update if bar is not None else None

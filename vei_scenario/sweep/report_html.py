@@ -2,38 +2,16 @@
 
 from __future__ import annotations
 
-import base64
 import heapq
 import html
 from operator import itemgetter
 
 import numpy as np
 
-from vei_scenario.reports.figures import agg_figure, png_bytes
+from vei_scenario.reports.sweep_plots import SERIES, param_label, render_plots
 
-
-def _png(fig) -> str:
-    return base64.b64encode(png_bytes(fig, 100)).decode()
-
-
-def _runs(flags: np.ndarray) -> list[tuple[int, int]]:
-    """(first, last) index of each run of consecutive True values."""
-    edges = np.diff(np.concatenate(([0], flags.astype(np.int8), [0])))
-    return list(zip(np.flatnonzero(edges == 1), np.flatnonzero(edges == -1) - 1))
-
-
-#: Units of the parameters vei-compiled scenarios declare (labels say what a number means).
-UNITS = {"TimeShift": "s", "ConflictTimeShift": "s", "EgoCruiseSpeed": "m/s", "SfmDesiredSpeed": "m/s"}
-
-
-def _label(param: str) -> str:
-    return f"{param} ({UNITS[param]})" if param in UNITS else param
-
-
-#: Above this many variants a line, points are not marked one by one (the lines, bands and top-edge
-#: segments say the same and the report stays under a second at 100 000 variants).
-MARKER_LIMIT = 5000
-PLOTTED = ("safety_index", "min_ttc_s", "min_gap_m")
+#: The metrics the plots show, read from the rows.
+PLOTTED = tuple(metric for metric, _ in SERIES)
 
 
 def _groups(rows: list[dict], x_param: str, groups: list[str]) -> list[tuple[str, np.ndarray, dict, np.ndarray]]:
@@ -59,55 +37,6 @@ def _groups(rows: list[dict], x_param: str, groups: list[str]) -> list[tuple[str
     return out
 
 
-def _series_plot(
-    grouped: list[tuple[str, np.ndarray, dict, np.ndarray]],
-    x_param: str,
-    metric: str,
-    label: str,
-    xlim: tuple[float, float],
-) -> tuple[str, int]:
-    """The metric over ``x_param``, one line per group; (PNG, variants without a value). Variants with
-    no value (no TTC: never on a collision course) are marked along the top edge, not dropped."""
-    fig = agg_figure((11, 5.0))
-    ax = fig.add_subplot()
-    missing = 0
-    many = False
-    for name, x, values, coll in grouped:
-        y = values[metric]
-        marked = x.size <= MARKER_LIMIT
-        many |= not marked
-        line = ax.plot(x, y, lw=1.3, marker="." if marked else None, ms=3, label=name)
-        colour = line[0].get_color()
-        none = np.isnan(y)
-        missing += int(none.sum())
-        top = ax.get_xaxis_transform()
-        if marked:
-            ax.plot(x[coll], y[coll], "x", color=colour, ms=6)
-            if none.any():  # at the top edge, in axes coordinates
-                ax.plot(x[none], np.full(none.sum(), 0.98), "^", color=colour, ms=3, transform=top)
-        elif none.any():  # one segment along the top edge per run of variants without a value
-            for i, j in _runs(none):
-                ax.plot([x[i], x[j]], [0.98, 0.98], color=colour, lw=3, transform=top, solid_capstyle="butt")
-        if coll.any():  # shade this group's collision region: one band per run of colliding variants
-            step = np.median(np.diff(x)) if x.size > 1 else 0.1
-            runs = np.array(_runs(coll))
-            left, right = x[runs[:, 0]] - step / 2, x[runs[:, 1]] + step / 2
-            # all the bands as one collection (thousands of axvspan patches cost seconds to place)
-            ax.broken_barh(list(zip(left, right - left)), (0, 1), transform=top, color="red", alpha=0.04, lw=0)
-    ax.set_xlim(*xlim)
-    ax.set_xlabel(_label(x_param))
-    ax.set_ylabel(label)
-    ax.grid(alpha=0.3)
-    ax.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=3, frameon=False)  # off the data
-    marks = "red band: collision region" if many else "× collision, red band: collision region"
-    title = f"{label} over {_label(x_param)}: {marks}"
-    if missing:
-        title += f"; {'bar' if many else '▲'} at the top: no value ({missing} variants)"
-    ax.set_title(title, fontsize=10)
-    fig.subplots_adjust(left=0.07, right=0.98, top=0.93, bottom=0.27)
-    return _png(fig), missing
-
-
 #: A near miss closer than this still scores a perfect safety index when its TTC stays out of the
 #: alert zone: the report counts those.
 CLOSE_PASS_M = 0.5
@@ -118,7 +47,7 @@ def _cell(v) -> str:
 
 
 def _table(rows: list[dict], varied: list[str], columns: list[tuple[str, str]]) -> list[str]:
-    out = ["<table><tr><th>#</th>", *(f"<th>{html.escape(_label(p))}</th>" for p in varied)]
+    out = ["<table><tr><th>#</th>", *(f"<th>{html.escape(param_label(p))}</th>" for p in varied)]
     out += [f"<th>{html.escape(h)}</th>" for _, h in columns] + ["<th>scenario</th></tr>"]
     for r in rows:
         m = r["metrics"]
@@ -144,10 +73,6 @@ def _severity(r: dict) -> tuple:
     return (1, m.get("min_gap_m") if m.get("min_gap_m") is not None else big, big if ttc is None else ttc, r["variant"])
 
 
-#: The plots of the report: (metric, axis label).
-SERIES = (("safety_index", "safety index"), ("min_ttc_s", "minimum TTC (s)"), ("min_gap_m", "minimum gap (m)"))
-
-
 def plot_inputs(rows: list[dict], varied: list[str]) -> tuple | None:
     """What the plots are drawn from, (x parameter, groups, x limits), or None when no varied parameter is
     numeric or no variant ran: small (arrays, no rows), so it can be sent to another process."""
@@ -162,16 +87,6 @@ def plot_inputs(rows: list[dict], varied: list[str]) -> tuple | None:
     lo, hi = min(float(g[1][0]) for g in grouped), max(float(g[1][-1]) for g in grouped)
     pad = 0.02 * (hi - lo or 1.0)
     return numeric_x, grouped, (lo - pad, hi + pad)  # one x-axis for every plot
-
-
-def render_plots(inputs: tuple | None, which: range | None = None) -> list[tuple[str, int]]:
-    """The report's plots from :func:`plot_inputs`: (base64 PNG, variants without a value) per series
-    (those of ``which``, default all)."""
-    if inputs is None:
-        return []
-    numeric_x, grouped, xlim = inputs
-    series = SERIES if which is None else [SERIES[i] for i in which]
-    return [_series_plot(grouped, numeric_x, metric, label, xlim) for metric, label in series]
 
 
 def report_html(
@@ -196,7 +111,7 @@ def report_html(
         f"<h1>Sweep of {html.escape(meta['scenario'])}</h1>",
         f"<p>{len(rows)} variants: {len(ok) - n_coll} without collision, {n_coll} with collision, "
         f"{len(failed)} failed. dt {meta['dt_s']} s. Varied: "
-        f"{html.escape(', '.join(_label(v) for v in varied) or 'nothing')}.</p>",
+        f"{html.escape(', '.join(param_label(v) for v in varied) or 'nothing')}.</p>",
     ]
     if plots is None:
         plots = render_plots(plot_inputs(rows, varied))

@@ -1,8 +1,9 @@
 """The sweep report's plots drawn in other processes, so that they add little to a sweep's time.
 
 Importing matplotlib (~0.3 s) and drawing three plots (~0.3 s at 10 000 variants) would follow the
-evaluation on one core. Forked before the evaluation starts, the worker imports matplotlib while the
-kernel runs and draws while the parent writes the catalog; the PNGs are the bytes an in-process
+evaluation on one core. Forked as the command starts (this module imports nothing heavy), the worker
+imports numpy and matplotlib while the parent imports the sweep and the kernel runs, and draws while
+the parent writes the catalog; the PNGs are the bytes an in-process
 drawing gives (same code, same inputs). Where fork is not available, only one core is or the caller
 runs other threads, the plots are drawn in-process.
 """
@@ -12,8 +13,6 @@ from __future__ import annotations
 import os
 import sys
 import threading
-
-from vei_scenario.sweep.report_html import SERIES, render_plots
 
 
 def _serve(conn) -> None:
@@ -34,6 +33,7 @@ def _serve(conn) -> None:
 def _warm_up() -> None:
     """Import matplotlib and draw a throw-away figure with text, markers and a legend: fonts and
     caches are then loaded once, in the worker, before the variants finish (the forks inherit them)."""
+    import vei_scenario.reports.sweep_plots  # noqa: F401  (numpy, matplotlib)
     from vei_scenario.reports.figures import agg_figure, png_bytes
 
     fig = agg_figure((2, 1))
@@ -49,6 +49,8 @@ def _warm_up() -> None:
 def _render_each(inputs: tuple) -> list[tuple[str, int]]:
     """Every plot but the first in a fork of its own (matplotlib is imported already), the first here."""
     import pickle
+
+    from vei_scenario.reports.sweep_plots import SERIES, render_plots
 
     helpers = []
     for i in range(1, len(SERIES)):
@@ -105,6 +107,8 @@ class PlotWorker:
                 pass
 
     def plots(self) -> list[tuple[str, int]]:
+        from vei_scenario.reports.sweep_plots import render_plots
+
         if self._sent:
             try:
                 return self._conn.recv()
