@@ -53,12 +53,42 @@ def advance_along(e: Entity, ds: float) -> None:
         e.y += ds * math.sin(e.yaw)
 
 
-def threat_view(ego: Entity, threat: Entity, margin_m: float, ego_speed: float | None = None) -> ThreatView:
+def threat_view(
+    ego: Entity, threat: Entity, margin_m: float, ego_speed: float | None = None, horizon_s: float | None = None
+) -> ThreatView:
     """Time until the threat's box meets the ego's path corridor: the ego box widened by ``margin_m``
     on each side and lengthened by it in front, both moving at constant velocity (the ego at
-    ``ego_speed`` along its heading when given)."""
+    ``ego_speed`` along its heading when given). With ``horizon_s``, inf where the boxes' circumscribed
+    circles stay apart for longer (the planner treats any time beyond its horizon as no conflict), as
+    the sweep kernel does: the box test is left out."""
     speed = ego.speed if ego_speed is None else ego_speed
-    return threat_in_corridor(ego.box(), speed, margin_m, threat.box(), threat.velocity())
+    ego_box, threat_box, threat_velocity = ego.box(), threat.box(), threat.velocity()
+    if horizon_s is not None and _circles_apart_beyond(
+        ego_box, speed, margin_m, threat_box, threat_velocity, horizon_s
+    ):
+        return ThreatView(math.inf)
+    return threat_in_corridor(ego_box, speed, margin_m, threat_box, threat_velocity)
+
+
+def _circles_apart_beyond(ego_box, ego_speed, margin_m, threat_box, threat_velocity, horizon_s) -> bool:
+    """Whether the corridor's and the threat's circumscribed circles, at constant velocity, meet no
+    sooner than ``horizon_s`` (margins 1e-6 over rounding); vei_batch.c's conflict() in Python."""
+    ex, ey, eyaw, el, ew = ego_box
+    tx, ty, _, tl, tw = threat_box
+    c, s = math.cos(eyaw), math.sin(eyaw)
+    reach = (0.5 * math.hypot(el + margin_m, ew + 2 * margin_m) + 0.5 * math.hypot(tl, tw)) * (1 + 1e-6) + 1e-9
+    rx, ry = tx - (ex + 0.5 * margin_m * c), ty - (ey + 0.5 * margin_m * s)
+    wx, wy = threat_velocity[0] - ego_speed * c, threat_velocity[1] - ego_speed * s
+    gap2 = rx * rx + ry * ry - reach * reach
+    if gap2 <= 0.0:
+        return False
+    b, a = rx * wx + ry * wy, wx * wx + wy * wy
+    if b >= 0.0:
+        return True  # not closing
+    disc = b * b - a * gap2
+    if disc < 0.0:
+        return True  # they pass each other
+    return gap2 / (-b + math.sqrt(disc)) > horizon_s * (1 + 1e-6) + 1e-9
 
 
 class Controller:
@@ -162,11 +192,13 @@ class CollisionAvoidanceController(Controller):
             if other is None:
                 raise ctx.error(self.el, f"CollisionAvoidancePlanner: {name!r} is not an entity")
             threats.append(other)
-        margin = self.params.corridor_margin_m
-        view = min((threat_view(e, t, margin) for t in threats), key=lambda v: v.time_to_conflict_s)
+        margin, horizon = self.params.corridor_margin_m, self.params.horizon_s
+        view = min((threat_view(e, t, margin, None, horizon) for t in threats), key=lambda v: v.time_to_conflict_s)
         resume = None
         if self.state.mode == BRAKE:
-            resume = min((threat_view(e, t, margin, self.cruise) for t in threats), key=lambda v: v.time_to_conflict_s)
+            resume = min(
+                (threat_view(e, t, margin, self.cruise, horizon) for t in threats), key=lambda v: v.time_to_conflict_s
+            )
         cruise = self._acc_target(e, threats) if self.follow_gap_s > 0 else self.cruise
         self.state, a_cmd, _ = cap_step(self.state, self.params, cruise, e.speed, view, dt, resume)
         if ctx.snapshot is not None:  # Jacobi: the vehicle gets this command at the next step

@@ -431,9 +431,16 @@ class Simulation:
         names = list(ctx.entities)
         now: set[frozenset[str]] = set()
         boxes = {n: ctx.entities[n].box() for n in names}
+        # circumscribed radii: boxes whose circles are apart (margin 1e-9) cannot overlap
+        radius = {n: 0.5 * math.hypot(b[3], b[4]) * (1 + 1e-9) for n, b in boxes.items()}
         for i, a in enumerate(names):
+            ba, ra = boxes[a], radius[a]
             for b in names[i + 1 :]:
-                if boxes_overlap_scalar(boxes[a], boxes[b]):
+                bb = boxes[b]
+                reach = ra + radius[b]
+                if (bb[0] - ba[0]) ** 2 + (bb[1] - ba[1]) ** 2 > reach * reach:
+                    continue
+                if boxes_overlap_scalar(ba, bb):
                     pair = frozenset((a, b))
                     now.add(pair)
                     if pair not in ctx.colliding:
