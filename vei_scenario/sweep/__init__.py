@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import gc
 import os
 import sys
 from dataclasses import dataclass
@@ -72,10 +73,14 @@ def run_sweep(
     earlier (the command line forks it before importing this package); ended here either way."""
     scenario = Path(scenario)
     out = Path(out_dir)
-    variants, varied = build_variants(scenario, vary or [], Path(dist) if dist else None, seed)
     if plotter is None:
         plotter = PlotWorker()  # before the evaluation's threads: it imports matplotlib meanwhile
+    # variants and rows are many small acyclic objects that the cyclic collector would scan again and
+    # again while they are built (~5 % of a 10 000-variant sweep): it waits until the files are rendered
+    collecting = gc.isenabled()
+    gc.disable()
     try:
+        variants, varied = build_variants(scenario, vary or [], Path(dist) if dist else None, seed)
         bar = _progress_bar(len(variants), quiet)
         tick = bar.update if bar is not None else None
         try:
@@ -103,5 +108,7 @@ def run_sweep(
         files.add(out / "report.html", report_html(rows, names, varied, meta, plots=plotter.plots()))
     finally:
         plotter.close()
+        if collecting:
+            gc.enable()
     files.commit()
     return SweepReport(rows, files.paths, varied)
