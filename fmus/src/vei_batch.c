@@ -353,6 +353,7 @@ static double pet(const VeiBatchScene *sc, double *tr[NTRAJ], double *tg[NTRIG],
                 if (ex < bx0 - reach || ex > bx1 + reach || ey < by0 - reach || ey > by1 + reach) continue;
                 VeiTrigBox eb = {ex, ey, tr[EYAW][i], sc->ego_length, sc->ego_width, tg[EC][i], tg[ES][i]};
                 for (int b = b0; b < b1; b++) {
+                    if (in_e[ie[a]] && in_o[io[b]]) continue; /* both already in the conflict area */
                     int j = io[b] * step;
                     double dx = ex - tr[TX][j], dy = ey - tr[TY][j];
                     if (dx * dx + dy * dy > reach * reach) continue;
