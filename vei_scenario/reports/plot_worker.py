@@ -52,6 +52,12 @@ def _render_each(inputs: tuple) -> list[tuple[str, int]]:
 
     from vei_scenario.reports.sweep_plots import SERIES, render_plots
 
+    # the parent writes the catalog meanwhile, then waits for these: drawing at a lower priority lets
+    # it keep a core, and the plots take the rest of both once it is done
+    try:
+        os.nice(10)
+    except OSError:
+        pass
     helpers = []
     for i in range(1, len(SERIES)):
         read_end, write_end = os.pipe()
