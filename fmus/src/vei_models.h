@@ -1,7 +1,7 @@
 /* vei_models.h: the numerical models of vei-scenario in C, for the FMUs.
  *
  * Each function mirrors a Python function of vei_scenario.models (or vei_scenario.interpreter) operation
- * for operation, so that the FMUs reproduce `vei run`; tests/test_fmu_models.py compares them on
+ * for operation, so that the FMUs reproduce `vei run`; tests/test_fmus.py compares them on
  * 10 000 random states. Pure functions: no allocation, no I/O, no global state.
  */
 #ifndef VEI_MODELS_H
