@@ -67,6 +67,27 @@ enum { EX, EY, EYAW, ESPEED, EACCEL, TX, TY, TYAW, TSPEED, TACCEL, NTRAJ };
 /* the cosine and sine of each recorded heading: computed once per step by the simulation and shared
  * by the planner, the rider's repulsion from the ego and the metrics */
 enum { EC, ES, TC, TS, NTRIG };
+/* One entity's recorded rows in one table: x, y, yaw, speed, accel (of tr), cos, sin (of tg). */
+enum { RX, RY, RYAW, RSPEED, RACCEL, RC, RS, NROWS };
+
+/* The rows of entity e (0 ego, 1 threat) of tr/tg. */
+static void entity_rows(double *tr[NTRAJ], double *tg[NTRIG], int e, double *rows[NROWS]) {
+    for (int q = 0; q < 5; q++) rows[q] = tr[5 * e + q];
+    rows[RC] = tg[2 * e], rows[RS] = tg[2 * e + 1];
+}
+
+/* tr/tg's rows of entity e pointed at rows. */
+static void point_entity_rows(double *tr[NTRAJ], double *tg[NTRIG], int e, double *const rows[NROWS]) {
+    for (int q = 0; q < 5; q++) tr[5 * e + q] = rows[q];
+    tg[2 * e] = rows[RC], tg[2 * e + 1] = rows[RS];
+}
+
+static void copy_rows(double *const to[NROWS], double *const from[NROWS], int n) {
+    for (int q = 0; q < NROWS; q++) memcpy(to[q], from[q], sizeof(double) * (size_t)n);
+}
+
+/* The key of motion shared between variants, compared bit for bit. */
+static int same_key(const double a[3], const double b[3]) { return memcmp(a, b, 3 * sizeof(double)) == 0; }
 
 /* vei_trig_time_to_conflict where it can matter. The planner treats every time to conflict beyond its
  * horizon as no conflict, and the boxes cannot touch before their circumscribed circles do: where the
@@ -96,15 +117,14 @@ static double conflict(const VeiBatchScene *sc, double reach, const VeiTrigBox *
  * before it, recorded from earlier variants, is followed while a variant's own decision is not to
  * brake, and the variant works on from where it brakes or the prefix ends (~80 % of the planner's
  * steps in the case study need no ego motion of their own). */
-enum { PX, PY, PYAW, PSPEED, PACCEL, PC, PS, NPREFIX };
 typedef struct {
-    double *row[NPREFIX];                 /* the ego's recorded state at each step */
+    double *row[NROWS];                   /* the ego's recorded state at each step */
     double *fs, *integral, *prev_error;   /* before each step's decision: arc length, planner state */
     int *has_prev, *seg;                  /* ... and the path cursor */
 } EgoSteps;
 typedef struct {
-    int len; /* states 0 .. len - 1 are known (0: none yet) */
-    double speed0, cruise;
+    int len;        /* states 0 .. len - 1 are known (0: none yet) */
+    double key[3];  /* whose: initial speed, cruise speed */
     EgoSteps at;
 } EgoPrefix;
 
@@ -130,32 +150,19 @@ static int simulate(const VeiBatchScene *sc, const VeiBatchVariant *v, double *t
     VeiCursor on_path = VEI_CURSOR_START, on_track = VEI_CURSOR_START;
     const double t_start = sc->track.t[0] * 1.0 + v->offset;
     const double length = vei_polyline_length(&sc->ego_path);
+    double *ego_rows[NROWS], *threat_rows[NROWS];
+    entity_rows(tr, tg, 0, ego_rows), entity_rows(tr, tg, 1, threat_rows);
+/* entity e's state from / into step k of its rows */
+#define LOAD(rows, k, e)                                                                            \
+    (x[e] = (rows)[RX][k], y[e] = (rows)[RY][k], yaw[e] = (rows)[RYAW][k],                          \
+     speed[e] = (rows)[RSPEED][k], accel[e] = (rows)[RACCEL][k], c[e] = (rows)[RC][k], s[e] = (rows)[RS][k])
+#define STORE(rows, k, e)                                                                           \
+    ((rows)[RX][k] = x[e], (rows)[RY][k] = y[e], (rows)[RYAW][k] = yaw[e],                          \
+     (rows)[RSPEED][k] = speed[e], (rows)[RACCEL][k] = accel[e], (rows)[RC][k] = c[e], (rows)[RS][k] = s[e])
 #define RECORD(k)                                                                                   \
     do {                                                                                            \
-        if (!ego_given) {                                                                           \
-            tr[EX][k] = x[0], tr[EY][k] = y[0], tr[EYAW][k] = yaw[0], tr[ESPEED][k] = speed[0];     \
-            tr[EACCEL][k] = accel[0], tg[EC][k] = c[0], tg[ES][k] = s[0];                           \
-        }                                                                                           \
-        if (!threat_given) {                                                                        \
-            tr[TX][k] = x[1], tr[TY][k] = y[1], tr[TYAW][k] = yaw[1], tr[TSPEED][k] = speed[1];     \
-            tr[TACCEL][k] = accel[1], tg[TC][k] = c[1], tg[TS][k] = s[1];                           \
-        }                                                                                           \
-    } while (0)
-#define THREAT_FROM_RECORD(k)                                                                       \
-    do {                                                                                            \
-        x[1] = tr[TX][k], y[1] = tr[TY][k], yaw[1] = tr[TYAW][k], speed[1] = tr[TSPEED][k];         \
-        accel[1] = tr[TACCEL][k], c[1] = tg[TC][k], s[1] = tg[TS][k];                               \
-    } while (0)
-#define EGO_FROM_RECORD(k)                                                                          \
-    do {                                                                                            \
-        x[0] = tr[EX][k], y[0] = tr[EY][k], yaw[0] = tr[EYAW][k], speed[0] = tr[ESPEED][k];         \
-        accel[0] = tr[EACCEL][k], c[0] = tg[EC][k], s[0] = tg[ES][k];                               \
-    } while (0)
-#define EGO_FROM_PREFIX(k)                                                                          \
-    do {                                                                                            \
-        x[0] = pre->at.row[PX][k], y[0] = pre->at.row[PY][k], yaw[0] = pre->at.row[PYAW][k];        \
-        speed[0] = pre->at.row[PSPEED][k], accel[0] = pre->at.row[PACCEL][k];                       \
-        c[0] = pre->at.row[PC][k], s[0] = pre->at.row[PS][k];                                       \
+        if (!ego_given) STORE(ego_rows, k, 0);                                                      \
+        if (!threat_given) STORE(threat_rows, k, 1);                                                \
     } while (0)
 #define PLANNER_FROM_PREFIX(k)                                                                      \
     do {                                                                                            \
@@ -186,15 +193,15 @@ static int simulate(const VeiBatchScene *sc, const VeiBatchVariant *v, double *t
                 x[e] = x[e] + ds * c[e];
                 y[e] = y[e] + ds * s[e];
             }
-            if (ego_given) EGO_FROM_RECORD(k + 1);
-            if (following) EGO_FROM_PREFIX(k + 1);
-            if (threat_given) THREAT_FROM_RECORD(k + 1);
+            if (ego_given) LOAD(ego_rows, k + 1, 0);
+            if (following) LOAD(pre->at.row, k + 1, 0);
+            if (threat_given) LOAD(threat_rows, k + 1, 1);
             RECORD(k + 1);
             continue;
         }
         /* the ego: the planner where it is on, else its path at constant speed */
         if (ego_given) {
-            EGO_FROM_RECORD(k + 1);
+            LOAD(ego_rows, k + 1, 0);
         } else {
             double v0 = speed[0];
             if (v->cap_on) {
@@ -209,7 +216,7 @@ static int simulate(const VeiBatchScene *sc, const VeiBatchVariant *v, double *t
                 if (next.brake && first_brake == sc->n_steps) first_brake = k;
                 if (following && !next.brake) { /* as the prefix did: its next state */
                     cap = next;
-                    EGO_FROM_PREFIX(k + 1);
+                    LOAD(pre->at.row, k + 1, 0);
                     goto threat;
                 }
                 if (following) { /* brakes where the prefix did not: on from here */
@@ -232,7 +239,7 @@ static int simulate(const VeiBatchScene *sc, const VeiBatchVariant *v, double *t
         }
     threat:
         if (threat_given) {
-            THREAT_FROM_RECORD(k + 1);
+            LOAD(threat_rows, k + 1, 1);
             RECORD(k + 1); /* the ego's row */
             continue;
         }
@@ -266,10 +273,9 @@ static int simulate(const VeiBatchScene *sc, const VeiBatchVariant *v, double *t
         if (yaw[1] != before) c[1] = cos(yaw[1]), s[1] = sin(yaw[1]);
         RECORD(k + 1);
     }
+#undef LOAD
+#undef STORE
 #undef RECORD
-#undef EGO_FROM_RECORD
-#undef THREAT_FROM_RECORD
-#undef EGO_FROM_PREFIX
 #undef PLANNER_FROM_PREFIX
     return first_brake;
 }
@@ -507,9 +513,10 @@ static void score(const VeiBatchScene *sc, double *tr[NTRAJ], double *tg[NTRIG],
 /* Keep the states of a planner variant that the prefix does not know yet: 0 .. first_brake are states
  * before its first decision to brake. */
 static void extend_prefix(EgoPrefix *pre, const EgoSteps *aux, double *tr[NTRAJ], double *tg[NTRIG], int first_brake) {
-    const double *rows[NPREFIX] = {tr[EX], tr[EY], tr[EYAW], tr[ESPEED], tr[EACCEL], tg[EC], tg[ES]};
+    double *rows[NROWS];
+    entity_rows(tr, tg, 0, rows);
     for (int k = pre->len; k <= first_brake; k++) {
-        for (int q = 0; q < NPREFIX; q++) pre->at.row[q][k] = rows[q][k];
+        for (int q = 0; q < NROWS; q++) pre->at.row[q][k] = rows[q][k];
         pre->at.fs[k] = aux->fs[k], pre->at.integral[k] = aux->integral[k];
         pre->at.prev_error[k] = aux->prev_error[k], pre->at.has_prev[k] = aux->has_prev[k];
         pre->at.seg[k] = aux->seg[k];
@@ -519,45 +526,38 @@ static void extend_prefix(EgoPrefix *pre, const EgoSteps *aux, double *tr[NTRAJ]
 
 static EgoSteps ego_steps(double *d, int *i, int n) {
     EgoSteps e;
-    for (int q = 0; q < NPREFIX; q++) e.row[q] = d + (size_t)q * n;
-    e.fs = d + (size_t)NPREFIX * n, e.integral = d + (size_t)(NPREFIX + 1) * n;
-    e.prev_error = d + (size_t)(NPREFIX + 2) * n;
+    for (int q = 0; q < NROWS; q++) e.row[q] = d + (size_t)q * n;
+    e.fs = d + (size_t)NROWS * n, e.integral = d + (size_t)(NROWS + 1) * n;
+    e.prev_error = d + (size_t)(NROWS + 2) * n;
     e.has_prev = i, e.seg = i + n;
     return e;
 }
 
-static int same(double a, double b) { return memcmp(&a, &b, sizeof a) == 0; }
-
-/* Rows of tr/tg kept from one variant for the next one that moves the same (the ego without the
- * planner, or a rider who does not react to the ego): a key and 7 rows (x, y, yaw, speed, accel, cos, sin). */
+/* Rows kept from one variant for the next one that moves the same (the ego without the planner, or a
+ * rider who does not react to the ego), and whose motion they are. */
 typedef struct {
     int valid;
     double key[3];
-    double *row[7];
+    double *row[NROWS];
 } Kept;
 
-static int kept_matches(const Kept *k, const double key[3]) {
-    return k->valid && memcmp(k->key, key, sizeof k->key) == 0;
-}
-
-/* Point the rows of one entity (first: EX or TX, trig: EC or TC) at the kept rows (no trajectory
- * recorded) or copy the kept rows in (recording, when they are given). */
-static void use_kept(const Kept *k, int given, double *tr[NTRAJ], double *tg[NTRIG], int first, int trig,
-                     double *traj, int n) {
+/* Point entity e's rows at the kept ones (no trajectory recorded: the simulation writes into them), or
+ * copy them in when they are given (recording). */
+static void use_kept(const Kept *k, int given, double *tr[NTRAJ], double *tg[NTRIG], int e, double *traj, int n) {
     if (traj == NULL) {
-        for (int q = 0; q < 5; q++) tr[first + q] = k->row[q];
-        tg[trig] = k->row[5], tg[trig + 1] = k->row[6];
+        point_entity_rows(tr, tg, e, k->row);
     } else if (given) {
-        for (int q = 0; q < 5; q++) memcpy(tr[first + q], k->row[q], sizeof(double) * n);
-        memcpy(tg[trig], k->row[5], sizeof(double) * n), memcpy(tg[trig + 1], k->row[6], sizeof(double) * n);
+        double *rows[NROWS];
+        entity_rows(tr, tg, e, rows);
+        copy_rows(rows, k->row, n);
     }
 }
 
-static void keep(Kept *k, const double key[3], double *tr[NTRAJ], double *tg[NTRIG], int first, int trig,
-                 double *traj, int n) {
+static void keep(Kept *k, const double key[3], double *tr[NTRAJ], double *tg[NTRIG], int e, double *traj, int n) {
     if (traj != NULL) { /* recorded into the trajectory: copy out */
-        for (int q = 0; q < 5; q++) memcpy(k->row[q], tr[first + q], sizeof(double) * n);
-        memcpy(k->row[5], tg[trig], sizeof(double) * n), memcpy(k->row[6], tg[trig + 1], sizeof(double) * n);
+        double *rows[NROWS];
+        entity_rows(tr, tg, e, rows);
+        copy_rows(k->row, rows, n);
     }
     k->valid = 1;
     memcpy(k->key, key, sizeof k->key);
@@ -567,8 +567,8 @@ int vei_batch_run(const VeiBatchScene *sc, const VeiBatchVariant *v, int n_varia
     const int n = sc->n_steps + 1;
     /* per variant: the trajectory, its headings' cosines and sines, gap, rate, jerk; then the kept ego
      * and rider rows; then the planner's prefix and one variant's own planner states (EgoSteps:
-     * NPREFIX + 3 doubles, 2 ints) */
-    enum { PER = NTRAJ + NTRIG + 3, KEPT = 7, STEPS = NPREFIX + 3 };
+     * NROWS + 3 doubles, 2 ints) */
+    enum { PER = NTRAJ + NTRIG + 3, KEPT = NROWS, STEPS = NROWS + 3 };
     double *buf = (double *)malloc(sizeof(double) * (size_t)n * (PER + 2 * KEPT + 2 * STEPS));
     int *ibuf = (int *)malloc(sizeof(int) * (size_t)n * (5 + 2 * 2));
     if (buf == NULL || ibuf == NULL) {
@@ -582,7 +582,7 @@ int vei_batch_run(const VeiBatchScene *sc, const VeiBatchVariant *v, int n_varia
         ego.row[q] = buf + (size_t)(PER + q) * n;
         rider.row[q] = buf + (size_t)(PER + KEPT + q) * n;
     }
-    EgoPrefix prefix = {0, 0.0, 0.0, ego_steps(buf + (size_t)(PER + 2 * KEPT) * n, ibuf + 5 * n, n)};
+    EgoPrefix prefix = {0, {0.0, 0.0, 0.0}, ego_steps(buf + (size_t)(PER + 2 * KEPT) * n, ibuf + 5 * n, n)};
     EgoSteps own = ego_steps(buf + (size_t)(PER + 2 * KEPT + STEPS) * n, ibuf + 7 * n, n);
     const double m = sc->cap.corridor_margin_m;
     const double reach =
@@ -596,21 +596,23 @@ int vei_batch_run(const VeiBatchScene *sc, const VeiBatchVariant *v, int n_varia
         for (int q = 0; q < NTRIG; q++) tg[q] = buf + (size_t)(NTRAJ + q) * n;
         /* the ego without the planner moves the same at one initial speed */
         const double ego_key[3] = {vi->ego_speed0, 0.0, 0.0};
-        int ego_given = !vi->cap_on && kept_matches(&ego, ego_key);
-        if (!vi->cap_on) use_kept(&ego, ego_given, tr, tg, EX, EC, traj, n);
+        int ego_given = !vi->cap_on && ego.valid && same_key(ego.key, ego_key);
+        if (!vi->cap_on) use_kept(&ego, ego_given, tr, tg, 0, traj, n);
         /* a rider who does not react to the ego (replayed, or the social force model without the ego's
          * repulsion) moves the same at one time shift and initial speed */
         const int rider_kept = !vi->sfm_on || !vi->repulsive;
         const double rider_key[3] = {vi->offset, (double)vi->sfm_on, vi->threat_speed0};
-        int threat_given = rider_kept && kept_matches(&rider, rider_key);
-        if (rider_kept) use_kept(&rider, threat_given, tr, tg, TX, TC, traj, n);
-        if (vi->cap_on && !(prefix.len > 0 && same(prefix.speed0, vi->ego_speed0) && same(prefix.cruise, vi->cruise)))
-            prefix.len = 0, prefix.speed0 = vi->ego_speed0, prefix.cruise = vi->cruise; /* another ego */
+        int threat_given = rider_kept && rider.valid && same_key(rider.key, rider_key);
+        if (rider_kept) use_kept(&rider, threat_given, tr, tg, 1, traj, n);
+        /* the planner's ego before it brakes moves the same at one initial and cruise speed */
+        const double prefix_key[3] = {vi->ego_speed0, vi->cruise, 0.0};
+        if (vi->cap_on && !same_key(prefix.key, prefix_key)) /* another ego: start a new prefix */
+            prefix.len = 0, memcpy(prefix.key, prefix_key, sizeof prefix.key);
         int first_brake = simulate(sc, vi, tr, tg, ego_given, threat_given, vi->cap_on ? &prefix : NULL,
                                    vi->cap_on ? &own : NULL, reach);
         if (vi->cap_on) extend_prefix(&prefix, &own, tr, tg, first_brake);
-        if (!vi->cap_on && !ego_given) keep(&ego, ego_key, tr, tg, EX, EC, traj, n);
-        if (rider_kept && !threat_given) keep(&rider, rider_key, tr, tg, TX, TC, traj, n);
+        if (!vi->cap_on && !ego_given) keep(&ego, ego_key, tr, tg, 0, traj, n);
+        if (rider_kept && !threat_given) keep(&rider, rider_key, tr, tg, 1, traj, n);
         score(sc, tr, tg, &w, out + (size_t)i * VEI_BATCH_OUTPUTS);
     }
     free(buf);
