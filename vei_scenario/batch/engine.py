@@ -170,8 +170,6 @@ class BatchScenario:
         self.defaults = dict(doc.parameters)
         self.types = dict(doc.parameter_types)
         self._valid_values: set[tuple[str, str]] = set()
-        #: attribute values that are a plain ``$name`` (resolved by a lookup, as resolve_value does)
-        self._plain_ref = {f"${n}": n for n in self.defaults}
         self.names = list(ctx.entities)
         self.ego, self.threat = sim.ego, sim.threat
         if self.ego != self.names[0] or self.threat is None:
@@ -296,9 +294,6 @@ class BatchScenario:
 
     def _resolved(self, raw, scope: dict[str, str]) -> str:
         el, value = raw
-        name = self._plain_ref.get(value)
-        if name is not None and name in scope:  # a plain declared $reference: its value
-            return scope[name]
         return resolve_value(self.path, el, "value", value, scope)
 
     def resolve(self, variants: list[dict[str, str]]) -> Resolved:

@@ -8,6 +8,7 @@ wrong type is refused, as is any reference to an undeclared parameter, naming th
 
 from __future__ import annotations
 
+import functools
 import re
 from dataclasses import dataclass
 from pathlib import Path
@@ -51,10 +52,17 @@ def _format_number(value: float) -> str:
     return repr(int(value)) if value.is_integer() and abs(value) < 1e15 else repr(value)
 
 
-def resolve_value(path: Path, el, attr: str, value: str, scope: dict[str, str]) -> str:
+@functools.lru_cache(maxsize=4096)
+def _reference(value: str) -> str | None:
+    """The parameter name of a plain ``$name`` value, else None (a sweep resolves the same few
+    attribute values for every variant)."""
     m = _REF.match(value)
-    if m:
-        name = m.group(1)
+    return m.group(1) if m else None
+
+
+def resolve_value(path: Path, el, attr: str, value: str, scope: dict[str, str]) -> str:
+    name = _reference(value)
+    if name is not None:
         if name not in scope:
             raise VeiInputError(
                 path, f"line {el.sourceline}", f'<{el.tag} {attr}="{value}">: parameter ${name} is not declared'
