@@ -174,7 +174,7 @@ def test_run_writes_trajectories_metrics_and_plots_deterministically(tmp_path, c
     for n in names:
         assert (tmp_path / "a" / n).read_bytes() == (tmp_path / "b" / n).read_bytes(), n
     header = (tmp_path / "a" / "trajectories.csv").read_text().splitlines()[0]
-    assert header == "time,entity,x,y,heading,speed,acceleration,controller_state"
+    assert header == "time_s,entity,x_m,y_m,heading_rad,speed_mps,acceleration_mps2,controller_state"
     doc = json.loads((tmp_path / "a" / "metrics.json").read_text())
     assert doc["parameters"]["RiderType"] == "normal" and doc["metrics"]["collision"] is False
     assert (tmp_path / "a" / "trajectories.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"

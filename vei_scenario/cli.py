@@ -69,6 +69,7 @@ def _cmd_run(args: argparse.Namespace) -> int:
         args.dt,
         plots=not args.no_plots,
         coupling=args.coupling,
+        osi=args.osi,
     )
     print(summary_text(report.metrics))
     for p in report.written:
@@ -147,6 +148,8 @@ def _cmd_sweep(args: argparse.Namespace) -> int:
             args.emit_xosc,
             args.quiet,
             plotter,
+            args.osi_traces,
+            args.osi_format,
         )
     finally:
         plotter.close()
@@ -283,6 +286,12 @@ def build_parser() -> argparse.ArgumentParser:
     r.add_argument("-o", "--output", help="directory for trajectories.csv, metrics.json and plots")
     r.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
     r.add_argument(
+        "--osi",
+        metavar="TRACE",
+        help="also write an ASAM OSI 3.8 ground-truth trace, one GroundTruth per step (.mcap, or .osi: "
+        "length-prefixed binary)",
+    )
+    r.add_argument(
         "--coupling",
         choices=("sequential", "jacobi"),
         default="sequential",
@@ -322,6 +331,13 @@ def build_parser() -> argparse.ArgumentParser:
     sw.add_argument("--workers", type=int, help="local worker processes (default: all cores)")
     sw.add_argument("--emit-xosc", action="store_true", help="also write one scenario file per variant")
     sw.add_argument("--quiet", action="store_true", help="no progress bar")
+    sw.add_argument(
+        "--osi-traces",
+        metavar="WHICH",
+        help="also write an ASAM OSI ground-truth trace of chosen variants into traces/: collisions, failures "
+        "(collisions with CapEnabled=true), all, or variant numbers 3,17,42",
+    )
+    sw.add_argument("--osi-format", choices=("mcap", "osi"), default="mcap", help="trace format (default mcap)")
     sw.set_defaults(func=_cmd_sweep)
 
     rk = sub.add_parser("risk", help="find the TimeShift intervals of collisions or near misses (bisection)")

@@ -35,17 +35,33 @@ def parse_param_overrides(items: list[str]) -> dict[str, str]:
     return out
 
 
+#: trajectories.csv's columns, each named with its unit.
+TRAJECTORY_COLUMNS = (
+    "time_s", "entity", "x_m", "y_m", "heading_rad", "speed_mps", "acceleration_mps2", "controller_state",
+)  # fmt: skip
+
+
 def trajectories_csv(result: RunResult) -> str:
+    """One row per entity and step, positions to the micrometre (the reference point in the OpenDRIVE
+    frame). Written with a CSV writer, so entity names with commas or quotes stay one field."""
+    import csv
+
     buf = io.StringIO()
-    buf.write("time,entity,x,y,heading,speed,acceleration,controller_state\n")
+    out = csv.writer(buf, lineterminator="\n")
+    out.writerow(TRAJECTORY_COLUMNS)
     names = list(result.traces)
+    quoted = {n: n if n.isidentifier() else None for n in names}
     for i, t in enumerate(result.t):
         for n in names:
             tr = result.traces[n]
-            buf.write(
-                f"{t:.3f},{n},{tr.x[i]:.4f},{tr.y[i]:.4f},{tr.yaw[i]:.5f},{tr.speed[i]:.4f},{tr.accel[i]:.4f},"
-                f"{tr.status[i]}\n"
-            )
+            row = (
+                f"{t:.3f}", n, f"{tr.x[i]:.6f}", f"{tr.y[i]:.6f}", f"{tr.yaw[i]:.6f}", f"{tr.speed[i]:.6f}",
+                f"{tr.accel[i]:.6f}", tr.status[i],
+            )  # fmt: skip
+            if quoted[n] is not None:  # (the common case: nothing to quote, join directly)
+                buf.write(",".join(row) + "\n")
+            else:
+                out.writerow(row)
     return buf.getvalue()
 
 
@@ -129,19 +145,30 @@ def run_to(
     plots: bool = True,
     cfg: MetricConfig | None = None,
     coupling: str = "sequential",
+    osi: str | Path | None = None,
 ) -> RunReport:
-    """Run ``scenario`` and, with ``out_dir``, write its files there (all or nothing)."""
+    """Run ``scenario`` and, with ``out_dir``, write its files there; with ``osi``, also an ASAM OSI
+    ground-truth trace (``.mcap`` or ``.osi``) at that path. All or nothing."""
     if not (1e-4 <= dt <= 0.5):
         raise VeiInputError(None, "--dt", f"{dt} s is outside 0.0001..0.5 s")
+    if osi is not None:
+        from vei_scenario.reports.osi_trace import FORMATS
+
+        if Path(osi).suffix.lower() not in FORMATS:
+            raise VeiInputError(osi, "--osi", f"unknown trace format {Path(osi).suffix!r} (use .mcap or .osi)")
     cfg = cfg or MetricConfig()
     result = run_scenario(scenario, parameters, dt, coupling=coupling)
     doc = metrics_document(result, cfg)
     written: list[Path] = []
+    files = OutputSet()
     if out_dir is not None:
-        out = Path(out_dir)
-        files = OutputSet()
         for name, data in run_files(result, doc, cfg, plots).items():
-            files.add(out / name, data)
+            files.add(Path(out_dir) / name, data)
+    if osi is not None:
+        from vei_scenario.reports.osi_trace import trace_bytes
+
+        files.add(Path(osi), trace_bytes(result, Path(osi).suffix))
+    if files.paths:
         files.commit()
         written = files.paths
     return RunReport(result, doc, written)

@@ -50,6 +50,9 @@ class EntityTrace:
     accel: np.ndarray
     status: list[str]
     center_x: float = 0.0  # box centre ahead of the reference point (x, y) along the heading (m)
+    kind: str = "vehicle"  # vehicle, pedestrian or misc (the ScenarioObject's kind)
+    object_type: str = ""  # finer type from the entity's properties (e.g. "e-scooter"), else ""
+    height: float = 0.0
 
 
 @dataclass
@@ -86,7 +89,9 @@ def _entity(obj, ctx) -> Entity:
     # Center.x - RearAxle.positionX ahead of it (the two agree when the rear axle is at 0).
     rear = kind.find("Axles/RearAxle")
     rear_x = float(rear.get("positionX", "0")) if rear is not None else 0.0
-    return Entity(
+    props = {p.get("name", "").lower(): p.get("value", "") for p in kind.iterfind("Properties/Property")}
+    object_type = next((props[k] for k in OBJECT_TYPE_PROPERTIES if props.get(k)), "")
+    entity = Entity(
         name,
         category,
         float(dims.get("length")),
@@ -96,6 +101,16 @@ def _entity(obj, ctx) -> Entity:
         limits,
         performance=perf is not None,
     )
+    entity.kind = KINDS[kind.tag]
+    entity.object_type = object_type
+    return entity
+
+
+#: ScenarioObject element → the kind of road user it is.
+KINDS = {"Vehicle": "vehicle", "Pedestrian": "pedestrian", "MiscObject": "misc"}
+#: Entity properties (lower case) that may name a finer object type than the vehicle category
+#: (OpenSCENARIO has no e-scooter category; vei writes ``<Property name="objectType" value="e-scooter"/>``).
+OBJECT_TYPE_PROPERTIES = ("objecttype", "type")
 
 
 class Simulation:
@@ -411,7 +426,8 @@ class Simulation:
         for n in names:
             e, r = ctx.entities[n], rec[n]
             traces[n] = EntityTrace(
-                n, e.category, e.length, e.width, t, *(np.array(v) for v in r[:5]), r[5], e.center_x
+                n, e.category, e.length, e.width, t, *(np.array(v) for v in r[:5]), r[5], e.center_x,
+                e.kind, e.object_type, e.height,
             )
         return RunResult(
             str(self.doc.path),

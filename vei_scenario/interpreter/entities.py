@@ -184,6 +184,8 @@ class Entity:
     longitudinal: object = None  # the running action that sets the speed (SpeedAction, distance keeping)
     find_lane: bool = False  # placed off the lane model: look up its lane when it first needs one
     step_speed: float = 0.0  # speed at the start of the current step (for the logged acceleration)
+    kind: str = "vehicle"  # the ScenarioObject's kind: vehicle, pedestrian or misc (MiscObject)
+    object_type: str = ""  # a finer type from the entity's <Properties> ("e-scooter"), else ""
 
     def take_longitudinal(self, action, ctx) -> None:
         """``action`` now sets this entity's speed: the one that did so before ends (one action per

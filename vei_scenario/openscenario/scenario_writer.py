@@ -77,7 +77,11 @@ def _vehicle(e: EntitySpec) -> xosc.Vehicle:
         return xosc.Vehicle(e.name, category, box, front, rear, 50.0, 4.0, 9.0)
     front = xosc.Axle(0.6, 0.2, 0.1, 0.4, 0.1)
     rear = xosc.Axle(0.0, 0.2, 0.1, 0.0, 0.1)
-    return xosc.Vehicle(e.name, category, box, front, rear, 7.0, 2.0, 3.5)
+    vehicle = xosc.Vehicle(e.name, category, box, front, rear, 7.0, 2.0, 3.5)
+    # OpenSCENARIO has no e-scooter category (it is a bicycle-category vehicle): the property tells
+    # players that know better types, such as the OSI writer (TYPE_STANDUP_SCOOTER), what it is
+    vehicle.add_property("objectType", "e-scooter")
+    return vehicle
 
 
 def _properties(values: dict[str, object]) -> xosc.Properties:

@@ -54,6 +54,10 @@ def view_scenario(path: str | Path, parameters: dict[str, str] | None = None, dt
     return View(run, *_zones(run))
 
 
+#: The numeric columns of trajectories.csv the viewer reads.
+COLUMNS = ("time_s", "x_m", "y_m", "heading_rad", "speed_mps", "acceleration_mps2")
+
+
 def view_run_dir(run_dir: str | Path, scenario: str | Path | None = None) -> View:
     """View what ``vei run -o RUN_DIR`` wrote (trajectories.csv, metrics.json). Boxes and the road come
     from ``scenario`` when given (else from metrics.json's entities, without a road)."""
@@ -73,10 +77,14 @@ def view_run_dir(run_dir: str | Path, scenario: str | Path | None = None) -> Vie
     with csv_path.open(newline="", encoding="utf-8") as fh:
         reader = csv.DictReader(fh)
         for line, r in enumerate(reader, start=2):
-            try:
-                values = [float(r[k]) for k in ("time", "x", "y", "heading", "speed", "acceleration")]
+            try:  # (column names with units since 0.2; without them before)
+                values = [float(r[k] if k in r else r[k.rsplit("_", 1)[0]]) for k in COLUMNS]
             except (KeyError, TypeError, ValueError):
-                raise VeiInputError(csv_path, f"line {line}", "expected time,entity,x,y,heading,speed,...") from None
+                raise VeiInputError(
+                    csv_path, f"line {line}", "expected time_s,entity,x_m,y_m,heading_rad,speed_mps,..."
+                ) from None
+            if not all(math.isfinite(v) for v in values):
+                raise VeiInputError(csv_path, f"line {line}", "a value is not a finite number")
             rows.setdefault(r["entity"], []).append(values)
             states.setdefault(r["entity"], []).append(r.get("controller_state", ""))
     if not rows:

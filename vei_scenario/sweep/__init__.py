@@ -18,6 +18,53 @@ from vei_scenario.sweep.report_html import plot_inputs, report_html
 from vei_scenario.variation import cartesian, parse_vary, read_distribution
 
 
+#: At most this many traces per sweep (each is a full interpreted run and ~0.4 MB).
+MAX_TRACES = 1000
+
+
+def trace_selection(rows: list[dict], which: str) -> list[dict]:
+    """The rows whose variants get an OSI trace: ``collisions`` (every variant that collides),
+    ``failures`` (collisions with the planner on: CapEnabled=true), ``all``, or variant numbers
+    ``3,17,42``."""
+    ok = [r for r in rows if r["status"] == "ok"]
+    if which == "all":
+        chosen = ok
+    elif which == "collisions":
+        chosen = [r for r in ok if r["metrics"].get("collision")]
+    elif which == "failures":
+        chosen = [
+            r for r in ok if r["metrics"].get("collision") and str(r["parameters"].get("CapEnabled")) == "true"
+        ]
+    else:
+        try:
+            wanted = {int(v) for v in which.split(",") if v.strip()}
+        except ValueError:
+            raise VeiInputError(
+                None, "--osi-traces", f"{which!r} is not collisions, failures, all or variant numbers (3,17)"
+            ) from None
+        by_number = {r["variant"]: r for r in ok}
+        missing = sorted(wanted - set(by_number))
+        if missing:
+            raise VeiInputError(None, "--osi-traces", f"no successful variant numbered {missing[0]}")
+        chosen = [by_number[k] for k in sorted(wanted)]
+    if len(chosen) > MAX_TRACES:
+        raise VeiInputError(
+            None, "--osi-traces", f"{len(chosen)} traces asked for; at most {MAX_TRACES} (choose variants)"
+        )
+    return chosen
+
+
+def _add_traces(files: OutputSet, out: Path, scenario: Path, rows, which: str, fmt: str, dt: float) -> None:
+    from vei_scenario.interpreter import run_scenario
+    from vei_scenario.reports.osi_trace import trace_bytes
+
+    for r in trace_selection(rows, which):
+        rel = f"traces/variant_{r['variant']:05d}.{fmt}"
+        result = run_scenario(scenario, r["parameters"], dt)
+        files.add(out / rel, trace_bytes(result, "." + fmt, f"vei sweep variant {r['variant']} of {scenario.name}"))
+        r["osi_trace"] = rel
+
+
 @dataclass
 class SweepReport:
     rows: list[dict]
@@ -68,11 +115,17 @@ def run_sweep(
     emit_xosc: bool = False,
     quiet: bool = False,
     plotter: PlotWorker | None = None,
+    osi_traces: str | None = None,
+    osi_format: str = "mcap",
 ) -> SweepReport:
     """Evaluate the variants and write the catalog and report. ``plotter``: a plot worker forked
-    earlier (the command line forks it before importing this package); ended here either way."""
+    earlier (the command line forks it before importing this package); ended here either way.
+    ``osi_traces``: which variants also get an ASAM OSI ground-truth trace (see :func:`trace_selection`),
+    each run again in the interpreter and written to ``traces/variant_NNNNN.<osi_format>``."""
     scenario = Path(scenario)
     out = Path(out_dir)
+    if osi_format not in ("mcap", "osi"):
+        raise VeiInputError(None, "--osi-format", f"{osi_format!r} is not mcap or osi")
     if plotter is None:
         plotter = PlotWorker()  # before the evaluation's threads: it imports matplotlib meanwhile
     # variants and rows are many small acyclic objects that the cyclic collector would scan again and
@@ -102,6 +155,8 @@ def run_sweep(
                 rel = f"variants/variant_{r['variant']:05d}.xosc"
                 files.add(out / rel, variant_xosc(scenario, r["parameters"], out / "variants"))
                 r["xosc"] = rel
+        if osi_traces:
+            _add_traces(files, out, scenario, rows, osi_traces, osi_format, dt)
         meta = {"scenario": str(scenario), "dt_s": dt, "varied": varied, "count": len(rows)}
         files.add(out / "catalog.csv", catalog_csv(rows, names))
         files.add(out / "catalog.json", catalog_json(rows, meta))
