@@ -44,6 +44,14 @@ def _cmd_compile(args: argparse.Namespace) -> int:
     return 0
 
 
+def _cmd_clip_convert(args: argparse.Namespace) -> int:
+    from vei_scenario.clip.openlabel import convert_clip
+
+    path, fmt = convert_clip(args.input, args.output, args.to)
+    print(f"wrote {path} ({'ASAM OpenLABEL 1.0' if fmt == 'openlabel' else 'vei-clip/1'})")
+    return 0
+
+
 def _cmd_validate(args: argparse.Namespace) -> int:
     from vei_scenario.openscenario.validation import format_problems, validate_files
 
@@ -264,7 +272,7 @@ def build_parser() -> argparse.ArgumentParser:
     sub = parser.add_subparsers(dest="command", required=True)
 
     c = sub.add_parser("compile", help="compile an annotated clip into OpenSCENARIO + OpenDRIVE")
-    c.add_argument("clip", help="vei-clip/1 JSON file")
+    c.add_argument("clip", help="annotated clip: vei-clip/1 JSON or ASAM OpenLABEL 1.0 JSON")
     c.add_argument(
         "-o", "--output", required=True, help="scenario file to write (.xosc); .xodr and .variations.xosc go beside it"
     )
@@ -278,6 +286,14 @@ def build_parser() -> argparse.ArgumentParser:
     c.add_argument("--threat", help="track id of the threat scooter (default: smallest conflict margin)")
     c.add_argument("--variants", metavar="DIR", help="also write one fully resolved .xosc per variation into DIR")
     c.set_defaults(func=_cmd_compile)
+
+    cl = sub.add_parser("clip", help="annotated clips: convert between vei-clip/1 and ASAM OpenLABEL 1.0")
+    clsub = cl.add_subparsers(dest="clip_command", required=True)
+    cv = clsub.add_parser("convert", help="write a clip as ASAM OpenLABEL 1.0, or an OpenLABEL annotation as vei-clip/1")
+    cv.add_argument("input", help="vei-clip/1 or OpenLABEL 1.0 JSON file")
+    cv.add_argument("-o", "--output", required=True, help="file to write (.json)")
+    cv.add_argument("--to", choices=("openlabel", "vei-clip"), help="output format (default: the other one)")
+    cv.set_defaults(func=_cmd_clip_convert)
 
     r = sub.add_parser("run", help="run a scenario with the built-in interpreter; write trajectories, metrics, plots")
     r.add_argument("scenario", help="OpenSCENARIO file (.xosc)")

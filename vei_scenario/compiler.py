@@ -83,6 +83,13 @@ def _start_road_network(clip, proj: LocalProjection, opts: CompileOptions, out_d
         osm = fetch_osm(box, out_dir / "map.osm")
     if osm is None:
         return _RoadJob(proj.proj_string, "fitted")
+    if opts.osm is None and not Path(osm).is_file():  # the clip's own map reference (relative to the clip)
+        raise VeiInputError(
+            clip.path,
+            "map.osm",
+            f"map file not found at {osm} (the path is relative to the clip: copy the map beside it, "
+            "or give --osm FILE or --no-map)",
+        )
     region = crop_osm(Path(osm), box)
     if region.n_missing_nodes:
         notes.append(f"map: {region.n_missing_nodes} node references outside the extract were dropped")

@@ -1,0 +1,181 @@
+"""ASAM OpenLABEL 1.0 clips: the bundled clips round-trip and compile to the same bytes; annotations
+written another way (sensor frames, Euler angles, ISO times, no exact fixes) compile to the same
+scene; bad OpenLABEL is one line naming the JSON path."""
+
+from __future__ import annotations
+
+import copy
+import json
+import math
+import re
+
+import pytest
+from conftest import EXAMPLE_NAMES, EXAMPLES
+
+from vei_scenario.cli import main
+
+FILES = ("scenario.xosc", "scenario.xodr", "scenario.variations.xosc")
+
+
+@pytest.mark.parametrize("name", EXAMPLE_NAMES)
+def test_bundled_clip_round_trips_and_compiles_to_identical_bytes(name, tmp_path, capsys):
+    ol, back = tmp_path / "clip.openlabel.json", tmp_path / "back.json"
+    assert main(["clip", "convert", str(EXAMPLES / name / "clip.json"), "-o", str(ol)]) == 0
+    assert main(["clip", "convert", str(ol), "-o", str(back)]) == 0
+    doc = json.loads(ol.read_text())
+    assert doc["openlabel"]["metadata"]["schema_version"] == "1.0.0"
+    for src, out in ((EXAMPLES / name / "clip.json", "a"), (ol, "b"), (back, "c")):
+        assert main(["compile", str(src), "-o", str(tmp_path / out / "scenario.xosc")]) == 0
+    for f in FILES:
+        ref = (tmp_path / "a" / f).read_bytes()
+        assert (tmp_path / "b" / f).read_bytes() == ref, f
+        assert (tmp_path / "c" / f).read_bytes() == ref, f
+
+
+def test_openlabel_output_passes_the_schema_independently(tmp_path):
+    """Checked with jsonschema against the VCD library's OpenLABEL 1.0 schema, outside vei's code."""
+    import jsonschema
+    from vcd import schema
+
+    ol = tmp_path / "c.json"
+    assert main(["clip", "convert", str(EXAMPLES / "multi_scooter" / "clip.json"), "-o", str(ol)]) == 0
+    doc = json.loads(ol.read_text())
+    jsonschema.Draft7Validator(schema.openlabel_schema).validate(doc)
+    systems = doc["openlabel"]["coordinate_systems"]
+    assert systems["vehicle-iso8855"]["parent"] == "odom" and systems["odom"]["type"] == "scene_cs"
+    frame = next(f for f in doc["openlabel"]["frames"].values() if "transforms" in f["frame_properties"])
+    tr = frame["frame_properties"]["transforms"]["vehicle-iso8855_to_odom"]
+    assert len(tr["transform_src_to_dst"]["quaternion"]) == 4
+
+
+def _foreign(doc: dict) -> dict:
+    """The same annotation as another tool might write it: cuboids in a lidar frame 1.5 m ahead of
+    the vehicle origin and 1.8 m up, ego poses as Euler angles, ISO 8601 times, a differently
+    spelled class, no exact GNSS fixes, the world placed by its origin, no vei metadata."""
+    from datetime import datetime, timezone
+
+    d = copy.deepcopy(doc)
+    ol = d["openlabel"]
+    ol["metadata"] = {"schema_version": "1.0.0", "name": "foreign-annotation"}
+    proj = ol["coordinate_systems"]["odom"].pop("geo_reference")["proj"]
+    lat0 = float(re.search(r"lat_0=([-0-9.]+)", proj).group(1))
+    lon0 = float(re.search(r"lon_0=([-0-9.]+)", proj).group(1))
+    ol["coordinate_systems"]["odom"]["geo_reference"] = {"lat_deg": lat0, "lon_deg": lon0}
+    ol["coordinate_systems"].pop("vehicle-sae-j670", None)
+    ol["coordinate_systems"]["vehicle-iso8855"]["children"] = ["lidar"]
+    ol["coordinate_systems"]["lidar"] = {
+        "type": "sensor_cs",
+        "parent": "vehicle-iso8855",
+        "pose_wrt_parent": {"euler_angles": [0.0, 0.0, 0.0], "translation": [1.5, 0.0, 1.8]},
+    }
+    y_right = doc["openlabel"]["metadata"]["vei_clip"]["annotations"]["y_axis"] == "right"
+    for obj in ol["objects"].values():
+        obj["type"] = "E-Scooter" if obj["type"] == "e-scooter" else obj["type"]
+    for f in ol["frames"].values():
+        props = f["frame_properties"]
+        props["timestamp"] = datetime.fromtimestamp(props["timestamp"], timezone.utc).isoformat()
+        for tr in props.get("transforms", {}).values():
+            tr.pop("gnss")
+            q = tr["transform_src_to_dst"].pop("quaternion")
+            tr["transform_src_to_dst"]["euler_angles"] = [2 * math.atan2(q[2], q[3]), 0.0, 0.0]
+            tr["transform_src_to_dst"]["sequence"] = "ZYX"
+        for od in f.get("objects", {}).values():
+            for c in od["object_data"]["cuboid"]:
+                x, y, z = c["val"][:3]
+                y = -y if y_right else y
+                c["val"][:3] = [x - 1.5, y, z - 1.8]
+                c["coordinate_system"] = "lidar"
+    return d
+
+
+def _vertices(xosc, entity):
+    from lxml import etree
+
+    root = etree.parse(str(xosc)).getroot()
+    out = []
+    for traj in root.iter("Trajectory"):
+        if traj.get("name", "").startswith(entity):
+            for v in traj.iter("Vertex"):
+                p = v.find("Position/WorldPosition")
+                out.append((float(v.get("time")), float(p.get("x")), float(p.get("y"))))
+    return out
+
+
+def test_annotation_written_another_way_gives_the_same_scene(tmp_path):
+    ol = tmp_path / "c.json"
+    assert main(["clip", "convert", str(EXAMPLES / "no_map" / "clip.json"), "-o", str(ol)]) == 0
+    foreign = tmp_path / "foreign.json"
+    foreign.write_text(json.dumps(_foreign(json.loads(ol.read_text()))))
+    assert main(["compile", str(EXAMPLES / "no_map" / "clip.json"), "-o", str(tmp_path / "a" / "s.xosc")]) == 0
+    assert main(["compile", str(foreign), "-o", str(tmp_path / "b" / "s.xosc")]) == 0
+    a, b = _vertices(tmp_path / "a" / "s.xosc", "scooter"), _vertices(tmp_path / "b" / "s.xosc", "scooter")
+    assert a and len(a) == len(b)
+    worst = max(math.hypot(p[1] - q[1], p[2] - q[2]) for p, q in zip(a, b))
+    assert worst < 0.05  # only the ego speed is derived from poses instead of read from the GNSS
+
+
+def _case_openlabel(tmp_path, name: str = "no_map") -> dict:
+    ol = tmp_path / "c.json"
+    assert main(["clip", "convert", str(EXAMPLES / name / "clip.json"), "-o", str(ol)]) == 0
+    return json.loads(ol.read_text())
+
+
+def _bad(tmp_path, capsys, doc) -> str:
+    p = tmp_path / "bad.json"
+    p.write_text(json.dumps(doc))
+    assert main(["compile", str(p), "-o", str(tmp_path / "out" / "s.xosc")]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "Traceback" not in err
+    assert not (tmp_path / "out").exists()
+    return err
+
+
+def test_unknown_coordinate_system_names_the_cuboid(tmp_path, capsys):
+    doc = _case_openlabel(tmp_path)
+    k, f = next((k, f) for k, f in doc["openlabel"]["frames"].items() if f.get("objects"))
+    uid = next(iter(f["objects"]))
+    f["objects"][uid]["object_data"]["cuboid"][0]["coordinate_system"] = "camera-7"
+    err = _bad(tmp_path, capsys, doc)
+    assert f"openlabel.frames.{k}.objects.{uid}.object_data.cuboid[0].coordinate_system" in err
+    assert "unknown coordinate system 'camera-7'" in err
+
+
+def test_missing_transforms_are_refused(tmp_path, capsys):
+    doc = _case_openlabel(tmp_path)
+    for f in doc["openlabel"]["frames"].values():
+        f["frame_properties"].pop("transforms", None)
+    assert "no ego odometry" in _bad(tmp_path, capsys, doc)
+
+
+def test_scooter_without_cuboids_is_refused(tmp_path, capsys):
+    doc = _case_openlabel(tmp_path)
+    for f in doc["openlabel"]["frames"].values():
+        for od in f.get("objects", {}).values():
+            od["object_data"] = {"num": [{"name": "score", "val": 0.9}]}
+    err = _bad(tmp_path, capsys, doc)
+    assert "openlabel.objects.0" in err and "no cuboid" in err
+
+
+def test_missing_pose_and_timestamp_and_schema_errors(tmp_path, capsys):
+    doc = _case_openlabel(tmp_path, "stop_and_go")  # (annotated with y to the right: a y-flipped frame)
+    doc["openlabel"]["metadata"]["vei_clip"].pop("map", None)
+    doc["openlabel"]["coordinate_systems"]["vehicle-sae-j670"].pop("pose_wrt_parent")
+    assert "coordinate_systems.vehicle-sae-j670.pose_wrt_parent: missing" in _bad(tmp_path, capsys, doc)
+    doc = _case_openlabel(tmp_path)
+    first = next(iter(doc["openlabel"]["frames"].values()))
+    first["frame_properties"].pop("timestamp")
+    assert "frame_properties.timestamp: missing" in _bad(tmp_path, capsys, doc)
+    doc = _case_openlabel(tmp_path)
+    doc["openlabel"]["objects"]["0"]["name"] = 7
+    assert "openlabel.objects.0.name: not valid OpenLABEL 1.0" in _bad(tmp_path, capsys, doc)
+    doc = _case_openlabel(tmp_path)
+    doc["openlabel"]["metadata"]["schema_version"] = "0.9"
+    assert "only OpenLABEL 1.0.0" in _bad(tmp_path, capsys, doc)
+
+
+def test_times_out_of_order_name_the_openlabel_transform(tmp_path, capsys):
+    doc = _case_openlabel(tmp_path)
+    frames = [f for f in doc["openlabel"]["frames"].values() if "transforms" in f["frame_properties"]]
+    frames[3]["frame_properties"]["timestamp"] = frames[2]["frame_properties"]["timestamp"]
+    err = _bad(tmp_path, capsys, doc)
+    assert "frame_properties.transforms.vehicle-iso8855_to_odom" in err and "times must increase" in err

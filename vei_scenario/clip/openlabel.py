@@ -1,0 +1,541 @@
+"""ASAM OpenLABEL 1.0 clips: read an annotation into a :class:`~vei_scenario.clip.model.Clip`, and
+write a ``vei-clip/1`` document as OpenLABEL.
+
+Why: recordings are annotated in OpenLABEL (frames; objects with cuboids in a coordinate system; the
+ego's odometry as per-frame transforms), so vei must take such a file as it is. The file is validated
+against the OpenLABEL 1.0 JSON Schema and loaded with the VCD library (Vicomtech's OpenLABEL
+implementation, ``vcd``); what vei needs is then read following the standard's conventions:
+
+* **Ego frame** ``E``: the coordinate system named ``vehicle-iso8855`` (ISO 8855: x forward, y left,
+  z up), else the local coordinate system that the per-frame odometry transforms connect to a scene
+  (``scene_cs``) or geographic frame ``W``.
+* **Ego odometry**: per frame, a transform between ``E`` and ``W`` (``frame_properties.transforms``,
+  either direction; ``matrix4x4``, ``quaternion`` + ``translation`` or ``euler_angles`` +
+  ``translation``). Its translation is the ego position in ``W``, its rotation the ego's yaw. ``W`` is
+  placed on earth by a PROJ string in its ``geo_reference.proj`` (as OpenDRIVE's ``geoReference``) or
+  an origin ``geo_reference.lat_deg``/``lon_deg`` (a local transverse Mercator there); without one it
+  is a local frame placed at 0°N 0°E (fine without a map). A transform may also carry the exact fix
+  as ``gnss: {lat_deg, lon_deg, heading_deg, speed_mps}`` (vei writes it so that a round trip is
+  exact); otherwise heading and speed follow from the poses (``W`` is taken as east-north-up).
+* **Times**: ``frame_properties.timestamp`` of every frame used, in seconds (a number) or ISO 8601.
+* **Objects**: ``type`` is the class (e-scooter in any common spelling: ``e-scooter``, ``EScooter``,
+  ``kick_scooter`` ...; other classes are read and then skipped by the compiler as in vei-clip),
+  ``name`` the track id; each frame's first ``cuboid`` gives the centre. A cuboid in a child of ``E``
+  is carried into ``E`` through the ``pose_wrt_parent`` chain; a cuboid in ``W`` through the frame's
+  odometry. An e-scooter without any cuboid is refused.
+
+Every problem is one :class:`VeiInputError` naming the path in the JSON
+(``openlabel.frames.12.objects.3.object_data.cuboid[0].coordinate_system``).
+"""
+
+from __future__ import annotations
+
+import copy
+import math
+import re
+from datetime import datetime
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from vei_scenario.errors import VeiInputError
+
+EGO_FRAME = "vehicle-iso8855"
+WORLD_FRAME = "odom"
+#: A frame whose y axis points right (z down, SAE J670): the annotation convention y_axis = "right".
+Y_RIGHT_FRAME = "vehicle-sae-j670"
+#: Rotation of 180° about x (quaternion x, y, z, w): SAE J670 axes in ISO 8855 axes.
+Y_FLIP_QUATERNION = [1.0, 0.0, 0.0, 0.0]
+#: Object classes (lower case, letters and digits only) read as e-scooters.
+SCOOTER_CLASSES = frozenset(
+    {"escooter", "scooter", "standupscooter", "kickscooter", "electricscooter", "estepp", "emicromobility"}
+)
+SCOOTER_CATEGORY = "e-scooter"
+#: Box written for an annotated scooter (the vei-clip format has no size): vei's e-scooter box (m).
+SCOOTER_BOX_M = (1.2, 0.6, 1.9)
+_TRACK_ID = re.compile(r"^[A-Za-z_][A-Za-z0-9_.-]*$")
+
+
+def _err(path: Path, where: str, reason: str) -> VeiInputError:
+    return VeiInputError(path, where, reason)
+
+
+def _json_path(parts) -> str:
+    out = ""
+    for p in parts:
+        out += f"[{p}]" if isinstance(p, int) else (f".{p}" if out else str(p))
+    return out or "(top level)"
+
+
+def validate_openlabel(path: Path, doc: Any) -> None:
+    """Check ``doc`` against the OpenLABEL 1.0 JSON Schema (the VCD library's copy of it)."""
+    import jsonschema
+    from vcd import schema
+
+    if not isinstance(doc.get("openlabel"), dict):
+        raise _err(path, "openlabel", "not an object")
+    version = (doc["openlabel"].get("metadata") or {}).get("schema_version")
+    if version != schema.openlabel_schema_version:
+        raise _err(path, "openlabel.metadata.schema_version", f"{version!r}: only OpenLABEL 1.0.0 is supported")
+    validator = jsonschema.Draft7Validator(schema.openlabel_schema)
+    errors = list(validator.iter_errors(doc))
+    if errors:
+        err = jsonschema.exceptions.best_match(errors)
+        raise _err(path, _json_path(err.absolute_path), f"not valid OpenLABEL 1.0: {err.message[:300]}")
+
+
+# --- transforms ---------------------------------------------------------------------------------------
+
+
+def _matrix(path: Path, where: str, data: Any) -> np.ndarray:
+    """A 4x4 homogeneous matrix from OpenLABEL transform data (X_dst = M X_src)."""
+    from scipy.spatial.transform import Rotation
+
+    def numbers(key: str, n: int) -> list[float]:
+        vals = data.get(key)
+        if not isinstance(vals, list) or len(vals) != n:
+            raise _err(path, f"{where}.{key}", f"expected {n} numbers")
+        out = []
+        for i, v in enumerate(vals):
+            if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
+                raise _err(path, f"{where}.{key}[{i}]", "not a finite number")
+            out.append(float(v))
+        return out
+
+    if not isinstance(data, dict):
+        raise _err(path, where, "transform data is not an object")
+    m = np.eye(4)
+    if "matrix4x4" in data:
+        m = np.array(numbers("matrix4x4", 16)).reshape(4, 4)
+        if not np.allclose(m[3], [0, 0, 0, 1]):
+            raise _err(path, f"{where}.matrix4x4", "the last row of a homogeneous transform must be 0 0 0 1")
+        return m
+    if "quaternion" in data:
+        q = numbers("quaternion", 4)
+        if math.hypot(*q) < 1e-9:
+            raise _err(path, f"{where}.quaternion", "a zero quaternion is no rotation")
+        m[:3, :3] = _quaternion_matrix(q)
+    elif "euler_angles" in data:
+        seq = data.get("sequence", "ZYX")
+        if not isinstance(seq, str) or len(seq) != 3 or set(seq.upper()) - set("XYZ"):
+            raise _err(path, f"{where}.sequence", f"{seq!r} is not an Euler sequence such as ZYX")
+        m[:3, :3] = Rotation.from_euler(seq.upper(), numbers("euler_angles", 3)).as_matrix()
+    else:
+        raise _err(path, where, "no matrix4x4, quaternion or euler_angles")
+    m[:3, 3] = numbers("translation", 3)
+    return m
+
+
+def _quaternion_matrix(q: list[float]) -> np.ndarray:
+    """Rotation matrix of a quaternion (x, y, z, w); exact for the axis-aligned ones vei writes."""
+    x, y, z, w = q
+    n = x * x + y * y + z * z + w * w
+    if n != 1.0:
+        s = 1.0 / math.sqrt(n)
+        x, y, z, w = x * s, y * s, z * s, w * s
+    return np.array(
+        [
+            [1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
+            [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
+            [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)],
+        ]
+    )
+
+
+def _timestamp(path: Path, where: str, value: Any) -> float:
+    if isinstance(value, bool):
+        raise _err(path, where, "a timestamp is seconds (a number) or ISO 8601 text, not a boolean")
+    if isinstance(value, (int, float)):
+        if not math.isfinite(value):
+            raise _err(path, where, "not a finite number")
+        return float(value)
+    if isinstance(value, str):
+        text = value.strip()
+        try:
+            return float(text)
+        except ValueError:
+            pass
+        try:
+            stamp = datetime.fromisoformat(text.replace("Z", "+00:00"))
+        except ValueError:
+            raise _err(path, where, f"{value!r} is neither seconds nor an ISO 8601 time") from None
+        if stamp.tzinfo is None:
+            raise _err(path, where, f"{value!r} has no time zone (add Z or +hh:mm)")
+        return stamp.timestamp()
+    raise _err(path, where, "missing: every frame used needs frame_properties.timestamp (s or ISO 8601)")
+
+
+# --- reading ------------------------------------------------------------------------------------------
+
+
+class _Frames:
+    """The coordinate systems of a document: which is the ego's and the world's, and the static poses."""
+
+    def __init__(self, path: Path, ol: dict) -> None:
+        self.path = path
+        self.systems: dict[str, dict] = ol.get("coordinate_systems") or {}
+        self.ego = self.world = None
+        self._static: dict[str, np.ndarray] = {}
+
+    def kind(self, name: str) -> str:
+        return str(self.systems.get(name, {}).get("type", ""))
+
+    def find_ego(self, frames: dict) -> None:
+        """Choose E and W from the names, the types and the per-frame transforms."""
+        pairs: dict[tuple[str, str], int] = {}
+        for f in frames.values():
+            for t in ((f.get("frame_properties") or {}).get("transforms") or {}).values():
+                a, b = t.get("src"), t.get("dst")
+                if a in self.systems and b in self.systems:
+                    pairs[(a, b)] = pairs.get((a, b), 0) + 1
+        candidates = []
+        for (a, b), n in pairs.items():
+            for local, world in ((a, b), (b, a)):
+                if self.kind(world) in ("scene_cs", "geo_utm", "geo_wgs84", "geo") or world == WORLD_FRAME:
+                    if self.kind(local) not in ("scene_cs", "geo_utm", "geo_wgs84"):
+                        candidates.append((local == EGO_FRAME, n, local, world))
+        if EGO_FRAME in self.systems:
+            mine = [c for c in candidates if c[2] == EGO_FRAME]
+            if mine:
+                candidates = mine
+        if not candidates:
+            if not self.systems:
+                raise _err(self.path, "openlabel.coordinate_systems", "missing: no coordinate systems, so no ego frame")
+            raise _err(
+                self.path,
+                "openlabel.frames",
+                "no ego odometry: no frame has a transform between the ego's coordinate system (e.g. "
+                f"{EGO_FRAME}, local_cs) and a scene_cs such as {WORLD_FRAME}",
+            )
+        _, _, self.ego, self.world = max(candidates)
+
+    def to_ego(self, name: str, where: str) -> np.ndarray | None:
+        """Static matrix from coordinate system ``name`` to E (None when ``name`` is not E or below it)."""
+        if name in self._static:
+            return self._static[name]
+        if name not in self.systems:
+            raise _err(self.path, where, f"unknown coordinate system {name!r} (not in openlabel.coordinate_systems)")
+        m, cur, seen = np.eye(4), name, set()
+        while cur != self.ego:
+            if cur in seen:
+                raise _err(self.path, f"openlabel.coordinate_systems.{cur}.parent", "the parents form a cycle")
+            seen.add(cur)
+            cs = self.systems.get(cur)
+            if cs is None:
+                raise _err(self.path, where, f"unknown coordinate system {cur!r}")
+            parent = cs.get("parent") or ""
+            if not parent:
+                return None  # not below the ego frame (the world, or another tree)
+            if "pose_wrt_parent" not in cs:
+                raise _err(
+                    self.path,
+                    f"openlabel.coordinate_systems.{cur}.pose_wrt_parent",
+                    f"missing: the pose of {cur!r} in its parent {parent!r} is needed to place its cuboids",
+                )
+            m = _matrix(self.path, f"openlabel.coordinate_systems.{cur}.pose_wrt_parent", cs["pose_wrt_parent"]) @ m
+            cur = parent
+        self._static[name] = m
+        return m
+
+
+def _geo(path: Path, world: dict):
+    """(lat, lon) of world-frame points, from its ``geo_reference`` (None: a local frame at 0°N 0°E)."""
+    import pyproj
+
+    geo = world.get("geo_reference") if isinstance(world, dict) else None
+    if isinstance(geo, dict) and isinstance(geo.get("proj"), str):
+        proj = geo["proj"]
+    elif isinstance(geo, dict) and {"lat_deg", "lon_deg"} <= set(geo):
+        lat, lon = geo["lat_deg"], geo["lon_deg"]
+        if not all(isinstance(v, (int, float)) and math.isfinite(v) for v in (lat, lon)) or abs(lat) > 90:
+            raise _err(path, "openlabel.coordinate_systems.geo_reference", "lat_deg/lon_deg are not a place on earth")
+        proj = f"+proj=tmerc +lat_0={lat} +lon_0={lon} +k=1 +x_0=0 +y_0=0 +ellps=WGS84 +units=m +no_defs"
+    else:
+        proj = "+proj=tmerc +lat_0=0 +lon_0=0 +k=1 +x_0=0 +y_0=0 +ellps=WGS84 +units=m +no_defs"
+    try:
+        to_geo = pyproj.Transformer.from_crs(pyproj.CRS.from_user_input(proj), "EPSG:4326", always_xy=True)
+    except pyproj.exceptions.CRSError as exc:
+        raise _err(path, "openlabel.coordinate_systems.geo_reference.proj", f"not a PROJ string: {exc}") from None
+    return to_geo
+
+
+def scooter_class(kind: str) -> bool:
+    return re.sub(r"[^a-z0-9]", "", kind.lower()) in SCOOTER_CLASSES
+
+
+def openlabel_to_clip_document(path: Path, doc: dict) -> tuple[dict, dict[str, str]]:
+    """The ``vei-clip/1`` document an OpenLABEL annotation stands for, and a map from its field paths
+    (``ego.samples[3]``) to the OpenLABEL paths they came from (for error messages)."""
+    from vcd import core
+
+    validate_openlabel(path, doc)
+    vcd = core.VCD()
+    vcd.load_from_json(copy.deepcopy(doc), validation=False)  # validated above (with paths); it edits what it gets
+    ol = vcd.data["openlabel"]
+    frames: dict[int, dict] = dict(sorted((int(k), v) for k, v in (ol.get("frames") or {}).items()))
+    if not frames:
+        raise _err(path, "openlabel.frames", "missing: an annotation needs frames")
+    cs = _Frames(path, ol)
+    cs.find_ego(frames)
+    to_geo = _geo(path, cs.systems.get(cs.world, {}))
+    meta = ol.get("metadata") or {}
+
+    # the ego: every frame with an odometry transform
+    ego_t, ego_pose, ego_gnss, sources = [], [], [], []
+    frame_time: dict[int, float] = {}
+    for k, f in frames.items():
+        props = f.get("frame_properties") or {}
+        for name, tr in (props.get("transforms") or {}).items():
+            if {tr.get("src"), tr.get("dst")} != {cs.ego, cs.world}:
+                continue
+            where = f"openlabel.frames.{k}.frame_properties.transforms.{name}"
+            m = _matrix(path, f"{where}.transform_src_to_dst", tr.get("transform_src_to_dst"))
+            if tr.get("src") == cs.world:
+                m = np.linalg.inv(m)
+            frame_time[k] = _timestamp(path, f"openlabel.frames.{k}.frame_properties.timestamp", props.get("timestamp"))
+            ego_t.append(frame_time[k])
+            ego_pose.append(m)
+            gnss = tr.get("gnss")
+            ego_gnss.append(gnss if isinstance(gnss, dict) else None)
+            sources.append(where)
+            break
+    if len(ego_t) < 2:
+        raise _err(path, "openlabel.frames", f"ego odometry in {len(ego_t)} frame(s); at least 2 are needed")
+    order = np.argsort(np.array(ego_t), kind="stable")
+    samples, paths = [], {}
+    xs = np.array([ego_pose[i][0, 3] for i in order])
+    ys = np.array([ego_pose[i][1, 3] for i in order])
+    ts = np.array([ego_t[i] for i in order])
+    if np.any(np.diff(ts) <= 0):
+        j = int(np.nonzero(np.diff(ts) <= 0)[0][0]) + 1
+        raise _err(path, sources[order[j]], f"ego odometry times must increase ({ts[j]!r} after {ts[j - 1]!r})")
+    speed = np.hypot(np.gradient(xs, ts), np.gradient(ys, ts))
+    lon, lat = to_geo.transform(xs, ys)
+    for n, i in enumerate(order):
+        m, g = ego_pose[i], ego_gnss[i]
+        yaw = math.degrees(math.atan2(m[1, 0], m[0, 0]))
+        sample = {
+            "t": float(ego_t[i]),
+            "lat": float(lat[n]),
+            "lon": float(lon[n]),
+            "heading_deg": round((90.0 - yaw) % 360.0, 9),
+            "speed_mps": float(speed[n]),
+        }
+        if g is not None:
+            for key, field in (("lat_deg", "lat"), ("lon_deg", "lon"), ("heading_deg", "heading_deg")):
+                if key in g:
+                    sample[field] = g[key]
+            if "speed_mps" in g:
+                sample["speed_mps"] = g["speed_mps"]
+        samples.append(sample)
+        paths[f"ego.samples[{n}]"] = sources[i]
+    ego_pose_at = {k: ego_pose[list(frame_time).index(k)] for k in frame_time}
+
+    # the annotated objects
+    objects: dict[str, dict] = ol.get("objects") or {}
+    names: dict[str, str] = {}
+    for uid, obj in objects.items():
+        raw = str(obj.get("name") or "")
+        tid = raw if _TRACK_ID.match(raw) else re.sub(r"[^A-Za-z0-9_.-]", "_", f"{obj.get('type', 'object')}_{uid}")
+        if not _TRACK_ID.match(tid):
+            tid = f"object_{uid}"
+        if tid in names.values():
+            tid = f"{tid}_{uid}"
+        names[uid] = tid
+    ann_frames, seen_cuboid = [], set()
+    for k, f in frames.items():
+        objs = []
+        for uid, od in (f.get("objects") or {}).items():
+            if uid not in objects:
+                raise _err(path, f"openlabel.frames.{k}.objects.{uid}", "no such object in openlabel.objects")
+            cuboids = (od.get("object_data") or {}).get("cuboid") or []
+            if not cuboids:
+                continue
+            where = f"openlabel.frames.{k}.objects.{uid}.object_data.cuboid[0]"
+            val = cuboids[0].get("val")
+            if not isinstance(val, list) or len(val) not in (9, 10):
+                raise _err(path, f"{where}.val", "a cuboid has 9 or 10 values")
+            if not all(isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v) for v in val):
+                raise _err(path, f"{where}.val", "not finite numbers")
+            system = cuboids[0].get("coordinate_system") or objects[uid].get("coordinate_system") or cs.ego
+            m = cs.to_ego(system, f"{where}.coordinate_system")
+            if m is None:  # in the world frame (or above the ego): through this frame's odometry
+                if system != cs.world:
+                    raise _err(path, f"{where}.coordinate_system", f"{system!r} is not related to {cs.ego!r}")
+                if k not in ego_pose_at:
+                    raise _err(path, where, f"a cuboid in {system!r} needs the ego's odometry in frame {k}")
+                m = np.linalg.inv(ego_pose_at[k])
+            p = m @ np.array([val[0], val[1], val[2], 1.0])
+            kind = str(objects[uid].get("type", ""))
+            category = SCOOTER_CATEGORY if scooter_class(kind) else kind or "unknown"
+            objs.append({"track_id": names[uid], "category": category, "x_m": float(p[0]), "y_m": float(p[1])})
+            seen_cuboid.add(uid)
+        if objs:
+            t = _timestamp(path, f"openlabel.frames.{k}.frame_properties.timestamp",
+                           (f.get("frame_properties") or {}).get("timestamp"))  # fmt: skip
+            paths[f"annotations.frames[{len(ann_frames)}]"] = f"openlabel.frames.{k}"
+            ann_frames.append({"t": t, "objects": objs})
+    for uid, obj in objects.items():
+        if scooter_class(str(obj.get("type", ""))) and uid not in seen_cuboid:
+            raise _err(path, f"openlabel.objects.{uid}", f"e-scooter {obj.get('name', uid)!r} has no cuboid in any frame")
+    if not ann_frames:
+        raise _err(path, "openlabel.frames", "no object has a cuboid in any frame")
+    ann_frames.sort(key=lambda fr: fr["t"])
+
+    clip_id = str(meta.get("name") or path.stem)
+    if not re.match(r"^[A-Za-z0-9_.-]+$", clip_id):
+        clip_id = re.sub(r"[^A-Za-z0-9_.-]", "_", clip_id) or "openlabel"
+    out: dict = {"format": "vei-clip/1", "id": clip_id}
+    if isinstance(meta.get("recorded_at"), str):
+        out["recorded_at"] = meta["recorded_at"]
+    ego: dict = {"samples": samples}
+    dims = cs.systems.get(cs.ego, {}).get("vehicle_dimensions")
+    if isinstance(dims, dict):
+        ego.update({k: dims[k] for k in ("length_m", "width_m") if k in dims})
+    out["ego"] = ego
+    out["annotations"] = {"time_offset_s": 0.0, "y_axis": "left", "frames": ann_frames}
+    vei = meta.get("vei_clip")
+    if isinstance(vei, dict):
+        if isinstance(vei.get("map"), dict):
+            out["map"] = vei["map"]
+        if isinstance(vei.get("annotations"), dict):  # the original annotation frame (exact round trip)
+            out["annotations"].update({k: vei["annotations"][k] for k in ("y_axis",) if k in vei["annotations"]})
+            if out["annotations"]["y_axis"] == "right":
+                for fr in ann_frames:
+                    for o in fr["objects"]:
+                        o["y_m"] = -o["y_m"]
+        if isinstance(vei.get("extensions"), dict):
+            out["extensions"] = vei["extensions"]
+    return out, paths
+
+
+def clip_from_openlabel(path: Path, doc: dict):
+    """A :class:`~vei_scenario.clip.model.Clip` from an OpenLABEL document: converted, then checked as
+    a vei-clip (times, spans, tracks), errors naming the OpenLABEL paths."""
+    from vei_scenario.clip.loader import clip_from_document
+
+    clip_doc, paths = openlabel_to_clip_document(path, doc)
+    try:
+        return clip_from_document(path, clip_doc)
+    except VeiInputError as exc:
+        where = exc.where
+        for prefix in sorted(paths, key=len, reverse=True):
+            if where.startswith(prefix):
+                where = paths[prefix] + f" ({where})"
+                break
+        raise VeiInputError(exc.file, where, exc.reason) from None
+
+
+# --- writing ------------------------------------------------------------------------------------------
+
+
+def clip_document_to_openlabel(doc: dict, proj_string: str) -> dict:
+    """An OpenLABEL 1.0 document for a ``vei-clip/1`` document (checked before): the ego odometry as
+    ``vehicle-iso8855`` → ``odom`` transforms (``odom``: the local transverse Mercator
+    ``proj_string``, carried as its ``geo_reference``; each transform also carries the exact fix as
+    ``gnss``), the annotations as cuboids in ``vehicle-iso8855`` or, for ``y_axis: "right"``, in
+    ``vehicle-sae-j670`` (y right, z down), on one clock (the GPS clock)."""
+    import pyproj
+    from vcd import core, types
+
+    vcd = core.VCD()
+    vcd.add_name(doc["id"])
+    vcd.add_annotator("vei-scenario (vei clip convert)")
+    extra: dict = {}
+    if "recorded_at" in doc:
+        extra["recorded_at"] = doc["recorded_at"]
+    ann = doc["annotations"]
+    y_right = ann.get("y_axis", "right") == "right"
+    vei = {"format": "vei-clip/1", "annotations": {"y_axis": "right" if y_right else "left"}}
+    if "map" in doc:
+        vei["map"] = doc["map"]
+    if "extensions" in doc:
+        vei["extensions"] = doc["extensions"]
+    extra["vei_clip"] = vei
+    vcd.add_metadata_properties(extra)
+    vcd.add_coordinate_system(WORLD_FRAME, types.CoordinateSystemType.scene_cs)
+    vcd.add_coordinate_system(EGO_FRAME, types.CoordinateSystemType.local_cs, parent_name=WORLD_FRAME)
+    systems = vcd.data["openlabel"]["coordinate_systems"]
+    systems[WORLD_FRAME]["geo_reference"] = {"proj": proj_string}
+    ego = doc["ego"]
+    systems[EGO_FRAME]["vehicle_dimensions"] = {k: ego[k] for k in ("length_m", "width_m") if k in ego}
+    annotation_cs = EGO_FRAME
+    if y_right:
+        annotation_cs = Y_RIGHT_FRAME
+        vcd.add_coordinate_system(
+            Y_RIGHT_FRAME,
+            types.CoordinateSystemType.local_cs,
+            parent_name=EGO_FRAME,
+            pose_wrt_parent=types.PoseData(Y_FLIP_QUATERNION + [0.0, 0.0, 0.0], types.TransformDataType.quat_and_trans_7x1),
+        )
+    to_xy = pyproj.Transformer.from_crs("EPSG:4326", pyproj.CRS.from_user_input(proj_string), always_xy=True)
+    offset = float(ann.get("time_offset_s", 0.0))
+    times = sorted({float(s["t"]) for s in ego["samples"]} | {float(f["t"]) + offset for f in ann["frames"]})
+    index = {t: k for k, t in enumerate(times)}
+    for s in ego["samples"]:
+        k = index[float(s["t"])]
+        x, y = to_xy.transform(s["lon"], s["lat"])
+        yaw = math.radians(90.0 - s["heading_deg"])
+        q = [0.0, 0.0, math.sin(yaw / 2), math.cos(yaw / 2)]
+        transform = types.Transform(
+            EGO_FRAME,
+            WORLD_FRAME,
+            types.TransformData(q + [float(x), float(y), 0.0], types.TransformDataType.quat_and_trans_7x1),
+            gnss={"lat_deg": s["lat"], "lon_deg": s["lon"], "heading_deg": s["heading_deg"], "speed_mps": s["speed_mps"]},
+        )
+        vcd.add_transform(k, transform)
+    uids: dict[str, int] = {}
+    for f in ann["frames"]:
+        k = index[float(f["t"]) + offset]
+        for o in f["objects"]:
+            tid = o["track_id"]
+            if tid not in uids:
+                uids[tid] = int(vcd.add_object(tid, o["category"]))
+            box = [o["x_m"], o["y_m"], 0.0, 0.0, 0.0, 0.0, 1.0, *SCOOTER_BOX_M]
+            vcd.add_object_data(uids[tid], types.cuboid("box", box, annotation_cs), frame_value=k)
+    for t, k in index.items():
+        vcd.add_frame_properties(k, timestamp=t)
+    return vcd.data
+
+
+def convert_clip(src: str | Path, dst: str | Path, to: str | None = None) -> tuple[Path, str]:
+    """Convert a clip file between ``vei-clip/1`` and OpenLABEL 1.0 (``to``: ``openlabel`` or
+    ``vei-clip``; by default the other format). Both are validated; the output is written atomically.
+    Returns the path written and its format."""
+    import json
+
+    from vei_scenario.atomic_io import write_bytes_atomic
+    from vei_scenario.clip.loader import clip_from_document, read_json
+    from vei_scenario.geometry.projection import LocalProjection
+
+    src, dst = Path(src), Path(dst)
+    doc = read_json(src)
+    is_openlabel = isinstance(doc, dict) and "openlabel" in doc
+    to = to or ("vei-clip" if is_openlabel else "openlabel")
+    if to not in ("openlabel", "vei-clip"):
+        raise VeiInputError(None, "--to", f"{to!r} is not openlabel or vei-clip")
+    if is_openlabel:
+        clip_doc, _ = openlabel_to_clip_document(src, doc)
+        clip = clip_from_openlabel(src, doc)
+    else:
+        clip_doc = doc
+        clip = clip_from_document(src, doc)
+    if to == "vei-clip":
+        if "map" in clip_doc and "osm" in clip_doc["map"] and clip.osm_path is not None:
+            # keep the map reachable from the new place (the reference is relative to the clip)
+            import os
+
+            clip_doc["map"] = dict(clip_doc["map"], osm=os.path.relpath(clip.osm_path, dst.resolve().parent))
+        out = clip_doc
+    else:
+        if "map" in clip_doc and "osm" in clip_doc["map"] and clip.osm_path is not None:
+            import os
+
+            clip_doc = dict(clip_doc, map=dict(clip_doc["map"], osm=os.path.relpath(clip.osm_path, dst.resolve().parent)))
+        proj = LocalProjection(float(clip.ego.lat[0]), float(clip.ego.lon[0])).proj_string
+        # as JSON has it (string frame keys), checked against the schema before it is written
+        out = json.loads(json.dumps(clip_document_to_openlabel(clip_doc, proj), allow_nan=False))
+        validate_openlabel(dst, out)
+    write_bytes_atomic(dst, (json.dumps(out, indent=1, allow_nan=False) + "\n").encode("utf-8"))
+    return dst, to
