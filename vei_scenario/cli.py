@@ -52,6 +52,14 @@ def _cmd_clip_convert(args: argparse.Namespace) -> int:
     return 0
 
 
+def _cmd_examples(args: argparse.Namespace) -> int:
+    from vei_scenario.examples import copy_examples
+
+    paths = copy_examples(args.directory, args.force)
+    print(f"wrote {len(paths)} files under {args.directory}; try: vei compile {Path(args.directory) / 'case_study' / 'clip.json'} -o out/case_study/scenario.xosc")
+    return 0
+
+
 def _cmd_validate(args: argparse.Namespace) -> int:
     from vei_scenario.openscenario.validation import format_problems, validate_files
 
@@ -286,6 +294,11 @@ def build_parser() -> argparse.ArgumentParser:
     c.add_argument("--threat", help="track id of the threat scooter (default: smallest conflict margin)")
     c.add_argument("--variants", metavar="DIR", help="also write one fully resolved .xosc per variation into DIR")
     c.set_defaults(func=_cmd_compile)
+
+    ex = sub.add_parser("examples", help="copy the bundled example clips (and their map) into a directory")
+    ex.add_argument("directory", help="where to put them (created if needed)")
+    ex.add_argument("--force", action="store_true", help="overwrite example files already there")
+    ex.set_defaults(func=_cmd_examples)
 
     cl = sub.add_parser("clip", help="annotated clips: convert between vei-clip/1 and ASAM OpenLABEL 1.0")
     clsub = cl.add_subparsers(dest="clip_command", required=True)

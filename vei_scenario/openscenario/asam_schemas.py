@@ -43,9 +43,9 @@ ODR_SCHEMAS = {
 }
 
 INSTALL_HINT = (
-    "install the ASAM Quality Checker packages (they carry the XSDs) in their own environment: "
-    "python -m venv .venv-qc && .venv-qc/bin/pip install asam-qc-openscenarioxml asam-qc-opendrive, "
-    "then set VEI_QC_VENV=.venv-qc"
+    "the ASAM XSDs ship in the ASAM Quality Checker packages: install their schema files beside vei with "
+    "pip install --no-deps asam-qc-openscenarioxml asam-qc-opendrive (or point VEI_QC_VENV at an environment "
+    "that has them)"
 )
 
 

@@ -1,0 +1,49 @@
+"""``vei examples DIR``: copy the bundled example clips (and their map) out of the installed package.
+
+Why: a user who installed the wheel has no checkout; the README's commands and the tutorials start from
+``examples/case_study/clip.json``. The layout is kept (each clip names its map relative to itself,
+``../maps/...``), so the copies compile as they are.
+"""
+
+from __future__ import annotations
+
+from importlib import resources
+from pathlib import Path
+
+from vei_scenario.errors import VeiInputError
+
+#: The folders copied: the example clips, their shared map and the CI suite.
+FOLDERS = ("case_study", "multi_scooter", "no_map", "stop_and_go", "maps", "ci")
+
+
+def bundled_examples() -> list[tuple[str, bytes]]:
+    """(relative path, bytes) of every bundled example file."""
+    root = resources.files("vei_scenario").joinpath("data/examples")
+    out = []
+    for folder in FOLDERS:
+        d = root.joinpath(folder)
+        if not d.is_dir():
+            continue
+        for f in sorted(d.iterdir(), key=lambda p: p.name):
+            if f.is_file() and not f.name.startswith("."):
+                out.append((f"{folder}/{f.name}", f.read_bytes()))
+    if not out:
+        raise VeiInputError(None, "examples", "this installation carries no examples (reinstall vei-scenario)")
+    return out
+
+
+def copy_examples(target: str | Path, force: bool = False) -> list[Path]:
+    """Copy the bundled examples into ``target`` (all or nothing); existing files are kept unless
+    ``force``."""
+    from vei_scenario.atomic_io import OutputSet
+
+    target = Path(target)
+    files = bundled_examples()
+    clash = [rel for rel, _ in files if (target / rel).exists()]
+    if clash and not force:
+        raise VeiInputError(target / clash[0], "", "already exists (use --force to overwrite the examples)")
+    out = OutputSet()
+    for rel, data in files:
+        out.add(target / rel, data)
+    out.commit()
+    return out.paths
