@@ -10,8 +10,8 @@ import math
 import re
 
 import pytest
-from conftest import EXAMPLE_NAMES, EXAMPLES
 
+from conftest import EXAMPLE_NAMES, EXAMPLES
 from vei_scenario.cli import main
 
 FILES = ("scenario.xosc", "scenario.xodr", "scenario.variations.xosc")

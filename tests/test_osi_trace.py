@@ -116,16 +116,20 @@ def test_box_centre_velocity_and_pedestrian_type(tmp_path):
 </Entities>
 <Storyboard><Init><Actions>
  <Private entityRef="Car">
-  <PrivateAction><TeleportAction><Position><WorldPosition x="0" y="0" h="0.5"/></Position></TeleportAction></PrivateAction>
+  <PrivateAction><TeleportAction><Position><WorldPosition x="0" y="0" h="0.5"/></Position>
+  </TeleportAction></PrivateAction>
   <PrivateAction><LongitudinalAction><SpeedAction>
    <SpeedActionDynamics dynamicsShape="step" value="0" dynamicsDimension="time"/>
-   <SpeedActionTarget><AbsoluteTargetSpeed value="10"/></SpeedActionTarget></SpeedAction></LongitudinalAction></PrivateAction>
+   <SpeedActionTarget><AbsoluteTargetSpeed value="10"/></SpeedActionTarget>
+   </SpeedAction></LongitudinalAction></PrivateAction>
  </Private>
  <Private entityRef="Walker">
-  <PrivateAction><TeleportAction><Position><WorldPosition x="30" y="-5" h="1.5708"/></Position></TeleportAction></PrivateAction>
+  <PrivateAction><TeleportAction><Position><WorldPosition x="30" y="-5" h="1.5708"/></Position>
+  </TeleportAction></PrivateAction>
   <PrivateAction><LongitudinalAction><SpeedAction>
    <SpeedActionDynamics dynamicsShape="step" value="0" dynamicsDimension="time"/>
-   <SpeedActionTarget><AbsoluteTargetSpeed value="1.5"/></SpeedActionTarget></SpeedAction></LongitudinalAction></PrivateAction>
+   <SpeedActionTarget><AbsoluteTargetSpeed value="1.5"/></SpeedActionTarget>
+   </SpeedAction></LongitudinalAction></PrivateAction>
  </Private>
 </Actions></Init>
 <StopTrigger><ConditionGroup><Condition name="end" delay="0" conditionEdge="rising"><ByValueCondition>
@@ -165,3 +169,19 @@ def test_sweep_writes_traces_of_the_collisions(compiled, tmp_path):
     traced = {int(p.stem.split("_")[1]) for p in (tmp_path / "s" / "traces").iterdir()}
     assert collided and traced == collided
     assert main(args + ["--osi-traces", "x,y", "-o", str(tmp_path / "bad")]) == 2
+
+
+def test_osi_project_reader_accepts_the_mcap(case_run):
+    """The OSI project's own trace reader (asam-osi-utilities) decodes the channel by its schema."""
+    tracefile = pytest.importorskip("osi_utilities.tracefile")
+    reader = tracefile.create_reader(case_run / "trace.mcap")
+    assert reader.open(case_run / "trace.mcap")
+    count, last = 0, None
+    while reader.has_next():
+        res = reader.read_message()
+        if res is None or res.message is None:
+            break
+        count, last = count + 1, res.message
+    reader.close()
+    assert count == 2502 and type(last).__name__ == "GroundTruth"
+    assert len(last.moving_object) == 2 and last.host_vehicle_id.value == 0

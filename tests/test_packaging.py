@@ -10,8 +10,8 @@ import zipfile
 from pathlib import Path
 
 import pytest
-from conftest import ROOT
 
+from conftest import ROOT
 from vei_scenario.cli import main
 
 
@@ -51,7 +51,9 @@ def test_wheel_carries_the_examples_and_schemas(wheel):
 def test_vei_examples_copies_clips_that_compile(tmp_path, capsys):
     assert main(["examples", str(tmp_path / "ex")]) == 0
     assert (tmp_path / "ex" / "maps" / "helsinki_center.osm").is_file()
-    assert main(["compile", str(tmp_path / "ex" / "case_study" / "clip.json"), "-o", str(tmp_path / "o" / "s.xosc")]) == 0
+    assert (
+        main(["compile", str(tmp_path / "ex" / "case_study" / "clip.json"), "-o", str(tmp_path / "o" / "s.xosc")]) == 0
+    )
     capsys.readouterr()
     assert main(["examples", str(tmp_path / "ex")]) == 2  # nothing overwritten without --force
     assert "already exists" in capsys.readouterr().err

@@ -56,7 +56,8 @@ def _cmd_examples(args: argparse.Namespace) -> int:
     from vei_scenario.examples import copy_examples
 
     paths = copy_examples(args.directory, args.force)
-    print(f"wrote {len(paths)} files under {args.directory}; try: vei compile {Path(args.directory) / 'case_study' / 'clip.json'} -o out/case_study/scenario.xosc")
+    clip = Path(args.directory) / "case_study" / "clip.json"
+    print(f"wrote {len(paths)} files under {args.directory}; try: vei compile {clip} -o out/case_study/scenario.xosc")
     return 0
 
 
@@ -302,7 +303,9 @@ def build_parser() -> argparse.ArgumentParser:
 
     cl = sub.add_parser("clip", help="annotated clips: convert between vei-clip/1 and ASAM OpenLABEL 1.0")
     clsub = cl.add_subparsers(dest="clip_command", required=True)
-    cv = clsub.add_parser("convert", help="write a clip as ASAM OpenLABEL 1.0, or an OpenLABEL annotation as vei-clip/1")
+    cv = clsub.add_parser(
+        "convert", help="write a clip as ASAM OpenLABEL 1.0, or an OpenLABEL annotation as vei-clip/1"
+    )
     cv.add_argument("input", help="vei-clip/1 or OpenLABEL 1.0 JSON file")
     cv.add_argument("-o", "--output", required=True, help="file to write (.json)")
     cv.add_argument("--to", choices=("openlabel", "vei-clip"), help="output format (default: the other one)")

@@ -378,7 +378,9 @@ def openlabel_to_clip_document(path: Path, doc: dict) -> tuple[dict, dict[str, s
             ann_frames.append({"t": t, "objects": objs})
     for uid, obj in objects.items():
         if scooter_class(str(obj.get("type", ""))) and uid not in seen_cuboid:
-            raise _err(path, f"openlabel.objects.{uid}", f"e-scooter {obj.get('name', uid)!r} has no cuboid in any frame")
+            raise _err(
+                path, f"openlabel.objects.{uid}", f"e-scooter {obj.get('name', uid)!r} has no cuboid in any frame"
+            )
     if not ann_frames:
         raise _err(path, "openlabel.frames", "no object has a cuboid in any frame")
     ann_frames.sort(key=lambda fr: fr["t"])
@@ -467,7 +469,9 @@ def clip_document_to_openlabel(doc: dict, proj_string: str) -> dict:
             Y_RIGHT_FRAME,
             types.CoordinateSystemType.local_cs,
             parent_name=EGO_FRAME,
-            pose_wrt_parent=types.PoseData(Y_FLIP_QUATERNION + [0.0, 0.0, 0.0], types.TransformDataType.quat_and_trans_7x1),
+            pose_wrt_parent=types.PoseData(
+                Y_FLIP_QUATERNION + [0.0, 0.0, 0.0], types.TransformDataType.quat_and_trans_7x1
+            ),
         )
     to_xy = pyproj.Transformer.from_crs("EPSG:4326", pyproj.CRS.from_user_input(proj_string), always_xy=True)
     offset = float(ann.get("time_offset_s", 0.0))
@@ -482,7 +486,12 @@ def clip_document_to_openlabel(doc: dict, proj_string: str) -> dict:
             EGO_FRAME,
             WORLD_FRAME,
             types.TransformData(q + [float(x), float(y), 0.0], types.TransformDataType.quat_and_trans_7x1),
-            gnss={"lat_deg": s["lat"], "lon_deg": s["lon"], "heading_deg": s["heading_deg"], "speed_mps": s["speed_mps"]},
+            gnss={
+                "lat_deg": s["lat"],
+                "lon_deg": s["lon"],
+                "heading_deg": s["heading_deg"],
+                "speed_mps": s["speed_mps"],
+            },
         )
         vcd.add_transform(k, transform)
     uids: dict[str, int] = {}
@@ -532,7 +541,9 @@ def convert_clip(src: str | Path, dst: str | Path, to: str | None = None) -> tup
         if "map" in clip_doc and "osm" in clip_doc["map"] and clip.osm_path is not None:
             import os
 
-            clip_doc = dict(clip_doc, map=dict(clip_doc["map"], osm=os.path.relpath(clip.osm_path, dst.resolve().parent)))
+            clip_doc = dict(
+                clip_doc, map=dict(clip_doc["map"], osm=os.path.relpath(clip.osm_path, dst.resolve().parent))
+            )
         proj = LocalProjection(float(clip.ego.lat[0]), float(clip.ego.lon[0])).proj_string
         # as JSON has it (string frame keys), checked against the schema before it is written
         out = json.loads(json.dumps(clip_document_to_openlabel(clip_doc, proj), allow_nan=False))

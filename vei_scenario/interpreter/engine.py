@@ -426,8 +426,17 @@ class Simulation:
         for n in names:
             e, r = ctx.entities[n], rec[n]
             traces[n] = EntityTrace(
-                n, e.category, e.length, e.width, t, *(np.array(v) for v in r[:5]), r[5], e.center_x,
-                e.kind, e.object_type, e.height,
+                n,
+                e.category,
+                e.length,
+                e.width,
+                t,
+                *(np.array(v) for v in r[:5]),
+                r[5],
+                e.center_x,
+                e.kind,
+                e.object_type,
+                e.height,
             )
         return RunResult(
             str(self.doc.path),

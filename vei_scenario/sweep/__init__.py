@@ -17,7 +17,6 @@ from vei_scenario.sweep.evaluate import evaluate_dask, evaluate_local, iter_rows
 from vei_scenario.sweep.report_html import plot_inputs, report_html
 from vei_scenario.variation import cartesian, parse_vary, read_distribution
 
-
 #: At most this many traces per sweep (each is a full interpreted run and ~0.4 MB).
 MAX_TRACES = 1000
 
@@ -32,9 +31,7 @@ def trace_selection(rows: list[dict], which: str) -> list[dict]:
     elif which == "collisions":
         chosen = [r for r in ok if r["metrics"].get("collision")]
     elif which == "failures":
-        chosen = [
-            r for r in ok if r["metrics"].get("collision") and str(r["parameters"].get("CapEnabled")) == "true"
-        ]
+        chosen = [r for r in ok if r["metrics"].get("collision") and str(r["parameters"].get("CapEnabled")) == "true"]
     else:
         try:
             wanted = {int(v) for v in which.split(",") if v.strip()}
