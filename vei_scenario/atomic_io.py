@@ -24,11 +24,39 @@ def _default_mode() -> int:
     return 0o666 & ~_UMASK[0]
 
 
+def _temporary(path: Path) -> tuple[int, str]:
+    """A temporary file beside ``path``, named ``.NAME.PID.XXXX.tmp``. Temporary files of the same
+    target left by a process that no longer runs (killed with SIGKILL mid-write, which no handler can
+    catch) are removed first, so a crash leaves nothing behind for long."""
+    prefix = f".{path.name}."
+    try:
+        leftovers = [p for p in path.parent.iterdir() if p.name.startswith(prefix) and p.name.endswith(".tmp")]
+    except OSError:
+        leftovers = []
+    for p in leftovers:
+        pid = p.name[len(prefix) :].split(".", 1)[0]
+        if pid.isdigit() and not _alive(int(pid)):
+            p.unlink(missing_ok=True)
+    return tempfile.mkstemp(prefix=f"{prefix}{os.getpid()}.", suffix=".tmp", dir=path.parent)
+
+
+def _alive(pid: int) -> bool:
+    if pid == os.getpid():
+        return True
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except OSError:  # exists, owned by somebody else
+        return True
+    return True
+
+
 def write_bytes_atomic(path: Path, data: bytes) -> None:
     """Write ``data`` to ``path`` through a temporary file and a rename."""
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    fd, tmp = _temporary(path)
     try:
         with os.fdopen(fd, "wb") as fh:
             fh.write(data)
@@ -57,7 +85,7 @@ class OutputSet:
         try:
             for path, data in self._files.items():
                 path.parent.mkdir(parents=True, exist_ok=True)
-                fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+                fd, tmp = _temporary(path)
                 with os.fdopen(fd, "wb") as fh:
                     fh.write(data)
                 os.chmod(tmp, _default_mode())
@@ -68,3 +96,28 @@ class OutputSet:
             raise
         for tmp, path in staged:
             os.replace(tmp, path)
+
+
+def finite_json(obj):
+    """``obj`` with every non-finite float (NaN, ±inf) replaced by None: JSON has no such numbers,
+    and a metric that is not defined is null in vei's outputs."""
+    import math
+
+    if isinstance(obj, float):
+        return obj if math.isfinite(obj) else None
+    if isinstance(obj, dict):
+        return {k: finite_json(v) for k, v in obj.items()}
+    if isinstance(obj, (list, tuple)):
+        return [finite_json(v) for v in obj]
+    return obj
+
+
+def json_text(obj, **kwargs) -> str:
+    """Strict JSON text of ``obj`` (``allow_nan=False``): fast when every number is finite, and
+    non-finite numbers written as null otherwise, never as the invalid ``NaN``/``Infinity``."""
+    import json
+
+    try:
+        return json.dumps(obj, allow_nan=False, **kwargs)
+    except ValueError:
+        return json.dumps(finite_json(obj), allow_nan=False, **kwargs)

@@ -84,6 +84,10 @@ class CaseResult:
     warnings: list[str] = field(default_factory=list)  # checks that could not be made (said, not hidden)
 
 
+#: Metrics whose value is a table or a list: an expectation names one of their fields.
+TABLE_METRICS = frozenset({"ttc_zones_s", "collision_entities"})
+
+
 def _value(text: str):
     t = text.strip().strip('"').strip("'")
     if t.lower() in ("true", "false"):
@@ -110,20 +114,40 @@ def load_suite(path: str | Path) -> tuple[list[Case], float]:
         doc = tomllib.loads(path.read_text("utf-8"))
     except tomllib.TOMLDecodeError as exc:
         raise VeiInputError(path, "", f"malformed TOML: {exc}") from None
+    except RecursionError:
+        raise VeiInputError(path, "", "nested too deeply to read") from None
     except UnicodeDecodeError:
         raise VeiInputError(path, "", "not UTF-8 text") from None
     unknown = set(doc) - {"defaults", "case"}
     if unknown:
         raise VeiInputError(path, sorted(unknown)[0], "unknown table (expected [defaults] and [[case]])")
-    dt = float(doc.get("defaults", {}).get("dt", 0.01))
+    defaults = doc.get("defaults", {})
+    if not isinstance(defaults, dict):
+        raise VeiInputError(path, "defaults", "must be a table ([defaults])")
+    dt = defaults.get("dt", 0.01)
+    if isinstance(dt, bool) or not isinstance(dt, (int, float)):
+        raise VeiInputError(path, "defaults.dt", f"{dt!r} is not a number of seconds")
+    from vei_scenario.checks import check_dt
+
+    dt = check_dt(dt, "defaults.dt")
+    unknown_defaults = set(defaults) - {"dt"}
+    if unknown_defaults:
+        raise VeiInputError(path, f"defaults.{sorted(unknown_defaults)[0]}", "unknown key (expected dt)")
     raw = doc.get("case")
     if not isinstance(raw, list) or not raw:
         raise VeiInputError(path, "case", "the suite has no [[case]] entries")
     cases = []
     for i, c in enumerate(raw):
         where = f"case[{i}]"
-        if not isinstance(c, dict) or not isinstance(c.get("name"), str) or not c["name"]:
+        if not isinstance(c, dict) or not isinstance(c.get("name"), str) or not c["name"].strip():
             raise VeiInputError(path, f"{where}.name", "every case needs a name")
+        if any(ord(ch) < 32 or ord(ch) == 127 for ch in c["name"]) or len(c["name"]) > 200:
+            raise VeiInputError(
+                path, f"{where}.name", "a name of at most 200 printable characters (no control characters)"
+            )
+        for key in ("scenario", "clip"):
+            if key in c and (not isinstance(c[key], str) or not c[key]):
+                raise VeiInputError(path, f"{where}.{key}", "must be a file path (text)")
         extra = set(c) - {"name", "scenario", "clip", "parameters", "expect", "validate"}
         if extra:
             raise VeiInputError(path, f"{where}.{sorted(extra)[0]}", "unknown key")
@@ -149,7 +173,19 @@ def load_suite(path: str | Path) -> tuple[list[Case], float]:
                 raise VeiInputError(
                     path, f"{where}.expect[{j}]", f"unknown metric {metric!r} (known: {', '.join(METRICS)})"
                 )
-            parsed.append(Expectation(metric, m.group(2), _value(m.group(3)), e))
+            value = _value(m.group(3))
+            if head in TABLE_METRICS and not tail:
+                fields = ", ".join(f"{head}.{z}" for z in _ZONES) if head == "ttc_zones_s" else "none"
+                raise VeiInputError(
+                    path, f"{where}.expect[{j}]", f"{metric!r} is a table, not a number; name a field ({fields})"
+                )
+            if m.group(2) not in ("==", "!=") and (isinstance(value, (bool, str)) or value is None):
+                raise VeiInputError(
+                    path, f"{where}.expect[{j}]", f"{e!r}: {m.group(2)} needs a number, not {m.group(3).strip()!r}"
+                )
+            if isinstance(value, float) and not math.isfinite(value):
+                raise VeiInputError(path, f"{where}.expect[{j}]", f"{e!r}: the value is not a finite number")
+            parsed.append(Expectation(metric, m.group(2), value, e))
         base = path.parent
         cases.append(
             Case(

@@ -8,7 +8,9 @@ exit with code 2; validation findings exit with 1.
 from __future__ import annotations
 
 import argparse
+import errno
 import json
+import math
 import os
 import sys
 from pathlib import Path
@@ -17,6 +19,44 @@ from vei_scenario import __version__
 from vei_scenario.errors import VeiInputError
 
 EXIT_USER_ERROR = 2
+
+
+class _Parser(argparse.ArgumentParser):
+    """argparse with one-line errors (``vei: error: ...``, exit 2), as every other user error."""
+
+    def error(self, message: str):  # noqa: D102 (argparse's hook)
+        where = self.prog.removeprefix("vei").strip()
+        sys.stderr.write(f"vei: error: {where + ': ' if where else ''}{message}\n")
+        sys.exit(EXIT_USER_ERROR)
+
+
+def _number(low: float | None = None, high: float | None = None, *, positive: bool = False, integer: bool = False):
+    """An argparse type: a finite number (an integer with ``integer``) within [low, high] (> 0 with
+    ``positive``), so that a NaN, an infinity or an absurd value never reaches the library."""
+
+    def parse(text: str):
+        try:
+            value = int(text) if integer else float(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"{text!r} is not {'an integer' if integer else 'a number'}") from None
+        if not math.isfinite(value):
+            raise argparse.ArgumentTypeError(f"{text!r} is not a finite number")
+        if positive and value <= 0:
+            raise argparse.ArgumentTypeError(f"{text} must be positive")
+        if (low is not None and value < low) or (high is not None and value > high):
+            lo = "" if low is None else f"{low:g}"
+            hi = "" if high is None else f"{high:g}"
+            raise argparse.ArgumentTypeError(f"{text} is outside {lo}..{hi}")
+        return value
+
+    parse.__name__ = "integer" if integer else "number"
+    return parse
+
+
+#: The fixed step of every simulating command (s): finer would take hours, coarser breaks the models.
+DT = _number(1e-4, 0.5)
+WORKERS = _number(1, 1024, integer=True)
+SEED = _number(0, 2**63 - 1, integer=True)
 
 
 def _osc_minor(text: str) -> int:
@@ -207,6 +247,8 @@ def _pair(text: str) -> tuple[float, float]:
         lo, hi = float(parts[0]), float(parts[1])
     except (IndexError, ValueError):
         raise argparse.ArgumentTypeError(f"expected LOW:HIGH, not {text!r}") from None
+    if not (math.isfinite(lo) and math.isfinite(hi)):
+        raise argparse.ArgumentTypeError(f"{text!r}: LOW and HIGH must be finite numbers")
     if len(parts) != 2 or hi < lo:
         raise argparse.ArgumentTypeError(f"expected LOW:HIGH with LOW <= HIGH, not {text!r}")
     return lo, hi
@@ -274,18 +316,20 @@ BACKEND_HELP = "native: C models compiled into the FMU (default); python: python
 
 
 def build_parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(
+    parser = _Parser(
         prog="vei", description="Annotated vehicle–e-scooter clips → ASAM OpenSCENARIO/OpenDRIVE test scenarios."
     )
     parser.add_argument("--version", action="version", version=f"vei-scenario {__version__}")
-    sub = parser.add_subparsers(dest="command", required=True)
+    sub = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
 
     c = sub.add_parser("compile", help="compile an annotated clip into OpenSCENARIO + OpenDRIVE")
     c.add_argument("clip", help="annotated clip: vei-clip/1 JSON or ASAM OpenLABEL 1.0 JSON")
     c.add_argument(
         "-o", "--output", required=True, help="scenario file to write (.xosc); .xodr and .variations.xosc go beside it"
     )
-    c.add_argument("--rate", type=float, default=10.0, help="output rate of the trajectories in Hz (default 10)")
+    c.add_argument(
+        "--rate", type=_number(0.5, 1000), default=10.0, help="output rate of the trajectories in Hz (default 10)"
+    )
     c.add_argument("--osc-version", type=_osc_minor, default=3, help="OpenSCENARIO version 1.0..1.3 (default 1.3)")
     c.add_argument("--osm", help="OpenStreetMap XML file (overrides the clip's map.osm)")
     c.add_argument(
@@ -302,7 +346,7 @@ def build_parser() -> argparse.ArgumentParser:
     ex.set_defaults(func=_cmd_examples)
 
     cl = sub.add_parser("clip", help="annotated clips: convert between vei-clip/1 and ASAM OpenLABEL 1.0")
-    clsub = cl.add_subparsers(dest="clip_command", required=True)
+    clsub = cl.add_subparsers(dest="clip_command", required=True, parser_class=_Parser)
     cv = clsub.add_parser(
         "convert", help="write a clip as ASAM OpenLABEL 1.0, or an OpenLABEL annotation as vei-clip/1"
     )
@@ -314,7 +358,7 @@ def build_parser() -> argparse.ArgumentParser:
     r = sub.add_parser("run", help="run a scenario with the built-in interpreter; write trajectories, metrics, plots")
     r.add_argument("scenario", help="OpenSCENARIO file (.xosc)")
     r.add_argument("--param", action="append", default=[], metavar="NAME=VALUE", help="override a parameter")
-    r.add_argument("--dt", type=float, default=0.01, help="fixed step in s (default 0.01)")
+    r.add_argument("--dt", type=DT, default=0.01, help="fixed step in s (default 0.01)")
     r.add_argument("-o", "--output", help="directory for trajectories.csv, metrics.json and plots")
     r.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
     r.add_argument(
@@ -335,8 +379,10 @@ def build_parser() -> argparse.ArgumentParser:
     st = sub.add_parser("study", help="the seed paper's five configurations at the collision timing shift")
     st.add_argument("input", help="clip (.json) or compiled scenario (.xosc)")
     st.add_argument("-o", "--output", required=True, help="directory for the study")
-    st.add_argument("--dt", type=float, default=0.01, help="fixed step in s (default 0.01)")
-    st.add_argument("--time-shift", type=float, help="TimeShift to use (default: the scenario's ConflictTimeShift)")
+    st.add_argument("--dt", type=DT, default=0.01, help="fixed step in s (default 0.01)")
+    st.add_argument(
+        "--time-shift", type=_number(-3600, 3600), help="TimeShift to use (default: the scenario's ConflictTimeShift)"
+    )
     st.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
     st.set_defaults(func=_cmd_study)
 
@@ -350,9 +396,9 @@ def build_parser() -> argparse.ArgumentParser:
         help="a varied parameter (repeatable; the catalog is their cartesian product)",
     )
     sw.add_argument("--dist", help="take variants from an OpenSCENARIO ParameterValueDistribution file")
-    sw.add_argument("--seed", type=int, help="seed of stochastic distributions (default: the file's randomSeed)")
+    sw.add_argument("--seed", type=SEED, help="seed of stochastic distributions (default: the file's randomSeed)")
     sw.add_argument("-o", "--output", required=True, help="directory for catalog.csv, catalog.json, report.html")
-    sw.add_argument("--dt", type=float, default=0.01, help="fixed step in s (default 0.01)")
+    sw.add_argument("--dt", type=DT, default=0.01, help="fixed step in s (default 0.01)")
     sw.add_argument(
         "--executor",
         choices=("local", "dask"),
@@ -360,7 +406,7 @@ def build_parser() -> argparse.ArgumentParser:
         help="local: the compiled kernel on all cores (else worker processes); dask: a Dask cluster",
     )
     sw.add_argument("--scheduler", help="Dask scheduler address (default: a LocalCluster on this machine)")
-    sw.add_argument("--workers", type=int, help="local worker processes (default: all cores)")
+    sw.add_argument("--workers", type=WORKERS, help="local worker processes (default: all cores)")
     sw.add_argument("--emit-xosc", action="store_true", help="also write one scenario file per variant")
     sw.add_argument("--quiet", action="store_true", help="no progress bar")
     sw.add_argument(
@@ -383,10 +429,10 @@ def build_parser() -> argparse.ArgumentParser:
     rk.add_argument("--vary", action="append", default=[], help="other parameters to search separately")
     rk.add_argument("--band", type=_pair, default=(0.5, 1.5), help="near-miss band of the minimum TTC, s (0.5:1.5)")
     rk.add_argument("--window", type=_pair, help="TimeShift window (default: ConflictTimeShift ± 6 s)")
-    rk.add_argument("--coarse", type=float, default=0.5, help="bracketing step, s (default 0.5)")
-    rk.add_argument("--tol", type=float, default=0.01, help="edge tolerance, s (default 0.01)")
-    rk.add_argument("--dt", type=float, default=0.01, help="fixed step in s (default 0.01)")
-    rk.add_argument("--workers", type=int, help="worker processes (default: all cores)")
+    rk.add_argument("--coarse", type=_number(1e-3, 60), default=0.5, help="bracketing step, s (default 0.5)")
+    rk.add_argument("--tol", type=_number(1e-4, 10), default=0.01, help="edge tolerance, s (default 0.01)")
+    rk.add_argument("--dt", type=DT, default=0.01, help="fixed step in s (default 0.01)")
+    rk.add_argument("--workers", type=WORKERS, help="worker processes (default: all cores)")
     rk.add_argument("-o", "--output", help="directory for risk.json and the critical scenarios")
     rk.set_defaults(func=_cmd_risk)
 
@@ -394,9 +440,11 @@ def build_parser() -> argparse.ArgumentParser:
     vw.add_argument("input", help="scenario (.xosc, run here) or a directory written by vei run -o")
     vw.add_argument("-o", "--output", help="write an animation (.gif, or .mp4 with ffmpeg) instead of a window")
     vw.add_argument("--param", action="append", default=[], metavar="NAME=VALUE", help="override a parameter")
-    vw.add_argument("--dt", type=float, default=0.01, help="fixed step in s of the run (default 0.01)")
-    vw.add_argument("--fps", type=float, default=10.0, help="frames per second of the animation (default 10)")
-    vw.add_argument("--speed", type=float, default=1.0, help="playback speed, × real time (default 1)")
+    vw.add_argument("--dt", type=DT, default=0.01, help="fixed step in s of the run (default 0.01)")
+    vw.add_argument(
+        "--fps", type=_number(0.1, 240), default=10.0, help="frames per second of the animation (default 10)"
+    )
+    vw.add_argument("--speed", type=_number(0.01, 1000), default=1.0, help="playback speed, × real time (default 1)")
     vw.add_argument("--scenario", help="with a run directory: the scenario, for the road and the boxes")
     vw.set_defaults(func=_cmd_view)
 
@@ -406,7 +454,7 @@ def build_parser() -> argparse.ArgumentParser:
     ck.set_defaults(func=_cmd_check)
 
     fm = sub.add_parser("fmu", help="the models as FMI co-simulation FMUs; the closed loop as SSP; co-simulation")
-    fsub = fm.add_subparsers(dest="fmu_command", required=True)
+    fsub = fm.add_subparsers(dest="fmu_command", required=True, parser_class=_Parser)
     fb = fsub.add_parser("build", help="build FMUs: sfm (e-scooter), cap (planner), ego (vehicle) or all")
     fb.add_argument("models", nargs="*", metavar="MODEL", help="sfm, cap, ego or all (default: all)")
     fb.add_argument("-o", "--output", default="fmus/dist", help="directory for the .fmu files (default fmus/dist)")
@@ -423,7 +471,7 @@ def build_parser() -> argparse.ArgumentParser:
     fs.add_argument("scenario", help="vei-compiled OpenSCENARIO file (.xosc)")
     fs.add_argument("-o", "--output", required=True, help="SSP file to write (.ssp)")
     fs.add_argument("--param", action="append", default=[], metavar="NAME=VALUE", help="override a parameter")
-    fs.add_argument("--dt", type=float, default=0.01, help="communication step in s (default 0.01)")
+    fs.add_argument("--dt", type=DT, default=0.01, help="communication step in s (default 0.01)")
     fs.add_argument("--backend", choices=("native", "python"), default="native", help=BACKEND_HELP)
     fs.add_argument("--fmi", type=int, choices=(2, 3), default=2, help="FMI version of the FMUs (default 2)")
     fs.set_defaults(func=_cmd_fmu_system)
@@ -437,10 +485,10 @@ def build_parser() -> argparse.ArgumentParser:
     )
     fc.add_argument("--coupling", choices=("sequential", "jacobi"), help="fmpy master only (default sequential)")
     fc.add_argument("--param", action="append", default=[], metavar="NAME=VALUE", help="override a parameter")
-    fc.add_argument("--dt", type=float, default=0.01, help="communication step in s (default 0.01)")
+    fc.add_argument("--dt", type=DT, default=0.01, help="communication step in s (default 0.01)")
     fc.add_argument("--backend", choices=("native", "python"), default="native", help=BACKEND_HELP)
     fc.add_argument("--fmi", type=int, choices=(2, 3), default=2, help="FMI version of the FMUs (default 2)")
-    fc.add_argument("--tolerance", type=float, default=1e-6, help="exit 1 above this deviation in m (1e-6)")
+    fc.add_argument("--tolerance", type=_number(0, 1e6), default=1e-6, help="exit 1 above this deviation in m (1e-6)")
     fc.add_argument("-o", "--output", help="write the co-simulated trajectories (CSV) here")
     fc.set_defaults(func=_cmd_fmu_cosim)
 
@@ -448,13 +496,15 @@ def build_parser() -> argparse.ArgumentParser:
     d.add_argument("text", nargs="?", help="the description (quote it); or --layers FILE")
     d.add_argument("-o", "--output", required=True, help="output directory")
     d.add_argument("--layers", help="a layers JSON file (vei-layers/1) instead of a description")
-    d.add_argument("--count", type=int, default=32, help="scenarios to generate (default 32)")
-    d.add_argument("--seed", type=int, default=0, help="seed of the sampling (default 0); scenario i uses seed*1000+i")
+    d.add_argument(
+        "--count", type=_number(1, 10_000, integer=True), default=32, help="scenarios to generate (default 32)"
+    )
+    d.add_argument("--seed", type=SEED, default=0, help="seed of the sampling (default 0); scenario i uses seed*1000+i")
     d.add_argument("--backend", choices=("rules", "llm"), default="rules", help="rules (offline, default) or llm")
     d.add_argument("--llm-url", help="OpenAI-compatible endpoint base URL (or VEI_LLM_URL)")
     d.add_argument("--llm-model", help="model name (or VEI_LLM_MODEL)")
     d.add_argument("--refine", action="store_true", help="adjust towards the description's intent, up to 5 runs each")
-    d.add_argument("--jobs", type=int, default=None, help="worker processes (default: the CPU count)")
+    d.add_argument("--jobs", type=WORKERS, default=None, help="worker processes (default: the CPU count)")
     d.add_argument("--layers-only", action="store_true", help="write the layers JSON of each scenario, run nothing")
     d.set_defaults(func=_cmd_describe)
 
@@ -469,6 +519,32 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+def _one_line(text: str) -> str:
+    """Messages from libraries (libxml2, compilers) may span lines: one line, control characters shown."""
+    return " ".join(text.split()) if any(c in text for c in "\n\r\t") else text.replace("\x00", "\\0")
+
+
+def _os_error(exc: OSError) -> str:
+    """``PATH: reason`` of a file-system error, in words a user can act on."""
+    reasons = {
+        errno.ENOSPC: "no space left on the device",
+        errno.EDQUOT: "disk quota exceeded",
+        errno.EACCES: "permission denied",
+        errno.EPERM: "operation not permitted",
+        errno.EROFS: "read-only file system",
+        errno.ENOTDIR: "a path component is a file, not a folder",
+        errno.EISDIR: "is a folder, not a file",
+        errno.EEXIST: "a file is in the way (a folder is needed there)",
+        errno.ENAMETOOLONG: "file name too long",
+        errno.ENOENT: "no such file or folder",
+    }
+    reason = reasons.get(exc.errno, exc.strerror or str(exc) or type(exc).__name__)
+    where = exc.filename if exc.filename is not None else ""
+    if exc.filename2 is not None:
+        where = f"{where} -> {exc.filename2}"
+    return _one_line(f"{where}: {reason}" if where != "" else reason)
+
+
 def main(argv: list[str] | None = None) -> int:
     # vei's numpy work is element-wise; idle OpenBLAS threads would only spin beside the sweep's own
     # worker threads (set before numpy is first imported, which the commands do lazily)
@@ -478,7 +554,13 @@ def main(argv: list[str] | None = None) -> int:
     try:
         return args.func(args)
     except VeiInputError as exc:
-        print(f"vei: error: {exc}", file=sys.stderr)
+        print(f"vei: error: {_one_line(str(exc))}", file=sys.stderr)
+        return EXIT_USER_ERROR
+    except OSError as exc:  # an output (or input) the file system refused: path and reason, one line
+        print(f"vei: error: {_os_error(exc)}", file=sys.stderr)
+        return EXIT_USER_ERROR
+    except RecursionError:
+        print("vei: error: the input is nested too deeply to read", file=sys.stderr)
         return EXIT_USER_ERROR
     except KeyboardInterrupt:
         print("vei: interrupted", file=sys.stderr)

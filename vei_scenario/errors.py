@@ -30,6 +30,11 @@ class VeiInputError(VeiError):
     def __post_init__(self) -> None:
         super().__init__(str(self))
 
+    def __reduce__(self):
+        """Pickled by its three fields, so an error raised in a worker process reaches the parent
+        intact (the default would call ``__init__`` with the message alone, and fail there)."""
+        return (type(self), (self.file, self.where, self.reason))
+
     def __str__(self) -> str:
         parts = [str(self.file)] if self.file else []
         if self.where:

@@ -8,11 +8,10 @@ each combination is searched separately.
 
 from __future__ import annotations
 
-import json
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from vei_scenario.atomic_io import OutputSet
+from vei_scenario.atomic_io import OutputSet, json_text
 from vei_scenario.errors import VeiInputError
 from vei_scenario.interpreter.document import load_scenario
 from vei_scenario.sweep.catalog import variant_xosc
@@ -112,7 +111,15 @@ def find_risk(
     dt: float = 0.01,
     workers: int | None = None,
 ) -> list[RiskSearch]:
+    from vei_scenario.checks import check_dt, finite
+
     scenario = Path(scenario)
+    check_dt(dt)
+    for name, v in (("--coarse", coarse), ("--tol", tol), *(("--band", b) for b in band)):
+        finite(v, name)
+    if window is not None:
+        for w in window:
+            finite(w, "--window", -3600, 3600)
     if target not in TARGETS:
         raise VeiInputError(None, "--target", f"{target!r} is not one of {', '.join(TARGETS)}")
     if not (0 < tol < coarse):
@@ -161,6 +168,6 @@ def find_risk(
                     files_rel[label] = rel
                 entry["intervals"].append({"time_shift_s": [round(a, 4), round(b, 4)], "scenarios": files_rel})
             doc_out["searches"].append(entry)
-        files.add(out / "risk.json", json.dumps(doc_out, indent=2) + "\n")
+        files.add(out / "risk.json", json_text(doc_out, indent=2) + "\n")
         files.commit()
     return results

@@ -7,11 +7,10 @@ written together (temporary files and renames), so a failed run leaves nothing h
 from __future__ import annotations
 
 import io
-import json
 from dataclasses import dataclass
 from pathlib import Path
 
-from vei_scenario.atomic_io import OutputSet
+from vei_scenario.atomic_io import OutputSet, json_text
 from vei_scenario.errors import VeiInputError
 from vei_scenario.interpreter import RunResult, run_scenario
 from vei_scenario.metrics import MetricConfig, PairSeries, compute_metrics
@@ -125,7 +124,7 @@ def run_files(result: RunResult, doc: dict, cfg: MetricConfig, plots: bool = Tru
     """The files of one run, by name: trajectories.csv, metrics.json and (with ``plots``) PNGs."""
     files: dict[str, bytes | str] = {
         "trajectories.csv": trajectories_csv(result),
-        "metrics.json": json.dumps(doc, indent=2) + "\n",
+        "metrics.json": json_text(doc, indent=2) + "\n",
     }
     if plots:
         from vei_scenario.reports import run_plots
@@ -149,8 +148,9 @@ def run_to(
 ) -> RunReport:
     """Run ``scenario`` and, with ``out_dir``, write its files there; with ``osi``, also an ASAM OSI
     ground-truth trace (``.mcap`` or ``.osi``) at that path. All or nothing."""
-    if not (1e-4 <= dt <= 0.5):
-        raise VeiInputError(None, "--dt", f"{dt} s is outside 0.0001..0.5 s")
+    from vei_scenario.checks import check_dt
+
+    check_dt(dt)
     if osi is not None:
         from vei_scenario.reports.osi_trace import FORMATS
 

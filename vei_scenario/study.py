@@ -9,11 +9,10 @@ from __future__ import annotations
 
 import csv
 import io
-import json
 from dataclasses import dataclass
 from pathlib import Path
 
-from vei_scenario.atomic_io import OutputSet
+from vei_scenario.atomic_io import OutputSet, json_text
 from vei_scenario.errors import VeiInputError
 from vei_scenario.interpreter import run_scenario
 from vei_scenario.interpreter.document import load_scenario
@@ -92,6 +91,11 @@ def table_text(rows: list[dict]) -> str:
 def run_study(
     input_path: str | Path, out_dir: str | Path, dt: float = 0.01, time_shift_s: float | None = None, plots: bool = True
 ) -> StudyReport:
+    from vei_scenario.checks import check_dt, finite
+
+    check_dt(dt)
+    if time_shift_s is not None:
+        finite(time_shift_s, "--time-shift", -3600, 3600)
     out = Path(out_dir)
     scenario = _scenario_for(Path(input_path), out)
     declared = load_scenario(scenario).parameters
@@ -121,7 +125,7 @@ def run_study(
     files.add(out / "study.csv", buf.getvalue())
     files.add(
         out / "study.json",
-        json.dumps(
+        json_text(
             {"scenario": str(scenario), "time_shift_s": time_shift_s, "dt_s": dt, "configurations": rows}, indent=2
         )
         + "\n",

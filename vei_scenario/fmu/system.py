@@ -64,6 +64,9 @@ class ClosedLoop:
 def closed_loop(scenario: str | Path, values: dict[str, str] | None = None, dt: float = 0.01) -> ClosedLoop:
     """The closed loop of ``scenario`` with parameter overrides ``values`` at step ``dt``."""
     from vei_scenario.batch import BatchScenario, NotBatchable
+    from vei_scenario.checks import check_dt
+
+    check_dt(dt)
 
     try:
         b = BatchScenario(scenario, dt)

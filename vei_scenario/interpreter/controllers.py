@@ -110,7 +110,10 @@ class SocialForceController(Controller):
 
     def __init__(self, name, props, el, ctx) -> None:
         super().__init__(name, props, el, ctx)
-        self.params = SfmParameters.from_properties(props)
+        try:
+            self.params = SfmParameters.from_properties(props)
+        except ValueError as exc:
+            raise ctx.error(el, f"SocialForceModel: {exc}") from None
         self.rider = props.get("riderType", "normal")
         if self.rider not in RIDER_TYPES:
             raise ctx.error(el, f"riderType {self.rider!r} is not one of {', '.join(RIDER_TYPES)}")
@@ -169,9 +172,15 @@ class CollisionAvoidanceController(Controller):
 
     def __init__(self, name, props, el, ctx) -> None:
         super().__init__(name, props, el, ctx)
-        self.params = CapParameters.from_properties(props)
+        try:
+            self.params = CapParameters.from_properties(props)
+        except ValueError as exc:
+            raise ctx.error(el, f"CollisionAvoidancePlanner: {exc}") from None
         self.enabled = props.get("enabled", "true") == "true"
-        self.cruise = float(props.get("cruiseSpeed", "nan"))
+        try:
+            self.cruise = float(props.get("cruiseSpeed", "nan"))
+        except ValueError:
+            self.cruise = math.nan
         if not math.isfinite(self.cruise) or self.cruise < 0:
             raise ctx.error(el, "CollisionAvoidancePlanner needs a non-negative property cruiseSpeed")
         self.threat = props.get("threatEntity")
@@ -179,7 +188,12 @@ class CollisionAvoidanceController(Controller):
         if self.threat is None and not self.watch:
             raise ctx.error(el, "CollisionAvoidancePlanner needs a threatEntity or watchEntities")
         # optional adaptive cruise: follow the nearest watched entity ahead in the path at this time gap
-        self.follow_gap_s = float(props.get("followTimeGap", "0") or 0)
+        try:
+            self.follow_gap_s = float(props.get("followTimeGap", "0") or 0)
+        except ValueError:
+            self.follow_gap_s = math.nan
+        if not (math.isfinite(self.follow_gap_s) and 0 <= self.follow_gap_s <= 60):
+            raise ctx.error(el, "CollisionAvoidancePlanner: followTimeGap must be a number of seconds in 0..60")
         self.state = CapState()
         self.held_command = 0.0  # Jacobi coupling: the command computed in the previous step
 

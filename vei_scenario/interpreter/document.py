@@ -9,6 +9,7 @@ wrong type is refused, as is any reference to an undeclared parameter, naming th
 from __future__ import annotations
 
 import functools
+import math
 import re
 from dataclasses import dataclass
 from pathlib import Path
@@ -17,6 +18,7 @@ from lxml import etree
 
 from vei_scenario.errors import VeiInputError
 from vei_scenario.interpreter.expressions import ExpressionError, evaluate
+from vei_scenario.openscenario.numeric_attributes import check_numbers
 from vei_scenario.safe_xml import parse_xml
 
 _REF = re.compile(r"^\$([A-Za-z_][A-Za-z0-9_]*)$")
@@ -36,16 +38,23 @@ def check_type(type_: str, value: str) -> str | None:
     """None when ``value`` is a valid literal of the OpenSCENARIO parameter type, else the reason."""
     try:
         if type_ == "double":
-            float(value)
+            if not math.isfinite(float(value)):
+                return "is not a finite number"
         elif type_ in ("int", "integer", "unsignedInt", "unsignedShort"):
             n = int(value)
             if type_.startswith("unsigned") and n < 0:
                 return "must not be negative"
+            if abs(n) > INT_LIMITS.get(type_, 2**31):
+                return f"is outside the range of an OpenSCENARIO {type_}"
         elif type_ == "boolean" and value not in ("true", "false"):
             return "must be true or false"
     except ValueError:
         return f"is not a valid {type_}"
     return None
+
+
+#: Largest magnitude of the OpenSCENARIO integer types (xsd:int, xsd:unsignedInt, xsd:unsignedShort).
+INT_LIMITS = {"int": 2**31, "integer": 2**31, "unsignedInt": 2**32 - 1, "unsignedShort": 2**16 - 1}
 
 
 def _format_number(value: float) -> str:
@@ -70,15 +79,23 @@ def resolve_value(path: Path, el, attr: str, value: str, scope: dict[str, str]) 
         return scope[name]
     if value.startswith("${") and value.endswith("}"):
         try:
-            return _format_number(evaluate(value[2:-1], scope))
+            result = evaluate(value[2:-1], scope)
         except ExpressionError as exc:
             raise VeiInputError(path, f"line {el.sourceline}", f'<{el.tag} {attr}="{value}">: {exc}') from None
+        if not math.isfinite(result):
+            raise VeiInputError(
+                path, f"line {el.sourceline}", f'<{el.tag} {attr}="{value}">: the result {result} is not finite'
+            )
+        return _format_number(result)
     return value
 
 
 def _declare(path: Path, decls, scope: dict[str, str], types: dict[str, str]) -> None:
     for d in decls.iterfind("ParameterDeclaration"):
-        name, type_ = d.get("name"), d.get("parameterType", "string")
+        # a leading "$" in the declared name is the reference syntax, not part of the name (esmini agrees)
+        name, type_ = (d.get("name") or "").removeprefix("$"), d.get("parameterType", "string")
+        if not name:
+            raise VeiInputError(path, f"line {d.sourceline}", "ParameterDeclaration without a name")
         value = resolve_value(path, d, "value", d.get("value", ""), scope)
         problem = check_type(type_, value)
         if problem:
@@ -242,6 +259,7 @@ def load_scenario(path: str | Path, overrides: dict[str, object] | None = None) 
             value = fixed[name] if name in fixed else resolve_value(path, d, "value", d.get("value", ""), scope)
             scope[name], types[name] = value, d.get("parameterType", "string")
     _substitute(path, root, scope, types, Catalogs(path, root))
+    check_numbers(path, root)  # every number the XSD types as one: finite, integral, in range
 
     road_file = None
     logic = root.find("RoadNetwork/LogicFile")

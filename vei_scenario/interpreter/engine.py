@@ -121,7 +121,11 @@ class Simulation:
         max_time_s: float = DEFAULT_MAX_TIME_S,
         coupling: str = "sequential",
     ) -> None:
+        from vei_scenario.checks import check_dt, finite
+
         root = doc.root
+        check_dt(dt)
+        finite(max_time_s, "max_time_s", 1e-3, 1e6)
         if coupling not in COUPLINGS:
             raise ValueError(f"coupling must be one of {', '.join(COUPLINGS)}")
         self.doc, self.dt, self.max_time, self.coupling = doc, dt, max_time_s, coupling

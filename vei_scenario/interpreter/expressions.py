@@ -41,6 +41,15 @@ class ExpressionError(ValueError):
     pass
 
 
+#: Bounds that keep a hostile expression from exhausting the stack or the time (an expression in an
+#: attribute is a formula, not a program): tokens in one expression, and nesting of parentheses,
+#: calls and unary operators.
+MAX_TOKENS = 2000
+MAX_DEPTH = 64
+#: Named constants (esmini accepts ``pi``; the standard's grammar has none, so vei follows esmini).
+CONSTANTS = {"pi": math.pi}
+
+
 def _tokens(text: str) -> list[tuple[str, str]]:
     out, pos = [], 0
     text = text.rstrip()
@@ -80,8 +89,19 @@ def compile_expression(expression: str) -> Compiled:
     """``expression`` parsed once into a function of the parameters: a sweep evaluates the same few
     expressions for every variant. Syntax errors raise here, value errors (an undeclared or non-numeric
     parameter, division by zero, a function outside its domain) when the function is called."""
+    if len(expression) > 20 * MAX_TOKENS:
+        raise ExpressionError(f"longer than {20 * MAX_TOKENS} characters")
     toks = _tokens(expression)
+    if len(toks) > MAX_TOKENS:
+        raise ExpressionError(f"{len(toks)} tokens; at most {MAX_TOKENS}")
     pos = 0
+    depth = 0
+
+    def deeper() -> None:
+        nonlocal depth
+        depth += 1
+        if depth > MAX_DEPTH:
+            raise ExpressionError(f"nested deeper than {MAX_DEPTH} levels")
 
     def peek() -> tuple[str, str] | None:
         return toks[pos] if pos < len(toks) else None
@@ -98,61 +118,80 @@ def compile_expression(expression: str) -> Compiled:
         pos += 1
         return tok
 
-    def disjunction() -> Compiled:
-        left = conjunction()
-        while peek() == ("name", "or"):
+    def boolean_chain(word: str, operand: Callable[[], Compiled], combine) -> Compiled:
+        """``a word b word c ...`` (or/and): every operand evaluated, in a loop."""
+        parts = [operand()]
+        while peek() == ("name", word):
             take()
-            a, b = left, conjunction()
-            left = lambda p, a=a, b=b: 1.0 if (a(p) != 0) | (b(p) != 0) else 0.0  # noqa: E731  (both evaluated)
-        return left
+            parts.append(operand())
+        if len(parts) == 1:
+            return parts[0]
+        return lambda p: 1.0 if combine([f(p) != 0 for f in parts]) else 0.0
+
+    def disjunction() -> Compiled:
+        return boolean_chain("or", conjunction, any)
 
     def conjunction() -> Compiled:
-        left = negation()
-        while peek() == ("name", "and"):
-            take()
-            a, b = left, negation()
-            left = lambda p, a=a, b=b: 1.0 if (a(p) != 0) & (b(p) != 0) else 0.0  # noqa: E731  (both evaluated)
-        return left
+        return boolean_chain("and", negation, all)
 
     def negation() -> Compiled:
         if peek() == ("name", "not"):
             take()
+            deeper()
             a = negation()
             return lambda p: 0.0 if a(p) != 0 else 1.0
         return additive()
 
     def additive() -> Compiled:
-        left = multiplicative()
+        # a chain is evaluated in a loop, left to right: no call depth that grows with its length
+        first = multiplicative()
+        rest: list[tuple[str, Compiled]] = []
         while peek() in (("op", "+"), ("op", "-")):
             op = take()[1]
-            a, b = left, multiplicative()
-            left = (lambda p, a=a, b=b: a(p) + b(p)) if op == "+" else (lambda p, a=a, b=b: a(p) - b(p))
-        return left
+            rest.append((op, multiplicative()))
+        if not rest:
+            return first
 
-    def divide(a: Compiled, b: Compiled, op: str) -> Compiled:
-        def f(p: dict[str, object]) -> float:
-            left, right = a(p), b(p)
-            if right == 0:
-                raise ExpressionError("division by zero")
-            return left / right if op == "/" else math.fmod(left, right)
+        def chain(p: dict[str, object]) -> float:
+            value = first(p)
+            for op, f in rest:
+                value = value + f(p) if op == "+" else value - f(p)
+            return value
 
-        return f
+        return chain
 
     def multiplicative() -> Compiled:
-        left = unary()
+        first = unary()
+        rest: list[tuple[str, Compiled]] = []
         while peek() in (("op", "*"), ("op", "/"), ("op", "%")):
             op = take()[1]
-            a, b = left, unary()
-            left = (lambda p, a=a, b=b: a(p) * b(p)) if op == "*" else divide(a, b, op)
-        return left
+            rest.append((op, unary()))
+        if not rest:
+            return first
+
+        def chain(p: dict[str, object]) -> float:
+            value = first(p)
+            for op, f in rest:
+                right = f(p)
+                if op == "*":
+                    value = value * right
+                elif right == 0:
+                    raise ExpressionError("division by zero")
+                else:
+                    value = value / right if op == "/" else math.fmod(value, right)
+            return value
+
+        return chain
 
     def unary() -> Compiled:
         if peek() == ("op", "-"):
             take()
+            deeper()
             a = unary()
             return lambda p: -a(p)
         if peek() == ("op", "+"):
             take()
+            deeper()
             return unary()
         return primary()
 
@@ -182,11 +221,18 @@ def compile_expression(expression: str) -> Compiled:
         if kind == "param":
             return parameter(text[1:])
         if kind == "op" and text == "(":
+            nonlocal depth
+            deeper()
             inner = disjunction()
             take(")")
+            depth -= 1
             return inner
+        if kind == "name" and text in CONSTANTS:
+            value = CONSTANTS[text]
+            return lambda p: value
         if kind == "name" and text in _FUNCTIONS:
             arity, fn = _FUNCTIONS[text]
+            deeper()
             take("(")
             args = [disjunction()]
             while peek() == ("op", ","):
@@ -195,6 +241,7 @@ def compile_expression(expression: str) -> Compiled:
             take(")")
             if len(args) != arity:
                 raise ExpressionError(f"{text}() takes {arity} argument(s), got {len(args)}")
+            depth -= 1
             return call(text, fn, args)
         raise ExpressionError(f"unexpected {text!r}")
 

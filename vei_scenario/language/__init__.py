@@ -55,16 +55,14 @@ def describe_command(args) -> int:
             return sample_layers(reading, text, args.seed * 1000 + i)
 
     if args.layers_only:
-        import json
-
-        from vei_scenario.atomic_io import OutputSet
+        from vei_scenario.atomic_io import OutputSet, json_text
         from vei_scenario.language.layers import validate_layers
 
         files = OutputSet()
         for i in range(count):
             layers = make(i)
             validate_layers(layers, f"scenario {i}")
-            files.add(out / f"scenario_{i:03d}" / "layers.json", json.dumps(layers, indent=2) + "\n")
+            files.add(out / f"scenario_{i:03d}" / "layers.json", json_text(layers, indent=2) + "\n")
         files.commit()
         print(f"wrote {count} layers file(s) under {out}")
         return 0

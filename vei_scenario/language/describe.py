@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import csv
 import io
-import json
 import multiprocessing
 import os
 import tempfile
@@ -20,7 +19,8 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
-from vei_scenario.atomic_io import OutputSet
+from vei_scenario.atomic_io import OutputSet, json_text
+from vei_scenario.errors import VeiInputError
 from vei_scenario.language.evaluation import evaluate, intent_met
 from vei_scenario.language.layers import behaviour_nodes, validate_layers
 from vei_scenario.language.refinement import MAX_EPISODES, adjust
@@ -73,13 +73,24 @@ def run_one(layers: dict, index: int, refine: bool) -> ScenarioRecord:
                 break
             layers = adjust(layers, direction, episode)
     files = {f"{SCENARIO_STEM}.xosc": written.xosc, f"{SCENARIO_STEM}.xodr": written.xodr}
-    files["layers.json"] = (json.dumps(layers, indent=2, sort_keys=False) + "\n").encode()
+    files["layers.json"] = (json_text(layers, indent=2, sort_keys=False) + "\n").encode()
     return ScenarioRecord(index, layers, files, outcome, episodes)
 
 
 def _work(args) -> ScenarioRecord:
     layers, index, refine = args
     return run_one(layers, index, refine)
+
+
+def _guarded_work(args) -> tuple[str, object]:
+    """``_work`` in a worker process: its outcome or its error as plain values, so that whatever
+    goes wrong reaches the parent as one message and never stalls the pool."""
+    try:
+        return "ok", _work(args)
+    except VeiInputError as exc:
+        return "input", (str(exc.file) if exc.file else None, exc.where, exc.reason)
+    except Exception as exc:  # noqa: BLE001 - reported in the parent, with the scenario's index
+        return "bug", f"{type(exc).__name__}: {exc}"
 
 
 def batch_summary(records: list[ScenarioRecord]) -> dict:
@@ -186,7 +197,12 @@ def describe_batch(
     records: list[ScenarioRecord] = []
     if jobs > 1 and len(tasks) > 1:
         with multiprocessing.get_context("fork").Pool(jobs) as pool:
-            for rec in pool.imap(_work, tasks):
+            for (kind, value), task in zip(pool.imap(_guarded_work, tasks), tasks):
+                if kind == "input":
+                    raise VeiInputError(*value)
+                if kind == "bug":
+                    raise VeiInputError(None, f"scenario {task[1]}", f"could not be generated ({value})")
+                rec = value
                 records.append(rec)
                 if progress:
                     progress(len(records), len(tasks))
@@ -204,11 +220,9 @@ def describe_batch(
             for name, data in r.files.items():
                 files.add(out_dir / f"scenario_{r.index:03d}" / name, data)
             if refine:
-                files.add(
-                    out_dir / f"scenario_{r.index:03d}" / "episodes.json", json.dumps(r.episodes, indent=2) + "\n"
-                )
+                files.add(out_dir / f"scenario_{r.index:03d}" / "episodes.json", json_text(r.episodes, indent=2) + "\n")
         files.add(out_dir / "batch.csv", batch_csv(records))
-        files.add(out_dir / "batch.json", json.dumps(doc, indent=2) + "\n")
+        files.add(out_dir / "batch.json", json_text(doc, indent=2) + "\n")
         files.add(out_dir / "summary.html", summary_html(doc))
         files.commit()
     return records, doc

@@ -15,10 +15,28 @@ import sys
 import threading
 
 
-def _serve(conn) -> None:
+def end_with_parent(parent_pid: int) -> None:
+    """Ask the kernel to end this process when its parent does (Linux ``PR_SET_PDEATHSIG``), so a
+    killed ``vei sweep`` (SIGKILL included, which no handler sees) leaves no worker drawing behind;
+    and end at once if the parent is already gone."""
+    try:
+        import ctypes
+        import signal
+
+        libc = ctypes.CDLL(None, use_errno=True)
+        libc.prctl(1, signal.SIGKILL)  # PR_SET_PDEATHSIG = 1
+    except (OSError, AttributeError):
+        pass
+    if os.getppid() != parent_pid:
+        os._exit(0)
+
+
+def _serve(conn, parent_pid: int | None = None) -> None:
     """In the worker: import matplotlib, then draw what the parent sends (None: nothing). The plots
     after the first are drawn by forks of the worker (matplotlib imported already): the three share
     both cores with the parent's catalog writing."""
+    if parent_pid is not None:
+        end_with_parent(parent_pid)
     try:
         _warm_up()
         inputs = conn.recv()
@@ -61,8 +79,10 @@ def _render_each(inputs: tuple) -> list[tuple[str, int]]:
     helpers = []
     for i in range(1, len(SERIES)):
         read_end, write_end = os.pipe()
+        worker = os.getpid()
         pid = os.fork()
         if pid == 0:  # a helper: plot i, pickled into the pipe
+            end_with_parent(worker)
             try:
                 os.close(read_end)
                 with os.fdopen(write_end, "wb") as out:
@@ -99,7 +119,7 @@ class PlotWorker:
 
         ctx = multiprocessing.get_context("fork")
         self._conn, child = ctx.Pipe()
-        self._proc = ctx.Process(target=_serve, args=(child,), daemon=True)
+        self._proc = ctx.Process(target=_serve, args=(child, os.getpid()), daemon=True)
         self._proc.start()
         child.close()
 

@@ -119,8 +119,15 @@ def run_sweep(
     earlier (the command line forks it before importing this package); ended here either way.
     ``osi_traces``: which variants also get an ASAM OSI ground-truth trace (see :func:`trace_selection`),
     each run again in the interpreter and written to ``traces/variant_NNNNN.<osi_format>``."""
+    from vei_scenario.checks import check_dt
+
     scenario = Path(scenario)
     out = Path(out_dir)
+    check_dt(dt)
+    if workers is not None and not (isinstance(workers, int) and 1 <= workers <= 1024):
+        raise VeiInputError(None, "--workers", f"{workers!r} is not a number of workers in 1..1024")
+    if seed is not None and not (isinstance(seed, int) and seed >= 0):
+        raise VeiInputError(None, "--seed", f"{seed!r} is not a non-negative integer")
     if osi_format not in ("mcap", "osi"):
         raise VeiInputError(None, "--osi-format", f"{osi_format!r} is not mcap or osi")
     if plotter is None:

@@ -15,6 +15,7 @@ import numpy as np
 
 from vei_scenario.errors import VeiInputError
 from vei_scenario.interpreter.document import check_type
+from vei_scenario.openscenario.numeric_attributes import check_numbers
 from vei_scenario.safe_xml import float_attribute, parse_xml
 
 #: Cap on the variants one sweep may ask for (a typo in a step should not ask for billions).
@@ -149,6 +150,7 @@ def read_distribution(path: str | Path, declared: dict[str, str], seed: int | No
     pvd = root.find("ParameterValueDistribution")
     if root.tag != "OpenSCENARIO" or pvd is None:
         raise VeiInputError(path, f"line {root.sourceline}", "not an OpenSCENARIO ParameterValueDistribution file")
+    check_numbers(path, root)
     variants: list[dict[str, str]]
     det, sto = pvd.find("Deterministic"), pvd.find("Stochastic")
     if det is not None:
