@@ -25,7 +25,7 @@ static void log_error(Instance *m, const char *message) {
 #define INST ((Instance *)c)
 #define CHECK_ALIVE(fn)                                                        \
     do {                                                                       \
-        if (c == NULL) return fmi2Error;                                       \
+        if (!vei_is_live(c)) return fmi2Error; /* NULL, freed or not ours */   \
         if (INST->failed) {                                                    \
             log_error(INST, fn ": the instance is in error state (reset it)"); \
             return fmi2Error;                                                  \
@@ -37,7 +37,7 @@ const char *fmi2GetVersion(void) { return fmi2Version; }
 
 fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean loggingOn, size_t n, const fmi2String categories[]) {
     (void)n, (void)categories;
-    if (c == NULL) return fmi2Error;
+    if (!vei_is_live(c)) return fmi2Error;
     ((Fmi2Data *)INST->wrapper)->logging_on = loggingOn;
     return fmi2OK;
 }
@@ -67,11 +67,12 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
     m->wrapper = w;
     m->log_error = log_error;
     vei_set_start_values(m);
+    vei_register(m);
     return m;
 }
 
 void fmi2FreeInstance(fmi2Component c) {
-    if (c == NULL) return;
+    if (!vei_unregister((Instance *)c)) return; /* NULL, or freed already: nothing to do */
     free(INST->wrapper);
     free(c);
 }
@@ -80,27 +81,41 @@ fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean toleranceDefined, fm
                                fmi2Real startTime, fmi2Boolean stopTimeDefined, fmi2Real stopTime) {
     (void)toleranceDefined, (void)tolerance, (void)stopTimeDefined, (void)stopTime;
     CHECK_ALIVE("fmi2SetupExperiment");
+    if (vei_require(INST, "fmi2SetupExperiment", VEI_IN(VEI_STATE_INSTANTIATED))) return fmi2Error;
+    if (!isfinite(startTime)) {
+        vei_fail(INST, "fmi2SetupExperiment: startTime %g is not finite", startTime);
+        return fmi2Error;
+    }
     INST->time = startTime;
     return fmi2OK;
 }
 
 fmi2Status fmi2EnterInitializationMode(fmi2Component c) {
     CHECK_ALIVE("fmi2EnterInitializationMode");
+    if (vei_require(INST, "fmi2EnterInitializationMode", VEI_IN(VEI_STATE_INSTANTIATED))) return fmi2Error;
+    INST->state = VEI_STATE_INITIALIZATION;
     return fmi2OK;
 }
 
 fmi2Status fmi2ExitInitializationMode(fmi2Component c) {
     CHECK_ALIVE("fmi2ExitInitializationMode");
+    if (vei_require(INST, "fmi2ExitInitializationMode", VEI_IN(VEI_STATE_INITIALIZATION))) return fmi2Error;
     if (model_initialize(INST) != 0) return fmi2Error;
     INST->initialized = 1;
+    INST->state = VEI_STATE_STEPPING;
     return fmi2OK;
 }
 
-fmi2Status fmi2Terminate(fmi2Component c) { return c ? fmi2OK : fmi2Error; }
+fmi2Status fmi2Terminate(fmi2Component c) {
+    CHECK_ALIVE("fmi2Terminate");
+    if (vei_require(INST, "fmi2Terminate", VEI_IN(VEI_STATE_STEPPING))) return fmi2Error;
+    INST->state = VEI_STATE_TERMINATED;
+    return fmi2OK;
+}
 
 fmi2Status fmi2Reset(fmi2Component c) {
-    if (c == NULL) return fmi2Error;
-    vei_set_start_values(INST);
+    if (!vei_is_live(c)) return fmi2Error;
+    vei_set_start_values(INST); /* back to instantiated, error state cleared */
     return fmi2OK;
 }
 
@@ -113,6 +128,7 @@ fmi2Status fmi2Reset(fmi2Component c) {
 
 fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Real value[]) {
     CHECK_ALIVE("fmi2GetReal");
+    if (nvr > 0 && (vr == NULL || value == NULL)) return fmi2Error;
     for (size_t k = 0; k < nvr; k++) {
         RANGE_CHECK("fmi2GetReal", vr[k], N_REAL);
         value[k] = INST->r[vr[k]];
@@ -122,6 +138,7 @@ fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
 
 fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Integer value[]) {
     CHECK_ALIVE("fmi2GetInteger");
+    if (nvr > 0 && (vr == NULL || value == NULL)) return fmi2Error;
     for (size_t k = 0; k < nvr; k++) {
         RANGE_CHECK("fmi2GetInteger", vr[k], N_INTEGER);
         value[k] = INST->i[vr[k]];
@@ -131,6 +148,7 @@ fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t
 
 fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Boolean value[]) {
     CHECK_ALIVE("fmi2GetBoolean");
+    if (nvr > 0 && (vr == NULL || value == NULL)) return fmi2Error;
     for (size_t k = 0; k < nvr; k++) {
         RANGE_CHECK("fmi2GetBoolean", vr[k], N_BOOLEAN);
         value[k] = INST->b[vr[k]] ? fmi2True : fmi2False;
@@ -140,6 +158,7 @@ fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t
 
 fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2String value[]) {
     CHECK_ALIVE("fmi2GetString");
+    if (nvr > 0 && (vr == NULL || value == NULL)) return fmi2Error;
     for (size_t k = 0; k < nvr; k++) {
         RANGE_CHECK("fmi2GetString", vr[k], N_STRING);
         value[k] = INST->s[vr[k]];
@@ -156,6 +175,8 @@ fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t 
 
 fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Real value[]) {
     CHECK_ALIVE("fmi2SetReal");
+    if (vei_require(INST, "fmi2SetReal", VEI_ANY & ~VEI_IN(VEI_STATE_TERMINATED))) return fmi2Error;
+    if (nvr > 0 && (vr == NULL || value == NULL)) return fmi2Error;
     for (size_t k = 0; k < nvr; k++) {
         RANGE_CHECK("fmi2SetReal", vr[k], N_REAL);
         SETTABLE_CHECK("fmi2SetReal", REAL_CAUSALITY, vr[k]);
@@ -170,6 +191,8 @@ fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
 
 fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Integer value[]) {
     CHECK_ALIVE("fmi2SetInteger");
+    if (vei_require(INST, "fmi2SetInteger", VEI_ANY & ~VEI_IN(VEI_STATE_TERMINATED))) return fmi2Error;
+    if (nvr > 0 && (vr == NULL || value == NULL)) return fmi2Error;
     for (size_t k = 0; k < nvr; k++) {
         RANGE_CHECK("fmi2SetInteger", vr[k], N_INTEGER);
         SETTABLE_CHECK("fmi2SetInteger", INTEGER_CAUSALITY, vr[k]);
@@ -180,6 +203,8 @@ fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t
 
 fmi2Status fmi2SetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Boolean value[]) {
     CHECK_ALIVE("fmi2SetBoolean");
+    if (vei_require(INST, "fmi2SetBoolean", VEI_ANY & ~VEI_IN(VEI_STATE_TERMINATED))) return fmi2Error;
+    if (nvr > 0 && (vr == NULL || value == NULL)) return fmi2Error;
     for (size_t k = 0; k < nvr; k++) {
         RANGE_CHECK("fmi2SetBoolean", vr[k], N_BOOLEAN);
         SETTABLE_CHECK("fmi2SetBoolean", BOOLEAN_CAUSALITY, vr[k]);
@@ -190,6 +215,8 @@ fmi2Status fmi2SetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t
 
 fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2String value[]) {
     CHECK_ALIVE("fmi2SetString");
+    if (vei_require(INST, "fmi2SetString", VEI_ANY & ~VEI_IN(VEI_STATE_TERMINATED))) return fmi2Error;
+    if (nvr > 0 && (vr == NULL || value == NULL)) return fmi2Error;
     for (size_t k = 0; k < nvr; k++) {
         RANGE_CHECK("fmi2SetString", vr[k], N_STRING);
         SETTABLE_CHECK("fmi2SetString", STRING_CAUSALITY, vr[k]);
@@ -208,10 +235,7 @@ fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint, fmi2R
                       fmi2Boolean noSetFMUStatePriorToCurrentPoint) {
     (void)noSetFMUStatePriorToCurrentPoint;
     CHECK_ALIVE("fmi2DoStep");
-    if (!INST->initialized) {
-        vei_fail(INST, "fmi2DoStep: called before fmi2ExitInitializationMode");
-        return fmi2Error;
-    }
+    if (vei_require(INST, "fmi2DoStep", VEI_IN(VEI_STATE_STEPPING))) return fmi2Error;
     if (!(communicationStepSize > 0) || !isfinite(currentCommunicationPoint)) {
         vei_fail(INST, "fmi2DoStep: the step size must be positive (got %g)", communicationStepSize);
         return fmi2Error;
@@ -228,7 +252,7 @@ fmi2Status fmi2GetStatus(fmi2Component c, const fmi2StatusKind s, fmi2Status *va
     return fmi2Discard;
 }
 fmi2Status fmi2GetRealStatus(fmi2Component c, const fmi2StatusKind s, fmi2Real *value) {
-    if (c == NULL || s != fmi2LastSuccessfulTime) return fmi2Discard;
+    if (!vei_is_live(c) || s != fmi2LastSuccessfulTime || value == NULL) return fmi2Discard;
     *value = INST->time;
     return fmi2OK;
 }

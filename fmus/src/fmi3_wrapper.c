@@ -40,7 +40,7 @@ static fmi3Status unsupported(fmi3Instance instance, const char *fn) {
 #define INST ((Instance *)instance)
 #define CHECK_ALIVE(fn)                                                        \
     do {                                                                       \
-        if (instance == NULL) return fmi3Error;                                \
+        if (!vei_is_live(instance)) return fmi3Error; /* NULL, freed, not ours */ \
         if (INST->failed) {                                                    \
             log_error(INST, fn ": the instance is in error state (reset it)"); \
             return fmi3Error;                                                  \
@@ -51,7 +51,7 @@ const char *fmi3GetVersion(void) { return fmi3Version; }
 
 fmi3Status fmi3SetDebugLogging(fmi3Instance instance, fmi3Boolean loggingOn, size_t n, const fmi3String c[]) {
     (void)loggingOn, (void)n, (void)c;
-    return instance ? fmi3OK : fmi3Error;
+    return vei_is_live(instance) ? fmi3OK : fmi3Error;
 }
 
 fmi3Instance fmi3InstantiateCoSimulation(fmi3String instanceName, fmi3String instantiationToken,
@@ -84,11 +84,12 @@ fmi3Instance fmi3InstantiateCoSimulation(fmi3String instanceName, fmi3String ins
     m->wrapper = w;
     m->log_error = log_error;
     vei_set_start_values(m);
+    vei_register(m);
     return m;
 }
 
 void fmi3FreeInstance(fmi3Instance instance) {
-    if (instance == NULL) return;
+    if (!vei_unregister((Instance *)instance)) return; /* NULL, or freed already: nothing to do */
     free(INST->wrapper);
     free(instance);
 }
@@ -97,23 +98,41 @@ fmi3Status fmi3EnterInitializationMode(fmi3Instance instance, fmi3Boolean tolera
                                        fmi3Float64 startTime, fmi3Boolean stopTimeDefined, fmi3Float64 stopTime) {
     (void)toleranceDefined, (void)tolerance, (void)stopTimeDefined, (void)stopTime;
     CHECK_ALIVE("fmi3EnterInitializationMode");
+    if (vei_require(INST, "fmi3EnterInitializationMode", VEI_IN(VEI_STATE_INSTANTIATED))) return fmi3Error;
+    if (!isfinite(startTime)) {
+        vei_fail(INST, "fmi3EnterInitializationMode: startTime %g is not finite", startTime);
+        return fmi3Error;
+    }
     INST->time = startTime;
+    INST->state = VEI_STATE_INITIALIZATION;
     return fmi3OK;
 }
 
 fmi3Status fmi3ExitInitializationMode(fmi3Instance instance) {
     CHECK_ALIVE("fmi3ExitInitializationMode");
+    if (vei_require(INST, "fmi3ExitInitializationMode", VEI_IN(VEI_STATE_INITIALIZATION))) return fmi3Error;
     if (model_initialize(INST) != 0) return fmi3Error;
     INST->initialized = 1;
+    INST->state = VEI_STATE_STEPPING; /* (no event mode: straight to step mode) */
     return fmi3OK;
 }
 
-fmi3Status fmi3EnterStepMode(fmi3Instance instance) { return instance ? fmi3OK : fmi3Error; }
-fmi3Status fmi3Terminate(fmi3Instance instance) { return instance ? fmi3OK : fmi3Error; }
+fmi3Status fmi3EnterStepMode(fmi3Instance instance) {
+    CHECK_ALIVE("fmi3EnterStepMode");
+    if (vei_require(INST, "fmi3EnterStepMode", VEI_IN(VEI_STATE_STEPPING))) return fmi3Error;
+    return fmi3OK;
+}
+
+fmi3Status fmi3Terminate(fmi3Instance instance) {
+    CHECK_ALIVE("fmi3Terminate");
+    if (vei_require(INST, "fmi3Terminate", VEI_IN(VEI_STATE_STEPPING))) return fmi3Error;
+    INST->state = VEI_STATE_TERMINATED;
+    return fmi3OK;
+}
 
 fmi3Status fmi3Reset(fmi3Instance instance) {
-    if (instance == NULL) return fmi3Error;
-    vei_set_start_values(INST);
+    if (!vei_is_live(instance)) return fmi3Error;
+    vei_set_start_values(INST); /* back to instantiated, error state cleared */
     return fmi3OK;
 }
 
@@ -149,6 +168,7 @@ fmi3Status fmi3GetFloat64(fmi3Instance instance, const fmi3ValueReference vr[], 
 fmi3Status fmi3SetFloat64(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr,
                           const fmi3Float64 values[], size_t nValues) {
     CHECK_ALIVE("fmi3SetFloat64");
+    if (vei_require(INST, "fmi3SetFloat64", VEI_ANY & ~VEI_IN(VEI_STATE_TERMINATED))) return fmi3Error;
     if (nValues < nvr) return unsupported(instance, "fmi3SetFloat64 with arrays");
     for (size_t k = 0; k < nvr; k++) {
         LOCAL("fmi3SetFloat64", vr[k], 0, N_REAL);
@@ -176,6 +196,7 @@ fmi3Status fmi3GetInt32(fmi3Instance instance, const fmi3ValueReference vr[], si
 fmi3Status fmi3SetInt32(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr, const fmi3Int32 values[],
                         size_t nValues) {
     CHECK_ALIVE("fmi3SetInt32");
+    if (vei_require(INST, "fmi3SetInt32", VEI_ANY & ~VEI_IN(VEI_STATE_TERMINATED))) return fmi3Error;
     if (nValues < nvr) return unsupported(instance, "fmi3SetInt32 with arrays");
     for (size_t k = 0; k < nvr; k++) {
         LOCAL("fmi3SetInt32", vr[k], OFF_INTEGER, N_INTEGER);
@@ -199,6 +220,7 @@ fmi3Status fmi3GetBoolean(fmi3Instance instance, const fmi3ValueReference vr[], 
 fmi3Status fmi3SetBoolean(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr,
                           const fmi3Boolean values[], size_t nValues) {
     CHECK_ALIVE("fmi3SetBoolean");
+    if (vei_require(INST, "fmi3SetBoolean", VEI_ANY & ~VEI_IN(VEI_STATE_TERMINATED))) return fmi3Error;
     if (nValues < nvr) return unsupported(instance, "fmi3SetBoolean with arrays");
     for (size_t k = 0; k < nvr; k++) {
         LOCAL("fmi3SetBoolean", vr[k], OFF_BOOLEAN, N_BOOLEAN);
@@ -222,6 +244,7 @@ fmi3Status fmi3GetString(fmi3Instance instance, const fmi3ValueReference vr[], s
 fmi3Status fmi3SetString(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr, const fmi3String values[],
                          size_t nValues) {
     CHECK_ALIVE("fmi3SetString");
+    if (vei_require(INST, "fmi3SetString", VEI_ANY & ~VEI_IN(VEI_STATE_TERMINATED))) return fmi3Error;
     if (nValues < nvr) return unsupported(instance, "fmi3SetString with arrays");
     for (size_t k = 0; k < nvr; k++) {
         LOCAL("fmi3SetString", vr[k], OFF_STRING, N_STRING);
@@ -242,6 +265,7 @@ fmi3Status fmi3DoStep(fmi3Instance instance, fmi3Float64 currentCommunicationPoi
                       fmi3Float64 *lastSuccessfulTime) {
     (void)noSetFMUStatePriorToCurrentPoint;
     CHECK_ALIVE("fmi3DoStep");
+    if (vei_require(INST, "fmi3DoStep", VEI_IN(VEI_STATE_STEPPING))) return fmi3Error;
     if (eventHandlingNeeded) *eventHandlingNeeded = fmi3False;
     if (terminateSimulation) *terminateSimulation = fmi3False;
     if (earlyReturn) *earlyReturn = fmi3False;

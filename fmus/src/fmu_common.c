@@ -1,4 +1,5 @@
 /* fmu_common.c: start values and error reporting shared by both FMI wrappers. */
+#include <pthread.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
@@ -14,6 +15,61 @@ void vei_set_start_values(Instance *m) {
     m->time = 0.0;
     m->initialized = 0;
     m->failed = 0;
+    m->state = VEI_STATE_INSTANTIATED;
+}
+
+static pthread_mutex_t live_lock = PTHREAD_MUTEX_INITIALIZER;
+static Instance *live_head = NULL;
+
+void vei_register(Instance *m) {
+    pthread_mutex_lock(&live_lock);
+    m->next_live = live_head;
+    live_head = m;
+    pthread_mutex_unlock(&live_lock);
+}
+
+int vei_unregister(Instance *m) {
+    int found = 0;
+    pthread_mutex_lock(&live_lock);
+    for (Instance **p = &live_head; *p != NULL; p = &(*p)->next_live) {
+        if (*p == m) {
+            *p = m->next_live;
+            found = 1;
+            break;
+        }
+    }
+    pthread_mutex_unlock(&live_lock);
+    return found;
+}
+
+int vei_is_live(const void *ptr) {
+    int found = 0;
+    if (ptr == NULL) return 0;
+    pthread_mutex_lock(&live_lock);
+    for (Instance *p = live_head; p != NULL; p = p->next_live) {
+        if ((const void *)p == ptr) {
+            found = 1;
+            break;
+        }
+    }
+    pthread_mutex_unlock(&live_lock);
+    return found;
+}
+
+static const char *state_name(int state) {
+    switch (state) {
+        case VEI_STATE_INSTANTIATED: return "instantiated";
+        case VEI_STATE_INITIALIZATION: return "initialization mode";
+        case VEI_STATE_STEPPING: return "step mode";
+        case VEI_STATE_TERMINATED: return "terminated";
+        default: return "unknown";
+    }
+}
+
+int vei_require(Instance *m, const char *fn, unsigned allowed) {
+    if (allowed & VEI_IN(m->state)) return 0;
+    vei_fail(m, "%s: not allowed in state %s (the FMI state machine)", fn, state_name(m->state));
+    return 1;
 }
 
 int vei_fail(Instance *m, const char *fmt, ...) {

@@ -22,6 +22,8 @@ struct Instance {
     double time;
     int initialized; /* after exitInitializationMode */
     int failed;      /* an error occurred: every further call but free/reset is refused */
+    int state;       /* where the instance is in the FMI state machine (VEI_STATE_*) */
+    Instance *next_live; /* the registry of live instances (fmu_common.c) */
     /* set by the wrapper: report an error to the importer's logger */
     void (*log_error)(Instance *m, const char *message);
     void *wrapper; /* the wrapper's own data (callbacks, instance name) */
@@ -31,7 +33,19 @@ struct Instance {
 int model_initialize(Instance *m);
 int model_do_step(Instance *m, double t, double h);
 
+/* The FMI co-simulation state machine, as far as these FMUs go (FMI 2.0 section 4.2.4, FMI 3.0 5.2) */
+enum { VEI_STATE_INSTANTIATED, VEI_STATE_INITIALIZATION, VEI_STATE_STEPPING, VEI_STATE_TERMINATED };
+#define VEI_IN(state) (1u << (state))
+#define VEI_ANY (VEI_IN(VEI_STATE_INSTANTIATED) | VEI_IN(VEI_STATE_INITIALIZATION) | VEI_IN(VEI_STATE_STEPPING) | VEI_IN(VEI_STATE_TERMINATED))
+
 /* Implemented in fmu_common.c */
+/* Live instances: an instance is registered when made and unregistered when freed, so a call on a
+ * freed (or never made) instance is refused without touching its memory and a second free is harmless. */
+void vei_register(Instance *m);
+int vei_unregister(Instance *m); /* 1 when it was live */
+int vei_is_live(const void *p);
+/* 0 when the instance's state is one of ``allowed`` (VEI_IN bits); else logs why (vei_fail) and returns 1 */
+int vei_require(Instance *m, const char *fn, unsigned allowed);
 void vei_set_start_values(Instance *m);
 int vei_fail(Instance *m, const char *fmt, ...);
 /* 'p' parameter, 'i' input, 'o' output: may the importer set this variable now? */

@@ -136,6 +136,7 @@ def build_native(spec: ModelSpec, out_dir: Path, fmi: int = 2) -> Path:
             "-Wall",
             "-fvisibility=hidden",
             "-ffp-contract=off",  # no fused multiply-add: the same rounding as Python's arithmetic
+            "-pthread",  # the registry of live instances is shared by threads
             "-o",
             binary.name,
             *sources,

@@ -104,6 +104,23 @@ def _declare(path: Path, decls, scope: dict[str, str], types: dict[str, str]) ->
         types[name] = type_
 
 
+#: Attribute vei sets on an element copied from a catalog: the file it came from (for error messages).
+SOURCE_FILE = "{urn:vei-scenario}source"
+#: Catalog entries referencing catalog entries: deeper than this is refused (a cycle is named earlier).
+MAX_CATALOG_DEPTH = 32
+
+
+def source_of(el, default):
+    """The file an element was read from: the catalog file for an element copied from a catalog."""
+    node = el
+    while node is not None:
+        src = node.get(SOURCE_FILE) if isinstance(node.tag, str) else None
+        if src:
+            return Path(src)
+        node = node.getparent()
+    return default
+
+
 class Catalogs:
     """Catalog entries by (catalog name, entry name), read lazily from the scenario's
     ``CatalogLocations`` directories (every ``.xosc`` file in them).
@@ -122,6 +139,12 @@ class Catalogs:
         self._entries: dict[tuple[str, str], object] | None = None
         self._by_location: dict[tuple[str, str], object] = {}
         self._by_name: dict[str, list] = {}
+        self._files: dict[int, Path] = {}  # id(entry element) -> the catalog file it is in
+        #: the entries being resolved, outermost first: a reference back to one of them is a cycle
+        self.active: list[tuple[Path, str]] = []
+
+    def file_of(self, entry) -> Path:
+        return self._files.get(id(entry), self.path)
 
     def _load(self) -> None:
         self._entries = {}
@@ -134,6 +157,7 @@ class Catalogs:
                             self._entries.setdefault((cat.get("name"), name), item)
                             self._by_location.setdefault((location, name), item)
                             self._by_name.setdefault(name, []).append(item)
+                            self._files[id(item)] = f
 
     def entry(self, ref):
         if self._entries is None:
@@ -160,7 +184,16 @@ def _resolve_catalog_reference(path: Path, ref, scope: dict[str, str], catalogs:
     for attr in ("catalogName", "entryName"):
         if "$" in (ref.get(attr) or ""):
             ref.set(attr, resolve_value(path, ref, attr, ref.get(attr), scope))
-    entry = copy.deepcopy(catalogs.entry(ref))
+    source = catalogs.entry(ref)
+    file = catalogs.file_of(source)
+    key = (file, source.get("name"))
+    if key in catalogs.active:
+        chain = " -> ".join(f"{f.name}:{n}" for f, n in catalogs.active[catalogs.active.index(key) :] + [key])
+        raise VeiInputError(path, f"line {ref.sourceline}", f"catalog references form a cycle: {chain}")
+    if len(catalogs.active) >= MAX_CATALOG_DEPTH:
+        raise VeiInputError(path, f"line {ref.sourceline}", f"catalog references nest deeper than {MAX_CATALOG_DEPTH}")
+    entry = copy.deepcopy(source)
+    entry.set(SOURCE_FILE, str(file))  # errors inside the entry name the catalog file, not the scenario
     assigned = {}
     for a in ref.iterfind("ParameterAssignments/ParameterAssignment"):
         assigned[a.get("parameterRef", "").lstrip("$")] = resolve_value(path, a, "value", a.get("value", ""), scope)
@@ -170,7 +203,7 @@ def _resolve_catalog_reference(path: Path, ref, scope: dict[str, str], catalogs:
         for d in decls.iterfind("ParameterDeclaration"):
             name = d.get("name")
             local[name] = (
-                assigned[name] if name in assigned else resolve_value(path, d, "value", d.get("value", ""), local)
+                assigned[name] if name in assigned else resolve_value(file, d, "value", d.get("value", ""), local)
             )
         entry.remove(decls)
     unknown = set(assigned) - set(local)
@@ -178,7 +211,12 @@ def _resolve_catalog_reference(path: Path, ref, scope: dict[str, str], catalogs:
         raise VeiInputError(
             path, f"line {ref.sourceline}", f"catalog entry has no parameter(s) {', '.join(sorted(unknown))}"
         )
-    _substitute(path, entry, {**scope, **local}, {}, catalogs)
+    catalogs.active.append(key)
+    try:
+        _substitute(file, entry, {**scope, **local}, {}, catalogs)
+        check_numbers(file, entry)
+    finally:
+        catalogs.active.pop()
     ref.getparent().replace(ref, entry)
 
 

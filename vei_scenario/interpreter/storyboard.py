@@ -60,7 +60,10 @@ class Context:
         return self.entities.get(name)
 
     def error(self, el, reason: str) -> VeiInputError:
-        return VeiInputError(self.path, f"line {el.sourceline}", reason)
+        """A refusal naming ``el``'s file and line (the catalog file for what came from a catalog)."""
+        from vei_scenario.interpreter.document import source_of
+
+        return VeiInputError(source_of(el, self.path), f"line {el.sourceline}", reason)
 
 
 def compare(rule: str, a: float, b: float) -> bool:

@@ -91,7 +91,12 @@ def _deterministic_single(path: Path, el) -> list[str]:
         lo, hi = _range(path, kind)
         if step <= 0:
             raise VeiInputError(path, f"line {kind.sourceline}", "stepWidth must be positive")
-        n = int(math.floor((hi - lo) / step + 1e-9)) + 1
+        count = (hi - lo) / step
+        if count >= MAX_VARIANTS:  # (before a list of 10^15 values is built)
+            raise VeiInputError(
+                path, f"line {kind.sourceline}", f"the range gives {count:.3g} values; at most {MAX_VARIANTS}"
+            )
+        n = int(math.floor(count + 1e-9)) + 1
         return [_fmt(lo + i * step) for i in range(n)]
     tag = kind.tag if kind is not None else "nothing"
     raise VeiInputError(path, f"line {el.sourceline}", f"<{tag}> distributions are not supported")
@@ -109,13 +114,28 @@ def _sample(path: Path, el, rng: np.random.Generator, n: int) -> list[str]:
         return [elems[i].get("value") for i in idx]
     if tag == "Histogram":
         bins = list(kind.iterfind("Bin"))
+        if not bins:
+            raise VeiInputError(path, f"line {kind.sourceline}", "a Histogram needs Bin elements")
         w = np.array([float_attribute(path, b, "weight") for b in bins])
+        if np.any(w < 0) or w.sum() <= 0:
+            raise VeiInputError(path, f"line {kind.sourceline}", "bin weights must be non-negative and not all zero")
         ranges = [_range(path, b) for b in bins]
+        for b, r in zip(bins, ranges):
+            if r is None:
+                raise VeiInputError(path, f"line {b.sourceline}", "a Bin needs a Range")
         idx = rng.choice(len(bins), size=n, p=w / w.sum())
         return [_fmt(rng.uniform(*ranges[i])) for i in idx]
     rng_range = _range(path, kind) if kind is not None else None
     if tag == "UniformDistribution":
+        if rng_range is None:
+            raise VeiInputError(path, f"line {kind.sourceline}", "a UniformDistribution needs a Range")
         return [_fmt(v) for v in rng.uniform(*rng_range, size=n)]
+    if tag == "LogNormalDistribution" and float_attribute(path, kind, "expectedValue") <= 0:
+        raise VeiInputError(path, f"line {kind.sourceline}", "a log-normal expectedValue must be positive")
+    if tag in ("NormalDistribution", "LogNormalDistribution") and float_attribute(path, kind, "variance") < 0:
+        raise VeiInputError(path, f"line {kind.sourceline}", "variance must not be negative")
+    if tag == "PoissonDistribution" and not (0 <= float_attribute(path, kind, "expectedValue") <= 1e9):
+        raise VeiInputError(path, f"line {kind.sourceline}", "a Poisson expectedValue must be in 0..1e9")
 
     def draw() -> float:
         if tag == "NormalDistribution":
@@ -161,14 +181,24 @@ def read_distribution(path: str | Path, declared: dict[str, str], seed: int | No
         for multi in det.iterfind("DeterministicMultiParameterDistribution/ValueSetDistribution"):
             for vs in multi.iterfind("ParameterValueSet"):
                 sets.append({a.get("parameterRef"): a.get("value") for a in vs.iterfind("ParameterAssignment")})
+        total = math.prod(len(a[1]) for a in axes) * max(1, len(sets))
+        if total > MAX_VARIANTS:
+            raise VeiInputError(path, f"line {det.sourceline}", f"{total} variants exceed the limit of {MAX_VARIANTS}")
         base = [dict(zip([a[0] for a in axes], combo)) for combo in itertools.product(*(a[1] for a in axes))]
         variants = [{**b, **s} for b in base for s in (sets or [{}])]
         named = [(a[0], a[2]) for a in axes] + [(k, multi) for s in sets for k in s]
     elif sto is not None:
-        n = int(float_attribute(path, sto, "numberOfTestRuns"))
+        runs = float_attribute(path, sto, "numberOfTestRuns")
+        if not (1 <= runs <= MAX_VARIANTS) or not runs.is_integer():
+            raise VeiInputError(
+                path, f"line {sto.sourceline}", f"numberOfTestRuns must be a whole number in 1..{MAX_VARIANTS}"
+            )
+        n = int(runs)
         seed_value = (
             seed if seed is not None else int(float_attribute(path, sto, "randomSeed")) if sto.get("randomSeed") else 0
         )
+        if seed_value < 0 or seed_value >= 2**63:
+            raise VeiInputError(path, f"line {sto.sourceline}", "the random seed must be a non-negative integer")
         rng = np.random.default_rng(seed_value)
         columns = {}
         named = []
