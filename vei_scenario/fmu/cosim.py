@@ -8,6 +8,7 @@ t = 0, dt, 2 dt, … — what :func:`compare_with_run` holds against ``vei run``
 from __future__ import annotations
 
 import ctypes
+import math
 import shutil
 import tempfile
 from pathlib import Path
@@ -52,20 +53,30 @@ class FmuInstance:
             self.fmu.setupExperiment(startTime=0.0)
             self.fmu.enterInitializationMode()
         types = {v.name: v.type for v in md.modelVariables}
-        by_type: dict[str, tuple[list[int], list]] = {}
+        by_type: dict[str, tuple[list[int], list, list[str]]] = {}
         for name, value in params.items():
-            vrs, vals = by_type.setdefault(types[name], ([], []))
+            if types[name] in ("Real", "Float64") and not math.isfinite(float(value)):
+                raise VeiInputError(None, f"{comp}.{name}", f"{value!r} is not a finite number")
+            vrs, vals, names = by_type.setdefault(types[name], ([], [], []))
             vrs.append(self.vr[name])
             vals.append(value)
-        for t, (vrs, vals) in by_type.items():
-            if t in ("Real", "Float64"):
-                self._set_real(vrs, vals)
-            elif t in ("Integer", "Int32"):
-                (self.fmu.setInt32 if self.fmi3 else self.fmu.setInteger)(vrs, [int(v) for v in vals])
-            elif t == "Boolean":
-                self.fmu.setBoolean(vrs, [bool(v) for v in vals])
-            else:
-                self.fmu.setString(vrs, [str(v) for v in vals])
+            names.append(name)
+        from fmpy.fmi1 import FMICallException
+
+        for t, (vrs, vals, names) in by_type.items():
+            try:
+                if t in ("Real", "Float64"):
+                    self._set_real(vrs, vals)
+                elif t in ("Integer", "Int32"):
+                    (self.fmu.setInt32 if self.fmi3 else self.fmu.setInteger)(vrs, [int(v) for v in vals])
+                elif t == "Boolean":
+                    self.fmu.setBoolean(vrs, [bool(v) for v in vals])
+                else:
+                    self.fmu.setString(vrs, [str(v) for v in vals])
+            except FMICallException as exc:  # name what was being set, not only the status
+                shown = ", ".join(f"{n}={v!r}" for n, v in list(zip(names, vals))[:6])
+                more = f" and {len(names) - 6} more" if len(names) > 6 else ""
+                raise VeiInputError(None, comp, f"the FMU refused the parameters {shown}{more}: {exc}") from None
         self.fmu.exitInitializationMode()
         self.inputs = [v.name for v in self.spec.variables if v.causality == "input"]
         self.outputs = [v.name for v in self.spec.variables if v.causality == "output" and v.type == "Real"]

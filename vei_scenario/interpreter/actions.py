@@ -78,10 +78,14 @@ def lane_keep(e, ds: float, ctx) -> None:
         road_h = road.ref_pose(st.s)[2] + (0.0 if forward else math.pi)
         ds *= abs(math.cos(e.yaw - road_h))
     s = st.s + (ds if forward else -ds) / stretch
+    hops = 0
     while s > road.length or s < 0.0:
         at_end = s > road.length
         over = s - road.length if at_end else -s
         nxt = net.next_road(road, st.lane, at_end, e.route.next_road(road.id) if e.route else None)
+        hops += 1
+        if hops > 2 * len(net.roads) + 2:  # round a loop of roads too short to take the step: a dead end
+            nxt = None
         if nxt is None:  # the end of the road: it stops there, and stands once it cannot move (esmini)
             edge = road.length if at_end else 0.0
             if road.id == st.road and abs(st.s - edge) < 1e-9:

@@ -19,12 +19,29 @@ def layers_schema() -> dict:
     return json.loads(resources.files("vei_scenario").joinpath("data/layers.schema.json").read_text("utf-8"))
 
 
+def _non_finite(node, where: str):
+    """(path, value) of every non-finite number in a JSON document, depth-first, iteratively."""
+    import math
+
+    stack = [(node, where)]
+    while stack:
+        n, w = stack.pop()
+        if isinstance(n, float) and not math.isfinite(n):
+            yield (w or "(document)"), n
+        elif isinstance(n, dict):
+            stack.extend((v, f"{w}/{k}" if w else str(k)) for k, v in n.items())
+        elif isinstance(n, list):
+            stack.extend((v, f"{w}/{i}" if w else str(i)) for i, v in enumerate(n))
+
+
 def schema_problems(doc) -> list[str]:
     """Every schema violation and unknown behaviour or parameter, as ``field: reason`` lines."""
     import jsonschema
 
     validator = jsonschema.Draft202012Validator(layers_schema())
-    problems = []
+    problems = [f"{where}: {v!r} is not a finite number" for where, v in _non_finite(doc, "")]
+    if problems:  # (an LLM's answer or a file may hold 1e400, which reads as infinity)
+        return problems
     for err in sorted(validator.iter_errors(doc), key=lambda e: list(e.absolute_path)):
         where = "/".join(str(p) for p in err.absolute_path) or "(document)"
         problems.append(f"{where}: {err.message[:300]}")

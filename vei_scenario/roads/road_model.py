@@ -25,10 +25,42 @@ from vei_scenario.safe_xml import parse_xml
 
 _GL_X, _GL_W = np.polynomial.legendre.leggauss(24)
 
+_KEYS: dict[int, tuple[list, list]] = {}
+
+
+def _keys(items: list, key) -> list:
+    """The sorted search keys of a list that never changes once loaded (geometries, sections, width
+    records), built once per list: a lookup stays O(log n), so a road of 100 000 geometries costs
+    what one does per step (building the keys at each call made runs quadratic)."""
+    hit = _KEYS.get(id(items))
+    if hit is not None and hit[0] is items:
+        return hit[1]
+    keys = [key(x) for x in items]
+    if len(_KEYS) > 100_000:  # (bounded: networks loaded again and again in a sweep come and go)
+        _KEYS.clear()
+    _KEYS[id(items)] = (items, keys)
+    return keys
+
 
 def _f(el, name: str, default: float = 0.0) -> float:
     v = el.get(name)
-    return float(v) if v not in (None, "") else default
+    return _number(v, f"<{el.tag} {name}>", el) if v not in (None, "") else default
+
+
+#: Coordinates and lengths beyond this (m) are no road on earth: refused before they overflow.
+MAX_COORDINATE_M = 1e8
+
+
+def _number(text: str, what: str, el=None) -> float:
+    """A finite number from an OpenDRIVE attribute; ValueError naming it (and its line) otherwise."""
+    line = f" (line {el.sourceline})" if el is not None else ""
+    try:
+        v = float(text)
+    except (TypeError, ValueError):
+        raise ValueError(f"{what}={text!r}{line} is not a number") from None
+    if not math.isfinite(v):
+        raise ValueError(f"{what}={text!r}{line} is not a finite number")
+    return v
 
 
 @dataclass
@@ -107,7 +139,7 @@ class Lane:
     def width(self, ds: float) -> float:
         if not self.widths:
             return 0.0
-        k = max(0, bisect.bisect_right([w[0] for w in self.widths], ds) - 1)
+        k = max(0, bisect.bisect_right(_keys(self.widths, lambda w: w[0]), ds) - 1)
         s0, a, b, c, d = self.widths[k]
         u = ds - s0
         return a + b * u + c * u * u + d * u**3
@@ -140,7 +172,7 @@ class Road:
 
     def ref_pose(self, s: float) -> tuple[float, float, float]:
         s = min(max(s, 0.0), self.length)
-        k = max(0, bisect.bisect_right([g.s for g in self.geometries], s) - 1)
+        k = max(0, bisect.bisect_right(_keys(self.geometries, lambda g: g.s), s) - 1)
         g = self.geometries[k]
         return g.pose(min(s - g.s, g.length))
 
@@ -154,11 +186,11 @@ class Road:
         return _cubic_at(self.superelevation, s)
 
     def section(self, s: float) -> LaneSection:
-        k = max(0, bisect.bisect_right([sec.s for sec in self.sections], s + 1e-9) - 1)
+        k = max(0, bisect.bisect_right(_keys(self.sections, lambda sec: sec.s), s + 1e-9) - 1)
         return self.sections[k]
 
     def section_index(self, s: float) -> int:
-        return max(0, bisect.bisect_right([sec.s for sec in self.sections], s + 1e-9) - 1)
+        return max(0, bisect.bisect_right(_keys(self.sections, lambda sec: sec.s), s + 1e-9) - 1)
 
     def lane_borders(self, s: float, lane_id: int) -> tuple[float, float]:
         """t of the inner and outer border of lane ``lane_id`` at ``s``."""
@@ -282,7 +314,11 @@ class RoadNetwork:
                 road = _road(r)
             except (TypeError, ValueError, KeyError) as exc:
                 raise VeiInputError(path, f"line {r.sourceline}", f"road {r.get('id')!r}: {exc}") from None
+            if road.length < 0 or road.length > MAX_COORDINATE_M:
+                raise VeiInputError(path, f"line {r.sourceline}", f"road {road.id!r}: length {road.length:g} m is out of range")
             roads[road.id] = road
+        if roads and sum(r.length for r in roads.values()) <= 0:
+            raise VeiInputError(path, "", "every road has zero length: nothing can be driven")
         junctions: dict[str, list[Connection]] = {}
         for j in root.iterfind("junction"):
             conns = []
@@ -388,6 +424,33 @@ def _refine(road: Road, x: float, y: float, s0: float, step: float) -> float:
     return 0.5 * (lo + hi)
 
 
+def _check_geometry(g: Geometry, el) -> None:
+    """Refuse a geometry no vehicle can drive: a negative or absurd length or position, or a shape
+    whose end lies farther from its start than its length (a curve of arc length L reaches at most L
+    away; huge polynomial coefficients break this, and their arc-length table with it)."""
+    where = f"<geometry> (line {el.sourceline})"
+    if g.length < 0 or g.length > MAX_COORDINATE_M or g.s < 0 or abs(g.x) > MAX_COORDINATE_M or abs(g.y) > MAX_COORDINATE_M:
+        raise ValueError(f"{where}: s, x, y or length out of range (length {g.length:g} m)")
+    if g.length == 0 or g.kind == "line":  # (a line of finite numbers is drivable)
+        return
+    with np.errstate(all="ignore"):
+        try:
+            points = [g.pose(k * g.length / 32) for k in range(33)]
+        except (OverflowError, ValueError, ZeroDivisionError):
+            points = [(math.inf, math.inf, math.inf)]
+    for x, y, h in points:
+        if not (math.isfinite(x) and math.isfinite(y) and math.isfinite(h)):
+            raise ValueError(f"{where}: the {g.kind} gives non-finite coordinates")
+    # walked in 32 steps, a drivable curve of length L covers about L: much less means the shape's
+    # coefficients and its length disagree (a huge coefficient), much more is impossible
+    walked = sum(math.hypot(b[0] - a[0], b[1] - a[1]) for a, b in zip(points, points[1:]))
+    if not (0.5 * g.length - 0.01 <= walked <= 1.01 * g.length + 0.01):
+        raise ValueError(
+            f"{where}: the {g.kind} covers {walked:.3g} m over its length {g.length:g} m "
+            "(its coefficients and its length disagree, or it turns tighter than any road)"
+        )
+
+
 def _poly(el) -> tuple[float, float, float, float, float]:
     return tuple(_f(el, k) for k in ("sOffset" if el.get("sOffset") is not None else "s", "a", "b", "c", "d"))
 
@@ -407,10 +470,12 @@ def _road(r) -> Road:
         kind = kind_el.tag
         if kind not in ("line", "arc", "spiral", "poly3", "paramPoly3"):
             raise ValueError(f"geometry <{kind}> is not supported")
-        params: dict = {k: float(v) for k, v in kind_el.attrib.items() if k != "pRange"}
+        params: dict = {k: _number(v, f"<{kind} {k}>", kind_el) for k, v in kind_el.attrib.items() if k != "pRange"}
         if kind == "paramPoly3":
             params["pRange"] = kind_el.get("pRange", "normalized")
-        geoms.append(Geometry(_f(g, "s"), _f(g, "x"), _f(g, "y"), _f(g, "hdg"), _f(g, "length"), kind, params))
+        geom = Geometry(_f(g, "s"), _f(g, "x"), _f(g, "y"), _f(g, "hdg"), _f(g, "length"), kind, params)
+        _check_geometry(geom, g)
+        geoms.append(geom)
     geoms.sort(key=lambda g: g.s)
     if not geoms:
         raise ValueError("no planView geometry")
@@ -454,7 +519,7 @@ def _cubic_at(polys: list[tuple[float, float, float, float, float]], s: float) -
     """Value at ``s`` of OpenDRIVE's piecewise cubic records (s0, a, b, c, d); 0 before the first."""
     if not polys:
         return 0.0
-    k = bisect.bisect_right([p[0] for p in polys], s) - 1
+    k = bisect.bisect_right(_keys(polys, lambda p: p[0]), s) - 1
     if k < 0:
         return 0.0
     s0, a, b, c, d = polys[k]

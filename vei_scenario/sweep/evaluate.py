@@ -146,6 +146,10 @@ def _evaluate_native(native, scenario, variants, dt, workers, progress) -> list[
     return rows
 
 
+#: How long vei waits for a Dask scheduler to answer (s).
+SCHEDULER_TIMEOUT_S = 10
+
+
 def evaluate_dask(
     scenario: str,
     variants: list[dict[str, str]],
@@ -162,9 +166,16 @@ def evaluate_dask(
         raise VeiInputError(
             None, "--executor dask", "needs dask.distributed: pip install 'vei-scenario[dask]'"
         ) from None
+    from vei_scenario.errors import VeiInputError
+
     cluster = None
     if scheduler:
-        client = Client(scheduler)
+        try:  # a bounded wait, and one line when nobody answers there
+            client = Client(scheduler, timeout=SCHEDULER_TIMEOUT_S)
+        except (OSError, TimeoutError, ValueError) as exc:
+            raise VeiInputError(
+                None, "--scheduler", f"cannot reach a Dask scheduler at {scheduler!r} within {SCHEDULER_TIMEOUT_S} s ({exc})"
+            ) from None
     else:
         cluster = LocalCluster(
             n_workers=os.cpu_count() or 1,
