@@ -58,7 +58,12 @@ def write_bytes_atomic(path: Path, data: bytes) -> None:
     path.parent.mkdir(parents=True, exist_ok=True)
     fd, tmp = _temporary(path)
     try:
-        with os.fdopen(fd, "wb") as fh:
+        try:
+            fh = os.fdopen(fd, "wb")
+        except BaseException:
+            os.close(fd)
+            raise
+        with fh:
             fh.write(data)
         os.chmod(tmp, _default_mode())
         os.replace(tmp, path)
@@ -81,21 +86,34 @@ class OutputSet:
         return list(self._files)
 
     def commit(self) -> None:
+        for path in self._files:  # a folder where a file goes: refused before anything is written
+            if path.is_dir():
+                raise IsADirectoryError(21, "Is a directory", str(path))
         staged: list[tuple[str, Path]] = []
         try:
             for path, data in self._files.items():
                 path.parent.mkdir(parents=True, exist_ok=True)
                 fd, tmp = _temporary(path)
-                with os.fdopen(fd, "wb") as fh:
+                staged.append((tmp, path))  # (before writing: a failed write is cleaned up too)
+                try:
+                    fh = os.fdopen(fd, "wb")
+                except BaseException:
+                    os.close(fd)
+                    raise
+                with fh:
                     fh.write(data)
                 os.chmod(tmp, _default_mode())
-                staged.append((tmp, path))
         except BaseException:
             for tmp, _ in staged:
                 Path(tmp).unlink(missing_ok=True)
             raise
-        for tmp, path in staged:
-            os.replace(tmp, path)
+        for k, (tmp, path) in enumerate(staged):
+            try:
+                os.replace(tmp, path)
+            except BaseException:
+                for rest, _ in staged[k:]:
+                    Path(rest).unlink(missing_ok=True)
+                raise
 
 
 def finite_json(obj):

@@ -35,18 +35,19 @@ def _number(low: float | None = None, high: float | None = None, *, positive: bo
     ``positive``), so that a NaN, an infinity or an absurd value never reaches the library."""
 
     def parse(text: str):
+        shown = text if len(text) <= 40 else text[:37] + "..."
         try:
             value = int(text) if integer else float(text)
         except ValueError:
-            raise argparse.ArgumentTypeError(f"{text!r} is not {'an integer' if integer else 'a number'}") from None
-        if not math.isfinite(value):
-            raise argparse.ArgumentTypeError(f"{text!r} is not a finite number")
+            raise argparse.ArgumentTypeError(f"{shown!r} is not {'an integer' if integer else 'a number'}") from None
+        if not integer and not math.isfinite(value):
+            raise argparse.ArgumentTypeError(f"{shown!r} is not a finite number")
         if positive and value <= 0:
-            raise argparse.ArgumentTypeError(f"{text} must be positive")
+            raise argparse.ArgumentTypeError(f"{shown} must be positive")
         if (low is not None and value < low) or (high is not None and value > high):
             lo = "" if low is None else f"{low:g}"
             hi = "" if high is None else f"{high:g}"
-            raise argparse.ArgumentTypeError(f"{text} is outside {lo}..{hi}")
+            raise argparse.ArgumentTypeError(f"{shown} is outside {lo}..{hi}")
         return value
 
     parse.__name__ = "integer" if integer else "number"
@@ -550,7 +551,10 @@ def main(argv: list[str] | None = None) -> int:
     # worker threads (set before numpy is first imported, which the commands do lazily)
     os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
     parser = build_parser()
-    args = parser.parse_args(argv)
+    try:
+        args = parser.parse_args(argv)
+    except SystemExit as exc:  # --help, --version (0) or a refused argument (2, said in one line)
+        return int(exc.code or 0) if not isinstance(exc.code, str) else EXIT_USER_ERROR
     try:
         return args.func(args)
     except VeiInputError as exc:

@@ -74,6 +74,11 @@ def closed_loop(scenario: str | Path, values: dict[str, str] | None = None, dt: 
         raise VeiInputError(scenario, "", f"not a vei-compiled closed loop: {exc}") from None
     if len(b.names) != 2:
         raise VeiInputError(scenario, "", f"the FMU loop holds the ego and one scooter; the scenario has {b.names}")
+    if values and not b.accepts(values):  # the interpreter's loader says exactly what is wrong with them
+        from vei_scenario.interpreter.document import load_scenario
+
+        load_scenario(scenario, values)
+        raise VeiInputError(scenario, "--param", f"the values {values} do not make a playable closed loop")
     r = b.resolve([values or {}])
     ego, threat = b.names.index(b.ego), b.names.index(b.threat)
     _, ego_poly, _ = b.paths[b.ego]

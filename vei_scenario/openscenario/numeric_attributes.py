@@ -55,6 +55,13 @@ NON_NEGATIVE = {
 }  # fmt: skip
 
 
+#: No quantity of a scenario is this large (m, s, m/s, kg, Pa ...): larger values are typing errors or
+#: attacks, and squaring them in the models would overflow.
+MAX_MAGNITUDE = 1e12
+#: Numbers that are identifiers rather than quantities.
+UNBOUNDED = frozenset({"randomSeed"})
+
+
 @cache
 def numeric_table() -> dict[str, dict[str, str]]:
     """{element name: {attribute: numeric type}} of OpenSCENARIO 1.0–1.3."""
@@ -100,7 +107,7 @@ def table_from_xsd(paths: list[Path]) -> dict[str, dict[str, str]]:
 def check_numbers(path: Path, root) -> None:
     """Refuse the first attribute the XSD types as a number that is not one: not a number, not
     finite, not an integer where an integer is due, or below zero where the standard says [0..inf[.
-    Values still holding ``$`` (unresolved names esmini keeps as text) are left to their users."""
+    Run after parameters are resolved: a ``$`` left in a number is no number."""
     import math
 
     from vei_scenario.errors import VeiInputError
@@ -113,7 +120,7 @@ def check_numbers(path: Path, root) -> None:
             continue
         for name, kind in attrs.items():
             text = el.get(name)
-            if text is None or "$" in text:
+            if text is None:
                 continue
             where = f"line {el.sourceline}"
             try:
@@ -122,7 +129,14 @@ def check_numbers(path: Path, root) -> None:
                 raise VeiInputError(path, where, f'<{tag} {name}="{text}">: not a number') from None
             if not math.isfinite(value):
                 raise VeiInputError(path, where, f'<{tag} {name}="{text}">: not a finite number')
-            if kind != "double" and not value.is_integer():
-                raise VeiInputError(path, where, f'<{tag} {name}="{text}">: not an integer ({kind})')
+            if abs(value) > MAX_MAGNITUDE and name not in UNBOUNDED:
+                raise VeiInputError(
+                    path, where, f'<{tag} {name}="{text}">: out of range (at most {MAX_MAGNITUDE:g} in size)'
+                )
+            if kind != "double":
+                if not value.is_integer():
+                    raise VeiInputError(path, where, f'<{tag} {name}="{text}">: not an integer ({kind})')
+                if text.strip() != str(int(value)):  # "1.0", "1e3", " 2": written as the integer they are
+                    el.set(name, str(int(value)))
             if value < 0 and (kind.startswith("unsigned") or name in NON_NEGATIVE.get(tag, ())):
                 raise VeiInputError(path, where, f'<{tag} {name}="{text}">: must not be negative')

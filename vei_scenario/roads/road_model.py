@@ -315,7 +315,9 @@ class RoadNetwork:
             except (TypeError, ValueError, KeyError) as exc:
                 raise VeiInputError(path, f"line {r.sourceline}", f"road {r.get('id')!r}: {exc}") from None
             if road.length < 0 or road.length > MAX_COORDINATE_M:
-                raise VeiInputError(path, f"line {r.sourceline}", f"road {road.id!r}: length {road.length:g} m is out of range")
+                raise VeiInputError(
+                    path, f"line {r.sourceline}", f"road {road.id!r}: length {road.length:g} m is out of range"
+                )
             roads[road.id] = road
         if roads and sum(r.length for r in roads.values()) <= 0:
             raise VeiInputError(path, "", "every road has zero length: nothing can be driven")
@@ -429,7 +431,13 @@ def _check_geometry(g: Geometry, el) -> None:
     whose end lies farther from its start than its length (a curve of arc length L reaches at most L
     away; huge polynomial coefficients break this, and their arc-length table with it)."""
     where = f"<geometry> (line {el.sourceline})"
-    if g.length < 0 or g.length > MAX_COORDINATE_M or g.s < 0 or abs(g.x) > MAX_COORDINATE_M or abs(g.y) > MAX_COORDINATE_M:
+    if (
+        g.length < 0
+        or g.length > MAX_COORDINATE_M
+        or g.s < 0
+        or abs(g.x) > MAX_COORDINATE_M
+        or abs(g.y) > MAX_COORDINATE_M
+    ):
         raise ValueError(f"{where}: s, x, y or length out of range (length {g.length:g} m)")
     if g.length == 0 or g.kind == "line":  # (a line of finite numbers is drivable)
         return

@@ -174,7 +174,9 @@ def evaluate_dask(
             client = Client(scheduler, timeout=SCHEDULER_TIMEOUT_S)
         except (OSError, TimeoutError, ValueError) as exc:
             raise VeiInputError(
-                None, "--scheduler", f"cannot reach a Dask scheduler at {scheduler!r} within {SCHEDULER_TIMEOUT_S} s ({exc})"
+                None,
+                "--scheduler",
+                f"cannot reach a Dask scheduler at {scheduler!r} within {SCHEDULER_TIMEOUT_S} s ({exc})",
             ) from None
     else:
         cluster = LocalCluster(
