@@ -93,7 +93,8 @@ SCENARIO = """<?xml version="1.0"?>
 </Entities>
 <Storyboard><Init><Actions>
  <Private entityRef="Ego">
-  <PrivateAction><TeleportAction><Position><WorldPosition x="{x}" y="0" h="{h}"/></Position></TeleportAction></PrivateAction>
+  <PrivateAction><TeleportAction><Position><WorldPosition x="{x}" y="0" h="{h}"/></Position></TeleportAction>
+  </PrivateAction>
   <PrivateAction><LongitudinalAction><SpeedAction>
    <SpeedActionDynamics dynamicsShape="{shape}" value="{dv}" dynamicsDimension="{dim}"/>
    <SpeedActionTarget><AbsoluteTargetSpeed value="{v}"/></SpeedActionTarget></SpeedAction></LongitudinalAction>
@@ -132,10 +133,11 @@ GOOD = {"p": "3", "cx": "1.4", "w": "2", "l": "5", "acc": "5", "x": "0", "h": "0
     )
 )
 def test_scenario_values_run_cleanly_or_are_refused(tmp_path_factory, values):
+    from xml.sax.saxutils import escape
+
     from vei_scenario.interpreter import run_scenario
 
-    fields = {**GOOD, **{k: v.replace('"', "&quot;").replace("<", "&lt;").replace("&", "&amp;")
-                         if "&" in v else v.replace('"', "&quot;").replace("<", "&lt;") for k, v in values.items()}}  # fmt: skip
+    fields = {**GOOD, **{k: escape(v, {'"': "&quot;"}) for k, v in values.items()}}
     path = tmp_path_factory.mktemp("fz") / "s.xosc"
     path.write_text(SCENARIO.format(**fields))
     try:
@@ -181,8 +183,9 @@ def test_roads_load_drivable_or_are_refused(tmp_path_factory, shape, k, length, 
 # --- JSON inputs: clips and layers -----------------------------------------------------------------
 JSON_LEAVES = st.one_of(st.none(), st.booleans(), st.integers(), st.floats(allow_nan=False, allow_infinity=False),
                         st.text(max_size=8))  # fmt: skip
-JSON_VALUES = st.recursive(JSON_LEAVES, lambda c: st.lists(c, max_size=4) | st.dictionaries(st.text(max_size=6), c,
-                                                                                                max_size=4), max_leaves=20)  # fmt: skip
+JSON_VALUES = st.recursive(
+    JSON_LEAVES, lambda c: st.lists(c, max_size=4) | st.dictionaries(st.text(max_size=6), c, max_size=4), max_leaves=20
+)
 
 
 @FAST

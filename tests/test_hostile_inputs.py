@@ -195,7 +195,8 @@ def test_trajectories_csv_survives_entity_names_with_commas_and_quotes(tmp_path)
         f"""<?xml version="1.0"?>
 <OpenSCENARIO><FileHeader revMajor="1" revMinor="1" date="2024-01-01T00:00:00" description="" author=""/>
 <ParameterDeclarations/><CatalogLocations/><RoadNetwork/>
-<Entities><ScenarioObject name="{name.replace('"', "&quot;")}"><MiscObject name="x" mass="1" miscObjectCategory="obstacle">
+<Entities><ScenarioObject name="{name.replace('"', "&quot;")}">
+<MiscObject name="x" mass="1" miscObjectCategory="obstacle">
 <BoundingBox><Center x="0" y="0" z="0"/><Dimensions width="1" length="1" height="1"/></BoundingBox><Properties/>
 </MiscObject></ScenarioObject></Entities>
 <Storyboard><Init><Actions/></Init><StopTrigger><ConditionGroup><Condition name="e" delay="0" conditionEdge="none">
