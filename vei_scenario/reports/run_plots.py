@@ -51,6 +51,8 @@ def _colour(k: int, r, name: str, several: bool) -> str:
 
 
 def _legend(ax, several: bool) -> None:
+    if not ax.get_legend_handles_labels()[0]:  # nothing labelled (a run without a second entity)
+        return
     if several:  # below the axes, never over the data
         ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.1), ncol=2, frameon=False)
     else:
@@ -170,6 +172,7 @@ def gap_ttc_png(results: list[tuple[str, object]], cfg: MetricConfig) -> bytes:
         fig.legend(*ax1.get_legend_handles_labels(), fontsize=8, loc="lower center", ncol=3, frameon=False)
         fig.tight_layout(rect=(0, 0.07, 1, 1))
     else:
-        ax1.legend(fontsize=7)
+        if ax1.get_legend_handles_labels()[0]:
+            ax1.legend(fontsize=7)
         fig.tight_layout()
     return _png(fig)
