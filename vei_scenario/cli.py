@@ -118,6 +118,7 @@ def _cmd_validate(args: argparse.Namespace) -> int:
 
 
 def _cmd_run(args: argparse.Namespace) -> int:
+    from vei_scenario.metrics import MetricConfig
     from vei_scenario.runner import parse_param_overrides, run_to, summary_text
 
     report = run_to(
@@ -128,6 +129,7 @@ def _cmd_run(args: argparse.Namespace) -> int:
         plots=not args.no_plots,
         coupling=args.coupling,
         osi=args.osi,
+        cfg=MetricConfig(zone_ttc=args.zone_ttc),
     )
     print(summary_text(report.metrics))
     for p in report.written:
@@ -179,7 +181,8 @@ def _cmd_fmu_cosim(args: argparse.Namespace) -> int:
 def _cmd_study(args: argparse.Namespace) -> int:
     from vei_scenario.study import run_study, table_text
 
-    report = run_study(args.input, args.output, args.dt, args.time_shift, plots=not args.no_plots)
+    zone = "approx" if args.paper else args.zone_ttc
+    report = run_study(args.input, args.output, args.dt, args.time_shift, plots=not args.no_plots, zone_ttc=zone)
     print(f"{report.scenario}: five configurations at TimeShift {report.time_shift_s:+.3f} s")
     print(table_text(report.rows))
     print(f"wrote {len(report.written)} files under {args.output}")
@@ -208,6 +211,7 @@ def _cmd_sweep(args: argparse.Namespace) -> int:
             plotter,
             args.osi_traces,
             args.osi_format,
+            args.zone_ttc,
         )
     finally:
         plotter.close()
@@ -313,6 +317,11 @@ def _cmd_check(args: argparse.Namespace) -> int:
     return 1 if bad else 0
 
 
+ZONE_HELP = (
+    "the TTC that the zones (safe >= 3 s, attention 2-3 s, alert < 2 s) and the safety index use: 2d (default: "
+    "the exact time until the boxes touch, right for crossing paths) or approx (the seed paper's gap / ego speed "
+    "to a road user ahead in the ego's lane band, blind to crossings); both minima are always reported"
+)
 BACKEND_HELP = "native: C models compiled into the FMU (default); python: pythonfmu (needs the [fmu] extra)"
 
 
@@ -362,6 +371,7 @@ def build_parser() -> argparse.ArgumentParser:
     r.add_argument("--dt", type=DT, default=0.01, help="fixed step in s (default 0.01)")
     r.add_argument("-o", "--output", help="directory for trajectories.csv, metrics.json and plots")
     r.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
+    r.add_argument("--zone-ttc", choices=("2d", "approx"), default="2d", help=ZONE_HELP)
     r.add_argument(
         "--osi",
         metavar="TRACE",
@@ -385,6 +395,10 @@ def build_parser() -> argparse.ArgumentParser:
         "--time-shift", type=_number(-3600, 3600), help="TimeShift to use (default: the scenario's ConflictTimeShift)"
     )
     st.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
+    st.add_argument("--zone-ttc", choices=("2d", "approx"), default="2d", help=ZONE_HELP)
+    st.add_argument(
+        "--paper", action="store_true", help="the seed paper's table: zones and safety index from its approximate TTC"
+    )
     st.set_defaults(func=_cmd_study)
 
     sw = sub.add_parser("sweep", help="run a catalog of parameter variants; catalog.csv/json and report.html")
@@ -410,6 +424,7 @@ def build_parser() -> argparse.ArgumentParser:
     sw.add_argument("--workers", type=WORKERS, help="local worker processes (default: all cores)")
     sw.add_argument("--emit-xosc", action="store_true", help="also write one scenario file per variant")
     sw.add_argument("--quiet", action="store_true", help="no progress bar")
+    sw.add_argument("--zone-ttc", choices=("2d", "approx"), default="2d", help=ZONE_HELP)
     sw.add_argument(
         "--osi-traces",
         metavar="WHICH",

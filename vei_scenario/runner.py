@@ -10,6 +10,8 @@ import io
 from dataclasses import dataclass
 from pathlib import Path
 
+import numpy as np
+
 from vei_scenario.atomic_io import OutputSet, json_text
 from vei_scenario.errors import VeiInputError
 from vei_scenario.interpreter import RunResult, run_scenario
@@ -61,6 +63,40 @@ def trajectories_csv(result: RunResult) -> str:
                 buf.write(",".join(row) + "\n")
             else:
                 out.writerow(row)
+    return buf.getvalue()
+
+
+SERIES_COLUMNS = ("time_s", "gap_m", "closing_rate_mps", "ttc_2d_s", "ttc_approx_s", "zone")
+
+
+def series_csv(result: RunResult, cfg: MetricConfig) -> str:
+    """series.csv: the ego against its threat, every step: the box gap, its closing rate, both TTCs
+    (empty where the boxes never meet: infinite) and the zone that step counts in (by ``cfg.zone_ttc``),
+    so people can plot what the zones and the safety index are made of."""
+    import csv
+
+    from vei_scenario.metrics.definitions import ZONES
+
+    pair = PairSeries.from_run(result)
+    zones = pair.zones(cfg)
+    buf = io.StringIO()
+    out = csv.writer(buf, lineterminator="\n")
+    out.writerow(SERIES_COLUMNS)
+
+    def num(v: float, digits: str) -> str:
+        return format(float(v), digits) if np.isfinite(v) else ""
+
+    for k, t in enumerate(result.t):
+        out.writerow(
+            (
+                f"{t:.3f}",
+                num(pair.gap[k], ".6f"),
+                num(pair.closing_rate[k], ".6f"),
+                num(pair.ttc_2d[k], ".6f"),
+                num(pair.ttc_approx[k], ".6f"),
+                ZONES[int(zones[k])],
+            )
+        )
     return buf.getvalue()
 
 
@@ -126,6 +162,8 @@ def run_files(result: RunResult, doc: dict, cfg: MetricConfig, plots: bool = Tru
         "trajectories.csv": trajectories_csv(result),
         "metrics.json": json_text(doc, indent=2) + "\n",
     }
+    if result.threat:
+        files["series.csv"] = series_csv(result, cfg)
     if plots:
         from vei_scenario.reports import run_plots
 

@@ -33,7 +33,9 @@ TABLE_COLUMNS = (
     "collision_time_s",
     "min_gap_m",
     "min_ttc_s",
+    "min_ttc_approx_s",
     "act_min_s",
+    "alert_s",
     "safety_index",
 )
 
@@ -66,7 +68,9 @@ _TABLE = (
     ("t_coll s", "collision_time_s", 10, ".2f"),
     ("min gap m", "min_gap_m", 11, ".2f"),
     ("min TTC s", "min_ttc_s", 11, ".2f"),
+    ("TTC≈ s", "min_ttc_approx_s", 9, ".2f"),
     ("ACT s", "act_min_s", 8, ".2f"),
+    ("alert s", "alert_s", 9, ".2f"),
     ("S", "safety_index", 7, ".2f"),
 )
 
@@ -89,8 +93,15 @@ def table_text(rows: list[dict]) -> str:
 
 
 def run_study(
-    input_path: str | Path, out_dir: str | Path, dt: float = 0.01, time_shift_s: float | None = None, plots: bool = True
+    input_path: str | Path,
+    out_dir: str | Path,
+    dt: float = 0.01,
+    time_shift_s: float | None = None,
+    plots: bool = True,
+    zone_ttc: str = "2d",
 ) -> StudyReport:
+    """The five configurations; ``zone_ttc``: the TTC the zones and the safety index use ("2d", or
+    "approx" for the seed paper's table: ``vei study --paper``). Both TTCs are in the table."""
     from vei_scenario.checks import check_dt, finite
 
     check_dt(dt)
@@ -106,7 +117,9 @@ def run_study(
         if "ConflictTimeShift" not in declared:
             raise VeiInputError(scenario, "ParameterDeclarations", "no ConflictTimeShift; give --time-shift")
         time_shift_s = float(declared["ConflictTimeShift"])
-    cfg = MetricConfig()
+    if zone_ttc not in ("2d", "approx"):
+        raise VeiInputError(None, "--zone-ttc", f"{zone_ttc!r} is not 2d or approx")
+    cfg = MetricConfig(zone_ttc=zone_ttc)
     files = OutputSet()
     rows, runs = [], []
     for number, description, params in CONFIGURATIONS:
@@ -115,7 +128,7 @@ def run_study(
         doc = metrics_document(result, cfg)
         for name, data in run_files(result, doc, cfg, plots=False).items():
             files.add(out / f"config{number}" / name, data)
-        m = doc["metrics"]
+        m = {**doc["metrics"], "alert_s": doc["metrics"]["ttc_zones_s"]["alert"]}
         rows.append({"config": number, "description": description, **{k: m.get(k) for k in TABLE_COLUMNS[2:]}})
         runs.append((f"{number} {description}", result))
     buf = io.StringIO()
@@ -126,7 +139,14 @@ def run_study(
     files.add(
         out / "study.json",
         json_text(
-            {"scenario": str(scenario), "time_shift_s": time_shift_s, "dt_s": dt, "configurations": rows}, indent=2
+            {
+                "scenario": str(scenario),
+                "time_shift_s": time_shift_s,
+                "dt_s": dt,
+                "ttc_zones_use": zone_ttc,
+                "configurations": rows,
+            },
+            indent=2,
         )
         + "\n",
     )

@@ -19,6 +19,12 @@ static double dmax(double a, double b) { return a > b ? a : b; }
  * x86-64) two corners at a time: the same operations in the same order, so the same bits. */
 #if defined(__SSE2__)
 #include <emmintrin.h>
+
+/* Contact values (metrics.definitions: EI_MIN_TTC_S, DRAC_CAP_MPS2): EI divides by the 2-D TTC but
+ * not by less than 0.1 s, and DRAC is capped at 20 m/s^2 (about 2 g, beyond any tyre's grip: the
+ * contact cannot be avoided by braking). Near contact both would otherwise grow without bound. */
+#define VEI_EI_MIN_TTC_S 0.1
+#define VEI_DRAC_CAP_MPS2 20.0
 #endif
 static double corners_to_box(const VeiTrigBox *a, const VeiTrigBox *b) {
     double dx = a->x - b->x, dy = a->y - b->y;
@@ -461,7 +467,7 @@ static void score(const VeiBatchScene *sc, double *tr[NTRAJ], double *tg[NTRIG],
         zone[z]++;
         /* Emergency Index */
         double in_depth = closing ? sc->radius_sum - mfd : 0.0;
-        double ttc_ei = dmax(ttc2d, sc->metric_dt);
+        double ttc_ei = dmax(ttc2d, VEI_EI_MIN_TTC_S);
         double ei = (in_depth > 0 && isfinite(ttc2d)) ? in_depth / ttc_ei : 0.0;
         ei_max = dmax(ei_max, ei);
     }
@@ -501,7 +507,7 @@ static void score(const VeiBatchScene *sc, double *tr[NTRAJ], double *tg[NTRIG],
     out[OUT_SAFETY_INDEX] = any_contact ? 0.0 : safety;
     out[OUT_ACT_MIN] = act_min;
     out[OUT_EI_MAX] = ei_max;
-    out[OUT_DRAC_MAX] = drac_max;
+    out[OUT_DRAC_MAX] = dmin(drac_max, VEI_DRAC_CAP_MPS2);
     out[OUT_PET] = pet(sc, tr, tg, n, w->in_e, w->in_o, w->ie, w->io);
     out[OUT_PEAK_DECEL] = dmax(0.0, -peak) + 0.0; /* + 0.0: never -0.0, as in the Python metric */
     out[OUT_MAX_JERK] = jerk_max;

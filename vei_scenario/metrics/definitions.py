@@ -92,6 +92,11 @@ def act_min_s(p: PairSeries, cfg: MetricConfig) -> np.ndarray:
     return np.where(p.contact, 0.0, act).min(axis=-1)
 
 
+#: EI's TTC is floored here (s): the last step before a contact is a contact value, not a criticality.
+EI_MIN_TTC_S = 0.1
+#: DRAC is capped here (m/s², ~2 g): beyond any vehicle's braking, so "unavoidable by braking".
+DRAC_CAP_MPS2 = 20.0
+
 def _circumradii(p: PairSeries) -> float:
     """Sum of the two boxes' circumscribed radii (half diagonals): EI's safety distance, and the
     centre distance beyond which two boxes cannot touch."""
@@ -103,7 +108,9 @@ def ei_max_mps(p: PairSeries, cfg: MetricConfig) -> np.ndarray:
     """Maximum Emergency Index (m/s): EI = InDepth / TTC2D (Cheng et al. 2025). InDepth = D_safe − MFD:
     how deep the two safety regions would intrude into each other on the current relative course,
     MFD the closest-approach distance of the centres under constant relative velocity, D_safe the sum
-    of the circumscribed radii (half box diagonals; the simplest safety region). 0 without intrusion."""
+    of the circumscribed radii (half box diagonals; the simplest safety region). 0 without intrusion.
+    Contact values: the TTC divides no lower than :data:`EI_MIN_TTC_S` (0.1 s), so EI stays at most
+    D_safe / 0.1 s instead of growing without bound in the last step before a contact."""
     e, o = p.ego, p.other
     rx, ry = o.x - e.x, o.y - e.y
     vx, vy = o.vx - e.vx, o.vy - e.vy
@@ -113,18 +120,21 @@ def ei_max_mps(p: PairSeries, cfg: MetricConfig) -> np.ndarray:
         mfd = np.where(v2 > 1e-12, np.abs(rx * vy - ry * vx) / np.sqrt(v2), np.hypot(rx, ry))
         d_safe = _circumradii(p)
         in_depth = np.where(closing, d_safe - mfd, 0.0)
-        ttc = np.maximum(p.ttc_2d, p.dt)
+        ttc = np.maximum(p.ttc_2d, EI_MIN_TTC_S)
         ei = np.where((in_depth > 0) & np.isfinite(p.ttc_2d), in_depth / ttc, 0.0)
     return ei.max(axis=-1)
 
 
 def drac_max_mps2(p: PairSeries, cfg: MetricConfig) -> np.ndarray:
     """Maximum Deceleration Rate to Avoid a Crash (m/s²): DRAC = v_c² / (2 δ), v_c the closing rate of
-    the box gap δ (Almqvist et al. 1991, with the gap between boxes instead of bumper distance)."""
+    the box gap δ (Almqvist et al. 1991, with the gap between boxes instead of bumper distance).
+    Contact values: capped at :data:`DRAC_CAP_MPS2` (20 m/s², about 2 g). No tyre brakes harder than
+    ~1 g, so 20 reads "cannot be avoided by braking"; as the gap closes to contact DRAC would otherwise
+    grow without bound (733 m/s² one step before a crash)."""
     rate, gap = p.closing_rate, p.gap
     with np.errstate(divide="ignore", invalid="ignore"):
         drac = np.where((rate > 0) & (gap > 1e-3), rate * rate / (2 * gap), 0.0)
-    return drac.max(axis=-1)
+    return np.minimum(drac.max(axis=-1), DRAC_CAP_MPS2)
 
 
 #: Paths meeting at less than this angle (deg) are following or merging, not crossing: no PET.

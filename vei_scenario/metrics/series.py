@@ -24,7 +24,9 @@ class MetricConfig:
 
     safe_ttc_s: float = 3.0  # safe zone: TTC ≥ 3 s
     alert_ttc_s: float = 2.0  # attention: 2–3 s; alert: < 2 s
-    zone_ttc: str = "approx"  # which TTC the zones and the safety index use: "approx" (the seed's) or "2d"
+    #: which TTC the zones and the safety index use: "2d" (default: exact for crossing paths) or "approx"
+    #: (the seed paper's gap / v_ego to a road user ahead in the ego's lane band, blind to crossings)
+    zone_ttc: str = "2d"
     comfort_accel_mps2: float = 2.0
     comfort_jerk_mps3: float = 2.0
     near_miss_ttc_s: tuple[float, float] = (0.5, 1.5)

@@ -114,6 +114,7 @@ def run_sweep(
     plotter: PlotWorker | None = None,
     osi_traces: str | None = None,
     osi_format: str = "mcap",
+    zone_ttc: str = "2d",
 ) -> SweepReport:
     """Evaluate the variants and write the catalog and report. ``plotter``: a plot worker forked
     earlier (the command line forks it before importing this package); ended here either way.
@@ -128,6 +129,8 @@ def run_sweep(
         raise VeiInputError(None, "--workers", f"{workers!r} is not a number of workers in 1..1024")
     if seed is not None and not (isinstance(seed, int) and seed >= 0):
         raise VeiInputError(None, "--seed", f"{seed!r} is not a non-negative integer")
+    if zone_ttc not in ("2d", "approx"):
+        raise VeiInputError(None, "--zone-ttc", f"{zone_ttc!r} is not 2d or approx")
     if osi_format not in ("mcap", "osi"):
         raise VeiInputError(None, "--osi-format", f"{osi_format!r} is not mcap or osi")
     if plotter is None:
@@ -142,9 +145,9 @@ def run_sweep(
         tick = bar.update if bar is not None else None
         try:
             if executor == "dask":
-                outcomes = evaluate_dask(str(scenario.resolve()), variants, dt, scheduler, tick)
+                outcomes = evaluate_dask(str(scenario.resolve()), variants, dt, scheduler, tick, zone_ttc)
             elif executor == "local":
-                outcomes = evaluate_local(str(scenario.resolve()), variants, dt, workers, tick)
+                outcomes = evaluate_local(str(scenario.resolve()), variants, dt, workers, tick, zone_ttc)
             else:
                 raise VeiInputError(None, "--executor", f"{executor!r} is not local or dask")
         finally:
@@ -161,7 +164,7 @@ def run_sweep(
                 r["xosc"] = rel
         if osi_traces:
             _add_traces(files, out, scenario, rows, osi_traces, osi_format, dt)
-        meta = {"scenario": str(scenario), "dt_s": dt, "varied": varied, "count": len(rows)}
+        meta = {"scenario": str(scenario), "dt_s": dt, "varied": varied, "count": len(rows), "ttc_zones_use": zone_ttc}
         files.add(out / "catalog.csv", catalog_csv(rows, names))
         files.add(out / "catalog.json", catalog_json(rows, meta))
         files.add(out / "report.html", report_html(rows, names, varied, meta, plots=plotter.plots()))

@@ -16,13 +16,18 @@ from vei_scenario.errors import VeiError
 from vei_scenario.metrics import MetricConfig, PairSeries, compute_metrics
 
 
-def evaluate_variant(scenario: str, values: dict[str, str], dt: float) -> dict:
+#: Which TTC the zones and the safety index use (MetricConfig.zone_ttc).
+ZONE_TTC = ("2d", "approx")
+
+
+def evaluate_variant(scenario: str, values: dict[str, str], dt: float, zone_ttc: str = "2d") -> dict:
     """Run one variant; a row: status, error and the metrics of ``vei run``."""
     from vei_scenario.interpreter import run_scenario
 
     try:
         result = run_scenario(scenario, values, dt)
-        metrics = compute_metrics(PairSeries.from_run(result), MetricConfig()) if result.threat else {}
+        cfg = MetricConfig(zone_ttc=zone_ttc)
+        metrics = compute_metrics(PairSeries.from_run(result), cfg) if result.threat else {}
         return {"status": "ok", "error": "", "metrics": metrics}
     except VeiError as exc:
         return {"status": "error", "error": str(exc), "metrics": {}}
@@ -31,19 +36,19 @@ def evaluate_variant(scenario: str, values: dict[str, str], dt: float) -> dict:
 
 
 _BATCH: dict[tuple[str, float], object] = {}
-_NATIVE: dict[tuple[str, float], object] = {}
+_NATIVE: dict[tuple[str, float, str], object] = {}
 
 
-def _native_engine(scenario: str, dt: float):
+def _native_engine(scenario: str, dt: float, zone_ttc: str = "2d"):
     """The compiled kernel for a vei-compiled two-entity scenario (cached per process), or None."""
     from vei_scenario.batch import NotBatchable
     from vei_scenario.batch.native import NativeBatch
 
-    key = (scenario, dt)
+    key = (scenario, dt, zone_ttc)
     if key not in _NATIVE:
         engine = _batch_engine(scenario, dt)
         try:
-            _NATIVE[key] = NativeBatch(engine) if engine is not None else None
+            _NATIVE[key] = NativeBatch(engine, MetricConfig(zone_ttc=zone_ttc)) if engine is not None else None
         except NotBatchable:
             _NATIVE[key] = None
     return _NATIVE[key]
@@ -62,12 +67,12 @@ def _batch_engine(scenario: str, dt: float):
     return _BATCH[key]
 
 
-def _chunk(scenario: str, chunk: list[dict[str, str]], dt: float) -> list[dict]:
+def _chunk(scenario: str, chunk: list[dict[str, str]], dt: float, zone_ttc: str = "2d") -> list[dict]:
     """Rows of a chunk: vei-compiled scenarios through the compiled kernel or the numpy batch engine
     (rows identical to ``vei run``: tests/test_batch_native.py, tests/test_batch_engine.py),
     everything else and invalid values through the interpreter."""
     engine = _batch_engine(scenario, dt)
-    native = _native_engine(scenario, dt)
+    native = _native_engine(scenario, dt, zone_ttc)
     rows: list[dict | None] = [None] * len(chunk)
     ok = [i for i, v in enumerate(chunk) if engine.accepts(v)] if engine is not None else []
     if ok:
@@ -78,10 +83,10 @@ def _chunk(scenario: str, chunk: list[dict[str, str]], dt: float) -> list[dict]:
             from vei_scenario.batch import batch_pair
             from vei_scenario.metrics import compute_metrics_batch
 
-            metrics = compute_metrics_batch(batch_pair(engine.run(accepted)), MetricConfig())
+            metrics = compute_metrics_batch(batch_pair(engine.run(accepted)), MetricConfig(zone_ttc=zone_ttc))
         for i, m in zip(ok, metrics):
             rows[i] = {"status": "ok", "error": "", "metrics": m}
-    return [r if r is not None else evaluate_variant(scenario, v, dt) for r, v in zip(rows, chunk)]
+    return [r if r is not None else evaluate_variant(scenario, v, dt, zone_ttc) for r, v in zip(rows, chunk)]
 
 
 def _chunks(variants: list[dict[str, str]], size: int) -> list[list[dict[str, str]]]:
@@ -94,17 +99,18 @@ def evaluate_local(
     dt: float,
     workers: int | None = None,
     progress: Callable[[int], None] | None = None,
+    zone_ttc: str = "2d",
 ) -> list[dict]:
     workers = workers or os.cpu_count() or 1
-    native = _native_engine(scenario, dt)
+    native = _native_engine(scenario, dt, zone_ttc)
     if native is not None:
-        return _evaluate_native(native, scenario, variants, dt, workers, progress)
+        return _evaluate_native(native, scenario, variants, dt, workers, progress, zone_ttc)
     size = max(1, min(256, -(-len(variants) // workers)))
     chunks = _chunks(variants, size)
     out: list[dict] = []
     if workers == 1 or len(chunks) == 1:
         for c in chunks:
-            out.extend(_chunk(scenario, c, dt))
+            out.extend(_chunk(scenario, c, dt, zone_ttc))
             if progress:
                 progress(len(c))
         return out
@@ -112,14 +118,15 @@ def evaluate_local(
     # variants); the parent runs no threads at this point (the progress bar's monitor is disabled).
     ctx = None if sys.platform != "linux" else __import__("multiprocessing").get_context("fork")
     with ProcessPoolExecutor(max_workers=workers, mp_context=ctx) as pool:
-        for c, rows in zip(chunks, pool.map(_chunk, [scenario] * len(chunks), chunks, [dt] * len(chunks))):
+        n = len(chunks)
+        for c, rows in zip(chunks, pool.map(_chunk, [scenario] * n, chunks, [dt] * n, [zone_ttc] * n)):
             out.extend(rows)
             if progress:
                 progress(len(c))
     return out
 
 
-def _evaluate_native(native, scenario, variants, dt, workers, progress) -> list[dict]:
+def _evaluate_native(native, scenario, variants, dt, workers, progress, zone_ttc: str = "2d") -> list[dict]:
     """The compiled kernel on ``workers`` threads, 500 variants a task; values it cannot take go
     through the interpreter, which reports what is wrong with them."""
     from concurrent.futures import ThreadPoolExecutor
@@ -140,7 +147,7 @@ def _evaluate_native(native, scenario, variants, dt, workers, progress) -> list[
                 progress(len(t))
     for i, r in enumerate(rows):
         if r is None:
-            rows[i] = evaluate_variant(scenario, variants[i], dt)
+            rows[i] = evaluate_variant(scenario, variants[i], dt, zone_ttc)
             if progress:
                 progress(1)
     return rows
@@ -156,6 +163,7 @@ def evaluate_dask(
     dt: float,
     scheduler: str | None,
     progress: Callable[[int], None] | None = None,
+    zone_ttc: str = "2d",
 ) -> list[dict]:
     """The same evaluation on a Dask distributed cluster (``scheduler`` address, or a LocalCluster)."""
     try:
@@ -189,7 +197,7 @@ def evaluate_dask(
         client = Client(cluster)
     try:
         chunks = _chunks(variants, max(1, min(256, len(variants) // 8 or 1)))
-        futures = [client.submit(_chunk, scenario, c, dt, pure=False) for c in chunks]
+        futures = [client.submit(_chunk, scenario, c, dt, zone_ttc, pure=False) for c in chunks]
         index = {f.key: i for i, f in enumerate(futures)}
         results: list[list[dict] | None] = [None] * len(futures)
         for fut in as_completed(futures):
