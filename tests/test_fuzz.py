@@ -183,6 +183,8 @@ def test_roads_load_drivable_or_are_refused(tmp_path_factory, shape, k, length, 
 # --- JSON inputs: clips and layers -----------------------------------------------------------------
 JSON_LEAVES = st.one_of(st.none(), st.booleans(), st.integers(), st.floats(allow_nan=False, allow_infinity=False),
                         st.text(max_size=8))  # fmt: skip
+
+
 def _containers(children):
     return st.lists(children, max_size=4) | st.dictionaries(st.text(max_size=6), children, max_size=4)
 

@@ -53,7 +53,11 @@ def test_configurations_4_and_5_avoid_the_collision_and_resume_cruise(five, case
     cruise = float(load_scenario(case_xosc).parameters["EgoCruiseSpeed"])
     for n in (4, 5):
         r, m = five[n]
-        assert not m["collision"] and m["min_gap_m"] > 0 and m["safety_index"] == 1.0, (n, m)
+        assert not m["collision"] and m["min_gap_m"] > 0, (n, m)
+        # the crossing comes within 2 s of contact (2-D TTC) before the planner has braked enough: the
+        # default zones see it; the seed's headway TTC, blind to crossings, never does
+        assert m["ttc_zones_s"]["alert"] > 0.5 and 0.9 < m["safety_index"] < 1.0, (n, m)
+        assert m["min_ttc_s"] < 2.0 < m["min_ttc_approx_s"]
         ego = r.traces["Ego"]
         assert "cap_brake" in ego.status and ego.speed.min() < 0.5 * cruise  # it did brake
         assert abs(ego.speed[-1] - cruise) < 0.05  # and returned to cruise speed once clear
@@ -168,9 +172,9 @@ def test_run_writes_trajectories_metrics_and_plots_deterministically(tmp_path, c
         )
         assert code == 0
     out = capsys.readouterr().out
-    assert "Ego vs scooter_1: no collision" in out and "safety index 1.0" in out
+    assert "Ego vs scooter_1: no collision" in out and "safety index 0.9" in out
     names = sorted(p.name for p in (tmp_path / "a").iterdir())
-    assert names == ["gap_ttc.png", "metrics.json", "speeds.png", "trajectories.csv", "trajectories.png"]
+    assert names == ["gap_ttc.png", "metrics.json", "series.csv", "speeds.png", "trajectories.csv", "trajectories.png"]
     for n in names:
         assert (tmp_path / "a" / n).read_bytes() == (tmp_path / "b" / n).read_bytes(), n
     header = (tmp_path / "a" / "trajectories.csv").read_text().splitlines()[0]

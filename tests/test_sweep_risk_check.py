@@ -214,7 +214,13 @@ def test_check_suite_passes_fails_and_writes_junit(tmp_path, capsys, case_xosc):
 name = "cap avoids"
 scenario = "{case_xosc}"
 parameters = {{ TimeShift = 2.2, RiderType = "normal", CapEnabled = true }}
-expect = ["collision == false", "safety_index >= 0.9", "ttc_zones_s.alert <= 0.5"]
+expect = ["collision == false", "safety_index >= 0.9", "ttc_zones_s.alert <= 1.5"]
+
+[[case]]
+name = "cap avoids but the crossing reaches the alert zone"
+scenario = "{case_xosc}"
+parameters = {{ TimeShift = 2.2, RiderType = "normal", CapEnabled = true }}
+expect = ["ttc_zones_s.alert <= 0.5"]
 
 [[case]]
 name = "no cap collides but we expect it not to"
@@ -225,12 +231,13 @@ expect = ["collision == false", "min_gap_m > 1"]
     junit = tmp_path / "junit.xml"
     code = main(["check", str(suite), "--junit", str(junit)])
     out = capsys.readouterr().out
-    assert code == 1 and "1 passed, 1 failed" in out
+    assert code == 1 and "1 passed, 2 failed" in out
     assert "expected collision == false, got collision = True" in out
+    assert "ttc_zones_s.alert <= 0.5" in out  # the 2-D TTC zones see the crossing (the seed's TTC did not)
     root = etree.parse(str(junit)).getroot()
     ts = root.find("testsuite")
-    assert ts.get("tests") == "2" and ts.get("failures") == "1" and ts.get("errors") == "0"
-    failing = ts.findall("testcase")[1]
+    assert ts.get("tests") == "3" and ts.get("failures") == "2" and ts.get("errors") == "0"
+    failing = ts.findall("testcase")[2]
     assert failing.find("failure") is not None and "min_gap_m" in failing.find("failure").text
 
 

@@ -575,6 +575,9 @@ def main(argv: list[str] | None = None) -> int:
     except VeiInputError as exc:
         print(f"vei: error: {_one_line(str(exc))}", file=sys.stderr)
         return EXIT_USER_ERROR
+    except BrokenPipeError:  # the reader went away (e.g. `vei ... | head`): stop quietly
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 141
     except OSError as exc:  # an output (or input) the file system refused: path and reason, one line
         print(f"vei: error: {_os_error(exc)}", file=sys.stderr)
         return EXIT_USER_ERROR
@@ -584,9 +587,6 @@ def main(argv: list[str] | None = None) -> int:
     except KeyboardInterrupt:
         print("vei: interrupted", file=sys.stderr)
         return 130
-    except BrokenPipeError:  # the reader went away (e.g. `vei ... | head`): stop quietly
-        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
-        return 141
 
 
 if __name__ == "__main__":

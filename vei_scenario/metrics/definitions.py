@@ -97,6 +97,7 @@ EI_MIN_TTC_S = 0.1
 #: DRAC is capped here (m/s², ~2 g): beyond any vehicle's braking, so "unavoidable by braking".
 DRAC_CAP_MPS2 = 20.0
 
+
 def _circumradii(p: PairSeries) -> float:
     """Sum of the two boxes' circumscribed radii (half diagonals): EI's safety distance, and the
     centre distance beyond which two boxes cannot touch."""

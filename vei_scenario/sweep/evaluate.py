@@ -15,7 +15,6 @@ from concurrent.futures import ProcessPoolExecutor
 from vei_scenario.errors import VeiError
 from vei_scenario.metrics import MetricConfig, PairSeries, compute_metrics
 
-
 #: Which TTC the zones and the safety index use (MetricConfig.zone_ttc).
 ZONE_TTC = ("2d", "approx")
 
