@@ -82,6 +82,10 @@ def _work(args) -> ScenarioRecord:
     return run_one(layers, index, refine)
 
 
+#: The longest one scenario may take in a worker (s) before the batch stops with one line.
+WATCHDOG_S = 600.0
+
+
 def _guarded_work(args) -> tuple[str, object]:
     """``_work`` in a worker process: its outcome or its error as plain values, so that whatever
     goes wrong reaches the parent as one message and never stalls the pool."""
@@ -197,7 +201,14 @@ def describe_batch(
     records: list[ScenarioRecord] = []
     if jobs > 1 and len(tasks) > 1:
         with multiprocessing.get_context("fork").Pool(jobs) as pool:
-            for (kind, value), task in zip(pool.imap(_guarded_work, tasks), tasks):
+            results = pool.imap(_guarded_work, tasks)
+            for task in tasks:
+                try:  # the watchdog: a worker that never answers (killed, stuck) stops the batch with one line
+                    kind, value = results.next(timeout=WATCHDOG_S)
+                except multiprocessing.TimeoutError:
+                    raise VeiInputError(
+                        None, f"scenario {task[1]}", f"no result from its worker within {WATCHDOG_S:g} s"
+                    ) from None
                 if kind == "input":
                     raise VeiInputError(*value)
                 if kind == "bug":

@@ -15,6 +15,9 @@ from concurrent.futures import ProcessPoolExecutor
 from vei_scenario.errors import VeiError
 from vei_scenario.metrics import MetricConfig, PairSeries, compute_metrics
 
+#: The longest a sweep waits for its worker processes (s) before it stops with one line.
+WATCHDOG_S = 6 * 3600.0
+
 #: Which TTC the zones and the safety index use (MetricConfig.zone_ttc).
 ZONE_TTC = ("2d", "approx")
 
@@ -116,12 +119,23 @@ def evaluate_local(
     # fork: workers inherit the imported modules (1.8x on 2 cores vs 1.2x with forkserver for 64
     # variants); the parent runs no threads at this point (the progress bar's monitor is disabled).
     ctx = None if sys.platform != "linux" else __import__("multiprocessing").get_context("fork")
-    with ProcessPoolExecutor(max_workers=workers, mp_context=ctx) as pool:
-        n = len(chunks)
-        for c, rows in zip(chunks, pool.map(_chunk, [scenario] * n, chunks, [dt] * n, [zone_ttc] * n)):
-            out.extend(rows)
-            if progress:
-                progress(len(c))
+    from concurrent.futures.process import BrokenProcessPool
+
+    from vei_scenario.errors import VeiInputError
+
+    try:
+        with ProcessPoolExecutor(max_workers=workers, mp_context=ctx) as pool:
+            n = len(chunks)
+            # the watchdog: a chunk that does not come back in time stops the sweep with one line
+            results = pool.map(_chunk, [scenario] * n, chunks, [dt] * n, [zone_ttc] * n, timeout=WATCHDOG_S)
+            for c, rows in zip(chunks, results):
+                out.extend(rows)
+                if progress:
+                    progress(len(c))
+    except BrokenProcessPool:
+        raise VeiInputError(None, "--workers", "a worker process died (out of memory, or killed)") from None
+    except TimeoutError:
+        raise VeiInputError(None, "sweep", f"no result from the workers within {WATCHDOG_S:g} s") from None
     return out
 
 
