@@ -17,7 +17,8 @@ implementation, ``vcd``); what vei needs is then read following the standard's c
   is a local frame placed at 0°N 0°E (fine without a map). A transform may also carry the exact fix
   as ``gnss: {lat_deg, lon_deg, heading_deg, speed_mps}`` (vei writes it so that a round trip is
   exact); otherwise heading and speed follow from the poses (``W`` is taken as east-north-up).
-* **Times**: ``frame_properties.timestamp`` of every frame used, in seconds (a number) or ISO 8601.
+* **Times**: ``frame_properties.timestamp`` of every frame used (else its first stream's
+  ``sync.timestamp``), in seconds (a number) or ISO 8601 (UTC when no zone is given).
 * **Objects**: ``type`` is the class (e-scooter in any common spelling: ``e-scooter``, ``EScooter``,
   ``kick_scooter`` ...; other classes are read and then skipped by the compiler as in vei-clip),
   ``name`` the track id; each frame's first ``cuboid`` gives the centre. A cuboid in a child of ``E``
@@ -143,6 +144,20 @@ def _quaternion_matrix(q: list[float]) -> np.ndarray:
     )
 
 
+def _frame_time(path: Path, k: int, frame: dict) -> float:
+    """A frame's time: ``frame_properties.timestamp``, else the timestamp of its first stream's sync
+    (``frame_properties.streams.NAME.sync.timestamp``), in seconds."""
+    props = frame.get("frame_properties") or {}
+    where = f"openlabel.frames.{k}.frame_properties.timestamp"
+    if "timestamp" not in props:
+        for name, stream in sorted((props.get("streams") or {}).items()):
+            sync = (stream or {}).get("sync") if isinstance(stream, dict) else None
+            if isinstance(sync, dict) and "timestamp" in sync:
+                return _timestamp(path, f"openlabel.frames.{k}.frame_properties.streams.{name}.sync.timestamp",
+                                  sync["timestamp"])  # fmt: skip
+    return _timestamp(path, where, props.get("timestamp"))
+
+
 def _timestamp(path: Path, where: str, value: Any) -> float:
     if isinstance(value, bool):
         raise _err(path, where, "a timestamp is seconds (a number) or ISO 8601 text, not a boolean")
@@ -160,8 +175,10 @@ def _timestamp(path: Path, where: str, value: Any) -> float:
             stamp = datetime.fromisoformat(text.replace("Z", "+00:00"))
         except ValueError:
             raise _err(path, where, f"{value!r} is neither seconds nor an ISO 8601 time") from None
-        if stamp.tzinfo is None:
-            raise _err(path, where, f"{value!r} has no time zone (add Z or +hh:mm)")
+        if stamp.tzinfo is None:  # (annotation tools often leave it out: taken as UTC, as GNSS time is)
+            from datetime import timezone
+
+            stamp = stamp.replace(tzinfo=timezone.utc)
         return stamp.timestamp()
     raise _err(path, where, "missing: every frame used needs frame_properties.timestamp (s or ISO 8601)")
 
@@ -192,9 +209,10 @@ class _Frames:
         candidates = []
         for (a, b), n in pairs.items():
             for local, world in ((a, b), (b, a)):
-                if self.kind(world) in ("scene_cs", "geo_utm", "geo_wgs84", "geo") or world == WORLD_FRAME:
-                    if self.kind(local) not in ("scene_cs", "geo_utm", "geo_wgs84"):
-                        candidates.append((local == EGO_FRAME, n, local, world))
+                scene = self.kind(world) in ("scene_cs", "geo_utm") or world == WORLD_FRAME
+                parent = (self.systems.get(local) or {}).get("parent") == world  # (types left out)
+                if (scene or parent) and self.kind(local) not in ("scene_cs", "geo_utm", "geo_wgs84"):
+                    candidates.append((local == EGO_FRAME, n, local, world))
         if EGO_FRAME in self.systems:
             mine = [c for c in candidates if c[2] == EGO_FRAME]
             if mine:
@@ -293,7 +311,7 @@ def openlabel_to_clip_document(path: Path, doc: dict) -> tuple[dict, dict[str, s
             m = _matrix(path, f"{where}.transform_src_to_dst", tr.get("transform_src_to_dst"))
             if tr.get("src") == cs.world:
                 m = np.linalg.inv(m)
-            frame_time[k] = _timestamp(path, f"openlabel.frames.{k}.frame_properties.timestamp", props.get("timestamp"))
+            frame_time[k] = _frame_time(path, k, f)
             ego_t.append(frame_time[k])
             ego_pose.append(m)
             gnss = tr.get("gnss")
@@ -372,8 +390,7 @@ def openlabel_to_clip_document(path: Path, doc: dict) -> tuple[dict, dict[str, s
             objs.append({"track_id": names[uid], "category": category, "x_m": float(p[0]), "y_m": float(p[1])})
             seen_cuboid.add(uid)
         if objs:
-            t = _timestamp(path, f"openlabel.frames.{k}.frame_properties.timestamp",
-                           (f.get("frame_properties") or {}).get("timestamp"))  # fmt: skip
+            t = _frame_time(path, k, f)
             paths[f"annotations.frames[{len(ann_frames)}]"] = f"openlabel.frames.{k}"
             ann_frames.append({"t": t, "objects": objs})
     for uid, obj in objects.items():
