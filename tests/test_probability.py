@@ -1,0 +1,108 @@
+"""Collision probability under a stochastic distribution: both estimators against an analytic value
+(the collision interval that vei risk finds, integrated under the distribution), and importance
+sampling against crude Monte Carlo on the planner's rare failures."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from vei_scenario.cli import main
+from vei_scenario.probability import estimate_probability, wilson
+
+DIST = """<?xml version="1.0" encoding="UTF-8"?>
+<OpenSCENARIO><FileHeader revMajor="1" revMinor="2" date="2024-05-14T00:00:00" description="" author=""/>
+<ParameterValueDistribution><ScenarioFile filepath="scenario.xosc"/>
+<Stochastic numberOfTestRuns="100" randomSeed="7">{body}</Stochastic></ParameterValueDistribution></OpenSCENARIO>"""
+
+
+def _dist(tmp_path, body: str):
+    p = tmp_path / "dist.xosc"
+    p.write_text(DIST.format(body=body))
+    return p
+
+
+def test_estimates_match_the_integral_over_the_risk_interval(compiled, tmp_path):
+    """Replay rider, no planner, TimeShift uniform on [0, 4]: P(collision) is the length of the
+    collision interval (found by vei risk to 0.0025 s) over 4."""
+    from vei_scenario.risk import find_risk
+
+    scenario = compiled["case_study"].written[0]
+    (search,) = find_risk(scenario, None, "collision", ["RiderType=replay", "CapEnabled=false"])
+    ((a, b),) = search.intervals
+    exact = (min(b, 4.0) - max(a, 0.0)) / 4.0
+    uniform = '<UniformDistribution><Range lowerLimit="0" upperLimit="4"/></UniformDistribution>'
+    dist = _dist(tmp_path, f'<StochasticDistribution parameterName="TimeShift">{uniform}</StochasticDistribution>')
+    fixed = {"RiderType": "replay", "CapEnabled": "false"}
+    for e in estimate_probability(scenario, dist, runs=4000, fixed=fixed, seed=3):
+        slack = 0.01 / 4  # the interval's edges are known to a quarter of --tol
+        assert e.low - slack <= exact <= e.high + slack, (e, exact)
+
+
+def test_importance_sampling_agrees_with_monte_carlo_on_rare_failures_and_needs_fewer_runs(compiled, tmp_path):
+    scenario = compiled["case_study"].written[0]
+    dist = _dist(
+        tmp_path,
+        '<StochasticDistribution parameterName="TimeShift"><NormalDistribution expectedValue="2.6" variance="0.36">'
+        '<Range lowerLimit="-1" upperLimit="6"/></NormalDistribution></StochasticDistribution>'
+        '<StochasticDistribution parameterName="RiderType"><ProbabilityDistributionSet>'
+        '<Element value="replay" weight="1"/><Element value="normal" weight="1"/>'
+        '<Element value="aggressive" weight="1"/>'
+        "</ProbabilityDistributionSet></StochasticDistribution>",
+    )
+    mc, imp = estimate_probability(scenario, dist, runs=20000, fixed={"CapEnabled": "true"}, seed=5)
+    assert 0.005 < mc.probability < 0.05  # rare: the planner fails in windows 0.03-0.07 s wide
+    assert mc.low <= imp.probability <= mc.high
+    needed = mc.runs * (mc.width / imp.width) ** 2  # Monte Carlo runs for the importance-sampling width
+    assert needed >= 10 * imp.runs, (needed, imp.runs)
+
+
+def test_wilson_interval_is_sound_at_zero_and_all():
+    lo, hi = wilson(0, 1000)
+    assert lo == 0.0 and 0.003 < hi < 0.004
+    lo, hi = wilson(1000, 1000)
+    assert hi == 1.0 and lo > 0.996
+    lo, hi = wilson(500, 1000)
+    assert math.isclose(0.5 - lo, hi - 0.5, rel_tol=1e-9)
+
+
+def test_bad_probability_requests_are_one_line(compiled, tmp_path, capsys):
+    scenario = str(compiled["case_study"].written[0])
+    det = tmp_path / "det.xosc"
+    det.write_text(
+        DIST.replace(
+            '<Stochastic numberOfTestRuns="100" randomSeed="7">{body}</Stochastic>', "<Deterministic/>"
+        ).format(body="")  # fmt: skip
+    )
+    for argv, needle in (
+        (["--dist", str(det)], "not a stochastic"),
+        (
+            [
+                "--dist",
+                str(
+                    _dist(
+                        tmp_path,
+                        '<StochasticDistribution parameterName="Nope"><UniformDistribution>'
+                        '<Range lowerLimit="0" upperLimit="1"/></UniformDistribution>'
+                        "</StochasticDistribution>",
+                    )
+                ),
+            ],
+            "does not declare",
+        ),  # fmt: skip
+        (["--dist", str(det), "--runs", "5"], "outside"),
+        (["--dist", str(det), "--band", "nan:1"], "finite"),
+    ):
+        assert main(["probability", scenario, *argv]) == 2
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1 and needle in err, err
+
+
+@pytest.mark.parametrize("body", ['<NormalDistribution expectedValue="1" variance="0"/>',
+                                  '<UniformDistribution/>',
+                                  '<LogNormalDistribution expectedValue="-1" variance="1"/>'])  # fmt: skip
+def test_degenerate_distributions_are_refused(compiled, tmp_path, capsys, body):
+    dist = _dist(tmp_path, f'<StochasticDistribution parameterName="TimeShift">{body}</StochasticDistribution>')
+    assert main(["probability", str(compiled["case_study"].written[0]), "--dist", str(dist)]) == 2
+    assert capsys.readouterr().err.count("\n") == 1
