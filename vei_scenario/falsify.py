@@ -1,0 +1,505 @@
+"""``falsify``: search a box of scenario parameters for the failures of the system under test.
+
+Why this shape: the failures of a collision-avoidance planner are thin sets. In the case study the
+planner fails only where the rider's timing (TimeShift) lies in windows 0.007-0.08 s wide, windows that
+move by about 2 s per m/s of the ego's cruise speed. Random or quasi-random points over the whole box
+step over them, and so does a coarse scan (the old ``vei risk`` answered "none found"). The search
+therefore treats one continuous parameter as the *primary* axis (TimeShift when it is searched) and:
+
+1. **Slices.** The other continuous parameters are sampled (evenly spaced for one, a scrambled Sobol
+   sample for several, ``--slices`` per parameter) and crossed with every value of the discrete ones.
+2. **Line search on each slice.** A coarse scan along the primary axis, scored with a continuous
+   robustness value (the minimum box gap, ``-(1 + impact speed)`` on contact, or the margin of a metric
+   target such as ``min_ttc_s<1``), finds failing points directly and, around every local minimum of
+   the robustness below a margin, a bounded Brent minimisation (SciPy) climbs to the failures the scan
+   stepped over. Each failure is bisected to its window's edges (``--tol``).
+3. **Regions.** Windows on neighbouring slices are one region when their intervals overlap, or when a
+   probe on the slice half-way between them finds a window between them (a band that moves faster than
+   its width). Each region's primary edges are the extreme window edges, refined along each other
+   parameter around the slice that holds them.
+4. **Worst case.** Each region's lowest-robustness run (the hardest impact) is written as a
+   fully-resolved ``.xosc`` with a one-line ``vei run`` command that reproduces it.
+
+Runs go through the compiled kernel for vei-compiled scenarios (thousands per second), else the
+interpreter. The search spends a few percent of the runs of a grid of the same resolution
+(``benchmarks/bench_falsify.py`` measures it against a dense grid).
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from vei_scenario.errors import VeiInputError
+
+#: The robustness below which a local minimum of a coarse scan is climbed (the box gap, m).
+CLIMB_BELOW = 2.0
+#: Coarse scan points along the primary axis per slice.
+COARSE_POINTS = 60
+_TARGET = re.compile(r"^\s*([a-z_][a-z0-9_.]*)\s*(<=|>=|<|>)\s*([-+0-9.eE]+)\s*$")
+
+
+@dataclass
+class Axis:
+    name: str
+    low: float = math.nan
+    high: float = math.nan
+    values: list[str] = field(default_factory=list)  # a discrete axis when set
+
+    @property
+    def discrete(self) -> bool:
+        return bool(self.values)
+
+
+@dataclass
+class Window:
+    """A failure interval along the primary axis on one slice."""
+
+    slice_values: dict[str, str]  # every other parameter of the slice
+    slice_point: tuple[float, ...]  # the other continuous values (for neighbours)
+    start: float
+    end: float
+    worst: tuple[float, dict[str, str]] | None = None  # (robustness, parameters) of its worst run
+
+
+@dataclass
+class Region:
+    number: int
+    discrete: dict[str, str]
+    windows: list[Window]
+    primary: str
+    low: float
+    high: float
+    worst_robustness: float
+    worst: dict[str, str]
+
+    def reproduce(self, scenario: str) -> str:
+        params = " ".join(f"--param {k}={v}" for k, v in self.worst.items())
+        return f"vei run {scenario} {params}"
+
+    def as_dict(self, scenario: str) -> dict:
+        return {
+            "region": self.number,
+            "discrete": self.discrete,
+            "primary": self.primary,
+            "edges": [self.low, self.high],
+            "slices": len(self.windows),
+            "windows": [
+                {"at": w.slice_values, "interval": [w.start, w.end]}
+                for w in sorted(self.windows, key=lambda w: w.slice_point)
+            ],
+            "worst": {"parameters": self.worst, "robustness": self.worst_robustness},
+            "reproduce": self.reproduce(scenario),
+        }
+
+
+@dataclass
+class FalsifyResult:
+    scenario: str
+    target: str
+    regions: list[Region]
+    runs: int
+    axes: list[Axis]
+    written: list[Path] = field(default_factory=list)
+
+
+def parse_target(text: str) -> tuple[str, str, float] | None:
+    """``collision`` (None) or ``METRIC<VALUE`` (``<``, ``<=``, ``>``, ``>=``) as (metric, op, value)."""
+    from vei_scenario.metrics import METRICS
+
+    if text == "collision":
+        return None
+    m = _TARGET.match(text)
+    if not m:
+        raise VeiInputError(None, "--target", f"{text!r} is not collision or METRIC<VALUE (e.g. min_ttc_s<1.0)")
+    metric, op, value = m.group(1), m.group(2), float(m.group(3))
+    if metric not in METRICS or metric in ("collision_entities", "ttc_zones_s", "collision"):
+        numeric = [k for k in METRICS if k not in ("collision", "collision_entities", "ttc_zones_s", "near_miss")]
+        raise VeiInputError(None, "--target", f"unknown numeric metric {metric!r} (known: {', '.join(numeric)})")
+    if not math.isfinite(value):
+        raise VeiInputError(None, "--target", f"{text!r}: the value is not finite")
+    return metric, op, value
+
+
+def robustness(metrics: dict, target: tuple[str, str, float] | None) -> float:
+    """Continuous failure margin: negative where the target holds (a failure), lower is worse."""
+    if metrics.get("collision"):
+        return -(1.0 + float(metrics.get("impact_speed_mps") or 0.0))
+    if target is None:
+        return float(metrics["min_gap_m"])
+    metric, op, value = target
+    v = metrics.get(metric)
+    if v is None:  # (never defined: e.g. no TTC when the boxes never approach) far from failing
+        return 1e6
+    margin = float(v) - value if op in ("<", "<=") else value - float(v)
+    if margin == 0:  # on the threshold: a failure only for <= and >=
+        return -1e-12 if op in ("<=", ">=") else 1e-12
+    return margin
+
+
+class _Runner:
+    def __init__(self, scenario: str, fixed: dict[str, str], target, dt: float, workers: int | None) -> None:
+        self.scenario, self.fixed, self.target, self.dt, self.workers = scenario, fixed, target, dt, workers
+        self.runs = 0
+        self.cache: dict[tuple, float] = {}
+
+    def __call__(self, variants: list[dict[str, str]]) -> list[float]:
+        from vei_scenario.sweep.evaluate import evaluate_local
+
+        keys = [tuple(sorted(v.items())) for v in variants]
+        todo = [(k, v) for k, v in zip(keys, variants) if k not in self.cache]
+        if todo:
+            rows = evaluate_local(self.scenario, [{**self.fixed, **v} for _, v in todo], self.dt, self.workers)
+            self.runs += len(rows)
+            for (k, v), r in zip(todo, rows):
+                if r["status"] != "ok":
+                    raise VeiInputError(self.scenario, "variant", f"{v} failed: {r['error']}")
+                self.cache[k] = robustness(r["metrics"], self.target)
+        return [self.cache[k] for k in keys]
+
+
+def _fmt(x: float) -> str:
+    return repr(round(float(x), 6))
+
+
+def _line_search(run: _Runner, base: dict[str, str], primary: Axis, lo: float, hi: float, points: int,
+                 tol: float) -> list[Window]:  # fmt: skip
+    """Failure windows along the primary axis on one slice, between ``lo`` and ``hi``: a coarse scan,
+    then a scan at ``tol`` around every local minimum of the robustness below :data:`CLIMB_BELOW`.
+    (A planner's failure is a notch at the bottom of a dip of the gap, often a discontinuity: a
+    minimiser stalls on the plateau beside it, while a scan at ``tol`` misses no window wider than
+    ``tol``.)"""
+    xs = np.linspace(lo, hi, max(3, points))
+    rho = np.array(run([{**base, primary.name: _fmt(x)} for x in xs]))
+
+    def f(x: float) -> float:
+        return run([{**base, primary.name: _fmt(x)}])[0]
+
+    seeds: list[float] = list(xs[rho < 0])
+    step = xs[1] - xs[0]
+    for i in range(len(xs)):
+        left, right = rho[max(i - 1, 0)], rho[min(i + 1, len(xs) - 1)]
+        if rho[i] >= 0 and rho[i] <= left and rho[i] <= right and rho[i] < CLIMB_BELOW:
+            fine = np.arange(max(lo, xs[i] - step), min(hi, xs[i] + step) + tol / 2, tol)
+            fr = np.array(run([{**base, primary.name: _fmt(x)} for x in fine]))
+            seeds += list(fine[fr < 0])
+    windows: list[Window] = []
+    for s in sorted(seeds):
+        if any(w.start - tol <= s <= w.end + tol for w in windows):
+            continue
+        step = max(step, tol)
+        edges = []
+        for direction in (-1.0, 1.0):  # bisect out to the window's edge on each side
+            inside, d = s, step / 2
+            outside = None
+            while outside is None:
+                probe = min(hi, max(lo, inside + direction * d))
+                if probe == inside:  # the box's edge
+                    break
+                if f(probe) < 0:
+                    inside, d = probe, d * 2
+                else:
+                    outside = probe
+            if outside is not None:
+                while abs(outside - inside) > tol:
+                    mid = 0.5 * (inside + outside)
+                    inside, outside = (mid, outside) if f(mid) < 0 else (inside, mid)
+            edges.append(inside)
+        windows.append(Window(dict(base), (), min(edges), max(edges)))
+    return windows
+
+
+def _slices(cont: list[Axis], per_axis: int, seed: int) -> list[tuple[float, ...]]:
+    if not cont:
+        return [()]
+    if len(cont) == 1:
+        a = cont[0]
+        return [(float(v),) for v in np.linspace(a.low, a.high, per_axis)]
+    from scipy.stats import qmc
+
+    n = per_axis * len(cont)
+    u = qmc.Sobol(len(cont), scramble=True, seed=seed).random(int(2 ** math.ceil(math.log2(n))))[:n]
+    lows, highs = np.array([a.low for a in cont]), np.array([a.high for a in cont])
+    return [tuple(float(v) for v in row) for row in qmc.scale(u, lows, highs)]
+
+
+class _Union:
+    def __init__(self, n: int) -> None:
+        self.parent = list(range(n))
+
+    def find(self, i: int) -> int:
+        while self.parent[i] != i:
+            self.parent[i] = self.parent[self.parent[i]]
+            i = self.parent[i]
+        return i
+
+    def join(self, a: int, b: int) -> None:
+        self.parent[self.find(a)] = self.find(b)
+
+
+def falsify(
+    scenario: str | Path,
+    axes: list[Axis],
+    fixed: dict[str, str] | None = None,
+    target: str = "collision",
+    slices: int = 7,
+    tol: float = 0.005,
+    coarse_points: int = COARSE_POINTS,
+    seed: int = 0,
+    dt: float = 0.01,
+    workers: int | None = None,
+    out_dir: str | Path | None = None,
+) -> FalsifyResult:
+    """Search the box ``axes`` (others at ``fixed`` or their defaults) for failures (``target``)."""
+    from vei_scenario.checks import check_dt, finite
+    from vei_scenario.interpreter.document import load_scenario
+
+    check_dt(dt)
+    finite(tol, "--tol", 1e-5, 10)
+    if not (isinstance(slices, int) and 2 <= slices <= 200):
+        raise VeiInputError(None, "--slices", f"{slices!r} is not a number of slices in 2..200")
+    crit = parse_target(target)
+    scenario = Path(scenario)
+    doc = load_scenario(scenario)
+    fixed = dict(fixed or {})
+    check_axes(scenario, doc, axes, fixed)
+    cont = [a for a in axes if not a.discrete]
+    if not cont:
+        raise VeiInputError(None, "--bounds", "give at least one continuous range (NAME=LOW:HIGH) to search along")
+    primary = next((a for a in cont if a.name == "TimeShift"), cont[0])
+    others = [a for a in cont if a is not primary]
+    discrete = [a for a in axes if a.discrete]
+    run = _Runner(str(scenario.resolve()), fixed, crit, dt, workers)
+    points = _slices(others, slices, seed)
+    combos = [dict(zip([a.name for a in discrete], c)) for c in itertools.product(*(a.values for a in discrete))]
+    regions: list[Region] = []
+    spacing = [(a.high - a.low) / max(slices - 1, 1) for a in others]
+    for combo in combos:
+        windows: list[Window] = []
+        for p in points:
+            base = {**combo, **{a.name: _fmt(v) for a, v in zip(others, p)}}
+            for w in _line_search(run, base, primary, primary.low, primary.high, coarse_points, tol):
+                w.slice_point = p
+                windows.append(w)
+        regions += _regions(run, windows, combo, primary, others, spacing, tol, len(regions))
+    for r in regions:
+        _refine_edges(run, r, primary, others, spacing, tol)
+        _worst(run, r, primary)
+    result = FalsifyResult(str(scenario), target, regions, run.runs, axes)
+    if out_dir is not None:
+        result.written = _write(result, scenario, Path(out_dir), fixed)
+    return result
+
+
+def _regions(run, windows: list[Window], combo, primary: Axis, others: list[Axis], spacing, tol,
+             first: int) -> list[Region]:  # fmt: skip
+    if not windows:
+        return []
+    u = _Union(len(windows))
+
+    def neighbours(a: Window, b: Window) -> bool:
+        if not others:
+            return False
+        d = [abs(x - y) / s if s > 0 else 0.0 for x, y, s in zip(a.slice_point, b.slice_point, spacing)]
+        return 0 < max(d) <= 1.0 + 1e-9 if len(others) == 1 else 0 < math.hypot(*d) <= 1.5
+
+    for i, a in enumerate(windows):
+        for j in range(i + 1, len(windows)):
+            b = windows[j]
+            if not neighbours(a, b):
+                continue
+            if a.start <= b.end + tol and b.start <= a.end + tol:
+                u.join(i, j)
+                continue
+            # not overlapping: a band moving faster than its width? probe the slice half-way between
+            mid = tuple(0.5 * (x + y) for x, y in zip(a.slice_point, b.slice_point))
+            base = {**combo, **{ax.name: _fmt(v) for ax, v in zip(others, mid)}}
+            lo, hi = min(a.start, b.start), max(a.end, b.end)
+            width = max(hi - lo, tol)
+            found = _line_search(run, base, primary, max(primary.low, lo - 0.1 * width),
+                                 min(primary.high, hi + 0.1 * width), 16, tol)  # fmt: skip
+            if any(w.start <= hi and w.end >= lo for w in found):
+                u.join(i, j)
+    groups: dict[int, list[Window]] = {}
+    for i, w in enumerate(windows):
+        groups.setdefault(u.find(i), []).append(w)
+    out = []
+    for k, ws in enumerate(sorted(groups.values(), key=lambda ws: min(w.start for w in ws))):
+        out.append(Region(first + k + 1, dict(combo), ws, primary.name, min(w.start for w in ws),
+                          max(w.end for w in ws), 0.0, {}))  # fmt: skip
+    return out
+
+
+def _window_at(run, base, primary: Axis, near: Window, tol) -> Window | None:
+    width = max(near.end - near.start, tol)
+    lo, hi = max(primary.low, near.start - 2 * width), min(primary.high, near.end + 2 * width)
+    found = _line_search(run, base, primary, lo, hi, 12, tol)
+    return min(found, key=lambda w: abs(0.5 * (w.start + w.end) - 0.5 * (near.start + near.end)), default=None)
+
+
+def _refine_edges(run, r: Region, primary: Axis, others: list[Axis], spacing, tol) -> None:
+    """The region's extreme primary edges between the slices: a golden-section search along each
+    other parameter around the slice that holds the extreme (a band's extreme may lie between)."""
+    if not others:
+        return
+    for side in ("low", "high"):
+        best = min(r.windows, key=lambda w: w.start) if side == "low" else max(r.windows, key=lambda w: w.end)
+        for k, ax in enumerate(others):
+            a = max(ax.low, best.slice_point[k] - spacing[k])
+            b = min(ax.high, best.slice_point[k] + spacing[k])
+            g = (math.sqrt(5) - 1) / 2
+            cache: dict[float, float] = {}
+
+            def edge(v: float, k=k, best=best, side=side) -> float:
+                if v not in cache:
+                    point = list(best.slice_point)
+                    point[k] = v
+                    base = {**r.discrete, **{o.name: _fmt(x) for o, x in zip(others, point)}}
+                    w = _window_at(run, base, primary, best, tol)
+                    cache[v] = math.inf if w is None else (w.start if side == "low" else -w.end)
+                return cache[v]
+
+            for _ in range(8):  # golden section on the edge, ~8 probes
+                c, d = b - g * (b - a), a + g * (b - a)
+                if edge(c) < edge(d):
+                    b = d
+                else:
+                    a = c
+            value = min(cache.values(), default=math.inf)
+            if math.isfinite(value):
+                if side == "low":
+                    r.low = min(r.low, value)
+                else:
+                    r.high = max(r.high, -value)
+
+
+def _worst(run, r: Region, primary: Axis) -> None:
+    """The region's hardest failure: the lowest robustness over a few points inside each window."""
+    best = (math.inf, {})
+    for w in r.windows:
+        xs = np.linspace(w.start, w.end, 5)
+        variants = [{**w.slice_values, primary.name: _fmt(x)} for x in xs]
+        for v, rho in zip(variants, run(variants)):
+            if rho < best[0]:
+                best = (rho, v)
+    r.worst_robustness, r.worst = best[0], {**run.fixed, **best[1]}
+
+
+def check_axes(path: Path, doc, axes: list[Axis], fixed: dict[str, str]) -> None:
+    """Bounds against the declared parameters: known names, finite and non-empty ranges of numeric
+    parameters, values of the declared type, within the declaration's value constraints."""
+    from vei_scenario.interpreter.document import check_type
+
+    seen = set()
+    for a in axes:
+        if a.name not in doc.parameter_types:
+            known = ", ".join(sorted(doc.parameter_types)) or "none"
+            raise VeiInputError(None, "--bounds", f"unknown parameter {a.name!r} (declared: {known})")
+        if a.name in seen or a.name in fixed:
+            raise VeiInputError(None, "--bounds", f"{a.name} is given twice")
+        seen.add(a.name)
+        kind = doc.parameter_types[a.name]
+        if a.discrete:
+            for v in a.values:
+                problem = check_type(kind, v)
+                if problem:
+                    raise VeiInputError(None, "--values", f"{a.name}={v!r} {problem} ({kind} parameter)")
+            continue
+        if kind not in ("double", "int", "integer", "unsignedInt", "unsignedShort"):
+            raise VeiInputError(None, "--bounds", f"{a.name} is a {kind} parameter: give --values, not a range")
+        if not (math.isfinite(a.low) and math.isfinite(a.high)):
+            raise VeiInputError(None, "--bounds", f"{a.name}: bounds must be finite numbers")
+        if not a.low < a.high:
+            raise VeiInputError(None, "--bounds", f"{a.name}={a.low:g}:{a.high:g} is an empty box")
+        for rule, value in doc_constraints(doc, a.name):
+            for bound in (a.low, a.high):
+                if not _satisfies(bound, rule, value):
+                    raise VeiInputError(
+                        None, "--bounds", f"{a.name} bound {bound:g} is outside the declared range ({rule} {value:g})"
+                    )
+    for k, v in fixed.items():
+        if k not in doc.parameter_types:
+            raise VeiInputError(None, "--param", f"unknown parameter {k!r}")
+        problem = check_type(doc.parameter_types[k], v)
+        if problem:
+            raise VeiInputError(None, "--param", f"{k}={v!r} {problem}")
+
+
+def doc_constraints(doc, name: str) -> list[tuple[str, float]]:
+    """(rule, value) of the declaration's ValueConstraints (OpenSCENARIO 1.2 ConstraintGroup)."""
+    out = []
+    for d in doc.root.iterfind("ParameterDeclarations/ParameterDeclaration"):
+        if (d.get("name") or "").lstrip("$") != name:
+            continue
+        for c in d.iterfind("ConstraintGroup/ValueConstraint"):
+            try:
+                out.append((c.get("rule"), float(c.get("value"))))
+            except (TypeError, ValueError):
+                continue
+    return out
+
+
+def _satisfies(x: float, rule: str, value: float) -> bool:
+    return {
+        "greaterThan": x > value,
+        "greaterOrEqual": x >= value,
+        "lessThan": x < value,
+        "lessOrEqual": x <= value,
+        "equalTo": x == value,
+        "notEqualTo": x != value,
+    }.get(rule, True)
+
+
+def parse_bounds(specs: list[str], values: list[str]) -> list[Axis]:
+    axes = []
+    for spec in specs:
+        name, sep, rng = spec.partition("=")
+        parts = rng.split(":")
+        try:
+            low, high = float(parts[0]), float(parts[1])
+        except (IndexError, ValueError):
+            raise VeiInputError(None, "--bounds", f"{spec!r} is not NAME=LOW:HIGH") from None
+        if not sep or len(parts) != 2 or not name.strip():
+            raise VeiInputError(None, "--bounds", f"{spec!r} is not NAME=LOW:HIGH")
+        axes.append(Axis(name.strip(), low, high))
+    for spec in values:
+        name, sep, vals = spec.partition("=")
+        items = [v.strip() for v in vals.split(",")]
+        if not sep or not name.strip() or not all(items):
+            raise VeiInputError(None, "--values", f"{spec!r} is not NAME=V1,V2")
+        axes.append(Axis(name.strip(), values=items))
+    if not axes:
+        raise VeiInputError(None, "--bounds", "nothing to search: give --bounds NAME=LOW:HIGH (and --values)")
+    return axes
+
+
+def _write(result: FalsifyResult, scenario: Path, out: Path, fixed: dict[str, str]) -> list[Path]:
+    from vei_scenario.atomic_io import OutputSet, json_text
+    from vei_scenario.sweep.catalog import variant_xosc
+
+    files = OutputSet()
+    doc = {
+        "scenario": str(scenario),
+        "target": result.target,
+        "runs": result.runs,
+        "fixed": fixed,
+        "box": [
+            {"name": a.name, "values": a.values} if a.discrete else {"name": a.name, "bounds": [a.low, a.high]}
+            for a in result.axes
+        ],
+        "regions": [],
+    }
+    for r in result.regions:
+        rel = f"regions/region_{r.number:02d}_worst.xosc"
+        files.add(out / rel, variant_xosc(scenario, r.worst, out / "regions"))
+        entry = r.as_dict(str(scenario))
+        entry["worst"]["xosc"] = rel
+        doc["regions"].append(entry)
+    files.add(out / "falsify.json", json_text(doc, indent=2) + "\n")
+    files.commit()
+    return files.paths
