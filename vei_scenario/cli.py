@@ -452,7 +452,22 @@ def build_parser() -> argparse.ArgumentParser:
     )
     st.set_defaults(func=_cmd_study)
 
-    sw = sub.add_parser("sweep", help="run a catalog of parameter variants; catalog.csv/json and report.html")
+    sw = sub.add_parser(
+        "sweep",
+        help="run a catalog of parameter variants; catalog.csv/json and report.html",
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+        description="Run every variant (the cartesian product of --vary, or a --dist file) and write:\n"
+        "  catalog.csv / catalog.json  one row per variant: its parameters and every metric of vei run\n"
+        "  report.html  first a table per configuration (the varied parameters but TimeShift): variants,\n"
+        "      collisions, whether the planner was on (CapEnabled), the lowest safety index S, the longest\n"
+        "      time in the TTC alert zone and the lowest minimum TTC; configurations that collide with the\n"
+        "      planner on come first, and every such collision (a failure of the system under test) is\n"
+        "      listed with the command that reproduces it. Then plots over TimeShift: S (share of the run\n"
+        "      outside the alert and collision zones; 0 on contact), the minimum 2-D TTC (time until the\n"
+        "      boxes touch at constant velocities) and the minimum gap between the boxes, collision\n"
+        "      regions shaded; then the most severe collisions (by impact speed, the relative speed at\n"
+        "      first contact) and the closest passes (by minimum gap, then TTC).",
+    )
     sw.add_argument("scenario", help="OpenSCENARIO file (.xosc)")
     sw.add_argument(
         "--vary",
@@ -485,7 +500,15 @@ def build_parser() -> argparse.ArgumentParser:
     sw.add_argument("--osi-format", choices=("mcap", "osi"), default="mcap", help="trace format (default mcap)")
     sw.set_defaults(func=_cmd_sweep)
 
-    rk = sub.add_parser("risk", help="find the TimeShift intervals of collisions or near misses (bisection)")
+    rk = sub.add_parser(
+        "risk",
+        help="find the TimeShift intervals of collisions or near misses (exhaustive scan and bisection)",
+        description="For each combination of --vary, the TimeShift intervals (s, the rider's delay against the "
+        "recording) where the target holds: a collision, or a near miss (minimum 2-D TTC within --band, no "
+        "contact). With the compiled kernel the window is scanned at --tol, so no interval as wide as --tol is "
+        "missed, and edges are bisected to a quarter of it; [N runs] counts the simulations. risk.json and the "
+        "start/middle/end scenario of every interval are written with -o.",
+    )
     rk.add_argument("scenario", help="vei-compiled OpenSCENARIO file (.xosc)")
     rk.add_argument(
         "--target",

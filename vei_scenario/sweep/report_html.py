@@ -113,6 +113,7 @@ def report_html(
         f"{len(failed)} failed. dt {meta['dt_s']} s. Varied: "
         f"{html.escape(', '.join(param_label(v) for v in varied) or 'nothing')}.</p>",
     ]
+    parts += _configurations(ok, varied, meta)
     if plots is None:
         plots = render_plots(plot_inputs(rows, varied))
     for (metric, label), (png, missing) in zip(SERIES, plots):
@@ -165,6 +166,73 @@ def report_html(
         parts.append("</ul>")
     parts.append("</body></html>\n")
     return "".join(parts)
+
+
+def _planner_on(r: dict) -> bool:
+    return str(r["parameters"].get("CapEnabled", "")).lower() == "true"
+
+
+def reproduce(scenario: str, r: dict, varied: list[str]) -> str:
+    """The one-line command that replays a variant (its varied parameters; the rest are the file's)."""
+    return f"vei run {scenario} " + " ".join(f"--param {p}={r['parameters'][p]}" for p in varied)
+
+
+def _configurations(ok: list[dict], varied: list[str], meta: dict) -> list[str]:
+    """A table per configuration (the varied parameters but the plotted x), the configurations with
+    collisions under the planner first: those are failures of the system under test, the rows a
+    safety engineer reads first; then every such failure with the command that reproduces it."""
+    x = "TimeShift" if "TimeShift" in varied else None
+    keys = [p for p in varied if p != x]
+    groups: dict[tuple, list[dict]] = {}
+    for r in ok:
+        groups.setdefault(tuple(r["parameters"][p] for p in keys), []).append(r)
+    has_planner = any("CapEnabled" in r["parameters"] for r in ok)
+
+    def summary(key, sel):
+        m = [r["metrics"] for r in sel]
+        coll = [r for r in sel if r["metrics"].get("collision")]
+        on = has_planner and all(_planner_on(r) for r in sel)
+        s = [v["safety_index"] for v in m if v.get("safety_index") is not None]
+        alert = [v["ttc_zones_s"]["alert"] for v in m if v.get("ttc_zones_s")]
+        ttc = [v["min_ttc_s"] for v in m if v.get("min_ttc_s") is not None]
+        return (0 if (on and coll) else 1 if coll else 2, -len(coll), key), key, sel, coll, on, s, alert, ttc
+
+    rows = sorted((summary(k, v) for k, v in groups.items()), key=lambda t: t[0])
+    out = ["<h2>Per configuration</h2>", "<p class='note'>Configurations whose variants collide with the "
+           "collision-avoidance planner on (CapEnabled=true) come first: those collisions are failures of the "
+           "system under test. Without the planner a collision is the scenario's own risk.</p>",
+           "<table><tr>", *(f"<th>{html.escape(param_label(p))}</th>" for p in keys),
+           "<th>variants</th><th>collisions</th><th>planner</th><th>min S</th><th>max alert (s)</th>"
+           "<th>min TTC (s)</th></tr>"]  # fmt: skip
+    for _, key, sel, coll, on, s, alert, ttc in rows:
+        cls = " class=coll" if on and coll else ""
+        out.append(
+            "<tr>" + "".join(f"<td>{html.escape(str(v))}</td>" for v in key)
+            + f"<td>{len(sel)}</td><td{cls}>{len(coll)}</td><td>{'on' if on else 'off' if has_planner else '–'}</td>"
+            f"<td>{_cell(min(s) if s else None)}</td><td>{_cell(max(alert) if alert else None)}</td>"
+            f"<td>{_cell(min(ttc) if ttc else None)}</td></tr>"
+        )  # fmt: skip
+    out.append("</table>")
+    failures = sorted((r for r in ok if r["metrics"].get("collision") and _planner_on(r)), key=_severity)
+    if has_planner:
+        out.append(f"<h2>Failures of the system under test ({len(failures)} collisions with the planner on)</h2>")
+        if failures:
+            out.append("<table><tr><th>#</th><th>impact speed (m/s)</th><th>t coll (s)</th><th>reproduce</th>"
+                       "<th>scenario</th></tr>")  # fmt: skip
+            for r in failures[:200]:
+                m = r["metrics"]
+                link = f"<a href='{html.escape(r['xosc'])}'>{html.escape(r['xosc'])}</a>" if r.get("xosc") else ""
+                out.append(
+                    f"<tr><td>{r['variant']}</td><td>{_cell(m.get('impact_speed_mps'))}</td>"
+                    f"<td>{_cell(m.get('collision_time_s'))}</td>"
+                    f"<td><code>{html.escape(reproduce(meta['scenario'], r, varied))}</code></td><td>{link}</td></tr>"
+                )
+            out.append("</table>")
+            if len(failures) > 200:
+                out.append(f"<p class='note'>{len(failures) - 200} more in catalog.csv.</p>")
+        else:
+            out.append("<p>None: the planner avoided every collision it was given.</p>")
+    return out
 
 
 def _is_number(s: str) -> bool:

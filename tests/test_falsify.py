@@ -1,0 +1,82 @@
+"""Falsification: the planner's failure windows found by the search equal those of the exhaustive
+one-parameter search (vei risk), the worst scenarios reproduce, and bad requests are one line."""
+
+from __future__ import annotations
+
+import pytest
+
+from vei_scenario.cli import main
+from vei_scenario.falsify import Axis, falsify, robustness
+
+
+@pytest.fixture(scope="module")
+def scenario(compiled):
+    return str(compiled["case_study"].written[0])
+
+
+def test_search_finds_the_planners_three_windows_and_they_reproduce(scenario, tmp_path):
+    from vei_scenario.interpreter import run_scenario
+    from vei_scenario.risk import find_risk
+
+    riders = ["replay", "normal", "aggressive"]
+    result = falsify(scenario, [Axis("TimeShift", -1, 5), Axis("RiderType", values=riders)], {"CapEnabled": "true"},
+                     tol=0.0025, out_dir=tmp_path)  # fmt: skip
+    assert len(result.regions) == 3
+    for rider in riders:
+        (reference,) = find_risk(scenario, None, "collision", [f"RiderType={rider}", "CapEnabled=true"])
+        (a, b), (region,) = reference.intervals[0], [r for r in result.regions if r.discrete["RiderType"] == rider]
+        assert abs(region.low - a) <= 0.005 and abs(region.high - b) <= 0.005, (rider, region, reference)
+        run = run_scenario(tmp_path / f"regions/region_{region.number:02d}_worst.xosc")
+        assert any(run.collisions), rider  # the written worst case collides as it stands
+    assert result.runs < 0.3 * 3 * 1201  # far fewer than a scan at 0.005 s
+
+
+def test_a_metric_target_finds_the_near_misses_around_the_collisions(scenario):
+    result = falsify(scenario, [Axis("TimeShift", 2.5, 3.6), Axis("RiderType", values=["normal"])],
+                     {"CapEnabled": "true"}, target="min_ttc_s<0.8", tol=0.005)  # fmt: skip
+    assert result.regions
+    collision = falsify(scenario, [Axis("TimeShift", 2.5, 3.6), Axis("RiderType", values=["normal"])],
+                        {"CapEnabled": "true"}, tol=0.005)  # fmt: skip
+    (c,) = collision.regions
+    assert any(r.low <= c.low and r.high >= c.high for r in result.regions)  # TTC < 0.8 s contains the contact
+
+
+def test_robustness_is_negative_exactly_on_failures():
+    assert robustness({"collision": True, "impact_speed_mps": 3.0}, None) == -4.0
+    assert robustness({"collision": False, "min_gap_m": 0.4}, None) == 0.4
+    assert robustness({"collision": False, "min_ttc_s": 0.9}, ("min_ttc_s", "<", 1.0)) == pytest.approx(-0.1)
+    assert robustness({"collision": False, "min_ttc_s": 1.0}, ("min_ttc_s", "<", 1.0)) > 0
+    assert robustness({"collision": False, "min_ttc_s": 1.0}, ("min_ttc_s", "<=", 1.0)) < 0
+    assert robustness({"collision": False, "min_ttc_s": None}, ("min_ttc_s", "<", 1.0)) > 0
+
+
+def test_bad_falsification_requests_are_one_line(scenario, tmp_path, capsys):
+    constrained = tmp_path / "c.xosc"
+    text = (
+        open(scenario)
+        .read()
+        .replace(
+            '<ParameterDeclaration name="TimeShift" parameterType="double" value="0"/>',
+            '<ParameterDeclaration name="TimeShift" parameterType="double" value="0"><ConstraintGroup>'
+            '<ValueConstraint rule="greaterOrEqual" value="-2"/></ConstraintGroup></ParameterDeclaration>',
+        )
+    )
+    constrained.write_text(text)
+    (tmp_path / "scenario.xodr").write_bytes(
+        (__import__("pathlib").Path(scenario).parent / "scenario.xodr").read_bytes()
+    )
+    cases = [
+        ([scenario, "--bounds", "TimeShift=3:3"], "empty box"),
+        ([scenario, "--bounds", "TimeShift=nan:3"], "finite"),
+        ([scenario, "--bounds", "Nope=0:1"], "unknown parameter"),
+        ([scenario, "--bounds", "RiderType=0:1"], "give --values"),
+        ([scenario, "--bounds", "TimeShift=0:1", "--target", "bogus_metric<3"], "unknown numeric metric"),
+        ([scenario, "--bounds", "TimeShift=0:1", "--target", "min_ttc_s<1e400"], "not finite"),
+        ([scenario, "--values", "RiderType=replay"], "at least one continuous range"),
+        ([str(constrained), "--bounds", "TimeShift=-5:1"], "outside the declared range"),
+        ([scenario, "--bounds", "TimeShift=0:1", "--slices", "1"], "outside"),
+    ]
+    for argv, needle in cases:
+        assert main(["falsify", *argv]) == 2, argv
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1 and needle in err, (argv, err)
