@@ -57,7 +57,7 @@ def grid_regions(scenario: str, ts: np.ndarray, cruise: np.ndarray, riders: list
         nodes = [(i, w) for i, ws in enumerate(rows) for w in ws]
         parent = list(range(len(nodes)))
 
-        def find(a: int) -> int:
+        def find(a: int, parent=parent) -> int:
             while parent[a] != a:
                 parent[a] = parent[parent[a]]
                 a = parent[a]

@@ -563,7 +563,12 @@ def build_parser() -> argparse.ArgumentParser:
     pr.add_argument("scenario", help="OpenSCENARIO file (.xosc)")
     pr.add_argument("--dist", required=True, help="stochastic ParameterValueDistribution file")
     pr.add_argument("--target", choices=("collision", "near-miss"), default="collision", help="what counts")
-    pr.add_argument("--estimator", choices=("monte-carlo", "importance-sampling", "both"), default="both")
+    pr.add_argument(
+        "--estimator",
+        choices=("monte-carlo", "importance-sampling", "both"),
+        default="both",
+        help="which estimate(s) to make (default both, with how many Monte Carlo runs the same width would take)",
+    )
     pr.add_argument("--runs", type=_number(100, 10_000_000, integer=True), default=20000, help="runs per estimator")
     pr.add_argument("--param", action="append", default=[], metavar="NAME=VALUE", help="fix a parameter")
     pr.add_argument("--band", type=_pair, default=(0.5, 1.5), help="near-miss band of the minimum TTC, s")

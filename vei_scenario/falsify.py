@@ -355,7 +355,7 @@ def _refine_edges(run, r: Region, primary: Axis, others: list[Axis], spacing, to
             g = (math.sqrt(5) - 1) / 2
             cache: dict[float, float] = {}
 
-            def edge(v: float, k=k, best=best, side=side) -> float:
+            def edge(v: float, k=k, best=best, side=side, cache=cache) -> float:
                 if v not in cache:
                     point = list(best.slice_point)
                     point[k] = v
