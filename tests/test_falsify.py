@@ -80,3 +80,41 @@ def test_bad_falsification_requests_are_one_line(scenario, tmp_path, capsys):
         assert main(["falsify", *argv]) == 2, argv
         err = capsys.readouterr().err
         assert err.count("\n") == 1 and needle in err, (argv, err)
+
+
+@pytest.fixture(scope="module")
+def with_models(tmp_path_factory):
+    from conftest import EXAMPLES
+
+    out = tmp_path_factory.mktemp("models") / "scenario.xosc"
+    assert main(["compile", str(EXAMPLES / "case_study" / "clip.json"), "-o", str(out), "--model-parameters"]) == 0
+    return str(out)
+
+
+def test_model_parameters_vary_per_variant_in_the_kernel_as_in_the_interpreter(with_models):
+    """A scenario that declares the planner's and the rider's model parameters: the compiled kernel
+    runs each set of values as vei run does (metrics identical)."""
+    from vei_scenario.sweep.evaluate import _native_engine, evaluate_local, evaluate_variant
+
+    assert _native_engine(with_models, 0.01) is not None
+    variants = [
+        {"TimeShift": ts, "RiderType": rider, "CapEnabled": "true", "PlannerTimeHeadway": th, "RiderDesiredSpeed": v0,
+         "PlannerMaxDecel": a}
+        for ts, rider, th, v0, a in [("2.2", "normal", "0.5", "3.5", "6"), ("2.95", "aggressive", "2", "4.36", "4"),
+                                     ("2.95", "normal", "1", "4.36", "6"), ("2.2", "normal", "2", "5", "8")]
+    ]  # fmt: skip
+    kernel = evaluate_local(with_models, variants, 0.01, workers=2)
+    gaps = set()
+    for v, row in zip(variants, kernel):
+        assert row["metrics"] == evaluate_variant(with_models, v, 0.01)["metrics"], v
+        gaps.add(row["metrics"]["min_gap_m"])
+    assert len(gaps) == len(variants)  # the values change the outcome
+
+
+def test_falsify_searches_a_model_parameter(with_models):
+    result = falsify(with_models, [Axis("TimeShift", 2.5, 3.5), Axis("PlannerTimeHeadway", 0.5, 1.5),
+                                   Axis("RiderType", values=["normal"])], {"CapEnabled": "true"}, slices=4)  # fmt: skip
+    assert result.regions
+    headways = {float(w.slice_values["PlannerTimeHeadway"]) for r in result.regions for w in r.windows}
+    assert len(headways) >= 2 and min(headways) == 0.5  # failures at several headways, searched in the kernel
+    assert result.runs < 2000

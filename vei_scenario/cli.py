@@ -79,6 +79,7 @@ def _cmd_compile(args: argparse.Namespace) -> int:
         no_map=args.no_map,
         threat=args.threat,
         variants_dir=Path(args.variants) if args.variants else None,
+        model_parameters=args.model_parameters,
     )
     result = compile_clip(args.clip, args.output, opts)
     print(compile_report(result))
@@ -286,10 +287,12 @@ def _cmd_risk(args: argparse.Namespace) -> int:
 
 
 def _cmd_falsify(args: argparse.Namespace) -> int:
-    from vei_scenario.falsify import falsify, parse_bounds
+    from vei_scenario.falsify import bounds_from_distribution, falsify, parse_bounds
     from vei_scenario.runner import parse_param_overrides
 
-    axes = parse_bounds(args.bounds, args.values)
+    axes = bounds_from_distribution(args.dist) if args.dist else []
+    given = parse_bounds(args.bounds, args.values) if (args.bounds or args.values or not axes) else []
+    axes = [a for a in axes if a.name not in {g.name for g in given}] + given  # the command line wins
     result = falsify(
         args.scenario, axes, parse_param_overrides(args.param), args.target, args.slices, args.tol,
         seed=args.seed, dt=args.dt, workers=args.workers, out_dir=args.output,
@@ -399,6 +402,12 @@ def build_parser() -> argparse.ArgumentParser:
     c.add_argument("--no-map", action="store_true", help="ignore any map and fit a road to the ego track")
     c.add_argument("--threat", help="track id of the threat scooter (default: smallest conflict margin)")
     c.add_argument("--variants", metavar="DIR", help="also write one fully resolved .xosc per variation into DIR")
+    c.add_argument(
+        "--model-parameters",
+        action="store_true",
+        help="also declare the rider's and the planner's model parameters (RiderDesiredSpeed, RiderRepulsion, "
+        "PlannerTimeHeadway, PlannerMaxDecel, PlannerStandstillGap) so that sweeps and vei falsify vary them",
+    )
     c.set_defaults(func=_cmd_compile)
 
     ex = sub.add_parser("examples", help="copy the bundled example clips (and their map) into a directory")
@@ -540,6 +549,7 @@ def build_parser() -> argparse.ArgumentParser:
     fz.add_argument("scenario", help="OpenSCENARIO file (.xosc)")
     fz.add_argument("--bounds", action="append", default=[], metavar="NAME=LOW:HIGH", help="a continuous range")
     fz.add_argument("--values", action="append", default=[], metavar="NAME=V1,V2", help="a discrete set")
+    fz.add_argument("--dist", help="take the box from a ParameterValueDistribution (ranges and value sets)")
     fz.add_argument("--param", action="append", default=[], metavar="NAME=VALUE", help="fix a parameter")
     fz.add_argument("--target", default="collision", help="collision (default) or METRIC<VALUE, e.g. min_ttc_s<1.0")
     fz.add_argument("--slices", type=_number(2, 200, integer=True), default=7, help="slices per other range")

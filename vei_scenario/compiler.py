@@ -43,6 +43,8 @@ class CompileOptions:
     threat: str | None = None
     variants_dir: Path | None = None
     smooth: bool = True
+    #: declare the rider's and the planner's model parameters as scenario parameters (MODEL_PARAMETERS)
+    model_parameters: bool = False
 
 
 @dataclass
@@ -137,7 +139,9 @@ def compile_clip(clip_path: str | Path, output: str | Path, options: CompileOpti
                 notes.append(f"track {tid}: not observed for {b - a:.1f} s (t = {a:.1f}..{b:.1f} s); spline-bridged")
         stem = output.stem
         xodr_path = output.with_suffix(".xodr")
-        model = _with_road_file(build_model(rec, threat=opts.threat, name=stem), xodr_path.name)
+        model = _with_road_file(
+            build_model(rec, threat=opts.threat, name=stem, expose_models=opts.model_parameters), xodr_path.name
+        )
         xodr_bytes = _finish_road_network(road, rec)
     except BaseException:
         road.cancel()

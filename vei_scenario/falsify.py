@@ -39,6 +39,8 @@ from vei_scenario.errors import VeiInputError
 
 #: The robustness below which a local minimum of a coarse scan is climbed (the box gap, m).
 CLIMB_BELOW = 2.0
+#: What an edge search scores where it finds no window (finite: the minimiser does arithmetic on it).
+NO_WINDOW = 1e9
 #: Coarse scan points along the primary axis per slice.
 COARSE_POINTS = 60
 _TARGET = re.compile(r"^\s*([a-z_][a-z0-9_.]*)\s*(<=|>=|<|>)\s*([-+0-9.eE]+)\s*$")
@@ -343,8 +345,10 @@ def _window_at(run, base, primary: Axis, near: Window, tol) -> Window | None:
 
 
 def _refine_edges(run, r: Region, primary: Axis, others: list[Axis], spacing, tol) -> None:
-    """The region's extreme primary edges between the slices: a golden-section search along each
-    other parameter around the slice that holds the extreme (a band's extreme may lie between)."""
+    """The region's extreme primary edges between the slices: a bounded Brent search (SciPy) along
+    each other parameter around the slice that holds the extreme (a band's extreme may lie between)."""
+    from scipy.optimize import minimize_scalar
+
     if not others:
         return
     for side in ("low", "high"):
@@ -352,7 +356,6 @@ def _refine_edges(run, r: Region, primary: Axis, others: list[Axis], spacing, to
         for k, ax in enumerate(others):
             a = max(ax.low, best.slice_point[k] - spacing[k])
             b = min(ax.high, best.slice_point[k] + spacing[k])
-            g = (math.sqrt(5) - 1) / 2
             cache: dict[float, float] = {}
 
             def edge(v: float, k=k, best=best, side=side, cache=cache) -> float:
@@ -361,17 +364,14 @@ def _refine_edges(run, r: Region, primary: Axis, others: list[Axis], spacing, to
                     point[k] = v
                     base = {**r.discrete, **{o.name: _fmt(x) for o, x in zip(others, point)}}
                     w = _window_at(run, base, primary, best, tol)
-                    cache[v] = math.inf if w is None else (w.start if side == "low" else -w.end)
+                    cache[v] = NO_WINDOW if w is None else (w.start if side == "low" else -w.end)
                 return cache[v]
 
-            for _ in range(8):  # golden section on the edge, ~8 probes
-                c, d = b - g * (b - a), a + g * (b - a)
-                if edge(c) < edge(d):
-                    b = d
-                else:
-                    a = c
-            value = min(cache.values(), default=math.inf)
-            if math.isfinite(value):
+            edge(best.slice_point[k])  # (the slice's own edge: the search can only improve on it)
+            if b > a:
+                minimize_scalar(edge, bounds=(a, b), method="bounded", options={"maxiter": 10, "xatol": 1e-3 * (b - a)})
+            value = min(cache.values(), default=NO_WINDOW)
+            if value < NO_WINDOW:
                 if side == "low":
                     r.low = min(r.low, value)
                 else:
@@ -475,6 +475,36 @@ def parse_bounds(specs: list[str], values: list[str]) -> list[Axis]:
         axes.append(Axis(name.strip(), values=items))
     if not axes:
         raise VeiInputError(None, "--bounds", "nothing to search: give --bounds NAME=LOW:HIGH (and --values)")
+    return axes
+
+
+def bounds_from_distribution(path: str | Path) -> list[Axis]:
+    """The box a ParameterValueDistribution spans: a range (deterministic DistributionRange, or the
+    Range of a stochastic distribution) is a continuous axis, a set of values a discrete one."""
+    from vei_scenario.safe_xml import float_attribute, parse_xml
+
+    path = Path(path)
+    root = parse_xml(path).getroot()
+    pvd = root.find("ParameterValueDistribution")
+    if root.tag != "OpenSCENARIO" or pvd is None:
+        raise VeiInputError(path, f"line {root.sourceline}", "not an OpenSCENARIO ParameterValueDistribution file")
+    axes: list[Axis] = []
+    for d in pvd.iter("DeterministicSingleParameterDistribution", "StochasticDistribution"):
+        name = d.get("parameterName")
+        kind = next((c for c in d if isinstance(c.tag, str)), None)
+        if kind is None:
+            continue
+        rng = kind.find("Range")
+        if kind.tag in ("DistributionSet", "ProbabilityDistributionSet"):
+            axes.append(Axis(name, values=[e.get("value") for e in kind.iterfind("Element")]))
+        elif rng is not None:
+            axes.append(Axis(name, float_attribute(path, rng, "lowerLimit"), float_attribute(path, rng, "upperLimit")))
+        else:
+            raise VeiInputError(
+                path, f"line {kind.sourceline}", f"<{kind.tag}> of {name} has no Range: give --bounds {name}=LOW:HIGH"
+            )
+    if not axes:
+        raise VeiInputError(path, f"line {pvd.sourceline}", "no parameter distributions to take bounds from")
     return axes
 
 

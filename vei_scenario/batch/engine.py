@@ -12,7 +12,7 @@ Scenarios of another structure raise :class:`NotBatchable`; callers fall back to
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 from pathlib import Path
 
 import numpy as np
@@ -28,8 +28,8 @@ from vei_scenario.interpreter.engine import Simulation
 from vei_scenario.interpreter.entities import Polyline
 from vei_scenario.interpreter.storyboard import compare
 from vei_scenario.models.boxes import boxes_overlap, time_to_contact
-from vei_scenario.models.cap import cap_step_arrays
-from vei_scenario.models.sfm import sfm_step_arrays
+from vei_scenario.models.cap import CapParameters, cap_step_arrays
+from vei_scenario.models.sfm import SfmParameters, sfm_step_arrays
 from vei_scenario.models.vehicle import longitudinal_step_arrays
 from vei_scenario.safe_xml import parse_xml
 
@@ -263,6 +263,16 @@ class BatchScenario:
         self.stop_raw = (stop, stop.get("value"))
         self.rider_raw = self._prop(self.threat, "riderType")
         self.enabled_raw = self._prop(self.ego, "enabled")
+        # model properties that read a parameter ($Name): resolved per variant, one kernel scene per set
+        self.model_raw = {
+            which: {
+                name: raw
+                for name in (f.name for f in fields(cls))
+                if (raw := self._prop_or_none(entity, name)) is not None and "$" in raw[1]
+            }
+            for which, entity, cls in (("cap", self.ego, CapParameters), ("sfm", self.threat, SfmParameters))
+        }
+        self.model_varies = any(self.model_raw.values())
         self.cruise_raw = self._prop(self.ego, "cruiseSpeed")
 
     def accepts(self, values: dict[str, str]) -> bool:
@@ -280,9 +290,37 @@ class BatchScenario:
                     return False
                 known.add(item)
         try:
+            if self.model_varies:
+                self.model_params(values)  # (a value the models refuse: the interpreter says which)
             return self._resolved(self.rider_raw, scope) in RIDER_TYPES
         except Exception:  # noqa: BLE001 - anything unresolvable is for the interpreter to report
             return False
+
+    def _prop_or_none(self, entity: str, name: str):
+        try:
+            return self._prop(entity, name)
+        except NotBatchable:
+            return None
+
+    def model_key(self, values: dict[str, str]) -> tuple:
+        """What a variant's values make of the model properties that read parameters (() when none do)."""
+        if not self.model_varies:
+            return ()
+        scope = {**self.defaults, **values}
+        return tuple(self._resolved(raw, scope) for which in ("cap", "sfm") for raw in self.model_raw[which].values())
+
+    def model_params(self, values: dict[str, str]):
+        """(CapParameters, SfmParameters) of a variant: the file's, with properties that read a
+        parameter resolved in the variant's values. ValueError for values the models refuse."""
+        if not self.model_varies:
+            return self.cap_params, self.sfm_params
+        scope = {**self.defaults, **values}
+        out = []
+        for which, base in (("cap", self.cap_params), ("sfm", self.sfm_params)):
+            props = {k: str(v) for k, v in base.properties().items()}
+            props.update({k: self._resolved(raw, scope) for k, raw in self.model_raw[which].items()})
+            out.append(type(base).from_properties(props))
+        return tuple(out)
 
     def _prop(self, entity: str, name: str):
         for obj in self.raw.iterfind("Entities/ScenarioObject"):
@@ -326,6 +364,20 @@ class BatchScenario:
         )
 
     def run(self, variants: list[dict[str, str]]) -> BatchResult:
+        """The variants as arrays; they share the model parameters (group them by :meth:`model_key`)."""
+        if not self.model_varies:
+            return self._run(variants)
+        if len({self.model_key(v) for v in variants}) > 1:
+            raise ValueError("variants with different model parameters: run each model_key group on its own")
+        saved = self.cap_params, self.sfm_params, self.margin
+        self.cap_params, self.sfm_params = self.model_params(variants[0])
+        self.margin = self.cap_params.corridor_margin_m
+        try:
+            return self._run(variants)
+        finally:
+            self.cap_params, self.sfm_params, self.margin = saved
+
+    def _run(self, variants: list[dict[str, str]]) -> BatchResult:
         dt, V, E = self.dt, len(variants), len(self.names)
         r = self.resolve(variants)
         duration, rider, sfm_on, cap_on, cruise, delays = (

@@ -180,7 +180,7 @@ class NativeBatch:
         if self.lib is None:
             raise NotBatchable("no C compiler for the compiled kernel")
         self._keep: list = []
-        self._scene_cache: dict[float, _Scene] = {}
+        self._scene_cache: dict[tuple, _Scene] = {}
         self._scene_lock = threading.Lock()  # prepare() may run on several threads
 
     def _arr(self, values) -> np.ndarray:
@@ -193,11 +193,12 @@ class NativeBatch:
         t = self._arr(poly.ts) if timed else None
         return _Polyline(_ptr(x), _ptr(y), _ptr(h), _ptr(t) if t is not None else None, _ptr(s), len(poly.xs))
 
-    def _scene(self, duration: float) -> _Scene:
+    def _scene(self, duration: float, model: tuple = (), params=None) -> _Scene:
+        """The scene of a duration and a set of model parameters (``model``: BatchScenario.model_key)."""
         with self._scene_lock:
-            return self._scene_cache.get(duration) or self._build_scene(duration)
+            return self._scene_cache.get((duration, model)) or self._build_scene(duration, model, params)
 
-    def _build_scene(self, duration: float) -> _Scene:
+    def _build_scene(self, duration: float, model: tuple = (), params=None) -> _Scene:
         b, cfg, dt = self.batch, self.cfg, self.batch.dt
         if not duration >= 0:
             raise NotBatchable("negative duration")
@@ -246,8 +247,8 @@ class NativeBatch:
             ew,
             tl,
             tw,
-            (_D * 10)(*b.cap_params.properties().values()),
-            (_D * 10)(*b.sfm_params.properties().values()),
+            (_D * 10)(*(params[0] if params else b.cap_params).properties().values()),
+            (_D * 10)(*(params[1] if params else b.sfm_params).properties().values()),
             (_D * 3)(b.limits.max_accel_mps2, b.limits.max_decel_mps2, b.limits.jerk_max_mps3),
             metric_dt,
             cfg.safe_ttc_s,
@@ -261,20 +262,34 @@ class NativeBatch:
             0.5 * (math.hypot(el, ew) + math.hypot(tl, tw)),
             (0.5 * ew + 0.5 * math.hypot(tl, tw)) * (1.0 + 1e-9) + 1e-12,
         )
-        self._scene_cache[duration] = scene
+        self._scene_cache[(duration, model)] = scene
         return scene
 
     def prepare(self, variants: list[dict[str, str]]) -> tuple[_Scene, ctypes.Array]:
-        """The kernel's input for ``variants`` (Python work: do it before handing runs to threads)."""
+        """The kernel's input for ``variants`` (Python work: do it before handing runs to threads); they
+        share their model parameters (see :meth:`groups`)."""
         b = self.batch
         r = b.resolve(variants)
+        model, params = (), None
+        if b.model_varies:
+            keys = {b.model_key(v) for v in variants}
+            if len(keys) > 1:
+                raise ValueError("variants with different model parameters: prepare each group of groups()")
+            model, params = keys.pop(), b.model_params(variants[0])
         arr = (_Variant * len(variants))()
         # filled column by column through a numpy view of the struct array (the C layout)
         view = np.frombuffer(arr, dtype=_VARIANT_DTYPE)
         view["cap_on"], view["sfm_on"], view["repulsive"] = r.cap_on, r.sfm_on, r.rider == "normal"
         view["cruise"], view["offset"] = r.cruise_mps, r.delays[b.threat]
         view["ego_speed0"], view["threat_speed0"] = r.init_speed[b.ego], r.init_speed[b.threat]
-        return self._scene(r.duration), arr
+        return self._scene(r.duration, model, params), arr
+
+    def groups(self, indices: list[int], variants: list[dict[str, str]], size: int = 500) -> list[list[int]]:
+        """``indices`` of ``variants`` in tasks of at most ``size`` that share their model parameters."""
+        by: dict[tuple, list[int]] = {}
+        for i in indices:
+            by.setdefault(self.batch.model_key(variants[i]), []).append(i)
+        return [g[k : k + size] for g in by.values() for k in range(0, len(g), size)]
 
     def run(self, prepared, threads: int = 1, record: bool = False):
         """(outputs (V, 19), trajectories (V, 10, T) or None) of prepared variants, on ``threads``
@@ -305,8 +320,12 @@ class NativeBatch:
 
     def metrics(self, variants: list[dict[str, str]], threads: int = 1) -> list[dict]:
         """``vei run``'s metrics of every variant (the same dicts as :func:`compute_metrics`)."""
-        out, _ = self.run(self.prepare(variants), threads)
-        return self.rows(out)
+        rows: list[dict | None] = [None] * len(variants)
+        for task in self.groups(list(range(len(variants))), variants, len(variants) or 1):
+            out, _ = self.run(self.prepare([variants[i] for i in task]), threads)
+            for i, m in zip(task, self.rows(out)):
+                rows[i] = m
+        return rows
 
     def rows(self, out: np.ndarray) -> list[dict]:
         return metric_rows(out, (self.batch.ego, self.batch.threat))

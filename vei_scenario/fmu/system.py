@@ -98,8 +98,9 @@ def closed_loop(scenario: str | Path, values: dict[str, str] | None = None, dt: 
 
     ex, ey, eyaw = b.init_pose[b.ego]
     sx, sy, syaw = b.init_pose[b.threat]
-    cap_props = {k: float(v) for k, v in b.cap_params.properties().items()}
-    sfm_props = {k: float(v) for k, v in b.sfm_params.properties().items()}
+    cap_params, sfm_params = b.model_params(values or {})
+    cap_props = {k: float(v) for k, v in cap_params.properties().items()}
+    sfm_props = {k: float(v) for k, v in sfm_params.properties().items()}
     rider = str(r.rider[0])
     loop = ClosedLoop(dt=dt, stop_time=r.duration, entities={"ego": b.ego, "sfm": b.threat, "cap": b.ego})
     loop.parameters["ego"] = {

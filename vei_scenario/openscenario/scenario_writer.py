@@ -36,7 +36,7 @@ from vei_scenario.errors import VeiInputError
 from vei_scenario.geometry.angles import wrap_pi
 from vei_scenario.safe_xml import safe_parser
 from vei_scenario.scenario.model import EntitySpec, ScenarioModel
-from vei_scenario.scenario.parameters import format_value
+from vei_scenario.scenario.parameters import MODEL_PARAMETERS, format_value
 
 AUTHOR = "vei-scenario"
 SFM_CONTROLLER = "SocialForceModel"
@@ -91,9 +91,20 @@ def _properties(values: dict[str, object]) -> xosc.Properties:
     return props
 
 
+def _exposed(model: ScenarioModel, which: str, resolved: dict | None) -> dict[str, str]:
+    """The controller properties that read a declared model parameter: ``$Name`` (or its value)."""
+    declared = {p.name for p in model.parameters}
+    return {
+        prop: _ref(name, resolved, "double")
+        for name, (ctrl, prop, _) in MODEL_PARAMETERS.items()
+        if ctrl == which and name in declared
+    }
+
+
 def _sfm_controller(model: ScenarioModel, resolved: dict | None) -> xosc.Controller:
     values: dict[str, object] = {"riderType": _ref("RiderType", resolved, "string"), "route": f"{model.threat}_route"}
     values.update(model.sfm.properties())
+    values.update(_exposed(model, "sfm", resolved))
     return xosc.Controller(SFM_CONTROLLER, _properties(values))
 
 
@@ -104,6 +115,7 @@ def _cap_controller(model: ScenarioModel, resolved: dict | None) -> xosc.Control
         "threatEntity": model.threat,
     }
     values.update(model.cap.properties())
+    values.update(_exposed(model, "cap", resolved))
     return xosc.Controller(CAP_CONTROLLER, _properties(values))
 
 

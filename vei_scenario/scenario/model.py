@@ -12,7 +12,7 @@ from vei_scenario.geometry.reconstruct import Reconstruction
 from vei_scenario.geometry.resample import Trajectory
 from vei_scenario.models.cap import CapParameters
 from vei_scenario.models.sfm import RIDER_TYPES, SfmParameters
-from vei_scenario.scenario.parameters import ParameterSpec, declared_parameters
+from vei_scenario.scenario.parameters import ParameterSpec, declared_parameters, model_parameters
 
 #: E-scooter with a standing rider (m): deck and bars ~1.1–1.2 m long, shoulders ~0.6 m, ~1.9 m tall.
 SCOOTER_BOX_M = (1.2, 0.6, 1.9)
@@ -66,7 +66,9 @@ class ScenarioModel:
         return {"TimeShift": shifts, "RiderType": list(RIDER_TYPES), "CapEnabled": [False, True]}
 
 
-def build_model(rec: Reconstruction, threat: str | None = None, name: str | None = None) -> ScenarioModel:
+def build_model(
+    rec: Reconstruction, threat: str | None = None, name: str | None = None, expose_models: bool = False
+) -> ScenarioModel:
     """Entities from the reconstruction, conflicts for every scooter, the threat and the parameters."""
     clip = rec.clip
     cruise = float(np.median(clip.ego.speed_mps))
@@ -91,6 +93,9 @@ def build_model(rec: Reconstruction, threat: str | None = None, name: str | None
         )
     params = tuple(declared_parameters(cruise, conflicts[threat].time_shift_s))
     threat_speed = float(np.median(rec.scooters[threat].trajectory.speed))
+    sfm, cap = SfmParameters(v0_mps=round(threat_speed, 2)), CapParameters()
+    if expose_models:  # the model parameters become scenario parameters (their properties read $Name)
+        params += tuple(model_parameters(sfm, cap))
     return ScenarioModel(
         name=name or clip.id,
         description=f"Reconstructed vehicle–e-scooter interaction from clip {clip.id}",
@@ -100,7 +105,8 @@ def build_model(rec: Reconstruction, threat: str | None = None, name: str | None
         threat=threat,
         conflicts=conflicts,
         parameters=params,
-        sfm=SfmParameters(v0_mps=round(threat_speed, 2)),
+        sfm=sfm,
+        cap=cap,
         duration_s=rec.duration_s,
     )
 

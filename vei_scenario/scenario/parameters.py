@@ -44,6 +44,26 @@ def format_value(type_: str, value: object) -> str:
     return str(value)
 
 
+#: Model parameters a scenario can declare (``vei compile --model-parameters``), so that sweeps,
+#: risk searches and falsification vary them like the seed method's: name -> (controller, property).
+MODEL_PARAMETERS = {
+    "RiderDesiredSpeed": ("sfm", "v0_mps", "Desired speed of the social-force rider (m/s)."),
+    "RiderRepulsion": ("sfm", "repulsion_n", "Repulsion strength A of the social-force rider from the ego (N)."),
+    "PlannerTimeHeadway": ("cap", "t_h_s", "Time headway t_h in the planner's safe distance (s)."),
+    "PlannerMaxDecel": ("cap", "a_max_mps2", "The planner's maximum braking a_max (m/s²)."),
+    "PlannerStandstillGap": ("cap", "d0_m", "Standstill gap d0 the planner stops short of the conflict (m)."),
+}
+
+
+def model_parameters(sfm, cap) -> list[ParameterSpec]:
+    """The declarations of :data:`MODEL_PARAMETERS`, defaulting to the models' values."""
+    models = {"sfm": sfm, "cap": cap}
+    return [
+        ParameterSpec(name, "double", getattr(models[which], prop), doc)
+        for name, (which, prop, doc) in MODEL_PARAMETERS.items()
+    ]
+
+
 def declared_parameters(cruise_speed_mps: float, conflict_shift_s: float) -> list[ParameterSpec]:
     return [
         ParameterSpec("TimeShift", "double", 0.0, "Delay of the threat scooter's recorded timing (s)."),

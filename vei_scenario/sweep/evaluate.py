@@ -85,7 +85,16 @@ def _chunk(scenario: str, chunk: list[dict[str, str]], dt: float, zone_ttc: str 
             from vei_scenario.batch import batch_pair
             from vei_scenario.metrics import compute_metrics_batch
 
-            metrics = compute_metrics_batch(batch_pair(engine.run(accepted)), MetricConfig(zone_ttc=zone_ttc))
+            by: dict[tuple, list[int]] = {}
+            for k, v in enumerate(accepted):
+                by.setdefault(engine.model_key(v), []).append(k)
+            metrics: list = [None] * len(accepted)
+            for group in by.values():  # (one run per set of model parameters)
+                cfg = MetricConfig(zone_ttc=zone_ttc)
+                for k, m in zip(
+                    group, compute_metrics_batch(batch_pair(engine.run([accepted[j] for j in group])), cfg)
+                ):
+                    metrics[k] = m
         for i, m in zip(ok, metrics):
             rows[i] = {"status": "ok", "error": "", "metrics": m}
     return [r if r is not None else evaluate_variant(scenario, v, dt, zone_ttc) for r, v in zip(rows, chunk)]
@@ -147,7 +156,7 @@ def _evaluate_native(native, scenario, variants, dt, workers, progress, zone_ttc
     engine = native.batch
     rows: list[dict | None] = [None] * len(variants)
     ok = [i for i, v in enumerate(variants) if engine.accepts(v)]
-    tasks = [ok[k : k + 500] for k in range(0, len(ok), 500)]
+    tasks = native.groups(ok, variants, 500)  # (variants that share their model parameters)
 
     def task(t: list[int]):  # preparing (Python) overlaps with the other threads' kernel runs (no GIL)
         return native.run(native.prepare([variants[i] for i in t]))
