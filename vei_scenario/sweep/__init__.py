@@ -154,7 +154,8 @@ def run_sweep(
             if bar is not None:
                 bar.close()
         rows = iter_rows(variants, outcomes)
-        plotter.draw(plot_inputs(rows, varied))  # drawn in the worker while the catalog is written
+        inputs = plot_inputs(rows, varied)
+        plotter.draw(inputs)  # drawn in the worker while the catalog is written
         names = list(load_scenario(scenario).parameters)
         files = OutputSet()
         if emit_xosc:
@@ -167,7 +168,7 @@ def run_sweep(
         meta = {"scenario": str(scenario), "dt_s": dt, "varied": varied, "count": len(rows), "ttc_zones_use": zone_ttc}
         files.add(out / "catalog.csv", catalog_csv(rows, names))
         files.add(out / "catalog.json", catalog_json(rows, meta))
-        files.add(out / "report.html", report_html(rows, names, varied, meta, plots=plotter.plots()))
+        files.add(out / "report.html", report_html(rows, names, varied, meta, plots=plotter.plots(), inputs=inputs))
     finally:
         plotter.close()
         if collecting:

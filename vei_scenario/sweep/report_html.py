@@ -31,6 +31,7 @@ def _groups(rows: list[dict], x_param: str, groups: list[str]) -> list[tuple[str
         # one pass over the rows; None (no value) becomes NaN in a float array
         table = np.array([pick(r["metrics"]) for r in sel], dtype=float)[order]
         values = {m: table[:, k] for k, m in enumerate(PLOTTED)}
+        values["variant"] = np.array([r["variant"] for r in sel], dtype=np.int64)[order]  # (for hovering)
         coll = np.array([bool(r["metrics"].get("collision")) for r in sel], dtype=bool)[order]
         name = ", ".join(f"{g}={k}" for g, k in zip(groups, key)) or "all"
         out.append((name, x[order], values, coll))
@@ -96,6 +97,7 @@ def report_html(
     meta: dict,
     top: int = 20,
     plots: list[tuple[str, int]] | None = None,
+    inputs: tuple | None = None,
 ) -> str:
     """The report; ``plots`` are :func:`render_plots`' output when they were drawn elsewhere (the sweep
     draws them in another process while it writes the catalog)."""
@@ -123,6 +125,9 @@ def report_html(
                 f"<p class='note'>{missing} variants have no TTC: the two never head for a collision at "
                 "constant velocity. They are marked along the top edge, not left out.</p>"
             )
+    from vei_scenario.reports.interactive import interactive_html
+
+    parts.append(interactive_html(inputs if inputs is not None else plot_inputs(rows, varied)))
     hits = [r for r in ok if r["metrics"].get("collision")]
     shown = heapq.nsmallest(top, hits, key=_severity)  # (linear in the variants, as sorting is not)
     columns = [
