@@ -42,12 +42,14 @@ def interactive_html(inputs: tuple | None) -> str:
             fixed = "".join(f"<br>{part}" for part in name.split(", ")) if name != "all" else ""
             hover = f"variant %{{customdata}}<br>{x_param} %{{x}}{fixed}<br>{label} %{{y}}<extra></extra>"
             colour = PALETTE[k % len(PALETTE)]
-            traces.append({"type": "scattergl", "x": _typed(x, "f8"), "y": _typed(y, "f4"), "mode": "lines+markers",
-                           "name": name, "customdata": _typed(number, "i4"), "hovertemplate": hover, "legendgroup": name,
+            traces.append({"type": "scattergl", "x": _typed(x, "f8"), "y": _typed(y, "f4"),
+                           "mode": "lines+markers", "name": name, "customdata": _typed(number, "i4"),
+                           "hovertemplate": hover, "legendgroup": name,
                            "marker": {"size": 3, "color": colour}, "line": {"width": 1, "color": colour}})  # fmt: skip
             if hit.any():
-                traces.append({"type": "scattergl", "x": _typed(x[hit], "f8"), "y": _typed(y[hit], "f4"), "mode": "markers",
-                               "name": name, "customdata": _typed(number[hit], "i4"), "legendgroup": name,
+                traces.append({"type": "scattergl", "x": _typed(x[hit], "f8"), "y": _typed(y[hit], "f4"),
+                               "mode": "markers", "name": name, "customdata": _typed(number[hit], "i4"),
+                               "legendgroup": name,
                                "hovertemplate": hover.replace("<extra>", " (collision)<extra>"), "showlegend": False,
                                "marker": {"size": 7, "symbol": "x", "color": colour}})  # fmt: skip
         layout = {
