@@ -15,6 +15,11 @@ def _png(fig) -> str:
     return base64.b64encode(png_bytes(fig, 100)).decode()
 
 
+def collision_runs(flags: np.ndarray) -> list[tuple[int, int]]:
+    """(first, last) index of each run of consecutive True values (the report's collision regions)."""
+    return _runs(flags)
+
+
 def _runs(flags: np.ndarray) -> list[tuple[int, int]]:
     """(first, last) index of each run of consecutive True values."""
     edges = np.diff(np.concatenate(([0], flags.astype(np.int8), [0])))

@@ -47,9 +47,9 @@ def _cell(v) -> str:
     return "–" if v is None else html.escape(str(v))
 
 
-def _table(rows: list[dict], varied: list[str], columns: list[tuple[str, str]]) -> list[str]:
+def _table(rows: list[dict], varied: list[str], columns: list[tuple[str, str]], scenario: str = "") -> list[str]:
     out = ["<table><tr><th>#</th>", *(f"<th>{html.escape(param_label(p))}</th>" for p in varied)]
-    out += [f"<th>{html.escape(h)}</th>" for _, h in columns] + ["<th>scenario</th></tr>"]
+    out += [f"<th>{html.escape(h)}</th>" for _, h in columns] + ["<th>reproduce</th><th>scenario</th></tr>"]
     for r in rows:
         m = r["metrics"]
         link = f"<a href='{html.escape(r['xosc'])}'>{html.escape(r['xosc'])}</a>" if r.get("xosc") else ""
@@ -58,7 +58,8 @@ def _table(rows: list[dict], varied: list[str], columns: list[tuple[str, str]]) 
             f"<td>{'<span class=coll>yes</span>' if k == 'collision' and m.get(k) else _cell(m.get(k))}</td>"
             for k, _ in columns
         )
-        out.append(f"<tr><td>{r['variant']}</td>{cells}{values}<td>{link}</td></tr>")
+        command = html.escape(reproduce(scenario, r, varied)) if scenario else ""
+        out.append(f"<tr><td>{r['variant']}</td>{cells}{values}<td><code>{command}</code></td><td>{link}</td></tr>")
     out.append("</table>")
     return out
 
@@ -116,6 +117,7 @@ def report_html(
         f"{html.escape(', '.join(param_label(v) for v in varied) or 'nothing')}.</p>",
     ]
     parts += _configurations(ok, varied, meta)
+    parts += _regions(inputs if inputs is not None else plot_inputs(rows, varied))
     if plots is None:
         plots = render_plots(plot_inputs(rows, varied))
     for (metric, label), (png, missing) in zip(SERIES, plots):
@@ -146,12 +148,14 @@ def report_html(
         "<p class='note'>Ranked by the impact speed: how fast the two met, relative to each other, at "
         "first contact. Every collision has gap, TTC and safety index 0: they cannot rank them.</p>"
     )
-    parts += _table(shown, varied, columns) if shown else ["<p>None.</p>"]
+    parts += _table(shown, varied, columns, meta["scenario"]) if shown else ["<p>None.</p>"]
     near = heapq.nsmallest(top, (r for r in ok if not r["metrics"].get("collision")), key=_severity)
     n_near = sum(1 for r in ok if r["metrics"].get("near_miss"))
     parts.append(f"<h2>Closest passes without collision (top {len(near)}; {n_near} near misses by TTC)</h2>")
     parts.append("<p class='note'>Ranked by the minimum gap, then the minimum TTC.</p>")
-    parts += _table(near, varied, [("near_miss", "near miss"), *columns[5:]]) if near else ["<p>None.</p>"]
+    parts += (
+        _table(near, varied, [("near_miss", "near miss"), *columns[5:]], meta["scenario"]) if near else ["<p>None.</p>"]
+    )
     hidden = [
         r
         for r in ok
@@ -237,6 +241,31 @@ def _configurations(ok: list[dict], varied: list[str], meta: dict) -> list[str]:
                 out.append(f"<p class='note'>{len(failures) - 200} more in catalog.csv.</p>")
         else:
             out.append("<p>None: the planner avoided every collision it was given.</p>")
+    return out
+
+
+def _regions(inputs: tuple | None) -> list[str]:
+    """Failure regions along the plotted parameter: the runs of consecutive colliding variants of each
+    configuration (their first and last value), the planner's first."""
+    if inputs is None:
+        return []
+    from vei_scenario.reports.sweep_plots import collision_runs
+
+    x_param, grouped, _ = inputs
+    found = []
+    for name, x, _values, coll in grouped:
+        on = "CapEnabled=true" in name
+        found += [(not on, name, float(x[a]), float(x[b]), b - a + 1) for a, b in collision_runs(coll)]
+    if not found:
+        return []
+    out = [f"<h2>Collision regions along {html.escape(param_label(x_param))} ({len(found)})</h2>",
+           "<p class='note'>Runs of consecutive colliding variants; with the planner on (first) they are failure "
+           "regions of the system under test. `vei falsify` searches between the variants and refines the edges."
+           "</p><table><tr><th>configuration</th><th>from</th><th>to</th><th>variants</th></tr>"]  # fmt: skip
+    for off, name, a, b, n in sorted(found):
+        cls = "" if off else " class=coll"
+        out.append(f"<tr><td{cls}>{html.escape(name)}</td><td>{a:g}</td><td>{b:g}</td><td>{n}</td></tr>")
+    out.append("</table>")
     return out
 
 
