@@ -52,20 +52,25 @@ def _alive(pid: int) -> bool:
     return True
 
 
+def _write(fd: int, tmp: str, data: bytes) -> None:
+    """``data`` into the open temporary file ``fd`` (closed either way), with the usual file mode."""
+    try:
+        fh = os.fdopen(fd, "wb")
+    except BaseException:
+        os.close(fd)
+        raise
+    with fh:
+        fh.write(data)
+    os.chmod(tmp, _default_mode())
+
+
 def write_bytes_atomic(path: Path, data: bytes) -> None:
     """Write ``data`` to ``path`` through a temporary file and a rename."""
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     fd, tmp = _temporary(path)
     try:
-        try:
-            fh = os.fdopen(fd, "wb")
-        except BaseException:
-            os.close(fd)
-            raise
-        with fh:
-            fh.write(data)
-        os.chmod(tmp, _default_mode())
+        _write(fd, tmp, data)
         os.replace(tmp, path)
     except BaseException:
         Path(tmp).unlink(missing_ok=True)
@@ -95,14 +100,7 @@ class OutputSet:
                 path.parent.mkdir(parents=True, exist_ok=True)
                 fd, tmp = _temporary(path)
                 staged.append((tmp, path))  # (before writing: a failed write is cleaned up too)
-                try:
-                    fh = os.fdopen(fd, "wb")
-                except BaseException:
-                    os.close(fd)
-                    raise
-                with fh:
-                    fh.write(data)
-                os.chmod(tmp, _default_mode())
+                _write(fd, tmp, data)
         except BaseException:
             for tmp, _ in staged:
                 Path(tmp).unlink(missing_ok=True)

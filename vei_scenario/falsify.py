@@ -393,7 +393,7 @@ def _worst(run, r: Region, primary: Axis) -> None:
 def check_axes(path: Path, doc, axes: list[Axis], fixed: dict[str, str]) -> None:
     """Bounds against the declared parameters: known names, finite and non-empty ranges of numeric
     parameters, values of the declared type, within the declaration's value constraints."""
-    from vei_scenario.interpreter.document import check_type
+    from vei_scenario.interpreter.document import check_type, check_values
 
     seen = set()
     for a in axes:
@@ -422,12 +422,7 @@ def check_axes(path: Path, doc, axes: list[Axis], fixed: dict[str, str]) -> None
                     raise VeiInputError(
                         None, "--bounds", f"{a.name} bound {bound:g} is outside the declared range ({rule} {value:g})"
                     )
-    for k, v in fixed.items():
-        if k not in doc.parameter_types:
-            raise VeiInputError(None, "--param", f"unknown parameter {k!r}")
-        problem = check_type(doc.parameter_types[k], v)
-        if problem:
-            raise VeiInputError(None, "--param", f"{k}={v!r} {problem}")
+    check_values(doc.parameter_types, fixed)
 
 
 def doc_constraints(doc, name: str) -> list[tuple[str, float]]:

@@ -370,7 +370,7 @@ def estimate_probability(
     """P(target) under the stochastic distribution ``dist`` (other parameters from ``fixed`` or their
     defaults), by each of ``estimators``, ``runs`` runs each (plus the levels for importance sampling)."""
     from vei_scenario.checks import check_dt, finite
-    from vei_scenario.interpreter.document import check_type, load_scenario
+    from vei_scenario.interpreter.document import check_values, load_scenario
 
     check_dt(dt)
     if target not in ("collision", "near-miss"):
@@ -382,12 +382,7 @@ def estimate_probability(
     doc = load_scenario(scenario)
     dims = read_stochastic(dist, doc.parameter_types)
     fixed = dict(fixed or {})
-    for k, v in fixed.items():
-        if k not in doc.parameter_types:
-            raise VeiInputError(None, "--param", f"unknown parameter {k!r}")
-        problem = check_type(doc.parameter_types[k], v)
-        if problem:
-            raise VeiInputError(None, "--param", f"{k}={v!r} {problem}")
+    check_values(doc.parameter_types, fixed)
     evaluate = Evaluator(Path(scenario), dims, fixed, target, band, dt, workers)
     rng = np.random.default_rng(seed)
     out = []

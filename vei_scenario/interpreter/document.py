@@ -57,6 +57,18 @@ def check_type(type_: str, value: str) -> str | None:
 INT_LIMITS = {"int": 2**31, "integer": 2**31, "unsignedInt": 2**32 - 1, "unsignedShort": 2**16 - 1}
 
 
+def check_values(types: dict[str, str], values: dict[str, str], where: str = "--param") -> None:
+    """Refuse a value for an undeclared parameter or one that is not of its declared type."""
+    for k, v in values.items():
+        if k not in types:
+            raise VeiInputError(
+                None, where, f"unknown parameter {k!r} (declared: {', '.join(sorted(types)) or 'none'})"
+            )
+        problem = check_type(types[k], v)
+        if problem:
+            raise VeiInputError(None, where, f"{k}={v!r} {problem} ({types[k]} parameter)")
+
+
 def _format_number(value: float) -> str:
     return repr(int(value)) if value.is_integer() and abs(value) < 1e15 else repr(value)
 
