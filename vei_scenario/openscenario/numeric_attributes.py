@@ -90,15 +90,13 @@ def table_from_xsd(paths: list[Path]) -> dict[str, dict[str, str]]:
                 types_by_element.setdefault(el.get("name"), set()).add(el.get("type"))
     out: dict[str, dict[str, str]] = {}
     for element, types in sorted(types_by_element.items()):
-        common: dict[str, str] | None = None
-        for t in types:
-            numeric = {a: k for a, k in attrs_by_type.get(t, {}).items() if k != "other"}
-            other = {a for a, k in attrs_by_type.get(t, {}).items() if k == "other"}
-            if common is None:
-                common = dict(numeric)
-            else:
-                common = {a: k for a, k in common.items() if numeric.get(a, k) == k}
-            common = {a: k for a, k in common.items() if a not in other}
+        # an attribute is numeric for an element name when every type of that name that has it gives it
+        # the same numeric type (independent of the order the types are met in)
+        kinds: dict[str, set[str]] = {}
+        for t in sorted(types):
+            for a, k in attrs_by_type.get(t, {}).items():
+                kinds.setdefault(a, set()).add(k)
+        common = {a: next(iter(ks)) for a, ks in kinds.items() if len(ks) == 1 and "other" not in ks}
         if common:
             out[element] = dict(sorted(common.items()))
     return out
