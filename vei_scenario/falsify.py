@@ -79,10 +79,12 @@ class Region:
     high: float
     worst_robustness: float
     worst: dict[str, str]
+    dt: float = 0.01
 
     def reproduce(self, scenario: str) -> str:
         params = " ".join(f"--param {k}={v}" for k, v in self.worst.items())
-        return f"vei run {scenario} {params}"
+        step = f" --dt {self.dt:g}" if self.dt != 0.01 else ""
+        return f"vei run {scenario} {params}{step}"
 
     def as_dict(self, scenario: str) -> dict:
         return {
@@ -290,6 +292,7 @@ def falsify(
                 windows.append(w)
         regions += _regions(run, windows, combo, primary, others, spacing, tol, len(regions))
     for r in regions:
+        r.dt = dt
         _refine_edges(run, r, primary, others, spacing, tol)
         _worst(run, r, primary)
     result = FalsifyResult(str(scenario), target, regions, run.runs, axes)

@@ -47,7 +47,9 @@ def _cell(v) -> str:
     return "–" if v is None else html.escape(str(v))
 
 
-def _table(rows: list[dict], varied: list[str], columns: list[tuple[str, str]], scenario: str = "") -> list[str]:
+def _table(
+    rows: list[dict], varied: list[str], columns: list[tuple[str, str]], scenario: str = "", dt: float = 0.01
+) -> list[str]:
     out = ["<table><tr><th>#</th>", *(f"<th>{html.escape(param_label(p))}</th>" for p in varied)]
     out += [f"<th>{html.escape(h)}</th>" for _, h in columns] + ["<th>reproduce</th><th>scenario</th></tr>"]
     for r in rows:
@@ -58,7 +60,7 @@ def _table(rows: list[dict], varied: list[str], columns: list[tuple[str, str]], 
             f"<td>{'<span class=coll>yes</span>' if k == 'collision' and m.get(k) else _cell(m.get(k))}</td>"
             for k, _ in columns
         )
-        command = html.escape(reproduce(scenario, r, varied)) if scenario else ""
+        command = html.escape(reproduce(scenario, r, varied, dt)) if scenario else ""
         out.append(f"<tr><td>{r['variant']}</td>{cells}{values}<td><code>{command}</code></td><td>{link}</td></tr>")
     out.append("</table>")
     return out
@@ -148,13 +150,15 @@ def report_html(
         "<p class='note'>Ranked by the impact speed: how fast the two met, relative to each other, at "
         "first contact. Every collision has gap, TTC and safety index 0: they cannot rank them.</p>"
     )
-    parts += _table(shown, varied, columns, meta["scenario"]) if shown else ["<p>None.</p>"]
+    parts += _table(shown, varied, columns, meta["scenario"], meta["dt_s"]) if shown else ["<p>None.</p>"]
     near = heapq.nsmallest(top, (r for r in ok if not r["metrics"].get("collision")), key=_severity)
     n_near = sum(1 for r in ok if r["metrics"].get("near_miss"))
     parts.append(f"<h2>Closest passes without collision (top {len(near)}; {n_near} near misses by TTC)</h2>")
     parts.append("<p class='note'>Ranked by the minimum gap, then the minimum TTC.</p>")
     parts += (
-        _table(near, varied, [("near_miss", "near miss"), *columns[5:]], meta["scenario"]) if near else ["<p>None.</p>"]
+        _table(near, varied, [("near_miss", "near miss"), *columns[5:]], meta["scenario"], meta["dt_s"])
+        if near
+        else ["<p>None.</p>"]
     )
     hidden = [
         r
@@ -181,9 +185,10 @@ def _planner_on(r: dict) -> bool:
     return str(r["parameters"].get("CapEnabled", "")).lower() == "true"
 
 
-def reproduce(scenario: str, r: dict, varied: list[str]) -> str:
+def reproduce(scenario: str, r: dict, varied: list[str], dt: float = 0.01) -> str:
     """The one-line command that replays a variant (its varied parameters; the rest are the file's)."""
-    return f"vei run {scenario} " + " ".join(f"--param {p}={r['parameters'][p]}" for p in varied)
+    step = f" --dt {dt:g}" if dt != 0.01 else ""
+    return f"vei run {scenario} " + " ".join(f"--param {p}={r['parameters'][p]}" for p in varied) + step
 
 
 def _configurations(ok: list[dict], varied: list[str], meta: dict) -> list[str]:
@@ -234,7 +239,8 @@ def _configurations(ok: list[dict], varied: list[str], meta: dict) -> list[str]:
                 out.append(
                     f"<tr><td>{r['variant']}</td><td>{_cell(m.get('impact_speed_mps'))}</td>"
                     f"<td>{_cell(m.get('collision_time_s'))}</td>"
-                    f"<td><code>{html.escape(reproduce(meta['scenario'], r, varied))}</code></td><td>{link}</td></tr>"
+                    f"<td><code>{html.escape(reproduce(meta['scenario'], r, varied, meta.get('dt_s', 0.01)))}</code></td>"
+                    f"<td>{link}</td></tr>"
                 )
             out.append("</table>")
             if len(failures) > 200:
