@@ -236,11 +236,10 @@ def _configurations(ok: list[dict], varied: list[str], meta: dict) -> list[str]:
             for r in failures[:200]:
                 m = r["metrics"]
                 link = f"<a href='{html.escape(r['xosc'])}'>{html.escape(r['xosc'])}</a>" if r.get("xosc") else ""
+                command = html.escape(reproduce(meta["scenario"], r, varied, meta.get("dt_s", 0.01)))
                 out.append(
                     f"<tr><td>{r['variant']}</td><td>{_cell(m.get('impact_speed_mps'))}</td>"
-                    f"<td>{_cell(m.get('collision_time_s'))}</td>"
-                    f"<td><code>{html.escape(reproduce(meta['scenario'], r, varied, meta.get('dt_s', 0.01)))}</code></td>"
-                    f"<td>{link}</td></tr>"
+                    f"<td>{_cell(m.get('collision_time_s'))}</td><td><code>{command}</code></td><td>{link}</td></tr>"
                 )
             out.append("</table>")
             if len(failures) > 200:
