@@ -400,6 +400,7 @@ def openlabel_to_clip_document(path: Path, doc: dict) -> tuple[dict, dict[str, s
             )
     if not ann_frames:
         raise _err(path, "openlabel.frames", "no object has a cuboid in any frame")
+    paths["annotations.frames"] = "openlabel.objects"  # (a check over all tracks: which classes there are)
     ann_frames.sort(key=lambda fr: fr["t"])
 
     clip_id = str(meta.get("name") or path.stem)
