@@ -122,10 +122,19 @@ def _cmd_run(args: argparse.Namespace) -> int:
     from vei_scenario.metrics import MetricConfig
     from vei_scenario.runner import parse_param_overrides, run_to, summary_text
 
+    values = parse_param_overrides(args.param)
+    if args.dist:  # a variant of a ParameterValueDistribution (esmini's --param_dist/--param_permutation)
+        from vei_scenario.interpreter.document import load_scenario
+        from vei_scenario.variation import read_distribution
+
+        variants = read_distribution(args.dist, load_scenario(args.scenario).parameter_types, None)
+        if not 0 <= args.permutation < len(variants):
+            raise VeiInputError(args.dist, "--permutation", f"{args.permutation} is not in 0..{len(variants) - 1}")
+        values = {**variants[args.permutation], **values}  # (--param still wins)
     report = run_to(
         args.scenario,
         args.output,
-        parse_param_overrides(args.param),
+        values,
         args.dt,
         plots=not args.no_plots,
         coupling=args.coupling,
@@ -432,6 +441,15 @@ def build_parser() -> argparse.ArgumentParser:
     r.add_argument("-o", "--output", help="directory for trajectories.csv, metrics.json and plots")
     r.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
     r.add_argument("--zone-ttc", choices=("2d", "approx"), default="2d", help=ZONE_HELP)
+    r.add_argument(
+        "--dist", help="take the parameter values from a ParameterValueDistribution (as esmini's --param_dist)"
+    )
+    r.add_argument(
+        "--permutation",
+        type=_number(0, 10_000_000, integer=True),
+        default=0,
+        help="which variant of --dist to run, counted from 0 (as esmini's --param_permutation)",
+    )
     r.add_argument(
         "--osi",
         metavar="TRACE",

@@ -536,6 +536,54 @@ class ParameterSet(Action):
         self.done = True
 
 
+class VariableSet(Action):
+    """VariableAction (OpenSCENARIO 1.2): SetAction sets the value; ModifyAction adds to it or
+    multiplies it (AddValue / MultiplyByValue), the result checked against the variable's type."""
+
+    def __init__(self, el, ctx) -> None:
+        from vei_scenario.safe_xml import float_attribute
+
+        self.name, self.el = (el.get("variableRef") or "").lstrip("$"), el
+        if self.name not in ctx.variables:
+            raise ctx.error(el, f"VariableAction on undeclared variable {self.name!r}")
+        set_el, mod = el.find("SetAction"), el.find("ModifyAction/Rule")
+        if set_el is not None:
+            self.kind, self.value = "set", set_el.get("value", "")
+        elif (
+            mod is not None
+            and first_element(mod) is not None
+            and first_element(mod).tag in ("AddValue", "MultiplyByValue")
+        ):
+            rule = first_element(mod)
+            self.kind, self.value = rule.tag, float_attribute(ctx.path, rule, "value")
+        else:
+            raise ctx.error(el, "VariableAction needs a SetAction or a ModifyAction with AddValue or MultiplyByValue")
+
+    def start(self, ctx) -> None:
+        from vei_scenario.interpreter.document import check_type
+
+        if self.kind == "set":
+            value = self.value
+        else:
+            try:
+                current = float(ctx.variables[self.name])
+            except ValueError:
+                raise ctx.error(
+                    self.el, f"variable {self.name!r} = {ctx.variables[self.name]!r} is not a number"
+                ) from None
+            result = current + self.value if self.kind == "AddValue" else current * self.value
+            if not math.isfinite(result):
+                raise ctx.error(self.el, f"variable {self.name!r} would become {result}")
+            value = (
+                repr(int(result)) if result.is_integer() and ctx.variable_types[self.name] != "double" else repr(result)
+            )
+        problem = check_type(ctx.variable_types[self.name], value)
+        if problem:
+            raise ctx.error(self.el, f"variable {self.name} = {value!r} {problem}")
+        ctx.variables[self.name] = value
+        self.done = True
+
+
 class SignalState(Action):
     def __init__(self, name: str, state: str) -> None:
         self.name, self.state = name, state
@@ -593,6 +641,8 @@ def global_actions(ga, ctx) -> list[Action]:
         return [ParameterSet(kind.get("parameterRef"), kind.find("SetAction").get("value"), kind, ctx)]
     if kind is not None and kind.tag == "ParameterSetAction":
         return [ParameterSet(kind.get("parameterRef"), kind.get("value"), kind, ctx)]
+    if kind is not None and kind.tag == "VariableAction":
+        return [VariableSet(kind, ctx)]
     state = ga.find("InfrastructureAction/TrafficSignalAction/TrafficSignalStateAction")
     if state is not None:  # signal states: for TrafficSignalConditions (no default driver obeys them)
         return [SignalState(state.get("name"), state.get("state"))]

@@ -106,6 +106,22 @@ def _entity(obj, ctx) -> Entity:
     return entity
 
 
+def _declare_variables(root, ctx) -> None:
+    """OpenSCENARIO 1.2 VariableDeclarations: values that actions change at run time (initial values
+    resolved like parameters when the document was loaded)."""
+    from vei_scenario.interpreter.document import check_type
+
+    for d in root.iterfind("VariableDeclarations/VariableDeclaration"):
+        name, type_ = (d.get("name") or "").lstrip("$"), d.get("variableType", "string")
+        if not name:
+            raise ctx.error(d, "VariableDeclaration without a name")
+        value = d.get("value", "")
+        problem = check_type(type_, value)
+        if problem:
+            raise ctx.error(d, f"variable {name} = {value!r} {problem}")
+        ctx.variables[name], ctx.variable_types[name] = value, type_
+
+
 #: ScenarioObject element → the kind of road user it is.
 KINDS = {"Vehicle": "vehicle", "Pedestrian": "pedestrian", "MiscObject": "misc"}
 #: Entity properties (lower case) that may name a finer object type than the vehicle category
@@ -132,6 +148,7 @@ class Simulation:
         self.ctx = Context(doc.path, 0.0, dt, 0, {}, dict(doc.parameters))
         ctx = self.ctx
         ctx.road_file = doc.road_file
+        _declare_variables(root, ctx)
         for sel in root.iter("EntitySelection"):
             raise ctx.error(sel, "entity selections are not supported by vei run")
         for obj in root.iterfind("Entities/ScenarioObject"):

@@ -40,6 +40,9 @@ class Context:
     #: True while the Init actions start (before the first record at t = 0).
     initializing: bool = False
     road_file: object = None  # the scenario's OpenDRIVE file, loaded on first use
+    #: OpenSCENARIO 1.2 variables: name -> current value (text), and their declared types
+    variables: dict[str, str] = field(default_factory=dict)
+    variable_types: dict[str, str] = field(default_factory=dict)
 
     @property
     def roads(self):
@@ -101,13 +104,15 @@ class SimulationTime(Condition):
 
 
 class ParameterCondition(Condition):
+    store, ref, what = "parameters", "parameterRef", "parameter"
+
     def __init__(self, el, ctx: Context) -> None:
-        self.name, self.value, self.rule = el.get("parameterRef"), el.get("value"), el.get("rule")
-        if self.name not in ctx.parameters:
-            raise ctx.error(el, f"ParameterCondition on undeclared parameter {self.name!r}")
+        self.name, self.value, self.rule = (el.get(self.ref) or "").lstrip("$"), el.get("value"), el.get("rule")
+        if self.name not in getattr(ctx, self.store):
+            raise ctx.error(el, f"{el.tag} on undeclared {self.what} {self.name!r}")
 
     def test(self, ctx: Context) -> bool:
-        current = ctx.parameters[self.name]
+        current = getattr(ctx, self.store)[self.name]
         try:
             return compare(self.rule, float(current), float(self.value))
         except ValueError:
@@ -116,6 +121,13 @@ class ParameterCondition(Condition):
             if self.rule == "notEqualTo":
                 return current != self.value
             return False
+
+
+class VariableCondition(ParameterCondition):
+    """VariableCondition (OpenSCENARIO 1.2): a variable's current value against ``value`` (numbers
+    compared as numbers, text and booleans by equality)."""
+
+    store, ref, what = "variables", "variableRef", "variable"
 
 
 class StoryboardElementState(Condition):
@@ -423,6 +435,7 @@ VALUE_CONDITIONS = {
     "TrafficSignalCondition": TrafficSignal,
     "SimulationTimeCondition": SimulationTime,
     "ParameterCondition": ParameterCondition,
+    "VariableCondition": VariableCondition,
     "StoryboardElementStateCondition": StoryboardElementState,
 }
 

@@ -213,6 +213,14 @@ def read_distribution(path: str | Path, declared: dict[str, str], seed: int | No
             raise VeiInputError(path, f"line {el.sourceline}", f"varies {name!r}, which the scenario does not declare")
     for v in variants:
         for k, value in v.items():
+            if value.startswith("${") and value.endswith("}"):  # an expression (esmini evaluates them too)
+                from vei_scenario.interpreter.expressions import ExpressionError, evaluate
+
+                try:
+                    result = evaluate(value[2:-1], {n: x for n, x in v.items() if not x.startswith("${")})
+                except ExpressionError as exc:
+                    raise VeiInputError(path, "", f"{k}={value!r}: {exc}") from None
+                value = v[k] = _fmt(result) if math.isfinite(result) else value
             problem = check_type(declared[k], value)
             if problem:
                 raise VeiInputError(path, "", f"{k}={value!r} {problem} ({declared[k]} parameter)")
