@@ -15,7 +15,8 @@ NCAP = ROOT.parent / "shared" / "osc-ncap" / "OpenSCENARIO" / "NCAP"
 
 SCENARIO = """<?xml version="1.0"?>
 <OpenSCENARIO><FileHeader revMajor="1" revMinor="2" date="2024-01-01T00:00:00" description="" author=""/>
-<ParameterDeclarations><ParameterDeclaration name="$Step" parameterType="double" value="${pi / pi}"/></ParameterDeclarations>
+<ParameterDeclarations><ParameterDeclaration name="$Step" parameterType="double" value="${pi / pi}"/>
+</ParameterDeclarations>
 <VariableDeclarations><VariableDeclaration name="count" variableType="double" value="0"/>
 <VariableDeclaration name="done" variableType="boolean" value="false"/></VariableDeclarations>
 <CatalogLocations/><RoadNetwork/>
@@ -23,10 +24,12 @@ SCENARIO = """<?xml version="1.0"?>
 <BoundingBox><Center x="0" y="0" z="0"/><Dimensions width="1" length="1" height="1"/></BoundingBox><Properties/>
 </MiscObject></ScenarioObject></Entities>
 <Storyboard><Init><Actions/></Init>
-<Story name="s"><Act name="a"><ManeuverGroup name="g" maximumExecutionCount="1"><Actors selectTriggeringEntities="false"/>
+<Story name="s"><Act name="a"><ManeuverGroup name="g" maximumExecutionCount="1">
+<Actors selectTriggeringEntities="false"/>
 <Maneuver name="m">
  <Event name="tick" priority="parallel" maximumExecutionCount="3"><Action name="add"><GlobalAction>
-  <VariableAction variableRef="count"><ModifyAction><Rule><AddValue value="$Step"/></Rule></ModifyAction></VariableAction>
+  <VariableAction variableRef="count"><ModifyAction><Rule><AddValue value="$Step"/></Rule></ModifyAction>
+  </VariableAction>
  </GlobalAction></Action><StartTrigger><ConditionGroup><Condition name="t" delay="0" conditionEdge="none">
   <ByValueCondition><SimulationTimeCondition value="0.1" rule="greaterThan"/></ByValueCondition></Condition>
  </ConditionGroup></StartTrigger></Event>
