@@ -114,3 +114,45 @@ def test_distribution_values_may_be_expressions(tmp_path):
     )
     assert float(read_distribution(dist, {"X": "double"})[0]["X"]) == pytest.approx(-0.06)
     assert Path(dist).is_file()
+
+
+ROAD = """<?xml version="1.0"?><OpenDRIVE><header revMajor="1" revMinor="4"/>
+<road id="1" length="500" junction="-1"><planView><geometry s="0" x="0" y="0" hdg="0" length="500"><line/></geometry>
+</planView><lanes><laneSection s="0"><center><lane id="0" type="none"/></center><right>
+<lane id="-1" type="driving"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></right></laneSection></lanes></road>
+</OpenDRIVE>"""
+
+
+def test_clothoid_spline_starts_at_a_lane_position(tmp_path):
+    """The standard types PositionStart as a Position: its child is the LanePosition itself."""
+    (tmp_path / "r.xodr").write_text(ROAD)
+    xosc = tmp_path / "s.xosc"
+    xosc.write_text(
+        """<?xml version="1.0"?>
+<OpenSCENARIO><FileHeader revMajor="1" revMinor="3" date="2024-01-01T00:00:00" description="" author=""/>
+<ParameterDeclarations/><CatalogLocations/><RoadNetwork><LogicFile filepath="r.xodr"/></RoadNetwork>
+<Entities><ScenarioObject name="Car"><Vehicle name="Car" vehicleCategory="car">
+<BoundingBox><Center x="1.4" y="0" z="0.8"/><Dimensions width="2" length="5" height="1.6"/></BoundingBox>
+<Performance maxSpeed="60" maxAcceleration="5" maxDeceleration="9"/>
+<Axles><FrontAxle maxSteering="0.5" wheelDiameter="0.8" trackWidth="1.7" positionX="2.8" positionZ="0.4"/>
+<RearAxle maxSteering="0" wheelDiameter="0.8" trackWidth="1.7" positionX="0" positionZ="0.4"/></Axles>
+<Properties/></Vehicle></ScenarioObject></Entities>
+<Storyboard><Init><Actions><Private entityRef="Car">
+<PrivateAction><LongitudinalAction><SpeedAction><SpeedActionDynamics dynamicsShape="step" value="0"
+ dynamicsDimension="time"/><SpeedActionTarget><AbsoluteTargetSpeed value="10"/></SpeedActionTarget></SpeedAction>
+</LongitudinalAction></PrivateAction>
+<PrivateAction><RoutingAction><FollowTrajectoryAction><TrajectoryRef><Trajectory name="t" closed="false"><Shape>
+<ClothoidSpline><ClothoidSplineSegment curvatureStart="0" curvatureEnd="0" length="50"><PositionStart>
+<LanePosition roadId="1" laneId="-1" s="100" offset="0"/></PositionStart></ClothoidSplineSegment>
+<ClothoidSplineSegment curvatureStart="0" curvatureEnd="0.05" length="20"/></ClothoidSpline></Shape>
+</Trajectory></TrajectoryRef><TimeReference><None/></TimeReference>
+<TrajectoryFollowingMode followingMode="position"/></FollowTrajectoryAction></RoutingAction></PrivateAction>
+</Private></Actions></Init>
+<StopTrigger><ConditionGroup><Condition name="e" delay="0" conditionEdge="none"><ByValueCondition>
+<SimulationTimeCondition value="1" rule="greaterThan"/></ByValueCondition></Condition></ConditionGroup></StopTrigger>
+</Storyboard></OpenSCENARIO>"""
+    )
+    run = run_scenario(xosc)
+    tr = run.traces["Car"]
+    assert (tr.x[0], tr.y[0]) == pytest.approx((100.0, -1.75))  # the lane's centre at s = 100
+    assert tr.x[-1] == pytest.approx(110.0, abs=0.2) and tr.y[-1] == pytest.approx(-1.75, abs=1e-6)

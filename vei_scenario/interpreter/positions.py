@@ -138,8 +138,10 @@ def lane_shift(lane: int, n: int, forward: bool) -> int:
 
 
 def resolve(ctx, pos) -> Pose:
-    """The pose of a ``<Position>`` element (its first child decides the kind)."""
-    el = first_element(pos) if pos.tag == "Position" else pos
+    """The pose of a ``<Position>`` element (its first child decides the kind), or of any element the
+    standard types as a Position (``PositionStart``, ...), or of a position kind itself."""
+    is_kind = pos.tag.endswith("Position") and pos.tag != "Position"  # (LanePosition, WorldPosition, ...)
+    el = pos if is_kind else first_element(pos)
     if el is None:
         raise ctx.error(pos, "empty Position")
     tag = el.tag

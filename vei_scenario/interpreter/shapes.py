@@ -105,7 +105,11 @@ def polyline_from(el, ctx, place: bool = True, entity: str | None = None) -> Pol
         if not place:
             return Polyline.unplaced([float(t0), float(t1)] if t0 and t1 else [None, None])
         first = segments[0].find("PositionStart")
-        start = _start_pose(ctx, first.find("Position") if first is not None else None, entity)
+        # the standard types PositionStart as a Position (its child is the LanePosition, WorldPosition
+        # ...); a <Position> wrapped inside it is read as well
+        if first is not None and first.find("Position") is not None:
+            first = first.find("Position")
+        start = _start_pose(ctx, first, entity)
         if start is None:
             raise ctx.error(segments[0], "the first ClothoidSplineSegment needs a PositionStart")
         xs, ys, hs = [start.x], [start.y], [start.h]
