@@ -380,6 +380,7 @@ def _cmd_check(args: argparse.Namespace) -> int:
     return 1 if bad else 0
 
 
+ZONE_TTCS = ("2d", "approx")  # (metrics.series.ZONE_TTCS; not imported here: it would load numpy)
 ZONE_HELP = (
     "the TTC that the zones (safe >= 3 s, attention 2-3 s, alert < 2 s) and the safety index use: 2d (default: "
     "the exact time until the boxes touch, right for crossing paths) or approx (the seed paper's gap / ego speed "
@@ -440,7 +441,7 @@ def build_parser() -> argparse.ArgumentParser:
     r.add_argument("--dt", type=DT, default=0.01, help="fixed step in s (default 0.01)")
     r.add_argument("-o", "--output", help="directory for trajectories.csv, metrics.json and plots")
     r.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
-    r.add_argument("--zone-ttc", choices=("2d", "approx"), default="2d", help=ZONE_HELP)
+    r.add_argument("--zone-ttc", choices=ZONE_TTCS, default="2d", help=ZONE_HELP)
     r.add_argument(
         "--dist", help="take the parameter values from a ParameterValueDistribution (as esmini's --param_dist)"
     )
@@ -473,7 +474,7 @@ def build_parser() -> argparse.ArgumentParser:
         "--time-shift", type=_number(-3600, 3600), help="TimeShift to use (default: the scenario's ConflictTimeShift)"
     )
     st.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
-    st.add_argument("--zone-ttc", choices=("2d", "approx"), default="2d", help=ZONE_HELP)
+    st.add_argument("--zone-ttc", choices=ZONE_TTCS, default="2d", help=ZONE_HELP)
     st.add_argument(
         "--paper", action="store_true", help="the seed paper's table: zones and safety index from its approximate TTC"
     )
@@ -517,7 +518,7 @@ def build_parser() -> argparse.ArgumentParser:
     sw.add_argument("--workers", type=WORKERS, help="local worker processes (default: all cores)")
     sw.add_argument("--emit-xosc", action="store_true", help="also write one scenario file per variant")
     sw.add_argument("--quiet", action="store_true", help="no progress bar")
-    sw.add_argument("--zone-ttc", choices=("2d", "approx"), default="2d", help=ZONE_HELP)
+    sw.add_argument("--zone-ttc", choices=ZONE_TTCS, default="2d", help=ZONE_HELP)
     sw.add_argument(
         "--osi-traces",
         metavar="WHICH",

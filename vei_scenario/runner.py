@@ -51,7 +51,7 @@ def trajectories_csv(result: RunResult) -> str:
     out = csv.writer(buf, lineterminator="\n")
     out.writerow(TRAJECTORY_COLUMNS)
     names = list(result.traces)
-    quoted = {n: n if n.isidentifier() else None for n in names}
+    plain = {n: n.isidentifier() for n in names}  # names that need no quoting (the common case)
     for i, t in enumerate(result.t):
         for n in names:
             tr = result.traces[n]
@@ -59,7 +59,7 @@ def trajectories_csv(result: RunResult) -> str:
                 f"{t:.3f}", n, f"{tr.x[i]:.6f}", f"{tr.y[i]:.6f}", f"{tr.yaw[i]:.6f}", f"{tr.speed[i]:.6f}",
                 f"{tr.accel[i]:.6f}", tr.status[i],
             )  # fmt: skip
-            if quoted[n] is not None:  # (the common case: nothing to quote, join directly)
+            if plain[n]:
                 buf.write(",".join(row) + "\n")
             else:
                 out.writerow(row)

@@ -322,6 +322,23 @@ class BatchScenario:
             out.append(type(base).from_properties(props))
         return tuple(out)
 
+    def shared_model(self, variants: list[dict[str, str]]) -> tuple[tuple, tuple | None]:
+        """(model key, (CapParameters, SfmParameters)) that ``variants`` share; ((), None) when no model
+        property reads a parameter. ValueError when they differ: run each of :meth:`model_groups`."""
+        if not self.model_varies:
+            return (), None
+        keys = {self.model_key(v) for v in variants}
+        if len(keys) > 1:
+            raise ValueError("variants with different model parameters: run each of model_groups() on its own")
+        return keys.pop(), self.model_params(variants[0])
+
+    def model_groups(self, indices: list[int], variants: list[dict[str, str]], size: int) -> list[list[int]]:
+        """``indices`` of ``variants`` in groups of at most ``size`` that share their model parameters."""
+        by: dict[tuple, list[int]] = {}
+        for i in indices:
+            by.setdefault(self.model_key(variants[i]), []).append(i)
+        return [g[k : k + size] for g in by.values() for k in range(0, len(g), size)]
+
     def _prop(self, entity: str, name: str):
         for obj in self.raw.iterfind("Entities/ScenarioObject"):
             if obj.get("name") == entity:
@@ -364,13 +381,12 @@ class BatchScenario:
         )
 
     def run(self, variants: list[dict[str, str]]) -> BatchResult:
-        """The variants as arrays; they share the model parameters (group them by :meth:`model_key`)."""
-        if not self.model_varies:
+        """The variants as arrays; they share the model parameters (see :meth:`model_groups`)."""
+        _, params = self.shared_model(variants)
+        if params is None:
             return self._run(variants)
-        if len({self.model_key(v) for v in variants}) > 1:
-            raise ValueError("variants with different model parameters: run each model_key group on its own")
         saved = self.cap_params, self.sfm_params, self.margin
-        self.cap_params, self.sfm_params = self.model_params(variants[0])
+        self.cap_params, self.sfm_params = params
         self.margin = self.cap_params.corridor_margin_m
         try:
             return self._run(variants)

@@ -267,15 +267,10 @@ class NativeBatch:
 
     def prepare(self, variants: list[dict[str, str]]) -> tuple[_Scene, ctypes.Array]:
         """The kernel's input for ``variants`` (Python work: do it before handing runs to threads); they
-        share their model parameters (see :meth:`groups`)."""
+        share their model parameters (see BatchScenario.model_groups)."""
         b = self.batch
         r = b.resolve(variants)
-        model, params = (), None
-        if b.model_varies:
-            keys = {b.model_key(v) for v in variants}
-            if len(keys) > 1:
-                raise ValueError("variants with different model parameters: prepare each group of groups()")
-            model, params = keys.pop(), b.model_params(variants[0])
+        model, params = b.shared_model(variants)
         arr = (_Variant * len(variants))()
         # filled column by column through a numpy view of the struct array (the C layout)
         view = np.frombuffer(arr, dtype=_VARIANT_DTYPE)
@@ -283,13 +278,6 @@ class NativeBatch:
         view["cruise"], view["offset"] = r.cruise_mps, r.delays[b.threat]
         view["ego_speed0"], view["threat_speed0"] = r.init_speed[b.ego], r.init_speed[b.threat]
         return self._scene(r.duration, model, params), arr
-
-    def groups(self, indices: list[int], variants: list[dict[str, str]], size: int = 500) -> list[list[int]]:
-        """``indices`` of ``variants`` in tasks of at most ``size`` that share their model parameters."""
-        by: dict[tuple, list[int]] = {}
-        for i in indices:
-            by.setdefault(self.batch.model_key(variants[i]), []).append(i)
-        return [g[k : k + size] for g in by.values() for k in range(0, len(g), size)]
 
     def run(self, prepared, threads: int = 1, record: bool = False):
         """(outputs (V, 19), trajectories (V, 10, T) or None) of prepared variants, on ``threads``
@@ -321,7 +309,7 @@ class NativeBatch:
     def metrics(self, variants: list[dict[str, str]], threads: int = 1) -> list[dict]:
         """``vei run``'s metrics of every variant (the same dicts as :func:`compute_metrics`)."""
         rows: list[dict | None] = [None] * len(variants)
-        for task in self.groups(list(range(len(variants))), variants, len(variants) or 1):
+        for task in self.batch.model_groups(list(range(len(variants))), variants, len(variants) or 1):
             out, _ = self.run(self.prepare([variants[i] for i in task]), threads)
             for i, m in zip(task, self.rows(out)):
                 rows[i] = m

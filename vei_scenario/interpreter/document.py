@@ -57,16 +57,16 @@ def check_type(type_: str, value: str) -> str | None:
 INT_LIMITS = {"int": 2**31, "integer": 2**31, "unsignedInt": 2**32 - 1, "unsignedShort": 2**16 - 1}
 
 
-def check_values(types: dict[str, str], values: dict[str, str], where: str = "--param") -> None:
+def check_values(types: dict[str, str], values: dict[str, str], where: str = "--param", file=None) -> None:
     """Refuse a value for an undeclared parameter or one that is not of its declared type."""
     for k, v in values.items():
         if k not in types:
             raise VeiInputError(
-                None, where, f"unknown parameter {k!r} (declared: {', '.join(sorted(types)) or 'none'})"
+                file, where, f"unknown parameter {k!r} (declared: {', '.join(sorted(types)) or 'none'})"
             )
         problem = check_type(types[k], v)
         if problem:
-            raise VeiInputError(None, where, f"{k}={v!r} {problem} ({types[k]} parameter)")
+            raise VeiInputError(file, where, f"{k}={v!r} {problem} ({types[k]} parameter)")
 
 
 def _format_number(value: float) -> str:
@@ -293,14 +293,8 @@ def load_scenario(path: str | Path, overrides: dict[str, object] | None = None) 
     if top is not None:
         _declare(path, top, scope, types)
     overrides = {name: parameter_text(value) for name, value in (overrides or {}).items()}
-    for name, value in overrides.items():
-        if name not in scope:
-            known = ", ".join(sorted(scope)) or "none"
-            raise VeiInputError(path, "--param", f"unknown parameter {name!r} (declared: {known})")
-        problem = check_type(types[name], value)
-        if problem:
-            raise VeiInputError(path, "--param", f"{name}={value!r} {problem} ({types[name]} parameter)")
-        scope[name] = value
+    check_values(types, overrides, "--param", path)
+    scope.update(overrides)
     if overrides:  # later declarations may depend on overridden ones: re-declare in order
         fixed = dict(overrides)
         scope, types = {}, {}

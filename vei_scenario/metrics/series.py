@@ -18,6 +18,10 @@ def median(values: np.ndarray) -> float:
     return float(s[mid]) if s.size % 2 else float((s[mid - 1] + s[mid]) / 2)
 
 
+#: The TTCs the zones and the safety index can use (MetricConfig.zone_ttc).
+ZONE_TTCS = ("2d", "approx")
+
+
 @dataclass(frozen=True)
 class MetricConfig:
     """Thresholds of the seed method's TTC zones and of the comfort score."""
@@ -30,6 +34,12 @@ class MetricConfig:
     comfort_accel_mps2: float = 2.0
     comfort_jerk_mps3: float = 2.0
     near_miss_ttc_s: tuple[float, float] = (0.5, 1.5)
+
+    def __post_init__(self) -> None:
+        if self.zone_ttc not in ZONE_TTCS:
+            from vei_scenario.errors import VeiInputError
+
+            raise VeiInputError(None, "--zone-ttc", f"{self.zone_ttc!r} is not one of {', '.join(ZONE_TTCS)}")
 
 
 @dataclass

@@ -11,10 +11,11 @@ from pathlib import Path
 from vei_scenario.atomic_io import OutputSet
 from vei_scenario.errors import VeiInputError
 from vei_scenario.interpreter.document import load_scenario
+from vei_scenario.metrics.series import MetricConfig
 from vei_scenario.reports.plot_worker import PlotWorker
 from vei_scenario.sweep.catalog import catalog_csv, catalog_json, variant_xosc
 from vei_scenario.sweep.evaluate import evaluate_dask, evaluate_local, iter_rows
-from vei_scenario.sweep.report_html import plot_inputs, report_html
+from vei_scenario.sweep.report_html import planner_on, plot_inputs, report_html
 from vei_scenario.variation import cartesian, parse_vary, read_distribution
 
 #: At most this many traces per sweep (each is a full interpreted run and ~0.4 MB).
@@ -31,7 +32,7 @@ def trace_selection(rows: list[dict], which: str) -> list[dict]:
     elif which == "collisions":
         chosen = [r for r in ok if r["metrics"].get("collision")]
     elif which == "failures":
-        chosen = [r for r in ok if r["metrics"].get("collision") and str(r["parameters"].get("CapEnabled")) == "true"]
+        chosen = [r for r in ok if r["metrics"].get("collision") and planner_on(r)]
     else:
         try:
             wanted = {int(v) for v in which.split(",") if v.strip()}
@@ -129,8 +130,7 @@ def run_sweep(
         raise VeiInputError(None, "--workers", f"{workers!r} is not a number of workers in 1..1024")
     if seed is not None and not (isinstance(seed, int) and seed >= 0):
         raise VeiInputError(None, "--seed", f"{seed!r} is not a non-negative integer")
-    if zone_ttc not in ("2d", "approx"):
-        raise VeiInputError(None, "--zone-ttc", f"{zone_ttc!r} is not 2d or approx")
+    MetricConfig(zone_ttc=zone_ttc)  # (refuses an unknown zone TTC before anything runs)
     if osi_format not in ("mcap", "osi"):
         raise VeiInputError(None, "--osi-format", f"{osi_format!r} is not mcap or osi")
     if plotter is None:

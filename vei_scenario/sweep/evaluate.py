@@ -18,9 +18,6 @@ from vei_scenario.metrics import MetricConfig, PairSeries, compute_metrics
 #: The longest a sweep waits for its worker processes (s) before it stops with one line.
 WATCHDOG_S = 6 * 3600.0
 
-#: Which TTC the zones and the safety index use (MetricConfig.zone_ttc).
-ZONE_TTC = ("2d", "approx")
-
 
 def evaluate_variant(scenario: str, values: dict[str, str], dt: float, zone_ttc: str = "2d") -> dict:
     """Run one variant; a row: status, error and the metrics of ``vei run``."""
@@ -85,15 +82,12 @@ def _chunk(scenario: str, chunk: list[dict[str, str]], dt: float, zone_ttc: str 
             from vei_scenario.batch import batch_pair
             from vei_scenario.metrics import compute_metrics_batch
 
-            by: dict[tuple, list[int]] = {}
-            for k, v in enumerate(accepted):
-                by.setdefault(engine.model_key(v), []).append(k)
+            cfg = MetricConfig(zone_ttc=zone_ttc)
             metrics: list = [None] * len(accepted)
-            for group in by.values():  # (one run per set of model parameters)
-                cfg = MetricConfig(zone_ttc=zone_ttc)
-                for k, m in zip(
-                    group, compute_metrics_batch(batch_pair(engine.run([accepted[j] for j in group])), cfg)
-                ):
+            # one run per set of model parameters
+            for group in engine.model_groups(list(range(len(accepted))), accepted, len(accepted)):
+                batch = compute_metrics_batch(batch_pair(engine.run([accepted[j] for j in group])), cfg)
+                for k, m in zip(group, batch):
                     metrics[k] = m
         for i, m in zip(ok, metrics):
             rows[i] = {"status": "ok", "error": "", "metrics": m}
@@ -156,7 +150,7 @@ def _evaluate_native(native, scenario, variants, dt, workers, progress, zone_ttc
     engine = native.batch
     rows: list[dict | None] = [None] * len(variants)
     ok = [i for i, v in enumerate(variants) if engine.accepts(v)]
-    tasks = native.groups(ok, variants, 500)  # (variants that share their model parameters)
+    tasks = engine.model_groups(ok, variants, 500)  # (variants that share their model parameters)
 
     def task(t: list[int]):  # preparing (Python) overlaps with the other threads' kernel runs (no GIL)
         return native.run(native.prepare([variants[i] for i in t]))

@@ -181,7 +181,8 @@ def report_html(
     return "".join(parts)
 
 
-def _planner_on(r: dict) -> bool:
+def planner_on(r: dict) -> bool:
+    """The variant ran with the collision-avoidance planner on (CapEnabled=true)."""
     return str(r["parameters"].get("CapEnabled", "")).lower() == "true"
 
 
@@ -205,7 +206,7 @@ def _configurations(ok: list[dict], varied: list[str], meta: dict) -> list[str]:
     def summary(key, sel):
         m = [r["metrics"] for r in sel]
         coll = [r for r in sel if r["metrics"].get("collision")]
-        on = has_planner and all(_planner_on(r) for r in sel)
+        on = has_planner and all(planner_on(r) for r in sel)
         s = [v["safety_index"] for v in m if v.get("safety_index") is not None]
         alert = [v["ttc_zones_s"]["alert"] for v in m if v.get("ttc_zones_s")]
         ttc = [v["min_ttc_s"] for v in m if v.get("min_ttc_s") is not None]
@@ -227,7 +228,7 @@ def _configurations(ok: list[dict], varied: list[str], meta: dict) -> list[str]:
             f"<td>{_cell(min(ttc) if ttc else None)}</td></tr>"
         )  # fmt: skip
     out.append("</table>")
-    failures = sorted((r for r in ok if r["metrics"].get("collision") and _planner_on(r)), key=_severity)
+    failures = sorted((r for r in ok if r["metrics"].get("collision") and planner_on(r)), key=_severity)
     if has_planner:
         out.append(f"<h2>Failures of the system under test ({len(failures)} collisions with the planner on)</h2>")
         if failures:
