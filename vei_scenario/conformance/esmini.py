@@ -94,11 +94,16 @@ def _prepared_copy(xosc: Path, parameters: dict[str, str], workdir: Path) -> Pat
     unknown = set(parameters) - known
     if unknown:
         raise VeiInputError(xosc, "--param", f"unknown parameter(s) {', '.join(sorted(unknown))}")
+    decls = {d.get("name"): d for d in root.iterfind("ParameterDeclarations/ParameterDeclaration")}
     for tag, attr in _PATH_ATTRS:
         for el in root.iter(tag):
             value = el.get(attr)
+            target, key = el, attr
+            if value and value.startswith("$") and value[1:] in decls:  # a path given by a parameter
+                target, key = decls[value[1:]], "value"
+                value = target.get("value")
             if value and not value.startswith("$") and not Path(value).is_absolute():
-                el.set(attr, str((xosc.parent / value).resolve()))
+                target.set(key, str((xosc.parent / value).resolve()))
     out = workdir / xosc.name
     tree.write(str(out), xml_declaration=True, encoding="UTF-8")
     return out

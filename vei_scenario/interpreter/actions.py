@@ -61,6 +61,7 @@ SUPPORTED_POSITIONS = (
     "RelativeLanePosition",
     "RelativeRoadPosition",
     "RoutePosition",
+    "TrajectoryPosition",
 )
 
 
@@ -606,6 +607,10 @@ def private_actions(pa, entity: str, ctx) -> list[Action]:
         from vei_scenario.interpreter.longitudinal import LongitudinalDistance  # (it builds on this module)
 
         return [LongitudinalDistance(entity, kind.find("LongitudinalDistanceAction"), ctx)]
+    if kind.tag == "SynchronizeAction":
+        from vei_scenario.interpreter.synchronize import Synchronize  # (it builds on this module)
+
+        return [Synchronize(entity, kind, ctx)]
     if kind.tag == "LateralAction" and kind.find("LaneChangeAction") is not None:
         return [LaneChange(entity, kind.find("LaneChangeAction"), ctx)]
     if kind.tag == "LateralAction" and kind.find("LaneOffsetAction") is not None:

@@ -1,7 +1,7 @@
 """OpenSCENARIO positions → world poses, on the scenario's road network where they need one.
 
 Supported: WorldPosition, RelativeWorldPosition, RelativeObjectPosition, LanePosition, RoadPosition,
-RelativeLanePosition, RelativeRoadPosition. A road-based position also gives the :class:`LaneState`
+RelativeLanePosition, RelativeRoadPosition, RoutePosition, TrajectoryPosition. A road-based position also gives the :class:`LaneState`
 an entity keeps when it drives on by default (esmini's default controller: keep the lane at the
 current speed). Orientation: absolute, or relative to the road's driving direction (default).
 """
@@ -137,11 +137,27 @@ def lane_shift(lane: int, n: int, forward: bool) -> int:
     return lane
 
 
+#: The kinds of position OpenSCENARIO 1.3 defines (the child of a ``<Position>``).
+POSITION_KINDS = frozenset(
+    (
+        "WorldPosition",
+        "RelativeWorldPosition",
+        "RelativeObjectPosition",
+        "RoadPosition",
+        "RelativeRoadPosition",
+        "LanePosition",
+        "RelativeLanePosition",
+        "RoutePosition",
+        "GeoPosition",
+        "TrajectoryPosition",
+    )
+)
+
+
 def resolve(ctx, pos) -> Pose:
     """The pose of a ``<Position>`` element (its first child decides the kind), or of any element the
     standard types as a Position (``PositionStart``, ...), or of a position kind itself."""
-    is_kind = pos.tag.endswith("Position") and pos.tag != "Position"  # (LanePosition, WorldPosition, ...)
-    el = pos if is_kind else first_element(pos)
+    el = pos if pos.tag in POSITION_KINDS else first_element(pos)
     if el is None:
         raise ctx.error(pos, "empty Position")
     tag = el.tag
@@ -181,12 +197,58 @@ def resolve(ctx, pos) -> Pose:
     if tag == "RoutePosition":
         route = route_from(ctx, el.find("RouteRef/Route"), el)
         coords = el.find("InRoutePosition/FromLaneCoordinates")
-        if coords is None:
-            raise ctx.error(el, "RoutePosition: only InRoutePosition/FromLaneCoordinates is supported")
-        leg, s = route.at(_num(coords, "pathS"))
-        lane = int(coords.get("laneId"))
-        return lane_pose(ctx, el, leg.road, lane, s, _num(coords, "laneOffset"), leg.forward)
+        if coords is not None:
+            leg, s = route.at(_num(coords, "pathS"))
+            lane = int(coords.get("laneId"))
+            return lane_pose(ctx, el, leg.road, lane, s, _num(coords, "laneOffset"), leg.forward)
+        coords = el.find("InRoutePosition/FromRoadCoordinates")
+        if coords is not None:
+            leg, s = route.at(_num(coords, "pathS"))
+            return _road_pose(el, _network(ctx, el).road(leg.road), s, _num(coords, "t"))
+        raise ctx.error(el, "RoutePosition: InRoutePosition/FromCurrentEntity is not supported by vei run")
+    if tag == "TrajectoryPosition":
+        return trajectory_pose(ctx, el)
     raise ctx.error(el, f"position <{tag}> is not supported by vei run")
+
+
+def trajectory_of(ctx, el):
+    """The placed polyline of the trajectory a ``TrajectoryPosition`` refers to (inline or from a
+    catalog, which the loader has already put in place)."""
+    from vei_scenario.interpreter.shapes import polyline_from
+
+    traj = el.find("TrajectoryRef/Trajectory")
+    if traj is None:
+        traj = el.find("Trajectory")  # (OpenSCENARIO 1.1 put it here)
+    if traj is None:
+        raise ctx.error(el, "TrajectoryPosition needs a TrajectoryRef with a Trajectory")
+    return polyline_from(traj, ctx)
+
+
+def trajectory_pose(ctx, el) -> Pose:
+    """A ``TrajectoryPosition``: ``s`` metres along the trajectory, ``t`` to its left; heading along
+    the trajectory (an Orientation relative to that, or absolute). Beyond the ends the path is
+    continued straight, as a trajectory's own end is."""
+    line = trajectory_of(ctx, el)
+    s, t = _num(el, "s"), _num(el, "t")
+    x, y, h = line.at_s(s)
+    over = s - line.length if s > line.length else min(s, 0.0)
+    x, y = x + over * math.cos(h), y + over * math.sin(h)
+    x, y = x - t * math.sin(h), y + t * math.cos(h)
+    pose_h = _wrap(_orient(el, h))
+    return Pose(x, y, pose_h, _lane_of(ctx, x, y, pose_h))
+
+
+def _lane_of(ctx, x: float, y: float, h: float) -> LaneState | None:
+    """The lane state at a world point, when the scenario has roads and the point is on a lane."""
+    net = getattr(ctx, "roads", None)
+    if net is None:
+        return None
+    rp = net.project(x, y)
+    if rp is None or rp.lane is None:
+        return None
+    h_ref = rp.road.ref_pose(rp.s)[2]
+    offset = rp.t - rp.road.lane_center_t(rp.s, rp.lane)
+    return LaneState(rp.road.id, rp.lane, rp.s, offset, *_relative_heading(h, h_ref))
 
 
 def route_from(ctx, route_el, at):
