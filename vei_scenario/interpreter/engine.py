@@ -336,7 +336,8 @@ class Simulation:
             return
         x0, y0 = e.x, e.y
         self._motion(e)
-        e.odometer += math.hypot(e.x - x0, e.y - y0)
+        e.last_step_m = math.hypot(e.x - x0, e.y - y0)
+        e.odometer += e.last_step_m
         if abs(e.speed) < 1e-9:
             if e.standing_since is None:
                 e.standing_since = self.ctx.t + self.dt

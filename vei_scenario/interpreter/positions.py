@@ -200,7 +200,8 @@ def resolve(ctx, pos) -> Pose:
         if coords is not None:
             leg, s = route.at(_num(coords, "pathS"))
             lane = int(coords.get("laneId"))
-            return lane_pose(ctx, el, leg.road, lane, s, _num(coords, "laneOffset"), leg.forward)
+            # facing the lane's driving direction (esmini), not necessarily the route's
+            return lane_pose(ctx, el, leg.road, lane, s, _num(coords, "laneOffset"))
         coords = el.find("InRoutePosition/FromRoadCoordinates")
         if coords is not None:
             leg, s = route.at(_num(coords, "pathS"))

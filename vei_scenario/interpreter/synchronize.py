@@ -157,7 +157,10 @@ class Synchronize(Action):
             v_end = 2.0 * dist / master_time - e.speed
             e.speed += (v_end - e.speed) / master_time * dt
             return
+        self.master_moved = master.last_step_m > 0.0
         e.speed = self._profile_speed(e.speed, dist, master_time, self._final_speed(ctx), dt)
+
+    master_moved = True
 
     def _profile_speed(self, v0: float, s: float, t: float, v1: float, dt: float) -> float:
         """The speed for the coming step of a profile that covers ``s`` in ``t`` ending at ``v1``."""
@@ -195,7 +198,12 @@ class Synchronize(Action):
                 return v0
         if self.mode == "none":
             self.mode = "non-linear"
-            self.submode = "convex" if (v1 + v0) / 2.0 < s / t else "concave"
+            # which side of the mean speed the profile bends to is judged from the master's measured
+            # motion: before it has moved (a synchronisation started at t = 0) esmini 3.6 sees no time
+            # limit and picks the lingering side, then takes the straight line at once if the first
+            # piece must accelerate after all (its log: "Reached apex" in the first step)
+            t_seen = t if self.master_moved else LARGE
+            self.submode = "convex" if (v1 + v0) / 2.0 < s / t_seen else "concave"
         acc, vx = _two_piece_acceleration(v0, v1, s, t)
         if (self.submode == "concave" and acc > 0) or (self.submode == "convex" and acc < 0):
             self.mode = "linear"  # the apex is passed: keep the speed for this step, then the line
