@@ -75,6 +75,14 @@ class Polyline:
         ds = self.s[i + 1] - self.s[i]
         return self._lerp(i, 0.0 if ds <= 0 else (s - self.s[i]) / ds)
 
+    def direction_at_s(self, s: float) -> float:
+        """Direction of the segment at arc length ``s`` (the path's own heading, whatever headings its
+        vertices give the entity that follows it)."""
+        i = min(max(bisect.bisect_right(self.s, s) - 1, 0), len(self.xs) - 2)
+        while i > 0 and self.s[i + 1] - self.s[i] <= 0.0:  # (a repeated vertex has no direction)
+            i -= 1
+        return math.atan2(self.ys[i + 1] - self.ys[i], self.xs[i + 1] - self.xs[i])
+
     def project(self, px: float, py: float) -> float:
         """Arc length of the point of the path closest to (px, py) (the first of equally close ones)."""
         best, best_d = 0.0, math.inf

@@ -227,11 +227,13 @@ def trajectory_of(ctx, el):
 
 def trajectory_pose(ctx, el) -> Pose:
     """A ``TrajectoryPosition``: ``s`` metres along the trajectory, ``t`` to its left; heading along
-    the trajectory (an Orientation relative to that, or absolute). Beyond the ends the path is
+    the trajectory's path — not the vertex headings an entity following it would take — with an
+    Orientation relative to that, or absolute. Beyond the ends the path is
     continued straight, as a trajectory's own end is."""
     line = trajectory_of(ctx, el)
     s, t = _num(el, "s"), _num(el, "t")
-    x, y, h = line.at_s(s)
+    x, y, _ = line.at_s(s)
+    h = line.direction_at_s(s) if len(line.xs) > 1 else line.hs[0]  # along the path (esmini)
     over = s - line.length if s > line.length else min(s, 0.0)
     x, y = x + over * math.cos(h), y + over * math.sin(h)
     x, y = x - t * math.sin(h), y + t * math.cos(h)
