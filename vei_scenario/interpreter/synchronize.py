@@ -158,6 +158,9 @@ class Synchronize(Action):
             e.speed += (v_end - e.speed) / master_time * dt
             return
         self.master_moved = master.last_step_m > 0.0
+        if self.mode == "none" and not self.master_moved:  # esmini 3.6 holds the entity until it has
+            self.mode = "waiting"  # seen the master move (a synchronisation started at t = 0)
+            e.speed = 0.0
         e.speed = self._profile_speed(e.speed, dist, master_time, self._final_speed(ctx), dt)
 
     master_moved = True
