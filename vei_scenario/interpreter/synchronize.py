@@ -100,6 +100,9 @@ class Synchronize(Action):
             kind, value = self.steady
             self.steady_dist = value * self._final_speed(ctx) if kind == "time" else value
         self.mode, self.submode = "none", "none"
+        if ctx.entities[self.master].last_step_m <= 0.0:  # esmini 3.6 holds the entity from the start
+            self.mode = "waiting"  # until it has seen the master move (a synchronisation from t = 0)
+            e.speed = 0.0
         self.last_dist = self.last_master_dist = LARGE
         e.take_longitudinal(self, ctx)
         e.speed_profile = None
@@ -158,9 +161,6 @@ class Synchronize(Action):
             e.speed += (v_end - e.speed) / master_time * dt
             return
         self.master_moved = master.last_step_m > 0.0
-        if self.mode == "none" and not self.master_moved:  # esmini 3.6 holds the entity until it has
-            self.mode = "waiting"  # seen the master move (a synchronisation started at t = 0)
-            e.speed = 0.0
         e.speed = self._profile_speed(e.speed, dist, master_time, self._final_speed(ctx), dt)
 
     master_moved = True
