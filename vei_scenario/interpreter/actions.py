@@ -46,7 +46,13 @@ class Teleport(Action):
         e.x, e.y, e.yaw, e.lane = pose.x, pose.y, pose.h, pose.lane
         # placed by world coordinates: it takes up the lane it is on when it first drives by default
         e.find_lane = e.lane is None and ctx.road_file is not None
-        e.follower = None
+        f = e.follower
+        if ctx.initializing and f is not None and f.timing is None and f.polyline.xs is not None:
+            # a path assigned in Init stays (esmini): the teleport only says where on it to start
+            f.s = f.polyline.project(e.x, e.y)
+            e.lane, e.find_lane = None, False
+        else:
+            e.follower = None
         e.lateral = None
         e.placed = not ctx.initializing  # esmini leaves a teleported entity where it put it for this step
         self.done = True
@@ -453,9 +459,12 @@ class FollowTrajectory(Action):
         if self.polyline.xs is None:
             self.polyline = polyline_from(self.traj, ctx, entity=self.entity)
         e.follower = PathFollower(self.polyline, self.timing, self.mode, ctx.t, self.initial_s)
-        if self.timing is None and ctx.initializing:  # placed on its path at t = 0 (esmini)
+        e.follower.reverse = self.timing is None and e.speed < 0.0
+        if self.timing is None and (ctx.initializing or ctx.settling):  # on its path at t = 0 (esmini)
             e.follower.s = self.initial_s
             e.x, e.y, e.yaw = self.polyline.at_s(self.initial_s)
+            if e.follower.reverse:
+                e.yaw = math.atan2(-math.sin(e.yaw), -math.cos(e.yaw))
         elif self.timing is None:  # continue from where the entity is: its projection onto the path
             e.follower.s = max(self.polyline.project(e.x, e.y), self.initial_s)
         elif ctx.initializing:  # logged at t = 0 on its trajectory

@@ -46,8 +46,10 @@ def advance_along(e: Entity, ds: float) -> None:
     """Move an entity ``ds`` metres along its followed path, or straight ahead without one."""
     f = e.follower
     if f is not None:
-        f.s = min(f.s + ds, f.polyline.length)
+        f.s = min(f.s + (-ds if f.reverse else ds), f.polyline.length)
         e.x, e.y, e.yaw = f.polyline.at_s(f.s)
+        if f.reverse:
+            e.yaw = math.atan2(-math.sin(e.yaw), -math.cos(e.yaw))
     else:
         e.x += ds * math.cos(e.yaw)
         e.y += ds * math.sin(e.yaw)

@@ -383,8 +383,9 @@ class Simulation:
             ensure_lane(ctx, e)
         if e.lane is not None and f is None:
             lane_keep(e, ds, ctx)
-        elif f is not None and f.s + ds > f.polyline.length and not e.controllers:  # on past the end (esmini)
-            over = f.s + ds - f.polyline.length
+        elif f is not None and f.s + abs(ds) > f.polyline.length and (ds < 0) == f.reverse and not e.controllers:
+            # on past the end (esmini)
+            over = math.copysign(f.s + abs(ds) - f.polyline.length, ds)
             advance_along(e, ds - over)
             e.x += over * math.cos(e.yaw)
             e.y += over * math.sin(e.yaw)
@@ -415,11 +416,22 @@ class Simulation:
             a.start(ctx)
         for a in list(ctx.stepping):  # Init actions that act every step act once before t = 0 is logged
             a.step(ctx)
-        ctx.initializing = False
+        # the storyboard is evaluated once at t = 0 before t = 0 is logged, with no time passing (as
+        # esmini does): events that start at once place entities and set speeds, and what they
+        # complete counts from t = 0 (a condition delayed after it fires on time)
+        ctx.initializing, ctx.settling = False, True
+        running = self._storyboard()
+        if running:
+            for a in list(ctx.stepping):
+                a.step(ctx)
+            self._complete_finished()
+        ctx.settling = False
         self._collide(collisions)
         record()
         reason = f"time limit {self.max_time:g} s"
-        while ctx.t < self.max_time - 1e-9:
+        if not running:
+            reason = "storyboard stop trigger"
+        while running and ctx.t < self.max_time - 1e-9:
             if not self._storyboard():
                 reason = "storyboard stop trigger"
                 break

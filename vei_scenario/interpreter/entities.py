@@ -116,6 +116,9 @@ class PathFollower:
     mode: str  # "position" or "follow"
     t_start: float
     s: float = 0.0
+    #: Reversing along the path: the entity faces against it and a negative speed moves it forward
+    #: along it (an untimed path started at a negative speed, as esmini reads it).
+    reverse: bool = False
 
     def trajectory_time(self, t_sim: float) -> float:
         """The trajectory time played at simulation time ``t_sim``: ``t * scale + offset``, with t

@@ -91,7 +91,7 @@ class LongitudinalDistance(Action):
         ensure_lane(ctx, e)
         ensure_lane(ctx, ref)
         # every step is a whole step, the one it starts in too (esmini); in Init it only places
-        dt = 0.0 if ctx.initializing else ctx.dt
+        dt = 0.0 if ctx.initializing or ctx.settling else ctx.dt
         gap = longitudinal_gap(e, ref, self.freespace, self.system)
         wanted = self.side * (abs(ref.speed) * self.value if self.by_time else self.value)
         error = gap - wanted

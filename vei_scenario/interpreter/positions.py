@@ -89,8 +89,9 @@ def lane_pose(ctx, el, road_id: str, lane_id: int, s: float, offset: float, forw
 def _road_pose(el, road, s: float, t: float) -> Pose:
     x, y, h = road.world(s, t)
     lane = road.lane_at(s, t)
-    base = h if lane is None or road.drives_forward(lane) else h + math.pi
-    pose_h = _wrap(_orient(el, base))
+    # along increasing s, whatever lane the point is in: the standard's reference for a road
+    # position's orientation, and esmini's heading for one without (measured on a left-hand lane)
+    pose_h = _wrap(_orient(el, h))
     if lane is None:
         return Pose(x, y, pose_h)
     state = LaneState(road.id, lane, s, t - road.lane_center_t(s, lane), *_relative_heading(pose_h, h))

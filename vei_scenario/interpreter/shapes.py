@@ -139,7 +139,9 @@ def polyline_from(el, ctx, place: bool = True, entity: str | None = None) -> Pol
             pose = resolve(ctx, pos)
             xs.append(pose.x)
             ys.append(pose.y)
-            hs.append(pose.h)
+            # a vertex heading is set only by an Orientation; else the path's own direction (esmini)
+            kind = first_element(pos)
+            hs.append(pose.h if kind is not None and kind.find("Orientation") is not None else None)
         ts.append(float(v.get("time")) if v.get("time") is not None else None)
     if len(xs) < 2:
         raise ctx.error(el, "a polyline needs at least two vertices")

@@ -39,6 +39,8 @@ class Context:
     snapshot: dict | None = None
     #: True while the Init actions start (before the first record at t = 0).
     initializing: bool = False
+    #: the storyboard's first evaluation at t = 0, before t = 0 is logged: no time passes in it
+    settling: bool = False
     road_file: object = None  # the scenario's OpenDRIVE file, loaded on first use
     #: OpenSCENARIO 1.2 variables: name -> current value (text), and their declared types
     variables: dict[str, str] = field(default_factory=dict)
@@ -503,7 +505,59 @@ class Offroad(_HeldCondition):
         return lane is None or lane.type not in DRIVABLE_LANE_TYPES
 
 
+def _heading_in(ctx: Context, e, system: str) -> float:
+    """The entity's heading in ``system``: absolute (entity, world; what esmini measures), or relative
+    to the direction of increasing s of the road it is on (road, lane)."""
+    if system in ("road", "lane") and ctx.roads is not None:
+        rp = ctx.roads.project(e.x, e.y, e.lane.road if e.lane is not None else None)
+        if rp is not None:
+            return e.yaw - rp.road.ref_pose(rp.s)[2]
+    return e.yaw
+
+
+class Angle(_EntityCondition):
+    """AngleCondition (OpenSCENARIO 1.2): the entity's heading (pitch, roll: 0, vei's entities stay
+    level) within ``angleTolerance`` of ``angle`` (rad), measured in ``coordinateSystem``."""
+
+    def __init__(self, el, ctx, triggering, rule) -> None:
+        from vei_scenario.safe_xml import float_attribute
+
+        super().__init__(el, ctx, triggering, rule)
+        self.angle = float_attribute(ctx.path, el, "angle")
+        self.tolerance = float_attribute(ctx.path, el, "angleTolerance")
+        if self.tolerance < 0:
+            raise ctx.error(el, "angleTolerance must not be negative")
+        self.kind = el.get("angleType", "heading")
+        if self.kind not in ("heading", "pitch", "roll"):
+            raise ctx.error(el, f"angleType {self.kind!r} is not one of heading, pitch, roll")
+        self.system = el.get("coordinateSystem", "entity")
+        if self.system not in ("entity", "world", "road", "lane", "trajectory"):
+            raise ctx.error(el, f"coordinateSystem {self.system!r} is not one of OpenSCENARIO's")
+
+    def measured(self, ctx: Context, name: str) -> float:
+        e = ctx.entities[name]
+        return _heading_in(ctx, e, self.system) if self.kind == "heading" else 0.0
+
+    def for_entity(self, ctx: Context, name: str) -> bool:
+        diff = (self.measured(ctx, name) - self.angle + math.pi) % (2 * math.pi) - math.pi
+        return abs(diff) <= self.tolerance + 1e-12
+
+
+class RelativeAngle(Angle):
+    """RelativeAngleCondition: the triggering entity's angle minus that of ``entityRef``."""
+
+    def __init__(self, el, ctx, triggering, rule) -> None:
+        super().__init__(el, ctx, triggering, rule)
+        self.ref = el.get("entityRef")
+        _entity(ctx, el, self.ref)
+
+    def measured(self, ctx: Context, name: str) -> float:
+        return super().measured(ctx, name) - super().measured(ctx, self.ref)
+
+
 ENTITY_CONDITIONS = {
+    "AngleCondition": Angle,
+    "RelativeAngleCondition": RelativeAngle,
     "OffroadCondition": Offroad,
     "RelativeClearanceCondition": RelativeClearance,
     "CollisionCondition": Collision,

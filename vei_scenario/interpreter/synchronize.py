@@ -131,7 +131,7 @@ class Synchronize(Action):
 
     # --- each step ------------------------------------------------------------------------------
     def step(self, ctx) -> None:
-        if ctx.initializing:  # an Init synchronisation only starts: its first step is at t = 0
+        if ctx.initializing or ctx.settling:  # no time passes before t = 0 is logged
             return
         e, master = ctx.entities[self.entity], ctx.entities[self.master]
         dt = ctx.dt
@@ -147,8 +147,9 @@ class Synchronize(Action):
         dist = max(dist - self.tolerance, SMALL)
         master_dist = max(master_dist - self.tolerance_master, SMALL)
         master_time = LARGE
-        if master.speed > SMALL:
-            master_time = master_dist / master.speed
+        master_speed = abs(master.speed)  # (a master reversing along its path comes closer too)
+        if master_speed > SMALL:
+            master_time = master_dist / master_speed
             if master_time < dt:
                 done = True
         if done:
