@@ -594,6 +594,39 @@ class VariableSet(Action):
         self.done = True
 
 
+class EntityPresence(Action):
+    """EntityAction: DeleteEntityAction takes the entity out of the simulation (it no longer moves,
+    collides or triggers distance conditions; its trace keeps its last pose, marked ``deleted``);
+    AddEntityAction puts a declared entity (back) in at a position, standing."""
+
+    def __init__(self, el, ctx) -> None:
+        self.name, self.el = el.get("entityRef"), el
+        if self.name not in ctx.entities:
+            raise ctx.error(el, f"EntityAction: no entity named {self.name!r}")
+        kind = first_element(el)
+        if kind is None or kind.tag not in ("AddEntityAction", "DeleteEntityAction"):
+            raise ctx.error(el, "EntityAction needs an AddEntityAction or a DeleteEntityAction")
+        self.add = kind.tag == "AddEntityAction"
+        self.position = kind.find("Position") if self.add else None
+        if self.add and self.position is None:
+            raise ctx.error(kind, "AddEntityAction needs a Position")
+
+    def start(self, ctx) -> None:
+        e = ctx.entities[self.name]
+        if self.add:
+            pose = resolve_position(ctx, self.position)
+            e.x, e.y, e.yaw, e.lane = pose.x, pose.y, pose.h, pose.lane
+            e.find_lane = e.lane is None and ctx.road_file is not None
+            e.speed, e.accel, e.follower, e.lateral, e.speed_profile = 0.0, 0.0, None, None, None
+            e.deleted = False
+        else:
+            e.deleted = True
+            e.speed, e.accel = 0.0, 0.0
+            if e.longitudinal is not None and not e.longitudinal.done:
+                e.longitudinal.stop(ctx)
+        self.done = True
+
+
 class SignalState(Action):
     def __init__(self, name: str, state: str) -> None:
         self.name, self.state = name, state
@@ -660,6 +693,8 @@ def global_actions(ga, ctx) -> list[Action]:
     state = ga.find("InfrastructureAction/TrafficSignalAction/TrafficSignalStateAction")
     if state is not None:  # signal states: for TrafficSignalConditions (no default driver obeys them)
         return [SignalState(state.get("name"), state.get("state"))]
+    if kind is not None and kind.tag == "EntityAction":
+        return [EntityPresence(kind, ctx)]
     if kind is not None and kind.tag == "EnvironmentAction":  # weather and light: no effect on motion
         return [Ignored()]
     raise ctx.error(ga, f"global action <{kind.tag if kind is not None else ''}> is not supported by vei run")

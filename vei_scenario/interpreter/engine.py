@@ -331,6 +331,9 @@ class Simulation:
                 story.complete(ctx)
 
     def _move(self, e: Entity) -> None:
+        if e.deleted:
+            e.status, e.last_step_m = "deleted", 0.0
+            return
         if e.placed:
             e.placed = False
             return
@@ -487,7 +490,7 @@ class Simulation:
 
     def _collide(self, collisions: list) -> None:
         ctx = self.ctx
-        names = list(ctx.entities)
+        names = [n for n, e in ctx.entities.items() if not e.deleted]
         now: set[frozenset[str]] = set()
         boxes = {n: ctx.entities[n].box() for n in names}
         # circumscribed radii: boxes whose circles are apart (margin 1e-9) cannot overlap

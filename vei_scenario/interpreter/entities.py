@@ -188,6 +188,7 @@ class Entity:
     lane: object = None  # positions.LaneState while the entity keeps a lane by default
     lateral: object = None  # a running lane change (actions.LaneChangeRuntime)
     odometer: float = 0.0  # distance travelled (m), for TraveledDistanceCondition
+    deleted: bool = False  # taken out by a DeleteEntityAction
     last_step_m: float = 0.0  # distance moved in the last step (0 before the first): its measured speed
     standing_since: float | None = None  # simulation time the entity came to a standstill
     route: object = None  # routes.Route assigned by AssignRouteAction
