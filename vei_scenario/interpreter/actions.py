@@ -101,6 +101,8 @@ def lane_keep(e, ds: float, ctx) -> None:
             break
         road, st.lane, start = nxt
         s = over if start else road.length - over
+        if start != forward:  # the new road runs the other way: an offset (along t) keeps its side
+            st.offset = -st.offset
         forward = st.forward = start
     if road.id == st.road:  # lane links across the lane sections passed on this road
         k0, k1 = road.section_index(st.s), road.section_index(s)

@@ -185,6 +185,21 @@ class Collision(_EntityCondition):
         return any(frozenset((name, t)) in ctx.colliding for t in self.targets if t != name)
 
 
+class _StaticPoint:
+    """A position as the other party of a distance or time-to-collision: no size, no motion."""
+
+    length = width = speed = center_x = 0.0
+
+    def __init__(self, pose) -> None:
+        self.x, self.y, self.yaw, self.lane = pose.x, pose.y, pose.h, pose.lane
+
+    def box(self) -> tuple[float, float, float, float, float]:
+        return self.x, self.y, self.yaw, 0.0, 0.0
+
+    def velocity(self) -> tuple[float, float]:
+        return 0.0, 0.0
+
+
 def _relative(ctx, el, a, b, kind: str, freespace: bool) -> tuple[float, float]:
     """Distance and its rate of change between entities a and b (``kind``: cartesian/euclidian,
     longitudinal or lateral in a's frame; ``freespace``: between the boxes)."""
@@ -249,13 +264,25 @@ class TimeToCollision(_EntityCondition):
         self.kind = _distance_kind(ctx, el)
         target = el.find("TimeToCollisionConditionTarget")
         ref = target.find("EntityRef") if target is not None else None
-        if ref is None:
-            raise ctx.error(el, "TimeToCollisionCondition: only an EntityRef target is supported")
-        self.target = ref.get("entityRef")
-        _entity(ctx, el, self.target)
+        self.position = target.find("Position") if target is not None else None
+        self.point = None
+        if ref is None and self.position is None:
+            raise ctx.error(el, "TimeToCollisionCondition needs an EntityRef or a Position target")
+        self.target = ref.get("entityRef") if ref is not None else None
+        if self.target is not None:
+            _entity(ctx, el, self.target)
+
+    def _target(self, ctx: Context):
+        if self.target is not None:
+            return ctx.entities[self.target]
+        if self.point is None:  # a position target is a point that does not move, placed when first seen
+            from vei_scenario.interpreter.positions import resolve
+
+            self.point = _StaticPoint(resolve(ctx, self.position))
+        return self.point
 
     def ttc(self, ctx: Context, name: str) -> float:
-        a, b = ctx.entities[name], ctx.entities[self.target]
+        a, b = ctx.entities[name], self._target(ctx)
         if self.freespace and self.kind in ("cartesianDistance", "euclidianDistance", "euclideanDistance"):
             (avx, avy), (bvx, bvy) = a.velocity(), b.velocity()
             return float(
