@@ -87,9 +87,11 @@ def polyline_from(el, ctx, place: bool = True, entity: str | None = None) -> Pol
         raise ctx.error(el, "closed trajectories are not supported")
     shape = el.find("Shape")
     kind = first_element(shape) if shape is not None else None
-    if kind is None or kind.tag not in ("Polyline", "Clothoid", "ClothoidSpline"):
+    if kind is None or kind.tag not in ("Polyline", "Clothoid", "ClothoidSpline", "Nurbs"):
         tag = kind.tag if kind is not None else "none"
-        raise ctx.error(el, f"trajectory shape <{tag}> is not supported (Polyline, Clothoid, ClothoidSpline)")
+        raise ctx.error(el, f"trajectory shape <{tag}> is not supported (Polyline, Clothoid, ClothoidSpline, Nurbs)")
+    if kind.tag == "Nurbs":
+        return _nurbs(kind, ctx, place)
     if kind.tag == "Clothoid":
         t0, t1 = kind.get("startTime"), kind.get("stopTime")
         if not place:
@@ -155,3 +157,54 @@ def _times_along(xs: list, ys: list, t0: str | None, t1: str | None) -> list[flo
     s = np.concatenate(([0.0], np.cumsum(np.hypot(np.diff(xs), np.diff(ys)))))
     a, b = float(t0), float(t1)
     return list(a + (b - a) * s / s[-1]) if s[-1] > 0 else [a] * len(xs)
+
+
+#: Points a NURBS trajectory is sampled at per control point (the polyline it is followed along).
+NURBS_SAMPLES_PER_POINT = 40
+
+
+def _nurbs(el, ctx, place: bool) -> Polyline:
+    """A ``<Nurbs>`` shape: the rational B-spline of order ``order`` (degree order − 1) through its
+    weighted control points over its knot vector, sampled densely; a control point time is carried
+    by the same rational basis, so a timed NURBS gives every sample a time."""
+    from scipy.interpolate import BSpline
+
+    from vei_scenario.interpreter.positions import resolve
+
+    order = int(_num(ctx, el, "order"))
+    points = el.findall("ControlPoint")
+    knots = [_num(ctx, k, "value") for k in el.findall("Knot")]
+    n = len(points)
+    if order < 1 or n < order:
+        raise ctx.error(el, f"a Nurbs of order {order} needs at least {max(order, 1)} control points, has {n}")
+    if len(knots) != n + order:
+        raise ctx.error(el, f"a Nurbs of order {order} with {n} control points needs {n + order} knots, has {len(knots)}")
+    if any(b < a for a, b in zip(knots, knots[1:])):
+        raise ctx.error(el, "Nurbs knot values must not decrease")
+    weights = [_num(ctx, p, "weight", 1.0) for p in points]
+    if any(w <= 0 for w in weights):
+        raise ctx.error(el, "Nurbs control point weights must be positive")
+    times = [float(p.get("time")) if p.get("time") not in (None, "") else None for p in points]
+    timed = all(t is not None for t in times)
+    if not place:
+        return Polyline.unplaced([times[0], times[-1]] if timed else [None, None])
+    xy = []
+    for p in points:
+        pos = p.find("Position")
+        if pos is None:
+            raise ctx.error(p, "a Nurbs ControlPoint needs a Position")
+        pose = resolve(ctx, pos)
+        xy.append((pose.x, pose.y))
+    degree = order - 1
+    w = np.array(weights)
+    cols = np.column_stack([np.array(xy) * w[:, None], w, (np.array(times, dtype=float) if timed else w) * w])
+    curve = BSpline(np.array(knots), cols, degree, extrapolate=False)
+    lo, hi = knots[degree], knots[n]
+    if not hi > lo:
+        raise ctx.error(el, "Nurbs knots leave no parameter range")
+    u = np.linspace(lo, hi, max(2, NURBS_SAMPLES_PER_POINT * n))
+    vals = curve(u)
+    vals[-1] = curve(hi - 1e-12 * max(1.0, abs(hi)))  # (the closed end of the last knot span)
+    xs, ys = vals[:, 0] / vals[:, 2], vals[:, 1] / vals[:, 2]
+    ts = list(vals[:, 3] / vals[:, 2]) if timed else [None] * len(u)
+    return Polyline(list(xs), list(ys), [None] * len(u), ts)
