@@ -63,6 +63,12 @@ class Comparison:
     vei_collisions: list[tuple[float, str, str]]
     esmini_collisions: list[tuple[float, str, str]]
     notes: list[str] = field(default_factory=list)
+    vei_end_s: float = float("nan")  # last logged time of each player
+    esmini_end_s: float = float("nan")
+
+    @property
+    def end_time_difference_s(self) -> float:
+        return abs(self.vei_end_s - self.esmini_end_s)
 
     @property
     def max_deviation_m(self) -> float:
@@ -209,7 +215,9 @@ def compare_runs(vei_result, esmini_run: EsminiRun, until: dict[str, float] | No
     es_coll = [c for c in esmini_run.collisions if c[1] in known and c[2] in known]
     if len(es_coll) < len(esmini_run.collisions):
         notes.append("esmini collisions with entities vei does not model were left out")
-    return Comparison(out, vei_coll, es_coll, notes)
+    es_end = max((float(tr.t[-1]) for tr in esmini_run.tracks.values() if len(tr.t)), default=float("nan"))
+    vei_end = float(vei_result.t[-1]) if len(vei_result.t) else float("nan")
+    return Comparison(out, vei_coll, es_coll, notes, vei_end, es_end)
 
 
 def recording_ends(xosc: str | Path, parameters: dict[str, str] | None = None) -> dict[str, float]:

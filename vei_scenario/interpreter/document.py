@@ -116,6 +116,33 @@ def _declare(path: Path, decls, scope: dict[str, str], types: dict[str, str]) ->
         types[name] = type_
 
 
+def redeclare(path: Path, decls, fixed: dict[str, str]) -> tuple[dict[str, str], dict[str, str]]:
+    """The values and types of the top-level declarations ``decls`` with those named in ``fixed``
+    given: the others evaluated in order, so a parameter derived from a fixed one follows it."""
+    scope: dict[str, str] = {}
+    types: dict[str, str] = {}
+    for d in decls.iterfind("ParameterDeclaration"):
+        name = (d.get("name") or "").removeprefix("$")
+        value = fixed[name] if name in fixed else resolve_value(path, d, "value", d.get("value", ""), scope)
+        scope[name], types[name] = value, d.get("parameterType", "string")
+    return scope, types
+
+
+def derived_parameters(path: str | Path) -> tuple[object, set[str]]:
+    """The raw top-level ParameterDeclarations of a scenario and the names whose value refers to
+    other parameters (``$name`` or ``${...}``): those a variant must evaluate again."""
+    root = parse_xml(Path(path)).getroot()
+    top = root.find("ParameterDeclarations")
+    if top is None:
+        return None, set()
+    derived = {
+        (d.get("name") or "").removeprefix("$")
+        for d in top.iterfind("ParameterDeclaration")
+        if "$" in (d.get("value") or "")
+    }
+    return top, derived
+
+
 #: Attribute vei sets on an element copied from a catalog: the file it came from (for error messages).
 SOURCE_FILE = "{urn:vei-scenario}source"
 #: Catalog entries referencing catalog entries: deeper than this is refused (a cycle is named earlier).
@@ -296,12 +323,7 @@ def load_scenario(path: str | Path, overrides: dict[str, object] | None = None) 
     check_values(types, overrides, "--param", path)
     scope.update(overrides)
     if overrides:  # later declarations may depend on overridden ones: re-declare in order
-        fixed = dict(overrides)
-        scope, types = {}, {}
-        for d in top.iterfind("ParameterDeclaration"):
-            name = d.get("name")
-            value = fixed[name] if name in fixed else resolve_value(path, d, "value", d.get("value", ""), scope)
-            scope[name], types[name] = value, d.get("parameterType", "string")
+        scope, types = redeclare(path, top, overrides)
     _substitute(path, root, scope, types, Catalogs(path, root))
     check_numbers(path, root)  # every number the XSD types as one: finite, integral, in range
 

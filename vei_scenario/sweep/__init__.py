@@ -97,7 +97,22 @@ def build_variants(
             raise VeiInputError(None, "--vary", "nothing to vary: give --vary or --dist")
         variants = cartesian(axes, defaults)
         varied = [a[0] for a in axes]
-    return variants, varied
+    return _follow_derived(scenario, variants, varied), varied
+
+
+def _follow_derived(scenario: Path, variants: list[dict], varied: list[str]) -> list[dict]:
+    """Parameters declared from others (``_speed = ${$speed_kph/3.6}``) take each variant's values,
+    not the defaults' (unless varied themselves)."""
+    from vei_scenario.interpreter.document import derived_parameters, redeclare
+
+    decls, derived = derived_parameters(scenario)
+    if not derived or derived.issubset(varied):
+        return variants
+    out = []
+    for v in variants:
+        scope, _ = redeclare(scenario, decls, {n: str(v[n]) for n in varied if n in v})
+        out.append({**v, **{k: scope[k] for k in derived if k not in varied and k in scope}})
+    return out
 
 
 def run_sweep(

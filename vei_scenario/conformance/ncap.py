@@ -1,0 +1,37 @@
+"""The Euro NCAP scenario pack's single executions: which files they are, their base scenario and
+their values (Vector's OSC-NCAP-scenarios layout: ``<protocol>/Variations/*.xosc`` beside the base
+scenarios, the 2026 pack's in ``Variations/SingleExecution``). Used by the conformance benchmark and
+the tests that hold vei to esmini on them."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from vei_scenario.safe_xml import parse_xml
+
+
+def single_executions(root: Path) -> list[Path]:
+    """Every single-parameter-set variation file under ``root`` (the pack's ``OpenSCENARIO/NCAP``):
+    the 2023 files not named ``*_Variation_*`` and all of the 2026 ``SingleExecution`` files."""
+    files = [p for p in root.glob("*/Variations/*.xosc") if "_Variation_" not in p.name]
+    files += list(root.glob("*/Variations/SingleExecution/*.xosc"))
+    return sorted(files)
+
+
+def base_scenario(variation: Path) -> Path:
+    """The scenario a ParameterValueDistribution file varies (its ``ScenarioFile``)."""
+    ref = parse_xml(variation).getroot().find(".//ScenarioFile")
+    if ref is None or not ref.get("filepath"):
+        from vei_scenario.errors import VeiInputError
+
+        raise VeiInputError(variation, "ScenarioFile", "the distribution names no scenario file")
+    return (variation.parent / ref.get("filepath")).resolve()
+
+
+def values_of(variation: Path) -> tuple[Path, dict[str, str]]:
+    """(base scenario, the first parameter set of ``variation``)."""
+    from vei_scenario.interpreter.document import load_scenario
+    from vei_scenario.variation import read_distribution
+
+    base = base_scenario(variation)
+    return base, read_distribution(variation, load_scenario(base).parameter_types)[0]
