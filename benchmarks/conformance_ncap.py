@@ -43,11 +43,7 @@ def main() -> int:
             counts["refused"] += 1
             print(f"{v.name:45s} refused  {str(exc).split(': ')[-1][:100]}")
             continue
-        ok = (
-            c.max_deviation_m <= args.tolerance
-            and c.same_verdict
-            and c.end_time_difference_s <= dt + 1e-9
-        )
+        ok = c.max_deviation_m <= args.tolerance and c.same_verdict and c.end_time_difference_s <= dt + 1e-9
         counts["agrees" if ok else "differs"] += 1
         worst = max(c.entities, key=lambda e: e.max_deviation_m, default=None)
         where = f" ({worst.entity} at {worst.at_time_s:.2f} s)" if worst else ""

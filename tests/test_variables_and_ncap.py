@@ -64,29 +64,41 @@ def test_a_variable_action_on_an_undeclared_variable_is_refused(tmp_path, capsys
     assert err.count("\n") <= 1 and "undeclared variable 'nope'" in err
 
 
-SINGLE = [
-    ("AEB_C2C_2023", "NCAP_AEB_C2C_CCR_2023.xosc", "NCAP_AEB_C2C_CCRm_50kph_2023.xosc"),
-    ("AEB_C2C_2023", "NCAP_AEB_C2C_CCR_2023.xosc", "NCAP_AEB_C2C_CCRs_50kph_2023.xosc"),
-    ("AEB_C2C_2023", "NCAP_AEB_C2C_CCFhos_2023.xosc", "NCAP_AEB_C2C_CCFhos_50kph_2023.xosc"),
-    ("AEB_VRU_2023", "NCAP_AEB_VRU_CBLA_2023.xosc", "NCAP_AEB_VRU_CBLA-50_50kph_2023.xosc"),
-    ("AEB_VRU_2023", "NCAP_AEB_VRU_CBLA_2023.xosc", "NCAP_AEB_VRU_CPLA-25_50kph_2023.xosc"),
-]
+def _single_executions() -> list:
+    from vei_scenario.conformance.ncap import single_executions
+
+    return single_executions(NCAP) if NCAP.is_dir() else []
 
 
-@pytest.mark.parametrize("folder, base, variation", SINGLE)
-def test_ncap_single_executions_agree_with_esmini(folder, base, variation):
+#: Measured, explained differences from esmini 3.6 (README, "Where vei and esmini differ").
+ESMINI_DIFFERS = {
+    # esmini ignores a RoutePosition's Orientation (the standard applies it): the obstruction car is
+    # turned round, so the car placed relative to it stands 9 m away
+    "NCAP_AEB_VRU_CBFA-50_50kph_2023.xosc": "esmini ignores RoutePosition/Orientation",
+    "CBFA_50_50kph.xosc": "esmini ignores RoutePosition/Orientation",
+    # while the master turns through the junction esmini's synchronisation speed jumps (0.76, 0, 1.09
+    # m/s within 0.4 s); vei's profile stays smooth and ends 0.68 m apart
+    "NCAP_AEB_VRU_CPTAfo-50_10kph_2023.xosc": "esmini's synchronisation jumps in the junction",
+}
+
+
+@pytest.mark.parametrize("variation", _single_executions(), ids=lambda p: p.name)
+def test_ncap_single_executions_agree_with_esmini(variation, request):
+    """Every entity within 0.10 m of esmini over the whole run, the same collision verdict, the end
+    within one step; the explained differences are expected to stay differences."""
     from vei_scenario.conformance.esmini import cross_check, find_esmini
-    from vei_scenario.interpreter.document import load_scenario
-    from vei_scenario.variation import read_distribution
+    from vei_scenario.conformance.ncap import values_of
 
     esmini = find_esmini(ROOT.parent / "shared" / "esmini" / "bin" / "esmini")
-    if esmini is None or not NCAP.is_dir():
-        pytest.skip("esmini or the NCAP pack is not here")
-    scenario = NCAP / folder / base
-    values = read_distribution(NCAP / folder / "Variations" / variation, load_scenario(scenario).parameter_types)[0]
-    c = cross_check(esmini, scenario, values)
-    assert c.max_deviation_m <= 0.10, c
-    assert bool(c.vei_collisions) == bool(c.esmini_collisions)
+    if esmini is None:
+        pytest.skip("esmini is not here")
+    if variation.name in ESMINI_DIFFERS:
+        request.applymarker(pytest.mark.xfail(reason=ESMINI_DIFFERS[variation.name], strict=True))
+    base, values = values_of(variation)
+    c = cross_check(esmini, base, values)
+    assert c.max_deviation_m <= 0.10, [(e.entity, e.max_deviation_m, e.at_time_s) for e in c.entities]
+    assert c.same_verdict, (c.vei_collisions, c.esmini_collisions)
+    assert c.end_time_difference_s <= 0.01 + 1e-9, (c.vei_end_s, c.esmini_end_s)
 
 
 def test_run_takes_a_distribution_variant(capsys):

@@ -1,9 +1,11 @@
 """OpenSCENARIO positions → world poses, on the scenario's road network where they need one.
 
 Supported: WorldPosition, RelativeWorldPosition, RelativeObjectPosition, LanePosition, RoadPosition,
-RelativeLanePosition, RelativeRoadPosition, RoutePosition, TrajectoryPosition. A road-based position also gives the :class:`LaneState`
-an entity keeps when it drives on by default (esmini's default controller: keep the lane at the
-current speed). Orientation: absolute, or relative to the road's driving direction (default).
+RelativeLanePosition, RelativeRoadPosition, RoutePosition, TrajectoryPosition. A road-based position
+also gives the :class:`LaneState` an entity keeps when it drives on by default (esmini's default
+controller: keep the lane at the current speed). Orientation: absolute, or relative — to the lane's
+driving direction for lane positions, to increasing s for road positions (as esmini), to the path
+for trajectory positions.
 """
 
 from __future__ import annotations

@@ -178,7 +178,9 @@ def _nurbs(el, ctx, place: bool) -> Polyline:
     if order < 1 or n < order:
         raise ctx.error(el, f"a Nurbs of order {order} needs at least {max(order, 1)} control points, has {n}")
     if len(knots) != n + order:
-        raise ctx.error(el, f"a Nurbs of order {order} with {n} control points needs {n + order} knots, has {len(knots)}")
+        raise ctx.error(
+            el, f"a Nurbs of order {order} with {n} control points needs {n + order} knots, has {len(knots)}"
+        )
     if any(b < a for a, b in zip(knots, knots[1:])):
         raise ctx.error(el, "Nurbs knot values must not decrease")
     weights = [_num(ctx, p, "weight", 1.0) for p in points]

@@ -1,0 +1,271 @@
+"""SynchronizeAction, TrajectoryPosition, Nurbs, AngleCondition, TTC to a position, Add/DeleteEntity and
+sweeps over derived parameters, each checked against what the standard asks for or a closed form
+(the esmini agreement lives in test_variables_and_ncap.py)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from vei_scenario.cli import main
+from vei_scenario.interpreter import run_scenario
+
+HEAD = """<?xml version="1.0"?>
+<OpenSCENARIO><FileHeader revMajor="1" revMinor="3" date="2024-01-01T00:00:00" description="" author=""/>
+<ParameterDeclarations>{params}</ParameterDeclarations><CatalogLocations/><RoadNetwork/>
+<Entities>{entities}</Entities>"""
+
+
+def _car(name: str, length: float = 4.0, width: float = 2.0) -> str:
+    return (
+        f'<ScenarioObject name="{name}"><Vehicle name="{name}" vehicleCategory="car"><BoundingBox>'
+        f'<Center x="0" y="0" z="0.8"/><Dimensions width="{width}" length="{length}" height="1.5"/></BoundingBox>'
+        '<Performance maxSpeed="70" maxAcceleration="10" maxDeceleration="10"/><Axles>'
+        '<FrontAxle maxSteering="0.5" wheelDiameter="0.6" trackWidth="1.8" positionX="2.8" positionZ="0.3"/>'
+        '<RearAxle maxSteering="0" wheelDiameter="0.6" trackWidth="1.8" positionX="0" positionZ="0.3"/>'
+        "</Axles><Properties/></Vehicle></ScenarioObject>"
+    )
+
+
+def _teleport(name: str, x: float, y: float, h: float, speed: float | None = None) -> str:
+    out = (
+        f'<Private entityRef="{name}"><PrivateAction><TeleportAction><Position>'
+        f'<WorldPosition x="{x}" y="{y}" h="{h}"/></Position></TeleportAction></PrivateAction>'
+    )
+    if speed is not None:
+        out += (
+            '<PrivateAction><LongitudinalAction><SpeedAction><SpeedActionDynamics dynamicsShape="step" '
+            'value="0" dynamicsDimension="time"/><SpeedActionTarget>'
+            f'<AbsoluteTargetSpeed value="{speed}"/></SpeedActionTarget></SpeedAction></LongitudinalAction>'
+            "</PrivateAction>"
+        )
+    return out + "</Private>"
+
+
+def _scenario(tmp_path, entities, init, events, stop_s=20.0, params="", name="s.xosc"):
+    text = HEAD.format(params=params, entities=entities) + (
+        f"<Storyboard><Init><Actions>{init}</Actions></Init>"
+        '<Story name="s"><Act name="a"><ManeuverGroup name="g" maximumExecutionCount="1">'
+        '<Actors selectTriggeringEntities="false"><EntityRef entityRef="B"/></Actors>'
+        f'<Maneuver name="m">{events}</Maneuver></ManeuverGroup></Act></Story>'
+        '<StopTrigger><ConditionGroup><Condition name="end" delay="0" conditionEdge="none"><ByValueCondition>'
+        f'<SimulationTimeCondition value="{stop_s}" rule="greaterThan"/></ByValueCondition></Condition>'
+        "</ConditionGroup></StopTrigger></Storyboard></OpenSCENARIO>"
+    )
+    path = tmp_path / name
+    path.write_text(text)
+    return path
+
+
+def _event(action: str, trigger: str = "", name: str = "e") -> str:
+    start = f"<StartTrigger>{trigger}</StartTrigger>" if trigger else ""
+    return f'<Event name="{name}" priority="override"><Action name="{name}a">{action}</Action>{start}</Event>'
+
+
+def _sync(final: str = "", master_x: float = 100.0, target_y: float = 0.0) -> str:
+    return (
+        '<PrivateAction><SynchronizeAction masterEntityRef="A"><TargetPositionMaster>'
+        f'<WorldPosition x="{master_x}" y="0"/></TargetPositionMaster><TargetPosition>'
+        f'<WorldPosition x="100" y="{target_y}"/></TargetPosition>{final}</SynchronizeAction></PrivateAction>'
+    )
+
+
+def _at(trace, t: float) -> int:
+    return int(np.argmin(np.abs(trace.t - t)))
+
+
+@pytest.mark.parametrize(
+    "final, v_final",
+    [
+        ("", None),
+        ('<FinalSpeed><AbsoluteSpeed value="4"/></FinalSpeed>', 4.0),
+        (
+            '<FinalSpeed><AbsoluteSpeed value="9"><TargetDistanceSteadyState distance="10"/>'
+            "</AbsoluteSpeed></FinalSpeed>",
+            9.0,
+        ),
+        ('<FinalSpeed><RelativeSpeedToMaster value="0.5" speedTargetValueType="factor"/></FinalSpeed>', 5.0),
+    ],
+)
+def test_synchronized_entity_arrives_with_the_master(tmp_path, final, v_final):
+    """Master A drives 100 m at 10 m/s (10 s); B starts 60 m from its target, standing: it is at its
+    target (to within a step of travel) when A is at A's, at the final speed when one is given."""
+    init = _teleport("A", 0, 0, 0, 10.0) + _teleport("B", 100, -60, math.pi / 2, 0.0)
+    path = _scenario(tmp_path, _car("A") + _car("B"), init, _event(_sync(final)), stop_s=10.5)
+    r = run_scenario(path)
+    a, b = r.traces["A"], r.traces["B"]
+    k = int(np.argmin(np.abs(a.x - 100.0)))
+    assert abs(a.t[k] - 10.0) < 0.011
+    assert abs(b.y[k] - 0.0) < 0.15, (b.t[k], b.y[k])  # the collision: both at (100, 0)
+    assert r.collisions and abs(r.collisions[0][0] - 10.0) < 0.5
+    if v_final is not None:
+        assert abs(b.speed[k] - v_final) < 0.05
+    if "SteadyState" in final:  # the last 10 m at the final speed: from 10/9 s before the arrival
+        hold = (b.t > a.t[k] - 10.0 / 9.0 + 0.05) & (b.t <= a.t[k])
+        assert np.allclose(b.speed[hold], 9.0, atol=1e-9)
+
+
+def test_synchronize_waits_for_a_master_that_stands(tmp_path):
+    init = _teleport("A", 0, 0, 0, 0.0) + _teleport("B", 100, -60, math.pi / 2, 3.0)
+    path = _scenario(tmp_path, _car("A") + _car("B"), init, _event(_sync()), stop_s=3)
+    b = run_scenario(path).traces["B"]
+    assert np.allclose(b.y, -60.0) and np.allclose(b.speed, 0.0)
+
+
+def test_synchronize_names_an_unknown_master(tmp_path, capsys):
+    init = _teleport("A", 0, 0, 0, 10.0) + _teleport("B", 100, -60, math.pi / 2)
+    path = _scenario(tmp_path, _car("A") + _car("B"), init, _event(_sync().replace('"A"', '"Nobody"', 1)))
+    assert main(["run", str(path), "-o", str(tmp_path / "o")]) != 0
+    err = capsys.readouterr().err
+    assert "Nobody" in err and "s.xosc" in err and "Traceback" not in err
+
+
+TRAJ = (
+    '<Trajectory name="line" closed="false"><Shape><Polyline>'
+    '<Vertex><Position><WorldPosition x="0" y="0"/></Position></Vertex>'
+    '<Vertex><Position><WorldPosition x="0" y="50"/></Position></Vertex>'
+    "</Polyline></Shape></Trajectory>"
+)
+
+
+@pytest.mark.parametrize("s, t, x, y", [(10, 0, 0, 10), (10, 2, -2, 10), (60, -1, 1, 60)])
+def test_trajectory_position_is_along_and_left_of_the_path(tmp_path, s, t, x, y):
+    """s along the path (straight on past its end), t to its left, heading along it."""
+    pos = f'<TrajectoryPosition s="{s}" t="{t}"><TrajectoryRef>{TRAJ}</TrajectoryRef></TrajectoryPosition>'
+    init = (
+        f'<Private entityRef="B"><PrivateAction><TeleportAction><Position>{pos}</Position></TeleportAction>'
+        "</PrivateAction></Private>"
+    )
+    path = _scenario(tmp_path, _car("B"), init, "", stop_s=0.05)
+    b = run_scenario(path).traces["B"]
+    assert (b.x[0], b.y[0]) == pytest.approx((x, y), abs=1e-9)
+    assert b.yaw[0] == pytest.approx(math.pi / 2, abs=1e-9)
+
+
+def test_a_rational_quadratic_nurbs_is_a_circular_arc(tmp_path):
+    """The quarter circle of radius 20 as a NURBS (weights 1, √2/2, 1): every sampled point lies on
+    the circle, and a follower at 5 m/s covers its arc length 10π m in 2π s."""
+    w = math.sqrt(0.5)
+    nurbs = (
+        '<Nurbs order="3">'
+        '<ControlPoint weight="1"><Position><WorldPosition x="20" y="0"/></Position></ControlPoint>'
+        f'<ControlPoint weight="{w!r}"><Position><WorldPosition x="20" y="20"/></Position></ControlPoint>'
+        '<ControlPoint weight="1"><Position><WorldPosition x="0" y="20"/></Position></ControlPoint>'
+        + "".join(f'<Knot value="{k}"/>' for k in (0, 0, 0, 1, 1, 1))
+        + "</Nurbs>"
+    )
+    follow = (
+        '<PrivateAction><RoutingAction><FollowTrajectoryAction><TrajectoryRef><Trajectory name="arc" '
+        f'closed="false"><Shape>{nurbs}</Shape></Trajectory></TrajectoryRef><TimeReference><None/>'
+        '</TimeReference><TrajectoryFollowingMode followingMode="position"/></FollowTrajectoryAction>'
+        "</RoutingAction></PrivateAction>"
+    )
+    init = _teleport("B", 20, 0, math.pi / 2, 5.0).replace("</Private>", follow + "</Private>")
+    path = _scenario(tmp_path, _car("B"), init, "", stop_s=2 * math.pi - 0.05)
+    b = run_scenario(path).traces["B"]
+    assert np.allclose(np.hypot(b.x, b.y), 20.0, atol=2e-3)  # (a chord of the sampled arc sags < 2 mm)
+    assert math.atan2(b.y[-1], b.x[-1]) == pytest.approx(math.pi / 2 - 0.05 * 5 / 20, abs=2e-3)
+
+
+def test_a_nurbs_with_too_few_knots_is_refused(tmp_path, capsys):
+    nurbs = (
+        '<Nurbs order="3"><ControlPoint><Position><WorldPosition x="0" y="0"/></Position></ControlPoint>'
+        '<ControlPoint><Position><WorldPosition x="1" y="0"/></Position></ControlPoint>'
+        '<ControlPoint><Position><WorldPosition x="2" y="0"/></Position></ControlPoint>'
+        '<Knot value="0"/><Knot value="1"/></Nurbs>'
+    )
+    follow = (
+        '<PrivateAction><RoutingAction><FollowTrajectoryAction><TrajectoryRef><Trajectory name="n" '
+        f'closed="false"><Shape>{nurbs}</Shape></Trajectory></TrajectoryRef><TimeReference><None/>'
+        '</TimeReference><TrajectoryFollowingMode followingMode="position"/></FollowTrajectoryAction>'
+        "</RoutingAction></PrivateAction>"
+    )
+    init = _teleport("B", 0, 0, 0, 1.0).replace("</Private>", follow + "</Private>")
+    path = _scenario(tmp_path, _car("B"), init, "")
+    assert main(["run", str(path), "-o", str(tmp_path / "o")]) != 0
+    err = capsys.readouterr().err
+    assert "needs 6 knots, has 2" in err and "line" in err
+
+
+def _stop_when(condition: str) -> str:
+    stop = (
+        '<PrivateAction><LongitudinalAction><SpeedAction><SpeedActionDynamics dynamicsShape="step" value="0" '
+        'dynamicsDimension="time"/><SpeedActionTarget><AbsoluteTargetSpeed value="0"/></SpeedActionTarget>'
+        "</SpeedAction></LongitudinalAction></PrivateAction>"
+    )
+    trigger = (
+        '<ConditionGroup><Condition name="c" delay="0" conditionEdge="none"><ByEntityCondition>'
+        '<TriggeringEntities triggeringEntitiesRule="any"><EntityRef entityRef="B"/></TriggeringEntities>'
+        f"<EntityCondition>{condition}</EntityCondition></ByEntityCondition></Condition></ConditionGroup>"
+    )
+    return _event(stop, trigger)
+
+
+def test_time_to_collision_with_a_position(tmp_path):
+    """B at 10 m/s towards a point 100 m ahead: TTC < 3 s holds once less than 30 m remain (after
+    7 s); it stops there."""
+    cond = (
+        '<TimeToCollisionCondition value="3" freespace="false" relativeDistanceType="longitudinal" '
+        'rule="lessThan"><TimeToCollisionConditionTarget><Position><WorldPosition x="100" y="0"/></Position>'
+        "</TimeToCollisionConditionTarget></TimeToCollisionCondition>"
+    )
+    path = _scenario(tmp_path, _car("B"), _teleport("B", 0, 0, 0, 10.0), _stop_when(cond), stop_s=10)
+    b = run_scenario(path).traces["B"]
+    assert b.x[-1] == pytest.approx(70.0, abs=0.11)
+
+
+@pytest.mark.parametrize("angle, stops", [(math.pi / 2, True), (math.pi / 2 + 0.2, False)])
+def test_angle_condition_on_heading(tmp_path, angle, stops):
+    cond = f'<AngleCondition angle="{angle!r}" angleTolerance="0.1" angleType="heading"/>'
+    path = _scenario(tmp_path, _car("B"), _teleport("B", 0, 0, math.pi / 2, 10.0), _stop_when(cond), stop_s=1)
+    b = run_scenario(path).traces["B"]
+    assert (b.y[-1] < 1e-9) == stops
+
+
+def test_a_deleted_entity_no_longer_moves_or_collides(tmp_path):
+    """A and B drive head-on; B is deleted at 1 s: it stays where it was and no collision happens."""
+    delete = '<GlobalAction><EntityAction entityRef="B"><DeleteEntityAction/></EntityAction></GlobalAction>'
+    trigger = (
+        '<ConditionGroup><Condition name="c" delay="0" conditionEdge="none"><ByValueCondition>'
+        '<SimulationTimeCondition value="1" rule="greaterOrEqual"/></ByValueCondition></Condition></ConditionGroup>'
+    )
+    init = _teleport("A", 0, 0, 0, 10.0) + _teleport("B", 60, 0, math.pi, 10.0)
+    path = _scenario(tmp_path, _car("A") + _car("B"), init, _event(delete, trigger), stop_s=6)
+    r = run_scenario(path)
+    b = r.traces["B"]
+    assert not r.collisions
+    after = b.t > 1.05
+    assert np.ptp(b.x[after]) == 0.0 and b.status[-1] == "deleted"
+
+
+def test_reversing_along_a_path_faces_against_it(tmp_path):
+    """An untimed path followed at a negative speed: the entity moves along the path, facing back."""
+    follow = (
+        f"<PrivateAction><RoutingAction><FollowTrajectoryAction><TrajectoryRef>{TRAJ}</TrajectoryRef>"
+        '<TimeReference><None/></TimeReference><TrajectoryFollowingMode followingMode="position"/>'
+        "</FollowTrajectoryAction></RoutingAction></PrivateAction>"
+    )
+    init = _teleport("B", 0, 0, 0, -2.0).replace("</Private>", follow + "</Private>")
+    b = run_scenario(_scenario(tmp_path, _car("B"), init, "", stop_s=5)).traces["B"]
+    assert b.y[-1] == pytest.approx(2.0 * b.t[-1], abs=1e-6)
+    assert b.yaw[-1] == pytest.approx(-math.pi / 2, abs=1e-9)
+
+
+def test_a_sweep_takes_derived_parameters_from_each_variant(tmp_path):
+    """``_speed = ${$speed_kph / 3.6}``: varying speed_kph varies the speed the car drives at."""
+    params = (
+        '<ParameterDeclaration name="speed_kph" parameterType="double" value="36"/>'
+        '<ParameterDeclaration name="_speed" parameterType="double" value="${$speed_kph / 3.6}"/>'
+    )
+    init = _teleport("A", 0, 0, 0, "$_speed") + _teleport("B", 200, 0, math.pi, 0.0)
+    path = _scenario(tmp_path, _car("A") + _car("B"), init, "", stop_s=30, params=params)
+    out = tmp_path / "sweep"
+    assert main(["sweep", str(path), "--vary", "speed_kph=36,72", "-o", str(out), "--quiet"]) == 0
+    import json
+
+    rows = json.loads((out / "catalog.json").read_text())["variants"]
+    times = {float(r["parameters"]["speed_kph"]): r["metrics"]["collision_time_s"] for r in rows}
+    assert float(rows[1]["parameters"]["_speed"]) == pytest.approx(20.0)
+    assert times[36.0] == pytest.approx(196 / 10, abs=0.02) and times[72.0] == pytest.approx(196 / 20, abs=0.02)
