@@ -202,7 +202,11 @@ class LaneChange(Action):
         self.shape = dyn.get("dynamicsShape")
         self.dimension = dyn.get("dynamicsDimension")
         self.value = float(dyn.get("value"))
-        if self.shape not in ("step", "linear", "cubic", "sinusoidal") or self.dimension not in ("time", "distance"):
+        if self.shape not in ("step", "linear", "cubic", "sinusoidal") or self.dimension not in (
+            "time",
+            "distance",
+            "rate",
+        ):
             raise ctx.error(dyn, f"lane change dynamics {self.shape}/{self.dimension} are not supported")
         target = first_element(el.find("LaneChangeTarget"))
         self.target = target
@@ -223,14 +227,29 @@ class LaneChange(Action):
             _, ref = entity_lane(ctx, self.el, self.target.get("entityRef"))
             lane = lane_shift(ref.lane, int(self.target.get("value")), ref.forward)
             where = (ref.road, ctx.roads.road(ref.road).section_index(ref.s))
+        if lane == 0 or not _lane_exists(ctx.roads, st.road, lane, ref_where=where):
+            raise ctx.error(self.el, f"LaneChangeAction: road {st.road} has no lane {lane} here")
+        dimension, value = self.dimension, self.value
+        if dimension == "rate":  # a peak lateral speed (m/s): the time the shape needs at it (esmini)
+            span = (
+                abs(
+                    road.lane_center_t_in(where[1], st.s, lane)
+                    + self.target_offset
+                    - road.lane_center_t(st.s, st.lane)
+                    - st.offset
+                )
+                if where[0] == road.id
+                else 0.0
+            )
+            dimension, value = "time", (PEAK_RATE[self.shape] * span / self.value if self.value > 0 else 0.0)
         e.lateral = LaneChangeRuntime(
             st.lane,
             st.offset,
             lane,
             self.target_offset,
             self.shape,
-            self.dimension,
-            self.value,
+            dimension,
+            value,
             ctx.t,
             e.odometer,
         )
@@ -255,6 +274,13 @@ class LaneChange(Action):
 
     def stop(self, ctx) -> None:
         ctx.entities[self.entity].lateral = None
+
+
+def _lane_exists(net, road_id: str, lane: int, ref_where: tuple[str, int]) -> bool:
+    """Whether ``lane`` exists on the reference's road (``ref_where``) in any lane section — a lane
+    change to a lane the road does not have is refused, not guessed."""
+    road = net.road(ref_where[0])
+    return any(lane in sec.lanes for sec in road.sections)
 
 
 class LaneOffset(Action):
@@ -393,8 +419,8 @@ class Speed(Action):
             duration = 0.0
         elif self.dimension == "time":
             duration = self.value
-        elif self.dimension == "rate":
-            duration = abs((v1 - v0) / self.value)  # a rate may be written with the sign of the change
+        elif self.dimension == "rate":  # the peak rate of the shape (esmini): the mean for linear
+            duration = PEAK_RATE[self.shape] * abs((v1 - v0) / self.value)  # (the sign is the change's)
         else:  # distance: the time to cover it at the mean speed of the transition
             mean = 0.5 * (v0 + v1)
             duration = self.value / mean if mean > 1e-9 else 0.0
