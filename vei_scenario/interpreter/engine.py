@@ -325,10 +325,32 @@ class Simulation:
                             m.complete(ctx)
                     if g.state == RUNNING and all(done(m) for m in g.children):
                         g.complete(ctx)
+                        if g.executions < g.max_executions:
+                            self._restart_group(g)
                 if all(done(g) for g in act.children):
                     act.complete(ctx)
             if all(done(a) for a in story.children):
                 story.complete(ctx)
+
+    def _restart_group(self, g: Element) -> None:
+        """A ManeuverGroup whose maneuvers are all complete runs again while it has executions left
+        (maximumExecutionCount): its maneuvers, events and actions start over from standby."""
+        ctx = self.ctx
+
+        def reset(el: Element) -> None:
+            el.state, el.executions = STANDBY, 0
+            if el.start_trigger is not None:
+                el.start_trigger.reset()
+            for a in el.actions:
+                a.done = False
+            for c in el.children:
+                reset(c)
+
+        for m in g.children:
+            reset(m)
+        g.start(ctx)
+        for m in g.children:
+            m.start(ctx)
 
     def _move(self, e: Entity) -> None:
         if e.deleted:

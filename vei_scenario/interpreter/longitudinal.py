@@ -95,7 +95,9 @@ class LongitudinalDistance(Action):
         gap = longitudinal_gap(e, ref, self.freespace, self.system)
         wanted = self.side * (abs(ref.speed) * self.value if self.by_time else self.value)
         error = gap - wanted
-        if not self.continuous and abs(error) < 0.1:
+        # a one-off action ends once the gap is measured reached — or, placed at it, the step after
+        # (esmini measures first; a gap that its own measure never confirms must not lock the entity)
+        if not self.continuous and (abs(error) < 0.1 or self.placed):
             self.done = True
         if math.isinf(self.max_accel) and math.isinf(self.max_decel):  # at the distance, at its speed
             if e.lane is not None and ctx.roads is not None:
@@ -103,6 +105,7 @@ class LongitudinalDistance(Action):
             else:
                 advance_along(e, error)
             e.speed = ref.speed
+            self.placed = True
             return
         k = (self.max_accel if error < 0.0 else self.max_decel) * SPRING_PER_ACCEL
         acc = error * k - (e.speed - ref.speed) * 2.0 * math.sqrt(k)
@@ -114,6 +117,8 @@ class LongitudinalDistance(Action):
             acc = min(self.accel + (self.accel_rate * dt if dt > 0.0 else 0.0), acc)
         self.accel = acc
         e.speed = max(-self.max_speed, min(self.max_speed, e.speed + acc * dt))
+
+    placed = False  # placed at the gap (no dynamic constraints) in an earlier step
 
     def stop(self, ctx) -> None:
         self.done = True

@@ -667,6 +667,13 @@ class Trigger:
         results = [[c.evaluate(ctx) for c in g] for g in self.groups]
         return any(all(r) for r in results if r)
 
+    def reset(self) -> None:
+        """Forget what the conditions saw (an element run again waits its delays afresh, as esmini)."""
+        for g in self.groups:
+            for c in g:
+                c.prev = None
+                c.history.clear()
+
 
 # --- elements ---------------------------------------------------------------------------------------
 
