@@ -5,10 +5,12 @@ sweeps over derived parameters, each checked against what the standard asks for 
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
 
+from conftest import ROOT
 from vei_scenario.cli import main
 from vei_scenario.interpreter import run_scenario
 
@@ -269,3 +271,90 @@ def test_a_sweep_takes_derived_parameters_from_each_variant(tmp_path):
     times = {float(r["parameters"]["speed_kph"]): r["metrics"]["collision_time_s"] for r in rows}
     assert float(rows[1]["parameters"]["_speed"]) == pytest.approx(20.0)
     assert times[36.0] == pytest.approx(196 / 10, abs=0.02) and times[72.0] == pytest.approx(196 / 20, abs=0.02)
+
+
+def test_a_maneuver_group_runs_as_often_as_it_may(tmp_path):
+    """maximumExecutionCount="3": the group's event (jump 10 m ahead, 0.5 s after t > 1 s) happens
+    three times, each run waiting its delay afresh: at 1.5, 2.0 and 2.5 s (esmini measured the same)."""
+    jump = (
+        '<PrivateAction><TeleportAction><Position><RelativeWorldPosition entityRef="B" dx="10" dy="0"/>'
+        "</Position></TeleportAction></PrivateAction>"
+    )
+    trigger = (
+        '<ConditionGroup><Condition name="c" delay="0.5" conditionEdge="none"><ByValueCondition>'
+        '<SimulationTimeCondition value="1" rule="greaterThan"/></ByValueCondition></Condition></ConditionGroup>'
+    )
+    path = _scenario(tmp_path, _car("B"), _teleport("B", 0, 0, 0, 10.0), _event(jump, trigger), stop_s=4)
+    path.write_text(path.read_text().replace('maximumExecutionCount="1"', 'maximumExecutionCount="3"'))
+    b = run_scenario(path).traces["B"]
+    jumps = b.t[1:][np.diff(b.x) > 5.0]
+    assert len(jumps) == 3
+    assert np.diff(jumps) == pytest.approx([0.5, 0.5], abs=0.011)
+    assert b.x[-1] == pytest.approx(10.0 * b.t[-1] + 30.0 - 3 * 0.1, abs=1e-6)  # (a jump replaces a step)
+
+
+ROAD = ROOT.parent / "shared" / "esmini" / "xodr" / "straight_500m.xodr"
+
+
+def _lane_change(tmp_path, lane: int, shape: str, dimension: str, value: float) -> Path:
+    text = HEAD.format(params="", entities=_car("B")).replace(
+        "<RoadNetwork/>", f'<RoadNetwork><LogicFile filepath="{ROAD}"/></RoadNetwork>'
+    )
+    change = (
+        "<PrivateAction><LateralAction><LaneChangeAction><LaneChangeActionDynamics "
+        f'dynamicsShape="{shape}" value="{value}" dynamicsDimension="{dimension}"/><LaneChangeTarget>'
+        f'<AbsoluteTargetLane value="{lane}"/></LaneChangeTarget></LaneChangeAction></LateralAction></PrivateAction>'
+    )
+    trigger = (
+        '<ConditionGroup><Condition name="c" delay="0" conditionEdge="none"><ByValueCondition>'
+        '<SimulationTimeCondition value="1" rule="greaterThan"/></ByValueCondition></Condition></ConditionGroup>'
+    )
+    init = (
+        '<Private entityRef="B"><PrivateAction><TeleportAction><Position><LanePosition roadId="1" laneId="-1" '
+        's="50"/></Position></TeleportAction></PrivateAction><PrivateAction><LongitudinalAction><SpeedAction>'
+        '<SpeedActionDynamics dynamicsShape="step" value="0" dynamicsDimension="time"/><SpeedActionTarget>'
+        '<AbsoluteTargetSpeed value="10"/></SpeedActionTarget></SpeedAction></LongitudinalAction></PrivateAction>'
+        "</Private>"
+    )
+    text += (
+        f"<Storyboard><Init><Actions>{init}</Actions></Init>"
+        '<Story name="s"><Act name="a"><ManeuverGroup name="g" maximumExecutionCount="1">'
+        '<Actors selectTriggeringEntities="false"><EntityRef entityRef="B"/></Actors>'
+        f'<Maneuver name="m">{_event(change, trigger)}</Maneuver></ManeuverGroup></Act></Story>'
+        '<StopTrigger><ConditionGroup><Condition name="end" delay="0" conditionEdge="none"><ByValueCondition>'
+        '<SimulationTimeCondition value="8" rule="greaterThan"/></ByValueCondition></Condition>'
+        "</ConditionGroup></StopTrigger></Storyboard></OpenSCENARIO>"
+    )
+    path = tmp_path / "lc.xosc"
+    path.write_text(text)
+    return path
+
+
+@pytest.mark.parametrize("shape, peak", [("sinusoidal", math.pi / 2), ("cubic", 1.5), ("linear", 1.0)])
+def test_a_lane_change_over_a_rate_peaks_at_it(tmp_path, shape, peak):
+    """dynamicsDimension="rate": the value is the peak lateral speed, so the change of one lane width
+    w takes peak·w/rate; the entity ends in the target lane's centre (and as esmini, when here)."""
+    if not ROAD.is_file():
+        pytest.skip("esmini's roads are not here")
+    path = _lane_change(tmp_path, 1, shape, "rate", 1.0)
+    b = run_scenario(path).traces["B"]
+    y0, y1 = b.y[0], b.y[-1]
+    assert y1 > y0 + 1.0
+    moving = b.t[np.abs(np.diff(b.y, prepend=y0)) > 1e-9]
+    assert moving[-1] - moving[0] == pytest.approx(peak * (y1 - y0) / 1.0, abs=0.03)
+    vy = np.diff(b.y) / np.diff(b.t)
+    assert vy.max() == pytest.approx(1.0, abs=0.02 if shape != "linear" else 1e-6)
+    from vei_scenario.conformance.esmini import cross_check, find_esmini
+
+    esmini = find_esmini(ROOT.parent / "shared" / "esmini" / "bin" / "esmini")
+    if esmini is not None:
+        assert cross_check(esmini, path).max_deviation_m < 0.05
+
+
+def test_a_lane_change_to_a_lane_the_road_lacks_is_refused(tmp_path, capsys):
+    if not ROAD.is_file():
+        pytest.skip("esmini's roads are not here")
+    path = _lane_change(tmp_path, -5, "cubic", "time", 2.0)
+    assert main(["run", str(path), "-o", str(tmp_path / "o")]) != 0
+    err = capsys.readouterr().err
+    assert "no lane -5" in err and "lc.xosc" in err and "line" in err and "Traceback" not in err
