@@ -15,6 +15,7 @@ from pathlib import Path
 
 import numpy as np
 
+from vei_scenario.interpreter.actions import ParameterSet, SignalState, VariableSet
 from vei_scenario.interpreter.actions import global_actions, lane_keep, private_actions
 from vei_scenario.interpreter.controllers import advance_along, make_controller
 from vei_scenario.interpreter.document import ScenarioDocument
@@ -24,6 +25,10 @@ from vei_scenario.interpreter.shapes import placed_when_built, polyline_from
 from vei_scenario.interpreter.storyboard import COMPLETE, RUNNING, STANDBY, Context, Element, Trigger
 from vei_scenario.models.boxes import boxes_overlap_scalar
 from vei_scenario.models.vehicle import VehicleLimits
+
+#: Actions that only set a value (a signal state, a variable, a parameter): esmini carries them out as
+#: their event starts, so triggers evaluated after it in the same step see the new value.
+VALUE_ACTIONS = (SignalState, VariableSet, ParameterSet)
 
 #: Runs end here at the latest (s) when the storyboard has no stop trigger that fires.
 DEFAULT_MAX_TIME_S = 600.0
@@ -287,7 +292,11 @@ class Simulation:
                         running = [e for e in m.children if e.state == RUNNING]
                         for ev in m.children:
                             if ev.state == STANDBY and (ev.start_trigger is None or ev.start_trigger.evaluate(ctx)):
-                                starting.append((ev, [r for r in running if r is not ev]))
+                                others = [r for r in running if r is not ev]
+                                if all(isinstance(x, VALUE_ACTIONS) for a in ev.children for x in a.actions):
+                                    self._start_event(ev, others)  # a value set is seen by what follows
+                                else:
+                                    starting.append((ev, others))
         # every trigger sees the same state: events start after all were evaluated (a teleport started
         # by one event must not hide the condition that starts another)
         for ev, others in starting:
