@@ -112,6 +112,9 @@ AGREEING_EXAMPLES = (
     "slow-lead-vehicle",
     "straight_500m",
     "straight_500m_pedestrian",
+    "synch_with_steady_state",
+    "traffic_lights",
+    "truck_with_rotating_axle",
     "tunnels",
     "velodrome",
 )
