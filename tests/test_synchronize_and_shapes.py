@@ -358,3 +358,19 @@ def test_a_lane_change_to_a_lane_the_road_lacks_is_refused(tmp_path, capsys):
     assert main(["run", str(path), "-o", str(tmp_path / "o")]) != 0
     err = capsys.readouterr().err
     assert "no lane -5" in err and "lc.xosc" in err and "line" in err and "Traceback" not in err
+
+
+def test_a_distance_condition_follows_a_position_relative_to_a_moving_entity(tmp_path):
+    """DistanceCondition to a RelativeObjectPosition of the lead: the point moves with the lead (it
+    is resolved each step, as esmini does), so a follower closing at 10 m/s from 50 m is within 20.05 m
+    after 2.995 s — not never, as a point fixed where the lead stood at the start would give."""
+    cond = (
+        '<DistanceCondition value="20.05" freespace="false" relativeDistanceType="euclidianDistance" '
+        'rule="lessThan"><Position><RelativeObjectPosition entityRef="A" dx="0" dy="0"/></Position>'
+        "</DistanceCondition>"
+    )
+    init = _teleport("B", 0, 0, 0, 20.0) + _teleport("A", 50, 0, 0, 10.0)
+    path = _scenario(tmp_path, _car("A") + _car("B"), init, _stop_when(cond), stop_s=5)
+    b = run_scenario(path).traces["B"]
+    first_slow = b.t[np.argmax(b.speed < 1.0)]
+    assert first_slow == pytest.approx(3.01, abs=1e-9)

@@ -264,8 +264,8 @@ class TimeToCollision(_EntityCondition):
         self.kind = _distance_kind(ctx, el)
         target = el.find("TimeToCollisionConditionTarget")
         ref = target.find("EntityRef") if target is not None else None
-        self.position = target.find("Position") if target is not None else None
-        self.point = None
+        position = target.find("Position") if target is not None else None
+        self.position = _PositionTarget(position) if position is not None else None
         if ref is None and self.position is None:
             raise ctx.error(el, "TimeToCollisionCondition needs an EntityRef or a Position target")
         self.target = ref.get("entityRef") if ref is not None else None
@@ -275,11 +275,7 @@ class TimeToCollision(_EntityCondition):
     def _target(self, ctx: Context):
         if self.target is not None:
             return ctx.entities[self.target]
-        if self.point is None:  # a position target is a point that does not move, placed when first seen
-            from vei_scenario.interpreter.positions import resolve
-
-            self.point = _StaticPoint(resolve(ctx, self.position))
-        return self.point
+        return self.position(ctx)
 
     def ttc(self, ctx: Context, name: str) -> float:
         a, b = ctx.entities[name], self._target(ctx)
@@ -310,27 +306,43 @@ class RelativeDistance(_EntityCondition):
         return compare(self.rule, d, self.value)
 
 
+class _PositionTarget:
+    """A condition's ``<Position>``: resolved when first needed (after Init placed the entities), and
+    again every time when it is relative to an entity (it moves with it, as in esmini)."""
+
+    def __init__(self, el) -> None:
+        self.el = el
+        self.moving = any(x.get("entityRef") for x in el.iter() if isinstance(x.tag, str))
+        self.point: _StaticPoint | None = None
+
+    def __call__(self, ctx: Context) -> _StaticPoint:
+        if self.point is None or self.moving:
+            from vei_scenario.interpreter.positions import resolve
+
+            self.point = _StaticPoint(resolve(ctx, self.el))
+        return self.point
+
+
 class Distance(_EntityCondition):
     def __init__(self, el, ctx, triggering, rule) -> None:
         super().__init__(el, ctx, triggering, rule)
         self.value, self.rule = float(el.get("value")), el.get("rule")
         self.freespace = el.get("freespace", "false") == "true"
         self.kind = _distance_kind(ctx, el)
-        from vei_scenario.interpreter.positions import resolve
-
-        pose = resolve(ctx, el.find("Position"))
-        self.px, self.py, self.lane = pose.x, pose.y, pose.lane
+        if el.find("Position") is None:
+            raise ctx.error(el, "DistanceCondition needs a Position")
+        self.target = _PositionTarget(el.find("Position"))
 
     def for_entity(self, ctx: Context, name: str) -> bool:
-        e = ctx.entities[name]
-        if self.kind == "alongRoad" and self.lane is not None and e.lane is not None and e.lane.road == self.lane.road:
-            d = abs(self.lane.s - e.lane.s) - (0.5 * e.length if self.freespace else 0.0)
+        e, p = ctx.entities[name], self.target(ctx)
+        if self.kind == "alongRoad" and p.lane is not None and e.lane is not None and e.lane.road == p.lane.road:
+            d = abs(p.lane.s - e.lane.s) - (0.5 * e.length if self.freespace else 0.0)
             return compare(self.rule, max(d, 0.0), self.value)
-        if self.freespace:
-            bx, by, byaw, bl, bw = e.box()
-            d = float(box_distance(bx, by, byaw, bl, bw, self.px, self.py, 0.0, 0.0, 0.0))
+        if self.kind == "alongRoad":
+            kind = "longitudinal"
         else:
-            d = math.hypot(e.x - self.px, e.y - self.py)
+            kind = self.kind
+        d, _ = _relative(ctx, self.el, e, p, kind, self.freespace)
         return compare(self.rule, d, self.value)
 
 
@@ -349,16 +361,15 @@ class Speed(_EntityCondition):
 
 class ReachPosition(_EntityCondition):
     def __init__(self, el, ctx, triggering, rule) -> None:
-        from vei_scenario.interpreter.positions import resolve
-
         super().__init__(el, ctx, triggering, rule)
         self.tolerance = float(el.get("tolerance"))
-        pose = resolve(ctx, el.find("Position"))
-        self.px, self.py = pose.x, pose.y
+        if el.find("Position") is None:
+            raise ctx.error(el, "ReachPositionCondition needs a Position")
+        self.target = _PositionTarget(el.find("Position"))
 
     def for_entity(self, ctx: Context, name: str) -> bool:
-        e = ctx.entities[name]
-        return math.hypot(e.x - self.px, e.y - self.py) <= self.tolerance
+        e, p = ctx.entities[name], self.target(ctx)
+        return math.hypot(e.x - p.x, e.y - p.y) <= self.tolerance
 
 
 class TraveledDistance(_EntityCondition):
