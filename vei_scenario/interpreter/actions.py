@@ -497,6 +497,10 @@ class FollowTrajectory(Action):
             e.follower.s = max(self.polyline.project(e.x, e.y), self.initial_s)
         elif ctx.initializing:  # logged at t = 0 on its trajectory
             e.x, e.y, e.yaw = self.polyline.at_time(e.follower.trajectory_time(ctx.t))
+        if self.timing is not None and self.polyline.timed:  # it starts at the trajectory's speed (esmini)
+            f, tt = e.follower, e.follower.trajectory_time(ctx.t)
+            h = 1e-3
+            e.speed = (self.polyline.s_at_time(tt + h) - self.polyline.s_at_time(tt)) / h * f.timing[1]
         e.lane, e.find_lane = None, False
 
     def update(self, ctx) -> None:

@@ -394,15 +394,22 @@ class Simulation:
         f = e.follower
         t_next = ctx.t + dt
         if f is not None and f.timing is not None and f.polyline.timed:
-            # placed by its timing, whichever followingMode (esmini's default controller: "follow"
-            # lets a controller deviate from the path; with none the entity keeps to it)
             target = f.polyline.s_at_time(f.trajectory_time(t_next))
-            x, y, h = f.polyline.at_time(f.trajectory_time(t_next))
-            speed = (target - f.s) / dt
-            e.accel, e.speed = (speed - e.speed) / dt, speed
-            f.s = target
-            e.x, e.y, e.yaw = x, y, h
-            e.status = "replay"
+            if f.mode == "position":
+                x, y, h = f.polyline.at_time(f.trajectory_time(t_next))
+                speed = (target - f.s) / dt
+                e.accel, e.speed = (speed - e.speed) / dt, speed
+                f.s = target
+                e.x, e.y, e.yaw = x, y, h
+                e.status = "replay"
+                return
+            # follow: track the timed position with the entity's acceleration limits (esmini's)
+            v_target = (target - f.s) / dt
+            a = max(-e.limits.max_decel_mps2, min(e.limits.max_accel_mps2, (v_target - e.speed) / dt))
+            v = max(0.0, e.speed + a * dt)
+            advance_along(e, 0.5 * (e.speed + v) * dt)
+            e.speed, e.accel = v, a
+            e.status = "follow"
             return
         v0 = e.step_speed  # (an action stepped before the move may have set the speed already)
         if e.speed_profile is not None:
