@@ -110,6 +110,7 @@ AGREEING_EXAMPLES = (
     "pedestrian",
     "routing-test",
     "slow-lead-vehicle",
+    "speed-profile",
     "straight_500m",
     "straight_500m_pedestrian",
     "synch_with_steady_state",

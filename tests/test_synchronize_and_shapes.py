@@ -374,3 +374,34 @@ def test_a_distance_condition_follows_a_position_relative_to_a_moving_entity(tmp
     b = run_scenario(path).traces["B"]
     first_slow = b.t[np.argmax(b.speed < 1.0)]
     assert first_slow == pytest.approx(3.01, abs=1e-9)
+
+
+def _profile(mode: str, constraints: str = "") -> str:
+    entries = "".join(f'<SpeedProfileEntry time="{t}" speed="{v}"/>' for t, v in ((0, 0), (4, 10), (4, 4), (2, 8)))
+    return (
+        f'<PrivateAction><LongitudinalAction><SpeedProfileAction followingMode="{mode}">{constraints}'
+        f"{entries}</SpeedProfileAction></LongitudinalAction></PrivateAction>"
+    )
+
+
+def test_a_speed_profile_in_position_mode_is_its_schedule(tmp_path):
+    """Entries reached time after time, linearly: 10 m/s at 4 s, 4 at 8 s, 8 at 10 s."""
+    path = _scenario(tmp_path, _car("B"), _teleport("B", 0, 0, 0, 0.0), _event(_profile("position")), stop_s=12)
+    b = run_scenario(path).traces["B"]
+    for t, v in ((2.0, 5.0), (4.0, 10.0), (6.0, 7.0), (8.0, 4.0), (9.0, 6.0), (11.0, 8.0)):
+        assert b.speed[_at(b, t)] == pytest.approx(v, abs=1e-9)
+
+
+def test_a_following_speed_profile_keeps_its_jerk_limits_and_ends_at_the_last_speed(tmp_path):
+    dyn = (
+        '<DynamicConstraints maxAcceleration="5" maxDeceleration="10" maxAccelerationRate="4" '
+        'maxDecelerationRate="3" maxSpeed="50"/>'
+    )
+    path = _scenario(tmp_path, _car("B"), _teleport("B", 0, 0, 0, 0.0), _event(_profile("follow", dyn)), stop_s=14)
+    b = run_scenario(path).traces["B"]
+    acc = np.diff(b.speed) / np.diff(b.t)
+    jerk = np.diff(acc) / np.diff(b.t[1:])
+    assert jerk.max() <= 4.0 + 1e-6 and jerk.min() >= -3.0 - 1e-6
+    assert acc.max() <= 5.0 + 1e-9 and b.speed[-1] == pytest.approx(8.0, abs=1e-3)
+    # the corners are cut and the schedule rejoined: on the line 4 → 8 m/s again before its end
+    assert b.speed[_at(b, 9.5)] == pytest.approx(7.0, abs=0.05)

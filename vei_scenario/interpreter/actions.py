@@ -677,6 +677,10 @@ def private_actions(pa, entity: str, ctx) -> list[Action]:
         return [Teleport(entity, kind, ctx)]
     if kind.tag == "LongitudinalAction" and kind.find("SpeedAction") is not None:
         return [Speed(entity, kind.find("SpeedAction"), ctx)]
+    if kind.tag == "LongitudinalAction" and kind.find("SpeedProfileAction") is not None:
+        from vei_scenario.interpreter.speed_profile import SpeedProfile  # (it builds on this module)
+
+        return [SpeedProfile(entity, kind.find("SpeedProfileAction"), ctx)]
     if kind.tag == "LongitudinalAction" and kind.find("LongitudinalDistanceAction") is not None:
         from vei_scenario.interpreter.longitudinal import LongitudinalDistance  # (it builds on this module)
 
