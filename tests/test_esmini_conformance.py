@@ -117,6 +117,7 @@ AGREEING_EXAMPLES = (
     "traffic_lights",
     "truck_with_rotating_axle",
     "tunnels",
+    "two_plus_one_road",
     "velodrome",
 )
 

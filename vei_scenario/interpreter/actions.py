@@ -156,6 +156,7 @@ class LaneChangeRuntime:
         self.fraction = 0.0
         self.projects_step, self.steps_ahead = projects_step, steps_ahead
         self.prev_xy: tuple[float, float] | None = None  # where the entity was a step ago
+        self.start_rel: float | None = None  # its start, from the target lane's centre
 
     def progress(self, e, ctx) -> float:
         if self.value <= 0 or self.shape == "step":
@@ -175,14 +176,18 @@ class LaneChangeRuntime:
     def offset(self, e, ctx, road) -> float:
         """Offset from the centre of the entity's current lane at its current s."""
         s = e.lane.s
-        try:
-            t_start = self._t(road, s, self.start_lane, self.start_where) + self.start_offset
-        except KeyError:
-            t_start = self._t(road, s, self.target_lane, self.target_where) + self.start_offset
-        t_target = self._t(road, s, self.target_lane, self.target_where) + self.target_offset
+        c_target = self._t(road, s, self.target_lane, self.target_where)
+        if self.start_rel is None:  # where it starts, measured from the target lane's centre (esmini)
+            try:
+                t_start = self._t(road, s, self.start_lane, self.start_where) + self.start_offset
+            except KeyError:
+                t_start = c_target + self.start_offset
+            self.start_rel = t_start - c_target
         self.fraction = self.progress(e, ctx)
         f = transition_fraction(self.shape, self.fraction)
-        return (1 - f) * t_start + f * t_target - road.lane_center_t(s, e.lane.lane)
+        # the offset from the target lane's centre goes from where it started to the target offset,
+        # wherever that centre moves meanwhile (a lane that widens from zero)
+        return c_target + (1 - f) * self.start_rel + f * self.target_offset - road.lane_center_t(s, e.lane.lane)
 
     def heading(self, e, base: float) -> float:
         """During the transition the entity heads where it moves (``base`` on the first step)."""
