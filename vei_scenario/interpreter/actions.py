@@ -502,7 +502,9 @@ class FollowTrajectory(Action):
             e.follower.s = max(self.polyline.project(e.x, e.y), self.initial_s)
         elif ctx.initializing:  # logged at t = 0 on its trajectory
             e.x, e.y, e.yaw = self.polyline.at_time(e.follower.trajectory_time(ctx.t))
-        if self.timing is not None and self.polyline.timed:  # it starts at the trajectory's speed (esmini)
+        if self.timing is not None and self.polyline.timed and not (ctx.initializing or ctx.settling):
+            # started during the run it takes the trajectory's speed at once (esmini; at t = 0 the first
+            # step gives it that speed anyway, and t = 0 is logged as the scenario put it)
             f, tt = e.follower, e.follower.trajectory_time(ctx.t)
             h = 1e-3
             e.speed = (self.polyline.s_at_time(tt + h) - self.polyline.s_at_time(tt)) / h * f.timing[1]
@@ -511,12 +513,15 @@ class FollowTrajectory(Action):
     def update(self, ctx) -> None:
         e = ctx.entities[self.entity]
         self.done = e.follower is None or e.follower.finished(ctx.t)
-        if self.done and e.follower is not None and e.follower.timing is None and ctx.roads is not None:
-            # the path ends on a lane: the entity drives on along it by default, as esmini's does. (An
-            # entity with one of vei's model controllers — a compiled ego — stops at its path's end,
-            # as the batch engine, the kernel and the FMUs do.)
+        if self.done and e.follower is not None and ctx.roads is not None:
+            # the path ends on a lane: the entity drives on along it by default (at the speed it had
+            # at the end, a timed one too), as esmini's does. (An entity with one of vei's model
+            # controllers — a compiled ego or rider — keeps to what the batch engine, the kernel and
+            # the FMUs do.)
             if e.controllers:
                 return
+            if e.follower.timing is not None and e.follower.polyline.timed:
+                e.speed = e.follower.polyline.end_speed * e.follower.timing[1]
             e.lane = lane_state_at(ctx.roads, e)
             if e.lane is not None:  # it turns to drive along the lane (esmini), unlike a placed entity
                 e.lane.heading = 0.0

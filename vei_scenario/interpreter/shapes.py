@@ -106,24 +106,37 @@ def polyline_from(el, ctx, place: bool = True, entity: str | None = None) -> Pol
         t1 = kind.get("timeEnd")
         if not place:
             return Polyline.unplaced([float(t0), float(t1)] if t0 and t1 else [None, None])
-        first = segments[0].find("PositionStart")
-        # the standard types PositionStart as a Position (its child is the LanePosition, WorldPosition
-        # ...); a <Position> wrapped inside it is read as well
-        if first is not None and first.find("Position") is not None:
-            first = first.find("Position")
-        start = _start_pose(ctx, first, entity)
-        if start is None:
-            raise ctx.error(segments[0], "the first ClothoidSplineSegment needs a PositionStart")
-        xs, ys, hs = [start.x], [start.y], [start.h]
-        for seg in segments:
+        xs: list[float] = []
+        ys: list[float] = []
+        hs: list[float] = []
+        marks: list[int] = []  # index of each segment's first point
+        for k, seg in enumerate(segments):
+            pos = seg.find("PositionStart")
+            # the standard types PositionStart as a Position (its child is the LanePosition,
+            # WorldPosition ...); a <Position> wrapped inside it is read as well
+            if pos is not None and pos.find("Position") is not None:
+                pos = pos.find("Position")
+            if k == 0 or pos is not None:  # a segment with its own start begins there (a jump, as esmini)
+                start = _start_pose(ctx, pos, entity)
+                if start is None:
+                    raise ctx.error(seg, "the first ClothoidSplineSegment needs a PositionStart")
+                x0, y0, h0 = start.x, start.y, start.h
+            else:
+                x0, y0, h0 = xs[-1], ys[-1], hs[-1]
             k0, k1 = _num(ctx, seg, "curvatureStart"), _num(ctx, seg, "curvatureEnd")
             length = _num(ctx, seg, "length")
+            if not length > 0:
+                raise ctx.error(seg, "a ClothoidSplineSegment needs a positive length")
             h_off = _num(ctx, seg, "hOffset", 0.0)
-            x, y, h = clothoid_points(xs[-1], ys[-1], hs[-1] + h_off, k0, (k1 - k0) / length, length)
-            xs += list(x[1:])
-            ys += list(y[1:])
-            hs += list(h[1:])
-        return Polyline(xs, ys, hs, _times_along(xs, ys, t0, t1))
+            x, y, h = clothoid_points(x0, y0, h0 + h_off, k0, (k1 - k0) / length, length)
+            marks.append(len(xs))
+            if xs and math.hypot(x[0] - xs[-1], y[0] - ys[-1]) < 1e-12:
+                x, y, h = x[1:], y[1:], h[1:]  # (continuing: the shared point once)
+                marks[-1] -= 1
+            xs += list(x)
+            ys += list(y)
+            hs += list(h)
+        return Polyline(xs, ys, hs, _spline_times(kind, segments, xs, ys, marks))
     vertices = kind.findall("Vertex")
     if not place:
         return Polyline.unplaced([float(v.get("time")) if v.get("time") is not None else None for v in vertices])
@@ -148,6 +161,24 @@ def polyline_from(el, ctx, place: bool = True, entity: str | None = None) -> Pol
     if len(xs) < 2:
         raise ctx.error(el, "a polyline needs at least two vertices")
     return Polyline(xs, ys, hs, ts)
+
+
+def _spline_times(spline, segments, xs: list, ys: list, marks: list[int]) -> list[float | None]:
+    """Vertex times of a ClothoidSpline: each segment with a ``timeStart`` runs at constant speed
+    until the next segment's ``timeStart`` (the last until the spline's ``timeEnd``); a segment without
+    one shares the span of the timed segment before it. Untimed without a first timeStart and a
+    timeEnd."""
+    starts = [seg.get("timeStart") for seg in segments]
+    t_end = spline.get("timeEnd")
+    if not starts[0] or not t_end:
+        return [None] * len(xs)
+    bounds = [(marks[k], float(t)) for k, t in enumerate(starts) if t not in (None, "")]
+    bounds.append((len(xs) - 1, float(t_end)))
+    times: list[float | None] = [None] * len(xs)
+    for (i0, a), (i1, b) in zip(bounds, bounds[1:]):
+        part = _times_along(xs[i0 : i1 + 1], ys[i0 : i1 + 1], str(a), str(b))
+        times[i0 : i1 + 1] = part
+    return times
 
 
 def _times_along(xs: list, ys: list, t0: str | None, t1: str | None) -> list[float | None]:
