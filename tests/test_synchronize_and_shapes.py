@@ -405,3 +405,26 @@ def test_a_following_speed_profile_keeps_its_jerk_limits_and_ends_at_the_last_sp
     assert acc.max() <= 5.0 + 1e-9 and b.speed[-1] == pytest.approx(8.0, abs=1e-3)
     # the corners are cut and the schedule rejoined: on the line 4 → 8 m/s again before its end
     assert b.speed[_at(b, 9.5)] == pytest.approx(7.0, abs=0.05)
+
+
+def test_clothoid_spline_segments_with_their_own_start_and_times(tmp_path):
+    """Two straight segments: the second has its own PositionStart (a jump, as esmini) and its own
+    timeStart, so 10 m take 4 s on the first and 2 s on the second."""
+    spline = (
+        '<ClothoidSpline timeEnd="6"><ClothoidSplineSegment curvatureStart="0" curvatureEnd="0" length="10" '
+        'timeStart="0"><PositionStart><WorldPosition x="0" y="0" h="0"/></PositionStart></ClothoidSplineSegment>'
+        '<ClothoidSplineSegment curvatureStart="0" curvatureEnd="0" length="10" timeStart="4"><PositionStart>'
+        f'<WorldPosition x="20" y="5" h="{math.pi / 2!r}"/></PositionStart></ClothoidSplineSegment></ClothoidSpline>'
+    )
+    follow = (
+        '<PrivateAction><RoutingAction><FollowTrajectoryAction><TrajectoryRef><Trajectory name="cs" '
+        f'closed="false"><Shape>{spline}</Shape></Trajectory></TrajectoryRef><TimeReference><Timing '
+        'domainAbsoluteRelative="absolute" scale="1" offset="0"/></TimeReference>'
+        '<TrajectoryFollowingMode followingMode="position"/></FollowTrajectoryAction></RoutingAction></PrivateAction>'
+    )
+    init = _teleport("B", 0, 0, 0).replace("</Private>", follow + "</Private>")
+    b = run_scenario(_scenario(tmp_path, _car("B"), init, "", stop_s=5.9)).traces["B"]
+    k2, k5 = _at(b, 2.0), _at(b, 5.0)
+    assert (b.x[k2], b.y[k2]) == pytest.approx((5.0, 0.0), abs=1e-6)
+    assert (b.x[k5], b.y[k5]) == pytest.approx((20.0, 10.0), abs=1e-6)
+    assert b.yaw[k5] == pytest.approx(math.pi / 2, abs=1e-9)

@@ -475,8 +475,12 @@ class FollowTrajectory(Action):
         if timing is not None:
             if not self.polyline.timed:
                 raise ctx.error(timing, "Timing needs a time on every vertex")
-            if any(b <= a for a, b in zip(self.polyline.ts, self.polyline.ts[1:])):
-                raise ctx.error(traj, "polyline vertex times must increase when the trajectory is timed")
+            if any(b < a for a, b in zip(self.polyline.ts, self.polyline.ts[1:])) or not (
+                self.polyline.ts[-1] > self.polyline.ts[0]
+            ):
+                raise ctx.error(
+                    traj, "vertex times must not decrease (and must span some time) when the trajectory is timed"
+                )
             scale = float(timing.get("scale", "1"))
             if scale <= 0:
                 raise ctx.error(timing, "Timing scale must be positive")
@@ -522,6 +526,7 @@ class FollowTrajectory(Action):
                 return
             if e.follower.timing is not None and e.follower.polyline.timed:
                 e.speed = e.follower.polyline.end_speed * e.follower.timing[1]
+                e.speed_profile = None  # (the timing set the speed: an older SpeedAction has no say)
             e.lane = lane_state_at(ctx.roads, e)
             if e.lane is not None:  # it turns to drive along the lane (esmini), unlike a placed entity
                 e.lane.heading = 0.0

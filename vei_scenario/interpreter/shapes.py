@@ -110,6 +110,7 @@ def polyline_from(el, ctx, place: bool = True, entity: str | None = None) -> Pol
         ys: list[float] = []
         hs: list[float] = []
         marks: list[int] = []  # index of each segment's first point
+        jumped: list[bool] = []  # whether it starts away from where the one before ended
         for k, seg in enumerate(segments):
             pos = seg.find("PositionStart")
             # the standard types PositionStart as a Position (its child is the LanePosition,
@@ -130,13 +131,14 @@ def polyline_from(el, ctx, place: bool = True, entity: str | None = None) -> Pol
             h_off = _num(ctx, seg, "hOffset", 0.0)
             x, y, h = clothoid_points(x0, y0, h0 + h_off, k0, (k1 - k0) / length, length)
             marks.append(len(xs))
-            if xs and math.hypot(x[0] - xs[-1], y[0] - ys[-1]) < 1e-12:
+            jumped.append(bool(xs) and math.hypot(x[0] - xs[-1], y[0] - ys[-1]) >= 1e-12)
+            if xs and not jumped[-1]:
                 x, y, h = x[1:], y[1:], h[1:]  # (continuing: the shared point once)
                 marks[-1] -= 1
             xs += list(x)
             ys += list(y)
             hs += list(h)
-        return Polyline(xs, ys, hs, _spline_times(kind, segments, xs, ys, marks))
+        return Polyline(xs, ys, hs, _spline_times(kind, segments, xs, ys, marks, jumped))
     vertices = kind.findall("Vertex")
     if not place:
         return Polyline.unplaced([float(v.get("time")) if v.get("time") is not None else None for v in vertices])
@@ -163,21 +165,22 @@ def polyline_from(el, ctx, place: bool = True, entity: str | None = None) -> Pol
     return Polyline(xs, ys, hs, ts)
 
 
-def _spline_times(spline, segments, xs: list, ys: list, marks: list[int]) -> list[float | None]:
+def _spline_times(spline, segments, xs: list, ys: list, marks: list[int], jumped: list[bool]) -> list[float | None]:
     """Vertex times of a ClothoidSpline: each segment with a ``timeStart`` runs at constant speed
     until the next segment's ``timeStart`` (the last until the spline's ``timeEnd``); a segment without
-    one shares the span of the timed segment before it. Untimed without a first timeStart and a
-    timeEnd."""
+    one shares the span of the timed segment before it, and a jump to a segment's own start takes no
+    time. Untimed without a first timeStart and a timeEnd."""
     starts = [seg.get("timeStart") for seg in segments]
     t_end = spline.get("timeEnd")
     if not starts[0] or not t_end:
         return [None] * len(xs)
-    bounds = [(marks[k], float(t)) for k, t in enumerate(starts) if t not in (None, "")]
-    bounds.append((len(xs) - 1, float(t_end)))
+    bounds = [(marks[k], float(t), jumped[k]) for k, t in enumerate(starts) if t not in (None, "")]
+    bounds.append((len(xs) - 1, float(t_end), False))
     times: list[float | None] = [None] * len(xs)
-    for (i0, a), (i1, b) in zip(bounds, bounds[1:]):
-        part = _times_along(xs[i0 : i1 + 1], ys[i0 : i1 + 1], str(a), str(b))
-        times[i0 : i1 + 1] = part
+    for (i0, a, _), (i1, b, jump) in zip(bounds, bounds[1:]):
+        end = i1 if jump else i1 + 1  # a jump to the next segment's start takes no time
+        times[i0:end] = _times_along(xs[i0:end], ys[i0:end], str(a), str(b))
+    times[-1] = float(t_end)
     return times
 
 
