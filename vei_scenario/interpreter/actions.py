@@ -517,12 +517,12 @@ class FollowTrajectory(Action):
     def update(self, ctx) -> None:
         e = ctx.entities[self.entity]
         self.done = e.follower is None or e.follower.finished(ctx.t)
-        if self.done and e.follower is not None and ctx.roads is not None:
-            # the path ends on a lane: the entity drives on along it by default (at the speed it had
-            # at the end, a timed one too), as esmini's does. (An entity with one of vei's model
-            # controllers — a compiled ego or rider — keeps to what the batch engine, the kernel and
-            # the FMUs do.)
-            if e.controllers:
+        # the path ends on a lane: the entity drives on along it by default (at the speed it had at
+        # the end, a timed one too), as esmini's does. (An entity with one of vei's model controllers
+        # — a compiled ego or rider — keeps to what the batch engine, the kernel and the FMUs do; and
+        # the roads are only loaded when they are needed.)
+        if self.done and e.follower is not None and not e.controllers and ctx.road_file is not None:
+            if ctx.roads is None:
                 return
             if e.follower.timing is not None and e.follower.polyline.timed:
                 e.speed = e.follower.polyline.end_speed * e.follower.timing[1]
