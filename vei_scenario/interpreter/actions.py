@@ -30,6 +30,25 @@ class Action:
         pass
 
 
+class SteppedLongitudinal(Action):
+    """An action that sets its entity's speed every step before the entities move (registered in
+    ``ctx.stepping`` when it starts); it ends when done or when another longitudinal action takes
+    the entity over."""
+
+    entity: str
+
+    def update(self, ctx) -> None:
+        if ctx.entities[self.entity].longitudinal is not self:  # another longitudinal action took over
+            self.done = True
+        if self.done and self in ctx.stepping:
+            ctx.stepping.remove(self)
+
+    def stop(self, ctx) -> None:
+        self.done = True
+        if self in ctx.stepping:
+            ctx.stepping.remove(self)
+
+
 class Teleport(Action):
     def __init__(self, entity: str, el, ctx) -> None:
         pos = el.find("Position")

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import math
 
-from vei_scenario.interpreter.actions import Action, lane_keep
+from vei_scenario.interpreter.actions import SteppedLongitudinal, lane_keep
 from vei_scenario.interpreter.controllers import advance_along
 from vei_scenario.interpreter.positions import ensure_lane
 
@@ -45,8 +45,10 @@ def longitudinal_gap(a, b, freespace: bool, system: str) -> float:
     return math.cos(a.yaw) * (b.x - a.x) + math.sin(a.yaw) * (b.y - a.y)
 
 
-class LongitudinalDistance(Action):
+class LongitudinalDistance(SteppedLongitudinal):
     """A running LongitudinalDistanceAction; stepped before the entities move, as esmini does."""
+
+    placed = False  # placed at the gap (no dynamic constraints) in an earlier step
 
     def __init__(self, entity: str, el, ctx) -> None:
         self.entity, self.ref = entity, el.get("entityRef")
@@ -117,14 +119,3 @@ class LongitudinalDistance(Action):
             acc = min(self.accel + (self.accel_rate * dt if dt > 0.0 else 0.0), acc)
         self.accel = acc
         e.speed = max(-self.max_speed, min(self.max_speed, e.speed + acc * dt))
-
-    placed = False  # placed at the gap (no dynamic constraints) in an earlier step
-
-    def stop(self, ctx) -> None:
-        self.done = True
-        if self in ctx.stepping:
-            ctx.stepping.remove(self)
-
-    def update(self, ctx) -> None:
-        if self.done and self in ctx.stepping:
-            ctx.stepping.remove(self)

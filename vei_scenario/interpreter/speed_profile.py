@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import math
 
-from vei_scenario.interpreter.actions import Action
+from vei_scenario.interpreter.actions import SteppedLongitudinal
 
 #: How close (m/s) a following entity must be to the last speed for the action to end.
 SETTLED_SPEED = 1e-3
@@ -30,7 +30,7 @@ SETTLED_SPEED = 1e-3
 SPEED_TIME = 1.0
 
 
-class SpeedProfile(Action):
+class SpeedProfile(SteppedLongitudinal):
     def __init__(self, entity: str, el, ctx) -> None:
         from vei_scenario.safe_xml import float_attribute
 
@@ -153,15 +153,3 @@ class SpeedProfile(Action):
     def _rate(self, increasing: bool) -> float:
         rate = self.accel_rate if increasing else self.decel_rate
         return rate if math.isfinite(rate) and rate > 0 else 1e12
-
-    def update(self, ctx) -> None:
-        e = ctx.entities[self.entity]
-        if e.longitudinal is not self:
-            self.done = True
-        if self.done and self in ctx.stepping:
-            ctx.stepping.remove(self)
-
-    def stop(self, ctx) -> None:
-        self.done = True
-        if self in ctx.stepping:
-            ctx.stepping.remove(self)

@@ -28,7 +28,7 @@ from __future__ import annotations
 
 import math
 
-from vei_scenario.interpreter.actions import Action
+from vei_scenario.interpreter.actions import SteppedLongitudinal
 from vei_scenario.interpreter.positions import Pose, ensure_lane
 from vei_scenario.interpreter.positions import resolve as resolve_position
 from vei_scenario.safe_xml import first_element
@@ -41,7 +41,7 @@ STOP_DECELERATION = 8.0
 ON_LINE_SPEED_TOLERANCE = 0.1
 
 
-class Synchronize(Action):
+class Synchronize(SteppedLongitudinal):
     def __init__(self, entity: str, el, ctx) -> None:
         from vei_scenario.safe_xml import float_attribute
 
@@ -222,18 +222,6 @@ class Synchronize(Action):
                 self.mode = "stopped"
                 return 0.0
         return v0 + acc * dt
-
-    def update(self, ctx) -> None:
-        e = ctx.entities[self.entity]
-        if e.longitudinal is not self:  # another longitudinal action took over
-            self.done = True
-        if self.done and self in ctx.stepping:
-            ctx.stepping.remove(self)
-
-    def stop(self, ctx) -> None:
-        self.done = True
-        if self in ctx.stepping:
-            ctx.stepping.remove(self)
 
 
 def _line_start_speed(v_final: float, time: float, dist: float) -> float:
