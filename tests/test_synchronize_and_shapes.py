@@ -428,3 +428,61 @@ def test_clothoid_spline_segments_with_their_own_start_and_times(tmp_path):
     assert (b.x[k2], b.y[k2]) == pytest.approx((5.0, 0.0), abs=1e-6)
     assert (b.x[k5], b.y[k5]) == pytest.approx((20.0, 10.0), abs=1e-6)
     assert b.yaw[k5] == pytest.approx(math.pi / 2, abs=1e-9)
+
+
+def _lateral(tmp_path, constraints: str, continuous: str = "true", freespace: str = "false") -> Path:
+    """A on lane -1, B on lane -2 of esmini's straight road, both at 10 m/s; B keeps 1 m to A's right."""
+    text = HEAD.format(params="", entities=_car("A") + _car("B")).replace(
+        "<RoadNetwork/>", f'<RoadNetwork><LogicFile filepath="{ROAD}"/></RoadNetwork>'
+    )
+
+    def place(name: str, lane: int) -> str:
+        return (
+            f'<Private entityRef="{name}"><PrivateAction><TeleportAction><Position><LanePosition roadId="1" '
+            f'laneId="{lane}" s="50"/></Position></TeleportAction></PrivateAction><PrivateAction><LongitudinalAction>'
+            '<SpeedAction><SpeedActionDynamics dynamicsShape="step" value="0" dynamicsDimension="time"/>'
+            '<SpeedActionTarget><AbsoluteTargetSpeed value="10"/></SpeedActionTarget></SpeedAction>'
+            "</LongitudinalAction></PrivateAction></Private>"
+        )
+
+    action = (
+        f'<PrivateAction><LateralAction><LateralDistanceAction entityRef="A" distance="1.0" freespace="{freespace}" '
+        f'continuous="{continuous}" displacement="rightToReferencedEntity" coordinateSystem="road">{constraints}'
+        "</LateralDistanceAction></LateralAction></PrivateAction>"
+    )
+    trigger = (
+        '<ConditionGroup><Condition name="c" delay="0" conditionEdge="none"><ByValueCondition>'
+        '<SimulationTimeCondition value="1" rule="greaterThan"/></ByValueCondition></Condition></ConditionGroup>'
+    )
+    text += (
+        f"<Storyboard><Init><Actions>{place('A', -1)}{place('B', -1)}</Actions></Init>"
+        '<Story name="s"><Act name="a"><ManeuverGroup name="g" maximumExecutionCount="1">'
+        '<Actors selectTriggeringEntities="false"><EntityRef entityRef="B"/></Actors>'
+        f'<Maneuver name="m">{_event(action, trigger)}</Maneuver></ManeuverGroup></Act></Story>'
+        '<StopTrigger><ConditionGroup><Condition name="end" delay="0" conditionEdge="none"><ByValueCondition>'
+        '<SimulationTimeCondition value="6" rule="greaterThan"/></ByValueCondition></Condition>'
+        "</ConditionGroup></StopTrigger></Storyboard></OpenSCENARIO>"
+    )
+    path = tmp_path / "lat.xosc"
+    path.write_text(text)
+    return path
+
+
+@pytest.mark.parametrize(
+    "constraints, freespace, gap",
+    [("", "false", 1.0), ("", "true", 3.0), ('<DynamicConstraints maxSpeed="0.5"/>', "false", 1.0)],
+)
+def test_a_lateral_distance_is_reached_to_the_side_asked(tmp_path, constraints, freespace, gap):
+    """B starts level with A (same lane) and moves 1 m to its right (between box sides: 1 + 2 m); with
+    maxSpeed 0.5 m/s it takes 2 s to get there, never faster."""
+    if not ROAD.is_file():
+        pytest.skip("esmini's roads are not here")
+    r = run_scenario(_lateral(tmp_path, constraints, freespace=freespace))
+    a, b = r.traces["A"], r.traces["B"]
+    assert a.y[-1] - b.y[-1] == pytest.approx(gap, abs=1e-6)  # to the right: lower y, heading +x
+    assert np.allclose(b.yaw, 0.0, atol=1e-9) and np.allclose(a.y, a.y[0])
+    if constraints:
+        vy = np.abs(np.diff(b.y)) / np.diff(b.t)
+        assert vy.max() <= 0.5 + 1e-9
+        moved = b.t[1:][vy > 1e-9]
+        assert moved[-1] - moved[0] == pytest.approx(2.0, abs=0.02)

@@ -723,6 +723,10 @@ def private_actions(pa, entity: str, ctx) -> list[Action]:
         from vei_scenario.interpreter.synchronize import Synchronize  # (it builds on this module)
 
         return [Synchronize(entity, kind, ctx)]
+    if kind.tag == "LateralAction" and kind.find("LateralDistanceAction") is not None:
+        from vei_scenario.interpreter.lateral_distance import LateralDistance  # (it builds on this module)
+
+        return [LateralDistance(entity, kind.find("LateralDistanceAction"), ctx)]
     if kind.tag == "LateralAction" and kind.find("LaneChangeAction") is not None:
         return [LaneChange(entity, kind.find("LaneChangeAction"), ctx)]
     if kind.tag == "LateralAction" and kind.find("LaneOffsetAction") is not None:
