@@ -486,3 +486,30 @@ def test_a_lateral_distance_is_reached_to_the_side_asked(tmp_path, constraints, 
         assert vy.max() <= 0.5 + 1e-9
         moved = b.t[1:][vy > 1e-9]
         assert moved[-1] - moved[0] == pytest.approx(2.0, abs=0.02)
+
+
+def test_an_init_step_speed_does_not_end_a_kept_distance_started_before_it(tmp_path):
+    """Init: A keeps 20 m behind B (continuous), then gets a step speed of 20 m/s. The speed is only
+    A's initial speed; the distance keeping goes on (esmini measured the same), so A stays 20 m
+    behind B while B brakes from 10 to 2 m/s, at B's speed."""
+    keep = (
+        '<PrivateAction><LongitudinalAction><LongitudinalDistanceAction entityRef="B" distance="20" '
+        'freespace="false" continuous="true"/></LongitudinalAction></PrivateAction>'
+    )
+    init = _teleport("A", 0, 0, 0).replace("</Private>", keep + "</Private>")
+    init = init.replace("</Private>", _teleport("A", 0, 0, 0, 20.0).split("</PrivateAction>", 1)[1])
+    init += _teleport("B", 100, 0, 0, 10.0)
+    brake = (
+        '<PrivateAction><LongitudinalAction><SpeedAction><SpeedActionDynamics dynamicsShape="linear" value="4" '
+        'dynamicsDimension="rate"/><SpeedActionTarget><AbsoluteTargetSpeed value="2"/></SpeedActionTarget>'
+        "</SpeedAction></LongitudinalAction></PrivateAction>"
+    )
+    trigger = (
+        '<ConditionGroup><Condition name="c" delay="0" conditionEdge="none"><ByValueCondition>'
+        '<SimulationTimeCondition value="2" rule="greaterThan"/></ByValueCondition></Condition></ConditionGroup>'
+    )
+    r = run_scenario(_scenario(tmp_path, _car("A") + _car("B"), init, _event(brake, trigger), stop_s=6))
+    a, b = r.traces["A"], r.traces["B"]
+    # (placed at the gap before B moves, A lags B's braking by a step: 4 m/s² · 0.01 s · 0.01 s)
+    assert np.allclose(b.x - a.x, 20.0, atol=1e-3)
+    assert np.allclose(a.speed[1:], b.speed[1:], atol=0.05) and a.speed[-1] == pytest.approx(2.0)

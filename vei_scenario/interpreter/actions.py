@@ -452,6 +452,12 @@ class Speed(Action):
             limit = e.limits.max_accel_mps2 if v1 > v0 else e.limits.max_decel_mps2
             if limit > 0:
                 duration = max(duration, PEAK_RATE[self.shape] * abs(v1 - v0) / limit)
+        if duration == 0.0 and ctx.initializing and e.longitudinal is not None and not e.longitudinal.done:
+            # in Init a step speed only sets the initial speed: the longitudinal action started
+            # before it (a kept distance) goes on, as in esmini
+            e.speed = v1
+            self.done = True
+            return
         e.take_longitudinal(self, ctx)
         e.speed_profile = SpeedProfile(v0, v1, ctx.t, duration, self.shape)
         if duration == 0.0:
