@@ -11,7 +11,7 @@ import math
 
 from vei_scenario.interpreter.controllers import make_controller
 from vei_scenario.interpreter.entities import PathFollower, SpeedProfile, transition_fraction
-from vei_scenario.interpreter.positions import entity_lane, lane_shift, lane_state_at
+from vei_scenario.interpreter.positions import POSITION_KINDS, entity_lane, lane_shift, lane_state_at
 from vei_scenario.interpreter.positions import resolve as resolve_position
 from vei_scenario.interpreter.shapes import placed_when_built, polyline_from
 from vei_scenario.safe_xml import first_element
@@ -30,15 +30,18 @@ class Action:
         pass
 
 
-class SteppedLongitudinal(Action):
-    """An action that sets its entity's speed every step before the entities move (registered in
-    ``ctx.stepping`` when it starts); it ends when done or when another longitudinal action takes
-    the entity over."""
+class Stepped(Action):
+    """An action that acts on its entity every step before the entities move (registered in
+    ``ctx.stepping`` when it starts); it ends when done or when another action takes the entity's
+    domain over (:meth:`taken_over`)."""
 
     entity: str
 
+    def taken_over(self, ctx) -> bool:
+        return False
+
     def update(self, ctx) -> None:
-        if ctx.entities[self.entity].longitudinal is not self:  # another longitudinal action took over
+        if self.taken_over(ctx):
             self.done = True
         if self.done and self in ctx.stepping:
             ctx.stepping.remove(self)
@@ -47,6 +50,22 @@ class SteppedLongitudinal(Action):
         self.done = True
         if self in ctx.stepping:
             ctx.stepping.remove(self)
+
+
+class SteppedLongitudinal(Stepped):
+    """A stepped action that sets its entity's speed; another longitudinal action ends it."""
+
+    def taken_over(self, ctx) -> bool:
+        return ctx.entities[self.entity].longitudinal is not self
+
+
+def constraint(ctx, dyn, name: str) -> float:
+    """A ``DynamicConstraints`` attribute; infinite when absent (an absent constraint does not
+    constrain)."""
+    from vei_scenario.safe_xml import float_attribute
+
+    value = dyn.get(name) if dyn is not None else None
+    return float_attribute(ctx.path, dyn, name) if value not in (None, "") else math.inf
 
 
 class Teleport(Action):
@@ -77,17 +96,8 @@ class Teleport(Action):
         self.done = True
 
 
-SUPPORTED_POSITIONS = (
-    "WorldPosition",
-    "RelativeWorldPosition",
-    "RelativeObjectPosition",
-    "LanePosition",
-    "RoadPosition",
-    "RelativeLanePosition",
-    "RelativeRoadPosition",
-    "RoutePosition",
-    "TrajectoryPosition",
-)
+#: The position kinds a TeleportAction takes: all of OpenSCENARIO 1.3's but GeoPosition.
+SUPPORTED_POSITIONS = POSITION_KINDS - {"GeoPosition"}
 
 
 def lane_keep(e, ds: float, ctx) -> None:

@@ -17,14 +17,14 @@ from __future__ import annotations
 
 import math
 
-from vei_scenario.interpreter.actions import Action
+from vei_scenario.interpreter.actions import Stepped, constraint
 from vei_scenario.interpreter.positions import entity_lane
 
 #: A one-off action ends this close (m) to its distance.
 REACHED = 0.1
 
 
-class LateralDistance(Action):
+class LateralDistance(Stepped):
     def __init__(self, entity: str, el, ctx) -> None:
         from vei_scenario.safe_xml import float_attribute
 
@@ -44,12 +44,9 @@ class LateralDistance(Action):
         if system not in ("entity", "road", "lane"):
             raise ctx.error(el, f"coordinateSystem {system!r} is not supported (entity, road, lane)")
         dyn = el.find("DynamicConstraints")
-
-        def get(name: str) -> float:
-            value = dyn.get(name) if dyn is not None else None
-            return float_attribute(ctx.path, dyn, name) if value not in (None, "") else math.inf
-
-        self.max_accel, self.max_decel, self.max_speed = get("maxAcceleration"), get("maxDeceleration"), get("maxSpeed")
+        self.max_accel = constraint(ctx, dyn, "maxAcceleration")
+        self.max_decel = constraint(ctx, dyn, "maxDeceleration")
+        self.max_speed = constraint(ctx, dyn, "maxSpeed")
         if math.isinf(self.max_decel):
             self.max_decel = self.max_accel
         for v in (self.max_accel, self.max_speed):
@@ -108,13 +105,5 @@ class LateralDistance(Action):
                 move, self.v_lat = error, 0.0
         e.lane.offset += move if e.lane.forward else -move
 
-    def update(self, ctx) -> None:
-        if ctx.entities[self.entity].lateral is not None:  # a lane change took the entity over
-            self.done = True
-        if self.done and self in ctx.stepping:
-            ctx.stepping.remove(self)
-
-    def stop(self, ctx) -> None:
-        self.done = True
-        if self in ctx.stepping:
-            ctx.stepping.remove(self)
+    def taken_over(self, ctx) -> bool:
+        return ctx.entities[self.entity].lateral is not None  # a lane change took the entity over

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import math
 
-from vei_scenario.interpreter.actions import SteppedLongitudinal, lane_keep
+from vei_scenario.interpreter.actions import SteppedLongitudinal, constraint, lane_keep
 from vei_scenario.interpreter.controllers import advance_along
 from vei_scenario.interpreter.positions import ensure_lane
 
@@ -68,9 +68,8 @@ class LongitudinalDistance(SteppedLongitudinal):
             raise ctx.error(el, f"displacement {self.displacement!r} is not one of OpenSCENARIO's")
         dyn = el.find("DynamicConstraints")
 
-        def get(name: str) -> float:  # an absent constraint does not constrain
-            value = dyn.get(name) if dyn is not None else None
-            return float(value) if value is not None else math.inf
+        def get(name: str) -> float:
+            return constraint(ctx, dyn, name)
 
         self.max_accel, self.max_decel = get("maxAcceleration"), get("maxDeceleration")
         self.max_speed = get("maxSpeed")

@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import math
 
-from vei_scenario.interpreter.actions import SteppedLongitudinal
+from vei_scenario.interpreter.actions import SteppedLongitudinal, constraint
 
 #: How close (m/s) a following entity must be to the last speed for the action to end.
 SETTLED_SPEED = 1e-3
@@ -52,8 +52,7 @@ class SpeedProfile(SteppedLongitudinal):
         dyn = el.find("DynamicConstraints")
 
         def get(name: str) -> float:
-            value = dyn.get(name) if dyn is not None else None
-            return float_attribute(ctx.path, dyn, name) if value not in (None, "") else math.inf
+            return constraint(ctx, dyn, name)
 
         self.max_accel, self.max_decel = get("maxAcceleration"), get("maxDeceleration")
         self.accel_rate, self.decel_rate = get("maxAccelerationRate"), get("maxDecelerationRate")
