@@ -513,3 +513,66 @@ def test_an_init_step_speed_does_not_end_a_kept_distance_started_before_it(tmp_p
     # (placed at the gap before B moves, A lags B's braking by a step: 4 m/s² · 0.01 s · 0.01 s)
     assert np.allclose(b.x - a.x, 20.0, atol=1e-3)
     assert np.allclose(a.speed[1:], b.speed[1:], atol=0.05) and a.speed[-1] == pytest.approx(2.0)
+
+
+def _timed_nurbs(points, knots, order: int) -> str:
+    cps = "".join(
+        f'<ControlPoint time="{t}"><Position><WorldPosition x="{x}" y="{y}"/></Position></ControlPoint>'
+        for x, y, t in points
+    )
+    nurbs = f'<Nurbs order="{order}">{cps}' + "".join(f'<Knot value="{k}"/>' for k in knots) + "</Nurbs>"
+    return (
+        '<PrivateAction><RoutingAction><FollowTrajectoryAction><TrajectoryRef><Trajectory name="n" '
+        f'closed="false"><Shape>{nurbs}</Shape></Trajectory></TrajectoryRef><TimeReference><Timing '
+        'domainAbsoluteRelative="absolute" scale="1" offset="0"/></TimeReference>'
+        '<TrajectoryFollowingMode followingMode="position"/></FollowTrajectoryAction></RoutingAction></PrivateAction>'
+    )
+
+
+def test_a_timed_order_two_nurbs_is_at_each_control_point_at_its_time(tmp_path):
+    """Order 2 is the control polygon itself, each basis function peaking on its own knot: the entity
+    is at every control point at that point's time, and between two it moves at their distance over
+    their time difference (40 m in 4 s, then 30 m in 6 s)."""
+    pts = [(0.0, 0.0, 0.0), (40.0, 0.0, 4.0), (40.0, 30.0, 10.0)]
+    init = _teleport("B", 0, 0, 0).replace("</Private>", _timed_nurbs(pts, (0, 0, 0.4, 1, 1), 2) + "</Private>")
+    b = run_scenario(_scenario(tmp_path, _car("B"), init, "", stop_s=9.5)).traces["B"]
+    k = _at(b, 4.0)
+    assert (b.x[k], b.y[k]) == pytest.approx((40.0, 0.0), abs=1e-6)
+    k = _at(b, 2.0)
+    assert (b.x[k], b.y[k]) == pytest.approx((20.0, 0.0), abs=1e-6)
+    k = _at(b, 7.0)
+    assert (b.x[k], b.y[k]) == pytest.approx((40.0, 15.0), abs=1e-6)
+
+
+def test_a_timed_quadratic_nurbs_runs_linearly_in_its_parameter_between_control_points(tmp_path):
+    """A quadratic NURBS (uniform weights) on collinear control points 0, 50, 100 m: the parameter of
+    the middle point is where its basis peaks (0.5), time runs linearly in the parameter, and the
+    position along x is the spline's, x(u) = 2·50·u·(1−u) + 100·u² (Bernstein form)."""
+    pts = [(0.0, 0.0, 0.0), (50.0, 0.0, 4.0), (100.0, 0.0, 6.0)]
+    init = _teleport("B", 0, 0, 0).replace("</Private>", _timed_nurbs(pts, (0, 0, 0, 1, 1, 1), 3) + "</Private>")
+    b = run_scenario(_scenario(tmp_path, _car("B"), init, "", stop_s=5.5)).traces["B"]
+    for t in (1.0, 2.0, 3.0, 4.0, 5.0):
+        u = 0.5 * t / 4.0 if t <= 4.0 else 0.5 + 0.5 * (t - 4.0) / 2.0  # the middle point peaks at u = 0.5
+        x = 2 * 50.0 * u * (1 - u) + 100.0 * u * u
+        assert b.x[_at(b, t)] == pytest.approx(x, abs=0.02)
+
+
+def test_an_offset_in_a_rolled_entity_frame_turns_with_the_roll(tmp_path):
+    """RelativeObjectPosition offsets are in the reference entity's frame, which turns with its roll:
+    1 m up (dz) from an entity heading along x and rolled 90° to the left lies 1 m to its right."""
+    rolled = (
+        '<Private entityRef="B"><PrivateAction><TeleportAction><Position>'
+        '<WorldPosition x="10" y="5" h="0" r="1.5707963267948966"/>'
+        "</Position></TeleportAction></PrivateAction></Private>"
+    )
+    up = (
+        '<PrivateAction><TeleportAction><Position><RelativeObjectPosition entityRef="B" dx="0" dy="0" dz="1">'
+        '<Orientation type="relative" r="-1.5707963267948966"/></RelativeObjectPosition></Position>'
+        "</TeleportAction></PrivateAction>"
+    )
+    trigger = (
+        '<ConditionGroup><Condition name="c" delay="0" conditionEdge="none"><ByValueCondition>'
+        '<SimulationTimeCondition value="0.5" rule="greaterThan"/></ByValueCondition></Condition></ConditionGroup>'
+    )
+    b = run_scenario(_scenario(tmp_path, _car("B"), rolled, _event(up, trigger), stop_s=1.0)).traces["B"]
+    assert (b.x[-1], b.y[-1]) == pytest.approx((10.0, 4.0), abs=1e-9)

@@ -11,7 +11,7 @@ import math
 
 from vei_scenario.interpreter.controllers import make_controller
 from vei_scenario.interpreter.entities import PathFollower, SpeedProfile, transition_fraction
-from vei_scenario.interpreter.positions import POSITION_KINDS, entity_lane, lane_shift, lane_state_at
+from vei_scenario.interpreter.positions import POSITION_KINDS, entity_lane, lane_shift, lane_state_at, tilt
 from vei_scenario.interpreter.positions import resolve as resolve_position
 from vei_scenario.interpreter.shapes import placed_when_built, polyline_from
 from vei_scenario.safe_xml import first_element
@@ -82,6 +82,7 @@ class Teleport(Action):
         e = ctx.entities[self.entity]
         pose = resolve_position(ctx, self.pos)  # relative positions are taken when the action starts
         e.x, e.y, e.yaw, e.lane = pose.x, pose.y, pose.h, pose.lane
+        e.pitch, e.roll = tilt(ctx, self.pos)
         # placed by world coordinates: it takes up the lane it is on when it first drives by default
         e.find_lane = e.lane is None and ctx.road_file is not None
         f = e.follower
@@ -551,7 +552,7 @@ class FollowTrajectory(Action):
 
     def update(self, ctx) -> None:
         e = ctx.entities[self.entity]
-        self.done = e.follower is None or e.follower.finished(ctx.t)
+        self.done = e.follower is None or e.follower.finished(ctx.t, ctx.dt)
         # the path ends on a lane: the entity drives on along it by default (at the speed it had at
         # the end, a timed one too), as esmini's does. (An entity with one of vei's model controllers
         # — a compiled ego or rider — keeps to what the batch engine, the kernel and the FMUs do; and
@@ -562,9 +563,7 @@ class FollowTrajectory(Action):
             if e.follower.timing is not None and e.follower.polyline.timed:
                 e.speed = e.follower.polyline.end_speed * e.follower.timing[1]
                 e.speed_profile = None  # (the timing set the speed: an older SpeedAction has no say)
-            e.lane = lane_state_at(ctx.roads, e)
-            if e.lane is not None:  # it turns to drive along the lane (esmini), unlike a placed entity
-                e.lane.heading = 0.0
+            e.lane = lane_state_at(ctx.roads, e)  # its heading relative to the lane is kept (esmini)
             e.follower = None  # (an Init action is never stopped)
 
     def stop(self, ctx) -> None:

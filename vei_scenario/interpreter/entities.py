@@ -47,9 +47,14 @@ class Polyline:
             _wrap(h0 + f * _wrap(h1 - h0)),
         )
 
+    #: The speed it is left at, where a shape says so (a NURBS: its mean over the last metre or so)
+    exit_speed: float | None = None
+
     @property
     def end_speed(self) -> float:
         """Speed of the last segment of a timed polyline: a replayed road user keeps it afterwards."""
+        if self.exit_speed is not None:
+            return self.exit_speed
         return (self.s[-1] - self.s[-2]) / (self.ts[-1] - self.ts[-2])
 
     def at_time(self, t: float) -> tuple[float, float, float]:
@@ -133,9 +138,13 @@ class PathFollower:
         domain, scale, offset = self.timing
         return (t_traj - offset) / scale + (0.0 if domain == "absolute" else self.t_start)
 
-    def finished(self, t_sim: float) -> bool:
+    def finished(self, t_sim: float, dt: float = 0.0) -> bool:
+        """Whether the path is done after the step that started at ``t_sim``. A timed one is done once
+        less than one step of its time is left (esmini: what follows it starts a step sooner, from
+        where the entity is, rather than after a last step that would only reach the final vertex)."""
         if self.timing is not None and self.polyline.timed:
-            return self.trajectory_time(t_sim) >= self.polyline.ts[-1]
+            left = self.polyline.ts[-1] - self.trajectory_time(t_sim)
+            return left <= dt * self.timing[1] + 1e-9
         return self.s >= self.polyline.length - 1e-9
 
 
@@ -178,6 +187,8 @@ class Entity:
     x: float = 0.0
     y: float = 0.0
     yaw: float = 0.0
+    pitch: float = 0.0  # set by a position's orientation (a fallen rider); turns the entity's frame
+    roll: float = 0.0
     speed: float = 0.0
     accel: float = 0.0
     follower: PathFollower | None = None

@@ -66,6 +66,38 @@ def _orient(el, base_h: float) -> float:
     return h if o.get("type", "relative") == "absolute" else base_h + h
 
 
+def object_offset(ref, dx: float, dy: float, dz: float) -> tuple[float, float]:
+    """The world x, y of an offset given in entity ``ref``'s coordinate system. The standard's entity
+    frame turns with the entity's heading, pitch and roll (z-y'-x'' order, ISO 8855), so a ``dz`` of a
+    rolled-over entity moves sideways (as esmini measures too)."""
+    cr, sr = math.cos(ref.roll), math.sin(ref.roll)
+    y1, z1 = dy * cr - dz * sr, dy * sr + dz * cr
+    cp, sp = math.cos(ref.pitch), math.sin(ref.pitch)
+    x2 = dx * cp + z1 * sp
+    c, s = math.cos(ref.yaw), math.sin(ref.yaw)
+    return c * x2 - s * y1, s * x2 + c * y1
+
+
+def tilt(ctx, pos) -> tuple[float, float]:
+    """(pitch, roll) a ``<Position>`` gives an entity: a WorldPosition's p and r; an Orientation's p and
+    r, added to the reference entity's for a relative orientation of a position relative to an
+    entity. (vei's roads are taken as flat for an entity's pitch and roll.)"""
+    el = pos if pos.tag in POSITION_KINDS else first_element(pos)
+    if el is not None and el.tag == "WorldPosition":
+        return _wrap(_num(el, "p")), _wrap(_num(el, "r"))
+    o = el.find("Orientation") if el is not None else None
+    if o is None:
+        return 0.0, 0.0
+    p, r = _num(o, "p"), _num(o, "r")
+    ref = ctx.entities.get(el.get("entityRef") or "") if el.tag in _ENTITY_RELATIVE else None
+    if ref is not None and o.get("type", "relative") != "absolute":
+        p, r = p + ref.pitch, r + ref.roll
+    return _wrap(p), _wrap(r)
+
+
+_ENTITY_RELATIVE = ("RelativeWorldPosition", "RelativeObjectPosition")
+
+
 def _network(ctx, el):
     net = getattr(ctx, "roads", None)
     if net is None:
@@ -171,9 +203,8 @@ def resolve(ctx, pos) -> Pose:
         if ref is None:
             raise ctx.error(el, f"no entity named {el.get('entityRef')!r}")
         dx, dy = _num(el, "dx"), _num(el, "dy")
-        if tag == "RelativeObjectPosition":  # dx, dy in the object's frame
-            c, s = math.cos(ref.yaw), math.sin(ref.yaw)
-            dx, dy = c * dx - s * dy, s * dx + c * dy
+        if tag == "RelativeObjectPosition":  # (dx, dy, dz) in the object's frame, turned by h, p and r
+            dx, dy = object_offset(ref, dx, dy, _num(el, "dz"))
         return Pose(ref.x + dx, ref.y + dy, _wrap(_orient(el, ref.yaw)))
     if tag == "LanePosition":
         return lane_pose(ctx, el, el.get("roadId"), int(el.get("laneId")), _num(el, "s"), _num(el, "offset"))
