@@ -146,6 +146,17 @@ def lane_keep(e, ds: float, ctx) -> None:
     if st.lane not in sec_lanes:  # the lane ends in a new lane section: the nearest lane on the same side
         same = [k for k in sec_lanes if (k > 0) == (st.lane > 0)] or list(sec_lanes)
         st.lane = min(same, key=lambda k: abs(k - st.lane)) if same else st.lane
+    lane = sec_lanes.get(st.lane)
+    if lane is not None and lane.type == "driving" and lane.width(s - road.section(s).s) < 1e-6:
+        # the lane has narrowed to nothing (a merge): it moves over to the nearest driving lane (esmini)
+        here = road.lane_center_t(s, st.lane)
+        wide = [
+            k
+            for k, other in sec_lanes.items()
+            if (k > 0) == (st.lane > 0) and other.type == "driving" and other.width(s - road.section(s).s) >= 1e-6
+        ]
+        if wide:
+            st.lane = min(wide, key=lambda k: abs(road.lane_center_t(s, k) - here))
     st.road, st.s = road.id, s
     if e.lateral is not None:
         st.offset = e.lateral.offset(e, ctx, road)
@@ -153,6 +164,9 @@ def lane_keep(e, ds: float, ctx) -> None:
     moved = math.hypot(x - e.x, y - e.y)
     e.x, e.y = x, y
     base = road.lane_heading(s, road.lane_center_t(s, st.lane) + st.offset)
+    drift = road.lane_drift(s, st.lane)
+    if drift:  # the lane centre runs sideways (a lane widening or narrowing): it heads along it
+        base += math.atan2(drift, max(1.0 - (road.lane_center_t(s, st.lane) + st.offset) * road.curvature(s), 0.05))
     base = base if forward else base + math.pi
     e.yaw = math.atan2(math.sin(base + st.heading), math.cos(base + st.heading))
     if e.lateral is not None and moved > 1e-9:
@@ -607,12 +621,43 @@ class ActivateController(Action):
 
     def start(self, ctx) -> None:
         e = ctx.entities[self.entity]
-        if not e.controllers:
-            raise ctx.error(self.el, f"ActivateControllerAction: {self.entity} has no assigned controller")
+        if not e.controllers and not self.ref:  # the default controller is what it has: it stays on
+            self.done = True
+            return
         ctrl = e.controllers.get(self.ref) if self.ref else list(e.controllers.values())[-1]
         if ctrl is None:
             raise ctx.error(self.el, f"ActivateControllerAction: {self.entity} has no controller {self.ref!r}")
         activate(e, ctrl, self.lateral, self.longitudinal)
+        self.done = True
+
+
+class TrailerHitching(Action):
+    """TrailerAction (1.3): ConnectTrailerAction hitches the named trailer to the actor (it is put in
+    line behind it, its coupler on the hitch), DisconnectTrailerAction unhitches it where it stands."""
+
+    def __init__(self, entity: str, el, ctx) -> None:
+        if el.tag not in ("ConnectTrailerAction", "DisconnectTrailerAction"):
+            raise ctx.error(el, f"<TrailerAction>/<{el.tag}> is not supported by vei run")
+        self.entity, self.el = entity, el
+        self.trailer = el.get("trailerRef")
+        tow = ctx.entities[entity]
+        if el.tag == "ConnectTrailerAction":
+            other = ctx.entities.get(self.trailer or "")
+            if other is None or other is tow:
+                raise ctx.error(el, f"ConnectTrailerAction: trailerRef {self.trailer!r} names no other entity")
+            if tow.hitch_dx is None:
+                raise ctx.error(el, f"ConnectTrailerAction: {entity} has no TrailerHitch")
+
+    def start(self, ctx) -> None:
+        from vei_scenario.interpreter import trailers
+
+        if self.el.tag == "DisconnectTrailerAction":
+            trailers.disconnect(ctx.entities, self.entity)
+        else:
+            towed_by = ctx.entities[self.trailer].towed_by
+            if towed_by is not None and towed_by != self.entity:
+                raise ctx.error(self.el, f"ConnectTrailerAction: {self.trailer} is towed by {towed_by} already")
+            trailers.connect(ctx.entities, self.entity, self.trailer)
         self.done = True
 
 
@@ -766,6 +811,8 @@ def private_actions(pa, entity: str, ctx) -> list[Action]:
         return out
     if kind.tag == "ActivateControllerAction":  # OpenSCENARIO 1.0/1.1 place it directly here
         return [ActivateController(entity, kind, ctx)]
+    if kind.tag == "TrailerAction" and first_element(kind) is not None:
+        return [TrailerHitching(entity, first_element(kind), ctx)]
     inner_el = first_element(kind)
     inner = inner_el.tag if inner_el is not None else ""
     raise ctx.error(kind, f"<{kind.tag}>{'/<' + inner + '>' if inner else ''} is not supported by vei run")

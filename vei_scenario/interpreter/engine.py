@@ -15,6 +15,7 @@ from pathlib import Path
 
 import numpy as np
 
+from vei_scenario.interpreter import trailers
 from vei_scenario.interpreter.actions import (
     ParameterSet,
     SignalState,
@@ -80,8 +81,8 @@ class RunResult:
     road_file: Path | None = None
 
 
-def _entity(obj, ctx) -> Entity:
-    name = obj.get("name")
+def _entity(obj, ctx, name: str | None = None) -> Entity:
+    name = name or obj.get("name")
     if obj.find("CatalogReference") is not None:
         raise ctx.error(obj.find("CatalogReference"), "catalog references are not supported by vei run")
     kind = next((c for c in obj if c.tag in ("Vehicle", "Pedestrian", "MiscObject")), None)
@@ -114,7 +115,29 @@ def _entity(obj, ctx) -> Entity:
     )
     entity.kind = KINDS[kind.tag]
     entity.object_type = object_type
+    hitch, coupler = kind.find("TrailerHitch"), kind.find("TrailerCoupler")
+    if hitch is not None:
+        entity.hitch_dx = float(hitch.get("dx", "0"))
+    if coupler is not None:
+        entity.coupler_dx = float(coupler.get("dx", "0"))
+    ref = kind.find("Trailer/TrailerRef")
+    inline = kind.find("Trailer/Trailer")
+    if (ref is not None and ref.get("entityRef")) or inline is not None:
+        if hitch is None:
+            raise ctx.error(kind.find("Trailer"), f"{name} tows a trailer but has no TrailerHitch")
+        entity.trailer = ref.get("entityRef") if ref is not None else name + "+"
     return entity
+
+
+def _entities(obj, ctx) -> list[Entity]:
+    """A ScenarioObject's entity, and the trailers defined inside it: each an entity of its own,
+    named after its tow vehicle with a "+" per link (as esmini names them)."""
+    out = [_entity(obj, ctx)]
+    inline = next((c for c in obj if c.tag in KINDS), obj).find("Trailer/Trailer")
+    while inline is not None:
+        out.append(_entity(inline, ctx, out[-1].name + "+"))
+        inline = next((c for c in inline if c.tag in KINDS), inline).find("Trailer/Trailer")
+    return out
 
 
 def _declare_variables(root, ctx) -> None:
@@ -163,9 +186,17 @@ class Simulation:
         for sel in root.iter("EntitySelection"):
             raise ctx.error(sel, "entity selections are not supported by vei run")
         for obj in root.iterfind("Entities/ScenarioObject"):
-            ctx.entities[obj.get("name")] = _entity(obj, ctx)
+            for e in _entities(obj, ctx):
+                ctx.entities[e.name] = e
         if not ctx.entities:
             raise ctx.error(root, "the scenario has no entities")
+        for e in ctx.entities.values():
+            if e.trailer is not None:
+                towed = ctx.entities.get(e.trailer)
+                if towed is None or towed is e or towed.towed_by is not None:
+                    problem = "names no entity" if towed is None else "is itself" if towed is e else "is towed already"
+                    raise ctx.error(root, f"{e.name}'s TrailerRef {e.trailer!r} {problem}")
+                towed.towed_by = e.name
         ctx.trajectories = {}  # by name, for controllers that follow a route (world positions)
         for traj in root.iter("Trajectory"):
             if traj.get("name") and traj.find("Shape/Polyline") is not None and placed_when_built(traj):
@@ -374,6 +405,8 @@ class Simulation:
         if e.placed:
             e.placed = False
             return
+        if e.towed_by is not None:  # pulled by its tow vehicle once that has moved
+            return
         x0, y0 = e.x, e.y
         self._motion(e)
         e.last_step_m = math.hypot(e.x - x0, e.y - y0)
@@ -456,6 +489,9 @@ class Simulation:
             a.start(ctx)
         for a in list(ctx.stepping):  # Init actions that act every step act once before t = 0 is logged
             a.step(ctx)
+        for chain in trailers.chains(ctx.entities):  # hitched trailers start in line behind their tow
+            for tow, trailer in zip(chain, chain[1:]):
+                trailers.place_behind(trailer, tow)
         # the storyboard is evaluated once at t = 0 before t = 0 is logged, with no time passing (as
         # esmini does): events that start at once place entities and set speeds, and what they
         # complete counts from t = 0 (a condition delayed after it fires on time)
@@ -486,6 +522,9 @@ class Simulation:
                 ctx.snapshot = {n: copy.copy(e) for n, e in ctx.entities.items()}
             for n in names:
                 self._move(ctx.entities[n])
+            for chain in trailers.chains(ctx.entities):
+                for tow, trailer in zip(chain, chain[1:]):
+                    trailers.pull(trailer, tow, dt)
             ctx.snapshot = None
             self._complete_finished()
             ctx.step += 1

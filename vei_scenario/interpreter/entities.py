@@ -209,6 +209,10 @@ class Entity:
     find_lane: bool = False  # placed off the lane model: look up its lane when it first needs one
     step_speed: float = 0.0  # speed at the start of the current step (for the logged acceleration)
     kind: str = "vehicle"  # the ScenarioObject's kind: vehicle, pedestrian or misc (MiscObject)
+    hitch_dx: float | None = None  # TrailerHitch: where a trailer is hitched, ahead of the reference point
+    coupler_dx: float = 0.0  # TrailerCoupler: where it is hitched as a trailer, ahead of its rear axle
+    trailer: str | None = None  # the entity it tows (interpreter.trailers)
+    towed_by: str | None = None  # the entity that tows it: it is pulled, not moved by itself
     object_type: str = ""  # a finer type from the entity's <Properties> ("e-scooter"), else ""
 
     def take_longitudinal(self, action, ctx) -> None:

@@ -80,11 +80,12 @@ def placed_when_built(traj) -> bool:
 def polyline_from(el, ctx, place: bool = True, entity: str | None = None) -> Polyline:
     """A ``<Trajectory>``'s shape as a polyline (Polyline, Clothoid, ClothoidSpline); with ``place``
     False only the vertex times are read (positions relative to entities are placed when the action
-    starts). A clothoid without a start position starts where ``entity`` is."""
+    starts). A clothoid without a start position starts where ``entity`` is. ``closed`` adds the
+    segment back to the first vertex of a Polyline; a curve (Nurbs, clothoids) closes, or not, by its
+    own definition, so the flag adds nothing to it."""
     from vei_scenario.interpreter.positions import resolve
 
-    if el.get("closed", "false") == "true":
-        raise ctx.error(el, "closed trajectories are not supported")
+    closed = el.get("closed", "false") in ("true", "1")
     shape = el.find("Shape")
     kind = first_element(shape) if shape is not None else None
     if kind is None or kind.tag not in ("Polyline", "Clothoid", "ClothoidSpline", "Nurbs"):
@@ -162,6 +163,17 @@ def polyline_from(el, ctx, place: bool = True, entity: str | None = None) -> Pol
         ts.append(float(v.get("time")) if v.get("time") is not None else None)
     if len(xs) < 2:
         raise ctx.error(el, "a polyline needs at least two vertices")
+    if closed and math.hypot(xs[-1] - xs[0], ys[-1] - ys[0]) > 1e-9:
+        # a closed polyline runs back to its first vertex (the standard; esmini 3.6 ignores `closed`).
+        # That closing segment has no time of its own, so a timed one must close itself.
+        if any(t is not None for t in ts):
+            raise ctx.error(
+                el, "a closed timed Polyline must end on its first vertex (the closing segment needs a time)"
+            )
+        xs.append(xs[0])
+        ys.append(ys[0])
+        hs.append(hs[0])
+        ts.append(None)
     return Polyline(xs, ys, hs, ts)
 
 

@@ -230,6 +230,26 @@ class Road:
         inner, outer = self.lane_borders(s, lane_id)
         return 0.5 * (inner + outer)
 
+    @cached_property
+    def varying_lanes(self) -> bool:
+        """Whether a lane centre can run sideways: a lane offset or a lane width that is not constant."""
+        polys = list(self.offsets) + [w for sec in self.sections for lane in sec.lanes.values() for w in lane.widths]
+        return any(p[2] or p[3] or p[4] for p in polys)
+
+    def lane_drift(self, s: float, lane_id: int, eps: float = 0.05) -> float:
+        """dt/ds of lane ``lane_id``'s centre at ``s`` (within its lane section): where lanes widen,
+        narrow or the lane offset changes, the centre runs sideways and whoever keeps the lane heads
+        that way too (as esmini's entities do)."""
+        if not self.varying_lanes:
+            return 0.0
+        k = self.section_index(s)
+        lo = self.sections[k].s
+        hi = self.sections[k + 1].s - 1e-9 if k + 1 < len(self.sections) else self.length
+        a, b = max(s - eps, lo), min(s + eps, hi)
+        if b <= a or lane_id not in self.sections[k].lanes:
+            return 0.0
+        return (self.lane_center_t(b, lane_id) - self.lane_center_t(a, lane_id)) / (b - a)
+
     def curvature(self, s: float, eps: float = 0.05) -> float:
         """Curvature of the reference line at ``s`` (1/m, positive turning left)."""
         a, b = max(s - eps, 0.0), min(s + eps, self.length)
