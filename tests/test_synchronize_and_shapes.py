@@ -576,3 +576,49 @@ def test_an_offset_in_a_rolled_entity_frame_turns_with_the_roll(tmp_path):
     )
     b = run_scenario(_scenario(tmp_path, _car("B"), rolled, _event(up, trigger), stop_s=1.0)).traces["B"]
     assert (b.x[-1], b.y[-1]) == pytest.approx((10.0, 4.0), abs=1e-9)
+
+
+def _polyline_follow(vertices, closed: bool) -> str:
+    vs = "".join(f'<Vertex><Position><WorldPosition x="{x}" y="{y}"/></Position></Vertex>' for x, y in vertices)
+    return (
+        '<PrivateAction><RoutingAction><FollowTrajectoryAction><TrajectoryRef><Trajectory name="p" '
+        f'closed="{str(closed).lower()}"><Shape><Polyline>{vs}</Polyline></Shape></Trajectory></TrajectoryRef>'
+        '<TimeReference><None/></TimeReference><TrajectoryFollowingMode followingMode="position"/>'
+        "</FollowTrajectoryAction></RoutingAction></PrivateAction>"
+    )
+
+
+def test_a_closed_polyline_runs_back_to_its_first_vertex(tmp_path):
+    """A closed square of side 30 m at 10 m/s: after 9 s on three sides it takes the closing side and is
+    back at the start after 12 s; open, it would have stopped its path at (0, 30)."""
+    square = [(0, 0), (30, 0), (30, 30), (0, 30)]
+    init = _teleport("B", 0, 0, 0, 10.0).replace("</Private>", _polyline_follow(square, True) + "</Private>")
+    b = run_scenario(_scenario(tmp_path, _car("B"), init, "", stop_s=11.0)).traces["B"]
+    k = _at(b, 10.5)
+    assert (b.x[k], b.y[k]) == pytest.approx((0.0, 15.0), abs=1e-6)
+
+
+def test_a_closed_timed_polyline_that_does_not_close_itself_is_refused(tmp_path, capsys):
+    vs = "".join(
+        f'<Vertex time="{t}"><Position><WorldPosition x="{x}" y="0"/></Position></Vertex>' for x, t in ((0, 0), (9, 1))
+    )
+    follow = (
+        '<PrivateAction><RoutingAction><FollowTrajectoryAction><TrajectoryRef><Trajectory name="p" closed="true">'
+        f"<Shape><Polyline>{vs}</Polyline></Shape></Trajectory></TrajectoryRef><TimeReference><Timing "
+        'domainAbsoluteRelative="absolute" scale="1" offset="0"/></TimeReference>'
+        '<TrajectoryFollowingMode followingMode="position"/></FollowTrajectoryAction></RoutingAction></PrivateAction>'
+    )
+    init = _teleport("B", 0, 0, 0).replace("</Private>", follow + "</Private>")
+    path = _scenario(tmp_path, _car("B"), init, "")
+    assert main(["run", str(path), "-o", str(tmp_path / "o")]) != 0
+    err = capsys.readouterr().err
+    assert "closed timed Polyline must end on its first vertex" in err and "line" in err
+
+
+def test_activating_the_controller_of_an_entity_with_none_assigned_keeps_the_default_one(tmp_path):
+    init = _teleport("B", 0, 0, 0, 5.0).replace(
+        "</Private>",
+        '<PrivateAction><ActivateControllerAction longitudinal="true" lateral="true"/></PrivateAction></Private>',
+    )
+    b = run_scenario(_scenario(tmp_path, _car("B"), init, "", stop_s=2.0)).traces["B"]
+    assert b.x[-1] == pytest.approx(5.0 * b.t[-1], abs=1e-9) and np.allclose(b.y, 0.0)
