@@ -9,6 +9,7 @@ import math
 
 import numpy as np
 import pytest
+from xosc_parts import CAR, step_speed
 
 from vei_scenario.interpreter import run_scenario
 
@@ -21,13 +22,6 @@ ROAD = """<OpenDRIVE><header revMajor="1" revMinor="6"/><road id="1" length="300
 <lane id="-3" type="border"><width sOffset="0" a="0.3" b="0" c="0" d="0"/></lane></right>
 </laneSection></lanes></road></OpenDRIVE>"""
 
-CAR = """<Vehicle name="v" vehicleCategory="car"><BoundingBox><Center x="1.4" y="0" z="0.7"/>
-<Dimensions width="1.8" length="4.5" height="1.4"/></BoundingBox>
-<Performance maxSpeed="60" maxAcceleration="10" maxDeceleration="10"/>
-<Axles><FrontAxle maxSteering="0.5" wheelDiameter="0.6" trackWidth="1.6" positionX="2.8" positionZ="0.3"/>
-<RearAxle maxSteering="0" wheelDiameter="0.6" trackWidth="1.6" positionX="0" positionZ="0.3"/></Axles>
-<Properties/></Vehicle>"""
-
 
 def _run(tmp_path):
     (tmp_path / "r.xodr").write_text(ROAD)
@@ -38,9 +32,7 @@ def _run(tmp_path):
 <Entities><ScenarioObject name="Car">{CAR}</ScenarioObject></Entities>
 <Storyboard><Init><Actions><Private entityRef="Car"><PrivateAction><TeleportAction><Position>
 <LanePosition roadId="1" laneId="-2" s="10" offset="0"/></Position></TeleportAction></PrivateAction>
-<PrivateAction><LongitudinalAction><SpeedAction><SpeedActionDynamics dynamicsShape="step" value="0"
-dynamicsDimension="time"/><SpeedActionTarget><AbsoluteTargetSpeed value="10"/></SpeedActionTarget>
-</SpeedAction></LongitudinalAction></PrivateAction></Private></Actions></Init>
+{step_speed(10)}</Private></Actions></Init>
 <StopTrigger><ConditionGroup><Condition name="end" delay="0" conditionEdge="none"><ByValueCondition>
 <SimulationTimeCondition value="15" rule="greaterThan"/></ByValueCondition></Condition></ConditionGroup>
 </StopTrigger></Storyboard></OpenSCENARIO>"""

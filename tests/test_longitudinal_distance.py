@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from xosc_parts import CAR, step_speed
 
 from vei_scenario.interpreter import run_scenario
 
@@ -12,21 +13,6 @@ ROAD = """<OpenDRIVE><header revMajor="1" revMinor="6"/><road id="1" length="100
 <lanes><laneSection s="0"><center><lane id="0" type="none"/></center>
 <right><lane id="-1" type="driving"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></right>
 </laneSection></lanes></road></OpenDRIVE>"""
-
-CAR = """<Vehicle name="v" vehicleCategory="car"><BoundingBox><Center x="1.4" y="0" z="0.7"/>
-<Dimensions width="1.8" length="4.5" height="1.4"/></BoundingBox>
-<Performance maxSpeed="60" maxAcceleration="10" maxDeceleration="10"/>
-<Axles><FrontAxle maxSteering="0.5" wheelDiameter="0.6" trackWidth="1.6" positionX="2.8" positionZ="0.3"/>
-<RearAxle maxSteering="0" wheelDiameter="0.6" trackWidth="1.6" positionX="0" positionZ="0.3"/></Axles>
-<Properties/></Vehicle>"""
-
-
-def _speed(v: float) -> str:
-    return (
-        '<PrivateAction><LongitudinalAction><SpeedAction><SpeedActionDynamics dynamicsShape="step" value="0" '
-        f'dynamicsDimension="time"/><SpeedActionTarget><AbsoluteTargetSpeed value="{v}"/></SpeedActionTarget>'
-        "</SpeedAction></LongitudinalAction></PrivateAction>"
-    )
 
 
 def _scenario(tmp_path, keep: str, follower_s: float, follower_v: float, seconds: float = 30.0):
@@ -39,10 +25,10 @@ def _scenario(tmp_path, keep: str, follower_s: float, follower_v: float, seconds
 <Storyboard><Init><Actions>
 <Private entityRef="Lead"><PrivateAction><TeleportAction><Position>
 <LanePosition roadId="1" laneId="-1" s="100" offset="0"/></Position></TeleportAction></PrivateAction>
-{_speed(20)}</Private>
+{step_speed(20)}</Private>
 <Private entityRef="F"><PrivateAction><TeleportAction><Position>
 <LanePosition roadId="1" laneId="-1" s="{follower_s}" offset="0"/></Position></TeleportAction></PrivateAction>
-{_speed(follower_v)}
+{step_speed(follower_v)}
 <PrivateAction><LongitudinalAction>{keep}</LongitudinalAction></PrivateAction></Private>
 </Actions></Init>
 <StopTrigger><ConditionGroup><Condition name="end" delay="0" conditionEdge="none"><ByValueCondition>
@@ -54,7 +40,7 @@ def _scenario(tmp_path, keep: str, follower_s: float, follower_v: float, seconds
     return r.traces["Lead"], r.traces["F"]
 
 
-def test_without_constraints_it_is_held_at_the_distance_at_the_reference_speed(tmp_path):
+def test_without_constraints_it_is_held_at_the_distance_at_the_referencestep_speed(tmp_path):
     keep = '<LongitudinalDistanceAction entityRef="Lead" distance="12" freespace="false" continuous="true"/>'
     lead, f = _scenario(tmp_path, keep, 20.0, 0.0, seconds=5.0)
     # from t = 0 on (an Init action acts before the first record): 12 m behind, at the lead's speed

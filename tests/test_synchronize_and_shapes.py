@@ -9,6 +9,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from xosc_parts import ABSOLUTE_TIMING, follow_trajectory
 
 from conftest import ROOT
 from vei_scenario.cli import main
@@ -521,12 +522,7 @@ def _timed_nurbs(points, knots, order: int) -> str:
         for x, y, t in points
     )
     nurbs = f'<Nurbs order="{order}">{cps}' + "".join(f'<Knot value="{k}"/>' for k in knots) + "</Nurbs>"
-    return (
-        '<PrivateAction><RoutingAction><FollowTrajectoryAction><TrajectoryRef><Trajectory name="n" '
-        f'closed="false"><Shape>{nurbs}</Shape></Trajectory></TrajectoryRef><TimeReference><Timing '
-        'domainAbsoluteRelative="absolute" scale="1" offset="0"/></TimeReference>'
-        '<TrajectoryFollowingMode followingMode="position"/></FollowTrajectoryAction></RoutingAction></PrivateAction>'
-    )
+    return follow_trajectory(nurbs, ABSOLUTE_TIMING)
 
 
 def test_a_timed_order_two_nurbs_is_at_each_control_point_at_its_time(tmp_path):
@@ -580,12 +576,7 @@ def test_an_offset_in_a_rolled_entity_frame_turns_with_the_roll(tmp_path):
 
 def _polyline_follow(vertices, closed: bool) -> str:
     vs = "".join(f'<Vertex><Position><WorldPosition x="{x}" y="{y}"/></Position></Vertex>' for x, y in vertices)
-    return (
-        '<PrivateAction><RoutingAction><FollowTrajectoryAction><TrajectoryRef><Trajectory name="p" '
-        f'closed="{str(closed).lower()}"><Shape><Polyline>{vs}</Polyline></Shape></Trajectory></TrajectoryRef>'
-        '<TimeReference><None/></TimeReference><TrajectoryFollowingMode followingMode="position"/>'
-        "</FollowTrajectoryAction></RoutingAction></PrivateAction>"
-    )
+    return follow_trajectory(f"<Polyline>{vs}</Polyline>", closed=closed)
 
 
 def test_a_closed_polyline_runs_back_to_its_first_vertex(tmp_path):
@@ -602,12 +593,7 @@ def test_a_closed_timed_polyline_that_does_not_close_itself_is_refused(tmp_path,
     vs = "".join(
         f'<Vertex time="{t}"><Position><WorldPosition x="{x}" y="0"/></Position></Vertex>' for x, t in ((0, 0), (9, 1))
     )
-    follow = (
-        '<PrivateAction><RoutingAction><FollowTrajectoryAction><TrajectoryRef><Trajectory name="p" closed="true">'
-        f"<Shape><Polyline>{vs}</Polyline></Shape></Trajectory></TrajectoryRef><TimeReference><Timing "
-        'domainAbsoluteRelative="absolute" scale="1" offset="0"/></TimeReference>'
-        '<TrajectoryFollowingMode followingMode="position"/></FollowTrajectoryAction></RoutingAction></PrivateAction>'
-    )
+    follow = follow_trajectory(f"<Polyline>{vs}</Polyline>", ABSOLUTE_TIMING, closed=True)
     init = _teleport("B", 0, 0, 0).replace("</Private>", follow + "</Private>")
     path = _scenario(tmp_path, _car("B"), init, "")
     assert main(["run", str(path), "-o", str(tmp_path / "o")]) != 0

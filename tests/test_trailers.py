@@ -9,6 +9,7 @@ import math
 
 import numpy as np
 import pytest
+from xosc_parts import follow_trajectory, teleport
 
 from vei_scenario.cli import main
 from vei_scenario.interpreter import run_scenario
@@ -38,29 +39,11 @@ def _vehicle(
     )
 
 
-def _place(name: str, x: float, y: float, h: float, speed: float | None = None, extra: str = "") -> str:
-    out = (
-        f'<Private entityRef="{name}"><PrivateAction><TeleportAction><Position>'
-        f'<WorldPosition x="{x}" y="{y}" h="{h}"/></Position></TeleportAction></PrivateAction>'
-    )
-    if speed is not None:
-        out += (
-            '<PrivateAction><LongitudinalAction><SpeedAction><SpeedActionDynamics dynamicsShape="step" '
-            'value="0" dynamicsDimension="time"/><SpeedActionTarget>'
-            f'<AbsoluteTargetSpeed value="{speed}"/></SpeedActionTarget></SpeedAction></LongitudinalAction>'
-            "</PrivateAction>"
-        )
-    return out + extra + "</Private>"
-
-
 def _circle(radius: float, length: float) -> str:
-    """A FollowTrajectoryAction along a left circle of ``radius`` from where the entity stands."""
-    return (
-        '<PrivateAction><RoutingAction><FollowTrajectoryAction><TrajectoryRef><Trajectory name="c" closed="false">'
-        f'<Shape><Clothoid curvature="{1 / radius}" curvatureDot="0" length="{length}"><Position>'
-        '<WorldPosition x="0" y="0" h="0"/></Position></Clothoid></Shape></Trajectory></TrajectoryRef>'
-        '<TimeReference><None/></TimeReference><TrajectoryFollowingMode followingMode="position"/>'
-        "</FollowTrajectoryAction></RoutingAction></PrivateAction>"
+    """A FollowTrajectoryAction along a left circle of ``radius`` from the origin, heading along x."""
+    return follow_trajectory(
+        f'<Clothoid curvature="{1 / radius}" curvatureDot="0" length="{length}"><Position>'
+        '<WorldPosition x="0" y="0" h="0"/></Position></Clothoid>'
     )
 
 
@@ -96,7 +79,7 @@ def test_a_trailer_rides_in_line_behind_a_tow_vehicle_driving_straight(tmp_path)
     """Hitch 1.2 m behind the car's axle, coupler 3.25 m ahead of the trailer's: the trailer's axle is
     4.45 m behind the car's at every step, wherever its own Init put it, and moves at the car's speed."""
     entities = _vehicle("Car", hitch=-1.2, tows="Trailer") + _vehicle("Trailer", "trailer", coupler=3.25)
-    init = _place("Car", 10, 5, 0, speed=8.0) + _place("Trailer", 50, 50, 2.0)
+    init = teleport("Car", 10, 5, 0, speed=8.0) + teleport("Trailer", 50, 50, 2.0)
     r = run_scenario(_scenario(tmp_path, entities, init, stop_s=5.0))
     car, trailer = r.traces["Car"], r.traces["Trailer"]
     assert np.allclose(trailer.x, car.x - 4.45, atol=1e-9) and np.allclose(trailer.y, 5.0, atol=1e-9)
@@ -108,7 +91,7 @@ def test_a_trailer_settles_on_the_inner_steady_radius_behind_a_tow_vehicle_on_a_
     with 5 m from coupler to axle settles where its axle moves along its own heading, on the radius
     √(R_h² − 5²) = √376 m about the same centre (the no-slip trailer in a steady turn)."""
     entities = _vehicle("Car", hitch=-1.0, tows="Trailer") + _vehicle("Trailer", "trailer", coupler=5.0)
-    init = _place("Car", 0, 0, 0, speed=5.0, extra=_circle(20.0, 2 * math.pi * 20 * 3))
+    init = teleport("Car", 0, 0, 0, speed=5.0, extra=_circle(20.0, 2 * math.pi * 20 * 3))
     r = run_scenario(_scenario(tmp_path, entities, init, stop_s=40.0))
     car, trailer = r.traces["Car"], r.traces["Trailer"]
     assert np.allclose(np.hypot(car.x, car.y - 20.0), 20.0, atol=2e-3)
@@ -123,7 +106,7 @@ def test_a_chain_of_two_trailers_is_pulled_front_to_back(tmp_path):
         + _vehicle("T1", "trailer", coupler=6.0, hitch=-2.0, tows="T2")
         + _vehicle("T2", "trailer", coupler=4.0)
     )
-    init = _place("Car", 0, 0, 0, speed=10.0)
+    init = teleport("Car", 0, 0, 0, speed=10.0)
     r = run_scenario(_scenario(tmp_path, entities, init, stop_s=2.0))
     car, t1, t2 = (r.traces[n] for n in ("Car", "T1", "T2"))
     assert np.allclose(t1.x, car.x - 7.0) and np.allclose(t2.x, t1.x - 6.0)
@@ -131,7 +114,7 @@ def test_a_chain_of_two_trailers_is_pulled_front_to_back(tmp_path):
 
 def test_connect_puts_the_trailer_on_the_hitch_and_disconnect_leaves_it_standing(tmp_path):
     entities = _vehicle("Car", hitch=-1.0) + _vehicle("Trailer", "trailer", coupler=3.0)
-    init = _place("Car", 0, 0, 0, speed=4.0) + _place("Trailer", -3.0, 0.5, 0.3)
+    init = teleport("Car", 0, 0, 0, speed=4.0) + teleport("Trailer", -3.0, 0.5, 0.3)
     connect = '<TrailerAction><ConnectTrailerAction trailerRef="Trailer"/></TrailerAction>'
     disconnect = "<TrailerAction><DisconnectTrailerAction/></TrailerAction>"
     events = _event("on", connect, 1.0) + _event("off", disconnect, 3.0)
@@ -148,7 +131,7 @@ def test_connect_puts_the_trailer_on_the_hitch_and_disconnect_leaves_it_standing
 
 def test_a_trailer_ref_to_no_entity_is_refused_in_one_line(tmp_path, capsys):
     entities = _vehicle("Car", hitch=-1.0, tows="Nobody")
-    path = _scenario(tmp_path, entities, _place("Car", 0, 0, 0, speed=1.0))
+    path = _scenario(tmp_path, entities, teleport("Car", 0, 0, 0, speed=1.0))
     assert main(["run", str(path), "-o", str(tmp_path / "o")]) != 0
     err = capsys.readouterr().err
     assert "TrailerRef 'Nobody' names no entity" in err and "Traceback" not in err

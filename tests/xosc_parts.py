@@ -1,0 +1,42 @@
+"""Pieces of OpenSCENARIO XML that the interpreter tests build their scenarios from."""
+
+from __future__ import annotations
+
+#: A 4.5 m car with its rear axle as the reference point.
+CAR = """<Vehicle name="v" vehicleCategory="car"><BoundingBox><Center x="1.4" y="0" z="0.7"/>
+<Dimensions width="1.8" length="4.5" height="1.4"/></BoundingBox>
+<Performance maxSpeed="60" maxAcceleration="10" maxDeceleration="10"/>
+<Axles><FrontAxle maxSteering="0.5" wheelDiameter="0.6" trackWidth="1.6" positionX="2.8" positionZ="0.3"/>
+<RearAxle maxSteering="0" wheelDiameter="0.6" trackWidth="1.6" positionX="0" positionZ="0.3"/></Axles>
+<Properties/></Vehicle>"""
+
+#: Absolute timing of a trajectory's vertex times.
+ABSOLUTE_TIMING = '<Timing domainAbsoluteRelative="absolute" scale="1" offset="0"/>'
+
+
+def step_speed(v: float) -> str:
+    """A PrivateAction setting the speed to ``v`` at once."""
+    return (
+        '<PrivateAction><LongitudinalAction><SpeedAction><SpeedActionDynamics dynamicsShape="step" value="0" '
+        f'dynamicsDimension="time"/><SpeedActionTarget><AbsoluteTargetSpeed value="{v}"/></SpeedActionTarget>'
+        "</SpeedAction></LongitudinalAction></PrivateAction>"
+    )
+
+
+def teleport(name: str, x: float, y: float, h: float, speed: float | None = None, extra: str = "") -> str:
+    """An Init ``<Private>``: ``name`` placed by world coordinates, optionally given a speed, then ``extra``."""
+    out = (
+        f'<Private entityRef="{name}"><PrivateAction><TeleportAction><Position>'
+        f'<WorldPosition x="{x}" y="{y}" h="{h}"/></Position></TeleportAction></PrivateAction>'
+    )
+    return out + (step_speed(speed) if speed is not None else "") + extra + "</Private>"
+
+
+def follow_trajectory(shape: str, timing: str = "<None/>", closed: bool = False) -> str:
+    """A PrivateAction following an inline trajectory of ``shape`` (position mode)."""
+    return (
+        '<PrivateAction><RoutingAction><FollowTrajectoryAction><TrajectoryRef><Trajectory name="t" '
+        f'closed="{str(closed).lower()}"><Shape>{shape}</Shape></Trajectory></TrajectoryRef>'
+        f'<TimeReference>{timing}</TimeReference><TrajectoryFollowingMode followingMode="position"/>'
+        "</FollowTrajectoryAction></RoutingAction></PrivateAction>"
+    )
