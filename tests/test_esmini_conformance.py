@@ -146,3 +146,28 @@ def test_esmini_examples_play_the_same(esmini, name):
     assert sorted(tuple(sorted(p)) for _, *p in c.vei_collisions) == sorted(
         tuple(sorted(p)) for _, *p in c.esmini_collisions
     )
+
+
+def test_an_entity_deleted_during_the_run_drops_out_of_esmini_log_rows(tmp_path):
+    """esmini stops logging an entity once it is deleted and packs the others' blocks up: each row is
+    read block by block by name (no esmini needed: a log written as esmini 3.6 writes it)."""
+    from vei_scenario.conformance.esmini import read_esmini_csv
+
+    fields = ["Entity_Name", "Entity_ID", "Current_Speed", "World_Position_X", "World_Position_Y"]
+    fields += ["World_Heading_Angle", "collision_ids"]
+    header = ["Index [-]", "TimeStamp [s]"] + [f"#{k} {f} [-]" for k in (1, 2, 3) for f in fields] + [""]
+
+    def block(name, ident, x, hits=""):
+        return [name, ident, "5.0", f"{x}", "1.0", "0.0", hits]
+
+    rows = [
+        ["0", "0.0", *block("A", "0", 0.0), *block("B", "1", 10.0), *block("C", "2", 20.0, "0"), ""],
+        ["1", "0.1", *block("A", "0", 0.5), *block("C", "2", 20.0, "0"), ""],
+        ["2", "0.2", *block("A", "0", 1.0), *block("C", "2", 20.0), ""],
+    ]
+    log = tmp_path / "log.csv"
+    log.write_text("esmini GIT REV: x\n" + "\n".join(", ".join(r) for r in [header, *rows]) + "\n")
+    run = read_esmini_csv(log)
+    assert list(run.tracks["A"].x) == [0.0, 0.5, 1.0] and list(run.tracks["C"].x) == [20.0, 20.0, 20.0]
+    assert list(run.tracks["B"].t) == [0.0]  # B was deleted after the first row
+    assert run.collisions == [(0.0, "A", "C")]

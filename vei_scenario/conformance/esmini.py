@@ -116,45 +116,54 @@ def _prepared_copy(xosc: Path, parameters: dict[str, str], workdir: Path) -> Pat
 
 
 def read_esmini_csv(path: Path) -> EsminiRun:
-    """esmini's ``--csv_logger`` file: one row per step, a block of columns per entity."""
+    """esmini's ``--csv_logger`` file: one row per step, a block of columns per entity. An entity that
+    is deleted during the run drops out of the rows after it (the blocks of the others move up), so
+    each row is read block by block by the entity name it carries."""
     with open(path, newline="") as fh:
         rows = list(csv.reader(fh))
     head = next(i for i, r in enumerate(rows) if r and r[0].strip().startswith("Index"))
     header = [c.strip() for c in rows[head]]
-    blocks: list[dict[str, int]] = []
-    for i, name in enumerate(header):
-        if name.startswith("#"):
-            k, _, rest = name[1:].partition(" ")
-            k = int(k)
-            while len(blocks) < k:
-                blocks.append({})
-            blocks[k - 1][rest.split(" [")[0]] = i
-    data = [[c.strip() for c in r] for r in rows[head + 1 :] if len(r) > 2]
-    t = np.array([float(r[1]) for r in data])
-    tracks: dict[str, Track] = {}
+    first = next(i for i, c in enumerate(header) if c.startswith("#"))
+    fields: dict[str, int] = {}  # column of each field within an entity's block
+    for i, name in enumerate(header[first:], start=first):
+        k, _, rest = name[1:].partition(" ")
+        if name.startswith("#") and k == "1":
+            fields[rest.split(" [")[0]] = i - first
+    width = max(fields.values()) + 1
+    wanted = ("World_Position_X", "World_Position_Y", "World_Heading_Angle", "Current_Speed")
+    samples: dict[str, list[list[float]]] = {}
     ids: dict[str, str] = {}
+    present: list[tuple[float, list[tuple[str, str]]]] = []  # per row: (time, [(entity, collision ids)])
+    for r in rows[head + 1 :]:
+        if len(r) <= first:
+            continue
+        r = [c.strip() for c in r]
+        time = float(r[1])
+        here = []
+        for start in range(first, len(r) - width + 1, width):
+            block = r[start : start + width]
+            name = block[fields["Entity_Name"]]
+            if not name:
+                continue
+            ids.setdefault(block[fields["Entity_ID"]], name)
+            samples.setdefault(name, []).append([time] + [float(block[fields[k]]) for k in wanted])
+            here.append((name, block[fields["collision_ids"]]))
+        present.append((time, here))
+    tracks = {}
+    for name, rows_ in samples.items():
+        a = np.array(rows_)
+        tracks[name] = Track(a[:, 0], a[:, 1], a[:, 2], a[:, 3], a[:, 4])
     colliding: set[frozenset] = set()
     collisions: list[tuple[float, str, str]] = []
-    for b in blocks:
-        name = data[0][b["Entity_Name"]]
-        ids[data[0][b["Entity_ID"]]] = name
-
-        def col(key: str, b=b) -> np.ndarray:
-            return np.array([float(r[b[key]]) for r in data])
-
-        tracks[name] = Track(
-            t, col("World_Position_X"), col("World_Position_Y"), col("World_Heading_Angle"), col("Current_Speed")
-        )
-    for k, r in enumerate(data):
+    for time, here in present:
         now = set()
-        for b in blocks:
-            me = r[b["Entity_Name"]]
-            for other in r[b["collision_ids"]].split():
+        for me, others in here:
+            for other in others.split():
                 if other in ids and ids[other] != me:
                     now.add(frozenset((me, ids[other])))
         for pair in now - colliding:
-            a, c = sorted(pair)
-            collisions.append((float(t[k]), a, c))
+            a_, c = sorted(pair)
+            collisions.append((time, a_, c))
         colliding = now
     return EsminiRun(tracks, collisions)
 
