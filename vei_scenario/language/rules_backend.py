@@ -104,6 +104,7 @@ class Reading:
     ego_speed_mps: float | None = None
     ego_relation: str | None = None
     actors: list[ActorSpec] = field(default_factory=list)
+    ignored: list[str] = field(default_factory=list)  # words read past: nothing in the layers holds them
 
 
 def _scan(text: str) -> tuple[list[list[Mention]], list[str]]:
@@ -152,7 +153,15 @@ def _scan(text: str) -> tuple[list[list[Mention]], list[str]]:
 
 
 def read(text: str) -> Reading:
-    """Parse ``text``; :class:`NotUnderstood` lists the words it could not place."""
+    """Parse ``text`` (:func:`vei_scenario.language.reader.read`); :class:`NotUnderstood` lists the
+    words it could not place."""
+    from vei_scenario.language.reader import read as read_text
+
+    return read_text(text)
+
+
+def read_by_phrases(text: str) -> Reading:
+    """The first reader: the vocabulary's phrases only, the first actor of a clause its subject."""
     clauses, unknown = _scan(text)
     if unknown:
         raise NotUnderstood(list(dict.fromkeys(unknown)), text)
@@ -329,6 +338,13 @@ def sample_layers(reading: Reading, text: str, seed: int) -> dict:
             given_speed = _default_speed(spec.kind, relation, ego_speed) * -given_speed
         if given_speed is None and relation in ("junction_left", "junction_right"):
             given_speed = _u(rng, 9.0, 13.0)
+        if (
+            given_speed
+            and given_speed > 0
+            and relation.startswith("roadside")
+            and "crossing_speed_mps" in first.PARAMETERS
+        ):
+            first_cfg["crossing_speed_mps"] = round(given_speed, 3)  # a crosser's stated speed is its crossing speed
         spawn, speed = place_adversary(
             spec.kind, relation, first.NAME, first_cfg, ego, lanes, given_speed, spec.distance_m
         )
@@ -385,13 +401,15 @@ def place_adversary(
     if relation in ("junction_left", "junction_right"):
         spawn["longitudinal_m"] = round(_junction_spawn(ego, lanes, relation, out_speed, ego_speed, cfg), 3)
     elif relation.startswith("roadside"):
-        v = float(cfg.get("crossing_speed_mps", 1.5 if kind == "pedestrian" else 4.0))
+        v = max(float(cfg.get("crossing_speed_mps", 1.5 if kind == "pedestrian" else 4.0)), 0.3)
         cfg.setdefault("crossing_speed_mps", v)
         k = int(ego["lane"])
         cross = (k - 0.5) * 3.5 + 1.0 if relation == "roadside_right" else (2 * lanes - k + 0.5) * 3.5 + 1.0
         trigger = ego_speed * (cross / v + float(cfg.get("arrival_gap_s", 0.5)))
         spawn["longitudinal_m"] = round(trigger + 15.0 + lengths / 2, 3)
         out_speed = 0.0
+    elif distance_m is not None and relation in ("ahead", "behind", "oncoming") and behaviour_name != "cut_in":
+        spawn["longitudinal_m"] = -distance_m if relation == "behind" else distance_m  # as the text says
     elif hasattr(mod, "place"):
         lon, placed_speed = mod.place(ego_speed, lengths, cfg)
         if relation == "behind" and lon > 0:

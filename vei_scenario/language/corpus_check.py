@@ -1,0 +1,137 @@
+"""Descriptions with expectations: does a backend understand them, and are the layers it writes faithful?
+
+A corpus file (``vei-language-corpus/1``) lists cases: a description and what a reader of it expects —
+the map, weather, time of day, traffic, lanes, the ego's speed and route, the intent, and each
+adversary (its type, the behaviours it may show, where it starts, its stated speed and gap, the
+criticality its wording gives). A case is *understood* when the backend reads it without refusing,
+and *faithful* when every stated expectation holds in the layers of each seed checked. The
+expectations are deliberately about meaning, not about vei's wording, so a corpus written by someone
+who never read the parser measures the parser.
+"""
+
+from __future__ import annotations
+
+import itertools
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from vei_scenario.language.layers import behaviour_nodes
+
+FORMAT = "vei-language-corpus/1"
+#: Hours a time-of-day word covers (start, end), for the ``time`` expectation.
+TIME_WINDOWS = {"night": (21, 5), "morning": (6, 11), "afternoon": (12, 17), "evening": (18, 22), "dusk": (18, 21)}
+
+
+@dataclass
+class CaseResult:
+    text: str
+    understood: bool
+    faithful: bool
+    problems: list[str] = field(default_factory=list)
+
+
+def load_corpus(path: Path) -> list[dict]:
+    from vei_scenario.clip.loader import read_json
+    from vei_scenario.errors import VeiInputError
+
+    doc = read_json(path)
+    if not isinstance(doc, dict) or doc.get("format") != FORMAT or not isinstance(doc.get("cases"), list):
+        raise VeiInputError(path, "format", f"not a {FORMAT} document")
+    return doc["cases"]
+
+
+def _near(value: float, expected: float, tol: float) -> bool:
+    return abs(value - expected) <= tol
+
+
+def _actor_problems(adv: dict, want: dict) -> list[str]:
+    """Why adversary ``adv`` (layers) does not fit expectation ``want`` (empty: it fits)."""
+    out = []
+    if adv["type"] != want["type"]:
+        return [f"type {adv['type']} (expected {want['type']})"]
+    nodes = [node for _, node in behaviour_nodes(adv["behaviour"])]
+    names = [n["behaviour"] for n in nodes]
+    allowed = want["behaviours"]
+    if want.get("all"):
+        it = iter(names)  # every expected behaviour, in the order given
+        if not all(any(b == x for x in it) for b in allowed):
+            out.append(f"behaviours {names} (expected all of {allowed} in order)")
+    elif not names or not set(names) <= set(allowed):
+        out.append(f"behaviours {names} (expected among {allowed})")
+    relation = adv["spawn"].get("relation")
+    if "relation" in want and relation not in want["relation"]:
+        out.append(f"relation {relation} (expected {' or '.join(want['relation'])})")
+    if "speed_kph" in want:  # its speed, or the speed it crosses at
+        speeds = [float(adv["speed_mps"])] + [
+            float(n["config"]["crossing_speed_mps"]) for n in nodes if "crossing_speed_mps" in n.get("config", {})
+        ]
+        if not any(_near(v * 3.6, want["speed_kph"], 1.0) for v in speeds):
+            out.append(f"speed {[round(v * 3.6, 1) for v in speeds]} km/h (expected {want['speed_kph']})")
+    if "gap_m" in want:
+        gaps = [abs(float(adv["spawn"].get("longitudinal_m", float("nan"))))]
+        gaps += [float(n["config"][k]) for n in nodes for k in ("gap_m", "distance_m") if k in n.get("config", {})]
+        if not any(_near(g, want["gap_m"], 1.0) for g in gaps):
+            out.append(f"gap {gaps} (expected {want['gap_m']} m)")
+    if "criticality" in want:
+        # (behaviours without criticality profiles, e.g. stop, carry none)
+        classes = {n["config"]["criticality"] for n in nodes if "criticality" in n.get("config", {})}
+        if classes != {want["criticality"]}:
+            out.append(f"criticality {sorted(map(str, classes))} (expected {want['criticality']})")
+    return out
+
+
+def layers_problems(layers: dict, case: dict) -> list[str]:
+    """Every expectation of ``case`` that ``layers`` does not meet."""
+    env = layers["environment"]
+    out = []
+    if "map" in case and env["map"]["kind"] != case["map"]:
+        out.append(f"map {env['map']['kind']} (expected {case['map']})")
+    if "lanes" in case and env["map"].get("lanes_per_direction") != case["lanes"]:
+        out.append(f"lanes {env['map'].get('lanes_per_direction')} (expected {case['lanes']})")
+    if "weather" in case and env["weather"]["condition"] != case["weather"]:
+        out.append(f"weather {env['weather']['condition']} (expected {case['weather']})")
+    if "density" in case and env["traffic_density"] != case["density"]:
+        out.append(f"traffic {env['traffic_density']} (expected {case['density']})")
+    if "time" in case:
+        hour = int(str(env["time_of_day"]).split(":")[0])
+        lo, hi = TIME_WINDOWS[case["time"]]
+        if not (lo <= hour <= hi if lo <= hi else hour >= lo or hour <= hi):
+            out.append(f"time {env['time_of_day']} (expected {case['time']})")
+    ego = layers["ego"]
+    if "ego_speed_kph" in case and not _near(float(ego["speed_mps"]) * 3.6, case["ego_speed_kph"], 1.0):
+        out.append(f"ego speed {float(ego['speed_mps']) * 3.6:.1f} km/h (expected {case['ego_speed_kph']})")
+    if "ego_route" in case and ego.get("route") != case["ego_route"]:
+        out.append(f"ego route {ego.get('route')} (expected {case['ego_route']})")
+    if "intent" in case and layers.get("intent") != case["intent"]:
+        out.append(f"intent {layers.get('intent')} (expected {case['intent']})")
+    advs, wants = layers["adversaries"], case["actors"]
+    if len(advs) != len(wants):
+        kinds = [a["type"] for a in advs]
+        out.append(f"{len(advs)} adversaries {kinds} (expected {len(wants)}: {[w['type'] for w in wants]})")
+        return out
+    best: list[str] | None = None
+    for order in itertools.permutations(range(len(advs))):  # (a corpus case names a few actors at most)
+        found = [p for w, k in zip(wants, order) for p in _actor_problems(advs[k], w)]
+        if best is None or len(found) < len(best):
+            best = found
+        if not found:
+            break
+    return out + (best or [])
+
+
+def check_case(case: dict, make_layers, seeds=(0, 1, 2)) -> CaseResult:
+    """Understood and faithful? ``make_layers(text, seed)`` returns layers or raises ValueError (the
+    backend's refusal, e.g. :class:`~vei_scenario.language.rules_backend.NotUnderstood`)."""
+    text = case["text"]
+    problems: list[str] = []
+    for seed in seeds:
+        try:
+            layers = make_layers(text, seed)
+        except ValueError as exc:
+            return CaseResult(text, False, False, [str(exc)])
+        problems += [p for p in layers_problems(layers, case) if p not in problems]
+    return CaseResult(text, True, not problems, problems)
+
+
+def check_corpus(cases: list[dict], make_layers, seeds=(0, 1, 2)) -> list[CaseResult]:
+    return [check_case(c, make_layers, seeds) for c in cases]

@@ -1,0 +1,683 @@
+"""Reading a description as people write it: lemmas, synonyms, several actors per clause and sentence,
+numbers bound to the actor they describe, sides resolved by what the actor does.
+
+The text is cut into clauses (sentence ends, "then", "while"). Every word is matched, longest phrase
+first, against the lexicon (:mod:`vocabulary` and :mod:`lexicon`) by its surface form or any of its
+lemmas, so inflections need no entries. In a clause:
+
+- an actor named at the start, or after a conjunction ("and a pedestrian ..."), is a *subject*: the
+  behaviours that follow are its; an actor named after a preposition or a verb ("in front of the
+  ego", "approaches a stationary car") is an *object*: it is created (if new) and takes the positions
+  and numbers that follow it, but not the behaviours;
+- "a car" is a new actor, "the car" / "it" the one already named, "two pedestrians" two actors that
+  share what follows, "one ... the other" their members;
+- speeds and distances go to the nearest actor named before them (not to an ego named after "of",
+  "to", "behind": "12 m ahead of the ego at 50 km/h" is the lead car's speed);
+- sides ("from the left") are resolved with the actor's first behaviour: the far kerb for a
+  crossing, the left entrance for a red-light runner, the left lane for a cut-in.
+
+Words that carry nothing the layers can hold are listed in :attr:`Reading.ignored`. A description is
+refused only when something must be placed and cannot be: a behaviour with no actor, an actor whose
+only verb is unknown (that verb is named), or a number whose unit is unknown.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from functools import lru_cache
+
+from vei_scenario.language import lexicon as L
+from vei_scenario.language import vocabulary as V
+
+_TOKEN = re.compile(r"\d+(?:\.\d+)?|km/h|m/s²|m/s2|m/s|[a-z][a-z\-]*(?:'[a-z]+)?|'s|[.;,!?:]")
+
+
+@lru_cache(maxsize=4096)
+def forms(word: str) -> frozenset[str]:
+    """The surface form of ``word`` and all its lemmas (lemminflect)."""
+    from lemminflect import getAllLemmas
+
+    out = {word}
+    for lemmas in getAllLemmas(word).values():
+        out.update(lemmas)
+    return frozenset(out)
+
+
+def _pos(word: str) -> set[str]:
+    from lemminflect import getAllLemmas
+
+    return set(getAllLemmas(word))
+
+
+def _entries() -> dict[tuple[str, ...], tuple[str, object]]:
+    table: dict[tuple[str, ...], tuple[str, object]] = {}
+
+    def put(phrases, slot, value, overwrite=True):
+        for ph in phrases:
+            key = tuple(ph.split())
+            if overwrite or key not in table:
+                table[key] = (slot, value)
+
+    put(L.NOISE, "noise", None)
+    for kind, words in L.ACTOR_NOUNS.items():
+        put(words, "actor", kind)
+    put(L.CAR_NOUNS, "actor", "car")
+    for phrase, (k, v) in V.ACTORS.items():
+        put([phrase], "actor", "ego" if k == "ego" else v, overwrite=False)
+    put(L.EGO_NOUNS, "actor", "ego")
+    put(V.PRONOUNS, "pronoun", None)
+    put(L.MEMBERS, "member", None)
+    put(L.COUNTS, "count", None)
+    for slot, groups in (("map", L.MAPS), ("weather", L.WEATHER), ("time", L.TIMES), ("density", L.DENSITY)):
+        for value, words in groups.items():
+            put(words, slot, value)
+    for n, words in L.LANES.items():
+        put(words, "lanes", n)
+    for phrase, value in V.LANE_COUNTS.items():
+        put([phrase], "lanes", value, overwrite=False)
+    for side, words in L.SIDES.items():
+        put(words, "side", side)
+    for side, words in L.LANE_SIDES.items():
+        put(words, "lane_side", side)
+    put(L.KERB, "kerb", None)
+    put(L.NEARSIDE, "kerb_side", "right")
+    put(L.FARSIDE, "kerb_side", "left")
+    put(L.JUNCTION_ARM, "arm", None)
+    for rel, words in L.RELATIONS.items():
+        put(words, "relation", rel)
+    for phrase, rel in V.RELATIONS.items():
+        put([phrase], "relation", rel, overwrite=False)
+    put(L.STATIONARY, "stationary", None)
+    for cls, words in L.CRITICALITY.items():
+        put(words, "criticality", cls)
+    for phrase, cls in V.CRITICALITY.items():
+        put([phrase], "criticality", cls, overwrite=False)
+    for intent, words in L.INTENTS.items():
+        put(words, "intent", intent)
+    for phrase, intent in V.INTENTS.items():
+        put([phrase], "intent", intent, overwrite=False)
+    for name, words in L.BEHAVIOUR_VERBS.items():
+        put(words, "behaviour", (name, {}))
+    for delta, words in L.SPEED_CHANGE_VERBS.items():
+        put(words, "behaviour", ("change_speed", {"speed_delta_mps": delta}))
+    put(L.RED_LIGHT, "behaviour", ("run_red_light", {}))
+    for turn, words in L.TURNS.items():
+        put(words, "turn", turn)
+    for phrase, meaning in V.BEHAVIOURS.items():
+        put([phrase], "behaviour", meaning, overwrite=False)
+    for phrase, factor in V.SPEED_WORDS.items():
+        put([phrase], "speed_word", factor)
+    for phrase, route in V.EGO_VERBS.items():
+        if not phrase.startswith("ego "):  # ("ego turns right": the ego is named on its own)
+            put([phrase], "ego_verb", route, overwrite=False)
+    for route, words in L.EGO_ROUTES.items():
+        put(words, "ego_verb", route, overwrite=False)
+    put(L.SEQUENCE, "sequence", None)
+    put(L.PARALLEL, "parallel", None)
+    for phrase in V.SEQUENCE_WORDS:
+        put([phrase], "sequence", None, overwrite=False)
+    for phrase in V.PARALLEL_WORDS:
+        put([phrase], "parallel", None, overwrite=False)
+    return table
+
+
+TABLE = _entries()
+_BY_FIRST: dict[str, list[tuple[str, ...]]] = {}
+for _key in sorted(TABLE, key=len, reverse=True):
+    _BY_FIRST.setdefault(_key[0], []).append(_key)
+
+#: Words that carry nothing on their own (articles, prepositions, auxiliaries, ...): never listed.
+FUNCTION_WORDS = set(V.FILLER) | set(
+    """a an the of in on at to and or then with is are was were be been being has have had do does did it its into
+    onto from by for as this that these those which who whom whose while when after before so some there their
+    where just but also very quite across through near next up down out off over toward towards around about
+    any can could will would should may might must not no without within upon than like only even still yet
+    again back along already now here ago 's i my me our we us you your they them he she him her his hers
+    own same such each every all both either neither other another what whatever how why whether because until
+    since though although if unless onto per via ego's car's vehicle's road's""".split()
+)
+
+
+@dataclass
+class _Mention:
+    slot: str
+    value: object
+    words: str
+    start: int  # token index
+    prev: str = ""  # the token before the phrase
+    next_: str = ""  # the token after it
+    key: tuple = ()  # the lexicon phrase it matched
+    end: int = 0  # token index after it
+    det: str = ""  # the determiner right before it ("the", "a", ...)
+
+
+@dataclass
+class _Actor:
+    kind: str
+    relation: str | None = None
+    side: str | None = None  # a bare left/right
+    lane_side: str | None = None
+    kerb: bool = False
+    kerb_side: str | None = None
+    arm: bool = False
+    stationary: bool = False
+    distance_m: float | None = None
+    speed_mps: float | None = None
+    behaviours: list = field(default_factory=list)  # (name, cfg, criticality, link)
+    group: list | None = None  # the actors named together ("two cars")
+    unknown: list = field(default_factory=list)  # verbs said of it that the lexicon does not know
+    merged: bool = False
+
+
+def _tokens(text: str) -> list[str]:
+    text = text.lower().replace("\u2019", "'").replace("’", "'")
+    out = []
+    for tok in _TOKEN.findall(text):
+        if tok.endswith("'s") and len(tok) > 2:
+            out += [tok[:-2], "'s"]
+        elif "'" in tok and tok.split("'", 1)[1] in ("re", "m", "ve", "ll", "d", "t"):
+            out.append(tok.split("'", 1)[0])  # "we're": "we" (the rest carries nothing here)
+        elif tok.endswith("'") or tok in ("'",):
+            continue
+        else:
+            out.append(tok)
+    return out
+
+
+def _match(tokens: list[str], i: int) -> tuple[tuple[str, ...], tuple[str, object]] | None:
+    first = forms(tokens[i])
+    for w in first:
+        for key in _BY_FIRST.get(w, ()):
+            if i + len(key) <= len(tokens) and all(k in forms(tokens[i + j]) for j, k in enumerate(key)):
+                # the longest phrase for this first form; compare across forms below
+                yield key
+                break
+
+
+def _best(tokens: list[str], i: int) -> tuple[str, ...] | None:
+    """The longest phrase at ``i``; of equally long ones the one written as the text has it."""
+    keys = list(_match(tokens, i))
+    if not keys:
+        return None
+    return max(keys, key=lambda k: (len(k), k == tuple(tokens[i : i + len(k)]), k))
+
+
+_DETERMINERS = {"the", "a", "an", "its", "our", "my", "their", "his", "her", "this", "that", "another", "some"}
+
+
+def _adverb(word: str) -> bool:
+    return word.endswith("ly") or word in ("hard", "fast", "straight", "just", "then")
+
+
+def _number(tokens: list[str], i: int) -> tuple[str, float, int] | None:
+    """(kind, value SI, tokens used) of a number at ``i``: a speed, a distance, or something to skip."""
+    value = float(tokens[i])
+    nxt = tokens[i + 1] if i + 1 < len(tokens) else ""
+    if nxt in V.SPEED_UNITS:
+        return "speed", value * V.SPEED_UNITS[nxt], 2
+    if nxt in ("m", "meters", "metres", "meter", "metre"):
+        return "distance", value, 2
+    if nxt in ("m/s²", "m/s2", "s", "sec", "seconds", "second", "g", "%", "deg", "degrees", "kg", "km"):
+        return "skip", value, 2
+    if nxt in ("to", "-") and i + 3 < len(tokens) and re.fullmatch(r"\d+(?:\.\d+)?", tokens[i + 2]):
+        unit = tokens[i + 3]
+        if unit in V.SPEED_UNITS:  # "from 50 to 20 km/h": the first speed
+            return "speed", value * V.SPEED_UNITS[unit], 4
+    prev = tokens[i - 1] if i > 0 else ""
+    if prev in ("at", "doing", "about", "around", "of") and 3 <= value <= 250:  # "at 120": km/h
+        return "speed", value / 3.6, 1
+    return "unknown", value, 1
+
+
+class Refused(ValueError):
+    def __init__(self, words: list[str]) -> None:
+        self.words = words
+        super().__init__(", ".join(f"'{w}'" for w in words))
+
+
+def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
+    """(clauses as (link, mentions), ignored words) of ``text``; a word that is only a verb and unknown
+    stays in its clause as an ``unknown_verb`` mention."""
+    tokens = _tokens(text)
+    clauses: list[tuple[str, list[_Mention]]] = [("sequence", [])]
+    ignored: list[str] = []
+    i = 0
+    while i < len(tokens):
+        tok = tokens[i]
+        j = i - 1  # the word before, past a determiner ("in front of the ego": "of")
+        while j > 0 and tokens[j] in _DETERMINERS:
+            j -= 1
+        prev = tokens[j] if j >= 0 else ""
+        det = tokens[i - 1] if i and tokens[i - 1] in _DETERMINERS else ""
+        if tok in ".;!?":
+            clauses.append(("sequence", []))
+            i += 1
+            continue
+        if tok in (",", ":", "'s"):
+            clauses[-1][1].append(_Mention("punct", tok, tok, i, prev))
+            i += 1
+            continue
+        if re.fullmatch(r"\d+(?:\.\d+)?", tok):
+            kind, value, used = _number(tokens, i)
+            if kind == "unknown":
+                ignored.append(tok)
+            elif kind != "skip":
+                clauses[-1][1].append(_Mention(kind, value, " ".join(tokens[i : i + used]), i, prev, end=i + used))
+            i += used
+            continue
+        key = _best(tokens, i)
+        adverb = None
+        if (key is None or len(key) == 1) and i + 2 < len(tokens) and _adverb(tokens[i + 1]):
+            # "walks slowly across": the phrase around an adverb, and the adverb on its own
+            skipped = _best(tokens[: i + 1] + tokens[i + 2 :], i)
+            if skipped is not None and len(skipped) > 1:
+                key, adverb = skipped, tokens[i + 1]
+        if key is None and tok in L.CONJUNCTIONS:
+            clauses[-1][1].append(_Mention("conj", tok, tok, i, prev, end=i + 1))
+            i += 1
+            continue
+        if key is None and tok in L.RELATIVE:
+            clauses[-1][1].append(_Mention("relative", tok, tok, i, prev, end=i + 1))
+            i += 1
+            continue
+        if key is None:
+            if tok not in FUNCTION_WORDS:
+                ignored.append(tok)
+                pos = _pos(tok)
+                after_actor = (
+                    bool(clauses[-1][1]) and clauses[-1][1][-1].slot == "actor" and clauses[-1][1][-1].end == i
+                )
+                verb = "VERB" in pos and not pos & {"ADJ", "ADV"} and not tok.endswith(("ing", "ed"))
+                if verb or (not pos and after_actor and tok.endswith("s")):  # (a word lemminflect lacks)
+                    clauses[-1][1].append(_Mention("unknown_verb", tok, tok, i, prev, end=i + 1))
+            i += 1
+            continue
+        slot, value = TABLE[key]
+        used = len(key) + (1 if adverb else 0)
+        words = " ".join(tokens[i : i + used])
+        nxt = tokens[i + used] if i + used < len(tokens) else ""
+        if slot in ("sequence", "parallel"):
+            clauses.append((slot, [_Mention("link", slot, words, i, prev, key=key, end=i + used)]))
+        elif slot != "noise":
+            clauses[-1][1].append(_Mention(slot, value, words, i, prev, nxt, key, i + used, det))
+        if adverb is not None and (adverb,) in TABLE and TABLE[(adverb,)][0] in ("criticality", "speed_word"):
+            a_slot, a_value = TABLE[(adverb,)]
+            clauses[-1][1].append(_Mention(a_slot, a_value, adverb, i + 1, tok, key=(adverb,), end=i + 2))
+        i += used
+    return [c for c in clauses if any(m.slot not in ("punct", "link") for m in c[1])], ignored
+
+
+#: Verbs whose very wording is critical ("darts out", "tailgates"), unless the clause says otherwise.
+VERB_CRITICALITY = {
+    ("tailgate",): "dangerous",
+    ("dart", "out"): "dangerous",
+    ("dart", "across"): "dangerous",
+    ("shoot", "out"): "dangerous",
+    ("jump", "out"): "dangerous",
+    ("run", "out"): "dangerous",
+    ("slam", "on", "the", "brake"): "dangerous",
+    ("slam", "the", "brake"): "dangerous",
+    ("squeeze", "in"): "dangerous",
+    ("barge", "in"): "dangerous",
+    ("ride", "my", "bumper"): "dangerous",
+    ("ride", "our", "bumper"): "dangerous",
+    ("ride", "bumper"): "dangerous",
+}
+_POSITIONAL = ("relation", "side", "lane_side", "kerb", "kerb_side", "arm", "stationary")
+_VERBS = ("behaviour", "turn", "unknown_verb", "ego_verb", "speed_word")
+
+
+def _drop_label(clauses):
+    """A test engineer's label before a colon ("CCRs:", "Cut-out:", "Car-to-pedestrian farside adult:")
+    names the case, not its actors: what it says of actors is dropped, unless the text after it
+    refers back to them ("Two cars: one ..., the other ...")."""
+    if not clauses:
+        return clauses
+    link, mentions = clauses[0]
+    colon = next((k for k, m in enumerate(mentions) if m.slot == "punct" and m.value == ":"), None)
+    if colon is None or any(m.slot in ("member", "pronoun") for m in mentions[colon:]):
+        return clauses
+    head = [
+        m for m in mentions[:colon] if m.slot not in ("actor", "behaviour", "relation", "side", "count") + _POSITIONAL
+    ]
+    return [(link, head + mentions[colon + 1 :])] + clauses[1:]
+
+
+def _resolve_relation(a: _Actor, map_kind: str | None) -> str | None:
+    """The spawn relation of an actor from what was said about where it is and what it does first."""
+    first = a.behaviours[0][0] if a.behaviours else None
+    junction = map_kind in ("crossroad", "roundabout")
+    side = a.kerb_side or a.lane_side or a.side or (a.relation if a.relation in ("left", "right") else None)
+    if a.relation and a.relation.startswith(("junction", "roadside")):
+        return a.relation
+    if a.relation == "oncoming" or (a.relation == "behind" and not (a.lane_side and first == "cut_in")):
+        return a.relation
+    lateral = first in ("cut_in", "overtake", "forced_turn", "follow_vehicle")
+    vehicle = a.kind in ("car", "van", "truck")
+    if junction and vehicle and side and (a.arm or a.stationary) and first in ("cut_in", "keep_going", None):
+        return f"junction_{side}"  # waiting at the junction on the left, then pulling out
+    if first == "cross_in_front" and a.kind in ("pedestrian", "bicycle", "e-scooter"):
+        if a.arm and junction and a.kind != "pedestrian":
+            return f"junction_{side or 'right'}"
+        return f"roadside_{side or 'right'}"
+    if first == "cross_in_front" and junction:
+        return f"junction_{side or 'left'}"
+    if first == "run_red_light" or (a.arm and junction) or (junction and first in (None, "keep_going") and a.side):
+        return f"junction_{side or 'left'}"
+    if a.kerb and a.kind in ("pedestrian", "bicycle", "e-scooter"):
+        return f"roadside_{side or 'right'}"
+    if side and (lateral or a.relation is None or a.lane_side):
+        return side
+    return a.relation or side
+
+
+def read(text: str):
+    """Parse ``text`` into a :class:`~vei_scenario.language.rules_backend.Reading` (with ``ignored``
+    words); raise :class:`~vei_scenario.language.rules_backend.NotUnderstood` naming what cannot be placed."""
+    from vei_scenario.language.rules_backend import ActorSpec, NotUnderstood, Reading
+
+    clauses, ignored = scan(text)
+    clauses = _drop_label(clauses)
+    r = Reading()
+    actors: list[_Actor] = []
+    refuse: list[str] = []
+    subject: _Actor | str | None = None
+    pending: list[_Mention] = []
+    for link, mentions in clauses:
+        named: list[tuple[_Actor | str, str]] = []  # (actor, role) in order: subject, prep, verb, participle
+        clause_subject: _Actor | str | None = None
+        added: list[tuple[_Actor, int]] = []  # behaviours added in this clause
+        crit_here = next((m.value for m in mentions if m.slot == "criticality"), None)
+        group: list[_Actor] | None = None
+        count = 1
+        expect_subject = True
+        prev: _Mention | None = None
+        for k, m in enumerate(mentions):
+            nxt = mentions[k + 1] if k + 1 < len(mentions) else None
+            if m.slot == "punct":
+                if m.value != "'s":
+                    expect_subject = True
+                prev = prev if m.value == "'s" else m
+                continue
+            if m.slot in ("conj", "link"):
+                expect_subject = True
+                prev = m
+                continue
+            if m.slot == "count":
+                count = L.COUNTS.get(m.words, 2)
+                continue
+            if m.slot == "relative":
+                if named and named[-1][1] != "subject":  # "a child who steps out": the child acts
+                    clause_subject = subject = named[-1][0]
+                    named[-1] = (named[-1][0], "subject")
+                prev = m
+                continue
+            if m.slot in ("actor", "pronoun", "member"):
+                if m.slot == "actor" and prev is not None and prev.slot == "actor" and prev.end == m.start:
+                    continue  # "adult pedestrian": one actor
+                after_verb = prev is not None and prev.slot in _VERBS
+                if m.prev in L.OBJECT_PREPOSITIONS or m.next_ == "'s":
+                    role = "prep"  # "in front of the ego", "the ego's lane"
+                elif expect_subject or clause_subject is None:
+                    role = "subject"
+                else:
+                    role = "verb"  # "approaches a stationary car"
+                if m.slot == "pronoun":
+                    if after_verb or m.prev in L.OBJECT_PREPOSITIONS:
+                        prev = m
+                        continue  # "overtakes it": an object already known
+                    who = subject if subject is not None else "ego"
+                    role = "subject"
+                elif m.slot == "member":
+                    pool = group or []
+                    if not pool:
+                        continue
+                    free = [a for a in pool if not a.behaviours]
+                    who = free[0] if free else pool[-1]
+                    for a in pool:  # from here on each member is told apart
+                        a.group = None
+                    role = "subject"
+                elif m.value == "ego":
+                    who = "ego"
+                else:
+                    same = [a for a in actors if a.kind == m.value]
+                    if m.det in ("the", "this", "that", "its", "our", "my") and same:
+                        who = same[-1]
+                    elif (
+                        m.value in ("bicycle", "e-scooter")
+                        and m.prev in ("on", "riding")
+                        and named
+                        and isinstance(named[-1][0], _Actor)
+                        and named[-1][0].kind == "pedestrian"
+                    ):
+                        who = named[-1][0]  # "a guy on an e-scooter": the rider is the e-scooter
+                        who.kind = str(m.value)
+                        prev = m
+                        continue
+                    else:
+                        made = [_Actor(str(m.value)) for _ in range(count)]
+                        for a in made:
+                            a.group = made if count > 1 else None
+                        actors.extend(made)
+                        who = made[0]
+                        group = made if count > 1 else group
+                    count = 1
+                named.append((who, role))
+                if role == "subject":
+                    subject = clause_subject = who
+                    for p in pending:
+                        _apply(p, who, r, link, added)
+                    pending = []
+                else:
+                    keep = []
+                    for p in pending:
+                        if p.slot in _POSITIONAL and who != "ego":
+                            _apply(p, who, r, link, added)
+                        else:
+                            keep.append(p)
+                    pending = keep
+                expect_subject = False
+                prev = m
+                continue
+            if m.slot in ("map", "weather", "time", "density", "lanes", "intent"):
+                _global(r, m)
+                prev = m
+                continue
+            if m.slot == "criticality":
+                if m.words.split()[-1] in L.CONJUNCTIONS:  # "well after": what follows has its own subject
+                    expect_subject = True
+                prev = m
+                continue
+            if m.slot in _VERBS:
+                target = clause_subject
+                if prev is not None and prev.slot == "actor" and named and named[-1][1] != "subject":
+                    if m.words.split()[0].endswith("ing"):  # "an oncoming car travelling at 30": its participle
+                        named[-1] = (named[-1][0], "participle")
+                        target = named[-1][0]
+                if target is None:
+                    target = subject if not named and subject is not None else None
+                if target is None:
+                    if m.slot != "unknown_verb":
+                        pending.append(m)
+                    prev = m
+                    continue
+                _apply(m, target, r, link, added)
+                expect_subject = False
+                prev = m
+                continue
+            # positions, states, numbers: the actor they describe
+            if m.slot in _POSITIONAL and nxt is not None and nxt.slot in ("actor", "count") and nxt.start == m.end:
+                pending.append(m)  # an adjective before its actor ("an oncoming car")
+            else:
+                who = _nearest(named, m)
+                if who is None:
+                    pending.append(m)
+                else:
+                    _apply(m, who, r, link, added)
+            prev = m
+        for a, i in added:
+            name, cfg, _, lk = a.behaviours[i]
+            words = cfg.pop("_words", "")
+            a.behaviours[i] = (name, cfg, crit_here or _verb_criticality(words), lk)
+    for p in pending:
+        if p.slot in ("behaviour", "turn"):
+            refuse.append(p.words)
+    for a in actors:  # an actor that does nothing known but an unknown verb: that verb cannot be placed
+        if not a.behaviours and not a.stationary and a.unknown:
+            refuse.extend(a.unknown)
+    if refuse:
+        raise NotUnderstood(list(dict.fromkeys(refuse)), text)
+    if r.map_kind is None and r.ego_route in ("left", "right"):
+        r.map_kind = "crossroad"  # the ego turns: there is a junction
+    junction = r.map_kind in ("crossroad", "roundabout")
+    for a in actors:
+        if a.merged:
+            continue
+        spec = ActorSpec(a.kind)
+        behaviours = _tidy(a)
+        if a.kind == "pedestrian" and behaviours and behaviours[0][0] in VEHICLE_BEHAVIOURS:
+            spec.kind = a.kind = "car"
+        if behaviours and behaviours[0][0] == "change_lane" and (a.lane_side or a.side):
+            name, cfg, c, lk = behaviours[0]  # "moves over into the right lane": where to, not where from
+            behaviours[0] = (name, {**cfg, "direction": 1.0 if (a.lane_side or a.side) == "left" else -1.0}, c, lk)
+            a.lane_side = a.side = None
+        classes = [b[2] for b in behaviours if b[2]]
+        if classes:  # the tone of what it does carries over to its unqualified behaviours
+            behaviours = [(n, c, k or classes[0], lk) for n, c, k, lk in behaviours]
+        if not behaviours and a.stationary:
+            behaviours = [("keep_going", {}, None, "sequence")]
+        if behaviours and behaviours[0][0] == "cut_in" and a.distance_m is not None:
+            name, cfg, c, lk = behaviours[0]
+            behaviours[0] = (name, {**cfg, "gap_m": a.distance_m}, c, lk)
+        a.behaviours = behaviours
+        spec.relation = _resolve_relation(a, r.map_kind)
+        if (
+            junction
+            and spec.relation
+            and spec.relation.startswith("junction")
+            and behaviours[:1]
+            and (behaviours[0][0] == "keep_going" and not a.stationary)
+        ):  # entering the junction from a side road: across the ego's path
+            behaviours[0] = ("run_red_light", behaviours[0][1], behaviours[0][2], behaviours[0][3])
+        spec.behaviours = behaviours
+        spec.distance_m = a.distance_m
+        spec.speed_mps = 0.0 if a.stationary and a.speed_mps is None else a.speed_mps
+        r.actors.append(spec)
+    r.ignored = list(dict.fromkeys(ignored))
+    return r
+
+
+def _verb_criticality(words: str) -> str | None:
+    toks = words.split()
+    for key, cls in VERB_CRITICALITY.items():
+        if len(key) <= len(toks) and all(k in forms(t) for k, t in zip(key, toks)):
+            return cls
+    return None
+
+
+#: Behaviours only a vehicle shows: a "guy" who tailgates drives a car.
+VEHICLE_BEHAVIOURS = {"follow_vehicle", "overtake", "cut_in", "run_red_light", "forced_turn", "change_lane"}
+
+
+def _tidy(a: _Actor) -> list:
+    """The actor's behaviours as the layers take them: redundant ones merged."""
+    out = []
+    for b in a.behaviours:
+        if out and b[0] == "cut_in" and out[-1][0] == "overtake":
+            name, cfg, crit, lk = out[-1]  # an overtake ends by cutting back in: "cuts in sharply" is how
+            out[-1] = (name, cfg, crit or b[2], lk)
+            continue
+        out.append(b)
+    if a.kind in ("car", "van", "truck") and any(b[0] == "run_red_light" for b in out):
+        out = [b for b in out if b[0] != "cross_in_front"]  # crossing against red is the red-light run
+    if len(out) > 1:  # "rides ahead and then stops": going on first adds nothing
+        out = [b for b in out if b[0] != "keep_going"] or out[:1]
+    return out
+
+
+def _nearest(named, m):
+    """The actor a position or number describes: the last one named before it, passing over an ego
+    named after a preposition ("ahead of the ego"), and for a speed an actor that stands or the
+    object of the subject's verb ("the ego follows a lorry at 80 km/h" is the ego's speed)."""
+    for who, role in reversed(named):
+        if who == "ego" and role != "subject":
+            continue
+        if m.slot == "speed" and isinstance(who, _Actor) and (who.stationary or role == "verb"):
+            continue
+        return who
+    return None
+
+
+def _global(r, m) -> None:
+    if m.slot == "map":
+        if not (r.map_kind and m.value == "straight"):
+            r.map_kind = m.value
+    elif m.slot == "weather":
+        if not (r.weather == "heavy_rain" and m.value == "rain"):
+            r.weather = m.value
+    elif m.slot == "time":
+        r.time = m.value
+    elif m.slot == "density":
+        r.density = m.value
+    elif m.slot == "lanes":
+        r.lanes = int(m.value)
+    elif m.slot == "intent":
+        r.intent = m.value if r.intent in (None, "safe") or m.value != "safe" else r.intent
+
+
+def _apply(m, who, r, link, added) -> None:
+    """Put mention ``m`` on ``who`` (the ego, or an actor and the actors named with it)."""
+    targets = who.group if isinstance(who, _Actor) and who.group else [who]
+    for a in targets:
+        if a == "ego":
+            if m.slot == "speed":
+                r.ego_speed_mps = m.value
+            elif m.slot in ("turn", "ego_verb") and m.value:
+                r.ego_route = m.value
+            elif m.slot == "behaviour" and m.value[0] == "keep_going" and "straight" in m.words:
+                r.ego_route = "straight"
+            elif m.slot == "behaviour" and m.value[0] == "forced_turn":
+                r.ego_route = m.value[1].get("turn", "right")
+            elif m.slot in ("side", "lane_side"):
+                r.ego_relation = m.value
+            continue
+        if m.slot == "behaviour":
+            name, cfg = m.value
+            if a.behaviours and a.behaviours[-1][0] == name and name != "change_speed":
+                continue  # ("brakes ... and stops": said twice over)
+            a.behaviours.append((name, dict(cfg, _words=m.words), None, link if not added else "sequence"))
+            added.append((a, len(a.behaviours) - 1))
+        elif m.slot == "turn":
+            a.behaviours.append(("forced_turn", {"turn": m.value, "_words": m.words}, None, link))
+            added.append((a, len(a.behaviours) - 1))
+        elif m.slot == "ego_verb" and m.value in ("left", "right"):  # "an oncoming car turns left"
+            a.behaviours.append(("forced_turn", {"turn": m.value, "_words": m.words}, None, link))
+            added.append((a, len(a.behaviours) - 1))
+        elif m.slot == "ego_verb":  # a motion verb said of an actor: it goes on
+            if not a.behaviours:
+                a.behaviours.append(("keep_going", {"_words": m.words}, None, link))
+                added.append((a, len(a.behaviours) - 1))
+        elif m.slot == "unknown_verb":
+            a.unknown.append(m.words)
+        elif m.slot == "speed":
+            a.speed_mps = m.value
+        elif m.slot == "speed_word":
+            a.speed_mps = -float(m.value) if a.speed_mps is None else a.speed_mps
+        elif m.slot == "distance":
+            a.distance_m = m.value
+        elif m.slot == "relation":
+            if a.relation is None or m.value == "oncoming":
+                a.relation = m.value
+        elif m.slot == "side":
+            a.side = a.side or m.value
+        elif m.slot == "lane_side":
+            a.lane_side = m.value
+        elif m.slot == "kerb":
+            a.kerb = True
+        elif m.slot == "kerb_side":
+            a.kerb, a.kerb_side = True, m.value
+        elif m.slot == "arm":
+            a.arm = True
+        elif m.slot == "stationary":
+            a.stationary = True
