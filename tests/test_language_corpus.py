@@ -4,16 +4,22 @@ the text says (checked on three seeds each); every refusal names the words it co
 
 from __future__ import annotations
 
+import pytest
+
 from conftest import ROOT
 from vei_scenario.language.corpus_check import check_corpus, load_corpus
 from vei_scenario.language.rules_backend import layers_from_text
 
 CORPUS = ROOT / "tests" / "data" / "language_corpus.json"
+#: 28 more, written after the reader was rebuilt and measured before anything was changed for them
+#: (first measurement: 20 faithful, 71 %; see the README).
+HELD_OUT = ROOT / "tests" / "data" / "language_heldout.json"
 
 
-def test_at_least_nine_in_ten_descriptions_are_understood_and_faithful():
-    results = check_corpus(load_corpus(CORPUS), layers_from_text)
-    assert len(results) >= 120
+@pytest.mark.parametrize("corpus", [CORPUS, HELD_OUT], ids=["corpus", "held-out"])
+def test_at_least_nine_in_ten_descriptions_are_understood_and_faithful(corpus):
+    results = check_corpus(load_corpus(corpus), layers_from_text)
+    assert len(results) >= (120 if corpus == CORPUS else 25)
     faithful = [r for r in results if r.faithful]
     failing = "\n".join(f"{r.text}: {r.problems}" for r in results if not r.faithful)
     assert len(faithful) >= 0.9 * len(results), failing
@@ -32,3 +38,18 @@ def test_a_case_that_is_not_met_is_reported_with_its_reasons():
     [r] = check_corpus([case], layers_from_text, seeds=(0,))
     assert r.understood and not r.faithful
     assert any("ego speed" in p for p in r.problems) and any("type car (expected truck)" in p for p in r.problems)
+
+
+def test_every_description_gives_a_scenario_that_can_be_written():
+    """Whatever the reading, the layers place every actor on the map: no description of the corpus
+    ends in a placement error (seed 0 of each; the files are not kept)."""
+    from vei_scenario.language.scenario_writer import write_scenario
+
+    failures = []
+    for corpus in (CORPUS, HELD_OUT):
+        for case in load_corpus(corpus):
+            try:
+                write_scenario(layers_from_text(case["text"], 0), "scenario")
+            except ValueError as exc:
+                failures.append(f"{case['text']}: {exc}")
+    assert not failures, "\n".join(failures)

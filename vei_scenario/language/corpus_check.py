@@ -59,7 +59,10 @@ def _actor_problems(adv: dict, want: dict) -> list[str]:
     elif not names or not set(names) <= set(allowed):
         out.append(f"behaviours {names} (expected among {allowed})")
     relation = adv["spawn"].get("relation")
-    if "relation" in want and relation not in want["relation"]:
+    accepted = set(want.get("relation", ()))
+    if "oncoming" in accepted:  # at a junction what comes towards the ego starts on the opposite arm
+        accepted.add("junction_opposite")
+    if "relation" in want and relation not in accepted:
         out.append(f"relation {relation} (expected {' or '.join(want['relation'])})")
     if "speed_kph" in want:  # its speed, or the speed it crosses at
         speeds = [float(adv["speed_mps"])] + [

@@ -29,6 +29,11 @@ ACTOR_NOUNS = {
         "guy",
         "lady",
         "student",
+        "schoolboy",
+        "schoolgirl",
+        "pupil",
+        "teenager",
+        "toddler",
     ),
     "bicycle": ("bicycle", "bike", "cyclist", "bicyclist", "biker", "kid on a bike", "cargo bike"),
     "e-scooter": (
@@ -121,6 +126,13 @@ BEHAVIOUR_VERBS = {
         "cut across the road",
         "cross the street",
         "emerge",
+        "sprint across",
+        "pop out",
+        "run into the road",
+        "walk into the road",
+        "step into the road",
+        "cross over",
+        "cross to",
     ),
     "cut_in": (
         "cut in",
@@ -179,6 +191,11 @@ BEHAVIOUR_VERBS = {
         "fall",
         "fall off",
         "crash",
+        "emergency stop",
+        "perform an emergency stop",
+        "do an emergency stop",
+        "lose grip",
+        "lose control",
     ),
     "stop": ("stop", "halt", "come to a stop", "come to a halt", "stand still", "pull up", "stop at"),
     "follow_vehicle": (
@@ -312,7 +329,16 @@ KERB = (
     "driveway",
 )
 NEARSIDE = ("nearside", "near side", "near-side")
-FARSIDE = ("farside", "far side", "far-side", "opposite kerb", "other side")
+FARSIDE = (
+    "farside",
+    "far side",
+    "far-side",
+    "opposite kerb",
+    "other side",
+    "opposite side",
+    "wrong side",
+    "other side of the road",
+)
 #: Where a junction arm is meant ("from the left entrance", "pulls out of a side road").
 JUNCTION_ARM = ("entrance", "side road", "side street", "left road", "right road", "arm", "exit")
 RELATIONS = {
@@ -418,7 +444,6 @@ CRITICALITY = {
         "idiot",
         "at high speed",
         "ttc about",
-        "from behind a parked",
         "bumper",
         "the whole way",
     ),
@@ -495,7 +520,6 @@ MAPS = {
         "junction",
         "crossroad",
         "crossroads",
-        "pedestrian crossing",
         "traffic light",
         "traffic lights",
         "signalised",

@@ -87,7 +87,10 @@ def _entries() -> dict[tuple[str, ...], tuple[str, object]]:
     for rel, words in L.RELATIONS.items():
         put(words, "relation", rel)
     for phrase, rel in V.RELATIONS.items():
-        put([phrase], "relation", rel, overwrite=False)
+        if rel.startswith("roadside"):  # "from the pavement": a kerb, its side said elsewhere or the near one
+            put([phrase], "kerb_side" if "left" in phrase else "kerb", "left" if "left" in phrase else None, False)
+        else:
+            put([phrase], "relation", rel, overwrite=False)
     put(L.STATIONARY, "stationary", None)
     for cls, words in L.CRITICALITY.items():
         put(words, "criticality", cls)
@@ -323,6 +326,10 @@ VERB_CRITICALITY = {
     ("ride", "my", "bumper"): "dangerous",
     ("ride", "our", "bumper"): "dangerous",
     ("ride", "bumper"): "dangerous",
+    ("brake", "gently"): "safe",
+    ("ease", "off"): "safe",
+    ("sprint", "across"): "dangerous",
+    ("pop", "out"): "dangerous",
 }
 _POSITIONAL = ("relation", "side", "lane_side", "kerb", "kerb_side", "arm", "stationary")
 _VERBS = ("behaviour", "turn", "unknown_verb", "ego_verb", "speed_word")
@@ -338,9 +345,8 @@ def _drop_label(clauses):
     colon = next((k for k, m in enumerate(mentions) if m.slot == "punct" and m.value == ":"), None)
     if colon is None or any(m.slot in ("member", "pronoun") for m in mentions[colon:]):
         return clauses
-    head = [
-        m for m in mentions[:colon] if m.slot not in ("actor", "behaviour", "relation", "side", "count") + _POSITIONAL
-    ]
+    dropped = ("actor", "behaviour", "relation", "side", "count", "unknown_verb") + _POSITIONAL
+    head = [m for m in mentions[:colon] if m.slot not in dropped]
     return [(link, head + mentions[colon + 1 :])] + clauses[1:]
 
 
@@ -348,25 +354,29 @@ def _resolve_relation(a: _Actor, map_kind: str | None) -> str | None:
     """The spawn relation of an actor from what was said about where it is and what it does first."""
     first = a.behaviours[0][0] if a.behaviours else None
     junction = map_kind in ("crossroad", "roundabout")
+    vehicle = a.kind in ("car", "van", "truck")
     side = a.kerb_side or a.lane_side or a.side or (a.relation if a.relation in ("left", "right") else None)
+    if first == "cross_in_front" and not vehicle:  # a crossing starts at a kerb (at a junction too)
+        if side is None and a.relation and a.relation.startswith(("junction", "roadside")):
+            side = a.relation.rsplit("_", 1)[1]
+        return f"roadside_{side if side in ('left', 'right') else 'right'}"
     if a.relation and a.relation.startswith(("junction", "roadside")):
         return a.relation
+    if a.relation == "oncoming" and junction:
+        return "junction_opposite"  # at a junction what comes towards the ego comes from the opposite arm
     if a.relation == "oncoming" or (a.relation == "behind" and not (a.lane_side and first == "cut_in")):
         return a.relation
-    lateral = first in ("cut_in", "overtake", "forced_turn", "follow_vehicle")
-    vehicle = a.kind in ("car", "van", "truck")
+    if vehicle and a.kerb_side == "left" and first != "cross_in_front":
+        return "oncoming"  # a vehicle on the far side of the road drives the other way
     if junction and vehicle and side and (a.arm or a.stationary) and first in ("cut_in", "keep_going", None):
         return f"junction_{side}"  # waiting at the junction on the left, then pulling out
-    if first == "cross_in_front" and a.kind in ("pedestrian", "bicycle", "e-scooter"):
-        if a.arm and junction and a.kind != "pedestrian":
-            return f"junction_{side or 'right'}"
-        return f"roadside_{side or 'right'}"
     if first == "cross_in_front" and junction:
         return f"junction_{side or 'left'}"
     if first == "run_red_light" or (a.arm and junction) or (junction and first in (None, "keep_going") and a.side):
         return f"junction_{side or 'left'}"
-    if a.kerb and a.kind in ("pedestrian", "bicycle", "e-scooter"):
+    if a.kerb and not vehicle:
         return f"roadside_{side or 'right'}"
+    lateral = first in ("cut_in", "overtake", "forced_turn", "follow_vehicle")
     if side and (lateral or a.relation is None or a.lane_side):
         return side
     return a.relation or side
@@ -498,7 +508,10 @@ def read(text: str):
                 if target is None:
                     target = subject if not named and subject is not None else None
                 if target is None:
-                    if m.slot != "unknown_verb":
+                    if m.slot == "unknown_verb":  # something does something, and neither is known
+                        if not named and not r.actors:
+                            refuse.append(m.words)
+                    else:
                         pending.append(m)
                     prev = m
                     continue
@@ -528,8 +541,8 @@ def read(text: str):
             refuse.extend(a.unknown)
     if refuse:
         raise NotUnderstood(list(dict.fromkeys(refuse)), text)
-    if r.map_kind is None and r.ego_route in ("left", "right"):
-        r.map_kind = "crossroad"  # the ego turns: there is a junction
+    if r.map_kind is None and (r.ego_route in ("left", "right") or any(a.arm for a in actors)):
+        r.map_kind = "crossroad"  # the ego turns, or someone comes out of a side road: a junction
     junction = r.map_kind in ("crossroad", "roundabout")
     for a in actors:
         if a.merged:
@@ -554,8 +567,7 @@ def read(text: str):
         spec.relation = _resolve_relation(a, r.map_kind)
         if (
             junction
-            and spec.relation
-            and spec.relation.startswith("junction")
+            and spec.relation in ("junction_left", "junction_right")
             and behaviours[:1]
             and (behaviours[0][0] == "keep_going" and not a.stationary)
         ):  # entering the junction from a side road: across the ego's path

@@ -294,8 +294,13 @@ def sample_layers(reading: Reading, text: str, seed: int) -> dict:
         for a in reading.actors
         if a.behaviours
     }
+    to_right = any(
+        b[0] == "change_lane" and float(b[1].get("direction", 1.0)) < 0 for a in reading.actors for b in a.behaviours
+    )
+    if (("right" in relations and "left" not in relations) or to_right) and reading.lanes is None:
+        lanes = max(lanes, 2)  # (someone on the ego's right, or moving over to the right: a lane there)
     ego_lane = 1
-    if reading.ego_relation == "left" or ("right" in relations and "left" not in relations):
+    if reading.ego_relation == "left" or ("right" in relations and "left" not in relations) or to_right:
         ego_lane = min(2, lanes)
     placement = {
         "straight": "straight",
@@ -406,7 +411,10 @@ def place_adversary(
         k = int(ego["lane"])
         cross = (k - 0.5) * 3.5 + 1.0 if relation == "roadside_right" else (2 * lanes - k + 0.5) * 3.5 + 1.0
         trigger = ego_speed * (cross / v + float(cfg.get("arrival_gap_s", 0.5)))
-        spawn["longitudinal_m"] = round(trigger + 15.0 + lengths / 2, 3)
+        lon = trigger + 15.0 + lengths / 2
+        if "distance_m" in ego:  # before a junction: the crossing lies on the ego's way to it
+            lon = min(lon, float(ego["distance_m"]) - 5.0)
+        spawn["longitudinal_m"] = round(lon, 3)
         out_speed = 0.0
     elif distance_m is not None and relation in ("ahead", "behind", "oncoming") and behaviour_name != "cut_in":
         spawn["longitudinal_m"] = -distance_m if relation == "behind" else distance_m  # as the text says
