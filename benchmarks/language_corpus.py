@@ -5,7 +5,11 @@ Reads ``tests/data/language_corpus.json`` (or ``--corpus FILE``), prints every c
 unfaithful with the reasons, then the figures: understood, faithful (every expectation met on seeds
 0-2), and the words most often refused.
 
-    python benchmarks/language_corpus.py [--corpus FILE] [--quiet]
+    python benchmarks/language_corpus.py [--corpus FILE] [--quiet] [--played]
+
+With ``--played`` every description's scenario (seed 0) is also played, and the trajectories are
+checked for what the layers say each adversary does (a stop ends standing, a cut-in ends ahead in
+the ego's lane, a crossing passes the ego's path ...).
 """
 
 from __future__ import annotations
@@ -23,6 +27,7 @@ def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--corpus", default=str(ROOT / "tests" / "data" / "language_corpus.json"))
     ap.add_argument("--quiet", action="store_true", help="figures only")
+    ap.add_argument("--played", action="store_true", help="also play each scenario and check what happened")
     args = ap.parse_args()
     from vei_scenario.language.corpus_check import check_corpus, load_corpus
     from vei_scenario.language.rules_backend import layers_from_text
@@ -42,6 +47,19 @@ def main() -> int:
         f"({100 * faithful / n:.0f} %)"
     )
     print("most refused words: " + ", ".join(f"{w} ({k})" for w, k in refused_words.most_common(25)))
+    if args.played:
+        import tempfile
+
+        from vei_scenario.language.corpus_check import play_case
+
+        done = 0
+        with tempfile.TemporaryDirectory() as tmp:
+            for case in load_corpus(Path(args.corpus)):
+                problems = play_case(case, layers_from_text, Path(tmp))
+                done += not problems
+                if problems and not args.quiet:
+                    print(f"PLAYED   {case['text']}\n    " + "\n    ".join(problems))
+        print(f"played: {done} of {n} ({100 * done / n:.0f} %) did what their layers say")
     return 0
 
 

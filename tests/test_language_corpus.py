@@ -53,3 +53,13 @@ def test_every_description_gives_a_scenario_that_can_be_written():
             except ValueError as exc:
                 failures.append(f"{case['text']}: {exc}")
     assert not failures, "\n".join(failures)
+
+
+def test_the_played_scenarios_do_what_their_layers_say(tmp_path):
+    """Every fourth description of the corpus, written and played by vei run (seed 0): at least nine
+    in ten adversaries do what their layers say, judged from the trajectories."""
+    from vei_scenario.language.corpus_check import play_case
+
+    cases = load_corpus(CORPUS)[::4]
+    failing = {c["text"]: p for c in cases if (p := play_case(c, layers_from_text, tmp_path))}
+    assert len(failing) <= 0.1 * len(cases), failing

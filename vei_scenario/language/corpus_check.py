@@ -138,3 +138,59 @@ def check_case(case: dict, make_layers, seeds=(0, 1, 2)) -> CaseResult:
 
 def check_corpus(cases: list[dict], make_layers, seeds=(0, 1, 2)) -> list[CaseResult]:
     return [check_case(c, make_layers, seeds) for c in cases]
+
+
+def _ego_frame(result, name: str):
+    """(longitudinal, lateral) of ``name`` in the ego's frame at every step (m)."""
+    import numpy as np
+
+    ego, tr = result.traces[result.ego], result.traces[name]
+    dx, dy = tr.x - ego.x, tr.y - ego.y
+    c, s = np.cos(ego.yaw), np.sin(ego.yaw)
+    return dx * c + dy * s, -dx * s + dy * c
+
+
+def played_problems(result, layers: dict) -> list[str]:
+    """Did each adversary do what its layers say, in the played run? Checked from the trajectories:
+    a stop ends standing, an overtake ends ahead of the ego, a cut-in ends ahead in the ego's lane,
+    a crossing passes the ego's path, a red-light run comes within 3 m of the ego's path."""
+    import numpy as np
+
+    out = []
+    ego = result.traces[result.ego]
+    for adv in layers["adversaries"]:
+        name = adv["name"]
+        if name not in result.traces:
+            out.append(f"{name}: not in the run")
+            continue
+        tr = result.traces[name]
+        lon, lat = _ego_frame(result, name)
+        names = [n["behaviour"] for _, n in behaviour_nodes(adv["behaviour"])]
+        last = names[-1]
+        if last in ("sudden_stop", "stop") and abs(float(tr.speed[-1])) > 0.5:
+            out.append(f"{name}: {last} but still at {float(tr.speed[-1]):.1f} m/s at the end")
+        if "overtake" in names and not (lon > 0).any():
+            out.append(f"{name}: overtake but never ahead of the ego")
+        if "cut_in" in names and not ((lon > 0) & (np.abs(lat) < 1.2)).any():
+            out.append(f"{name}: cut_in but never ahead in the ego's lane")
+        if "cross_in_front" in names and not (np.sign(lat[lon > -2.0]) != np.sign(lat[0])).any():
+            out.append(f"{name}: cross_in_front but never across the ego's path")
+        if "run_red_light" in names:
+            d = np.hypot(tr.x[:, None] - ego.x[None, :], tr.y[:, None] - ego.y[None, :]).min()
+            if d > 3.0:
+                out.append(f"{name}: run_red_light but never within 3 m of the ego's path ({d:.1f} m)")
+    return out
+
+
+def play_case(case: dict, make_layers, workdir: Path, seed: int = 0, rate_hz: float = 20.0) -> list[str]:
+    """Write the scenario of ``case`` (seed ``seed``), play it with ``vei run``'s interpreter, and
+    return what its adversaries did not do (:func:`played_problems`)."""
+    from vei_scenario.interpreter import run_scenario
+    from vei_scenario.language.scenario_writer import write_scenario
+
+    layers = make_layers(case["text"], seed)
+    written = write_scenario(layers, "scenario")
+    (workdir / "scenario.xosc").write_bytes(written.xosc)
+    (workdir / "scenario.xodr").write_bytes(written.xodr)
+    result = run_scenario(workdir / "scenario.xosc", None, round(1.0 / rate_hz, 6))
+    return played_problems(result, layers)

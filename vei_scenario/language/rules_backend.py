@@ -361,7 +361,10 @@ def sample_layers(reading: Reading, text: str, seed: int) -> dict:
         "description": text,
         "seed": seed,
         "intent": intent,
-        "duration_s": 15.0,
+        "duration_s": max(
+            MIN_DURATION_S,
+            min(120.0, round(max((topology_time_s(a["behaviour"], ego_speed) for a in adversaries), default=0) + 5, 1)),
+        ),
         "rate_hz": 20.0,
         "environment": {
             "map": {"kind": kind, "lanes_per_direction": lanes}
@@ -376,6 +379,42 @@ def sample_layers(reading: Reading, text: str, seed: int) -> dict:
     }
     layers["background"]["vehicles"] = background(rng, layers)
     return layers
+
+
+#: The run lasts at least this long (the paper's 15 s), longer when the behaviours need it.
+MIN_DURATION_S = 15.0
+
+
+def behaviour_time_s(name: str, cfg: dict, ego_speed: float) -> float:
+    """About how long behaviour ``name`` with ``cfg`` takes to play out, from its own parameters: the
+    waits, lane changes, closing and braking it is made of (the run is made long enough for every
+    stated behaviour to happen)."""
+    mod = BEHAVIOURS[name]
+
+    def v(key: str) -> float:
+        return float(cfg.get(key, mod.PARAMETERS[key].default)) if key in mod.PARAMETERS else 0.0
+
+    if name == "overtake":  # catch up from behind, pass, and cut back in ahead
+        return v("delay_s") + 2 * v("lane_change_s") + (25.0 + v("gap_m")) / max(v("speed_gain_mps"), 0.5)
+    if name in ("cut_in", "forced_turn"):
+        return v("lead_s") + v("lane_change_s") + 3.0
+    if name in ("sudden_stop", "stop"):
+        return v("delay_s") + ego_speed / max(v("decel_mps2"), 0.5) + 2.0
+    if name == "change_speed":
+        return v("delay_s") + abs(v("speed_delta_mps")) / max(v("rate_mps2"), 0.2) + 1.0
+    if name == "change_lane":
+        return v("delay_s") + v("lane_change_s") + 1.0
+    if name in ("follow_vehicle", "keep_going", "keep_lane"):
+        return v("hold_s") or 4.0
+    return 8.0  # (crossings and red-light runs are timed to meet the ego within a few seconds)
+
+
+def topology_time_s(node: dict, ego_speed: float) -> float:
+    """Time of a behaviour topology: a sequence adds up, a parallel group takes its longest."""
+    if "behaviour" in node:
+        return behaviour_time_s(node["behaviour"], node.get("config", {}), ego_speed)
+    times = [topology_time_s(child, ego_speed) for child in node.get("sequence", node.get("parallel", []))]
+    return (sum(times) if "sequence" in node else max(times, default=0.0)) if times else 0.0
 
 
 def _default_speed(kind: str, relation: str, ego_speed: float) -> float:

@@ -241,7 +241,7 @@ def write_scenario(layers: dict, stem: str) -> WrittenScenario:
     others = [a["name"] for a in layers["adversaries"]] + [
         f"Background{k + 1}" for k in range(len(layers["background"]["vehicles"]))
     ]
-    if ego.get("agent", "cap") == "cap":
+    if ego.get("agent", "cap") == "cap" and others:  # (alone on the road it simply drives on)
         props: dict[str, object] = {"enabled": "true", "cruiseSpeed": ego_speed, "followTimeGap": EGO_TIME_GAP_S}
         if layers["adversaries"]:
             props["threatEntity"] = layers["adversaries"][0]["name"]
@@ -286,6 +286,7 @@ def write_scenario(layers: dict, stem: str) -> WrittenScenario:
             map_kind=info.kind,
             exits=info.exits,
             junction_end_s_m=info.feature_s_m,
+            actor_max_accel_mps2=TYPES[kind][4],
         )
         controller = None
         if adv["spawn"]["relation"].startswith("roadside"):

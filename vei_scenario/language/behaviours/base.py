@@ -77,6 +77,8 @@ class ActorContext:
     crossing_path: list[tuple[float, float, float]] | None = None
     crossing_distance_m: float | None = None
     trajectories: dict[str, xosc.Trajectory] = field(default_factory=dict)
+    #: The actor's Performance maxAcceleration: a speed it is told to reach takes at least v / a.
+    actor_max_accel_mps2: float = 0.0
 
     def max_decel(self, wanted: float) -> float:
         """``wanted`` bounded by what the road's friction allows."""

@@ -22,6 +22,8 @@ PARAMETERS = {
         0.5, -3.0, 6.0, "the ego reaches the crossing this long after the road user reaches its lane (s)"
     ),
 }
+#: Time it is given to reach its crossing speed from standing (s).
+START_RAMP_S = 0.5
 PROFILES = {
     "dangerous": {"arrival_gap_s": (-0.2, 0.3)},
     "moderate": {"arrival_gap_s": (1.2, 1.8)},
@@ -32,7 +34,10 @@ PROFILES = {
 def trigger_distance_m(ctx: ActorContext, cfg: dict) -> float:
     """Free-space distance of the ego at which the road user sets off."""
     v = value(cfg, PARAMETERS, "crossing_speed_mps")
-    t_reach = (ctx.crossing_distance_m or 0.0) / v
+    # it sets off from standing: reaching v takes v / a (a the start ramp or its Performance limit),
+    # in which it covers half the distance it would at v
+    ramp = max(START_RAMP_S, v / ctx.actor_max_accel_mps2 if ctx.actor_max_accel_mps2 > 0 else 0.0)
+    t_reach = (ctx.crossing_distance_m or 0.0) / v + ramp / 2
     return max(1.0, ctx.ego_speed_mps * (t_reach + value(cfg, PARAMETERS, "arrival_gap_s")))
 
 
@@ -48,7 +53,7 @@ def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
     ctx.trajectories[traj.name] = traj
     follow = xosc.FollowTrajectoryAction(traj, xosc.FollowingMode.position)
     v = value(cfg, PARAMETERS, "crossing_speed_mps")
-    actions = [follow, speed_action(v, time=0.5)]
+    actions = [follow, speed_action(v, time=START_RAMP_S)]
     if cfg.get("agent") == "sfm" and ctx.actor_type in ("e-scooter", "bicycle"):
         actions.append(xosc.ActivateControllerAction(lateral=True, longitudinal=True))
     return [Step("cross", actions, conditions=[Condition("ego_within", round(trigger_distance_m(ctx, cfg), 2))])]
