@@ -608,3 +608,28 @@ def test_activating_the_controller_of_an_entity_with_none_assigned_keeps_the_def
     )
     b = run_scenario(_scenario(tmp_path, _car("B"), init, "", stop_s=2.0)).traces["B"]
     assert b.x[-1] == pytest.approx(5.0 * b.t[-1], abs=1e-9) and np.allclose(b.y, 0.0)
+
+
+def test_the_ncap_turning_case_brings_the_pedestrian_to_its_target_with_the_ego():
+    """NCAP CPTAfo (the ego turns through a junction while a pedestrian is synchronised to it): when
+    the ego is at its target position, the pedestrian is at its own (the SynchronizeAction's goal;
+    esmini 3.6 leaves it 0.66 m short, see the README)."""
+    from vei_scenario.conformance.ncap import values_of
+    from vei_scenario.interpreter.document import load_scenario
+    from vei_scenario.interpreter.engine import Simulation
+    from vei_scenario.interpreter.positions import resolve
+
+    v = ROOT.parent / "shared/osc-ncap/OpenSCENARIO/NCAP/AEB_VRU_2023/Variations/NCAP_AEB_VRU_CPTAfo-50_10kph_2023.xosc"
+    if not v.is_file():
+        pytest.skip("the Euro NCAP pack is not beside the checkout")
+    base, values = values_of(v)
+    doc = load_scenario(base, values)
+    sync = next(doc.root.iter("SynchronizeAction"))
+    sim = Simulation(doc, 0.01)
+    res = sim.run()
+    master = resolve(sim.ctx, sync.find("TargetPositionMaster"))
+    target = resolve(sim.ctx, sync.find("TargetPosition"))
+    ego, vru = res.traces["Ego"], res.traces["VRU"]
+    k = int(np.argmin(np.hypot(ego.x - master.x, ego.y - master.y)))
+    assert math.hypot(ego.x[k] - master.x, ego.y[k] - master.y) < 0.1
+    assert math.hypot(vru.x[k] - target.x, vru.y[k] - target.y) < 0.05
