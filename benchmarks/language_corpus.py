@@ -5,7 +5,7 @@ Reads ``tests/data/language_corpus.json`` (or ``--corpus FILE``), prints every c
 unfaithful with the reasons, then the figures: understood, faithful (every expectation met on seeds
 0-2), and the words most often refused.
 
-    python benchmarks/language_corpus.py [--corpus FILE] [--quiet] [--played]
+    python benchmarks/language_corpus.py [--corpus FILE] [--quiet] [--played] [--backend local] [--limit N]
 
 With ``--played`` every description's scenario (seed 0) is also played, and the trajectories are
 checked for what the layers say each adversary does (a stop ends standing, a cut-in ends ahead in
@@ -28,11 +28,18 @@ def main() -> int:
     ap.add_argument("--corpus", default=str(ROOT / "tests" / "data" / "language_corpus.json"))
     ap.add_argument("--quiet", action="store_true", help="figures only")
     ap.add_argument("--played", action="store_true", help="also play each scenario and check what happened")
+    ap.add_argument("--backend", choices=("rules", "local"), default="rules", help="local: the GGUF model")
+    ap.add_argument("--limit", type=int, default=0, help="only the first N descriptions")
     args = ap.parse_args()
     from vei_scenario.language.corpus_check import check_corpus, load_corpus
     from vei_scenario.language.rules_backend import layers_from_text
 
-    results = check_corpus(load_corpus(Path(args.corpus)), layers_from_text)
+    make = layers_from_text
+    if args.backend == "local":
+        from vei_scenario.language.local_llm import layers_from_local_model as make
+    cases = load_corpus(Path(args.corpus))
+    cases = cases[: args.limit] if args.limit else cases
+    results = check_corpus(cases, make, seeds=(0,) if args.backend == "local" else (0, 1, 2))
     refused_words: collections.Counter = collections.Counter()
     for r in results:
         if not r.understood:
@@ -54,8 +61,8 @@ def main() -> int:
 
         done = 0
         with tempfile.TemporaryDirectory() as tmp:
-            for case in load_corpus(Path(args.corpus)):
-                problems = play_case(case, layers_from_text, Path(tmp))
+            for case in cases:
+                problems = play_case(case, make, Path(tmp))
                 done += not problems
                 if problems and not args.quiet:
                     print(f"PLAYED   {case['text']}\n    " + "\n    ".join(problems))

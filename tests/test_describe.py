@@ -229,3 +229,20 @@ def test_esmini_plays_what_has_no_custom_controller(name, tmp_path, esmini):
     assert {e.entity for e in c.entities} == {"Ego", "Adversary1"}
     assert max(e.max_deviation_m for e in c.entities) < 0.25, c.entities
     assert [x[1:] for x in c.vei_collisions] == [x[1:] for x in c.esmini_collisions]
+
+
+def test_a_scenario_that_cannot_be_placed_is_a_row_with_its_reason(tmp_path):
+    """One scenario of a batch asks for a lane the road lacks: it becomes a row with the reason, the
+    others are written and scored, the batch goes on."""
+    good = layers_from_text(DESCRIPTIONS["Moderate"], 1)
+    bad = json.loads(json.dumps(good))
+    bad["ego"]["lane"] = 2  # the lane next to the centre line: no lane left of the ego for the cut-in
+    records, doc = describe_batch(lambda i: [good, bad][i], 2, tmp_path / "b", "mixed", "layers", 0, jobs=1)
+    assert [r.ok for r in records] == [True, False]
+    assert "no lane left of the ego" in records[1].error
+    assert doc["summary"]["failed"] == 1 and doc["summary"]["scenarios"] == 1
+    rows = (tmp_path / "b" / "batch.csv").read_text().splitlines()
+    assert rows[0].endswith(",error") and "no lane left of the ego" in rows[2]
+    assert (tmp_path / "b" / "scenario_000" / "scenario.xosc").is_file()
+    assert (tmp_path / "b" / "scenario_001" / "layers.json").is_file()
+    assert not (tmp_path / "b" / "scenario_001" / "scenario.xosc").exists()

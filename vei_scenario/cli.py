@@ -671,9 +671,15 @@ def build_parser() -> argparse.ArgumentParser:
         "--count", type=_number(1, 10_000, integer=True), default=32, help="scenarios to generate (default 32)"
     )
     d.add_argument("--seed", type=SEED, default=0, help="seed of the sampling (default 0); scenario i uses seed*1000+i")
-    d.add_argument("--backend", choices=("rules", "llm"), default="rules", help="rules (offline, default) or llm")
+    d.add_argument(
+        "--backend",
+        choices=("rules", "llm", "local"),
+        default="rules",
+        help="rules (offline, default), llm (an OpenAI-compatible endpoint) or local (a GGUF model through "
+        "llama-cpp-python: pip install vei-scenario[llm-local])",
+    )
     d.add_argument("--llm-url", help="OpenAI-compatible endpoint base URL (or VEI_LLM_URL)")
-    d.add_argument("--llm-model", help="model name (or VEI_LLM_MODEL)")
+    d.add_argument("--llm-model", help="model name (or VEI_LLM_MODEL); with --backend local a GGUF file")
     d.add_argument("--refine", action="store_true", help="adjust towards the description's intent, up to 5 runs each")
     d.add_argument("--jobs", type=WORKERS, default=None, help="worker processes (default: the CPU count)")
     d.add_argument("--layers-only", action="store_true", help="write the layers JSON of each scenario, run nothing")

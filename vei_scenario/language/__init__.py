@@ -36,6 +36,14 @@ def describe_command(args) -> int:
         def make(i: int) -> dict:
             return fixed
 
+    elif args.backend == "local":
+        from vei_scenario.language.local_llm import layers_from_local_model
+
+        count, text, backend = args.count, args.text, "local"
+
+        def make(i: int) -> dict:
+            return layers_from_local_model(text, args.seed * 1000 + i, args.llm_model)
+
     elif args.backend == "llm":
         from vei_scenario.language.llm_backend import layers_from_llm
 
@@ -79,10 +87,13 @@ def describe_command(args) -> int:
         raise VeiInputError(args.layers, "layers", str(exc).strip("'\"")) from None
     s = doc["summary"]
     act = "none" if s["mean_min_act_s"] is None else f"{s['mean_min_act_s']} s"
+    rate = "–" if s["crash_rate"] is None else f"{100 * s['crash_rate']:.1f} %"
     print(
-        f"{s['scenarios']} scenario(s): crash rate {100 * s['crash_rate']:.1f} % ({s['crashes']}), mean min ACT {act}, "
+        f"{s['scenarios']} scenario(s): crash rate {rate} ({s['crashes']}), mean min ACT {act}, "
         f"mean comfort {s['mean_comfort']}, mean max EI {s['mean_max_ei_mps']} m/s; intent met {s['intent_met']}"
         + (f" after {s['episodes_run']} runs" if args.refine else "")
     )
+    if s["failed"]:
+        print(f"{s['failed']} scenario(s) could not be written: their reasons are in batch.csv (error)")
     print(f"wrote {out / 'batch.csv'}, {out / 'batch.json'}, {out / 'summary.html'} and {count} scenario folder(s)")
     return 0

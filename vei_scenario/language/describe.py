@@ -36,6 +36,13 @@ class ScenarioRecord:
     files: dict[str, bytes]
     outcome: dict
     episodes: list[dict]
+    #: Why the scenario could not be written (its layers ask for what the map cannot hold); a row of
+    #: the batch with this reason, not the end of the batch.
+    error: str | None = None
+
+    @property
+    def ok(self) -> bool:
+        return self.error is None
 
 
 def run_one(layers: dict, index: int, refine: bool) -> ScenarioRecord:
@@ -45,7 +52,13 @@ def run_one(layers: dict, index: int, refine: bool) -> ScenarioRecord:
     intent = layers.get("intent", "unspecified")
     with tempfile.TemporaryDirectory(prefix="vei-describe-") as tmp:
         for episode in range(MAX_EPISODES if refine else 1):
-            written = write_scenario(layers, SCENARIO_STEM)
+            try:
+                written = write_scenario(layers, SCENARIO_STEM)
+            except ValueError as exc:  # (PlacementError too): this scenario fails, the batch goes on
+                if episode == 0:
+                    text = (json_text(layers, indent=2, sort_keys=False) + "\n").encode()
+                    return ScenarioRecord(index, layers, {"layers.json": text}, {}, [], f"{type(exc).__name__}: {exc}")
+                break  # (a refinement step that cannot be placed: the last episode that could stands)
             xosc = Path(tmp) / f"{SCENARIO_STEM}.xosc"
             (Path(tmp) / f"{SCENARIO_STEM}.xodr").write_bytes(written.xodr)
             xosc.write_bytes(written.xosc)
@@ -98,6 +111,8 @@ def _guarded_work(args) -> tuple[str, object]:
 
 
 def batch_summary(records: list[ScenarioRecord]) -> dict:
+    failed = [r for r in records if not r.ok]
+    records = [r for r in records if r.ok]
     n = len(records)
     acts = [r.outcome["act_min_s"] for r in records if r.outcome["act_min_s"] is not None]
     comforts = [r.outcome["comfort"] for r in records if r.outcome["comfort"] is not None]
@@ -112,6 +127,7 @@ def batch_summary(records: list[ScenarioRecord]) -> dict:
         "mean_max_ei_mps": round(sum(eis) / len(eis), 4) if eis else None,
         "intent_met": sum(r.episodes[-1]["intent_met"] for r in records),
         "episodes_run": sum(len(r.episodes) for r in records),
+        "failed": len(failed),
     }
 
 
@@ -131,11 +147,14 @@ COLUMNS = [
     "comfort",
     "episodes",
     "intent_met",
+    "error",
 ]
 
 
 def _row(r: ScenarioRecord) -> dict:
     o, lay = r.outcome, r.layers
+    if not r.ok:
+        o = {"collided_with": [], "ego_collided": None}
 
     def names(topology: dict) -> list[str]:
         return [node["behaviour"] for _, node in behaviour_nodes(topology)]
@@ -149,13 +168,14 @@ def _row(r: ScenarioRecord) -> dict:
         "behaviours": " ".join(f"{a['name']}:{'+'.join(names(a['behaviour']))}" for a in lay["adversaries"]),
         "ego_collided": o["ego_collided"],
         "collided_with": " ".join(o["collided_with"]),
-        "act_min_s": o["act_min_s"],
-        "ei_max_mps": o["ei_max_mps"],
-        "min_ttc_s": o["min_ttc_s"],
-        "alert_time_s": o["alert_time_s"],
-        "comfort": o["comfort"],
+        "act_min_s": o.get("act_min_s"),
+        "ei_max_mps": o.get("ei_max_mps"),
+        "min_ttc_s": o.get("min_ttc_s"),
+        "alert_time_s": o.get("alert_time_s"),
+        "comfort": o.get("comfort"),
         "episodes": len(r.episodes),
-        "intent_met": r.episodes[-1]["intent_met"],
+        "intent_met": r.episodes[-1]["intent_met"] if r.episodes else None,
+        "error": r.error,
     }
 
 
@@ -175,7 +195,9 @@ def batch_document(description: str, backend: str, seed: int, refine: bool, reco
         "seed": seed,
         "refine": refine,
         "summary": batch_summary(records),
-        "scenarios": [{**_row(r), "collisions": r.outcome["collisions"], "episodes": r.episodes} for r in records],
+        "scenarios": [
+            {**_row(r), "collisions": r.outcome.get("collisions", []), "episodes": r.episodes} for r in records
+        ],
     }
 
 

@@ -49,7 +49,7 @@ def summary_html(doc: dict) -> str:
             _cell(r["min_ttc_s"]),
             _cell(r["comfort"]),
             _cell(len(r["episodes"])),
-            _cell(r["intent_met"]),
+            _cell(r["intent_met"] if not r.get("error") else f"not written: {r['error']}"),
         ]
         rows.append(f"<tr{cls}>" + "".join(f"<td>{c}</td>" for c in cells) + "</tr>")
     return f"""<!DOCTYPE html>

@@ -310,6 +310,7 @@ def sample_layers(reading: Reading, text: str, seed: int) -> dict:
     }[kind]
     lo, hi = {"straight": (13.0, 17.0), "curve": (11.0, 15.0)}.get(kind, (10.0, 13.0))
     ego_speed = reading.ego_speed_mps if reading.ego_speed_mps is not None else _u(rng, lo, hi)
+    ego_speed = min(max(ego_speed, 0.0), MAX_SPEED_MPS)
     weather = reading.weather or rng.choice(["clear", "clear", "cloudy"])
     time = reading.time or f"{rng.randint(7, 18):02d}:{rng.choice([0, 15, 30, 45]):02d}"
     density = reading.density or rng.choice(["none", "light"])
@@ -353,6 +354,7 @@ def sample_layers(reading: Reading, text: str, seed: int) -> dict:
         spawn, speed = place_adversary(
             spec.kind, relation, first.NAME, first_cfg, ego, lanes, given_speed, spec.distance_m
         )
+        speed = min(max(speed, 0.0), MAX_SPEED_MPS)  # (within what the layers hold)
         adversaries.append(
             {"name": name, "type": spec.kind, "spawn": spawn, "speed_mps": round(speed, 3), "behaviour": topology}
         )
@@ -381,6 +383,8 @@ def sample_layers(reading: Reading, text: str, seed: int) -> dict:
     return layers
 
 
+#: The fastest speed the layers hold (m/s).
+MAX_SPEED_MPS = 45.0
 #: The run lasts at least this long (the paper's 15 s), longer when the behaviours need it.
 MIN_DURATION_S = 15.0
 
