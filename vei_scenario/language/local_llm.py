@@ -107,7 +107,11 @@ def _llama(path: str):
         raise VeiInputError(
             None, "--backend local", "needs llama-cpp-python: pip install vei-scenario[llm-local]"
         ) from None
-    return Llama(model_path=path, n_ctx=CONTEXT_TOKENS, verbose=False, seed=0)
+    import atexit
+
+    model = Llama(model_path=path, n_ctx=CONTEXT_TOKENS, verbose=False, seed=0)
+    atexit.register(model.close)  # (closed while the interpreter is whole: no noise at exit)
+    return model
 
 
 def read_with_model(text: str, seed: int, model: str | None = None):
