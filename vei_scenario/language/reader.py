@@ -51,6 +51,8 @@ def _pos(word: str) -> set[str]:
 
 
 def _entries() -> dict[tuple[str, ...], tuple[str, object]]:
+    """The phrase table: the lexicon's groups in order (a later group wins a phrase both name), then
+    the vocabulary's phrases where the lexicon has none."""
     table: dict[tuple[str, ...], tuple[str, object]] = {}
 
     def put(phrases, slot, value, overwrite=True):
@@ -63,65 +65,58 @@ def _entries() -> dict[tuple[str, ...], tuple[str, object]]:
     for kind, words in L.ACTOR_NOUNS.items():
         put(words, "actor", kind)
     put(L.CAR_NOUNS, "actor", "car")
-    for phrase, (k, v) in V.ACTORS.items():
-        put([phrase], "actor", "ego" if k == "ego" else v, overwrite=False)
     put(L.EGO_NOUNS, "actor", "ego")
     put(V.PRONOUNS, "pronoun", None)
     put(L.MEMBERS, "member", None)
     put(L.COUNTS, "count", None)
-    for slot, groups in (("map", L.MAPS), ("weather", L.WEATHER), ("time", L.TIMES), ("density", L.DENSITY)):
-        for value, words in groups.items():
+    grouped = [
+        ("map", L.MAPS),
+        ("weather", L.WEATHER),
+        ("time", L.TIMES),
+        ("density", L.DENSITY),
+        ("lanes", L.LANES),
+        ("side", L.SIDES),
+        ("lane_side", L.LANE_SIDES),
+        ("kerb", [(None, L.KERB)]),
+        ("kerb_side", [("right", L.NEARSIDE), ("left", L.FARSIDE)]),
+        ("arm", [(None, L.JUNCTION_ARM)]),
+        ("relation", L.RELATIONS),
+        ("stationary", [(None, L.STATIONARY)]),
+        ("criticality", L.CRITICALITY),
+        ("intent", L.INTENTS),
+        ("behaviour", [((name, {}), words) for name, words in L.BEHAVIOUR_VERBS.items()]),
+        ("behaviour", [(("change_speed", {"speed_delta_mps": d}), w) for d, w in L.SPEED_CHANGE_VERBS.items()]),
+        ("behaviour", [(("run_red_light", {}), L.RED_LIGHT)]),
+        ("turn", L.TURNS),
+    ]
+    for slot, groups in grouped:
+        for value, words in groups.items() if isinstance(groups, dict) else groups:
             put(words, slot, value)
-    for n, words in L.LANES.items():
-        put(words, "lanes", n)
-    for phrase, value in V.LANE_COUNTS.items():
-        put([phrase], "lanes", value, overwrite=False)
-    for side, words in L.SIDES.items():
-        put(words, "side", side)
-    for side, words in L.LANE_SIDES.items():
-        put(words, "lane_side", side)
-    put(L.KERB, "kerb", None)
-    put(L.NEARSIDE, "kerb_side", "right")
-    put(L.FARSIDE, "kerb_side", "left")
-    put(L.JUNCTION_ARM, "arm", None)
-    for rel, words in L.RELATIONS.items():
-        put(words, "relation", rel)
+    put(L.SEQUENCE, "sequence", None)
+    put(L.PARALLEL, "parallel", None)
+    # the vocabulary's phrases, where the lexicon has none
+    for phrase, (k, v) in V.ACTORS.items():
+        put([phrase], "actor", "ego" if k == "ego" else v, overwrite=False)
     for phrase, rel in V.RELATIONS.items():
         if rel.startswith("roadside"):  # "from the pavement": a kerb, its side said elsewhere or the near one
             put([phrase], "kerb_side" if "left" in phrase else "kerb", "left" if "left" in phrase else None, False)
         else:
             put([phrase], "relation", rel, overwrite=False)
-    put(L.STATIONARY, "stationary", None)
-    for cls, words in L.CRITICALITY.items():
-        put(words, "criticality", cls)
-    for phrase, cls in V.CRITICALITY.items():
-        put([phrase], "criticality", cls, overwrite=False)
-    for intent, words in L.INTENTS.items():
-        put(words, "intent", intent)
-    for phrase, intent in V.INTENTS.items():
-        put([phrase], "intent", intent, overwrite=False)
-    for name, words in L.BEHAVIOUR_VERBS.items():
-        put(words, "behaviour", (name, {}))
-    for delta, words in L.SPEED_CHANGE_VERBS.items():
-        put(words, "behaviour", ("change_speed", {"speed_delta_mps": delta}))
-    put(L.RED_LIGHT, "behaviour", ("run_red_light", {}))
-    for turn, words in L.TURNS.items():
-        put(words, "turn", turn)
-    for phrase, meaning in V.BEHAVIOURS.items():
-        put([phrase], "behaviour", meaning, overwrite=False)
-    for phrase, factor in V.SPEED_WORDS.items():
-        put([phrase], "speed_word", factor)
-    for phrase, route in V.EGO_VERBS.items():
-        if not phrase.startswith("ego "):  # ("ego turns right": the ego is named on its own)
-            put([phrase], "ego_verb", route, overwrite=False)
+    plain = [
+        ("lanes", V.LANE_COUNTS),
+        ("criticality", V.CRITICALITY),
+        ("intent", V.INTENTS),
+        ("behaviour", V.BEHAVIOURS),
+        ("speed_word", V.SPEED_WORDS),
+        ("ego_verb", {p: r for p, r in V.EGO_VERBS.items() if not p.startswith("ego ")}),  # (the ego on its own)
+        ("sequence", dict.fromkeys(V.SEQUENCE_WORDS)),
+        ("parallel", dict.fromkeys(V.PARALLEL_WORDS)),
+    ]
+    for slot, phrases in plain:
+        for phrase, value in phrases.items():
+            put([phrase], slot, value, overwrite=False)
     for route, words in L.EGO_ROUTES.items():
         put(words, "ego_verb", route, overwrite=False)
-    put(L.SEQUENCE, "sequence", None)
-    put(L.PARALLEL, "parallel", None)
-    for phrase in V.SEQUENCE_WORDS:
-        put([phrase], "sequence", None, overwrite=False)
-    for phrase in V.PARALLEL_WORDS:
-        put([phrase], "parallel", None, overwrite=False)
     return table
 
 

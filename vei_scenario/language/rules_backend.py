@@ -1,10 +1,6 @@
-"""The offline backend: a description in the vocabulary of :mod:`vei_scenario.language.vocabulary`
-→ layers, with unspecified details filled by seeded sampling.
-
-Reading: the text is cut into clauses (sentences, "then", "while"); in each clause the first actor
-named is the subject, and the behaviours, positions and criticality words of the clause belong to
-it. A clause without an actor continues the previous subject ("... and then stops"). Behaviours of
-one actor run in sequence, or in parallel when the clause starts with "while".
+"""The offline backend: a description → layers. Reading is :mod:`vei_scenario.language.reader`'s
+(what the text says: actors, where they start, what they do, how critically, and of the road, the
+weather and the ego); this module holds what a reading is and fills in the rest.
 
 Filling: what the text leaves open (speeds, gaps, weather, time of day, background traffic, a
 behaviour's configuration within the range of its criticality class) is drawn from
@@ -15,10 +11,8 @@ Words it cannot place are reported (:class:`NotUnderstood`), never skipped silen
 from __future__ import annotations
 
 import random
-import re
 from dataclasses import dataclass, field
 
-from vei_scenario.language import vocabulary as V
 from vei_scenario.language.behaviours import BEHAVIOURS
 from vei_scenario.language.layers import behaviour_nodes
 from vei_scenario.language.maps import ARM_LENGTH_M
@@ -35,50 +29,9 @@ class NotUnderstood(ValueError):
         self.words = words
         listed = ", ".join(f"'{w}'" for w in words)
         super().__init__(
-            f"could not place {listed} (the words it knows: vei_scenario/language/vocabulary.py; "
+            f"could not place {listed} (the words it knows: vei_scenario/language/vocabulary.py and lexicon.py; "
             "behaviours: `vei behaviours`)"
         )
-
-
-def _phrase_table() -> dict[tuple[str, ...], tuple[str, object]]:
-    table: dict[tuple[str, ...], tuple[str, object]] = {}
-    groups = [
-        ("map", V.MAPS),
-        ("lanes", V.LANE_COUNTS),
-        ("weather", V.WEATHER),
-        ("time", V.TIMES),
-        ("density", V.DENSITY),
-        ("relation", V.RELATIONS),
-        ("behaviour", V.BEHAVIOURS),
-        ("ego_verb", V.EGO_VERBS),
-        ("criticality", V.CRITICALITY),
-        ("intent", V.INTENTS),
-        ("speed_word", V.SPEED_WORDS),
-    ]
-    for slot, words in groups:
-        for phrase, meaning in words.items():
-            table[tuple(phrase.split())] = (slot, meaning)
-    for phrase, meaning in V.ACTORS.items():
-        table[tuple(phrase.split())] = ("actor", meaning)
-    for phrase in V.PRONOUNS:
-        table[tuple(phrase.split())] = ("pronoun", None)
-    for phrase in V.SEQUENCE_WORDS:
-        table[tuple(phrase.split())] = ("sequence", None)
-    for phrase in V.PARALLEL_WORDS:
-        table[tuple(phrase.split())] = ("parallel", None)
-    return table
-
-
-TABLE = _phrase_table()
-LONGEST = max(len(k) for k in TABLE)
-_TOKEN = re.compile(r"\d+(?:\.\d+)?|km/h|m/s|[a-z][a-z'\-/]*|[.;,!?]")
-
-
-@dataclass
-class Mention:
-    slot: str
-    value: object
-    words: str
 
 
 @dataclass
@@ -107,153 +60,12 @@ class Reading:
     ignored: list[str] = field(default_factory=list)  # words read past: nothing in the layers holds them
 
 
-def _scan(text: str) -> tuple[list[list[Mention]], list[str]]:
-    """Clauses of mentions, and the words nothing covers."""
-    tokens = _TOKEN.findall(text.lower().replace("\u2019", "'"))
-    clauses: list[list[Mention]] = [[]]
-    unknown: list[str] = []
-    i = 0
-    while i < len(tokens):
-        tok = tokens[i]
-        if tok in ".;!?":
-            clauses.append([])
-            i += 1
-            continue
-        if tok == ",":
-            i += 1
-            continue
-        if re.fullmatch(r"\d+(?:\.\d+)?", tok):
-            nxt = tokens[i + 1] if i + 1 < len(tokens) else ""
-            if nxt in V.SPEED_UNITS:
-                clauses[-1].append(Mention("speed", float(tok) * V.SPEED_UNITS[nxt], f"{tok} {nxt}"))
-                i += 2
-                continue
-            if nxt in ("m", "meters", "metres", "meter", "metre"):
-                clauses[-1].append(Mention("distance", float(tok), f"{tok} {nxt}"))
-                i += 2
-                continue
-            unknown.append(tok)
-            i += 1
-            continue
-        for k in range(min(LONGEST, len(tokens) - i), 0, -1):
-            key = tuple(tokens[i : i + k])
-            if key in TABLE:
-                slot, meaning = TABLE[key]
-                if slot in ("sequence", "parallel"):
-                    clauses.append([Mention(slot, None, " ".join(key))])
-                else:
-                    clauses[-1].append(Mention(slot, meaning, " ".join(key)))
-                i += k
-                break
-        else:
-            if tok not in V.FILLER:
-                unknown.append(tok)
-            i += 1
-    return [c for c in clauses if c], unknown
-
-
 def read(text: str) -> Reading:
     """Parse ``text`` (:func:`vei_scenario.language.reader.read`); :class:`NotUnderstood` lists the
     words it could not place."""
     from vei_scenario.language.reader import read as read_text
 
     return read_text(text)
-
-
-def read_by_phrases(text: str) -> Reading:
-    """The first reader: the vocabulary's phrases only, the first actor of a clause its subject."""
-    clauses, unknown = _scan(text)
-    if unknown:
-        raise NotUnderstood(list(dict.fromkeys(unknown)), text)
-    r = Reading()
-    subject: ActorSpec | str | None = None
-    for clause in clauses:
-        link = "sequence"
-        if clause[0].slot == "parallel":
-            link = "parallel"
-        first_actor = next((m for m in clause if m.slot == "actor"), None)
-        if first_actor is not None:
-            subject = _subject(r, first_actor, clause)
-        crit = next((m.value for m in clause if m.slot == "criticality"), None)
-        behaviours_here: list[int] = []
-        for m in clause:
-            if m.slot == "map":
-                r.map_kind = r.map_kind if (r.map_kind and m.value == "straight") else m.value
-            elif m.slot == "lanes":
-                r.lanes = int(m.value)
-            elif m.slot == "weather":
-                r.weather = m.value
-            elif m.slot == "time":
-                r.time = m.value
-            elif m.slot == "density":
-                r.density = m.value
-            elif m.slot == "intent":
-                r.intent = m.value if r.intent in (None, "safe") or m.value != "safe" else r.intent
-            elif m.slot == "ego_verb":
-                if m.value:
-                    r.ego_route = m.value
-            elif m.slot == "relation":
-                if subject == "ego":
-                    r.ego_relation = m.value
-                elif (
-                    isinstance(subject, ActorSpec) and subject.relation is None and m is not _object_relation(clause, m)
-                ):
-                    subject.relation = m.value
-            elif m.slot == "distance" and isinstance(subject, ActorSpec):
-                subject.distance_m = m.value
-            elif m.slot in ("speed", "speed_word"):
-                _speed(r, subject, m)
-            elif m.slot == "behaviour":
-                name, cfg = m.value
-                if subject == "ego" or subject is None:
-                    if name == "forced_turn" and subject == "ego":
-                        r.ego_route = cfg.get("turn", "right")
-                        continue
-                    raise NotUnderstood([m.words], text)
-                subject.behaviours.append((name, dict(cfg), crit, link if not behaviours_here else "sequence"))
-                behaviours_here.append(len(subject.behaviours) - 1)
-        if crit is not None and not behaviours_here and isinstance(subject, ActorSpec) and subject.behaviours:
-            name, cfg, _, lk = subject.behaviours[-1]
-            subject.behaviours[-1] = (name, cfg, crit, lk)
-    return r
-
-
-def _object_relation(clause: list[Mention], m: Mention):
-    """A relation right after a second actor ("in front of the ego") describes that actor, not the
-    subject: return ``m`` then so that it is not taken as the subject's spawn."""
-    idx = clause.index(m)
-    actors_before = [x for x in clause[:idx] if x.slot == "actor"]
-    return m if len(actors_before) > 1 and actors_before[-1].value == ("ego", None) and m.value == "ahead" else None
-
-
-def _subject(r: Reading, mention: Mention, clause: list[Mention]) -> ActorSpec | str:
-    kind, vtype = mention.value
-    if kind == "ego":
-        return "ego"
-    # "the car" again: the actor of that type already named; "a car": a new one
-    article_new = True
-    words = mention.words
-    if words in ("vehicle", "car", "adversary") and r.actors:
-        article_new = False
-    same = [a for a in r.actors if a.kind == vtype]
-    if same and not article_new:
-        return same[-1]
-    if same and any(m.slot == "pronoun" for m in clause):
-        return same[-1]
-    spec = ActorSpec(vtype)
-    r.actors.append(spec)
-    return spec
-
-
-def _speed(r: Reading, subject, m: Mention) -> None:
-    if m.slot == "speed":
-        if subject == "ego" or subject is None:
-            r.ego_speed_mps = m.value
-        else:
-            subject.speed_mps = m.value
-    else:  # a speed word scales the sampled speed
-        if isinstance(subject, ActorSpec):
-            subject.speed_mps = -float(m.value)  # negative: a factor on the default, resolved later
 
 
 # --- sampling -------------------------------------------------------------------------------------------
