@@ -246,3 +246,18 @@ def test_a_scenario_that_cannot_be_placed_is_a_row_with_its_reason(tmp_path):
     assert (tmp_path / "b" / "scenario_000" / "scenario.xosc").is_file()
     assert (tmp_path / "b" / "scenario_001" / "layers.json").is_file()
     assert not (tmp_path / "b" / "scenario_001" / "scenario.xosc").exists()
+
+
+def test_vei_run_of_a_generated_scenario_gives_the_batchs_run(tmp_path):
+    """The batch runs and scores at vei run's own step (written in batch.json as rate_hz), so playing a
+    generated scenario with vei run's defaults gives the batch's collisions and duration."""
+    from vei_scenario.interpreter import run_scenario
+
+    records, doc = _batch("Dangerous", 4, out=tmp_path)
+    assert doc["rate_hz"] == [100.0]
+    for r in records:
+        result = run_scenario(tmp_path / f"scenario_{r.index:03d}" / "scenario.xosc")
+        collisions = [{"time_s": round(t, 3), "entities": [a, b]} for t, a, b in result.collisions]
+        assert collisions == r.outcome["collisions"]
+        assert round(float(result.t[-1]), 3) == r.outcome["duration_s"]
+    assert any(r.outcome["collisions"] for r in records)  # (a batch where something does collide)

@@ -182,7 +182,7 @@ def played_problems(result, layers: dict) -> list[str]:
     return out
 
 
-def play_case(case: dict, make_layers, workdir: Path, seed: int = 0, rate_hz: float = 20.0) -> list[str]:
+def play_case(case: dict, make_layers, workdir: Path, seed: int = 0, rate_hz: float = 100.0) -> list[str]:
     """Write the scenario of ``case`` (seed ``seed``), play it with ``vei run``'s interpreter, and
     return what its adversaries did not do (:func:`played_problems`)."""
     from vei_scenario.interpreter import run_scenario

@@ -62,7 +62,7 @@ def run_one(layers: dict, index: int, refine: bool) -> ScenarioRecord:
             xosc = Path(tmp) / f"{SCENARIO_STEM}.xosc"
             (Path(tmp) / f"{SCENARIO_STEM}.xodr").write_bytes(written.xodr)
             xosc.write_bytes(written.xosc)
-            outcome = evaluate(xosc, float(layers.get("rate_hz", 20.0)))
+            outcome = evaluate(xosc, float(layers.get("rate_hz", 100.0)))
             met, direction = intent_met(intent, outcome)
             episodes.append(
                 {
@@ -194,6 +194,8 @@ def batch_document(description: str, backend: str, seed: int, refine: bool, reco
         "backend": backend,
         "seed": seed,
         "refine": refine,
+        # the step the scenarios were run and scored at: vei run's default, so it gives the same run
+        "rate_hz": sorted({float(r.layers.get("rate_hz", 100.0)) for r in records}),
         "summary": batch_summary(records),
         "scenarios": [
             {**_row(r), "collisions": r.outcome.get("collisions", []), "episodes": r.episodes} for r in records

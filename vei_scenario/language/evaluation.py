@@ -24,7 +24,7 @@ METRIC_NAMES = ["collision", "act_min_s", "ei_max_mps", "min_ttc_s", "ttc_zones_
 NEAR_MISS_ACT_S = 1.0
 
 
-def evaluate(xosc: Path, rate_hz: float = 20.0) -> dict:
+def evaluate(xosc: Path, rate_hz: float = 100.0) -> dict:
     """Run ``xosc`` at ``rate_hz`` and score it (JSON-ready)."""
     result = run_scenario(xosc, None, round(1.0 / rate_hz, 6))
     cfg = MetricConfig()

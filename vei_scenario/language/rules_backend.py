@@ -179,7 +179,7 @@ def sample_layers(reading: Reading, text: str, seed: int) -> dict:
             MIN_DURATION_S,
             min(120.0, round(max((topology_time_s(a["behaviour"], ego_speed) for a in adversaries), default=0) + 5, 1)),
         ),
-        "rate_hz": 20.0,
+        "rate_hz": 100.0,
         "environment": {
             "map": {"kind": kind, "lanes_per_direction": lanes}
             | ({"traffic_signals": True} if kind == "crossroad" else {}),
