@@ -63,3 +63,20 @@ def test_the_played_scenarios_do_what_their_layers_say(tmp_path):
     cases = load_corpus(CORPUS)[::4]
     failing = {c["text"]: p for c in cases if (p := play_case(c, layers_from_text, tmp_path))}
     assert len(failing) <= 0.1 * len(cases), failing
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A parked car on the right pulls out into the ego's lane.",
+        "A car from the left at 130 km/h cuts in front of us.",
+    ],
+    ids=["standing", "faster"],
+)
+def test_a_cut_in_by_a_standing_or_a_faster_car_happens(text, tmp_path):
+    """A parked car pulls out (speeding up as it changes lane, timed from the ego's approach); a car
+    faster than the ego draws ahead first and cuts in once it is gap_m ahead: either ends ahead of
+    the ego in its lane."""
+    from vei_scenario.language.corpus_check import play_case
+
+    assert play_case({"text": text}, layers_from_text, tmp_path) == []

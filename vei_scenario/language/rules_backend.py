@@ -273,6 +273,12 @@ def place_adversary(
         out_speed = 0.0
     elif distance_m is not None and relation in ("ahead", "behind", "oncoming") and behaviour_name != "cut_in":
         spawn["longitudinal_m"] = -distance_m if relation == "behind" else distance_m  # as the text says
+    elif behaviour_name == "cut_in" and speed is not None and speed > ego_speed + mod.FASTER_MPS:
+        spawn["longitudinal_m"] = 0.0  # a faster car starts alongside: it draws ahead, then cuts in
+    elif behaviour_name == "cut_in" and speed is not None and speed < mod.STANDING_MPS:
+        # a parked car that pulls out: far enough ahead for the ego to close in for lead_s first
+        lead = float(cfg.get("lead_s", 2.5))
+        spawn["longitudinal_m"] = round(lengths / 2 + mod.pull_out_distance_m(ego_speed, cfg) + ego_speed * lead, 3)
     elif hasattr(mod, "place"):
         lon, placed_speed = mod.place(ego_speed, lengths, cfg)
         if relation == "behind" and lon > 0:

@@ -60,12 +60,34 @@ def initial_speed(ego_speed: float, cfg: dict) -> float:
     return max(1.0, ego_speed - value(cfg, PARAMETERS, "closing_mps"))
 
 
+#: An actor this much faster than the ego (m/s) passes it first and cuts in once gap_m ahead.
+FASTER_MPS = 0.5
+#: Below this speed (m/s) the actor stands (a parked car): it pulls out, speeding up as it changes lane.
+STANDING_MPS = 0.5
+
+
 def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
     gap = value(cfg, PARAMETERS, "gap_m")
+    duration = value(cfg, PARAMETERS, "lane_change_s")
+    if ctx.actor_speed_mps < STANDING_MPS:  # pulling out: off when the ego is a lane change away from the gap
+        merge = initial_speed(ctx.ego_speed_mps, cfg)
+        accel = ctx.actor_max_accel_mps2 or 3.0
+        actions = [lane_change_to_ego(ctx.ego, duration), speed_action(merge, rate=accel)]
+        return [
+            Step("cut_in", actions, conditions=[Condition("ego_within", pull_out_distance_m(ctx.ego_speed_mps, cfg))])
+        ]
     after = max(0.0, ctx.actor_speed_mps - value(cfg, PARAMETERS, "brake_delta_mps"))
     rate = ctx.max_decel(value(cfg, PARAMETERS, "brake_rate_mps2"))
-    actions = [lane_change_to_ego(ctx.ego, value(cfg, PARAMETERS, "lane_change_s")), speed_action(after, rate=rate)]
+    actions = [lane_change_to_ego(ctx.ego, duration), speed_action(after, rate=rate)]
+    if ctx.actor_speed_mps > ctx.ego_speed_mps + FASTER_MPS:  # faster than the ego: in once it is gap_m ahead
+        return [Step("cut_in", actions, conditions=[Condition("ego_beyond", gap)])]
     return [Step("cut_in", actions, conditions=[Condition("ego_within", gap)])]
+
+
+def pull_out_distance_m(ego_speed: float, cfg: dict) -> float:
+    """Free-space distance of the ego at which a standing actor pulls out: the gap it leaves plus
+    what the ego covers during the lane change."""
+    return value(cfg, PARAMETERS, "gap_m") + ego_speed * value(cfg, PARAMETERS, "lane_change_s")
 
 
 def place(ego_speed: float, lengths_m: float, cfg: dict) -> tuple[float, float]:
