@@ -142,31 +142,33 @@ def lane_keep(e, ds: float, ctx) -> None:
             link = (lane.successor if step > 0 else lane.predecessor) if lane is not None else None
             if link is not None and link in road.sections[k + step].lanes:
                 st.lane = link
-    sec_lanes = road.section(s).lanes
+    sec = road.section(s)
+    sec_lanes, ds_sec = sec.lanes, s - sec.s
     if st.lane not in sec_lanes:  # the lane ends in a new lane section: the nearest lane on the same side
         same = [k for k in sec_lanes if (k > 0) == (st.lane > 0)] or list(sec_lanes)
         st.lane = min(same, key=lambda k: abs(k - st.lane)) if same else st.lane
     lane = sec_lanes.get(st.lane)
-    if lane is not None and lane.type == "driving" and lane.width(s - road.section(s).s) < 1e-6:
+    if lane is not None and lane.type == "driving" and lane.width(ds_sec) < 1e-6:
         # the lane has narrowed to nothing (a merge): it moves over to the nearest driving lane (esmini)
         here = road.lane_center_t(s, st.lane)
         wide = [
             k
             for k, other in sec_lanes.items()
-            if (k > 0) == (st.lane > 0) and other.type == "driving" and other.width(s - road.section(s).s) >= 1e-6
+            if (k > 0) == (st.lane > 0) and other.type == "driving" and other.width(ds_sec) >= 1e-6
         ]
         if wide:
             st.lane = min(wide, key=lambda k: abs(road.lane_center_t(s, k) - here))
     st.road, st.s = road.id, s
     if e.lateral is not None:
         st.offset = e.lateral.offset(e, ctx, road)
-    x, y, h = road.world(s, road.lane_center_t(s, st.lane) + st.offset)
+    t = road.lane_center_t(s, st.lane) + st.offset
+    x, y, h = road.world(s, t)
     moved = math.hypot(x - e.x, y - e.y)
     e.x, e.y = x, y
-    base = road.lane_heading(s, road.lane_center_t(s, st.lane) + st.offset)
+    base = road.lane_heading(s, t)
     drift = road.lane_drift(s, st.lane)
     if drift:  # the lane centre runs sideways (a lane widening or narrowing): it heads along it
-        base += math.atan2(drift, max(1.0 - (road.lane_center_t(s, st.lane) + st.offset) * road.curvature(s), 0.05))
+        base += math.atan2(drift, max(1.0 - t * road.curvature(s), 0.05))
     base = base if forward else base + math.pi
     e.yaw = math.atan2(math.sin(base + st.heading), math.cos(base + st.heading))
     if e.lateral is not None and moved > 1e-9:

@@ -489,9 +489,8 @@ class Simulation:
             a.start(ctx)
         for a in list(ctx.stepping):  # Init actions that act every step act once before t = 0 is logged
             a.step(ctx)
-        for chain in trailers.chains(ctx.entities):  # hitched trailers start in line behind their tow
-            for tow, trailer in zip(chain, chain[1:]):
-                trailers.place_behind(trailer, tow)
+        for tow, trailer in trailers.hitches(ctx.entities):  # hitched trailers start in line behind their tow
+            trailers.place_behind(trailer, tow)
         # the storyboard is evaluated once at t = 0 before t = 0 is logged, with no time passing (as
         # esmini does): events that start at once place entities and set speeds, and what they
         # complete counts from t = 0 (a condition delayed after it fires on time)
@@ -522,9 +521,8 @@ class Simulation:
                 ctx.snapshot = {n: copy.copy(e) for n, e in ctx.entities.items()}
             for n in names:
                 self._move(ctx.entities[n])
-            for chain in trailers.chains(ctx.entities):
-                for tow, trailer in zip(chain, chain[1:]):
-                    trailers.pull(trailer, tow, dt)
+            for tow, trailer in trailers.hitches(ctx.entities):
+                trailers.pull(trailer, tow, dt)
             ctx.snapshot = None
             self._complete_finished()
             ctx.step += 1

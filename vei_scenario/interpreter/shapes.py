@@ -276,11 +276,9 @@ def _nurbs(el, ctx, place: bool) -> Polyline:
         raise ctx.error(el, "Nurbs knots leave no parameter range")
     polygon = float(np.hypot(*np.diff(np.array(xy), axis=0).T).sum()) if n > 1 else 0.0
     steps = max(1, math.ceil(polygon / NURBS_STEP_M - 1e-9))
-    end = hi - 1e-12 * max(1.0, abs(hi))  # (the closed end of the last knot span)
-    grid = lo + (hi - lo) * np.arange(steps + 1) / steps
-    grid[-1] = end
     u = lo + (hi - lo) * np.arange(NURBS_REFINE * steps + 1) / (NURBS_REFINE * steps)
-    u[-1] = end
+    u[-1] = hi - 1e-12 * max(1.0, abs(hi))  # (the closed end of the last knot span)
+    grid = u[::NURBS_REFINE]  # (every NURBS_REFINE-th sample, the last one included)
     vals = curve(u)
     xs, ys = vals[:, 0] / vals[:, 2], vals[:, 1] / vals[:, 2]
     ts = [None] * len(u)

@@ -52,19 +52,19 @@ def pull(trailer, tow, dt: float) -> None:
     trailer.status = "towed"
 
 
-def chains(entities: dict) -> list[list]:
-    """Each tow vehicle that is not towed itself, followed by the trailers it pulls, in order."""
+def hitches(entities: dict) -> list[tuple]:
+    """Every (tow vehicle, trailer) pair, each chain from its front (a tow vehicle that is not towed
+    itself) to its back, so that a trailer is moved after what pulls it."""
     out = []
     for e in entities.values():
         if e.trailer is None or e.towed_by is not None:
             continue
-        chain, seen = [e], {e.name}
+        tow, seen = e, {e.name}
         nxt = entities.get(e.trailer)
         while nxt is not None and nxt.name not in seen:
-            chain.append(nxt)
+            out.append((tow, nxt))
             seen.add(nxt.name)
-            nxt = entities.get(nxt.trailer) if nxt.trailer else None
-        out.append(chain)
+            tow, nxt = nxt, entities.get(nxt.trailer) if nxt.trailer else None
     return out
 
 

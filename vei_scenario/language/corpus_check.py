@@ -182,7 +182,7 @@ def played_problems(result, layers: dict) -> list[str]:
     return out
 
 
-def play_case(case: dict, make_layers, workdir: Path, seed: int = 0, rate_hz: float = 100.0) -> list[str]:
+def play_case(case: dict, make_layers, workdir: Path, seed: int = 0) -> list[str]:
     """Write the scenario of ``case`` (seed ``seed``), play it with ``vei run``'s interpreter, and
     return what its adversaries did not do (:func:`played_problems`)."""
     from vei_scenario.interpreter import run_scenario
@@ -192,5 +192,5 @@ def play_case(case: dict, make_layers, workdir: Path, seed: int = 0, rate_hz: fl
     written = write_scenario(layers, "scenario")
     (workdir / "scenario.xosc").write_bytes(written.xosc)
     (workdir / "scenario.xodr").write_bytes(written.xodr)
-    result = run_scenario(workdir / "scenario.xosc", None, round(1.0 / rate_hz, 6))
+    result = run_scenario(workdir / "scenario.xosc", None, round(1.0 / float(layers["rate_hz"]), 6))
     return played_problems(result, layers)

@@ -24,7 +24,7 @@ from vei_scenario.errors import VeiInputError
 from vei_scenario.language.evaluation import evaluate, intent_met
 from vei_scenario.language.layers import behaviour_nodes, validate_layers
 from vei_scenario.language.refinement import MAX_EPISODES, adjust
-from vei_scenario.language.scenario_writer import write_scenario
+from vei_scenario.language.scenario_writer import DEFAULT_RATE_HZ, write_scenario
 
 SCENARIO_STEM = "scenario"
 
@@ -62,7 +62,7 @@ def run_one(layers: dict, index: int, refine: bool) -> ScenarioRecord:
             xosc = Path(tmp) / f"{SCENARIO_STEM}.xosc"
             (Path(tmp) / f"{SCENARIO_STEM}.xodr").write_bytes(written.xodr)
             xosc.write_bytes(written.xosc)
-            outcome = evaluate(xosc, float(layers.get("rate_hz", 100.0)))
+            outcome = evaluate(xosc, float(layers.get("rate_hz", DEFAULT_RATE_HZ)))
             met, direction = intent_met(intent, outcome)
             episodes.append(
                 {
@@ -195,7 +195,7 @@ def batch_document(description: str, backend: str, seed: int, refine: bool, reco
         "seed": seed,
         "refine": refine,
         # the step the scenarios were run and scored at: vei run's default, so it gives the same run
-        "rate_hz": sorted({float(r.layers.get("rate_hz", 100.0)) for r in records}),
+        "rate_hz": sorted({float(r.layers.get("rate_hz", DEFAULT_RATE_HZ)) for r in records}),
         "summary": batch_summary(records),
         "scenarios": [
             {**_row(r), "collisions": r.outcome.get("collisions", []), "episodes": r.episodes} for r in records

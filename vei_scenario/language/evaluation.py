@@ -17,6 +17,7 @@ import math
 from pathlib import Path
 
 from vei_scenario.interpreter import run_scenario
+from vei_scenario.language.scenario_writer import DEFAULT_RATE_HZ
 from vei_scenario.metrics import MetricConfig, PairSeries, compute_metrics
 
 METRIC_NAMES = ["collision", "act_min_s", "ei_max_mps", "min_ttc_s", "ttc_zones_s", "comfort_score", "min_gap_m"]
@@ -24,7 +25,7 @@ METRIC_NAMES = ["collision", "act_min_s", "ei_max_mps", "min_ttc_s", "ttc_zones_
 NEAR_MISS_ACT_S = 1.0
 
 
-def evaluate(xosc: Path, rate_hz: float = 100.0) -> dict:
+def evaluate(xosc: Path, rate_hz: float = DEFAULT_RATE_HZ) -> dict:
     """Run ``xosc`` at ``rate_hz`` and score it (JSON-ready)."""
     result = run_scenario(xosc, None, round(1.0 / rate_hz, 6))
     cfg = MetricConfig()

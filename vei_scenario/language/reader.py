@@ -17,8 +17,8 @@ lemmas, so inflections need no entries. In a clause:
   crossing, the left entrance for a red-light runner, the left lane for a cut-in.
 
 Words that carry nothing the layers can hold are listed in :attr:`Reading.ignored`. A description is
-refused only when something must be placed and cannot be: a behaviour with no actor, an actor whose
-only verb is unknown (that verb is named), or a number whose unit is unknown.
+refused only when something must be placed and cannot be: a behaviour with no actor, or an actor
+whose only verb is unknown (that verb is named). A number with no unit it can read is listed too.
 """
 
 from __future__ import annotations
@@ -34,20 +34,24 @@ _TOKEN = re.compile(r"\d+(?:\.\d+)?|km/h|m/s²|m/s2|m/s|[a-z][a-z\-]*(?:'[a-z]+)
 
 
 @lru_cache(maxsize=4096)
-def forms(word: str) -> frozenset[str]:
-    """The surface form of ``word`` and all its lemmas (lemminflect)."""
+def _lemmas(word: str) -> dict[str, tuple[str, ...]]:
+    """lemminflect's lemmas of ``word`` by part of speech (looked up once per word)."""
     from lemminflect import getAllLemmas
 
+    return getAllLemmas(word)
+
+
+@lru_cache(maxsize=4096)
+def forms(word: str) -> frozenset[str]:
+    """The surface form of ``word`` and all its lemmas."""
     out = {word}
-    for lemmas in getAllLemmas(word).values():
+    for lemmas in _lemmas(word).values():
         out.update(lemmas)
     return frozenset(out)
 
 
 def _pos(word: str) -> set[str]:
-    from lemminflect import getAllLemmas
-
-    return set(getAllLemmas(word))
+    return set(_lemmas(word))
 
 
 def _entries() -> dict[tuple[str, ...], tuple[str, object]]:
@@ -145,7 +149,6 @@ class _Mention:
     start: int  # token index
     prev: str = ""  # the token before the phrase
     next_: str = ""  # the token after it
-    key: tuple = ()  # the lexicon phrase it matched
     end: int = 0  # token index after it
     det: str = ""  # the determiner right before it ("the", "a", ...)
 
@@ -165,7 +168,6 @@ class _Actor:
     behaviours: list = field(default_factory=list)  # (name, cfg, criticality, link)
     group: list | None = None  # the actors named together ("two cars")
     unknown: list = field(default_factory=list)  # verbs said of it that the lexicon does not know
-    merged: bool = False
 
 
 def _tokens(text: str) -> list[str]:
@@ -183,12 +185,11 @@ def _tokens(text: str) -> list[str]:
     return out
 
 
-def _match(tokens: list[str], i: int) -> tuple[tuple[str, ...], tuple[str, object]] | None:
-    first = forms(tokens[i])
-    for w in first:
+def _match(tokens: list[str], i: int):
+    """For each form of the word at ``i``, the longest phrase starting with it that the text holds."""
+    for w in forms(tokens[i]):
         for key in _BY_FIRST.get(w, ()):
             if i + len(key) <= len(tokens) and all(k in forms(tokens[i + j]) for j, k in enumerate(key)):
-                # the longest phrase for this first form; compare across forms below
                 yield key
                 break
 
@@ -226,12 +227,6 @@ def _number(tokens: list[str], i: int) -> tuple[str, float, int] | None:
     if prev in ("at", "doing", "about", "around", "of") and 3 <= value <= 250:  # "at 120": km/h
         return "speed", value / 3.6, 1
     return "unknown", value, 1
-
-
-class Refused(ValueError):
-    def __init__(self, words: list[str]) -> None:
-        self.words = words
-        super().__init__(", ".join(f"'{w}'" for w in words))
 
 
 def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
@@ -296,12 +291,12 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
         words = " ".join(tokens[i : i + used])
         nxt = tokens[i + used] if i + used < len(tokens) else ""
         if slot in ("sequence", "parallel"):
-            clauses.append((slot, [_Mention("link", slot, words, i, prev, key=key, end=i + used)]))
+            clauses.append((slot, [_Mention("link", slot, words, i, prev, end=i + used)]))
         elif slot != "noise":
-            clauses[-1][1].append(_Mention(slot, value, words, i, prev, nxt, key, i + used, det))
+            clauses[-1][1].append(_Mention(slot, value, words, i, prev, nxt, i + used, det))
         if adverb is not None and (adverb,) in TABLE and TABLE[(adverb,)][0] in ("criticality", "speed_word"):
             a_slot, a_value = TABLE[(adverb,)]
-            clauses[-1][1].append(_Mention(a_slot, a_value, adverb, i + 1, tok, key=(adverb,), end=i + 2))
+            clauses[-1][1].append(_Mention(a_slot, a_value, adverb, i + 1, tok, end=i + 2))
         i += used
     return [c for c in clauses if any(m.slot not in ("punct", "link") for m in c[1])], ignored
 
@@ -540,8 +535,6 @@ def read(text: str):
         r.map_kind = "crossroad"  # the ego turns, or someone comes out of a side road: a junction
     junction = r.map_kind in ("crossroad", "roundabout")
     for a in actors:
-        if a.merged:
-            continue
         spec = ActorSpec(a.kind)
         behaviours = _tidy(a)
         if a.kind == "pedestrian" and behaviours and behaviours[0][0] in VEHICLE_BEHAVIOURS:

@@ -14,10 +14,11 @@ import random
 from dataclasses import dataclass, field
 
 from vei_scenario.language.behaviours import BEHAVIOURS
+from vei_scenario.language.behaviours.base import value
 from vei_scenario.language.layers import behaviour_nodes
 from vei_scenario.language.maps import ARM_LENGTH_M
 from vei_scenario.language.placement import DEFAULT_FEATURE_DISTANCE_M, junction_conflict_m, lane_id
-from vei_scenario.language.scenario_writer import TYPES
+from vei_scenario.language.scenario_writer import DEFAULT_RATE_HZ, TYPES
 
 CRITICALITY_CLASSES = ("dangerous", "moderate", "safe")
 
@@ -179,7 +180,7 @@ def sample_layers(reading: Reading, text: str, seed: int) -> dict:
             MIN_DURATION_S,
             min(120.0, round(max((topology_time_s(a["behaviour"], ego_speed) for a in adversaries), default=0) + 5, 1)),
         ),
-        "rate_hz": 100.0,
+        "rate_hz": DEFAULT_RATE_HZ,
         "environment": {
             "map": {"kind": kind, "lanes_per_direction": lanes}
             | ({"traffic_signals": True} if kind == "crossroad" else {}),
@@ -205,10 +206,10 @@ def behaviour_time_s(name: str, cfg: dict, ego_speed: float) -> float:
     """About how long behaviour ``name`` with ``cfg`` takes to play out, from its own parameters: the
     waits, lane changes, closing and braking it is made of (the run is made long enough for every
     stated behaviour to happen)."""
-    mod = BEHAVIOURS[name]
+    params = BEHAVIOURS[name].PARAMETERS
 
     def v(key: str) -> float:
-        return float(cfg.get(key, mod.PARAMETERS[key].default)) if key in mod.PARAMETERS else 0.0
+        return value(cfg, params, key)
 
     if name == "overtake":  # catch up from behind, pass, and cut back in ahead
         return v("delay_s") + 2 * v("lane_change_s") + (25.0 + v("gap_m")) / max(v("speed_gain_mps"), 0.5)

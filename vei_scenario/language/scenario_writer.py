@@ -43,7 +43,8 @@ DEFAULT_DURATION_S = 20.0
 EGO_TIME_GAP_S = 1.5
 #: A crossing road user's path goes on this far beyond the far kerb (m).
 CROSSING_BEYOND_M = 30.0
-DEFAULT_RATE_HZ = 20.0
+#: The step scenarios are run and scored at (Hz): vei run's own, so vei run replays a batch's run.
+DEFAULT_RATE_HZ = 100.0
 #: Box (length, width, height m), category, mass (kg), max speed, acceleration, deceleration.
 TYPES = {
     "car": ((4.6, 1.85, 1.5), "car", 1500.0, 50.0, 4.0, 9.0),

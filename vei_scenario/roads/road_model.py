@@ -217,11 +217,15 @@ class Road:
             lane_id = nxt
         return lane_id
 
+    def section_span(self, k: int) -> tuple[float, float]:
+        """(first, last) s of lane section ``k`` (the last just short of the next section)."""
+        lo = self.sections[k].s
+        return lo, self.sections[k + 1].s - 1e-9 if k + 1 < len(self.sections) else self.length
+
     def lane_center_t_in(self, k: int, s: float, lane_id: int) -> float:
         """Centre t of lane ``lane_id`` of section ``k``, at ``s`` held inside that section (a lane
         that begins or ends there is taken at its first or last point)."""
-        lo = self.sections[k].s
-        hi = self.sections[k + 1].s - 1e-9 if k + 1 < len(self.sections) else self.length
+        lo, hi = self.section_span(k)
         s_in = min(max(s, lo), hi)
         mapped = self.map_lane(lane_id, k, self.section_index(s_in))
         return self.lane_center_t(s_in, mapped if mapped is not None else lane_id)
@@ -243,8 +247,7 @@ class Road:
         if not self.varying_lanes:
             return 0.0
         k = self.section_index(s)
-        lo = self.sections[k].s
-        hi = self.sections[k + 1].s - 1e-9 if k + 1 < len(self.sections) else self.length
+        lo, hi = self.section_span(k)
         a, b = max(s - eps, lo), min(s + eps, hi)
         if b <= a or lane_id not in self.sections[k].lanes:
             return 0.0
