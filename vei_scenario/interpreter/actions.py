@@ -59,6 +59,14 @@ class SteppedLongitudinal(Stepped):
         return ctx.entities[self.entity].longitudinal is not self
 
 
+def entity_ref(ctx, el, attribute: str = "entityRef") -> str:
+    """The entity an action's ``attribute`` names; one line naming the action and the line if none."""
+    name = el.get(attribute)
+    if name not in ctx.entities:
+        raise ctx.error(el, f"{el.tag}: no entity named {name!r}")
+    return name
+
+
 def constraint(ctx, dyn, name: str) -> float:
     """A ``DynamicConstraints`` attribute; infinite when absent (an absent constraint does not
     constrain)."""

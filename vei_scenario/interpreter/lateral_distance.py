@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import math
 
-from vei_scenario.interpreter.actions import Stepped, constraint
+from vei_scenario.interpreter.actions import Stepped, constraint, entity_ref
 from vei_scenario.interpreter.positions import entity_lane
 
 #: A one-off action ends this close (m) to its distance.
@@ -29,9 +29,7 @@ class LateralDistance(Stepped):
         from vei_scenario.safe_xml import float_attribute
 
         self.entity, self.el = entity, el
-        self.ref = el.get("entityRef")
-        if self.ref not in ctx.entities:
-            raise ctx.error(el, f"LateralDistanceAction: no entity named {self.ref!r}")
+        self.ref = entity_ref(ctx, el)
         self.distance = float_attribute(ctx.path, el, "distance") if el.get("distance") not in (None, "") else 0.0
         if self.distance < 0:
             raise ctx.error(el, "LateralDistanceAction distance must not be negative")

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import math
 
-from vei_scenario.interpreter.actions import SteppedLongitudinal, constraint, lane_keep
+from vei_scenario.interpreter.actions import SteppedLongitudinal, constraint, entity_ref, lane_keep
 from vei_scenario.interpreter.controllers import advance_along
 from vei_scenario.interpreter.positions import ensure_lane
 
@@ -51,9 +51,7 @@ class LongitudinalDistance(SteppedLongitudinal):
     placed = False  # placed at the gap (no dynamic constraints) in an earlier step
 
     def __init__(self, entity: str, el, ctx) -> None:
-        self.entity, self.ref = entity, el.get("entityRef")
-        if self.ref not in ctx.entities:
-            raise ctx.error(el, f"LongitudinalDistanceAction: no entity named {self.ref!r}")
+        self.entity, self.ref = entity, entity_ref(ctx, el)
         if (el.get("distance") is None) == (el.get("timeGap") is None):
             raise ctx.error(el, "LongitudinalDistanceAction needs exactly one of distance and timeGap")
         self.by_time = el.get("timeGap") is not None

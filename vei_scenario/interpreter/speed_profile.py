@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import math
 
-from vei_scenario.interpreter.actions import SteppedLongitudinal, constraint
+from vei_scenario.interpreter.actions import SteppedLongitudinal, constraint, entity_ref
 
 #: How close (m/s) a following entity must be to the last speed for the action to end.
 SETTLED_SPEED = 1e-3
@@ -35,9 +35,7 @@ class SpeedProfile(SteppedLongitudinal):
         from vei_scenario.safe_xml import float_attribute
 
         self.entity, self.el = entity, el
-        self.ref = el.get("entityRef")
-        if self.ref is not None and self.ref not in ctx.entities:
-            raise ctx.error(el, f"SpeedProfileAction: no entity named {self.ref!r}")
+        self.ref = entity_ref(ctx, el) if el.get("entityRef") is not None else None
         self.mode = el.get("followingMode", "position")
         if self.mode not in ("position", "follow"):
             raise ctx.error(el, f"followingMode {self.mode!r} is not one of position, follow")

@@ -28,7 +28,7 @@ from __future__ import annotations
 
 import math
 
-from vei_scenario.interpreter.actions import SteppedLongitudinal
+from vei_scenario.interpreter.actions import SteppedLongitudinal, entity_ref
 from vei_scenario.interpreter.positions import Pose, ensure_lane
 from vei_scenario.interpreter.positions import resolve as resolve_position
 from vei_scenario.safe_xml import first_element
@@ -46,9 +46,7 @@ class Synchronize(SteppedLongitudinal):
         from vei_scenario.safe_xml import float_attribute
 
         self.entity, self.el = entity, el
-        self.master = el.get("masterEntityRef")
-        if self.master not in ctx.entities:
-            raise ctx.error(el, f"SynchronizeAction: no entity named {self.master!r}")
+        self.master = entity_ref(ctx, el, "masterEntityRef")
         if self.master == entity:
             raise ctx.error(el, "SynchronizeAction: the master entity is the actor itself")
         self.master_pos = el.find("TargetPositionMaster")
