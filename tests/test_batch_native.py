@@ -127,7 +127,7 @@ def test_without_a_compiler_sweeps_fall_back_to_numpy_with_the_same_rows(xosc, t
 def test_kernel_built_at_install_is_used_unless_its_sources_changed(xosc, tmp_path, monkeypatch):
     """pip install builds the kernel (setup.py); it is loaded while it matches the C sources shipped
     beside it, and gives the rows of the kernel compiled on demand. Edited sources are compiled anew."""
-    from vei_scenario.fmu.native import compiler
+    from vei_scenario.core.sources import compiler
 
     try:
         compiler()

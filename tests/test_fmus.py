@@ -17,8 +17,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from vei_scenario.core.sources import source_dir
 from vei_scenario.fmu import MODELS, SPECS, build_fmus, cosimulate
-from vei_scenario.fmu.native import c_source_dir, fmi_header_dir
+from vei_scenario.fmu.native import fmi_header_dir
 from vei_scenario.interpreter import run_scenario
 from vei_scenario.models.boxes import time_to_contact
 from vei_scenario.models.cap import CapParameters, cap_step_arrays
@@ -245,7 +246,7 @@ def c_models(tmp_path_factory):
             "-ffp-contract=off",
             "-o",
             str(out),
-            str(c_source_dir() / "vei_models.c"),
+            str(source_dir() / "vei_models.c"),
             "-lm",
         ],
         check=True,

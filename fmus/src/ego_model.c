@@ -23,6 +23,7 @@ int model_initialize(Instance *m) {
     ms->path.t = NULL;
     ms->path.s = ms->path_s;
     ms->path.n = n;
+    ms->path.exit_speed = NAN;
     vei_polyline_init(&ms->path);
     ms->on_path = 0;
     ms->s = 0.0;

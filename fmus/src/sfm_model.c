@@ -42,6 +42,7 @@ int model_initialize(Instance *m) {
     ms->track.t = &m->r[VR_TRACK_T];
     ms->track.s = ms->track_s;
     ms->track.n = n;
+    ms->track.exit_speed = NAN;
     vei_polyline_init(&ms->track);
     ms->riding = 0;
     ms->fs = 0.0;

@@ -38,7 +38,7 @@ _P = ctypes.POINTER(ctypes.c_double)
 
 
 class _Polyline(ctypes.Structure):
-    _fields_ = [("x", _P), ("y", _P), ("h", _P), ("t", _P), ("s", _P), ("n", ctypes.c_int)]
+    _fields_ = [("x", _P), ("y", _P), ("h", _P), ("t", _P), ("s", _P), ("n", ctypes.c_int), ("exit_speed", _D)]
 
 
 def _doubles(names: str) -> list[tuple[str, type]]:
@@ -125,8 +125,8 @@ def load_kernel():
     beside it, else one compiled on first use into the cache; None without a compiler."""
     if _LIB:
         return _LIB[0]
+    from vei_scenario.core.sources import compiler, source_dir
     from vei_scenario.errors import VeiInputError
-    from vei_scenario.fmu.native import c_source_dir, compiler
 
     lib = None
     choice = os.environ.get("VEI_KERNEL", "")
@@ -134,7 +134,7 @@ def load_kernel():
     try:
         if choice == "numpy":
             raise OSError("VEI_KERNEL=numpy")
-        src = c_source_dir()
+        src = source_dir()
         sources = source_digest(src)
         if packaged is not None:
             built = ctypes.CDLL(str(packaged))
@@ -191,7 +191,10 @@ class NativeBatch:
     def _polyline(self, poly, timed: bool) -> _Polyline:
         x, y, h, s = (self._arr(v) for v in (poly.xs, poly.ys, poly.hs, poly.s))
         t = self._arr(poly.ts) if timed else None
-        return _Polyline(_ptr(x), _ptr(y), _ptr(h), _ptr(t) if t is not None else None, _ptr(s), len(poly.xs))
+        exit_speed = math.nan if poly.exit_speed is None else poly.exit_speed
+        return _Polyline(
+            _ptr(x), _ptr(y), _ptr(h), _ptr(t) if t is not None else None, _ptr(s), len(poly.xs), exit_speed
+        )
 
     def _scene(self, duration: float, model: tuple = (), params=None) -> _Scene:
         """The scene of a duration and a set of model parameters (``model``: BatchScenario.model_key)."""

@@ -7,13 +7,12 @@ headers) so an importer can rebuild it for another platform. Same inputs, same F
 
 from __future__ import annotations
 
-import os
-import shutil
 import subprocess
 import tempfile
 from importlib import resources
 from pathlib import Path
 
+from vei_scenario.core.sources import compiler, source_dir
 from vei_scenario.errors import VeiInputError
 from vei_scenario.fmu import model_description
 from vei_scenario.fmu.packaging import write_fmu
@@ -29,7 +28,8 @@ FMI_HEADERS = {
 
 
 def c_source_dir() -> Path:
-    """The C sources (``fmus/src`` in a checkout, package data in an installed vei-scenario)."""
+    """The FMUs' own C sources (wrappers and models' FMI glue); the models themselves are the core's
+    (:func:`vei_scenario.core.sources.source_dir`)."""
     return Path(str(resources.files("vei_scenario.fmu") / "c_sources"))
 
 
@@ -39,16 +39,6 @@ def fmi_header_dir() -> Path:
     except ImportError:
         raise VeiInputError(None, "vei fmu build", "needs the FMI headers of fmpy: pip install fmpy") from None
     return Path(fmpy.__file__).parent / "c-code"
-
-
-def compiler() -> str:
-    """The C compiler: $CC if set, else cc or gcc on the PATH."""
-    wanted = os.environ.get("CC")
-    cc = shutil.which(wanted) if wanted else (shutil.which("cc") or shutil.which("gcc"))
-    if not cc:
-        what = f"CC={wanted!r} is not an executable" if wanted else "no C compiler found (install gcc or set CC)"
-        raise VeiInputError(None, "vei fmu build", what)
-    return cc
 
 
 def model_sources(spec: ModelSpec, fmi: int) -> list[str]:
@@ -111,7 +101,7 @@ def _start_c(arr: str, vr: str, type_: str, start) -> str:
 
 def build_native(spec: ModelSpec, out_dir: Path, fmi: int = 2) -> Path:
     """Compile ``spec``'s model into ``out_dir/<identifier>.fmu`` (FMI ``fmi`` = 2 or 3)."""
-    src, hdr = c_source_dir(), fmi_header_dir()
+    src, core, hdr = c_source_dir(), source_dir(), fmi_header_dir()
     guid = model_description.guid(spec, f"native-fmi{fmi}")
     header_name = f"{spec.identifier}_variables.h"
     sources = model_sources(spec, fmi)
@@ -119,7 +109,7 @@ def build_native(spec: ModelSpec, out_dir: Path, fmi: int = 2) -> Path:
         build = Path(tmp)
         files: dict[str, bytes] = {}
         for name in (*sources, *HEADERS, f"{spec.name}_model.h"):
-            files[name] = (src / name).read_bytes()
+            files[name] = ((core if (core / name).is_file() else src) / name).read_bytes()
         for name in FMI_HEADERS[fmi]:
             files[name] = (hdr / name).read_bytes()
         files[header_name] = variables_header(spec, guid).encode()

@@ -2,28 +2,35 @@
 
 from __future__ import annotations
 
+import array
 import bisect
 import math
 from dataclasses import dataclass, field
 
+from vei_scenario.core import _core
 from vei_scenario.models.vehicle import VehicleLimits
 
 
-def _wrap(a: float) -> float:
-    return (a + math.pi) % (2 * math.pi) - math.pi
-
-
 class Polyline:
-    """A trajectory shape: vertices with optional times and headings; evaluated by time or arc length."""
+    """A trajectory shape: vertices with optional times and headings; evaluated by time or arc length.
+
+    The evaluation is the compiled core's (``vei_models.c``, the same polyline the sweep kernel and
+    the FMUs step along); this class adds what the storyboard needs around it."""
 
     def __init__(self, xs: list[float], ys: list[float], hs: list[float | None], ts: list[float | None]) -> None:
         self.xs, self.ys, self.ts = xs, ys, ts
-        self.s = [0.0]
-        for i in range(1, len(xs)):
-            self.s.append(self.s[-1] + math.hypot(xs[i] - xs[i - 1], ys[i] - ys[i - 1]))
         seg = [math.atan2(ys[i + 1] - ys[i], xs[i + 1] - xs[i]) for i in range(len(xs) - 1)] or [hs[0] or 0.0]
         self.hs = [h if h is not None else seg[min(i, len(seg) - 1)] for i, h in enumerate(hs)]
         self.timed = all(t is not None for t in ts)
+        f64 = array.array
+        times = f64("d", ts).tobytes() if self.timed else b""
+        self.core = _core.Polyline(f64("d", xs).tobytes(), f64("d", ys).tobytes(), f64("d", self.hs).tobytes(), times)
+        self.s = self.core.arc_lengths()
+        self.at_s = self.core.at_s
+        self.project = self.core.project  # arc length of the closest point (the first of equally close)
+        if self.timed:
+            self.at_time = self.core.at_time
+            self.s_at_time = self.core.s_at_time
 
     @classmethod
     def unplaced(cls, ts: list[float | None]) -> Polyline:
@@ -38,17 +45,17 @@ class Polyline:
     def length(self) -> float:
         return self.s[-1]
 
-    def _lerp(self, i: int, f: float) -> tuple[float, float, float]:
-        j = min(i + 1, len(self.xs) - 1)
-        h0, h1 = self.hs[i], self.hs[j]
-        return (
-            self.xs[i] + f * (self.xs[j] - self.xs[i]),
-            self.ys[i] + f * (self.ys[j] - self.ys[i]),
-            _wrap(h0 + f * _wrap(h1 - h0)),
-        )
+    _exit_speed: float | None = None
 
-    #: The speed it is left at, where a shape says so (a NURBS: its mean over the last metre or so)
-    exit_speed: float | None = None
+    @property
+    def exit_speed(self) -> float | None:
+        """The speed it is left at, where a shape says so (a NURBS: its mean over the last metre or so)."""
+        return self._exit_speed
+
+    @exit_speed.setter
+    def exit_speed(self, value: float | None) -> None:
+        self._exit_speed = value
+        self.core.set_exit_speed(math.nan if value is None else value)
 
     @property
     def end_speed(self) -> float:
@@ -57,28 +64,11 @@ class Polyline:
             return self.exit_speed
         return (self.s[-1] - self.s[-2]) / (self.ts[-1] - self.ts[-2])
 
-    def at_time(self, t: float) -> tuple[float, float, float]:
-        """Pose at trajectory time ``t``: the first vertex before the first time (the road user waits
-        where its recording starts); after the last time it carries on along the last vertex's heading
-        at :attr:`end_speed`, as esmini's default behaviour does once the trajectory action ends."""
-        ts = self.ts
-        if t <= ts[0]:
-            return self.xs[0], self.ys[0], self.hs[0]
-        if t >= ts[-1]:
-            d = (t - ts[-1]) * self.end_speed
-            h = self.hs[-1]
-            return self.xs[-1] + d * math.cos(h), self.ys[-1] + d * math.sin(h), h
-        i = bisect.bisect_right(ts, t) - 1
-        return self._lerp(i, (t - ts[i]) / (ts[i + 1] - ts[i]))
-
-    def at_s(self, s: float) -> tuple[float, float, float]:
-        if s <= 0:
-            return self.xs[0], self.ys[0], self.hs[0]
-        if s >= self.s[-1]:
-            return self.xs[-1], self.ys[-1], self.hs[-1]
-        i = bisect.bisect_right(self.s, s) - 1
-        ds = self.s[i + 1] - self.s[i]
-        return self._lerp(i, 0.0 if ds <= 0 else (s - self.s[i]) / ds)
+    # at_time(t): pose at trajectory time t: the first vertex before the first time (the road user
+    # waits where its recording starts); after the last time on along the last vertex's heading at
+    # end_speed, as esmini's default behaviour does once the trajectory action ends.
+    # s_at_time(t): arc length at trajectory time t, continued past the end the same way.
+    # at_s(s): pose at arc length s, clamped to the path. (All three: the core's, set in __init__.)
 
     def direction_at_s(self, s: float) -> float:
         """Direction of the segment at arc length ``s`` (the path's own heading, whatever headings its
@@ -87,29 +77,6 @@ class Polyline:
         while i > 0 and self.s[i + 1] - self.s[i] <= 0.0:  # (a repeated vertex has no direction)
             i -= 1
         return math.atan2(self.ys[i + 1] - self.ys[i], self.xs[i + 1] - self.xs[i])
-
-    def project(self, px: float, py: float) -> float:
-        """Arc length of the point of the path closest to (px, py) (the first of equally close ones)."""
-        best, best_d = 0.0, math.inf
-        xs, ys, ss = self.xs, self.ys, self.s
-        for i in range(len(xs) - 1):
-            ax, ay, bx, by = xs[i], ys[i], xs[i + 1], ys[i + 1]
-            L2 = (bx - ax) ** 2 + (by - ay) ** 2
-            f = 0.0 if L2 == 0 else max(0.0, min(1.0, ((px - ax) * (bx - ax) + (py - ay) * (by - ay)) / L2))
-            d = math.hypot(ax + f * (bx - ax) - px, ay + f * (by - ay) - py)
-            if d < best_d - 1e-12:
-                best, best_d = ss[i] + f * (ss[i + 1] - ss[i]), d
-        return best
-
-    def s_at_time(self, t: float) -> float:
-        """Arc length at trajectory time ``t`` (continued past the end as :meth:`at_time` does)."""
-        ts = self.ts
-        if t <= ts[0]:
-            return 0.0
-        if t >= ts[-1]:
-            return self.s[-1] + (t - ts[-1]) * self.end_speed
-        i = bisect.bisect_right(ts, t) - 1
-        return self.s[i] + (t - ts[i]) / (ts[i + 1] - ts[i]) * (self.s[i + 1] - self.s[i])
 
 
 @dataclass

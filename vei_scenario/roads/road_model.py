@@ -12,7 +12,6 @@ point onto roads and parses files itself, outside vei's hardened parser.
 
 from __future__ import annotations
 
-import bisect
 import math
 from dataclasses import dataclass, field
 from functools import cached_property
@@ -20,26 +19,21 @@ from pathlib import Path
 
 import numpy as np
 
+from vei_scenario.core import _core
 from vei_scenario.errors import VeiInputError
 from vei_scenario.safe_xml import parse_xml
 
 _GL_X, _GL_W = np.polynomial.legendre.leggauss(24)
+_core.set_quadrature(_GL_X.tobytes(), _GL_W.tobytes())
 
-_KEYS: dict[int, tuple[list, list]] = {}
-
-
-def _keys(items: list, key) -> list:
-    """The sorted search keys of a list that never changes once loaded (geometries, sections, width
-    records), built once per list: a lookup stays O(log n), so a road of 100 000 geometries costs
-    what one does per step (building the keys at each call made runs quadratic)."""
-    hit = _KEYS.get(id(items))
-    if hit is not None and hit[0] is items:
-        return hit[1]
-    keys = [key(x) for x in items]
-    if len(_KEYS) > 100_000:  # (bounded: networks loaded again and again in a sweep come and go)
-        _KEYS.clear()
-    _KEYS[id(items)] = (items, keys)
-    return keys
+#: geometry kinds in the order of the core's codes (core/src/road.h)
+KINDS = ("line", "arc", "spiral", "poly3", "paramPoly3")
+_PARAMS = {
+    "arc": ("curvature",),
+    "spiral": ("curvStart", "curvEnd"),
+    "poly3": ("a", "b", "c", "d"),
+    "paramPoly3": ("aU", "bU", "cU", "dU", "aV", "bV", "cV", "dV"),
+}
 
 
 def _f(el, name: str, default: float = 0.0) -> float:
@@ -94,38 +88,21 @@ class Geometry:
             return np.ones_like(q), p["b"] + 2 * p["c"] * q + 3 * p["d"] * q * q
         return (p["bU"] + 2 * p["cU"] * q + 3 * p["dU"] * q * q, p["bV"] + 2 * p["cV"] * q + 3 * p["dV"] * q * q)
 
+    @cached_property
+    def _alone(self) -> _core.Road:
+        """This geometry as a road of its own (for checking a geometry before its road exists)."""
+        return _compiled_parts([self], [], [], [LaneSection(0.0, {})], self.s + self.length, False)
+
     def pose(self, ds: float) -> tuple[float, float, float]:
         """World pose of the reference line ``ds`` metres into this geometry."""
-        c, s_ = math.cos(self.hdg), math.sin(self.hdg)
-        if self.kind == "line":
-            return self.x + ds * c, self.y + ds * s_, self.hdg
-        if self.kind == "arc":
-            k = self.p["curvature"]
-            if abs(k) < 1e-12:
-                return self.x + ds * c, self.y + ds * s_, self.hdg
-            h = self.hdg + k * ds
-            return self.x + (math.sin(h) - s_) / k, self.y - (math.cos(h) - c) / k, h
-        if self.kind == "spiral":
-            k0, k1 = self.p["curvStart"], self.p["curvEnd"]
-            rate = (k1 - k0) / self.length if self.length > 0 else 0.0
-            u = 0.5 * ds * (_GL_X + 1.0)
-            h = self.hdg + k0 * u + 0.5 * rate * u * u
-            w = 0.5 * ds * _GL_W
-            return (
-                self.x + float(w @ np.cos(h)),
-                self.y + float(w @ np.sin(h)),
-                self.hdg + k0 * ds + 0.5 * rate * ds * ds,
-            )
-        s_tab, q_tab = self._table
-        q = float(np.interp(ds, s_tab, q_tab))
-        p = self.p
-        if self.kind == "poly3":
-            u, v = q, p["a"] + p["b"] * q + p["c"] * q * q + p["d"] * q**3
-        else:
-            u = p["aU"] + p["bU"] * q + p["cU"] * q * q + p["dU"] * q**3
-            v = p["aV"] + p["bV"] * q + p["cV"] * q * q + p["dV"] * q**3
-        du, dv = (float(np.asarray(a).reshape(-1)[0]) for a in self._derivatives(np.array([q])))
-        return self.x + u * c - v * s_, self.y + u * s_ + v * c, self.hdg + math.atan2(dv, du)
+        return self._alone.geometry_pose(0, ds)
+
+    def row(self, table_row: int) -> list[float]:
+        """This geometry as a row of the core's geometry array (core/src/road.h)."""
+        params = [self.p.get(k, 0.0) for k in _PARAMS.get(self.kind, ())]
+        n_tab = len(self._table[0]) if self._table is not None else 0
+        row = [self.s, self.x, self.y, self.hdg, self.length, KINDS.index(self.kind)]
+        return row + params + [0.0] * (8 - len(params)) + [table_row if n_tab else -1, n_tab]
 
 
 @dataclass
@@ -135,14 +112,13 @@ class Lane:
     widths: list[tuple[float, float, float, float, float]]  # (sOffset, a, b, c, d), sorted
     successor: int | None = None
     predecessor: int | None = None
+    #: the compiled road it belongs to and its lane section there (set by its Road)
+    core: _core.Road | None = field(default=None, repr=False, compare=False)
+    section: int = field(default=0, repr=False, compare=False)
 
     def width(self, ds: float) -> float:
-        if not self.widths:
-            return 0.0
-        k = max(0, bisect.bisect_right(_keys(self.widths, lambda w: w[0]), ds) - 1)
-        s0, a, b, c, d = self.widths[k]
-        u = ds - s0
-        return a + b * u + c * u * u + d * u**3
+        """Width ``ds`` metres into its lane section."""
+        return self.core.lane_width(self.section, self.id, ds)
 
 
 @dataclass
@@ -170,40 +146,30 @@ class Road:
     successor: Link | None
     rule: str = "RHT"
 
-    def ref_pose(self, s: float) -> tuple[float, float, float]:
-        s = min(max(s, 0.0), self.length)
-        k = max(0, bisect.bisect_right(_keys(self.geometries, lambda g: g.s), s) - 1)
-        g = self.geometries[k]
-        return g.pose(min(s - g.s, g.length))
-
     superelevation: list[tuple[float, float, float, float, float]] = field(default_factory=list)
 
-    def lane_offset(self, s: float) -> float:
-        return _cubic_at(self.offsets, s)
-
-    def roll(self, s: float) -> float:
-        """Superelevation (rad) at ``s``: a banked road is narrower seen from above by cos(roll)."""
-        return _cubic_at(self.superelevation, s)
+    def __post_init__(self) -> None:
+        self.core = _compiled(self)
+        for k, sec in enumerate(self.sections):
+            for lane in sec.lanes.values():
+                lane.core, lane.section = self.core, k
+        # the per-step questions, answered by the compiled road (core/src/road.c)
+        self.ref_pose = self.core.ref_pose  # (x, y, heading) of the reference line at s
+        self.lane_offset = self.core.lane_offset
+        self.roll = self.core.roll  # superelevation (rad): a banked road is narrower seen from above
+        self.section_index = self.core.section_index
+        self.lane_borders = self.core.lane_borders  # t of a lane's inner and outer border at s
+        self.lane_center_t = self.core.lane_center_t
+        self.curvature = self.core.curvature  # of the reference line (1/m, positive turning left)
+        self.lane_heading = self.core.lane_heading  # heading of the curve of constant t through s
+        self.world = self.core.world  # world x, y and reference heading of (s, t)
+        self.lane_at = self.core.lane_at  # the lane containing t at s (None off the road)
+        # dt/ds of a lane centre within its section: where lanes widen, narrow or the lane offset
+        # changes, whoever keeps the lane heads sideways too (as esmini's entities do)
+        self.lane_drift = self.core.lane_drift
 
     def section(self, s: float) -> LaneSection:
-        k = max(0, bisect.bisect_right(_keys(self.sections, lambda sec: sec.s), s + 1e-9) - 1)
-        return self.sections[k]
-
-    def section_index(self, s: float) -> int:
-        return max(0, bisect.bisect_right(_keys(self.sections, lambda sec: sec.s), s + 1e-9) - 1)
-
-    def lane_borders(self, s: float, lane_id: int) -> tuple[float, float]:
-        """t of the inner and outer border of lane ``lane_id`` at ``s``."""
-        sec = self.section(s)
-        if lane_id not in sec.lanes:
-            raise KeyError(lane_id)
-        ds = s - sec.s
-        sign = 1 if lane_id > 0 else -1
-        t = self.lane_offset(s)
-        for k in range(1, abs(lane_id)):
-            lane = sec.lanes.get(sign * k)
-            t += sign * (lane.width(ds) if lane else 0.0)
-        return t, t + sign * sec.lanes[lane_id].width(ds)
+        return self.sections[self.core.section_index(s)]
 
     def map_lane(self, lane_id: int, from_k: int, to_k: int) -> int | None:
         """The id lane ``lane_id`` of section ``from_k`` has in section ``to_k``, through the lane links
@@ -230,76 +196,15 @@ class Road:
         mapped = self.map_lane(lane_id, k, self.section_index(s_in))
         return self.lane_center_t(s_in, mapped if mapped is not None else lane_id)
 
-    def lane_center_t(self, s: float, lane_id: int) -> float:
-        inner, outer = self.lane_borders(s, lane_id)
-        return 0.5 * (inner + outer)
-
     @cached_property
     def varying_lanes(self) -> bool:
         """Whether a lane centre can run sideways: a lane offset or a lane width that is not constant."""
         polys = list(self.offsets) + [w for sec in self.sections for lane in sec.lanes.values() for w in lane.widths]
         return any(p[2] or p[3] or p[4] for p in polys)
 
-    def lane_drift(self, s: float, lane_id: int, eps: float = 0.05) -> float:
-        """dt/ds of lane ``lane_id``'s centre at ``s`` (within its lane section): where lanes widen,
-        narrow or the lane offset changes, the centre runs sideways and whoever keeps the lane heads
-        that way too (as esmini's entities do)."""
-        if not self.varying_lanes:
-            return 0.0
-        k = self.section_index(s)
-        lo, hi = self.section_span(k)
-        a, b = max(s - eps, lo), min(s + eps, hi)
-        if b <= a or lane_id not in self.sections[k].lanes:
-            return 0.0
-        return (self.lane_center_t(b, lane_id) - self.lane_center_t(a, lane_id)) / (b - a)
-
-    def curvature(self, s: float, eps: float = 0.05) -> float:
-        """Curvature of the reference line at ``s`` (1/m, positive turning left)."""
-        a, b = max(s - eps, 0.0), min(s + eps, self.length)
-        if b <= a:
-            return 0.0
-        dh = self.ref_pose(b)[2] - self.ref_pose(a)[2]
-        return math.atan2(math.sin(dh), math.cos(dh)) / (b - a)
-
-    def lane_heading(self, s: float, t: float, eps: float = 0.05) -> float:
-        """Heading of the curve at constant ``t`` through ``s``: the reference heading, turned where a
-        changing superelevation moves the curve sideways as seen from above."""
-        h = self.ref_pose(s)[2]
-        if not self.superelevation:
-            return h
-        a, b = max(s - eps, 0.0), min(s + eps, self.length)
-        if b <= a:
-            return h
-        dt_ds = t * (math.cos(self.roll(b)) - math.cos(self.roll(a))) / (b - a)
-        along = 1.0 - t * math.cos(self.roll(s)) * self.curvature(s)
-        return h + math.atan2(dt_ds, along)
-
-    def world(self, s: float, t: float) -> tuple[float, float, float]:
-        """World x, y and reference-line heading of road coordinates (s, t)."""
-        x, y, h = self.ref_pose(s)
-        if self.superelevation:
-            t *= math.cos(self.roll(s))
-        return x - t * math.sin(h), y + t * math.cos(h), h
-
-    def lane_at(self, s: float, t: float) -> int | None:
-        """The lane containing lateral position ``t`` at ``s`` (None off the road)."""
-        sec = self.section(s)
-        for lane_id in sec.lanes:
-            inner, outer = self.lane_borders(s, lane_id)
-            if min(inner, outer) - 1e-9 <= t <= max(inner, outer) + 1e-9 and inner != outer:
-                return lane_id
-        return None
-
     def drives_forward(self, lane_id: int) -> bool:
         """Whether traffic in ``lane_id`` moves towards increasing s (right-hand traffic: right lanes)."""
         return (lane_id < 0) == (self.rule != "LHT")
-
-    @cached_property
-    def samples(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        n = max(2, int(math.ceil(self.length / 0.5)) + 1)
-        ss = np.linspace(0.0, self.length, n)
-        pts = np.array([self.ref_pose(float(s))[:2] for s in ss])
-        return ss, pts[:, 0], pts[:, 1]
 
 
 @dataclass
@@ -369,17 +274,9 @@ class RoadNetwork:
         best: RoadPoint | None = None
         best_key = (2, math.inf)
         for road in self.roads.values():
-            ss, xs, ys = road.samples
-            d2 = (xs - x) ** 2 + (ys - y) ** 2
-            k = int(np.argmin(d2))
-            s = _refine(road, x, y, float(ss[k]), float(ss[1] - ss[0]))
-            rx, ry, rh = road.ref_pose(s)
-            t = -(x - rx) * math.sin(rh) + (y - ry) * math.cos(rh)
-            if road.superelevation:
-                t /= math.cos(road.roll(s))
-            along = (x - rx) * math.cos(rh) + (y - ry) * math.sin(rh)
-            lane = road.lane_at(s, t) if abs(along) < 0.5 else None
-            dist = 0.0 if lane is not None else math.hypot(x - rx, y - ry)
+            s, t, _along, dist, lane = road.core.locate(x, y)
+            if lane is not None:
+                dist = 0.0
             key = (0 if lane is not None and road.id == prefer_road else 1 if lane is not None else 2, dist)
             if lane is not None and key[0] == best_key[0]:
                 key = (key[0], abs(t))  # nested lanes (junctions): the closest reference line
@@ -434,19 +331,6 @@ class RoadNetwork:
             via_end = nxt.successor is not None and nxt.successor.kind == "junction" and nxt.successor.id == link.id
             return nxt, back[lane_id], not via_end
         return None
-
-
-def _refine(road: Road, x: float, y: float, s0: float, step: float) -> float:
-    """Arc length of the point of the reference line nearest (x, y) near ``s0`` (ternary search)."""
-    lo, hi = max(0.0, s0 - step), min(road.length, s0 + step)
-    for _ in range(40):
-        m1, m2 = lo + (hi - lo) / 3, hi - (hi - lo) / 3
-        p1, p2 = road.ref_pose(m1), road.ref_pose(m2)
-        if (p1[0] - x) ** 2 + (p1[1] - y) ** 2 <= (p2[0] - x) ** 2 + (p2[1] - y) ** 2:
-            hi = m2
-        else:
-            lo = m1
-    return 0.5 * (lo + hi)
 
 
 def _check_geometry(g: Geometry, el) -> None:
@@ -546,13 +430,41 @@ def _road(r) -> Road:
     )
 
 
-def _cubic_at(polys: list[tuple[float, float, float, float, float]], s: float) -> float:
-    """Value at ``s`` of OpenDRIVE's piecewise cubic records (s0, a, b, c, d); 0 before the first."""
-    if not polys:
-        return 0.0
-    k = bisect.bisect_right(_keys(polys, lambda p: p[0]), s) - 1
-    if k < 0:
-        return 0.0
-    s0, a, b, c, d = polys[k]
-    u = s - s0
-    return a + b * u + c * u * u + d * u**3
+def _compiled(road: Road) -> _core.Road:
+    return _compiled_parts(
+        road.geometries, road.offsets, road.superelevation, road.sections, road.length, road.varying_lanes
+    )
+
+
+def _compiled_parts(geometries, offsets, superelevation, sections, length: float, varying: bool) -> _core.Road:
+    """The compiled form of a road (core/src/road.h): its records as flat arrays, lanes in file order."""
+    rows, tab_s, tab_q, n_tab = [], [], [], 0
+    for g in geometries:
+        rows.append(g.row(n_tab))
+        if g._table is not None:
+            tab_s.append(g._table[0])
+            tab_q.append(g._table[1])
+            n_tab += len(g._table[0])
+    lanes, widths, lane0 = [], [], [0]
+    for k, sec in enumerate(sections):
+        for lane in sec.lanes.values():
+            lanes.append([k, lane.id, lane.type == "driving", len(widths), len(lane.widths)])
+            widths.extend(lane.widths)
+        lane0.append(len(lanes))
+
+    def f64(rows, cols: int) -> bytes:
+        return np.asarray(rows, dtype=np.float64).reshape(-1, cols).tobytes()
+
+    return _core.Road(
+        f64(rows, len(rows[0]) if rows else 1),
+        np.concatenate(tab_s).tobytes() if tab_s else b"",
+        np.concatenate(tab_q).tobytes() if tab_q else b"",
+        f64(offsets, 5),
+        f64(superelevation, 5),
+        f64([sec.s for sec in sections], 1),
+        np.asarray(lane0, dtype=np.intc).tobytes(),
+        f64(lanes, 5),
+        f64(widths, 5),
+        float(length),
+        bool(varying),
+    )

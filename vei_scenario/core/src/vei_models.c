@@ -320,6 +320,7 @@ void vei_polyline_at_s(const VeiPolyline *p, double s, double *x, double *y, dou
 
 /* Speed of the last segment of a timed polyline (Polyline.end_speed). */
 static double end_speed(const VeiPolyline *p) {
+    if (!isnan(p->exit_speed)) return p->exit_speed;
     const int e = p->n - 1;
     return (p->s[e] - p->s[e - 1]) / (p->t[e] - p->t[e - 1]);
 }

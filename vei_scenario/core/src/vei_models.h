@@ -1,4 +1,5 @@
-/* vei_models.h: the numerical models of vei-scenario in C, for the FMUs.
+/* vei_models.h: the numerical models of vei-scenario in C: the compiled core (vei_scenario.core), the
+ * sweep kernel and the FMUs.
  *
  * Each function mirrors a Python function of vei_scenario.models (or vei_scenario.interpreter) operation
  * for operation, so that the FMUs reproduce `vei run`; tests/test_fmus.py compares them on
@@ -72,6 +73,7 @@ typedef struct {
     const double *x, *y, *h, *t; /* t may be NULL (untimed) */
     double *s;                   /* cumulative arc length, filled by vei_polyline_init */
     int n;
+    double exit_speed;           /* speed kept after a timed end (a NURBS's); NAN: its last segment's */
 } VeiPolyline;
 
 void vei_polyline_init(VeiPolyline *p);

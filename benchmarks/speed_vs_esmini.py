@@ -1,0 +1,99 @@
+#!/usr/bin/env python3
+"""vei run beside esmini, scenario by scenario: is the interpreted run as fast as esmini's process?
+
+    python benchmarks/speed_vs_esmini.py [--esmini PATH] [--repeat N] [--markdown]
+
+For every esmini example and every Euro NCAP single execution that both players play: esmini's whole
+process (``--headless --fixed_timestep 0.01 --csv_logger --collision``, as the conformance runs), and
+vei's ``run_scenario`` after start-up (loading the scenario and its road, the run, the traces), each the
+median of N runs; the ratio vei / esmini, its median and worst. Start-up is the import of what
+``vei run`` needs, measured in fresh processes.
+"""
+
+from __future__ import annotations
+
+import argparse
+import statistics
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))
+
+from vei_scenario.conformance.esmini import find_esmini, run_esmini  # noqa: E402
+from vei_scenario.conformance.ncap import single_executions, values_of  # noqa: E402
+from vei_scenario.errors import VeiInputError  # noqa: E402
+from vei_scenario.interpreter import run_scenario  # noqa: E402
+
+
+def startup_s(repeat: int) -> tuple[float, float]:
+    """(median import time of vei run's modules, median bare interpreter start) in fresh processes."""
+    code = "import time; t = time.perf_counter(); import vei_scenario.runner, vei_scenario.interpreter; "
+    code += "print(time.perf_counter() - t)"
+    imports = [float(subprocess.run([sys.executable, "-c", code], capture_output=True, text=True).stdout)
+               for _ in range(repeat)]  # fmt: skip
+    bare = []
+    for _ in range(repeat):
+        a = time.perf_counter()
+        subprocess.run([sys.executable, "-c", "pass"], check=True)
+        bare.append(time.perf_counter() - a)
+    return statistics.median(imports), statistics.median(bare)
+
+
+def cases(esmini_dir: Path, ncap_dir: Path) -> list[tuple[str, Path, dict[str, str]]]:
+    out = [(p.name, p, {}) for p in sorted(esmini_dir.glob("*.xosc"))]
+    if ncap_dir.is_dir():
+        for variation in sorted(single_executions(ncap_dir)):
+            base, params = values_of(variation)
+            out.append((variation.name, base, params))
+    return out
+
+
+def main() -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--esmini", default=str(ROOT.parent / "shared" / "esmini" / "bin" / "esmini"))
+    ap.add_argument("--examples", default=str(ROOT.parent / "shared" / "esmini" / "xosc"))
+    ap.add_argument("--ncap", default=str(ROOT.parent / "shared" / "osc-ncap" / "OpenSCENARIO" / "NCAP"))
+    ap.add_argument("--repeat", type=int, default=3)
+    ap.add_argument("--markdown", action="store_true")
+    args = ap.parse_args()
+    esmini = find_esmini(args.esmini)
+    if esmini is None:
+        print(f"esmini not found at {args.esmini}", file=sys.stderr)
+        return 2
+    imports, bare = startup_s(args.repeat)
+    print(f"start-up: imports of vei run {imports:.3f} s (target ≤ 0.15 s); a bare python process {bare:.3f} s")
+    ratios: list[tuple[float, str]] = []
+    for name, path, params in cases(Path(args.examples), Path(args.ncap)):
+        try:
+            run_scenario(path, params, 0.01)  # warm: file caches, as esmini's repeated runs have them
+        except VeiInputError:
+            continue  # refused (an esmini controller, a traffic swarm): nothing to compare
+        try:
+            es = [run_esmini(esmini, path, 0.01, params or None).seconds for _ in range(args.repeat)]
+        except RuntimeError:
+            continue  # esmini fails on it
+        vei = []
+        for _ in range(args.repeat):
+            a = time.perf_counter()
+            run_scenario(path, params, 0.01)
+            vei.append(time.perf_counter() - a)
+        e, v = statistics.median(es), statistics.median(vei)
+        ratios.append((v / e, name))
+        row = (name, f"{v:.3f}", f"{e:.3f}", f"{v / e:.2f}")
+        print(
+            f"| {' | '.join(row)} |" if args.markdown else f"{row[0]:60s} vei {row[1]} s  esmini {row[2]} s  × {row[3]}"
+        )
+    values = [r for r, _ in ratios]
+    worst = max(ratios)
+    print(
+        f"{len(ratios)} scenarios: vei run / esmini median {statistics.median(values):.2f}, "
+        f"worst {worst[0]:.2f} ({worst[1]}); vei faster or equal on {sum(v <= 1 for v in values)}"
+    )
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

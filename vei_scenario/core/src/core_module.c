@@ -1,0 +1,418 @@
+/* vei_scenario.core._core: the compiled core as a Python extension (built with the package, see
+ * setup.py). Each call is one step's question of one road (METH_FASTCALL: no argument tuples), so a
+ * lane-keeping entity costs microseconds per step instead of tens. The numerics live in road.c; this
+ * file only converts arguments and owns the memory. */
+#define PY_SSIZE_T_CLEAN
+#include <Python.h>
+#include <string.h>
+
+#include "road.h"
+#include "vei_models.h"
+
+typedef struct {
+    PyObject_HEAD
+    vr_road r;
+    void *blocks[9];
+} RoadObject;
+
+static void Road_dealloc(RoadObject *self)
+{
+    vr_road_free(&self->r);
+    for (int i = 0; i < 9; i++) PyMem_Free(self->blocks[i]);
+    Py_TYPE(self)->tp_free((PyObject *)self);
+}
+
+/* a private copy of a bytes object's contents (its length in items of `size` bytes in *n) */
+static void *copy_bytes(RoadObject *self, int slot, PyObject *b, size_t size, int *n)
+{
+    if (!PyBytes_Check(b)) {
+        PyErr_SetString(PyExc_TypeError, "road arrays are passed as bytes");
+        return NULL;
+    }
+    Py_ssize_t len = PyBytes_GET_SIZE(b);
+    void *p = PyMem_Malloc(len > 0 ? (size_t)len : 1);
+    if (!p) {
+        PyErr_NoMemory();
+        return NULL;
+    }
+    memcpy(p, PyBytes_AS_STRING(b), (size_t)len);
+    self->blocks[slot] = p;
+    if (n) *n = (int)((size_t)len / size);
+    return p;
+}
+
+static int Road_init(RoadObject *self, PyObject *args, PyObject *kwds)
+{
+    PyObject *geom, *tab_s, *tab_q, *off, *sup, *sec_s, *sec_lane0, *lanes, *widths;
+    double length;
+    int varying;
+    if (!PyArg_ParseTuple(args, "SSSSSSSSSdp", &geom, &tab_s, &tab_q, &off, &sup, &sec_s, &sec_lane0, &lanes,
+                          &widths, &length, &varying))
+        return -1;
+    vr_road *r = &self->r;
+    int n, dummy;
+    if (!(r->geom = copy_bytes(self, 0, geom, sizeof(double) * VR_G_COLS, &r->n_geom))) return -1;
+    if (!(r->tab_s = copy_bytes(self, 1, tab_s, sizeof(double), &dummy))) return -1;
+    if (!(r->tab_q = copy_bytes(self, 2, tab_q, sizeof(double), &dummy))) return -1;
+    if (!(r->off = copy_bytes(self, 3, off, sizeof(double) * 5, &r->n_off))) return -1;
+    if (!(r->sup = copy_bytes(self, 4, sup, sizeof(double) * 5, &r->n_sup))) return -1;
+    if (!(r->sec_s = copy_bytes(self, 5, sec_s, sizeof(double), &r->n_sec))) return -1;
+    if (!(r->sec_lane0 = copy_bytes(self, 6, sec_lane0, sizeof(int), &n))) return -1;
+    if (!(r->lanes = copy_bytes(self, 7, lanes, sizeof(double) * VR_L_COLS, &dummy))) return -1;
+    if (!(r->widths = copy_bytes(self, 8, widths, sizeof(double) * 5, &dummy))) return -1;
+    if (r->n_geom < 1 || r->n_sec < 1 || n != r->n_sec + 1) {
+        PyErr_SetString(PyExc_ValueError, "a road needs a geometry and a lane section");
+        return -1;
+    }
+    r->length = length;
+    r->varying = varying;
+    return 0;
+}
+
+static int args_ok(Py_ssize_t nargs, Py_ssize_t want, const char *name)
+{
+    if (nargs == want) return 1;
+    PyErr_Format(PyExc_TypeError, "%s takes %zd arguments (%zd given)", name, want, nargs);
+    return 0;
+}
+
+#define ARG_D(i, v)                                 \
+    double v = PyFloat_AsDouble(args[i]);           \
+    if (v == -1.0 && PyErr_Occurred()) return NULL;
+#define ARG_I(i, v)                             \
+    long v = PyLong_AsLong(args[i]);            \
+    if (v == -1 && PyErr_Occurred()) return NULL;
+
+static PyObject *pose_tuple(const double *p) { return Py_BuildValue("(ddd)", p[0], p[1], p[2]); }
+
+static PyObject *no_lane(long lane)
+{
+    PyObject *key = PyLong_FromLong(lane);
+    if (key) {
+        PyErr_SetObject(PyExc_KeyError, key);
+        Py_DECREF(key);
+    }
+    return NULL;
+}
+
+static PyObject *Road_ref_pose(RoadObject *self, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (!args_ok(nargs, 1, "ref_pose")) return NULL;
+    ARG_D(0, s);
+    double p[3];
+    vr_ref_pose(&self->r, s, p);
+    return pose_tuple(p);
+}
+
+static PyObject *Road_geometry_pose(RoadObject *self, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (!args_ok(nargs, 2, "geometry_pose")) return NULL;
+    ARG_I(0, k);
+    ARG_D(1, ds);
+    if (k < 0 || k >= self->r.n_geom) return PyErr_Format(PyExc_IndexError, "no geometry %ld", k);
+    double p[3];
+    vr_geometry_pose(&self->r, (int)k, ds, p);
+    return pose_tuple(p);
+}
+
+static PyObject *Road_world(RoadObject *self, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (!args_ok(nargs, 2, "world")) return NULL;
+    ARG_D(0, s);
+    ARG_D(1, t);
+    double p[3];
+    vr_world(&self->r, s, t, p);
+    return pose_tuple(p);
+}
+
+static PyObject *Road_lane_borders(RoadObject *self, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (!args_ok(nargs, 2, "lane_borders")) return NULL;
+    ARG_D(0, s);
+    ARG_I(1, lane);
+    double inner, outer;
+    if (vr_lane_borders(&self->r, s, (int)lane, &inner, &outer) < 0) return no_lane(lane);
+    return Py_BuildValue("(dd)", inner, outer);
+}
+
+static PyObject *Road_lane_center_t(RoadObject *self, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (!args_ok(nargs, 2, "lane_center_t")) return NULL;
+    ARG_D(0, s);
+    ARG_I(1, lane);
+    double t;
+    if (vr_lane_center_t(&self->r, s, (int)lane, &t) < 0) return no_lane(lane);
+    return PyFloat_FromDouble(t);
+}
+
+static PyObject *Road_lane_width(RoadObject *self, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (!args_ok(nargs, 3, "lane_width")) return NULL;
+    ARG_I(0, section);
+    ARG_I(1, lane);
+    ARG_D(2, ds);
+    if (section < 0 || section >= self->r.n_sec) return PyErr_Format(PyExc_IndexError, "no section %ld", section);
+    int row = vr_lane_row(&self->r, (int)section, (int)lane);
+    if (row < 0) return no_lane(lane);
+    return PyFloat_FromDouble(vr_lane_width(&self->r, row, ds));
+}
+
+#define SCALAR_OF_S(name, expr)                                                          \
+    static PyObject *Road_##name(RoadObject *self, PyObject *const *args, Py_ssize_t nargs) \
+    {                                                                                    \
+        if (!args_ok(nargs, 1, #name)) return NULL;                                      \
+        ARG_D(0, s);                                                                     \
+        return PyFloat_FromDouble(expr);                                                 \
+    }
+SCALAR_OF_S(curvature, vr_curvature(&self->r, s))
+SCALAR_OF_S(lane_offset, vr_lane_offset(&self->r, s))
+SCALAR_OF_S(roll, vr_roll(&self->r, s))
+
+static PyObject *Road_section_index(RoadObject *self, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (!args_ok(nargs, 1, "section_index")) return NULL;
+    ARG_D(0, s);
+    return PyLong_FromLong(vr_section_index(&self->r, s));
+}
+
+static PyObject *Road_lane_heading(RoadObject *self, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (!args_ok(nargs, 2, "lane_heading")) return NULL;
+    ARG_D(0, s);
+    ARG_D(1, t);
+    return PyFloat_FromDouble(vr_lane_heading(&self->r, s, t));
+}
+
+static PyObject *Road_lane_at(RoadObject *self, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (!args_ok(nargs, 2, "lane_at")) return NULL;
+    ARG_D(0, s);
+    ARG_D(1, t);
+    int lane;
+    if (!vr_lane_at(&self->r, s, t, &lane)) Py_RETURN_NONE;
+    return PyLong_FromLong(lane);
+}
+
+static PyObject *Road_lane_drift(RoadObject *self, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (!args_ok(nargs, 2, "lane_drift")) return NULL;
+    ARG_D(0, s);
+    ARG_I(1, lane);
+    double drift;
+    if (vr_lane_drift(&self->r, s, (int)lane, &drift) < 0) return no_lane(lane);
+    return PyFloat_FromDouble(drift);
+}
+
+static PyObject *Road_locate(RoadObject *self, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (!args_ok(nargs, 2, "locate")) return NULL;
+    ARG_D(0, x);
+    ARG_D(1, y);
+    double s, t, along, dist;
+    int found, lane;
+    if (vr_locate(&self->r, x, y, &s, &t, &along, &dist, &found, &lane) < 0) return PyErr_NoMemory();
+    if (found) return Py_BuildValue("(ddddi)", s, t, along, dist, lane);
+    return Py_BuildValue("(ddddO)", s, t, along, dist, Py_None);
+}
+
+#define M(name, doc) {#name, (PyCFunction)(void (*)(void))Road_##name, METH_FASTCALL, doc}
+static PyMethodDef Road_methods[] = {
+    M(ref_pose, "ref_pose(s) -> (x, y, heading) of the reference line"),
+    M(geometry_pose, "geometry_pose(k, ds) -> pose ds metres into geometry k"),
+    M(world, "world(s, t) -> (x, y, reference heading)"),
+    M(lane_borders, "lane_borders(s, lane) -> (inner t, outer t); KeyError without the lane"),
+    M(lane_center_t, "lane_center_t(s, lane) -> t of the lane's centre; KeyError without the lane"),
+    M(lane_width, "lane_width(section, lane, ds) -> width ds metres into the section"),
+    M(curvature, "curvature(s) -> 1/m of the reference line, positive turning left"),
+    M(lane_offset, "lane_offset(s) -> t of the lane reference line"),
+    M(roll, "roll(s) -> superelevation in rad"),
+    M(section_index, "section_index(s) -> lane section at s"),
+    M(lane_heading, "lane_heading(s, t) -> heading of the curve of constant t"),
+    M(lane_at, "lane_at(s, t) -> lane id, or None off the road"),
+    M(lane_drift, "lane_drift(s, lane) -> dt/ds of the lane centre"),
+    M(locate, "locate(x, y) -> (s, t, along, distance, lane or None) of the nearest reference point"),
+    {NULL, NULL, 0, NULL},
+};
+
+static PyTypeObject RoadType = {
+    PyVarObject_HEAD_INIT(NULL, 0).tp_name = "vei_scenario.core._core.Road",
+    .tp_basicsize = sizeof(RoadObject),
+    .tp_dealloc = (destructor)Road_dealloc,
+    .tp_flags = Py_TPFLAGS_DEFAULT,
+    .tp_doc = "One OpenDRIVE road's geometry (see vei_scenario.roads.road_model.Road).",
+    .tp_methods = Road_methods,
+    .tp_init = (initproc)Road_init,
+    .tp_new = PyType_GenericNew,
+};
+
+/* ---------------------------------------------------------------------------------------------- */
+/* Polyline: a trajectory shape (vei_models.c), the one the interpreter, the kernel and the FMUs use */
+
+typedef struct {
+    PyObject_HEAD
+    VeiPolyline p;
+    double *mem; /* x, y, h, s and t in one block */
+} PolylineObject;
+
+static void Polyline_dealloc(PolylineObject *self)
+{
+    PyMem_Free(self->mem);
+    Py_TYPE(self)->tp_free((PyObject *)self);
+}
+
+static int Polyline_init(PolylineObject *self, PyObject *args, PyObject *kwds)
+{
+    PyObject *xb, *yb, *hb, *tb;
+    if (!PyArg_ParseTuple(args, "SSSS", &xb, &yb, &hb, &tb)) return -1;
+    Py_ssize_t n = PyBytes_GET_SIZE(xb) / (Py_ssize_t)sizeof(double);
+    int timed = PyBytes_GET_SIZE(tb) > 0;
+    if (n < 1 || n > 100000000 || PyBytes_GET_SIZE(yb) != PyBytes_GET_SIZE(xb) ||
+        PyBytes_GET_SIZE(hb) != PyBytes_GET_SIZE(xb) || (timed && PyBytes_GET_SIZE(tb) != PyBytes_GET_SIZE(xb))) {
+        PyErr_SetString(PyExc_ValueError, "a polyline needs as many x, y, h (and t) as vertices, at least one");
+        return -1;
+    }
+    if (self->mem) return 0; /* (initialised once) */
+    double *mem = PyMem_Malloc(sizeof(double) * (size_t)n * 5);
+    if (!mem) {
+        PyErr_NoMemory();
+        return -1;
+    }
+    size_t bytes = sizeof(double) * (size_t)n;
+    memcpy(mem, PyBytes_AS_STRING(xb), bytes);
+    memcpy(mem + n, PyBytes_AS_STRING(yb), bytes);
+    memcpy(mem + 2 * n, PyBytes_AS_STRING(hb), bytes);
+    if (timed) memcpy(mem + 4 * n, PyBytes_AS_STRING(tb), bytes);
+    self->mem = mem;
+    self->p.x = mem;
+    self->p.y = mem + n;
+    self->p.h = mem + 2 * n;
+    self->p.s = mem + 3 * n;
+    self->p.t = timed ? mem + 4 * n : NULL;
+    self->p.n = (int)n;
+    self->p.exit_speed = Py_NAN;
+    vei_polyline_init(&self->p);
+    return 0;
+}
+
+static PyObject *xyh(double x, double y, double h) { return Py_BuildValue("(ddd)", x, y, h); }
+
+static PyObject *Polyline_at_s(PolylineObject *self, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (!args_ok(nargs, 1, "at_s")) return NULL;
+    ARG_D(0, s);
+    double x, y, h;
+    vei_polyline_at_s(&self->p, s, &x, &y, &h);
+    return xyh(x, y, h);
+}
+
+static int timed_ok(PolylineObject *self)
+{
+    if (self->p.t != NULL) return 1;
+    PyErr_SetString(PyExc_ValueError, "the polyline has no vertex times");
+    return 0;
+}
+
+static PyObject *Polyline_at_time(PolylineObject *self, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (!args_ok(nargs, 1, "at_time") || !timed_ok(self)) return NULL;
+    ARG_D(0, t);
+    double x, y, h;
+    if (self->p.n == 1) return xyh(self->p.x[0], self->p.y[0], self->p.h[0]); /* a single vertex: it stays */
+    vei_polyline_at_time(&self->p, t, &x, &y, &h);
+    return xyh(x, y, h);
+}
+
+static PyObject *Polyline_s_at_time(PolylineObject *self, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (!args_ok(nargs, 1, "s_at_time") || !timed_ok(self)) return NULL;
+    ARG_D(0, t);
+    return PyFloat_FromDouble(self->p.n == 1 ? 0.0 : vei_polyline_s_at_time(&self->p, t));
+}
+
+static PyObject *Polyline_project(PolylineObject *self, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (!args_ok(nargs, 2, "project")) return NULL;
+    ARG_D(0, x);
+    ARG_D(1, y);
+    return PyFloat_FromDouble(vei_polyline_project(&self->p, x, y));
+}
+
+static PyObject *Polyline_set_exit_speed(PolylineObject *self, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (!args_ok(nargs, 1, "set_exit_speed")) return NULL;
+    ARG_D(0, v);
+    self->p.exit_speed = v;
+    Py_RETURN_NONE;
+}
+
+static PyObject *Polyline_arc_lengths(PolylineObject *self, PyObject *unused)
+{
+    PyObject *out = PyList_New(self->p.n);
+    if (!out) return NULL;
+    for (int i = 0; i < self->p.n; i++) {
+        PyObject *v = PyFloat_FromDouble(self->p.s[i]);
+        if (!v) {
+            Py_DECREF(out);
+            return NULL;
+        }
+        PyList_SET_ITEM(out, i, v);
+    }
+    return out;
+}
+
+#define PM(name, doc) {#name, (PyCFunction)(void (*)(void))Polyline_##name, METH_FASTCALL, doc}
+static PyMethodDef Polyline_methods[] = {
+    PM(at_s, "at_s(s) -> (x, y, h) at arc length s (clamped to the path)"),
+    PM(at_time, "at_time(t) -> (x, y, h) at trajectory time t; on along the last heading after the end"),
+    PM(s_at_time, "s_at_time(t) -> arc length at trajectory time t (continued past the end)"),
+    PM(project, "project(x, y) -> arc length of the closest point (the first of equally close ones)"),
+    PM(set_exit_speed, "set_exit_speed(v): the speed kept after the end (NaN: the last segment's)"),
+    {"arc_lengths", (PyCFunction)Polyline_arc_lengths, METH_NOARGS, "arc_lengths() -> cumulative arc length"},
+    {NULL, NULL, 0, NULL},
+};
+
+static PyTypeObject PolylineType = {
+    PyVarObject_HEAD_INIT(NULL, 0).tp_name = "vei_scenario.core._core.Polyline",
+    .tp_basicsize = sizeof(PolylineObject),
+    .tp_dealloc = (destructor)Polyline_dealloc,
+    .tp_flags = Py_TPFLAGS_DEFAULT,
+    .tp_doc = "A trajectory shape: vertices with headings and optional times (vei_models.c).",
+    .tp_methods = Polyline_methods,
+    .tp_init = (initproc)Polyline_init,
+    .tp_new = PyType_GenericNew,
+};
+
+static PyObject *set_quadrature(PyObject *mod, PyObject *args)
+{
+    PyObject *xb, *wb;
+    if (!PyArg_ParseTuple(args, "SS", &xb, &wb)) return NULL;
+    if (PyBytes_GET_SIZE(xb) != 24 * sizeof(double) || PyBytes_GET_SIZE(wb) != 24 * sizeof(double)) {
+        PyErr_SetString(PyExc_ValueError, "24 Gauss-Legendre nodes and weights expected");
+        return NULL;
+    }
+    vr_set_quadrature((const double *)PyBytes_AS_STRING(xb), (const double *)PyBytes_AS_STRING(wb));
+    Py_RETURN_NONE;
+}
+
+static PyMethodDef module_methods[] = {
+    {"set_quadrature", set_quadrature, METH_VARARGS, "set_quadrature(nodes, weights): 24 doubles each"},
+    {NULL, NULL, 0, NULL},
+};
+
+static struct PyModuleDef core_module = {PyModuleDef_HEAD_INIT, "_core", "vei-scenario's compiled core.", -1,
+                                         module_methods};
+
+PyMODINIT_FUNC PyInit__core(void)
+{
+    if (PyType_Ready(&RoadType) < 0 || PyType_Ready(&PolylineType) < 0) return NULL;
+    PyObject *m = PyModule_Create(&core_module);
+    if (!m) return NULL;
+    Py_INCREF(&RoadType);
+    Py_INCREF(&PolylineType);
+    if (PyModule_AddObject(m, "Road", (PyObject *)&RoadType) < 0 ||
+        PyModule_AddObject(m, "Polyline", (PyObject *)&PolylineType) < 0) {
+        Py_DECREF(m);
+        return NULL;
+    }
+    return m;
+}
