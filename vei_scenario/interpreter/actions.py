@@ -117,8 +117,7 @@ def lane_keep(e, ds: float, ctx) -> None:
     road = net.road(st.road)
     forward = st.forward
     # ds is travelled along the lane: scale to reference-line arc length where the lane is offset on a curve
-    t_now = road.lane_center_t(st.s, st.lane) + st.offset
-    stretch = max(1.0 - t_now * road.curvature(st.s), 0.05)
+    stretch = road.lane_stretch(st.s, st.lane, st.offset)
     if e.lateral is not None and e.lateral.projects_step:  # only the along-road part of the step moves s
         road_h = road.ref_pose(st.s)[2] + (0.0 if forward else math.pi)
         ds *= abs(math.cos(e.yaw - road_h))
@@ -169,14 +168,11 @@ def lane_keep(e, ds: float, ctx) -> None:
     st.road, st.s = road.id, s
     if e.lateral is not None:
         st.offset = e.lateral.offset(e, ctx, road)
-    t = road.lane_center_t(s, st.lane) + st.offset
-    x, y, h = road.world(s, t)
+    # where it is, and the heading of its lane there (along a lane centre that runs sideways, where a
+    # lane widens or narrows)
+    x, y, base, _t = road.lane_pose(s, st.lane, st.offset)
     moved = math.hypot(x - e.x, y - e.y)
     e.x, e.y = x, y
-    base = road.lane_heading(s, t)
-    drift = road.lane_drift(s, st.lane)
-    if drift:  # the lane centre runs sideways (a lane widening or narrowing): it heads along it
-        base += math.atan2(drift, max(1.0 - t * road.curvature(s), 0.05))
     base = base if forward else base + math.pi
     e.yaw = math.atan2(math.sin(base + st.heading), math.cos(base + st.heading))
     if e.lateral is not None and moved > 1e-9:

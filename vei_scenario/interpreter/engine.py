@@ -10,11 +10,13 @@ from __future__ import annotations
 
 import copy
 import math
+from array import array
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
+from vei_scenario.core import _core
 from vei_scenario.interpreter import trailers
 from vei_scenario.interpreter.actions import (
     ParameterSet,
@@ -30,7 +32,6 @@ from vei_scenario.interpreter.entities import Entity
 from vei_scenario.interpreter.positions import ensure_lane
 from vei_scenario.interpreter.shapes import placed_when_built, polyline_from
 from vei_scenario.interpreter.storyboard import COMPLETE, RUNNING, STANDBY, Context, Element, Trigger
-from vei_scenario.models.boxes import boxes_overlap_scalar
 from vei_scenario.models.vehicle import VehicleLimits
 
 #: Actions that only set a value (a signal state, a variable, a parameter): esmini carries them out as
@@ -566,19 +567,11 @@ class Simulation:
         ctx = self.ctx
         names = [n for n, e in ctx.entities.items() if not e.deleted]
         now: set[frozenset[str]] = set()
-        boxes = {n: ctx.entities[n].box() for n in names}
-        # circumscribed radii: boxes whose circles are apart (margin 1e-9) cannot overlap
-        radius = {n: 0.5 * math.hypot(b[3], b[4]) * (1 + 1e-9) for n, b in boxes.items()}
-        for i, a in enumerate(names):
-            ba, ra = boxes[a], radius[a]
-            for b in names[i + 1 :]:
-                bb = boxes[b]
-                reach = ra + radius[b]
-                if (bb[0] - ba[0]) ** 2 + (bb[1] - ba[1]) ** 2 > reach * reach:
-                    continue
-                if boxes_overlap_scalar(ba, bb):
-                    pair = frozenset((a, b))
-                    now.add(pair)
-                    if pair not in ctx.colliding:
-                        collisions.append((ctx.t, a, b))
+        boxes = array("d", [v for n in names for v in ctx.entities[n].box()])
+        for i, j in _core.overlapping(boxes.tobytes()):  # every pair, in C (the core's box overlap)
+            a, b = names[i], names[j]
+            pair = frozenset((a, b))
+            now.add(pair)
+            if pair not in ctx.colliding:
+                collisions.append((ctx.t, a, b))
         ctx.colliding = now

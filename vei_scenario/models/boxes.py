@@ -102,23 +102,6 @@ def time_to_contact(xa, ya, yawa, la, wa, vxa, vya, xb, yb, yawb, lb, wb, vxb, v
     return np.where(hit, np.maximum(enter, 0.0), np.inf)
 
 
-def boxes_overlap_scalar(
-    a: tuple[float, float, float, float, float], b: tuple[float, float, float, float, float]
-) -> bool:
-    """:func:`boxes_overlap` for one pair of (x, y, yaw, length, width) boxes, in plain floats: the
-    interpreter calls it for every pair at every step, where numpy's per-call overhead would dominate."""
-    xa, ya, yawa, la, wa = a
-    xb, yb, yawb, lb, wb = b
-    dx, dy = xb - xa, yb - ya
-    ca, sa, cb, sb = math.cos(yawa), math.sin(yawa), math.cos(yawb), math.sin(yawb)
-    for ux, uy in ((ca, sa), (-sa, ca), (cb, sb), (-sb, cb)):
-        ra = 0.5 * la * abs(ux * ca + uy * sa) + 0.5 * wa * abs(-ux * sa + uy * ca)
-        rb = 0.5 * lb * abs(ux * cb + uy * sb) + 0.5 * wb * abs(-ux * sb + uy * cb)
-        if abs(dx * ux + dy * uy) > ra + rb:
-            return False
-    return True
-
-
 def time_to_contact_scalar(a, va, b, vb) -> float:
     """:func:`time_to_contact` for one pair: boxes (x, y, yaw, length, width), velocities (vx, vy)."""
     xa, ya, yawa, la, wa = a

@@ -167,6 +167,9 @@ class Road:
         # dt/ds of a lane centre within its section: where lanes widen, narrow or the lane offset
         # changes, whoever keeps the lane heads sideways too (as esmini's entities do)
         self.lane_drift = self.core.lane_drift
+        # a lane-keeping step in one call: (x, y, lane heading, t) at s, and the along-lane stretch
+        self.lane_pose = self.core.lane_pose
+        self.lane_stretch = self.core.lane_stretch
 
     def section(self, s: float) -> LaneSection:
         return self.sections[self.core.section_index(s)]

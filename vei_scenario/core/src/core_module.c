@@ -4,6 +4,7 @@
  * file only converts arguments and owns the memory. */
 #define PY_SSIZE_T_CLEAN
 #include <Python.h>
+#include <math.h>
 #include <string.h>
 
 #include "road.h"
@@ -203,6 +204,28 @@ static PyObject *Road_lane_drift(RoadObject *self, PyObject *const *args, Py_ssi
     return PyFloat_FromDouble(drift);
 }
 
+static PyObject *Road_lane_pose(RoadObject *self, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (!args_ok(nargs, 3, "lane_pose")) return NULL;
+    ARG_D(0, s);
+    ARG_I(1, lane);
+    ARG_D(2, offset);
+    double out[4];
+    if (vr_lane_pose(&self->r, s, (int)lane, offset, out) < 0) return no_lane(lane);
+    return Py_BuildValue("(dddd)", out[0], out[1], out[2], out[3]);
+}
+
+static PyObject *Road_lane_stretch(RoadObject *self, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (!args_ok(nargs, 3, "lane_stretch")) return NULL;
+    ARG_D(0, s);
+    ARG_I(1, lane);
+    ARG_D(2, offset);
+    double stretch;
+    if (vr_lane_stretch(&self->r, s, (int)lane, offset, &stretch) < 0) return no_lane(lane);
+    return PyFloat_FromDouble(stretch);
+}
+
 static PyObject *Road_locate(RoadObject *self, PyObject *const *args, Py_ssize_t nargs)
 {
     if (!args_ok(nargs, 2, "locate")) return NULL;
@@ -230,6 +253,8 @@ static PyMethodDef Road_methods[] = {
     M(lane_heading, "lane_heading(s, t) -> heading of the curve of constant t"),
     M(lane_at, "lane_at(s, t) -> lane id, or None off the road"),
     M(lane_drift, "lane_drift(s, lane) -> dt/ds of the lane centre"),
+    M(lane_pose, "lane_pose(s, lane, offset) -> (x, y, lane heading, t) of a road user keeping the lane"),
+    M(lane_stretch, "lane_stretch(s, lane, offset) -> reference-line metres per metre along the lane"),
     M(locate, "locate(x, y) -> (s, t, along, distance, lane or None) of the nearest reference point"),
     {NULL, NULL, 0, NULL},
 };
@@ -394,7 +419,38 @@ static PyObject *set_quadrature(PyObject *mod, PyObject *args)
     Py_RETURN_NONE;
 }
 
+/* overlapping(boxes) -> [(i, j), ...]: the pairs of (x, y, yaw, length, width) boxes that overlap, i < j
+ * (circumscribed circles apart by more than a relative 1e-9 cannot overlap: skipped) */
+static PyObject *overlapping(PyObject *mod, PyObject *arg)
+{
+    if (!PyBytes_Check(arg)) {
+        PyErr_SetString(PyExc_TypeError, "overlapping takes the boxes as bytes of doubles");
+        return NULL;
+    }
+    const VeiBox *b = (const VeiBox *)PyBytes_AS_STRING(arg);
+    Py_ssize_t n = PyBytes_GET_SIZE(arg) / (Py_ssize_t)sizeof(VeiBox);
+    PyObject *out = PyList_New(0);
+    if (!out) return NULL;
+    for (Py_ssize_t i = 0; i < n; i++) {
+        double ri = 0.5 * hypot(b[i].length, b[i].width) * (1 + 1e-9);
+        for (Py_ssize_t j = i + 1; j < n; j++) {
+            double reach = ri + 0.5 * hypot(b[j].length, b[j].width) * (1 + 1e-9);
+            double dx = b[j].x - b[i].x, dy = b[j].y - b[i].y;
+            if (dx * dx + dy * dy > reach * reach || !vei_boxes_overlap(&b[i], &b[j])) continue;
+            PyObject *pair = Py_BuildValue("(nn)", i, j);
+            if (!pair || PyList_Append(out, pair) < 0) {
+                Py_XDECREF(pair);
+                Py_DECREF(out);
+                return NULL;
+            }
+            Py_DECREF(pair);
+        }
+    }
+    return out;
+}
+
 static PyMethodDef module_methods[] = {
+    {"overlapping", overlapping, METH_O, "overlapping(boxes) -> pairs (i, j) of overlapping boxes"},
     {"set_quadrature", set_quadrature, METH_VARARGS, "set_quadrature(nodes, weights): 24 doubles each"},
     {NULL, NULL, 0, NULL},
 };

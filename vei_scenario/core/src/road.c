@@ -240,6 +240,30 @@ int vr_lane_drift(const vr_road *r, double s, int lane_id, double *drift)
     return 0;
 }
 
+int vr_lane_pose(const vr_road *r, double s, int lane_id, double offset, double *out)
+{
+    double centre, drift, w[3];
+    if (vr_lane_center_t(r, s, lane_id, &centre) < 0) return -1;
+    double t = centre + offset;
+    vr_world(r, s, t, w);
+    double base = vr_lane_heading(r, s, t);
+    if (vr_lane_drift(r, s, lane_id, &drift) < 0) return -1;
+    if (drift != 0.0) base += atan2(drift, fmax(1.0 - t * vr_curvature(r, s), 0.05));
+    out[0] = w[0];
+    out[1] = w[1];
+    out[2] = base;
+    out[3] = t;
+    return 0;
+}
+
+int vr_lane_stretch(const vr_road *r, double s, int lane_id, double offset, double *stretch)
+{
+    double centre;
+    if (vr_lane_center_t(r, s, lane_id, &centre) < 0) return -1;
+    *stretch = fmax(1.0 - (centre + offset) * vr_curvature(r, s), 0.05);
+    return 0;
+}
+
 int vr_road_init(vr_road *r)
 {
     if (r->samp_s) return 0;

@@ -59,6 +59,11 @@ double vr_lane_heading(const vr_road *r, double s, double t);
 void vr_world(const vr_road *r, double s, double t, double *out3);
 int vr_lane_at(const vr_road *r, double s, double t, int *lane_id); /* 1 found, 0 off the road */
 int vr_lane_drift(const vr_road *r, double s, int lane_id, double *drift);
+/* Where a road user keeping lane `lane_id` at `offset` from its centre is at s: x, y, the heading
+ * of its lane there (turned where the lane centre runs sideways) and its t. -1: no such lane. */
+int vr_lane_pose(const vr_road *r, double s, int lane_id, double offset, double *out4);
+/* The factor from distance along a lane (at `offset` from its centre) to reference-line arc length. */
+int vr_lane_stretch(const vr_road *r, double s, int lane_id, double offset, double *stretch);
 /* nearest point of the reference line: s, t, along, distance to it; and the lane there */
 int vr_locate(vr_road *r, double x, double y, double *s, double *t, double *along, double *dist,
               int *found, int *lane_id); /* -1 when out of memory */
