@@ -15,7 +15,8 @@ from vei_scenario.language.behaviours import BEHAVIOURS
 from vei_scenario.language.describe import describe_batch
 from vei_scenario.language.layers import schema_problems
 from vei_scenario.language.paper import DESCRIPTIONS
-from vei_scenario.language.rules_backend import NotUnderstood, layers_from_text, read
+from vei_scenario.language.reading import NotUnderstood
+from vei_scenario.language.rules_backend import layers_from_text, read
 from vei_scenario.language.scenario_writer import write_scenario
 from vei_scenario.openscenario.validation import validate_files
 

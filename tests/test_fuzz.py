@@ -195,7 +195,7 @@ JSON_VALUES = st.recursive(JSON_LEAVES, _containers, max_leaves=20)
 @FAST
 @given(st.dictionaries(st.sampled_from(["format", "id", "ego", "annotations", "map", "extensions", "x"]), JSON_VALUES))
 def test_clip_documents_load_or_are_refused(tmp_path_factory, doc):
-    from vei_scenario.clip.loader import load_clip
+    from vei_scenario.clip import load_clip
 
     path = tmp_path_factory.mktemp("clip") / "c.json"
     path.write_text(json.dumps({"format": "vei-clip/1", **doc}))
@@ -220,7 +220,7 @@ def test_layers_documents_are_validated_or_refused(doc):
 @FAST
 @given(st.integers(min_value=1, max_value=20000), st.sampled_from(["[", '{"a":']), st.sampled_from(["1e400", "1"]))
 def test_deep_or_overflowing_json_is_refused(tmp_path_factory, depth, opener, leaf):
-    from vei_scenario.clip.loader import load_clip
+    from vei_scenario.clip import load_clip
 
     closer = "]" if opener == "[" else "}"
     path = tmp_path_factory.mktemp("deep") / "c.json"

@@ -17,6 +17,7 @@ from pathlib import Path
 
 import numpy as np
 
+from vei_scenario.interpreter.conditions import compare
 from vei_scenario.interpreter.controllers import (
     CollisionAvoidanceController,
     SocialForceController,
@@ -26,7 +27,6 @@ from vei_scenario.interpreter.controllers import (
 from vei_scenario.interpreter.document import load_scenario, resolve_value
 from vei_scenario.interpreter.engine import Simulation
 from vei_scenario.interpreter.entities import Polyline
-from vei_scenario.interpreter.storyboard import compare
 from vei_scenario.models.boxes import boxes_overlap, time_to_contact
 from vei_scenario.models.cap import CapParameters, cap_step_arrays
 from vei_scenario.models.sfm import SfmParameters, sfm_step_arrays
@@ -208,7 +208,7 @@ class BatchScenario:
             raise NotBatchable("every entity needs an Init teleport and speed")
         # Trajectories of the replay story, one per entity.
         self.paths, self.offset_raw = {}, {}
-        for act in sim.stories[0].children:
+        for act in sim.storyboard.stories[0].children:
             if act.start_trigger is None:
                 raise NotBatchable("acts must start on SimulationTime > 0")
             for group in act.children:

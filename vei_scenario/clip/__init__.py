@@ -1,6 +1,21 @@
 """Clip input: the ``vei-clip/1`` contract (JSON Schema plus the checks a schema cannot express)."""
 
-from vei_scenario.clip.loader import load_clip
+from pathlib import Path
+
+from vei_scenario.clip.loader import clip_from_document, read_json
 from vei_scenario.clip.model import SCOOTER_CATEGORIES, Annotations, Clip, EgoTrack, Observation
 
 __all__ = ["SCOOTER_CATEGORIES", "Annotations", "Clip", "EgoTrack", "Observation", "load_clip"]
+
+
+def load_clip(path: str | Path) -> Clip:
+    """Read, validate and normalise a clip file: ``vei-clip/1`` JSON, or ASAM OpenLABEL 1.0 JSON (a
+    top-level ``openlabel`` object, see :mod:`vei_scenario.clip.openlabel`). Raises
+    :class:`VeiInputError` on any bad input."""
+    path = Path(path)
+    doc = read_json(path)
+    if isinstance(doc, dict) and "openlabel" in doc:
+        from vei_scenario.clip.openlabel import clip_from_openlabel  # (the VCD library: only for OpenLABEL)
+
+        return clip_from_openlabel(path, doc)
+    return clip_from_document(path, doc)

@@ -110,19 +110,6 @@ def _strictly_increasing(path: Path, values: np.ndarray, field: str) -> None:
         )
 
 
-def load_clip(path: str | Path) -> Clip:
-    """Read, validate and normalise a clip file: ``vei-clip/1`` JSON, or ASAM OpenLABEL 1.0 JSON (a
-    top-level ``openlabel`` object, see :mod:`vei_scenario.clip.openlabel`). Raises
-    :class:`VeiInputError` on any bad input."""
-    path = Path(path)
-    doc = read_json(path)
-    if isinstance(doc, dict) and "openlabel" in doc:
-        from vei_scenario.clip.openlabel import clip_from_openlabel
-
-        return clip_from_openlabel(path, doc)
-    return clip_from_document(path, doc)
-
-
 def clip_from_document(path: Path, doc: Any) -> Clip:
     """A ``vei-clip/1`` document (already parsed) checked and normalised; ``path`` names it in errors
     and anchors the map file."""

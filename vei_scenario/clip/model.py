@@ -66,3 +66,11 @@ class Clip:
     annotations: Annotations
     osm_path: Path | None
     extensions: dict = field(default_factory=dict)
+
+
+def local_tmerc(lat0_deg: float, lon0_deg: float) -> str:
+    """The PROJ string of a clip's local frame: transverse Mercator on WGS84 centred on its first ego
+    sample (metres east and north). An OpenLABEL clip carries it; the reconstruction projects with it."""
+    return (
+        f"+proj=tmerc +lat_0={lat0_deg:.10f} +lon_0={lon0_deg:.10f} +k=1 +x_0=0 +y_0=0 +ellps=WGS84 +units=m +no_defs"
+    )

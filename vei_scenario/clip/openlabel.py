@@ -40,6 +40,8 @@ from typing import Any
 
 import numpy as np
 
+from vei_scenario.clip.loader import clip_from_document, read_json
+from vei_scenario.clip.model import local_tmerc
 from vei_scenario.errors import VeiInputError
 
 EGO_FRAME = "vehicle-iso8855"
@@ -433,8 +435,6 @@ def openlabel_to_clip_document(path: Path, doc: dict) -> tuple[dict, dict[str, s
 def clip_from_openlabel(path: Path, doc: dict):
     """A :class:`~vei_scenario.clip.model.Clip` from an OpenLABEL document: converted, then checked as
     a vei-clip (times, spans, tracks), errors naming the OpenLABEL paths."""
-    from vei_scenario.clip.loader import clip_from_document
-
     clip_doc, paths = openlabel_to_clip_document(path, doc)
     try:
         return clip_from_document(path, clip_doc)
@@ -533,8 +533,6 @@ def convert_clip(src: str | Path, dst: str | Path, to: str | None = None) -> tup
     import json
 
     from vei_scenario.atomic_io import write_bytes_atomic
-    from vei_scenario.clip.loader import clip_from_document, read_json
-    from vei_scenario.geometry.projection import LocalProjection
 
     src, dst = Path(src), Path(dst)
     doc = read_json(src)
@@ -562,7 +560,7 @@ def convert_clip(src: str | Path, dst: str | Path, to: str | None = None) -> tup
             clip_doc = dict(
                 clip_doc, map=dict(clip_doc["map"], osm=os.path.relpath(clip.osm_path, dst.resolve().parent))
             )
-        proj = LocalProjection(float(clip.ego.lat[0]), float(clip.ego.lon[0])).proj_string
+        proj = local_tmerc(float(clip.ego.lat[0]), float(clip.ego.lon[0]))
         # as JSON has it (string frame keys), checked against the schema before it is written
         out = json.loads(json.dumps(clip_document_to_openlabel(clip_doc, proj), allow_nan=False))
         validate_openlabel(dst, out)

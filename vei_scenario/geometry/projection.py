@@ -13,6 +13,8 @@ from functools import cached_property
 import numpy as np
 from pyproj import CRS, Transformer
 
+from vei_scenario.clip.model import local_tmerc
+
 
 @dataclass(frozen=True)
 class LocalProjection:
@@ -21,10 +23,7 @@ class LocalProjection:
 
     @property
     def proj_string(self) -> str:
-        return (
-            f"+proj=tmerc +lat_0={self.lat0_deg:.10f} +lon_0={self.lon0_deg:.10f} +k=1 +x_0=0 +y_0=0 "
-            "+ellps=WGS84 +units=m +no_defs"
-        )
+        return local_tmerc(self.lat0_deg, self.lon0_deg)
 
     @cached_property
     def _forward(self) -> Transformer:

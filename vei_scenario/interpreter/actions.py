@@ -9,71 +9,17 @@ from __future__ import annotations
 
 import math
 
+from vei_scenario.interpreter.action_base import Action
 from vei_scenario.interpreter.controllers import make_controller
 from vei_scenario.interpreter.entities import PathFollower, SpeedProfile, transition_fraction
+from vei_scenario.interpreter.lateral_distance import LateralDistance
+from vei_scenario.interpreter.longitudinal import LongitudinalDistance
 from vei_scenario.interpreter.positions import POSITION_KINDS, entity_lane, lane_shift, lane_state_at, tilt
 from vei_scenario.interpreter.positions import resolve as resolve_position
 from vei_scenario.interpreter.shapes import placed_when_built, polyline_from
+from vei_scenario.interpreter.speed_profile import SpeedProfile as SpeedProfileAction
+from vei_scenario.interpreter.synchronize import Synchronize
 from vei_scenario.safe_xml import first_element
-
-
-class Action:
-    done = False
-
-    def start(self, ctx) -> None:
-        pass
-
-    def update(self, ctx) -> None:
-        """Called after the entities moved: decide whether the action has completed."""
-
-    def stop(self, ctx) -> None:
-        pass
-
-
-class Stepped(Action):
-    """An action that acts on its entity every step before the entities move (registered in
-    ``ctx.stepping`` when it starts); it ends when done or when another action takes the entity's
-    domain over (:meth:`taken_over`)."""
-
-    entity: str
-
-    def taken_over(self, ctx) -> bool:
-        return False
-
-    def update(self, ctx) -> None:
-        if self.taken_over(ctx):
-            self.done = True
-        if self.done and self in ctx.stepping:
-            ctx.stepping.remove(self)
-
-    def stop(self, ctx) -> None:
-        self.done = True
-        if self in ctx.stepping:
-            ctx.stepping.remove(self)
-
-
-class SteppedLongitudinal(Stepped):
-    """A stepped action that sets its entity's speed; another longitudinal action ends it."""
-
-    def taken_over(self, ctx) -> bool:
-        return ctx.entities[self.entity].longitudinal is not self
-
-
-def entity_ref(ctx, el, attribute: str = "entityRef") -> str:
-    """The entity an action's ``attribute`` names; one line naming the action and the line if none."""
-    name = el.get(attribute)
-    if name not in ctx.entities:
-        raise ctx.error(el, f"{el.tag}: no entity named {name!r}")
-    return name
-
-
-def constraint(ctx, dyn, name: str) -> float:
-    """A ``DynamicConstraints`` attribute; infinite when absent (an absent constraint does not
-    constrain)."""
-    from vei_scenario.safe_xml import float_attribute
-
-    value = dyn.get(name) if dyn is not None else None
-    return float_attribute(ctx.path, dyn, name) if value not in (None, "") else math.inf
 
 
 class Teleport(Action):
@@ -107,76 +53,6 @@ class Teleport(Action):
 
 #: The position kinds a TeleportAction takes: all of OpenSCENARIO 1.3's but GeoPosition.
 SUPPORTED_POSITIONS = POSITION_KINDS - {"GeoPosition"}
-
-
-def lane_keep(e, ds: float, ctx) -> None:
-    """Move ``e`` ``ds`` metres along its lane (esmini's default behaviour), on across road ends and
-    junctions, with a running lane change shifting it sideways."""
-    net = ctx.roads
-    st = e.lane
-    road = net.road(st.road)
-    forward = st.forward
-    # ds is travelled along the lane: scale to reference-line arc length where the lane is offset on a curve
-    stretch = road.lane_stretch(st.s, st.lane, st.offset)
-    if e.lateral is not None and e.lateral.projects_step:  # only the along-road part of the step moves s
-        road_h = road.ref_pose(st.s)[2] + (0.0 if forward else math.pi)
-        ds *= abs(math.cos(e.yaw - road_h))
-    s = st.s + (ds if forward else -ds) / stretch
-    hops = 0
-    while s > road.length or s < 0.0:
-        at_end = s > road.length
-        over = s - road.length if at_end else -s
-        nxt = net.next_road(road, st.lane, at_end, e.route.next_road(road.id) if e.route else None)
-        hops += 1
-        if hops > 2 * len(net.roads) + 2:  # round a loop of roads too short to take the step: a dead end
-            nxt = None
-        if nxt is None:  # the end of the road: it stops there, and stands once it cannot move (esmini)
-            edge = road.length if at_end else 0.0
-            if road.id == st.road and abs(st.s - edge) < 1e-9:
-                e.speed = 0.0
-            s = edge
-            break
-        road, st.lane, start = nxt
-        s = over if start else road.length - over
-        if start != forward:  # the new road runs the other way: an offset (along t) keeps its side
-            st.offset = -st.offset
-        forward = st.forward = start
-    if road.id == st.road:  # lane links across the lane sections passed on this road
-        k0, k1 = road.section_index(st.s), road.section_index(s)
-        step = 1 if k1 > k0 else -1
-        for k in range(k0, k1, step):
-            lane = road.sections[k].lanes.get(st.lane)
-            link = (lane.successor if step > 0 else lane.predecessor) if lane is not None else None
-            if link is not None and link in road.sections[k + step].lanes:
-                st.lane = link
-    sec = road.section(s)
-    sec_lanes, ds_sec = sec.lanes, s - sec.s
-    if st.lane not in sec_lanes:  # the lane ends in a new lane section: the nearest lane on the same side
-        same = [k for k in sec_lanes if (k > 0) == (st.lane > 0)] or list(sec_lanes)
-        st.lane = min(same, key=lambda k: abs(k - st.lane)) if same else st.lane
-    lane = sec_lanes.get(st.lane)
-    if lane is not None and lane.type == "driving" and lane.width(ds_sec) < 1e-6:
-        # the lane has narrowed to nothing (a merge): it moves over to the nearest driving lane (esmini)
-        here = road.lane_center_t(s, st.lane)
-        wide = [
-            k
-            for k, other in sec_lanes.items()
-            if (k > 0) == (st.lane > 0) and other.type == "driving" and other.width(ds_sec) >= 1e-6
-        ]
-        if wide:
-            st.lane = min(wide, key=lambda k: abs(road.lane_center_t(s, k) - here))
-    st.road, st.s = road.id, s
-    if e.lateral is not None:
-        st.offset = e.lateral.offset(e, ctx, road)
-    # where it is, and the heading of its lane there (along a lane centre that runs sideways, where a
-    # lane widens or narrows)
-    x, y, base, _t = road.lane_pose(s, st.lane, st.offset)
-    moved = math.hypot(x - e.x, y - e.y)
-    e.x, e.y = x, y
-    base = base if forward else base + math.pi
-    e.yaw = math.atan2(math.sin(base + st.heading), math.cos(base + st.heading))
-    if e.lateral is not None and moved > 1e-9:
-        e.yaw = e.lateral.heading(e, base)
 
 
 class LaneChangeRuntime:
@@ -778,20 +654,12 @@ def private_actions(pa, entity: str, ctx) -> list[Action]:
     if kind.tag == "LongitudinalAction" and kind.find("SpeedAction") is not None:
         return [Speed(entity, kind.find("SpeedAction"), ctx)]
     if kind.tag == "LongitudinalAction" and kind.find("SpeedProfileAction") is not None:
-        from vei_scenario.interpreter.speed_profile import SpeedProfile  # (it builds on this module)
-
-        return [SpeedProfile(entity, kind.find("SpeedProfileAction"), ctx)]
+        return [SpeedProfileAction(entity, kind.find("SpeedProfileAction"), ctx)]
     if kind.tag == "LongitudinalAction" and kind.find("LongitudinalDistanceAction") is not None:
-        from vei_scenario.interpreter.longitudinal import LongitudinalDistance  # (it builds on this module)
-
         return [LongitudinalDistance(entity, kind.find("LongitudinalDistanceAction"), ctx)]
     if kind.tag == "SynchronizeAction":
-        from vei_scenario.interpreter.synchronize import Synchronize  # (it builds on this module)
-
         return [Synchronize(entity, kind, ctx)]
     if kind.tag == "LateralAction" and kind.find("LateralDistanceAction") is not None:
-        from vei_scenario.interpreter.lateral_distance import LateralDistance  # (it builds on this module)
-
         return [LateralDistance(entity, kind.find("LateralDistanceAction"), ctx)]
     if kind.tag == "LateralAction" and kind.find("LaneChangeAction") is not None:
         return [LaneChange(entity, kind.find("LaneChangeAction"), ctx)]

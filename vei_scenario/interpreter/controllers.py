@@ -12,6 +12,7 @@ import math
 
 from vei_scenario.errors import VeiInputError
 from vei_scenario.interpreter.entities import Entity, Polyline
+from vei_scenario.interpreter.motion import advance_along, lane_keep
 from vei_scenario.interpreter.positions import ensure_lane
 from vei_scenario.models.cap import BRAKE, CapParameters, CapState, ThreatView, cap_step, threat_in_corridor
 from vei_scenario.models.sfm import RIDER_TYPES, SfmParameters, SfmState, sfm_step
@@ -40,19 +41,6 @@ def recorded_start_speed(polyline: Polyline) -> float:
     if len(polyline.ts) < 2:
         return 0.0
     return (polyline.s[1] - polyline.s[0]) / (polyline.ts[1] - polyline.ts[0])
-
-
-def advance_along(e: Entity, ds: float) -> None:
-    """Move an entity ``ds`` metres along its followed path, or straight ahead without one."""
-    f = e.follower
-    if f is not None:
-        f.s = min(f.s + (-ds if f.reverse else ds), f.polyline.length)
-        e.x, e.y, e.yaw = f.polyline.at_s(f.s)
-        if f.reverse:
-            e.yaw = math.atan2(-math.sin(e.yaw), -math.cos(e.yaw))
-    else:
-        e.x += ds * math.cos(e.yaw)
-        e.y += ds * math.sin(e.yaw)
 
 
 def threat_view(
@@ -221,8 +209,6 @@ class CollisionAvoidanceController(Controller):
             a_cmd, self.held_command = self.held_command, a_cmd
         lon = longitudinal_step(Longitudinal(0.0, e.speed, e.accel), a_cmd, e.limits, dt)
         if e.follower is None:  # an ego that drives by lane keeps to it
-            from vei_scenario.interpreter.actions import lane_keep  # (actions imports this module)
-
             ensure_lane(ctx, e)
             if e.lane is not None:
                 lane_keep(e, lon.s, ctx)

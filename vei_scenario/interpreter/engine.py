@@ -19,24 +19,21 @@ import numpy as np
 from vei_scenario.core import _core
 from vei_scenario.interpreter import trailers
 from vei_scenario.interpreter.actions import (
-    ParameterSet,
-    SignalState,
-    VariableSet,
     global_actions,
-    lane_keep,
     private_actions,
 )
-from vei_scenario.interpreter.controllers import advance_along, make_controller
+from vei_scenario.interpreter.context import Context
+from vei_scenario.interpreter.controllers import make_controller
 from vei_scenario.interpreter.document import ScenarioDocument
 from vei_scenario.interpreter.entities import Entity
+from vei_scenario.interpreter.motion import advance_along, lane_keep
 from vei_scenario.interpreter.positions import ensure_lane
 from vei_scenario.interpreter.shapes import placed_when_built, polyline_from
-from vei_scenario.interpreter.storyboard import COMPLETE, RUNNING, STANDBY, Context, Element, Trigger
+from vei_scenario.interpreter.storyboard import Storyboard
 from vei_scenario.models.vehicle import VehicleLimits
 
 #: Actions that only set a value (a signal state, a variable, a parameter): esmini carries them out as
 #: their event starts, so triggers evaluated after it in the same step see the new value.
-VALUE_ACTIONS = (SignalState, VariableSet, ParameterSet)
 
 #: Runs end here at the latest (s) when the storyboard has no stop trigger that fires.
 DEFAULT_MAX_TIME_S = 600.0
@@ -222,56 +219,8 @@ class Simulation:
         for ua in root.iterfind("Storyboard/Init/Actions/UserDefinedAction"):
             raise ctx.error(ua, "user-defined actions are not supported by vei run")
 
-        board = root.find("Storyboard")
-        stop = board.find("StopTrigger")
-        self.stop_trigger = Trigger(stop, ctx) if stop is not None else None
-        self.stories = [self._story(s) for s in board.iterfind("Story")]
+        self.storyboard = Storyboard(root.find("Storyboard"), ctx)
         self.ego, self.threat = self._roles()
-
-    # --- building -----------------------------------------------------------------------------------
-    def _story(self, el) -> Element:
-        ctx = self.ctx
-        return Element("Story", el, ctx, [self._act(a) for a in el.iterfind("Act")])
-
-    def _act(self, el) -> Element:
-        return Element("Act", el, self.ctx, [self._group(g) for g in el.iterfind("ManeuverGroup")])
-
-    def _group(self, el) -> Element:
-        ctx = self.ctx
-        actors = [r.get("entityRef") for r in el.iterfind("Actors/EntityRef")]
-        for a in actors:
-            if a not in ctx.entities:
-                raise ctx.error(el, f"ManeuverGroup {el.get('name')!r}: no entity named {a!r}")
-        if el.find("CatalogReference") is not None:
-            raise ctx.error(el.find("CatalogReference"), "maneuver catalogs are not supported by vei run")
-        if el.find("Actors").get("selectTriggeringEntities", "false") == "true":
-            raise ctx.error(el.find("Actors"), "selectTriggeringEntities=true is not supported by vei run")
-        return Element("ManeuverGroup", el, ctx, [self._maneuver(m, actors) for m in el.iterfind("Maneuver")])
-
-    def _maneuver(self, el, actors) -> Element:
-        return Element("Maneuver", el, self.ctx, [self._event(e, actors) for e in el.iterfind("Event")])
-
-    def _event(self, el, actors) -> Element:
-        ctx = self.ctx
-        event = Element("Event", el, ctx, [self._action(a, actors) for a in el.iterfind("Action")])
-        event.priority = el.get("priority", "overwrite")
-        return event
-
-    def _action(self, el, actors) -> Element:
-        ctx = self.ctx
-        action = Element("Action", el, ctx)
-        pa, ga = el.find("PrivateAction"), el.find("GlobalAction")
-        if pa is not None:
-            if not actors:
-                raise ctx.error(el, "a private action needs actors")
-            for a in actors:
-                action.actions.extend(private_actions(pa, a, ctx))
-        elif ga is not None:
-            action.actions.extend(global_actions(ga, ctx))
-        else:
-            kind = el[0].tag if len(el) else "nothing"
-            raise ctx.error(el, f"action <{kind}> is not supported by vei run")
-        return action
 
     def _roles(self) -> tuple[str, str | None]:
         """The ego (entity named Ego, else the first) and its threat (the planner's threatEntity,
@@ -284,120 +233,6 @@ class Simulation:
                 return ego, t
         others = [n for n in names if n != ego]
         return ego, (others[0] if others else None)
-
-    # --- running ------------------------------------------------------------------------------------
-    def _start_event(self, ev: Element, running: list[Element]) -> None:
-        ctx = self.ctx
-        if ev.priority == "skip" and running:
-            ev.mark("skipTransition", ctx.step)
-            return
-        if ev.priority in ("override", "overwrite"):
-            for r in running:
-                r.complete(ctx, "stopTransition")
-        ev.start(ctx)
-        for a in ev.children:
-            a.start(ctx)
-            for act in a.actions:
-                act.start(ctx)
-
-    def _storyboard(self) -> bool:
-        """Advance states; False when the storyboard has ended."""
-        ctx = self.ctx
-        if self.stop_trigger is not None and self.stop_trigger.evaluate(ctx):
-            return False
-        starting: list[tuple[Element, list[Element]]] = []
-        for story in self.stories:
-            if story.state == STANDBY:
-                story.start(ctx)
-            if story.state != RUNNING:
-                continue
-            for act in story.children:
-                if act.state == STANDBY and (act.start_trigger is None or act.start_trigger.evaluate(ctx)):
-                    act.start(ctx)
-                    for g in act.children:
-                        g.start(ctx)
-                        for m in g.children:
-                            m.start(ctx)
-                if act.state != RUNNING:
-                    continue
-                if act.stop_trigger is not None and act.stop_trigger.evaluate(ctx):
-                    act.complete(ctx, "stopTransition")
-                    continue
-                for g in act.children:
-                    for m in g.children:
-                        if m.state != RUNNING:
-                            continue
-                        running = [e for e in m.children if e.state == RUNNING]
-                        for ev in m.children:
-                            if ev.state == STANDBY and (ev.start_trigger is None or ev.start_trigger.evaluate(ctx)):
-                                others = [r for r in running if r is not ev]
-                                if all(isinstance(x, VALUE_ACTIONS) for a in ev.children for x in a.actions):
-                                    self._start_event(ev, others)  # a value set is seen by what follows
-                                else:
-                                    starting.append((ev, others))
-        # every trigger sees the same state: events start after all were evaluated (a teleport started
-        # by one event must not hide the condition that starts another)
-        for ev, others in starting:
-            self._start_event(ev, others)
-        return True
-
-    def _complete_finished(self) -> None:
-        ctx = self.ctx
-
-        def done(el: Element) -> bool:
-            return el.state == COMPLETE
-
-        for story in self.stories:
-            if story.state != RUNNING:
-                continue
-            for act in story.children:
-                if act.state != RUNNING:
-                    continue
-                for g in act.children:
-                    for m in g.children:
-                        for ev in m.children:
-                            if ev.state != RUNNING:
-                                continue
-                            for a in ev.children:
-                                if a.state == RUNNING:
-                                    for act_rt in a.actions:
-                                        act_rt.update(ctx)
-                                    if all(x.done for x in a.actions):
-                                        a.complete(ctx)
-                            if all(done(a) for a in ev.children):
-                                ev.complete(ctx)
-                                if ev.executions < ev.max_executions:
-                                    ev.state = STANDBY
-                        if m.state == RUNNING and all(done(e) for e in m.children):
-                            m.complete(ctx)
-                    if g.state == RUNNING and all(done(m) for m in g.children):
-                        g.complete(ctx)
-                        if g.executions < g.max_executions:
-                            self._restart_group(g)
-                if all(done(g) for g in act.children):
-                    act.complete(ctx)
-            if all(done(a) for a in story.children):
-                story.complete(ctx)
-
-    def _restart_group(self, g: Element) -> None:
-        """A ManeuverGroup whose maneuvers are all complete runs again while it has executions left
-        (maximumExecutionCount): its maneuvers, events and actions start over from standby."""
-        ctx = self.ctx
-
-        def reset(el: Element) -> None:
-            el.state, el.executions = STANDBY, 0
-            if el.start_trigger is not None:
-                el.start_trigger.reset()
-            for a in el.actions:
-                a.done = False
-            for c in el.children:
-                reset(c)
-
-        for m in g.children:
-            reset(m)
-        g.start(ctx)
-        for m in g.children:
-            m.start(ctx)
 
     def _move(self, e: Entity) -> None:
         if e.deleted:
@@ -496,11 +331,11 @@ class Simulation:
         # esmini does): events that start at once place entities and set speeds, and what they
         # complete counts from t = 0 (a condition delayed after it fires on time)
         ctx.initializing, ctx.settling = False, True
-        running = self._storyboard()
+        running = self.storyboard.step()
         if running:
             for a in list(ctx.stepping):
                 a.step(ctx)
-            self._complete_finished()
+            self.storyboard.complete_finished()
         ctx.settling = False
         self._collide(collisions)
         record()
@@ -508,7 +343,7 @@ class Simulation:
         if not running:
             reason = "storyboard stop trigger"
         while running and ctx.t < self.max_time - 1e-9:
-            if not self._storyboard():
+            if not self.storyboard.step():
                 reason = "storyboard stop trigger"
                 break
             for a in self.init_actions:
@@ -525,12 +360,12 @@ class Simulation:
             for tow, trailer in trailers.hitches(ctx.entities):
                 trailers.pull(trailer, tow, dt)
             ctx.snapshot = None
-            self._complete_finished()
+            self.storyboard.complete_finished()
             ctx.step += 1
             ctx.t = round(ctx.step * dt, 9)
             self._collide(collisions)
             record()
-            if all(s.state == COMPLETE for s in self.stories) and self.stop_trigger is None:
+            if self.storyboard.complete and self.storyboard.stop_trigger is None:
                 reason = "all stories complete"
                 break
         t = np.array(times)

@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import math
 
-from vei_scenario.interpreter.actions import Stepped, constraint, entity_ref
+from vei_scenario.interpreter.action_base import Stepped, constraint, entity_ref
 from vei_scenario.interpreter.positions import entity_lane
 
 #: A one-off action ends this close (m) to its distance.

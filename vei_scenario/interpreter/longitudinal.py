@@ -12,8 +12,8 @@ from __future__ import annotations
 
 import math
 
-from vei_scenario.interpreter.actions import SteppedLongitudinal, constraint, entity_ref, lane_keep
-from vei_scenario.interpreter.controllers import advance_along
+from vei_scenario.interpreter.action_base import SteppedLongitudinal, constraint, entity_ref
+from vei_scenario.interpreter.motion import advance_along, lane_keep
 from vei_scenario.interpreter.positions import ensure_lane
 
 #: Spring stiffness per m/s² of permitted acceleration (1/s²): the gap closes in a few seconds.

@@ -11,6 +11,7 @@ for trajectory positions.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 
 from vei_scenario.safe_xml import first_element
@@ -33,7 +34,7 @@ class LaneState:
 def _relative_heading(h: float, road_h: float) -> tuple[bool, float]:
     """(moves towards increasing s, heading relative to that direction of travel)."""
     forward = _heads_forward(h, road_h)
-    return forward, _wrap(h - (road_h if forward else road_h + math.pi))
+    return forward, wrap_angle(h - (road_h if forward else road_h + math.pi))
 
 
 @dataclass
@@ -44,11 +45,11 @@ class Pose:
     lane: LaneState | None = None
 
 
-def _wrap(a: float) -> float:
+def wrap_angle(a: float) -> float:
     return (a + math.pi) % (2 * math.pi) - math.pi
 
 
-def _num(el, name: str, default: float = 0.0) -> float:
+def number(el, name: str, default: float = 0.0) -> float:
     v = el.get(name)
     return float(v) if v not in (None, "") else default
 
@@ -58,11 +59,11 @@ def _heads_forward(h: float, road_h: float) -> bool:
     return math.cos(h - road_h) >= 0.0
 
 
-def _orient(el, base_h: float) -> float:
+def oriented(el, base_h: float) -> float:
     o = el.find("Orientation")
     if o is None:
         return base_h
-    h = _num(o, "h")
+    h = number(o, "h")
     return h if o.get("type", "relative") == "absolute" else base_h + h
 
 
@@ -84,15 +85,15 @@ def tilt(ctx, pos) -> tuple[float, float]:
     entity. (vei's roads are taken as flat for an entity's pitch and roll.)"""
     el = pos if pos.tag in POSITION_KINDS else first_element(pos)
     if el is not None and el.tag == "WorldPosition":
-        return _wrap(_num(el, "p")), _wrap(_num(el, "r"))
+        return wrap_angle(number(el, "p")), wrap_angle(number(el, "r"))
     o = el.find("Orientation") if el is not None else None
     if o is None:
         return 0.0, 0.0
-    p, r = _num(o, "p"), _num(o, "r")
+    p, r = number(o, "p"), number(o, "r")
     ref = ctx.entities.get(el.get("entityRef") or "") if el.tag in _ENTITY_RELATIVE else None
     if ref is not None and o.get("type", "relative") != "absolute":
         p, r = p + ref.pitch, r + ref.roll
-    return _wrap(p), _wrap(r)
+    return wrap_angle(p), wrap_angle(r)
 
 
 _ENTITY_RELATIVE = ("RelativeWorldPosition", "RelativeObjectPosition")
@@ -116,7 +117,7 @@ def lane_pose(ctx, el, road_id: str, lane_id: int, s: float, offset: float, forw
         raise ctx.error(el, f"<{el.tag}>: {exc.args[0] if exc.args else exc}") from None
     x, y, h = road.world(s, t)
     forward = road.drives_forward(lane_id) if forward is None else forward
-    drive_h = _wrap(_orient(el, h if forward else h + math.pi))
+    drive_h = wrap_angle(oriented(el, h if forward else h + math.pi))
     return Pose(x, y, drive_h, LaneState(road.id, lane_id, s, offset, *_relative_heading(drive_h, h)))
 
 
@@ -125,7 +126,7 @@ def _road_pose(el, road, s: float, t: float) -> Pose:
     lane = road.lane_at(s, t)
     # along increasing s, whatever lane the point is in: the standard's reference for a road
     # position's orientation, and esmini's heading for one without (measured on a left-hand lane)
-    pose_h = _wrap(_orient(el, h))
+    pose_h = wrap_angle(oriented(el, h))
     if lane is None:
         return Pose(x, y, pose_h)
     state = LaneState(road.id, lane, s, t - road.lane_center_t(s, lane), *_relative_heading(pose_h, h))
@@ -189,6 +190,11 @@ POSITION_KINDS = frozenset(
 )
 
 
+#: Position kinds resolved by the module that defines their shapes: a TrajectoryPosition lies on a
+#: trajectory, whose vertices are positions in turn (``shapes`` registers it; kind -> resolver).
+RESOLVED_ELSEWHERE: dict[str, Callable] = {}
+
+
 def resolve(ctx, pos) -> Pose:
     """The pose of a ``<Position>`` element (its first child decides the kind), or of any element the
     standard types as a Position (``PositionStart``, ...), or of a position kind itself."""
@@ -197,85 +203,56 @@ def resolve(ctx, pos) -> Pose:
         raise ctx.error(pos, "empty Position")
     tag = el.tag
     if tag == "WorldPosition":
-        return Pose(_num(el, "x"), _num(el, "y"), _num(el, "h"))
+        return Pose(number(el, "x"), number(el, "y"), number(el, "h"))
     if tag in ("RelativeWorldPosition", "RelativeObjectPosition"):
         ref = ctx.entities.get(el.get("entityRef"))
         if ref is None:
             raise ctx.error(el, f"no entity named {el.get('entityRef')!r}")
-        dx, dy = _num(el, "dx"), _num(el, "dy")
+        dx, dy = number(el, "dx"), number(el, "dy")
         if tag == "RelativeObjectPosition":  # (dx, dy, dz) in the object's frame, turned by h, p and r
-            dx, dy = object_offset(ref, dx, dy, _num(el, "dz"))
-        return Pose(ref.x + dx, ref.y + dy, _wrap(_orient(el, ref.yaw)))
+            dx, dy = object_offset(ref, dx, dy, number(el, "dz"))
+        return Pose(ref.x + dx, ref.y + dy, wrap_angle(oriented(el, ref.yaw)))
     if tag == "LanePosition":
-        return lane_pose(ctx, el, el.get("roadId"), int(el.get("laneId")), _num(el, "s"), _num(el, "offset"))
+        return lane_pose(ctx, el, el.get("roadId"), int(el.get("laneId")), number(el, "s"), number(el, "offset"))
     if tag == "RoadPosition":
         net = _network(ctx, el)
         try:
             road = net.road(el.get("roadId"))
         except KeyError as exc:
             raise ctx.error(el, str(exc.args[0])) from None
-        s, t = _num(el, "s"), _num(el, "t")
+        s, t = number(el, "s"), number(el, "t")
         return _road_pose(el, road, s, t)
     if tag in ("RelativeLanePosition", "RelativeRoadPosition"):
         e, st = entity_lane(ctx, el, el.get("entityRef"))
         road = _network(ctx, el).road(st.road)
         forward = st.forward  # "ahead" and "left" as the reference entity drives
         if tag == "RelativeRoadPosition":
-            s = st.s + _num(el, "ds")
-            t = road.lane_center_t(st.s, st.lane) + st.offset + _num(el, "dt")
+            s = st.s + number(el, "ds")
+            t = road.lane_center_t(st.s, st.lane) + st.offset + number(el, "dt")
             return _road_pose(el, road, s, t)
-        lane = lane_shift(st.lane, int(_num(el, "dLane")), forward)
-        ds = _num(el, "ds", _num(el, "dsLane"))
+        lane = lane_shift(st.lane, int(number(el, "dLane")), forward)
+        ds = number(el, "ds", number(el, "dsLane"))
         s = st.s + (ds if forward else -ds)
-        return lane_pose(ctx, el, road.id, lane, s, _num(el, "offset"), forward)
+        return lane_pose(ctx, el, road.id, lane, s, number(el, "offset"), forward)
     if tag == "RoutePosition":
         route = route_from(ctx, el.find("RouteRef/Route"), el)
         coords = el.find("InRoutePosition/FromLaneCoordinates")
         if coords is not None:
-            leg, s = route.at(_num(coords, "pathS"))
+            leg, s = route.at(number(coords, "pathS"))
             lane = int(coords.get("laneId"))
             # facing the lane's driving direction (esmini), not necessarily the route's
-            return lane_pose(ctx, el, leg.road, lane, s, _num(coords, "laneOffset"))
+            return lane_pose(ctx, el, leg.road, lane, s, number(coords, "laneOffset"))
         coords = el.find("InRoutePosition/FromRoadCoordinates")
         if coords is not None:
-            leg, s = route.at(_num(coords, "pathS"))
-            return _road_pose(el, _network(ctx, el).road(leg.road), s, _num(coords, "t"))
+            leg, s = route.at(number(coords, "pathS"))
+            return _road_pose(el, _network(ctx, el).road(leg.road), s, number(coords, "t"))
         raise ctx.error(el, "RoutePosition: InRoutePosition/FromCurrentEntity is not supported by vei run")
-    if tag == "TrajectoryPosition":
-        return trajectory_pose(ctx, el)
+    if tag in RESOLVED_ELSEWHERE:
+        return RESOLVED_ELSEWHERE[tag](ctx, el)
     raise ctx.error(el, f"position <{tag}> is not supported by vei run")
 
 
-def trajectory_of(ctx, el):
-    """The placed polyline of the trajectory a ``TrajectoryPosition`` refers to (inline or from a
-    catalog, which the loader has already put in place)."""
-    from vei_scenario.interpreter.shapes import polyline_from
-
-    traj = el.find("TrajectoryRef/Trajectory")
-    if traj is None:
-        traj = el.find("Trajectory")  # (OpenSCENARIO 1.1 put it here)
-    if traj is None:
-        raise ctx.error(el, "TrajectoryPosition needs a TrajectoryRef with a Trajectory")
-    return polyline_from(traj, ctx)
-
-
-def trajectory_pose(ctx, el) -> Pose:
-    """A ``TrajectoryPosition``: ``s`` metres along the trajectory, ``t`` to its left; heading along
-    the trajectory's path — not the vertex headings an entity following it would take — with an
-    Orientation relative to that, or absolute. Beyond the ends the path is
-    continued straight, as a trajectory's own end is."""
-    line = trajectory_of(ctx, el)
-    s, t = _num(el, "s"), _num(el, "t")
-    x, y, _ = line.at_s(s)
-    h = line.direction_at_s(s) if len(line.xs) > 1 else line.hs[0]  # along the path (esmini)
-    over = s - line.length if s > line.length else min(s, 0.0)
-    x, y = x + over * math.cos(h), y + over * math.sin(h)
-    x, y = x - t * math.sin(h), y + t * math.cos(h)
-    pose_h = _wrap(_orient(el, h))
-    return Pose(x, y, pose_h, _lane_of(ctx, x, y, pose_h))
-
-
-def _lane_of(ctx, x: float, y: float, h: float) -> LaneState | None:
+def lane_of(ctx, x: float, y: float, h: float) -> LaneState | None:
     """The lane state at a world point, when the scenario has roads and the point is on a lane."""
     net = getattr(ctx, "roads", None)
     if net is None:

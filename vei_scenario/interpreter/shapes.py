@@ -14,6 +14,15 @@ import math
 import numpy as np
 
 from vei_scenario.interpreter.entities import Polyline
+from vei_scenario.interpreter.positions import (
+    RESOLVED_ELSEWHERE,
+    Pose,
+    lane_of,
+    number,
+    oriented,
+    resolve,
+    wrap_angle,
+)
 from vei_scenario.safe_xml import first_element
 
 _FINE_M = 0.005
@@ -46,8 +55,6 @@ def _num(ctx, el, name: str, default: float | None = None) -> float:
 
 def _start_pose(ctx, pos_el, entity):
     """Where a clothoid starts: its position, else where the entity following it is now."""
-    from vei_scenario.interpreter.positions import Pose, resolve
-
     if pos_el is not None:
         return resolve(ctx, pos_el)
     if entity is None:
@@ -83,8 +90,6 @@ def polyline_from(el, ctx, place: bool = True, entity: str | None = None) -> Pol
     starts). A clothoid without a start position starts where ``entity`` is. ``closed`` adds the
     segment back to the first vertex of a Polyline; a curve (Nurbs, clothoids) closes, or not, by its
     own definition, so the flag adds nothing to it."""
-    from vei_scenario.interpreter.positions import resolve
-
     closed = el.get("closed", "false") in ("true", "1")
     shape = el.find("Shape")
     kind = first_element(shape) if shape is not None else None
@@ -239,8 +244,6 @@ def _nurbs(el, ctx, place: bool) -> Polyline:
     control point's time where that point's basis function peaks (:func:`_control_point_parameters`)."""
     from scipy.interpolate import BSpline
 
-    from vei_scenario.interpreter.positions import resolve
-
     order = int(_num(ctx, el, "order"))
     points = el.findall("ControlPoint")
     knots = [_num(ctx, k, "value") for k in el.findall("Knot")]
@@ -293,3 +296,33 @@ def _nurbs(el, ctx, place: bool) -> Polyline:
         if dt_last > 0:
             line.exit_speed = math.hypot(xs[-1] - xs[k], ys[-1] - ys[k]) / dt_last
     return line
+
+
+def trajectory_of(ctx, el):
+    """The placed polyline of the trajectory a ``TrajectoryPosition`` refers to (inline or from a
+    catalog, which the loader has already put in place)."""
+    traj = el.find("TrajectoryRef/Trajectory")
+    if traj is None:
+        traj = el.find("Trajectory")  # (OpenSCENARIO 1.1 put it here)
+    if traj is None:
+        raise ctx.error(el, "TrajectoryPosition needs a TrajectoryRef with a Trajectory")
+    return polyline_from(traj, ctx)
+
+
+def trajectory_pose(ctx, el) -> Pose:
+    """A ``TrajectoryPosition``: ``s`` metres along the trajectory, ``t`` to its left; heading along
+    the trajectory's path — not the vertex headings an entity following it would take — with an
+    Orientation relative to that, or absolute. Beyond the ends the path is
+    continued straight, as a trajectory's own end is."""
+    line = trajectory_of(ctx, el)
+    s, t = number(el, "s"), number(el, "t")
+    x, y, _ = line.at_s(s)
+    h = line.direction_at_s(s) if len(line.xs) > 1 else line.hs[0]  # along the path (esmini)
+    over = s - line.length if s > line.length else min(s, 0.0)
+    x, y = x + over * math.cos(h), y + over * math.sin(h)
+    x, y = x - t * math.sin(h), y + t * math.cos(h)
+    pose_h = wrap_angle(oriented(el, h))
+    return Pose(x, y, pose_h, lane_of(ctx, x, y, pose_h))
+
+
+RESOLVED_ELSEWHERE["TrajectoryPosition"] = trajectory_pose

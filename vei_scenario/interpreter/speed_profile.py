@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import math
 
-from vei_scenario.interpreter.actions import SteppedLongitudinal, constraint, entity_ref
+from vei_scenario.interpreter.action_base import SteppedLongitudinal, constraint, entity_ref
 
 #: How close (m/s) a following entity must be to the last speed for the action to end.
 SETTLED_SPEED = 1e-3

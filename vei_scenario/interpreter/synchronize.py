@@ -28,7 +28,7 @@ from __future__ import annotations
 
 import math
 
-from vei_scenario.interpreter.actions import SteppedLongitudinal, entity_ref
+from vei_scenario.interpreter.action_base import SteppedLongitudinal, entity_ref
 from vei_scenario.interpreter.positions import Pose, ensure_lane
 from vei_scenario.interpreter.positions import resolve as resolve_position
 from vei_scenario.safe_xml import first_element

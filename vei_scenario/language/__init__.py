@@ -20,7 +20,8 @@ def describe_command(args) -> int:
     from vei_scenario.language.describe import describe_batch
     from vei_scenario.language.layers import load_layers
     from vei_scenario.language.placement import PlacementError
-    from vei_scenario.language.rules_backend import NotUnderstood, read, sample_layers
+    from vei_scenario.language.reading import NotUnderstood
+    from vei_scenario.language.rules_backend import read, sample_layers
 
     if (args.text is None) == (args.layers is None):
         raise VeiInputError(None, "vei describe", "give either a description or --layers FILE")

@@ -124,7 +124,7 @@ def layers_problems(layers: dict, case: dict) -> list[str]:
 
 def check_case(case: dict, make_layers, seeds=(0, 1, 2)) -> CaseResult:
     """Understood and faithful? ``make_layers(text, seed)`` returns layers or raises ValueError (the
-    backend's refusal, e.g. :class:`~vei_scenario.language.rules_backend.NotUnderstood`)."""
+    backend's refusal, e.g. :class:`~vei_scenario.language.reading.NotUnderstood`)."""
     text = case["text"]
     problems: list[str] = []
     for seed in seeds:

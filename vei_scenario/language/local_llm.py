@@ -116,7 +116,7 @@ def _llama(path: str):
 
 def read_with_model(text: str, seed: int, model: str | None = None):
     """The model's reading of ``text`` as a :class:`~vei_scenario.language.rules_backend.Reading`."""
-    from vei_scenario.language.rules_backend import ActorSpec, Reading
+    from vei_scenario.language.reading import ActorSpec, Reading
 
     llm = _llama(str(model_path(model)))
     out = llm.create_chat_completion(

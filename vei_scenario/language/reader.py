@@ -29,6 +29,7 @@ from functools import lru_cache
 
 from vei_scenario.language import lexicon as L
 from vei_scenario.language import vocabulary as V
+from vei_scenario.language.reading import ActorSpec, NotUnderstood, Reading
 
 _TOKEN = re.compile(r"\d+(?:\.\d+)?|km/h|m/s²|m/s2|m/s|[a-z][a-z\-]*(?:'[a-z]+)?|'s|[.;,!?:]")
 
@@ -372,11 +373,9 @@ def _resolve_relation(a: _Actor, map_kind: str | None) -> str | None:
     return a.relation or side
 
 
-def read(text: str):
-    """Parse ``text`` into a :class:`~vei_scenario.language.rules_backend.Reading` (with ``ignored``
-    words); raise :class:`~vei_scenario.language.rules_backend.NotUnderstood` naming what cannot be placed."""
-    from vei_scenario.language.rules_backend import ActorSpec, NotUnderstood, Reading
-
+def read(text: str) -> Reading:
+    """Parse ``text`` into a :class:`~vei_scenario.language.reading.Reading` (with ``ignored``
+    words); raise :class:`~vei_scenario.language.reading.NotUnderstood` naming what cannot be placed."""
     clauses, ignored = scan(text)
     clauses = _drop_label(clauses)
     r = Reading()

@@ -1,71 +1,32 @@
 """The offline backend: a description → layers. Reading is :mod:`vei_scenario.language.reader`'s
 (what the text says: actors, where they start, what they do, how critically, and of the road, the
-weather and the ego); this module holds what a reading is and fills in the rest.
+weather and the ego); what a reading is lives in :mod:`vei_scenario.language.reading`; this module fills in the rest.
 
 Filling: what the text leaves open (speeds, gaps, weather, time of day, background traffic, a
 behaviour's configuration within the range of its criticality class) is drawn from
 ``random.Random(seed)``, so one description gives many scenarios and the same seed the same ones.
-Words it cannot place are reported (:class:`NotUnderstood`), never skipped silently.
+Words it cannot place are reported (:class:`~vei_scenario.language.reading.NotUnderstood`), never skipped silently.
 """
 
 from __future__ import annotations
 
 import random
-from dataclasses import dataclass, field
 
 from vei_scenario.language.behaviours import BEHAVIOURS
 from vei_scenario.language.behaviours.base import value
 from vei_scenario.language.layers import behaviour_nodes
 from vei_scenario.language.maps import ARM_LENGTH_M
 from vei_scenario.language.placement import DEFAULT_FEATURE_DISTANCE_M, junction_conflict_m, lane_id
+from vei_scenario.language.reader import read as read_text
+from vei_scenario.language.reading import Reading
 from vei_scenario.language.scenario_writer import DEFAULT_RATE_HZ, TYPES
 
 CRITICALITY_CLASSES = ("dangerous", "moderate", "safe")
 
 
-class NotUnderstood(ValueError):
-    """The description has words the vocabulary cannot place."""
-
-    def __init__(self, words: list[str], text: str) -> None:
-        self.words = words
-        listed = ", ".join(f"'{w}'" for w in words)
-        super().__init__(
-            f"could not place {listed} (the words it knows: vei_scenario/language/vocabulary.py and lexicon.py; "
-            "behaviours: `vei behaviours`)"
-        )
-
-
-@dataclass
-class ActorSpec:
-    kind: str
-    relation: str | None = None
-    distance_m: float | None = None
-    speed_mps: float | None = None
-    behaviours: list[tuple[str, dict, str | None, str]] = field(default_factory=list)  # name, cfg, class, link
-
-
-@dataclass
-class Reading:
-    """What the parser understood, before sampling."""
-
-    map_kind: str | None = None
-    lanes: int | None = None
-    weather: str | None = None
-    time: str | None = None
-    density: str | None = None
-    intent: str | None = None
-    ego_route: str | None = None
-    ego_speed_mps: float | None = None
-    ego_relation: str | None = None
-    actors: list[ActorSpec] = field(default_factory=list)
-    ignored: list[str] = field(default_factory=list)  # words read past: nothing in the layers holds them
-
-
 def read(text: str) -> Reading:
-    """Parse ``text`` (:func:`vei_scenario.language.reader.read`); :class:`NotUnderstood` lists the
-    words it could not place."""
-    from vei_scenario.language.reader import read as read_text
-
+    """Parse ``text`` (:func:`vei_scenario.language.reader.read`);
+    :class:`~vei_scenario.language.reading.NotUnderstood` lists the words it could not place."""
     return read_text(text)
 
 

@@ -170,6 +170,7 @@ class Road:
         # a lane-keeping step in one call: (x, y, lane heading, t) at s, and the along-lane stretch
         self.lane_pose = self.core.lane_pose
         self.lane_stretch = self.core.lane_stretch
+        self.lane_on = self.core.lane_on  # the lane id further along (lane links, lane ends, merges)
 
     def section(self, s: float) -> LaneSection:
         return self.sections[self.core.section_index(s)]
@@ -451,7 +452,8 @@ def _compiled_parts(geometries, offsets, superelevation, sections, length: float
     lanes, widths, lane0 = [], [], [0]
     for k, sec in enumerate(sections):
         for lane in sec.lanes.values():
-            lanes.append([k, lane.id, lane.type == "driving", len(widths), len(lane.widths)])
+            links = [math.nan if v is None else v for v in (lane.successor, lane.predecessor)]
+            lanes.append([k, lane.id, lane.type == "driving", len(widths), len(lane.widths), *links])
             widths.extend(lane.widths)
         lane0.append(len(lanes))
 
@@ -466,7 +468,7 @@ def _compiled_parts(geometries, offsets, superelevation, sections, length: float
         f64(superelevation, 5),
         f64([sec.s for sec in sections], 1),
         np.asarray(lane0, dtype=np.intc).tobytes(),
-        f64(lanes, 5),
+        f64(lanes, 7),
         f64(widths, 5),
         float(length),
         bool(varying),

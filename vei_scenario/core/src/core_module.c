@@ -226,6 +226,17 @@ static PyObject *Road_lane_stretch(RoadObject *self, PyObject *const *args, Py_s
     return PyFloat_FromDouble(stretch);
 }
 
+static PyObject *Road_lane_on(RoadObject *self, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (!args_ok(nargs, 4, "lane_on")) return NULL;
+    ARG_D(0, s0);
+    ARG_D(1, s1);
+    ARG_I(2, lane);
+    int same = PyObject_IsTrue(args[3]);
+    if (same < 0) return NULL;
+    return PyLong_FromLong(vr_lane_on(&self->r, s0, s1, (int)lane, same));
+}
+
 static PyObject *Road_locate(RoadObject *self, PyObject *const *args, Py_ssize_t nargs)
 {
     if (!args_ok(nargs, 2, "locate")) return NULL;
@@ -255,6 +266,7 @@ static PyMethodDef Road_methods[] = {
     M(lane_drift, "lane_drift(s, lane) -> dt/ds of the lane centre"),
     M(lane_pose, "lane_pose(s, lane, offset) -> (x, y, lane heading, t) of a road user keeping the lane"),
     M(lane_stretch, "lane_stretch(s, lane, offset) -> reference-line metres per metre along the lane"),
+    M(lane_on, "lane_on(s0, s1, lane, same_road) -> the lane id at s1 (links, lane ends, merges)"),
     M(locate, "locate(x, y) -> (s, t, along, distance, lane or None) of the nearest reference point"),
     {NULL, NULL, 0, NULL},
 };

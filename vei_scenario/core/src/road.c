@@ -264,6 +264,50 @@ int vr_lane_stretch(const vr_road *r, double s, int lane_id, double offset, doub
     return 0;
 }
 
+static int lane_id_of(const vr_road *r, int row) { return (int)r->lanes[(long)row * VR_L_COLS + VR_L_ID]; }
+
+int vr_lane_on(const vr_road *r, double s0, double s1, int lane, int same_road)
+{
+    if (same_road) {
+        int k0 = vr_section_index(r, s0), k1 = vr_section_index(r, s1), step = k1 > k0 ? 1 : -1;
+        for (int k = k0; k != k1; k += step) {
+            int row = vr_lane_row(r, k, lane);
+            if (row < 0) continue;
+            double link = r->lanes[(long)row * VR_L_COLS + (step > 0 ? VR_L_SUCC : VR_L_PRED)];
+            if (!isnan(link) && vr_lane_row(r, k + step, (int)link) >= 0) lane = (int)link;
+        }
+    }
+    int sec = vr_section_index(r, s1), first = r->sec_lane0[sec], end = r->sec_lane0[sec + 1];
+    double ds = s1 - r->sec_s[sec];
+    if (vr_lane_row(r, sec, lane) < 0) { /* its lane ends: the nearest on the same side, else any */
+        int best = lane, found = 0, best_d = 0;
+        for (int pass = 0; pass < 2 && !found; pass++)
+            for (int i = first; i < end; i++) {
+                int id = lane_id_of(r, i), d = abs(id - lane);
+                if (pass == 0 && (id > 0) != (lane > 0)) continue;
+                if (!found || d < best_d) best = id, best_d = d, found = 1;
+            }
+        lane = best;
+    }
+    int row = vr_lane_row(r, sec, lane);
+    if (row >= 0 && r->lanes[(long)row * VR_L_COLS + VR_L_DRIVING] != 0 && vr_lane_width(r, row, ds) < 1e-6) {
+        double here, t;
+        vr_lane_center_t(r, s1, lane, &here);
+        int best = lane, found = 0;
+        double best_d = 0.0;
+        for (int i = first; i < end; i++) {
+            int id = lane_id_of(r, i);
+            if ((id > 0) != (lane > 0) || r->lanes[(long)i * VR_L_COLS + VR_L_DRIVING] == 0 ||
+                vr_lane_width(r, i, ds) < 1e-6)
+                continue;
+            vr_lane_center_t(r, s1, id, &t);
+            if (!found || fabs(t - here) < best_d) best = id, best_d = fabs(t - here), found = 1;
+        }
+        lane = best;
+    }
+    return lane;
+}
+
 int vr_road_init(vr_road *r)
 {
     if (r->samp_s) return 0;

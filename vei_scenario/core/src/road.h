@@ -15,8 +15,9 @@ enum {
     VR_G_COLS
 };
 
-/* columns of a lane row: section index, lane id, driving (1/0), first width record, count */
-enum { VR_L_SEC, VR_L_ID, VR_L_DRIVING, VR_L_W0, VR_L_NW, VR_L_COLS };
+/* columns of a lane row: section index, lane id, driving (1/0), first width record, count, successor
+ * and predecessor lane ids (NAN: none) */
+enum { VR_L_SEC, VR_L_ID, VR_L_DRIVING, VR_L_W0, VR_L_NW, VR_L_SUCC, VR_L_PRED, VR_L_COLS };
 
 typedef struct {
     int n_geom;
@@ -64,6 +65,10 @@ int vr_lane_drift(const vr_road *r, double s, int lane_id, double *drift);
 int vr_lane_pose(const vr_road *r, double s, int lane_id, double offset, double *out4);
 /* The factor from distance along a lane (at `offset` from its centre) to reference-line arc length. */
 int vr_lane_stretch(const vr_road *r, double s, int lane_id, double offset, double *stretch);
+/* The lane a road user in `lane_id` at s0 is in at s1 (same_road: s0 is on this road; else it has
+ * just entered it at s1): through the lane links of the sections passed, to the nearest lane on its
+ * side where its lane ends, and over to the nearest driving lane where its lane narrows to nothing. */
+int vr_lane_on(const vr_road *r, double s0, double s1, int lane_id, int same_road);
 /* nearest point of the reference line: s, t, along, distance to it; and the lane there */
 int vr_locate(vr_road *r, double x, double y, double *s, double *t, double *along, double *dist,
               int *found, int *lane_id); /* -1 when out of memory */

@@ -1,0 +1,555 @@
+"""The conditions of OpenSCENARIO triggers, each one class with a ``test(ctx) -> bool`` of the current
+state (edges and delays are the trigger's, :class:`~vei_scenario.interpreter.storyboard.ConditionRunner`).
+A new condition is one class and one line in ``VALUE_CONDITIONS`` or ``ENTITY_CONDITIONS``."""
+
+from __future__ import annotations
+
+import math
+
+from vei_scenario.interpreter.context import Context
+from vei_scenario.models.boxes import box_distance, time_to_contact
+from vei_scenario.openscenario import STORYBOARD_ELEMENT_TYPES
+
+
+def compare(rule: str, a: float, b: float) -> bool:
+    if rule == "greaterThan":
+        return a > b
+    if rule == "lessThan":
+        return a < b
+    if rule == "greaterOrEqual":
+        return a >= b
+    if rule == "lessOrEqual":
+        return a <= b
+    if rule == "equalTo":
+        return abs(a - b) <= 1e-9 * max(1.0, abs(b))
+    if rule == "notEqualTo":
+        return abs(a - b) > 1e-9 * max(1.0, abs(b))
+    raise ValueError(rule)
+
+
+# --- conditions -------------------------------------------------------------------------------------
+
+
+class Condition:
+    """Raw truth of a condition; edges and delays are applied by :class:`ConditionRunner`."""
+
+    def test(self, ctx: Context) -> bool:  # pragma: no cover - interface
+        raise NotImplementedError
+
+
+class SimulationTime(Condition):
+    def __init__(self, el, ctx: Context) -> None:
+        self.value, self.rule = float(el.get("value")), el.get("rule")
+
+    def test(self, ctx: Context) -> bool:
+        return compare(self.rule, ctx.t, self.value)
+
+
+class ParameterCondition(Condition):
+    store, ref, what = "parameters", "parameterRef", "parameter"
+
+    def __init__(self, el, ctx: Context) -> None:
+        self.name, self.value, self.rule = (el.get(self.ref) or "").lstrip("$"), el.get("value"), el.get("rule")
+        if self.name not in getattr(ctx, self.store):
+            raise ctx.error(el, f"{el.tag} on undeclared {self.what} {self.name!r}")
+
+    def test(self, ctx: Context) -> bool:
+        current = getattr(ctx, self.store)[self.name]
+        try:
+            return compare(self.rule, float(current), float(self.value))
+        except ValueError:
+            if self.rule == "equalTo":
+                return current == self.value
+            if self.rule == "notEqualTo":
+                return current != self.value
+            return False
+
+
+class VariableCondition(ParameterCondition):
+    """VariableCondition (OpenSCENARIO 1.2): a variable's current value against ``value`` (numbers
+    compared as numbers, text and booleans by equality)."""
+
+    store, ref, what = "variables", "variableRef", "variable"
+
+
+class StoryboardElementState(Condition):
+    def __init__(self, el, ctx: Context) -> None:
+        self.key = (STORYBOARD_ELEMENT_TYPES.get(el.get("storyboardElementType"), ""), el.get("storyboardElementRef"))
+        self.state = el.get("state")
+        self.el = el
+
+    def test(self, ctx: Context) -> bool:
+        target = ctx.elements.get(self.key)
+        if target is None:
+            raise ctx.error(self.el, f"StoryboardElementStateCondition: no {self.key[0]} named {self.key[1]!r}")
+        if self.state.endswith("State"):
+            return target.state == self.state[: -len("State")]
+        return target.transitions.get(self.state, -10) >= ctx.step - 1
+
+
+class _EntityCondition(Condition):
+    """Base for conditions evaluated for triggering entities (any/all)."""
+
+    def __init__(self, el, ctx: Context, triggering: list[str], rule: str) -> None:
+        self.el, self.triggering, self.rule_any = el, triggering, rule == "any"
+
+    def for_entity(self, ctx: Context, name: str) -> bool:  # pragma: no cover - interface
+        raise NotImplementedError
+
+    def test(self, ctx: Context) -> bool:
+        if len(self.triggering) == 1:  # (the common case, without a generator)
+            return self.for_entity(ctx, self.triggering[0])
+        results = (self.for_entity(ctx, n) for n in self.triggering)
+        return any(results) if self.rule_any else all(results)
+
+
+def _entity(ctx: Context, el, name: str):
+    if name not in ctx.entities:
+        raise ctx.error(el, f"no entity named {name!r}")
+    return ctx.entities[name]
+
+
+class Collision(_EntityCondition):
+    def __init__(self, el, ctx, triggering, rule) -> None:
+        super().__init__(el, ctx, triggering, rule)
+        ref = el.find("EntityRef")
+        by_type = el.find("ByType")
+        if ref is not None:
+            self.targets = [ref.get("entityRef")]
+            _entity(ctx, el, self.targets[0])
+        elif by_type is not None:
+            kind = by_type.get("type") or by_type.get("objectType")
+            self.targets = [n for n, e in ctx.entities.items() if e.category == kind or kind == "vehicle"]
+        else:
+            raise ctx.error(el, "CollisionCondition needs EntityRef or ByType")
+
+    def for_entity(self, ctx: Context, name: str) -> bool:
+        return any(frozenset((name, t)) in ctx.colliding for t in self.targets if t != name)
+
+
+class _StaticPoint:
+    """A position as the other party of a distance or time-to-collision: no size, no motion."""
+
+    length = width = speed = center_x = 0.0
+
+    def __init__(self, pose) -> None:
+        self.x, self.y, self.yaw, self.lane = pose.x, pose.y, pose.h, pose.lane
+
+    def box(self) -> tuple[float, float, float, float, float]:
+        return self.x, self.y, self.yaw, 0.0, 0.0
+
+    def velocity(self) -> tuple[float, float]:
+        return 0.0, 0.0
+
+
+def _relative(ctx, el, a, b, kind: str, freespace: bool) -> tuple[float, float]:
+    """Distance and its rate of change between entities a and b (``kind``: cartesian/euclidian,
+    longitudinal or lateral in a's frame; ``freespace``: between the boxes)."""
+    ax, ay, ayaw, al, aw = a.box()
+    bx, by, byaw, bl, bw = b.box()
+    if not freespace:  # between reference points (esmini), not box centres
+        ax, ay, bx, by = a.x, a.y, b.x, b.y
+    (avx, avy), (bvx, bvy) = a.velocity(), b.velocity()
+    rx, ry, vx, vy = bx - ax, by - ay, bvx - avx, bvy - avy
+    if kind in ("cartesianDistance", "euclidianDistance", "euclideanDistance"):
+        if freespace:
+            d = float(box_distance(ax, ay, ayaw, al, aw, bx, by, byaw, bl, bw))
+            d2 = float(
+                box_distance(
+                    ax + avx * 1e-3, ay + avy * 1e-3, ayaw, al, aw, bx + bvx * 1e-3, by + bvy * 1e-3, byaw, bl, bw
+                )
+            )
+            return d, (d2 - d) / 1e-3
+        d = math.hypot(rx, ry)
+        return d, (rx * vx + ry * vy) / d if d > 1e-12 else 0.0
+    c, s = math.cos(a.yaw), math.sin(a.yaw)
+    if kind == "alongRoad":
+        la, lb = a.lane, b.lane
+        if la is not None and lb is not None and la.road == lb.road:  # s difference, a's driving sense
+            sign = 1.0 if la.forward else -1.0
+            d = sign * (lb.s - la.s)
+            rate = b.speed * math.cos(byaw - ayaw) - a.speed
+            half = 0.5 * (al + bl) if freespace else 0.0
+            direction = 1.0 if d >= 0 else -1.0
+            return max(abs(d) - half, 0.0), direction * rate
+        kind = "longitudinal"  # not on one road: along a's heading
+    if kind == "longitudinal":
+        d, rate = c * rx + s * ry, c * vx + s * vy
+        half = 0.5 * (al + bl * abs(math.cos(byaw - ayaw)) + bw * abs(math.sin(byaw - ayaw))) if freespace else 0.0
+    elif kind == "lateral":
+        d, rate = -s * rx + c * ry, -s * vx + c * vy
+        half = 0.5 * (aw + bw * abs(math.cos(byaw - ayaw)) + bl * abs(math.sin(byaw - ayaw))) if freespace else 0.0
+    else:
+        raise ctx.error(el, f"relativeDistanceType {kind!r} is not supported")
+    sign = 1.0 if d >= 0 else -1.0
+    return max(abs(d) - half, 0.0), sign * rate
+
+
+def _distance_kind(ctx, el) -> str:
+    system = el.get("coordinateSystem", "entity")
+    if system not in ("entity", "road", "lane"):
+        raise ctx.error(el, f"coordinateSystem {system!r} is not supported (entity, road, lane)")
+    if system != "entity" and el.get("relativeDistanceType") == "longitudinal":
+        return "alongRoad"
+    if el.get("routingAlgorithm") not in (None, "undefined"):
+        raise ctx.error(el, f"routingAlgorithm {el.get('routingAlgorithm')!r} is not supported")
+    if el.get("alongRoute") == "true":  # OpenSCENARIO 1.0: along the road (s), see _relative
+        return "alongRoad"
+    return el.get("relativeDistanceType", "cartesianDistance")
+
+
+class TimeToCollision(_EntityCondition):
+    def __init__(self, el, ctx, triggering, rule) -> None:
+        super().__init__(el, ctx, triggering, rule)
+        self.value, self.rule = float(el.get("value")), el.get("rule")
+        self.freespace = el.get("freespace", "false") == "true"
+        self.kind = _distance_kind(ctx, el)
+        target = el.find("TimeToCollisionConditionTarget")
+        ref = target.find("EntityRef") if target is not None else None
+        position = target.find("Position") if target is not None else None
+        self.position = _PositionTarget(position) if position is not None else None
+        if ref is None and self.position is None:
+            raise ctx.error(el, "TimeToCollisionCondition needs an EntityRef or a Position target")
+        self.target = ref.get("entityRef") if ref is not None else None
+        if self.target is not None:
+            _entity(ctx, el, self.target)
+
+    def _target(self, ctx: Context):
+        if self.target is not None:
+            return ctx.entities[self.target]
+        return self.position(ctx)
+
+    def ttc(self, ctx: Context, name: str) -> float:
+        a, b = ctx.entities[name], self._target(ctx)
+        if self.freespace and self.kind in ("cartesianDistance", "euclidianDistance", "euclideanDistance"):
+            (avx, avy), (bvx, bvy) = a.velocity(), b.velocity()
+            return float(
+                time_to_contact(*a.box()[:3], a.length, a.width, avx, avy, *b.box()[:3], b.length, b.width, bvx, bvy)
+            )
+        d, rate = _relative(ctx, self.el, a, b, self.kind, self.freespace)
+        return d / -rate if rate < -1e-9 else math.inf
+
+    def for_entity(self, ctx: Context, name: str) -> bool:
+        ttc = self.ttc(ctx, name)
+        return math.isfinite(ttc) and compare(self.rule, ttc, self.value)
+
+
+class RelativeDistance(_EntityCondition):
+    def __init__(self, el, ctx, triggering, rule) -> None:
+        super().__init__(el, ctx, triggering, rule)
+        self.value, self.rule = float(el.get("value")), el.get("rule")
+        self.freespace = el.get("freespace", "false") == "true"
+        self.kind = _distance_kind(ctx, el)
+        self.target = el.get("entityRef")
+        _entity(ctx, el, self.target)
+
+    def for_entity(self, ctx: Context, name: str) -> bool:
+        d, _ = _relative(ctx, self.el, ctx.entities[name], ctx.entities[self.target], self.kind, self.freespace)
+        return compare(self.rule, d, self.value)
+
+
+class _PositionTarget:
+    """A condition's ``<Position>``: resolved when first needed (after Init placed the entities), and
+    again every time when it is relative to an entity (it moves with it, as in esmini)."""
+
+    def __init__(self, el) -> None:
+        self.el = el
+        self.moving = any(x.get("entityRef") for x in el.iter() if isinstance(x.tag, str))
+        self.point: _StaticPoint | None = None
+
+    def __call__(self, ctx: Context) -> _StaticPoint:
+        if self.point is None or self.moving:
+            from vei_scenario.interpreter.positions import resolve
+
+            self.point = _StaticPoint(resolve(ctx, self.el))
+        return self.point
+
+
+class Distance(_EntityCondition):
+    def __init__(self, el, ctx, triggering, rule) -> None:
+        super().__init__(el, ctx, triggering, rule)
+        self.value, self.rule = float(el.get("value")), el.get("rule")
+        self.freespace = el.get("freespace", "false") == "true"
+        self.kind = _distance_kind(ctx, el)
+        if el.find("Position") is None:
+            raise ctx.error(el, "DistanceCondition needs a Position")
+        self.target = _PositionTarget(el.find("Position"))
+
+    def for_entity(self, ctx: Context, name: str) -> bool:
+        e, p = ctx.entities[name], self.target(ctx)
+        if self.kind == "alongRoad" and p.lane is not None and e.lane is not None and e.lane.road == p.lane.road:
+            d = abs(p.lane.s - e.lane.s) - (0.5 * e.length if self.freespace else 0.0)
+            return compare(self.rule, max(d, 0.0), self.value)
+        if self.kind == "alongRoad":
+            kind = "longitudinal"
+        else:
+            kind = self.kind
+        d, _ = _relative(ctx, self.el, e, p, kind, self.freespace)
+        return compare(self.rule, d, self.value)
+
+
+class Speed(_EntityCondition):
+    """Compares the entity's ``quantity`` (an Entity attribute) with the condition's value."""
+
+    quantity = "speed"
+
+    def __init__(self, el, ctx, triggering, rule) -> None:
+        super().__init__(el, ctx, triggering, rule)
+        self.value, self.rule = float(el.get("value")), el.get("rule")
+
+    def for_entity(self, ctx: Context, name: str) -> bool:
+        return compare(self.rule, getattr(ctx.entities[name], self.quantity), self.value)
+
+
+class ReachPosition(_EntityCondition):
+    def __init__(self, el, ctx, triggering, rule) -> None:
+        super().__init__(el, ctx, triggering, rule)
+        self.tolerance = float(el.get("tolerance"))
+        if el.find("Position") is None:
+            raise ctx.error(el, "ReachPositionCondition needs a Position")
+        self.target = _PositionTarget(el.find("Position"))
+
+    def for_entity(self, ctx: Context, name: str) -> bool:
+        e, p = ctx.entities[name], self.target(ctx)
+        return math.hypot(e.x - p.x, e.y - p.y) <= self.tolerance
+
+
+class TraveledDistance(_EntityCondition):
+    def __init__(self, el, ctx, triggering, rule) -> None:
+        super().__init__(el, ctx, triggering, rule)
+        self.value = float(el.get("value"))
+
+    def for_entity(self, ctx: Context, name: str) -> bool:
+        return ctx.entities[name].odometer >= self.value
+
+
+class StandStill(_EntityCondition):
+    def __init__(self, el, ctx, triggering, rule) -> None:
+        super().__init__(el, ctx, triggering, rule)
+        self.duration = float(el.get("duration"))
+
+    def for_entity(self, ctx: Context, name: str) -> bool:
+        since = ctx.entities[name].standing_since
+        return since is not None and ctx.t - since >= self.duration - 1e-9
+
+
+class RelativeSpeed(_EntityCondition):
+    def __init__(self, el, ctx, triggering, rule) -> None:
+        super().__init__(el, ctx, triggering, rule)
+        self.value, self.rule, self.target = float(el.get("value")), el.get("rule"), el.get("entityRef")
+        _entity(ctx, el, self.target)
+
+    def for_entity(self, ctx: Context, name: str) -> bool:
+        return compare(self.rule, ctx.entities[name].speed - ctx.entities[self.target].speed, self.value)
+
+
+class Acceleration(Speed):
+    quantity = "accel"
+
+
+class TimeHeadway(_EntityCondition):
+    """Headway time: distance to the target divided by the triggering entity's speed (inf standing)."""
+
+    def __init__(self, el, ctx, triggering, rule) -> None:
+        super().__init__(el, ctx, triggering, rule)
+        self.value, self.rule, self.target = float(el.get("value")), el.get("rule"), el.get("entityRef")
+        self.freespace = el.get("freespace", "false") == "true"
+        # OpenSCENARIO 1.0 alongRoute: true along the road (longitudinal), false straight (euclidean)
+        along = el.get("alongRoute")
+        default = "euclidianDistance" if along == "false" else "longitudinal"
+        self.kind = el.get("relativeDistanceType", default)
+        _entity(ctx, el, self.target)
+
+    def for_entity(self, ctx: Context, name: str) -> bool:
+        e = ctx.entities[name]
+        d, _ = _relative(ctx, self.el, e, ctx.entities[self.target], self.kind, self.freespace)
+        c, s = math.cos(e.yaw), math.sin(e.yaw)
+        t = ctx.entities[self.target]
+        if c * (t.x - e.x) + s * (t.y - e.y) <= 0:  # the target is not ahead: no headway
+            return False
+        if e.speed <= 1e-9:
+            return False
+        return compare(self.rule, d / e.speed, self.value)
+
+
+class _HeldCondition(_EntityCondition):
+    """True once the entity's :meth:`holds` has been true without a break for ``duration``."""
+
+    def __init__(self, el, ctx, triggering, rule) -> None:
+        super().__init__(el, ctx, triggering, rule)
+        self.duration = float(el.get("duration"))
+        self.since: dict[str, float] = {}
+
+    def holds(self, ctx: Context, e) -> bool:  # pragma: no cover - interface
+        raise NotImplementedError
+
+    def for_entity(self, ctx: Context, name: str) -> bool:
+        if not self.holds(ctx, ctx.entities[name]):
+            self.since.pop(name, None)
+            return False
+        start = self.since.setdefault(name, ctx.t)
+        return ctx.t - start >= self.duration - 1e-9
+
+
+class EndOfRoad(_HeldCondition):
+    """EndOfRoadCondition: stuck at a road end with nothing linked beyond it."""
+
+    def holds(self, ctx: Context, e) -> bool:
+        if e.lane is None:
+            return False
+        road = ctx.roads.road(e.lane.road)
+        forward = e.lane.forward
+        edge = e.lane.s >= road.length - 1e-6 if forward else e.lane.s <= 1e-6
+        return edge and ctx.roads.next_road(road, e.lane.lane, forward) is None
+
+
+class TrafficSignal(Condition):
+    """TrafficSignalCondition: the signal's state, as the last TrafficSignalStateAction set it."""
+
+    def __init__(self, el, ctx: Context) -> None:
+        self.name, self.state = el.get("name"), el.get("state")
+
+    def test(self, ctx: Context) -> bool:
+        return ctx.signals.get(self.name) == self.state
+
+
+VALUE_CONDITIONS = {
+    "TrafficSignalCondition": TrafficSignal,
+    "SimulationTimeCondition": SimulationTime,
+    "ParameterCondition": ParameterCondition,
+    "VariableCondition": VariableCondition,
+    "StoryboardElementStateCondition": StoryboardElementState,
+}
+
+
+class RelativeClearance(_EntityCondition):
+    """RelativeClearanceCondition: the lanes ``RelativeLaneRange`` away from the entity's (left
+    positive, as it drives) exist where it is, run its way (unless ``oppositeLanes``), and hold no
+    other entity (or none of the listed ones) from ``distanceBackward`` behind to ``distanceForward``
+    ahead along the road."""
+
+    def __init__(self, el, ctx, triggering, rule) -> None:
+        super().__init__(el, ctx, triggering, rule)
+        self.forward_m = float(el.get("distanceForward", "0") or 0)
+        self.backward_m = float(el.get("distanceBackward", "0") or 0)
+        self.opposite = el.get("oppositeLanes", "false") == "true"
+        self.freespace = el.get("freeSpace", el.get("freespace", "false")) == "true"
+        ranges = [(int(r.get("from")), int(r.get("to"))) for r in el.iterfind("RelativeLaneRange")]
+        self.ranges = ranges or [(-100, 100)]
+        self.only = [r.get("entityRef") for r in el.iterfind("EntityRef")]
+
+    def for_entity(self, ctx: Context, name: str) -> bool:
+        from vei_scenario.interpreter.positions import lane_shift
+
+        e = ctx.entities[name]
+        if e.lane is None:
+            return False
+        road = ctx.roads.road(e.lane.road)
+        lanes = road.section(e.lane.s).lanes
+        wanted: set[int] = set()
+        for lo, hi in self.ranges:
+            for k in range(lo, hi + 1):
+                lane = lane_shift(e.lane.lane, k, e.lane.forward) if k else e.lane.lane
+                if lane not in lanes or lanes[lane].type not in DRIVABLE_LANE_TYPES:
+                    continue
+                if not self.opposite and road.drives_forward(lane) != road.drives_forward(e.lane.lane):
+                    continue
+                wanted.add(lane)
+        if not wanted:
+            return False
+        sign = 1.0 if e.lane.forward else -1.0
+        for other_name, o in ctx.entities.items():
+            if other_name == name or (self.only and other_name not in self.only):
+                continue
+            if o.lane is None or o.lane.road != e.lane.road or o.lane.lane not in wanted:
+                continue
+            ds = sign * (o.lane.s - e.lane.s)
+            half = 0.5 * (e.length + o.length) if self.freespace else 0.0
+            if -self.backward_m - half <= ds <= self.forward_m + half:
+                return False
+        return True
+
+
+#: Lane types a vehicle may be on without being "off road" (OffroadCondition).
+DRIVABLE_LANE_TYPES = {
+    "driving", "entry", "exit", "onRamp", "offRamp", "connectingRamp", "bidirectional", "stop", "border", "shoulder",
+}  # fmt: skip
+
+
+class Offroad(_HeldCondition):
+    """OffroadCondition: the entity has been off every drivable lane for ``duration``."""
+
+    def holds(self, ctx: Context, e) -> bool:
+        rp = ctx.roads.project(e.x, e.y) if ctx.roads is not None else None
+        lane = rp.road.section(rp.s).lanes.get(rp.lane) if rp is not None and rp.lane is not None else None
+        return lane is None or lane.type not in DRIVABLE_LANE_TYPES
+
+
+def _heading_in(ctx: Context, e, system: str) -> float:
+    """The entity's heading in ``system``: absolute (entity, world; what esmini measures), or relative
+    to the direction of increasing s of the road it is on (road, lane)."""
+    if system in ("road", "lane") and ctx.roads is not None:
+        rp = ctx.roads.project(e.x, e.y, e.lane.road if e.lane is not None else None)
+        if rp is not None:
+            return e.yaw - rp.road.ref_pose(rp.s)[2]
+    return e.yaw
+
+
+class Angle(_EntityCondition):
+    """AngleCondition (OpenSCENARIO 1.2): the entity's heading (pitch, roll: 0, vei's entities stay
+    level) within ``angleTolerance`` of ``angle`` (rad), measured in ``coordinateSystem``."""
+
+    def __init__(self, el, ctx, triggering, rule) -> None:
+        from vei_scenario.safe_xml import float_attribute
+
+        super().__init__(el, ctx, triggering, rule)
+        self.angle = float_attribute(ctx.path, el, "angle")
+        self.tolerance = float_attribute(ctx.path, el, "angleTolerance")
+        if self.tolerance < 0:
+            raise ctx.error(el, "angleTolerance must not be negative")
+        self.kind = el.get("angleType", "heading")
+        if self.kind not in ("heading", "pitch", "roll"):
+            raise ctx.error(el, f"angleType {self.kind!r} is not one of heading, pitch, roll")
+        self.system = el.get("coordinateSystem", "entity")
+        if self.system not in ("entity", "world", "road", "lane", "trajectory"):
+            raise ctx.error(el, f"coordinateSystem {self.system!r} is not one of OpenSCENARIO's")
+
+    def measured(self, ctx: Context, name: str) -> float:
+        e = ctx.entities[name]
+        return _heading_in(ctx, e, self.system) if self.kind == "heading" else 0.0
+
+    def for_entity(self, ctx: Context, name: str) -> bool:
+        diff = (self.measured(ctx, name) - self.angle + math.pi) % (2 * math.pi) - math.pi
+        return abs(diff) <= self.tolerance + 1e-12
+
+
+class RelativeAngle(Angle):
+    """RelativeAngleCondition: the triggering entity's angle minus that of ``entityRef``."""
+
+    def __init__(self, el, ctx, triggering, rule) -> None:
+        super().__init__(el, ctx, triggering, rule)
+        self.ref = el.get("entityRef")
+        _entity(ctx, el, self.ref)
+
+    def measured(self, ctx: Context, name: str) -> float:
+        return super().measured(ctx, name) - super().measured(ctx, self.ref)
+
+
+ENTITY_CONDITIONS = {
+    "AngleCondition": Angle,
+    "RelativeAngleCondition": RelativeAngle,
+    "OffroadCondition": Offroad,
+    "RelativeClearanceCondition": RelativeClearance,
+    "CollisionCondition": Collision,
+    "TimeToCollisionCondition": TimeToCollision,
+    "DistanceCondition": Distance,
+    "RelativeDistanceCondition": RelativeDistance,
+    "SpeedCondition": Speed,
+    "ReachPositionCondition": ReachPosition,
+    "TraveledDistanceCondition": TraveledDistance,
+    "StandStillCondition": StandStill,
+    "RelativeSpeedCondition": RelativeSpeed,
+    "AccelerationCondition": Acceleration,
+    "TimeHeadwayCondition": TimeHeadway,
+    "EndOfRoadCondition": EndOfRoad,
+}

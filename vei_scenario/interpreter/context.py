@@ -1,0 +1,60 @@
+"""What conditions, actions and controllers see of a running simulation: time, entities, parameters and
+variables, the storyboard's elements, collisions, the road network (loaded on first use)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from vei_scenario.errors import VeiInputError
+
+
+@dataclass
+class Context:
+    """What conditions and actions see of the simulation."""
+
+    path: object  # the scenario file, for error messages
+    t: float
+    dt: float
+    step: int
+    entities: dict
+    parameters: dict[str, str]
+    elements: dict[tuple[str, str], object] = field(default_factory=dict)  # (kind, name) -> storyboard Element
+    colliding: set[frozenset[str]] = field(default_factory=set)
+    trajectories: dict = field(default_factory=dict)  # Trajectory name -> Polyline
+    signals: dict[str, str] = field(default_factory=dict)  # traffic signal name -> state
+    #: Running actions stepped before the entities move (they read the state all triggers saw).
+    stepping: list = field(default_factory=list)
+    #: Under Jacobi coupling: every entity as it was at the start of the step (see engine.COUPLINGS).
+    snapshot: dict | None = None
+    #: True while the Init actions start (before the first record at t = 0).
+    initializing: bool = False
+    #: the storyboard's first evaluation at t = 0, before t = 0 is logged: no time passes in it
+    settling: bool = False
+    road_file: object = None  # the scenario's OpenDRIVE file, loaded on first use
+    #: OpenSCENARIO 1.2 variables: name -> current value (text), and their declared types
+    variables: dict[str, str] = field(default_factory=dict)
+    variable_types: dict[str, str] = field(default_factory=dict)
+
+    @property
+    def roads(self):
+        """The scenario's road network (None without one), loaded when a position first needs it."""
+        if self.road_file is None:
+            return None
+        if "_roads" not in self.__dict__:
+            from vei_scenario.roads.road_model import RoadNetwork
+
+            self.__dict__["_roads"] = RoadNetwork.load(self.road_file)
+        return self.__dict__["_roads"]
+
+    def observed(self, name: str):
+        """Entity ``name`` as other entities' controllers see it now: its current state under
+        sequential coupling, its state at the start of the step under Jacobi coupling."""
+        if self.snapshot is not None:
+            return self.snapshot.get(name)
+        return self.entities.get(name)
+
+    def error(self, el, reason: str) -> VeiInputError:
+        """A refusal naming ``el``'s file and line (the catalog file for what came from a catalog)."""
+        from vei_scenario.interpreter.document import source_of
+
+        return VeiInputError(source_of(el, self.path), f"line {el.sourceline}", reason)

@@ -1,0 +1,46 @@
+"""What a description says once read (before anything is sampled): the actors, where they start and
+what they do, the road, the weather, the ego; and the refusal that names the words nothing could place.
+The reader (:mod:`vei_scenario.language.reader`) and the local language model fill it in; the
+sampling (:mod:`vei_scenario.language.rules_backend`) turns it into layers."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+
+class NotUnderstood(ValueError):
+    """The description has words the vocabulary cannot place."""
+
+    def __init__(self, words: list[str], text: str) -> None:
+        self.words = words
+        listed = ", ".join(f"'{w}'" for w in words)
+        super().__init__(
+            f"could not place {listed} (the words it knows: vei_scenario/language/vocabulary.py and lexicon.py; "
+            "behaviours: `vei behaviours`)"
+        )
+
+
+@dataclass
+class ActorSpec:
+    kind: str
+    relation: str | None = None
+    distance_m: float | None = None
+    speed_mps: float | None = None
+    behaviours: list[tuple[str, dict, str | None, str]] = field(default_factory=list)  # name, cfg, class, link
+
+
+@dataclass
+class Reading:
+    """What the parser understood, before sampling."""
+
+    map_kind: str | None = None
+    lanes: int | None = None
+    weather: str | None = None
+    time: str | None = None
+    density: str | None = None
+    intent: str | None = None
+    ego_route: str | None = None
+    ego_speed_mps: float | None = None
+    ego_relation: str | None = None
+    actors: list[ActorSpec] = field(default_factory=list)
+    ignored: list[str] = field(default_factory=list)  # words read past: nothing in the layers holds them
