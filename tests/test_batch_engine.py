@@ -8,8 +8,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from vei_scenario.batch import BatchScenario, NotBatchable
+from vei_scenario.batch import BatchScenario
 from vei_scenario.interpreter import run_scenario
+from vei_scenario.loop import NotALoop
 
 DATA = Path(__file__).parent / "data"
 
@@ -49,7 +50,7 @@ def test_batch_trajectories_equal_vei_run(compiled):
 
 
 def test_other_structures_are_refused():
-    with pytest.raises(NotBatchable):
+    with pytest.raises(NotALoop):
         BatchScenario(DATA / "following_brake.xosc")
 
 

@@ -24,7 +24,8 @@ from pathlib import Path
 
 import numpy as np
 
-from vei_scenario.batch.engine import BatchScenario, NotBatchable
+from vei_scenario.batch.engine import BatchScenario
+from vei_scenario.loop import NotALoop
 from vei_scenario.metrics.definitions import DIGITS, METRICS, ZONES
 from vei_scenario.metrics.series import MetricConfig, median
 
@@ -174,11 +175,11 @@ class NativeBatch:
 
     def __init__(self, batch: BatchScenario, cfg: MetricConfig | None = None) -> None:
         if len(batch.names) != 2:
-            raise NotBatchable("the compiled kernel runs the ego and one scooter")
+            raise NotALoop("the compiled kernel runs the ego and one scooter")
         self.batch, self.cfg = batch, cfg or MetricConfig()
         self.lib = load_kernel()
         if self.lib is None:
-            raise NotBatchable("no C compiler for the compiled kernel")
+            raise NotALoop("no C compiler for the compiled kernel")
         self._keep: list = []
         self._scene_cache: dict[tuple, _Scene] = {}
         self._scene_lock = threading.Lock()  # prepare() may run on several threads
@@ -204,7 +205,7 @@ class NativeBatch:
     def _build_scene(self, duration: float, model: tuple = (), params=None) -> _Scene:
         b, cfg, dt = self.batch, self.cfg, self.batch.dt
         if not duration >= 0:
-            raise NotBatchable("negative duration")
+            raise NotALoop("negative duration")
         times = [0.0]
         while not times[-1] > duration and times[-1] < 600.0 - 1e-9:
             times.append(round(len(times) * dt, 9))
@@ -217,8 +218,7 @@ class NativeBatch:
         gb = self._arr((dx2 - dx1) / (dx1 * dx2))
         gc = self._arr(dx1 / (dx2 * (dx1 + dx2)))
         ego, threat = b.ego, b.threat
-        _, ego_poly, _ = b.paths[ego]
-        _, track, _ = b.paths[threat]
+        ego_poly, track = b.paths[ego][0], b.paths[threat][0]
         from vei_scenario.interpreter.controllers import recorded_start_speed, rider_route
 
         route = np.array(rider_route(track))

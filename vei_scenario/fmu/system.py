@@ -4,7 +4,7 @@ package (``vei fmu system``).
 The loop: the ego vehicle FMU (its path, Init pose and speed), the planner FMU (the scenario's
 CollisionAvoidancePlanner properties and CapEnabled) and the e-scooter FMU (the threat's recorded
 track and TimeShift, its route, RiderType), connected as ``vei run`` couples the entities. Values are
-read through the batch engine's reading of the scenario, so a scenario it cannot run in batch (not of
+read through the loop's reading of the scenario (:mod:`vei_scenario.loop`), so a scenario it cannot run in batch (not of
 the structure ``vei compile`` writes) is refused with the reason.
 """
 
@@ -63,14 +63,14 @@ class ClosedLoop:
 
 def closed_loop(scenario: str | Path, values: dict[str, str] | None = None, dt: float = 0.01) -> ClosedLoop:
     """The closed loop of ``scenario`` with parameter overrides ``values`` at step ``dt``."""
-    from vei_scenario.batch import BatchScenario, NotBatchable
     from vei_scenario.checks import check_dt
+    from vei_scenario.loop import LoopScene, NotALoop
 
     check_dt(dt)
 
     try:
-        b = BatchScenario(scenario, dt)
-    except NotBatchable as exc:
+        b = LoopScene(scenario, dt)
+    except NotALoop as exc:
         raise VeiInputError(scenario, "", f"not a vei-compiled closed loop: {exc}") from None
     if len(b.names) != 2:
         raise VeiInputError(scenario, "", f"the FMU loop holds the ego and one scooter; the scenario has {b.names}")
@@ -81,8 +81,7 @@ def closed_loop(scenario: str | Path, values: dict[str, str] | None = None, dt: 
         raise VeiInputError(scenario, "--param", f"the values {values} do not make a playable closed loop")
     r = b.resolve([values or {}])
     ego, threat = b.names.index(b.ego), b.names.index(b.threat)
-    _, ego_poly, _ = b.paths[b.ego]
-    _, track, _ = b.paths[b.threat]
+    ego_poly, track = b.paths[b.ego][0], b.paths[b.threat][0]
     from vei_scenario.interpreter.controllers import rider_route
 
     route = rider_route(track)

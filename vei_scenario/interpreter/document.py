@@ -289,9 +289,13 @@ def parameter_text(value: object) -> str:
     return value if isinstance(value, str) else str(value)
 
 
-def load_scenario(path: str | Path, overrides: dict[str, object] | None = None) -> ScenarioDocument:
+def load_scenario(
+    path: str | Path, overrides: dict[str, object] | None = None, tree: etree._ElementTree | None = None
+) -> ScenarioDocument:
+    """The scenario at ``path`` with parameters (``overrides`` over the declared values), catalogs
+    and expressions resolved in place; ``tree``: the file already parsed (it is changed)."""
     path = Path(path)
-    tree = parse_xml(path)
+    tree = parse_xml(path) if tree is None else tree
     if tree.docinfo.internalDTD is not None:
         raise VeiInputError(path, "line 1", "DTDs are not accepted in OpenSCENARIO files")
     root = tree.getroot()

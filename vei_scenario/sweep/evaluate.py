@@ -40,28 +40,29 @@ _NATIVE: dict[tuple[str, float, str], object] = {}
 
 def _native_engine(scenario: str, dt: float, zone_ttc: str = "2d"):
     """The compiled kernel for a vei-compiled two-entity scenario (cached per process), or None."""
-    from vei_scenario.batch import NotBatchable
     from vei_scenario.batch.native import NativeBatch
+    from vei_scenario.loop import NotALoop
 
     key = (scenario, dt, zone_ttc)
     if key not in _NATIVE:
         engine = _batch_engine(scenario, dt)
         try:
             _NATIVE[key] = NativeBatch(engine, MetricConfig(zone_ttc=zone_ttc)) if engine is not None else None
-        except NotBatchable:
+        except NotALoop:
             _NATIVE[key] = None
     return _NATIVE[key]
 
 
 def _batch_engine(scenario: str, dt: float):
     """The batch engine for a vei-compiled scenario (cached per process), or None for other files."""
-    from vei_scenario.batch import BatchScenario, NotBatchable
+    from vei_scenario.batch import BatchScenario
+    from vei_scenario.loop import NotALoop
 
     key = (scenario, dt)
     if key not in _BATCH:
         try:
             _BATCH[key] = BatchScenario(scenario, dt)
-        except (NotBatchable, VeiError):
+        except (NotALoop, VeiError):
             _BATCH[key] = None
     return _BATCH[key]
 
