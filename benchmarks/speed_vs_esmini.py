@@ -3,11 +3,15 @@
 
     python benchmarks/speed_vs_esmini.py [--esmini PATH] [--repeat N] [--markdown]
 
+    python benchmarks/speed_vs_esmini.py --sweep NCAP_VARIATION.xosc [--sweep ...]
+
 For every esmini example and every Euro NCAP single execution that both players play: esmini's whole
 process (``--headless --fixed_timestep 0.01 --csv_logger --collision``, as the conformance runs), and
 vei's ``run_scenario`` after start-up (loading the scenario and its road, the run, the traces), each the
 median of N runs; the ratio vei / esmini, its median and worst. Start-up is the import of what
-``vei run`` needs, measured in fresh processes.
+``vei run`` needs, measured in fresh processes. With ``--sweep``: ``vei sweep``'s evaluation of every
+variant of a Euro NCAP variation file (on all cores, as ``vei sweep`` runs it) per variant, against
+esmini's process per variant (the median over the first five variants).
 """
 
 from __future__ import annotations
@@ -51,6 +55,26 @@ def cases(esmini_dir: Path, ncap_dir: Path) -> list[tuple[str, Path, dict[str, s
     return out
 
 
+def sweep_figures(esmini: Path, variation: Path) -> str:
+    """vei sweep's evaluation of every variant of ``variation`` against esmini's process per variant."""
+    from vei_scenario.conformance.ncap import base_scenario
+    from vei_scenario.sweep import build_variants
+    from vei_scenario.sweep.evaluate import evaluate_local
+
+    base = base_scenario(variation)
+    variants, _ = build_variants(base, [], variation, None)
+    a = time.perf_counter()
+    outcomes = evaluate_local(str(base.resolve()), variants, 0.01, None, None)
+    vei = (time.perf_counter() - a) / len(variants)
+    failed = sum(1 for o in outcomes if isinstance(o, dict) and o.get("error"))
+    es = statistics.median(run_esmini(esmini, base, 0.01, {k: str(v) for k, v in p.items()}).seconds
+                           for p in variants[:5])  # fmt: skip
+    return (
+        f"vei sweep {variation.name}: {len(variants)} variants ({failed} failed), {vei * 1e3:.1f} ms per variant; "
+        f"esmini {es * 1e3:.1f} ms per process: esmini / vei = {es / vei:.1f} (target ≥ 10)"
+    )
+
+
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--esmini", default=str(ROOT.parent / "shared" / "esmini" / "bin" / "esmini"))
@@ -58,11 +82,16 @@ def main() -> int:
     ap.add_argument("--ncap", default=str(ROOT.parent / "shared" / "osc-ncap" / "OpenSCENARIO" / "NCAP"))
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--markdown", action="store_true")
+    ap.add_argument("--sweep", action="append", default=[], help="a Euro NCAP variation file (repeatable)")
     args = ap.parse_args()
     esmini = find_esmini(args.esmini)
     if esmini is None:
         print(f"esmini not found at {args.esmini}", file=sys.stderr)
         return 2
+    for variation in args.sweep:
+        print(sweep_figures(esmini, Path(variation)))
+    if args.sweep:
+        return 0
     imports, bare = startup_s(args.repeat)
     print(f"start-up: imports of vei run {imports:.3f} s (target ≤ 0.15 s); a bare python process {bare:.3f} s")
     ratios: list[tuple[float, str]] = []

@@ -8,8 +8,9 @@ import numpy as np
 import pytest
 import shapely
 
+from vei_scenario.core import _core
 from vei_scenario.interpreter.controllers import ROUTE_EXTENSION_M, WAYPOINT_SPACING_M
-from vei_scenario.models.boxes import time_to_contact, time_to_contact_scalar
+from vei_scenario.models.boxes import time_to_contact
 from vei_scenario.models.cap import BRAKE, CRUISE, CapParameters, CapState, ThreatView, cap_step
 from vei_scenario.models.sfm import SfmParameters, SfmState, sfm_step
 from vei_scenario.models.vehicle import Longitudinal, VehicleLimits, longitudinal_step
@@ -94,7 +95,7 @@ def test_ttc_agrees_with_analytic_crossing_geometry():
         lo, hi = max(tx[0], ty[0]), min(tx[1], ty[1])
         expected = lo if lo <= hi else math.inf
         got = float(time_to_contact(0, 0, 0, le, we, v_e, 0, gap_x, -gap_y, math.pi / 2, ls, ws, 0, v_s))
-        scalar = time_to_contact_scalar((0, 0, 0, le, we), (v_e, 0), (gap_x, -gap_y, math.pi / 2, ls, ws), (0, v_s))
+        scalar = _core.time_to_contact((0, 0, 0, le, we), v_e, 0, (gap_x, -gap_y, math.pi / 2, ls, ws), 0, v_s)
         assert got == pytest.approx(expected, abs=1e-9) or (math.isinf(got) and math.isinf(expected))
         assert scalar == pytest.approx(got, abs=1e-12) or (math.isinf(scalar) and math.isinf(got))
 

@@ -7,8 +7,6 @@ per step in the interpreter or thousands of (shift, time) pairs in the conflict 
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 
@@ -100,23 +98,3 @@ def time_to_contact(xa, ya, yawa, la, wa, vxa, vya, xb, yb, yawb, lb, wb, vxb, v
         leave = np.minimum(leave, hi)
     hit = (enter <= leave) & (leave >= 0)
     return np.where(hit, np.maximum(enter, 0.0), np.inf)
-
-
-def time_to_contact_scalar(a, va, b, vb) -> float:
-    """:func:`time_to_contact` for one pair: boxes (x, y, yaw, length, width), velocities (vx, vy)."""
-    xa, ya, yawa, la, wa = a
-    xb, yb, yawb, lb, wb = b
-    dx, dy, wx, wy = xb - xa, yb - ya, vb[0] - va[0], vb[1] - va[1]
-    ca, sa, cb, sb = math.cos(yawa), math.sin(yawa), math.cos(yawb), math.sin(yawb)
-    enter, leave = -math.inf, math.inf
-    for ux, uy in ((ca, sa), (-sa, ca), (cb, sb), (-sb, cb)):
-        r = 0.5 * la * abs(ux * ca + uy * sa) + 0.5 * wa * abs(-ux * sa + uy * ca)
-        r += 0.5 * lb * abs(ux * cb + uy * sb) + 0.5 * wb * abs(-ux * sb + uy * cb)
-        p, q = dx * ux + dy * uy, wx * ux + wy * uy
-        if abs(q) <= 1e-12:
-            if abs(p) > r:
-                return math.inf
-            continue
-        t1, t2 = (-r - p) / q, (r - p) / q
-        enter, leave = max(enter, min(t1, t2)), min(leave, max(t1, t2))
-    return max(enter, 0.0) if enter <= leave and leave >= 0 else math.inf

@@ -2,18 +2,22 @@
 
 A finite state machine: cruise (PID on speed towards the cruise speed along the ego's waypoints),
 emergency brake when the threat will be in the ego's path corridor and the gap to that conflict is
-below d_safe = v²/(2·a_max) + v·t_h + d0, resume when clear. Pure numerical code shared by the interpreter,
-the batch engine and the FMU tests; the compiler writes the parameters into the controller properties.
+below d_safe = v²/(2·a_max) + v·t_h + d0, resume when clear. The step is the compiled core's
+(``vei_models.c``, shared by the interpreter, the sweep kernel and the FMUs); :func:`cap_step_arrays`
+is its one vectorised form, for the numpy batch engine, held equal to it by tests. The compiler writes
+the parameters into the controller properties.
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import asdict, dataclass
+from array import array
+from dataclasses import asdict, astuple, dataclass
+from functools import cached_property
 
 import numpy as np
 
-from vei_scenario.models.boxes import time_to_contact_scalar
+from vei_scenario.core import _core
 from vei_scenario.models.properties import from_properties
 
 
@@ -46,6 +50,11 @@ class CapParameters:
 
     def properties(self) -> dict[str, float]:
         return asdict(self)
+
+    @cached_property
+    def packed(self) -> bytes:
+        """The parameters as the core's ``VeiCapParams`` (its field order is this class's)."""
+        return array("d", astuple(self)).tobytes()
 
     @classmethod
     def from_properties(cls, props: dict[str, str]) -> CapParameters:
@@ -83,12 +92,9 @@ def threat_in_corridor(
 ) -> ThreatView:
     """The planner's view of the threat: the constant-velocity time until the threat's box (x, y, yaw,
     length, width) meets the ego's path corridor, the ego box widened by ``margin_m`` on each side and
-    lengthened by it in front, the ego moving at ``ego_speed_mps`` along its heading."""
-    ex, ey, eyaw, el, ew = ego_box
-    c, s = math.cos(eyaw), math.sin(eyaw)
-    corridor = (ex + 0.5 * margin_m * c, ey + 0.5 * margin_m * s, eyaw, el + margin_m, ew + 2 * margin_m)
+    lengthened by it in front, the ego moving at ``ego_speed_mps`` along its heading (the core's)."""
     return ThreatView(
-        time_to_contact_scalar(corridor, (ego_speed_mps * c, ego_speed_mps * s), threat_box, threat_velocity)
+        _core.time_to_conflict(ego_box, ego_speed_mps, margin_m, threat_box, threat_velocity[0], threat_velocity[1])
     )
 
 
@@ -101,7 +107,8 @@ def cap_step(
     dt: float,
     resume_view: ThreatView | None = None,
 ) -> tuple[CapState, float, float]:
-    """One planner step: (new state, acceleration command m/s², d_safe m).
+    """One planner step: (new state, acceleration command m/s², d_safe m) — the compiled core's
+    ``vei_cap_step``; :func:`cap_step_arrays` is the same step for arrays, held equal by tests.
 
     Cruise: PID on speed towards ``cruise_speed_mps``, limited to the comfort band, with conditional
     integration (anti-windup). Emergency brake when the threat will be in the ego's path corridor and
@@ -112,32 +119,13 @@ def cap_step(
     its cruise velocity; defaults to ``view``); resuming as soon as the slowed ego no longer meets the
     threat would drive it into the threat's wake.
     """
-    v = ego_speed_mps
-    d_safe = params.d_safe_m(v)
-    in_path = view is not None and view.in_path(params.horizon_s)
-    gap = v * view.time_to_conflict_s if in_path else math.inf
-    mode = state.mode
-    if mode == CRUISE and in_path and gap < d_safe:
-        mode = BRAKE
-    elif mode == BRAKE:
-        check = resume_view if resume_view is not None else view
-        if not (check is not None and check.in_path(params.horizon_s)):
-            mode = CRUISE
-    if mode == BRAKE:
-        # Stop d0 short of the conflict; while not yet clear to resume, brake at least at the comfort
-        # level rather than coast towards a crossing that has only moved out of reach for now.
-        room = max(gap - params.d0_m, 0.05)
-        need = v * v / (2 * room) if math.isfinite(gap) else 0.0
-        a_cmd = -min(params.a_max_mps2, max(need, params.max_cruise_decel_mps2)) if v > 0 else 0.0
-        return CapState(BRAKE, state.integral, None), a_cmd, d_safe
-    error = cruise_speed_mps - v
-    deriv = 0.0 if state.prev_error is None else (error - state.prev_error) / dt
-    integral = state.integral + error * dt
-    a_raw = params.kp * error + params.ki * integral + params.kd * deriv
-    a_cmd = max(-params.max_cruise_decel_mps2, min(params.max_accel_mps2, a_raw))
-    if a_cmd != a_raw:  # saturated: do not integrate further (anti-windup)
-        integral = state.integral
-    return CapState(CRUISE, integral, error), a_cmd, d_safe
+    ttc = view.time_to_conflict_s if view is not None else math.inf
+    resume = resume_view.time_to_conflict_s if resume_view is not None else ttc
+    brake, integral, prev, a_cmd, d_safe = _core.cap_step(
+        state.mode == BRAKE, state.integral, state.prev_error, params.packed, cruise_speed_mps, ego_speed_mps,
+        ttc, resume, dt,
+    )  # fmt: skip
+    return CapState(BRAKE if brake else CRUISE, integral, prev), a_cmd, d_safe
 
 
 def cap_step_arrays(

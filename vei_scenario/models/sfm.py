@@ -2,17 +2,21 @@
 
 m·a = F_dest + F_rep, with F_dest = k (v_des − v), v_des = v0 (p_dest − p) / sqrt(|p_dest − p|² + σ²)
 and F_rep = A·exp(−d/B)·n (d: distance from the ego's closest box point to the scooter; n: unit vector
-from that point to the scooter). Pure numerical code: the interpreter, the batch engine and the FMU
-tests share it. The compiler writes the parameters into the scenario's controller properties.
+from that point to the scooter). The step is the compiled core's (``vei_models.c``: the interpreter,
+the sweep kernel and the FMUs run the same code); :func:`sfm_step_arrays` is its one vectorised form,
+for the numpy batch engine, held equal to it by tests. The compiler writes the parameters into the
+scenario's controller properties.
 """
 
 from __future__ import annotations
 
-import math
-from dataclasses import asdict, dataclass
+from array import array
+from dataclasses import asdict, astuple, dataclass
+from functools import cached_property
 
 import numpy as np
 
+from vei_scenario.core import _core
 from vei_scenario.models.properties import from_properties
 
 RIDER_TYPES = ("replay", "normal", "aggressive")
@@ -46,6 +50,11 @@ class SfmParameters:
     def properties(self) -> dict[str, float]:
         return asdict(self)
 
+    @cached_property
+    def packed(self) -> bytes:
+        """The parameters as the core's ``VeiSfmParams`` (its field order is this class's)."""
+        return array("d", astuple(self)).tobytes()
+
     @classmethod
     def from_properties(cls, props: dict[str, str]) -> SfmParameters:
         return from_properties(cls, props)
@@ -62,50 +71,6 @@ class SfmState:
     waypoint: int = 0
 
 
-def closest_point_on_box(px: float, py: float, bx: float, by: float, byaw: float, length: float, width: float):
-    """The point of an oriented box (centre, yaw, size) closest to (px, py); the point itself if inside."""
-    c, s = math.cos(byaw), math.sin(byaw)
-    dx, dy = px - bx, py - by
-    lx = max(-0.5 * length, min(0.5 * length, c * dx + s * dy))
-    ly = max(-0.5 * width, min(0.5 * width, -s * dx + c * dy))
-    return bx + c * lx - s * ly, by + s * lx + c * ly
-
-
-def sfm_acceleration(
-    state: SfmState,
-    dest: tuple[float, float],
-    params: SfmParameters,
-    repulsive: bool,
-    ego_box: tuple[float, float, float, float, float] | None,
-) -> tuple[float, float]:
-    """a = (F_dest + F_rep) / m.
-
-    F_dest = k (v_des − v), v_des = v0 (p_dest − p) / sqrt(|p_dest − p|² + σ²), k = m/τ.
-    F_rep = A exp(−d/B) n from the ego's influential point (closest point of its box, given as
-    (x, y, yaw, length, width)); n points from that point to the scooter. ``repulsive=False`` is the
-    aggressive, non-cooperative rider.
-    """
-    ex, ey = dest[0] - state.x, dest[1] - state.y
-    scale = params.v0_mps / math.sqrt(ex * ex + ey * ey + params.sigma_m * params.sigma_m)
-    k = params.k_n_s_per_m
-    fx = k * (ex * scale - state.vx)
-    fy = k * (ey * scale - state.vy)
-    if repulsive and ego_box is not None:
-        qx, qy = closest_point_on_box(state.x, state.y, *ego_box)
-        nx, ny = state.x - qx, state.y - qy
-        d = math.hypot(nx, ny)
-        if d > 1e-9:
-            mag = params.repulsion_n * math.exp(-d / params.repulsion_range_m)
-            fx += mag * nx / d
-            fy += mag * ny / d
-        else:  # inside the ego box: push away from its centre
-            nx, ny = state.x - ego_box[0], state.y - ego_box[1]
-            n = math.hypot(nx, ny) or 1.0
-            fx += params.repulsion_n * nx / n
-            fy += params.repulsion_n * ny / n
-    return fx / params.mass_kg, fy / params.mass_kg
-
-
 def sfm_step(
     state: SfmState,
     route: list[tuple[float, float]],
@@ -114,39 +79,25 @@ def sfm_step(
     ego_box: tuple[float, float, float, float, float] | None,
     dt: float,
 ) -> SfmState:
-    """One explicit step: advance the waypoint, apply the bounded acceleration, bound the speed.
+    """One explicit step of the rider (the compiled core's ``vei_sfm_step``; :func:`sfm_step_arrays`
+    is the same step for arrays of riders, and tests hold the two equal).
 
-    The scooter steers at successive waypoints of its recorded route: the next one becomes the
-    destination once the scooter is within ``waypoint_radius_m`` of the current one or has passed it
-    (its projection onto the route segment lies beyond it).
+    The rider steers at successive waypoints of its recorded route: the next one becomes the
+    destination once it is within ``waypoint_radius_m`` of the current one or has passed it (its
+    projection onto the route segment lies beyond it). a = (F_dest + F_rep) / m with
+    F_dest = k (v_des − v), v_des = v0 (p_dest − p) / sqrt(|p_dest − p|² + σ²), k = m/τ, and
+    F_rep = A exp(−d/B) n from the closest point of the ego's box (x, y, yaw, length, width), n from
+    that point to the rider (from the box centre when inside it); ``repulsive=False`` is the
+    aggressive, non-cooperative rider. The acceleration is bounded along the track by the drive and
+    brake limits and in total by the brake limit, the speed by ``max_speed_mps``; positions advance
+    with the mean of the old and new velocities.
     """
-    wp = state.waypoint
-    while wp < len(route) - 1:
-        wx, wy = route[wp]
-        nx_, ny_ = route[wp + 1]
-        near = math.hypot(wx - state.x, wy - state.y) <= params.waypoint_radius_m
-        passed = (state.x - wx) * (nx_ - wx) + (state.y - wy) * (ny_ - wy) > 0
-        if near or passed:
-            wp += 1
-        else:
-            break
-    ax, ay = sfm_acceleration(state, route[wp], params, repulsive, ego_box)
-    # Bound acceleration: along-track by the e-scooter's drive/brake limits, total by the brake limit.
-    speed = math.hypot(state.vx, state.vy)
-    if speed > 1e-9:
-        ux, uy = state.vx / speed, state.vy / speed
-        a_long = ax * ux + ay * uy
-        a_lat_x, a_lat_y = ax - a_long * ux, ay - a_long * uy
-        a_long = max(-params.max_decel_mps2, min(params.max_accel_mps2, a_long))
-        ax, ay = a_long * ux + a_lat_x, a_long * uy + a_lat_y
-    a = math.hypot(ax, ay)
-    if a > params.max_decel_mps2:
-        ax, ay = ax * params.max_decel_mps2 / a, ay * params.max_decel_mps2 / a
-    vx, vy = state.vx + ax * dt, state.vy + ay * dt
-    v = math.hypot(vx, vy)
-    if v > params.max_speed_mps:
-        vx, vy = vx * params.max_speed_mps / v, vy * params.max_speed_mps / v
-    return SfmState(state.x + 0.5 * (state.vx + vx) * dt, state.y + 0.5 * (state.vy + vy) * dt, vx, vy, wp)
+    rx = array("d", [p[0] for p in route]).tobytes()
+    ry = array("d", [p[1] for p in route]).tobytes()
+    x, y, vx, vy, wp = _core.sfm_step(
+        state.x, state.y, state.vx, state.vy, state.waypoint, rx, ry, params.packed, repulsive, ego_box, dt
+    )
+    return SfmState(x, y, vx, vy, wp)
 
 
 def sfm_step_arrays(

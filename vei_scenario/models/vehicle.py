@@ -4,15 +4,17 @@ State (s, v, a). The commanded acceleration is reached at most at ``jerk_max`` a
 [−max_decel, max_accel]; speed never goes below zero. Each step integrates the constant acceleration of
 the step exactly, stopping at v = 0 inside the step if it comes to rest, so that braking distances match
 v²/(2a) plus the jerk ramps (see tests/test_models.py). Before standstill the braking eases off at the
-jerk limit (:func:`stop_ramp`), so stopping does not exceed it either.
+jerk limit (the stop ramp of :func:`longitudinal_step`), so stopping does not exceed it either. The
+step is the compiled core's; :func:`longitudinal_step_arrays` its one vectorised form.
 """
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
+
+from vei_scenario.core import _core
 
 
 @dataclass(frozen=True)
@@ -30,31 +32,17 @@ class Longitudinal:
     a: float = 0.0
 
 
-def stop_ramp(v: float, limits: VehicleLimits, dt: float) -> float:
-    """The strongest deceleration (negative) from which the braking can still ease off to zero at the
-    jerk limit j by the time the vehicle stands. Easing off by j·dt a step from |a| = n·j·dt covers
-    v = |a|(|a| + j·dt)/(2j), so |a| = (√((j·dt)² + 8·j·v) − j·dt)/2 (→ √(2·j·v) as dt → 0). Without
-    it the deceleration would drop to zero in the step the vehicle stops (3 m/s² in 0.01 s: 300 m/s³)."""
-    if v <= 0.0:
-        return 0.0
-    jdt = limits.jerk_max_mps3 * dt
-    return -0.5 * (math.sqrt(jdt * jdt + 8.0 * limits.jerk_max_mps3 * v) - jdt)
-
-
 def longitudinal_step(state: Longitudinal, a_cmd: float, limits: VehicleLimits, dt: float) -> Longitudinal:
-    target = max(-limits.max_decel_mps2, min(limits.max_accel_mps2, a_cmd))
-    if target < 0.0:
-        target = max(target, stop_ramp(state.v, limits, dt))
-    da = limits.jerk_max_mps3 * dt
-    a = max(state.a - da, min(state.a + da, target))
-    v0 = state.v
-    if v0 <= 0.0 and a <= 0.0:
-        return Longitudinal(state.s, 0.0, 0.0)
-    v1 = v0 + a * dt
-    if v1 < 0.0:  # comes to rest inside the step
-        t_stop = v0 / -a
-        return Longitudinal(state.s + v0 * t_stop + 0.5 * a * t_stop * t_stop, 0.0, a)
-    return Longitudinal(state.s + v0 * dt + 0.5 * a * dt * dt, v1, a)
+    """One step of the vehicle (the compiled core's ``vei_longitudinal_step``;
+    :func:`longitudinal_step_arrays` is the same for arrays, held equal by tests): the command
+    bounded by the acceleration limits, the acceleration moving towards it at most by the jerk limit,
+    braking eased off before standstill at that limit (the stop ramp: from |a| = n·j·dt easing off by
+    j·dt a step covers v = |a|(|a| + j·dt)/(2j), so |a| ≤ (√((j·dt)² + 8·j·v) − j·dt)/2), and a
+    vehicle that comes to rest inside the step stops there."""
+    s, v, a = _core.longitudinal_step(
+        state.s, state.v, state.a, a_cmd, limits.max_accel_mps2, limits.max_decel_mps2, limits.jerk_max_mps3, dt
+    )
+    return Longitudinal(s, v, a)
 
 
 def longitudinal_step_arrays(s, v, a, a_cmd, limits: VehicleLimits, dt: float):

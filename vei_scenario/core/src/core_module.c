@@ -431,6 +431,135 @@ static PyObject *set_quadrature(PyObject *mod, PyObject *args)
     Py_RETURN_NONE;
 }
 
+/* ---------------------------------------------------------------------------------------------- */
+/* The models of vei_models.c, one call per step (vei_scenario.models wraps them for the interpreter) */
+
+/* n doubles from a bytes object into out; -1 with TypeError otherwise */
+static int doubles_of(PyObject *b, double *out, Py_ssize_t n, const char *what)
+{
+    if (!PyBytes_Check(b) || PyBytes_GET_SIZE(b) != n * (Py_ssize_t)sizeof(double)) {
+        PyErr_Format(PyExc_TypeError, "%s: %zd doubles as bytes expected", what, n);
+        return -1;
+    }
+    memcpy(out, PyBytes_AS_STRING(b), (size_t)n * sizeof(double));
+    return 0;
+}
+
+/* a box (x, y, yaw, length, width) from a tuple of 5 floats */
+static int box_of(PyObject *t, VeiBox *b)
+{
+    if (!PyArg_ParseTuple(t, "ddddd", &b->x, &b->y, &b->yaw, &b->length, &b->width)) return -1;
+    return 0;
+}
+
+/* sfm_step(x, y, vx, vy, waypoint, route_x, route_y, params, repulsive, ego_box or None, dt)
+ *   -> (x, y, vx, vy, waypoint) */
+static PyObject *sfm_step(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (!args_ok(nargs, 11, "sfm_step")) return NULL;
+    VeiSfmState st;
+    ARG_D(0, x);
+    ARG_D(1, y);
+    ARG_D(2, vx);
+    ARG_D(3, vy);
+    ARG_I(4, wp);
+    ARG_D(10, dt);
+    st.x = x, st.y = y, st.vx = vx, st.vy = vy, st.waypoint = (int)wp;
+    PyObject *rx = args[5], *ry = args[6];
+    if (!PyBytes_Check(rx) || !PyBytes_Check(ry) || PyBytes_GET_SIZE(rx) != PyBytes_GET_SIZE(ry) ||
+        PyBytes_GET_SIZE(rx) < (Py_ssize_t)sizeof(double)) {
+        PyErr_SetString(PyExc_TypeError, "sfm_step: the route as two bytes of at least one double each");
+        return NULL;
+    }
+    int n = (int)(PyBytes_GET_SIZE(rx) / (Py_ssize_t)sizeof(double));
+    if (st.waypoint < 0 || st.waypoint >= n) return PyErr_Format(PyExc_IndexError, "no waypoint %d", st.waypoint);
+    double pv[10];
+    if (doubles_of(args[7], pv, 10, "sfm_step params") < 0) return NULL;
+    VeiSfmParams p = {pv[0], pv[1], pv[2], pv[3], pv[4], pv[5], pv[6], pv[7], pv[8], pv[9]};
+    int repulsive = PyObject_IsTrue(args[8]);
+    if (repulsive < 0) return NULL;
+    VeiBox ego, *egop = NULL;
+    if (args[9] != Py_None) {
+        if (box_of(args[9], &ego) < 0) return NULL;
+        egop = &ego;
+    }
+    vei_sfm_step(&st, (const double *)PyBytes_AS_STRING(rx), (const double *)PyBytes_AS_STRING(ry), n, &p, repulsive,
+                 egop, dt);
+    return Py_BuildValue("(ddddi)", st.x, st.y, st.vx, st.vy, st.waypoint);
+}
+
+/* cap_step(brake, integral, prev_error or None, params, cruise, v, ttc, resume_ttc, dt)
+ *   -> (brake, integral, prev_error or None, a_cmd, d_safe) */
+static PyObject *cap_step(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (!args_ok(nargs, 9, "cap_step")) return NULL;
+    int brake = PyObject_IsTrue(args[0]);
+    if (brake < 0) return NULL;
+    ARG_D(1, integral);
+    VeiCapState st = {brake, integral, 0.0, 0};
+    if (args[2] != Py_None) {
+        st.prev_error = PyFloat_AsDouble(args[2]);
+        if (st.prev_error == -1.0 && PyErr_Occurred()) return NULL;
+        st.has_prev = 1;
+    }
+    double pv[10];
+    if (doubles_of(args[3], pv, 10, "cap_step params") < 0) return NULL;
+    VeiCapParams p = {pv[0], pv[1], pv[2], pv[3], pv[4], pv[5], pv[6], pv[7], pv[8], pv[9]};
+    ARG_D(4, cruise);
+    ARG_D(5, v);
+    ARG_D(6, ttc);
+    ARG_D(7, resume);
+    ARG_D(8, dt);
+    double d_safe, a = vei_cap_step(&st, &p, cruise, v, ttc, resume, dt, &d_safe);
+    if (st.has_prev)
+        return Py_BuildValue("(Odddd)", st.brake ? Py_True : Py_False, st.integral, st.prev_error, a, d_safe);
+    return Py_BuildValue("(OdOdd)", st.brake ? Py_True : Py_False, st.integral, Py_None, a, d_safe);
+}
+
+/* longitudinal_step(s, v, a, a_cmd, max_accel, max_decel, jerk_max, dt) -> (s, v, a) */
+static PyObject *longitudinal_step(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (!args_ok(nargs, 8, "longitudinal_step")) return NULL;
+    ARG_D(0, s);
+    ARG_D(1, v);
+    ARG_D(2, a);
+    ARG_D(3, cmd);
+    ARG_D(4, max_accel);
+    ARG_D(5, max_decel);
+    ARG_D(6, jerk);
+    ARG_D(7, dt);
+    VeiLongitudinal st = {s, v, a};
+    VeiVehicleLimits lim = {max_accel, max_decel, jerk};
+    vei_longitudinal_step(&st, cmd, &lim, dt);
+    return Py_BuildValue("(ddd)", st.s, st.v, st.a);
+}
+
+/* time_to_conflict(ego_box, ego_speed, margin, threat_box, threat_vx, threat_vy) -> s (inf: never) */
+static PyObject *time_to_conflict(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (!args_ok(nargs, 6, "time_to_conflict")) return NULL;
+    VeiBox ego, threat;
+    if (box_of(args[0], &ego) < 0 || box_of(args[3], &threat) < 0) return NULL;
+    ARG_D(1, speed);
+    ARG_D(2, margin);
+    ARG_D(4, tvx);
+    ARG_D(5, tvy);
+    return PyFloat_FromDouble(vei_threat_time_to_conflict(&ego, speed, margin, &threat, tvx, tvy));
+}
+
+/* time_to_contact(box_a, vxa, vya, box_b, vxb, vyb) -> s (0: touching now, inf: never) */
+static PyObject *time_to_contact(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (!args_ok(nargs, 6, "time_to_contact")) return NULL;
+    VeiBox a, b;
+    if (box_of(args[0], &a) < 0 || box_of(args[3], &b) < 0) return NULL;
+    ARG_D(1, vxa);
+    ARG_D(2, vya);
+    ARG_D(4, vxb);
+    ARG_D(5, vyb);
+    return PyFloat_FromDouble(vei_time_to_contact(&a, vxa, vya, &b, vxb, vyb));
+}
+
 /* overlapping(boxes) -> [(i, j), ...]: the pairs of (x, y, yaw, length, width) boxes that overlap, i < j
  * (circumscribed circles apart by more than a relative 1e-9 cannot overlap: skipped) */
 static PyObject *overlapping(PyObject *mod, PyObject *arg)
@@ -461,7 +590,13 @@ static PyObject *overlapping(PyObject *mod, PyObject *arg)
     return out;
 }
 
+#define F(name, doc) {#name, (PyCFunction)(void (*)(void))name, METH_FASTCALL, doc}
 static PyMethodDef module_methods[] = {
+    F(sfm_step, "sfm_step(x, y, vx, vy, waypoint, route_x, route_y, params, repulsive, ego_box, dt) -> state"),
+    F(cap_step, "cap_step(brake, integral, prev_error, params, cruise, v, ttc, resume_ttc, dt) -> (state, a, d_safe)"),
+    F(longitudinal_step, "longitudinal_step(s, v, a, a_cmd, max_accel, max_decel, jerk_max, dt) -> (s, v, a)"),
+    F(time_to_conflict, "time_to_conflict(ego_box, ego_speed, margin, threat_box, vx, vy) -> s"),
+    F(time_to_contact, "time_to_contact(box_a, vxa, vya, box_b, vxb, vyb) -> s"),
     {"overlapping", overlapping, METH_O, "overlapping(boxes) -> pairs (i, j) of overlapping boxes"},
     {"set_quadrature", set_quadrature, METH_VARARGS, "set_quadrature(nodes, weights): 24 doubles each"},
     {NULL, NULL, 0, NULL},
