@@ -23,14 +23,11 @@ from vei_scenario.interpreter.controllers import (
 )
 from vei_scenario.interpreter.entities import Polyline
 from vei_scenario.loop.scene import LoopScene
+from vei_scenario.models.angles import wrap_angle
 from vei_scenario.models.boxes import boxes_overlap, time_to_contact
 from vei_scenario.models.cap import cap_step_arrays
 from vei_scenario.models.sfm import sfm_step_arrays
 from vei_scenario.models.vehicle import longitudinal_step_arrays
-
-
-def _wrap(a):
-    return (a + math.pi) % (2 * math.pi) - math.pi
 
 
 class PathArrays:
@@ -49,7 +46,7 @@ class PathArrays:
         return (
             self.x[i] + f * (self.x[j] - self.x[i]),
             self.y[i] + f * (self.y[j] - self.y[i]),
-            _wrap(h0 + f * _wrap(h1 - h0)),
+            wrap_angle(h0 + f * wrap_angle(h1 - h0)),
         )
 
     def at_s(self, s):

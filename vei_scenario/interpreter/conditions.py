@@ -7,6 +7,7 @@ from __future__ import annotations
 import math
 
 from vei_scenario.interpreter.context import Context
+from vei_scenario.models.angles import wrap_angle
 from vei_scenario.models.boxes import box_distance, time_to_contact
 from vei_scenario.openscenario import STORYBOARD_ELEMENT_TYPES
 
@@ -519,7 +520,7 @@ class Angle(_EntityCondition):
         return _heading_in(ctx, e, self.system) if self.kind == "heading" else 0.0
 
     def for_entity(self, ctx: Context, name: str) -> bool:
-        diff = (self.measured(ctx, name) - self.angle + math.pi) % (2 * math.pi) - math.pi
+        diff = wrap_angle(self.measured(ctx, name) - self.angle)
         return abs(diff) <= self.tolerance + 1e-12
 
 

@@ -14,6 +14,7 @@ import math
 from collections.abc import Callable
 from dataclasses import dataclass
 
+from vei_scenario.models.angles import wrap_angle
 from vei_scenario.safe_xml import first_element
 
 
@@ -43,10 +44,6 @@ class Pose:
     y: float
     h: float
     lane: LaneState | None = None
-
-
-def wrap_angle(a: float) -> float:
-    return (a + math.pi) % (2 * math.pi) - math.pi
 
 
 def number(el, name: str, default: float = 0.0) -> float:

@@ -14,15 +14,8 @@ import math
 import numpy as np
 
 from vei_scenario.interpreter.entities import Polyline
-from vei_scenario.interpreter.positions import (
-    RESOLVED_ELSEWHERE,
-    Pose,
-    lane_of,
-    number,
-    oriented,
-    resolve,
-    wrap_angle,
-)
+from vei_scenario.interpreter.positions import RESOLVED_ELSEWHERE, Pose, lane_of, number, oriented, resolve
+from vei_scenario.models.angles import wrap_angle
 from vei_scenario.safe_xml import first_element
 
 _FINE_M = 0.005
