@@ -12,13 +12,9 @@ import math
 from vei_scenario.interpreter.action_base import Action
 from vei_scenario.interpreter.controllers import make_controller
 from vei_scenario.interpreter.entities import PathFollower, SpeedProfile, transition_fraction
-from vei_scenario.interpreter.lateral_distance import LateralDistance
-from vei_scenario.interpreter.longitudinal import LongitudinalDistance
 from vei_scenario.interpreter.positions import POSITION_KINDS, entity_lane, lane_shift, lane_state_at, tilt
 from vei_scenario.interpreter.positions import resolve as resolve_position
 from vei_scenario.interpreter.shapes import placed_when_built, polyline_from
-from vei_scenario.interpreter.speed_profile import SpeedProfile as SpeedProfileAction
-from vei_scenario.interpreter.synchronize import Synchronize
 from vei_scenario.safe_xml import first_element
 
 
@@ -654,12 +650,20 @@ def private_actions(pa, entity: str, ctx) -> list[Action]:
     if kind.tag == "LongitudinalAction" and kind.find("SpeedAction") is not None:
         return [Speed(entity, kind.find("SpeedAction"), ctx)]
     if kind.tag == "LongitudinalAction" and kind.find("SpeedProfileAction") is not None:
+        from vei_scenario.interpreter.speed_profile import SpeedProfile as SpeedProfileAction  # (start-up: on use)
+
         return [SpeedProfileAction(entity, kind.find("SpeedProfileAction"), ctx)]
     if kind.tag == "LongitudinalAction" and kind.find("LongitudinalDistanceAction") is not None:
+        from vei_scenario.interpreter.longitudinal import LongitudinalDistance  # (start-up: on use)
+
         return [LongitudinalDistance(entity, kind.find("LongitudinalDistanceAction"), ctx)]
     if kind.tag == "SynchronizeAction":
+        from vei_scenario.interpreter.synchronize import Synchronize  # (start-up: on use)
+
         return [Synchronize(entity, kind, ctx)]
     if kind.tag == "LateralAction" and kind.find("LateralDistanceAction") is not None:
+        from vei_scenario.interpreter.lateral_distance import LateralDistance  # (start-up: on use)
+
         return [LateralDistance(entity, kind.find("LateralDistanceAction"), ctx)]
     if kind.tag == "LateralAction" and kind.find("LaneChangeAction") is not None:
         return [LaneChange(entity, kind.find("LaneChangeAction"), ctx)]

@@ -46,6 +46,7 @@ class Synchronize(SteppedLongitudinal):
         from vei_scenario.safe_xml import float_attribute
 
         self.entity, self.el = entity, el
+        self._goal_on_path: dict[tuple, float] = {}
         self.master = entity_ref(ctx, el, "masterEntityRef")
         if self.master == entity:
             raise ctx.error(el, "SynchronizeAction: the master entity is the actor itself")
@@ -118,7 +119,12 @@ class Synchronize(SteppedLongitudinal):
         e = ctx.entities[name]
         f = e.follower
         if f is not None and f.polyline.xs is not None:
-            return abs(f.polyline.project(goal.x, goal.y) - f.s)
+            # where the goal lies along the path: the same each step while path and goal are (memoised)
+            key = (f.polyline, goal.x, goal.y)
+            s_goal = self._goal_on_path.get(key)
+            if s_goal is None:
+                s_goal = self._goal_on_path[key] = f.polyline.project(goal.x, goal.y)
+            return abs(s_goal - f.s)
         if ctx.roads is not None:
             ensure_lane(ctx, e)
             if e.lane is not None and goal.lane is not None:
