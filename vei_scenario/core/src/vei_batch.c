@@ -625,3 +625,7 @@ int vei_batch_run(const VeiBatchScene *sc, const VeiBatchVariant *v, int n_varia
     free(ibuf);
     return 0;
 }
+
+#define VEI_OUTPUT_NAME(id, name) name ","
+const char *vei_batch_outputs(void) { return VEI_BATCH_OUTPUT_LIST(VEI_OUTPUT_NAME); }
+#undef VEI_OUTPUT_NAME

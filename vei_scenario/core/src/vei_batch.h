@@ -41,11 +41,24 @@ typedef struct {
     double cruise, offset, ego_speed0, threat_speed0;
 } VeiBatchVariant;
 
-enum {
-    OUT_COLLISION, OUT_COLLISION_TIME, OUT_MIN_GAP, OUT_MIN_TTC, OUT_MIN_TTC_APPROX, OUT_ZONE_SAFE,
-    OUT_ZONE_ATTENTION, OUT_ZONE_ALERT, OUT_ZONE_COLLISION, OUT_SAFETY_INDEX, OUT_ACT_MIN, OUT_EI_MAX,
-    OUT_DRAC_MAX, OUT_PET, OUT_PEAK_DECEL, OUT_MAX_JERK, OUT_COMFORT, OUT_NEAR_MISS, OUT_IMPACT_SPEED, VEI_BATCH_OUTPUTS
-};
+/* The outputs of a variant, each with the name of vei run's metric it holds (zones: ttc_zones_s.<zone>):
+ * one list, from which the column indices and the names the Python side reads (vei_batch_outputs) come. */
+#define VEI_BATCH_OUTPUT_LIST(X)                                                                           \
+    X(OUT_COLLISION, "collision") X(OUT_COLLISION_TIME, "collision_time_s") X(OUT_MIN_GAP, "min_gap_m")    \
+    X(OUT_MIN_TTC, "min_ttc_s") X(OUT_MIN_TTC_APPROX, "min_ttc_approx_s")                                \
+    X(OUT_ZONE_SAFE, "ttc_zones_s.safe") X(OUT_ZONE_ATTENTION, "ttc_zones_s.attention")                  \
+    X(OUT_ZONE_ALERT, "ttc_zones_s.alert") X(OUT_ZONE_COLLISION, "ttc_zones_s.collision")                \
+    X(OUT_SAFETY_INDEX, "safety_index") X(OUT_ACT_MIN, "act_min_s") X(OUT_EI_MAX, "ei_max_mps")           \
+    X(OUT_DRAC_MAX, "drac_max_mps2") X(OUT_PET, "pet_s") X(OUT_PEAK_DECEL, "peak_decel_mps2")            \
+    X(OUT_MAX_JERK, "max_jerk_mps3") X(OUT_COMFORT, "comfort_score") X(OUT_NEAR_MISS, "near_miss")       \
+    X(OUT_IMPACT_SPEED, "impact_speed_mps")
+
+#define VEI_OUTPUT_ENUM(id, name) id,
+enum { VEI_BATCH_OUTPUT_LIST(VEI_OUTPUT_ENUM) VEI_BATCH_OUTPUTS };
+#undef VEI_OUTPUT_ENUM
+
+/* The output names in column order, separated by commas. */
+const char *vei_batch_outputs(void);
 
 /* Run variants [0, n); out: n * VEI_BATCH_OUTPUTS; traj (NULL or n * 10 * (n_steps + 1)): ego x, y, yaw,
  * speed, accel, then the threat's. Returns 0, or -1 when out of memory. */
