@@ -53,32 +53,7 @@ def threat_view(
     the sweep kernel does: the box test is left out."""
     speed = ego.speed if ego_speed is None else ego_speed
     ego_box, threat_box, threat_velocity = ego.box(), threat.box(), threat.velocity()
-    if horizon_s is not None and _circles_apart_beyond(
-        ego_box, speed, margin_m, threat_box, threat_velocity, horizon_s
-    ):
-        return ThreatView(math.inf)
-    return threat_in_corridor(ego_box, speed, margin_m, threat_box, threat_velocity)
-
-
-def _circles_apart_beyond(ego_box, ego_speed, margin_m, threat_box, threat_velocity, horizon_s) -> bool:
-    """Whether the corridor's and the threat's circumscribed circles, at constant velocity, meet no
-    sooner than ``horizon_s`` (margins 1e-6 over rounding); vei_batch.c's conflict() in Python."""
-    ex, ey, eyaw, el, ew = ego_box
-    tx, ty, _, tl, tw = threat_box
-    c, s = math.cos(eyaw), math.sin(eyaw)
-    reach = (0.5 * math.hypot(el + margin_m, ew + 2 * margin_m) + 0.5 * math.hypot(tl, tw)) * (1 + 1e-6) + 1e-9
-    rx, ry = tx - (ex + 0.5 * margin_m * c), ty - (ey + 0.5 * margin_m * s)
-    wx, wy = threat_velocity[0] - ego_speed * c, threat_velocity[1] - ego_speed * s
-    gap2 = rx * rx + ry * ry - reach * reach
-    if gap2 <= 0.0:
-        return False
-    b, a = rx * wx + ry * wy, wx * wx + wy * wy
-    if b >= 0.0:
-        return True  # not closing
-    disc = b * b - a * gap2
-    if disc < 0.0:
-        return True  # they pass each other
-    return gap2 / (-b + math.sqrt(disc)) > horizon_s * (1 + 1e-6) + 1e-9
+    return threat_in_corridor(ego_box, speed, margin_m, threat_box, threat_velocity, horizon_s)
 
 
 class Controller:

@@ -280,7 +280,11 @@ class Storyboard:
                 if act.state != RUNNING:
                     continue
                 for g in act.children:
+                    if g.state != RUNNING:  # (nothing runs inside a group that does not)
+                        continue
                     for m in g.children:
+                        if m.state != RUNNING:
+                            continue
                         for ev in m.children:
                             if ev.state != RUNNING:
                                 continue
@@ -294,9 +298,9 @@ class Storyboard:
                                 ev.complete(ctx)
                                 if ev.executions < ev.max_executions:
                                     ev.state = STANDBY
-                        if m.state == RUNNING and all(done(e) for e in m.children):
+                        if all(done(e) for e in m.children):
                             m.complete(ctx)
-                    if g.state == RUNNING and all(done(m) for m in g.children):
+                    if all(done(m) for m in g.children):
                         g.complete(ctx)
                         if g.executions < g.max_executions:
                             self._restart_group(g)

@@ -89,13 +89,18 @@ def threat_in_corridor(
     margin_m: float,
     threat_box: tuple[float, float, float, float, float],
     threat_velocity: tuple[float, float],
+    horizon_s: float | None = None,
 ) -> ThreatView:
     """The planner's view of the threat: the constant-velocity time until the threat's box (x, y, yaw,
     length, width) meets the ego's path corridor, the ego box widened by ``margin_m`` on each side and
-    lengthened by it in front, the ego moving at ``ego_speed_mps`` along its heading (the core's)."""
-    return ThreatView(
-        _core.time_to_conflict(ego_box, ego_speed_mps, margin_m, threat_box, threat_velocity[0], threat_velocity[1])
-    )
+    lengthened by it in front, the ego moving at ``ego_speed_mps`` along its heading (the core's). With
+    ``horizon_s``: inf where the corridor's and the threat's circumscribed circles stay apart for
+    longer (the planner treats any time beyond its horizon as no conflict; the box test is left out,
+    as in the sweep kernel)."""
+    vx, vy = threat_velocity
+    if horizon_s is None:
+        return ThreatView(_core.time_to_conflict(ego_box, ego_speed_mps, margin_m, threat_box, vx, vy))
+    return ThreatView(_core.time_to_conflict(ego_box, ego_speed_mps, margin_m, threat_box, vx, vy, horizon_s))
 
 
 def cap_step(

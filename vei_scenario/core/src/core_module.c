@@ -534,17 +534,23 @@ static PyObject *longitudinal_step(PyObject *mod, PyObject *const *args, Py_ssiz
     return Py_BuildValue("(ddd)", st.s, st.v, st.a);
 }
 
-/* time_to_conflict(ego_box, ego_speed, margin, threat_box, threat_vx, threat_vy) -> s (inf: never) */
+/* time_to_conflict(ego_box, ego_speed, margin, threat_box, threat_vx, threat_vy[, horizon]) -> s (inf:
+ * never; with a horizon, inf also where the circles show it lies beyond the horizon, as the kernel) */
 static PyObject *time_to_conflict(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
 {
-    if (!args_ok(nargs, 6, "time_to_conflict")) return NULL;
+    if (nargs != 7 && !args_ok(nargs, 6, "time_to_conflict")) return NULL;
     VeiBox ego, threat;
     if (box_of(args[0], &ego) < 0 || box_of(args[3], &threat) < 0) return NULL;
     ARG_D(1, speed);
     ARG_D(2, margin);
     ARG_D(4, tvx);
     ARG_D(5, tvy);
-    return PyFloat_FromDouble(vei_threat_time_to_conflict(&ego, speed, margin, &threat, tvx, tvy));
+    if (nargs == 6) return PyFloat_FromDouble(vei_threat_time_to_conflict(&ego, speed, margin, &threat, tvx, tvy));
+    ARG_D(6, horizon);
+    VeiTrigBox te = vei_trig_box(ego.x, ego.y, ego.yaw, ego.length, ego.width);
+    VeiTrigBox tt = vei_trig_box(threat.x, threat.y, threat.yaw, threat.length, threat.width);
+    double reach = vei_conflict_reach(ego.length, ego.width, margin, threat.length, threat.width);
+    return PyFloat_FromDouble(vei_trig_time_to_conflict_within(&te, speed, margin, reach, &tt, tvx, tvy, horizon));
 }
 
 /* time_to_contact(box_a, vxa, vya, box_b, vxb, vyb) -> s (0: touching now, inf: never) */
@@ -595,7 +601,7 @@ static PyMethodDef module_methods[] = {
     F(sfm_step, "sfm_step(x, y, vx, vy, waypoint, route_x, route_y, params, repulsive, ego_box, dt) -> state"),
     F(cap_step, "cap_step(brake, integral, prev_error, params, cruise, v, ttc, resume_ttc, dt) -> (state, a, d_safe)"),
     F(longitudinal_step, "longitudinal_step(s, v, a, a_cmd, max_accel, max_decel, jerk_max, dt) -> (s, v, a)"),
-    F(time_to_conflict, "time_to_conflict(ego_box, ego_speed, margin, threat_box, vx, vy) -> s"),
+    F(time_to_conflict, "time_to_conflict(ego_box, ego_speed, margin, threat_box, vx, vy[, horizon]) -> s"),
     F(time_to_contact, "time_to_contact(box_a, vxa, vya, box_b, vxb, vyb) -> s"),
     {"overlapping", overlapping, METH_O, "overlapping(boxes) -> pairs (i, j) of overlapping boxes"},
     {"set_quadrature", set_quadrature, METH_VARARGS, "set_quadrature(nodes, weights): 24 doubles each"},

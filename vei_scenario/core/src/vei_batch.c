@@ -101,20 +101,8 @@ static int same_key(const double a[3], const double b[3]) { return memcmp(a, b, 
  * is skipped and INFINITY returned, which the planner treats exactly as it would the box test's value. */
 static double conflict(const VeiBatchScene *sc, double reach, const VeiTrigBox *ego, double ego_speed,
                        const VeiTrigBox *threat, double tvx, double tvy) {
-    const double m = sc->cap.corridor_margin_m;
-    double cx = ego->x + 0.5 * m * ego->c, cy = ego->y + 0.5 * m * ego->s;
-    double rx = threat->x - cx, ry = threat->y - cy;
-    double wx = tvx - ego_speed * ego->c, wy = tvy - ego_speed * ego->s;
-    double r2 = rx * rx + ry * ry, gap2 = r2 - reach * reach;
-    if (gap2 > 0.0) {
-        double b = rx * wx + ry * wy, a = wx * wx + wy * wy;
-        if (b >= 0.0) return INFINITY; /* not closing: the circles never meet */
-        double disc = b * b - a * gap2;
-        if (disc < 0.0) return INFINITY; /* they pass each other */
-        double t_meet = gap2 / (-b + sqrt(disc));
-        if (t_meet > sc->cap.horizon_s * (1.0 + 1e-6) + 1e-9) return INFINITY;
-    }
-    return vei_trig_time_to_conflict(ego, ego_speed, m, threat, tvx, tvy);
+    return vei_trig_time_to_conflict_within(ego, ego_speed, sc->cap.corridor_margin_m, reach, threat, tvx, tvy,
+                                            sc->cap.horizon_s);
 }
 
 /* ---- simulation -------------------------------------------------------------------------------- */
@@ -591,10 +579,7 @@ int vei_batch_run(const VeiBatchScene *sc, const VeiBatchVariant *v, int n_varia
     EgoPrefix prefix = {0, {0.0, 0.0, 0.0}, ego_steps(buf + (size_t)(PER + 2 * KEPT) * n, ibuf + 5 * n, n)};
     EgoSteps own = ego_steps(buf + (size_t)(PER + 2 * KEPT + STEPS) * n, ibuf + 7 * n, n);
     const double m = sc->cap.corridor_margin_m;
-    const double reach =
-        (0.5 * hypot(sc->ego_length + m, sc->ego_width + 2 * m) + 0.5 * hypot(sc->threat_length, sc->threat_width)) *
-            (1.0 + 1e-6) +
-        1e-9;
+    const double reach = vei_conflict_reach(sc->ego_length, sc->ego_width, m, sc->threat_length, sc->threat_width);
     for (int i = 0; i < n_variants; i++) {
         const VeiBatchVariant *vi = &v[i];
         double *tr[NTRAJ], *tg[NTRIG];

@@ -226,6 +226,30 @@ double vei_trig_time_to_conflict(const VeiTrigBox *ego, double ego_speed, double
     return vei_trig_time_to_contact(&corridor, ego_speed * c, ego_speed * s, threat, threat_vx, threat_vy);
 }
 
+double vei_conflict_reach(double ego_length, double ego_width, double margin, double threat_length,
+                          double threat_width) {
+    return (0.5 * hypot(ego_length + margin, ego_width + 2 * margin) + 0.5 * hypot(threat_length, threat_width)) *
+               (1.0 + 1e-6) +
+           1e-9;
+}
+
+double vei_trig_time_to_conflict_within(const VeiTrigBox *ego, double ego_speed, double m, double reach,
+                                        const VeiTrigBox *threat, double tvx, double tvy, double horizon) {
+    double cx = ego->x + 0.5 * m * ego->c, cy = ego->y + 0.5 * m * ego->s;
+    double rx = threat->x - cx, ry = threat->y - cy;
+    double wx = tvx - ego_speed * ego->c, wy = tvy - ego_speed * ego->s;
+    double r2 = rx * rx + ry * ry, gap2 = r2 - reach * reach;
+    if (gap2 > 0.0) {
+        double b = rx * wx + ry * wy, a = wx * wx + wy * wy;
+        if (b >= 0.0) return INFINITY; /* not closing: the circles never meet */
+        double disc = b * b - a * gap2;
+        if (disc < 0.0) return INFINITY; /* they pass each other */
+        double t_meet = gap2 / (-b + sqrt(disc));
+        if (t_meet > horizon * (1.0 + 1e-6) + 1e-9) return INFINITY;
+    }
+    return vei_trig_time_to_conflict(ego, ego_speed, m, threat, tvx, tvy);
+}
+
 double vei_threat_time_to_conflict(const VeiBox *ego, double ego_speed, double margin, const VeiBox *threat,
                                    double threat_vx, double threat_vy) {
     VeiTrigBox te = vei_trig_box(ego->x, ego->y, ego->yaw, ego->length, ego->width);

@@ -58,6 +58,17 @@ typedef struct { int brake; double integral; double prev_error; int has_prev; } 
 double vei_cap_step(VeiCapState *st, const VeiCapParams *p, double cruise, double v, double ttc, double resume_ttc,
                     double dt, double *d_safe);
 
+/* The reach of the planner's prefilter: the corridor's and the threat's circumscribed radii, with a
+ * margin over rounding (1e-6 relative, 1e-9 absolute). */
+double vei_conflict_reach(double ego_length, double ego_width, double margin, double threat_length,
+                          double threat_width);
+/* The planner's time to conflict within `horizon` (INFINITY beyond it): the box test below, left out
+ * where the corridor's and the threat's circumscribed circles (`reach`), at constant velocity, meet no
+ * sooner than the horizon. The interpreter and the sweep kernel both decide with it. */
+double vei_trig_time_to_conflict_within(const VeiTrigBox *ego, double ego_speed, double margin, double reach,
+                                        const VeiTrigBox *threat, double threat_vx, double threat_vy,
+                                        double horizon);
+
 /* The planner's view of the threat (interpreter.controllers.threat_view): the threat's box against
  * the ego's path corridor, the ego moving at `ego_speed` along its heading. */
 double vei_threat_time_to_conflict(const VeiBox *ego, double ego_speed, double margin, const VeiBox *threat,
