@@ -1,4 +1,4 @@
-"""The compiled sweep kernel (``fmus/src/vei_batch.c`` over the FMUs' C models): each variant of a
+"""The compiled sweep kernel (``core/src/vei_batch.c`` over the core's C models): each variant of a
 vei-compiled two-entity scenario simulated and scored in C, several variants at a time on threads.
 
 It follows :class:`~vei_scenario.batch.engine.BatchScenario` step for step and the metric functions of

@@ -104,7 +104,8 @@ class _EntityCondition(Condition):
         return any(results) if self.rule_any else all(results)
 
 
-def _entity(ctx: Context, el, name: str):
+def known_entity(ctx: Context, el, name: str):
+    """Entity ``name``; one line naming ``el``'s line when there is none."""
     if name not in ctx.entities:
         raise ctx.error(el, f"no entity named {name!r}")
     return ctx.entities[name]
@@ -117,7 +118,7 @@ class Collision(_EntityCondition):
         by_type = el.find("ByType")
         if ref is not None:
             self.targets = [ref.get("entityRef")]
-            _entity(ctx, el, self.targets[0])
+            known_entity(ctx, el, self.targets[0])
         elif by_type is not None:
             kind = by_type.get("type") or by_type.get("objectType")
             self.targets = [n for n, e in ctx.entities.items() if e.category == kind or kind == "vehicle"]
@@ -213,7 +214,7 @@ class TimeToCollision(_EntityCondition):
             raise ctx.error(el, "TimeToCollisionCondition needs an EntityRef or a Position target")
         self.target = ref.get("entityRef") if ref is not None else None
         if self.target is not None:
-            _entity(ctx, el, self.target)
+            known_entity(ctx, el, self.target)
 
     def _target(self, ctx: Context):
         if self.target is not None:
@@ -242,7 +243,7 @@ class RelativeDistance(_EntityCondition):
         self.freespace = el.get("freespace", "false") == "true"
         self.kind = _distance_kind(ctx, el)
         self.target = el.get("entityRef")
-        _entity(ctx, el, self.target)
+        known_entity(ctx, el, self.target)
 
     def for_entity(self, ctx: Context, name: str) -> bool:
         d, _ = _relative(ctx, self.el, ctx.entities[name], ctx.entities[self.target], self.kind, self.freespace)
@@ -338,7 +339,7 @@ class RelativeSpeed(_EntityCondition):
     def __init__(self, el, ctx, triggering, rule) -> None:
         super().__init__(el, ctx, triggering, rule)
         self.value, self.rule, self.target = float(el.get("value")), el.get("rule"), el.get("entityRef")
-        _entity(ctx, el, self.target)
+        known_entity(ctx, el, self.target)
 
     def for_entity(self, ctx: Context, name: str) -> bool:
         return compare(self.rule, ctx.entities[name].speed - ctx.entities[self.target].speed, self.value)
@@ -359,7 +360,7 @@ class TimeHeadway(_EntityCondition):
         along = el.get("alongRoute")
         default = "euclidianDistance" if along == "false" else "longitudinal"
         self.kind = el.get("relativeDistanceType", default)
-        _entity(ctx, el, self.target)
+        known_entity(ctx, el, self.target)
 
     def for_entity(self, ctx: Context, name: str) -> bool:
         e = ctx.entities[name]
@@ -530,7 +531,7 @@ class RelativeAngle(Angle):
     def __init__(self, el, ctx, triggering, rule) -> None:
         super().__init__(el, ctx, triggering, rule)
         self.ref = el.get("entityRef")
-        _entity(ctx, el, self.ref)
+        known_entity(ctx, el, self.ref)
 
     def measured(self, ctx: Context, name: str) -> float:
         return super().measured(ctx, name) - super().measured(ctx, self.ref)

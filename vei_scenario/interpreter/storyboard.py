@@ -11,7 +11,7 @@ from __future__ import annotations
 from collections import deque
 
 from vei_scenario.interpreter.actions import ParameterSet, SignalState, VariableSet, global_actions, private_actions
-from vei_scenario.interpreter.conditions import ENTITY_CONDITIONS, VALUE_CONDITIONS, _entity
+from vei_scenario.interpreter.conditions import ENTITY_CONDITIONS, VALUE_CONDITIONS, known_entity
 from vei_scenario.interpreter.context import Context
 from vei_scenario.safe_xml import first_element
 
@@ -49,7 +49,7 @@ class ConditionRunner:
                 raise ctx.error(kind, f"<{kind.tag}> is not supported by vei run")
             names = [r.get("entityRef") for r in trig.iterfind("EntityRef")]
             for n in names:
-                _entity(ctx, trig, n)
+                known_entity(ctx, trig, n)
             self.condition = cls(kind, ctx, names, trig.get("triggeringEntitiesRule", "any"))
         else:
             raise ctx.error(el, "condition without ByValueCondition or ByEntityCondition")
