@@ -38,13 +38,12 @@ class Context:
     @property
     def roads(self):
         """The scenario's road network (None without one), loaded when a position first needs it."""
-        if self.road_file is None:
-            return None
-        if "_roads" not in self.__dict__:
+        net = self.__dict__.get("_roads")
+        if net is None and self.road_file is not None:
             from vei_scenario.roads.road_model import RoadNetwork
 
-            self.__dict__["_roads"] = RoadNetwork.load(self.road_file)
-        return self.__dict__["_roads"]
+            net = self.__dict__["_roads"] = RoadNetwork.load(self.road_file)
+        return net
 
     def observed(self, name: str):
         """Entity ``name`` as other entities' controllers see it now: its current state under

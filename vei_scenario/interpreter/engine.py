@@ -255,10 +255,11 @@ class Simulation:
 
     def _motion(self, e: Entity) -> None:
         ctx, dt = self.ctx, self.dt
-        for domain in ("lateral", "longitudinal"):
-            ctrl = e.active.get(domain)
-            if ctrl is not None and ctrl.move(e, ctx, dt):
-                return
+        if e.active:
+            for domain in ("lateral", "longitudinal"):
+                ctrl = e.active.get(domain)
+                if ctrl is not None and ctrl.move(e, ctx, dt):
+                    return
         e.status = "default"
         f = e.follower
         t_next = ctx.t + dt
@@ -304,21 +305,15 @@ class Simulation:
     def run(self) -> RunResult:
         ctx, dt = self.ctx, self.dt
         names = list(ctx.entities)
-        rec = {n: ([], [], [], [], [], [], []) for n in names}
+        rows: dict[str, list[tuple]] = {n: [] for n in names}  # per step (x, y, yaw, speed, accel, status)
         times: list[float] = []
         collisions: list[tuple[float, str, str]] = []
+        recorded = [(ctx.entities[n], rows[n].append) for n in names]
 
         def record() -> None:
             times.append(ctx.t)
-            for n in names:
-                e = ctx.entities[n]
-                r = rec[n]
-                r[0].append(e.x)
-                r[1].append(e.y)
-                r[2].append(e.yaw)
-                r[3].append(e.speed)
-                r[4].append(e.accel)
-                r[5].append(e.status)
+            for e, append in recorded:
+                append((e.x, e.y, e.yaw, e.speed, e.accel, e.status))
 
         ctx.initializing = True
         for a in self.init_actions:
@@ -371,15 +366,15 @@ class Simulation:
         t = np.array(times)
         traces = {}
         for n in names:
-            e, r = ctx.entities[n], rec[n]
+            e, r = ctx.entities[n], list(zip(*rows[n]))
             traces[n] = EntityTrace(
                 n,
                 e.category,
                 e.length,
                 e.width,
                 t,
-                *(np.array(v) for v in r[:5]),
-                r[5],
+                *(np.array(v, dtype=float) for v in r[:5]),
+                list(r[5]),
                 e.center_x,
                 e.kind,
                 e.object_type,

@@ -163,7 +163,7 @@ class Storyboard:
 
     @property
     def complete(self) -> bool:
-        return all(s.state == COMPLETE for s in self.stories)
+        return _all_complete(self.stories)
 
     # --- building -----------------------------------------------------------------------------------
     def _story(self, el) -> Element:
@@ -252,9 +252,11 @@ class Storyboard:
                     for m in g.children:
                         if m.state != RUNNING:
                             continue
-                        running = [e for e in m.children if e.state == RUNNING]
+                        running = None  # the maneuver's running events before any of its events starts
                         for ev in m.children:
                             if ev.state == STANDBY and (ev.start_trigger is None or ev.start_trigger.evaluate(ctx)):
+                                if running is None:
+                                    running = [e for e in m.children if e.state == RUNNING]
                                 others = [r for r in running if r is not ev]
                                 if all(isinstance(x, VALUE_ACTIONS) for a in ev.children for x in a.actions):
                                     self._start_event(ev, others)  # a value set is seen by what follows
@@ -269,10 +271,7 @@ class Storyboard:
     def complete_finished(self) -> None:
         """Update the running actions after the entities moved; complete what has finished."""
         ctx = self.ctx
-
-        def done(el: Element) -> bool:
-            return el.state == COMPLETE
-
+        done = _all_complete
         for story in self.stories:
             if story.state != RUNNING:
                 continue
@@ -294,19 +293,19 @@ class Storyboard:
                                         act_rt.update(ctx)
                                     if all(x.done for x in a.actions):
                                         a.complete(ctx)
-                            if all(done(a) for a in ev.children):
+                            if done(ev.children):
                                 ev.complete(ctx)
                                 if ev.executions < ev.max_executions:
                                     ev.state = STANDBY
-                        if all(done(e) for e in m.children):
+                        if done(m.children):
                             m.complete(ctx)
-                    if all(done(m) for m in g.children):
+                    if done(g.children):
                         g.complete(ctx)
                         if g.executions < g.max_executions:
                             self._restart_group(g)
-                if all(done(g) for g in act.children):
+                if done(act.children):
                     act.complete(ctx)
-            if all(done(a) for a in story.children):
+            if done(story.children):
                 story.complete(ctx)
 
     def _restart_group(self, g: Element) -> None:
@@ -328,3 +327,11 @@ class Storyboard:
         g.start(ctx)
         for m in g.children:
             m.start(ctx)
+
+
+def _all_complete(elements: list[Element]) -> bool:
+    """Whether every element is complete (a plain loop: the storyboard asks it many times a step)."""
+    for el in elements:
+        if el.state != COMPLETE:
+            return False
+    return True
