@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import copy
 import math
-from array import array
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -395,11 +394,10 @@ class Simulation:
 
     def _collide(self, collisions: list) -> None:
         ctx = self.ctx
-        names = [n for n, e in ctx.entities.items() if not e.deleted]
+        present = [e for e in ctx.entities.values() if not e.deleted]
         now: set[frozenset[str]] = set()
-        boxes = array("d", [v for n in names for v in ctx.entities[n].box()])
-        for i, j in _core.overlapping(boxes.tobytes()):  # every pair, in C (the core's box overlap)
-            a, b = names[i], names[j]
+        for i, j in _core.overlapping(_core.entity_boxes(present)):  # every pair, in C (the core's boxes)
+            a, b = present[i].name, present[j].name
             pair = frozenset((a, b))
             now.add(pair)
             if pair not in ctx.colliding:

@@ -597,7 +597,41 @@ static PyObject *overlapping(PyObject *mod, PyObject *arg)
 }
 
 #define F(name, doc) {#name, (PyCFunction)(void (*)(void))name, METH_FASTCALL, doc}
+/* entity_boxes(entities) -> bytes: the bounding box (centre x, centre y, yaw, length, width) of each
+ * object with x, y, yaw, center_x (reference point to box centre, along the heading), length, width */
+static PyObject *entity_boxes(PyObject *mod, PyObject *seq)
+{
+    PyObject *fast = PySequence_Fast(seq, "entity_boxes takes a sequence of entities");
+    if (!fast) return NULL;
+    Py_ssize_t n = PySequence_Fast_GET_SIZE(fast);
+    PyObject *out = PyBytes_FromStringAndSize(NULL, n * (Py_ssize_t)sizeof(VeiBox));
+    if (!out) {
+        Py_DECREF(fast);
+        return NULL;
+    }
+    VeiBox *b = (VeiBox *)PyBytes_AS_STRING(out);
+    static const char *names[] = {"x", "y", "yaw", "center_x", "length", "width"};
+    for (Py_ssize_t i = 0; i < n; i++) {
+        double v[6];
+        for (int k = 0; k < 6; k++) {
+            PyObject *a = PyObject_GetAttrString(PySequence_Fast_GET_ITEM(fast, i), names[k]);
+            v[k] = a ? PyFloat_AsDouble(a) : -1.0;
+            Py_XDECREF(a);
+            if (v[k] == -1.0 && PyErr_Occurred()) {
+                Py_DECREF(out);
+                Py_DECREF(fast);
+                return NULL;
+            }
+        }
+        double c = cos(v[2]), s = sin(v[2]);
+        b[i] = (VeiBox){v[0] + c * v[3], v[1] + s * v[3], v[2], v[4], v[5]};
+    }
+    Py_DECREF(fast);
+    return out;
+}
+
 static PyMethodDef module_methods[] = {
+    {"entity_boxes", entity_boxes, METH_O, "entity_boxes(entities) -> the boxes as bytes for overlapping()"},
     F(sfm_step, "sfm_step(x, y, vx, vy, waypoint, route_x, route_y, params, repulsive, ego_box, dt) -> state"),
     F(cap_step, "cap_step(brake, integral, prev_error, params, cruise, v, ttc, resume_ttc, dt) -> (state, a, d_safe)"),
     F(longitudinal_step, "longitudinal_step(s, v, a, a_cmd, max_accel, max_decel, jerk_max, dt) -> (s, v, a)"),
