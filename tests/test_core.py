@@ -1,0 +1,102 @@
+# ruff: noqa: E501  (hand-written OpenDRIVE keeps its XML lines whole)
+"""The compiled core's own answers, against closed forms and hand-made roads: projection onto an arc,
+the lane a road user is in across lane sections (links, a lane that ends, a lane that narrows to
+nothing), a single-vertex trajectory, and one clear error for a wrong call."""
+
+from __future__ import annotations
+
+import math
+from array import array
+
+import pytest
+
+from vei_scenario.core import _core
+from vei_scenario.interpreter.entities import Polyline
+from vei_scenario.roads.road_model import RoadNetwork
+
+ARC_ROAD = """<OpenDRIVE><header revMajor="1" revMinor="6"/>
+<road id="1" length="100" junction="-1"><planView>
+  <geometry s="0" x="0" y="0" hdg="0" length="100"><arc curvature="0.01"/></geometry></planView>
+  <lanes><laneSection s="0"><center><lane id="0" type="none"/></center>
+    <right><lane id="-1" type="driving"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></right>
+  </laneSection></lanes></road></OpenDRIVE>"""
+
+# section 1 (0..40 m): lanes -1, -2 (-1 links to -1, -2 links to -2); section 2 (40..80 m): lane -2
+# narrows from 3 m to nothing; section 3 (80..120 m): only lane -1
+SECTIONS_ROAD = """<OpenDRIVE><header revMajor="1" revMinor="6"/>
+<road id="1" length="120" junction="-1"><planView>
+  <geometry s="0" x="0" y="0" hdg="0" length="120"><line/></geometry></planView>
+  <lanes>
+    <laneSection s="0"><center><lane id="0" type="none"/></center><right>
+      <lane id="-1" type="driving"><link><successor id="-1"/></link><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane>
+      <lane id="-2" type="driving"><link><successor id="-2"/></link><width sOffset="0" a="3" b="0" c="0" d="0"/></lane>
+    </right></laneSection>
+    <laneSection s="40"><center><lane id="0" type="none"/></center><right>
+      <lane id="-1" type="driving"><link><predecessor id="-1"/></link><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane>
+      <lane id="-2" type="driving"><link><predecessor id="-2"/></link><width sOffset="0" a="3" b="-0.075" c="0" d="0"/></lane>
+    </right></laneSection>
+    <laneSection s="80"><center><lane id="0" type="none"/></center><right>
+      <lane id="-1" type="driving"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane>
+    </right></laneSection>
+  </lanes></road></OpenDRIVE>"""
+
+
+def _road(tmp_path, text: str):
+    path = tmp_path / "r.xodr"
+    path.write_text(text)
+    return RoadNetwork.load(path).road("1")
+
+
+def test_a_point_off_an_arc_projects_to_its_angle_and_radius(tmp_path):
+    road = _road(tmp_path, ARC_ROAD)
+    r = 100.0  # the arc's centre is at (0, 100)
+    for angle, offset in ((0.2, -1.75), (0.5, -1.0), (0.8, 0.5)):
+        radius = r - offset  # t > 0 is to the left: towards the centre
+        x, y = radius * math.sin(angle), r - radius * math.cos(angle)
+        s, t, along, dist, lane = road.core.locate(x, y)
+        assert s == pytest.approx(r * angle, abs=1e-6) and t == pytest.approx(offset, abs=1e-6)
+        assert along == pytest.approx(0.0, abs=1e-6) and dist == pytest.approx(abs(offset), abs=1e-6)
+        assert lane == (-1 if -3.5 <= offset <= 0 else None)
+
+
+def test_the_lane_across_sections_follows_links_ends_and_merges(tmp_path):
+    road = _road(tmp_path, SECTIONS_ROAD)
+    assert road.lane_on(10.0, 50.0, -2, True) == -2  # linked on into section 2
+    assert road.lane_on(10.0, 50.0, -1, True) == -1
+    # lane -2 narrows to nothing at s = 80: just before, it is still there (0.0375 m wide) ...
+    assert road.lane_on(50.0, 79.5, -2, True) == -2
+    # ... and in section 3 it no longer exists: the nearest lane on its side
+    assert road.lane_on(50.0, 90.0, -2, True) == -1
+    # entering the road (not the same road) at s = 90 in lane -2: no links passed, the lane ends
+    assert road.lane_on(0.0, 90.0, -2, False) == -1
+
+
+def test_a_lane_narrowed_to_nothing_moves_over_to_the_nearest_driving_lane(tmp_path):
+    text = SECTIONS_ROAD.replace('a="3" b="-0.075"', 'a="0" b="0"')  # lane -2 of section 2 has no width
+    road = _road(tmp_path, text)
+    assert road.lane_on(10.0, 50.0, -2, True) == -1
+
+
+def test_a_timed_trajectory_of_one_vertex_stays_there():
+    line = Polyline([3.0], [4.0], [0.5], [2.0])
+    for t in (0.0, 2.0, 10.0):
+        assert line.at_time(t) == (3.0, 4.0, 0.5)
+        assert line.s_at_time(t) == 0.0
+
+
+def test_exit_speed_carries_a_timed_trajectory_on_past_its_end():
+    line = Polyline([0.0, 10.0], [0.0, 0.0], [0.0, 0.0], [0.0, 1.0])
+    assert line.at_time(2.0)[0] == pytest.approx(20.0)  # the last segment's 10 m/s
+    line.exit_speed = 4.0
+    assert line.at_time(2.0)[0] == pytest.approx(14.0) and line.s_at_time(2.0) == pytest.approx(14.0)
+
+
+def test_wrong_calls_are_one_clear_error():
+    with pytest.raises(TypeError, match="takes 6 arguments"):
+        _core.time_to_conflict((0, 0, 0, 4, 2), 1.0)
+    with pytest.raises(TypeError):
+        _core.overlapping([1.0, 2.0])
+    with pytest.raises(AttributeError):
+        _core.entity_boxes([object()])
+    boxes = array("d", [0, 0, 0, 4, 2, 3, 0, 0, 4, 2, 10, 0, 0, 4, 2]).tobytes()
+    assert _core.overlapping(boxes) == [(0, 1)]
