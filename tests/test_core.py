@@ -11,6 +11,7 @@ from array import array
 import pytest
 
 from vei_scenario.core import _core
+from vei_scenario.errors import VeiInputError
 from vei_scenario.interpreter.entities import Polyline
 from vei_scenario.roads.road_model import RoadNetwork
 
@@ -100,3 +101,17 @@ def test_wrong_calls_are_one_clear_error():
         _core.entity_boxes([object()])
     boxes = array("d", [0, 0, 0, 4, 2, 3, 0, 0, 4, 2, 10, 0, 0, 4, 2]).tobytes()
     assert _core.overlapping(boxes) == [(0, 1)]
+
+
+def test_lane_ids_far_apart_are_answered_from_the_lanes_there_are(tmp_path):
+    """Lane -1000000 beside lane -1 (the ids between missing, as a careless or hostile file may have):
+    its inner border is lane -1's outer one, found from the lanes the section has rather than by
+    walking every id in between; an id beyond ±1 000 000 is refused in one line naming it."""
+    lane = '<lane id="-1" type="driving"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane>'
+    far = '<lane id="{}" type="driving"><width sOffset="0" a="2" b="0" c="0" d="0"/></lane>'
+    road = _road(tmp_path, ARC_ROAD.replace(lane, lane + far.format(-1000000)))
+    assert road.lane_borders(10.0, -1000000) == (-3.5, -5.5)
+    path = tmp_path / "far.xodr"
+    path.write_text(ARC_ROAD.replace(lane, lane + far.format(-5000000000)))
+    with pytest.raises(VeiInputError, match=r"lane id -5000000000 \(line \d+\) is out of range"):
+        RoadNetwork.load(path)

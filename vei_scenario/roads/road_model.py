@@ -370,6 +370,21 @@ def _check_geometry(g: Geometry, el) -> None:
         )
 
 
+#: Lane ids beyond this are no road's: refused (the compiled road keeps them as C ints).
+MAX_LANE_ID = 1_000_000
+
+
+def _lane_id(text, el) -> int:
+    """A lane id (of a lane or a lane link) as an integer within ±MAX_LANE_ID; ValueError naming the line."""
+    try:
+        value = int(text)
+    except (TypeError, ValueError):
+        raise ValueError(f"lane id {text!r} (line {el.sourceline}) is not an integer") from None
+    if abs(value) > MAX_LANE_ID:
+        raise ValueError(f"lane id {value} (line {el.sourceline}) is out of range (at most ±{MAX_LANE_ID})")
+    return value
+
+
 def _poly(el) -> tuple[float, float, float, float, float]:
     return tuple(_f(el, k) for k in ("sOffset" if el.get("sOffset") is not None else "s", "a", "b", "c", "d"))
 
@@ -404,7 +419,7 @@ def _road(r) -> Road:
         lanes = {}
         for side in ("left", "right"):
             for ln in sec.iterfind(f"{side}/lane"):
-                lane_id = int(ln.get("id"))
+                lane_id = _lane_id(ln.get("id"), ln)
                 widths = sorted(_poly(w) for w in ln.iterfind("width"))
                 if not widths:  # border-defined lanes: treat the border polynomials as widths of lane 1
                     widths = sorted(_poly(w) for w in ln.iterfind("border"))
@@ -413,8 +428,8 @@ def _road(r) -> Road:
                     lane_id,
                     ln.get("type", "driving"),
                     widths,
-                    int(succ.get("id")) if succ is not None else None,
-                    int(pred.get("id")) if pred is not None else None,
+                    _lane_id(succ.get("id"), succ) if succ is not None else None,
+                    _lane_id(pred.get("id"), pred) if pred is not None else None,
                 )
         sections.append(LaneSection(_f(sec, "s"), lanes))
     sections.sort(key=lambda sec: sec.s)

@@ -157,9 +157,17 @@ int vr_lane_borders(const vr_road *r, double s, int lane_id, double *inner, doub
     double ds = s - r->sec_s[sec];
     int sign = lane_id > 0 ? 1 : -1, n = abs(lane_id);
     double t = vr_lane_offset(r, s);
-    for (int k = 1; k < n; k++) {
-        int other = vr_lane_row(r, sec, sign * k);
-        t += sign * (other >= 0 ? vr_lane_width(r, other, ds) : 0.0);
+    /* the widths of the lanes between the centre and this one, nearest the centre first (ids that
+     * are missing add nothing; found by the lanes there are, however large the ids) */
+    for (int last = 0;;) {
+        int next_row = -1, next_abs = n;
+        for (int i = r->sec_lane0[sec]; i < r->sec_lane0[sec + 1]; i++) {
+            int id = (int)r->lanes[(long)i * VR_L_COLS + VR_L_ID], a = abs(id);
+            if ((id > 0) == (lane_id > 0) && a > last && a < next_abs) next_abs = a, next_row = i;
+        }
+        if (next_row < 0) break;
+        t += sign * vr_lane_width(r, next_row, ds);
+        last = next_abs;
     }
     *inner = t;
     *outer = t + sign * vr_lane_width(r, row, ds);
