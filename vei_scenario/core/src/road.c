@@ -319,7 +319,9 @@ int vr_lane_on(const vr_road *r, double s0, double s1, int lane, int same_road)
 int vr_road_init(vr_road *r)
 {
     if (r->samp_s) return 0;
-    int n = (int)ceil(r->length / 0.5) + 1;
+    /* every 0.5 m; beyond 2 000 km of road (no real one) at most 4 000 001 samples, further apart */
+    double count = ceil(r->length / 0.5) + 1;
+    int n = count > 4000001.0 ? 4000001 : (int)count;
     if (n < 2) n = 2;
     r->n_samp = n;
     r->samp_s = malloc(sizeof(double) * 3 * (size_t)n);

@@ -35,7 +35,8 @@ typedef struct {
     const double *widths;  /* width records (sOffset, a, b, c, d) */
     double length;
     int varying;           /* a lane offset or width that is not constant */
-    /* the projection's samples of the reference line (every 0.5 m), made by vr_road_init; NULL before */
+    /* the projection's samples of the reference line (every 0.5 m, at most 4 000 001), made by
+     * vr_road_init; NULL before */
     int n_samp;
     double *samp_s, *samp_x, *samp_y;
 } vr_road;
