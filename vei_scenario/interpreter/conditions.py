@@ -78,13 +78,20 @@ class StoryboardElementState(Condition):
         self.key = (STORYBOARD_ELEMENT_TYPES.get(el.get("storyboardElementType"), ""), el.get("storyboardElementRef"))
         self.state = el.get("state")
         self.el = el
+        if not self.state:
+            raise ctx.error(el, "StoryboardElementStateCondition needs a state")
+        #: a state (standbyState ...: the element is in it) or else a transition (it happened last step)
+        self.in_state = self.state[: -len("State")] if self.state.endswith("State") else None
+        self.target = None  # the element, found on the first test (the storyboard is built by then)
 
     def test(self, ctx: Context) -> bool:
-        target = ctx.elements.get(self.key)
+        target = self.target
         if target is None:
-            raise ctx.error(self.el, f"StoryboardElementStateCondition: no {self.key[0]} named {self.key[1]!r}")
-        if self.state.endswith("State"):
-            return target.state == self.state[: -len("State")]
+            target = self.target = ctx.elements.get(self.key)
+            if target is None:
+                raise ctx.error(self.el, f"StoryboardElementStateCondition: no {self.key[0]} named {self.key[1]!r}")
+        if self.in_state is not None:
+            return target.state == self.in_state
         return target.transitions.get(self.state, -10) >= ctx.step - 1
 
 
