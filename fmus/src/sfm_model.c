@@ -44,8 +44,7 @@ int model_initialize(Instance *m) {
     ms->track.n = n;
     ms->track.exit_speed = NAN;
     vei_polyline_init(&ms->track);
-    ms->riding = 0;
-    ms->fs = 0.0;
+    ms->agent = (VeiRider)VEI_RIDER_START;
     ms->t_start = ms->track.t[0] * 1.0 + R(TIME_SHIFT_S);
     ms->v_start = (ms->track_s[1] - ms->track_s[0]) / (ms->track.t[1] - ms->track.t[0]);
     R(X) = R(X0), R(Y) = R(Y0), R(YAW) = R(YAW0), R(SPEED) = R(SPEED0), R(ACCEL) = 0.0;
@@ -61,39 +60,22 @@ int model_do_step(Instance *m, double t, double h) {
     if (!(t > R(BEHAVIOUR_START_S))) { /* not started: straight ahead at the current speed */
         vei_straight_ahead(&R(X), &R(Y), R(YAW), R(SPEED), &R(ACCEL), h);
     } else {
-        if (ms->rider != 0 && !ms->riding && t_next >= ms->t_start - 1e-9) {
-            ms->riding = 1;
-            ms->state.x = R(X), ms->state.y = R(Y);
-            ms->state.vx = ms->v_start * cos(R(YAW)), ms->state.vy = ms->v_start * sin(R(YAW));
-            ms->state.waypoint = 0;
-        }
-        if (ms->riding) {
-            VeiBox ego = {R(EGO_X), R(EGO_Y), R(EGO_YAW), R(EGO_LENGTH_M), R(EGO_WIDTH_M)};
-            if (!isfinite(ego.x) || !isfinite(ego.y) || !isfinite(ego.yaw))
-                return vei_fail(m, "the ego inputs are not finite");
-            VeiSfmParams p = {R(V0_MPS),          R(MASS_KG),        R(TAU_S),          R(SIGMA_M),
-                              R(REPULSION_N),      R(REPULSION_RANGE_M), R(WAYPOINT_RADIUS_M), R(MAX_SPEED_MPS),
-                              R(MAX_ACCEL_MPS2),   R(MAX_DECEL_MPS2)};
-            vei_sfm_step(&ms->state, &m->r[VR_ROUTE_X], &m->r[VR_ROUTE_Y], m->i[VR_ROUTE_N], &p, ms->rider == 1, &ego,
-                         h);
-            double sp = hypot(ms->state.vx, ms->state.vy);
-            R(ACCEL) = (sp - R(SPEED)) / h;
-            R(X) = ms->state.x, R(Y) = ms->state.y, R(SPEED) = sp;
-            if (sp > 0.05) R(YAW) = atan2(ms->state.vy, ms->state.vx);
-            m->i[VR_WAYPOINT] = ms->state.waypoint;
-        } else { /* replay of the recorded track, shifted in time */
-            double tt = (t_next - R(TIME_SHIFT_S)) / 1.0;
-            double target = vei_polyline_s_at_time(&ms->track, tt);
-            double spd = (target - ms->fs) / h;
-            R(ACCEL) = (spd - R(SPEED)) / h;
-            R(SPEED) = spd;
-            ms->fs = target;
-            vei_polyline_at_time(&ms->track, tt, &R(X), &R(Y), &R(YAW));
-        }
+        VeiBox ego = {R(EGO_X), R(EGO_Y), R(EGO_YAW), R(EGO_LENGTH_M), R(EGO_WIDTH_M)};
+        VeiSfmParams p = {R(V0_MPS),        R(MASS_KG),          R(TAU_S),             R(SIGMA_M),
+                          R(REPULSION_N),   R(REPULSION_RANGE_M), R(WAYPOINT_RADIUS_M), R(MAX_SPEED_MPS),
+                          R(MAX_ACCEL_MPS2), R(MAX_DECEL_MPS2)};
+        double c = cos(R(YAW)), s = sin(R(YAW));
+        int rides_now = ms->agent.riding || (ms->rider != 0 && t_next >= ms->t_start - 1e-9);
+        if (rides_now && (!isfinite(ego.x) || !isfinite(ego.y) || !isfinite(ego.yaw)))
+            return vei_fail(m, "the ego inputs are not finite"); /* (only a riding rider reads them) */
+        vei_rider_step(&ms->agent, &ms->track, R(TIME_SHIFT_S), ms->t_start, ms->v_start, ms->rider != 0,
+                       &m->r[VR_ROUTE_X], &m->r[VR_ROUTE_Y], m->i[VR_ROUTE_N], &p, ms->rider == 1, &ego,
+                       cos(ego.yaw), sin(ego.yaw), t_next, h, &R(X), &R(Y), &R(YAW), &R(SPEED), &R(ACCEL), &c, &s);
+        if (ms->agent.riding) m->i[VR_WAYPOINT] = ms->agent.st.waypoint;
     }
-    m->b[VR_RIDING] = ms->riding;
-    if (ms->riding) {
-        R(VX) = ms->state.vx, R(VY) = ms->state.vy;
+    m->b[VR_RIDING] = ms->agent.riding;
+    if (ms->agent.riding) {
+        R(VX) = ms->agent.st.vx, R(VY) = ms->agent.st.vy;
     } else {
         R(VX) = R(SPEED) * cos(R(YAW)), R(VY) = R(SPEED) * sin(R(YAW));
     }

@@ -5,10 +5,8 @@
 typedef struct {
     double track_s[VEI_MAX_PATH];
     VeiPolyline track;
-    VeiSfmState state;
+    VeiRider agent;  /* the rider agent's state (vei_models.h: the sweep kernel steps the same one) */
     int rider;       /* 0 replay, 1 normal, 2 aggressive */
-    int riding;      /* the social force model moves the scooter */
-    double fs;       /* arc length of the replay along the track */
     double t_start;  /* when the rider starts: the track's first time + time shift */
     double v_start;  /* speed of the track's first segment */
 } ModelState;

@@ -135,13 +135,12 @@ static int simulate(const VeiBatchScene *sc, const VeiBatchVariant *v, double *t
     double x[2] = {sc->ego_x0, sc->threat_x0}, y[2] = {sc->ego_y0, sc->threat_y0};
     double yaw[2] = {sc->ego_yaw0, sc->threat_yaw0}, speed[2] = {v->ego_speed0, v->threat_speed0};
     double c[2] = {cos(yaw[0]), cos(yaw[1])}, s[2] = {sin(yaw[0]), sin(yaw[1])};
-    double accel[2] = {0.0, 0.0}, fs[2] = {0.0, 0.0};
+    double accel[2] = {0.0, 0.0}, fs[1] = {0.0};
     VeiCapState cap = {0, 0.0, 0.0, 0};
-    VeiSfmState st = {0, 0, 0, 0, 0};
-    double rider_speed = 0.0; /* hypot(st.vx, st.vy) */
-    int riding = 0, started = 0, first_brake = sc->n_steps;
+    VeiRider rider = VEI_RIDER_START;
+    int started = 0, first_brake = sc->n_steps;
     int following = pre != NULL && pre->len > 0;
-    VeiCursor on_path = VEI_CURSOR_START, on_track = VEI_CURSOR_START;
+    VeiCursor on_path = VEI_CURSOR_START;
     const double t_start = sc->track.t[0] * 1.0 + v->offset;
     const double length = vei_polyline_length(&sc->ego_path);
     double *ego_rows[NROWS], *threat_rows[NROWS];
@@ -238,33 +237,10 @@ static int simulate(const VeiBatchScene *sc, const VeiBatchVariant *v, double *t
             continue;
         }
         /* the threat: replay of its shifted track until the rider starts, then the social force model */
-        if (v->sfm_on && !riding && t_next >= t_start - 1e-9) {
-            riding = 1;
-            st.x = x[1], st.y = y[1];
-            st.vx = sc->v_start * c[1], st.vy = sc->v_start * s[1];
-            st.waypoint = 0;
-            rider_speed = hypot(st.vx, st.vy);
-        }
-        double before = yaw[1];
-        if (riding) {
-            VeiBox ego = {x[0], y[0], yaw[0], sc->ego_length, sc->ego_width};
-            double sp = vei_sfm_step_trig(&st, rider_speed, sc->route_x, sc->route_y, sc->route_n, &sc->sfm,
-                                          v->repulsive, &ego, c[0], s[0], dt);
-            rider_speed = sp;
-            accel[1] = (sp - speed[1]) / dt;
-            x[1] = st.x, y[1] = st.y;
-            if (sp > 0.05) yaw[1] = atan2(st.vy, st.vx);
-            speed[1] = sp;
-        } else {
-            double tt = (t_next - v->offset) / 1.0;
-            double target = vei_polyline_s_at_time_seg(&sc->track, tt, &on_track);
-            double spd = (target - fs[1]) / dt;
-            accel[1] = (spd - speed[1]) / dt;
-            speed[1] = spd;
-            fs[1] = target;
-            vei_polyline_at_time_seg(&sc->track, tt, &on_track, &x[1], &y[1], &yaw[1]);
-        }
-        if (yaw[1] != before) c[1] = cos(yaw[1]), s[1] = sin(yaw[1]);
+        VeiBox ego = {x[0], y[0], yaw[0], sc->ego_length, sc->ego_width};
+        vei_rider_step(&rider, &sc->track, v->offset, t_start, sc->v_start, v->sfm_on, sc->route_x, sc->route_y,
+                       sc->route_n, &sc->sfm, v->repulsive, &ego, c[0], s[0], t_next, dt, &x[1], &y[1], &yaw[1],
+                       &speed[1], &accel[1], &c[1], &s[1]);
         RECORD(k + 1);
     }
 #undef LOAD

@@ -20,6 +20,37 @@ double vei_wrap_angle(double a) {
     return r - M_PI;
 }
 
+void vei_rider_step(VeiRider *r, const VeiPolyline *track, double offset, double t_start, double v_start, int rides,
+                    const double *route_x, const double *route_y, int route_n, const VeiSfmParams *p, int repulsive,
+                    const VeiBox *ego, double ego_c, double ego_s, double t_next, double dt, double *x, double *y,
+                    double *yaw, double *speed, double *accel, double *c, double *s) {
+    if (rides && !r->riding && t_next >= t_start - 1e-9) {
+        r->riding = 1;
+        r->st.x = *x, r->st.y = *y;
+        r->st.vx = v_start * *c, r->st.vy = v_start * *s;
+        r->st.waypoint = 0;
+        r->speed = hypot(r->st.vx, r->st.vy);
+    }
+    double before = *yaw;
+    if (r->riding) {
+        double sp = vei_sfm_step_trig(&r->st, r->speed, route_x, route_y, route_n, p, repulsive, ego, ego_c, ego_s, dt);
+        r->speed = sp;
+        *accel = (sp - *speed) / dt;
+        *x = r->st.x, *y = r->st.y;
+        if (sp > 0.05) *yaw = atan2(r->st.vy, r->st.vx);
+        *speed = sp;
+    } else { /* the replay of the recorded track, shifted in time */
+        double tt = (t_next - offset) / 1.0;
+        double target = vei_polyline_s_at_time_seg(track, tt, &r->on_track);
+        double spd = (target - r->fs) / dt;
+        *accel = (spd - *speed) / dt;
+        *speed = spd;
+        r->fs = target;
+        vei_polyline_at_time_seg(track, tt, &r->on_track, x, y, yaw);
+    }
+    if (*yaw != before) *c = cos(*yaw), *s = sin(*yaw);
+}
+
 double vei_straight_ahead(double *x, double *y, double yaw, double speed, double *accel, double dt) {
     double v0 = speed;
     *accel = (speed - v0) / dt;

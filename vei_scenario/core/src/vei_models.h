@@ -103,6 +103,27 @@ double vei_polyline_s_at_time_seg(const VeiPolyline *p, double t, VeiCursor *cur
 /* Arc length of the closest point of the path (FollowTrajectory without timing starts there). */
 double vei_polyline_project(const VeiPolyline *p, double px, double py);
 
+/* --- the rider agent (vei run's SocialForceController over its replayed track) --- */
+typedef struct {
+    VeiSfmState st;     /* the rider once it rides */
+    double speed;       /* hypot(st.vx, st.vy) */
+    double fs;          /* arc length of the replay along the track */
+    int riding;         /* the social force model moves it */
+    VeiCursor on_track; /* the replay's place on the track */
+} VeiRider;
+#define VEI_RIDER_START {{0, 0, 0, 0, 0}, 0.0, 0.0, 0, VEI_CURSOR_START}
+
+/* One step of the rider once its behaviour has started: it replays its track shifted by `offset`
+ * until `t_next` reaches `t_start` (when `rides`: a normal or aggressive rider), then starts at
+ * `v_start` along its heading and rides the social force model towards the route's waypoints,
+ * repelled by the ego's box (`repulsive`; `ego_c`, `ego_s`: cosine and sine of the ego's heading).
+ * Pose, speed, acceleration and the heading's cosine and sine (`c`, `s`) are updated in place. The
+ * sweep kernel and the e-scooter FMU both step the rider with it. */
+void vei_rider_step(VeiRider *r, const VeiPolyline *track, double offset, double t_start, double v_start, int rides,
+                    const double *route_x, const double *route_y, int route_n, const VeiSfmParams *p, int repulsive,
+                    const VeiBox *ego, double ego_c, double ego_s, double t_next, double dt, double *x, double *y,
+                    double *yaw, double *speed, double *accel, double *c, double *s);
+
 /* Before its behaviour starts an entity keeps its Init speed and heading (the interpreter's motion of
  * an entity without a trajectory or speed action). Returns the distance moved. */
 double vei_straight_ahead(double *x, double *y, double yaw, double speed, double *accel, double dt);
