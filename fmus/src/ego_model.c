@@ -42,14 +42,8 @@ int model_do_step(Instance *m, double t, double h) {
         ms->s = vei_polyline_project(&ms->path, R(X), R(Y));
         ms->on_path = 1;
     }
-    VeiLongitudinal lon = {0.0, R(SPEED), R(ACCEL)};
     VeiVehicleLimits lim = {R(MAX_ACCEL_MPS2), R(MAX_DECEL_MPS2), R(JERK_MAX_MPS3)};
-    vei_longitudinal_step(&lon, R(A_CMD), &lim, h);
-    double length = vei_polyline_length(&ms->path);
-    ms->s = ms->s + lon.s < length ? ms->s + lon.s : length;
-    vei_polyline_at_s(&ms->path, ms->s, &R(X), &R(Y), &R(YAW));
-    R(SPEED) = lon.v;
-    R(ACCEL) = lon.a;
+    vei_ego_drive(&ms->path, NULL, &ms->s, R(A_CMD), &lim, h, &R(X), &R(Y), &R(YAW), &R(SPEED), &R(ACCEL));
     R(S) = ms->s;
     return 0;
 }

@@ -196,7 +196,7 @@ static int simulate(const VeiBatchScene *sc, const VeiBatchVariant *v, double *t
         if (ego_given) {
             LOAD(ego_rows, k + 1, 0);
         } else {
-            double v0 = speed[0];
+            double v0 = speed[0], before = yaw[0];
             if (v->cap_on) {
                 VeiTrigBox ego = {x[0], y[0], yaw[0], sc->ego_length, sc->ego_width, c[0], s[0]};
                 VeiTrigBox threat = {x[1], y[1], yaw[1], sc->threat_length, sc->threat_width, c[1], s[1]};
@@ -217,17 +217,13 @@ static int simulate(const VeiBatchScene *sc, const VeiBatchVariant *v, double *t
                     following = 0;
                 }
                 cap = next;
-                VeiLongitudinal lon = {0.0, v0, accel[0]};
-                vei_longitudinal_step(&lon, a_cmd, &sc->limits, dt);
-                fs[0] = dmin(fs[0] + lon.s, length);
-                speed[0] = lon.v;
-                accel[0] = lon.a;
+                vei_ego_drive(&sc->ego_path, &on_path, &fs[0], a_cmd, &sc->limits, dt, &x[0], &y[0], &yaw[0],
+                              &speed[0], &accel[0]);
             } else {
                 fs[0] = dmin(fs[0] + 0.5 * (v0 + v0) * dt, length);
                 accel[0] = (v0 - v0) / dt;
+                vei_polyline_at_s_seg(&sc->ego_path, fs[0], &on_path, &x[0], &y[0], &yaw[0]);
             }
-            double before = yaw[0];
-            vei_polyline_at_s_seg(&sc->ego_path, fs[0], &on_path, &x[0], &y[0], &yaw[0]);
             if (yaw[0] != before) c[0] = cos(yaw[0]), s[0] = sin(yaw[0]);
         }
     threat:

@@ -51,6 +51,17 @@ void vei_rider_step(VeiRider *r, const VeiPolyline *track, double offset, double
     if (*yaw != before) *c = cos(*yaw), *s = sin(*yaw);
 }
 
+void vei_ego_drive(const VeiPolyline *path, VeiCursor *cur, double *fs, double a_cmd, const VeiVehicleLimits *lim,
+                   double dt, double *x, double *y, double *yaw, double *speed, double *accel) {
+    VeiLongitudinal lon = {0.0, *speed, *accel};
+    vei_longitudinal_step(&lon, a_cmd, lim, dt);
+    double along = *fs + lon.s, end = vei_polyline_length(path);
+    *fs = along < end ? along : end; /* held at the path's end */
+    *speed = lon.v;
+    *accel = lon.a;
+    vei_polyline_at_s_seg(path, *fs, cur, x, y, yaw);
+}
+
 double vei_straight_ahead(double *x, double *y, double yaw, double speed, double *accel, double dt) {
     double v0 = speed;
     *accel = (speed - v0) / dt;

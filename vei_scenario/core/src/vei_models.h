@@ -124,6 +124,13 @@ void vei_rider_step(VeiRider *r, const VeiPolyline *track, double offset, double
                     const VeiBox *ego, double ego_c, double ego_s, double t_next, double dt, double *x, double *y,
                     double *yaw, double *speed, double *accel, double *c, double *s);
 
+/* The ego along its path (vei run's ego with the planner): the vehicle follows `a_cmd` within its limits
+ * and moves along the path by the distance it covers, held at the path's end; pose, speed and
+ * acceleration updated in place, `fs` the arc length along the path. The sweep kernel and the ego FMU
+ * both drive the ego with it. */
+void vei_ego_drive(const VeiPolyline *path, VeiCursor *cur, double *fs, double a_cmd, const VeiVehicleLimits *lim,
+                   double dt, double *x, double *y, double *yaw, double *speed, double *accel);
+
 /* Before its behaviour starts an entity keeps its Init speed and heading (the interpreter's motion of
  * an entity without a trajectory or speed action). Returns the distance moved. */
 double vei_straight_ahead(double *x, double *y, double yaw, double speed, double *accel, double dt);
