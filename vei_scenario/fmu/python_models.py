@@ -9,12 +9,14 @@ A model keeps every FMU variable by name in ``values``; :meth:`initialize` check
 from __future__ import annotations
 
 import math
+from array import array
 
+from vei_scenario.core import _core
 from vei_scenario.fmu.variables import CAP, EGO, MAX_PATH, MAX_ROUTE, SFM, ModelSpec
 from vei_scenario.interpreter.controllers import recorded_start_speed
 from vei_scenario.interpreter.entities import Polyline
 from vei_scenario.models.cap import BRAKE, CapParameters, CapState, ThreatView, cap_step, threat_in_corridor
-from vei_scenario.models.sfm import RIDER_TYPES, SfmParameters, SfmState, sfm_step
+from vei_scenario.models.sfm import RIDER_TYPES, SfmParameters
 from vei_scenario.models.vehicle import Longitudinal, VehicleLimits, longitudinal_step
 
 
@@ -69,12 +71,20 @@ class SfmModel(FmuModel):
         ts = self.array("track_t", n)
         if any(b <= a for a, b in zip(ts, ts[1:])):
             raise FmuModelError("track_t must increase")
-        self.params = SfmParameters(**{k: float(v[k]) for k in SfmParameters().properties()})
-        self.track = Polyline(self.array("track_x", n), self.array("track_y", n), self.array("track_h", n), ts)
-        self.route = list(zip(self.array("route_x", nr), self.array("route_y", nr)))
-        self.riding, self.fs, self.state = False, 0.0, None
-        self.t_start = ts[0] * 1.0 + v["time_shift_s"]
-        self.v_start = recorded_start_speed(self.track)
+        params = SfmParameters(**{k: float(v[k]) for k in SfmParameters().properties()})
+        track = Polyline(self.array("track_x", n), self.array("track_y", n), self.array("track_h", n), ts)
+        # the rider agent is the compiled core's (the C FMU and the sweep kernel step the same one)
+        self.rider = _core.Rider(
+            track.core,
+            array("d", self.array("route_x", nr)).tobytes(),
+            array("d", self.array("route_y", nr)).tobytes(),
+            params.packed,
+            v["time_shift_s"],
+            ts[0] * 1.0 + v["time_shift_s"],
+            recorded_start_speed(track),
+            v["rider_type"] != "replay",
+            v["rider_type"] == "normal",
+        )
         v.update(x=v["x0"], y=v["y0"], yaw=v["yaw0"], speed=v["speed0"], accel=0.0, riding=False, waypoint=0)
         v["vx"], v["vy"] = v["speed"] * math.cos(v["yaw"]), v["speed"] * math.sin(v["yaw"])
         self.initialized = True
@@ -85,33 +95,15 @@ class SfmModel(FmuModel):
         if not self.started(t):
             self.straight_ahead(h)
         else:
-            if v["rider_type"] != "replay" and not self.riding and t_next >= self.t_start - 1e-9:
-                self.riding = True
-                c, s = math.cos(v["yaw"]), math.sin(v["yaw"])
-                self.state = SfmState(v["x"], v["y"], self.v_start * c, self.v_start * s)
-            if self.riding:
-                ego = (v["ego_x"], v["ego_y"], v["ego_yaw"], v["ego_length_m"], v["ego_width_m"])
-                self.state = sfm_step(self.state, self.route, self.params, v["rider_type"] == "normal", ego, h)
-                st = self.state
-                sp = math.hypot(st.vx, st.vy)
-                v["accel"] = (sp - v["speed"]) / h
-                v["x"], v["y"], v["speed"] = st.x, st.y, sp
-                if sp > 0.05:
-                    v["yaw"] = math.atan2(st.vy, st.vx)
-                v["waypoint"] = st.waypoint
-            else:
-                tt = (t_next - v["time_shift_s"]) / 1.0
-                target = self.track.s_at_time(tt)
-                spd = (target - self.fs) / h
-                v["accel"] = (spd - v["speed"]) / h
-                v["speed"] = spd
-                self.fs = target
-                v["x"], v["y"], v["yaw"] = self.track.at_time(tt)
-        v["riding"] = self.riding
-        if self.riding:
-            v["vx"], v["vy"] = self.state.vx, self.state.vy
-        else:
-            v["vx"], v["vy"] = v["speed"] * math.cos(v["yaw"]), v["speed"] * math.sin(v["yaw"])
+            ego = (v["ego_x"], v["ego_y"], v["ego_yaw"], v["ego_length_m"], v["ego_width_m"])
+            x, y, yaw, speed, accel, riding, waypoint, vx, vy = self.rider.step(
+                t_next, h, v["x"], v["y"], v["yaw"], v["speed"], v["accel"], ego
+            )
+            v.update(x=x, y=y, yaw=yaw, speed=speed, accel=accel, riding=riding, vx=vx, vy=vy)
+            if riding:
+                v["waypoint"] = waypoint
+            return
+        v["vx"], v["vy"] = v["speed"] * math.cos(v["yaw"]), v["speed"] * math.sin(v["yaw"])
 
 
 class CapModel(FmuModel):

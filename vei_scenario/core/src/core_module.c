@@ -566,6 +566,105 @@ static PyObject *time_to_contact(PyObject *mod, PyObject *const *args, Py_ssize_
     return PyFloat_FromDouble(vei_time_to_contact(&a, vxa, vya, &b, vxb, vyb));
 }
 
+/* ---------------------------------------------------------------------------------------------- */
+/* Rider: the rider agent of vei_models.c (vei_rider_step) with its state, for Python's FMU model */
+
+typedef struct {
+    PyObject_HEAD
+    VeiRider r;
+    PyObject *track; /* the Polyline whose path it replays (kept alive) */
+    double *route;   /* x then y */
+    int route_n;
+    VeiSfmParams p;
+    double offset, t_start, v_start;
+    int rides, repulsive;
+} RiderObject;
+
+static void Rider_dealloc(RiderObject *self)
+{
+    Py_XDECREF(self->track);
+    PyMem_Free(self->route);
+    Py_TYPE(self)->tp_free((PyObject *)self);
+}
+
+static int Rider_init(RiderObject *self, PyObject *args, PyObject *kwds)
+{
+    PyObject *track, *rx, *ry, *params;
+    int rides, repulsive;
+    if (!PyArg_ParseTuple(args, "O!SSSdddpp", &PolylineType, &track, &rx, &ry, &params, &self->offset, &self->t_start,
+                          &self->v_start, &rides, &repulsive))
+        return -1;
+    if (((PolylineObject *)track)->p.t == NULL || ((PolylineObject *)track)->p.n < 2) {
+        PyErr_SetString(PyExc_ValueError, "a rider replays a timed track of at least two vertices");
+        return -1;
+    }
+    Py_ssize_t n = PyBytes_GET_SIZE(rx) / (Py_ssize_t)sizeof(double);
+    if (n < 1 || PyBytes_GET_SIZE(ry) != PyBytes_GET_SIZE(rx)) {
+        PyErr_SetString(PyExc_ValueError, "a rider needs a route of at least one waypoint (as many y as x)");
+        return -1;
+    }
+    double pv[10];
+    if (doubles_of(params, pv, 10, "Rider params") < 0) return -1;
+    double *route = PyMem_Malloc(sizeof(double) * 2 * (size_t)n);
+    if (!route) {
+        PyErr_NoMemory();
+        return -1;
+    }
+    memcpy(route, PyBytes_AS_STRING(rx), sizeof(double) * (size_t)n);
+    memcpy(route + n, PyBytes_AS_STRING(ry), sizeof(double) * (size_t)n);
+    PyMem_Free(self->route);
+    Py_XDECREF(self->track);
+    Py_INCREF(track);
+    self->track = track, self->route = route, self->route_n = (int)n;
+    self->p = (VeiSfmParams){pv[0], pv[1], pv[2], pv[3], pv[4], pv[5], pv[6], pv[7], pv[8], pv[9]};
+    self->rides = rides, self->repulsive = repulsive;
+    self->r = (VeiRider)VEI_RIDER_START;
+    return 0;
+}
+
+/* step(t_next, dt, x, y, yaw, speed, accel, ego_box) -> (x, y, yaw, speed, accel, riding, waypoint, vx, vy) */
+static PyObject *Rider_step(RiderObject *self, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (!args_ok(nargs, 8, "step")) return NULL;
+    if (!self->track) {
+        PyErr_SetString(PyExc_ValueError, "the rider was not initialised");
+        return NULL;
+    }
+    ARG_D(0, t_next);
+    ARG_D(1, dt);
+    ARG_D(2, x);
+    ARG_D(3, y);
+    ARG_D(4, yaw);
+    ARG_D(5, speed);
+    ARG_D(6, accel);
+    VeiBox ego;
+    if (box_of(args[7], &ego) < 0) return NULL;
+    double c = cos(yaw), s = sin(yaw);
+    vei_rider_step(&self->r, &((PolylineObject *)self->track)->p, self->offset, self->t_start, self->v_start,
+                   self->rides, self->route, self->route + self->route_n, self->route_n, &self->p, self->repulsive, &ego,
+                   cos(ego.yaw), sin(ego.yaw), t_next, dt, &x, &y, &yaw, &speed, &accel, &c, &s);
+    double vx = self->r.riding ? self->r.st.vx : speed * cos(yaw), vy = self->r.riding ? self->r.st.vy : speed * sin(yaw);
+    return Py_BuildValue("(dddddOidd)", x, y, yaw, speed, accel, self->r.riding ? Py_True : Py_False,
+                         self->r.st.waypoint, vx, vy);
+}
+
+static PyMethodDef Rider_methods[] = {
+    {"step", (PyCFunction)(void (*)(void))Rider_step, METH_FASTCALL,
+     "step(t_next, dt, x, y, yaw, speed, accel, ego_box) -> (x, y, yaw, speed, accel, riding, waypoint, vx, vy)"},
+    {NULL, NULL, 0, NULL},
+};
+
+static PyTypeObject RiderType = {
+    PyVarObject_HEAD_INIT(NULL, 0).tp_name = "vei_scenario.core._core.Rider",
+    .tp_basicsize = sizeof(RiderObject),
+    .tp_dealloc = (destructor)Rider_dealloc,
+    .tp_flags = Py_TPFLAGS_DEFAULT,
+    .tp_doc = "Rider(track, route_x, route_y, params, offset, t_start, v_start, rides, repulsive): the rider agent.",
+    .tp_methods = Rider_methods,
+    .tp_init = (initproc)Rider_init,
+    .tp_new = PyType_GenericNew,
+};
+
 /* overlapping(boxes) -> [(i, j), ...]: the pairs of (x, y, yaw, length, width) boxes that overlap, i < j
  * (circumscribed circles apart by more than a relative 1e-9 cannot overlap: skipped) */
 static PyObject *overlapping(PyObject *mod, PyObject *arg)
@@ -647,13 +746,15 @@ static struct PyModuleDef core_module = {PyModuleDef_HEAD_INIT, "_core", "vei-sc
 
 PyMODINIT_FUNC PyInit__core(void)
 {
-    if (PyType_Ready(&RoadType) < 0 || PyType_Ready(&PolylineType) < 0) return NULL;
+    if (PyType_Ready(&RoadType) < 0 || PyType_Ready(&PolylineType) < 0 || PyType_Ready(&RiderType) < 0) return NULL;
     PyObject *m = PyModule_Create(&core_module);
     if (!m) return NULL;
     Py_INCREF(&RoadType);
     Py_INCREF(&PolylineType);
+    Py_INCREF(&RiderType);
     if (PyModule_AddObject(m, "Road", (PyObject *)&RoadType) < 0 ||
-        PyModule_AddObject(m, "Polyline", (PyObject *)&PolylineType) < 0) {
+        PyModule_AddObject(m, "Polyline", (PyObject *)&PolylineType) < 0 ||
+        PyModule_AddObject(m, "Rider", (PyObject *)&RiderType) < 0) {
         Py_DECREF(m);
         return NULL;
     }
