@@ -17,7 +17,7 @@ from vei_scenario.interpreter.controllers import recorded_start_speed
 from vei_scenario.interpreter.entities import Polyline
 from vei_scenario.models.cap import BRAKE, CapParameters, CapState, ThreatView, cap_step, threat_in_corridor
 from vei_scenario.models.sfm import RIDER_TYPES, SfmParameters
-from vei_scenario.models.vehicle import Longitudinal, VehicleLimits, longitudinal_step
+from vei_scenario.models.vehicle import VehicleLimits
 
 
 class FmuModelError(ValueError):
@@ -166,10 +166,11 @@ class EgoModel(FmuModel):
         if not self.on_path:
             self.s = self.path.project(v["x"], v["y"])
             self.on_path = True
-        lon = longitudinal_step(Longitudinal(0.0, v["speed"], v["accel"]), v["a_cmd"], self.limits, h)
-        self.s = min(self.s + lon.s, self.path.length)
-        v["x"], v["y"], v["yaw"] = self.path.at_s(self.s)
-        v.update(speed=lon.v, accel=lon.a, s=self.s)
+        lim = self.limits  # the vehicle along its path: the core's vei_ego_drive (the C FMU's and the kernel's)
+        self.s, x, y, yaw, speed, accel = self.path.core.drive(
+            self.s, v["a_cmd"], lim.max_accel_mps2, lim.max_decel_mps2, lim.jerk_max_mps3, h, v["speed"], v["accel"]
+        )
+        v.update(x=x, y=y, yaw=yaw, speed=speed, accel=accel, s=self.s)
 
 
 MODEL_CLASSES = {"sfm": SfmModel, "cap": CapModel, "ego": EgoModel}

@@ -374,6 +374,25 @@ static PyObject *Polyline_project(PolylineObject *self, PyObject *const *args, P
     return PyFloat_FromDouble(vei_polyline_project(&self->p, x, y));
 }
 
+/* drive(fs, a_cmd, max_accel, max_decel, jerk_max, dt, speed, accel) -> (fs, x, y, yaw, speed, accel):
+ * vei_ego_drive along this path (the ego FMU's and the kernel's drive) */
+static PyObject *Polyline_drive(PolylineObject *self, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (!args_ok(nargs, 8, "drive")) return NULL;
+    ARG_D(0, fs);
+    ARG_D(1, a_cmd);
+    ARG_D(2, max_accel);
+    ARG_D(3, max_decel);
+    ARG_D(4, jerk);
+    ARG_D(5, dt);
+    ARG_D(6, speed);
+    ARG_D(7, accel);
+    VeiVehicleLimits lim = {max_accel, max_decel, jerk};
+    double x, y, yaw;
+    vei_ego_drive(&self->p, NULL, &fs, a_cmd, &lim, dt, &x, &y, &yaw, &speed, &accel);
+    return Py_BuildValue("(dddddd)", fs, x, y, yaw, speed, accel);
+}
+
 static PyObject *Polyline_set_exit_speed(PolylineObject *self, PyObject *const *args, Py_ssize_t nargs)
 {
     if (!args_ok(nargs, 1, "set_exit_speed")) return NULL;
@@ -403,6 +422,7 @@ static PyMethodDef Polyline_methods[] = {
     PM(at_time, "at_time(t) -> (x, y, h) at trajectory time t; on along the last heading after the end"),
     PM(s_at_time, "s_at_time(t) -> arc length at trajectory time t (continued past the end)"),
     PM(project, "project(x, y) -> arc length of the closest point (the first of equally close ones)"),
+    PM(drive, "drive(fs, a_cmd, max_accel, max_decel, jerk_max, dt, speed, accel) -> (fs, x, y, yaw, speed, accel)"),
     PM(set_exit_speed, "set_exit_speed(v): the speed kept after the end (NaN: the last segment's)"),
     {"arc_lengths", (PyCFunction)Polyline_arc_lengths, METH_NOARGS, "arc_lengths() -> cumulative arc length"},
     {NULL, NULL, 0, NULL},
