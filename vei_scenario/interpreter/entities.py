@@ -59,10 +59,9 @@ class Polyline:
 
     @property
     def end_speed(self) -> float:
-        """Speed of the last segment of a timed polyline: a replayed road user keeps it afterwards."""
-        if self.exit_speed is not None:
-            return self.exit_speed
-        return (self.s[-1] - self.s[-2]) / (self.ts[-1] - self.ts[-2])
+        """The speed a replayed road user keeps after a timed polyline: its exit speed where a shape
+        gives one, else its last segment's (the core's, as at_time continues past the end)."""
+        return self.core.end_speed()
 
     # at_time(t): pose at trajectory time t: the first vertex before the first time (the road user
     # waits where its recording starts); after the last time on along the last vertex's heading at
@@ -191,7 +190,8 @@ class Entity:
             old.done = True
 
     def box(self) -> tuple[float, float, float, float, float]:
-        """(centre x, centre y, yaw, length, width) of the bounding box."""
+        """(centre x, centre y, yaw, length, width) of the bounding box (the collision check reads the
+        same from every entity at once in C: core_module.c's entity_boxes)."""
         c, s = math.cos(self.yaw), math.sin(self.yaw)
         return self.x + c * self.center_x, self.y + s * self.center_x, self.yaw, self.length, self.width
 

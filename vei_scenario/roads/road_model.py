@@ -112,13 +112,6 @@ class Lane:
     widths: list[tuple[float, float, float, float, float]]  # (sOffset, a, b, c, d), sorted
     successor: int | None = None
     predecessor: int | None = None
-    #: the compiled road it belongs to and its lane section there (set by its Road)
-    core: _core.Road | None = field(default=None, repr=False, compare=False)
-    section: int = field(default=0, repr=False, compare=False)
-
-    def width(self, ds: float) -> float:
-        """Width ``ds`` metres into its lane section."""
-        return self.core.lane_width(self.section, self.id, ds)
 
 
 @dataclass
@@ -150,24 +143,16 @@ class Road:
 
     def __post_init__(self) -> None:
         self.core = _compiled(self)
-        for k, sec in enumerate(self.sections):
-            for lane in sec.lanes.values():
-                lane.core, lane.section = self.core, k
         # the per-step questions, answered by the compiled road (core/src/road.c)
         self.ref_pose = self.core.ref_pose  # (x, y, heading) of the reference line at s
-        self.lane_offset = self.core.lane_offset
-        self.roll = self.core.roll  # superelevation (rad): a banked road is narrower seen from above
         self.section_index = self.core.section_index
         self.lane_borders = self.core.lane_borders  # t of a lane's inner and outer border at s
         self.lane_center_t = self.core.lane_center_t
-        self.curvature = self.core.curvature  # of the reference line (1/m, positive turning left)
-        self.lane_heading = self.core.lane_heading  # heading of the curve of constant t through s
         self.world = self.core.world  # world x, y and reference heading of (s, t)
         self.lane_at = self.core.lane_at  # the lane containing t at s (None off the road)
-        # dt/ds of a lane centre within its section: where lanes widen, narrow or the lane offset
-        # changes, whoever keeps the lane heads sideways too (as esmini's entities do)
-        self.lane_drift = self.core.lane_drift
-        # a lane-keeping step in one call: (x, y, lane heading, t) at s, and the along-lane stretch
+        # a lane-keeping step in one call: (x, y, lane heading, t) at s — turned along a lane centre
+        # that runs sideways, where lanes widen or narrow, as esmini's entities are — and the
+        # along-lane stretch
         self.lane_pose = self.core.lane_pose
         self.lane_stretch = self.core.lane_stretch
         self.lane_on = self.core.lane_on  # the lane id further along (lane links, lane ends, merges)

@@ -146,42 +146,11 @@ static PyObject *Road_lane_center_t(RoadObject *self, PyObject *const *args, Py_
     return PyFloat_FromDouble(t);
 }
 
-static PyObject *Road_lane_width(RoadObject *self, PyObject *const *args, Py_ssize_t nargs)
-{
-    if (!args_ok(nargs, 3, "lane_width")) return NULL;
-    ARG_I(0, section);
-    ARG_I(1, lane);
-    ARG_D(2, ds);
-    if (section < 0 || section >= self->r.n_sec) return PyErr_Format(PyExc_IndexError, "no section %ld", section);
-    int row = vr_lane_row(&self->r, (int)section, (int)lane);
-    if (row < 0) return no_lane(lane);
-    return PyFloat_FromDouble(vr_lane_width(&self->r, row, ds));
-}
-
-#define SCALAR_OF_S(name, expr)                                                          \
-    static PyObject *Road_##name(RoadObject *self, PyObject *const *args, Py_ssize_t nargs) \
-    {                                                                                    \
-        if (!args_ok(nargs, 1, #name)) return NULL;                                      \
-        ARG_D(0, s);                                                                     \
-        return PyFloat_FromDouble(expr);                                                 \
-    }
-SCALAR_OF_S(curvature, vr_curvature(&self->r, s))
-SCALAR_OF_S(lane_offset, vr_lane_offset(&self->r, s))
-SCALAR_OF_S(roll, vr_roll(&self->r, s))
-
 static PyObject *Road_section_index(RoadObject *self, PyObject *const *args, Py_ssize_t nargs)
 {
     if (!args_ok(nargs, 1, "section_index")) return NULL;
     ARG_D(0, s);
     return PyLong_FromLong(vr_section_index(&self->r, s));
-}
-
-static PyObject *Road_lane_heading(RoadObject *self, PyObject *const *args, Py_ssize_t nargs)
-{
-    if (!args_ok(nargs, 2, "lane_heading")) return NULL;
-    ARG_D(0, s);
-    ARG_D(1, t);
-    return PyFloat_FromDouble(vr_lane_heading(&self->r, s, t));
 }
 
 static PyObject *Road_lane_at(RoadObject *self, PyObject *const *args, Py_ssize_t nargs)
@@ -192,16 +161,6 @@ static PyObject *Road_lane_at(RoadObject *self, PyObject *const *args, Py_ssize_
     int lane;
     if (!vr_lane_at(&self->r, s, t, &lane)) Py_RETURN_NONE;
     return PyLong_FromLong(lane);
-}
-
-static PyObject *Road_lane_drift(RoadObject *self, PyObject *const *args, Py_ssize_t nargs)
-{
-    if (!args_ok(nargs, 2, "lane_drift")) return NULL;
-    ARG_D(0, s);
-    ARG_I(1, lane);
-    double drift;
-    if (vr_lane_drift(&self->r, s, (int)lane, &drift) < 0) return no_lane(lane);
-    return PyFloat_FromDouble(drift);
 }
 
 static PyObject *Road_lane_pose(RoadObject *self, PyObject *const *args, Py_ssize_t nargs)
@@ -256,14 +215,8 @@ static PyMethodDef Road_methods[] = {
     M(world, "world(s, t) -> (x, y, reference heading)"),
     M(lane_borders, "lane_borders(s, lane) -> (inner t, outer t); KeyError without the lane"),
     M(lane_center_t, "lane_center_t(s, lane) -> t of the lane's centre; KeyError without the lane"),
-    M(lane_width, "lane_width(section, lane, ds) -> width ds metres into the section"),
-    M(curvature, "curvature(s) -> 1/m of the reference line, positive turning left"),
-    M(lane_offset, "lane_offset(s) -> t of the lane reference line"),
-    M(roll, "roll(s) -> superelevation in rad"),
     M(section_index, "section_index(s) -> lane section at s"),
-    M(lane_heading, "lane_heading(s, t) -> heading of the curve of constant t"),
     M(lane_at, "lane_at(s, t) -> lane id, or None off the road"),
-    M(lane_drift, "lane_drift(s, lane) -> dt/ds of the lane centre"),
     M(lane_pose, "lane_pose(s, lane, offset) -> (x, y, lane heading, t) of a road user keeping the lane"),
     M(lane_stretch, "lane_stretch(s, lane, offset) -> reference-line metres per metre along the lane"),
     M(lane_on, "lane_on(s0, s1, lane, same_road) -> the lane id at s1 (links, lane ends, merges)"),
@@ -393,6 +346,14 @@ static PyObject *Polyline_drive(PolylineObject *self, PyObject *const *args, Py_
     return Py_BuildValue("(dddddd)", fs, x, y, yaw, speed, accel);
 }
 
+static PyObject *Polyline_end_speed(PolylineObject *self, PyObject *unused)
+{
+    if (!timed_ok(self)) return NULL;
+    if (self->p.n < 2) /* a single vertex: it stays (unless an exit speed is given) */
+        return PyFloat_FromDouble(isnan(self->p.exit_speed) ? 0.0 : self->p.exit_speed);
+    return PyFloat_FromDouble(vei_polyline_end_speed(&self->p));
+}
+
 static PyObject *Polyline_set_exit_speed(PolylineObject *self, PyObject *const *args, Py_ssize_t nargs)
 {
     if (!args_ok(nargs, 1, "set_exit_speed")) return NULL;
@@ -425,6 +386,7 @@ static PyMethodDef Polyline_methods[] = {
     PM(drive, "drive(fs, a_cmd, max_accel, max_decel, jerk_max, dt, speed, accel) -> (fs, x, y, yaw, speed, accel)"),
     PM(set_exit_speed, "set_exit_speed(v): the speed kept after the end (NaN: the last segment's)"),
     {"arc_lengths", (PyCFunction)Polyline_arc_lengths, METH_NOARGS, "arc_lengths() -> cumulative arc length"},
+    {"end_speed", (PyCFunction)Polyline_end_speed, METH_NOARGS, "end_speed() -> the speed kept after the end"},
     {NULL, NULL, 0, NULL},
 };
 
@@ -717,7 +679,8 @@ static PyObject *overlapping(PyObject *mod, PyObject *arg)
 
 #define F(name, doc) {#name, (PyCFunction)(void (*)(void))name, METH_FASTCALL, doc}
 /* entity_boxes(entities) -> bytes: the bounding box (centre x, centre y, yaw, length, width) of each
- * object with x, y, yaw, center_x (reference point to box centre, along the heading), length, width */
+ * object with x, y, yaw, center_x (reference point to box centre, along the heading), length, width:
+ * Entity.box() of the interpreter for a whole list in one call (the collision check's) */
 static PyObject *entity_boxes(PyObject *mod, PyObject *seq)
 {
     PyObject *fast = PySequence_Fast(seq, "entity_boxes takes a sequence of entities");

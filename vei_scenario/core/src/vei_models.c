@@ -384,8 +384,7 @@ void vei_polyline_at_s(const VeiPolyline *p, double s, double *x, double *y, dou
     vei_polyline_at_s_seg(p, s, NULL, x, y, h);
 }
 
-/* Speed of the last segment of a timed polyline (Polyline.end_speed). */
-static double end_speed(const VeiPolyline *p) {
+double vei_polyline_end_speed(const VeiPolyline *p) {
     if (!isnan(p->exit_speed)) return p->exit_speed;
     const int e = p->n - 1;
     return (p->s[e] - p->s[e - 1]) / (p->t[e] - p->t[e - 1]);
@@ -399,7 +398,7 @@ void vei_polyline_at_time_seg(const VeiPolyline *p, double t, VeiCursor *cur, do
     }
     if (t >= ts[p->n - 1]) { /* after the recording: on along the last heading at the last speed */
         const int e = p->n - 1;
-        double d = (t - ts[e]) * end_speed(p), c, s;
+        double d = (t - ts[e]) * vei_polyline_end_speed(p), c, s;
         if (cur != NULL && cur->has_end) {
             c = cur->end_c, s = cur->end_s;
         } else {
@@ -420,7 +419,7 @@ void vei_polyline_at_time(const VeiPolyline *p, double t, double *x, double *y, 
 double vei_polyline_s_at_time_seg(const VeiPolyline *p, double t, VeiCursor *cur) {
     const double *ts = p->t;
     if (t <= ts[0]) return 0.0;
-    if (t >= ts[p->n - 1]) return p->s[p->n - 1] + (t - ts[p->n - 1]) * end_speed(p);
+    if (t >= ts[p->n - 1]) return p->s[p->n - 1] + (t - ts[p->n - 1]) * vei_polyline_end_speed(p);
     int i = seek(ts, p->n, t, cur);
     return p->s[i] + (t - ts[i]) / (ts[i + 1] - ts[i]) * (p->s[i + 1] - p->s[i]);
 }

@@ -92,6 +92,9 @@ double vei_polyline_length(const VeiPolyline *p);
 void vei_polyline_at_s(const VeiPolyline *p, double s, double *x, double *y, double *h);
 void vei_polyline_at_time(const VeiPolyline *p, double t, double *x, double *y, double *h);
 double vei_polyline_s_at_time(const VeiPolyline *p, double t);
+/* The speed kept after a timed polyline's end: its exit_speed where given, else its last segment's
+ * (a timed polyline of at least two vertices). */
+double vei_polyline_end_speed(const VeiPolyline *p);
 /* The three above for a caller moving forward along the path: a cursor (start it as VEI_CURSOR_START)
  * carries the segment from one call to the next instead of a bisection each time, and the last
  * heading's cosine and sine once computed; results are the same. */
