@@ -61,7 +61,9 @@ def main() -> int:
 
         done = 0
         with tempfile.TemporaryDirectory() as tmp:
-            for case in cases:
+            for case, result in zip(cases, results):
+                if not result.understood:  # (refused: nothing to play; counted as not done)
+                    continue
                 problems = play_case(case, make, Path(tmp))
                 done += not problems
                 if problems and not args.quiet:

@@ -153,11 +153,17 @@ def _ego_frame(result, name: str):
 def played_problems(result, layers: dict) -> list[str]:
     """Did each adversary do what its layers say, in the played run? Checked from the trajectories:
     a stop ends standing, an overtake ends ahead of the ego, a cut-in ends ahead in the ego's lane,
-    a crossing passes the ego's path, a red-light run comes within 3 m of the ego's path."""
+    a crossing passes the ego's path, a red-light run or a turn across comes within 3 m of the
+    ego's path, a road user giving way stands and is not hit, one going along the road keeps to
+    the ego's lane in its direction, a wrong-way driver is head-on on the ego's path, an oncoming
+    one faces the ego when they meet; and no background vehicle collides."""
     import numpy as np
 
     out = []
     ego = result.traces[result.ego]
+    for t, a, b in result.collisions:  # background traffic keeps to its lanes and out of the way
+        if a.startswith("Background") or b.startswith("Background"):
+            out.append(f"background collision of {a} and {b} at {t:.1f} s")
     for adv in layers["adversaries"]:
         name = adv["name"]
         if name not in result.traces:
@@ -173,12 +179,46 @@ def played_problems(result, layers: dict) -> list[str]:
             out.append(f"{name}: overtake but never ahead of the ego")
         if "cut_in" in names and not ((lon > 0) & (np.abs(lat) < 1.2)).any():
             out.append(f"{name}: cut_in but never ahead in the ego's lane")
-        if "cross_in_front" in names and not (np.sign(lat[lon > -2.0]) != np.sign(lat[0])).any():
+        behind_ok = "give_way" in names  # after giving way it crosses behind the ego
+        where = lat if behind_ok else lat[lon > -2.0]
+        if "cross_in_front" in names and not (np.sign(where) != np.sign(lat[0])).any():
             out.append(f"{name}: cross_in_front but never across the ego's path")
-        if "run_red_light" in names:
-            d = np.hypot(tr.x[:, None] - ego.x[None, :], tr.y[:, None] - ego.y[None, :]).min()
-            if d > 3.0:
-                out.append(f"{name}: run_red_light but never within 3 m of the ego's path ({d:.1f} m)")
+        for crossing in ("run_red_light", "turn_across", "turn_into"):
+            if crossing in names:
+                d = np.hypot(tr.x[:, None] - ego.x[None, :], tr.y[:, None] - ego.y[None, :]).min()
+                if d > 3.0:
+                    out.append(f"{name}: {crossing} but never within 3 m of the ego's path ({d:.1f} m)")
+        if "turn_into" in names and not ((lon > 0) & (np.abs(lat) < 1.2)).any():
+            out.append(f"{name}: turn_into but never ahead in the ego's lane")
+        heading = np.abs((tr.yaw - ego.yaw + np.pi) % (2 * np.pi) - np.pi)  # 0: same way, pi: head-on
+        if "give_way" in names:
+            hit = any({name, result.ego} == {a, b} for _, a, b in result.collisions)
+            if hit or not (np.abs(tr.speed) < 0.3).any():
+                out.append(f"{name}: give_way but {'hit the ego' if hit else 'never stood to let the ego pass'}")
+        if names[0] == "along_road":
+            facing = adv["spawn"].get("facing", "with")
+            want = np.pi if facing == "against" else 0.0
+            moving = np.abs(tr.speed) > 0.3
+            if (
+                not moving.any()
+                or np.abs(heading[moving] - want).max() > 0.35
+                or np.ptp(lat[lon > 0] if (lon > 0).any() else lat) > 1.5
+            ):
+                out.append(f"{name}: along_road but not moving along the ego's lane ({facing} the traffic)")
+        if "wrong_way" in names:
+            # on the ego's path (within 1.5 m of where the ego drives, at any time) and facing against it
+            step = max(len(ego.x) // 2000, 1)
+            ex, ey, eyaw = ego.x[::step], ego.y[::step], ego.yaw[::step]
+            d = np.hypot(tr.x[:, None] - ex[None, :], tr.y[:, None] - ey[None, :])
+            k = np.argmin(d, axis=1)
+            against = np.abs((tr.yaw - eyaw[k] + np.pi) % (2 * np.pi) - np.pi) > 2.6
+            if not ((d[np.arange(len(k)), k] < 1.5) & against & (np.abs(tr.speed) > 0.5)).any():
+                out.append(f"{name}: wrong_way but never head-on in the ego's lane")
+        if "cut_out" in names and not (np.abs(lat) > 2.5).any():
+            out.append(f"{name}: cut_out but never out of the ego's lane")
+        closest = int(np.argmin(np.hypot(tr.x - ego.x, tr.y - ego.y)))
+        if adv["spawn"].get("relation") == "oncoming" and float(adv["speed_mps"]) > 0.5 and heading[closest] < 2.6:
+            out.append(f"{name}: oncoming but driving the ego's way")
     return out
 
 

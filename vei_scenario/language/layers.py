@@ -59,6 +59,12 @@ def schema_problems(doc) -> list[str]:
                 if key in mod.PARAMETERS and not isinstance(v, (int, float)):
                     problems.append(f"{where}/config/{key}: {v!r} is not a number")
     names = [a["name"] for a in doc["adversaries"]]
+    for i, adv in enumerate(doc["adversaries"]):
+        for where, node in behaviour_nodes(adv["behaviour"], f"adversaries/{i}/behaviour"):
+            if node["behaviour"] == "cut_out" and node.get("config", {}).get("obstacle") not in set(names) - {
+                adv["name"]
+            }:
+                problems.append(f"{where}/config/obstacle: must name another adversary (what stands in the lane)")
     if len(set(names)) != len(names):
         problems.append("adversaries: names must be unique")
     if "Ego" in names:

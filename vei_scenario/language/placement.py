@@ -30,13 +30,17 @@ class Pose:
     road: str
     lane_id: int
     s: float
-    #: Lateral offset from the lane centre (m); roadside spawns stand beyond the kerb.
+    #: Lateral offset from the lane centre along the road's t axis (m); roadside spawns stand beyond the kerb.
     offset: float = 0.0
+    #: ``with`` the lane's driving direction, or ``against`` it (a wrong-way driver).
+    facing: str = "with"
 
     @property
-    def against_reference(self) -> bool:
-        """Left lanes (positive ids) drive against the road's reference direction."""
-        return self.lane_id > 0
+    def wrong_way(self) -> bool:
+        """Facing against its lane's driving direction. (A lane position's heading is its lane's
+        driving direction, so a left lane's road user faces against the road's reference line with
+        no orientation given: that is how esmini places it, and vei run with it.)"""
+        return self.facing == "against"
 
 
 def lane_id(lanes: int, lane: int) -> int:
@@ -78,6 +82,16 @@ def junction_conflict_m(info: MapInfo, ego_lane_id: int, relation: str, actor_la
 
 
 def adversary_pose(info: MapInfo, ego: Pose, spawn: dict) -> Pose:
+    pose = _lane_pose(info, ego, spawn)
+    lateral = float(spawn.get("lateral_m", 0.0))  # left of the lane's driving direction
+    facing = str(spawn.get("facing", "with"))
+    if lateral or facing != "with":
+        t = lateral if pose.lane_id < 0 else -lateral
+        pose = Pose(pose.road, pose.lane_id, pose.s, pose.offset + t, facing)
+    return pose
+
+
+def _lane_pose(info: MapInfo, ego: Pose, spawn: dict) -> Pose:
     rel = spawn["relation"]
     lon = float(spawn.get("longitudinal_m", DEFAULT_LONGITUDINAL_M.get(rel, 40.0)))
     n = info.lanes

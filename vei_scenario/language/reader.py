@@ -92,6 +92,9 @@ def _entries() -> dict[tuple[str, ...], tuple[str, object]]:
         ("behaviour", [((name, {}), words) for name, words in L.BEHAVIOUR_VERBS.items()]),
         ("behaviour", [(("change_speed", {"speed_delta_mps": d}), w) for d, w in L.SPEED_CHANGE_VERBS.items()]),
         ("behaviour", [(("run_red_light", {}), L.RED_LIGHT)]),
+        ("behaviour", [(("cut_in", {"from_side_road": 1.0}), L.SIDE_ROAD_EXITS)]),
+        ("wrong_way", [(None, L.WRONG_WAY)]),
+        ("returns", [(None, L.RETURNS)]),
         ("turn", L.TURNS),
     ]
     for slot, groups in grouped:
@@ -169,6 +172,12 @@ class _Actor:
     behaviours: list = field(default_factory=list)  # (name, cfg, criticality, link)
     group: list | None = None  # the actors named together ("two cars")
     unknown: list = field(default_factory=list)  # verbs said of it that the lexicon does not know
+    said: set = field(default_factory=set)  # every relation said of it ("towards us" and "in our lane")
+    wrong_way: bool = False  # driving against the traffic where it is
+    returns: bool = False  # it goes back (a wrong-way driver to its own side)
+    crit: str | None = None  # the criticality its clause's wording gives, verbs or not
+    parked: bool = False  # said to be parked (at the side of the road, unless put in a lane)
+    object_of: _Actor | None = None  # whose verb it is the object of ("overtakes a bus": the bus)
 
 
 def _tokens(text: str) -> list[str]:
@@ -322,7 +331,7 @@ VERB_CRITICALITY = {
     ("sprint", "across"): "dangerous",
     ("pop", "out"): "dangerous",
 }
-_POSITIONAL = ("relation", "side", "lane_side", "kerb", "kerb_side", "arm", "stationary")
+_POSITIONAL = ("relation", "side", "lane_side", "kerb", "kerb_side", "arm", "stationary", "wrong_way", "returns")
 _VERBS = ("behaviour", "turn", "unknown_verb", "ego_verb", "speed_word")
 
 
@@ -353,13 +362,27 @@ def _resolve_relation(a: _Actor, map_kind: str | None) -> str | None:
         return f"roadside_{side if side in ('left', 'right') else 'right'}"
     if a.relation and a.relation.startswith(("junction", "roadside")):
         return a.relation
+    if first == "give_way":  # lets the ego pass: where their paths meet, in a side road or at the kerb
+        if a.kerb and not vehicle:
+            return f"roadside_{side if side in ('left', 'right') else 'right'}"
+        if vehicle or junction:
+            return f"junction_{side if side in ('left', 'right') else 'right'}"
+        return f"roadside_{side if side in ('left', 'right') else 'right'}"
+    if junction and a.arm and side in ("left", "right"):
+        return f"junction_{side}"  # from the side road on the left: that arm, even if it approaches
     if a.relation == "oncoming" and junction:
         return "junction_opposite"  # at a junction what comes towards the ego comes from the opposite arm
     if a.relation == "oncoming" or (a.relation == "behind" and not (a.lane_side and first == "cut_in")):
         return a.relation
     if vehicle and a.kerb_side == "left" and first != "cross_in_front":
         return "oncoming"  # a vehicle on the far side of the road drives the other way
-    if junction and vehicle and side and (a.arm or a.stationary) and first in ("cut_in", "keep_going", None):
+    if (
+        junction
+        and vehicle
+        and side
+        and (a.arm or a.stationary)
+        and first in ("cut_in", "keep_going", "forced_turn", None)
+    ):
         return f"junction_{side}"  # waiting at the junction on the left, then pulling out
     if first == "cross_in_front" and junction:
         return f"junction_{side or 'left'}"
@@ -389,6 +412,8 @@ def read(text: str) -> Reading:
         added: list[tuple[_Actor, int]] = []  # behaviours added in this clause
         crit_here = next((m.value for m in mentions if m.slot == "criticality"), None)
         group: list[_Actor] | None = None
+        joined: list[_Actor] = []
+        passive: list[_Mention] = []
         count = 1
         expect_subject = True
         prev: _Mention | None = None
@@ -455,13 +480,35 @@ def read(text: str) -> Reading:
                         prev = m
                         continue
                     else:
-                        made = [_Actor(str(m.value)) for _ in range(count)]
+                        made = [_Actor(str(m.value), wrong_way=m.words in L.WRONG_WAY_NOUNS) for _ in range(count)]
                         for a in made:
                             a.group = made if count > 1 else None
                         actors.extend(made)
                         who = made[0]
                         group = made if count > 1 else group
                     count = 1
+                if (
+                    role == "subject"
+                    and isinstance(who, _Actor)
+                    and prev is not None
+                    and prev.slot == "conj"
+                    and prev.value == "and"
+                    and named
+                    and named[-1][1] == "subject"
+                    and isinstance(named[-1][0], _Actor)
+                    and named[-1][0] is not who
+                    and not any(x is named[-1][0] for x, _ in added)
+                ):  # "a cyclist and a pedestrian both cross": one verb for both
+                    pair = (named[-1][0].group or [named[-1][0]]) + [who]
+                    for x in pair:
+                        x.group = pair
+                    joined.extend(pair)
+                if m.prev == "by" and passive and isinstance(who, _Actor):
+                    for pm in passive:  # "the AV is tailgated by a sports car": the car tailgates
+                        _apply(pm, who, r, link, added)
+                    passive = []
+                if role == "verb" and isinstance(who, _Actor) and isinstance(clause_subject, _Actor) and after_verb:
+                    who.object_of = who.object_of or clause_subject
                 named.append((who, role))
                 if role == "subject":
                     subject = clause_subject = who
@@ -490,12 +537,18 @@ def read(text: str) -> Reading:
                 continue
             if m.slot in _VERBS:
                 target = clause_subject
+                if target == "ego" and m.slot == "behaviour" and m.prev in PASSIVE_AUXILIARIES:
+                    passive.append(m)  # said of the ego in the passive: the doer follows after "by"
+                    prev = m
+                    continue
                 if prev is not None and prev.slot == "actor" and named and named[-1][1] != "subject":
                     if m.words.split()[0].endswith("ing"):  # "an oncoming car travelling at 30": its participle
                         named[-1] = (named[-1][0], "participle")
                         target = named[-1][0]
-                if target is None:
-                    target = subject if not named and subject is not None else None
+                if target is None and not named and subject is not None:
+                    # nobody named yet in this clause: the subject goes on ("... while overtaking a
+                    # bus": the bus is what it overtakes, not who)
+                    target = clause_subject = subject
                 if target is None:
                     if m.slot == "unknown_verb":  # something does something, and neither is known
                         if not named and not r.actors:
@@ -505,7 +558,8 @@ def read(text: str) -> Reading:
                     prev = m
                     continue
                 _apply(m, target, r, link, added)
-                expect_subject = False
+                # "waits until the AV has gone past": what follows the conjunction has its own subject
+                expect_subject = m.words.split()[-1] in L.CONJUNCTIONS
                 prev = m
                 continue
             # positions, states, numbers: the actor they describe
@@ -513,7 +567,11 @@ def read(text: str) -> Reading:
                 pending.append(m)  # an adjective before its actor ("an oncoming car")
             else:
                 who = _nearest(named, m)
-                if who is None:
+                if who is None and m.slot in ("returns", "wrong_way") and isinstance(subject, _Actor):
+                    who = subject  # "..., then cuts back": what it does, said without naming it again
+                if who is None and m.slot == "speed" and not actors and r.ego_speed_mps is None:
+                    r.ego_speed_mps = m.value  # "Motorway at 110 km/h, a lorry ...": before anyone, the ego's
+                elif who is None:
                     pending.append(m)
                 else:
                     _apply(m, who, r, link, added)
@@ -522,6 +580,19 @@ def read(text: str) -> Reading:
             name, cfg, _, lk = a.behaviours[i]
             words = cfg.pop("_words", "")
             a.behaviours[i] = (name, cfg, crit_here or _verb_criticality(words), lk)
+        if crit_here:
+            if not named and isinstance(subject, _Actor) and subject.crit is None:
+                subject.crit = crit_here  # "... and then moves back with a tiny gap": still its clause
+            for who, role in named:
+                if isinstance(who, _Actor) and role in ("subject", "participle") and who.crit is None:
+                    who.crit = crit_here
+        if not named and pending and any(p.slot == "speed" for p in pending) and r.ego_speed_mps is None:
+            # "Going straight over the junction at 30 km/h while ...": a clause with nobody named is the ego's
+            r.ego_speed_mps = next(p.value for p in pending if p.slot == "speed")
+            pending = [p for p in pending if p.slot != "speed"]
+        for x in joined:
+            x.group = None
+        joined = []
     for p in pending:
         if p.slot in ("behaviour", "turn"):
             refuse.append(p.words)
@@ -530,8 +601,17 @@ def read(text: str) -> Reading:
             refuse.extend(a.unknown)
     if refuse:
         raise NotUnderstood(list(dict.fromkeys(refuse)), text)
-    if r.map_kind is None and (r.ego_route in ("left", "right") or any(a.arm for a in actors)):
-        r.map_kind = "crossroad"  # the ego turns, or someone comes out of a side road: a junction
+    for a in actors:  # "turns out of the junction": it comes from a side road
+        for _name, cfg, _c, _lk in a.behaviours:
+            if cfg.pop("from_side_road", None):
+                a.arm = True
+    vehicles_giving_way = any(
+        a.kind in ("car", "van", "truck") and any(b[0] == "give_way" for b in a.behaviours) for a in actors
+    )
+    if (r.map_kind is None and r.ego_route in ("left", "right")) or (
+        r.map_kind in (None, "straight") and (any(a.arm for a in actors) or vehicles_giving_way)
+    ):
+        r.map_kind = "crossroad"  # the ego turns, or someone comes out of or waits in a side road: a junction
     junction = r.map_kind in ("crossroad", "roundabout")
     for a in actors:
         spec = ActorSpec(a.kind)
@@ -542,7 +622,7 @@ def read(text: str) -> Reading:
             name, cfg, c, lk = behaviours[0]  # "moves over into the right lane": where to, not where from
             behaviours[0] = (name, {**cfg, "direction": 1.0 if (a.lane_side or a.side) == "left" else -1.0}, c, lk)
             a.lane_side = a.side = None
-        classes = [b[2] for b in behaviours if b[2]]
+        classes = [b[2] for b in behaviours if b[2]] or ([a.crit] if a.crit else [])
         if classes:  # the tone of what it does carries over to its unqualified behaviours
             behaviours = [(n, c, k or classes[0], lk) for n, c, k, lk in behaviours]
         if not behaviours and a.stationary:
@@ -562,9 +642,134 @@ def read(text: str) -> Reading:
         spec.behaviours = behaviours
         spec.distance_m = a.distance_m
         spec.speed_mps = 0.0 if a.stationary and a.speed_mps is None else a.speed_mps
+        _specialise(a, spec, junction)
         r.actors.append(spec)
+    for a, spec in zip(actors, r.actors):  # what an oncoming car overtakes comes towards the ego too
+        k = next((k for k, x in enumerate(actors) if x is a.object_of), None)
+        if spec.relation is None and k is not None:
+            other = r.actors[k]
+            if other.relation in ("oncoming", "junction_opposite"):
+                spec.relation = other.relation
+    _parked(actors, r.actors)
+    _cut_outs(r.actors)
+    if r.map_kind is None and any(s.relation == "junction_opposite" for s in r.actors):
+        r.map_kind = "crossroad"
     r.ignored = list(dict.fromkeys(ignored))
     return r
+
+
+VULNERABLE = ("pedestrian", "bicycle", "e-scooter")
+#: Words before a verb that make it passive ("is tailgated", "gets cut off").
+PASSIVE_AUXILIARIES = {"is", "are", "was", "were", "be", "been", "being", "get", "gets", "got", "getting"}
+
+
+def _specialise(a: _Actor, spec: ActorSpec, junction: bool) -> None:
+    """The behaviours that what was said around the verbs makes specific: a left turn by someone
+    coming the other way is a turn across the ego's path; pulling out of a side road is turning into
+    the ego's road; a vehicle driving at the ego in its lane is a wrong-way driver; a walker or rider
+    who just goes on, goes along the road."""
+    names = [b[0] for b in spec.behaviours]
+    first = names[0] if names else None
+    vehicle = a.kind in ("car", "van", "truck")
+    crit = next((b[2] for b in spec.behaviours if b[2]), a.crit)
+    link = spec.behaviours[0][3] if spec.behaviours else "sequence"
+    towards = "oncoming" in a.said or spec.relation in ("oncoming", "junction_opposite") or a.kerb_side == "left"
+    if (
+        first == "forced_turn"
+        and spec.behaviours[0][1].get("turn") == "left"
+        and (spec.relation in ("oncoming", "junction_opposite") or "oncoming" in a.said)
+    ):
+        spec.relation = "junction_opposite"
+        spec.behaviours = [("turn_across", {}, crit, link)] + spec.behaviours[1:]
+        return
+    if first == "give_way" and spec.relation in ("junction_left", "junction_right") and "follow_vehicle" in names:
+        # lets the ego pass, then follows it: it turns into the ego's road behind it
+        name, cfg, c, lk = spec.behaviours[0]
+        spec.behaviours[0] = (name, {**cfg, "turn": "right" if spec.relation == "junction_right" else "left"}, c, lk)
+        return
+    if spec.relation in ("junction_left", "junction_right") and vehicle:
+        if any(n in ("cut_in", "forced_turn") for n in names):
+            rest = [b for b in spec.behaviours if b[0] not in ("cut_in", "forced_turn", "cross_in_front", "keep_going")]
+            spec.behaviours = [("turn_into", {}, crit, link)] + rest
+            spec.speed_mps = None if not a.speed_mps else a.speed_mps
+        return
+    if (
+        vehicle
+        and not junction
+        and (a.wrong_way or ("ahead" in a.said and towards) or (towards and first in ("cut_in", "change_lane")))
+    ):
+        returns = a.returns or any(n in ("change_lane", "cut_in") for n in names[1:])
+        in_lane = a.wrong_way or "ahead" in a.said
+        cfg = {"returns": 1.0} if returns else {}
+        rest = [b for b in spec.behaviours if b[0] not in ("cut_in", "change_lane", "keep_going", "overtake")]
+        spec.behaviours = [("wrong_way", cfg, crit, link)] + rest
+        spec.relation = "ahead" if in_lane else "oncoming"
+        spec.facing = "against" if in_lane else None
+        return
+    if (
+        a.kind in VULNERABLE
+        and spec.behaviours
+        and set(names) <= {"keep_going", "keep_lane"}
+        and spec.speed_mps != 0.0
+        and spec.relation in (None, "ahead", "oncoming", "roadside_right", "roadside_left", "behind")
+        and not (junction and spec.relation is None)
+    ):
+        spec.behaviours = [("along_road", {}, crit, link)]
+        spec.facing = "against" if towards else None
+        if spec.relation == "behind":
+            spec.facing = None
+        if a.kerb or (spec.relation or "").startswith("roadside"):
+            spec.lateral_m = 1.2 if a.kerb_side == "left" else -1.2  # at the edge of the lane
+        spec.relation = "ahead" if spec.relation != "behind" else "behind"
+
+
+def _parked(actors: list[_Actor], specs: list[ActorSpec]) -> None:
+    """Vehicles parked at the side of the road (standing, said to be on a side or at the kerb, not
+    in a lane of the ego's) stand beyond the kerb, where they hide someone who crosses from there;
+    a crossing whose side is only said of the parked vehicles ("from between two parked vans on the
+    left") starts from that side."""
+    parked_sides = []
+    for a, spec in zip(actors, specs):
+        if a.kind not in ("car", "van", "truck") or spec.speed_mps != 0.0:
+            continue
+        if any(b[0] not in ("keep_going", "stop") for b in spec.behaviours):
+            continue  # it pulls out, turns ...: it stands in its lane first
+        side = a.kerb_side or a.side or a.lane_side or (spec.relation if spec.relation in ("left", "right") else None)
+        if spec.relation in ("left", "right", None) and (side or a.kerb or a.parked) and (a.parked or not a.lane_side):
+            spec.relation = f"roadside_{side or 'right'}"
+            parked_sides.append(side or "right")
+    if len(set(parked_sides)) != 1:
+        return
+    for a, spec in zip(actors, specs):
+        own_side = a.kerb_side or a.side or a.lane_side
+        crossing = spec.behaviours and spec.behaviours[0][0] in ("cross_in_front", "give_way")
+        if a.kind in VULNERABLE and crossing and own_side is None and (spec.relation or "").startswith("roadside"):
+            spec.relation = f"roadside_{parked_sides[0]}"
+
+
+def _cut_outs(specs: list[ActorSpec]) -> None:
+    """A vehicle ahead that swerves out of the lane while something stands in it (or "swerves round"
+    it) reveals that to the ego: a cut-out, with the standing actor as its obstacle. Without
+    anything standing, a swerve out is a lane change."""
+    standing = [k for k, s in enumerate(specs) if s.speed_mps == 0.0 and s.relation in (None, "ahead", "behind")]
+    for k, s in enumerate(specs):
+        if not s.behaviours or s.kind not in ("car", "van", "truck") or k in standing:
+            continue
+        name, cfg, crit, link = s.behaviours[0]
+        if name not in ("cut_out", "change_lane") and not (name == "cut_in" and s.relation in (None, "ahead")):
+            continue
+        if s.relation not in (None, "ahead", "behind"):
+            continue
+        if not standing:
+            if name == "cut_out":
+                s.behaviours[0] = ("change_lane", cfg, crit, link)
+            continue
+        s.behaviours = [("cut_out", {k2: v for k2, v in cfg.items() if k2 == "direction"}, crit, link)] + s.behaviours[
+            1:
+        ]
+        s.relation = "ahead"
+        s.obstacle = standing[0]
+        specs[standing[0]].relation = "ahead"
 
 
 def _verb_criticality(words: str) -> str | None:
@@ -590,6 +795,10 @@ def _tidy(a: _Actor) -> list:
         out.append(b)
     if a.kind in ("car", "van", "truck") and any(b[0] == "run_red_light" for b in out):
         out = [b for b in out if b[0] != "cross_in_front"]  # crossing against red is the red-light run
+    if any(b[0] == "give_way" for b in out):  # "stops at the line and waits for us": giving way stops
+        out = [
+            b for k, b in enumerate(out) if not (b[0] == "stop" and k + 1 < len(out) and out[k + 1][0] == "give_way")
+        ]
     if len(out) > 1:  # "rides ahead and then stops": going on first adds nothing
         out = [b for b in out if b[0] != "keep_going"] or out[:1]
     return out
@@ -666,8 +875,13 @@ def _apply(m, who, r, link, added) -> None:
         elif m.slot == "distance":
             a.distance_m = m.value
         elif m.slot == "relation":
+            a.said.add(m.value)
             if a.relation is None or m.value == "oncoming":
                 a.relation = m.value
+        elif m.slot == "wrong_way":
+            a.wrong_way = True
+        elif m.slot == "returns":
+            a.returns = True
         elif m.slot == "side":
             a.side = a.side or m.value
         elif m.slot == "lane_side":
@@ -680,3 +894,4 @@ def _apply(m, who, r, link, added) -> None:
             a.arm = True
         elif m.slot == "stationary":
             a.stationary = True
+            a.parked = a.parked or m.words.split()[0] in ("parked", "park")

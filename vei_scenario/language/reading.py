@@ -27,6 +27,11 @@ class ActorSpec:
     distance_m: float | None = None
     speed_mps: float | None = None
     behaviours: list[tuple[str, dict, str | None, str]] = field(default_factory=list)  # name, cfg, class, link
+    #: Sideways in its lane (left positive, m) and which way it faces (``with``/``against`` the lane).
+    lateral_m: float | None = None
+    facing: str | None = None
+    #: For a vehicle that swerves round something standing: the index of that actor in the reading.
+    obstacle: int | None = None
 
 
 @dataclass

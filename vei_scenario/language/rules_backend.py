@@ -61,7 +61,13 @@ def sample_layers(reading: Reading, text: str, seed: int) -> dict:
     behaviour_names = [b[0] for a in reading.actors for b in a.behaviours]
     kind = reading.map_kind
     if kind is None:
-        kind = "crossroad" if {"run_red_light", "forced_turn"} & set(behaviour_names) else "straight"
+        at_junction = any((a.relation or "").startswith("junction") for a in reading.actors if a.behaviours) or {
+            "run_red_light",
+            "forced_turn",
+            "turn_across",
+            "turn_into",
+        } & set(behaviour_names)
+        kind = "crossroad" if at_junction else "straight"
     lanes = reading.lanes or 2
     relations = {
         a.relation or getattr(BEHAVIOURS[a.behaviours[0][0]], "DEFAULT_SPAWN", {}).get("relation")
@@ -69,7 +75,9 @@ def sample_layers(reading: Reading, text: str, seed: int) -> dict:
         if a.behaviours
     }
     to_right = any(
-        b[0] == "change_lane" and float(b[1].get("direction", 1.0)) < 0 for a in reading.actors for b in a.behaviours
+        b[0] in ("change_lane", "cut_out") and float(b[1].get("direction", 1.0)) < 0
+        for a in reading.actors
+        for b in a.behaviours
     )
     if (("right" in relations and "left" not in relations) or to_right) and reading.lanes is None:
         lanes = max(lanes, 2)  # (someone on the ego's right, or moving over to the right: a lane there)
@@ -116,7 +124,9 @@ def sample_layers(reading: Reading, text: str, seed: int) -> dict:
         given_speed = spec.speed_mps
         if given_speed is not None and given_speed < 0:  # a speed word: a factor on the default speed
             given_speed = _default_speed(spec.kind, relation, ego_speed) * -given_speed
-        if given_speed is None and relation in ("junction_left", "junction_right"):
+        if given_speed is None and first.NAME == "wrong_way":
+            given_speed = _u(rng, 10.0, 20.0)
+        if given_speed is None and relation in ("junction_left", "junction_right") and first.NAME not in WAITING:
             given_speed = _u(rng, 9.0, 13.0)
         if (
             given_speed
@@ -125,13 +135,29 @@ def sample_layers(reading: Reading, text: str, seed: int) -> dict:
             and "crossing_speed_mps" in first.PARAMETERS
         ):
             first_cfg["crossing_speed_mps"] = round(given_speed, 3)  # a crosser's stated speed is its crossing speed
+        if first.NAME == "along_road" and spec.lateral_m is None and spec.facing is None:
+            spec_lateral = _u(rng, -0.9, 0.0)  # somewhere in the kerb half of the lane
+        else:
+            spec_lateral = spec.lateral_m
         spawn, speed = place_adversary(
             spec.kind, relation, first.NAME, first_cfg, ego, lanes, given_speed, spec.distance_m
         )
+        if spec_lateral:
+            spawn["lateral_m"] = round(spec_lateral, 3)
+        facing = spec.facing or getattr(first, "DEFAULT_SPAWN", {}).get("facing")
+        if first.NAME == "wrong_way" and relation == "oncoming":
+            facing = None  # it starts in its own lane and drifts over
+        if facing == "against":
+            spawn["facing"] = "against"
+        if first.NAME == "along_road" and spec.distance_m is None:
+            closing = ego_speed + speed if facing == "against" else max(ego_speed - speed, 1.0)
+            spawn["longitudinal_m"] = round(min(max(closing * _u(rng, 4.0, 6.0), 20.0), 200.0), 3)
         speed = min(max(speed, 0.0), MAX_SPEED_MPS)  # (within what the layers hold)
         adversaries.append(
             {"name": name, "type": spec.kind, "spawn": spawn, "speed_mps": round(speed, 3), "behaviour": topology}
         )
+    _place_obstacles(reading, adversaries, ego_speed)
+    _place_occluders(reading, adversaries)
     layers = {
         "format": "vei-layers/1",
         "description": text,
@@ -139,7 +165,15 @@ def sample_layers(reading: Reading, text: str, seed: int) -> dict:
         "intent": intent,
         "duration_s": max(
             MIN_DURATION_S,
-            min(120.0, round(max((topology_time_s(a["behaviour"], ego_speed) for a in adversaries), default=0) + 5, 1)),
+            min(
+                120.0,
+                round(
+                    max((topology_time_s(a["behaviour"], ego_speed) for a in adversaries), default=0)
+                    + _approach_s(ego, adversaries)
+                    + 5,
+                    1,
+                ),
+            ),
         ),
         "rate_hz": DEFAULT_RATE_HZ,
         "environment": {
@@ -157,6 +191,80 @@ def sample_layers(reading: Reading, text: str, seed: int) -> dict:
     return layers
 
 
+#: Behaviours that start standing at a junction's stop line and set off when the ego comes.
+WAITING = ("turn_across", "turn_into", "give_way")
+#: Behaviours whose timing is the ego's arrival at the junction.
+AT_JUNCTION = ("run_red_light", "turn_across", "turn_into", "give_way", "forced_turn")
+
+
+def _approach_s(ego: dict, adversaries: list[dict]) -> float:
+    """The ego's time to reach its junction, when something there waits for it (s): the run must
+    last that long on top of the behaviours' own times."""
+    if "distance_m" not in ego or not any(
+        n["behaviour"] in AT_JUNCTION for a in adversaries for _, n in behaviour_nodes(a["behaviour"])
+    ):
+        return 0.0
+    return float(ego["distance_m"]) / max(float(ego["speed_mps"]), 1.0)
+
+
+def _place_obstacles(reading: Reading, adversaries: list[dict], ego_speed: float) -> None:
+    """A lead that swerves round something standing (``cut_out``) names it, and the standing actor
+    is put far enough ahead of the lead for the swerve to come when its criticality says."""
+    from vei_scenario.language.behaviours import cut_out
+
+    for spec, adv in zip(reading.actors, adversaries):
+        if spec.obstacle is None or not 0 <= spec.obstacle < len(adversaries):
+            continue
+        obstacle = adversaries[spec.obstacle]
+        for _, node in behaviour_nodes(adv["behaviour"]):
+            if node["behaviour"] != "cut_out":
+                continue
+            cfg = node["config"]
+            cfg["obstacle"] = obstacle["name"]
+            lead_lon = float(adv["spawn"].get("longitudinal_m", 30.0))
+            lead_len, obs_len = TYPES[adv["type"]][0][0], TYPES[obstacle["type"]][0][0]
+            lead_gap = max(lead_lon - (lead_len + TYPES["car"][0][0]) / 2, 0.0)
+            reveal = cut_out.reveal_gap(ego_speed, float(adv["speed_mps"]), lead_gap, lead_len, cfg)
+            # the lead drives on for about three seconds before it swerves
+            lon = lead_lon + (lead_len + obs_len) / 2 + reveal + float(adv["speed_mps"]) * 3.0
+            obstacle["spawn"] = {"relation": "ahead", "longitudinal_m": round(min(lon, 250.0), 3)}
+            obstacle["speed_mps"] = 0.0
+
+
+def _place_occluders(reading: Reading, adversaries: list[dict]) -> None:
+    """Vehicles parked at the kerb a road user crosses from stand just before and after its
+    crossing point (seen from the ego), so that they hide it until it steps out."""
+    crossers = [
+        a
+        for a in adversaries
+        if a["spawn"]["relation"].startswith("roadside") and TYPES[a["type"]][1] in ("pedestrian", "bicycle")
+    ]
+    for side in ("roadside_right", "roadside_left"):
+        at = [float(a["spawn"]["longitudinal_m"]) for a in crossers if a["spawn"]["relation"] == side]
+        parked = [
+            (spec, a)
+            for spec, a in zip(reading.actors, adversaries)
+            if a["spawn"]["relation"] == side and TYPES[a["type"]][1] not in ("pedestrian", "bicycle")
+        ]
+        if not at:
+            continue
+        before, after = at[0], at[0]
+        for k, (spec, a) in enumerate(parked):
+            if spec.distance_m is not None:
+                continue  # where the text puts it
+            half = TYPES[a["type"]][0][0] / 2 + OCCLUDER_GAP_M
+            if k % 2 == 0:
+                before -= half
+                a["spawn"]["longitudinal_m"] = round(before, 3)
+                before -= half
+            else:
+                after += half
+                a["spawn"]["longitudinal_m"] = round(after, 3)
+                after += half
+
+
+#: Free space between a parked occluder and the crossing it hides (m).
+OCCLUDER_GAP_M = 0.8
 #: The fastest speed the layers hold (m/s).
 MAX_SPEED_MPS = 45.0
 #: The run lasts at least this long (the paper's 15 s), longer when the behaviours need it.
@@ -182,8 +290,14 @@ def behaviour_time_s(name: str, cfg: dict, ego_speed: float) -> float:
         return v("delay_s") + abs(v("speed_delta_mps")) / max(v("rate_mps2"), 0.2) + 1.0
     if name == "change_lane":
         return v("delay_s") + v("lane_change_s") + 1.0
-    if name in ("follow_vehicle", "keep_going", "keep_lane"):
+    if name in ("follow_vehicle", "keep_going", "keep_lane", "along_road"):
         return v("hold_s") or 4.0
+    if name == "give_way":
+        return v("clear_s") + 8.0
+    if name == "wrong_way":
+        return BEHAVIOURS[name].APPROACH_S + v("return_ttc_s") + 2.0
+    if name == "cut_out":
+        return 3.0 + v("reveal_ttc_s") + 3.0
     return 8.0  # (crossings and red-light runs are timed to meet the ego within a few seconds)
 
 
@@ -220,6 +334,39 @@ def place_adversary(
     lengths = TYPES["car"][0][0] + TYPES[kind][0][0]
     spawn: dict[str, object] = {"relation": relation}
     out_speed = _default_speed(kind, relation, ego_speed) if speed is None else speed
+    if behaviour_name in WAITING and relation.startswith("junction"):
+        from vei_scenario.language.behaviours.junction_entry import STOP_LINE_M
+
+        go_key = {"turn_across": "turn_speed_mps", "turn_into": "speed_mps", "give_way": "go_speed_mps"}[behaviour_name]
+        length = TYPES[kind][0][0]
+        if speed is not None and speed > 0.5 and behaviour_name == "give_way":
+            # it rolls up to its stop line and brakes there at about 2 m/s²
+            spawn["longitudinal_m"] = round(min(STOP_LINE_M + length / 2 + speed * speed / 4.0, ARM_LENGTH_M - 5), 3)
+            return spawn, round(speed, 3)
+        if speed is not None and speed > 0.5:
+            cfg.setdefault(go_key, round(speed, 3))  # its stated speed is the speed it goes at
+        spawn["longitudinal_m"] = round(STOP_LINE_M + length / 2, 3)
+        return spawn, 0.0
+    if relation.startswith("roadside") and TYPES[kind][1] not in ("pedestrian", "bicycle"):
+        # parked beyond the kerb (placed by the road user it hides, if any: _place_occluders)
+        spawn["longitudinal_m"] = distance_m if distance_m is not None else 40.0
+        return spawn, 0.0
+    if relation.startswith("roadside") and behaviour_name == "give_way":
+        spawn["longitudinal_m"] = round(max(30.0, ego_speed * 3.0), 3) if distance_m is None else distance_m
+        return spawn, 0.0
+    if behaviour_name == "along_road":
+        from vei_scenario.language.behaviours.along_road import PACE_MPS
+
+        pace = PACE_MPS.get(kind, 4.0) if speed is None else speed
+        spawn["relation"] = "ahead"
+        spawn["longitudinal_m"] = distance_m if distance_m is not None else 40.0
+        return spawn, round(pace, 3)
+    if behaviour_name == "wrong_way":
+        v = ego_speed if speed is None else speed
+        spawn["relation"] = "oncoming" if relation == "oncoming" else "ahead"
+        lon = distance_m if distance_m is not None else mod.place(ego_speed, lengths, cfg, v)
+        spawn["longitudinal_m"] = round(min(lon, 250.0), 3)
+        return spawn, round(v, 3)
     if relation in ("junction_left", "junction_right"):
         spawn["longitudinal_m"] = round(_junction_spawn(ego, lanes, relation, out_speed, ego_speed, cfg), 3)
     elif relation.startswith("roadside"):
@@ -302,6 +449,12 @@ def background(rng: random.Random, layers: dict) -> list[dict]:
             used.add(ego_lane - 1)
         elif rel == "oncoming":
             used.add(1)
+        for _, node in behaviour_nodes(adv["behaviour"]):
+            if node["behaviour"] in ("change_lane", "cut_out"):  # (the lane it moves into)
+                step = 1 if float(node.get("config", {}).get("direction", 1.0)) >= 0 else -1
+                used.add(ego_lane + step if ego_lane + step != 0 else ego_lane + 2 * step)
+        if any(node["behaviour"] == "wrong_way" for _, node in behaviour_nodes(adv["behaviour"])):
+            used.update(range(ego_lane, 2))  # (the lanes it crosses and swerves back to)
         if any(node["behaviour"] == "overtake" for _, node in behaviour_nodes(adv["behaviour"])):
             used.add(ego_lane + 1 if ego_lane != -1 else 1)
     free = [k for k in range(1, lanes + 1) if k not in used]
@@ -313,6 +466,26 @@ def background(rng: random.Random, layers: dict) -> list[dict]:
     # away from a junction they drive towards the arm's open end: start far enough from it
     low_s, v_max = (length - 110.0, 12.0) if junction else (10.0, 15.0)
     speeds = {k: _u(rng, 9.0, v_max) for k in free}
+    duration = float(layers.get("duration_s", MIN_DURATION_S))
+
+    # where road users cross the road (s on the ego's road): background traffic never passes there
+    ego_layers = layers["ego"]
+    ego_s = (length - float(ego_layers["distance_m"])) if "distance_m" in ego_layers else min(120.0, length / 3)
+    crossings = [
+        ego_s + float(a["spawn"].get("longitudinal_m", 0.0))
+        for a in layers["adversaries"]
+        if a["spawn"]["relation"].startswith("roadside") or a["spawn"]["relation"] == "ahead" and a["speed_mps"] == 0
+    ]
+
+    def passes_crossing(lane: int, s: float, v: float) -> bool:
+        end = s - v * duration if lane > 0 else s + v * duration
+        lo, hi = min(s, end) - CROSSING_CLEARANCE_M, max(s, end) + CROSSING_CLEARANCE_M
+        return any(lo <= c <= hi for c in crossings)
+
+    def room(lane: int, s: float) -> float:
+        """Road left before its end in its driving direction (left lanes drive towards s = 0)."""
+        return s if lane > 0 else length - s
+
     for _ in range(count * 10):
         if len(out) == count or not free:
             break
@@ -320,11 +493,27 @@ def background(rng: random.Random, layers: dict) -> list[dict]:
         s = _u(rng, low_s, length - 10.0)
         if any(abs(s - o) < BACKGROUND_SPACING_M for o in taken.get(lane, [])):
             continue
+        if (room(lane, s) - ROAD_END_MARGIN_M) / duration < MIN_BACKGROUND_SPEED_MPS:
+            continue  # it would reach the road's end within the run: the next draw
+        if passes_crossing(lane, s, speeds[lane]):
+            continue  # it would drive through someone crossing the road
         taken.setdefault(lane, []).append(s)
-        out.append(
-            {"road": "1", "lane": lane, "s_m": s, "speed_mps": speeds[lane], "type": rng.choice(["car", "car", "van"])}
-        )
+        out.append({"road": "1", "lane": lane, "s_m": s, "speed_mps": 0.0, "type": rng.choice(["car", "car", "van"])})
+    # one speed per lane (nobody catches up with the one ahead), slow enough that nobody reaches the
+    # road's end before the run is over (it would stand there, and the next would run into it)
+    for lane, ss in taken.items():
+        lane_speed = min([speeds[lane]] + [(room(lane, s) - ROAD_END_MARGIN_M) / duration for s in ss])
+        for v in out:
+            if v["lane"] == lane:
+                v["speed_mps"] = round(lane_speed, 3)
     return out
+
+
+#: Background vehicles keep this far from where someone crosses the road or stands in a lane (m).
+CROSSING_CLEARANCE_M = 15.0
+#: Background vehicles stop this far short of the road's end at the latest (m), and drive at least this fast (m/s).
+ROAD_END_MARGIN_M = 15.0
+MIN_BACKGROUND_SPEED_MPS = 5.0
 
 
 def layers_from_text(text: str, seed: int) -> dict:

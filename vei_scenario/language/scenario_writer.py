@@ -20,6 +20,7 @@ Structure of a written scenario:
 from __future__ import annotations
 
 import datetime as dt
+import itertools
 import math
 import tempfile
 import xml.etree.ElementTree as ET
@@ -98,7 +99,7 @@ def _properties(values: dict[str, object]) -> xosc.Properties:
 
 
 def _lane_position(pose: placement.Pose) -> xosc.LanePosition:
-    orient = xosc.Orientation(h=math.pi, reference=xosc.ReferenceContext.relative) if pose.against_reference else None
+    orient = xosc.Orientation(h=math.pi, reference=xosc.ReferenceContext.relative) if pose.wrong_way else None
     args = (round(pose.s, 3), round(pose.offset, 3), pose.lane_id, pose.road)
     return xosc.LanePosition(*args, orient) if orient is not None else xosc.LanePosition(*args)
 
@@ -122,10 +123,11 @@ def _environment(layers: dict) -> xosc.EnvironmentAction:
 
 
 class _Anchor:
-    """What the next element of a sequence waits for: an event in a state, after a delay."""
+    """What the next element of a sequence waits for: an event in one of ``states`` (each its own
+    condition group), for ``delay`` seconds."""
 
-    def __init__(self, event: str, state, delay: float = 0.0) -> None:
-        self.event, self.state, self.delay = event, state, delay
+    def __init__(self, event: str, states: tuple, delay: float = 0.0) -> None:
+        self.event, self.states, self.delay = event, states, delay
 
 
 def _condition(c: Condition, actor: str, name: str):
@@ -133,6 +135,11 @@ def _condition(c: Condition, actor: str, name: str):
         rule = xosc.Rule.lessThan if c.kind == "ego_within" else xosc.Rule.greaterThan
         cond = xosc.RelativeDistanceCondition(
             round(c.value, 3), rule, xosc.RelativeDistanceType.longitudinal, actor, freespace=True
+        )
+        return xosc.EntityTrigger(name, 0, xosc.ConditionEdge.none, cond, c.entity)
+    if c.kind == "ego_near":
+        cond = xosc.RelativeDistanceCondition(
+            round(c.value, 3), xosc.Rule.lessThan, xosc.RelativeDistanceType.euclidianDistance, actor, freespace=False
         )
         return xosc.EntityTrigger(name, 0, xosc.ConditionEdge.none, cond, c.entity)
     if c.kind == "time_gap":
@@ -176,31 +183,34 @@ class _StoryBuilder:
                     conditions.append(Condition("ego_within", float(start["ego_within_m"])))
                 if "ego_time_gap_s" in start:
                     conditions.append(Condition("time_gap", float(start["ego_time_gap_s"])))
-            group = xosc.ConditionGroup()
-            k = 0
-            for anchor in prev:
-                k += 1
-                cond = xosc.StoryboardElementStateCondition(
-                    xosc.StoryboardElementType.event, anchor.event, anchor.state
-                )
-                group.add_condition(
-                    xosc.ValueTrigger(f"{name}_after{k}", round(anchor.delay + delay, 3), xosc.ConditionEdge.none, cond)
-                )
-            for c in conditions:
-                k += 1
-                trig = _condition(c, self.actor, f"{name}_when{k}")
-                group.add_condition(trig)
-            if k == 0 or (not prev and delay > 0):
-                cond = xosc.SimulationTimeCondition(round(delay, 3), xosc.Rule.greaterOrEqual)
-                group.add_condition(xosc.ValueTrigger(f"{name}_at", 0, xosc.ConditionEdge.none, cond))
             trigger = xosc.Trigger("start")
-            trigger.add_conditiongroup(group)
+            # a held step is over hold_s after it started, whether its actions have ended by then
+            # (a speed reached) or go on (following): its state then is complete or still running.
+            # States last, so the step after it may wait on conditions of its own as well.
+            choices = [[(a, s) for s in a.states] for a in prev]
+            for g, combo in enumerate(itertools.product(*choices)):
+                group = xosc.ConditionGroup()
+                k = 0
+                for anchor, state in combo:
+                    k += 1
+                    cond = xosc.StoryboardElementStateCondition(xosc.StoryboardElementType.event, anchor.event, state)
+                    when = round(anchor.delay + delay, 3)
+                    label = f"{name}_after{k}" + (f"_{g + 1}" if g else "")
+                    group.add_condition(xosc.ValueTrigger(label, when, xosc.ConditionEdge.none, cond))
+                for c in conditions:
+                    k += 1
+                    group.add_condition(_condition(c, self.actor, f"{name}_when{k}" + (f"_{g + 1}" if g else "")))
+                if k == 0 or (not prev and delay > 0):
+                    cond = xosc.SimulationTimeCondition(round(delay, 3), xosc.Rule.greaterOrEqual)
+                    group.add_condition(xosc.ValueTrigger(f"{name}_at", 0, xosc.ConditionEdge.none, cond))
+                trigger.add_conditiongroup(group)
             event.add_trigger(trigger)
             self.maneuver.add_event(event)
+            done, running = xosc.StoryboardElementState.completeState, xosc.StoryboardElementState.runningState
             if step.hold_s is not None:
-                prev = [_Anchor(name, xosc.StoryboardElementState.startTransition, step.hold_s)]
+                prev = [_Anchor(name, (done, running), step.hold_s)]
             else:
-                prev = [_Anchor(name, xosc.StoryboardElementState.completeState)]
+                prev = [_Anchor(name, (done,))]
         return prev
 
 
@@ -288,9 +298,14 @@ def write_scenario(layers: dict, stem: str) -> WrittenScenario:
             exits=info.exits,
             junction_end_s_m=info.feature_s_m,
             actor_max_accel_mps2=TYPES[kind][4],
+            ego_road=ego_pose.road,
+            ego_s_m=ego_pose.s,
+            actor_length_m=TYPES[kind][0][0],
+            actor_exits=_own_exits(info, pose.road),
+            facing=pose.facing,
         )
         controller = None
-        if adv["spawn"]["relation"].startswith("roadside"):
+        if adv["spawn"]["relation"].startswith("roadside") and TYPES[kind][1] in ("pedestrian", "bicycle"):
             net = net or _road_network(xodr_bytes)  # (only crossings ask the road model)
             road = net.road(pose.road)
             t0 = road.lane_center_t(pose.s, pose.lane_id) + pose.offset
@@ -353,6 +368,16 @@ def write_scenario(layers: dict, stem: str) -> WrittenScenario:
         creation_date=dt.datetime(1970, 1, 1),
     )
     return WrittenScenario(render(scenario), xodr_bytes, [a["name"] for a in layers["adversaries"]])
+
+
+def _own_exits(info: maps.MapInfo, road: str) -> dict[str, str]:
+    """The exits of a four-arm junction seen by a road user entering it from arm ``road`` (arms are
+    numbered anticlockwise from the ego's, so straight on is two arms on, left one back, right one on)."""
+    arms = sorted(set(info.entrances.values()) | {info.ego_road})
+    if not info.exits or road not in arms or len(arms) != 4:
+        return {}
+    k = arms.index(road)
+    return {"straight": arms[(k + 2) % 4], "left": arms[(k - 1) % 4], "right": arms[(k + 1) % 4]}
 
 
 def _step() -> xosc.TransitionDynamics:

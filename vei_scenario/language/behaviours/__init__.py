@@ -11,18 +11,24 @@ from __future__ import annotations
 from types import ModuleType
 
 from vei_scenario.language.behaviours import (
+    along_road,
     change_lane,
     change_speed,
     cross_in_front,
     cut_in,
+    cut_out,
     follow_vehicle,
     forced_turn,
+    give_way,
     keep_going,
     keep_lane,
     overtake,
     run_red_light,
     stop,
     sudden_stop,
+    turn_across,
+    turn_into,
+    wrong_way,
 )
 
 BEHAVIOURS: dict[str, ModuleType] = {
@@ -40,6 +46,12 @@ BEHAVIOURS: dict[str, ModuleType] = {
         cross_in_front,
         stop,
         keep_going,
+        turn_across,
+        turn_into,
+        give_way,
+        along_road,
+        wrong_way,
+        cut_out,
     )
 }
 

@@ -35,7 +35,10 @@ class Condition:
     kind: ``ego_within`` (the free-space longitudinal distance between the ego and the actor below
     ``value`` m), ``ego_beyond`` (above it; OpenSCENARIO's distance has no sign, so a behaviour
     passes "alongside" first to know which side it is on), ``time_gap`` (the ego's time headway to
-    the actor below ``value`` s)."""
+    the actor below ``value`` s), ``ego_near`` (the straight-line distance between the ego's and the
+    actor's reference points below ``value`` m: for road users on different roads, e.g. one waiting
+    in a side road). ``entity`` names the other party when it is not the ego (a lead that swerves
+    round a stopped car watches that car)."""
 
     kind: str
     value: float
@@ -79,6 +82,18 @@ class ActorContext:
     trajectories: dict[str, xosc.Trajectory] = field(default_factory=dict)
     #: The actor's Performance maxAcceleration: a speed it is told to reach takes at least v / a.
     actor_max_accel_mps2: float = 0.0
+    #: The ego's road and its s on it (m); the actor's length (m).
+    ego_road: str = ""
+    ego_s_m: float = 0.0
+    actor_length_m: float = 4.6
+    #: A junction approach's exits seen by the actor itself (left, right, straight → road id).
+    actor_exits: dict[str, str] = field(default_factory=dict)
+    #: Which way the actor faces: ``with`` its lane's driving direction, or ``against`` it.
+    facing: str = "with"
+
+    def ego_to_junction_m(self) -> float:
+        """The ego's distance to its junction entry (m), 0 on a map without one."""
+        return max(0.0, (self.junction_end_s_m or 0.0) - self.ego_s_m) if self.junction_end_s_m else 0.0
 
     def max_decel(self, wanted: float) -> float:
         """``wanted`` bounded by what the road's friction allows."""
@@ -106,10 +121,13 @@ def lane_change_to(lane_id: int, duration: float) -> xosc.AbsoluteLaneChangeActi
     return xosc.AbsoluteLaneChangeAction(lane_id, dyn)
 
 
-def route_action(ctx: ActorContext, turn: str, exit_s_m: float = 40.0) -> xosc.AssignRouteAction:
+def route_action(
+    ctx: ActorContext, turn: str, exit_s_m: float = 40.0, own_view: bool = False
+) -> xosc.AssignRouteAction:
     """A route from the actor's position through the junction to the exit on side ``turn``
-    (straight, left, right): it leaves on the exit arm's lanes that drive away from the junction."""
-    exit_road = ctx.exits.get(turn)
+    (straight, left, right; seen by the ego, or by the actor itself with ``own_view``): it leaves on
+    the exit arm's lanes that drive away from the junction."""
+    exit_road = (ctx.actor_exits if own_view else ctx.exits).get(turn)
     if exit_road is None:
         raise ValueError(f"{ctx.actor}: the {ctx.map_kind} map has no {turn} exit")
     route = xosc.Route(f"{ctx.actor}_{turn}")
@@ -124,3 +142,15 @@ def value(cfg: dict, params: dict[str, Parameter], name: str) -> float:
     p = params[name]
     v = float(cfg.get(name, p.default))
     return min(max(v, p.low), p.high)
+
+
+def time_to_cover(distance_m: float, speed_mps: float, accel_mps2: float, start_mps: float = 0.0) -> float:
+    """Time (s) to travel ``distance_m`` starting at ``start_mps`` and accelerating at ``accel_mps2``
+    up to ``speed_mps`` (held from then on)."""
+    v0, v, a = max(start_mps, 0.0), max(speed_mps, 0.1), max(accel_mps2, 0.1)
+    if v0 >= v:
+        return distance_m / v0 if v0 > 0 else float("inf")
+    ramp_m = (v * v - v0 * v0) / (2 * a)
+    if distance_m <= ramp_m:
+        return (-v0 + (v0 * v0 + 2 * a * distance_m) ** 0.5) / a
+    return (v - v0) / a + (distance_m - ramp_m) / v

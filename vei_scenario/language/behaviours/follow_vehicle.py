@@ -23,6 +23,10 @@ PROFILES = {
 }
 
 
+#: How much faster than the ego (or its own start speed) a follower may drive to close in (m/s).
+CLOSING_MPS = 6.0
+
+
 def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
     target = str(cfg.get("target", ctx.ego))
     action = xosc.LongitudinalDistanceAction(
@@ -31,7 +35,8 @@ def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
         continuous=True,
         max_acceleration=value(cfg, PARAMETERS, "max_accel_mps2"),
         max_deceleration=ctx.max_decel(value(cfg, PARAMETERS, "max_decel_mps2")),
-        max_speed=45.0,
+        # closing in, not racing: a few m/s above the faster of the two
+        max_speed=round(min(45.0, max(ctx.ego_speed_mps, ctx.actor_speed_mps) + CLOSING_MPS), 3),
         timeGap=round(value(cfg, PARAMETERS, "headway_s"), 3),
     )
     return [Step("follow", [action], hold_s=value(cfg, PARAMETERS, "hold_s"))]

@@ -32,15 +32,15 @@ PROFILES = {
 
 def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
     dur = value(cfg, PARAMETERS, "lane_change_s")
-    # lane ids of right-hand traffic: the lane to the left of -k is -k+1; from -1 it is the oncoming +1
-    left = ctx.actor_lane_id + 1 if ctx.actor_lane_id != -1 else 1
+    # it passes in the lane left of the ego (right-hand traffic: left of -k is -k+1, of -1 the
+    # oncoming +1); one already there only speeds up
+    left = ctx.ego_lane_id + 1 if ctx.ego_lane_id != -1 else 1
     fast = ctx.ego_speed_mps + value(cfg, PARAMETERS, "speed_gain_mps")
+    pull_out = [speed_action(fast, rate=2.5)]
+    if ctx.actor_lane_id != left:
+        pull_out.insert(0, lane_change_to(left, dur))
     return [
-        Step(
-            "pull_out",
-            [lane_change_to(left, dur), speed_action(fast, rate=2.5)],
-            delay_s=value(cfg, PARAMETERS, "delay_s"),
-        ),
+        Step("pull_out", pull_out, delay_s=value(cfg, PARAMETERS, "delay_s")),
         # alongside first (free space gap zero), then far enough ahead: the distance condition has no sign
         Step("alongside", [speed_action(fast, rate=2.5)], conditions=[Condition("ego_within", 0.01)]),
         Step(

@@ -1,0 +1,21 @@
+"""along the road: a pedestrian, cyclist or e-scooter rider moving along the ego's road in the ego's
+lane or at its kerb edge, in the ego's direction or towards it (the Euro NCAP longitudinal cases
+CPLA and CBLA). Where it is in the lane is its spawn's ``lateral_m``, which way it faces the
+spawn's ``facing``; here it holds its speed for ``hold_s``."""
+
+from __future__ import annotations
+
+from vei_scenario.language.behaviours.base import ActorContext, Parameter, Step, speed_action, value
+
+NAME = "along_road"
+AGENT = "route follower"
+SUMMARY = "Walk or ride along the ego's lane (with the traffic or towards it) at its own pace."
+DEFAULT_SPAWN = {"relation": "ahead"}
+PARAMETERS = {"hold_s": Parameter(8.0, 0.0, 120.0, "how long before what follows (s)")}
+PROFILES: dict[str, dict[str, tuple[float, float]]] = {}
+#: Speeds when the text gives none (m/s): walking, cycling, riding an e-scooter.
+PACE_MPS = {"pedestrian": 1.4, "bicycle": 4.5, "e-scooter": 4.0}
+
+
+def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
+    return [Step("along_road", [speed_action(ctx.actor_speed_mps)], hold_s=value(cfg, PARAMETERS, "hold_s"))]

@@ -1,0 +1,67 @@
+"""What the behaviours that enter a junction from another approach share: the actor stands at (or
+rolls up to) its stop line, waits for the ego to come close, and then goes through the junction
+along a route, timed so that the ego reaches the point where their paths meet ``arrival_gap_s``
+after the actor does (negative: before it).
+
+Geometry of the generated crossroad (:mod:`vei_scenario.language.maps`): four arms meet at right
+angles, each ends :data:`~vei_scenario.language.maps.JUNCTION_RADIUS_M` from the centre. The ego's
+distance from the actor is measured in a straight line between the two (``ego_near``), since they
+are on different roads; the distances to the conflict point are the arms' closed forms below (a
+turn's arc is taken as the straight legs it joins, which is within a few metres: the criticality
+classes' ranges are wider than that)."""
+
+from __future__ import annotations
+
+import math
+
+from vei_scenario.language.behaviours.base import (
+    ActorContext,
+    Condition,
+    Step,
+    route_action,
+    speed_action,
+    time_to_cover,
+)
+from vei_scenario.language.maps import JUNCTION_RADIUS_M, LANE_WIDTH_M
+
+#: Where a waiting road user stands: this far before its arm's end (m).
+STOP_LINE_M = 2.0
+
+
+def lane_offset_m(lane_id: int) -> float:
+    """Distance of a lane's centre from its road's centre line (m)."""
+    return (abs(lane_id) - 0.5) * LANE_WIDTH_M
+
+
+def ego_trigger_distance_m(
+    ctx: ActorContext, actor_path_m: float, ego_path_m: float, go_speed: float, accel: float, arrival_gap_s: float
+) -> float:
+    """Straight-line ego–actor distance at which the actor sets off: the actor needs
+    ``actor_path_m`` (from standing, at ``accel`` up to ``go_speed``) to the conflict point, the ego
+    ``ego_path_m`` beyond its junction entry plus what it still has before it."""
+    t_actor = time_to_cover(actor_path_m, go_speed, accel, ctx.actor_speed_mps)
+    ego_before_conflict = max(ctx.ego_speed_mps * (t_actor + arrival_gap_s), 0.0)
+    # the ego on its approach, the actor at its stop line on another arm: both about the centre
+    r = JUNCTION_RADIUS_M
+    ego_from_centre = max(ego_before_conflict - ego_path_m, -r) + r
+    actor_from_centre = r + STOP_LINE_M
+    e, a = lane_offset_m(ctx.ego_lane_id), lane_offset_m(ctx.actor_lane_id)
+    # the ego comes from the east on the north half (x = ego_from_centre, y = e); the arm ahead of it
+    # comes from the west (its lanes on the south half), the one on its left from the south (east
+    # half), the one on its right from the north (west half)
+    if ctx.actor_road == ctx.exits.get("straight"):
+        ax, ay = -actor_from_centre, -a
+    elif ctx.actor_road == ctx.exits.get("left"):
+        ax, ay = a, -actor_from_centre
+    else:
+        ax, ay = -a, actor_from_centre
+    return max(1.0, math.hypot(ego_from_centre - ax, e - ay))
+
+
+def go_through(
+    ctx: ActorContext, turn: str, speed: float, accel: float, trigger_m: float, name: str, delay_s: float = 0.0
+) -> list[Step]:
+    """Set off along the route that turns ``turn`` (seen by the actor) once the ego is within ``trigger_m``."""
+    rate = min(accel, ctx.actor_max_accel_mps2 or accel)
+    actions = [route_action(ctx, turn, own_view=True), speed_action(speed, rate=rate)]
+    return [Step(name, actions, conditions=[Condition("ego_near", round(trigger_m, 2))], delay_s=delay_s)]

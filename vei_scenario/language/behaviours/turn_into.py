@@ -1,0 +1,41 @@
+"""turn into: a road user waiting in a side road pulls out of it into the ego's road, ahead of the
+ego and in its direction (from the left it turns left across the near half, from the right it turns
+right). It sets off when the ego is close enough that the ego reaches the point where it joins
+``arrival_gap_s`` after it, then drives on to ``speed_mps``."""
+
+from __future__ import annotations
+
+from vei_scenario.language.behaviours.base import ActorContext, Parameter, Step, value
+from vei_scenario.language.behaviours.junction_entry import ego_trigger_distance_m, go_through, lane_offset_m
+from vei_scenario.language.maps import JUNCTION_RADIUS_M
+
+NAME = "turn_into"
+AGENT = "route follower"
+SUMMARY = "Pull out of a side road into the ego's road ahead of it, in its direction."
+DEFAULT_SPAWN = {"relation": "junction_right"}
+PARAMETERS = {
+    "arrival_gap_s": Parameter(1.5, -2.0, 8.0, "the ego reaches where it joins this long after it (s)"),
+    "speed_mps": Parameter(10.0, 2.0, 25.0, "speed it drives on at once in the ego's road (m/s)"),
+    "accel_mps2": Parameter(2.5, 0.5, 5.0, "acceleration from its stop line (m/s²)"),
+}
+PROFILES = {
+    "dangerous": {"arrival_gap_s": (0.0, 0.6)},
+    "moderate": {"arrival_gap_s": (1.5, 2.2)},
+    "safe": {"arrival_gap_s": (3.5, 5.0)},
+}
+
+
+def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
+    from_left = ctx.actor_road == ctx.exits.get("left")
+    turn = "left" if from_left else "right"
+    if ctx.actor_exits.get(turn) != ctx.exits.get("straight"):
+        raise ValueError(f"{ctx.actor}: turn_into needs a spawn on a side road (junction_left or junction_right)")
+    r = JUNCTION_RADIUS_M
+    e = lane_offset_m(ctx.ego_lane_id)
+    # from the left it crosses the far half and joins beyond the centre; from the right it joins at once
+    actor_path = 2.0 + (r + e + 3.0 if from_left else 0.6 * r + 3.0)
+    ego_path = r + (r * 0.5 if from_left else 3.0)
+    v = value(cfg, PARAMETERS, "speed_mps")
+    a = value(cfg, PARAMETERS, "accel_mps2")
+    trigger = ego_trigger_distance_m(ctx, actor_path, ego_path, min(v, 8.0), a, value(cfg, PARAMETERS, "arrival_gap_s"))
+    return go_through(ctx, turn, v, a, trigger, "turn_into")
