@@ -232,6 +232,36 @@ def test_esmini_plays_what_has_no_custom_controller(name, tmp_path, esmini):
     assert [x[1:] for x in c.vei_collisions] == [x[1:] for x in c.esmini_collisions]
 
 
+@pytest.mark.parametrize(
+    "text",
+    [
+        "An oncoming car turns left across the ego's path at the crossroads.",
+        "A car waiting in the side road on the right turns right into the ego's lane.",
+        "A lorry approaching from the side road on the right gives way to the ego.",
+        "A cyclist rides towards the ego along the edge of its lane.",
+        "A ghost driver comes towards us in our lane and swerves back to its own side.",
+        "An oncoming truck drifts into our lane and then returns to its lane.",
+        "The car in front swerves into the left lane to avoid a stopped van in our lane.",
+        "The ego drives on a two-lane road in heavy traffic.",
+    ],
+    ids=["turn_across", "turn_into", "give_way", "along_road", "wrong_way", "drift", "cut_out", "traffic"],
+)
+def test_esmini_plays_the_newer_behaviours_and_the_traffic_alike(text, tmp_path, esmini):
+    """The behaviours added later, and background traffic in both directions, play the same in
+    esmini: every entity within 0.25 m, the same collisions (the ego without its planner)."""
+    from vei_scenario.conformance.esmini import cross_check
+
+    layers = layers_from_text(text, 3)
+    layers["ego"]["agent"] = "lane_keep"
+    w = write_scenario(layers, "scenario")
+    (tmp_path / "scenario.xodr").write_bytes(w.xodr)
+    (tmp_path / "scenario.xosc").write_bytes(w.xosc)
+    c = cross_check(esmini, tmp_path / "scenario.xosc", dt=0.05)
+    assert len(c.entities) == 1 + len(layers["adversaries"]) + len(layers["background"]["vehicles"])
+    assert max(e.max_deviation_m for e in c.entities) < 0.25, c.entities
+    assert [x[1:] for x in c.vei_collisions] == [x[1:] for x in c.esmini_collisions]
+
+
 def test_a_scenario_that_cannot_be_placed_is_a_row_with_its_reason(tmp_path):
     """One scenario of a batch asks for a lane the road lacks: it becomes a row with the reason, the
     others are written and scored, the batch goes on."""

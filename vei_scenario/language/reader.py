@@ -799,6 +799,10 @@ def _tidy(a: _Actor) -> list:
         out = [
             b for k, b in enumerate(out) if not (b[0] == "stop" and k + 1 < len(out) and out[k + 1][0] == "give_way")
         ]
+    for k in range(1, len(out)):  # having let the ego pass, it crosses at once (behind it)
+        if out[k][0] == "cross_in_front" and out[k - 1][0] == "give_way":
+            name, cfg, crit, lk = out[k]
+            out[k] = (name, {**cfg, "immediately": 1.0}, crit, lk)
     if len(out) > 1:  # "rides ahead and then stops": going on first adds nothing
         out = [b for b in out if b[0] != "keep_going"] or out[:1]
     return out

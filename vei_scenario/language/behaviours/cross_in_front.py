@@ -1,6 +1,7 @@
 """cross in front: a vulnerable road user crosses the ego's road from the roadside.
 
-It waits at the kerb and sets off when the ego is close enough to meet it: the ego reaches the
+It waits at the kerb and sets off when the ego is close enough to meet it (with ``immediately``: as
+soon as what came before it is over, e.g. after giving way): the ego reaches the
 crossing point ``arrival_gap_s`` after the road user reaches the ego's lane (negative: before). It
 follows a straight path across (FollowTrajectoryAction, which esmini plays); an e-scooter or bicycle
 with ``agent`` = ``sfm`` rides it with the social force model instead, reacting to the ego.
@@ -56,4 +57,6 @@ def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
     actions = [follow, speed_action(v, time=START_RAMP_S)]
     if cfg.get("agent") == "sfm" and ctx.actor_type in ("e-scooter", "bicycle"):
         actions.append(xosc.ActivateControllerAction(lateral=True, longitudinal=True))
+    if cfg.get("immediately"):  # (after giving way: it goes as soon as the ego has passed)
+        return [Step("cross", actions)]
     return [Step("cross", actions, conditions=[Condition("ego_within", round(trigger_distance_m(ctx, cfg), 2))])]
