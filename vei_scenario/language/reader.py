@@ -177,6 +177,7 @@ class _Actor:
     returns: bool = False  # it goes back (a wrong-way driver to its own side)
     crit: str | None = None  # the criticality its clause's wording gives, verbs or not
     parked: bool = False  # said to be parked (at the side of the road, unless put in a lane)
+    followed: bool = False  # the ego follows it ("Following a truck, ...")
     object_of: _Actor | None = None  # whose verb it is the object of ("overtakes a bus": the bus)
 
 
@@ -350,6 +351,21 @@ def _drop_label(clauses):
     return [(link, head + mentions[colon + 1 :])] + clauses[1:]
 
 
+def _ego_following(clauses):
+    """A description that opens with "Following a truck ..." (nobody named before it) is the ego's
+    view: the ego follows, so what it follows is ahead of it. Returns the clauses with that
+    "following" read as "ahead", and whether it was so."""
+    if not clauses:
+        return clauses, False
+    link, mentions = clauses[0]
+    first = next((k for k, m in enumerate(mentions) if m.slot not in ("punct", "link")), None)
+    if first is None or mentions[first].start != 0 or mentions[first].words not in ("following", "tailing"):
+        return clauses, False
+    m = mentions[first]
+    ahead = _Mention("relation", "ahead", m.words, m.start, m.prev, m.next_, m.end, m.det)
+    return [(link, mentions[:first] + [ahead] + mentions[first + 1 :])] + clauses[1:], True
+
+
 def _resolve_relation(a: _Actor, map_kind: str | None) -> str | None:
     """The spawn relation of an actor from what was said about where it is and what it does first."""
     first = a.behaviours[0][0] if a.behaviours else None
@@ -372,6 +388,8 @@ def _resolve_relation(a: _Actor, map_kind: str | None) -> str | None:
         return f"junction_{side}"  # from the side road on the left: that arm, even if it approaches
     if a.relation == "oncoming" and junction:
         return "junction_opposite"  # at a junction what comes towards the ego comes from the opposite arm
+    if a.followed and first == "cut_in":
+        return "ahead"  # the ego follows it in its lane: it pulls out of it, to the side said
     if a.relation == "oncoming" or (a.relation == "behind" and not (a.lane_side and first == "cut_in")):
         return a.relation
     if vehicle and a.kerb_side == "left" and first != "cross_in_front":
@@ -401,6 +419,7 @@ def read(text: str) -> Reading:
     words); raise :class:`~vei_scenario.language.reading.NotUnderstood` naming what cannot be placed."""
     clauses, ignored = scan(text)
     clauses = _drop_label(clauses)
+    clauses, ego_follows = _ego_following(clauses)
     r = Reading()
     actors: list[_Actor] = []
     refuse: list[str] = []
@@ -618,7 +637,8 @@ def read(text: str) -> Reading:
         behaviours = _tidy(a)
         if a.kind == "pedestrian" and behaviours and behaviours[0][0] in VEHICLE_BEHAVIOURS:
             spec.kind = a.kind = "car"
-        if behaviours and behaviours[0][0] == "change_lane" and (a.lane_side or a.side):
+        moving_out = behaviours and behaviours[0][0] == "cut_in" and a.followed
+        if behaviours and (behaviours[0][0] == "change_lane" or moving_out) and (a.lane_side or a.side):
             name, cfg, c, lk = behaviours[0]  # "moves over into the right lane": where to, not where from
             behaviours[0] = (name, {**cfg, "direction": 1.0 if (a.lane_side or a.side) == "left" else -1.0}, c, lk)
             a.lane_side = a.side = None
@@ -650,6 +670,8 @@ def read(text: str) -> Reading:
             other = r.actors[k]
             if other.relation in ("oncoming", "junction_opposite"):
                 spec.relation = other.relation
+    if ego_follows and actors and r.ego_speed_mps is None and actors[0].speed_mps:
+        r.ego_speed_mps = actors[0].speed_mps  # "Following a truck at 60 km/h": both at that speed
     _parked(actors, r.actors)
     _cut_outs(r.actors)
     if r.map_kind is None and any(s.relation == "junction_opposite" for s in r.actors):
@@ -880,6 +902,7 @@ def _apply(m, who, r, link, added) -> None:
             a.distance_m = m.value
         elif m.slot == "relation":
             a.said.add(m.value)
+            a.followed = a.followed or (m.value == "ahead" and m.words in ("following", "tailing"))
             if a.relation is None or m.value == "oncoming":
                 a.relation = m.value
         elif m.slot == "wrong_way":

@@ -374,7 +374,9 @@ def place_adversary(
         cfg.setdefault("crossing_speed_mps", v)
         k = int(ego["lane"])
         cross = (k - 0.5) * 3.5 + 1.0 if relation == "roadside_right" else (2 * lanes - k + 0.5) * 3.5 + 1.0
-        trigger = ego_speed * (cross / v + float(cfg.get("arrival_gap_s", 0.5)))
+        from vei_scenario.language.behaviours.cross_in_front import trigger_distance
+
+        trigger = trigger_distance(ego_speed, cross, v, TYPES[kind][4], float(cfg.get("arrival_gap_s", 0.5)))
         lon = trigger + 15.0 + lengths / 2
         if "distance_m" in ego:  # before a junction: the crossing lies on the ego's way to it
             lon = min(lon, float(ego["distance_m"]) - 5.0)

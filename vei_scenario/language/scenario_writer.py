@@ -204,6 +204,20 @@ class _StoryBuilder:
                     cond = xosc.SimulationTimeCondition(round(delay, 3), xosc.Rule.greaterOrEqual)
                     group.add_condition(xosc.ValueTrigger(f"{name}_at", 0, xosc.ConditionEdge.none, cond))
                 trigger.add_conditiongroup(group)
+                if step.fallback_s is not None and conditions:  # or: its own conditions never held
+                    late = xosc.ConditionGroup()
+                    for j, (anchor, state) in enumerate(combo):
+                        cond = xosc.StoryboardElementStateCondition(
+                            xosc.StoryboardElementType.event, anchor.event, state
+                        )
+                        when = round(anchor.delay + delay + step.fallback_s, 3)
+                        late.add_condition(
+                            xosc.ValueTrigger(f"{name}_late{j + 1}_{g + 1}", when, xosc.ConditionEdge.none, cond)
+                        )
+                    if not combo:
+                        cond = xosc.SimulationTimeCondition(round(delay + step.fallback_s, 3), xosc.Rule.greaterOrEqual)
+                        late.add_condition(xosc.ValueTrigger(f"{name}_late", 0, xosc.ConditionEdge.none, cond))
+                    trigger.add_conditiongroup(late)
             event.add_trigger(trigger)
             self.maneuver.add_event(event)
             done, running = xosc.StoryboardElementState.completeState, xosc.StoryboardElementState.runningState

@@ -54,6 +54,9 @@ class Step:
     #: A step whose actions never end by themselves (continuous following, holding a speed) hands
     #: over to what follows after ``hold_s`` seconds.
     hold_s: float | None = None
+    #: When its conditions may never hold (the ego brakes for something else and the gap never
+    #: closes), the step starts anyway this long after it could have started (s).
+    fallback_s: float | None = None
 
 
 @dataclass

@@ -32,14 +32,20 @@ PROFILES = {
 }
 
 
+def trigger_distance(ego_speed: float, crossing_m: float, speed: float, accel: float, arrival_gap_s: float) -> float:
+    """Free-space distance of the ego at which a road user ``crossing_m`` from the ego's lane centre
+    sets off to cross at ``speed``: it starts from standing, and reaching ``speed`` takes ``speed /
+    accel`` (at least the start ramp), in which it covers half the distance it would at ``speed``."""
+    ramp = max(START_RAMP_S, speed / accel if accel > 0 else 0.0)
+    t_reach = crossing_m / speed + ramp / 2
+    return max(1.0, ego_speed * (t_reach + arrival_gap_s))
+
+
 def trigger_distance_m(ctx: ActorContext, cfg: dict) -> float:
     """Free-space distance of the ego at which the road user sets off."""
     v = value(cfg, PARAMETERS, "crossing_speed_mps")
-    # it sets off from standing: reaching v takes v / a (a the start ramp or its Performance limit),
-    # in which it covers half the distance it would at v
-    ramp = max(START_RAMP_S, v / ctx.actor_max_accel_mps2 if ctx.actor_max_accel_mps2 > 0 else 0.0)
-    t_reach = (ctx.crossing_distance_m or 0.0) / v + ramp / 2
-    return max(1.0, ctx.ego_speed_mps * (t_reach + value(cfg, PARAMETERS, "arrival_gap_s")))
+    gap = value(cfg, PARAMETERS, "arrival_gap_s")
+    return trigger_distance(ctx.ego_speed_mps, ctx.crossing_distance_m or 0.0, v, ctx.actor_max_accel_mps2, gap)
 
 
 def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
@@ -54,9 +60,14 @@ def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
     ctx.trajectories[traj.name] = traj
     follow = xosc.FollowTrajectoryAction(traj, xosc.FollowingMode.position)
     v = value(cfg, PARAMETERS, "crossing_speed_mps")
-    actions = [follow, speed_action(v, time=START_RAMP_S)]
+    # a linear ramp at its acceleration (the trigger's timing assumes just that)
+    ramp = max(START_RAMP_S, v / ctx.actor_max_accel_mps2 if ctx.actor_max_accel_mps2 > 0 else 0.0)
+    actions = [follow, speed_action(v, rate=v / ramp)]
     if cfg.get("agent") == "sfm" and ctx.actor_type in ("e-scooter", "bicycle"):
         actions.append(xosc.ActivateControllerAction(lateral=True, longitudinal=True))
+    # what follows a crossing ("... and stops in the middle of the lane") starts in the ego's lane
+    in_lane_s = round((ctx.crossing_distance_m or 0.0) / v + ramp / 2, 3)
     if cfg.get("immediately"):  # (after giving way: it goes as soon as the ego has passed)
-        return [Step("cross", actions)]
-    return [Step("cross", actions, conditions=[Condition("ego_within", round(trigger_distance_m(ctx, cfg), 2))])]
+        return [Step("cross", actions, hold_s=in_lane_s)]
+    trigger = Condition("ego_within", round(trigger_distance_m(ctx, cfg), 2))
+    return [Step("cross", actions, conditions=[trigger], hold_s=in_lane_s)]

@@ -66,6 +66,10 @@ FASTER_MPS = 0.5
 STANDING_MPS = 0.5
 
 
+#: How long after its planned closing time a cut-in goes ahead without its gap (s).
+LATE_S = 2.0
+
+
 def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
     gap = value(cfg, PARAMETERS, "gap_m")
     duration = value(cfg, PARAMETERS, "lane_change_s")
@@ -79,9 +83,11 @@ def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
     after = max(0.0, ctx.actor_speed_mps - value(cfg, PARAMETERS, "brake_delta_mps"))
     rate = ctx.max_decel(value(cfg, PARAMETERS, "brake_rate_mps2"))
     actions = [lane_change_to_ego(ctx.ego, duration), speed_action(after, rate=rate)]
+    # if the gap never comes (the ego slows for something else), it cuts in when it planned to anyway
+    late = float(cfg.get("lead_s", 2.5)) + LATE_S
     if ctx.actor_speed_mps > ctx.ego_speed_mps + FASTER_MPS:  # faster than the ego: in once it is gap_m ahead
-        return [Step("cut_in", actions, conditions=[Condition("ego_beyond", gap)])]
-    return [Step("cut_in", actions, conditions=[Condition("ego_within", gap)])]
+        return [Step("cut_in", actions, conditions=[Condition("ego_beyond", gap)], fallback_s=late)]
+    return [Step("cut_in", actions, conditions=[Condition("ego_within", gap)], fallback_s=late)]
 
 
 def pull_out_distance_m(ego_speed: float, cfg: dict) -> float:
