@@ -118,3 +118,33 @@ def test_a_cut_in_by_a_standing_or_a_faster_car_happens(text, tmp_path):
     from vei_scenario.language.corpus_check import play_case
 
     assert play_case({"text": text}, layers_from_text, tmp_path) == []
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # what is said of the ego as an object ("towards us") stays with the actor it was said of
+        (
+            "A ghost driver comes towards us in our lane while a cyclist rides along the kerb ahead.",
+            [("car", "wrong_way", "ahead", "against"), ("bicycle", "along_road", "ahead", None)],
+        ),
+        # the passive: the doer follows "by"
+        ("The AV gets cut off by a van from the right lane.", [("van", "cut_in", "right", None)]),
+        # two subjects joined by "and" share the verb
+        (
+            "A boy and a girl run across from the far side.",
+            [("pedestrian", "cross_in_front", "roadside_left", None)] * 2,
+        ),
+        # the ego's own view: what it follows is ahead of it
+        (
+            "Following a lorry, it swerves out to the left, revealing a stalled car.",
+            [("truck", "cut_out", "ahead", None), ("car", "keep_going", "ahead", None)],
+        ),
+    ],
+    ids=["towards-us", "passive", "joined", "following"],
+)
+def test_constructions_are_read_for_who_does_what(text, expected):
+    from vei_scenario.language.reader import read
+
+    got = [(a.kind, a.behaviours[0][0] if a.behaviours else None, a.relation, a.facing) for a in read(text).actors]
+    assert got == expected

@@ -582,7 +582,8 @@ def read(text: str) -> Reading:
                 prev = m
                 continue
             # positions, states, numbers: the actor they describe
-            if m.slot in _POSITIONAL and nxt is not None and nxt.slot in ("actor", "count") and nxt.start == m.end:
+            before_actor = nxt is not None and nxt.slot in ("actor", "count") and nxt.start == m.end
+            if m.slot in _POSITIONAL and before_actor and not (nxt.slot == "actor" and nxt.value == "ego"):
                 pending.append(m)  # an adjective before its actor ("an oncoming car")
             else:
                 who = _nearest(named, m)
