@@ -775,6 +775,13 @@ def _cut_outs(specs: list[ActorSpec]) -> None:
     it) reveals that to the ego: a cut-out, with the standing actor as its obstacle. Without
     anything standing, a swerve out is a lane change."""
     standing = [k for k, s in enumerate(specs) if s.speed_mps == 0.0 and s.relation in (None, "ahead", "behind")]
+    _swerves_round_what_stands(specs, standing)
+    for s in specs:  # a swerve with nothing to swerve round is a lane change
+        if s.obstacle is None:
+            s.behaviours = [("change_lane", *b[1:]) if b[0] == "cut_out" else b for b in s.behaviours]
+
+
+def _swerves_round_what_stands(specs: list[ActorSpec], standing: list[int]) -> None:
     for k, s in enumerate(specs):
         if not s.behaviours or s.kind not in ("car", "van", "truck") or k in standing:
             continue
@@ -784,8 +791,6 @@ def _cut_outs(specs: list[ActorSpec]) -> None:
         if s.relation not in (None, "ahead", "behind"):
             continue
         if not standing:
-            if name == "cut_out":
-                s.behaviours[0] = ("change_lane", cfg, crit, link)
             continue
         s.behaviours = [("cut_out", {k2: v for k2, v in cfg.items() if k2 == "direction"}, crit, link)] + s.behaviours[
             1:

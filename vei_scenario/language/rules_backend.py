@@ -265,6 +265,9 @@ def _place_occluders(reading: Reading, adversaries: list[dict]) -> None:
 
 #: Free space between a parked occluder and the crossing it hides (m).
 OCCLUDER_GAP_M = 0.8
+#: The farthest spawns ahead and behind the layers hold (m).
+MAX_SPAWN_M = 250.0
+MIN_SPAWN_M = 150.0
 #: The fastest speed the layers hold (m/s).
 MAX_SPEED_MPS = 45.0
 #: The run lasts at least this long (the paper's 15 s), longer when the behaviours need it.
@@ -315,7 +318,16 @@ def _default_speed(kind: str, relation: str, ego_speed: float) -> float:
     return 0.0 if relation.startswith("roadside") else 4.0
 
 
-def place_adversary(
+def place_adversary(*args, **kwargs) -> tuple[dict, float]:
+    """:func:`_place_adversary`, its spawn held within what the layers can hold (-150 .. 250 m:
+    a timing that asks for more, at a speed near the layers' limit, starts as far as they allow)."""
+    spawn, speed = _place_adversary(*args, **kwargs)
+    if "longitudinal_m" in spawn:
+        spawn["longitudinal_m"] = round(min(max(float(spawn["longitudinal_m"]), -MIN_SPAWN_M), MAX_SPAWN_M), 3)
+    return spawn, speed
+
+
+def _place_adversary(
     kind: str,
     relation: str,
     behaviour_name: str,
@@ -341,7 +353,8 @@ def place_adversary(
         length = TYPES[kind][0][0]
         if speed is not None and speed > 0.5 and behaviour_name == "give_way":
             # it rolls up to its stop line and brakes there at about 2 m/s²
-            spawn["longitudinal_m"] = round(min(STOP_LINE_M + length / 2 + speed * speed / 4.0, ARM_LENGTH_M - 5), 3)
+            room = STOP_LINE_M + length / 2 + speed * speed / 4.0
+            spawn["longitudinal_m"] = round(min(room, ARM_LENGTH_M - 5, MAX_SPAWN_M), 3)
             return spawn, round(speed, 3)
         if speed is not None and speed > 0.5:
             cfg.setdefault(go_key, round(speed, 3))  # its stated speed is the speed it goes at
