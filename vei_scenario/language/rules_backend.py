@@ -115,6 +115,8 @@ def sample_layers(reading: Reading, text: str, seed: int) -> dict:
             elif crit is None and intent == "safe":
                 crit = "safe"
             cfg, _ = _config(rng, bname, given, crit)
+            if bname == "cross_in_front" and spec.kind == "e-scooter":
+                cfg.setdefault("agent", "sfm")  # the e-scooter rider is the social force model's
             if idx == 0:
                 first_cfg = cfg
             nodes.append((link, {"behaviour": bname, "config": cfg}))

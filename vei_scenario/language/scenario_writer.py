@@ -32,6 +32,7 @@ from scenariogeneration import xosc
 from vei_scenario.language import maps, placement
 from vei_scenario.language.behaviours import behaviour
 from vei_scenario.language.behaviours.base import ActorContext, Condition, G
+from vei_scenario.language.layers import behaviour_nodes
 from vei_scenario.models.cap import CapParameters
 from vei_scenario.openscenario.scenario_writer import render
 from vei_scenario.roads.opendrive_output import finalize_opendrive
@@ -329,7 +330,8 @@ def write_scenario(layers: dict, stem: str) -> WrittenScenario:
             heading = math.atan2(path[1][1] - path[0][1], path[1][0] - path[0][0])
             ctx.crossing_path = [(x, y, heading) for x, y, _ in path]
             ctx.crossing_distance_m = abs(t_ego - t0)
-            if kind in ("e-scooter", "bicycle"):
+            rides_sfm = any(n.get("config", {}).get("agent") == "sfm" for _, n in behaviour_nodes(adv["behaviour"]))
+            if kind in ("e-scooter", "bicycle") and rides_sfm:  # (assigned only where it is activated)
                 controller = xosc.Controller(
                     "SocialForceModel",
                     _properties({"riderType": "normal", "route": f"{name}_crossing", "egoEntity": EGO, "v0_mps": 4.5}),
