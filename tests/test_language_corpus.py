@@ -178,3 +178,19 @@ def test_word_salad_of_the_lexicon_is_read_or_refused_never_broken():
             write_scenario(layers, "scenario")
         except ValueError as exc:  # a placement the map cannot hold: refused with its reason
             assert str(exc), text
+
+
+@pytest.mark.parametrize(
+    "text, named",
+    [
+        ("A zorblat frobnicates the quux.", "'zorblat', 'frobnicates', 'quux'"),
+        ("a car cuts in " * 50, "50 road users (a scenario holds at most 8"),
+    ],
+    ids=["nothing-readable", "too-many"],
+)
+def test_a_description_with_nothing_to_hold_or_too_much_is_refused_by_name(text, named):
+    from vei_scenario.language.reading import NotUnderstood
+
+    with pytest.raises(NotUnderstood) as err:
+        layers_from_text(text, 0)
+    assert named in str(err.value)

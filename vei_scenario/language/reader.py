@@ -678,9 +678,19 @@ def read(text: str) -> Reading:
     if r.map_kind is None and any(s.relation == "junction_opposite" for s in r.actors):
         r.map_kind = "crossroad"
     r.ignored = list(dict.fromkeys(ignored))
+    said = (r.map_kind, r.lanes, r.weather, r.time, r.density, r.intent, r.ego_route, r.ego_speed_mps)
+    mentioned_ego = any(m.slot == "actor" and m.value == "ego" for _, ms in clauses for m in ms)
+    if not r.actors and not mentioned_ego and all(v is None for v in said) and r.ignored:
+        raise NotUnderstood(r.ignored[:12], text)  # nothing of it could be read: say so, name the words
+    if len(r.actors) > MAX_ACTORS:
+        raise NotUnderstood(
+            [f"{len(r.actors)} road users (a scenario holds at most {MAX_ACTORS} besides the ego)"], text
+        )
     return r
 
 
+#: Adversaries a scenario holds (the layers schema's limit).
+MAX_ACTORS = 8
 VULNERABLE = ("pedestrian", "bicycle", "e-scooter")
 #: Words before a verb that make it passive ("is tailgated", "gets cut off").
 PASSIVE_AUXILIARIES = {"is", "are", "was", "were", "be", "been", "being", "get", "gets", "got", "getting"}
