@@ -157,3 +157,15 @@ def time_to_cover(distance_m: float, speed_mps: float, accel_mps2: float, start_
     if distance_m <= ramp_m:
         return (-v0 + (v0 * v0 + 2 * a * distance_m) ** 0.5) / a
     return (v - v0) / a + (distance_m - ramp_m) / v
+
+
+def neighbour_lane(ctx: ActorContext, direction: float) -> int:
+    """The lane next to the actor's in its own direction of travel, to the left (``direction`` ≥ 0)
+    or the right; ValueError when the road has none there."""
+    step = 1 if direction >= 0 else -1
+    target = ctx.actor_lane_id + step
+    if target == 0:
+        target += step
+    if abs(target) > ctx.lanes or (target > 0) != (ctx.actor_lane_id > 0):
+        raise ValueError(f"{ctx.actor} has no lane to the {'left' if step > 0 else 'right'} in its direction")
+    return target

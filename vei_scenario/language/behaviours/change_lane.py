@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from vei_scenario.language.behaviours.base import ActorContext, Parameter, Step, lane_change_to, value
+from vei_scenario.language.behaviours.base import ActorContext, Parameter, Step, lane_change_to, neighbour_lane, value
 
 NAME = "change_lane"
 AGENT = "route follower"
@@ -20,11 +20,6 @@ PROFILES = {
 
 
 def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
-    step = 1 if value(cfg, PARAMETERS, "direction") >= 0 else -1
-    target = ctx.actor_lane_id + step
-    if target == 0:
-        target += step
-    if abs(target) > ctx.lanes or (target > 0) != (ctx.actor_lane_id > 0):
-        raise ValueError(f"{ctx.actor} has no lane to the {'left' if step > 0 else 'right'} in its direction")
+    target = neighbour_lane(ctx, value(cfg, PARAMETERS, "direction"))
     dur = value(cfg, PARAMETERS, "lane_change_s")
     return [Step("change_lane", [lane_change_to(target, dur)], delay_s=value(cfg, PARAMETERS, "delay_s"))]

@@ -4,7 +4,15 @@ to the obstacle is down to what leaves the ego ``reveal_ttc_s`` seconds to it at
 
 from __future__ import annotations
 
-from vei_scenario.language.behaviours.base import ActorContext, Condition, Parameter, Step, lane_change_to, value
+from vei_scenario.language.behaviours.base import (
+    ActorContext,
+    Condition,
+    Parameter,
+    Step,
+    lane_change_to,
+    neighbour_lane,
+    value,
+)
 
 NAME = "cut_out"
 AGENT = "route follower"
@@ -42,12 +50,7 @@ def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
     obstacle = cfg.get("obstacle")
     if not isinstance(obstacle, str) or not obstacle:
         raise ValueError(f"{ctx.actor}: cut_out needs config obstacle (the name of what stands in the lane)")
-    step = 1 if value(cfg, PARAMETERS, "direction") >= 0 else -1
-    target = ctx.actor_lane_id + step
-    if target == 0:
-        target += step
-    if abs(target) > ctx.lanes or (target > 0) != (ctx.actor_lane_id > 0):
-        raise ValueError(f"{ctx.actor} has no lane to the {'left' if step > 0 else 'right'} to cut out into")
+    target = neighbour_lane(ctx, value(cfg, PARAMETERS, "direction"))
     change = lane_change_to(target, value(cfg, PARAMETERS, "lane_change_s"))
     return [Step("cut_out", [change], conditions=[Condition("ego_within", round(reveal_gap_m(ctx, cfg), 2), obstacle)])]
 
