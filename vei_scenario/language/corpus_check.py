@@ -183,9 +183,14 @@ def played_problems(result, layers: dict) -> list[str]:
         where = lat if behind_ok else lat[lon > -2.0]
         if "cross_in_front" in names and not (np.sign(where) != np.sign(lat[0])).any():
             out.append(f"{name}: cross_in_front but never across the ego's path")
+        to_path = (
+            _nearest_on_path(tr, ego)
+            if {"run_red_light", "turn_across", "turn_into", "wrong_way"} & set(names)
+            else None
+        )
         for crossing in ("run_red_light", "turn_across", "turn_into"):
             if crossing in names:
-                d = np.hypot(tr.x[:, None] - ego.x[None, :], tr.y[:, None] - ego.y[None, :]).min()
+                d = float(to_path[0].min())
                 if d > 3.0:
                     out.append(f"{name}: {crossing} but never within 3 m of the ego's path ({d:.1f} m)")
         if "turn_into" in names and not ((lon > 0) & (np.abs(lat) < 1.2)).any():
@@ -207,12 +212,9 @@ def played_problems(result, layers: dict) -> list[str]:
                 out.append(f"{name}: along_road but not moving along the ego's lane ({facing} the traffic)")
         if "wrong_way" in names:
             # on the ego's path (within 1.5 m of where the ego drives, at any time) and facing against it
-            step = max(len(ego.x) // 2000, 1)
-            ex, ey, eyaw = ego.x[::step], ego.y[::step], ego.yaw[::step]
-            d = np.hypot(tr.x[:, None] - ex[None, :], tr.y[:, None] - ey[None, :])
-            k = np.argmin(d, axis=1)
-            against = np.abs((tr.yaw - eyaw[k] + np.pi) % (2 * np.pi) - np.pi) > 2.6
-            if not ((d[np.arange(len(k)), k] < 1.5) & against & (np.abs(tr.speed) > 0.5)).any():
+            d, k = to_path
+            against = np.abs((tr.yaw - ego.yaw[k] + np.pi) % (2 * np.pi) - np.pi) > 2.6
+            if not ((d < 1.5) & against & (np.abs(tr.speed) > 0.5)).any():
                 out.append(f"{name}: wrong_way but never head-on in the ego's lane")
         if "cut_out" in names and not (np.abs(lat) > 2.5).any():
             out.append(f"{name}: cut_out but never out of the ego's lane")
@@ -220,6 +222,22 @@ def played_problems(result, layers: dict) -> list[str]:
         if adv["spawn"].get("relation") == "oncoming" and float(adv["speed_mps"]) > 0.5 and heading[closest] < 2.6:
             out.append(f"{name}: oncoming but driving the ego's way")
     return out
+
+
+def _nearest_on_path(tr, ego, rows: int = 512):
+    """For every sample of trace ``tr``: the distance to the nearest point the ego passes through
+    during the run, and that point's index (computed a block of rows at a time, so a long run does
+    not ask for a samples² matrix at once)."""
+    import numpy as np
+
+    dist = np.empty(len(tr.x))
+    idx = np.empty(len(tr.x), dtype=int)
+    for lo in range(0, len(tr.x), rows):
+        d = np.hypot(tr.x[lo : lo + rows, None] - ego.x[None, :], tr.y[lo : lo + rows, None] - ego.y[None, :])
+        k = np.argmin(d, axis=1)
+        idx[lo : lo + rows] = k
+        dist[lo : lo + rows] = d[np.arange(len(k)), k]
+    return dist, idx
 
 
 def play_case(case: dict, make_layers, workdir: Path, seed: int = 0) -> list[str]:

@@ -370,7 +370,7 @@ def _resolve_relation(a: _Actor, map_kind: str | None) -> str | None:
     """The spawn relation of an actor from what was said about where it is and what it does first."""
     first = a.behaviours[0][0] if a.behaviours else None
     junction = map_kind in ("crossroad", "roundabout")
-    vehicle = a.kind in ("car", "van", "truck")
+    vehicle = a.kind in VEHICLES
     side = a.kerb_side or a.lane_side or a.side or (a.relation if a.relation in ("left", "right") else None)
     if first == "cross_in_front" and not vehicle:  # a crossing starts at a kerb (at a junction too)
         if side is None and a.relation and a.relation.startswith(("junction", "roadside")):
@@ -379,11 +379,8 @@ def _resolve_relation(a: _Actor, map_kind: str | None) -> str | None:
     if a.relation and a.relation.startswith(("junction", "roadside")):
         return a.relation
     if first == "give_way":  # lets the ego pass: where their paths meet, in a side road or at the kerb
-        if a.kerb and not vehicle:
-            return f"roadside_{side if side in ('left', 'right') else 'right'}"
-        if vehicle or junction:
-            return f"junction_{side if side in ('left', 'right') else 'right'}"
-        return f"roadside_{side if side in ('left', 'right') else 'right'}"
+        where = "junction" if vehicle or (junction and not a.kerb) else "roadside"
+        return f"{where}_{side if side in ('left', 'right') else 'right'}"
     if junction and a.arm and side in ("left", "right"):
         return f"junction_{side}"  # from the side road on the left: that arm, even if it approaches
     if a.relation == "oncoming" and junction:
@@ -625,9 +622,7 @@ def read(text: str) -> Reading:
         for _name, cfg, _c, _lk in a.behaviours:
             if cfg.pop("from_side_road", None):
                 a.arm = True
-    vehicles_giving_way = any(
-        a.kind in ("car", "van", "truck") and any(b[0] == "give_way" for b in a.behaviours) for a in actors
-    )
+    vehicles_giving_way = any(a.kind in VEHICLES and any(b[0] == "give_way" for b in a.behaviours) for a in actors)
     if (r.map_kind is None and r.ego_route in ("left", "right")) or (
         r.map_kind in (None, "straight") and (any(a.arm for a in actors) or vehicles_giving_way)
     ):
@@ -692,6 +687,7 @@ def read(text: str) -> Reading:
 #: Adversaries a scenario holds (the layers schema's limit).
 MAX_ACTORS = 8
 VULNERABLE = ("pedestrian", "bicycle", "e-scooter")
+VEHICLES = ("car", "van", "truck")
 #: Words before a verb that make it passive ("is tailgated", "gets cut off").
 PASSIVE_AUXILIARIES = {"is", "are", "was", "were", "be", "been", "being", "get", "gets", "got", "getting"}
 
@@ -703,7 +699,7 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool) -> None:
     who just goes on, goes along the road."""
     names = [b[0] for b in spec.behaviours]
     first = names[0] if names else None
-    vehicle = a.kind in ("car", "van", "truck")
+    vehicle = a.kind in VEHICLES
     crit = next((b[2] for b in spec.behaviours if b[2]), a.crit)
     link = spec.behaviours[0][3] if spec.behaviours else "sequence"
     towards = "oncoming" in a.said or spec.relation in ("oncoming", "junction_opposite") or a.kerb_side == "left"
@@ -763,7 +759,7 @@ def _parked(actors: list[_Actor], specs: list[ActorSpec]) -> None:
     left") starts from that side."""
     parked_sides = []
     for a, spec in zip(actors, specs):
-        if a.kind not in ("car", "van", "truck") or spec.speed_mps != 0.0:
+        if a.kind not in VEHICLES or spec.speed_mps != 0.0:
             continue
         if any(b[0] not in ("keep_going", "stop") for b in spec.behaviours):
             continue  # it pulls out, turns ...: it stands in its lane first
@@ -785,29 +781,19 @@ def _cut_outs(specs: list[ActorSpec]) -> None:
     it) reveals that to the ego: a cut-out, with the standing actor as its obstacle. Without
     anything standing, a swerve out is a lane change."""
     standing = [k for k, s in enumerate(specs) if s.speed_mps == 0.0 and s.relation in (None, "ahead", "behind")]
-    _swerves_round_what_stands(specs, standing)
+    for k, s in enumerate(specs):
+        if not standing or not s.behaviours or s.kind not in VEHICLES or k in standing:
+            continue
+        name, cfg, crit, link = s.behaviours[0]
+        swerves = name in ("cut_out", "change_lane") or (name == "cut_in" and s.relation in (None, "ahead"))
+        if swerves and s.relation in (None, "ahead", "behind"):
+            direction = {key: v for key, v in cfg.items() if key == "direction"}
+            s.behaviours = [("cut_out", direction, crit, link)] + s.behaviours[1:]
+            s.relation, s.obstacle = "ahead", standing[0]
+            specs[standing[0]].relation = "ahead"
     for s in specs:  # a swerve with nothing to swerve round is a lane change
         if s.obstacle is None:
             s.behaviours = [("change_lane", *b[1:]) if b[0] == "cut_out" else b for b in s.behaviours]
-
-
-def _swerves_round_what_stands(specs: list[ActorSpec], standing: list[int]) -> None:
-    for k, s in enumerate(specs):
-        if not s.behaviours or s.kind not in ("car", "van", "truck") or k in standing:
-            continue
-        name, cfg, crit, link = s.behaviours[0]
-        if name not in ("cut_out", "change_lane") and not (name == "cut_in" and s.relation in (None, "ahead")):
-            continue
-        if s.relation not in (None, "ahead", "behind"):
-            continue
-        if not standing:
-            continue
-        s.behaviours = [("cut_out", {k2: v for k2, v in cfg.items() if k2 == "direction"}, crit, link)] + s.behaviours[
-            1:
-        ]
-        s.relation = "ahead"
-        s.obstacle = standing[0]
-        specs[standing[0]].relation = "ahead"
 
 
 def _verb_criticality(words: str) -> str | None:
@@ -831,7 +817,7 @@ def _tidy(a: _Actor) -> list:
             out[-1] = (name, cfg, crit or b[2], lk)
             continue
         out.append(b)
-    if a.kind in ("car", "van", "truck") and any(b[0] == "run_red_light" for b in out):
+    if a.kind in VEHICLES and any(b[0] == "run_red_light" for b in out):
         out = [b for b in out if b[0] != "cross_in_front"]  # crossing against red is the red-light run
     if any(b[0] == "give_way" for b in out):  # "stops at the line and waits for us": giving way stops
         out = [

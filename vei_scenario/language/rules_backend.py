@@ -19,7 +19,7 @@ from vei_scenario.language.maps import ARM_LENGTH_M
 from vei_scenario.language.placement import DEFAULT_FEATURE_DISTANCE_M, junction_conflict_m, lane_id
 from vei_scenario.language.reader import read as read_text
 from vei_scenario.language.reading import Reading
-from vei_scenario.language.scenario_writer import DEFAULT_RATE_HZ, TYPES
+from vei_scenario.language.scenario_writer import DEFAULT_RATE_HZ, TYPES, vulnerable
 
 CRITICALITY_CLASSES = ("dangerous", "moderate", "safe")
 
@@ -229,24 +229,20 @@ def _place_obstacles(reading: Reading, adversaries: list[dict], ego_speed: float
             reveal = cut_out.reveal_gap(ego_speed, float(adv["speed_mps"]), lead_gap, lead_len, cfg)
             # the lead drives on for about three seconds before it swerves
             lon = lead_lon + (lead_len + obs_len) / 2 + reveal + float(adv["speed_mps"]) * 3.0
-            obstacle["spawn"] = {"relation": "ahead", "longitudinal_m": round(min(lon, 250.0), 3)}
+            obstacle["spawn"] = {"relation": "ahead", "longitudinal_m": round(min(lon, MAX_SPAWN_M), 3)}
             obstacle["speed_mps"] = 0.0
 
 
 def _place_occluders(reading: Reading, adversaries: list[dict]) -> None:
     """Vehicles parked at the kerb a road user crosses from stand just before and after its
     crossing point (seen from the ego), so that they hide it until it steps out."""
-    crossers = [
-        a
-        for a in adversaries
-        if a["spawn"]["relation"].startswith("roadside") and TYPES[a["type"]][1] in ("pedestrian", "bicycle")
-    ]
+    crossers = [a for a in adversaries if a["spawn"]["relation"].startswith("roadside") and vulnerable(a["type"])]
     for side in ("roadside_right", "roadside_left"):
         at = [float(a["spawn"]["longitudinal_m"]) for a in crossers if a["spawn"]["relation"] == side]
         parked = [
             (spec, a)
             for spec, a in zip(reading.actors, adversaries)
-            if a["spawn"]["relation"] == side and TYPES[a["type"]][1] not in ("pedestrian", "bicycle")
+            if a["spawn"]["relation"] == side and not vulnerable(a["type"])
         ]
         if not at:
             continue
@@ -315,7 +311,7 @@ def topology_time_s(node: dict, ego_speed: float) -> float:
 
 
 def _default_speed(kind: str, relation: str, ego_speed: float) -> float:
-    if TYPES[kind][1] not in ("pedestrian", "bicycle"):
+    if not vulnerable(kind):
         return ego_speed
     return 0.0 if relation.startswith("roadside") else 4.0
 
@@ -356,13 +352,13 @@ def _place_adversary(
         if speed is not None and speed > 0.5 and behaviour_name == "give_way":
             # it rolls up to its stop line and brakes there at about 2 m/s²
             room = STOP_LINE_M + length / 2 + speed * speed / 4.0
-            spawn["longitudinal_m"] = round(min(room, ARM_LENGTH_M - 5, MAX_SPAWN_M), 3)
+            spawn["longitudinal_m"] = round(min(room, ARM_LENGTH_M - 5), 3)
             return spawn, round(speed, 3)
         if speed is not None and speed > 0.5:
             cfg.setdefault(go_key, round(speed, 3))  # its stated speed is the speed it goes at
         spawn["longitudinal_m"] = round(STOP_LINE_M + length / 2, 3)
         return spawn, 0.0
-    if relation.startswith("roadside") and TYPES[kind][1] not in ("pedestrian", "bicycle"):
+    if relation.startswith("roadside") and not vulnerable(kind):
         # parked beyond the kerb (placed by the road user it hides, if any: _place_occluders)
         spawn["longitudinal_m"] = distance_m if distance_m is not None else 40.0
         return spawn, 0.0
@@ -379,8 +375,9 @@ def _place_adversary(
     if behaviour_name == "wrong_way":
         v = ego_speed if speed is None else speed
         spawn["relation"] = "oncoming" if relation == "oncoming" else "ahead"
-        lon = distance_m if distance_m is not None else mod.place(ego_speed, lengths, cfg, v)
-        spawn["longitudinal_m"] = round(min(lon, 250.0), 3)
+        spawn["longitudinal_m"] = round(
+            distance_m if distance_m is not None else mod.place(ego_speed, lengths, cfg, v), 3
+        )
         return spawn, round(v, 3)
     if relation in ("junction_left", "junction_right"):
         spawn["longitudinal_m"] = round(_junction_spawn(ego, lanes, relation, out_speed, ego_speed, cfg), 3)
@@ -467,13 +464,14 @@ def background(rng: random.Random, layers: dict) -> list[dict]:
         elif rel == "oncoming":
             used.add(1)
         for _, node in behaviour_nodes(adv["behaviour"]):
-            if node["behaviour"] in ("change_lane", "cut_out"):  # (the lane it moves into)
+            name = node["behaviour"]
+            if name in ("change_lane", "cut_out"):  # (the lane it moves into)
                 step = 1 if float(node.get("config", {}).get("direction", 1.0)) >= 0 else -1
                 used.add(ego_lane + step if ego_lane + step != 0 else ego_lane + 2 * step)
-        if any(node["behaviour"] == "wrong_way" for _, node in behaviour_nodes(adv["behaviour"])):
-            used.update(range(ego_lane, 2))  # (the lanes it crosses and swerves back to)
-        if any(node["behaviour"] == "overtake" for _, node in behaviour_nodes(adv["behaviour"])):
-            used.add(ego_lane + 1 if ego_lane != -1 else 1)
+            elif name == "wrong_way":
+                used.update(range(ego_lane, 2))  # (the lanes it crosses and swerves back to)
+            elif name == "overtake":
+                used.add(ego_lane + 1 if ego_lane != -1 else 1)
     free = [k for k in range(1, lanes + 1) if k not in used]
     if env["kind"] not in ("crossroad", "roundabout"):  # (towards a junction, players may choose other turns)
         free += [-k for k in range(1, lanes + 1) if -k not in used]
@@ -491,7 +489,7 @@ def background(rng: random.Random, layers: dict) -> list[dict]:
     crossings = [
         ego_s + float(a["spawn"].get("longitudinal_m", 0.0))
         for a in layers["adversaries"]
-        if a["spawn"]["relation"].startswith("roadside") or a["spawn"]["relation"] == "ahead" and a["speed_mps"] == 0
+        if a["spawn"]["relation"].startswith("roadside") or (a["spawn"]["relation"] == "ahead" and a["speed_mps"] == 0)
     ]
 
     def passes_crossing(lane: int, s: float, v: float) -> bool:

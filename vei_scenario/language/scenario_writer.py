@@ -56,6 +56,13 @@ TYPES = {
     "e-scooter": ((1.2, 0.6, 1.8), "bicycle", 95.0, 6.94, 2.0, 3.5),
     "pedestrian": ((0.5, 0.6, 1.8), "pedestrian", 75.0, 3.0, 1.5, 3.0),
 }
+
+
+def vulnerable(kind: str) -> bool:
+    """A pedestrian, cyclist or e-scooter rider (its OpenSCENARIO category), not a vehicle."""
+    return TYPES[kind][1] in ("pedestrian", "bicycle")
+
+
 #: Signal state strings (red;yellow;green lamps), as esmini's examples write them.
 RED, GREEN = "on;off;off", "off;off;on"
 WEATHER = {  # cloud state, precipitation (type, intensity mm/h), fog visual range (m), default friction
@@ -131,6 +138,12 @@ class _Anchor:
         self.event, self.states, self.delay = event, states, delay
 
 
+def _after(anchor: _Anchor, state, delay: float, label: str) -> xosc.ValueTrigger:
+    """The condition that ``anchor``'s event has been in ``state`` for its delay plus ``delay`` s."""
+    cond = xosc.StoryboardElementStateCondition(xosc.StoryboardElementType.event, anchor.event, state)
+    return xosc.ValueTrigger(label, round(anchor.delay + delay, 3), xosc.ConditionEdge.none, cond)
+
+
 def _condition(c: Condition, actor: str, name: str):
     if c.kind in ("ego_within", "ego_beyond"):
         rule = xosc.Rule.lessThan if c.kind == "ego_within" else xosc.Rule.greaterThan
@@ -194,10 +207,8 @@ class _StoryBuilder:
                 k = 0
                 for anchor, state in combo:
                     k += 1
-                    cond = xosc.StoryboardElementStateCondition(xosc.StoryboardElementType.event, anchor.event, state)
-                    when = round(anchor.delay + delay, 3)
                     label = f"{name}_after{k}" + (f"_{g + 1}" if g else "")
-                    group.add_condition(xosc.ValueTrigger(label, when, xosc.ConditionEdge.none, cond))
+                    group.add_condition(_after(anchor, state, delay, label))
                 for c in conditions:
                     k += 1
                     group.add_condition(_condition(c, self.actor, f"{name}_when{k}" + (f"_{g + 1}" if g else "")))
@@ -208,12 +219,8 @@ class _StoryBuilder:
                 if step.fallback_s is not None and conditions:  # or: its own conditions never held
                     late = xosc.ConditionGroup()
                     for j, (anchor, state) in enumerate(combo):
-                        cond = xosc.StoryboardElementStateCondition(
-                            xosc.StoryboardElementType.event, anchor.event, state
-                        )
-                        when = round(anchor.delay + delay + step.fallback_s, 3)
                         late.add_condition(
-                            xosc.ValueTrigger(f"{name}_late{j + 1}_{g + 1}", when, xosc.ConditionEdge.none, cond)
+                            _after(anchor, state, delay + step.fallback_s, f"{name}_late{j + 1}_{g + 1}")
                         )
                     if not combo:
                         cond = xosc.SimulationTimeCondition(round(delay + step.fallback_s, 3), xosc.Rule.greaterOrEqual)
@@ -296,7 +303,7 @@ def write_scenario(layers: dict, stem: str) -> WrittenScenario:
     for adv in layers["adversaries"]:
         name, kind = adv["name"], adv["type"]
         pose = placement.adversary_pose(info, ego_pose, adv["spawn"])
-        speed = float(adv.get("speed_mps", ego_speed if TYPES[kind][1] not in ("pedestrian", "bicycle") else 0.0))
+        speed = float(adv.get("speed_mps", 0.0 if vulnerable(kind) else ego_speed))
         ctx = ActorContext(
             actor=name,
             actor_type=kind,
@@ -313,14 +320,13 @@ def write_scenario(layers: dict, stem: str) -> WrittenScenario:
             exits=info.exits,
             junction_end_s_m=info.feature_s_m,
             actor_max_accel_mps2=TYPES[kind][4],
-            ego_road=ego_pose.road,
             ego_s_m=ego_pose.s,
             actor_length_m=TYPES[kind][0][0],
             actor_exits=_own_exits(info, pose.road),
             facing=pose.facing,
         )
         controller = None
-        if adv["spawn"]["relation"].startswith("roadside") and TYPES[kind][1] in ("pedestrian", "bicycle"):
+        if adv["spawn"]["relation"].startswith("roadside") and vulnerable(kind):
             net = net or _road_network(xodr_bytes)  # (only crossings ask the road model)
             road = net.road(pose.road)
             t0 = road.lane_center_t(pose.s, pose.lane_id) + pose.offset

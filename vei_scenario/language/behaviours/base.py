@@ -85,8 +85,7 @@ class ActorContext:
     trajectories: dict[str, xosc.Trajectory] = field(default_factory=dict)
     #: The actor's Performance maxAcceleration: a speed it is told to reach takes at least v / a.
     actor_max_accel_mps2: float = 0.0
-    #: The ego's road and its s on it (m); the actor's length (m).
-    ego_road: str = ""
+    #: The ego's s on its road (m); the actor's length (m).
     ego_s_m: float = 0.0
     actor_length_m: float = 4.6
     #: A junction approach's exits seen by the actor itself (left, right, straight → road id).
@@ -96,7 +95,7 @@ class ActorContext:
 
     def ego_to_junction_m(self) -> float:
         """The ego's distance to its junction entry (m), 0 on a map without one."""
-        return max(0.0, (self.junction_end_s_m or 0.0) - self.ego_s_m) if self.junction_end_s_m else 0.0
+        return max(0.0, self.junction_end_s_m - self.ego_s_m) if self.junction_end_s_m else 0.0
 
     def max_decel(self, wanted: float) -> float:
         """``wanted`` bounded by what the road's friction allows."""
