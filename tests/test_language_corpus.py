@@ -194,3 +194,21 @@ def test_a_description_with_nothing_to_hold_or_too_much_is_refused_by_name(text,
     with pytest.raises(NotUnderstood) as err:
         layers_from_text(text, 0)
     assert named in str(err.value)
+
+
+@pytest.mark.parametrize(
+    "spec",
+    [
+        {"kind": "straight", "lanes_per_direction": 3},
+        {"kind": "curve", "lanes_per_direction": 1, "curve_radius_m": 90.0},
+        {"kind": "crossroad", "lanes_per_direction": 2, "traffic_signals": False},
+        {"kind": "roundabout", "lanes_per_direction": 2},
+    ],
+    ids=["straight", "curve", "crossroad", "roundabout"],
+)
+def test_the_map_layout_known_before_writing_is_the_written_maps(spec):
+    """Background traffic and junction timing are placed from maps.layout before any road is built:
+    it must describe the map build_map then writes (road lengths, the feature's s, the arms)."""
+    from vei_scenario.language import maps
+
+    assert maps.layout(spec) == maps.build_map(spec)[1]

@@ -58,23 +58,39 @@ def _road(geometry, road_id: int, lanes: int):
     return xodr.create_road(geometry, road_id, left_lanes=lanes, right_lanes=lanes, lane_width=LANE_WIDTH_M)
 
 
+#: The curve: straight lead-in, spirals either side of an arc of this angle, straight run-out (m, rad).
+CURVE_LEAD_M, CURVE_SPIRAL_M, CURVE_ANGLE_RAD, CURVE_OUT_M = 120.0, 30.0, math.pi / 3, 150.0
+
+
 def _straight(lanes: int) -> tuple[xodr.OpenDrive, MapInfo]:
     odr = xodr.OpenDrive("straight")
     odr.add_road(_road(xodr.Line(ROAD_LENGTH_M), 1, lanes))
     odr.adjust_roads_and_lanes()
-    return odr, MapInfo("straight", lanes, "1", ROAD_LENGTH_M)
+    return odr, _straight_info(lanes)
+
+
+def _straight_info(lanes: int) -> MapInfo:
+    return MapInfo("straight", lanes, "1", ROAD_LENGTH_M)
 
 
 def _curve(lanes: int, radius: float) -> tuple[xodr.OpenDrive, MapInfo]:
     k = 1.0 / radius
-    lead, spiral, arc_angle = 120.0, 30.0, math.pi / 3
-    geometry = [xodr.Line(lead), xodr.Spiral(0.0, k, spiral), xodr.Arc(k, angle=arc_angle), xodr.Spiral(k, 0.0, spiral)]
-    geometry.append(xodr.Line(150.0))
-    length = lead + 2 * spiral + radius * arc_angle + 150.0
+    geometry = [
+        xodr.Line(CURVE_LEAD_M),
+        xodr.Spiral(0.0, k, CURVE_SPIRAL_M),
+        xodr.Arc(k, angle=CURVE_ANGLE_RAD),
+        xodr.Spiral(k, 0.0, CURVE_SPIRAL_M),
+        xodr.Line(CURVE_OUT_M),
+    ]
     odr = xodr.OpenDrive("curve")
     odr.add_road(_road(geometry, 1, lanes))
     odr.adjust_roads_and_lanes()
-    return odr, MapInfo("curve", lanes, "1", length, feature_s_m=lead, curve_start_s_m=lead)
+    return odr, _curve_info(lanes, radius)
+
+
+def _curve_info(lanes: int, radius: float) -> MapInfo:
+    length = CURVE_LEAD_M + 2 * CURVE_SPIRAL_M + radius * CURVE_ANGLE_RAD + CURVE_OUT_M
+    return MapInfo("curve", lanes, "1", length, feature_s_m=CURVE_LEAD_M, curve_start_s_m=CURVE_LEAD_M)
 
 
 def _signal(road_id: int, lanes: int) -> xodr.Signal:
@@ -185,6 +201,25 @@ def _roundabout(lanes: int) -> tuple[xodr.OpenDrive, MapInfo]:
         odr.add_junction_creator(junction)
     odr.adjust_roads_and_lanes()
     return odr, _four_arms("roundabout", lanes, {})
+
+
+def layout(spec: dict) -> MapInfo:
+    """The :class:`MapInfo` of ``environment.map`` without building its roads (what placement
+    needs to know before anything is written)."""
+    kind = spec["kind"]
+    lanes = int(spec.get("lanes_per_direction", 2))
+    if kind == "straight":
+        return _straight_info(lanes)
+    if kind == "curve":
+        return _curve_info(lanes, float(spec.get("curve_radius_m", 150.0)))
+    if kind in ("crossroad", "roundabout"):
+        signals = (
+            {str(i + 1): str(i + 1) for i in range(4)}
+            if kind == "crossroad" and spec.get("traffic_signals", True)
+            else {}
+        )
+        return _four_arms(kind, lanes, signals)
+    raise ValueError(f"map kind {kind!r} cannot be generated")
 
 
 def build_map(spec: dict) -> tuple[xodr.OpenDrive, MapInfo]:

@@ -15,8 +15,8 @@ import random
 from vei_scenario.language.behaviours import BEHAVIOURS
 from vei_scenario.language.behaviours.base import value
 from vei_scenario.language.layers import behaviour_nodes
-from vei_scenario.language.maps import ARM_LENGTH_M
-from vei_scenario.language.placement import DEFAULT_FEATURE_DISTANCE_M, junction_conflict_m, lane_id
+from vei_scenario.language.maps import ARM_LENGTH_M, layout
+from vei_scenario.language.placement import DEFAULT_FEATURE_DISTANCE_M, ego_pose, junction_conflict_m, lane_id
 from vei_scenario.language.reader import read as read_text
 from vei_scenario.language.reading import Reading
 from vei_scenario.language.scenario_writer import DEFAULT_RATE_HZ, TYPES, vulnerable
@@ -428,9 +428,7 @@ def _topology(nodes: list[tuple[str, dict]]) -> dict:
 def _junction_spawn(ego: dict, lanes: int, relation: str, speed: float, ego_speed: float, cfg: dict) -> float:
     """Distance before its junction entry that brings the actor to the ego's path ``arrival_gap_s``
     after the ego (both at constant speed)."""
-    from vei_scenario.language.maps import MapInfo
-
-    info = MapInfo("crossroad", lanes, "1", ARM_LENGTH_M, feature_s_m=ARM_LENGTH_M)
+    info = layout({"kind": "crossroad", "lanes_per_direction": lanes})
     ego_to, actor_to = junction_conflict_m(info, lane_id(lanes, ego["lane"]), relation, -lanes)
     t_ego = (float(ego.get("distance_m", DEFAULT_FEATURE_DISTANCE_M)) + ego_to) / max(ego_speed, 0.5)
     d = speed * (t_ego + float(cfg.get("arrival_gap_s", 0.5))) - actor_to
@@ -450,9 +448,8 @@ def background(rng: random.Random, layers: dict) -> list[dict]:
         return []
     env = layers["environment"]["map"]
     lanes = env.get("lanes_per_direction", 2)
-    length = (
-        ARM_LENGTH_M if env["kind"] in ("crossroad", "roundabout") else (400.0 if env["kind"] == "straight" else 480.0)
-    )
+    info = layout(env)  # (where the ego starts and how long its road is, as placement has it)
+    length = info.ego_road_length_m
     ego_lane = lane_id(lanes, layers["ego"]["lane"])
     used = {ego_lane}
     for adv in layers["adversaries"]:
@@ -484,8 +481,7 @@ def background(rng: random.Random, layers: dict) -> list[dict]:
     duration = float(layers.get("duration_s", MIN_DURATION_S))
 
     # where road users cross the road (s on the ego's road): background traffic never passes there
-    ego_layers = layers["ego"]
-    ego_s = (length - float(ego_layers["distance_m"])) if "distance_m" in ego_layers else min(120.0, length / 3)
+    ego_s = ego_pose(info, layers["ego"]).s
     crossings = [
         ego_s + float(a["spawn"].get("longitudinal_m", 0.0))
         for a in layers["adversaries"]
