@@ -51,7 +51,7 @@ def main() -> int:
         variants, _ = build_variants(xosc, vary, None, None)
         variants = variants[: args.variants]
         t_build = time.perf_counter() - t0
-        engine = "compiled kernel" if _native_engine(str(xosc), 0.01) is not None else "numpy batch engine"
+        engine = "sweep kernel" if _native_engine(str(xosc), 0.01) is not None else "interpreter"
         t0 = time.perf_counter()
         rows = evaluate_local(str(xosc), variants, 0.01)
         t_eval = time.perf_counter() - t0

@@ -1,16 +1,17 @@
-"""The compiled sweep kernel equals ``vei run``: the same metric values for every variant of a sample
-(collisions, near misses and clear passes), trajectories within 1e-9 m, and a sweep without a C
-compiler falls back to the numpy batch engine with the same catalog."""
+"""The sweep kernel equals ``vei run``: the same metric values for every variant of a sample (collisions,
+near misses and clear passes), with one scooter or several, trajectories within 1e-9 m; scenarios of
+another structure are left to the interpreter."""
 
 from __future__ import annotations
+
+from pathlib import Path
 
 import numpy as np
 import pytest
 
-from vei_scenario.batch import BatchScenario
-from vei_scenario.batch import native as native_mod
 from vei_scenario.batch.native import NativeBatch
 from vei_scenario.interpreter import run_scenario
+from vei_scenario.loop import LoopScene, NotALoop
 from vei_scenario.metrics import PairSeries, compute_metrics
 
 
@@ -45,7 +46,7 @@ def _variants(n: int, seed: int) -> list[dict[str, str]]:
 
 def test_kernel_metrics_equal_vei_run_metrics(xosc):
     variants = _variants(34, 3)
-    rows = NativeBatch(BatchScenario(xosc)).metrics(variants, threads=2)
+    rows = NativeBatch(LoopScene(xosc)).metrics(variants, threads=2)
     outcomes = set()
     for v, row in zip(variants, rows):
         single = compute_metrics(PairSeries.from_run(run_scenario(xosc, v)))
@@ -62,7 +63,7 @@ def test_kernel_gap_metrics_match_the_python_definitions_unrounded(xosc):
     from vei_scenario.metrics.series import MetricConfig
 
     variants = _variants(12, 5)
-    nb = NativeBatch(BatchScenario(xosc))
+    nb = NativeBatch(LoopScene(xosc))
     out, _ = nb.run(nb.prepare(variants), threads=1)
     cfg = MetricConfig()
     for i, v in enumerate(variants):
@@ -86,7 +87,7 @@ def test_sharing_between_variants_changes_no_output(xosc):
         for cap in ("true", "false")
     ]
     variants = grid + grid[::-1] + [{**g, "EgoCruiseSpeed": "6.5"} for g in grid[:6]]
-    nb = NativeBatch(BatchScenario(xosc))
+    nb = NativeBatch(LoopScene(xosc))
     out, traj = nb.run(nb.prepare(variants), threads=1, record=True)
     for i, v in enumerate(variants):
         alone, alone_traj = nb.run(nb.prepare([v]), threads=1, record=True)
@@ -98,7 +99,7 @@ def test_sharing_between_variants_changes_no_output(xosc):
 
 def test_kernel_trajectories_equal_vei_run(xosc):
     variants = _variants(10, 4)
-    nb = NativeBatch(BatchScenario(xosc))
+    nb = NativeBatch(LoopScene(xosc))
     _, traj = nb.run(nb.prepare(variants), threads=2, record=True)
     for i, v in enumerate(variants):
         single = run_scenario(xosc, v)
@@ -109,39 +110,39 @@ def test_kernel_trajectories_equal_vei_run(xosc):
                 np.testing.assert_allclose(traj[i, 5 * k + q], arr, rtol=0, atol=1e-9)
 
 
-def test_without_a_compiler_sweeps_fall_back_to_numpy_with_the_same_rows(xosc, tmp_path, monkeypatch):
-    from vei_scenario.sweep import evaluate
+def test_a_loop_with_more_road_users_runs_in_the_kernel_with_vei_runs_rows(compiled):
+    """The multi-scooter clip: the planner's threat and two more scooters that only replay their tracks
+    (they act on neither the ego nor the threat, and a row scores the pair)."""
+    xosc = next(p for p in compiled["multi_scooter"].written if p.name == "scenario.xosc")
+    scene = LoopScene(xosc)
+    assert len(scene.names) > 2
+    variants = [
+        {"TimeShift": ts, "RiderType": rt, "CapEnabled": cap}
+        for ts in ("-1", "0.5", "2")
+        for rt in ("replay", "normal", "aggressive")
+        for cap in ("true", "false")
+    ]
+    rows = NativeBatch(scene).metrics(variants, threads=2)
+    for v, row in zip(variants, rows):
+        assert row == compute_metrics(PairSeries.from_run(run_scenario(xosc, v))), v
+    assert 0 < sum(r["collision"] for r in rows) < len(rows)
 
-    variants = _variants(4, 5)
-    compiled_rows = evaluate.evaluate_local(str(xosc), variants, 0.01, workers=2)
-    monkeypatch.setattr(native_mod, "_LIB", [])
-    monkeypatch.setattr(evaluate, "_NATIVE", {})
-    monkeypatch.setenv("CC", str(tmp_path / "no-such-cc"))
-    monkeypatch.setenv("VEI_CACHE_DIR", str(tmp_path / "cache"))
-    monkeypatch.setenv("VEI_KERNEL", "cache")  # as if installed from a wheel built without a compiler
-    assert native_mod.load_kernel() is None
-    assert evaluate._native_engine(str(xosc), 0.01) is None
-    assert evaluate.evaluate_local(str(xosc), variants, 0.01, workers=1) == compiled_rows
 
+def test_other_structures_are_refused(compiled):
+    from vei_scenario.sweep.evaluate import _native_engine
 
-def test_kernel_built_at_install_is_used_unless_its_sources_changed(xosc, tmp_path, monkeypatch):
-    """pip install builds the kernel (setup.py); it is loaded while it matches the C sources shipped
-    beside it, and gives the rows of the kernel compiled on demand. Edited sources are compiled anew."""
-    from vei_scenario.core.sources import compiler
-
+    with pytest.raises(NotALoop):
+        LoopScene(Path(__file__).parent / "data" / "following_brake.xosc")
+    # a planner that also watches another scooter: that one would act on the ego
+    xosc = next(p for p in compiled["multi_scooter"].written if p.name == "scenario.xosc")
+    scene = LoopScene(xosc)
+    other = next(n for n in scene.names if n not in (scene.ego, scene.threat))
+    watch = f'<Property name="watchEntities" value="{other}"/><Property name="threatEntity"'
+    watched = xosc.parent / "watched.xosc"  # (beside its road network)
+    watched.write_text(xosc.read_text().replace('<Property name="threatEntity"', watch, 1))
     try:
-        compiler()
-    except Exception:
-        pytest.skip("no C compiler: the package was installed without its kernel")
-    packaged = native_mod.packaged_kernel()
-    assert packaged is not None and packaged.is_file(), "setup.py did not build vei_scenario.batch._kernel"
-    monkeypatch.setattr(native_mod, "_LIB", [])
-    assert native_mod.load_kernel()._name == str(packaged)
-    variants = _variants(6, 7)
-    rows = NativeBatch(BatchScenario(xosc)).metrics(variants)
-    monkeypatch.setattr(native_mod, "_LIB", [])
-    monkeypatch.setenv("VEI_CACHE_DIR", str(tmp_path / "cache"))
-    monkeypatch.setattr(native_mod, "source_digest", lambda src: "edited sources")
-    lib = native_mod.load_kernel()
-    assert lib is not None and lib._name != str(packaged) and str(tmp_path / "cache") in lib._name
-    assert NativeBatch(BatchScenario(xosc)).metrics(variants) == rows
+        with pytest.raises(NotALoop, match="watch the threat alone"):
+            LoopScene(watched)
+        assert _native_engine(str(watched), 0.01) is None  # its sweep runs the interpreter
+    finally:
+        watched.unlink()

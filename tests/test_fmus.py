@@ -22,9 +22,6 @@ from vei_scenario.fmu import MODELS, SPECS, build_fmus, cosimulate
 from vei_scenario.fmu.native import fmi_header_dir
 from vei_scenario.interpreter import run_scenario
 from vei_scenario.models.boxes import time_to_contact
-from vei_scenario.models.cap import CapParameters, cap_step_arrays
-from vei_scenario.models.sfm import SfmParameters, sfm_step_arrays
-from vei_scenario.models.vehicle import VehicleLimits, longitudinal_step_arrays
 from vei_scenario.study import CONFIGURATIONS
 
 HERE = Path(__file__).parent
@@ -196,40 +193,9 @@ def test_the_ssp_package_validates_against_the_ssp_schema(case_study, tmp_path):
         assert {"resources/vei_sfm.fmu", "resources/vei_cap.fmu", "resources/vei_ego.fmu"} <= set(zf.namelist())
 
 
-# --- C models against the numpy models -------------------------------------------------------------
+# --- the C boxes against the numpy boxes (the metrics' vectorised form) ----------------------------------
 class CBox(ctypes.Structure):
     _fields_ = [(n, ctypes.c_double) for n in ("x", "y", "yaw", "length", "width")]
-
-
-class CSfmParams(ctypes.Structure):
-    _fields_ = [(n, ctypes.c_double) for n in SfmParameters().properties()]
-
-
-class CSfmState(ctypes.Structure):
-    _fields_ = [
-        ("x", ctypes.c_double),
-        ("y", ctypes.c_double),
-        ("vx", ctypes.c_double),
-        ("vy", ctypes.c_double),
-        ("waypoint", ctypes.c_int),
-    ]
-
-
-class CCapParams(ctypes.Structure):
-    _fields_ = [(n, ctypes.c_double) for n in CapParameters().properties()]
-
-
-class CCapState(ctypes.Structure):
-    _fields_ = [
-        ("brake", ctypes.c_int),
-        ("integral", ctypes.c_double),
-        ("prev_error", ctypes.c_double),
-        ("has_prev", ctypes.c_int),
-    ]
-
-
-class CLongitudinal(ctypes.Structure):
-    _fields_ = [(n, ctypes.c_double) for n in ("s", "v", "a")]
 
 
 @pytest.fixture(scope="session")
@@ -263,81 +229,6 @@ def _close(a, b) -> None:
     assert np.array_equal(np.isfinite(a), finite)
     assert np.all(a[~finite] == b[~finite])
     assert np.all(np.abs(a[finite] - b[finite]) <= 1e-12 * np.maximum(1.0, np.abs(b[finite])))
-
-
-def test_c_sfm_equals_the_numpy_model_on_random_states(c_models):
-    rng = np.random.default_rng(5)
-    p = SfmParameters(v0_mps=4.3)
-    route = np.cumsum(rng.uniform(2, 8, size=(12, 2)), axis=0)
-    x, y = rng.uniform(-5, 60, N), rng.uniform(-5, 60, N)
-    speed, heading = rng.uniform(0, 8, N), rng.uniform(-math.pi, math.pi, N)
-    speed[::97] = 0.0
-    vx, vy = speed * np.cos(heading), speed * np.sin(heading)
-    wp = rng.integers(0, 12, N)
-    rep = rng.random(N) < 0.5
-    ego = (x + rng.uniform(-6, 6, N), y + rng.uniform(-6, 6, N), rng.uniform(-math.pi, math.pi, N))
-    ego[0][::211], ego[1][::211] = x[::211], y[::211]  # riders inside the ego box
-    ref = sfm_step_arrays(x, y, vx, vy, wp, route, p, rep, (*ego, np.full(N, 4.8), np.full(N, 1.9)), 0.01)
-    rx = (ctypes.c_double * 12)(*route[:, 0])
-    ry = (ctypes.c_double * 12)(*route[:, 1])
-    cp = CSfmParams(*p.properties().values())
-    got = np.empty((5, N))
-    for i in range(N):
-        st = CSfmState(x[i], y[i], vx[i], vy[i], int(wp[i]))
-        box = CBox(ego[0][i], ego[1][i], ego[2][i], 4.8, 1.9)
-        c_models.vei_sfm_step(
-            ctypes.byref(st), rx, ry, 12, ctypes.byref(cp), int(rep[i]), ctypes.byref(box), ctypes.c_double(0.01)
-        )
-        got[:, i] = st.x, st.y, st.vx, st.vy, st.waypoint
-    for k in range(5):
-        _close(got[k], ref[k])
-
-
-def test_c_planner_and_vehicle_equal_the_numpy_models_on_random_states(c_models):
-    rng = np.random.default_rng(6)
-    p = CapParameters()
-    brake = rng.random(N) < 0.4
-    integral = rng.uniform(-2, 2, N)
-    prev = np.where(rng.random(N) < 0.2, np.nan, rng.uniform(-3, 3, N))
-    cruise, v = rng.uniform(0, 15, N), rng.uniform(0, 15, N)
-    v[::53] = 0.0
-    ttc = np.where(rng.random(N) < 0.3, np.inf, rng.uniform(0, 10, N))
-    resume = np.where(rng.random(N) < 0.3, np.inf, rng.uniform(0, 10, N))
-    ref = cap_step_arrays(brake, integral, prev, p, cruise, v, ttc, 0.01, resume)
-    cp = CCapParams(*p.properties().values())
-    got = np.empty((5, N))
-    ds = ctypes.c_double()
-    for i in range(N):
-        st = CCapState(
-            int(brake[i]), integral[i], 0.0 if math.isnan(prev[i]) else prev[i], int(not math.isnan(prev[i]))
-        )
-        a = c_models.vei_cap_step(
-            ctypes.byref(st),
-            ctypes.byref(cp),
-            ctypes.c_double(cruise[i]),
-            ctypes.c_double(v[i]),
-            ctypes.c_double(ttc[i]),
-            ctypes.c_double(resume[i]),
-            ctypes.c_double(0.01),
-            ctypes.byref(ds),
-        )
-        got[:, i] = st.brake, st.integral, st.prev_error if st.has_prev else np.nan, a, ds.value
-    for k in (0, 1, 3, 4):
-        _close(got[k], ref[k])
-    np.testing.assert_array_equal(np.isnan(got[2]), np.isnan(ref[2]))
-    _close(got[2][~np.isnan(got[2])], ref[2][~np.isnan(ref[2])])
-
-    lim = VehicleLimits()
-    s, a0, cmd = rng.uniform(0, 100, N), rng.uniform(-9, 4, N), rng.uniform(-12, 6, N)
-    ref_v = longitudinal_step_arrays(s, v, a0, cmd, lim, 0.01)
-    cl = (ctypes.c_double * 3)(*[lim.max_accel_mps2, lim.max_decel_mps2, lim.jerk_max_mps3])
-    got_v = np.empty((3, N))
-    for i in range(N):
-        st = CLongitudinal(s[i], v[i], a0[i])
-        c_models.vei_longitudinal_step(ctypes.byref(st), ctypes.c_double(cmd[i]), cl, ctypes.c_double(0.01))
-        got_v[:, i] = st.s, st.v, st.a
-    for k in range(3):
-        _close(got_v[k], ref_v[k])
 
 
 def test_c_time_to_contact_equals_the_numpy_model_on_random_states(c_models):

@@ -9,9 +9,9 @@ import pytest
 import shapely
 
 from vei_scenario.core import _core
-from vei_scenario.interpreter.controllers import ROUTE_EXTENSION_M, WAYPOINT_SPACING_M
 from vei_scenario.models.boxes import time_to_contact
 from vei_scenario.models.cap import BRAKE, CRUISE, CapParameters, CapState, ThreatView, cap_step
+from vei_scenario.models.rider import ROUTE_EXTENSION_M, WAYPOINT_SPACING_M
 from vei_scenario.models.sfm import SfmParameters, SfmState, sfm_step
 from vei_scenario.models.vehicle import Longitudinal, VehicleLimits, longitudinal_step
 

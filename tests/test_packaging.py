@@ -1,4 +1,4 @@
-"""The wheel a user installs: a manylinux platform wheel with the compiled sweep kernel and the
+"""The wheel a user installs: a manylinux platform wheel with the compiled core (sweep kernel included) and the
 example clips inside, and `vei examples` copying those clips out so that they compile."""
 
 from __future__ import annotations
@@ -33,10 +33,11 @@ def wheel(tmp_path_factory) -> Path:
     return repaired
 
 
-def test_wheel_is_a_manylinux_platform_wheel_with_the_kernel(wheel):
+def test_wheel_is_a_manylinux_platform_wheel_with_the_core(wheel):
     assert "manylinux" in wheel.name
     names = zipfile.ZipFile(wheel).namelist()
-    assert any(n.startswith("vei_scenario/batch/_kernel") and n.endswith(".so") for n in names)
+    assert any(n.startswith("vei_scenario/core/_core") and n.endswith(".so") for n in names)
+    assert not any("_kernel" in n for n in names)  # the sweep kernel is part of the core
     tags = zipfile.ZipFile(wheel).read(next(n for n in names if n.endswith(".dist-info/WHEEL"))).decode()
     assert "Root-Is-Purelib: false" in tags and "manylinux" in tags
 

@@ -1,5 +1,5 @@
-"""Batch engine: many variants of a vei-compiled scenario at once, as arrays."""
+"""Sweeps of vei-compiled closed loops in the compiled core's kernel, many variants at once."""
 
-from vei_scenario.batch.engine import BatchResult, BatchScenario, batch_pair
+from vei_scenario.batch.native import NativeBatch
 
-__all__ = ["BatchResult", "BatchScenario", "batch_pair"]
+__all__ = ["NativeBatch"]

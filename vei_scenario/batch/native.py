@@ -1,37 +1,31 @@
-"""The compiled sweep kernel (``core/src/vei_batch.c`` over the core's C models): each variant of a
-vei-compiled two-entity scenario simulated and scored in C, several variants at a time on threads.
+"""The sweep kernel (``core/src/vei_batch.c``, part of the compiled core): every variant of a vei-compiled
+closed loop simulated and scored in C, several variants at a time on threads.
 
-It follows :class:`~vei_scenario.batch.engine.BatchScenario` step for step and the metric functions of
+What it runs is the loop as :class:`~vei_scenario.loop.LoopScene` reads it: the ego on its path with
+the planner and the rider on its track with the social force model, through the core's agents
+(``vei_ego_drive``, ``vei_rider_step``) and models, and the metric functions of
 :mod:`vei_scenario.metrics.definitions` operation for operation, so its rows equal ``vei run``'s
-(tests/test_batch_native.py). The kernel is built with the package (the extension
-``vei_scenario.batch._kernel``, see setup.py), so a wheel carries it. Where the build had no compiler,
-it is compiled once on first use with the system C compiler into a cache (``$VEI_CACHE_DIR``, default
-``~/.cache/vei-scenario``); without either, sweeps use the numpy batch engine. ``VEI_KERNEL=cache``
-skips the packaged one, ``VEI_KERNEL=numpy`` both.
+(tests/test_batch_native.py). Other road users of the scenario only replay their trajectories: the
+planner watches the threat alone and the rider is repelled by the ego alone (LoopScene refuses loops
+where it is otherwise), and a row scores the ego and the threat, so they cannot change a row and the
+kernel leaves them out. There is no second, numpy engine: the kernel is built with the core, without
+which nothing runs.
 """
 
 from __future__ import annotations
 
 import ctypes
-import hashlib
 import math
-import os
-import subprocess
-import tempfile
 import threading
 from concurrent.futures import ThreadPoolExecutor
-from pathlib import Path
 
 import numpy as np
 
-from vei_scenario.batch.engine import BatchScenario
-from vei_scenario.loop import NotALoop
+from vei_scenario.core import _core
+from vei_scenario.loop import LoopScene, NotALoop
 from vei_scenario.metrics.definitions import DIGITS, METRICS, ZONES
 from vei_scenario.metrics.series import MetricConfig, median
-
-SOURCES = ("vei_models.c", "vei_batch.c")
-HEADERS = ("vei_models.h", "vei_batch.h")
-FLAGS = ("-shared", "-fPIC", "-O3", "-std=c99", "-ffp-contract=off")
+from vei_scenario.models.rider import recorded_start_speed, rider_route
 
 _D = ctypes.c_double
 _P = ctypes.POINTER(ctypes.c_double)
@@ -94,24 +88,7 @@ _VARIANT_DTYPE = np.dtype(
 )
 
 
-def _cache_dir() -> Path:
-    return Path(os.environ.get("VEI_CACHE_DIR") or Path.home() / ".cache" / "vei-scenario")
-
-
 _LIB: list = []
-
-
-def packaged_kernel() -> Path | None:
-    """The kernel built with the package (the ``vei_scenario.batch._kernel`` extension), if it was."""
-    import importlib.util
-
-    spec = importlib.util.find_spec("vei_scenario.batch._kernel")
-    return Path(spec.origin) if spec is not None and spec.origin else None
-
-
-def source_digest(src: Path) -> str:
-    """What setup.py stamps into the packaged kernel: a hash of the C files it compiles."""
-    return hashlib.sha256(b"".join((src / n).read_bytes() for n in (*SOURCES, *HEADERS))).hexdigest()[:16]
 
 
 def _bind(lib):
@@ -124,47 +101,11 @@ def _bind(lib):
 
 
 def load_kernel():
-    """The compiled kernel: the one built with the package while it matches the C sources shipped
-    beside it, else one compiled on first use into the cache; None without a compiler."""
-    if _LIB:
-        return _LIB[0]
-    from vei_scenario.core.sources import compiler, source_dir
-    from vei_scenario.errors import VeiInputError
-
-    lib = None
-    choice = os.environ.get("VEI_KERNEL", "")
-    packaged = packaged_kernel() if choice not in ("cache", "numpy") else None
-    try:
-        if choice == "numpy":
-            raise OSError("VEI_KERNEL=numpy")
-        src = source_dir()
-        sources = source_digest(src)
-        if packaged is not None:
-            built = ctypes.CDLL(str(packaged))
-            built.vei_kernel_digest.restype = ctypes.c_char_p
-            if built.vei_kernel_digest().decode() == sources:
-                lib = _bind(built)
-                _LIB.append(lib)
-                return lib
-        cc = compiler()
-        key = hashlib.sha256(" ".join((sources, cc, *FLAGS)).encode()).hexdigest()[:16]
-        target = _cache_dir() / f"libvei_batch-{key}.so"
-        if not target.exists():
-            target.parent.mkdir(parents=True, exist_ok=True)
-            fd, tmp = tempfile.mkstemp(prefix=".libvei_batch-", suffix=".so", dir=target.parent)
-            os.close(fd)
-            proc = subprocess.run(
-                [cc, *FLAGS, "-o", tmp, *(str(src / s) for s in SOURCES), "-lm"], capture_output=True, text=True
-            )
-            if proc.returncode != 0:
-                Path(tmp).unlink(missing_ok=True)
-                raise OSError(proc.stderr)
-            os.replace(tmp, target)
-        lib = _bind(ctypes.CDLL(str(target)))
-    except (OSError, VeiInputError):
-        lib = None
-    _LIB.append(lib)
-    return lib
+    """The sweep kernel: ``vei_batch.c`` is part of the compiled core, whose shared object is loaded
+    a second time through ctypes for its plain C entry points (the kernel's structs, no Python objects)."""
+    if not _LIB:
+        _LIB.append(_bind(ctypes.CDLL(_core.__file__)))
+    return _LIB[0]
 
 
 def _ptr(a: np.ndarray):
@@ -172,16 +113,12 @@ def _ptr(a: np.ndarray):
 
 
 class NativeBatch:
-    """A :class:`BatchScenario` run by the compiled kernel: ``metrics(variants)`` gives ``vei run``'s
-    metric dicts, ``trajectories(variants)`` the recorded states (for tests)."""
+    """A :class:`LoopScene` run by the kernel: ``metrics(variants)`` gives ``vei run``'s metric dicts,
+    ``run(prepare(variants), record=True)`` also the ego's and the threat's recorded states."""
 
-    def __init__(self, batch: BatchScenario, cfg: MetricConfig | None = None) -> None:
-        if len(batch.names) != 2:
-            raise NotALoop("the compiled kernel runs the ego and one scooter")
+    def __init__(self, batch: LoopScene, cfg: MetricConfig | None = None) -> None:
         self.batch, self.cfg = batch, cfg or MetricConfig()
         self.lib = load_kernel()
-        if self.lib is None:
-            raise NotALoop("no C compiler for the compiled kernel")
         self._keep: list = []
         self._scene_cache: dict[tuple, _Scene] = {}
         self._scene_lock = threading.Lock()  # prepare() may run on several threads
@@ -200,7 +137,7 @@ class NativeBatch:
         )
 
     def _scene(self, duration: float, model: tuple = (), params=None) -> _Scene:
-        """The scene of a duration and a set of model parameters (``model``: BatchScenario.model_key)."""
+        """The scene of a duration and a set of model parameters (``model``: LoopScene.model_key)."""
         with self._scene_lock:
             return self._scene_cache.get((duration, model)) or self._build_scene(duration, model, params)
 
@@ -221,8 +158,6 @@ class NativeBatch:
         gc = self._arr(dx1 / (dx2 * (dx1 + dx2)))
         ego, threat = b.ego, b.threat
         ego_poly, track = b.paths[ego][0], b.paths[threat][0]
-        from vei_scenario.interpreter.controllers import recorded_start_speed, rider_route
-
         route = np.array(rider_route(track))
         rx, ry = self._arr(route[:, 0]), self._arr(route[:, 1])
         ie, it = b.names.index(ego), b.names.index(threat)
@@ -272,7 +207,7 @@ class NativeBatch:
 
     def prepare(self, variants: list[dict[str, str]]) -> tuple[_Scene, ctypes.Array]:
         """The kernel's input for ``variants`` (Python work: do it before handing runs to threads); they
-        share their model parameters (see BatchScenario.model_groups)."""
+        share their model parameters (see LoopScene.model_groups)."""
         b = self.batch
         r = b.resolve(variants)
         model, params = b.shared_model(variants)

@@ -6,6 +6,10 @@ coordinates and the projection of a world point onto a road (``road.c``, exposed
 :class:`_core.Road`). Every question a lane-keeping entity asks of its road each step is one C call;
 ``vei_scenario.roads.road_model`` parses the file (vei's hardened XML reader) and hands each road's
 records over once.
+The models and agents (``vei_models.c``: polyline, boxes, social force rider, planner, vehicle; the
+rider and ego agents of the closed loop) serve the interpreter through this module, and the sweep kernel
+(``vei_batch.c``, in the same shared object, called through ctypes by ``vei_scenario.batch``) and the
+FMUs (compiled into each FMU's binary) run the same sources.
 
 What stays in Python, and why: parsing and checking (error messages naming the line), the road
 network's topology (links, junctions, routes: asked once per road end, not per step), the

@@ -1,5 +1,5 @@
-"""Where the core's C sources are and which compiler builds them on demand (the FMU builder and the
-sweep kernel's fallback compile them where the package was installed without its built extensions)."""
+"""Where the core's C sources are and which compiler builds them on demand (the FMU builder compiles
+the models into each FMU's binary)."""
 
 from __future__ import annotations
 

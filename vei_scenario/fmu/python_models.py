@@ -13,9 +13,9 @@ from array import array
 
 from vei_scenario.core import _core
 from vei_scenario.fmu.variables import CAP, EGO, MAX_PATH, MAX_ROUTE, SFM, ModelSpec
-from vei_scenario.interpreter.controllers import recorded_start_speed
 from vei_scenario.interpreter.entities import Polyline
 from vei_scenario.models.cap import BRAKE, CapParameters, CapState, ThreatView, cap_step, threat_in_corridor
+from vei_scenario.models.rider import recorded_start_speed
 from vei_scenario.models.sfm import RIDER_TYPES, SfmParameters
 from vei_scenario.models.vehicle import VehicleLimits
 

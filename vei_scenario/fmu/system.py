@@ -82,7 +82,7 @@ def closed_loop(scenario: str | Path, values: dict[str, str] | None = None, dt: 
     r = b.resolve([values or {}])
     ego, threat = b.names.index(b.ego), b.names.index(b.threat)
     ego_poly, track = b.paths[b.ego][0], b.paths[b.threat][0]
-    from vei_scenario.interpreter.controllers import rider_route
+    from vei_scenario.models.rider import rider_route
 
     route = rider_route(track)
     for what, n, cap in (("ego path", len(ego_poly.xs), MAX_PATH), ("scooter track", len(track.xs), MAX_PATH)):

@@ -447,7 +447,7 @@ class FollowTrajectory(Action):
         self.done = e.follower is None or e.follower.finished(ctx.t, ctx.dt)
         # the path ends on a lane: the entity drives on along it by default (at the speed it had at
         # the end, a timed one too), as esmini's does. (An entity with one of vei's model controllers
-        # — a compiled ego or rider — keeps to what the batch engine, the kernel and the FMUs do; and
+        # — a compiled ego or rider — keeps to what the sweep kernel and the FMUs do; and
         # the roads are only loaded when they are needed.)
         if self.done and e.follower is not None and not e.controllers and ctx.road_file is not None:
             if ctx.roads is None:

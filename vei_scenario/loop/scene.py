@@ -2,7 +2,7 @@
 planner, the rider on its recorded track with the social force model, their Init poses and speeds, the
 acts' start and the storyboard's stop, and the XML attributes whose parameters a variant changes (the
 rider's timing offset, rider type, planner switch, cruise speed, model properties that read a
-parameter). The sweep engines (:mod:`vei_scenario.batch`) and the FMU system and SSP writer
+parameter). The sweep kernel (:mod:`vei_scenario.batch`) and the FMU system and SSP writer
 (:mod:`vei_scenario.fmu.system`) take it instead of reading the file again.
 
 Static parts come from the interpreter's own building of the scenario (so they are what ``vei run``
@@ -71,6 +71,9 @@ class LoopScene:
         ]
         if len(ego_ctrls) != 1 or len(threat_ctrls) != 1:
             raise NotALoop("expected one planner on the ego and one social force model on the threat")
+        if ego_ctrls[0].watch or ego_ctrls[0].follow_gap_s > 0 or threat_ctrls[0].ego_name != self.ego:
+            # (other road users would then act on the pair: the sweep kernel leaves them out)
+            raise NotALoop("the planner must watch the threat alone and the rider be repelled by the ego")
         self.cap_params = ego_ctrls[0].params
         self.sfm_params = threat_ctrls[0].params
         self.margin = self.cap_params.corridor_margin_m

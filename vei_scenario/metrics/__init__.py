@@ -2,8 +2,9 @@
 
 Every metric takes a :class:`~vei_scenario.metrics.series.PairSeries` (the ego and one other entity
 over time, with the derived gap and TTC series) and a :class:`~vei_scenario.metrics.series.MetricConfig`
-and reduces over time. ``compute_metrics`` scores one run, ``compute_metrics_batch`` a batch of
-variants with the same code; both report through one converter, so their values are identical.
+and reduces over time; ``compute_metrics`` scores one run. They are the metrics' definitions and the
+one vectorised form kept (numpy over a run's steps, or over variants and steps): the sweep kernel
+computes the same per step in C, pinned to them by tests/test_batch_native.py.
 """
 
 from __future__ import annotations
@@ -27,15 +28,4 @@ def compute_metrics(pair: PairSeries, cfg: MetricConfig | None = None, names: li
     return {n: to_python(n, METRICS[n](pair, cfg), (), who) for n in _selected(names)}
 
 
-def compute_metrics_batch(
-    pair: PairSeries, cfg: MetricConfig | None = None, names: list[str] | None = None
-) -> list[dict]:
-    """Metrics of every variant of a batch (arrays of shape (V, T)), one dict per variant."""
-    cfg = cfg or MetricConfig()
-    who = (pair.ego.name, pair.other.name)
-    raw = {n: METRICS[n](pair, cfg) for n in _selected(names)}
-    count = pair.gap.shape[0]
-    return [{n: to_python(n, r, (i,), who) for n, r in raw.items()} for i in range(count)]
-
-
-__all__ = ["METRICS", "MetricConfig", "PairSeries", "compute_metrics", "compute_metrics_batch"]
+__all__ = ["METRICS", "MetricConfig", "PairSeries", "compute_metrics"]

@@ -1,1 +1,1 @@
-"""Pure numerical models (no I/O): shared by compile, the interpreter, the batch engine and FMU tests."""
+"""Pure numerical models (no I/O): shared by compile, the interpreter, the sweep kernel and FMU tests."""

@@ -3,9 +3,8 @@
 A finite state machine: cruise (PID on speed towards the cruise speed along the ego's waypoints),
 emergency brake when the threat will be in the ego's path corridor and the gap to that conflict is
 below d_safe = v²/(2·a_max) + v·t_h + d0, resume when clear. The step is the compiled core's
-(``vei_models.c``, shared by the interpreter, the sweep kernel and the FMUs); :func:`cap_step_arrays`
-is its one vectorised form, for the numpy batch engine, held equal to it by tests. The compiler writes
-the parameters into the controller properties.
+(``vei_models.c``, shared by the interpreter, the sweep kernel and the FMUs). The compiler writes the
+parameters into the controller properties.
 """
 
 from __future__ import annotations
@@ -14,8 +13,6 @@ import math
 from array import array
 from dataclasses import asdict, astuple, dataclass
 from functools import cached_property
-
-import numpy as np
 
 from vei_scenario.core import _core
 from vei_scenario.models.properties import from_properties
@@ -113,7 +110,7 @@ def cap_step(
     resume_view: ThreatView | None = None,
 ) -> tuple[CapState, float, float]:
     """One planner step: (new state, acceleration command m/s², d_safe m) — the compiled core's
-    ``vei_cap_step``; :func:`cap_step_arrays` is the same step for arrays, held equal by tests.
+    ``vei_cap_step``.
 
     Cruise: PID on speed towards ``cruise_speed_mps``, limited to the comfort band, with conditional
     integration (anti-windup). Emergency brake when the threat will be in the ego's path corridor and
@@ -131,47 +128,3 @@ def cap_step(
         ttc, resume, dt,
     )  # fmt: skip
     return CapState(BRAKE if brake else CRUISE, integral, prev), a_cmd, d_safe
-
-
-def cap_step_arrays(
-    brake: np.ndarray,
-    integral: np.ndarray,
-    prev_error: np.ndarray,
-    params: CapParameters,
-    cruise_speed_mps: np.ndarray,
-    ego_speed_mps: np.ndarray,
-    time_to_conflict_s: np.ndarray,
-    dt: float,
-    resume_time_to_conflict_s: np.ndarray | None = None,
-) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    """:func:`cap_step` for many planners at once: (brake, integral, prev_error, a_cmd, d_safe).
-
-    ``brake`` is the mode as a boolean array, ``prev_error`` NaN where the scalar state has None,
-    ``time_to_conflict_s`` inf where there is no threat view. Same operations in the same order as the
-    scalar planner, which tests/test_models.py checks on 10 000 random states."""
-    v = np.asarray(ego_speed_mps, float)
-    ttc = np.asarray(time_to_conflict_s, float)
-    d_safe = v * v / (2 * params.a_max_mps2) + v * params.t_h_s + params.d0_m
-    in_path = ttc <= params.horizon_s
-    with np.errstate(invalid="ignore"):
-        gap = np.where(in_path, v * ttc, np.inf)
-    check = ttc if resume_time_to_conflict_s is None else np.asarray(resume_time_to_conflict_s, float)
-    was_brake = np.asarray(brake, bool)
-    now_brake = np.where(was_brake, check <= params.horizon_s, in_path & (gap < d_safe))
-    room = np.maximum(gap - params.d0_m, 0.05)
-    need = np.where(np.isfinite(gap), v * v / (2 * room), 0.0)
-    a_brake = np.where(v > 0, -np.minimum(params.a_max_mps2, np.maximum(need, params.max_cruise_decel_mps2)), 0.0)
-    error = np.asarray(cruise_speed_mps, float) - v
-    prev = np.asarray(prev_error, float)
-    deriv = np.where(np.isnan(prev), 0.0, (error - prev) / dt)
-    integral_next = integral + error * dt
-    a_raw = params.kp * error + params.ki * integral_next + params.kd * deriv
-    a_cruise = np.maximum(-params.max_cruise_decel_mps2, np.minimum(params.max_accel_mps2, a_raw))
-    integral_next = np.where(a_cruise != a_raw, integral, integral_next)
-    return (
-        now_brake,
-        np.where(now_brake, integral, integral_next),
-        np.where(now_brake, np.nan, error),
-        np.where(now_brake, a_brake, a_cruise),
-        d_safe,
-    )

@@ -3,8 +3,7 @@
 m·a = F_dest + F_rep, with F_dest = k (v_des − v), v_des = v0 (p_dest − p) / sqrt(|p_dest − p|² + σ²)
 and F_rep = A·exp(−d/B)·n (d: distance from the ego's closest box point to the scooter; n: unit vector
 from that point to the scooter). The step is the compiled core's (``vei_models.c``: the interpreter,
-the sweep kernel and the FMUs run the same code); :func:`sfm_step_arrays` is its one vectorised form,
-for the numpy batch engine, held equal to it by tests. The compiler writes the parameters into the
+the sweep kernel and the FMUs run the same code). The compiler writes the parameters into the
 scenario's controller properties.
 """
 
@@ -13,8 +12,6 @@ from __future__ import annotations
 from array import array
 from dataclasses import asdict, astuple, dataclass
 from functools import cached_property
-
-import numpy as np
 
 from vei_scenario.core import _core
 from vei_scenario.models.properties import from_properties
@@ -79,8 +76,7 @@ def sfm_step(
     ego_box: tuple[float, float, float, float, float] | None,
     dt: float,
 ) -> SfmState:
-    """One explicit step of the rider (the compiled core's ``vei_sfm_step``; :func:`sfm_step_arrays`
-    is the same step for arrays of riders, and tests hold the two equal).
+    """One explicit step of the rider (the compiled core's ``vei_sfm_step``).
 
     The rider steers at successive waypoints of its recorded route: the next one becomes the
     destination once it is within ``waypoint_radius_m`` of the current one or has passed it (its
@@ -98,80 +94,3 @@ def sfm_step(
         state.x, state.y, state.vx, state.vy, state.waypoint, rx, ry, params.packed, repulsive, ego_box, dt
     )
     return SfmState(x, y, vx, vy, wp)
-
-
-def sfm_step_arrays(
-    x: np.ndarray,
-    y: np.ndarray,
-    vx: np.ndarray,
-    vy: np.ndarray,
-    wp: np.ndarray,
-    route: np.ndarray,
-    params: SfmParameters,
-    repulsive: np.ndarray | bool,
-    ego_box: tuple | None,
-    dt: float,
-) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    """:func:`sfm_step` for many scooters at once (numpy arrays; ``route`` an (N, 2) array shared by
-    all; ``ego_box`` (x, y, yaw, length, width) arrays). The same operations in the same order, so the
-    two agree to rounding (tests/test_models.py compares them on 10 000 random states)."""
-    x, y, vx, vy = (np.asarray(a, float) for a in (x, y, vx, vy))
-    wp = np.asarray(wp, np.int64).copy()
-    last = route.shape[0] - 1
-    for _ in range(route.shape[0]):
-        can = wp < last
-        if not can.any():
-            break
-        w, n = route[wp], route[np.minimum(wp + 1, last)]
-        near = np.hypot(w[..., 0] - x, w[..., 1] - y) <= params.waypoint_radius_m
-        passed = (x - w[..., 0]) * (n[..., 0] - w[..., 0]) + (y - w[..., 1]) * (n[..., 1] - w[..., 1]) > 0
-        advance = can & (near | passed)
-        if not advance.any():
-            break
-        wp = wp + advance
-    dest = route[wp]
-    ex, ey = dest[..., 0] - x, dest[..., 1] - y
-    scale = params.v0_mps / np.sqrt(ex * ex + ey * ey + params.sigma_m * params.sigma_m)
-    k = params.k_n_s_per_m
-    fx = k * (ex * scale - vx)
-    fy = k * (ey * scale - vy)
-    if ego_box is not None:
-        bx, by, byaw, bl, bw = (np.asarray(v, float) for v in ego_box)
-        c, s = np.cos(byaw), np.sin(byaw)
-        dx, dy = x - bx, y - by
-        lx = np.maximum(-0.5 * bl, np.minimum(0.5 * bl, c * dx + s * dy))
-        ly = np.maximum(-0.5 * bw, np.minimum(0.5 * bw, -s * dx + c * dy))
-        qx, qy = bx + c * lx - s * ly, by + s * lx + c * ly
-        nx, ny = x - qx, y - qy
-        d = np.hypot(nx, ny)
-        outside = d > 1e-9
-        with np.errstate(divide="ignore", invalid="ignore"):
-            mag = params.repulsion_n * np.exp(-d / params.repulsion_range_m)
-            cx, cy = x - bx, y - by
-            cn = np.hypot(cx, cy)
-            cn = np.where(cn == 0, 1.0, cn)
-            rx = np.where(outside, mag * nx / d, params.repulsion_n * cx / cn)
-            ry = np.where(outside, mag * ny / d, params.repulsion_n * cy / cn)
-        on = np.asarray(repulsive, bool)
-        fx = np.where(on, fx + rx, fx)
-        fy = np.where(on, fy + ry, fy)
-    ax, ay = fx / params.mass_kg, fy / params.mass_kg
-    speed = np.hypot(vx, vy)
-    moving = speed > 1e-9
-    with np.errstate(divide="ignore", invalid="ignore"):
-        ux, uy = vx / speed, vy / speed
-        a_long = ax * ux + ay * uy
-        a_lat_x, a_lat_y = ax - a_long * ux, ay - a_long * uy
-        a_long = np.maximum(-params.max_decel_mps2, np.minimum(params.max_accel_mps2, a_long))
-        ax = np.where(moving, a_long * ux + a_lat_x, ax)
-        ay = np.where(moving, a_long * uy + a_lat_y, ay)
-        a = np.hypot(ax, ay)
-        over = a > params.max_decel_mps2
-        ax = np.where(over, ax * params.max_decel_mps2 / a, ax)
-        ay = np.where(over, ay * params.max_decel_mps2 / a, ay)
-        vx1, vy1 = vx + ax * dt, vy + ay * dt
-        v = np.hypot(vx1, vy1)
-        fast = v > params.max_speed_mps
-        vx1 = np.where(fast, vx1 * params.max_speed_mps / v, vx1)
-        vy1 = np.where(fast, vy1 * params.max_speed_mps / v, vy1)
-    return x + 0.5 * (vx + vx1) * dt, y + 0.5 * (vy + vy1) * dt, vx1, vy1, wp

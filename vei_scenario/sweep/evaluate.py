@@ -34,63 +34,32 @@ def evaluate_variant(scenario: str, values: dict[str, str], dt: float, zone_ttc:
         return {"status": "error", "error": f"{type(exc).__name__}: {exc}", "metrics": {}}
 
 
-_BATCH: dict[tuple[str, float], object] = {}
 _NATIVE: dict[tuple[str, float, str], object] = {}
 
 
 def _native_engine(scenario: str, dt: float, zone_ttc: str = "2d"):
-    """The compiled kernel for a vei-compiled two-entity scenario (cached per process), or None."""
-    from vei_scenario.batch.native import NativeBatch
-    from vei_scenario.loop import NotALoop
+    """The sweep kernel for a vei-compiled closed loop (cached per process), or None for other files."""
+    from vei_scenario.batch import NativeBatch
+    from vei_scenario.loop import LoopScene, NotALoop
 
     key = (scenario, dt, zone_ttc)
     if key not in _NATIVE:
-        engine = _batch_engine(scenario, dt)
         try:
-            _NATIVE[key] = NativeBatch(engine, MetricConfig(zone_ttc=zone_ttc)) if engine is not None else None
-        except NotALoop:
+            _NATIVE[key] = NativeBatch(LoopScene(scenario, dt), MetricConfig(zone_ttc=zone_ttc))
+        except (NotALoop, VeiError):
             _NATIVE[key] = None
     return _NATIVE[key]
 
 
-def _batch_engine(scenario: str, dt: float):
-    """The batch engine for a vei-compiled scenario (cached per process), or None for other files."""
-    from vei_scenario.batch import BatchScenario
-    from vei_scenario.loop import NotALoop
-
-    key = (scenario, dt)
-    if key not in _BATCH:
-        try:
-            _BATCH[key] = BatchScenario(scenario, dt)
-        except (NotALoop, VeiError):
-            _BATCH[key] = None
-    return _BATCH[key]
-
-
 def _chunk(scenario: str, chunk: list[dict[str, str]], dt: float, zone_ttc: str = "2d") -> list[dict]:
-    """Rows of a chunk: vei-compiled scenarios through the compiled kernel or the numpy batch engine
-    (rows identical to ``vei run``: tests/test_batch_native.py, tests/test_batch_engine.py),
-    everything else and invalid values through the interpreter."""
-    engine = _batch_engine(scenario, dt)
+    """Rows of a chunk: a vei-compiled loop's valid variants through the sweep kernel (rows identical
+    to ``vei run``'s: tests/test_batch_native.py), everything else and invalid values through the
+    interpreter, variant by variant."""
     native = _native_engine(scenario, dt, zone_ttc)
     rows: list[dict | None] = [None] * len(chunk)
-    ok = [i for i, v in enumerate(chunk) if engine.accepts(v)] if engine is not None else []
-    if ok:
-        accepted = [chunk[i] for i in ok]
-        if native is not None:
-            metrics = native.metrics(accepted)
-        else:
-            from vei_scenario.batch import batch_pair
-            from vei_scenario.metrics import compute_metrics_batch
-
-            cfg = MetricConfig(zone_ttc=zone_ttc)
-            metrics: list = [None] * len(accepted)
-            # one run per set of model parameters
-            for group in engine.model_groups(list(range(len(accepted))), accepted, len(accepted)):
-                batch = compute_metrics_batch(batch_pair(engine.run([accepted[j] for j in group])), cfg)
-                for k, m in zip(group, batch):
-                    metrics[k] = m
-        for i, m in zip(ok, metrics):
+    if native is not None:
+        ok = [i for i, v in enumerate(chunk) if native.batch.accepts(v)]
+        for i, m in zip(ok, native.metrics([chunk[i] for i in ok])):
             rows[i] = {"status": "ok", "error": "", "metrics": m}
     return [r if r is not None else evaluate_variant(scenario, v, dt, zone_ttc) for r, v in zip(rows, chunk)]
 

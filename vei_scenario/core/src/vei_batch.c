@@ -1,6 +1,7 @@
-/* vei_batch.c: see vei_batch.h. The simulation follows vei_scenario.batch.engine.BatchScenario.run
- * (itself equal to vei run), the metrics vei_scenario.metrics.definitions, operation for operation;
- * tests/test_batch_native.py compares both with vei run. */
+/* vei_batch.c: see vei_batch.h. The simulation follows vei run's interpreter on the loop that
+ * vei_scenario.loop.LoopScene reads (through the core's agents), the metrics
+ * vei_scenario.metrics.definitions, operation for operation; tests/test_batch_native.py compares both
+ * with vei run. */
 #include "vei_batch.h"
 
 #include <math.h>

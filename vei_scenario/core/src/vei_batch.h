@@ -1,6 +1,7 @@
-/* vei_batch.h: the sweep kernel: many variants of a vei-compiled two-entity scenario (ego with the
- * collision-avoidance planner, one scooter with the social force model), each simulated step by step
- * as vei run does and scored with vei run's metrics, in compiled loops (vei_scenario.batch.native).
+/* vei_batch.h: the sweep kernel: many variants of a vei-compiled closed loop (ego with the
+ * collision-avoidance planner, the threat scooter with the social force model; other road users only
+ * replay and do not enter a row), each simulated step by step as vei run does and scored with vei run's
+ * metrics, in compiled loops (vei_scenario.batch.native).
  */
 #ifndef VEI_BATCH_H
 #define VEI_BATCH_H
