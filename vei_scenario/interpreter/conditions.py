@@ -5,6 +5,7 @@ A new condition is one class and one line in ``VALUE_CONDITIONS`` or ``ENTITY_CO
 from __future__ import annotations
 
 import math
+import operator
 
 from vei_scenario.interpreter.context import Context
 from vei_scenario.models.angles import wrap_angle
@@ -12,20 +13,40 @@ from vei_scenario.models.boxes import box_distance, time_to_contact
 from vei_scenario.openscenario import STORYBOARD_ELEMENT_TYPES
 
 
+def _equal(a: float, b: float) -> bool:
+    return abs(a - b) <= 1e-9 * max(1.0, abs(b))
+
+
+def _not_equal(a: float, b: float) -> bool:
+    return abs(a - b) > 1e-9 * max(1.0, abs(b))
+
+
+#: OpenSCENARIO's Rule as a comparison of (value, threshold); equality within 1e-9 (relative).
+RULES = {
+    "greaterThan": operator.gt,
+    "lessThan": operator.lt,
+    "greaterOrEqual": operator.ge,
+    "lessOrEqual": operator.le,
+    "equalTo": _equal,
+    "notEqualTo": _not_equal,
+}
+
+
+def comparator(rule: str):
+    """The comparison of ``rule``, looked up once when a condition is built (conditions test every
+    step); an unknown rule raises ValueError when it is used, as :func:`compare` does."""
+    found = RULES.get(rule)
+    if found is not None:
+        return found
+
+    def unknown(a: float, b: float) -> bool:
+        raise ValueError(rule)
+
+    return unknown
+
+
 def compare(rule: str, a: float, b: float) -> bool:
-    if rule == "greaterThan":
-        return a > b
-    if rule == "lessThan":
-        return a < b
-    if rule == "greaterOrEqual":
-        return a >= b
-    if rule == "lessOrEqual":
-        return a <= b
-    if rule == "equalTo":
-        return abs(a - b) <= 1e-9 * max(1.0, abs(b))
-    if rule == "notEqualTo":
-        return abs(a - b) > 1e-9 * max(1.0, abs(b))
-    raise ValueError(rule)
+    return comparator(rule)(a, b)
 
 
 # --- conditions -------------------------------------------------------------------------------------
@@ -41,9 +62,10 @@ class Condition:
 class SimulationTime(Condition):
     def __init__(self, el, ctx: Context) -> None:
         self.value, self.rule = float(el.get("value")), el.get("rule")
+        self.cmp = comparator(self.rule)
 
     def test(self, ctx: Context) -> bool:
-        return compare(self.rule, ctx.t, self.value)
+        return self.cmp(ctx.t, self.value)
 
 
 class ParameterCondition(Condition):
@@ -211,6 +233,7 @@ class TimeToCollision(_EntityCondition):
     def __init__(self, el, ctx, triggering, rule) -> None:
         super().__init__(el, ctx, triggering, rule)
         self.value, self.rule = float(el.get("value")), el.get("rule")
+        self.cmp = comparator(self.rule)
         self.freespace = el.get("freespace", "false") == "true"
         self.kind = _distance_kind(ctx, el)
         target = el.find("TimeToCollisionConditionTarget")
@@ -240,13 +263,14 @@ class TimeToCollision(_EntityCondition):
 
     def for_entity(self, ctx: Context, name: str) -> bool:
         ttc = self.ttc(ctx, name)
-        return math.isfinite(ttc) and compare(self.rule, ttc, self.value)
+        return math.isfinite(ttc) and self.cmp(ttc, self.value)
 
 
 class RelativeDistance(_EntityCondition):
     def __init__(self, el, ctx, triggering, rule) -> None:
         super().__init__(el, ctx, triggering, rule)
         self.value, self.rule = float(el.get("value")), el.get("rule")
+        self.cmp = comparator(self.rule)
         self.freespace = el.get("freespace", "false") == "true"
         self.kind = _distance_kind(ctx, el)
         self.target = el.get("entityRef")
@@ -254,7 +278,7 @@ class RelativeDistance(_EntityCondition):
 
     def for_entity(self, ctx: Context, name: str) -> bool:
         d, _ = _relative(ctx, self.el, ctx.entities[name], ctx.entities[self.target], self.kind, self.freespace)
-        return compare(self.rule, d, self.value)
+        return self.cmp(d, self.value)
 
 
 class _PositionTarget:
@@ -278,6 +302,7 @@ class Distance(_EntityCondition):
     def __init__(self, el, ctx, triggering, rule) -> None:
         super().__init__(el, ctx, triggering, rule)
         self.value, self.rule = float(el.get("value")), el.get("rule")
+        self.cmp = comparator(self.rule)
         self.freespace = el.get("freespace", "false") == "true"
         self.kind = _distance_kind(ctx, el)
         if el.find("Position") is None:
@@ -288,13 +313,13 @@ class Distance(_EntityCondition):
         e, p = ctx.entities[name], self.target(ctx)
         if self.kind == "alongRoad" and p.lane is not None and e.lane is not None and e.lane.road == p.lane.road:
             d = abs(p.lane.s - e.lane.s) - (0.5 * e.length if self.freespace else 0.0)
-            return compare(self.rule, max(d, 0.0), self.value)
+            return self.cmp(max(d, 0.0), self.value)
         if self.kind == "alongRoad":
             kind = "longitudinal"
         else:
             kind = self.kind
         d, _ = _relative(ctx, self.el, e, p, kind, self.freespace)
-        return compare(self.rule, d, self.value)
+        return self.cmp(d, self.value)
 
 
 class Speed(_EntityCondition):
@@ -305,9 +330,10 @@ class Speed(_EntityCondition):
     def __init__(self, el, ctx, triggering, rule) -> None:
         super().__init__(el, ctx, triggering, rule)
         self.value, self.rule = float(el.get("value")), el.get("rule")
+        self.cmp = comparator(self.rule)
 
     def for_entity(self, ctx: Context, name: str) -> bool:
-        return compare(self.rule, getattr(ctx.entities[name], self.quantity), self.value)
+        return self.cmp(getattr(ctx.entities[name], self.quantity), self.value)
 
 
 class ReachPosition(_EntityCondition):
@@ -346,10 +372,11 @@ class RelativeSpeed(_EntityCondition):
     def __init__(self, el, ctx, triggering, rule) -> None:
         super().__init__(el, ctx, triggering, rule)
         self.value, self.rule, self.target = float(el.get("value")), el.get("rule"), el.get("entityRef")
+        self.cmp = comparator(self.rule)
         known_entity(ctx, el, self.target)
 
     def for_entity(self, ctx: Context, name: str) -> bool:
-        return compare(self.rule, ctx.entities[name].speed - ctx.entities[self.target].speed, self.value)
+        return self.cmp(ctx.entities[name].speed - ctx.entities[self.target].speed, self.value)
 
 
 class Acceleration(Speed):
@@ -362,6 +389,7 @@ class TimeHeadway(_EntityCondition):
     def __init__(self, el, ctx, triggering, rule) -> None:
         super().__init__(el, ctx, triggering, rule)
         self.value, self.rule, self.target = float(el.get("value")), el.get("rule"), el.get("entityRef")
+        self.cmp = comparator(self.rule)
         self.freespace = el.get("freespace", "false") == "true"
         # OpenSCENARIO 1.0 alongRoute: true along the road (longitudinal), false straight (euclidean)
         along = el.get("alongRoute")
@@ -378,7 +406,7 @@ class TimeHeadway(_EntityCondition):
             return False
         if e.speed <= 1e-9:
             return False
-        return compare(self.rule, d / e.speed, self.value)
+        return self.cmp(d / e.speed, self.value)
 
 
 class _HeldCondition(_EntityCondition):

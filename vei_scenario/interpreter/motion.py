@@ -31,6 +31,13 @@ def lane_keep(e, ds: float, ctx) -> None:
     st = e.lane
     road = net.road(st.road)
     forward = st.forward
+    if e.lateral is None:  # most steps: on along the same road, in one call of the core
+        step = road.core.lane_advance(st.s, st.lane, st.offset, ds, forward)
+        if step is not None:
+            st.s, st.lane, e.x, e.y, base = step
+            base = base if forward else base + math.pi
+            e.yaw = math.atan2(math.sin(base + st.heading), math.cos(base + st.heading))
+            return
     # ds is travelled along the lane: scale to reference-line arc length where the lane is offset on a curve
     stretch = road.lane_stretch(st.s, st.lane, st.offset)
     if e.lateral is not None and e.lateral.projects_step:  # only the along-road part of the step moves s

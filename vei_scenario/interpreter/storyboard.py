@@ -55,6 +55,25 @@ class ConditionRunner:
             raise ctx.error(el, "condition without ByValueCondition or ByEntityCondition")
         if self.plain:  # no edge, no delay: evaluating is the test itself (one call less each step)
             self.evaluate = self.condition.test
+        elif self.delay <= 0 and self.edge in self.EDGES:  # an edge alone: its own method, no branching
+            self.evaluate = getattr(self, self.EDGES[self.edge])
+
+    EDGES = {"rising": "_rising", "falling": "_falling", "risingOrFalling": "_rising_or_falling"}
+
+    def _rising(self, ctx: Context) -> bool:
+        raw = self.condition.test(ctx)
+        prev, self.prev = self.prev, raw
+        return raw and prev is False
+
+    def _falling(self, ctx: Context) -> bool:
+        raw = self.condition.test(ctx)
+        prev, self.prev = self.prev, raw
+        return (not raw) and prev is True
+
+    def _rising_or_falling(self, ctx: Context) -> bool:
+        raw = self.condition.test(ctx)
+        prev, self.prev = self.prev, raw
+        return prev is not None and raw != prev
 
     def evaluate(self, ctx: Context) -> bool:
         raw = self.condition.test(ctx)
@@ -84,6 +103,8 @@ class Trigger:
         self.groups = [
             [ConditionRunner(c, ctx) for c in g.iterfind("Condition")] for g in el.iterfind("ConditionGroup")
         ]
+        if len(self.groups) == 1 and len(self.groups[0]) == 1:  # the common trigger: its one condition
+            self.evaluate = self.groups[0][0].evaluate
 
     def evaluate(self, ctx: Context) -> bool:
         fired = False

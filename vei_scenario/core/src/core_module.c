@@ -196,6 +196,26 @@ static PyObject *Road_lane_on(RoadObject *self, PyObject *const *args, Py_ssize_
     return PyLong_FromLong(vr_lane_on(&self->r, s0, s1, (int)lane, same));
 }
 
+/* A lane-keeping step that stays on the road, in one call: the stretch, the new s, the lane there and
+ * its pose; None when the step leaves the road (the caller crosses to the next road itself). */
+static PyObject *Road_lane_advance(RoadObject *self, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (!args_ok(nargs, 5, "lane_advance")) return NULL;
+    ARG_D(0, s);
+    ARG_I(1, lane);
+    ARG_D(2, offset);
+    ARG_D(3, ds);
+    int forward = PyObject_IsTrue(args[4]);
+    if (forward < 0) return NULL;
+    double stretch, out[4];
+    if (vr_lane_stretch(&self->r, s, (int)lane, offset, &stretch) < 0) return no_lane(lane);
+    double s1 = s + (forward ? ds : -ds) / stretch;
+    if (s1 > self->r.length || s1 < 0.0) Py_RETURN_NONE;
+    int lane1 = vr_lane_on(&self->r, s, s1, (int)lane, 1);
+    if (vr_lane_pose(&self->r, s1, lane1, offset, out) < 0) return no_lane(lane1);
+    return Py_BuildValue("(diddd)", s1, lane1, out[0], out[1], out[2]);
+}
+
 static PyObject *Road_locate(RoadObject *self, PyObject *const *args, Py_ssize_t nargs)
 {
     if (!args_ok(nargs, 2, "locate")) return NULL;
@@ -220,6 +240,7 @@ static PyMethodDef Road_methods[] = {
     M(lane_pose, "lane_pose(s, lane, offset) -> (x, y, lane heading, t) of a road user keeping the lane"),
     M(lane_stretch, "lane_stretch(s, lane, offset) -> reference-line metres per metre along the lane"),
     M(lane_on, "lane_on(s0, s1, lane, same_road) -> the lane id at s1 (links, lane ends, merges)"),
+    M(lane_advance, "lane_advance(s, lane, offset, ds, forward) -> (s, lane, x, y, lane heading), None off the road"),
     M(locate, "locate(x, y) -> (s, t, along, distance, lane or None) of the nearest reference point"),
     {NULL, NULL, 0, NULL},
 };
