@@ -336,17 +336,22 @@ class Simulation:
         reason = f"time limit {self.max_time:g} s"
         if not running:
             reason = "storyboard stop trigger"
+        pending = [a for a in self.init_actions if not a.done]
+        entities = list(ctx.entities.values())
         while running and ctx.t < self.max_time - 1e-9:
             if not self.storyboard.step():
                 reason = "storyboard stop trigger"
                 break
-            for a in self.init_actions:
-                if not a.done:
-                    a.update(ctx)
-            for e in ctx.entities.values():
+            if pending:  # Init actions still acting (a done one never acts again)
+                for a in pending:
+                    if not a.done:
+                        a.update(ctx)
+                pending = [a for a in pending if not a.done]
+            for e in entities:
                 e.step_speed = e.speed
-            for a in list(ctx.stepping):
-                a.step(ctx)
+            if ctx.stepping:
+                for a in list(ctx.stepping):
+                    a.step(ctx)
             if self.coupling == "jacobi":
                 ctx.snapshot = {n: copy.copy(e) for n, e in ctx.entities.items()}
             for n in names:
@@ -396,6 +401,9 @@ class Simulation:
         ctx = self.ctx
         present = [e for e in ctx.entities.values() if not e.deleted]
         now: set[frozenset[str]] = set()
+        if len(present) < 2:  # (nobody to collide with)
+            ctx.colliding = now
+            return
         for i, j in _core.overlapping(_core.entity_boxes(present)):  # every pair, in C (the core's boxes)
             a, b = present[i].name, present[j].name
             pair = frozenset((a, b))
