@@ -116,8 +116,8 @@ class NativeBatch:
     """A :class:`LoopScene` run by the kernel: ``metrics(variants)`` gives ``vei run``'s metric dicts,
     ``run(prepare(variants), record=True)`` also the ego's and the threat's recorded states."""
 
-    def __init__(self, batch: LoopScene, cfg: MetricConfig | None = None) -> None:
-        self.batch, self.cfg = batch, cfg or MetricConfig()
+    def __init__(self, scene: LoopScene, cfg: MetricConfig | None = None) -> None:
+        self.scene, self.cfg = scene, cfg or MetricConfig()
         self.lib = load_kernel()
         self._keep: list = []
         self._scene_cache: dict[tuple, _Scene] = {}
@@ -142,7 +142,7 @@ class NativeBatch:
             return self._scene_cache.get((duration, model)) or self._build_scene(duration, model, params)
 
     def _build_scene(self, duration: float, model: tuple = (), params=None) -> _Scene:
-        b, cfg, dt = self.batch, self.cfg, self.batch.dt
+        b, cfg, dt = self.scene, self.cfg, self.scene.dt
         if not duration >= 0:
             raise NotALoop("negative duration")
         times = [0.0]
@@ -208,7 +208,7 @@ class NativeBatch:
     def prepare(self, variants: list[dict[str, str]]) -> tuple[_Scene, ctypes.Array]:
         """The kernel's input for ``variants`` (Python work: do it before handing runs to threads); they
         share their model parameters (see LoopScene.model_groups)."""
-        b = self.batch
+        b = self.scene
         r = b.resolve(variants)
         model, params = b.shared_model(variants)
         arr = (_Variant * len(variants))()
@@ -249,14 +249,14 @@ class NativeBatch:
     def metrics(self, variants: list[dict[str, str]], threads: int = 1) -> list[dict]:
         """``vei run``'s metrics of every variant (the same dicts as :func:`compute_metrics`)."""
         rows: list[dict | None] = [None] * len(variants)
-        for task in self.batch.model_groups(list(range(len(variants))), variants, len(variants) or 1):
+        for task in self.scene.model_groups(list(range(len(variants))), variants, len(variants) or 1):
             out, _ = self.run(self.prepare([variants[i] for i in task]), threads)
             for i, m in zip(task, self.rows(out)):
                 rows[i] = m
         return rows
 
     def rows(self, out: np.ndarray) -> list[dict]:
-        return metric_rows(out, (self.batch.ego, self.batch.threat), self.lib.columns)
+        return metric_rows(out, (self.scene.ego, self.scene.threat), self.lib.columns)
 
 
 def metric_rows(out: np.ndarray, who: tuple[str, str], index: dict[str, int]) -> list[dict]:
