@@ -15,6 +15,7 @@ which nothing runs.
 from __future__ import annotations
 
 import ctypes
+import functools
 import math
 import threading
 from concurrent.futures import ThreadPoolExecutor
@@ -88,24 +89,17 @@ _VARIANT_DTYPE = np.dtype(
 )
 
 
-_LIB: list = []
-
-
-def _bind(lib):
+@functools.cache
+def load_kernel():
+    """The sweep kernel: ``vei_batch.c`` is part of the compiled core, whose shared object is loaded
+    a second time through ctypes for its plain C entry points (the kernel's structs, no Python objects)."""
+    lib = ctypes.CDLL(_core.__file__)
     lib.vei_batch_run.argtypes = [ctypes.POINTER(_Scene), ctypes.POINTER(_Variant), ctypes.c_int, _P, _P]
     lib.vei_batch_run.restype = ctypes.c_int
     lib.vei_batch_outputs.restype = ctypes.c_char_p
     # the kernel's output columns by the name of the metric each holds (vei_batch.h's one list)
     lib.columns = {name: k for k, name in enumerate(lib.vei_batch_outputs().decode().rstrip(",").split(","))}
     return lib
-
-
-def load_kernel():
-    """The sweep kernel: ``vei_batch.c`` is part of the compiled core, whose shared object is loaded
-    a second time through ctypes for its plain C entry points (the kernel's structs, no Python objects)."""
-    if not _LIB:
-        _LIB.append(_bind(ctypes.CDLL(_core.__file__)))
-    return _LIB[0]
 
 
 def _ptr(a: np.ndarray):

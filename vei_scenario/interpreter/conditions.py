@@ -58,11 +58,14 @@ class Condition:
     def test(self, ctx: Context) -> bool:  # pragma: no cover - interface
         raise NotImplementedError
 
+    def _threshold(self, el) -> None:
+        """``value`` of ``el`` and ``cmp``, the comparison of its ``rule`` (looked up once)."""
+        self.value, self.cmp = float(el.get("value")), comparator(el.get("rule"))
+
 
 class SimulationTime(Condition):
     def __init__(self, el, ctx: Context) -> None:
-        self.value, self.rule = float(el.get("value")), el.get("rule")
-        self.cmp = comparator(self.rule)
+        self._threshold(el)
 
     def test(self, ctx: Context) -> bool:
         return self.cmp(ctx.t, self.value)
@@ -232,8 +235,7 @@ def _distance_kind(ctx, el) -> str:
 class TimeToCollision(_EntityCondition):
     def __init__(self, el, ctx, triggering, rule) -> None:
         super().__init__(el, ctx, triggering, rule)
-        self.value, self.rule = float(el.get("value")), el.get("rule")
-        self.cmp = comparator(self.rule)
+        self._threshold(el)
         self.freespace = el.get("freespace", "false") == "true"
         self.kind = _distance_kind(ctx, el)
         target = el.find("TimeToCollisionConditionTarget")
@@ -269,8 +271,7 @@ class TimeToCollision(_EntityCondition):
 class RelativeDistance(_EntityCondition):
     def __init__(self, el, ctx, triggering, rule) -> None:
         super().__init__(el, ctx, triggering, rule)
-        self.value, self.rule = float(el.get("value")), el.get("rule")
-        self.cmp = comparator(self.rule)
+        self._threshold(el)
         self.freespace = el.get("freespace", "false") == "true"
         self.kind = _distance_kind(ctx, el)
         self.target = el.get("entityRef")
@@ -301,8 +302,7 @@ class _PositionTarget:
 class Distance(_EntityCondition):
     def __init__(self, el, ctx, triggering, rule) -> None:
         super().__init__(el, ctx, triggering, rule)
-        self.value, self.rule = float(el.get("value")), el.get("rule")
-        self.cmp = comparator(self.rule)
+        self._threshold(el)
         self.freespace = el.get("freespace", "false") == "true"
         self.kind = _distance_kind(ctx, el)
         if el.find("Position") is None:
@@ -329,8 +329,7 @@ class Speed(_EntityCondition):
 
     def __init__(self, el, ctx, triggering, rule) -> None:
         super().__init__(el, ctx, triggering, rule)
-        self.value, self.rule = float(el.get("value")), el.get("rule")
-        self.cmp = comparator(self.rule)
+        self._threshold(el)
 
     def for_entity(self, ctx: Context, name: str) -> bool:
         return self.cmp(getattr(ctx.entities[name], self.quantity), self.value)
@@ -371,8 +370,8 @@ class StandStill(_EntityCondition):
 class RelativeSpeed(_EntityCondition):
     def __init__(self, el, ctx, triggering, rule) -> None:
         super().__init__(el, ctx, triggering, rule)
-        self.value, self.rule, self.target = float(el.get("value")), el.get("rule"), el.get("entityRef")
-        self.cmp = comparator(self.rule)
+        self._threshold(el)
+        self.target = el.get("entityRef")
         known_entity(ctx, el, self.target)
 
     def for_entity(self, ctx: Context, name: str) -> bool:
@@ -388,8 +387,8 @@ class TimeHeadway(_EntityCondition):
 
     def __init__(self, el, ctx, triggering, rule) -> None:
         super().__init__(el, ctx, triggering, rule)
-        self.value, self.rule, self.target = float(el.get("value")), el.get("rule"), el.get("entityRef")
-        self.cmp = comparator(self.rule)
+        self._threshold(el)
+        self.target = el.get("entityRef")
         self.freespace = el.get("freespace", "false") == "true"
         # OpenSCENARIO 1.0 alongRoute: true along the road (longitudinal), false straight (euclidean)
         along = el.get("alongRoute")

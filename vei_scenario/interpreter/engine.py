@@ -354,8 +354,8 @@ class Simulation:
                     a.step(ctx)
             if self.coupling == "jacobi":
                 ctx.snapshot = {n: copy.copy(e) for n, e in ctx.entities.items()}
-            for n in names:
-                self._move(ctx.entities[n])
+            for e in entities:
+                self._move(e)
             for tow, trailer in trailers.hitches(ctx.entities):
                 trailers.pull(trailer, tow, dt)
             ctx.snapshot = None

@@ -35,8 +35,7 @@ def lane_keep(e, ds: float, ctx) -> None:
         step = road.core.lane_advance(st.s, st.lane, st.offset, ds, forward)
         if step is not None:
             st.s, st.lane, e.x, e.y, base = step
-            base = base if forward else base + math.pi
-            e.yaw = math.atan2(math.sin(base + st.heading), math.cos(base + st.heading))
+            e.yaw = _lane_yaw(base if forward else base + math.pi, st.heading)
             return
     # ds is travelled along the lane: scale to reference-line arc length where the lane is offset on a curve
     stretch = road.lane_stretch(st.s, st.lane, st.offset)
@@ -76,6 +75,11 @@ def lane_keep(e, ds: float, ctx) -> None:
     moved = math.hypot(x - e.x, y - e.y)
     e.x, e.y = x, y
     base = base if forward else base + math.pi
-    e.yaw = math.atan2(math.sin(base + st.heading), math.cos(base + st.heading))
+    e.yaw = _lane_yaw(base, st.heading)
     if e.lateral is not None and moved > 1e-9:
         e.yaw = e.lateral.heading(e, base)
+
+
+def _lane_yaw(base: float, heading: float) -> float:
+    """The yaw of a road user turned ``heading`` from its lane's direction ``base``, in (-π, π]."""
+    return math.atan2(math.sin(base + heading), math.cos(base + heading))

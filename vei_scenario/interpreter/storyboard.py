@@ -30,7 +30,6 @@ class ConditionRunner:
         self.delay = float(el.get("delay", "0") or 0)
         self.prev: bool | None = None
         self.history: deque[tuple[float, bool]] = deque()
-        self.plain = self.edge == "none" and self.delay <= 0
         by_value, by_entity = el.find("ByValueCondition"), el.find("ByEntityCondition")
         if by_value is not None and first_element(by_value) is not None:
             kind = first_element(by_value)
@@ -53,10 +52,10 @@ class ConditionRunner:
             self.condition = cls(kind, ctx, names, trig.get("triggeringEntitiesRule", "any"))
         else:
             raise ctx.error(el, "condition without ByValueCondition or ByEntityCondition")
-        if self.plain:  # no edge, no delay: evaluating is the test itself (one call less each step)
-            self.evaluate = self.condition.test
-        elif self.delay <= 0 and self.edge in self.EDGES:  # an edge alone: its own method, no branching
-            self.evaluate = getattr(self, self.EDGES[self.edge])
+        #: the condition's value with its edge applied (the test itself without an edge)
+        self.edged = getattr(self, self.EDGES[self.edge]) if self.edge in self.EDGES else self.condition.test
+        if self.delay <= 0:  # no delay: evaluating is the edged test (one call less each step)
+            self.evaluate = self.edged
 
     EDGES = {"rising": "_rising", "falling": "_falling", "risingOrFalling": "_rising_or_falling"}
 
@@ -76,18 +75,8 @@ class ConditionRunner:
         return prev is not None and raw != prev
 
     def evaluate(self, ctx: Context) -> bool:
-        raw = self.condition.test(ctx)
-        prev, self.prev = self.prev, raw
-        if self.edge == "rising":
-            value = raw and prev is False
-        elif self.edge == "falling":
-            value = (not raw) and prev is True
-        elif self.edge == "risingOrFalling":
-            value = prev is not None and raw != prev
-        else:
-            value = raw
-        if self.delay <= 0:
-            return value
+        """The edged value, delayed: what it was ``delay`` seconds ago."""
+        value = self.edged(ctx)
         self.history.append((ctx.t, value))
         result = False
         while self.history and self.history[0][0] <= ctx.t - self.delay + 1e-9:
