@@ -1,6 +1,10 @@
 """The conditions of OpenSCENARIO triggers, each one class with a ``test(ctx) -> bool`` of the current
 state (edges and delays are the trigger's, :class:`~vei_scenario.interpreter.storyboard.ConditionRunner`).
-A new condition is one class and one line in ``VALUE_CONDITIONS`` or ``ENTITY_CONDITIONS``."""
+A new condition is one class and one line in ``VALUE_CONDITIONS`` or ``ENTITY_CONDITIONS``.
+
+Each condition also knows for how many steps its value cannot change while the road users cruise
+(:mod:`vei_scenario.interpreter.cruise`: every one at its speed along its lane, each step bounded by
+:class:`~vei_scenario.interpreter.cruise.QuietBounds`): ``steady_steps``, 0 where it cannot tell."""
 
 from __future__ import annotations
 
@@ -49,6 +53,28 @@ def compare(rule: str, a: float, b: float) -> bool:
     return comparator(rule)(a, b)
 
 
+#: ``steady_steps`` of a value that cannot change while the road users cruise.
+STEADY = 1 << 30
+
+
+def steps_before(gap: float, per_step: float) -> int:
+    """Steps in which a quantity ``gap`` from its threshold, changing at most ``per_step`` a step,
+    cannot reach it (one step short, to leave rounding no say)."""
+    if not gap > 0.0:
+        return 0
+    if not per_step > 0.0 or math.isinf(gap):
+        return STEADY
+    return max(0, min(STEADY, int(gap / per_step) - 1))
+
+
+def _threshold_gap(cmp, measured: float, value: float) -> float:
+    """How far ``measured`` is from where the comparison with ``value`` can change (an equality's
+    tolerance band counts as the threshold; NaN: nowhere to tell)."""
+    if cmp is _equal or cmp is _not_equal:
+        return abs(measured - value) - 2e-9 * max(1.0, abs(value)) if not _equal(measured, value) else 0.0
+    return abs(measured - value)
+
+
 # --- conditions -------------------------------------------------------------------------------------
 
 
@@ -57,6 +83,11 @@ class Condition:
 
     def test(self, ctx: Context) -> bool:  # pragma: no cover - interface
         raise NotImplementedError
+
+    def steady_steps(self, ctx: Context, bounds) -> int:
+        """Steps after this one in which :meth:`test` gives what it gives now while the road users
+        cruise within ``bounds``; 0 (the default): it cannot tell."""
+        return 0
 
     def _threshold(self, el) -> None:
         """``value`` of ``el`` and ``cmp``, the comparison of its ``rule`` (looked up once)."""
@@ -69,6 +100,11 @@ class SimulationTime(Condition):
 
     def test(self, ctx: Context) -> bool:
         return self.cmp(ctx.t, self.value)
+
+    def steady_steps(self, ctx: Context, bounds) -> int:
+        if ctx.t > self.value + 1e-6:  # past it: no rule changes its answer again
+            return STEADY
+        return steps_before(self.value - ctx.t, ctx.dt)
 
 
 class ParameterCondition(Condition):
@@ -89,6 +125,9 @@ class ParameterCondition(Condition):
             if self.rule == "notEqualTo":
                 return current != self.value
             return False
+
+    def steady_steps(self, ctx: Context, bounds) -> int:  # only an action sets one
+        return STEADY
 
 
 class VariableCondition(ParameterCondition):
@@ -119,6 +158,10 @@ class StoryboardElementState(Condition):
             return target.state == self.in_state
         return target.transitions.get(self.state, -10) >= ctx.step - 1
 
+    def steady_steps(self, ctx: Context, bounds) -> int:
+        """A state holds while nothing starts or ends; a transition is seen for one step only."""
+        return STEADY if self.in_state is not None or not self.test(ctx) else 0
+
 
 class _EntityCondition(Condition):
     """Base for conditions evaluated for triggering entities (any/all)."""
@@ -134,6 +177,13 @@ class _EntityCondition(Condition):
             return self.for_entity(ctx, self.triggering[0])
         results = (self.for_entity(ctx, n) for n in self.triggering)
         return any(results) if self.rule_any else all(results)
+
+    def steady_steps(self, ctx: Context, bounds) -> int:
+        return min(self.steady_for(ctx, n, bounds) for n in self.triggering)
+
+    def steady_for(self, ctx: Context, name: str, bounds) -> int:
+        """:meth:`steady_steps` for one triggering entity (0: it cannot tell)."""
+        return 0
 
 
 def known_entity(ctx: Context, el, name: str):
@@ -160,11 +210,15 @@ class Collision(_EntityCondition):
     def for_entity(self, ctx: Context, name: str) -> bool:
         return any(frozenset((name, t)) in ctx.colliding for t in self.targets if t != name)
 
+    def steady_for(self, ctx: Context, name: str, bounds) -> int:  # (a cruise ends where contacts change)
+        return STEADY
+
 
 class _StaticPoint:
     """A position as the other party of a distance or time-to-collision: no size, no motion."""
 
     length = width = speed = center_x = 0.0
+    name = None  # (not a road user: it does not move)
 
     def __init__(self, pose) -> None:
         self.x, self.y, self.yaw, self.lane = pose.x, pose.y, pose.h, pose.lane
@@ -217,6 +271,32 @@ def _relative(ctx, el, a, b, kind: str, freespace: bool) -> tuple[float, float]:
         raise ctx.error(el, f"relativeDistanceType {kind!r} is not supported")
     sign = 1.0 if d >= 0 else -1.0
     return max(abs(d) - half, 0.0), sign * rate
+
+
+def _distance_rate(kind: str, freespace: bool, a, b, bounds) -> float:
+    """The most a distance of ``kind`` between ``a`` and ``b`` (road users or points) changes in a
+    quiet step: their moves, and where boxes or a frame turn, the turn times the lever arm (the
+    distance itself counted with ``bounds.reach`` more, which the caller caps the steps to)."""
+    move = bounds.move.get(a.name, 0.0) + bounds.move.get(b.name, 0.0)
+    turn_a = bounds.turn if a.name is not None else 0.0
+    turn_b = bounds.turn if b.name is not None else 0.0
+
+    def arm(e) -> float:
+        return abs(e.center_x) + 0.5 * math.hypot(e.length, e.width) if freespace else 0.0
+
+    if kind in ("cartesianDistance", "euclidianDistance", "euclideanDistance"):
+        return move + turn_a * arm(a) + turn_b * arm(b)
+    if kind == "alongRoad" and a.lane is not None and b.lane is not None and a.lane.road == b.lane.road:
+        return bounds.along.get(a.name, 0.0) + bounds.along.get(b.name, 0.0)
+    lever = math.hypot(b.x - a.x, b.y - a.y) + bounds.reach + arm(a) + arm(b)
+    return move + (turn_a + turn_b) * lever
+
+
+def _distance_steps(cmp, measured: float, value: float, rate: float, bounds) -> int:
+    """Quiet steps before a distance ``measured`` (changing at most ``rate`` a step) can cross the
+    comparison with ``value``, no more than it takes to move ``bounds.reach`` (the lever's margin)."""
+    cap = steps_before(bounds.reach, rate) if rate > 0 else STEADY
+    return min(steps_before(_threshold_gap(cmp, measured, value), rate), cap)
 
 
 def _distance_kind(ctx, el) -> str:
@@ -281,6 +361,11 @@ class RelativeDistance(_EntityCondition):
         d, _ = _relative(ctx, self.el, ctx.entities[name], ctx.entities[self.target], self.kind, self.freespace)
         return self.cmp(d, self.value)
 
+    def steady_for(self, ctx: Context, name: str, bounds) -> int:
+        a, b = ctx.entities[name], ctx.entities[self.target]
+        d, _ = _relative(ctx, self.el, a, b, self.kind, self.freespace)
+        return _distance_steps(self.cmp, d, self.value, _distance_rate(self.kind, self.freespace, a, b, bounds), bounds)
+
 
 class _PositionTarget:
     """A condition's ``<Position>``: resolved when first needed (after Init placed the entities), and
@@ -309,17 +394,23 @@ class Distance(_EntityCondition):
             raise ctx.error(el, "DistanceCondition needs a Position")
         self.target = _PositionTarget(el.find("Position"))
 
-    def for_entity(self, ctx: Context, name: str) -> bool:
-        e, p = ctx.entities[name], self.target(ctx)
+    def measure(self, ctx: Context, e, p) -> tuple[float, str]:
+        """The distance from ``e`` to the position ``p``, and the kind it was measured as."""
         if self.kind == "alongRoad" and p.lane is not None and e.lane is not None and e.lane.road == p.lane.road:
             d = abs(p.lane.s - e.lane.s) - (0.5 * e.length if self.freespace else 0.0)
-            return self.cmp(max(d, 0.0), self.value)
-        if self.kind == "alongRoad":
-            kind = "longitudinal"
-        else:
-            kind = self.kind
-        d, _ = _relative(ctx, self.el, e, p, kind, self.freespace)
-        return self.cmp(d, self.value)
+            return max(d, 0.0), "alongRoad"
+        kind = "longitudinal" if self.kind == "alongRoad" else self.kind
+        return _relative(ctx, self.el, e, p, kind, self.freespace)[0], kind
+
+    def for_entity(self, ctx: Context, name: str) -> bool:
+        return self.cmp(self.measure(ctx, ctx.entities[name], self.target(ctx))[0], self.value)
+
+    def steady_for(self, ctx: Context, name: str, bounds) -> int:
+        if self.target.moving:  # (a position relative to a road user: it moves too)
+            return 0
+        e, p = ctx.entities[name], self.target(ctx)
+        d, kind = self.measure(ctx, e, p)
+        return _distance_steps(self.cmp, d, self.value, _distance_rate(kind, self.freespace, e, p, bounds), bounds)
 
 
 class Speed(_EntityCondition):
@@ -334,6 +425,9 @@ class Speed(_EntityCondition):
     def for_entity(self, ctx: Context, name: str) -> bool:
         return self.cmp(getattr(ctx.entities[name], self.quantity), self.value)
 
+    def steady_for(self, ctx: Context, name: str, bounds) -> int:  # a cruise keeps the speed
+        return STEADY
+
 
 class ReachPosition(_EntityCondition):
     def __init__(self, el, ctx, triggering, rule) -> None:
@@ -347,6 +441,12 @@ class ReachPosition(_EntityCondition):
         e, p = ctx.entities[name], self.target(ctx)
         return math.hypot(e.x - p.x, e.y - p.y) <= self.tolerance
 
+    def steady_for(self, ctx: Context, name: str, bounds) -> int:
+        if self.target.moving:
+            return 0
+        e, p = ctx.entities[name], self.target(ctx)
+        return steps_before(abs(math.hypot(e.x - p.x, e.y - p.y) - self.tolerance), bounds.move.get(name, 0.0))
+
 
 class TraveledDistance(_EntityCondition):
     def __init__(self, el, ctx, triggering, rule) -> None:
@@ -355,6 +455,10 @@ class TraveledDistance(_EntityCondition):
 
     def for_entity(self, ctx: Context, name: str) -> bool:
         return ctx.entities[name].odometer >= self.value
+
+    def steady_for(self, ctx: Context, name: str, bounds) -> int:  # (an odometer only grows)
+        odometer = ctx.entities[name].odometer
+        return STEADY if odometer >= self.value else steps_before(self.value - odometer, bounds.move.get(name, 0.0))
 
 
 class StandStill(_EntityCondition):
@@ -365,6 +469,15 @@ class StandStill(_EntityCondition):
     def for_entity(self, ctx: Context, name: str) -> bool:
         since = ctx.entities[name].standing_since
         return since is not None and ctx.t - since >= self.duration - 1e-9
+
+    def steady_for(self, ctx: Context, name: str, bounds) -> int:
+        e = ctx.entities[name]
+        if self.for_entity(ctx, name):  # standing long enough: moving again ends it at the next step
+            return STEADY if abs(e.speed) < 1e-9 else 0
+        if abs(e.speed) >= 1e-9:
+            return STEADY
+        since = e.standing_since if e.standing_since is not None else ctx.t + ctx.dt
+        return steps_before(since + self.duration - ctx.t, ctx.dt)
 
 
 class RelativeSpeed(_EntityCondition):
@@ -377,9 +490,15 @@ class RelativeSpeed(_EntityCondition):
     def for_entity(self, ctx: Context, name: str) -> bool:
         return self.cmp(ctx.entities[name].speed - ctx.entities[self.target].speed, self.value)
 
+    def steady_for(self, ctx: Context, name: str, bounds) -> int:
+        return STEADY
+
 
 class Acceleration(Speed):
     quantity = "accel"
+
+    def steady_for(self, ctx: Context, name: str, bounds) -> int:  # a cruise step's acceleration is 0
+        return STEADY if ctx.entities[name].accel == 0.0 else 0
 
 
 class TimeHeadway(_EntityCondition):
@@ -447,6 +566,9 @@ class TrafficSignal(Condition):
 
     def test(self, ctx: Context) -> bool:
         return ctx.signals.get(self.name) == self.state
+
+    def steady_steps(self, ctx: Context, bounds) -> int:  # only an action sets one
+        return STEADY
 
 
 VALUE_CONDITIONS = {
@@ -558,6 +680,15 @@ class Angle(_EntityCondition):
         diff = wrap_angle(self.measured(ctx, name) - self.angle)
         return abs(diff) <= self.tolerance + 1e-12
 
+    #: road users whose headings it measures (turning at most ``bounds.turn`` a step each)
+    turners = 1
+
+    def steady_for(self, ctx: Context, name: str, bounds) -> int:
+        if self.kind != "heading" or self.system not in ("entity", "world"):
+            return 0 if self.kind == "heading" else STEADY  # (pitch and roll stay 0)
+        diff = abs(wrap_angle(self.measured(ctx, name) - self.angle))
+        return steps_before(abs(diff - self.tolerance) - 1e-12, self.turners * bounds.turn)
+
 
 class RelativeAngle(Angle):
     """RelativeAngleCondition: the triggering entity's angle minus that of ``entityRef``."""
@@ -569,6 +700,8 @@ class RelativeAngle(Angle):
 
     def measured(self, ctx: Context, name: str) -> float:
         return super().measured(ctx, name) - super().measured(ctx, self.ref)
+
+    turners = 2
 
 
 ENTITY_CONDITIONS = {

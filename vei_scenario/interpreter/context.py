@@ -34,6 +34,8 @@ class Context:
     #: OpenSCENARIO 1.2 variables: name -> current value (text), and their declared types
     variables: dict[str, str] = field(default_factory=dict)
     variable_types: dict[str, str] = field(default_factory=dict)
+    #: storyboard transitions so far (a step without any leaves the triggers it evaluated in place)
+    transitions: int = 0
 
     @property
     def roads(self):

@@ -23,6 +23,7 @@ from vei_scenario.interpreter.actions import (
 )
 from vei_scenario.interpreter.context import Context
 from vei_scenario.interpreter.controllers import make_controller
+from vei_scenario.interpreter.cruise import cruise
 from vei_scenario.interpreter.document import ScenarioDocument
 from vei_scenario.interpreter.entities import Entity
 from vei_scenario.interpreter.motion import advance_along, lane_keep
@@ -338,10 +339,20 @@ class Simulation:
             reason = "storyboard stop trigger"
         pending = [a for a in self.init_actions if not a.done]
         entities = list(ctx.entities.values())
+        board, wait = self.storyboard, 0
         while running and ctx.t < self.max_time - 1e-9:
-            if not self.storyboard.step():
+            before = ctx.transitions
+            if not board.step():
                 reason = "storyboard stop trigger"
                 break
+            ending = board.complete and board.stop_trigger is None  # (the loop ends after this step)
+            if not pending and not ctx.stepping and ctx.transitions == before and not ending:
+                if wait:
+                    wait -= 1
+                elif cruise(ctx, board, entities, rows, times, self.max_time):
+                    continue  # (the core took this step's move and the quiet steps after it)
+                else:
+                    wait = 4  # (not quiet now: look again in a few steps)
             if pending:  # Init actions still acting (a done one never acts again)
                 for a in pending:
                     if not a.done:

@@ -8,7 +8,10 @@ through the small interface of :mod:`vei_scenario.interpreter.action_base`.
 
 from __future__ import annotations
 
+import bisect
 from collections import deque
+from itertools import repeat
+from operator import itemgetter
 
 from vei_scenario.interpreter.actions import ParameterSet, SignalState, VariableSet, global_actions, private_actions
 from vei_scenario.interpreter.conditions import ENTITY_CONDITIONS, VALUE_CONDITIONS, known_entity
@@ -83,6 +86,35 @@ class ConditionRunner:
             result = self.history.popleft()[1]
         return result
 
+    # --- quiet steps (interpreter.cruise): what the next evaluations give while the raw test holds ---
+    def held(self, ctx: Context) -> bool:
+        """The edged value of the evaluations to come while the raw test keeps the value it had in
+        this step's evaluation (an edge has passed by then)."""
+        if self.edge != "none":
+            return False
+        return self.history[-1][1] if self.delay > 0 else self.condition.test(ctx)
+
+    def delayed(self, times, held: bool):
+        """The delayed values of evaluations at ``times`` whose edged value is ``held`` (lazily)."""
+        old, k, first_new = self.history, 0, 0
+        for i, t in enumerate(times):
+            limit, result = t - self.delay + 1e-9, False
+            while k < len(old) and old[k][0] <= limit:
+                result, k = old[k][1], k + 1
+            if k == len(old):
+                while first_new <= i and times[first_new] <= limit:
+                    result, first_new = held, first_new + 1
+            yield result
+
+    def skip(self, times, held: bool) -> None:
+        """Account for evaluations at ``times`` that were not run (their edged value: ``held``)."""
+        if self.delay > 0 and len(times):
+            limit = times[-1] - self.delay + 1e-9
+            while self.history and self.history[0][0] <= limit:
+                self.history.popleft()
+            i = bisect.bisect_right(times, limit)  # (times grow)
+            self.history.extend(zip(times.between(i, len(times)), repeat(held)))
+
 
 class Trigger:
     """OR over condition groups, AND within a group; every condition is evaluated every step so that
@@ -104,6 +136,33 @@ class Trigger:
                     ok = False
             fired = fired or ok
         return fired
+
+    def conditions(self) -> list[ConditionRunner]:
+        return [c for g in self.groups for c in g]
+
+    def first_firing(self, held: dict, times) -> int:
+        """The index in ``times`` of the first evaluation that would fire, len(times) if none would,
+        given each condition's ``held`` edged value (its raw test unchanged throughout)."""
+        first = len(times)
+        for g in self.groups:
+            if not g:
+                continue
+            steady = [c for c in g if c.delay <= 0 or not (held[c] or any(map(itemgetter(1), c.history)))]
+            if any(not held[c] for c in steady):  # one member stays false: the group cannot fire
+                continue
+            moving = [c for c in g if c not in steady]
+            if not moving:
+                return 0
+            # after its delay, a member gives what it holds: one holding false ends the search there
+            settled = max(c.delay for c in moving) / times.dt + 2
+            ends = not all(held[c] for c in moving)
+            for i, values in enumerate(zip(*(c.delayed(times, held[c]) for c in moving))):
+                if i >= first or (ends and i > settled):
+                    break
+                if all(values):
+                    first = i
+                    break
+        return first
 
     def reset(self) -> None:
         """Forget what the conditions saw (an element run again waits its delays afresh, as esmini)."""
@@ -140,13 +199,14 @@ class Element:
         for k, q, d in self.descendants:
             ctx.elements.setdefault((k, f"{self.name}::{q}"), d)
 
-    def mark(self, transition: str, step: int) -> None:
-        self.transitions[transition] = step
+    def mark(self, transition: str, ctx: Context) -> None:
+        self.transitions[transition] = ctx.step
+        ctx.transitions += 1
 
     def start(self, ctx: Context) -> None:
         self.state = RUNNING
         self.executions += 1
-        self.mark("startTransition", ctx.step)
+        self.mark("startTransition", ctx)
 
     def complete(self, ctx: Context, transition: str = "endTransition") -> None:
         """Move to complete: ``endTransition`` when done, ``stopTransition`` when stopped (the
@@ -158,7 +218,7 @@ class Element:
             for a in self.actions:
                 a.stop(ctx)
         self.state = COMPLETE
-        self.mark(transition, ctx.step)
+        self.mark(transition, ctx)
 
 
 class Storyboard:
@@ -174,6 +234,37 @@ class Storyboard:
     @property
     def complete(self) -> bool:
         return _all_complete(self.stories)
+
+    def watching(self) -> list[Trigger] | None:
+        """The triggers the next step evaluates, or None when something would act in it regardless of
+        them (an event running, a story or an element without a trigger about to start)."""
+        out = [self.stop_trigger] if self.stop_trigger is not None else []
+        for story in self.stories:
+            if story.state == STANDBY:
+                return None
+            if story.state != RUNNING:
+                continue
+            for act in story.children:
+                if act.state == STANDBY:
+                    if act.start_trigger is None:
+                        return None
+                    out.append(act.start_trigger)
+                if act.state != RUNNING:
+                    continue
+                if act.stop_trigger is not None:
+                    out.append(act.stop_trigger)
+                for g in act.children:
+                    for m in g.children:
+                        if m.state != RUNNING:
+                            continue
+                        for ev in m.children:
+                            if ev.state == RUNNING:
+                                return None
+                            if ev.state == STANDBY:
+                                if ev.start_trigger is None:
+                                    return None
+                                out.append(ev.start_trigger)
+        return out
 
     # --- building -----------------------------------------------------------------------------------
     def _story(self, el) -> Element:
@@ -224,7 +315,7 @@ class Storyboard:
     def _start_event(self, ev: Element, running: list[Element]) -> None:
         ctx = self.ctx
         if ev.priority == "skip" and running:
-            ev.mark("skipTransition", ctx.step)
+            ev.mark("skipTransition", ctx)
             return
         if ev.priority in ("override", "overwrite"):
             for r in running:

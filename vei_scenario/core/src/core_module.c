@@ -668,8 +668,15 @@ static PyTypeObject RiderType = {
     .tp_new = PyType_GenericNew,
 };
 
-/* overlapping(boxes) -> [(i, j), ...]: the pairs of (x, y, yaw, length, width) boxes that overlap, i < j
- * (circumscribed circles apart by more than a relative 1e-9 cannot overlap: skipped) */
+/* whether two boxes overlap (circumscribed circles apart by more than a relative 1e-9 cannot: skipped) */
+static int boxes_touch(const VeiBox *a, const VeiBox *b)
+{
+    double reach = 0.5 * hypot(a->length, a->width) * (1 + 1e-9) + 0.5 * hypot(b->length, b->width) * (1 + 1e-9);
+    double dx = b->x - a->x, dy = b->y - a->y;
+    return dx * dx + dy * dy <= reach * reach && vei_boxes_overlap(a, b);
+}
+
+/* overlapping(boxes) -> [(i, j), ...]: the pairs of (x, y, yaw, length, width) boxes that overlap, i < j */
 static PyObject *overlapping(PyObject *mod, PyObject *arg)
 {
     if (!PyBytes_Check(arg)) {
@@ -681,11 +688,8 @@ static PyObject *overlapping(PyObject *mod, PyObject *arg)
     PyObject *out = PyList_New(0);
     if (!out) return NULL;
     for (Py_ssize_t i = 0; i < n; i++) {
-        double ri = 0.5 * hypot(b[i].length, b[i].width) * (1 + 1e-9);
         for (Py_ssize_t j = i + 1; j < n; j++) {
-            double reach = ri + 0.5 * hypot(b[j].length, b[j].width) * (1 + 1e-9);
-            double dx = b[j].x - b[i].x, dy = b[j].y - b[i].y;
-            if (dx * dx + dy * dy > reach * reach || !vei_boxes_overlap(&b[i], &b[j])) continue;
+            if (!boxes_touch(&b[i], &b[j])) continue;
             PyObject *pair = Py_BuildValue("(nn)", i, j);
             if (!pair || PyList_Append(out, pair) < 0) {
                 Py_XDECREF(pair);
@@ -696,6 +700,144 @@ static PyObject *overlapping(PyObject *mod, PyObject *arg)
         }
     }
     return out;
+}
+
+/* ---------------------------------------------------------------------------------------------- */
+/* cruise: quiet steps of the interpreter (see vei_scenario/interpreter/cruise.py) in one call */
+
+enum { CR_MODE, CR_S, CR_LANE, CR_OFFSET, CR_FORWARD, CR_HEADING, CR_DS, CR_X, CR_Y, CR_YAW, CR_CENTER_X,
+       CR_LENGTH, CR_WIDTH, CR_MAX_MOVE, CR_MAX_DS, CR_ODOMETER, CR_COLS };
+
+/* the pairs (i * n + j) of road users whose boxes overlap; count in *k */
+static void cruise_pairs(const double *st, Py_ssize_t n, VeiBox *box, int *pairs, Py_ssize_t *k)
+{
+    for (Py_ssize_t i = 0; i < n; i++) {
+        const double *e = st + i * CR_COLS;
+        double c = cos(e[CR_YAW]), s = sin(e[CR_YAW]);
+        box[i] = (VeiBox){e[CR_X] + c * e[CR_CENTER_X], e[CR_Y] + s * e[CR_CENTER_X], e[CR_YAW], e[CR_LENGTH],
+                          e[CR_WIDTH]};
+    }
+    *k = 0;
+    for (Py_ssize_t i = 0; i < n; i++) {
+        if (st[i * CR_COLS + CR_MODE] < 0) continue;
+        for (Py_ssize_t j = i + 1; j < n; j++)
+            if (st[j * CR_COLS + CR_MODE] >= 0 && boxes_touch(&box[i], &box[j])) pairs[(*k)++] = (int)(i * n + j);
+    }
+}
+
+/* one road user's next pose keeping its lane or driving straight on (the interpreter's default motion,
+ * motion.lane_keep's one-call path); 0 when the step is not a quiet one (off its road or lane, further
+ * or more turned than the bounds) */
+static int cruise_move(RoadObject *road, const double *e, double max_turn, double *next)
+{
+    double ds = e[CR_DS];
+    memcpy(next, e, sizeof(double) * CR_COLS);
+    if (e[CR_MODE] < 0) return 1;
+    if (e[CR_MODE] == 0) {
+        next[CR_X] = e[CR_X] + ds * cos(e[CR_YAW]);
+        next[CR_Y] = e[CR_Y] + ds * sin(e[CR_YAW]);
+    } else {
+        const vr_road *r = &road->r;
+        int lane = (int)e[CR_LANE], forward = e[CR_FORWARD] != 0.0;
+        double stretch, out[4];
+        if (vr_lane_stretch(r, e[CR_S], lane, e[CR_OFFSET], &stretch) < 0) return 0;
+        double s1 = e[CR_S] + (forward ? ds : -ds) / stretch;
+        if (s1 > r->length || s1 < 0.0 || fabs(s1 - e[CR_S]) > e[CR_MAX_DS]) return 0;
+        if (vr_lane_on(r, e[CR_S], s1, lane, 1) != lane || vr_lane_pose(r, s1, lane, e[CR_OFFSET], out) < 0) return 0;
+        double a = (forward ? out[2] : out[2] + M_PI) + e[CR_HEADING];
+        next[CR_S] = s1;
+        next[CR_X] = out[0];
+        next[CR_Y] = out[1];
+        next[CR_YAW] = atan2(sin(a), cos(a));
+    }
+    double turn = fabs(remainder(next[CR_YAW] - e[CR_YAW], 2 * M_PI));
+    return hypot(next[CR_X] - e[CR_X], next[CR_Y] - e[CR_Y]) <= e[CR_MAX_MOVE] && turn <= max_turn;
+}
+
+/* cruise(roads, state, n_max, max_turn, hypot) -> (n, poses, state): up to n_max steps of every road
+ * user at its speed (roads: per road user its Road, None to drive straight on or, mode -1, not to
+ * move); stops before a step that is not quiet or changes which pairs overlap. poses: n x users x
+ * (x, y, yaw, metres moved); state: the users' columns after the n steps. The metres moved and the
+ * odometer are math.hypot's (given), so they equal the interpreter's own steps bit for bit. */
+static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (!args_ok(nargs, 5, "cruise")) return NULL;
+    PyObject *roads = args[0], *state = args[1], *hyp = args[4];
+    long n_max = PyLong_AsLong(args[2]);
+    double max_turn = PyFloat_AsDouble(args[3]);
+    if (PyErr_Occurred()) return NULL;
+    if (!PyTuple_Check(roads) || !PyBytes_Check(state) || !PyCallable_Check(hyp) || n_max < 0) {
+        PyErr_SetString(PyExc_TypeError, "cruise(roads tuple, state bytes, n_max >= 0, max_turn, hypot)");
+        return NULL;
+    }
+    Py_ssize_t n = PyTuple_GET_SIZE(roads);
+    if (PyBytes_GET_SIZE(state) != n * (Py_ssize_t)sizeof(double) * CR_COLS) {
+        PyErr_SetString(PyExc_ValueError, "cruise: the state needs its columns for every road user");
+        return NULL;
+    }
+    for (Py_ssize_t i = 0; i < n; i++) {
+        PyObject *r = PyTuple_GET_ITEM(roads, i);
+        if (r != Py_None && !PyObject_TypeCheck(r, &RoadType)) {
+            PyErr_SetString(PyExc_TypeError, "cruise: a road user's road is a Road or None");
+            return NULL;
+        }
+    }
+    size_t m = (size_t)(n > 0 ? n : 1);
+    double *cur = PyMem_Malloc(sizeof(double) * CR_COLS * m * 2);
+    VeiBox *box = PyMem_Malloc(sizeof(VeiBox) * m);
+    int *pairs = PyMem_Malloc(sizeof(int) * m * m * 2);
+    PyObject *poses = PyBytes_FromStringAndSize(NULL, (Py_ssize_t)(sizeof(double) * 4 * m * (size_t)n_max));
+    if (!cur || !box || !pairs || !poses) {
+        PyMem_Free(cur), PyMem_Free(box), PyMem_Free(pairs);
+        Py_XDECREF(poses);
+        return PyErr_NoMemory();
+    }
+    double *next = cur + CR_COLS * m, *out = (double *)PyBytes_AS_STRING(poses);
+    int *pairs0 = pairs, *pairs1 = pairs + m * m;
+    memcpy(cur, PyBytes_AS_STRING(state), sizeof(double) * CR_COLS * (size_t)n);
+    Py_ssize_t k0, k1;
+    cruise_pairs(cur, n, box, pairs0, &k0);
+    long done = 0;
+    int failed = 0;
+    for (; done < n_max; done++) {
+        int quiet = 1;
+        for (Py_ssize_t i = 0; i < n && quiet; i++) {
+            PyObject *r = PyTuple_GET_ITEM(roads, i);
+            double *e = cur + i * CR_COLS;
+            if (e[CR_MODE] > 0 && r == Py_None) quiet = 0;
+            else quiet = cruise_move((RoadObject *)r, e, max_turn, next + i * CR_COLS);
+        }
+        if (!quiet) break;
+        cruise_pairs(next, n, box, pairs1, &k1);
+        if (k1 != k0 || memcmp(pairs0, pairs1, sizeof(int) * (size_t)k0) != 0) break;
+        double *row = out + (size_t)done * 4 * (size_t)n;
+        for (Py_ssize_t i = 0; i < n; i++) {
+            double *e = cur + i * CR_COLS, *f = next + i * CR_COLS, moved = 0.0;
+            if (e[CR_MODE] >= 0) {
+                PyObject *dx = PyFloat_FromDouble(f[CR_X] - e[CR_X]), *dy = PyFloat_FromDouble(f[CR_Y] - e[CR_Y]);
+                PyObject *h = (dx && dy) ? PyObject_CallFunctionObjArgs(hyp, dx, dy, NULL) : NULL;
+                Py_XDECREF(dx);
+                Py_XDECREF(dy);
+                moved = h ? PyFloat_AsDouble(h) : -1.0;
+                Py_XDECREF(h);
+                if (PyErr_Occurred()) {
+                    failed = 1;
+                    break;
+                }
+                f[CR_ODOMETER] = e[CR_ODOMETER] + moved;
+            }
+            row[4 * i] = f[CR_X], row[4 * i + 1] = f[CR_Y], row[4 * i + 2] = f[CR_YAW], row[4 * i + 3] = moved;
+        }
+        if (failed) break;
+        memcpy(cur, next, sizeof(double) * CR_COLS * (size_t)n);
+    }
+    PyObject *result = NULL;
+    if (!failed && _PyBytes_Resize(&poses, (Py_ssize_t)(sizeof(double) * 4 * (size_t)n * (size_t)done)) == 0)
+        result = Py_BuildValue("(lNy#)", done, poses, (const char *)cur, (Py_ssize_t)(sizeof(double) * CR_COLS * n));
+    else if (failed)
+        Py_DECREF(poses);
+    PyMem_Free(cur), PyMem_Free(box), PyMem_Free(pairs);
+    return result;
 }
 
 #define F(name, doc) {#name, (PyCFunction)(void (*)(void))name, METH_FASTCALL, doc}
@@ -741,6 +883,7 @@ static PyMethodDef module_methods[] = {
     F(time_to_conflict, "time_to_conflict(ego_box, ego_speed, margin, threat_box, vx, vy[, horizon]) -> s"),
     F(time_to_contact, "time_to_contact(box_a, vxa, vya, box_b, vxb, vyb) -> s"),
     {"overlapping", overlapping, METH_O, "overlapping(boxes) -> pairs (i, j) of overlapping boxes"},
+    F(cruise, "cruise(roads, state, n_max, max_turn, hypot) -> (n, poses, state): quiet steps in one call"),
     {"set_quadrature", set_quadrature, METH_VARARGS, "set_quadrature(nodes, weights): 24 doubles each"},
     {NULL, NULL, 0, NULL},
 };

@@ -1,0 +1,168 @@
+"""Quiet steps handed to the core in one call: while every road user keeps its lane (or drives straight
+on) at its speed and no trigger can fire, a step is only motion, and the core takes many at once.
+
+The storyboard stays in charge. After a step's evaluation in which nothing started or ended, each
+watched condition says for how many steps its value cannot change while the road users cruise within
+:class:`QuietBounds` (``steady_steps``: a time still ahead, a distance that cannot be covered, a value
+only an action sets); the triggers say which of those evaluations would fire (delays and edges
+included); the core (``_core.cruise``, the same lane keeping as a single step's) moves everyone that
+many steps, and stops early before any step that leaves the bounds, a road or a lane, or changes which
+boxes touch. The steps it took are recorded as the interpreter records its own, bit for bit
+(tests/test_cruise.py), and the conditions account for the evaluations that were not run.
+"""
+
+from __future__ import annotations
+
+import array
+import math
+from dataclasses import dataclass
+from itertools import repeat
+
+from vei_scenario.core import _core
+
+#: Core columns of a road user (core_module.c: CR_*).
+_MODE, _S, _LANE, _OFFSET, _FORWARD, _HEADING, _DS, _X, _Y, _YAW, _CX, _LEN, _WID, _MOVE, _ALONG, _ODO = range(16)
+_COLS = 16
+#: Most steps in one call of the core (the poses it returns for them are held in memory at once).
+CHUNK = 2000
+#: Fewest quiet steps worth a call (fewer: the ordinary step is as quick).
+MIN_STEPS = 3
+
+
+@dataclass(frozen=True)
+class QuietBounds:
+    """The most a quiet step changes: the core stops before a step that would exceed any of these."""
+
+    move: dict[str, float]  # metres a road user's reference point moves in a step
+    along: dict[str, float]  # metres of its road's s it passes in a step
+    turn: float  # radians it turns in a step
+    reach: float = 10.0  # metres a distance's lever arm may grow before a condition looks again
+
+
+def _columns(ctx, entities) -> tuple[tuple, list[float]] | None:
+    """The core's columns of every road user, or None when one moves otherwise than by cruising."""
+    roads, cols, dt = [], [], ctx.dt
+    for e in entities:
+        if e.deleted:
+            roads.append(None)
+            cols += [-1.0] + [0.0] * (_COLS - 1)
+            continue
+        if (
+            e.placed or e.towed_by is not None or e.trailer is not None or e.follower is not None
+            or e.speed_profile is not None or e.lateral is not None or e.find_lane or any(e.active.values())
+        ):  # fmt: skip
+            return None
+        ds = e.speed * dt
+        st = e.lane
+        if st is not None:
+            roads.append(ctx.roads.road(st.road).core)
+            head = [1.0, st.s, float(st.lane), st.offset, 1.0 if st.forward else 0.0, st.heading]
+        else:
+            roads.append(None)
+            head = [0.0] * 6
+        move = abs(ds) * 1.05 + 1e-9
+        cols += head + [ds, e.x, e.y, e.yaw, e.center_x, e.length, e.width, move, abs(ds) * 1.3 + 1e-9, e.odometer]
+    return tuple(roads), cols
+
+
+class StepTimes:
+    """The simulation times of the ``n`` steps after step ``step0`` (as the engine rounds them),
+    computed when asked for."""
+
+    def __init__(self, step0: int, dt: float, n: int) -> None:
+        self.step0, self.dt, self.n = step0, dt, n
+
+    def __len__(self) -> int:
+        return self.n
+
+    def __getitem__(self, i: int) -> float:
+        if i < 0:
+            i += self.n
+        if not 0 <= i < self.n:
+            raise IndexError(i)
+        return round((self.step0 + 1 + i) * self.dt, 9)
+
+    def between(self, i: int, j: int) -> list[float]:
+        """Times ``i`` to ``j`` (exclusive), at once."""
+        step0, dt = self.step0 + 1, self.dt
+        return [round((step0 + k) * dt, 9) for k in range(i, j)]
+
+    def __iter__(self):
+        step0, dt = self.step0 + 1, self.dt
+        return (round((step0 + i) * dt, 9) for i in range(self.n))
+
+
+def steps_left(ctx, max_time: float) -> int:
+    """Steps the run still takes before its time limit (the engine loops while t < max_time), at most
+    CHUNK."""
+    step, dt = ctx.step, ctx.dt
+    n = max(0, min(CHUNK, int((max_time - 1e-9) / dt) - step + 2))
+    while n > 0 and round((step + n - 1) * dt, 9) >= max_time - 1e-9:
+        n -= 1
+    while n < CHUNK and round((step + n) * dt, 9) < max_time - 1e-9:
+        n += 1
+    return n
+
+
+def cruise(ctx, storyboard, entities: list, rows: dict, times: list, max_time: float) -> int:
+    """Take this step's move and as many quiet steps after it as nothing can happen in, in the core;
+    record them. The number of steps taken (0: none, the step goes on as usual)."""
+    triggers = storyboard.watching()
+    if triggers is None:
+        return 0
+    columns = _columns(ctx, entities)
+    if columns is None:
+        return 0
+    roads, cols = columns
+    names = [e.name for e in entities]
+    moves = {n: cols[i * _COLS + _MOVE] for i, n in enumerate(names) if cols[i * _COLS] >= 0}
+    along = {n: cols[i * _COLS + _ALONG] for i, n in enumerate(names) if cols[i * _COLS] >= 0}
+    dt = ctx.dt
+    bounds = QuietBounds(moves, along, 0.3 * dt)
+    runners = [c for t in triggers for c in t.conditions()]
+    skipped = steps_left(ctx, max_time) - 1  # evaluations after this step's that the cruise replaces
+    for c in runners:
+        if skipped < MIN_STEPS:
+            return 0
+        skipped = min(skipped, c.condition.steady_steps(ctx, bounds))
+    if skipped < MIN_STEPS:
+        return 0
+    step0 = ctx.step
+    held = {c: c.held(ctx) for c in runners}
+    for t in triggers:
+        skipped = min(skipped, t.first_firing(held, StepTimes(step0, dt, skipped)))
+    if skipped < MIN_STEPS:
+        return 0
+    n, poses, state = _core.cruise(roads, array.array("d", cols).tobytes(), skipped + 1, bounds.turn, math.hypot)
+    if n == 0:
+        return 0
+    for c in runners:
+        c.skip(StepTimes(step0, dt, n - 1), held[c])
+    _commit(ctx, entities, rows, memoryview(poses).cast("d"), memoryview(state).cast("d"), n)
+    times.extend(round((step0 + i) * dt, 9) for i in range(1, n + 1))
+    ctx.step = step0 + n
+    ctx.t = round(ctx.step * dt, 9)
+    return n
+
+
+def _commit(ctx, entities: list, rows: dict, poses, state, n: int) -> None:
+    """The road users as the core left them after ``n`` steps, and their recorded rows."""
+    k = len(entities)
+    for i, e in enumerate(entities):
+        col = state[i * _COLS : (i + 1) * _COLS]
+        if e.deleted:
+            e.status, e.last_step_m = "deleted", 0.0
+            rows[e.name].extend(repeat((e.x, e.y, e.yaw, e.speed, e.accel, "deleted"), n))
+            continue
+        xs, ys, yaws = poses[4 * i :: 4 * k], poses[4 * i + 1 :: 4 * k], poses[4 * i + 2 :: 4 * k]
+        rows[e.name].extend(zip(xs, ys, yaws, repeat(e.speed, n), repeat(0.0, n), repeat("default", n)))
+        e.x, e.y, e.yaw = col[_X], col[_Y], col[_YAW]
+        e.accel, e.status, e.step_speed = 0.0, "default", e.speed
+        e.last_step_m, e.odometer = poses[4 * (n - 1) * k + 4 * i + 3], col[_ODO]
+        if e.lane is not None:
+            e.lane.s, e.lane.lane = col[_S], int(col[_LANE])
+        if abs(e.speed) < 1e-9:
+            if e.standing_since is None:
+                e.standing_since = ctx.t + ctx.dt
+        else:
+            e.standing_since = None
