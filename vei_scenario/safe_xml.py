@@ -6,6 +6,7 @@ disabled. A syntax error becomes a :class:`~vei_scenario.errors.VeiInputError` n
 
 from __future__ import annotations
 
+import hashlib
 import math
 from pathlib import Path
 
@@ -39,6 +40,15 @@ def parse_xml(path: Path | str, remove_comments: bool = False) -> etree._Element
     if docinfo.internalDTD is not None and any(True for _ in docinfo.internalDTD.iterentities()):
         raise VeiInputError(path, "line 1", "XML entity declarations are not accepted (entity expansion is disabled)")
     return tree
+
+
+def content_key(path: Path | str) -> bytes:
+    """What a file holds, as a short digest: the key of what is built from it once per process (a
+    missing or unreadable file gets an empty key, and its error when it is parsed)."""
+    try:
+        return hashlib.blake2b(Path(path).read_bytes(), digest_size=16).digest()
+    except OSError:
+        return b""
 
 
 def float_attribute(path: Path | str | None, el, name: str) -> float:

@@ -557,6 +557,18 @@ class EndOfRoad(_HeldCondition):
         edge = e.lane.s >= road.length - 1e-6 if forward else e.lane.s <= 1e-6
         return edge and ctx.roads.next_road(road, e.lane.lane, forward) is None
 
+    def steady_for(self, ctx: Context, name: str, bounds) -> int:
+        """Short of the edge of its road, a cruise (which stays on the road) cannot reach it sooner
+        than the s still to go allows."""
+        e = ctx.entities[name]
+        if e.lane is None:
+            return STEADY
+        if self.holds(ctx, e):
+            return 0
+        road = ctx.roads.road(e.lane.road)
+        to_go = road.length - 1e-6 - e.lane.s if e.lane.forward else e.lane.s - 1e-6
+        return steps_before(to_go, bounds.along.get(name, 0.0))
+
 
 class TrafficSignal(Condition):
     """TrafficSignalCondition: the signal's state, as the last TrafficSignalStateAction set it."""

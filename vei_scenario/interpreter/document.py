@@ -19,7 +19,7 @@ from lxml import etree
 from vei_scenario.errors import VeiInputError
 from vei_scenario.interpreter.expressions import ExpressionError, evaluate
 from vei_scenario.openscenario.numeric_attributes import check_numbers
-from vei_scenario.safe_xml import parse_xml
+from vei_scenario.safe_xml import content_key, parse_xml
 
 _REF = re.compile(r"^\$([A-Za-z_][A-Za-z0-9_]*)$")
 
@@ -189,7 +189,7 @@ class Catalogs:
         self._entries = {}
         for location, d in self.dirs:
             for f in sorted(d.glob("*.xosc")) if d.is_dir() else []:
-                for cat in parse_xml(f).getroot().iterfind("Catalog"):
+                for cat in catalog_file(f).getroot().iterfind("Catalog"):
                     for item in cat:
                         if isinstance(item.tag, str) and item.get("name"):
                             name = item.get("name")
@@ -213,6 +213,17 @@ class Catalogs:
                 self.path, f"line {ref.sourceline}", f"catalog entry {catalog}/{name} not found ({where})"
             )
         return found
+
+
+def catalog_file(path: Path):
+    """A catalog file's tree, parsed once per process while the file stays as it was (a sweep loads
+    the same catalogs for every variant; their entries are only read, and copied where used)."""
+    return _catalog_tree(str(path), content_key(path))
+
+
+@functools.lru_cache(maxsize=64)
+def _catalog_tree(path: str, key: bytes):
+    return parse_xml(path)
 
 
 def _resolve_catalog_reference(path: Path, ref, scope: dict[str, str], catalogs: Catalogs) -> None:

@@ -12,6 +12,7 @@ point onto roads and parses files itself, outside vei's hardened parser.
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass, field
 from functools import cached_property
@@ -21,7 +22,7 @@ import numpy as np
 
 from vei_scenario.core import _core
 from vei_scenario.errors import VeiInputError
-from vei_scenario.safe_xml import parse_xml
+from vei_scenario.safe_xml import content_key, parse_xml
 
 _GL_X, _GL_W = np.polynomial.legendre.leggauss(24)
 _core.set_quadrature(_GL_X.tobytes(), _GL_W.tobytes())
@@ -221,7 +222,13 @@ class RoadNetwork:
     # --- loading ------------------------------------------------------------------------------------
     @classmethod
     def load(cls, path: str | Path) -> RoadNetwork:
+        """The network of an OpenDRIVE file, built once per process while the file stays as it was (a
+        network is never changed once built; a sweep's variants share it)."""
         path = Path(path)
+        return _network(cls, path, content_key(path))
+
+    @classmethod
+    def _read(cls, path: Path) -> RoadNetwork:
         root = parse_xml(path).getroot()
         if root.tag != "OpenDRIVE":
             raise VeiInputError(path, f"line {root.sourceline}", f"root element <{root.tag}> is not <OpenDRIVE>")
@@ -473,3 +480,8 @@ def _compiled_parts(geometries, offsets, superelevation, sections, length: float
         float(length),
         bool(varying),
     )
+
+
+@functools.lru_cache(maxsize=8)
+def _network(cls, path: Path, key: bytes) -> RoadNetwork:
+    return cls._read(path)
