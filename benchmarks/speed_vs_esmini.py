@@ -7,7 +7,7 @@
 
 For every esmini example and every Euro NCAP single execution that both players play: esmini's whole
 process (``--headless --fixed_timestep 0.01 --csv_logger --collision``, as the conformance runs), and
-vei's ``run_scenario`` after start-up (loading the scenario and its road, the run, the traces), each the
+vei's ``run_scenario`` after start-up (reading the scenario, its catalogs and its road, the run, the traces), each the
 median of N runs; the ratio vei / esmini, its median and worst. Start-up is the import of what
 ``vei run`` needs, measured in fresh processes. With ``--sweep``: ``vei sweep``'s evaluation of every
 variant of a Euro NCAP variation file (on all cores, as ``vei sweep`` runs it) per variant, against
@@ -30,7 +30,7 @@ sys.path.insert(0, str(ROOT))
 from vei_scenario.conformance.esmini import find_esmini, run_esmini  # noqa: E402
 from vei_scenario.conformance.ncap import single_executions, values_of  # noqa: E402
 from vei_scenario.errors import VeiInputError  # noqa: E402
-from vei_scenario.interpreter import run_scenario  # noqa: E402
+from vei_scenario.interpreter import clear_file_caches, run_scenario  # noqa: E402
 
 
 def startup_s(repeat: int) -> tuple[float, float]:
@@ -111,6 +111,7 @@ def main() -> int:
             continue  # esmini fails on it
         vei = []
         for _ in range(args.repeat):
+            clear_file_caches()  # (the road and catalogs read as a fresh process reads them)
             a = time.perf_counter()
             run_scenario(path, params, 0.01)
             vei.append(time.perf_counter() - a)

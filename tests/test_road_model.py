@@ -185,3 +185,25 @@ def test_lane_keeping_follows_lane_links_and_performance_limits(tmp_path):
     assert np.all(np.abs(tr.y[tr.x < 99.9] + 1.75) < 1e-9) and np.all(np.abs(tr.y[tr.x > 100.1] + 4.75) < 1e-9)
     # the end of the road: it stops there and stands
     assert tr.x[-1] == pytest.approx(200.0) and tr.speed[-1] == 0.0
+
+
+def test_a_network_is_built_once_per_file_content(tmp_path):
+    """Loading the same bytes again gives the network already built (a sweep's variants share it);
+    changed bytes, even of the same length in the same instant, give a new one."""
+    from vei_scenario.roads.road_model import RoadNetwork
+
+    def road(length: str) -> str:
+        return (
+            f'<OpenDRIVE><header revMajor="1" revMinor="6"/><road id="1" length="{length}" junction="-1"><planView>'
+            f'<geometry s="0" x="0" y="0" hdg="0" length="{length}"><line/></geometry></planView><lanes><laneSection '
+            's="0"><center><lane id="0" type="none"/></center><right><lane id="-1" type="driving"><width sOffset="0" '
+            'a="3.5" b="0" c="0" d="0"/></lane></right></laneSection></lanes></road></OpenDRIVE>'
+        )
+
+    path = tmp_path / "r.xodr"
+    path.write_text(road("100"))
+    first = RoadNetwork.load(path)
+    assert RoadNetwork.load(path) is first
+    path.write_text(road("200"))  # same size
+    second = RoadNetwork.load(path)
+    assert second is not first and second.road("1").length == 200.0 and first.road("1").length == 100.0

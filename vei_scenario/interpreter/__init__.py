@@ -26,3 +26,13 @@ def run_scenario(
 
 
 __all__ = ["RunResult", "Simulation", "load_scenario", "run_scenario"]
+
+
+def clear_file_caches() -> None:
+    """Forget the catalogs and road networks built so far in this process (they are kept per file
+    content, so that a sweep's variants share them): the next run reads them as a fresh process does."""
+    from vei_scenario.interpreter.document import _catalog_tree
+    from vei_scenario.roads.road_model import _network
+
+    _catalog_tree.cache_clear()
+    _network.cache_clear()
