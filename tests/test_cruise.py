@@ -162,7 +162,10 @@ UNTOLD = {"headway"}
 PARTLY = {"relative_lateral": 0.3}
 
 
-@pytest.mark.parametrize("timing", [(0.0, "none"), (0.37, "none"), (0.0, "rising"), (0.5, "risingOrFalling")])
+TIMINGS = [(0.0, "none"), (0.37, "none"), (0.0, "rising"), (0.5, "risingOrFalling"), (1e-12, "none")]
+
+
+@pytest.mark.parametrize("timing", TIMINGS)
 @pytest.mark.parametrize("case", sorted(CASES))
 def test_quiet_steps_equal_the_stepped_run(tmp_path, monkeypatch, case, timing):
     delay, edge = timing

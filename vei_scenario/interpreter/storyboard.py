@@ -92,7 +92,9 @@ class ConditionRunner:
         this step's evaluation (an edge has passed by then)."""
         if self.edge != "none":
             return False
-        return self.history[-1][1] if self.delay > 0 else self.condition.test(ctx)
+        if self.delay > 0 and self.history:  # (a delay shorter than rounding pops at once: none held)
+            return self.history[-1][1]
+        return self.condition.test(ctx)
 
     def delayed(self, times, held: bool):
         """The delayed values of evaluations at ``times`` whose edged value is ``held`` (lazily)."""
