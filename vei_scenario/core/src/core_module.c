@@ -198,6 +198,21 @@ static PyObject *Road_lane_on(RoadObject *self, PyObject *const *args, Py_ssize_
 
 /* A lane-keeping step that stays on the road, in one call: the stretch, the new s, the lane there and
  * its pose; None when the step leaves the road (the caller crosses to the next road itself). */
+/* A lane-keeping step of `ds` metres along the lane that stays on the road: the new s and lane and
+ * the pose there (vr_lane_pose's). 1: done; 0: it would leave the road; -1: no such lane (*lane1:
+ * which). Road.lane_advance and the cruise both take their steps here. */
+static int lane_step(const vr_road *r, double s, int lane, double offset, double ds, int forward, double *s1,
+                     int *lane1, double *out4)
+{
+    double stretch;
+    *lane1 = lane;
+    if (vr_lane_stretch(r, s, lane, offset, &stretch) < 0) return -1;
+    *s1 = s + (forward ? ds : -ds) / stretch;
+    if (*s1 > r->length || *s1 < 0.0) return 0;
+    *lane1 = vr_lane_on(r, s, *s1, lane, 1);
+    return vr_lane_pose(r, *s1, *lane1, offset, out4) < 0 ? -1 : 1;
+}
+
 static PyObject *Road_lane_advance(RoadObject *self, PyObject *const *args, Py_ssize_t nargs)
 {
     if (!args_ok(nargs, 5, "lane_advance")) return NULL;
@@ -207,12 +222,10 @@ static PyObject *Road_lane_advance(RoadObject *self, PyObject *const *args, Py_s
     ARG_D(3, ds);
     int forward = PyObject_IsTrue(args[4]);
     if (forward < 0) return NULL;
-    double stretch, out[4];
-    if (vr_lane_stretch(&self->r, s, (int)lane, offset, &stretch) < 0) return no_lane(lane);
-    double s1 = s + (forward ? ds : -ds) / stretch;
-    if (s1 > self->r.length || s1 < 0.0) Py_RETURN_NONE;
-    int lane1 = vr_lane_on(&self->r, s, s1, (int)lane, 1);
-    if (vr_lane_pose(&self->r, s1, lane1, offset, out) < 0) return no_lane(lane1);
+    double s1, out[4];
+    int lane1, done = lane_step(&self->r, s, (int)lane, offset, ds, forward, &s1, &lane1, out);
+    if (done < 0) return no_lane(lane1);
+    if (done == 0) Py_RETURN_NONE;
     return Py_BuildValue("(diddd)", s1, lane1, out[0], out[1], out[2]);
 }
 
@@ -708,14 +721,19 @@ static PyObject *overlapping(PyObject *mod, PyObject *arg)
 enum { CR_MODE, CR_S, CR_LANE, CR_OFFSET, CR_FORWARD, CR_HEADING, CR_DS, CR_X, CR_Y, CR_YAW, CR_CENTER_X,
        CR_LENGTH, CR_WIDTH, CR_MAX_MOVE, CR_MAX_DS, CR_ODOMETER, CR_COLS };
 
+/* the bounding box of a road user at (x, y, yaw) whose box centre is center_x ahead of it (Entity.box) */
+static VeiBox entity_box(double x, double y, double yaw, double center_x, double length, double width)
+{
+    double c = cos(yaw), s = sin(yaw);
+    return (VeiBox){x + c * center_x, y + s * center_x, yaw, length, width};
+}
+
 /* the pairs (i * n + j) of road users whose boxes overlap; count in *k */
 static void cruise_pairs(const double *st, Py_ssize_t n, VeiBox *box, int *pairs, Py_ssize_t *k)
 {
     for (Py_ssize_t i = 0; i < n; i++) {
         const double *e = st + i * CR_COLS;
-        double c = cos(e[CR_YAW]), s = sin(e[CR_YAW]);
-        box[i] = (VeiBox){e[CR_X] + c * e[CR_CENTER_X], e[CR_Y] + s * e[CR_CENTER_X], e[CR_YAW], e[CR_LENGTH],
-                          e[CR_WIDTH]};
+        box[i] = entity_box(e[CR_X], e[CR_Y], e[CR_YAW], e[CR_CENTER_X], e[CR_LENGTH], e[CR_WIDTH]);
     }
     *k = 0;
     for (Py_ssize_t i = 0; i < n; i++) {
@@ -737,13 +755,11 @@ static int cruise_move(RoadObject *road, const double *e, double max_turn, doubl
         next[CR_X] = e[CR_X] + ds * cos(e[CR_YAW]);
         next[CR_Y] = e[CR_Y] + ds * sin(e[CR_YAW]);
     } else {
-        const vr_road *r = &road->r;
-        int lane = (int)e[CR_LANE], forward = e[CR_FORWARD] != 0.0;
-        double stretch, out[4];
-        if (vr_lane_stretch(r, e[CR_S], lane, e[CR_OFFSET], &stretch) < 0) return 0;
-        double s1 = e[CR_S] + (forward ? ds : -ds) / stretch;
-        if (s1 > r->length || s1 < 0.0 || fabs(s1 - e[CR_S]) > e[CR_MAX_DS]) return 0;
-        if (vr_lane_on(r, e[CR_S], s1, lane, 1) != lane || vr_lane_pose(r, s1, lane, e[CR_OFFSET], out) < 0) return 0;
+        int lane = (int)e[CR_LANE], lane1, forward = e[CR_FORWARD] != 0.0;
+        double s1, out[4];
+        if (lane_step(&road->r, e[CR_S], lane, e[CR_OFFSET], ds, forward, &s1, &lane1, out) != 1 || lane1 != lane ||
+            fabs(s1 - e[CR_S]) > e[CR_MAX_DS])
+            return 0;
         double a = (forward ? out[2] : out[2] + M_PI) + e[CR_HEADING];
         next[CR_S] = s1;
         next[CR_X] = out[0];
@@ -868,8 +884,7 @@ static PyObject *entity_boxes(PyObject *mod, PyObject *seq)
                 return NULL;
             }
         }
-        double c = cos(v[2]), s = sin(v[2]);
-        b[i] = (VeiBox){v[0] + c * v[3], v[1] + s * v[3], v[2], v[4], v[5]};
+        b[i] = entity_box(v[0], v[1], v[2], v[3], v[4], v[5]);
     }
     Py_DECREF(fast);
     return out;
