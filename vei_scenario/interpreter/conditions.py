@@ -230,6 +230,10 @@ class _StaticPoint:
         return 0.0, 0.0
 
 
+#: relativeDistanceType values that mean the straight distance (OpenSCENARIO 1.0 spelt it euclidian)
+CARTESIAN = frozenset(("cartesianDistance", "euclidianDistance", "euclideanDistance"))
+
+
 def _relative(ctx, el, a, b, kind: str, freespace: bool) -> tuple[float, float]:
     """Distance and its rate of change between entities a and b (``kind``: cartesian/euclidian,
     longitudinal or lateral in a's frame; ``freespace``: between the boxes)."""
@@ -239,7 +243,7 @@ def _relative(ctx, el, a, b, kind: str, freespace: bool) -> tuple[float, float]:
         ax, ay, bx, by = a.x, a.y, b.x, b.y
     (avx, avy), (bvx, bvy) = a.velocity(), b.velocity()
     rx, ry, vx, vy = bx - ax, by - ay, bvx - avx, bvy - avy
-    if kind in ("cartesianDistance", "euclidianDistance", "euclideanDistance"):
+    if kind in CARTESIAN:
         if freespace:
             d = float(box_distance(ax, ay, ayaw, al, aw, bx, by, byaw, bl, bw))
             d2 = float(
@@ -284,7 +288,7 @@ def _distance_rate(kind: str, freespace: bool, a, b, bounds) -> float:
     def arm(e) -> float:
         return abs(e.center_x) + 0.5 * math.hypot(e.length, e.width) if freespace else 0.0
 
-    if kind in ("cartesianDistance", "euclidianDistance", "euclideanDistance"):
+    if kind in CARTESIAN:
         return move + turn_a * arm(a) + turn_b * arm(b)
     if kind == "alongRoad" and a.lane is not None and b.lane is not None and a.lane.road == b.lane.road:
         return bounds.along.get(a.name, 0.0) + bounds.along.get(b.name, 0.0)
@@ -335,7 +339,7 @@ class TimeToCollision(_EntityCondition):
 
     def ttc(self, ctx: Context, name: str) -> float:
         a, b = ctx.entities[name], self._target(ctx)
-        if self.freespace and self.kind in ("cartesianDistance", "euclidianDistance", "euclideanDistance"):
+        if self.freespace and self.kind in CARTESIAN:
             (avx, avy), (bvx, bvy) = a.velocity(), b.velocity()
             return float(
                 time_to_contact(*a.box()[:3], a.length, a.width, avx, avy, *b.box()[:3], b.length, b.width, bvx, bvy)
@@ -357,14 +361,16 @@ class RelativeDistance(_EntityCondition):
         self.target = el.get("entityRef")
         known_entity(ctx, el, self.target)
 
+    def measure(self, ctx: Context, a, b) -> float:
+        return _relative(ctx, self.el, a, b, self.kind, self.freespace)[0]
+
     def for_entity(self, ctx: Context, name: str) -> bool:
-        d, _ = _relative(ctx, self.el, ctx.entities[name], ctx.entities[self.target], self.kind, self.freespace)
-        return self.cmp(d, self.value)
+        return self.cmp(self.measure(ctx, ctx.entities[name], ctx.entities[self.target]), self.value)
 
     def steady_for(self, ctx: Context, name: str, bounds) -> int:
         a, b = ctx.entities[name], ctx.entities[self.target]
-        d, _ = _relative(ctx, self.el, a, b, self.kind, self.freespace)
-        return _distance_steps(self.cmp, d, self.value, _distance_rate(self.kind, self.freespace, a, b, bounds), bounds)
+        rate = _distance_rate(self.kind, self.freespace, a, b, bounds)
+        return _distance_steps(self.cmp, self.measure(ctx, a, b), self.value, rate, bounds)
 
 
 class _PositionTarget:
@@ -437,15 +443,17 @@ class ReachPosition(_EntityCondition):
             raise ctx.error(el, "ReachPositionCondition needs a Position")
         self.target = _PositionTarget(el.find("Position"))
 
-    def for_entity(self, ctx: Context, name: str) -> bool:
+    def measure(self, ctx: Context, name: str) -> float:
         e, p = ctx.entities[name], self.target(ctx)
-        return math.hypot(e.x - p.x, e.y - p.y) <= self.tolerance
+        return math.hypot(e.x - p.x, e.y - p.y)
+
+    def for_entity(self, ctx: Context, name: str) -> bool:
+        return self.measure(ctx, name) <= self.tolerance
 
     def steady_for(self, ctx: Context, name: str, bounds) -> int:
         if self.target.moving:
             return 0
-        e, p = ctx.entities[name], self.target(ctx)
-        return steps_before(abs(math.hypot(e.x - p.x, e.y - p.y) - self.tolerance), bounds.move.get(name, 0.0))
+        return steps_before(abs(self.measure(ctx, name) - self.tolerance), bounds.move.get(name, 0.0))
 
 
 class TraveledDistance(_EntityCondition):

@@ -39,9 +39,11 @@ class QuietBounds:
     reach: float = 10.0  # metres a distance's lever arm may grow before a condition looks again
 
 
-def _columns(ctx, entities) -> tuple[tuple, list[float]] | None:
-    """The core's columns of every road user, or None when one moves otherwise than by cruising."""
+def _columns(ctx, entities) -> tuple[tuple, list[float], QuietBounds] | None:
+    """The core's columns of every road user and the bounds of their steps, or None when one moves
+    otherwise than by cruising."""
     roads, cols, dt = [], [], ctx.dt
+    bounds = QuietBounds({}, {}, 0.3 * dt)
     for e in entities:
         if e.deleted:
             roads.append(None)
@@ -60,9 +62,10 @@ def _columns(ctx, entities) -> tuple[tuple, list[float]] | None:
         else:
             roads.append(None)
             head = [0.0] * 6
-        move = abs(ds) * 1.05 + 1e-9
-        cols += head + [ds, e.x, e.y, e.yaw, e.center_x, e.length, e.width, move, abs(ds) * 1.3 + 1e-9, e.odometer]
-    return tuple(roads), cols
+        move = bounds.move[e.name] = abs(ds) * 1.05 + 1e-9
+        along = bounds.along[e.name] = abs(ds) * 1.3 + 1e-9
+        cols += head + [ds, e.x, e.y, e.yaw, e.center_x, e.length, e.width, move, along, e.odometer]
+    return tuple(roads), cols, bounds
 
 
 class StepTimes:
@@ -113,12 +116,8 @@ def cruise(ctx, storyboard, entities: list, rows: dict, times: list, max_time: f
     columns = _columns(ctx, entities)
     if columns is None:
         return 0
-    roads, cols = columns
-    names = [e.name for e in entities]
-    moves = {n: cols[i * _COLS + _MOVE] for i, n in enumerate(names) if cols[i * _COLS] >= 0}
-    along = {n: cols[i * _COLS + _ALONG] for i, n in enumerate(names) if cols[i * _COLS] >= 0}
+    roads, cols, bounds = columns
     dt = ctx.dt
-    bounds = QuietBounds(moves, along, 0.3 * dt)
     runners = [c for t in triggers for c in t.conditions()]
     skipped = steps_left(ctx, max_time) - 1  # evaluations after this step's that the cruise replaces
     for c in runners:
@@ -139,7 +138,7 @@ def cruise(ctx, storyboard, entities: list, rows: dict, times: list, max_time: f
     for c in runners:
         c.skip(StepTimes(step0, dt, n - 1), held[c])
     _commit(ctx, entities, rows, memoryview(poses).cast("d"), memoryview(state).cast("d"), n)
-    times.extend(round((step0 + i) * dt, 9) for i in range(1, n + 1))
+    times.extend(StepTimes(step0, dt, n))
     ctx.step = step0 + n
     ctx.t = round(ctx.step * dt, 9)
     return n

@@ -81,10 +81,14 @@ class ConditionRunner:
         """The edged value, delayed: what it was ``delay`` seconds ago."""
         value = self.edged(ctx)
         self.history.append((ctx.t, value))
-        result = False
-        while self.history and self.history[0][0] <= ctx.t - self.delay + 1e-9:
+        result, limit = False, self._due(ctx.t)
+        while self.history and self.history[0][0] <= limit:
             result = self.history.popleft()[1]
         return result
+
+    def _due(self, t: float) -> float:
+        """The latest time whose value has come due at ``t`` (``delay`` ago, within rounding)."""
+        return t - self.delay + 1e-9
 
     # --- quiet steps (interpreter.cruise): what the next evaluations give while the raw test holds ---
     def held(self, ctx: Context) -> bool:
@@ -100,7 +104,7 @@ class ConditionRunner:
         """The delayed values of evaluations at ``times`` whose edged value is ``held`` (lazily)."""
         old, k, first_new = self.history, 0, 0
         for i, t in enumerate(times):
-            limit, result = t - self.delay + 1e-9, False
+            limit, result = self._due(t), False
             while k < len(old) and old[k][0] <= limit:
                 result, k = old[k][1], k + 1
             if k == len(old):
@@ -111,7 +115,7 @@ class ConditionRunner:
     def skip(self, times, held: bool) -> None:
         """Account for evaluations at ``times`` that were not run (their edged value: ``held``)."""
         if self.delay > 0 and len(times):
-            limit = times[-1] - self.delay + 1e-9
+            limit = self._due(times[-1])
             while self.history and self.history[0][0] <= limit:
                 self.history.popleft()
             i = bisect.bisect_right(times, limit)  # (times grow)
