@@ -203,35 +203,37 @@ def _roundabout(lanes: int) -> tuple[xodr.OpenDrive, MapInfo]:
     return odr, _four_arms("roundabout", lanes, {})
 
 
+def _read_spec(spec: dict) -> tuple[str, int, float, bool]:
+    """``environment.map``'s kind, lanes per direction, curve radius (a curve's only) and traffic
+    signals, with their defaults (one place for both :func:`layout` and :func:`build_map`)."""
+    kind = spec["kind"]
+    radius = float(spec.get("curve_radius_m", 150.0)) if kind == "curve" else 0.0
+    return kind, int(spec.get("lanes_per_direction", 2)), radius, bool(spec.get("traffic_signals", True))
+
+
 def layout(spec: dict) -> MapInfo:
     """The :class:`MapInfo` of ``environment.map`` without building its roads (what placement
     needs to know before anything is written)."""
-    kind = spec["kind"]
-    lanes = int(spec.get("lanes_per_direction", 2))
+    kind, lanes, radius, signals = _read_spec(spec)
     if kind == "straight":
         return _straight_info(lanes)
     if kind == "curve":
-        return _curve_info(lanes, float(spec.get("curve_radius_m", 150.0)))
+        return _curve_info(lanes, radius)
     if kind in ("crossroad", "roundabout"):
-        signals = (
-            {str(i + 1): str(i + 1) for i in range(4)}
-            if kind == "crossroad" and spec.get("traffic_signals", True)
-            else {}
-        )
-        return _four_arms(kind, lanes, signals)
+        heads = {str(i + 1): str(i + 1) for i in range(4)} if kind == "crossroad" and signals else {}
+        return _four_arms(kind, lanes, heads)
     raise ValueError(f"map kind {kind!r} cannot be generated")
 
 
 def build_map(spec: dict) -> tuple[xodr.OpenDrive, MapInfo]:
     """The OpenDRIVE model and its :class:`MapInfo` for ``environment.map`` of the layers."""
-    kind = spec["kind"]
-    lanes = int(spec.get("lanes_per_direction", 2))
+    kind, lanes, radius, signals = _read_spec(spec)
     if kind == "straight":
         return _straight(lanes)
     if kind == "curve":
-        return _curve(lanes, float(spec.get("curve_radius_m", 150.0)))
+        return _curve(lanes, radius)
     if kind == "crossroad":
-        return _crossroad(lanes, bool(spec.get("traffic_signals", True)))
+        return _crossroad(lanes, signals)
     if kind == "roundabout":
         return _roundabout(lanes)
     raise ValueError(f"map kind {kind!r} cannot be generated")
