@@ -87,6 +87,60 @@ def _leg_between(net: RoadNetwork, a: Waypoint, b: Waypoint) -> list[Leg] | None
     return best
 
 
+def road_distance(net: RoadNetwork, a: tuple[str, float], b: tuple[str, float]) -> float | None:
+    """Length of the shortest chain of roads from (road, s) ``a`` to ``b``, either way along each
+    (None when none joins them): what ``_leg_between`` finds, summed in its order.
+
+    Asked every step by a synchronisation, so the search runs once per pair of roads: the roads in
+    between are driven whole, so only the first and last pieces depend on where ``a`` and ``b`` lie."""
+    (ra, sa), (rb, sb) = a, b
+    if ra == rb:
+        return abs(sb - sa)
+    la, lb = net.road(ra).length, net.road(rb).length
+    if not (0.0 <= sa <= la and 0.0 <= sb <= lb):  # off a road's ends: the search itself
+        legs = _leg_between(net, (ra, sa, None), (rb, sb, None))
+        return sum(leg.length for leg in legs) if legs else None
+    key = ("chains", ra, rb)
+    chains = net.memo.get(key)
+    if chains is None:
+        chains = net.memo[key] = _chains_between(net, ra, rb)
+    best = None
+    for leave_forward, arrive_forward, middle in chains:
+        total = abs(la - sa) if leave_forward else abs(0.0 - sa)
+        for length in middle:
+            total += length
+        total += abs(sb - 0.0) if arrive_forward else abs(sb - lb)
+        if best is None or total < best:
+            best = total
+    return best
+
+
+def _chains_between(net: RoadNetwork, ra: str, rb: str) -> list[tuple[bool, bool, tuple[float, ...]]]:
+    """For each way of leaving ``ra`` and entering ``rb``: the lengths of the roads driven whole in
+    between on the shortest such chain (absent when there is none)."""
+    out = []
+    for leave_forward in (True, False):
+        best: dict[bool, tuple[float, tuple[float, ...]]] = {}
+        heap: list = [(0.0, 0, ra, leave_forward, ())]
+        seen: set[tuple[str, bool]] = set()
+        n = 1
+        while heap:
+            cost, _, road_id, forward, middle = heapq.heappop(heap)
+            if (road_id, forward) in seen:
+                continue
+            seen.add((road_id, forward))
+            for nxt, fwd in _exits(net, road_id, forward):
+                if nxt == rb:
+                    if fwd not in best or cost < best[fwd][0]:
+                        best[fwd] = (cost, middle)
+                    continue
+                length = abs(net.road(nxt).length - 0.0)
+                heapq.heappush(heap, (cost + length, n, nxt, fwd, (*middle, length)))
+                n += 1
+        out += [(leave_forward, arrive, middle) for arrive, (_, middle) in sorted(best.items(), reverse=True)]
+    return out
+
+
 @dataclass
 class Route:
     legs: list[Leg]

@@ -255,9 +255,6 @@ def _two_piece_acceleration(v0: float, v1: float, s: float, t: float) -> tuple[f
 
 def _road_distance(net, a, b) -> float | None:
     """Length of the shortest chain of roads from lane state ``a`` to ``b`` (None if none joins them)."""
-    from vei_scenario.interpreter.routes import _leg_between
+    from vei_scenario.interpreter.routes import road_distance
 
-    if a.road == b.road:
-        return abs(b.s - a.s)
-    legs = _leg_between(net, (a.road, a.s, None), (b.road, b.s, None))
-    return sum(leg.length for leg in legs) if legs else None
+    return road_distance(net, (a.road, a.s), (b.road, b.s))

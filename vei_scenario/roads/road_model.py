@@ -218,6 +218,8 @@ class RoadPoint:
 class RoadNetwork:
     def __init__(self, roads: dict[str, Road], junctions: dict[str, list[Connection]], path: Path | None = None):
         self.roads, self.junctions, self.path = roads, junctions, path
+        #: facts derived from the network by other modules, computed once (it never changes once built)
+        self.memo: dict = {}
 
     # --- loading ------------------------------------------------------------------------------------
     @classmethod

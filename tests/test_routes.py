@@ -1,0 +1,78 @@
+"""Distances along chains of roads (a synchronisation's distance to its goal): the per-pair shortcut
+against the full search, and against lengths worked out by hand."""
+
+from __future__ import annotations
+
+import random
+
+import pytest
+
+from vei_scenario.interpreter.routes import _leg_between, road_distance
+from vei_scenario.roads.road_model import RoadNetwork
+
+LANES = (
+    '<lanes><laneSection s="0"><left><lane id="1" type="driving"><width sOffset="0" a="3.5" b="0" c="0" d="0"/>'
+    '</lane></left><center><lane id="0" type="none"/></center><right><lane id="-1" type="driving">'
+    '<width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></right></laneSection></lanes>'
+)
+
+
+def _road(rid: str, length: float, pred: str = "", succ: str = "", junction: str = "-1") -> str:
+    link = f"<link>{pred}{succ}</link>"
+    return (
+        f'<road id="{rid}" length="{length}" junction="{junction}">{link}<planView>'
+        f'<geometry s="0" x="0" y="0" hdg="0" length="{length}"><line/></geometry></planView>{LANES}</road>'
+    )
+
+
+def _to(kind: str, element: str, other: str, contact: str = "") -> str:
+    cp = f' contactPoint="{contact}"' if contact else ""
+    return f'<{kind} elementType="{element}" elementId="{other}"{cp}/>'
+
+
+@pytest.fixture
+def net(tmp_path) -> RoadNetwork:
+    """Road 1 (100 m) ends in junction 9, which leads on to road 2 (80 m) by connecting road 10
+    (20 m) or 11 (35 m); road 2 meets road 3 (60 m, drawn the other way) end to end; road 4 (50 m)
+    joins nothing."""
+    roads = [
+        _road("1", 100, succ=_to("successor", "junction", "9")),
+        _road("10", 20, _to("predecessor", "road", "1", "end"), _to("successor", "road", "2", "start"), "9"),
+        _road("11", 35, _to("predecessor", "road", "1", "end"), _to("successor", "road", "2", "start"), "9"),
+        _road("2", 80, _to("predecessor", "junction", "9"), _to("successor", "road", "3", "end")),
+        _road("3", 60, succ=_to("successor", "road", "2", "end")),
+        _road("4", 50),
+    ]
+    junction = (
+        '<junction id="9"><connection id="0" incomingRoad="1" connectingRoad="10" contactPoint="start"/>'
+        '<connection id="1" incomingRoad="1" connectingRoad="11" contactPoint="start"/>'
+        '<connection id="2" incomingRoad="2" connectingRoad="10" contactPoint="end"/>'
+        '<connection id="3" incomingRoad="2" connectingRoad="11" contactPoint="end"/></junction>'
+    )
+    path = tmp_path / "chain.xodr"
+    path.write_text(f'<OpenDRIVE><header revMajor="1" revMinor="6"/>{"".join(roads)}{junction}</OpenDRIVE>')
+    return RoadNetwork.load(path)
+
+
+def test_distances_along_a_chain_match_the_lengths(net):
+    # road 1 to its end, the shorter connecting road, road 2 whole, road 3 from its end back to s
+    assert road_distance(net, ("1", 30.0), ("3", 45.0)) == pytest.approx(70 + 20 + 80 + 15, abs=1e-9)
+    assert road_distance(net, ("3", 45.0), ("1", 30.0)) == pytest.approx(15 + 80 + 20 + 70, abs=1e-9)
+    assert road_distance(net, ("2", 10.0), ("10", 5.0)) == pytest.approx(10 + 15, abs=1e-9)
+    assert road_distance(net, ("1", 30.0), ("1", 75.5)) == 45.5
+    assert road_distance(net, ("1", 30.0), ("4", 1.0)) is None
+
+
+def test_distances_equal_the_full_search_everywhere(net):
+    rng = random.Random(7)
+    ids = list(net.roads)
+    for _ in range(2000):
+        a, b = rng.choice(ids), rng.choice(ids)
+        sa, sb = rng.uniform(0, net.road(a).length), rng.uniform(0, net.road(b).length)
+        sa = rng.choice([sa, 0.0, net.road(a).length])
+        legs = _leg_between(net, (a, sa, None), (b, sb, None))
+        expected = sum(leg.length for leg in legs) if legs else None
+        assert road_distance(net, (a, sa), (b, sb)) == expected, (a, sa, b, sb)
+    # a position beyond a road's end takes the full search
+    legs = _leg_between(net, ("1", 120.0, None), ("2", 5.0, None))
+    assert road_distance(net, ("1", 120.0), ("2", 5.0)) == sum(leg.length for leg in legs)
