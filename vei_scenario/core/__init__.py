@@ -8,7 +8,8 @@ coordinates and the projection of a world point onto a road (``road.c``, exposed
 records over once.
 The models and agents (``vei_models.c``: polyline, boxes, social force rider, planner, vehicle; the
 rider and ego agents of the closed loop) serve the interpreter through this module, and the sweep kernel
-(``vei_batch.c``, in the same shared object, called through ctypes by ``vei_scenario.batch``) and the
+(``vei_batch.c``, in the same shared object, called through ctypes: :mod:`vei_scenario.core.kernel`;
+its scoring also scores every ``vei run``) and the
 FMUs (compiled into each FMU's binary) run the same sources.
 
 What stays in Python, and why: parsing and checking (error messages naming the line), the road

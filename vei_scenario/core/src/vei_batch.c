@@ -15,60 +15,40 @@
 static double dmin(double a, double b) { return a < b ? a : b; }
 static double dmax(double a, double b) { return a > b ? a : b; }
 
-/* The least squared distance from a's corners to box b, worked out in b's frame: a's centre and half
- * axes are turned into it once, and each corner is then a sum and a difference. With SSE2 (every
- * x86-64) two corners at a time: the same operations in the same order, so the same bits. */
-#if defined(__SSE2__)
-#include <emmintrin.h>
-
 /* Contact values (metrics.definitions: EI_MIN_TTC_S, DRAC_CAP_MPS2): EI divides by the 2-D TTC but
  * not by less than 0.1 s, and DRAC is capped at 20 m/s^2 (about 2 g, beyond any tyre's grip: the
  * contact cannot be avoided by braking). Near contact both would otherwise grow without bound. */
 #define VEI_EI_MIN_TTC_S 0.1
 #define VEI_DRAC_CAP_MPS2 20.0
-#endif
+
+/* The least distance from a's corners to box b, operation for operation as
+ * vei_scenario.models.boxes.box_distance computes it (each corner in the world, then in b's frame, its
+ * distance by hypot), so that a gap and what is derived from it (ACT, DRAC: quotients of small
+ * differences) are the same bits in every engine. Only the corners whose squared distance lies within
+ * 1e-12 of the least can hold the least hypot (hypot is within an ulp of the root), so only theirs
+ * is taken. */
 static double corners_to_box(const VeiTrigBox *a, const VeiTrigBox *b) {
-    double dx = a->x - b->x, dy = a->y - b->y;
-    double px = b->c * dx + b->s * dy, py = -b->s * dx + b->c * dy;
-    double cr = a->c * b->c + a->s * b->s, sr = a->s * b->c - a->c * b->s; /* a's heading relative to b's */
-    double hl = 0.5 * a->length, hw = 0.5 * a->width, bl = 0.5 * b->length, bw = 0.5 * b->width;
-    double ex = cr * hl, ey = sr * hl, fx = -sr * hw, fy = cr * hw; /* a's half axes */
-#if defined(__SSE2__)
-    /* corners 0, 1 and 2, 3 side by side: (p + (+e, -e)) + f and (p - (+e, -e)) - f */
-    const __m128d sign = _mm_set1_pd(-0.0), zero = _mm_setzero_pd();
-    const __m128d E = _mm_set_pd(-ex, ex), EY = _mm_set_pd(-ey, ey);
-    const __m128d PX = _mm_set1_pd(px), PY = _mm_set1_pd(py), FX = _mm_set1_pd(fx), FY = _mm_set1_pd(fy);
-    const __m128d BL = _mm_set1_pd(bl), BW = _mm_set1_pd(bw);
-    __m128d x01 = _mm_add_pd(_mm_add_pd(PX, E), FX), x23 = _mm_sub_pd(_mm_sub_pd(PX, E), FX);
-    __m128d y01 = _mm_add_pd(_mm_add_pd(PY, EY), FY), y23 = _mm_sub_pd(_mm_sub_pd(PY, EY), FY);
-    __m128d ox01 = _mm_max_pd(_mm_sub_pd(_mm_andnot_pd(sign, x01), BL), zero);
-    __m128d oy01 = _mm_max_pd(_mm_sub_pd(_mm_andnot_pd(sign, y01), BW), zero);
-    __m128d ox23 = _mm_max_pd(_mm_sub_pd(_mm_andnot_pd(sign, x23), BL), zero);
-    __m128d oy23 = _mm_max_pd(_mm_sub_pd(_mm_andnot_pd(sign, y23), BW), zero);
-    __m128d d01 = _mm_add_pd(_mm_mul_pd(ox01, ox01), _mm_mul_pd(oy01, oy01));
-    __m128d d23 = _mm_add_pd(_mm_mul_pd(ox23, ox23), _mm_mul_pd(oy23, oy23));
-    __m128d m = _mm_min_pd(d01, d23);
-    return dmin(_mm_cvtsd_f64(m), _mm_cvtsd_f64(_mm_unpackhi_pd(m, m)));
-#else
-    const double cx[4] = {px + ex + fx, px - ex + fx, px - ex - fx, px + ex - fx};
-    const double cy[4] = {py + ey + fy, py - ey + fy, py - ey - fy, py + ey - fy};
-    double least = INFINITY;
+    static const double along[4] = {1.0, -1.0, -1.0, 1.0}, across[4] = {1.0, 1.0, -1.0, -1.0};
+    const double hl = 0.5 * a->length, hw = 0.5 * a->width, bl = 0.5 * b->length, bw = 0.5 * b->width;
+    double ox[4], oy[4], d2[4], least = INFINITY;
     for (int k = 0; k < 4; k++) {
-        double ox = dmax(fabs(cx[k]) - bl, 0.0), oy = dmax(fabs(cy[k]) - bw, 0.0);
-        least = dmin(least, ox * ox + oy * oy);
+        double lx = along[k] * hl, ly = across[k] * hw; /* (an exact change of sign) */
+        double cx = (a->x + a->c * lx) - a->s * ly, cy = (a->y + a->s * lx) + a->c * ly;
+        double dx = cx - b->x, dy = cy - b->y;
+        double px = b->c * dx + b->s * dy, py = (-b->s) * dx + b->c * dy;
+        ox[k] = dmax(fabs(px) - bl, 0.0), oy[k] = dmax(fabs(py) - bw, 0.0);
+        d2[k] = ox[k] * ox[k] + oy[k] * oy[k];
+        least = dmin(least, d2[k]);
     }
-    return least;
-#endif
+    double out = INFINITY;
+    for (int k = 0; k < 4; k++)
+        if (d2[k] <= least * (1.0 + 1e-12)) out = dmin(out, hypot(ox[k], oy[k]));
+    return out;
 }
 
 /* Distance between two disjoint boxes: they are closest at a corner of one of them, so it is the least
- * corner-to-box distance both ways; one square root of the least squared distance (sqrt is monotonic
- * and correctly rounded, so this is the least of the eight distances). The operations differ from
- * vei_scenario.models.boxes.box_distance's in order, so the two agree to ~1e-15 m
- * (tests/test_batch_native.py), not bit for bit. */
-static double box_gap(const VeiTrigBox *a, const VeiTrigBox *b) {
-    return sqrt(dmin(corners_to_box(a, b), corners_to_box(b, a)));
-}
+ * corner-to-box distance both ways. */
+static double box_gap(const VeiTrigBox *a, const VeiTrigBox *b) { return dmin(corners_to_box(a, b), corners_to_box(b, a)); }
 
 enum { EX, EY, EYAW, ESPEED, EACCEL, TX, TY, TYAW, TSPEED, TACCEL, NTRAJ };
 /* the cosine and sine of each recorded heading: computed once per step by the simulation and shared
@@ -579,6 +559,29 @@ int vei_batch_run(const VeiBatchScene *sc, const VeiBatchVariant *v, int n_varia
         if (rider_kept && !threat_given) keep(&rider, rider_key, tr, tg, 1, traj, n);
         score(sc, tr, tg, &w, out + (size_t)i * VEI_BATCH_OUTPUTS);
     }
+    free(buf);
+    free(ibuf);
+    return 0;
+}
+
+int vei_batch_score(const VeiBatchScene *sc, const double *traj, double *out) {
+    const int n = sc->n_steps + 1;
+    double *buf = (double *)malloc(sizeof(double) * (size_t)n * (NTRIG + 3));
+    int *ibuf = (int *)malloc(sizeof(int) * (size_t)n * 5);
+    if (buf == NULL || ibuf == NULL) {
+        free(buf), free(ibuf);
+        return -1;
+    }
+    double *tr[NTRAJ], *tg[NTRIG];
+    for (int q = 0; q < NTRAJ; q++) tr[q] = (double *)traj + (size_t)q * n;
+    for (int q = 0; q < NTRIG; q++) tg[q] = buf + (size_t)q * n;
+    for (int k = 0; k < n; k++) {
+        tg[EC][k] = cos(tr[EYAW][k]), tg[ES][k] = sin(tr[EYAW][k]);
+        tg[TC][k] = cos(tr[TYAW][k]), tg[TS][k] = sin(tr[TYAW][k]);
+    }
+    double *rows = buf + (size_t)NTRIG * n;
+    Scratch w = {rows, rows + n, rows + 2 * n, ibuf, ibuf + n, ibuf + 2 * n, ibuf + 3 * n, ibuf + 4 * n};
+    score(sc, tr, tg, &w, out);
     free(buf);
     free(ibuf);
     return 0;

@@ -65,4 +65,9 @@ const char *vei_batch_outputs(void);
  * speed, accel, then the threat's. Returns 0, or -1 when out of memory. */
 int vei_batch_run(const VeiBatchScene *sc, const VeiBatchVariant *v, int n, double *out, double *traj);
 
+/* The metrics of one recorded run (traj: 10 * (n_steps + 1), laid out as vei_batch_run's) into out
+ * (VEI_BATCH_OUTPUTS): how vei run scores any scenario's ego and threat. Only the scene's time, gradient
+ * and metric fields and the two boxes' sizes are read. Returns 0, or -1 when out of memory. */
+int vei_batch_score(const VeiBatchScene *sc, const double *traj, double *out);
+
 #endif

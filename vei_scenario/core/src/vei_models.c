@@ -88,7 +88,8 @@ double vei_trig_time_to_contact(const VeiTrigBox *a, double vxa, double vya, con
     for (int k = 0; k < 4; k++) {
         double ux = axes[k][0], uy = axes[k][1];
         double r = 0.5 * a->length * fabs(ux * ca + uy * sa) + 0.5 * a->width * fabs(-ux * sa + uy * ca);
-        r += 0.5 * b->length * fabs(ux * cb + uy * sb) + 0.5 * b->width * fabs(-ux * sb + uy * cb);
+        /* (r + b's half-extents one after the other: the sums of models.boxes.time_to_contact) */
+        r = r + 0.5 * b->length * fabs(ux * cb + uy * sb) + 0.5 * b->width * fabs(-ux * sb + uy * cb);
         double p = dx * ux + dy * uy, q = wx * ux + wy * uy;
         if (fabs(q) <= 1e-12) {
             if (fabs(p) > r) return INFINITY;
