@@ -292,3 +292,24 @@ def test_without_schemas_check_and_validate_say_what_they_skipped(tmp_path, caps
     code = main(["validate", str(case_xosc), "--format", "json"])
     doc = json.loads(capsys.readouterr().out)
     assert code == 2 and doc["valid"] is False and "schema" in doc["error"]
+
+
+@pytest.mark.parametrize("pool_worth_s", [0.0, 1e9])
+def test_an_interpreted_sweep_gives_the_same_rows_on_any_number_of_cores(monkeypatch, pool_worth_s):
+    """Worker processes or not (a small sweep stays in one process), rows come back in variant order,
+    equal to variant-by-variant runs, with a bad value as an error row wherever it stands."""
+    from vei_scenario.sweep import evaluate
+
+    scenario = str(Path(__file__).parent / "data" / "following_brake.xosc")
+    variants = [{"EgoSpeed": "bad", "LeadSpeed": "5"}]
+    variants += [{"EgoSpeed": repr(v), "LeadSpeed": repr(w)} for v in (8.0, 12.5, 15.0) for w in (3.0, 6.0)]
+    variants.insert(4, {"EgoSpeed": "nan", "LeadSpeed": "5"})
+    monkeypatch.setattr(evaluate, "POOL_WORTH_S", pool_worth_s)
+    seen: list[int] = []
+    rows = evaluate_local(scenario, variants, 0.01, workers=2, progress=seen.append)
+    single = [evaluate.evaluate_variant(scenario, v, 0.01) for v in variants]
+    assert json.dumps(rows) == json.dumps(single)
+    assert sum(seen) == len(variants)
+    assert [r["status"] for r in rows].count("error") == 2 and rows[0]["status"] == rows[4]["status"] == "error"
+    gaps = [r["metrics"]["min_gap_m"] for r in rows if r["status"] == "ok"]
+    assert len(set(gaps)) > 3  # the variants differ
