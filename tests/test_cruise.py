@@ -204,3 +204,12 @@ def test_steps_before_a_threshold():
     assert steps_before(1.0, 0.1) == 9  # ten steps could reach it: nine are certain
     assert steps_before(0.0, 0.1) == 0 and steps_before(-1.0, 0.1) == 0 and steps_before(math.nan, 0.1) == 0
     assert steps_before(1.0, 0.0) == STEADY and steps_before(math.inf, 0.1) == STEADY
+
+
+@pytest.mark.parametrize("dt", [0.01, 0.005, 1 / 60, 0.033, 0.1, 0.0123456789])
+def test_the_clock_gives_every_step_its_rounded_time(dt):
+    from vei_scenario.interpreter import clock
+
+    for first, stop in ((0, 10), (7, 5000), (4000, 9000), (clock.KEPT_STEPS - 3, clock.KEPT_STEPS + 4), (0, 0)):
+        assert clock.step_times(first, stop, dt) == [round(k * dt, 9) for k in range(first, stop)]
+    assert clock.step_time(123457, dt) == round(123457 * dt, 9)

@@ -19,6 +19,7 @@ from dataclasses import dataclass
 from itertools import repeat
 
 from vei_scenario.core import _core
+from vei_scenario.interpreter.clock import step_time, step_times
 
 #: Core columns of a road user (core_module.c: CR_*).
 _MODE, _S, _LANE, _OFFSET, _FORWARD, _HEADING, _DS, _X, _Y, _YAW, _CX, _LEN, _WID, _MOVE, _ALONG, _ODO = range(16)
@@ -83,16 +84,14 @@ class StepTimes:
             i += self.n
         if not 0 <= i < self.n:
             raise IndexError(i)
-        return round((self.step0 + 1 + i) * self.dt, 9)
+        return step_time(self.step0 + 1 + i, self.dt)
 
     def between(self, i: int, j: int) -> list[float]:
         """Times ``i`` to ``j`` (exclusive), at once."""
-        step0, dt = self.step0 + 1, self.dt
-        return [round((step0 + k) * dt, 9) for k in range(i, j)]
+        return step_times(self.step0 + 1 + i, self.step0 + 1 + j, self.dt)
 
     def __iter__(self):
-        step0, dt = self.step0 + 1, self.dt
-        return (round((step0 + i) * dt, 9) for i in range(self.n))
+        return iter(self.between(0, self.n))
 
 
 def steps_left(ctx, max_time: float) -> int:
@@ -100,9 +99,9 @@ def steps_left(ctx, max_time: float) -> int:
     CHUNK."""
     step, dt = ctx.step, ctx.dt
     n = max(0, min(CHUNK, int((max_time - 1e-9) / dt) - step + 2))
-    while n > 0 and round((step + n - 1) * dt, 9) >= max_time - 1e-9:
+    while n > 0 and step_time(step + n - 1, dt) >= max_time - 1e-9:
         n -= 1
-    while n < CHUNK and round((step + n) * dt, 9) < max_time - 1e-9:
+    while n < CHUNK and step_time(step + n, dt) < max_time - 1e-9:
         n += 1
     return n
 
@@ -138,9 +137,9 @@ def cruise(ctx, storyboard, entities: list, rows: dict, times: list, max_time: f
     for c in runners:
         c.skip(StepTimes(step0, dt, n - 1), held[c])
     _commit(ctx, entities, rows, memoryview(poses).cast("d"), memoryview(state).cast("d"), n)
-    times.extend(StepTimes(step0, dt, n))
+    times += step_times(step0 + 1, step0 + 1 + n, dt)
     ctx.step = step0 + n
-    ctx.t = round(ctx.step * dt, 9)
+    ctx.t = step_time(ctx.step, dt)
     return n
 
 

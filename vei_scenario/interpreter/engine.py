@@ -21,6 +21,7 @@ from vei_scenario.interpreter.actions import (
     global_actions,
     private_actions,
 )
+from vei_scenario.interpreter.clock import step_time
 from vei_scenario.interpreter.context import Context
 from vei_scenario.interpreter.controllers import make_controller
 from vei_scenario.interpreter.cruise import cruise
@@ -372,7 +373,7 @@ class Simulation:
             ctx.snapshot = None
             self.storyboard.complete_finished()
             ctx.step += 1
-            ctx.t = round(ctx.step * dt, 9)
+            ctx.t = step_time(ctx.step, dt)
             self._collide(collisions)
             record()
             if self.storyboard.complete and self.storyboard.stop_trigger is None:
