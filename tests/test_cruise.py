@@ -213,3 +213,43 @@ def test_the_clock_gives_every_step_its_rounded_time(dt):
     for first, stop in ((0, 10), (7, 5000), (4000, 9000), (clock.KEPT_STEPS - 3, clock.KEPT_STEPS + 4), (0, 0)):
         assert clock.step_times(first, stop, dt) == [round(k * dt, 9) for k in range(first, stop)]
     assert clock.step_time(123457, dt) == round(123457 * dt, 9)
+
+
+def test_standing_lane_keepers_step_as_the_full_step_would(tmp_path, monkeypatch):
+    """A road user standing in its lane skips the lane-keeping step once a step left it where it was
+    (engine._move): the run equals the one without that shortcut, through standing, being teleported
+    while standing, and driving off again."""
+    time_at = '<ByValueCondition><SimulationTimeCondition value="{}" rule="greaterThan"/></ByValueCondition>'
+    xosc = scenario(tmp_path, time_at.format(3.333), lead_speed=0.0)
+    teleport = (
+        '<ManeuverGroup maximumExecutionCount="1" name="tg"><Actors selectTriggeringEntities="false"><EntityRef '
+        'entityRef="Other"/></Actors><Maneuver name="tm"><Event name="t" priority="override"><Action name="ta">'
+        '<PrivateAction><TeleportAction><Position><LanePosition roadId="1" laneId="-2" s="190.5" offset="0.4"/>'
+        '</Position></TeleportAction></PrivateAction></Action><StartTrigger><ConditionGroup><Condition name="tc" '
+        f'delay="0" conditionEdge="none">{time_at.format(6)}</Condition></ConditionGroup></StartTrigger></Event>'
+        "</Maneuver></ManeuverGroup>"
+    )
+    extra = _event("OtherStops", "Other", 0.0, time_at.format(2), 0.0, "rising")
+    extra += _event("LeadGoes", "Lead", 6.0, time_at.format(9), 0.0, "rising")
+    extra += _event("OtherGoes", "Other", 4.0, time_at.format(11), 0.0, "rising") + teleport
+    go = '<StartTrigger><ConditionGroup><Condition name="go"'
+    xosc.write_text(xosc.read_text().replace(go, extra + go, 1))
+    parked = []
+    original = engine._parked
+
+    def counting(e):
+        key = original(e)
+        parked.append(key is not None and e.speed == 0.0)
+        return key
+
+    monkeypatch.setattr(engine, "cruise", lambda *args: 0)  # (quiet stretches would take most steps)
+    monkeypatch.setattr(engine, "_parked", counting)
+    fast = run_scenario(xosc)
+    monkeypatch.setattr(engine, "_parked", lambda e: None)
+    slow = run_scenario(xosc)
+    assert_identical(fast, slow)
+    assert sum(parked) > 300  # the shortcut was taken
+    other, lead = fast.traces["Other"], fast.traces["Lead"]
+    i = int(np.searchsorted(fast.t, 6.05))
+    assert other.speed[i] == 0.0 and abs(other.x[i] - other.x[i - 10]) > 50  # teleported while standing
+    assert lead.speed[-1] == 6.0 and lead.x[-1] > lead.x[int(np.searchsorted(fast.t, 9.0))] + 10

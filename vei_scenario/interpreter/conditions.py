@@ -427,6 +427,9 @@ class Speed(_EntityCondition):
     def __init__(self, el, ctx, triggering, rule) -> None:
         super().__init__(el, ctx, triggering, rule)
         self._threshold(el)
+        if len(triggering) == 1:  # the common case, tested every step: one call (rising edges add one)
+            name, quantity, cmp, value = triggering[0], self.quantity, self.cmp, self.value
+            self.test = lambda ctx: cmp(getattr(ctx.entities[name], quantity), value)
 
     def for_entity(self, ctx: Context, name: str) -> bool:
         return self.cmp(getattr(ctx.entities[name], self.quantity), self.value)

@@ -162,6 +162,17 @@ KINDS = {"Vehicle": "vehicle", "Pedestrian": "pedestrian", "MiscObject": "misc"}
 OBJECT_TYPE_PROPERTIES = ("objecttype", "type")
 
 
+def _parked(e: Entity) -> tuple | None:
+    """What decides a standing lane keeper's next step (its lane state and pose), or None while anything
+    else may move it (a controller, a path, a speed profile, a lane change, a lane still to find)."""
+    st = e.lane
+    if st is None or e.active or e.follower is not None or e.speed_profile is not None or e.lateral is not None:
+        return None
+    if e.find_lane:
+        return None
+    return (st.road, st.s, st.lane, st.offset, st.forward, st.heading, e.x, e.y, e.yaw)
+
+
 class Simulation:
     def __init__(
         self,
@@ -244,6 +255,14 @@ class Simulation:
             return
         if e.towed_by is not None:  # pulled by its tow vehicle once that has moved
             return
+        if e.parked is not None and e.speed == 0.0 and e.step_speed == 0.0 and e.parked == _parked(e):
+            # standing in its lane, with nothing to move it, where its last step left it as it was: lane
+            # keeping reads only that state, so the step again changes nothing but the step's values
+            e.status, e.accel, e.last_step_m = "default", (e.speed - e.step_speed) / self.dt, 0.0
+            if e.standing_since is None:
+                e.standing_since = self.ctx.t + self.dt
+            return
+        e.parked = None
         x0, y0 = e.x, e.y
         self._motion(e)
         e.last_step_m = math.hypot(e.x - x0, e.y - y0)
@@ -293,7 +312,10 @@ class Simulation:
         if f is None:  # (projecting onto the network is costly: only once it drives by lane)
             ensure_lane(ctx, e)
         if e.lane is not None and f is None:
+            before = _parked(e) if ds == 0.0 else None
             lane_keep(e, ds, ctx)
+            if before is not None and before == _parked(e):  # a standing step that changed nothing
+                e.parked = before
         elif f is not None and f.s + abs(ds) > f.polyline.length and (ds < 0) == f.reverse and not e.controllers:
             # on past the end (esmini)
             over = math.copysign(f.s + abs(ds) - f.polyline.length, ds)

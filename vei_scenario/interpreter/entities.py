@@ -173,6 +173,9 @@ class Entity:
     performance: bool = False  # limits come from the entity's <Performance> (speed changes obey them)
     longitudinal: object = None  # the running action that sets the speed (SpeedAction, distance keeping)
     find_lane: bool = False  # placed off the lane model: look up its lane when it first needs one
+    #: a lane keeper's lane state and pose after a step standing still (the engine's default motion
+    #: would give it the same again: see Simulation._move), None while it moves
+    parked: tuple | None = None
     step_speed: float = 0.0  # speed at the start of the current step (for the logged acceleration)
     kind: str = "vehicle"  # the ScenarioObject's kind: vehicle, pedestrian or misc (MiscObject)
     hitch_dx: float | None = None  # TrailerHitch: where a trailer is hitched, ahead of the reference point

@@ -55,6 +55,7 @@ class ConditionRunner:
             self.condition = cls(kind, ctx, names, trig.get("triggeringEntitiesRule", "any"))
         else:
             raise ctx.error(el, "condition without ByValueCondition or ByEntityCondition")
+        self._test = self.condition.test  # (looked up once: edges test every step)
         #: the condition's value with its edge applied (the test itself without an edge)
         self.edged = getattr(self, self.EDGES[self.edge]) if self.edge in self.EDGES else self.condition.test
         if self.delay <= 0:  # no delay: evaluating is the edged test (one call less each step)
@@ -63,17 +64,17 @@ class ConditionRunner:
     EDGES = {"rising": "_rising", "falling": "_falling", "risingOrFalling": "_rising_or_falling"}
 
     def _rising(self, ctx: Context) -> bool:
-        raw = self.condition.test(ctx)
+        raw = self._test(ctx)
         prev, self.prev = self.prev, raw
         return raw and prev is False
 
     def _falling(self, ctx: Context) -> bool:
-        raw = self.condition.test(ctx)
+        raw = self._test(ctx)
         prev, self.prev = self.prev, raw
         return (not raw) and prev is True
 
     def _rising_or_falling(self, ctx: Context) -> bool:
-        raw = self.condition.test(ctx)
+        raw = self._test(ctx)
         prev, self.prev = self.prev, raw
         return prev is not None and raw != prev
 

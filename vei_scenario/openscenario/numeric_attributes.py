@@ -120,6 +120,16 @@ def check_numbers(path: Path, root) -> None:
             text = el.get(name)
             if text is None:
                 continue
+            try:
+                value = float(text)
+                # the usual case first: finite, in range, >= 0 where it must be, and where an integer is due
+                # one written plainly (else it is checked and rewritten below)
+                plain = kind == "double" or (text.isascii() and text.isdigit() and (len(text) == 1 or text[0] != "0"))
+                if math.isfinite(value) and abs(value) <= MAX_MAGNITUDE and plain:
+                    if value >= 0 or not (kind.startswith("unsigned") or name in NON_NEGATIVE.get(tag, ())):
+                        continue
+            except ValueError:
+                pass
             where = f"line {el.sourceline}"
             try:
                 value = float(text)
