@@ -10,10 +10,10 @@ import math
 import numpy as np
 import pytest
 
-from vei_scenario.core.kernel import load_kernel, score
+from vei_scenario.core.kernel import load_kernel
 from vei_scenario.metrics import MetricConfig, PairSeries, compute_metrics
 from vei_scenario.metrics.definitions import METRICS, to_python
-from vei_scenario.metrics.scored_in_core import core_metrics
+from vei_scenario.metrics.scored_in_core import core_metrics, scores
 from vei_scenario.metrics.series import Track
 
 
@@ -62,7 +62,7 @@ def test_the_core_scores_a_run_as_the_definitions_do(kind, zone_ttc):
         pair = _pair(rng, kind)
         e, o = pair.ego, pair.other
         traj = np.array([e.x, e.y, e.yaw, e.speed, e.accel, o.x, o.y, o.yaw, o.speed, o.accel])
-        out = score(pair.t, traj, cfg, (e.length, e.width), (o.length, o.width))
+        out = scores(pair.t, traj, cfg, (e.length, e.width), (o.length, o.width))
         expected = _raw(pair, cfg)
         for name, column in load_kernel().columns.items():
             a, b = expected[name], float(out[column])

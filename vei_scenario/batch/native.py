@@ -29,11 +29,10 @@ from vei_scenario.core.kernel import (
     Variant,
     load_kernel,
     pointer,
-    scoring,
-    timeline,
 )
+from vei_scenario.interpreter.clock import step_time
 from vei_scenario.loop import LoopScene, NotALoop
-from vei_scenario.metrics.scored_in_core import metric_rows
+from vei_scenario.metrics.scored_in_core import metric_fields, metric_rows
 from vei_scenario.metrics.series import MetricConfig
 from vei_scenario.models.rider import recorded_start_speed, rider_route
 
@@ -79,17 +78,17 @@ class NativeBatch:
             raise NotALoop("negative duration")
         times = [0.0]
         while not times[-1] > duration and times[-1] < 600.0 - 1e-9:
-            times.append(round(len(times) * dt, 9))
-        fields, keep = timeline(np.array(times))
+            times.append(step_time(len(times), dt))
+        ie, it = b.names.index(b.ego), b.names.index(b.threat)
+        sizes = (b.length[ie], b.width[ie]), (b.length[it], b.width[it])
+        fields, keep = metric_fields(np.array(times), cfg, *sizes)
         self._keep += keep
         ego, threat = b.ego, b.threat
         ego_poly, track = b.paths[ego][0], b.paths[threat][0]
         route = np.array(rider_route(track))
         rx, ry = self._arr(route[:, 0]), self._arr(route[:, 1])
-        ie, it = b.names.index(ego), b.names.index(threat)
         scene = Scene(
             **fields,
-            **scoring(cfg, (b.length[ie], b.width[ie]), (b.length[it], b.width[it])),
             dt=dt,
             behaviour_start=b.behaviour_start_s,
             ego_path=self._polyline(ego_poly, False),

@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import ctypes
 import functools
-import math
 
 import numpy as np
 
@@ -96,67 +95,12 @@ def pointer(a: np.ndarray):
     return a.ctypes.data_as(P)
 
 
-@functools.lru_cache(maxsize=16)
-def _pet_step(metric_dt: float) -> int:
-    return max(1, int(round(0.05 / metric_dt))) if metric_dt > 0 else 1
-
-
-def timeline(t: np.ndarray) -> tuple[dict, list[np.ndarray]]:
-    """The Scene fields of a run's sample times ``t`` (at least 2): the times, np.gradient's
-    coefficients over them, the median step and PET's sampling; and the arrays they point into (keep
-    them alive while the Scene is used)."""
-    diffs = np.diff(t)
-    dx1, dx2 = diffs[:-1], diffs[1:]
-    ga, gb, gc = -dx2 / (dx1 * (dx1 + dx2)), (dx2 - dx1) / (dx1 * dx2), dx1 / (dx2 * (dx1 + dx2))
-    keep = [np.ascontiguousarray(a, dtype=float) for a in (t, ga, gb, gc)]
-    ordered, mid = np.sort(diffs), diffs.size // 2  # the median step (metrics.series.median)
-    metric_dt = float(ordered[mid]) if diffs.size % 2 else float((ordered[mid - 1] + ordered[mid]) / 2)
-    fields = {
-        "t": pointer(keep[0]),
-        "n_steps": t.size - 1,
-        "grad_a": pointer(keep[1]),
-        "grad_b": pointer(keep[2]),
-        "grad_c": pointer(keep[3]),
-        "grad_dx0": float(diffs[0]),
-        "grad_dxn": float(diffs[-1]),
-        "grad_uniform": int(bool((diffs == diffs[0]).all())),
-        "grad_h": float(diffs[0]),
-        "metric_dt": metric_dt,
-        "pet_step": _pet_step(metric_dt),
-    }
-    return fields, keep
-
-
-def scoring(cfg, ego: tuple[float, float], other: tuple[float, float]) -> dict:
-    """The Scene fields of the metrics' thresholds (``cfg``: a metrics.MetricConfig) and of the two
-    boxes' (length, width)."""
-    (el, ew), (tl, tw) = ego, other
-    return {
-        "ego_length": el,
-        "ego_width": ew,
-        "threat_length": tl,
-        "threat_width": tw,
-        "safe_ttc": cfg.safe_ttc_s,
-        "alert_ttc": cfg.alert_ttc_s,
-        "comfort_accel": cfg.comfort_accel_mps2,
-        "comfort_jerk": cfg.comfort_jerk_mps3,
-        "near_lo": cfg.near_miss_ttc_s[0],
-        "near_hi": cfg.near_miss_ttc_s[1],
-        "zone_ttc_2d": int(cfg.zone_ttc != "approx"),
-        "radius_sum": 0.5 * (math.hypot(el, ew) + math.hypot(tl, tw)),
-        "band_reach": (0.5 * ew + 0.5 * math.hypot(tl, tw)) * (1.0 + 1e-9) + 1e-12,
-    }
-
-
-def score(t: np.ndarray, traj: np.ndarray, cfg, ego: tuple[float, float], other: tuple[float, float]) -> np.ndarray:
-    """The kernel's outputs (``load_kernel().columns``) for one recorded run: ``traj`` (10, len(t)) the
-    ego's x, y, yaw, speed, accel, then the other's (box centres), ``ego``/``other`` their boxes'
-    (length, width)."""
-    fields, keep = timeline(t)
-    scene = Scene(**fields, **scoring(cfg, ego, other))
+def score(scene: Scene, traj: np.ndarray) -> np.ndarray:
+    """The kernel's outputs (``load_kernel().columns``) for one recorded run: ``traj`` (10, n_steps + 1)
+    the ego's x, y, yaw, speed, accel, then the other's (box centres); ``scene`` with its time, gradient
+    and metric fields and the two boxes' sizes set."""
     traj = np.ascontiguousarray(traj, dtype=float)
     out = np.empty(len(load_kernel().columns))
     if load_kernel().vei_batch_score(ctypes.byref(scene), pointer(traj), pointer(out)):
         raise MemoryError("vei_batch_score: out of memory")
-    del keep
     return out

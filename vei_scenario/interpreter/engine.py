@@ -168,7 +168,7 @@ def _parked(e: Entity) -> tuple | None:
     st = e.lane
     if st is None or e.active or e.follower is not None or e.speed_profile is not None or e.lateral is not None:
         return None
-    if e.find_lane:
+    if e.find_lane:  # (its lane state is not yet what lane keeping will read)
         return None
     return (st.road, st.s, st.lane, st.offset, st.forward, st.heading, e.x, e.y, e.yaw)
 

@@ -105,11 +105,11 @@ def road_distance(net: RoadNetwork, a: tuple[str, float], b: tuple[str, float]) 
     if chains is None:
         chains = net.memo[key] = _chains_between(net, ra, rb)
     best = None
-    for leave_forward, arrive_forward, middle in chains:
-        total = abs(la - sa) if leave_forward else abs(0.0 - sa)
+    for leave_forward, arrive_forward, middle in chains:  # (each piece >= 0, as Leg.length has it)
+        total = la - sa if leave_forward else sa
         for length in middle:
             total += length
-        total += abs(sb - 0.0) if arrive_forward else abs(sb - lb)
+        total += sb if arrive_forward else lb - sb
         if best is None or total < best:
             best = total
     return best
@@ -134,7 +134,7 @@ def _chains_between(net: RoadNetwork, ra: str, rb: str) -> list[tuple[bool, bool
                     if fwd not in best or cost < best[fwd][0]:
                         best[fwd] = (cost, middle)
                     continue
-                length = abs(net.road(nxt).length - 0.0)
+                length = net.road(nxt).length
                 heapq.heappush(heap, (cost + length, n, nxt, fwd, (*middle, length)))
                 n += 1
         out += [(leave_forward, arrive, middle) for arrive, (_, middle) in sorted(best.items(), reverse=True)]

@@ -57,7 +57,7 @@ class ConditionRunner:
             raise ctx.error(el, "condition without ByValueCondition or ByEntityCondition")
         self._test = self.condition.test  # (looked up once: edges test every step)
         #: the condition's value with its edge applied (the test itself without an edge)
-        self.edged = getattr(self, self.EDGES[self.edge]) if self.edge in self.EDGES else self.condition.test
+        self.edged = getattr(self, self.EDGES[self.edge]) if self.edge in self.EDGES else self._test
         if self.delay <= 0:  # no delay: evaluating is the edged test (one call less each step)
             self.evaluate = self.edged
 

@@ -31,6 +31,7 @@ import math
 from vei_scenario.interpreter.action_base import SteppedLongitudinal, entity_ref
 from vei_scenario.interpreter.positions import Pose, ensure_lane
 from vei_scenario.interpreter.positions import resolve as resolve_position
+from vei_scenario.interpreter.routes import road_distance
 from vei_scenario.safe_xml import first_element
 
 SMALL = 1e-10
@@ -128,7 +129,7 @@ class Synchronize(SteppedLongitudinal):
         if ctx.roads is not None:
             ensure_lane(ctx, e)
             if e.lane is not None and goal.lane is not None:
-                d = _road_distance(ctx.roads, e.lane, goal.lane)
+                d = road_distance(ctx.roads, (e.lane.road, e.lane.s), (goal.lane.road, goal.lane.s))
                 if d is not None:
                     return d
         return math.hypot(goal.x - e.x, goal.y - e.y)
@@ -251,10 +252,3 @@ def _two_piece_acceleration(v0: float, v1: float, s: float, t: float) -> tuple[f
         if 0.0 < x < t:
             return (vx - v0) / x, vx
     return 0.0, 0.0
-
-
-def _road_distance(net, a, b) -> float | None:
-    """Length of the shortest chain of roads from lane state ``a`` to ``b`` (None if none joins them)."""
-    from vei_scenario.interpreter.routes import road_distance
-
-    return road_distance(net, (a.road, a.s), (b.road, b.s))

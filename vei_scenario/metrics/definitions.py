@@ -142,6 +142,11 @@ def drac_max_mps2(p: PairSeries, cfg: MetricConfig) -> np.ndarray:
 PET_MIN_CROSSING_ANGLE_DEG = 20.0
 
 
+def pet_step(dt: float) -> int:
+    """Every how many samples (of step ``dt``) the conflict area is looked at: every 0.05 s."""
+    return max(1, int(round(0.05 / dt))) if dt > 0 else 1
+
+
 def conflict_area_samples(p: PairSeries) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """(sample indices every 0.05 s, ego box in the conflict area, other box in it).
 
@@ -149,7 +154,7 @@ def conflict_area_samples(p: PairSeries) -> tuple[np.ndarray, np.ndarray, np.nda
     in it exactly when it overlaps some box of the other. Only pairs whose circumscribed circles meet,
     among the samples near the other's path, are tested (separating axes)."""
     e, o = p.ego, p.other
-    step = max(1, int(round(0.05 / p.dt))) if p.dt > 0 else 1
+    step = pet_step(p.dt)
     idx = np.arange(0, p.t.size, step)
     ex, ey, eyaw = e.x[idx], e.y[idx], e.yaw[idx]
     ox, oy, oyaw = o.x[idx], o.y[idx], o.yaw[idx]

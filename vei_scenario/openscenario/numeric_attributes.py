@@ -122,19 +122,20 @@ def check_numbers(path: Path, root) -> None:
                 continue
             try:
                 value = float(text)
-                # the usual case first: finite, in range, >= 0 where it must be, and where an integer is due
-                # one written plainly (else it is checked and rewritten below)
-                plain = kind == "double" or (text.isascii() and text.isdigit() and (len(text) == 1 or text[0] != "0"))
-                if math.isfinite(value) and abs(value) <= MAX_MAGNITUDE and plain:
-                    if value >= 0 or not (kind.startswith("unsigned") or name in NON_NEGATIVE.get(tag, ())):
-                        continue
             except ValueError:
-                pass
+                raise VeiInputError(path, f"line {el.sourceline}", f'<{tag} {name}="{text}">: not a number') from None
+            # the usual case first: finite, in range, >= 0 where it must be, and where an integer is due
+            # one written plainly (else it is checked and rewritten below)
+            plain = kind == "double" or (text.isascii() and text.isdigit() and (len(text) == 1 or text[0] != "0"))
+            must_not_be_negative = kind.startswith("unsigned") or name in NON_NEGATIVE.get(tag, ())
+            if (
+                plain
+                and math.isfinite(value)
+                and abs(value) <= MAX_MAGNITUDE
+                and not (value < 0 and must_not_be_negative)
+            ):
+                continue
             where = f"line {el.sourceline}"
-            try:
-                value = float(text)
-            except ValueError:
-                raise VeiInputError(path, where, f'<{tag} {name}="{text}">: not a number') from None
             if not math.isfinite(value):
                 raise VeiInputError(path, where, f'<{tag} {name}="{text}">: not a finite number')
             if abs(value) > MAX_MAGNITUDE and name not in UNBOUNDED:
@@ -146,5 +147,5 @@ def check_numbers(path: Path, root) -> None:
                     raise VeiInputError(path, where, f'<{tag} {name}="{text}">: not an integer ({kind})')
                 if text.strip() != str(int(value)):  # "1.0", "1e3", " 2": written as the integer they are
                     el.set(name, str(int(value)))
-            if value < 0 and (kind.startswith("unsigned") or name in NON_NEGATIVE.get(tag, ())):
+            if value < 0 and must_not_be_negative:
                 raise VeiInputError(path, where, f'<{tag} {name}="{text}">: must not be negative')

@@ -48,7 +48,9 @@ static double corners_to_box(const VeiTrigBox *a, const VeiTrigBox *b) {
 
 /* Distance between two disjoint boxes: they are closest at a corner of one of them, so it is the least
  * corner-to-box distance both ways. */
-static double box_gap(const VeiTrigBox *a, const VeiTrigBox *b) { return dmin(corners_to_box(a, b), corners_to_box(b, a)); }
+static double box_gap(const VeiTrigBox *a, const VeiTrigBox *b) {
+    return dmin(corners_to_box(a, b), corners_to_box(b, a));
+}
 
 enum { EX, EY, EYAW, ESPEED, EACCEL, TX, TY, TYAW, TSPEED, TACCEL, NTRAJ };
 /* the cosine and sine of each recorded heading: computed once per step by the simulation and shared
