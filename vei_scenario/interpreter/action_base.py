@@ -20,6 +20,12 @@ class Action:
     def stop(self, ctx) -> None:
         pass
 
+    def carried(self, ctx) -> bool:
+        """Whether a quiet stretch of the core (interpreter/cruise.py) may run while this action runs:
+        the core moves its entity as the action would, and its :meth:`update` would not end it in
+        the stretch's steps (the core stops before a step that would)."""
+        return False
+
 
 class Stepped(Action):
     """An action that acts on its entity every step before the entities move (registered in
@@ -30,6 +36,9 @@ class Stepped(Action):
 
     def taken_over(self, ctx) -> bool:
         return False
+
+    def carried(self, ctx) -> bool:  # (the cruise asks each stepped action for its core columns)
+        return not self.done
 
     def update(self, ctx) -> None:
         if self.taken_over(ctx):

@@ -461,6 +461,12 @@ class FollowTrajectory(Action):
     def stop(self, ctx) -> None:
         ctx.entities[self.entity].follower = None
 
+    def carried(self, ctx) -> bool:
+        """An untimed path not at its end: the core moves the entity along it at its speed and stops
+        before the step that reaches the end."""
+        f = ctx.entities[self.entity].follower
+        return f is not None and not (f.timing is not None and f.polyline.timed) and not f.finished(ctx.t, ctx.dt)
+
 
 class AssignController(Action):
     def __init__(self, entity: str, el, ctx) -> None:

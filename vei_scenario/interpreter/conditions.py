@@ -434,8 +434,8 @@ class Speed(_EntityCondition):
     def for_entity(self, ctx: Context, name: str) -> bool:
         return self.cmp(getattr(ctx.entities[name], self.quantity), self.value)
 
-    def steady_for(self, ctx: Context, name: str, bounds) -> int:  # a cruise keeps the speed
-        return STEADY
+    def steady_for(self, ctx: Context, name: str, bounds) -> int:  # a cruise keeps the speed (unless synchronised)
+        return 0 if name in bounds.varying else STEADY
 
 
 class ReachPosition(_EntityCondition):
@@ -502,14 +502,14 @@ class RelativeSpeed(_EntityCondition):
         return self.cmp(ctx.entities[name].speed - ctx.entities[self.target].speed, self.value)
 
     def steady_for(self, ctx: Context, name: str, bounds) -> int:
-        return STEADY
+        return 0 if name in bounds.varying or self.target in bounds.varying else STEADY
 
 
 class Acceleration(Speed):
     quantity = "accel"
 
     def steady_for(self, ctx: Context, name: str, bounds) -> int:  # a cruise step's acceleration is 0
-        return STEADY if ctx.entities[name].accel == 0.0 else 0
+        return STEADY if ctx.entities[name].accel == 0.0 and name not in bounds.varying else 0
 
 
 class TimeHeadway(_EntityCondition):

@@ -22,12 +22,18 @@ from vei_scenario.core import _core
 from vei_scenario.interpreter.clock import step_time, step_times
 
 #: Core columns of a road user (core_module.c: CR_*).
-_MODE, _S, _LANE, _OFFSET, _FORWARD, _HEADING, _DS, _X, _Y, _YAW, _CX, _LEN, _WID, _MOVE, _ALONG, _ODO = range(16)
-_COLS = 16
+(_MODE, _S, _LANE, _OFFSET, _FORWARD, _HEADING, _DS, _X, _Y, _YAW, _CX, _LEN, _WID, _MOVE, _ALONG, _ODO, _SPEED,
+ _LAST, _VARIES) = range(19)  # fmt: skip
+_COLS = 19
+#: Core columns of a synchronisation (core_module.c: SY_*).
+_SY_COLS = 12
 #: Most steps in one call of the core (the poses it returns for them are held in memory at once).
 CHUNK = 2000
 #: Fewest quiet steps worth a call (fewer: the ordinary step is as quick).
 MIN_STEPS = 3
+#: How much faster (m/s) than now a road user whose speed a synchronisation sets may go in a quiet
+#: stretch: the bound of its steps that the conditions reason with (the core stops before it is passed).
+SPEED_MARGIN_MPS = 2.0
 
 
 @dataclass(frozen=True)
@@ -35,38 +41,66 @@ class QuietBounds:
     """The most a quiet step changes: the core stops before a step that would exceed any of these."""
 
     move: dict[str, float]  # metres a road user's reference point moves in a step
-    along: dict[str, float]  # metres of its road's s it passes in a step
+    along: dict[str, float]  # metres of its road's s (or its path's) it passes in a step
     turn: float  # radians it turns in a step
     reach: float = 10.0  # metres a distance's lever arm may grow before a condition looks again
+    varying: frozenset = frozenset()  # road users whose speed changes (a synchronisation sets it)
 
 
-def _columns(ctx, entities) -> tuple[tuple, list[float], QuietBounds] | None:
+def _columns(ctx, entities, varying: frozenset) -> tuple[tuple, list[float], QuietBounds] | None:
     """The core's columns of every road user and the bounds of their steps, or None when one moves
-    otherwise than by cruising."""
-    roads, cols, dt = [], [], ctx.dt
-    bounds = QuietBounds({}, {}, 0.3 * dt)
+    otherwise than by cruising along its lane or path (or straight on)."""
+    ways, cols, dt = [], [], ctx.dt
+    bounds = QuietBounds({}, {}, 0.3 * dt, varying=varying)
     for e in entities:
         if e.deleted:
-            roads.append(None)
+            ways.append(None)
             cols += [-1.0] + [0.0] * (_COLS - 1)
             continue
+        f = e.follower
         if (
-            e.placed or e.towed_by is not None or e.trailer is not None or e.follower is not None
-            or e.speed_profile is not None or e.lateral is not None or e.find_lane or any(e.active.values())
+            e.placed or e.towed_by is not None or e.trailer is not None or e.speed_profile is not None
+            or e.lateral is not None or e.find_lane or any(e.active.values())
+            or (f is not None and (f.polyline.xs is None or (f.timing is not None and f.polyline.timed)))
         ):  # fmt: skip
             return None
         ds = e.speed * dt
         st = e.lane
-        if st is not None:
-            roads.append(ctx.roads.road(st.road).core)
+        if f is not None:  # along its path (an untimed one: the speed moves it)
+            ways.append(f.polyline.core)
+            head = [2.0, f.s, 0.0, 0.0, 1.0 if f.reverse else 0.0, 0.0]
+        elif st is not None:
+            ways.append(ctx.roads.road(st.road).core)
             head = [1.0, st.s, float(st.lane), st.offset, 1.0 if st.forward else 0.0, st.heading]
         else:
-            roads.append(None)
+            ways.append(None)
             head = [0.0] * 6
-        move = bounds.move[e.name] = abs(ds) * 1.05 + 1e-9
-        along = bounds.along[e.name] = abs(ds) * 1.3 + 1e-9
-        cols += head + [ds, e.x, e.y, e.yaw, e.center_x, e.length, e.width, move, along, e.odometer]
-    return tuple(roads), cols, bounds
+        varies = e.name in varying
+        reach = (abs(e.speed) + SPEED_MARGIN_MPS) * dt if varies else abs(ds)
+        move = bounds.move[e.name] = reach * 1.05 + 1e-9
+        along = bounds.along[e.name] = reach * 1.3 + 1e-9
+        cols += head + [ds, e.x, e.y, e.yaw, e.center_x, e.length, e.width, move, along, e.odometer, e.speed]
+        cols += [e.last_step_m, 1.0 if varies else 0.0]
+    return tuple(ways), cols, bounds
+
+
+def _synchronisations(ctx) -> tuple[list, list[float]] | None:
+    """The running synchronisations and their core columns, or None when an action steps that the core
+    does not take (or a synchronisation's distances are not along one path or road)."""
+    from vei_scenario.interpreter.synchronize import Synchronize
+
+    actions, cols = [], []
+    index = {n: i for i, n in enumerate(ctx.entities)}
+    for a in ctx.stepping:
+        c = a.core_columns(ctx, index) if type(a) is Synchronize else None
+        if c is None:
+            return None
+        actions.append(a)
+        cols += c
+    synced = {a.entity for a in actions}
+    if len(synced) < len(actions) or any(a.master in synced for a in actions):
+        return None
+    return actions, cols
 
 
 class StepTimes:
@@ -112,10 +146,14 @@ def cruise(ctx, storyboard, entities: list, rows: dict, times: list, max_time: f
     triggers = storyboard.watching()
     if triggers is None:
         return 0
-    columns = _columns(ctx, entities)
+    syncs = _synchronisations(ctx) if ctx.stepping else ([], [])
+    if syncs is None:
+        return 0
+    actions, sync_cols = syncs
+    columns = _columns(ctx, entities, frozenset(a.entity for a in actions))
     if columns is None:
         return 0
-    roads, cols, bounds = columns
+    ways, cols, bounds = columns
     dt = ctx.dt
     runners = [c for t in triggers for c in t.conditions()]
     skipped = steps_left(ctx, max_time) - 1  # evaluations after this step's that the cruise replaces
@@ -131,11 +169,17 @@ def cruise(ctx, storyboard, entities: list, rows: dict, times: list, max_time: f
         skipped = min(skipped, t.first_firing(held, StepTimes(step0, dt, skipped)))
     if skipped < MIN_STEPS:
         return 0
-    n, poses, state = _core.cruise(roads, array.array("d", cols).tobytes(), skipped + 1, bounds.turn, math.hypot)
+    f64 = array.array
+    n, poses, state, sync_state = _core.cruise(
+        ways, f64("d", cols).tobytes(), f64("d", sync_cols).tobytes(), skipped + 1, bounds.turn, dt, math.hypot
+    )
     if n == 0:
         return 0
     for c in runners:
         c.skip(StepTimes(step0, dt, n - 1), held[c])
+    sync_state = memoryview(sync_state).cast("d")
+    for k, a in enumerate(actions):
+        a.take_core_columns(sync_state[k * _SY_COLS : (k + 1) * _SY_COLS])
     _commit(ctx, entities, rows, memoryview(poses).cast("d"), memoryview(state).cast("d"), n)
     times += step_times(step0 + 1, step0 + 1 + n, dt)
     ctx.step = step0 + n
@@ -152,12 +196,17 @@ def _commit(ctx, entities: list, rows: dict, poses, state, n: int) -> None:
             e.status, e.last_step_m = "deleted", 0.0
             rows[e.name].extend(repeat((e.x, e.y, e.yaw, e.speed, e.accel, "deleted"), n))
             continue
-        xs, ys, yaws = poses[4 * i :: 4 * k], poses[4 * i + 1 :: 4 * k], poses[4 * i + 2 :: 4 * k]
-        rows[e.name].extend(zip(xs, ys, yaws, repeat(e.speed, n), repeat(0.0, n), repeat("default", n)))
-        e.x, e.y, e.yaw = col[_X], col[_Y], col[_YAW]
-        e.accel, e.status, e.step_speed = 0.0, "default", e.speed
-        e.last_step_m, e.odometer = poses[4 * (n - 1) * k + 4 * i + 3], col[_ODO]
-        if e.lane is not None:
+        xs, ys, yaws = poses[6 * i :: 6 * k], poses[6 * i + 1 :: 6 * k], poses[6 * i + 2 :: 6 * k]
+        speeds, accels = poses[6 * i + 4 :: 6 * k], poses[6 * i + 5 :: 6 * k]
+        rows[e.name].extend(zip(xs, ys, yaws, speeds, accels, repeat("default", n)))
+        last = 6 * (n - 1) * k + 6 * i
+        e.step_speed = poses[last - 6 * k + 4] if n > 1 else e.speed  # (the speed the last step began at)
+        e.x, e.y, e.yaw, e.speed = col[_X], col[_Y], col[_YAW], col[_SPEED]
+        e.accel, e.status = poses[last + 5], "default"
+        e.last_step_m, e.odometer = poses[last + 3], col[_ODO]
+        if e.follower is not None:
+            e.follower.s = col[_S]
+        elif e.lane is not None:
             e.lane.s, e.lane.lane = col[_S], int(col[_LANE])
         if abs(e.speed) < 1e-9:
             if e.standing_since is None:

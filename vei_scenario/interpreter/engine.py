@@ -369,7 +369,11 @@ class Simulation:
                 reason = "storyboard stop trigger"
                 break
             ending = board.complete and board.stop_trigger is None  # (the loop ends after this step)
-            if not pending and not ctx.stepping and ctx.transitions == before and not ending:
+            if (
+                ctx.transitions == before and not ending
+                and (not pending or all(a.carried(ctx) for a in pending))
+                and (not ctx.stepping or all(a.carried(ctx) for a in ctx.stepping))
+            ):  # fmt: skip
                 if wait:
                     wait -= 1
                 elif cruise(ctx, board, entities, rows, times, self.max_time):

@@ -244,7 +244,8 @@ class Storyboard:
 
     def watching(self) -> list[Trigger] | None:
         """The triggers the next step evaluates, or None when something would act in it regardless of
-        them (an event running, a story or an element without a trigger about to start)."""
+        them (an event running an action the core's quiet stretch does not carry, a story or an element
+        without a trigger about to start)."""
         out = [self.stop_trigger] if self.stop_trigger is not None else []
         for story in self.stories:
             if story.state == STANDBY:
@@ -266,12 +267,24 @@ class Storyboard:
                             continue
                         for ev in m.children:
                             if ev.state == RUNNING:
-                                return None
+                                if not self._carried(ev):
+                                    return None
+                                continue
                             if ev.state == STANDBY:
                                 if ev.start_trigger is None:
                                     return None
                                 out.append(ev.start_trigger)
         return out
+
+    def _carried(self, ev: Element) -> bool:
+        """Whether every running action of a running event lets a quiet stretch of the core run."""
+        ctx = self.ctx
+        for a in ev.children:
+            if a.state == RUNNING:
+                for x in a.actions:
+                    if not (x.done or x.carried(ctx)):
+                        return False
+        return True
 
     # --- building -----------------------------------------------------------------------------------
     def _story(self, el) -> Element:

@@ -40,6 +40,9 @@ LARGE = 1e10
 STOP_DECELERATION = 8.0
 #: How close (m/s) the speed must be to the straight speed line to switch to it.
 ON_LINE_SPEED_TOLERANCE = 0.1
+#: The profile's modes and submodes, numbered as the core numbers them (core_module.c: SM_*, SS_*).
+_MODES = ("none", "waiting", "steady", "stop now", "stopped", "linear", "non-linear")
+_SUBMODES = ("none", "convex", "concave")
 
 
 class Synchronize(SteppedLongitudinal):
@@ -170,6 +173,40 @@ class Synchronize(SteppedLongitudinal):
         e.speed = self._profile_speed(e.speed, dist, master_time, self._final_speed(ctx), dt)
 
     master_moved = True
+
+    # --- in the core's quiet stretches (interpreter/cruise.py, core_module.c: sync_step) ------------
+    def core_columns(self, ctx, index: dict[str, int]) -> list[float] | None:
+        """This synchronisation as the core steps it (SY_* columns), or None when a distance is not the
+        plain difference of s along one path or road that the entity keeps in a quiet stretch."""
+        if self.done or ctx.initializing or ctx.settling:
+            return None
+        goals = []
+        for name, goal in ((self.entity, self.goal), (self.master, self.master_goal)):
+            e = ctx.entities[name]
+            f = e.follower
+            if f is not None and f.polyline.xs is not None:
+                key = (f.polyline, goal.x, goal.y)
+                s_goal = self._goal_on_path.get(key)
+                if s_goal is None:
+                    s_goal = self._goal_on_path[key] = f.polyline.project(goal.x, goal.y)
+                goals.append(s_goal)
+            elif ctx.roads is not None and e.lane is not None and goal.lane is not None:
+                if goal.lane.road != e.lane.road:
+                    return None
+                goals.append(goal.lane.s)
+            else:
+                return None
+        final = self._final_speed(ctx) if self.final is not None else math.nan
+        steady = self.steady_dist if self.steady is not None else math.nan
+        return [
+            index[self.entity], index[self.master], goals[0], goals[1], self.tolerance, self.tolerance_master, final,
+            steady, _MODES.index(self.mode), _SUBMODES.index(self.submode), self.last_dist, self.last_master_dist,
+        ]  # fmt: skip
+
+    def take_core_columns(self, cols) -> None:
+        """The state the core's steps left this synchronisation in."""
+        self.mode, self.submode = _MODES[int(cols[8])], _SUBMODES[int(cols[9])]
+        self.last_dist, self.last_master_dist = cols[10], cols[11]
 
     def _profile_speed(self, v0: float, s: float, t: float, v1: float, dt: float) -> float:
         """The speed for the coming step of a profile that covers ``s`` in ``t`` ending at ``v1``."""

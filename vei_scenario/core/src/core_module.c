@@ -718,8 +718,142 @@ static PyObject *overlapping(PyObject *mod, PyObject *arg)
 /* ---------------------------------------------------------------------------------------------- */
 /* cruise: quiet steps of the interpreter (see vei_scenario/interpreter/cruise.py) in one call */
 
+/* a road user's columns: mode (-1 deleted, 0 straight on, 1 its lane, 2 its path), where it is on its
+ * lane or path (s, lane, offset, forward or, on a path, reversing, heading to the lane), the step's
+ * metres (constant speed), pose, box, the bounds of a step, odometer, speed, last step's metres, and
+ * whether a synchronisation sets its speed each step */
 enum { CR_MODE, CR_S, CR_LANE, CR_OFFSET, CR_FORWARD, CR_HEADING, CR_DS, CR_X, CR_Y, CR_YAW, CR_CENTER_X,
-       CR_LENGTH, CR_WIDTH, CR_MAX_MOVE, CR_MAX_DS, CR_ODOMETER, CR_COLS };
+       CR_LENGTH, CR_WIDTH, CR_MAX_MOVE, CR_MAX_DS, CR_ODOMETER, CR_SPEED, CR_LAST_MOVED, CR_VARIES, CR_COLS };
+
+/* a running SynchronizeAction (interpreter/synchronize.py), whose distances are along the path or
+ * road each party stays on: |goal s - s| */
+enum { SY_ENTITY, SY_MASTER, SY_GOAL, SY_MASTER_GOAL, SY_TOL, SY_TOL_MASTER, SY_FINAL, SY_STEADY, SY_MODE,
+       SY_SUBMODE, SY_LAST, SY_LAST_MASTER, SY_COLS };
+/* Synchronize.mode and .submode */
+enum { SM_NONE, SM_WAITING, SM_STEADY, SM_STOP_NOW, SM_STOPPED, SM_LINEAR, SM_NON_LINEAR };
+enum { SS_NONE, SS_CONVEX, SS_CONCAVE };
+
+#define SYNC_SMALL 1e-10
+#define SYNC_LARGE 1e10
+#define SYNC_STOP_DECELERATION 8.0
+#define SYNC_ON_LINE 0.1
+
+/* synchronize._two_piece_acceleration */
+static void sync_two_piece(double v0, double v1, double s, double t, double *acc, double *vx)
+{
+    if (fabs(v1 - v0) < SYNC_SMALL) {
+        *vx = (s - (t / 2.0) * v0) / (t / 2.0);
+        *acc = (*vx - v0) / (t / 2.0);
+        return;
+    }
+    double q = 2.0 * s * s - 2.0 * (v1 + v0) * t * s + (v1 * v1 + v0 * v0) * t * t;
+    double root = sqrt(2.0) * sqrt(q > 0.0 ? q : 0.0); /* (Python's max(0.0, q)) */
+    for (int k = 0; k < 2; k++) {
+        double sign = k == 0 ? 1.0 : -1.0;
+        double x = -(sign * root + 2.0 * s - 2.0 * v1 * t) / (2.0 * (v1 - v0));
+        double v = (2.0 * s - sign * root) / (2.0 * t);
+        if (0.0 < x && x < t) {
+            *acc = (v - v0) / x, *vx = v;
+            return;
+        }
+    }
+    *acc = 0.0, *vx = 0.0;
+}
+
+/* synchronize.Synchronize._profile_speed, on the columns' mode and submode */
+static double sync_profile(double *sy, double v0, double s, double t, double v1, double dt, int master_moved)
+{
+    int mode = (int)sy[SY_MODE], sub = (int)sy[SY_SUBMODE];
+    double v;
+    if (!isnan(sy[SY_STEADY]) && mode != SM_STEADY) {
+        double steady = sy[SY_STEADY], time_to_steady = v1 > SYNC_SMALL ? steady / v1 : SYNC_LARGE;
+        if (s - steady < SYNC_SMALL || t - time_to_steady < SYNC_SMALL) mode = SM_STEADY, sub = SS_NONE;
+        else s -= steady, t -= time_to_steady;
+    }
+    if (mode == SM_STEADY) {
+        v = v1;
+        goto out;
+    }
+    if (mode == SM_WAITING) {
+        if (t >= SYNC_LARGE) {
+            v = v0;
+            goto out;
+        }
+        mode = SM_NONE;
+    }
+    if (mode == SM_STOP_NOW) {
+        v = v0 - SYNC_STOP_DECELERATION * dt;
+        if (v < 0.0) mode = SM_WAITING, v = 0.0;
+        goto out;
+    }
+    if (mode == SM_STOPPED) {
+        if (v1 > SYNC_SMALL && t < 2.0 * s / v1) mode = SM_LINEAR;
+        else {
+            v = 0.0;
+            goto out;
+        }
+    }
+    if (mode == SM_LINEAR) {
+        if (t > SYNC_LARGE - 1.0) v = 0.0;
+        else {
+            double vf = v1 > 0.0 ? v1 : 0.0, line = (t < 0.001 || s < 0.001) ? 0.0 : 2.0 * s / t - vf;
+            v = line > 0.0 ? line : 0.0;
+        }
+        goto out;
+    }
+    if (mode == SM_NON_LINEAR && t < SYNC_LARGE && fabs(v0 - (2.0 * s / t - v1)) < SYNC_ON_LINE) {
+        mode = SM_LINEAR, v = v0;
+        goto out;
+    }
+    if (mode == SM_NONE) {
+        mode = SM_NON_LINEAR;
+        double t_seen = master_moved ? t : SYNC_LARGE;
+        sub = (v1 + v0) / 2.0 < s / t_seen ? SS_CONVEX : SS_CONCAVE;
+    }
+    double acc, vx;
+    sync_two_piece(v0, v1, s, t, &acc, &vx);
+    if ((sub == SS_CONCAVE && acc > 0) || (sub == SS_CONVEX && acc < 0)) mode = SM_LINEAR, acc = 0.0;
+    if (mode == SM_NON_LINEAR && vx < 0.0) {
+        double t1 = 2.0 * v0 * s / (v0 * v0 + v1 * v1);
+        acc = fabs(t1) > SYNC_SMALL ? -v0 / t1 : 0.0;
+        if (t1 * v0 / 2.0 > s / 2.0) acc = -SYNC_STOP_DECELERATION, mode = SM_STOP_NOW;
+        if (v0 + acc * dt < 0.0) {
+            mode = SM_STOPPED, v = 0.0;
+            goto out;
+        }
+    }
+    v = v0 + acc * dt;
+out:
+    sy[SY_MODE] = mode, sy[SY_SUBMODE] = sub;
+    return v;
+}
+
+/* Synchronize.step on the columns before the move: the entity's new speed in its column, or 0 when the
+ * action ends in this step (the interpreter takes that step) */
+static int sync_step(double *sy, const double *cur, double *next, double dt)
+{
+    const double *e = cur + (Py_ssize_t)sy[SY_ENTITY] * CR_COLS, *m = cur + (Py_ssize_t)sy[SY_MASTER] * CR_COLS;
+    double master_dist = fabs(sy[SY_MASTER_GOAL] - m[CR_S]), dist = fabs(sy[SY_GOAL] - e[CR_S]);
+    if (dist < sy[SY_TOL] + SYNC_SMALL || master_dist < sy[SY_TOL_MASTER] + SYNC_SMALL || dist > sy[SY_LAST] ||
+        master_dist > sy[SY_LAST_MASTER])
+        return 0;
+    sy[SY_LAST] = dist, sy[SY_LAST_MASTER] = master_dist;
+    dist -= sy[SY_TOL], master_dist -= sy[SY_TOL_MASTER];
+    if (SYNC_SMALL > dist) dist = SYNC_SMALL;
+    if (SYNC_SMALL > master_dist) master_dist = SYNC_SMALL;
+    double master_time = SYNC_LARGE, master_speed = fabs(m[CR_SPEED]), v = e[CR_SPEED];
+    if (master_speed > SYNC_SMALL) {
+        master_time = master_dist / master_speed;
+        if (master_time < dt) return 0;
+    }
+    if (isnan(sy[SY_FINAL])) {
+        double v_end = 2.0 * dist / master_time - v;
+        v += (v_end - v) / master_time * dt;
+    } else
+        v = sync_profile(sy, v, dist, master_time, sy[SY_FINAL], dt, m[CR_LAST_MOVED] > 0.0);
+    next[(Py_ssize_t)sy[SY_ENTITY] * CR_COLS + CR_SPEED] = v;
+    return 1;
+}
 
 /* the bounding box of a road user at (x, y, yaw) whose box centre is center_x ahead of it (Entity.box) */
 static VeiBox entity_box(double x, double y, double yaw, double center_x, double length, double width)
@@ -743,90 +877,122 @@ static void cruise_pairs(const double *st, Py_ssize_t n, VeiBox *box, int *pairs
     }
 }
 
-/* one road user's next pose keeping its lane or driving straight on (the interpreter's default motion,
- * motion.lane_keep's one-call path); 0 when the step is not a quiet one (off its road or lane, further
- * or more turned than the bounds) */
-static int cruise_move(RoadObject *road, const double *e, double max_turn, double *next)
+/* one road user's next pose keeping its lane, driving straight on or along its path (the interpreter's
+ * default motion: motion.lane_keep's one-call path, motion.advance_along); 0 when the step is not a
+ * quiet one (off its road or lane, to its path's end, further or more turned than the bounds, starting
+ * or ending a standstill). next holds the step's speed already. */
+static int cruise_move(PyObject *way, const double *e, double max_turn, double dt, double *next)
 {
-    double ds = e[CR_DS];
-    memcpy(next, e, sizeof(double) * CR_COLS);
+    double speed = next[CR_SPEED];
+    double ds = e[CR_VARIES] != 0.0 ? speed * dt : e[CR_DS];
     if (e[CR_MODE] < 0) return 1;
+    if ((fabs(speed) < 1e-9) != (fabs(e[CR_SPEED]) < 1e-9)) return 0;
     if (e[CR_MODE] == 0) {
         next[CR_X] = e[CR_X] + ds * cos(e[CR_YAW]);
         next[CR_Y] = e[CR_Y] + ds * sin(e[CR_YAW]);
-    } else {
+    } else if (e[CR_MODE] == 1) {
         int lane = (int)e[CR_LANE], lane1, forward = e[CR_FORWARD] != 0.0;
         double s1, out[4];
-        if (lane_step(&road->r, e[CR_S], lane, e[CR_OFFSET], ds, forward, &s1, &lane1, out) != 1 || lane1 != lane ||
-            fabs(s1 - e[CR_S]) > e[CR_MAX_DS])
+        if (lane_step(&((RoadObject *)way)->r, e[CR_S], lane, e[CR_OFFSET], ds, forward, &s1, &lane1, out) != 1 ||
+            lane1 != lane || fabs(s1 - e[CR_S]) > e[CR_MAX_DS])
             return 0;
         double a = (forward ? out[2] : out[2] + M_PI) + e[CR_HEADING];
         next[CR_S] = s1;
         next[CR_X] = out[0];
         next[CR_Y] = out[1];
         next[CR_YAW] = atan2(sin(a), cos(a));
+    } else {
+        const VeiPolyline *p = &((PolylineObject *)way)->p;
+        double length = p->s[p->n - 1], reverse = e[CR_FORWARD] != 0.0;
+        if (e[CR_S] + fabs(ds) > length) return 0; /* (on past its end, or its end: the interpreter's) */
+        double s1 = e[CR_S] + (reverse ? -ds : ds), h;
+        if (s1 > length) s1 = length;
+        if (s1 >= length - 1e-9 || fabs(s1 - e[CR_S]) > e[CR_MAX_DS]) return 0;
+        vei_polyline_at_s(p, s1, &next[CR_X], &next[CR_Y], &h);
+        next[CR_S] = s1;
+        next[CR_YAW] = reverse ? atan2(-sin(h), -cos(h)) : h;
     }
     double turn = fabs(remainder(next[CR_YAW] - e[CR_YAW], 2 * M_PI));
     return hypot(next[CR_X] - e[CR_X], next[CR_Y] - e[CR_Y]) <= e[CR_MAX_MOVE] && turn <= max_turn;
 }
 
-/* cruise(roads, state, n_max, max_turn, hypot) -> (n, poses, state): up to n_max steps of every road
- * user at its speed (roads: per road user its Road, None to drive straight on or, mode -1, not to
- * move); stops before a step that is not quiet or changes which pairs overlap. poses: n x users x
- * (x, y, yaw, metres moved); state: the users' columns after the n steps. The metres moved and the
- * odometer are math.hypot's (given), so they equal the interpreter's own steps bit for bit. */
+/* cruise(ways, state, syncs, n_max, max_turn, dt, hypot) -> (n, poses, state, syncs): up to n_max steps
+ * of every road user (ways: per road user its Road (mode 1), its Polyline (mode 2) or None), the
+ * synchronisations (SY_COLS each) setting their entities' speeds before each move; stops before a step
+ * that is not quiet, ends a synchronisation or changes which pairs overlap. poses: n x users x (x, y,
+ * yaw, metres moved, speed, acceleration); state, syncs: the columns after the n steps. The metres moved
+ * and the odometer are math.hypot's (given), so they equal the interpreter's own steps bit for bit. */
 static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
 {
-    if (!args_ok(nargs, 5, "cruise")) return NULL;
-    PyObject *roads = args[0], *state = args[1], *hyp = args[4];
-    long n_max = PyLong_AsLong(args[2]);
-    double max_turn = PyFloat_AsDouble(args[3]);
+    if (!args_ok(nargs, 7, "cruise")) return NULL;
+    PyObject *ways = args[0], *state = args[1], *syncs = args[2], *hyp = args[6];
+    long n_max = PyLong_AsLong(args[3]);
+    double max_turn = PyFloat_AsDouble(args[4]), dt = PyFloat_AsDouble(args[5]);
     if (PyErr_Occurred()) return NULL;
-    if (!PyTuple_Check(roads) || !PyBytes_Check(state) || !PyCallable_Check(hyp) || n_max < 0) {
-        PyErr_SetString(PyExc_TypeError, "cruise(roads tuple, state bytes, n_max >= 0, max_turn, hypot)");
+    if (!PyTuple_Check(ways) || !PyBytes_Check(state) || !PyBytes_Check(syncs) || !PyCallable_Check(hyp) ||
+        n_max < 0 || !(dt > 0)) {
+        PyErr_SetString(PyExc_TypeError, "cruise(ways tuple, state bytes, syncs bytes, n_max >= 0, max_turn, dt > 0, hypot)");
         return NULL;
     }
-    Py_ssize_t n = PyTuple_GET_SIZE(roads);
-    if (PyBytes_GET_SIZE(state) != n * (Py_ssize_t)sizeof(double) * CR_COLS) {
-        PyErr_SetString(PyExc_ValueError, "cruise: the state needs its columns for every road user");
+    Py_ssize_t n = PyTuple_GET_SIZE(ways), n_sync = PyBytes_GET_SIZE(syncs) / (Py_ssize_t)(sizeof(double) * SY_COLS);
+    if (PyBytes_GET_SIZE(state) != n * (Py_ssize_t)sizeof(double) * CR_COLS ||
+        PyBytes_GET_SIZE(syncs) != n_sync * (Py_ssize_t)(sizeof(double) * SY_COLS)) {
+        PyErr_SetString(PyExc_ValueError, "cruise: the state needs its columns for every road user and sync");
         return NULL;
     }
+    const double *st0 = (const double *)PyBytes_AS_STRING(state);
     for (Py_ssize_t i = 0; i < n; i++) {
-        PyObject *r = PyTuple_GET_ITEM(roads, i);
-        if (r != Py_None && !PyObject_TypeCheck(r, &RoadType)) {
-            PyErr_SetString(PyExc_TypeError, "cruise: a road user's road is a Road or None");
+        PyObject *w = PyTuple_GET_ITEM(ways, i);
+        double mode = st0[i * CR_COLS + CR_MODE];
+        if ((mode == 1 && !PyObject_TypeCheck(w, &RoadType)) || (mode == 2 && !PyObject_TypeCheck(w, &PolylineType)) ||
+            (mode == 2 && ((PolylineObject *)w)->p.n < 1)) {
+            PyErr_SetString(PyExc_TypeError, "cruise: a road user on its lane has its Road, on its path its Polyline");
+            return NULL;
+        }
+    }
+    const double *sy0 = (const double *)PyBytes_AS_STRING(syncs);
+    for (Py_ssize_t k = 0; k < n_sync; k++) {
+        double a = sy0[k * SY_COLS + SY_ENTITY], b = sy0[k * SY_COLS + SY_MASTER];
+        if (!(a >= 0 && a < n && b >= 0 && b < n && a != b)) {
+            PyErr_SetString(PyExc_ValueError, "cruise: a sync names road users that are not there");
             return NULL;
         }
     }
     size_t m = (size_t)(n > 0 ? n : 1);
-    double *cur = PyMem_Malloc(sizeof(double) * CR_COLS * m * 2);
+    double *cur = PyMem_Malloc(sizeof(double) * (CR_COLS * m * 2 + SY_COLS * (size_t)(n_sync + 1) * 2));
     VeiBox *box = PyMem_Malloc(sizeof(VeiBox) * m);
     int *pairs = PyMem_Malloc(sizeof(int) * m * m * 2);
-    PyObject *poses = PyBytes_FromStringAndSize(NULL, (Py_ssize_t)(sizeof(double) * 4 * m * (size_t)n_max));
+    PyObject *poses = PyBytes_FromStringAndSize(NULL, (Py_ssize_t)(sizeof(double) * 6 * m * (size_t)n_max));
     if (!cur || !box || !pairs || !poses) {
         PyMem_Free(cur), PyMem_Free(box), PyMem_Free(pairs);
         Py_XDECREF(poses);
         return PyErr_NoMemory();
     }
     double *next = cur + CR_COLS * m, *out = (double *)PyBytes_AS_STRING(poses);
+    double *sync = next + CR_COLS * m, *sync_next = sync + SY_COLS * (size_t)(n_sync + 1);
+    size_t sync_bytes = sizeof(double) * SY_COLS * (size_t)n_sync;
     int *pairs0 = pairs, *pairs1 = pairs + m * m;
-    memcpy(cur, PyBytes_AS_STRING(state), sizeof(double) * CR_COLS * (size_t)n);
+    memcpy(cur, st0, sizeof(double) * CR_COLS * (size_t)n);
+    memcpy(sync, sy0, sync_bytes);
     Py_ssize_t k0, k1;
     cruise_pairs(cur, n, box, pairs0, &k0);
     long done = 0;
     int failed = 0;
     for (; done < n_max; done++) {
         int quiet = 1;
+        memcpy(next, cur, sizeof(double) * CR_COLS * (size_t)n);
+        memcpy(sync_next, sync, sync_bytes);
+        for (Py_ssize_t k = 0; k < n_sync && quiet; k++) quiet = sync_step(sync_next + k * SY_COLS, cur, next, dt);
         for (Py_ssize_t i = 0; i < n && quiet; i++) {
-            PyObject *r = PyTuple_GET_ITEM(roads, i);
+            PyObject *w = PyTuple_GET_ITEM(ways, i);
             double *e = cur + i * CR_COLS;
-            if (e[CR_MODE] > 0 && r == Py_None) quiet = 0;
-            else quiet = cruise_move((RoadObject *)r, e, max_turn, next + i * CR_COLS);
+            if (e[CR_MODE] > 0 && w == Py_None) quiet = 0;
+            else quiet = cruise_move(w, e, max_turn, dt, next + i * CR_COLS);
         }
         if (!quiet) break;
         cruise_pairs(next, n, box, pairs1, &k1);
         if (k1 != k0 || memcmp(pairs0, pairs1, sizeof(int) * (size_t)k0) != 0) break;
-        double *row = out + (size_t)done * 4 * (size_t)n;
+        double *row = out + (size_t)done * 6 * (size_t)n;
         for (Py_ssize_t i = 0; i < n; i++) {
             double *e = cur + i * CR_COLS, *f = next + i * CR_COLS, moved = 0.0;
             if (e[CR_MODE] >= 0) {
@@ -841,15 +1007,19 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
                     break;
                 }
                 f[CR_ODOMETER] = e[CR_ODOMETER] + moved;
+                f[CR_LAST_MOVED] = moved;
             }
-            row[4 * i] = f[CR_X], row[4 * i + 1] = f[CR_Y], row[4 * i + 2] = f[CR_YAW], row[4 * i + 3] = moved;
+            row[6 * i] = f[CR_X], row[6 * i + 1] = f[CR_Y], row[6 * i + 2] = f[CR_YAW], row[6 * i + 3] = moved;
+            row[6 * i + 4] = f[CR_SPEED], row[6 * i + 5] = (f[CR_SPEED] - e[CR_SPEED]) / dt;
         }
         if (failed) break;
         memcpy(cur, next, sizeof(double) * CR_COLS * (size_t)n);
+        memcpy(sync, sync_next, sync_bytes);
     }
     PyObject *result = NULL;
-    if (!failed && _PyBytes_Resize(&poses, (Py_ssize_t)(sizeof(double) * 4 * (size_t)n * (size_t)done)) == 0)
-        result = Py_BuildValue("(lNy#)", done, poses, (const char *)cur, (Py_ssize_t)(sizeof(double) * CR_COLS * n));
+    if (!failed && _PyBytes_Resize(&poses, (Py_ssize_t)(sizeof(double) * 6 * (size_t)n * (size_t)done)) == 0)
+        result = Py_BuildValue("(lNy#y#)", done, poses, (const char *)cur, (Py_ssize_t)(sizeof(double) * CR_COLS * n),
+                               (const char *)sync, (Py_ssize_t)sync_bytes);
     else if (failed)
         Py_DECREF(poses);
     PyMem_Free(cur), PyMem_Free(box), PyMem_Free(pairs);
@@ -898,7 +1068,7 @@ static PyMethodDef module_methods[] = {
     F(time_to_conflict, "time_to_conflict(ego_box, ego_speed, margin, threat_box, vx, vy[, horizon]) -> s"),
     F(time_to_contact, "time_to_contact(box_a, vxa, vya, box_b, vxb, vyb) -> s"),
     {"overlapping", overlapping, METH_O, "overlapping(boxes) -> pairs (i, j) of overlapping boxes"},
-    F(cruise, "cruise(roads, state, n_max, max_turn, hypot) -> (n, poses, state): quiet steps in one call"),
+    F(cruise, "cruise(ways, state, syncs, n_max, max_turn, dt, hypot) -> (n, poses, state, syncs): quiet steps in one call"),
     {"set_quadrature", set_quadrature, METH_VARARGS, "set_quadrature(nodes, weights): 24 doubles each"},
     {NULL, NULL, 0, NULL},
 };

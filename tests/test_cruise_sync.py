@@ -1,0 +1,227 @@
+"""Quiet stretches through a running SynchronizeAction and along untimed paths (the Euro NCAP VRU
+scenarios' shape): the core sets the synchronised entity's speed each step as the action does and moves
+it along its path or lane, and the run equals the interpreter's step by step, bit for bit.
+
+Each case varies the synchronisation (final speed absolute, relative or none; steady state by distance
+or time; tolerances; a start at t = 0 before the master moves; a target the entity must linger or rush
+to) and adds a condition on the synchronised entity that an event reacts to. The reference is the same
+interpreter with the cruise switched off (tests/test_cruise.py's ``run_both``); the profile's modes
+the cases pass through are asserted, and so is the share of steps the core took where the conditions
+let it."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from test_cruise import assert_identical, run_both
+from xosc_parts import CAR, step_speed
+
+from vei_scenario.interpreter import synchronize
+
+ROAD = """<OpenDRIVE><header revMajor="1" revMinor="6"/><road id="1" length="400" junction="-1">
+<planView><geometry s="0" x="0" y="0" hdg="0" length="400"><line/></geometry></planView>
+<lanes><laneSection s="0"><left><lane id="1" type="driving"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane>
+</left><center><lane id="0" type="none"/></center>
+<right><lane id="-1" type="driving"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane>
+<lane id="-2" type="driving"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></right>
+</laneSection></lanes></road></OpenDRIVE>"""
+
+PEDESTRIAN = """<Pedestrian name="p" mass="75" model="ped" pedestrianCategory="pedestrian"><BoundingBox>
+<Center x="0" y="0" z="0.9"/><Dimensions width="0.6" length="0.5" height="1.8"/></BoundingBox><Properties/>
+</Pedestrian>"""
+
+CROSS_X = 150.0  # where the VRU's path crosses the road (lane -1's centre is at y = -1.75)
+
+
+def _lane(lane: int, s: float) -> str:
+    return f'<LanePosition roadId="1" laneId="{lane}" s="{s}" offset="0"/>'
+
+
+def _follow(points: list[tuple[float, float]]) -> str:
+    """Following an untimed polyline through ``points``."""
+    vertices = "".join(f'<Vertex><Position><WorldPosition x="{x}" y="{y}"/></Position></Vertex>' for x, y in points)
+    return (
+        '<PrivateAction><RoutingAction><FollowTrajectoryAction><TrajectoryRef><Trajectory name="t" closed="false">'
+        f"<Shape><Polyline>{vertices}</Polyline></Shape></Trajectory></TrajectoryRef><TimeReference><None/>"
+        '</TimeReference><TrajectoryFollowingMode followingMode="position"/></FollowTrajectoryAction>'
+        "</RoutingAction></PrivateAction>"
+    )
+
+
+def _final(kind: str | None, value: float, steady: str = "") -> str:
+    if kind is None:
+        return ""
+    if kind == "absolute":
+        return f'<FinalSpeed><AbsoluteSpeed value="{value}">{steady}</AbsoluteSpeed></FinalSpeed>'
+    return (
+        f'<FinalSpeed><RelativeSpeedToMaster value="{value}" speedTargetValueType="{kind}">{steady}'
+        "</RelativeSpeedToMaster></FinalSpeed>"
+    )
+
+
+def _watch(condition: str | None, who: str = "VRU") -> str:
+    """An event slowing the Ego to 9 m/s once ``condition`` holds for ``who``."""
+    if condition is None:
+        return ""
+    return (
+        '<ManeuverGroup maximumExecutionCount="1" name="wg"><Actors selectTriggeringEntities="false">'
+        '<EntityRef entityRef="Ego"/></Actors><Maneuver name="wm"><Event name="watch" priority="parallel">'
+        f'<Action name="wa">{step_speed(9.0)}</Action><StartTrigger><ConditionGroup><Condition name="wc" delay="0" '
+        f'conditionEdge="none"><ByEntityCondition><TriggeringEntities triggeringEntitiesRule="any"><EntityRef '
+        f'entityRef="{who}"/></TriggeringEntities><EntityCondition>{condition}</EntityCondition></ByEntityCondition>'
+        "</Condition></ConditionGroup></StartTrigger></Event></Maneuver></ManeuverGroup>"
+    )
+
+
+def scenario(tmp_path, c: dict):
+    """Ego at ``ego_s`` on lane -1 at ``ego_v``; the VRU on an untimed path across the road (or, with
+    ``vru_lane``, on that lane) synchronised from ``start`` s to reach the crossing as Ego reaches it."""
+    (tmp_path / "straight.xodr").write_text(ROAD)
+    vru_lane = c.get("vru_lane")
+    if vru_lane is None:
+        vru_init = (
+            f'<Private entityRef="VRU"><PrivateAction><TeleportAction><Position><WorldPosition x="{CROSS_X}" '
+            f'y="{c["vru_y0"]}" h="1.5708"/></Position></TeleportAction></PrivateAction>{step_speed(c["vru_v"])}'
+            # across the road, with a bend half way (so it turns once)
+            f"{_follow([(CROSS_X, c['vru_y0']), (CROSS_X + 0.3, 0.0), (CROSS_X, -c['vru_y0'])])}</Private>"
+        )
+        target = f'<WorldPosition x="{CROSS_X}" y="-1.75"/>'
+        vru = f'<ScenarioObject name="VRU">{PEDESTRIAN}</ScenarioObject>'
+    else:
+        vru_init = (
+            f'<Private entityRef="VRU"><PrivateAction><TeleportAction><Position>{_lane(vru_lane, c["vru_s"])}'
+            f"</Position></TeleportAction></PrivateAction>{step_speed(c['vru_v'])}</Private>"
+        )
+        target = _lane(vru_lane, CROSS_X)
+        vru = f'<ScenarioObject name="VRU">{CAR}</ScenarioObject>'
+    ego_path = _follow([(c["ego_s"], -1.75), (200.0, -1.6), (390.0, -1.75)])  # (a master following a path)
+    ego_init = (
+        f'<Private entityRef="Ego"><PrivateAction><TeleportAction><Position>{_lane(-1, c["ego_s"])}</Position>'
+        f"</TeleportAction></PrivateAction>{step_speed(c['ego_v'])}{ego_path if c.get('ego_path') else ''}</Private>"
+    )
+    sync = (
+        '<PrivateAction><SynchronizeAction masterEntityRef="Ego" '
+        f'targetTolerance="{c.get("tol", 0)}" targetToleranceMaster="{c.get("tol_master", 0)}">'
+        f"<TargetPositionMaster>{_lane(-1, CROSS_X - 3.0)}</TargetPositionMaster>"
+        f"<TargetPosition>{target}</TargetPosition>"
+        f"{_final(c.get('final'), c.get('final_v', 0.0), c.get('steady', ''))}</SynchronizeAction></PrivateAction>"
+    )
+    story = (
+        '<ManeuverGroup maximumExecutionCount="1" name="sg"><Actors selectTriggeringEntities="false"><EntityRef '
+        'entityRef="VRU"/></Actors><Maneuver name="sm"><Event name="sync" priority="override"><Action name="sa">'
+        f'{sync}</Action><StartTrigger><ConditionGroup><Condition name="sc" delay="0" conditionEdge="none">'
+        f'<ByValueCondition><SimulationTimeCondition value="{c.get("start", 0.5)}" rule="greaterOrEqual"/>'
+        "</ByValueCondition></Condition></ConditionGroup></StartTrigger></Event></Maneuver></ManeuverGroup>"
+        + _watch(c.get("watch"), c.get("watch_who", "VRU"))
+    )
+    xosc = tmp_path / "sync.xosc"
+    xosc.write_text(
+        f"""<OpenSCENARIO><FileHeader revMajor="1" revMinor="2" date="2024-01-01T00:00:00" description="" author=""/>
+<RoadNetwork><LogicFile filepath="straight.xodr"/></RoadNetwork>
+<Entities><ScenarioObject name="Ego">{CAR}</ScenarioObject>{vru}</Entities>
+<Storyboard><Init><Actions>{ego_init}{vru_init}</Actions></Init>
+<Story name="s"><Act name="a">{story}<StartTrigger><ConditionGroup><Condition name="go" delay="0"
+conditionEdge="none"><ByValueCondition><SimulationTimeCondition value="0" rule="greaterOrEqual"/>
+</ByValueCondition></Condition></ConditionGroup></StartTrigger></Act></Story>
+<StopTrigger><ConditionGroup><Condition name="end" delay="0" conditionEdge="none"><ByValueCondition>
+<SimulationTimeCondition value="{c.get("end", 12.0)}" rule="greaterThan"/></ByValueCondition></Condition>
+</ConditionGroup></StopTrigger></Storyboard></OpenSCENARIO>"""
+    )
+    return xosc
+
+
+STEADY_DISTANCE = '<TargetDistanceSteadyState distance="2.5"/>'
+STEADY_TIME = '<TargetTimeSteadyState time="1.2"/>'
+BASE = {"ego_s": 40.0, "ego_v": 12.0, "vru_y0": -9.0, "vru_v": 0.0, "final": "absolute", "final_v": 1.5}
+CASES = {
+    "ncap_like": {"steady": STEADY_DISTANCE},
+    "moving_start": {"vru_v": 1.0, "final_v": 2.0},
+    "no_final_speed": {"final": None, "vru_v": 0.2},
+    "relative_delta": {"final": "delta", "final_v": -10.5, "steady": STEADY_TIME},
+    "relative_factor": {"final": "factor", "final_v": 0.15, "vru_v": 0.5},
+    "from_time_zero": {"start": 0.0, "steady": STEADY_DISTANCE},
+    "linger": {"vru_y0": -4.5, "vru_v": 2.5, "final_v": 1.0, "ego_s": 20.0},
+    "linger_stop_now": {"vru_y0": -3.2, "vru_v": 3.0, "final_v": 0.5, "ego_s": 10.0, "ego_v": 8.0},
+    "rush": {"vru_y0": -14.0, "vru_v": 0.5, "final_v": 2.0, "ego_s": 90.0},
+    "tolerances": {"tol": 0.4, "tol_master": 1.5, "steady": STEADY_DISTANCE},
+    "on_a_lane": {"vru_lane": 1, "vru_s": 200.0, "vru_v": -4.0, "final": "absolute", "final_v": -3.0},
+    "master_on_a_path": {"ego_path": True, "steady": STEADY_DISTANCE},
+    # conditions on the synchronised entity, watched while the core steps it
+    "watch_speed": {"steady": STEADY_DISTANCE, "watch": '<SpeedCondition value="1.2" rule="greaterThan"/>'},
+    "watch_accel": {"vru_v": 1.0, "watch": '<AccelerationCondition value="-0.2" rule="lessThan"/>'},
+    "watch_traveled": {"steady": STEADY_DISTANCE, "watch": '<TraveledDistanceCondition value="3.3"/>'},
+    "watch_reach": {
+        "watch": '<ReachPositionCondition tolerance="0.8"><Position><WorldPosition x="150.15" y="-4.0"/>'
+        "</Position></ReachPositionCondition>"
+    },
+    "watch_standstill": {
+        "vru_y0": -4.5,
+        "vru_v": 2.5,
+        "final_v": 1.0,
+        "ego_s": 20.0,
+        "watch": '<StandStillCondition duration="0.3"/>',
+    },
+    "watch_relative_speed": {
+        "watch": '<RelativeSpeedCondition entityRef="VRU" value="10.8" rule="lessThan"/>',
+        "watch_who": "Ego",
+    },
+    "watch_master_distance": {
+        "watch": '<RelativeDistanceCondition entityRef="VRU" relativeDistanceType="cartesianDistance" value="25" '
+        'freespace="true" rule="lessThan"/>',
+        "watch_who": "Ego",
+    },
+}
+#: the watched condition depends on the synchronised entity's speed: the core does not take those steps
+STEPPED = {"watch_speed", "watch_accel", "watch_relative_speed", "watch_standstill"}
+
+
+def _with_modes(monkeypatch, seen: set):
+    original = synchronize.Synchronize._profile_speed
+
+    def recording(self, *args):
+        v = original(self, *args)
+        seen.add(self.mode)
+        return v
+
+    monkeypatch.setattr(synchronize.Synchronize, "_profile_speed", recording)
+
+
+@pytest.mark.parametrize("case", sorted(CASES))
+def test_synchronised_stretches_equal_the_stepped_run(tmp_path, monkeypatch, case):
+    c = {**BASE, **CASES[case]}
+    fast, cruised, slow = run_both(scenario(tmp_path, c), monkeypatch)
+    assert_identical(fast, slow)
+    vru = slow.traces["VRU"]
+    assert np.ptp(vru.speed) > 0.3, "the synchronisation did not change the VRU's speed"
+    if "watch" in c:
+        assert np.any(np.isclose(slow.traces["Ego"].speed, 9.0)), f"{case}: the watched condition never fired"
+    if case not in STEPPED:
+        assert cruised > 0.5 * len(fast.t), f"{case}: only {cruised} of {len(fast.t)} steps cruised"
+
+
+def test_the_cases_pass_through_every_mode_of_the_profile(tmp_path, monkeypatch):
+    """The comparison above covers the profile's branches: each mode is entered by some case."""
+    seen: set = set()
+    _with_modes(monkeypatch, seen)
+    for case in CASES:
+        scenario(tmp_path, {**BASE, **CASES[case]})
+        from vei_scenario.interpreter import run_scenario
+
+        run_scenario(tmp_path / "sync.xosc")
+    assert {"waiting", "steady", "linear", "non-linear", "stop now", "stopped"} <= seen, seen
+
+
+def test_a_synchronised_entity_reaches_its_target_as_the_master_reaches_its(tmp_path):
+    """Not only equal to the stepped run: the synchronisation does what it says (an analytic check)."""
+    from vei_scenario.interpreter import run_scenario
+
+    c = {**BASE, **CASES["ncap_like"]}
+    r = run_scenario(scenario(tmp_path, c))
+    vru = r.traces["VRU"]
+    # the Ego's reference point reaches s = CROSS_X - lead at constant speed from ego_s
+    t_master = (CROSS_X - 3.0 - c["ego_s"]) / c["ego_v"]
+    k = int(np.argmin(abs(r.t - t_master)))
+    assert math.isclose(vru.y[k], -1.75, abs_tol=0.05), vru.y[k]
+    assert math.isclose(vru.speed[k], 1.5, abs_tol=1e-9)
