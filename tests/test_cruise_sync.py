@@ -35,8 +35,35 @@ PEDESTRIAN = """<Pedestrian name="p" mass="75" model="ped" pedestrianCategory="p
 CROSS_X = 150.0  # where the VRU's path crosses the road (lane -1's centre is at y = -1.75)
 
 
-def _lane(lane: int, s: float) -> str:
-    return f'<LanePosition roadId="1" laneId="{lane}" s="{s}" offset="0"/>'
+def _linked_road(rid: int, x0: float, link: str) -> str:
+    """A straight 200 m road from (x0, 0) with ROAD's lanes, each linked to the same lane on either side."""
+
+    def lane(i: int) -> str:
+        return (
+            f'<lane id="{i}" type="driving"><link><predecessor id="{i}"/><successor id="{i}"/></link>'
+            '<width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane>'
+        )
+
+    return (
+        f'<road id="{rid}" length="200" junction="-1"><link>{link}</link><planView><geometry s="0" x="{x0}" y="0" '
+        f'hdg="0" length="200"><line/></geometry></planView><lanes><laneSection s="0"><left>{lane(1)}</left>'
+        f'<center><lane id="0" type="none"/></center><right>{lane(-1)}{lane(-2)}</right></laneSection></lanes></road>'
+    )
+
+
+#: The same 400 m as two roads of 200 m, the first's end linked to the second's start.
+TWO_ROADS = (
+    '<OpenDRIVE><header revMajor="1" revMinor="6"/>'
+    + _linked_road(1, 0.0, '<successor elementType="road" elementId="2" contactPoint="start"/>')
+    + _linked_road(2, 200.0, '<predecessor elementType="road" elementId="1" contactPoint="end"/>')
+    + "</OpenDRIVE>"
+)
+
+
+def _lane(lane: int, x: float, split: bool = False) -> str:
+    """The position on ``lane`` at ``x`` along the road (on two roads: the second from x = 200)."""
+    road, s = (2, x - 200.0) if split and x >= 200.0 else (1, x)
+    return f'<LanePosition roadId="{road}" laneId="{lane}" s="{s}" offset="0"/>'
 
 
 def _follow(points: list[tuple[float, float]]) -> str:
@@ -78,33 +105,34 @@ def _watch(condition: str | None, who: str = "VRU") -> str:
 def scenario(tmp_path, c: dict):
     """Ego at ``ego_s`` on lane -1 at ``ego_v``; the VRU on an untimed path across the road (or, with
     ``vru_lane``, on that lane) synchronised from ``start`` s to reach the crossing as Ego reaches it."""
-    (tmp_path / "straight.xodr").write_text(ROAD)
+    (tmp_path / "straight.xodr").write_text(TWO_ROADS if c.get("two_roads") else ROAD)
+    split, cross_x = c.get("two_roads", False), c.get("cross_x", CROSS_X)
     vru_lane = c.get("vru_lane")
     if vru_lane is None:
         vru_init = (
-            f'<Private entityRef="VRU"><PrivateAction><TeleportAction><Position><WorldPosition x="{CROSS_X}" '
+            f'<Private entityRef="VRU"><PrivateAction><TeleportAction><Position><WorldPosition x="{cross_x}" '
             f'y="{c["vru_y0"]}" h="1.5708"/></Position></TeleportAction></PrivateAction>{step_speed(c["vru_v"])}'
             # across the road, with a bend half way (so it turns once)
-            f"{_follow([(CROSS_X, c['vru_y0']), (CROSS_X + 0.3, 0.0), (CROSS_X, -c['vru_y0'])])}</Private>"
+            f"{_follow([(cross_x, c['vru_y0']), (cross_x + 0.3, 0.0), (cross_x, -c['vru_y0'])])}</Private>"
         )
-        target = f'<WorldPosition x="{CROSS_X}" y="-1.75"/>'
+        target = f'<WorldPosition x="{cross_x}" y="-1.75"/>'
         vru = f'<ScenarioObject name="VRU">{PEDESTRIAN}</ScenarioObject>'
     else:
         vru_init = (
-            f'<Private entityRef="VRU"><PrivateAction><TeleportAction><Position>{_lane(vru_lane, c["vru_s"])}'
+            f'<Private entityRef="VRU"><PrivateAction><TeleportAction><Position>{_lane(vru_lane, c["vru_s"], split)}'
             f"</Position></TeleportAction></PrivateAction>{step_speed(c['vru_v'])}</Private>"
         )
-        target = _lane(vru_lane, CROSS_X)
+        target = _lane(vru_lane, cross_x, split)
         vru = f'<ScenarioObject name="VRU">{CAR}</ScenarioObject>'
     ego_path = _follow([(c["ego_s"], -1.75), (200.0, -1.6), (390.0, -1.75)])  # (a master following a path)
     ego_init = (
-        f'<Private entityRef="Ego"><PrivateAction><TeleportAction><Position>{_lane(-1, c["ego_s"])}</Position>'
+        f'<Private entityRef="Ego"><PrivateAction><TeleportAction><Position>{_lane(-1, c["ego_s"], split)}</Position>'
         f"</TeleportAction></PrivateAction>{step_speed(c['ego_v'])}{ego_path if c.get('ego_path') else ''}</Private>"
     )
     sync = (
         '<PrivateAction><SynchronizeAction masterEntityRef="Ego" '
         f'targetTolerance="{c.get("tol", 0)}" targetToleranceMaster="{c.get("tol_master", 0)}">'
-        f"<TargetPositionMaster>{_lane(-1, CROSS_X - 3.0)}</TargetPositionMaster>"
+        f"<TargetPositionMaster>{_lane(-1, cross_x - 3.0, split)}</TargetPositionMaster>"
         f"<TargetPosition>{target}</TargetPosition>"
         f"{_final(c.get('final'), c.get('final_v', 0.0), c.get('steady', ''))}</SynchronizeAction></PrivateAction>"
     )
@@ -148,6 +176,18 @@ CASES = {
     "tolerances": {"tol": 0.4, "tol_master": 1.5, "steady": STEADY_DISTANCE},
     "on_a_lane": {"vru_lane": 1, "vru_s": 200.0, "vru_v": -4.0, "final": "absolute", "final_v": -3.0},
     "master_on_a_path": {"ego_path": True, "steady": STEADY_DISTANCE},
+    # the master's target on the next road: its distance over the chain of roads, then along its road
+    "target_on_the_next_road": {"two_roads": True, "cross_x": 260.0, "ego_v": 14.0, "steady": STEADY_DISTANCE},
+    # both on lanes, both crossing from the first road to targets on the second
+    "lanes_across_roads": {
+        "two_roads": True,
+        "vru_lane": -2,
+        "vru_s": 120.0,
+        "vru_v": 5.0,
+        "final_v": 8.0,
+        "cross_x": 260.0,
+        "end": 20.0,
+    },
     # conditions on the synchronised entity, watched while the core steps it
     "watch_speed": {"steady": STEADY_DISTANCE, "watch": '<SpeedCondition value="1.2" rule="greaterThan"/>'},
     "watch_accel": {"vru_v": 1.0, "watch": '<AccelerationCondition value="-0.2" rule="lessThan"/>'},

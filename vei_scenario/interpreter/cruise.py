@@ -26,7 +26,7 @@ from vei_scenario.interpreter.clock import step_time, step_times
  _LAST, _VARIES) = range(19)  # fmt: skip
 _COLS = 19
 #: Core columns of a synchronisation (core_module.c: SY_*).
-_SY_COLS = 12
+_SY_COLS = 14
 #: Most steps in one call of the core (the poses it returns for them are held in memory at once).
 CHUNK = 2000
 #: Fewest quiet steps worth a call (fewer: the ordinary step is as quick).
@@ -84,15 +84,16 @@ def _columns(ctx, entities, varying: frozenset) -> tuple[tuple, list[float], Qui
     return tuple(ways), cols, bounds
 
 
-def _synchronisations(ctx) -> tuple[list, list[float]] | None:
-    """The running synchronisations and their core columns, or None when an action steps that the core
-    does not take (or a synchronisation's distances are not along one path or road)."""
+def _synchronisations(ctx) -> tuple[list, list[float], list[float]] | None:
+    """The running synchronisations, their core columns and their distances' road programs, or None
+    when an action steps that the core does not take (or a synchronisation's distances are not along
+    the path or roads its parties keep)."""
     from vei_scenario.interpreter.synchronize import Synchronize
 
-    actions, cols = [], []
+    actions, cols, programs = [], [], []
     index = {n: i for i, n in enumerate(ctx.entities)}
     for a in ctx.stepping:
-        c = a.core_columns(ctx, index) if type(a) is Synchronize else None
+        c = a.core_columns(ctx, index, programs) if type(a) is Synchronize else None
         if c is None:
             return None
         actions.append(a)
@@ -100,7 +101,7 @@ def _synchronisations(ctx) -> tuple[list, list[float]] | None:
     synced = {a.entity for a in actions}
     if len(synced) < len(actions) or any(a.master in synced for a in actions):
         return None
-    return actions, cols
+    return actions, cols, programs
 
 
 class StepTimes:
@@ -146,10 +147,10 @@ def cruise(ctx, storyboard, entities: list, rows: dict, times: list, max_time: f
     triggers = storyboard.watching()
     if triggers is None:
         return 0
-    syncs = _synchronisations(ctx) if ctx.stepping else ([], [])
+    syncs = _synchronisations(ctx) if ctx.stepping else ([], [], [])
     if syncs is None:
         return 0
-    actions, sync_cols = syncs
+    actions, sync_cols, programs = syncs
     columns = _columns(ctx, entities, frozenset(a.entity for a in actions))
     if columns is None:
         return 0
@@ -170,9 +171,8 @@ def cruise(ctx, storyboard, entities: list, rows: dict, times: list, max_time: f
     if skipped < MIN_STEPS:
         return 0
     f64 = array.array
-    n, poses, state, sync_state = _core.cruise(
-        ways, f64("d", cols).tobytes(), f64("d", sync_cols).tobytes(), skipped + 1, bounds.turn, dt, math.hypot
-    )
+    columns = (f64("d", cols).tobytes(), f64("d", sync_cols).tobytes(), f64("d", programs).tobytes())
+    n, poses, state, sync_state = _core.cruise(ways, *columns, skipped + 1, bounds.turn, dt, math.hypot)
     if n == 0:
         return 0
     for c in runners:

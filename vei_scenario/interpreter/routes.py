@@ -100,12 +100,8 @@ def road_distance(net: RoadNetwork, a: tuple[str, float], b: tuple[str, float]) 
     if not (0.0 <= sa <= la and 0.0 <= sb <= lb):  # off a road's ends: the search itself
         legs = _leg_between(net, (ra, sa, None), (rb, sb, None))
         return sum(leg.length for leg in legs) if legs else None
-    key = ("chains", ra, rb)
-    chains = net.memo.get(key)
-    if chains is None:
-        chains = net.memo[key] = _chains_between(net, ra, rb)
     best = None
-    for leave_forward, arrive_forward, middle in chains:  # (each piece >= 0, as Leg.length has it)
+    for leave_forward, arrive_forward, middle in road_chains(net, ra, rb):  # (each piece >= 0, as Leg.length has it)
         total = la - sa if leave_forward else sa
         for length in middle:
             total += length
@@ -113,6 +109,15 @@ def road_distance(net: RoadNetwork, a: tuple[str, float], b: tuple[str, float]) 
         if best is None or total < best:
             best = total
     return best
+
+
+def road_chains(net: RoadNetwork, ra: str, rb: str) -> list[tuple[bool, bool, tuple[float, ...]]]:
+    """:func:`_chains_between` ``ra`` and ``rb``, searched once per network (kept in ``net.memo``)."""
+    key = ("chains", ra, rb)
+    chains = net.memo.get(key)
+    if chains is None:
+        chains = net.memo[key] = _chains_between(net, ra, rb)
+    return chains
 
 
 def _chains_between(net: RoadNetwork, ra: str, rb: str) -> list[tuple[bool, bool, tuple[float, ...]]]:

@@ -31,7 +31,7 @@ import math
 from vei_scenario.interpreter.action_base import SteppedLongitudinal, entity_ref
 from vei_scenario.interpreter.positions import Pose, ensure_lane
 from vei_scenario.interpreter.positions import resolve as resolve_position
-from vei_scenario.interpreter.routes import road_distance
+from vei_scenario.interpreter.routes import road_chains, road_distance
 from vei_scenario.safe_xml import first_element
 
 SMALL = 1e-10
@@ -175,9 +175,12 @@ class Synchronize(SteppedLongitudinal):
     master_moved = True
 
     # --- in the core's quiet stretches (interpreter/cruise.py, core_module.c: sync_step) ------------
-    def core_columns(self, ctx, index: dict[str, int]) -> list[float] | None:
-        """This synchronisation as the core steps it (SY_* columns), or None when a distance is not the
-        plain difference of s along one path or road that the entity keeps in a quiet stretch."""
+    def core_columns(self, ctx, index: dict[str, int], programs: list[float]) -> list[float] | None:
+        """This synchronisation as the core steps it (SY_* columns), or None when a distance is not
+        along the path or roads the entity keeps in a quiet stretch. A distance over roads other than
+        the entity's is :func:`~vei_scenario.interpreter.routes.road_distance`'s sum over its chains of
+        roads, appended to ``programs`` (core_module.c: road_program) for the core to add up as it
+        does."""
         if self.done or ctx.initializing or ctx.settling:
             return None
         goals = []
@@ -189,18 +192,27 @@ class Synchronize(SteppedLongitudinal):
                 s_goal = self._goal_on_path.get(key)
                 if s_goal is None:
                     s_goal = self._goal_on_path[key] = f.polyline.project(goal.x, goal.y)
-                goals.append(s_goal)
+                goals += [s_goal, -1.0]
             elif ctx.roads is not None and e.lane is not None and goal.lane is not None:
-                if goal.lane.road != e.lane.road:
+                if goal.lane.road == e.lane.road:
+                    goals += [goal.lane.s, -1.0]
+                    continue
+                la, lb, sb = ctx.roads.road(e.lane.road).length, ctx.roads.road(goal.lane.road).length, goal.lane.s
+                chains = road_chains(ctx.roads, e.lane.road, goal.lane.road)
+                if not chains or not (0.0 <= e.lane.s <= la and 0.0 <= sb <= lb):
                     return None
-                goals.append(goal.lane.s)
+                goals += [sb, float(len(programs))]
+                programs += [la, lb, sb, len(chains)]
+                for leave_forward, arrive_forward, middle in chains:
+                    programs += [float(leave_forward), float(arrive_forward), len(middle), *middle]
             else:
                 return None
         final = self._final_speed(ctx) if self.final is not None else math.nan
         steady = self.steady_dist if self.steady is not None else math.nan
         return [
-            index[self.entity], index[self.master], goals[0], goals[1], self.tolerance, self.tolerance_master, final,
+            index[self.entity], index[self.master], goals[0], goals[2], self.tolerance, self.tolerance_master, final,
             steady, _MODES.index(self.mode), _SUBMODES.index(self.submode), self.last_dist, self.last_master_dist,
+            goals[1], goals[3],
         ]  # fmt: skip
 
     def take_core_columns(self, cols) -> None:

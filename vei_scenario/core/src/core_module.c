@@ -726,9 +726,10 @@ enum { CR_MODE, CR_S, CR_LANE, CR_OFFSET, CR_FORWARD, CR_HEADING, CR_DS, CR_X, C
        CR_LENGTH, CR_WIDTH, CR_MAX_MOVE, CR_MAX_DS, CR_ODOMETER, CR_SPEED, CR_LAST_MOVED, CR_VARIES, CR_COLS };
 
 /* a running SynchronizeAction (interpreter/synchronize.py), whose distances are along the path or
- * road each party stays on: |goal s - s| */
+ * road each party stays on (|goal s - s|) or, with a program (its offset, else -1), over the chains of
+ * roads from the party's road to the goal's */
 enum { SY_ENTITY, SY_MASTER, SY_GOAL, SY_MASTER_GOAL, SY_TOL, SY_TOL_MASTER, SY_FINAL, SY_STEADY, SY_MODE,
-       SY_SUBMODE, SY_LAST, SY_LAST_MASTER, SY_COLS };
+       SY_SUBMODE, SY_LAST, SY_LAST_MASTER, SY_PROGRAM, SY_MASTER_PROGRAM, SY_COLS };
 /* Synchronize.mode and .submode */
 enum { SM_NONE, SM_WAITING, SM_STEADY, SM_STOP_NOW, SM_STOPPED, SM_LINEAR, SM_NON_LINEAR };
 enum { SS_NONE, SS_CONVEX, SS_CONCAVE };
@@ -828,12 +829,54 @@ out:
     return v;
 }
 
+/* routes.road_distance from s on a road to a goal on another: the least over the chains of roads
+ * between them, summed in its order. program: road length, goal road length, goal s, number of chains,
+ * then per chain: leaving forward, arriving forward, number of roads driven whole, their lengths.
+ * -1 where s is off its road (the interpreter searches afresh there). */
+static double road_program(const double *prog, double sa)
+{
+    double la = prog[0], lb = prog[1], sb = prog[2], best = -1.0;
+    if (!(0.0 <= sa && sa <= la)) return -1.0;
+    const double *c = prog + 4;
+    for (long k = 0, chains = (long)prog[3]; k < chains; k++) {
+        long middle = (long)c[2];
+        double total = c[0] != 0.0 ? la - sa : sa;
+        for (long j = 0; j < middle; j++) total += c[3 + j];
+        total += c[1] != 0.0 ? sb : lb - sb;
+        if (best < 0.0 || total < best) best = total;
+        c += 3 + middle;
+    }
+    return best;
+}
+
+/* whether the program at offset o (-1: none) lies within the n numbers given */
+static int program_fits(const double *programs, Py_ssize_t n, double o)
+{
+    if (o < 0) return 1;
+    if (o + 4 > n) return 0;
+    Py_ssize_t at = (Py_ssize_t)o + 4;
+    for (long k = 0, chains = (long)programs[(Py_ssize_t)o + 3]; k < chains; k++) {
+        if (at + 3 > n || !(programs[at + 2] >= 0)) return 0;
+        at += 3 + (Py_ssize_t)programs[at + 2];
+        if (at > n) return 0;
+    }
+    return 1;
+}
+
+/* how far a party at s still has to go to its goal (-1: not known in the core) */
+static double sync_distance(const double *programs, double program, double goal, double s)
+{
+    return program < 0 ? fabs(goal - s) : road_program(programs + (Py_ssize_t)program, s);
+}
+
 /* Synchronize.step on the columns before the move: the entity's new speed in its column, or 0 when the
  * action ends in this step (the interpreter takes that step) */
-static int sync_step(double *sy, const double *cur, double *next, double dt)
+static int sync_step(double *sy, const double *programs, const double *cur, double *next, double dt)
 {
     const double *e = cur + (Py_ssize_t)sy[SY_ENTITY] * CR_COLS, *m = cur + (Py_ssize_t)sy[SY_MASTER] * CR_COLS;
-    double master_dist = fabs(sy[SY_MASTER_GOAL] - m[CR_S]), dist = fabs(sy[SY_GOAL] - e[CR_S]);
+    double master_dist = sync_distance(programs, sy[SY_MASTER_PROGRAM], sy[SY_MASTER_GOAL], m[CR_S]);
+    double dist = sync_distance(programs, sy[SY_PROGRAM], sy[SY_GOAL], e[CR_S]);
+    if (master_dist < 0 || dist < 0) return 0;
     if (dist < sy[SY_TOL] + SYNC_SMALL || master_dist < sy[SY_TOL_MASTER] + SYNC_SMALL || dist > sy[SY_LAST] ||
         master_dist > sy[SY_LAST_MASTER])
         return 0;
@@ -916,7 +959,7 @@ static int cruise_move(PyObject *way, const double *e, double max_turn, double d
     return hypot(next[CR_X] - e[CR_X], next[CR_Y] - e[CR_Y]) <= e[CR_MAX_MOVE] && turn <= max_turn;
 }
 
-/* cruise(ways, state, syncs, n_max, max_turn, dt, hypot) -> (n, poses, state, syncs): up to n_max steps
+/* cruise(ways, state, syncs, programs, n_max, max_turn, dt, hypot) -> (n, poses, state, syncs): up to n_max steps
  * of every road user (ways: per road user its Road (mode 1), its Polyline (mode 2) or None), the
  * synchronisations (SY_COLS each) setting their entities' speeds before each move; stops before a step
  * that is not quiet, ends a synchronisation or changes which pairs overlap. poses: n x users x (x, y,
@@ -924,16 +967,19 @@ static int cruise_move(PyObject *way, const double *e, double max_turn, double d
  * and the odometer are math.hypot's (given), so they equal the interpreter's own steps bit for bit. */
 static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
 {
-    if (!args_ok(nargs, 7, "cruise")) return NULL;
-    PyObject *ways = args[0], *state = args[1], *syncs = args[2], *hyp = args[6];
-    long n_max = PyLong_AsLong(args[3]);
-    double max_turn = PyFloat_AsDouble(args[4]), dt = PyFloat_AsDouble(args[5]);
+    if (!args_ok(nargs, 8, "cruise")) return NULL;
+    PyObject *ways = args[0], *state = args[1], *syncs = args[2], *progs = args[3], *hyp = args[7];
+    long n_max = PyLong_AsLong(args[4]);
+    double max_turn = PyFloat_AsDouble(args[5]), dt = PyFloat_AsDouble(args[6]);
     if (PyErr_Occurred()) return NULL;
-    if (!PyTuple_Check(ways) || !PyBytes_Check(state) || !PyBytes_Check(syncs) || !PyCallable_Check(hyp) ||
-        n_max < 0 || !(dt > 0)) {
-        PyErr_SetString(PyExc_TypeError, "cruise(ways tuple, state bytes, syncs bytes, n_max >= 0, max_turn, dt > 0, hypot)");
+    if (!PyTuple_Check(ways) || !PyBytes_Check(state) || !PyBytes_Check(syncs) || !PyBytes_Check(progs) ||
+        !PyCallable_Check(hyp) || n_max < 0 || !(dt > 0)) {
+        PyErr_SetString(PyExc_TypeError,
+                        "cruise(ways tuple, state bytes, syncs bytes, programs bytes, n_max >= 0, max_turn, dt > 0, hypot)");
         return NULL;
     }
+    const double *programs = (const double *)PyBytes_AS_STRING(progs);
+    Py_ssize_t n_programs = PyBytes_GET_SIZE(progs) / (Py_ssize_t)sizeof(double);
     Py_ssize_t n = PyTuple_GET_SIZE(ways), n_sync = PyBytes_GET_SIZE(syncs) / (Py_ssize_t)(sizeof(double) * SY_COLS);
     if (PyBytes_GET_SIZE(state) != n * (Py_ssize_t)sizeof(double) * CR_COLS ||
         PyBytes_GET_SIZE(syncs) != n_sync * (Py_ssize_t)(sizeof(double) * SY_COLS)) {
@@ -955,6 +1001,11 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
         double a = sy0[k * SY_COLS + SY_ENTITY], b = sy0[k * SY_COLS + SY_MASTER];
         if (!(a >= 0 && a < n && b >= 0 && b < n && a != b)) {
             PyErr_SetString(PyExc_ValueError, "cruise: a sync names road users that are not there");
+            return NULL;
+        }
+        if (!program_fits(programs, n_programs, sy0[k * SY_COLS + SY_PROGRAM]) ||
+            !program_fits(programs, n_programs, sy0[k * SY_COLS + SY_MASTER_PROGRAM])) {
+            PyErr_SetString(PyExc_ValueError, "cruise: a sync's road program runs past the programs given");
             return NULL;
         }
     }
@@ -982,7 +1033,7 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
         int quiet = 1;
         memcpy(next, cur, sizeof(double) * CR_COLS * (size_t)n);
         memcpy(sync_next, sync, sync_bytes);
-        for (Py_ssize_t k = 0; k < n_sync && quiet; k++) quiet = sync_step(sync_next + k * SY_COLS, cur, next, dt);
+        for (Py_ssize_t k = 0; k < n_sync && quiet; k++) quiet = sync_step(sync_next + k * SY_COLS, programs, cur, next, dt);
         for (Py_ssize_t i = 0; i < n && quiet; i++) {
             PyObject *w = PyTuple_GET_ITEM(ways, i);
             double *e = cur + i * CR_COLS;
@@ -1068,7 +1119,7 @@ static PyMethodDef module_methods[] = {
     F(time_to_conflict, "time_to_conflict(ego_box, ego_speed, margin, threat_box, vx, vy[, horizon]) -> s"),
     F(time_to_contact, "time_to_contact(box_a, vxa, vya, box_b, vxb, vyb) -> s"),
     {"overlapping", overlapping, METH_O, "overlapping(boxes) -> pairs (i, j) of overlapping boxes"},
-    F(cruise, "cruise(ways, state, syncs, n_max, max_turn, dt, hypot) -> (n, poses, state, syncs): quiet steps in one call"),
+    F(cruise, "cruise(ways, state, syncs, programs, n_max, max_turn, dt, hypot) -> (n, poses, state, syncs): quiet steps in one call"),
     {"set_quadrature", set_quadrature, METH_VARARGS, "set_quadrature(nodes, weights): 24 doubles each"},
     {NULL, NULL, 0, NULL},
 };
