@@ -89,6 +89,11 @@ class Condition:
         cruise within ``bounds``; 0 (the default): it cannot tell."""
         return 0
 
+    #: whether :meth:`steady_steps` reasons with how far road users turn in a step (``bounds.turn``);
+    #: a quiet stretch watched by none of these does not bound the turning (its ``bounds.turn`` is then
+    #: infinite, so a condition that reads it without saying so holds for no step: slower, not wrong)
+    reads_turning = False
+
     def _threshold(self, el) -> None:
         """``value`` of ``el`` and ``cmp``, the comparison of its ``rule`` (looked up once)."""
         self.value, self.cmp = float(el.get("value")), comparator(el.get("rule"))
@@ -353,6 +358,8 @@ class TimeToCollision(_EntityCondition):
 
 
 class RelativeDistance(_EntityCondition):
+    reads_turning = True  # (_distance_rate: boxes and frames that turn)
+
     def __init__(self, el, ctx, triggering, rule) -> None:
         super().__init__(el, ctx, triggering, rule)
         self._threshold(el)
@@ -391,6 +398,8 @@ class _PositionTarget:
 
 
 class Distance(_EntityCondition):
+    reads_turning = True  # (_distance_rate: boxes and frames that turn)
+
     def __init__(self, el, ctx, triggering, rule) -> None:
         super().__init__(el, ctx, triggering, rule)
         self._threshold(el)
@@ -679,6 +688,8 @@ def _heading_in(ctx: Context, e, system: str) -> float:
 class Angle(_EntityCondition):
     """AngleCondition (OpenSCENARIO 1.2): the entity's heading (pitch, roll: 0, vei's entities stay
     level) within ``angleTolerance`` of ``angle`` (rad), measured in ``coordinateSystem``."""
+
+    reads_turning = True
 
     def __init__(self, el, ctx, triggering, rule) -> None:
         from vei_scenario.safe_xml import float_attribute

@@ -31,6 +31,8 @@ _SY_COLS = 14
 CHUNK = 2000
 #: Fewest quiet steps worth a call (fewer: the ordinary step is as quick).
 MIN_STEPS = 3
+#: How fast (rad/s) a road user may turn in a quiet stretch watched by a condition that reads turning.
+TURN_RATE = 0.3
 #: How much faster (m/s) than now a road user whose speed a synchronisation sets may go in a quiet
 #: stretch: the bound of its steps that the conditions reason with (the core stops before it is passed).
 SPEED_MARGIN_MPS = 2.0
@@ -47,11 +49,11 @@ class QuietBounds:
     varying: frozenset = frozenset()  # road users whose speed changes (a synchronisation sets it)
 
 
-def _columns(ctx, entities, varying: frozenset) -> tuple[tuple, list[float], QuietBounds] | None:
+def _columns(ctx, entities, varying: frozenset, turn: float) -> tuple[tuple, list[float], QuietBounds] | None:
     """The core's columns of every road user and the bounds of their steps, or None when one moves
     otherwise than by cruising along its lane or path (or straight on)."""
     ways, cols, dt = [], [], ctx.dt
-    bounds = QuietBounds({}, {}, 0.3 * dt, varying=varying)
+    bounds = QuietBounds({}, {}, turn, varying=varying)
     for e in entities:
         if e.deleted:
             ways.append(None)
@@ -151,12 +153,13 @@ def cruise(ctx, storyboard, entities: list, rows: dict, times: list, max_time: f
     if syncs is None:
         return 0
     actions, sync_cols, programs = syncs
-    columns = _columns(ctx, entities, frozenset(a.entity for a in actions))
+    dt = ctx.dt
+    runners = [c for t in triggers for c in t.conditions()]
+    turn = TURN_RATE * dt if any(c.condition.reads_turning for c in runners) else math.inf
+    columns = _columns(ctx, entities, frozenset(a.entity for a in actions), turn)
     if columns is None:
         return 0
     ways, cols, bounds = columns
-    dt = ctx.dt
-    runners = [c for t in triggers for c in t.conditions()]
     skipped = steps_left(ctx, max_time) - 1  # evaluations after this step's that the cruise replaces
     for c in runners:
         if skipped < MIN_STEPS:
