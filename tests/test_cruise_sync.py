@@ -265,3 +265,64 @@ def test_a_synchronised_entity_reaches_its_target_as_the_master_reaches_its(tmp_
     k = int(np.argmin(abs(r.t - t_master)))
     assert math.isclose(vru.y[k], -1.75, abs_tol=0.05), vru.y[k]
     assert math.isclose(vru.speed[k], 1.5, abs_tol=1e-9)
+
+
+# --- SpeedAction transitions in the core --------------------------------------------------------------
+
+
+def _shaped_speed(v: float, shape: str, dimension: str, value: float) -> str:
+    return (
+        f'<PrivateAction><LongitudinalAction><SpeedAction><SpeedActionDynamics dynamicsShape="{shape}" '
+        f'value="{value}" dynamicsDimension="{dimension}"/><SpeedActionTarget><AbsoluteTargetSpeed value="{v}"/>'
+        "</SpeedActionTarget></SpeedAction></LongitudinalAction></PrivateAction>"
+    )
+
+
+TRANSITIONS = [
+    ("linear", "time", 2.5),
+    ("cubic", "time", 3.3),
+    ("sinusoidal", "rate", 1.7),
+    ("linear", "distance", 30.0),
+    ("cubic", "rate", 4.0),
+]
+#: conditions of tests/test_cruise.py's scenario that fire while (or after) the Ego's speed changes
+WATCHED = ["time", "traveled", "reach", "relative_longitudinal", "speed_of_other", "element_state"]
+
+
+@pytest.mark.parametrize("transition", TRANSITIONS, ids=lambda t: "-".join(map(str, t)))
+@pytest.mark.parametrize("case", WATCHED)
+def test_speed_transitions_in_quiet_stretches_equal_the_stepped_run(tmp_path, monkeypatch, case, transition):
+    """tests/test_cruise.py's scenario with the Ego's slowing (15 -> 5 m/s) a transition of each shape
+    and dimension, and the Lead's stop a 2 s linear slowing to 0.5 m/s (still moving: the step that ends
+    it, which ends its event that element_state watches, is not one where a standstill begins)."""
+    import test_cruise
+
+    path = test_cruise.scenario(tmp_path, test_cruise.CASES[case])
+    xml = path.read_text()
+    xml = xml.replace(
+        f'<Action name="Changea">{step_speed(5.0)}', f'<Action name="Changea">{_shaped_speed(5.0, *transition)}'
+    )
+    xml = xml.replace(f'<Action name="LeadStopsa">{step_speed(0.0)}',
+                      f'<Action name="LeadStopsa">{_shaped_speed(0.5, "linear", "time", 2.0)}')  # fmt: skip
+    assert xml.count("dynamicsShape") == xml.count('dynamicsShape="step"') + 2  # (both replaced)
+    path.write_text(xml)
+    fast, cruised, slow = run_both(path, monkeypatch)
+    assert_identical(fast, slow)
+    ego = slow.traces["Ego"].speed
+    assert np.any((ego > 5.5) & (ego < 14.5)), "the Ego never was between its speeds"
+    assert cruised > 0.5 * len(fast.t), f"only {cruised} of {len(fast.t)} steps cruised"
+
+
+def test_a_condition_on_a_changing_speed_is_evaluated_every_step(tmp_path, monkeypatch):
+    """A SpeedCondition on the entity whose transition runs holds for no step: it fires on the step the
+    stepped run fires it."""
+    import test_cruise
+
+    watched = test_cruise._entity('<SpeedCondition value="3.3" rule="lessThan"/>', who="Lead")
+    path = test_cruise.scenario(tmp_path, watched)
+    xml = path.read_text().replace(f'<Action name="LeadStopsa">{step_speed(0.0)}',
+                                   f'<Action name="LeadStopsa">{_shaped_speed(0.0, "cubic", "time", 2.0)}')  # fmt: skip
+    path.write_text(xml)
+    fast, _, slow = run_both(path, monkeypatch)
+    assert_identical(fast, slow)
+    assert np.any(np.isclose(slow.traces["Ego"].speed, 5.0))

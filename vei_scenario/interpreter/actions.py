@@ -386,6 +386,13 @@ class Speed(Action):
     def stop(self, ctx) -> None:
         ctx.entities[self.entity].speed_profile = None
 
+    def carried(self, ctx) -> bool:
+        """A transition under way: the core sets the speed as it goes and stops before the step that
+        ends it (one following another entity's speed continuously is worked out each step)."""
+        e = ctx.entities[self.entity]
+        p = e.speed_profile
+        return not self.continuous and e.longitudinal is self and p is not None and ctx.t < p.t0 + p.duration - 1e-9
+
 
 class FollowTrajectory(Action):
     def __init__(self, entity: str, el, ctx) -> None:

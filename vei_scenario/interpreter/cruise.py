@@ -23,8 +23,10 @@ from vei_scenario.interpreter.clock import step_time, step_times
 
 #: Core columns of a road user (core_module.c: CR_*).
 (_MODE, _S, _LANE, _OFFSET, _FORWARD, _HEADING, _DS, _X, _Y, _YAW, _CX, _LEN, _WID, _MOVE, _ALONG, _ODO, _SPEED,
- _LAST, _VARIES) = range(19)  # fmt: skip
-_COLS = 19
+ _LAST, _VARIES, _PROFILE, _PROFILE_V0, _PROFILE_V1, _PROFILE_T0, _PROFILE_DURATION) = range(24)  # fmt: skip
+_COLS = 24
+#: A running SpeedAction's transition shape as the core numbers it (core_module.c: SHAPE_*).
+_SHAPES = {"linear": 0.0, "cubic": 1.0, "sinusoidal": 2.0}
 #: Core columns of a synchronisation (core_module.c: SY_*).
 _SY_COLS = 14
 #: Most steps in one call of the core (the poses it returns for them are held in memory at once).
@@ -49,21 +51,25 @@ class QuietBounds:
     varying: frozenset = frozenset()  # road users whose speed changes (a synchronisation sets it)
 
 
-def _columns(ctx, entities, varying: frozenset, turn: float) -> tuple[tuple, list[float], QuietBounds] | None:
+def _columns(ctx, entities, synced: frozenset, turn: float) -> tuple[tuple, list[float], QuietBounds] | None:
     """The core's columns of every road user and the bounds of their steps, or None when one moves
-    otherwise than by cruising along its lane or path (or straight on)."""
+    otherwise than by cruising along its lane or path (or straight on) at its speed, the speed a
+    synchronisation (of ``synced``) or a SpeedAction's transition gives it."""
     ways, cols, dt = [], [], ctx.dt
-    bounds = QuietBounds({}, {}, turn, varying=varying)
+    varying = synced | {e.name for e in entities if e.speed_profile is not None and not e.deleted}
+    bounds = QuietBounds({}, {}, turn, varying=frozenset(varying))
     for e in entities:
         if e.deleted:
             ways.append(None)
             cols += [-1.0] + [0.0] * (_COLS - 1)
             continue
         f = e.follower
+        p = e.speed_profile
         if (
-            e.placed or e.towed_by is not None or e.trailer is not None or e.speed_profile is not None
+            e.placed or e.towed_by is not None or e.trailer is not None
             or e.lateral is not None or e.find_lane or any(e.active.values())
             or (f is not None and (f.polyline.xs is None or (f.timing is not None and f.polyline.timed)))
+            or (p is not None and (e.name in synced or p.shape not in _SHAPES))
         ):  # fmt: skip
             return None
         ds = e.speed * dt
@@ -77,12 +83,17 @@ def _columns(ctx, entities, varying: frozenset, turn: float) -> tuple[tuple, lis
         else:
             ways.append(None)
             head = [0.0] * 6
-        varies = e.name in varying
-        reach = (abs(e.speed) + SPEED_MARGIN_MPS) * dt if varies else abs(ds)
+        if e.name in synced:  # (a synchronisation's speed: bounded by the margin, the core stops past it)
+            reach = (abs(e.speed) + SPEED_MARGIN_MPS) * dt
+        elif p is not None:  # (a transition's speed lies between where it is and where it ends)
+            reach = max(abs(e.speed), abs(p.v0), abs(p.v1)) * dt
+        else:
+            reach = abs(ds)
         move = bounds.move[e.name] = reach * 1.05 + 1e-9
         along = bounds.along[e.name] = reach * 1.3 + 1e-9
         cols += head + [ds, e.x, e.y, e.yaw, e.center_x, e.length, e.width, move, along, e.odometer, e.speed]
-        cols += [e.last_step_m, 1.0 if varies else 0.0]
+        cols += [e.last_step_m, 1.0 if e.name in varying else 0.0]
+        cols += [-1.0, 0.0, 0.0, 0.0, 0.0] if p is None else [_SHAPES[p.shape], p.v0, p.v1, p.t0, p.duration]
     return tuple(ways), cols, bounds
 
 
@@ -103,6 +114,8 @@ def _synchronisations(ctx) -> tuple[list, list[float], list[float]] | None:
     synced = {a.entity for a in actions}
     if len(synced) < len(actions) or any(a.master in synced for a in actions):
         return None
+    if any(a.final is not None and a.final[0] == "relative" and ctx.entities[a.master].speed_profile for a in actions):
+        return None  # (a final speed relative to a master whose speed changes: worked out each step)
     return actions, cols, programs
 
 
@@ -175,7 +188,8 @@ def cruise(ctx, storyboard, entities: list, rows: dict, times: list, max_time: f
         return 0
     f64 = array.array
     columns = (f64("d", cols).tobytes(), f64("d", sync_cols).tobytes(), f64("d", programs).tobytes())
-    n, poses, state, sync_state = _core.cruise(ways, *columns, skipped + 1, bounds.turn, dt, math.hypot)
+    clock = f64("d", step_times(step0, step0 + skipped + 2, dt)).tobytes()  # (now, and after each step)
+    n, poses, state, sync_state = _core.cruise(ways, *columns, clock, bounds.turn, dt, math.hypot)
     if n == 0:
         return 0
     for c in runners:

@@ -723,7 +723,28 @@ static PyObject *overlapping(PyObject *mod, PyObject *arg)
  * metres (constant speed), pose, box, the bounds of a step, odometer, speed, last step's metres, and
  * whether a synchronisation sets its speed each step */
 enum { CR_MODE, CR_S, CR_LANE, CR_OFFSET, CR_FORWARD, CR_HEADING, CR_DS, CR_X, CR_Y, CR_YAW, CR_CENTER_X,
-       CR_LENGTH, CR_WIDTH, CR_MAX_MOVE, CR_MAX_DS, CR_ODOMETER, CR_SPEED, CR_LAST_MOVED, CR_VARIES, CR_COLS };
+       CR_LENGTH, CR_WIDTH, CR_MAX_MOVE, CR_MAX_DS, CR_ODOMETER, CR_SPEED, CR_LAST_MOVED, CR_VARIES,
+       CR_PROFILE, CR_PROFILE_V0, CR_PROFILE_V1, CR_PROFILE_T0, CR_PROFILE_DURATION, CR_COLS };
+/* a running SpeedAction's transition (entities.SpeedProfile): its shape (-1: none) */
+enum { SHAPE_LINEAR, SHAPE_CUBIC, SHAPE_SINUSOIDAL };
+
+/* SpeedProfile.speed at the end of a step from t to t_next (the engine's t + dt): the speed in *v, 0 when the transition
+ * ends in the step or its action would end after it (SpeedAction.update: the interpreter's steps) */
+static int profile_speed(const double *e, double t, double t_next, double *v)
+{
+    double t0 = e[CR_PROFILE_T0], duration = e[CR_PROFILE_DURATION];
+    if (!(duration > 0) || t >= t0 + duration - 1e-9) return 0;
+    double x = (t_next - t0) / duration, f;
+    if (0.0 > x) x = 0.0; /* (Python's min(max(x, 0.0), 1.0)) */
+    if (1.0 < x) x = 1.0;
+    if (x >= 1.0) return 0;
+    int shape = (int)e[CR_PROFILE];
+    if (shape == SHAPE_CUBIC) f = x * x * (3 - 2 * x);
+    else if (shape == SHAPE_SINUSOIDAL) f = 0.5 * (1 - cos(M_PI * x));
+    else f = x;
+    *v = e[CR_PROFILE_V0] + (e[CR_PROFILE_V1] - e[CR_PROFILE_V0]) * f;
+    return 1;
+}
 
 /* a running SynchronizeAction (interpreter/synchronize.py), whose distances are along the path or
  * road each party stays on (|goal s - s|) or, with a program (its offset, else -1), over the chains of
@@ -959,25 +980,29 @@ static int cruise_move(PyObject *way, const double *e, double max_turn, double d
     return hypot(next[CR_X] - e[CR_X], next[CR_Y] - e[CR_Y]) <= e[CR_MAX_MOVE] && turn <= max_turn;
 }
 
-/* cruise(ways, state, syncs, programs, n_max, max_turn, dt, hypot) -> (n, poses, state, syncs): up to n_max steps
- * of every road user (ways: per road user its Road (mode 1), its Polyline (mode 2) or None), the
- * synchronisations (SY_COLS each) setting their entities' speeds before each move; stops before a step
+/* cruise(ways, state, syncs, programs, times, max_turn, dt, hypot) -> (n, poses, state, syncs): up to n_max steps
+ * (times: the simulation time at the start of each of n_max steps, and after the last) of every road user (ways: per road
+ * user its Road (mode 1), its Polyline (mode 2) or None), the synchronisations (SY_COLS each) and the
+ * running transitions of SpeedActions setting their entities' speeds before each move; stops before a step
  * that is not quiet, ends a synchronisation or changes which pairs overlap. poses: n x users x (x, y,
  * yaw, metres moved, speed, acceleration); state, syncs: the columns after the n steps. The metres moved
  * and the odometer are math.hypot's (given), so they equal the interpreter's own steps bit for bit. */
 static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
 {
     if (!args_ok(nargs, 8, "cruise")) return NULL;
-    PyObject *ways = args[0], *state = args[1], *syncs = args[2], *progs = args[3], *hyp = args[7];
-    long n_max = PyLong_AsLong(args[4]);
+    PyObject *ways = args[0], *state = args[1], *syncs = args[2], *progs = args[3], *clock = args[4], *hyp = args[7];
     double max_turn = PyFloat_AsDouble(args[5]), dt = PyFloat_AsDouble(args[6]);
     if (PyErr_Occurred()) return NULL;
     if (!PyTuple_Check(ways) || !PyBytes_Check(state) || !PyBytes_Check(syncs) || !PyBytes_Check(progs) ||
-        !PyCallable_Check(hyp) || n_max < 0 || !(dt > 0)) {
-        PyErr_SetString(PyExc_TypeError,
-                        "cruise(ways tuple, state bytes, syncs bytes, programs bytes, n_max >= 0, max_turn, dt > 0, hypot)");
+        !PyBytes_Check(clock) || PyBytes_GET_SIZE(clock) < (Py_ssize_t)sizeof(double) || !PyCallable_Check(hyp) ||
+        !(dt > 0)) {
+        PyErr_SetString(PyExc_TypeError, "cruise(ways tuple, state bytes, syncs bytes, programs bytes, times bytes "
+                                         "(at least one), max_turn, dt > 0, hypot)");
         return NULL;
     }
+    /* times: the step's start and the end of each step it may take */
+    const double *times = (const double *)PyBytes_AS_STRING(clock);
+    long n_max = (long)(PyBytes_GET_SIZE(clock) / (Py_ssize_t)sizeof(double)) - 1;
     const double *programs = (const double *)PyBytes_AS_STRING(progs);
     Py_ssize_t n_programs = PyBytes_GET_SIZE(progs) / (Py_ssize_t)sizeof(double);
     Py_ssize_t n = PyTuple_GET_SIZE(ways), n_sync = PyBytes_GET_SIZE(syncs) / (Py_ssize_t)(sizeof(double) * SY_COLS);
@@ -1034,6 +1059,9 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
         memcpy(next, cur, sizeof(double) * CR_COLS * (size_t)n);
         memcpy(sync_next, sync, sync_bytes);
         for (Py_ssize_t k = 0; k < n_sync && quiet; k++) quiet = sync_step(sync_next + k * SY_COLS, programs, cur, next, dt);
+        for (Py_ssize_t i = 0; i < n && quiet; i++)
+            if (cur[i * CR_COLS + CR_PROFILE] >= 0)
+                quiet = profile_speed(cur + i * CR_COLS, times[done], times[done] + dt, &next[i * CR_COLS + CR_SPEED]);
         for (Py_ssize_t i = 0; i < n && quiet; i++) {
             PyObject *w = PyTuple_GET_ITEM(ways, i);
             double *e = cur + i * CR_COLS;
@@ -1119,7 +1147,7 @@ static PyMethodDef module_methods[] = {
     F(time_to_conflict, "time_to_conflict(ego_box, ego_speed, margin, threat_box, vx, vy[, horizon]) -> s"),
     F(time_to_contact, "time_to_contact(box_a, vxa, vya, box_b, vxb, vyb) -> s"),
     {"overlapping", overlapping, METH_O, "overlapping(boxes) -> pairs (i, j) of overlapping boxes"},
-    F(cruise, "cruise(ways, state, syncs, programs, n_max, max_turn, dt, hypot) -> (n, poses, state, syncs): quiet steps in one call"),
+    F(cruise, "cruise(ways, state, syncs, programs, times, max_turn, dt, hypot) -> (n, poses, state, syncs): quiet steps in one call"),
     {"set_quadrature", set_quadrature, METH_VARARGS, "set_quadrature(nodes, weights): 24 doubles each"},
     {NULL, NULL, 0, NULL},
 };
