@@ -3,8 +3,9 @@ state (edges and delays are the trigger's, :class:`~vei_scenario.interpreter.sto
 A new condition is one class and one line in ``VALUE_CONDITIONS`` or ``ENTITY_CONDITIONS``.
 
 Each condition also knows for how many steps its value cannot change while the road users cruise
-(:mod:`vei_scenario.interpreter.cruise`: every one at its speed along its lane, each step bounded by
-:class:`~vei_scenario.interpreter.cruise.QuietBounds`): ``steady_steps``, 0 where it cannot tell."""
+(:mod:`vei_scenario.interpreter.cruise`: along its lane or path, each step bounded by
+:class:`~vei_scenario.interpreter.cruise.QuietBounds`, whose ``varying`` names those whose speed
+changes): ``steady_steps``, 0 where it cannot tell."""
 
 from __future__ import annotations
 

@@ -1,14 +1,18 @@
-"""Quiet steps handed to the core in one call: while every road user keeps its lane (or drives straight
-on) at its speed and no trigger can fire, a step is only motion, and the core takes many at once.
+"""Quiet steps handed to the core in one call: while every road user keeps its lane, drives straight on
+or follows an untimed path, at its speed or at the speed its running SynchronizeAction or SpeedAction
+transition sets, and no trigger can fire, a step is only motion, and the core takes many at once.
 
 The storyboard stays in charge. After a step's evaluation in which nothing started or ended, each
 watched condition says for how many steps its value cannot change while the road users cruise within
 :class:`QuietBounds` (``steady_steps``: a time still ahead, a distance that cannot be covered, a value
-only an action sets); the triggers say which of those evaluations would fire (delays and edges
-included); the core (``_core.cruise``, the same lane keeping as a single step's) moves everyone that
-many steps, and stops early before any step that leaves the bounds, a road or a lane, or changes which
-boxes touch. The steps it took are recorded as the interpreter records its own, bit for bit
-(tests/test_cruise.py), and the conditions account for the evaluations that were not run.
+only an action sets; a speed that changes is looked at every step); the triggers say which of those
+evaluations would fire (delays and edges included); every running action says whether the core carries
+it (``Action.carried``); the core (``_core.cruise``: the same lane keeping, path following,
+synchronisation profile and transition as a single step's) moves everyone that many steps, and stops
+early before any step that leaves the bounds, a road, a lane or a path, ends a synchronisation or a
+transition, starts or ends a standstill, or changes which boxes touch. The steps it took are recorded
+as the interpreter records its own, bit for bit (tests/test_cruise.py, tests/test_cruise_sync.py), and
+the conditions and actions account for the evaluations that were not run.
 """
 
 from __future__ import annotations

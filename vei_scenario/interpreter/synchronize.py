@@ -118,17 +118,21 @@ class Synchronize(SteppedLongitudinal):
         base = ctx.entities[self.master].speed
         return base + value if rest[0] == "delta" else base * value
 
+    def _goal_along(self, f, goal: Pose) -> float:
+        """Where ``goal`` lies along the path ``f`` follows: the same each step while path and goal are
+        (memoised)."""
+        key = (f.polyline, goal.x, goal.y)
+        s_goal = self._goal_on_path.get(key)
+        if s_goal is None:
+            s_goal = self._goal_on_path[key] = f.polyline.project(goal.x, goal.y)
+        return s_goal
+
     def _distance(self, ctx, name: str, goal: Pose) -> float:
         """How far entity ``name`` still has to go to ``goal`` (>= 0)."""
         e = ctx.entities[name]
         f = e.follower
         if f is not None and f.polyline.xs is not None:
-            # where the goal lies along the path: the same each step while path and goal are (memoised)
-            key = (f.polyline, goal.x, goal.y)
-            s_goal = self._goal_on_path.get(key)
-            if s_goal is None:
-                s_goal = self._goal_on_path[key] = f.polyline.project(goal.x, goal.y)
-            return abs(s_goal - f.s)
+            return abs(self._goal_along(f, goal) - f.s)
         if ctx.roads is not None:
             ensure_lane(ctx, e)
             if e.lane is not None and goal.lane is not None:
@@ -188,11 +192,7 @@ class Synchronize(SteppedLongitudinal):
             e = ctx.entities[name]
             f = e.follower
             if f is not None and f.polyline.xs is not None:
-                key = (f.polyline, goal.x, goal.y)
-                s_goal = self._goal_on_path.get(key)
-                if s_goal is None:
-                    s_goal = self._goal_on_path[key] = f.polyline.project(goal.x, goal.y)
-                goals += [s_goal, -1.0]
+                goals += [self._goal_along(f, goal), -1.0]
             elif ctx.roads is not None and e.lane is not None and goal.lane is not None:
                 if goal.lane.road == e.lane.road:
                     goals += [goal.lane.s, -1.0]
