@@ -253,3 +253,25 @@ def test_standing_lane_keepers_step_as_the_full_step_would(tmp_path, monkeypatch
     i = int(np.searchsorted(fast.t, 6.05))
     assert other.speed[i] == 0.0 and abs(other.x[i] - other.x[i - 10]) > 50  # teleported while standing
     assert lead.speed[-1] == 6.0 and lead.x[-1] > lead.x[int(np.searchsorted(fast.t, 9.0))] + 10
+
+
+def test_quiet_stretches_run_on_after_a_road_user_is_deleted(tmp_path, monkeypatch):
+    """A deleted road user neither moves nor has a transition in the core: the stretches go on (the
+    Oncoming car deleted at 1 s, the Ego's change on a time condition)."""
+    path = scenario(tmp_path, CASES["time"])
+    delete = (
+        '<ManeuverGroup maximumExecutionCount="1" name="dg"><Actors selectTriggeringEntities="false"/>'
+        '<Maneuver name="dm"><Event name="del" priority="parallel"><Action name="da"><GlobalAction>'
+        '<EntityAction entityRef="Oncoming"><DeleteEntityAction/></EntityAction></GlobalAction></Action>'
+        '<StartTrigger><ConditionGroup><Condition name="dc" delay="0" conditionEdge="none"><ByValueCondition>'
+        '<SimulationTimeCondition value="1" rule="greaterOrEqual"/></ByValueCondition></Condition>'
+        "</ConditionGroup></StartTrigger></Event></Maneuver></ManeuverGroup>"
+    )
+    path.write_text(
+        path.read_text().replace('<Story name="s"><Act name="a">', f'<Story name="s"><Act name="a">{delete}')
+    )
+    fast, cruised, slow = run_both(path, monkeypatch)
+    assert_identical(fast, slow)
+    assert fast.traces["Oncoming"].status[-1] == "deleted"
+    after = int(np.searchsorted(fast.t, 1.5))
+    assert cruised > 0.5 * (len(fast.t) - after), f"only {cruised} of {len(fast.t)} steps cruised"

@@ -37,9 +37,6 @@ class Stepped(Action):
     def taken_over(self, ctx) -> bool:
         return False
 
-    def carried(self, ctx) -> bool:  # (the cruise asks each stepped action for its core columns)
-        return not self.done
-
     def update(self, ctx) -> None:
         if self.taken_over(ctx):
             self.done = True

@@ -26,9 +26,11 @@ from vei_scenario.core import _core
 from vei_scenario.interpreter.clock import step_time, step_times
 
 #: Core columns of a road user (core_module.c: CR_*).
-(_MODE, _S, _LANE, _OFFSET, _FORWARD, _HEADING, _DS, _X, _Y, _YAW, _CX, _LEN, _WID, _MOVE, _ALONG, _ODO, _SPEED,
- _LAST, _VARIES, _PROFILE, _PROFILE_V0, _PROFILE_V1, _PROFILE_T0, _PROFILE_DURATION) = range(24)  # fmt: skip
-_COLS = 24
+(_MODE, _S, _LANE, _OFFSET, _FORWARD, _HEADING, _X, _Y, _YAW, _CX, _LEN, _WID, _MOVE, _ALONG, _ODO, _SPEED, _LAST,
+ _PROFILE, _PROFILE_V0, _PROFILE_V1, _PROFILE_T0, _PROFILE_DURATION) = range(22)  # fmt: skip
+_COLS = 22
+#: The columns of a road user that is not there (deleted): it neither moves nor has a transition.
+_ABSENT = [-1.0] + [0.0] * (_PROFILE - 1) + [-1.0] + [0.0] * (_COLS - _PROFILE - 1)
 #: A running SpeedAction's transition shape as the core numbers it (core_module.c: SHAPE_*).
 _SHAPES = {"linear": 0.0, "cubic": 1.0, "sinusoidal": 2.0}
 #: Core columns of a synchronisation (core_module.c: SY_*).
@@ -65,7 +67,7 @@ def _columns(ctx, entities, synced: frozenset, turn: float) -> tuple[tuple, list
     for e in entities:
         if e.deleted:
             ways.append(None)
-            cols += [-1.0] + [0.0] * (_COLS - 1)
+            cols += _ABSENT
             continue
         f = e.follower
         p = e.speed_profile
@@ -76,7 +78,6 @@ def _columns(ctx, entities, synced: frozenset, turn: float) -> tuple[tuple, list
             or (p is not None and (e.name in synced or p.shape not in _SHAPES))
         ):  # fmt: skip
             return None
-        ds = e.speed * dt
         st = e.lane
         if f is not None:  # along its path (an untimed one: the speed moves it)
             ways.append(f.polyline.core)
@@ -92,11 +93,10 @@ def _columns(ctx, entities, synced: frozenset, turn: float) -> tuple[tuple, list
         elif p is not None:  # (a transition's speed lies between where it is and where it ends)
             reach = max(abs(e.speed), abs(p.v0), abs(p.v1)) * dt
         else:
-            reach = abs(ds)
+            reach = abs(e.speed * dt)
         move = bounds.move[e.name] = reach * 1.05 + 1e-9
         along = bounds.along[e.name] = reach * 1.3 + 1e-9
-        cols += head + [ds, e.x, e.y, e.yaw, e.center_x, e.length, e.width, move, along, e.odometer, e.speed]
-        cols += [e.last_step_m, 1.0 if e.name in varying else 0.0]
+        cols += head + [e.x, e.y, e.yaw, e.center_x, e.length, e.width, move, along, e.odometer, e.speed, e.last_step_m]
         cols += [-1.0, 0.0, 0.0, 0.0, 0.0] if p is None else [_SHAPES[p.shape], p.v0, p.v1, p.t0, p.duration]
     return tuple(ways), cols, bounds
 
@@ -192,7 +192,7 @@ def cruise(ctx, storyboard, entities: list, rows: dict, times: list, max_time: f
         return 0
     f64 = array.array
     columns = (f64("d", cols).tobytes(), f64("d", sync_cols).tobytes(), f64("d", programs).tobytes())
-    clock = f64("d", step_times(step0, step0 + skipped + 2, dt)).tobytes()  # (now, and after each step)
+    clock = f64("d", step_times(step0, step0 + skipped + 1, dt)).tobytes()  # (each step's start)
     n, poses, state, sync_state = _core.cruise(ways, *columns, clock, bounds.turn, dt, math.hypot)
     if n == 0:
         return 0

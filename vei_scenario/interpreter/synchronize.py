@@ -179,6 +179,9 @@ class Synchronize(SteppedLongitudinal):
     master_moved = True
 
     # --- in the core's quiet stretches (interpreter/cruise.py, core_module.c: sync_step) ------------
+    def carried(self, ctx) -> bool:  # (whether its distances suit the core: core_columns, at the stretch)
+        return not self.done
+
     def core_columns(self, ctx, index: dict[str, int], programs: list[float]) -> list[float] | None:
         """This synchronisation as the core steps it (SY_* columns), or None when a distance is not
         along the path or roads the entity keeps in a quiet stretch. A distance over roads other than

@@ -719,17 +719,18 @@ static PyObject *overlapping(PyObject *mod, PyObject *arg)
 /* cruise: quiet steps of the interpreter (see vei_scenario/interpreter/cruise.py) in one call */
 
 /* a road user's columns: mode (-1 deleted, 0 straight on, 1 its lane, 2 its path), where it is on its
- * lane or path (s, lane, offset, forward or, on a path, reversing, heading to the lane), the step's
- * metres (constant speed), pose, box, the bounds of a step, odometer, speed, last step's metres, and
- * whether a synchronisation sets its speed each step */
-enum { CR_MODE, CR_S, CR_LANE, CR_OFFSET, CR_FORWARD, CR_HEADING, CR_DS, CR_X, CR_Y, CR_YAW, CR_CENTER_X,
-       CR_LENGTH, CR_WIDTH, CR_MAX_MOVE, CR_MAX_DS, CR_ODOMETER, CR_SPEED, CR_LAST_MOVED, CR_VARIES,
-       CR_PROFILE, CR_PROFILE_V0, CR_PROFILE_V1, CR_PROFILE_T0, CR_PROFILE_DURATION, CR_COLS };
+ * lane or path (s, lane, offset, forward or, on a path, reversing, heading to the lane), pose, box, the
+ * bounds of a step, odometer, speed (a step moves speed * dt, as the engine's), last step's metres, and
+ * a running SpeedAction's transition */
+enum { CR_MODE, CR_S, CR_LANE, CR_OFFSET, CR_FORWARD, CR_HEADING, CR_X, CR_Y, CR_YAW, CR_CENTER_X, CR_LENGTH,
+       CR_WIDTH, CR_MAX_MOVE, CR_MAX_DS, CR_ODOMETER, CR_SPEED, CR_LAST_MOVED, CR_PROFILE, CR_PROFILE_V0,
+       CR_PROFILE_V1, CR_PROFILE_T0, CR_PROFILE_DURATION, CR_COLS };
 /* a running SpeedAction's transition (entities.SpeedProfile): its shape (-1: none) */
 enum { SHAPE_LINEAR, SHAPE_CUBIC, SHAPE_SINUSOIDAL };
 
-/* SpeedProfile.speed at the end of a step from t to t_next (the engine's t + dt): the speed in *v, 0 when the transition
- * ends in the step or its action would end after it (SpeedAction.update: the interpreter's steps) */
+/* SpeedProfile.speed at the end of a step from t to t_next (the engine's t + dt): the speed in *v, 0
+ * when the transition ends in the step or its action would end after it (SpeedAction.update: the
+ * interpreter's steps) */
 static int profile_speed(const double *e, double t, double t_next, double *v)
 {
     double t0 = e[CR_PROFILE_T0], duration = e[CR_PROFILE_DURATION];
@@ -947,8 +948,7 @@ static void cruise_pairs(const double *st, Py_ssize_t n, VeiBox *box, int *pairs
  * or ending a standstill). next holds the step's speed already. */
 static int cruise_move(PyObject *way, const double *e, double max_turn, double dt, double *next)
 {
-    double speed = next[CR_SPEED];
-    double ds = e[CR_VARIES] != 0.0 ? speed * dt : e[CR_DS];
+    double speed = next[CR_SPEED], ds = speed * dt;
     if (e[CR_MODE] < 0) return 1;
     if ((fabs(speed) < 1e-9) != (fabs(e[CR_SPEED]) < 1e-9)) return 0;
     if (e[CR_MODE] == 0) {
@@ -981,7 +981,7 @@ static int cruise_move(PyObject *way, const double *e, double max_turn, double d
 }
 
 /* cruise(ways, state, syncs, programs, times, max_turn, dt, hypot) -> (n, poses, state, syncs): up to n_max steps
- * (times: the simulation time at the start of each of n_max steps, and after the last) of every road user (ways: per road
+ * (times: the simulation time at the start of each) of every road user (ways: per road
  * user its Road (mode 1), its Polyline (mode 2) or None), the synchronisations (SY_COLS each) and the
  * running transitions of SpeedActions setting their entities' speeds before each move; stops before a step
  * that is not quiet, ends a synchronisation or changes which pairs overlap. poses: n x users x (x, y,
@@ -994,15 +994,14 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
     double max_turn = PyFloat_AsDouble(args[5]), dt = PyFloat_AsDouble(args[6]);
     if (PyErr_Occurred()) return NULL;
     if (!PyTuple_Check(ways) || !PyBytes_Check(state) || !PyBytes_Check(syncs) || !PyBytes_Check(progs) ||
-        !PyBytes_Check(clock) || PyBytes_GET_SIZE(clock) < (Py_ssize_t)sizeof(double) || !PyCallable_Check(hyp) ||
-        !(dt > 0)) {
-        PyErr_SetString(PyExc_TypeError, "cruise(ways tuple, state bytes, syncs bytes, programs bytes, times bytes "
-                                         "(at least one), max_turn, dt > 0, hypot)");
+        !PyBytes_Check(clock) || !PyCallable_Check(hyp) || !(dt > 0)) {
+        PyErr_SetString(PyExc_TypeError,
+                        "cruise(ways tuple, state bytes, syncs bytes, programs bytes, times bytes, max_turn, dt > 0, hypot)");
         return NULL;
     }
-    /* times: the step's start and the end of each step it may take */
+    /* times: the simulation time at the start of each step it may take */
     const double *times = (const double *)PyBytes_AS_STRING(clock);
-    long n_max = (long)(PyBytes_GET_SIZE(clock) / (Py_ssize_t)sizeof(double)) - 1;
+    long n_max = (long)(PyBytes_GET_SIZE(clock) / (Py_ssize_t)sizeof(double));
     const double *programs = (const double *)PyBytes_AS_STRING(progs);
     Py_ssize_t n_programs = PyBytes_GET_SIZE(progs) / (Py_ssize_t)sizeof(double);
     Py_ssize_t n = PyTuple_GET_SIZE(ways), n_sync = PyBytes_GET_SIZE(syncs) / (Py_ssize_t)(sizeof(double) * SY_COLS);
@@ -1063,10 +1062,7 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
             if (cur[i * CR_COLS + CR_PROFILE] >= 0)
                 quiet = profile_speed(cur + i * CR_COLS, times[done], times[done] + dt, &next[i * CR_COLS + CR_SPEED]);
         for (Py_ssize_t i = 0; i < n && quiet; i++) {
-            PyObject *w = PyTuple_GET_ITEM(ways, i);
-            double *e = cur + i * CR_COLS;
-            if (e[CR_MODE] > 0 && w == Py_None) quiet = 0;
-            else quiet = cruise_move(w, e, max_turn, dt, next + i * CR_COLS);
+            quiet = cruise_move(PyTuple_GET_ITEM(ways, i), cur + i * CR_COLS, max_turn, dt, next + i * CR_COLS);
         }
         if (!quiet) break;
         cruise_pairs(next, n, box, pairs1, &k1);
