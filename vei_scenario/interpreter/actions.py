@@ -469,10 +469,11 @@ class FollowTrajectory(Action):
         ctx.entities[self.entity].follower = None
 
     def carried(self, ctx) -> bool:
-        """An untimed path not at its end: the core moves the entity along it at its speed and stops
-        before the step that reaches the end."""
+        """A path not at its end: the core moves the entity along it (an untimed one at its speed, a
+        timed one by its time) and stops before the step that reaches the end (the evaluation that
+        ends a timed one)."""
         f = ctx.entities[self.entity].follower
-        return f is not None and not (f.timing is not None and f.polyline.timed) and not f.finished(ctx.t, ctx.dt)
+        return f is not None and not f.finished(ctx.t, ctx.dt)
 
 
 class AssignController(Action):

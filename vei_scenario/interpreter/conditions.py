@@ -37,6 +37,10 @@ RULES = {
 }
 
 
+#: Each comparison as the core numbers it (core_module.c: RULE_*), for the guards of a quiet stretch.
+RULE_CODES = {operator.gt: 0, operator.lt: 1, operator.ge: 2, operator.le: 3, _equal: 4, _not_equal: 5}
+
+
 def comparator(rule: str):
     """The comparison of ``rule``, looked up once when a condition is built (conditions test every
     step); an unknown rule raises ValueError when it is used, as :func:`compare` does."""
@@ -444,8 +448,15 @@ class Speed(_EntityCondition):
     def for_entity(self, ctx: Context, name: str) -> bool:
         return self.cmp(getattr(ctx.entities[name], self.quantity), self.value)
 
-    def steady_for(self, ctx: Context, name: str, bounds) -> int:  # a cruise keeps the speed (unless synchronised)
-        return 0 if name in bounds.varying else STEADY
+    def steady_for(self, ctx: Context, name: str, bounds) -> int:
+        # a cruise keeps the speed; one that changes (a synchronisation, a transition, a timed path)
+        # the core watches, stopping before the step that would change the comparison
+        if name not in bounds.varying or self._guard(name, bounds):
+            return STEADY
+        return 0
+
+    def _guard(self, name: str, bounds) -> bool:
+        return bounds.guard(self.quantity, name, RULE_CODES.get(self.cmp), self.value)
 
 
 class ReachPosition(_EntityCondition):
@@ -511,15 +522,19 @@ class RelativeSpeed(_EntityCondition):
     def for_entity(self, ctx: Context, name: str) -> bool:
         return self.cmp(ctx.entities[name].speed - ctx.entities[self.target].speed, self.value)
 
-    def steady_for(self, ctx: Context, name: str, bounds) -> int:
-        return 0 if name in bounds.varying or self.target in bounds.varying else STEADY
+    def steady_for(self, ctx: Context, name: str, bounds) -> int:  # (as Speed's, on the difference)
+        if not (name in bounds.varying or self.target in bounds.varying):
+            return STEADY
+        return STEADY if bounds.guard("speed", name, RULE_CODES.get(self.cmp), self.value, self.target) else 0
 
 
 class Acceleration(Speed):
     quantity = "accel"
 
     def steady_for(self, ctx: Context, name: str, bounds) -> int:  # a cruise step's acceleration is 0
-        return STEADY if ctx.entities[name].accel == 0.0 and name not in bounds.varying else 0
+        if (ctx.entities[name].accel == 0.0 and name not in bounds.varying) or self._guard(name, bounds):
+            return STEADY
+        return 0
 
 
 class TimeHeadway(_EntityCondition):

@@ -1,16 +1,18 @@
 """Quiet steps handed to the core in one call: while every road user keeps its lane, drives straight on
-or follows an untimed path, at its speed or at the speed its running SynchronizeAction or SpeedAction
-transition sets, and no trigger can fire, a step is only motion, and the core takes many at once.
+or follows a path (an untimed one at its speed or at the speed its running SynchronizeAction or
+SpeedAction transition sets; a timed one as its time says), and no trigger can fire, a step is only
+motion, and the core takes many at once.
 
 The storyboard stays in charge. After a step's evaluation in which nothing started or ended, each
 watched condition says for how many steps its value cannot change while the road users cruise within
 :class:`QuietBounds` (``steady_steps``: a time still ahead, a distance that cannot be covered, a value
-only an action sets; a speed that changes is looked at every step); the triggers say which of those
-evaluations would fire (delays and edges included); every running action says whether the core carries
-it (``Action.carried``); the core (``_core.cruise``: the same lane keeping, path following,
-synchronisation profile and transition as a single step's) moves everyone that many steps, and stops
-early before any step that leaves the bounds, a road, a lane or a path, ends a synchronisation or a
-transition, starts or ends a standstill, or changes which boxes touch. The steps it took are recorded
+only an action sets; a comparison of a speed or an acceleration that changes is a guard the core
+watches); the triggers say which of those evaluations would fire (delays and edges included); every
+running action says whether the core carries it (``Action.carried``); the core (``_core.cruise``: the
+same lane keeping, path following, timed playing, synchronisation profile and transition as a single
+step's) moves everyone that many steps, and stops early before any step that leaves the bounds, a road,
+a lane or a path, ends a synchronisation, a transition or a timed path's action, changes what a guard
+compares, starts or ends a standstill, or changes which boxes touch. The steps it took are recorded
 as the interpreter records its own, bit for bit (tests/test_cruise.py, tests/test_cruise_sync.py), and
 the conditions and actions account for the evaluations that were not run.
 """
@@ -19,7 +21,7 @@ from __future__ import annotations
 
 import array
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from itertools import repeat
 
 from vei_scenario.core import _core
@@ -27,10 +29,15 @@ from vei_scenario.interpreter.clock import step_time, step_times
 
 #: Core columns of a road user (core_module.c: CR_*).
 (_MODE, _S, _LANE, _OFFSET, _FORWARD, _HEADING, _X, _Y, _YAW, _CX, _LEN, _WID, _MOVE, _ALONG, _ODO, _SPEED, _LAST,
- _PROFILE, _PROFILE_V0, _PROFILE_V1, _PROFILE_T0, _PROFILE_DURATION) = range(22)  # fmt: skip
-_COLS = 22
+ _PROFILE, _PROFILE_V0, _PROFILE_V1, _PROFILE_T0, _PROFILE_DURATION, _TIME_BASE, _TIME_SCALE, _TIME_OFFSET,
+ _TIME_END, _MAX_ACCEL, _MAX_DECEL, _ACCEL) = range(29)  # fmt: skip
+_COLS = 29
 #: The columns of a road user that is not there (deleted): it neither moves nor has a transition.
 _ABSENT = [-1.0] + [0.0] * (_PROFILE - 1) + [-1.0] + [0.0] * (_COLS - _PROFILE - 1)
+#: A road user's mode in the core (core_module.c: MODE_*): straight on, its lane, its path, its timed
+#: path in position or in follow mode; and what the interpreter records it doing in each.
+_STRAIGHT, _LANE_MODE, _PATH, _TIMED, _TIMED_FOLLOW = 0.0, 1.0, 2.0, 3.0, 4.0
+_STATUS = {_TIMED: "replay", _TIMED_FOLLOW: "follow"}
 #: A running SpeedAction's transition shape as the core numbers it (core_module.c: SHAPE_*).
 _SHAPES = {"linear": 0.0, "cubic": 1.0, "sinusoidal": 2.0}
 #: Core columns of a synchronisation (core_module.c: SY_*).
@@ -46,24 +53,44 @@ TURN_RATE = 0.3
 SPEED_MARGIN_MPS = 2.0
 
 
+#: What a guard compares (core_module.c: GQ_*).
+_GUARDED = {"speed": 0.0, "accel": 1.0}
+
+
 @dataclass(frozen=True)
 class QuietBounds:
-    """The most a quiet step changes: the core stops before a step that would exceed any of these."""
+    """The most a quiet step changes: the core stops before a step that would exceed any of these, or
+    that would change what a guard compares."""
 
     move: dict[str, float]  # metres a road user's reference point moves in a step
     along: dict[str, float]  # metres of its road's s (or its path's) it passes in a step
     turn: float  # radians it turns in a step
     reach: float = 10.0  # metres a distance's lever arm may grow before a condition looks again
     varying: frozenset = frozenset()  # road users whose speed changes (a synchronisation sets it)
+    index: dict = field(default_factory=dict)  # each road user's row in the core
+    guards: list = field(default_factory=list)  # the core's columns of what guard() was asked
+
+    def guard(self, quantity: str, name: str, rule: int | None, value: float, other: str | None = None) -> bool:
+        """Have the core stop before a step after which ``quantity`` ("speed" or "accel") of road user
+        ``name`` (less ``other``'s) compares with ``value`` by ``rule`` (core_module.c: RULE_*, the
+        conditions' comparisons) otherwise than it does now: how a condition on a quantity that
+        changes every step holds through a quiet stretch. False when the core cannot watch it."""
+        index = self.index
+        if rule is None or quantity not in _GUARDED or name not in index or (other is not None and other not in index):
+            return False
+        j = -1.0 if other is None else float(index[other])
+        self.guards.extend((float(index[name]), j, _GUARDED[quantity], float(rule), value))
+        return True
 
 
 def _columns(ctx, entities, synced: frozenset, turn: float) -> tuple[tuple, list[float], QuietBounds] | None:
     """The core's columns of every road user and the bounds of their steps, or None when one moves
     otherwise than by cruising along its lane or path (or straight on) at its speed, the speed a
-    synchronisation (of ``synced``) or a SpeedAction's transition gives it."""
+    synchronisation (of ``synced``) or a SpeedAction's transition gives it, or along a timed path."""
     ways, cols, dt = [], [], ctx.dt
-    varying = synced | {e.name for e in entities if e.speed_profile is not None and not e.deleted}
-    bounds = QuietBounds({}, {}, turn, varying=frozenset(varying))
+    varying = synced | {e.name for e in entities if not e.deleted and (e.speed_profile is not None or _timed(e))}
+    index = {e.name: i for i, e in enumerate(entities)}
+    bounds = QuietBounds({}, {}, turn, varying=frozenset(varying), index=index)
     for e in entities:
         if e.deleted:
             ways.append(None)
@@ -74,21 +101,31 @@ def _columns(ctx, entities, synced: frozenset, turn: float) -> tuple[tuple, list
         if (
             e.placed or e.towed_by is not None or e.trailer is not None
             or e.lateral is not None or e.find_lane or any(e.active.values())
-            or (f is not None and (f.polyline.xs is None or (f.timing is not None and f.polyline.timed)))
-            or (p is not None and (e.name in synced or p.shape not in _SHAPES))
+            or (f is not None and f.polyline.xs is None)
+            or (p is not None and (e.name in synced or p.shape not in _SHAPES or _timed(e)))
         ):  # fmt: skip
             return None
         st = e.lane
-        if f is not None:  # along its path (an untimed one: the speed moves it)
+        timing = [0.0, 0.0, 0.0, 0.0]
+        if f is not None and _timed(e):  # along its timed path (its time moves it)
             ways.append(f.polyline.core)
-            head = [2.0, f.s, 0.0, 0.0, 1.0 if f.reverse else 0.0, 0.0]
+            mode = _TIMED if f.mode == "position" else _TIMED_FOLLOW
+            head = [mode, f.s, 0.0, 0.0, 0.0, 0.0]
+            domain, scale, offset = f.timing
+            base = 0.0 if domain == "absolute" else f.t_start
+            end = f.polyline.ts[-1] if not f.finished(ctx.t, dt) else math.nan  # (NaN: its action is over)
+            timing = [base, scale, offset, end]
+        elif f is not None:  # along its path (an untimed one: the speed moves it)
+            ways.append(f.polyline.core)
+            head = [_PATH, f.s, 0.0, 0.0, 1.0 if f.reverse else 0.0, 0.0]
         elif st is not None:
             ways.append(ctx.roads.road(st.road).core)
-            head = [1.0, st.s, float(st.lane), st.offset, 1.0 if st.forward else 0.0, st.heading]
+            head = [_LANE_MODE, st.s, float(st.lane), st.offset, 1.0 if st.forward else 0.0, st.heading]
         else:
             ways.append(None)
-            head = [0.0] * 6
-        if e.name in synced:  # (a synchronisation's speed: bounded by the margin, the core stops past it)
+            head = [_STRAIGHT] + [0.0] * 5
+        if e.name in synced or (f is not None and _timed(e)):
+            # (a synchronisation's or a timed path's speed: bounded by the margin, the core stops past it)
             reach = (abs(e.speed) + SPEED_MARGIN_MPS) * dt
         elif p is not None:  # (a transition's speed lies between where it is and where it ends)
             reach = max(abs(e.speed), abs(p.v0), abs(p.v1)) * dt
@@ -98,7 +135,14 @@ def _columns(ctx, entities, synced: frozenset, turn: float) -> tuple[tuple, list
         along = bounds.along[e.name] = reach * 1.3 + 1e-9
         cols += head + [e.x, e.y, e.yaw, e.center_x, e.length, e.width, move, along, e.odometer, e.speed, e.last_step_m]
         cols += [-1.0, 0.0, 0.0, 0.0, 0.0] if p is None else [_SHAPES[p.shape], p.v0, p.v1, p.t0, p.duration]
+        cols += timing + [e.limits.max_accel_mps2, e.limits.max_decel_mps2, e.accel]
     return tuple(ways), cols, bounds
+
+
+def _timed(e) -> bool:
+    """Whether ``e`` follows a timed path (its trajectory's time, not its speed, moves it)."""
+    f = e.follower
+    return f is not None and f.timing is not None and f.polyline.timed
 
 
 def _synchronisations(ctx) -> tuple[list, list[float], list[float]] | None:
@@ -191,7 +235,8 @@ def cruise(ctx, storyboard, entities: list, rows: dict, times: list, max_time: f
     if skipped < MIN_STEPS:
         return 0
     f64 = array.array
-    columns = (f64("d", cols).tobytes(), f64("d", sync_cols).tobytes(), f64("d", programs).tobytes())
+    columns = (f64("d", cols).tobytes(), f64("d", sync_cols).tobytes(), f64("d", programs).tobytes(),
+               f64("d", bounds.guards).tobytes())  # fmt: skip
     clock = f64("d", step_times(step0, step0 + skipped + 1, dt)).tobytes()  # (each step's start)
     n, poses, state, sync_state = _core.cruise(ways, *columns, clock, bounds.turn, dt, math.hypot)
     if n == 0:
@@ -219,11 +264,11 @@ def _commit(ctx, entities: list, rows: dict, poses, state, n: int) -> None:
             continue
         xs, ys, yaws = poses[6 * i :: 6 * k], poses[6 * i + 1 :: 6 * k], poses[6 * i + 2 :: 6 * k]
         speeds, accels = poses[6 * i + 4 :: 6 * k], poses[6 * i + 5 :: 6 * k]
-        rows[e.name].extend(zip(xs, ys, yaws, speeds, accels, repeat("default", n)))
+        rows[e.name].extend(zip(xs, ys, yaws, speeds, accels, repeat(_STATUS.get(col[_MODE], "default"), n)))
         last = 6 * (n - 1) * k + 6 * i
         e.step_speed = poses[last - 6 * k + 4] if n > 1 else e.speed  # (the speed the last step began at)
         e.x, e.y, e.yaw, e.speed = col[_X], col[_Y], col[_YAW], col[_SPEED]
-        e.accel, e.status = poses[last + 5], "default"
+        e.accel, e.status = poses[last + 5], _STATUS.get(col[_MODE], "default")
         e.last_step_m, e.odometer = poses[last + 3], col[_ODO]
         if e.follower is not None:
             e.follower.s = col[_S]

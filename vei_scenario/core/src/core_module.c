@@ -718,13 +718,18 @@ static PyObject *overlapping(PyObject *mod, PyObject *arg)
 /* ---------------------------------------------------------------------------------------------- */
 /* cruise: quiet steps of the interpreter (see vei_scenario/interpreter/cruise.py) in one call */
 
-/* a road user's columns: mode (-1 deleted, 0 straight on, 1 its lane, 2 its path), where it is on its
- * lane or path (s, lane, offset, forward or, on a path, reversing, heading to the lane), pose, box, the
- * bounds of a step, odometer, speed (a step moves speed * dt, as the engine's), last step's metres, and
- * a running SpeedAction's transition */
+/* a road user's columns: mode (-1 deleted, 0 straight on, 1 its lane, 2 its path, 3 its timed path in
+ * position mode, 4 its timed path in follow mode), where it is on its lane or path (s, lane, offset,
+ * forward or, on a path, reversing, heading to the lane), pose, box, the bounds of a step, odometer,
+ * speed (a step moves speed * dt, as the engine's), last step's metres, a running SpeedAction's
+ * transition, a timed path's timing (PathFollower.trajectory_time: base, scale, offset; the path's last
+ * time) and the road user's acceleration limits, and the step's acceleration */
 enum { CR_MODE, CR_S, CR_LANE, CR_OFFSET, CR_FORWARD, CR_HEADING, CR_X, CR_Y, CR_YAW, CR_CENTER_X, CR_LENGTH,
        CR_WIDTH, CR_MAX_MOVE, CR_MAX_DS, CR_ODOMETER, CR_SPEED, CR_LAST_MOVED, CR_PROFILE, CR_PROFILE_V0,
-       CR_PROFILE_V1, CR_PROFILE_T0, CR_PROFILE_DURATION, CR_COLS };
+       CR_PROFILE_V1, CR_PROFILE_T0, CR_PROFILE_DURATION, CR_TIME_BASE, CR_TIME_SCALE, CR_TIME_OFFSET,
+       CR_TIME_END, CR_MAX_ACCEL, CR_MAX_DECEL, CR_ACCEL, CR_COLS };
+/* the modes */
+enum { MODE_STRAIGHT, MODE_LANE, MODE_PATH, MODE_TIMED, MODE_TIMED_FOLLOW };
 /* a running SpeedAction's transition (entities.SpeedProfile): its shape (-1: none) */
 enum { SHAPE_LINEAR, SHAPE_CUBIC, SHAPE_SINUSOIDAL };
 
@@ -942,19 +947,65 @@ static void cruise_pairs(const double *st, Py_ssize_t n, VeiBox *box, int *pairs
     }
 }
 
-/* one road user's next pose keeping its lane, driving straight on or along its path (the interpreter's
- * default motion: motion.lane_keep's one-call path, motion.advance_along); 0 when the step is not a
- * quiet one (off its road or lane, to its path's end, further or more turned than the bounds, starting
- * or ending a standstill). next holds the step's speed already. */
-static int cruise_move(PyObject *way, const double *e, double max_turn, double dt, double *next)
+/* PathFollower.finished: whether a timed path's action is done after the step that starts at t (never
+ * when its last time is NaN: the action is over and the road user plays on past the path's end) */
+static int timed_done(const double *e, double t, double dt)
 {
+    double left = e[CR_TIME_END] - ((t - e[CR_TIME_BASE]) * e[CR_TIME_SCALE] + e[CR_TIME_OFFSET]);
+    return left <= dt * e[CR_TIME_SCALE] + 1e-9;
+}
+
+/* one road user on its timed path in the step from t (engine._motion's timed branch): in position mode
+ * where the trajectory puts it at t + dt, at the speed that covers the arc length; in follow mode
+ * tracking that point within its acceleration limits along the path. 0 when the path's action ends in
+ * the evaluation at t (which the core replaces: the interpreter steps on from there). */
+static int timed_move(const VeiPolyline *p, const double *e, double t, double dt, double *next)
+{
+    if (timed_done(e, t, dt)) return 0;
+    double tt = (t + dt - e[CR_TIME_BASE]) * e[CR_TIME_SCALE] + e[CR_TIME_OFFSET];
+    double target = p->n == 1 ? 0.0 : vei_polyline_s_at_time(p, tt);
+    if (e[CR_MODE] == MODE_TIMED) {
+        double speed = (target - e[CR_S]) / dt;
+        vei_polyline_at_time(p, tt, &next[CR_X], &next[CR_Y], &next[CR_YAW]);
+        next[CR_ACCEL] = (speed - e[CR_SPEED]) / dt;
+        next[CR_SPEED] = speed;
+        next[CR_S] = target;
+        return 1;
+    }
+    double v0 = e[CR_SPEED], want = ((target - e[CR_S]) / dt - v0) / dt; /* (Python's max(-d, min(a, x))) */
+    double a = want < e[CR_MAX_ACCEL] ? want : e[CR_MAX_ACCEL];
+    if (!(a > -e[CR_MAX_DECEL])) a = -e[CR_MAX_DECEL];
+    double v = v0 + a * dt, length = p->s[p->n - 1];
+    if (!(v > 0.0)) v = 0.0;
+    double s1 = e[CR_S] + 0.5 * (v0 + v) * dt; /* (motion.advance_along: never past the end) */
+    if (s1 > length) s1 = length;
+    vei_polyline_at_s(p, s1, &next[CR_X], &next[CR_Y], &next[CR_YAW]);
+    next[CR_S] = s1;
+    next[CR_SPEED] = v;
+    next[CR_ACCEL] = a;
+    return 1;
+}
+
+/* one road user's next pose keeping its lane, driving straight on or along its path, timed or not (the
+ * interpreter's default motion: motion.lane_keep's one-call path, motion.advance_along, the timed
+ * branch); 0 when the step is not a quiet one (off its road or lane, to its path's end or its timed
+ * path's action's, further or more turned than the bounds, starting or ending a standstill). next holds
+ * the step's speed already (a timed path sets its own). */
+static int cruise_move(PyObject *way, const double *e, double t, double max_turn, double dt, double *next)
+{
+    double mode = e[CR_MODE];
+    if (mode < 0) return 1;
+    if (mode >= MODE_TIMED) {
+        if (!timed_move(&((PolylineObject *)way)->p, e, t, dt, next)) return 0;
+    } else {
+        next[CR_ACCEL] = (next[CR_SPEED] - e[CR_SPEED]) / dt;
+    }
     double speed = next[CR_SPEED], ds = speed * dt;
-    if (e[CR_MODE] < 0) return 1;
     if ((fabs(speed) < 1e-9) != (fabs(e[CR_SPEED]) < 1e-9)) return 0;
-    if (e[CR_MODE] == 0) {
+    if (mode == MODE_STRAIGHT) {
         next[CR_X] = e[CR_X] + ds * cos(e[CR_YAW]);
         next[CR_Y] = e[CR_Y] + ds * sin(e[CR_YAW]);
-    } else if (e[CR_MODE] == 1) {
+    } else if (mode == MODE_LANE) {
         int lane = (int)e[CR_LANE], lane1, forward = e[CR_FORWARD] != 0.0;
         double s1, out[4];
         if (lane_step(&((RoadObject *)way)->r, e[CR_S], lane, e[CR_OFFSET], ds, forward, &s1, &lane1, out) != 1 ||
@@ -965,7 +1016,7 @@ static int cruise_move(PyObject *way, const double *e, double max_turn, double d
         next[CR_X] = out[0];
         next[CR_Y] = out[1];
         next[CR_YAW] = atan2(sin(a), cos(a));
-    } else {
+    } else if (mode == MODE_PATH) {
         const VeiPolyline *p = &((PolylineObject *)way)->p;
         double length = p->s[p->n - 1], reverse = e[CR_FORWARD] != 0.0;
         if (e[CR_S] + fabs(ds) > length) return 0; /* (on past its end, or its end: the interpreter's) */
@@ -975,30 +1026,63 @@ static int cruise_move(PyObject *way, const double *e, double max_turn, double d
         vei_polyline_at_s(p, s1, &next[CR_X], &next[CR_Y], &h);
         next[CR_S] = s1;
         next[CR_YAW] = reverse ? atan2(-sin(h), -cos(h)) : h;
+    } else if (fabs(next[CR_S] - e[CR_S]) > e[CR_MAX_DS]) {
+        return 0;
     }
     double turn = fabs(remainder(next[CR_YAW] - e[CR_YAW], 2 * M_PI));
     return hypot(next[CR_X] - e[CR_X], next[CR_Y] - e[CR_Y]) <= e[CR_MAX_MOVE] && turn <= max_turn;
 }
 
-/* cruise(ways, state, syncs, programs, times, max_turn, dt, hypot) -> (n, poses, state, syncs): up to n_max steps
+/* a guard of a quiet stretch (cruise.QuietBounds.guard): road user, the road user whose value is
+ * subtracted (-1: none), what is compared, the comparison (conditions.RULE_CODES) and its value */
+enum { GD_ENTITY, GD_OTHER, GD_QUANTITY, GD_RULE, GD_VALUE, GD_COLS };
+enum { GQ_SPEED, GQ_ACCEL };
+enum { RULE_GT, RULE_LT, RULE_GE, RULE_LE, RULE_EQ, RULE_NE };
+
+/* conditions.RULES: a comparison of a with b (equality within 1e-9, relative) */
+static int rule_holds(int rule, double a, double b)
+{
+    double tolerance = 1e-9 * (fabs(b) > 1.0 ? fabs(b) : 1.0);
+    switch (rule) {
+    case RULE_GT: return a > b;
+    case RULE_LT: return a < b;
+    case RULE_GE: return a >= b;
+    case RULE_LE: return a <= b;
+    case RULE_EQ: return fabs(a - b) <= tolerance;
+    default: return fabs(a - b) > tolerance;
+    }
+}
+
+static int guard_holds(const double *g, const double *st)
+{
+    int col = (int)g[GD_QUANTITY] == GQ_ACCEL ? CR_ACCEL : CR_SPEED;
+    double q = st[(Py_ssize_t)g[GD_ENTITY] * CR_COLS + col];
+    if (g[GD_OTHER] >= 0) q -= st[(Py_ssize_t)g[GD_OTHER] * CR_COLS + col];
+    return rule_holds((int)g[GD_RULE], q, g[GD_VALUE]);
+}
+
+/* cruise(ways, state, syncs, programs, guards, times, max_turn, dt, hypot) -> (n, poses, state, syncs): up to n_max steps
  * (times: the simulation time at the start of each) of every road user (ways: per road
  * user its Road (mode 1), its Polyline (mode 2) or None), the synchronisations (SY_COLS each) and the
  * running transitions of SpeedActions setting their entities' speeds before each move; stops before a step
- * that is not quiet, ends a synchronisation or changes which pairs overlap. poses: n x users x (x, y,
+ * that is not quiet, ends a synchronisation, changes what a guard compares or which pairs overlap. poses: n x users x (x, y,
  * yaw, metres moved, speed, acceleration); state, syncs: the columns after the n steps. The metres moved
  * and the odometer are math.hypot's (given), so they equal the interpreter's own steps bit for bit. */
 static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
 {
-    if (!args_ok(nargs, 8, "cruise")) return NULL;
-    PyObject *ways = args[0], *state = args[1], *syncs = args[2], *progs = args[3], *clock = args[4], *hyp = args[7];
-    double max_turn = PyFloat_AsDouble(args[5]), dt = PyFloat_AsDouble(args[6]);
+    if (!args_ok(nargs, 9, "cruise")) return NULL;
+    PyObject *ways = args[0], *state = args[1], *syncs = args[2], *progs = args[3], *guard_cols = args[4];
+    PyObject *clock = args[5], *hyp = args[8];
+    double max_turn = PyFloat_AsDouble(args[6]), dt = PyFloat_AsDouble(args[7]);
     if (PyErr_Occurred()) return NULL;
     if (!PyTuple_Check(ways) || !PyBytes_Check(state) || !PyBytes_Check(syncs) || !PyBytes_Check(progs) ||
-        !PyBytes_Check(clock) || !PyCallable_Check(hyp) || !(dt > 0)) {
-        PyErr_SetString(PyExc_TypeError,
-                        "cruise(ways tuple, state bytes, syncs bytes, programs bytes, times bytes, max_turn, dt > 0, hypot)");
+        !PyBytes_Check(guard_cols) || !PyBytes_Check(clock) || !PyCallable_Check(hyp) || !(dt > 0)) {
+        PyErr_SetString(PyExc_TypeError, "cruise(ways tuple, state bytes, syncs bytes, programs bytes, guards bytes, "
+                                         "times bytes, max_turn, dt > 0, hypot)");
         return NULL;
     }
+    const double *guards = (const double *)PyBytes_AS_STRING(guard_cols);
+    Py_ssize_t n_guards = PyBytes_GET_SIZE(guard_cols) / (Py_ssize_t)(sizeof(double) * GD_COLS);
     /* times: the simulation time at the start of each step it may take */
     const double *times = (const double *)PyBytes_AS_STRING(clock);
     long n_max = (long)(PyBytes_GET_SIZE(clock) / (Py_ssize_t)sizeof(double));
@@ -1014,9 +1098,23 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
     for (Py_ssize_t i = 0; i < n; i++) {
         PyObject *w = PyTuple_GET_ITEM(ways, i);
         double mode = st0[i * CR_COLS + CR_MODE];
-        if ((mode == 1 && !PyObject_TypeCheck(w, &RoadType)) || (mode == 2 && !PyObject_TypeCheck(w, &PolylineType)) ||
-            (mode == 2 && ((PolylineObject *)w)->p.n < 1)) {
-            PyErr_SetString(PyExc_TypeError, "cruise: a road user on its lane has its Road, on its path its Polyline");
+        int on_path = mode == MODE_PATH || mode == MODE_TIMED || mode == MODE_TIMED_FOLLOW;
+        if ((mode == MODE_LANE && !PyObject_TypeCheck(w, &RoadType)) ||
+            (on_path && !(PyObject_TypeCheck(w, &PolylineType) && ((PolylineObject *)w)->p.n >= 1)) ||
+            (mode >= MODE_TIMED && ((PolylineObject *)w)->p.t == NULL) || mode > MODE_TIMED_FOLLOW) {
+            PyErr_SetString(PyExc_TypeError,
+                            "cruise: a road user on its lane has its Road, on its path its Polyline (timed: with times)");
+            return NULL;
+        }
+    }
+    if (PyBytes_GET_SIZE(guard_cols) != n_guards * (Py_ssize_t)(sizeof(double) * GD_COLS)) {
+        PyErr_SetString(PyExc_ValueError, "cruise: the guards need their columns each");
+        return NULL;
+    }
+    for (Py_ssize_t k = 0; k < n_guards; k++) {
+        const double *g = guards + k * GD_COLS;
+        if (!(g[GD_ENTITY] >= 0 && g[GD_ENTITY] < n && g[GD_OTHER] >= -1 && g[GD_OTHER] < n)) {
+            PyErr_SetString(PyExc_ValueError, "cruise: a guard names road users that are not there");
             return NULL;
         }
     }
@@ -1062,8 +1160,10 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
             if (cur[i * CR_COLS + CR_PROFILE] >= 0)
                 quiet = profile_speed(cur + i * CR_COLS, times[done], times[done] + dt, &next[i * CR_COLS + CR_SPEED]);
         for (Py_ssize_t i = 0; i < n && quiet; i++) {
-            quiet = cruise_move(PyTuple_GET_ITEM(ways, i), cur + i * CR_COLS, max_turn, dt, next + i * CR_COLS);
+            quiet = cruise_move(PyTuple_GET_ITEM(ways, i), cur + i * CR_COLS, times[done], max_turn, dt, next + i * CR_COLS);
         }
+        for (Py_ssize_t k = 0; k < n_guards && quiet; k++)
+            quiet = guard_holds(guards + k * GD_COLS, next) == guard_holds(guards + k * GD_COLS, cur);
         if (!quiet) break;
         cruise_pairs(next, n, box, pairs1, &k1);
         if (k1 != k0 || memcmp(pairs0, pairs1, sizeof(int) * (size_t)k0) != 0) break;
@@ -1085,7 +1185,7 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
                 f[CR_LAST_MOVED] = moved;
             }
             row[6 * i] = f[CR_X], row[6 * i + 1] = f[CR_Y], row[6 * i + 2] = f[CR_YAW], row[6 * i + 3] = moved;
-            row[6 * i + 4] = f[CR_SPEED], row[6 * i + 5] = (f[CR_SPEED] - e[CR_SPEED]) / dt;
+            row[6 * i + 4] = f[CR_SPEED], row[6 * i + 5] = f[CR_ACCEL];
         }
         if (failed) break;
         memcpy(cur, next, sizeof(double) * CR_COLS * (size_t)n);
@@ -1143,7 +1243,7 @@ static PyMethodDef module_methods[] = {
     F(time_to_conflict, "time_to_conflict(ego_box, ego_speed, margin, threat_box, vx, vy[, horizon]) -> s"),
     F(time_to_contact, "time_to_contact(box_a, vxa, vya, box_b, vxb, vyb) -> s"),
     {"overlapping", overlapping, METH_O, "overlapping(boxes) -> pairs (i, j) of overlapping boxes"},
-    F(cruise, "cruise(ways, state, syncs, programs, times, max_turn, dt, hypot) -> (n, poses, state, syncs): quiet steps in one call"),
+    F(cruise, "cruise(ways, state, syncs, programs, guards, times, max_turn, dt, hypot) -> (n, poses, state, syncs): quiet steps in one call"),
     {"set_quadrature", set_quadrature, METH_VARARGS, "set_quadrature(nodes, weights): 24 doubles each"},
     {NULL, NULL, 0, NULL},
 };
