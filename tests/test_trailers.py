@@ -135,3 +135,70 @@ def test_a_trailer_ref_to_no_entity_is_refused_in_one_line(tmp_path, capsys):
     assert main(["run", str(path), "-o", str(tmp_path / "o")]) != 0
     err = capsys.readouterr().err
     assert "TrailerRef 'Nobody' names no entity" in err and "Traceback" not in err
+
+
+def _shaped(v: float, seconds: float) -> str:
+    return (
+        f'<LongitudinalAction><SpeedAction><SpeedActionDynamics dynamicsShape="cubic" value="{seconds}" '
+        f'dynamicsDimension="time"/><SpeedActionTarget><AbsoluteTargetSpeed value="{v}"/></SpeedActionTarget>'
+        "</SpeedAction></LongitudinalAction>"
+    )
+
+
+def _when_trailer(name: str, action: str, condition: str) -> str:
+    """An event of the Car once ``condition`` holds for T1."""
+    return (
+        f'<Event name="{name}" priority="parallel"><Action name="{name}a"><PrivateAction>{action}</PrivateAction>'
+        '</Action><StartTrigger><ConditionGroup><Condition name="c" delay="0" conditionEdge="none">'
+        '<ByEntityCondition><TriggeringEntities triggeringEntitiesRule="any"><EntityRef entityRef="T1"/>'
+        f"</TriggeringEntities><EntityCondition>{condition}</EntityCondition></ByEntityCondition></Condition>"
+        "</ConditionGroup></StartTrigger></Event>"
+    )
+
+
+CHAIN = (
+    _vehicle("Car", hitch=-1.0, tows="T1")
+    + _vehicle("T1", "trailer", coupler=6.0, hitch=-2.0, tows="T2")
+    + _vehicle("T2", "trailer", coupler=-0.8)  # (a coupler behind the axle)
+)
+#: (entities, init, events, stop) of each run the core's trailers are compared on
+PULLED = {
+    "chain_on_a_circle": (CHAIN, teleport("Car", 0, 0, 0, speed=6.0, extra=_circle(25.0, 400.0)), "", 20.0),
+    "slowing_on_a_circle": (
+        CHAIN,
+        teleport("Car", 0, 0, 0, speed=9.0, extra=_circle(30.0, 400.0)),
+        _event("slow", _shaped(2.0, 4.0), 3.0),
+        15.0,
+    ),
+    "connected_and_disconnected": (
+        _vehicle("Car", hitch=-1.0) + _vehicle("T1", "trailer", coupler=3.0),
+        teleport("Car", 0, 0, 0.2, speed=4.0) + teleport("T1", -3.0, 0.5, 0.3),
+        _event("on", '<TrailerAction><ConnectTrailerAction trailerRef="T1"/></TrailerAction>', 1.0)
+        + _event("off", "<TrailerAction><DisconnectTrailerAction/></TrailerAction>", 6.0),
+        9.0,
+    ),
+    "watching_a_trailer": (
+        CHAIN,
+        teleport("Car", 0, 0, 0, speed=7.0, extra=_circle(40.0, 400.0)),
+        _when_trailer("far", _shaped(12.0, 2.0), '<TraveledDistanceCondition value="31.4"/>')
+        + _when_trailer("slow", _shaped(3.0, 1.0), '<SpeedCondition value="11.5" rule="greaterThan"/>'),
+        14.0,
+    ),
+}
+
+
+@pytest.mark.parametrize("case", sorted(PULLED))
+def test_towed_trailers_in_the_core_equal_the_stepped_run(tmp_path, monkeypatch, case):
+    """The core pulls towed trailers (front to back, after everyone has moved) as trailers.pull does:
+    the run with quiet stretches equals the interpreter's step by step, bit for bit, and most steps
+    are the core's."""
+    from test_cruise import assert_identical, run_both
+
+    entities, init, events, stop = PULLED[case]
+    fast, cruised, slow = run_both(_scenario(tmp_path, entities, init, events, stop_s=stop), monkeypatch)
+    assert_identical(fast, slow)
+    assert "towed" in slow.traces["T1"].status
+    assert np.ptp(slow.traces["T1"].yaw) > 0.1 or case == "connected_and_disconnected"
+    if case == "watching_a_trailer":
+        assert np.any(np.isclose(slow.traces["Car"].speed, 3.0)), "the trailer's speed was never watched"
+    assert cruised > 0.5 * len(fast.t), f"only {cruised} of {len(fast.t)} steps cruised"

@@ -30,14 +30,14 @@ from vei_scenario.interpreter.clock import step_time, step_times
 #: Core columns of a road user (core_module.c: CR_*).
 (_MODE, _S, _LANE, _OFFSET, _FORWARD, _HEADING, _X, _Y, _YAW, _CX, _LEN, _WID, _MOVE, _ALONG, _ODO, _SPEED, _LAST,
  _PROFILE, _PROFILE_V0, _PROFILE_V1, _PROFILE_T0, _PROFILE_DURATION, _TIME_BASE, _TIME_SCALE, _TIME_OFFSET,
- _TIME_END, _MAX_ACCEL, _MAX_DECEL, _ACCEL) = range(29)  # fmt: skip
-_COLS = 29
+ _TIME_END, _MAX_ACCEL, _MAX_DECEL, _ACCEL, _TOW, _HITCH, _COUPLER, _CHAIN) = range(33)  # fmt: skip
+_COLS = 33
 #: The columns of a road user that is not there (deleted): it neither moves nor has a transition.
 _ABSENT = [-1.0] + [0.0] * (_PROFILE - 1) + [-1.0] + [0.0] * (_COLS - _PROFILE - 1)
 #: A road user's mode in the core (core_module.c: MODE_*): straight on, its lane, its path, its timed
-#: path in position or in follow mode; and what the interpreter records it doing in each.
-_STRAIGHT, _LANE_MODE, _PATH, _TIMED, _TIMED_FOLLOW = 0.0, 1.0, 2.0, 3.0, 4.0
-_STATUS = {_TIMED: "replay", _TIMED_FOLLOW: "follow"}
+#: path in position or in follow mode, towed; and what the interpreter records it doing in each.
+_STRAIGHT, _LANE_MODE, _PATH, _TIMED, _TIMED_FOLLOW, _TOWED = 0.0, 1.0, 2.0, 3.0, 4.0, 5.0
+_STATUS = {_TIMED: "replay", _TIMED_FOLLOW: "follow", _TOWED: "towed"}
 #: A running SpeedAction's transition shape as the core numbers it (core_module.c: SHAPE_*).
 _SHAPES = {"linear": 0.0, "cubic": 1.0, "sinusoidal": 2.0}
 #: Core columns of a synchronisation (core_module.c: SY_*).
@@ -88,7 +88,9 @@ def _columns(ctx, entities, synced: frozenset, turn: float) -> tuple[tuple, list
     otherwise than by cruising along its lane or path (or straight on) at its speed, the speed a
     synchronisation (of ``synced``) or a SpeedAction's transition gives it, or along a timed path."""
     ways, cols, dt = [], [], ctx.dt
-    varying = synced | {e.name for e in entities if not e.deleted and (e.speed_profile is not None or _timed(e))}
+    varying = synced | {  # (a trailer's speed is its tow's: taken as changing)
+        e.name for e in entities if not e.deleted and (e.speed_profile is not None or _timed(e) or e.towed_by)
+    }
     index = {e.name: i for i, e in enumerate(entities)}
     bounds = QuietBounds({}, {}, turn, varying=frozenset(varying), index=index)
     for e in entities:
@@ -98,9 +100,21 @@ def _columns(ctx, entities, synced: frozenset, turn: float) -> tuple[tuple, list
             continue
         f = e.follower
         p = e.speed_profile
+        if e.towed_by is not None:  # (pulled after everyone has moved, front to back)
+            chain = _chain(ctx.entities, e)
+            if chain is None or e.placed or p is not None or ctx.entities[e.towed_by].hitch_dx is None:
+                return None
+            tow = ctx.entities[e.towed_by]
+            reach = (abs(e.speed) + SPEED_MARGIN_MPS) * dt + abs(tow.hitch_dx) * min(turn, math.pi)
+            move = bounds.move[e.name] = reach * 1.05 + 1e-9
+            bounds.along[e.name] = 0.0
+            ways.append(None)
+            cols += [_TOWED] + [0.0] * 5 + [e.x, e.y, e.yaw, e.center_x, e.length, e.width, move, 0.0, e.odometer]
+            cols += [e.speed, e.last_step_m, -1.0] + [0.0] * 10 + [e.accel, float(index[tow.name]), tow.hitch_dx]
+            cols += [e.coupler_dx, float(chain)]
+            continue
         if (
-            e.placed or e.towed_by is not None or e.trailer is not None
-            or e.lateral is not None or e.find_lane or any(e.active.values())
+            e.placed or e.lateral is not None or e.find_lane or any(e.active.values())
             or (f is not None and f.polyline.xs is None)
             or (p is not None and (e.name in synced or p.shape not in _SHAPES or _timed(e)))
         ):  # fmt: skip
@@ -135,8 +149,20 @@ def _columns(ctx, entities, synced: frozenset, turn: float) -> tuple[tuple, list
         along = bounds.along[e.name] = reach * 1.3 + 1e-9
         cols += head + [e.x, e.y, e.yaw, e.center_x, e.length, e.width, move, along, e.odometer, e.speed, e.last_step_m]
         cols += [-1.0, 0.0, 0.0, 0.0, 0.0] if p is None else [_SHAPES[p.shape], p.v0, p.v1, p.t0, p.duration]
-        cols += timing + [e.limits.max_accel_mps2, e.limits.max_decel_mps2, e.accel]
+        cols += timing + [e.limits.max_accel_mps2, e.limits.max_decel_mps2, e.accel, -1.0, 0.0, 0.0, 0.0]
     return tuple(ways), cols, bounds
+
+
+def _chain(entities: dict, trailer) -> int | None:
+    """Where ``trailer`` is in its chain (1: behind a tow that is not towed itself), or None when a
+    link is not one the interpreter pulls (a deleted one, a tow that names another trailer)."""
+    depth, e = 0, trailer
+    while e.towed_by is not None:
+        tow = entities[e.towed_by]
+        if e.deleted or tow.deleted or tow.trailer != e.name or depth > len(entities):
+            return None
+        depth, e = depth + 1, tow
+    return depth
 
 
 def _timed(e) -> bool:
@@ -274,6 +300,8 @@ def _commit(ctx, entities: list, rows: dict, poses, state, n: int) -> None:
             e.follower.s = col[_S]
         elif e.lane is not None:
             e.lane.s, e.lane.lane = col[_S], int(col[_LANE])
+        if e.towed_by is not None:  # (trailers.pull: a trailer's standstill is not counted)
+            continue
         if abs(e.speed) < 1e-9:
             if e.standing_since is None:
                 e.standing_since = ctx.t + ctx.dt

@@ -719,17 +719,19 @@ static PyObject *overlapping(PyObject *mod, PyObject *arg)
 /* cruise: quiet steps of the interpreter (see vei_scenario/interpreter/cruise.py) in one call */
 
 /* a road user's columns: mode (-1 deleted, 0 straight on, 1 its lane, 2 its path, 3 its timed path in
- * position mode, 4 its timed path in follow mode), where it is on its lane or path (s, lane, offset,
- * forward or, on a path, reversing, heading to the lane), pose, box, the bounds of a step, odometer,
- * speed (a step moves speed * dt, as the engine's), last step's metres, a running SpeedAction's
- * transition, a timed path's timing (PathFollower.trajectory_time: base, scale, offset; the path's last
- * time) and the road user's acceleration limits, and the step's acceleration */
+ * position mode, 4 its timed path in follow mode, 5 towed), where it is on its lane or path (s, lane,
+ * offset, forward or, on a path, reversing, heading to the lane), pose, box, the bounds of a step,
+ * odometer, speed (a step moves speed * dt, as the engine's), last step's metres, a running
+ * SpeedAction's transition, a timed path's timing (PathFollower.trajectory_time: base, scale, offset;
+ * the path's last time) and the road user's acceleration limits, the step's acceleration, and a towed
+ * trailer's tow (its row), the tow's hitch, the trailer's coupler and its place in the chain (1: behind
+ * a tow that is not towed itself) */
 enum { CR_MODE, CR_S, CR_LANE, CR_OFFSET, CR_FORWARD, CR_HEADING, CR_X, CR_Y, CR_YAW, CR_CENTER_X, CR_LENGTH,
        CR_WIDTH, CR_MAX_MOVE, CR_MAX_DS, CR_ODOMETER, CR_SPEED, CR_LAST_MOVED, CR_PROFILE, CR_PROFILE_V0,
        CR_PROFILE_V1, CR_PROFILE_T0, CR_PROFILE_DURATION, CR_TIME_BASE, CR_TIME_SCALE, CR_TIME_OFFSET,
-       CR_TIME_END, CR_MAX_ACCEL, CR_MAX_DECEL, CR_ACCEL, CR_COLS };
+       CR_TIME_END, CR_MAX_ACCEL, CR_MAX_DECEL, CR_ACCEL, CR_TOW, CR_HITCH, CR_COUPLER, CR_CHAIN, CR_COLS };
 /* the modes */
-enum { MODE_STRAIGHT, MODE_LANE, MODE_PATH, MODE_TIMED, MODE_TIMED_FOLLOW };
+enum { MODE_STRAIGHT, MODE_LANE, MODE_PATH, MODE_TIMED, MODE_TIMED_FOLLOW, MODE_TOWED };
 /* a running SpeedAction's transition (entities.SpeedProfile): its shape (-1: none) */
 enum { SHAPE_LINEAR, SHAPE_CUBIC, SHAPE_SINUSOIDAL };
 
@@ -986,6 +988,23 @@ static int timed_move(const VeiPolyline *p, const double *e, double t, double dt
     return 1;
 }
 
+/* trailers.pull: a towed trailer (e, next) after its tow has moved (tow: the tow's next columns), its
+ * axle drawn towards the hitch at the coupler's distance; 0 when it moves or turns more than the bounds */
+static int towed_move(const double *e, const double *tow, double dt, double max_turn, double *next)
+{
+    double hitch = e[CR_HITCH], coupler = e[CR_COUPLER];
+    double hx = tow[CR_X] + hitch * cos(tow[CR_YAW]), hy = tow[CR_Y] + hitch * sin(tow[CR_YAW]);
+    double dx = hx - e[CR_X], dy = hy - e[CR_Y], yaw = e[CR_YAW];
+    if (hypot(dx, dy) > 1e-12) yaw = coupler < 0 ? atan2(-dy, -dx) : atan2(dy, dx);
+    next[CR_YAW] = yaw;
+    next[CR_X] = hx - coupler * cos(yaw);
+    next[CR_Y] = hy - coupler * sin(yaw);
+    next[CR_ACCEL] = (tow[CR_SPEED] - e[CR_SPEED]) / dt;
+    next[CR_SPEED] = tow[CR_SPEED];
+    double turn = fabs(remainder(yaw - e[CR_YAW], 2 * M_PI));
+    return hypot(next[CR_X] - e[CR_X], next[CR_Y] - e[CR_Y]) <= e[CR_MAX_MOVE] && turn <= max_turn;
+}
+
 /* one road user's next pose keeping its lane, driving straight on or along its path, timed or not (the
  * interpreter's default motion: motion.lane_keep's one-call path, motion.advance_along, the timed
  * branch); 0 when the step is not a quiet one (off its road or lane, to its path's end or its timed
@@ -994,7 +1013,7 @@ static int timed_move(const VeiPolyline *p, const double *e, double t, double dt
 static int cruise_move(PyObject *way, const double *e, double t, double max_turn, double dt, double *next)
 {
     double mode = e[CR_MODE];
-    if (mode < 0) return 1;
+    if (mode < 0 || mode == MODE_TOWED) return 1; /* (a trailer is pulled after everyone has moved) */
     if (mode >= MODE_TIMED) {
         if (!timed_move(&((PolylineObject *)way)->p, e, t, dt, next)) return 0;
     } else {
@@ -1095,13 +1114,20 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
         return NULL;
     }
     const double *st0 = (const double *)PyBytes_AS_STRING(state);
+    double max_chain = 0;
     for (Py_ssize_t i = 0; i < n; i++) {
         PyObject *w = PyTuple_GET_ITEM(ways, i);
         double mode = st0[i * CR_COLS + CR_MODE];
         int on_path = mode == MODE_PATH || mode == MODE_TIMED || mode == MODE_TIMED_FOLLOW;
+        double tow = st0[i * CR_COLS + CR_TOW];
+        if (mode == MODE_TOWED && !(tow >= 0 && tow < n && tow != i && st0[i * CR_COLS + CR_CHAIN] >= 1)) {
+            PyErr_SetString(PyExc_ValueError, "cruise: a towed trailer names its tow and its place in the chain");
+            return NULL;
+        }
+        if (mode == MODE_TOWED && st0[i * CR_COLS + CR_CHAIN] > max_chain) max_chain = st0[i * CR_COLS + CR_CHAIN];
         if ((mode == MODE_LANE && !PyObject_TypeCheck(w, &RoadType)) ||
             (on_path && !(PyObject_TypeCheck(w, &PolylineType) && ((PolylineObject *)w)->p.n >= 1)) ||
-            (mode >= MODE_TIMED && ((PolylineObject *)w)->p.t == NULL) || mode > MODE_TIMED_FOLLOW) {
+            (on_path && mode >= MODE_TIMED && ((PolylineObject *)w)->p.t == NULL) || mode > MODE_TOWED) {
             PyErr_SetString(PyExc_TypeError,
                             "cruise: a road user on its lane has its Road, on its path its Polyline (timed: with times)");
             return NULL;
@@ -1162,6 +1188,12 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
         for (Py_ssize_t i = 0; i < n && quiet; i++) {
             quiet = cruise_move(PyTuple_GET_ITEM(ways, i), cur + i * CR_COLS, times[done], max_turn, dt, next + i * CR_COLS);
         }
+        for (double chain = 1; chain <= max_chain && quiet; chain++) /* (trailers front to back) */
+            for (Py_ssize_t i = 0; i < n && quiet; i++) {
+                double *e = cur + i * CR_COLS;
+                if (e[CR_MODE] == MODE_TOWED && e[CR_CHAIN] == chain)
+                    quiet = towed_move(e, next + (Py_ssize_t)e[CR_TOW] * CR_COLS, dt, max_turn, next + i * CR_COLS);
+            }
         for (Py_ssize_t k = 0; k < n_guards && quiet; k++)
             quiet = guard_holds(guards + k * GD_COLS, next) == guard_holds(guards + k * GD_COLS, cur);
         if (!quiet) break;
