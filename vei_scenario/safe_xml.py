@@ -6,8 +6,10 @@ disabled. A syntax error becomes a :class:`~vei_scenario.errors.VeiInputError` n
 
 from __future__ import annotations
 
+import functools
 import hashlib
 import math
+import os
 from pathlib import Path
 
 from lxml import etree
@@ -44,7 +46,18 @@ def parse_xml(path: Path | str, remove_comments: bool = False) -> etree._Element
 
 def content_key(path: Path | str) -> bytes:
     """What a file holds, as a short digest: the key of what is built from it once per process (a
-    missing or unreadable file gets an empty key, and its error when it is parsed)."""
+    missing or unreadable file gets an empty key, and its error when it is parsed). The digest is
+    read again whenever the file's size, inode, modification or change time differ from the last
+    reading (a sweep asks for the same files for every variant; any write changes the change time)."""
+    try:
+        st = os.stat(path)
+    except OSError:
+        return b""
+    return _digest(str(path), st.st_size, st.st_ino, st.st_mtime_ns, st.st_ctime_ns)
+
+
+@functools.lru_cache(maxsize=256)
+def _digest(path: str, size: int, inode: int, mtime_ns: int, ctime_ns: int) -> bytes:
     try:
         return hashlib.blake2b(Path(path).read_bytes(), digest_size=16).digest()
     except OSError:

@@ -31,8 +31,12 @@ __all__ = ["RunResult", "Simulation", "load_scenario", "run_scenario"]
 def clear_file_caches() -> None:
     """Forget the catalogs and road networks built so far in this process (they are kept per file
     content, so that a sweep's variants share them): the next run reads them as a fresh process does."""
-    from vei_scenario.interpreter.document import _catalog_tree
+    from vei_scenario.interpreter import document, shapes
     from vei_scenario.roads.road_model import _network
+    from vei_scenario.safe_xml import _digest
 
-    _catalog_tree.cache_clear()
-    _network.cache_clear()
+    for cache in (document._catalog_tree, document._catalog_index, document._directory, _network, _digest):
+        cache.cache_clear()
+    document._RESOLVED.clear()
+    document._NAMES.clear()
+    shapes._BUILT.clear()

@@ -22,7 +22,6 @@ from __future__ import annotations
 import array
 import math
 from dataclasses import dataclass, field
-from itertools import repeat
 
 from vei_scenario.core import _core
 from vei_scenario.interpreter.clock import step_time, step_times
@@ -32,8 +31,6 @@ from vei_scenario.interpreter.clock import step_time, step_times
  _PROFILE, _PROFILE_V0, _PROFILE_V1, _PROFILE_T0, _PROFILE_DURATION, _TIME_BASE, _TIME_SCALE, _TIME_OFFSET,
  _TIME_END, _MAX_ACCEL, _MAX_DECEL, _ACCEL, _TOW, _HITCH, _COUPLER, _CHAIN) = range(33)  # fmt: skip
 _COLS = 33
-#: The columns of a road user that is not there (deleted): it neither moves nor has a transition.
-_ABSENT = [-1.0] + [0.0] * (_PROFILE - 1) + [-1.0] + [0.0] * (_COLS - _PROFILE - 1)
 #: A road user's mode in the core (core_module.c: MODE_*): straight on, its lane, its path, its timed
 #: path in position or in follow mode, towed; and what the interpreter records it doing in each.
 _STRAIGHT, _LANE_MODE, _PATH, _TIMED, _TIMED_FOLLOW, _TOWED = 0.0, 1.0, 2.0, 3.0, 4.0, 5.0
@@ -96,7 +93,7 @@ def _columns(ctx, entities, synced: frozenset, turn: float) -> tuple[tuple, list
     for e in entities:
         if e.deleted:
             ways.append(None)
-            cols += _ABSENT
+            cols += _absent(e)
             continue
         f = e.follower
         p = e.speed_profile
@@ -165,6 +162,15 @@ def _chain(entities: dict, trailer) -> int | None:
     return depth
 
 
+def _absent(e) -> list[float]:
+    """The columns of a road user that is not there (deleted): it neither moves nor has a transition,
+    and the core's poses repeat where it was left."""
+    cols = [0.0] * _COLS
+    cols[_MODE] = cols[_PROFILE] = -1.0
+    cols[_X], cols[_Y], cols[_YAW], cols[_SPEED], cols[_ACCEL] = e.x, e.y, e.yaw, e.speed, e.accel
+    return cols
+
+
 def _timed(e) -> bool:
     """Whether ``e`` follows a timed path (its trajectory's time, not its speed, moves it)."""
     f = e.follower
@@ -230,7 +236,7 @@ def steps_left(ctx, max_time: float) -> int:
     return n
 
 
-def cruise(ctx, storyboard, entities: list, rows: dict, times: list, max_time: float) -> int:
+def cruise(ctx, storyboard, entities: list, recording, max_time: float) -> int:
     """Take this step's move and as many quiet steps after it as nothing can happen in, in the core;
     record them. The number of steps taken (0: none, the step goes on as usual)."""
     triggers = storyboard.watching()
@@ -272,25 +278,24 @@ def cruise(ctx, storyboard, entities: list, rows: dict, times: list, max_time: f
     sync_state = memoryview(sync_state).cast("d")
     for k, a in enumerate(actions):
         a.take_core_columns(sync_state[k * _SY_COLS : (k + 1) * _SY_COLS])
-    _commit(ctx, entities, rows, memoryview(poses).cast("d"), memoryview(state).cast("d"), n)
-    times += step_times(step0 + 1, step0 + 1 + n, dt)
+    state = memoryview(state).cast("d")
+    statuses = [_STATUS.get(state[i * _COLS + _MODE], "default") if not e.deleted else "deleted"
+                for i, e in enumerate(entities)]  # fmt: skip
+    recording.record_core(step_times(step0 + 1, step0 + 1 + n, dt), poses, statuses)
+    _commit(ctx, entities, memoryview(poses).cast("d"), state, n)
     ctx.step = step0 + n
     ctx.t = step_time(ctx.step, dt)
     return n
 
 
-def _commit(ctx, entities: list, rows: dict, poses, state, n: int) -> None:
-    """The road users as the core left them after ``n`` steps, and their recorded rows."""
+def _commit(ctx, entities: list, poses, state, n: int) -> None:
+    """The road users as the core left them after ``n`` steps."""
     k = len(entities)
     for i, e in enumerate(entities):
         col = state[i * _COLS : (i + 1) * _COLS]
         if e.deleted:
             e.status, e.last_step_m = "deleted", 0.0
-            rows[e.name].extend(repeat((e.x, e.y, e.yaw, e.speed, e.accel, "deleted"), n))
             continue
-        xs, ys, yaws = poses[6 * i :: 6 * k], poses[6 * i + 1 :: 6 * k], poses[6 * i + 2 :: 6 * k]
-        speeds, accels = poses[6 * i + 4 :: 6 * k], poses[6 * i + 5 :: 6 * k]
-        rows[e.name].extend(zip(xs, ys, yaws, speeds, accels, repeat(_STATUS.get(col[_MODE], "default"), n)))
         last = 6 * (n - 1) * k + 6 * i
         e.step_speed = poses[last - 6 * k + 4] if n > 1 else e.speed  # (the speed the last step began at)
         e.x, e.y, e.yaw, e.speed = col[_X], col[_Y], col[_YAW], col[_SPEED]

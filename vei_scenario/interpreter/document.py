@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import functools
 import math
+import os
 import re
 from dataclasses import dataclass
 from pathlib import Path
@@ -171,7 +172,7 @@ class Catalogs:
     def __init__(self, path: Path, root) -> None:
         self.path = path
         self.dirs = [
-            (d.getparent().tag, (path.parent / d.get("path")).resolve())
+            (d.getparent().tag, _directory(str(path.parent), d.get("path")))
             for d in root.iterfind("CatalogLocations/*/Directory")
             if d.get("path") and not d.get("path").startswith("$")
         ]
@@ -186,17 +187,12 @@ class Catalogs:
         return self._files.get(id(entry), self.path)
 
     def _load(self) -> None:
-        self._entries = {}
-        for location, d in self.dirs:
-            for f in sorted(d.glob("*.xosc")) if d.is_dir() else []:
-                for cat in catalog_file(f).getroot().iterfind("Catalog"):
-                    for item in cat:
-                        if isinstance(item.tag, str) and item.get("name"):
-                            name = item.get("name")
-                            self._entries.setdefault((cat.get("name"), name), item)
-                            self._by_location.setdefault((location, name), item)
-                            self._by_name.setdefault(name, []).append(item)
-                            self._files[id(item)] = f
+        files = tuple(
+            (location, f, content_key(f))
+            for location, d in self.dirs
+            for f in (sorted(d / n for n in os.listdir(d) if n.endswith(".xosc")) if d.is_dir() else [])
+        )
+        self._entries, self._by_location, self._by_name, self._files = _catalog_index(files)
 
     def entry(self, ref):
         if self._entries is None:
@@ -213,6 +209,34 @@ class Catalogs:
                 self.path, f"line {ref.sourceline}", f"catalog entry {catalog}/{name} not found ({where})"
             )
         return found
+
+
+@functools.lru_cache(maxsize=256)
+def _directory(parent: str, path: str) -> Path:
+    """A CatalogLocations directory, resolved once per process (a sweep names the same ones for
+    every variant)."""
+    return (Path(parent) / path).resolve()
+
+
+@functools.lru_cache(maxsize=16)
+def _catalog_index(files: tuple) -> tuple[dict, dict, dict, dict]:
+    """The entries of the catalog ``files`` ((location, file, content key) each, in the order they
+    are searched) by (catalog, name), by (location, name) and by name, and the file of each: built
+    once per process while the files stay as they were. Only read (entries are copied where used)."""
+    entries: dict = {}
+    by_location: dict = {}
+    by_name: dict = {}
+    files_of: dict = {}
+    for location, f, key in files:
+        for cat in _catalog_tree(str(f), key).getroot().iterfind("Catalog"):
+            for item in cat:
+                if isinstance(item.tag, str) and item.get("name"):
+                    name = item.get("name")
+                    entries.setdefault((cat.get("name"), name), item)
+                    by_location.setdefault((location, name), item)
+                    by_name.setdefault(name, []).append(item)
+                    files_of[id(item)] = f
+    return entries, by_location, by_name, files_of
 
 
 def catalog_file(path: Path):
@@ -242,32 +266,68 @@ def _resolve_catalog_reference(path: Path, ref, scope: dict[str, str], catalogs:
         raise VeiInputError(path, f"line {ref.sourceline}", f"catalog references form a cycle: {chain}")
     if len(catalogs.active) >= MAX_CATALOG_DEPTH:
         raise VeiInputError(path, f"line {ref.sourceline}", f"catalog references nest deeper than {MAX_CATALOG_DEPTH}")
-    entry = copy.deepcopy(source)
-    entry.set(SOURCE_FILE, str(file))  # errors inside the entry name the catalog file, not the scenario
     assigned = {}
     for a in ref.iterfind("ParameterAssignments/ParameterAssignment"):
         assigned[a.get("parameterRef", "").lstrip("$")] = resolve_value(path, a, "value", a.get("value", ""), scope)
     local: dict[str, str] = {}
-    decls = entry.find("ParameterDeclarations")
+    decls = source.find("ParameterDeclarations")
     if decls is not None:
         for d in decls.iterfind("ParameterDeclaration"):
             name = d.get("name")
             local[name] = (
                 assigned[name] if name in assigned else resolve_value(file, d, "value", d.get("value", ""), local)
             )
-        entry.remove(decls)
     unknown = set(assigned) - set(local)
     if unknown:
         raise VeiInputError(
             path, f"line {ref.sourceline}", f"catalog entry has no parameter(s) {', '.join(sorted(unknown))}"
         )
+    merged = {**scope, **local}
+    named = _names_in(source)  # (None: it refers to other entries, whose parameters it passes on)
+    memo = None if named is None else (source, tuple((n, v) for n, v in merged.items() if "$" + n in named))
+    entry = _RESOLVED.get(memo) if memo is not None else None
+    if entry is not None:
+        ref.getparent().replace(ref, copy.deepcopy(entry))
+        return
+    entry = copy.deepcopy(source)
+    entry.set(SOURCE_FILE, str(file))  # errors inside the entry name the catalog file, not the scenario
+    if decls is not None:
+        entry.remove(entry.find("ParameterDeclarations"))
     catalogs.active.append(key)
     try:
-        _substitute(file, entry, {**scope, **local}, {}, catalogs)
+        _substitute(file, entry, merged, {}, catalogs)
         check_numbers(file, entry)
     finally:
         catalogs.active.pop()
+    if memo is not None:
+        if len(_RESOLVED) >= 4096:
+            _RESOLVED.clear()
+        _RESOLVED[memo] = copy.deepcopy(entry)
     ref.getparent().replace(ref, entry)
+
+
+#: Catalog entries resolved, per process: (entry, the values of the parameters its text names) -> the
+#: entry with them substituted and checked. A sweep resolves the same entries with the same values for
+#: most variants; the entries are those of the cached catalog index, kept while their files are.
+_RESOLVED: dict[tuple, object] = {}
+_NAMES: dict[object, str | None] = {}
+_UNREAD = object()
+
+
+def _names_in(source) -> str | None:
+    """Every attribute value of catalog entry ``source`` that refers to a parameter, joined (the names
+    its resolution reads are the ones that follow a ``$`` in it), or None when it holds a
+    CatalogReference (resolving it reads whatever the referenced entries name)."""
+    found = _NAMES.get(source, _UNREAD)
+    if found is _UNREAD:
+        if source.find(".//CatalogReference") is not None:
+            found = None
+        else:
+            found = " ".join(v for el in source.iter() for v in el.attrib.values() if "$" in v)
+        if len(_NAMES) >= 4096:
+            _NAMES.clear()
+        _NAMES[source] = found
+    return found
 
 
 def _substitute(path: Path, el, scope: dict[str, str], types: dict[str, str], catalogs: Catalogs | None = None) -> None:

@@ -29,6 +29,7 @@ from vei_scenario.interpreter.document import ScenarioDocument
 from vei_scenario.interpreter.entities import Entity
 from vei_scenario.interpreter.motion import advance_along, lane_keep
 from vei_scenario.interpreter.positions import ensure_lane
+from vei_scenario.interpreter.recording import Recording
 from vei_scenario.interpreter.shapes import placed_when_built, polyline_from
 from vei_scenario.interpreter.storyboard import Storyboard
 from vei_scenario.models.vehicle import VehicleLimits
@@ -328,15 +329,11 @@ class Simulation:
     def run(self) -> RunResult:
         ctx, dt = self.ctx, self.dt
         names = list(ctx.entities)
-        rows: dict[str, list[tuple]] = {n: [] for n in names}  # per step (x, y, yaw, speed, accel, status)
-        times: list[float] = []
+        recording = Recording([ctx.entities[n] for n in names])
         collisions: list[tuple[float, str, str]] = []
-        recorded = [(ctx.entities[n], rows[n].append) for n in names]
 
         def record() -> None:
-            times.append(ctx.t)
-            for e, append in recorded:
-                append((e.x, e.y, e.yaw, e.speed, e.accel, e.status))
+            recording.record(ctx.t)
 
         ctx.initializing = True
         for a in self.init_actions:
@@ -376,7 +373,7 @@ class Simulation:
             ):  # fmt: skip
                 if wait:
                     wait -= 1
-                elif cruise(ctx, board, entities, rows, times, self.max_time):
+                elif cruise(ctx, board, entities, recording, self.max_time):
                     continue  # (the core took this step's move and the quiet steps after it)
                 else:
                     wait = 4  # (not quiet now: look again in a few steps)
@@ -405,18 +402,18 @@ class Simulation:
             if self.storyboard.complete and self.storyboard.stop_trigger is None:
                 reason = "all stories complete"
                 break
-        t = np.array(times)
+        t, values = recording.arrays()
         traces = {}
-        for n in names:
-            e, r = ctx.entities[n], list(zip(*rows[n]))
+        for n, v, status in zip(names, values, recording.status):
+            e = ctx.entities[n]
             traces[n] = EntityTrace(
                 n,
                 e.category,
                 e.length,
                 e.width,
                 t,
-                *(np.array(v, dtype=float) for v in r[:5]),
-                list(r[5]),
+                *v,
+                status,
                 e.center_x,
                 e.kind,
                 e.object_type,

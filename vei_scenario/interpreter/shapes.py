@@ -12,6 +12,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from lxml import etree
 
 from vei_scenario.interpreter.entities import Polyline
 from vei_scenario.interpreter.positions import RESOLVED_ELSEWHERE, Pose, lane_of, number, oriented, resolve
@@ -77,12 +78,55 @@ def placed_when_built(traj) -> bool:
     return traj.find("Shape/ClothoidSpline") is None or any(True for _ in traj.iter("PositionStart"))
 
 
+#: Positions whose place depends on nothing but their own attributes and the road network.
+_FIXED_POSITIONS = frozenset({"WorldPosition", "LanePosition", "RoadPosition"})
+#: Trajectories of world positions built so far in this process: their XML -> the polyline (those on
+#: roads: in their network's memo). A sweep builds the same trajectories for most variants; a polyline
+#: is only read once built.
+_BUILT: dict[bytes, Polyline] = {}
+
+
 def polyline_from(el, ctx, place: bool = True, entity: str | None = None) -> Polyline:
     """A ``<Trajectory>``'s shape as a polyline (Polyline, Clothoid, ClothoidSpline); with ``place``
     False only the vertex times are read (positions relative to entities are placed when the action
     starts). A clothoid without a start position starts where ``entity`` is. ``closed`` adds the
     segment back to the first vertex of a Polyline; a curve (Nurbs, clothoids) closes, or not, by its
-    own definition, so the flag adds nothing to it."""
+    own definition, so the flag adds nothing to it.
+
+    A trajectory whose positions are all fixed (world, lane, road) is built once per process for its
+    XML and road network (tests/test_catalog_reuse.py)."""
+    built = _built(el, ctx) if place and entity is None and _fixed(el) else None
+    if built is None:
+        return _polyline(el, ctx, place, entity)
+    key = etree.tostring(el)
+    line = built.get(key)
+    if line is None:
+        line = _polyline(el, ctx, place, entity)
+        if len(built) >= 1024:
+            built.clear()
+        built[key] = line
+    return line
+
+
+def _built(el, ctx) -> dict | None:
+    """Where the polylines of trajectories like ``el`` are kept: its road network's memo when it has
+    positions on roads (None without a network: the build says why), else this process's."""
+    if next(el.iter("LanePosition", "RoadPosition"), None) is None:
+        return _BUILT
+    net = ctx.roads
+    return None if net is None else net.memo.setdefault("polylines", {})
+
+
+def _fixed(el) -> bool:
+    """Whether every position in trajectory ``el`` is fixed: its place read from itself (and roads)."""
+    for pos in el.iter("Position", "PositionStart"):
+        for child in pos:
+            if isinstance(child.tag, str) and child.tag not in _FIXED_POSITIONS and child.tag != "Position":
+                return False
+    return True
+
+
+def _polyline(el, ctx, place: bool, entity: str | None) -> Polyline:
     closed = el.get("closed", "false") in ("true", "1")
     shape = el.find("Shape")
     kind = first_element(shape) if shape is not None else None
