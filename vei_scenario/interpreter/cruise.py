@@ -23,22 +23,24 @@ import array
 import math
 from dataclasses import dataclass, field
 
-from vei_scenario.core import _core
+from vei_scenario.core import _core, layout
 from vei_scenario.interpreter.clock import step_time, step_times
 
-#: Core columns of a road user (core_module.c: CR_*).
-(_MODE, _S, _LANE, _OFFSET, _FORWARD, _HEADING, _X, _Y, _YAW, _CX, _LEN, _WID, _MOVE, _ALONG, _ODO, _SPEED, _LAST,
- _PROFILE, _PROFILE_V0, _PROFILE_V1, _PROFILE_T0, _PROFILE_DURATION, _TIME_BASE, _TIME_SCALE, _TIME_OFFSET,
- _TIME_END, _MAX_ACCEL, _MAX_DECEL, _ACCEL, _TOW, _HITCH, _COUPLER, _CHAIN) = range(33)  # fmt: skip
-_COLS = 33
+#: Core columns of a road user (core_module.c: ROAD_USER_COLUMNS).
+_ROAD_USER = layout("road_user")
+_COLS = len(_ROAD_USER)
+_MODE, _S, _LANE, _X, _Y, _YAW, _SPEED, _ODO, _PROFILE, _ACCEL = (
+    _ROAD_USER[n] for n in ("MODE", "S", "LANE", "X", "Y", "YAW", "SPEED", "ODOMETER", "PROFILE", "ACCEL")
+)
 #: A road user's mode in the core (core_module.c: MODE_*): straight on, its lane, its path, its timed
 #: path in position or in follow mode, towed; and what the interpreter records it doing in each.
 _STRAIGHT, _LANE_MODE, _PATH, _TIMED, _TIMED_FOLLOW, _TOWED = 0.0, 1.0, 2.0, 3.0, 4.0, 5.0
 _STATUS = {_TIMED: "replay", _TIMED_FOLLOW: "follow", _TOWED: "towed"}
 #: A running SpeedAction's transition shape as the core numbers it (core_module.c: SHAPE_*).
 _SHAPES = {"linear": 0.0, "cubic": 1.0, "sinusoidal": 2.0}
-#: Core columns of a synchronisation (core_module.c: SY_*).
-_SY_COLS = 14
+#: Core columns of a synchronisation and of a guard (core_module.c: SYNC_COLUMNS, GUARD_COLUMNS).
+_SY_COLS = len(layout("sync"))
+_GUARD = layout("guard")
 #: Most steps in one call of the core (the poses it returns for them are held in memory at once).
 CHUNK = 2000
 #: Fewest quiet steps worth a call (fewer: the ordinary step is as quick).
@@ -75,8 +77,10 @@ class QuietBounds:
         index = self.index
         if rule is None or quantity not in _GUARDED or name not in index or (other is not None and other not in index):
             return False
-        j = -1.0 if other is None else float(index[other])
-        self.guards.extend((float(index[name]), j, _GUARDED[quantity], float(rule), value))
+        row = [0.0] * len(_GUARD)
+        row[_GUARD["ENTITY"]], row[_GUARD["OTHER"]] = index[name], -1.0 if other is None else index[other]
+        row[_GUARD["QUANTITY"]], row[_GUARD["RULE"]], row[_GUARD["VALUE"]] = _GUARDED[quantity], rule, value
+        self.guards.extend(row)
         return True
 
 
@@ -97,6 +101,9 @@ def _columns(ctx, entities, synced: frozenset, turn: float) -> tuple[tuple, list
             continue
         f = e.follower
         p = e.speed_profile
+        row = {"X": e.x, "Y": e.y, "YAW": e.yaw, "CENTER_X": e.center_x, "LENGTH": e.length, "WIDTH": e.width}
+        row |= {"ODOMETER": e.odometer, "SPEED": e.speed, "LAST_MOVED": e.last_step_m, "ACCEL": e.accel}
+        row |= {"PROFILE": -1.0, "TOW": -1.0}
         if e.towed_by is not None:  # (pulled after everyone has moved, front to back)
             chain = _chain(ctx.entities, e)
             if chain is None or e.placed or p is not None or ctx.entities[e.towed_by].hitch_dx is None:
@@ -106,9 +113,8 @@ def _columns(ctx, entities, synced: frozenset, turn: float) -> tuple[tuple, list
             move = bounds.move[e.name] = reach * 1.05 + 1e-9
             bounds.along[e.name] = 0.0
             ways.append(None)
-            cols += [_TOWED] + [0.0] * 5 + [e.x, e.y, e.yaw, e.center_x, e.length, e.width, move, 0.0, e.odometer]
-            cols += [e.speed, e.last_step_m, -1.0] + [0.0] * 10 + [e.accel, float(index[tow.name]), tow.hitch_dx]
-            cols += [e.coupler_dx, float(chain)]
+            row |= {"MODE": _TOWED, "MAX_MOVE": move, "TOW": index[tow.name], "HITCH": tow.hitch_dx}
+            cols += _row(row | {"COUPLER": e.coupler_dx, "CHAIN": chain})
             continue
         if (
             e.placed or e.lateral is not None or e.find_lane or any(e.active.values())
@@ -117,24 +123,23 @@ def _columns(ctx, entities, synced: frozenset, turn: float) -> tuple[tuple, list
         ):  # fmt: skip
             return None
         st = e.lane
-        timing = [0.0, 0.0, 0.0, 0.0]
         if f is not None and _timed(e):  # along its timed path (its time moves it)
             ways.append(f.polyline.core)
-            mode = _TIMED if f.mode == "position" else _TIMED_FOLLOW
-            head = [mode, f.s, 0.0, 0.0, 0.0, 0.0]
             domain, scale, offset = f.timing
-            base = 0.0 if domain == "absolute" else f.t_start
-            end = f.polyline.ts[-1] if not f.finished(ctx.t, dt) else math.nan  # (NaN: its action is over)
-            timing = [base, scale, offset, end]
+            row |= {"MODE": _TIMED if f.mode == "position" else _TIMED_FOLLOW, "S": f.s, "TIME_SCALE": scale}
+            row["TIME_BASE"], row["TIME_OFFSET"] = 0.0 if domain == "absolute" else f.t_start, offset
+            row["TIME_END"] = f.polyline.ts[-1] if not f.finished(ctx.t, dt) else math.nan  # (NaN: action over)
+            row["MAX_ACCEL"], row["MAX_DECEL"] = e.limits.max_accel_mps2, e.limits.max_decel_mps2
         elif f is not None:  # along its path (an untimed one: the speed moves it)
             ways.append(f.polyline.core)
-            head = [_PATH, f.s, 0.0, 0.0, 1.0 if f.reverse else 0.0, 0.0]
+            row |= {"MODE": _PATH, "S": f.s, "FORWARD": 1.0 if f.reverse else 0.0}
         elif st is not None:
             ways.append(ctx.roads.road(st.road).core)
-            head = [_LANE_MODE, st.s, float(st.lane), st.offset, 1.0 if st.forward else 0.0, st.heading]
+            row |= {"MODE": _LANE_MODE, "S": st.s, "LANE": st.lane, "OFFSET": st.offset, "HEADING": st.heading}
+            row["FORWARD"] = 1.0 if st.forward else 0.0
         else:
             ways.append(None)
-            head = [_STRAIGHT] + [0.0] * 5
+            row["MODE"] = _STRAIGHT
         if e.name in synced or (f is not None and _timed(e)):
             # (a synchronisation's or a timed path's speed: bounded by the margin, the core stops past it)
             reach = (abs(e.speed) + SPEED_MARGIN_MPS) * dt
@@ -142,11 +147,12 @@ def _columns(ctx, entities, synced: frozenset, turn: float) -> tuple[tuple, list
             reach = max(abs(e.speed), abs(p.v0), abs(p.v1)) * dt
         else:
             reach = abs(e.speed * dt)
-        move = bounds.move[e.name] = reach * 1.05 + 1e-9
-        along = bounds.along[e.name] = reach * 1.3 + 1e-9
-        cols += head + [e.x, e.y, e.yaw, e.center_x, e.length, e.width, move, along, e.odometer, e.speed, e.last_step_m]
-        cols += [-1.0, 0.0, 0.0, 0.0, 0.0] if p is None else [_SHAPES[p.shape], p.v0, p.v1, p.t0, p.duration]
-        cols += timing + [e.limits.max_accel_mps2, e.limits.max_decel_mps2, e.accel, -1.0, 0.0, 0.0, 0.0]
+        row["MAX_MOVE"] = bounds.move[e.name] = reach * 1.05 + 1e-9
+        row["MAX_DS"] = bounds.along[e.name] = reach * 1.3 + 1e-9
+        if p is not None:
+            row |= {"PROFILE": _SHAPES[p.shape], "PROFILE_V0": p.v0, "PROFILE_V1": p.v1}
+            row["PROFILE_T0"], row["PROFILE_DURATION"] = p.t0, p.duration
+        cols += _row(row)
     return tuple(ways), cols, bounds
 
 
@@ -162,13 +168,18 @@ def _chain(entities: dict, trailer) -> int | None:
     return depth
 
 
+def _row(values: dict[str, float]) -> list[float]:
+    """A road user's core columns from their values by name (the others 0)."""
+    row = [0.0] * _COLS
+    for name, value in values.items():
+        row[_ROAD_USER[name]] = value
+    return row
+
+
 def _absent(e) -> list[float]:
     """The columns of a road user that is not there (deleted): it neither moves nor has a transition,
     and the core's poses repeat where it was left."""
-    cols = [0.0] * _COLS
-    cols[_MODE] = cols[_PROFILE] = -1.0
-    cols[_X], cols[_Y], cols[_YAW], cols[_SPEED], cols[_ACCEL] = e.x, e.y, e.yaw, e.speed, e.accel
-    return cols
+    return _row({"MODE": -1.0, "PROFILE": -1.0, "X": e.x, "Y": e.y, "YAW": e.yaw, "SPEED": e.speed, "ACCEL": e.accel})
 
 
 def _timed(e) -> bool:

@@ -28,6 +28,7 @@ from __future__ import annotations
 
 import math
 
+from vei_scenario.core import layout
 from vei_scenario.interpreter.action_base import SteppedLongitudinal, entity_ref
 from vei_scenario.interpreter.positions import Pose, ensure_lane
 from vei_scenario.interpreter.positions import resolve as resolve_position
@@ -43,6 +44,8 @@ ON_LINE_SPEED_TOLERANCE = 0.1
 #: The profile's modes and submodes, numbered as the core numbers them (core_module.c: SM_*, SS_*).
 _MODES = ("none", "waiting", "steady", "stop now", "stopped", "linear", "non-linear")
 _SUBMODES = ("none", "convex", "concave")
+#: A synchronisation's columns in the core (core_module.c: SYNC_COLUMNS).
+_COLUMNS = layout("sync")
 
 
 class Synchronize(SteppedLongitudinal):
@@ -210,18 +213,23 @@ class Synchronize(SteppedLongitudinal):
                     programs += [float(leave_forward), float(arrive_forward), len(middle), *middle]
             else:
                 return None
-        final = self._final_speed(ctx) if self.final is not None else math.nan
-        steady = self.steady_dist if self.steady is not None else math.nan
-        return [
-            index[self.entity], index[self.master], goals[0], goals[2], self.tolerance, self.tolerance_master, final,
-            steady, _MODES.index(self.mode), _SUBMODES.index(self.submode), self.last_dist, self.last_master_dist,
-            goals[1], goals[3],
-        ]  # fmt: skip
+        values = {
+            "ENTITY": index[self.entity], "MASTER": index[self.master], "GOAL": goals[0], "PROGRAM": goals[1],
+            "MASTER_GOAL": goals[2], "MASTER_PROGRAM": goals[3], "TOL": self.tolerance,
+            "TOL_MASTER": self.tolerance_master, "MODE": _MODES.index(self.mode),
+            "SUBMODE": _SUBMODES.index(self.submode), "LAST": self.last_dist, "LAST_MASTER": self.last_master_dist,
+            "FINAL": self._final_speed(ctx) if self.final is not None else math.nan,
+            "STEADY": self.steady_dist if self.steady is not None else math.nan,
+        }  # fmt: skip
+        row = [0.0] * len(_COLUMNS)
+        for name, value in values.items():
+            row[_COLUMNS[name]] = value
+        return row
 
     def take_core_columns(self, cols) -> None:
         """The state the core's steps left this synchronisation in."""
-        self.mode, self.submode = _MODES[int(cols[8])], _SUBMODES[int(cols[9])]
-        self.last_dist, self.last_master_dist = cols[10], cols[11]
+        self.mode, self.submode = _MODES[int(cols[_COLUMNS["MODE"]])], _SUBMODES[int(cols[_COLUMNS["SUBMODE"]])]
+        self.last_dist, self.last_master_dist = cols[_COLUMNS["LAST"]], cols[_COLUMNS["LAST_MASTER"]]
 
     def _profile_speed(self, v0: float, s: float, t: float, v1: float, dt: float) -> float:
         """The speed for the coming step of a profile that covers ``s`` in ``t`` ending at ``v1``."""

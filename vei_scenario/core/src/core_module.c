@@ -726,10 +726,16 @@ static PyObject *overlapping(PyObject *mod, PyObject *arg)
  * the path's last time) and the road user's acceleration limits, the step's acceleration, and a towed
  * trailer's tow (its row), the tow's hitch, the trailer's coupler and its place in the chain (1: behind
  * a tow that is not towed itself) */
-enum { CR_MODE, CR_S, CR_LANE, CR_OFFSET, CR_FORWARD, CR_HEADING, CR_X, CR_Y, CR_YAW, CR_CENTER_X, CR_LENGTH,
-       CR_WIDTH, CR_MAX_MOVE, CR_MAX_DS, CR_ODOMETER, CR_SPEED, CR_LAST_MOVED, CR_PROFILE, CR_PROFILE_V0,
-       CR_PROFILE_V1, CR_PROFILE_T0, CR_PROFILE_DURATION, CR_TIME_BASE, CR_TIME_SCALE, CR_TIME_OFFSET,
-       CR_TIME_END, CR_MAX_ACCEL, CR_MAX_DECEL, CR_ACCEL, CR_TOW, CR_HITCH, CR_COUPLER, CR_CHAIN, CR_COLS };
+/* (each table's columns are listed once: their names reach Python as _core.CRUISE_LAYOUT, which
+ * interpreter/cruise.py and synchronize.py build and read the columns by) */
+#define ROAD_USER_COLUMNS(F)                                                                                    \
+    F(MODE) F(S) F(LANE) F(OFFSET) F(FORWARD) F(HEADING) F(X) F(Y) F(YAW) F(CENTER_X) F(LENGTH) F(WIDTH)        \
+    F(MAX_MOVE) F(MAX_DS) F(ODOMETER) F(SPEED) F(LAST_MOVED) F(PROFILE) F(PROFILE_V0) F(PROFILE_V1)            \
+    F(PROFILE_T0) F(PROFILE_DURATION) F(TIME_BASE) F(TIME_SCALE) F(TIME_OFFSET) F(TIME_END) F(MAX_ACCEL)       \
+    F(MAX_DECEL) F(ACCEL) F(TOW) F(HITCH) F(COUPLER) F(CHAIN)
+#define CR_ENUM(name) CR_##name,
+enum { ROAD_USER_COLUMNS(CR_ENUM) CR_COLS };
+#define COLUMN_NAME(name) #name,
 /* the modes */
 enum { MODE_STRAIGHT, MODE_LANE, MODE_PATH, MODE_TIMED, MODE_TIMED_FOLLOW, MODE_TOWED };
 /* a running SpeedAction's transition (entities.SpeedProfile): its shape (-1: none) */
@@ -757,8 +763,11 @@ static int profile_speed(const double *e, double t, double t_next, double *v)
 /* a running SynchronizeAction (interpreter/synchronize.py), whose distances are along the path or
  * road each party stays on (|goal s - s|) or, with a program (its offset, else -1), over the chains of
  * roads from the party's road to the goal's */
-enum { SY_ENTITY, SY_MASTER, SY_GOAL, SY_MASTER_GOAL, SY_TOL, SY_TOL_MASTER, SY_FINAL, SY_STEADY, SY_MODE,
-       SY_SUBMODE, SY_LAST, SY_LAST_MASTER, SY_PROGRAM, SY_MASTER_PROGRAM, SY_COLS };
+#define SYNC_COLUMNS(F)                                                                                         \
+    F(ENTITY) F(MASTER) F(GOAL) F(MASTER_GOAL) F(TOL) F(TOL_MASTER) F(FINAL) F(STEADY) F(MODE) F(SUBMODE)     \
+    F(LAST) F(LAST_MASTER) F(PROGRAM) F(MASTER_PROGRAM)
+#define SY_ENUM(name) SY_##name,
+enum { SYNC_COLUMNS(SY_ENUM) SY_COLS };
 /* Synchronize.mode and .submode */
 enum { SM_NONE, SM_WAITING, SM_STEADY, SM_STOP_NOW, SM_STOPPED, SM_LINEAR, SM_NON_LINEAR };
 enum { SS_NONE, SS_CONVEX, SS_CONCAVE };
@@ -1054,7 +1063,9 @@ static int cruise_move(PyObject *way, const double *e, double t, double max_turn
 
 /* a guard of a quiet stretch (cruise.QuietBounds.guard): road user, the road user whose value is
  * subtracted (-1: none), what is compared, the comparison (conditions.RULE_CODES) and its value */
-enum { GD_ENTITY, GD_OTHER, GD_QUANTITY, GD_RULE, GD_VALUE, GD_COLS };
+#define GUARD_COLUMNS(F) F(ENTITY) F(OTHER) F(QUANTITY) F(RULE) F(VALUE)
+#define GD_ENUM(name) GD_##name,
+enum { GUARD_COLUMNS(GD_ENUM) GD_COLS };
 enum { GQ_SPEED, GQ_ACCEL };
 enum { RULE_GT, RULE_LT, RULE_GE, RULE_LE, RULE_EQ, RULE_NE };
 
@@ -1283,6 +1294,23 @@ static PyMethodDef module_methods[] = {
 static struct PyModuleDef core_module = {PyModuleDef_HEAD_INIT, "_core", "vei-scenario's compiled core.", -1,
                                          module_methods};
 
+/* the names of a table's columns, in order (NULL-terminated), as a tuple of str */
+static PyObject *names_tuple(const char *const *names)
+{
+    Py_ssize_t n = 0;
+    while (names[n]) n++;
+    PyObject *t = PyTuple_New(n);
+    for (Py_ssize_t i = 0; t && i < n; i++) {
+        PyObject *name = PyUnicode_FromString(names[i]);
+        if (!name) {
+            Py_CLEAR(t);
+            break;
+        }
+        PyTuple_SET_ITEM(t, i, name);
+    }
+    return t;
+}
+
 PyMODINIT_FUNC PyInit__core(void)
 {
     if (PyType_Ready(&RoadType) < 0 || PyType_Ready(&PolylineType) < 0 || PyType_Ready(&RiderType) < 0) return NULL;
@@ -1291,9 +1319,16 @@ PyMODINIT_FUNC PyInit__core(void)
     Py_INCREF(&RoadType);
     Py_INCREF(&PolylineType);
     Py_INCREF(&RiderType);
-    if (PyModule_AddObject(m, "Road", (PyObject *)&RoadType) < 0 ||
+    static const char *const road_user[] = {ROAD_USER_COLUMNS(COLUMN_NAME) NULL};
+    static const char *const sync[] = {SYNC_COLUMNS(COLUMN_NAME) NULL};
+    static const char *const guard[] = {GUARD_COLUMNS(COLUMN_NAME) NULL};
+    PyObject *layout = Py_BuildValue("{s:N,s:N,s:N}", "road_user", names_tuple(road_user), "sync", names_tuple(sync),
+                                     "guard", names_tuple(guard));
+    if (!layout || PyModule_AddObject(m, "CRUISE_LAYOUT", layout) < 0 ||
+        PyModule_AddObject(m, "Road", (PyObject *)&RoadType) < 0 ||
         PyModule_AddObject(m, "Polyline", (PyObject *)&PolylineType) < 0 ||
         PyModule_AddObject(m, "Rider", (PyObject *)&RiderType) < 0) {
+        Py_XDECREF(layout);
         Py_DECREF(m);
         return NULL;
     }
