@@ -116,14 +116,15 @@ def _columns(ctx, entities, synced: frozenset, turn: float) -> tuple[tuple, list
             row |= {"MODE": _TOWED, "MAX_MOVE": move, "TOW": index[tow.name], "HITCH": tow.hitch_dx}
             cols += _row(row | {"COUPLER": e.coupler_dx, "CHAIN": chain})
             continue
+        timed = _timed(e)
         if (
             e.placed or e.lateral is not None or e.find_lane or any(e.active.values())
             or (f is not None and f.polyline.xs is None)
-            or (p is not None and (e.name in synced or p.shape not in _SHAPES or _timed(e)))
+            or (p is not None and (e.name in synced or p.shape not in _SHAPES or timed))
         ):  # fmt: skip
             return None
         st = e.lane
-        if f is not None and _timed(e):  # along its timed path (its time moves it)
+        if timed:  # along its timed path (its time moves it)
             ways.append(f.polyline.core)
             domain, scale, offset = f.timing
             row |= {"MODE": _TIMED if f.mode == "position" else _TIMED_FOLLOW, "S": f.s, "TIME_SCALE": scale}
@@ -140,7 +141,7 @@ def _columns(ctx, entities, synced: frozenset, turn: float) -> tuple[tuple, list
         else:
             ways.append(None)
             row["MODE"] = _STRAIGHT
-        if e.name in synced or (f is not None and _timed(e)):
+        if e.name in synced or timed:
             # (a synchronisation's or a timed path's speed: bounded by the margin, the core stops past it)
             reach = (abs(e.speed) + SPEED_MARGIN_MPS) * dt
         elif p is not None:  # (a transition's speed lies between where it is and where it ends)
@@ -293,24 +294,25 @@ def cruise(ctx, storyboard, entities: list, recording, max_time: float) -> int:
     statuses = [_STATUS.get(state[i * _COLS + _MODE], "default") if not e.deleted else "deleted"
                 for i, e in enumerate(entities)]  # fmt: skip
     recording.record_core(step_times(step0 + 1, step0 + 1 + n, dt), poses, statuses)
-    _commit(ctx, entities, memoryview(poses).cast("d"), state, n)
+    _commit(ctx, entities, memoryview(poses).cast("d"), state, statuses, n)
     ctx.step = step0 + n
     ctx.t = step_time(ctx.step, dt)
     return n
 
 
-def _commit(ctx, entities: list, poses, state, n: int) -> None:
-    """The road users as the core left them after ``n`` steps."""
+def _commit(ctx, entities: list, poses, state, statuses: list[str], n: int) -> None:
+    """The road users as the core left them after ``n`` steps (``statuses``: what each was doing)."""
     k = len(entities)
     for i, e in enumerate(entities):
         col = state[i * _COLS : (i + 1) * _COLS]
+        e.status = statuses[i]
         if e.deleted:
-            e.status, e.last_step_m = "deleted", 0.0
+            e.last_step_m = 0.0
             continue
         last = 6 * (n - 1) * k + 6 * i
         e.step_speed = poses[last - 6 * k + 4] if n > 1 else e.speed  # (the speed the last step began at)
         e.x, e.y, e.yaw, e.speed = col[_X], col[_Y], col[_YAW], col[_SPEED]
-        e.accel, e.status = poses[last + 5], _STATUS.get(col[_MODE], "default")
+        e.accel = poses[last + 5]
         e.last_step_m, e.odometer = poses[last + 3], col[_ODO]
         if e.follower is not None:
             e.follower.s = col[_S]

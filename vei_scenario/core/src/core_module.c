@@ -346,11 +346,14 @@ static PyObject *Polyline_at_time(PolylineObject *self, PyObject *const *args, P
     return xyh(x, y, h);
 }
 
+/* the arc length at trajectory time t (a single vertex: 0, wherever the time) */
+static double s_at_time(const VeiPolyline *p, double t) { return p->n == 1 ? 0.0 : vei_polyline_s_at_time(p, t); }
+
 static PyObject *Polyline_s_at_time(PolylineObject *self, PyObject *const *args, Py_ssize_t nargs)
 {
     if (!args_ok(nargs, 1, "s_at_time") || !timed_ok(self)) return NULL;
     ARG_D(0, t);
-    return PyFloat_FromDouble(self->p.n == 1 ? 0.0 : vei_polyline_s_at_time(&self->p, t));
+    return PyFloat_FromDouble(s_at_time(&self->p, t));
 }
 
 static PyObject *Polyline_project(PolylineObject *self, PyObject *const *args, Py_ssize_t nargs)
@@ -974,7 +977,7 @@ static int timed_move(const VeiPolyline *p, const double *e, double t, double dt
 {
     if (timed_done(e, t, dt)) return 0;
     double tt = (t + dt - e[CR_TIME_BASE]) * e[CR_TIME_SCALE] + e[CR_TIME_OFFSET];
-    double target = p->n == 1 ? 0.0 : vei_polyline_s_at_time(p, tt);
+    double target = s_at_time(p, tt);
     if (e[CR_MODE] == MODE_TIMED) {
         double speed = (target - e[CR_S]) / dt;
         vei_polyline_at_time(p, tt, &next[CR_X], &next[CR_Y], &next[CR_YAW]);
@@ -997,6 +1000,14 @@ static int timed_move(const VeiPolyline *p, const double *e, double t, double dt
     return 1;
 }
 
+/* whether a road user's step from e to next stays within its bounds: moved no further than its
+ * largest move, turned no more than max_turn */
+static int within_bounds(const double *e, const double *next, double max_turn)
+{
+    double turn = fabs(remainder(next[CR_YAW] - e[CR_YAW], 2 * M_PI));
+    return hypot(next[CR_X] - e[CR_X], next[CR_Y] - e[CR_Y]) <= e[CR_MAX_MOVE] && turn <= max_turn;
+}
+
 /* trailers.pull: a towed trailer (e, next) after its tow has moved (tow: the tow's next columns), its
  * axle drawn towards the hitch at the coupler's distance; 0 when it moves or turns more than the bounds */
 static int towed_move(const double *e, const double *tow, double dt, double max_turn, double *next)
@@ -1010,8 +1021,7 @@ static int towed_move(const double *e, const double *tow, double dt, double max_
     next[CR_Y] = hy - coupler * sin(yaw);
     next[CR_ACCEL] = (tow[CR_SPEED] - e[CR_SPEED]) / dt;
     next[CR_SPEED] = tow[CR_SPEED];
-    double turn = fabs(remainder(yaw - e[CR_YAW], 2 * M_PI));
-    return hypot(next[CR_X] - e[CR_X], next[CR_Y] - e[CR_Y]) <= e[CR_MAX_MOVE] && turn <= max_turn;
+    return within_bounds(e, next, max_turn);
 }
 
 /* one road user's next pose keeping its lane, driving straight on or along its path, timed or not (the
@@ -1057,8 +1067,7 @@ static int cruise_move(PyObject *way, const double *e, double t, double max_turn
     } else if (fabs(next[CR_S] - e[CR_S]) > e[CR_MAX_DS]) {
         return 0;
     }
-    double turn = fabs(remainder(next[CR_YAW] - e[CR_YAW], 2 * M_PI));
-    return hypot(next[CR_X] - e[CR_X], next[CR_Y] - e[CR_Y]) <= e[CR_MAX_MOVE] && turn <= max_turn;
+    return within_bounds(e, next, max_turn);
 }
 
 /* a guard of a quiet stretch (cruise.QuietBounds.guard): road user, the road user whose value is
