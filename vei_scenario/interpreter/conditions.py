@@ -380,6 +380,9 @@ class RelativeDistance(_EntityCondition):
         return self.cmp(self.measure(ctx, ctx.entities[name], ctx.entities[self.target]), self.value)
 
     def steady_for(self, ctx: Context, name: str, bounds) -> int:
+        # the core works the distance out every step (not alongRoad: lanes and roads are the interpreter's)
+        if bounds.guard_distance(self.kind, self.freespace, name, self.target, RULE_CODES.get(self.cmp), self.value):
+            return STEADY
         a, b = ctx.entities[name], ctx.entities[self.target]
         rate = _distance_rate(self.kind, self.freespace, a, b, bounds)
         return _distance_steps(self.cmp, self.measure(ctx, a, b), self.value, rate, bounds)
@@ -430,6 +433,10 @@ class Distance(_EntityCondition):
             return 0
         e, p = ctx.entities[name], self.target(ctx)
         d, kind = self.measure(ctx, e, p)
+        if kind != "alongRoad" and bounds.guard_distance(
+            kind, self.freespace, name, None, RULE_CODES.get(self.cmp), self.value, point=p
+        ):
+            return STEADY
         return _distance_steps(self.cmp, d, self.value, _distance_rate(kind, self.freespace, e, p, bounds), bounds)
 
 

@@ -52,8 +52,13 @@ TURN_RATE = 0.3
 SPEED_MARGIN_MPS = 2.0
 
 
-#: What a guard compares (core_module.c: GQ_*).
-_GUARDED = {"speed": 0.0, "accel": 1.0}
+#: What a guard compares (core_module.c: GUARD_QUANTITIES), by the names the conditions use.
+_GUARDED = {name.lower(): float(code) for name, code in layout("guard_quantity").items()}
+#: The distances the core works out (conditions._relative's kinds; OpenSCENARIO 1.0 spelt one euclidian).
+_DISTANCES = {"cartesianDistance": "cartesian", "euclidianDistance": "cartesian", "euclideanDistance": "cartesian",
+              "longitudinal": "longitudinal", "lateral": "lateral"}  # fmt: skip
+#: The comparisons (conditions.RULE_CODES) a distance guard takes: an order, not an equality.
+_ORDERS = frozenset((0, 1, 2, 3))
 
 
 @dataclass(frozen=True)
@@ -74,12 +79,35 @@ class QuietBounds:
         ``name`` (less ``other``'s) compares with ``value`` by ``rule`` (core_module.c: RULE_*, the
         conditions' comparisons) otherwise than it does now: how a condition on a quantity that
         changes every step holds through a quiet stretch. False when the core cannot watch it."""
+        if quantity not in ("speed", "accel") or rule is None:
+            return False
+        return self._add(quantity, name, other, rule, value, {})
+
+    def guard_distance(self, kind: str, freespace: bool, name: str, other: str | None, rule: int | None,
+                       value: float, point=None) -> bool:  # fmt: skip
+        """Have the core stop before a step after which the distance of ``kind`` (conditions._relative's:
+        cartesian, longitudinal or lateral in ``name``'s frame; ``freespace``: between the boxes) from
+        road user ``name`` to road user ``other`` (or to the fixed ``point``, with x, y, yaw) compares
+        with ``value`` by ``rule`` otherwise than it does now. The core works the distance out again, so
+        it also stops before a step that leaves it within a micrometre of ``value``, where the last bits
+        of its arithmetic and the interpreter's could disagree. False when the core cannot watch it."""
+        quantity = _DISTANCES.get(kind)
+        if quantity is None or rule not in _ORDERS or (other is None and point is None):
+            return False
+        extra = {"FREESPACE": 1.0 if freespace else 0.0}
+        if point is not None:
+            extra |= {"POINT_X": point.x, "POINT_Y": point.y, "POINT_YAW": point.yaw}
+        return self._add(quantity, name, other, rule, value, extra)
+
+    def _add(self, quantity: str, name: str, other: str | None, rule: int, value: float, extra: dict) -> bool:
         index = self.index
-        if rule is None or quantity not in _GUARDED or name not in index or (other is not None and other not in index):
+        if name not in index or (other is not None and other not in index):
             return False
         row = [0.0] * len(_GUARD)
         row[_GUARD["ENTITY"]], row[_GUARD["OTHER"]] = index[name], -1.0 if other is None else index[other]
         row[_GUARD["QUANTITY"]], row[_GUARD["RULE"]], row[_GUARD["VALUE"]] = _GUARDED[quantity], rule, value
+        for column, v in extra.items():
+            row[_GUARD[column]] = v
         self.guards.extend(row)
         return True
 

@@ -1070,13 +1070,22 @@ static int cruise_move(PyObject *way, const double *e, double t, double max_turn
     return within_bounds(e, next, max_turn);
 }
 
-/* a guard of a quiet stretch (cruise.QuietBounds.guard): road user, the road user whose value is
- * subtracted (-1: none), what is compared, the comparison (conditions.RULE_CODES) and its value */
-#define GUARD_COLUMNS(F) F(ENTITY) F(OTHER) F(QUANTITY) F(RULE) F(VALUE)
+/* a guard of a quiet stretch (cruise.QuietBounds.guard, .guard_distance): road user, the other road user (-1:
+ * none; for a distance, the point POINT_X/Y/YAW instead), what is compared, the comparison (conditions.RULE_CODES)
+ * and its value; a distance's freespace flag (between boxes, not reference points) */
+#define GUARD_COLUMNS(F) F(ENTITY) F(OTHER) F(QUANTITY) F(RULE) F(VALUE) F(FREESPACE) F(POINT_X) F(POINT_Y) F(POINT_YAW)
 #define GD_ENUM(name) GD_##name,
 enum { GUARD_COLUMNS(GD_ENUM) GD_COLS };
-enum { GQ_SPEED, GQ_ACCEL };
+/* speed and acceleration (less the other's) are the interpreter's own columns, compared exactly; distances
+ * (conditions._relative) are recomputed here, so they are compared with a margin (GUARD_MARGIN_M) */
+#define GUARD_QUANTITIES(F) F(SPEED) F(ACCEL) F(CARTESIAN) F(LONGITUDINAL) F(LATERAL)
+#define GQ_ENUM(name) GQ_##name,
+enum { GUARD_QUANTITIES(GQ_ENUM) GQ_COUNT };
 enum { RULE_GT, RULE_LT, RULE_GE, RULE_LE, RULE_EQ, RULE_NE };
+/* How near its threshold (m) a distance the core works out is taken as undecided: the interpreter's own
+ * (conditions._relative: Python's hypot, numpy's boxes) may differ from it in the last bits, so the core stops
+ * before a step that leaves a distance within this of its threshold and the interpreter decides the step. */
+#define GUARD_MARGIN_M 1e-6
 
 /* conditions.RULES: a comparison of a with b (equality within 1e-9, relative) */
 static int rule_holds(int rule, double a, double b)
@@ -1092,12 +1101,72 @@ static int rule_holds(int rule, double a, double b)
     }
 }
 
-static int guard_holds(const double *g, const double *st)
+/* the distance from point (px, py) to box b (0 inside) */
+static double point_box_distance(double px, double py, const VeiBox *b)
 {
-    int col = (int)g[GD_QUANTITY] == GQ_ACCEL ? CR_ACCEL : CR_SPEED;
+    double c = cos(b->yaw), s = sin(b->yaw), dx = px - b->x, dy = py - b->y;
+    double ox = fabs(c * dx + s * dy) - 0.5 * b->length, oy = fabs(-s * dx + c * dy) - 0.5 * b->width;
+    return hypot(ox > 0 ? ox : 0.0, oy > 0 ? oy : 0.0);
+}
+
+/* models.boxes.box_distance: the shortest distance between two boxes (0 where they touch): two disjoint convex
+ * polygons are closest at a corner of one of them */
+static double box_gap(const VeiBox *a, const VeiBox *b)
+{
+    if (vei_boxes_overlap(a, b)) return 0.0;
+    double best = INFINITY;
+    for (int k = 0; k < 2; k++) {
+        const VeiBox *p = k ? b : a, *q = k ? a : b;
+        double c = cos(p->yaw), s = sin(p->yaw), hl = 0.5 * p->length, hw = 0.5 * p->width;
+        for (int corner = 0; corner < 4; corner++) {
+            double lx = corner == 0 || corner == 3 ? hl : -hl, ly = corner < 2 ? hw : -hw;
+            double d = point_box_distance(p->x + c * lx - s * ly, p->y + s * lx + c * ly, q);
+            if (d < best) best = d;
+        }
+    }
+    return best;
+}
+
+/* conditions._relative's distance between road user g[ENTITY] and g[OTHER] (or the guard's point) */
+static double guard_distance(const double *g, const double *st)
+{
+    const double *a = st + (Py_ssize_t)g[GD_ENTITY] * CR_COLS;
+    int freespace = g[GD_FREESPACE] != 0, kind = (int)g[GD_QUANTITY];
+    VeiBox ba = entity_box(a[CR_X], a[CR_Y], a[CR_YAW], a[CR_CENTER_X], a[CR_LENGTH], a[CR_WIDTH]), bb;
+    double bx, by;
+    if (g[GD_OTHER] >= 0) {
+        const double *b = st + (Py_ssize_t)g[GD_OTHER] * CR_COLS;
+        bb = entity_box(b[CR_X], b[CR_Y], b[CR_YAW], b[CR_CENTER_X], b[CR_LENGTH], b[CR_WIDTH]);
+        bx = b[CR_X], by = b[CR_Y];
+    } else {
+        bb = (VeiBox){g[GD_POINT_X], g[GD_POINT_Y], g[GD_POINT_YAW], 0.0, 0.0};
+        bx = bb.x, by = bb.y;
+    }
+    double rx = freespace ? bb.x - ba.x : bx - a[CR_X], ry = freespace ? bb.y - ba.y : by - a[CR_Y];
+    if (kind == GQ_CARTESIAN) return freespace ? box_gap(&ba, &bb) : hypot(rx, ry);
+    double c = cos(ba.yaw), s = sin(ba.yaw), dc = fabs(cos(bb.yaw - ba.yaw)), ds = fabs(sin(bb.yaw - ba.yaw)), d, half;
+    if (kind == GQ_LONGITUDINAL)
+        d = c * rx + s * ry, half = 0.5 * (ba.length + bb.length * dc + bb.width * ds);
+    else
+        d = -s * rx + c * ry, half = 0.5 * (ba.width + bb.width * dc + bb.length * ds);
+    d = fabs(d) - (freespace ? half : 0.0);
+    return d > 0 ? d : 0.0;
+}
+
+/* what a guard says of state st: 1 or 2 (a speed's comparison false or true), or for a distance 1 below its
+ * threshold, 3 above it, 0 within the margin (undecided) */
+static int guard_state(const double *g, const double *st)
+{
+    int quantity = (int)g[GD_QUANTITY];
+    if (quantity >= GQ_CARTESIAN) {
+        double d = guard_distance(g, st), value = g[GD_VALUE];
+        double margin = GUARD_MARGIN_M + 1e-9 * fabs(value);
+        return d > value + margin ? 3 : d < value - margin ? 1 : 0;
+    }
+    int col = quantity == GQ_ACCEL ? CR_ACCEL : CR_SPEED;
     double q = st[(Py_ssize_t)g[GD_ENTITY] * CR_COLS + col];
     if (g[GD_OTHER] >= 0) q -= st[(Py_ssize_t)g[GD_OTHER] * CR_COLS + col];
-    return rule_holds((int)g[GD_RULE], q, g[GD_VALUE]);
+    return 1 + rule_holds((int)g[GD_RULE], q, g[GD_VALUE]);
 }
 
 /* cruise(ways, state, syncs, programs, guards, times, max_turn, dt, hypot) -> (n, poses, state, syncs): up to n_max steps
@@ -1163,6 +1232,10 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
             PyErr_SetString(PyExc_ValueError, "cruise: a guard names road users that are not there");
             return NULL;
         }
+        if (!(g[GD_QUANTITY] >= 0 && g[GD_QUANTITY] < GQ_COUNT && g[GD_RULE] >= RULE_GT && g[GD_RULE] <= RULE_NE)) {
+            PyErr_SetString(PyExc_ValueError, "cruise: a guard compares a quantity or by a rule the core does not know");
+            return NULL;
+        }
     }
     const double *sy0 = (const double *)PyBytes_AS_STRING(syncs);
     for (Py_ssize_t k = 0; k < n_sync; k++) {
@@ -1181,9 +1254,10 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
     double *cur = PyMem_Malloc(sizeof(double) * (CR_COLS * m * 2 + SY_COLS * (size_t)(n_sync + 1) * 2));
     VeiBox *box = PyMem_Malloc(sizeof(VeiBox) * m);
     int *pairs = PyMem_Malloc(sizeof(int) * m * m * 2);
+    int *first = PyMem_Malloc(sizeof(int) * (size_t)(n_guards + 1)); /* what each guard says at the start */
     PyObject *poses = PyBytes_FromStringAndSize(NULL, (Py_ssize_t)(sizeof(double) * 6 * m * (size_t)n_max));
-    if (!cur || !box || !pairs || !poses) {
-        PyMem_Free(cur), PyMem_Free(box), PyMem_Free(pairs);
+    if (!cur || !box || !pairs || !first || !poses) {
+        PyMem_Free(cur), PyMem_Free(box), PyMem_Free(pairs), PyMem_Free(first);
         Py_XDECREF(poses);
         return PyErr_NoMemory();
     }
@@ -1195,6 +1269,7 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
     memcpy(sync, sy0, sync_bytes);
     Py_ssize_t k0, k1;
     cruise_pairs(cur, n, box, pairs0, &k0);
+    for (Py_ssize_t k = 0; k < n_guards; k++) first[k] = guard_state(guards + k * GD_COLS, cur);
     long done = 0;
     int failed = 0;
     for (; done < n_max; done++) {
@@ -1215,7 +1290,7 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
                     quiet = towed_move(e, next + (Py_ssize_t)e[CR_TOW] * CR_COLS, dt, max_turn, next + i * CR_COLS);
             }
         for (Py_ssize_t k = 0; k < n_guards && quiet; k++)
-            quiet = guard_holds(guards + k * GD_COLS, next) == guard_holds(guards + k * GD_COLS, cur);
+            quiet = first[k] != 0 && guard_state(guards + k * GD_COLS, next) == first[k];
         if (!quiet) break;
         cruise_pairs(next, n, box, pairs1, &k1);
         if (k1 != k0 || memcmp(pairs0, pairs1, sizeof(int) * (size_t)k0) != 0) break;
@@ -1249,7 +1324,7 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
                                (const char *)sync, (Py_ssize_t)sync_bytes);
     else if (failed)
         Py_DECREF(poses);
-    PyMem_Free(cur), PyMem_Free(box), PyMem_Free(pairs);
+    PyMem_Free(cur), PyMem_Free(box), PyMem_Free(pairs), PyMem_Free(first);
     return result;
 }
 
@@ -1331,8 +1406,9 @@ PyMODINIT_FUNC PyInit__core(void)
     static const char *const road_user[] = {ROAD_USER_COLUMNS(COLUMN_NAME) NULL};
     static const char *const sync[] = {SYNC_COLUMNS(COLUMN_NAME) NULL};
     static const char *const guard[] = {GUARD_COLUMNS(COLUMN_NAME) NULL};
-    PyObject *layout = Py_BuildValue("{s:N,s:N,s:N}", "road_user", names_tuple(road_user), "sync", names_tuple(sync),
-                                     "guard", names_tuple(guard));
+    static const char *const quantity[] = {GUARD_QUANTITIES(COLUMN_NAME) NULL};
+    PyObject *layout = Py_BuildValue("{s:N,s:N,s:N,s:N}", "road_user", names_tuple(road_user), "sync", names_tuple(sync),
+                                     "guard", names_tuple(guard), "guard_quantity", names_tuple(quantity));
     if (!layout || PyModule_AddObject(m, "CRUISE_LAYOUT", layout) < 0 ||
         PyModule_AddObject(m, "Road", (PyObject *)&RoadType) < 0 ||
         PyModule_AddObject(m, "Polyline", (PyObject *)&PolylineType) < 0 ||
