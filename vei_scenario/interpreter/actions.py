@@ -202,6 +202,17 @@ class LaneChange(Action):
     def stop(self, ctx) -> None:
         ctx.entities[self.entity].lateral = None
 
+    def carried(self, ctx) -> bool:
+        return _lateral_carried(ctx, self.entity)
+
+
+def _lateral_carried(ctx, entity: str) -> bool:
+    """A lane change or lane offset under way: the core shifts its entity sideways as the runtime
+    would (cruise._lateral says where it can) and stops before the step that completes it, whose
+    evaluation would end the action."""
+    rt = ctx.entities[entity].lateral
+    return rt is not None and rt.fraction < 1.0
+
 
 def _lane_exists(net, road_id: str, lane: int, ref_where: tuple[str, int]) -> bool:
     """Whether ``lane`` exists on the reference's road (``ref_where``) in any lane section — a lane
@@ -261,6 +272,9 @@ class LaneOffset(Action):
 
     def stop(self, ctx) -> None:
         ctx.entities[self.entity].lateral = None
+
+    def carried(self, ctx) -> bool:
+        return _lateral_carried(ctx, self.entity)
 
 
 class AssignRoute(Action):

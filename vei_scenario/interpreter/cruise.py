@@ -32,6 +32,7 @@ _COLS = len(_ROAD_USER)
 _MODE, _S, _LANE, _X, _Y, _YAW, _SPEED, _ODO, _PROFILE, _ACCEL = (
     _ROAD_USER[n] for n in ("MODE", "S", "LANE", "X", "Y", "YAW", "SPEED", "ODOMETER", "PROFILE", "ACCEL")
 )
+_OFFSET, _FRACTION, _PREV_X, _PREV_Y = (_ROAD_USER[n] for n in ("OFFSET", "LAT_FRACTION", "PREV_X", "PREV_Y"))
 #: A road user's mode in the core (core_module.c: MODE_*): straight on, its lane, its path, its timed
 #: path in position or in follow mode, towed; and what the interpreter records it doing in each.
 _STRAIGHT, _LANE_MODE, _PATH, _TIMED, _TIMED_FOLLOW, _TOWED = 0.0, 1.0, 2.0, 3.0, 4.0, 5.0
@@ -145,8 +146,9 @@ def _columns(ctx, entities, synced: frozenset, turn: float) -> tuple[tuple, list
             cols += _row(row | {"COUPLER": e.coupler_dx, "CHAIN": chain})
             continue
         timed = _timed(e)
+        lateral = _lateral(ctx, e) if e.lateral is not None else {}
         if (
-            e.placed or e.lateral is not None or e.find_lane or any(e.active.values())
+            e.placed or lateral is None or e.find_lane or any(e.active.values())
             or (f is not None and f.polyline.xs is None)
             or (p is not None and (e.name in synced or p.shape not in _SHAPES or timed))
         ):  # fmt: skip
@@ -176,6 +178,10 @@ def _columns(ctx, entities, synced: frozenset, turn: float) -> tuple[tuple, list
             reach = max(abs(e.speed), abs(p.v0), abs(p.v1)) * dt
         else:
             reach = abs(e.speed * dt)
+        if lateral:  # (and sideways: the offset's change, at the steepest a shape has, and lanes widening)
+            step = dt if lateral["LAT_BY_TIME"] else reach
+            reach += (abs(lateral["LAT_START_REL"] - lateral["LAT_TARGET_OFFSET"]) * 1.6 + 0.1) * step / e.lateral.value
+            row |= lateral
         row["MAX_MOVE"] = bounds.move[e.name] = reach * 1.05 + 1e-9
         row["MAX_DS"] = bounds.along[e.name] = reach * 1.3 + 1e-9
         if p is not None:
@@ -183,6 +189,32 @@ def _columns(ctx, entities, synced: frozenset, turn: float) -> tuple[tuple, list
             row["PROFILE_T0"], row["PROFILE_DURATION"] = p.t0, p.duration
         cols += _row(row)
     return tuple(ways), cols, bounds
+
+
+def _lateral(ctx, e) -> dict[str, float] | None:
+    """The core columns of ``e``'s running lane change or lane offset (actions.LaneChangeRuntime), or
+    None when the core does not take it: off a lane, a step shape, already complete, or a target lane
+    section whose span the core would not read as the runtime does."""
+    rt, st = e.lateral, e.lane
+    if st is None or e.follower is not None or rt.shape not in _SHAPES or not rt.value > 0:
+        return None
+    if rt.start_rel is None or rt.fraction >= 1.0 or rt.dimension not in ("time", "distance"):
+        return None
+    road = ctx.roads.road(st.road)
+    lo, hi = -math.inf, math.inf  # (LaneChangeRuntime._t: the target's centre held within its section)
+    where = rt.target_where
+    if where is not None and where[0] == road.id and where[1] < len(road.sections):
+        lo, hi = road.section_span(where[1])
+        if road.section_index(lo) != where[1] or road.section_index(hi) != where[1]:
+            return None
+    prev = rt.prev_xy if rt.prev_xy is not None else (math.nan, math.nan)
+    return {
+        "LATERAL": 1.0, "LAT_SHAPE": _SHAPES[rt.shape], "LAT_BY_TIME": 1.0 if rt.dimension == "time" else 0.0,
+        "LAT_VALUE": rt.value, "LAT_T0": rt.t0, "LAT_ODO0": rt.odo0, "LAT_AHEAD": float(rt.steps_ahead),
+        "LAT_PROJECTS": 1.0 if rt.projects_step else 0.0, "LAT_TARGET_LANE": float(rt.target_lane),
+        "LAT_TARGET_OFFSET": rt.target_offset, "LAT_START_REL": rt.start_rel, "LAT_LO": lo, "LAT_HI": hi,
+        "LAT_FRACTION": rt.fraction, "PREV_X": prev[0], "PREV_Y": prev[1],
+    }  # fmt: skip
 
 
 def _chain(entities: dict, trailer) -> int | None:
@@ -346,6 +378,9 @@ def _commit(ctx, entities: list, poses, state, statuses: list[str], n: int) -> N
             e.follower.s = col[_S]
         elif e.lane is not None:
             e.lane.s, e.lane.lane = col[_S], int(col[_LANE])
+            if e.lateral is not None:  # (a lane change or offset under way)
+                e.lane.offset, e.lateral.fraction = col[_OFFSET], col[_FRACTION]
+                e.lateral.prev_xy = None if math.isnan(col[_PREV_X]) else (col[_PREV_X], col[_PREV_Y])
         if e.towed_by is not None:  # (trailers.pull: a trailer's standstill is not counted)
             continue
         if abs(e.speed) < 1e-9:

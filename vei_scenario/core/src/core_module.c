@@ -728,14 +728,21 @@ static PyObject *overlapping(PyObject *mod, PyObject *arg)
  * SpeedAction's transition, a timed path's timing (PathFollower.trajectory_time: base, scale, offset;
  * the path's last time) and the road user's acceleration limits, the step's acceleration, and a towed
  * trailer's tow (its row), the tow's hitch, the trailer's coupler and its place in the chain (1: behind
- * a tow that is not towed itself) */
+ * a tow that is not towed itself); a running lane change or lane offset (actions.LaneChangeRuntime): its
+ * shape (SHAPE_*), whether its progress is by time (else by distance), its length in that, start time and
+ * odometer, the steps ahead its progress is taken at, whether only the along-road part of a step moves s,
+ * the target lane, its offset, where it started from the target lane's centre, the target lane section's
+ * span (the target's centre is taken within it), its progress so far, and the position it headed from
+ * (NaN: none yet) */
 /* (each table's columns are listed once: their names reach Python as _core.CRUISE_LAYOUT, which
  * interpreter/cruise.py and synchronize.py build and read the columns by) */
 #define ROAD_USER_COLUMNS(F)                                                                                    \
     F(MODE) F(S) F(LANE) F(OFFSET) F(FORWARD) F(HEADING) F(X) F(Y) F(YAW) F(CENTER_X) F(LENGTH) F(WIDTH)        \
     F(MAX_MOVE) F(MAX_DS) F(ODOMETER) F(SPEED) F(LAST_MOVED) F(PROFILE) F(PROFILE_V0) F(PROFILE_V1)            \
     F(PROFILE_T0) F(PROFILE_DURATION) F(TIME_BASE) F(TIME_SCALE) F(TIME_OFFSET) F(TIME_END) F(MAX_ACCEL)       \
-    F(MAX_DECEL) F(ACCEL) F(TOW) F(HITCH) F(COUPLER) F(CHAIN)
+    F(MAX_DECEL) F(ACCEL) F(TOW) F(HITCH) F(COUPLER) F(CHAIN) F(LATERAL) F(LAT_SHAPE) F(LAT_BY_TIME)           \
+    F(LAT_VALUE) F(LAT_T0) F(LAT_ODO0) F(LAT_AHEAD) F(LAT_PROJECTS) F(LAT_TARGET_LANE) F(LAT_TARGET_OFFSET)    \
+    F(LAT_START_REL) F(LAT_LO) F(LAT_HI) F(LAT_FRACTION) F(PREV_X) F(PREV_Y)
 #define CR_ENUM(name) CR_##name,
 enum { ROAD_USER_COLUMNS(CR_ENUM) CR_COLS };
 #define COLUMN_NAME(name) #name,
@@ -744,6 +751,14 @@ enum { MODE_STRAIGHT, MODE_LANE, MODE_PATH, MODE_TIMED, MODE_TIMED_FOLLOW, MODE_
 /* a running SpeedAction's transition (entities.SpeedProfile): its shape (-1: none) */
 enum { SHAPE_LINEAR, SHAPE_CUBIC, SHAPE_SINUSOIDAL };
 
+/* transition_fraction: how far a transition of shape SHAPE_* has come at progress x */
+static double shape_fraction(double shape, double x)
+{
+    if (shape == SHAPE_CUBIC) return x * x * (3 - 2 * x);
+    if (shape == SHAPE_SINUSOIDAL) return 0.5 * (1 - cos(M_PI * x));
+    return x;
+}
+
 /* SpeedProfile.speed at the end of a step from t to t_next (the engine's t + dt): the speed in *v, 0
  * when the transition ends in the step or its action would end after it (SpeedAction.update: the
  * interpreter's steps) */
@@ -751,14 +766,10 @@ static int profile_speed(const double *e, double t, double t_next, double *v)
 {
     double t0 = e[CR_PROFILE_T0], duration = e[CR_PROFILE_DURATION];
     if (!(duration > 0) || t >= t0 + duration - 1e-9) return 0;
-    double x = (t_next - t0) / duration, f;
+    double x = (t_next - t0) / duration;
     if (0.0 > x) x = 0.0; /* (Python's min(max(x, 0.0), 1.0)) */
-    if (1.0 < x) x = 1.0;
     if (x >= 1.0) return 0;
-    int shape = (int)e[CR_PROFILE];
-    if (shape == SHAPE_CUBIC) f = x * x * (3 - 2 * x);
-    else if (shape == SHAPE_SINUSOIDAL) f = 0.5 * (1 - cos(M_PI * x));
-    else f = x;
+    double f = shape_fraction(e[CR_PROFILE], x);
     *v = e[CR_PROFILE_V0] + (e[CR_PROFILE_V1] - e[CR_PROFILE_V0]) * f;
     return 1;
 }
@@ -1029,6 +1040,52 @@ static int towed_move(const double *e, const double *tow, double dt, double max_
  * branch); 0 when the step is not a quiet one (off its road or lane, to its path's end or its timed
  * path's action's, further or more turned than the bounds, starting or ending a standstill). next holds
  * the step's speed already (a timed path sets its own). */
+/* whether hypot's h may lie on the other side of threshold than Python's math.hypot puts it (the two
+ * may differ in the last bit): the interpreter then takes the step */
+static int near_threshold(double h, double threshold) { return fabs(h - threshold) <= threshold * 1e-12; }
+
+/* motion.lane_keep with a running lane change or lane offset (LaneChangeRuntime.offset and .heading), on
+ * one road in one lane: 0 (not quiet) where the step leaves either, or where its transition completes */
+static int lateral_step(const vr_road *r, const double *e, double t, double ds, double dt, double *next)
+{
+    int lane = (int)e[CR_LANE], forward = e[CR_FORWARD] != 0.0;
+    double stretch, s1, out[4], c_target, c_here;
+    if (vr_lane_stretch(r, e[CR_S], lane, e[CR_OFFSET], &stretch) < 0) return 0;
+    if (e[CR_LAT_PROJECTS] != 0.0) { /* only the along-road part of the step moves s */
+        double ref[3];
+        vr_ref_pose(r, e[CR_S], ref);
+        ds *= fabs(cos(e[CR_YAW] - (ref[2] + (forward ? 0.0 : M_PI))));
+    }
+    s1 = e[CR_S] + (forward ? ds : -ds) / stretch;
+    if (s1 > r->length || s1 < 0.0 || vr_lane_on(r, e[CR_S], s1, lane, 1) != lane) return 0;
+    double done = e[CR_LAT_BY_TIME] != 0.0 ? t + e[CR_LAT_AHEAD] * dt - e[CR_LAT_T0] : e[CR_ODOMETER] - e[CR_LAT_ODO0];
+    double x = done / e[CR_LAT_VALUE];
+    x = x > 0.0 ? x : 0.0;
+    if (x >= 1.0) return 0; /* (it completes: the interpreter's step, and its action's end) */
+    double f = shape_fraction(e[CR_LAT_SHAPE], x), s_in = fmin(fmax(s1, e[CR_LAT_LO]), e[CR_LAT_HI]);
+    if (vr_lane_center_t(r, s_in, (int)e[CR_LAT_TARGET_LANE], &c_target) < 0 || vr_lane_center_t(r, s1, lane, &c_here) < 0)
+        return 0;
+    double offset = c_target + (1 - f) * e[CR_LAT_START_REL] + f * e[CR_LAT_TARGET_OFFSET] - c_here;
+    if (vr_lane_pose(r, s1, lane, offset, out) < 0) return 0;
+    double base = forward ? out[2] : out[2] + M_PI, moved = hypot(out[0] - e[CR_X], out[1] - e[CR_Y]);
+    if (near_threshold(moved, 1e-9)) return 0;
+    next[CR_S] = s1, next[CR_OFFSET] = offset, next[CR_LAT_FRACTION] = x;
+    next[CR_X] = out[0], next[CR_Y] = out[1];
+    next[CR_YAW] = atan2(sin(base + e[CR_HEADING]), cos(base + e[CR_HEADING]));
+    if (moved > 1e-9) { /* it heads where it moves (from where it last headed from) */
+        double px = e[CR_PREV_X], py = e[CR_PREV_Y];
+        next[CR_PREV_X] = out[0], next[CR_PREV_Y] = out[1];
+        if (isnan(px)) {
+            next[CR_YAW] = base;
+        } else {
+            double dx = out[0] - px, dy = out[1] - py, h = hypot(dx, dy);
+            if (near_threshold(h, 1e-6)) return 0;
+            next[CR_YAW] = h > 1e-6 ? atan2(dy, dx) : base;
+        }
+    }
+    return 1;
+}
+
 static int cruise_move(PyObject *way, const double *e, double t, double max_turn, double dt, double *next)
 {
     double mode = e[CR_MODE];
@@ -1043,6 +1100,8 @@ static int cruise_move(PyObject *way, const double *e, double t, double max_turn
     if (mode == MODE_STRAIGHT) {
         next[CR_X] = e[CR_X] + ds * cos(e[CR_YAW]);
         next[CR_Y] = e[CR_Y] + ds * sin(e[CR_YAW]);
+    } else if (mode == MODE_LANE && e[CR_LATERAL] != 0.0) {
+        if (!lateral_step(&((RoadObject *)way)->r, e, t, ds, dt, next) || fabs(next[CR_S] - e[CR_S]) > e[CR_MAX_DS]) return 0;
     } else if (mode == MODE_LANE) {
         int lane = (int)e[CR_LANE], lane1, forward = e[CR_FORWARD] != 0.0;
         double s1, out[4];
