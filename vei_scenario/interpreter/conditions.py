@@ -5,7 +5,9 @@ A new condition is one class and one line in ``VALUE_CONDITIONS`` or ``ENTITY_CO
 Each condition also knows for how many steps its value cannot change while the road users cruise
 (:mod:`vei_scenario.interpreter.cruise`: along its lane or path, each step bounded by
 :class:`~vei_scenario.interpreter.cruise.QuietBounds`, whose ``varying`` names those whose speed
-changes): ``steady_steps``, 0 where it cannot tell."""
+changes): ``steady_steps``, 0 where it cannot tell. A comparison the core can work out every step (a
+speed, an acceleration, a distance between road users or to a fixed point) is handed to it as a guard
+instead, and holds for as long as the core runs."""
 
 from __future__ import annotations
 

@@ -1,19 +1,19 @@
-"""Quiet steps handed to the core in one call: while every road user keeps its lane, drives straight on
-or follows a path (an untimed one at its speed or at the speed its running SynchronizeAction or
-SpeedAction transition sets; a timed one as its time says), and no trigger can fire, a step is only
-motion, and the core takes many at once.
+"""Quiet steps handed to the core in one call: while every road user keeps its lane (shifting sideways
+in a running lane change or lane offset), drives straight on or follows a path (an untimed one at its
+speed or at the speed its running SynchronizeAction or SpeedAction transition sets; a timed one as its
+time says), and no trigger can fire, a step is only motion, and the core takes many at once.
 
 The storyboard stays in charge. After a step's evaluation in which nothing started or ended, each
 watched condition says for how many steps its value cannot change while the road users cruise within
 :class:`QuietBounds` (``steady_steps``: a time still ahead, a distance that cannot be covered, a value
-only an action sets; a comparison of a speed or an acceleration that changes is a guard the core
-watches); the triggers say which of those evaluations would fire (delays and edges included); every
+only an action sets; a comparison of a speed, an acceleration or a distance that changes is a guard the
+core watches); the triggers say which of those evaluations would fire (delays and edges included); every
 running action says whether the core carries it (``Action.carried``); the core (``_core.cruise``: the
 same lane keeping, path following, timed playing, synchronisation profile and transition as a single
 step's) moves everyone that many steps, and stops early before any step that leaves the bounds, a road,
-a lane or a path, ends a synchronisation, a transition or a timed path's action, changes what a guard
-compares, starts or ends a standstill, or changes which boxes touch. The steps it took are recorded
-as the interpreter records its own, bit for bit (tests/test_cruise.py, tests/test_cruise_sync.py), and
+a lane or a path, ends a synchronisation, a transition, a lane change or a timed path's action, changes
+what a guard compares, starts or ends a standstill, or changes which boxes touch. The steps it took are
+recorded as the interpreter records its own, bit for bit (tests/test_cruise*.py), and
 the conditions and actions account for the evaluations that were not run.
 """
 
