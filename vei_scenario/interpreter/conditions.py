@@ -14,6 +14,7 @@ from __future__ import annotations
 import math
 import operator
 
+from vei_scenario.core import layout
 from vei_scenario.interpreter.context import Context
 from vei_scenario.models.angles import wrap_angle
 from vei_scenario.models.boxes import box_distance, time_to_contact
@@ -39,8 +40,12 @@ RULES = {
 }
 
 
-#: Each comparison as the core numbers it (core_module.c: RULE_*), for the guards of a quiet stretch.
-RULE_CODES = {operator.gt: 0, operator.lt: 1, operator.ge: 2, operator.le: 3, _equal: 4, _not_equal: 5}
+#: Each comparison as the core numbers it (core_module.c: RULES), for the guards of a quiet stretch.
+RULE_CODES = {
+    cmp: layout("rule")[name]
+    for cmp, name in ((operator.gt, "GT"), (operator.lt, "LT"), (operator.ge, "GE"), (operator.le, "LE"),
+                      (_equal, "EQ"), (_not_equal, "NE"))
+}  # fmt: skip
 
 
 def comparator(rule: str):

@@ -35,10 +35,12 @@ _MODE, _S, _LANE, _X, _Y, _YAW, _SPEED, _ODO, _PROFILE, _ACCEL = (
 _OFFSET, _FRACTION, _PREV_X, _PREV_Y = (_ROAD_USER[n] for n in ("OFFSET", "LAT_FRACTION", "PREV_X", "PREV_Y"))
 #: A road user's mode in the core (core_module.c: MODE_*): straight on, its lane, its path, its timed
 #: path in position or in follow mode, towed; and what the interpreter records it doing in each.
-_STRAIGHT, _LANE_MODE, _PATH, _TIMED, _TIMED_FOLLOW, _TOWED = 0.0, 1.0, 2.0, 3.0, 4.0, 5.0
+_STRAIGHT, _LANE_MODE, _PATH, _TIMED, _TIMED_FOLLOW, _TOWED = (
+    float(layout("mode")[n]) for n in ("STRAIGHT", "LANE", "PATH", "TIMED", "TIMED_FOLLOW", "TOWED")
+)
 _STATUS = {_TIMED: "replay", _TIMED_FOLLOW: "follow", _TOWED: "towed"}
-#: A running SpeedAction's transition shape as the core numbers it (core_module.c: SHAPE_*).
-_SHAPES = {"linear": 0.0, "cubic": 1.0, "sinusoidal": 2.0}
+#: A transition's shape (a SpeedAction's, a lane change's) as the core numbers it (core_module.c: SHAPES).
+_SHAPES = {name.lower(): float(code) for name, code in layout("shape").items()}
 #: Core columns of a synchronisation and of a guard (core_module.c: SYNC_COLUMNS, GUARD_COLUMNS).
 _SY_COLS = len(layout("sync"))
 _GUARD = layout("guard")
@@ -59,7 +61,7 @@ _GUARDED = {name.lower(): float(code) for name, code in layout("guard_quantity")
 _DISTANCES = {"cartesianDistance": "cartesian", "euclidianDistance": "cartesian", "euclideanDistance": "cartesian",
               "longitudinal": "longitudinal", "lateral": "lateral"}  # fmt: skip
 #: The comparisons (conditions.RULE_CODES) a distance guard takes: an order, not an equality.
-_ORDERS = frozenset((0, 1, 2, 3))
+_ORDERS = frozenset(layout("rule")[n] for n in ("GT", "LT", "GE", "LE"))
 
 
 @dataclass(frozen=True)

@@ -201,8 +201,10 @@ static PyObject *Road_lane_on(RoadObject *self, PyObject *const *args, Py_ssize_
 /* A lane-keeping step of `ds` metres along the lane that stays on the road: the new s and lane and
  * the pose there (vr_lane_pose's). 1: done; 0: it would leave the road; -1: no such lane (*lane1:
  * which). Road.lane_advance and the cruise both take their steps here. */
-static int lane_step(const vr_road *r, double s, int lane, double offset, double ds, int forward, double *s1,
-                     int *lane1, double *out4)
+/* motion.lane_keep's move along the road: the s ds metres on along lane (at offset) and the lane there; 0
+ * where it leaves the road, -1 without the lane */
+static int lane_advance_s(const vr_road *r, double s, int lane, double offset, double ds, int forward, double *s1,
+                          int *lane1)
 {
     double stretch;
     *lane1 = lane;
@@ -210,6 +212,14 @@ static int lane_step(const vr_road *r, double s, int lane, double offset, double
     *s1 = s + (forward ? ds : -ds) / stretch;
     if (*s1 > r->length || *s1 < 0.0) return 0;
     *lane1 = vr_lane_on(r, s, *s1, lane, 1);
+    return 1;
+}
+
+static int lane_step(const vr_road *r, double s, int lane, double offset, double ds, int forward, double *s1,
+                     int *lane1, double *out4)
+{
+    int done = lane_advance_s(r, s, lane, offset, ds, forward, s1, lane1);
+    if (done != 1) return done;
     return vr_lane_pose(r, *s1, *lane1, offset, out4) < 0 ? -1 : 1;
 }
 
@@ -747,9 +757,13 @@ static PyObject *overlapping(PyObject *mod, PyObject *arg)
 enum { ROAD_USER_COLUMNS(CR_ENUM) CR_COLS };
 #define COLUMN_NAME(name) #name,
 /* the modes */
-enum { MODE_STRAIGHT, MODE_LANE, MODE_PATH, MODE_TIMED, MODE_TIMED_FOLLOW, MODE_TOWED };
+#define MODES(F) F(STRAIGHT) F(LANE) F(PATH) F(TIMED) F(TIMED_FOLLOW) F(TOWED)
+#define MODE_ENUM(name) MODE_##name,
+enum { MODES(MODE_ENUM) };
 /* a running SpeedAction's transition (entities.SpeedProfile): its shape (-1: none) */
-enum { SHAPE_LINEAR, SHAPE_CUBIC, SHAPE_SINUSOIDAL };
+#define SHAPES(F) F(LINEAR) F(CUBIC) F(SINUSOIDAL)
+#define SHAPE_ENUM(name) SHAPE_##name,
+enum { SHAPES(SHAPE_ENUM) };
 
 /* transition_fraction: how far a transition of shape SHAPE_* has come at progress x */
 static double shape_fraction(double shape, double x)
@@ -1048,16 +1062,14 @@ static int near_threshold(double h, double threshold) { return fabs(h - threshol
  * one road in one lane: 0 (not quiet) where the step leaves either, or where its transition completes */
 static int lateral_step(const vr_road *r, const double *e, double t, double ds, double dt, double *next)
 {
-    int lane = (int)e[CR_LANE], forward = e[CR_FORWARD] != 0.0;
-    double stretch, s1, out[4], c_target, c_here;
-    if (vr_lane_stretch(r, e[CR_S], lane, e[CR_OFFSET], &stretch) < 0) return 0;
+    int lane = (int)e[CR_LANE], lane1, forward = e[CR_FORWARD] != 0.0;
+    double s1, out[4], c_target, c_here;
     if (e[CR_LAT_PROJECTS] != 0.0) { /* only the along-road part of the step moves s */
         double ref[3];
         vr_ref_pose(r, e[CR_S], ref);
         ds *= fabs(cos(e[CR_YAW] - (ref[2] + (forward ? 0.0 : M_PI))));
     }
-    s1 = e[CR_S] + (forward ? ds : -ds) / stretch;
-    if (s1 > r->length || s1 < 0.0 || vr_lane_on(r, e[CR_S], s1, lane, 1) != lane) return 0;
+    if (lane_advance_s(r, e[CR_S], lane, e[CR_OFFSET], ds, forward, &s1, &lane1) != 1 || lane1 != lane) return 0;
     double done = e[CR_LAT_BY_TIME] != 0.0 ? t + e[CR_LAT_AHEAD] * dt - e[CR_LAT_T0] : e[CR_ODOMETER] - e[CR_LAT_ODO0];
     double x = done / e[CR_LAT_VALUE];
     x = x > 0.0 ? x : 0.0;
@@ -1140,7 +1152,10 @@ enum { GUARD_COLUMNS(GD_ENUM) GD_COLS };
 #define GUARD_QUANTITIES(F) F(SPEED) F(ACCEL) F(CARTESIAN) F(LONGITUDINAL) F(LATERAL)
 #define GQ_ENUM(name) GQ_##name,
 enum { GUARD_QUANTITIES(GQ_ENUM) GQ_COUNT };
-enum { RULE_GT, RULE_LT, RULE_GE, RULE_LE, RULE_EQ, RULE_NE };
+/* conditions.RULE_CODES: greaterThan, lessThan, greaterOrEqual, lessOrEqual, equalTo, notEqualTo */
+#define RULES(F) F(GT) F(LT) F(GE) F(LE) F(EQ) F(NE)
+#define RULE_ENUM(name) RULE_##name,
+enum { RULES(RULE_ENUM) };
 /* How near its threshold (m) a distance the core works out is taken as undecided: the interpreter's own
  * (conditions._relative: Python's hypot, numpy's boxes) may differ from it in the last bits, so the core stops
  * before a step that leaves a distance within this of its threshold and the interpreter decides the step. */
@@ -1466,8 +1481,12 @@ PyMODINIT_FUNC PyInit__core(void)
     static const char *const sync[] = {SYNC_COLUMNS(COLUMN_NAME) NULL};
     static const char *const guard[] = {GUARD_COLUMNS(COLUMN_NAME) NULL};
     static const char *const quantity[] = {GUARD_QUANTITIES(COLUMN_NAME) NULL};
-    PyObject *layout = Py_BuildValue("{s:N,s:N,s:N,s:N}", "road_user", names_tuple(road_user), "sync", names_tuple(sync),
-                                     "guard", names_tuple(guard), "guard_quantity", names_tuple(quantity));
+    static const char *const mode[] = {MODES(COLUMN_NAME) NULL}, *const shape[] = {SHAPES(COLUMN_NAME) NULL};
+    static const char *const rule[] = {RULES(COLUMN_NAME) NULL};
+    PyObject *layout = Py_BuildValue("{s:N,s:N,s:N,s:N,s:N,s:N,s:N}", "road_user", names_tuple(road_user), "sync",
+                                     names_tuple(sync), "guard", names_tuple(guard), "guard_quantity",
+                                     names_tuple(quantity), "mode", names_tuple(mode), "shape", names_tuple(shape),
+                                     "rule", names_tuple(rule));
     if (!layout || PyModule_AddObject(m, "CRUISE_LAYOUT", layout) < 0 ||
         PyModule_AddObject(m, "Road", (PyObject *)&RoadType) < 0 ||
         PyModule_AddObject(m, "Polyline", (PyObject *)&PolylineType) < 0 ||
