@@ -48,6 +48,9 @@ _GUARD = layout("guard")
 CHUNK = 2000
 #: Fewest quiet steps worth a call (fewer: the ordinary step is as quick).
 MIN_STEPS = 3
+#: Steps the engine takes before offering the core a stretch again after the storyboard or the road
+#: users' motion refused one.
+RETRY_STEPS = 4
 #: How fast (rad/s) a road user may turn in a quiet stretch watched by a condition that reads turning.
 TURN_RATE = 0.3
 #: How much faster (m/s) than now a road user whose speed a synchronisation sets may go in a quiet
@@ -312,7 +315,9 @@ def steps_left(ctx, max_time: float) -> int:
 
 def cruise(ctx, storyboard, entities: list, recording, max_time: float) -> int:
     """Take this step's move and as many quiet steps after it as nothing can happen in, in the core;
-    record them. The number of steps taken (0: none, the step goes on as usual)."""
+    record them. The number of steps taken (0: none, the step goes on as usual); ``ctx.cruise_wait``:
+    the steps to let pass before the next offer."""
+    ctx.cruise_wait = RETRY_STEPS  # (not quiet now: a few steps later it may be)
     triggers = storyboard.watching()
     if triggers is None:
         return 0
@@ -345,8 +350,15 @@ def cruise(ctx, storyboard, entities: list, recording, max_time: float) -> int:
                f64("d", bounds.guards).tobytes())  # fmt: skip
     clock = f64("d", step_times(step0, step0 + skipped + 1, dt)).tobytes()  # (each step's start)
     n, poses, state, sync_state = _core.cruise(ways, *columns, clock, bounds.turn, dt, math.hypot)
+    # The core stops before a step that is not quiet (an action ending, a guard's comparison turning):
+    # the interpreter takes that one, and the steps after it are offered again at once, unless the
+    # core has refused the first step before (a state that lasts, such as a distance on its threshold).
     if n == 0:
+        ctx.core_refusals += 1
+        ctx.cruise_wait = 0 if ctx.core_refusals == 1 else RETRY_STEPS
         return 0
+    ctx.core_refusals = 0
+    ctx.cruise_wait = 1 if n < skipped + 1 else 0  # (stopped early: the next step is the one it stopped before)
     for c in runners:
         c.skip(StepTimes(step0, dt, n - 1), held[c])
     sync_state = memoryview(sync_state).cast("d")

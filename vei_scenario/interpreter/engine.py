@@ -374,9 +374,10 @@ class Simulation:
                 if wait:
                     wait -= 1
                 elif cruise(ctx, board, entities, recording, self.max_time):
+                    wait = ctx.cruise_wait
                     continue  # (the core took this step's move and the quiet steps after it)
                 else:
-                    wait = 4  # (not quiet now: look again in a few steps)
+                    wait = ctx.cruise_wait  # (not quiet now: look again when it may be)
             if pending:  # Init actions still acting (a done one never acts again)
                 for a in pending:
                     if not a.done:

@@ -6,6 +6,7 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 static double GL_X[24], GL_W[24];
 
@@ -29,6 +30,31 @@ static int last_at_or_before(const double *rows, int n, int stride, double v)
     return lo - 1;
 }
 
+
+/* p * u^3 as Python's p * u ** 3 gives it (pow), without pow where p is 0 (constant widths and
+ * straight offsets: p * u has the same sign and value, for any u whose cube is finite) */
+static double cubic_term(double p, double u)
+{
+    return (p == 0.0 && fabs(u) < 1e100) ? p * u : p * pow(u, 3.0);
+}
+
+/* cos and sin of an angle, the last few remembered: on a straight road every pose asks for its
+ * geometry's heading (the same libm calls give the same bits; road geometry runs under the GIL) */
+static double memo_angle[4] = {NAN, NAN, NAN, NAN}, memo_cos[4], memo_sin[4];
+static int memo_next;
+
+static void cos_sin(double a, double *c, double *s)
+{
+    for (int i = 0; i < 4; i++)
+        if (memcmp(&memo_angle[i], &a, sizeof a) == 0) {
+            *c = memo_cos[i], *s = memo_sin[i];
+            return;
+        }
+    *c = cos(a), *s = sin(a);
+    memo_angle[memo_next] = a, memo_cos[memo_next] = *c, memo_sin[memo_next] = *s;
+    memo_next = (memo_next + 1) & 3;
+}
+
 static double cubic_at(const double *polys, int n, double s)
 {
     if (n == 0) return 0.0;
@@ -36,7 +62,7 @@ static double cubic_at(const double *polys, int n, double s)
     if (k < 0) return 0.0;
     const double *p = polys + 5 * k;
     double u = s - p[0];
-    return p[1] + p[2] * u + p[3] * u * u + p[4] * pow(u, 3.0);
+    return p[1] + p[2] * u + p[3] * u * u + cubic_term(p[4], u);
 }
 
 /* numpy.interp on a sorted table: clamped at both ends */
@@ -60,7 +86,8 @@ void vr_geometry_pose(const vr_road *r, int k, double ds, double *out)
     const double *g = r->geom + (long)k * VR_G_COLS;
     const double *p = g + VR_G_P0;
     double x0 = g[VR_G_X], y0 = g[VR_G_Y], hdg = g[VR_G_HDG];
-    double c = cos(hdg), s_ = sin(hdg);
+    double c, s_;
+    cos_sin(hdg, &c, &s_);
     int kind = (int)g[VR_G_KIND];
     if (kind == VR_LINE || (kind == VR_ARC && fabs(p[0]) < 1e-12)) {
         out[0] = x0 + ds * c;
@@ -96,12 +123,12 @@ void vr_geometry_pose(const vr_road *r, int k, double ds, double *out)
     double u, v, du, dv;
     if (kind == VR_POLY3) {
         u = q;
-        v = p[0] + p[1] * q + p[2] * q * q + p[3] * pow(q, 3.0);
+        v = p[0] + p[1] * q + p[2] * q * q + cubic_term(p[3], q);
         du = 1.0;
         dv = p[1] + 2 * p[2] * q + 3 * p[3] * q * q;
     } else {
-        u = p[0] + p[1] * q + p[2] * q * q + p[3] * pow(q, 3.0);
-        v = p[4] + p[5] * q + p[6] * q * q + p[7] * pow(q, 3.0);
+        u = p[0] + p[1] * q + p[2] * q * q + cubic_term(p[3], q);
+        v = p[4] + p[5] * q + p[6] * q * q + cubic_term(p[7], q);
         du = p[1] + 2 * p[2] * q + 3 * p[3] * q * q;
         dv = p[5] + 2 * p[6] * q + 3 * p[7] * q * q;
     }
@@ -146,7 +173,7 @@ double vr_lane_width(const vr_road *r, int row, double ds)
     if (k < 0) k = 0;
     w += 5 * k;
     double u = ds - w[0];
-    return w[1] + w[2] * u + w[3] * u * u + w[4] * pow(u, 3.0);
+    return w[1] + w[2] * u + w[3] * u * u + cubic_term(w[4], u);
 }
 
 int vr_lane_borders(const vr_road *r, double s, int lane_id, double *inner, double *outer)
@@ -213,8 +240,10 @@ void vr_world(const vr_road *r, double s, double t, double *out)
     double pose[3];
     vr_ref_pose(r, s, pose);
     if (r->n_sup) t *= cos(vr_roll(r, s));
-    out[0] = pose[0] - t * sin(pose[2]);
-    out[1] = pose[1] + t * cos(pose[2]);
+    double c, s_;
+    cos_sin(pose[2], &c, &s_);
+    out[0] = pose[0] - t * s_;
+    out[1] = pose[1] + t * c;
     out[2] = pose[2];
 }
 
