@@ -35,7 +35,15 @@ def clear_file_caches() -> None:
     from vei_scenario.roads.road_model import _network
     from vei_scenario.safe_xml import _digest
 
-    for cache in (document._catalog_tree, document._catalog_index, document._directory, _network, _digest):
+    for cache in (
+        document._template,
+        document._listing,
+        document._catalog_tree,
+        document._catalog_index,
+        document._directory,
+        _network,
+        _digest,
+    ):
         cache.cache_clear()
     document._RESOLVED.clear()
     document._NAMES.clear()

@@ -4,10 +4,16 @@ Every attribute holding ``$Name`` or ``${expression}`` is replaced by its value 
 built, scope by scope (a ``ParameterDeclarations`` inside a Story or Maneuver adds to the scope of that
 element). ``--param Name=Value`` overrides a top-level declaration; an unknown name or a value of the
 wrong type is refused, as is any reference to an undeclared parameter, naming the line.
+
+A file is read and checked once per process while its content stays the same (``_template``: a sweep
+loads it once per variant); each load resolves a copy, visiting only the elements that need it and
+checking again only the numbers its parameters gave (tests/test_scenario_template.py: the same XML as
+resolving the whole file afresh).
 """
 
 from __future__ import annotations
 
+import copy
 import functools
 import math
 import os
@@ -187,11 +193,7 @@ class Catalogs:
         return self._files.get(id(entry), self.path)
 
     def _load(self) -> None:
-        files = tuple(
-            (location, f, content_key(f))
-            for location, d in self.dirs
-            for f in (sorted(d / n for n in os.listdir(d) if n.endswith(".xosc")) if d.is_dir() else [])
-        )
+        files = tuple((location, f, content_key(f)) for location, d in self.dirs for f in _catalog_files(d))
         self._entries, self._by_location, self._by_name, self._files = _catalog_index(files)
 
     def entry(self, ref):
@@ -209,6 +211,24 @@ class Catalogs:
                 self.path, f"line {ref.sourceline}", f"catalog entry {catalog}/{name} not found ({where})"
             )
         return found
+
+
+def _catalog_files(directory: Path) -> tuple[Path, ...]:
+    """The ``.xosc`` files in a catalog directory, sorted (none when it is not a directory); listed
+    again whenever the directory changes (a file added, removed or renamed changes its times)."""
+    try:
+        st = os.stat(directory)
+    except OSError:
+        return ()
+    return _listing(str(directory), st.st_ino, st.st_mtime_ns, st.st_ctime_ns)
+
+
+@functools.lru_cache(maxsize=256)
+def _listing(directory: str, inode: int, mtime_ns: int, ctime_ns: int) -> tuple[Path, ...]:
+    d = Path(directory)
+    if not d.is_dir():
+        return ()
+    return tuple(sorted(d / n for n in os.listdir(d) if n.endswith(".xosc")))
 
 
 @functools.lru_cache(maxsize=256)
@@ -253,8 +273,6 @@ def _catalog_tree(path: str, key: bytes):
 def _resolve_catalog_reference(path: Path, ref, scope: dict[str, str], catalogs: Catalogs) -> None:
     """Replace ``<CatalogReference>`` by a copy of its entry, the entry's parameters set by the
     reference's ``ParameterAssignments`` (resolved in the scenario's scope)."""
-    import copy
-
     for attr in ("catalogName", "entryName"):
         if "$" in (ref.get(attr) or ""):
             ref.set(attr, resolve_value(path, ref, attr, ref.get(attr), scope))
@@ -284,7 +302,7 @@ def _resolve_catalog_reference(path: Path, ref, scope: dict[str, str], catalogs:
         )
     merged = {**scope, **local}
     named = _names_in(source)  # (None: it refers to other entries, whose parameters it passes on)
-    memo = None if named is None else (source, tuple((n, v) for n, v in merged.items() if "$" + n in named))
+    memo = None if named is None else (source, tuple((n, merged.get(n)) for n in named))
     entry = _RESOLVED.get(memo) if memo is not None else None
     if entry is not None:
         ref.getparent().replace(ref, copy.deepcopy(entry))
@@ -310,27 +328,40 @@ def _resolve_catalog_reference(path: Path, ref, scope: dict[str, str], catalogs:
 #: entry with them substituted and checked. A sweep resolves the same entries with the same values for
 #: most variants; the entries are those of the cached catalog index, kept while their files are.
 _RESOLVED: dict[tuple, object] = {}
-_NAMES: dict[object, str | None] = {}
+_NAMES: dict[object, tuple[str, ...] | None] = {}
 _UNREAD = object()
+#: A parameter named in an attribute value: ``$name`` alone or inside ``${...}`` (the expressions' names).
+_NAMED = re.compile(r"\$([A-Za-z_][A-Za-z0-9_]*)")
 
 
-def _names_in(source) -> str | None:
-    """Every attribute value of catalog entry ``source`` that refers to a parameter, joined (the names
-    its resolution reads are the ones that follow a ``$`` in it), or None when it holds a
-    CatalogReference (resolving it reads whatever the referenced entries name)."""
+def _names_in(source) -> tuple[str, ...] | None:
+    """The parameters the attribute values of catalog entry ``source`` name (the ones its resolution
+    reads), sorted, or None when it holds a CatalogReference (resolving it reads whatever the
+    referenced entries name)."""
     found = _NAMES.get(source, _UNREAD)
     if found is _UNREAD:
         if source.find(".//CatalogReference") is not None:
             found = None
         else:
-            found = " ".join(v for el in source.iter() for v in el.attrib.values() if "$" in v)
+            found = tuple(sorted({n for el in source.iter() for v in el.attrib.values() for n in _NAMED.findall(v)}))
         if len(_NAMES) >= 4096:
             _NAMES.clear()
         _NAMES[source] = found
     return found
 
 
-def _substitute(path: Path, el, scope: dict[str, str], types: dict[str, str], catalogs: Catalogs | None = None) -> None:
+def _substitute(
+    path: Path,
+    el,
+    scope: dict[str, str],
+    types: dict[str, str],
+    catalogs: Catalogs | None = None,
+    visit: set | None = None,
+    changed: list | None = None,
+) -> None:
+    """Resolve the parameters of ``el`` and below in place (catalog references replaced by their
+    entries); ``visit``: the only elements below it that need it (None: all); ``changed``: collects
+    the elements whose attributes were set, in document order."""
     if el.tag == "CatalogReference" and catalogs is not None and el.getparent().tag != "Catalog":
         _resolve_catalog_reference(path, el, scope, catalogs)
         return
@@ -338,35 +369,46 @@ def _substitute(path: Path, el, scope: dict[str, str], types: dict[str, str], ca
     if local is not None and el.tag != "OpenSCENARIO":
         scope = dict(scope)
         _declare(path, local, scope, dict(types))
+    touched = False
     for attr, value in el.attrib.items():
         if "$" in value and not (el.tag == "ParameterDeclaration" and attr == "name"):
             try:
                 el.set(attr, resolve_value(path, el, attr, value, scope))
+                touched = True
             except VeiInputError:
                 if attr != "name":  # a name is only an identifier: esmini's string expressions may stay
                     raise
+    if touched and changed is not None:
+        changed.append(el)
     for child in list(el):
-        if isinstance(child.tag, str) and child.tag != "ParameterDeclarations":
-            _substitute(path, child, scope, types, catalogs)
+        if (visit is None or child in visit) and isinstance(child.tag, str) and child.tag != "ParameterDeclarations":
+            _substitute(path, child, scope, types, catalogs, visit, changed)
 
 
-def parameter_text(value: object) -> str:
-    """A parameter value as OpenSCENARIO writes it: Python booleans as true/false, numbers by repr (so
-    ``run_scenario(p, {"CapEnabled": True, "TimeShift": 1.5})`` means what it says)."""
-    if isinstance(value, bool):
-        return "true" if value else "false"
-    if isinstance(value, (int, float)):
-        return repr(value)
-    return value if isinstance(value, str) else str(value)
+@dataclass(frozen=True)
+class _Template:
+    """A scenario file as read and checked before its parameters are resolved: what every load of
+    the unchanged file starts from (a sweep loads the same file once per variant). Never changed
+    after it is built; a load resolves a copy of ``root``."""
+
+    root: etree._Element  # comments and processing instructions stripped
+    minor_version: int
+    scope: dict[str, str]  # the top-level parameters with their declared values, and their types
+    types: dict[str, str]
+    needs: frozenset[int]  # elements (by document order) that hold a parameter, a catalog reference
+    # or declarations of their own, or have such an element below them: the only ones resolving visits
+    numbers_ok: bool  # every number written out (not a parameter) passed check_numbers
 
 
-def load_scenario(
-    path: str | Path, overrides: dict[str, object] | None = None, tree: etree._ElementTree | None = None
-) -> ScenarioDocument:
-    """The scenario at ``path`` with parameters (``overrides`` over the declared values), catalogs
-    and expressions resolved in place; ``tree``: the file already parsed (it is changed)."""
-    path = Path(path)
-    tree = parse_xml(path) if tree is None else tree
+@functools.lru_cache(maxsize=16)
+def _template(path: str, key: bytes) -> _Template:
+    """The template of the file at ``path``, read once per process while it holds ``key``'s content."""
+    return _read_template(Path(path), parse_xml(path))
+
+
+def _read_template(path: Path, tree) -> _Template:
+    """Check the file's root, header and top-level declarations (in the order a load refuses them)
+    and note what resolving its parameters will visit."""
     if tree.docinfo.internalDTD is not None:
         raise VeiInputError(path, "line 1", "DTDs are not accepted in OpenSCENARIO files")
     root = tree.getroot()
@@ -388,24 +430,73 @@ def load_scenario(
             "a ParameterValueDistribution" if root.find("ParameterValueDistribution") is not None else "not a scenario"
         )
         raise VeiInputError(path, f"line {root.sourceline}", f"{kind}: no <Storyboard> to run")
-
     scope: dict[str, str] = {}
     types: dict[str, str] = {}
     top = root.find("ParameterDeclarations")
     if top is not None:
         _declare(path, top, scope, types)
+    elements = list(root.iter())
+    order = {el: i for i, el in enumerate(elements)}
+    needs: set[int] = set()
+    for el in reversed(elements):  # (children before their parents)
+        if (
+            el.tag == "CatalogReference"
+            or any("$" in v for v in el.attrib.values())
+            or (el is not root and el.find("ParameterDeclarations") is not None)
+        ):
+            needs.add(order[el])
+        if order[el] in needs and el is not root:
+            needs.add(order[el.getparent()])
+    try:
+        check_numbers(path, root, references=False)
+        numbers_ok = True
+    except VeiInputError:  # (a load checks the whole file again and refuses it there, in order)
+        numbers_ok = False
+    return _Template(root, minor, scope, types, frozenset(needs), numbers_ok)
+
+
+def parameter_text(value: object) -> str:
+    """A parameter value as OpenSCENARIO writes it: Python booleans as true/false, numbers by repr (so
+    ``run_scenario(p, {"CapEnabled": True, "TimeShift": 1.5})`` means what it says)."""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, (int, float)):
+        return repr(value)
+    return value if isinstance(value, str) else str(value)
+
+
+def load_scenario(
+    path: str | Path, overrides: dict[str, object] | None = None, tree: etree._ElementTree | None = None
+) -> ScenarioDocument:
+    """The scenario at ``path`` with parameters (``overrides`` over the declared values), catalogs
+    and expressions resolved in place; ``tree``: the file already parsed (it is changed)."""
+    path = Path(path)
+    if tree is None:  # (a copy of the file as read once: the file's own text is parsed once per process)
+        template = _template(str(path), content_key(path))
+        root = copy.deepcopy(template.root)
+    else:
+        template = _read_template(path, tree)
+        root = template.root
+    minor = template.minor_version
+    scope, types = dict(template.scope), dict(template.types)
+    top = root.find("ParameterDeclarations")
     overrides = {name: parameter_text(value) for name, value in (overrides or {}).items()}
     check_values(types, overrides, "--param", path)
     scope.update(overrides)
     if overrides:  # later declarations may depend on overridden ones: re-declare in order
         scope, types = redeclare(path, top, overrides)
-    _substitute(path, root, scope, types, Catalogs(path, root))
-    check_numbers(path, root)  # every number the XSD types as one: finite, integral, in range
+    elements = list(root.iter())
+    visit = {elements[i] for i in template.needs}
+    changed: list = []
+    _substitute(path, root, scope, types, Catalogs(path, root), visit, changed)
+    # every number the XSD types as one: finite, integral, in range (those written out in the file
+    # were checked when it was read; catalog entries are checked as they are resolved)
+    check_numbers(path, root, changed if template.numbers_ok else None)
 
     road_file = None
     logic = root.find("RoadNetwork/LogicFile")
     if logic is not None and logic.get("filepath"):
-        road_file = (path.parent / logic.get("filepath")).resolve()
+        road_file = _directory(str(path.parent), logic.get("filepath"))
         if not road_file.is_file():
             raise VeiInputError(path, f"line {logic.sourceline}", f"road network {logic.get('filepath')!r} not found")
     return ScenarioDocument(path, root, minor, scope, types, road_file)

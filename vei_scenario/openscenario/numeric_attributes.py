@@ -102,23 +102,25 @@ def table_from_xsd(paths: list[Path]) -> dict[str, dict[str, str]]:
     return out
 
 
-def check_numbers(path: Path, root) -> None:
+def check_numbers(path: Path, root, elements=None, references: bool = True) -> None:
     """Refuse the first attribute the XSD types as a number that is not one: not a number, not
     finite, not an integer where an integer is due, or below zero where the standard says [0..inf[.
-    Run after parameters are resolved: a ``$`` left in a number is no number."""
+    Run after parameters are resolved: a ``$`` left in a number is no number. ``elements``: only
+    these (in document order), not all of ``root``'s; ``references=False``: leave the values that
+    refer to parameters (a file checked once before its parameters are resolved)."""
     import math
 
     from vei_scenario.errors import VeiInputError
 
     table = numeric_table()
-    for el in root.iter():
+    for el in root.iter() if elements is None else elements:
         tag = el.tag
         attrs = table.get(tag) if isinstance(tag, str) else None
         if not attrs:
             continue
         for name, kind in attrs.items():
             text = el.get(name)
-            if text is None:
+            if text is None or (not references and "$" in text):
                 continue
             try:
                 value = float(text)
