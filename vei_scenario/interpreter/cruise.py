@@ -24,7 +24,7 @@ import math
 from dataclasses import dataclass, field
 
 from vei_scenario.core import _core, layout
-from vei_scenario.interpreter.clock import step_time, step_times
+from vei_scenario.interpreter.clock import count_at_or_before, packed_step_times, step_time, step_times
 
 #: Core columns of a road user (core_module.c: ROAD_USER_COLUMNS).
 _ROAD_USER = layout("road_user")
@@ -297,6 +297,10 @@ class StepTimes:
         """Times ``i`` to ``j`` (exclusive), at once."""
         return step_times(self.step0 + 1 + i, self.step0 + 1 + j, self.dt)
 
+    def count_at_or_before(self, limit: float) -> int:
+        """How many of the times are at or before ``limit``."""
+        return count_at_or_before(self.step0 + 1, self.step0 + 1 + self.n, self.dt, limit)
+
     def __iter__(self):
         return iter(self.between(0, self.n))
 
@@ -348,7 +352,7 @@ def cruise(ctx, storyboard, entities: list, recording, max_time: float) -> int:
     f64 = array.array
     columns = (f64("d", cols).tobytes(), f64("d", sync_cols).tobytes(), f64("d", programs).tobytes(),
                f64("d", bounds.guards).tobytes())  # fmt: skip
-    clock = f64("d", step_times(step0, step0 + skipped + 1, dt)).tobytes()  # (each step's start)
+    clock = packed_step_times(step0, step0 + skipped + 1, dt)  # (each step's start)
     n, poses, state, sync_state = _core.cruise(ways, *columns, clock, bounds.turn, dt, math.hypot)
     # The core stops before a step that is not quiet (an action ending, a guard's comparison turning):
     # the interpreter takes that one, and the steps after it are offered again at once, unless the

@@ -8,7 +8,6 @@ through the small interface of :mod:`vei_scenario.interpreter.action_base`.
 
 from __future__ import annotations
 
-import bisect
 from collections import deque
 from itertools import repeat
 from operator import itemgetter
@@ -116,11 +115,13 @@ class ConditionRunner:
     def skip(self, times, held: bool) -> None:
         """Account for evaluations at ``times`` that were not run (their edged value: ``held``)."""
         if self.delay > 0 and len(times):
-            limit = self._due(times[-1])
-            while self.history and self.history[0][0] <= limit:
-                self.history.popleft()
-            i = bisect.bisect_right(times, limit)  # (times grow)
-            self.history.extend(zip(times.between(i, len(times)), repeat(held)))
+            limit, history = self._due(times[-1]), self.history
+            if history and history[-1][0] <= limit:  # (all of it due by then)
+                history.clear()
+            while history and history[0][0] <= limit:
+                history.popleft()
+            i = times.count_at_or_before(limit)  # (the evaluations due by the last one: never kept)
+            history.extend(zip(times.between(i, len(times)), repeat(held)))
 
 
 class Trigger:
