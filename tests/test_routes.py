@@ -7,7 +7,7 @@ import random
 
 import pytest
 
-from vei_scenario.interpreter.routes import _leg_between, road_distance
+from vei_scenario.interpreter.routes import _leg_between, _plan, plan_route, road_distance
 from vei_scenario.roads.road_model import RoadNetwork
 
 LANES = (
@@ -76,3 +76,21 @@ def test_distances_equal_the_full_search_everywhere(net):
     # a position beyond a road's end takes the full search
     legs = _leg_between(net, ("1", 120.0, None), ("2", 5.0, None))
     assert road_distance(net, ("1", 120.0), ("2", 5.0)) == sum(leg.length for leg in legs)
+
+
+def test_routes_planned_once_are_the_routes_planned_afresh(net):
+    """plan_route keeps what it planned per network; every call still gets the route a fresh search
+    gives, as its own object (a caller changing its legs changes no later route)."""
+    rng = random.Random(3)
+    ids = list(net.roads)
+    for _ in range(300):
+        points = [(r, rng.uniform(0, net.road(r).length), rng.choice([None, True, False]))
+                  for r in (rng.choice(ids) for _ in range(rng.randint(2, 3)))]  # fmt: skip
+        fresh = _plan(net, points)
+        for _ in range(2):
+            route = plan_route(net, points)
+            assert (route is None) == (fresh is None)
+            if route is not None:
+                assert route.legs == fresh.legs
+                route.legs.clear()  # (the next call's legs are its own)
+    assert plan_route(net, [("1", 30.0, True), ("4", 1.0, None)]) is None

@@ -173,6 +173,21 @@ class Route:
 
 
 def plan_route(net: RoadNetwork, waypoints: list[Waypoint]) -> Route | None:
+    """The route through ``waypoints`` (None when no chain of roads joins two of them), planned once
+    per network and waypoints (kept in ``net.memo``: a sweep places the same route positions in every
+    variant); each call gets its own Route of the same legs."""
+    planned = net.memo.setdefault("routes", {})
+    key = tuple(waypoints)
+    if key not in planned:
+        if len(planned) >= 4096:
+            planned.clear()
+        route = _plan(net, waypoints)
+        planned[key] = None if route is None else tuple(route.legs)
+    legs = planned[key]
+    return None if legs is None else Route(list(legs))
+
+
+def _plan(net: RoadNetwork, waypoints: list[Waypoint]) -> Route | None:
     legs: list[Leg] = []
     for a, b in zip(waypoints, waypoints[1:]):
         part = _leg_between(net, a, b)

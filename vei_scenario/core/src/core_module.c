@@ -967,7 +967,8 @@ static int sync_step(double *sy, const double *programs, const double *cur, doub
 /* the bounding box of a road user at (x, y, yaw) whose box centre is center_x ahead of it (Entity.box) */
 static VeiBox entity_box(double x, double y, double yaw, double center_x, double length, double width)
 {
-    double c = cos(yaw), s = sin(yaw);
+    double c, s;
+    vr_cos_sin(yaw, &c, &s);
     return (VeiBox){x + c * center_x, y + s * center_x, yaw, length, width};
 }
 
@@ -1083,7 +1084,9 @@ static int lateral_step(const vr_road *r, const double *e, double t, double ds, 
     if (near_threshold(moved, 1e-9)) return 0;
     next[CR_S] = s1, next[CR_OFFSET] = offset, next[CR_LAT_FRACTION] = x;
     next[CR_X] = out[0], next[CR_Y] = out[1];
-    next[CR_YAW] = atan2(sin(base + e[CR_HEADING]), cos(base + e[CR_HEADING]));
+    double hc, hs;
+    vr_cos_sin(base + e[CR_HEADING], &hc, &hs);
+    next[CR_YAW] = atan2(hs, hc);
     if (moved > 1e-9) { /* it heads where it moves (from where it last headed from) */
         double px = e[CR_PREV_X], py = e[CR_PREV_Y];
         next[CR_PREV_X] = out[0], next[CR_PREV_Y] = out[1];
@@ -1110,8 +1113,10 @@ static int cruise_move(PyObject *way, const double *e, double t, double max_turn
     double speed = next[CR_SPEED], ds = speed * dt;
     if ((fabs(speed) < 1e-9) != (fabs(e[CR_SPEED]) < 1e-9)) return 0;
     if (mode == MODE_STRAIGHT) {
-        next[CR_X] = e[CR_X] + ds * cos(e[CR_YAW]);
-        next[CR_Y] = e[CR_Y] + ds * sin(e[CR_YAW]);
+        double c, s;
+        vr_cos_sin(e[CR_YAW], &c, &s);
+        next[CR_X] = e[CR_X] + ds * c;
+        next[CR_Y] = e[CR_Y] + ds * s;
     } else if (mode == MODE_LANE && e[CR_LATERAL] != 0.0) {
         if (!lateral_step(&((RoadObject *)way)->r, e, t, ds, dt, next) || fabs(next[CR_S] - e[CR_S]) > e[CR_MAX_DS]) return 0;
     } else if (mode == MODE_LANE) {
@@ -1178,7 +1183,8 @@ static int rule_holds(int rule, double a, double b)
 /* the distance from point (px, py) to box b (0 inside) */
 static double point_box_distance(double px, double py, const VeiBox *b)
 {
-    double c = cos(b->yaw), s = sin(b->yaw), dx = px - b->x, dy = py - b->y;
+    double c, s, dx = px - b->x, dy = py - b->y;
+    vr_cos_sin(b->yaw, &c, &s);
     double ox = fabs(c * dx + s * dy) - 0.5 * b->length, oy = fabs(-s * dx + c * dy) - 0.5 * b->width;
     return hypot(ox > 0 ? ox : 0.0, oy > 0 ? oy : 0.0);
 }
@@ -1191,7 +1197,8 @@ static double box_gap(const VeiBox *a, const VeiBox *b)
     double best = INFINITY;
     for (int k = 0; k < 2; k++) {
         const VeiBox *p = k ? b : a, *q = k ? a : b;
-        double c = cos(p->yaw), s = sin(p->yaw), hl = 0.5 * p->length, hw = 0.5 * p->width;
+        double c, s, hl = 0.5 * p->length, hw = 0.5 * p->width;
+        vr_cos_sin(p->yaw, &c, &s);
         for (int corner = 0; corner < 4; corner++) {
             double lx = corner == 0 || corner == 3 ? hl : -hl, ly = corner < 2 ? hw : -hw;
             double d = point_box_distance(p->x + c * lx - s * ly, p->y + s * lx + c * ly, q);
@@ -1218,7 +1225,10 @@ static double guard_distance(const double *g, const double *st)
     }
     double rx = freespace ? bb.x - ba.x : bx - a[CR_X], ry = freespace ? bb.y - ba.y : by - a[CR_Y];
     if (kind == GQ_CARTESIAN) return freespace ? box_gap(&ba, &bb) : hypot(rx, ry);
-    double c = cos(ba.yaw), s = sin(ba.yaw), dc = fabs(cos(bb.yaw - ba.yaw)), ds = fabs(sin(bb.yaw - ba.yaw)), d, half;
+    double c, s, dc, ds, d, half;
+    vr_cos_sin(ba.yaw, &c, &s);
+    vr_cos_sin(bb.yaw - ba.yaw, &dc, &ds);
+    dc = fabs(dc), ds = fabs(ds);
     if (kind == GQ_LONGITUDINAL)
         d = c * rx + s * ry, half = 0.5 * (ba.length + bb.length * dc + bb.width * ds);
     else

@@ -39,11 +39,12 @@ static double cubic_term(double p, double u)
 }
 
 /* cos and sin of an angle, the last few remembered: on a straight road every pose asks for its
- * geometry's heading (the same libm calls give the same bits; road geometry runs under the GIL) */
+ * geometry's heading, and every box of a road user driving straight for its yaw (the same libm calls
+ * give the same bits; the core's per-step geometry runs under the GIL) */
 static double memo_angle[4] = {NAN, NAN, NAN, NAN}, memo_cos[4], memo_sin[4];
 static int memo_next;
 
-static void cos_sin(double a, double *c, double *s)
+void vr_cos_sin(double a, double *c, double *s)
 {
     for (int i = 0; i < 4; i++)
         if (memcmp(&memo_angle[i], &a, sizeof a) == 0) {
@@ -87,7 +88,7 @@ void vr_geometry_pose(const vr_road *r, int k, double ds, double *out)
     const double *p = g + VR_G_P0;
     double x0 = g[VR_G_X], y0 = g[VR_G_Y], hdg = g[VR_G_HDG];
     double c, s_;
-    cos_sin(hdg, &c, &s_);
+    vr_cos_sin(hdg, &c, &s_);
     int kind = (int)g[VR_G_KIND];
     if (kind == VR_LINE || (kind == VR_ARC && fabs(p[0]) < 1e-12)) {
         out[0] = x0 + ds * c;
@@ -241,7 +242,7 @@ void vr_world(const vr_road *r, double s, double t, double *out)
     vr_ref_pose(r, s, pose);
     if (r->n_sup) t *= cos(vr_roll(r, s));
     double c, s_;
-    cos_sin(pose[2], &c, &s_);
+    vr_cos_sin(pose[2], &c, &s_);
     out[0] = pose[0] - t * s_;
     out[1] = pose[1] + t * c;
     out[2] = pose[2];

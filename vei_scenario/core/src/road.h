@@ -41,6 +41,9 @@ typedef struct {
     double *samp_s, *samp_x, *samp_y;
 } vr_road;
 
+/* cos and sin of `a`, the last few angles remembered (the same bits as cos(a) and sin(a)) */
+void vr_cos_sin(double a, double *c, double *s);
+
 /* Gauss-Legendre nodes and weights (24) for spirals: given once by the module */
 void vr_set_quadrature(const double *x, const double *w);
 
