@@ -36,11 +36,6 @@ class Context:
     variable_types: dict[str, str] = field(default_factory=dict)
     #: storyboard transitions so far (a step without any leaves the triggers it evaluated in place)
     transitions: int = 0
-    #: steps the engine lets pass before it offers the core a quiet stretch again (interpreter.cruise
-    #: sets it from why the last offer ended)
-    cruise_wait: int = 4
-    #: the core's refusals in a row (it would not take even the first step of the stretch offered)
-    core_refusals: int = 0
 
     @property
     def roads(self):

@@ -67,6 +67,22 @@ _DISTANCES = {"cartesianDistance": "cartesian", "euclidianDistance": "cartesian"
 _ORDERS = frozenset(layout("rule")[n] for n in ("GT", "LT", "GE", "LE"))
 
 
+@dataclass
+class Offers:
+    """When a run next offers the core a quiet stretch (the engine keeps one per run; :func:`cruise`
+    sets it from why each offer ended)."""
+
+    wait: int = 0  # quiet steps to let pass first
+    refusals: int = 0  # the core's refusals in a row (it would not take even the first step offered)
+
+    def due(self) -> bool:
+        """Whether this quiet step is offered (else one of the steps to let pass has passed)."""
+        if self.wait:
+            self.wait -= 1
+            return False
+        return True
+
+
 @dataclass(frozen=True)
 class QuietBounds:
     """The most a quiet step changes: the core stops before a step that would exceed any of these, or
@@ -317,11 +333,11 @@ def steps_left(ctx, max_time: float) -> int:
     return n
 
 
-def cruise(ctx, storyboard, entities: list, recording, max_time: float) -> int:
+def cruise(ctx, storyboard, entities: list, recording, max_time: float, offers: Offers) -> int:
     """Take this step's move and as many quiet steps after it as nothing can happen in, in the core;
-    record them. The number of steps taken (0: none, the step goes on as usual); ``ctx.cruise_wait``:
-    the steps to let pass before the next offer."""
-    ctx.cruise_wait = RETRY_STEPS  # (not quiet now: a few steps later it may be)
+    record them. The number of steps taken (0: none, the step goes on as usual); ``offers``: when to
+    offer again."""
+    offers.wait = RETRY_STEPS  # (not quiet now: a few steps later it may be)
     triggers = storyboard.watching()
     if triggers is None:
         return 0
@@ -358,11 +374,11 @@ def cruise(ctx, storyboard, entities: list, recording, max_time: float) -> int:
     # the interpreter takes that one, and the steps after it are offered again at once, unless the
     # core has refused the first step before (a state that lasts, such as a distance on its threshold).
     if n == 0:
-        ctx.core_refusals += 1
-        ctx.cruise_wait = 0 if ctx.core_refusals == 1 else RETRY_STEPS
+        offers.refusals += 1
+        offers.wait = 0 if offers.refusals == 1 else RETRY_STEPS
         return 0
-    ctx.core_refusals = 0
-    ctx.cruise_wait = 1 if n < skipped + 1 else 0  # (stopped early: the next step is the one it stopped before)
+    offers.refusals = 0
+    offers.wait = 1 if n < skipped + 1 else 0  # (stopped early: the next step is the one it stopped before)
     for c in runners:
         c.skip(StepTimes(step0, dt, n - 1), held[c])
     sync_state = memoryview(sync_state).cast("d")

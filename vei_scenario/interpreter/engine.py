@@ -24,7 +24,7 @@ from vei_scenario.interpreter.actions import (
 from vei_scenario.interpreter.clock import step_time
 from vei_scenario.interpreter.context import Context
 from vei_scenario.interpreter.controllers import make_controller
-from vei_scenario.interpreter.cruise import cruise
+from vei_scenario.interpreter.cruise import Offers, cruise
 from vei_scenario.interpreter.document import ScenarioDocument
 from vei_scenario.interpreter.entities import Entity
 from vei_scenario.interpreter.motion import advance_along, lane_keep
@@ -359,7 +359,7 @@ class Simulation:
             reason = "storyboard stop trigger"
         pending = [a for a in self.init_actions if not a.done]
         entities = list(ctx.entities.values())
-        board, wait = self.storyboard, 0
+        board, offers = self.storyboard, Offers()
         while running and ctx.t < self.max_time - 1e-9:
             before = ctx.transitions
             if not board.step():
@@ -371,13 +371,8 @@ class Simulation:
                 and (not pending or all(a.carried(ctx) for a in pending))
                 and (not ctx.stepping or all(a.carried(ctx) for a in ctx.stepping))
             ):  # fmt: skip
-                if wait:
-                    wait -= 1
-                elif cruise(ctx, board, entities, recording, self.max_time):
-                    wait = ctx.cruise_wait
+                if offers.due() and cruise(ctx, board, entities, recording, self.max_time, offers):
                     continue  # (the core took this step's move and the quiet steps after it)
-                else:
-                    wait = ctx.cruise_wait  # (not quiet now: look again when it may be)
             if pending:  # Init actions still acting (a done one never acts again)
                 for a in pending:
                     if not a.done:
