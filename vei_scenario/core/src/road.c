@@ -38,6 +38,9 @@ static double cubic_term(double p, double u)
     return (p == 0.0 && fabs(u) < 1e100) ? p * u : p * pow(u, 3.0);
 }
 
+/* a + b u + c u^2 + d u^3 of the coefficients c4 = (a, b, c, d), summed as the Python reader sums it */
+static double cubic(const double *c4, double u) { return c4[0] + c4[1] * u + c4[2] * u * u + cubic_term(c4[3], u); }
+
 /* cos and sin of an angle, the last few remembered: on a straight road every pose asks for its
  * geometry's heading, and every box of a road user driving straight for its yaw (the same libm calls
  * give the same bits; the core's per-step geometry runs under the GIL) */
@@ -62,8 +65,7 @@ static double cubic_at(const double *polys, int n, double s)
     int k = last_at_or_before(polys, n, 5, s);
     if (k < 0) return 0.0;
     const double *p = polys + 5 * k;
-    double u = s - p[0];
-    return p[1] + p[2] * u + p[3] * u * u + cubic_term(p[4], u);
+    return cubic(p + 1, s - p[0]);
 }
 
 /* numpy.interp on a sorted table: clamped at both ends */
@@ -124,12 +126,12 @@ void vr_geometry_pose(const vr_road *r, int k, double ds, double *out)
     double u, v, du, dv;
     if (kind == VR_POLY3) {
         u = q;
-        v = p[0] + p[1] * q + p[2] * q * q + cubic_term(p[3], q);
+        v = cubic(p, q);
         du = 1.0;
         dv = p[1] + 2 * p[2] * q + 3 * p[3] * q * q;
     } else {
-        u = p[0] + p[1] * q + p[2] * q * q + cubic_term(p[3], q);
-        v = p[4] + p[5] * q + p[6] * q * q + cubic_term(p[7], q);
+        u = cubic(p, q);
+        v = cubic(p + 4, q);
         du = p[1] + 2 * p[2] * q + 3 * p[3] * q * q;
         dv = p[5] + 2 * p[6] * q + 3 * p[7] * q * q;
     }
@@ -173,8 +175,7 @@ double vr_lane_width(const vr_road *r, int row, double ds)
     int k = last_at_or_before(w, n, 5, ds);
     if (k < 0) k = 0;
     w += 5 * k;
-    double u = ds - w[0];
-    return w[1] + w[2] * u + w[3] * u * u + cubic_term(w[4], u);
+    return cubic(w + 1, ds - w[0]);
 }
 
 int vr_lane_borders(const vr_road *r, double s, int lane_id, double *inner, double *outer)
