@@ -313,3 +313,21 @@ def test_an_interpreted_sweep_gives_the_same_rows_on_any_number_of_cores(monkeyp
     assert [r["status"] for r in rows].count("error") == 2 and rows[0]["status"] == rows[4]["status"] == "error"
     gaps = [r["metrics"]["min_gap_m"] for r in rows if r["status"] == "ok"]
     assert len(set(gaps)) > 3  # the variants differ
+
+
+def test_a_sweep_of_two_variants_starts_no_worker_processes(monkeypatch):
+    """Two variants cannot repay a pool (the first reads the files, a worker would read them again):
+    they run here, in order, whatever the number of cores."""
+    from vei_scenario.sweep import evaluate
+
+    def no_pool(*args, **kwargs):
+        raise AssertionError("a worker pool was started for two variants")
+
+    monkeypatch.setattr(evaluate, "ProcessPoolExecutor", no_pool)
+    monkeypatch.setattr(evaluate, "POOL_WORTH_S", 0.0)
+    scenario = str(Path(__file__).parent / "data" / "following_brake.xosc")
+    variants = [{"EgoSpeed": "8.0", "LeadSpeed": "3.0"}, {"EgoSpeed": "15.0", "LeadSpeed": "6.0"}]
+    rows = evaluate_local(scenario, variants, 0.01, workers=2)
+    assert [r["metrics"]["min_gap_m"] for r in rows] == [
+        evaluate.evaluate_variant(scenario, v, 0.01)["metrics"]["min_gap_m"] for v in variants
+    ]

@@ -86,7 +86,9 @@ def evaluate_local(
     if native is not None:
         return _evaluate_native(native, scenario, variants, dt, workers, progress, zone_ttc)
     out: list[dict] = []
-    if workers > 1 and len(variants) > 2:
+    if len(variants) <= 2:  # the first reads the scenario's files: a worker would read them again
+        workers = 1
+    elif workers > 1:
         # Two variants here first: the first reads the scenario's files (the workers then inherit them
         # read), the second says what a variant costs. Work that would not repay starting the worker
         # processes stays in this one.
