@@ -1,7 +1,8 @@
 """Quiet steps handed to the core in one call: while every road user keeps its lane (shifting sideways
 in a running lane change or lane offset), drives straight on or follows a path (an untimed one at its
 speed or at the speed its running SynchronizeAction or SpeedAction transition sets; a timed one as its
-time says), and no trigger can fire, a step is only motion, and the core takes many at once.
+time says; placed at the gap its continuous LongitudinalDistanceAction keeps and on at the speed of the
+road user it keeps it to), and no trigger can fire, a step is only motion, and the core takes many at once.
 
 The storyboard stays in charge. After a step's evaluation in which nothing started or ended, each
 watched condition says for how many steps its value cannot change while the road users cruise within
@@ -134,14 +135,18 @@ class QuietBounds:
         return True
 
 
-def _columns(ctx, entities, synced: frozenset, turn: float) -> tuple[tuple, list[float], QuietBounds] | None:
+def _columns(
+    ctx, entities, synced: frozenset, turn: float, kept: dict[str, str] | None = None
+) -> tuple[tuple, list[float], QuietBounds] | None:
     """The core's columns of every road user and the bounds of their steps, or None when one moves
     otherwise than by cruising along its lane or path (or straight on) at its speed, the speed a
-    synchronisation (of ``synced``) or a SpeedAction's transition gives it, or along a timed path."""
+    synchronisation (of ``synced``) or a SpeedAction's transition gives it, the speed of the road user
+    it keeps its distance to (``kept``: road user -> that one), or along a timed path."""
     ways, cols, dt = [], [], ctx.dt
-    varying = synced | {  # (a trailer's speed is its tow's: taken as changing)
-        e.name for e in entities if not e.deleted and (e.speed_profile is not None or _timed(e) or e.towed_by)
-    }
+    kept = kept or {}
+    # (a trailer's speed is its tow's, a keeper's its reference's: taken as changing)
+    varying = synced | kept.keys()
+    varying |= {e.name for e in entities if not e.deleted and (e.speed_profile is not None or _timed(e) or e.towed_by)}
     index = {e.name: i for i, e in enumerate(entities)}
     bounds = QuietBounds({}, {}, turn, varying=frozenset(varying), index=index)
     for e in entities:
@@ -192,7 +197,12 @@ def _columns(ctx, entities, synced: frozenset, turn: float) -> tuple[tuple, list
         else:
             ways.append(None)
             row["MODE"] = _STRAIGHT
-        if e.name in synced or timed:
+        if e.name in kept:  # (placed at its gap, then on at the other's speed: about as far as that one)
+            ref = ctx.entities[kept[e.name]]
+            q = ref.speed_profile
+            fastest = max(abs(e.speed), abs(ref.speed), *((abs(q.v0), abs(q.v1)) if q is not None else ()))
+            reach = (fastest + SPEED_MARGIN_MPS) * dt
+        elif e.name in synced or timed:
             # (a synchronisation's or a timed path's speed: bounded by the margin, the core stops past it)
             reach = (abs(e.speed) + SPEED_MARGIN_MPS) * dt
         elif p is not None:  # (a transition's speed lies between where it is and where it ends)
@@ -270,26 +280,51 @@ def _timed(e) -> bool:
     return f is not None and f.timing is not None and f.polyline.timed
 
 
-def _synchronisations(ctx) -> tuple[list, list[float], list[float]] | None:
-    """The running synchronisations, their core columns and their distances' road programs, or None
-    when an action steps that the core does not take (or a synchronisation's distances are not along
-    the path or roads its parties keep)."""
+@dataclass
+class _Stepped:
+    """The actions stepping before the moves as the core takes them: the synchronisations, their
+    columns and their distances' road programs; the distance keepers and their columns."""
+
+    syncs: list = field(default_factory=list)
+    sync_cols: list = field(default_factory=list)
+    programs: list = field(default_factory=list)
+    keeps: list = field(default_factory=list)
+    keep_cols: list = field(default_factory=list)
+
+
+def _stepped(ctx) -> _Stepped | None:
+    """The actions stepping before the moves in the core's columns, or None when one steps that the
+    core does not take (or a synchronisation's distances are not along the path or roads its parties
+    keep). The core places the distance keepers before the synchronisations step, so they must come
+    first here too, keep their distances to road users no other keeper moves and set no master's speed."""
+    from vei_scenario.interpreter.longitudinal import LongitudinalDistance
     from vei_scenario.interpreter.synchronize import Synchronize
 
-    actions, cols, programs = [], [], []
+    out = _Stepped()
     index = {n: i for i, n in enumerate(ctx.entities)}
     for a in ctx.stepping:
-        c = a.core_columns(ctx, index, programs) if type(a) is Synchronize else None
+        if type(a) is LongitudinalDistance and not out.syncs:
+            c = a.core_columns(ctx, index)
+            if c is None:
+                return None
+            out.keeps.append(a)
+            out.keep_cols += c
+            continue
+        c = a.core_columns(ctx, index, out.programs) if type(a) is Synchronize else None
         if c is None:
             return None
-        actions.append(a)
-        cols += c
+        out.syncs.append(a)
+        out.sync_cols += c
+    actions = out.syncs
     synced = {a.entity for a in actions}
     if len(synced) < len(actions) or any(a.master in synced for a in actions):
         return None
+    kept = {a.entity for a in out.keeps}
+    if len(kept) < len(out.keeps) or kept & (synced | {a.master for a in actions} | {a.ref for a in out.keeps}):
+        return None
     if any(a.final is not None and a.final[0] == "relative" and ctx.entities[a.master].speed_profile for a in actions):
         return None  # (a final speed relative to a master whose speed changes: worked out each step)
-    return actions, cols, programs
+    return out
 
 
 class StepTimes:
@@ -341,14 +376,15 @@ def cruise(ctx, storyboard, entities: list, recording, max_time: float, offers: 
     triggers = storyboard.watching()
     if triggers is None:
         return 0
-    syncs = _synchronisations(ctx) if ctx.stepping else ([], [], [])
-    if syncs is None:
+    stepped = _stepped(ctx) if ctx.stepping else _Stepped()
+    if stepped is None:
         return 0
-    actions, sync_cols, programs = syncs
+    actions = stepped.syncs
     dt = ctx.dt
     runners = [c for t in triggers for c in t.conditions()]
     turn = TURN_RATE * dt if any(c.condition.reads_turning for c in runners) else math.inf
-    columns = _columns(ctx, entities, frozenset(a.entity for a in actions), turn)
+    kept = {a.entity: a.ref for a in stepped.keeps}
+    columns = _columns(ctx, entities, frozenset(a.entity for a in actions), turn, kept)
     if columns is None:
         return 0
     ways, cols, bounds = columns
@@ -366,8 +402,8 @@ def cruise(ctx, storyboard, entities: list, recording, max_time: float, offers: 
     if skipped < MIN_STEPS:
         return 0
     f64 = array.array
-    columns = (f64("d", cols).tobytes(), f64("d", sync_cols).tobytes(), f64("d", programs).tobytes(),
-               f64("d", bounds.guards).tobytes())  # fmt: skip
+    columns = (f64("d", cols).tobytes(), f64("d", stepped.sync_cols).tobytes(), f64("d", stepped.keep_cols).tobytes(),
+               f64("d", stepped.programs).tobytes(), f64("d", bounds.guards).tobytes())  # fmt: skip
     clock = packed_step_times(step0, step0 + skipped + 1, dt)  # (each step's start)
     n, poses, state, sync_state = _core.cruise(ways, *columns, clock, bounds.turn, dt, math.hypot)
     # The core stops before a step that is not quiet (an action ending, a guard's comparison turning):

@@ -19,8 +19,11 @@ class Polyline:
 
     def __init__(self, xs: list[float], ys: list[float], hs: list[float | None], ts: list[float | None]) -> None:
         self.xs, self.ys, self.ts = xs, ys, ts
-        seg = [math.atan2(ys[i + 1] - ys[i], xs[i + 1] - xs[i]) for i in range(len(xs) - 1)] or [hs[0] or 0.0]
-        self.hs = [h if h is not None else seg[min(i, len(seg) - 1)] for i, h in enumerate(hs)]
+        if None in hs:  # (a vertex without a heading takes its segment's direction)
+            seg = [math.atan2(ys[i + 1] - ys[i], xs[i + 1] - xs[i]) for i in range(len(xs) - 1)] or [hs[0] or 0.0]
+            self.hs = [h if h is not None else seg[min(i, len(seg) - 1)] for i, h in enumerate(hs)]
+        else:
+            self.hs = list(hs)
         self.timed = all(t is not None for t in ts)
         f64 = array.array
         times = f64("d", ts).tobytes() if self.timed else b""

@@ -12,12 +12,15 @@ from __future__ import annotations
 
 import math
 
+from vei_scenario.core import layout
 from vei_scenario.interpreter.action_base import SteppedLongitudinal, constraint, entity_ref
 from vei_scenario.interpreter.motion import advance_along, lane_keep
 from vei_scenario.interpreter.positions import ensure_lane
 
 #: Spring stiffness per m/s² of permitted acceleration (1/s²): the gap closes in a few seconds.
 SPRING_PER_ACCEL = 0.4
+#: Core columns of a distance kept in a quiet stretch (core_module.c: KEEP_COLUMNS).
+_KEEP = layout("keep")
 
 
 def longitudinal_gap(a, b, freespace: bool, system: str) -> float:
@@ -116,3 +119,28 @@ class LongitudinalDistance(SteppedLongitudinal):
             acc = min(self.accel + (self.accel_rate * dt if dt > 0.0 else 0.0), acc)
         self.accel = acc
         e.speed = max(-self.max_speed, min(self.max_speed, e.speed + acc * dt))
+
+    # --- in the core's quiet stretches (interpreter/cruise.py, core_module.c: keep_step) -------------
+    def carried(self, ctx) -> bool:  # (whether its road users suit the core: core_columns, at the stretch)
+        return self.continuous and not self.done and math.isinf(self.max_accel) and math.isinf(self.max_decel)
+
+    def core_columns(self, ctx, index: dict[str, int]) -> list[float] | None:
+        """This action as the core steps it (KP_* columns): a continuous one without dynamic constraints
+        whose entity keeps its lane (no lane change, no speed of its own) and whose reference, for a gap
+        along the road, keeps its lane too; else None (the interpreter steps it)."""
+        if not self.carried(ctx) or ctx.initializing or ctx.settling or ctx.roads is None:
+            return None
+        e, ref = ctx.entities[self.entity], ctx.entities[self.ref]
+        if e.lane is None or e.follower is not None or e.lateral is not None or e.speed_profile is not None:
+            return None
+        if e.deleted or ref.deleted or e.towed_by is not None:
+            return None
+        la, lb = e.lane, ref.lane
+        along = not self.freespace and self.system in ("road", "lane") and lb is not None and la.road == lb.road
+        if along and (ref.follower is not None or ref.towed_by is not None):
+            return None  # (a gap along the road from a lane the core does not keep)
+        row = [0.0] * len(_KEEP)
+        row[_KEEP["ENTITY"]], row[_KEEP["REF"]] = index[self.entity], index[self.ref]
+        row[_KEEP["VALUE"]], row[_KEEP["BY_TIME"]], row[_KEEP["SIDE"]] = self.value, float(self.by_time), self.side
+        row[_KEEP["FREESPACE"]], row[_KEEP["ALONG_ROAD"]] = float(self.freespace), float(along)
+        return row

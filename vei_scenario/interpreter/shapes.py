@@ -32,10 +32,16 @@ def clothoid_points(
     s = np.linspace(0.0, length, n)
     h = h0 + curvature * s + 0.5 * curvature_rate * s * s
     ds = np.diff(s)
-    x = x0 + np.concatenate(([0.0], np.cumsum(0.5 * (np.cos(h[1:]) + np.cos(h[:-1])) * ds)))
-    y = y0 + np.concatenate(([0.0], np.cumsum(0.5 * (np.sin(h[1:]) + np.sin(h[:-1])) * ds)))
-    keep = np.unique(np.concatenate((np.arange(0, n, _KEEP_EVERY), [n - 1])))
-    return x[keep], y[keep], h[keep]
+    keep = np.arange(0, n, _KEEP_EVERY)
+    if keep[-1] != n - 1:
+        keep = np.append(keep, n - 1)
+    out = []
+    for start, f in ((x0, np.cos(h)), (y0, np.sin(h))):  # (each sample's cos and sin once)
+        v = np.empty(n)
+        v[0] = 0.0
+        np.cumsum(0.5 * (f[1:] + f[:-1]) * ds, out=v[1:])
+        out.append(start + v[keep])
+    return out[0], out[1], h[keep]
 
 
 def _num(ctx, el, name: str, default: float | None = None) -> float:
@@ -64,7 +70,7 @@ def _clothoid(el, ctx, start) -> tuple[list, list, list, float]:
     x, y, h = clothoid_points(
         start.x, start.y, start.h, _num(ctx, el, "curvature"), float(rate or 0.0), _num(ctx, el, "length")
     )
-    return list(x), list(y), list(h), _num(ctx, el, "length")
+    return x.tolist(), y.tolist(), h.tolist(), _num(ctx, el, "length")
 
 
 def placed_when_built(traj) -> bool:
@@ -178,9 +184,9 @@ def _polyline(el, ctx, place: bool, entity: str | None) -> Polyline:
             if xs and not jumped[-1]:
                 x, y, h = x[1:], y[1:], h[1:]  # (continuing: the shared point once)
                 marks[-1] -= 1
-            xs += list(x)
-            ys += list(y)
-            hs += list(h)
+            xs += x.tolist()
+            ys += y.tolist()
+            hs += h.tolist()
         return Polyline(xs, ys, hs, _spline_times(kind, segments, xs, ys, marks, jumped))
     vertices = kind.findall("Vertex")
     if not place:

@@ -1146,6 +1146,52 @@ static int cruise_move(PyObject *way, const double *e, double t, double max_turn
     return within_bounds(e, next, max_turn);
 }
 
+/* a continuous LongitudinalDistanceAction without dynamic constraints (longitudinal.LongitudinalDistance):
+ * its road user (on its lane, placed at the gap before everyone moves) and the one it keeps the gap to, the
+ * distance or time gap, whether it is a time gap, the side (+1: behind the reference), whether the gap is
+ * between the boxes, and whether it is a difference of s (both on one road, measured along it) */
+#define KEEP_COLUMNS(F) F(ENTITY) F(REF) F(VALUE) F(BY_TIME) F(SIDE) F(FREESPACE) F(ALONG_ROAD)
+#define KP_ENUM(name) KP_##name,
+enum { KEEP_COLUMNS(KP_ENUM) KP_COLS };
+
+/* longitudinal.longitudinal_gap: the signed distance from road user a to b along a's heading */
+static double keep_gap(const double *kp, const double *a, const double *b)
+{
+    if (kp[KP_FREESPACE] != 0.0) {
+        double c, s, dc, ds;
+        VeiBox ba = entity_box(a[CR_X], a[CR_Y], a[CR_YAW], a[CR_CENTER_X], a[CR_LENGTH], a[CR_WIDTH]);
+        VeiBox bb = entity_box(b[CR_X], b[CR_Y], b[CR_YAW], b[CR_CENTER_X], b[CR_LENGTH], b[CR_WIDTH]);
+        vr_cos_sin(a[CR_YAW], &c, &s);
+        vr_cos_sin(bb.yaw - a[CR_YAW], &dc, &ds);
+        double own = c * ba.x + s * ba.y, other = c * bb.x + s * bb.y;
+        double half_b = 0.5 * (bb.length * fabs(dc) + bb.width * fabs(ds));
+        double lo_a = own - 0.5 * ba.length, hi_a = own + 0.5 * ba.length, lo_b = other - half_b, hi_b = other + half_b;
+        return hi_a < lo_b ? lo_b - hi_a : hi_b < lo_a ? hi_b - lo_a : 0.0;
+    }
+    if (kp[KP_ALONG_ROAD] != 0.0) return a[CR_FORWARD] != 0.0 ? b[CR_S] - a[CR_S] : a[CR_S] - b[CR_S];
+    double c, s;
+    vr_cos_sin(a[CR_YAW], &c, &s);
+    return c * (b[CR_X] - a[CR_X]) + s * (b[CR_Y] - a[CR_Y]);
+}
+
+/* LongitudinalDistance.step: the road user of keep kp put at its gap along its lane (motion.lane_keep) in st
+ * (the caller gives it its reference's speed); 0 when that leaves its road or lane (the interpreter takes the
+ * step) */
+static int keep_step(const double *kp, PyObject *ways, double *st)
+{
+    Py_ssize_t i = (Py_ssize_t)kp[KP_ENTITY];
+    double *e = st + i * CR_COLS, *ref = st + (Py_ssize_t)kp[KP_REF] * CR_COLS;
+    double wanted = kp[KP_SIDE] * (kp[KP_BY_TIME] != 0.0 ? fabs(ref[CR_SPEED]) * kp[KP_VALUE] : kp[KP_VALUE]);
+    double error = keep_gap(kp, e, ref) - wanted, s1, out[4];
+    int lane = (int)e[CR_LANE], lane1, forward = e[CR_FORWARD] != 0.0;
+    if (lane_step(&((RoadObject *)PyTuple_GET_ITEM(ways, i))->r, e[CR_S], lane, e[CR_OFFSET], error, forward, &s1, &lane1, out) != 1 ||
+        lane1 != lane)
+        return 0;
+    double a = (forward ? out[2] : out[2] + M_PI) + e[CR_HEADING];
+    e[CR_S] = s1, e[CR_X] = out[0], e[CR_Y] = out[1], e[CR_YAW] = atan2(sin(a), cos(a));
+    return 1;
+}
+
 /* a guard of a quiet stretch (cruise.QuietBounds.guard, .guard_distance): road user, the other road user (-1:
  * none; for a distance, the point POINT_X/Y/YAW instead), what is compared, the comparison (conditions.RULE_CODES)
  * and its value; a distance's freespace flag (between boxes, not reference points) */
@@ -1253,26 +1299,30 @@ static int guard_state(const double *g, const double *st)
     return 1 + rule_holds((int)g[GD_RULE], q, g[GD_VALUE]);
 }
 
-/* cruise(ways, state, syncs, programs, guards, times, max_turn, dt, hypot) -> (n, poses, state, syncs): up to n_max steps
- * (times: the simulation time at the start of each) of every road user (ways: per road
- * user its Road (mode 1), its Polyline (mode 2) or None), the synchronisations (SY_COLS each) and the
- * running transitions of SpeedActions setting their entities' speeds before each move; stops before a step
+/* cruise(ways, state, syncs, keeps, programs, guards, times, max_turn, dt, hypot) -> (n, poses, state, syncs): up to
+ * n_max steps (times: the simulation time at the start of each) of every road user (ways: per road
+ * user its Road (mode 1), its Polyline (mode 2) or None), the kept distances (KP_COLS each) placing their road
+ * users first, then the synchronisations (SY_COLS each) and the running transitions of SpeedActions setting
+ * their entities' speeds before each move; stops before a step
  * that is not quiet, ends a synchronisation, changes what a guard compares or which pairs overlap. poses: n x users x (x, y,
  * yaw, metres moved, speed, acceleration); state, syncs: the columns after the n steps. The metres moved
  * and the odometer are math.hypot's (given), so they equal the interpreter's own steps bit for bit. */
 static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
 {
-    if (!args_ok(nargs, 9, "cruise")) return NULL;
-    PyObject *ways = args[0], *state = args[1], *syncs = args[2], *progs = args[3], *guard_cols = args[4];
-    PyObject *clock = args[5], *hyp = args[8];
-    double max_turn = PyFloat_AsDouble(args[6]), dt = PyFloat_AsDouble(args[7]);
+    if (!args_ok(nargs, 10, "cruise")) return NULL;
+    PyObject *ways = args[0], *state = args[1], *syncs = args[2], *keep_cols = args[3], *progs = args[4];
+    PyObject *guard_cols = args[5], *clock = args[6], *hyp = args[9];
+    double max_turn = PyFloat_AsDouble(args[7]), dt = PyFloat_AsDouble(args[8]);
     if (PyErr_Occurred()) return NULL;
-    if (!PyTuple_Check(ways) || !PyBytes_Check(state) || !PyBytes_Check(syncs) || !PyBytes_Check(progs) ||
-        !PyBytes_Check(guard_cols) || !PyBytes_Check(clock) || !PyCallable_Check(hyp) || !(dt > 0)) {
-        PyErr_SetString(PyExc_TypeError, "cruise(ways tuple, state bytes, syncs bytes, programs bytes, guards bytes, "
-                                         "times bytes, max_turn, dt > 0, hypot)");
+    if (!PyTuple_Check(ways) || !PyBytes_Check(state) || !PyBytes_Check(syncs) || !PyBytes_Check(keep_cols) ||
+        !PyBytes_Check(progs) || !PyBytes_Check(guard_cols) || !PyBytes_Check(clock) || !PyCallable_Check(hyp) ||
+        !(dt > 0)) {
+        PyErr_SetString(PyExc_TypeError, "cruise(ways tuple, state bytes, syncs bytes, keeps bytes, programs bytes, "
+                                         "guards bytes, times bytes, max_turn, dt > 0, hypot)");
         return NULL;
     }
+    const double *keeps = (const double *)PyBytes_AS_STRING(keep_cols);
+    Py_ssize_t n_keeps = PyBytes_GET_SIZE(keep_cols) / (Py_ssize_t)(sizeof(double) * KP_COLS);
     const double *guards = (const double *)PyBytes_AS_STRING(guard_cols);
     Py_ssize_t n_guards = PyBytes_GET_SIZE(guard_cols) / (Py_ssize_t)(sizeof(double) * GD_COLS);
     /* times: the simulation time at the start of each step it may take */
@@ -1321,6 +1371,25 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
             return NULL;
         }
     }
+    if (PyBytes_GET_SIZE(keep_cols) != n_keeps * (Py_ssize_t)(sizeof(double) * KP_COLS)) {
+        PyErr_SetString(PyExc_ValueError, "cruise: the keeps need their columns each");
+        return NULL;
+    }
+    for (Py_ssize_t k = 0; k < n_keeps; k++) {
+        const double *kp = keeps + k * KP_COLS;
+        double a = kp[KP_ENTITY], b = kp[KP_REF];
+        if (!(a >= 0 && a < n && b >= 0 && b < n && a != b)) {
+            PyErr_SetString(PyExc_ValueError, "cruise: a keep names road users that are not there");
+            return NULL;
+        }
+        const double *e = st0 + (Py_ssize_t)a * CR_COLS, *r = st0 + (Py_ssize_t)b * CR_COLS;
+        if (e[CR_MODE] != MODE_LANE || e[CR_LATERAL] != 0.0 || e[CR_PROFILE] >= 0 || r[CR_MODE] < 0 ||
+            (kp[KP_ALONG_ROAD] != 0.0 && r[CR_MODE] != MODE_LANE)) {
+            PyErr_SetString(PyExc_ValueError, "cruise: a keep's road user keeps its lane at no speed of its own, "
+                                              "and its reference is there (on its lane, for a gap along the road)");
+            return NULL;
+        }
+    }
     const double *sy0 = (const double *)PyBytes_AS_STRING(syncs);
     for (Py_ssize_t k = 0; k < n_sync; k++) {
         double a = sy0[k * SY_COLS + SY_ENTITY], b = sy0[k * SY_COLS + SY_MASTER];
@@ -1335,7 +1404,7 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
         }
     }
     size_t m = (size_t)(n > 0 ? n : 1);
-    double *cur = PyMem_Malloc(sizeof(double) * (CR_COLS * m * 2 + SY_COLS * (size_t)(n_sync + 1) * 2));
+    double *cur = PyMem_Malloc(sizeof(double) * (CR_COLS * m * 3 + SY_COLS * (size_t)(n_sync + 1) * 2));
     VeiBox *box = PyMem_Malloc(sizeof(VeiBox) * m);
     int *pairs = PyMem_Malloc(sizeof(int) * m * m * 2);
     int *first = PyMem_Malloc(sizeof(int) * (size_t)(n_guards + 1)); /* what each guard says at the start */
@@ -1346,7 +1415,7 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
         return PyErr_NoMemory();
     }
     double *next = cur + CR_COLS * m, *out = (double *)PyBytes_AS_STRING(poses);
-    double *sync = next + CR_COLS * m, *sync_next = sync + SY_COLS * (size_t)(n_sync + 1);
+    double *placed = next + CR_COLS * m, *sync = placed + CR_COLS * m, *sync_next = sync + SY_COLS * (size_t)(n_sync + 1);
     size_t sync_bytes = sizeof(double) * SY_COLS * (size_t)n_sync;
     int *pairs0 = pairs, *pairs1 = pairs + m * m;
     memcpy(cur, st0, sizeof(double) * CR_COLS * (size_t)n);
@@ -1358,21 +1427,35 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
     int failed = 0;
     for (; done < n_max; done++) {
         int quiet = 1;
-        memcpy(next, cur, sizeof(double) * CR_COLS * (size_t)n);
+        /* pre: where the road users start their moves, the keeps' road users placed at their gaps first */
+        double *pre = cur;
+        if (n_keeps) {
+            memcpy(placed, cur, sizeof(double) * CR_COLS * (size_t)n);
+            pre = placed;
+            for (Py_ssize_t k = 0; k < n_keeps && quiet; k++) quiet = keep_step(keeps + k * KP_COLS, ways, pre);
+        }
+        memcpy(next, pre, sizeof(double) * CR_COLS * (size_t)n);
         memcpy(sync_next, sync, sync_bytes);
-        for (Py_ssize_t k = 0; k < n_sync && quiet; k++) quiet = sync_step(sync_next + k * SY_COLS, programs, cur, next, dt);
+        for (Py_ssize_t k = 0; k < n_keeps; k++)
+            next[(Py_ssize_t)keeps[k * KP_COLS + KP_ENTITY] * CR_COLS + CR_SPEED] =
+                pre[(Py_ssize_t)keeps[k * KP_COLS + KP_REF] * CR_COLS + CR_SPEED];
+        for (Py_ssize_t k = 0; k < n_sync && quiet; k++) quiet = sync_step(sync_next + k * SY_COLS, programs, pre, next, dt);
         for (Py_ssize_t i = 0; i < n && quiet; i++)
-            if (cur[i * CR_COLS + CR_PROFILE] >= 0)
-                quiet = profile_speed(cur + i * CR_COLS, times[done], times[done] + dt, &next[i * CR_COLS + CR_SPEED]);
+            if (pre[i * CR_COLS + CR_PROFILE] >= 0)
+                quiet = profile_speed(pre + i * CR_COLS, times[done], times[done] + dt, &next[i * CR_COLS + CR_SPEED]);
         for (Py_ssize_t i = 0; i < n && quiet; i++) {
-            quiet = cruise_move(PyTuple_GET_ITEM(ways, i), cur + i * CR_COLS, times[done], max_turn, dt, next + i * CR_COLS);
+            quiet = cruise_move(PyTuple_GET_ITEM(ways, i), pre + i * CR_COLS, times[done], max_turn, dt, next + i * CR_COLS);
         }
         for (double chain = 1; chain <= max_chain && quiet; chain++) /* (trailers front to back) */
             for (Py_ssize_t i = 0; i < n && quiet; i++) {
-                double *e = cur + i * CR_COLS;
+                double *e = pre + i * CR_COLS;
                 if (e[CR_MODE] == MODE_TOWED && e[CR_CHAIN] == chain)
                     quiet = towed_move(e, next + (Py_ssize_t)e[CR_TOW] * CR_COLS, dt, max_turn, next + i * CR_COLS);
             }
+        for (Py_ssize_t k = 0; k < n_keeps && quiet; k++) { /* (placed and moved: within the step's bounds) */
+            Py_ssize_t i = (Py_ssize_t)keeps[k * KP_COLS + KP_ENTITY] * CR_COLS;
+            quiet = within_bounds(cur + i, next + i, max_turn) && fabs(next[i + CR_S] - cur[i + CR_S]) <= cur[i + CR_MAX_DS];
+        }
         for (Py_ssize_t k = 0; k < n_guards && quiet; k++)
             quiet = first[k] != 0 && guard_state(guards + k * GD_COLS, next) == first[k];
         if (!quiet) break;
@@ -1380,7 +1463,7 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
         if (k1 != k0 || memcmp(pairs0, pairs1, sizeof(int) * (size_t)k0) != 0) break;
         double *row = out + (size_t)done * 6 * (size_t)n;
         for (Py_ssize_t i = 0; i < n; i++) {
-            double *e = cur + i * CR_COLS, *f = next + i * CR_COLS, moved = 0.0;
+            double *e = pre + i * CR_COLS, *f = next + i * CR_COLS, moved = 0.0;
             if (e[CR_MODE] >= 0) {
                 PyObject *dx = PyFloat_FromDouble(f[CR_X] - e[CR_X]), *dy = PyFloat_FromDouble(f[CR_Y] - e[CR_Y]);
                 PyObject *h = (dx && dy) ? PyObject_CallFunctionObjArgs(hyp, dx, dy, NULL) : NULL;
@@ -1489,12 +1572,13 @@ PyMODINIT_FUNC PyInit__core(void)
     Py_INCREF(&RiderType);
     static const char *const road_user[] = {ROAD_USER_COLUMNS(COLUMN_NAME) NULL};
     static const char *const sync[] = {SYNC_COLUMNS(COLUMN_NAME) NULL};
-    static const char *const guard[] = {GUARD_COLUMNS(COLUMN_NAME) NULL};
+    static const char *const guard[] = {GUARD_COLUMNS(COLUMN_NAME) NULL}, *const keep[] = {KEEP_COLUMNS(COLUMN_NAME) NULL};
     static const char *const quantity[] = {GUARD_QUANTITIES(COLUMN_NAME) NULL};
     static const char *const mode[] = {MODES(COLUMN_NAME) NULL}, *const shape[] = {SHAPES(COLUMN_NAME) NULL};
     static const char *const rule[] = {RULES(COLUMN_NAME) NULL};
-    PyObject *layout = Py_BuildValue("{s:N,s:N,s:N,s:N,s:N,s:N,s:N}", "road_user", names_tuple(road_user), "sync",
-                                     names_tuple(sync), "guard", names_tuple(guard), "guard_quantity",
+    PyObject *layout = Py_BuildValue("{s:N,s:N,s:N,s:N,s:N,s:N,s:N,s:N}", "road_user", names_tuple(road_user), "sync",
+                                     names_tuple(sync), "keep", names_tuple(keep), "guard", names_tuple(guard),
+                                     "guard_quantity",
                                      names_tuple(quantity), "mode", names_tuple(mode), "shape", names_tuple(shape),
                                      "rule", names_tuple(rule));
     if (!layout || PyModule_AddObject(m, "CRUISE_LAYOUT", layout) < 0 ||

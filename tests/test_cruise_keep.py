@@ -1,0 +1,207 @@
+"""Quiet stretches through a continuous LongitudinalDistanceAction without dynamic constraints (Euro
+NCAP CCFhol's obstruction vehicle, esmini's drop-bike): the core places the keeping road user at its gap
+before everyone moves, gives it its reference's speed, and the run equals the interpreter's step by step,
+bit for bit (tests/test_cruise.py's ``run_both``).
+
+The cases vary what the action reads (a distance or a time gap; between boxes or reference points; in the
+entity's frame or along the road; behind, ahead or on the side it starts), what the reference does (a
+speed transition, a synchronisation, another lane, the other direction on a curve) and what ends it (a
+SpeedAction of its own taking over, the road's end); a condition on the kept gap makes an event react.
+Each case also checks that the gap is kept where the road is straight (the comparison is not of two
+runs equally wrong) and that the core took most steps where it can."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from test_cruise import ROAD, _entity, _lane, assert_identical, run_both
+from xosc_parts import CAR, step_speed
+
+
+def _keep(ref: str, attrs: str) -> str:
+    return (
+        f'<PrivateAction><LongitudinalAction><LongitudinalDistanceAction entityRef="{ref}" continuous="true" {attrs}/>'
+        "</LongitudinalAction></PrivateAction>"
+    )
+
+
+def _speed_change(actor: str, speed: float, at: float, seconds: float) -> str:
+    return (
+        f'<ManeuverGroup maximumExecutionCount="1" name="{actor}g"><Actors selectTriggeringEntities="false">'
+        f'<EntityRef entityRef="{actor}"/></Actors><Maneuver name="{actor}m"><Event name="{actor}e" '
+        f'priority="override"><Action name="{actor}a"><PrivateAction><LongitudinalAction><SpeedAction>'
+        f'<SpeedActionDynamics dynamicsShape="linear" value="{seconds}" dynamicsDimension="time"/>'
+        f'<SpeedActionTarget><AbsoluteTargetSpeed value="{speed}"/></SpeedActionTarget></SpeedAction>'
+        "</LongitudinalAction></PrivateAction></Action><StartTrigger><ConditionGroup>"
+        f'<Condition name="{actor}c" delay="0" conditionEdge="none"><ByValueCondition>'
+        f'<SimulationTimeCondition value="{at}" rule="greaterThan"/></ByValueCondition></Condition>'
+        "</ConditionGroup></StartTrigger></Event></Maneuver></ManeuverGroup>"
+    )
+
+
+def _reacts(condition: str) -> str:
+    """Other slows to 5 m/s once ``condition`` holds."""
+    return (
+        '<ManeuverGroup maximumExecutionCount="1" name="rg"><Actors selectTriggeringEntities="false">'
+        '<EntityRef entityRef="Other"/></Actors><Maneuver name="rm"><Event name="react" priority="override">'
+        f'<Action name="ra">{step_speed(5.0)}</Action><StartTrigger><ConditionGroup>'
+        f'<Condition name="rc" delay="0" conditionEdge="none">{condition}</Condition>'
+        "</ConditionGroup></StartTrigger></Event></Maneuver></ManeuverGroup>"
+    )
+
+
+def scenario(tmp_path, keeper_lane: int, keeper_s: float, keep: str, events: str, end: float = 14.0):
+    """Lead (12 m/s, lane -1 of test_cruise's arc road, from s = 60) and Other (lane -2) drive on; Keeper
+    starts on ``keeper_lane`` at ``keeper_s`` and keeps its distance by ``keep`` from the start."""
+    (tmp_path / "arc.xodr").write_text(ROAD)
+    names = ("Lead", "Keeper", "Other")
+    keeper = _lane("Keeper", keeper_lane, keeper_s, 10.0).replace("</Private>", keep + "</Private>")
+    xosc = tmp_path / "k.xosc"
+    xosc.write_text(
+        f"""<OpenSCENARIO><FileHeader revMajor="1" revMinor="2" date="2024-01-01T00:00:00" description="" author=""/>
+<RoadNetwork><LogicFile filepath="arc.xodr"/></RoadNetwork>
+<Entities>{"".join(f'<ScenarioObject name="{n}">{CAR}</ScenarioObject>' for n in names)}</Entities>
+<Storyboard><Init><Actions>{_lane("Lead", -1, 60, 12)}{keeper}{_lane("Other", -2, 20, 11)}</Actions></Init>
+<Story name="s"><Act name="a">{events}
+<StartTrigger><ConditionGroup><Condition name="go" delay="0" conditionEdge="none"><ByValueCondition>
+<SimulationTimeCondition value="0" rule="greaterOrEqual"/></ByValueCondition></Condition></ConditionGroup>
+</StartTrigger></Act></Story>
+<StopTrigger><ConditionGroup><Condition name="end" delay="0" conditionEdge="none"><ByValueCondition>
+<SimulationTimeCondition value="{end}" rule="greaterThan"/></ByValueCondition></Condition></ConditionGroup>
+</StopTrigger></Storyboard></OpenSCENARIO>"""
+    )
+    return xosc
+
+
+GAP_CONDITION = _entity(
+    '<RelativeDistanceCondition entityRef="Lead" relativeDistanceType="cartesianDistance" value="9.87" '
+    'freespace="true" rule="lessThan"/>',
+    who="Other",
+)
+#: (keeper's lane, its start s, the action's attributes, the gap expected on the straight: "d" a distance
+#: between boxes, "ref" between reference points, "time" 1.5 s of the reference's speed, None: not checked)
+CASES = {
+    "behind_freespace_road": (-1, 40, 'distance="8" freespace="true" coordinateSystem="road"', ("box", 8.0)),
+    "behind_points_road": (-1, 40, 'distance="8" freespace="false" coordinateSystem="road"', ("s", 8.0)),
+    "behind_points_entity": (-1, 40, 'distance="8" freespace="false" coordinateSystem="entity"', None),
+    "time_gap": (-1, 40, 'timeGap="1.5" freespace="true" coordinateSystem="entity"', ("box_time", 1.5)),
+    "leading": (
+        -1, 90, 'distance="6" freespace="true" displacement="leadingReferencedEntity" coordinateSystem="road"',
+        ("box", -6.0),
+    ),
+    "any_side_ahead": (-2, 85, 'distance="5" freespace="false" displacement="any" coordinateSystem="road"', None),
+    "other_lane": (-2, 45, 'distance="10" freespace="true" coordinateSystem="road"', None),
+}  # fmt: skip
+
+
+def _box_gap(a, b, i: int) -> float:
+    """The free gap from a to b along a's heading at sample i (both cars: 4.5 m, centre 1.4 m ahead)."""
+    c, s = math.cos(a.yaw[i]), math.sin(a.yaw[i])
+    ax, ay = a.x[i] + 1.4 * c, a.y[i] + 1.4 * s
+    bx, by = b.x[i] + 1.4 * math.cos(b.yaw[i]), b.y[i] + 1.4 * math.sin(b.yaw[i])
+    d = c * (bx - ax) + s * (by - ay)
+    return d - 4.5 if d > 0 else d + 4.5
+
+
+@pytest.mark.parametrize("lead_moves", ["transition", "steady"])
+@pytest.mark.parametrize("case", sorted(CASES))
+def test_kept_distances_in_quiet_steps_equal_the_stepped_run(tmp_path, monkeypatch, case, lead_moves):
+    lane, s0, attrs, expect = CASES[case]
+    events = _reacts(GAP_CONDITION)
+    if lead_moves == "transition":
+        events += _speed_change("Lead", 16.0, 2.0, 3.0)
+    fast, cruised, slow = run_both(scenario(tmp_path, lane, s0, _keep("Lead", attrs), events), monkeypatch)
+    assert_identical(fast, slow)
+    keeper, lead = fast.traces["Keeper"], fast.traces["Lead"]
+    assert np.array_equal(keeper.speed[1:], lead.speed[:-1])  # (each step at the speed the reference had)
+    straight = np.flatnonzero((lead.x < 95.0) & (keeper.x < 95.0) & (fast.t > 0.5))
+    assert straight.size > 20
+    if expect is not None:
+        kind, value = expect
+        for i in straight[::7]:
+            if kind == "s":
+                gap = lead.x[i] - keeper.x[i]  # (along the straight: s is x)
+            else:
+                gap = _box_gap(keeper, lead, i)
+            want = value * lead.speed[i - 1] if kind == "box_time" else value
+            # placed before the move, then both move a step at the speeds they had
+            assert gap == pytest.approx(want, abs=abs(lead.speed[i] - lead.speed[i - 1]) * 0.01 + 1e-9), (case, i)
+    assert cruised > 0.6 * len(fast.t), f"{case}: only {cruised} of {len(fast.t)} steps cruised"
+
+
+def test_a_keeper_taken_over_or_at_the_road_end_steps_as_the_interpreter_does(tmp_path, monkeypatch):
+    """A SpeedAction of the keeper's own ends the action in a stretch's middle; the reference drives on
+    to the road's end and stands there while the keeper closes in."""
+    events = _speed_change("Keeper", 3.0, 5.55, 1.0) + _reacts(GAP_CONDITION)
+    keep = _keep("Lead", 'distance="8" freespace="true" coordinateSystem="road"')
+    fast, cruised, slow = run_both(scenario(tmp_path, -1, 40, keep, events), monkeypatch)
+    assert_identical(fast, slow)
+    assert fast.traces["Keeper"].speed[-1] == 3.0 and cruised > 0.6 * len(fast.t)
+    keep = _keep("Lead", 'distance="3" freespace="false" coordinateSystem="road"')
+    fast, cruised, slow = run_both(scenario(tmp_path, -1, 40, keep, "", end=40.0), monkeypatch)
+    assert_identical(fast, slow)
+    assert fast.traces["Lead"].speed[-1] == 0.0 and cruised > 0.5 * len(fast.t)
+
+
+def test_a_keeper_of_a_synchronised_reference_and_one_started_after_it(tmp_path, monkeypatch):
+    """Lead is synchronised to reach s = 200 when Other does; Keeper keeps its gap to Lead from the start
+    (the core places it before the synchronisation steps, as the interpreter does) — and, in the second
+    run, only from 1 s on, after the synchronisation (the interpreter steps it, the run is the same)."""
+    sync = (
+        '<ManeuverGroup maximumExecutionCount="1" name="sg"><Actors selectTriggeringEntities="false">'
+        '<EntityRef entityRef="Lead"/></Actors><Maneuver name="sm"><Event name="se" priority="override">'
+        '<Action name="sa"><PrivateAction><SynchronizeAction masterEntityRef="Other"><TargetPositionMaster>'
+        '<LanePosition roadId="1" laneId="-2" s="200"/></TargetPositionMaster><TargetPosition>'
+        '<LanePosition roadId="1" laneId="-1" s="200"/></TargetPosition><FinalSpeed><AbsoluteSpeed value="9"/>'
+        "</FinalSpeed></SynchronizeAction></PrivateAction></Action><StartTrigger><ConditionGroup>"
+        '<Condition name="sc" delay="0" conditionEdge="none"><ByValueCondition><SimulationTimeCondition '
+        'value="0.2" rule="greaterThan"/></ByValueCondition></Condition></ConditionGroup></StartTrigger></Event>'
+        "</Maneuver></ManeuverGroup>"
+    )
+    keep = _keep("Lead", 'distance="8" freespace="true" coordinateSystem="road"')
+    fast, cruised, slow = run_both(scenario(tmp_path, -1, 40, keep, sync), monkeypatch)
+    assert_identical(fast, slow)
+    lead = fast.traces["Lead"]
+    assert np.ptp(lead.speed) > 1.0 and cruised > 0.6 * len(fast.t)  # (the synchronisation set its speeds)
+    late = keep.replace("<PrivateAction>", "", 1).replace("</PrivateAction>", "", 1)
+    later = (
+        '<ManeuverGroup maximumExecutionCount="1" name="kg"><Actors selectTriggeringEntities="false">'
+        '<EntityRef entityRef="Keeper"/></Actors><Maneuver name="km"><Event name="ke" priority="override">'
+        f'<Action name="ka"><PrivateAction>{late}</PrivateAction></Action><StartTrigger><ConditionGroup>'
+        '<Condition name="kc" delay="0" conditionEdge="none"><ByValueCondition><SimulationTimeCondition '
+        'value="1" rule="greaterThan"/></ByValueCondition></Condition></ConditionGroup></StartTrigger></Event>'
+        "</Maneuver></ManeuverGroup>"
+    )
+    path = scenario(tmp_path, -1, 40, "", sync + later)
+    fast, _, slow = run_both(path, monkeypatch)
+    assert_identical(fast, slow)
+    keeper, lead = fast.traces["Keeper"], fast.traces["Lead"]
+    # (stepped after the synchronisation, it reads the speed that step gives the reference)
+    assert np.array_equal(keeper.speed[-50:], lead.speed[-50:])
+    assert abs(_box_gap(keeper, lead, 150) - 8.0) < 0.5
+
+
+@pytest.mark.parametrize(
+    "keep, why",
+    [
+        ({"ENTITY": 0.0, "REF": 2.0}, "not there"),
+        ({"ENTITY": 1.0, "REF": 1.0}, "not there"),
+        ({"ENTITY": 0.0, "REF": 1.0}, "keeps its lane"),  # (road user 0 drives straight on, off any lane)
+    ],
+)
+def test_the_core_refuses_a_keep_it_cannot_place(keep, why):
+    from test_cruise_distances import _straight
+
+    from vei_scenario.core import _core, layout
+
+    columns = layout("keep")
+    row = [0.0] * len(columns)
+    for name, v in ({"VALUE": 5.0, "SIDE": 1.0} | keep).items():
+        row[columns[name]] = v
+    state = np.asarray(_straight(0.0, 0.0, 0.0, 8.0) + _straight(50.0, 0.0, 0.0, 8.0), float).tobytes()
+    clock = np.arange(10, dtype=float).tobytes()
+    with pytest.raises(ValueError, match=why):
+        _core.cruise((None, None), state, b"", np.asarray(row, float).tobytes(), b"", b"", clock, math.inf, 0.1,
+                     math.hypot)  # fmt: skip
