@@ -20,10 +20,23 @@ from test_cruise import ROAD, _entity, _lane, assert_identical, run_both
 from xosc_parts import CAR, step_speed
 
 
-def _keep(ref: str, attrs: str) -> str:
+def _keep(ref: str, attrs: str, constraints: str = "") -> str:
+    """A continuous LongitudinalDistanceAction to ``ref``; ``constraints``: DynamicConstraints' attributes."""
+    inner = f"<DynamicConstraints {constraints}/>" if constraints else ""
     return (
-        f'<PrivateAction><LongitudinalAction><LongitudinalDistanceAction entityRef="{ref}" continuous="true" {attrs}/>'
-        "</LongitudinalAction></PrivateAction>"
+        f'<PrivateAction><LongitudinalAction><LongitudinalDistanceAction entityRef="{ref}" continuous="true" {attrs}>'
+        f"{inner}</LongitudinalDistanceAction></LongitudinalAction></PrivateAction>"
+    )
+
+
+def _follow_speed(ref: str, value: float, kind: str, seconds: float = 0.0) -> str:
+    """A SpeedAction to ``ref``'s speed plus (``kind`` delta) or times (factor) ``value``, kept continuously."""
+    shape = "step" if seconds == 0.0 else "linear"
+    return (
+        "<PrivateAction><LongitudinalAction><SpeedAction>"
+        f'<SpeedActionDynamics dynamicsShape="{shape}" value="{seconds}" dynamicsDimension="time"/><SpeedActionTarget>'
+        f'<RelativeTargetSpeed entityRef="{ref}" value="{value}" speedTargetValueType="{kind}" continuous="true"/>'
+        "</SpeedActionTarget></SpeedAction></LongitudinalAction></PrivateAction>"
     )
 
 
@@ -205,3 +218,70 @@ def test_the_core_refuses_a_keep_it_cannot_place(keep, why):
     with pytest.raises(ValueError, match=why):
         _core.cruise((None, None), state, b"", np.asarray(row, float).tobytes(), b"", b"", clock, math.inf, 0.1,
                      math.hypot)  # fmt: skip
+
+
+SPRINGS = {
+    "distance": ('distance="12" freespace="true" coordinateSystem="entity"', 'maxAcceleration="3" maxDeceleration="5"'),
+    "time_gap_rates": (
+        'timeGap="1.2" freespace="true" coordinateSystem="entity" displacement="any"',
+        'maxAcceleration="2.5" maxDeceleration="4" maxAccelerationRate="1.5" maxDecelerationRate="3" maxSpeed="14"',
+    ),
+    "along_road": (
+        'distance="15" freespace="false" coordinateSystem="road"', 'maxAcceleration="2" maxDeceleration="6"'
+    ),
+}  # fmt: skip
+
+
+@pytest.mark.parametrize("case", sorted(SPRINGS))
+def test_a_kept_distance_with_dynamic_constraints_in_quiet_steps_equals_the_stepped_run(tmp_path, monkeypatch, case):
+    """The spring (its acceleration limited, and the change of it where rates are given) drives Keeper
+    to its gap behind Lead while Lead changes speed; Other keeps its own gap to Keeper with the same
+    spring, stepped after it (it sees the speed Keeper's step set, as in the interpreter)."""
+    attrs, constraints = SPRINGS[case]
+    events = _reacts(GAP_CONDITION) + _speed_change("Lead", 16.0, 4.0, 3.0)
+    second = _keep("Keeper", 'distance="9" freespace="true" coordinateSystem="entity"', "maxAcceleration=\"4\" "
+                   'maxDeceleration="8"')  # fmt: skip
+    path = scenario(tmp_path, -1, 20, _keep("Lead", attrs, constraints), events, end=16.0)
+    text = path.read_text().replace(
+        _lane("Other", -2, 20, 11), _lane("Other", -1, 2, 11).replace("</Private>", second + "</Private>")
+    )
+    path.write_text(text)
+    fast, cruised, slow = run_both(path, monkeypatch)
+    assert_identical(fast, slow)
+    keeper, lead = fast.traces["Keeper"], fast.traces["Lead"]
+    limits = [float(v) for v in (constraints.split('"')[1], constraints.split('"')[3])]
+    assert np.all(np.diff(keeper.speed) <= limits[0] * 0.01 + 1e-9) and np.all(
+        np.diff(keeper.speed) >= -limits[1] * 0.01 - 1e-9
+    )
+    assert np.ptp(keeper.speed) > 1.0  # (it did accelerate and brake)
+    assert _box_gap(keeper, lead, -1) > 0.0  # (behind Lead)
+    if "maxSpeed" in constraints:  # (held below Lead's 16 m/s: it falls back)
+        assert keeper.speed.max() == 14.0 and _box_gap(keeper, lead, -1) > 30.0
+    assert cruised > 0.5 * len(fast.t), f"{case}: only {cruised} of {len(fast.t)} steps cruised"
+
+
+@pytest.mark.parametrize("where", ["init", "storyboard"])
+@pytest.mark.parametrize("kind, value", [("delta", -1.5), ("factor", 0.8)])
+def test_a_continuous_relative_speed_in_quiet_steps_equals_the_stepped_run(tmp_path, monkeypatch, where, kind, value):
+    """Keeper takes Lead's speed (less 1.5 m/s, or 80 % of it) every step, from Init or from an event
+    after a transition of its own, while Lead changes speed: the core gives it that speed each step."""
+    follow = _follow_speed("Lead", value, kind, 0.0 if where == "init" else 1.0)
+    events = _reacts(GAP_CONDITION) + _speed_change("Lead", 16.0, 4.0, 3.0)
+    if where == "init":  # (its only longitudinal action: an Init step speed before it would keep it)
+        path = scenario(tmp_path, -2, 40, follow, events)
+        path.write_text(path.read_text().replace(step_speed(10.0) + follow, follow))
+    else:
+        start = (
+            '<ManeuverGroup maximumExecutionCount="1" name="fg"><Actors selectTriggeringEntities="false">'
+            '<EntityRef entityRef="Keeper"/></Actors><Maneuver name="fm"><Event name="fe" priority="override">'
+            f'<Action name="fa">{follow}</Action><StartTrigger><ConditionGroup><Condition name="fc" delay="0" '
+            'conditionEdge="none"><ByValueCondition><SimulationTimeCondition value="0.5" rule="greaterThan"/>'
+            "</ByValueCondition></Condition></ConditionGroup></StartTrigger></Event></Maneuver></ManeuverGroup>"
+        )
+        path = scenario(tmp_path, -2, 40, "", events + start)
+    fast, cruised, slow = run_both(path, monkeypatch)
+    assert_identical(fast, slow)
+    keeper, lead = fast.traces["Keeper"], fast.traces["Lead"]
+    want = lead.speed[-101:-1] + value if kind == "delta" else lead.speed[-101:-1] * value
+    assert np.array_equal(keeper.speed[-100:], want)  # (each step: the reference's speed at its start)
+    assert cruised > 0.6 * len(fast.t), f"only {cruised} of {len(fast.t)} steps cruised"

@@ -10,6 +10,7 @@ from __future__ import annotations
 import math
 
 from vei_scenario.interpreter.action_base import Action
+from vei_scenario.interpreter.clock import step_time
 from vei_scenario.interpreter.controllers import make_controller
 from vei_scenario.interpreter.entities import PathFollower, SpeedProfile, transition_fraction
 from vei_scenario.interpreter.positions import POSITION_KINDS, entity_lane, lane_shift, lane_state_at, tilt
@@ -347,6 +348,11 @@ class Speed(Action):
 
     continuous = False  # RelativeTargetSpeed continuous="true": keep following the reference's speed
 
+    @property
+    def ref(self) -> str | None:
+        """The entity a relative target speed is taken from (None: an absolute one)."""
+        return self.target[2]
+
     def start(self, ctx) -> None:
         e = ctx.entities[self.entity]
         kind, value, ref, vtype = self.target
@@ -402,10 +408,40 @@ class Speed(Action):
 
     def carried(self, ctx) -> bool:
         """A transition under way: the core sets the speed as it goes and stops before the step that
-        ends it (one following another entity's speed continuously is worked out each step)."""
+        ends it; one following another entity's speed continuously, once its transition is over: the
+        core gives it that speed each step (:meth:`core_columns`)."""
         e = ctx.entities[self.entity]
         p = e.speed_profile
-        return not self.continuous and e.longitudinal is self and p is not None and ctx.t < p.t0 + p.duration - 1e-9
+        if e.longitudinal is not self:
+            return False
+        if self.continuous:
+            return p is None or (p.duration <= 0.0 and ctx.t >= p.t0 - 1e-9)
+        return p is not None and ctx.t < p.t0 + p.duration - 1e-9
+
+    def core_columns(self, ctx, index: dict[str, int], keep: dict[str, int]) -> list[float] | None:
+        """A continuous relative target speed after its transition as the core steps it (the KP_*
+        columns ``keep`` names, FOLLOW): each step its entity takes its reference's speed at the step's
+        start plus (times) the value, as :meth:`update` sets it. None when not carried."""
+        e = ctx.entities[self.entity]
+        if not self.continuous or not self.carried(ctx) or e.towed_by is not None or e.deleted:
+            return None
+        _, value, ref, vtype = self.target
+        if ctx.entities[ref].deleted:
+            return None
+        row = [0.0] * len(keep)
+        row[keep["ENTITY"]], row[keep["REF"]], row[keep["VALUE"]] = index[self.entity], index[ref], value
+        row[keep["FOLLOW"]], row[keep["BY_FACTOR"]] = 1.0, float(vtype != "delta")
+        return row
+
+    def after_core(self, ctx, stepped_before: bool) -> None:
+        """After the core's stretch: the step profile :meth:`update` leaves at the end of a step, when
+        it is updated there (a storyboard action's was there when the stretch began)."""
+        if stepped_before:
+            _, value, ref, vtype = self.target
+            base = ctx.entities[ref].speed
+            target = base + value if vtype == "delta" else base * value
+            ctx.entities[self.entity].speed_profile = SpeedProfile(target, target, step_time(ctx.step - 1, ctx.dt),
+                                                                   0.0, "step")  # fmt: skip
 
 
 class FollowTrajectory(Action):

@@ -44,6 +44,8 @@ _STATUS = {_TIMED: "replay", _TIMED_FOLLOW: "follow", _TOWED: "towed"}
 _SHAPES = {name.lower(): float(code) for name, code in layout("shape").items()}
 #: Core columns of a synchronisation and of a guard (core_module.c: SYNC_COLUMNS, GUARD_COLUMNS).
 _SY_COLS = len(layout("sync"))
+_KEEP = layout("keep")
+_KP_COLS = len(_KEEP)
 _GUARD = layout("guard")
 #: Most steps in one call of the core (the poses it returns for them are held in memory at once).
 CHUNK = 2000
@@ -155,7 +157,7 @@ def _columns(
             cols += _absent(e)
             continue
         f = e.follower
-        p = e.speed_profile
+        p = e.speed_profile if e.name not in kept else None  # (a kept one's speed is the core's)
         row = {"X": e.x, "Y": e.y, "YAW": e.yaw, "CENTER_X": e.center_x, "LENGTH": e.length, "WIDTH": e.width}
         row |= {"ODOMETER": e.odometer, "SPEED": e.speed, "LAST_MOVED": e.last_step_m, "ACCEL": e.accel}
         row |= {"PROFILE": -1.0, "TOW": -1.0}
@@ -290,18 +292,30 @@ class _Stepped:
     programs: list = field(default_factory=list)
     keeps: list = field(default_factory=list)
     keep_cols: list = field(default_factory=list)
+    follows: list = field(default_factory=list)  # (a continuous relative speed, whether it had a profile)
 
 
-def _stepped(ctx) -> _Stepped | None:
-    """The actions stepping before the moves in the core's columns, or None when one steps that the
-    core does not take (or a synchronisation's distances are not along the path or roads its parties
-    keep). The core places the distance keepers before the synchronisations step, so they must come
-    first here too, keep their distances to road users no other keeper moves and set no master's speed."""
+def _stepped(ctx, entities: list) -> _Stepped | None:
+    """The actions setting speeds or places before the moves in the core's columns, or None when one
+    does it as the core does not (or a synchronisation's distances are not along the path or roads its
+    parties keep). The core places the distance keepers before the synchronisations step, so they must
+    come first here too; no road user a keeper places is another's reference, and none sets a master's
+    speed. A continuous relative speed reads its reference's speed at the step's start, as the core."""
+    from vei_scenario.interpreter.actions import Speed
     from vei_scenario.interpreter.longitudinal import LongitudinalDistance
     from vei_scenario.interpreter.synchronize import Synchronize
 
     out = _Stepped()
     index = {n: i for i, n in enumerate(ctx.entities)}
+    for e in entities:
+        a = e.longitudinal
+        if type(a) is Speed and a.continuous and not a.done and not e.deleted:
+            c = a.core_columns(ctx, index, _KEEP)
+            if c is None:
+                return None
+            out.keeps.append(a)
+            out.keep_cols += c
+            out.follows.append((a, e.speed_profile is not None))
     for a in ctx.stepping:
         if type(a) is LongitudinalDistance and not out.syncs:
             c = a.core_columns(ctx, index)
@@ -320,7 +334,9 @@ def _stepped(ctx) -> _Stepped | None:
     if len(synced) < len(actions) or any(a.master in synced for a in actions):
         return None
     kept = {a.entity for a in out.keeps}
-    if len(kept) < len(out.keeps) or kept & (synced | {a.master for a in actions} | {a.ref for a in out.keeps}):
+    placed = {a.entity for a in out.keeps if type(a) is LongitudinalDistance and a.placing}
+    refs = {a.ref for a in out.keeps}
+    if len(kept) < len(out.keeps) or kept & (synced | {a.master for a in actions}) or placed & refs:
         return None
     if any(a.final is not None and a.final[0] == "relative" and ctx.entities[a.master].speed_profile for a in actions):
         return None  # (a final speed relative to a master whose speed changes: worked out each step)
@@ -376,7 +392,7 @@ def cruise(ctx, storyboard, entities: list, recording, max_time: float, offers: 
     triggers = storyboard.watching()
     if triggers is None:
         return 0
-    stepped = _stepped(ctx) if ctx.stepping else _Stepped()
+    stepped = _stepped(ctx, entities)
     if stepped is None:
         return 0
     actions = stepped.syncs
@@ -405,7 +421,7 @@ def cruise(ctx, storyboard, entities: list, recording, max_time: float, offers: 
     columns = (f64("d", cols).tobytes(), f64("d", stepped.sync_cols).tobytes(), f64("d", stepped.keep_cols).tobytes(),
                f64("d", stepped.programs).tobytes(), f64("d", bounds.guards).tobytes())  # fmt: skip
     clock = packed_step_times(step0, step0 + skipped + 1, dt)  # (each step's start)
-    n, poses, state, sync_state = _core.cruise(ways, *columns, clock, bounds.turn, dt, math.hypot)
+    n, poses, state, sync_state, keep_state = _core.cruise(ways, *columns, clock, bounds.turn, dt, math.hypot)
     # The core stops before a step that is not quiet (an action ending, a guard's comparison turning):
     # the interpreter takes that one, and the steps after it are offered again at once, unless the
     # core has refused the first step before (a state that lasts, such as a distance on its threshold).
@@ -420,6 +436,10 @@ def cruise(ctx, storyboard, entities: list, recording, max_time: float, offers: 
     sync_state = memoryview(sync_state).cast("d")
     for k, a in enumerate(actions):
         a.take_core_columns(sync_state[k * _SY_COLS : (k + 1) * _SY_COLS])
+    keep_state = memoryview(keep_state).cast("d")
+    follows = len(stepped.follows)
+    for k, a in enumerate(stepped.keeps[follows:], follows):
+        a.take_core_columns(keep_state[k * _KP_COLS : (k + 1) * _KP_COLS])
     state = memoryview(state).cast("d")
     statuses = [_STATUS.get(state[i * _COLS + _MODE], "default") if not e.deleted else "deleted"
                 for i, e in enumerate(entities)]  # fmt: skip
@@ -427,6 +447,8 @@ def cruise(ctx, storyboard, entities: list, recording, max_time: float, offers: 
     _commit(ctx, entities, memoryview(poses).cast("d"), state, statuses, n)
     ctx.step = step0 + n
     ctx.t = step_time(ctx.step, dt)
+    for a, stepped_before in stepped.follows:
+        a.after_core(ctx, stepped_before)
     return n
 
 

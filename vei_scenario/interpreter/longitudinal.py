@@ -101,7 +101,7 @@ class LongitudinalDistance(SteppedLongitudinal):
         # (esmini measures first; a gap that its own measure never confirms must not lock the entity)
         if not self.continuous and (abs(error) < 0.1 or self.placed):
             self.done = True
-        if math.isinf(self.max_accel) and math.isinf(self.max_decel):  # at the distance, at its speed
+        if self.placing:  # at the distance, at its speed
             if e.lane is not None and ctx.roads is not None:
                 lane_keep(e, error, ctx)
             else:
@@ -122,25 +122,43 @@ class LongitudinalDistance(SteppedLongitudinal):
 
     # --- in the core's quiet stretches (interpreter/cruise.py, core_module.c: keep_step) -------------
     def carried(self, ctx) -> bool:  # (whether its road users suit the core: core_columns, at the stretch)
-        return self.continuous and not self.done and math.isinf(self.max_accel) and math.isinf(self.max_decel)
+        return self.continuous and not self.done
+
+    @property
+    def placing(self) -> bool:
+        """Whether it places its entity at the gap (no dynamic constraints) rather than driving it there."""
+        return math.isinf(self.max_accel) and math.isinf(self.max_decel)
 
     def core_columns(self, ctx, index: dict[str, int]) -> list[float] | None:
-        """This action as the core steps it (KP_* columns): a continuous one without dynamic constraints
-        whose entity keeps its lane (no lane change, no speed of its own) and whose reference, for a gap
-        along the road, keeps its lane too; else None (the interpreter steps it)."""
-        if not self.carried(ctx) or ctx.initializing or ctx.settling or ctx.roads is None:
+        """This action as the core steps it (KP_* columns), or None (the interpreter steps it). The core
+        takes a continuous one whose entity has no speed of its own (no transition, no timed path, not
+        towed) and, placed at the gap, keeps its lane without changing lanes; a gap along the road when
+        both keep their lanes."""
+        if not self.carried(ctx) or ctx.initializing or ctx.settling:
             return None
         e, ref = ctx.entities[self.entity], ctx.entities[self.ref]
-        if e.lane is None or e.follower is not None or e.lateral is not None or e.speed_profile is not None:
+        if e.deleted or ref.deleted or e.towed_by is not None or e.speed_profile is not None:
             return None
-        if e.deleted or ref.deleted or e.towed_by is not None:
+        on_lane = e.lane is not None and e.follower is None and ctx.roads is not None
+        if self.placing and not (on_lane and e.lateral is None):
             return None
+        if e.follower is not None and e.follower.timing is not None and e.follower.polyline.timed:
+            return None  # (a timed path sets its speed)
         la, lb = e.lane, ref.lane
-        along = not self.freespace and self.system in ("road", "lane") and lb is not None and la.road == lb.road
-        if along and (ref.follower is not None or ref.towed_by is not None):
+        along = not self.freespace and self.system in ("road", "lane") and la is not None and lb is not None
+        along = along and la.road == lb.road
+        if along and not (on_lane and ref.follower is None and ref.towed_by is None):
             return None  # (a gap along the road from a lane the core does not keep)
         row = [0.0] * len(_KEEP)
         row[_KEEP["ENTITY"]], row[_KEEP["REF"]] = index[self.entity], index[self.ref]
         row[_KEEP["VALUE"]], row[_KEEP["BY_TIME"]], row[_KEEP["SIDE"]] = self.value, float(self.by_time), self.side
         row[_KEEP["FREESPACE"]], row[_KEEP["ALONG_ROAD"]] = float(self.freespace), float(along)
+        if not self.placing:
+            row[_KEEP["SPRING"]], row[_KEEP["MAX_ACCEL"]], row[_KEEP["MAX_DECEL"]] = 1.0, self.max_accel, self.max_decel
+            row[_KEEP["MAX_SPEED"]], row[_KEEP["ACCEL"]] = self.max_speed, self.accel
+            row[_KEEP["ACCEL_RATE"]], row[_KEEP["DECEL_RATE"]] = self.accel_rate, self.decel_rate
         return row
+
+    def take_core_columns(self, row) -> None:
+        """The state the core left it in (its spring's last acceleration)."""
+        self.accel = row[_KEEP["ACCEL"]]

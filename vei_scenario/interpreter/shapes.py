@@ -30,11 +30,14 @@ def clothoid_points(
     along the arc (1/m²) and ``length``; the last sample is the end point."""
     n = max(2, math.ceil(length / _FINE_M) + 1)
     s = np.linspace(0.0, length, n)
-    h = h0 + curvature * s + 0.5 * curvature_rate * s * s
-    ds = np.diff(s)
     keep = np.arange(0, n, _KEEP_EVERY)
     if keep[-1] != n - 1:
         keep = np.append(keep, n - 1)
+    if curvature == 0.0 and curvature_rate == 0.0:  # a straight line: its points in closed form
+        s = s[keep]
+        return x0 + math.cos(h0) * s, y0 + math.sin(h0) * s, np.full(len(keep), h0 + 0.0)
+    h = h0 + curvature * s + 0.5 * curvature_rate * s * s
+    ds = np.diff(s)
     out = []
     for start, f in ((x0, np.cos(h)), (y0, np.sin(h))):  # (each sample's cos and sin once)
         v = np.empty(n)

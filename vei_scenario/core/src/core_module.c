@@ -1146,12 +1146,19 @@ static int cruise_move(PyObject *way, const double *e, double t, double max_turn
     return within_bounds(e, next, max_turn);
 }
 
-/* a continuous LongitudinalDistanceAction without dynamic constraints (longitudinal.LongitudinalDistance):
- * its road user (on its lane, placed at the gap before everyone moves) and the one it keeps the gap to, the
- * distance or time gap, whether it is a time gap, the side (+1: behind the reference), whether the gap is
- * between the boxes, and whether it is a difference of s (both on one road, measured along it) */
-#define KEEP_COLUMNS(F) F(ENTITY) F(REF) F(VALUE) F(BY_TIME) F(SIDE) F(FREESPACE) F(ALONG_ROAD)
+/* a continuous LongitudinalDistanceAction (longitudinal.LongitudinalDistance): its road user and the one it
+ * keeps the gap to, the distance or time gap, whether it is a time gap, the side (+1: behind the reference),
+ * whether the gap is between the boxes, and whether it is a difference of s (both on one road, measured along
+ * it); without dynamic constraints (SPRING 0) the road user is placed at the gap along its lane before everyone
+ * moves and goes on at its reference's speed; with them (SPRING 1) a damped spring on the gap sets its speed
+ * within the limits, ACCEL the acceleration it gave last. FOLLOW 1: a SpeedAction's continuous RelativeTargetSpeed
+ * (actions.Speed) instead, the road user at its reference's speed plus VALUE (times VALUE: BY_FACTOR) */
+#define KEEP_COLUMNS(F)                                                                                          \
+    F(ENTITY) F(REF) F(VALUE) F(BY_TIME) F(SIDE) F(FREESPACE) F(ALONG_ROAD) F(SPRING) F(MAX_ACCEL) F(MAX_DECEL)  \
+    F(MAX_SPEED) F(ACCEL_RATE) F(DECEL_RATE) F(ACCEL) F(FOLLOW) F(BY_FACTOR)
 #define KP_ENUM(name) KP_##name,
+/* longitudinal.SPRING_PER_ACCEL: the spring's stiffness per m/s^2 of permitted acceleration (1/s^2) */
+#define SPRING_PER_ACCEL 0.4
 enum { KEEP_COLUMNS(KP_ENUM) KP_COLS };
 
 /* longitudinal.longitudinal_gap: the signed distance from road user a to b along a's heading */
@@ -1174,15 +1181,44 @@ static double keep_gap(const double *kp, const double *a, const double *b)
     return c * (b[CR_X] - a[CR_X]) + s * (b[CR_Y] - a[CR_Y]);
 }
 
-/* LongitudinalDistance.step: the road user of keep kp put at its gap along its lane (motion.lane_keep) in st
- * (the caller gives it its reference's speed); 0 when that leaves its road or lane (the interpreter takes the
- * step) */
-static int keep_step(const double *kp, PyObject *ways, double *st)
+/* Python's min(a, b) and max(a, b) of two floats: the first unless the second is smaller (larger), so zeros
+ * keep their sign and a NaN goes where Python's would */
+static double py_min(double a, double b) { return b < a ? b : a; }
+static double py_max(double a, double b) { return b > a ? b : a; }
+
+/* the gap of keep kp now less the gap it keeps */
+static double keep_error(const double *kp, const double *e, const double *ref, double ref_speed)
+{
+    double wanted = kp[KP_SIDE] * (kp[KP_BY_TIME] != 0.0 ? fabs(ref_speed) * kp[KP_VALUE] : kp[KP_VALUE]);
+    return keep_gap(kp, e, ref) - wanted;
+}
+
+/* LongitudinalDistance.step's spring: the speed of keep kp's road user for the coming step (st: where everyone
+ * is; ref_speed: its reference's speed as the keeps stepped before this one left it), its acceleration kept in
+ * kp */
+static double keep_spring(double *kp, const double *st, double ref_speed, double dt)
+{
+    const double *e = st + (Py_ssize_t)kp[KP_ENTITY] * CR_COLS, *ref = st + (Py_ssize_t)kp[KP_REF] * CR_COLS;
+    double error = keep_error(kp, e, ref, ref_speed), max_accel = kp[KP_MAX_ACCEL], max_decel = kp[KP_MAX_DECEL];
+    double k = (error < 0.0 ? max_accel : max_decel) * SPRING_PER_ACCEL;
+    double acc = error * k - (e[CR_SPEED] - ref_speed) * 2.0 * sqrt(k), last = kp[KP_ACCEL];
+    acc = py_max(-max_decel, py_min(max_accel, acc));
+    if (acc < 0.0 && acc < last)
+        acc = py_max(last - kp[KP_DECEL_RATE] * dt, acc);
+    else if (acc >= 0.0 && acc > last)
+        acc = py_min(last + kp[KP_ACCEL_RATE] * dt, acc);
+    kp[KP_ACCEL] = acc;
+    return py_max(-kp[KP_MAX_SPEED], py_min(kp[KP_MAX_SPEED], e[CR_SPEED] + acc * dt));
+}
+
+/* LongitudinalDistance.step without dynamic constraints: the road user of keep kp put at its gap along its lane
+ * (motion.lane_keep) in st (the caller gives it its reference's speed); 0 when that leaves its road or lane
+ * (the interpreter takes the step) */
+static int keep_place(const double *kp, PyObject *ways, double *st, double ref_speed)
 {
     Py_ssize_t i = (Py_ssize_t)kp[KP_ENTITY];
     double *e = st + i * CR_COLS, *ref = st + (Py_ssize_t)kp[KP_REF] * CR_COLS;
-    double wanted = kp[KP_SIDE] * (kp[KP_BY_TIME] != 0.0 ? fabs(ref[CR_SPEED]) * kp[KP_VALUE] : kp[KP_VALUE]);
-    double error = keep_gap(kp, e, ref) - wanted, s1, out[4];
+    double error = keep_error(kp, e, ref, ref_speed), s1, out[4];
     int lane = (int)e[CR_LANE], lane1, forward = e[CR_FORWARD] != 0.0;
     if (lane_step(&((RoadObject *)PyTuple_GET_ITEM(ways, i))->r, e[CR_S], lane, e[CR_OFFSET], error, forward, &s1, &lane1, out) != 1 ||
         lane1 != lane)
@@ -1299,7 +1335,7 @@ static int guard_state(const double *g, const double *st)
     return 1 + rule_holds((int)g[GD_RULE], q, g[GD_VALUE]);
 }
 
-/* cruise(ways, state, syncs, keeps, programs, guards, times, max_turn, dt, hypot) -> (n, poses, state, syncs): up to
+/* cruise(ways, state, syncs, keeps, programs, guards, times, max_turn, dt, hypot) -> (n, poses, state, syncs, keeps): up to
  * n_max steps (times: the simulation time at the start of each) of every road user (ways: per road
  * user its Road (mode 1), its Polyline (mode 2) or None), the kept distances (KP_COLS each) placing their road
  * users first, then the synchronisations (SY_COLS each) and the running transitions of SpeedActions setting
@@ -1321,7 +1357,7 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
                                          "guards bytes, times bytes, max_turn, dt > 0, hypot)");
         return NULL;
     }
-    const double *keeps = (const double *)PyBytes_AS_STRING(keep_cols);
+    const double *keeps0 = (const double *)PyBytes_AS_STRING(keep_cols);
     Py_ssize_t n_keeps = PyBytes_GET_SIZE(keep_cols) / (Py_ssize_t)(sizeof(double) * KP_COLS);
     const double *guards = (const double *)PyBytes_AS_STRING(guard_cols);
     Py_ssize_t n_guards = PyBytes_GET_SIZE(guard_cols) / (Py_ssize_t)(sizeof(double) * GD_COLS);
@@ -1376,17 +1412,21 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
         return NULL;
     }
     for (Py_ssize_t k = 0; k < n_keeps; k++) {
-        const double *kp = keeps + k * KP_COLS;
+        const double *kp = keeps0 + k * KP_COLS;
         double a = kp[KP_ENTITY], b = kp[KP_REF];
         if (!(a >= 0 && a < n && b >= 0 && b < n && a != b)) {
             PyErr_SetString(PyExc_ValueError, "cruise: a keep names road users that are not there");
             return NULL;
         }
         const double *e = st0 + (Py_ssize_t)a * CR_COLS, *r = st0 + (Py_ssize_t)b * CR_COLS;
-        if (e[CR_MODE] != MODE_LANE || e[CR_LATERAL] != 0.0 || e[CR_PROFILE] >= 0 || r[CR_MODE] < 0 ||
-            (kp[KP_ALONG_ROAD] != 0.0 && r[CR_MODE] != MODE_LANE)) {
-            PyErr_SetString(PyExc_ValueError, "cruise: a keep's road user keeps its lane at no speed of its own, "
-                                              "and its reference is there (on its lane, for a gap along the road)");
+        int spring = kp[KP_SPRING] != 0.0 || kp[KP_FOLLOW] != 0.0;
+        if ((spring ? !(e[CR_MODE] >= MODE_STRAIGHT && e[CR_MODE] <= MODE_PATH)
+                    : (e[CR_MODE] != MODE_LANE || e[CR_LATERAL] != 0.0)) ||
+            e[CR_PROFILE] >= 0 || r[CR_MODE] < 0 ||
+            (kp[KP_ALONG_ROAD] != 0.0 && (r[CR_MODE] != MODE_LANE || e[CR_MODE] != MODE_LANE))) {
+            PyErr_SetString(PyExc_ValueError, "cruise: a keep's road user keeps its lane (placed) or moves at its "
+                                              "speed (a spring), at no speed of its own, and its reference is there "
+                                              "(on its lane, for a gap along the road)");
             return NULL;
         }
     }
@@ -1404,7 +1444,9 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
         }
     }
     size_t m = (size_t)(n > 0 ? n : 1);
-    double *cur = PyMem_Malloc(sizeof(double) * (CR_COLS * m * 3 + SY_COLS * (size_t)(n_sync + 1) * 2));
+    size_t keep_bytes = sizeof(double) * KP_COLS * (size_t)n_keeps;
+    double *cur = PyMem_Malloc(sizeof(double) * (CR_COLS * m * 3 + SY_COLS * (size_t)(n_sync + 1) * 2 +
+                                                 KP_COLS * (size_t)(n_keeps + 1) * 2 + m));
     VeiBox *box = PyMem_Malloc(sizeof(VeiBox) * m);
     int *pairs = PyMem_Malloc(sizeof(int) * m * m * 2);
     int *first = PyMem_Malloc(sizeof(int) * (size_t)(n_guards + 1)); /* what each guard says at the start */
@@ -1416,6 +1458,9 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
     }
     double *next = cur + CR_COLS * m, *out = (double *)PyBytes_AS_STRING(poses);
     double *placed = next + CR_COLS * m, *sync = placed + CR_COLS * m, *sync_next = sync + SY_COLS * (size_t)(n_sync + 1);
+    double *keeps = sync_next + SY_COLS * (size_t)(n_sync + 1), *keeps_next = keeps + KP_COLS * (size_t)(n_keeps + 1);
+    double *speed_now = keeps_next + KP_COLS * (size_t)(n_keeps + 1); /* (the speeds as the keeps set them) */
+    memcpy(keeps, keeps0, keep_bytes);
     size_t sync_bytes = sizeof(double) * SY_COLS * (size_t)n_sync;
     int *pairs0 = pairs, *pairs1 = pairs + m * m;
     memcpy(cur, st0, sizeof(double) * CR_COLS * (size_t)n);
@@ -1431,14 +1476,33 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
         double *pre = cur;
         if (n_keeps) {
             memcpy(placed, cur, sizeof(double) * CR_COLS * (size_t)n);
+            memcpy(keeps_next, keeps, keep_bytes);
             pre = placed;
-            for (Py_ssize_t k = 0; k < n_keeps && quiet; k++) quiet = keep_step(keeps + k * KP_COLS, ways, pre);
+            for (Py_ssize_t i = 0; i < n; i++) speed_now[i] = cur[i * CR_COLS + CR_SPEED];
+            /* in the interpreter's order: each one sees the speeds the ones before it set (a continuous relative
+             * speed takes its reference's at the step's start, and its own only when everyone moves) */
+            for (Py_ssize_t k = 0; k < n_keeps && quiet; k++) {
+                double *kp = keeps_next + k * KP_COLS, ref_speed = speed_now[(Py_ssize_t)kp[KP_REF]];
+                if (kp[KP_FOLLOW] != 0.0) continue;
+                if (kp[KP_SPRING] != 0.0)
+                    speed_now[(Py_ssize_t)kp[KP_ENTITY]] = keep_spring(kp, pre, ref_speed, dt);
+                else {
+                    quiet = keep_place(kp, ways, pre, ref_speed);
+                    speed_now[(Py_ssize_t)kp[KP_ENTITY]] = ref_speed;
+                }
+            }
         }
         memcpy(next, pre, sizeof(double) * CR_COLS * (size_t)n);
         memcpy(sync_next, sync, sync_bytes);
-        for (Py_ssize_t k = 0; k < n_keeps; k++)
-            next[(Py_ssize_t)keeps[k * KP_COLS + KP_ENTITY] * CR_COLS + CR_SPEED] =
-                pre[(Py_ssize_t)keeps[k * KP_COLS + KP_REF] * CR_COLS + CR_SPEED];
+        for (Py_ssize_t k = 0; k < n_keeps; k++) {
+            const double *kp = keeps_next + k * KP_COLS;
+            double v = speed_now[(Py_ssize_t)kp[KP_ENTITY]];
+            if (kp[KP_FOLLOW] != 0.0) {
+                v = pre[(Py_ssize_t)kp[KP_REF] * CR_COLS + CR_SPEED];
+                v = kp[KP_BY_FACTOR] != 0.0 ? v * kp[KP_VALUE] : v + kp[KP_VALUE];
+            }
+            next[(Py_ssize_t)kp[KP_ENTITY] * CR_COLS + CR_SPEED] = v;
+        }
         for (Py_ssize_t k = 0; k < n_sync && quiet; k++) quiet = sync_step(sync_next + k * SY_COLS, programs, pre, next, dt);
         for (Py_ssize_t i = 0; i < n && quiet; i++)
             if (pre[i * CR_COLS + CR_PROFILE] >= 0)
@@ -1453,6 +1517,7 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
                     quiet = towed_move(e, next + (Py_ssize_t)e[CR_TOW] * CR_COLS, dt, max_turn, next + i * CR_COLS);
             }
         for (Py_ssize_t k = 0; k < n_keeps && quiet; k++) { /* (placed and moved: within the step's bounds) */
+            if (keeps[k * KP_COLS + KP_SPRING] != 0.0 || keeps[k * KP_COLS + KP_FOLLOW] != 0.0) continue;
             Py_ssize_t i = (Py_ssize_t)keeps[k * KP_COLS + KP_ENTITY] * CR_COLS;
             quiet = within_bounds(cur + i, next + i, max_turn) && fabs(next[i + CR_S] - cur[i + CR_S]) <= cur[i + CR_MAX_DS];
         }
@@ -1484,11 +1549,12 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
         if (failed) break;
         memcpy(cur, next, sizeof(double) * CR_COLS * (size_t)n);
         memcpy(sync, sync_next, sync_bytes);
+        memcpy(keeps, keeps_next, keep_bytes);
     }
     PyObject *result = NULL;
     if (!failed && _PyBytes_Resize(&poses, (Py_ssize_t)(sizeof(double) * 6 * (size_t)n * (size_t)done)) == 0)
-        result = Py_BuildValue("(lNy#y#)", done, poses, (const char *)cur, (Py_ssize_t)(sizeof(double) * CR_COLS * n),
-                               (const char *)sync, (Py_ssize_t)sync_bytes);
+        result = Py_BuildValue("(lNy#y#y#)", done, poses, (const char *)cur, (Py_ssize_t)(sizeof(double) * CR_COLS * n),
+                               (const char *)sync, (Py_ssize_t)sync_bytes, (const char *)keeps, (Py_ssize_t)keep_bytes);
     else if (failed)
         Py_DECREF(poses);
     PyMem_Free(cur), PyMem_Free(box), PyMem_Free(pairs), PyMem_Free(first);
@@ -1537,7 +1603,7 @@ static PyMethodDef module_methods[] = {
     F(time_to_conflict, "time_to_conflict(ego_box, ego_speed, margin, threat_box, vx, vy[, horizon]) -> s"),
     F(time_to_contact, "time_to_contact(box_a, vxa, vya, box_b, vxb, vyb) -> s"),
     {"overlapping", overlapping, METH_O, "overlapping(boxes) -> pairs (i, j) of overlapping boxes"},
-    F(cruise, "cruise(ways, state, syncs, programs, guards, times, max_turn, dt, hypot) -> (n, poses, state, syncs): quiet steps in one call"),
+    F(cruise, "cruise(ways, state, syncs, keeps, programs, guards, times, max_turn, dt, hypot) -> (n, poses, state, syncs, keeps): quiet steps in one call"),
     {"set_quadrature", set_quadrature, METH_VARARGS, "set_quadrature(nodes, weights): 24 doubles each"},
     {NULL, NULL, 0, NULL},
 };
