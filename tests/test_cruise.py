@@ -65,22 +65,27 @@ def scenario(tmp_path, condition: str, delay: float = 0.0, edge: str = "none", e
     names = ("Ego", "Lead", "Other", "Oncoming")
     stop_lead = _event("LeadStops", "Lead", 0.0, '<ByValueCondition><SimulationTimeCondition value="4" '
                        'rule="greaterThan"/></ByValueCondition>', 0.0, "rising")  # fmt: skip
+    init = f"{_lane('Ego', -1, 10, 15)}{_lane('Lead', -1, 70, lead_speed)}{_lane('Other', -2, 30, 12)}"
+    init += _lane("Oncoming", 1, 330, 9)
     xosc = tmp_path / "s.xosc"
-    xosc.write_text(
-        f"""<OpenSCENARIO><FileHeader revMajor="1" revMinor="2" date="2024-01-01T00:00:00" description="" author=""/>
+    xosc.write_text(on_arc(names, init, _event("Change", "Ego", 5.0, condition, delay, edge) + stop_lead, end))
+    return xosc
+
+
+def on_arc(names, init: str, events: str, end: float) -> str:
+    """A scenario on arc.xodr: cars ``names``, the Init actions ``init``, one act of ``events`` started
+    at once, stopped after ``end`` seconds."""
+    return f"""<OpenSCENARIO><FileHeader revMajor="1" revMinor="2" date="2024-01-01T00:00:00" description="" author=""/>
 <RoadNetwork><LogicFile filepath="arc.xodr"/></RoadNetwork>
 <Entities>{"".join(f'<ScenarioObject name="{n}">{CAR}</ScenarioObject>' for n in names)}</Entities>
-<Storyboard><Init><Actions>{_lane("Ego", -1, 10, 15)}{_lane("Lead", -1, 70, lead_speed)}{_lane("Other", -2, 30, 12)}
-{_lane("Oncoming", 1, 330, 9)}</Actions></Init>
-<Story name="s"><Act name="a">{_event("Change", "Ego", 5.0, condition, delay, edge)}{stop_lead}
+<Storyboard><Init><Actions>{init}</Actions></Init>
+<Story name="s"><Act name="a">{events}
 <StartTrigger><ConditionGroup><Condition name="go" delay="0" conditionEdge="none"><ByValueCondition>
 <SimulationTimeCondition value="0" rule="greaterOrEqual"/></ByValueCondition></Condition></ConditionGroup>
 </StartTrigger></Act></Story>
 <StopTrigger><ConditionGroup><Condition name="end" delay="0" conditionEdge="none"><ByValueCondition>
 <SimulationTimeCondition value="{end}" rule="greaterThan"/></ByValueCondition></Condition></ConditionGroup>
 </StopTrigger></Storyboard></OpenSCENARIO>"""
-    )
-    return xosc
 
 
 def run_both(path, monkeypatch, **kw):

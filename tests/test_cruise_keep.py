@@ -16,8 +16,9 @@ import math
 
 import numpy as np
 import pytest
-from test_cruise import ROAD, _entity, _lane, assert_identical, run_both
-from xosc_parts import CAR, step_speed
+from test_cruise import ROAD, _entity, _lane, assert_identical, on_arc, run_both
+from test_cruise_lateral import _event
+from xosc_parts import step_speed
 
 
 def _keep(ref: str, attrs: str, constraints: str = "") -> str:
@@ -40,29 +41,23 @@ def _follow_speed(ref: str, value: float, kind: str, seconds: float = 0.0) -> st
     )
 
 
+def _at_time(t: float) -> str:
+    return f'<ByValueCondition><SimulationTimeCondition value="{t}" rule="greaterThan"/></ByValueCondition>'
+
+
 def _speed_change(actor: str, speed: float, at: float, seconds: float) -> str:
-    return (
-        f'<ManeuverGroup maximumExecutionCount="1" name="{actor}g"><Actors selectTriggeringEntities="false">'
-        f'<EntityRef entityRef="{actor}"/></Actors><Maneuver name="{actor}m"><Event name="{actor}e" '
-        f'priority="override"><Action name="{actor}a"><PrivateAction><LongitudinalAction><SpeedAction>'
+    action = (
+        "<PrivateAction><LongitudinalAction><SpeedAction>"
         f'<SpeedActionDynamics dynamicsShape="linear" value="{seconds}" dynamicsDimension="time"/>'
         f'<SpeedActionTarget><AbsoluteTargetSpeed value="{speed}"/></SpeedActionTarget></SpeedAction>'
-        "</LongitudinalAction></PrivateAction></Action><StartTrigger><ConditionGroup>"
-        f'<Condition name="{actor}c" delay="0" conditionEdge="none"><ByValueCondition>'
-        f'<SimulationTimeCondition value="{at}" rule="greaterThan"/></ByValueCondition></Condition>'
-        "</ConditionGroup></StartTrigger></Event></Maneuver></ManeuverGroup>"
+        "</LongitudinalAction></PrivateAction>"
     )
+    return _event(f"{actor}_speed", actor, action, _at_time(at))
 
 
 def _reacts(condition: str) -> str:
     """Other slows to 5 m/s once ``condition`` holds."""
-    return (
-        '<ManeuverGroup maximumExecutionCount="1" name="rg"><Actors selectTriggeringEntities="false">'
-        '<EntityRef entityRef="Other"/></Actors><Maneuver name="rm"><Event name="react" priority="override">'
-        f'<Action name="ra">{step_speed(5.0)}</Action><StartTrigger><ConditionGroup>'
-        f'<Condition name="rc" delay="0" conditionEdge="none">{condition}</Condition>'
-        "</ConditionGroup></StartTrigger></Event></Maneuver></ManeuverGroup>"
-    )
+    return _event("react", "Other", step_speed(5.0), condition)
 
 
 def scenario(tmp_path, keeper_lane: int, keeper_s: float, keep: str, events: str, end: float = 14.0):
@@ -72,19 +67,7 @@ def scenario(tmp_path, keeper_lane: int, keeper_s: float, keep: str, events: str
     names = ("Lead", "Keeper", "Other")
     keeper = _lane("Keeper", keeper_lane, keeper_s, 10.0).replace("</Private>", keep + "</Private>")
     xosc = tmp_path / "k.xosc"
-    xosc.write_text(
-        f"""<OpenSCENARIO><FileHeader revMajor="1" revMinor="2" date="2024-01-01T00:00:00" description="" author=""/>
-<RoadNetwork><LogicFile filepath="arc.xodr"/></RoadNetwork>
-<Entities>{"".join(f'<ScenarioObject name="{n}">{CAR}</ScenarioObject>' for n in names)}</Entities>
-<Storyboard><Init><Actions>{_lane("Lead", -1, 60, 12)}{keeper}{_lane("Other", -2, 20, 11)}</Actions></Init>
-<Story name="s"><Act name="a">{events}
-<StartTrigger><ConditionGroup><Condition name="go" delay="0" conditionEdge="none"><ByValueCondition>
-<SimulationTimeCondition value="0" rule="greaterOrEqual"/></ByValueCondition></Condition></ConditionGroup>
-</StartTrigger></Act></Story>
-<StopTrigger><ConditionGroup><Condition name="end" delay="0" conditionEdge="none"><ByValueCondition>
-<SimulationTimeCondition value="{end}" rule="greaterThan"/></ByValueCondition></Condition></ConditionGroup>
-</StopTrigger></Storyboard></OpenSCENARIO>"""
-    )
+    xosc.write_text(on_arc(names, f"{_lane('Lead', -1, 60, 12)}{keeper}{_lane('Other', -2, 20, 11)}", events, end))
     return xosc
 
 
@@ -162,31 +145,20 @@ def test_a_keeper_of_a_synchronised_reference_and_one_started_after_it(tmp_path,
     """Lead is synchronised to reach s = 200 when Other does; Keeper keeps its gap to Lead from the start
     (the core places it before the synchronisation steps, as the interpreter does) — and, in the second
     run, only from 1 s on, after the synchronisation (the interpreter steps it, the run is the same)."""
-    sync = (
-        '<ManeuverGroup maximumExecutionCount="1" name="sg"><Actors selectTriggeringEntities="false">'
-        '<EntityRef entityRef="Lead"/></Actors><Maneuver name="sm"><Event name="se" priority="override">'
-        '<Action name="sa"><PrivateAction><SynchronizeAction masterEntityRef="Other"><TargetPositionMaster>'
+    synchronise = (
+        '<PrivateAction><SynchronizeAction masterEntityRef="Other"><TargetPositionMaster>'
         '<LanePosition roadId="1" laneId="-2" s="200"/></TargetPositionMaster><TargetPosition>'
         '<LanePosition roadId="1" laneId="-1" s="200"/></TargetPosition><FinalSpeed><AbsoluteSpeed value="9"/>'
-        "</FinalSpeed></SynchronizeAction></PrivateAction></Action><StartTrigger><ConditionGroup>"
-        '<Condition name="sc" delay="0" conditionEdge="none"><ByValueCondition><SimulationTimeCondition '
-        'value="0.2" rule="greaterThan"/></ByValueCondition></Condition></ConditionGroup></StartTrigger></Event>'
-        "</Maneuver></ManeuverGroup>"
+        "</FinalSpeed></SynchronizeAction></PrivateAction>"
     )
+    sync = _event("sync", "Lead", synchronise, _at_time(0.2))
     keep = _keep("Lead", 'distance="8" freespace="true" coordinateSystem="road"')
     fast, cruised, slow = run_both(scenario(tmp_path, -1, 40, keep, sync), monkeypatch)
     assert_identical(fast, slow)
     lead = fast.traces["Lead"]
     assert np.ptp(lead.speed) > 1.0 and cruised > 0.6 * len(fast.t)  # (the synchronisation set its speeds)
     late = keep.replace("<PrivateAction>", "", 1).replace("</PrivateAction>", "", 1)
-    later = (
-        '<ManeuverGroup maximumExecutionCount="1" name="kg"><Actors selectTriggeringEntities="false">'
-        '<EntityRef entityRef="Keeper"/></Actors><Maneuver name="km"><Event name="ke" priority="override">'
-        f'<Action name="ka"><PrivateAction>{late}</PrivateAction></Action><StartTrigger><ConditionGroup>'
-        '<Condition name="kc" delay="0" conditionEdge="none"><ByValueCondition><SimulationTimeCondition '
-        'value="1" rule="greaterThan"/></ByValueCondition></Condition></ConditionGroup></StartTrigger></Event>'
-        "</Maneuver></ManeuverGroup>"
-    )
+    later = _event("keep_late", "Keeper", f"<PrivateAction>{late}</PrivateAction>", _at_time(1))
     path = scenario(tmp_path, -1, 40, "", sync + later)
     fast, _, slow = run_both(path, monkeypatch)
     assert_identical(fast, slow)
@@ -271,13 +243,7 @@ def test_a_continuous_relative_speed_in_quiet_steps_equals_the_stepped_run(tmp_p
         path = scenario(tmp_path, -2, 40, follow, events)
         path.write_text(path.read_text().replace(step_speed(10.0) + follow, follow))
     else:
-        start = (
-            '<ManeuverGroup maximumExecutionCount="1" name="fg"><Actors selectTriggeringEntities="false">'
-            '<EntityRef entityRef="Keeper"/></Actors><Maneuver name="fm"><Event name="fe" priority="override">'
-            f'<Action name="fa">{follow}</Action><StartTrigger><ConditionGroup><Condition name="fc" delay="0" '
-            'conditionEdge="none"><ByValueCondition><SimulationTimeCondition value="0.5" rule="greaterThan"/>'
-            "</ByValueCondition></Condition></ConditionGroup></StartTrigger></Event></Maneuver></ManeuverGroup>"
-        )
+        start = _event("follow", "Keeper", follow, _at_time(0.5))
         path = scenario(tmp_path, -2, 40, "", events + start)
     fast, cruised, slow = run_both(path, monkeypatch)
     assert_identical(fast, slow)
