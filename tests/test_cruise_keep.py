@@ -251,3 +251,17 @@ def test_a_continuous_relative_speed_in_quiet_steps_equals_the_stepped_run(tmp_p
     want = lead.speed[-101:-1] + value if kind == "delta" else lead.speed[-101:-1] * value
     assert np.array_equal(keeper.speed[-100:], want)  # (each step: the reference's speed at its start)
     assert cruised > 0.6 * len(fast.t), f"only {cruised} of {len(fast.t)} steps cruised"
+
+
+@pytest.mark.parametrize("table", ["syncs", "keeps", "guards"])
+def test_the_core_refuses_a_table_that_is_not_whole_rows(table):
+    from test_cruise_distances import _straight
+
+    from vei_scenario.core import _core
+
+    state = np.asarray(_straight(0.0, 0.0, 0.0, 8.0), float).tobytes()
+    tables = {"syncs": b"", "keeps": b"", "guards": b""} | {table: np.zeros(3).tobytes()}
+    clock = np.arange(10, dtype=float).tobytes()
+    with pytest.raises(ValueError, match=f"the {table} need their columns each"):
+        _core.cruise((None,), state, tables["syncs"], tables["keeps"], b"", tables["guards"], clock, math.inf, 0.1,
+                     math.hypot)  # fmt: skip

@@ -25,15 +25,27 @@ lane centres, and prints to stdout; pyxodr is pure Python; libOpenDRIVE, maliput
 pyopendrive have no package on PyPI.
 """
 
+import functools
+
 from vei_scenario.core import _core
 
 
+@functools.cache
 def layout(table: str) -> dict[str, int]:
-    """Where each column of one of the core's tables (``road_user``, ``sync`` or ``guard`` of the quiet
-    stretches) is, or the number of each of its codes (``guard_quantity``, ``mode``, ``shape``,
-    ``rule``), by the names core_module.c gives them: Python builds and reads the rows by name, and
-    the order is written in the C alone."""
+    """Where each column of one of the core's tables (``road_user``, ``sync``, ``keep`` or ``guard`` of
+    the quiet stretches) is, or the number of each of its codes (``guard_quantity``, ``mode``,
+    ``shape``, ``rule``), by the names core_module.c gives them: Python builds and reads the rows by
+    name, and the order is written in the C alone. (One dict per table, only read.)"""
     return {name: i for i, name in enumerate(_core.CRUISE_LAYOUT[table])}
 
 
-__all__ = ["_core", "layout"]
+def row(table: str, values: dict[str, float]) -> list[float]:
+    """A row of the core's ``table`` from its ``values`` by column name (the other columns 0)."""
+    columns = layout(table)
+    out = [0.0] * len(columns)
+    for name, value in values.items():
+        out[columns[name]] = value
+    return out
+
+
+__all__ = ["_core", "layout", "row"]

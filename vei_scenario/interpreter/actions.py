@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import math
 
+from vei_scenario.core import row as core_row
 from vei_scenario.interpreter.action_base import Action
 from vei_scenario.interpreter.clock import step_time
 from vei_scenario.interpreter.controllers import make_controller
@@ -355,12 +356,8 @@ class Speed(Action):
 
     def start(self, ctx) -> None:
         e = ctx.entities[self.entity]
-        kind, value, ref, vtype = self.target
-        if kind == "absolute":
-            v1 = value
-        else:
-            base = ctx.entities[ref].speed
-            v1 = base + value if vtype == "delta" else base * value
+        kind, value = self.target[:2]
+        v1 = value if kind == "absolute" else self._relative_target(ctx)
         v0 = e.speed
         if self.shape == "step" or self.value == 0 or (self.value < 0 and self.dimension != "rate"):
             duration = 0.0
@@ -393,9 +390,7 @@ class Speed(Action):
             return
         p = e.speed_profile
         if self.continuous:  # keeps the relative speed after the transition; never ends by itself
-            _, value, ref, vtype = self.target
-            base = ctx.entities[ref].speed
-            target = base + value if vtype == "delta" else base * value
+            target = self._relative_target(ctx)
             if p is None or ctx.t >= p.t0 + p.duration - 1e-9:
                 e.speed_profile = SpeedProfile(target, target, ctx.t, 0.0, "step")
             else:
@@ -418,30 +413,31 @@ class Speed(Action):
             return p is None or (p.duration <= 0.0 and ctx.t >= p.t0 - 1e-9)
         return p is not None and ctx.t < p.t0 + p.duration - 1e-9
 
-    def core_columns(self, ctx, index: dict[str, int], keep: dict[str, int]) -> list[float] | None:
-        """A continuous relative target speed after its transition as the core steps it (the KP_*
-        columns ``keep`` names, FOLLOW): each step its entity takes its reference's speed at the step's
-        start plus (times) the value, as :meth:`update` sets it. None when not carried."""
+    def core_columns(self, ctx, index: dict[str, int]) -> list[float] | None:
+        """A continuous relative target speed after its transition as the core steps it (a row of the
+        core's keeps, FOLLOW): each step its entity takes its reference's speed at the step's start
+        plus (times) the value, as :meth:`update` sets it. None when not carried."""
         e = ctx.entities[self.entity]
         if not self.continuous or not self.carried(ctx) or e.towed_by is not None or e.deleted:
             return None
         _, value, ref, vtype = self.target
         if ctx.entities[ref].deleted:
             return None
-        row = [0.0] * len(keep)
-        row[keep["ENTITY"]], row[keep["REF"]], row[keep["VALUE"]] = index[self.entity], index[ref], value
-        row[keep["FOLLOW"]], row[keep["BY_FACTOR"]] = 1.0, float(vtype != "delta")
-        return row
+        values = {"ENTITY": index[self.entity], "REF": index[ref], "VALUE": value, "FOLLOW": 1.0}
+        return core_row("keep", values | {"BY_FACTOR": float(vtype != "delta")})
 
     def after_core(self, ctx, stepped_before: bool) -> None:
         """After the core's stretch: the step profile :meth:`update` leaves at the end of a step, when
         it is updated there (a storyboard action's was there when the stretch began)."""
         if stepped_before:
-            _, value, ref, vtype = self.target
-            base = ctx.entities[ref].speed
-            target = base + value if vtype == "delta" else base * value
-            ctx.entities[self.entity].speed_profile = SpeedProfile(target, target, step_time(ctx.step - 1, ctx.dt),
-                                                                   0.0, "step")  # fmt: skip
+            target, t0 = self._relative_target(ctx), step_time(ctx.step - 1, ctx.dt)
+            ctx.entities[self.entity].speed_profile = SpeedProfile(target, target, t0, 0.0, "step")
+
+    def _relative_target(self, ctx) -> float:
+        """A relative target speed: its reference's speed now plus (delta) or times (factor) the value."""
+        _, value, ref, vtype = self.target
+        base = ctx.entities[ref].speed
+        return base + value if vtype == "delta" else base * value
 
 
 class FollowTrajectory(Action):

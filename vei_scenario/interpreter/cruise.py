@@ -25,6 +25,7 @@ import math
 from dataclasses import dataclass, field
 
 from vei_scenario.core import _core, layout
+from vei_scenario.core import row as core_row
 from vei_scenario.interpreter.clock import count_at_or_before, packed_step_times, step_time, step_times
 
 #: Core columns of a road user (core_module.c: ROAD_USER_COLUMNS).
@@ -42,11 +43,9 @@ _STRAIGHT, _LANE_MODE, _PATH, _TIMED, _TIMED_FOLLOW, _TOWED = (
 _STATUS = {_TIMED: "replay", _TIMED_FOLLOW: "follow", _TOWED: "towed"}
 #: A transition's shape (a SpeedAction's, a lane change's) as the core numbers it (core_module.c: SHAPES).
 _SHAPES = {name.lower(): float(code) for name, code in layout("shape").items()}
-#: Core columns of a synchronisation and of a guard (core_module.c: SYNC_COLUMNS, GUARD_COLUMNS).
+#: How many core columns a synchronisation and a kept distance have (core_module.c: SYNC_COLUMNS, KEEP_COLUMNS).
 _SY_COLS = len(layout("sync"))
-_KEEP = layout("keep")
-_KP_COLS = len(_KEEP)
-_GUARD = layout("guard")
+_KP_COLS = len(layout("keep"))
 #: Most steps in one call of the core (the poses it returns for them are held in memory at once).
 CHUNK = 2000
 #: Fewest quiet steps worth a call (fewer: the ordinary step is as quick).
@@ -128,12 +127,9 @@ class QuietBounds:
         index = self.index
         if name not in index or (other is not None and other not in index):
             return False
-        row = [0.0] * len(_GUARD)
-        row[_GUARD["ENTITY"]], row[_GUARD["OTHER"]] = index[name], -1.0 if other is None else index[other]
-        row[_GUARD["QUANTITY"]], row[_GUARD["RULE"]], row[_GUARD["VALUE"]] = _GUARDED[quantity], rule, value
-        for column, v in extra.items():
-            row[_GUARD[column]] = v
-        self.guards.extend(row)
+        values = {"ENTITY": index[name], "OTHER": -1.0 if other is None else index[other]}
+        values |= {"QUANTITY": _GUARDED[quantity], "RULE": rule, "VALUE": value}
+        self.guards.extend(core_row("guard", values | extra))
         return True
 
 
@@ -264,10 +260,7 @@ def _chain(entities: dict, trailer) -> int | None:
 
 def _row(values: dict[str, float]) -> list[float]:
     """A road user's core columns from their values by name (the others 0)."""
-    row = [0.0] * _COLS
-    for name, value in values.items():
-        row[_ROAD_USER[name]] = value
-    return row
+    return core_row("road_user", values)
 
 
 def _absent(e) -> list[float]:
@@ -310,7 +303,7 @@ def _stepped(ctx, entities: list) -> _Stepped | None:
     for e in entities:
         a = e.longitudinal
         if type(a) is Speed and a.continuous and not a.done and not e.deleted:
-            c = a.core_columns(ctx, index, _KEEP)
+            c = a.core_columns(ctx, index)
             if c is None:
                 return None
             out.keeps.append(a)

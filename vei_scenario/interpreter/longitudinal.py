@@ -13,6 +13,7 @@ from __future__ import annotations
 import math
 
 from vei_scenario.core import layout
+from vei_scenario.core import row as core_row
 from vei_scenario.interpreter.action_base import SteppedLongitudinal, constraint, entity_ref
 from vei_scenario.interpreter.motion import advance_along, lane_keep
 from vei_scenario.interpreter.positions import ensure_lane
@@ -149,16 +150,13 @@ class LongitudinalDistance(SteppedLongitudinal):
         along = along and la.road == lb.road
         if along and not (on_lane and ref.follower is None and ref.towed_by is None):
             return None  # (a gap along the road from a lane the core does not keep)
-        row = [0.0] * len(_KEEP)
-        row[_KEEP["ENTITY"]], row[_KEEP["REF"]] = index[self.entity], index[self.ref]
-        row[_KEEP["VALUE"]], row[_KEEP["BY_TIME"]], row[_KEEP["SIDE"]] = self.value, float(self.by_time), self.side
-        row[_KEEP["FREESPACE"]], row[_KEEP["ALONG_ROAD"]] = float(self.freespace), float(along)
+        values = {"ENTITY": index[self.entity], "REF": index[self.ref], "VALUE": self.value, "SIDE": self.side}
+        values |= {"BY_TIME": float(self.by_time), "FREESPACE": float(self.freespace), "ALONG_ROAD": float(along)}
         if not self.placing:
-            row[_KEEP["SPRING"]], row[_KEEP["MAX_ACCEL"]], row[_KEEP["MAX_DECEL"]] = 1.0, self.max_accel, self.max_decel
-            row[_KEEP["MAX_SPEED"]], row[_KEEP["ACCEL"]] = self.max_speed, self.accel
-            row[_KEEP["ACCEL_RATE"]], row[_KEEP["DECEL_RATE"]] = self.accel_rate, self.decel_rate
-        return row
+            values |= {"SPRING": 1.0, "MAX_ACCEL": self.max_accel, "MAX_DECEL": self.max_decel, "ACCEL": self.accel}
+            values |= {"MAX_SPEED": self.max_speed, "ACCEL_RATE": self.accel_rate, "DECEL_RATE": self.decel_rate}
+        return core_row("keep", values)
 
-    def take_core_columns(self, row) -> None:
+    def take_core_columns(self, cols) -> None:
         """The state the core left it in (its spring's last acceleration)."""
-        self.accel = row[_KEEP["ACCEL"]]
+        self.accel = cols[_KEEP["ACCEL"]]

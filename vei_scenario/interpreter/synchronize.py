@@ -29,6 +29,7 @@ from __future__ import annotations
 import math
 
 from vei_scenario.core import layout
+from vei_scenario.core import row as core_row
 from vei_scenario.interpreter.action_base import SteppedLongitudinal, entity_ref
 from vei_scenario.interpreter.positions import Pose, ensure_lane
 from vei_scenario.interpreter.positions import resolve as resolve_position
@@ -221,10 +222,7 @@ class Synchronize(SteppedLongitudinal):
             "FINAL": self._final_speed(ctx) if self.final is not None else math.nan,
             "STEADY": self.steady_dist if self.steady is not None else math.nan,
         }  # fmt: skip
-        row = [0.0] * len(_COLUMNS)
-        for name, value in values.items():
-            row[_COLUMNS[name]] = value
-        return row
+        return core_row("sync", values)
 
     def take_core_columns(self, cols) -> None:
         """The state the core's steps left this synchronisation in."""

@@ -1335,6 +1335,19 @@ static int guard_state(const double *g, const double *st)
     return 1 + rule_holds((int)g[GD_RULE], q, g[GD_VALUE]);
 }
 
+/* the rows of one of cruise's tables (bytes of cols doubles each): their count in *rows; NULL with a ValueError
+ * naming the table when its size is not whole rows */
+static const double *table_rows(PyObject *bytes, Py_ssize_t cols, const char *name, Py_ssize_t *rows)
+{
+    Py_ssize_t size = PyBytes_GET_SIZE(bytes), row = (Py_ssize_t)sizeof(double) * cols;
+    *rows = size / row;
+    if (size != *rows * row) {
+        PyErr_Format(PyExc_ValueError, "cruise: the %s need their columns each", name);
+        return NULL;
+    }
+    return (const double *)PyBytes_AS_STRING(bytes);
+}
+
 /* cruise(ways, state, syncs, keeps, programs, guards, times, max_turn, dt, hypot) -> (n, poses, state, syncs, keeps): up to
  * n_max steps (times: the simulation time at the start of each) of every road user (ways: per road
  * user its Road (mode 1), its Polyline (mode 2) or None), the kept distances (KP_COLS each) placing their road
@@ -1357,19 +1370,19 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
                                          "guards bytes, times bytes, max_turn, dt > 0, hypot)");
         return NULL;
     }
-    const double *keeps0 = (const double *)PyBytes_AS_STRING(keep_cols);
-    Py_ssize_t n_keeps = PyBytes_GET_SIZE(keep_cols) / (Py_ssize_t)(sizeof(double) * KP_COLS);
-    const double *guards = (const double *)PyBytes_AS_STRING(guard_cols);
-    Py_ssize_t n_guards = PyBytes_GET_SIZE(guard_cols) / (Py_ssize_t)(sizeof(double) * GD_COLS);
+    Py_ssize_t n_keeps, n_guards, n_sync;
+    const double *keeps0 = table_rows(keep_cols, KP_COLS, "keeps", &n_keeps);
+    const double *guards = table_rows(guard_cols, GD_COLS, "guards", &n_guards);
+    const double *sy0 = table_rows(syncs, SY_COLS, "syncs", &n_sync);
+    if (!keeps0 || !guards || !sy0) return NULL;
     /* times: the simulation time at the start of each step it may take */
     const double *times = (const double *)PyBytes_AS_STRING(clock);
     long n_max = (long)(PyBytes_GET_SIZE(clock) / (Py_ssize_t)sizeof(double));
     const double *programs = (const double *)PyBytes_AS_STRING(progs);
     Py_ssize_t n_programs = PyBytes_GET_SIZE(progs) / (Py_ssize_t)sizeof(double);
-    Py_ssize_t n = PyTuple_GET_SIZE(ways), n_sync = PyBytes_GET_SIZE(syncs) / (Py_ssize_t)(sizeof(double) * SY_COLS);
-    if (PyBytes_GET_SIZE(state) != n * (Py_ssize_t)sizeof(double) * CR_COLS ||
-        PyBytes_GET_SIZE(syncs) != n_sync * (Py_ssize_t)(sizeof(double) * SY_COLS)) {
-        PyErr_SetString(PyExc_ValueError, "cruise: the state needs its columns for every road user and sync");
+    Py_ssize_t n = PyTuple_GET_SIZE(ways);
+    if (PyBytes_GET_SIZE(state) != n * (Py_ssize_t)sizeof(double) * CR_COLS) {
+        PyErr_SetString(PyExc_ValueError, "cruise: the state needs its columns for every road user");
         return NULL;
     }
     const double *st0 = (const double *)PyBytes_AS_STRING(state);
@@ -1392,10 +1405,6 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
             return NULL;
         }
     }
-    if (PyBytes_GET_SIZE(guard_cols) != n_guards * (Py_ssize_t)(sizeof(double) * GD_COLS)) {
-        PyErr_SetString(PyExc_ValueError, "cruise: the guards need their columns each");
-        return NULL;
-    }
     for (Py_ssize_t k = 0; k < n_guards; k++) {
         const double *g = guards + k * GD_COLS;
         if (!(g[GD_ENTITY] >= 0 && g[GD_ENTITY] < n && g[GD_OTHER] >= -1 && g[GD_OTHER] < n)) {
@@ -1406,10 +1415,6 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
             PyErr_SetString(PyExc_ValueError, "cruise: a guard compares a quantity or by a rule the core does not know");
             return NULL;
         }
-    }
-    if (PyBytes_GET_SIZE(keep_cols) != n_keeps * (Py_ssize_t)(sizeof(double) * KP_COLS)) {
-        PyErr_SetString(PyExc_ValueError, "cruise: the keeps need their columns each");
-        return NULL;
     }
     for (Py_ssize_t k = 0; k < n_keeps; k++) {
         const double *kp = keeps0 + k * KP_COLS;
@@ -1430,7 +1435,6 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
             return NULL;
         }
     }
-    const double *sy0 = (const double *)PyBytes_AS_STRING(syncs);
     for (Py_ssize_t k = 0; k < n_sync; k++) {
         double a = sy0[k * SY_COLS + SY_ENTITY], b = sy0[k * SY_COLS + SY_MASTER];
         if (!(a >= 0 && a < n && b >= 0 && b < n && a != b)) {
