@@ -72,12 +72,12 @@ def scenario(tmp_path, condition: str, delay: float = 0.0, edge: str = "none", e
     return xosc
 
 
-def on_arc(names, init: str, events: str, end: float) -> str:
-    """A scenario on arc.xodr: cars ``names``, the Init actions ``init``, one act of ``events`` started
-    at once, stopped after ``end`` seconds."""
+def on_arc(names, init: str, events: str, end: float, others: str = "") -> str:
+    """A scenario on arc.xodr: cars ``names`` (and the ScenarioObjects ``others``), the Init actions
+    ``init``, one act of ``events`` started at once, stopped after ``end`` seconds."""
     return f"""<OpenSCENARIO><FileHeader revMajor="1" revMinor="2" date="2024-01-01T00:00:00" description="" author=""/>
 <RoadNetwork><LogicFile filepath="arc.xodr"/></RoadNetwork>
-<Entities>{"".join(f'<ScenarioObject name="{n}">{CAR}</ScenarioObject>' for n in names)}</Entities>
+<Entities>{"".join(f'<ScenarioObject name="{n}">{CAR}</ScenarioObject>' for n in names)}{others}</Entities>
 <Storyboard><Init><Actions>{init}</Actions></Init>
 <Story name="s"><Act name="a">{events}
 <StartTrigger><ConditionGroup><Condition name="go" delay="0" conditionEdge="none"><ByValueCondition>

@@ -16,9 +16,8 @@ import math
 
 import numpy as np
 import pytest
-from test_cruise import ROAD, _entity, _event, _lane, assert_identical
+from test_cruise import ROAD, _entity, _event, _lane, assert_identical, on_arc
 from test_cruise_sync import PEDESTRIAN
-from xosc_parts import CAR
 
 import vei_scenario.interpreter.engine as engine
 from vei_scenario.core import _core, layout
@@ -45,20 +44,10 @@ def scenario(tmp_path, condition: str, edge: str = "none") -> object:
     ``condition`` holds."""
     (tmp_path / "arc.xodr").write_text(ROAD)
     xosc = tmp_path / "d.xosc"
-    objects = "".join(f'<ScenarioObject name="{n}">{CAR}</ScenarioObject>' for n in ("Ego", "Lead", "Other"))
-    xosc.write_text(
-        f"""<OpenSCENARIO><FileHeader revMajor="1" revMinor="2" date="2024-01-01T00:00:00" description="" author=""/>
-<RoadNetwork><LogicFile filepath="arc.xodr"/></RoadNetwork>
-<Entities>{objects}<ScenarioObject name="Walker">{PEDESTRIAN}</ScenarioObject></Entities>
-<Storyboard><Init><Actions>{_lane("Ego", -1, 5, 13)}{_lane("Lead", -1, 60, 8)}{_lane("Other", -2, 20, 11)}{CROSSING}
-</Actions></Init><Story name="s"><Act name="a">{_event("Change", "Ego", 5.0, condition, 0.0, edge)}
-<StartTrigger><ConditionGroup><Condition name="go" delay="0" conditionEdge="none"><ByValueCondition>
-<SimulationTimeCondition value="0" rule="greaterOrEqual"/></ByValueCondition></Condition></ConditionGroup>
-</StartTrigger></Act></Story>
-<StopTrigger><ConditionGroup><Condition name="end" delay="0" conditionEdge="none"><ByValueCondition>
-<SimulationTimeCondition value="13" rule="greaterThan"/></ByValueCondition></Condition></ConditionGroup>
-</StopTrigger></Storyboard></OpenSCENARIO>"""
-    )
+    init = f"{_lane('Ego', -1, 5, 13)}{_lane('Lead', -1, 60, 8)}{_lane('Other', -2, 20, 11)}{CROSSING}"
+    walker = f'<ScenarioObject name="Walker">{PEDESTRIAN}</ScenarioObject>'
+    change = _event("Change", "Ego", 5.0, condition, 0.0, edge)
+    xosc.write_text(on_arc(("Ego", "Lead", "Other"), init, change, 13, walker))
     return xosc
 
 
