@@ -328,3 +328,26 @@ def test_a_condition_on_a_changing_speed_is_evaluated_every_step(tmp_path, monke
     assert_identical(fast, slow)
     assert np.any(np.isclose(slow.traces["Ego"].speed, 5.0))
     assert cruised > 0.5 * len(fast.t), f"only {cruised} of {len(fast.t)} steps cruised"
+
+
+def test_a_synchronised_entity_speeding_up_to_its_final_speed_stays_in_one_stretch(tmp_path, monkeypatch):
+    """The quiet steps' bound on a synchronised entity's move reaches its final speed: from standstill
+    to 6 m/s (three times the margin) the core carries it without stopping at each margin passed."""
+    from vei_scenario.interpreter import cruise, engine
+
+    c = {**BASE, "vru_lane": -2, "vru_s": 100.0, "final_v": 6.0, "cross_x": 200.0, "ego_s": 20.0, "end": 14.0}
+    calls: list[tuple[int, float, float]] = []
+    original = engine.cruise
+
+    def watching(ctx, *args):
+        v0 = ctx.entities["VRU"].speed
+        n = original(ctx, *args)
+        calls.append((n, v0, ctx.entities["VRU"].speed))
+        return n
+
+    monkeypatch.setattr(engine, "cruise", watching)
+    fast, _, slow = run_both(scenario(tmp_path, c), monkeypatch)
+    assert_identical(fast, slow)
+    gains = [v1 - v0 for n, v0, v1 in calls if n > 0]
+    assert max(gains) > 2 * cruise.SPEED_MARGIN_MPS, gains
+    assert max(slow.traces["VRU"].speed) > 5.0

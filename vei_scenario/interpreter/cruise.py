@@ -134,7 +134,7 @@ class QuietBounds:
 
 
 def _columns(
-    ctx, entities, synced: frozenset, turn: float, kept: dict[str, str] | None = None
+    ctx, entities, synced: dict, turn: float, kept: dict[str, str] | None = None
 ) -> tuple[tuple, list[float], QuietBounds] | None:
     """The core's columns of every road user and the bounds of their steps, or None when one moves
     otherwise than by cruising along its lane or path (or straight on) at its speed, the speed a
@@ -143,7 +143,7 @@ def _columns(
     ways, cols, dt = [], [], ctx.dt
     kept = kept or {}
     # (a trailer's speed is its tow's, a keeper's its reference's: taken as changing)
-    varying = synced | kept.keys()
+    varying = synced.keys() | kept.keys()
     varying |= {e.name for e in entities if not e.deleted and (e.speed_profile is not None or _timed(e) or e.towed_by)}
     index = {e.name: i for i, e in enumerate(entities)}
     bounds = QuietBounds({}, {}, turn, varying=frozenset(varying), index=index)
@@ -200,8 +200,11 @@ def _columns(
             q = ref.speed_profile
             fastest = max(abs(e.speed), abs(ref.speed), *((abs(q.v0), abs(q.v1)) if q is not None else ()))
             reach = (fastest + SPEED_MARGIN_MPS) * dt
-        elif e.name in synced or timed:
-            # (a synchronisation's or a timed path's speed: bounded by the margin, the core stops past it)
+        elif e.name in synced:
+            # (a synchronisation's speed: heading for its final speed, bounded by the margin beyond
+            # it; the core stops before a step past the bound)
+            reach = (max(abs(e.speed), synced[e.name]) + SPEED_MARGIN_MPS) * dt
+        elif timed:  # (a timed path's speed: bounded by the margin, the core stops past it)
             reach = (abs(e.speed) + SPEED_MARGIN_MPS) * dt
         elif p is not None:  # (a transition's speed lies between where it is and where it ends)
             reach = max(abs(e.speed), abs(p.v0), abs(p.v1)) * dt
@@ -393,7 +396,7 @@ def cruise(ctx, storyboard, entities: list, recording, max_time: float, offers: 
     runners = [c for t in triggers for c in t.conditions()]
     turn = TURN_RATE * dt if any(c.condition.reads_turning for c in runners) else math.inf
     kept = {a.entity: a.ref for a in stepped.keeps}
-    columns = _columns(ctx, entities, frozenset(a.entity for a in actions), turn, kept)
+    columns = _columns(ctx, entities, {a.entity: a.speed_heading(ctx) for a in actions}, turn, kept)
     if columns is None:
         return 0
     ways, cols, bounds = columns

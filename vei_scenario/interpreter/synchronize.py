@@ -122,6 +122,11 @@ class Synchronize(SteppedLongitudinal):
         base = ctx.entities[self.master].speed
         return base + value if rest[0] == "delta" else base * value
 
+    def speed_heading(self, ctx) -> float:
+        """The speed (m/s, >= 0) the entity heads for: its final speed, 0 without one (a bound for the
+        core's quiet stretches to reason with, not a limit: the profile may pass it)."""
+        return abs(self._final_speed(ctx)) if self.final is not None else 0.0
+
     def _goal_along(self, f, goal: Pose) -> float:
         """Where ``goal`` lies along the path ``f`` follows: the same each step while path and goal are
         (memoised)."""
