@@ -8,11 +8,11 @@ through the small interface of :mod:`vei_scenario.interpreter.action_base`.
 
 from __future__ import annotations
 
+import bisect
 from collections import deque
-from itertools import repeat
-from operator import itemgetter
 
 from vei_scenario.interpreter.actions import ParameterSet, SignalState, VariableSet, global_actions, private_actions
+from vei_scenario.interpreter.clock import count_at_or_before, step_time, step_times
 from vei_scenario.interpreter.conditions import ENTITY_CONDITIONS, VALUE_CONDITIONS, known_entity
 from vei_scenario.interpreter.context import Context
 from vei_scenario.safe_xml import first_element
@@ -31,7 +31,9 @@ class ConditionRunner:
         self.edge = el.get("conditionEdge", "none")
         self.delay = float(el.get("delay", "0") or 0)
         self.prev: bool | None = None
-        self.history: deque[tuple[float, bool]] = deque()
+        #: the edged values not yet due, oldest first, as runs of steps [first, stop, value] (a quiet
+        #: stretch of the core adds one run, not one entry per step)
+        self.history: deque[list] = deque()
         by_value, by_entity = el.find("ByValueCondition"), el.find("ByEntityCondition")
         if by_value is not None and first_element(by_value) is not None:
             kind = first_element(by_value)
@@ -80,10 +82,32 @@ class ConditionRunner:
     def evaluate(self, ctx: Context) -> bool:
         """The edged value, delayed: what it was ``delay`` seconds ago."""
         value = self.edged(ctx)
-        self.history.append((ctx.t, value))
-        result, limit = False, self._due(ctx.t)
-        while self.history and self.history[0][0] <= limit:
-            result = self.history.popleft()[1]
+        self._append(ctx.step, ctx.step + 1, value)
+        return self._pop(self._due(ctx.t), ctx.dt)
+
+    def _append(self, first: int, stop: int, value: bool) -> None:
+        """Values ``value`` evaluated at steps ``first`` to ``stop`` (exclusive), after the others."""
+        history = self.history
+        if history:
+            last = history[-1]
+            if last[1] == first and last[2] == value:
+                last[1] = stop
+                return
+        history.append([first, stop, value])
+
+    def _pop(self, limit: float, dt: float) -> bool:
+        """Forget the values evaluated at or before ``limit``; the last of them (False when none)."""
+        history, result = self.history, False
+        while history:
+            run = history[0]
+            if step_time(run[0], dt) > limit:
+                break
+            result = run[2]
+            due = count_at_or_before(run[0], run[1], dt, limit)
+            if run[0] + due < run[1]:
+                run[0] += due
+                break
+            history.popleft()
         return result
 
     def _due(self, t: float) -> float:
@@ -97,12 +121,18 @@ class ConditionRunner:
         if self.edge != "none":
             return False
         if self.delay > 0 and self.history:  # (a delay shorter than rounding pops at once: none held)
-            return self.history[-1][1]
+            return self.history[-1][2]
         return self.condition.test(ctx)
+
+    def pending(self) -> bool:
+        """Whether a true value is still to come due."""
+        return any(run[2] for run in self.history)
 
     def delayed(self, times, held: bool):
         """The delayed values of evaluations at ``times`` whose edged value is ``held`` (lazily)."""
-        old, k, first_new = self.history, 0, 0
+        dt = times.dt
+        old = [(t, run[2]) for run in self.history for t in step_times(run[0], run[1], dt)]
+        k, first_new = 0, 0
         for i, t in enumerate(times):
             limit, result = self._due(t), False
             while k < len(old) and old[k][0] <= limit:
@@ -112,16 +142,41 @@ class ConditionRunner:
                     result, first_new = held, first_new + 1
             yield result
 
+    def first_true(self, times, held: bool) -> int:
+        """The index in ``times`` of the first evaluation whose delayed value is true (len(times) if
+        none), given the edged value ``held`` throughout: what walking :meth:`delayed` finds, worked
+        out from the runs' first times (a run's values come due in order, one bisection each)."""
+        dt, n, delay = times.dt, len(times), self.delay
+        if not n:
+            return 0
+        runs = [(step_time(r[0], dt), r[2]) for r in self.history]  # (time of its first value, value)
+        runs.append((times[0], held))  # (the evaluations to come)
+
+        def due(i: int) -> float:
+            return times[i] - delay + 1e-9  # (_due)
+
+        for j, (first, value) in enumerate(runs):
+            if not value:
+                continue
+            i = bisect.bisect_left(range(n), first, key=due)  # (the evaluation at which it starts to come due)
+            if i == n:
+                return n
+            limit, last = due(i), value
+            for later, v in runs[j + 1 :]:  # (it gives the value of the last run come due by then)
+                if later > limit:
+                    break
+                last = v
+            if last:
+                return i
+        return n
+
     def skip(self, times, held: bool) -> None:
-        """Account for evaluations at ``times`` that were not run (their edged value: ``held``)."""
+        """Account for evaluations at ``times`` (steps after ``times.step0``) that were not run (their
+        edged value: ``held``)."""
         if self.delay > 0 and len(times):
-            limit, history = self._due(times[-1]), self.history
-            if history and history[-1][0] <= limit:  # (all of it due by then)
-                history.clear()
-            while history and history[0][0] <= limit:
-                history.popleft()
-            i = times.count_at_or_before(limit)  # (the evaluations due by the last one: never kept)
-            history.extend(zip(times.between(i, len(times)), repeat(held)))
+            first = times.step0 + 1
+            self._append(first, first + len(times), held)
+            self._pop(self._due(times[-1]), times.dt)
 
 
 class Trigger:
@@ -155,7 +210,7 @@ class Trigger:
         for g in self.groups:
             if not g:
                 continue
-            steady = [c for c in g if c.delay <= 0 or not (held[c] or any(map(itemgetter(1), c.history)))]
+            steady = [c for c in g if c.delay <= 0 or not (held[c] or c.pending())]
             if any(not held[c] for c in steady):  # one member stays false: the group cannot fire
                 continue
             moving = [c for c in g if c not in steady]
@@ -164,6 +219,11 @@ class Trigger:
             # after its delay, a member gives what it holds: one holding false ends the search there
             settled = max(c.delay for c in moving) / times.dt + 2
             ends = not all(held[c] for c in moving)
+            if len(moving) == 1:  # (one member: where its values come true, without walking them)
+                i = moving[0].first_true(times, held[moving[0]])
+                if i < first and not (ends and i > settled):
+                    first = i
+                continue
             for i, values in enumerate(zip(*(c.delayed(times, held[c]) for c in moving))):
                 if i >= first or (ends and i > settled):
                     break
