@@ -351,3 +351,25 @@ def test_a_synchronised_entity_speeding_up_to_its_final_speed_stays_in_one_stret
     gains = [v1 - v0 for n, v0, v1 in calls if n > 0]
     assert max(gains) > 2 * cruise.SPEED_MARGIN_MPS, gains
     assert max(slow.traces["VRU"].speed) > 5.0
+
+
+def test_a_traveled_distance_is_a_guard_the_core_stops_just_before(tmp_path, monkeypatch):
+    """A TraveledDistanceCondition does not cut the stretch to the steps its distance could at most be
+    covered in: the core compares the odometer each step and stops before the step that reaches it."""
+    from vei_scenario.interpreter import engine
+
+    c = {**BASE, **CASES["watch_traveled"]}
+    stretches: list[tuple[int, float, float]] = []
+    original = engine.cruise
+
+    def watching(ctx, *args):
+        before = ctx.entities["VRU"].odometer
+        n = original(ctx, *args)
+        stretches.append((n, before, ctx.entities["VRU"].odometer))
+        return n
+
+    monkeypatch.setattr(engine, "cruise", watching)
+    fast, _, slow = run_both(scenario(tmp_path, c), monkeypatch)
+    assert_identical(fast, slow)
+    # one stretch carries the rider from where it stands to the step before its 3.3 m
+    assert any(n > 100 and a < 0.5 and 3.3 - 0.05 < b < 3.3 for n, a, b in stretches), stretches

@@ -46,6 +46,7 @@ RULE_CODES = {
     for cmp, name in ((operator.gt, "GT"), (operator.lt, "LT"), (operator.ge, "GE"), (operator.le, "LE"),
                       (_equal, "EQ"), (_not_equal, "NE"))
 }  # fmt: skip
+_GE = RULE_CODES[operator.ge]
 
 
 def comparator(rule: str):
@@ -504,7 +505,9 @@ class TraveledDistance(_EntityCondition):
 
     def steady_for(self, ctx: Context, name: str, bounds) -> int:  # (an odometer only grows)
         odometer = ctx.entities[name].odometer
-        return STEADY if odometer >= self.value else steps_before(self.value - odometer, bounds.move.get(name, 0.0))
+        if odometer >= self.value or bounds.guard("odometer", name, _GE, self.value):
+            return STEADY  # (reached; or the core stops before the step that reaches it)
+        return steps_before(self.value - odometer, bounds.move.get(name, 0.0))
 
 
 class StandStill(_EntityCondition):

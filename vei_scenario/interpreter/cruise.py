@@ -99,11 +99,11 @@ class QuietBounds:
     guards: list = field(default_factory=list)  # the core's columns of what guard() was asked
 
     def guard(self, quantity: str, name: str, rule: int | None, value: float, other: str | None = None) -> bool:
-        """Have the core stop before a step after which ``quantity`` ("speed" or "accel") of road user
-        ``name`` (less ``other``'s) compares with ``value`` by ``rule`` (core_module.c: RULE_*, the
-        conditions' comparisons) otherwise than it does now: how a condition on a quantity that
-        changes every step holds through a quiet stretch. False when the core cannot watch it."""
-        if quantity not in ("speed", "accel") or rule is None:
+        """Have the core stop before a step after which ``quantity`` ("speed", "accel" or "odometer")
+        of road user ``name`` (less ``other``'s) compares with ``value`` by ``rule`` (core_module.c:
+        RULE_*, the conditions' comparisons) otherwise than it does now: how a condition on a quantity
+        that changes every step holds through a quiet stretch. False when the core cannot watch it."""
+        if quantity not in ("speed", "accel", "odometer") or rule is None:
             return False
         return self._add(quantity, name, other, rule, value, {})
 

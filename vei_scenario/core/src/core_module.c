@@ -1236,7 +1236,7 @@ static int keep_place(const double *kp, PyObject *ways, double *st, double ref_s
 enum { GUARD_COLUMNS(GD_ENUM) GD_COLS };
 /* speed and acceleration (less the other's) are the interpreter's own columns, compared exactly; distances
  * (conditions._relative) are recomputed here, so they are compared with a margin (GUARD_MARGIN_M) */
-#define GUARD_QUANTITIES(F) F(SPEED) F(ACCEL) F(CARTESIAN) F(LONGITUDINAL) F(LATERAL)
+#define GUARD_QUANTITIES(F) F(SPEED) F(ACCEL) F(ODOMETER) F(CARTESIAN) F(LONGITUDINAL) F(LATERAL)
 #define GQ_ENUM(name) GQ_##name,
 enum { GUARD_QUANTITIES(GQ_ENUM) GQ_COUNT };
 /* conditions.RULE_CODES: greaterThan, lessThan, greaterOrEqual, lessOrEqual, equalTo, notEqualTo */
@@ -1329,7 +1329,7 @@ static int guard_state(const double *g, const double *st)
         double margin = GUARD_MARGIN_M + 1e-9 * fabs(value);
         return d > value + margin ? 3 : d < value - margin ? 1 : 0;
     }
-    int col = quantity == GQ_ACCEL ? CR_ACCEL : CR_SPEED;
+    int col = quantity == GQ_ACCEL ? CR_ACCEL : quantity == GQ_ODOMETER ? CR_ODOMETER : CR_SPEED;
     double q = st[(Py_ssize_t)g[GD_ENTITY] * CR_COLS + col];
     if (g[GD_OTHER] >= 0) q -= st[(Py_ssize_t)g[GD_OTHER] * CR_COLS + col];
     return 1 + rule_holds((int)g[GD_RULE], q, g[GD_VALUE]);
@@ -1525,11 +1525,8 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
             Py_ssize_t i = (Py_ssize_t)keeps[k * KP_COLS + KP_ENTITY] * CR_COLS;
             quiet = within_bounds(cur + i, next + i, max_turn) && fabs(next[i + CR_S] - cur[i + CR_S]) <= cur[i + CR_MAX_DS];
         }
-        for (Py_ssize_t k = 0; k < n_guards && quiet; k++)
-            quiet = first[k] != 0 && guard_state(guards + k * GD_COLS, next) == first[k];
         if (!quiet) break;
-        cruise_pairs(next, n, box, pairs1, &k1);
-        if (k1 != k0 || memcmp(pairs0, pairs1, sizeof(int) * (size_t)k0) != 0) break;
+        /* (the odometers first: a guard may compare one) */
         double *row = out + (size_t)done * 6 * (size_t)n;
         for (Py_ssize_t i = 0; i < n; i++) {
             double *e = pre + i * CR_COLS, *f = next + i * CR_COLS, moved = 0.0;
@@ -1551,6 +1548,11 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
             row[6 * i + 4] = f[CR_SPEED], row[6 * i + 5] = f[CR_ACCEL];
         }
         if (failed) break;
+        for (Py_ssize_t k = 0; k < n_guards && quiet; k++)
+            quiet = first[k] != 0 && guard_state(guards + k * GD_COLS, next) == first[k];
+        if (!quiet) break;
+        cruise_pairs(next, n, box, pairs1, &k1);
+        if (k1 != k0 || memcmp(pairs0, pairs1, sizeof(int) * (size_t)k0) != 0) break;
         memcpy(cur, next, sizeof(double) * CR_COLS * (size_t)n);
         memcpy(sync, sync_next, sync_bytes);
         memcpy(keeps, keeps_next, keep_bytes);
