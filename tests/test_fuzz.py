@@ -13,7 +13,7 @@ import string
 import pytest
 
 hypothesis = pytest.importorskip("hypothesis")
-from hypothesis import HealthCheck, given, settings  # noqa: E402
+from hypothesis import HealthCheck, example, given, settings  # noqa: E402
 from hypothesis import strategies as st  # noqa: E402
 
 from vei_scenario.errors import VeiInputError  # noqa: E402
@@ -262,6 +262,9 @@ DISTS = st.sampled_from(
 @FAST
 @given(DISTS, NUMBER_TEXT, NUMBER_TEXT, st.sampled_from(["3", "-1", "0", "1e12", "nan", "2.5"]),
        st.sampled_from(["0", "-1", "7", "1e30", "nan"]))  # fmt: skip
+# (an expectedValue whose square underflows: it divided by zero before it was refused)
+@example('<LogNormalDistribution expectedValue="{a}" variance="{b}"/>', "4.0470553681336033e-237", "0.0", "3", "0")
+@example('<LogNormalDistribution expectedValue="{a}" variance="{b}"/>', "1e-200", "1e10", "3", "0")
 def test_distributions_give_variants_or_are_refused(tmp_path_factory, dist, a, b, runs, seed):
     from vei_scenario.variation import read_distribution
 

@@ -134,6 +134,14 @@ def _sample(path: Path, el, rng: np.random.Generator, n: int) -> list[str]:
         raise VeiInputError(path, f"line {kind.sourceline}", "a log-normal expectedValue must be positive")
     if tag in ("NormalDistribution", "LogNormalDistribution") and float_attribute(path, kind, "variance") < 0:
         raise VeiInputError(path, f"line {kind.sourceline}", "variance must not be negative")
+    if tag == "LogNormalDistribution":  # (its spread is log(1 + variance / expectedValue²): finite)
+        mean, var = float_attribute(path, kind, "expectedValue"), float_attribute(path, kind, "variance")
+        if mean * mean == 0.0 or not math.isfinite(var / (mean * mean)):
+            raise VeiInputError(
+                path,
+                f"line {kind.sourceline}",
+                f"a log-normal needs variance / expectedValue² finite (expectedValue {mean:g}, variance {var:g})",
+            )
     if tag == "PoissonDistribution" and not (0 <= float_attribute(path, kind, "expectedValue") <= 1e9):
         raise VeiInputError(path, f"line {kind.sourceline}", "a Poisson expectedValue must be in 0..1e9")
 
