@@ -330,46 +330,41 @@ def test_a_condition_on_a_changing_speed_is_evaluated_every_step(tmp_path, monke
     assert cruised > 0.5 * len(fast.t), f"only {cruised} of {len(fast.t)} steps cruised"
 
 
-def test_a_synchronised_entity_speeding_up_to_its_final_speed_stays_in_one_stretch(tmp_path, monkeypatch):
-    """The quiet steps' bound on a synchronised entity's move reaches its final speed: from standstill
-    to 6 m/s (three times the margin) the core carries it without stopping at each margin passed."""
-    from vei_scenario.interpreter import cruise, engine
+def _stretches(tmp_path, monkeypatch, c: dict, quantity: str) -> list[tuple[int, float, float]]:
+    """Each offer to the core in the run of case ``c`` (checked equal to the stepped run): the steps
+    it took and the VRU's ``quantity`` before and after."""
+    from vei_scenario.interpreter import engine
 
-    c = {**BASE, "vru_lane": -2, "vru_s": 100.0, "final_v": 6.0, "cross_x": 200.0, "ego_s": 20.0, "end": 14.0}
-    calls: list[tuple[int, float, float]] = []
+    stretches: list[tuple[int, float, float]] = []
     original = engine.cruise
 
     def watching(ctx, *args):
-        v0 = ctx.entities["VRU"].speed
+        before = getattr(ctx.entities["VRU"], quantity)
         n = original(ctx, *args)
-        calls.append((n, v0, ctx.entities["VRU"].speed))
+        stretches.append((n, before, getattr(ctx.entities["VRU"], quantity)))
         return n
 
     monkeypatch.setattr(engine, "cruise", watching)
     fast, _, slow = run_both(scenario(tmp_path, c), monkeypatch)
     assert_identical(fast, slow)
-    gains = [v1 - v0 for n, v0, v1 in calls if n > 0]
+    return stretches
+
+
+def test_a_synchronised_entity_speeding_up_to_its_final_speed_stays_in_one_stretch(tmp_path, monkeypatch):
+    """The quiet steps' bound on a synchronised entity's move reaches its final speed: from standstill
+    to 6 m/s (three times the margin) the core carries it without stopping at each margin passed."""
+    from vei_scenario.interpreter import cruise
+
+    c = {**BASE, "vru_lane": -2, "vru_s": 100.0, "final_v": 6.0, "cross_x": 200.0, "ego_s": 20.0, "end": 14.0}
+    stretches = _stretches(tmp_path, monkeypatch, c, "speed")
+    gains = [v1 - v0 for n, v0, v1 in stretches if n > 0]
     assert max(gains) > 2 * cruise.SPEED_MARGIN_MPS, gains
-    assert max(slow.traces["VRU"].speed) > 5.0
+    assert max(v1 for _, _, v1 in stretches) > 5.0
 
 
 def test_a_traveled_distance_is_a_guard_the_core_stops_just_before(tmp_path, monkeypatch):
     """A TraveledDistanceCondition does not cut the stretch to the steps its distance could at most be
     covered in: the core compares the odometer each step and stops before the step that reaches it."""
-    from vei_scenario.interpreter import engine
-
-    c = {**BASE, **CASES["watch_traveled"]}
-    stretches: list[tuple[int, float, float]] = []
-    original = engine.cruise
-
-    def watching(ctx, *args):
-        before = ctx.entities["VRU"].odometer
-        n = original(ctx, *args)
-        stretches.append((n, before, ctx.entities["VRU"].odometer))
-        return n
-
-    monkeypatch.setattr(engine, "cruise", watching)
-    fast, _, slow = run_both(scenario(tmp_path, c), monkeypatch)
-    assert_identical(fast, slow)
+    stretches = _stretches(tmp_path, monkeypatch, {**BASE, **CASES["watch_traveled"]}, "odometer")
     # one stretch carries the rider from where it stands to the step before its 3.3 m
     assert any(n > 100 and a < 0.5 and 3.3 - 0.05 < b < 3.3 for n, a, b in stretches), stretches
