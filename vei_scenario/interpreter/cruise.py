@@ -134,12 +134,13 @@ class QuietBounds:
 
 
 def _columns(
-    ctx, entities, synced: dict, turn: float, kept: dict[str, str] | None = None
+    ctx, entities, synced: dict[str, float], turn: float, kept: dict[str, str] | None = None
 ) -> tuple[tuple, list[float], QuietBounds] | None:
     """The core's columns of every road user and the bounds of their steps, or None when one moves
     otherwise than by cruising along its lane or path (or straight on) at its speed, the speed a
-    synchronisation (of ``synced``) or a SpeedAction's transition gives it, the speed of the road user
-    it keeps its distance to (``kept``: road user -> that one), or along a timed path."""
+    synchronisation (``synced``: road user -> the speed it heads for) or a SpeedAction's transition
+    gives it, the speed of the road user it keeps its distance to (``kept``: road user -> that one), or
+    along a timed path."""
     ways, cols, dt = [], [], ctx.dt
     kept = kept or {}
     # (a trailer's speed is its tow's, a keeper's its reference's: taken as changing)

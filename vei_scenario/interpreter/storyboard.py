@@ -146,14 +146,14 @@ class ConditionRunner:
         """The index in ``times`` of the first evaluation whose delayed value is true (len(times) if
         none), given the edged value ``held`` throughout: what walking :meth:`delayed` finds, worked
         out from the runs' first times (a run's values come due in order, one bisection each)."""
-        dt, n, delay = times.dt, len(times), self.delay
+        dt, n = times.dt, len(times)
         if not n:
             return 0
         runs = [(step_time(r[0], dt), r[2]) for r in self.history]  # (time of its first value, value)
         runs.append((times[0], held))  # (the evaluations to come)
 
         def due(i: int) -> float:
-            return times[i] - delay + 1e-9  # (_due)
+            return self._due(times[i])
 
         for j, (first, value) in enumerate(runs):
             if not value:

@@ -1234,7 +1234,8 @@ static int keep_place(const double *kp, PyObject *ways, double *st, double ref_s
 #define GUARD_COLUMNS(F) F(ENTITY) F(OTHER) F(QUANTITY) F(RULE) F(VALUE) F(FREESPACE) F(POINT_X) F(POINT_Y) F(POINT_YAW)
 #define GD_ENUM(name) GD_##name,
 enum { GUARD_COLUMNS(GD_ENUM) GD_COLS };
-/* speed and acceleration (less the other's) are the interpreter's own columns, compared exactly; distances
+/* speed and acceleration (less the other's) and the odometer are the interpreter's own columns, compared
+ * exactly (the odometer as the step's rows sum it, before the guards are checked); distances
  * (conditions._relative) are recomputed here, so they are compared with a margin (GUARD_MARGIN_M) */
 #define GUARD_QUANTITIES(F) F(SPEED) F(ACCEL) F(ODOMETER) F(CARTESIAN) F(LONGITUDINAL) F(LATERAL)
 #define GQ_ENUM(name) GQ_##name,
