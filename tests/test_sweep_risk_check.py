@@ -294,11 +294,16 @@ def test_without_schemas_check_and_validate_say_what_they_skipped(tmp_path, caps
     assert code == 2 and doc["valid"] is False and "schema" in doc["error"]
 
 
-@pytest.mark.parametrize("pool_worth_s", [0.0, 1e9])
-def test_an_interpreted_sweep_gives_the_same_rows_on_any_number_of_cores(monkeypatch, pool_worth_s):
-    """Worker processes or not (a small sweep stays in one process), rows come back in variant order,
-    equal to variant-by-variant runs, with a bad value as an error row wherever it stands."""
-    from vei_scenario.sweep import evaluate
+@pytest.mark.parametrize("pool_worth_s, fork", [(0.0, True), (1e9, True), (0.0, False)])
+def test_an_interpreted_sweep_gives_the_same_rows_on_any_number_of_cores(monkeypatch, pool_worth_s, fork):
+    """Worker processes or not (a small sweep stays in one process), forked (Linux) or a pool of
+    spawned ones (elsewhere), rows come back in variant order, equal to variant-by-variant runs, with
+    a bad value as an error row wherever it stands."""
+    from vei_scenario.sweep import evaluate, forked
+
+    if fork and not forked.available():
+        pytest.skip("forked workers are used on Linux only")
+    monkeypatch.setattr(forked, "available", lambda: fork)
 
     scenario = str(Path(__file__).parent / "data" / "following_brake.xosc")
     variants = [{"EgoSpeed": "bad", "LeadSpeed": "5"}]
@@ -316,14 +321,15 @@ def test_an_interpreted_sweep_gives_the_same_rows_on_any_number_of_cores(monkeyp
 
 
 def test_a_sweep_of_two_variants_starts_no_worker_processes(monkeypatch):
-    """Two variants cannot repay a pool (the first reads the files, a worker would read them again):
-    they run here, in order, whatever the number of cores."""
-    from vei_scenario.sweep import evaluate
+    """Two variants cannot repay a worker (the first reads the files, a worker would have the second
+    alone): they run here, in order, whatever the number of cores."""
+    from vei_scenario.sweep import evaluate, forked
 
-    def no_pool(*args, **kwargs):
-        raise AssertionError("a worker pool was started for two variants")
+    def no_workers(*args, **kwargs):
+        raise AssertionError("worker processes were started for two variants")
 
-    monkeypatch.setattr(evaluate, "ProcessPoolExecutor", no_pool)
+    monkeypatch.setattr(forked, "run_forked", no_workers)
+    monkeypatch.setattr(evaluate, "ProcessPoolExecutor", no_workers)
     monkeypatch.setattr(evaluate, "POOL_WORTH_S", 0.0)
     scenario = str(Path(__file__).parent / "data" / "following_brake.xosc")
     variants = [{"EgoSpeed": "8.0", "LeadSpeed": "3.0"}, {"EgoSpeed": "15.0", "LeadSpeed": "6.0"}]

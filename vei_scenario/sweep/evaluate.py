@@ -8,18 +8,20 @@ the local and the Dask paths give identical catalogs.
 from __future__ import annotations
 
 import os
-import sys
 import time
 from collections.abc import Callable, Iterable
 from concurrent.futures import ProcessPoolExecutor
 
 from vei_scenario.errors import VeiError
 from vei_scenario.metrics import MetricConfig, PairSeries, compute_metrics
+from vei_scenario.sweep import forked
 
-#: The least work (s, on one core) worth starting worker processes for: below it they cost more than
-#: they save (forking, each one's first touch of the parent's memory). Measured on 2 cores with Euro
-#: NCAP variation files: 4 variants of 11 ms ran quicker in one process, 11 of 15 ms and 45 of 4 ms in two.
-POOL_WORTH_S = 0.05
+#: The least work (s, on one core) worth forking worker processes for: below it they cost more than
+#: they save (the fork, each one's first touch of the parent's memory: about 7 ms together on 2 cores).
+#: Measured with Euro NCAP variation files on 2 cores: 9 variants of 4.5 ms ran 1.4x faster in two
+#: workers, 3 variants of 6 ms slower. The work is estimated from the first variant, which also reads
+#: the files (about twice a later variant's time).
+POOL_WORTH_S = 0.03
 #: The longest a sweep waits for its worker processes (s) before it stops with one line.
 WATCHDOG_S = 6 * 3600.0
 
@@ -86,37 +88,41 @@ def evaluate_local(
     if native is not None:
         return _evaluate_native(native, scenario, variants, dt, workers, progress, zone_ttc)
     out: list[dict] = []
-    if len(variants) <= 2:  # the first reads the scenario's files: a worker would read them again
-        workers = 1
-    elif workers > 1:
-        # Two variants here first: the first reads the scenario's files (the workers then inherit them
-        # read), the second says what a variant costs. Work that would not repay starting the worker
-        # processes stays in this one.
-        out += _chunk(scenario, variants[:1], dt, zone_ttc)
+    if workers > 1 and len(variants) > 1:
+        # The first variant here: it reads the scenario's files (the workers then inherit them read)
+        # and says what the rest will cost. Work that would not repay the workers stays here.
         started = time.perf_counter()
-        out += _chunk(scenario, variants[1:2], dt, zone_ttc)
+        out += _chunk(scenario, variants[:1], dt, zone_ttc)
         if progress:
-            progress(2)
-        if (time.perf_counter() - started) * (len(variants) - 2) < POOL_WORTH_S:
+            progress(1)
+        if (time.perf_counter() - started) * (len(variants) - 1) < POOL_WORTH_S:
             workers = 1
-        variants = variants[2:]
-    size = max(1, min(256, -(-len(variants) // workers)))
-    chunks = _chunks(variants, size)
-    if workers == 1 or len(chunks) == 1:
-        for c in chunks:
+        variants = variants[1:]
+    if workers == 1 or len(variants) <= 1:
+        for c in _chunks(variants, 256):
             out.extend(_chunk(scenario, c, dt, zone_ttc))
             if progress:
                 progress(len(c))
         return out
-    # fork: workers inherit the imported modules (1.8x on 2 cores vs 1.2x with forkserver for 64
-    # variants); the parent runs no threads at this point (the progress bar's monitor is disabled).
-    ctx = None if sys.platform != "linux" else __import__("multiprocessing").get_context("fork")
+    if forked.available():
+
+        def row(i: int) -> dict:
+            return _chunk(scenario, variants[i : i + 1], dt, zone_ttc)[0]
+
+        return out + forked.run_forked(row, len(variants), workers, progress, WATCHDOG_S)
+    return out + _evaluate_pool(scenario, variants, dt, workers, progress, zone_ttc)
+
+
+def _evaluate_pool(scenario, variants, dt, workers, progress, zone_ttc: str = "2d") -> list[dict]:
+    """Where processes cannot be forked (macOS, Windows): a pool of spawned workers, chunk by chunk."""
     from concurrent.futures.process import BrokenProcessPool
 
     from vei_scenario.errors import VeiInputError
 
+    chunks = _chunks(variants, max(1, min(256, -(-len(variants) // workers))))
+    out: list[dict] = []
     try:
-        with ProcessPoolExecutor(max_workers=workers, mp_context=ctx) as pool:
+        with ProcessPoolExecutor(max_workers=workers) as pool:
             n = len(chunks)
             # the watchdog: a chunk that does not come back in time stops the sweep with one line
             results = pool.map(_chunk, [scenario] * n, chunks, [dt] * n, [zone_ttc] * n, timeout=WATCHDOG_S)
