@@ -68,6 +68,26 @@ def test_a_workers_exception_is_raised_here_and_the_others_are_stopped():
         forked.run_forked(task, 30, 2)
 
 
+class _Refusal(Exception):
+    """An exception that pickles but cannot be rebuilt from its arguments."""
+
+    def __init__(self, what: str, why: str) -> None:
+        super().__init__(f"{what}: {why}")
+
+
+def test_an_exception_that_cannot_travel_comes_as_its_text():
+    parent = os.getpid()
+
+    def task(i: int) -> int:
+        time.sleep(0.005)
+        if os.getpid() != parent:
+            raise _Refusal(f"task {i}", "refused")
+        return i
+
+    with pytest.raises(RuntimeError, match=r"_Refusal: task \d+: refused"):
+        forked.run_forked(task, 30, 2)
+
+
 def test_a_worker_that_dies_is_one_line():
     parent = os.getpid()
 
@@ -96,13 +116,17 @@ def test_a_silent_worker_stops_the_evaluation_at_the_watchdog():
     assert time.monotonic() - a < 10
 
 
-def test_text_written_before_the_fork_is_written_once():
-    """A worker ends without the parent's clean-up: buffered output is not written again by it."""
+def test_a_worker_ends_without_the_parents_clean_up_and_writes_nothing_twice():
+    """Output buffered before the fork is not written again by a worker, neither when a task flushes
+    (a warning, a print) nor when the worker ends, and the parent's clean-up (its atexit handlers)
+    runs once: a worker ends without it."""
     code = (
-        "import sys; sys.stdout.write('before'); "
+        "import atexit, sys, time; sys.stdout.write('before'); "
+        "atexit.register(lambda: sys.stdout.write(' atexit')); "
         "from vei_scenario.sweep.forked import run_forked; "
-        "r = run_forked(lambda i: i, 6, 2); sys.stdout.write(' ' + repr(r))"
+        "r = run_forked(lambda i: (time.sleep(0.01), sys.stdout.flush(), i)[2], 6, 2); "
+        "sys.stdout.write(' ' + repr(r))"
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
     assert out.returncode == 0, out.stderr
-    assert out.stdout == "before [0, 1, 2, 3, 4, 5]"
+    assert out.stdout == "before [0, 1, 2, 3, 4, 5] atexit"

@@ -57,8 +57,6 @@ def run_forked(
     tickets_r, tickets_w = os.pipe()
     os.write(tickets_w, b"".join(_TICKET.pack(i) for i in range(0, count, size)))
     os.close(tickets_w)  # (the workers read to the end of the pipe: no more tickets)
-    sys.stdout.flush()  # (text buffered before the fork is written once, by this process)
-    sys.stderr.flush()
     children: dict[int, int] = {}  # result pipe's read end -> worker's pid
     try:
         for _ in range(workers - 1):
@@ -100,7 +98,8 @@ def _work(task, count: int, size: int, tickets: int, out: int, inherited: list[i
     except BaseException as exc:  # noqa: BLE001 (any failure goes to the parent, which raises it)
         try:
             payload = pickle.dumps(exc, pickle.HIGHEST_PROTOCOL)
-        except Exception:  # noqa: BLE001 (an exception that cannot be pickled: its text)
+            pickle.loads(payload)  # (some exceptions pickle but cannot be rebuilt from their arguments)
+        except Exception:  # noqa: BLE001 (an exception that cannot travel: its text)
             payload = pickle.dumps(RuntimeError(f"{type(exc).__name__}: {exc}"))
         try:
             _write_all(out, _HEADER.pack(_FAILED, len(payload)) + payload)
@@ -120,6 +119,9 @@ class _Results:
         self.buffers = {fd: bytearray() for fd in children}
         self.open = set(children)
         self.done: set[int] = set()
+        self.poll = select.poll()  # (not select(): a worker's pipe may be numbered above 1024)
+        for fd in children:
+            self.poll.register(fd, select.POLLIN)
 
     def put(self, index: int, value: object) -> None:
         self.values[index] = value
@@ -130,13 +132,12 @@ class _Results:
         """Read what the workers have sent; with ``wait``, until every one has said it is done (the
         watchdog's time at most between two messages), and return all results in task order."""
         while self.open:
-            timeout = self.timeout_s if wait else 0.0
-            ready, _, _ = select.select(sorted(self.open), [], [], timeout)
+            ready = self.poll.poll(self.timeout_s * 1000.0 if wait else 0)
             if not ready:
                 if not wait:
                     return self.values
                 raise VeiInputError(None, "sweep", f"no result from the workers within {self.timeout_s:g} s")
-            for fd in ready:
+            for fd, _ in ready:
                 self._receive(fd)
         if wait and any(v is _MISSING for v in self.values):  # (cannot happen: every worker said it is done)
             raise VeiInputError(None, "--workers", "a worker process ended without all its results")
@@ -146,6 +147,7 @@ class _Results:
         data = os.read(fd, 1 << 16)
         if not data:
             self.open.discard(fd)
+            self.poll.unregister(fd)
             if fd not in self.done:
                 raise VeiInputError(None, "--workers", "a worker process died (out of memory, or killed)")
             return
