@@ -83,6 +83,9 @@ def evaluate_local(
     progress: Callable[[int], None] | None = None,
     zone_ttc: str = "2d",
 ) -> list[dict]:
+    """Rows of ``variants`` in variant order on ``workers`` local cores (default: all): a vei-compiled
+    loop through the sweep kernel on threads, any other scenario through the interpreter, in this
+    process or, when the work repays them, in forked workers beside it."""
     workers = workers or os.cpu_count() or 1
     native = _native_engine(scenario, dt, zone_ttc)
     if native is not None:
