@@ -55,6 +55,31 @@ def test_no_tasks_and_one_worker_fork_nothing(monkeypatch):
     assert forked.run_forked(lambda i: i * 2, 5, 1) == [0, 2, 4, 6, 8]
 
 
+def test_when_the_system_refuses_a_process_the_others_do_the_work(monkeypatch):
+    """A fork that fails (a process limit, no memory) is no error: the workers there are share the
+    tasks, down to this process alone."""
+    real_fork = os.fork
+    forks: list[int] = []
+
+    def second_fork_fails() -> int:
+        forks.append(1)
+        if len(forks) >= 2:
+            raise BlockingIOError(11, "Resource temporarily unavailable")
+        return real_fork()
+
+    monkeypatch.setattr(os, "fork", second_fork_fails)
+    out = forked.run_forked(lambda i: (time.sleep(0.002), i, os.getpid())[1:], 30, 4)
+    assert [r[0] for r in out] == list(range(30))
+    assert len({r[1] for r in out}) == 2 and len(forks) == 2
+
+    def no_fork() -> int:
+        raise BlockingIOError(11, "Resource temporarily unavailable")
+
+    monkeypatch.setattr(os, "fork", no_fork)
+    out = forked.run_forked(lambda i: (i, os.getpid()), 5, 2)
+    assert out == [(i, os.getpid()) for i in range(5)]
+
+
 def test_a_workers_exception_is_raised_here_and_the_others_are_stopped():
     parent = os.getpid()
 

@@ -48,8 +48,9 @@ def run_forked(
     progress: Callable[[int], None] | None = None,
     timeout_s: float = 6 * 3600.0,
 ) -> list:
-    """``[task(0), ..., task(count - 1)]`` computed by this process and ``workers - 1`` forked ones. The caller
-    runs no threads that hold locks (a forked child would inherit them held)."""
+    """``[task(0), ..., task(count - 1)]`` computed by this process and ``workers - 1`` forked ones
+    (fewer when the system refuses more processes: the tasks are shared among those there are). The
+    caller runs no threads that hold locks (a forked child would inherit them held)."""
     if count == 0:
         return []
     workers = max(1, min(workers, count))
@@ -61,7 +62,12 @@ def run_forked(
     try:
         for _ in range(workers - 1):
             out_r, out_w = os.pipe()
-            pid = os.fork()
+            try:
+                pid = os.fork()
+            except OSError:  # (a process limit, no memory for another: the ones there are do the work)
+                os.close(out_r)
+                os.close(out_w)
+                break
             if pid == 0:  # a worker: it never returns from here
                 _work(task, count, size, tickets_r, out_w, [out_r, *children])
             os.close(out_w)
