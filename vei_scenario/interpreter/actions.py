@@ -505,7 +505,7 @@ class FollowTrajectory(Action):
         if self.done and e.follower is not None and not e.controllers and ctx.road_file is not None:
             if ctx.roads is None:
                 return
-            if e.follower.timing is not None and e.follower.polyline.timed:
+            if e.follower.plays_time:
                 e.speed = e.follower.polyline.end_speed * e.follower.timing[1]
                 e.speed_profile = None  # (the timing set the speed: an older SpeedAction has no say)
             e.lane = lane_state_at(ctx.roads, e)  # its heading relative to the lane is kept (esmini)

@@ -276,7 +276,7 @@ def _absent(e) -> list[float]:
 def _timed(e) -> bool:
     """Whether ``e`` follows a timed path (its trajectory's time, not its speed, moves it)."""
     f = e.follower
-    return f is not None and f.timing is not None and f.polyline.timed
+    return f is not None and f.plays_time
 
 
 @dataclass

@@ -284,7 +284,7 @@ class Simulation:
         e.status = "default"
         f = e.follower
         t_next = ctx.t + dt
-        if f is not None and f.timing is not None and f.polyline.timed:
+        if f is not None and f.plays_time:
             target = f.polyline.s_at_time(f.trajectory_time(t_next))
             if f.mode == "position":
                 x, y, h = f.polyline.at_time(f.trajectory_time(t_next))

@@ -94,6 +94,12 @@ class PathFollower:
     #: along it (an untimed path started at a negative speed, as esmini reads it).
     reverse: bool = False
 
+    @property
+    def plays_time(self) -> bool:
+        """Whether the trajectory's time, not the entity's speed, moves it along: a timing and a
+        polyline whose vertices all have times."""
+        return self.timing is not None and self.polyline.timed
+
     def trajectory_time(self, t_sim: float) -> float:
         """The trajectory time played at simulation time ``t_sim``: ``t * scale + offset``, with t
         counted from 0 (absolute) or from the action's start (relative) — the reading esmini
@@ -111,7 +117,7 @@ class PathFollower:
         """Whether the path is done after the step that started at ``t_sim``. A timed one is done once
         less than one step of its time is left (esmini: what follows it starts a step sooner, from
         where the entity is, rather than after a last step that would only reach the final vertex)."""
-        if self.timing is not None and self.polyline.timed:
+        if self.plays_time:
             left = self.polyline.ts[-1] - self.trajectory_time(t_sim)
             return left <= dt * self.timing[1] + 1e-9
         return self.s >= self.polyline.length - 1e-9

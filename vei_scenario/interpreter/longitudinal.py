@@ -143,7 +143,7 @@ class LongitudinalDistance(SteppedLongitudinal):
         on_lane = e.lane is not None and e.follower is None and ctx.roads is not None
         if self.placing and not (on_lane and e.lateral is None):
             return None
-        if e.follower is not None and e.follower.timing is not None and e.follower.polyline.timed:
+        if e.follower is not None and e.follower.plays_time:
             return None  # (a timed path sets its speed)
         la, lb = e.lane, ref.lane
         along = not self.freespace and self.system in ("road", "lane") and la is not None and lb is not None

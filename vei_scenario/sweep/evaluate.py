@@ -95,22 +95,22 @@ def evaluate_local(
         # The first variant here: it reads the scenario's files (the workers then inherit them read)
         # and says what the rest will cost. Work that would not repay the workers stays here.
         started = time.perf_counter()
-        out += _chunk(scenario, variants[:1], dt, zone_ttc)
+        out.append(evaluate_variant(scenario, variants[0], dt, zone_ttc))
         if progress:
             progress(1)
         if (time.perf_counter() - started) * (len(variants) - 1) < POOL_WORTH_S:
             workers = 1
         variants = variants[1:]
     if workers == 1 or len(variants) <= 1:
-        for c in _chunks(variants, 256):
-            out.extend(_chunk(scenario, c, dt, zone_ttc))
+        for v in variants:
+            out.append(evaluate_variant(scenario, v, dt, zone_ttc))
             if progress:
-                progress(len(c))
+                progress(1)
         return out
     if forked.available():
 
         def row(i: int) -> dict:
-            return _chunk(scenario, variants[i : i + 1], dt, zone_ttc)[0]
+            return evaluate_variant(scenario, variants[i], dt, zone_ttc)
 
         return out + forked.run_forked(row, len(variants), workers, progress, WATCHDOG_S)
     return out + _evaluate_pool(scenario, variants, dt, workers, progress, zone_ttc)

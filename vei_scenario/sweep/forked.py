@@ -73,12 +73,10 @@ def run_forked(
             os.close(out_w)
             children[out_r] = pid
         results = _Results(children, count, progress, timeout_s)
-        while ticket := _read_exactly(tickets_r, _TICKET.size):  # this process is a worker as well
-            (first,) = _TICKET.unpack(ticket)
-            for i in range(first, min(first + size, count)):
-                results.put(i, task(i))
-                results.read(wait=False)  # (drained as it goes: a full pipe would stall its worker)
-        return results.read(wait=True)
+        for i in _tasks(tickets_r, size, count):  # this process is a worker as well
+            results.put(i, task(i))
+            results.drain()  # (as it goes: a full pipe would stall its worker)
+        return results.all()
     finally:
         os.close(tickets_r)
         for fd, pid in children.items():
@@ -91,14 +89,9 @@ def _work(task, count: int, size: int, tickets: int, out: int, inherited: list[i
     try:
         for fd in inherited:  # (the parent's ends of the other workers' pipes)
             os.close(fd)
-        while True:
-            ticket = _read_exactly(tickets, _TICKET.size)
-            if not ticket:
-                break
-            (first,) = _TICKET.unpack(ticket)
-            for i in range(first, min(first + size, count)):
-                payload = pickle.dumps(task(i), pickle.HIGHEST_PROTOCOL)
-                _write_all(out, _HEADER.pack(i, len(payload)) + payload)
+        for i in _tasks(tickets, size, count):
+            payload = pickle.dumps(task(i), pickle.HIGHEST_PROTOCOL)
+            _write_all(out, _HEADER.pack(i, len(payload)) + payload)
         _write_all(out, _HEADER.pack(_DONE, 0))
         code = 0
     except BaseException as exc:  # noqa: BLE001 (any failure goes to the parent, which raises it)
@@ -113,6 +106,13 @@ def _work(task, count: int, size: int, tickets: int, out: int, inherited: list[i
             pass
     finally:
         os._exit(code)  # (never the parent's clean-up: its atexit handlers, its buffered output)
+
+
+def _tasks(tickets: int, size: int, count: int):
+    """The indices of the tasks this process takes: ``size`` for each ticket it reads, until none is left."""
+    while ticket := _read_exactly(tickets, _TICKET.size):
+        (first,) = _TICKET.unpack(ticket)
+        yield from range(first, min(first + size, count))
 
 
 class _Results:
@@ -134,20 +134,27 @@ class _Results:
         if self.progress:
             self.progress(1)
 
-    def read(self, wait: bool) -> list:
-        """Read what the workers have sent; with ``wait``, until every one has said it is done (the
-        watchdog's time at most between two messages), and return all results in task order."""
+    def drain(self) -> None:
+        """Read what the workers have sent so far."""
+        while self.open and self._read_ready(0):
+            pass
+
+    def all(self) -> list:
+        """Read until every worker has said it is done (the watchdog's time at most between two
+        messages); every result, in task order."""
         while self.open:
-            ready = self.poll.poll(self.timeout_s * 1000.0 if wait else 0)
-            if not ready:
-                if not wait:
-                    return self.values
+            if not self._read_ready(self.timeout_s * 1000.0):
                 raise VeiInputError(None, "sweep", f"no result from the workers within {self.timeout_s:g} s")
-            for fd, _ in ready:
-                self._receive(fd)
-        if wait and any(v is _MISSING for v in self.values):  # (cannot happen: every worker said it is done)
+        if any(v is _MISSING for v in self.values):  # (cannot happen: every worker said it is done)
             raise VeiInputError(None, "--workers", "a worker process ended without all its results")
         return self.values
+
+    def _read_ready(self, timeout_ms: float) -> bool:
+        """Read the pipes that have something within ``timeout_ms``; whether any had."""
+        ready = self.poll.poll(timeout_ms)
+        for fd, _ in ready:
+            self._receive(fd)
+        return bool(ready)
 
     def _receive(self, fd: int) -> None:
         data = os.read(fd, 1 << 16)

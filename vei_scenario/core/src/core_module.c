@@ -972,12 +972,18 @@ static VeiBox entity_box(double x, double y, double yaw, double center_x, double
     return (VeiBox){x + c * center_x, y + s * center_x, yaw, length, width};
 }
 
+/* the bounding box of the road user whose core columns are e */
+static VeiBox row_box(const double *e)
+{
+    return entity_box(e[CR_X], e[CR_Y], e[CR_YAW], e[CR_CENTER_X], e[CR_LENGTH], e[CR_WIDTH]);
+}
+
 /* the pairs (i * n + j) of road users whose boxes overlap; count in *k */
 static void cruise_pairs(const double *st, Py_ssize_t n, VeiBox *box, int *pairs, Py_ssize_t *k)
 {
     for (Py_ssize_t i = 0; i < n; i++) {
         const double *e = st + i * CR_COLS;
-        box[i] = entity_box(e[CR_X], e[CR_Y], e[CR_YAW], e[CR_CENTER_X], e[CR_LENGTH], e[CR_WIDTH]);
+        box[i] = row_box(e);
     }
     *k = 0;
     for (Py_ssize_t i = 0; i < n; i++) {
@@ -1166,8 +1172,8 @@ static double keep_gap(const double *kp, const double *a, const double *b)
 {
     if (kp[KP_FREESPACE] != 0.0) {
         double c, s, dc, ds;
-        VeiBox ba = entity_box(a[CR_X], a[CR_Y], a[CR_YAW], a[CR_CENTER_X], a[CR_LENGTH], a[CR_WIDTH]);
-        VeiBox bb = entity_box(b[CR_X], b[CR_Y], b[CR_YAW], b[CR_CENTER_X], b[CR_LENGTH], b[CR_WIDTH]);
+        VeiBox ba = row_box(a);
+        VeiBox bb = row_box(b);
         vr_cos_sin(a[CR_YAW], &c, &s);
         vr_cos_sin(bb.yaw - a[CR_YAW], &dc, &ds);
         double own = c * ba.x + s * ba.y, other = c * bb.x + s * bb.y;
@@ -1296,11 +1302,11 @@ static double guard_distance(const double *g, const double *st)
 {
     const double *a = st + (Py_ssize_t)g[GD_ENTITY] * CR_COLS;
     int freespace = g[GD_FREESPACE] != 0, kind = (int)g[GD_QUANTITY];
-    VeiBox ba = entity_box(a[CR_X], a[CR_Y], a[CR_YAW], a[CR_CENTER_X], a[CR_LENGTH], a[CR_WIDTH]), bb;
+    VeiBox ba = row_box(a), bb;
     double bx, by;
     if (g[GD_OTHER] >= 0) {
         const double *b = st + (Py_ssize_t)g[GD_OTHER] * CR_COLS;
-        bb = entity_box(b[CR_X], b[CR_Y], b[CR_YAW], b[CR_CENTER_X], b[CR_LENGTH], b[CR_WIDTH]);
+        bb = row_box(b);
         bx = b[CR_X], by = b[CR_Y];
     } else {
         bb = (VeiBox){g[GD_POINT_X], g[GD_POINT_Y], g[GD_POINT_YAW], 0.0, 0.0};
