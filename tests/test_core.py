@@ -115,3 +115,56 @@ def test_lane_ids_far_apart_are_answered_from_the_lanes_there_are(tmp_path):
     path.write_text(ARC_ROAD.replace(lane, lane + far.format(-5000000000)))
     with pytest.raises(VeiInputError, match=r"lane id -5000000000 \(line \d+\) is out of range"):
         RoadNetwork.load(path)
+
+
+def _trapezoid_clothoid(x0, y0, h0, k, rate, length, fine=0.005, keep=10):
+    """The trapezoid rule on an even grid, written with numpy: the reference the core's sampling of a
+    trajectory clothoid is held to, bit for bit."""
+    import numpy as np
+
+    n = max(2, math.ceil(length / fine) + 1)
+    s = np.linspace(0.0, length, n)
+    kept = np.arange(0, n, keep)
+    if kept[-1] != n - 1:
+        kept = np.append(kept, n - 1)
+    if k == 0.0 and rate == 0.0:
+        return list(x0 + math.cos(h0) * s[kept]), list(y0 + math.sin(h0) * s[kept]), [h0 + 0.0] * len(kept)
+    h = h0 + k * s + 0.5 * rate * s * s
+    out = []
+    for start, f in ((x0, np.cos(h)), (y0, np.sin(h))):
+        v = np.concatenate(([0.0], np.cumsum(0.5 * (f[1:] + f[:-1]) * np.diff(s))))
+        out.append(list(start + v[kept]))
+    return out[0], out[1], list(h[kept])
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_a_trajectory_clothoid_is_the_trapezoid_rule_on_its_grid(seed):
+    """Straight lines, arcs and clothoids of random start, curvature and length (a length of a few
+    fine steps, of a whole number of kept points and not): the core's points equal the numpy
+    reference's to the last bit, the last one its end."""
+    import random
+
+    rnd = random.Random(seed)
+    for _ in range(150):
+        x0, y0, h0 = rnd.uniform(-1e3, 1e3), rnd.uniform(-1e3, 1e3), rnd.uniform(-7.0, 7.0)
+        k = rnd.choice([0.0, rnd.uniform(-0.2, 0.2)])
+        rate = rnd.choice([0.0, rnd.uniform(-0.01, 0.01)])
+        length = rnd.choice([rnd.uniform(1e-6, 0.1), rnd.uniform(0.1, 200.0), 0.05 * rnd.randint(1, 400)])
+        got = _core.clothoid(x0, y0, h0, k, rate, length, 0.005, 10)
+        assert got == _trapezoid_clothoid(x0, y0, h0, k, rate, length)
+
+
+def test_a_clothoid_call_out_of_range_is_refused():
+    for bad in ((0, 0, 0, 0.1, 0, 0.0), (0, 0, 0, 0.1, 0, -1.0), (0, 0, 0, 0.1, 0, 1e9), (0, 0, math.nan, 0, 0, 1)):
+        with pytest.raises(ValueError, match="clothoid"):
+            _core.clothoid(*bad, 0.005, 10)
+
+
+def test_a_step_is_measured_by_the_libraries_hypot():
+    """The core measures a step (the odometer) with the C library's hypot, which numpy's hypot also
+    calls; the interpreter's own steps call the same function (_core.hypot)."""
+    import numpy as np
+
+    rnd = np.random.default_rng(7)
+    xy = rnd.uniform(-50, 50, (20000, 2)) * 10.0 ** rnd.integers(-4, 3, (20000, 1))
+    assert [_core.hypot(x, y) for x, y in xy] == list(np.hypot(xy[:, 0], xy[:, 1]))

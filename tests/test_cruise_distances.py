@@ -164,7 +164,7 @@ def _core_steps(quantity: str, rule: int, value: float, freespace: bool, n_max: 
     pack = np.asarray
     clock = pack([k / 8 for k in range(n_max)], float).tobytes()
     n, *_ = _core.cruise((None, None), pack(state, float).tobytes(), b"", b"", b"", pack(guard, float).tobytes(), clock,
-                         math.inf, 0.125, math.hypot)  # fmt: skip
+                         math.inf, 0.125)  # fmt: skip
     return n
 
 

@@ -601,6 +601,28 @@ def test_a_closed_timed_polyline_that_does_not_close_itself_is_refused(tmp_path,
     assert "closed timed Polyline must end on its first vertex" in err and "line" in err
 
 
+@pytest.mark.parametrize(
+    "shape",
+    [
+        '<Clothoid curvature="0.01" curvatureDot="0" length="{L}"><Position><WorldPosition x="0" y="0" h="0"/>'
+        "</Position></Clothoid>",
+        '<ClothoidSpline><ClothoidSplineSegment curvatureStart="0" curvatureEnd="0.01" length="{L}"><PositionStart>'
+        '<WorldPosition x="0" y="0" h="0"/></PositionStart></ClothoidSplineSegment></ClothoidSpline>',
+    ],
+)
+@pytest.mark.parametrize("length", ["0", "-5", "1e9"])
+def test_a_clothoid_of_no_length_or_too_long_is_refused(tmp_path, capsys, shape, length):
+    """The standard's range for a clothoid's length is above 0; longer than 100 km it would be
+    millions of vertices: both one line naming the element, no traceback, no output."""
+    follow = follow_trajectory(shape.format(L=length))
+    init = _teleport("B", 0, 0, 0).replace("</Private>", follow + "</Private>")
+    path = _scenario(tmp_path, _car("B"), init, "")
+    assert main(["run", str(path), "-o", str(tmp_path / "o")]) == 2
+    err = capsys.readouterr().err
+    assert "needs a length above 0 and at most 100000 m" in err and "line" in err and "Traceback" not in err
+    assert not (tmp_path / "o").exists()
+
+
 def test_activating_the_controller_of_an_entity_with_none_assigned_keeps_the_default_one(tmp_path):
     init = _teleport("B", 0, 0, 0, 5.0).replace(
         "</Private>",

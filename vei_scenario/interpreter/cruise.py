@@ -418,7 +418,7 @@ def cruise(ctx, storyboard, entities: list, recording, max_time: float, offers: 
     columns = (f64("d", cols).tobytes(), f64("d", stepped.sync_cols).tobytes(), f64("d", stepped.keep_cols).tobytes(),
                f64("d", stepped.programs).tobytes(), f64("d", bounds.guards).tobytes())  # fmt: skip
     clock = packed_step_times(step0, step0 + skipped + 1, dt)  # (each step's start)
-    n, poses, state, sync_state, keep_state = _core.cruise(ways, *columns, clock, bounds.turn, dt, math.hypot)
+    n, poses, state, sync_state, keep_state = _core.cruise(ways, *columns, clock, bounds.turn, dt)
     # The core stops before a step that is not quiet (an action ending, a guard's comparison turning):
     # the interpreter takes that one, and the steps after it are offered again at once, unless the
     # core has refused the first step before (a state that lasts, such as a distance on its threshold).

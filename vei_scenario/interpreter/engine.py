@@ -266,7 +266,7 @@ class Simulation:
         e.parked = None
         x0, y0 = e.x, e.y
         self._motion(e)
-        e.last_step_m = math.hypot(e.x - x0, e.y - y0)
+        e.last_step_m = _core.hypot(e.x - x0, e.y - y0)  # (a step measured as the core measures its own)
         e.odometer += e.last_step_m
         if abs(e.speed) < 1e-9:
             if e.standing_since is None:

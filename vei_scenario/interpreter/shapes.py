@@ -1,10 +1,10 @@
 """Trajectory shapes other than a polyline, sampled into one: Clothoid and ClothoidSpline.
 
 A clothoid's heading is quadratic in arc length, so its points have no closed form (Fresnel
-integrals). They are integrated numerically on a fine grid (trapezoid on 5 mm steps: for a curvature
-rate of 0.01 1/m² over 100 m the error stays below 1e-6 m) and kept every 5 cm, where a straight
-chord departs from the curve by at most κ·(0.05 m)²/8 (3 µm at a 10 m radius). The player then follows
-the polyline as it follows any other.
+integrals). The core integrates them on a fine grid (``vei_clothoid_sample``: trapezoid on 5 mm
+steps; for a curvature rate of 0.01 1/m² over 100 m the error stays below 1e-6 m) and keeps them
+every 5 cm, where a straight chord departs from the curve by at most κ·(0.05 m)²/8 (3 µm at a 10 m
+radius). The player then follows the polyline as it follows any other.
 """
 
 from __future__ import annotations
@@ -14,6 +14,7 @@ import math
 import numpy as np
 from lxml import etree
 
+from vei_scenario.core import _core
 from vei_scenario.interpreter.entities import Polyline
 from vei_scenario.interpreter.positions import RESOLVED_ELSEWHERE, Pose, lane_of, number, oriented, resolve
 from vei_scenario.models.angles import wrap_angle
@@ -21,30 +22,17 @@ from vei_scenario.safe_xml import first_element
 
 _FINE_M = 0.005
 _KEEP_EVERY = 10  # kept vertices every 5 cm
+#: The longest clothoid sampled (its points every 5 cm: 2 million vertices).
+_MAX_CLOTHOID_M = 100_000.0
 
 
 def clothoid_points(
     x0: float, y0: float, h0: float, curvature: float, curvature_rate: float, length: float
-) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+) -> tuple[list[float], list[float], list[float]]:
     """x, y, heading along a clothoid from (x0, y0, h0) of start ``curvature``, its rate of change
-    along the arc (1/m²) and ``length``; the last sample is the end point."""
-    n = max(2, math.ceil(length / _FINE_M) + 1)
-    s = np.linspace(0.0, length, n)
-    keep = np.arange(0, n, _KEEP_EVERY)
-    if keep[-1] != n - 1:
-        keep = np.append(keep, n - 1)
-    if curvature == 0.0 and curvature_rate == 0.0:  # a straight line: its points in closed form
-        s = s[keep]
-        return x0 + math.cos(h0) * s, y0 + math.sin(h0) * s, np.full(len(keep), h0 + 0.0)
-    h = h0 + curvature * s + 0.5 * curvature_rate * s * s
-    ds = np.diff(s)
-    out = []
-    for start, f in ((x0, np.cos(h)), (y0, np.sin(h))):  # (each sample's cos and sin once)
-        v = np.empty(n)
-        v[0] = 0.0
-        np.cumsum(0.5 * (f[1:] + f[:-1]) * ds, out=v[1:])
-        out.append(start + v[keep])
-    return out[0], out[1], h[keep]
+    along the arc (1/m²) and ``length``; the last sample is the end point. The core samples it
+    (``vei_clothoid_sample``: the trapezoid rule, a cosine and a sine per fine step, in C)."""
+    return _core.clothoid(x0, y0, h0, curvature, curvature_rate, length, _FINE_M, _KEEP_EVERY)
 
 
 def _num(ctx, el, name: str, default: float | None = None) -> float:
@@ -54,6 +42,15 @@ def _num(ctx, el, name: str, default: float | None = None) -> float:
             raise ctx.error(el, f"<{el.tag}> needs {name}")
         return default
     return float(v)
+
+
+def _clothoid_length(ctx, el) -> float:
+    """A clothoid's (or spline segment's) ``length``: positive (the standard's range) and at most
+    100 km (what is sampled into a polyline)."""
+    length = _num(ctx, el, "length")
+    if not 0.0 < length <= _MAX_CLOTHOID_M:
+        raise ctx.error(el, f"<{el.tag}> needs a length above 0 and at most {_MAX_CLOTHOID_M:g} m (got {length:g})")
+    return length
 
 
 def _start_pose(ctx, pos_el, entity):
@@ -70,10 +67,9 @@ def _clothoid(el, ctx, start) -> tuple[list, list, list, float]:
     if start is None:
         raise ctx.error(el, "a Clothoid needs a start Position")
     rate = el.get("curvaturePrime") if el.get("curvaturePrime") is not None else el.get("curvatureDot")
-    x, y, h = clothoid_points(
-        start.x, start.y, start.h, _num(ctx, el, "curvature"), float(rate or 0.0), _num(ctx, el, "length")
-    )
-    return x.tolist(), y.tolist(), h.tolist(), _num(ctx, el, "length")
+    length = _clothoid_length(ctx, el)
+    x, y, h = clothoid_points(start.x, start.y, start.h, _num(ctx, el, "curvature"), float(rate or 0.0), length)
+    return x, y, h, length
 
 
 def placed_when_built(traj) -> bool:
@@ -177,9 +173,7 @@ def _polyline(el, ctx, place: bool, entity: str | None) -> Polyline:
             else:
                 x0, y0, h0 = xs[-1], ys[-1], hs[-1]
             k0, k1 = _num(ctx, seg, "curvatureStart"), _num(ctx, seg, "curvatureEnd")
-            length = _num(ctx, seg, "length")
-            if not length > 0:
-                raise ctx.error(seg, "a ClothoidSplineSegment needs a positive length")
+            length = _clothoid_length(ctx, seg)
             h_off = _num(ctx, seg, "hOffset", 0.0)
             x, y, h = clothoid_points(x0, y0, h0 + h_off, k0, (k1 - k0) / length, length)
             marks.append(len(xs))
@@ -187,9 +181,9 @@ def _polyline(el, ctx, place: bool, entity: str | None) -> Polyline:
             if xs and not jumped[-1]:
                 x, y, h = x[1:], y[1:], h[1:]  # (continuing: the shared point once)
                 marks[-1] -= 1
-            xs += x.tolist()
-            ys += y.tolist()
-            hs += h.tolist()
+            xs += x
+            ys += y
+            hs += h
         return Polyline(xs, ys, hs, _spline_times(kind, segments, xs, ys, marks, jumped))
     vertices = kind.findall("Vertex")
     if not place:

@@ -14,6 +14,8 @@ from __future__ import annotations
 
 import math
 
+from vei_scenario.core import _core
+
 
 def hitch_point(tow) -> tuple[float, float]:
     """World position of ``tow``'s trailer hitch."""
@@ -44,7 +46,7 @@ def pull(trailer, tow, dt: float) -> None:
     x0, y0 = trailer.x, trailer.y
     trailer.x = hx - trailer.coupler_dx * math.cos(trailer.yaw)
     trailer.y = hy - trailer.coupler_dx * math.sin(trailer.yaw)
-    moved = math.hypot(trailer.x - x0, trailer.y - y0)
+    moved = _core.hypot(trailer.x - x0, trailer.y - y0)  # (as the core measures a step)
     trailer.last_step_m = moved
     trailer.odometer += moved
     trailer.accel = (tow.speed - trailer.speed) / dt if dt > 0 else 0.0

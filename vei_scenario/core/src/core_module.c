@@ -1355,26 +1355,26 @@ static const double *table_rows(PyObject *bytes, Py_ssize_t cols, const char *na
     return (const double *)PyBytes_AS_STRING(bytes);
 }
 
-/* cruise(ways, state, syncs, keeps, programs, guards, times, max_turn, dt, hypot) -> (n, poses, state, syncs, keeps): up to
+/* cruise(ways, state, syncs, keeps, programs, guards, times, max_turn, dt) -> (n, poses, state, syncs, keeps): up to
  * n_max steps (times: the simulation time at the start of each) of every road user (ways: per road
  * user its Road (mode 1), its Polyline (mode 2) or None), the kept distances (KP_COLS each) placing their road
  * users first, then the synchronisations (SY_COLS each) and the running transitions of SpeedActions setting
  * their entities' speeds before each move; stops before a step
  * that is not quiet, ends a synchronisation, changes what a guard compares or which pairs overlap. poses: n x users x (x, y,
  * yaw, metres moved, speed, acceleration); state, syncs: the columns after the n steps. The metres moved
- * and the odometer are math.hypot's (given), so they equal the interpreter's own steps bit for bit. */
+ * and the odometer are vei_hypot's, as the interpreter's own steps measure them (the module's hypot). */
 static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
 {
-    if (!args_ok(nargs, 10, "cruise")) return NULL;
+    if (!args_ok(nargs, 9, "cruise")) return NULL;
     PyObject *ways = args[0], *state = args[1], *syncs = args[2], *keep_cols = args[3], *progs = args[4];
-    PyObject *guard_cols = args[5], *clock = args[6], *hyp = args[9];
+    PyObject *guard_cols = args[5], *clock = args[6];
     double max_turn = PyFloat_AsDouble(args[7]), dt = PyFloat_AsDouble(args[8]);
     if (PyErr_Occurred()) return NULL;
     if (!PyTuple_Check(ways) || !PyBytes_Check(state) || !PyBytes_Check(syncs) || !PyBytes_Check(keep_cols) ||
-        !PyBytes_Check(progs) || !PyBytes_Check(guard_cols) || !PyBytes_Check(clock) || !PyCallable_Check(hyp) ||
+        !PyBytes_Check(progs) || !PyBytes_Check(guard_cols) || !PyBytes_Check(clock) ||
         !(dt > 0)) {
         PyErr_SetString(PyExc_TypeError, "cruise(ways tuple, state bytes, syncs bytes, keeps bytes, programs bytes, "
-                                         "guards bytes, times bytes, max_turn, dt > 0, hypot)");
+                                         "guards bytes, times bytes, max_turn, dt > 0)");
         return NULL;
     }
     Py_ssize_t n_keeps, n_guards, n_sync;
@@ -1480,7 +1480,6 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
     cruise_pairs(cur, n, box, pairs0, &k0);
     for (Py_ssize_t k = 0; k < n_guards; k++) first[k] = guard_state(guards + k * GD_COLS, cur);
     long done = 0;
-    int failed = 0;
     for (; done < n_max; done++) {
         int quiet = 1;
         /* pre: where the road users start their moves, the keeps' road users placed at their gaps first */
@@ -1538,23 +1537,13 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
         for (Py_ssize_t i = 0; i < n; i++) {
             double *e = pre + i * CR_COLS, *f = next + i * CR_COLS, moved = 0.0;
             if (e[CR_MODE] >= 0) {
-                PyObject *dx = PyFloat_FromDouble(f[CR_X] - e[CR_X]), *dy = PyFloat_FromDouble(f[CR_Y] - e[CR_Y]);
-                PyObject *h = (dx && dy) ? PyObject_CallFunctionObjArgs(hyp, dx, dy, NULL) : NULL;
-                Py_XDECREF(dx);
-                Py_XDECREF(dy);
-                moved = h ? PyFloat_AsDouble(h) : -1.0;
-                Py_XDECREF(h);
-                if (PyErr_Occurred()) {
-                    failed = 1;
-                    break;
-                }
+                moved = vei_hypot(f[CR_X] - e[CR_X], f[CR_Y] - e[CR_Y]);
                 f[CR_ODOMETER] = e[CR_ODOMETER] + moved;
                 f[CR_LAST_MOVED] = moved;
             }
             row[6 * i] = f[CR_X], row[6 * i + 1] = f[CR_Y], row[6 * i + 2] = f[CR_YAW], row[6 * i + 3] = moved;
             row[6 * i + 4] = f[CR_SPEED], row[6 * i + 5] = f[CR_ACCEL];
         }
-        if (failed) break;
         for (Py_ssize_t k = 0; k < n_guards && quiet; k++)
             quiet = first[k] != 0 && guard_state(guards + k * GD_COLS, next) == first[k];
         if (!quiet) break;
@@ -1565,13 +1554,70 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
         memcpy(keeps, keeps_next, keep_bytes);
     }
     PyObject *result = NULL;
-    if (!failed && _PyBytes_Resize(&poses, (Py_ssize_t)(sizeof(double) * 6 * (size_t)n * (size_t)done)) == 0)
+    if (_PyBytes_Resize(&poses, (Py_ssize_t)(sizeof(double) * 6 * (size_t)n * (size_t)done)) == 0)
         result = Py_BuildValue("(lNy#y#y#)", done, poses, (const char *)cur, (Py_ssize_t)(sizeof(double) * CR_COLS * n),
                                (const char *)sync, (Py_ssize_t)sync_bytes, (const char *)keeps, (Py_ssize_t)keep_bytes);
-    else if (failed)
-        Py_DECREF(poses);
     PyMem_Free(cur), PyMem_Free(box), PyMem_Free(pairs), PyMem_Free(first);
     return result;
+}
+
+/* hypot(x, y): vei_hypot, for the interpreter's own steps: a step's metres are the same function of its
+ * move whether the core or the interpreter takes the step */
+static PyObject *hypot_(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (!args_ok(nargs, 2, "hypot")) return NULL;
+    ARG_D(0, x);
+    ARG_D(1, y);
+    return PyFloat_FromDouble(vei_hypot(x, y));
+}
+
+/* the most fine samples a clothoid takes (the caller refuses longer ones with a message of its own) */
+#define CLOTHOID_MAX_SAMPLES 40000000L
+
+/* a list of n floats */
+static PyObject *float_list(const double *v, long n)
+{
+    PyObject *out = PyList_New(n);
+    for (long i = 0; out && i < n; i++) {
+        PyObject *f = PyFloat_FromDouble(v[i]);
+        if (!f) {
+            Py_CLEAR(out);
+            break;
+        }
+        PyList_SET_ITEM(out, i, f);
+    }
+    return out;
+}
+
+/* clothoid(x0, y0, h0, curvature, rate, length, fine, keep) -> (xs, ys, hs): vei_clothoid_sample's
+ * kept points as three lists (the interpreter's polyline vertices) */
+static PyObject *clothoid(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (!args_ok(nargs, 8, "clothoid")) return NULL;
+    ARG_D(0, x0);
+    ARG_D(1, y0);
+    ARG_D(2, h0);
+    ARG_D(3, curvature);
+    ARG_D(4, rate);
+    ARG_D(5, length);
+    ARG_D(6, fine);
+    ARG_I(7, keep);
+    if (!(isfinite(x0) && isfinite(y0) && isfinite(h0) && isfinite(curvature) && isfinite(rate)) ||
+        !(length > 0.0 && fine > 0.0 && length / fine <= (double)CLOTHOID_MAX_SAMPLES) || keep < 1) {
+        PyErr_SetString(PyExc_ValueError, "clothoid: finite start and curvatures, 0 < length <= fine * 4e7, keep >= 1");
+        return NULL;
+    }
+    long n_fine, n = vei_clothoid_samples(length, fine, keep, &n_fine);
+    double *buf = PyMem_Malloc(3 * (size_t)n * sizeof(double));
+    if (!buf) return PyErr_NoMemory();
+    vei_clothoid_sample(x0, y0, h0, curvature, rate, length, n_fine, keep, buf, buf + n, buf + 2 * n);
+    PyObject *xs = float_list(buf, n), *ys = xs ? float_list(buf + n, n) : NULL, *hs = ys ? float_list(buf + 2 * n, n) : NULL;
+    PyMem_Free(buf);
+    if (!hs) {
+        Py_XDECREF(xs), Py_XDECREF(ys);
+        return NULL;
+    }
+    return Py_BuildValue("(NNN)", xs, ys, hs);
 }
 
 #define F(name, doc) {#name, (PyCFunction)(void (*)(void))name, METH_FASTCALL, doc}
@@ -1616,7 +1662,9 @@ static PyMethodDef module_methods[] = {
     F(time_to_conflict, "time_to_conflict(ego_box, ego_speed, margin, threat_box, vx, vy[, horizon]) -> s"),
     F(time_to_contact, "time_to_contact(box_a, vxa, vya, box_b, vxb, vyb) -> s"),
     {"overlapping", overlapping, METH_O, "overlapping(boxes) -> pairs (i, j) of overlapping boxes"},
-    F(cruise, "cruise(ways, state, syncs, keeps, programs, guards, times, max_turn, dt, hypot) -> (n, poses, state, syncs, keeps): quiet steps in one call"),
+    F(cruise, "cruise(ways, state, syncs, keeps, programs, guards, times, max_turn, dt) -> (n, poses, state, syncs, keeps): quiet steps in one call"),
+    {"hypot", (PyCFunction)(void (*)(void))hypot_, METH_FASTCALL, "hypot(x, y) -> the length of (x, y) as the core measures a step (the odometer's metres in every engine)"},
+    F(clothoid, "clothoid(x0, y0, h0, curvature, rate, length, fine, keep) -> (xs, ys, hs): a clothoid's points"),
     {"set_quadrature", set_quadrature, METH_VARARGS, "set_quadrature(nodes, weights): 24 doubles each"},
     {NULL, NULL, 0, NULL},
 };

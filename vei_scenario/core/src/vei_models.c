@@ -441,3 +441,40 @@ double vei_polyline_project(const VeiPolyline *p, double px, double py) {
     }
     return best;
 }
+
+/* --- a clothoid sampled into a polyline --- */
+
+long vei_clothoid_samples(double length, double fine, long keep, long *n_fine) {
+    double steps = ceil(length / fine);
+    long n = steps + 1.0 > 2.0 ? (long)steps + 1 : 2;
+    *n_fine = n;
+    return (n - 1) / keep + 1 + ((n - 1) % keep != 0);
+}
+
+void vei_clothoid_sample(double x0, double y0, double h0, double curvature, double rate, double length, long n,
+                         long keep, double *x, double *y, double *h) {
+    /* the samples' arc lengths as an even grid from 0 to length, its last one the length itself; a
+     * step too small to be told from 0 is spread as a fraction of the length instead */
+    double step = length / (double)(n - 1), half_rate = 0.5 * rate;
+    long k = 0;
+#define ARC(i) ((i) == n - 1 ? length : step == 0.0 ? (double)(i) / (double)(n - 1) * length : (double)(i) * step)
+    if (curvature == 0.0 && rate == 0.0) { /* a straight line: its points in closed form */
+        double c = cos(h0), s = sin(h0);
+        for (long i = 0; i < n; i += keep) x[k] = x0 + c * ARC(i), y[k] = y0 + s * ARC(i), h[k++] = h0 + 0.0;
+        if ((n - 1) % keep) x[k] = x0 + c * length, y[k] = y0 + s * length, h[k] = h0 + 0.0;
+        return;
+    }
+    /* the trapezoid rule, one sample at a time: each fine step adds the mean of its ends' cosines
+     * (sines) times its length */
+    double s_prev = 0.0, h_first = (h0 + curvature * 0.0) + half_rate * 0.0 * 0.0, vx = 0.0, vy = 0.0;
+    double c_prev = cos(h_first), sn_prev = sin(h_first);
+    x[k] = x0 + vx, y[k] = y0 + vy, h[k++] = h_first;
+    for (long i = 1; i < n; i++) {
+        double s = ARC(i), hi = (h0 + curvature * s) + half_rate * s * s, c = cos(hi), sn = sin(hi), ds = s - s_prev;
+        vx += 0.5 * (c + c_prev) * ds;
+        vy += 0.5 * (sn + sn_prev) * ds;
+        if (i % keep == 0 || i == n - 1) x[k] = x0 + vx, y[k] = y0 + vy, h[k++] = hi;
+        s_prev = s, c_prev = c, sn_prev = sn;
+    }
+#undef ARC
+}

@@ -106,6 +106,16 @@ double vei_polyline_s_at_time_seg(const VeiPolyline *p, double t, VeiCursor *cur
 /* Arc length of the closest point of the path (FollowTrajectory without timing starts there). */
 double vei_polyline_project(const VeiPolyline *p, double px, double py);
 
+/* --- a clothoid sampled into a polyline (interpreter.shapes: a Clothoid or ClothoidSpline trajectory) ---
+ * A clothoid's heading is quadratic in arc length, so its points have no closed form (Fresnel
+ * integrals): they are integrated by the trapezoid rule on n_fine samples about `fine` apart, one
+ * sample after the other (the cost of a trajectory is one cosine and one sine per sample), and kept
+ * every `keep` samples and at the end. vei_clothoid_samples gives n_fine (at least 2) and the number
+ * of kept points; vei_clothoid_sample fills x, y, h with them. */
+long vei_clothoid_samples(double length, double fine, long keep, long *n_fine);
+void vei_clothoid_sample(double x0, double y0, double h0, double curvature, double rate, double length, long n_fine,
+                         long keep, double *x, double *y, double *h);
+
 /* --- the rider agent (vei run's SocialForceController over its replayed track) --- */
 typedef struct {
     VeiSfmState st;     /* the rider once it rides */
