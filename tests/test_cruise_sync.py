@@ -5,9 +5,10 @@ it along its path or lane, and the run equals the interpreter's step by step, bi
 Each case varies the synchronisation (final speed absolute, relative or none; steady state by distance
 or time; tolerances; a start at t = 0 before the master moves; a target the entity must linger or rush
 to) and adds a condition on the synchronised entity that an event reacts to. The reference is the same
-interpreter with the cruise switched off (tests/test_cruise.py's ``run_both``); the profile's modes
-the cases pass through are asserted, and so is the share of steps the core took where the conditions
-let it."""
+interpreter with the cruise switched off (tests/test_cruise.py's ``run_both``): both take the speed
+profile from one C function (core_module.c: sync_speed), the core with its distances along paths and
+road programs, the interpreter with its own. The profile's modes the cases pass through are asserted,
+and so is the share of steps the core took where the conditions let it."""
 
 from __future__ import annotations
 
@@ -219,14 +220,13 @@ STEPPED = {"watch_standstill"}
 
 
 def _with_modes(monkeypatch, seen: set):
-    original = synchronize.Synchronize._profile_speed
+    original = synchronize.Synchronize.step
 
-    def recording(self, *args):
-        v = original(self, *args)
+    def recording(self, ctx):
+        original(self, ctx)
         seen.add(self.mode)
-        return v
 
-    monkeypatch.setattr(synchronize.Synchronize, "_profile_speed", recording)
+    monkeypatch.setattr(synchronize.Synchronize, "step", recording)
 
 
 @pytest.mark.parametrize("case", sorted(CASES))
@@ -251,7 +251,7 @@ def test_the_cases_pass_through_every_mode_of_the_profile(tmp_path, monkeypatch)
         from vei_scenario.interpreter import run_scenario
 
         run_scenario(tmp_path / "sync.xosc")
-    assert {"waiting", "steady", "linear", "non-linear", "stop now", "stopped"} <= seen, seen
+    assert {"WAITING", "STEADY", "LINEAR", "NON_LINEAR", "STOP_NOW", "STOPPED"} <= seen, seen
 
 
 def test_a_synchronised_entity_reaches_its_target_as_the_master_reaches_its(tmp_path):

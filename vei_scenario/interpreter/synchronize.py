@@ -26,9 +26,10 @@ passed), or when the master arrives within the coming step; the entity is then g
 
 from __future__ import annotations
 
+import array
 import math
 
-from vei_scenario.core import layout
+from vei_scenario.core import _core, layout
 from vei_scenario.core import row as core_row
 from vei_scenario.interpreter.action_base import SteppedLongitudinal, entity_ref
 from vei_scenario.interpreter.positions import Pose, ensure_lane
@@ -36,17 +37,13 @@ from vei_scenario.interpreter.positions import resolve as resolve_position
 from vei_scenario.interpreter.routes import road_chains, road_distance
 from vei_scenario.safe_xml import first_element
 
-SMALL = 1e-10
+#: The distances a synchronisation starts from ("farther than anything": core_module.c's SYNC_LARGE).
 LARGE = 1e10
-#: Braking used when a stop must start at once (esmini's MAX_DECELERATION), m/s².
-STOP_DECELERATION = 8.0
-#: How close (m/s) the speed must be to the straight speed line to switch to it.
-ON_LINE_SPEED_TOLERANCE = 0.1
-#: The profile's modes and submodes, numbered as the core numbers them (core_module.c: SM_*, SS_*).
-_MODES = ("none", "waiting", "steady", "stop now", "stopped", "linear", "non-linear")
-_SUBMODES = ("none", "convex", "concave")
-#: A synchronisation's columns in the core (core_module.c: SYNC_COLUMNS).
+#: A synchronisation's columns in the core (core_module.c: SYNC_COLUMNS): its state between steps.
 _COLUMNS = layout("sync")
+#: The profile's modes and submodes by the core's names (core_module.c: SYNC_MODES, SYNC_SUBMODES).
+MODES = _core.CRUISE_LAYOUT["sync_mode"]
+SUBMODES = _core.CRUISE_LAYOUT["sync_submode"]
 
 
 class Synchronize(SteppedLongitudinal):
@@ -102,15 +99,18 @@ class Synchronize(SteppedLongitudinal):
         # positions relative to entities are taken when the action starts
         self.master_goal = resolve_position(ctx, self.master_pos)
         self.goal = resolve_position(ctx, self.target_pos)
-        self.steady_dist = 0.0
+        steady = math.nan
         if self.steady is not None:
             kind, value = self.steady
-            self.steady_dist = value * self._final_speed(ctx) if kind == "time" else value
-        self.mode, self.submode = "none", "none"
+            steady = value * self._final_speed(ctx) if kind == "time" else value
+        mode = "NONE"
         if ctx.entities[self.master].last_step_m <= 0.0:  # esmini 3.6 holds the entity from the start
-            self.mode = "waiting"  # until it has seen the master move (a synchronisation from t = 0)
+            mode = "WAITING"  # until it has seen the master move (a synchronisation from t = 0)
             e.speed = 0.0
-        self.last_dist = self.last_master_dist = LARGE
+        # the profile's state between steps, as the core reads and writes it (core_module.c: sync_speed)
+        values = {"TOL": self.tolerance, "TOL_MASTER": self.tolerance_master, "STEADY": steady}
+        values |= {"MODE": MODES.index(mode), "LAST": LARGE, "LAST_MASTER": LARGE, "FINAL": math.nan}
+        self.state = array.array("d", core_row("sync", values))
         e.take_longitudinal(self, ctx)
         e.speed_profile = None
         ctx.stepping.append(self)
@@ -155,37 +155,23 @@ class Synchronize(SteppedLongitudinal):
         if ctx.initializing or ctx.settling:  # no time passes before t = 0 is logged
             return
         e, master = ctx.entities[self.entity], ctx.entities[self.master]
-        dt = ctx.dt
         master_dist = self._distance(ctx, self.master, self.master_goal)
         dist = self._distance(ctx, self.entity, self.goal)
-        done = (
-            dist < self.tolerance + SMALL
-            or master_dist < self.tolerance_master + SMALL
-            or dist > self.last_dist
-            or master_dist > self.last_master_dist
-        )
-        self.last_dist, self.last_master_dist = dist, master_dist
-        dist = max(dist - self.tolerance, SMALL)
-        master_dist = max(master_dist - self.tolerance_master, SMALL)
-        master_time = LARGE
-        master_speed = abs(master.speed)  # (a master reversing along its path comes closer too)
-        if master_speed > SMALL:
-            master_time = master_dist / master_speed
-            if master_time < dt:
-                done = True
-        if done:
+        if self.final is not None:
+            self.state[_COLUMNS["FINAL"]] = self._final_speed(ctx)
+        # the profile (core_module.c: sync_speed, the one the core's quiet steps take)
+        v = _core.sync_speed(self.state, dist, master_dist, e.speed, master.speed, master.last_step_m > 0.0, ctx.dt)
+        if v is None:  # a target reached or passed, or the master arrives in the coming step
             if self.final is not None:
                 e.speed = self._final_speed(ctx)
             self.done = True
             return
-        if self.final is None:  # reach the target at whatever speed a constant acceleration gives
-            v_end = 2.0 * dist / master_time - e.speed
-            e.speed += (v_end - e.speed) / master_time * dt
-            return
-        self.master_moved = master.last_step_m > 0.0
-        e.speed = self._profile_speed(e.speed, dist, master_time, self._final_speed(ctx), dt)
+        e.speed = v
 
-    master_moved = True
+    @property
+    def mode(self) -> str:
+        """The profile's mode now (MODES: NONE, WAITING, STEADY, STOP_NOW, STOPPED, LINEAR, NON_LINEAR)."""
+        return MODES[int(self.state[_COLUMNS["MODE"]])]
 
     # --- in the core's quiet stretches (interpreter/cruise.py, core_module.c: sync_step) ------------
     def carried(self, ctx) -> bool:  # (whether its distances suit the core: core_columns, at the stretch)
@@ -219,99 +205,17 @@ class Synchronize(SteppedLongitudinal):
                     programs += [float(leave_forward), float(arrive_forward), len(middle), *middle]
             else:
                 return None
+        row = list(self.state)
         values = {
             "ENTITY": index[self.entity], "MASTER": index[self.master], "GOAL": goals[0], "PROGRAM": goals[1],
-            "MASTER_GOAL": goals[2], "MASTER_PROGRAM": goals[3], "TOL": self.tolerance,
-            "TOL_MASTER": self.tolerance_master, "MODE": _MODES.index(self.mode),
-            "SUBMODE": _SUBMODES.index(self.submode), "LAST": self.last_dist, "LAST_MASTER": self.last_master_dist,
+            "MASTER_GOAL": goals[2], "MASTER_PROGRAM": goals[3],
             "FINAL": self._final_speed(ctx) if self.final is not None else math.nan,
-            "STEADY": self.steady_dist if self.steady is not None else math.nan,
         }  # fmt: skip
-        return core_row("sync", values)
+        for name, value in values.items():
+            row[_COLUMNS[name]] = value
+        return row
 
     def take_core_columns(self, cols) -> None:
         """The state the core's steps left this synchronisation in."""
-        self.mode, self.submode = _MODES[int(cols[_COLUMNS["MODE"]])], _SUBMODES[int(cols[_COLUMNS["SUBMODE"]])]
-        self.last_dist, self.last_master_dist = cols[_COLUMNS["LAST"]], cols[_COLUMNS["LAST_MASTER"]]
-
-    def _profile_speed(self, v0: float, s: float, t: float, v1: float, dt: float) -> float:
-        """The speed for the coming step of a profile that covers ``s`` in ``t`` ending at ``v1``."""
-        if self.steady is not None and self.mode != "steady":
-            time_to_steady = self.steady_dist / v1 if v1 > SMALL else LARGE
-            if s - self.steady_dist < SMALL or t - time_to_steady < SMALL:
-                self.mode, self.submode = "steady", "none"
-            else:  # plan to reach the final speed where the steady stretch begins
-                s -= self.steady_dist
-                t -= time_to_steady
-        if self.mode == "steady":
-            return v1
-        if self.mode == "waiting":  # stopped for a master that does not move
-            if t >= LARGE:
-                return v0
-            self.mode = "none"
-        if self.mode == "stop now":
-            v = v0 - STOP_DECELERATION * dt
-            if v < 0.0:
-                self.mode = "waiting"
-                return 0.0
-            return v
-        if self.mode == "stopped":
-            if v1 > SMALL and t < 2.0 * s / v1:  # time to start again: on the line to the final speed
-                self.mode = "linear"
-            else:
-                return 0.0
-        if self.mode == "linear":
-            if t > LARGE - 1.0:
-                return 0.0
-            return max(0.0, _line_start_speed(max(0.0, v1), t, s))
-        if self.mode == "non-linear" and t < LARGE:
-            if abs(v0 - (2.0 * s / t - v1)) < ON_LINE_SPEED_TOLERANCE:  # on the straight line: follow it
-                self.mode = "linear"
-                return v0
-        if self.mode == "none":
-            self.mode = "non-linear"
-            # which side of the mean speed the profile bends to is judged from the master's measured
-            # motion: before it has moved (a synchronisation started at t = 0) esmini 3.6 sees no time
-            # limit and picks the lingering side, then takes the straight line at once if the first
-            # piece must accelerate after all (its log: "Reached apex" in the first step)
-            t_seen = t if self.master_moved else LARGE
-            self.submode = "convex" if (v1 + v0) / 2.0 < s / t_seen else "concave"
-        acc, vx = _two_piece_acceleration(v0, v1, s, t)
-        if (self.submode == "concave" and acc > 0) or (self.submode == "convex" and acc < 0):
-            self.mode = "linear"  # the apex is passed: keep the speed for this step, then the line
-            acc = 0.0
-        if self.mode == "non-linear" and vx < 0.0:  # the trough is below 0: brake to a stop, wait
-            t1 = 2.0 * v0 * s / (v0 * v0 + v1 * v1)
-            acc = -v0 / t1 if abs(t1) > SMALL else 0.0
-            if t1 * v0 / 2.0 > s / 2.0:  # the stop needs more than half the way: stop at once
-                acc = -STOP_DECELERATION
-                self.mode = "stop now"
-            if v0 + acc * dt < 0.0:
-                self.mode = "stopped"
-                return 0.0
-        return v0 + acc * dt
-
-
-def _line_start_speed(v_final: float, time: float, dist: float) -> float:
-    """The speed now from which a constant acceleration covers ``dist`` in ``time`` ending at
-    ``v_final`` (0 when either is vanishing)."""
-    if time < 0.001 or dist < 0.001:
-        return 0.0
-    return 2.0 * dist / time - v_final
-
-
-def _two_piece_acceleration(v0: float, v1: float, s: float, t: float) -> tuple[float, float]:
-    """(acceleration of the first piece, speed at its end) of a profile of two constant-acceleration
-    pieces from ``v0`` to a speed ``vx`` and on to ``v1`` covering ``s`` in ``t`` with the same
-    magnitude of acceleration. From s = (v0 + vx) x / 2 + (vx + v1)(t - x) / 2 and
-    (vx - v0) / x = (vx - v1) / (t - x): a quadratic in vx, whose root with 0 < x < t is taken."""
-    if abs(v1 - v0) < SMALL:  # symmetric: the turn is half way
-        vx = (s - (t / 2.0) * v0) / (t / 2.0)
-        return (vx - v0) / (t / 2.0), vx
-    root = math.sqrt(2.0) * math.sqrt(max(0.0, 2.0 * s * s - 2.0 * (v1 + v0) * t * s + (v1 * v1 + v0 * v0) * t * t))
-    for sign in (1.0, -1.0):
-        x = -(sign * root + 2.0 * s - 2.0 * v1 * t) / (2.0 * (v1 - v0))
-        vx = (2.0 * s - sign * root) / (2.0 * t)
-        if 0.0 < x < t:
-            return (vx - v0) / x, vx
-    return 0.0, 0.0
+        for name in ("MODE", "SUBMODE", "LAST", "LAST_MASTER"):
+            self.state[_COLUMNS[name]] = cols[_COLUMNS[name]]

@@ -796,9 +796,13 @@ static int profile_speed(const double *e, double t, double t_next, double *v)
     F(LAST) F(LAST_MASTER) F(PROGRAM) F(MASTER_PROGRAM)
 #define SY_ENUM(name) SY_##name,
 enum { SYNC_COLUMNS(SY_ENUM) SY_COLS };
-/* Synchronize.mode and .submode */
-enum { SM_NONE, SM_WAITING, SM_STEADY, SM_STOP_NOW, SM_STOPPED, SM_LINEAR, SM_NON_LINEAR };
-enum { SS_NONE, SS_CONVEX, SS_CONCAVE };
+/* the profile's modes and submodes (Synchronize.mode and .submode: the names Python reads them by) */
+#define SYNC_MODES(F) F(NONE) F(WAITING) F(STEADY) F(STOP_NOW) F(STOPPED) F(LINEAR) F(NON_LINEAR)
+#define SYNC_SUBMODES(F) F(NONE) F(CONVEX) F(CONCAVE)
+#define SM_ENUM(name) SM_##name,
+#define SS_ENUM(name) SS_##name,
+enum { SYNC_MODES(SM_ENUM) };
+enum { SYNC_SUBMODES(SS_ENUM) };
 
 #define SYNC_SMALL 1e-10
 #define SYNC_LARGE 1e10
@@ -935,14 +939,14 @@ static double sync_distance(const double *programs, double program, double goal,
     return program < 0 ? fabs(goal - s) : road_program(programs + (Py_ssize_t)program, s);
 }
 
-/* Synchronize.step on the columns before the move: the entity's new speed in its column, or 0 when the
- * action ends in this step (the interpreter takes that step) */
-static int sync_step(double *sy, const double *programs, const double *cur, double *next, double dt)
+/* Synchronize.step once the two distances to go are known (before the tolerances), on the columns of the
+ * synchronisation (its tolerances, last distances, final speed, steady stretch, mode and submode, which
+ * it updates): the entity's speed for the coming step from its speed v and the master's, in *v_out; 0
+ * when the action ends in this step (the interpreter then sets the final speed). The core's quiet
+ * steps and the interpreter's own steps (the module's sync_speed) both take it. */
+static int sync_speed(double *sy, double dist, double master_dist, double v, double master_speed, int master_moved,
+                      double dt, double *v_out)
 {
-    const double *e = cur + (Py_ssize_t)sy[SY_ENTITY] * CR_COLS, *m = cur + (Py_ssize_t)sy[SY_MASTER] * CR_COLS;
-    double master_dist = sync_distance(programs, sy[SY_MASTER_PROGRAM], sy[SY_MASTER_GOAL], m[CR_S]);
-    double dist = sync_distance(programs, sy[SY_PROGRAM], sy[SY_GOAL], e[CR_S]);
-    if (master_dist < 0 || dist < 0) return 0;
     if (dist < sy[SY_TOL] + SYNC_SMALL || master_dist < sy[SY_TOL_MASTER] + SYNC_SMALL || dist > sy[SY_LAST] ||
         master_dist > sy[SY_LAST_MASTER])
         return 0;
@@ -950,18 +954,32 @@ static int sync_step(double *sy, const double *programs, const double *cur, doub
     dist -= sy[SY_TOL], master_dist -= sy[SY_TOL_MASTER];
     if (SYNC_SMALL > dist) dist = SYNC_SMALL;
     if (SYNC_SMALL > master_dist) master_dist = SYNC_SMALL;
-    double master_time = SYNC_LARGE, master_speed = fabs(m[CR_SPEED]), v = e[CR_SPEED];
+    double master_time = SYNC_LARGE;
+    master_speed = fabs(master_speed); /* (a master reversing along its path comes closer too) */
     if (master_speed > SYNC_SMALL) {
         master_time = master_dist / master_speed;
         if (master_time < dt) return 0;
     }
-    if (isnan(sy[SY_FINAL])) {
+    if (isnan(sy[SY_FINAL])) { /* reach the target at whatever speed a constant acceleration gives */
         double v_end = 2.0 * dist / master_time - v;
         v += (v_end - v) / master_time * dt;
     } else
-        v = sync_profile(sy, v, dist, master_time, sy[SY_FINAL], dt, m[CR_LAST_MOVED] > 0.0);
-    next[(Py_ssize_t)sy[SY_ENTITY] * CR_COLS + CR_SPEED] = v;
+        v = sync_profile(sy, v, dist, master_time, sy[SY_FINAL], dt, master_moved);
+    *v_out = v;
     return 1;
+}
+
+/* Synchronize.step on the columns before the move, its distances along paths or over road programs: the
+ * entity's new speed in its column, or 0 when the action ends in this step (the interpreter takes that
+ * step) */
+static int sync_step(double *sy, const double *programs, const double *cur, double *next, double dt)
+{
+    const double *e = cur + (Py_ssize_t)sy[SY_ENTITY] * CR_COLS, *m = cur + (Py_ssize_t)sy[SY_MASTER] * CR_COLS;
+    double master_dist = sync_distance(programs, sy[SY_MASTER_PROGRAM], sy[SY_MASTER_GOAL], m[CR_S]);
+    double dist = sync_distance(programs, sy[SY_PROGRAM], sy[SY_GOAL], e[CR_S]);
+    if (master_dist < 0 || dist < 0) return 0;
+    return sync_speed(sy, dist, master_dist, e[CR_SPEED], m[CR_SPEED], m[CR_LAST_MOVED] > 0.0, dt,
+                      &next[(Py_ssize_t)sy[SY_ENTITY] * CR_COLS + CR_SPEED]);
 }
 
 /* the bounding box of a road user at (x, y, yaw) whose box centre is center_x ahead of it (Entity.box) */
@@ -1561,6 +1579,34 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
     return result;
 }
 
+/* sync_speed(columns, dist, master_dist, v, master_speed, master_moved, dt) -> speed or None: sync_speed
+ * for the interpreter's own steps; columns: a writable buffer of the synchronisation's SY_COLS doubles
+ * (array('d')), updated in place; None when the action ends in this step */
+static PyObject *sync_speed_(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (!args_ok(nargs, 7, "sync_speed")) return NULL;
+    ARG_D(1, dist);
+    ARG_D(2, master_dist);
+    ARG_D(3, v);
+    ARG_D(4, master_speed);
+    int master_moved = PyObject_IsTrue(args[5]);
+    if (master_moved < 0) return NULL;
+    ARG_D(6, dt);
+    Py_buffer buf;
+    if (PyObject_GetBuffer(args[0], &buf, PyBUF_WRITABLE | PyBUF_FORMAT) < 0) return NULL;
+    PyObject *result = NULL;
+    if (buf.len != (Py_ssize_t)sizeof(double) * SY_COLS || !buf.format || strcmp(buf.format, "d") != 0)
+        PyErr_SetString(PyExc_TypeError, "sync_speed: the synchronisation's columns as array('d') of its row");
+    else {
+        double out;
+        result = sync_speed((double *)buf.buf, dist, master_dist, v, master_speed, master_moved, dt, &out)
+                     ? PyFloat_FromDouble(out)
+                     : Py_NewRef(Py_None);
+    }
+    PyBuffer_Release(&buf);
+    return result;
+}
+
 /* hypot(x, y): vei_hypot, for the interpreter's own steps: a step's metres are the same function of its
  * move whether the core or the interpreter takes the step */
 static PyObject *hypot_(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
@@ -1663,6 +1709,8 @@ static PyMethodDef module_methods[] = {
     F(time_to_contact, "time_to_contact(box_a, vxa, vya, box_b, vxb, vyb) -> s"),
     {"overlapping", overlapping, METH_O, "overlapping(boxes) -> pairs (i, j) of overlapping boxes"},
     F(cruise, "cruise(ways, state, syncs, keeps, programs, guards, times, max_turn, dt) -> (n, poses, state, syncs, keeps): quiet steps in one call"),
+    {"sync_speed", (PyCFunction)(void (*)(void))sync_speed_, METH_FASTCALL,
+     "sync_speed(columns, dist, master_dist, v, master_speed, master_moved, dt) -> the synchronised speed or None"},
     {"hypot", (PyCFunction)(void (*)(void))hypot_, METH_FASTCALL, "hypot(x, y) -> the length of (x, y) as the core measures a step (the odometer's metres in every engine)"},
     F(clothoid, "clothoid(x0, y0, h0, curvature, rate, length, fine, keep) -> (xs, ys, hs): a clothoid's points"),
     {"set_quadrature", set_quadrature, METH_VARARGS, "set_quadrature(nodes, weights): 24 doubles each"},
@@ -1703,11 +1751,13 @@ PyMODINIT_FUNC PyInit__core(void)
     static const char *const quantity[] = {GUARD_QUANTITIES(COLUMN_NAME) NULL};
     static const char *const mode[] = {MODES(COLUMN_NAME) NULL}, *const shape[] = {SHAPES(COLUMN_NAME) NULL};
     static const char *const rule[] = {RULES(COLUMN_NAME) NULL};
-    PyObject *layout = Py_BuildValue("{s:N,s:N,s:N,s:N,s:N,s:N,s:N,s:N}", "road_user", names_tuple(road_user), "sync",
-                                     names_tuple(sync), "keep", names_tuple(keep), "guard", names_tuple(guard),
-                                     "guard_quantity",
-                                     names_tuple(quantity), "mode", names_tuple(mode), "shape", names_tuple(shape),
-                                     "rule", names_tuple(rule));
+    static const char *const sync_mode[] = {SYNC_MODES(COLUMN_NAME) NULL};
+    static const char *const sync_submode[] = {SYNC_SUBMODES(COLUMN_NAME) NULL};
+    PyObject *layout = Py_BuildValue("{s:N,s:N,s:N,s:N,s:N,s:N,s:N,s:N,s:N,s:N}", "road_user", names_tuple(road_user),
+                                     "sync", names_tuple(sync), "keep", names_tuple(keep), "guard", names_tuple(guard),
+                                     "guard_quantity", names_tuple(quantity), "mode", names_tuple(mode), "shape",
+                                     names_tuple(shape), "rule", names_tuple(rule), "sync_mode", names_tuple(sync_mode),
+                                     "sync_submode", names_tuple(sync_submode));
     if (!layout || PyModule_AddObject(m, "CRUISE_LAYOUT", layout) < 0 ||
         PyModule_AddObject(m, "Road", (PyObject *)&RoadType) < 0 ||
         PyModule_AddObject(m, "Polyline", (PyObject *)&PolylineType) < 0 ||
