@@ -168,3 +168,22 @@ def test_a_step_is_measured_by_the_libraries_hypot():
     rnd = np.random.default_rng(7)
     xy = rnd.uniform(-50, 50, (20000, 2)) * 10.0 ** rnd.integers(-4, 3, (20000, 1))
     assert [_core.hypot(x, y) for x, y in xy] == list(np.hypot(xy[:, 0], xy[:, 1]))
+
+
+@pytest.mark.parametrize(
+    "shape, closed_form",
+    [
+        ("linear", lambda x: x),
+        ("cubic", lambda x: x * x * (3 - 2 * x)),
+        ("sinusoidal", lambda x: 0.5 * (1 - math.cos(math.pi * x))),
+        ("step", lambda x: x),  # (any other shape: linear)
+    ],
+)
+def test_a_transition_has_the_shape_the_standard_names(shape, closed_form):
+    """The interpreter's transitions (SpeedAction, lane change, lane offset) take the core's shape:
+    0 at the start, 1 at the end, the closed form between."""
+    from vei_scenario.interpreter.entities import transition_fraction
+
+    xs = [k / 64 for k in range(65)]
+    assert [transition_fraction(shape, x) for x in xs] == pytest.approx([closed_form(x) for x in xs], abs=1e-15)
+    assert transition_fraction(shape, 0.0) == 0.0 and transition_fraction(shape, 1.0) == 1.0

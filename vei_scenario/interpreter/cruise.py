@@ -27,6 +27,7 @@ from dataclasses import dataclass, field
 from vei_scenario.core import _core, layout
 from vei_scenario.core import row as core_row
 from vei_scenario.interpreter.clock import count_at_or_before, packed_step_times, step_time, step_times
+from vei_scenario.interpreter.entities import SHAPE_CODES as _SHAPES  # (the core's numbers of the shapes)
 
 #: Core columns of a road user (core_module.c: ROAD_USER_COLUMNS).
 _ROAD_USER = layout("road_user")
@@ -41,8 +42,6 @@ _STRAIGHT, _LANE_MODE, _PATH, _TIMED, _TIMED_FOLLOW, _TOWED = (
     float(layout("mode")[n]) for n in ("STRAIGHT", "LANE", "PATH", "TIMED", "TIMED_FOLLOW", "TOWED")
 )
 _STATUS = {_TIMED: "replay", _TIMED_FOLLOW: "follow", _TOWED: "towed"}
-#: A transition's shape (a SpeedAction's, a lane change's) as the core numbers it (core_module.c: SHAPES).
-_SHAPES = {name.lower(): float(code) for name, code in layout("shape").items()}
 #: How many core columns a synchronisation and a kept distance have (core_module.c: SYNC_COLUMNS, KEEP_COLUMNS).
 _SY_COLS = len(layout("sync"))
 _KP_COLS = len(layout("keep"))

@@ -7,7 +7,7 @@ import bisect
 import math
 from dataclasses import dataclass, field
 
-from vei_scenario.core import _core
+from vei_scenario.core import _core, layout
 from vei_scenario.models.vehicle import VehicleLimits
 
 
@@ -123,14 +123,15 @@ class PathFollower:
         return self.s >= self.polyline.length - 1e-9
 
 
+#: A transition's shape (a SpeedAction's, a lane change's) as the core numbers it (core_module.c: SHAPES).
+SHAPE_CODES = {name.lower(): float(code) for name, code in layout("shape").items()}
+
+
 def transition_fraction(shape: str, x: float) -> float:
     """How far a transition of OpenSCENARIO ``dynamicsShape`` has come at progress ``x`` in [0, 1]
-    (linear for any other shape; a step has no progress to speak of)."""
-    if shape == "cubic":
-        return x * x * (3 - 2 * x)
-    if shape == "sinusoidal":
-        return 0.5 * (1 - math.cos(math.pi * x))
-    return x
+    (linear for any other shape; a step has no progress to speak of): the core's shape_fraction, the
+    one its quiet stretches take."""
+    return _core.transition_fraction(SHAPE_CODES.get(shape, -1.0), x)
 
 
 @dataclass

@@ -1607,6 +1607,16 @@ static PyObject *sync_speed_(PyObject *mod, PyObject *const *args, Py_ssize_t na
     return result;
 }
 
+/* transition_fraction(shape, x): shape_fraction for the interpreter's own steps (a SpeedAction's
+ * transition, a lane change's or lane offset's); shape: a SHAPE_* code, any other linear */
+static PyObject *transition_fraction(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (!args_ok(nargs, 2, "transition_fraction")) return NULL;
+    ARG_D(0, shape);
+    ARG_D(1, x);
+    return PyFloat_FromDouble(shape_fraction(shape, x));
+}
+
 /* hypot(x, y): vei_hypot, for the interpreter's own steps: a step's metres are the same function of its
  * move whether the core or the interpreter takes the step */
 static PyObject *hypot_(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
@@ -1709,6 +1719,7 @@ static PyMethodDef module_methods[] = {
     F(time_to_contact, "time_to_contact(box_a, vxa, vya, box_b, vxb, vyb) -> s"),
     {"overlapping", overlapping, METH_O, "overlapping(boxes) -> pairs (i, j) of overlapping boxes"},
     F(cruise, "cruise(ways, state, syncs, keeps, programs, guards, times, max_turn, dt) -> (n, poses, state, syncs, keeps): quiet steps in one call"),
+    F(transition_fraction, "transition_fraction(shape, x) -> how far a transition of SHAPES code shape has come at x"),
     {"sync_speed", (PyCFunction)(void (*)(void))sync_speed_, METH_FASTCALL,
      "sync_speed(columns, dist, master_dist, v, master_speed, master_moved, dt) -> the synchronised speed or None"},
     {"hypot", (PyCFunction)(void (*)(void))hypot_, METH_FASTCALL, "hypot(x, y) -> the length of (x, y) as the core measures a step (the odometer's metres in every engine)"},
