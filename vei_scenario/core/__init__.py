@@ -34,7 +34,7 @@ from vei_scenario.core import _core
 def layout(table: str) -> dict[str, int]:
     """Where each column of one of the core's tables (``road_user``, ``sync``, ``keep`` or ``guard`` of
     the quiet stretches) is, or the number of each of its codes (``guard_quantity``, ``mode``,
-    ``shape``, ``rule``), by the names core_module.c gives them: Python builds and reads the rows by
+    ``shape``, ``rule``, ``sync_mode``), by the names core_module.c gives them: Python builds and reads the rows by
     name, and the order is written in the C alone. (One dict per table, only read.)"""
     return {name: i for i, name in enumerate(_core.CRUISE_LAYOUT[table])}
 

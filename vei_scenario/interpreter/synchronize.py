@@ -41,9 +41,8 @@ from vei_scenario.safe_xml import first_element
 LARGE = 1e10
 #: A synchronisation's columns in the core (core_module.c: SYNC_COLUMNS): its state between steps.
 _COLUMNS = layout("sync")
-#: The profile's modes and submodes by the core's names (core_module.c: SYNC_MODES, SYNC_SUBMODES).
+#: The profile's modes by the core's names (core_module.c: SYNC_MODES).
 MODES = _core.CRUISE_LAYOUT["sync_mode"]
-SUBMODES = _core.CRUISE_LAYOUT["sync_submode"]
 
 
 class Synchronize(SteppedLongitudinal):

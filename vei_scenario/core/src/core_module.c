@@ -796,20 +796,24 @@ static int profile_speed(const double *e, double t, double t_next, double *v)
     F(LAST) F(LAST_MASTER) F(PROGRAM) F(MASTER_PROGRAM)
 #define SY_ENUM(name) SY_##name,
 enum { SYNC_COLUMNS(SY_ENUM) SY_COLS };
-/* the profile's modes and submodes (Synchronize.mode and .submode: the names Python reads them by) */
+/* the profile's modes (Synchronize.mode: the names Python reads them by) and the side it bends to */
 #define SYNC_MODES(F) F(NONE) F(WAITING) F(STEADY) F(STOP_NOW) F(STOPPED) F(LINEAR) F(NON_LINEAR)
-#define SYNC_SUBMODES(F) F(NONE) F(CONVEX) F(CONCAVE)
 #define SM_ENUM(name) SM_##name,
-#define SS_ENUM(name) SS_##name,
 enum { SYNC_MODES(SM_ENUM) };
-enum { SYNC_SUBMODES(SS_ENUM) };
+enum { SS_NONE, SS_CONVEX, SS_CONCAVE };
 
+/* a distance, time or speed taken as none, and a time taken as no limit (a master standing) */
 #define SYNC_SMALL 1e-10
 #define SYNC_LARGE 1e10
+/* the braking when a stop must start at once (esmini's MAX_DECELERATION), m/s^2 */
 #define SYNC_STOP_DECELERATION 8.0
+/* how close (m/s) the speed must be to the straight speed line to switch to it */
 #define SYNC_ON_LINE 0.1
 
-/* synchronize._two_piece_acceleration */
+/* (acceleration of the first piece, speed at its end) of a profile of two constant-acceleration pieces
+ * from v0 to a speed vx and on to v1 covering s in t with the same magnitude of acceleration. From
+ * s = (v0 + vx) x / 2 + (vx + v1)(t - x) / 2 and (vx - v0) / x = (vx - v1) / (t - x): a quadratic in vx,
+ * whose root with 0 < x < t is taken (symmetric: the turn half way) */
 static void sync_two_piece(double v0, double v1, double s, double t, double *acc, double *vx)
 {
     if (fabs(v1 - v0) < SYNC_SMALL) {
@@ -831,7 +835,9 @@ static void sync_two_piece(double v0, double v1, double s, double t, double *acc
     *acc = 0.0, *vx = 0.0;
 }
 
-/* synchronize.Synchronize._profile_speed, on the columns' mode and submode */
+/* the speed for the coming step of esmini's profile that covers s in t ending at v1 (the module docstring
+ * of interpreter/synchronize.py tells its pieces), on the columns' mode and submode; master_moved: whether
+ * the master moved in the last step */
 static double sync_profile(double *sy, double v0, double s, double t, double v1, double dt, int master_moved)
 {
     int mode = (int)sy[SY_MODE], sub = (int)sy[SY_SUBMODE];
@@ -839,13 +845,13 @@ static double sync_profile(double *sy, double v0, double s, double t, double v1,
     if (!isnan(sy[SY_STEADY]) && mode != SM_STEADY) {
         double steady = sy[SY_STEADY], time_to_steady = v1 > SYNC_SMALL ? steady / v1 : SYNC_LARGE;
         if (s - steady < SYNC_SMALL || t - time_to_steady < SYNC_SMALL) mode = SM_STEADY, sub = SS_NONE;
-        else s -= steady, t -= time_to_steady;
+        else s -= steady, t -= time_to_steady; /* (plan to reach the final speed where the steady stretch begins) */
     }
     if (mode == SM_STEADY) {
         v = v1;
         goto out;
     }
-    if (mode == SM_WAITING) {
+    if (mode == SM_WAITING) { /* stopped for a master that does not move */
         if (t >= SYNC_LARGE) {
             v = v0;
             goto out;
@@ -858,7 +864,7 @@ static double sync_profile(double *sy, double v0, double s, double t, double v1,
         goto out;
     }
     if (mode == SM_STOPPED) {
-        if (v1 > SYNC_SMALL && t < 2.0 * s / v1) mode = SM_LINEAR;
+        if (v1 > SYNC_SMALL && t < 2.0 * s / v1) mode = SM_LINEAR; /* time to start again: on the line */
         else {
             v = 0.0;
             goto out;
@@ -872,22 +878,27 @@ static double sync_profile(double *sy, double v0, double s, double t, double v1,
         }
         goto out;
     }
-    if (mode == SM_NON_LINEAR && t < SYNC_LARGE && fabs(v0 - (2.0 * s / t - v1)) < SYNC_ON_LINE) {
+    if (mode == SM_NON_LINEAR && t < SYNC_LARGE && fabs(v0 - (2.0 * s / t - v1)) < SYNC_ON_LINE) { /* on the line */
         mode = SM_LINEAR, v = v0;
         goto out;
     }
     if (mode == SM_NONE) {
+        /* which side of the mean speed the profile bends to is judged from the master's measured motion:
+         * before it has moved (a synchronisation started at t = 0) esmini 3.6 sees no time limit and picks
+         * the lingering side, then takes the straight line at once if the first piece must accelerate
+         * after all (its log: "Reached apex" in the first step) */
         mode = SM_NON_LINEAR;
         double t_seen = master_moved ? t : SYNC_LARGE;
         sub = (v1 + v0) / 2.0 < s / t_seen ? SS_CONVEX : SS_CONCAVE;
     }
     double acc, vx;
     sync_two_piece(v0, v1, s, t, &acc, &vx);
+    /* the apex is passed: keep the speed for this step, then the line */
     if ((sub == SS_CONCAVE && acc > 0) || (sub == SS_CONVEX && acc < 0)) mode = SM_LINEAR, acc = 0.0;
-    if (mode == SM_NON_LINEAR && vx < 0.0) {
+    if (mode == SM_NON_LINEAR && vx < 0.0) { /* the trough is below 0: brake to a stop, wait */
         double t1 = 2.0 * v0 * s / (v0 * v0 + v1 * v1);
         acc = fabs(t1) > SYNC_SMALL ? -v0 / t1 : 0.0;
-        if (t1 * v0 / 2.0 > s / 2.0) acc = -SYNC_STOP_DECELERATION, mode = SM_STOP_NOW;
+        if (t1 * v0 / 2.0 > s / 2.0) acc = -SYNC_STOP_DECELERATION, mode = SM_STOP_NOW; /* (more than half the way) */
         if (v0 + acc * dt < 0.0) {
             mode = SM_STOPPED, v = 0.0;
             goto out;
@@ -1083,6 +1094,14 @@ static int towed_move(const double *e, const double *tow, double dt, double max_
  * may differ in the last bit): the interpreter then takes the step */
 static int near_threshold(double h, double threshold) { return fabs(h - threshold) <= threshold * 1e-12; }
 
+/* motion._lane_yaw: the yaw of a road user turned heading from its lane's direction base, in (-pi, pi] */
+static double lane_yaw(double base, double heading)
+{
+    double c, s;
+    vr_cos_sin(base + heading, &c, &s);
+    return atan2(s, c);
+}
+
 /* motion.lane_keep with a running lane change or lane offset (LaneChangeRuntime.offset and .heading), on
  * one road in one lane: 0 (not quiet) where the step leaves either, or where its transition completes */
 static int lateral_step(const vr_road *r, const double *e, double t, double ds, double dt, double *next)
@@ -1108,9 +1127,7 @@ static int lateral_step(const vr_road *r, const double *e, double t, double ds, 
     if (near_threshold(moved, 1e-9)) return 0;
     next[CR_S] = s1, next[CR_OFFSET] = offset, next[CR_LAT_FRACTION] = x;
     next[CR_X] = out[0], next[CR_Y] = out[1];
-    double hc, hs;
-    vr_cos_sin(base + e[CR_HEADING], &hc, &hs);
-    next[CR_YAW] = atan2(hs, hc);
+    next[CR_YAW] = lane_yaw(base, e[CR_HEADING]);
     if (moved > 1e-9) { /* it heads where it moves (from where it last headed from) */
         double px = e[CR_PREV_X], py = e[CR_PREV_Y];
         next[CR_PREV_X] = out[0], next[CR_PREV_Y] = out[1];
@@ -1149,11 +1166,10 @@ static int cruise_move(PyObject *way, const double *e, double t, double max_turn
         if (lane_step(&((RoadObject *)way)->r, e[CR_S], lane, e[CR_OFFSET], ds, forward, &s1, &lane1, out) != 1 ||
             lane1 != lane || fabs(s1 - e[CR_S]) > e[CR_MAX_DS])
             return 0;
-        double a = (forward ? out[2] : out[2] + M_PI) + e[CR_HEADING];
         next[CR_S] = s1;
         next[CR_X] = out[0];
         next[CR_Y] = out[1];
-        next[CR_YAW] = atan2(sin(a), cos(a));
+        next[CR_YAW] = lane_yaw(forward ? out[2] : out[2] + M_PI, e[CR_HEADING]);
     } else if (mode == MODE_PATH) {
         const VeiPolyline *p = &((PolylineObject *)way)->p;
         double length = p->s[p->n - 1], reverse = e[CR_FORWARD] != 0.0;
@@ -1247,8 +1263,8 @@ static int keep_place(const double *kp, PyObject *ways, double *st, double ref_s
     if (lane_step(&((RoadObject *)PyTuple_GET_ITEM(ways, i))->r, e[CR_S], lane, e[CR_OFFSET], error, forward, &s1, &lane1, out) != 1 ||
         lane1 != lane)
         return 0;
-    double a = (forward ? out[2] : out[2] + M_PI) + e[CR_HEADING];
-    e[CR_S] = s1, e[CR_X] = out[0], e[CR_Y] = out[1], e[CR_YAW] = atan2(sin(a), cos(a));
+    e[CR_S] = s1, e[CR_X] = out[0], e[CR_Y] = out[1];
+    e[CR_YAW] = lane_yaw(forward ? out[2] : out[2] + M_PI, e[CR_HEADING]);
     return 1;
 }
 
@@ -1763,12 +1779,10 @@ PyMODINIT_FUNC PyInit__core(void)
     static const char *const mode[] = {MODES(COLUMN_NAME) NULL}, *const shape[] = {SHAPES(COLUMN_NAME) NULL};
     static const char *const rule[] = {RULES(COLUMN_NAME) NULL};
     static const char *const sync_mode[] = {SYNC_MODES(COLUMN_NAME) NULL};
-    static const char *const sync_submode[] = {SYNC_SUBMODES(COLUMN_NAME) NULL};
-    PyObject *layout = Py_BuildValue("{s:N,s:N,s:N,s:N,s:N,s:N,s:N,s:N,s:N,s:N}", "road_user", names_tuple(road_user),
+    PyObject *layout = Py_BuildValue("{s:N,s:N,s:N,s:N,s:N,s:N,s:N,s:N,s:N}", "road_user", names_tuple(road_user),
                                      "sync", names_tuple(sync), "keep", names_tuple(keep), "guard", names_tuple(guard),
                                      "guard_quantity", names_tuple(quantity), "mode", names_tuple(mode), "shape",
-                                     names_tuple(shape), "rule", names_tuple(rule), "sync_mode", names_tuple(sync_mode),
-                                     "sync_submode", names_tuple(sync_submode));
+                                     names_tuple(shape), "rule", names_tuple(rule), "sync_mode", names_tuple(sync_mode));
     if (!layout || PyModule_AddObject(m, "CRUISE_LAYOUT", layout) < 0 ||
         PyModule_AddObject(m, "Road", (PyObject *)&RoadType) < 0 ||
         PyModule_AddObject(m, "Polyline", (PyObject *)&PolylineType) < 0 ||
