@@ -187,3 +187,82 @@ def test_a_transition_has_the_shape_the_standard_names(shape, closed_form):
     xs = [k / 64 for k in range(65)]
     assert [transition_fraction(shape, x) for x in xs] == pytest.approx([closed_form(x) for x in xs], abs=1e-15)
     assert transition_fraction(shape, 0.0) == 0.0 and transition_fraction(shape, 1.0) == 1.0
+
+
+@pytest.mark.parametrize("shape", ["linear", "cubic", "sinusoidal"])
+def test_a_speed_transition_runs_from_its_start_speed_to_its_target(shape):
+    """SpeedProfile.speed (the core's transition_speed): v0 until it starts, v1 from its end on, the
+    shape between; a transition without a duration is at v1 at once."""
+    from vei_scenario.interpreter.entities import SpeedProfile, transition_fraction
+
+    p = SpeedProfile(v0=4.0, v1=16.0, t0=2.0, duration=3.0, shape=shape)
+    assert p.speed(0.0) == (4.0, False) and p.speed(2.0) == (4.0, False)
+    assert p.speed(5.0) == (16.0, True) and p.speed(9.0) == (16.0, True)
+    for t in (2.3, 3.5, 4.9):
+        v, over = p.speed(t)
+        assert not over and v == pytest.approx(4.0 + 12.0 * transition_fraction(shape, (t - 2.0) / 3.0), abs=1e-12)
+    assert SpeedProfile(v0=4.0, v1=-2.0, t0=1.0, duration=0.0, shape=shape).speed(0.5) == (-2.0, True)
+
+
+@pytest.mark.parametrize("coupler", [3.5, -1.2])
+def test_a_pulled_trailer_keeps_its_rod_and_faces_the_hitch(coupler):
+    """towed_pose (trailers.pull and the core's steps): after any move of the tow, the trailer's
+    coupler is on the hitch again, its axle at the rod's length from it along its new heading; with the
+    hitch where the axle is, it keeps its heading."""
+    import numpy as np
+
+    rnd = np.random.default_rng(3)
+    for tx, ty, tyaw, x, y, yaw in rnd.uniform(-20, 20, (200, 6)):
+        hitch = -2.0
+        nx, ny, nyaw = _core.towed_pose(tx, ty, tyaw, hitch, coupler, x, y, yaw)
+        hx, hy = tx + hitch * math.cos(tyaw), ty + hitch * math.sin(tyaw)
+        assert nx + coupler * math.cos(nyaw) == pytest.approx(hx, abs=1e-9)
+        assert ny + coupler * math.sin(nyaw) == pytest.approx(hy, abs=1e-9)
+        # the axle moved along the line from where it was towards the hitch (no sideways slip)
+        cross = (hx - x) * (ny - y) - (hy - y) * (nx - x)
+        assert cross == pytest.approx(0.0, abs=1e-7 * (1 + math.hypot(hx - x, hy - y) ** 2))
+    assert _core.towed_pose(0.0, 0.0, 0.0, -2.0, coupler, -2.0, 0.0, 0.7)[2] == 0.7
+
+
+def test_a_timed_path_step_replays_or_follows_within_its_limits():
+    """timed_step (engine's timed paths and the core's): in position mode the trajectory's pose and the
+    speed that covers the arc; in follow mode at most max_accel / max_decel, never past the end."""
+    line = Polyline([0.0, 100.0], [0.0, 0.0], [0.0, 0.0], [0.0, 10.0])  # 10 m/s along x
+    x, y, yaw, s, v, a = line.core.timed_step(2.0, 15.0, 10.0, False, 5.0, 5.0, 0.1)
+    assert (x, y, yaw, s) == (20.0, 0.0, 0.0, 20.0) and v == pytest.approx(50.0) and a == pytest.approx(400.0)
+    # follow: 5 m behind the timed point, at 10 m/s: it speeds up at its limit
+    x, y, yaw, s, v, a = line.core.timed_step(2.0, 15.0, 10.0, True, 3.0, 6.0, 0.1)
+    assert a == 3.0 and v == pytest.approx(10.3) and s == pytest.approx(15.0 + 0.5 * (10.0 + 10.3) * 0.1)
+    assert x == pytest.approx(s)
+    # ahead of the timed point: it brakes at its limit, never below standstill
+    assert line.core.timed_step(1.0, 50.0, 0.2, True, 3.0, 6.0, 0.1)[4:] == (0.0, -6.0)
+    # never past the path's end
+    assert line.core.timed_step(20.0, 99.9, 30.0, True, 3.0, 6.0, 0.1)[3] == 100.0
+    with pytest.raises(ValueError, match="no vertex times"):
+        Polyline([0.0, 1.0], [0.0, 0.0], [0.0, 0.0], [None, None]).core.timed_step(1.0, 0.0, 0.0, False, 1, 1, 0.1)
+
+
+def test_the_gap_spring_is_critically_damped_within_its_limits():
+    """spring_step (LongitudinalDistance's and the core's): with room to act, the gap's error e obeys
+    e'' + 2w e' + w^2 e = 0 (w^2 = 0.4 x the permitted acceleration), whose closed form is
+    (e0 + (e0' + w e0) t) exp(-w t); the acceleration stays within its limits and rates."""
+    inf = math.inf
+    a_max = 10.0
+    w = math.sqrt(0.4 * a_max)
+    dt, error = 1e-4, 2.0  # 2 m too far behind, at the reference's speed (the spring's pull: 0.8 a_max)
+    speed, ref, last = 20.0, 20.0, 0.0
+    for k in range(1, 30001):
+        last, speed = _core.spring_step(error, speed, ref, a_max, a_max, inf, inf, last, inf, dt)
+        error -= (speed - ref) * dt  # (the gap shrinks as it goes faster than its reference)
+        if k % 5000 == 0:
+            t = k * dt
+            assert error == pytest.approx((2.0 + w * 2.0 * t) * math.exp(-w * t), abs=2e-3)
+    # at the gap and at the reference's speed: nothing changes
+    assert _core.spring_step(0.0, 12.0, 12.0, 3.0, 5.0, inf, inf, 0.0, 40.0, 0.1) == (0.0, 12.0)
+    # far too close: braking at most max_decel, grown from the last acceleration at most decel_rate * dt
+    acc, v = _core.spring_step(-50.0, 12.0, 12.0, 3.0, 5.0, 2.0, 4.0, -1.0, 40.0, 0.1)
+    assert acc == pytest.approx(-1.4) and v == pytest.approx(12.0 - 0.14)
+    assert _core.spring_step(-50.0, 12.0, 12.0, 3.0, 5.0, inf, inf, 0.0, 40.0, 0.1)[0] == -5.0
+    # far too far: never faster than max_speed; in Init (dt 0) the acceleration does not grow and the speed stays
+    assert _core.spring_step(80.0, 12.0, 12.0, 3.0, 5.0, inf, inf, 0.0, 12.1, 0.1) == (3.0, 12.1)
+    assert _core.spring_step(80.0, 12.0, 12.0, 3.0, 5.0, 2.0, 2.0, 0.5, 40.0, 0.0) == (0.5, 12.0)

@@ -284,23 +284,12 @@ class Simulation:
         e.status = "default"
         f = e.follower
         t_next = ctx.t + dt
-        if f is not None and f.plays_time:
-            target = f.polyline.s_at_time(f.trajectory_time(t_next))
-            if f.mode == "position":
-                x, y, h = f.polyline.at_time(f.trajectory_time(t_next))
-                speed = (target - f.s) / dt
-                e.accel, e.speed = (speed - e.speed) / dt, speed
-                f.s = target
-                e.x, e.y, e.yaw = x, y, h
-                e.status = "replay"
-                return
-            # follow: track the timed position with the entity's acceleration limits (esmini's)
-            v_target = (target - f.s) / dt
-            a = max(-e.limits.max_decel_mps2, min(e.limits.max_accel_mps2, (v_target - e.speed) / dt))
-            v = max(0.0, e.speed + a * dt)
-            advance_along(e, 0.5 * (e.speed + v) * dt)
-            e.speed, e.accel = v, a
-            e.status = "follow"
+        if f is not None and f.plays_time:  # (position: where the trajectory puts it; follow: tracking that)
+            follow, lim = f.mode != "position", e.limits
+            e.x, e.y, e.yaw, f.s, e.speed, e.accel = f.polyline.core.timed_step(
+                f.trajectory_time(t_next), f.s, e.speed, follow, lim.max_accel_mps2, lim.max_decel_mps2, dt
+            )
+            e.status = "follow" if follow else "replay"
             return
         v0 = e.step_speed  # (an action stepped before the move may have set the speed already)
         if e.speed_profile is not None:

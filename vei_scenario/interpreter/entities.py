@@ -24,7 +24,7 @@ class Polyline:
             self.hs = [h if h is not None else seg[min(i, len(seg) - 1)] for i, h in enumerate(hs)]
         else:
             self.hs = list(hs)
-        self.timed = all(t is not None for t in ts)
+        self.timed = None not in ts
         f64 = array.array
         times = f64("d", ts).tobytes() if self.timed else b""
         self.core = _core.Polyline(f64("d", xs).tobytes(), f64("d", ys).tobytes(), f64("d", self.hs).tobytes(), times)
@@ -145,10 +145,9 @@ class SpeedProfile:
     shape: str
 
     def speed(self, t: float) -> tuple[float, bool]:
-        if self.duration <= 0:
-            return self.v1, True
-        x = min(max((t - self.t0) / self.duration, 0.0), 1.0)
-        return self.v0 + (self.v1 - self.v0) * transition_fraction(self.shape, x), x >= 1.0
+        """(The speed at ``t``, whether the transition is over): the core's transition_speed, the one
+        its quiet steps take."""
+        return _core.transition_speed(self.v0, self.v1, self.t0, self.duration, SHAPE_CODES.get(self.shape, -1.0), t)
 
 
 @dataclass

@@ -12,14 +12,12 @@ from __future__ import annotations
 
 import math
 
-from vei_scenario.core import layout
+from vei_scenario.core import _core, layout
 from vei_scenario.core import row as core_row
 from vei_scenario.interpreter.action_base import SteppedLongitudinal, constraint, entity_ref
 from vei_scenario.interpreter.motion import advance_along, lane_keep
 from vei_scenario.interpreter.positions import ensure_lane
 
-#: Spring stiffness per m/s² of permitted acceleration (1/s²): the gap closes in a few seconds.
-SPRING_PER_ACCEL = 0.4
 #: Core columns of a distance kept in a quiet stretch (core_module.c: KEEP_COLUMNS).
 _KEEP = layout("keep")
 
@@ -110,16 +108,11 @@ class LongitudinalDistance(SteppedLongitudinal):
             e.speed = ref.speed
             self.placed = True
             return
-        k = (self.max_accel if error < 0.0 else self.max_decel) * SPRING_PER_ACCEL
-        acc = error * k - (e.speed - ref.speed) * 2.0 * math.sqrt(k)
-        acc = max(-self.max_decel, min(self.max_accel, acc))
-        # the acceleration grows in size no faster than the rate of its sign
-        if acc < 0.0 and acc < self.accel:
-            acc = max(self.accel - (self.decel_rate * dt if dt > 0.0 else 0.0), acc)
-        elif acc >= 0.0 and acc > self.accel:
-            acc = min(self.accel + (self.accel_rate * dt if dt > 0.0 else 0.0), acc)
-        self.accel = acc
-        e.speed = max(-self.max_speed, min(self.max_speed, e.speed + acc * dt))
+        # the damped spring on the gap (the core's spring_step, the one its quiet stretches take)
+        self.accel, e.speed = _core.spring_step(
+            error, e.speed, ref.speed, self.max_accel, self.max_decel, self.accel_rate, self.decel_rate,
+            self.accel, self.max_speed, dt,
+        )  # fmt: skip
 
     # --- in the core's quiet stretches (interpreter/cruise.py, core_module.c: keep_step) -------------
     def carried(self, ctx) -> bool:  # (whether its road users suit the core: core_columns, at the stretch)

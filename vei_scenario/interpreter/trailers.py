@@ -34,18 +34,12 @@ def place_behind(trailer, tow) -> None:
 
 
 def pull(trailer, tow, dt: float) -> None:
-    """Move ``trailer`` after ``tow`` has moved: its axle towards the hitch, at the coupler distance."""
-    hx, hy = hitch_point(tow)
-    dx, dy = hx - trailer.x, hy - trailer.y
-    if math.hypot(dx, dy) > 1e-12:
-        # the axle moves along the rod only: the trailer turns to face the hitch
-        yaw = math.atan2(dy, dx)
-        if trailer.coupler_dx < 0:  # (a coupler behind the axle: the rod points the other way)
-            yaw = math.atan2(-dy, -dx)
-        trailer.yaw = yaw
+    """Move ``trailer`` after ``tow`` has moved: its axle towards the hitch, at the coupler distance
+    (the core's towed_pose, the one its quiet steps take)."""
     x0, y0 = trailer.x, trailer.y
-    trailer.x = hx - trailer.coupler_dx * math.cos(trailer.yaw)
-    trailer.y = hy - trailer.coupler_dx * math.sin(trailer.yaw)
+    trailer.x, trailer.y, trailer.yaw = _core.towed_pose(
+        tow.x, tow.y, tow.yaw, tow.hitch_dx, trailer.coupler_dx, x0, y0, trailer.yaw
+    )
     moved = _core.hypot(trailer.x - x0, trailer.y - y0)  # (as the core measures a step)
     trailer.last_step_m = moved
     trailer.odometer += moved

@@ -77,6 +77,17 @@ static int args_ok(Py_ssize_t nargs, Py_ssize_t want, const char *name)
     return 0;
 }
 
+/* the n arguments of a call that takes n numbers, as doubles in out; 0 with the error set otherwise */
+static int args_doubles(PyObject *const *args, Py_ssize_t nargs, Py_ssize_t n, const char *name, double *out)
+{
+    if (!args_ok(nargs, n, name)) return 0;
+    for (Py_ssize_t i = 0; i < n; i++) {
+        out[i] = PyFloat_AsDouble(args[i]);
+        if (out[i] == -1.0 && PyErr_Occurred()) return 0;
+    }
+    return 1;
+}
+
 #define ARG_D(i, v)                                 \
     double v = PyFloat_AsDouble(args[i]);           \
     if (v == -1.0 && PyErr_Occurred()) return NULL;
@@ -346,18 +357,70 @@ static int timed_ok(PolylineObject *self)
     return 0;
 }
 
+/* the pose at trajectory time t (a single vertex: it stays there, whatever the time) */
+static void at_time(const VeiPolyline *p, double t, double *x, double *y, double *h)
+{
+    if (p->n == 1)
+        *x = p->x[0], *y = p->y[0], *h = p->h[0];
+    else
+        vei_polyline_at_time(p, t, x, y, h);
+}
+
 static PyObject *Polyline_at_time(PolylineObject *self, PyObject *const *args, Py_ssize_t nargs)
 {
     if (!args_ok(nargs, 1, "at_time") || !timed_ok(self)) return NULL;
     ARG_D(0, t);
     double x, y, h;
-    if (self->p.n == 1) return xyh(self->p.x[0], self->p.y[0], self->p.h[0]); /* a single vertex: it stays */
-    vei_polyline_at_time(&self->p, t, &x, &y, &h);
+    at_time(&self->p, t, &x, &y, &h);
     return xyh(x, y, h);
 }
 
 /* the arc length at trajectory time t (a single vertex: 0, wherever the time) */
 static double s_at_time(const VeiPolyline *p, double t) { return p->n == 1 ? 0.0 : vei_polyline_s_at_time(p, t); }
+
+/* A road user at arc length s and speed v0 on a timed path after a step of dt that ends at trajectory
+ * time tt (engine._motion's timed branch and the core's quiet steps both take it here): in position
+ * mode where the trajectory puts it then, at the speed that covers the arc; in follow mode (esmini's)
+ * tracking that point within its acceleration limits along the path, never past its end.
+ * out: x, y, yaw, s, speed, acceleration. */
+static void timed_step(const VeiPolyline *p, double tt, double s, double v0, int follow, double max_accel,
+                       double max_decel, double dt, double *out)
+{
+    double target = s_at_time(p, tt);
+    if (!follow) {
+        double speed = (target - s) / dt;
+        at_time(p, tt, &out[0], &out[1], &out[2]);
+        out[3] = target, out[4] = speed, out[5] = (speed - v0) / dt;
+        return;
+    }
+    double want = ((target - s) / dt - v0) / dt; /* (Python's max(-d, min(a, x))) */
+    double a = want < max_accel ? want : max_accel;
+    if (!(a > -max_decel)) a = -max_decel;
+    double v = v0 + a * dt, length = p->s[p->n - 1];
+    if (!(v > 0.0)) v = 0.0;
+    double s1 = s + 0.5 * (v0 + v) * dt;
+    if (s1 > length) s1 = length;
+    vei_polyline_at_s(p, s1, &out[0], &out[1], &out[2]);
+    out[3] = s1, out[4] = v, out[5] = a;
+}
+
+/* timed_step(tt, s, v0, follow, max_accel, max_decel, dt) -> (x, y, yaw, s, speed, accel): the
+ * interpreter's step on a timed path */
+static PyObject *Polyline_timed_step(PolylineObject *self, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (!args_ok(nargs, 7, "timed_step") || !timed_ok(self)) return NULL;
+    ARG_D(0, tt);
+    ARG_D(1, s);
+    ARG_D(2, v0);
+    int follow = PyObject_IsTrue(args[3]);
+    if (follow < 0) return NULL;
+    ARG_D(4, max_accel);
+    ARG_D(5, max_decel);
+    ARG_D(6, dt);
+    double out[6];
+    timed_step(&self->p, tt, s, v0, follow, max_accel, max_decel, dt, out);
+    return Py_BuildValue("(dddddd)", out[0], out[1], out[2], out[3], out[4], out[5]);
+}
 
 static PyObject *Polyline_s_at_time(PolylineObject *self, PyObject *const *args, Py_ssize_t nargs)
 {
@@ -429,6 +492,7 @@ static PyMethodDef Polyline_methods[] = {
     PM(at_s, "at_s(s) -> (x, y, h) at arc length s (clamped to the path)"),
     PM(at_time, "at_time(t) -> (x, y, h) at trajectory time t; on along the last heading after the end"),
     PM(s_at_time, "s_at_time(t) -> arc length at trajectory time t (continued past the end)"),
+    PM(timed_step, "timed_step(tt, s, v0, follow, max_accel, max_decel, dt) -> (x, y, yaw, s, speed, accel) on a timed path"),
     PM(project, "project(x, y) -> arc length of the closest point (the first of equally close ones)"),
     PM(drive, "drive(fs, a_cmd, max_accel, max_decel, jerk_max, dt, speed, accel) -> (fs, x, y, yaw, speed, accel)"),
     PM(set_exit_speed, "set_exit_speed(v): the speed kept after the end (NaN: the last segment's)"),
@@ -773,19 +837,29 @@ static double shape_fraction(double shape, double x)
     return x;
 }
 
-/* SpeedProfile.speed at the end of a step from t to t_next (the engine's t + dt): the speed in *v, 0
- * when the transition ends in the step or its action would end after it (SpeedAction.update: the
- * interpreter's steps) */
+/* A SpeedAction's speed at time t of its transition from v0 at t0 to v1 over duration, of shape SHAPE_*
+ * (none: v1 at once); 1 when the transition is over by t. SpeedProfile.speed (the interpreter's steps)
+ * and profile_speed (the core's) both take it here. */
+static int transition_speed(double v0, double v1, double t0, double duration, double shape, double t, double *v)
+{
+    if (duration <= 0) {
+        *v = v1;
+        return 1;
+    }
+    double x = (t - t0) / duration;
+    if (0.0 > x) x = 0.0; /* (Python's min(max(x, 0.0), 1.0): NaN stays NaN) */
+    if (x > 1.0) x = 1.0;
+    *v = v0 + (v1 - v0) * shape_fraction(shape, x);
+    return x >= 1.0;
+}
+
+/* the speed at the end of a step from t to t_next (the engine's t + dt) in *v; 0 when the transition
+ * ends in the step or its action would end after it (SpeedAction.update: the interpreter's steps) */
 static int profile_speed(const double *e, double t, double t_next, double *v)
 {
     double t0 = e[CR_PROFILE_T0], duration = e[CR_PROFILE_DURATION];
     if (!(duration > 0) || t >= t0 + duration - 1e-9) return 0;
-    double x = (t_next - t0) / duration;
-    if (0.0 > x) x = 0.0; /* (Python's min(max(x, 0.0), 1.0)) */
-    if (x >= 1.0) return 0;
-    double f = shape_fraction(e[CR_PROFILE], x);
-    *v = e[CR_PROFILE_V0] + (e[CR_PROFILE_V1] - e[CR_PROFILE_V0]) * f;
-    return 1;
+    return !transition_speed(e[CR_PROFILE_V0], e[CR_PROFILE_V1], t0, duration, e[CR_PROFILE], t_next, v);
 }
 
 /* a running SynchronizeAction (interpreter/synchronize.py), whose distances are along the path or
@@ -1030,34 +1104,15 @@ static int timed_done(const double *e, double t, double dt)
     return left <= dt * e[CR_TIME_SCALE] + 1e-9;
 }
 
-/* one road user on its timed path in the step from t (engine._motion's timed branch): in position mode
- * where the trajectory puts it at t + dt, at the speed that covers the arc length; in follow mode
- * tracking that point within its acceleration limits along the path. 0 when the path's action ends in
- * the evaluation at t (which the core replaces: the interpreter steps on from there). */
+/* one road user on its timed path in the step from t (timed_step); 0 when the path's action ends in the
+ * evaluation at t (which the core replaces: the interpreter steps on from there). */
 static int timed_move(const VeiPolyline *p, const double *e, double t, double dt, double *next)
 {
     if (timed_done(e, t, dt)) return 0;
-    double tt = (t + dt - e[CR_TIME_BASE]) * e[CR_TIME_SCALE] + e[CR_TIME_OFFSET];
-    double target = s_at_time(p, tt);
-    if (e[CR_MODE] == MODE_TIMED) {
-        double speed = (target - e[CR_S]) / dt;
-        vei_polyline_at_time(p, tt, &next[CR_X], &next[CR_Y], &next[CR_YAW]);
-        next[CR_ACCEL] = (speed - e[CR_SPEED]) / dt;
-        next[CR_SPEED] = speed;
-        next[CR_S] = target;
-        return 1;
-    }
-    double v0 = e[CR_SPEED], want = ((target - e[CR_S]) / dt - v0) / dt; /* (Python's max(-d, min(a, x))) */
-    double a = want < e[CR_MAX_ACCEL] ? want : e[CR_MAX_ACCEL];
-    if (!(a > -e[CR_MAX_DECEL])) a = -e[CR_MAX_DECEL];
-    double v = v0 + a * dt, length = p->s[p->n - 1];
-    if (!(v > 0.0)) v = 0.0;
-    double s1 = e[CR_S] + 0.5 * (v0 + v) * dt; /* (motion.advance_along: never past the end) */
-    if (s1 > length) s1 = length;
-    vei_polyline_at_s(p, s1, &next[CR_X], &next[CR_Y], &next[CR_YAW]);
-    next[CR_S] = s1;
-    next[CR_SPEED] = v;
-    next[CR_ACCEL] = a;
+    double tt = (t + dt - e[CR_TIME_BASE]) * e[CR_TIME_SCALE] + e[CR_TIME_OFFSET], out[6];
+    timed_step(p, tt, e[CR_S], e[CR_SPEED], e[CR_MODE] != MODE_TIMED, e[CR_MAX_ACCEL], e[CR_MAX_DECEL], dt, out);
+    next[CR_X] = out[0], next[CR_Y] = out[1], next[CR_YAW] = out[2];
+    next[CR_S] = out[3], next[CR_SPEED] = out[4], next[CR_ACCEL] = out[5];
     return 1;
 }
 
@@ -1069,17 +1124,27 @@ static int within_bounds(const double *e, const double *next, double max_turn)
     return hypot(next[CR_X] - e[CR_X], next[CR_Y] - e[CR_Y]) <= e[CR_MAX_MOVE] && turn <= max_turn;
 }
 
-/* trailers.pull: a towed trailer (e, next) after its tow has moved (tow: the tow's next columns), its
- * axle drawn towards the hitch at the coupler's distance; 0 when it moves or turns more than the bounds */
+/* Where a trailer at (x, y, yaw) is after its tow has moved to (tx, ty, tyaw) (trailers.pull and the
+ * core's quiet steps both take it here): its coupler, coupler metres ahead of its axle, rides on the
+ * tow's hitch, hitch metres ahead of the tow's reference point; the axle is drawn towards the hitch
+ * along the rod, the trailer turned to face it (a coupler behind the axle: the rod points the other
+ * way). out: x, y, yaw. */
+static void towed_pose(double tx, double ty, double tyaw, double hitch, double coupler, double x, double y,
+                       double yaw, double *out)
+{
+    double hx = tx + hitch * cos(tyaw), hy = ty + hitch * sin(tyaw);
+    double dx = hx - x, dy = hy - y;
+    if (hypot(dx, dy) > 1e-12) yaw = coupler < 0 ? atan2(-dy, -dx) : atan2(dy, dx);
+    out[0] = hx - coupler * cos(yaw), out[1] = hy - coupler * sin(yaw), out[2] = yaw;
+}
+
+/* a towed trailer (e, next) after its tow has moved (tow: the tow's next columns); 0 when it moves or
+ * turns more than the bounds */
 static int towed_move(const double *e, const double *tow, double dt, double max_turn, double *next)
 {
-    double hitch = e[CR_HITCH], coupler = e[CR_COUPLER];
-    double hx = tow[CR_X] + hitch * cos(tow[CR_YAW]), hy = tow[CR_Y] + hitch * sin(tow[CR_YAW]);
-    double dx = hx - e[CR_X], dy = hy - e[CR_Y], yaw = e[CR_YAW];
-    if (hypot(dx, dy) > 1e-12) yaw = coupler < 0 ? atan2(-dy, -dx) : atan2(dy, dx);
-    next[CR_YAW] = yaw;
-    next[CR_X] = hx - coupler * cos(yaw);
-    next[CR_Y] = hy - coupler * sin(yaw);
+    double out[3];
+    towed_pose(tow[CR_X], tow[CR_Y], tow[CR_YAW], e[CR_HITCH], e[CR_COUPLER], e[CR_X], e[CR_Y], e[CR_YAW], out);
+    next[CR_X] = out[0], next[CR_Y] = out[1], next[CR_YAW] = out[2];
     next[CR_ACCEL] = (tow[CR_SPEED] - e[CR_SPEED]) / dt;
     next[CR_SPEED] = tow[CR_SPEED];
     return within_bounds(e, next, max_turn);
@@ -1197,7 +1262,7 @@ static int cruise_move(PyObject *way, const double *e, double t, double max_turn
     F(ENTITY) F(REF) F(VALUE) F(BY_TIME) F(SIDE) F(FREESPACE) F(ALONG_ROAD) F(SPRING) F(MAX_ACCEL) F(MAX_DECEL)  \
     F(MAX_SPEED) F(ACCEL_RATE) F(DECEL_RATE) F(ACCEL) F(FOLLOW) F(BY_FACTOR)
 #define KP_ENUM(name) KP_##name,
-/* longitudinal.SPRING_PER_ACCEL: the spring's stiffness per m/s^2 of permitted acceleration (1/s^2) */
+/* the spring's stiffness per m/s^2 of permitted acceleration (1/s^2): the gap closes in a few seconds */
 #define SPRING_PER_ACCEL 0.4
 enum { KEEP_COLUMNS(KP_ENUM) KP_COLS };
 
@@ -1233,22 +1298,34 @@ static double keep_error(const double *kp, const double *e, const double *ref, d
     return keep_gap(kp, e, ref) - wanted;
 }
 
-/* LongitudinalDistance.step's spring: the speed of keep kp's road user for the coming step (st: where everyone
- * is; ref_speed: its reference's speed as the keeps stepped before this one left it), its acceleration kept in
- * kp */
+/* LongitudinalDistance's damped spring (esmini's): the acceleration for the coming step from the gap's error
+ * (the gap less the one kept) and the speeds, its stiffness that of the acceleration (too far) or deceleration
+ * (too close) permitted, clipped to those and grown in size from last no faster than the rate of its sign (dt
+ * 0: not at all); *v: the speed it gives, within max_speed. LongitudinalDistance.step (the interpreter's
+ * steps) and keep_spring (the core's) both take it here. */
+static double spring_step(double error, double speed, double ref_speed, double max_accel, double max_decel,
+                          double accel_rate, double decel_rate, double last, double max_speed, double dt, double *v)
+{
+    double k = (error < 0.0 ? max_accel : max_decel) * SPRING_PER_ACCEL;
+    double acc = error * k - (speed - ref_speed) * 2.0 * sqrt(k);
+    acc = py_max(-max_decel, py_min(max_accel, acc));
+    if (acc < 0.0 && acc < last)
+        acc = py_max(last - (dt > 0.0 ? decel_rate * dt : 0.0), acc);
+    else if (acc >= 0.0 && acc > last)
+        acc = py_min(last + (dt > 0.0 ? accel_rate * dt : 0.0), acc);
+    *v = py_max(-max_speed, py_min(max_speed, speed + acc * dt));
+    return acc;
+}
+
+/* the spring's speed for keep kp's road user for the coming step (st: where everyone is; ref_speed: its
+ * reference's speed as the keeps stepped before this one left it), its acceleration kept in kp */
 static double keep_spring(double *kp, const double *st, double ref_speed, double dt)
 {
     const double *e = st + (Py_ssize_t)kp[KP_ENTITY] * CR_COLS, *ref = st + (Py_ssize_t)kp[KP_REF] * CR_COLS;
-    double error = keep_error(kp, e, ref, ref_speed), max_accel = kp[KP_MAX_ACCEL], max_decel = kp[KP_MAX_DECEL];
-    double k = (error < 0.0 ? max_accel : max_decel) * SPRING_PER_ACCEL;
-    double acc = error * k - (e[CR_SPEED] - ref_speed) * 2.0 * sqrt(k), last = kp[KP_ACCEL];
-    acc = py_max(-max_decel, py_min(max_accel, acc));
-    if (acc < 0.0 && acc < last)
-        acc = py_max(last - kp[KP_DECEL_RATE] * dt, acc);
-    else if (acc >= 0.0 && acc > last)
-        acc = py_min(last + kp[KP_ACCEL_RATE] * dt, acc);
-    kp[KP_ACCEL] = acc;
-    return py_max(-kp[KP_MAX_SPEED], py_min(kp[KP_MAX_SPEED], e[CR_SPEED] + acc * dt));
+    double v;
+    kp[KP_ACCEL] = spring_step(keep_error(kp, e, ref, ref_speed), e[CR_SPEED], ref_speed, kp[KP_MAX_ACCEL],
+                               kp[KP_MAX_DECEL], kp[KP_ACCEL_RATE], kp[KP_DECEL_RATE], kp[KP_ACCEL], kp[KP_MAX_SPEED], dt, &v);
+    return v;
 }
 
 /* LongitudinalDistance.step without dynamic constraints: the road user of keep kp put at its gap along its lane
@@ -1633,6 +1710,36 @@ static PyObject *transition_fraction(PyObject *mod, PyObject *const *args, Py_ss
     return PyFloat_FromDouble(shape_fraction(shape, x));
 }
 
+/* transition_speed(v0, v1, t0, duration, shape, t) -> (speed, over): a SpeedAction's transition at t
+ * for the interpreter's own steps; shape: a SHAPE_* code, any other linear */
+static PyObject *transition_speed_(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
+{
+    double a[6], v;
+    if (!args_doubles(args, nargs, 6, "transition_speed", a)) return NULL;
+    int over = transition_speed(a[0], a[1], a[2], a[3], a[4], a[5], &v);
+    return Py_BuildValue("(dO)", v, over ? Py_True : Py_False);
+}
+
+/* towed_pose(tow_x, tow_y, tow_yaw, hitch, coupler, x, y, yaw) -> (x, y, yaw): a trailer pulled by the
+ * interpreter's own steps */
+static PyObject *towed_pose_(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
+{
+    double a[8], out[3];
+    if (!args_doubles(args, nargs, 8, "towed_pose", a)) return NULL;
+    towed_pose(a[0], a[1], a[2], a[3], a[4], a[5], a[6], a[7], out);
+    return xyh(out[0], out[1], out[2]);
+}
+
+/* spring_step(error, speed, ref_speed, max_accel, max_decel, accel_rate, decel_rate, last, max_speed, dt) ->
+ * (acceleration, speed): LongitudinalDistance's spring for the interpreter's own steps */
+static PyObject *spring_step_(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
+{
+    double a[10], v;
+    if (!args_doubles(args, nargs, 10, "spring_step", a)) return NULL;
+    double acc = spring_step(a[0], a[1], a[2], a[3], a[4], a[5], a[6], a[7], a[8], a[9], &v);
+    return Py_BuildValue("(dd)", acc, v);
+}
+
 /* hypot(x, y): vei_hypot, for the interpreter's own steps: a step's metres are the same function of its
  * move whether the core or the interpreter takes the step */
 static PyObject *hypot_(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
@@ -1736,6 +1843,12 @@ static PyMethodDef module_methods[] = {
     {"overlapping", overlapping, METH_O, "overlapping(boxes) -> pairs (i, j) of overlapping boxes"},
     F(cruise, "cruise(ways, state, syncs, keeps, programs, guards, times, max_turn, dt) -> (n, poses, state, syncs, keeps): quiet steps in one call"),
     F(transition_fraction, "transition_fraction(shape, x) -> how far a transition of SHAPES code shape has come at x"),
+    {"transition_speed", (PyCFunction)(void (*)(void))transition_speed_, METH_FASTCALL,
+     "transition_speed(v0, v1, t0, duration, shape, t) -> (speed, over): a SpeedAction's transition at t"},
+    {"towed_pose", (PyCFunction)(void (*)(void))towed_pose_, METH_FASTCALL,
+     "towed_pose(tow_x, tow_y, tow_yaw, hitch, coupler, x, y, yaw) -> (x, y, yaw) of a trailer pulled along"},
+    {"spring_step", (PyCFunction)(void (*)(void))spring_step_, METH_FASTCALL,
+     "spring_step(error, speed, ref_speed, max_accel, max_decel, accel_rate, decel_rate, last, max_speed, dt) -> (accel, speed)"},
     {"sync_speed", (PyCFunction)(void (*)(void))sync_speed_, METH_FASTCALL,
      "sync_speed(columns, dist, master_dist, v, master_speed, master_moved, dt) -> the synchronised speed or None"},
     {"hypot", (PyCFunction)(void (*)(void))hypot_, METH_FASTCALL, "hypot(x, y) -> the length of (x, y) as the core measures a step (the odometer's metres in every engine)"},
