@@ -266,3 +266,31 @@ def test_the_gap_spring_is_critically_damped_within_its_limits():
     # far too far: never faster than max_speed; in Init (dt 0) the acceleration does not grow and the speed stays
     assert _core.spring_step(80.0, 12.0, 12.0, 3.0, 5.0, inf, inf, 0.0, 12.1, 0.1) == (3.0, 12.1)
     assert _core.spring_step(80.0, 12.0, 12.0, 3.0, 5.0, 2.0, 2.0, 0.5, 40.0, 0.0) == (0.5, 12.0)
+
+
+def test_the_gap_along_a_heading_is_between_the_boxes_projected_corners():
+    """heading_gap (LongitudinalDistance's and the core's): between reference points, the offset along
+    a's heading; with freespace, the gap between the two boxes' corners projected on that axis (0 where
+    they overlap), against a corner-by-corner reference."""
+    from types import SimpleNamespace
+
+    import numpy as np
+
+    def corners_along(e, c, s):
+        bx, by = e.x + math.cos(e.yaw) * e.center_x, e.y + math.sin(e.yaw) * e.center_x
+        u = np.array([math.cos(e.yaw), math.sin(e.yaw)])
+        v = np.array([-u[1], u[0]])
+        pts = [np.array([bx, by]) + i * 0.5 * e.length * u + j * 0.5 * e.width * v for i in (-1, 1) for j in (-1, 1)]
+        return [c * p[0] + s * p[1] for p in pts]
+
+    rnd = np.random.default_rng(11)
+    for x, y, yaw, cx, ln, w, x2, y2, yaw2, cx2, ln2, w2 in rnd.uniform(-1, 1, (500, 12)):
+        a = SimpleNamespace(x=20 * x, y=20 * y, yaw=3 * yaw, center_x=cx, length=3 + ln, width=1.5 + w / 2)
+        b = SimpleNamespace(x=20 * x2, y=20 * y2, yaw=3 * yaw2, center_x=cx2, length=3 + ln2, width=1.5 + w2 / 2)
+        c, s = math.cos(a.yaw), math.sin(a.yaw)
+        assert _core.heading_gap(a, b, False) == pytest.approx(c * (b.x - a.x) + s * (b.y - a.y), abs=1e-12)
+        pa, pb = corners_along(a, c, s), corners_along(b, c, s)
+        want = min(pb) - max(pa) if max(pa) < min(pb) else max(pb) - min(pa) if max(pb) < min(pa) else 0.0
+        assert _core.heading_gap(a, b, True) == pytest.approx(want, abs=1e-9)
+    with pytest.raises(AttributeError):
+        _core.heading_gap(object(), object(), True)

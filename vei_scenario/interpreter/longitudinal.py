@@ -28,23 +28,11 @@ def longitudinal_gap(a, b, freespace: bool, system: str) -> float:
     Between reference points in the entity frame, or as a difference of s when ``system`` is road or
     lane and both are on one road. With ``freespace`` the gap between the boxes along ``a``'s
     heading, 0 while their projections on that axis overlap (side by side)."""
-    if freespace:
-        c, s = math.cos(a.yaw), math.sin(a.yaw)
-        ax, ay, _, al, aw = a.box()
-        bx, by, byaw, bl, bw = b.box()
-        own = c * ax + s * ay
-        other = c * bx + s * by
-        half_b = 0.5 * (bl * abs(math.cos(byaw - a.yaw)) + bw * abs(math.sin(byaw - a.yaw)))
-        lo_a, hi_a, lo_b, hi_b = own - 0.5 * al, own + 0.5 * al, other - half_b, other + half_b
-        if hi_a < lo_b:
-            return lo_b - hi_a
-        if hi_b < lo_a:
-            return hi_b - lo_a
-        return 0.0
-    la, lb = a.lane, b.lane
-    if system in ("road", "lane") and la is not None and lb is not None and la.road == lb.road:
-        return (lb.s - la.s) if la.forward else (la.s - lb.s)
-    return math.cos(a.yaw) * (b.x - a.x) + math.sin(a.yaw) * (b.y - a.y)
+    if not freespace:
+        la, lb = a.lane, b.lane
+        if system in ("road", "lane") and la is not None and lb is not None and la.road == lb.road:
+            return (lb.s - la.s) if la.forward else (la.s - lb.s)
+    return _core.heading_gap(a, b, freespace)  # (the core's, the one its quiet stretches measure)
 
 
 class LongitudinalDistance(SteppedLongitudinal):

@@ -1266,24 +1266,31 @@ static int cruise_move(PyObject *way, const double *e, double t, double max_turn
 #define SPRING_PER_ACCEL 0.4
 enum { KEEP_COLUMNS(KP_ENUM) KP_COLS };
 
-/* longitudinal.longitudinal_gap: the signed distance from road user a to b along a's heading */
+/* The signed distance from a road user at (ax, ay, ayaw) to one at (bx, by) along the first's heading:
+ * between their reference points, or with freespace between their boxes ba and bb (0 while their
+ * projections on that axis overlap: side by side). longitudinal.longitudinal_gap (the interpreter's steps)
+ * and keep_gap (the core's) both take it here. */
+static double heading_gap(double ax, double ay, double ayaw, const VeiBox *ba, double bx, double by, const VeiBox *bb,
+                          int freespace)
+{
+    double c, s;
+    vr_cos_sin(ayaw, &c, &s);
+    if (!freespace) return c * (bx - ax) + s * (by - ay);
+    double dc, ds;
+    vr_cos_sin(bb->yaw - ayaw, &dc, &ds);
+    double own = c * ba->x + s * ba->y, other = c * bb->x + s * bb->y;
+    double half_b = 0.5 * (bb->length * fabs(dc) + bb->width * fabs(ds));
+    double lo_a = own - 0.5 * ba->length, hi_a = own + 0.5 * ba->length, lo_b = other - half_b, hi_b = other + half_b;
+    return hi_a < lo_b ? lo_b - hi_a : hi_b < lo_a ? hi_b - lo_a : 0.0;
+}
+
+/* the gap keep kp measures from road user a to b: along their road (a difference of s) or heading_gap */
 static double keep_gap(const double *kp, const double *a, const double *b)
 {
-    if (kp[KP_FREESPACE] != 0.0) {
-        double c, s, dc, ds;
-        VeiBox ba = row_box(a);
-        VeiBox bb = row_box(b);
-        vr_cos_sin(a[CR_YAW], &c, &s);
-        vr_cos_sin(bb.yaw - a[CR_YAW], &dc, &ds);
-        double own = c * ba.x + s * ba.y, other = c * bb.x + s * bb.y;
-        double half_b = 0.5 * (bb.length * fabs(dc) + bb.width * fabs(ds));
-        double lo_a = own - 0.5 * ba.length, hi_a = own + 0.5 * ba.length, lo_b = other - half_b, hi_b = other + half_b;
-        return hi_a < lo_b ? lo_b - hi_a : hi_b < lo_a ? hi_b - lo_a : 0.0;
-    }
-    if (kp[KP_ALONG_ROAD] != 0.0) return a[CR_FORWARD] != 0.0 ? b[CR_S] - a[CR_S] : a[CR_S] - b[CR_S];
-    double c, s;
-    vr_cos_sin(a[CR_YAW], &c, &s);
-    return c * (b[CR_X] - a[CR_X]) + s * (b[CR_Y] - a[CR_Y]);
+    int freespace = kp[KP_FREESPACE] != 0.0;
+    if (!freespace && kp[KP_ALONG_ROAD] != 0.0) return a[CR_FORWARD] != 0.0 ? b[CR_S] - a[CR_S] : a[CR_S] - b[CR_S];
+    VeiBox ba = row_box(a), bb = row_box(b);
+    return heading_gap(a[CR_X], a[CR_Y], a[CR_YAW], &ba, b[CR_X], b[CR_Y], &bb, freespace);
 }
 
 /* Python's min(a, b) and max(a, b) of two floats: the first unless the second is smaller (larger), so zeros
@@ -1803,6 +1810,19 @@ static PyObject *clothoid(PyObject *mod, PyObject *const *args, Py_ssize_t nargs
 /* entity_boxes(entities) -> bytes: the bounding box (centre x, centre y, yaw, length, width) of each
  * object with x, y, yaw, center_x (reference point to box centre, along the heading), length, width:
  * Entity.box() of the interpreter for a whole list in one call (the collision check's) */
+/* an entity's x, y, yaw, center_x, length and width (interpreter.entities.Entity) into v; 0 with the error set */
+static int entity_values(PyObject *entity, double *v)
+{
+    static const char *names[] = {"x", "y", "yaw", "center_x", "length", "width"};
+    for (int k = 0; k < 6; k++) {
+        PyObject *a = PyObject_GetAttrString(entity, names[k]);
+        v[k] = a ? PyFloat_AsDouble(a) : -1.0;
+        Py_XDECREF(a);
+        if (v[k] == -1.0 && PyErr_Occurred()) return 0;
+    }
+    return 1;
+}
+
 static PyObject *entity_boxes(PyObject *mod, PyObject *seq)
 {
     PyObject *fast = PySequence_Fast(seq, "entity_boxes takes a sequence of entities");
@@ -1814,23 +1834,29 @@ static PyObject *entity_boxes(PyObject *mod, PyObject *seq)
         return NULL;
     }
     VeiBox *b = (VeiBox *)PyBytes_AS_STRING(out);
-    static const char *names[] = {"x", "y", "yaw", "center_x", "length", "width"};
     for (Py_ssize_t i = 0; i < n; i++) {
         double v[6];
-        for (int k = 0; k < 6; k++) {
-            PyObject *a = PyObject_GetAttrString(PySequence_Fast_GET_ITEM(fast, i), names[k]);
-            v[k] = a ? PyFloat_AsDouble(a) : -1.0;
-            Py_XDECREF(a);
-            if (v[k] == -1.0 && PyErr_Occurred()) {
-                Py_DECREF(out);
-                Py_DECREF(fast);
-                return NULL;
-            }
+        if (!entity_values(PySequence_Fast_GET_ITEM(fast, i), v)) {
+            Py_DECREF(out);
+            Py_DECREF(fast);
+            return NULL;
         }
         b[i] = entity_box(v[0], v[1], v[2], v[3], v[4], v[5]);
     }
     Py_DECREF(fast);
     return out;
+}
+
+/* heading_gap(a, b, freespace) -> the signed distance from entity a to entity b along a's heading
+ * (between their boxes with freespace), for the interpreter's own steps */
+static PyObject *heading_gap_(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
+{
+    double a[6], b[6];
+    if (!args_ok(nargs, 3, "heading_gap") || !entity_values(args[0], a) || !entity_values(args[1], b)) return NULL;
+    int freespace = PyObject_IsTrue(args[2]);
+    if (freespace < 0) return NULL;
+    VeiBox ba = entity_box(a[0], a[1], a[2], a[3], a[4], a[5]), bb = entity_box(b[0], b[1], b[2], b[3], b[4], b[5]);
+    return PyFloat_FromDouble(heading_gap(a[0], a[1], a[2], &ba, b[0], b[1], &bb, freespace));
 }
 
 static PyMethodDef module_methods[] = {
@@ -1847,6 +1873,8 @@ static PyMethodDef module_methods[] = {
      "transition_speed(v0, v1, t0, duration, shape, t) -> (speed, over): a SpeedAction's transition at t"},
     {"towed_pose", (PyCFunction)(void (*)(void))towed_pose_, METH_FASTCALL,
      "towed_pose(tow_x, tow_y, tow_yaw, hitch, coupler, x, y, yaw) -> (x, y, yaw) of a trailer pulled along"},
+    {"heading_gap", (PyCFunction)(void (*)(void))heading_gap_, METH_FASTCALL,
+     "heading_gap(a, b, freespace) -> the signed distance from entity a to b along a's heading"},
     {"spring_step", (PyCFunction)(void (*)(void))spring_step_, METH_FASTCALL,
      "spring_step(error, speed, ref_speed, max_accel, max_decel, accel_rate, decel_rate, last, max_speed, dt) -> (accel, speed)"},
     {"sync_speed", (PyCFunction)(void (*)(void))sync_speed_, METH_FASTCALL,
