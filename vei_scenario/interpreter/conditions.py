@@ -14,10 +14,9 @@ from __future__ import annotations
 import math
 import operator
 
-from vei_scenario.core import layout
+from vei_scenario.core import _core, layout
 from vei_scenario.interpreter.context import Context
 from vei_scenario.models.angles import wrap_angle
-from vei_scenario.models.boxes import box_distance, time_to_contact
 from vei_scenario.openscenario import STORYBOARD_ELEMENT_TYPES
 
 
@@ -262,15 +261,11 @@ def _relative(ctx, el, a, b, kind: str, freespace: bool) -> tuple[float, float]:
     (avx, avy), (bvx, bvy) = a.velocity(), b.velocity()
     rx, ry, vx, vy = bx - ax, by - ay, bvx - avx, bvy - avy
     if kind in CARTESIAN:
-        if freespace:
-            d = float(box_distance(ax, ay, ayaw, al, aw, bx, by, byaw, bl, bw))
-            d2 = float(
-                box_distance(
-                    ax + avx * 1e-3, ay + avy * 1e-3, ayaw, al, aw, bx + bvx * 1e-3, by + bvy * 1e-3, byaw, bl, bw
-                )
-            )
-            return d, (d2 - d) / 1e-3
-        d = math.hypot(rx, ry)
+        if freespace:  # (the core's box distance, the one its guards measure)
+            d = _core.box_distance((ax, ay, ayaw, al, aw), (bx, by, byaw, bl, bw))
+            later = (ax + avx * 1e-3, ay + avy * 1e-3, ayaw, al, aw), (bx + bvx * 1e-3, by + bvy * 1e-3, byaw, bl, bw)
+            return d, (_core.box_distance(*later) - d) / 1e-3
+        d = _core.hypot(rx, ry)
         return d, (rx * vx + ry * vy) / d if d > 1e-12 else 0.0
     c, s = math.cos(a.yaw), math.sin(a.yaw)
     if kind == "alongRoad":
@@ -359,9 +354,7 @@ class TimeToCollision(_EntityCondition):
         a, b = ctx.entities[name], self._target(ctx)
         if self.freespace and self.kind in CARTESIAN:
             (avx, avy), (bvx, bvy) = a.velocity(), b.velocity()
-            return float(
-                time_to_contact(*a.box()[:3], a.length, a.width, avx, avy, *b.box()[:3], b.length, b.width, bvx, bvy)
-            )
+            return _core.time_to_contact(a.box(), avx, avy, b.box(), bvx, bvy)
         d, rate = _relative(ctx, self.el, a, b, self.kind, self.freespace)
         return d / -rate if rate < -1e-9 else math.inf
 

@@ -1369,7 +1369,8 @@ enum { GUARD_QUANTITIES(GQ_ENUM) GQ_COUNT };
 #define RULE_ENUM(name) RULE_##name,
 enum { RULES(RULE_ENUM) };
 /* How near its threshold (m) a distance the core works out is taken as undecided: the interpreter's own
- * (conditions._relative: Python's hypot, numpy's boxes) may differ from it in the last bits, so the core stops
+ * (conditions._relative) takes the box distance and hypot from here but projects on a road user's frame in
+ * Python, which a compiler that fuses multiply-adds may round differently in the last bits, so the core stops
  * before a step that leaves a distance within this of its threshold and the interpreter decides the step. */
 #define GUARD_MARGIN_M 1e-6
 
@@ -1396,8 +1397,8 @@ static double point_box_distance(double px, double py, const VeiBox *b)
     return hypot(ox > 0 ? ox : 0.0, oy > 0 ? oy : 0.0);
 }
 
-/* models.boxes.box_distance: the shortest distance between two boxes (0 where they touch): two disjoint convex
- * polygons are closest at a corner of one of them */
+/* the shortest distance between two boxes (0 where they touch; models.boxes.box_distance is its vectorised
+ * form, for whole runs): two disjoint convex polygons are closest at a corner of one of them */
 static double box_gap(const VeiBox *a, const VeiBox *b)
 {
     if (vei_boxes_overlap(a, b)) return 0.0;
@@ -1717,6 +1718,15 @@ static PyObject *transition_fraction(PyObject *mod, PyObject *const *args, Py_ss
     return PyFloat_FromDouble(shape_fraction(shape, x));
 }
 
+/* box_distance(box_a, box_b) -> the shortest distance between two boxes (0 where they touch): box_gap, for
+ * the interpreter's conditions (the one the core's guards measure) */
+static PyObject *box_distance_(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
+{
+    VeiBox a, b;
+    if (!args_ok(nargs, 2, "box_distance") || box_of(args[0], &a) < 0 || box_of(args[1], &b) < 0) return NULL;
+    return PyFloat_FromDouble(box_gap(&a, &b));
+}
+
 /* transition_speed(v0, v1, t0, duration, shape, t) -> (speed, over): a SpeedAction's transition at t
  * for the interpreter's own steps; shape: a SHAPE_* code, any other linear */
 static PyObject *transition_speed_(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
@@ -1873,6 +1883,8 @@ static PyMethodDef module_methods[] = {
      "transition_speed(v0, v1, t0, duration, shape, t) -> (speed, over): a SpeedAction's transition at t"},
     {"towed_pose", (PyCFunction)(void (*)(void))towed_pose_, METH_FASTCALL,
      "towed_pose(tow_x, tow_y, tow_yaw, hitch, coupler, x, y, yaw) -> (x, y, yaw) of a trailer pulled along"},
+    {"box_distance", (PyCFunction)(void (*)(void))box_distance_, METH_FASTCALL,
+     "box_distance(box_a, box_b) -> the shortest distance between two boxes (x, y, yaw, length, width), 0 where they touch"},
     {"heading_gap", (PyCFunction)(void (*)(void))heading_gap_, METH_FASTCALL,
      "heading_gap(a, b, freespace) -> the signed distance from entity a to b along a's heading"},
     {"spring_step", (PyCFunction)(void (*)(void))spring_step_, METH_FASTCALL,
