@@ -294,3 +294,14 @@ def test_the_gap_along_a_heading_is_between_the_boxes_projected_corners():
         assert _core.heading_gap(a, b, True) == pytest.approx(want, abs=1e-9)
     with pytest.raises(AttributeError):
         _core.heading_gap(object(), object(), True)
+
+
+def test_advancing_along_a_path_stops_at_its_end_and_faces_back_when_reversing():
+    """advance (motion.advance_along, the timed follow step and the core's path step): ds metres on
+    along the path, never past its end; reversing, back along it facing against it."""
+    line = Polyline([0.0, 10.0, 10.0], [0.0, 0.0, 10.0], [0.0, 0.0, 0.0], [None, None, None])
+    assert line.core.advance(4.0, 3.0, False) == (7.0, 0.0, 0.0, 7.0)
+    assert line.core.advance(8.0, 5.0, False) == (10.0, 3.0, 0.0, 13.0)  # round the corner, 3 m up
+    assert line.core.advance(18.0, 7.0, False) == (10.0, 10.0, 0.0, 20.0)  # not past the end
+    x, y, yaw, s = line.core.advance(7.0, 2.0, True)
+    assert (x, y, s) == (5.0, 0.0, 5.0) and abs(yaw) == pytest.approx(math.pi)

@@ -14,11 +14,8 @@ if TYPE_CHECKING:
 def advance_along(e: Entity, ds: float) -> None:
     """Move an entity ``ds`` metres along its followed path, or straight ahead without one."""
     f = e.follower
-    if f is not None:
-        f.s = min(f.s + (-ds if f.reverse else ds), f.polyline.length)
-        e.x, e.y, e.yaw = f.polyline.at_s(f.s)
-        if f.reverse:
-            e.yaw = math.atan2(-math.sin(e.yaw), -math.cos(e.yaw))
+    if f is not None:  # (the core's path step, the one its quiet stretches take)
+        e.x, e.y, e.yaw, f.s = f.polyline.core.advance(f.s, ds, f.reverse)
     else:
         e.x += ds * math.cos(e.yaw)
         e.y += ds * math.sin(e.yaw)

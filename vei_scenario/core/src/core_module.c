@@ -378,6 +378,18 @@ static PyObject *Polyline_at_time(PolylineObject *self, PyObject *const *args, P
 /* the arc length at trajectory time t (a single vertex: 0, wherever the time) */
 static double s_at_time(const VeiPolyline *p, double t) { return p->n == 1 ? 0.0 : vei_polyline_s_at_time(p, t); }
 
+/* A road user at arc length s moved ds metres along its path (against it when reversing: it then faces
+ * against the path), never past its end: out x, y, yaw, s. motion.advance_along (Polyline.advance), the
+ * timed follow step and the core's path step all take it here. */
+static void path_advance(const VeiPolyline *p, double s, double ds, int reverse, double *out)
+{
+    double s1 = s + (reverse ? -ds : ds), length = p->s[p->n - 1], h;
+    if (s1 > length) s1 = length;
+    vei_polyline_at_s(p, s1, &out[0], &out[1], &h);
+    out[2] = reverse ? atan2(-sin(h), -cos(h)) : h;
+    out[3] = s1;
+}
+
 /* A road user at arc length s and speed v0 on a timed path after a step of dt that ends at trajectory
  * time tt (engine._motion's timed branch and the core's quiet steps both take it here): in position
  * mode where the trajectory puts it then, at the speed that covers the arc; in follow mode (esmini's)
@@ -396,12 +408,10 @@ static void timed_step(const VeiPolyline *p, double tt, double s, double v0, int
     double want = ((target - s) / dt - v0) / dt; /* (Python's max(-d, min(a, x))) */
     double a = want < max_accel ? want : max_accel;
     if (!(a > -max_decel)) a = -max_decel;
-    double v = v0 + a * dt, length = p->s[p->n - 1];
+    double v = v0 + a * dt;
     if (!(v > 0.0)) v = 0.0;
-    double s1 = s + 0.5 * (v0 + v) * dt;
-    if (s1 > length) s1 = length;
-    vei_polyline_at_s(p, s1, &out[0], &out[1], &out[2]);
-    out[3] = s1, out[4] = v, out[5] = a;
+    path_advance(p, s, 0.5 * (v0 + v) * dt, 0, out);
+    out[4] = v, out[5] = a;
 }
 
 /* timed_step(tt, s, v0, follow, max_accel, max_decel, dt) -> (x, y, yaw, s, speed, accel): the
@@ -487,11 +497,25 @@ static PyObject *Polyline_arc_lengths(PolylineObject *self, PyObject *unused)
     return out;
 }
 
+/* advance(s, ds, reverse) -> (x, y, yaw, s): path_advance, for the interpreter's own steps */
+static PyObject *Polyline_advance(PolylineObject *self, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (!args_ok(nargs, 3, "advance")) return NULL;
+    ARG_D(0, s);
+    ARG_D(1, ds);
+    int reverse = PyObject_IsTrue(args[2]);
+    if (reverse < 0) return NULL;
+    double out[4];
+    path_advance(&self->p, s, ds, reverse, out);
+    return Py_BuildValue("(dddd)", out[0], out[1], out[2], out[3]);
+}
+
 #define PM(name, doc) {#name, (PyCFunction)(void (*)(void))Polyline_##name, METH_FASTCALL, doc}
 static PyMethodDef Polyline_methods[] = {
     PM(at_s, "at_s(s) -> (x, y, h) at arc length s (clamped to the path)"),
     PM(at_time, "at_time(t) -> (x, y, h) at trajectory time t; on along the last heading after the end"),
     PM(s_at_time, "s_at_time(t) -> arc length at trajectory time t (continued past the end)"),
+    PM(advance, "advance(s, ds, reverse) -> (x, y, yaw, s) ds metres on along the path (against it reversing), never past its end"),
     PM(timed_step, "timed_step(tt, s, v0, follow, max_accel, max_decel, dt) -> (x, y, yaw, s, speed, accel) on a timed path"),
     PM(project, "project(x, y) -> arc length of the closest point (the first of equally close ones)"),
     PM(drive, "drive(fs, a_cmd, max_accel, max_decel, jerk_max, dt, speed, accel) -> (fs, x, y, yaw, speed, accel)"),
@@ -1237,14 +1261,11 @@ static int cruise_move(PyObject *way, const double *e, double t, double max_turn
         next[CR_YAW] = lane_yaw(forward ? out[2] : out[2] + M_PI, e[CR_HEADING]);
     } else if (mode == MODE_PATH) {
         const VeiPolyline *p = &((PolylineObject *)way)->p;
-        double length = p->s[p->n - 1], reverse = e[CR_FORWARD] != 0.0;
+        double length = p->s[p->n - 1], out[4];
         if (e[CR_S] + fabs(ds) > length) return 0; /* (on past its end, or its end: the interpreter's) */
-        double s1 = e[CR_S] + (reverse ? -ds : ds), h;
-        if (s1 > length) s1 = length;
-        if (s1 >= length - 1e-9 || fabs(s1 - e[CR_S]) > e[CR_MAX_DS]) return 0;
-        vei_polyline_at_s(p, s1, &next[CR_X], &next[CR_Y], &h);
-        next[CR_S] = s1;
-        next[CR_YAW] = reverse ? atan2(-sin(h), -cos(h)) : h;
+        path_advance(p, e[CR_S], ds, e[CR_FORWARD] != 0.0, out);
+        if (out[3] >= length - 1e-9 || fabs(out[3] - e[CR_S]) > e[CR_MAX_DS]) return 0;
+        next[CR_X] = out[0], next[CR_Y] = out[1], next[CR_YAW] = out[2], next[CR_S] = out[3];
     } else if (fabs(next[CR_S] - e[CR_S]) > e[CR_MAX_DS]) {
         return 0;
     }
