@@ -4,6 +4,7 @@
     python benchmarks/speed_vs_esmini.py [--esmini PATH] [--repeat N] [--markdown]
 
     python benchmarks/speed_vs_esmini.py --sweep NCAP_VARIATION.xosc [--sweep ...]
+    python benchmarks/speed_vs_esmini.py --sweep-all
 
 For every esmini example and every Euro NCAP single execution that both players play: esmini's whole
 process (``--headless --fixed_timestep 0.01 --csv_logger --collision``, as the conformance runs), and
@@ -12,12 +13,15 @@ median of N runs; the ratio vei / esmini, its median and worst. Start-up is the 
 ``vei run`` needs, measured in fresh processes. With ``--sweep``: ``vei sweep``'s evaluation of every
 variant of a Euro NCAP variation file (on all cores, as ``vei sweep`` runs it) per variant, against
 esmini's process per variant (the median over the first five variants); vei's figure is the median of
-three sweeps, each reading the files afresh.
+three sweeps, each reading the files afresh. ``--sweep-all``: every variation file of many parameter
+sets in the Euro NCAP pack (2023 ``*_Variation_*``, 2026 ``StandardRange`` and ``ExtendedRange``), and
+how many reach the target.
 """
 
 from __future__ import annotations
 
 import argparse
+import gc
 import os
 import statistics
 import subprocess
@@ -29,7 +33,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
 from vei_scenario.conformance.esmini import find_esmini, run_esmini  # noqa: E402
-from vei_scenario.conformance.ncap import single_executions, values_of  # noqa: E402
+from vei_scenario.conformance.ncap import full_variations, single_executions, values_of  # noqa: E402
 from vei_scenario.errors import VeiInputError  # noqa: E402
 from vei_scenario.interpreter import clear_file_caches, run_scenario  # noqa: E402
 
@@ -61,8 +65,9 @@ def cases(esmini_dir: Path, ncap_dir: Path) -> list[tuple[str, Path, dict[str, s
     return out
 
 
-def sweep_figures(esmini: Path, variation: Path) -> str:
-    """vei sweep's evaluation of every variant of ``variation`` against esmini's process per variant."""
+def sweep_figures(esmini: Path, variation: Path) -> tuple[float, str]:
+    """vei sweep's evaluation of every variant of ``variation`` against esmini's process per variant:
+    (esmini / vei, the line to print)."""
     from vei_scenario.conformance.ncap import base_scenario
     from vei_scenario.sweep import build_variants
     from vei_scenario.sweep.evaluate import evaluate_local
@@ -72,15 +77,20 @@ def sweep_figures(esmini: Path, variation: Path) -> str:
     per_variant = []
     for _ in range(3):  # (the median of three sweeps, each reading the files afresh)
         clear_file_caches()
-        a = time.perf_counter()
-        outcomes = evaluate_local(str(base.resolve()), variants, 0.01, None, None)
-        per_variant.append((time.perf_counter() - a) / len(variants))
+        gc.disable()  # (as vei sweep evaluates: sweep.run_sweep)
+        try:
+            a = time.perf_counter()
+            outcomes = evaluate_local(str(base.resolve()), variants, 0.01, None, None)
+            per_variant.append((time.perf_counter() - a) / len(variants))
+        finally:
+            gc.enable()
     vei = statistics.median(per_variant)
     failed = sum(1 for o in outcomes if isinstance(o, dict) and o.get("error"))
     es = statistics.median(run_esmini(esmini, base, 0.01, {k: str(v) for k, v in p.items()}).seconds
                            for p in variants[:5])  # fmt: skip
-    return (
-        f"vei sweep {variation.name}: {len(variants)} variants ({failed} failed), {vei * 1e3:.1f} ms per variant; "
+    name = "/".join(variation.parts[-2:])
+    return es / vei, (
+        f"vei sweep {name}: {len(variants)} variants ({failed} failed), {vei * 1e3:.1f} ms per variant; "
         f"esmini {es * 1e3:.1f} ms per process: esmini / vei = {es / vei:.1f} (target ≥ 10)"
     )
 
@@ -93,14 +103,23 @@ def main() -> int:
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--markdown", action="store_true")
     ap.add_argument("--sweep", action="append", default=[], help="a Euro NCAP variation file (repeatable)")
+    ap.add_argument("--sweep-all", action="store_true", help="every variation file of the Euro NCAP pack")
     args = ap.parse_args()
     esmini = find_esmini(args.esmini)
     if esmini is None:
         print(f"esmini not found at {args.esmini}", file=sys.stderr)
         return 2
-    for variation in args.sweep:
-        print(sweep_figures(esmini, Path(variation)))
-    if args.sweep:
+    sweeps = [Path(v) for v in args.sweep] + (full_variations(Path(args.ncap)) if args.sweep_all else [])
+    if sweeps:
+        ratios = []
+        for variation in sweeps:
+            ratio, line = sweep_figures(esmini, variation)
+            ratios.append(ratio)
+            print(line)
+        print(
+            f"{len(ratios)} variation files: esmini / vei per variant median {statistics.median(ratios):.1f}, "
+            f"worst {min(ratios):.1f}; at or above 10 on {sum(r >= 10 for r in ratios)}"
+        )
         return 0
     imports, bare = startup_s(args.repeat)
     print(f"start-up: imports of vei run {imports:.3f} s (target ≤ 0.15 s); a bare python process {bare:.3f} s")

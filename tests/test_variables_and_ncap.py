@@ -113,6 +113,24 @@ def test_run_takes_a_distribution_variant(capsys):
     assert "not in 0..0" in capsys.readouterr().err
 
 
+def test_the_packs_full_variation_files_are_found_apart_from_its_single_executions():
+    """benchmarks/speed_vs_esmini.py --sweep-all sweeps these: every one a distribution of more than one
+    parameter set over a scenario that exists, none of them a single execution."""
+    if not NCAP.is_dir():
+        pytest.skip("the NCAP pack is not here")
+    from vei_scenario.conformance.ncap import base_scenario, full_variations, single_executions
+    from vei_scenario.sweep import build_variants
+
+    files = full_variations(NCAP)
+    assert {p.parent.name for p in files} == {"Variations", "StandardRange", "ExtendedRange"}
+    assert not set(files) & set(single_executions(NCAP))
+    for variation in files:
+        base = base_scenario(variation)
+        assert base.is_file(), variation
+        variants, _ = build_variants(base, [], variation, None)
+        assert len(variants) > 1, variation
+
+
 def test_distribution_values_may_be_expressions(tmp_path):
     from vei_scenario.variation import read_distribution
 

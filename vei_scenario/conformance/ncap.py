@@ -18,6 +18,14 @@ def single_executions(root: Path) -> list[Path]:
     return sorted(files)
 
 
+def full_variations(root: Path) -> list[Path]:
+    """Every variation file of many parameter sets under ``root``: the 2023 ``*_Variation_*`` files and
+    the 2026 ``StandardRange`` and ``ExtendedRange`` files."""
+    files = list(root.glob("*/Variations/*_Variation_*.xosc"))
+    files += [p for k in ("StandardRange", "ExtendedRange") for p in root.glob(f"*/Variations/{k}/*.xosc")]
+    return sorted(files)
+
+
 def base_scenario(variation: Path) -> Path:
     """The scenario a ParameterValueDistribution file varies (its ``ScenarioFile``)."""
     ref = parse_xml(variation).getroot().find(".//ScenarioFile")
