@@ -186,3 +186,64 @@ def test_clothoid_spline_starts_at_a_lane_position(tmp_path):
     tr = run.traces["Car"]
     assert (tr.x[0], tr.y[0]) == pytest.approx((100.0, -1.75))  # the lane's centre at s = 100
     assert tr.x[-1] == pytest.approx(110.0, abs=0.2) and tr.y[-1] == pytest.approx(-1.75, abs=1e-6)
+
+
+ENDS_AT = """<?xml version="1.0"?>
+<OpenSCENARIO><FileHeader revMajor="1" revMinor="2" date="2024-01-01T00:00:00" description="" author=""/>
+<ParameterDeclarations><ParameterDeclaration name="End" parameterType="double" value="1"/></ParameterDeclarations>
+<CatalogLocations/><RoadNetwork/>
+<Entities><ScenarioObject name="Box"><MiscObject name="Box" mass="1" miscObjectCategory="obstacle">
+<BoundingBox><Center x="0" y="0" z="0"/><Dimensions width="1" length="1" height="1"/></BoundingBox><Properties/>
+</MiscObject></ScenarioObject></Entities>
+<Storyboard><Init><Actions/></Init><StopTrigger><ConditionGroup><Condition name="end" delay="0"
+ conditionEdge="none"><ByValueCondition><SimulationTimeCondition value="$End" rule="greaterThan"/>
+</ByValueCondition></Condition></ConditionGroup></StopTrigger></Storyboard></OpenSCENARIO>"""
+
+
+def _distribution(scenario_file: str | None, ends=("2", "3")) -> str:
+    ref = f'<ScenarioFile filepath="{scenario_file}"/>' if scenario_file is not None else ""
+    elements = "".join(f'<Element value="{v}"/>' for v in ends)
+    return f"""<?xml version="1.0"?><OpenSCENARIO><FileHeader revMajor="1" revMinor="2" date="2024-01-01T00:00:00"
+ description="" author=""/><ParameterValueDistribution>{ref}<Deterministic>
+<DeterministicSingleParameterDistribution parameterName="End"><DistributionSet>{elements}
+</DistributionSet></DeterministicSingleParameterDistribution></Deterministic></ParameterValueDistribution>
+</OpenSCENARIO>"""
+
+
+def test_a_distribution_alone_runs_and_sweeps_the_scenario_it_names(tmp_path, capsys):
+    """A ParameterValueDistribution names its scenario (ScenarioFile, relative to itself): vei run and
+    vei sweep take it alone, as --dist of that scenario."""
+    (tmp_path / "scenarios").mkdir()
+    (tmp_path / "scenarios" / "ends.xosc").write_text(ENDS_AT)
+    (tmp_path / "variations").mkdir()
+    dist = tmp_path / "variations" / "ends_dist.xosc"
+    dist.write_text(_distribution("../scenarios/ends.xosc", ("2", "3.5")))
+    for permutation, end in ((0, 2.0), (1, 3.5)):
+        assert main(["run", str(dist), "--permutation", str(permutation), "--no-plots"]) == 0
+        out = capsys.readouterr().out
+        assert f"End={end:g}" in out
+        assert f"{end + 0.01:.2f} s at dt" in out  # (the first step past End)
+    assert main(["run", str(dist), "--permutation", "2", "--no-plots"]) == 2
+    assert "not in 0..1" in capsys.readouterr().err
+    assert main(["sweep", str(dist), "-o", str(tmp_path / "sweep"), "--quiet"]) == 0
+    assert "2 variants (End)" in capsys.readouterr().out
+    rows = (tmp_path / "sweep" / "catalog.csv").read_text().splitlines()
+    assert [r.split(",")[1] for r in rows[1:]] == ["2", "3.5"]
+    assert (
+        "2 variants have no metrics: their scenario has one road user"
+        in (tmp_path / "sweep" / "report.html").read_text()
+    )
+
+
+@pytest.mark.parametrize(
+    ("scenario_file", "message"),
+    [(None, "names no ScenarioFile"), ("", "names no ScenarioFile"), ("missing.xosc", "'missing.xosc' not found")],
+)
+def test_a_distribution_whose_scenario_is_missing_is_one_line(tmp_path, capsys, scenario_file, message):
+    dist = tmp_path / "d.xosc"
+    dist.write_text(_distribution(scenario_file))
+    for command in (["run", str(dist), "--no-plots"], ["sweep", str(dist), "-o", str(tmp_path / "out")]):
+        assert main(command) == 2
+        err = capsys.readouterr().err
+        assert message in err and str(dist) in err and "line" in err and "Traceback" not in err
+    assert not (tmp_path / "out").exists()

@@ -121,8 +121,11 @@ def _cmd_validate(args: argparse.Namespace) -> int:
 def _cmd_run(args: argparse.Namespace) -> int:
     from vei_scenario.metrics import MetricConfig
     from vei_scenario.runner import parse_param_overrides, run_to, summary_text
+    from vei_scenario.variation import distributed_scenario
 
     values = parse_param_overrides(args.param)
+    if not args.dist and (base := distributed_scenario(args.scenario)) is not None:  # a distribution alone
+        args.scenario, args.dist = base, args.scenario
     if args.dist:  # a variant of a ParameterValueDistribution (esmini's --param_dist/--param_permutation)
         from vei_scenario.interpreter.document import load_scenario
         from vei_scenario.variation import read_distribution
@@ -436,7 +439,9 @@ def build_parser() -> argparse.ArgumentParser:
     cv.set_defaults(func=_cmd_clip_convert)
 
     r = sub.add_parser("run", help="run a scenario with the built-in interpreter; write trajectories, metrics, plots")
-    r.add_argument("scenario", help="OpenSCENARIO file (.xosc)")
+    r.add_argument(
+        "scenario", help="OpenSCENARIO file (.xosc), or a ParameterValueDistribution (its ScenarioFile's run)"
+    )
     r.add_argument("--param", action="append", default=[], metavar="NAME=VALUE", help="override a parameter")
     r.add_argument("--dt", type=DT, default=0.01, help="fixed step in s (default 0.01)")
     r.add_argument("-o", "--output", help="directory for trajectories.csv, metrics.json and plots")
@@ -449,7 +454,8 @@ def build_parser() -> argparse.ArgumentParser:
         "--permutation",
         type=_number(0, 10_000_000, integer=True),
         default=0,
-        help="which variant of --dist to run, counted from 0 (as esmini's --param_permutation)",
+        help="which variant of --dist (or of a distribution given as the scenario) to run, counted from 0 "
+        "(as esmini's --param_permutation)",
     )
     r.add_argument(
         "--osi",
@@ -496,7 +502,9 @@ def build_parser() -> argparse.ArgumentParser:
         "      regions shaded; then the most severe collisions (by impact speed, the relative speed at\n"
         "      first contact) and the closest passes (by minimum gap, then TTC).",
     )
-    sw.add_argument("scenario", help="OpenSCENARIO file (.xosc)")
+    sw.add_argument(
+        "scenario", help="OpenSCENARIO file (.xosc), or a ParameterValueDistribution alone (its ScenarioFile swept)"
+    )
     sw.add_argument(
         "--vary",
         action="append",

@@ -7,8 +7,6 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from vei_scenario.safe_xml import parse_xml
-
 
 def single_executions(root: Path) -> list[Path]:
     """Every single-parameter-set variation file under ``root`` (the pack's ``OpenSCENARIO/NCAP``):
@@ -28,12 +26,14 @@ def full_variations(root: Path) -> list[Path]:
 
 def base_scenario(variation: Path) -> Path:
     """The scenario a ParameterValueDistribution file varies (its ``ScenarioFile``)."""
-    ref = parse_xml(variation).getroot().find(".//ScenarioFile")
-    if ref is None or not ref.get("filepath"):
+    from vei_scenario.variation import distributed_scenario
+
+    base = distributed_scenario(variation)
+    if base is None:
         from vei_scenario.errors import VeiInputError
 
-        raise VeiInputError(variation, "ScenarioFile", "the distribution names no scenario file")
-    return (variation.parent / ref.get("filepath")).resolve()
+        raise VeiInputError(variation, "", "not a ParameterValueDistribution file")
+    return base
 
 
 def values_of(variation: Path) -> tuple[Path, dict[str, str]]:

@@ -16,7 +16,7 @@ from vei_scenario.reports.plot_worker import PlotWorker
 from vei_scenario.sweep.catalog import catalog_csv, catalog_json, variant_xosc
 from vei_scenario.sweep.evaluate import evaluate_dask, evaluate_local, iter_rows
 from vei_scenario.sweep.report_html import planner_on, plot_inputs, report_html
-from vei_scenario.variation import cartesian, parse_vary, read_distribution
+from vei_scenario.variation import cartesian, distributed_scenario, parse_vary, read_distribution
 
 #: At most this many traces per sweep (each is a full interpreted run and ~0.4 MB).
 MAX_TRACES = 1000
@@ -141,6 +141,8 @@ def run_sweep(
     scenario = Path(scenario)
     out = Path(out_dir)
     check_dt(dt)
+    if dist is None and not vary and (base := distributed_scenario(scenario)) is not None:
+        scenario, dist = base, scenario  # (a distribution alone: the scenario it names, its variants)
     if workers is not None and not (isinstance(workers, int) and 1 <= workers <= 1024):
         raise VeiInputError(None, "--workers", f"{workers!r} is not a number of workers in 1..1024")
     if seed is not None and not (isinstance(seed, int) and seed >= 0):

@@ -22,14 +22,13 @@ def _groups(rows: list[dict], x_param: str, groups: list[str]) -> list[tuple[str
         if r["status"] == "ok":
             k = key_of(r["parameters"])
             by_key.setdefault(k if isinstance(k, tuple) else (k,), []).append(r)
-    pick = itemgetter(*PLOTTED)
     out = []
     for key in sorted(by_key):  # a group whose every variant failed is listed under "Failed variants"
         sel = by_key[key]
         x = np.array([float(r["parameters"][x_param]) for r in sel])
         order = np.argsort(x, kind="stable")
-        # one pass over the rows; None (no value) becomes NaN in a float array
-        table = np.array([pick(r["metrics"]) for r in sel], dtype=float)[order]
+        # one pass over the rows; None (no value, or no metrics: a run without a pair) becomes NaN
+        table = np.array([[r["metrics"].get(m) for m in PLOTTED] for r in sel], dtype=float)[order]
         values = {m: table[:, k] for k, m in enumerate(PLOTTED)}
         values["variant"] = np.array([r["variant"] for r in sel], dtype=np.int64)[order]  # (for hovering)
         coll = np.array([bool(r["metrics"].get("collision")) for r in sel], dtype=bool)[order]
@@ -118,6 +117,12 @@ def report_html(
         f"{len(failed)} failed. dt {meta['dt_s']} s. Varied: "
         f"{html.escape(', '.join(param_label(v) for v in varied) or 'nothing')}.</p>",
     ]
+    unpaired = sum(1 for r in ok if not r["metrics"])
+    if unpaired:  # (vei run's metrics are of the ego and one other road user: none when it is alone)
+        parts.append(
+            f"<p class='note'>{unpaired} variants have no metrics: their scenario has one road user, no "
+            "pair to measure.</p>"
+        )
     parts += _configurations(ok, varied, meta)
     parts += _regions(inputs if inputs is not None else plot_inputs(rows, varied))
     if plots is None:

@@ -171,6 +171,24 @@ def _sample(path: Path, el, rng: np.random.Generator, n: int) -> list[str]:
     return out
 
 
+def distributed_scenario(path: str | Path) -> Path | None:
+    """The scenario a ParameterValueDistribution file varies (its ``ScenarioFile``, relative to the
+    distribution's folder), or None when ``path`` is a scenario itself: a distribution names the scenario
+    it is for, so ``vei run`` and ``vei sweep`` take it alone (the Euro NCAP pack ships its variations so)."""
+    path = Path(path)
+    root = parse_xml(path).getroot()
+    pvd = root.find("ParameterValueDistribution")
+    if root.tag != "OpenSCENARIO" or pvd is None:
+        return None
+    ref = pvd.find("ScenarioFile")
+    if ref is None or not (ref.get("filepath") or "").strip():
+        raise VeiInputError(path, f"line {pvd.sourceline}", "the distribution names no ScenarioFile filepath")
+    scenario = (path.parent / ref.get("filepath")).resolve()
+    if not scenario.is_file():
+        raise VeiInputError(path, f"line {ref.sourceline}", f"ScenarioFile {ref.get('filepath')!r} not found")
+    return scenario
+
+
 def read_distribution(path: str | Path, declared: dict[str, str], seed: int | None = None) -> list[dict[str, str]]:
     """Variants of a ParameterValueDistribution file (values not yet merged with defaults)."""
     path = Path(path)
