@@ -9,7 +9,7 @@ the whole run, the same collision verdict, the end within one step. With ``--all
 parameter set of every variation file in the pack runs (1 171 runs; a summary per file and the
 differing variants are printed).
 
-    python benchmarks/conformance_ncap.py [--esmini PATH] [--tolerance M] [--all-variants]
+    python benchmarks/conformance_ncap.py [--esmini PATH] [--tolerance M] [--all-variants [--files GLOB]]
 """
 
 from __future__ import annotations
@@ -27,6 +27,9 @@ def main() -> int:
     ap.add_argument("--esmini", default=str(ROOT.parent / "shared" / "esmini" / "bin" / "esmini"))
     ap.add_argument("--tolerance", type=float, default=0.10, help="largest distance that agrees (m)")
     ap.add_argument("--all-variants", action="store_true", help="every parameter set of every variation file")
+    ap.add_argument(
+        "--files", default="*/Variations/**/*.xosc", help="with --all-variants: the variation files (a glob below NCAP)"
+    )
     args = ap.parse_args()
     from vei_scenario.conformance.esmini import cross_check, find_esmini
     from vei_scenario.conformance.ncap import single_executions, values_of
@@ -38,7 +41,7 @@ def main() -> int:
         return 1
     dt = 0.01
     if args.all_variants:
-        return _all_variants(esmini, args.tolerance, dt)
+        return _all_variants(esmini, args.tolerance, dt, args.files)
     counts = {"agrees": 0, "differs": 0, "refused": 0}
     for v in single_executions(NCAP):
         try:
@@ -61,7 +64,7 @@ def main() -> int:
     return 0
 
 
-def _all_variants(esmini, tolerance: float, dt: float) -> int:
+def _all_variants(esmini, tolerance: float, dt: float, files: str = "*/Variations/**/*.xosc") -> int:
     """Every parameter set of every variation file: one line per file, then each differing variant."""
     from vei_scenario.conformance.esmini import cross_check
     from vei_scenario.conformance.ncap import base_scenario
@@ -71,7 +74,7 @@ def _all_variants(esmini, tolerance: float, dt: float) -> int:
 
     totals = {"agrees": 0, "differs": 0, "refused": 0}
     differing: list[str] = []
-    for v in sorted(NCAP.glob("*/Variations/**/*.xosc")):
+    for v in sorted(NCAP.glob(files)):
         base = base_scenario(v)
         sets = read_distribution(v, load_scenario(base).parameter_types)
         counts = {"agrees": 0, "differs": 0, "refused": 0}

@@ -247,3 +247,75 @@ def test_a_distribution_whose_scenario_is_missing_is_one_line(tmp_path, capsys, 
         err = capsys.readouterr().err
         assert message in err and str(dist) in err and "line" in err and "Traceback" not in err
     assert not (tmp_path / "out").exists()
+
+
+FOUR_PARAMETERS = ENDS_AT.replace(
+    '<ParameterDeclaration name="End" parameterType="double" value="1"/>',
+    '<ParameterDeclaration name="End" parameterType="double" value="0.05"/>'
+    + "".join(f'<ParameterDeclaration name="{n}" parameterType="string" value="d{n}"/>' for n in "ABCD"),
+)
+#: singles and value sets interleaved: the product's order is the file's, not singles first
+INTERLEAVED = """<?xml version="1.0"?><OpenSCENARIO><FileHeader revMajor="1" revMinor="2"
+ date="2024-01-01T00:00:00" description="" author=""/><ParameterValueDistribution>
+<ScenarioFile filepath="four.xosc"/><Deterministic>
+<DeterministicSingleParameterDistribution parameterName="A"><!-- a comment first -->
+ <DistributionSet><Element value="a1"/><Element value="a2"/></DistributionSet>
+</DeterministicSingleParameterDistribution>
+<DeterministicMultiParameterDistribution><ValueSetDistribution>
+ <ParameterValueSet><ParameterAssignment parameterRef="B" value="b1"/></ParameterValueSet>
+ <ParameterValueSet><ParameterAssignment parameterRef="B" value="b2"/>
+  <ParameterAssignment parameterRef="C" value="c0"/></ParameterValueSet>
+</ValueSetDistribution></DeterministicMultiParameterDistribution>
+<DeterministicSingleParameterDistribution parameterName="C">
+ <DistributionSet><Element value="c1"/><Element value="c2"/><Element value="c3"/></DistributionSet>
+</DeterministicSingleParameterDistribution>
+<DeterministicMultiParameterDistribution><ValueSetDistribution>
+ <ParameterValueSet><ParameterAssignment parameterRef="D" value="d1"/></ParameterValueSet>
+ <ParameterValueSet><ParameterAssignment parameterRef="D" value="d2"/></ParameterValueSet>
+</ValueSetDistribution></DeterministicMultiParameterDistribution>
+</Deterministic></ParameterValueDistribution></OpenSCENARIO>"""
+
+
+def _interleaved(tmp_path: Path) -> Path:
+    (tmp_path / "four.xosc").write_text(FOUR_PARAMETERS)
+    dist = tmp_path / "interleaved.xosc"
+    dist.write_text(INTERLEAVED)
+    return dist
+
+
+def test_deterministic_distributions_combine_as_a_product_in_file_order(tmp_path):
+    """Every distribution is one factor of the product, a multi-parameter one with its value sets
+    (two of them multiply, they do not add up), the first in the file varying slowest; a value set's
+    parameters override the ones before it (C from B's second set, then C's own values)."""
+    from vei_scenario.variation import read_distribution
+
+    declared = {n: "string" for n in "ABCD"}
+    variants = read_distribution(_interleaved(tmp_path), declared)
+    expected = [
+        {"A": a, **b, "C": c, "D": d}
+        for a in ("a1", "a2")
+        for b in ({"B": "b1"}, {"B": "b2", "C": "c0"})
+        for c in ("c1", "c2", "c3")
+        for d in ("d1", "d2")
+    ]
+    assert variants == expected and len(variants) == 24
+
+
+def test_permutations_count_as_esminis(tmp_path, esmini):
+    """vei run --permutation N runs the values esmini's --param_permutation N runs (esmini prints them)."""
+    import re
+    import subprocess
+
+    from vei_scenario.variation import read_distribution
+
+    dist = _interleaved(tmp_path)
+    variants = read_distribution(dist, {n: "string" for n in "ABCD"})
+    for n in (0, 1, 5, 6, 13, 23):
+        log = subprocess.run(
+            [str(esmini), "--headless", "--osc", str(tmp_path / "four.xosc"), "--param_dist", str(dist),
+             "--param_permutation", str(n), "--fixed_timestep", "0.05"],
+            capture_output=True, text=True, timeout=60, cwd=tmp_path,
+        ).stdout  # fmt: skip
+        assert f"Parameter permutation {n + 1}/24" in log
+        printed = dict(re.findall(r"\]\s{4}(\w+): (\S+)", log.split("Parameter permutation", 1)[1]))
+        assert printed == variants[n], n

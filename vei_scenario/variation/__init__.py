@@ -16,7 +16,7 @@ import numpy as np
 from vei_scenario.errors import VeiInputError
 from vei_scenario.interpreter.document import check_type
 from vei_scenario.openscenario.numeric_attributes import check_numbers
-from vei_scenario.safe_xml import float_attribute, parse_xml
+from vei_scenario.safe_xml import first_element, float_attribute, parse_xml
 
 #: Cap on the variants one sweep may ask for (a typo in a step should not ask for billions).
 MAX_VARIANTS = 2_000_000
@@ -83,9 +83,12 @@ def _range(path: Path, el) -> tuple[float, float] | None:
 
 
 def _deterministic_single(path: Path, el) -> list[str]:
-    kind = el[0] if len(el) else None
+    kind = first_element(el)  # (comments may stand before it)
     if kind is not None and kind.tag == "DistributionSet":
-        return [e.get("value") for e in kind.iterfind("Element")]
+        values = [e.get("value") for e in kind.iterfind("Element")]
+        if not values:  # (the product would have no variant at all)
+            raise VeiInputError(path, f"line {kind.sourceline}", "a DistributionSet has no Element")
+        return values
     if kind is not None and kind.tag == "DistributionRange":
         step = float_attribute(path, kind, "stepWidth")
         lo, hi = _range(path, kind)
@@ -103,7 +106,7 @@ def _deterministic_single(path: Path, el) -> list[str]:
 
 
 def _sample(path: Path, el, rng: np.random.Generator, n: int) -> list[str]:
-    kind = el[0] if len(el) else None
+    kind = first_element(el)  # (comments may stand before it)
     tag = kind.tag if kind is not None else "nothing"
     if tag == "ProbabilityDistributionSet":
         elems = list(kind.iterfind("Element"))
@@ -200,19 +203,31 @@ def read_distribution(path: str | Path, declared: dict[str, str], seed: int | No
     variants: list[dict[str, str]]
     det, sto = pvd.find("Deterministic"), pvd.find("Stochastic")
     if det is not None:
-        axes = []
-        for single in det.iterfind("DeterministicSingleParameterDistribution"):
-            axes.append((single.get("parameterName"), _deterministic_single(path, single), single))
-        sets = []
-        for multi in det.iterfind("DeterministicMultiParameterDistribution/ValueSetDistribution"):
-            for vs in multi.iterfind("ParameterValueSet"):
-                sets.append({a.get("parameterRef"): a.get("value") for a in vs.iterfind("ParameterAssignment")})
-        total = math.prod(len(a[1]) for a in axes) * max(1, len(sets))
+        # the cartesian product of every distribution, in file order, the first varying slowest (the
+        # standard; esmini's --param_permutation counts so): a single parameter's values, or a multi-
+        # parameter distribution's value sets (one factor each)
+        factors: list[list[dict[str, str]]] = []
+        named = []
+        for d in det:
+            if d.tag == "DeterministicSingleParameterDistribution":
+                name = d.get("parameterName")
+                factors.append([{name: v} for v in _deterministic_single(path, d)])
+                named.append((name, d))
+            elif d.tag == "DeterministicMultiParameterDistribution":
+                sets = [
+                    {a.get("parameterRef"): a.get("value") for a in vs.iterfind("ParameterAssignment")}
+                    for vs in d.iterfind("ValueSetDistribution/ParameterValueSet")
+                ]
+                if not sets:
+                    raise VeiInputError(
+                        path, f"line {d.sourceline}", "a multi-parameter distribution without value sets"
+                    )
+                factors.append(sets)
+                named += [(k, d) for vs in sets for k in vs]
+        total = math.prod(len(f) for f in factors)
         if total > MAX_VARIANTS:
             raise VeiInputError(path, f"line {det.sourceline}", f"{total} variants exceed the limit of {MAX_VARIANTS}")
-        base = [dict(zip([a[0] for a in axes], combo)) for combo in itertools.product(*(a[1] for a in axes))]
-        variants = [{**b, **s} for b in base for s in (sets or [{}])]
-        named = [(a[0], a[2]) for a in axes] + [(k, multi) for s in sets for k in s]
+        variants = [{k: v for part in combo for k, v in part.items()} for combo in itertools.product(*factors)]
     elif sto is not None:
         runs = float_attribute(path, sto, "numberOfTestRuns")
         if not (1 <= runs <= MAX_VARIANTS) or not runs.is_integer():
