@@ -482,20 +482,22 @@ static PyObject *Polyline_set_exit_speed(PolylineObject *self, PyObject *const *
     Py_RETURN_NONE;
 }
 
-static PyObject *Polyline_arc_lengths(PolylineObject *self, PyObject *unused)
+/* a Python list of n doubles (NULL with the exception set when one cannot be made) */
+static PyObject *float_list(const double *v, long n)
 {
-    PyObject *out = PyList_New(self->p.n);
-    if (!out) return NULL;
-    for (int i = 0; i < self->p.n; i++) {
-        PyObject *v = PyFloat_FromDouble(self->p.s[i]);
-        if (!v) {
-            Py_DECREF(out);
-            return NULL;
+    PyObject *out = PyList_New(n);
+    for (long i = 0; out && i < n; i++) {
+        PyObject *f = PyFloat_FromDouble(v[i]);
+        if (!f) {
+            Py_CLEAR(out);
+            break;
         }
-        PyList_SET_ITEM(out, i, v);
+        PyList_SET_ITEM(out, i, f);
     }
     return out;
 }
+
+static PyObject *Polyline_arc_lengths(PolylineObject *self, PyObject *unused) { return float_list(self->p.s, self->p.n); }
 
 /* advance(s, ds, reverse) -> (x, y, yaw, s): path_advance, for the interpreter's own steps */
 static PyObject *Polyline_advance(PolylineObject *self, PyObject *const *args, Py_ssize_t nargs)
@@ -1790,21 +1792,6 @@ static PyObject *hypot_(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
 
 /* the most fine samples a clothoid takes (the caller refuses longer ones with a message of its own) */
 #define CLOTHOID_MAX_SAMPLES 40000000L
-
-/* a list of n floats */
-static PyObject *float_list(const double *v, long n)
-{
-    PyObject *out = PyList_New(n);
-    for (long i = 0; out && i < n; i++) {
-        PyObject *f = PyFloat_FromDouble(v[i]);
-        if (!f) {
-            Py_CLEAR(out);
-            break;
-        }
-        PyList_SET_ITEM(out, i, f);
-    }
-    return out;
-}
 
 /* clothoid(x0, y0, h0, curvature, rate, length, fine, keep) -> (xs, ys, hs): vei_clothoid_sample's
  * kept points as three lists (the interpreter's polyline vertices) */
