@@ -10,6 +10,7 @@ from pathlib import Path
 
 from vei_scenario.interpreter.document import load_scenario
 from vei_scenario.interpreter.engine import DEFAULT_MAX_TIME_S, RunResult, Simulation
+from vei_scenario.interpreter.malformed import refused_when_malformed
 
 
 def run_scenario(
@@ -21,8 +22,15 @@ def run_scenario(
 ) -> RunResult:
     """Load ``path``, apply parameter overrides (strings as in the file, or Python booleans and
     numbers), run at the fixed step ``dt`` (``coupling``: see
-    :data:`~vei_scenario.interpreter.engine.COUPLINGS`)."""
-    return Simulation(load_scenario(path, parameters), dt, max_time_s, coupling).run()
+    :data:`~vei_scenario.interpreter.engine.COUPLINGS`).
+
+    A file the interpreter cannot read because it breaks the ASAM schema is refused with the schema's
+    first complaint (file, line, reason), not with the place where reading it failed
+    (:mod:`~vei_scenario.interpreter.malformed`)."""
+    doc = None
+    with refused_when_malformed(path, lambda: doc.root if doc is not None else None):
+        doc = load_scenario(path, parameters)
+        return Simulation(doc, dt, max_time_s, coupling).run()
 
 
 __all__ = ["RunResult", "Simulation", "load_scenario", "run_scenario"]

@@ -10,11 +10,12 @@ from __future__ import annotations
 import math
 
 from vei_scenario.core import row as core_row
+from vei_scenario.errors import VeiInputError
 from vei_scenario.interpreter.action_base import Action
 from vei_scenario.interpreter.clock import step_time
 from vei_scenario.interpreter.controllers import make_controller
 from vei_scenario.interpreter.entities import PathFollower, SpeedProfile, transition_fraction
-from vei_scenario.interpreter.positions import POSITION_KINDS, entity_lane, lane_shift, lane_state_at, tilt
+from vei_scenario.interpreter.positions import POSITION_KINDS, entity_lane, lane_id, lane_shift, lane_state_at, tilt
 from vei_scenario.interpreter.positions import resolve as resolve_position
 from vei_scenario.interpreter.shapes import placed_when_built, polyline_from
 from vei_scenario.safe_xml import first_element
@@ -99,6 +100,17 @@ class LaneChangeRuntime:
 
     def offset(self, e, ctx, road) -> float:
         """Offset from the centre of the entity's current lane at its current s."""
+        try:
+            return self._offset(e, ctx, road)
+        except KeyError:  # (a road whose lanes do not go on where the transition does)
+            raise VeiInputError(
+                ctx.path,
+                f"t={ctx.t:g} s",
+                f"a lateral transition to lane {self.target_lane} reached road {road.id!r} at s={e.lane.s:g}, "
+                f"where that lane or the road user's lane {e.lane.lane} is not (the road's lanes do not link)",
+            ) from None
+
+    def _offset(self, e, ctx, road) -> float:
         s = e.lane.s
         c_target = self._t(road, s, self.target_lane, self.target_where)
         if self.start_rel is None:  # where it starts, measured from the target lane's centre (esmini)
@@ -151,10 +163,10 @@ class LaneChange(Action):
         road = ctx.roads.road(st.road)
         here = road.section_index(st.s)
         if self.target.tag == "AbsoluteTargetLane":
-            lane, where = int(self.target.get("value")), (road.id, here)
+            lane, where = lane_id(ctx, self.target, "value"), (road.id, here)
         else:
             _, ref = entity_lane(ctx, self.el, self.target.get("entityRef"))
-            lane = lane_shift(ref.lane, int(self.target.get("value")), ref.forward)
+            lane = lane_shift(ref.lane, lane_id(ctx, self.target, "value"), ref.forward)
             where = (ref.road, ctx.roads.road(ref.road).section_index(ref.s))
         if lane == 0 or not _lane_exists(ctx.roads, st.road, lane, ref_where=where):
             raise ctx.error(self.el, f"LaneChangeAction: road {st.road} has no lane {lane} here")

@@ -650,7 +650,12 @@ class RelativeClearance(_EntityCondition):
         self.backward_m = float(el.get("distanceBackward", "0") or 0)
         self.opposite = el.get("oppositeLanes", "false") == "true"
         self.freespace = el.get("freeSpace", el.get("freespace", "false")) == "true"
-        ranges = [(int(r.get("from")), int(r.get("to"))) for r in el.iterfind("RelativeLaneRange")]
+        from vei_scenario.interpreter.positions import lane_id
+
+        # (a range without a limit is open on that side)
+        ranges = [
+            (lane_id(ctx, r, "from", -1000), lane_id(ctx, r, "to", 1000)) for r in el.iterfind("RelativeLaneRange")
+        ]
         self.ranges = ranges or [(-100, 100)]
         self.only = [r.get("entityRef") for r in el.iterfind("EntityRef")]
 

@@ -46,6 +46,21 @@ class Pose:
     lane: LaneState | None = None
 
 
+def lane_id(ctx, el, name: str = "laneId", default: int | None = None) -> int:
+    """A lane id (OpenSCENARIO types it as text; a lane is a whole number, written ``-1`` or, from a
+    double parameter, ``-1.0``); one line naming ``el``'s line for anything else."""
+    text = el.get(name)
+    if text is None and default is not None:
+        return default
+    try:
+        value = float(text)
+    except (TypeError, ValueError):
+        value = math.nan
+    if not value.is_integer() or abs(value) > 1e6:
+        raise ctx.error(el, f"<{el.tag}> {name}={text!r} is not a lane id (a whole number)")
+    return int(value)
+
+
 def number(el, name: str, default: float = 0.0) -> float:
     v = el.get(name)
     return float(v) if v not in (None, "") else default
@@ -210,7 +225,7 @@ def resolve(ctx, pos) -> Pose:
             dx, dy = object_offset(ref, dx, dy, number(el, "dz"))
         return Pose(ref.x + dx, ref.y + dy, wrap_angle(oriented(el, ref.yaw)))
     if tag == "LanePosition":
-        return lane_pose(ctx, el, el.get("roadId"), int(el.get("laneId")), number(el, "s"), number(el, "offset"))
+        return lane_pose(ctx, el, el.get("roadId"), lane_id(ctx, el), number(el, "s"), number(el, "offset"))
     if tag == "RoadPosition":
         net = _network(ctx, el)
         try:
@@ -236,7 +251,7 @@ def resolve(ctx, pos) -> Pose:
         coords = el.find("InRoutePosition/FromLaneCoordinates")
         if coords is not None:
             leg, s = route.at(number(coords, "pathS"))
-            lane = int(coords.get("laneId"))
+            lane = lane_id(ctx, coords)
             # facing the lane's driving direction (esmini), not necessarily the route's
             return lane_pose(ctx, el, leg.road, lane, s, number(coords, "laneOffset"))
         coords = el.find("InRoutePosition/FromRoadCoordinates")

@@ -22,7 +22,8 @@ from vei_scenario.safe_xml import first_element
 
 _FINE_M = 0.005
 _KEEP_EVERY = 10  # kept vertices every 5 cm
-#: The longest clothoid sampled (its points every 5 cm: 2 million vertices).
+#: The longest curve sampled into a polyline: a clothoid, a clothoid spline's segments together, a
+#: Nurbs's control polygon (a clothoid's points every 5 cm: 2 million vertices).
 _MAX_CLOTHOID_M = 100_000.0
 
 
@@ -33,6 +34,19 @@ def clothoid_points(
     along the arc (1/m²) and ``length``; the last sample is the end point. The core samples it
     (``vei_clothoid_sample``: the trapezoid rule, a cosine and a sine per fine step, in C)."""
     return _core.clothoid(x0, y0, h0, curvature, curvature_rate, length, _FINE_M, _KEEP_EVERY)
+
+
+def _sampled(ctx, el, x0: float, y0: float, h0: float, curvature: float, rate: float, length: float):
+    """clothoid_points of element ``el``'s clothoid; one line naming it where its numbers, each finite,
+    make none (a curvature change over the length that overflows, a start too far away)."""
+    try:
+        return clothoid_points(x0, y0, h0, curvature, rate, length)
+    except ValueError:
+        raise ctx.error(
+            el,
+            f"<{el.tag}>: no clothoid of curvature {curvature:g}, rate {rate:g} 1/m² and length "
+            f"{length:g} m from ({x0:g}, {y0:g}, {h0:g})",
+        ) from None
 
 
 def _num(ctx, el, name: str, default: float | None = None) -> float:
@@ -68,7 +82,7 @@ def _clothoid(el, ctx, start) -> tuple[list, list, list, float]:
         raise ctx.error(el, "a Clothoid needs a start Position")
     rate = el.get("curvaturePrime") if el.get("curvaturePrime") is not None else el.get("curvatureDot")
     length = _clothoid_length(ctx, el)
-    x, y, h = clothoid_points(start.x, start.y, start.h, _num(ctx, el, "curvature"), float(rate or 0.0), length)
+    x, y, h = _sampled(ctx, el, start.x, start.y, start.h, _num(ctx, el, "curvature"), float(rate or 0.0), length)
     return x, y, h, length
 
 
@@ -159,6 +173,7 @@ def _polyline(el, ctx, place: bool, entity: str | None) -> Polyline:
         hs: list[float] = []
         marks: list[int] = []  # index of each segment's first point
         jumped: list[bool] = []  # whether it starts away from where the one before ended
+        total = 0.0
         for k, seg in enumerate(segments):
             pos = seg.find("PositionStart")
             # the standard types PositionStart as a Position (its child is the LanePosition,
@@ -174,8 +189,11 @@ def _polyline(el, ctx, place: bool, entity: str | None) -> Polyline:
                 x0, y0, h0 = xs[-1], ys[-1], hs[-1]
             k0, k1 = _num(ctx, seg, "curvatureStart"), _num(ctx, seg, "curvatureEnd")
             length = _clothoid_length(ctx, seg)
+            total += length
+            if total > _MAX_CLOTHOID_M:
+                raise ctx.error(seg, f"the ClothoidSpline's segments are longer than {_MAX_CLOTHOID_M:g} m together")
             h_off = _num(ctx, seg, "hOffset", 0.0)
-            x, y, h = clothoid_points(x0, y0, h0 + h_off, k0, (k1 - k0) / length, length)
+            x, y, h = _sampled(ctx, seg, x0, y0, h0 + h_off, k0, (k1 - k0) / length, length)
             marks.append(len(xs))
             jumped.append(bool(xs) and math.hypot(x[0] - xs[-1], y[0] - ys[-1]) >= 1e-12)
             if xs and not jumped[-1]:
@@ -313,11 +331,13 @@ def _nurbs(el, ctx, place: bool) -> Polyline:
     degree = order - 1
     w = np.array(weights)
     cols = np.column_stack([np.array(xy) * w[:, None], w])
-    curve = BSpline(np.array(knots), cols, degree, extrapolate=False)
     lo, hi = knots[degree], knots[n]
     if not hi > lo:
         raise ctx.error(el, "Nurbs knots leave no parameter range")
+    curve = BSpline(np.array(knots), cols, degree, extrapolate=False)
     polygon = float(np.hypot(*np.diff(np.array(xy), axis=0).T).sum()) if n > 1 else 0.0
+    if not polygon <= _MAX_CLOTHOID_M:  # (sampled every NURBS_STEP_M: its memory grows with it)
+        raise ctx.error(el, f"a Nurbs's control polygon of {polygon:g} m is longer than {_MAX_CLOTHOID_M:g} m")
     steps = max(1, math.ceil(polygon / NURBS_STEP_M - 1e-9))
     u = lo + (hi - lo) * np.arange(NURBS_REFINE * steps + 1) / (NURBS_REFINE * steps)
     u[-1] = hi - 1e-12 * max(1.0, abs(hi))  # (the closed end of the last knot span)

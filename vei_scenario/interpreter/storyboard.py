@@ -13,7 +13,7 @@ from collections import deque
 
 from vei_scenario.interpreter.actions import ParameterSet, SignalState, VariableSet, global_actions, private_actions
 from vei_scenario.interpreter.clock import count_at_or_before, step_time, step_times
-from vei_scenario.interpreter.conditions import ENTITY_CONDITIONS, VALUE_CONDITIONS, known_entity
+from vei_scenario.interpreter.conditions import ENTITY_CONDITIONS, RULES, VALUE_CONDITIONS, known_entity
 from vei_scenario.interpreter.context import Context
 from vei_scenario.safe_xml import first_element
 
@@ -51,11 +51,20 @@ class ConditionRunner:
             if cls is None:
                 raise ctx.error(kind, f"<{kind.tag}> is not supported by vei run")
             names = [r.get("entityRef") for r in trig.iterfind("EntityRef")]
+            if not names:
+                raise ctx.error(trig, "TriggeringEntities names no entity")
             for n in names:
                 known_entity(ctx, trig, n)
-            self.condition = cls(kind, ctx, names, trig.get("triggeringEntitiesRule", "any"))
+            rule = trig.get("triggeringEntitiesRule", "any")
+            if rule not in ("any", "all"):
+                raise ctx.error(trig, f"triggeringEntitiesRule {rule!r} is neither 'any' nor 'all'")
+            self.condition = cls(kind, ctx, names, rule)
         else:
             raise ctx.error(el, "condition without ByValueCondition or ByEntityCondition")
+        if kind.get("rule") is not None and kind.get("rule") not in RULES:
+            raise ctx.error(kind, f"rule {kind.get('rule')!r} is not one of {', '.join(RULES)}")
+        if self.edge != "none" and self.edge not in self.EDGES:
+            raise ctx.error(el, f"conditionEdge {self.edge!r} is not one of none, {', '.join(self.EDGES)}")
         self._test = self.condition.test  # (looked up once: edges test every step)
         #: the condition's value with its edge applied (the test itself without an edge)
         self.edged = getattr(self, self.EDGES[self.edge]) if self.edge in self.EDGES else self._test

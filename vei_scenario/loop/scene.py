@@ -21,6 +21,7 @@ from vei_scenario.interpreter.conditions import compare
 from vei_scenario.interpreter.controllers import CollisionAvoidanceController, SocialForceController
 from vei_scenario.interpreter.document import load_scenario, resolve_value
 from vei_scenario.interpreter.engine import Simulation
+from vei_scenario.interpreter.malformed import refused_when_malformed
 from vei_scenario.models.cap import CapParameters
 from vei_scenario.models.sfm import SfmParameters
 from vei_scenario.safe_xml import parse_xml
@@ -49,8 +50,10 @@ class LoopScene:
     def __init__(self, path: str | Path, dt: float = 0.01) -> None:
         self.path, self.dt = Path(path), dt
         raw = parse_xml(path).getroot()  # (the attributes as written: "$Name" where a parameter decides)
-        doc = load_scenario(path, tree=copy.deepcopy(raw).getroottree())
-        sim = Simulation(doc, dt)
+        doc = None
+        with refused_when_malformed(path, lambda: doc.root if doc is not None else None):
+            doc = load_scenario(path, tree=copy.deepcopy(raw).getroottree())
+            sim = Simulation(doc, dt)
         ctx = sim.ctx
         self.defaults = dict(doc.parameters)
         self.types = dict(doc.parameter_types)

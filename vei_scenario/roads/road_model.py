@@ -252,7 +252,10 @@ class RoadNetwork:
             conns = []
             direct = j.get("type") == "direct"
             for c in j.iterfind("connection"):
-                links = {int(ll.get("from")): int(ll.get("to")) for ll in c.iterfind("laneLink")}
+                try:
+                    links = {_lane_id(ll.get("from"), ll): _lane_id(ll.get("to"), ll) for ll in c.iterfind("laneLink")}
+                except ValueError as exc:
+                    raise VeiInputError(path, f"line {c.sourceline}", f"junction {j.get('id')!r}: {exc}") from None
                 other = c.get("linkedRoad") if direct else c.get("connectingRoad")
                 conns.append(Connection(c.get("incomingRoad"), other, c.get("contactPoint"), links, direct))
             junctions[j.get("id")] = conns
@@ -300,8 +303,7 @@ class RoadNetwork:
                 return None
             start = link.contact != "end"
             new_lane = linked if linked is not None else lane_id
-            target_sec = nxt.sections[0] if start else nxt.sections[-1]
-            return (nxt, new_lane, start) if new_lane in target_sec.lanes else None
+            return (nxt, new_lane, start) if _enters(nxt, new_lane, start) else None
         conns = [c for c in self.junctions.get(link.id, []) if c.incoming == road.id]
         wanted = [c for c in conns if c.connecting == prefer and c.lane_links]
         if wanted:
@@ -310,13 +312,13 @@ class RoadNetwork:
             if to is None:  # the route turns from another lane: the linked lane nearest to ours
                 to = c.lane_links[min(c.lane_links, key=lambda k: abs(k - lane_id))]
             nxt = self.roads.get(c.connecting)
-            if nxt is not None:
+            if _enters(nxt, to, c.contact != "end"):
                 return nxt, to, c.contact != "end"
         for conn in conns:
             if lane_id not in conn.lane_links:
                 continue
             nxt = self.roads.get(conn.connecting)
-            if nxt is None:
+            if not _enters(nxt, conn.lane_links[lane_id], conn.contact != "end"):
                 continue
             return nxt, conn.lane_links[lane_id], conn.contact != "end"
         for conn in self.junctions.get(link.id, []):  # a direct junction entered from its linked road
@@ -327,8 +329,18 @@ class RoadNetwork:
             if lane_id not in back or nxt is None:
                 continue
             via_end = nxt.successor is not None and nxt.successor.kind == "junction" and nxt.successor.id == link.id
+            if not _enters(nxt, back[lane_id], not via_end):
+                continue
             return nxt, back[lane_id], not via_end
         return None
+
+
+def _enters(road: Road | None, lane_id: int, start: bool) -> bool:
+    """Whether a road user can enter ``road`` in lane ``lane_id`` at its start (``start``) or end: a
+    link to a lane the road does not have there leads nowhere (a dead end, where it stops)."""
+    if road is None or not road.sections:
+        return False
+    return lane_id in (road.sections[0] if start else road.sections[-1]).lanes
 
 
 def _check_geometry(g: Geometry, el) -> None:
