@@ -82,6 +82,22 @@ CASES = {
         mutate(lambda d: [f.__setitem__("objects", []) for f in d["annotations"]["frames"]]),
         ["no e-scooter track"],
     ),
+    "gps_outlier": (  # (a fix whose longitude lost its sign: the other side of the globe)
+        mutate(lambda d: d["ego"]["samples"][40].__setitem__("lon", -d["ego"]["samples"][40]["lon"])),
+        ["ego.samples[40]", "no road vehicle moves so"],
+    ),
+    "lat_lon_swapped": (
+        mutate(
+            lambda d: d["ego"]["samples"][7].update(
+                lat=d["ego"]["samples"][7]["lon"], lon=d["ego"]["samples"][7]["lat"]
+            )
+        ),
+        ["ego.samples[7]", "m from the one before"],
+    ),
+    "clip_spans_decades": (  # (a first fix on another clock: 0 where the rest are UNIX times)
+        mutate(lambda d: d["ego"]["samples"][0].__setitem__("t", 90.0)),
+        ["ego.samples[1].t", "a clip spans at most 3600 s"],
+    ),
     "extra_field": (mutate(lambda d: d["ego"].__setitem__("colour", "red")), ["ego", "'colour'", "extensions"]),
     "wrong_format": (mutate(lambda d: d.__setitem__("format", "vei-clip/2")), ["format", "vei-clip/1"]),
     "empty_samples": (mutate(lambda d: d["ego"].__setitem__("samples", [])), ["ego.samples"]),
@@ -105,6 +121,17 @@ def test_bad_clip_gives_one_line_and_exit_2(tmp_path, capsys, case):
     for fragment in expected:
         assert fragment in lines[0], lines[0]
     assert not out.exists() or not any(out.iterdir()), "no output may be written"
+
+
+def test_a_fix_off_by_gps_error_still_compiles(tmp_path, capsys):
+    """A fix 30 m off (multipath) is GPS as recorded, not an outlier to refuse: only jumps no road vehicle
+    makes are (100 m/s, the schema's top speed, plus 50 m)."""
+    doc = with_map(CASE)
+    fix = doc["ego"]["samples"][40]
+    fix["lat"] += 30.0 / 111_195.0  # (30 m north)
+    code, err, out = run_compile(tmp_path, json.dumps(doc), capsys)
+    assert code == 0, err
+    assert (out / "scenario.xosc").is_file()
 
 
 def test_missing_clip_file(tmp_path, capsys):

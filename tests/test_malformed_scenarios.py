@@ -191,6 +191,19 @@ def test_a_connecting_road_without_the_lane_is_a_dead_end_not_a_crash(tmp_path):
         assert all(math.isfinite(v) for v in tr.x)
 
 
+def test_without_the_xsds_a_reading_failure_is_one_line_that_says_how_to_find_the_fault(tmp_path, monkeypatch):
+    """A user who installed vei without the ASAM schemas gets what failed and where the XSDs come from."""
+    from vei_scenario.openscenario import asam_schemas
+
+    monkeypatch.setattr(asam_schemas, "schema_dir", lambda package: None)
+    path = _broken(tmp_path, "pedestrian_collision.xosc", lambda root: _remove(root, "SpeedActionTarget"))
+    with pytest.raises(VeiInputError) as info:
+        run_scenario(path, max_time_s=5.0, dt=0.05)
+    text = str(info.value)
+    assert "\n" not in text and text.startswith(f"{path}: cannot be played: reading it failed"), text
+    assert "asam-qc-openscenarioxml" in text and "vei bug" in text, text
+
+
 # --- the search itself, kept running ----------------------------------------------------------------
 hypothesis = pytest.importorskip("hypothesis")
 from hypothesis import HealthCheck, given, settings  # noqa: E402

@@ -110,6 +110,49 @@ def _strictly_increasing(path: Path, values: np.ndarray, field: str) -> None:
         )
 
 
+#: The fastest an ego's fixes may move apart (m/s): the schema's bound on ``speed_mps``; with
+#: GPS_ERROR_M on top for a fix that is off (multipath in a street canyon).
+MAX_TRACK_SPEED_MPS = 100.0
+GPS_ERROR_M = 50.0
+EARTH_RADIUS_M = 6_371_000.0
+
+
+#: The longest clip (s) from its first GPS fix to its last: an interaction, not a day's drive (the
+#: scenario is sampled at up to 100 Hz over it).
+MAX_CLIP_S = 3600.0
+
+
+def _clip_span_fits(path: Path, t: np.ndarray, field: str) -> None:
+    """Refuse a clip whose times span more than MAX_CLIP_S, naming the sample after the widest gap (a
+    time in other units or from another clock, typically)."""
+    if t[-1] - t[0] > MAX_CLIP_S:
+        i = int(np.argmax(np.diff(t))) + 1
+        raise VeiInputError(
+            path,
+            field.format(i=i),
+            f"the times span {t[-1] - t[0]:.6g} s (a gap of {t[i] - t[i - 1]:.6g} s before this one); a clip "
+            f"spans at most {MAX_CLIP_S:g} s",
+        )
+
+
+def _track_moves_as_a_vehicle(path: Path, ego: EgoTrack) -> None:
+    """Refuse a fix that jumps further from the one before than a road vehicle goes (a GPS outlier,
+    lat/lon swapped, a sign lost): the road fitted to the track and the projection would span it."""
+    lat, lon = np.radians(ego.lat), np.radians(ego.lon)
+    h = np.sin(np.diff(lat) / 2) ** 2 + np.cos(lat[:-1]) * np.cos(lat[1:]) * np.sin(np.diff(lon) / 2) ** 2
+    d = 2 * EARTH_RADIUS_M * np.arcsin(np.sqrt(np.clip(h, 0.0, 1.0)))
+    dt = np.diff(ego.t)
+    bad = np.nonzero(d > MAX_TRACK_SPEED_MPS * dt + GPS_ERROR_M)[0]
+    if bad.size:
+        i = int(bad[0])
+        raise VeiInputError(
+            path,
+            f"ego.samples[{i + 1}]",
+            f"the fix lies {d[i]:.0f} m from the one before, {dt[i]:.3g} s earlier ({d[i] / dt[i]:.0f} m/s): "
+            "no road vehicle moves so (a GPS outlier, or lat and lon swapped?)",
+        )
+
+
 def clip_from_document(path: Path, doc: Any) -> Clip:
     """A ``vei-clip/1`` document (already parsed) checked and normalised; ``path`` names it in errors
     and anchors the map file."""
@@ -123,6 +166,7 @@ def clip_from_document(path: Path, doc: Any) -> Clip:
         if bad.size:
             raise VeiInputError(path, f"ego.samples[{int(bad[0])}].{k}", "not a finite number")
     _strictly_increasing(path, cols["t"], "ego.samples[{i}].t")
+    _clip_span_fits(path, cols["t"], "ego.samples[{i}].t")
     ego = EgoTrack(
         t=cols["t"],
         lat=cols["lat"],
@@ -132,6 +176,7 @@ def clip_from_document(path: Path, doc: Any) -> Clip:
         length_m=float(ego_doc.get("length_m", DEFAULT_EGO_LENGTH_M)),
         width_m=float(ego_doc.get("width_m", DEFAULT_EGO_WIDTH_M)),
     )
+    _track_moves_as_a_vehicle(path, ego)
 
     ann_doc = doc["annotations"]
     offset = float(ann_doc.get("time_offset_s", 0.0))

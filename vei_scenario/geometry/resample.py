@@ -61,10 +61,19 @@ def output_grid(t_start: float, t_end: float, rate_hz: float) -> np.ndarray:
 GCV_WINDOW = 100
 
 
+#: The penalty range :func:`_penalty_of` searches (log10): from interpolating to stiff.
+LOG_PENALTY_RANGE = (-12.0, 6.0)
+
+
 def gcv_penalty(t: np.ndarray, y: np.ndarray) -> float:
-    """The smoothing penalty generalised cross-validation picks on the first ``GCV_WINDOW`` samples."""
+    """The smoothing penalty generalised cross-validation picks on the first ``GCV_WINDOW`` samples;
+    where GCV has no answer (scipy finds it ill-posed: samples whose spacing spans many orders of
+    magnitude), the least penalty searched, which interpolates the samples as they are."""
     n = min(t.size, GCV_WINDOW)
-    probe = make_smoothing_spline(t[:n], y[:n])
+    try:
+        probe = make_smoothing_spline(t[:n], y[:n])
+    except ValueError:
+        return float(10 ** LOG_PENALTY_RANGE[0])
     return _penalty_of(probe, t[:n], y[:n])
 
 
@@ -76,7 +85,7 @@ def smoothing_spline(t: np.ndarray, y: np.ndarray, lam: float | None = None):
 def _penalty_of(spline, t: np.ndarray, y: np.ndarray) -> float:
     """Recover the GCV penalty scipy chose (it is not returned) by matching the fit at the samples."""
     target = spline(t)
-    lo, hi = -12.0, 6.0
+    lo, hi = LOG_PENALTY_RANGE
     for _ in range(14):  # bisection on log10(lam) to 0.001 decades; the residual grows with lam
         mid = 0.5 * (lo + hi)
         res = np.sum((make_smoothing_spline(t, y, lam=10**mid)(t) - y) ** 2)

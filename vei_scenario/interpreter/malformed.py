@@ -34,15 +34,24 @@ def files_read(path: Path, root) -> list[Path]:
     return files
 
 
-def schema_refusal(path: Path, root, exc: BaseException) -> VeiInputError | None:
-    """The refusal of a scenario whose reading raised ``exc``: the first complaint of the ASAM XSD about
-    the files it was read from; None when it has none (then the fault is the interpreter's)."""
+def schema_refusal(path: Path, root, error: BaseException) -> VeiInputError | None:
+    """The refusal of a scenario whose reading raised ``error``: the first complaint of the ASAM XSD about
+    the files it was read from; None when it has none (then the fault is the interpreter's). Without
+    the XSDs installed it cannot tell: the refusal says what failed and how to find out."""
     from vei_scenario.openscenario.validation import validate_file
 
     for file in files_read(path, root):
         try:
             problems = validate_file(file)
-        except VeiInputError:
+        except VeiInputError as exc:
+            if exc.where == "ASAM XSD":  # (no schema on this machine to tell whether the file is at fault)
+                return VeiInputError(
+                    Path(path),
+                    "",
+                    f"cannot be played: reading it failed ({type(error).__name__}: {error}); the ASAM XSD that "
+                    f"would name the fault is not installed ({exc.reason.split('; ', 1)[-1]}); a file it "
+                    "finds valid is a vei bug to report",
+                )
             continue
         problems = [p for p in problems if p.rule == "xsd"]
         if problems:
