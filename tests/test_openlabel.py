@@ -179,3 +179,65 @@ def test_times_out_of_order_name_the_openlabel_transform(tmp_path, capsys):
     frames[3]["frame_properties"]["timestamp"] = frames[2]["frame_properties"]["timestamp"]
     err = _bad(tmp_path, capsys, doc)
     assert "frame_properties.transforms.vehicle-iso8855_to_odom" in err and "times must increase" in err
+
+
+@pytest.mark.parametrize(
+    "where, value",
+    [
+        (("coordinate_systems", "vehicle-iso8855"), 12),
+        (("coordinate_systems", "vehicle-sae-j670", "pose_wrt_parent"), "identity"),
+        (("objects", "0"), [1, 2]),
+        (("frames", "0", "frame_properties"), 7),
+    ],
+)
+def test_a_part_written_as_a_number_or_text_where_the_schema_means_an_object_is_refused(tmp_path, capsys, where, value):
+    """The OpenLABEL 1.0 schema leaves out the types its definitions imply (a coordinate system with
+    properties, but no type): vei spells them out, so such a part is refused naming its path."""
+    doc = _case_openlabel(tmp_path, "stop_and_go")
+    node = doc["openlabel"]
+    for key in where[:-1]:
+        node = node[key]
+    if where[-1] not in node:
+        pytest.skip(f"{where} not in this document")
+    node[where[-1]] = value
+    err = _bad(tmp_path, capsys, doc)
+    assert f"openlabel.{'.'.join(where)}: not valid OpenLABEL 1.0" in err, err
+
+
+def test_the_typed_schema_accepts_what_the_vcd_library_writes():
+    """Objects, actions, events, contexts, relations, streams, transforms and frame properties, as VCD
+    writes them: the types spelled out reject none of it."""
+    import jsonschema
+    from vcd import core, types
+
+    from vei_scenario.clip.openlabel import _typed_schema
+
+    v = core.VCD()
+    v.add_coordinate_system("odom", types.CoordinateSystemType.scene_cs)
+    v.add_coordinate_system(
+        "vehicle-iso8855",
+        types.CoordinateSystemType.local_cs,
+        parent_name="odom",
+        pose_wrt_parent=types.PoseData(
+            val=[1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1], t_type=types.TransformDataType.matrix_4x4
+        ),
+    )
+    v.add_stream("cam", "uri", "a camera", core.StreamType.camera)
+    o = v.add_object("car1", "car", frame_value=(0, 5))
+    v.add_object_data(o, types.bbox("box2d", [1, 2, 3, 4]), frame_value=2)
+    v.add_object_data(o, types.cuboid("box3d", [1, 2, 3, 0, 0, 0.1, 4, 2, 1.5], "vehicle-iso8855"), frame_value=3)
+    v.add_object_data(o, types.num("speed", 3.0), frame_value=3)
+    v.add_object_data(o, types.text("colour", "red"))
+    v.add_object_data(o, types.boolean("parked", False))
+    v.add_object_data(o, types.vec("v", [1, 2, 3]))
+    a = v.add_action("brake", "braking", frame_value=(2, 4))
+    v.add_event("start", "event", frame_value=1)
+    v.add_context("weather", "rain")
+    v.add_relation_object_action("", "isSubjectOfAction", object_uid=o, action_uid=a)
+    pose = types.PoseData(val=[0, 0, 0, 1, 1, 2, 3], t_type=types.TransformDataType.quat_and_trans_7x1)
+    v.add_transform(3, types.Transform("odom", "vehicle-iso8855", transform_src_to_dst=pose))
+    v.add_frame_properties(3, timestamp="2024-01-01T00:00:00", properties={"x": 1})
+    doc = json.loads(v.stringify(pretty=False))
+    assert list(jsonschema.Draft7Validator(_typed_schema()).iter_errors(doc)) == []
+    doc["openlabel"]["coordinate_systems"]["odom"] = 5  # (and it does reject)
+    assert list(jsonschema.Draft7Validator(_typed_schema()).iter_errors(doc))

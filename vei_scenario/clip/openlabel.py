@@ -32,6 +32,7 @@ Every problem is one :class:`VeiInputError` naming the path in the JSON
 from __future__ import annotations
 
 import copy
+import functools
 import math
 import re
 from datetime import datetime
@@ -71,6 +72,29 @@ def _json_path(parts) -> str:
     return out or "(top level)"
 
 
+@functools.cache
+def _typed_schema() -> dict:
+    """The OpenLABEL 1.0 schema with the types it implies spelled out: a definition with properties is
+    an object, one with items an array. (The schema leaves many out, so that a coordinate system or a
+    transform written as a number passes it; the reader would then fail on it somewhere inside.)"""
+    from vcd import schema
+
+    def typed(node):
+        if isinstance(node, list):
+            return [typed(n) for n in node]
+        if not isinstance(node, dict):
+            return node
+        out = {k: typed(v) for k, v in node.items()}
+        if "type" not in out and "$ref" not in out:
+            if {"properties", "patternProperties", "additionalProperties", "required"} & set(out):
+                out["type"] = "object"
+            elif "items" in out:
+                out["type"] = "array"
+        return out
+
+    return typed(schema.openlabel_schema)
+
+
 def validate_openlabel(path: Path, doc: Any) -> None:
     """Check ``doc`` against the OpenLABEL 1.0 JSON Schema (the VCD library's copy of it)."""
     import jsonschema
@@ -81,7 +105,7 @@ def validate_openlabel(path: Path, doc: Any) -> None:
     version = (doc["openlabel"].get("metadata") or {}).get("schema_version")
     if version != schema.openlabel_schema_version:
         raise _err(path, "openlabel.metadata.schema_version", f"{version!r}: only OpenLABEL 1.0.0 is supported")
-    validator = jsonschema.Draft7Validator(schema.openlabel_schema)
+    validator = jsonschema.Draft7Validator(_typed_schema())
     errors = list(validator.iter_errors(doc))
     if errors:
         err = jsonschema.exceptions.best_match(errors)
