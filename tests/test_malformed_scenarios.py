@@ -72,7 +72,6 @@ def _remove(root, tag):
         ("keep_lateral_distance.xosc", "LaneChangeActionDynamics"),
         ("cut-in_cr.xosc", "LaneOffsetTarget"),
         ("pedestrian.xosc", "Actors"),
-        ("alks_cut-out.xosc", "Dimensions"),
     ],
 )
 def test_a_missing_required_element_is_refused_with_the_schemas_words(tmp_path, name, tag):
@@ -81,7 +80,7 @@ def test_a_missing_required_element_is_refused_with_the_schemas_words(tmp_path, 
     assert "cannot be played" in text and f"( {tag} )" in text and "[xsd]" in text, text
 
 
-def test_a_broken_catalog_entry_is_refused_naming_the_catalog_file(tmp_path):
+def test_a_road_user_without_its_box_is_refused_naming_the_catalog_file(tmp_path):
     source = _source("cut-in.xosc")
     vehicles = source.parent.parent / "xosc" / "Catalogs" / "Vehicles"
     if not vehicles.is_dir():
@@ -99,7 +98,7 @@ def test_a_broken_catalog_entry_is_refused_naming_the_catalog_file(tmp_path):
 
     used = _first(etree.parse(str(source)).getroot(), "ScenarioObject").find("CatalogReference").get("catalogName")
     text = _refusal(_broken(tmp_path, "cut-in.xosc", change), catalogs / f"{used}.xosc")
-    assert "( Dimensions )" in text, text
+    assert "needs a BoundingBox with Dimensions" in text, text
 
 
 @pytest.mark.parametrize("lane", ["-1-1", "abc", "-1.5", "", "1e300"])

@@ -207,3 +207,21 @@ def test_a_network_is_built_once_per_file_content(tmp_path):
     path.write_text(road("200"))  # same size
     second = RoadNetwork.load(path)
     assert second is not first and second.road("1").length == 200.0 and first.road("1").length == 100.0
+
+
+def test_a_road_without_an_id_is_refused_naming_its_line(tmp_path):
+    """Links and positions name roads by id: a road without one could be driven onto and never found."""
+    from vei_scenario.errors import VeiInputError
+    from vei_scenario.roads.road_model import RoadNetwork
+
+    path = tmp_path / "r.xodr"
+    path.write_text(
+        '<?xml version="1.0"?><OpenDRIVE><header revMajor="1" revMinor="4"/>\n'
+        '<road length="10" junction="-1"><planView><geometry s="0" x="0" y="0" hdg="0" length="10"><line/>'
+        '</geometry></planView><lanes><laneSection s="0"><center><lane id="0" type="none"/></center><right>'
+        '<lane id="-1" type="driving"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></right>'
+        "</laneSection></lanes></road></OpenDRIVE>"
+    )
+    with pytest.raises(VeiInputError) as info:
+        RoadNetwork.load(path)
+    assert str(info.value).startswith(f"{path}: line 2: ") and "needs an id" in str(info.value)

@@ -89,7 +89,12 @@ def _entity(obj, ctx, name: str | None = None) -> Entity:
     if kind is None:
         raise ctx.error(obj, f"entity {name!r}: only Vehicle, Pedestrian and MiscObject are supported")
     box = kind.find("BoundingBox")
-    dims, centre = box.find("Dimensions"), box.find("Center")
+    dims = box.find("Dimensions") if box is not None else None
+    if dims is None or any(dims.get(k) is None for k in ("length", "width", "height")):
+        raise ctx.error(
+            kind, f"entity {name!r}: a {kind.tag} needs a BoundingBox with Dimensions length, width, height"
+        )
+    centre = box.find("Center")
     category = kind.get("vehicleCategory") or kind.get("pedestrianCategory") or kind.get("miscObjectCategory") or ""
     perf = kind.find("Performance")
     limits = VehicleLimits()
@@ -109,7 +114,7 @@ def _entity(obj, ctx, name: str | None = None) -> Entity:
         float(dims.get("length")),
         float(dims.get("width")),
         float(dims.get("height")),
-        float(centre.get("x", "0")) - rear_x,
+        float(centre.get("x", "0") if centre is not None else 0.0) - rear_x,
         limits,
         performance=perf is not None,
     )

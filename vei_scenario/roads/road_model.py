@@ -402,6 +402,8 @@ def _link(el) -> Link | None:
 
 
 def _road(r) -> Road:
+    if not r.get("id"):
+        raise ValueError("a road needs an id (links and positions name roads by it)")
     geoms = []
     for g in r.iterfind("planView/geometry"):
         kind_el = next((c for c in g if isinstance(c.tag, str)), None)
