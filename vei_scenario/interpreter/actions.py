@@ -309,6 +309,8 @@ class AcquirePosition(Action):
 
     def __init__(self, entity: str, el, ctx) -> None:
         self.entity, self.el = entity, el
+        if el.find("Position") is None:
+            raise ctx.error(el, "AcquirePositionAction needs a Position")
 
     def start(self, ctx) -> None:
         from vei_scenario.interpreter.routes import plan_route

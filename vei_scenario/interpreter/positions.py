@@ -286,6 +286,8 @@ def route_from(ctx, route_el, at):
     net = _network(ctx, at)
     points = []
     for wp in route_el.iterfind("Waypoint"):
+        if wp.find("Position") is None:
+            raise ctx.error(wp, "a Waypoint needs a Position")
         pose = resolve(ctx, wp.find("Position"))
         if pose.lane is None:
             raise ctx.error(wp, "waypoint is not on a lane")
