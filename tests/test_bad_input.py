@@ -5,6 +5,7 @@ from __future__ import annotations
 import copy
 import json
 import os
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -209,3 +210,23 @@ def test_console_script_prints_no_traceback(tmp_path):
     assert proc.returncode == 2
     assert proc.stderr.count("\n") == 1 and "Traceback" not in proc.stderr
     assert f"{clip}: line 1 column" in proc.stderr
+
+
+@pytest.mark.parametrize("key, value", [("lanes", "99999"), ("lanes:backward", "1e9"), ("lanes:forward", "inf")])
+def test_a_way_with_more_lanes_than_a_road_has_is_refused_before_netconvert(tmp_path, capsys, key, value):
+    """netconvert builds what it is told: 99 999 lanes took it past its 120 s limit. The count is
+    refused in the OSM file, naming the way and its line."""
+    from lxml import etree
+
+    tree = etree.parse(str(MAP))
+    highways = [w for w in tree.getroot().iter("way") if any(t.get("k") == "highway" for t in w.iter("tag"))]
+    for way in highways:
+        etree.SubElement(way, "tag", k=key, v=value)
+    osm = tmp_path / "map.osm"
+    tree.write(str(osm))
+    code, err, out = run_compile(tmp_path, json.dumps(CASE), capsys, ["--osm", str(osm)])
+    assert code == 2 and err.count("\n") == 1, err
+    named = re.search(r"map\.osm: line \d+: way (\d+): ", err)
+    assert named and named.group(1) in {w.get("id") for w in highways}, err
+    assert f"{key}={value!r}: more lanes than a road has" in err, err
+    assert not out.exists() or not any(out.iterdir())

@@ -28,6 +28,30 @@ class OsmRegion:
     n_missing_nodes: int  # node references the extract does not resolve (ways cut at its border)
 
 
+#: The most lanes one OSM way may carry (the widest carriageways have about 16 per direction); more is a
+#: typo netconvert would build for minutes.
+MAX_OSM_LANES = 32
+LANE_COUNT_KEYS = frozenset({"lanes", "lanes:forward", "lanes:backward", "lanes:both_ways"})
+
+
+def _check_lane_count(path: Path, way, tag) -> None:
+    """Refuse a lane count tag beyond MAX_OSM_LANES, naming the way and the line (a value that is no
+    number is left to netconvert, which ignores it)."""
+    if tag.get("k") not in LANE_COUNT_KEYS:
+        return
+    try:
+        n = float(tag.get("v", ""))
+    except ValueError:
+        return
+    if not n <= MAX_OSM_LANES:
+        raise VeiInputError(
+            path,
+            f"line {tag.sourceline}",
+            f"way {way.get('id')}: {tag.get('k')}={tag.get('v')!r}: more lanes than a road has "
+            f"(at most {MAX_OSM_LANES})",
+        )
+
+
 def _iter(path: Path, tags: tuple[str, ...]):
     return etree.iterparse(str(path), events=("end",), tag=tags, remove_comments=True, **SAFE_OPTIONS)
 
@@ -90,6 +114,7 @@ def crop_osm(path: Path, bbox: tuple[float, float, float, float]) -> OsmRegion:
                 for nd in el.iterfind("nd"):
                     etree.SubElement(w, "nd", ref=nd.get("ref"))
                 for t in el.iterfind("tag"):
+                    _check_lane_count(path, el, t)
                     etree.SubElement(w, "tag", k=t.get("k"), v=t.get("v"))
                 ways.append(w)
             el.clear()
