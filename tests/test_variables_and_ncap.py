@@ -319,3 +319,38 @@ def test_permutations_count_as_esminis(tmp_path, esmini):
         assert f"Parameter permutation {n + 1}/24" in log
         printed = dict(re.findall(r"\]\s{4}(\w+): (\S+)", log.split("Parameter permutation", 1)[1]))
         assert printed == variants[n], n
+
+
+@pytest.mark.parametrize(
+    "body, message",
+    [
+        ('<Deterministic><DeterministicSingleParameterDistribution parameterName="A"><DistributionSet>'
+         '<Element/></DistributionSet></DeterministicSingleParameterDistribution></Deterministic>',
+         "<Element> needs a value"),
+        ('<Deterministic><DeterministicSingleParameterDistribution parameterName="A"><DistributionRange '
+         'stepWidth="1"/></DeterministicSingleParameterDistribution></Deterministic>',
+         "a DistributionRange needs a Range"),
+        ('<Deterministic><DeterministicMultiParameterDistribution><ValueSetDistribution><ParameterValueSet>'
+         '<ParameterAssignment parameterRef="A"/></ParameterValueSet></ValueSetDistribution>'
+         "</DeterministicMultiParameterDistribution></Deterministic>",
+         "<ParameterAssignment> needs a value"),
+        ('<Stochastic numberOfTestRuns="3" randomSeed="1"><StochasticDistribution parameterName="A">'
+         '<ProbabilityDistributionSet><Element weight="1"/></ProbabilityDistributionSet></StochasticDistribution>'
+         "</Stochastic>",
+         "<Element> needs a value"),
+    ],
+)  # fmt: skip
+def test_a_distribution_element_without_its_value_or_range_is_one_line(tmp_path, body, message):
+    """Found by mutating the Euro NCAP variation files: these crashed reading the distribution."""
+    from vei_scenario.errors import VeiInputError
+    from vei_scenario.variation import read_distribution
+
+    dist = tmp_path / "d.xosc"
+    dist.write_text(
+        '<?xml version="1.0"?><OpenSCENARIO><FileHeader revMajor="1" revMinor="2" date="2024-01-01T00:00:00" '
+        f'description="" author=""/><ParameterValueDistribution><ScenarioFile filepath="s.xosc"/>\n{body}'
+        "</ParameterValueDistribution></OpenSCENARIO>"
+    )
+    with pytest.raises(VeiInputError) as info:
+        read_distribution(dist, {"A": "double"})
+    assert str(info.value).startswith(f"{dist}: line 2: ") and message in str(info.value), str(info.value)

@@ -82,16 +82,27 @@ def _range(path: Path, el) -> tuple[float, float] | None:
     return lo, hi
 
 
+def _value(path: Path, el) -> str:
+    """The ``value`` of a distribution's element or parameter assignment; one line when it has none."""
+    value = el.get("value")
+    if value is None:
+        raise VeiInputError(path, f"line {el.sourceline}", f"<{el.tag}> needs a value")
+    return value
+
+
 def _deterministic_single(path: Path, el) -> list[str]:
     kind = first_element(el)  # (comments may stand before it)
     if kind is not None and kind.tag == "DistributionSet":
-        values = [e.get("value") for e in kind.iterfind("Element")]
+        values = [_value(path, e) for e in kind.iterfind("Element")]
         if not values:  # (the product would have no variant at all)
             raise VeiInputError(path, f"line {kind.sourceline}", "a DistributionSet has no Element")
         return values
     if kind is not None and kind.tag == "DistributionRange":
         step = float_attribute(path, kind, "stepWidth")
-        lo, hi = _range(path, kind)
+        bounds = _range(path, kind)
+        if bounds is None:
+            raise VeiInputError(path, f"line {kind.sourceline}", "a DistributionRange needs a Range")
+        lo, hi = bounds
         if step <= 0:
             raise VeiInputError(path, f"line {kind.sourceline}", "stepWidth must be positive")
         count = (hi - lo) / step
@@ -114,7 +125,8 @@ def _sample(path: Path, el, rng: np.random.Generator, n: int) -> list[str]:
         if np.any(w < 0) or w.sum() <= 0:
             raise VeiInputError(path, f"line {kind.sourceline}", "weights must be non-negative and not all zero")
         idx = rng.choice(len(elems), size=n, p=w / w.sum())
-        return [elems[i].get("value") for i in idx]
+        values = [_value(path, e) for e in elems]
+        return [values[i] for i in idx]
     if tag == "Histogram":
         bins = list(kind.iterfind("Bin"))
         if not bins:
@@ -215,7 +227,7 @@ def read_distribution(path: str | Path, declared: dict[str, str], seed: int | No
                 named.append((name, d))
             elif d.tag == "DeterministicMultiParameterDistribution":
                 sets = [
-                    {a.get("parameterRef"): a.get("value") for a in vs.iterfind("ParameterAssignment")}
+                    {a.get("parameterRef"): _value(path, a) for a in vs.iterfind("ParameterAssignment")}
                     for vs in d.iterfind("ValueSetDistribution/ParameterValueSet")
                 ]
                 if not sets:
