@@ -1825,9 +1825,7 @@ static PyObject *clothoid(PyObject *mod, PyObject *const *args, Py_ssize_t nargs
 }
 
 #define F(name, doc) {#name, (PyCFunction)(void (*)(void))name, METH_FASTCALL, doc}
-/* entity_boxes(entities) -> bytes: the bounding box (centre x, centre y, yaw, length, width) of each
- * object with x, y, yaw, center_x (reference point to box centre, along the heading), length, width:
- * Entity.box() of the interpreter for a whole list in one call (the collision check's) */
+
 /* an entity's x, y, yaw, center_x, length and width (interpreter.entities.Entity) into v; 0 with the error set */
 static int entity_values(PyObject *entity, double *v)
 {
@@ -1841,6 +1839,9 @@ static int entity_values(PyObject *entity, double *v)
     return 1;
 }
 
+/* entity_boxes(entities) -> bytes: the bounding box (centre x, centre y, yaw, length, width) of each
+ * object with x, y, yaw, center_x (reference point to box centre, along the heading), length, width:
+ * Entity.box() of the interpreter for a whole list in one call (the collision check's) */
 static PyObject *entity_boxes(PyObject *mod, PyObject *seq)
 {
     PyObject *fast = PySequence_Fast(seq, "entity_boxes takes a sequence of entities");
