@@ -24,7 +24,7 @@ _FINE_M = 0.005
 _KEEP_EVERY = 10  # kept vertices every 5 cm
 #: The longest curve sampled into a polyline: a clothoid, a clothoid spline's segments together, a
 #: Nurbs's control polygon (a clothoid's points every 5 cm: 2 million vertices).
-_MAX_CLOTHOID_M = 100_000.0
+_MAX_CURVE_M = 100_000.0
 
 
 def clothoid_points(
@@ -62,8 +62,8 @@ def _clothoid_length(ctx, el) -> float:
     """A clothoid's (or spline segment's) ``length``: positive (the standard's range) and at most
     100 km (what is sampled into a polyline)."""
     length = _num(ctx, el, "length")
-    if not 0.0 < length <= _MAX_CLOTHOID_M:
-        raise ctx.error(el, f"<{el.tag}> needs a length above 0 and at most {_MAX_CLOTHOID_M:g} m (got {length:g})")
+    if not 0.0 < length <= _MAX_CURVE_M:
+        raise ctx.error(el, f"<{el.tag}> needs a length above 0 and at most {_MAX_CURVE_M:g} m (got {length:g})")
     return length
 
 
@@ -190,8 +190,8 @@ def _polyline(el, ctx, place: bool, entity: str | None) -> Polyline:
             k0, k1 = _num(ctx, seg, "curvatureStart"), _num(ctx, seg, "curvatureEnd")
             length = _clothoid_length(ctx, seg)
             total += length
-            if total > _MAX_CLOTHOID_M:
-                raise ctx.error(seg, f"the ClothoidSpline's segments are longer than {_MAX_CLOTHOID_M:g} m together")
+            if total > _MAX_CURVE_M:
+                raise ctx.error(seg, f"the ClothoidSpline's segments are longer than {_MAX_CURVE_M:g} m together")
             h_off = _num(ctx, seg, "hOffset", 0.0)
             x, y, h = _sampled(ctx, seg, x0, y0, h0 + h_off, k0, (k1 - k0) / length, length)
             marks.append(len(xs))
@@ -336,8 +336,8 @@ def _nurbs(el, ctx, place: bool) -> Polyline:
         raise ctx.error(el, "Nurbs knots leave no parameter range")
     curve = BSpline(np.array(knots), cols, degree, extrapolate=False)
     polygon = float(np.hypot(*np.diff(np.array(xy), axis=0).T).sum()) if n > 1 else 0.0
-    if not polygon <= _MAX_CLOTHOID_M:  # (sampled every NURBS_STEP_M: its memory grows with it)
-        raise ctx.error(el, f"a Nurbs's control polygon of {polygon:g} m is longer than {_MAX_CLOTHOID_M:g} m")
+    if not polygon <= _MAX_CURVE_M:  # (sampled every NURBS_STEP_M: its memory grows with it)
+        raise ctx.error(el, f"a Nurbs's control polygon of {polygon:g} m is longer than {_MAX_CURVE_M:g} m")
     steps = max(1, math.ceil(polygon / NURBS_STEP_M - 1e-9))
     u = lo + (hi - lo) * np.arange(NURBS_REFINE * steps + 1) / (NURBS_REFINE * steps)
     u[-1] = hi - 1e-12 * max(1.0, abs(hi))  # (the closed end of the last knot span)
