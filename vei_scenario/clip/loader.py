@@ -114,7 +114,6 @@ def _strictly_increasing(path: Path, values: np.ndarray, field: str) -> None:
 #: GPS_ERROR_M on top for a fix that is off (multipath in a street canyon).
 MAX_TRACK_SPEED_MPS = 100.0
 GPS_ERROR_M = 50.0
-EARTH_RADIUS_M = 6_371_000.0
 
 
 #: The longest clip (s) from its first GPS fix to its last: an interaction, not a day's drive (the
@@ -138,9 +137,9 @@ def _clip_span_fits(path: Path, t: np.ndarray, field: str) -> None:
 def _track_moves_as_a_vehicle(path: Path, ego: EgoTrack) -> None:
     """Refuse a fix that jumps further from the one before than a road vehicle goes (a GPS outlier,
     lat/lon swapped, a sign lost): the road fitted to the track and the projection would span it."""
-    lat, lon = np.radians(ego.lat), np.radians(ego.lon)
-    h = np.sin(np.diff(lat) / 2) ** 2 + np.cos(lat[:-1]) * np.cos(lat[1:]) * np.sin(np.diff(lon) / 2) ** 2
-    d = 2 * EARTH_RADIUS_M * np.arcsin(np.sqrt(np.clip(h, 0.0, 1.0)))
+    from pyproj import Geod
+
+    _, _, d = Geod(ellps="WGS84").inv(ego.lon[:-1], ego.lat[:-1], ego.lon[1:], ego.lat[1:])
     dt = np.diff(ego.t)
     bad = np.nonzero(d > MAX_TRACK_SPEED_MPS * dt + GPS_ERROR_M)[0]
     if bad.size:
