@@ -23,9 +23,9 @@ from vei_scenario.interpreter import run_scenario  # noqa: E402
 from vei_scenario.safe_xml import parse_xml  # noqa: E402
 
 ESMINI_CONTROLLERS = {
-    "interactiveDriver", "sloppyDriver", "SloppyDriverController", "ACCController", "ALKS_R157SM_Controller",
+    "interactiveDriver", "sloppyDriver", "SloppyDriverController", "ALKS_R157SM_Controller",
     "followGhost", "followReference", "offroadFollower", "NaturalDriver", "SumoController", "sumoController",
-    "externalController", "InteractiveController", "ExternalController", "ALKSController",
+    "externalController", "InteractiveController", "ExternalController",
 }  # fmt: skip
 
 

@@ -552,16 +552,23 @@ class AssignController(Action):
         e = ctx.entities[self.entity]
         e.controllers = {self.controller.name: self.controller}
         e.active = {}
-        activate(e, self.controller, self.lateral, self.longitudinal)
+        activate(e, self.controller, self.lateral, self.longitudinal, ctx)
         self.done = True
 
 
-def activate(e, controller, lateral: bool | None, longitudinal: bool | None) -> None:
+def activate(e, controller, lateral: bool | None, longitudinal: bool | None, ctx) -> None:
+    """Put ``controller`` in charge of the domains flagged True (that it controls), take the ones
+    flagged False from whichever controller had them; the controller hears which it took over."""
+    taken = []
     for domain, flag in (("lateral", lateral), ("longitudinal", longitudinal)):
         if flag is True and domain in controller.domains:
+            if e.active.get(domain) is not controller:
+                taken.append(domain)
             e.active[domain] = controller
         elif flag is False:
             e.active.pop(domain, None)
+    if taken:
+        controller.activated(e, ctx, tuple(taken))
 
 
 class ActivateController(Action):
@@ -579,7 +586,7 @@ class ActivateController(Action):
         ctrl = e.controllers.get(self.ref) if self.ref else list(e.controllers.values())[-1]
         if ctrl is None:
             raise ctx.error(self.el, f"ActivateControllerAction: {self.entity} has no controller {self.ref!r}")
-        activate(e, ctrl, self.lateral, self.longitudinal)
+        activate(e, ctrl, self.lateral, self.longitudinal, ctx)
         self.done = True
 
 

@@ -10,10 +10,10 @@ from __future__ import annotations
 
 import math
 
-from vei_scenario.errors import VeiInputError
 from vei_scenario.interpreter.entities import Entity
 from vei_scenario.interpreter.motion import advance_along, lane_keep
-from vei_scenario.interpreter.positions import ensure_lane
+from vei_scenario.interpreter.positions import ensure_lane, lane_state_at
+from vei_scenario.models.acc import AccParameters, acc_speed, box_gaps, bumper_gap, close_ahead
 from vei_scenario.models.cap import BRAKE, CapParameters, CapState, ThreatView, cap_step, threat_in_corridor
 from vei_scenario.models.rider import recorded_start_speed, rider_route
 from vei_scenario.models.sfm import RIDER_TYPES, SfmParameters, SfmState, sfm_step
@@ -41,6 +41,10 @@ class Controller:
 
     def move(self, e: Entity, ctx, dt: float) -> bool:  # pragma: no cover - interface
         raise NotImplementedError
+
+    def activated(self, e: Entity, ctx, domains: tuple[str, ...]) -> None:
+        """Called when an action activates the controller on ``domains`` of ``e``: most take over from
+        the entity's state when they first move."""
 
 
 class SocialForceController(Controller):
@@ -194,24 +198,125 @@ class CollisionAvoidanceController(Controller):
         return max(0.0, min(self.cruise, v_lead + (gap - desired) / ACC_RELAX_S))
 
 
+class AdaptiveCruiseController(Controller):
+    """esmini's ``ACCController`` (longitudinal) and ``ALKSController`` (the same, keeping the lane
+    offset it has, which is what lane keeping does anyway): follows the nearest road user ahead in its
+    lane at a time gap, else holds its set speed (:mod:`vei_scenario.models.acc`). Properties as in
+    esmini: ``timeGap`` (s), ``setSpeed`` (m/s), ``lateralDist`` (m), ``mode`` (``additive``, the
+    default: the set speed is the speed it has when activated and whatever speed an action gives it
+    later; ``override``: ``setSpeed`` when given)."""
+
+    domains = ("longitudinal",)
+
+    def __init__(self, name, props, el, ctx) -> None:
+        super().__init__(name, props, el, ctx)
+        kind = props.get("esminiController") or name
+        if kind == "ALKSController":
+            self.domains = ("lateral", "longitudinal")
+        values = {}
+        for prop, key, lo, hi in (
+            ("timeGap", "time_gap_s", 0.0, 60.0),
+            ("lateralDist", "lateral_dist_m", 0.0, 100.0),
+            ("setSpeed", "set_speed", 0.0, 1000.0),
+        ):
+            if prop in props:
+                try:
+                    v = float(props[prop])
+                except (TypeError, ValueError):
+                    v = math.nan
+                if not (math.isfinite(v) and lo <= v <= hi):
+                    raise ctx.error(el, f"{kind}: property {prop} must be a number in {lo:g}..{hi:g}")
+                values[key] = v
+        self.given_set_speed = values.pop("set_speed", None)
+        self.params = AccParameters(**values)
+        mode = props.get("mode", "additive")
+        if mode not in ("additive", "override"):
+            raise ctx.error(el, f"{kind}: property mode must be additive or override, not {mode!r}")
+        self.additive = mode == "additive"
+        if props.get("virtual", "false") != "false":
+            raise ctx.error(el, f"{kind}: virtual mode (acceleration reported, not applied) is not supported")
+        self.current: float | None = None  # the speed it commands (m/s)
+        self.set_speed = 0.0
+
+    def activated(self, e: Entity, ctx, domains: tuple[str, ...]) -> None:
+        self.current = e.speed
+        if self.additive or self.given_set_speed is None:
+            self.set_speed = e.speed
+        else:
+            self.set_speed = self.given_set_speed
+        if "lateral" in domains:  # along its lane, whichever way it drives
+            ensure_lane(ctx, e)
+            if e.lane is not None:
+                e.lane.heading = 0.0
+
+    def move(self, e: Entity, ctx, dt: float) -> bool:
+        if self.current is None:
+            self.activated(e, ctx, ())
+        if self.additive and abs(e.speed - self.current) > 1e-3:  # an action set a speed: the set speed now
+            self.set_speed = e.speed  # (overriding, the controller is deaf to speed actions, as in esmini)
+        lim = e.limits
+        v = acc_speed(self.params, self.current, self.set_speed, self._leader(e, ctx), lim.max_accel_mps2,
+                      lim.max_decel_mps2, dt)  # fmt: skip
+        self.current = v
+        e.accel = (v - e.step_speed) / dt
+        e.speed = v
+        if e.follower is None:
+            ensure_lane(ctx, e)
+        if e.lane is not None and e.follower is None:
+            lane_keep(e, v * dt, ctx)
+        else:
+            advance_along(e, v * dt)
+        e.status = "acc"
+        return True
+
+    def _leader(self, e: Entity, ctx) -> tuple[float, float] | None:
+        """(bumper-to-bumper gap, speed) of the road user it follows: the nearest one ahead in its
+        lane within the look-ahead (along the lanes, reference points within ``lateralDist`` across),
+        overridden by one right in front of its box (:func:`~vei_scenario.models.acc.close_ahead`)."""
+        p, net = self.params, ctx.roads
+        here = e.lane if e.lane is not None else (lane_state_at(net, e) if net is not None else None)
+        me = net.project(e.x, e.y) if (net is not None and here is not None) else None
+        limit = p.lookahead_m(self.current, e.limits.max_decel_mps2)
+        best: tuple[float, float] | None = None
+        own_box = e.box()
+        for o in ctx.entities.values():
+            if o is e or o.deleted:
+                continue
+            o = ctx.observed(o.name)
+            if me is not None:
+                there = net.project(o.x, o.y)
+                if there is not None and there.lane is not None and abs(there.t - me.t) < p.lateral_dist_m:
+                    ds = net.distance_along_lane(here.road, here.lane, here.s, here.forward, there, limit)
+                    if ds is not None:
+                        same_way = abs(math.remainder(o.yaw - e.yaw, 2 * math.pi)) < 0.5 * math.pi
+                        gap = bumper_gap(ds, e.length, e.center_x, o.length, o.center_x, same_way)
+                        if 0.0 < gap and (best is None or gap < best[0]):
+                            best = (gap, o.speed)
+                            continue
+            x_gap, y_gap = box_gaps(own_box, o.box())
+            if close_ahead(x_gap, y_gap, o.length, self.current - o.speed):
+                best = (x_gap, o.speed)
+        return best
+
+
 #: Time in which the adaptive cruise closes a gap error (s).
 ACC_RELAX_S = 3.0
 
 CONTROLLERS = {
     "SocialForceModel": SocialForceController,
     "CollisionAvoidancePlanner": CollisionAvoidanceController,
+    "ACCController": AdaptiveCruiseController,
+    "ALKSController": AdaptiveCruiseController,
 }
 
 
 def make_controller(el, ctx) -> Controller:
-    """A runtime controller from a ``<Controller>`` element."""
+    """A runtime controller from a ``<Controller>`` element: the kind its ``esminiController`` property
+    names (esmini's rule), else its name."""
     name = el.get("name", "")
     props = {p.get("name"): p.get("value") for p in el.iterfind("Properties/Property")}
-    cls = CONTROLLERS.get(name)
-    if cls is None:
-        raise VeiInputError(
-            ctx.path,
-            f"line {el.sourceline}",
-            f"controller {name!r} is not supported by vei run (supported: {', '.join(CONTROLLERS)})",
-        )
+    kind = props.get("esminiController") or name
+    cls = CONTROLLERS.get(kind)
+    if cls is None:  # (named in the file it comes from: the scenario, or its controller catalog)
+        raise ctx.error(el, f"controller {kind!r} is not supported by vei run (supported: {', '.join(CONTROLLERS)})")
     return cls(name, props, el, ctx)

@@ -81,6 +81,14 @@ class RunResult:
     road_file: Path | None = None
 
 
+def _drop_done(ctx) -> None:
+    """Take the stepped actions that ended while acting (a one-off distance reached at once, in Init
+    or as an event starts) out of the step loop: nothing updates an Init action once it is done, and
+    a done action acting on would hold its entity (a gap kept that was to be set once)."""
+    if any(a.done for a in ctx.stepping):
+        ctx.stepping[:] = [a for a in ctx.stepping if not a.done]
+
+
 def _entity(obj, ctx, name: str | None = None) -> Entity:
     name = name or obj.get("name")
     if obj.find("CatalogReference") is not None:
@@ -334,6 +342,7 @@ class Simulation:
             a.start(ctx)
         for a in list(ctx.stepping):  # Init actions that act every step act once before t = 0 is logged
             a.step(ctx)
+        _drop_done(ctx)
         for tow, trailer in trailers.hitches(ctx.entities):  # hitched trailers start in line behind their tow
             trailers.place_behind(trailer, tow)
         # the storyboard is evaluated once at t = 0 before t = 0 is logged, with no time passing (as
@@ -344,6 +353,7 @@ class Simulation:
         if running:
             for a in list(ctx.stepping):
                 a.step(ctx)
+            _drop_done(ctx)
             self.storyboard.complete_finished()
         ctx.settling = False
         self._collide(collisions)
@@ -372,6 +382,7 @@ class Simulation:
                     if not a.done:
                         a.update(ctx)
                 pending = [a for a in pending if not a.done]
+                _drop_done(ctx)
             for e in entities:
                 e.step_speed = e.speed
             if ctx.stepping:

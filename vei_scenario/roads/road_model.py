@@ -285,6 +285,30 @@ class RoadNetwork:
                 best, best_key = RoadPoint(road, s, t, lane, dist), key
         return best
 
+    def distance_along_lane(
+        self, road_id: str, lane_id: int, s: float, forward: bool, target: RoadPoint, limit_m: float
+    ) -> float | None:
+        """How far ``target`` lies ahead along the lane a road user in ``lane_id`` at ``s`` drives
+        (``forward``: towards increasing s), on across lane sections and road links as it would drive
+        on (:meth:`next_road`), counted in s; negative when it lies behind on the same road; None when
+        it is not on that lane within ``limit_m``."""
+        road, lane, travelled = self.road(road_id), lane_id, 0.0
+        for _ in range(2 * len(self.roads) + 2):
+            if target.road is road:
+                there = road.lane_on(s, target.s, lane, True) if (target.s >= s) == forward else lane
+                if there == target.lane:
+                    d = travelled + (target.s - s if forward else s - target.s)
+                    return d if d <= limit_m else None
+            travelled += road.length - s if forward else s
+            if travelled > limit_m:
+                return None
+            nxt = self.next_road(road, road.lane_on(s, road.length if forward else 0.0, lane, True), forward)
+            if nxt is None:
+                return None
+            road, lane, forward = nxt
+            s = 0.0 if forward else road.length
+        return None
+
     def next_road(
         self, road: Road, lane_id: int, at_end: bool, prefer: str | None = None
     ) -> tuple[Road, int, bool] | None:
