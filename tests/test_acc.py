@@ -71,14 +71,15 @@ def test_box_gaps_and_the_close_ahead_rule():
 # --- in the interpreter ------------------------------------------------------------------------------
 
 
-def _road(path, lanes: int = 3) -> None:
+def _road(path, lanes: int = 3, curvature: float = 0.0) -> None:
     def lane(i: int) -> str:
         return f'<lane id="{i}" type="driving" level="false"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane>'
 
+    shape = f'<arc curvature="{curvature}"/>' if curvature else "<line/>"
     path.write_text(
         '<?xml version="1.0" encoding="UTF-8"?><OpenDRIVE><header revMajor="1" revMinor="6" name="r" version="1"/>'
         '<road name="r" length="3000" id="0" junction="-1"><link/><planView><geometry s="0" x="0" y="0" hdg="0" '
-        'length="3000"><line/></geometry></planView><lanes><laneSection s="0">'
+        f'length="3000">{shape}</geometry></planView><lanes><laneSection s="0">'
         f"<left>{''.join(lane(i) for i in range(lanes, 0, -1))}</left>"
         '<center><lane id="0" type="none" level="false"/></center>'
         f"<right>{''.join(lane(-i) for i in range(1, lanes + 1))}</right></laneSection></lanes></road></OpenDRIVE>"
@@ -125,11 +126,13 @@ def _scenario(
     stop_s: float = 25.0,
     lane: int = -2,
     entry: str = "Sut",
+    curvature: float = 0.0,
+    offset: float = 0.0,
 ) -> object:
     """Ego and a lead car on a straight three-lane road; the lead starts 2 s ahead (bumper to bumper)
     by a one-off LongitudinalDistanceAction in Init and brakes to a stop at ``lead_brake`` m/s² at 8 s.
     ``controller``: the ego's controller, from a controller catalog (as the ALKS scenarios write it)."""
-    _road(tmp_path / "road.xodr")
+    _road(tmp_path / "road.xodr", curvature=curvature)
     (tmp_path / "controllers").mkdir(exist_ok=True)
     (tmp_path / "controllers" / "controller_catalog.xosc").write_text(
         '<?xml version="1.0"?><OpenSCENARIO><FileHeader revMajor="1" revMinor="3" date="2024-01-01T00:00:00" '
@@ -158,7 +161,7 @@ def _scenario(
 <Entities><ScenarioObject name="Ego">{_car("ego")}{obj_ctrl}</ScenarioObject><ScenarioObject name="Lead">{_car("lead")}</ScenarioObject></Entities>
 <Storyboard><Init><Actions>
 <Private entityRef="Ego"><PrivateAction><TeleportAction><Position><LanePosition roadId="0" laneId="{lane}" offset="0" s="5"/></Position></TeleportAction></PrivateAction>{_speed(f'<AbsoluteTargetSpeed value="{v}"/>')}</Private>
-<Private entityRef="Lead"><PrivateAction><TeleportAction><Position><RelativeLanePosition entityRef="Ego" dLane="0" ds="{2 * v + 5}" offset="0"/></Position></TeleportAction></PrivateAction>
+<Private entityRef="Lead"><PrivateAction><TeleportAction><Position><RelativeLanePosition entityRef="Ego" dLane="0" ds="{2 * v + 5}" offset="{offset}"/></Position></TeleportAction></PrivateAction>
 {_speed('<RelativeTargetSpeed entityRef="Ego" value="0" speedTargetValueType="delta" continuous="false"/>')}
 <PrivateAction><LongitudinalAction><LongitudinalDistanceAction continuous="false" coordinateSystem="entity" displacement="leadingReferencedEntity" timeGap="2.0" entityRef="Ego" freespace="true"/></LongitudinalAction></PrivateAction></Private>
 </Actions></Init>{activate}{ego_events}{_event("brake", "Lead", _speed('<AbsoluteTargetSpeed value="0"/>', "linear", lead_brake, "rate"), "8.0")}
@@ -218,14 +221,18 @@ def test_additive_mode_takes_a_later_speed_action_as_its_set_speed_override_igno
     assert sp.min() > 11.9 and sp[-1] == pytest.approx(12.0)  # down to its own set speed, deaf to the action
 
 
-@pytest.mark.parametrize("brake", ["9.81", "4"])
-def test_the_alks_controller_plays_as_in_esmini(tmp_path, esmini, brake):
+@pytest.mark.parametrize(
+    "brake, curvature, offset",
+    [("9.81", 0.0, 0.0), ("4", 0.0, 0.0), ("6", 0.001, 1.75), ("6", -0.004, -1.0), ("9", 0.004, 1.75)],
+)
+def test_the_alks_controller_plays_as_in_esmini(tmp_path, esmini, brake, curvature, offset):
+    """On straight and curved roads, with the lead off its lane centre up to the lane border (where it
+    still counts as in the ego's lane: it was placed in it)."""
     from vei_scenario.conformance.esmini import compare_runs, run_esmini
 
     # named as the ALKS test scenarios name it, with no esminiController property: esmini goes by the name
-    path = _scenario(
-        tmp_path, '<Controller name="ALKSController"><Properties/></Controller>', brake, entry="ALKSController"
-    )
+    ctrl = '<Controller name="ALKSController"><Properties/></Controller>'
+    path = _scenario(tmp_path, ctrl, brake, entry="ALKSController", curvature=curvature, offset=offset)
     c = compare_runs(run_scenario(path, {}, DT), run_esmini(esmini, path, DT))
     assert c.entities and c.max_deviation_m <= 0.10, c.entities
     assert not c.vei_collisions and not c.esmini_collisions

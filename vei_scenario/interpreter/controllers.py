@@ -18,6 +18,7 @@ from vei_scenario.models.cap import BRAKE, CapParameters, CapState, ThreatView, 
 from vei_scenario.models.rider import recorded_start_speed, rider_route
 from vei_scenario.models.sfm import RIDER_TYPES, SfmParameters, SfmState, sfm_step
 from vei_scenario.models.vehicle import Longitudinal, longitudinal_step
+from vei_scenario.roads.road_model import RoadPoint
 
 
 def threat_view(
@@ -275,7 +276,7 @@ class AdaptiveCruiseController(Controller):
         overridden by one right in front of its box (:func:`~vei_scenario.models.acc.close_ahead`)."""
         p, net = self.params, ctx.roads
         here = e.lane if e.lane is not None else (lane_state_at(net, e) if net is not None else None)
-        me = net.project(e.x, e.y) if (net is not None and here is not None) else None
+        me = _road_point(net, e) if (net is not None and here is not None) else None
         limit = p.lookahead_m(self.current, e.limits.max_decel_mps2)
         best: tuple[float, float] | None = None
         own_box = e.box()
@@ -284,7 +285,7 @@ class AdaptiveCruiseController(Controller):
                 continue
             o = ctx.observed(o.name)
             if me is not None:
-                there = net.project(o.x, o.y)
+                there = _road_point(net, o)
                 if there is not None and there.lane is not None and abs(there.t - me.t) < p.lateral_dist_m:
                     ds = net.distance_along_lane(here.road, here.lane, here.s, here.forward, there, limit)
                     if ds is not None:
@@ -297,6 +298,17 @@ class AdaptiveCruiseController(Controller):
             if close_ahead(x_gap, y_gap, o.length, self.current - o.speed):
                 best = (x_gap, o.speed)
         return best
+
+
+def _road_point(net, e) -> RoadPoint | None:
+    """Where ``e`` is on the road network: from its lane state while it keeps a lane (the lane it was
+    placed in or changed to, as esmini keeps it: a car on a lane border stays in its lane), else, and
+    while it changes lanes (it is in the lane its reference point is in), by projecting its position."""
+    st = e.lane
+    if st is None or e.lateral is not None:
+        return net.project(e.x, e.y)
+    road = net.road(st.road)
+    return RoadPoint(road, st.s, road.lane_center_t(st.s, st.lane) + st.offset, st.lane, 0.0)
 
 
 #: Time in which the adaptive cruise closes a gap error (s).
