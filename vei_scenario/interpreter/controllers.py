@@ -200,9 +200,9 @@ class CollisionAvoidanceController(Controller):
 
 
 class AdaptiveCruiseController(Controller):
-    """esmini's ``ACCController`` (longitudinal) and ``ALKSController`` (the same, keeping the lane
-    offset it has, which is what lane keeping does anyway): follows the nearest road user ahead in its
-    lane at a time gap, else holds its set speed (:mod:`vei_scenario.models.acc`). Properties as in
+    """esmini's ``ACCController`` (longitudinal; ``ALKSController`` is
+    :class:`LaneKeepingCruiseController`): follows the nearest road user ahead in its lane at a time
+    gap, else holds its set speed (:mod:`vei_scenario.models.acc`). Properties as in
     esmini: ``timeGap`` (s), ``setSpeed`` (m/s), ``lateralDist`` (m), ``mode`` (``additive``, the
     default: the set speed is the speed it has when activated and whatever speed an action gives it
     later; ``override``: ``setSpeed`` when given)."""
@@ -212,8 +212,6 @@ class AdaptiveCruiseController(Controller):
     def __init__(self, name, props, el, ctx) -> None:
         super().__init__(name, props, el, ctx)
         kind = props.get("esminiController") or name
-        if kind == "ALKSController":
-            self.domains = ("lateral", "longitudinal")
         values = {}
         for prop, key, lo, hi in (
             ("timeGap", "time_gap_s", 0.0, 60.0),
@@ -236,7 +234,7 @@ class AdaptiveCruiseController(Controller):
         self.additive = mode == "additive"
         if props.get("virtual", "false") != "false":
             raise ctx.error(el, f"{kind}: virtual mode (acceleration reported, not applied) is not supported")
-        self.current: float | None = None  # the speed it commands (m/s)
+        self.current = 0.0  # the speed it commands (m/s), from its activation on
         self.set_speed = 0.0
 
     def activated(self, e: Entity, ctx, domains: tuple[str, ...]) -> None:
@@ -251,8 +249,6 @@ class AdaptiveCruiseController(Controller):
                 e.lane.heading = 0.0
 
     def move(self, e: Entity, ctx, dt: float) -> bool:
-        if self.current is None:
-            self.activated(e, ctx, ())
         if self.additive and abs(e.speed - self.current) > 1e-3:  # an action set a speed: the set speed now
             self.set_speed = e.speed  # (overriding, the controller is deaf to speed actions, as in esmini)
         lim = e.limits
@@ -276,7 +272,8 @@ class AdaptiveCruiseController(Controller):
         overridden by one right in front of its box (:func:`~vei_scenario.models.acc.close_ahead`)."""
         p, net = self.params, ctx.roads
         here = e.lane if e.lane is not None else (lane_state_at(net, e) if net is not None else None)
-        me = _road_point(net, e) if (net is not None and here is not None) else None
+        if here is not None:  # (across the road: the lane's centre and its offset from it)
+            my_t = net.road(here.road).lane_center_t(here.s, here.lane) + here.offset
         limit = p.lookahead_m(self.current, e.limits.max_decel_mps2)
         best: tuple[float, float] | None = None
         own_box = e.box()
@@ -284,9 +281,9 @@ class AdaptiveCruiseController(Controller):
             if o is e or o.deleted:
                 continue
             o = ctx.observed(o.name)
-            if me is not None:
+            if here is not None:
                 there = _road_point(net, o)
-                if there is not None and there.lane is not None and abs(there.t - me.t) < p.lateral_dist_m:
+                if there is not None and there.lane is not None and abs(there.t - my_t) < p.lateral_dist_m:
                     ds = net.distance_along_lane(here.road, here.lane, here.s, here.forward, there, limit)
                     if ds is not None:
                         same_way = abs(math.remainder(o.yaw - e.yaw, 2 * math.pi)) < 0.5 * math.pi
@@ -311,6 +308,13 @@ def _road_point(net, e) -> RoadPoint | None:
     return RoadPoint(road, st.s, road.lane_center_t(st.s, st.lane) + st.offset, st.lane, 0.0)
 
 
+class LaneKeepingCruiseController(AdaptiveCruiseController):
+    """esmini's ``ALKSController``: the adaptive cruise, in charge of the lateral domain too, where it
+    keeps the lane offset it has (lane keeping as the default motion does it)."""
+
+    domains = ("lateral", "longitudinal")
+
+
 #: Time in which the adaptive cruise closes a gap error (s).
 ACC_RELAX_S = 3.0
 
@@ -318,7 +322,7 @@ CONTROLLERS = {
     "SocialForceModel": SocialForceController,
     "CollisionAvoidancePlanner": CollisionAvoidanceController,
     "ACCController": AdaptiveCruiseController,
-    "ALKSController": AdaptiveCruiseController,
+    "ALKSController": LaneKeepingCruiseController,
 }
 
 

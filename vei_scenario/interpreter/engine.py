@@ -81,10 +81,13 @@ class RunResult:
     road_file: Path | None = None
 
 
-def _drop_done(ctx) -> None:
-    """Take the stepped actions that ended while acting (a one-off distance reached at once, in Init
-    or as an event starts) out of the step loop: nothing updates an Init action once it is done, and
-    a done action acting on would hold its entity (a gap kept that was to be set once)."""
+def _act(ctx) -> None:
+    """Let the stepped actions act before the entities move, and take those that ended while acting
+    (a one-off distance reached at once, in Init or as an event starts) out of the step loop: nothing
+    updates an Init action once it is done, and a done action acting on would hold its entity (a gap
+    kept that was to be set once)."""
+    for a in list(ctx.stepping):
+        a.step(ctx)
     if any(a.done for a in ctx.stepping):
         ctx.stepping[:] = [a for a in ctx.stepping if not a.done]
 
@@ -340,9 +343,7 @@ class Simulation:
         ctx.initializing = True
         for a in self.init_actions:
             a.start(ctx)
-        for a in list(ctx.stepping):  # Init actions that act every step act once before t = 0 is logged
-            a.step(ctx)
-        _drop_done(ctx)
+        _act(ctx)  # Init actions that act every step act once before t = 0 is logged
         for tow, trailer in trailers.hitches(ctx.entities):  # hitched trailers start in line behind their tow
             trailers.place_behind(trailer, tow)
         # the storyboard is evaluated once at t = 0 before t = 0 is logged, with no time passing (as
@@ -351,9 +352,7 @@ class Simulation:
         ctx.initializing, ctx.settling = False, True
         running = self.storyboard.step()
         if running:
-            for a in list(ctx.stepping):
-                a.step(ctx)
-            _drop_done(ctx)
+            _act(ctx)
             self.storyboard.complete_finished()
         ctx.settling = False
         self._collide(collisions)
@@ -382,12 +381,10 @@ class Simulation:
                     if not a.done:
                         a.update(ctx)
                 pending = [a for a in pending if not a.done]
-                _drop_done(ctx)
             for e in entities:
                 e.step_speed = e.speed
             if ctx.stepping:
-                for a in list(ctx.stepping):
-                    a.step(ctx)
+                _act(ctx)
             if self.coupling == "jacobi":
                 ctx.snapshot = {n: copy.copy(e) for n, e in ctx.entities.items()}
             for e in entities:
