@@ -258,5 +258,5 @@ def test_bad_controller_properties_are_refused_in_one_line(tmp_path, prop, why):
 
 def test_an_unknown_esmini_controller_is_named_in_the_refusal(tmp_path):
     ctrl = ALKS.replace("ALKSController", "SloppyDriverController")
-    with pytest.raises(VeiInputError, match="'SloppyDriverController' is not supported"):
+    with pytest.raises(VeiInputError, match=r"'SloppyDriverController' \(an esmini model\) is not supported"):
         run_scenario(_scenario(tmp_path, ctrl, "4"), {}, DT)

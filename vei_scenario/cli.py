@@ -144,6 +144,8 @@ def _cmd_run(args: argparse.Namespace) -> int:
         osi=args.osi,
         cfg=MetricConfig(zone_ttc=args.zone_ttc),
     )
+    for w in report.metrics.get("warnings", ()):
+        print(f"vei: warning: {w}", file=sys.stderr)
     print(summary_text(report.metrics))
     for p in report.written:
         print(f"wrote {p}")

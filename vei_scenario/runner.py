@@ -103,7 +103,7 @@ def series_csv(result: RunResult, cfg: MetricConfig) -> str:
 def metrics_document(result: RunResult, cfg: MetricConfig) -> dict:
     """metrics.json: the ego against its threat, plus every contact between any two entities."""
     metrics = compute_metrics(PairSeries.from_run(result), cfg) if result.threat else {}
-    return {
+    doc = {
         "scenario": Path(result.scenario).name,
         "parameters": result.parameters,
         "dt_s": result.dt,
@@ -120,6 +120,9 @@ def metrics_document(result: RunResult, cfg: MetricConfig) -> dict:
             for n, tr in result.traces.items()
         },
     }
+    if result.warnings:  # (only when there are: a run without any writes what it always wrote)
+        doc["warnings"] = list(result.warnings)
+    return doc
 
 
 def _seconds(value, none: str) -> str:

@@ -516,7 +516,7 @@ class FollowTrajectory(Action):
         # the end, a timed one too), as esmini's does. (An entity with one of vei's model controllers
         # — a compiled ego or rider — keeps to what the sweep kernel and the FMUs do; and
         # the roads are only loaded when they are needed.)
-        if self.done and e.follower is not None and not e.controllers and ctx.road_file is not None:
+        if self.done and e.follower is not None and not e.modelled and ctx.road_file is not None:
             if ctx.roads is None:
                 return
             if e.follower.plays_time:
@@ -620,62 +620,57 @@ class TrailerHitching(Action):
         self.done = True
 
 
-class ParameterSet(Action):
-    def __init__(self, name: str, value: str, el, ctx) -> None:
-        if name not in ctx.parameters:
-            raise ctx.error(el, f"ParameterSetAction on undeclared parameter {name!r}")
-        self.name, self.value = name, value
+class StoreAction(Action):
+    """ParameterAction (OpenSCENARIO 1.0/1.1) and VariableAction (1.2): SetAction sets the value,
+    ModifyAction adds to it or multiplies it (AddValue / MultiplyByValue); the result is checked
+    against the declared type (an integer stays an integer: 2 * 1.5 is refused, not rounded).
+    esmini 3.6 sets parameters but does not modify them (it warns and goes on); the standard says
+    what a modification means, and vei does it. A parameter changed here reaches ParameterConditions;
+    the attributes that named it were resolved when the file was loaded (the standard's rule)."""
 
-    def start(self, ctx) -> None:
-        ctx.parameters[self.name] = self.value
-        self.done = True
-
-
-class VariableSet(Action):
-    """VariableAction (OpenSCENARIO 1.2): SetAction sets the value; ModifyAction adds to it or
-    multiplies it (AddValue / MultiplyByValue), the result checked against the variable's type."""
-
-    def __init__(self, el, ctx) -> None:
+    def __init__(self, el, ctx, store: str = "variable") -> None:
         from vei_scenario.safe_xml import float_attribute
 
-        self.name, self.el = (el.get("variableRef") or "").lstrip("$"), el
-        if self.name not in ctx.variables:
-            raise ctx.error(el, f"VariableAction on undeclared variable {self.name!r}")
+        self.store, self.el = store, el
+        values, _ = self._store(ctx)
+        self.name = (el.get(f"{store}Ref") or "").lstrip("$")
+        if self.name not in values:
+            raise ctx.error(el, f"{el.tag} on undeclared {store} {self.name!r}")
         set_el, mod = el.find("SetAction"), el.find("ModifyAction/Rule")
+        rule = first_element(mod) if mod is not None else None
         if set_el is not None:
             self.kind, self.value = "set", set_el.get("value", "")
-        elif (
-            mod is not None
-            and first_element(mod) is not None
-            and first_element(mod).tag in ("AddValue", "MultiplyByValue")
-        ):
-            rule = first_element(mod)
+        elif rule is not None and rule.tag in ("AddValue", "MultiplyByValue"):
             self.kind, self.value = rule.tag, float_attribute(ctx.path, rule, "value")
         else:
-            raise ctx.error(el, "VariableAction needs a SetAction or a ModifyAction with AddValue or MultiplyByValue")
+            raise ctx.error(el, f"{el.tag} needs a SetAction or a ModifyAction with AddValue or MultiplyByValue")
+
+    def _store(self, ctx) -> tuple[dict[str, str], dict[str, str]]:
+        if self.store == "parameter":
+            return ctx.parameters, ctx.parameter_types
+        return ctx.variables, ctx.variable_types
 
     def start(self, ctx) -> None:
         from vei_scenario.interpreter.document import check_type
 
+        values, types = self._store(ctx)
+        type_ = types.get(self.name, "string")
         if self.kind == "set":
             value = self.value
         else:
             try:
-                current = float(ctx.variables[self.name])
+                current = float(values[self.name])
             except ValueError:
-                raise ctx.error(
-                    self.el, f"variable {self.name!r} = {ctx.variables[self.name]!r} is not a number"
-                ) from None
+                problem = f"{self.store} {self.name!r} = {values[self.name]!r} is not a number"
+                raise ctx.error(self.el, problem) from None
             result = current + self.value if self.kind == "AddValue" else current * self.value
             if not math.isfinite(result):
-                raise ctx.error(self.el, f"variable {self.name!r} would become {result}")
-            value = (
-                repr(int(result)) if result.is_integer() and ctx.variable_types[self.name] != "double" else repr(result)
-            )
-        problem = check_type(ctx.variable_types[self.name], value)
+                raise ctx.error(self.el, f"{self.store} {self.name!r} would become {result}")
+            value = repr(int(result)) if result.is_integer() and type_ != "double" else repr(result)
+        problem = check_type(type_, value)
         if problem:
-            raise ctx.error(self.el, f"variable {self.name} = {value!r} {problem}")
-        ctx.variables[self.name] = value
+            raise ctx.error(self.el, f"{self.store} {self.name} = {value!r} {problem}")
+        values[self.name] = value
         self.done = True
 
 
@@ -765,6 +760,14 @@ def private_actions(pa, entity: str, ctx) -> list[Action]:
                 out.append(AssignController(entity, sub, ctx))
             elif sub.tag == "ActivateControllerAction":
                 out.append(ActivateController(entity, sub, ctx))
+            elif sub.tag == "OverrideControllerValueAction":
+                # Overrides switched off (active false, as scenarios write when they hand the car to
+                # its controller) change nothing: vei never applies one. One switched on is refused.
+                on = next((o for o in sub if isinstance(o.tag, str) and o.get("active") in ("true", "1")), None)
+                if on is not None:
+                    reason = f"OverrideControllerValueAction: an active <{on.tag}> override is not supported by vei run"
+                    raise ctx.error(on, reason)
+                out.append(Ignored())
             else:
                 raise ctx.error(sub, f"<{sub.tag}> is not supported by vei run")
         return out
@@ -779,12 +782,10 @@ def private_actions(pa, entity: str, ctx) -> list[Action]:
 
 def global_actions(ga, ctx) -> list[Action]:
     kind = first_element(ga)
-    if kind is not None and kind.tag == "ParameterAction" and kind.find("SetAction") is not None:  # 1.0
-        return [ParameterSet(kind.get("parameterRef"), kind.find("SetAction").get("value"), kind, ctx)]
-    if kind is not None and kind.tag == "ParameterSetAction":
-        return [ParameterSet(kind.get("parameterRef"), kind.get("value"), kind, ctx)]
+    if kind is not None and kind.tag == "ParameterAction":  # (1.0, 1.1; deprecated in 1.2)
+        return [StoreAction(kind, ctx, "parameter")]
     if kind is not None and kind.tag == "VariableAction":
-        return [VariableSet(kind, ctx)]
+        return [StoreAction(kind, ctx, "variable")]
     state = ga.find("InfrastructureAction/TrafficSignalAction/TrafficSignalStateAction")
     if state is not None:  # signal states: for TrafficSignalConditions (no default driver obeys them)
         return [SignalState(state.get("name"), state.get("state"))]

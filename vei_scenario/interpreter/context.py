@@ -34,8 +34,13 @@ class Context:
     #: OpenSCENARIO 1.2 variables: name -> current value (text), and their declared types
     variables: dict[str, str] = field(default_factory=dict)
     variable_types: dict[str, str] = field(default_factory=dict)
+    #: the declared types of the top-level parameters (ParameterAction checks what it sets against them)
+    parameter_types: dict[str, str] = field(default_factory=dict)
     #: storyboard transitions so far (a step without any leaves the triggers it evaluated in place)
     transitions: int = 0
+    #: What the run played differently from what the file asks, in the words of :meth:`warn` (a
+    #: controller vei has no model for, played as the default controller as esmini plays it).
+    warnings: list[str] = field(default_factory=list)
 
     @property
     def roads(self):
@@ -59,3 +64,12 @@ class Context:
         from vei_scenario.interpreter.document import source_of
 
         return VeiInputError(source_of(el, self.path), f"line {el.sourceline}", reason)
+
+    def warn(self, el, reason: str) -> None:
+        """Note, once, something the run plays in its own way, naming ``el``'s file and line as
+        :meth:`error` does."""
+        from vei_scenario.interpreter.document import source_of
+
+        line = f"{source_of(el, self.path)}: line {el.sourceline}: {reason}"
+        if line not in self.warnings:
+            self.warnings.append(line)

@@ -326,13 +326,41 @@ CONTROLLERS = {
 }
 
 
+class DefaultController(Controller):
+    """A controller that names no model, neither vei's nor esmini's: a description of the driver (the
+    ASAM example scenarios give their cars ``HAF_Driver`` and ``Default_Driver`` with weight, age and
+    eye distance) or a model of a tool vei does not know. The entity keeps the default controller, the
+    one esmini falls back to for a controller type it does not know; the run says so in a warning.
+    It takes no domain, so activating it changes nothing."""
+
+    domains = ()
+
+
+#: The controller types esmini 3.6 has models of that vei does not: a scenario that names one is
+#: refused, since esmini would drive its entity by that model (measured: esmini falls back to the
+#: default controller for any other name). SumoController: esmini built with SUMO.
+ESMINI_ONLY = frozenset(
+    {
+        "ALKS_R157SM_Controller", "ControllerRel2Abs", "ECE_ALKS_RefDriverController", "ExternalController",
+        "FollowGhostController", "FollowReferenceController", "FollowRouteController", "HIDController",
+        "InteractiveController", "LoomingController", "NaturalDriver", "OffroadFollower", "SloppyDriverController",
+        "SumoController", "UDPDriverController",
+    }
+)  # fmt: skip
+
+
 def make_controller(el, ctx) -> Controller:
     """A runtime controller from a ``<Controller>`` element: the kind its ``esminiController`` property
-    names (esmini's rule), else its name."""
+    names (esmini's rule), else its name. One of esmini's own models vei lacks is refused; any other
+    name is the default controller, with a warning (:class:`DefaultController`)."""
     name = el.get("name", "")
     props = {p.get("name"): p.get("value") for p in el.iterfind("Properties/Property")}
     kind = props.get("esminiController") or name
     cls = CONTROLLERS.get(kind)
-    if cls is None:  # (named in the file it comes from: the scenario, or its controller catalog)
-        raise ctx.error(el, f"controller {kind!r} is not supported by vei run (supported: {', '.join(CONTROLLERS)})")
+    if cls is None and kind in ESMINI_ONLY:  # (named in the file it comes from: the scenario, or its catalog)
+        known = ", ".join(CONTROLLERS)
+        raise ctx.error(el, f"controller {kind!r} (an esmini model) is not supported by vei run (supported: {known})")
+    if cls is None:
+        ctx.warn(el, f"controller {kind!r} names no model vei run has: it plays as the default controller (esmini's)")
+        return DefaultController(name, props, el, ctx)
     return cls(name, props, el, ctx)

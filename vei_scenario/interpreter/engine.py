@@ -79,6 +79,8 @@ class RunResult:
     threat: str | None
     end_reason: str = ""
     road_file: Path | None = None
+    #: What the run played in its own way (Context.warn): file, line, reason, once each.
+    warnings: tuple[str, ...] = ()
 
 
 def _act(ctx) -> None:
@@ -209,6 +211,7 @@ class Simulation:
         self.ctx = Context(doc.path, 0.0, dt, 0, {}, dict(doc.parameters))
         ctx = self.ctx
         ctx.road_file = doc.road_file
+        ctx.parameter_types = dict(doc.parameter_types)
         _declare_variables(root, ctx)
         for sel in root.iter("EntitySelection"):
             raise ctx.error(sel, "entity selections are not supported by vei run")
@@ -322,7 +325,7 @@ class Simulation:
             lane_keep(e, ds, ctx)
             if before is not None and before == _parked(e):  # a standing step that changed nothing
                 e.parked = before
-        elif f is not None and f.s + abs(ds) > f.polyline.length and (ds < 0) == f.reverse and not e.controllers:
+        elif f is not None and f.s + abs(ds) > f.polyline.length and (ds < 0) == f.reverse and not e.modelled:
             # on past the end (esmini)
             over = math.copysign(f.s + abs(ds) - f.polyline.length, ds)
             advance_along(e, ds - over)
@@ -428,6 +431,7 @@ class Simulation:
             self.threat,
             reason,
             self.doc.road_file,
+            tuple(ctx.warnings),
         )
 
     def _collide(self, collisions: list) -> None:

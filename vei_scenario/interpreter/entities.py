@@ -201,6 +201,13 @@ class Entity:
             old.stop(ctx)
             old.done = True
 
+    @property
+    def modelled(self) -> bool:
+        """Whether a controller with a model of its own is assigned (one that can take a domain): a
+        controller vei plays as the default one (controllers.DefaultController) leaves the entity as
+        if it had none."""
+        return any(c.domains for c in self.controllers.values())
+
     def box(self) -> tuple[float, float, float, float, float]:
         """(centre x, centre y, yaw, length, width) of the bounding box (the collision check reads the
         same from every entity at once in C: core_module.c's entity_boxes)."""

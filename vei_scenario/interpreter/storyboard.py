@@ -11,7 +11,7 @@ from __future__ import annotations
 import bisect
 from collections import deque
 
-from vei_scenario.interpreter.actions import ParameterSet, SignalState, VariableSet, global_actions, private_actions
+from vei_scenario.interpreter.actions import SignalState, StoreAction, global_actions, private_actions
 from vei_scenario.interpreter.clock import count_at_or_before, step_time, step_times
 from vei_scenario.interpreter.conditions import ENTITY_CONDITIONS, RULES, VALUE_CONDITIONS, known_entity
 from vei_scenario.interpreter.context import Context
@@ -20,7 +20,7 @@ from vei_scenario.safe_xml import first_element
 STANDBY, RUNNING, COMPLETE = "standby", "running", "complete"
 
 #: Actions that only set values: an event of them starts at once, so what follows in the step sees them.
-VALUE_ACTIONS = (SignalState, VariableSet, ParameterSet)
+VALUE_ACTIONS = (SignalState, StoreAction)
 
 
 class ConditionRunner:
