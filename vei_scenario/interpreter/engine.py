@@ -27,6 +27,7 @@ from vei_scenario.interpreter.controllers import make_controller
 from vei_scenario.interpreter.cruise import Offers, cruise
 from vei_scenario.interpreter.document import ScenarioDocument
 from vei_scenario.interpreter.entities import Entity
+from vei_scenario.interpreter.init_order import init_order
 from vei_scenario.interpreter.motion import advance_along, lane_keep
 from vei_scenario.interpreter.positions import ensure_lane
 from vei_scenario.interpreter.recording import Recording
@@ -240,12 +241,14 @@ class Simulation:
                 ctx.entities[obj.get("name")].controllers[c.name] = c
 
         self.init_actions = []
+        privates = []
         for private in root.iterfind("Storyboard/Init/Actions/Private"):
             name = private.get("entityRef")
             if name not in ctx.entities:
                 raise ctx.error(private, f"Init: no entity named {name!r}")
-            for pa in private.iterfind("PrivateAction"):
-                self.init_actions.extend(private_actions(pa, name, ctx))
+            privates += ((name, pa) for pa in private.iterfind("PrivateAction"))
+        for name, pa in init_order(privates, ctx.entities, ctx.warn):  # (what an action reads is set first)
+            self.init_actions.extend(private_actions(pa, name, ctx))
         for ga in root.iterfind("Storyboard/Init/Actions/GlobalAction"):
             self.init_actions.extend(global_actions(ga, ctx))
         for ua in root.iterfind("Storyboard/Init/Actions/UserDefinedAction"):

@@ -126,7 +126,10 @@ def lane_pose(ctx, el, road_id: str, lane_id: int, s: float, offset: float, forw
         road = net.road(road_id)
         t = road.lane_center_t(s, lane_id) + offset
     except KeyError as exc:
-        raise ctx.error(el, f"<{el.tag}>: {exc.args[0] if exc.args else exc}") from None
+        why = exc.args[0] if exc.args else exc
+        if isinstance(why, int):  # (the core names the lane it lacks by its id alone)
+            why = f"road {road_id} has no lane {why} at s = {s:g}"
+        raise ctx.error(el, f"<{el.tag}>: {why}") from None
     x, y, h = road.world(s, t)
     forward = road.drives_forward(lane_id) if forward is None else forward
     drive_h = wrap_angle(oriented(el, h if forward else h + math.pi))
@@ -237,7 +240,10 @@ def resolve(ctx, pos) -> Pose:
     if tag in ("RelativeLanePosition", "RelativeRoadPosition"):
         e, st = entity_lane(ctx, el, el.get("entityRef"))
         road = _network(ctx, el).road(st.road)
-        forward = st.forward  # "ahead" and "left" as the reference entity drives
+        # along the road's reference line and by lane ids, whichever way the reference entity heads:
+        # esmini 3.6 reads it so for entities in either lane direction, facing either way
+        # (tests/test_init_order.py); the position heads along the road unless it has an Orientation
+        forward = True
         if tag == "RelativeRoadPosition":
             s = st.s + number(el, "ds")
             t = road.lane_center_t(st.s, st.lane) + st.offset + number(el, "dt")
