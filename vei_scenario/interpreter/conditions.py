@@ -161,7 +161,7 @@ class StoryboardElementState(Condition):
         self.el = el
         if not self.state:
             raise ctx.error(el, "StoryboardElementStateCondition needs a state")
-        #: a state (standbyState ...: the element is in it) or else a transition (it happened last step)
+        #: a state (standbyState ...: the element is in it) or else a transition (Element.mark: when and where)
         self.in_state = self.state[: -len("State")] if self.state.endswith("State") else None
         self.target = None  # the element, found on the first test (the storyboard is built by then)
 
@@ -173,7 +173,14 @@ class StoryboardElementState(Condition):
                 raise ctx.error(self.el, f"StoryboardElementStateCondition: no {self.key[0]} named {self.key[1]!r}")
         if self.in_state is not None:
             return target.state == self.in_state
-        return target.transitions.get(self.state, -10) >= ctx.step - 1
+        seen = target.transitions.get(self.state)
+        if seen is None:
+            return False
+        # seen once (esmini steps the storyboard in document order): in the step it happened by the
+        # triggers after the element, in the next step by those before it (an end found after the
+        # entities moved stands after every trigger: all see it in the next step)
+        step, where = seen
+        return (step == ctx.step and where < ctx.position) or (step == ctx.step - 1 and ctx.position <= where)
 
     def steady_steps(self, ctx: Context, bounds) -> int:
         """A state holds while nothing starts or ends; a transition is seen for one step only."""

@@ -3,6 +3,7 @@ variables, the storyboard's elements, collisions, the road network (loaded on fi
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 from vei_scenario.errors import VeiInputError
@@ -38,6 +39,10 @@ class Context:
     parameter_types: dict[str, str] = field(default_factory=dict)
     #: storyboard transitions so far (a step without any leaves the triggers it evaluated in place)
     transitions: int = 0
+    #: Where in the storyboard's order the trigger being evaluated stands (its element's place in the
+    #: document; inf after the trigger pass): a transition is seen by the triggers after it in the
+    #: step it happens, by those before it in the next (storyboard.Element.mark).
+    position: float = math.inf
     #: What the run played differently from what the file asks, in the words of :meth:`warn` (a
     #: controller vei has no model for, played as the default controller as esmini plays it).
     warnings: list[str] = field(default_factory=list)

@@ -9,6 +9,7 @@ through the small interface of :mod:`vei_scenario.interpreter.action_base`.
 from __future__ import annotations
 
 import bisect
+import math
 from collections import deque
 
 from vei_scenario.interpreter.actions import SignalState, StoreAction, global_actions, private_actions
@@ -257,7 +258,9 @@ class Element:
         self.kind, self.name, self.el = kind, el.get("name", ""), el
         self.state = STANDBY
         self.children = children or []
-        self.transitions: dict[str, int] = {}
+        #: transition -> (step, storyboard position) of its last happening (Context.position)
+        self.transitions: dict[str, tuple[int, float]] = {}
+        self.order = 0  # its place in the document (Storyboard numbers its elements)
         self.max_executions = int(el.get("maximumExecutionCount", "1"))
         self.executions = 0
         start, stop = el.find("StartTrigger"), el.find("StopTrigger")
@@ -277,7 +280,7 @@ class Element:
             ctx.elements.setdefault((k, f"{self.name}::{q}"), d)
 
     def mark(self, transition: str, ctx: Context) -> None:
-        self.transitions[transition] = ctx.step
+        self.transitions[transition] = (ctx.step, ctx.position)
         ctx.transitions += 1
 
     def start(self, ctx: Context) -> None:
@@ -307,6 +310,13 @@ class Storyboard:
         stop = board.find("StopTrigger")
         self.stop_trigger = Trigger(stop, ctx) if stop is not None else None
         self.stories = [self._story(s) for s in board.iterfind("Story")]
+        order = 0
+        pending = list(reversed(self.stories))
+        while pending:  # (numbered in document order: a story, its first act, ..., its first event ...)
+            element = pending.pop()
+            order += 1
+            element.order = order
+            pending.extend(reversed(element.children))
 
     @property
     def complete(self) -> bool:
@@ -402,32 +412,42 @@ class Storyboard:
         return action
 
     # --- running ------------------------------------------------------------------------------------
-    def _start_event(self, ev: Element, running: list[Element]) -> None:
+    def _start_event(self, ev: Element, running: list[Element]) -> bool:
+        """The event's start as storyboard states (the transitions happen here, where the event
+        stands); False when it is skipped. Its actions act when :meth:`_act_event` starts them."""
         ctx = self.ctx
         if ev.priority == "skip" and running:
             ev.mark("skipTransition", ctx)
-            return
+            return False
         if ev.priority in ("override", "overwrite"):
             for r in running:
                 r.complete(ctx, "stopTransition")
         ev.start(ctx)
         for a in ev.children:
             a.start(ctx)
+        return True
+
+    def _act_event(self, ev: Element) -> None:
+        for a in ev.children:
             for act in a.actions:
-                act.start(ctx)
+                act.start(self.ctx)
 
     def step(self) -> bool:
         """Advance states; False when the storyboard has ended."""
         ctx = self.ctx
+        ctx.position = -1.0  # (the storyboard's own stop trigger is evaluated first)
         if self.stop_trigger is not None and self.stop_trigger.evaluate(ctx):
+            ctx.position = math.inf
             return False
-        starting: list[tuple[Element, list[Element]]] = []
+        starting: list[Element] = []
         for story in self.stories:
             if story.state == STANDBY:
+                ctx.position = story.order
                 story.start(ctx)
             if story.state != RUNNING:
                 continue
             for act in story.children:
+                ctx.position = act.order
                 if act.state == STANDBY and (act.start_trigger is None or act.start_trigger.evaluate(ctx)):
                     act.start(ctx)
                     for g in act.children:
@@ -445,18 +465,24 @@ class Storyboard:
                             continue
                         running = None  # the maneuver's running events before any of its events starts
                         for ev in m.children:
+                            ctx.position = ev.order
                             if ev.state == STANDBY and (ev.start_trigger is None or ev.start_trigger.evaluate(ctx)):
                                 if running is None:
                                     running = [e for e in m.children if e.state == RUNNING]
                                 others = [r for r in running if r is not ev]
+                                # the states change at once (a trigger after it in this step sees the
+                                # event start, as in esmini); its actions act after all triggers
+                                if not self._start_event(ev, others):
+                                    continue
                                 if all(isinstance(x, VALUE_ACTIONS) for a in ev.children for x in a.actions):
-                                    self._start_event(ev, others)  # a value set is seen by what follows
+                                    self._act_event(ev)  # a value set is seen by what follows
                                 else:
-                                    starting.append((ev, others))
-        # every trigger sees the same state: events start after all were evaluated (a teleport started
+                                    starting.append(ev)
+        ctx.position = math.inf
+        # every trigger sees the same world: actions act after all were evaluated (a teleport started
         # by one event must not hide the condition that starts another)
-        for ev, others in starting:
-            self._start_event(ev, others)
+        for ev in starting:
+            self._act_event(ev)
         return True
 
     def complete_finished(self) -> None:
