@@ -7,6 +7,7 @@ README lists what each supports; anything else is refused with its line.
 
 from __future__ import annotations
 
+import bisect
 import math
 
 from vei_scenario.core import row as core_row
@@ -454,6 +455,19 @@ class Speed(Action):
         return base + value if vtype == "delta" else base * value
 
 
+def _time_at_s(polyline, s: float) -> float:
+    """The time a timed polyline passes arc length ``s`` (its vertex times, linear between them; the
+    last vertex's time past its end)."""
+    arcs, times = polyline.s, polyline.ts
+    k = bisect.bisect_right(arcs, s) - 1
+    if k >= len(arcs) - 1:
+        return times[-1]
+    if k < 0:
+        return times[0]
+    span = arcs[k + 1] - arcs[k]
+    return times[k] if span <= 0.0 else times[k] + (times[k + 1] - times[k]) * (s - arcs[k]) / span
+
+
 class FollowTrajectory(Action):
     def __init__(self, entity: str, el, ctx) -> None:
         self.entity = entity
@@ -490,7 +504,13 @@ class FollowTrajectory(Action):
         e = ctx.entities[self.entity]
         if self.polyline.xs is None:
             self.polyline = polyline_from(self.traj, ctx, entity=self.entity)
-        e.follower = PathFollower(self.polyline, self.timing, self.mode, ctx.t, self.initial_s)
+        timing = self.timing
+        if timing is not None and self.initial_s > 0.0 and self.polyline.timed:
+            # a timed path entered initialDistanceOffset metres in is entered at that point's time
+            # too (the standard; esmini): every later vertex is reached that much sooner
+            shift = _time_at_s(self.polyline, self.initial_s) - self.polyline.ts[0]
+            timing = (timing[0], timing[1], timing[2] + shift)
+        e.follower = PathFollower(self.polyline, timing, self.mode, ctx.t, self.initial_s)
         e.follower.reverse = self.timing is None and e.speed < 0.0
         if self.timing is None and (ctx.initializing or ctx.settling):  # on its path at t = 0 (esmini)
             e.follower.s = self.initial_s
