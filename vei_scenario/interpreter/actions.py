@@ -84,6 +84,11 @@ class LaneChangeRuntime:
         self.prev_xy: tuple[float, float] | None = None  # where the entity was a step ago
         self.start_rel: float | None = None  # its start, from the target lane's centre
 
+    def pause(self, dt: float) -> None:
+        """A step in which the transition does not progress (its road user stands): one over time
+        ends that much later; one over distance waits for the road user anyway."""
+        self.t0 += dt
+
     def progress(self, e, ctx) -> float:
         if self.value <= 0 or self.shape == "step":
             return 1.0

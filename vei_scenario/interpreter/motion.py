@@ -26,6 +26,11 @@ def lane_keep(e, ds: float, ctx) -> None:
     junctions, with a running lane change shifting it sideways."""
     net = ctx.roads
     st = e.lane
+    if ds == 0.0 and e.lateral is not None and e.lateral.projects_step:
+        # a lane change pauses while the car stands: it cannot move sideways without moving on, and
+        # keeps the heading it had (esmini 3.6: measured, a car braking to a stop mid-change)
+        e.lateral.pause(ctx.dt)
+        return
     road = net.road(st.road)
     forward = st.forward
     if e.lateral is None:  # most steps: on along the same road, in one call of the core

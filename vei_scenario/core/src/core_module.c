@@ -1250,6 +1250,8 @@ static int cruise_move(PyObject *way, const double *e, double t, double max_turn
         next[CR_X] = e[CR_X] + ds * c;
         next[CR_Y] = e[CR_Y] + ds * s;
     } else if (mode == MODE_LANE && e[CR_LATERAL] != 0.0) {
+        /* a lane change paused by a standstill (motion.lane_keep: it waits, its clock shifted) is the interpreter's */
+        if (fabs(speed) < 1e-9 && e[CR_LAT_PROJECTS] != 0.0) return 0;
         if (!lateral_step(&((RoadObject *)way)->r, e, t, ds, dt, next) || fabs(next[CR_S] - e[CR_S]) > e[CR_MAX_DS]) return 0;
     } else if (mode == MODE_LANE) {
         int lane = (int)e[CR_LANE], lane1, forward = e[CR_FORWARD] != 0.0;
