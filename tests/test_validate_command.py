@@ -34,7 +34,8 @@ def test_clean_files_exit_0(scenario_dir, capsys, qc_venv):
 
 RULE_CASES = {
     "parameter.undeclared": ('offset="${-$TimeShift}"', 'offset="${-$Shift2}"'),
-    "trajectory.vertex-time": ('<Vertex time="0.1">', '<Vertex time="0.0">'),
+    # (on the scooter's timed path: the ego's is followed without a Timing, its times are not read)
+    "trajectory.vertex-time": ('<Trajectory name="scooter_1_route"', '<Vertex time="1.8">', '<Vertex time="1.7">'),
     "reference.dangling": ('<EntityRef entityRef="scooter_1"/>', '<EntityRef entityRef="scooter_7"/>'),
     "file.missing": ('<LogicFile filepath="scenario.xodr"/>', '<LogicFile filepath="missing.xodr"/>'),
 }
@@ -42,16 +43,18 @@ RULE_CASES = {
 
 @pytest.mark.parametrize("rule", sorted(RULE_CASES))
 def test_each_rule_reports_file_line_and_reason(scenario_dir, capsys, qc_venv, rule):
-    old, new = RULE_CASES[rule]
+    *anchor, old, new = RULE_CASES[rule]
     path = scenario_dir / "scenario.xosc"
     text = path.read_text()
-    assert old in text
-    path.write_text(text.replace(old, new, 1))
+    at = text.index(anchor[0]) if anchor else 0  # (the first occurrence after the anchor)
+    assert old in text[at:]
+    where = text.index(old, at)
+    path.write_text(text[:where] + new + text[where + len(old) :])
     code, out = _validate(capsys, path)
     assert code == 1
     hits = [ln for ln in out.splitlines() if f"[{rule}]" in ln]
     assert hits, out
-    assert hits[0].startswith(f"{path}:{_line_of(text, old)}: ")
+    assert hits[0].startswith(f"{path}:{text[:where].count(chr(10)) + 1}: ")
 
 
 def test_distribution_naming_an_unknown_parameter(scenario_dir, capsys, qc_venv):
@@ -119,3 +122,53 @@ def test_missing_schemas_are_a_clear_user_error(scenario_dir, capsys, monkeypatc
         assert code == 2 and "no OpenSCENARIO schema found" in err and "asam-qc-openscenarioxml" in err
     finally:
         asam_schemas.schema_dir.cache_clear()
+
+
+def test_what_players_do_not_need_is_not_a_problem(scenario_dir, capsys, qc_venv):
+    """A missing 3D model (SceneGraphFile), a catalog parameter assigned by name, a declared name with
+    esmini's leading $, esmini's qualified element reference, the times of a path followed untimed:
+    none stops a run (vei's or esmini's), so none fails the check; a road file given by a parameter
+    that names a missing file does."""
+    path = scenario_dir / "scenario.xosc"
+    text = path.read_text()
+    assert "<RoadNetwork>" in text and "</Storyboard>" in text
+    logic_end = text.index("/>", text.index("<LogicFile")) + 2
+    text = text[:logic_end] + '<SceneGraphFile filepath="models/absent.osgb"/>' + text[logic_end:]
+    text = text.replace(
+        "<ParameterDeclarations>",
+        '<ParameterDeclarations><ParameterDeclaration name="$owner" parameterType="string" value="x"/>',
+        1,
+    )
+    path.write_text(text)
+    code, out = _validate(capsys, path)
+    assert code == 0, out
+    # a road given by a parameter whose value names no file
+    start = text.index("<LogicFile")
+    end = text.index("/>", start) + 2
+    text = text[:start] + '<LogicFile filepath="$Road"/>' + text[end:]
+    text = text.replace(
+        "<ParameterDeclarations>",
+        '<ParameterDeclarations><ParameterDeclaration name="Road" parameterType="string" value="gone.xodr"/>',
+        1,
+    )
+    path.write_text(text)
+    code, out = _validate(capsys, path)
+    assert code == 1 and "[file.missing]" in out and "(gone.xodr)" in out, out
+
+
+def test_a_catalogs_entity_references_are_the_using_scenarios(tmp_path, capsys, qc_venv):
+    """A maneuver catalog names the entities of the scenarios that use it: not dangling in the file."""
+    path = tmp_path / "maneuvers.xosc"
+    path.write_text(
+        '<?xml version="1.0"?><OpenSCENARIO><FileHeader revMajor="1" revMinor="1" date="2024-01-01T00:00:00" '
+        'description="c" author="t"/><Catalog name="ManeuverCatalog"><Maneuver name="brake"><Event name="e" '
+        'priority="overwrite"><Action name="a"><PrivateAction><LongitudinalAction><SpeedAction><SpeedActionDynamics '
+        'dynamicsShape="step" value="0" dynamicsDimension="time"/><SpeedActionTarget><AbsoluteTargetSpeed value="0"/>'
+        "</SpeedActionTarget></SpeedAction></LongitudinalAction></PrivateAction></Action><StartTrigger><ConditionGroup>"
+        '<Condition name="c" delay="0" conditionEdge="rising"><ByEntityCondition><TriggeringEntities '
+        'triggeringEntitiesRule="any"><EntityRef entityRef="Ego"/></TriggeringEntities><EntityCondition>'
+        '<SpeedCondition value="10" rule="greaterThan"/></EntityCondition></ByEntityCondition></Condition>'
+        "</ConditionGroup></StartTrigger></Event></Maneuver></Catalog></OpenSCENARIO>"
+    )
+    code, out = _validate(capsys, path)
+    assert code == 0, out

@@ -5,7 +5,8 @@ wrong; an empty list means valid. The VEI rules cover what a runnable scenario n
 Quality Checker does not flag:
 
 * ``parameter.undeclared``: a ``$Name`` (or a name inside ``${...}``) that no declaration provides;
-* ``file.missing``: a ``LogicFile``/``SceneGraphFile``/``ScenarioFile`` that does not exist;
+* ``file.missing``: a ``LogicFile``/``ScenarioFile`` that does not exist (a path given by a parameter at
+  its declared value; a ``SceneGraphFile``, a 3D model for viewers, is not needed to run);
 * ``trajectory.vertex-time``: polyline vertex times that do not strictly increase;
 * ``distribution.unknown-parameter``: a distribution varying a parameter its scenario does not declare,
   or a value that does not fit the declared type;
@@ -81,11 +82,17 @@ def _xsd_problems(path: Path, tree, kind: str, minor: int, problems: list[Proble
 
 
 def _declared(root) -> dict[str, tuple[str, str]]:
+    """Declared names (a leading ``$`` dropped, as the players read ``name="$owner"``)."""
     return {
-        d.get("name"): (d.get("parameterType", ""), d.get("value", ""))
+        d.get("name").lstrip("$"): (d.get("parameterType", ""), d.get("value", ""))
         for d in root.iter("ParameterDeclaration", "VariableDeclaration")
         if d.get("name")
     }
+
+
+#: Attributes that name a parameter rather than use its value: a catalog entry's parameter (declared in
+#: the catalog, not here) and the declarations themselves.
+_NAMING = {("ParameterAssignment", "parameterRef"), ("ParameterDeclaration", "name"), ("VariableDeclaration", "name")}
 
 
 def _parameter_problems(path: Path, root, problems: list[Problem]) -> None:
@@ -94,7 +101,7 @@ def _parameter_problems(path: Path, root, problems: list[Problem]) -> None:
         if not isinstance(el.tag, str):
             continue
         for attr, value in el.attrib.items():
-            if "$" not in value:
+            if "$" not in value or (el.tag, attr) in _NAMING:
                 continue
             names = []
             m = _PARAM_REF.match(value)
@@ -115,9 +122,19 @@ def _parameter_problems(path: Path, root, problems: list[Problem]) -> None:
 
 
 def _file_problems(path: Path, root, problems: list[Problem]) -> None:
-    for tag in ("LogicFile", "SceneGraphFile", "ScenarioFile"):
+    """The files a run needs: the road network and a distribution's scenario. (A SceneGraphFile is a
+    3D model for viewers: players run without it, and scenarios are often shared without theirs.)
+    A path given by a top-level parameter (``$Road_Logics``) is checked at its declared value."""
+    declared = {
+        (d.get("name") or "").lstrip("$"): d.get("value", "")
+        for d in root.iterfind("ParameterDeclarations/ParameterDeclaration")
+    }
+    for tag in ("LogicFile", "ScenarioFile"):
         for el in root.iter(tag):
             ref = el.get("filepath", "")
+            m = _PARAM_REF.match(ref)
+            if m and m.group(2) and m.group(2) in declared:  # (an undeclared one is reported as such)
+                ref = declared[m.group(2)]
             if not ref or "$" in ref:
                 continue
             if not (path.parent / ref).is_file():
@@ -126,13 +143,20 @@ def _file_problems(path: Path, root, problems: list[Problem]) -> None:
                         str(path),
                         el.sourceline,
                         "file.missing",
-                        f'<{tag} filepath="{ref}">: no such file next to {path.name}',
+                        f'<{tag} filepath="{el.get("filepath")}">: no such file next to {path.name}'
+                        + (f" ({ref})" if ref != el.get("filepath") else ""),
                     )
                 )
 
 
 def _vertex_problems(path: Path, root, problems: list[Problem]) -> None:
+    """Vertex times that do not increase, on a path played by its times: not on one a
+    FollowTrajectoryAction follows without a Timing (its times are not read: esmini's
+    pedestrian_collision gives every vertex time 0)."""
     for poly in root.iter("Polyline"):
+        follow = next(poly.iterancestors("FollowTrajectoryAction"), None)
+        if follow is not None and follow.find("TimeReference/Timing") is None:
+            continue
         last = None
         for v in poly.iterfind("Vertex"):
             t = v.get("time")
@@ -155,6 +179,8 @@ def _vertex_problems(path: Path, root, problems: list[Problem]) -> None:
 
 
 def _reference_problems(path: Path, root, problems: list[Problem]) -> None:
+    if root.find("Catalog") is not None:  # a catalog's entries name the entities of the scenarios using it
+        return
     entities = {o.get("name") for o in root.iter("ScenarioObject", "EntitySelection")}
     for el in root.iter():
         if not isinstance(el.tag, str):
@@ -177,7 +203,7 @@ def _reference_problems(path: Path, root, problems: list[Problem]) -> None:
     for cond in root.iter("StoryboardElementStateCondition"):
         kind = STORYBOARD_ELEMENT_TYPES.get(cond.get("storyboardElementType", ""))
         ref = cond.get("storyboardElementRef", "")
-        if kind and ref and "$" not in ref and ref not in elements[kind]:
+        if kind and ref and "$" not in ref and ref not in elements[kind] and not _qualified(root, kind, ref):
             problems.append(
                 Problem(
                     str(path),
@@ -186,6 +212,25 @@ def _reference_problems(path: Path, root, problems: list[Problem]) -> None:
                     f'storyboardElementRef="{ref}": no {kind} of that name',
                 )
             )
+
+
+def _qualified(root, kind: str, ref: str) -> bool:
+    """Whether ``ref`` is esmini's qualified reference to an element of ``kind`` (``Event::Action``,
+    ``Maneuver::Event::Action``: the element's name after the names of elements it lies in)."""
+    parts = ref.split("::")
+    if len(parts) < 2 or not all(parts):
+        return False
+    for el in root.iter(kind):
+        if el.get("name") != parts[-1]:
+            continue
+        above = [a.get("name") for a in el.iterancestors() if a.get("name") is not None]
+        want, k = parts[-2::-1], 0  # (the enclosing names, nearest first, in order)
+        for name in above:
+            if k < len(want) and name == want[k]:
+                k += 1
+        if k == len(want):
+            return True
+    return False
 
 
 def _distribution_problems(path: Path, root, problems: list[Problem]) -> None:
