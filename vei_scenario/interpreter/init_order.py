@@ -52,24 +52,38 @@ def _reads(action, actor: str, names) -> frozenset[tuple[str, str]]:
 
 def init_order(privates: list[tuple[str, object]], names, warn=None) -> list[tuple[str, object]]:
     """``privates`` (actor, PrivateAction element) in file order, reordered so that an action which
-    reads another road user's position or speed comes after that road user's last action setting
-    it. ``warn(element, reason)`` is told when the actions read each other in a circle (they are then
-    left in file order)."""
+    reads another road user's position or speed comes after every action setting it: the file's order
+    wherever nothing forces another (each action as early as what it reads allows; a topological
+    order, linear in the actions and what they read). ``warn(element, reason)`` is told when actions
+    read each other in a circle (they are then left in file order)."""
+    import heapq
+
     items = [(actor, pa, _reads(pa, actor, names), _sets(pa)) for actor, pa in privates]
     if not any(reads for _, _, reads, _ in items):
         return list(privates)
-    n = len(items)
-    for _ in range(n * n + 1):  # (a chain settles in fewer moves; a circle never does)
-        for i, (_, _, reads, _) in enumerate(items):
-            last = max(
-                (j for j in range(i + 1, n) if any((items[j][0], w) in reads for w in items[j][3])), default=None
-            )
-            if last is not None:
-                items.insert(last, items.pop(i))  # (popped first: `last` is now the slot after it)
-                break
-        else:
-            return [(actor, pa) for actor, pa, _, _ in items]
-    if warn is not None:
-        first = next(pa for _, pa, reads, _ in items if reads)
-        warn(first, "Init actions read each other's road users in a circle: they start in file order")
-    return list(privates)
+    setters: dict[tuple[str, str], list[int]] = {}
+    for j, (actor, _, _, sets) in enumerate(items):
+        for what in sets:
+            setters.setdefault((actor, what), []).append(j)
+    after: list[list[int]] = [[] for _ in items]  # j -> the actions waiting for it
+    waiting = [0] * len(items)
+    for i, (_, _, reads, _) in enumerate(items):
+        for j in sorted({j for key in reads for j in setters.get(key, ()) if j != i}):
+            after[j].append(i)
+            waiting[i] += 1
+    ready = [i for i, n in enumerate(waiting) if n == 0]
+    heapq.heapify(ready)
+    order: list[int] = []
+    while ready:
+        j = heapq.heappop(ready)
+        order.append(j)
+        for i in after[j]:
+            waiting[i] -= 1
+            if waiting[i] == 0:
+                heapq.heappush(ready, i)
+    if len(order) < len(items):  # (what is left reads itself round in a circle)
+        if warn is not None:
+            first = next(items[i][1] for i, n in enumerate(waiting) if n > 0)
+            warn(first, "Init actions read each other's road users in a circle: they start in file order")
+        return list(privates)
+    return [(items[i][0], items[i][1]) for i in order]
