@@ -380,7 +380,9 @@ class Simulation:
                 and (not pending or all(a.carried(ctx) for a in pending))
                 and (not ctx.stepping or all(a.carried(ctx) for a in ctx.stepping))
             ):  # fmt: skip
-                if offers.due() and cruise(ctx, board, entities, recording, self.max_time, offers):
+                # (a controller in charge of a road user steps in Python: no quiet stretch to offer)
+                offer = offers.due() and not any(e.active for e in entities)
+                if offer and cruise(ctx, board, entities, recording, self.max_time, offers):
                     continue  # (the core took this step's move and the quiet steps after it)
             if pending:  # Init actions still acting (a done one never acts again)
                 for a in pending:
