@@ -100,7 +100,7 @@ def test_every_command_line_option_says_what_it_does():
 def test_sweep_names_the_files_it_wrote(tmp_path, capsys, monkeypatch):
     from vei_scenario import cli
 
-    report = SimpleNamespace(rows=[], varied=["TimeShift"])
+    report = SimpleNamespace(rows=[], varied=["TimeShift"], warnings=[])
     monkeypatch.setattr("vei_scenario.sweep.run_sweep", lambda *a, **k: report)
     cli.main(["sweep", "s.xosc", "--vary", "TimeShift=0:1:1", "-o", f"{tmp_path}/catalog/"])
     out = capsys.readouterr().out

@@ -321,3 +321,54 @@ def test_modifying_an_undeclared_parameter_is_refused(tmp_path):
     cond = '<ParameterCondition parameterRef="N" value="0" rule="greaterThan"/>'
     with pytest.raises(VeiInputError, match="ParameterAction on undeclared parameter 'Nope'"):
         run_scenario(_counting(tmp_path, decls, actions, cond), {}, DT)
+
+
+def test_vei_sweep_says_so_once_and_writes_it_to_the_catalog(tmp_path):
+    """A sweep plays every variant with the default controller: the warning is said once (not per
+    variant) and kept in catalog.json; a sweep with nothing to say writes the catalog it always wrote."""
+    path = _cut_in(tmp_path)
+    text = path.read_text().replace(
+        "<ParameterDeclarations>",
+        '<ParameterDeclarations><ParameterDeclaration parameterType="double" name="Gap" value="84"/>',
+        1,
+    )
+    path.write_text(text.replace('ds="84.0"', 'ds="$Gap"'))
+    out = tmp_path / "sweep"
+    proc = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "vei_scenario",
+            "sweep",
+            str(path),
+            "--vary",
+            "Gap=60,84,100",
+            "-o",
+            str(out),
+            "--quiet",
+        ],
+        capture_output=True,
+        text=True,
+    )
+    assert proc.returncode == 0, proc.stderr
+    warned = [ln for ln in proc.stderr.splitlines() if ln.startswith("vei: warning: ")]
+    assert len(warned) == 3 and all("default controller" in w for w in warned)
+    doc = json.loads((out / "catalog.json").read_text())
+    assert len(doc["warnings"]) == 3 and len(doc["variants"]) == 3
+    quiet = tmp_path / "quiet"
+    plain = _cut_in(tmp_path / "q", driver=None)
+    plain.write_text(
+        plain.read_text()
+        .replace(
+            "<ParameterDeclarations>",
+            '<ParameterDeclarations><ParameterDeclaration parameterType="double" name="Gap" value="84"/>',
+            1,
+        )
+        .replace('ds="84.0"', 'ds="$Gap"')
+    )
+    subprocess.run(
+        [sys.executable, "-m", "vei_scenario", "sweep", str(plain), "--vary", "Gap=60,84", "-o", str(quiet), "--quiet"],
+        check=True,
+        capture_output=True,
+    )
+    assert "warnings" not in json.loads((quiet / "catalog.json").read_text())

@@ -230,6 +230,8 @@ def _cmd_sweep(args: argparse.Namespace) -> int:
         )
     finally:
         plotter.close()
+    for w in report.warnings:
+        print(f"vei: warning: {w}", file=sys.stderr)
     ok = [r for r in report.rows if r["status"] == "ok"]
     coll = sum(1 for r in ok if r["metrics"].get("collision"))
     print(

@@ -5,7 +5,7 @@ from __future__ import annotations
 import gc
 import os
 import sys
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 from vei_scenario.atomic_io import OutputSet
@@ -68,6 +68,21 @@ class SweepReport:
     rows: list[dict]
     written: list[Path]
     varied: list[str]
+    #: what ``vei run`` would say it plays in its own way (a controller without a model, Init actions
+    #: reading each other in a circle), for the first variant: said once, not per variant
+    warnings: list[str] = field(default_factory=list)
+
+
+def scenario_warnings(scenario: Path, values: dict[str, str], dt: float) -> list[str]:
+    """The warnings building the scenario with ``values`` gives (the simulation is set up, not run);
+    none when it cannot be built (the variants' rows say why)."""
+    from vei_scenario.errors import VeiError
+    from vei_scenario.interpreter import Simulation
+
+    try:
+        return list(Simulation(load_scenario(scenario, values), dt).ctx.warnings)
+    except (VeiError, ValueError, ArithmeticError):
+        return []
 
 
 def _progress_bar(total: int, quiet: bool):
@@ -183,6 +198,9 @@ def run_sweep(
         if osi_traces:
             _add_traces(files, out, scenario, rows, osi_traces, osi_format, dt)
         meta = {"scenario": str(scenario), "dt_s": dt, "varied": varied, "count": len(rows), "ttc_zones_use": zone_ttc}
+        warnings = scenario_warnings(scenario, variants[0], dt) if variants else []
+        if warnings:  # (only when there are: a sweep without any writes what it always wrote)
+            meta["warnings"] = warnings
         files.add(out / "catalog.csv", catalog_csv(rows, names))
         files.add(out / "catalog.json", catalog_json(rows, meta))
         files.add(out / "report.html", report_html(rows, names, varied, meta, plots=plotter.plots(), inputs=inputs))
@@ -191,4 +209,4 @@ def run_sweep(
         if collecting:
             gc.enable()
     files.commit()
-    return SweepReport(rows, files.paths, varied)
+    return SweepReport(rows, files.paths, varied, warnings)
