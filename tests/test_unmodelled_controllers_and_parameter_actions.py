@@ -323,16 +323,18 @@ def test_modifying_an_undeclared_parameter_is_refused(tmp_path):
         run_scenario(_counting(tmp_path, decls, actions, cond), {}, DT)
 
 
+def _with_gap(path):
+    """The cut-in with the car ahead's distance as a parameter ``Gap`` (84 m), for a sweep to vary."""
+    decl = '<ParameterDeclaration parameterType="double" name="Gap" value="84"/>'
+    text = path.read_text().replace("<ParameterDeclarations>", "<ParameterDeclarations>" + decl, 1)
+    path.write_text(text.replace('ds="84.0"', 'ds="$Gap"'))
+    return path
+
+
 def test_vei_sweep_says_so_once_and_writes_it_to_the_catalog(tmp_path):
     """A sweep plays every variant with the default controller: the warning is said once (not per
     variant) and kept in catalog.json; a sweep with nothing to say writes the catalog it always wrote."""
-    path = _cut_in(tmp_path)
-    text = path.read_text().replace(
-        "<ParameterDeclarations>",
-        '<ParameterDeclarations><ParameterDeclaration parameterType="double" name="Gap" value="84"/>',
-        1,
-    )
-    path.write_text(text.replace('ds="84.0"', 'ds="$Gap"'))
+    path = _with_gap(_cut_in(tmp_path))
     out = tmp_path / "sweep"
     proc = subprocess.run(
         [
@@ -356,16 +358,7 @@ def test_vei_sweep_says_so_once_and_writes_it_to_the_catalog(tmp_path):
     doc = json.loads((out / "catalog.json").read_text())
     assert len(doc["warnings"]) == 3 and len(doc["variants"]) == 3
     quiet = tmp_path / "quiet"
-    plain = _cut_in(tmp_path / "q", driver=None)
-    plain.write_text(
-        plain.read_text()
-        .replace(
-            "<ParameterDeclarations>",
-            '<ParameterDeclarations><ParameterDeclaration parameterType="double" name="Gap" value="84"/>',
-            1,
-        )
-        .replace('ds="84.0"', 'ds="$Gap"')
-    )
+    plain = _with_gap(_cut_in(tmp_path / "q", driver=None))
     subprocess.run(
         [sys.executable, "-m", "vei_scenario", "sweep", str(plain), "--vary", "Gap=60,84", "-o", str(quiet), "--quiet"],
         check=True,

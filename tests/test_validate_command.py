@@ -124,6 +124,12 @@ def test_missing_schemas_are_a_clear_user_error(scenario_dir, capsys, monkeypatc
         asam_schemas.schema_dir.cache_clear()
 
 
+def _declare(text: str, name: str, value: str) -> str:
+    """``text`` with a top-level string parameter ``name`` declared first."""
+    decl = f'<ParameterDeclaration name="{name}" parameterType="string" value="{value}"/>'
+    return text.replace("<ParameterDeclarations>", "<ParameterDeclarations>" + decl, 1)
+
+
 def test_what_players_do_not_need_is_not_a_problem(scenario_dir, capsys, qc_venv):
     """A missing 3D model (SceneGraphFile), a catalog parameter assigned by name, a declared name with
     esmini's leading $, esmini's qualified element reference, the times of a path followed untimed:
@@ -134,11 +140,7 @@ def test_what_players_do_not_need_is_not_a_problem(scenario_dir, capsys, qc_venv
     assert "<RoadNetwork>" in text and "</Storyboard>" in text
     logic_end = text.index("/>", text.index("<LogicFile")) + 2
     text = text[:logic_end] + '<SceneGraphFile filepath="models/absent.osgb"/>' + text[logic_end:]
-    text = text.replace(
-        "<ParameterDeclarations>",
-        '<ParameterDeclarations><ParameterDeclaration name="$owner" parameterType="string" value="x"/>',
-        1,
-    )
+    text = _declare(text, "$owner", "x")
     path.write_text(text)
     code, out = _validate(capsys, path)
     assert code == 0, out
@@ -146,11 +148,7 @@ def test_what_players_do_not_need_is_not_a_problem(scenario_dir, capsys, qc_venv
     start = text.index("<LogicFile")
     end = text.index("/>", start) + 2
     text = text[:start] + '<LogicFile filepath="$Road"/>' + text[end:]
-    text = text.replace(
-        "<ParameterDeclarations>",
-        '<ParameterDeclarations><ParameterDeclaration name="Road" parameterType="string" value="gone.xodr"/>',
-        1,
-    )
+    text = _declare(text, "Road", "gone.xodr")
     path.write_text(text)
     code, out = _validate(capsys, path)
     assert code == 1 and "[file.missing]" in out and "(gone.xodr)" in out, out

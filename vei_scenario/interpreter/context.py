@@ -73,8 +73,6 @@ class Context:
     def warn(self, el, reason: str) -> None:
         """Note, once, something the run plays in its own way, naming ``el``'s file and line as
         :meth:`error` does."""
-        from vei_scenario.interpreter.document import source_of
-
-        line = f"{source_of(el, self.path)}: line {el.sourceline}: {reason}"
+        line = str(self.error(el, reason))  # (file: line N: reason, as a refusal reads)
         if line not in self.warnings:
             self.warnings.append(line)

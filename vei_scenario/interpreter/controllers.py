@@ -211,7 +211,7 @@ class AdaptiveCruiseController(Controller):
 
     def __init__(self, name, props, el, ctx) -> None:
         super().__init__(name, props, el, ctx)
-        kind = props.get("esminiController") or name
+        kind = controller_kind(name, props)
         values = {}
         for prop, key, lo, hi in (
             ("timeGap", "time_gap_s", 0.0, 60.0),
@@ -349,13 +349,19 @@ ESMINI_ONLY = frozenset(
 )  # fmt: skip
 
 
+def controller_kind(name: str, props: dict[str, str]) -> str:
+    """The kind of controller a ``<Controller>`` is: its ``esminiController`` property, else its name
+    (esmini's rule)."""
+    return props.get("esminiController") or name
+
+
 def make_controller(el, ctx) -> Controller:
     """A runtime controller from a ``<Controller>`` element: the kind its ``esminiController`` property
     names (esmini's rule), else its name. One of esmini's own models vei lacks is refused; any other
     name is the default controller, with a warning (:class:`DefaultController`)."""
     name = el.get("name", "")
     props = {p.get("name"): p.get("value") for p in el.iterfind("Properties/Property")}
-    kind = props.get("esminiController") or name
+    kind = controller_kind(name, props)
     cls = CONTROLLERS.get(kind)
     if cls is None and kind in ESMINI_ONLY:  # (named in the file it comes from: the scenario, or its catalog)
         known = ", ".join(CONTROLLERS)

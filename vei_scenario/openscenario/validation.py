@@ -7,7 +7,8 @@ Quality Checker does not flag:
 * ``parameter.undeclared``: a ``$Name`` (or a name inside ``${...}``) that no declaration provides;
 * ``file.missing``: a ``LogicFile``/``ScenarioFile`` that does not exist (a path given by a parameter at
   its declared value; a ``SceneGraphFile``, a 3D model for viewers, is not needed to run);
-* ``trajectory.vertex-time``: polyline vertex times that do not strictly increase;
+* ``trajectory.vertex-time``: polyline vertex times that do not strictly increase, on a path played by
+  its times (not one a FollowTrajectoryAction follows without a Timing);
 * ``distribution.unknown-parameter``: a distribution varying a parameter its scenario does not declare,
   or a value that does not fit the declared type;
 * ``reference.dangling``: an entity, storyboard element or road/junction reference to nothing.
