@@ -163,8 +163,8 @@ def _core_steps(quantity: str, rule: int, value: float, freespace: bool, n_max: 
         guard[GUARD[name]] = v
     pack = np.asarray
     clock = pack([k / 8 for k in range(n_max)], float).tobytes()
-    n, *_ = _core.cruise((None, None), pack(state, float).tobytes(), b"", b"", b"", pack(guard, float).tobytes(), clock,
-                         math.inf, 0.125)  # fmt: skip
+    n, *_ = _core.cruise((None, None), pack(state, float).tobytes(), b"", b"", b"", b"", pack(guard, float).tobytes(),
+                         clock, math.inf, 0.125)  # fmt: skip
     return n
 
 

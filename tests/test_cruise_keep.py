@@ -188,7 +188,7 @@ def test_the_core_refuses_a_keep_it_cannot_place(keep, why):
     state = np.asarray(_straight(0.0, 0.0, 0.0, 8.0) + _straight(50.0, 0.0, 0.0, 8.0), float).tobytes()
     clock = np.arange(10, dtype=float).tobytes()
     with pytest.raises(ValueError, match=why):
-        _core.cruise((None, None), state, b"", np.asarray(row, float).tobytes(), b"", b"", clock, math.inf, 0.1)
+        _core.cruise((None, None), state, b"", np.asarray(row, float).tobytes(), b"", b"", b"", clock, math.inf, 0.1)
 
 
 SPRINGS = {
@@ -262,4 +262,4 @@ def test_the_core_refuses_a_table_that_is_not_whole_rows(table):
     tables = {"syncs": b"", "keeps": b"", "guards": b""} | {table: np.zeros(3).tobytes()}
     clock = np.arange(10, dtype=float).tobytes()
     with pytest.raises(ValueError, match=f"the {table} need their columns each"):
-        _core.cruise((None,), state, tables["syncs"], tables["keeps"], b"", tables["guards"], clock, math.inf, 0.1)
+        _core.cruise((None,), state, tables["syncs"], tables["keeps"], b"", b"", tables["guards"], clock, math.inf, 0.1)

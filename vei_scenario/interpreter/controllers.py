@@ -10,6 +10,8 @@ from __future__ import annotations
 
 import math
 
+from vei_scenario.core import layout
+from vei_scenario.core import row as core_row
 from vei_scenario.interpreter.entities import Entity
 from vei_scenario.interpreter.motion import advance_along, lane_keep
 from vei_scenario.interpreter.positions import ensure_lane, lane_state_at
@@ -266,6 +268,30 @@ class AdaptiveCruiseController(Controller):
         e.status = "acc"
         return True
 
+    def core_columns(self, e: Entity, ctx, index: dict[str, int], sequential: bool) -> list[float] | None:
+        """This cruise's columns for the core's quiet stretches (core_module.c: ACC_COLUMNS; ``index``: each
+        road user's row), or None where the core does not step it: its road user off a lane or on a path
+        (a SpeedAction's transition left on it is not read, as :meth:`move` does not). The core follows
+        the leader as :meth:`_leader` does while every road user keeps its lane; it stops before a step
+        where it could not tell (a road user changing lanes or off the lanes, the search ahead reaching
+        the next road)."""
+        if e.lane is None or e.follower is not None:
+            return None
+        road = ctx.roads.road(e.lane.road)
+        linked = (road.successor if e.lane.forward else road.predecessor) is not None
+        p, lim = self.params, e.limits
+        values = {"ENTITY": index[e.name], "CURRENT": self.current, "SET_SPEED": self.set_speed,
+                  "MAX_ACCEL": lim.max_accel_mps2, "MAX_DECEL": lim.max_decel_mps2,
+                  "ADDITIVE": float(self.additive), "SEQUENTIAL": float(sequential), "LINKED": float(linked),
+                  "TIME_GAP": p.time_gap_s, "LATERAL_DIST": p.lateral_dist_m, "MIN_GAP": p.min_gap_m,
+                  "APPROACH_GAIN": p.approach_gain, "DISTANCE_GAIN": p.distance_gain_mps2,
+                  "STOP_GAP": p.stop_gap_m}  # fmt: skip
+        return core_row("acc", values)
+
+    def take_core_columns(self, columns) -> None:
+        """The speed it commands and its set speed as the core's quiet steps left them."""
+        self.current, self.set_speed = columns[_ACC["CURRENT"]], columns[_ACC["SET_SPEED"]]
+
     def _leader(self, e: Entity, ctx) -> tuple[float, float] | None:
         """(bumper-to-bumper gap, speed) of the road user it follows: the nearest one ahead in its
         lane within the look-ahead (along the lanes, reference points within ``lateralDist`` across),
@@ -314,6 +340,9 @@ class LaneKeepingCruiseController(AdaptiveCruiseController):
 
     domains = ("lateral", "longitudinal")
 
+
+#: The core's columns of an adaptive cruise (core_module.c: ACC_COLUMNS).
+_ACC = layout("acc")
 
 #: Time in which the adaptive cruise closes a gap error (s).
 ACC_RELAX_S = 3.0

@@ -45,6 +45,7 @@ _STATUS = {_TIMED: "replay", _TIMED_FOLLOW: "follow", _TOWED: "towed"}
 #: How many core columns a synchronisation and a kept distance have (core_module.c: SYNC_COLUMNS, KEEP_COLUMNS).
 _SY_COLS = len(layout("sync"))
 _KP_COLS = len(layout("keep"))
+_AC_COLS = len(layout("acc"))
 #: Most steps in one call of the core (the poses it returns for them are held in memory at once).
 CHUNK = 2000
 #: Fewest quiet steps worth a call (fewer: the ordinary step is as quick).
@@ -133,17 +134,19 @@ class QuietBounds:
 
 
 def _columns(
-    ctx, entities, synced: dict[str, float], turn: float, kept: dict[str, str] | None = None
-) -> tuple[tuple, list[float], QuietBounds] | None:
+    ctx, entities, synced: dict[str, float], turn: float, kept: dict[str, str] | None = None,
+    cruising: dict[str, float] | None = None,
+) -> tuple[tuple, list[float], QuietBounds] | None:  # fmt: skip
     """The core's columns of every road user and the bounds of their steps, or None when one moves
     otherwise than by cruising along its lane or path (or straight on) at its speed, the speed a
     synchronisation (``synced``: road user -> the speed it heads for) or a SpeedAction's transition
-    gives it, the speed of the road user it keeps its distance to (``kept``: road user -> that one), or
+    gives it, the speed of the road user it keeps its distance to (``kept``: road user -> that one),
+    the speed its adaptive cruise gives it (``cruising``: road user -> the fastest it may command), or
     along a timed path."""
     ways, cols, dt = [], [], ctx.dt
-    kept = kept or {}
-    # (a trailer's speed is its tow's, a keeper's its reference's: taken as changing)
-    varying = synced.keys() | kept.keys()
+    kept, cruising = kept or {}, cruising or {}
+    # (a trailer's speed is its tow's, a keeper's its reference's, a cruise's its own: taken as changing)
+    varying = synced.keys() | kept.keys() | cruising.keys()
     varying |= {e.name for e in entities if not e.deleted and (e.speed_profile is not None or _timed(e) or e.towed_by)}
     index = {e.name: i for i, e in enumerate(entities)}
     bounds = QuietBounds({}, {}, turn, varying=frozenset(varying), index=index)
@@ -153,7 +156,8 @@ def _columns(
             cols += _absent(e)
             continue
         f = e.follower
-        p = e.speed_profile if e.name not in kept else None  # (a kept one's speed is the core's)
+        # (a kept one's speed is the core's, a cruising one's its cruise's: a transition left is not read)
+        p = e.speed_profile if e.name not in kept and e.name not in cruising else None
         row = {"X": e.x, "Y": e.y, "YAW": e.yaw, "CENTER_X": e.center_x, "LENGTH": e.length, "WIDTH": e.width}
         row |= {"ODOMETER": e.odometer, "SPEED": e.speed, "LAST_MOVED": e.last_step_m, "ACCEL": e.accel}
         row |= {"PROFILE": -1.0, "TOW": -1.0}
@@ -172,7 +176,7 @@ def _columns(
         timed = _timed(e)
         lateral = _lateral(ctx, e) if e.lateral is not None else {}
         if (
-            e.placed or lateral is None or e.find_lane or any(e.active.values())
+            e.placed or lateral is None or e.find_lane or (any(e.active.values()) and e.name not in cruising)
             or (f is not None and f.polyline.xs is None)
             or (p is not None and (e.name in synced or p.shape not in _SHAPES or timed))
         ):  # fmt: skip
@@ -200,6 +204,8 @@ def _columns(
             q = ref.speed_profile
             fastest = max(abs(e.speed), abs(ref.speed), *((abs(q.v0), abs(q.v1)) if q is not None else ()))
             reach = (fastest + SPEED_MARGIN_MPS) * dt
+        elif e.name in cruising:  # (its cruise's speed: at most the fastest it may command)
+            reach = (max(abs(e.speed), cruising[e.name]) + SPEED_MARGIN_MPS) * dt
         elif e.name in synced:
             # (a synchronisation's speed: heading for its final speed, bounded by the margin beyond
             # it; the core stops before a step past the bound)
@@ -339,6 +345,52 @@ def _stepped(ctx, entities: list) -> _Stepped | None:
     return out
 
 
+@dataclass
+class _Cruises:
+    """The controllers in charge of road users that the core steps (the adaptive cruises) and their columns."""
+
+    controllers: list = field(default_factory=list)
+    cols: list = field(default_factory=list)
+    fastest: dict = field(default_factory=dict)  # road user -> the fastest speed its cruise may command
+
+
+def _cruises(ctx, entities: list, stepped: _Stepped, sequential: bool) -> _Cruises | None:
+    """The controllers in charge of road users, as the core steps them, or None when one is not a
+    controller the core steps (``core_columns``), shares its road user with another, or the road users
+    are where it would not know whom an adaptive cruise follows: every other one keeps its lane without
+    changing lanes (the core reads road points from lane states), and no action places a road user or sets
+    its speed before the moves (the core's order would differ from the interpreter's)."""
+    out = _Cruises()
+    index = None
+    for e in entities:
+        if e.deleted or not any(e.active.values()):
+            continue
+        ctrls = {id(c): c for c in e.active.values() if c is not None}
+        if len(ctrls) != 1 or stepped.keeps or stepped.syncs:
+            return None
+        (ctrl,) = ctrls.values()
+        if not hasattr(ctrl, "core_columns"):
+            return None
+        if index is None:
+            index = {o.name: i for i, o in enumerate(entities)}
+            if not all(o.deleted or (o.lane is not None and o.follower is None and o.lateral is None
+                                     and o.towed_by is None) for o in entities if o is not e):  # fmt: skip
+                return None
+        cols = ctrl.core_columns(e, ctx, index, sequential)
+        if cols is None:
+            return None
+        out.controllers.append(ctrl)
+        out.cols += cols
+        out.fastest[e.name] = max(abs(ctrl.current), abs(ctrl.set_speed))
+    return out
+
+
+def offered(entities: list) -> bool:
+    """Whether the controllers in charge of road users leave a quiet stretch to the core at all: none,
+    or only ones the core steps (their ``core_columns``)."""
+    return all(hasattr(c, "core_columns") for e in entities for c in e.active.values() if c is not None)
+
+
 class StepTimes:
     """The simulation times of the ``n`` steps after step ``step0`` (as the engine rounds them),
     computed when asked for."""
@@ -380,10 +432,11 @@ def steps_left(ctx, max_time: float) -> int:
     return n
 
 
-def cruise(ctx, storyboard, entities: list, recording, max_time: float, offers: Offers) -> int:
+def cruise(ctx, storyboard, entities: list, recording, max_time: float, offers: Offers, sequential: bool = True) -> int:
     """Take this step's move and as many quiet steps after it as nothing can happen in, in the core;
     record them. The number of steps taken (0: none, the step goes on as usual); ``offers``: when to
-    offer again."""
+    offer again; ``sequential``: the coupling (False: Jacobi, an adaptive cruise sees everyone as the
+    step began)."""
     offers.wait = RETRY_STEPS  # (not quiet now: a few steps later it may be)
     triggers = storyboard.watching()
     if triggers is None:
@@ -392,11 +445,14 @@ def cruise(ctx, storyboard, entities: list, recording, max_time: float, offers: 
     if stepped is None:
         return 0
     actions = stepped.syncs
+    cruises = _cruises(ctx, entities, stepped, sequential)
+    if cruises is None:
+        return 0
     dt = ctx.dt
     runners = [c for t in triggers for c in t.conditions()]
     turn = TURN_RATE * dt if any(c.condition.reads_turning for c in runners) else math.inf
     kept = {a.entity: a.ref for a in stepped.keeps}
-    columns = _columns(ctx, entities, {a.entity: a.speed_heading(ctx) for a in actions}, turn, kept)
+    columns = _columns(ctx, entities, {a.entity: a.speed_heading(ctx) for a in actions}, turn, kept, cruises.fastest)
     if columns is None:
         return 0
     ways, cols, bounds = columns
@@ -414,10 +470,10 @@ def cruise(ctx, storyboard, entities: list, recording, max_time: float, offers: 
     if skipped < MIN_STEPS:
         return 0
     f64 = array.array
-    columns = (f64("d", cols).tobytes(), f64("d", stepped.sync_cols).tobytes(), f64("d", stepped.keep_cols).tobytes(),
-               f64("d", stepped.programs).tobytes(), f64("d", bounds.guards).tobytes())  # fmt: skip
+    tables = (cols, stepped.sync_cols, stepped.keep_cols, cruises.cols, stepped.programs, bounds.guards)
+    columns = tuple(f64("d", table).tobytes() for table in tables)
     clock = packed_step_times(step0, step0 + skipped + 1, dt)  # (each step's start)
-    n, poses, state, sync_state, keep_state = _core.cruise(ways, *columns, clock, bounds.turn, dt)
+    n, poses, state, sync_state, keep_state, acc_state = _core.cruise(ways, *columns, clock, bounds.turn, dt)
     # The core stops before a step that is not quiet (an action ending, a guard's comparison turning):
     # the interpreter takes that one, and the steps after it are offered again at once, unless the
     # core has refused the first step before (a state that lasts, such as a distance on its threshold).
@@ -436,9 +492,15 @@ def cruise(ctx, storyboard, entities: list, recording, max_time: float, offers: 
     follows = len(stepped.follows)
     for k, a in enumerate(stepped.keeps[follows:], follows):
         a.take_core_columns(keep_state[k * _KP_COLS : (k + 1) * _KP_COLS])
+    acc_state = memoryview(acc_state).cast("d")
+    for k, ctrl in enumerate(cruises.controllers):
+        ctrl.take_core_columns(acc_state[k * _AC_COLS : (k + 1) * _AC_COLS])
     state = memoryview(state).cast("d")
     statuses = [_STATUS.get(state[i * _COLS + _MODE], "default") if not e.deleted else "deleted"
                 for i, e in enumerate(entities)]  # fmt: skip
+    for i, e in enumerate(entities):
+        if e.name in cruises.fastest:
+            statuses[i] = "acc"
     recording.record_core(step_times(step0 + 1, step0 + 1 + n, dt), poses, statuses)
     _commit(ctx, entities, memoryview(poses).cast("d"), state, statuses, n)
     ctx.step = step0 + n

@@ -24,7 +24,7 @@ from vei_scenario.interpreter.actions import (
 from vei_scenario.interpreter.clock import step_time
 from vei_scenario.interpreter.context import Context
 from vei_scenario.interpreter.controllers import make_controller
-from vei_scenario.interpreter.cruise import Offers, cruise
+from vei_scenario.interpreter.cruise import Offers, cruise, offered
 from vei_scenario.interpreter.document import ScenarioDocument
 from vei_scenario.interpreter.entities import Entity
 from vei_scenario.interpreter.init_order import init_order
@@ -180,6 +180,15 @@ KINDS = {"Vehicle": "vehicle", "Pedestrian": "pedestrian", "MiscObject": "misc"}
 #: Entity properties (lower case) that may name a finer object type than the vehicle category
 #: (OpenSCENARIO has no e-scooter category; vei writes ``<Property name="objectType" value="e-scooter"/>``).
 OBJECT_TYPE_PROPERTIES = ("objecttype", "type")
+
+
+def _as_it_was(e: Entity) -> Entity:
+    """A copy of ``e`` that its step leaves as it is: with its own lane state (a step moves the one it
+    has in place), so that under Jacobi coupling others read where it was on its lane, not where it is."""
+    snap = copy.copy(e)
+    if e.lane is not None:
+        snap.lane = copy.copy(e.lane)
+    return snap
 
 
 def _parked(e: Entity) -> tuple | None:
@@ -380,9 +389,10 @@ class Simulation:
                 and (not pending or all(a.carried(ctx) for a in pending))
                 and (not ctx.stepping or all(a.carried(ctx) for a in ctx.stepping))
             ):  # fmt: skip
-                # (a controller in charge of a road user steps in Python: no quiet stretch to offer)
-                offer = offers.due() and not any(e.active for e in entities)
-                if offer and cruise(ctx, board, entities, recording, self.max_time, offers):
+                # (a controller in charge of a road user that the core does not step: no quiet stretch to offer)
+                offer = offers.due() and offered(entities)
+                sequential = self.coupling != "jacobi"
+                if offer and cruise(ctx, board, entities, recording, self.max_time, offers, sequential):
                     continue  # (the core took this step's move and the quiet steps after it)
             if pending:  # Init actions still acting (a done one never acts again)
                 for a in pending:
@@ -394,7 +404,7 @@ class Simulation:
             if ctx.stepping:
                 _act(ctx)
             if self.coupling == "jacobi":
-                ctx.snapshot = {n: copy.copy(e) for n, e in ctx.entities.items()}
+                ctx.snapshot = {n: _as_it_was(e) for n, e in ctx.entities.items()}
             for e in entities:
                 self._move(e)
             for tow, trailer in trailers.hitches(ctx.entities):

@@ -16,12 +16,18 @@ the vehicle at the new speed):
   vehicle's limits: far away it cruises, close in it matches the slower of leader and set speed, and
   too close it falls back; following never takes it above the set speed;
 * a gap under ``stop_gap_m`` stops the vehicle at once (esmini's last resort, not physical).
+
+The law and the geometry it reads are the compiled core's (``vei_models.c``): the interpreter's own
+steps call them here, and the core's quiet stretches (interpreter/cruise.py) step them in C.
 """
 
 from __future__ import annotations
 
-import math
-from dataclasses import dataclass
+from array import array
+from dataclasses import astuple, dataclass
+from functools import cached_property
+
+from vei_scenario.core import _core
 
 
 @dataclass(frozen=True)
@@ -43,7 +49,12 @@ class AccParameters:
     def lookahead_m(self, v_mps: float, max_decel_mps2: float) -> float:
         """How far ahead along the lane a leader is looked for: at least 50 m, else twice the
         standstill distance plus the distance to stop from ``v_mps``, twice over (esmini's horizon)."""
-        return max(50.0, 2 * self.min_gap_m + v_mps * v_mps / max(max_decel_mps2, 1e-9))
+        return _core.acc_lookahead(self.packed, v_mps, max_decel_mps2)
+
+    @cached_property
+    def packed(self) -> bytes:
+        """The parameters as the core's ``VeiAccParams`` (its field order is this class's)."""
+        return array("d", astuple(self)).tobytes()
 
 
 def acc_speed(
@@ -57,23 +68,9 @@ def acc_speed(
 ) -> float:
     """The speed after one step of ``dt`` from ``v_mps``; ``lead`` is (bumper-to-bumper gap m, leader
     speed m/s), or None with nobody to follow."""
-    if lead is None:
-        a = (set_speed_mps - v_mps) * p.approach_gain * max_accel_mps2
-        a = min(max(a, -max_decel_mps2), p.approach_gain * max_accel_mps2)
-        v = v_mps + a * dt
-        if abs(v - set_speed_mps) > abs(v_mps - set_speed_mps):  # (it would pass the set speed)
-            return set_speed_mps
-        return v
-    gap, v_lead = lead
-    if gap < p.stop_gap_m:
-        return 0.0
-    follow = p.min_gap_m + p.time_gap_s * abs(max(v_mps, v_lead))
-    f = min(1.0, (gap - follow) / follow)
-    dv_set = v_mps - set_speed_mps
-    dv_min = v_mps - min(set_speed_mps, v_lead)
-    a = p.distance_gain_mps2 * f - f * dv_set - (1.0 - f) * dv_min
-    a = min(max(a, -max_decel_mps2), max_accel_mps2)
-    return min(max(0.0, v_mps + a * dt), set_speed_mps)
+    gap, v_lead = lead if lead is not None else (0.0, 0.0)
+    return _core.acc_speed(p.packed, v_mps, set_speed_mps, lead is not None, gap, v_lead, max_accel_mps2,
+                           max_decel_mps2, dt)  # fmt: skip
 
 
 def bumper_gap(
@@ -82,9 +79,7 @@ def bumper_gap(
     """The gap between the ego's front and the other's near end, from the distance ``ds_m`` between
     their reference points along the lane: the other's rear when both head the same way, its front
     when it comes towards the ego."""
-    own_front = 0.5 * own_length + own_center_x
-    other_near = 0.5 * other_length - other_center_x if same_way else 0.5 * other_length + other_center_x
-    return ds_m - own_front - other_near
+    return _core.bumper_gap(ds_m, own_length, own_center_x, other_length, other_center_x, same_way)
 
 
 def close_ahead(x_gap: float, y_gap: float, other_length: float, closing_mps: float) -> bool:
@@ -93,29 +88,13 @@ def close_ahead(x_gap: float, y_gap: float, other_length: float, closing_mps: fl
     laterally within 0.2 m to the left or 0.5 m to the right of the ego's box (esmini yields more on
     the right, for right-hand traffic). ``x_gap``/``y_gap``: the gaps between the boxes along and
     across the ego's heading (0 where they overlap in that direction; y positive to the left)."""
-    return 0.0 < x_gap < 1.0 + other_length + 0.5 * max(0.0, closing_mps) and -0.5 < y_gap < 0.2
+    return _core.close_ahead(x_gap, y_gap, other_length, closing_mps)
 
 
-def box_gaps(own: tuple[float, float, float, float, float], other: tuple[float, float, float, float, float]):
+def box_gaps(
+    own: tuple[float, float, float, float, float], other: tuple[float, float, float, float, float]
+) -> tuple[float, float]:
     """The gaps between two boxes (centre x, centre y, yaw, length, width) along and across the first
     one's heading: signed (positive ahead / to the left), 0 where their extents overlap. The other box
     is measured by its extent along those axes (as the distance conditions measure freespace)."""
-    x0, y0, yaw, length, width = own
-    ox, oy, oyaw, ol, ow = other
-    c, s = math.cos(yaw), math.sin(yaw)
-    dx, dy = ox - x0, oy - y0
-    along, across = c * dx + s * dy, -s * dx + c * dy
-    cd, sd = abs(math.cos(oyaw - yaw)), abs(math.sin(oyaw - yaw))
-    return (
-        _gap(along, 0.5 * (ol * cd + ow * sd), 0.5 * length),
-        _gap(across, 0.5 * (ol * sd + ow * cd), 0.5 * width),
-    )
-
-
-def _gap(centre: float, extent: float, half: float) -> float:
-    """Signed gap between [-half, half] and [centre - extent, centre + extent], 0 where they overlap."""
-    if centre - extent > half:
-        return centre - extent - half
-    if centre + extent < -half:
-        return centre + extent + half
-    return 0.0
+    return _core.box_gaps(own, other)

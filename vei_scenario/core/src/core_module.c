@@ -635,6 +635,73 @@ static PyObject *cap_step(PyObject *mod, PyObject *const *args, Py_ssize_t nargs
     return Py_BuildValue("(OdOdd)", st.brake ? Py_True : Py_False, st.integral, Py_None, a, d_safe);
 }
 
+/* acc_speed(params, v, set_speed, lead, gap, v_lead, max_accel, max_decel, dt) -> speed: the adaptive
+ * cruise's step (vei_acc_speed); params: AccParameters.packed; lead false: nobody to follow */
+static PyObject *acc_speed(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (!args_ok(nargs, 9, "acc_speed")) return NULL;
+    double pv[6];
+    if (doubles_of(args[0], pv, 6, "acc_speed params") < 0) return NULL;
+    VeiAccParams p = {pv[0], pv[1], pv[2], pv[3], pv[4], pv[5]};
+    ARG_D(1, v);
+    ARG_D(2, set_speed);
+    int lead = PyObject_IsTrue(args[3]);
+    if (lead < 0) return NULL;
+    ARG_D(4, gap);
+    ARG_D(5, v_lead);
+    ARG_D(6, max_accel);
+    ARG_D(7, max_decel);
+    ARG_D(8, dt);
+    return PyFloat_FromDouble(vei_acc_speed(&p, v, set_speed, lead, gap, v_lead, max_accel, max_decel, dt));
+}
+
+/* acc_lookahead(params, v, max_decel) -> metres ahead the adaptive cruise looks for a leader */
+static PyObject *acc_lookahead(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (!args_ok(nargs, 3, "acc_lookahead")) return NULL;
+    double pv[6];
+    if (doubles_of(args[0], pv, 6, "acc_lookahead params") < 0) return NULL;
+    VeiAccParams p = {pv[0], pv[1], pv[2], pv[3], pv[4], pv[5]};
+    ARG_D(1, v);
+    ARG_D(2, max_decel);
+    return PyFloat_FromDouble(vei_acc_lookahead(&p, v, max_decel));
+}
+
+/* bumper_gap(ds, own_length, own_center_x, other_length, other_center_x, same_way) -> m */
+static PyObject *bumper_gap(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (!args_ok(nargs, 6, "bumper_gap")) return NULL;
+    ARG_D(0, ds);
+    ARG_D(1, own_length);
+    ARG_D(2, own_center_x);
+    ARG_D(3, other_length);
+    ARG_D(4, other_center_x);
+    int same_way = PyObject_IsTrue(args[5]);
+    if (same_way < 0) return NULL;
+    return PyFloat_FromDouble(vei_bumper_gap(ds, own_length, own_center_x, other_length, other_center_x, same_way));
+}
+
+/* box_gaps(own_box, other_box) -> (along, across); close_ahead(x_gap, y_gap, other_length, closing) -> bool */
+static PyObject *box_gaps(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (!args_ok(nargs, 2, "box_gaps")) return NULL;
+    VeiBox a, b;
+    if (box_of(args[0], &a) < 0 || box_of(args[1], &b) < 0) return NULL;
+    double along, across;
+    vei_box_gaps(&a, &b, &along, &across);
+    return Py_BuildValue("(dd)", along, across);
+}
+
+static PyObject *close_ahead(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (!args_ok(nargs, 4, "close_ahead")) return NULL;
+    ARG_D(0, x_gap);
+    ARG_D(1, y_gap);
+    ARG_D(2, other_length);
+    ARG_D(3, closing);
+    return PyBool_FromLong(vei_close_ahead(x_gap, y_gap, other_length, closing));
+}
+
 /* longitudinal_step(s, v, a, a_cmd, max_accel, max_decel, jerk_max, dt) -> (s, v, a) */
 static PyObject *longitudinal_step(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
 {
@@ -1377,6 +1444,81 @@ static int keep_place(const double *kp, PyObject *ways, double *st, double ref_s
     return 1;
 }
 
+/* an adaptive cruise in charge of a road user on its lane (controllers.AdaptiveCruiseController): its road
+ * user, the speed it commands and its set speed, the road user's acceleration limits, whether an action's new
+ * speed becomes the set speed (additive), whether it sees the road users before it after their moves
+ * (sequential coupling), whether its road leads on ahead (a road or junction linked there), and its parameters
+ * (VeiAccParams, in order from TIME_GAP) */
+#define ACC_COLUMNS(F)                                                                                          \
+    F(ENTITY) F(CURRENT) F(SET_SPEED) F(MAX_ACCEL) F(MAX_DECEL) F(ADDITIVE) F(SEQUENTIAL) F(LINKED) F(TIME_GAP) \
+    F(LATERAL_DIST) F(MIN_GAP) F(APPROACH_GAIN) F(DISTANCE_GAIN) F(STOP_GAP)
+#define AC_ENUM(name) AC_##name,
+enum { ACC_COLUMNS(AC_ENUM) AC_COLS };
+
+/* AdaptiveCruiseController._leader in the core, for road user i on its lane with every other road user on
+ * theirs, not changing lanes (their road points are their lane states): -1 where the core cannot tell (the
+ * search along the lane would go on past its road onto the next, or a road user is elsewhere), else whether
+ * it follows one, at bumper-to-bumper *gap driving at *v_lead. seen: the road users as it sees them (under
+ * sequential coupling those before it after their moves, `next`; else all at the step's start, `pre`). */
+static int acc_leader(const double *ac, PyObject *ways, const double *pre, const double *next, Py_ssize_t n,
+                      Py_ssize_t i, double *gap, double *v_lead)
+{
+    const double *e = pre + i * CR_COLS;
+    PyObject *way = PyTuple_GET_ITEM(ways, i);
+    const vr_road *r = &((RoadObject *)way)->r;
+    const VeiAccParams *p = (const VeiAccParams *)(ac + AC_TIME_GAP);
+    int lane = (int)e[CR_LANE], forward = e[CR_FORWARD] != 0.0, found = 0;
+    double s = e[CR_S], current = ac[AC_CURRENT], my_t;
+    if (vr_lane_center_t(r, s, lane, &my_t) < 0) return -1;
+    my_t += e[CR_OFFSET];
+    double limit = vei_acc_lookahead(p, current, ac[AC_MAX_DECEL]);
+    if (ac[AC_LINKED] != 0.0 && !((forward ? r->length - s : s) > limit)) return -1;
+    VeiBox own = row_box(e);
+    for (Py_ssize_t j = 0; j < n; j++) {
+        const double *o = (ac[AC_SEQUENTIAL] != 0.0 && j < i ? next : pre) + j * CR_COLS;
+        if (j == i || o[CR_MODE] < 0) continue;
+        if (o[CR_MODE] != MODE_LANE || o[CR_LATERAL] != 0.0) return -1;
+        if (PyTuple_GET_ITEM(ways, j) == way) { /* on its road: how far ahead along its lane */
+            int o_lane = (int)o[CR_LANE];
+            double t;
+            if (vr_lane_center_t(r, o[CR_S], o_lane, &t) < 0) return -1;
+            if (fabs(t + o[CR_OFFSET] - my_t) < p->lateral_dist_m) {
+                int there = (o[CR_S] >= s) == forward ? vr_lane_on(r, s, o[CR_S], lane, 1) : lane;
+                double ds = forward ? o[CR_S] - s : s - o[CR_S];
+                if (there == o_lane && ds <= limit) {
+                    int same_way = fabs(remainder(o[CR_YAW] - e[CR_YAW], 2 * M_PI)) < 0.5 * M_PI;
+                    double g = vei_bumper_gap(ds, e[CR_LENGTH], e[CR_CENTER_X], o[CR_LENGTH], o[CR_CENTER_X], same_way);
+                    if (0.0 < g && (!found || g < *gap)) {
+                        *gap = g, *v_lead = o[CR_SPEED], found = 1;
+                        continue;
+                    }
+                }
+            }
+        }
+        VeiBox other = row_box(o);
+        double x_gap, y_gap;
+        vei_box_gaps(&own, &other, &x_gap, &y_gap);
+        if (vei_close_ahead(x_gap, y_gap, o[CR_LENGTH], current - o[CR_SPEED])) *gap = x_gap, *v_lead = o[CR_SPEED], found = 1;
+    }
+    return found;
+}
+
+/* AdaptiveCruiseController.move's speed for the coming step of acc ac's road user i into next (and as the
+ * speed it commands); 0 where the core cannot tell who it follows */
+static int acc_step(double *ac, PyObject *ways, const double *pre, double *next, Py_ssize_t n, double dt)
+{
+    Py_ssize_t i = (Py_ssize_t)ac[AC_ENTITY];
+    double speed = pre[i * CR_COLS + CR_SPEED], gap = 0.0, v_lead = 0.0;
+    if (ac[AC_ADDITIVE] != 0.0 && fabs(speed - ac[AC_CURRENT]) > 1e-3) ac[AC_SET_SPEED] = speed;
+    int lead = acc_leader(ac, ways, pre, next, n, i, &gap, &v_lead);
+    if (lead < 0) return 0;
+    double v = vei_acc_speed((const VeiAccParams *)(ac + AC_TIME_GAP), ac[AC_CURRENT], ac[AC_SET_SPEED], lead, gap,
+                             v_lead, ac[AC_MAX_ACCEL], ac[AC_MAX_DECEL], dt);
+    ac[AC_CURRENT] = v;
+    next[i * CR_COLS + CR_SPEED] = v;
+    return 1;
+}
+
 /* a guard of a quiet stretch (cruise.QuietBounds.guard, .guard_distance): road user, the other road user (-1:
  * none; for a distance, the point POINT_X/Y/YAW instead), what is compared, the comparison (conditions.RULE_CODES)
  * and its value; a distance's freespace flag (between boxes, not reference points) */
@@ -1499,33 +1641,35 @@ static const double *table_rows(PyObject *bytes, Py_ssize_t cols, const char *na
     return (const double *)PyBytes_AS_STRING(bytes);
 }
 
-/* cruise(ways, state, syncs, keeps, programs, guards, times, max_turn, dt) -> (n, poses, state, syncs, keeps): up to
- * n_max steps (times: the simulation time at the start of each) of every road user (ways: per road
+/* cruise(ways, state, syncs, keeps, accs, programs, guards, times, max_turn, dt) -> (n, poses, state, syncs, keeps,
+ * accs): up to n_max steps (times: the simulation time at the start of each) of every road user (ways: per road
  * user its Road (mode 1), its Polyline (mode 2) or None), the kept distances (KP_COLS each) placing their road
  * users first, then the synchronisations (SY_COLS each) and the running transitions of SpeedActions setting
- * their entities' speeds before each move; stops before a step
+ * their entities' speeds before each move, and the adaptive cruises (AC_COLS each) setting theirs as their road
+ * users' turns to move come; stops before a step
  * that is not quiet, ends a synchronisation, changes what a guard compares or which pairs overlap. poses: n x users x (x, y,
  * yaw, metres moved, speed, acceleration); state, syncs: the columns after the n steps. The metres moved
  * and the odometer are vei_hypot's, as the interpreter's own steps measure them (the module's hypot). */
 static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
 {
-    if (!args_ok(nargs, 9, "cruise")) return NULL;
-    PyObject *ways = args[0], *state = args[1], *syncs = args[2], *keep_cols = args[3], *progs = args[4];
-    PyObject *guard_cols = args[5], *clock = args[6];
-    double max_turn = PyFloat_AsDouble(args[7]), dt = PyFloat_AsDouble(args[8]);
+    if (!args_ok(nargs, 10, "cruise")) return NULL;
+    PyObject *ways = args[0], *state = args[1], *syncs = args[2], *keep_cols = args[3], *acc_cols = args[4];
+    PyObject *progs = args[5], *guard_cols = args[6], *clock = args[7];
+    double max_turn = PyFloat_AsDouble(args[8]), dt = PyFloat_AsDouble(args[9]);
     if (PyErr_Occurred()) return NULL;
     if (!PyTuple_Check(ways) || !PyBytes_Check(state) || !PyBytes_Check(syncs) || !PyBytes_Check(keep_cols) ||
-        !PyBytes_Check(progs) || !PyBytes_Check(guard_cols) || !PyBytes_Check(clock) ||
+        !PyBytes_Check(acc_cols) || !PyBytes_Check(progs) || !PyBytes_Check(guard_cols) || !PyBytes_Check(clock) ||
         !(dt > 0)) {
-        PyErr_SetString(PyExc_TypeError, "cruise(ways tuple, state bytes, syncs bytes, keeps bytes, programs bytes, "
-                                         "guards bytes, times bytes, max_turn, dt > 0)");
+        PyErr_SetString(PyExc_TypeError, "cruise(ways tuple, state bytes, syncs bytes, keeps bytes, accs bytes, "
+                                         "programs bytes, guards bytes, times bytes, max_turn, dt > 0)");
         return NULL;
     }
-    Py_ssize_t n_keeps, n_guards, n_sync;
+    Py_ssize_t n_keeps, n_guards, n_sync, n_accs;
     const double *keeps0 = table_rows(keep_cols, KP_COLS, "keeps", &n_keeps);
+    const double *accs0 = table_rows(acc_cols, AC_COLS, "accs", &n_accs);
     const double *guards = table_rows(guard_cols, GD_COLS, "guards", &n_guards);
     const double *sy0 = table_rows(syncs, SY_COLS, "syncs", &n_sync);
-    if (!keeps0 || !guards || !sy0) return NULL;
+    if (!keeps0 || !accs0 || !guards || !sy0) return NULL;
     /* times: the simulation time at the start of each step it may take */
     const double *times = (const double *)PyBytes_AS_STRING(clock);
     long n_max = (long)(PyBytes_GET_SIZE(clock) / (Py_ssize_t)sizeof(double));
@@ -1599,15 +1743,29 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
         }
     }
     size_t m = (size_t)(n > 0 ? n : 1);
-    size_t keep_bytes = sizeof(double) * KP_COLS * (size_t)n_keeps;
+    for (Py_ssize_t k = 0; k < n_accs; k++) {
+        double a = accs0[k * AC_COLS + AC_ENTITY];
+        const double *e = st0 + (Py_ssize_t)(a >= 0 && a < n ? a : 0) * CR_COLS;
+        int taken = 0;
+        for (Py_ssize_t q = 0; q < n_keeps; q++) taken |= keeps0[q * KP_COLS + KP_ENTITY] == a;
+        for (Py_ssize_t q = 0; q < n_sync; q++) taken |= sy0[q * SY_COLS + SY_ENTITY] == a;
+        for (Py_ssize_t q = 0; q < k; q++) taken |= accs0[q * AC_COLS + AC_ENTITY] == a;
+        if (!(a >= 0 && a < n && a == floor(a)) || e[CR_MODE] != MODE_LANE || e[CR_PROFILE] >= 0 || taken) {
+            PyErr_SetString(PyExc_ValueError, "cruise: an adaptive cruise's road user is there, keeps its lane, and no "
+                                              "transition, keep, synchronisation or other cruise sets its speed");
+            return NULL;
+        }
+    }
+    size_t keep_bytes = sizeof(double) * KP_COLS * (size_t)n_keeps, acc_bytes = sizeof(double) * AC_COLS * (size_t)n_accs;
     double *cur = PyMem_Malloc(sizeof(double) * (CR_COLS * m * 3 + SY_COLS * (size_t)(n_sync + 1) * 2 +
-                                                 KP_COLS * (size_t)(n_keeps + 1) * 2 + m));
+                                                 KP_COLS * (size_t)(n_keeps + 1) * 2 + m + AC_COLS * (size_t)(n_accs + 1) * 2));
+    Py_ssize_t *acc_of = PyMem_Malloc(sizeof(Py_ssize_t) * m); /* each road user's cruise (-1: none) */
     VeiBox *box = PyMem_Malloc(sizeof(VeiBox) * m);
     int *pairs = PyMem_Malloc(sizeof(int) * m * m * 2);
     int *first = PyMem_Malloc(sizeof(int) * (size_t)(n_guards + 1)); /* what each guard says at the start */
     PyObject *poses = PyBytes_FromStringAndSize(NULL, (Py_ssize_t)(sizeof(double) * 6 * m * (size_t)n_max));
-    if (!cur || !box || !pairs || !first || !poses) {
-        PyMem_Free(cur), PyMem_Free(box), PyMem_Free(pairs), PyMem_Free(first);
+    if (!cur || !acc_of || !box || !pairs || !first || !poses) {
+        PyMem_Free(cur), PyMem_Free(acc_of), PyMem_Free(box), PyMem_Free(pairs), PyMem_Free(first);
         Py_XDECREF(poses);
         return PyErr_NoMemory();
     }
@@ -1615,7 +1773,11 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
     double *placed = next + CR_COLS * m, *sync = placed + CR_COLS * m, *sync_next = sync + SY_COLS * (size_t)(n_sync + 1);
     double *keeps = sync_next + SY_COLS * (size_t)(n_sync + 1), *keeps_next = keeps + KP_COLS * (size_t)(n_keeps + 1);
     double *speed_now = keeps_next + KP_COLS * (size_t)(n_keeps + 1); /* (the speeds as the keeps set them) */
+    double *accs = speed_now + m, *accs_next = accs + AC_COLS * (size_t)(n_accs + 1);
     memcpy(keeps, keeps0, keep_bytes);
+    memcpy(accs, accs0, acc_bytes);
+    for (Py_ssize_t i = 0; i < n; i++) acc_of[i] = -1;
+    for (Py_ssize_t k = 0; k < n_accs; k++) acc_of[(Py_ssize_t)accs0[k * AC_COLS + AC_ENTITY]] = k;
     size_t sync_bytes = sizeof(double) * SY_COLS * (size_t)n_sync;
     int *pairs0 = pairs, *pairs1 = pairs + m * m;
     memcpy(cur, st0, sizeof(double) * CR_COLS * (size_t)n);
@@ -1648,6 +1810,7 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
         }
         memcpy(next, pre, sizeof(double) * CR_COLS * (size_t)n);
         memcpy(sync_next, sync, sync_bytes);
+        memcpy(accs_next, accs, acc_bytes);
         for (Py_ssize_t k = 0; k < n_keeps; k++) {
             const double *kp = keeps_next + k * KP_COLS;
             double v = speed_now[(Py_ssize_t)kp[KP_ENTITY]];
@@ -1661,8 +1824,9 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
         for (Py_ssize_t i = 0; i < n && quiet; i++)
             if (pre[i * CR_COLS + CR_PROFILE] >= 0)
                 quiet = profile_speed(pre + i * CR_COLS, times[done], times[done] + dt, &next[i * CR_COLS + CR_SPEED]);
-        for (Py_ssize_t i = 0; i < n && quiet; i++) {
-            quiet = cruise_move(PyTuple_GET_ITEM(ways, i), pre + i * CR_COLS, times[done], max_turn, dt, next + i * CR_COLS);
+        for (Py_ssize_t i = 0; i < n && quiet; i++) { /* (in the interpreter's order: a cruise sees those before it moved) */
+            if (acc_of[i] >= 0) quiet = acc_step(accs_next + acc_of[i] * AC_COLS, ways, pre, next, n, dt);
+            if (quiet) quiet = cruise_move(PyTuple_GET_ITEM(ways, i), pre + i * CR_COLS, times[done], max_turn, dt, next + i * CR_COLS);
         }
         for (double chain = 1; chain <= max_chain && quiet; chain++) /* (trailers front to back) */
             for (Py_ssize_t i = 0; i < n && quiet; i++) {
@@ -1696,12 +1860,14 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
         memcpy(cur, next, sizeof(double) * CR_COLS * (size_t)n);
         memcpy(sync, sync_next, sync_bytes);
         memcpy(keeps, keeps_next, keep_bytes);
+        memcpy(accs, accs_next, acc_bytes);
     }
     PyObject *result = NULL;
     if (_PyBytes_Resize(&poses, (Py_ssize_t)(sizeof(double) * 6 * (size_t)n * (size_t)done)) == 0)
-        result = Py_BuildValue("(lNy#y#y#)", done, poses, (const char *)cur, (Py_ssize_t)(sizeof(double) * CR_COLS * n),
-                               (const char *)sync, (Py_ssize_t)sync_bytes, (const char *)keeps, (Py_ssize_t)keep_bytes);
-    PyMem_Free(cur), PyMem_Free(box), PyMem_Free(pairs), PyMem_Free(first);
+        result = Py_BuildValue("(lNy#y#y#y#)", done, poses, (const char *)cur, (Py_ssize_t)(sizeof(double) * CR_COLS * n),
+                               (const char *)sync, (Py_ssize_t)sync_bytes, (const char *)keeps, (Py_ssize_t)keep_bytes,
+                               (const char *)accs, (Py_ssize_t)acc_bytes);
+    PyMem_Free(cur), PyMem_Free(acc_of), PyMem_Free(box), PyMem_Free(pairs), PyMem_Free(first);
     return result;
 }
 
@@ -1885,10 +2051,15 @@ static PyMethodDef module_methods[] = {
     F(sfm_step, "sfm_step(x, y, vx, vy, waypoint, route_x, route_y, params, repulsive, ego_box, dt) -> state"),
     F(cap_step, "cap_step(brake, integral, prev_error, params, cruise, v, ttc, resume_ttc, dt) -> (state, a, d_safe)"),
     F(longitudinal_step, "longitudinal_step(s, v, a, a_cmd, max_accel, max_decel, jerk_max, dt) -> (s, v, a)"),
+    F(acc_speed, "acc_speed(params, v, set_speed, lead, gap, v_lead, max_accel, max_decel, dt) -> the adaptive cruise's speed"),
+    F(acc_lookahead, "acc_lookahead(params, v, max_decel) -> how far ahead the adaptive cruise looks for a leader"),
+    F(bumper_gap, "bumper_gap(ds, own_length, own_center_x, other_length, other_center_x, same_way) -> m"),
+    F(box_gaps, "box_gaps(own_box, other_box) -> (along, across) gaps between two boxes in the first's frame"),
+    F(close_ahead, "close_ahead(x_gap, y_gap, other_length, closing) -> whether a box just ahead is followed"),
     F(time_to_conflict, "time_to_conflict(ego_box, ego_speed, margin, threat_box, vx, vy[, horizon]) -> s"),
     F(time_to_contact, "time_to_contact(box_a, vxa, vya, box_b, vxb, vyb) -> s"),
     {"overlapping", overlapping, METH_O, "overlapping(boxes) -> pairs (i, j) of overlapping boxes"},
-    F(cruise, "cruise(ways, state, syncs, keeps, programs, guards, times, max_turn, dt) -> (n, poses, state, syncs, keeps): quiet steps in one call"),
+    F(cruise, "cruise(ways, state, syncs, keeps, accs, programs, guards, times, max_turn, dt) -> (n, poses, state, syncs, keeps, accs): quiet steps in one call"),
     F(transition_fraction, "transition_fraction(shape, x) -> how far a transition of SHAPES code shape has come at x"),
     {"transition_speed", (PyCFunction)(void (*)(void))transition_speed_, METH_FASTCALL,
      "transition_speed(v0, v1, t0, duration, shape, t) -> (speed, over): a SpeedAction's transition at t"},
@@ -1939,12 +2110,14 @@ PyMODINIT_FUNC PyInit__core(void)
     static const char *const road_user[] = {ROAD_USER_COLUMNS(COLUMN_NAME) NULL};
     static const char *const sync[] = {SYNC_COLUMNS(COLUMN_NAME) NULL};
     static const char *const guard[] = {GUARD_COLUMNS(COLUMN_NAME) NULL}, *const keep[] = {KEEP_COLUMNS(COLUMN_NAME) NULL};
+    static const char *const acc[] = {ACC_COLUMNS(COLUMN_NAME) NULL};
     static const char *const quantity[] = {GUARD_QUANTITIES(COLUMN_NAME) NULL};
     static const char *const mode[] = {MODES(COLUMN_NAME) NULL}, *const shape[] = {SHAPES(COLUMN_NAME) NULL};
     static const char *const rule[] = {RULES(COLUMN_NAME) NULL};
     static const char *const sync_mode[] = {SYNC_MODES(COLUMN_NAME) NULL};
-    PyObject *layout = Py_BuildValue("{s:N,s:N,s:N,s:N,s:N,s:N,s:N,s:N,s:N}", "road_user", names_tuple(road_user),
-                                     "sync", names_tuple(sync), "keep", names_tuple(keep), "guard", names_tuple(guard),
+    PyObject *layout = Py_BuildValue("{s:N,s:N,s:N,s:N,s:N,s:N,s:N,s:N,s:N,s:N}", "road_user", names_tuple(road_user),
+                                     "sync", names_tuple(sync), "keep", names_tuple(keep), "acc", names_tuple(acc),
+                                     "guard", names_tuple(guard),
                                      "guard_quantity", names_tuple(quantity), "mode", names_tuple(mode), "shape",
                                      names_tuple(shape), "rule", names_tuple(rule), "sync_mode", names_tuple(sync_mode));
     if (!layout || PyModule_AddObject(m, "CRUISE_LAYOUT", layout) < 0 ||

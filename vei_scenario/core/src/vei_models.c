@@ -301,6 +301,60 @@ double vei_threat_time_to_conflict(const VeiBox *ego, double ego_speed, double m
 }
 
 /* ---------------------------------------------------------------------------------------------- */
+/* Python's min(a, b) and max(a, b) of two floats (the first unless the second is smaller, larger): the
+ * adaptive cruise is played by the interpreter through these functions, so the clamps keep its order */
+static double first_min(double a, double b) { return b < a ? b : a; }
+static double first_max(double a, double b) { return b > a ? b : a; }
+
+double vei_acc_speed(const VeiAccParams *p, double v, double set_speed, int lead, double gap, double v_lead,
+                     double max_accel, double max_decel, double dt) {
+    if (!lead) { /* towards the set speed, not past it */
+        double a = (set_speed - v) * p->approach_gain * max_accel;
+        a = first_min(first_max(a, -max_decel), p->approach_gain * max_accel);
+        double v1 = v + a * dt;
+        return fabs(v1 - set_speed) > fabs(v - set_speed) ? set_speed : v1;
+    }
+    if (gap < p->stop_gap_m) return 0.0; /* (esmini's last resort) */
+    double follow = p->min_gap_m + p->time_gap_s * fabs(first_max(v, v_lead));
+    double f = first_min(1.0, (gap - follow) / follow);
+    double dv_set = v - set_speed, dv_min = v - first_min(set_speed, v_lead);
+    double a = p->distance_gain_mps2 * f - f * dv_set - (1.0 - f) * dv_min;
+    a = first_min(first_max(a, -max_decel), max_accel);
+    return first_min(first_max(0.0, v + a * dt), set_speed);
+}
+
+double vei_acc_lookahead(const VeiAccParams *p, double v, double max_decel) {
+    return first_max(50.0, 2 * p->min_gap_m + v * v / first_max(max_decel, 1e-9));
+}
+
+double vei_bumper_gap(double ds, double own_length, double own_center_x, double other_length, double other_center_x,
+                      int same_way) {
+    double own_front = 0.5 * own_length + own_center_x;
+    double other_near = same_way ? 0.5 * other_length - other_center_x : 0.5 * other_length + other_center_x;
+    return ds - own_front - other_near;
+}
+
+/* the signed gap between [-half, half] and [centre - extent, centre + extent], 0 where they overlap */
+static double interval_gap(double centre, double extent, double half) {
+    if (centre - extent > half) return centre - extent - half;
+    if (centre + extent < -half) return centre + extent + half;
+    return 0.0;
+}
+
+void vei_box_gaps(const VeiBox *own, const VeiBox *other, double *along, double *across) {
+    double c = cos(own->yaw), s = sin(own->yaw);
+    double dx = other->x - own->x, dy = other->y - own->y;
+    double a = c * dx + s * dy, b = -s * dx + c * dy;
+    double cd = fabs(cos(other->yaw - own->yaw)), sd = fabs(sin(other->yaw - own->yaw));
+    *along = interval_gap(a, 0.5 * (other->length * cd + other->width * sd), 0.5 * own->length);
+    *across = interval_gap(b, 0.5 * (other->length * sd + other->width * cd), 0.5 * own->width);
+}
+
+int vei_close_ahead(double x_gap, double y_gap, double other_length, double closing) {
+    return 0.0 < x_gap && x_gap < 1.0 + other_length + 0.5 * first_max(0.0, closing) && -0.5 < y_gap && y_gap < 0.2;
+}
+
+/* ---------------------------------------------------------------------------------------------- */
 void vei_longitudinal_step(VeiLongitudinal *st, double a_cmd, const VeiVehicleLimits *lim, double dt) {
     double target = dmax(-lim->max_decel_mps2, dmin(lim->max_accel_mps2, a_cmd));
     /* the stop ramp (vehicle.py stop_ramp): ease off the braking at the jerk limit before standstill */

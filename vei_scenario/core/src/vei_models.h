@@ -74,6 +74,26 @@ double vei_trig_time_to_conflict_within(const VeiTrigBox *ego, double ego_speed,
 double vei_threat_time_to_conflict(const VeiBox *ego, double ego_speed, double margin, const VeiBox *threat,
                                    double threat_vx, double threat_vy);
 
+/* --- adaptive cruise (vei_scenario.models.acc: esmini's ACCController and ALKSController) --- */
+typedef struct {
+    double time_gap_s, lateral_dist_m, min_gap_m, approach_gain, distance_gain_mps2, stop_gap_m;
+} VeiAccParams;
+
+/* The speed after one step of dt from v (acc_speed): towards set_speed with nobody to follow (lead 0),
+ * else behind a leader at bumper-to-bumper `gap` driving at v_lead. */
+double vei_acc_speed(const VeiAccParams *p, double v, double set_speed, int lead, double gap, double v_lead,
+                     double max_accel, double max_decel, double dt);
+/* How far ahead along the lane a leader is looked for (AccParameters.lookahead_m). */
+double vei_acc_lookahead(const VeiAccParams *p, double v, double max_decel);
+/* The gap between the ego's front and the other's near end from the distance ds between their
+ * reference points along the lane (bumper_gap). */
+double vei_bumper_gap(double ds, double own_length, double own_center_x, double other_length, double other_center_x,
+                      int same_way);
+/* The gaps between two boxes along and across the first one's heading (box_gaps). */
+void vei_box_gaps(const VeiBox *own, const VeiBox *other, double *along, double *across);
+/* An entity just ahead of the ego's box that the lane test may miss (close_ahead). */
+int vei_close_ahead(double x_gap, double y_gap, double other_length, double closing);
+
 /* --- longitudinal vehicle (vei_scenario.models.vehicle) --- */
 typedef struct { double s, v, a; } VeiLongitudinal;
 typedef struct { double max_accel_mps2, max_decel_mps2, jerk_max_mps3; } VeiVehicleLimits;
