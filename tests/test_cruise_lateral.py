@@ -115,3 +115,70 @@ def test_a_lane_change_ends_where_the_stepped_run_ends_it(tmp_path, monkeypatch)
     k = int(np.argmax(np.isclose(ego.speed, 6.0)))
     assert 4.0 <= fast.t[k] <= 4.04, fast.t[k]
     assert ego.y[k] == pytest.approx(ego.y[0] - 3.5, abs=1e-6) and ego.yaw[k] == pytest.approx(0.0, abs=1e-9)
+
+
+def _road_lane(lane_id: int, width: str, link: str = "") -> str:
+    return f'<lane id="{lane_id}" type="driving">{link}<width sOffset="0" {width}/></lane>'
+
+
+def _links(pred: int | None, succ: int | None) -> str:
+    ends = (f'<predecessor id="{pred}"/>' if pred else "") + (f'<successor id="{succ}"/>' if succ else "")
+    return f"<link>{ends}</link>"
+
+
+WIDE = 'a="3.5" b="0" c="0" d="0"'
+OPENING = (
+    '<width sOffset="0" a="0" b="0" c="0.0065625" d="-0.000109375"/><width sOffset="40" a="3.5" b="0" c="0" d="0"/>'
+)
+#: Three lane sections: two lanes, then a third one opening on the right (from 0 to 3.5 m over 40 m,
+#: smoothly)
+#: and running on to 200 m, then two lanes again; lanes linked across the sections.
+SECTIONS = f"""<OpenDRIVE><header revMajor="1" revMinor="6"/><road id="1" length="300" junction="-1">
+<planView><geometry s="0" x="0" y="0" hdg="0" length="300"><line/></geometry></planView><lanes>
+<laneSection s="0"><center><lane id="0" type="none"/></center><right>{_road_lane(-1, WIDE, _links(None, -1))}
+{_road_lane(-2, WIDE, _links(None, -2))}</right></laneSection>
+<laneSection s="60"><center><lane id="0" type="none"/></center><right>{_road_lane(-1, WIDE, _links(-1, -1))}
+{_road_lane(-2, WIDE, _links(-2, -2))}<lane id="-3" type="driving">{OPENING}</lane></right></laneSection>
+<laneSection s="200"><center><lane id="0" type="none"/></center><right>{_road_lane(-1, WIDE, _links(-1, None))}
+{_road_lane(-2, WIDE, _links(-2, None))}</right></laneSection></lanes></road></OpenDRIVE>"""
+
+
+#: The same with the new lane opening between lanes -1 and -2 of the first section: their -2 is the
+#: second section's -3 (a lane change to -2 named in the first section heads for the second's -3, its
+#: centre pushed out as the lane between opens).
+BETWEEN = f"""<OpenDRIVE><header revMajor="1" revMinor="6"/><road id="1" length="300" junction="-1">
+<planView><geometry s="0" x="0" y="0" hdg="0" length="300"><line/></geometry></planView><lanes>
+<laneSection s="0"><center><lane id="0" type="none"/></center><right>{_road_lane(-1, WIDE, _links(None, -1))}
+{_road_lane(-2, WIDE, _links(None, -3))}</right></laneSection>
+<laneSection s="60"><center><lane id="0" type="none"/></center><right>{_road_lane(-1, WIDE, _links(-1, -1))}
+<lane id="-2" type="driving">{OPENING}</lane>{_road_lane(-3, WIDE, _links(-2, -2))}</right></laneSection>
+<laneSection s="200"><center><lane id="0" type="none"/></center><right>{_road_lane(-1, WIDE, _links(-1, None))}
+{_road_lane(-2, WIDE, _links(-3, None))}</right></laneSection></lanes></road></OpenDRIVE>"""
+
+
+@pytest.mark.parametrize(
+    "road, target, start, y_end, least",
+    [
+        (SECTIONS, '<AbsoluteTargetLane value="-3"/>', 5.0, (-8.75, -8.75), 0.97),  # into the lane that opened
+        # from the first section on into the second: the steps beyond the first are the interpreter's (all
+        # of the lane change's were before: 0.74 of the run)
+        (SECTIONS, '<AbsoluteTargetLane value="-2"/>', 3.0, (-5.25, -5.25), 0.8),
+        (BETWEEN, '<AbsoluteTargetLane value="-2"/>', 3.0, (-8.75, -7.0), 0.8),
+    ],
+)
+def test_a_lane_change_across_lane_sections(tmp_path, monkeypatch, road, target, start, y_end, least):
+    """The target lane's centre is taken within the section the lane change named it in (the
+    interpreter maps the lane where the road user passes into another section): the core takes the
+    steps inside that section and leaves the ones beyond it to the interpreter."""
+    path = scenario(tmp_path, _lane_change(target, "cubic", "distance", 50.0), start, ego_v=12.0)
+    (tmp_path / "arc.xodr").write_text(road)
+    other = 'laneId="-2" s="60" offset="0"'  # (Other ahead in lane -1, clear of the lane that opens)
+    path.write_text(path.read_text().replace(other, 'laneId="-1" s="150" offset="0"'))
+    fast, cruised, slow = run_both(path, monkeypatch)
+    assert_identical(fast, slow)
+    ego = fast.traces["Ego"]
+    after = np.flatnonzero(np.isclose(ego.speed, 6.0))
+    assert after.size and fast.t[after[0]] > start + 3.0  # the lane change ended (over 50 m at 12 m/s)
+    k = after[0]
+    assert y_end[0] - 1e-6 <= ego.y[k] <= y_end[1] + 1e-6, ego.y[k]
+    assert cruised > least * len(fast.t), f"only {cruised} of {len(fast.t)} steps cruised"

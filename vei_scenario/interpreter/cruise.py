@@ -231,27 +231,26 @@ def _columns(
 
 def _lateral(ctx, e) -> dict[str, float] | None:
     """The core columns of ``e``'s running lane change or lane offset (actions.LaneChangeRuntime), or
-    None when the core does not take it: off a lane, a step shape, already complete, or a target lane
-    section whose span the core would not read as the runtime does."""
+    None when the core does not take it: off a lane, a step shape, already complete."""
     rt, st = e.lateral, e.lane
     if st is None or e.follower is not None or rt.shape not in _SHAPES or not rt.value > 0:
         return None
     if rt.start_rel is None or rt.fraction >= 1.0 or rt.dimension not in ("time", "distance"):
         return None
     road = ctx.roads.road(st.road)
-    lo, hi = -math.inf, math.inf  # (LaneChangeRuntime._t: the target's centre held within its section)
+    # (LaneChangeRuntime._t: the target's centre held within its section; the core leaves a step where
+    # that puts it in another section, whose lanes the interpreter maps, to the interpreter)
+    lo, hi, section = -math.inf, math.inf, -1.0
     where = rt.target_where
     if where is not None and where[0] == road.id and where[1] < len(road.sections):
-        lo, hi = road.section_span(where[1])
-        if road.section_index(lo) != where[1] or road.section_index(hi) != where[1]:
-            return None
+        (lo, hi), section = road.section_span(where[1]), float(where[1])
     prev = rt.prev_xy if rt.prev_xy is not None else (math.nan, math.nan)
     return {
         "LATERAL": 1.0, "LAT_SHAPE": _SHAPES[rt.shape], "LAT_BY_TIME": 1.0 if rt.dimension == "time" else 0.0,
         "LAT_VALUE": rt.value, "LAT_T0": rt.t0, "LAT_ODO0": rt.odo0, "LAT_AHEAD": float(rt.steps_ahead),
         "LAT_PROJECTS": 1.0 if rt.projects_step else 0.0, "LAT_TARGET_LANE": float(rt.target_lane),
         "LAT_TARGET_OFFSET": rt.target_offset, "LAT_START_REL": rt.start_rel, "LAT_LO": lo, "LAT_HI": hi,
-        "LAT_FRACTION": rt.fraction, "PREV_X": prev[0], "PREV_Y": prev[1],
+        "LAT_SECTION": section, "LAT_FRACTION": rt.fraction, "PREV_X": prev[0], "PREV_Y": prev[1],
     }  # fmt: skip
 
 

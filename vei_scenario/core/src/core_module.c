@@ -899,7 +899,7 @@ static PyObject *overlapping(PyObject *mod, PyObject *arg)
  * shape (SHAPE_*), whether its progress is by time (else by distance), its length in that, start time and
  * odometer, the steps ahead its progress is taken at, whether only the along-road part of a step moves s,
  * the target lane, its offset, where it started from the target lane's centre, the target lane section's
- * span (the target's centre is taken within it), its progress so far, and the position it headed from
+ * span and index (the target's centre is taken within it; -1: on another road, taken where it is), its progress so far, and the position it headed from
  * (NaN: none yet) */
 /* (each table's columns are listed once: their names reach Python as _core.CRUISE_LAYOUT, which
  * interpreter/cruise.py and synchronize.py build and read the columns by) */
@@ -909,7 +909,7 @@ static PyObject *overlapping(PyObject *mod, PyObject *arg)
     F(PROFILE_T0) F(PROFILE_DURATION) F(TIME_BASE) F(TIME_SCALE) F(TIME_OFFSET) F(TIME_END) F(MAX_ACCEL)       \
     F(MAX_DECEL) F(ACCEL) F(TOW) F(HITCH) F(COUPLER) F(CHAIN) F(LATERAL) F(LAT_SHAPE) F(LAT_BY_TIME)           \
     F(LAT_VALUE) F(LAT_T0) F(LAT_ODO0) F(LAT_AHEAD) F(LAT_PROJECTS) F(LAT_TARGET_LANE) F(LAT_TARGET_OFFSET)    \
-    F(LAT_START_REL) F(LAT_LO) F(LAT_HI) F(LAT_FRACTION) F(PREV_X) F(PREV_Y)
+    F(LAT_START_REL) F(LAT_LO) F(LAT_HI) F(LAT_SECTION) F(LAT_FRACTION) F(PREV_X) F(PREV_Y)
 #define CR_ENUM(name) CR_##name,
 enum { ROAD_USER_COLUMNS(CR_ENUM) CR_COLS };
 #define COLUMN_NAME(name) #name,
@@ -1277,6 +1277,8 @@ static int lateral_step(const vr_road *r, const double *e, double t, double ds, 
     x = x > 0.0 ? x : 0.0;
     if (x >= 1.0) return 0; /* (it completes: the interpreter's step, and its action's end) */
     double f = shape_fraction(e[CR_LAT_SHAPE], x), s_in = fmin(fmax(s1, e[CR_LAT_LO]), e[CR_LAT_HI]);
+    /* (held where the target's section maps its lane to another one's: Road.lane_center_t_in's, the interpreter's) */
+    if (e[CR_LAT_SECTION] >= 0 && vr_section_index(r, s_in) != (int)e[CR_LAT_SECTION]) return 0;
     if (vr_lane_center_t(r, s_in, (int)e[CR_LAT_TARGET_LANE], &c_target) < 0 || vr_lane_center_t(r, s1, lane, &c_here) < 0)
         return 0;
     double offset = c_target + (1 - f) * e[CR_LAT_START_REL] + f * e[CR_LAT_TARGET_OFFSET] - c_here;
