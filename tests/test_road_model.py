@@ -225,3 +225,29 @@ def test_a_road_without_an_id_is_refused_naming_its_line(tmp_path):
     with pytest.raises(VeiInputError) as info:
         RoadNetwork.load(path)
     assert str(info.value).startswith(f"{path}: line 2: ") and "needs an id" in str(info.value)
+
+
+def test_a_lane_renamed_in_the_next_section_is_posed_up_to_its_end(tmp_path):
+    """A lane whose id changes at a section boundary (a merge: -2 goes on as -1) is posed right up to
+    the boundary: the heading's estimate of where its centre drifts stays within the section (it asked
+    the next section for lane -2 within 5 cm of the boundary, and a car keeping that lane stopped the
+    run with KeyError -2)."""
+    closing = '<width sOffset="0" a="3.5" b="0" c="-0.0042" d="5.6e-05"/>'  # (3.5 m to 0 over 50 m)
+    wide = '<width sOffset="0" a="3.5" b="0" c="0" d="0"/>'
+    xodr = tmp_path / "merge.xodr"
+    xodr.write_text(
+        '<OpenDRIVE><header revMajor="1" revMinor="6"/><road id="1" length="200" junction="-1"><planView>'
+        '<geometry s="0" x="0" y="0" hdg="0" length="200"><line/></geometry></planView><lanes>'
+        '<laneSection s="0"><center><lane id="0" type="none"/></center><right>'
+        f'<lane id="-1" type="driving">{closing}</lane>'
+        f'<lane id="-2" type="driving"><link><successor id="-1"/></link>{wide}</lane></right></laneSection>'
+        '<laneSection s="50"><center><lane id="0" type="none"/></center><right>'
+        f'<lane id="-1" type="driving"><link><predecessor id="-2"/></link>{wide}</lane></right></laneSection>'
+        "</lanes></road></OpenDRIVE>"
+    )
+    road = RoadNetwork.load(xodr).road("1")
+    for s in np.linspace(49.9, 50.0 - 1e-7, 101):
+        x, y, heading, t = road.lane_pose(s, -2, 0.0)
+        assert t == pytest.approx(-1.75, abs=1e-3) and abs(heading) < 1e-3, s
+    x, y, heading, t = road.lane_pose(50.0, -1, 0.0)  # (and on as -1 beyond)
+    assert t == pytest.approx(-1.75)

@@ -15,7 +15,7 @@ from vei_scenario.errors import VeiInputError
 from vei_scenario.interpreter.action_base import Action
 from vei_scenario.interpreter.clock import step_time
 from vei_scenario.interpreter.controllers import make_controller
-from vei_scenario.interpreter.entities import PathFollower, SpeedProfile, transition_fraction
+from vei_scenario.interpreter.entities import PathFollower, SpeedProfile, lane_change_turn, transition_fraction
 from vei_scenario.interpreter.positions import POSITION_KINDS, entity_lane, lane_id, lane_shift, lane_state_at, tilt
 from vei_scenario.interpreter.positions import resolve as resolve_position
 from vei_scenario.interpreter.shapes import placed_when_built, polyline_from
@@ -73,8 +73,8 @@ class LaneChangeRuntime:
         steps_ahead: int = 1,
     ) -> None:
         """``projects_step``: s advances by the along-road part of each step (esmini's lane change; its
-        lane offset keeps the full step). ``steps_ahead``: the progress applied in a step is that at its
-        end (1, lane change) or at its start (0, lane offset: no motion in the first step)."""
+        lane offset keeps the full step). ``steps_ahead``: the progress over time applied in a step is that at
+        its end (1, lane change) or at its start (0, lane offset: no motion in the first step)."""
         self.start_lane, self.start_offset = start_lane, start_offset
         self.target_lane, self.target_offset = target_lane, target_offset
         self.shape, self.dimension, self.value = shape, dimension, value
@@ -83,6 +83,10 @@ class LaneChangeRuntime:
         self.projects_step, self.steps_ahead = projects_step, steps_ahead
         self.prev_xy: tuple[float, float] | None = None  # where the entity was a step ago
         self.start_rel: float | None = None  # its start, from the target lane's centre
+        #: a lane change over distance: how far along the road it has come (its steps' along-road parts)
+        self.param = 0.0
+        #: its action's place in the storyboard (Context.acting)
+        self.order = 0.0
 
     def pause(self, dt: float) -> None:
         """A step in which the transition does not progress (its road user stands): one over time
@@ -92,8 +96,26 @@ class LaneChangeRuntime:
     def progress(self, e, ctx) -> float:
         if self.value <= 0 or self.shape == "step":
             return 1.0
-        done = (ctx.t + self.steps_ahead * ctx.dt - self.t0) if self.dimension == "time" else (e.odometer - self.odo0)
+        if self.dimension == "time":
+            done = ctx.t + self.steps_ahead * ctx.dt - self.t0
+        else:
+            done = self.param if self.projects_step else e.odometer - self.odo0
         return min(max(done / self.value, 0.0), 1.0)
+
+    def step_heading(self, ds: float, ctx) -> float:
+        """A lane change's heading in a step of ``ds`` metres, from its lane's direction (towards
+        increasing t), as esmini 3.6 steps it (:func:`~vei_scenario.interpreter.entities.lane_change_turn`:
+        from the lateral rate where the step starts); over distance its progress then advances by the
+        step's along-road part, ``|ds|·cos(heading)``."""
+        if self.value <= 0 or self.shape == "step" or self.start_rel is None:
+            return 0.0
+        by_time = self.dimension == "time"
+        done = ctx.t + (self.steps_ahead - 1) * ctx.dt - self.t0 if by_time else self.param
+        x = min(max(done / self.value, 0.0), 1.0)
+        h = lane_change_turn(self.shape, by_time, self.target_offset - self.start_rel, self.value, x, ctx.dt, ds)
+        if not by_time:
+            self.param += abs(ds) * math.cos(h)
+        return h
 
     #: (road, section index) the start and target lane ids belong to (set by the action)
     start_where: tuple[str, int] | None = None
@@ -201,6 +223,7 @@ class LaneChange(Action):
             e.odometer,
         )
         e.lateral.start_where, e.lateral.target_where = (road.id, here), where
+        e.lateral.order = ctx.acting
         # the entity now keeps the target lane, named as in its own lane section where it has a name
         mapped = road.map_lane(lane, where[1], here) if where[0] == road.id else None
         if mapped is not None or lane in road.section(st.s).lanes:
@@ -399,7 +422,7 @@ class Speed(Action):
             self.done = True
             return
         e.take_longitudinal(self, ctx)
-        e.speed_profile = SpeedProfile(v0, v1, ctx.t, duration, self.shape)
+        e.speed_profile = SpeedProfile(v0, v1, ctx.t, duration, self.shape, ctx.acting)
         if duration == 0.0:
             e.speed = v1
 

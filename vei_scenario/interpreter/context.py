@@ -43,6 +43,9 @@ class Context:
     #: document; inf after the trigger pass): a transition is seen by the triggers after it in the
     #: step it happens, by those before it in the next (storyboard.Element.mark).
     position: float = math.inf
+    #: The document place of the storyboard action starting now (0: an Init action): esmini steps running
+    #: actions in that order, so a lane change sees the speed a SpeedAction before it has set this step.
+    acting: float = 0.0
     #: What the run played differently from what the file asks, in the words of :meth:`warn` (a
     #: controller vei has no model for, played as the default controller as esmini plays it).
     warnings: list[str] = field(default_factory=list)

@@ -35,7 +35,9 @@ _COLS = len(_ROAD_USER)
 _MODE, _S, _LANE, _X, _Y, _YAW, _SPEED, _ODO, _PROFILE, _ACCEL = (
     _ROAD_USER[n] for n in ("MODE", "S", "LANE", "X", "Y", "YAW", "SPEED", "ODOMETER", "PROFILE", "ACCEL")
 )
-_OFFSET, _FRACTION, _PREV_X, _PREV_Y = (_ROAD_USER[n] for n in ("OFFSET", "LAT_FRACTION", "PREV_X", "PREV_Y"))
+_OFFSET, _FRACTION, _PARAM, _PREV_X, _PREV_Y = (
+    _ROAD_USER[n] for n in ("OFFSET", "LAT_FRACTION", "LAT_PARAM", "PREV_X", "PREV_Y")
+)
 #: A road user's mode in the core (core_module.c: MODE_*): straight on, its lane, its path, its timed
 #: path in position or in follow mode, towed; and what the interpreter records it doing in each.
 _STRAIGHT, _LANE_MODE, _PATH, _TIMED, _TIMED_FOLLOW, _TOWED = (
@@ -232,7 +234,7 @@ def _columns(
 def _lateral(ctx, e) -> dict[str, float] | None:
     """The core columns of ``e``'s running lane change or lane offset (actions.LaneChangeRuntime), or
     None when the core does not take it: off a lane, a step shape, already complete."""
-    rt, st = e.lateral, e.lane
+    rt, st, p = e.lateral, e.lane, e.speed_profile
     if st is None or e.follower is not None or rt.shape not in _SHAPES or not rt.value > 0:
         return None
     if rt.start_rel is None or rt.fraction >= 1.0 or rt.dimension not in ("time", "distance"):
@@ -250,7 +252,9 @@ def _lateral(ctx, e) -> dict[str, float] | None:
         "LAT_VALUE": rt.value, "LAT_T0": rt.t0, "LAT_ODO0": rt.odo0, "LAT_AHEAD": float(rt.steps_ahead),
         "LAT_PROJECTS": 1.0 if rt.projects_step else 0.0, "LAT_TARGET_LANE": float(rt.target_lane),
         "LAT_TARGET_OFFSET": rt.target_offset, "LAT_START_REL": rt.start_rel, "LAT_LO": lo, "LAT_HI": hi,
-        "LAT_SECTION": section, "LAT_FRACTION": rt.fraction, "PREV_X": prev[0], "PREV_Y": prev[1],
+        "LAT_SECTION": section, "LAT_FRACTION": rt.fraction, "LAT_PARAM": rt.param,
+        "LAT_OLD_SPEED": float(rt.projects_step and p is not None and p.order > rt.order),
+        "PREV_X": prev[0], "PREV_Y": prev[1],
     }  # fmt: skip
 
 
@@ -528,7 +532,7 @@ def _commit(ctx, entities: list, poses, state, statuses: list[str], n: int) -> N
         elif e.lane is not None:
             e.lane.s, e.lane.lane = col[_S], int(col[_LANE])
             if e.lateral is not None:  # (a lane change or offset under way)
-                e.lane.offset, e.lateral.fraction = col[_OFFSET], col[_FRACTION]
+                e.lane.offset, e.lateral.fraction, e.lateral.param = col[_OFFSET], col[_FRACTION], col[_PARAM]
                 e.lateral.prev_xy = None if math.isnan(col[_PREV_X]) else (col[_PREV_X], col[_PREV_Y])
         if e.towed_by is not None:  # (trailers.pull: a trailer's standstill is not counted)
             continue

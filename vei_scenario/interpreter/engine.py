@@ -323,13 +323,19 @@ class Simulation:
             e.status = "follow" if follow else "replay"
             return
         v0 = e.step_speed  # (an action stepped before the move may have set the speed already)
-        if e.speed_profile is not None:
-            v, finished = e.speed_profile.speed(t_next)
+        profile = e.speed_profile
+        if profile is not None:
+            v, finished = profile.speed(t_next)
             e.speed = v
             if finished:
                 e.speed_profile = None
         e.accel = (e.speed - v0) / dt
         ds = e.speed * dt  # esmini's default controller: the step's new speed over the whole step
+        lateral = e.lateral
+        if profile is not None and lateral is not None and lateral.projects_step and profile.order > lateral.order:
+            # esmini steps a lane change before a SpeedAction after it in the storyboard: its step is
+            # at the speed the step began with
+            ds = v0 * dt
         if f is None:  # (projecting onto the network is costly: only once it drives by lane)
             ensure_lane(ctx, e)
         if e.lane is not None and f is None:

@@ -134,6 +134,13 @@ def transition_fraction(shape: str, x: float) -> float:
     return _core.transition_fraction(SHAPE_CODES.get(shape, -1.0), x)
 
 
+def lane_change_turn(shape: str, by_time: bool, delta: float, value: float, x: float, dt: float, ds: float) -> float:
+    """A lane change's heading from its lane's direction in a step of ``ds`` metres at progress ``x``
+    (``delta`` metres sideways over ``value`` seconds or metres): the core's, the one its quiet
+    stretches take."""
+    return _core.lane_change_turn(SHAPE_CODES.get(shape, -1.0), by_time, delta, value, x, dt, ds)
+
+
 @dataclass
 class SpeedProfile:
     """A running SpeedAction: speed from v0 to v1 over ``duration`` with a transition shape."""
@@ -143,6 +150,7 @@ class SpeedProfile:
     t0: float
     duration: float
     shape: str
+    order: float = 0.0  # its SpeedAction's place in the storyboard (Context.acting)
 
     def speed(self, t: float) -> tuple[float, bool]:
         """(The speed at ``t``, whether the transition is over): the core's transition_speed, the one

@@ -41,9 +41,12 @@ def lane_keep(e, ds: float, ctx) -> None:
             return
     # ds is travelled along the lane: scale to reference-line arc length where the lane is offset on a curve
     stretch = road.lane_stretch(st.s, st.lane, st.offset)
+    turn = None  # (a lane change's heading in this step, from its lane's direction towards increasing t)
     if e.lateral is not None and e.lateral.projects_step:  # only the along-road part of the step moves s
-        road_h = road.ref_pose(st.s)[2] + (0.0 if forward else math.pi)
-        ds *= abs(math.cos(e.yaw - road_h))
+        turn = e.lateral.step_heading(ds, ctx)
+        ds *= math.cos(turn)
+        # (the along-road part taken at the offset the step brings it to: esmini shifts it there first)
+        stretch = road.lane_stretch(st.s, st.lane, e.lateral.offset(e, ctx, road))
     s = st.s + (ds if forward else -ds) / stretch
     hops = 0
     while s > road.length or s < 0.0:
@@ -79,7 +82,10 @@ def lane_keep(e, ds: float, ctx) -> None:
     base = base if forward else base + math.pi
     e.yaw = _lane_yaw(base, st.heading)
     if e.lateral is not None and moved > 1e-9:
-        e.yaw = e.lateral.heading(e, base)
+        if turn is None:  # (a lane offset heads where it moves)
+            e.yaw = e.lateral.heading(e, base)
+        elif e.lateral.fraction < 1.0:  # (along its lane again on the step that completes it)
+            e.yaw = _lane_yaw(base, turn if forward else -turn)
 
 
 def _lane_yaw(base: float, heading: float) -> float:

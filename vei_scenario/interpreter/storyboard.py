@@ -429,8 +429,10 @@ class Storyboard:
 
     def _act_event(self, ev: Element) -> None:
         for a in ev.children:
+            self.ctx.acting = a.order
             for act in a.actions:
                 act.start(self.ctx)
+        self.ctx.acting = 0.0
 
     def step(self) -> bool:
         """Advance states; False when the storyboard has ended."""

@@ -899,7 +899,9 @@ static PyObject *overlapping(PyObject *mod, PyObject *arg)
  * shape (SHAPE_*), whether its progress is by time (else by distance), its length in that, start time and
  * odometer, the steps ahead its progress is taken at, whether only the along-road part of a step moves s,
  * the target lane, its offset, where it started from the target lane's centre, the target lane section's
- * span and index (the target's centre is taken within it; -1: on another road, taken where it is), its progress so far, and the position it headed from
+ * span and index (the target's centre is taken within it; -1: on another road, taken where it is), its progress so far,
+ * a lane change's progress along the road (over distance), whether it steps at the speed its step began with (a
+ * SpeedAction after it in the storyboard sets the speed: esmini steps it later), and the position it headed from
  * (NaN: none yet) */
 /* (each table's columns are listed once: their names reach Python as _core.CRUISE_LAYOUT, which
  * interpreter/cruise.py and synchronize.py build and read the columns by) */
@@ -909,7 +911,8 @@ static PyObject *overlapping(PyObject *mod, PyObject *arg)
     F(PROFILE_T0) F(PROFILE_DURATION) F(TIME_BASE) F(TIME_SCALE) F(TIME_OFFSET) F(TIME_END) F(MAX_ACCEL)       \
     F(MAX_DECEL) F(ACCEL) F(TOW) F(HITCH) F(COUPLER) F(CHAIN) F(LATERAL) F(LAT_SHAPE) F(LAT_BY_TIME)           \
     F(LAT_VALUE) F(LAT_T0) F(LAT_ODO0) F(LAT_AHEAD) F(LAT_PROJECTS) F(LAT_TARGET_LANE) F(LAT_TARGET_OFFSET)    \
-    F(LAT_START_REL) F(LAT_LO) F(LAT_HI) F(LAT_SECTION) F(LAT_FRACTION) F(PREV_X) F(PREV_Y)
+    F(LAT_START_REL) F(LAT_LO) F(LAT_HI) F(LAT_SECTION) F(LAT_FRACTION) F(LAT_PARAM) F(LAT_OLD_SPEED) F(PREV_X)  \
+    F(PREV_Y)
 #define CR_ENUM(name) CR_##name,
 enum { ROAD_USER_COLUMNS(CR_ENUM) CR_COLS };
 #define COLUMN_NAME(name) #name,
@@ -928,6 +931,27 @@ static double shape_fraction(double shape, double x)
     if (shape == SHAPE_CUBIC) return x * x * (3 - 2 * x);
     if (shape == SHAPE_SINUSOIDAL) return 0.5 * (1 - cos(M_PI * x));
     return x;
+}
+
+/* the slope of shape_fraction at x (how fast a transition moves per unit of progress there) */
+static double shape_slope(double shape, double x)
+{
+    if (shape == SHAPE_CUBIC) return 6 * x * (1 - x);
+    if (shape == SHAPE_SINUSOIDAL) return 0.5 * M_PI * sin(M_PI * x);
+    return 1.0;
+}
+
+/* A lane change's heading from its lane's direction (towards increasing t) in a step of ds metres, as
+ * esmini 3.6 steps it (measured against its trajectories): from the lateral rate at progress x (where the
+ * step starts) of a transition of `delta` metres sideways over `value` seconds (by_time) or metres, over
+ * time asin(rate / speed), over distance atan(rate per metre along the road). LaneChangeRuntime.step_heading
+ * (the interpreter's steps) and lateral_step (the core's) both take it here. */
+static double lane_change_turn(double shape, int by_time, double delta, double value, double x, double dt, double ds)
+{
+    double rate = delta * shape_slope(shape, x) / value;
+    if (!by_time) return atan(rate);
+    double r = rate * dt / fabs(ds);
+    return asin(r < -1.0 ? -1.0 : r > 1.0 ? 1.0 : r);
 }
 
 /* A SpeedAction's speed at time t of its transition from v0 at t0 to v1 over duration, of shape SHAPE_*
@@ -1260,35 +1284,54 @@ static double lane_yaw(double base, double heading)
     return atan2(s, c);
 }
 
-/* motion.lane_keep with a running lane change or lane offset (LaneChangeRuntime.offset and .heading), on
- * one road in one lane: 0 (not quiet) where the step leaves either, or where its transition completes */
+/* LaneChangeRuntime.offset at s for a transition come to fraction f: from the target lane's centre (held
+ * within its section), going from where it started to the target offset, less the centre of the lane it
+ * keeps; 0 where the core leaves that to the interpreter (the target's section maps its lane) */
+static int lateral_offset(const vr_road *r, const double *e, double s, double f, double *offset)
+{
+    double c_target, c_here, s_in = fmin(fmax(s, e[CR_LAT_LO]), e[CR_LAT_HI]);
+    /* (held where the target's section maps its lane to another one's: Road.lane_center_t_in's, the interpreter's) */
+    if (e[CR_LAT_SECTION] >= 0 && vr_section_index(r, s_in) != (int)e[CR_LAT_SECTION]) return 0;
+    if (vr_lane_center_t(r, s_in, (int)e[CR_LAT_TARGET_LANE], &c_target) < 0 ||
+        vr_lane_center_t(r, s, (int)e[CR_LANE], &c_here) < 0)
+        return 0;
+    *offset = c_target + (1 - f) * e[CR_LAT_START_REL] + f * e[CR_LAT_TARGET_OFFSET] - c_here;
+    return 1;
+}
+
+/* motion.lane_keep with a running lane change or lane offset (LaneChangeRuntime), on one road in one lane: a
+ * lane change moves s by the along-road part of its step at the heading its lateral rate gives
+ * (lane_change_turn; over distance its progress advances by that part), taken at the offset the step brings
+ * it to, and heads so; a lane offset heads where it moves. 0 (not quiet) where the step leaves the road or
+ * lane, or where the transition completes */
 static int lateral_step(const vr_road *r, const double *e, double t, double ds, double dt, double *next)
 {
     int lane = (int)e[CR_LANE], lane1, forward = e[CR_FORWARD] != 0.0;
-    double s1, out[4], c_target, c_here;
-    if (e[CR_LAT_PROJECTS] != 0.0) { /* only the along-road part of the step moves s */
-        double ref[3];
-        vr_ref_pose(r, e[CR_S], ref);
-        ds *= fabs(cos(e[CR_YAW] - (ref[2] + (forward ? 0.0 : M_PI))));
+    int projects = e[CR_LAT_PROJECTS] != 0.0, by_time = e[CR_LAT_BY_TIME] != 0.0;
+    double s1, out[4], turn = 0.0, param = e[CR_LAT_PARAM], along_offset = e[CR_OFFSET], value = e[CR_LAT_VALUE];
+    if (projects) { /* (LaneChangeRuntime.step_heading) */
+        double x0 = (by_time ? t + (e[CR_LAT_AHEAD] - 1) * dt - e[CR_LAT_T0] : param) / value;
+        x0 = fmin(fmax(x0, 0.0), 1.0);
+        turn = lane_change_turn(e[CR_LAT_SHAPE], by_time, e[CR_LAT_TARGET_OFFSET] - e[CR_LAT_START_REL], value, x0, dt, ds);
+        if (!by_time) param += fabs(ds) * cos(turn);
+        ds *= cos(turn);
     }
-    if (lane_advance_s(r, e[CR_S], lane, e[CR_OFFSET], ds, forward, &s1, &lane1) != 1 || lane1 != lane) return 0;
-    double done = e[CR_LAT_BY_TIME] != 0.0 ? t + e[CR_LAT_AHEAD] * dt - e[CR_LAT_T0] : e[CR_ODOMETER] - e[CR_LAT_ODO0];
-    double x = done / e[CR_LAT_VALUE];
+    double done = by_time ? t + e[CR_LAT_AHEAD] * dt - e[CR_LAT_T0] : projects ? param : e[CR_ODOMETER] - e[CR_LAT_ODO0];
+    double x = done / value, offset;
     x = x > 0.0 ? x : 0.0;
     if (x >= 1.0) return 0; /* (it completes: the interpreter's step, and its action's end) */
-    double f = shape_fraction(e[CR_LAT_SHAPE], x), s_in = fmin(fmax(s1, e[CR_LAT_LO]), e[CR_LAT_HI]);
-    /* (held where the target's section maps its lane to another one's: Road.lane_center_t_in's, the interpreter's) */
-    if (e[CR_LAT_SECTION] >= 0 && vr_section_index(r, s_in) != (int)e[CR_LAT_SECTION]) return 0;
-    if (vr_lane_center_t(r, s_in, (int)e[CR_LAT_TARGET_LANE], &c_target) < 0 || vr_lane_center_t(r, s1, lane, &c_here) < 0)
-        return 0;
-    double offset = c_target + (1 - f) * e[CR_LAT_START_REL] + f * e[CR_LAT_TARGET_OFFSET] - c_here;
-    if (vr_lane_pose(r, s1, lane, offset, out) < 0) return 0;
+    double f = shape_fraction(e[CR_LAT_SHAPE], x);
+    if (projects && !lateral_offset(r, e, e[CR_S], f, &along_offset)) return 0;
+    if (lane_advance_s(r, e[CR_S], lane, along_offset, ds, forward, &s1, &lane1) != 1 || lane1 != lane) return 0;
+    if (!lateral_offset(r, e, s1, f, &offset) || vr_lane_pose(r, s1, lane, offset, out) < 0) return 0;
     double base = forward ? out[2] : out[2] + M_PI, moved = hypot(out[0] - e[CR_X], out[1] - e[CR_Y]);
     if (near_threshold(moved, 1e-9)) return 0;
-    next[CR_S] = s1, next[CR_OFFSET] = offset, next[CR_LAT_FRACTION] = x;
+    next[CR_S] = s1, next[CR_OFFSET] = offset, next[CR_LAT_FRACTION] = x, next[CR_LAT_PARAM] = param;
     next[CR_X] = out[0], next[CR_Y] = out[1];
     next[CR_YAW] = lane_yaw(base, e[CR_HEADING]);
-    if (moved > 1e-9) { /* it heads where it moves (from where it last headed from) */
+    if (moved > 1e-9 && projects) {
+        next[CR_YAW] = lane_yaw(base, forward ? turn : -turn);
+    } else if (moved > 1e-9) { /* it heads where it moves (from where it last headed from) */
         double px = e[CR_PREV_X], py = e[CR_PREV_Y];
         next[CR_PREV_X] = out[0], next[CR_PREV_Y] = out[1];
         if (isnan(px)) {
@@ -1313,6 +1356,7 @@ static int cruise_move(PyObject *way, const double *e, double t, double max_turn
     }
     double speed = next[CR_SPEED], ds = speed * dt;
     if ((fabs(speed) < 1e-9) != (fabs(e[CR_SPEED]) < 1e-9)) return 0;
+    if (mode == MODE_LANE && e[CR_LATERAL] != 0.0 && e[CR_LAT_OLD_SPEED] != 0.0 && e[CR_PROFILE] >= 0) ds = e[CR_SPEED] * dt;
     if (mode == MODE_STRAIGHT) {
         double c, s;
         vr_cos_sin(e[CR_YAW], &c, &s);
@@ -1911,6 +1955,21 @@ static PyObject *transition_fraction(PyObject *mod, PyObject *const *args, Py_ss
     return PyFloat_FromDouble(shape_fraction(shape, x));
 }
 
+/* lane_change_turn(shape, by_time, delta, value, x, dt, ds) -> a lane change's heading in a step (lane_change_turn) */
+static PyObject *lane_change_turn_(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (!args_ok(nargs, 7, "lane_change_turn")) return NULL;
+    ARG_D(0, shape);
+    int by_time = PyObject_IsTrue(args[1]);
+    if (by_time < 0) return NULL;
+    ARG_D(2, delta);
+    ARG_D(3, value);
+    ARG_D(4, x);
+    ARG_D(5, dt);
+    ARG_D(6, ds);
+    return PyFloat_FromDouble(lane_change_turn(shape, by_time, delta, value, x, dt, ds));
+}
+
 /* box_distance(box_a, box_b) -> the shortest distance between two boxes (0 where they touch): box_gap, for
  * the interpreter's conditions (the one the core's guards measure) */
 static PyObject *box_distance_(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
@@ -2063,6 +2122,8 @@ static PyMethodDef module_methods[] = {
     {"overlapping", overlapping, METH_O, "overlapping(boxes) -> pairs (i, j) of overlapping boxes"},
     F(cruise, "cruise(ways, state, syncs, keeps, accs, programs, guards, times, max_turn, dt) -> (n, poses, state, syncs, keeps, accs): quiet steps in one call"),
     F(transition_fraction, "transition_fraction(shape, x) -> how far a transition of SHAPES code shape has come at x"),
+    {"lane_change_turn", (PyCFunction)(void (*)(void))lane_change_turn_, METH_FASTCALL,
+     "lane_change_turn(shape, by_time, delta, value, x, dt, ds) -> a lane change's heading from its lane in a step"},
     {"transition_speed", (PyCFunction)(void (*)(void))transition_speed_, METH_FASTCALL,
      "transition_speed(v0, v1, t0, duration, shape, t) -> (speed, over): a SpeedAction's transition at t"},
     {"towed_pose", (PyCFunction)(void (*)(void))towed_pose_, METH_FASTCALL,

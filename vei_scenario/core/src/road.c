@@ -270,7 +270,9 @@ int vr_lane_drift(const vr_road *r, double s, int lane_id, double *drift)
     *drift = 0.0;
     if (!r->varying) return 0;
     int k = vr_section_index(r, s);
-    double lo = r->sec_s[k], hi = k + 1 < r->n_sec ? r->sec_s[k + 1] - 1e-9 : r->length;
+    /* (within the section: a micrometre short of the next one, which vr_section_index rounds 1e-9 into, and
+     * where the lane may have another id or none) */
+    double lo = r->sec_s[k], hi = k + 1 < r->n_sec ? r->sec_s[k + 1] - 1e-6 : r->length;
     double a = fmax(s - eps, lo), b = fmin(s + eps, hi);
     if (b <= a || vr_lane_row(r, k, lane_id) < 0) return 0;
     double tb, ta;
