@@ -591,7 +591,10 @@ class TimeHeadway(_EntityCondition):
 
 
 class _HeldCondition(_EntityCondition):
-    """True once the entity's :meth:`holds` has been true without a break for ``duration``."""
+    """True once the entity's :meth:`holds` has been true without a break for ``duration`` (``past``:
+    for longer than it, a step later where it has held exactly that long)."""
+
+    past = False
 
     def __init__(self, el, ctx, triggering, rule) -> None:
         super().__init__(el, ctx, triggering, rule)
@@ -606,6 +609,8 @@ class _HeldCondition(_EntityCondition):
             self.since.pop(name, None)
             return False
         start = self.since.setdefault(name, ctx.t)
+        if self.past:
+            return ctx.t - start > self.duration + 1e-9
         return ctx.t - start >= self.duration - 1e-9
 
 
@@ -715,7 +720,10 @@ DRIVABLE_LANE_TYPES = {
 
 
 class Offroad(_HeldCondition):
-    """OffroadCondition: the entity has been off every drivable lane for ``duration``."""
+    """OffroadCondition: the entity has been off every drivable lane for longer than ``duration`` (esmini
+    3.6 counts it so: its lane_change example's car steers back on a step after it has been off 2.5 s)."""
+
+    past = True
 
     def holds(self, ctx: Context, e) -> bool:
         rp = ctx.roads.project(e.x, e.y) if ctx.roads is not None else None
