@@ -260,3 +260,34 @@ def test_an_unknown_esmini_controller_is_named_in_the_refusal(tmp_path):
     ctrl = ALKS.replace("ALKSController", "SloppyDriverController")
     with pytest.raises(VeiInputError, match=r"'SloppyDriverController' \(an esmini model\) is not supported"):
         run_scenario(_scenario(tmp_path, ctrl, "4"), {}, DT)
+
+
+def test_the_cruise_acts_from_the_step_after_its_activation(tmp_path):
+    """esmini steps a controller from the step after the one it is activated in: activated with a set
+    speed of 10 m/s (the Ego at 60 km/h), the cruise leaves that step to the default motion, at the
+    speed the Ego had, and slows down from the next."""
+    acc = (
+        '<Controller name="Sut"><Properties><Property name="esminiController" value="ACCController"/>'
+        '<Property name="mode" value="override"/><Property name="setSpeed" value="10"/></Properties></Controller>'
+    )
+    path = _scenario(tmp_path, acc, "4")
+    # (activated by the evaluation at 0.01 s: the step to 0.02 s is the default motion's)
+    path.write_text(
+        path.read_text().replace('SimulationTimeCondition value="1.0"', 'SimulationTimeCondition value="0.005"', 1)
+    )
+    ego, v = run_scenario(path, {}, DT).traces["Ego"], 60 / 3.6
+    assert list(ego.status[1:4]) == ["default", "default", "acc"]
+    assert ego.speed[2] == pytest.approx(v) and ego.x[2] - ego.x[1] == pytest.approx(v * DT)
+    assert ego.speed[3] < v - 0.01
+
+
+def test_esminis_alks_example_follows_esmini_from_the_first_step(esmini):
+    """esmini's alks-test (the ALKSController activated in Init, braking at once for a slower car): 0.07 m
+    before the controller waited a step, now within a millimetre."""
+    from vei_scenario.conformance.esmini import compare_runs, run_esmini
+
+    path = esmini.parents[1] / "xosc" / "alks-test.xosc"
+    if not path.is_file():
+        pytest.skip(f"{path} not shipped beside esmini")
+    c = compare_runs(run_scenario(path, {}, DT), run_esmini(esmini, path, DT))
+    assert c.entities and c.max_deviation_m <= 1e-3, c.entities

@@ -238,8 +238,10 @@ class AdaptiveCruiseController(Controller):
             raise ctx.error(el, f"{kind}: virtual mode (acceleration reported, not applied) is not supported")
         self.current = 0.0  # the speed it commands (m/s), from its activation on
         self.set_speed = 0.0
+        self.first_step = -1  # the step it was activated in
 
     def activated(self, e: Entity, ctx, domains: tuple[str, ...]) -> None:
+        self.first_step = ctx.step
         self.current = e.speed
         if self.additive or self.given_set_speed is None:
             self.set_speed = e.speed
@@ -251,6 +253,8 @@ class AdaptiveCruiseController(Controller):
                 e.lane.heading = 0.0
 
     def move(self, e: Entity, ctx, dt: float) -> bool:
+        if ctx.step == self.first_step:  # (esmini steps a controller from the step after its activation)
+            return False
         if self.additive and abs(e.speed - self.current) > 1e-3:  # an action set a speed: the set speed now
             self.set_speed = e.speed  # (overriding, the controller is deaf to speed actions, as in esmini)
         lim = e.limits
@@ -275,7 +279,7 @@ class AdaptiveCruiseController(Controller):
         the leader as :meth:`_leader` does while every road user keeps its lane; it stops before a step
         where it could not tell (a road user changing lanes or off the lanes, the search ahead reaching
         the next road)."""
-        if e.lane is None or e.follower is not None:
+        if e.lane is None or e.follower is not None or ctx.step == self.first_step:
             return None
         road = ctx.roads.road(e.lane.road)
         linked = (road.successor if e.lane.forward else road.predecessor) is not None
