@@ -17,6 +17,7 @@ from test_cruise import CAR, ROAD, assert_identical, on_arc, run_both
 from xosc_parts import step_speed
 
 import vei_scenario.interpreter.engine as engine
+from vei_scenario.interpreter import run_scenario
 
 
 def _controller(kind: str = "ACCController", **props: str) -> str:
@@ -172,3 +173,37 @@ def test_the_search_ahead_onto_the_next_road_is_the_interpreters(tmp_path, monke
     assert roads == {"1", "2"}  # offered on both roads
     lead = r.traces["Lead"]
     assert lead.x[-1] > 210 and calls[-1][0] == "2"  # the lead onto road 2, the ego cruising there
+
+
+@pytest.mark.parametrize("mode, same", [("override", True), ("additive", False)])
+def test_an_override_cruise_moves_after_everyone_else(tmp_path, mode, same):
+    """In override mode esmini's cruise moves its car itself, after every other entity has moved, so it
+    sees the car ahead where that one's step has taken it whichever of them is declared first; in
+    additive mode the car moves in its turn (declared first, it sees the car ahead where it was)."""
+    runs = []
+    for first in (True, False):
+        d = tmp_path / f"{mode}{first}"
+        d.mkdir()
+        props = {"mode": mode, "setSpeed": "20"} if mode == "override" else {}
+        ego = _cruising("Ego", _controller(**props))
+        init = _on_lane("Ego", -1, 10, 20, _activate()) + _on_lane("Lead", -1, 90, 8)
+        path = _arc(d, ("Lead",), [ego], init, _at("stop", "Lead", _brake(0, 3), 5.0), end=12.0)
+        if first:
+            text = path.read_text()
+            path.write_text(text.replace(ego, "").replace("<Entities>", "<Entities>" + ego))
+        runs.append(run_scenario(path))
+    a, b = (r.traces["Ego"] for r in runs)
+    assert np.array_equal(a.x, b.x) == same and np.array_equal(a.speed, b.speed) == same
+    _followed(runs[0], "Ego", 20.0)
+
+
+def test_esminis_acc_example_follows_esmini(esmini):
+    """esmini's acc-test (an ACCController in override mode behind a car that cuts in, brakes and
+    speeds up): 0.15 m while the cruise moved in the entities' order, now within a millimetre."""
+    from vei_scenario.conformance.esmini import compare_runs, run_esmini
+
+    path = esmini.parents[1] / "xosc" / "acc-test.xosc"
+    if not path.is_file():
+        pytest.skip(f"{path} not shipped beside esmini")
+    c = compare_runs(run_scenario(path, {}, 0.01), run_esmini(esmini, path, 0.01))
+    assert c.entities and c.max_deviation_m <= 1e-3, c.entities

@@ -42,6 +42,9 @@ class Controller:
     def __init__(self, name: str, props: dict[str, str], el, ctx) -> None:
         self.name, self.props, self.el = name, props, el
 
+    #: Whether its entity moves after every other one in a step (Simulation's order of moves).
+    moves_last = False
+
     def move(self, e: Entity, ctx, dt: float) -> bool:  # pragma: no cover - interface
         raise NotImplementedError
 
@@ -286,11 +289,19 @@ class AdaptiveCruiseController(Controller):
         p, lim = self.params, e.limits
         values = {"ENTITY": index[e.name], "CURRENT": self.current, "SET_SPEED": self.set_speed,
                   "MAX_ACCEL": lim.max_accel_mps2, "MAX_DECEL": lim.max_decel_mps2,
-                  "ADDITIVE": float(self.additive), "SEQUENTIAL": float(sequential), "LINKED": float(linked),
+                  "ADDITIVE": float(self.additive), "SEQUENTIAL": float(sequential), "LAST": float(self.moves_last),
+                  "LINKED": float(linked),
                   "TIME_GAP": p.time_gap_s, "LATERAL_DIST": p.lateral_dist_m, "MIN_GAP": p.min_gap_m,
                   "APPROACH_GAIN": p.approach_gain, "DISTANCE_GAIN": p.distance_gain_mps2,
                   "STOP_GAP": p.stop_gap_m}  # fmt: skip
         return core_row("acc", values)
+
+    @property
+    def moves_last(self) -> bool:
+        """In override mode esmini's cruise moves its entity itself, in the controller's step, after every
+        other entity has moved (measured: acc-test plays within 1e-4 m so, 0.15 m in the entities'
+        order); in additive mode it sets the speed and the entity moves in its turn."""
+        return not self.additive
 
     def take_core_columns(self, columns) -> None:
         """The speed it commands and its set speed as the core's quiet steps left them."""

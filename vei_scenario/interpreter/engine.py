@@ -182,6 +182,16 @@ KINDS = {"Vehicle": "vehicle", "Pedestrian": "pedestrian", "MiscObject": "misc"}
 OBJECT_TYPE_PROPERTIES = ("objecttype", "type")
 
 
+def _in_moving_order(entities: list) -> list:
+    """The entities in the order they move in a step: as declared, those whose controller moves them after
+    every other one (``Controller.moves_last``: esmini's cruise in override mode) at the end."""
+    last = [e for e in entities if any(c is not None and c.moves_last for c in e.active.values())]
+    if not last:
+        return entities
+    ids = {id(e) for e in last}
+    return [e for e in entities if id(e) not in ids] + last
+
+
 def _as_it_was(e: Entity) -> Entity:
     """A copy of ``e`` that its step leaves as it is: with its own lane state (a step moves the one it
     has in place), so that under Jacobi coupling others read where it was on its lane, not where it is."""
@@ -411,7 +421,7 @@ class Simulation:
                 _act(ctx)
             if self.coupling == "jacobi":
                 ctx.snapshot = {n: _as_it_was(e) for n, e in ctx.entities.items()}
-            for e in entities:
+            for e in _in_moving_order(entities):
                 self._move(e)
             for tow, trailer in trailers.hitches(ctx.entities):
                 trailers.pull(trailer, tow, dt)

@@ -1492,22 +1492,24 @@ static int keep_place(const double *kp, PyObject *ways, double *st, double ref_s
 
 /* an adaptive cruise in charge of a road user on its lane (controllers.AdaptiveCruiseController): its road
  * user, the speed it commands and its set speed, the road user's acceleration limits, whether an action's new
- * speed becomes the set speed (additive), whether it sees the road users before it after their moves
- * (sequential coupling), whether its road leads on ahead (a road or junction linked there), and its parameters
- * (VeiAccParams, in order from TIME_GAP) */
+ * speed becomes the set speed (additive), whether it sees the road users that moved before it after their moves
+ * (sequential coupling), whether its road user moves after every other (override mode: esmini moves it in the
+ * controller's own step), whether its road leads on ahead (a road or junction linked there), and its
+ * parameters (VeiAccParams, in order from TIME_GAP) */
 #define ACC_COLUMNS(F)                                                                                          \
-    F(ENTITY) F(CURRENT) F(SET_SPEED) F(MAX_ACCEL) F(MAX_DECEL) F(ADDITIVE) F(SEQUENTIAL) F(LINKED) F(TIME_GAP) \
-    F(LATERAL_DIST) F(MIN_GAP) F(APPROACH_GAIN) F(DISTANCE_GAIN) F(STOP_GAP)
+    F(ENTITY) F(CURRENT) F(SET_SPEED) F(MAX_ACCEL) F(MAX_DECEL) F(ADDITIVE) F(SEQUENTIAL) F(LAST) F(LINKED)    \
+    F(TIME_GAP) F(LATERAL_DIST) F(MIN_GAP) F(APPROACH_GAIN) F(DISTANCE_GAIN) F(STOP_GAP)
 #define AC_ENUM(name) AC_##name,
 enum { ACC_COLUMNS(AC_ENUM) AC_COLS };
 
 /* AdaptiveCruiseController._leader in the core, for road user i on its lane with every other road user on
  * theirs, not changing lanes (their road points are their lane states): -1 where the core cannot tell (the
  * search along the lane would go on past its road onto the next, or a road user is elsewhere), else whether
- * it follows one, at bumper-to-bumper *gap driving at *v_lead. seen: the road users as it sees them (under
- * sequential coupling those before it after their moves, `next`; else all at the step's start, `pre`). */
-static int acc_leader(const double *ac, PyObject *ways, const double *pre, const double *next, Py_ssize_t n,
-                      Py_ssize_t i, double *gap, double *v_lead)
+ * it follows one, at bumper-to-bumper *gap driving at *v_lead. It sees the road users as the interpreter's
+ * order leaves them: under sequential coupling those that moved already (moved[j]) after their moves, `next`;
+ * else all at the step's start, `pre`. */
+static int acc_leader(const double *ac, PyObject *ways, const double *pre, const double *next, const char *moved,
+                      Py_ssize_t n, Py_ssize_t i, double *gap, double *v_lead)
 {
     const double *e = pre + i * CR_COLS;
     PyObject *way = PyTuple_GET_ITEM(ways, i);
@@ -1521,7 +1523,7 @@ static int acc_leader(const double *ac, PyObject *ways, const double *pre, const
     if (ac[AC_LINKED] != 0.0 && !((forward ? r->length - s : s) > limit)) return -1;
     VeiBox own = row_box(e);
     for (Py_ssize_t j = 0; j < n; j++) {
-        const double *o = (ac[AC_SEQUENTIAL] != 0.0 && j < i ? next : pre) + j * CR_COLS;
+        const double *o = (ac[AC_SEQUENTIAL] != 0.0 && moved[j] ? next : pre) + j * CR_COLS;
         if (j == i || o[CR_MODE] < 0) continue;
         if (o[CR_MODE] != MODE_LANE || o[CR_LATERAL] != 0.0) return -1;
         if (PyTuple_GET_ITEM(ways, j) == way) { /* on its road: how far ahead along its lane */
@@ -1551,12 +1553,13 @@ static int acc_leader(const double *ac, PyObject *ways, const double *pre, const
 
 /* AdaptiveCruiseController.move's speed for the coming step of acc ac's road user i into next (and as the
  * speed it commands); 0 where the core cannot tell who it follows */
-static int acc_step(double *ac, PyObject *ways, const double *pre, double *next, Py_ssize_t n, double dt)
+static int acc_step(double *ac, PyObject *ways, const double *pre, double *next, const char *moved, Py_ssize_t n,
+                    double dt)
 {
     Py_ssize_t i = (Py_ssize_t)ac[AC_ENTITY];
     double speed = pre[i * CR_COLS + CR_SPEED], gap = 0.0, v_lead = 0.0;
     if (ac[AC_ADDITIVE] != 0.0 && fabs(speed - ac[AC_CURRENT]) > 1e-3) ac[AC_SET_SPEED] = speed;
-    int lead = acc_leader(ac, ways, pre, next, n, i, &gap, &v_lead);
+    int lead = acc_leader(ac, ways, pre, next, moved, n, i, &gap, &v_lead);
     if (lead < 0) return 0;
     double v = vei_acc_speed((const VeiAccParams *)(ac + AC_TIME_GAP), ac[AC_CURRENT], ac[AC_SET_SPEED], lead, gap,
                              v_lead, ac[AC_MAX_ACCEL], ac[AC_MAX_DECEL], dt);
@@ -1806,12 +1809,13 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
     double *cur = PyMem_Malloc(sizeof(double) * (CR_COLS * m * 3 + SY_COLS * (size_t)(n_sync + 1) * 2 +
                                                  KP_COLS * (size_t)(n_keeps + 1) * 2 + m + AC_COLS * (size_t)(n_accs + 1) * 2));
     Py_ssize_t *acc_of = PyMem_Malloc(sizeof(Py_ssize_t) * m); /* each road user's cruise (-1: none) */
+    char *moved = PyMem_Malloc(m); /* which road users have moved in the step under way */
     VeiBox *box = PyMem_Malloc(sizeof(VeiBox) * m);
     int *pairs = PyMem_Malloc(sizeof(int) * m * m * 2);
     int *first = PyMem_Malloc(sizeof(int) * (size_t)(n_guards + 1)); /* what each guard says at the start */
     PyObject *poses = PyBytes_FromStringAndSize(NULL, (Py_ssize_t)(sizeof(double) * 6 * m * (size_t)n_max));
-    if (!cur || !acc_of || !box || !pairs || !first || !poses) {
-        PyMem_Free(cur), PyMem_Free(acc_of), PyMem_Free(box), PyMem_Free(pairs), PyMem_Free(first);
+    if (!cur || !acc_of || !moved || !box || !pairs || !first || !poses) {
+        PyMem_Free(cur), PyMem_Free(acc_of), PyMem_Free(moved), PyMem_Free(box), PyMem_Free(pairs), PyMem_Free(first);
         Py_XDECREF(poses);
         return PyErr_NoMemory();
     }
@@ -1870,10 +1874,17 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
         for (Py_ssize_t i = 0; i < n && quiet; i++)
             if (pre[i * CR_COLS + CR_PROFILE] >= 0)
                 quiet = profile_speed(pre + i * CR_COLS, times[done], times[done] + dt, &next[i * CR_COLS + CR_SPEED]);
-        for (Py_ssize_t i = 0; i < n && quiet; i++) { /* (in the interpreter's order: a cruise sees those before it moved) */
-            if (acc_of[i] >= 0) quiet = acc_step(accs_next + acc_of[i] * AC_COLS, ways, pre, next, n, dt);
-            if (quiet) quiet = cruise_move(PyTuple_GET_ITEM(ways, i), pre + i * CR_COLS, times[done], max_turn, dt, next + i * CR_COLS);
-        }
+        /* (in the interpreter's order, a cruise in override mode after everyone else: a cruise sees those that
+         * moved before it after their moves) */
+        memset(moved, 0, (size_t)n);
+        for (int pass = 0; pass < 2 && quiet; pass++)
+            for (Py_ssize_t i = 0; i < n && quiet; i++) {
+                double *ac = acc_of[i] >= 0 ? accs_next + acc_of[i] * AC_COLS : NULL;
+                if ((ac != NULL && ac[AC_LAST] != 0.0) != (pass == 1)) continue;
+                if (ac != NULL) quiet = acc_step(ac, ways, pre, next, moved, n, dt);
+                if (quiet) quiet = cruise_move(PyTuple_GET_ITEM(ways, i), pre + i * CR_COLS, times[done], max_turn, dt, next + i * CR_COLS);
+                moved[i] = 1;
+            }
         for (double chain = 1; chain <= max_chain && quiet; chain++) /* (trailers front to back) */
             for (Py_ssize_t i = 0; i < n && quiet; i++) {
                 double *e = pre + i * CR_COLS;
@@ -1913,7 +1924,7 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
         result = Py_BuildValue("(lNy#y#y#y#)", done, poses, (const char *)cur, (Py_ssize_t)(sizeof(double) * CR_COLS * n),
                                (const char *)sync, (Py_ssize_t)sync_bytes, (const char *)keeps, (Py_ssize_t)keep_bytes,
                                (const char *)accs, (Py_ssize_t)acc_bytes);
-    PyMem_Free(cur), PyMem_Free(acc_of), PyMem_Free(box), PyMem_Free(pairs), PyMem_Free(first);
+    PyMem_Free(cur), PyMem_Free(acc_of), PyMem_Free(moved), PyMem_Free(box), PyMem_Free(pairs), PyMem_Free(first);
     return result;
 }
 
