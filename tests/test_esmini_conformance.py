@@ -91,6 +91,7 @@ def test_timing_offset_reading_matches_esmini(tmp_path, esmini):
 
 #: esmini 3.6 examples that vei plays today within 0.10 m (benchmarks/conformance_esmini.py lists all).
 AGREEING_EXAMPLES = (
+    "acc-test",
     "alks-test",
     "bicycle_fall_over",
     "cut-in",
