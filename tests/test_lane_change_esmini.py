@@ -81,11 +81,12 @@ def test_the_storyboard_order_decides_the_speed_of_a_lane_change_step(tmp_path, 
     assert 0.01 < gap < 0.2, gap  # (2 m/s² × 0.01 s per step over the 2.5 s both run: about 5 cm)
 
 
-#: esmini's own examples with lane changes, and how close each now plays to esmini (the lane change
-#: itself within a millimetre; what remains in lane_change_simple and cut-in_simple are conditions firing
-#: a step apart, see the README): before, 0.04-0.09 m on most of them.
+#: esmini's own examples with lane changes, and how close each now plays to esmini (before, 0.04-0.09 m
+#: on most of them; lane_change_simple keeps 0.012 m late in its 150 s run, after its car is teleported
+#: back to the start of the road and changes lanes again, not analysed further).
 CLOSE = {"two_plus_one_road": 1e-4, "velodrome": 1e-4, "light_state": 1e-4, "lane_change_crest": 1e-3,
-         "lane_change": 1e-3, "cut-in": 5e-3, "lane_change_simple": 0.02, "cut-in_simple": 0.02}  # fmt: skip
+         "lane_change": 1e-3, "cut-in": 5e-3, "lane_change_simple": 0.02, "cut-in_simple": 1e-4,
+         "cut-in_visibility": 5e-3}  # fmt: skip
 
 
 @pytest.mark.parametrize("name", sorted(CLOSE))

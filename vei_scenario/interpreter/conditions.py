@@ -569,13 +569,13 @@ class TimeHeadway(_EntityCondition):
         self.target = el.get("entityRef")
         self.freespace = el.get("freespace", "false") == "true"
         # OpenSCENARIO 1.1 coordinateSystem and relativeDistanceType as the distance conditions read them;
-        # 1.0 alongRoute: false straight, true (or nothing said) along the triggering entity's heading.
-        # (The standard's "along the route" took esmini's cut-in examples 0.25 m away: esmini 3.6 ignores
-        # alongRoute and measures straight, which the heading's reading is within a step of.)
+        # without them the euclidean distance (the standard's distance where none is said), whatever 1.0's
+        # deprecated alongRoute says, as esmini 3.6 reads it (measured: its cut-in examples play within
+        # 2 mm so; "along the route" put them 0.25 m away, and "along the heading" a step apart)
         if el.get("coordinateSystem") is not None or el.get("relativeDistanceType") is not None:
             self.kind = _distance_kind(ctx, el)
         else:
-            self.kind = "euclidianDistance" if el.get("alongRoute") == "false" else "longitudinal"
+            self.kind = "euclidianDistance"
         known_entity(ctx, el, self.target)
 
     def for_entity(self, ctx: Context, name: str) -> bool:
