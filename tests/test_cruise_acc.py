@@ -14,7 +14,7 @@ import math
 import numpy as np
 import pytest
 from test_cruise import CAR, ROAD, assert_identical, on_arc, run_both
-from xosc_parts import step_speed
+from xosc_parts import speed_action, step_speed
 
 import vei_scenario.interpreter.engine as engine
 from vei_scenario.interpreter import run_scenario
@@ -58,11 +58,7 @@ def _at(name: str, actor: str, private: str, when: float) -> str:
 
 
 def _brake(target: float, rate: float) -> str:
-    return (
-        '<PrivateAction><LongitudinalAction><SpeedAction><SpeedActionDynamics dynamicsShape="linear" '
-        f'value="{rate}" dynamicsDimension="rate"/><SpeedActionTarget><AbsoluteTargetSpeed value="{target}"/>'
-        "</SpeedActionTarget></SpeedAction></LongitudinalAction></PrivateAction>"
-    )
+    return speed_action(target, "linear", rate, "rate")
 
 
 def _cut_in(lane: int) -> str:

@@ -15,6 +15,7 @@ import numpy as np
 import pytest
 from test_cruise import assert_identical, run_both
 from test_cruise_lateral import CASES, _event, _time, scenario
+from xosc_parts import speed_action
 
 from vei_scenario.interpreter import run_scenario
 
@@ -37,20 +38,12 @@ def test_a_lane_change_follows_esmini_to_two_millimetres(tmp_path, esmini, case)
     assert ego.max_deviation_m <= 2e-3, (case, ego)
 
 
-def _speed_change(v: float, seconds: float) -> str:
-    return (
-        '<PrivateAction><LongitudinalAction><SpeedAction><SpeedActionDynamics dynamicsShape="linear" '
-        f'value="{seconds}" dynamicsDimension="time"/><SpeedActionTarget><AbsoluteTargetSpeed value="{v}"/>'
-        "</SpeedActionTarget></SpeedAction></LongitudinalAction></PrivateAction>"
-    )
-
-
 def accelerating(tmp_path, speed_first: bool):
     """The Ego changes lanes (sinusoidal, 3 s from 1 s) while it speeds up from 14 to 20 m/s (from
     1.5 s over 3 s); the SpeedAction's event before or after the lane change's in the storyboard."""
     action, start = CASES["sinusoidal_time"]
     path = scenario(tmp_path, action, start)
-    speed = _event("Faster", "Ego", _speed_change(20.0, 3.0), _time(1.5))
+    speed = _event("Faster", "Ego", speed_action(20.0, "linear", 3.0), _time(1.5))
     text = path.read_text()
     if speed_first:
         text = text.replace('<Act name="a">', '<Act name="a">' + speed, 1)

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from xosc_parts import speed_action
 
 from vei_scenario.interpreter import Simulation, load_scenario
 
@@ -25,12 +26,6 @@ def _scenario(tmp_path) -> object:
         f"<right>{lane.format(i=-1)}{lane.format(i=-2)}</right></laneSection></lanes></road></OpenDRIVE>"
     )
 
-    def speed(v: float, shape: str, value: float, dim: str) -> str:
-        return (
-            f'<PrivateAction><LongitudinalAction><SpeedAction><SpeedActionDynamics dynamicsShape="{shape}" value="{value}" dynamicsDimension="{dim}"/>'
-            f'<SpeedActionTarget><AbsoluteTargetSpeed value="{v}"/></SpeedActionTarget></SpeedAction></LongitudinalAction></PrivateAction>'
-        )
-
     def event(name: str, action: str, at: float) -> str:
         return (
             f'<Event name="{name}" priority="parallel"><Action name="{name}A">{action}</Action><StartTrigger><ConditionGroup>'
@@ -44,15 +39,15 @@ def _scenario(tmp_path) -> object:
     )
     events = (
         event("change", change, 1.0)
-        + event("brake", speed(0.0, "linear", 20.0, "rate"), 1.0)
-        + event("go", speed(10.0, "step", 0.0, "time"), 4.0)
+        + event("brake", speed_action(0.0, "linear", 20.0, "rate"), 1.0)
+        + event("go", speed_action(10.0), 4.0)
     )
     xosc = f"""<?xml version="1.0"?><OpenSCENARIO><FileHeader revMajor="1" revMinor="2" date="2024-01-01T00:00:00" description="s" author="t"/>
 <ParameterDeclarations/><CatalogLocations/><RoadNetwork><LogicFile filepath="road.xodr"/></RoadNetwork>
 <Entities><ScenarioObject name="Car"><Vehicle name="c" vehicleCategory="car"><BoundingBox><Center x="1.4" y="0" z="0.9"/><Dimensions width="2" length="5" height="1.8"/></BoundingBox>
 <Performance maxSpeed="69" maxDeceleration="30" maxAcceleration="30"/><Axles><FrontAxle maxSteering="0.5" wheelDiameter="0.8" trackWidth="1.68" positionX="2.98" positionZ="0.4"/>
 <RearAxle maxSteering="0" wheelDiameter="0.8" trackWidth="1.68" positionX="0" positionZ="0.4"/></Axles><Properties/></Vehicle></ScenarioObject></Entities>
-<Storyboard><Init><Actions><Private entityRef="Car">{speed(20.0, "step", 0.0, "time")}<PrivateAction><TeleportAction><Position><LanePosition roadId="1" laneId="-1" offset="0" s="10"/></Position></TeleportAction></PrivateAction></Private></Actions></Init>
+<Storyboard><Init><Actions><Private entityRef="Car">{speed_action(20.0)}<PrivateAction><TeleportAction><Position><LanePosition roadId="1" laneId="-1" offset="0" s="10"/></Position></TeleportAction></PrivateAction></Private></Actions></Init>
 <Story name="S"><Act name="A"><ManeuverGroup maximumExecutionCount="1" name="G"><Actors selectTriggeringEntities="false"><EntityRef entityRef="Car"/></Actors><Maneuver name="M">{events}</Maneuver></ManeuverGroup>
 <StartTrigger><ConditionGroup><Condition name="s" delay="0" conditionEdge="none"><ByValueCondition><SimulationTimeCondition value="0" rule="greaterOrEqual"/></ByValueCondition></Condition></ConditionGroup></StartTrigger></Act></Story>
 <StopTrigger><ConditionGroup><Condition name="end" delay="0" conditionEdge="rising"><ByValueCondition><SimulationTimeCondition value="9" rule="greaterOrEqual"/></ByValueCondition></Condition></ConditionGroup></StopTrigger></Storyboard></OpenSCENARIO>"""

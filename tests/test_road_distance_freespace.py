@@ -12,7 +12,7 @@ analytically on a straight road and against esmini where it is present."""
 from __future__ import annotations
 
 import pytest
-from xosc_parts import step_speed
+from xosc_parts import step_speed, vehicle
 
 from vei_scenario.interpreter import run_scenario
 
@@ -24,14 +24,7 @@ ROAD = """<OpenDRIVE><header revMajor="1" revMinor="6"/><road id="1" length="100
 
 
 def _car(name: str, center_x: float, length: float) -> str:
-    return (
-        f'<ScenarioObject name="{name}"><Vehicle name="{name}" vehicleCategory="car"><BoundingBox>'
-        f'<Center x="{center_x}" y="0" z="0.7"/><Dimensions width="1.8" length="{length}" height="1.4"/></BoundingBox>'
-        '<Performance maxSpeed="60" maxAcceleration="10" maxDeceleration="10"/><Axles>'
-        '<FrontAxle maxSteering="0.5" wheelDiameter="0.6" trackWidth="1.6" positionX="2.8" positionZ="0.3"/>'
-        '<RearAxle maxSteering="0" wheelDiameter="0.6" trackWidth="1.6" positionX="0" positionZ="0.3"/></Axles>'
-        "<Properties/></Vehicle></ScenarioObject>"
-    )
+    return f'<ScenarioObject name="{name}">{vehicle(name, center_x, length)}</ScenarioObject>'
 
 
 def _at(name: str, s: float, v: float) -> str:

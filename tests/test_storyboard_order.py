@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from xosc_parts import speed_action
 
 from vei_scenario.interpreter import run_scenario
 
@@ -33,13 +34,6 @@ CAR = (
     '<Axles><FrontAxle maxSteering="0.5" wheelDiameter="0.8" trackWidth="1.68" positionX="2.98" positionZ="0.4"/>'
     '<RearAxle maxSteering="0" wheelDiameter="0.8" trackWidth="1.68" positionX="0" positionZ="0.4"/></Axles><Properties/></Vehicle></ScenarioObject>'
 )
-
-
-def _speed(v: float, shape: str = "step", value: float = 0.0) -> str:
-    return (
-        f'<PrivateAction><LongitudinalAction><SpeedAction><SpeedActionDynamics dynamicsShape="{shape}" value="{value}" dynamicsDimension="time"/>'
-        f'<SpeedActionTarget><AbsoluteTargetSpeed value="{v}"/></SpeedActionTarget></SpeedAction></LongitudinalAction></PrivateAction>'
-    )
 
 
 def _act(name: str, actor: str, events: str) -> str:
@@ -73,7 +67,7 @@ def _scenario(tmp_path, acts: list[str], variables: str = "") -> object:
     xosc = f"""<?xml version="1.0"?><OpenSCENARIO><FileHeader revMajor="1" revMinor="2" date="2024-01-01T00:00:00" description="o" author="t"/>
 <ParameterDeclarations/>{variables}<CatalogLocations/><RoadNetwork><LogicFile filepath="road.xodr"/></RoadNetwork>
 <Entities>{CAR.format(n="A1")}{CAR.format(n="A2")}</Entities><Storyboard><Init><Actions>
-<Private entityRef="A1">{_speed(25.0)}{teleport.format(l=-1, s=10)}</Private>
+<Private entityRef="A1">{speed_action(25.0)}{teleport.format(l=-1, s=10)}</Private>
 <Private entityRef="A2">{teleport.format(l=1, s=1500)}</Private></Actions></Init>
 <Story name="S">{"".join(acts)}</Story>
 <StopTrigger><ConditionGroup><Condition name="end" delay="0" conditionEdge="rising">{_at(6.0)}</Condition></ConditionGroup></StopTrigger></Storyboard></OpenSCENARIO>"""
@@ -83,7 +77,7 @@ def _scenario(tmp_path, acts: list[str], variables: str = "") -> object:
 
 
 def _teleport_after_slow_down(tmp_path, reader_first: bool) -> object:
-    slow = _act("Slow", "A1", _event("SlowDown", _speed(15.0, "linear", 4.0), _at(1.0)))
+    slow = _act("Slow", "A1", _event("SlowDown", speed_action(15.0, "linear", 4.0), _at(1.0)))
     move = '<PrivateAction><TeleportAction><Position><RelativeLanePosition entityRef="A1" dLane="-1" ds="-20"/></Position></TeleportAction></PrivateAction>'
     setup = _act("Move", "A2", _event("Place", move, _state("SlowDownAction", "action", "startTransition"), delay=2.0))
     return _scenario(tmp_path, [setup, slow] if reader_first else [slow, setup])
@@ -120,7 +114,7 @@ def test_a_transition_is_seen_once(tmp_path, reader_first):
     """An event that may run five times, on a condition without an edge, runs once for one start."""
     variables = '<VariableDeclarations><VariableDeclaration name="seen" variableType="integer" value="0"/></VariableDeclarations>'
     count = '<GlobalAction><VariableAction variableRef="seen"><ModifyAction><Rule><AddValue value="1"/></Rule></ModifyAction></VariableAction></GlobalAction>'
-    slow = _act("Slow", "A1", _event("SlowDown", _speed(15.0, "linear", 4.0), _at(1.0)))
+    slow = _act("Slow", "A1", _event("SlowDown", speed_action(15.0, "linear", 4.0), _at(1.0)))
     counting = _act(
         "Count", "A2", _event("Counter", count, _state("SlowDown", "event", "startTransition"), count=5, edge="none")
     )

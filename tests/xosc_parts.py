@@ -2,25 +2,36 @@
 
 from __future__ import annotations
 
-#: A 4.5 m car with its rear axle as the reference point.
-CAR = """<Vehicle name="v" vehicleCategory="car"><BoundingBox><Center x="1.4" y="0" z="0.7"/>
-<Dimensions width="1.8" length="4.5" height="1.4"/></BoundingBox>
+
+def vehicle(name: str = "v", center_x: float = 1.4, length: float = 4.5) -> str:
+    """A car 1.8 m wide whose box centre is ``center_x`` ahead of its reference point."""
+    return f"""<Vehicle name="{name}" vehicleCategory="car"><BoundingBox><Center x="{center_x}" y="0" z="0.7"/>
+<Dimensions width="1.8" length="{length}" height="1.4"/></BoundingBox>
 <Performance maxSpeed="60" maxAcceleration="10" maxDeceleration="10"/>
 <Axles><FrontAxle maxSteering="0.5" wheelDiameter="0.6" trackWidth="1.6" positionX="2.8" positionZ="0.3"/>
 <RearAxle maxSteering="0" wheelDiameter="0.6" trackWidth="1.6" positionX="0" positionZ="0.3"/></Axles>
 <Properties/></Vehicle>"""
 
+
+#: A 4.5 m car with its rear axle as the reference point.
+CAR = vehicle()
+
 #: Absolute timing of a trajectory's vertex times.
 ABSOLUTE_TIMING = '<Timing domainAbsoluteRelative="absolute" scale="1" offset="0"/>'
 
 
-def step_speed(v: float) -> str:
-    """A PrivateAction setting the speed to ``v`` at once."""
+def speed_action(v: float, shape: str = "step", value: float = 0, dimension: str = "time") -> str:
+    """A PrivateAction taking the speed to ``v`` by a transition of ``shape`` over ``value`` of ``dimension``."""
     return (
-        '<PrivateAction><LongitudinalAction><SpeedAction><SpeedActionDynamics dynamicsShape="step" value="0" '
-        f'dynamicsDimension="time"/><SpeedActionTarget><AbsoluteTargetSpeed value="{v}"/></SpeedActionTarget>'
+        f'<PrivateAction><LongitudinalAction><SpeedAction><SpeedActionDynamics dynamicsShape="{shape}" value="{value}" '
+        f'dynamicsDimension="{dimension}"/><SpeedActionTarget><AbsoluteTargetSpeed value="{v}"/></SpeedActionTarget>'
         "</SpeedAction></LongitudinalAction></PrivateAction>"
     )
+
+
+def step_speed(v: float) -> str:
+    """A PrivateAction setting the speed to ``v`` at once."""
+    return speed_action(v)
 
 
 def teleport(name: str, x: float, y: float, h: float, speed: float | None = None, extra: str = "") -> str:
