@@ -185,7 +185,7 @@ OBJECT_TYPE_PROPERTIES = ("objecttype", "type")
 def _in_moving_order(entities: list) -> list:
     """The entities in the order they move in a step: as declared, those whose controller moves them after
     every other one (``Controller.moves_last``: esmini's cruise in override mode) at the end."""
-    last = [e for e in entities if any(c is not None and c.moves_last for c in e.active.values())]
+    last = [e for e in entities if e.active and any(c is not None and c.moves_last for c in e.active.values())]
     if not last:
         return entities
     ids = {id(e) for e in last}

@@ -40,13 +40,14 @@ def lane_keep(e, ds: float, ctx) -> None:
             e.yaw = _lane_yaw(base if forward else base + math.pi, st.heading)
             return
     # ds is travelled along the lane: scale to reference-line arc length where the lane is offset on a curve
-    stretch = road.lane_stretch(st.s, st.lane, st.offset)
+    offset = st.offset
     turn = None  # (a lane change's heading in this step, from its lane's direction towards increasing t)
     if e.lateral is not None and e.lateral.projects_step:  # only the along-road part of the step moves s
         turn = e.lateral.step_heading(ds, ctx)
         ds *= math.cos(turn)
         # (the along-road part taken at the offset the step brings it to: esmini shifts it there first)
-        stretch = road.lane_stretch(st.s, st.lane, e.lateral.offset(e, ctx, road))
+        offset = e.lateral.offset(e, ctx, road)
+    stretch = road.lane_stretch(st.s, st.lane, offset)
     s = st.s + (ds if forward else -ds) / stretch
     hops = 0
     while s > road.length or s < 0.0:

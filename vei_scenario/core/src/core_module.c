@@ -635,14 +635,22 @@ static PyObject *cap_step(PyObject *mod, PyObject *const *args, Py_ssize_t nargs
     return Py_BuildValue("(OdOdd)", st.brake ? Py_True : Py_False, st.integral, Py_None, a, d_safe);
 }
 
+/* the adaptive cruise's parameters from AccParameters.packed (its field order is VeiAccParams') */
+static int acc_params_of(PyObject *obj, VeiAccParams *p, const char *what)
+{
+    double pv[6];
+    if (doubles_of(obj, pv, 6, what) < 0) return -1;
+    *p = (VeiAccParams){pv[0], pv[1], pv[2], pv[3], pv[4], pv[5]};
+    return 0;
+}
+
 /* acc_speed(params, v, set_speed, lead, gap, v_lead, max_accel, max_decel, dt) -> speed: the adaptive
  * cruise's step (vei_acc_speed); params: AccParameters.packed; lead false: nobody to follow */
 static PyObject *acc_speed(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
 {
     if (!args_ok(nargs, 9, "acc_speed")) return NULL;
-    double pv[6];
-    if (doubles_of(args[0], pv, 6, "acc_speed params") < 0) return NULL;
-    VeiAccParams p = {pv[0], pv[1], pv[2], pv[3], pv[4], pv[5]};
+    VeiAccParams p;
+    if (acc_params_of(args[0], &p, "acc_speed params") < 0) return NULL;
     ARG_D(1, v);
     ARG_D(2, set_speed);
     int lead = PyObject_IsTrue(args[3]);
@@ -659,9 +667,8 @@ static PyObject *acc_speed(PyObject *mod, PyObject *const *args, Py_ssize_t narg
 static PyObject *acc_lookahead(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
 {
     if (!args_ok(nargs, 3, "acc_lookahead")) return NULL;
-    double pv[6];
-    if (doubles_of(args[0], pv, 6, "acc_lookahead params") < 0) return NULL;
-    VeiAccParams p = {pv[0], pv[1], pv[2], pv[3], pv[4], pv[5]};
+    VeiAccParams p;
+    if (acc_params_of(args[0], &p, "acc_lookahead params") < 0) return NULL;
     ARG_D(1, v);
     ARG_D(2, max_decel);
     return PyFloat_FromDouble(vei_acc_lookahead(&p, v, max_decel));
