@@ -589,6 +589,30 @@ class TimeHeadway(_EntityCondition):
             return False
         return self.cmp(d / e.speed, self.value)
 
+    def steady_for(self, ctx: Context, name: str, bounds) -> int:
+        """Whether the target is ahead (along the road user's heading; behind: no headway, whatever the
+        speed) is a guard the core works out every step. Ahead, while the road user's speed holds (not
+        ``bounds.varying``), the headway compares as the distance does with ``value`` times that speed:
+        a distance guard too (or, where the core cannot work the distance out, how fast it can change).
+        An equality compares the quotient within a tolerance of its own: not watched."""
+        if self.cmp is _equal or self.cmp is _not_equal:
+            return 0
+        e, t = ctx.entities[name], ctx.entities[self.target]
+        varying = name in bounds.varying
+        if e.speed <= 1e-9 and not varying:  # (no headway while it stands, or backs, at a speed that holds)
+            return STEADY
+        if not bounds.guard_ahead(name, self.target):
+            return 0
+        if math.cos(e.yaw) * (t.x - e.x) + math.sin(e.yaw) * (t.y - e.y) <= 0:  # (as for_entity: behind)
+            return STEADY
+        if varying:
+            return 0
+        threshold = self.value * e.speed
+        if bounds.guard_distance(self.kind, self.freespace, name, self.target, RULE_CODES.get(self.cmp), threshold):
+            return STEADY
+        d = _relative(ctx, self.el, e, t, self.kind, self.freespace)[0]
+        return _distance_steps(self.cmp, d, threshold, _distance_rate(self.kind, self.freespace, e, t, bounds), bounds)
+
 
 class _HeldCondition(_EntityCondition):
     """True once the entity's :meth:`holds` has been true without a break for ``duration`` (``past``:

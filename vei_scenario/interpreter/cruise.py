@@ -69,6 +69,7 @@ _DISTANCES = {"cartesianDistance": "cartesian", "euclidianDistance": "cartesian"
               "longitudinal": "longitudinal", "lateral": "lateral"}  # fmt: skip
 #: The comparisons (conditions.RULE_CODES) a distance guard takes: an order, not an equality.
 _ORDERS = frozenset(layout("rule")[n] for n in ("GT", "LT", "GE", "LE"))
+_GT = layout("rule")["GT"]
 
 
 @dataclass
@@ -124,6 +125,12 @@ class QuietBounds:
         if point is not None:
             extra |= {"POINT_X": point.x, "POINT_Y": point.y, "POINT_YAW": point.yaw}
         return self._add(quantity, name, other, rule, value, extra)
+
+    def guard_ahead(self, name: str, other: str) -> bool:
+        """Have the core stop before a step after which road user ``other``'s reference point is ahead of
+        ``name``'s (along its heading) where it was behind, or behind where it was ahead, or within a
+        micrometre of abeam. False when the core cannot watch it."""
+        return self._add("ahead", name, other, _GT, 0.0, {})
 
     def _add(self, quantity: str, name: str, other: str | None, rule: int, value: float, extra: dict) -> bool:
         index = self.index

@@ -1583,8 +1583,10 @@ static int acc_step(double *ac, PyObject *ways, const double *pre, double *next,
 enum { GUARD_COLUMNS(GD_ENUM) GD_COLS };
 /* speed and acceleration (less the other's) and the odometer are the interpreter's own columns, compared
  * exactly (the odometer as the step's rows sum it, before the guards are checked); distances
- * (conditions._relative) are recomputed here, so they are compared with a margin (GUARD_MARGIN_M) */
-#define GUARD_QUANTITIES(F) F(SPEED) F(ACCEL) F(ODOMETER) F(CARTESIAN) F(LONGITUDINAL) F(LATERAL)
+ * (conditions._relative) are recomputed here, so they are compared with a margin (GUARD_MARGIN_M), as is
+ * AHEAD: how far the other's reference point is ahead of the road user's along its heading, signed
+ * (conditions.TimeHeadway: a target behind has no headway) */
+#define GUARD_QUANTITIES(F) F(SPEED) F(ACCEL) F(ODOMETER) F(CARTESIAN) F(LONGITUDINAL) F(LATERAL) F(AHEAD)
 #define GQ_ENUM(name) GQ_##name,
 enum { GUARD_QUANTITIES(GQ_ENUM) GQ_COUNT };
 /* conditions.RULE_CODES: greaterThan, lessThan, greaterOrEqual, lessOrEqual, equalTo, notEqualTo */
@@ -1658,6 +1660,7 @@ static double guard_distance(const double *g, const double *st)
     if (kind == GQ_CARTESIAN) return freespace ? box_gap(&ba, &bb) : hypot(rx, ry);
     double c, s, dc, ds, d, half;
     vr_cos_sin(ba.yaw, &c, &s);
+    if (kind == GQ_AHEAD) return c * (bx - a[CR_X]) + s * (by - a[CR_Y]);
     vr_cos_sin(bb.yaw - ba.yaw, &dc, &ds);
     dc = fabs(dc), ds = fabs(ds);
     if (kind == GQ_LONGITUDINAL)
