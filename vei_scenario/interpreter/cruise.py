@@ -201,6 +201,7 @@ def _columns(
         elif f is not None:  # along its path (an untimed one: the speed moves it)
             ways.append(f.polyline.core)
             row |= {"MODE": _PATH, "S": f.s, "FORWARD": 1.0 if f.reverse else 0.0}
+            row["PAST_END"] = 0.0 if e.modelled else 1.0  # (engine._motion: on past its end without a model)
         elif st is not None:
             ways.append(ctx.roads.road(st.road).core)
             row |= {"MODE": _LANE_MODE, "S": st.s, "LANE": st.lane, "OFFSET": st.offset, "HEADING": st.heading}

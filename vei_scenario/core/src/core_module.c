@@ -919,7 +919,7 @@ static PyObject *overlapping(PyObject *mod, PyObject *arg)
     F(MAX_DECEL) F(ACCEL) F(TOW) F(HITCH) F(COUPLER) F(CHAIN) F(LATERAL) F(LAT_SHAPE) F(LAT_BY_TIME)           \
     F(LAT_VALUE) F(LAT_T0) F(LAT_ODO0) F(LAT_AHEAD) F(LAT_PROJECTS) F(LAT_TARGET_LANE) F(LAT_TARGET_OFFSET)    \
     F(LAT_START_REL) F(LAT_LO) F(LAT_HI) F(LAT_SECTION) F(LAT_FRACTION) F(LAT_PARAM) F(LAT_OLD_SPEED) F(PREV_X)  \
-    F(PREV_Y)
+    F(PREV_Y) F(PAST_END)
 #define CR_ENUM(name) CR_##name,
 enum { ROAD_USER_COLUMNS(CR_ENUM) CR_COLS };
 #define COLUMN_NAME(name) #name,
@@ -1386,8 +1386,18 @@ static int cruise_move(PyObject *way, const double *e, double t, double max_turn
     } else if (mode == MODE_PATH) {
         const VeiPolyline *p = &((PolylineObject *)way)->p;
         double length = p->s[p->n - 1], out[4];
-        if (e[CR_S] + fabs(ds) > length) return 0; /* (on past its end, or its end: the interpreter's) */
-        path_advance(p, e[CR_S], ds, e[CR_FORWARD] != 0.0, out);
+        int reverse = e[CR_FORWARD] != 0.0;
+        if (e[CR_S] + fabs(ds) > length) {
+            /* on past its end (engine._motion, as esmini): to the end, the rest straight on at the end's
+             * heading; once it is there (the action that reached it over: reaching it is the interpreter's) */
+            if (e[CR_PAST_END] == 0.0 || (ds < 0) != reverse || e[CR_S] < length - 1e-9) return 0;
+            double over = copysign(e[CR_S] + fabs(ds) - length, ds), c, s;
+            path_advance(p, e[CR_S], ds - over, reverse, out);
+            vr_cos_sin(out[2], &c, &s);
+            next[CR_X] = out[0] + over * c, next[CR_Y] = out[1] + over * s, next[CR_YAW] = out[2], next[CR_S] = out[3];
+            return within_bounds(e, next, max_turn);
+        }
+        path_advance(p, e[CR_S], ds, reverse, out);
         if (out[3] >= length - 1e-9 || fabs(out[3] - e[CR_S]) > e[CR_MAX_DS]) return 0;
         next[CR_X] = out[0], next[CR_Y] = out[1], next[CR_YAW] = out[2], next[CR_S] = out[3];
     } else if (fabs(next[CR_S] - e[CR_S]) > e[CR_MAX_DS]) {
