@@ -15,8 +15,8 @@ import math
 
 import numpy as np
 import pytest
-from test_cruise import _entity, assert_identical
-from test_cruise_distances import _run_both, scenario
+from test_cruise import _entity
+from test_cruise_distances import assert_guarded_run, scenario
 
 from vei_scenario.interpreter import run_scenario
 
@@ -46,14 +46,8 @@ CASES = {
 
 @pytest.mark.parametrize("case", sorted(CASES))
 def test_headway_guards_equal_the_stepped_run_in_few_stretches(tmp_path, monkeypatch, case):
-    condition, edge = CASES[case] if isinstance(CASES[case], tuple) else (CASES[case], "none")
-    fast, cruised, calls, slow = _run_both(scenario(tmp_path, condition, edge), monkeypatch)
-    assert_identical(fast, slow)
-    ego = fast.traces["Ego"]
-    assert np.any(np.isclose(ego.speed, 5.0)) and ego.speed[0] == 13.0, f"{case}: the condition never fired"
-    assert cruised > 0.8 * len(fast.t), f"{case}: only {cruised} of {len(fast.t)} steps cruised"
     # (along the road the stretches shorten as the gap closes: a few dozen, not one per step)
-    assert calls <= (40 if case == "lead_along_road" else 15), f"{case}: {calls} stretches"
+    assert_guarded_run(tmp_path, monkeypatch, case, CASES[case], 40 if case == "lead_along_road" else 15)
 
 
 def _headway_from_trace(a, b, k: int) -> float:

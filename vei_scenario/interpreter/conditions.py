@@ -580,10 +580,9 @@ class TimeHeadway(_EntityCondition):
 
     def for_entity(self, ctx: Context, name: str) -> bool:
         e = ctx.entities[name]
-        d, _ = _relative(ctx, self.el, e, ctx.entities[self.target], self.kind, self.freespace)
-        c, s = math.cos(e.yaw), math.sin(e.yaw)
         t = ctx.entities[self.target]
-        if c * (t.x - e.x) + s * (t.y - e.y) <= 0:  # the target is not ahead: no headway
+        d, _ = _relative(ctx, self.el, e, t, self.kind, self.freespace)
+        if _ahead(e, t) <= 0:  # the target is not ahead: no headway
             return False
         if e.speed <= 1e-9:
             return False
@@ -603,7 +602,7 @@ class TimeHeadway(_EntityCondition):
             return STEADY
         if not bounds.guard_ahead(name, self.target):
             return 0
-        if math.cos(e.yaw) * (t.x - e.x) + math.sin(e.yaw) * (t.y - e.y) <= 0:  # (as for_entity: behind)
+        if _ahead(e, t) <= 0:  # (behind: no headway)
             return STEADY
         if varying:
             return 0
@@ -612,6 +611,12 @@ class TimeHeadway(_EntityCondition):
             return STEADY
         d = _relative(ctx, self.el, e, t, self.kind, self.freespace)[0]
         return _distance_steps(self.cmp, d, threshold, _distance_rate(self.kind, self.freespace, e, t, bounds), bounds)
+
+
+def _ahead(e, t) -> float:
+    """How far ``t``'s reference point is ahead of ``e``'s along ``e``'s heading (negative: behind); the
+    core's guard quantity AHEAD."""
+    return math.cos(e.yaw) * (t.x - e.x) + math.sin(e.yaw) * (t.y - e.y)
 
 
 class _HeldCondition(_EntityCondition):

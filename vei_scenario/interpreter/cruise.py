@@ -380,7 +380,7 @@ def _cruises(ctx, entities: list, stepped: _Stepped, sequential: bool) -> _Cruis
         if len(ctrls) != 1 or stepped.keeps or stepped.syncs:
             return None
         (ctrl,) = ctrls.values()
-        if not hasattr(ctrl, "core_columns"):
+        if not _core_stepped(ctrl):
             return None
         if index is None:
             index = {o.name: i for i, o in enumerate(entities)}
@@ -399,7 +399,12 @@ def _cruises(ctx, entities: list, stepped: _Stepped, sequential: bool) -> _Cruis
 def offered(entities: list) -> bool:
     """Whether the controllers in charge of road users leave a quiet stretch to the core at all: none,
     or only ones the core steps (their ``core_columns``)."""
-    return all(hasattr(c, "core_columns") for e in entities for c in e.active.values() if c is not None)
+    return all(_core_stepped(c) for e in entities for c in e.active.values() if c is not None)
+
+
+def _core_stepped(ctrl) -> bool:
+    """Whether the core steps controller ``ctrl`` in its quiet stretches (it gives the core its columns)."""
+    return hasattr(ctrl, "core_columns")
 
 
 class StepTimes:

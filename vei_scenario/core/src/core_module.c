@@ -1394,12 +1394,13 @@ static int cruise_move(PyObject *way, const double *e, double t, double max_turn
             double over = copysign(e[CR_S] + fabs(ds) - length, ds), c, s;
             path_advance(p, e[CR_S], ds - over, reverse, out);
             vr_cos_sin(out[2], &c, &s);
-            next[CR_X] = out[0] + over * c, next[CR_Y] = out[1] + over * s, next[CR_YAW] = out[2], next[CR_S] = out[3];
-            return within_bounds(e, next, max_turn);
+            next[CR_X] = out[0] + over * c, next[CR_Y] = out[1] + over * s;
+        } else {
+            path_advance(p, e[CR_S], ds, reverse, out);
+            if (out[3] >= length - 1e-9 || fabs(out[3] - e[CR_S]) > e[CR_MAX_DS]) return 0;
+            next[CR_X] = out[0], next[CR_Y] = out[1];
         }
-        path_advance(p, e[CR_S], ds, reverse, out);
-        if (out[3] >= length - 1e-9 || fabs(out[3] - e[CR_S]) > e[CR_MAX_DS]) return 0;
-        next[CR_X] = out[0], next[CR_Y] = out[1], next[CR_YAW] = out[2], next[CR_S] = out[3];
+        next[CR_YAW] = out[2], next[CR_S] = out[3];
     } else if (fabs(next[CR_S] - e[CR_S]) > e[CR_MAX_DS]) {
         return 0;
     }
