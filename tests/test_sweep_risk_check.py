@@ -125,7 +125,10 @@ def test_sweep_rows_equal_single_runs_and_report_failures(case_xosc, tmp_path, c
             "2",
         ]
     )
-    assert code == 0
+    # the catalog is written whole, and the exit says it has holes (a script or CI gate must not miss them)
+    assert code == 1
+    err = capsys.readouterr().err
+    assert "6 of 12 variants failed" in err and "riderType 'bogus'" in err and "Traceback" not in err
     doc = json.loads((tmp_path / "cat" / "catalog.json").read_text())
     rows = doc["variants"]
     assert len(rows) == 12

@@ -19,6 +19,8 @@ from vei_scenario import __version__
 from vei_scenario.errors import VeiInputError
 
 EXIT_USER_ERROR = 2
+#: A sweep that wrote its catalog but some of whose variants could not be run (their rows say why).
+EXIT_VARIANTS_FAILED = 1
 
 
 class _Parser(argparse.ArgumentParser):
@@ -240,6 +242,15 @@ def _cmd_sweep(args: argparse.Namespace) -> int:
     )
     out = Path(args.output)
     print(f"wrote {out / 'catalog.csv'}, {out / 'catalog.json'}, {out / 'report.html'}")
+    failed = [r for r in report.rows if r["status"] != "ok"]
+    if failed:  # (a script or CI gate must not take a catalog with holes for a whole one)
+        first = failed[0]
+        print(
+            f"vei: {len(failed)} of {len(report.rows)} variants failed; their rows in catalog.csv say why "
+            f"(the first, variant {first['variant']}: {first.get('error') or first['status']})",
+            file=sys.stderr,
+        )
+        return EXIT_VARIANTS_FAILED
     return 0
 
 
