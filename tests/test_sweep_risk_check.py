@@ -313,29 +313,38 @@ def test_an_interpreted_sweep_gives_the_same_rows_on_any_number_of_cores(monkeyp
     variants += [{"EgoSpeed": repr(v), "LeadSpeed": repr(w)} for v in (8.0, 12.5, 15.0) for w in (3.0, 6.0)]
     variants.insert(4, {"EgoSpeed": "nan", "LeadSpeed": "5"})
     monkeypatch.setattr(evaluate, "POOL_WORTH_S", pool_worth_s)
+    monkeypatch.setattr(evaluate, "SPAWN_WORTH_S", pool_worth_s)
+    used: list[int] = []  # (how many variants went to the workers)
+    real_pool, real_fork = evaluate._evaluate_pool, forked.run_forked
+    monkeypatch.setattr(evaluate, "_evaluate_pool", lambda s, v, *a: used.append(len(v)) or real_pool(s, v, *a))
+    monkeypatch.setattr(forked, "run_forked", lambda row, n, *a: used.append(n) or real_fork(row, n, *a))
     seen: list[int] = []
     rows = evaluate_local(scenario, variants, 0.01, workers=2, progress=seen.append)
     single = [evaluate.evaluate_variant(scenario, v, 0.01) for v in variants]
     assert json.dumps(rows) == json.dumps(single)
     assert sum(seen) == len(variants)
+    assert used == ([len(variants) - 1] if pool_worth_s == 0.0 else [])  # (the first here: it reads the files)
     assert [r["status"] for r in rows].count("error") == 2 and rows[0]["status"] == rows[4]["status"] == "error"
     gaps = [r["metrics"]["min_gap_m"] for r in rows if r["status"] == "ok"]
     assert len(set(gaps)) > 3  # the variants differ
 
 
-def test_a_sweep_of_two_variants_starts_no_worker_processes(monkeypatch):
-    """Two variants cannot repay a worker (the first reads the files, a worker would have the second
-    alone): they run here, in order, whatever the number of cores."""
+@pytest.mark.parametrize("n", [2, 5])
+def test_a_sweep_of_few_variants_starts_no_worker_processes(monkeypatch, n):
+    """Few variants cannot repay a worker (the first reads the files; a process with two variants or
+    fewer after it pays more for its first touch of the shared memory than it saves): they run here,
+    in order, whatever the number of cores and however long the first took."""
     from vei_scenario.sweep import evaluate, forked
 
     def no_workers(*args, **kwargs):
-        raise AssertionError("worker processes were started for two variants")
+        raise AssertionError(f"worker processes were started for {n} variants")
 
     monkeypatch.setattr(forked, "run_forked", no_workers)
     monkeypatch.setattr(evaluate, "ProcessPoolExecutor", no_workers)
     monkeypatch.setattr(evaluate, "POOL_WORTH_S", 0.0)
+    monkeypatch.setattr(evaluate, "SPAWN_WORTH_S", 0.0)
     scenario = str(Path(__file__).parent / "data" / "following_brake.xosc")
-    variants = [{"EgoSpeed": "8.0", "LeadSpeed": "3.0"}, {"EgoSpeed": "15.0", "LeadSpeed": "6.0"}]
+    variants = [{"EgoSpeed": repr(8.0 + k), "LeadSpeed": "3.0"} for k in range(n)]
     rows = evaluate_local(scenario, variants, 0.01, workers=2)
     assert [r["metrics"]["min_gap_m"] for r in rows] == [
         evaluate.evaluate_variant(scenario, v, 0.01)["metrics"]["min_gap_m"] for v in variants

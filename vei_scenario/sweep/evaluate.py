@@ -20,8 +20,13 @@ from vei_scenario.sweep import forked
 #: they save (the fork, each one's first touch of the parent's memory: about 7 ms together on 2 cores).
 #: Measured with Euro NCAP variation files on 2 cores: 9 variants of 4.5 ms ran 1.4x faster in two
 #: workers, 3 variants of 6 ms slower. The work is estimated from the first variant, which also reads
-#: the files (about twice a later variant's time).
+#: the files (about twice a later variant's time; three times in some). The rest is forked only when
+#: the rest is more than two variants a process: measured on 2 cores, the rest of 2, 3 and 4 variants
+#: (CPTAfo, CCRb 2023, CA-FC Standard CBLA) ran 13 %, 21 % and 0 % slower forked than in one process.
 POOL_WORTH_S = 0.03
+#: The same where workers are spawned, not forked (macOS, Windows): each starts Python, imports vei
+#: and reads the files again (0.2-0.4 s).
+SPAWN_WORTH_S = 1.0
 #: The longest a sweep waits for its worker processes (s) before it stops with one line.
 WATCHDOG_S = 6 * 3600.0
 
@@ -98,8 +103,10 @@ def evaluate_local(
         out.append(evaluate_variant(scenario, variants[0], dt, zone_ttc))
         if progress:
             progress(1)
-        if (time.perf_counter() - started) * (len(variants) - 1) < POOL_WORTH_S:
-            workers = 1
+        rest = len(variants) - 1
+        worth = POOL_WORTH_S if forked.available() else SPAWN_WORTH_S
+        if (time.perf_counter() - started) * rest < worth or rest <= 2 * workers:
+            workers = 1  # (a process with two variants or fewer pays more for its first touch than it saves)
         variants = variants[1:]
     if workers == 1 or len(variants) <= 1:
         for v in variants:
