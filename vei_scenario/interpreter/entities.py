@@ -11,23 +11,31 @@ from vei_scenario.core import _core, layout
 from vei_scenario.models.vehicle import VehicleLimits
 
 
+def _f64(values) -> bytes:
+    """Doubles as the core takes them: an array's own bytes, else the sequence's packed."""
+    return values.tobytes() if isinstance(values, array.array) else array.array("d", values).tobytes()
+
+
 class Polyline:
     """A trajectory shape: vertices with optional times and headings; evaluated by time or arc length.
 
     The evaluation is the compiled core's (``vei_models.c``, the same polyline the sweep kernel and
     the FMUs step along); this class adds what the storyboard needs around it."""
 
-    def __init__(self, xs: list[float], ys: list[float], hs: list[float | None], ts: list[float | None]) -> None:
+    def __init__(self, xs, ys, hs, ts: list[float | None]) -> None:
+        """``xs``, ``ys``, ``hs``: lists (a heading None takes its segment's direction) or arrays of
+        doubles (a sampled curve's thousands of points, handed to the core as they are)."""
         self.xs, self.ys, self.ts = xs, ys, ts
-        if None in hs:  # (a vertex without a heading takes its segment's direction)
+        if isinstance(hs, array.array):
+            self.hs = hs
+        elif None in hs:  # (a vertex without a heading takes its segment's direction)
             seg = [math.atan2(ys[i + 1] - ys[i], xs[i + 1] - xs[i]) for i in range(len(xs) - 1)] or [hs[0] or 0.0]
             self.hs = [h if h is not None else seg[min(i, len(seg) - 1)] for i, h in enumerate(hs)]
         else:
             self.hs = list(hs)
         self.timed = None not in ts
-        f64 = array.array
-        times = f64("d", ts).tobytes() if self.timed else b""
-        self.core = _core.Polyline(f64("d", xs).tobytes(), f64("d", ys).tobytes(), f64("d", self.hs).tobytes(), times)
+        times = _f64(ts) if self.timed else b""
+        self.core = _core.Polyline(_f64(xs), _f64(ys), _f64(self.hs), times)
         self.s = self.core.arc_lengths()
         self.at_s = self.core.at_s
         self.project = self.core.project  # arc length of the closest point (the first of equally close)

@@ -9,6 +9,7 @@ radius). The player then follows the polyline as it follows any other.
 
 from __future__ import annotations
 
+import array
 import math
 
 import numpy as np
@@ -29,11 +30,17 @@ _MAX_CURVE_M = 100_000.0
 
 def clothoid_points(
     x0: float, y0: float, h0: float, curvature: float, curvature_rate: float, length: float
-) -> tuple[list[float], list[float], list[float]]:
+) -> tuple[array.array, array.array, array.array]:
     """x, y, heading along a clothoid from (x0, y0, h0) of start ``curvature``, its rate of change
     along the arc (1/m²) and ``length``; the last sample is the end point. The core samples it
-    (``vei_clothoid_sample``: the trapezoid rule, a cosine and a sine per fine step, in C)."""
-    return _core.clothoid(x0, y0, h0, curvature, curvature_rate, length, _FINE_M, _KEEP_EVERY)
+    (``vei_clothoid_sample``: the trapezoid rule, a cosine and a sine per fine step, in C) into arrays
+    of doubles (a spline of a few hundred metres is thousands of points: never Python floats)."""
+    out = []
+    for raw in _core.clothoid(x0, y0, h0, curvature, curvature_rate, length, _FINE_M, _KEEP_EVERY):
+        a = array.array("d")
+        a.frombytes(raw)
+        out.append(a)
+    return out[0], out[1], out[2]
 
 
 def _sampled(ctx, el, x0: float, y0: float, h0: float, curvature: float, rate: float, length: float):
@@ -168,9 +175,7 @@ def _polyline(el, ctx, place: bool, entity: str | None) -> Polyline:
         t1 = kind.get("timeEnd")
         if not place:
             return Polyline.unplaced([float(t0), float(t1)] if t0 and t1 else [None, None])
-        xs: list[float] = []
-        ys: list[float] = []
-        hs: list[float] = []
+        xs, ys, hs = array.array("d"), array.array("d"), array.array("d")
         marks: list[int] = []  # index of each segment's first point
         jumped: list[bool] = []  # whether it starts away from where the one before ended
         total = 0.0
@@ -259,13 +264,13 @@ def _spline_times(spline, segments, xs: list, ys: list, marks: list[int], jumped
     return times
 
 
-def _times_along(xs: list, ys: list, t0: str | None, t1: str | None) -> list[float | None]:
+def _times_along(xs, ys, t0: str | None, t1: str | None) -> list[float | None]:
     """Vertex times spread over the arc from ``t0`` to ``t1`` (constant speed), or none."""
     if not t0 or not t1:
         return [None] * len(xs)
     s = np.concatenate(([0.0], np.cumsum(np.hypot(np.diff(xs), np.diff(ys)))))
     a, b = float(t0), float(t1)
-    return list(a + (b - a) * s / s[-1]) if s[-1] > 0 else [a] * len(xs)
+    return (a + (b - a) * s / s[-1]).tolist() if s[-1] > 0 else [a] * len(xs)
 
 
 #: A NURBS's control points are placed in its parameter on a grid of equal steps, one per metre of

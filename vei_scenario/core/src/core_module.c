@@ -2055,7 +2055,8 @@ static PyObject *hypot_(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
 #define CLOTHOID_MAX_SAMPLES 40000000L
 
 /* clothoid(x0, y0, h0, curvature, rate, length, fine, keep) -> (xs, ys, hs): vei_clothoid_sample's
- * kept points as three lists (the interpreter's polyline vertices) */
+ * kept points as three bytes objects of doubles (the interpreter's polyline vertices, read as arrays:
+ * a trajectory of thousands of points is never a list of Python floats) */
 static PyObject *clothoid(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
 {
     if (!args_ok(nargs, 8, "clothoid")) return NULL;
@@ -2073,15 +2074,15 @@ static PyObject *clothoid(PyObject *mod, PyObject *const *args, Py_ssize_t nargs
         return NULL;
     }
     long n_fine, n = vei_clothoid_samples(length, fine, keep, &n_fine);
-    double *buf = PyMem_Malloc(3 * (size_t)n * sizeof(double));
-    if (!buf) return PyErr_NoMemory();
-    vei_clothoid_sample(x0, y0, h0, curvature, rate, length, n_fine, keep, buf, buf + n, buf + 2 * n);
-    PyObject *xs = float_list(buf, n), *ys = xs ? float_list(buf + n, n) : NULL, *hs = ys ? float_list(buf + 2 * n, n) : NULL;
-    PyMem_Free(buf);
-    if (!hs) {
-        Py_XDECREF(xs), Py_XDECREF(ys);
+    Py_ssize_t bytes = (Py_ssize_t)n * (Py_ssize_t)sizeof(double);
+    PyObject *xs = PyBytes_FromStringAndSize(NULL, bytes), *ys = PyBytes_FromStringAndSize(NULL, bytes),
+             *hs = PyBytes_FromStringAndSize(NULL, bytes);
+    if (!xs || !ys || !hs) {
+        Py_XDECREF(xs), Py_XDECREF(ys), Py_XDECREF(hs);
         return NULL;
     }
+    vei_clothoid_sample(x0, y0, h0, curvature, rate, length, n_fine, keep, (double *)PyBytes_AS_STRING(xs),
+                        (double *)PyBytes_AS_STRING(ys), (double *)PyBytes_AS_STRING(hs));
     return Py_BuildValue("(NNN)", xs, ys, hs);
 }
 
@@ -2169,7 +2170,7 @@ static PyMethodDef module_methods[] = {
     {"sync_speed", (PyCFunction)(void (*)(void))sync_speed_, METH_FASTCALL,
      "sync_speed(columns, dist, master_dist, v, master_speed, master_moved, dt) -> the synchronised speed or None"},
     {"hypot", (PyCFunction)(void (*)(void))hypot_, METH_FASTCALL, "hypot(x, y) -> the length of (x, y) as the core measures a step (the odometer's metres in every engine)"},
-    F(clothoid, "clothoid(x0, y0, h0, curvature, rate, length, fine, keep) -> (xs, ys, hs): a clothoid's points"),
+    F(clothoid, "clothoid(x0, y0, h0, curvature, rate, length, fine, keep) -> (xs, ys, hs): a clothoid's points (bytes of doubles)"),
     {"set_quadrature", set_quadrature, METH_VARARGS, "set_quadrature(nodes, weights): 24 doubles each"},
     {NULL, NULL, 0, NULL},
 };
