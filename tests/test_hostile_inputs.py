@@ -45,6 +45,25 @@ def test_non_finite_parameter_values_are_refused(scenario, capsys, tmp_path):
 
 
 @pytest.mark.parametrize(
+    "expression, reason",
+    [
+        ("${1e400 % 1}", "number 1e400 is out of range"),  # (found by the fuzz suite: a math domain error)
+        ("${1e300 * 1e300 % 2}", "has no remainder"),
+        ("${1e300 * 1e300}", "is not finite"),
+        ("${5 % (2 - 2)}", "division by zero"),
+    ],
+)
+def test_expressions_beyond_a_double_are_one_line(tmp_path, capsys, expression, reason):
+    """A literal or an intermediate that overflows a double is refused where the expression stands."""
+    from xosc_parts import one_car
+
+    path = tmp_path / "s.xosc"
+    path.write_text(one_car(expression))
+    err = _refused(capsys, ["run", str(path), "-o", str(tmp_path / "out")], reason, "s.xosc: line ")
+    assert "Traceback" not in err and not (tmp_path / "out").exists()
+
+
+@pytest.mark.parametrize(
     "argv",
     [
         ["sweep", "S", "--vary", "TimeShift=0:1:1", "-o", "O", "--dt", "0"],

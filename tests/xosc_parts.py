@@ -51,3 +51,16 @@ def follow_trajectory(shape: str, timing: str = "<None/>", closed: bool = False)
         f'<TimeReference>{timing}</TimeReference><TrajectoryFollowingMode followingMode="position"/>'
         "</FollowTrajectoryAction></RoutingAction></PrivateAction>"
     )
+
+
+def one_car(speed: str, end: float = 1.0) -> str:
+    """A whole scenario without a road: one car set going at ``speed`` (an attribute's text: a number,
+    a ``$parameter`` or an expression), stopped at ``end`` s."""
+    return f"""<?xml version="1.0"?>
+<OpenSCENARIO><FileHeader revMajor="1" revMinor="3" date="2024-01-01T00:00:00" description="one car" author="vei"/>
+<CatalogLocations/><RoadNetwork/><Entities><ScenarioObject name="Ego">{CAR}</ScenarioObject></Entities>
+<Storyboard><Init><Actions>{teleport("Ego", 0, 0, 0, extra=speed_action(speed))}</Actions></Init>
+<StopTrigger><ConditionGroup><Condition name="end" delay="0" conditionEdge="none"><ByValueCondition>
+<SimulationTimeCondition value="{end}" rule="greaterThan"/></ByValueCondition></Condition></ConditionGroup>
+</StopTrigger></Storyboard></OpenSCENARIO>
+"""

@@ -177,8 +177,12 @@ def compile_expression(expression: str) -> Compiled:
                     value = value * right
                 elif right == 0:
                     raise ExpressionError("division by zero")
+                elif op == "/":
+                    value = value / right
+                elif not math.isfinite(value):  # (a product that overflowed: fmod has no remainder of it)
+                    raise ExpressionError(f"{value} % {right} has no remainder")
                 else:
-                    value = value / right if op == "/" else math.fmod(value, right)
+                    value = math.fmod(value, right)
             return value
 
         return chain
@@ -217,6 +221,8 @@ def compile_expression(expression: str) -> Compiled:
         kind, text = take()
         if kind == "num":
             value = float(text)
+            if not math.isfinite(value):  # (1e400: beyond a double, as no parameter value may be)
+                raise ExpressionError(f"number {text} is out of range")
             return lambda p: value
         if kind == "param":
             return parameter(text[1:])
