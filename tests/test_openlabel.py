@@ -181,6 +181,20 @@ def test_times_out_of_order_name_the_openlabel_transform(tmp_path, capsys):
     assert "frame_properties.transforms.vehicle-iso8855_to_odom" in err and "times must increase" in err
 
 
+def test_a_time_far_off_is_refused_without_numpy_warnings(tmp_path, capsys):
+    """A frame stamped 1e308 s late is refused by the clip's time span, naming the transform; the
+    speeds worked out on the way say nothing (no overflow warnings on stderr before the line)."""
+    import warnings
+
+    doc = _case_openlabel(tmp_path)
+    frames = [f for f in doc["openlabel"]["frames"].values() if "transforms" in f["frame_properties"]]
+    frames[-1]["frame_properties"]["timestamp"] = 1e308
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # (a warning would stop the compile here: not the refusal asked)
+        err = _bad(tmp_path, capsys, doc)
+    assert "frame_properties.transforms.vehicle-iso8855_to_odom" in err and "a clip spans at most 3600 s" in err
+
+
 @pytest.mark.parametrize(
     "where, value",
     [

@@ -354,7 +354,8 @@ def openlabel_to_clip_document(path: Path, doc: dict) -> tuple[dict, dict[str, s
     if np.any(np.diff(ts) <= 0):
         j = int(np.nonzero(np.diff(ts) <= 0)[0][0]) + 1
         raise _err(path, sources[order[j]], f"ego odometry times must increase ({ts[j]!r} after {ts[j - 1]!r})")
-    speed = np.hypot(np.gradient(xs, ts), np.gradient(ys, ts))
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # (odd times or places: refused below,
+        speed = np.hypot(np.gradient(xs, ts), np.gradient(ys, ts))  # naming the fix, not by numpy's warning)
     lon, lat = to_geo.transform(xs, ys)
     for n, i in enumerate(order):
         m, g = ego_pose[i], ego_gnss[i]
