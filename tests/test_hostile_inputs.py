@@ -63,6 +63,35 @@ def test_expressions_beyond_a_double_are_one_line(tmp_path, capsys, expression, 
     assert "Traceback" not in err and not (tmp_path / "out").exists()
 
 
+def test_a_distance_kept_to_the_actor_itself(tmp_path, capsys):
+    """A LongitudinalDistanceAction whose reference is its own actor plays as esmini plays it (its gap
+    is 0, so it brakes to a standstill at its deceleration; before, the core's quiet stretch refused it
+    with a ValueError); a LateralDistanceAction to itself has no side to be on and is refused in one line.
+    (Both found by a mutation fuzz of esmini's examples.)"""
+    from xosc_parts import one_car
+
+    from vei_scenario.interpreter import run_scenario
+
+    keep = (
+        '<PrivateAction><LongitudinalAction><LongitudinalDistanceAction entityRef="Ego" timeGap="2" '
+        'freespace="true" continuous="true" coordinateSystem="entity" displacement="any"><DynamicConstraints '
+        'maxAcceleration="3" maxDeceleration="3" maxSpeed="30"/></LongitudinalDistanceAction></LongitudinalAction>'
+        "</PrivateAction>"
+    )
+    path = tmp_path / "keep.xosc"
+    path.write_text(one_car("10", end=8.0, action=keep))
+    ego = run_scenario(path).traces["Ego"]
+    assert ego.speed[0] == 10.0 and ego.speed[100] == pytest.approx(10.0 - 3.0, abs=0.01)  # (at maxDeceleration)
+    assert 0.0 <= ego.speed[-1] < 1e-3  # (the spring's tail: stopped)
+    lateral = keep.replace("LongitudinalAction><LongitudinalDistanceAction", "LateralAction><LateralDistanceAction")
+    lateral = lateral.replace('timeGap="2"', 'distance="1"').replace(
+        "LongitudinalDistanceAction></Longitudinal", "LateralDistanceAction></Lateral"
+    )
+    lateral = lateral.replace('displacement="any"', 'displacement="leftToReferencedEntity"')
+    path.write_text(one_car("10", end=8.0, action=lateral))
+    _refused(capsys, ["run", str(path)], "line ", "LateralDistanceAction: the reference entity is the actor itself")
+
+
 @pytest.mark.parametrize(
     "argv",
     [

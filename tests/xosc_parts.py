@@ -53,13 +53,23 @@ def follow_trajectory(shape: str, timing: str = "<None/>", closed: bool = False)
     )
 
 
-def one_car(speed: str, end: float = 1.0) -> str:
+def one_car(speed: str, end: float = 1.0, action: str = "") -> str:
     """A whole scenario without a road: one car set going at ``speed`` (an attribute's text: a number,
-    a ``$parameter`` or an expression), stopped at ``end`` s."""
+    a ``$parameter`` or an expression), given the PrivateAction ``action`` at once, stopped at ``end`` s."""
+    story = ""
+    if action:
+        story = f"""<Story name="s"><Act name="a"><ManeuverGroup name="g" maximumExecutionCount="1">
+<Actors selectTriggeringEntities="false"><EntityRef entityRef="Ego"/></Actors><Maneuver name="m">
+<Event name="e" priority="overwrite"><Action name="x">{action}</Action><StartTrigger><ConditionGroup>
+<Condition name="now" delay="0" conditionEdge="none"><ByValueCondition><SimulationTimeCondition value="0"
+rule="greaterOrEqual"/></ByValueCondition></Condition></ConditionGroup></StartTrigger></Event></Maneuver>
+</ManeuverGroup><StartTrigger><ConditionGroup><Condition name="go" delay="0" conditionEdge="none">
+<ByValueCondition><SimulationTimeCondition value="0" rule="greaterOrEqual"/></ByValueCondition></Condition>
+</ConditionGroup></StartTrigger></Act></Story>"""
     return f"""<?xml version="1.0"?>
 <OpenSCENARIO><FileHeader revMajor="1" revMinor="3" date="2024-01-01T00:00:00" description="one car" author="vei"/>
 <CatalogLocations/><RoadNetwork/><Entities><ScenarioObject name="Ego">{CAR}</ScenarioObject></Entities>
-<Storyboard><Init><Actions>{teleport("Ego", 0, 0, 0, extra=speed_action(speed))}</Actions></Init>
+<Storyboard><Init><Actions>{teleport("Ego", 0, 0, 0, extra=speed_action(speed))}</Actions></Init>{story}
 <StopTrigger><ConditionGroup><Condition name="end" delay="0" conditionEdge="none"><ByValueCondition>
 <SimulationTimeCondition value="{end}" rule="greaterThan"/></ByValueCondition></Condition></ConditionGroup>
 </StopTrigger></Storyboard></OpenSCENARIO>

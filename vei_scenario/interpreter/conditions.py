@@ -719,8 +719,9 @@ class RelativeClearance(_EntityCondition):
         road = ctx.roads.road(e.lane.road)
         lanes = road.section(e.lane.s).lanes
         wanted: set[int] = set()
-        for lo, hi in self.ranges:
-            for k in range(lo, hi + 1):
+        reach = len(lanes) + 1  # (no lane is further away than the section has lanes: a range of a
+        for lo, hi in self.ranges:  # million lanes is looked through as far as there are any)
+            for k in range(max(lo, -reach), min(hi, reach) + 1):
                 lane = lane_shift(e.lane.lane, k, e.lane.forward) if k else e.lane.lane
                 if lane not in lanes or lanes[lane].type not in DRIVABLE_LANE_TYPES:
                     continue

@@ -30,6 +30,8 @@ class LateralDistance(Stepped):
 
         self.entity, self.el = entity, el
         self.ref = entity_ref(ctx, el)
+        if self.ref == entity:  # (no side of itself to be on; esmini 3.6 moves it on by some reading of its own)
+            raise ctx.error(el, "LateralDistanceAction: the reference entity is the actor itself")
         self.distance = float_attribute(ctx.path, el, "distance") if el.get("distance") not in (None, "") else 0.0
         if self.distance < 0:
             raise ctx.error(el, "LateralDistanceAction distance must not be negative")

@@ -116,8 +116,8 @@ class LongitudinalDistance(SteppedLongitudinal):
         takes a continuous one whose entity has no speed of its own (no transition, no timed path, not
         towed) and, placed at the gap, keeps its lane without changing lanes; a gap along the road when
         both keep their lanes."""
-        if not self.carried(ctx) or ctx.initializing or ctx.settling:
-            return None
+        if not self.carried(ctx) or ctx.initializing or ctx.settling or self.ref == self.entity:
+            return None  # (a gap to itself, an authoring slip esmini plays: the interpreter steps it)
         e, ref = ctx.entities[self.entity], ctx.entities[self.ref]
         if e.deleted or ref.deleted or e.towed_by is not None or e.speed_profile is not None:
             return None
