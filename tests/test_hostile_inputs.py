@@ -13,6 +13,7 @@ import time
 import uuid
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from conftest import EXAMPLES
@@ -83,6 +84,17 @@ def test_a_distance_kept_to_the_actor_itself(tmp_path, capsys):
     ego = run_scenario(path).traces["Ego"]
     assert ego.speed[0] == 10.0 and ego.speed[100] == pytest.approx(10.0 - 3.0, abs=0.01)  # (at maxDeceleration)
     assert 0.0 <= ego.speed[-1] < 1e-3  # (the spring's tail: stopped)
+    # a speed relative to its own (a factor of 0.99 each step, continuously): 10 * 0.99^(k + 1) at sample k
+    # (the storyboard's pass before t = 0 is logged takes the first); before, the same ValueError
+    own = (
+        '<PrivateAction><LongitudinalAction><SpeedAction><SpeedActionDynamics dynamicsShape="step" value="0" '
+        'dynamicsDimension="time"/><SpeedActionTarget><RelativeTargetSpeed entityRef="Ego" value="0.99" '
+        'speedTargetValueType="factor" continuous="true"/></SpeedActionTarget></SpeedAction></LongitudinalAction>'
+        "</PrivateAction>"
+    )
+    path.write_text(one_car("10", end=3.0, action=own))
+    speed = run_scenario(path).traces["Ego"].speed
+    assert speed == pytest.approx(10.0 * 0.99 ** np.arange(1, speed.size + 1), rel=1e-12)
     lateral = keep.replace("LongitudinalAction><LongitudinalDistanceAction", "LateralAction><LateralDistanceAction")
     lateral = lateral.replace('timeGap="2"', 'distance="1"').replace(
         "LongitudinalDistanceAction></Longitudinal", "LateralDistanceAction></Lateral"

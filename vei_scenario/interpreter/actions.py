@@ -464,8 +464,8 @@ class Speed(Action):
         if not self.continuous or not self.carried(ctx) or e.towed_by is not None or e.deleted:
             return None
         _, value, ref, vtype = self.target
-        if ctx.entities[ref].deleted:
-            return None
+        if ctx.entities[ref].deleted or ref == self.entity:
+            return None  # (its own speed as its reference, as esmini plays it: the interpreter steps it)
         values = {"ENTITY": index[self.entity], "REF": index[ref], "VALUE": value, "FOLLOW": 1.0}
         return core_row("keep", values | {"BY_FACTOR": float(vtype != "delta")})
 
