@@ -101,6 +101,32 @@ def test_reading_of_positions_sequences_and_words():
     assert "parallel" in layers["adversaries"][0]["behaviour"]
 
 
+@pytest.mark.parametrize(
+    "text, kind, relation, behaviours",
+    [
+        # a road user said not to give way or stop at a junction goes through it, timed to meet the ego
+        ("Ego turns left at a crossing; an oncoming motorcycle doesn't yield.", "car", "junction_opposite",
+         ["run_red_light"]),
+        ("A car approaching from the right does not stop at the junction.", "car", "junction_right", ["run_red_light"]),
+        ("A car from the left won't give way at the crossroads.", "car", "junction_left", ["run_red_light"]),
+        # one said not to brake or slow carries on; one said not to cross stands
+        ("The lead car doesn't brake.", "car", None, ["keep_going"]),
+        ("The van in front didn't even bother to slow down.", "van", "ahead", ["keep_going"]),
+        ("The truck ahead never slows down.", "truck", "ahead", ["keep_going"]),
+        ("A pedestrian waits at the kerb and does not cross.", "pedestrian", "roadside_right", ["stop"]),
+        # the same verbs said plainly
+        ("A car ahead brakes hard.", "car", "ahead", ["sudden_stop"]),
+        ("The cyclist coming from the left yields to the AV at the crossroads.", "bicycle", "junction_left",
+         ["give_way"]),
+    ],
+)  # fmt: skip
+def test_a_denied_verb_is_not_read_as_said(text, kind, relation, behaviours):
+    """ "does not yield", "doesn't brake", "never slows", "won't give way": before, the negation was
+    dropped with the contraction and the verb read as said (the motorcycle gave way, the car braked)."""
+    (actor,) = read(text).actors
+    assert (actor.kind, actor.relation, [b[0] for b in actor.behaviours]) == (kind, relation, behaviours)
+
+
 def test_behaviour_library_is_complete_and_listed(capsys):
     wanted = {
         "keep_lane",

@@ -179,6 +179,7 @@ class _Actor:
     parked: bool = False  # said to be parked (at the side of the road, unless put in a lane)
     followed: bool = False  # the ego follows it ("Following a truck, ...")
     object_of: _Actor | None = None  # whose verb it is the object of ("overtakes a bus": the bus)
+    goes_on: bool = False  # said not to give way, stop or slow ("does not yield", "fails to stop")
 
 
 def _tokens(text: str) -> list[str]:
@@ -187,13 +188,38 @@ def _tokens(text: str) -> list[str]:
     for tok in _TOKEN.findall(text):
         if tok.endswith("'s") and len(tok) > 2:
             out += [tok[:-2], "'s"]
-        elif "'" in tok and tok.split("'", 1)[1] in ("re", "m", "ve", "ll", "d", "t"):
+        elif "'" in tok and tok.split("'", 1)[1] == "t":  # "doesn't", "won't", "can't": the verb, then "not"
+            stem = tok.split("'", 1)[0]
+            out += [_CONTRACTED.get(stem, stem[:-1] if stem.endswith("n") else stem), "not"]
+        elif "'" in tok and tok.split("'", 1)[1] in ("re", "m", "ve", "ll", "d"):
             out.append(tok.split("'", 1)[0])  # "we're": "we" (the rest carries nothing here)
         elif tok.endswith("'") or tok in ("'",):
             continue
         else:
             out.append(tok)
     return out
+
+
+#: Contractions whose verb is not the word before "n't" less its "n".
+_CONTRACTED = {"won": "will", "can": "can", "shan": "shall", "ain": "is"}
+#: Words that deny the verb after them ("does not stop", "never yields", "fails to give way"), and the
+#: words that may stand between (auxiliaries, adverbs, "to").
+_NEGATORS = {"not", "never", "fail", "fails", "failed", "failing", "refuse", "refuses", "refused", "refusing"}
+_BETWEEN = {"does", "do", "did", "will", "would", "is", "are", "was", "were", "can", "could", "should", "to",
+            "even", "just", "simply", "then", "really", "quite", "bother", "bothers", "bothered", "manage",
+            "manages"}  # fmt: skip
+#: What a road user does instead of a behaviour it is said not to do: one that does not give way goes
+#: (as "fails to yield" reads), one that does not stop, brake or slow carries on, one that does not go
+#: on stops; any other denied behaviour leaves it carrying on.
+_DENIED = {"give_way": ("cut_in", {}), "keep_going": ("stop", {}), "cross_in_front": ("stop", {})}
+
+
+def _denied(tokens: list[str], i: int) -> bool:
+    """Whether the phrase at ``i`` is denied by a negator before it (past auxiliaries and adverbs)."""
+    j = i - 1
+    while j >= 0 and (tokens[j] in _BETWEEN or _adverb(tokens[j])) and tokens[j] not in _NEGATORS:
+        j -= 1
+    return j >= 0 and tokens[j] in _NEGATORS
 
 
 def _match(tokens: list[str], i: int):
@@ -298,6 +324,9 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
             i += 1
             continue
         slot, value = TABLE[key]
+        if slot == "behaviour" and _denied(tokens, i) and key[0] not in _NEGATORS:
+            name, cfg = _DENIED.get(value[0], ("keep_going", {}))  # ("does not stop": it carries on)
+            value = (name, {**cfg, "_denied": 1.0} if value[0] != "keep_going" else cfg)
         used = len(key) + (1 if adverb else 0)
         words = " ".join(tokens[i : i + used])
         nxt = tokens[i + used] if i + used < len(tokens) else ""
@@ -378,13 +407,14 @@ def _resolve_relation(a: _Actor, map_kind: str | None) -> str | None:
         return f"roadside_{side if side in ('left', 'right') else 'right'}"
     if a.relation and a.relation.startswith(("junction", "roadside")):
         return a.relation
-    if first == "give_way":  # lets the ego pass: where their paths meet, in a side road or at the kerb
+    if first == "give_way" or (junction and vehicle and a.goes_on and first == "cut_in" and a.relation != "oncoming"):
+        # lets the ego pass (or is said not to): where their paths meet, in a side road or at the kerb
         where = "junction" if vehicle or (junction and not a.kerb) else "roadside"
         return f"{where}_{side if side in ('left', 'right') else 'right'}"
     if junction and a.arm and side in ("left", "right"):
         return f"junction_{side}"  # from the side road on the left: that arm, even if it approaches
-    if a.relation == "oncoming" and junction:
-        return "junction_opposite"  # at a junction what comes towards the ego comes from the opposite arm
+    if a.relation == "oncoming" and junction:  # at a junction what comes towards the ego comes from the
+        return f"junction_{side}" if side in ("left", "right") else "junction_opposite"  # arm said, else opposite
     if a.followed and first == "cut_in":
         return "ahead"  # the ego follows it in its lane: it pulls out of it, to the side said
     if a.relation == "oncoming" or (a.relation == "behind" and not (a.lane_side and first == "cut_in")):
@@ -596,6 +626,7 @@ def read(text: str) -> Reading:
         for a, i in added:
             name, cfg, _, lk = a.behaviours[i]
             words = cfg.pop("_words", "")
+            a.goes_on = a.goes_on or bool(cfg.pop("_denied", None))
             a.behaviours[i] = (name, cfg, crit_here or _verb_criticality(words), lk)
         if crit_here:
             if not named and isinstance(subject, _Actor) and subject.crit is None:
@@ -710,6 +741,15 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool) -> None:
     ):
         spec.relation = "junction_opposite"
         spec.behaviours = [("turn_across", {}, crit, link)] + spec.behaviours[1:]
+        return
+    if (
+        junction
+        and vehicle
+        and a.goes_on
+        and first in ("cut_in", "keep_going")
+        and spec.relation in ("junction_left", "junction_right", "junction_opposite")
+    ):  # does not give way or stop at the junction: straight through it, timed to meet the ego's path
+        spec.behaviours = [("run_red_light", {}, crit or "dangerous", link)] + spec.behaviours[1:]
         return
     if first == "give_way" and spec.relation in ("junction_left", "junction_right") and "follow_vehicle" in names:
         # lets the ego pass, then follows it: it turns into the ego's road behind it
