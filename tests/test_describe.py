@@ -127,6 +127,29 @@ def test_a_denied_verb_is_not_read_as_said(text, kind, relation, behaviours):
     assert (actor.kind, actor.relation, [b[0] for b in actor.behaviours]) == (kind, relation, behaviours)
 
 
+def test_speeds_from_to_lane_counts_in_digits_and_kinds_of_road_user():
+    """"slows from 80 to 30 km/h" changes by 50 km/h (before: the first speed only, and the verb's
+    default change); "3 lanes" and "a 2-lane road" are lane counts (before: numbers read past); a
+    word naming a kind before a road user ("a police car", "a school bus") is not an unknown verb
+    (before: the description was refused); "the bus stops" is a bus stopping, "at a bus stop" a place."""
+    (truck,) = read("A truck slows from 80 to 30 km/h in front of the ego on a two-lane road.").actors
+    assert truck.speed_mps == pytest.approx(80 / 3.6)
+    assert truck.behaviours[0][:2] == ("change_speed", {"speed_delta_mps": pytest.approx(-50 / 3.6)})
+    (car,) = read("The car ahead accelerates from 30 to 50 km/h.").actors
+    assert car.behaviours[0][1]["speed_delta_mps"] == pytest.approx(20 / 3.6)
+    assert read("Highway, 3 lanes. A car cuts in sharply in front of the ego.").lanes == 3
+    r = read("On a 2-lane road a school bus stops ahead of the ego.")
+    assert r.lanes == 2 and [(a.kind, a.relation, [b[0] for b in a.behaviours]) for a in r.actors] == [
+        ("truck", "ahead", ["stop"])
+    ]
+    (police,) = read("A police car drives the wrong way down the road towards the ego.").actors
+    assert police.kind == "car" and police.behaviours[0][0] == "wrong_way"
+    (bus, walker) = read("The bus stops at a bus stop and a pedestrian walks out in front of it.").actors
+    assert (bus.kind, bus.behaviours[0][0], walker.kind) == ("truck", "stop", "pedestrian")
+    (walker,) = read("The ego approaches a zebra crossing at 30 km/h; a woman with a pram steps onto it.").actors
+    assert walker.kind == "pedestrian" and walker.behaviours[0][0] == "cross_in_front"
+
+
 def test_behaviour_library_is_complete_and_listed(capsys):
     wanted = {
         "keep_lane",

@@ -180,6 +180,7 @@ class _Actor:
     followed: bool = False  # the ego follows it ("Following a truck, ...")
     object_of: _Actor | None = None  # whose verb it is the object of ("overtakes a bus": the bus)
     goes_on: bool = False  # said not to give way, stop or slow ("does not yield", "fails to stop")
+    speed_to_mps: float | None = None  # the speed it changes to ("slows from 80 to 30 km/h": 30)
 
 
 def _tokens(text: str) -> list[str]:
@@ -231,6 +232,22 @@ def _match(tokens: list[str], i: int):
                 break
 
 
+#: Words before a place named after a road user ("at the bus stop", "near a taxi rank").
+_PLACE_PREPOSITIONS = {"at", "to", "near", "by", "from", "behind", "past", "towards", "toward", "in", "on", "into",
+                       "onto", "beside", "outside", "opposite", "before", "after", "of", "off", "around", "across",
+                       "along", "approaching", "leaving", "reaching"}  # fmt: skip
+
+
+def _actor_at(tokens: list[str], i: int) -> bool:
+    """Whether an actor's name starts at ``i`` (of any length: "bus" in "bus stops" too)."""
+    return any(
+        TABLE[key][0] == "actor" and all(k in forms(tokens[i + j]) for j, k in enumerate(key))
+        for w in forms(tokens[i])
+        for key in _BY_FIRST.get(w, ())
+        if i + len(key) <= len(tokens)
+    )
+
+
 def _best(tokens: list[str], i: int) -> tuple[str, ...] | None:
     """The longest phrase at ``i``; of equally long ones the one written as the text has it."""
     keys = list(_match(tokens, i))
@@ -258,8 +275,11 @@ def _number(tokens: list[str], i: int) -> tuple[str, float, int] | None:
         return "skip", value, 2
     if nxt in ("to", "-") and i + 3 < len(tokens) and re.fullmatch(r"\d+(?:\.\d+)?", tokens[i + 2]):
         unit = tokens[i + 3]
-        if unit in V.SPEED_UNITS:  # "from 50 to 20 km/h": the first speed
-            return "speed", value * V.SPEED_UNITS[unit], 4
+        if unit in V.SPEED_UNITS:  # "from 50 to 20 km/h": the speed, then the one it goes to
+            return "speed_range", (value * V.SPEED_UNITS[unit], float(tokens[i + 2]) * V.SPEED_UNITS[unit]), 4
+    if nxt in ("lanes", "lane") or (nxt == "-" and i + 2 < len(tokens) and tokens[i + 2] in ("lane", "lanes")):
+        if value == int(value) and 1 <= value <= 8:  # "3 lanes", "a 2-lane road": lanes a direction
+            return "lanes", int(value), 2 if nxt != "-" else 3
     prev = tokens[i - 1] if i > 0 else ""
     if prev in ("at", "doing", "about", "around", "of") and 3 <= value <= 250:  # "at 120": km/h
         return "speed", value / 3.6, 1
@@ -290,13 +310,21 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
             continue
         if re.fullmatch(r"\d+(?:\.\d+)?", tok):
             kind, value, used = _number(tokens, i)
+            words = " ".join(tokens[i : i + used])
             if kind == "unknown":
                 ignored.append(tok)
+            elif kind == "speed_range":  # the speed it has, and (its own slot) the one it changes to
+                clauses[-1][1].append(_Mention("speed", value[0], words, i, prev, end=i + used))
+                clauses[-1][1].append(_Mention("speed_to", value[1], words, i, prev, end=i + used))
             elif kind != "skip":
-                clauses[-1][1].append(_Mention(kind, value, " ".join(tokens[i : i + used]), i, prev, end=i + used))
+                clauses[-1][1].append(_Mention(kind, value, words, i, prev, end=i + used))
             i += used
             continue
         key = _best(tokens, i)
+        if key and len(key) > 1 and TABLE[key][0] != "actor" and TABLE.get(key[:1], ("",))[0] == "actor":
+            last = tokens[i + len(key) - 1]  # "the bus stops": the bus, then its verb ("at a bus stop": a place)
+            if prev not in _PLACE_PREPOSITIONS and last != key[-1] and last == key[-1] + "s":
+                key = key[:1]
         adverb = None
         if (key is None or len(key) == 1) and i + 2 < len(tokens) and _adverb(tokens[i + 1]):
             # "walks slowly across": the phrase around an adverb, and the adverb on its own
@@ -319,6 +347,8 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
                     bool(clauses[-1][1]) and clauses[-1][1][-1].slot == "actor" and clauses[-1][1][-1].end == i
                 )
                 verb = "VERB" in pos and not pos & {"ADJ", "ADV"} and not tok.endswith(("ing", "ed"))
+                if i + 1 < len(tokens) and _actor_at(tokens, i + 1):
+                    verb = False  # a word naming what kind before an actor ("a police car", "a school bus")
                 if verb or (not pos and after_actor and tok.endswith("s")):  # (a word lemminflect lacks)
                     clauses[-1][1].append(_Mention("unknown_verb", tok, tok, i, prev, end=i + 1))
             i += 1
@@ -674,6 +704,11 @@ def read(text: str) -> Reading:
             behaviours = [(n, c, k or classes[0], lk) for n, c, k, lk in behaviours]
         if not behaviours and a.stationary:
             behaviours = [("keep_going", {}, None, "sequence")]
+        if a.speed_to_mps is not None and a.speed_mps is not None:  # "slows from 80 to 30": by 50 km/h
+            delta = a.speed_to_mps - a.speed_mps
+            behaviours = [
+                (n, {**c, "speed_delta_mps": delta} if n == "change_speed" else c, k, lk) for n, c, k, lk in behaviours
+            ]
         if behaviours and behaviours[0][0] == "cut_in" and a.distance_m is not None:
             name, cfg, c, lk = behaviours[0]
             behaviours[0] = (name, {**cfg, "gap_m": a.distance_m}, c, lk)
@@ -938,6 +973,8 @@ def _apply(m, who, r, link, added) -> None:
             a.unknown.append(m.words)
         elif m.slot == "speed":
             a.speed_mps = m.value
+        elif m.slot == "speed_to":
+            a.speed_to_mps = m.value
         elif m.slot == "speed_word":
             a.speed_mps = -float(m.value) if a.speed_mps is None else a.speed_mps
         elif m.slot == "distance":
