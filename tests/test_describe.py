@@ -148,6 +148,10 @@ def test_speeds_from_to_lane_counts_in_digits_and_kinds_of_road_user():
     assert (bus.kind, bus.behaviours[0][0], walker.kind) == ("truck", "stop", "pedestrian")
     (walker,) = read("The ego approaches a zebra crossing at 30 km/h; a woman with a pram steps onto it.").actors
     assert walker.kind == "pedestrian" and walker.behaviours[0][0] == "cross_in_front"
+    # "ahead" before its road user is where it is, not a preposition taking it as an object (before:
+    # the verb had no subject and the description was refused)
+    (walker,) = read("Ego drives at 30 km/h; 20 m ahead a pedestrian suddenly steps off the kerb.").actors
+    assert (walker.kind, walker.distance_m, walker.behaviours[0][0]) == ("pedestrian", 20.0, "cross_in_front")
 
 
 def test_behaviour_library_is_complete_and_listed(capsys):

@@ -743,7 +743,6 @@ OBJECT_PREPOSITIONS = {
     "into",
     "onto",
     "from",
-    "ahead",
     "beside",
     "alongside",
     "near",
