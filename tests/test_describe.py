@@ -128,7 +128,7 @@ def test_a_denied_verb_is_not_read_as_said(text, kind, relation, behaviours):
 
 
 def test_speeds_from_to_lane_counts_in_digits_and_kinds_of_road_user():
-    """"slows from 80 to 30 km/h" changes by 50 km/h (before: the first speed only, and the verb's
+    """ "slows from 80 to 30 km/h" changes by 50 km/h (before: the first speed only, and the verb's
     default change); "3 lanes" and "a 2-lane road" are lane counts (before: numbers read past); a
     word naming a kind before a road user ("a police car", "a school bus") is not an unknown verb
     (before: the description was refused); "the bus stops" is a bus stopping, "at a bus stop" a place."""
@@ -152,6 +152,26 @@ def test_speeds_from_to_lane_counts_in_digits_and_kinds_of_road_user():
     # the verb had no subject and the description was refused)
     (walker,) = read("Ego drives at 30 km/h; 20 m ahead a pedestrian suddenly steps off the kerb.").actors
     assert (walker.kind, walker.distance_m, walker.behaviours[0][0]) == ("pedestrian", 20.0, "cross_in_front")
+
+
+@pytest.mark.parametrize(
+    "text, ego_kph, kind, relation, behaviour",
+    [
+        ("Car-to-car rear stationary at 50 km/h.", 50, "car", "ahead", "keep_going"),
+        ("Car-to-Car Rear braking, 12 m gap.", None, "car", "ahead", "sudden_stop"),
+        ("Car-to-Pedestrian Nearside Child at 40 km/h.", 40, "pedestrian", "roadside_right", "cross_in_front"),
+        ("Car-to-Bicyclist farside at 30 km/h.", 30, "bicycle", "roadside_left", "cross_in_front"),
+        ("Car-to-Pedestrian Longitudinal Adult at 25 km/h", 25, "pedestrian", "ahead", "along_road"),
+    ],
+)
+def test_euro_ncap_scenario_names_are_read(text, ego_kph, kind, relation, behaviour):
+    """Euro NCAP's names of its tests, as a test engineer writes them: the target, where it is and
+    what it does, and the speed after the name the ego's (before: "car-to-car" was read past and the
+    description gave no road user at all; "rear" put the target behind)."""
+    r = read(text)
+    (actor,) = r.actors
+    assert (actor.kind, actor.relation, actor.behaviours[0][0]) == (kind, relation, behaviour)
+    assert (r.ego_speed_mps and round(r.ego_speed_mps * 3.6)) == ego_kph
 
 
 def test_behaviour_library_is_complete_and_listed(capsys):

@@ -183,8 +183,40 @@ class _Actor:
     speed_to_mps: float | None = None  # the speed it changes to ("slows from 80 to 30 km/h": 30)
 
 
+#: Euro NCAP's names of its test scenarios ("Car-to-Car Rear stationary", "Car-to-Pedestrian Nearside
+#: Child"): the ego car to its target, where the target is and what it does.
+_NCAP_NAME = re.compile(
+    r"\b(?:car|vehicle)[- ]to[- ](car|vehicle|pedestrian|bicyclist|cyclist|motorcyclist|motorcycle)"
+    r"(?:[- ](rear|nearside|farside|far-side|near-side|longitudinal|front|turn[- ]across[- ]path))?"
+    r"(?:[- ](stationary|moving|braking|adult|child))?\b"
+)
+
+
+def _ncap_said(m: re.Match) -> str:
+    """A Euro NCAP scenario name said in the words the reader knows; a speed right after it is the
+    ego's (the protocol names the test by the vehicle under test's speed: "CCRs at 50 km/h")."""
+    said = _ncap_target(m)
+    return f"{said}; the ego drives" if re.match(r"\s*,?\s*at\s+\d", m.string[m.end() :]) else said
+
+
+def _ncap_target(m: re.Match) -> str:
+    target, where, what = m.group(1), (m.group(2) or "").replace("-", "").replace(" ", ""), m.group(3) or ""
+    who = f"a {what} {target}" if what in ("adult", "child") else f"a {target}"
+    if where in ("nearside", "farside"):
+        side = "right" if where == "nearside" else "left"
+        return f"{who} crosses from the {side}"
+    if where == "longitudinal":
+        return f"{who} ahead goes along the road"
+    if where == "rear" or what in ("stationary", "moving", "braking"):
+        return {"stationary": f"a stationary {target} ahead", "braking": f"{who} ahead brakes hard"}.get(
+            what, f"{who} ahead drives on"
+        )
+    return who
+
+
 def _tokens(text: str) -> list[str]:
     text = text.lower().replace("\u2019", "'").replace("’", "'")
+    text = _NCAP_NAME.sub(_ncap_said, text)
     out = []
     for tok in _TOKEN.findall(text):
         if tok.endswith("'s") and len(tok) > 2:
