@@ -114,6 +114,15 @@ def test_reading_of_positions_sequences_and_words():
         ("The van in front didn't even bother to slow down.", "van", "ahead", ["keep_going"]),
         ("The truck ahead never slows down.", "truck", "ahead", ["keep_going"]),
         ("A pedestrian waits at the kerb and does not cross.", "pedestrian", "roadside_right", ["stop"]),
+        # "too fast to stop" does not stop; a stop sign is a junction; a rider not giving way rides through
+        ("The ego waits at a stop sign, then pulls out; a car from the left is going too fast to stop.", "car",
+         "junction_left", ["run_red_light"]),
+        ("At a yield sign a cyclist from the right does not give way.", "bicycle", "junction_right",
+         ["run_red_light"]),
+        # a walker who does not give way or wait crosses (before: read as a car cutting in)
+        ("A pedestrian does not give way to the ego.", "pedestrian", "roadside_right", ["cross_in_front"]),
+        ("A child on the right does not wait for us and runs across.", "pedestrian", "roadside_right",
+         ["cross_in_front"]),
         # the same verbs said plainly
         ("A car ahead brakes hard.", "car", "ahead", ["sudden_stop"]),
         ("The cyclist coming from the left yields to the AV at the crossroads.", "bicycle", "junction_left",

@@ -248,7 +248,10 @@ _DENIED = {"give_way": ("cut_in", {}), "keep_going": ("stop", {}), "cross_in_fro
 
 
 def _denied(tokens: list[str], i: int) -> bool:
-    """Whether the phrase at ``i`` is denied by a negator before it (past auxiliaries and adverbs)."""
+    """Whether the phrase at ``i`` is denied by a negator before it (past auxiliaries and adverbs), or
+    by "too ... to" ("is going too fast to stop": it does not stop)."""
+    if i >= 3 and tokens[i - 1] == "to" and tokens[i - 3] == "too":
+        return True
     j = i - 1
     while j >= 0 and (tokens[j] in _BETWEEN or _adverb(tokens[j])) and tokens[j] not in _NEGATORS:
         j -= 1
@@ -469,7 +472,8 @@ def _resolve_relation(a: _Actor, map_kind: str | None) -> str | None:
         return f"roadside_{side if side in ('left', 'right') else 'right'}"
     if a.relation and a.relation.startswith(("junction", "roadside")):
         return a.relation
-    if first == "give_way" or (junction and vehicle and a.goes_on and first == "cut_in" and a.relation != "oncoming"):
+    rides = a.kind != "pedestrian"  # (a rider at a junction takes the road as a vehicle does)
+    if first == "give_way" or (junction and rides and a.goes_on and first == "cut_in" and a.relation != "oncoming"):
         # lets the ego pass (or is said not to): where their paths meet, in a side road or at the kerb
         where = "junction" if vehicle or (junction and not a.kerb) else "roadside"
         return f"{where}_{side if side in ('left', 'right') else 'right'}"
@@ -724,6 +728,11 @@ def read(text: str) -> Reading:
     for a in actors:
         spec = ActorSpec(a.kind)
         behaviours = _tidy(a)
+        if a.kind == "pedestrian" and a.goes_on:  # a walker who does not give way or wait: crosses
+            behaviours = [
+                ("cross_in_front", c, k, lk) if n == "cut_in" else (n, c, k, lk) for n, c, k, lk in behaviours
+            ]
+            behaviours = [b for k, b in enumerate(behaviours) if k == 0 or b[0] != behaviours[k - 1][0]]
         if a.kind == "pedestrian" and behaviours and behaviours[0][0] in VEHICLE_BEHAVIOURS:
             spec.kind = a.kind = "car"
         moving_out = behaviours and behaviours[0][0] == "cut_in" and a.followed
@@ -811,7 +820,7 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool) -> None:
         return
     if (
         junction
-        and vehicle
+        and a.kind != "pedestrian"
         and a.goes_on
         and first in ("cut_in", "keep_going")
         and spec.relation in ("junction_left", "junction_right", "junction_opposite")
