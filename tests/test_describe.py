@@ -183,6 +183,24 @@ def test_euro_ncap_scenario_names_are_read(text, ego_kph, kind, relation, behavi
     assert (r.ego_speed_mps and round(r.ego_speed_mps * 3.6)) == ego_kph
 
 
+def test_e_scooter_wording():
+    """Plurals of hyphenated names ("e-scooters" was read past), "one of them" in the next sentence,
+    riding side by side, entering the road from the sidewalk, a bike lane as the roadside (not a
+    bicycle), "without stopping" as a denial."""
+    first, second = read("Two e-scooters ride side by side ahead of the ego; one of them brakes suddenly.").actors
+    assert (first.kind, second.kind, second.relation) == ("e-scooter", "e-scooter", "ahead")
+    assert [b[0] for b in first.behaviours] == ["along_road"] and [b[0] for b in second.behaviours] == ["sudden_stop"]
+    (rider,) = read("An e-scooter rider on the sidewalk suddenly enters the road 15 m in front of the ego.").actors
+    assert (rider.kind, rider.relation, rider.distance_m, rider.behaviours[0][0]) == (
+        "e-scooter", "roadside_right", 15.0, "cross_in_front"
+    )
+    assert [a.kind for a in read("An e-scooter travels in the bike lane on the right.").actors] == ["e-scooter"]
+    (scooter,) = read("An electric scooter crosses at the zebra crossing without stopping.").actors
+    assert [b[0] for b in scooter.behaviours] == ["cross_in_front"]
+    (scooter,) = read("A Lime scooter wobbles into the road from the right.").actors
+    assert (scooter.kind, scooter.relation, scooter.behaviours[0][0]) == ("e-scooter", "roadside_right", "cross_in_front")
+
+
 def test_behaviour_library_is_complete_and_listed(capsys):
     wanted = {
         "keep_lane",

@@ -48,6 +48,9 @@ def forms(word: str) -> frozenset[str]:
     out = {word}
     for lemmas in _lemmas(word).values():
         out.update(lemmas)
+    if "-" in word:  # "e-scooters", "pick-ups": the lemmas of the last part, joined again
+        head, _, last = word.rpartition("-")
+        out.update(f"{head}-{lemma}" for lemma in forms(last))
     return frozenset(out)
 
 
@@ -237,7 +240,8 @@ def _tokens(text: str) -> list[str]:
 _CONTRACTED = {"won": "will", "can": "can", "shan": "shall", "ain": "is"}
 #: Words that deny the verb after them ("does not stop", "never yields", "fails to give way"), and the
 #: words that may stand between (auxiliaries, adverbs, "to").
-_NEGATORS = {"not", "never", "fail", "fails", "failed", "failing", "refuse", "refuses", "refused", "refusing"}
+_NEGATORS = {"not", "never", "fail", "fails", "failed", "failing", "refuse", "refuses", "refused", "refusing",
+             "without"}  # fmt: skip
 _BETWEEN = {"does", "do", "did", "will", "would", "is", "are", "was", "were", "can", "could", "should", "to",
             "even", "just", "simply", "then", "really", "quite", "bother", "bothers", "bothered", "manage",
             "manages"}  # fmt: skip
@@ -518,6 +522,7 @@ def read(text: str) -> Reading:
     refuse: list[str] = []
     subject: _Actor | str | None = None
     pending: list[_Mention] = []
+    last_group: list[_Actor] | None = None  # ("Two scooters ride ahead; one of them brakes": that pair)
     for link, mentions in clauses:
         named: list[tuple[_Actor | str, str]] = []  # (actor, role) in order: subject, prep, verb, participle
         clause_subject: _Actor | str | None = None
@@ -566,7 +571,7 @@ def read(text: str) -> Reading:
                     who = subject if subject is not None else "ego"
                     role = "subject"
                 elif m.slot == "member":
-                    pool = group or []
+                    pool = group or last_group or []
                     if not pool:
                         continue
                     free = [a for a in pool if not a.behaviours]
@@ -598,6 +603,7 @@ def read(text: str) -> Reading:
                         actors.extend(made)
                         who = made[0]
                         group = made if count > 1 else group
+                        last_group = made if count > 1 else last_group
                     count = 1
                 if (
                     role == "subject"

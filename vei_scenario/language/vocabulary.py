@@ -248,6 +248,10 @@ EGO_VERBS = {
     "is": None,
     "enters": None,
     "entering": None,
+    "rides": None,
+    "ride": None,
+    "riding": None,
+    "ride side by side": None,
 }
 CRITICALITY = {
     "aggressively": "dangerous",
