@@ -198,7 +198,8 @@ def test_e_scooter_wording():
     (scooter,) = read("An electric scooter crosses at the zebra crossing without stopping.").actors
     assert [b[0] for b in scooter.behaviours] == ["cross_in_front"]
     (scooter,) = read("A Lime scooter wobbles into the road from the right.").actors
-    assert (scooter.kind, scooter.relation, scooter.behaviours[0][0]) == ("e-scooter", "roadside_right", "cross_in_front")
+    said = (scooter.kind, scooter.relation, scooter.behaviours[0][0])
+    assert said == ("e-scooter", "roadside_right", "cross_in_front")
 
 
 def test_behaviour_library_is_complete_and_listed(capsys):
