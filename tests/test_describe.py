@@ -192,7 +192,10 @@ def test_e_scooter_wording():
     assert [b[0] for b in first.behaviours] == ["along_road"] and [b[0] for b in second.behaviours] == ["sudden_stop"]
     (rider,) = read("An e-scooter rider on the sidewalk suddenly enters the road 15 m in front of the ego.").actors
     assert (rider.kind, rider.relation, rider.distance_m, rider.behaviours[0][0]) == (
-        "e-scooter", "roadside_right", 15.0, "cross_in_front"
+        "e-scooter",
+        "roadside_right",
+        15.0,
+        "cross_in_front",
     )
     assert [a.kind for a in read("An e-scooter travels in the bike lane on the right.").actors] == ["e-scooter"]
     (scooter,) = read("An electric scooter crosses at the zebra crossing without stopping.").actors
