@@ -205,6 +205,42 @@ def test_e_scooter_wording():
     assert said == ("e-scooter", "roadside_right", "cross_in_front")
 
 
+def test_notes_rates_pronouns_and_places():
+    """A test engineer's notes (a label opening any sentence, the noun named again without an article
+    is the same road user), decelerations in m/s² and "to a standstill", "daylight", an animal played
+    as a walker, "it" after a clause about the ego meaning the road user when the verb is not the ego's,
+    "the stop" as a place and pulling away from it as pulling out."""
+    r = read(
+        "Scenario: urban road, dry, daylight. Target: cyclist, same direction, 20 km/h, 30 m ahead. "
+        "Cyclist turns left without signalling."
+    )
+    (cyclist,) = r.actors
+    assert (r.time, cyclist.kind, cyclist.distance_m, cyclist.behaviours[0][0]) == (
+        "13:00",
+        "bicycle",
+        30.0,
+        "forced_turn",
+    )
+    (car,) = read("The leading vehicle decelerates at 3 m/s² to a standstill.").actors
+    assert car.behaviours[0][:2] == ("stop", {"decel_mps2": 3.0})
+    (car,) = read("The car ahead decelerates at 7 m/s² to a standstill.").actors
+    assert car.behaviours[0][:2] == ("sudden_stop", {"decel_mps2": 7.0})  # (harder than a comfortable stop)
+    (truck,) = read("A truck accelerates at 1.5 m/s² from 20 to 60 km/h.").actors
+    assert truck.behaviours[0][1] == {"speed_delta_mps": pytest.approx(40 / 3.6), "rate_mps2": 1.5}
+    (dog,) = read("Our AV drives at 45 km/h through a residential street and a dog runs out.").actors
+    assert (dog.kind, dog.behaviours[0][0]) == ("pedestrian", "cross_in_front")
+    (car,) = read("A car is parked on the right; as the ego approaches, it pulls out into traffic.").actors
+    assert car.behaviours[0][0] == "cut_in"
+    (van,) = read("The ego approaches a parked van; it brakes hard.").actors  # (the ego brakes: not the van)
+    assert [b[0] for b in van.behaviours] != ["sudden_stop"]
+    (bus,) = read("A bus pulls away from the stop into the ego's lane.").actors
+    assert (bus.kind, [b[0] for b in bus.behaviours]) == ("truck", ["cut_in"])
+    assert [a.relation for a in read("The ego is overtaking a truck when an oncoming car appears.").actors] == [
+        None,
+        "oncoming",
+    ]
+
+
 def test_behaviour_library_is_complete_and_listed(capsys):
     wanted = {
         "keep_lane",

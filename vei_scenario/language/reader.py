@@ -184,6 +184,7 @@ class _Actor:
     object_of: _Actor | None = None  # whose verb it is the object of ("overtakes a bus": the bus)
     goes_on: bool = False  # said not to give way, stop or slow ("does not yield", "fails to stop")
     speed_to_mps: float | None = None  # the speed it changes to ("slows from 80 to 30 km/h": 30)
+    accel_mps2: float | None = None  # how hard it changes speed ("brakes at 6 m/s²")
 
 
 #: Euro NCAP's names of its test scenarios ("Car-to-Car Rear stationary", "Car-to-Pedestrian Nearside
@@ -236,6 +237,9 @@ def _tokens(text: str) -> list[str]:
     return out
 
 
+#: Phrases saying a change of speed ends standing.
+_TO_A_STOP = {("to", "a", "stop"), ("to", "a", "standstill"), ("to", "a", "halt"), ("down", "to", "standstill"),
+              ("to", "standstill")}  # fmt: skip
 #: Contractions whose verb is not the word before "n't" less its "n".
 _CONTRACTED = {"won": "will", "can": "can", "shan": "shall", "ain": "is"}
 #: Words that deny the verb after them ("does not stop", "never yields", "fails to give way"), and the
@@ -310,7 +314,9 @@ def _number(tokens: list[str], i: int) -> tuple[str, float, int] | None:
         return "speed", value * V.SPEED_UNITS[nxt], 2
     if nxt in ("m", "meters", "metres", "meter", "metre"):
         return "distance", value, 2
-    if nxt in ("m/s²", "m/s2", "s", "sec", "seconds", "second", "g", "%", "deg", "degrees", "kg", "km"):
+    if nxt in ("m/s²", "m/s2"):  # "brakes at 6 m/s²": how hard
+        return "accel", value, 2
+    if nxt in ("s", "sec", "seconds", "second", "g", "%", "deg", "degrees", "kg", "km"):
         return "skip", value, 2
     if nxt in ("to", "-") and i + 3 < len(tokens) and re.fullmatch(r"\d+(?:\.\d+)?", tokens[i + 2]):
         unit = tokens[i + 3]
@@ -393,6 +399,8 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
             i += 1
             continue
         slot, value = TABLE[key]
+        if key == ("stop",) and det:  # "the stop", "a stop": a bus stop, a place
+            slot, value = "kerb", None
         if slot == "behaviour" and _denied(tokens, i) and key[0] not in _NEGATORS:
             name, cfg = _DENIED.get(value[0], ("keep_going", {}))  # ("does not stop": it carries on)
             value = (name, {**cfg, "_denied": 1.0} if value[0] != "keep_going" else cfg)
@@ -401,6 +409,8 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
         nxt = tokens[i + used] if i + used < len(tokens) else ""
         if slot in ("sequence", "parallel"):
             clauses.append((slot, [_Mention("link", slot, words, i, prev, end=i + used)]))
+        elif slot == "noise" and key in _TO_A_STOP:  # "decelerates to a standstill": its change ends standing
+            clauses[-1][1].append(_Mention("to_stop", None, words, i, prev, nxt, i + used, det))
         elif slot != "noise":
             clauses[-1][1].append(_Mention(slot, value, words, i, prev, nxt, i + used, det))
         if adverb is not None and (adverb,) in TABLE and TABLE[(adverb,)][0] in ("criticality", "speed_word"):
@@ -440,13 +450,22 @@ def _drop_label(clauses):
     refers back to them ("Two cars: one ..., the other ...")."""
     if not clauses:
         return clauses
-    link, mentions = clauses[0]
-    colon = next((k for k, m in enumerate(mentions) if m.slot == "punct" and m.value == ":"), None)
-    if colon is None or any(m.slot in ("member", "pronoun") for m in mentions[colon:]):
-        return clauses
-    dropped = ("actor", "behaviour", "relation", "side", "count", "unknown_verb") + _POSITIONAL
-    head = [m for m in mentions[:colon] if m.slot not in dropped]
-    return [(link, head + mentions[colon + 1 :])] + clauses[1:]
+    out = []
+    for k, (link, mentions) in enumerate(clauses):  # (each sentence may open with one: "Target: cyclist, ...")
+        colon = next((j for j, m in enumerate(mentions) if m.slot == "punct" and m.value == ":"), None)
+        if colon is None or (k and colon > 2) or any(m.slot in ("member", "pronoun") for m in mentions[colon:]):
+            out.append((link, mentions))
+            continue
+        dropped = ("actor", "behaviour", "relation", "side", "count", "unknown_verb") + _POSITIONAL
+        head = [m for m in mentions[:colon] if m.slot not in dropped]
+        out.append((link, head + mentions[colon + 1 :]))
+    return out
+
+
+def _bare(m) -> bool:
+    """Whether an actor is named as a test engineer's notes name it again: the singular noun alone,
+    opening its sentence, no article ("Cyclist turns left")."""
+    return m.start == 0 or m.prev in ("", ".", ";", ":", ",")
 
 
 def _ego_following(clauses):
@@ -569,6 +588,12 @@ def read(text: str) -> Reading:
                         prev = m
                         continue  # "overtakes it": an object already known
                     who = subject if subject is not None else "ego"
+                    verb = next((x for x in mentions[k + 1 :] if x.slot not in ("criticality", "speed_word")), None)
+                    if who == "ego" and actors and verb is not None and verb.slot == "behaviour":
+                        # "as the ego approaches, it pulls out": what the ego does not do (the planner
+                        # drives it) is the last road user's, unless that one stands and it is a slowing
+                        still = actors[-1].stationary and verb.value[0] in ("stop", "sudden_stop", "change_speed")
+                        who = who if still else actors[-1]
                     role = "subject"
                 elif m.slot == "member":
                     pool = group or last_group or []
@@ -583,8 +608,8 @@ def read(text: str) -> Reading:
                     who = "ego"
                 else:
                     same = [a for a in actors if a.kind == m.value]
-                    if m.det in ("the", "this", "that", "its", "our", "my") and same:
-                        who = same[-1]
+                    if same and (m.det in ("the", "this", "that", "its", "our", "my") or (not m.det and _bare(m))):
+                        who = same[-1]  # ("Target: cyclist, 30 m ahead. Cyclist turns left.": the same one)
                     elif (
                         m.value in ("bicycle", "e-scooter")
                         and m.prev in ("on", "riding")
@@ -751,6 +776,8 @@ def read(text: str) -> Reading:
             behaviours = [(n, c, k or classes[0], lk) for n, c, k, lk in behaviours]
         if not behaviours and a.stationary:
             behaviours = [("keep_going", {}, None, "sequence")]
+        if a.accel_mps2 is not None:  # "at 6 m/s²": the deceleration or rate of what it does (within its range)
+            behaviours = [(*_with_rate(n, c, a.accel_mps2), k, lk) for n, c, k, lk in behaviours]
         if a.speed_to_mps is not None and a.speed_mps is not None:  # "slows from 80 to 30": by 50 km/h
             delta = a.speed_to_mps - a.speed_mps
             behaviours = [
@@ -930,6 +957,25 @@ def _verb_criticality(words: str) -> str | None:
 VEHICLE_BEHAVIOURS = {"follow_vehicle", "overtake", "cut_in", "run_red_light", "forced_turn", "change_lane"}
 
 
+#: The rate each behaviour takes from "at N m/s²", and the range it accepts (vei behaviours -v).
+_RATES = {
+    "sudden_stop": ("decel_mps2", 3.0, 10.0),
+    "stop": ("decel_mps2", 0.5, 4.0),
+    "change_speed": ("rate_mps2", 0.2, 10.0),
+}
+
+
+def _with_rate(name: str, cfg: dict, rate: float) -> tuple[str, dict]:
+    """The behaviour with the stated acceleration as its rate, within its range: a stop said harder
+    than a comfortable one (4 m/s²) is a hard stop; road friction bounds every one at 10."""
+    if name == "stop" and abs(rate) > _RATES["stop"][2]:
+        name = "sudden_stop"
+    if name not in _RATES:
+        return name, cfg
+    key, lo, hi = _RATES[name]
+    return name, {**cfg, key: min(max(abs(rate), lo), hi)}
+
+
 def _tidy(a: _Actor) -> list:
     """The actor's behaviours as the layers take them: redundant ones merged."""
     out = []
@@ -1022,6 +1068,11 @@ def _apply(m, who, r, link, added) -> None:
             a.speed_mps = m.value
         elif m.slot == "speed_to":
             a.speed_to_mps = m.value
+        elif m.slot == "accel":
+            a.accel_mps2 = m.value
+        elif m.slot == "to_stop" and a.behaviours and a.behaviours[-1][0] == "change_speed":
+            name, cfg, crit, lk = a.behaviours[-1]  # "decelerates to a standstill": a stop
+            a.behaviours[-1] = ("stop", {"_words": cfg.get("_words", "")}, crit, lk)
         elif m.slot == "speed_word":
             a.speed_mps = -float(m.value) if a.speed_mps is None else a.speed_mps
         elif m.slot == "distance":

@@ -252,6 +252,10 @@ EGO_VERBS = {
     "ride": None,
     "riding": None,
     "ride side by side": None,
+    "appears": None,
+    "appear": None,
+    "shows up": None,
+    "comes into view": None,
 }
 CRITICALITY = {
     "aggressively": "dangerous",
