@@ -241,6 +241,38 @@ def test_notes_rates_pronouns_and_places():
     ]
 
 
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Our AV drives at 45 km/h through a residential street and a unicorn runs out.",
+        "The ego drives on; then a hovercraft cuts in.",
+    ],
+)
+def test_someone_the_reader_cannot_place_is_refused_not_given_to_the_ego(text):
+    """Before, the verb of an unknown road user went to whoever was named last (the ego), and the
+    description gave a scenario without it."""
+    with pytest.raises(NotUnderstood) as refused:
+        read(text)
+    assert refused.value.words[-1] in ("unicorn", "hovercraft")
+
+
+def test_crossings_centre_lines_trams_and_jaywalkers():
+    """ "at the crossing" and "at the pedestrian crossing" are places ("a pedestrian crossing from the
+    right" is a walker crossing); an oncoming truck crossing the centre line comes into the ego's lane;
+    a tram is a long vehicle; a jaywalker walks."""
+    assert read("A tram approaches from the left at the crossing.").map_kind == "crossroad"
+    (tram,) = read("A tram approaches from the left at the crossing.").actors
+    assert (tram.kind, tram.relation) == ("truck", "junction_left")
+    (child,) = read("The ego stops at the pedestrian crossing and a child crosses.").actors
+    assert (child.kind, child.behaviours[0][0]) == ("pedestrian", "cross_in_front")
+    (walker,) = read("A pedestrian crossing from the right stops in the middle of the lane.").actors
+    assert [b[0] for b in walker.behaviours] == ["cross_in_front", "stop"]
+    (truck,) = read("An oncoming truck crosses the centre line on a bend.").actors
+    assert (truck.relation, truck.behaviours[0][0]) == ("oncoming", "wrong_way")
+    (walker,) = read("A jaywalker crosses mid-block, ego doing 35 mph.").actors
+    assert (walker.kind, walker.behaviours[0][0]) == ("pedestrian", "cross_in_front")
+
+
 def test_behaviour_library_is_complete_and_listed(capsys):
     wanted = {
         "keep_lane",

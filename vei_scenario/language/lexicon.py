@@ -34,6 +34,11 @@ ACTOR_NOUNS = {
         "pupil",
         "teenager",
         "toddler",
+        "jaywalker",
+        "passer-by",
+        "passerby",
+        "skateboarder",
+        "wheelchair user",
         # an animal on the road is played as a pedestrian (OpenSCENARIO's pedestrianCategory "animal" has
         # no model of its own in vei or esmini: its size and way of crossing are a walker's)
         "dog",
@@ -68,6 +73,9 @@ ACTOR_NOUNS = {
         "dump truck",
         "refuse truck",
         "bin lorry",
+        "tram",  # (on its rails it crosses and brakes as a long vehicle does)
+        "streetcar",
+        "trolleybus",
     ),
     "van": ("van", "delivery van", "minivan", "transporter", "ambulance", "camper", "pickup", "pick-up"),
 }
@@ -183,6 +191,12 @@ BEHAVIOUR_VERBS = {
         "pull into",
         "pull in",
         "pull out",
+        "cross the centre line",
+        "cross the center line",
+        "cross the centreline",
+        "cross the centerline",
+        "cross the middle line",
+        "cross the median",
         "pull away from the stop",
         "pull away from the bus stop",
         "pull away from the kerb",
@@ -433,6 +447,7 @@ LANE_SIDES = {
 }
 KERB = (
     "kerb",
+    "pedestrian crossing",
     "bike lane",
     "cycle lane",
     "bicycle lane",
@@ -702,6 +717,7 @@ MAPS = {
         "cross street",
         "crosswalk",
         "zebra crossing",
+        "level crossing",
         "red light",
         "green light",
         "lights",

@@ -281,6 +281,18 @@ _PLACE_PREPOSITIONS = {"at", "to", "near", "by", "from", "behind", "past", "towa
                        "along", "approaching", "leaving", "reaching"}  # fmt: skip
 
 
+#: Words after which an article opens a new subject ("... and a unicorn runs out"), not an object.
+_OPENERS = {"", ".", ";", ",", ":", "and", "then", "when", "while", "as", "but", "suddenly", "until", "before", "after"}
+
+
+def _does_next(tokens: list[str], i: int) -> bool:
+    """Whether a behaviour (or an adverb then one) starts at ``i``."""
+    if i < len(tokens) and _adverb(tokens[i]):
+        i += 1
+    key = _best(tokens, i) if i < len(tokens) else None
+    return key is not None and TABLE[key][0] in ("behaviour", "ego_verb", "turn")
+
+
 def _actor_at(tokens: list[str], i: int) -> bool:
     """Whether an actor's name starts at ``i`` (of any length: "bus" in "bus stops" too)."""
     return any(
@@ -368,7 +380,10 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
         key = _best(tokens, i)
         if key and len(key) > 1 and TABLE[key][0] != "actor" and TABLE.get(key[:1], ("",))[0] == "actor":
             last = tokens[i + len(key) - 1]  # "the bus stops": the bus, then its verb ("at a bus stop": a place)
-            if prev not in _PLACE_PREPOSITIONS and last != key[-1] and last == key[-1] + "s":
+            verb = last != key[-1] and last == key[-1] + "s"  # "the bus stops"
+            opens = prev in _OPENERS or (prev in _DETERMINERS and i == 1)  # (its sentence's subject)
+            participle = last.endswith("ing") and opens  # "A pedestrian crossing from the right ..."
+            if prev not in _PLACE_PREPOSITIONS and (verb or participle):
                 key = key[:1]
         adverb = None
         if (key is None or len(key) == 1) and i + 2 < len(tokens) and _adverb(tokens[i + 1]):
@@ -394,6 +409,10 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
                 verb = "VERB" in pos and not pos & {"ADJ", "ADV"} and not tok.endswith(("ing", "ed"))
                 if i + 1 < len(tokens) and _actor_at(tokens, i + 1):
                     verb = False  # a word naming what kind before an actor ("a police car", "a school bus")
+                elif det and det != "the" and prev in _OPENERS and "VERB" not in pos and _does_next(tokens, i + 1):
+                    # "a unicorn runs out": someone the reader cannot place does something; refused, not
+                    # given to whoever was named last (the ego of "... and a unicorn runs out")
+                    clauses[-1][1].append(_Mention("unknown_actor", tok, tok, i, prev, end=i + 1))
                 if verb or (not pos and after_actor and tok.endswith("s")):  # (a word lemminflect lacks)
                     clauses[-1][1].append(_Mention("unknown_verb", tok, tok, i, prev, end=i + 1))
             i += 1
@@ -401,6 +420,8 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
         slot, value = TABLE[key]
         if key == ("stop",) and det:  # "the stop", "a stop": a bus stop, a place
             slot, value = "kerb", None
+        elif tok == "crossing" and len(key) == 1 and det:  # "at the crossing": a junction, not someone crossing
+            slot, value = "map", "crossroad"
         if slot == "behaviour" and _denied(tokens, i) and key[0] not in _NEGATORS:
             name, cfg = _DENIED.get(value[0], ("keep_going", {}))  # ("does not stop": it carries on)
             value = (name, {**cfg, "_denied": 1.0} if value[0] != "keep_going" else cfg)
@@ -741,6 +762,7 @@ def read(text: str) -> Reading:
     for p in pending:
         if p.slot in ("behaviour", "turn"):
             refuse.append(p.words)
+    refuse += [m.words for _, mentions in clauses for m in mentions if m.slot == "unknown_actor"]
     for a in actors:  # an actor that does nothing known but an unknown verb: that verb cannot be placed
         if not a.behaviours and not a.stationary and a.unknown:
             refuse.extend(a.unknown)
