@@ -15,8 +15,8 @@ import math
 
 import numpy as np
 import pytest
-from test_cruise import _entity
-from test_cruise_distances import assert_guarded_run, scenario
+from test_cruise import _entity, assert_identical
+from test_cruise_distances import _run_both, assert_guarded_run, scenario
 
 from vei_scenario.interpreter import run_scenario
 
@@ -42,6 +42,11 @@ CASES = {
     # 7.5 s, and from then on Other has a headway to the Ego, some 3.5 m across at 11 m/s)
     "other_sees_ego_come_ahead": _headway("Ego", 1.0, "lessThan", who="Other"),
 }
+#: The same between the boxes: a headway of 0 as soon as they overlap along the way, before the Ego's
+#: reference point is ahead (stepped while the Ego is behind, so that it fires on its step).
+BOXES_ALONGSIDE = _headway(
+    "Ego", 1.0, "lessThan", 'coordinateSystem="entity" relativeDistanceType="longitudinal"', who="Other"
+).replace('freespace="false"', 'freespace="true"')
 
 
 @pytest.mark.parametrize("case", sorted(CASES))
@@ -61,6 +66,25 @@ def _headway_from_trace(a, b, k: int) -> float:
 
 
 FIRINGS = [("lead_euclidean", "Ego", "Lead", 2.0), ("other_sees_ego_come_ahead", "Other", "Ego", 1.0)]
+
+
+def test_between_boxes_a_target_alongside_has_a_headway_of_zero(tmp_path, monkeypatch):
+    """esmini 3.6's signed free-space distance: a target whose box is behind with a gap has no headway,
+    one whose box overlaps along the way has a headway of 0. The event fires on the step after the
+    Ego's box (coming from behind on the next lane) first reaches Other's, worked out here from the
+    trace; before, vei waited until the Ego's reference point was ahead (about 1.4 s later; measured
+    against esmini on a scenariogeneration cut-in, 11.6 m apart, now within 0.4 mm)."""
+    r, _, _, stepped = _run_both(scenario(tmp_path, BOXES_ALONGSIDE), monkeypatch)
+    assert_identical(r, stepped)
+    other, ego = r.traces["Other"], r.traces["Ego"]
+    c, s = np.cos(other.yaw), np.sin(other.yaw)
+    along = c * (ego.x - other.x) + s * (ego.y - other.y)  # (same boxes: centre offsets cancel)
+    turn = ego.yaw - other.yaw
+    half = 0.5 * (4.5 + 4.5 * np.abs(np.cos(turn)) + 1.8 * np.abs(np.sin(turn)))
+    reached = int(np.argmax(along > -half))  # (behind with a gap until then)
+    slowed = int(np.argmax(np.isclose(ego.speed, 5.0)))
+    assert along[reached - 1] <= -half[reached - 1] and slowed == reached + 1, (reached, slowed)
+    assert along[reached] < 0  # (its reference point still behind: before, no headway yet)
 
 
 @pytest.mark.parametrize(("case", "who", "target", "value"), FIRINGS)

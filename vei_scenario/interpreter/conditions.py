@@ -582,11 +582,17 @@ class TimeHeadway(_EntityCondition):
         e = ctx.entities[name]
         t = ctx.entities[self.target]
         d, _ = _relative(ctx, self.el, e, t, self.kind, self.freespace)
-        if _ahead(e, t) <= 0:  # the target is not ahead: no headway
+        if self._behind(e, t, d):  # the target is behind: no headway
             return False
         if e.speed <= 1e-9:
             return False
         return self.cmp(d / e.speed, self.value)
+
+    def _behind(self, e, t, d: float) -> bool:
+        """No headway to a target behind: its reference point behind along the road user's heading;
+        between boxes (``freespace``), a box behind with a gap (as esmini 3.6: overlapping boxes have a
+        headway of 0)."""
+        return _behind_boxes(e, t, self.kind, d) if self.freespace else _ahead(e, t) <= 0
 
     def steady_for(self, ctx: Context, name: str, bounds) -> int:
         """Whether the target is ahead (along the road user's heading; behind: no headway, whatever the
@@ -602,8 +608,8 @@ class TimeHeadway(_EntityCondition):
             return STEADY
         if not bounds.guard_ahead(name, self.target):
             return 0
-        if _ahead(e, t) <= 0:  # (behind: no headway)
-            return STEADY
+        if _ahead(e, t) <= 0:  # (behind: no headway; between boxes, until they overlap: stepped)
+            return 0 if self.freespace else STEADY
         if varying:
             return 0
         threshold = self.value * e.speed
@@ -611,6 +617,21 @@ class TimeHeadway(_EntityCondition):
             return STEADY
         d = _relative(ctx, self.el, e, t, self.kind, self.freespace)[0]
         return _distance_steps(self.cmp, d, threshold, _distance_rate(self.kind, self.freespace, e, t, bounds), bounds)
+
+
+def _behind_boxes(e, t, kind: str, d_free: float) -> bool:
+    """Whether ``t``'s box is behind ``e``'s with a gap between them (``d_free`` > 0): along the road
+    when both are on one (the distance's ``alongRoad``), else along ``e``'s heading between box centres.
+    Boxes overlapping along the way have no gap, hence a headway of 0 (esmini 3.6's signed free-space
+    distance: measured on a car closing from behind in the next lane, it fires as their boxes meet)."""
+    if d_free <= 0.0:
+        return False
+    la, lb = e.lane, t.lane
+    if kind == "alongRoad" and la is not None and lb is not None and la.road == lb.road:
+        return (1.0 if la.forward else -1.0) * (_box_s(t) - _box_s(e)) < 0.0
+    ax, ay, ayaw, _, _ = e.box()
+    bx, by, _, _, _ = t.box()
+    return math.cos(ayaw) * (bx - ax) + math.sin(ayaw) * (by - ay) < 0.0
 
 
 def _ahead(e, t) -> float:
