@@ -9,7 +9,10 @@ and by esmini 3.6 side by side.
   drifting by a lane offset at its lateral acceleration, a pedestrian on a timed polyline across the
   lanes, the ego slowing at a distance to a lane position, on a road that bends right;
 - a junction: four arms joined by scenariogeneration's junction creator, the ego and a crossing car
-  on routes through it, the crossing car braking at a free-space distance to the ego."""
+  on routes through it, the crossing car braking at a free-space distance to the ego;
+- synchronised: a car synchronised to reach a point as the ego reaches its own, a speed profile, a
+  lateral distance kept to the ego once a car reaches a position, the ego stopping when the profiled
+  car has stood still for 0.5 s (they collide, in both players)."""
 
 from __future__ import annotations
 
@@ -171,13 +174,52 @@ def _cut_in(out: Path) -> Path:
     return _scenario(out, "cut-in", entities, init, groups, 20, params)
 
 
+def _synchronised(out: Path) -> Path:
+    road = xodr.create_road(
+        [xodr.Line(200), xodr.Spiral(0.0, 0.006, 50), xodr.Arc(0.006, 100), xodr.Line(300)],
+        id=0, left_lanes=2, right_lanes=3,
+    )  # fmt: skip
+    odr = xodr.OpenDrive("road")
+    odr.add_road(road)
+    odr.adjust_roads_and_lanes()
+    odr.write_xml(str(out / "road.xodr"))
+    entities = xosc.Entities()
+    for n in ("Ego", "Sync", "Lat", "Prof"):
+        entities.add_scenario_object(n, _car())
+    init = xosc.Init()
+    shape, dim = xosc.DynamicsShapes, xosc.DynamicsDimension
+    step = xosc.TransitionDynamics(shape.step, dim.time, 1)
+    for n, s, lane, v in (("Ego", 20, -2, 16), ("Sync", 0, -3, 10), ("Lat", 50, -1, 15), ("Prof", 80, -2, 12)):
+        init.add_init_action(n, xosc.TeleportAction(xosc.LanePosition(s, 0, lane, 0)))
+        init.add_init_action(n, xosc.AbsoluteSpeedAction(v, step))
+    sync = xosc.SynchronizeAction(
+        "Ego", xosc.LanePosition(250, 0, -2, 0), xosc.LanePosition(250, 0, -3, 0),
+        target_tolerance_master=1, target_tolerance=1, final_speed=xosc.AbsoluteSpeed(8),
+    )  # fmt: skip
+    profile = xosc.SpeedProfileAction([14, 6, 10], xosc.FollowingMode.position, [3, 4, 3])
+    beside = xosc.LateralDistanceAction(
+        "Ego", 1.0, freespace=True, continuous=True, max_speed=1.0, coordinate_system=xosc.CoordinateSystem.road,
+        displacement=xosc.LateralDisplacement.leftToReferencedEntity,
+    )  # fmt: skip
+    there = xosc.DistanceCondition(2, xosc.Rule.lessThan, xosc.LanePosition(120, 0, -1, 0), freespace=False)
+    stop = xosc.AbsoluteSpeedAction(0, xosc.TransitionDynamics(shape.linear, dim.rate, 3))
+    groups = [
+        _group("Sync", "sync", sync, _at(1)),
+        _group("Prof", "profile", profile, _at(2)),
+        _group("Lat", "beside", beside, xosc.EntityTrigger("there", 0, xosc.ConditionEdge.none, there, "Lat")),
+        _group("Ego", "stop", stop, xosc.EntityTrigger(
+            "still", 0, xosc.ConditionEdge.rising, xosc.StandStillCondition(0.5), "Prof")),
+    ]  # fmt: skip
+    return _scenario(out, "synchronised", entities, init, groups, 25)
+
+
 @pytest.mark.parametrize(
     "write, tolerance_m",
-    [(_cut_in, 0.001), (_keeping, 0.005), (_junction, 0.001)],
-    ids=["cut_in", "keeping_and_drifting", "junction"],
+    [(_cut_in, 0.001), (_keeping, 0.005), (_junction, 0.001), (_synchronised, 0.002)],
+    ids=["cut_in", "keeping_and_drifting", "junction", "synchronised"],
 )
 def test_scenariogeneration_scenarios_play_as_esmini_plays_them(tmp_path, esmini, write, tolerance_m):
-    """Measured: 0.4 mm, 2.2 mm and 9 µm from esmini over the whole runs, the same collisions."""
+    """Measured: 0.4 mm, 2.2 mm, 9 µm and 0.7 mm from esmini over the whole runs, the same collisions."""
     c = cross_check(esmini, write(tmp_path), {}, 0.01)
     assert c.max_deviation_m < tolerance_m, [(e.entity, e.max_deviation_m, e.at_time_s) for e in c.entities]
     assert c.same_verdict and c.end_time_difference_s <= 0.01 + 1e-9
