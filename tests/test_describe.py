@@ -273,6 +273,16 @@ def test_crossings_centre_lines_trams_and_jaywalkers():
     assert (walker.kind, walker.behaviours[0][0]) == ("pedestrian", "cross_in_front")
 
 
+def test_both_cars_before_anyone_are_the_ego_and_one_more():
+    """Euro NCAP shorthand: "both cars at 50 km/h" before anyone is named means the ego and its target
+    (before: two adversaries, and the ego's speed sampled). Two cyclists named first stay two."""
+    r = read("CCRb: both cars at 50 km/h with a 40 m gap; the car in front brakes at 6 m/s² down to standstill.")
+    (car,) = r.actors
+    assert r.ego_speed_mps == car.speed_mps == pytest.approx(50 / 3.6) and car.distance_m == 40.0
+    assert car.behaviours[0][:2] == ("sudden_stop", {"decel_mps2": 6.0})
+    assert len(read("Two cyclists ride ahead; both brake.").actors) == 2
+
+
 def test_behaviour_library_is_complete_and_listed(capsys):
     wanted = {
         "keep_lane",

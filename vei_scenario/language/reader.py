@@ -563,6 +563,7 @@ def read(text: str) -> Reading:
     subject: _Actor | str | None = None
     pending: list[_Mention] = []
     last_group: list[_Actor] | None = None  # ("Two scooters ride ahead; one of them brakes": that pair)
+    both_with_ego = False  # ("CCRb: both cars at 50 km/h ...": the ego is one of them)
     for link, mentions in clauses:
         named: list[tuple[_Actor | str, str]] = []  # (actor, role) in order: subject, prep, verb, participle
         clause_subject: _Actor | str | None = None
@@ -587,6 +588,8 @@ def read(text: str) -> Reading:
                 continue
             if m.slot == "count":
                 count = L.COUNTS.get(m.words, 2)
+                if m.words == "both" and not actors:  # "both cars at 50 km/h" before anyone: the ego and one
+                    count, both_with_ego = 1, True
                 continue
             if m.slot == "relative":
                 if named and named[-1][1] != "subject":  # "a child who steps out": the child acts
@@ -763,6 +766,8 @@ def read(text: str) -> Reading:
         if p.slot in ("behaviour", "turn"):
             refuse.append(p.words)
     refuse += [m.words for _, mentions in clauses for m in mentions if m.slot == "unknown_actor"]
+    if both_with_ego and r.ego_speed_mps is None and actors and actors[0].speed_mps is not None:
+        r.ego_speed_mps = actors[0].speed_mps  # (the speed said of both)
     for a in actors:  # an actor that does nothing known but an unknown verb: that verb cannot be placed
         if not a.behaviours and not a.stationary and a.unknown:
             refuse.extend(a.unknown)
