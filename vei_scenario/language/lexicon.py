@@ -852,12 +852,9 @@ NOISE = (
     "right in",
     "same time",
     "in time",
-    "to a stop",
-    "to a standstill",
-    "to a halt",
-    "down to standstill",
-    "to standstill",
 )
+#: Saying a change of speed ends standing ("decelerates to a standstill": a stop).
+TO_A_STOP = ("to a stop", "to a standstill", "to a halt", "down to standstill", "to standstill")
 
 #: Leaving a side road ("turns out of the junction", "emerges from the side road"): a pull-out whose
 #: actor comes from a junction arm.

@@ -29,6 +29,7 @@ from functools import lru_cache
 
 from vei_scenario.language import lexicon as L
 from vei_scenario.language import vocabulary as V
+from vei_scenario.language.behaviours import BEHAVIOURS
 from vei_scenario.language.reading import ActorSpec, NotUnderstood, Reading
 
 _TOKEN = re.compile(r"\d+(?:\.\d+)?|km/h|m/s²|m/s2|m/s|[a-z][a-z\-]*(?:'[a-z]+)?|'s|[.;,!?:]")
@@ -96,6 +97,7 @@ def _entries() -> dict[tuple[str, ...], tuple[str, object]]:
         ("behaviour", [(("change_speed", {"speed_delta_mps": d}), w) for d, w in L.SPEED_CHANGE_VERBS.items()]),
         ("behaviour", [(("run_red_light", {}), L.RED_LIGHT)]),
         ("behaviour", [(("cut_in", {"from_side_road": 1.0}), L.SIDE_ROAD_EXITS)]),
+        ("to_stop", [(None, L.TO_A_STOP)]),  # ("decelerates to a standstill": its change ends standing)
         ("wrong_way", [(None, L.WRONG_WAY)]),
         ("returns", [(None, L.RETURNS)]),
         ("turn", L.TURNS),
@@ -237,9 +239,6 @@ def _tokens(text: str) -> list[str]:
     return out
 
 
-#: Phrases saying a change of speed ends standing.
-_TO_A_STOP = {("to", "a", "stop"), ("to", "a", "standstill"), ("to", "a", "halt"), ("down", "to", "standstill"),
-              ("to", "standstill")}  # fmt: skip
 #: Contractions whose verb is not the word before "n't" less its "n".
 _CONTRACTED = {"won": "will", "can": "can", "shan": "shall", "ain": "is"}
 #: Words that deny the verb after them ("does not stop", "never yields", "fails to give way"), and the
@@ -430,8 +429,6 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
         nxt = tokens[i + used] if i + used < len(tokens) else ""
         if slot in ("sequence", "parallel"):
             clauses.append((slot, [_Mention("link", slot, words, i, prev, end=i + used)]))
-        elif slot == "noise" and key in _TO_A_STOP:  # "decelerates to a standstill": its change ends standing
-            clauses[-1][1].append(_Mention("to_stop", None, words, i, prev, nxt, i + used, det))
         elif slot != "noise":
             clauses[-1][1].append(_Mention(slot, value, words, i, prev, nxt, i + used, det))
         if adverb is not None and (adverb,) in TABLE and TABLE[(adverb,)][0] in ("criticality", "speed_word"):
@@ -984,23 +981,20 @@ def _verb_criticality(words: str) -> str | None:
 VEHICLE_BEHAVIOURS = {"follow_vehicle", "overtake", "cut_in", "run_red_light", "forced_turn", "change_lane"}
 
 
-#: The rate each behaviour takes from "at N m/s²", and the range it accepts (vei behaviours -v).
-_RATES = {
-    "sudden_stop": ("decel_mps2", 3.0, 10.0),
-    "stop": ("decel_mps2", 0.5, 4.0),
-    "change_speed": ("rate_mps2", 0.2, 10.0),
-}
+#: The parameter each behaviour takes "at N m/s²" as (its range: the behaviour's own, vei behaviours -v).
+_RATES = {"sudden_stop": "decel_mps2", "stop": "decel_mps2", "change_speed": "rate_mps2"}
 
 
 def _with_rate(name: str, cfg: dict, rate: float) -> tuple[str, dict]:
     """The behaviour with the stated acceleration as its rate, within its range: a stop said harder
-    than a comfortable one (4 m/s²) is a hard stop; road friction bounds every one at 10."""
-    if name == "stop" and abs(rate) > _RATES["stop"][2]:
+    than a comfortable one (the stop's most, 4 m/s²) is a hard stop; road friction bounds every one."""
+    if name == "stop" and abs(rate) > BEHAVIOURS["stop"].PARAMETERS[_RATES["stop"]].high:
         name = "sudden_stop"
     if name not in _RATES:
         return name, cfg
-    key, lo, hi = _RATES[name]
-    return name, {**cfg, key: min(max(abs(rate), lo), hi)}
+    key = _RATES[name]
+    p = BEHAVIOURS[name].PARAMETERS[key]
+    return name, {**cfg, key: min(max(abs(rate), p.low), p.high)}
 
 
 def _tidy(a: _Actor) -> list:
