@@ -25,6 +25,14 @@ from scenariogeneration import xodr, xosc
 from vei_scenario.conformance.esmini import cross_check
 
 
+def _write_road(out: Path, road: xodr.Road) -> None:
+    """A network of the one ``road`` as road.xodr in ``out``."""
+    odr = xodr.OpenDrive("road")
+    odr.add_road(road)
+    odr.adjust_roads_and_lanes()
+    odr.write_xml(str(out / "road.xodr"))
+
+
 def _car() -> xosc.Vehicle:
     box = xosc.BoundingBox(2, 5, 1.8, 2.0, 0, 0.9)
     return xosc.Vehicle(
@@ -69,10 +77,7 @@ def _scenario(out: Path, name: str, entities, init, groups, end: float, params=N
 
 def _keeping(out: Path) -> Path:
     road = xodr.create_road([xodr.Line(150), xodr.Arc(-0.008, 80), xodr.Line(300)], id=0, left_lanes=2, right_lanes=2)
-    odr = xodr.OpenDrive("road")
-    odr.add_road(road)
-    odr.adjust_roads_and_lanes()
-    odr.write_xml(str(out / "road.xodr"))
+    _write_road(out, road)
     entities = xosc.Entities()
     for n in ("Ego", "Follower", "Drifter"):
         entities.add_scenario_object(n, _car())
@@ -144,10 +149,7 @@ def _cut_in(out: Path) -> Path:
     road = xodr.create_road(
         [xodr.Line(300), xodr.Arc(0.004, angle=0.3), xodr.Line(200)], id=0, left_lanes=2, right_lanes=2
     )
-    odr = xodr.OpenDrive("road")
-    odr.add_road(road)
-    odr.adjust_roads_and_lanes()
-    odr.write_xml(str(out / "road.xodr"))
+    _write_road(out, road)
     params = xosc.ParameterDeclarations()
     params.add_parameter(xosc.Parameter("TargetSpeed", xosc.ParameterType.double, "25"))
     entities = xosc.Entities()
@@ -179,10 +181,7 @@ def _synchronised(out: Path) -> Path:
         [xodr.Line(200), xodr.Spiral(0.0, 0.006, 50), xodr.Arc(0.006, 100), xodr.Line(300)],
         id=0, left_lanes=2, right_lanes=3,
     )  # fmt: skip
-    odr = xodr.OpenDrive("road")
-    odr.add_road(road)
-    odr.adjust_roads_and_lanes()
-    odr.write_xml(str(out / "road.xodr"))
+    _write_road(out, road)
     entities = xosc.Entities()
     for n in ("Ego", "Sync", "Lat", "Prof"):
         entities.add_scenario_object(n, _car())
