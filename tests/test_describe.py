@@ -283,6 +283,42 @@ def test_both_cars_before_anyone_are_the_ego_and_one_more():
     assert len(read("Two cyclists ride ahead; both brake.").actors) == 2
 
 
+@pytest.mark.parametrize(
+    "text, ego_kph, kind, relation, speed, behaviours",
+    [
+        # a speed standing next to the ego after a vehicle's place is said of both, unless the ego's is said
+        ("The lead vehicle, 12 m ahead of the ego at 50 km/h, brakes hard to a stop.", 50, "car", "ahead", 50,
+         ["sudden_stop"]),
+        ("A truck 30 m in front of us at 60 km/h stops.", 60, "truck", "ahead", 60, ["stop"]),
+        ("The ego drives at 80 km/h; a car ahead of the ego at 30 km/h brakes.", 80, "car", "ahead", 30,
+         ["sudden_stop"]),
+        ("A cyclist ahead of the ego at 20 km/h falls.", None, "bicycle", "ahead", 20, ["sudden_stop"]),
+        # "slow" before a road user is how fast it goes (before: a slowing), not the ego's speed
+        ("A slow truck ahead.", None, "truck", "ahead", -0.7, []),
+        ("A slow truck ahead of us at 30 km/h brakes.", None, "truck", "ahead", 30, ["sudden_stop"]),
+        ("A slow-moving tractor in front brakes.", None, "truck", "ahead", -0.6, ["sudden_stop"]),
+        ("The truck in front is very slow and then stops.", None, "truck", "ahead", -0.7, ["stop"]),
+        # the ego said to be behind someone: that one is ahead (before: no place), and the other way round
+        ("Ego cruising at 100 km/h behind a slower van; the van brakes suddenly.", 100, "van", "ahead", -0.7,
+         ["sudden_stop"]),
+        ("We drive behind a truck that brakes.", None, "truck", "ahead", None, ["sudden_stop"]),
+        ("The AV is following a bus.", None, "truck", "ahead", None, []),
+        ("We are ahead of a motorcycle that overtakes us.", None, "car", "behind", None, ["overtake"]),
+        ("A car is behind the ego.", None, "car", "behind", None, ["keep_going"]),
+    ],
+)  # fmt: skip
+def test_speeds_and_places_said_beside_the_ego(text, ego_kph, kind, relation, speed, behaviours):
+    """Where a speed or a place is said next to the ego, whose it is: "12 m ahead of the ego at 50
+    km/h" (before: the lead's only, the ego's sampled), "a slow truck" (before: a truck slowing
+    down), "we drive behind a truck" (before: the truck had no place). A negative speed is a factor
+    of the default speed (a speed word)."""
+    r = read(text)
+    (a,) = r.actors
+    assert (None if r.ego_speed_mps is None else round(r.ego_speed_mps * 3.6, 6)) == ego_kph
+    got = None if a.speed_mps is None else round(a.speed_mps * (3.6 if a.speed_mps > 0 else 1), 6)
+    assert (a.kind, a.relation, got, [b[0] for b in a.behaviours]) == (kind, relation, speed, behaviours)
+
+
 def test_behaviour_library_is_complete_and_listed(capsys):
     wanted = {
         "keep_lane",

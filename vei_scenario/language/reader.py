@@ -12,7 +12,8 @@ lemmas, so inflections need no entries. In a clause:
 - "a car" is a new actor, "the car" / "it" the one already named, "two pedestrians" two actors that
   share what follows, "one ... the other" their members;
 - speeds and distances go to the nearest actor named before them (not to an ego named after "of",
-  "to", "behind": "12 m ahead of the ego at 50 km/h" is the lead car's speed);
+  "to", "behind": "12 m ahead of the ego at 50 km/h" is the lead car's speed, and the ego's too when
+  its own is not said: the speed stands next to both);
 - sides ("from the left") are resolved with the actor's first behaviour: the far kerb for a
   crossing, the left entrance for a red-light runner, the left lane for a cut-in.
 
@@ -24,7 +25,7 @@ whose only verb is unknown (that verb is named). A number with no unit it can re
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import lru_cache
 
 from vei_scenario.language import lexicon as L
@@ -294,7 +295,7 @@ def _does_next(tokens: list[str], i: int) -> bool:
 
 def _actor_at(tokens: list[str], i: int) -> bool:
     """Whether an actor's name starts at ``i`` (of any length: "bus" in "bus stops" too)."""
-    return any(
+    return i < len(tokens) and any(
         TABLE[key][0] == "actor" and all(k in forms(tokens[i + j]) for j, k in enumerate(key))
         for w in forms(tokens[i])
         for key in _BY_FIRST.get(w, ())
@@ -421,6 +422,12 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
             slot, value = "kerb", None
         elif tok == "crossing" and len(key) == 1 and det:  # "at the crossing": a junction, not someone crossing
             slot, value = "map", "crossroad"
+        elif slot in ("behaviour", "speed_word") and det and _actor_at(tokens, i + len(key)):
+            said = " ".join(tokens[i : i + len(key)])
+            if said in V.SPEED_WORDS:  # "a slow truck": how fast it goes, not a slowing (nor the subject's speed)
+                slot, value = "speed_adjective", V.SPEED_WORDS[said]
+        elif slot == "behaviour" and _after_copula(tokens, i) and " ".join(tokens[i : i + len(key)]) in V.SPEED_WORDS:
+            slot, value = "speed_word", V.SPEED_WORDS[" ".join(tokens[i : i + len(key)])]  # "the truck is slow"
         if slot == "behaviour" and _denied(tokens, i) and key[0] not in _NEGATORS:
             name, cfg = _DENIED.get(value[0], ("keep_going", {}))  # ("does not stop": it carries on)
             value = (name, {**cfg, "_denied": 1.0} if value[0] != "keep_going" else cfg)
@@ -458,7 +465,10 @@ VERB_CRITICALITY = {
     ("sprint", "across"): "dangerous",
     ("pop", "out"): "dangerous",
 }
-_POSITIONAL = ("relation", "side", "lane_side", "kerb", "kerb_side", "arm", "stationary", "wrong_way", "returns")
+_POSITIONAL = (
+    "relation", "side", "lane_side", "kerb", "kerb_side", "arm", "stationary", "wrong_way", "returns",
+    "speed_adjective",
+)  # fmt: skip
 _VERBS = ("behaviour", "turn", "unknown_verb", "ego_verb", "speed_word")
 
 
@@ -730,6 +740,9 @@ def read(text: str) -> Reading:
             before_actor = nxt is not None and nxt.slot in ("actor", "count") and nxt.start == m.end
             if m.slot in _POSITIONAL and before_actor and not (nxt.slot == "actor" and nxt.value == "ego"):
                 pending.append(m)  # an adjective before its actor ("an oncoming car")
+            elif clause_subject == "ego" and m.value in _SEEN_FROM_OBJECT and _object_follows(mentions, k):
+                # "we drive behind a truck": where the truck is, seen from the ego, is the other way round
+                pending.append(replace(m, value=_SEEN_FROM_OBJECT[m.value]))
             else:
                 who = _nearest(named, m)
                 if who is None and m.slot in ("returns", "wrong_way") and isinstance(subject, _Actor):
@@ -739,7 +752,11 @@ def read(text: str) -> Reading:
                 elif who is None:
                     pending.append(m)
                 else:
+                    said = getattr(who, "speed_mps", None)  # (a speed word: "a slow truck ... at 30 km/h")
                     _apply(m, who, r, link, added)
+                    if m.slot == "speed" and said is None and r.ego_speed_mps is None and _next_to_ego(prev, m):
+                        if who.kind in VEHICLES:  # "a car 12 m ahead of the ego at 50 km/h": of both
+                            r.ego_speed_mps = m.value
             prev = m
         for a, i in added:
             name, cfg, _, lk = a.behaviours[i]
@@ -1021,6 +1038,52 @@ def _tidy(a: _Actor) -> list:
     return out
 
 
+#: Verbs that say what something is: an adjective after them describes it ("the truck is slow").
+_COPULAS = {"is", "are", "was", "were", "be", "being", "seems", "looks"}
+_INTENSIFIERS = {"very", "quite", "rather", "really", "extremely", "so", "too", "pretty"}
+
+
+def _after_copula(tokens: list[str], i: int) -> bool:
+    """Whether the word at ``i`` follows a copula, past intensifiers ("is very slow")."""
+    j = i - 1
+    while j >= 0 and tokens[j] in _INTENSIFIERS:
+        j -= 1
+    return j >= 0 and tokens[j] in _COPULAS
+
+
+#: A relation said of the ego towards another road user ("the ego is behind a truck"), as that one's place.
+_SEEN_FROM_OBJECT = {"behind": "ahead", "ahead": "behind"}
+
+
+def _object_follows(mentions, k: int) -> bool:
+    """Whether relation ``mentions[k]`` is a preposition whose object is a road user named right after it
+    (past a determiner and speed adjectives: "behind a slower van"), not the ego."""
+    m, end = mentions[k], mentions[k].end
+    if m.slot != "relation" or any(w in L.EGO_NOUNS for w in m.words.split()):
+        return False
+    end += 1 if m.next_ == "of" else 0  # ("ahead of a motorcycle")
+    for x in mentions[k + 1 :]:
+        if x.start > end + 1:
+            return False
+        if x.slot == "actor":
+            return x.value != "ego"
+        if x.slot != "speed_adjective":
+            return False
+        end = x.end
+    return False
+
+
+def _next_to_ego(prev, m) -> bool:
+    """Whether mention ``m`` follows the ego named after a preposition with at most "at" between ("ahead
+    of the ego at 50 km/h"): a speed there reads as the ego's as well as the vehicle's before it."""
+    if prev is None or prev.end + (1 if m.prev == "at" else 0) != m.start:
+        return False
+    if prev.slot == "actor":
+        return prev.value == "ego"
+    words = prev.words.split()
+    return prev.slot == "relation" and any(" ".join(words[-k:]) in L.EGO_NOUNS for k in (1, 2, 3))
+
+
 def _nearest(named, m):
     """The actor a position or number describes: the last one named before it, passing over an ego
     named after a preposition ("ahead of the ego"), and for a speed an actor that stands or the
@@ -1094,7 +1157,7 @@ def _apply(m, who, r, link, added) -> None:
         elif m.slot == "to_stop" and a.behaviours and a.behaviours[-1][0] == "change_speed":
             name, cfg, crit, lk = a.behaviours[-1]  # "decelerates to a standstill": a stop
             a.behaviours[-1] = ("stop", {"_words": cfg.get("_words", "")}, crit, lk)
-        elif m.slot == "speed_word":
+        elif m.slot in ("speed_word", "speed_adjective"):
             a.speed_mps = -float(m.value) if a.speed_mps is None else a.speed_mps
         elif m.slot == "distance":
             a.distance_m = m.value

@@ -317,4 +317,15 @@ SEQUENCE_WORDS = {"then", "after that", "afterwards", "and then", "next"}
 PARALLEL_WORDS = {"while", "at the same time", "simultaneously", "meanwhile"}
 #: Speeds: "# km/h", "# kph", "# mph", "# m/s".
 SPEED_UNITS = {"km/h": 1 / 3.6, "kph": 1 / 3.6, "kmh": 1 / 3.6, "mph": 0.44704, "m/s": 1.0}
-SPEED_WORDS = {"fast": 1.25, "quickly": 1.2, "slowly": 0.7, "slow": 0.7, "at high speed": 1.35, "at low speed": 0.65}
+SPEED_WORDS = {
+    "fast": 1.25,
+    "faster": 1.25,
+    "quickly": 1.2,
+    "slowly": 0.7,
+    "slow": 0.7,
+    "slower": 0.7,
+    "slow-moving": 0.6,
+    "slow moving": 0.6,
+    "at high speed": 1.35,
+    "at low speed": 0.65,
+}
