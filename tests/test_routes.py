@@ -94,3 +94,46 @@ def test_routes_planned_once_are_the_routes_planned_afresh(net):
                 assert route.legs == fresh.legs
                 route.legs.clear()  # (the next call's legs are its own)
     assert plan_route(net, [("1", 30.0, True), ("4", 1.0, None)]) is None
+
+
+def _roundabout(tmp_path) -> RoadNetwork:
+    """The language module's roundabout: four two-way arms (two lanes each way) joined to a one-lane,
+    one-way ring (anticlockwise: its arcs 11-14 have right lanes only)."""
+    from vei_scenario.language.maps import build_map
+
+    odr, _ = build_map({"kind": "roundabout", "lanes_per_direction": 2})
+    path = tmp_path / "roundabout.xodr"
+    odr.write_xml(str(path))
+    return RoadNetwork.load(path)
+
+
+def test_a_route_goes_round_a_one_way_ring_with_its_lanes(tmp_path):
+    """From the arm on the ego's left (4) to the one ahead (3) the short way is a quarter of the ring
+    against its lanes; esmini drives three quarters with them, and so does the plan now (before: the
+    quarter backwards, 100-160 m from esmini's trajectories in tests/test_describe.py)."""
+    net = _roundabout(tmp_path)
+    ring = {"11", "12", "13", "14"}
+    arm4 = net.road("4")
+    route = plan_route(net, [("4", arm4.length - 1.0, True), ("3", 40.0, False)])
+    assert route is not None
+    on_ring = [leg for leg in route.legs if leg.road in ring]
+    assert len(on_ring) == 3 and all(leg.forward for leg in on_ring)
+    for leg in route.legs:  # every road is driven the way one of its lanes goes
+        road = net.road(leg.road)
+        lanes = (road.sections[0] if leg.forward else road.sections[-1]).lanes
+        assert any((k < 0) == leg.forward for k in lanes if k != 0), leg
+
+
+def test_a_road_user_in_an_unlinked_lane_stops_at_the_junction_as_in_esmini(tmp_path):
+    """A route's connecting road that is not linked from the road user's lane (the roundabout's arms
+    link only their kerb lane into the ring) does not take it: it stops at the end of its road, as in
+    esmini (before: it crossed into the linked lane nearest its own, whatever that lane's direction, and
+    drove the exit lane back into the ring: 100-160 m from esmini)."""
+    net = _roundabout(tmp_path)
+    road = net.road("1")
+    conns = [c for c in net.junctions[road.successor.id] if c.incoming == "1"]
+    assert conns and all(-2 not in c.lane_links for c in conns)
+    for c in conns:
+        assert net.next_road(road, -2, True, prefer=c.connecting) is None
+    entry = next(c for c in conns if -1 in c.lane_links)
+    assert net.next_road(road, -1, True, prefer=entry.connecting)[:2] == (net.road(entry.connecting), -1)

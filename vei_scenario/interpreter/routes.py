@@ -37,12 +37,30 @@ def _exits(net: RoadNetwork, road_id: str, forward: bool) -> list[tuple[str, boo
     if link is None:
         return []
     if link.kind == "road":
-        return [(link.id, link.contact != "end")] if link.id in net.roads else []
+        nxt = (link.id, link.contact != "end")
+        return [nxt] if link.id in net.roads and _drivable(net, *nxt) else []
     out = []
     for conn in net.junctions.get(link.id, []):
-        if conn.incoming == road_id and conn.connecting in net.roads:
+        if (
+            conn.incoming == road_id
+            and conn.connecting in net.roads
+            and _drivable(net, conn.connecting, conn.contact != "end")
+        ):
             out.append((conn.connecting, conn.contact != "end"))
     return out
+
+
+def _drivable(net: RoadNetwork, road_id: str, forward: bool) -> bool:
+    """Whether road ``road_id`` has a lane driven towards increasing s (``forward``) or decreasing s where
+    it is entered: right lanes go with s in right-hand traffic, left lanes in left-hand traffic. A
+    one-way road (a roundabout's ring, a connecting road of a junction) is not planned against its
+    lanes (esmini's shortest route goes round a roundabout, not back through it)."""
+    road = net.road(road_id)
+    if not road.sections:
+        return True
+    lanes = (road.sections[0] if forward else road.sections[-1]).lanes
+    with_s = (road.rule or "RHT").upper() != "LHT"  # (right lanes, negative ids, go with s)
+    return any((lane_id < 0) == (with_s == forward) for lane_id in lanes if lane_id != 0)
 
 
 def _leg_between(net: RoadNetwork, a: Waypoint, b: Waypoint) -> list[Leg] | None:

@@ -329,12 +329,12 @@ class RoadNetwork:
             new_lane = linked if linked is not None else lane_id
             return (nxt, new_lane, start) if _enters(nxt, new_lane, start) else None
         conns = [c for c in self.junctions.get(link.id, []) if c.incoming == road.id]
-        wanted = [c for c in conns if c.connecting == prefer and c.lane_links]
+        # (a route's connection when it is linked from our lane; from an unlinked lane a road user goes
+        # no further than esmini takes it: to the end of its road, not across into a linked one)
+        wanted = [c for c in conns if c.connecting == prefer and lane_id in c.lane_links]
         if wanted:
             c = wanted[0]
-            to = c.lane_links.get(lane_id)
-            if to is None:  # the route turns from another lane: the linked lane nearest to ours
-                to = c.lane_links[min(c.lane_links, key=lambda k: abs(k - lane_id))]
+            to = c.lane_links[lane_id]
             nxt = self.roads.get(c.connecting)
             if _enters(nxt, to, c.contact != "end"):
                 return nxt, to, c.contact != "end"
