@@ -319,6 +319,70 @@ def test_speeds_and_places_said_beside_the_ego(text, ego_kph, kind, relation, sp
     assert (a.kind, a.relation, got, [b[0] for b in a.behaviours]) == (kind, relation, speed, behaviours)
 
 
+@pytest.mark.parametrize(
+    "text, relation, behaviour",
+    [
+        # a side said right after a sideways verb is where the road user moves to: a cut-in comes from the
+        # other side, a lane change or a swerve out goes that way (before: "swerves left into our lane"
+        # was refused, "merges right" came from the right)
+        ("A cyclist swerves left into our lane.", "right", ("cut_in", {})),
+        ("The van merges right from the middle lane just in front of us.", "left", ("cut_in", {})),
+        ("The car ahead changes lanes left.", "ahead", ("change_lane", {"direction": 1.0})),
+        ("The truck ahead swerves right to avoid a stopped car.", "ahead", ("cut_out", {"direction": -1.0})),
+        ("A child runs left across the road.", "roadside_right", ("cross_in_front", {})),
+        # "right" before a place is "just", not a side
+        ("A car cuts in right in front of us.", None, ("cut_in", {})),
+        ("A car cuts in from the right.", "right", ("cut_in", {})),
+        # articles stand for one another in phrases; animals leap onto the road
+        ("A bus pulls away from a bus stop on the right into the ego's lane.", "right", ("cut_in", {})),
+        ("At dusk a deer jumps onto the road 40 m ahead.", "roadside_right", ("cross_in_front", {})),
+    ],
+)  # fmt: skip
+def test_where_a_road_user_moves_to(text, relation, behaviour):
+    a = read(text).actors[0]
+    assert (a.relation, a.behaviours[0][:2]) == (relation, behaviour)
+
+
+def test_test_specification_wording():
+    """How test specifications say it: "target pedestrian (adult)" is one walker (before: a car and two
+    walkers), "50% of the vehicle width" is no speed and no road user (before: a car at 50 km/h), a
+    walker "from the far side" crosses from there (before: walked along the road), a POV that "fails to
+    give way" at a junction goes through it (before: did nothing), "performs an evasive lane change"
+    is a lane change (before: refused)."""
+    r = read(
+        "Test case: target pedestrian (adult) walks from the far side at 5 km/h, impact at 50% of the vehicle width."
+    )
+    (walker,) = r.actors
+    assert (walker.kind, walker.relation, walker.behaviours[0][0]) == ("pedestrian", "roadside_left", "cross_in_front")
+    assert walker.speed_mps == pytest.approx(5 / 3.6) and r.ego_speed_mps is None
+    (pov,) = read("SV travelling at 50 km/h approaches a junction; POV from the right fails to give way.").actors
+    assert (pov.kind, pov.relation, pov.behaviours[0][0]) == ("car", "junction_right", "run_red_light")
+    lead, truck = read(
+        "The vehicle in front performs an evasive lane change to the left, revealing a stationary truck."
+    ).actors
+    assert lead.behaviours[0][:2] == ("cut_out", {"direction": 1.0}) and (truck.kind, truck.speed_mps) == ("truck", 0.0)
+    courier, van = read("A courier walks out from behind a parked van.").actors
+    assert (courier.kind, courier.behaviours[0][0], van.kind, van.speed_mps) == (
+        "pedestrian",
+        "cross_in_front",
+        "van",
+        0,
+    )
+    with pytest.raises(NotUnderstood) as refused:  # (no behaviour opens a door: said, not dropped)
+        read("A cyclist rides ahead; someone opens the car door.")
+    assert refused.value.words == ["opens"]
+    (cyclist,) = read("A cyclist comes from the right.").actors
+    assert (cyclist.relation, cyclist.behaviours[0][0]) == ("roadside_right", "cross_in_front")
+    (walker,) = read("A child walks along the kerb on the right.").actors
+    assert walker.behaviours[0][0] == "along_road"
+
+
+def test_lights_on_a_car_are_not_a_junction():
+    r = read("Heavy fog. A broken-down car stands in our lane 80 m ahead with hazard lights on.")
+    assert (r.map_kind, r.actors[0].speed_mps, r.actors[0].distance_m) == (None, 0.0, 80.0)
+    assert read("A car stops at the traffic lights.").map_kind == "crossroad"
+
+
 def test_behaviour_library_is_complete_and_listed(capsys):
     wanted = {
         "keep_lane",
@@ -461,9 +525,14 @@ def test_esmini_plays_what_has_no_custom_controller(name, tmp_path, esmini):
         "An oncoming truck drifts into our lane and then returns to its lane.",
         "The car in front swerves into the left lane to avoid a stopped van in our lane.",
         "The ego drives on a two-lane road in heavy traffic.",
+        # round a one-way ring: before, vei planned routes against the ring's lanes and turned the ego
+        # from an unlinked approach lane into the exit lane (esmini: 100-160 m apart)
+        "At a roundabout a car from the right does not give way.",
+        "The ego enters a roundabout; a van coming from the left fails to stop.",
     ],
-    ids=["turn_across", "turn_into", "give_way", "along_road", "wrong_way", "drift", "cut_out", "traffic"],
-)
+    ids=["turn_across", "turn_into", "give_way", "along_road", "wrong_way", "drift", "cut_out", "traffic",
+         "roundabout_right", "roundabout_left"],
+)  # fmt: skip
 def test_esmini_plays_the_newer_behaviours_and_the_traffic_alike(text, tmp_path, esmini):
     """The behaviours added later, and background traffic in both directions, play the same in
     esmini: every entity within 0.25 m, the same collisions (the ego without its planner)."""

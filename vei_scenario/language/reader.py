@@ -33,7 +33,7 @@ from vei_scenario.language import vocabulary as V
 from vei_scenario.language.behaviours import BEHAVIOURS
 from vei_scenario.language.reading import ActorSpec, NotUnderstood, Reading
 
-_TOKEN = re.compile(r"\d+(?:\.\d+)?|km/h|m/s²|m/s2|m/s|[a-z][a-z\-]*(?:'[a-z]+)?|'s|[.;,!?:]")
+_TOKEN = re.compile(r"\d+(?:\.\d+)?|km/h|m/s²|m/s2|m/s|[a-z][a-z\-]*(?:'[a-z]+)?|'s|[.;,!?:%]")
 
 
 @lru_cache(maxsize=4096)
@@ -44,9 +44,15 @@ def _lemmas(word: str) -> dict[str, tuple[str, ...]]:
     return getAllLemmas(word)
 
 
+#: The articles, one another's forms in a phrase.
+_ARTICLES = frozenset(("a", "an", "the"))
+
+
 @lru_cache(maxsize=4096)
 def forms(word: str) -> frozenset[str]:
     """The surface form of ``word`` and all its lemmas."""
+    if word in _ARTICLES:  # ("pulls away from a bus stop" is the phrase "pull away from the bus stop")
+        return _ARTICLES
     out = {word}
     for lemmas in _lemmas(word).values():
         out.update(lemmas)
@@ -188,6 +194,8 @@ class _Actor:
     goes_on: bool = False  # said not to give way, stop or slow ("does not yield", "fails to stop")
     speed_to_mps: float | None = None  # the speed it changes to ("slows from 80 to 30 km/h": 30)
     accel_mps2: float | None = None  # how hard it changes speed ("brakes at 6 m/s²")
+    toward: str | None = None  # the side it moves to ("merges right", "swerves left into our lane")
+    came_from: bool = False  # a kerb or side said as where it comes from ("walks from the far side")
 
 
 #: Euro NCAP's names of its test scenarios ("Car-to-Car Rear stationary", "Car-to-Pedestrian Nearside
@@ -385,8 +393,13 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
             participle = last.endswith("ing") and opens  # "A pedestrian crossing from the right ..."
             if prev not in _PLACE_PREPOSITIONS and (verb or participle):
                 key = key[:1]
-        adverb = None
-        if (key is None or len(key) == 1) and i + 2 < len(tokens) and _adverb(tokens[i + 1]):
+        adverb = toward = None
+        if (key is None or len(key) == 1) and i + 2 < len(tokens) and tokens[i + 1] in ("left", "right"):
+            # "swerves left into our lane": the verb's phrase around the side it moves to
+            skipped = _best(tokens[: i + 1] + tokens[i + 2 :], i)
+            if skipped is not None and len(skipped) > 1 and TABLE[skipped][0] == "behaviour":
+                key, toward = skipped, tokens[i + 1]
+        if (key is None or len(key) == 1) and toward is None and i + 2 < len(tokens) and _adverb(tokens[i + 1]):
             # "walks slowly across": the phrase around an adverb, and the adverb on its own
             skipped = _best(tokens[: i + 1] + tokens[i + 2 :], i)
             if skipped is not None and len(skipped) > 1:
@@ -418,6 +431,9 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
             i += 1
             continue
         slot, value = TABLE[key]
+        if slot == "actor" and i + len(key) < len(tokens) and tokens[i + len(key)] in _PARTS:
+            i += len(key) + 1  # "50 % of the vehicle width", "a car door": a part of one, not a road user
+            continue
         if key == ("stop",) and det:  # "the stop", "a stop": a bus stop, a place
             slot, value = "kerb", None
         elif tok == "crossing" and len(key) == 1 and det:  # "at the crossing": a junction, not someone crossing
@@ -431,9 +447,13 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
         if slot == "behaviour" and _denied(tokens, i) and key[0] not in _NEGATORS:
             name, cfg = _DENIED.get(value[0], ("keep_going", {}))  # ("does not stop": it carries on)
             value = (name, {**cfg, "_denied": 1.0} if value[0] != "keep_going" else cfg)
-        used = len(key) + (1 if adverb else 0)
+        used = len(key) + (1 if adverb or toward else 0)
         words = " ".join(tokens[i : i + used])
         nxt = tokens[i + used] if i + used < len(tokens) else ""
+        after = tokens[i + used + 1] if i + used + 1 < len(tokens) else ""
+        if slot == "behaviour" and value[0] in _SIDEWAYS and toward is None and nxt in ("left", "right"):
+            if after not in _RIGHT_BEFORE:  # "merges right from the middle lane" (not "cuts in right in front")
+                toward = nxt
         if slot in ("sequence", "parallel"):
             clauses.append((slot, [_Mention("link", slot, words, i, prev, end=i + used)]))
         elif slot != "noise":
@@ -441,6 +461,10 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
         if adverb is not None and (adverb,) in TABLE and TABLE[(adverb,)][0] in ("criticality", "speed_word"):
             a_slot, a_value = TABLE[(adverb,)]
             clauses[-1][1].append(_Mention(a_slot, a_value, adverb, i + 1, tok, end=i + 2))
+        if toward is not None and slot == "behaviour":
+            at = i + 1 if tokens[i + 1] == toward else i + used
+            clauses[-1][1].append(_Mention("toward", toward, toward, at, tokens[at - 1], end=at + 1))
+            used = max(used, at + 1 - i)
         i += used
     return [c for c in clauses if any(m.slot not in ("punct", "link") for m in c[1])], ignored
 
@@ -467,7 +491,7 @@ VERB_CRITICALITY = {
 }
 _POSITIONAL = (
     "relation", "side", "lane_side", "kerb", "kerb_side", "arm", "stationary", "wrong_way", "returns",
-    "speed_adjective",
+    "speed_adjective", "toward",
 )  # fmt: skip
 _VERBS = ("behaviour", "turn", "unknown_verb", "ego_verb", "speed_word")
 
@@ -550,9 +574,9 @@ def _resolve_relation(a: _Actor, map_kind: str | None) -> str | None:
         return f"junction_{side or 'left'}"
     if first == "run_red_light" or (a.arm and junction) or (junction and first in (None, "keep_going") and a.side):
         return f"junction_{side or 'left'}"
-    if a.kerb and not vehicle:
-        return f"roadside_{side or 'right'}"
     lateral = first in ("cut_in", "overtake", "forced_turn", "follow_vehicle")
+    if a.kerb and not vehicle and not (lateral and first != "forced_turn"):
+        return f"roadside_{side or 'right'}"  # (a rider cutting in from the kerb or cycle lane: from that lane)
     if side and (lateral or a.relation is None or a.lane_side):
         return side
     return a.relation or side
@@ -606,7 +630,10 @@ def read(text: str) -> Reading:
                 continue
             if m.slot in ("actor", "pronoun", "member"):
                 if m.slot == "actor" and prev is not None and prev.slot == "actor" and prev.end == m.start:
-                    continue  # "adult pedestrian": one actor
+                    if prev.words == "target" and named and isinstance(named[-1][0], _Actor) and m.value != "ego":
+                        named[-1][0].kind = str(m.value)  # "the target pedestrian": a walker
+                    prev = m
+                    continue  # "adult pedestrian", "bicycle courier", "target pedestrian (adult)": one actor
                 after_verb = prev is not None and prev.slot in _VERBS
                 if m.prev in L.OBJECT_PREPOSITIONS or m.next_ == "'s":
                     role = "prep"  # "in front of the ego", "the ego's lane"
@@ -808,7 +835,12 @@ def read(text: str) -> Reading:
         if a.kind == "pedestrian" and behaviours and behaviours[0][0] in VEHICLE_BEHAVIOURS:
             spec.kind = a.kind = "car"
         moving_out = behaviours and behaviours[0][0] == "cut_in" and a.followed
-        if behaviours and (behaviours[0][0] == "change_lane" or moving_out) and (a.lane_side or a.side):
+        if a.toward and behaviours:  # where it moves to: a lane change's direction, or a cut-in's far side
+            if behaviours[0][0] in ("change_lane", "cut_out") or moving_out:
+                a.lane_side, a.side = None, a.toward
+            elif not (a.lane_side or a.side or a.kerb_side):
+                a.side = "left" if a.toward == "right" else "right"
+        if behaviours and (behaviours[0][0] in ("change_lane", "cut_out") or moving_out) and (a.lane_side or a.side):
             name, cfg, c, lk = behaviours[0]  # "moves over into the right lane": where to, not where from
             behaviours[0] = (name, {**cfg, "direction": 1.0 if (a.lane_side or a.side) == "left" else -1.0}, c, lk)
             a.lane_side = a.side = None
@@ -869,6 +901,7 @@ def read(text: str) -> Reading:
 MAX_ACTORS = 8
 VULNERABLE = ("pedestrian", "bicycle", "e-scooter")
 VEHICLES = ("car", "van", "truck")
+RIDERS = ("bicycle", "e-scooter")
 #: Words before a verb that make it passive ("is tailgated", "gets cut off").
 PASSIVE_AUXILIARIES = {"is", "are", "was", "were", "be", "been", "being", "get", "gets", "got", "getting"}
 
@@ -906,8 +939,8 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool) -> None:
         name, cfg, c, lk = spec.behaviours[0]
         spec.behaviours[0] = (name, {**cfg, "turn": "right" if spec.relation == "junction_right" else "left"}, c, lk)
         return
-    if spec.relation in ("junction_left", "junction_right") and vehicle:
-        if any(n in ("cut_in", "forced_turn") for n in names):
+    if spec.relation in ("junction_left", "junction_right") and (vehicle or a.kind in RIDERS):
+        if any(n in ("cut_in", "forced_turn") for n in names):  # (a car, or a bike out of a driveway)
             rest = [b for b in spec.behaviours if b[0] not in ("cut_in", "forced_turn", "cross_in_front", "keep_going")]
             spec.behaviours = [("turn_into", {}, crit, link)] + rest
             spec.speed_mps = None if not a.speed_mps else a.speed_mps
@@ -915,15 +948,31 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool) -> None:
     if (
         vehicle
         and not junction
-        and (a.wrong_way or ("ahead" in a.said and towards) or (towards and first in ("cut_in", "change_lane")))
+        and (
+            a.wrong_way
+            or ("ahead" in a.said and towards)
+            or (towards and first in ("cut_in", "change_lane"))
+            or (spec.relation == "oncoming" and first == "overtake")  # (overtaking into the ego's lane)
+        )
     ):
-        returns = a.returns or any(n in ("change_lane", "cut_in") for n in names[1:])
+        returns = a.returns or first == "overtake" or any(n in ("change_lane", "cut_in") for n in names[1:])
         in_lane = a.wrong_way or "ahead" in a.said
         cfg = {"returns": 1.0} if returns else {}
         rest = [b for b in spec.behaviours if b[0] not in ("cut_in", "change_lane", "keep_going", "overtake")]
         spec.behaviours = [("wrong_way", cfg, crit, link)] + rest
         spec.relation = "ahead" if in_lane else "oncoming"
         spec.facing = "against" if in_lane else None
+        return
+    if (
+        a.kind in VULNERABLE
+        and names == ["keep_going"]
+        and a.came_from
+        and not a.stationary
+        and spec.relation in (None, "ahead", "left", "right", "roadside_right", "roadside_left")
+    ):  # "walks from the far side": from a kerb across the road, as a walker or rider going on from one does
+        side = a.kerb_side or a.side or (spec.relation or "").removeprefix("roadside_")
+        spec.relation = f"roadside_{side if side in ('left', 'right') else 'right'}"
+        spec.behaviours = [("cross_in_front", {}, crit, link)]
         return
     if (
         a.kind in VULNERABLE
@@ -940,6 +989,11 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool) -> None:
         if a.kerb or (spec.relation or "").startswith("roadside"):
             spec.lateral_m = 1.2 if a.kerb_side == "left" else -1.2  # at the edge of the lane
         spec.relation = "ahead" if spec.relation != "behind" else "behind"
+
+
+def _from(m) -> bool:
+    """Whether place mention ``m`` says where its road user comes from ("from the far side")."""
+    return m.prev == "from" or m.words.startswith("from ")
 
 
 def _parked(actors: list[_Actor], specs: list[ActorSpec]) -> None:
@@ -1038,6 +1092,14 @@ def _tidy(a: _Actor) -> list:
     return out
 
 
+#: Parts and measures of a vehicle: "vehicle width", "car door" name no road user.
+_PARTS = {"width", "length", "overlap", "centreline", "centerline", "door", "doors", "bumper", "mirror", "bonnet",
+          "hood", "boot", "trunk", "wheel", "wheels"}  # fmt: skip
+#: Behaviours that move a road user sideways: a bare "left"/"right" right after them is where it moves to.
+_SIDEWAYS = ("cut_in", "change_lane", "cut_out", "cross_in_front")
+#: Words after which "right" means "just" ("cuts in right in front of us"), not a side.
+_RIGHT_BEFORE = {"in", "ahead", "before", "behind", "after", "at", "next", "there", "away", "now", "by", "across",
+                 "lane", "lanes", "side", "hand"}  # fmt: skip
 #: Verbs that say what something is: an adjective after them describes it ("the truck is slow").
 _COPULAS = {"is", "are", "was", "were", "be", "being", "seems", "looks"}
 _INTENSIFIERS = {"very", "quite", "rather", "really", "extremely", "so", "too", "pretty"}
@@ -1172,12 +1234,17 @@ def _apply(m, who, r, link, added) -> None:
             a.returns = True
         elif m.slot == "side":
             a.side = a.side or m.value
+            a.came_from = a.came_from or _from(m)
+        elif m.slot == "toward":
+            a.toward = m.value
         elif m.slot == "lane_side":
             a.lane_side = m.value
         elif m.slot == "kerb":
             a.kerb = True
+            a.came_from = a.came_from or _from(m)
         elif m.slot == "kerb_side":
             a.kerb, a.kerb_side = True, m.value
+            a.came_from = a.came_from or _from(m)
         elif m.slot == "arm":
             a.arm = True
         elif m.slot == "stationary":
