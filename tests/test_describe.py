@@ -332,6 +332,8 @@ def test_speeds_and_places_said_beside_the_ego(text, ego_kph, kind, relation, sp
         ("A child runs left across the road.", "roadside_right", ("cross_in_front", {})),
         # "right" before a place is "just", not a side
         ("A car cuts in right in front of us.", None, ("cut_in", {})),
+        ("The van cuts in right ahead of the ego.", None, ("cut_in", {})),
+        ("A cyclist on the right swerves.", "right", ("cut_in", {})),
         ("A car cuts in from the right.", "right", ("cut_in", {})),
         # articles stand for one another in phrases; animals leap onto the road
         ("A bus pulls away from a bus stop on the right into the ego's lane.", "right", ("cut_in", {})),
@@ -375,6 +377,17 @@ def test_test_specification_wording():
     assert (cyclist.relation, cyclist.behaviours[0][0]) == ("roadside_right", "cross_in_front")
     (walker,) = read("A child walks along the kerb on the right.").actors
     assert walker.behaviours[0][0] == "along_road"
+
+
+def test_pulling_away_and_cutting_the_corner():
+    """ "pulls away" alone speeds up (before: refused); from a bus stop it pulls out; an oncoming truck
+    that "cuts the corner into the ego's lane" comes into it (the corpus's wording)."""
+    assert read("The bus ahead pulls away.").actors[0].behaviours[0][0] == "change_speed"
+    assert read("A bus pulls away from a bus stop on the right.").actors[0].behaviours[0][0] == "cut_in"
+    (truck,) = read(
+        "The ego takes a left-hand bend at 60 km/h; an oncoming truck cuts the corner into the ego's lane."
+    ).actors
+    assert truck.behaviours[0][0] in ("cut_in", "wrong_way")
 
 
 def test_lights_on_a_car_are_not_a_junction():

@@ -222,6 +222,7 @@ BEHAVIOUR_VERBS = {
         "change into",
         "drift into",
         "swerve in front",
+        "swerve",
         "swerve into the path",
         "swerve into our path",
         "veer into the path",
@@ -412,7 +413,7 @@ BEHAVIOUR_VERBS = {
 #: change_speed with its sign.
 SPEED_CHANGE_VERBS = {
     -4.0: ("slow down", "slow", "decelerate", "brake gently", "ease off", "reduce speed", "slow to"),
-    4.0: ("accelerate", "speed up", "pick up speed", "put its foot down"),
+    4.0: ("accelerate", "speed up", "pick up speed", "put its foot down", "pull away", "drive off"),
 }
 RED_LIGHT = (
     "run the red light",
@@ -896,9 +897,14 @@ NOISE = (
     "picture this",
     "the whole way",
     "right in",
+    "right ahead",
+    "right behind",
+    "right next to",
+    "right there",
+    "right away",
+    "right now",
     "same time",
     "in time",
-    "cut the corner",
     "hazard lights",
     "hazard warning lights",
     "headlights",
