@@ -59,8 +59,7 @@ def _drivable(net: RoadNetwork, road_id: str, forward: bool) -> bool:
     if not road.sections:
         return True
     lanes = (road.sections[0] if forward else road.sections[-1]).lanes
-    with_s = (road.rule or "RHT").upper() != "LHT"  # (right lanes, negative ids, go with s)
-    return any((lane_id < 0) == (with_s == forward) for lane_id in lanes if lane_id != 0)
+    return any(road.drives_forward(lane_id) == forward for lane_id in lanes if lane_id != 0)
 
 
 def _leg_between(net: RoadNetwork, a: Waypoint, b: Waypoint) -> list[Leg] | None:

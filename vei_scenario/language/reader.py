@@ -393,13 +393,13 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
             participle = last.endswith("ing") and opens  # "A pedestrian crossing from the right ..."
             if prev not in _PLACE_PREPOSITIONS and (verb or participle):
                 key = key[:1]
-        adverb = toward = None
+        adverb = toward_at = None  # (toward_at: where the side it moves to is said)
         if (key is None or len(key) == 1) and i + 2 < len(tokens) and tokens[i + 1] in ("left", "right"):
             # "swerves left into our lane": the verb's phrase around the side it moves to
             skipped = _best(tokens[: i + 1] + tokens[i + 2 :], i)
             if skipped is not None and len(skipped) > 1 and TABLE[skipped][0] == "behaviour":
-                key, toward = skipped, tokens[i + 1]
-        if (key is None or len(key) == 1) and toward is None and i + 2 < len(tokens) and _adverb(tokens[i + 1]):
+                key, toward_at = skipped, i + 1
+        if (key is None or len(key) == 1) and toward_at is None and i + 2 < len(tokens) and _adverb(tokens[i + 1]):
             # "walks slowly across": the phrase around an adverb, and the adverb on its own
             skipped = _best(tokens[: i + 1] + tokens[i + 2 :], i)
             if skipped is not None and len(skipped) > 1:
@@ -438,22 +438,21 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
             slot, value = "kerb", None
         elif tok == "crossing" and len(key) == 1 and det:  # "at the crossing": a junction, not someone crossing
             slot, value = "map", "crossroad"
-        elif slot in ("behaviour", "speed_word") and det and _actor_at(tokens, i + len(key)):
-            said = " ".join(tokens[i : i + len(key)])
-            if said in V.SPEED_WORDS:  # "a slow truck": how fast it goes, not a slowing (nor the subject's speed)
-                slot, value = "speed_adjective", V.SPEED_WORDS[said]
-        elif slot == "behaviour" and _after_copula(tokens, i) and " ".join(tokens[i : i + len(key)]) in V.SPEED_WORDS:
-            slot, value = "speed_word", V.SPEED_WORDS[" ".join(tokens[i : i + len(key)])]  # "the truck is slow"
+        elif slot in ("behaviour", "speed_word") and (said := " ".join(tokens[i : i + len(key)])) in V.SPEED_WORDS:
+            if det and _actor_at(tokens, i + len(key)):  # "a slow truck": how fast it goes, not a slowing
+                slot, value = "speed_adjective", V.SPEED_WORDS[said]  # (nor the subject's speed)
+            elif slot == "behaviour" and _after_copula(tokens, i):
+                slot, value = "speed_word", V.SPEED_WORDS[said]  # "the truck is slow"
         if slot == "behaviour" and _denied(tokens, i) and key[0] not in _NEGATORS:
             name, cfg = _DENIED.get(value[0], ("keep_going", {}))  # ("does not stop": it carries on)
             value = (name, {**cfg, "_denied": 1.0} if value[0] != "keep_going" else cfg)
-        used = len(key) + (1 if adverb or toward else 0)
+        used = len(key) + (1 if adverb or toward_at else 0)
         words = " ".join(tokens[i : i + used])
         nxt = tokens[i + used] if i + used < len(tokens) else ""
         after = tokens[i + used + 1] if i + used + 1 < len(tokens) else ""
-        if slot == "behaviour" and value[0] in _SIDEWAYS and toward is None and nxt in ("left", "right"):
+        if slot == "behaviour" and value[0] in _SIDEWAYS and toward_at is None and nxt in ("left", "right"):
             if after not in _RIGHT_BEFORE:  # "merges right from the middle lane" (not "cuts in right in front")
-                toward = nxt
+                toward_at = i + used
         if slot in ("sequence", "parallel"):
             clauses.append((slot, [_Mention("link", slot, words, i, prev, end=i + used)]))
         elif slot != "noise":
@@ -461,10 +460,10 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
         if adverb is not None and (adverb,) in TABLE and TABLE[(adverb,)][0] in ("criticality", "speed_word"):
             a_slot, a_value = TABLE[(adverb,)]
             clauses[-1][1].append(_Mention(a_slot, a_value, adverb, i + 1, tok, end=i + 2))
-        if toward is not None and slot == "behaviour":
-            at = i + 1 if tokens[i + 1] == toward else i + used
-            clauses[-1][1].append(_Mention("toward", toward, toward, at, tokens[at - 1], end=at + 1))
-            used = max(used, at + 1 - i)
+        if toward_at is not None and slot == "behaviour":
+            side = tokens[toward_at]
+            clauses[-1][1].append(_Mention("toward", side, side, toward_at, tokens[toward_at - 1], end=toward_at + 1))
+            used = max(used, toward_at + 1 - i)
         i += used
     return [c for c in clauses if any(m.slot not in ("punct", "link") for m in c[1])], ignored
 
@@ -779,11 +778,14 @@ def read(text: str) -> Reading:
                 elif who is None:
                     pending.append(m)
                 else:
-                    said = getattr(who, "speed_mps", None)  # (a speed word: "a slow truck ... at 30 km/h")
+                    # "a car 12 m ahead of the ego at 50 km/h": of both, unless its own was said ("a slow car")
+                    of_both = (
+                        m.slot == "speed" and isinstance(who, _Actor) and who.kind in VEHICLES
+                        and who.speed_mps is None and r.ego_speed_mps is None and _next_to_ego(prev, m)
+                    )  # fmt: skip
                     _apply(m, who, r, link, added)
-                    if m.slot == "speed" and said is None and r.ego_speed_mps is None and _next_to_ego(prev, m):
-                        if who.kind in VEHICLES:  # "a car 12 m ahead of the ego at 50 km/h": of both
-                            r.ego_speed_mps = m.value
+                    if of_both:
+                        r.ego_speed_mps = m.value
             prev = m
         for a, i in added:
             name, cfg, _, lk = a.behaviours[i]
@@ -1097,9 +1099,10 @@ _PARTS = {"width", "length", "overlap", "centreline", "centerline", "door", "doo
           "hood", "boot", "trunk", "wheel", "wheels"}  # fmt: skip
 #: Behaviours that move a road user sideways: a bare "left"/"right" right after them is where it moves to.
 _SIDEWAYS = ("cut_in", "change_lane", "cut_out", "cross_in_front")
-#: Words after which "right" means "just" ("cuts in right in front of us"), not a side.
-_RIGHT_BEFORE = {"in", "ahead", "before", "behind", "after", "at", "next", "there", "away", "now", "by", "across",
-                 "lane", "lanes", "side", "hand"}  # fmt: skip
+#: Words after which "right" means "just" ("cuts in right in front of us"), not a side: those of the
+#: noise phrases ("right ahead", "right away") and a few more; or it names a lane or side ("right lane").
+_RIGHT_BEFORE = {p.split()[1] for p in L.NOISE if p.startswith("right ")} | {
+    "before", "after", "at", "by", "across", "lane", "lanes", "side", "hand"}  # fmt: skip
 #: Verbs that say what something is: an adjective after them describes it ("the truck is slow").
 _COPULAS = {"is", "are", "was", "were", "be", "being", "seems", "looks"}
 _INTENSIFIERS = {"very", "quite", "rather", "really", "extremely", "so", "too", "pretty"}
