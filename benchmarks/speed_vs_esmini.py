@@ -13,7 +13,9 @@ median of N runs; the ratio vei / esmini, its median and worst. Start-up is the 
 ``vei run`` needs, measured in fresh processes. With ``--sweep``: ``vei sweep``'s evaluation of every
 variant of a Euro NCAP variation file (on all cores, as ``vei sweep`` runs it) per variant, against
 esmini's process per variant (the median over the first five variants); vei's figure is the median of
-three sweeps, each reading the files afresh. ``--sweep-all``: every variation file of many parameter
+five sweeps, each reading the files afresh, in a process of its own for each file (as ``vei sweep``
+is one process a file: in one long process the garbage of earlier files, which a sweep leaves to the
+end, slows the later ones by up to a fifth). ``--sweep-all``: every variation file of many parameter
 sets in the Euro NCAP pack (2023 ``*_Variation_*``, 2026 ``StandardRange`` and ``ExtendedRange``), and
 how many reach the target.
 """
@@ -75,7 +77,7 @@ def sweep_figures(esmini: Path, variation: Path) -> tuple[float, str]:
     base = base_scenario(variation)
     variants, _ = build_variants(base, [], variation, None)
     per_variant = []
-    for _ in range(3):  # (the median of three sweeps, each reading the files afresh)
+    for _ in range(5):  # (the median of five sweeps, each reading the files afresh)
         clear_file_caches()
         gc.disable()  # (as vei sweep evaluates: sweep.run_sweep)
         try:
@@ -95,6 +97,14 @@ def sweep_figures(esmini: Path, variation: Path) -> tuple[float, str]:
     )
 
 
+def _sweep_in_own_process(esmini: str, variation: Path) -> tuple[float, str]:
+    """``sweep_figures`` of one file measured in a fresh process."""
+    cmd = [sys.executable, __file__, "--esmini", esmini, "--in-process", "--sweep", str(variation)]
+    done = subprocess.run(cmd, capture_output=True, text=True, check=True)
+    ratio, line = done.stdout.strip().splitlines()[-1].split("\t", 1)
+    return float(ratio), line
+
+
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--esmini", default=str(ROOT.parent / "shared" / "esmini" / "bin" / "esmini"))
@@ -104,6 +114,7 @@ def main() -> int:
     ap.add_argument("--markdown", action="store_true")
     ap.add_argument("--sweep", action="append", default=[], help="a Euro NCAP variation file (repeatable)")
     ap.add_argument("--sweep-all", action="store_true", help="every variation file of the Euro NCAP pack")
+    ap.add_argument("--in-process", action="store_true", help=argparse.SUPPRESS)  # (one file, this process)
     args = ap.parse_args()
     esmini = find_esmini(args.esmini)
     if esmini is None:
@@ -113,9 +124,13 @@ def main() -> int:
     if sweeps:
         ratios = []
         for variation in sweeps:
-            ratio, line = sweep_figures(esmini, variation)
+            if args.in_process:
+                ratio, line = sweep_figures(esmini, variation)
+                print(f"{ratio!r}\t{line}")
+                return 0
+            ratio, line = _sweep_in_own_process(args.esmini, variation)
             ratios.append(ratio)
-            print(line)
+            print(line, flush=True)
         print(
             f"{len(ratios)} variation files: esmini / vei per variant median {statistics.median(ratios):.1f}, "
             f"worst {min(ratios):.1f}; at or above 10 on {sum(r >= 10 for r in ratios)}"

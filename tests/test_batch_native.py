@@ -132,7 +132,7 @@ def test_a_loop_with_more_road_users_runs_in_the_kernel_with_vei_runs_rows(compi
 def test_other_structures_are_refused(compiled):
     from vei_scenario.sweep.evaluate import _native_engine
 
-    with pytest.raises(NotALoop):
+    with pytest.raises(NotALoop, match="no CollisionAvoidancePlanner"):  # (known from its text alone)
         LoopScene(Path(__file__).parent / "data" / "following_brake.xosc")
     # a planner that also watches another scooter: that one would act on the ego
     xosc = next(p for p in compiled["multi_scooter"].written if p.name == "scenario.xosc")
@@ -147,3 +147,27 @@ def test_other_structures_are_refused(compiled):
         assert _native_engine(str(watched), 0.01) is None  # its sweep runs the interpreter
     finally:
         watched.unlink()
+
+
+def test_the_text_probe_refuses_only_files_that_cannot_hold_the_loop(tmp_path):
+    from vei_scenario.loop.scene import _cannot_be_a_loop
+
+    def probe(text: str) -> bool:
+        f = tmp_path / "s.xosc"
+        f.write_text(text)
+        return _cannot_be_a_loop(f)
+
+    both = (
+        '<Controller name="CollisionAvoidancePlanner"/><Controller name="x"><Properties>'
+        '<Property name="esminiController" value="SocialForceModel"/></Properties></Controller>'
+    )
+    assert not probe(both)  # (a kind named by esminiController counts as by the name)
+    assert not probe(
+        '<ParameterDeclaration name="k" value="SocialForceModel"/><Controller name="$k"/>'
+        '<Controller name="CollisionAvoidancePlanner"/>'
+    )
+    assert probe('<Controller name="SocialForceModel"/>')  # the planner is missing
+    assert probe('<Controller name="ACCController"/>')
+    # controllers from a catalog: only the full reading can tell
+    assert not probe('<ControllerCatalog><Directory path="c"/></ControllerCatalog>')
+    assert not _cannot_be_a_loop(tmp_path / "missing.xosc")  # (the full reading says what is wrong)
