@@ -255,3 +255,93 @@ def test_the_typed_schema_accepts_what_the_vcd_library_writes():
     assert list(jsonschema.Draft7Validator(_typed_schema()).iter_errors(doc)) == []
     doc["openlabel"]["coordinate_systems"]["odom"] = 5  # (and it does reject)
     assert list(jsonschema.Draft7Validator(_typed_schema()).iter_errors(doc))
+
+
+def _kitti_style(n: int = 40, stamps: bool = False) -> tuple[dict, list]:
+    """An annotation laid out as the VCD library's KITTI-tracking conversions are: no timestamps, the
+    ego's odometry as vehicle-iso8855_to_odom matrices, cuboids in the left camera (x right, y down,
+    z forward) two sensor frames below the vehicle, a DontCare object with a placeholder cuboid. Also
+    the truth: per frame, the scooter in the ego frame (x forward, y left)."""
+    import numpy as np
+
+    cam = np.array([[0.0, 0.0, 1.0, 0.27], [-1.0, 0.0, 0.0, 0.0], [0.0, -1.0, 0.0, -0.07], [0, 0, 0, 1.0]])
+    velo = np.array([[1.0, 0, 0, 0.76], [0, 1.0, 0, 0], [0, 0, 1.0, 1.73], [0, 0, 0, 1.0]])
+    to_cam = np.linalg.inv(velo @ cam)
+    cs = {
+        "odom": {"type": "scene_cs", "parent": "", "children": ["vehicle-iso8855"]},
+        "vehicle-iso8855": {"type": "local_cs", "parent": "odom", "children": ["VELO_TOP"]},
+        "VELO_TOP": {"type": "sensor_cs", "parent": "vehicle-iso8855", "children": ["CAM_LEFT"],
+                     "pose_wrt_parent": {"matrix4x4": velo.ravel().tolist()}},
+        "CAM_LEFT": {"type": "sensor_cs", "parent": "VELO_TOP", "children": [],
+                     "pose_wrt_parent": {"matrix4x4": cam.ravel().tolist()}},
+    }  # fmt: skip
+    frames, truth = {}, []
+    for k in range(n):
+        t = k / 10
+        yaw = 0.02 * t
+        pose = np.array([[math.cos(yaw), -math.sin(yaw), 0, 8.0 * t], [math.sin(yaw), math.cos(yaw), 0, 0.1 * t * t],
+                         [0, 0, 1, 0], [0, 0, 0, 1.0]])  # fmt: skip
+        ego = np.linalg.inv(pose) @ np.array([25.0, -8.0 + 4.0 * t, 0.5, 1.0])  # the scooter crossing from the right
+        truth.append((t, ego[0], ego[1]))
+        c = to_cam @ ego
+        matrix = {"matrix4x4": pose.ravel().tolist()}
+        odometry = {"src": "vehicle-iso8855", "dst": "odom", "transform_src_to_dst": matrix}
+        props = {"transforms": {"vehicle-iso8855_to_odom": odometry}}
+        if stamps:
+            props["timestamp"] = t
+        frames[str(k)] = {"frame_properties": props, "objects": {
+            "-1": {"object_data": {"cuboid": [{"name": "box3D", "coordinate_system": "CAM_LEFT",
+                                               "val": [-10.0, 499.0, -1.0, 0, -1.0, 0, -1000.0, -1000.0, -1000.0]}]}},
+            "0": {"object_data": {"cuboid": [{"name": "box3D", "coordinate_system": "CAM_LEFT",
+                                              "val": [*map(float, c[:3]), 0, -1.57, 0, 1.2, 1.7, 0.6]}]}}}}  # fmt: skip
+    objects = {
+        "-1": {"name": "DontCare", "type": "DontCare", "frame_intervals": [{"frame_start": 0, "frame_end": n - 1}]},
+        "0": {"name": "Scooter0", "type": "e-scooter", "frame_intervals": [{"frame_start": 0, "frame_end": n - 1}]},
+    }
+    doc = {"openlabel": {"metadata": {"schema_version": "1.0.0"}, "coordinate_systems": cs, "frames": frames,
+                         "objects": objects, "frame_intervals": [{"frame_start": 0, "frame_end": n - 1}]}}  # fmt: skip
+    return doc, truth
+
+
+def test_a_clip_without_timestamps_is_read_at_the_frame_rate_given(tmp_path, capsys):
+    doc, truth = _kitti_style()
+    src = tmp_path / "kitti.json"
+    src.write_text(json.dumps(doc))
+    err = _bad(tmp_path, capsys, doc)  # without a rate: refused, saying what to give
+    assert "frame_properties.timestamp: missing" in err and "--frame-rate HZ" in err
+    back = tmp_path / "back.json"
+    assert main(["clip", "convert", str(src), "-o", str(back), "--frame-rate", "10"]) == 0
+    frames = json.loads(back.read_text())["annotations"]["frames"]
+    got = [(f["t"], o["x_m"], o["y_m"]) for f in frames for o in f["objects"] if o["category"] == "e-scooter"]
+    assert len(got) == len(truth)
+    for (t, x, y), (t0, x0, y0) in zip(got, truth):  # through both sensor frames into the ego frame
+        assert t == pytest.approx(t0, abs=1e-12) and math.hypot(x - x0, y - y0) < 1e-9
+    # the same clip with its times written out compiles to the same bytes
+    stamped = tmp_path / "stamped.json"
+    stamped.write_text(json.dumps(_kitti_style(stamps=True)[0]))
+    assert main(["compile", str(src), "--frame-rate", "10", "-o", str(tmp_path / "a" / "scenario.xosc")]) == 0
+    assert main(["compile", str(stamped), "-o", str(tmp_path / "b" / "scenario.xosc")]) == 0
+    for f in FILES:
+        a, b = (tmp_path / "a" / f).read_bytes(), (tmp_path / "b" / f).read_bytes()
+        assert a.replace(b"kitti", b"stamped") == b, f
+
+
+@pytest.mark.parametrize(
+    "clip, rate, expected",
+    [
+        ("stamped", "10", "--frame-rate: the clip has timestamps (openlabel.frames.0.frame_properties)"),
+        ("vei-clip", "10", "--frame-rate: a vei-clip has its own times"),
+        ("kitti", "0", "argument --frame-rate: 0 is outside 0.01..10000"),
+        ("kitti", "inf", "argument --frame-rate: 'inf' is not a finite number"),
+    ],
+)
+def test_a_frame_rate_where_it_has_no_place_is_refused(tmp_path, capsys, clip, rate, expected):
+    src = tmp_path / "c.json"
+    if clip == "vei-clip":
+        src = EXAMPLES / "no_map" / "clip.json"
+    else:
+        src.write_text(json.dumps(_kitti_style(stamps=clip == "stamped")[0]))
+    assert main(["compile", str(src), "--frame-rate", rate, "-o", str(tmp_path / "o" / "s.xosc")]) == 2
+    err = capsys.readouterr().err
+    assert expected in err and err.count("\n") == 1
+    assert not (tmp_path / "o").exists()

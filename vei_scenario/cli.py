@@ -60,6 +60,10 @@ def _number(low: float | None = None, high: float | None = None, *, positive: bo
 DT = _number(1e-4, 0.5)
 WORKERS = _number(1, 1024, integer=True)
 SEED = _number(0, 2**63 - 1, integer=True)
+FRAME_RATE = _number(0.01, 10_000)
+FRAME_RATE_HELP = (
+    "frame rate of an OpenLABEL clip without timestamps (frame k at k / HZ s; e.g. 10 for KITTI conversions)"
+)
 
 
 def _osc_minor(text: str) -> int:
@@ -82,6 +86,7 @@ def _cmd_compile(args: argparse.Namespace) -> int:
         threat=args.threat,
         variants_dir=Path(args.variants) if args.variants else None,
         model_parameters=args.model_parameters,
+        frame_rate_hz=args.frame_rate,
     )
     result = compile_clip(args.clip, args.output, opts)
     print(compile_report(result))
@@ -91,7 +96,7 @@ def _cmd_compile(args: argparse.Namespace) -> int:
 def _cmd_clip_convert(args: argparse.Namespace) -> int:
     from vei_scenario.clip.openlabel import convert_clip
 
-    path, fmt = convert_clip(args.input, args.output, args.to)
+    path, fmt = convert_clip(args.input, args.output, args.to, args.frame_rate)
     print(f"wrote {path} ({'ASAM OpenLABEL 1.0' if fmt == 'openlabel' else 'vei-clip/1'})")
     return 0
 
@@ -436,6 +441,7 @@ def build_parser() -> argparse.ArgumentParser:
         help="also declare the rider's and the planner's model parameters (RiderDesiredSpeed, RiderRepulsion, "
         "PlannerTimeHeadway, PlannerMaxDecel, PlannerStandstillGap) so that sweeps and vei falsify vary them",
     )
+    c.add_argument("--frame-rate", type=FRAME_RATE, metavar="HZ", help=FRAME_RATE_HELP)
     c.set_defaults(func=_cmd_compile)
 
     ex = sub.add_parser("examples", help="copy the bundled example clips (and their map) into a directory")
@@ -451,6 +457,7 @@ def build_parser() -> argparse.ArgumentParser:
     cv.add_argument("input", help="vei-clip/1 or OpenLABEL 1.0 JSON file")
     cv.add_argument("-o", "--output", required=True, help="file to write (.json)")
     cv.add_argument("--to", choices=("openlabel", "vei-clip"), help="output format (default: the other one)")
+    cv.add_argument("--frame-rate", type=FRAME_RATE, metavar="HZ", help=FRAME_RATE_HELP)
     cv.set_defaults(func=_cmd_clip_convert)
 
     r = sub.add_parser("run", help="run a scenario with the built-in interpreter; write trajectories, metrics, plots")

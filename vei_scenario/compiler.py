@@ -45,6 +45,8 @@ class CompileOptions:
     smooth: bool = True
     #: declare the rider's and the planner's model parameters as scenario parameters (MODEL_PARAMETERS)
     model_parameters: bool = False
+    #: the frame rate of an OpenLABEL clip without timestamps (Hz)
+    frame_rate_hz: float | None = None
 
 
 @dataclass
@@ -121,7 +123,7 @@ def compile_clip(clip_path: str | Path, output: str | Path, options: CompileOpti
     output = Path(output)
     if output.suffix != ".xosc":
         raise VeiInputError(output, "-o", "the output must be a .xosc file")
-    clip = load_clip(clip_path)
+    clip = load_clip(clip_path, opts.frame_rate_hz)
     proj = LocalProjection(float(clip.ego.lat[0]), float(clip.ego.lon[0]))
     notes: list[str] = []
     road = _start_road_network(clip, proj, opts, output.parent, notes)

@@ -18,7 +18,9 @@ implementation, ``vcd``); what vei needs is then read following the standard's c
   as ``gnss: {lat_deg, lon_deg, heading_deg, speed_mps}`` (vei writes it so that a round trip is
   exact); otherwise heading and speed follow from the poses (``W`` is taken as east-north-up).
 * **Times**: ``frame_properties.timestamp`` of every frame used (else its first stream's
-  ``sync.timestamp``), in seconds (a number) or ISO 8601 (UTC when no zone is given).
+  ``sync.timestamp``), in seconds (a number) or ISO 8601 (UTC when no zone is given). A file with no
+  timestamps at all (the KITTI conversions of the VCD library have none) is read at a frame rate the
+  user gives (``frame_rate_hz``, ``--frame-rate``): frame ``k`` at ``k / rate`` s.
 * **Objects**: ``type`` is the class (e-scooter in any common spelling: ``e-scooter``, ``EScooter``,
   ``kick_scooter`` ...; other classes are read and then skipped by the compiler as in vei-clip),
   ``name`` the track id; each frame's first ``cuboid`` gives the centre. A cuboid in a child of ``E``
@@ -206,7 +208,54 @@ def _timestamp(path: Path, where: str, value: Any) -> float:
 
             stamp = stamp.replace(tzinfo=timezone.utc)
         return stamp.timestamp()
-    raise _err(path, where, "missing: every frame used needs frame_properties.timestamp (s or ISO 8601)")
+    raise _err(
+        path,
+        where,
+        "missing: every frame used needs frame_properties.timestamp (s or ISO 8601); for a clip without any "
+        "timestamps, give its frame rate (--frame-rate HZ)",
+    )
+
+
+#: The frame rates a clip without timestamps may be read at (Hz).
+FRAME_RATE_RANGE_HZ = (0.01, 10_000.0)
+
+
+def refuse_frame_rate(path: Path, frame_rate_hz: float | None) -> None:
+    """A vei-clip carries the time of every sample and annotation frame: a frame rate has no place."""
+    if frame_rate_hz is not None:
+        raise _err(path, "--frame-rate", "a vei-clip has its own times (every sample's t): a frame rate is "
+                   "only for OpenLABEL clips without timestamps")  # fmt: skip
+
+
+def _has_time(frame: dict) -> bool:
+    props = frame.get("frame_properties") or {}
+    if not isinstance(props, dict):
+        return False
+    if "timestamp" in props:
+        return True
+    streams = props.get("streams") or {}
+    return isinstance(streams, dict) and any(
+        isinstance(s, dict) and isinstance(s.get("sync"), dict) and "timestamp" in s["sync"] for s in streams.values()
+    )
+
+
+def _clock(path: Path, frames: dict[int, dict], frame_rate_hz: float | None):
+    """How a frame's time is read: its timestamps, or, for a file without any, its number at
+    ``frame_rate_hz``. A rate given for a file that has timestamps is refused (which would count?)."""
+    if frame_rate_hz is None:
+        return lambda k, frame: _frame_time(path, k, frame)
+    lo, hi = FRAME_RATE_RANGE_HZ
+    if isinstance(frame_rate_hz, bool) or not isinstance(frame_rate_hz, (int, float)) or not lo <= frame_rate_hz <= hi:
+        raise _err(path, "--frame-rate", f"{frame_rate_hz!r} is not a frame rate in {lo:g}..{hi:g} Hz")
+    stamped = next((k for k, f in frames.items() if _has_time(f)), None)
+    if stamped is not None:
+        raise _err(
+            path,
+            "--frame-rate",
+            f"the clip has timestamps (openlabel.frames.{stamped}.frame_properties): "
+            "a frame rate is only for clips without any",
+        )
+    return lambda k, frame: k / float(frame_rate_hz)
 
 
 # --- reading ------------------------------------------------------------------------------------------
@@ -308,9 +357,12 @@ def scooter_class(kind: str) -> bool:
     return re.sub(r"[^a-z0-9]", "", kind.lower()) in SCOOTER_CLASSES
 
 
-def openlabel_to_clip_document(path: Path, doc: dict) -> tuple[dict, dict[str, str]]:
+def openlabel_to_clip_document(
+    path: Path, doc: dict, frame_rate_hz: float | None = None
+) -> tuple[dict, dict[str, str]]:
     """The ``vei-clip/1`` document an OpenLABEL annotation stands for, and a map from its field paths
-    (``ego.samples[3]``) to the OpenLABEL paths they came from (for error messages)."""
+    (``ego.samples[3]``) to the OpenLABEL paths they came from (for error messages);
+    ``frame_rate_hz``: the frame rate of a file without timestamps."""
     from vcd import core
 
     validate_openlabel(path, doc)
@@ -320,6 +372,7 @@ def openlabel_to_clip_document(path: Path, doc: dict) -> tuple[dict, dict[str, s
     frames: dict[int, dict] = dict(sorted((int(k), v) for k, v in (ol.get("frames") or {}).items()))
     if not frames:
         raise _err(path, "openlabel.frames", "missing: an annotation needs frames")
+    frame_time_of = _clock(path, frames, frame_rate_hz)
     cs = _Frames(path, ol)
     cs.find_ego(frames)
     to_geo = _geo(path, cs.systems.get(cs.world, {}))
@@ -337,7 +390,7 @@ def openlabel_to_clip_document(path: Path, doc: dict) -> tuple[dict, dict[str, s
             m = _matrix(path, f"{where}.transform_src_to_dst", tr.get("transform_src_to_dst"))
             if tr.get("src") == cs.world:
                 m = np.linalg.inv(m)
-            frame_time[k] = _frame_time(path, k, f)
+            frame_time[k] = frame_time_of(k, f)
             ego_t.append(frame_time[k])
             ego_pose.append(m)
             gnss = tr.get("gnss")
@@ -417,7 +470,7 @@ def openlabel_to_clip_document(path: Path, doc: dict) -> tuple[dict, dict[str, s
             objs.append({"track_id": names[uid], "category": category, "x_m": float(p[0]), "y_m": float(p[1])})
             seen_cuboid.add(uid)
         if objs:
-            t = _frame_time(path, k, f)
+            t = frame_time_of(k, f)
             paths[f"annotations.frames[{len(ann_frames)}]"] = f"openlabel.frames.{k}"
             ann_frames.append({"t": t, "objects": objs})
     for uid, obj in objects.items():
@@ -457,10 +510,11 @@ def openlabel_to_clip_document(path: Path, doc: dict) -> tuple[dict, dict[str, s
     return out, paths
 
 
-def clip_from_openlabel(path: Path, doc: dict):
+def clip_from_openlabel(path: Path, doc: dict, frame_rate_hz: float | None = None):
     """A :class:`~vei_scenario.clip.model.Clip` from an OpenLABEL document: converted, then checked as
-    a vei-clip (times, spans, tracks), errors naming the OpenLABEL paths."""
-    clip_doc, paths = openlabel_to_clip_document(path, doc)
+    a vei-clip (times, spans, tracks), errors naming the OpenLABEL paths; ``frame_rate_hz``: the frame
+    rate of a file without timestamps."""
+    clip_doc, paths = openlabel_to_clip_document(path, doc, frame_rate_hz)
     try:
         return clip_from_document(path, clip_doc)
     except VeiInputError as exc:
@@ -551,10 +605,13 @@ def clip_document_to_openlabel(doc: dict, proj_string: str) -> dict:
     return vcd.data
 
 
-def convert_clip(src: str | Path, dst: str | Path, to: str | None = None) -> tuple[Path, str]:
+def convert_clip(
+    src: str | Path, dst: str | Path, to: str | None = None, frame_rate_hz: float | None = None
+) -> tuple[Path, str]:
     """Convert a clip file between ``vei-clip/1`` and OpenLABEL 1.0 (``to``: ``openlabel`` or
     ``vei-clip``; by default the other format). Both are validated; the output is written atomically.
-    Returns the path written and its format."""
+    ``frame_rate_hz``: the frame rate of an OpenLABEL file without timestamps. Returns the path
+    written and its format."""
     import json
 
     from vei_scenario.atomic_io import write_bytes_atomic
@@ -566,9 +623,10 @@ def convert_clip(src: str | Path, dst: str | Path, to: str | None = None) -> tup
     if to not in ("openlabel", "vei-clip"):
         raise VeiInputError(None, "--to", f"{to!r} is not openlabel or vei-clip")
     if is_openlabel:
-        clip_doc, _ = openlabel_to_clip_document(src, doc)
-        clip = clip_from_openlabel(src, doc)
+        clip_doc, _ = openlabel_to_clip_document(src, doc, frame_rate_hz)
+        clip = clip_from_openlabel(src, doc, frame_rate_hz)
     else:
+        refuse_frame_rate(src, frame_rate_hz)
         clip_doc = doc
         clip = clip_from_document(src, doc)
     if to == "vei-clip":
