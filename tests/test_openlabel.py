@@ -345,3 +345,50 @@ def test_a_frame_rate_where_it_has_no_place_is_refused(tmp_path, capsys, clip, r
     err = capsys.readouterr().err
     assert expected in err and err.count("\n") == 1
     assert not (tmp_path / "o").exists()
+
+
+@pytest.mark.parametrize("unit, scale", [("ms", 10**3), ("us", 10**6), ("ns", 10**9)])
+def test_timestamps_in_another_unit_are_read_with_the_unit_given(tmp_path, capsys, unit, scale):
+    doc, truth = _kitti_style(stamps=True)
+    epoch = 1_317_042_145  # (recorders count from an epoch: big integers)
+    for k, f in doc["openlabel"]["frames"].items():
+        f["frame_properties"]["timestamp"] = (epoch * 10 + int(k)) * scale // 10
+    src = tmp_path / "c.json"
+    src.write_text(json.dumps(doc))
+    err = _bad(tmp_path, capsys, doc)  # read as seconds, the clip would span days: refused, naming the option
+    assert "a clip spans at most" in err and "--time-unit ms, us or ns" in err
+    back = tmp_path / "back.json"
+    assert main(["clip", "convert", str(src), "-o", str(back), "--time-unit", unit]) == 0
+    clip = json.loads(back.read_text())
+    times = [s["t"] for s in clip["ego"]["samples"]]
+    assert times[0] == pytest.approx(epoch, abs=1e-6)
+    assert [t - times[0] for t in times] == pytest.approx([t for t, _, _ in truth], abs=1e-6)
+
+
+@pytest.mark.parametrize(
+    "args, expected",
+    [
+        (["--time-unit", "ms", "--frame-rate", "10"], "a unit of timestamps and a frame rate exclude each other"),
+        (["--time-unit", "min"], "argument --time-unit: invalid choice: 'min'"),
+    ],
+)
+def test_clock_options_that_contradict_are_refused(tmp_path, capsys, args, expected):
+    src = tmp_path / "c.json"
+    src.write_text(json.dumps(_kitti_style()[0]))
+    assert main(["compile", str(src), *args, "-o", str(tmp_path / "o" / "s.xosc")]) == 2
+    assert expected in capsys.readouterr().err
+    assert (
+        main(
+            [
+                "compile",
+                str(EXAMPLES / "no_map" / "clip.json"),
+                "--time-unit",
+                "s",
+                "-o",
+                str(tmp_path / "o" / "s.xosc"),
+            ]
+        )
+        == 2
+    )
+    assert "--time-unit: a vei-clip's times are seconds" in capsys.readouterr().err
+    assert not (tmp_path / "o").exists()

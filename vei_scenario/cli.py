@@ -61,6 +61,8 @@ DT = _number(1e-4, 0.5)
 WORKERS = _number(1, 1024, integer=True)
 SEED = _number(0, 2**63 - 1, integer=True)
 FRAME_RATE = _number(0.01, 10_000)
+TIME_UNITS = ("s", "ms", "us", "ns")
+TIME_UNIT_HELP = "unit of an OpenLABEL clip's timestamps written as numbers (default s; ROS writes ns, nuScenes us)"
 FRAME_RATE_HELP = (
     "frame rate of an OpenLABEL clip without timestamps (frame k at k / HZ s; e.g. 10 for KITTI conversions)"
 )
@@ -87,6 +89,7 @@ def _cmd_compile(args: argparse.Namespace) -> int:
         variants_dir=Path(args.variants) if args.variants else None,
         model_parameters=args.model_parameters,
         frame_rate_hz=args.frame_rate,
+        time_unit=args.time_unit,
     )
     result = compile_clip(args.clip, args.output, opts)
     print(compile_report(result))
@@ -96,7 +99,7 @@ def _cmd_compile(args: argparse.Namespace) -> int:
 def _cmd_clip_convert(args: argparse.Namespace) -> int:
     from vei_scenario.clip.openlabel import convert_clip
 
-    path, fmt = convert_clip(args.input, args.output, args.to, args.frame_rate)
+    path, fmt = convert_clip(args.input, args.output, args.to, args.frame_rate, args.time_unit)
     print(f"wrote {path} ({'ASAM OpenLABEL 1.0' if fmt == 'openlabel' else 'vei-clip/1'})")
     return 0
 
@@ -442,6 +445,7 @@ def build_parser() -> argparse.ArgumentParser:
         "PlannerTimeHeadway, PlannerMaxDecel, PlannerStandstillGap) so that sweeps and vei falsify vary them",
     )
     c.add_argument("--frame-rate", type=FRAME_RATE, metavar="HZ", help=FRAME_RATE_HELP)
+    c.add_argument("--time-unit", choices=TIME_UNITS, help=TIME_UNIT_HELP)
     c.set_defaults(func=_cmd_compile)
 
     ex = sub.add_parser("examples", help="copy the bundled example clips (and their map) into a directory")
@@ -458,6 +462,7 @@ def build_parser() -> argparse.ArgumentParser:
     cv.add_argument("-o", "--output", required=True, help="file to write (.json)")
     cv.add_argument("--to", choices=("openlabel", "vei-clip"), help="output format (default: the other one)")
     cv.add_argument("--frame-rate", type=FRAME_RATE, metavar="HZ", help=FRAME_RATE_HELP)
+    cv.add_argument("--time-unit", choices=TIME_UNITS, help=TIME_UNIT_HELP)
     cv.set_defaults(func=_cmd_clip_convert)
 
     r = sub.add_parser("run", help="run a scenario with the built-in interpreter; write trajectories, metrics, plots")

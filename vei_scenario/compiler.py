@@ -47,6 +47,8 @@ class CompileOptions:
     model_parameters: bool = False
     #: the frame rate of an OpenLABEL clip without timestamps (Hz)
     frame_rate_hz: float | None = None
+    #: the unit of an OpenLABEL clip's timestamps written as numbers (s, ms, us, ns; default s)
+    time_unit: str | None = None
 
 
 @dataclass
@@ -123,7 +125,7 @@ def compile_clip(clip_path: str | Path, output: str | Path, options: CompileOpti
     output = Path(output)
     if output.suffix != ".xosc":
         raise VeiInputError(output, "-o", "the output must be a .xosc file")
-    clip = load_clip(clip_path, opts.frame_rate_hz)
+    clip = load_clip(clip_path, opts.frame_rate_hz, opts.time_unit)
     proj = LocalProjection(float(clip.ego.lat[0]), float(clip.ego.lon[0]))
     notes: list[str] = []
     road = _start_road_network(clip, proj, opts, output.parent, notes)

@@ -172,9 +172,10 @@ def _quaternion_matrix(q: list[float]) -> np.ndarray:
     )
 
 
-def _frame_time(path: Path, k: int, frame: dict) -> float:
+def _frame_time(path: Path, k: int, frame: dict, unit_s: float = 1.0) -> float:
     """A frame's time: ``frame_properties.timestamp``, else the timestamp of its first stream's sync
-    (``frame_properties.streams.NAME.sync.timestamp``), in seconds."""
+    (``frame_properties.streams.NAME.sync.timestamp``), in seconds (``unit_s``: the unit of a timestamp
+    written as a number, in seconds)."""
     props = frame.get("frame_properties") or {}
     where = f"openlabel.frames.{k}.frame_properties.timestamp"
     if "timestamp" not in props:
@@ -182,23 +183,27 @@ def _frame_time(path: Path, k: int, frame: dict) -> float:
             sync = (stream or {}).get("sync") if isinstance(stream, dict) else None
             if isinstance(sync, dict) and "timestamp" in sync:
                 return _timestamp(path, f"openlabel.frames.{k}.frame_properties.streams.{name}.sync.timestamp",
-                                  sync["timestamp"])  # fmt: skip
-    return _timestamp(path, where, props.get("timestamp"))
+                                  sync["timestamp"], unit_s)  # fmt: skip
+    return _timestamp(path, where, props.get("timestamp"), unit_s)
 
 
-def _timestamp(path: Path, where: str, value: Any) -> float:
+def _timestamp(path: Path, where: str, value: Any, unit_s: float = 1.0) -> float:
     if isinstance(value, bool):
         raise _err(path, where, "a timestamp is seconds (a number) or ISO 8601 text, not a boolean")
     if isinstance(value, (int, float)):
         if not math.isfinite(value):
             raise _err(path, where, "not a finite number")
-        return float(value)
+        return float(value) * unit_s
     if isinstance(value, str):
         text = value.strip()
         try:
-            return float(text)
+            number = float(text)
         except ValueError:
             pass
+        else:
+            if not math.isfinite(number):
+                raise _err(path, where, "not a finite number")
+            return number * unit_s
         try:
             stamp = datetime.fromisoformat(text.replace("Z", "+00:00"))
         except ValueError:
@@ -218,13 +223,19 @@ def _timestamp(path: Path, where: str, value: Any) -> float:
 
 #: The frame rates a clip without timestamps may be read at (Hz).
 FRAME_RATE_RANGE_HZ = (0.01, 10_000.0)
+#: The units a timestamp written as a number may be in (``--time-unit``), in seconds: recorders write
+#: seconds, milliseconds, microseconds (nuScenes) or nanoseconds (ROS) since an epoch.
+TIME_UNITS_S = {"s": 1.0, "ms": 1e-3, "us": 1e-6, "ns": 1e-9}
 
 
-def refuse_frame_rate(path: Path, frame_rate_hz: float | None) -> None:
-    """A vei-clip carries the time of every sample and annotation frame: a frame rate has no place."""
+def refuse_clock_options(path: Path, frame_rate_hz: float | None, time_unit: str | None = None) -> None:
+    """A vei-clip carries the time of every sample and annotation frame, in seconds: a frame rate or a
+    unit of time has no place."""
     if frame_rate_hz is not None:
         raise _err(path, "--frame-rate", "a vei-clip has its own times (every sample's t): a frame rate is "
                    "only for OpenLABEL clips without timestamps")  # fmt: skip
+    if time_unit is not None:
+        raise _err(path, "--time-unit", "a vei-clip's times are seconds: a unit is only for OpenLABEL timestamps")
 
 
 def _has_time(frame: dict) -> bool:
@@ -239,11 +250,17 @@ def _has_time(frame: dict) -> bool:
     )
 
 
-def _clock(path: Path, frames: dict[int, dict], frame_rate_hz: float | None):
-    """How a frame's time is read: its timestamps, or, for a file without any, its number at
-    ``frame_rate_hz``. A rate given for a file that has timestamps is refused (which would count?)."""
+def _clock(path: Path, frames: dict[int, dict], frame_rate_hz: float | None, time_unit: str | None = None):
+    """How a frame's time is read: its timestamps (numbers in ``time_unit``, seconds by default), or,
+    for a file without any, its number at ``frame_rate_hz``. A rate given for a file that has
+    timestamps is refused (which would count?), and so is a unit for a file without them."""
+    if time_unit is not None and time_unit not in TIME_UNITS_S:
+        raise _err(path, "--time-unit", f"{time_unit!r} is not one of {', '.join(TIME_UNITS_S)}")
+    if time_unit is not None and frame_rate_hz is not None:
+        raise _err(path, "--time-unit", "a unit of timestamps and a frame rate exclude each other")
     if frame_rate_hz is None:
-        return lambda k, frame: _frame_time(path, k, frame)
+        unit_s = TIME_UNITS_S[time_unit or "s"]
+        return lambda k, frame: _frame_time(path, k, frame, unit_s)
     lo, hi = FRAME_RATE_RANGE_HZ
     if isinstance(frame_rate_hz, bool) or not isinstance(frame_rate_hz, (int, float)) or not lo <= frame_rate_hz <= hi:
         raise _err(path, "--frame-rate", f"{frame_rate_hz!r} is not a frame rate in {lo:g}..{hi:g} Hz")
@@ -358,11 +375,12 @@ def scooter_class(kind: str) -> bool:
 
 
 def openlabel_to_clip_document(
-    path: Path, doc: dict, frame_rate_hz: float | None = None
+    path: Path, doc: dict, frame_rate_hz: float | None = None, time_unit: str | None = None
 ) -> tuple[dict, dict[str, str]]:
     """The ``vei-clip/1`` document an OpenLABEL annotation stands for, and a map from its field paths
     (``ego.samples[3]``) to the OpenLABEL paths they came from (for error messages);
-    ``frame_rate_hz``: the frame rate of a file without timestamps."""
+    ``frame_rate_hz``: the frame rate of a file without timestamps; ``time_unit``: the unit of its
+    timestamps written as numbers (``TIME_UNITS_S``; seconds by default)."""
     from vcd import core
 
     validate_openlabel(path, doc)
@@ -372,7 +390,7 @@ def openlabel_to_clip_document(
     frames: dict[int, dict] = dict(sorted((int(k), v) for k, v in (ol.get("frames") or {}).items()))
     if not frames:
         raise _err(path, "openlabel.frames", "missing: an annotation needs frames")
-    frame_time_of = _clock(path, frames, frame_rate_hz)
+    frame_time_of = _clock(path, frames, frame_rate_hz, time_unit)
     cs = _Frames(path, ol)
     cs.find_ego(frames)
     to_geo = _geo(path, cs.systems.get(cs.world, {}))
@@ -510,11 +528,11 @@ def openlabel_to_clip_document(
     return out, paths
 
 
-def clip_from_openlabel(path: Path, doc: dict, frame_rate_hz: float | None = None):
+def clip_from_openlabel(path: Path, doc: dict, frame_rate_hz: float | None = None, time_unit: str | None = None):
     """A :class:`~vei_scenario.clip.model.Clip` from an OpenLABEL document: converted, then checked as
     a vei-clip (times, spans, tracks), errors naming the OpenLABEL paths; ``frame_rate_hz``: the frame
-    rate of a file without timestamps."""
-    clip_doc, paths = openlabel_to_clip_document(path, doc, frame_rate_hz)
+    rate of a file without timestamps; ``time_unit``: the unit of timestamps written as numbers."""
+    clip_doc, paths = openlabel_to_clip_document(path, doc, frame_rate_hz, time_unit)
     try:
         return clip_from_document(path, clip_doc)
     except VeiInputError as exc:
@@ -523,7 +541,10 @@ def clip_from_openlabel(path: Path, doc: dict, frame_rate_hz: float | None = Non
             if where.startswith(prefix):
                 where = paths[prefix] + f" ({where})"
                 break
-        raise VeiInputError(exc.file, where, exc.reason) from None
+        reason = exc.reason
+        if "a clip spans at most" in reason and time_unit is None and frame_rate_hz is None:
+            reason += " (timestamps written as numbers are read as seconds: --time-unit ms, us or ns for others)"
+        raise VeiInputError(exc.file, where, reason) from None
 
 
 # --- writing ------------------------------------------------------------------------------------------
@@ -606,12 +627,16 @@ def clip_document_to_openlabel(doc: dict, proj_string: str) -> dict:
 
 
 def convert_clip(
-    src: str | Path, dst: str | Path, to: str | None = None, frame_rate_hz: float | None = None
+    src: str | Path,
+    dst: str | Path,
+    to: str | None = None,
+    frame_rate_hz: float | None = None,
+    time_unit: str | None = None,
 ) -> tuple[Path, str]:
     """Convert a clip file between ``vei-clip/1`` and OpenLABEL 1.0 (``to``: ``openlabel`` or
     ``vei-clip``; by default the other format). Both are validated; the output is written atomically.
-    ``frame_rate_hz``: the frame rate of an OpenLABEL file without timestamps. Returns the path
-    written and its format."""
+    ``frame_rate_hz``, ``time_unit``: the frame rate of an OpenLABEL file without timestamps, the unit
+    of one's timestamps written as numbers. Returns the path written and its format."""
     import json
 
     from vei_scenario.atomic_io import write_bytes_atomic
@@ -623,10 +648,10 @@ def convert_clip(
     if to not in ("openlabel", "vei-clip"):
         raise VeiInputError(None, "--to", f"{to!r} is not openlabel or vei-clip")
     if is_openlabel:
-        clip_doc, _ = openlabel_to_clip_document(src, doc, frame_rate_hz)
-        clip = clip_from_openlabel(src, doc, frame_rate_hz)
+        clip_doc, _ = openlabel_to_clip_document(src, doc, frame_rate_hz, time_unit)
+        clip = clip_from_openlabel(src, doc, frame_rate_hz, time_unit)
     else:
-        refuse_frame_rate(src, frame_rate_hz)
+        refuse_clock_options(src, frame_rate_hz, time_unit)
         clip_doc = doc
         clip = clip_from_document(src, doc)
     if to == "vei-clip":
