@@ -392,3 +392,59 @@ def test_clock_options_that_contradict_are_refused(tmp_path, capsys, args, expec
     )
     assert "--time-unit: a vei-clip's times are seconds" in capsys.readouterr().err
     assert not (tmp_path / "o").exists()
+
+
+@pytest.mark.parametrize(
+    "kind, scooter",
+    [
+        *[
+            (k, True)
+            for k in (
+                "e-scooter",
+                "EScooter",
+                "kick_scooter",
+                "scooter",
+                "e_scooter_rider",
+                "vru.e-scooter",
+                "VRU/EScooterRider",
+                "Rider on KickScooter",
+                "human.pedestrian.personal_mobility",
+                "vehicle.scooter",
+                "Scooter Rider",
+                "electric scooter",
+            )
+        ],  # fmt: skip
+        *[
+            (k, False)
+            for k in (
+                "motor_scooter",
+                "MotorScooter",
+                "mobility scooter",
+                "moped",
+                "Cyclist",
+                "vehicle.bicycle",
+                "Pedestrian",
+                "DontCare",
+                "bikescooter",
+            )
+        ],  # fmt: skip
+    ],
+)
+def test_object_classes_are_e_scooters_as_datasets_spell_them(tmp_path, capsys, kind, scooter):
+    doc, _ = _kitti_style()
+    doc["openlabel"]["objects"]["0"]["type"] = kind
+    src = tmp_path / "c.json"
+    src.write_text(json.dumps(doc))
+    back = tmp_path / "back.json"
+    if not scooter:  # (the clip's only track is then not an e-scooter: refused, with the classes it has)
+        assert main(["clip", "convert", str(src), "-o", str(back), "--frame-rate", "10"]) == 2
+        err = capsys.readouterr().err
+        assert (
+            f"no object class names an e-scooter (classes: {', '.join(map(repr, sorted({'DontCare', kind})))})" in err
+        )
+        doc["openlabel"]["objects"]["-1"]["type"] = "e-scooter"  # (a scooter beside it: it is kept as it is)
+        src.write_text(json.dumps(doc))
+    assert main(["clip", "convert", str(src), "-o", str(back), "--frame-rate", "10"]) == 0
+    kinds = {o["category"] for f in json.loads(back.read_text())["annotations"]["frames"] for o in f["objects"]}
+    assert "e-scooter" in kinds
+    assert scooter or kind in kinds

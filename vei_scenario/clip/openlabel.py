@@ -370,8 +370,27 @@ def _geo(path: Path, world: dict):
     return to_geo
 
 
+#: Words of a class name (camel case, separators, digits apart): ``VRU/EScooterRider`` -> vru e scooter rider.
+_CLASS_WORDS = re.compile(r"[A-Z]+(?=[A-Z][a-z])|[A-Z]?[a-z]+|[A-Z]+|[0-9]+")
+#: Words that make a bare "scooter" something else: a motor scooter, a moped, a mobility scooter.
+_NOT_E_SCOOTER = frozenset({"motor", "motorcycle", "motorbike", "moped", "mobility", "vespa", "gas", "petrol"})
+
+
 def scooter_class(kind: str) -> bool:
-    return re.sub(r"[^a-z0-9]", "", kind.lower()) in SCOOTER_CLASSES
+    """Whether an object class names an e-scooter (or its rider), as annotation tools and datasets
+    spell it: the class alone (``EScooter``, ``kick_scooter``) or within a longer name
+    (``e_scooter_rider``, ``vru.e-scooter``, ``Rider on KickScooter``), and nuScenes' personal mobility
+    (``human.pedestrian.personal_mobility``: e-scooters, segways, skateboards). A bare "scooter" is one
+    unless the name says motor, moped or mobility."""
+    if re.sub(r"[^a-z0-9]", "", kind.lower()) in SCOOTER_CLASSES:
+        return True
+    words = [w.lower() for w in _CLASS_WORDS.findall(kind)]
+    joined = {"".join(words[i : i + n]) for n in (1, 2, 3) for i in range(len(words) - n + 1)}
+    if "personalmobility" in joined:
+        return True
+    if joined & (SCOOTER_CLASSES - {"scooter"}):
+        return True
+    return "scooter" in words and not _NOT_E_SCOOTER & set(words)
 
 
 def openlabel_to_clip_document(
@@ -542,6 +561,9 @@ def clip_from_openlabel(path: Path, doc: dict, frame_rate_hz: float | None = Non
                 where = paths[prefix] + f" ({where})"
                 break
         reason = exc.reason
+        if reason.startswith("no e-scooter track"):  # (say it in OpenLABEL's terms: the classes it has)
+            found = sorted({str(o.get("type", "")) for o in (doc["openlabel"].get("objects") or {}).values()})
+            reason = f"no object class names an e-scooter (classes: {', '.join(repr(k) for k in found)})"
         if "a clip spans at most" in reason and time_unit is None and frame_rate_hz is None:
             reason += " (timestamps written as numbers are read as seconds: --time-unit ms, us or ns for others)"
         raise VeiInputError(exc.file, where, reason) from None
