@@ -110,7 +110,7 @@ def test_reading_of_positions_sequences_and_words():
         ("A car approaching from the right does not stop at the junction.", "car", "junction_right", ["run_red_light"]),
         ("A car from the left won't give way at the crossroads.", "car", "junction_left", ["run_red_light"]),
         # one said not to brake or slow carries on; one said not to cross stands
-        ("The lead car doesn't brake.", "car", None, ["keep_going"]),
+        ("The lead car doesn't brake.", "car", "ahead", ["keep_going"]),
         ("The van in front didn't even bother to slow down.", "van", "ahead", ["keep_going"]),
         ("The truck ahead never slows down.", "truck", "ahead", ["keep_going"]),
         ("A pedestrian waits at the kerb and does not cross.", "pedestrian", "roadside_right", ["stop"]),
@@ -305,6 +305,19 @@ def test_both_cars_before_anyone_are_the_ego_and_one_more():
         ("The AV is following a bus.", None, "truck", "ahead", None, []),
         ("We are ahead of a motorcycle that overtakes us.", None, "car", "behind", None, ["overtake"]),
         ("A car is behind the ego.", None, "car", "behind", None, ["keep_going"]),
+        # the ego's own participle after a relation to it: its speed, not the road user's (before: the
+        # dog ran at 40 km/h and the ego's speed was sampled)
+        ("A dog runs onto the road 15 m ahead of the ego travelling at 40 km/h.", 40, "pedestrian",
+         "roadside_right", None, ["cross_in_front"]),
+        ("A child steps out 20 m in front of the ego doing 50 km/h.", 50, "pedestrian", "roadside_right", None,
+         ["cross_in_front"]),
+        # a clause that goes on with its subject: the speed is that subject's (before: the ego's)
+        ("An e-scooter follows the ego closely and then overtakes it on the right at 25 km/h.", None, "e-scooter",
+         None, 25, ["follow_vehicle", "overtake"]),
+        # the ego follows someone, or someone leads: that one is ahead (before: no place)
+        ("The subject vehicle follows a lead car at a 2 s gap; the lead car brakes hard.", None, "car", "ahead",
+         None, ["sudden_stop"]),
+        ("A preceding truck brakes suddenly.", None, "truck", "ahead", None, ["sudden_stop"]),
     ],
 )  # fmt: skip
 def test_speeds_and_places_said_beside_the_ego(text, ego_kph, kind, relation, speed, behaviours):
@@ -338,6 +351,17 @@ def test_speeds_and_places_said_beside_the_ego(text, ego_kph, kind, relation, sp
         # articles stand for one another in phrases; animals leap onto the road
         ("A bus pulls away from a bus stop on the right into the ego's lane.", "right", ("cut_in", {})),
         ("At dusk a deer jumps onto the road 40 m ahead.", "roadside_right", ("cross_in_front", {})),
+        # "<verb> to/into the left lane": a lane change that way (before: "changes to" refused, "moves to
+        # the left lane" kept going there, "changes into the left lane" cut in)
+        ("The vehicle in front changes to the left lane, revealing a stopped car.", "ahead",
+         ("cut_out", {"direction": 1.0})),
+        ("The lead car moves to the right lane.", "ahead", ("change_lane", {"direction": -1.0})),
+        ("The car ahead changes into the left lane.", "ahead", ("change_lane", {"direction": 1.0})),
+        ("A truck in the right lane moves over into the left lane.", "right", ("change_lane", {"direction": 1.0})),
+        # a walker who emerges from between parked cars crosses (before: a car turning out of a side road)
+        ("A child emerges from between parked cars.", "roadside_right", ("cross_in_front", {})),
+        ("An e-scooter rider suddenly enters the roadway from between two parked vans.", "roadside_right",
+         ("cross_in_front", {})),
     ],
 )  # fmt: skip
 def test_where_a_road_user_moves_to(text, relation, behaviour):
@@ -390,7 +414,15 @@ def test_pulling_away_and_cutting_the_corner():
     assert truck.behaviours[0][0] in ("cut_in", "wrong_way")
 
 
+def test_riders_against_the_traffic_come_towards_the_ego():
+    (cyclist,) = read("A cyclist rides against the traffic in the ego's lane.").actors
+    assert (cyclist.relation, cyclist.facing, cyclist.behaviours[0][0]) == ("ahead", "against", "along_road")
+    (rider,) = read("An e-scooter rides ahead of the ego.").actors
+    assert rider.facing is None
+
+
 def test_lights_on_a_car_are_not_a_junction():
+    assert read("At night a cyclist without lights rides in our lane 40 m ahead.").map_kind is None
     r = read("Heavy fog. A broken-down car stands in our lane 80 m ahead with hazard lights on.")
     assert (r.map_kind, r.actors[0].speed_mps, r.actors[0].distance_m) == (None, 0.0, 80.0)
     assert read("A car stops at the traffic lights.").map_kind == "crossroad"

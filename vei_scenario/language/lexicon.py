@@ -203,6 +203,7 @@ BEHAVIOUR_VERBS = {
         "enter the road",
         "enter the street",
         "enter the carriageway",
+        "enter the roadway",
         "drop onto the road",
         "drop off the kerb",
         "roll onto the road",
@@ -911,6 +912,15 @@ NOISE = (
     "brake lights",
     "tail lights",
     "fog lights",
+    "without lights",
+    "without a light",
+    "with no lights",
+    "no lights",
+    "lights off",
+    "its lights",
+    "bike lights",
+    "bicycle lights",
+    "unlit",
 )
 #: Saying a change of speed ends standing ("decelerates to a standstill": a stop).
 TO_A_STOP = ("to a stop", "to a standstill", "to a halt", "down to standstill", "to standstill")

@@ -385,6 +385,14 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
                 clauses[-1][1].append(_Mention(kind, value, words, i, prev, end=i + used))
             i += used
             continue
+        side_at = _lane_to_side(tokens, i)
+        if side_at is not None:  # "changes to the left lane": a lane change, and the side it moves to
+            after = tokens[side_at + 2] if side_at + 2 < len(tokens) else ""
+            words, side = " ".join(tokens[i:side_at]), tokens[side_at]
+            clauses[-1][1].append(_Mention("behaviour", ("change_lane", {}), words, i, prev, side, side_at, det))
+            clauses[-1][1].append(_Mention("toward", side, side, side_at, tokens[side_at - 1], after, side_at + 2))
+            i = side_at + 2
+            continue
         key = _best(tokens, i)
         if key and len(key) > 1 and TABLE[key][0] != "actor" and TABLE.get(key[:1], ("",))[0] == "actor":
             last = tokens[i + len(key) - 1]  # "the bus stops": the bus, then its verb ("at a bus stop": a place)
@@ -578,7 +586,7 @@ def _resolve_relation(a: _Actor, map_kind: str | None) -> str | None:
         return f"roadside_{side or 'right'}"  # (a rider cutting in from the kerb or cycle lane: from that lane)
     if side and (lateral or a.relation is None or a.lane_side):
         return side
-    return a.relation or side
+    return a.relation or side or ("ahead" if a.followed else None)  # (the lead car: ahead in the ego's lane)
 
 
 def read(text: str) -> Reading:
@@ -605,6 +613,7 @@ def read(text: str) -> Reading:
         count = 1
         expect_subject = True
         prev: _Mention | None = None
+        ego_speed_said: _Mention | None = None  # a speed read as the ego's ahead of its turn
         for k, m in enumerate(mentions):
             nxt = mentions[k + 1] if k + 1 < len(mentions) else None
             if m.slot == "punct":
@@ -614,6 +623,18 @@ def read(text: str) -> Reading:
                 continue
             if m.slot in ("conj", "link"):
                 expect_subject = True
+                prev = m
+                continue
+            if m.slot == "behaviour" and _ego_participle(prev, m, nxt):
+                # "15 m ahead of the ego travelling at 40 km/h": the ego's motion and its speed
+                r.ego_speed_mps = r.ego_speed_mps if r.ego_speed_mps is not None else nxt.value
+                ego_speed_said = nxt
+                prev = m
+                continue
+            if m is ego_speed_said or (
+                m.slot == "speed" and m.prev in MOTION_PARTICIPLES and _ego_named(prev) and m.start == prev.end + 1
+            ):  # ("20 m in front of the ego doing 50 km/h")
+                r.ego_speed_mps = r.ego_speed_mps if r.ego_speed_mps is not None else m.value
                 prev = m
                 continue
             if m.slot == "count":
@@ -679,7 +700,11 @@ def read(text: str) -> Reading:
                         prev = m
                         continue
                     else:
-                        made = [_Actor(str(m.value), wrong_way=m.words in L.WRONG_WAY_NOUNS) for _ in range(count)]
+                        lead = m.prev in _LEADING or m.words.split()[0] in _LEADING  # ("the lead car": followed)
+                        made = [
+                            _Actor(str(m.value), wrong_way=m.words in L.WRONG_WAY_NOUNS, followed=lead)
+                            for _ in range(count)
+                        ]
                         for a in made:
                             a.group = made if count > 1 else None
                         actors.extend(made)
@@ -737,6 +762,15 @@ def read(text: str) -> Reading:
                 continue
             if m.slot in _VERBS:
                 target = clause_subject
+                if (
+                    target == "ego"
+                    and m.slot == "behaviour"
+                    and m.value[0] == "follow_vehicle"
+                    and _object_follows(mentions, k)
+                ):  # "the ego follows a lead car": that car is ahead (as "the ego is following a bus" says)
+                    pending.append(replace(m, slot="relation", value="ahead"))
+                    prev = m
+                    continue
                 if target == "ego" and m.slot == "behaviour" and m.prev in PASSIVE_AUXILIARIES:
                     passive.append(m)  # said of the ego in the passive: the doer follows after "by"
                     prev = m
@@ -771,6 +805,8 @@ def read(text: str) -> Reading:
                 pending.append(replace(m, value=_SEEN_FROM_OBJECT[m.value]))
             else:
                 who = _nearest(named, m)
+                if who is None and m.slot == "speed" and isinstance(clause_subject, _Actor):
+                    who = clause_subject  # "..., and then overtakes it at 25 km/h": the one who overtakes
                 if who is None and m.slot in ("returns", "wrong_way") and isinstance(subject, _Actor):
                     who = subject  # "..., then cuts back": what it does, said without naming it again
                 if who is None and m.slot == "speed" and not actors and r.ego_speed_mps is None:
@@ -817,9 +853,14 @@ def read(text: str) -> Reading:
     if refuse:
         raise NotUnderstood(list(dict.fromkeys(refuse)), text)
     for a in actors:  # "turns out of the junction": it comes from a side road
-        for _name, cfg, _c, _lk in a.behaviours:
+        for k, (_name, cfg, c, lk) in enumerate(a.behaviours):
             if cfg.pop("from_side_road", None):
-                a.arm = True
+                if a.kind == "pedestrian":  # "a child emerges from between parked cars": a walker crosses
+                    a.behaviours[k] = ("cross_in_front", cfg, c, lk)  # (from a side road only if one is said)
+                else:
+                    a.arm = True
+        if a.kind == "pedestrian":  # ("comes out of a side street and crosses": one crossing)
+            a.behaviours = [b for k, b in enumerate(a.behaviours) if k == 0 or b[0] != a.behaviours[k - 1][0]]
     vehicles_giving_way = any(a.kind in VEHICLES and any(b[0] == "give_way" for b in a.behaviours) for a in actors)
     if (r.map_kind is None and r.ego_route in ("left", "right")) or (
         r.map_kind in (None, "straight") and (any(a.arm for a in actors) or vehicles_giving_way)
@@ -839,7 +880,10 @@ def read(text: str) -> Reading:
         moving_out = behaviours and behaviours[0][0] == "cut_in" and a.followed
         if a.toward and behaviours:  # where it moves to: a lane change's direction, or a cut-in's far side
             if behaviours[0][0] in ("change_lane", "cut_out") or moving_out:
+                origin = a.lane_side or a.side  # ("a truck in the right lane moves into the left lane": from there)
                 a.lane_side, a.side = None, a.toward
+                if a.relation is None and origin in ("left", "right") and origin != a.toward:
+                    a.relation = origin
             elif not (a.lane_side or a.side or a.kerb_side):
                 a.side = "left" if a.toward == "right" else "right"
         if behaviours and (behaviours[0][0] in ("change_lane", "cut_out") or moving_out) and (a.lane_side or a.side):
@@ -985,7 +1029,7 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool) -> None:
         and not (junction and spec.relation is None)
     ):
         spec.behaviours = [("along_road", {}, crit, link)]
-        spec.facing = "against" if towards else None
+        spec.facing = "against" if towards or a.wrong_way else None  # ("rides against the traffic")
         if spec.relation == "behind":
             spec.facing = None
         if a.kerb or (spec.relation or "").startswith("roadside"):
@@ -1099,6 +1143,27 @@ _PARTS = {"width", "length", "overlap", "centreline", "centerline", "door", "doo
           "hood", "boot", "trunk", "wheel", "wheels"}  # fmt: skip
 #: Behaviours that move a road user sideways: a bare "left"/"right" right after them is where it moves to.
 _SIDEWAYS = ("cut_in", "change_lane", "cut_out", "cross_in_front")
+#: Words that make a road user the one the ego follows ("the lead car", "a preceding truck").
+_LEADING = frozenset({"lead", "leading", "preceding"})
+#: Verbs of moving across lanes (lemmas) and the prepositions of where to: "changes to the left lane".
+_LANE_VERBS = frozenset({"change", "move", "switch", "pull", "merge", "swerve", "veer", "drift", "steer", "cut", "go"})
+_INTO = frozenset({"to", "into", "onto", "in"})
+
+
+def _lane_to_side(tokens: list[str], i: int) -> int | None:
+    """Where the side is said when ``tokens[i:]`` reads "<verb> [over] to/into the left/right lane" (a
+    lane change towards that side), else None. Not "into the left lane of the ego": that names a lane
+    by the ego's."""
+    if not (forms(tokens[i]) & _LANE_VERBS):
+        return None
+    j = i + 1 + (tokens[i + 1 : i + 2] == ["over"])
+    if tokens[j : j + 1] and tokens[j] in _INTO and tokens[j + 1 : j + 2] == ["the"]:
+        side = j + 2
+        if tokens[side : side + 2] in (["left", "lane"], ["right", "lane"]) and tokens[side + 2 : side + 3] != ["of"]:
+            return side
+    return None
+
+
 #: Words after which "right" means "just" ("cuts in right in front of us"), not a side: those of the
 #: noise phrases ("right ahead", "right away") and a few more; or it names a lane or side ("right lane").
 _RIGHT_BEFORE = {p.split()[1] for p in L.NOISE if p.startswith("right ")} | {
@@ -1121,10 +1186,10 @@ _SEEN_FROM_OBJECT = {"behind": "ahead", "ahead": "behind"}
 
 
 def _object_follows(mentions, k: int) -> bool:
-    """Whether relation ``mentions[k]`` is a preposition whose object is a road user named right after it
-    (past a determiner and speed adjectives: "behind a slower van"), not the ego."""
+    """Whether relation ``mentions[k]`` is a preposition (or a verb: "follows") whose object is a road
+    user named right after it (past a determiner and speed adjectives: "behind a slower van"), not the ego."""
     m, end = mentions[k], mentions[k].end
-    if m.slot != "relation" or any(w in L.EGO_NOUNS for w in m.words.split()):
+    if m.slot not in ("relation", "behaviour") or any(w in L.EGO_NOUNS for w in m.words.split()):
         return False
     end += 1 if m.next_ == "of" else 0  # ("ahead of a motorcycle")
     for x in mentions[k + 1 :]:
@@ -1138,15 +1203,38 @@ def _object_follows(mentions, k: int) -> bool:
     return False
 
 
-def _next_to_ego(prev, m) -> bool:
-    """Whether mention ``m`` follows the ego named after a preposition with at most "at" between ("ahead
-    of the ego at 50 km/h"): a speed there reads as the ego's as well as the vehicle's before it."""
-    if prev is None or prev.end + (1 if m.prev == "at" else 0) != m.start:
+def _ego_named(prev) -> bool:
+    """Whether mention ``prev`` names the ego: as itself, or at the end of a relation ("ahead of the ego")."""
+    if prev is None:
         return False
     if prev.slot == "actor":
         return prev.value == "ego"
     words = prev.words.split()
     return prev.slot == "relation" and any(" ".join(words[-k:]) in L.EGO_NOUNS for k in (1, 2, 3))
+
+
+def _next_to_ego(prev, m) -> bool:
+    """Whether mention ``m`` follows the ego named after a preposition with at most "at" between ("ahead
+    of the ego at 50 km/h"): a speed there reads as the ego's as well as the vehicle's before it."""
+    if prev is None or prev.end + (1 if m.prev == "at" else 0) != m.start:
+        return False
+    return _ego_named(prev)
+
+
+#: Participles that say how fast whoever is named before them goes ("the ego doing 50 km/h").
+MOTION_PARTICIPLES = frozenset(
+    {"doing", "travelling", "traveling", "driving", "going", "moving", "cruising", "running"}
+)
+
+
+def _ego_participle(prev, m, nxt) -> bool:
+    """Whether behaviour ``m`` is a participle of the ego named in a relation just before it, followed by
+    a speed ("15 m ahead of the ego travelling at 40 km/h"): the ego's motion, not the road user's."""
+    return (
+        prev is not None and prev.slot == "relation" and _ego_named(prev) and m.start == prev.end
+        and m.words in MOTION_PARTICIPLES and nxt is not None and nxt.slot == "speed"
+        and nxt.start - m.end <= (1 if nxt.prev == "at" else 0)
+    )  # fmt: skip
 
 
 def _nearest(named, m):
