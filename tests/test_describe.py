@@ -624,3 +624,22 @@ def test_vei_run_of_a_generated_scenario_gives_the_batchs_run(tmp_path):
         assert collisions == r.outcome["collisions"]
         assert round(float(result.t[-1]), 3) == r.outcome["duration_s"]
     assert any(r.outcome["collisions"] for r in records)  # (a batch where something does collide)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # a walker crossing four lanes on the way to a junction: the ego starts far enough back for the
+        # crossing to reach its path (before: the child set off at once and crossed behind the ego)
+        "Ego vehicle approaches a zebra crossing at 40 kph; a child runs across from the left.",
+        # an oncoming rider swerving into the ego's lane rides head-on in it, as a wrong-way driver does
+        # (before: a lane change into the traffic behind the ego, which ran into it)
+        "An e-scooter coming from the opposite direction swerves into the ego's lane.",
+    ],
+)
+def test_what_the_layers_say_is_what_plays(text, tmp_path):
+    from vei_scenario.language.corpus_check import play_case
+    from vei_scenario.language.rules_backend import layers_from_text
+
+    for seed in (0, 1):
+        assert play_case({"text": text}, layers_from_text, tmp_path, seed) == [], seed

@@ -991,8 +991,9 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool) -> None:
             spec.behaviours = [("turn_into", {}, crit, link)] + rest
             spec.speed_mps = None if not a.speed_mps else a.speed_mps
         return
+    rider = a.kind in ("bicycle", "e-scooter")
     if (
-        vehicle
+        (vehicle or (rider and towards and first in ("cut_in", "change_lane")))  # (an oncoming rider swerving in)
         and not junction
         and (
             a.wrong_way

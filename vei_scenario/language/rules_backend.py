@@ -141,6 +141,13 @@ def sample_layers(reading: Reading, text: str, seed: int) -> dict:
             spec_lateral = _u(rng, -0.9, 0.0)  # somewhere in the kerb half of the lane
         else:
             spec_lateral = spec.lateral_m
+        crossing = relation.startswith("roadside") and first.NAME == "cross_in_front"
+        if "distance_m" in ego and not adversaries and crossing:
+            # the crossing lies on the ego's way to its junction: the ego starts far enough back for the
+            # road user to get across in time (a child crossing four lanes at 1.5 m/s needs ~9 s)
+            room = _crossing_room_m(spec.kind, relation, first_cfg, ego, lanes)
+            if room > float(ego["distance_m"]):
+                ego["distance_m"] = round(min(room, ARM_LENGTH_M - 20.0), 3)
         spawn, speed = place_adversary(
             spec.kind, relation, first.NAME, first_cfg, ego, lanes, given_speed, spec.distance_m
         )
@@ -382,14 +389,8 @@ def _place_adversary(
     if relation in ("junction_left", "junction_right"):
         spawn["longitudinal_m"] = round(_junction_spawn(ego, lanes, relation, out_speed, ego_speed, cfg), 3)
     elif relation.startswith("roadside"):
-        v = max(float(cfg.get("crossing_speed_mps", 1.5 if kind == "pedestrian" else 4.0)), 0.3)
-        cfg.setdefault("crossing_speed_mps", v)
-        k = int(ego["lane"])
-        cross = (k - 0.5) * 3.5 + 1.0 if relation == "roadside_right" else (2 * lanes - k + 0.5) * 3.5 + 1.0
-        from vei_scenario.language.behaviours.cross_in_front import trigger_distance
-
-        trigger = trigger_distance(ego_speed, cross, v, TYPES[kind][4], float(cfg.get("arrival_gap_s", 0.5)))
-        lon = trigger + 15.0 + lengths / 2
+        cfg.setdefault("crossing_speed_mps", _crossing_speed(kind, cfg))
+        lon = _crossing_lon_m(kind, relation, cfg, ego, lanes)
         if "distance_m" in ego:  # before a junction: the crossing lies on the ego's way to it
             lon = min(lon, float(ego["distance_m"]) - 5.0)
         spawn["longitudinal_m"] = round(lon, 3)
@@ -423,6 +424,28 @@ def _topology(nodes: list[tuple[str, dict]]) -> dict:
             groups.append([node])
     items = [g[0] if len(g) == 1 else {"parallel": g} for g in groups]
     return items[0] if len(items) == 1 else {"sequence": items}
+
+
+def _crossing_speed(kind: str, cfg: dict) -> float:
+    return max(float(cfg.get("crossing_speed_mps", 1.5 if kind == "pedestrian" else 4.0)), 0.3)
+
+
+def _crossing_lon_m(kind: str, relation: str, cfg: dict, ego: dict, lanes: int) -> float:
+    """Where a kerb-side crosser stands ahead of the ego: the ego's distance when it sets off (timed to
+    reach the ego's lane ``arrival_gap_s`` after the ego would), plus room to see it first."""
+    from vei_scenario.language.behaviours.cross_in_front import trigger_distance
+
+    k = int(ego["lane"])
+    cross = (k - 0.5) * 3.5 + 1.0 if relation == "roadside_right" else (2 * lanes - k + 0.5) * 3.5 + 1.0
+    speed = _crossing_speed(kind, cfg)
+    gap = float(cfg.get("arrival_gap_s", 0.5))
+    trigger = trigger_distance(float(ego["speed_mps"]), cross, speed, TYPES[kind][4], gap)
+    return trigger + 15.0 + (TYPES["car"][0][0] + TYPES[kind][0][0]) / 2
+
+
+def _crossing_room_m(kind: str, relation: str, cfg: dict, ego: dict, lanes: int) -> float:
+    """How far before its junction the ego must start for a kerb-side crossing on the way to fit."""
+    return _crossing_lon_m(kind, relation, cfg, ego, lanes) + 5.0
 
 
 def _junction_spawn(ego: dict, lanes: int, relation: str, speed: float, ego_speed: float, cfg: dict) -> float:
