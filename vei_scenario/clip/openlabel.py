@@ -172,19 +172,27 @@ def _quaternion_matrix(q: list[float]) -> np.ndarray:
     )
 
 
-def _frame_time(path: Path, k: int, frame: dict, unit_s: float = 1.0) -> float:
-    """A frame's time: ``frame_properties.timestamp``, else the timestamp of its first stream's sync
-    (``frame_properties.streams.NAME.sync.timestamp``), in seconds (``unit_s``: the unit of a timestamp
-    written as a number, in seconds)."""
+def _stamp(k: int, frame: dict) -> tuple[str, Any] | None:
+    """Where a frame's timestamp is written and its value: ``frame_properties.timestamp``, else its
+    first stream's sync (``frame_properties.streams.NAME.sync.timestamp``); None when it has none."""
     props = frame.get("frame_properties") or {}
-    where = f"openlabel.frames.{k}.frame_properties.timestamp"
-    if "timestamp" not in props:
-        for name, stream in sorted((props.get("streams") or {}).items()):
-            sync = (stream or {}).get("sync") if isinstance(stream, dict) else None
-            if isinstance(sync, dict) and "timestamp" in sync:
-                return _timestamp(path, f"openlabel.frames.{k}.frame_properties.streams.{name}.sync.timestamp",
-                                  sync["timestamp"], unit_s)  # fmt: skip
-    return _timestamp(path, where, props.get("timestamp"), unit_s)
+    if not isinstance(props, dict):
+        return None
+    if "timestamp" in props:
+        return f"openlabel.frames.{k}.frame_properties.timestamp", props["timestamp"]
+    streams = props.get("streams") or {}
+    for name, stream in sorted(streams.items() if isinstance(streams, dict) else ()):
+        sync = stream.get("sync") if isinstance(stream, dict) else None
+        if isinstance(sync, dict) and "timestamp" in sync:
+            return f"openlabel.frames.{k}.frame_properties.streams.{name}.sync.timestamp", sync["timestamp"]
+    return None
+
+
+def _frame_time(path: Path, k: int, frame: dict, unit_s: float = 1.0) -> float:
+    """A frame's time (:func:`_stamp`), in seconds (``unit_s``: the unit of a timestamp written as a
+    number, in seconds)."""
+    where, value = _stamp(k, frame) or (f"openlabel.frames.{k}.frame_properties.timestamp", None)
+    return _timestamp(path, where, value, unit_s)
 
 
 def _timestamp(path: Path, where: str, value: Any, unit_s: float = 1.0) -> float:
@@ -238,18 +246,6 @@ def refuse_clock_options(path: Path, frame_rate_hz: float | None, time_unit: str
         raise _err(path, "--time-unit", "a vei-clip's times are seconds: a unit is only for OpenLABEL timestamps")
 
 
-def _has_time(frame: dict) -> bool:
-    props = frame.get("frame_properties") or {}
-    if not isinstance(props, dict):
-        return False
-    if "timestamp" in props:
-        return True
-    streams = props.get("streams") or {}
-    return isinstance(streams, dict) and any(
-        isinstance(s, dict) and isinstance(s.get("sync"), dict) and "timestamp" in s["sync"] for s in streams.values()
-    )
-
-
 def _clock(path: Path, frames: dict[int, dict], frame_rate_hz: float | None, time_unit: str | None = None):
     """How a frame's time is read: its timestamps (numbers in ``time_unit``, seconds by default), or,
     for a file without any, its number at ``frame_rate_hz``. A rate given for a file that has
@@ -264,7 +260,7 @@ def _clock(path: Path, frames: dict[int, dict], frame_rate_hz: float | None, tim
     lo, hi = FRAME_RATE_RANGE_HZ
     if isinstance(frame_rate_hz, bool) or not isinstance(frame_rate_hz, (int, float)) or not lo <= frame_rate_hz <= hi:
         raise _err(path, "--frame-rate", f"{frame_rate_hz!r} is not a frame rate in {lo:g}..{hi:g} Hz")
-    stamped = next((k for k, f in frames.items() if _has_time(f)), None)
+    stamped = next((k for k, f in frames.items() if _stamp(k, f) is not None), None)
     if stamped is not None:
         raise _err(
             path,
@@ -552,6 +548,14 @@ def clip_from_openlabel(path: Path, doc: dict, frame_rate_hz: float | None = Non
     a vei-clip (times, spans, tracks), errors naming the OpenLABEL paths; ``frame_rate_hz``: the frame
     rate of a file without timestamps; ``time_unit``: the unit of timestamps written as numbers."""
     clip_doc, paths = openlabel_to_clip_document(path, doc, frame_rate_hz, time_unit)
+    return _checked_clip(path, doc, clip_doc, paths, time_unit, frame_rate_hz)
+
+
+def _checked_clip(
+    path: Path, doc: dict, clip_doc: dict, paths: dict[str, str], time_unit: str | None, frame_rate_hz: float | None
+):
+    """The vei-clip ``clip_doc`` converted from OpenLABEL ``doc`` checked as a clip, errors naming the
+    OpenLABEL paths (``paths``) and said in OpenLABEL's terms."""
     try:
         return clip_from_document(path, clip_doc)
     except VeiInputError as exc:
@@ -670,8 +674,8 @@ def convert_clip(
     if to not in ("openlabel", "vei-clip"):
         raise VeiInputError(None, "--to", f"{to!r} is not openlabel or vei-clip")
     if is_openlabel:
-        clip_doc, _ = openlabel_to_clip_document(src, doc, frame_rate_hz, time_unit)
-        clip = clip_from_openlabel(src, doc, frame_rate_hz, time_unit)
+        clip_doc, paths = openlabel_to_clip_document(src, doc, frame_rate_hz, time_unit)
+        clip = _checked_clip(src, doc, clip_doc, paths, time_unit, frame_rate_hz)
     else:
         refuse_clock_options(src, frame_rate_hz, time_unit)
         clip_doc = doc

@@ -626,15 +626,14 @@ def read(text: str) -> Reading:
                 prev = m
                 continue
             if m.slot == "behaviour" and _ego_participle(prev, m, nxt):
-                # "15 m ahead of the ego travelling at 40 km/h": the ego's motion and its speed
-                r.ego_speed_mps = r.ego_speed_mps if r.ego_speed_mps is not None else nxt.value
-                ego_speed_said = nxt
+                ego_speed_said = nxt  # "15 m ahead of the ego travelling at 40 km/h": the ego's motion and speed
                 prev = m
                 continue
             if m is ego_speed_said or (
                 m.slot == "speed" and m.prev in MOTION_PARTICIPLES and _ego_named(prev) and m.start == prev.end + 1
             ):  # ("20 m in front of the ego doing 50 km/h")
-                r.ego_speed_mps = r.ego_speed_mps if r.ego_speed_mps is not None else m.value
+                if r.ego_speed_mps is None:
+                    r.ego_speed_mps = m.value
                 prev = m
                 continue
             if m.slot == "count":
@@ -991,9 +990,10 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool) -> None:
             spec.behaviours = [("turn_into", {}, crit, link)] + rest
             spec.speed_mps = None if not a.speed_mps else a.speed_mps
         return
-    rider = a.kind in ("bicycle", "e-scooter")
     if (
-        (vehicle or (rider and towards and first in ("cut_in", "change_lane")))  # (an oncoming rider swerving in)
+        (
+            vehicle or (a.kind in RIDERS and towards and first in ("cut_in", "change_lane"))
+        )  # (an oncoming rider swerving in)
         and not junction
         and (
             a.wrong_way

@@ -145,7 +145,7 @@ def sample_layers(reading: Reading, text: str, seed: int) -> dict:
         if "distance_m" in ego and not adversaries and crossing:
             # the crossing lies on the ego's way to its junction: the ego starts far enough back for the
             # road user to get across in time (a child crossing four lanes at 1.5 m/s needs ~9 s)
-            room = _crossing_room_m(spec.kind, relation, first_cfg, ego, lanes)
+            room = _crossing_lon_m(spec.kind, relation, first_cfg, ego, lanes) + CROSSING_CLEAR_OF_JUNCTION_M
             if room > float(ego["distance_m"]):
                 ego["distance_m"] = round(min(room, ARM_LENGTH_M - 20.0), 3)
         spawn, speed = place_adversary(
@@ -392,7 +392,7 @@ def _place_adversary(
         cfg.setdefault("crossing_speed_mps", _crossing_speed(kind, cfg))
         lon = _crossing_lon_m(kind, relation, cfg, ego, lanes)
         if "distance_m" in ego:  # before a junction: the crossing lies on the ego's way to it
-            lon = min(lon, float(ego["distance_m"]) - 5.0)
+            lon = min(lon, float(ego["distance_m"]) - CROSSING_CLEAR_OF_JUNCTION_M)
         spawn["longitudinal_m"] = round(lon, 3)
         out_speed = 0.0
     elif distance_m is not None and relation in ("ahead", "behind", "oncoming") and behaviour_name != "cut_in":
@@ -426,6 +426,10 @@ def _topology(nodes: list[tuple[str, dict]]) -> dict:
     return items[0] if len(items) == 1 else {"sequence": items}
 
 
+#: How far before the ego's junction a kerb-side crossing on its way stands at most (m).
+CROSSING_CLEAR_OF_JUNCTION_M = 5.0
+
+
 def _crossing_speed(kind: str, cfg: dict) -> float:
     return max(float(cfg.get("crossing_speed_mps", 1.5 if kind == "pedestrian" else 4.0)), 0.3)
 
@@ -441,11 +445,6 @@ def _crossing_lon_m(kind: str, relation: str, cfg: dict, ego: dict, lanes: int) 
     gap = float(cfg.get("arrival_gap_s", 0.5))
     trigger = trigger_distance(float(ego["speed_mps"]), cross, speed, TYPES[kind][4], gap)
     return trigger + 15.0 + (TYPES["car"][0][0] + TYPES[kind][0][0]) / 2
-
-
-def _crossing_room_m(kind: str, relation: str, cfg: dict, ego: dict, lanes: int) -> float:
-    """How far before its junction the ego must start for a kerb-side crossing on the way to fit."""
-    return _crossing_lon_m(kind, relation, cfg, ego, lanes) + 5.0
 
 
 def _junction_spawn(ego: dict, lanes: int, relation: str, speed: float, ego_speed: float, cfg: dict) -> float:
