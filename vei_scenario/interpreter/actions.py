@@ -400,8 +400,9 @@ class Speed(Action):
     def start(self, ctx) -> None:
         e = ctx.entities[self.entity]
         kind, value = self.target[:2]
-        v1 = value if kind == "absolute" else self._relative_target(ctx)
+        v1 = e.within_max_speed(value if kind == "absolute" else self._relative_target(ctx))
         v0 = e.speed
+        self.rate = math.inf  # (dynamicsDimension rate: the rate the transition keeps, within the limits)
         if self.shape == "step" or self.value == 0 or (self.value < 0 and self.dimension != "rate"):
             duration = 0.0
         elif self.dimension == "time":
@@ -415,6 +416,8 @@ class Speed(Action):
             limit = e.limits.max_accel_mps2 if v1 > v0 else e.limits.max_decel_mps2
             if limit > 0:
                 duration = max(duration, PEAK_RATE[self.shape] * abs(v1 - v0) / limit)
+        if self.dimension == "rate" and duration > 0.0:
+            self.rate = PEAK_RATE[self.shape] * abs(v1 - v0) / duration
         if duration == 0.0 and ctx.initializing and e.longitudinal is not None and not e.longitudinal.done:
             # in Init a step speed only sets the initial speed: the longitudinal action started
             # before it (a kept distance) goes on, as in esmini
@@ -433,11 +436,15 @@ class Speed(Action):
             return
         p = e.speed_profile
         if self.continuous:  # keeps the relative speed after the transition; never ends by itself
-            target = self._relative_target(ctx)
+            target = e.within_max_speed(self._relative_target(ctx))
             if p is None or ctx.t >= p.t0 + p.duration - 1e-9:
-                e.speed_profile = SpeedProfile(target, target, ctx.t, 0.0, "step")
+                # after the transition, towards the target within the Performance's limits (esmini 3.6)
+                v = e.tracked_speed(target, ctx.dt)
+                e.speed_profile = SpeedProfile(v, v, ctx.t, 0.0, "step")
             else:
                 p.v1 = target
+                if math.isfinite(self.rate):  # a transition at a rate keeps its rate to a moving target
+                    p.duration = PEAK_RATE[self.shape] * abs(target - p.v0) / self.rate
             return
         self.done = p is None or ctx.t >= p.t0 + p.duration - 1e-9
 
@@ -467,14 +474,21 @@ class Speed(Action):
         if ctx.entities[ref].deleted or ref == self.entity:
             return None  # (its own speed as its reference, as esmini plays it: the interpreter steps it)
         values = {"ENTITY": index[self.entity], "REF": index[ref], "VALUE": value, "FOLLOW": 1.0}
+        limited = e.performance  # (Entity.tracked_speed's limits)
+        values |= {
+            "MAX_SPEED": e.max_speed,
+            "MAX_ACCEL": e.limits.max_accel_mps2 if limited else math.inf,
+            "MAX_DECEL": e.limits.max_decel_mps2 if limited else math.inf,
+        }
         return core_row("keep", values | {"BY_FACTOR": float(vtype != "delta")})
 
     def after_core(self, ctx, stepped_before: bool) -> None:
         """After the core's stretch: the step profile :meth:`update` leaves at the end of a step, when
         it is updated there (a storyboard action's was there when the stretch began)."""
         if stepped_before:
-            target, t0 = self._relative_target(ctx), step_time(ctx.step - 1, ctx.dt)
-            ctx.entities[self.entity].speed_profile = SpeedProfile(target, target, t0, 0.0, "step")
+            e, t0 = ctx.entities[self.entity], step_time(ctx.step - 1, ctx.dt)
+            v = e.tracked_speed(e.within_max_speed(self._relative_target(ctx)), ctx.dt)
+            e.speed_profile = SpeedProfile(v, v, t0, 0.0, "step")
 
     def _relative_target(self, ctx) -> float:
         """A relative target speed: its reference's speed now plus (delta) or times (factor) the value."""
@@ -540,13 +554,11 @@ class FollowTrajectory(Action):
             timing = (timing[0], timing[1], timing[2] + shift)
         e.follower = PathFollower(self.polyline, timing, self.mode, ctx.t, self.initial_s)
         e.follower.reverse = self.timing is None and e.speed < 0.0
-        if self.timing is None and (ctx.initializing or ctx.settling):  # on its path at t = 0 (esmini)
+        if self.timing is None:  # on its path at initialDistanceOffset, at t = 0 and later (esmini)
             e.follower.s = self.initial_s
             e.x, e.y, e.yaw = self.polyline.at_s(self.initial_s)
             if e.follower.reverse:
                 e.yaw = math.atan2(-math.sin(e.yaw), -math.cos(e.yaw))
-        elif self.timing is None:  # continue from where the entity is: its projection onto the path
-            e.follower.s = max(self.polyline.project(e.x, e.y), self.initial_s)
         elif ctx.initializing:  # logged at t = 0 on its trajectory
             e.x, e.y, e.yaw = self.polyline.at_time(e.follower.trajectory_time(ctx.t))
         if self.timing is not None and self.polyline.timed and not (ctx.initializing or ctx.settling):

@@ -132,6 +132,10 @@ def _entity(obj, ctx, name: str | None = None) -> Entity:
         limits,
         performance=perf is not None,
     )
+    if perf is not None:
+        entity.max_speed = float(perf.get("maxSpeed"))
+    elif kind.tag == "MiscObject":
+        entity.max_speed = 0.0
     entity.kind = KINDS[kind.tag]
     entity.object_type = object_type
     hitch, coupler = kind.find("TrailerHitch"), kind.find("TrailerCoupler")

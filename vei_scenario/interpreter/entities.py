@@ -196,6 +196,9 @@ class Entity:
     route: object = None  # routes.Route assigned by AssignRouteAction
     placed: bool = False  # teleported during this step: it does not move until the next one
     performance: bool = False  # limits come from the entity's <Performance> (speed changes obey them)
+    #: The fastest a SpeedAction takes it, either way (m/s): a vehicle's Performance maxSpeed; a
+    #: MiscObject's is 0 (esmini 3.6 gives it no performance: a SpeedAction leaves it standing)
+    max_speed: float = math.inf
     longitudinal: object = None  # the running action that sets the speed (SpeedAction, distance keeping)
     find_lane: bool = False  # placed off the lane model: look up its lane when it first needs one
     #: a lane keeper's lane state and pose after a step standing still (the engine's default motion
@@ -208,6 +211,24 @@ class Entity:
     trailer: str | None = None  # the entity it tows (interpreter.trailers)
     towed_by: str | None = None  # the entity that tows it: it is pulled, not moved by itself
     object_type: str = ""  # a finer type from the entity's <Properties> ("e-scooter"), else ""
+
+    def within_max_speed(self, v: float) -> float:
+        """``v`` held to within ``max_speed`` either way (as esmini holds a SpeedAction's target speed)."""
+        return v if abs(v) <= self.max_speed else math.copysign(self.max_speed, v)
+
+    def tracked_speed(self, target: float, dt: float) -> float:
+        """The speed after one step of ``dt`` towards ``target`` at no more than the Performance's
+        maxAcceleration/maxDeceleration (no limit without a Performance): how esmini 3.6 keeps a
+        continuous relative target speed once its transition is over. The core's keep rows
+        (FOLLOW, core_module.c) step the same arithmetic."""
+        v0 = self.speed
+        if self.performance:
+            acc = (target - v0) / dt
+            if acc > self.limits.max_accel_mps2:
+                return v0 + self.limits.max_accel_mps2 * dt
+            if acc < -self.limits.max_decel_mps2:
+                return v0 - self.limits.max_decel_mps2 * dt
+        return target
 
     def take_longitudinal(self, action, ctx) -> None:
         """``action`` now sets this entity's speed: the one that did so before ends (one action per

@@ -6,7 +6,11 @@ The standard's reading: each ``SpeedProfileEntry`` is reached ``time`` seconds a
 Performance) allow. Speeds are absolute, or relative to ``entityRef``'s speed.
 
 * ``followingMode="position"``: the speed changes linearly from target to target (a zero time is a
-  step); the schedule is exact.
+  step); the schedule is exact where it is within the limits.
+
+Either way the limits are the constraints' within the entity's Performance (the smaller of each), and
+a target that its time would have reached faster than they allow is reached as fast as they allow,
+the times of the targets after it shifted by as much (esmini 3.6, measured).
 * ``followingMode="follow"``: the entity takes each segment's acceleration, changing it no faster
   than ``maxAccelerationRate``/``maxDecelerationRate`` (jerk) and within ``maxAcceleration``/
   ``maxDeceleration``; it starts the change to the next segment's acceleration when that change
@@ -66,16 +70,22 @@ class SpeedProfile(SteppedLongitudinal):
         e = ctx.entities[self.entity]
         e.take_longitudinal(self, ctx)
         e.speed_profile = None
+        # the limits: the constraints', within the entity's Performance (esmini 3.6)
+        own = (e.limits.max_accel_mps2, e.limits.max_decel_mps2) if e.performance else (math.inf, math.inf)
+        self.accel_limit, self.decel_limit = min(self.max_accel, own[0]), min(self.max_decel, own[1])
         # the schedule: (time, speed) corners from the current speed on
-        accel = self.max_accel if math.isfinite(self.max_accel) else e.limits.max_accel_mps2
-        decel = self.max_decel if math.isfinite(self.max_decel) else e.limits.max_decel_mps2
+        accel = self.accel_limit if math.isfinite(self.accel_limit) else e.limits.max_accel_mps2
+        decel = self.decel_limit if math.isfinite(self.decel_limit) else e.limits.max_decel_mps2
         t, v = ctx.t, e.speed
         self.corners: list[tuple[float, float]] = [(t, v)]
         for duration, speed in self.entries:
             target = min(self._target(ctx, speed), self.max_speed)
+            rate = accel if target >= v else decel
+            fastest = abs(target - v) / rate if rate > 0 else 0.0
             if duration is None:  # as fast as allowed
-                rate = accel if target >= v else decel
-                duration = abs(target - v) / rate if rate > 0 else 0.0
+                duration = fastest
+            elif target != v and (math.isfinite(self.accel_limit if target > v else self.decel_limit)):
+                duration = max(duration, fastest)  # a change faster than the limits takes longer (esmini)
             t += duration
             self.corners.append((t, target))
             v = target
@@ -129,7 +139,7 @@ class SpeedProfile(SteppedLongitudinal):
         a = min(a_target, self.accel + step) if a_target > self.accel else max(a_target, self.accel - step)
         if abs(a - self.slopes[self.segment]) < 1e-12:
             self.turning = False
-        a = max(-self.max_decel, min(self.max_accel, a))
+        a = max(-self.decel_limit, min(self.accel_limit, a))
         self.accel = a
         e.speed = min(e.speed + a * dt, self.max_speed)
         settled = self.segment == len(self.slopes) - 1 and not self.turning

@@ -1413,7 +1413,8 @@ static int cruise_move(PyObject *way, const double *e, double t, double max_turn
  * it); without dynamic constraints (SPRING 0) the road user is placed at the gap along its lane before everyone
  * moves and goes on at its reference's speed; with them (SPRING 1) a damped spring on the gap sets its speed
  * within the limits, ACCEL the acceleration it gave last. FOLLOW 1: a SpeedAction's continuous RelativeTargetSpeed
- * (actions.Speed) instead, the road user at its reference's speed plus VALUE (times VALUE: BY_FACTOR) */
+ * (actions.Speed) instead, the road user towards its reference's speed plus VALUE (times VALUE: BY_FACTOR), held
+ * within MAX_SPEED, at no more than MAX_ACCEL/MAX_DECEL */
 #define KEEP_COLUMNS(F)                                                                                          \
     F(ENTITY) F(REF) F(VALUE) F(BY_TIME) F(SIDE) F(FREESPACE) F(ALONG_ROAD) F(SPRING) F(MAX_ACCEL) F(MAX_DECEL)  \
     F(MAX_SPEED) F(ACCEL_RATE) F(DECEL_RATE) F(ACCEL) F(FOLLOW) F(BY_FACTOR)
@@ -1886,8 +1887,16 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
             const double *kp = keeps_next + k * KP_COLS;
             double v = speed_now[(Py_ssize_t)kp[KP_ENTITY]];
             if (kp[KP_FOLLOW] != 0.0) {
+                double v0 = pre[(Py_ssize_t)kp[KP_ENTITY] * CR_COLS + CR_SPEED], acc;
                 v = pre[(Py_ssize_t)kp[KP_REF] * CR_COLS + CR_SPEED];
                 v = kp[KP_BY_FACTOR] != 0.0 ? v * kp[KP_VALUE] : v + kp[KP_VALUE];
+                if (fabs(v) > kp[KP_MAX_SPEED]) v = copysign(kp[KP_MAX_SPEED], v);
+                /* towards it within the Performance's limits (Entity.tracked_speed) */
+                acc = (v - v0) / dt;
+                if (acc > kp[KP_MAX_ACCEL])
+                    v = v0 + kp[KP_MAX_ACCEL] * dt;
+                else if (acc < -kp[KP_MAX_DECEL])
+                    v = v0 - kp[KP_MAX_DECEL] * dt;
             }
             next[(Py_ssize_t)kp[KP_ENTITY] * CR_COLS + CR_SPEED] = v;
         }
