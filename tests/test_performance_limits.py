@@ -173,6 +173,26 @@ def test_a_continuous_relative_speed_at_a_rate_keeps_its_rate(tmp_path, esmini_i
     _agrees_with_esmini(esmini_if_here, path, 0.05)
 
 
+def test_a_kept_distance_with_constraints_keeps_within_the_performance(tmp_path, esmini_if_here):
+    """A keeps 20 m behind B with constraints of 10 m/s² and 50 m/s, its Performance 2 m/s² and 12
+    m/s: it closes the 80 m gap at 2 m/s², no faster than 12 m/s (placed at the gap without
+    constraints, the Performance has no say)."""
+    keep = (
+        '<PrivateAction><LongitudinalAction><LongitudinalDistanceAction entityRef="B" continuous="true" '
+        'distance="20" freespace="false" coordinateSystem="entity" displacement="trailingReferencedEntity">'
+        '<DynamicConstraints maxAcceleration="10" maxDeceleration="10" maxSpeed="50"/>'
+        "</LongitudinalDistanceAction></LongitudinalAction></PrivateAction>"
+    )
+    path = _follower(tmp_path, keep, "", 'maxSpeed="12" maxAcceleration="2" maxDeceleration="3"')
+    fast, _cruised, slow = run_both(path, pytest.MonkeyPatch())
+    assert_identical(fast, slow)
+    a = fast.traces["A"]
+    late = a.t > 1.05
+    assert np.diff(a.speed[late]).max() == pytest.approx(2.0 * DT, abs=1e-9)
+    assert a.speed.max() == 12.0
+    _agrees_with_esmini(esmini_if_here, path, 0.02)
+
+
 @pytest.mark.parametrize("limited_by", ["constraints", "performance"])
 def test_a_speed_profile_target_beyond_the_limits_is_reached_as_fast_as_they_allow(
     tmp_path, esmini_if_here, limited_by

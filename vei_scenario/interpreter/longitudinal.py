@@ -5,7 +5,8 @@ reference's speed (the reading of esmini and the standard: "as fast as possible"
 driven by a critically damped spring on the distance error, its stiffness scaled by the permitted
 acceleration (when too far) or deceleration (when too close), the acceleration clipped to those
 limits and, when rates are given, changed no faster than them; the speed stays within ``maxSpeed``.
-This is the controller esmini 3.6 implements, so both players keep the same gaps.
+Each limit is the constraint's within the entity's Performance (the smaller). This is the controller
+esmini 3.6 implements, so both players keep the same gaps.
 """
 
 from __future__ import annotations
@@ -71,6 +72,10 @@ class LongitudinalDistance(SteppedLongitudinal):
         elif self.displacement == "any":  # keep the side it is on when the action starts
             self.side = -1.0 if longitudinal_gap(e, ref, self.freespace, "entity") < 0.0 else 1.0
         self.accel = 0.0
+        # the spring's limits: the constraints' within the entity's Performance (esmini 3.6, measured;
+        # placed at the gap without constraints, it is not held to the Performance)
+        own = (e.limits.max_accel_mps2, e.limits.max_decel_mps2, e.max_speed) if e.performance else (math.inf,) * 3
+        self.limits = min(self.max_accel, own[0]), min(self.max_decel, own[1]), min(self.max_speed, own[2])
         e.take_longitudinal(self, ctx)
         ctx.stepping.append(self)
 
@@ -97,10 +102,10 @@ class LongitudinalDistance(SteppedLongitudinal):
             self.placed = True
             return
         # the damped spring on the gap (the core's spring_step, the one its quiet stretches take)
+        max_accel, max_decel, max_speed = self.limits
         self.accel, e.speed = _core.spring_step(
-            error, e.speed, ref.speed, self.max_accel, self.max_decel, self.accel_rate, self.decel_rate,
-            self.accel, self.max_speed, dt,
-        )  # fmt: skip
+            error, e.speed, ref.speed, max_accel, max_decel, self.accel_rate, self.decel_rate, self.accel, max_speed, dt
+        )
 
     # --- in the core's quiet stretches (interpreter/cruise.py, core_module.c: keep_step) -------------
     def carried(self, ctx) -> bool:  # (whether its road users suit the core: core_columns, at the stretch)
@@ -134,8 +139,9 @@ class LongitudinalDistance(SteppedLongitudinal):
         values = {"ENTITY": index[self.entity], "REF": index[self.ref], "VALUE": self.value, "SIDE": self.side}
         values |= {"BY_TIME": float(self.by_time), "FREESPACE": float(self.freespace), "ALONG_ROAD": float(along)}
         if not self.placing:
-            values |= {"SPRING": 1.0, "MAX_ACCEL": self.max_accel, "MAX_DECEL": self.max_decel, "ACCEL": self.accel}
-            values |= {"MAX_SPEED": self.max_speed, "ACCEL_RATE": self.accel_rate, "DECEL_RATE": self.decel_rate}
+            max_accel, max_decel, max_speed = self.limits
+            values |= {"SPRING": 1.0, "MAX_ACCEL": max_accel, "MAX_DECEL": max_decel, "ACCEL": self.accel}
+            values |= {"MAX_SPEED": max_speed, "ACCEL_RATE": self.accel_rate, "DECEL_RATE": self.decel_rate}
         return core_row("keep", values)
 
     def take_core_columns(self, cols) -> None:
