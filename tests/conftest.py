@@ -77,6 +77,15 @@ def site_packages(venv: Path) -> Path:
     return Path(sorted(glob.glob(str(venv / "lib" / "python*" / "site-packages")))[0])
 
 
+@pytest.fixture
+def esmini_if_here():
+    """esmini when it is here (``$VEI_ESMINI`` or beside the checkout), else None: for tests whose own
+    assertions stand without it and that compare with it when they can."""
+    from vei_scenario.conformance.esmini import find_esmini
+
+    return find_esmini(ROOT.parent / "shared" / "esmini" / "bin" / "esmini")
+
+
 @pytest.fixture(scope="session")
 def esmini():
     """esmini, the reference player: ``$VEI_ESMINI`` or ``../shared/esmini/bin/esmini`` beside the

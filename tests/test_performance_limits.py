@@ -103,13 +103,6 @@ def _agrees_with_esmini(esmini_or_none, path, within_m: float) -> None:
     assert c.max_deviation_m < within_m, [(e.entity, e.max_deviation_m, e.at_time_s) for e in c.entities]
 
 
-@pytest.fixture
-def esmini_if_here():
-    from vei_scenario.conformance.esmini import find_esmini
-
-    return find_esmini(ROOT.parent / "shared" / "esmini" / "bin" / "esmini")
-
-
 @pytest.mark.parametrize("target", [15.0, -15.0])
 @pytest.mark.parametrize("where", ["init", "event"])
 def test_a_speed_action_holds_a_vehicle_within_its_max_speed(tmp_path, esmini_if_here, target, where):

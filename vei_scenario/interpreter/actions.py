@@ -264,6 +264,10 @@ def _lane_exists(net, road_id: str, lane: int, ref_where: tuple[str, int]) -> bo
     return any(lane in sec.lanes for sec in road.sections)
 
 
+#: The lateral acceleration a LaneOffsetAction without maxLateralAcc is shaped to (m/s²; esmini 3.6).
+DEFAULT_MAX_LATERAL_ACC = 0.5
+
+
 class LaneOffset(Action):
     """LaneOffsetAction: to an absolute offset from the lane centre, or relative to another entity's,
     shaped so the lateral acceleration peaks at ``maxLateralAcc`` (esmini's reading: the transition
@@ -273,7 +277,8 @@ class LaneOffset(Action):
         self.entity, self.el = entity, el
         dyn = el.find("LaneOffsetActionDynamics")
         self.shape = dyn.get("dynamicsShape", "sinusoidal")
-        self.max_acc = float(dyn.get("maxLateralAcc") or 0.0)
+        # (without one, esmini 3.6's default: measured the same as 0.5 written out)
+        self.max_acc = float(dyn.get("maxLateralAcc") or DEFAULT_MAX_LATERAL_ACC)
         if self.shape not in ("step", "linear", "cubic", "sinusoidal"):
             raise ctx.error(dyn, f"lane offset dynamicsShape {self.shape!r} is not supported")
         target = first_element(el.find("LaneOffsetTarget"))
@@ -288,7 +293,8 @@ class LaneOffset(Action):
             return math.pi * math.sqrt(change / (2.0 * self.max_acc))
         if self.shape == "cubic":  # a = 6Δ/T² at the ends
             return math.sqrt(6.0 * change / self.max_acc)
-        return math.sqrt(change / self.max_acc)  # linear: bounded as if over one unit of jerk-free time
+        # linear: the acceleration is unbounded at its corners; esmini 3.6 gives it the cubic's time
+        return math.sqrt(6.0 * change / self.max_acc)
 
     def start(self, ctx) -> None:
         e, st = entity_lane(ctx, self.el, self.entity)
