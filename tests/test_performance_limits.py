@@ -227,3 +227,31 @@ def test_an_untimed_trajectory_started_during_the_run_starts_where_it_starts(tmp
     assert a.t[jump] == pytest.approx(1.02) and a.x[jump] == pytest.approx(10.0 + 8.0 * DT, abs=1e-9)
     assert a.x[-1] == pytest.approx(10.0 + 8.0 * (a.t[-1] - a.t[jump - 1]), abs=1e-9)
     _agrees_with_esmini(esmini_if_here, path, 0.01)
+
+
+def test_limits_of_zero_leave_the_speed_as_it_is(tmp_path, esmini_if_here):
+    """maxAcceleration and maxDeceleration 0: a linear SpeedAction never gets going (esmini 3.6), nor
+    does a continuous relative one; a kept distance with maxSpeed 0 stands, written as 0, never -0."""
+    from vei_scenario.runner import trajectories_csv
+
+    perf = 'maxSpeed="10" maxAcceleration="0" maxDeceleration="0"'
+    path = _follower(tmp_path, _absolute(3.0, shape="linear", value=1.0), "", perf)
+    a = run_scenario(path, {}, DT).traces["A"]
+    assert np.all(a.speed == 5.0)
+    _agrees_with_esmini(esmini_if_here, path, 0.01)
+    lead = _event("up", "B", _absolute(20.0), 2.0)
+    path = _follower(tmp_path, _relative("B", 2.0, shape="linear", value=2.0, dimension="rate"), lead, perf)
+    assert np.all(run_scenario(path, {}, DT).traces["A"].speed == 5.0)
+    keep = (
+        '<PrivateAction><LongitudinalAction><LongitudinalDistanceAction entityRef="B" continuous="true" '
+        'distance="20" freespace="false" coordinateSystem="entity" displacement="trailingReferencedEntity">'
+        '<DynamicConstraints maxAcceleration="10" maxDeceleration="10" maxSpeed="50"/>'
+        "</LongitudinalDistanceAction></LongitudinalAction></PrivateAction>"
+    )
+    objects = _object("A", perf='maxSpeed="0" maxAcceleration="0" maxDeceleration="0"') + _object("B")
+    path = _scenario(
+        tmp_path, objects, {"A": (20.0, 0.0, ""), "B": (100.0, 10.0, "")}, _event("k", "A", keep, 1.0), 3.0
+    )
+    result = run_scenario(path, {}, DT)
+    assert np.all(result.traces["A"].speed == 0.0)
+    assert "-0.000000" not in trajectories_csv(result)

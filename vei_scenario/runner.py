@@ -63,7 +63,8 @@ def trajectories_csv(result: RunResult) -> str:
                 buf.write(",".join(row) + "\n")
             else:
                 out.writerow(row)
-    return buf.getvalue()
+    # (a value that rounds to zero from below is written as zero: no "-0.000000")
+    return buf.getvalue().replace(",-0.000000", ",0.000000")
 
 
 SERIES_COLUMNS = ("time_s", "gap_m", "closing_rate_mps", "ttc_2d_s", "ttc_approx_s", "zone")

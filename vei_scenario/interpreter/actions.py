@@ -422,7 +422,9 @@ class Speed(Action):
             limit = e.limits.max_accel_mps2 if v1 > v0 else e.limits.max_decel_mps2
             if limit > 0:
                 duration = max(duration, PEAK_RATE[self.shape] * abs(v1 - v0) / limit)
-        if self.dimension == "rate" and duration > 0.0:
+            elif v1 != v0:  # a limit of 0: the speed never changes (esmini 3.6)
+                duration = math.inf
+        if self.dimension == "rate" and 0.0 < duration < math.inf:
             self.rate = PEAK_RATE[self.shape] * abs(v1 - v0) / duration
         if duration == 0.0 and ctx.initializing and e.longitudinal is not None and not e.longitudinal.done:
             # in Init a step speed only sets the initial speed: the longitudinal action started
