@@ -15,6 +15,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 from test_cruise import assert_identical, run_both
+from test_cruise_lateral import _event as event_when
+from test_cruise_lateral import _time as time_passed
+from xosc_parts import speed_action, speed_to
 
 from conftest import ROOT
 from vei_scenario.interpreter import run_scenario
@@ -24,20 +27,8 @@ DT = 0.01
 LANE_Y = -1.535  # (lane -1's centre on esmini's straight road)
 
 
-def _speed(target: str, shape: str = "step", value: float = 0.0, dimension: str = "time") -> str:
-    return (
-        "<PrivateAction><LongitudinalAction><SpeedAction>"
-        f'<SpeedActionDynamics dynamicsShape="{shape}" value="{value}" dynamicsDimension="{dimension}"/>'
-        f"<SpeedActionTarget>{target}</SpeedActionTarget></SpeedAction></LongitudinalAction></PrivateAction>"
-    )
-
-
-def _absolute(v: float, **kw) -> str:
-    return _speed(f'<AbsoluteTargetSpeed value="{v}"/>', **kw)
-
-
 def _relative(ref: str, delta: float, **kw) -> str:
-    return _speed(
+    return speed_to(
         f'<RelativeTargetSpeed entityRef="{ref}" value="{delta}" speedTargetValueType="delta" continuous="true"/>',
         **kw,
     )
@@ -60,14 +51,8 @@ def _object(name: str, kind: str = "car", perf: str = 'maxSpeed="10" maxAccelera
 
 
 def _event(name: str, actor: str, action: str, at: float) -> str:
-    return (
-        f'<ManeuverGroup name="{name}g" maximumExecutionCount="1"><Actors selectTriggeringEntities="false">'
-        f'<EntityRef entityRef="{actor}"/></Actors><Maneuver name="{name}m"><Event name="{name}" priority="override">'
-        f'<Action name="{name}a">{action}</Action><StartTrigger><ConditionGroup><Condition name="{name}c" '
-        'delay="0" conditionEdge="none"><ByValueCondition><SimulationTimeCondition value="'
-        f'{at}" rule="greaterThan"/></ByValueCondition></Condition></ConditionGroup></StartTrigger></Event>'
-        "</Maneuver></ManeuverGroup>"
-    )
+    """A maneuver group of its own whose event starts ``action`` on ``actor`` once ``at`` s have passed."""
+    return event_when(name, actor, action, time_passed(at))
 
 
 def _scenario(tmp_path, objects: str, init: dict[str, tuple[float, float, str]], events: str, end: float) -> object:
@@ -75,7 +60,7 @@ def _scenario(tmp_path, objects: str, init: dict[str, tuple[float, float, str]],
     network = f'<LogicFile filepath="{ROAD}"/>' if ROAD.is_file() else ""
     privates = "".join(
         f'<Private entityRef="{n}"><PrivateAction><TeleportAction><Position><WorldPosition x="{x}" y="{LANE_Y}" '
-        f'h="0"/></Position></TeleportAction></PrivateAction>{_absolute(v)}{more}</Private>'
+        f'h="0"/></Position></TeleportAction></PrivateAction>{speed_action(v)}{more}</Private>'
         for n, (x, v, more) in init.items()
     )
     text = f"""<?xml version="1.0"?>
@@ -108,7 +93,7 @@ def _agrees_with_esmini(esmini_or_none, path, within_m: float) -> None:
 def test_a_speed_action_holds_a_vehicle_within_its_max_speed(tmp_path, esmini_if_here, target, where):
     """maxSpeed 10: a step to ±15 m/s, in Init or at 1 s, gives ±10 m/s, and the car covers 10 m/s' distance."""
     init = {"A": (200.0, target if where == "init" else 5.0, "")}
-    events = _event("go", "A", _absolute(target), 1.0) if where == "event" else ""
+    events = _event("go", "A", speed_action(target), 1.0) if where == "event" else ""
     path = _scenario(tmp_path, _object("A"), init, events, 4.0)
     a = run_scenario(path, {}, DT).traces["A"]
     late = a.t > 1.05
@@ -122,7 +107,7 @@ def test_a_speed_action_leaves_a_misc_object_standing_and_a_pedestrian_unheld(tm
     """A MiscObject has no Performance and esmini gives it none to move by; a pedestrian has no maxSpeed to keep."""
     objects = _object("Box", "misc") + _object("Walker", "pedestrian")
     init = {"Box": (100.0, 5.0, ""), "Walker": (150.0, 1.0, "")}
-    events = _event("push", "Box", _absolute(15.0), 1.0) + _event("run", "Walker", _absolute(15.0), 1.0)
+    events = _event("push", "Box", speed_action(15.0), 1.0) + _event("run", "Walker", speed_action(15.0), 1.0)
     path = _scenario(tmp_path, objects, init, events, 3.0)
     run = run_scenario(path, {}, DT).traces
     assert np.ptp(run["Box"].x) < 1e-6 and np.all(run["Box"].speed == 0.0)
@@ -139,7 +124,7 @@ def _follower(tmp_path, follow: str, lead_events: str, perf: str, end: float = 9
 def test_a_continuous_relative_speed_follows_its_reference_within_the_limits(tmp_path, esmini_if_here):
     """A keeps B's speed + 2 m/s: B jumps 10 → 20 m/s at 2 s and 20 → 4 at 5 s; A (maxAcceleration 5,
     maxDeceleration 8, maxSpeed 19) gets there at 5 and 8 m/s², held at 19 m/s meanwhile."""
-    lead = _event("up", "B", _absolute(20.0), 2.0) + _event("down", "B", _absolute(4.0), 5.0)
+    lead = _event("up", "B", speed_action(20.0), 2.0) + _event("down", "B", speed_action(4.0), 5.0)
     path = _follower(tmp_path, _relative("B", 2.0), lead, 'maxSpeed="19" maxAcceleration="5" maxDeceleration="8"')
     fast, cruised, slow = run_both(path, pytest.MonkeyPatch())
     assert_identical(fast, slow)  # (the core's quiet steps keep it the same way)
@@ -157,7 +142,7 @@ def test_a_continuous_relative_speed_follows_its_reference_within_the_limits(tmp
 
 def test_a_continuous_relative_speed_at_a_rate_keeps_its_rate(tmp_path, esmini_if_here):
     """A linear transition at 1 m/s² towards B's speed + 2 goes on at 1 m/s² when B's speed jumps midway."""
-    lead = _event("up", "B", _absolute(20.0), 2.0)
+    lead = _event("up", "B", speed_action(20.0), 2.0)
     follow = _relative("B", 2.0, shape="linear", value=1.0, dimension="rate")
     path = _follower(tmp_path, follow, lead, 'maxSpeed="50" maxAcceleration="5" maxDeceleration="8"')
     a = run_scenario(path, {}, DT).traces["A"]
@@ -235,11 +220,11 @@ def test_limits_of_zero_leave_the_speed_as_it_is(tmp_path, esmini_if_here):
     from vei_scenario.runner import trajectories_csv
 
     perf = 'maxSpeed="10" maxAcceleration="0" maxDeceleration="0"'
-    path = _follower(tmp_path, _absolute(3.0, shape="linear", value=1.0), "", perf)
+    path = _follower(tmp_path, speed_action(3.0, "linear", 1.0), "", perf)
     a = run_scenario(path, {}, DT).traces["A"]
     assert np.all(a.speed == 5.0)
     _agrees_with_esmini(esmini_if_here, path, 0.01)
-    lead = _event("up", "B", _absolute(20.0), 2.0)
+    lead = _event("up", "B", speed_action(20.0), 2.0)
     path = _follower(tmp_path, _relative("B", 2.0, shape="linear", value=2.0, dimension="rate"), lead, perf)
     assert np.all(run_scenario(path, {}, DT).traces["A"].speed == 5.0)
     keep = (

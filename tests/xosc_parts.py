@@ -20,13 +20,19 @@ CAR = vehicle()
 ABSOLUTE_TIMING = '<Timing domainAbsoluteRelative="absolute" scale="1" offset="0"/>'
 
 
-def speed_action(v: float, shape: str = "step", value: float = 0, dimension: str = "time") -> str:
-    """A PrivateAction taking the speed to ``v`` by a transition of ``shape`` over ``value`` of ``dimension``."""
+def speed_to(target: str, shape: str = "step", value: float = 0, dimension: str = "time") -> str:
+    """A PrivateAction taking the speed to ``target`` (a SpeedActionTarget's child element) by a
+    transition of ``shape`` over ``value`` of ``dimension``."""
     return (
         f'<PrivateAction><LongitudinalAction><SpeedAction><SpeedActionDynamics dynamicsShape="{shape}" value="{value}" '
-        f'dynamicsDimension="{dimension}"/><SpeedActionTarget><AbsoluteTargetSpeed value="{v}"/></SpeedActionTarget>'
+        f'dynamicsDimension="{dimension}"/><SpeedActionTarget>{target}</SpeedActionTarget>'
         "</SpeedAction></LongitudinalAction></PrivateAction>"
     )
+
+
+def speed_action(v: float, shape: str = "step", value: float = 0, dimension: str = "time") -> str:
+    """A PrivateAction taking the speed to ``v`` by a transition of ``shape`` over ``value`` of ``dimension``."""
+    return speed_to(f'<AbsoluteTargetSpeed value="{v}"/>', shape, value, dimension)
 
 
 def step_speed(v: float) -> str:

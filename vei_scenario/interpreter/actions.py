@@ -291,9 +291,8 @@ class LaneOffset(Action):
             return 0.0
         if self.shape == "sinusoidal":  # a = (Δ/2)(π/T)² at the ends
             return math.pi * math.sqrt(change / (2.0 * self.max_acc))
-        if self.shape == "cubic":  # a = 6Δ/T² at the ends
-            return math.sqrt(6.0 * change / self.max_acc)
-        # linear: the acceleration is unbounded at its corners; esmini 3.6 gives it the cubic's time
+        # cubic: a = 6Δ/T² at the ends; linear, whose acceleration is unbounded at its corners, takes
+        # the cubic's time (esmini 3.6)
         return math.sqrt(6.0 * change / self.max_acc)
 
     def start(self, ctx) -> None:
@@ -482,12 +481,8 @@ class Speed(Action):
         if ctx.entities[ref].deleted or ref == self.entity:
             return None  # (its own speed as its reference, as esmini plays it: the interpreter steps it)
         values = {"ENTITY": index[self.entity], "REF": index[ref], "VALUE": value, "FOLLOW": 1.0}
-        limited = e.performance  # (Entity.tracked_speed's limits)
-        values |= {
-            "MAX_SPEED": e.max_speed,
-            "MAX_ACCEL": e.limits.max_accel_mps2 if limited else math.inf,
-            "MAX_DECEL": e.limits.max_decel_mps2 if limited else math.inf,
-        }
+        max_accel, max_decel, _ = e.performance_limits  # (Entity.tracked_speed's)
+        values |= {"MAX_SPEED": e.max_speed, "MAX_ACCEL": max_accel, "MAX_DECEL": max_decel}
         return core_row("keep", values | {"BY_FACTOR": float(vtype != "delta")})
 
     def after_core(self, ctx, stepped_before: bool) -> None:

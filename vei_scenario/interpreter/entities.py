@@ -216,18 +216,26 @@ class Entity:
         """``v`` held to within ``max_speed`` either way (as esmini holds a SpeedAction's target speed)."""
         return v if abs(v) <= self.max_speed else math.copysign(self.max_speed, v)
 
+    @property
+    def performance_limits(self) -> tuple[float, float, float]:
+        """(maxAcceleration, maxDeceleration, maxSpeed) of its Performance; no limits (inf) without
+        one. What an action's own constraints are held within, where esmini 3.6 holds them."""
+        if not self.performance:
+            return math.inf, math.inf, math.inf
+        return self.limits.max_accel_mps2, self.limits.max_decel_mps2, self.max_speed
+
     def tracked_speed(self, target: float, dt: float) -> float:
         """The speed after one step of ``dt`` towards ``target`` at no more than the Performance's
-        maxAcceleration/maxDeceleration (no limit without a Performance): how esmini 3.6 keeps a
-        continuous relative target speed once its transition is over. The core's keep rows
-        (FOLLOW, core_module.c) step the same arithmetic."""
+        maxAcceleration/maxDeceleration: how esmini 3.6 keeps a continuous relative target speed
+        once its transition is over. The core's keep rows (FOLLOW, core_module.c) step the same
+        arithmetic."""
         v0 = self.speed
-        if self.performance:
-            acc = (target - v0) / dt
-            if acc > self.limits.max_accel_mps2:
-                return v0 + self.limits.max_accel_mps2 * dt
-            if acc < -self.limits.max_decel_mps2:
-                return v0 - self.limits.max_decel_mps2 * dt
+        max_accel, max_decel, _ = self.performance_limits
+        acc = (target - v0) / dt
+        if acc > max_accel:
+            return v0 + max_accel * dt
+        if acc < -max_decel:
+            return v0 - max_decel * dt
         return target
 
     def take_longitudinal(self, action, ctx) -> None:

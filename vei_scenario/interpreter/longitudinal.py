@@ -74,7 +74,7 @@ class LongitudinalDistance(SteppedLongitudinal):
         self.accel = 0.0
         # the spring's limits: the constraints' within the entity's Performance (esmini 3.6, measured;
         # placed at the gap without constraints, it is not held to the Performance)
-        own = (e.limits.max_accel_mps2, e.limits.max_decel_mps2, e.max_speed) if e.performance else (math.inf,) * 3
+        own = e.performance_limits
         self.limits = min(self.max_accel, own[0]), min(self.max_decel, own[1]), min(self.max_speed, own[2])
         e.take_longitudinal(self, ctx)
         ctx.stepping.append(self)

@@ -71,7 +71,7 @@ class SpeedProfile(SteppedLongitudinal):
         e.take_longitudinal(self, ctx)
         e.speed_profile = None
         # the limits: the constraints', within the entity's Performance (esmini 3.6)
-        own = (e.limits.max_accel_mps2, e.limits.max_decel_mps2) if e.performance else (math.inf, math.inf)
+        own = e.performance_limits
         self.accel_limit, self.decel_limit = min(self.max_accel, own[0]), min(self.max_decel, own[1])
         # the schedule: (time, speed) corners from the current speed on
         accel = self.accel_limit if math.isfinite(self.accel_limit) else e.limits.max_accel_mps2
@@ -84,7 +84,7 @@ class SpeedProfile(SteppedLongitudinal):
             fastest = abs(target - v) / rate if rate > 0 else 0.0
             if duration is None:  # as fast as allowed
                 duration = fastest
-            elif target != v and (math.isfinite(self.accel_limit if target > v else self.decel_limit)):
+            elif math.isfinite(self.accel_limit if target > v else self.decel_limit):
                 duration = max(duration, fastest)  # a change faster than the limits takes longer (esmini)
             t += duration
             self.corners.append((t, target))
