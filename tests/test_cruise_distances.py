@@ -200,3 +200,31 @@ def test_the_core_stops_where_the_distance_crosses_and_before_the_margin():
 def test_the_core_refuses_guards_it_does_not_know():
     with pytest.raises(ValueError, match="guard"):
         _core_steps("LONGITUDINAL", 9, 20.0, False)
+
+
+def _profiled(v0: float, v1: float, duration: float) -> list[float]:
+    """A road user standing or driving along x whose speed goes linearly from v0 at t = 0 to v1."""
+    row = _straight(0.0, 0.0, 0.0, v0)
+    shape = layout("shape")["LINEAR"]
+    for name, v in {"PROFILE": shape, "PROFILE_V0": v0, "PROFILE_V1": v1, "PROFILE_DURATION": duration}.items():
+        row[ROW[name]] = float(v)
+    return row
+
+
+def _profiled_steps(v0: float, v1: float, start_step: int = 0) -> tuple[int, int]:
+    """(steps the core takes, its edge) of one road user under a 2 s linear speed change, from ``start_step``."""
+    clock = np.asarray([(start_step + k) / 8 for k in range(40)], float).tobytes()
+    state = np.asarray(_profiled(v0, v1, 2.0), float).tobytes()
+    n, *_, edge = _core.cruise((None,), state, b"", b"", b"", b"", b"", clock, math.inf, 0.125)
+    return n, edge
+
+
+def test_the_core_says_when_it_stops_before_a_road_user_starts_or_stops():
+    """A road user setting off or coming to a standstill is the interpreter's step (it marks when the
+    standstill began); the core stops before it and says why (``edge``), so that the engine offers the
+    step after it at once (cruise.EDGE_RETRIES)."""
+    assert _profiled_steps(0.0, 4.0) == (0, 1)  # (sets off in the first step)
+    assert _profiled_steps(0.0, 4.0, start_step=3) == (0, 1)
+    # (stands where its transition ends: the end of an action, the interpreter's for that; no edge)
+    assert _profiled_steps(4.0, 0.0, start_step=1) == (14, 0)
+    assert _profiled_steps(2.0, 4.0, start_step=1) == (14, 0)

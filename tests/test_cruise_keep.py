@@ -263,3 +263,74 @@ def test_the_core_refuses_a_table_that_is_not_whole_rows(table):
     clock = np.arange(10, dtype=float).tobytes()
     with pytest.raises(ValueError, match=f"the {table} need their columns each"):
         _core.cruise((None,), state, tables["syncs"], tables["keeps"], b"", b"", tables["guards"], clock, math.inf, 0.1)
+
+
+def _keeping(name: str, s: float, action: str) -> str:
+    """Init: ``name`` standing on lane -1 at ``s``, given ``action``."""
+    return _lane(name, -1, s, 0.0).replace("</Private>", action + "</Private>")
+
+
+#: The chains of kept distances: (Keeper's to Lead, Other's to Keeper), by placing ("") or by the spring.
+CHAINS = {
+    "placed_placed": ("", ""),
+    "spring_placed": ('maxAcceleration="3" maxDeceleration="5" maxSpeed="30"', ""),
+    "placed_spring": ("", 'maxAcceleration="3" maxDeceleration="5" maxSpeed="30"'),
+}
+
+
+@pytest.mark.parametrize("order", ["lead_first", "lead_last"])
+@pytest.mark.parametrize("chain", sorted(CHAINS))
+def test_a_chain_of_kept_distances_in_quiet_steps_equals_the_stepped_run(tmp_path, monkeypatch, chain, order):
+    """Other keeps its distance to Keeper, which keeps its own to Lead (a platoon set going from a
+    standstill): the core places or springs them one after the other in the interpreter's order, each
+    from where the one before it put its reference, and carries nearly the whole run."""
+    (tmp_path / "arc.xodr").write_text(ROAD)
+    first, second = CHAINS[chain]
+    keeper = _keeping("Keeper", 40, _keep("Lead", 'distance="8" freespace="true"', first))
+    other = _keeping("Other", 20, _keep("Keeper", 'timeGap="0.8" freespace="true"', second))
+    inits = [_lane("Lead", -1, 60, 0.0), keeper, other]
+    if order == "lead_last":
+        inits.reverse()
+    xosc = tmp_path / "k.xosc"
+    xosc.write_text(on_arc(("Lead", "Keeper", "Other"), "".join(inits), _speed_change("Lead", 14.0, 1.0, 3.0), 14.0))
+    fast, cruised, slow = run_both(xosc, monkeypatch)
+    assert_identical(fast, slow)
+    assert fast.traces["Other"].speed[-1] > 13.0  # (the chain followed Lead up to its speed)
+    assert cruised > 0.95 * len(fast.t), (cruised, len(fast.t))
+
+
+def test_road_users_setting_off_one_after_the_other_are_offered_to_the_core_at_once(tmp_path, monkeypatch):
+    """Lead, standing, is synchronised from the start and Keeper, standing, keeps its distance to it
+    (placed before the synchronisation steps: it sets off one step after Lead). The core
+    refuses both steps, each a road user setting off (its ``edge``), and the engine offers the next step
+    each time at once rather than waiting RETRY_STEPS after the second refusal in a row."""
+    from vei_scenario.interpreter import engine
+
+    synchronise = (
+        '<PrivateAction><SynchronizeAction masterEntityRef="Other"><TargetPositionMaster>'
+        '<LanePosition roadId="1" laneId="-2" s="200"/></TargetPositionMaster><TargetPosition>'
+        '<LanePosition roadId="1" laneId="-1" s="200"/></TargetPosition><FinalSpeed><AbsoluteSpeed value="9"/>'
+        "</FinalSpeed></SynchronizeAction></PrivateAction>"
+    )
+    (tmp_path / "arc.xodr").write_text(ROAD)
+    keeper = _keeping("Keeper", 40, _keep("Lead", 'distance="8" freespace="true"'))
+    lead = _keeping("Lead", 60, synchronise)
+    xosc = tmp_path / "k.xosc"
+    xosc.write_text(on_arc(("Lead", "Keeper", "Other"), keeper + lead + _lane("Other", -2, 20, 11.0), "", 6.0))
+    offers: list[tuple[int, int]] = []
+    original = engine.cruise
+
+    def watching(ctx, *args):
+        step = ctx.step
+        n = original(ctx, *args)
+        offers.append((step, n))
+        return n
+
+    monkeypatch.setattr(engine, "cruise", watching)
+    fast, _, slow = run_both(xosc, monkeypatch)
+    assert_identical(fast, slow)
+    lead_off, keeper_off = (int(np.argmax(fast.traces[n].speed > 0.0)) for n in ("Lead", "Keeper"))
+    assert 0 < lead_off and keeper_off == lead_off + 1  # (one, then the other)
+    # (the steps they set off in refused in a row, then the next one offered and taken with most of the run)
+    assert offers[:3] == [(lead_off - 1, 0), (keeper_off - 1, 0), (keeper_off, offers[2][1])], offers
+    assert offers[2][1] > 0.8 * len(fast.t), offers

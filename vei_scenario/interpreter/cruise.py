@@ -55,6 +55,8 @@ MIN_STEPS = 3
 #: Steps the engine takes before offering the core a stretch again after the storyboard or the road
 #: users' motion refused one.
 RETRY_STEPS = 4
+#: How many refusals in a row for road users starting or stopping are followed by an offer at once.
+EDGE_RETRIES = 8
 #: How fast (rad/s) a road user may turn in a quiet stretch watched by a condition that reads turning.
 TURN_RATE = 0.3
 #: How much faster (m/s) than now a road user whose speed a synchronisation sets may go in a quiet
@@ -312,8 +314,10 @@ def _stepped(ctx, entities: list) -> _Stepped | None:
     """The actions setting speeds or places before the moves in the core's columns, or None when one
     does it as the core does not (or a synchronisation's distances are not along the path or roads its
     parties keep). The core places the distance keepers before the synchronisations step, so they must
-    come first here too; no road user a keeper places is another's reference, and none sets a master's
-    speed. A continuous relative speed reads its reference's speed at the step's start, as the core."""
+    come first here too, and none sets a master's speed. Keepers are placed in the interpreter's order,
+    each from where the ones before it were put, so one may keep its distance to another (a platoon:
+    tests/test_cruise_keep.py). A continuous relative speed reads its reference's speed at the step's
+    start, as the core."""
     from vei_scenario.interpreter.actions import Speed
     from vei_scenario.interpreter.longitudinal import LongitudinalDistance
     from vei_scenario.interpreter.synchronize import Synchronize
@@ -347,9 +351,7 @@ def _stepped(ctx, entities: list) -> _Stepped | None:
     if len(synced) < len(actions) or any(a.master in synced for a in actions):
         return None
     kept = {a.entity for a in out.keeps}
-    placed = {a.entity for a in out.keeps if type(a) is LongitudinalDistance and a.placing}
-    refs = {a.ref for a in out.keeps}
-    if len(kept) < len(out.keeps) or kept & (synced | {a.master for a in actions}) or placed & refs:
+    if len(kept) < len(out.keeps) or kept & (synced | {a.master for a in actions}):
         return None
     if any(a.final is not None and a.final[0] == "relative" and ctx.entities[a.master].speed_profile for a in actions):
         return None  # (a final speed relative to a master whose speed changes: worked out each step)
@@ -489,13 +491,17 @@ def cruise(ctx, storyboard, entities: list, recording, max_time: float, offers: 
     tables = (cols, stepped.sync_cols, stepped.keep_cols, cruises.cols, stepped.programs, bounds.guards)
     columns = tuple(f64("d", table).tobytes() for table in tables)
     clock = packed_step_times(step0, step0 + skipped + 1, dt)  # (each step's start)
-    n, poses, state, sync_state, keep_state, acc_state = _core.cruise(ways, *columns, clock, bounds.turn, dt)
+    n, poses, state, sync_state, keep_state, acc_state, edge = _core.cruise(ways, *columns, clock, bounds.turn, dt)
     # The core stops before a step that is not quiet (an action ending, a guard's comparison turning):
     # the interpreter takes that one, and the steps after it are offered again at once, unless the
     # core has refused the first step before (a state that lasts, such as a distance on its threshold).
+    # A road user starting or stopping (``edge``) is an event of one step, and a few may come in a row
+    # (a synchronisation starts one road user, a kept distance its follower the step after): offered
+    # again at once up to EDGE_RETRIES times (a speed flickering about zero would otherwise be offered
+    # every step).
     if n == 0:
         offers.refusals += 1
-        offers.wait = 0 if offers.refusals == 1 else RETRY_STEPS
+        offers.wait = 0 if offers.refusals == 1 or (edge and offers.refusals <= EDGE_RETRIES) else RETRY_STEPS
         return 0
     offers.refusals = 0
     offers.wait = 1 if n < skipped + 1 else 0  # (stopped early: the next step is the one it stopped before)

@@ -1352,6 +1352,10 @@ static int lateral_step(const vr_road *r, const double *e, double t, double ds, 
     return 1;
 }
 
+/* cruise_move's refusal of a road user starting or stopping: the interpreter's step (it marks when a
+ * standstill began), a one-step event after which the steps are quiet again as a rule */
+#define STANDSTILL_EDGE -1
+
 static int cruise_move(PyObject *way, const double *e, double t, double max_turn, double dt, double *next)
 {
     double mode = e[CR_MODE];
@@ -1362,7 +1366,7 @@ static int cruise_move(PyObject *way, const double *e, double t, double max_turn
         next[CR_ACCEL] = (next[CR_SPEED] - e[CR_SPEED]) / dt;
     }
     double speed = next[CR_SPEED], ds = speed * dt;
-    if ((fabs(speed) < 1e-9) != (fabs(e[CR_SPEED]) < 1e-9)) return 0;
+    if ((fabs(speed) < 1e-9) != (fabs(e[CR_SPEED]) < 1e-9)) return STANDSTILL_EDGE;
     if (mode == MODE_LANE && e[CR_LATERAL] != 0.0 && e[CR_LAT_OLD_SPEED] != 0.0 && e[CR_PROFILE] >= 0) ds = e[CR_SPEED] * dt;
     if (mode == MODE_STRAIGHT) {
         double c, s;
@@ -1713,14 +1717,15 @@ static const double *table_rows(PyObject *bytes, Py_ssize_t cols, const char *na
 }
 
 /* cruise(ways, state, syncs, keeps, accs, programs, guards, times, max_turn, dt) -> (n, poses, state, syncs, keeps,
- * accs): up to n_max steps (times: the simulation time at the start of each) of every road user (ways: per road
+ * accs, edge): up to n_max steps (times: the simulation time at the start of each) of every road user (ways: per road
  * user its Road (mode 1), its Polyline (mode 2) or None), the kept distances (KP_COLS each) placing their road
  * users first, then the synchronisations (SY_COLS each) and the running transitions of SpeedActions setting
  * their entities' speeds before each move, and the adaptive cruises (AC_COLS each) setting theirs as their road
  * users' turns to move come; stops before a step
  * that is not quiet, ends a synchronisation, changes what a guard compares or which pairs overlap. poses: n x users x (x, y,
  * yaw, metres moved, speed, acceleration); state, syncs: the columns after the n steps. The metres moved
- * and the odometer are vei_hypot's, as the interpreter's own steps measure them (the module's hypot). */
+ * and the odometer are vei_hypot's, as the interpreter's own steps measure them (the module's hypot); edge: 1
+ * when the step it stopped before starts or ends a road user's standstill (STANDSTILL_EDGE). */
 static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
 {
     if (!args_ok(nargs, 10, "cruise")) return NULL;
@@ -1858,8 +1863,10 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
     cruise_pairs(cur, n, box, pairs0, &k0);
     for (Py_ssize_t k = 0; k < n_guards; k++) first[k] = guard_state(guards + k * GD_COLS, cur);
     long done = 0;
+    int edge = 0; /* (whether the step it stops before is refused for a standstill's edge) */
     for (; done < n_max; done++) {
         int quiet = 1;
+        edge = 0;
         /* pre: where the road users start their moves, the keeps' road users placed at their gaps first */
         double *pre = cur;
         if (n_keeps) {
@@ -1912,7 +1919,10 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
                 double *ac = acc_of[i] >= 0 ? accs_next + acc_of[i] * AC_COLS : NULL;
                 if ((ac != NULL && ac[AC_LAST] != 0.0) != (pass == 1)) continue;
                 if (ac != NULL) quiet = acc_step(ac, ways, pre, next, moved, n, dt);
-                if (quiet) quiet = cruise_move(PyTuple_GET_ITEM(ways, i), pre + i * CR_COLS, times[done], max_turn, dt, next + i * CR_COLS);
+                if (quiet) {
+                    quiet = cruise_move(PyTuple_GET_ITEM(ways, i), pre + i * CR_COLS, times[done], max_turn, dt, next + i * CR_COLS);
+                    if (quiet == STANDSTILL_EDGE) quiet = 0, edge = 1;
+                }
                 moved[i] = 1;
             }
         for (double chain = 1; chain <= max_chain && quiet; chain++) /* (trailers front to back) */
@@ -1951,9 +1961,9 @@ static PyObject *cruise(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
     }
     PyObject *result = NULL;
     if (_PyBytes_Resize(&poses, (Py_ssize_t)(sizeof(double) * 6 * (size_t)n * (size_t)done)) == 0)
-        result = Py_BuildValue("(lNy#y#y#y#)", done, poses, (const char *)cur, (Py_ssize_t)(sizeof(double) * CR_COLS * n),
+        result = Py_BuildValue("(lNy#y#y#y#i)", done, poses, (const char *)cur, (Py_ssize_t)(sizeof(double) * CR_COLS * n),
                                (const char *)sync, (Py_ssize_t)sync_bytes, (const char *)keeps, (Py_ssize_t)keep_bytes,
-                               (const char *)accs, (Py_ssize_t)acc_bytes);
+                               (const char *)accs, (Py_ssize_t)acc_bytes, edge);
     PyMem_Free(cur), PyMem_Free(acc_of), PyMem_Free(moved), PyMem_Free(box), PyMem_Free(pairs), PyMem_Free(first);
     return result;
 }
@@ -2162,7 +2172,7 @@ static PyMethodDef module_methods[] = {
     F(time_to_conflict, "time_to_conflict(ego_box, ego_speed, margin, threat_box, vx, vy[, horizon]) -> s"),
     F(time_to_contact, "time_to_contact(box_a, vxa, vya, box_b, vxb, vyb) -> s"),
     {"overlapping", overlapping, METH_O, "overlapping(boxes) -> pairs (i, j) of overlapping boxes"},
-    F(cruise, "cruise(ways, state, syncs, keeps, accs, programs, guards, times, max_turn, dt) -> (n, poses, state, syncs, keeps, accs): quiet steps in one call"),
+    F(cruise, "cruise(ways, state, syncs, keeps, accs, programs, guards, times, max_turn, dt) -> (n, poses, state, syncs, keeps, accs, edge): quiet steps in one call"),
     F(transition_fraction, "transition_fraction(shape, x) -> how far a transition of SHAPES code shape has come at x"),
     {"lane_change_turn", (PyCFunction)(void (*)(void))lane_change_turn_, METH_FASTCALL,
      "lane_change_turn(shape, by_time, delta, value, x, dt, ds) -> a lane change's heading from its lane in a step"},
