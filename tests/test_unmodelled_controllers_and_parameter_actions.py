@@ -5,7 +5,8 @@ are switched off, and parameters modified by a ParameterAction (OpenSCENARIO 1.0
 
 esmini plays a controller type it does not know as its default controller; vei does the same and says
 so in a warning (the file, the line, the name), where it used to refuse the whole scenario. esmini's
-own models that vei lacks stay refused: esmini would drive the car by them."""
+own models that vei lacks are refused once an action activates one (esmini would then drive the car by
+it); never activated, they change nothing, in esmini as in vei."""
 
 from __future__ import annotations
 
@@ -71,7 +72,9 @@ def _speed(entity: str, v: float) -> str:
     )
 
 
-def _cut_in(tmp_path, driver: str | None = "Default_Driver", ego_extra: str = "", init_extra: str = "") -> object:
+def _cut_in(
+    tmp_path, driver: str | None = "Default_Driver", ego_extra: str = "", init_extra: str = "", a1_extra: str = ""
+) -> object:
     """A cut-in as the ASAM example writes it: a faster car from behind in the next lane changes into
     the ego's lane once 20 m ahead of it (road coordinates), a slower car ahead in the ego's lane."""
     _road(tmp_path / "rq31.xodr")
@@ -88,7 +91,7 @@ def _cut_in(tmp_path, driver: str | None = "Default_Driver", ego_extra: str = ""
 <Private entityRef="Ego">{_speed("Ego", 27.778)}<PrivateAction><TeleportAction><Position>
 <LanePosition roadId="1" laneId="-3" offset="0.5" s="100"/></Position></TeleportAction></PrivateAction>{ego_extra}</Private>
 <Private entityRef="A1">{_speed("A1", 25.0)}<PrivateAction><TeleportAction><Position>
-<RelativeLanePosition entityRef="Ego" dLane="0" ds="84.0"/></Position></TeleportAction></PrivateAction></Private>
+<RelativeLanePosition entityRef="Ego" dLane="0" ds="84.0"/></Position></TeleportAction></PrivateAction>{a1_extra}</Private>
 <Private entityRef="A2">{_speed("A2", 30.556)}<PrivateAction><TeleportAction><Position>
 <RelativeLanePosition entityRef="Ego" dLane="1" ds="-30.0"/></Position></TeleportAction></PrivateAction></Private>
 </Actions></Init>
@@ -147,14 +150,60 @@ def test_activating_a_controller_without_a_model_changes_nothing(tmp_path):
     _same_motion(activated, plain)
 
 
-@pytest.mark.parametrize(
-    "kind", ["FollowGhostController", "InteractiveController", "ExternalController", "SumoController"]
+#: esmini's own models that vei lacks (a few of controllers.ESMINI_ONLY).
+ESMINI_MODELS = ["FollowGhostController", "InteractiveController", "ExternalController", "SloppyDriverController"]
+_ACTIVATE = (
+    '<PrivateAction><ControllerAction><ActivateControllerAction lateral="true" longitudinal="true"/>'
+    "</ControllerAction></PrivateAction>"
 )
-def test_esminis_own_models_are_still_refused(tmp_path, kind):
+
+
+@pytest.mark.parametrize("kind", ESMINI_MODELS)
+def test_esminis_own_models_never_activated_change_nothing_and_are_named(tmp_path, kind):
+    """esmini 3.6 plays a scenario whose entities are given one of its models that no action activates
+    as if they had none (measured: pedestrian_traj_synch.xosc, its Ego's InteractiveController never
+    activated, plays the same without it); vei plays it so too, with a warning naming the model."""
+    assigned = run_scenario(_cut_in(tmp_path / "a", driver=kind), {}, DT)
+    plain = run_scenario(_cut_in(tmp_path / "b", driver=None), {}, DT)
+    _same_motion(assigned, plain)
+    named = [w for w in assigned.warnings if f"'{kind}' (an esmini model" in w]
+    assert len(named) == 2 and all("stops if it is activated" in w and "cut_in.xosc: line " in w for w in named)
+
+
+@pytest.mark.parametrize("kind", ESMINI_MODELS)
+def test_esminis_own_models_activated_are_refused_in_one_line(tmp_path, kind):
+    """Activated, esmini would drive the entity by its model: the run stops, naming the model, the
+    entity and when (in Init, or by the event that changes lanes once A2 is 20 m ahead)."""
     with pytest.raises(VeiInputError) as err:
-        run_scenario(_cut_in(tmp_path, driver=kind), {}, DT)
+        run_scenario(_cut_in(tmp_path / "init", driver=kind, a1_extra=_ACTIVATE), {}, DT)
     msg = str(err.value)
-    assert f"'{kind}' (an esmini model) is not supported" in msg and "cut_in.xosc: line " in msg and "\n" not in msg
+    assert f"'{kind}' (an esmini model) is not supported" in msg and "A1's is activated at t = 0.00 s" in msg
+    assert "cut_in.xosc: line " in msg and "\n" not in msg
+    path = _cut_in(tmp_path / "event", driver=kind)
+    path.write_text(
+        path.read_text().replace('<Action name="cut">', f'<Action name="on">{_ACTIVATE}</Action><Action name="cut">')
+    )
+    with pytest.raises(VeiInputError, match=r"A2's is activated at t = [1-9][0-9]*\.[0-9]{2} s"):
+        run_scenario(path, {}, DT)
+
+
+def test_a_sumo_controller_is_refused_unactivated(tmp_path):
+    """esmini's SUMO controller adds and drives the vehicles of a SUMO simulation without being activated."""
+    with pytest.raises(VeiInputError, match=r"'SumoController' \(an esmini model\) is not supported"):
+        run_scenario(_cut_in(tmp_path, driver="SumoController"), {}, DT)
+
+
+def test_vei_run_refusing_an_activated_model_writes_nothing(tmp_path):
+    out = tmp_path / "run"
+    path = _cut_in(tmp_path, driver="InteractiveController", a1_extra=_ACTIVATE)
+    proc = subprocess.run(
+        [sys.executable, "-m", "vei_scenario", "run", str(path), "-o", str(out), "--no-plots"],
+        capture_output=True,
+        text=True,
+    )
+    errors = [ln for ln in proc.stderr.splitlines() if ln.startswith("vei: error: ")]
+    assert proc.returncode != 0 and len(errors) == 1 and "Traceback" not in proc.stderr
+    assert "'InteractiveController'" in errors[0] and not (out.exists() and any(out.iterdir()))
 
 
 def test_vei_run_prints_the_warning_and_writes_it_to_the_metrics(tmp_path):

@@ -380,7 +380,27 @@ class DefaultController(Controller):
     domains = ()
 
 
-#: The controller types esmini 3.6 has models of that vei does not: a scenario that names one is
+class UnmodelledController(Controller):
+    """One of esmini's own models that vei does not have (ESMINI_ONLY). Assigned and never activated
+    it has no effect, in esmini as here (measured with esmini 3.6: pedestrian_traj_synch.xosc, whose
+    Ego is given an InteractiveController it never activates, plays the same without it); the run
+    stops with one line when an action activates it, since esmini would then drive the entity by it."""
+
+    domains = ("lateral", "longitudinal")
+
+    def __init__(self, name, props, el, ctx, kind: str) -> None:
+        super().__init__(name, props, el, ctx)
+        self.kind = kind
+
+    def activated(self, e: Entity, ctx, domains: tuple[str, ...]) -> None:
+        raise ctx.error(self.el, f"{_unsupported(self.kind)}; {e.name}'s is activated at t = {ctx.t:.2f} s")
+
+
+def _unsupported(kind: str) -> str:
+    return f"controller {kind!r} (an esmini model) is not supported by vei run (supported: {', '.join(CONTROLLERS)})"
+
+
+#: The controller types esmini 3.6 has models of that vei does not: a scenario that activates one is
 #: refused, since esmini would drive its entity by that model (measured: esmini falls back to the
 #: default controller for any other name). SumoController: esmini built with SUMO.
 ESMINI_ONLY = frozenset(
@@ -391,6 +411,9 @@ ESMINI_ONLY = frozenset(
         "SumoController", "UDPDriverController",
     }
 )  # fmt: skip
+#: Of those, the ones that act without being activated: esmini's SUMO controller adds and drives the
+#: vehicles of a SUMO simulation from the start.
+ACTS_UNACTIVATED = frozenset({"SumoController"})
 
 
 def controller_kind(name: str, props: dict[str, str]) -> str:
@@ -401,15 +424,18 @@ def controller_kind(name: str, props: dict[str, str]) -> str:
 
 def make_controller(el, ctx) -> Controller:
     """A runtime controller from a ``<Controller>`` element: the kind its ``esminiController`` property
-    names (esmini's rule), else its name. One of esmini's own models vei lacks is refused; any other
-    name is the default controller, with a warning (:class:`DefaultController`)."""
+    names (esmini's rule), else its name. One of esmini's own models vei lacks is refused when it is
+    activated (:class:`UnmodelledController`), or at once if it acts without (ACTS_UNACTIVATED); any
+    other name is the default controller, with a warning (:class:`DefaultController`)."""
     name = el.get("name", "")
     props = {p.get("name"): p.get("value") for p in el.iterfind("Properties/Property")}
     kind = controller_kind(name, props)
     cls = CONTROLLERS.get(kind)
-    if cls is None and kind in ESMINI_ONLY:  # (named in the file it comes from: the scenario, or its catalog)
-        known = ", ".join(CONTROLLERS)
-        raise ctx.error(el, f"controller {kind!r} (an esmini model) is not supported by vei run (supported: {known})")
+    if cls is None and kind in ACTS_UNACTIVATED:  # (named in the file it comes from: the scenario, or its catalog)
+        raise ctx.error(el, _unsupported(kind))
+    if cls is None and kind in ESMINI_ONLY:
+        ctx.warn(el, f"controller {kind!r} (an esmini model vei run does not have): the run stops if it is activated")
+        return UnmodelledController(name, props, el, ctx, kind)
     if cls is None:
         ctx.warn(el, f"controller {kind!r} names no model vei run has: it plays as the default controller (esmini's)")
         return DefaultController(name, props, el, ctx)
