@@ -141,17 +141,20 @@ def test_a_keeper_taken_over_or_at_the_road_end_steps_as_the_interpreter_does(tm
     assert fast.traces["Lead"].speed[-1] == 0.0 and cruised > 0.5 * len(fast.t)
 
 
+#: Lead (lane -1) synchronised to reach s = 200 when Other (lane -2) does, at 9 m/s.
+SYNCHRONISE_LEAD = (
+    '<PrivateAction><SynchronizeAction masterEntityRef="Other"><TargetPositionMaster>'
+    '<LanePosition roadId="1" laneId="-2" s="200"/></TargetPositionMaster><TargetPosition>'
+    '<LanePosition roadId="1" laneId="-1" s="200"/></TargetPosition><FinalSpeed><AbsoluteSpeed value="9"/>'
+    "</FinalSpeed></SynchronizeAction></PrivateAction>"
+)
+
+
 def test_a_keeper_of_a_synchronised_reference_and_one_started_after_it(tmp_path, monkeypatch):
     """Lead is synchronised to reach s = 200 when Other does; Keeper keeps its gap to Lead from the start
     (the core places it before the synchronisation steps, as the interpreter does) — and, in the second
     run, only from 1 s on, after the synchronisation (the interpreter steps it, the run is the same)."""
-    synchronise = (
-        '<PrivateAction><SynchronizeAction masterEntityRef="Other"><TargetPositionMaster>'
-        '<LanePosition roadId="1" laneId="-2" s="200"/></TargetPositionMaster><TargetPosition>'
-        '<LanePosition roadId="1" laneId="-1" s="200"/></TargetPosition><FinalSpeed><AbsoluteSpeed value="9"/>'
-        "</FinalSpeed></SynchronizeAction></PrivateAction>"
-    )
-    sync = _event("sync", "Lead", synchronise, _at_time(0.2))
+    sync = _event("sync", "Lead", SYNCHRONISE_LEAD, _at_time(0.2))
     keep = _keep("Lead", 'distance="8" freespace="true" coordinateSystem="road"')
     fast, cruised, slow = run_both(scenario(tmp_path, -1, 40, keep, sync), monkeypatch)
     assert_identical(fast, slow)
@@ -306,15 +309,9 @@ def test_road_users_setting_off_one_after_the_other_are_offered_to_the_core_at_o
     each time at once rather than waiting RETRY_STEPS after the second refusal in a row."""
     from vei_scenario.interpreter import engine
 
-    synchronise = (
-        '<PrivateAction><SynchronizeAction masterEntityRef="Other"><TargetPositionMaster>'
-        '<LanePosition roadId="1" laneId="-2" s="200"/></TargetPositionMaster><TargetPosition>'
-        '<LanePosition roadId="1" laneId="-1" s="200"/></TargetPosition><FinalSpeed><AbsoluteSpeed value="9"/>'
-        "</FinalSpeed></SynchronizeAction></PrivateAction>"
-    )
     (tmp_path / "arc.xodr").write_text(ROAD)
     keeper = _keeping("Keeper", 40, _keep("Lead", 'distance="8" freespace="true"'))
-    lead = _keeping("Lead", 60, synchronise)
+    lead = _keeping("Lead", 60, SYNCHRONISE_LEAD)
     xosc = tmp_path / "k.xosc"
     xosc.write_text(on_arc(("Lead", "Keeper", "Other"), keeper + lead + _lane("Other", -2, 20, 11.0), "", 6.0))
     offers: list[tuple[int, int]] = []

@@ -115,6 +115,11 @@ def _cut_in(
     return path
 
 
+def _vei(*args: str, check: bool = False) -> subprocess.CompletedProcess:
+    """``vei ARGS`` in a process of its own, as a user runs it (its output captured as text)."""
+    return subprocess.run([sys.executable, "-m", "vei_scenario", *args], capture_output=True, text=True, check=check)
+
+
 def _same_motion(a, b) -> None:
     assert a.t.shape == b.t.shape
     for name in a.traces:
@@ -196,11 +201,7 @@ def test_a_sumo_controller_is_refused_unactivated(tmp_path):
 def test_vei_run_refusing_an_activated_model_writes_nothing(tmp_path):
     out = tmp_path / "run"
     path = _cut_in(tmp_path, driver="InteractiveController", a1_extra=_ACTIVATE)
-    proc = subprocess.run(
-        [sys.executable, "-m", "vei_scenario", "run", str(path), "-o", str(out), "--no-plots"],
-        capture_output=True,
-        text=True,
-    )
+    proc = _vei("run", str(path), "-o", str(out), "--no-plots")
     errors = [ln for ln in proc.stderr.splitlines() if ln.startswith("vei: error: ")]
     assert proc.returncode != 0 and len(errors) == 1 and "Traceback" not in proc.stderr
     assert "'InteractiveController'" in errors[0] and not (out.exists() and any(out.iterdir()))
@@ -208,11 +209,7 @@ def test_vei_run_refusing_an_activated_model_writes_nothing(tmp_path):
 
 def test_vei_run_prints_the_warning_and_writes_it_to_the_metrics(tmp_path):
     out = tmp_path / "run"
-    proc = subprocess.run(
-        [sys.executable, "-m", "vei_scenario", "run", str(_cut_in(tmp_path)), "-o", str(out), "--no-plots"],
-        capture_output=True,
-        text=True,
-    )
+    proc = _vei("run", str(_cut_in(tmp_path)), "-o", str(out), "--no-plots")
     assert proc.returncode == 0, proc.stderr
     warned = [ln for ln in proc.stderr.splitlines() if ln.startswith("vei: warning: ")]
     assert len(warned) == 3 and "Traceback" not in proc.stderr
@@ -221,7 +218,7 @@ def test_vei_run_prints_the_warning_and_writes_it_to_the_metrics(tmp_path):
     # a run without anything to say writes the document it always wrote: no warnings key
     quiet = tmp_path / "quiet"
     path = _cut_in(tmp_path / "q", driver=None)
-    subprocess.run([sys.executable, "-m", "vei_scenario", "run", str(path), "-o", str(quiet), "--no-plots"], check=True)
+    _vei("run", str(path), "-o", str(quiet), "--no-plots", check=True)
     assert "warnings" not in json.loads((quiet / "metrics.json").read_text())
 
 
@@ -385,22 +382,7 @@ def test_vei_sweep_says_so_once_and_writes_it_to_the_catalog(tmp_path):
     variant) and kept in catalog.json; a sweep with nothing to say writes the catalog it always wrote."""
     path = _with_gap(_cut_in(tmp_path))
     out = tmp_path / "sweep"
-    proc = subprocess.run(
-        [
-            sys.executable,
-            "-m",
-            "vei_scenario",
-            "sweep",
-            str(path),
-            "--vary",
-            "Gap=60,84,100",
-            "-o",
-            str(out),
-            "--quiet",
-        ],
-        capture_output=True,
-        text=True,
-    )
+    proc = _vei("sweep", str(path), "--vary", "Gap=60,84,100", "-o", str(out), "--quiet")
     assert proc.returncode == 0, proc.stderr
     warned = [ln for ln in proc.stderr.splitlines() if ln.startswith("vei: warning: ")]
     assert len(warned) == 3 and all("default controller" in w for w in warned)
@@ -408,9 +390,5 @@ def test_vei_sweep_says_so_once_and_writes_it_to_the_catalog(tmp_path):
     assert len(doc["warnings"]) == 3 and len(doc["variants"]) == 3
     quiet = tmp_path / "quiet"
     plain = _with_gap(_cut_in(tmp_path / "q", driver=None))
-    subprocess.run(
-        [sys.executable, "-m", "vei_scenario", "sweep", str(plain), "--vary", "Gap=60,84", "-o", str(quiet), "--quiet"],
-        check=True,
-        capture_output=True,
-    )
+    _vei("sweep", str(plain), "--vary", "Gap=60,84", "-o", str(quiet), "--quiet", check=True)
     assert "warnings" not in json.loads((quiet / "catalog.json").read_text())
