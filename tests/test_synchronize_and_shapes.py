@@ -408,6 +408,31 @@ def test_a_following_speed_profile_keeps_its_jerk_limits_and_ends_at_the_last_sp
     assert b.speed[_at(b, 9.5)] == pytest.approx(7.0, abs=0.05)
 
 
+def test_a_following_speed_profile_is_the_continuous_profile_at_any_step(tmp_path):
+    """Follow mode is a continuous jerk-limited profile sampled at the steps: from a standstill the
+    acceleration rises at 4 m/s³ towards the first segment's 2.5 m/s² (speed 2 τ² for τ ≤ 0.625 s
+    after the start, the first target's zero time taking no step), and the corners are cut where
+    the change ends on the next segment's line, wherever that falls within a step. So steps of 0.01,
+    0.02, 0.05 and 0.1 s give the same speeds at the times they share (the end value of a step's
+    acceleration alone lagged half a step: 0.06 m/s at 0.05 s; a corner cut at the first step
+    boundary after its moment, up to 0.09 m/s more)."""
+    dyn = (
+        '<DynamicConstraints maxAcceleration="5" maxDeceleration="10" maxAccelerationRate="4" '
+        'maxDecelerationRate="3" maxSpeed="50"/>'
+    )
+    path = _scenario(tmp_path, _car("B"), _teleport("B", 0, 0, 0, 0.0), _event(_profile("follow", dyn)), stop_s=12)
+    runs = {dt: run_scenario(path, {}, dt).traces["B"] for dt in (0.01, 0.02, 0.05, 0.1)}
+    coarse = runs[0.1]
+    for dt, b in runs.items():
+        k = round(0.1 / dt)
+        n = min(len(b.t[::k]), len(coarse.t))  # (each ends at the first step past the stop time)
+        assert n > 100 and np.allclose(b.t[::k][:n], coarse.t[:n], atol=1e-9)
+        assert np.abs(b.speed[::k][:n] - coarse.speed[:n]).max() <= 1e-9, dt
+    fine = runs[0.01]
+    for tau in (0.1, 0.3, 0.6):
+        assert fine.speed[_at(fine, tau)] == pytest.approx(2.0 * tau * tau, abs=1e-12)  # (the event starts at 0 s)
+
+
 def test_clothoid_spline_segments_with_their_own_start_and_times(tmp_path):
     """Two straight segments: the second has its own PositionStart (a jump, as esmini) and its own
     timeStart, so 10 m take 4 s on the first and 2 s on the second."""
