@@ -575,6 +575,13 @@ class FollowTrajectory(Action):
     def update(self, ctx) -> None:
         e = ctx.entities[self.entity]
         self.done = e.follower is None or e.follower.finished(ctx.t, ctx.dt)
+        f = e.follower
+        if self.done and f is not None and not e.modelled and ctx.road_file is None and not f.plays_time:
+            # an untimed path ended with no road to drive on along: the entity stands where the step
+            # that reached the end left it (the rest of that step straight on at the end's heading), as
+            # esmini 3.6 leaves it, its speed 0 (measured: it was a step further on, at its speed)
+            e.speed, e.speed_profile, e.follower = 0.0, None, None
+            return
         # the path ends on a lane: the entity drives on along it by default (at the speed it had at
         # the end, a timed one too), as esmini's does. (An entity with one of vei's model controllers
         # — a compiled ego or rider — keeps to what the sweep kernel and the FMUs do; and

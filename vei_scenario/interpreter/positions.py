@@ -124,6 +124,8 @@ def lane_pose(ctx, el, road_id: str, lane_id: int, s: float, offset: float, forw
     net = _network(ctx, el)
     try:
         road = net.road(road_id)
+        if lane_id == 0:
+            return _centre_lane_pose(el, road, s, offset, forward)
         t = road.lane_center_t(s, lane_id) + offset
     except KeyError as exc:
         why = exc.args[0] if exc.args else exc
@@ -134,6 +136,24 @@ def lane_pose(ctx, el, road_id: str, lane_id: int, s: float, offset: float, forw
     forward = road.drives_forward(lane_id) if forward is None else forward
     drive_h = wrap_angle(oriented(el, h if forward else h + math.pi))
     return Pose(x, y, drive_h, LaneState(road.id, lane_id, s, offset, *_relative_heading(drive_h, h)))
+
+
+def _centre_lane_pose(el, road, s: float, offset: float, forward: bool | None) -> Pose:
+    """A pose on OpenDRIVE's centre lane 0 (no width: the reference line, shifted by the road's
+    laneOffset): ``offset`` from it, heading along increasing s unless ``forward`` is False, as esmini
+    3.6 places it (measured); it then drives on in the lane it is in (none off the road)."""
+    inner = [road.lane_borders(s, lane)[0] for lane in (-1, 1) if lane in road.section(s).lanes]
+    if not inner:
+        raise KeyError(f"road {road.id} has no lanes at s = {s:g}")
+    t = inner[0] + offset
+    x, y, h = road.world(s, t)
+    drive_h = wrap_angle(oriented(el, h if forward is not False else h + math.pi))
+    lane = road.lane_at(s, t)
+    if lane is None:
+        return Pose(x, y, drive_h)
+    return Pose(
+        x, y, drive_h, LaneState(road.id, lane, s, t - road.lane_center_t(s, lane), *_relative_heading(drive_h, h))
+    )
 
 
 def _road_pose(el, road, s: float, t: float) -> Pose:
