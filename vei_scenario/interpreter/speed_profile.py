@@ -180,13 +180,6 @@ class SpeedProfile(SteppedLongitudinal):
             k += 1
         return k
 
-    def _line(self, k: int, t: float) -> float:
-        """Speed of segment ``k``'s straight line at ``t`` (the last segment: the last target)."""
-        if k >= len(self.corners) - 1:
-            return self.corners[-1][1]
-        (t0, v0), (t1, v1) = self.corners[k], self.corners[k + 1]
-        return v1 if t1 <= t0 else v0 + (v1 - v0) * (t - t0) / (t1 - t0)
-
     def _corner_end(self, k: int) -> float:
         return self.corners[k + 1][0] if k < len(self.corners) - 1 else math.inf
 
