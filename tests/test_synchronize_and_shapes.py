@@ -377,11 +377,26 @@ def test_a_distance_condition_follows_a_position_relative_to_a_moving_entity(tmp
     assert first_slow == pytest.approx(3.01, abs=1e-9)
 
 
+#: The constraints of esmini's speed-profile example: a following profile changes its acceleration at
+#: 4 m/s³ up and 3 m/s³ down, within 5 m/s² and 10 m/s².
+JERK_LIMITED = (
+    '<DynamicConstraints maxAcceleration="5" maxDeceleration="10" maxAccelerationRate="4" '
+    'maxDecelerationRate="3" maxSpeed="50"/>'
+)
+
+
 def _profile(mode: str, constraints: str = "") -> str:
     entries = "".join(f'<SpeedProfileEntry time="{t}" speed="{v}"/>' for t, v in ((0, 0), (4, 10), (4, 4), (2, 8)))
     return (
         f'<PrivateAction><LongitudinalAction><SpeedProfileAction followingMode="{mode}">{constraints}'
         f"{entries}</SpeedProfileAction></LongitudinalAction></PrivateAction>"
+    )
+
+
+def _following(tmp_path, stop_s: float) -> Path:
+    """B from a standstill on the JERK_LIMITED profile in follow mode, from t = 0."""
+    return _scenario(
+        tmp_path, _car("B"), _teleport("B", 0, 0, 0, 0.0), _event(_profile("follow", JERK_LIMITED)), stop_s=stop_s
     )
 
 
@@ -394,11 +409,7 @@ def test_a_speed_profile_in_position_mode_is_its_schedule(tmp_path):
 
 
 def test_a_following_speed_profile_keeps_its_jerk_limits_and_ends_at_the_last_speed(tmp_path):
-    dyn = (
-        '<DynamicConstraints maxAcceleration="5" maxDeceleration="10" maxAccelerationRate="4" '
-        'maxDecelerationRate="3" maxSpeed="50"/>'
-    )
-    path = _scenario(tmp_path, _car("B"), _teleport("B", 0, 0, 0, 0.0), _event(_profile("follow", dyn)), stop_s=14)
+    path = _following(tmp_path, stop_s=14)
     b = run_scenario(path).traces["B"]
     acc = np.diff(b.speed) / np.diff(b.t)
     jerk = np.diff(acc) / np.diff(b.t[1:])
@@ -416,11 +427,7 @@ def test_a_following_speed_profile_is_the_continuous_profile_at_any_step(tmp_pat
     0.02, 0.05 and 0.1 s give the same speeds at the times they share (the end value of a step's
     acceleration alone lagged half a step: 0.06 m/s at 0.05 s; a corner cut at the first step
     boundary after its moment, up to 0.09 m/s more)."""
-    dyn = (
-        '<DynamicConstraints maxAcceleration="5" maxDeceleration="10" maxAccelerationRate="4" '
-        'maxDecelerationRate="3" maxSpeed="50"/>'
-    )
-    path = _scenario(tmp_path, _car("B"), _teleport("B", 0, 0, 0, 0.0), _event(_profile("follow", dyn)), stop_s=12)
+    path = _following(tmp_path, stop_s=12)
     runs = {dt: run_scenario(path, {}, dt).traces["B"] for dt in (0.01, 0.02, 0.05, 0.1)}
     coarse = runs[0.1]
     for dt, b in runs.items():

@@ -145,23 +145,16 @@ def _centre_lane_pose(el, road, s: float, offset: float, forward: bool | None) -
     inner = [road.lane_borders(s, lane)[0] for lane in (-1, 1) if lane in road.section(s).lanes]
     if not inner:
         raise KeyError(f"road {road.id} has no lanes at s = {s:g}")
-    t = inner[0] + offset
-    x, y, h = road.world(s, t)
-    drive_h = wrap_angle(oriented(el, h if forward is not False else h + math.pi))
-    lane = road.lane_at(s, t)
-    if lane is None:
-        return Pose(x, y, drive_h)
-    return Pose(
-        x, y, drive_h, LaneState(road.id, lane, s, t - road.lane_center_t(s, lane), *_relative_heading(drive_h, h))
-    )
+    return _road_pose(el, road, s, inner[0] + offset, reverse=forward is False)
 
 
-def _road_pose(el, road, s: float, t: float) -> Pose:
+def _road_pose(el, road, s: float, t: float, reverse: bool = False) -> Pose:
     x, y, h = road.world(s, t)
     lane = road.lane_at(s, t)
     # along increasing s, whatever lane the point is in: the standard's reference for a road
-    # position's orientation, and esmini's heading for one without (measured on a left-hand lane)
-    pose_h = wrap_angle(oriented(el, h))
+    # position's orientation, and esmini's heading for one without (measured on a left-hand lane);
+    # ``reverse``: against it
+    pose_h = wrap_angle(oriented(el, h + math.pi if reverse else h))
     if lane is None:
         return Pose(x, y, pose_h)
     state = LaneState(road.id, lane, s, t - road.lane_center_t(s, lane), *_relative_heading(pose_h, h))
