@@ -101,12 +101,50 @@ def series_csv(result: RunResult, cfg: MetricConfig) -> str:
     return buf.getvalue()
 
 
+def typed_parameters(result: RunResult) -> dict[str, str | float | int | bool]:
+    """The run's parameters as their declared types (a double a number, a boolean true/false)."""
+    from vei_scenario.interpreter.document import typed_value
+
+    types = result.parameter_types
+    return {k: typed_value(types.get(k, "string"), v) for k, v in result.parameters.items()}
+
+
+def parameter_text(value) -> str:
+    """A typed parameter back as OpenSCENARIO text (``true``, ``2.2``), as ``--param`` takes it."""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    return str(value)
+
+
+def _sha256(path: Path) -> str:
+    import hashlib
+
+    return hashlib.sha256(path.read_bytes()).hexdigest()
+
+
+def provenance(result: RunResult) -> dict[str, str]:
+    """Which vei and which files made the run: the version and the sha256 of the scenario and of the
+    road file it played on, so a metrics.json can be matched to its inputs later."""
+    from vei_scenario import __version__
+
+    doc = {"vei_version": __version__}
+    scenario = Path(result.scenario)
+    if scenario.is_file():
+        doc["scenario_sha256"] = _sha256(scenario)
+    road = result.road_file
+    if road is not None and Path(road).is_file():
+        doc["road_file"] = Path(road).name
+        doc["road_sha256"] = _sha256(Path(road))
+    return doc
+
+
 def metrics_document(result: RunResult, cfg: MetricConfig) -> dict:
     """metrics.json: the ego against its threat, plus every contact between any two entities."""
     metrics = compute_metrics(PairSeries.from_run(result), cfg) if result.threat else {}
     doc = {
         "scenario": Path(result.scenario).name,
-        "parameters": result.parameters,
+        **provenance(result),
+        "parameters": typed_parameters(result),
         "dt_s": result.dt,
         "duration_s": round(float(result.t[-1]), 3),
         "end_reason": result.end_reason,
@@ -133,7 +171,7 @@ def _seconds(value, none: str) -> str:
 
 def summary_text(doc: dict) -> str:
     m = doc["metrics"]
-    params = ", ".join(f"{k}={v}" for k, v in doc["parameters"].items())
+    params = ", ".join(f"{k}={parameter_text(v)}" for k, v in doc["parameters"].items())
     lines = [f"{doc['scenario']} ({params}); {doc['duration_s']:.2f} s at dt {doc['dt_s']} s ({doc['end_reason']})"]
     if m:
         coll = f"COLLISION at {m['collision_time_s']} s" if m["collision"] else "no collision"

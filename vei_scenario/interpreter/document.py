@@ -60,6 +60,21 @@ def check_type(type_: str, value: str) -> str | None:
     return None
 
 
+def typed_value(type_: str, value: str) -> str | float | int | bool:
+    """A parameter's text as the JSON value of its declared type (double a number, the integer types
+    an integer, boolean true/false), so outputs a program reads keep the type the scenario declared;
+    string, dateTime and any text its type does not parse stay text."""
+    if check_type(type_, value) is not None:
+        return value
+    if type_ == "double":
+        return float(value)
+    if type_ in ("int", "integer", "unsignedInt", "unsignedShort"):
+        return int(value)
+    if type_ == "boolean":
+        return value == "true"
+    return value
+
+
 #: Largest magnitude of the OpenSCENARIO integer types (xsd:int, xsd:unsignedInt, xsd:unsignedShort).
 INT_LIMITS = {"int": 2**31, "integer": 2**31, "unsignedInt": 2**32 - 1, "unsignedShort": 2**16 - 1}
 

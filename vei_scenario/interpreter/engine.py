@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import copy
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
@@ -82,6 +82,8 @@ class RunResult:
     road_file: Path | None = None
     #: What the run played in its own way (Context.warn): file, line, reason, once each.
     warnings: tuple[str, ...] = ()
+    #: The declared type of each top-level parameter (double, boolean, string ...), for typed outputs.
+    parameter_types: dict[str, str] = field(default_factory=dict)
 
 
 def _act(ctx) -> None:
@@ -467,6 +469,7 @@ class Simulation:
             reason,
             self.doc.road_file,
             tuple(ctx.warnings),
+            dict(ctx.parameter_types),
         )
 
     def _collide(self, collisions: list) -> None:

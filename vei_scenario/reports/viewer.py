@@ -90,11 +90,15 @@ def view_run_dir(run_dir: str | Path, scenario: str | Path | None = None) -> Vie
     if not rows:
         raise VeiInputError(csv_path, "line 2", "no trajectory rows")
     boxes = {n: (e["category"], e["length_m"], e["width_m"], e["center_x_m"]) for n, e in doc["entities"].items()}
+    from vei_scenario.runner import parameter_text
+
+    # (metrics.json keeps the declared types: a run takes them back as OpenSCENARIO text)
+    texts = {k: parameter_text(v) for k, v in (doc.get("parameters") or {}).items()}
     road_file = None
     if scenario is not None:
         from vei_scenario.interpreter import load_scenario
 
-        road_file = load_scenario(scenario, doc.get("parameters")).road_file
+        road_file = load_scenario(scenario, texts).road_file
     traces = {}
     t = None
     for name, vals in rows.items():
@@ -111,7 +115,7 @@ def view_run_dir(run_dir: str | Path, scenario: str | Path | None = None) -> Vie
         t,
         traces,
         collisions,
-        doc.get("parameters", {}),
+        texts,
         doc.get("ego") or next(iter(traces)),
         doc.get("threat"),
         doc.get("end_reason", ""),
