@@ -32,3 +32,70 @@ def test_metrics_json_keeps_declared_types_version_and_file_hashes(case_xosc, tm
     road = case_xosc.with_suffix(".xodr")
     assert doc["road_file"] == road.name
     assert doc["road_sha256"] == hashlib.sha256(road.read_bytes()).hexdigest()
+
+
+@pytest.fixture(scope="module")
+def grid_sweep(case_xosc, tmp_path_factory):
+    """The README's sweep: TimeShift every 0.1 s, both SFM riders, planner on and off."""
+    from vei_scenario.sweep import run_sweep
+
+    out = tmp_path_factory.mktemp("grid")
+    vary = ["TimeShift=-1:5:0.1", "RiderType=normal,aggressive", "CapEnabled=true,false"]
+    rep = run_sweep(case_xosc, out, vary, quiet=True)
+    return rep, (out / "report.html").read_text(encoding="utf-8")
+
+
+def _text(page: str) -> str:
+    import html
+    import re
+
+    page = re.sub(r"<script.*?</script>", " ", page, flags=re.S)
+    return html.unescape(re.sub(r"\s+", " ", re.sub(r"<[^>]+>", " ", page)))
+
+
+def test_a_grid_without_planner_failures_does_not_claim_there_are_none(grid_sweep, case_xosc):
+    """The planner's failure windows (0.03-0.08 s) lie between the 0.1 s grid points: the report says
+    what the grid is and where a finer search could find them, with the command to run."""
+    rep, page = grid_sweep
+    on = [r for r in rep.rows if r["parameters"]["CapEnabled"] == "true"]
+    assert on and not any(r["metrics"]["collision"] for r in on)  # (the grid does step over them)
+    text = _text(page)
+    assert "avoided every collision" not in text
+    assert "TimeShift (s): 61 values from -1 to 5, step 0.1" in text
+    assert "narrower than the grid step" in text
+    assert f"vei risk {case_xosc} --target collision --window=-1:5 --vary RiderType=normal,aggressive" in text
+    assert (
+        f"vei falsify {case_xosc} --bounds TimeShift=-1:5 --values RiderType=normal,aggressive --param CapEnabled=true"
+        in text
+    )
+
+
+def test_a_close_pass_with_the_planner_on_is_flagged(grid_sweep):
+    """TimeShift 2.9 with the aggressive rider passes at 0.18 m with the planner on: a near miss of the
+    system under test, listed with its gap and the command that replays it."""
+    from vei_scenario.metrics import MetricConfig
+
+    rep, page = grid_sweep
+    text = _text(page)
+    close = [
+        r
+        for r in rep.rows
+        if r["parameters"]["CapEnabled"] == "true" and r["metrics"]["min_gap_m"] < MetricConfig().close_pass_m
+    ]
+    assert close, "the grid has a pass closer than the near-miss gap with the planner on"
+    assert "Near misses with the planner on" in text
+    worst = min(close, key=lambda r: r["metrics"]["min_gap_m"])
+    assert f"{worst['metrics']['min_gap_m']}" in text
+    assert f"--param TimeShift={worst['parameters']['TimeShift']} --param RiderType=aggressive" in text
+
+
+def test_the_report_states_a_grid_with_nothing_nearby_honestly(case_xosc, tmp_path):
+    """Far from the conflict nothing collides and nothing comes close: the report still says that a
+    grid shows only its points, without pointing at a search it has no reason for."""
+    from vei_scenario.sweep import run_sweep
+
+    run_sweep(case_xosc, tmp_path, ["TimeShift=-6:-5:0.5", "CapEnabled=true,false"], quiet=True)
+    text = _text((tmp_path / "report.html").read_text(encoding="utf-8"))
+    assert "avoided every collision" not in text
+    assert "TimeShift (s): 3 values from -6 to -5, step 0.5" in text
+    assert "No collision with the planner on at any of the 3 grid points (TimeShift step 0.5 s)" in text
