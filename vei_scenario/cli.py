@@ -88,6 +88,7 @@ def _cmd_compile(args: argparse.Namespace) -> int:
         threat=args.threat,
         variants_dir=Path(args.variants) if args.variants else None,
         model_parameters=args.model_parameters,
+        stochastic=args.stochastic,
         frame_rate_hz=args.frame_rate,
         time_unit=args.time_unit,
     )
@@ -345,7 +346,7 @@ def _cmd_falsify(args: argparse.Namespace) -> int:
 
 def _cmd_probability(args: argparse.Namespace) -> int:
     from vei_scenario.atomic_io import json_text, write_bytes_atomic
-    from vei_scenario.probability import estimate_probability
+    from vei_scenario.probability import estimate_probability, random_seed
     from vei_scenario.runner import parse_param_overrides
 
     estimators = ("monte-carlo", "importance-sampling") if args.estimator == "both" else (args.estimator,)
@@ -353,6 +354,15 @@ def _cmd_probability(args: argparse.Namespace) -> int:
         args.scenario, args.dist, args.target, estimators, args.runs, parse_param_overrides(args.param),
         args.band, args.seed, args.dt, args.workers,
     )  # fmt: skip
+    if results:
+        how = (
+            "--seed"
+            if args.seed is not None
+            else "the distribution's randomSeed"
+            if random_seed(args.dist) is not None
+            else "no --seed, no randomSeed in the file"
+        )
+        print(f"sampling with seed {results[0].seed} ({how})")
     for e in results:
         extra = f", {e.levels} level(s)" if e.estimator == "importance-sampling" else ""
         print(
@@ -367,7 +377,7 @@ def _cmd_probability(args: argparse.Namespace) -> int:
               f"({needed / imp.runs:.1f}x the runs importance sampling took)")  # fmt: skip
     if args.output:
         doc = {"scenario": str(args.scenario), "distribution": str(args.dist), "target": args.target,
-               "fixed": parse_param_overrides(args.param), "seed": args.seed,
+               "fixed": parse_param_overrides(args.param), "seed": results[0].seed if results else args.seed,
                "estimates": [e.as_dict() for e in results]}  # fmt: skip
         write_bytes_atomic(Path(args.output), (json_text(doc, indent=2) + "\n").encode())
         print(f"wrote {args.output}")
@@ -443,6 +453,13 @@ def build_parser() -> argparse.ArgumentParser:
         action="store_true",
         help="also declare the rider's and the planner's model parameters (RiderDesiredSpeed, RiderRepulsion, "
         "PlannerTimeHeadway, PlannerMaxDecel, PlannerStandstillGap) so that sweeps and vei falsify vary them",
+    )
+    c.add_argument(
+        "--stochastic",
+        action="store_true",
+        help="also write STEM.stochastic.xosc, a stochastic ParameterValueDistribution for vei probability: "
+        "TimeShift normal around ConflictTimeShift (standard deviation half the collision interval), the rider "
+        "type uniform",
     )
     c.add_argument("--frame-rate", type=FRAME_RATE, metavar="HZ", help=FRAME_RATE_HELP)
     c.add_argument("--time-unit", choices=TIME_UNITS, help=TIME_UNIT_HELP)
@@ -606,9 +623,15 @@ def build_parser() -> argparse.ArgumentParser:
     fz.add_argument("--dist", help="take the box from a ParameterValueDistribution (ranges and value sets)")
     fz.add_argument("--param", action="append", default=[], metavar="NAME=VALUE", help="fix a parameter")
     fz.add_argument("--target", default="collision", help="collision (default) or METRIC<VALUE, e.g. min_ttc_s<1.0")
-    fz.add_argument("--slices", type=_number(2, 200, integer=True), default=7, help="slices per other range")
-    fz.add_argument("--tol", type=_number(1e-5, 10), default=0.005, help="edge tolerance on the primary axis")
-    fz.add_argument("--seed", type=SEED, default=0, help="seed of the Sobol slices (two or more other ranges)")
+    fz.add_argument(
+        "--slices", type=_number(2, 200, integer=True), default=7, help="slices per other range (default 7)"
+    )
+    fz.add_argument(
+        "--tol", type=_number(1e-5, 10), default=0.005, help="edge tolerance on the primary axis (default 0.005)"
+    )
+    fz.add_argument(
+        "--seed", type=SEED, default=0, help="seed of the Sobol slices (two or more other ranges; default 0)"
+    )
     fz.add_argument("--dt", type=DT, default=0.01, help="fixed step in s (default 0.01)")
     fz.add_argument("--workers", type=WORKERS, help="worker threads or processes (default: all cores)")
     fz.add_argument("-o", "--output", help="directory for falsify.json and the regions' worst scenarios")
@@ -619,7 +642,7 @@ def build_parser() -> argparse.ArgumentParser:
         help="P(collision) or P(near miss) under a stochastic distribution: Monte Carlo and importance sampling",
         description="Estimate how likely the target is when the parameters follow the stochastic "
         "ParameterValueDistribution --dist (others fixed by --param or their defaults). monte-carlo: the share "
-        "of failing runs among draws from the distribution, Wilson's 95 %% interval. importance-sampling: "
+        "of failing runs among draws from the distribution, Wilson's 95 % interval. importance-sampling: "
         "levels learn where failures are (kernels around the worst runs), then each failure of a fresh sample "
         "is weighted by nominal / proposal density; the interval from the weights' standard error. Both "
         "report their runs; the second needs far fewer for the same width when failures are rare.",
@@ -633,10 +656,12 @@ def build_parser() -> argparse.ArgumentParser:
         default="both",
         help="which estimate(s) to make (default both, with how many Monte Carlo runs the same width would take)",
     )
-    pr.add_argument("--runs", type=_number(100, 10_000_000, integer=True), default=20000, help="runs per estimator")
+    pr.add_argument(
+        "--runs", type=_number(100, 10_000_000, integer=True), default=20000, help="runs per estimator (default 20000)"
+    )
     pr.add_argument("--param", action="append", default=[], metavar="NAME=VALUE", help="fix a parameter")
     pr.add_argument("--band", type=_pair, default=(0.5, 1.5), help="near-miss band of the minimum TTC, s")
-    pr.add_argument("--seed", type=SEED, default=0, help="seed of the sampling (default 0)")
+    pr.add_argument("--seed", type=SEED, help="seed of the sampling (default: the distribution's randomSeed, else 0)")
     pr.add_argument("--dt", type=DT, default=0.01, help="fixed step in s (default 0.01)")
     pr.add_argument("--workers", type=WORKERS, help="worker threads or processes (default: all cores)")
     pr.add_argument("-o", "--output", help="write the estimates as JSON here")
