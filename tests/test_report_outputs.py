@@ -99,3 +99,32 @@ def test_the_report_states_a_grid_with_nothing_nearby_honestly(case_xosc, tmp_pa
     assert "avoided every collision" not in text
     assert "TimeShift (s): 3 values from -6 to -5, step 0.5" in text
     assert "No collision with the planner on at any of the 3 grid points (TimeShift step 0.5 s)" in text
+
+
+def test_cosim_csv_has_units_and_the_precision_of_trajectories_csv(case_xosc, tmp_path):
+    """Same columns as trajectories.csv: the unit in each name, times to the millisecond, values to six
+    decimals, no negative zeros; the values are those vei run writes."""
+    import csv
+    import re
+
+    from vei_scenario.cli import main
+
+    params = ["--param", "RiderType=aggressive", "--param", "CapEnabled=true"]
+    out = tmp_path / "cosim.csv"
+    assert main(["fmu", "cosim", str(case_xosc), *params, "-o", str(out)]) == 0
+    rows = list(csv.reader(out.read_text().splitlines()))
+    quantities = ["x_m", "y_m", "heading_rad", "speed_mps", "acceleration_mps2"]
+    assert rows[0] == [
+        "time_s",
+        *(f"ego.{q}" for q in quantities),
+        *(f"sfm.{q}" for q in quantities),
+        "cap.a_cmd_mps2",
+    ]
+    assert all(re.fullmatch(r"\d+\.\d{3}", r[0]) for r in rows[1:])
+    assert all(re.fullmatch(r"-?\d+\.\d{6}", v) and v != "-0.000000" for r in rows[1:] for v in r[1:])
+    run = tmp_path / "run"
+    assert main(["run", str(case_xosc), *params, "-o", str(run), "--no-plots"]) == 0
+    traj = [r for r in csv.DictReader((run / "trajectories.csv").read_text().splitlines()) if r["entity"] == "Ego"]
+    for k in (0, 500, 1500):
+        assert rows[k + 1][0] == traj[k]["time_s"]
+        assert rows[k + 1][1:5] == [traj[k][q] for q in quantities[:4]]
