@@ -8,6 +8,7 @@ import hashlib
 import json
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 import vei_scenario
@@ -128,3 +129,84 @@ def test_cosim_csv_has_units_and_the_precision_of_trajectories_csv(case_xosc, tm
     for k in (0, 500, 1500):
         assert rows[k + 1][0] == traj[k]["time_s"]
         assert rows[k + 1][1:5] == [traj[k][q] for q in quantities[:4]]
+
+
+def _marked(ax) -> list:
+    """The lines of an axes that carry a marker."""
+    return [ln for ln in ax.lines if ln.get_marker() not in (None, "None", "", " ")]
+
+
+@pytest.fixture(scope="module")
+def planner_runs(case_xosc):
+    """Study configurations 4 and 5 at the conflict shift: the ego brakes alike for both riders."""
+    from vei_scenario.interpreter import load_scenario, run_scenario
+
+    shift = load_scenario(case_xosc).parameters["ConflictTimeShift"]
+    return [
+        (
+            f"{n} {rider} SFM + CAP",
+            run_scenario(case_xosc, {"TimeShift": shift, "RiderType": rider, "CapEnabled": "true"}),
+        )
+        for n, rider in ((4, "normal"), (5, "aggressive"))
+    ]
+
+
+def test_the_single_run_gap_ttc_plot_draws_no_unexplained_marker(planner_runs):
+    """The square at t = 0 marked whose zone strip it was: with one run there is one strip, nothing to tell."""
+    from vei_scenario.metrics import MetricConfig
+    from vei_scenario.reports.run_plots import gap_ttc_figure
+
+    fig = gap_ttc_figure(planner_runs[:1], MetricConfig())
+    gap_ax, ttc_ax = fig.axes[:2]
+    assert [ln.get_marker() for ln in _marked(ttc_ax)] == ["."]  # the TTC's dot per step, nothing else
+    several = gap_ttc_figure(planner_runs, MetricConfig())  # with several, each strip is marked and explained
+    assert len({ln.get_marker() for ln in _marked(several.axes[1])}) >= 2
+    assert "its marker at the left" in several.axes[1].get_title()
+
+
+def test_speeds_plot_shows_the_ego_acceleration_and_the_planner_mode(planner_runs):
+    from vei_scenario.reports.run_plots import speeds_figure
+
+    label, r = planner_runs[0]
+    speed_ax, acc_ax, mode_ax = speeds_figure([(label, r)]).axes
+    ego = r.traces[r.ego]
+    assert "acceleration" in acc_ax.get_ylabel()
+    assert any(len(ln.get_ydata()) == ego.accel.size and (ln.get_ydata() == ego.accel).all() for ln in acc_ax.lines)
+    states = [t.get_text() for t in mode_ax.get_yticklabels()]
+    assert {"cap_cruise", "cap_brake"} <= set(states)
+    (mode_line,) = mode_ax.lines
+    brake = np.asarray(mode_line.get_ydata()) == states.index("cap_brake")
+    assert brake.any() and (np.array(ego.status)[brake] == "cap_brake").all()
+
+
+def test_coinciding_runs_stay_visible_and_the_legend_says_so(planner_runs):
+    """Configuration 5's ego speed lies on configuration 4's: each has its own marker, staggered, and
+    the legend names the one it lies on."""
+    from vei_scenario.reports.run_plots import speeds_figure
+
+    speed_ax = speeds_figure(planner_runs).axes[0]
+    ego_lines = [ln for ln in speed_ax.lines if ln.get_label().split(" (")[0].endswith(": Ego")]
+    assert len(ego_lines) == 2
+    four, five = ego_lines
+    assert four.get_marker() != five.get_marker() and four.get_markevery() != five.get_markevery()
+    assert four.get_linewidth() > five.get_linewidth()  # the one below is wider: it shows around the other
+    labels = [t.get_text() for t in speed_ax.figure.legends[0].get_texts()]
+    assert any(t.startswith("5 aggressive SFM + CAP: Ego (coincides with 4 normal SFM + CAP: Ego") for t in labels)
+
+
+def test_sweep_plot_groups_with_equal_values_do_not_hide_each_other(grid_sweep):
+    """Aggressive and normal rider with the planner on score alike: distinct markers and dashes, and
+    the legend says where they are equal."""
+    from vei_scenario.reports.sweep_plots import series_figure
+    from vei_scenario.sweep.report_html import plot_inputs
+
+    rep, _ = grid_sweep
+    x_param, grouped, xlim = plot_inputs(rep.rows, rep.varied)
+    fig, _ = series_figure(grouped, x_param, "safety_index", "safety index", xlim)
+    ax = fig.axes[0]
+    lines = {ln.get_label(): ln for ln in ax.lines if not ln.get_label().startswith("_")}
+    assert len(lines) == 4
+    assert len({ln.get_marker() for ln in lines.values()}) == 4
+    assert len({str(ln.get_linestyle()) for ln in lines.values()}) == 4
+    on = [lab for lab in lines if "CapEnabled=true" in lab]
+    assert any("coincides with" in lab or "equal to" in lab for lab in on), on
