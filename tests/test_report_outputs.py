@@ -210,3 +210,21 @@ def test_sweep_plot_groups_with_equal_values_do_not_hide_each_other(grid_sweep):
     assert len({str(ln.get_linestyle()) for ln in lines.values()}) == 4
     on = [lab for lab in lines if "CapEnabled=true" in lab]
     assert any("coincides with" in lab or "equal to" in lab for lab in on), on
+
+
+def test_a_sweep_without_the_planner_on_says_it_does_not_test_it(case_xosc, tmp_path):
+    from vei_scenario.sweep import run_sweep
+
+    run_sweep(case_xosc, tmp_path, ["TimeShift=1:3:0.5", "CapEnabled=false"], quiet=True)
+    text = _text((tmp_path / "report.html").read_text(encoding="utf-8"))
+    assert "No variant ran with the planner on (CapEnabled=true)" in text
+    assert "No collision with the planner on" not in text and "Near misses with the planner on" not in text
+
+
+def test_a_stochastic_sample_reports_its_largest_gap_not_a_step(case_xosc, tmp_path):
+    """Sampled values are not a grid: what a failure window can hide in is the largest gap."""
+    from vei_scenario.sweep.report_html import _grid
+
+    rows = [{"parameters": {"TimeShift": v}} for v in ("0.1", "0.13", "0.5", "0.52")]
+    text = _text("".join(_grid(rows, ["TimeShift"])))
+    assert "TimeShift (s): 4 values from 0.1 to 0.52, unevenly spaced, largest gap 0.37" in text

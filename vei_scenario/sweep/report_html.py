@@ -267,7 +267,8 @@ def _configurations(ok: list[dict], varied: list[str], meta: dict) -> list[str]:
                 out.append(f"<p class='note'>{len(failures) - 200} more in catalog.csv.</p>")
         else:
             out += _no_failures_seen(ok, varied, meta)
-        out += _near_misses(ok, varied, meta)
+        if any(planner_on(r) for r in ok):
+            out += _near_misses(ok, varied, meta)
     return out
 
 
@@ -286,6 +287,16 @@ def grid_step(values: list[str]) -> tuple[float, float] | None:
     return (float(np.round(d.min(), 9)), float(np.round(d.max(), 9))) if d.size else None
 
 
+def _even(step: tuple[float, float]) -> bool:
+    return step[1] - step[0] <= 1e-9 * max(1.0, step[1])
+
+
+def _spacing(step: tuple[float, float]) -> str:
+    """A grid's spacing as a reader needs it: its step, or for uneven values (a stochastic sample) the
+    largest gap, which is what a failure window could hide in."""
+    return f"step {step[0]:g}" if _even(step) else f"unevenly spaced, largest gap {step[1]:.3g}"
+
+
 def _grid(rows: list[dict], varied: list[str]) -> list[str]:
     """Each swept parameter's grid: its values, or for a number its range and step."""
     if not varied:
@@ -295,15 +306,11 @@ def _grid(rows: list[dict], varied: list[str]) -> list[str]:
         values = grid_values(rows, p)
         step = grid_step(values)
         if step is None:
-            items.append(f"{param_label(p)}: {', '.join(values)}")
+            shown = ", ".join(values[:12]) + (f" and {len(values) - 12} more" if len(values) > 12 else "")
+            items.append(f"{param_label(p)}: {shown}")
             continue
         x = [float(v) for v in values]
-        steps = (
-            f"step {step[0]:g}"
-            if step[1] - step[0] <= 1e-9 * max(1.0, step[1])
-            else f"steps {step[0]:g} to {step[1]:g}"
-        )
-        items.append(f"{param_label(p)}: {len(set(x))} values from {min(x):g} to {max(x):g}, {steps}")
+        items.append(f"{param_label(p)}: {len(set(x))} values from {min(x):g} to {max(x):g}, {_spacing(step)}")
     return [
         "<p class='note'>Grid: ",
         "; ".join(html.escape(i) for i in items),
@@ -340,10 +347,12 @@ def _no_failures_seen(ok: list[dict], varied: list[str], meta: dict) -> list[str
     where the grid shows signs of them (collisions nearby with the planner off, near misses with it
     on), the report says the grid cannot rule them out and gives the commands that search between."""
     on = [r for r in ok if planner_on(r)]
+    if not on:
+        return ["<p>No variant ran with the planner on (CapEnabled=true): this sweep does not test it.</p>"]
     steps = [
-        f"{p} step {s[0]:g}{' ' + UNITS[p] if p in UNITS else ''}"
+        f"{p} {_spacing(s)}{' ' + UNITS[p] if p in UNITS else ''}"
         for p in varied
-        if p != "CapEnabled" and (s := grid_step(grid_values(ok, p)))
+        if p != "CapEnabled" and (s := grid_step(grid_values(on, p)))
     ]
     where = f" ({', '.join(steps)})" if steps else ""
     out = [f"<p>No collision with the planner on at any of the {len(on)} grid points{html.escape(where)}.</p>"]
