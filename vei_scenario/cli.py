@@ -536,15 +536,21 @@ def build_parser() -> argparse.ArgumentParser:
         formatter_class=argparse.RawDescriptionHelpFormatter,
         description="Run every variant (the cartesian product of --vary, or a --dist file) and write:\n"
         "  catalog.csv / catalog.json  one row per variant: its parameters and every metric of vei run\n"
-        "  report.html  first a table per configuration (the varied parameters but TimeShift): variants,\n"
-        "      collisions, whether the planner was on (CapEnabled), the lowest safety index S, the longest\n"
-        "      time in the TTC alert zone and the lowest minimum TTC; configurations that collide with the\n"
-        "      planner on come first, and every such collision (a failure of the system under test) is\n"
-        "      listed with the command that reproduces it. Then plots over TimeShift: S (share of the run\n"
-        "      outside the alert and collision zones; 0 on contact), the minimum 2-D TTC (time until the\n"
-        "      boxes touch at constant velocities) and the minimum gap between the boxes, collision\n"
-        "      regions shaded; then the most severe collisions (by impact speed, the relative speed at\n"
-        "      first contact) and the closest passes (by minimum gap, then TTC).",
+        "  report.html  first the grid (each swept parameter's values and step: a sweep runs its points,\n"
+        "      nothing between them); then a table per configuration (the varied parameters but\n"
+        "      TimeShift): variants, collisions, whether the planner was on (CapEnabled), the lowest\n"
+        "      safety index S, the longest time in the TTC alert zone and the lowest minimum TTC;\n"
+        "      configurations that collide with the planner on come first, and every such collision (a\n"
+        "      failure of the system under test) is listed with the command that reproduces it. With\n"
+        "      none, where the grid shows signs of narrower failure windows (collisions with the planner\n"
+        "      off, near misses with it on) it says so and gives the vei risk / vei falsify commands that\n"
+        "      search between the points. Near misses with the planner on (no contact; minimum gap under\n"
+        "      0.5 m or minimum TTC at most 1.5 s) are listed, the closest first. Then plots over\n"
+        "      TimeShift: S (share of the run outside the alert and collision zones; 0 on contact), the\n"
+        "      minimum 2-D TTC (time until the boxes touch at constant velocities) and the minimum gap\n"
+        "      between the boxes, collision regions shaded, series with equal values in their own marker\n"
+        "      and dash with a legend note; then the most severe collisions (by impact speed, the relative\n"
+        "      speed at first contact) and the closest passes (by minimum gap, then TTC).",
     )
     sw.add_argument(
         "scenario", help="OpenSCENARIO file (.xosc), or a ParameterValueDistribution alone (its ScenarioFile swept)"
