@@ -10,10 +10,10 @@ import pytest
 from roads import straight_500m
 from xosc_parts import CAR, step_speed
 
-from conftest import ROOT
+from conftest import SHARED
 from vei_scenario.interpreter import run_scenario
 
-XODR = ROOT.parent / "shared" / "esmini" / "xodr"
+XODR = SHARED / "esmini" / "xodr"
 
 
 def _road(name: str):

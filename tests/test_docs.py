@@ -24,10 +24,9 @@ from pathlib import Path
 
 import pytest
 
-from conftest import ROOT
+from conftest import ROOT, SHARED
 
 DOCS = ROOT / "docs"
-SHARED = ROOT.parent / "shared"
 PAGES = sorted(p.relative_to(ROOT).as_posix() for p in [ROOT / "README.md", *DOCS.rglob("*.md")])
 CI_MARKERS = ("<!-- main-command -->", "<!-- test-command -->")
 HISTORY = re.compile(r"\bissue #?\d+|#\d{2}\b|\bwas [0-9.]+ ?(m|s|ms)\b|\bnow \d|→ [0-9.]+ ?(m|s|ms)\b", re.IGNORECASE)

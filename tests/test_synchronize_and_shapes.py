@@ -12,7 +12,7 @@ import pytest
 from roads import straight_500m
 from xosc_parts import ABSOLUTE_TIMING, follow_trajectory
 
-from conftest import ROOT
+from conftest import NO_SHARED, ROOT, SHARED
 from vei_scenario.cli import main
 from vei_scenario.interpreter import run_scenario
 
@@ -346,7 +346,7 @@ def test_a_lane_change_over_a_rate_peaks_at_it(tmp_path, shape, peak):
     assert vy.max() == pytest.approx(1.0, abs=0.02 if shape != "linear" else 1e-6)
     from vei_scenario.conformance.esmini import cross_check, find_esmini
 
-    esmini = find_esmini(ROOT.parent / "shared" / "esmini" / "bin" / "esmini")
+    esmini = find_esmini(SHARED / "esmini" / "bin" / "esmini")
     if esmini is not None:
         assert cross_check(esmini, path).max_deviation_m < 0.05
 
@@ -670,7 +670,7 @@ def test_the_ncap_turning_case_brings_the_pedestrian_to_its_target_with_the_ego(
 
     v = ROOT.parent / "shared/osc-ncap/OpenSCENARIO/NCAP/AEB_VRU_2023/Variations/NCAP_AEB_VRU_CPTAfo-50_10kph_2023.xosc"
     if not v.is_file():
-        pytest.skip("the Euro NCAP pack is not beside the checkout")
+        pytest.skip(f"the Euro NCAP pack not found ({NO_SHARED})")
     base, values = values_of(v)
     doc = load_scenario(base, values)
     sync = next(doc.root.iter("SynchronizeAction"))
