@@ -109,13 +109,6 @@ def typed_parameters(result: RunResult) -> dict[str, str | float | int | bool]:
     return {k: typed_value(types.get(k, "string"), v) for k, v in result.parameters.items()}
 
 
-def parameter_text(value) -> str:
-    """A typed parameter back as OpenSCENARIO text (``true``, ``2.2``), as ``--param`` takes it."""
-    if isinstance(value, bool):
-        return "true" if value else "false"
-    return str(value)
-
-
 def _sha256(path: Path) -> str:
     import hashlib
 
@@ -170,6 +163,8 @@ def _seconds(value, none: str) -> str:
 
 
 def summary_text(doc: dict) -> str:
+    from vei_scenario.interpreter.document import parameter_text
+
     m = doc["metrics"]
     params = ", ".join(f"{k}={parameter_text(v)}" for k, v in doc["parameters"].items())
     lines = [f"{doc['scenario']} ({params}); {doc['duration_s']:.2f} s at dt {doc['dt_s']} s ({doc['end_reason']})"]

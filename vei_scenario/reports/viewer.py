@@ -90,7 +90,7 @@ def view_run_dir(run_dir: str | Path, scenario: str | Path | None = None) -> Vie
     if not rows:
         raise VeiInputError(csv_path, "line 2", "no trajectory rows")
     boxes = {n: (e["category"], e["length_m"], e["width_m"], e["center_x_m"]) for n, e in doc["entities"].items()}
-    from vei_scenario.runner import parameter_text
+    from vei_scenario.interpreter.document import parameter_text
 
     # (metrics.json keeps the declared types: a run takes them back as OpenSCENARIO text)
     texts = {k: parameter_text(v) for k, v in (doc.get("parameters") or {}).items()}
