@@ -228,3 +228,14 @@ def test_a_stochastic_sample_reports_its_largest_gap_not_a_step(case_xosc, tmp_p
     rows = [{"parameters": {"TimeShift": v}} for v in ("0.1", "0.13", "0.5", "0.52")]
     text = _text("".join(_grid(rows, ["TimeShift"])))
     assert "TimeShift (s): 4 values from 0.1 to 0.52, unevenly spaced, largest gap 0.37" in text
+
+
+def test_interactive_plot_groups_have_their_own_symbol_and_dash(grid_sweep):
+    from vei_scenario.reports.interactive import DASHES, SYMBOLS
+    from vei_scenario.sweep.report_html import plot_inputs
+
+    rep, page = grid_sweep
+    _, grouped, _ = plot_inputs(rep.rows, rep.varied)
+    assert len(grouped) == 4
+    for k in range(4):
+        assert f'"symbol":"{SYMBOLS[k]}"' in page and f'"dash":"{DASHES[k]}"' in page
