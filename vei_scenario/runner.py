@@ -178,6 +178,21 @@ def run_files(result: RunResult, doc: dict, cfg: MetricConfig, plots: bool = Tru
     return files
 
 
+def _check_positions(result: RunResult) -> None:
+    """A position that is not a number is a defect vei could not play: one line naming the entity and
+    when, rather than files of NaN (or a plotting error about axis limits)."""
+    import numpy as np
+
+    for name, tr in result.traces.items():
+        for field in ("x", "y"):
+            bad = ~np.isfinite(np.asarray(getattr(tr, field), dtype=float))
+            if bad.any():
+                t = float(np.asarray(result.t)[int(np.argmax(bad))])
+                raise VeiInputError(
+                    result.scenario, name, f"its position is not a number from t = {t:g} s: vei cannot play it"
+                )
+
+
 def run_to(
     scenario: str | Path,
     out_dir: str | Path | None,
@@ -200,6 +215,7 @@ def run_to(
             raise VeiInputError(osi, "--osi", f"unknown trace format {Path(osi).suffix!r} (use .mcap or .osi)")
     cfg = cfg or MetricConfig()
     result = run_scenario(scenario, parameters, dt, coupling=coupling)
+    _check_positions(result)
     doc = metrics_document(result, cfg)
     written: list[Path] = []
     files = OutputSet()

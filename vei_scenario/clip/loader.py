@@ -70,7 +70,12 @@ def read_json(path: Path) -> Any:
             path, "", "nested too deeply to read (more than ~900 levels of arrays or objects)"
         ) from None
     except json.JSONDecodeError as exc:
-        raise VeiInputError(path, f"line {exc.lineno} column {exc.colno}", f"invalid JSON: {exc.msg}") from None
+        hint = ""
+        if text.lstrip("\ufeff \t\r\n").startswith("<"):  # a scenario or road network given for a clip
+            hint = f" (the file is XML, not a JSON clip: if it is an OpenSCENARIO scenario, play it: vei run {path})"
+        raise VeiInputError(
+            path, f"line {exc.lineno} column {exc.colno}", f"invalid JSON: {exc.msg}{hint}"
+        ) from None
     except _NonJsonConstant as exc:  # NaN / Infinity literals, which Python accepts and JSON does not
         m = re.search(rf"(?<![\w\"]){re.escape(exc.name)}(?![\w\"])", text)
         where = ""

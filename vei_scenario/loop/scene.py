@@ -12,6 +12,7 @@ plays); a scenario of another structure raises :class:`NotALoop` and callers use
 from __future__ import annotations
 
 import copy
+import math
 from dataclasses import dataclass, fields
 from pathlib import Path
 
@@ -203,7 +204,8 @@ class LoopScene:
         try:
             if self.model_varies:
                 self.model_params(values)  # (a value the models refuse: the interpreter says which)
-            return self._resolved(self.rider_raw, scope) in RIDER_TYPES
+            cruise = float(self._resolved(self.cruise_raw, scope))  # (the planner refuses one below 0)
+            return self._resolved(self.rider_raw, scope) in RIDER_TYPES and math.isfinite(cruise) and cruise >= 0
         except Exception:  # noqa: BLE001 - anything unresolvable is for the interpreter to report
             return False
 
