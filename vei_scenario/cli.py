@@ -153,6 +153,7 @@ def _cmd_run(args: argparse.Namespace) -> int:
         coupling=args.coupling,
         osi=args.osi,
         cfg=MetricConfig(zone_ttc=args.zone_ttc),
+        progress=True,
     )
     for w in report.metrics.get("warnings", ()):
         print(f"vei: warning: {w}", file=sys.stderr)

@@ -202,9 +202,11 @@ def run_to(
     cfg: MetricConfig | None = None,
     coupling: str = "sequential",
     osi: str | Path | None = None,
+    progress: bool = False,
 ) -> RunReport:
     """Run ``scenario`` and, with ``out_dir``, write its files there; with ``osi``, also an ASAM OSI
-    ground-truth trace (``.mcap`` or ``.osi``) at that path. All or nothing."""
+    ground-truth trace (``.mcap`` or ``.osi``) at that path. All or nothing. With ``progress``, a run
+    that may be long says so on stderr at its start, and shows a progress bar on a terminal."""
     from vei_scenario.checks import check_dt
 
     check_dt(dt)
@@ -214,7 +216,16 @@ def run_to(
         if Path(osi).suffix.lower() not in FORMATS:
             raise VeiInputError(osi, "--osi", f"unknown trace format {Path(osi).suffix!r} (use .mcap or .osi)")
     cfg = cfg or MetricConfig()
-    result = run_scenario(scenario, parameters, dt, coupling=coupling)
+    if progress:
+        from vei_scenario.reports.run_progress import RunProgress
+
+        shown = RunProgress(Path(scenario).name)
+        try:
+            result = run_scenario(scenario, parameters, dt, coupling=coupling, on_start=shown.on_start)
+        finally:
+            shown.close()
+    else:
+        result = run_scenario(scenario, parameters, dt, coupling=coupling)
     _check_positions(result)
     doc = metrics_document(result, cfg)
     written: list[Path] = []

@@ -89,6 +89,13 @@ def build_model(
     others = tuple(_road_user(tid, track.category, track.trajectory) for tid, track in sorted(rec.others.items()))
     ego_box = (ego.length_m, ego.width_m)
     driven = ego_at_constant_speed(rec.ego, cruise)
+    if driven.t.size < 2 or cruise < MIN_CRUISE_MPS:  # (no path to time a conflict on, no speed to drive it)
+        raise VeiInputError(
+            clip.path,
+            "ego.samples",
+            f"the ego does not drive in this clip (median speed {cruise:.2f} m/s, track "
+            f"{float(rec.ego.arc_length()[-1]):.1f} m long): vei reconstructs encounters with a moving vehicle",
+        )
     conflicts = {
         s.name: analyse_conflict(s.name, driven, s.trajectory, ego_box, (s.length_m, s.width_m)) for s in scooters
     }
@@ -127,6 +134,9 @@ def _road_user(name: str, category: str, trajectory: Trajectory) -> EntitySpec:
         name, cls.category, cls.length_m, cls.width_m, cls.height_m, trajectory, cls.kind, object_type, cls.mass_kg
     )
 
+
+#: Below this median speed (m/s) the ego is taken to stand for the whole clip.
+MIN_CRUISE_MPS = 0.1
 
 #: How far the ego's path runs on beyond what driving it at the cruise speed needs (m).
 EGO_RUN_OUT_MARGIN_M = 10.0

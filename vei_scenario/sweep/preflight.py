@@ -107,9 +107,7 @@ def check_values(
                     scenario, where, f"{name}={value!r} is outside its declared values ({_allowed(groups)})"
                 )
     probed = {
-        n: vs
-        for n, vs in distinct.items()
-        if doc.parameter_types.get(n) == "string" and len(vs) <= MAX_PROBED_VALUES
+        n: vs for n, vs in distinct.items() if doc.parameter_types.get(n) == "string" and len(vs) <= MAX_PROBED_VALUES
     }
     if not probed or _build_error(scenario, {}, dt) is not None:
         return

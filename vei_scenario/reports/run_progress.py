@@ -1,0 +1,53 @@
+"""What a long run says on the console: at its start how long it may run, then its progress on a
+terminal.
+
+Why: a scenario without a stop trigger runs until its stories complete or the time limit, and at a
+fine step that is millions of steps; a run that sits silent for minutes looks hung. The note goes to
+stderr (stdout keeps the run's summary); the bar only where stderr is a terminal, never in CI or a pipe.
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+from collections.abc import Callable
+
+#: A run that may take this many steps or more is announced (at 0.01 s: the 600 s limit is 60 000).
+LONG_RUN_STEPS = 100_000
+
+
+class RunProgress:
+    """``on_start`` for :func:`~vei_scenario.interpreter.run_scenario`; :meth:`close` ends the bar."""
+
+    def __init__(self, name: str, stream=None) -> None:
+        self.name, self.stream, self.bar = name, stream or sys.stderr, None
+
+    def on_start(self, sim) -> Callable[[float], None] | None:
+        steps = sim.max_time / sim.dt
+        if steps < LONG_RUN_STEPS:
+            return None
+        stop = sim.storyboard.stop_trigger
+        limit = f"the {sim.max_time:g} s time limit, up to {steps:,.0f} steps at dt {sim.dt:g} s"
+        if stop is None or not any(stop.groups):
+            note = f"{self.name} has no stop trigger: it runs until its stories complete or {limit}"
+        else:
+            note = f"{self.name} runs until its stop trigger fires, its stories complete or {limit}"
+        print(f"vei: note: {note}", file=self.stream, flush=True)
+        if os.environ.get("CI") or not self.stream.isatty():
+            return None
+        from tqdm import tqdm
+
+        tqdm.monitor_interval = 0
+        self.bar = tqdm(
+            total=round(sim.max_time, 3), unit="s", desc="simulated", dynamic_ncols=True, file=self.stream, leave=False
+        )
+
+        def tick(t: float) -> None:
+            self.bar.update(round(t, 3) - self.bar.n)
+
+        return tick
+
+    def close(self) -> None:
+        if self.bar is not None:
+            self.bar.close()
+            self.bar = None
