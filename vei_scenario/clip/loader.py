@@ -82,7 +82,7 @@ def read_json(path: Path) -> Any:
             line = text.count("\n", 0, m.start()) + 1
             where = f"line {line} column {m.start() - text.rfind(chr(10), 0, m.start())}"
         raise VeiInputError(path, where, f"invalid JSON: {exc.name} is not a number JSON allows") from None
-    except ValueError as exc:  # (an integer of thousands of digits: Python refuses to convert it)
+    except ValueError:  # (an integer of thousands of digits: Python refuses to convert it)
         limit = sys.get_int_max_str_digits()
         raise VeiInputError(path, "", f"invalid JSON: a number of more than {limit} digits, too long to read") from None
 

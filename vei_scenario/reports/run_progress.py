@@ -1,5 +1,5 @@
-"""What a long run says on the console: at its start how long it may run, then its progress on a
-terminal.
+"""What a long job says on the console: at a run's start how long it may run, then its progress on a
+terminal (a run's simulated time, an animation's frames).
 
 Why: a scenario without a stop trigger runs until its stories complete or the time limit, and at a
 fine step that is millions of steps; a run that sits silent for minutes looks hung. The note goes to
@@ -14,6 +14,17 @@ from collections.abc import Callable
 
 #: A run that may take this many steps or more is announced (at 0.01 s: the 600 s limit is 60 000).
 LONG_RUN_STEPS = 100_000
+
+
+def terminal_bar(total: float, unit: str, desc: str, stream=None):
+    """A tqdm bar on ``stream`` (stderr) when it is a terminal; None in CI, a pipe or a file."""
+    stream = stream or sys.stderr
+    if os.environ.get("CI") or not stream.isatty():
+        return None
+    from tqdm import tqdm
+
+    tqdm.monitor_interval = 0  # (no monitor thread)
+    return tqdm(total=total, unit=unit, desc=desc, dynamic_ncols=True, file=stream, leave=False)
 
 
 class RunProgress:
@@ -33,14 +44,9 @@ class RunProgress:
         else:
             note = f"{self.name} runs until its stop trigger fires, its stories complete or {limit}"
         print(f"vei: note: {note}", file=self.stream, flush=True)
-        if os.environ.get("CI") or not self.stream.isatty():
+        self.bar = terminal_bar(round(sim.max_time, 3), "s", "simulated", self.stream)
+        if self.bar is None:
             return None
-        from tqdm import tqdm
-
-        tqdm.monitor_interval = 0
-        self.bar = tqdm(
-            total=round(sim.max_time, 3), unit="s", desc="simulated", dynamic_ncols=True, file=self.stream, leave=False
-        )
 
         def tick(t: float) -> None:
             self.bar.update(round(t, 3) - self.bar.n)
