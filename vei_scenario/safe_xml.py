@@ -35,7 +35,7 @@ def parse_xml(path: Path | str, remove_comments: bool = False) -> etree._Element
     except etree.XMLSyntaxError as exc:
         line = exc.lineno if exc.lineno else 0
         msg = exc.msg if hasattr(exc, "msg") else str(exc)
-        raise VeiInputError(path, f"line {line}", f"malformed XML: {msg}{_json_hint(path)}") from None
+        raise VeiInputError(path, f"line {line}", f"malformed XML: {msg}{json_hint(path)}") from None
     except OSError as exc:
         raise VeiInputError(path, "", f"cannot read: {exc.strerror or exc}") from None
     docinfo = tree.docinfo
@@ -44,7 +44,7 @@ def parse_xml(path: Path | str, remove_comments: bool = False) -> etree._Element
     return tree
 
 
-def _json_hint(path: Path) -> str:
+def json_hint(path: Path) -> str:
     """A hint when the file is JSON (a clip given where a scenario is wanted): which command takes it."""
     try:
         with open(path, "rb") as fh:
