@@ -100,7 +100,7 @@ def _schema_check(path: Path, doc: Any) -> None:
         reason = f"{err.message} (extra fields belong under an 'extensions' object)"
     elif err.validator == "const" and list(err.absolute_path) == ["format"]:
         reason = f"unsupported format {err.instance!r}; expected 'vei-clip/1'"
-    elif err.validator == "type":  # (the message would quote the whole value, which may be the whole clip)
+    elif err.validator == "type" and len(err.message) > MAX_REASON_CHARS:  # (it quotes a large value whole)
         reason = f"must be {_json_type_name(err.validator_value)}, not {_json_type_name(_json_type(err.instance))}"
     else:
         reason = err.message if len(err.message) <= MAX_REASON_CHARS else err.message[:MAX_REASON_CHARS] + " [...]"

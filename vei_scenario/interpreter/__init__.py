@@ -56,6 +56,7 @@ def clear_file_caches() -> None:
         document._catalog_tree,
         document._catalog_index,
         document._directory,
+        document._road_network_problem,
         _network,
         _digest,
     ):

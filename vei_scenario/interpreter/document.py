@@ -231,7 +231,6 @@ def _listing(directory: str, inode: int, mtime_ns: int, ctime_ns: int) -> tuple[
     return tuple(sorted(d / n for n in os.listdir(d) if n.endswith(".xosc")))
 
 
-@functools.lru_cache(maxsize=256)
 @functools.lru_cache(maxsize=64)
 def _road_network_problem(path: str, key: bytes) -> str | None:
     """Why the LogicFile is no OpenDRIVE road network (its first element alone is read, once per
@@ -250,6 +249,7 @@ def _road_network_problem(path: str, key: bytes) -> str | None:
     return "is empty"
 
 
+@functools.lru_cache(maxsize=256)
 def _directory(parent: str, path: str) -> Path:
     """A CatalogLocations directory, resolved once per process (a sweep names the same ones for
     every variant)."""
