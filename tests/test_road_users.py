@@ -168,3 +168,32 @@ def test_other_categories_are_typed_in_openscenario_and_osi(tmp_path, category, 
     names = [o.get("name") for o in parse_xml(xosc).getroot().iterfind("Entities/ScenarioObject")]
     (mo,) = [m for m in gt.moving_object if m.id.value == names.index(PED)]
     assert mo.type.name == osi_type  # (betterosi drops the TYPE_ prefix)
+
+
+def test_a_road_user_seen_once_is_reported_not_replayed(tmp_path, capsys):
+    """One observation gives no trajectory to follow: the compile says so and goes on."""
+    import json
+
+    from conftest import EXAMPLES
+
+    doc = json.loads((EXAMPLES / "multi_scooter" / "clip.json").read_text())
+    for frame in doc["annotations"]["frames"]:
+        frame["objects"] = [o for o in frame["objects"] if o["track_id"] != PED]
+    doc["annotations"]["frames"][3]["objects"].append({"track_id": "dog_1", "category": "dog", "x_m": 12.0, "y_m": 4.0})
+    clip = tmp_path / "clip.json"
+    clip.write_text(json.dumps(doc))
+    xosc = tmp_path / "out" / "scenario.xosc"
+    assert main(["compile", str(clip), "--no-map", "-o", str(xosc)]) == 0
+    out = capsys.readouterr().out
+    assert "track dog_1: category 'dog' observed once: no trajectory to replay; skipped" in out
+    names = [o.get("name") for o in parse_xml(xosc).getroot().iterfind("Entities/ScenarioObject")]
+    assert "dog_1" not in names and PED not in names
+
+
+def test_the_compile_report_counts_the_other_road_users(multi):
+    from vei_scenario.reports.compile_report import compile_report
+
+    first = compile_report(multi).splitlines()[0]
+    assert "ego + 3 e-scooter track(s) + 1 other road user(s) replayed as recorded" in first
+    notes = "\n".join(multi.notes)
+    assert "track ped_1: category 'pedestrian' replayed as recorded (a Pedestrian" in notes
