@@ -154,6 +154,7 @@ def _cmd_run(args: argparse.Namespace) -> int:
         coupling=args.coupling,
         osi=args.osi,
         cfg=MetricConfig(zone_ttc=args.zone_ttc),
+        progress=True,
     )
     for w in report.metrics.get("warnings", ()):
         print(f"vei: warning: {w}", file=sys.stderr)
@@ -396,7 +397,7 @@ def _cmd_view(args: argparse.Namespace) -> int:
     else:
         raise VeiInputError(src, "input", "not found (a .xosc scenario or a directory written by vei run -o)")
     if args.output:
-        print(f"wrote {write_animation(view, args.output, args.fps, args.speed)}")
+        print(f"wrote {write_animation(view, args.output, args.fps, args.speed, progress=True)}")
     else:
         show(view, args.fps, args.speed)
     return 0

@@ -140,11 +140,14 @@ def compile_clip(clip_path: str | Path, output: str | Path, options: CompileOpti
         # netconvert, which runs on the other core.
         from vei_scenario.geometry.reconstruct import reconstruct
         from vei_scenario.scenario.model import build_model
+        from vei_scenario.scenario.road_users import replay_note
 
         rec = reconstruct(clip, rate_hz=opts.rate_hz, smooth=opts.smooth)
-        for tid, cat in sorted(rec.skipped_tracks.items()):
-            notes.append(f"track {tid}: category {cat!r} is not modelled; skipped")
-        for tid, track in sorted(rec.scooters.items()):
+        for tid, why in sorted(rec.skipped_tracks.items()):
+            notes.append(f"track {tid}: {why}")
+        for tid, track in sorted(rec.others.items()):
+            notes.append(f"track {tid}: {replay_note(track.category)}")
+        for tid, track in sorted(rec.road_users.items()):
             for a, b in track.gaps:
                 notes.append(f"track {tid}: not observed for {b - a:.1f} s (t = {a:.1f}..{b:.1f} s); spline-bridged")
         stem = output.stem

@@ -211,6 +211,21 @@ def run_files(result: RunResult, doc: dict, cfg: MetricConfig, plots: bool = Tru
     return files
 
 
+def _check_positions(result: RunResult) -> None:
+    """A position that is not a number is a defect vei could not play: one line naming the entity and
+    when, rather than files of NaN (or a plotting error about axis limits)."""
+    import numpy as np
+
+    for name, tr in result.traces.items():
+        for field in ("x", "y"):
+            bad = ~np.isfinite(np.asarray(getattr(tr, field), dtype=float))
+            if bad.any():
+                t = float(np.asarray(result.t)[int(np.argmax(bad))])
+                raise VeiInputError(
+                    result.scenario, name, f"its position is not a number from t = {t:g} s: vei cannot play it"
+                )
+
+
 def run_to(
     scenario: str | Path,
     out_dir: str | Path | None,
@@ -220,9 +235,11 @@ def run_to(
     cfg: MetricConfig | None = None,
     coupling: str = "sequential",
     osi: str | Path | None = None,
+    progress: bool = False,
 ) -> RunReport:
     """Run ``scenario`` and, with ``out_dir``, write its files there; with ``osi``, also an ASAM OSI
-    ground-truth trace (``.mcap`` or ``.osi``) at that path. All or nothing."""
+    ground-truth trace (``.mcap`` or ``.osi``) at that path. All or nothing. With ``progress``, a run
+    that may be long says so on stderr at its start, and shows a progress bar on a terminal."""
     from vei_scenario.checks import check_dt
 
     check_dt(dt)
@@ -232,7 +249,17 @@ def run_to(
         if Path(osi).suffix.lower() not in FORMATS:
             raise VeiInputError(osi, "--osi", f"unknown trace format {Path(osi).suffix!r} (use .mcap or .osi)")
     cfg = cfg or MetricConfig()
-    result = run_scenario(scenario, parameters, dt, coupling=coupling)
+    if progress:
+        from vei_scenario.reports.run_progress import RunProgress
+
+        shown = RunProgress(Path(scenario).name)
+        try:
+            result = run_scenario(scenario, parameters, dt, coupling=coupling, on_start=shown.on_start)
+        finally:
+            shown.close()
+    else:
+        result = run_scenario(scenario, parameters, dt, coupling=coupling)
+    _check_positions(result)
     doc = metrics_document(result, cfg)
     written: list[Path] = []
     files = OutputSet()

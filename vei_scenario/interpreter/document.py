@@ -246,6 +246,24 @@ def _listing(directory: str, inode: int, mtime_ns: int, ctime_ns: int) -> tuple[
     return tuple(sorted(d / n for n in os.listdir(d) if n.endswith(".xosc")))
 
 
+@functools.lru_cache(maxsize=64)
+def _road_network_problem(path: str, key: bytes) -> str | None:
+    """Why the LogicFile is no OpenDRIVE road network (its first element alone is read, once per
+    content); None when it is one. Why: a file that is not a road (a stray path, another format)
+    must be refused before the run, not found out by a plot or a lane lookup afterwards."""
+    from vei_scenario.safe_xml import SAFE_OPTIONS
+
+    try:
+        for _event, el in etree.iterparse(path, events=("start",), **SAFE_OPTIONS):
+            tag = el.tag if isinstance(el.tag, str) else ""
+            return None if tag == "OpenDRIVE" else f"is not an OpenDRIVE file (its root element is <{tag}>)"
+    except etree.XMLSyntaxError as exc:
+        return f"is not an OpenDRIVE file (malformed XML, line {exc.lineno or 0}: {exc.msg})"
+    except OSError as exc:
+        return f"cannot be read ({exc.strerror or exc})"
+    return "is empty"
+
+
 @functools.lru_cache(maxsize=256)
 def _directory(parent: str, path: str) -> Path:
     """A CatalogLocations directory, resolved once per process (a sweep names the same ones for
@@ -511,4 +529,7 @@ def load_scenario(
         road_file = _directory(str(path.parent), logic.get("filepath"))
         if not road_file.is_file():
             raise VeiInputError(path, f"line {logic.sourceline}", f"road network {logic.get('filepath')!r} not found")
+        problem = _road_network_problem(str(road_file), content_key(road_file))
+        if problem:
+            raise VeiInputError(path, f"line {logic.sourceline}", f"road network {logic.get('filepath')!r} {problem}")
     return ScenarioDocument(path, root, minor, scope, types, road_file)

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import copy
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -40,6 +41,8 @@ from vei_scenario.models.vehicle import VehicleLimits
 
 #: Runs end here at the latest (s) when the storyboard has no stop trigger that fires.
 DEFAULT_MAX_TIME_S = 600.0
+#: How often (steps) a run reports its progress to an ``on_progress`` callback.
+PROGRESS_EVERY_STEPS = 2000
 
 #: How entities see each other within a step. ``sequential`` (default, Gauss-Seidel): entities move
 #: in declaration order and each sees those moved before it at their new state. ``jacobi``: every
@@ -368,7 +371,7 @@ class Simulation:
         else:
             advance_along(e, ds)
 
-    def run(self) -> RunResult:
+    def run(self, on_progress: Callable[[float], None] | None = None) -> RunResult:
         ctx, dt = self.ctx, self.dt
         names = list(ctx.entities)
         recording = Recording([ctx.entities[n] for n in names])
@@ -400,7 +403,11 @@ class Simulation:
         pending = [a for a in self.init_actions if not a.done]
         entities = list(ctx.entities.values())
         board, offers = self.storyboard, Offers()
+        reported = 0
         while running and ctx.t < self.max_time - 1e-9:
+            if on_progress is not None and ctx.step - reported >= PROGRESS_EVERY_STEPS:
+                on_progress(ctx.t)  # (the simulated time reached: a long run shows it moves)
+                reported = ctx.step
             before = ctx.transitions
             if not board.step():
                 reason = "storyboard stop trigger"

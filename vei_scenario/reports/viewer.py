@@ -207,12 +207,35 @@ def render_frames(view: View, steps: np.ndarray, size_px: int = 640) -> Iterator
         yield np.asarray(canvas.buffer_rgba())[:, :, :3].copy()
 
 
-def write_animation(view: View, out: str | Path, fps: float = 10.0, speed: float = 1.0, size_px: int = 640) -> Path:
-    """An animated GIF (``.gif``) or MP4 (``.mp4``, needs ffmpeg) of the run, written atomically."""
+def _with_bar(render):
+    """``render`` (view, steps, size) whose frames tick a terminal bar as they are drawn."""
+
+    def frames(view, steps, size_px):
+        from vei_scenario.reports.run_progress import terminal_bar
+
+        bar = terminal_bar(len(steps), "frame", "drawing")
+        try:
+            for f in render(view, steps, size_px):
+                yield f
+                if bar is not None:
+                    bar.update(1)
+        finally:
+            if bar is not None:
+                bar.close()
+
+    return frames
+
+
+def write_animation(
+    view: View, out: str | Path, fps: float = 10.0, speed: float = 1.0, size_px: int = 640, progress: bool = False
+) -> Path:
+    """An animated GIF (``.gif``) or MP4 (``.mp4``, needs ffmpeg) of the run, written atomically. With
+    ``progress``, the frames drawn show as a bar where stderr is a terminal (a film takes seconds)."""
     from vei_scenario.atomic_io import write_bytes_atomic
 
     out = Path(out)
     steps = frame_steps(view, fps, speed)
+    draw = _with_bar(render_frames) if progress else render_frames
     suffix = out.suffix.lower()
     if suffix == ".gif":
         import io
@@ -220,7 +243,7 @@ def write_animation(view: View, out: str | Path, fps: float = 10.0, speed: float
         from matplotlib.colors import to_rgb
         from PIL import Image
 
-        rgb = list(render_frames(view, steps, size_px))
+        rgb = list(draw(view, steps, size_px))
         # one palette for the film, from two frames and swatches of the colours that must survive (a box
         # of a few pixels would otherwise lose its zone colour to the road's greys)
         keys = [*ZONE_FACE.values(), "tab:blue", "tab:gray", "black", "white"]
@@ -240,7 +263,7 @@ def write_animation(view: View, out: str | Path, fps: float = 10.0, speed: float
         import subprocess
         import tempfile
 
-        frames = list(render_frames(view, steps, size_px))
+        frames = list(draw(view, steps, size_px))
         h, w = frames[0].shape[:2]
         with tempfile.TemporaryDirectory(dir=out.parent if out.parent.exists() else None) as tmp:
             part = Path(tmp) / "view.mp4"
