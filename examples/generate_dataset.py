@@ -341,20 +341,45 @@ def occlusion(rng: np.random.Generator, a: Actor, t_rider: float) -> tuple[tuple
 
 def side_walker(
     rng: np.random.Generator, track_id: str, category: str, ego: ProfileMover, t_mid: float, offset_m: float
-) -> Actor:
-    """A road user on a line parallel to the ego's heading at ``t_mid``, ``offset_m`` to its left
-    (negative: right), coming towards it or going its way, who never comes near the ego's path."""
-    px, py, pyaw, _ = ego.state(t_mid)
-    yaw = float(pyaw)
-    left = np.array([-math.sin(yaw), math.cos(yaw)])
-    p = np.array([float(px), float(py)]) + offset_m * left
+) -> Actor | None:
+    """A road user beside the ego's path, ``offset_m`` to its left (negative: right) all along it
+    (the path's offset curve), coming towards the ego or going its way, next to it at ``t_mid``: it
+    never comes nearer the ego's path than that offset."""
+    import shapely
+
+    span = 20.0
+    s_lo, s_hi = float(ego.s(t_mid - span - 15.0)), float(ego.s(t_mid + span + 15.0))
+    keep = (ego.path.s >= s_lo - 30.0) & (ego.path.s <= s_hi + 30.0)
+    pts = np.column_stack([ego.path.x[keep], ego.path.y[keep]])[::10]
+    line = shapely.LineString(pts)
+    off = line.offset_curve(offset_m, join_style="round")
+    part = max(getattr(off, "geoms", [off]), key=lambda g: g.length)
+    xy = np.array(part.coords)
+    if xy.shape[0] < 20 or part.distance(line) < abs(offset_m) - 0.5:  # (a U-turn, a loop: no side to walk)
+        return None
     oncoming = rng.random() < 0.5
-    heading = yaw + (math.pi if oncoming else 0.0)
+    if oncoming:
+        xy = xy[::-1]
+    arc = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(xy, axis=0).T))])
+    path = DensePath(arc, xy[:, 0], xy[:, 1], np.unwrap(np.arctan2(np.gradient(xy[:, 1]), np.gradient(xy[:, 0]))))
+    ex, ey, _, _ = ego.state(t_mid)
     v = float(rng.uniform(1.2, 1.6)) if category == "pedestrian" else float(rng.uniform(3.0, 5.5))
-    path = line_path(p, heading, 80.0, 80.0, (0.1, 20.0))
-    m = moving_to(path, 80.0, t_mid, (0.0, 1.0), (v, v))
+    m = moving_to(path, s_at_point(path, np.array([float(ex), float(ey)])), t_mid, (0.0, 1.0), (v, v))
+    t_on = time_at_s(m, 0.0, t_mid - 200.0, t_mid)
+    t_off = time_at_s(m, float(arc[-1]), t_mid, t_mid + 200.0)
     truth = {"kind": "beside", "offset_m": round(offset_m, 3), "t_gps_mid": round(T_GPS0 + t_mid, 3)}
-    return Actor(track_id, category, m, (t_mid - 60.0 / v, t_mid + 60.0 / v), (), truth)
+    return Actor(track_id, category, m, (max(t_on, t_mid - span), min(t_off, t_mid + span)), (), truth)
+
+
+def beside(
+    rng: np.random.Generator, track_id: str, category: str, ego: ProfileMover, t_mid: float, offset_m: float
+) -> Actor | None:
+    """:func:`side_walker` at ``t_mid`` or, where the ego's path has no side there, a few seconds on."""
+    for k in range(8):
+        a = side_walker(rng, track_id, category, ego, t_mid + 3.0 * k, offset_m)
+        if a is not None:
+            return a
+    return None
 
 
 def ego_profile(rng: np.random.Generator, duration_s: float, stops: bool, keep_moving: list[float]) -> tuple:
@@ -418,10 +443,11 @@ def _short_clip_attempt(
         second = crossing_rider(rng, "scooter_2", category, ego, frame, t2, float(rng.uniform(0.5, 4.0)), False, T_GPS0)
         actors.append(second)
     elif extra < 0.5:  # an oncoming rider in the other lane
-        actors.append(side_walker(rng, "scooter_2", category, ego, t_cross + float(rng.uniform(-3, 3)), 3.2))
+        actors.append(beside(rng, "scooter_2", category, ego, t_cross + float(rng.uniform(-3, 3)), 3.2))
     if rng.random() < 0.3:
         side = float(rng.choice([-1.0, 1.0]))
-        actors.append(side_walker(rng, "ped_1", "pedestrian", ego, t_cross, side * PAVEMENT_OFFSET_M))
+        actors.append(beside(rng, "ped_1", "pedestrian", ego, t_cross, side * PAVEMENT_OFFSET_M))
+    actors = [a for a in actors if a is not None]
     rec = Recording(
         clip_id=f"gen-{seed}-{index:05d}",
         ego=ego,
@@ -466,15 +492,16 @@ def long_drive(seed: int, minutes: float, encounters: int, graph: StreetGraph) -
         actors.append(a)
         truth_enc.append(dict(a.truth, track_id=a.track_id, category=a.category))
     # between encounters: a rider or a pedestrian well beside the ego's path
-    beside = []
+    beside_truth = []
     for k in range(len(times) - 1):
         t_mid = 0.5 * (times[k] + times[k + 1])
         cat = "pedestrian" if rng.random() < 0.5 else SCOOTER_CATEGORIES[int(rng.integers(len(SCOOTER_CATEGORIES)))]
         offset = float(rng.choice([-1.0, 1.0]) * rng.uniform(7.0, 10.0))
-        a = side_walker(rng, f"{'ped' if cat == 'pedestrian' else 'rider'}_{k + 1:03d}", cat, ego, t_mid, offset)
-        a.active = (max(a.active[0], t_mid - 15.0), min(a.active[1], t_mid + 15.0))
+        a = beside(rng, f"{'ped' if cat == 'pedestrian' else 'rider'}_{k + 1:03d}", cat, ego, t_mid, offset)
+        if a is None:
+            continue
         actors.append(a)
-        beside.append(dict(a.truth, track_id=a.track_id, category=cat))
+        beside_truth.append(dict(a.truth, track_id=a.track_id, category=cat))
     rec = Recording(
         clip_id=f"drive-{seed}",
         ego=ego,
@@ -493,7 +520,7 @@ def long_drive(seed: int, minutes: float, encounters: int, graph: StreetGraph) -
         "id": rec.clip_id,
         "duration_s": duration,
         "encounters": truth_enc,
-        "beside": beside,
+        "beside": beside_truth,
     }
     return rec, truth
 

@@ -104,6 +104,37 @@ def _cmd_clip_convert(args: argparse.Namespace) -> int:
     return 0
 
 
+def _cmd_clip_split(args: argparse.Namespace) -> int:
+    from vei_scenario.clip.split import SplitOptions, split_drive
+
+    defaults = SplitOptions()
+    opts = SplitOptions(
+        near_m=args.near,
+        horizon_s=args.horizon,
+        max_gap_s=args.max_gap,
+        pad_before_s=args.pad_before,
+        pad_after_s=args.pad_after,
+        merge_gap_s=args.merge_gap,
+        min_length_s=args.min_length,
+        categories=tuple(args.category) if args.category else defaults.categories,
+    )
+    result = split_drive(args.input, args.output, opts, args.to, args.frame_rate, args.time_unit)
+    for part, path in zip(result.interactions, result.written):
+        print(
+            f"wrote {path}: {part.t_end - part.t_start:.1f} s from {part.t_start - result.t0:.1f} s, "
+            f"{', '.join(part.tracks)} (closest {part.closest_m:.1f} m to the ego's path)"
+        )
+    print(
+        f"{len(result.interactions)} interaction(s) in {result.duration_s:.0f} s of {result.source}"
+        + (
+            ""
+            if result.interactions
+            else f" (no {'/'.join(opts.categories)} within {opts.near_m:g} m of the ego's path)"
+        )
+    )
+    return 0
+
+
 def _cmd_examples(args: argparse.Namespace) -> int:
     from vei_scenario.examples import copy_examples
 
@@ -453,7 +484,9 @@ def build_parser() -> argparse.ArgumentParser:
     ex.add_argument("--force", action="store_true", help="overwrite example files already there")
     ex.set_defaults(func=_cmd_examples)
 
-    cl = sub.add_parser("clip", help="annotated clips: convert between vei-clip/1 and ASAM OpenLABEL 1.0")
+    cl = sub.add_parser(
+        "clip", help="annotated clips: convert between vei-clip/1 and ASAM OpenLABEL 1.0; split a drive into clips"
+    )
     clsub = cl.add_subparsers(dest="clip_command", required=True, parser_class=_Parser)
     cv = clsub.add_parser(
         "convert", help="write a clip as ASAM OpenLABEL 1.0, or an OpenLABEL annotation as vei-clip/1"
@@ -464,6 +497,40 @@ def build_parser() -> argparse.ArgumentParser:
     cv.add_argument("--frame-rate", type=FRAME_RATE, metavar="HZ", help=FRAME_RATE_HELP)
     cv.add_argument("--time-unit", choices=TIME_UNITS, help=TIME_UNIT_HELP)
     cv.set_defaults(func=_cmd_clip_convert)
+    sp = clsub.add_parser(
+        "split",
+        help="cut a long recording into interaction clips (a vulnerable road user near the ego's path)",
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+        description="Cut a drive into clips where a road user of --category comes within --near m of the ego's\n"
+        "path (where the ego is from --horizon s before to --horizon s after; consecutive observations up to\n"
+        "--max-gap s apart are joined, so a rider crossing between them counts). A track's near times are one\n"
+        "interaction unless more than --max-gap s apart; each starts --pad-before s earlier, ends --pad-after s\n"
+        "later and lasts at least --min-length s; interactions that overlap or are less than --merge-gap s\n"
+        "apart are one clip. Each clip's extensions.vei_split says where it came from (source file, SHA-256,\n"
+        "time range) and by which rules.",
+    )
+    sp.add_argument("input", help="the recording: vei-clip/1 or OpenLABEL 1.0 JSON (up to 24 h)")
+    sp.add_argument("-o", "--output", required=True, help="folder for the clips (ID.NNN.json)")
+    sp.add_argument("--near", type=_number(positive=True), default=3.5, help="how near the ego's path, m (3.5)")
+    sp.add_argument("--horizon", type=_number(positive=True), default=5.0, help="the ego's path: +-S s (5)")
+    sp.add_argument("--max-gap", type=_number(positive=True), default=10.0, help="longest gap bridged, s (10)")
+    sp.add_argument("--pad-before", type=_number(0), default=6.0, help="padding before, s (6)")
+    sp.add_argument("--pad-after", type=_number(0), default=3.0, help="padding after, s (3)")
+    sp.add_argument(
+        "--merge-gap", type=_number(0), default=0.0, help="merge clips closer than this, s (0: overlapping)"
+    )
+    sp.add_argument("--min-length", type=_number(positive=True), default=5.0, help="shortest clip, s (5)")
+    sp.add_argument(
+        "--category",
+        action="append",
+        metavar="NAME",
+        help="a road-user category to look for (repeatable, any case; default: e-scooter, escooter, e_scooter, "
+        "scooter)",
+    )
+    sp.add_argument("--to", choices=("vei-clip", "openlabel"), default="vei-clip", help="clip format (vei-clip)")
+    sp.add_argument("--frame-rate", type=FRAME_RATE, metavar="HZ", help=FRAME_RATE_HELP)
+    sp.add_argument("--time-unit", choices=TIME_UNITS, help=TIME_UNIT_HELP)
+    sp.set_defaults(func=_cmd_clip_split)
 
     r = sub.add_parser("run", help="run a scenario with the built-in interpreter; write trajectories, metrics, plots")
     r.add_argument(
