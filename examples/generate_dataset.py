@@ -5,8 +5,9 @@ Two products, both deterministic (one seed gives the same bytes):
 
 * ``clips OUT --n N``: N short vei-clip/1 interaction clips in ``OUT/clips/`` and their ground truth in
   ``OUT/truth.json``. Each clip has the ego driving a random route through the street graph of the
-  extract (turns at junctions, 4-13 m/s, sometimes slowing), one e-scooter crossing its path at a
-  random approach angle (30-150 degrees from either side) and post-encroachment time, sometimes a
+  extract (turns at junctions, 4-13 m/s, up to 20 % faster or slower over the clip), one e-scooter
+  crossing its path at a random approach angle (30-150 degrees from either side) and
+  post-encroachment time (0.8-4 s ahead of the ego, a fifth of them 0.8-2 s behind it), sometimes a
   rider who stops short of the ego's path and sets off again, sometimes a second crossing rider or an
   oncoming one, sometimes a pedestrian on the pavement; riders hidden for a while (occlusion) beside
   the camera's own field of view; GPS noise; annotation categories, axis conventions and clock offsets
@@ -431,7 +432,7 @@ def _short_clip_attempt(
     t_cross = float(rng.uniform(0.45, 0.7) * duration)
     category = SCOOTER_CATEGORIES[int(rng.integers(len(SCOOTER_CATEGORIES)))]
     # mostly ahead of the ego (the forward camera sees it cross), sometimes just behind it
-    pet = float(rng.uniform(0.3, 4.0)) if rng.random() < 0.8 else -float(rng.uniform(0.3, 2.0))
+    pet = float(rng.uniform(0.8, 4.0)) if rng.random() < 0.8 else -float(rng.uniform(0.8, 2.0))
     main = crossing_rider(rng, "scooter_1", category, ego, frame, t_cross, pet, rng.random() < 0.25, T_GPS0)
     if rng.random() < 0.4:
         main.hidden = occlusion(rng, main, t_cross - pet)
@@ -440,7 +441,7 @@ def _short_clip_attempt(
     extra = rng.random()
     if extra < 0.3:  # a second rider crossing 2-6 s apart
         t2 = min(max(t_cross + float(rng.choice([-1, 1]) * rng.uniform(2.0, 6.0)), 3.0), duration - 3.0)
-        second = crossing_rider(rng, "scooter_2", category, ego, frame, t2, float(rng.uniform(0.5, 4.0)), False, T_GPS0)
+        second = crossing_rider(rng, "scooter_2", category, ego, frame, t2, float(rng.uniform(0.8, 4.0)), False, T_GPS0)
         actors.append(second)
     elif extra < 0.5:  # an oncoming rider in the other lane
         actors.append(beside(rng, "scooter_2", category, ego, t_cross + float(rng.uniform(-3, 3)), 3.2))

@@ -77,7 +77,6 @@ def _osc_minor(text: str) -> int:
 
 def _cmd_compile(args: argparse.Namespace) -> int:
     from vei_scenario.compiler import CompileOptions, compile_clip
-    from vei_scenario.reports.compile_report import compile_report
 
     opts = CompileOptions(
         rate_hz=args.rate,
@@ -91,8 +90,50 @@ def _cmd_compile(args: argparse.Namespace) -> int:
         frame_rate_hz=args.frame_rate,
         time_unit=args.time_unit,
     )
+    if Path(args.clip).is_dir():
+        return _compile_library(args, opts)
+    for flag in ("executor", "scheduler", "workers"):
+        if getattr(args, flag) is not None:
+            raise VeiInputError(None, f"--{flag}", "applies to a folder of clips (vei compile CLIPS/ -o LIBRARY/)")
+    from vei_scenario.reports.compile_report import compile_report
+
     result = compile_clip(args.clip, args.output, opts)
     print(compile_report(result))
+    return 0
+
+
+def _compile_library(args: argparse.Namespace, opts) -> int:
+    from tqdm import tqdm
+
+    from vei_scenario.library import compile_library
+
+    files = sum(1 for p in Path(args.clip).iterdir() if p.suffix.lower() == ".json")
+    with tqdm(total=files, unit="clip", disable=args.quiet or not sys.stderr.isatty(), leave=False) as bar:
+        result = compile_library(
+            args.clip, args.output, opts, args.executor or "local", args.scheduler, args.workers, bar.update
+        )
+    ok = len(result.rows) - len(result.failed)
+    print(
+        f"{len(result.rows)} clips: {ok} compiled, {len(result.failed)} could not be ({result.compiled} tried in this "
+        f"run, {result.kept} unchanged since the last)"
+    )
+    for r in result.rows[:3]:
+        if r["status"] == "ok":
+            print(
+                f"  #{r['rank']} {r['file']}: threat {r['threat']}, collision margin "
+                f"{'-' if r['collision_margin_s'] is None else format(r['collision_margin_s'], '.2f') + ' s'}, "
+                f"closest {r['min_centre_distance_m']:.2f} m"
+            )
+    out = Path(args.output)
+    print(f"wrote {out / 'library.json'}, {out / 'library.html'}")
+    if result.failed:
+        first = result.failed[0]
+        print(
+            f"vei: {len(result.failed)} of {len(result.rows)} clips could not be compiled; their rows in library.json "
+            f"say why (the first: {first['error']})",
+            file=sys.stderr,
+        )
+        return EXIT_VARIANTS_FAILED
     return 0
 
 
@@ -453,10 +494,25 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument("--version", action="version", version=f"vei-scenario {__version__}")
     sub = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
 
-    c = sub.add_parser("compile", help="compile an annotated clip into OpenSCENARIO + OpenDRIVE")
-    c.add_argument("clip", help="annotated clip: vei-clip/1 JSON or ASAM OpenLABEL 1.0 JSON")
+    c = sub.add_parser(
+        "compile",
+        help="compile an annotated clip (or a folder of clips: a library) into OpenSCENARIO + OpenDRIVE",
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+        description="Compile one clip into a scenario, or every clip (*.json) of a folder into a library:\n"
+        "  LIBRARY/scenarios/NAME/  scenario.xosc, .xodr, .variations.xosc, thumbnail.svg, row.json\n"
+        "  LIBRARY/library.json     a row per clip, ranked by closeness to a collision (the smallest timing\n"
+        "                           change that makes the boxes touch, then the conflict margin, then the\n"
+        "                           closest distance); a clip that could not be compiled is a row with why\n"
+        "  LIBRARY/library.html     the same as a page, with map thumbnails\n"
+        "A clip whose file, map and options are unchanged since the last run is not compiled again. Exit 1\n"
+        "when some clips could not be compiled (the rest are compiled).",
+    )
+    c.add_argument("clip", help="annotated clip (vei-clip/1 or ASAM OpenLABEL 1.0 JSON), or a folder of them")
     c.add_argument(
-        "-o", "--output", required=True, help="scenario file to write (.xosc); .xodr and .variations.xosc go beside it"
+        "-o",
+        "--output",
+        required=True,
+        help="scenario file to write (.xosc; .xodr and .variations.xosc go beside it), or the library folder",
     )
     c.add_argument(
         "--rate", type=_number(0.5, 1000), default=10.0, help="output rate of the trajectories in Hz (default 10)"
@@ -477,6 +533,14 @@ def build_parser() -> argparse.ArgumentParser:
     )
     c.add_argument("--frame-rate", type=FRAME_RATE, metavar="HZ", help=FRAME_RATE_HELP)
     c.add_argument("--time-unit", choices=TIME_UNITS, help=TIME_UNIT_HELP)
+    c.add_argument(
+        "--executor",
+        choices=("local", "dask"),
+        help="a folder: local worker processes on all cores (default), or dask: a Dask cluster",
+    )
+    c.add_argument("--scheduler", help="a folder with --executor dask: the scheduler (default: a LocalCluster)")
+    c.add_argument("--workers", type=WORKERS, help="a folder: local worker processes (default: all cores)")
+    c.add_argument("--quiet", action="store_true", help="a folder: no progress bar")
     c.set_defaults(func=_cmd_compile)
 
     ex = sub.add_parser("examples", help="copy the bundled example clips (and their map) into a directory")
