@@ -97,6 +97,11 @@ def test_openlabel_drive_gives_the_same_interactions(tmp_path):
     assert [p.tracks for p in a] == [p.tracks for p in b]
     for p, q in zip(a, b):
         assert q.t_start == pytest.approx(p.t_start, abs=1e-3) and q.t_end == pytest.approx(p.t_end, abs=1e-3)
+    written = split_drive(drive, tmp_path / "c", to="openlabel").written  # (and OpenLABEL clips out)
+    for path, part in zip(written, a):
+        assert "openlabel" in json.loads(path.read_text())
+        clip = load_clip(path)
+        assert set(part.tracks) <= set(clip.annotations.tracks())
 
 
 # --- hand-made drives: the ego east along a straight road at 10 m/s, riders crossing it northward ---
