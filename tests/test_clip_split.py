@@ -15,7 +15,7 @@ from test_generate_dataset import load_dataset_generator
 
 from vei_scenario.cli import main
 from vei_scenario.clip import load_clip
-from vei_scenario.clip.split import SplitOptions, find_interactions, load_drive, split_drive
+from vei_scenario.library.split import SplitOptions, find_interactions, load_drive, split_drive
 
 GEOD = Geod(ellps="WGS84")
 LAT0, LON0 = 60.1650799, 24.939421

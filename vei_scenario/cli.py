@@ -146,7 +146,7 @@ def _cmd_clip_convert(args: argparse.Namespace) -> int:
 
 
 def _cmd_clip_split(args: argparse.Namespace) -> int:
-    from vei_scenario.clip.split import SplitOptions, split_drive
+    from vei_scenario.library.split import SplitOptions, split_drive
 
     defaults = SplitOptions()
     opts = SplitOptions(

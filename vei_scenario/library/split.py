@@ -49,7 +49,7 @@ MAX_DRIVE_S = 24 * 3600.0
 
 @dataclass(frozen=True)
 class SplitOptions:
-    """The rules of :mod:`vei_scenario.clip.split` (distances in m, times in s)."""
+    """The rules of :mod:`vei_scenario.library.split` (distances in m, times in s)."""
 
     near_m: float = 3.5
     horizon_s: float = 5.0
