@@ -176,6 +176,35 @@ def _cmd_clip_split(args: argparse.Namespace) -> int:
     return 0
 
 
+def _cmd_bench(args: argparse.Namespace) -> int:
+    from tqdm import tqdm
+
+    from vei_scenario.bench import BenchOptions, run_bench
+
+    opts = BenchOptions(half_width_s=args.half_width, step_s=args.step, dt=args.dt, workers=args.workers)
+    index = Path(args.library) / "library.json"
+    total = None
+    if index.is_file():
+        try:
+            total = len(json.loads(index.read_text("utf-8")).get("scenarios", []))
+        except (ValueError, AttributeError):
+            total = None
+    with tqdm(total=total, unit="scenario", disable=args.quiet or not sys.stderr.isatty(), leave=False) as bar:
+        doc = run_bench(args.library, args.output, opts, bar.update)
+    share = "-" if doc["failure_share"] is None else f"{100 * doc['failure_share']:.1f} %"
+    print(
+        f"{doc['scenarios']} scenarios, {doc['benched']} benched: {doc['failing']} fail ({share}): the planner "
+        "collides at some TimeShift"
+    )
+    for w in doc["worst"][:3]:
+        print(
+            f"  {w['file']}: {w['impact_speed_mps']:.2f} m/s at TimeShift {w['time_shift_s']:+.2f} s; {w['reproduce']}"
+        )
+    out = Path(args.output)
+    print(f"wrote {out / 'bench.json'}, {out / 'report.html'}, {out / 'junit.xml'}")
+    return 1 if doc["failing"] else 0
+
+
 def _cmd_examples(args: argparse.Namespace) -> int:
     from vei_scenario.examples import copy_examples
 
@@ -595,6 +624,27 @@ def build_parser() -> argparse.ArgumentParser:
     sp.add_argument("--frame-rate", type=FRAME_RATE, metavar="HZ", help=FRAME_RATE_HELP)
     sp.add_argument("--time-unit", choices=TIME_UNITS, help=TIME_UNIT_HELP)
     sp.set_defaults(func=_cmd_clip_split)
+
+    bn = sub.add_parser(
+        "bench",
+        help="vei's planner over every scenario of a library, searched around each conflict; JUnit for CI",
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+        description="For every scenario of LIBRARY (vei compile CLIPS/ -o LIBRARY/): the seed paper's five\n"
+        "configurations (replay/normal/aggressive rider, planner off/on) at every TimeShift within\n"
+        "--half-width s of its conflict shift, every --step s, through the compiled sweep kernel. A scenario\n"
+        "fails when a configuration with the planner on collides. Writes bench.json, report.html and\n"
+        "junit.xml (one test case per scenario); exit 1 when some scenario fails.",
+    )
+    bn.add_argument("library", help="a scenario library folder (with library.json)")
+    bn.add_argument("-o", "--output", required=True, help="folder for bench.json, report.html, junit.xml")
+    bn.add_argument(
+        "--half-width", type=_number(0, 30), default=1.5, help="TimeShift search: +-S s around the conflict (1.5)"
+    )
+    bn.add_argument("--step", type=_number(0.001, 10), default=0.01, help="TimeShift search step, s (0.01)")
+    bn.add_argument("--dt", type=DT, default=0.01, help="fixed step in s (default 0.01)")
+    bn.add_argument("--workers", type=WORKERS, help="threads of the sweep kernel (default: all cores)")
+    bn.add_argument("--quiet", action="store_true", help="no progress bar")
+    bn.set_defaults(func=_cmd_bench)
 
     r = sub.add_parser("run", help="run a scenario with the built-in interpreter; write trajectories, metrics, plots")
     r.add_argument(
