@@ -8,8 +8,6 @@ from __future__ import annotations
 import html
 from xml.sax.saxutils import quoteattr
 
-from vei_scenario.bench.run import SUT_CONFIGS
-
 STYLE = """
 body{font-family:sans-serif;margin:1.5em;color:#222}
 table{border-collapse:collapse;font-size:13px}
@@ -118,7 +116,7 @@ def junit_xml(doc: dict) -> str:
             w = r["worst_failure"]
             lines = [
                 f"configuration {n}: collides for TimeShift {_intervals(r['configurations'][str(n)])} s"
-                for n in SUT_CONFIGS
+                for n in doc["sut_configurations"]
                 if r["configurations"][str(n)]["collisions"]
             ]
             msg = (

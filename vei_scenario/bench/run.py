@@ -175,6 +175,7 @@ def run_bench(
         "format": "vei-bench/1",
         "library": str(library),
         "system_under_test": "vei's collision-avoidance planner (CapEnabled=true)",
+        "sut_configurations": list(SUT_CONFIGS),
         "time_shift_search": {"half_width_s": opts.half_width_s, "step_s": opts.step_s, "dt_s": opts.dt},
         "scenarios": len(results),
         "benched": len(benched),
