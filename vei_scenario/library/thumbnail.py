@@ -43,7 +43,7 @@ def thumbnail_svg(result: CompileResult, xodr: bytes) -> str:
         f'<rect width="{SIZE_PX}" height="{SIZE_PX}" fill="#f4f4f0"/>',
     ]
     box = shapely.box(x0, y0, x0 + span, y0 + span)
-    lanes = [a.polygon for a in read_lane_areas_from_bytes(xodr, step_m=2.0, bbox=(x0, y0, x0 + span, y0 + span))]
+    lanes = [a.polygon for a in read_lane_areas_from_bytes(xodr, step_m=5.0, bbox=(x0, y0, x0 + span, y0 + span))]
     if lanes:
         road = shapely.union_all(lanes).intersection(box).simplify(0.3)
         for poly in getattr(road, "geoms", [road]):
