@@ -115,6 +115,8 @@ def main(argv: list[str] | None = None) -> int:
             f"  per clip: {wall / args.n:.3f} s wall, {wall * cores / args.n:.3f} core-s; "
             f"1000 clips at this rate: {1000 * wall / args.n / 60:.1f} min (target <= 10 min)"
         )
+        for r in first.failed[:5]:
+            print(f"  could not be compiled: {r['error']}")
         print(
             f"  second run, nothing changed: {rerun:.2f} s ({again.kept} rows kept, {again.compiled} compiled; "
             f"target <= 10 s for 1000: {rerun * 1000 / args.n:.1f} s at this rate)"

@@ -260,8 +260,17 @@ def build_document(rec: Recording, frame: LocalFrame, noise: bool) -> dict:
                     "y_m": round(float(ry[k]), 3),
                 }
             )
+    # a road user in view for one frame only is left unannotated, as annotators leave a glimpse (and one
+    # observation is no trajectory: vei refuses an e-scooter track seen once)
+    seen: dict[str, int] = {}
+    for objs in objects:
+        for o in objs:
+            seen[o["track_id"]] = seen.get(o["track_id"], 0) + 1
     frames = [
-        {"t": round(rec.t_gps0 + float(t) - rec.time_offset_s, 3), "objects": sorted(objs, key=lambda o: o["track_id"])}
+        {
+            "t": round(rec.t_gps0 + float(t) - rec.time_offset_s, 3),
+            "objects": sorted((o for o in objs if seen[o["track_id"]] > 1), key=lambda o: o["track_id"]),
+        }
         for t, objs in zip(tf, objects)
     ]
     return {
