@@ -93,3 +93,13 @@ def test_cli_exit_status_and_bad_library(bench, tmp_path):
         text=True,
     )
     assert r.returncode == 2 and "no library.json" in r.stderr and r.stderr.count("\n") == 1
+
+
+def test_a_chosen_configuration_alone(bench, tmp_path):
+    root, full = bench
+    doc = run_bench(root / "library", tmp_path, BenchOptions(half_width_s=0.4, step_s=0.05, configurations=(4,)))
+    assert doc["sut_configurations"] == [4]
+    for r, f in zip(doc["results"], full["results"]):
+        if r["status"] == "ok":
+            assert list(r["configurations"]) == ["4"] and r["configurations"]["4"] == f["configurations"]["4"]
+            assert r["fails"] == bool(f["configurations"]["4"]["collisions"])

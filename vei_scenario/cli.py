@@ -8,6 +8,7 @@ exit with code 2; validation findings exit with 1.
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import errno
 import json
 import math
@@ -66,6 +67,13 @@ TIME_UNIT_HELP = "unit of an OpenLABEL clip's timestamps written as numbers (def
 FRAME_RATE_HELP = (
     "frame rate of an OpenLABEL clip without timestamps (frame k at k / HZ s; e.g. 10 for KITTI conversions)"
 )
+
+
+def _int_list(text: str) -> tuple[int, ...]:
+    try:
+        return tuple(sorted({int(v) for v in text.split(",")}))
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text[:40]!r} is not a list of numbers like 4,5") from None
 
 
 def _osc_minor(text: str) -> int:
@@ -182,6 +190,8 @@ def _cmd_bench(args: argparse.Namespace) -> int:
     from vei_scenario.bench import BenchOptions, run_bench
 
     opts = BenchOptions(half_width_s=args.half_width, step_s=args.step, dt=args.dt, workers=args.workers)
+    if args.configurations:
+        opts = dataclasses.replace(opts, configurations=args.configurations)
     index = Path(args.library) / "library.json"
     total = None
     if index.is_file():
@@ -642,6 +652,12 @@ def build_parser() -> argparse.ArgumentParser:
     )
     bn.add_argument("--step", type=_number(0.001, 10), default=0.01, help="TimeShift search step, s (0.01)")
     bn.add_argument("--dt", type=DT, default=0.01, help="fixed step in s (default 0.01)")
+    bn.add_argument(
+        "--configurations",
+        type=_int_list,
+        metavar="N,N",
+        help="the configurations to run (default 1,2,3,4,5; 4 and 5 have the planner on)",
+    )
     bn.add_argument("--workers", type=WORKERS, help="threads of the sweep kernel (default: all cores)")
     bn.add_argument("--quiet", action="store_true", help="no progress bar")
     bn.set_defaults(func=_cmd_bench)

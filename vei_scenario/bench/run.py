@@ -39,8 +39,15 @@ class BenchOptions:
     step_s: float = 0.01
     dt: float = 0.01
     workers: int | None = None
+    #: the configurations to run, by number (1-5); a scenario fails when one with the planner on collides
+    configurations: tuple[int, ...] = tuple(n for n, _, _ in CONFIGURATIONS)
 
     def check(self) -> None:
+        known = {n for n, _, _ in CONFIGURATIONS}
+        if not self.configurations or not set(self.configurations) <= known:
+            raise VeiInputError(None, "--configurations", f"{self.configurations!r}: choose among 1-5")
+        if not set(self.configurations) & set(SUT_CONFIGS):
+            raise VeiInputError(None, "--configurations", "none has the planner on (4 or 5): nothing to test")
         if not (math.isfinite(self.half_width_s) and 0 <= self.half_width_s <= 30):
             raise VeiInputError(None, "--half-width", f"{self.half_width_s!r} is outside 0..30 s")
         if not (math.isfinite(self.step_s) and 0.001 <= self.step_s <= 10):
@@ -97,10 +104,11 @@ def bench_scenario(xosc: Path, centre: float, opts: BenchOptions) -> dict:
     from vei_scenario.sweep.evaluate import evaluate_local
 
     values = shifts(centre, opts)
-    variants = [{"TimeShift": repr(s), **cfg} for _, _, cfg in CONFIGURATIONS for s in values]
+    chosen = [c for c in CONFIGURATIONS if c[0] in opts.configurations]
+    variants = [{"TimeShift": repr(s), **cfg} for _, _, cfg in chosen for s in values]
     rows = evaluate_local(str(xosc), variants, opts.dt, opts.workers or os.cpu_count() or 1)
     configs = {}
-    for k, (n, name, cfg) in enumerate(CONFIGURATIONS):
+    for k, (n, name, cfg) in enumerate(chosen):
         part = rows[k * len(values) : (k + 1) * len(values)]
         configs[str(n)] = {"description": name, "parameters": cfg, **_config_summary(values, part, opts.step_s)}
     return configs
@@ -148,7 +156,7 @@ def run_bench(
             except VeiInputError as exc:
                 row.update(status="error", error=" ".join(str(exc).split()))
             else:
-                sut = [(n, configs[str(n)]) for n in SUT_CONFIGS]
+                sut = [(n, configs[str(n)]) for n in SUT_CONFIGS if str(n) in configs]
                 failing = [(n, c) for n, c in sut if c["collisions"]]
                 row.update(
                     status="ok",
@@ -175,7 +183,8 @@ def run_bench(
         "format": "vei-bench/1",
         "library": str(library),
         "system_under_test": "vei's collision-avoidance planner (CapEnabled=true)",
-        "sut_configurations": list(SUT_CONFIGS),
+        "sut_configurations": [n for n in SUT_CONFIGS if n in opts.configurations],
+        "configurations": list(opts.configurations),
         "time_shift_search": {"half_width_s": opts.half_width_s, "step_s": opts.step_s, "dt_s": opts.dt},
         "scenarios": len(results),
         "benched": len(benched),
