@@ -4,8 +4,8 @@ development history, and every command the docs show runs as written.
 
 How a page's commands are run: in a fresh folder holding a copy of ``examples/`` and the case study
 compiled to ``out/case_study/`` (what README's main command leaves), with the test's ``vei`` and
-``python`` first on PATH. ```bash blocks run line by line (a line ending in a backslash goes on),
-```console blocks run their ``$ `` lines, ```python blocks run as scripts; all of one page in order,
+``python`` first on PATH. A ```bash block runs as one script (``bash -e``: every line must succeed),
+a ```console block's ``$ `` lines one by one, a ```python block as a script; all of one page in order,
 in one folder. A block after ``<!-- skip: reason -->`` is not run (installs); one after ``<!-- needs:
 NAME -->`` runs only where ``../shared/NAME`` is beside the checkout (esmini, the Euro NCAP pack),
 linked into the folder as ``NAME``. The two commands README.md opens with are what CI itself runs.
@@ -67,7 +67,7 @@ def blocks(text: str) -> list[Block]:
         elif kind == "console":
             commands = _joined([ln[2:] for ln in _continued(body) if ln.startswith("$ ")])
         else:
-            commands = _joined(body)
+            commands = ("\n".join(body),) if any(ln.strip() and not ln.lstrip().startswith("#") for ln in body) else ()
         found.append(Block(kind, commands, start + 1, skip and skip.group(1), needs and needs.group(1)))
         i += 1
     return found
@@ -142,12 +142,8 @@ def test_every_command_on_the_page_runs(page, case_study, tmp_path):
             if not link.exists():
                 link.symlink_to(SHARED / block.needs)
         for command in block.commands:
-            if block.kind == "python":
-                run = subprocess.run([sys.executable, "-c", command], cwd=tmp_path, env=env, capture_output=True,
-                                     text=True, timeout=600)
-            else:
-                run = subprocess.run(["bash", "-c", command], cwd=tmp_path, env=env, capture_output=True, text=True,
-                                     timeout=600)
+            shell = ["bash", "-e", "-o", "pipefail", "-c"] if block.kind != "python" else [sys.executable, "-c"]
+            run = subprocess.run([*shell, command], cwd=tmp_path, env=env, capture_output=True, text=True, timeout=600)
             shown = command if len(command) < 300 else command[:300] + " ..."
             assert run.returncode == 0, f"{page}:{block.line}: {shown}\n{run.stdout[-2000:]}\n{run.stderr[-2000:]}"
             assert "Traceback" not in run.stderr, f"{page}:{block.line}: {shown}\n{run.stderr[-2000:]}"
