@@ -2,7 +2,7 @@
 
 Each sub-command parses its arguments and calls one library function. User errors
 (:class:`~vei_scenario.errors.VeiInputError`) print one line ``vei: error: FILE: FIELD: REASON`` and
-exit with code 2; validation findings exit with 1.
+exit with code 2; validation findings, and a fault of the user's controller while it runs, exit with 1.
 """
 
 from __future__ import annotations
@@ -21,6 +21,8 @@ from vei_scenario.errors import VeiInputError
 EXIT_USER_ERROR = 2
 #: A sweep that wrote its catalog but some of whose variants could not be run (their rows say why).
 EXIT_VARIANTS_FAILED = 1
+#: The user's controller (the system under test) failed while running: raised, or returned no command.
+EXIT_CONTROLLER_FAULT = 1
 
 
 class _Parser(argparse.ArgumentParser):
@@ -134,6 +136,7 @@ def _cmd_run(args: argparse.Namespace) -> int:
     from vei_scenario.variation import distributed_scenario
 
     values = parse_param_overrides(args.param)
+    controllers = _controllers(args)
     if not args.dist and (base := distributed_scenario(args.scenario)) is not None:  # a distribution alone
         args.scenario, args.dist = base, args.scenario
     if args.dist:  # a variant of a ParameterValueDistribution (esmini's --param_dist/--param_permutation)
@@ -153,6 +156,7 @@ def _cmd_run(args: argparse.Namespace) -> int:
         coupling=args.coupling,
         osi=args.osi,
         cfg=MetricConfig(zone_ttc=args.zone_ttc),
+        controllers=controllers,
     )
     for w in report.metrics.get("warnings", ()):
         print(f"vei: warning: {w}", file=sys.stderr)
@@ -207,7 +211,10 @@ def _cmd_study(args: argparse.Namespace) -> int:
     from vei_scenario.study import run_study, table_text
 
     zone = "approx" if args.paper else args.zone_ttc
-    report = run_study(args.input, args.output, args.dt, args.time_shift, plots=not args.no_plots, zone_ttc=zone)
+    report = run_study(
+        args.input, args.output, args.dt, args.time_shift, plots=not args.no_plots, zone_ttc=zone,
+        controllers=_controllers(args),
+    )  # fmt: skip
     print(f"{report.scenario}: five configurations at TimeShift {report.time_shift_s:+.3f} s")
     print(table_text(report.rows))
     print(f"wrote {len(report.written)} files under {args.output}")
@@ -217,6 +224,7 @@ def _cmd_study(args: argparse.Namespace) -> int:
 def _cmd_sweep(args: argparse.Namespace) -> int:
     from vei_scenario.reports.plot_worker import PlotWorker
 
+    controllers = _controllers(args)
     plotter = PlotWorker()  # forked first: it imports matplotlib while this process imports the sweep
     try:
         from vei_scenario.sweep import run_sweep
@@ -237,6 +245,7 @@ def _cmd_sweep(args: argparse.Namespace) -> int:
             args.osi_traces,
             args.osi_format,
             args.zone_ttc,
+            controllers,
         )
     finally:
         plotter.close()
@@ -309,6 +318,7 @@ def _cmd_risk(args: argparse.Namespace) -> int:
         args.tol,
         args.dt,
         args.workers,
+        _controllers(args),
     )
     for r in results:
         fixed = ", ".join(f"{k}={v}" for k, v in r.parameters.items() if k in {v.split("=")[0] for v in args.vary})
@@ -330,7 +340,7 @@ def _cmd_falsify(args: argparse.Namespace) -> int:
     axes = [a for a in axes if a.name not in {g.name for g in given}] + given  # the command line wins
     result = falsify(
         args.scenario, axes, parse_param_overrides(args.param), args.target, args.slices, args.tol,
-        seed=args.seed, dt=args.dt, workers=args.workers, out_dir=args.output,
+        seed=args.seed, dt=args.dt, workers=args.workers, out_dir=args.output, controllers=_controllers(args),
     )  # fmt: skip
     print(f"{len(result.regions)} failure region(s) of {args.target} found in {result.runs} runs")
     for r in result.regions:
@@ -351,7 +361,7 @@ def _cmd_probability(args: argparse.Namespace) -> int:
     estimators = ("monte-carlo", "importance-sampling") if args.estimator == "both" else (args.estimator,)
     results = estimate_probability(
         args.scenario, args.dist, args.target, estimators, args.runs, parse_param_overrides(args.param),
-        args.band, args.seed, args.dt, args.workers,
+        args.band, args.seed, args.dt, args.workers, _controllers(args),
     )  # fmt: skip
     for e in results:
         extra = f", {e.levels} level(s)" if e.estimator == "importance-sampling" else ""
@@ -369,6 +379,10 @@ def _cmd_probability(args: argparse.Namespace) -> int:
         doc = {"scenario": str(args.scenario), "distribution": str(args.dist), "target": args.target,
                "fixed": parse_param_overrides(args.param), "seed": args.seed,
                "estimates": [e.as_dict() for e in results]}  # fmt: skip
+        if args.controller:
+            from vei_scenario.sut import sut_document
+
+            doc["system_under_test"] = sut_document(_controllers(args))
         write_bytes_atomic(Path(args.output), (json_text(doc, indent=2) + "\n").encode())
         print(f"wrote {args.output}")
     return 0
@@ -413,6 +427,33 @@ ZONE_HELP = (
     "to a road user ahead in the ego's lane band, blind to crossings); both minima are always reported"
 )
 BACKEND_HELP = "native: C models compiled into the FMU (default); python: pythonfmu (needs the [fmu] extra)"
+
+
+CONTROLLER_HELP = (
+    "drive ENTITY's speed by your own controller, the system under test, from the start to the end: "
+    "ENTITY=path/file.py:Class or ENTITY=package.module:Class (step(obs) returns the acceleration in m/s²; "
+    "the entity keeps its path or lane); constructed with the scenario's controller properties of that entity"
+)
+
+
+def _controller_options(p: argparse.ArgumentParser) -> None:
+    p.add_argument("--controller", action="append", default=[], metavar="ENTITY=TARGET", help=CONTROLLER_HELP)
+    p.add_argument(
+        "--controller-param",
+        action="append",
+        default=[],
+        metavar="NAME=VALUE",
+        help="a property for the --controller class's constructor (a keyword argument, as text)",
+    )
+
+
+def _controllers(args: argparse.Namespace) -> tuple:
+    """The systems under test the command line plugs in, loaded and checked before anything runs."""
+    if not args.controller and not args.controller_param:
+        return ()
+    from vei_scenario.sut import parse_controller_options
+
+    return parse_controller_options(args.controller, args.controller_param)
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -497,6 +538,7 @@ def build_parser() -> argparse.ArgumentParser:
         help="how entities see each other within a step: sequential (default) or jacobi (as a co-simulation "
         "master stepping all FMUs on the previous outputs)",
     )
+    _controller_options(r)
     r.set_defaults(func=_cmd_run)
 
     st = sub.add_parser("study", help="the seed paper's five configurations at the collision timing shift")
@@ -511,6 +553,7 @@ def build_parser() -> argparse.ArgumentParser:
     st.add_argument(
         "--paper", action="store_true", help="the seed paper's table: zones and safety index from its approximate TTC"
     )
+    _controller_options(st)
     st.set_defaults(func=_cmd_study)
 
     sw = sub.add_parser(
@@ -561,6 +604,7 @@ def build_parser() -> argparse.ArgumentParser:
         "(collisions with CapEnabled=true), all, or variant numbers 3,17,42",
     )
     sw.add_argument("--osi-format", choices=("mcap", "osi"), default="mcap", help="trace format (default mcap)")
+    _controller_options(sw)
     sw.set_defaults(func=_cmd_sweep)
 
     rk = sub.add_parser(
@@ -587,6 +631,7 @@ def build_parser() -> argparse.ArgumentParser:
     rk.add_argument("--dt", type=DT, default=0.01, help="fixed step in s (default 0.01)")
     rk.add_argument("--workers", type=WORKERS, help="worker processes (default: all cores)")
     rk.add_argument("-o", "--output", help="directory for risk.json and the critical scenarios")
+    _controller_options(rk)
     rk.set_defaults(func=_cmd_risk)
 
     fz = sub.add_parser(
@@ -612,6 +657,7 @@ def build_parser() -> argparse.ArgumentParser:
     fz.add_argument("--dt", type=DT, default=0.01, help="fixed step in s (default 0.01)")
     fz.add_argument("--workers", type=WORKERS, help="worker threads or processes (default: all cores)")
     fz.add_argument("-o", "--output", help="directory for falsify.json and the regions' worst scenarios")
+    _controller_options(fz)
     fz.set_defaults(func=_cmd_falsify)
 
     pr = sub.add_parser(
@@ -640,6 +686,7 @@ def build_parser() -> argparse.ArgumentParser:
     pr.add_argument("--dt", type=DT, default=0.01, help="fixed step in s (default 0.01)")
     pr.add_argument("--workers", type=WORKERS, help="worker threads or processes (default: all cores)")
     pr.add_argument("-o", "--output", help="write the estimates as JSON here")
+    _controller_options(pr)
     pr.set_defaults(func=_cmd_probability)
 
     vw = sub.add_parser("view", help="play a run on its road: moving boxes, trails, TTC zones, the collision")
@@ -766,8 +813,13 @@ def main(argv: list[str] | None = None) -> int:
         args = parser.parse_args(argv)
     except SystemExit as exc:  # --help, --version (0) or a refused argument (2, said in one line)
         return int(exc.code or 0) if not isinstance(exc.code, str) else EXIT_USER_ERROR
+    from vei_scenario.sut.contract import ControllerFault
+
     try:
         return args.func(args)
+    except ControllerFault as exc:  # the user's code: one line; at load (no step time) it is bad input
+        print(f"vei: error: {_one_line(str(exc))}", file=sys.stderr)
+        return EXIT_USER_ERROR if exc.t_s is None else EXIT_CONTROLLER_FAULT
     except VeiInputError as exc:
         print(f"vei: error: {_one_line(str(exc))}", file=sys.stderr)
         return EXIT_USER_ERROR

@@ -80,11 +80,13 @@ class Region:
     worst_robustness: float
     worst: dict[str, str]
     dt: float = 0.01
+    #: the options that plug the system under test in again (sut.reproduce_options)
+    options: str = ""
 
     def reproduce(self, scenario: str) -> str:
         params = " ".join(f"--param {k}={v}" for k, v in self.worst.items())
         step = f" --dt {self.dt:g}" if self.dt != 0.01 else ""
-        return f"vei run {scenario} {params}{step}"
+        return f"vei run {scenario} {params}{step}{self.options}"
 
     def as_dict(self, scenario: str) -> dict:
         return {
@@ -110,6 +112,7 @@ class FalsifyResult:
     runs: int
     axes: list[Axis]
     written: list[Path] = field(default_factory=list)
+    system_under_test: list[dict] = field(default_factory=list)
 
 
 def parse_target(text: str) -> tuple[str, str, float] | None:
@@ -147,8 +150,11 @@ def robustness(metrics: dict, target: tuple[str, str, float] | None) -> float:
 
 
 class _Runner:
-    def __init__(self, scenario: str, fixed: dict[str, str], target, dt: float, workers: int | None) -> None:
+    def __init__(
+        self, scenario: str, fixed: dict[str, str], target, dt: float, workers: int | None, controllers: tuple = ()
+    ) -> None:
         self.scenario, self.fixed, self.target, self.dt, self.workers = scenario, fixed, target, dt, workers
+        self.controllers = controllers
         self.runs = 0
         self.cache: dict[tuple, float] = {}
 
@@ -158,7 +164,10 @@ class _Runner:
         keys = [tuple(sorted(v.items())) for v in variants]
         todo = [(k, v) for k, v in zip(keys, variants) if k not in self.cache]
         if todo:
-            rows = evaluate_local(self.scenario, [{**self.fixed, **v} for _, v in todo], self.dt, self.workers)
+            rows = evaluate_local(
+                self.scenario, [{**self.fixed, **v} for _, v in todo], self.dt, self.workers,
+                controllers=self.controllers,
+            )  # fmt: skip
             self.runs += len(rows)
             for (k, v), r in zip(todo, rows):
                 if r["status"] != "ok":
@@ -258,8 +267,11 @@ def falsify(
     dt: float = 0.01,
     workers: int | None = None,
     out_dir: str | Path | None = None,
+    controllers: tuple = (),
 ) -> FalsifyResult:
-    """Search the box ``axes`` (others at ``fixed`` or their defaults) for failures (``target``)."""
+    """Search the box ``axes`` (others at ``fixed`` or their defaults) for failures (``target``) of the
+    systems under test ``controllers`` (:class:`~vei_scenario.sut.ControllerSpec`; none: the scenario's
+    own controllers)."""
     from vei_scenario.checks import check_dt, finite
     from vei_scenario.interpreter.document import load_scenario
 
@@ -278,7 +290,7 @@ def falsify(
     primary = next((a for a in cont if a.name == "TimeShift"), cont[0])
     others = [a for a in cont if a is not primary]
     discrete = [a for a in axes if a.discrete]
-    run = _Runner(str(scenario.resolve()), fixed, crit, dt, workers)
+    run = _Runner(str(scenario.resolve()), fixed, crit, dt, workers, tuple(controllers))
     points = _slices(others, slices, seed)
     combos = [dict(zip([a.name for a in discrete], c)) for c in itertools.product(*(a.values for a in discrete))]
     regions: list[Region] = []
@@ -291,11 +303,14 @@ def falsify(
                 w.slice_point = p
                 windows.append(w)
         regions += _regions(run, windows, combo, primary, others, spacing, tol, len(regions))
+    from vei_scenario.sut import reproduce_options, sut_document
+
+    sut = sut_document(tuple(controllers))
     for r in regions:
-        r.dt = dt
+        r.dt, r.options = dt, reproduce_options(sut)
         _refine_edges(run, r, primary, others, spacing, tol)
         _worst(run, r, primary)
-    result = FalsifyResult(str(scenario), target, regions, run.runs, axes)
+    result = FalsifyResult(str(scenario), target, regions, run.runs, axes, system_under_test=sut)
     if out_dir is not None:
         result.written = _write(result, scenario, Path(out_dir), fixed)
     return result
@@ -522,6 +537,8 @@ def _write(result: FalsifyResult, scenario: Path, out: Path, fixed: dict[str, st
         ],
         "regions": [],
     }
+    if result.system_under_test:
+        doc["system_under_test"] = result.system_under_test
     for r in result.regions:
         rel = f"regions/region_{r.number:02d}_worst.xosc"
         files.add(out / rel, variant_xosc(scenario, r.worst, out / "regions"))

@@ -277,8 +277,10 @@ class Evaluator:
     """Runs variants and scores them: failure flags and robustness values (lower is worse)."""
 
     def __init__(self, scenario: Path, dims: list[Dimension], fixed: dict[str, str], target: str,
-                 band: tuple[float, float], dt: float, workers: int | None) -> None:  # fmt: skip
+                 band: tuple[float, float], dt: float, workers: int | None,
+                 controllers: tuple = ()) -> None:  # fmt: skip
         self.scenario, self.dims, self.fixed = str(Path(scenario).resolve()), dims, fixed
+        self.controllers = controllers
         self.target, self.band, self.dt, self.workers = target, band, dt, workers
         self.runs = 0
 
@@ -286,7 +288,7 @@ class Evaluator:
         from vei_scenario.sweep.evaluate import evaluate_local
 
         variants = [{**self.fixed, **{d.name: d.text(v) for d, v in zip(self.dims, row)}} for row in x]
-        rows = evaluate_local(self.scenario, variants, self.dt, self.workers)
+        rows = evaluate_local(self.scenario, variants, self.dt, self.workers, controllers=self.controllers)
         self.runs += len(rows)
         fail, rho = np.zeros(len(rows), bool), np.zeros(len(rows))
         for i, r in enumerate(rows):
@@ -366,9 +368,11 @@ def estimate_probability(
     seed: int = 0,
     dt: float = 0.01,
     workers: int | None = None,
+    controllers: tuple = (),
 ) -> list[Estimate]:
     """P(target) under the stochastic distribution ``dist`` (other parameters from ``fixed`` or their
-    defaults), by each of ``estimators``, ``runs`` runs each (plus the levels for importance sampling)."""
+    defaults), by each of ``estimators``, ``runs`` runs each (plus the levels for importance sampling);
+    ``controllers``: the systems under test (:class:`~vei_scenario.sut.ControllerSpec`)."""
     from vei_scenario.checks import check_dt, finite
     from vei_scenario.interpreter.document import check_values, load_scenario
 
@@ -383,7 +387,7 @@ def estimate_probability(
     dims = read_stochastic(dist, doc.parameter_types)
     fixed = dict(fixed or {})
     check_values(doc.parameter_types, fixed)
-    evaluate = Evaluator(Path(scenario), dims, fixed, target, band, dt, workers)
+    evaluate = Evaluator(Path(scenario), dims, fixed, target, band, dt, workers, tuple(controllers))
     rng = np.random.default_rng(seed)
     out = []
     for name in estimators:

@@ -121,6 +121,10 @@ def metrics_document(result: RunResult, cfg: MetricConfig) -> dict:
             for n, tr in result.traces.items()
         },
     }
+    if result.controllers:  # the user's system on an entity: which code, by file and hash
+        from vei_scenario.sut import sut_document
+
+        doc["system_under_test"] = sut_document(result.controllers)
     if result.warnings:  # (only when there are: a run without any writes what it always wrote)
         doc["warnings"] = list(result.warnings)
     return doc
@@ -135,6 +139,8 @@ def summary_text(doc: dict) -> str:
     m = doc["metrics"]
     params = ", ".join(f"{k}={v}" for k, v in doc["parameters"].items())
     lines = [f"{doc['scenario']} ({params}); {doc['duration_s']:.2f} s at dt {doc['dt_s']} s ({doc['end_reason']})"]
+    for s in doc.get("system_under_test", ()):
+        lines.append(f"system under test on {s['entity']}: {s['controller']} (sha256 {(s['sha256'] or '-')[:12]})")
     if m:
         coll = f"COLLISION at {m['collision_time_s']} s" if m["collision"] else "no collision"
         z = m["ttc_zones_s"]
@@ -187,9 +193,11 @@ def run_to(
     cfg: MetricConfig | None = None,
     coupling: str = "sequential",
     osi: str | Path | None = None,
+    controllers: tuple = (),
 ) -> RunReport:
     """Run ``scenario`` and, with ``out_dir``, write its files there; with ``osi``, also an ASAM OSI
-    ground-truth trace (``.mcap`` or ``.osi``) at that path. All or nothing."""
+    ground-truth trace (``.mcap`` or ``.osi``) at that path; ``controllers``: the systems under test
+    (:class:`~vei_scenario.sut.ControllerSpec`). All or nothing."""
     from vei_scenario.checks import check_dt
 
     check_dt(dt)
@@ -199,7 +207,7 @@ def run_to(
         if Path(osi).suffix.lower() not in FORMATS:
             raise VeiInputError(osi, "--osi", f"unknown trace format {Path(osi).suffix!r} (use .mcap or .osi)")
     cfg = cfg or MetricConfig()
-    result = run_scenario(scenario, parameters, dt, coupling=coupling)
+    result = run_scenario(scenario, parameters, dt, coupling=coupling, controllers=controllers)
     doc = metrics_document(result, cfg)
     written: list[Path] = []
     files = OutputSet()

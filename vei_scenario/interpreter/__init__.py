@@ -19,10 +19,12 @@ def run_scenario(
     dt: float = 0.01,
     max_time_s: float = DEFAULT_MAX_TIME_S,
     coupling: str = "sequential",
+    controllers: tuple = (),
 ) -> RunResult:
     """Load ``path``, apply parameter overrides (strings as in the file, or Python booleans and
     numbers), run at the fixed step ``dt`` (``coupling``: see
-    :data:`~vei_scenario.interpreter.engine.COUPLINGS`).
+    :data:`~vei_scenario.interpreter.engine.COUPLINGS`); ``controllers``: the systems under test
+    (:class:`~vei_scenario.sut.ControllerSpec`), each driving its entity's speed throughout.
 
     A file the interpreter cannot read because it breaks the ASAM schema is refused with the schema's
     first complaint (file, line, reason), not with the place where reading it failed
@@ -30,7 +32,7 @@ def run_scenario(
     doc = None
     with refused_when_malformed(path, lambda: doc.root if doc is not None else None):
         doc = load_scenario(path, parameters)
-        return Simulation(doc, dt, max_time_s, coupling).run()
+        return Simulation(doc, dt, max_time_s, coupling, controllers).run()
 
 
 __all__ = ["RunResult", "Simulation", "load_scenario", "run_scenario"]

@@ -82,6 +82,8 @@ class RunResult:
     road_file: Path | None = None
     #: What the run played in its own way (Context.warn): file, line, reason, once each.
     warnings: tuple[str, ...] = ()
+    #: The systems under test plugged in (:class:`~vei_scenario.sut.ControllerSpec`), if any.
+    controllers: tuple = ()
 
 
 def _act(ctx) -> None:
@@ -223,7 +225,10 @@ class Simulation:
         dt: float = 0.01,
         max_time_s: float = DEFAULT_MAX_TIME_S,
         coupling: str = "sequential",
+        controllers: tuple = (),
     ) -> None:
+        """``controllers``: :class:`~vei_scenario.sut.ControllerSpec` of the systems under test, each in
+        charge of its entity's speed throughout (:func:`~vei_scenario.interpreter.plugged.plug`)."""
         from vei_scenario.checks import check_dt, finite
 
         root = doc.root
@@ -232,6 +237,7 @@ class Simulation:
         if coupling not in COUPLINGS:
             raise ValueError(f"coupling must be one of {', '.join(COUPLINGS)}")
         self.doc, self.dt, self.max_time, self.coupling = doc, dt, max_time_s, coupling
+        self.controllers = tuple(controllers)
         self.ctx = Context(doc.path, 0.0, dt, 0, {}, dict(doc.parameters))
         ctx = self.ctx
         ctx.road_file = doc.road_file
@@ -262,6 +268,10 @@ class Simulation:
             if ctrl is not None:
                 c = make_controller(ctrl, ctx)
                 ctx.entities[obj.get("name")].controllers[c.name] = c
+        if controllers:
+            from vei_scenario.interpreter.plugged import plug
+
+            plug(ctx, tuple(controllers), doc.path)
 
         self.init_actions = []
         privates = []
@@ -279,6 +289,7 @@ class Simulation:
 
         self.storyboard = Storyboard(root.find("Storyboard"), ctx)
         self.ego, self.threat = self._roles()
+        ctx.threat = self.threat
 
     def _roles(self) -> tuple[str, str | None]:
         """The ego (entity named Ego, else the first) and its threat (the planner's threatEntity,
@@ -467,6 +478,7 @@ class Simulation:
             reason,
             self.doc.road_file,
             tuple(ctx.warnings),
+            self.controllers,
         )
 
     def _collide(self, collisions: list) -> None:

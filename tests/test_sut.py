@@ -1,0 +1,187 @@
+"""The user's own controller (the system under test) on the ego: the contract, every command, its faults.
+
+The controllers in tests/data/sut/ were written from the contract alone, without reading vei's code
+(aeb_good.AEB, aeb_flawed.LateAEB / BlindLeftAEB, faulty.*): they are what a user would bring.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import shlex
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from vei_scenario.cli import main
+from vei_scenario.interpreter import run_scenario
+from vei_scenario.sut import ControllerFault, command_from, parse_controller_options
+
+DATA = Path(__file__).parent / "data" / "sut"
+PLANNER = "vei_scenario.sut.planner:CollisionAvoidancePlanner"
+
+
+@pytest.fixture(scope="module")
+def scenario(compiled) -> Path:
+    return next(p for p in compiled["case_study"].written if p.name == "scenario.xosc")
+
+
+def _config(rider: str, shift: str = "2.197") -> dict[str, str]:
+    return {"RiderType": rider, "CapEnabled": "true", "TimeShift": shift}
+
+
+@pytest.mark.parametrize("rider", ["normal", "aggressive"])
+def test_vei_planner_as_a_plugged_class_reproduces_the_built_in_one(scenario, rider):
+    """Study configurations 4 and 5: the planner seen only through the contract drives as the built-in."""
+    built_in = run_scenario(scenario, _config(rider))
+    plugged = run_scenario(scenario, _config(rider), controllers=parse_controller_options([f"Ego={PLANNER}"]))
+    for name, a in built_in.traces.items():
+        b = plugged.traces[name]
+        assert np.abs(a.x - b.x).max() <= 1e-9 and np.abs(a.y - b.y).max() <= 1e-9
+        assert np.abs(a.speed - b.speed).max() <= 1e-9
+    assert plugged.traces["Ego"].status == built_in.traces["Ego"].status  # cap_cruise / cap_brake
+    assert "cap_brake" in plugged.traces["Ego"].status
+
+
+def test_a_late_aeb_collides_where_a_good_one_does_not(scenario):
+    values = _config("aggressive")
+    late = run_scenario(scenario, values, controllers=parse_controller_options([f"Ego={DATA}/aeb_flawed.py:LateAEB"]))
+    good = run_scenario(scenario, values, controllers=parse_controller_options([f"Ego={DATA}/aeb_good.py:AEB"]))
+    assert [c[1:] for c in late.collisions] == [("Ego", "scooter_1")]
+    assert good.collisions == []
+    # the command went through the vehicle model: the late AEB's -4 m/s² within the jerk limit
+    assert late.traces["Ego"].accel.min() == pytest.approx(-4.0)
+    assert set(late.traces["Ego"].status[1:]) == {"sut"}  # (t = 0 is logged before the first step)
+
+
+def test_the_ego_keeps_its_path_and_its_performance(scenario):
+    """A full-throttle controller: the speed rises at the Performance's maxAcceleration (4 m/s²), the
+    ego stays on the path the built-in run drives."""
+    src = "class Floor:\n    def __init__(self, **kw):\n        pass\n    def step(self, obs):\n        return 50.0\n"
+    path = DATA.parent.parent / "_floor_tmp.py"
+    try:
+        path.write_text(src)
+        r = run_scenario(scenario, _config("replay"), controllers=parse_controller_options([f"Ego={path}:Floor"]))
+    finally:
+        path.unlink()
+    ego = r.traces["Ego"]
+    assert ego.accel.max() == pytest.approx(4.0)
+    assert ego.speed[100] == pytest.approx(5.61 + 4.0 * 1.0 - 4.0**2 / (2 * 50.0), abs=0.05)  # jerk ramp
+    base = run_scenario(scenario, {"RiderType": "replay"}).traces["Ego"]
+    # same path: every plugged position lies on the polyline the unplugged ego drives
+    d = np.hypot(ego.x[:300, None] - base.x[None, :], ego.y[:300, None] - base.y[None, :]).min(axis=1)
+    assert d.max() < 0.05
+
+
+def test_command_forms():
+    assert command_from(-2, "E=x", 0.0).accel_mps2 == -2.0
+    c = command_from({"accel_mps2": -3.5, "state": "brake,hard"}, "E=x", 0.0)
+    assert (c.accel_mps2, c.state) == (-3.5, "brake;hard")
+
+    class Out:
+        accel_mps2 = 1.5
+
+    assert command_from(Out(), "E=x", 0.0).accel_mps2 == 1.5
+    for bad, says in ((True, "True"), (None, "None"), ("brake", "str 'brake'"), ({"a": 1}, "without accel_mps2"),
+                      (float("inf"), "non-finite"), (-1e3, "beyond ±100")):  # fmt: skip
+        with pytest.raises(ControllerFault, match=says):
+            command_from(bad, "Ego=f.py:C", 1.25)
+    with pytest.raises(ControllerFault, match=r"^controller Ego=f.py:C at t = 1.25 s: "):
+        command_from("x", "Ego=f.py:C", 1.25)
+
+
+def _vei(capsys, *argv: str) -> tuple[int, str, str]:
+    code = main([str(a) for a in argv])
+    out = capsys.readouterr()
+    return code, out.out, out.err
+
+
+FAULTS = {
+    # class: (exit code, the one line's tail)
+    "RaisesAt2s": (1, "at t = 2.00 s: step raised RuntimeError: sensor fusion lost track"),
+    "ReturnsNaN": (1, "at t = 1.00 s: step returned a non-finite command (nan)"),
+    "ReturnsAbsurd": (1, "at t = 0.00 s: step returned 1e+06 m/s², beyond ±100 m/s² (no vehicle can)"),
+    "BadReturn": (1, "at t = 0.00 s: step returned str 'brake', not an acceleration"),
+    "NoStep": (2, ": class NoStep has no step(obs) method"),
+    "WrongCtorArgs": (2, ": constructing WrongCtorArgs raised TypeError: "),
+    "Missing": (2, "has no class 'Missing' (it has: BadReturn, Hangs, NoStep"),
+}
+
+
+@pytest.mark.parametrize("cls", sorted(FAULTS))
+def test_faults_in_the_users_code_are_one_line_naming_it(scenario, tmp_path, capsys, cls):
+    code, out, err = _vei(capsys, "run", scenario, "--controller", f"Ego={DATA}/faulty.py:{cls}", "-o", tmp_path / "r")
+    want_code, tail = FAULTS[cls]
+    assert code == want_code
+    assert err.count("\n") == 1 and err.startswith(f"vei: error: controller Ego={DATA}/faulty.py:{cls}")
+    assert tail in err
+    assert not (tmp_path / "r").exists()  # nothing half-written
+
+
+def test_a_missing_file_and_an_unknown_entity_are_refused_before_running(scenario, capsys):
+    code, _, err = _vei(capsys, "run", scenario, "--controller", "Ego=no/such_file.py:AEB")
+    assert code == 2 and err == "vei: error: controller Ego=no/such_file.py:AEB: no/such_file.py: no such file\n"
+    code, _, err = _vei(capsys, "run", scenario, "--controller", f"Bob={DATA}/aeb_good.py:AEB")
+    assert code == 2 and err.endswith("--controller: no entity 'Bob' (entities: Ego, scooter_1)\n")
+    code, _, err = _vei(capsys, "run", scenario, "--controller", "Ego=no_such_package.mod:AEB")
+    assert code == 2 and "no module 'no_such_package'" in err
+
+
+def test_run_names_the_system_under_test_and_logs_its_state(scenario, tmp_path, capsys):
+    target = f"{DATA}/aeb_flawed.py:LateAEB"
+    code, out, _ = _vei(capsys, "run", scenario, "--param", "CapEnabled=true", "--controller", f"Ego={target}",
+                        "--controller-param", "ttc_brake_s=0.8", "-o", tmp_path, "--no-plots")  # fmt: skip
+    assert code == 0 and f"system under test on Ego: {target}" in out
+    doc = json.loads((tmp_path / "metrics.json").read_text())
+    sha = hashlib.sha256((DATA / "aeb_flawed.py").read_bytes()).hexdigest()
+    assert doc["system_under_test"] == [
+        {"entity": "Ego", "controller": target, "file": str(DATA / "aeb_flawed.py"), "sha256": sha,
+         "parameters": {"ttc_brake_s": "0.8"}}
+    ]  # fmt: skip
+    rows = [r.split(",") for r in (tmp_path / "trajectories.csv").read_text().splitlines()[1:]]
+    assert {r[-1] for r in rows[2:] if r[1] == "Ego"} == {"sut"}
+
+
+def test_a_sweep_with_a_faulty_controller_fails_each_variant_and_finishes(scenario, tmp_path, capsys):
+    code, out, err = _vei(capsys, "sweep", scenario, "--vary", "TimeShift=0:2:1", "--workers", "2", "--quiet",
+                          "--controller", f"Ego={DATA}/faulty.py:RaisesAt2s", "-o", tmp_path)  # fmt: skip
+    assert code == 1 and "3 variants (TimeShift): 0 collide, 0 do not, 3 failed" in out
+    assert "vei: 3 of 3 variants failed" in err and "sensor fusion lost track" in err
+    catalog = json.loads((tmp_path / "catalog.json").read_text())
+    assert [r["status"] for r in catalog["variants"]] == ["error"] * 3
+    assert catalog["system_under_test"][0]["controller"].endswith("faulty.py:RaisesAt2s")
+
+
+def test_falsify_finds_the_late_aebs_failures_and_its_reproduce_command_reproduces(scenario, tmp_path, capsys):
+    target = f"Ego={DATA}/aeb_flawed.py:LateAEB"
+    code, out, _ = _vei(capsys, "falsify", scenario, "--bounds", "TimeShift=1:4", "--values", "RiderType=replay",
+                        "--param", "CapEnabled=true", "--controller", target, "-o", tmp_path / "f")  # fmt: skip
+    assert code == 0
+    doc = json.loads((tmp_path / "f" / "falsify.json").read_text())
+    assert doc["regions"] and doc["system_under_test"][0]["entity"] == "Ego"
+    command = doc["regions"][0]["reproduce"]
+    assert f"--controller {target}" in command
+    argv = shlex.split(command)[1:]
+    code, out, _ = _vei(capsys, *argv, "--no-plots")
+    assert code == 0 and "COLLISION" in out  # plain vei, the printed options: the same failure
+
+
+def test_a_scenario_controller_with_a_module_property_drives_as_the_storyboard_activates(scenario, tmp_path):
+    """CARLA ScenarioRunner's convention: a Controller whose property ``module`` names the class (a file
+    found from the scenario's directory), assigned and activated as the scenario says."""
+    from lxml import etree
+
+    tree = etree.parse(str(scenario))
+    props = tree.find("Entities/ScenarioObject[@name='Ego']/ObjectController/Controller/Properties")
+    etree.SubElement(props, "Property", name="module", value="aeb_flawed.py:LateAEB")
+    for f in scenario.parent.iterdir():
+        if f.suffix == ".xodr":
+            (tmp_path / f.name).write_bytes(f.read_bytes())
+    (tmp_path / "aeb_flawed.py").write_bytes((DATA / "aeb_flawed.py").read_bytes())
+    path = tmp_path / "scenario.xosc"
+    tree.write(str(path))
+    on = run_scenario(path, _config("aggressive"))
+    assert set(on.traces["Ego"].status[1:]) == {"sut"} and on.collisions
+    off = run_scenario(path, {**_config("aggressive"), "CapEnabled": "false"})  # never activated: default
+    assert "sut" not in off.traces["Ego"].status
