@@ -146,7 +146,7 @@ def test_run_names_the_system_under_test_and_logs_its_state(scenario, tmp_path, 
 def test_a_sweep_with_a_faulty_controller_fails_each_variant_and_finishes(scenario, tmp_path, capsys):
     code, out, err = _vei(capsys, "sweep", scenario, "--vary", "TimeShift=0:2:1", "--workers", "2", "--quiet",
                           "--controller", f"Ego={DATA}/faulty.py:RaisesAt2s", "-o", tmp_path)  # fmt: skip
-    assert code == 1 and "3 variants (TimeShift): 0 collide, 0 do not, 3 failed" in out
+    assert code == 1 and "3 variants (TimeShift): 0 collide (0 with the ego moving), 0 do not, 3 failed" in out
     assert "vei: 3 of 3 variants failed" in err and "sensor fusion lost track" in err
     catalog = json.loads((tmp_path / "catalog.json").read_text())
     assert [r["status"] for r in catalog["variants"]] == ["error"] * 3
@@ -185,3 +185,28 @@ def test_a_scenario_controller_with_a_module_property_drives_as_the_storyboard_a
     assert set(on.traces["Ego"].status[1:]) == {"sut"} and on.collisions
     off = run_scenario(path, {**_config("aggressive"), "CapEnabled": "false"})  # never activated: default
     assert "sut" not in off.traces["Ego"].status
+
+
+def test_a_collision_with_the_ego_standing_is_said_to_be_one(scenario):
+    """The rider replayed 3.35 s late runs into the ego the planner has stopped: a collision, not the
+    planner's failure. The new metrics read off the trace independently."""
+    from vei_scenario.metrics import MetricConfig, PairSeries, compute_metrics
+
+    r = run_scenario(scenario, {"CapEnabled": "true", "RiderType": "replay", "TimeShift": "3.353814"})
+    m = compute_metrics(PairSeries.from_run(r), MetricConfig())
+    ego = r.traces["Ego"]
+    (t_hit, *_), k = r.collisions[0], int(round(r.collisions[0][0] / 0.01))
+    assert m["collision"] and not m["collision_ego_moving"]
+    assert m["ego_speed_at_contact_mps"] == round(float(ego.speed[k]), 4) == 0.0
+    still = np.flatnonzero(ego.speed[: k + 1] > 0.1)[-1] + 1  # the first step of the standstill
+    assert m["ego_standing_before_contact_s"] == pytest.approx(t_hit - r.t[still], abs=1e-3)
+    assert t_hit - r.t[still] > 0.5
+    onset = int(np.flatnonzero(ego.accel <= -1.0)[0])
+    assert m["brake_onset_s"] == pytest.approx(r.t[onset])
+    assert m["speed_reduction_mps"] == pytest.approx(ego.speed[onset] - ego.speed[k], abs=1e-4)
+    # the same run with the late AEB plugged in: the ego still moving at contact, the AEB's own failure
+    late = run_scenario(scenario, _config("aggressive"), controllers=parse_controller_options(
+        [f"Ego={DATA}/aeb_flawed.py:LateAEB"]))  # fmt: skip
+    m = compute_metrics(PairSeries.from_run(late), MetricConfig())
+    assert m["collision_ego_moving"] and m["ego_speed_at_contact_mps"] > 2.0 and m["ego_standing_before_contact_s"] == 0
+    assert 0 < m["ttc_at_brake_onset_s"] < 0.7  # it brakes at TTC < 0.6 s (one step late)

@@ -253,9 +253,10 @@ def _cmd_sweep(args: argparse.Namespace) -> int:
         print(f"vei: warning: {w}", file=sys.stderr)
     ok = [r for r in report.rows if r["status"] == "ok"]
     coll = sum(1 for r in ok if r["metrics"].get("collision"))
+    moving = sum(1 for r in ok if r["metrics"].get("collision_ego_moving"))
     print(
-        f"{len(report.rows)} variants ({', '.join(report.varied)}): {coll} collide, {len(ok) - coll} do not, "
-        f"{len(report.rows) - len(ok)} failed"
+        f"{len(report.rows)} variants ({', '.join(report.varied)}): {coll} collide ({moving} with the ego moving), "
+        f"{len(ok) - coll} do not, {len(report.rows) - len(ok)} failed"
     )
     out = Path(args.output)
     print(f"wrote {out / 'catalog.csv'}, {out / 'catalog.json'}, {out / 'report.html'}")
@@ -619,9 +620,10 @@ def build_parser() -> argparse.ArgumentParser:
     rk.add_argument("scenario", help="vei-compiled OpenSCENARIO file (.xosc)")
     rk.add_argument(
         "--target",
-        choices=("collision", "near-miss"),
+        choices=("collision", "collision_any", "near-miss"),
         default="collision",
-        help="what to find: collisions (default) or near misses (minimum TTC within --band)",
+        help="what to find: collisions with the ego moving (default; > 0.1 m/s at the first contact), every "
+        "collision (collision_any) or near misses (minimum TTC within --band)",
     )
     rk.add_argument("--vary", action="append", default=[], help="other parameters to search separately")
     rk.add_argument("--band", type=_pair, default=(0.5, 1.5), help="near-miss band of the minimum TTC, s (0.5:1.5)")
@@ -650,7 +652,12 @@ def build_parser() -> argparse.ArgumentParser:
     fz.add_argument("--values", action="append", default=[], metavar="NAME=V1,V2", help="a discrete set")
     fz.add_argument("--dist", help="take the box from a ParameterValueDistribution (ranges and value sets)")
     fz.add_argument("--param", action="append", default=[], metavar="NAME=VALUE", help="fix a parameter")
-    fz.add_argument("--target", default="collision", help="collision (default) or METRIC<VALUE, e.g. min_ttc_s<1.0")
+    fz.add_argument(
+        "--target",
+        default="collision",
+        help="collision (default: a collision with the ego moving, > 0.1 m/s at the first contact: a failure of "
+        "the system that drives it), collision_any (every contact) or METRIC<VALUE, e.g. min_ttc_s<1.0",
+    )
     fz.add_argument("--slices", type=_number(2, 200, integer=True), default=7, help="slices per other range")
     fz.add_argument("--tol", type=_number(1e-5, 10), default=0.005, help="edge tolerance on the primary axis")
     fz.add_argument("--seed", type=SEED, default=0, help="seed of the Sobol slices (two or more other ranges)")
@@ -672,7 +679,12 @@ def build_parser() -> argparse.ArgumentParser:
     )
     pr.add_argument("scenario", help="OpenSCENARIO file (.xosc)")
     pr.add_argument("--dist", required=True, help="stochastic ParameterValueDistribution file")
-    pr.add_argument("--target", choices=("collision", "near-miss"), default="collision", help="what counts")
+    pr.add_argument(
+        "--target",
+        choices=("collision", "collision_any", "near-miss"),
+        default="collision",
+        help="what counts: collision (default: the ego moving at the first contact), collision_any, near-miss",
+    )
     pr.add_argument(
         "--estimator",
         choices=("monte-carlo", "importance-sampling", "both"),

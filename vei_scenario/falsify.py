@@ -9,10 +9,11 @@ therefore treats one continuous parameter as the *primary* axis (TimeShift when 
 1. **Slices.** The other continuous parameters are sampled (evenly spaced for one, a scrambled Sobol
    sample for several, ``--slices`` per parameter) and crossed with every value of the discrete ones.
 2. **Line search on each slice.** A coarse scan along the primary axis, scored with a continuous
-   robustness value (the minimum box gap, ``-(1 + impact speed)`` on contact, or the margin of a metric
-   target such as ``min_ttc_s<1``), finds failing points directly and, around every local minimum of
-   the robustness below a margin, a bounded Brent minimisation (SciPy) climbs to the failures the scan
-   stepped over. Each failure is bisected to its window's edges (``--tol``).
+   robustness value (the minimum box gap, ``-(1 + impact speed)`` on contact with the ego moving, 0 on
+   contact with the ego standing, or the margin of a metric target such as ``min_ttc_s<1``), finds failing
+   points directly and, around every local minimum of the robustness below a margin, a bounded Brent
+   minimisation (SciPy) climbs to the failures the scan stepped over. Each failure is bisected to its
+   window's edges (``--tol``).
 3. **Regions.** Windows on neighbouring slices are one region when their intervals overlap, or when a
    probe on the slice half-way between them finds a window between them (a band that moves faster than
    its width). Each region's primary edges are the extreme window edges, refined along each other
@@ -115,30 +116,44 @@ class FalsifyResult:
     system_under_test: list[dict] = field(default_factory=list)
 
 
-def parse_target(text: str) -> tuple[str, str, float] | None:
-    """``collision`` (None) or ``METRIC<VALUE`` (``<``, ``<=``, ``>``, ``>=``) as (metric, op, value)."""
+#: The target that counts every contact, the ego standing or not (``collision`` counts the ego moving).
+COLLISION_ANY = "collision_any"
+_NOT_NUMERIC = ("collision", "collision_entities", "ttc_zones_s", "near_miss", "collision_ego_moving")
+
+
+def parse_target(text: str) -> tuple[str, str, float] | str | None:
+    """``collision`` (None: a collision with the ego moving, a failure of the system that drives it),
+    ``collision_any`` (every contact) or ``METRIC<VALUE`` (``<``, ``<=``, ``>``, ``>=``) as
+    (metric, op, value)."""
     from vei_scenario.metrics import METRICS
 
     if text == "collision":
         return None
+    if text == COLLISION_ANY:
+        return COLLISION_ANY
     m = _TARGET.match(text)
     if not m:
-        raise VeiInputError(None, "--target", f"{text!r} is not collision or METRIC<VALUE (e.g. min_ttc_s<1.0)")
+        raise VeiInputError(
+            None, "--target", f"{text!r} is not collision, collision_any or METRIC<VALUE (e.g. min_ttc_s<1.0)"
+        )
     metric, op, value = m.group(1), m.group(2), float(m.group(3))
-    if metric not in METRICS or metric in ("collision_entities", "ttc_zones_s", "collision"):
-        numeric = [k for k in METRICS if k not in ("collision", "collision_entities", "ttc_zones_s", "near_miss")]
+    if metric not in METRICS or metric in _NOT_NUMERIC:
+        numeric = [k for k in METRICS if k not in _NOT_NUMERIC]
         raise VeiInputError(None, "--target", f"unknown numeric metric {metric!r} (known: {', '.join(numeric)})")
     if not math.isfinite(value):
         raise VeiInputError(None, "--target", f"{text!r}: the value is not finite")
     return metric, op, value
 
 
-def robustness(metrics: dict, target: tuple[str, str, float] | None) -> float:
-    """Continuous failure margin: negative where the target holds (a failure), lower is worse."""
-    if metrics.get("collision"):
+def robustness(metrics: dict, target: tuple[str, str, float] | str | None) -> float:
+    """Continuous failure margin: negative where the target holds (a failure), lower is worse. A
+    collision with the ego standing (speed ≤ 0.1 m/s at the first contact) is no failure of the system
+    that drives it: 0, on the edge, unless the target is ``collision_any``."""
+    moving = metrics.get("collision_ego_moving") if target != COLLISION_ANY else metrics.get("collision")
+    if moving:
         return -(1.0 + float(metrics.get("impact_speed_mps") or 0.0))
-    if target is None:
-        return float(metrics["min_gap_m"])
+    if target is None or target == COLLISION_ANY:
+        return 0.0 if metrics.get("collision") else float(metrics["min_gap_m"])
     metric, op, value = target
     v = metrics.get(metric)
     if v is None:  # (never defined: e.g. no TTC when the boxes never approach) far from failing

@@ -32,6 +32,9 @@ import numpy as np
 from vei_scenario.errors import VeiInputError
 
 Z95 = 1.959963984540054
+#: collision: with the ego moving at the first contact (speed > 0.1 m/s), a failure of the system that
+#: drives it; collision_any: every contact; near-miss: no contact, the minimum TTC within the band.
+TARGETS = ("collision", "collision_any", "near-miss")
 #: Share of the nominal distribution in every proposal (defensive importance sampling).
 DEFENSIVE = 0.05
 #: A discrete parameter keeps the value of the kernel's centre with this probability.
@@ -295,10 +298,13 @@ class Evaluator:
             if r["status"] != "ok":
                 raise VeiInputError(self.scenario, "variant", f"{variants[i]} failed: {r['error']}")
             m = r["metrics"]
-            if m["collision"]:
+            counts = m["collision"] if self.target != "collision" else m["collision_ego_moving"]
+            if counts:
                 impact = m.get("impact_speed_mps") or 0.0
                 fail[i], rho[i] = True, -(1.0 + impact)
-            elif self.target == "collision":
+            elif self.target == "collision":  # (the ego standing at a contact: on the edge, no failure)
+                rho[i] = 0.0 if m["collision"] else m["min_gap_m"]
+            elif self.target == "collision_any":
                 rho[i] = m["min_gap_m"]
             else:
                 ttc = m.get("min_ttc_s")
@@ -377,8 +383,8 @@ def estimate_probability(
     from vei_scenario.interpreter.document import check_values, load_scenario
 
     check_dt(dt)
-    if target not in ("collision", "near-miss"):
-        raise VeiInputError(None, "--target", f"{target!r} is not collision or near-miss")
+    if target not in TARGETS:
+        raise VeiInputError(None, "--target", f"{target!r} is not one of {', '.join(TARGETS)}")
     if not (isinstance(runs, int) and 100 <= runs <= 10_000_000):
         raise VeiInputError(None, "--runs", f"{runs!r} is not a number of runs in 100..10000000")
     for b in band:

@@ -20,7 +20,9 @@ from vei_scenario.sweep.catalog import variant_xosc
 from vei_scenario.sweep.evaluate import evaluate_local, evaluate_variant
 from vei_scenario.variation import cartesian, parse_vary
 
-TARGETS = ("collision", "near-miss")
+#: collision: with the ego moving at the first contact (a failure of the system that drives it);
+#: collision_any: every contact; near-miss: no contact and the minimum TTC within the band.
+TARGETS = ("collision", "collision_any", "near-miss")
 #: Points of a scan at --tol that the compiled kernel runs without asking (~0.3 s per combination).
 MAX_FINE_SCAN = 50_000
 
@@ -35,6 +37,8 @@ class RiskSearch:
 
 def _holds(metrics: dict, target: str, band: tuple[float, float]) -> bool:
     if target == "collision":
+        return bool(metrics.get("collision_ego_moving"))
+    if target == "collision_any":
         return bool(metrics.get("collision"))
     ttc = metrics.get("min_ttc_s")
     return not metrics.get("collision") and ttc is not None and band[0] <= ttc <= band[1]

@@ -24,7 +24,7 @@ MAX_TRACES = 1000
 
 def trace_selection(rows: list[dict], which: str) -> list[dict]:
     """The rows whose variants get an OSI trace: ``collisions`` (every variant that collides),
-    ``failures`` (collisions with the planner on: CapEnabled=true), ``all``, or variant numbers
+    ``failures`` (collisions with the planner on, CapEnabled=true, and the ego moving), ``all``, or variant numbers
     ``3,17,42``."""
     ok = [r for r in rows if r["status"] == "ok"]
     if which == "all":
@@ -32,7 +32,7 @@ def trace_selection(rows: list[dict], which: str) -> list[dict]:
     elif which == "collisions":
         chosen = [r for r in ok if r["metrics"].get("collision")]
     elif which == "failures":
-        chosen = [r for r in ok if r["metrics"].get("collision") and planner_on(r)]
+        chosen = [r for r in ok if r["metrics"].get("collision_ego_moving") and planner_on(r)]
     else:
         try:
             wanted = {int(v) for v in which.split(",") if v.strip()}

@@ -246,22 +246,26 @@ def _configurations(ok: list[dict], varied: list[str], meta: dict) -> list[str]:
             f"<td>{_cell(min(ttc) if ttc else None)}</td></tr>"
         )  # fmt: skip
     out.append("</table>")
-    failures = sorted((r for r in ok if r["metrics"].get("collision") and in_charge(r)), key=_severity)
+    # a collision with the ego standing (<= 0.1 m/s at the first contact) is no failure of what drives it
+    failures = sorted((r for r in ok if r["metrics"].get("collision_ego_moving") and in_charge(r)), key=_severity)
     if sut:
         names = ", ".join(f"{s['entity']}={s['controller']} (sha256 {(s['sha256'] or '-')[:12]})" for s in sut)
         out.insert(0, f"<p>System under test: <code>{html.escape(names)}</code>.</p>")
     if has_planner:
         what = "collisions" if sut else "collisions with the planner on"
-        out.append(f"<h2>Failures of the system under test ({len(failures)} {what})</h2>")
+        out.append(f"<h2>Failures of the system under test ({len(failures)} {what}, the ego moving)</h2>")
+        out.append("<p class='note'>A failure is a collision with the ego moving (faster than 0.1 m/s at the first "
+                   "contact); a road user running into the standing ego is not one.</p>")  # fmt: skip
         if failures:
-            out.append("<table><tr><th>#</th><th>impact speed (m/s)</th><th>t coll (s)</th><th>reproduce</th>"
-                       "<th>scenario</th></tr>")  # fmt: skip
+            out.append("<table><tr><th>#</th><th>impact speed (m/s)</th><th>ego speed (m/s)</th><th>t coll (s)</th>"
+                       "<th>reproduce</th><th>scenario</th></tr>")  # fmt: skip
             for r in failures[:200]:
                 m = r["metrics"]
                 link = f"<a href='{html.escape(r['xosc'])}'>{html.escape(r['xosc'])}</a>" if r.get("xosc") else ""
                 command = html.escape(reproduce(meta["scenario"], r, varied, meta.get("dt_s", 0.01), options))
                 out.append(
                     f"<tr><td>{r['variant']}</td><td>{_cell(m.get('impact_speed_mps'))}</td>"
+                    f"<td>{_cell(m.get('ego_speed_at_contact_mps'))}</td>"
                     f"<td>{_cell(m.get('collision_time_s'))}</td><td><code>{command}</code></td><td>{link}</td></tr>"
                 )
             out.append("</table>")
