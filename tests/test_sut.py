@@ -210,3 +210,57 @@ def test_a_collision_with_the_ego_standing_is_said_to_be_one(scenario):
     m = compute_metrics(PairSeries.from_run(late), MetricConfig())
     assert m["collision_ego_moving"] and m["ego_speed_at_contact_mps"] > 2.0 and m["ego_standing_before_contact_s"] == 0
     assert 0 < m["ttc_at_brake_onset_s"] < 0.7  # it brakes at TTC < 0.6 s (one step late)
+
+
+def test_a_hanging_controller_fails_its_run_within_the_limit_and_a_sweep_goes_on(scenario, tmp_path, capsys):
+    import time
+
+    hangs = f"Ego={DATA}/faulty.py:Hangs"  # sleeps an hour in step from t = 1 s
+    started = time.perf_counter()
+    code, _, err = _vei(capsys, "run", scenario, "--controller", hangs, "--controller-timeout", "0.3")
+    assert code == 1 and err == (f"vei: error: controller {hangs} at t = 1.00 s: step did not return within 0.3 s "
+                                 "(--controller-timeout)\n")  # fmt: skip
+    code, out, err = _vei(capsys, "sweep", scenario, "--vary", "TimeShift=0:3:1", "--workers", "2", "--quiet",
+                          "--controller", hangs, "--controller-timeout", "0.3", "-o", tmp_path)  # fmt: skip
+    assert code == 1 and "4 failed" in out and "vei: 4 of 4 variants failed" in err
+    assert time.perf_counter() - started < 20
+    assert _children() == []  # no worker left behind
+
+
+def _children() -> list[int]:
+    """Processes whose parent is this one (Linux /proc)."""
+    import os
+
+    out = []
+    for d in Path("/proc").iterdir():
+        if d.name.isdigit():
+            try:
+                stat = (d / "stat").read_text()
+            except OSError:
+                continue
+            if int(stat.rsplit(")", 1)[1].split()[1]) == os.getpid():
+                out.append(int(d.name))
+    return out
+
+
+def test_falsify_and_probability_refuse_a_controller_vei_has_no_model_of(scenario, tmp_path, capsys):
+    typo = tmp_path / "typo.xosc"
+    typo.write_text(scenario.read_text().replace('Controller name="CollisionAvoidancePlanner"',
+                                                 'Controller name="CollisionAvoidancePlaner"'))  # fmt: skip
+    (tmp_path / "scenario.xodr").write_bytes((scenario.parent / "scenario.xodr").read_bytes())
+    box = ["--bounds", "TimeShift=2:3", "--values", "RiderType=replay", "--param", "CapEnabled=true"]
+    code, _, err = _vei(capsys, "falsify", typo, *box)
+    assert code == 2 and err.count("\n") == 1
+    assert "Ego's controller 'CollisionAvoidancePlaner' names no model vei has" in err
+    assert _vei(capsys, "falsify", typo, *box, "--allow-default-controller")[0] == 0
+    assert _vei(capsys, "falsify", typo, *box, "--controller", f"Ego={DATA}/aeb_good.py:AEB")[0] == 0
+    dist = tmp_path / "d.xosc"
+    dist.write_text(
+        '<?xml version="1.0"?><OpenSCENARIO><FileHeader revMajor="1" revMinor="2" date="2024-01-01T00:00:00" '
+        'description="d" author="t"/><ParameterValueDistribution><ScenarioFile filepath="typo.xosc"/>'
+        '<Stochastic numberOfTestRuns="100" randomSeed="1"><StochasticDistribution parameterName="TimeShift">'
+        '<UniformDistribution><Range lowerLimit="0" upperLimit="4"/></UniformDistribution></StochasticDistribution>'
+        "</Stochastic></ParameterValueDistribution></OpenSCENARIO>"
+    )
+    code, _, err = _vei(capsys, "probability", typo, "--dist", dist, "--runs", "100", "--estimator", "monte-carlo")
+    assert code == 2 and "names no model vei has" in err

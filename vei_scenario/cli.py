@@ -342,6 +342,7 @@ def _cmd_falsify(args: argparse.Namespace) -> int:
     result = falsify(
         args.scenario, axes, parse_param_overrides(args.param), args.target, args.slices, args.tol,
         seed=args.seed, dt=args.dt, workers=args.workers, out_dir=args.output, controllers=_controllers(args),
+        allow_default_controller=args.allow_default_controller,
     )  # fmt: skip
     print(f"{len(result.regions)} failure region(s) of {args.target} found in {result.runs} runs")
     for r in result.regions:
@@ -362,7 +363,7 @@ def _cmd_probability(args: argparse.Namespace) -> int:
     estimators = ("monte-carlo", "importance-sampling") if args.estimator == "both" else (args.estimator,)
     results = estimate_probability(
         args.scenario, args.dist, args.target, estimators, args.runs, parse_param_overrides(args.param),
-        args.band, args.seed, args.dt, args.workers, _controllers(args),
+        args.band, args.seed, args.dt, args.workers, _controllers(args), args.allow_default_controller,
     )  # fmt: skip
     for e in results:
         extra = f", {e.levels} level(s)" if e.estimator == "importance-sampling" else ""
@@ -446,15 +447,24 @@ def _controller_options(p: argparse.ArgumentParser) -> None:
         metavar="NAME=VALUE",
         help="a property for the --controller class's constructor (a keyword argument, as text)",
     )
+    p.add_argument(
+        "--controller-timeout",
+        type=_number(1e-3, 1e6),
+        metavar="SECONDS",
+        help="the longest one step(obs) of the --controller may take (wall clock); a run (a sweep's variant) "
+        "over it fails with one line instead of hanging (default: no limit)",
+    )
 
 
 def _controllers(args: argparse.Namespace) -> tuple:
     """The systems under test the command line plugs in, loaded and checked before anything runs."""
-    if not args.controller and not args.controller_param:
+    if not args.controller and not args.controller_param and args.controller_timeout is None:
         return ()
     from vei_scenario.sut import parse_controller_options
 
-    return parse_controller_options(args.controller, args.controller_param)
+    if args.controller_timeout is not None and not args.controller:
+        raise VeiInputError(None, "--controller-timeout", "given without --controller")
+    return parse_controller_options(args.controller, args.controller_param, args.controller_timeout)
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -665,6 +675,12 @@ def build_parser() -> argparse.ArgumentParser:
     fz.add_argument("--workers", type=WORKERS, help="worker threads or processes (default: all cores)")
     fz.add_argument("-o", "--output", help="directory for falsify.json and the regions' worst scenarios")
     _controller_options(fz)
+    fz.add_argument(
+        "--allow-default-controller",
+        action="store_true",
+        help="search although a controller the scenario names is one vei has no model of (it plays as the "
+        "default controller; refused otherwise, as the failures found would not be any system's)",
+    )
     fz.set_defaults(func=_cmd_falsify)
 
     pr = sub.add_parser(
@@ -699,6 +715,12 @@ def build_parser() -> argparse.ArgumentParser:
     pr.add_argument("--workers", type=WORKERS, help="worker threads or processes (default: all cores)")
     pr.add_argument("-o", "--output", help="write the estimates as JSON here")
     _controller_options(pr)
+    pr.add_argument(
+        "--allow-default-controller",
+        action="store_true",
+        help="search although a controller the scenario names is one vei has no model of (it plays as the "
+        "default controller; refused otherwise, as the failures found would not be any system's)",
+    )
     pr.set_defaults(func=_cmd_probability)
 
     vw = sub.add_parser("view", help="play a run on its road: moving boxes, trails, TTC zones, the collision")

@@ -283,10 +283,12 @@ def falsify(
     workers: int | None = None,
     out_dir: str | Path | None = None,
     controllers: tuple = (),
+    allow_default_controller: bool = False,
 ) -> FalsifyResult:
     """Search the box ``axes`` (others at ``fixed`` or their defaults) for failures (``target``) of the
     systems under test ``controllers`` (:class:`~vei_scenario.sut.ControllerSpec`; none: the scenario's
-    own controllers)."""
+    own controllers). A controller the scenario names that vei has no model of is refused unless
+    ``allow_default_controller``: the search would find the failures of an ego without its system."""
     from vei_scenario.checks import check_dt, finite
     from vei_scenario.interpreter.document import load_scenario
 
@@ -299,6 +301,9 @@ def falsify(
     doc = load_scenario(scenario)
     fixed = dict(fixed or {})
     check_axes(scenario, doc, axes, fixed)
+    from vei_scenario.sweep.evaluate import refuse_default_controllers
+
+    refuse_default_controllers(scenario, fixed, dt, tuple(controllers), allow_default_controller)
     cont = [a for a in axes if not a.discrete]
     if not cont:
         raise VeiInputError(None, "--bounds", "give at least one continuous range (NAME=LOW:HIGH) to search along")

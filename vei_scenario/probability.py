@@ -375,10 +375,12 @@ def estimate_probability(
     dt: float = 0.01,
     workers: int | None = None,
     controllers: tuple = (),
+    allow_default_controller: bool = False,
 ) -> list[Estimate]:
     """P(target) under the stochastic distribution ``dist`` (other parameters from ``fixed`` or their
     defaults), by each of ``estimators``, ``runs`` runs each (plus the levels for importance sampling);
-    ``controllers``: the systems under test (:class:`~vei_scenario.sut.ControllerSpec`)."""
+    ``controllers``: the systems under test (:class:`~vei_scenario.sut.ControllerSpec`); a controller the
+    scenario names that vei has no model of is refused unless ``allow_default_controller``."""
     from vei_scenario.checks import check_dt, finite
     from vei_scenario.interpreter.document import check_values, load_scenario
 
@@ -393,6 +395,9 @@ def estimate_probability(
     dims = read_stochastic(dist, doc.parameter_types)
     fixed = dict(fixed or {})
     check_values(doc.parameter_types, fixed)
+    from vei_scenario.sweep.evaluate import refuse_default_controllers
+
+    refuse_default_controllers(scenario, fixed, dt, tuple(controllers), allow_default_controller)
     evaluate = Evaluator(Path(scenario), dims, fixed, target, band, dt, workers, tuple(controllers))
     rng = np.random.default_rng(seed)
     out = []

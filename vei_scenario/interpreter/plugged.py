@@ -9,6 +9,8 @@ end, whatever the storyboard activates), or a scenario ``Controller`` with a ``m
 
 from __future__ import annotations
 
+import signal
+import threading
 from pathlib import Path
 
 from vei_scenario.errors import VeiInputError
@@ -16,7 +18,7 @@ from vei_scenario.interpreter.entities import Entity
 from vei_scenario.interpreter.motion import advance_along, lane_keep
 from vei_scenario.interpreter.positions import ensure_lane
 from vei_scenario.models.vehicle import Longitudinal, longitudinal_step
-from vei_scenario.sut.contract import ControllerFault, ObjectState, Observation, command_from
+from vei_scenario.sut.contract import ControllerFault, ObjectState, Observation, StepTimeout, command_from
 from vei_scenario.sut.spec import ControllerSpec, describe_exception
 
 #: The scenario Controller property that names a user's controller (FILE.py:CLASS or MODULE:CLASS).
@@ -64,6 +66,24 @@ class PluggedController:
             except Exception as exc:  # noqa: BLE001
                 raise ControllerFault(self.label, f"reset raised {describe_exception(exc)}", ctx.t) from None
 
+    def _step_within(self, obs: Observation, limit: float, t: float):
+        """``step(obs)`` with a wall-clock limit (SIGALRM: the main thread of a process, as in ``vei run``
+        and a sweep's workers; elsewhere unlimited)."""
+        if threading.current_thread() is not threading.main_thread():
+            return self.impl.step(obs)
+        previous = signal.signal(signal.SIGALRM, _overran)
+        signal.setitimer(signal.ITIMER_REAL, limit)
+        try:
+            return self.impl.step(obs)
+        except StepTimeout:
+            reason = f"step did not return within {limit:g} s (--controller-timeout)"
+            raise ControllerFault(self.label, reason, t) from None
+        except Exception as exc:  # noqa: BLE001
+            raise ControllerFault(self.label, f"step raised {describe_exception(exc)}", t) from None
+        finally:
+            signal.setitimer(signal.ITIMER_REAL, 0)
+            signal.signal(signal.SIGALRM, previous)
+
     def observation(self, e: Entity, ctx) -> Observation:
         others = [ctx.observed(n) for n, o in ctx.entities.items() if o is not e and not o.deleted]
         objects = [_state(o) for o in others if o is not None]
@@ -73,10 +93,15 @@ class PluggedController:
     def move(self, e: Entity, ctx, dt: float) -> bool:
         if not self.started:
             self._start(e, ctx)
-        try:
-            value = self.impl.step(self.observation(e, ctx))
-        except Exception as exc:  # noqa: BLE001
-            raise ControllerFault(self.label, f"step raised {describe_exception(exc)}", ctx.t) from None
+        obs = self.observation(e, ctx)
+        limit = self.spec.step_timeout_s
+        if limit is None:
+            try:
+                value = self.impl.step(obs)
+            except Exception as exc:  # noqa: BLE001
+                raise ControllerFault(self.label, f"step raised {describe_exception(exc)}", ctx.t) from None
+        else:
+            value = self._step_within(obs, limit, ctx.t)
         cmd = command_from(value, self.label, ctx.t)
         a_cmd = cmd.accel_mps2
         if ctx.snapshot is not None:  # Jacobi: the vehicle gets this command at the next step
@@ -98,6 +123,10 @@ class PluggedController:
         e.speed, e.accel = v, a
         e.status = cmd.state
         return True
+
+
+def _overran(signum, frame) -> None:
+    raise StepTimeout()
 
 
 def scenario_controller(name: str, props: dict[str, str], el, ctx) -> PluggedController:

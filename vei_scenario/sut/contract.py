@@ -38,6 +38,11 @@ class ControllerFault(VeiError):
         return f"controller {self.label}{at}: {self.reason}"
 
 
+class StepTimeout(BaseException):
+    """Raised into a ``step`` that overran its time limit (a BaseException: the user's own
+    ``except Exception`` does not swallow it)."""
+
+
 @dataclass(slots=True)
 class ObjectState:
     """One road user as a controller sees it: its bounding box's centre (m) and heading (rad,

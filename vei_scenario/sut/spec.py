@@ -34,11 +34,14 @@ class ControllerSpec:
     parameters: tuple[tuple[str, str], ...] = ()
     #: the directory a relative file is found from (the scenario's, for a scenario's ``module`` property)
     base: str = ""
+    #: the longest one ``step`` call may take (s, wall clock), or None: a hanging controller then fails
+    #: its run with one line instead of holding up a sweep
+    step_timeout_s: float | None = None
     _loaded: dict = field(default_factory=dict, compare=False, hash=False, repr=False)
 
     def __reduce__(self):
         """Pickled as its text: a worker process loads the class itself."""
-        return (type(self), (self.entity, self.target, self.parameters, self.base))
+        return (type(self), (self.entity, self.target, self.parameters, self.base, self.step_timeout_s))
 
     @property
     def label(self) -> str:
@@ -89,6 +92,7 @@ class ControllerSpec:
             "file": str(f) if f is not None else None,
             "sha256": self.sha256() or None,
             "parameters": dict(self.parameters),
+            **({"step_timeout_s": self.step_timeout_s} if self.step_timeout_s is not None else {}),
         }
 
 
@@ -159,9 +163,15 @@ def describe_exception(exc: BaseException) -> str:
     return f"{type(exc).__name__}: {text}" if text else type(exc).__name__
 
 
-def parse_controller_options(controllers: list[str], parameters: list[str] | None = None) -> tuple[ControllerSpec, ...]:
-    """``--controller ENTITY=TARGET`` and ``--controller-param NAME=VALUE`` options into specs, each
-    loaded and checked at once (before any run)."""
+def parse_controller_options(
+    controllers: list[str], parameters: list[str] | None = None, step_timeout_s: float | None = None
+) -> tuple[ControllerSpec, ...]:
+    """``--controller ENTITY=TARGET``, ``--controller-param NAME=VALUE`` and ``--controller-timeout S``
+    options into specs, each loaded and checked at once (before any run)."""
+    if step_timeout_s is not None:
+        from vei_scenario.checks import finite
+
+        step_timeout_s = finite(step_timeout_s, "--controller-timeout", 1e-3, 1e6)
     params: list[tuple[str, str]] = []
     for item in parameters or []:
         name, sep, value = item.partition("=")
@@ -178,7 +188,7 @@ def parse_controller_options(controllers: list[str], parameters: list[str] | Non
         if entity.strip() in seen:
             raise VeiInputError(None, "--controller", f"two controllers for {entity.strip()}")
         seen.add(entity.strip())
-        spec = ControllerSpec(entity.strip(), target.strip(), tuple(params))
+        spec = ControllerSpec(entity.strip(), target.strip(), tuple(params), step_timeout_s=step_timeout_s)
         spec.load()
         specs.append(spec)
     return tuple(specs)
@@ -190,6 +200,8 @@ def reproduce_options(described: list[dict]) -> str:
     out = [f"--controller {shlex.quote(d['entity'] + '=' + d['controller'])}" for d in described]
     if described:
         out += [f"--controller-param {shlex.quote(f'{k}={v}')}" for k, v in described[0]["parameters"].items()]
+        if described[0].get("step_timeout_s") is not None:
+            out.append(f"--controller-timeout {described[0]['step_timeout_s']:g}")
     return (" " + " ".join(out)) if out else ""
 
 

@@ -11,8 +11,9 @@ import os
 import time
 from collections.abc import Callable, Iterable
 from concurrent.futures import ProcessPoolExecutor
+from pathlib import Path
 
-from vei_scenario.errors import VeiError
+from vei_scenario.errors import VeiError, VeiInputError
 from vei_scenario.metrics import MetricConfig, PairSeries, compute_metrics
 from vei_scenario.sweep import forked
 
@@ -47,6 +48,38 @@ def evaluate_variant(
         return {"status": "error", "error": str(exc), "metrics": {}}
     except (ValueError, ArithmeticError) as exc:  # a model refusing the values (e.g. a negative mass)
         return {"status": "error", "error": f"{type(exc).__name__}: {exc}", "metrics": {}}
+
+
+def default_controllers(scenario: str | Path, values: dict[str, str], dt: float, controllers: tuple = ()) -> list[str]:
+    """What the scenario built with ``values`` plays as the default controller although it names another
+    (a controller type vei has no model of, e.g. a misspelt planner): one sentence each. A search for
+    failures of a system that is not there would report the scenario's, so falsify and probability
+    refuse these (unless allowed). None when the scenario cannot be built (its runs will say why)."""
+    from vei_scenario.interpreter import Simulation, load_scenario
+    from vei_scenario.interpreter.controllers import DefaultController
+
+    try:
+        sim = Simulation(load_scenario(scenario, values), dt, controllers=controllers)
+    except (VeiError, ValueError, ArithmeticError):
+        return []
+    return [
+        f"{e.name}'s controller {c.name!r} names no model vei has (it would play as the default controller)"
+        for e in sim.ctx.entities.values()
+        for c in e.controllers.values()
+        if isinstance(c, DefaultController)
+    ]
+
+
+def refuse_default_controllers(scenario, values: dict[str, str], dt: float, controllers: tuple, allow: bool) -> None:
+    """One line for the first controller that would play as the default one, unless ``allow``."""
+    if allow:
+        return
+    found = default_controllers(scenario, values, dt, controllers)
+    if found:
+        raise VeiInputError(
+            scenario, "controller", f"{found[0]}; plug in the system with --controller ENTITY=FILE.py:CLASS, or "
+            "give --allow-default-controller to search the scenario as it plays"
+        )  # fmt: skip
 
 
 _NATIVE: dict[tuple[str, float, str], object] = {}
