@@ -264,3 +264,56 @@ def test_falsify_and_probability_refuse_a_controller_vei_has_no_model_of(scenari
     )
     code, _, err = _vei(capsys, "probability", typo, "--dist", dist, "--runs", "100", "--estimator", "monte-carlo")
     assert code == 2 and "names no model vei has" in err
+
+
+needs_fmus = pytest.mark.skipif(
+    __import__("sys").platform != "linux", reason="the test FMUs carry linux64 binaries only (pythonfmu)"
+)
+
+
+@needs_fmus
+def test_an_fmu_drives_the_ego_through_vei_caps_ports(scenario, tmp_path, capsys):
+    """FMUs with vei_cap's eight inputs and a_cmd (pythonfmu, tests/data/sut/fmu_src): the late one
+    collides with the ego moving, the good one does not; a declared parameter is set, the scenario's
+    planner properties (a_max_mps2, ...) that the FMU does not declare are not pushed onto it."""
+    values = _config("aggressive")
+    late = run_scenario(scenario, values, controllers=parse_controller_options([f"Ego={DATA}/LateAebFmu.fmu"]))
+    good = run_scenario(scenario, values, controllers=parse_controller_options([f"Ego={DATA}/GoodAebFmu.fmu"]))
+    assert late.collisions and not good.collisions
+    assert late.traces["Ego"].accel.min() == pytest.approx(-4.0)  # its -4 m/s² through the vehicle model
+    earlier = run_scenario(scenario, values, controllers=parse_controller_options(
+        [f"Ego={DATA}/LateAebFmu.fmu"], ["ttc_brake_s=1.5"]))  # fmt: skip
+    assert not earlier.collisions  # braking at TTC 1.5 s instead of 0.6 s avoids it
+    code, out, _ = _vei(capsys, "run", scenario, "--controller", f"Ego={DATA}/LateAebFmu.fmu", "-o", tmp_path)
+    doc = json.loads((tmp_path / "metrics.json").read_text())
+    assert code == 0 and doc["system_under_test"][0]["sha256"] == hashlib.sha256(
+        (DATA / "LateAebFmu.fmu").read_bytes()).hexdigest()  # fmt: skip
+
+
+@needs_fmus
+@pytest.mark.parametrize(
+    "argv, code, says",
+    [
+        (["--controller", "Ego={d}/ErrorFmu.fmu"], 1, "ErrorFmu.fmu at t = 1.00 s: the FMU's doStep failed: "
+         "fmi2DoStep returned fmi2Discard"),
+        (["--controller", "Ego={d}/RaisingFmu.fmu"], 1, "RaisingFmu.fmu at t = 1.00 s: the FMU's doStep failed: "
+         "fmi2DoStep returned fmi2"),
+        (["--controller", "Ego={d}/WrongPortsFmu.fmu"], 2, "WrongPortsFmu.fmu: input 'x' (Real) is none vei provides"),
+        (["--controller", "Ego={d}/LateAebFmu.fmu", "--controller-param", "brake=2"], 2,
+         "LateAebFmu.fmu declares no parameter 'brake' (it has: ttc_brake_s)"),
+        (["--controller", "Ego={d}/LateAebFmu.fmu", "--controller-param", "ttc_brake_s=soon"], 2,
+         "parameter ttc_brake_s='soon' is not a Real value"),
+        (["--controller", "Ego={d}/Nothing.fmu"], 2, "Nothing.fmu: no such file"),
+    ],
+)  # fmt: skip
+def test_a_failing_or_mismatched_fmu_is_one_line(scenario, capsys, argv, code, says):
+    got, _, err = _vei(capsys, "run", scenario, "--no-plots", *[a.format(d=DATA) for a in argv])
+    assert got == code and err.count("\n") == 1 and err.startswith("vei: error: controller Ego=") and says in err
+
+
+@needs_fmus
+def test_a_sweep_with_a_failing_fmu_goes_on_and_leaves_no_worker(scenario, tmp_path, capsys):
+    code, out, err = _vei(capsys, "sweep", scenario, "--vary", "TimeShift=0:3:1", "--workers", "2", "--quiet",
+                          "--controller", f"Ego={DATA}/ErrorFmu.fmu", "-o", tmp_path)  # fmt: skip
+    assert code == 1 and "4 failed" in out and "fmi2Discard" in err
+    assert _children() == []

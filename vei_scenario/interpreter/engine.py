@@ -378,6 +378,17 @@ class Simulation:
             advance_along(e, ds)
 
     def run(self) -> RunResult:
+        """Play the scenario to its end; the controllers that hold resources (an FMU) end with it."""
+        try:
+            return self._run()
+        finally:
+            for e in self.ctx.entities.values():
+                for c in e.controllers.values():
+                    finish = getattr(c, "finish", None)
+                    if finish is not None:
+                        finish()
+
+    def _run(self) -> RunResult:
         ctx, dt = self.ctx, self.dt
         names = list(ctx.entities)
         recording = Recording([ctx.entities[n] for n in names])

@@ -42,22 +42,30 @@ class PluggedController:
         self.name, self.props, self.el = name, props, el
         self.spec = spec
         self.label = f"{entity}={spec.target}" if entity else spec.label
-        cls = spec.load()
-        kwargs = {k: v for k, v in props.items() if k != MODULE_PROPERTY and k}
-        kwargs.update(spec.parameters)
-        try:
-            self.impl = cls(**kwargs)
-        except Exception as exc:  # noqa: BLE001 (the user's code: any failure is theirs, said in one line)
-            raise ControllerFault(self.label, f"constructing {cls.__name__} raised {describe_exception(exc)}") from None
+        spec.load()  # (refused here, before the run, when it cannot be loaded)
+        self.properties = {k: v for k, v in props.items() if k != MODULE_PROPERTY and k}
+        self.impl = None  # made when the run starts (an FMU instance is not made for a run never played)
         self.started = False
         self.held_command = 0.0  # Jacobi coupling: the command computed in the previous step
 
     def activated(self, e: Entity, ctx, domains: tuple[str, ...]) -> None:
         """It takes over from the entity's state when it first moves."""
 
+    def finish(self) -> None:
+        """After the run (or its failure): an implementation with ``close()`` (an FMU) ends there."""
+        close = getattr(self.impl, "close", None) if self.impl is not None else None
+        if callable(close):
+            close()
+
+    def instance(self):
+        """The implementation for this run, constructed on first use."""
+        if self.impl is None:
+            self.impl = self.spec.instantiate(self.label, self.properties)
+        return self.impl
+
     def _start(self, e: Entity, ctx) -> None:
         self.started = True
-        reset = getattr(self.impl, "reset", None)
+        reset = getattr(self.instance(), "reset", None)
         if callable(reset):
             info = {"entity": e.name, "scenario": str(ctx.path), "dt_s": ctx.dt, "threat": ctx.threat,
                     "parameters": dict(ctx.parameters)}  # fmt: skip
@@ -75,6 +83,8 @@ class PluggedController:
         signal.setitimer(signal.ITIMER_REAL, limit)
         try:
             return self.impl.step(obs)
+        except ControllerFault:
+            raise
         except StepTimeout:
             reason = f"step did not return within {limit:g} s (--controller-timeout)"
             raise ControllerFault(self.label, reason, t) from None
@@ -98,6 +108,8 @@ class PluggedController:
         if limit is None:
             try:
                 value = self.impl.step(obs)
+            except ControllerFault:  # (an FMU's failed call, said already)
+                raise
             except Exception as exc:  # noqa: BLE001
                 raise ControllerFault(self.label, f"step raised {describe_exception(exc)}", ctx.t) from None
         else:

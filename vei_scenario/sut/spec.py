@@ -50,7 +50,12 @@ class ControllerSpec:
 
     @property
     def kind(self) -> str:
-        return "python"
+        """``fmu`` for an FMI co-simulation FMU (``.fmu``), else ``python``."""
+        return "fmu" if self.target.lower().endswith(".fmu") else "python"
+
+    def _fmu_path(self) -> Path:
+        path = Path(self.target)
+        return Path(self.base) / path if not path.is_absolute() and self.base else path
 
     def _file_and_class(self) -> tuple[Path | None, str, str]:
         """(file or None, module or entry point, class name) of the target."""
@@ -65,10 +70,32 @@ class ControllerSpec:
         return None, where, cls
 
     def load(self) -> type:
-        """The user's class (loaded once per process), checked to have a ``step`` method."""
+        """The user's class (loaded once per process), checked to have a ``step`` method; for an FMU
+        its ports (:class:`~vei_scenario.sut.fmu.FmuPorts`), checked against what vei provides."""
         if "class" not in self._loaded:
-            self._loaded["class"], self._loaded["file"] = _load(self)
+            if self.kind == "fmu":
+                from vei_scenario.sut.fmu import check_parameters, read_ports
+
+                ports = read_ports(self._fmu_path(), self.label)
+                check_parameters(ports, dict(self.parameters), self.label)
+                self._loaded["class"], self._loaded["file"] = ports, ports.path
+            else:
+                self._loaded["class"], self._loaded["file"] = _load(self)
         return self._loaded["class"]
+
+    def instantiate(self, label: str, properties: dict[str, str]):
+        """A fresh instance for one run, constructed with ``properties`` (the spec's parameters over
+        them): the user's class, or the FMU behind the same contract."""
+        loaded = self.load()
+        properties = {**properties, **dict(self.parameters)}
+        if self.kind == "fmu":
+            from vei_scenario.sut.fmu import FmuController
+
+            return FmuController(loaded, label, properties)
+        try:
+            return loaded(**properties)
+        except Exception as exc:  # noqa: BLE001 (the user's code: any failure is theirs, said in one line)
+            raise ControllerFault(label, f"constructing {loaded.__name__} raised {describe_exception(exc)}") from None
 
     @property
     def file(self) -> Path | None:
