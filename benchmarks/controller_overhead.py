@@ -7,6 +7,7 @@ The case study (replay rider, 2 501 steps) is run three ways, best of ``--repeat
 * ``no-op``: a plugged class whose ``step`` returns 0.0: what plugging in costs per step (the
   observation built, ``step`` called, the command checked, the vehicle model and the path step);
 * ``contract``: the observation built, a no-op ``step`` called and its command checked, timed alone;
+* ``fmu``: vei's planner built as a native FMU (``vei fmu build cap``) on the ego through fmpy;
 * ``planner``: vei's own planner through the contract against the built-in planner (CapEnabled=true):
   the cost of seeing the scene through the contract rather than through the interpreter's entities.
 
@@ -75,15 +76,23 @@ def main() -> None:
         t_cap = _best(lambda: run_scenario(xosc, cap), args.repeat)
         t_wrap = _best(lambda: run_scenario(xosc, cap, controllers=planner), args.repeat)
         contract = _contract_us(xosc, replay, plugged)
+        from vei_scenario.fmu import build_fmus
+
+        fmu = build_fmus(["cap"], Path(tmp) / "fmus")["cap"]  # vei's planner as a native FMU (C, fmpy)
+        as_fmu = parse_controller_options([f"Ego={fmu}"], ["cruise_speed_mps=5.61"])
+        t_fmu = _best(lambda: run_scenario(xosc, cap, controllers=as_fmu), args.repeat)
+        fmu_step = _contract_us(xosc, cap, as_fmu, 5000)
     us = 1e6 / steps
     print(f"case study, {steps} steps at dt 0.01 s, best of {args.repeat}")
     print(f"  no controller          {t_none * 1e3:8.1f} ms  {t_none * us:6.1f} us/step")
     print(f"  no-op Python class     {t_noop * 1e3:8.1f} ms  {t_noop * us:6.1f} us/step")
     print(f"  built-in planner       {t_cap * 1e3:8.1f} ms  {t_cap * us:6.1f} us/step")
     print(f"  planner via contract   {t_wrap * 1e3:8.1f} ms  {t_wrap * us:6.1f} us/step")
+    print(f"  planner as native FMU  {t_fmu * 1e3:8.1f} ms  {t_fmu * us:6.1f} us/step (instance made per run)")
     print(f"the contract alone (observation, step call, command check): {contract:.1f} us/step; "
           f"a whole run with a no-op class against none: {(t_noop - t_none) * us:+.1f} us/step; "
-          f"the planner through the contract against the built-in: {(t_wrap - t_cap) * us:+.1f} us/step")  # fmt: skip
+          f"the planner through the contract against the built-in: {(t_wrap - t_cap) * us:+.1f} us/step; "
+          f"a native FMU (vei_cap, through fmpy) per step: {fmu_step:.1f} us")  # fmt: skip
 
 
 if __name__ == "__main__":
