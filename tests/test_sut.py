@@ -317,3 +317,16 @@ def test_a_sweep_with_a_failing_fmu_goes_on_and_leaves_no_worker(scenario, tmp_p
                           "--controller", f"Ego={DATA}/ErrorFmu.fmu", "-o", tmp_path)  # fmt: skip
     assert code == 1 and "4 failed" in out and "fmi2Discard" in err
     assert _children() == []
+
+
+def test_vei_planner_as_a_native_fmu_reproduces_the_built_in_one(scenario, tmp_path):
+    """vei fmu build cap (the C planner in an FMU, through fmpy), given the scenario's cruise speed:
+    study configurations 4 and 5 as the built-in planner drives them."""
+    from vei_scenario.fmu import build_fmus
+
+    fmu = build_fmus(["cap"], tmp_path)["cap"]
+    plugged = parse_controller_options([f"Ego={fmu}"], ["cruise_speed_mps=5.61"])
+    for rider in ("normal", "aggressive"):
+        a, b = run_scenario(scenario, _config(rider)), run_scenario(scenario, _config(rider), controllers=plugged)
+        for name, tr in a.traces.items():
+            assert np.abs(tr.x - b.traces[name].x).max() <= 1e-9 and np.abs(tr.y - b.traces[name].y).max() <= 1e-9
