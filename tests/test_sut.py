@@ -330,3 +330,19 @@ def test_vei_planner_as_a_native_fmu_reproduces_the_built_in_one(scenario, tmp_p
         a, b = run_scenario(scenario, _config(rider)), run_scenario(scenario, _config(rider), controllers=plugged)
         for name, tr in a.traces.items():
             assert np.abs(tr.x - b.traces[name].x).max() <= 1e-9 and np.abs(tr.y - b.traces[name].y).max() <= 1e-9
+
+
+CPNA = (Path(__file__).resolve().parents[1].parent / "shared" / "osc-ncap" / "OpenSCENARIO" / "NCAP" / "AEB_VRU_2023"
+        / "Variations" / "NCAP_AEB_VRU_CPNA-25_50kph_2023.xosc")  # fmt: skip
+
+
+@pytest.mark.skipif(not CPNA.is_file(), reason="needs the Euro NCAP OpenSCENARIO pack at ../shared/osc-ncap")
+def test_the_users_aeb_on_the_euro_ncap_vut(tmp_path, capsys):
+    """Euro NCAP CPNA-25 at 50 km/h: the VUT, which no controller drives in the pack, hits the child as
+    the pack plays it; with the example AEB plugged in it stops short, braking at 8 m/s²."""
+    code, out, _ = _vei(capsys, "run", CPNA, "--no-plots")
+    assert code == 0 and "Ego vs VRU: COLLISION" in out
+    aeb = f"Ego={Path(__file__).resolve().parents[1]}/examples/controllers/aeb.py:AEB"
+    code, out, _ = _vei(capsys, "run", CPNA, "--controller", aeb, "-o", tmp_path, "--no-plots")
+    m = json.loads((tmp_path / "metrics.json").read_text())["metrics"]
+    assert code == 0 and not m["collision"] and m["peak_decel_mps2"] == 8.0 and m["brake_onset_s"] is not None
