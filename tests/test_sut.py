@@ -346,3 +346,20 @@ def test_the_users_aeb_on_the_euro_ncap_vut(tmp_path, capsys):
     code, out, _ = _vei(capsys, "run", CPNA, "--controller", aeb, "-o", tmp_path, "--no-plots")
     m = json.loads((tmp_path / "metrics.json").read_text())["metrics"]
     assert code == 0 and not m["collision"] and m["peak_decel_mps2"] == 8.0 and m["brake_onset_s"] is not None
+
+
+def test_a_check_suite_names_its_system_under_test(scenario, tmp_path, capsys):
+    (tmp_path / "aeb.py").write_bytes((DATA / "aeb_flawed.py").read_bytes())
+    (tmp_path / "suite.toml").write_text(
+        f'[[case]]\nname = "late AEB"\nscenario = "{scenario}"\n'
+        'parameters = { TimeShift = 2.197, RiderType = "aggressive" }\ncontroller = "Ego=aeb.py:LateAEB"\n'
+        'controller_parameters = { ttc_brake_s = 0.6 }\nexpect = ["collision_ego_moving == false"]\n'
+    )
+    code, out, _ = _vei(capsys, "check", tmp_path / "suite.toml", "--junit", tmp_path / "j.xml")
+    assert code == 1 and "got collision_ego_moving = True" in out
+    sha = hashlib.sha256((DATA / "aeb_flawed.py").read_bytes()).hexdigest()
+    assert f'name="system_under_test.Ego" value="aeb.py:LateAEB sha256={sha}"' in (tmp_path / "j.xml").read_text()
+    (tmp_path / "suite.toml").write_text((tmp_path / "suite.toml").read_text().replace("LateAEB", "Nope"))
+    code, _, err = _vei(capsys, "check", tmp_path / "suite.toml")
+    assert code == 2 and err.endswith("case[0].controller: controller Ego=aeb.py:Nope: aeb.py has no class 'Nope' "
+                                      "(it has: BlindLeftAEB, LateAEB)\n")  # fmt: skip

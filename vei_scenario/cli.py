@@ -398,7 +398,7 @@ def _cmd_view(args: argparse.Namespace) -> int:
     if src.is_dir():
         view = view_run_dir(src, args.scenario)
     elif src.is_file():
-        view = view_scenario(src, parse_param_overrides(args.param), args.dt)
+        view = view_scenario(src, parse_param_overrides(args.param), args.dt, _controllers(args))
     else:
         raise VeiInputError(src, "input", "not found (a .xosc scenario or a directory written by vei run -o)")
     if args.output:
@@ -733,6 +733,7 @@ def build_parser() -> argparse.ArgumentParser:
     )
     vw.add_argument("--speed", type=_number(0.01, 1000), default=1.0, help="playback speed, × real time (default 1)")
     vw.add_argument("--scenario", help="with a run directory: the scenario, for the road and the boxes")
+    _controller_options(vw)
     vw.set_defaults(func=_cmd_view)
 
     ck = sub.add_parser("check", help="run a suite of scenario expectations (for CI); JUnit XML")
