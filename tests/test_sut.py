@@ -363,3 +363,22 @@ def test_a_check_suite_names_its_system_under_test(scenario, tmp_path, capsys):
     code, _, err = _vei(capsys, "check", tmp_path / "suite.toml")
     assert code == 2 and err.endswith("case[0].controller: controller Ego=aeb.py:Nope: aeb.py has no class 'Nope' "
                                       "(it has: BlindLeftAEB, LateAEB)\n")  # fmt: skip
+
+
+def test_an_entry_point_of_the_group_vei_controllers_names_a_class(scenario, monkeypatch):
+    import importlib.metadata
+
+    class EntryPoint:
+        name = "late-aeb"
+
+        def load(self):
+            return parse_controller_options([f"Ego={DATA}/aeb_flawed.py:LateAEB"])[0].load()
+
+    def entry_points(group=None):
+        return [EntryPoint()] if group == "vei.controllers" else []
+
+    monkeypatch.setattr(importlib.metadata, "entry_points", entry_points)
+    late = run_scenario(scenario, _config("aggressive"), controllers=parse_controller_options(["Ego=late-aeb"]))
+    assert late.collisions
+    with pytest.raises(ControllerFault, match="no FILE.py:CLASS, MODULE:CLASS or entry point"):
+        parse_controller_options(["Ego=no-such-entry"])
