@@ -211,11 +211,13 @@ def _cmd_study(args: argparse.Namespace) -> int:
     from vei_scenario.study import run_study, table_text
 
     zone = "approx" if args.paper else args.zone_ttc
+    controllers = _controllers(args)
     report = run_study(
         args.input, args.output, args.dt, args.time_shift, plots=not args.no_plots, zone_ttc=zone,
-        controllers=_controllers(args),
+        controllers=controllers,
     )  # fmt: skip
     print(f"{report.scenario}: five configurations at TimeShift {report.time_shift_s:+.3f} s")
+    _print_sut(controllers)
     print(table_text(report.rows))
     print(f"wrote {len(report.written)} files under {args.output}")
     return 0
@@ -251,6 +253,7 @@ def _cmd_sweep(args: argparse.Namespace) -> int:
         plotter.close()
     for w in report.warnings:
         print(f"vei: warning: {w}", file=sys.stderr)
+    _print_sut(controllers)
     ok = [r for r in report.rows if r["status"] == "ok"]
     coll = sum(1 for r in ok if r["metrics"].get("collision"))
     moving = sum(1 for r in ok if r["metrics"].get("collision_ego_moving"))
@@ -465,6 +468,13 @@ def _controllers(args: argparse.Namespace) -> tuple:
     if args.controller_timeout is not None and not args.controller:
         raise VeiInputError(None, "--controller-timeout", "given without --controller")
     return parse_controller_options(args.controller, args.controller_param, args.controller_timeout)
+
+
+def _print_sut(controllers: tuple) -> None:
+    """One line per system under test: what the results are of."""
+    for s in controllers:
+        d = s.describe()
+        print(f"system under test on {d['entity']}: {d['controller']} (sha256 {(d['sha256'] or '-')[:12]})")
 
 
 def build_parser() -> argparse.ArgumentParser:
