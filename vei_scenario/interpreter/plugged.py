@@ -74,27 +74,31 @@ class PluggedController:
             except Exception as exc:  # noqa: BLE001
                 raise ControllerFault(self.label, f"reset raised {describe_exception(exc)}", ctx.t) from None
 
-    def _step_within(self, obs: Observation, limit: float, t: float):
-        """``step(obs)`` with a wall-clock limit (SIGALRM: the main thread of a process, as in ``vei run``
-        and a sweep's workers; elsewhere unlimited)."""
-        if threading.current_thread() is not threading.main_thread():
-            return self.impl.step(obs)
-        previous = signal.signal(signal.SIGALRM, _overran)
-        signal.setitimer(signal.ITIMER_REAL, limit)
+    def _step(self, obs: Observation, t: float):
+        """``step(obs)``, any failure of it one :class:`ControllerFault`; with ``--controller-timeout``
+        bounded in wall-clock time (SIGALRM: in the main thread of a process, as in ``vei run`` and a
+        sweep's workers; elsewhere unbounded)."""
+        limit = self.spec.step_timeout_s
+        timed = limit is not None and threading.current_thread() is threading.main_thread()
+        if timed:
+            previous = signal.signal(signal.SIGALRM, _overran)
+            signal.setitimer(signal.ITIMER_REAL, limit)
         try:
             return self.impl.step(obs)
-        except ControllerFault:
+        except ControllerFault:  # (an FMU's failed call, said already)
             raise
         except StepTimeout:
             reason = f"step did not return within {limit:g} s (--controller-timeout)"
             raise ControllerFault(self.label, reason, t) from None
-        except Exception as exc:  # noqa: BLE001
+        except Exception as exc:  # noqa: BLE001 (the user's code: any failure is theirs, said in one line)
             raise ControllerFault(self.label, f"step raised {describe_exception(exc)}", t) from None
         finally:
-            signal.setitimer(signal.ITIMER_REAL, 0)
-            signal.signal(signal.SIGALRM, previous)
+            if timed:
+                signal.setitimer(signal.ITIMER_REAL, 0)
+                signal.signal(signal.SIGALRM, previous)
 
     def observation(self, e: Entity, ctx) -> Observation:
+        """What ``e``'s controller sees at the step's start (the others as coupling shows them)."""
         others = [ctx.observed(n) for n, o in ctx.entities.items() if o is not e and not o.deleted]
         objects = [_state(o) for o in others if o is not None]
         threat = next((o for o in objects if o.name == ctx.threat), None)
@@ -103,18 +107,7 @@ class PluggedController:
     def move(self, e: Entity, ctx, dt: float) -> bool:
         if not self.started:
             self._start(e, ctx)
-        obs = self.observation(e, ctx)
-        limit = self.spec.step_timeout_s
-        if limit is None:
-            try:
-                value = self.impl.step(obs)
-            except ControllerFault:  # (an FMU's failed call, said already)
-                raise
-            except Exception as exc:  # noqa: BLE001
-                raise ControllerFault(self.label, f"step raised {describe_exception(exc)}", ctx.t) from None
-        else:
-            value = self._step_within(obs, limit, ctx.t)
-        cmd = command_from(value, self.label, ctx.t)
+        cmd = command_from(self._step(self.observation(e, ctx), ctx.t), self.label, ctx.t)
         a_cmd = cmd.accel_mps2
         if ctx.snapshot is not None:  # Jacobi: the vehicle gets this command at the next step
             a_cmd, self.held_command = self.held_command, a_cmd
