@@ -90,6 +90,7 @@ def _cmd_compile(args: argparse.Namespace) -> int:
         threat=args.threat,
         variants_dir=Path(args.variants) if args.variants else None,
         model_parameters=args.model_parameters,
+        stochastic=args.stochastic,
         frame_rate_hz=args.frame_rate,
         time_unit=args.time_unit,
     )
@@ -156,6 +157,7 @@ def _cmd_run(args: argparse.Namespace) -> int:
         coupling=args.coupling,
         osi=args.osi,
         cfg=MetricConfig(zone_ttc=args.zone_ttc),
+        progress=True,
         controllers=controllers,
     )
     for w in report.metrics.get("warnings", ()):
@@ -360,7 +362,7 @@ def _cmd_falsify(args: argparse.Namespace) -> int:
 
 def _cmd_probability(args: argparse.Namespace) -> int:
     from vei_scenario.atomic_io import json_text, write_bytes_atomic
-    from vei_scenario.probability import estimate_probability
+    from vei_scenario.probability import estimate_probability, random_seed
     from vei_scenario.runner import parse_param_overrides
 
     estimators = ("monte-carlo", "importance-sampling") if args.estimator == "both" else (args.estimator,)
@@ -368,6 +370,15 @@ def _cmd_probability(args: argparse.Namespace) -> int:
         args.scenario, args.dist, args.target, estimators, args.runs, parse_param_overrides(args.param),
         args.band, args.seed, args.dt, args.workers, _controllers(args), args.allow_default_controller,
     )  # fmt: skip
+    if results:
+        how = (
+            "--seed"
+            if args.seed is not None
+            else "the distribution's randomSeed"
+            if random_seed(args.dist) is not None
+            else "no --seed, no randomSeed in the file"
+        )
+        print(f"sampling with seed {results[0].seed} ({how})")
     for e in results:
         extra = f", {e.levels} level(s)" if e.estimator == "importance-sampling" else ""
         print(
@@ -382,7 +393,7 @@ def _cmd_probability(args: argparse.Namespace) -> int:
               f"({needed / imp.runs:.1f}x the runs importance sampling took)")  # fmt: skip
     if args.output:
         doc = {"scenario": str(args.scenario), "distribution": str(args.dist), "target": args.target,
-               "fixed": parse_param_overrides(args.param), "seed": args.seed,
+               "fixed": parse_param_overrides(args.param), "seed": results[0].seed if results else args.seed,
                "estimates": [e.as_dict() for e in results]}  # fmt: skip
         if args.controller:
             from vei_scenario.sut import sut_document
@@ -405,7 +416,7 @@ def _cmd_view(args: argparse.Namespace) -> int:
     else:
         raise VeiInputError(src, "input", "not found (a .xosc scenario or a directory written by vei run -o)")
     if args.output:
-        print(f"wrote {write_animation(view, args.output, args.fps, args.speed)}")
+        print(f"wrote {write_animation(view, args.output, args.fps, args.speed, progress=True)}")
     else:
         show(view, args.fps, args.speed)
     return 0
@@ -506,6 +517,13 @@ def build_parser() -> argparse.ArgumentParser:
         help="also declare the rider's and the planner's model parameters (RiderDesiredSpeed, RiderRepulsion, "
         "PlannerTimeHeadway, PlannerMaxDecel, PlannerStandstillGap) so that sweeps and vei falsify vary them",
     )
+    c.add_argument(
+        "--stochastic",
+        action="store_true",
+        help="also write STEM.stochastic.xosc, a stochastic ParameterValueDistribution for vei probability: "
+        "TimeShift normal around ConflictTimeShift (standard deviation half the collision interval), the rider "
+        "type uniform",
+    )
     c.add_argument("--frame-rate", type=FRAME_RATE, metavar="HZ", help=FRAME_RATE_HELP)
     c.add_argument("--time-unit", choices=TIME_UNITS, help=TIME_UNIT_HELP)
     c.set_defaults(func=_cmd_compile)
@@ -583,15 +601,21 @@ def build_parser() -> argparse.ArgumentParser:
         formatter_class=argparse.RawDescriptionHelpFormatter,
         description="Run every variant (the cartesian product of --vary, or a --dist file) and write:\n"
         "  catalog.csv / catalog.json  one row per variant: its parameters and every metric of vei run\n"
-        "  report.html  first a table per configuration (the varied parameters but TimeShift): variants,\n"
-        "      collisions, whether the planner was on (CapEnabled), the lowest safety index S, the longest\n"
-        "      time in the TTC alert zone and the lowest minimum TTC; configurations that collide with the\n"
-        "      planner on come first, and every such collision (a failure of the system under test) is\n"
-        "      listed with the command that reproduces it. Then plots over TimeShift: S (share of the run\n"
-        "      outside the alert and collision zones; 0 on contact), the minimum 2-D TTC (time until the\n"
-        "      boxes touch at constant velocities) and the minimum gap between the boxes, collision\n"
-        "      regions shaded; then the most severe collisions (by impact speed, the relative speed at\n"
-        "      first contact) and the closest passes (by minimum gap, then TTC).",
+        "  report.html  first the grid (each swept parameter's values and step: a sweep runs its points,\n"
+        "      nothing between them); then a table per configuration (the varied parameters but\n"
+        "      TimeShift): variants, collisions, whether the planner was on (CapEnabled), the lowest\n"
+        "      safety index S, the longest time in the TTC alert zone and the lowest minimum TTC;\n"
+        "      configurations that collide with the planner on come first, and every such collision (a\n"
+        "      failure of the system under test) is listed with the command that reproduces it. With\n"
+        "      none, where the grid shows signs of narrower failure windows (collisions with the planner\n"
+        "      off, near misses with it on) it says so and gives the vei risk / vei falsify commands that\n"
+        "      search between the points. Near misses with the planner on (no contact; minimum gap under\n"
+        "      0.5 m or minimum TTC at most 1.5 s) are listed, the closest first. Then plots over\n"
+        "      TimeShift: S (share of the run outside the alert and collision zones; 0 on contact), the\n"
+        "      minimum 2-D TTC (time until the boxes touch at constant velocities) and the minimum gap\n"
+        "      between the boxes, collision regions shaded, series with equal values in their own marker\n"
+        "      and dash with a legend note; then the most severe collisions (by impact speed, the relative\n"
+        "      speed at first contact) and the closest passes (by minimum gap, then TTC).",
     )
     sw.add_argument(
         "scenario", help="OpenSCENARIO file (.xosc), or a ParameterValueDistribution alone (its ScenarioFile swept)"
@@ -678,9 +702,15 @@ def build_parser() -> argparse.ArgumentParser:
         help="collision (default: a collision with the ego moving, > 0.1 m/s at the first contact: a failure of "
         "the system that drives it), collision_any (every contact) or METRIC<VALUE, e.g. min_ttc_s<1.0",
     )
-    fz.add_argument("--slices", type=_number(2, 200, integer=True), default=7, help="slices per other range")
-    fz.add_argument("--tol", type=_number(1e-5, 10), default=0.005, help="edge tolerance on the primary axis")
-    fz.add_argument("--seed", type=SEED, default=0, help="seed of the Sobol slices (two or more other ranges)")
+    fz.add_argument(
+        "--slices", type=_number(2, 200, integer=True), default=7, help="slices per other range (default 7)"
+    )
+    fz.add_argument(
+        "--tol", type=_number(1e-5, 10), default=0.005, help="edge tolerance on the primary axis (default 0.005)"
+    )
+    fz.add_argument(
+        "--seed", type=SEED, default=0, help="seed of the Sobol slices (two or more other ranges; default 0)"
+    )
     fz.add_argument("--dt", type=DT, default=0.01, help="fixed step in s (default 0.01)")
     fz.add_argument("--workers", type=WORKERS, help="worker threads or processes (default: all cores)")
     fz.add_argument("-o", "--output", help="directory for falsify.json and the regions' worst scenarios")
@@ -698,7 +728,7 @@ def build_parser() -> argparse.ArgumentParser:
         help="P(collision) or P(near miss) under a stochastic distribution: Monte Carlo and importance sampling",
         description="Estimate how likely the target is when the parameters follow the stochastic "
         "ParameterValueDistribution --dist (others fixed by --param or their defaults). monte-carlo: the share "
-        "of failing runs among draws from the distribution, Wilson's 95 %% interval. importance-sampling: "
+        "of failing runs among draws from the distribution, Wilson's 95 % interval. importance-sampling: "
         "levels learn where failures are (kernels around the worst runs), then each failure of a fresh sample "
         "is weighted by nominal / proposal density; the interval from the weights' standard error. Both "
         "report their runs; the second needs far fewer for the same width when failures are rare.",
@@ -717,10 +747,12 @@ def build_parser() -> argparse.ArgumentParser:
         default="both",
         help="which estimate(s) to make (default both, with how many Monte Carlo runs the same width would take)",
     )
-    pr.add_argument("--runs", type=_number(100, 10_000_000, integer=True), default=20000, help="runs per estimator")
+    pr.add_argument(
+        "--runs", type=_number(100, 10_000_000, integer=True), default=20000, help="runs per estimator (default 20000)"
+    )
     pr.add_argument("--param", action="append", default=[], metavar="NAME=VALUE", help="fix a parameter")
     pr.add_argument("--band", type=_pair, default=(0.5, 1.5), help="near-miss band of the minimum TTC, s")
-    pr.add_argument("--seed", type=SEED, default=0, help="seed of the sampling (default 0)")
+    pr.add_argument("--seed", type=SEED, help="seed of the sampling (default: the distribution's randomSeed, else 0)")
     pr.add_argument("--dt", type=DT, default=0.01, help="fixed step in s (default 0.01)")
     pr.add_argument("--workers", type=WORKERS, help="worker threads or processes (default: all cores)")
     pr.add_argument("-o", "--output", help="write the estimates as JSON here")

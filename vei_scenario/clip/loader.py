@@ -10,6 +10,7 @@ from __future__ import annotations
 import json
 import math
 import re
+import sys
 from functools import lru_cache
 from importlib import resources
 from pathlib import Path
@@ -57,7 +58,7 @@ def read_json(path: Path) -> Any:
     if not path.is_file():
         raise VeiInputError(path, "", "file not found")
     try:
-        text = path.read_text("utf-8")
+        text = path.read_text("utf-8-sig")  # (a byte-order mark, as Windows editors write, is no content)
     except UnicodeDecodeError as exc:
         raise VeiInputError(path, "", f"not UTF-8 text ({exc.reason} at byte {exc.start})") from None
     except OSError as exc:
@@ -70,7 +71,10 @@ def read_json(path: Path) -> Any:
             path, "", "nested too deeply to read (more than ~900 levels of arrays or objects)"
         ) from None
     except json.JSONDecodeError as exc:
-        raise VeiInputError(path, f"line {exc.lineno} column {exc.colno}", f"invalid JSON: {exc.msg}") from None
+        hint = ""
+        if text.lstrip("\ufeff \t\r\n").startswith("<"):  # a scenario or road network given for a clip
+            hint = f" (the file is XML, not a JSON clip: if it is an OpenSCENARIO scenario, play it: vei run {path})"
+        raise VeiInputError(path, f"line {exc.lineno} column {exc.colno}", f"invalid JSON: {exc.msg}{hint}") from None
     except _NonJsonConstant as exc:  # NaN / Infinity literals, which Python accepts and JSON does not
         m = re.search(rf"(?<![\w\"]){re.escape(exc.name)}(?![\w\"])", text)
         where = ""
@@ -78,6 +82,9 @@ def read_json(path: Path) -> Any:
             line = text.count("\n", 0, m.start()) + 1
             where = f"line {line} column {m.start() - text.rfind(chr(10), 0, m.start())}"
         raise VeiInputError(path, where, f"invalid JSON: {exc.name} is not a number JSON allows") from None
+    except ValueError:  # (an integer of thousands of digits: Python refuses to convert it)
+        limit = sys.get_int_max_str_digits()
+        raise VeiInputError(path, "", f"invalid JSON: a number of more than {limit} digits, too long to read") from None
 
 
 def _schema_check(path: Path, doc: Any) -> None:
@@ -93,9 +100,29 @@ def _schema_check(path: Path, doc: Any) -> None:
         reason = f"{err.message} (extra fields belong under an 'extensions' object)"
     elif err.validator == "const" and list(err.absolute_path) == ["format"]:
         reason = f"unsupported format {err.instance!r}; expected 'vei-clip/1'"
+    elif err.validator == "type" and len(err.message) > MAX_REASON_CHARS:  # (it quotes a large value whole)
+        reason = f"must be {_json_type_name(err.validator_value)}, not {_json_type_name(_json_type(err.instance))}"
     else:
-        reason = err.message
+        reason = err.message if len(err.message) <= MAX_REASON_CHARS else err.message[:MAX_REASON_CHARS] + " [...]"
     raise VeiInputError(path, where, reason)
+
+
+#: The longest schema message quoted (a message that quotes a large value is cut).
+MAX_REASON_CHARS = 200
+
+
+def _json_type(value: Any) -> str:
+    if isinstance(value, bool):
+        return "boolean"
+    if isinstance(value, (int, float)):
+        return "number"
+    return {dict: "object", list: "array", str: "string", type(None): "null"}.get(type(value), type(value).__name__)
+
+
+def _json_type_name(kind: Any) -> str:
+    kinds = [kind] if isinstance(kind, str) else list(kind)
+    article = {"array": "an array", "object": "an object", "integer": "an integer"}
+    return " or ".join(article.get(k, f"a {k}") for k in kinds)
 
 
 def _strictly_increasing(path: Path, values: np.ndarray, field: str) -> None:

@@ -668,6 +668,8 @@ def convert_clip(
     from vei_scenario.atomic_io import write_bytes_atomic
 
     src, dst = Path(src), Path(dst)
+    if dst.exists() and src.exists() and dst.resolve() == src.resolve():
+        raise VeiInputError(dst, "-o", "is the input clip: write the converted clip to another file")
     doc = read_json(src)
     is_openlabel = isinstance(doc, dict) and "openlabel" in doc
     to = to or ("vei-clip" if is_openlabel else "openlabel")
