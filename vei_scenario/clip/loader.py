@@ -148,16 +148,16 @@ GPS_ERROR_M = 50.0
 MAX_CLIP_S = 3600.0
 
 
-def _clip_span_fits(path: Path, t: np.ndarray, field: str) -> None:
+def _clip_span_fits(path: Path, t: np.ndarray, field: str, max_span_s: float = MAX_CLIP_S) -> None:
     """Refuse a clip whose times span more than MAX_CLIP_S, naming the sample after the widest gap (a
     time in other units or from another clock, typically)."""
-    if t[-1] - t[0] > MAX_CLIP_S:
+    if t[-1] - t[0] > max_span_s:
         i = int(np.argmax(np.diff(t))) + 1
         raise VeiInputError(
             path,
             field.format(i=i),
             f"the times span {t[-1] - t[0]:.6g} s (a gap of {t[i] - t[i - 1]:.6g} s before this one); a clip "
-            f"spans at most {MAX_CLIP_S:g} s",
+            f"spans at most {max_span_s:g} s",
         )
 
 
@@ -179,9 +179,10 @@ def _track_moves_as_a_vehicle(path: Path, ego: EgoTrack) -> None:
         )
 
 
-def clip_from_document(path: Path, doc: Any) -> Clip:
+def clip_from_document(path: Path, doc: Any, *, max_span_s: float = MAX_CLIP_S, require_scooter: bool = True) -> Clip:
     """A ``vei-clip/1`` document (already parsed) checked and normalised; ``path`` names it in errors
-    and anchors the map file."""
+    and anchors the map file. ``max_span_s`` and ``require_scooter`` are what a clip to compile needs;
+    a whole drive to cut into clips (``vei clip split``) may be longer and have no e-scooter."""
     _schema_check(path, doc)
 
     ego_doc = doc["ego"]
@@ -192,7 +193,7 @@ def clip_from_document(path: Path, doc: Any) -> Clip:
         if bad.size:
             raise VeiInputError(path, f"ego.samples[{int(bad[0])}].{k}", "not a finite number")
     _strictly_increasing(path, cols["t"], "ego.samples[{i}].t")
-    _clip_span_fits(path, cols["t"], "ego.samples[{i}].t")
+    _clip_span_fits(path, cols["t"], "ego.samples[{i}].t", max_span_s)
     ego = EgoTrack(
         t=cols["t"],
         lat=cols["lat"],
@@ -248,12 +249,12 @@ def clip_from_document(path: Path, doc: Any) -> Clip:
 
     annotations = Annotations(offset, y_axis, frame_t, tuple(observations))
     scooters = annotations.tracks(SCOOTER_CATEGORIES)
-    if not scooters:
+    if not scooters and require_scooter:
         raise VeiInputError(
             path, "annotations.frames", f"no e-scooter track (category one of {sorted(SCOOTER_CATEGORIES)})"
         )
     for tid, obs in scooters.items():
-        if len(obs) < 2:
+        if len(obs) < 2 and require_scooter:
             raise VeiInputError(
                 path,
                 f"annotations.frames[{obs[0].frame_index}].objects",
