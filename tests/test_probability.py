@@ -52,8 +52,11 @@ def test_importance_sampling_agrees_with_monte_carlo_on_rare_failures_and_needs_
         '<Element value="aggressive" weight="1"/>'
         "</ProbabilityDistributionSet></StochasticDistribution>",
     )
-    mc, imp = estimate_probability(scenario, dist, runs=20000, fixed={"CapEnabled": "true"}, seed=5)
-    assert 0.005 < mc.probability < 0.05  # rare: the planner fails in windows 0.03-0.07 s wide
+    # every contact (the planner's windows 0.03-0.07 s wide, most with the ego standing: the search machinery)
+    mc, imp = estimate_probability(
+        scenario, dist, "collision_any", runs=20000, fixed={"CapEnabled": "true"}, seed=5
+    )  # fmt: skip
+    assert 0.005 < mc.probability < 0.05  # rare
     assert mc.low <= imp.probability <= mc.high
     needed = mc.runs * (mc.width / imp.width) ** 2  # Monte Carlo runs for the importance-sampling width
     assert needed >= 10 * imp.runs, (needed, imp.runs)

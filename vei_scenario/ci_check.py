@@ -84,6 +84,8 @@ class Case:
     parameters: dict[str, str]
     expectations: list[Expectation]
     validate: bool = True
+    #: the system under test on an entity (``controller = "Ego=aeb.py:AEB"``, a file relative to the suite)
+    controllers: tuple = ()
 
 
 @dataclass
@@ -160,7 +162,8 @@ def load_suite(path: str | Path) -> tuple[list[Case], float]:
         for key in ("scenario", "clip"):
             if key in c and (not isinstance(c[key], str) or not c[key]):
                 raise VeiInputError(path, f"{where}.{key}", "must be a file path (text)")
-        extra = set(c) - {"name", "scenario", "clip", "parameters", "expect", "validate"}
+        extra = set(c) - {"name", "scenario", "clip", "parameters", "expect", "validate", "controller",
+                          "controller_parameters"}  # fmt: skip
         if extra:
             raise VeiInputError(path, f"{where}.{sorted(extra)[0]}", "unknown key")
         if ("scenario" in c) == ("clip" in c):
@@ -205,6 +208,7 @@ def load_suite(path: str | Path) -> tuple[list[Case], float]:
                 raise VeiInputError(path, f"{where}.expect[{j}]", f"{e!r}: the value is not a finite number")
             parsed.append(Expectation(metric, m.group(2), value, e))
         base = path.parent
+        controllers = _controllers(path, where, c, base)
         cases.append(
             Case(
                 c["name"],
@@ -213,9 +217,33 @@ def load_suite(path: str | Path) -> tuple[list[Case], float]:
                 {k: _param_string(v) for k, v in params.items()},
                 parsed,
                 bool(c.get("validate", True)),
+                controllers,
             )
         )
     return cases, dt
+
+
+def _controllers(path: Path, where: str, c: dict, base: Path) -> tuple:
+    """A case's ``controller = "ENTITY=TARGET"`` (with ``controller_parameters``), loaded and checked."""
+    from vei_scenario.sut import ControllerFault, ControllerSpec
+
+    text, params = c.get("controller"), c.get("controller_parameters", {})
+    if text is None:
+        if params:
+            raise VeiInputError(path, f"{where}.controller_parameters", "given without controller")
+        return ()
+    entity, sep, target = text.partition("=") if isinstance(text, str) else ("", "", "")
+    if not sep or not entity.strip() or not target.strip():
+        raise VeiInputError(path, f"{where}.controller", "must be 'ENTITY=FILE.py:CLASS' (or MODULE:CLASS, or a .fmu)")
+    if not isinstance(params, dict):
+        raise VeiInputError(path, f"{where}.controller_parameters", "must be a table")
+    spec = ControllerSpec(entity.strip(), target.strip(), tuple((k, _param_string(v)) for k, v in params.items()),
+                          base=str(base))  # fmt: skip
+    try:
+        spec.load()
+    except ControllerFault as exc:
+        raise VeiInputError(path, f"{where}.controller", str(exc)) from None
+    return (spec,)
 
 
 def _validate(scenario: Path, warnings: list[str]) -> list[str]:
@@ -251,7 +279,7 @@ def run_case(case: Case, dt: float, workdir: Path) -> CaseResult:
         if case.validate:
             res.errors += [f"validation: {p}" for p in _validate(scenario, res.warnings)]
         if not res.errors:
-            report = run_to(scenario, None, case.parameters, dt, plots=False)
+            report = run_to(scenario, None, case.parameters, dt, plots=False, controllers=case.controllers)
             res.metrics = report.metrics["metrics"]
             for e in case.expectations:
                 ok, actual = e.check(res.metrics)
@@ -276,6 +304,12 @@ def junit_xml(suite: Path, results: list[CaseResult]) -> bytes:
     )
     for r in results:
         tc = etree.SubElement(ts, "testcase", classname=suite.stem, name=r.case.name, time=f"{r.seconds:.3f}")
+        if r.case.controllers:  # the system under test, by file and hash
+            props = etree.SubElement(tc, "properties")
+            for s in r.case.controllers:
+                d = s.describe()
+                etree.SubElement(props, "property", name=f"system_under_test.{d['entity']}",
+                                 value=f"{d['controller']} sha256={d['sha256']}")  # fmt: skip
         if r.errors:
             etree.SubElement(tc, "error", message=r.errors[0]).text = "\n".join(r.errors)
         elif r.failures:

@@ -2,7 +2,7 @@
 
 Each sub-command parses its arguments and calls one library function. User errors
 (:class:`~vei_scenario.errors.VeiInputError`) print one line ``vei: error: FILE: FIELD: REASON`` and
-exit with code 2; validation findings exit with 1.
+exit with code 2; validation findings, and a fault of the user's controller while it runs, exit with 1.
 """
 
 from __future__ import annotations
@@ -22,6 +22,8 @@ from vei_scenario.errors import VeiInputError
 EXIT_USER_ERROR = 2
 #: A sweep that wrote its catalog but some of whose variants could not be run (their rows say why).
 EXIT_VARIANTS_FAILED = 1
+#: The user's controller (the system under test) failed while running: raised, or returned no command.
+EXIT_CONTROLLER_FAULT = 1
 
 
 class _Parser(argparse.ArgumentParser):
@@ -246,6 +248,7 @@ def _cmd_run(args: argparse.Namespace) -> int:
     from vei_scenario.variation import distributed_scenario
 
     values = parse_param_overrides(args.param)
+    controllers = _controllers(args)
     if not args.dist and (base := distributed_scenario(args.scenario)) is not None:  # a distribution alone
         args.scenario, args.dist = base, args.scenario
     if args.dist:  # a variant of a ParameterValueDistribution (esmini's --param_dist/--param_permutation)
@@ -266,6 +269,7 @@ def _cmd_run(args: argparse.Namespace) -> int:
         osi=args.osi,
         cfg=MetricConfig(zone_ttc=args.zone_ttc),
         progress=True,
+        controllers=controllers,
     )
     for w in report.metrics.get("warnings", ()):
         print(f"vei: warning: {w}", file=sys.stderr)
@@ -320,8 +324,13 @@ def _cmd_study(args: argparse.Namespace) -> int:
     from vei_scenario.study import run_study, table_text
 
     zone = "approx" if args.paper else args.zone_ttc
-    report = run_study(args.input, args.output, args.dt, args.time_shift, plots=not args.no_plots, zone_ttc=zone)
+    controllers = _controllers(args)
+    report = run_study(
+        args.input, args.output, args.dt, args.time_shift, plots=not args.no_plots, zone_ttc=zone,
+        controllers=controllers,
+    )  # fmt: skip
     print(f"{report.scenario}: five configurations at TimeShift {report.time_shift_s:+.3f} s")
+    _print_sut(controllers)
     print(table_text(report.rows))
     print(f"wrote {len(report.written)} files under {args.output}")
     return 0
@@ -330,6 +339,7 @@ def _cmd_study(args: argparse.Namespace) -> int:
 def _cmd_sweep(args: argparse.Namespace) -> int:
     from vei_scenario.reports.plot_worker import PlotWorker
 
+    controllers = _controllers(args)
     plotter = PlotWorker()  # forked first: it imports matplotlib while this process imports the sweep
     try:
         from vei_scenario.sweep import run_sweep
@@ -350,16 +360,19 @@ def _cmd_sweep(args: argparse.Namespace) -> int:
             args.osi_traces,
             args.osi_format,
             args.zone_ttc,
+            controllers,
         )
     finally:
         plotter.close()
     for w in report.warnings:
         print(f"vei: warning: {w}", file=sys.stderr)
+    _print_sut(controllers)
     ok = [r for r in report.rows if r["status"] == "ok"]
     coll = sum(1 for r in ok if r["metrics"].get("collision"))
+    moving = sum(1 for r in ok if r["metrics"].get("collision_ego_moving"))
     print(
-        f"{len(report.rows)} variants ({', '.join(report.varied)}): {coll} collide, {len(ok) - coll} do not, "
-        f"{len(report.rows) - len(ok)} failed"
+        f"{len(report.rows)} variants ({', '.join(report.varied)}): {coll} collide ({moving} with the ego moving), "
+        f"{len(ok) - coll} do not, {len(report.rows) - len(ok)} failed"
     )
     out = Path(args.output)
     print(f"wrote {out / 'catalog.csv'}, {out / 'catalog.json'}, {out / 'report.html'}")
@@ -422,6 +435,7 @@ def _cmd_risk(args: argparse.Namespace) -> int:
         args.tol,
         args.dt,
         args.workers,
+        _controllers(args),
     )
     for r in results:
         fixed = ", ".join(f"{k}={v}" for k, v in r.parameters.items() if k in {v.split("=")[0] for v in args.vary})
@@ -443,7 +457,8 @@ def _cmd_falsify(args: argparse.Namespace) -> int:
     axes = [a for a in axes if a.name not in {g.name for g in given}] + given  # the command line wins
     result = falsify(
         args.scenario, axes, parse_param_overrides(args.param), args.target, args.slices, args.tol,
-        seed=args.seed, dt=args.dt, workers=args.workers, out_dir=args.output,
+        seed=args.seed, dt=args.dt, workers=args.workers, out_dir=args.output, controllers=_controllers(args),
+        allow_default_controller=args.allow_default_controller,
     )  # fmt: skip
     print(f"{len(result.regions)} failure region(s) of {args.target} found in {result.runs} runs")
     for r in result.regions:
@@ -464,7 +479,7 @@ def _cmd_probability(args: argparse.Namespace) -> int:
     estimators = ("monte-carlo", "importance-sampling") if args.estimator == "both" else (args.estimator,)
     results = estimate_probability(
         args.scenario, args.dist, args.target, estimators, args.runs, parse_param_overrides(args.param),
-        args.band, args.seed, args.dt, args.workers,
+        args.band, args.seed, args.dt, args.workers, _controllers(args), args.allow_default_controller,
     )  # fmt: skip
     if results:
         how = (
@@ -491,6 +506,10 @@ def _cmd_probability(args: argparse.Namespace) -> int:
         doc = {"scenario": str(args.scenario), "distribution": str(args.dist), "target": args.target,
                "fixed": parse_param_overrides(args.param), "seed": results[0].seed if results else args.seed,
                "estimates": [e.as_dict() for e in results]}  # fmt: skip
+        if args.controller:
+            from vei_scenario.sut import sut_document
+
+            doc["system_under_test"] = sut_document(_controllers(args))
         write_bytes_atomic(Path(args.output), (json_text(doc, indent=2) + "\n").encode())
         print(f"wrote {args.output}")
     return 0
@@ -504,7 +523,7 @@ def _cmd_view(args: argparse.Namespace) -> int:
     if src.is_dir():
         view = view_run_dir(src, args.scenario)
     elif src.is_file():
-        view = view_scenario(src, parse_param_overrides(args.param), args.dt)
+        view = view_scenario(src, parse_param_overrides(args.param), args.dt, _controllers(args))
     else:
         raise VeiInputError(src, "input", "not found (a .xosc scenario or a directory written by vei run -o)")
     if args.output:
@@ -535,6 +554,49 @@ ZONE_HELP = (
     "to a road user ahead in the ego's lane band, blind to crossings); both minima are always reported"
 )
 BACKEND_HELP = "native: C models compiled into the FMU (default); python: pythonfmu (needs the [fmu] extra)"
+
+
+CONTROLLER_HELP = (
+    "drive ENTITY's speed by your own controller, the system under test, from the start to the end: "
+    "ENTITY=path/file.py:Class or ENTITY=package.module:Class (step(obs) returns the acceleration in m/s²; "
+    "the entity keeps its path or lane); constructed with the scenario's controller properties of that entity"
+)
+
+
+def _controller_options(p: argparse.ArgumentParser) -> None:
+    p.add_argument("--controller", action="append", default=[], metavar="ENTITY=TARGET", help=CONTROLLER_HELP)
+    p.add_argument(
+        "--controller-param",
+        action="append",
+        default=[],
+        metavar="NAME=VALUE",
+        help="a property for the --controller class's constructor (a keyword argument, as text)",
+    )
+    p.add_argument(
+        "--controller-timeout",
+        type=_number(1e-3, 1e6),
+        metavar="SECONDS",
+        help="the longest one step(obs) of the --controller may take (wall clock); a run (a sweep's variant) "
+        "over it fails with one line instead of hanging (default: no limit)",
+    )
+
+
+def _controllers(args: argparse.Namespace) -> tuple:
+    """The systems under test the command line plugs in, loaded and checked before anything runs."""
+    if not args.controller and not args.controller_param and args.controller_timeout is None:
+        return ()
+    from vei_scenario.sut import parse_controller_options
+
+    if args.controller_timeout is not None and not args.controller:
+        raise VeiInputError(None, "--controller-timeout", "given without --controller")
+    return parse_controller_options(args.controller, args.controller_param, args.controller_timeout)
+
+
+def _print_sut(controllers: tuple) -> None:
+    """One line per system under test: what the results are of."""
+    for s in controllers:
+        d = s.describe()
+        print(f"system under test on {d['entity']}: {d['controller']} (sha256 {(d['sha256'] or '-')[:12]})")
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -712,6 +774,7 @@ def build_parser() -> argparse.ArgumentParser:
         help="how entities see each other within a step: sequential (default) or jacobi (as a co-simulation "
         "master stepping all FMUs on the previous outputs)",
     )
+    _controller_options(r)
     r.set_defaults(func=_cmd_run)
 
     st = sub.add_parser("study", help="the seed paper's five configurations at the collision timing shift")
@@ -726,6 +789,7 @@ def build_parser() -> argparse.ArgumentParser:
     st.add_argument(
         "--paper", action="store_true", help="the seed paper's table: zones and safety index from its approximate TTC"
     )
+    _controller_options(st)
     st.set_defaults(func=_cmd_study)
 
     sw = sub.add_parser(
@@ -782,6 +846,7 @@ def build_parser() -> argparse.ArgumentParser:
         "(collisions with CapEnabled=true), all, or variant numbers 3,17,42",
     )
     sw.add_argument("--osi-format", choices=("mcap", "osi"), default="mcap", help="trace format (default mcap)")
+    _controller_options(sw)
     sw.set_defaults(func=_cmd_sweep)
 
     rk = sub.add_parser(
@@ -796,9 +861,10 @@ def build_parser() -> argparse.ArgumentParser:
     rk.add_argument("scenario", help="vei-compiled OpenSCENARIO file (.xosc)")
     rk.add_argument(
         "--target",
-        choices=("collision", "near-miss"),
+        choices=("collision", "collision_any", "near-miss"),
         default="collision",
-        help="what to find: collisions (default) or near misses (minimum TTC within --band)",
+        help="what to find: collisions with the ego moving (default; > 0.1 m/s at the first contact), every "
+        "collision (collision_any) or near misses (minimum TTC within --band)",
     )
     rk.add_argument("--vary", action="append", default=[], help="other parameters to search separately")
     rk.add_argument("--band", type=_pair, default=(0.5, 1.5), help="near-miss band of the minimum TTC, s (0.5:1.5)")
@@ -808,6 +874,7 @@ def build_parser() -> argparse.ArgumentParser:
     rk.add_argument("--dt", type=DT, default=0.01, help="fixed step in s (default 0.01)")
     rk.add_argument("--workers", type=WORKERS, help="worker processes (default: all cores)")
     rk.add_argument("-o", "--output", help="directory for risk.json and the critical scenarios")
+    _controller_options(rk)
     rk.set_defaults(func=_cmd_risk)
 
     fz = sub.add_parser(
@@ -826,7 +893,12 @@ def build_parser() -> argparse.ArgumentParser:
     fz.add_argument("--values", action="append", default=[], metavar="NAME=V1,V2", help="a discrete set")
     fz.add_argument("--dist", help="take the box from a ParameterValueDistribution (ranges and value sets)")
     fz.add_argument("--param", action="append", default=[], metavar="NAME=VALUE", help="fix a parameter")
-    fz.add_argument("--target", default="collision", help="collision (default) or METRIC<VALUE, e.g. min_ttc_s<1.0")
+    fz.add_argument(
+        "--target",
+        default="collision",
+        help="collision (default: a collision with the ego moving, > 0.1 m/s at the first contact: a failure of "
+        "the system that drives it), collision_any (every contact) or METRIC<VALUE, e.g. min_ttc_s<1.0",
+    )
     fz.add_argument(
         "--slices", type=_number(2, 200, integer=True), default=7, help="slices per other range (default 7)"
     )
@@ -839,6 +911,13 @@ def build_parser() -> argparse.ArgumentParser:
     fz.add_argument("--dt", type=DT, default=0.01, help="fixed step in s (default 0.01)")
     fz.add_argument("--workers", type=WORKERS, help="worker threads or processes (default: all cores)")
     fz.add_argument("-o", "--output", help="directory for falsify.json and the regions' worst scenarios")
+    _controller_options(fz)
+    fz.add_argument(
+        "--allow-default-controller",
+        action="store_true",
+        help="search although a controller the scenario names is one vei has no model of (it plays as the "
+        "default controller; refused otherwise, as the failures found would not be any system's)",
+    )
     fz.set_defaults(func=_cmd_falsify)
 
     pr = sub.add_parser(
@@ -853,7 +932,12 @@ def build_parser() -> argparse.ArgumentParser:
     )
     pr.add_argument("scenario", help="OpenSCENARIO file (.xosc)")
     pr.add_argument("--dist", required=True, help="stochastic ParameterValueDistribution file")
-    pr.add_argument("--target", choices=("collision", "near-miss"), default="collision", help="what counts")
+    pr.add_argument(
+        "--target",
+        choices=("collision", "collision_any", "near-miss"),
+        default="collision",
+        help="what counts: collision (default: the ego moving at the first contact), collision_any, near-miss",
+    )
     pr.add_argument(
         "--estimator",
         choices=("monte-carlo", "importance-sampling", "both"),
@@ -869,6 +953,13 @@ def build_parser() -> argparse.ArgumentParser:
     pr.add_argument("--dt", type=DT, default=0.01, help="fixed step in s (default 0.01)")
     pr.add_argument("--workers", type=WORKERS, help="worker threads or processes (default: all cores)")
     pr.add_argument("-o", "--output", help="write the estimates as JSON here")
+    _controller_options(pr)
+    pr.add_argument(
+        "--allow-default-controller",
+        action="store_true",
+        help="search although a controller the scenario names is one vei has no model of (it plays as the "
+        "default controller; refused otherwise, as the failures found would not be any system's)",
+    )
     pr.set_defaults(func=_cmd_probability)
 
     vw = sub.add_parser("view", help="play a run on its road: moving boxes, trails, TTC zones, the collision")
@@ -881,6 +972,7 @@ def build_parser() -> argparse.ArgumentParser:
     )
     vw.add_argument("--speed", type=_number(0.01, 1000), default=1.0, help="playback speed, × real time (default 1)")
     vw.add_argument("--scenario", help="with a run directory: the scenario, for the road and the boxes")
+    _controller_options(vw)
     vw.set_defaults(func=_cmd_view)
 
     ck = sub.add_parser("check", help="run a suite of scenario expectations (for CI); JUnit XML")
@@ -995,8 +1087,13 @@ def main(argv: list[str] | None = None) -> int:
         args = parser.parse_args(argv)
     except SystemExit as exc:  # --help, --version (0) or a refused argument (2, said in one line)
         return int(exc.code or 0) if not isinstance(exc.code, str) else EXIT_USER_ERROR
+    from vei_scenario.sut.contract import ControllerFault
+
     try:
         return args.func(args)
+    except ControllerFault as exc:  # the user's code: one line; at load (no step time) it is bad input
+        print(f"vei: error: {_one_line(str(exc))}", file=sys.stderr)
+        return EXIT_USER_ERROR if exc.t_s is None else EXIT_CONTROLLER_FAULT
     except VeiInputError as exc:
         print(f"vei: error: {_one_line(str(exc))}", file=sys.stderr)
         return EXIT_USER_ERROR

@@ -9,10 +9,11 @@ therefore treats one continuous parameter as the *primary* axis (TimeShift when 
 1. **Slices.** The other continuous parameters are sampled (evenly spaced for one, a scrambled Sobol
    sample for several, ``--slices`` per parameter) and crossed with every value of the discrete ones.
 2. **Line search on each slice.** A coarse scan along the primary axis, scored with a continuous
-   robustness value (the minimum box gap, ``-(1 + impact speed)`` on contact, or the margin of a metric
-   target such as ``min_ttc_s<1``), finds failing points directly and, around every local minimum of
-   the robustness below a margin, a bounded Brent minimisation (SciPy) climbs to the failures the scan
-   stepped over. Each failure is bisected to its window's edges (``--tol``).
+   robustness value (the minimum box gap, ``-(1 + impact speed)`` on contact with the ego moving, 0 on
+   contact with the ego standing, or the margin of a metric target such as ``min_ttc_s<1``), finds failing
+   points directly and, around every local minimum of the robustness below a margin, a bounded Brent
+   minimisation (SciPy) climbs to the failures the scan stepped over. Each failure is bisected to its
+   window's edges (``--tol``).
 3. **Regions.** Windows on neighbouring slices are one region when their intervals overlap, or when a
    probe on the slice half-way between them finds a window between them (a band that moves faster than
    its width). Each region's primary edges are the extreme window edges, refined along each other
@@ -80,11 +81,13 @@ class Region:
     worst_robustness: float
     worst: dict[str, str]
     dt: float = 0.01
+    #: the options that plug the system under test in again (sut.reproduce_options)
+    options: str = ""
 
     def reproduce(self, scenario: str) -> str:
         params = " ".join(f"--param {k}={v}" for k, v in self.worst.items())
         step = f" --dt {self.dt:g}" if self.dt != 0.01 else ""
-        return f"vei run {scenario} {params}{step}"
+        return f"vei run {scenario} {params}{step}{self.options}"
 
     def as_dict(self, scenario: str) -> dict:
         return {
@@ -110,32 +113,47 @@ class FalsifyResult:
     runs: int
     axes: list[Axis]
     written: list[Path] = field(default_factory=list)
+    system_under_test: list[dict] = field(default_factory=list)
 
 
-def parse_target(text: str) -> tuple[str, str, float] | None:
-    """``collision`` (None) or ``METRIC<VALUE`` (``<``, ``<=``, ``>``, ``>=``) as (metric, op, value)."""
+#: The target that counts every contact, the ego standing or not (``collision`` counts the ego moving).
+COLLISION_ANY = "collision_any"
+_NOT_NUMERIC = ("collision", "collision_entities", "ttc_zones_s", "near_miss", "collision_ego_moving")
+
+
+def parse_target(text: str) -> tuple[str, str, float] | str | None:
+    """``collision`` (None: a collision with the ego moving, a failure of the system that drives it),
+    ``collision_any`` (every contact) or ``METRIC<VALUE`` (``<``, ``<=``, ``>``, ``>=``) as
+    (metric, op, value)."""
     from vei_scenario.metrics import METRICS
 
     if text == "collision":
         return None
+    if text == COLLISION_ANY:
+        return COLLISION_ANY
     m = _TARGET.match(text)
     if not m:
-        raise VeiInputError(None, "--target", f"{text!r} is not collision or METRIC<VALUE (e.g. min_ttc_s<1.0)")
+        raise VeiInputError(
+            None, "--target", f"{text!r} is not collision, collision_any or METRIC<VALUE (e.g. min_ttc_s<1.0)"
+        )
     metric, op, value = m.group(1), m.group(2), float(m.group(3))
-    if metric not in METRICS or metric in ("collision_entities", "ttc_zones_s", "collision"):
-        numeric = [k for k in METRICS if k not in ("collision", "collision_entities", "ttc_zones_s", "near_miss")]
+    if metric not in METRICS or metric in _NOT_NUMERIC:
+        numeric = [k for k in METRICS if k not in _NOT_NUMERIC]
         raise VeiInputError(None, "--target", f"unknown numeric metric {metric!r} (known: {', '.join(numeric)})")
     if not math.isfinite(value):
         raise VeiInputError(None, "--target", f"{text!r}: the value is not finite")
     return metric, op, value
 
 
-def robustness(metrics: dict, target: tuple[str, str, float] | None) -> float:
-    """Continuous failure margin: negative where the target holds (a failure), lower is worse."""
-    if metrics.get("collision"):
+def robustness(metrics: dict, target: tuple[str, str, float] | str | None) -> float:
+    """Continuous failure margin: negative where the target holds (a failure), lower is worse. A
+    collision with the ego standing (speed ≤ 0.1 m/s at the first contact) is no failure of the system
+    that drives it: 0, on the edge, unless the target is ``collision_any``."""
+    moving = metrics.get("collision_ego_moving") if target != COLLISION_ANY else metrics.get("collision")
+    if moving:
         return -(1.0 + float(metrics.get("impact_speed_mps") or 0.0))
-    if target is None:
-        return float(metrics["min_gap_m"])
+    if target is None or target == COLLISION_ANY:
+        return 0.0 if metrics.get("collision") else float(metrics["min_gap_m"])
     metric, op, value = target
     v = metrics.get(metric)
     if v is None:  # (never defined: e.g. no TTC when the boxes never approach) far from failing
@@ -147,8 +165,11 @@ def robustness(metrics: dict, target: tuple[str, str, float] | None) -> float:
 
 
 class _Runner:
-    def __init__(self, scenario: str, fixed: dict[str, str], target, dt: float, workers: int | None) -> None:
+    def __init__(
+        self, scenario: str, fixed: dict[str, str], target, dt: float, workers: int | None, controllers: tuple = ()
+    ) -> None:
         self.scenario, self.fixed, self.target, self.dt, self.workers = scenario, fixed, target, dt, workers
+        self.controllers = controllers
         self.runs = 0
         self.cache: dict[tuple, float] = {}
 
@@ -158,7 +179,10 @@ class _Runner:
         keys = [tuple(sorted(v.items())) for v in variants]
         todo = [(k, v) for k, v in zip(keys, variants) if k not in self.cache]
         if todo:
-            rows = evaluate_local(self.scenario, [{**self.fixed, **v} for _, v in todo], self.dt, self.workers)
+            rows = evaluate_local(
+                self.scenario, [{**self.fixed, **v} for _, v in todo], self.dt, self.workers,
+                controllers=self.controllers,
+            )  # fmt: skip
             self.runs += len(rows)
             for (k, v), r in zip(todo, rows):
                 if r["status"] != "ok":
@@ -258,8 +282,13 @@ def falsify(
     dt: float = 0.01,
     workers: int | None = None,
     out_dir: str | Path | None = None,
+    controllers: tuple = (),
+    allow_default_controller: bool = False,
 ) -> FalsifyResult:
-    """Search the box ``axes`` (others at ``fixed`` or their defaults) for failures (``target``)."""
+    """Search the box ``axes`` (others at ``fixed`` or their defaults) for failures (``target``) of the
+    systems under test ``controllers`` (:class:`~vei_scenario.sut.ControllerSpec`; none: the scenario's
+    own controllers). A controller the scenario names that vei has no model of is refused unless
+    ``allow_default_controller``: the search would find the failures of an ego without its system."""
     from vei_scenario.checks import check_dt, finite
     from vei_scenario.interpreter.document import load_scenario
 
@@ -272,13 +301,16 @@ def falsify(
     doc = load_scenario(scenario)
     fixed = dict(fixed or {})
     check_axes(scenario, doc, axes, fixed)
+    from vei_scenario.sweep.evaluate import refuse_default_controllers
+
+    refuse_default_controllers(scenario, fixed, dt, tuple(controllers), allow_default_controller)
     cont = [a for a in axes if not a.discrete]
     if not cont:
         raise VeiInputError(None, "--bounds", "give at least one continuous range (NAME=LOW:HIGH) to search along")
     primary = next((a for a in cont if a.name == "TimeShift"), cont[0])
     others = [a for a in cont if a is not primary]
     discrete = [a for a in axes if a.discrete]
-    run = _Runner(str(scenario.resolve()), fixed, crit, dt, workers)
+    run = _Runner(str(scenario.resolve()), fixed, crit, dt, workers, tuple(controllers))
     points = _slices(others, slices, seed)
     combos = [dict(zip([a.name for a in discrete], c)) for c in itertools.product(*(a.values for a in discrete))]
     regions: list[Region] = []
@@ -291,11 +323,14 @@ def falsify(
                 w.slice_point = p
                 windows.append(w)
         regions += _regions(run, windows, combo, primary, others, spacing, tol, len(regions))
+    from vei_scenario.sut import reproduce_options, sut_document
+
+    sut = sut_document(tuple(controllers))
     for r in regions:
-        r.dt = dt
+        r.dt, r.options = dt, reproduce_options(sut)
         _refine_edges(run, r, primary, others, spacing, tol)
         _worst(run, r, primary)
-    result = FalsifyResult(str(scenario), target, regions, run.runs, axes)
+    result = FalsifyResult(str(scenario), target, regions, run.runs, axes, system_under_test=sut)
     if out_dir is not None:
         result.written = _write(result, scenario, Path(out_dir), fixed)
     return result
@@ -522,6 +557,8 @@ def _write(result: FalsifyResult, scenario: Path, out: Path, fixed: dict[str, st
         ],
         "regions": [],
     }
+    if result.system_under_test:
+        doc["system_under_test"] = result.system_under_test
     for r in result.regions:
         rel = f"regions/region_{r.number:02d}_worst.xosc"
         files.add(out / rel, variant_xosc(scenario, r.worst, out / "regions"))

@@ -32,6 +32,9 @@ import numpy as np
 from vei_scenario.errors import VeiInputError
 
 Z95 = 1.959963984540054
+#: collision: with the ego moving at the first contact (speed > 0.1 m/s), a failure of the system that
+#: drives it; collision_any: every contact; near-miss: no contact, the minimum TTC within the band.
+TARGETS = ("collision", "collision_any", "near-miss")
 #: Share of the nominal distribution in every proposal (defensive importance sampling).
 DEFENSIVE = 0.05
 #: A discrete parameter keeps the value of the kernel's centre with this probability.
@@ -287,8 +290,10 @@ class Evaluator:
     """Runs variants and scores them: failure flags and robustness values (lower is worse)."""
 
     def __init__(self, scenario: Path, dims: list[Dimension], fixed: dict[str, str], target: str,
-                 band: tuple[float, float], dt: float, workers: int | None) -> None:  # fmt: skip
+                 band: tuple[float, float], dt: float, workers: int | None,
+                 controllers: tuple = ()) -> None:  # fmt: skip
         self.scenario, self.dims, self.fixed = str(Path(scenario).resolve()), dims, fixed
+        self.controllers = controllers
         self.target, self.band, self.dt, self.workers = target, band, dt, workers
         self.runs = 0
 
@@ -296,17 +301,20 @@ class Evaluator:
         from vei_scenario.sweep.evaluate import evaluate_local
 
         variants = [{**self.fixed, **{d.name: d.text(v) for d, v in zip(self.dims, row)}} for row in x]
-        rows = evaluate_local(self.scenario, variants, self.dt, self.workers)
+        rows = evaluate_local(self.scenario, variants, self.dt, self.workers, controllers=self.controllers)
         self.runs += len(rows)
         fail, rho = np.zeros(len(rows), bool), np.zeros(len(rows))
         for i, r in enumerate(rows):
             if r["status"] != "ok":
                 raise VeiInputError(self.scenario, "variant", f"{variants[i]} failed: {r['error']}")
             m = r["metrics"]
-            if m["collision"]:
+            counts = m["collision"] if self.target != "collision" else m["collision_ego_moving"]
+            if counts:
                 impact = m.get("impact_speed_mps") or 0.0
                 fail[i], rho[i] = True, -(1.0 + impact)
-            elif self.target == "collision":
+            elif self.target == "collision":  # (the ego standing at a contact: on the edge, no failure)
+                rho[i] = 0.0 if m["collision"] else m["min_gap_m"]
+            elif self.target == "collision_any":
                 rho[i] = m["min_gap_m"]
             else:
                 ttc = m.get("min_ttc_s")
@@ -391,16 +399,20 @@ def estimate_probability(
     seed: int | None = None,
     dt: float = 0.01,
     workers: int | None = None,
+    controllers: tuple = (),
+    allow_default_controller: bool = False,
 ) -> list[Estimate]:
     """P(target) under the stochastic distribution ``dist`` (other parameters from ``fixed`` or their
     defaults), by each of ``estimators``, ``runs`` runs each (plus the levels for importance sampling).
-    ``seed`` None: the file's ``randomSeed``, else 0; each estimate records the seed it drew with."""
+    ``seed`` None: the file's ``randomSeed``, else 0; each estimate records the seed it drew with.
+    ``controllers``: the systems under test (:class:`~vei_scenario.sut.ControllerSpec`); a controller the
+    scenario names that vei has no model of is refused unless ``allow_default_controller``."""
     from vei_scenario.checks import check_dt, finite
     from vei_scenario.interpreter.document import check_values, load_scenario
 
     check_dt(dt)
-    if target not in ("collision", "near-miss"):
-        raise VeiInputError(None, "--target", f"{target!r} is not collision or near-miss")
+    if target not in TARGETS:
+        raise VeiInputError(None, "--target", f"{target!r} is not one of {', '.join(TARGETS)}")
     if not (isinstance(runs, int) and 100 <= runs <= 10_000_000):
         raise VeiInputError(None, "--runs", f"{runs!r} is not a number of runs in 100..10000000")
     for b in band:
@@ -412,7 +424,10 @@ def estimate_probability(
         seed = 0 if seed is None else seed
     fixed = dict(fixed or {})
     check_values(doc.parameter_types, fixed)
-    evaluate = Evaluator(Path(scenario), dims, fixed, target, band, dt, workers)
+    from vei_scenario.sweep.evaluate import refuse_default_controllers
+
+    refuse_default_controllers(scenario, fixed, dt, tuple(controllers), allow_default_controller)
+    evaluate = Evaluator(Path(scenario), dims, fixed, target, band, dt, workers, tuple(controllers))
     rng = np.random.default_rng(seed)
     out = []
     for name in estimators:

@@ -20,7 +20,9 @@ from vei_scenario.sweep.catalog import variant_xosc
 from vei_scenario.sweep.evaluate import evaluate_local, evaluate_variant
 from vei_scenario.variation import cartesian, parse_vary
 
-TARGETS = ("collision", "near-miss")
+#: collision: with the ego moving at the first contact (a failure of the system that drives it);
+#: collision_any: every contact; near-miss: no contact and the minimum TTC within the band.
+TARGETS = ("collision", "collision_any", "near-miss")
 #: Points of a scan at --tol that the compiled kernel runs without asking (~0.3 s per combination).
 MAX_FINE_SCAN = 50_000
 
@@ -35,6 +37,8 @@ class RiskSearch:
 
 def _holds(metrics: dict, target: str, band: tuple[float, float]) -> bool:
     if target == "collision":
+        return bool(metrics.get("collision_ego_moving"))
+    if target == "collision_any":
         return bool(metrics.get("collision"))
     ttc = metrics.get("min_ttc_s")
     return not metrics.get("collision") and ttc is not None and band[0] <= ttc <= band[1]
@@ -51,6 +55,7 @@ def search_combination(
     dt: float,
     seeds: list[float],
     workers: int | None,
+    controllers: tuple = (),
 ) -> RiskSearch:
     cache: dict[float, bool] = {}
 
@@ -65,13 +70,13 @@ def search_combination(
     lo, hi = window
     n = int((hi - lo) / coarse + 1e-9) + 1
     grid = sorted({round(lo + i * coarse, 9) for i in range(n)} | {round(s, 9) for s in seeds if lo <= s <= hi})
-    outcomes = evaluate_local(scenario, [values(s) for s in grid], dt, workers)
+    outcomes = evaluate_local(scenario, [values(s) for s in grid], dt, workers, controllers=controllers)
     for s, o in zip(grid, outcomes):
         cache[s] = check(o, s)
 
     def holds(shift: float) -> bool:
         if shift not in cache:
-            cache[shift] = check(evaluate_variant(scenario, values(shift), dt), shift)
+            cache[shift] = check(evaluate_variant(scenario, values(shift), dt, controllers=controllers), shift)
         return cache[shift]
 
     edges: list[tuple[float, bool]] = []  # (edge position, True if the target starts there)
@@ -114,7 +119,10 @@ def find_risk(
     tol: float = 0.01,
     dt: float = 0.01,
     workers: int | None = None,
+    controllers: tuple = (),
 ) -> list[RiskSearch]:
+    """The target's TimeShift intervals for each combination of ``vary`` (``controllers``: the systems
+    under test, :class:`~vei_scenario.sut.ControllerSpec`)."""
     from vei_scenario.checks import check_dt, finite
 
     scenario = Path(scenario)
@@ -144,11 +152,12 @@ def find_risk(
     from vei_scenario.sweep.evaluate import _native_engine
 
     step = coarse
-    if _native_engine(str(scenario.resolve()), dt) is not None and (window[1] - window[0]) / tol <= MAX_FINE_SCAN:
+    native = _native_engine(str(scenario.resolve()), dt, controllers=controllers)
+    if native is not None and (window[1] - window[0]) / tol <= MAX_FINE_SCAN:
         step = tol
     results = [
         search_combination(str(scenario.resolve()), c, target, band, window, step, tol / 4 if step == tol else tol, dt,
-                           [conflict], workers)
+                           [conflict], workers, controllers)
         for c in combos
     ]  # fmt: skip
     if out_dir is not None:
@@ -162,6 +171,10 @@ def find_risk(
             "tolerance_s": tol,
             "searches": [],
         }
+        if controllers:
+            from vei_scenario.sut import sut_document
+
+            doc_out["system_under_test"] = sut_document(controllers)
         for k, r in enumerate(results):
             entry = {
                 "parameters": {a[0]: r.parameters[a[0]] for a in axes},

@@ -152,6 +152,10 @@ def metrics_document(result: RunResult, cfg: MetricConfig) -> dict:
             for n, tr in result.traces.items()
         },
     }
+    if result.controllers:  # the user's system on an entity: which code, by file and hash
+        from vei_scenario.sut import sut_document
+
+        doc["system_under_test"] = sut_document(result.controllers)
     if result.warnings:  # (only when there are: a run without any writes what it always wrote)
         doc["warnings"] = list(result.warnings)
     return doc
@@ -168,6 +172,8 @@ def summary_text(doc: dict) -> str:
     m = doc["metrics"]
     params = ", ".join(f"{k}={parameter_text(v)}" for k, v in doc["parameters"].items())
     lines = [f"{doc['scenario']} ({params}); {doc['duration_s']:.2f} s at dt {doc['dt_s']} s ({doc['end_reason']})"]
+    for s in doc.get("system_under_test", ()):
+        lines.append(f"system under test on {s['entity']}: {s['controller']} (sha256 {(s['sha256'] or '-')[:12]})")
     if m:
         coll = f"COLLISION at {m['collision_time_s']} s" if m["collision"] else "no collision"
         z = m["ttc_zones_s"]
@@ -236,10 +242,12 @@ def run_to(
     coupling: str = "sequential",
     osi: str | Path | None = None,
     progress: bool = False,
+    controllers: tuple = (),
 ) -> RunReport:
     """Run ``scenario`` and, with ``out_dir``, write its files there; with ``osi``, also an ASAM OSI
     ground-truth trace (``.mcap`` or ``.osi``) at that path. All or nothing. With ``progress``, a run
-    that may be long says so on stderr at its start, and shows a progress bar on a terminal."""
+    that may be long says so on stderr at its start, and shows a progress bar on a terminal.
+    ``controllers``: the systems under test (:class:`~vei_scenario.sut.ControllerSpec`)."""
     from vei_scenario.checks import check_dt
 
     check_dt(dt)
@@ -254,11 +262,13 @@ def run_to(
 
         shown = RunProgress(Path(scenario).name)
         try:
-            result = run_scenario(scenario, parameters, dt, coupling=coupling, on_start=shown.on_start)
+            result = run_scenario(
+                scenario, parameters, dt, coupling=coupling, on_start=shown.on_start, controllers=controllers
+            )
         finally:
             shown.close()
     else:
-        result = run_scenario(scenario, parameters, dt, coupling=coupling)
+        result = run_scenario(scenario, parameters, dt, coupling=coupling, controllers=controllers)
     _check_positions(result)
     doc = metrics_document(result, cfg)
     written: list[Path] = []

@@ -18,6 +18,7 @@ from vei_scenario.interpreter import run_scenario
 from vei_scenario.interpreter.document import load_scenario
 from vei_scenario.metrics import MetricConfig
 from vei_scenario.runner import metrics_document, run_files
+from vei_scenario.sut import sut_document
 
 CONFIGURATIONS = (
     (1, "replay, no CAP", {"RiderType": "replay", "CapEnabled": "false"}),
@@ -99,9 +100,12 @@ def run_study(
     time_shift_s: float | None = None,
     plots: bool = True,
     zone_ttc: str = "2d",
+    controllers: tuple = (),
 ) -> StudyReport:
     """The five configurations; ``zone_ttc``: the TTC the zones and the safety index use ("2d", or
-    "approx" for the seed paper's table: ``vei study --paper``). Both TTCs are in the table."""
+    "approx" for the seed paper's table: ``vei study --paper``). Both TTCs are in the table.
+    ``controllers``: the systems under test (:class:`~vei_scenario.sut.ControllerSpec`): they take the
+    planner's place in configurations 4 and 5 (``+ SUT``); 1-3 run without any system, as before."""
     from vei_scenario.checks import check_dt, finite
 
     check_dt(dt)
@@ -122,7 +126,10 @@ def run_study(
     rows, runs = [], []
     for number, description, params in CONFIGURATIONS:
         values = {**params, "TimeShift": repr(float(time_shift_s))}
-        result = run_scenario(scenario, values, dt)
+        plugged = controllers if params["CapEnabled"] == "true" else ()
+        if plugged:
+            description = description.replace("+ CAP", "+ SUT")
+        result = run_scenario(scenario, values, dt, controllers=plugged)
         doc = metrics_document(result, cfg)
         for name, data in run_files(result, doc, cfg, plots=False).items():
             files.add(out / f"config{number}" / name, data)
@@ -143,6 +150,7 @@ def run_study(
                 "dt_s": dt,
                 "ttc_zones_use": zone_ttc,
                 "configurations": rows,
+                **({"system_under_test": sut_document(controllers)} if controllers else {}),
             },
             indent=2,
         )

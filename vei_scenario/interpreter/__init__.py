@@ -20,11 +20,13 @@ def run_scenario(
     dt: float = 0.01,
     max_time_s: float = DEFAULT_MAX_TIME_S,
     coupling: str = "sequential",
+    controllers: tuple = (),
     on_start: Callable[[Simulation], Callable[[float], None] | None] | None = None,
 ) -> RunResult:
     """Load ``path``, apply parameter overrides (strings as in the file, or Python booleans and
     numbers), run at the fixed step ``dt`` (``coupling``: see
-    :data:`~vei_scenario.interpreter.engine.COUPLINGS`).
+    :data:`~vei_scenario.interpreter.engine.COUPLINGS`); ``controllers``: the systems under test
+    (:class:`~vei_scenario.sut.ControllerSpec`), each driving its entity's speed throughout.
 
     A file the interpreter cannot read because it breaks the ASAM schema is refused with the schema's
     first complaint (file, line, reason), not with the place where reading it failed
@@ -36,7 +38,7 @@ def run_scenario(
     doc = None
     with refused_when_malformed(path, lambda: doc.root if doc is not None else None):
         doc = load_scenario(path, parameters)
-        sim = Simulation(doc, dt, max_time_s, coupling)
+        sim = Simulation(doc, dt, max_time_s, coupling, controllers)
         return sim.run(on_start(sim) if on_start is not None else None)
 
 

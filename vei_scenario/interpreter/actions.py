@@ -629,6 +629,9 @@ class AssignController(Action):
 
     def start(self, ctx) -> None:
         e = ctx.entities[self.entity]
+        if e.sut is not None:  # the system under test stays in charge (interpreter.plugged.plug)
+            self.done = True
+            return
         e.controllers = {self.controller.name: self.controller}
         e.active = {}
         activate(e, self.controller, self.lateral, self.longitudinal, ctx)
@@ -659,7 +662,8 @@ class ActivateController(Action):
 
     def start(self, ctx) -> None:
         e = ctx.entities[self.entity]
-        if not e.controllers and not self.ref:  # the default controller is what it has: it stays on
+        # the system under test stays in charge; the default controller is what it has: it stays on
+        if e.sut is not None or (not e.controllers and not self.ref):
             self.done = True
             return
         ctrl = e.controllers.get(self.ref) if self.ref else list(e.controllers.values())[-1]

@@ -49,6 +49,8 @@ class Context:
     #: What the run played differently from what the file asks, in the words of :meth:`warn` (a
     #: controller vei has no model for, played as the default controller as esmini plays it).
     warnings: list[str] = field(default_factory=list)
+    #: the scenario's threat (the entity the ego's controllers see as one), once the roles are known
+    threat: str | None = None
 
     @property
     def roads(self):

@@ -429,6 +429,10 @@ def make_controller(el, ctx) -> Controller:
     other name is the default controller, with a warning (:class:`DefaultController`)."""
     name = el.get("name", "")
     props = {p.get("name"): p.get("value") for p in el.iterfind("Properties/Property")}
+    if props.get("module"):  # the user's own (CARLA ScenarioRunner's convention)
+        from vei_scenario.interpreter.plugged import scenario_controller
+
+        return scenario_controller(name, props, el, ctx)
     kind = controller_kind(name, props)
     cls = CONTROLLERS.get(kind)
     if cls is None and kind in ACTS_UNACTIVATED:  # (named in the file it comes from: the scenario, or its catalog)

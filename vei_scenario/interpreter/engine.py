@@ -87,6 +87,8 @@ class RunResult:
     warnings: tuple[str, ...] = ()
     #: The declared type of each top-level parameter (double, boolean, string ...), for typed outputs.
     parameter_types: dict[str, str] = field(default_factory=dict)
+    #: The systems under test plugged in (:class:`~vei_scenario.sut.ControllerSpec`), if any.
+    controllers: tuple = ()
 
 
 def _act(ctx) -> None:
@@ -228,7 +230,10 @@ class Simulation:
         dt: float = 0.01,
         max_time_s: float = DEFAULT_MAX_TIME_S,
         coupling: str = "sequential",
+        controllers: tuple = (),
     ) -> None:
+        """``controllers``: :class:`~vei_scenario.sut.ControllerSpec` of the systems under test, each in
+        charge of its entity's speed throughout (:func:`~vei_scenario.interpreter.plugged.plug`)."""
         from vei_scenario.checks import check_dt, finite
 
         root = doc.root
@@ -237,6 +242,7 @@ class Simulation:
         if coupling not in COUPLINGS:
             raise ValueError(f"coupling must be one of {', '.join(COUPLINGS)}")
         self.doc, self.dt, self.max_time, self.coupling = doc, dt, max_time_s, coupling
+        self.controllers = tuple(controllers)
         self.ctx = Context(doc.path, 0.0, dt, 0, {}, dict(doc.parameters))
         ctx = self.ctx
         ctx.road_file = doc.road_file
@@ -267,6 +273,10 @@ class Simulation:
             if ctrl is not None:
                 c = make_controller(ctrl, ctx)
                 ctx.entities[obj.get("name")].controllers[c.name] = c
+        if controllers:
+            from vei_scenario.interpreter.plugged import plug
+
+            plug(ctx, tuple(controllers), doc.path)
 
         self.init_actions = []
         privates = []
@@ -284,6 +294,7 @@ class Simulation:
 
         self.storyboard = Storyboard(root.find("Storyboard"), ctx)
         self.ego, self.threat = self._roles()
+        ctx.threat = self.threat
 
     def _roles(self) -> tuple[str, str | None]:
         """The ego (entity named Ego, else the first) and its threat (the planner's threatEntity,
@@ -372,6 +383,17 @@ class Simulation:
             advance_along(e, ds)
 
     def run(self, on_progress: Callable[[float], None] | None = None) -> RunResult:
+        """Play the scenario to its end; the controllers that hold resources (an FMU) end with it."""
+        try:
+            return self._run(on_progress)
+        finally:
+            for e in self.ctx.entities.values():
+                for c in e.controllers.values():
+                    finish = getattr(c, "finish", None)
+                    if finish is not None:
+                        finish()
+
+    def _run(self, on_progress: Callable[[float], None] | None = None) -> RunResult:
         ctx, dt = self.ctx, self.dt
         names = list(ctx.entities)
         recording = Recording([ctx.entities[n] for n in names])
@@ -477,6 +499,7 @@ class Simulation:
             self.doc.road_file,
             tuple(ctx.warnings),
             dict(ctx.parameter_types),
+            self.controllers,
         )
 
     def _collide(self, collisions: list) -> None:

@@ -211,6 +211,8 @@ class Entity:
     trailer: str | None = None  # the entity it tows (interpreter.trailers)
     towed_by: str | None = None  # the entity that tows it: it is pulled, not moved by itself
     object_type: str = ""  # a finer type from the entity's <Properties> ("e-scooter"), else ""
+    #: the user's controller plugged in by ``--controller`` (interpreter.plugged): in charge throughout
+    sut: object = None
 
     def within_max_speed(self, v: float) -> float:
         """``v`` held to within ``max_speed`` either way (as esmini holds a SpeedAction's target speed)."""

@@ -230,6 +230,82 @@ def comfort_score(p: PairSeries, cfg: MetricConfig) -> np.ndarray:
     return ok.mean(axis=-1)
 
 
+#: The ego stands at or below this speed (m/s): a collision then is not the ego's doing.
+STANDING_MPS = 0.1
+#: The deceleration (m/s²) whose first reaching is the brake onset: Euro NCAP's AEB protocols time the
+#: AEB's activation from the acceleration's crossing of -1 m/s².
+BRAKE_ONSET_MPS2 = 1.0
+
+
+def _first_contact(p: PairSeries) -> tuple[np.ndarray, np.ndarray]:
+    """(index of the first contact, whether there is one), over the leading axes."""
+    return np.argmax(p.contact, axis=-1), p.contact.any(axis=-1)
+
+
+def _at(values: np.ndarray, index: np.ndarray) -> np.ndarray:
+    return np.take_along_axis(values, np.asarray(index)[..., None], axis=-1)[..., 0]
+
+
+def ego_speed_at_contact_mps(p: PairSeries, cfg: MetricConfig) -> np.ndarray:
+    """The ego's own speed at the first contact (m/s), or None without one: Euro NCAP rates AEB by it
+    (the impact speed of the vehicle under test); 0 means the road user ran into a standing ego."""
+    first, hit = _first_contact(p)
+    return np.where(hit, _at(p.ego.speed, first), np.nan)
+
+
+def collision_ego_moving(p: PairSeries, cfg: MetricConfig) -> np.ndarray:
+    """A collision with the ego moving at its first contact (speed above :data:`STANDING_MPS`, 0.1 m/s):
+    a failure of the system that drives the ego. A road user running into the standing ego is a
+    collision (:func:`collision`), not a failure of that system."""
+    first, hit = _first_contact(p)
+    return hit & (_at(p.ego.speed, first) > STANDING_MPS)
+
+
+def ego_standing_before_contact_s(p: PairSeries, cfg: MetricConfig) -> np.ndarray:
+    """How long the ego had stood (speed ≤ 0.1 m/s, without a break) when the first contact came (s):
+    0 when it was moving; None without a contact."""
+    first, hit = _first_contact(p)
+    idx = np.arange(p.t.size)
+    before = idx <= np.asarray(first)[..., None]
+    last_moving = np.where(before & (p.ego.speed > STANDING_MPS), idx, -1).max(axis=-1)
+    start = np.minimum(last_moving + 1, first)
+    stood = _at(p.ego.speed, first) <= STANDING_MPS
+    return np.where(hit, np.where(stood, p.t[first] - p.t[start], 0.0), np.nan)
+
+
+def _brake_onset(p: PairSeries) -> tuple[np.ndarray, np.ndarray]:
+    """(index of the brake onset, whether there is one): the first step, up to the first contact (the
+    whole run without one), at which the ego decelerates at :data:`BRAKE_ONSET_MPS2` or more."""
+    first, hit = _first_contact(p)
+    limit = np.where(hit, first, p.t.size - 1)
+    braking = (p.ego.accel <= -BRAKE_ONSET_MPS2) & (np.arange(p.t.size) <= np.asarray(limit)[..., None])
+    return np.argmax(braking, axis=-1), braking.any(axis=-1)
+
+
+def brake_onset_s(p: PairSeries, cfg: MetricConfig) -> np.ndarray:
+    """Time the ego first brakes (s): its acceleration reaches -1 m/s² (Euro NCAP's AEB activation
+    level), looked for up to the first contact; None when it never brakes so hard."""
+    onset, braked = _brake_onset(p)
+    return np.where(braked, p.t[onset], np.nan)
+
+
+def ttc_at_brake_onset_s(p: PairSeries, cfg: MetricConfig) -> np.ndarray:
+    """The 2-D TTC at the brake onset (s): how much time the system left itself; None without a brake
+    onset or when the two were not on a collision course then."""
+    onset, braked = _brake_onset(p)
+    return np.where(braked, _at(p.ttc_2d, onset), np.nan)
+
+
+def speed_reduction_mps(p: PairSeries, cfg: MetricConfig) -> np.ndarray:
+    """How much speed the ego's braking took off before the first contact (m/s): its speed at the brake
+    onset minus its speed at the contact, the speed it would have hit at without braking being the
+    speed it had when it began (0 when it did not brake before the contact); None without a contact."""
+    first, hit = _first_contact(p)
+    onset, braked = _brake_onset(p)
+    at_contact = _at(p.ego.speed, first)
+    return np.where(hit, np.where(braked, _at(p.ego.speed, onset) - at_contact, 0.0), np.nan)
+
+
 def near_miss(p: PairSeries, cfg: MetricConfig) -> np.ndarray:
     """No contact, and the minimum 2-D TTC inside the near-miss band (default 0.5–1.5 s)."""
     lo, hi = cfg.near_miss_ttc_s
@@ -255,11 +331,17 @@ METRICS = {
     "max_jerk_mps3": max_jerk_mps3,
     "comfort_score": comfort_score,
     "near_miss": near_miss,
+    "ego_speed_at_contact_mps": ego_speed_at_contact_mps,
+    "collision_ego_moving": collision_ego_moving,
+    "ego_standing_before_contact_s": ego_standing_before_contact_s,
+    "brake_onset_s": brake_onset_s,
+    "ttc_at_brake_onset_s": ttc_at_brake_onset_s,
+    "speed_reduction_mps": speed_reduction_mps,
 }
 
 #: Decimal places of each reported value (bool metrics are reported as booleans).
-DIGITS = {"collision_time_s": 3, "ttc_zones_s": 3, "pet_s": 3}
-BOOLEAN = {"collision", "near_miss"}
+DIGITS = {"collision_time_s": 3, "ttc_zones_s": 3, "pet_s": 3, "brake_onset_s": 3, "ego_standing_before_contact_s": 3}
+BOOLEAN = {"collision", "near_miss", "collision_ego_moving"}
 
 
 def _number(v: float, digits: int) -> float | None:

@@ -96,13 +96,15 @@ def metric_rows(out: np.ndarray, who: tuple[str, str], index: dict[str, int]) ->
 
     hit = [v != 0 for v in cols[index["collision"]]]
     zones = [number(f"ttc_zones_s.{z}", "ttc_zones_s") for z in ZONES]
-    numbers = {name: number(name) for name in index if name not in ("collision", "near_miss") and "." not in name}
+    flags = ("collision", "near_miss", "collision_ego_moving")
+    numbers = {name: number(name) for name in index if name not in flags and "." not in name}
     values = {
         "collision": hit,
         "collision_entities": [list(who) if h else [] for h in hit],
         **numbers,
         "ttc_zones_s": [dict(zip(ZONES, z)) for z in zip(*zones)],
         "near_miss": [v != 0 for v in cols[index["near_miss"]]],
+        "collision_ego_moving": [v != 0 for v in cols[index["collision_ego_moving"]]],
     }
     columns = {name: values[name] for name in METRICS}  # in vei run's order (KeyError: a metric missing)
     names = list(columns)

@@ -46,11 +46,13 @@ def _zones(run) -> tuple[np.ndarray | None, np.ndarray | None]:
     return pair.zones(cfg), pair.zone_ttc(cfg)
 
 
-def view_scenario(path: str | Path, parameters: dict[str, str] | None = None, dt: float = 0.01) -> View:
-    """Run ``path`` with the built-in interpreter and view the run."""
+def view_scenario(
+    path: str | Path, parameters: dict[str, str] | None = None, dt: float = 0.01, controllers: tuple = ()
+) -> View:
+    """Run ``path`` with the built-in interpreter (``controllers``: the systems under test) and view the run."""
     from vei_scenario.interpreter import run_scenario
 
-    run = run_scenario(path, parameters, dt)
+    run = run_scenario(path, parameters, dt, controllers=controllers)
     return View(run, *_zones(run))
 
 

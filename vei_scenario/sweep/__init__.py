@@ -25,7 +25,7 @@ MAX_TRACES = 1000
 
 def trace_selection(rows: list[dict], which: str) -> list[dict]:
     """The rows whose variants get an OSI trace: ``collisions`` (every variant that collides),
-    ``failures`` (collisions with the planner on: CapEnabled=true), ``all``, or variant numbers
+    ``failures`` (collisions with the planner on, CapEnabled=true, and the ego moving), ``all``, or variant numbers
     ``3,17,42``."""
     ok = [r for r in rows if r["status"] == "ok"]
     if which == "all":
@@ -33,7 +33,7 @@ def trace_selection(rows: list[dict], which: str) -> list[dict]:
     elif which == "collisions":
         chosen = [r for r in ok if r["metrics"].get("collision")]
     elif which == "failures":
-        chosen = [r for r in ok if r["metrics"].get("collision") and planner_on(r)]
+        chosen = [r for r in ok if r["metrics"].get("collision_ego_moving") and planner_on(r)]
     else:
         try:
             wanted = {int(v) for v in which.split(",") if v.strip()}
@@ -53,13 +53,15 @@ def trace_selection(rows: list[dict], which: str) -> list[dict]:
     return chosen
 
 
-def _add_traces(files: OutputSet, out: Path, scenario: Path, rows, which: str, fmt: str, dt: float) -> None:
+def _add_traces(
+    files: OutputSet, out: Path, scenario: Path, rows, which: str, fmt: str, dt: float, controllers: tuple = ()
+) -> None:
     from vei_scenario.interpreter import run_scenario
     from vei_scenario.reports.osi_trace import trace_bytes
 
     for r in trace_selection(rows, which):
         rel = f"traces/variant_{r['variant']:05d}.{fmt}"
-        result = run_scenario(scenario, r["parameters"], dt)
+        result = run_scenario(scenario, r["parameters"], dt, controllers=controllers)
         files.add(out / rel, trace_bytes(result, "." + fmt, f"vei sweep variant {r['variant']} of {scenario.name}"))
         r["osi_trace"] = rel
 
@@ -74,14 +76,14 @@ class SweepReport:
     warnings: list[str] = field(default_factory=list)
 
 
-def scenario_warnings(scenario: Path, values: dict[str, str], dt: float) -> list[str]:
+def scenario_warnings(scenario: Path, values: dict[str, str], dt: float, controllers: tuple = ()) -> list[str]:
     """The warnings building the scenario with ``values`` gives (the simulation is set up, not run);
     none when it cannot be built (the variants' rows say why)."""
     from vei_scenario.errors import VeiError
     from vei_scenario.interpreter import Simulation
 
     try:
-        return list(Simulation(load_scenario(scenario, values), dt).ctx.warnings)
+        return list(Simulation(load_scenario(scenario, values), dt, controllers=controllers).ctx.warnings)
     except (VeiError, ValueError, ArithmeticError):
         return []
 
@@ -147,11 +149,14 @@ def run_sweep(
     osi_traces: str | None = None,
     osi_format: str = "mcap",
     zone_ttc: str = "2d",
+    controllers: tuple = (),
 ) -> SweepReport:
     """Evaluate the variants and write the catalog and report. ``plotter``: a plot worker forked
     earlier (the command line forks it before importing this package); ended here either way.
     ``osi_traces``: which variants also get an ASAM OSI ground-truth trace (see :func:`trace_selection`),
-    each run again in the interpreter and written to ``traces/variant_NNNNN.<osi_format>``."""
+    each run again in the interpreter and written to ``traces/variant_NNNNN.<osi_format>``.
+    ``controllers``: the systems under test (:class:`~vei_scenario.sut.ControllerSpec`), named in the
+    catalog and the report; their variants run in the interpreter."""
     from vei_scenario.checks import check_dt
 
     scenario = Path(scenario)
@@ -174,15 +179,15 @@ def run_sweep(
     gc.disable()
     try:
         variants, varied = build_variants(scenario, vary or [], Path(dist) if dist else None, seed)
-        check_playable(scenario, variants, dt)
+        check_playable(scenario, variants, dt, controllers)
         check_values(scenario, variants, varied, dt, "--vary" if vary else "--dist")
         bar = _progress_bar(len(variants), quiet)
         tick = bar.update if bar is not None else None
         try:
             if executor == "dask":
-                outcomes = evaluate_dask(str(scenario.resolve()), variants, dt, scheduler, tick, zone_ttc)
+                outcomes = evaluate_dask(str(scenario.resolve()), variants, dt, scheduler, tick, zone_ttc, controllers)
             elif executor == "local":
-                outcomes = evaluate_local(str(scenario.resolve()), variants, dt, workers, tick, zone_ttc)
+                outcomes = evaluate_local(str(scenario.resolve()), variants, dt, workers, tick, zone_ttc, controllers)
             else:
                 raise VeiInputError(None, "--executor", f"{executor!r} is not local or dask")
         finally:
@@ -199,9 +204,13 @@ def run_sweep(
                 files.add(out / rel, variant_xosc(scenario, r["parameters"], out / "variants"))
                 r["xosc"] = rel
         if osi_traces:
-            _add_traces(files, out, scenario, rows, osi_traces, osi_format, dt)
+            _add_traces(files, out, scenario, rows, osi_traces, osi_format, dt, controllers)
         meta = {"scenario": str(scenario), "dt_s": dt, "varied": varied, "count": len(rows), "ttc_zones_use": zone_ttc}
-        warnings = scenario_warnings(scenario, variants[0], dt) if variants else []
+        if controllers:
+            from vei_scenario.sut import sut_document
+
+            meta["system_under_test"] = sut_document(controllers)
+        warnings = scenario_warnings(scenario, variants[0], dt, controllers) if variants else []
         if warnings:  # (only when there are: a sweep without any writes what it always wrote)
             meta["warnings"] = warnings
         files.add(out / "catalog.csv", catalog_csv(rows, names))

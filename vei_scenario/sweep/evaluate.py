@@ -11,8 +11,9 @@ import os
 import time
 from collections.abc import Callable, Iterable
 from concurrent.futures import ProcessPoolExecutor
+from pathlib import Path
 
-from vei_scenario.errors import VeiError
+from vei_scenario.errors import VeiError, VeiInputError
 from vei_scenario.metrics import MetricConfig, PairSeries, compute_metrics
 from vei_scenario.sweep import forked
 
@@ -31,12 +32,15 @@ SPAWN_WORTH_S = 1.0
 WATCHDOG_S = 6 * 3600.0
 
 
-def evaluate_variant(scenario: str, values: dict[str, str], dt: float, zone_ttc: str = "2d") -> dict:
-    """Run one variant; a row: status, error and the metrics of ``vei run``."""
+def evaluate_variant(
+    scenario: str, values: dict[str, str], dt: float, zone_ttc: str = "2d", controllers: tuple = ()
+) -> dict:
+    """Run one variant (``controllers``: the systems under test); a row: status, error and the metrics
+    of ``vei run``. A fault of a user's controller is the variant's row, as any other error."""
     from vei_scenario.interpreter import run_scenario
 
     try:
-        result = run_scenario(scenario, values, dt)
+        result = run_scenario(scenario, values, dt, controllers=controllers)
         cfg = MetricConfig(zone_ttc=zone_ttc)
         metrics = compute_metrics(PairSeries.from_run(result), cfg) if result.threat else {}
         return {"status": "ok", "error": "", "metrics": metrics}
@@ -46,14 +50,49 @@ def evaluate_variant(scenario: str, values: dict[str, str], dt: float, zone_ttc:
         return {"status": "error", "error": f"{type(exc).__name__}: {exc}", "metrics": {}}
 
 
+def default_controllers(scenario: str | Path, values: dict[str, str], dt: float, controllers: tuple = ()) -> list[str]:
+    """What the scenario built with ``values`` plays as the default controller although it names another
+    (a controller type vei has no model of, e.g. a misspelt planner): one sentence each. A search for
+    failures of a system that is not there would report the scenario's, so falsify and probability
+    refuse these (unless allowed). None when the scenario cannot be built (its runs will say why)."""
+    from vei_scenario.interpreter import Simulation, load_scenario
+    from vei_scenario.interpreter.controllers import DefaultController
+
+    try:
+        sim = Simulation(load_scenario(scenario, values), dt, controllers=controllers)
+    except (VeiError, ValueError, ArithmeticError):
+        return []
+    return [
+        f"{e.name}'s controller {c.name!r} names no model vei has (it would play as the default controller)"
+        for e in sim.ctx.entities.values()
+        for c in e.controllers.values()
+        if isinstance(c, DefaultController)
+    ]
+
+
+def refuse_default_controllers(scenario, values: dict[str, str], dt: float, controllers: tuple, allow: bool) -> None:
+    """One line for the first controller that would play as the default one, unless ``allow``."""
+    if allow:
+        return
+    found = default_controllers(scenario, values, dt, controllers)
+    if found:
+        raise VeiInputError(
+            scenario, "controller", f"{found[0]}; plug in the system with --controller ENTITY=FILE.py:CLASS, or "
+            "give --allow-default-controller to search the scenario as it plays"
+        )  # fmt: skip
+
+
 _NATIVE: dict[tuple[str, float, str], object] = {}
 
 
-def _native_engine(scenario: str, dt: float, zone_ttc: str = "2d"):
-    """The sweep kernel for a vei-compiled closed loop (cached per process), or None for other files."""
+def _native_engine(scenario: str, dt: float, zone_ttc: str = "2d", controllers: tuple = ()):
+    """The sweep kernel for a vei-compiled closed loop (cached per process), or None for other files and
+    wherever a user's controller drives (it runs in the interpreter)."""
     from vei_scenario.batch import NativeBatch
     from vei_scenario.loop import LoopScene, NotALoop
 
+    if controllers:
+        return None
     key = (scenario, dt, zone_ttc)
     if key not in _NATIVE:
         try:
@@ -63,17 +102,21 @@ def _native_engine(scenario: str, dt: float, zone_ttc: str = "2d"):
     return _NATIVE[key]
 
 
-def _chunk(scenario: str, chunk: list[dict[str, str]], dt: float, zone_ttc: str = "2d") -> list[dict]:
+def _chunk(
+    scenario: str, chunk: list[dict[str, str]], dt: float, zone_ttc: str = "2d", controllers: tuple = ()
+) -> list[dict]:
     """Rows of a chunk: a vei-compiled loop's valid variants through the sweep kernel (rows identical
     to ``vei run``'s: tests/test_batch_native.py), everything else and invalid values through the
     interpreter, variant by variant."""
-    native = _native_engine(scenario, dt, zone_ttc)
+    native = _native_engine(scenario, dt, zone_ttc, controllers)
     rows: list[dict | None] = [None] * len(chunk)
     if native is not None:
         ok = [i for i, v in enumerate(chunk) if native.scene.kernel_accepts(v)]
         for i, m in zip(ok, native.metrics([chunk[i] for i in ok])):
             rows[i] = {"status": "ok", "error": "", "metrics": m}
-    return [r if r is not None else evaluate_variant(scenario, v, dt, zone_ttc) for r, v in zip(rows, chunk)]
+    return [
+        r if r is not None else evaluate_variant(scenario, v, dt, zone_ttc, controllers) for r, v in zip(rows, chunk)
+    ]
 
 
 def _chunks(variants: list[dict[str, str]], size: int) -> list[list[dict[str, str]]]:
@@ -87,12 +130,14 @@ def evaluate_local(
     workers: int | None = None,
     progress: Callable[[int], None] | None = None,
     zone_ttc: str = "2d",
+    controllers: tuple = (),
 ) -> list[dict]:
     """Rows of ``variants`` in variant order on ``workers`` local cores (default: all): a vei-compiled
-    loop through the sweep kernel on threads, any other scenario through the interpreter, in this
-    process or, when the work repays them, in forked workers beside it."""
+    loop through the sweep kernel on threads, any other scenario (and any with a user's controller,
+    ``controllers``) through the interpreter, in this process or, when the work repays them, in forked
+    workers beside it."""
     workers = workers or os.cpu_count() or 1
-    native = _native_engine(scenario, dt, zone_ttc)
+    native = _native_engine(scenario, dt, zone_ttc, controllers)
     if native is not None:
         return _evaluate_native(native, scenario, variants, dt, workers, progress, zone_ttc)
     out: list[dict] = []
@@ -100,7 +145,7 @@ def evaluate_local(
         # The first variant here: it reads the scenario's files (the workers then inherit them read)
         # and says what the rest will cost. Work that would not repay the workers stays here.
         started = time.perf_counter()
-        out.append(evaluate_variant(scenario, variants[0], dt, zone_ttc))
+        out.append(evaluate_variant(scenario, variants[0], dt, zone_ttc, controllers))
         if progress:
             progress(1)
         rest = len(variants) - 1
@@ -110,20 +155,20 @@ def evaluate_local(
         variants = variants[1:]
     if workers == 1 or len(variants) <= 1:
         for v in variants:
-            out.append(evaluate_variant(scenario, v, dt, zone_ttc))
+            out.append(evaluate_variant(scenario, v, dt, zone_ttc, controllers))
             if progress:
                 progress(1)
         return out
     if forked.available():
 
         def row(i: int) -> dict:
-            return evaluate_variant(scenario, variants[i], dt, zone_ttc)
+            return evaluate_variant(scenario, variants[i], dt, zone_ttc, controllers)
 
         return out + forked.run_forked(row, len(variants), workers, progress, WATCHDOG_S)
-    return out + _evaluate_pool(scenario, variants, dt, workers, progress, zone_ttc)
+    return out + _evaluate_pool(scenario, variants, dt, workers, progress, zone_ttc, controllers)
 
 
-def _evaluate_pool(scenario, variants, dt, workers, progress, zone_ttc: str = "2d") -> list[dict]:
+def _evaluate_pool(scenario, variants, dt, workers, progress, zone_ttc: str = "2d", controllers=()) -> list[dict]:
     """Where processes cannot be forked (macOS, Windows): a pool of spawned workers, chunk by chunk."""
     from concurrent.futures.process import BrokenProcessPool
 
@@ -135,7 +180,9 @@ def _evaluate_pool(scenario, variants, dt, workers, progress, zone_ttc: str = "2
         with ProcessPoolExecutor(max_workers=workers) as pool:
             n = len(chunks)
             # the watchdog: a chunk that does not come back in time stops the sweep with one line
-            results = pool.map(_chunk, [scenario] * n, chunks, [dt] * n, [zone_ttc] * n, timeout=WATCHDOG_S)
+            results = pool.map(
+                _chunk, [scenario] * n, chunks, [dt] * n, [zone_ttc] * n, [controllers] * n, timeout=WATCHDOG_S
+            )
             for c, rows in zip(chunks, results):
                 out.extend(rows)
                 if progress:
@@ -185,8 +232,10 @@ def evaluate_dask(
     scheduler: str | None,
     progress: Callable[[int], None] | None = None,
     zone_ttc: str = "2d",
+    controllers: tuple = (),
 ) -> list[dict]:
-    """The same evaluation on a Dask distributed cluster (``scheduler`` address, or a LocalCluster)."""
+    """The same evaluation on a Dask distributed cluster (``scheduler`` address, or a LocalCluster); a
+    user's controller is loaded by each worker from its file (which the workers must see)."""
     try:
         from dask.distributed import Client, LocalCluster, as_completed
     except ImportError:
@@ -218,7 +267,7 @@ def evaluate_dask(
         client = Client(cluster)
     try:
         chunks = _chunks(variants, max(1, min(256, len(variants) // 8 or 1)))
-        futures = [client.submit(_chunk, scenario, c, dt, zone_ttc, pure=False) for c in chunks]
+        futures = [client.submit(_chunk, scenario, c, dt, zone_ttc, controllers, pure=False) for c in chunks]
         index = {f.key: i for i, f in enumerate(futures)}
         results: list[list[dict] | None] = [None] * len(futures)
         for fut in as_completed(futures):

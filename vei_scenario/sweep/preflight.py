@@ -20,12 +20,13 @@ from vei_scenario.interpreter.document import load_scenario
 MAX_PROBED_VALUES = 64
 
 
-def _build_error(scenario: Path, values: dict[str, str], dt: float) -> str | None:
-    """Why the scenario cannot be set up with ``values`` (None when it can; nothing is run)."""
+def _build_error(scenario: Path, values: dict[str, str], dt: float, controllers: tuple = ()) -> str | None:
+    """Why the scenario cannot be set up with ``values`` and the systems under test ``controllers`` (None
+    when it can; nothing is run)."""
     from vei_scenario.interpreter import Simulation
 
     try:
-        Simulation(load_scenario(scenario, values), dt)
+        Simulation(load_scenario(scenario, values), dt, controllers=controllers)
     except VeiInputError as exc:
         return str(exc)
     except (VeiError, ValueError, ArithmeticError):
@@ -33,16 +34,17 @@ def _build_error(scenario: Path, values: dict[str, str], dt: float) -> str | Non
     return None
 
 
-def check_playable(scenario: Path, variants: list[dict[str, str]], dt: float) -> None:
+def check_playable(scenario: Path, variants: list[dict[str, str]], dt: float, controllers: tuple = ()) -> None:
     """Refuse a scenario that cannot be set up at all: with its defaults, the first variant and the last
-    alike (so the defect does not depend on the values varied)."""
+    alike (so the defect does not depend on the values varied); ``controllers``: the systems under test
+    (an entity they name that the scenario lacks is such a defect)."""
     if not variants:
         return
-    base = _build_error(scenario, {}, dt)
+    base = _build_error(scenario, {}, dt, controllers)
     if base is None:
         return
     for v in (variants[0], variants[-1]):
-        if _build_error(scenario, v, dt) != base:
+        if _build_error(scenario, v, dt, controllers) != base:
             return
     raise VeiInputError(None, "", f"{base} (the base scenario cannot be played: no variant was run)")
 

@@ -10,6 +10,7 @@ import numpy as np
 
 from vei_scenario.metrics.series import MetricConfig
 from vei_scenario.reports.sweep_plots import SERIES, UNITS, param_label, render_plots
+from vei_scenario.sut.spec import reproduce_options
 
 #: The metrics the plots show, read from the rows.
 PLOTTED = tuple(metric for metric, _ in SERIES)
@@ -61,7 +62,12 @@ def _cell(v) -> str:
 
 
 def _table(
-    rows: list[dict], varied: list[str], columns: list[tuple[str, str]], scenario: str = "", dt: float = 0.01
+    rows: list[dict],
+    varied: list[str],
+    columns: list[tuple[str, str]],
+    scenario: str = "",
+    dt: float = 0.01,
+    options: str = "",
 ) -> list[str]:
     out = ["<table><tr><th>#</th>", *(f"<th>{html.escape(param_label(p))}</th>" for p in varied)]
     out += [f"<th>{html.escape(h)}</th>" for _, h in columns] + ["<th>reproduce</th><th>scenario</th></tr>"]
@@ -73,7 +79,7 @@ def _table(
             f"<td>{'<span class=coll>yes</span>' if k == 'collision' and m.get(k) else _cell(m.get(k))}</td>"
             for k, _ in columns
         )
-        command = html.escape(reproduce(scenario, r, varied, dt)) if scenario else ""
+        command = html.escape(reproduce(scenario, r, varied, dt, options)) if scenario else ""
         out.append(f"<tr><td>{r['variant']}</td>{cells}{values}<td><code>{command}</code></td><td>{link}</td></tr>")
     out.append("</table>")
     return out
@@ -170,13 +176,14 @@ def report_html(
         "<p class='note'>Ranked by the impact speed: how fast the two met, relative to each other, at "
         "first contact. Every collision has gap, TTC and safety index 0: they cannot rank them.</p>"
     )
-    parts += _table(shown, varied, columns, meta["scenario"], meta["dt_s"]) if shown else ["<p>None.</p>"]
+    options = reproduce_options(meta.get("system_under_test") or [])
+    parts += _table(shown, varied, columns, meta["scenario"], meta["dt_s"], options) if shown else ["<p>None.</p>"]
     near = heapq.nsmallest(top, (r for r in ok if not r["metrics"].get("collision")), key=_severity)
     n_near = sum(1 for r in ok if r["metrics"].get("near_miss"))
     parts.append(f"<h2>Closest passes without collision (top {len(near)}; {n_near} near misses by TTC)</h2>")
     parts.append("<p class='note'>Ranked by the minimum gap, then the minimum TTC.</p>")
     parts += (
-        _table(near, varied, [("near_miss", "near miss"), *columns[5:]], meta["scenario"], meta["dt_s"])
+        _table(near, varied, [("near_miss", "near miss"), *columns[5:]], meta["scenario"], meta["dt_s"], options)
         if near
         else ["<p>None.</p>"]
     )
@@ -206,10 +213,11 @@ def planner_on(r: dict) -> bool:
     return str(r["parameters"].get("CapEnabled", "")).lower() == "true"
 
 
-def reproduce(scenario: str, r: dict, varied: list[str], dt: float = 0.01) -> str:
-    """The one-line command that replays a variant (its varied parameters; the rest are the file's)."""
+def reproduce(scenario: str, r: dict, varied: list[str], dt: float = 0.01, options: str = "") -> str:
+    """The one-line command that replays a variant (its varied parameters; the rest are the file's;
+    ``options``: those that plug the system under test in again)."""
     step = f" --dt {dt:g}" if dt != 0.01 else ""
-    return f"vei run {scenario} " + " ".join(f"--param {p}={r['parameters'][p]}" for p in varied) + step
+    return f"vei run {scenario} " + " ".join(f"--param {p}={r['parameters'][p]}" for p in varied) + step + options
 
 
 def _configurations(ok: list[dict], varied: list[str], meta: dict) -> list[str]:
@@ -221,12 +229,17 @@ def _configurations(ok: list[dict], varied: list[str], meta: dict) -> list[str]:
     groups: dict[tuple, list[dict]] = {}
     for r in ok:
         groups.setdefault(tuple(r["parameters"][p] for p in keys), []).append(r)
-    has_planner = any("CapEnabled" in r["parameters"] for r in ok)
+    sut = meta.get("system_under_test") or []
+    options = reproduce_options(sut)
+    has_planner = bool(sut) or any("CapEnabled" in r["parameters"] for r in ok)
+
+    def in_charge(r: dict) -> bool:  # (a user's system drives throughout; vei's planner when switched on)
+        return bool(sut) or planner_on(r)
 
     def summary(key, sel):
         m = [r["metrics"] for r in sel]
         coll = [r for r in sel if r["metrics"].get("collision")]
-        on = has_planner and all(planner_on(r) for r in sel)
+        on = has_planner and all(in_charge(r) for r in sel)
         s = [v["safety_index"] for v in m if v.get("safety_index") is not None]
         alert = [v["ttc_zones_s"]["alert"] for v in m if v.get("ttc_zones_s")]
         ttc = [v["min_ttc_s"] for v in m if v.get("min_ttc_s") is not None]
@@ -248,18 +261,26 @@ def _configurations(ok: list[dict], varied: list[str], meta: dict) -> list[str]:
             f"<td>{_cell(min(ttc) if ttc else None)}</td></tr>"
         )  # fmt: skip
     out.append("</table>")
-    failures = sorted((r for r in ok if r["metrics"].get("collision") and planner_on(r)), key=_severity)
+    # a collision with the ego standing (<= 0.1 m/s at the first contact) is no failure of what drives it
+    failures = sorted((r for r in ok if r["metrics"].get("collision_ego_moving") and in_charge(r)), key=_severity)
+    if sut:
+        names = ", ".join(f"{s['entity']}={s['controller']} (sha256 {(s['sha256'] or '-')[:12]})" for s in sut)
+        out.insert(0, f"<p>System under test: <code>{html.escape(names)}</code>.</p>")
     if has_planner:
-        out.append(f"<h2>Failures of the system under test ({len(failures)} collisions with the planner on)</h2>")
+        what = "collisions" if sut else "collisions with the planner on"
+        out.append(f"<h2>Failures of the system under test ({len(failures)} {what}, the ego moving)</h2>")
+        out.append("<p class='note'>A failure is a collision with the ego moving (faster than 0.1 m/s at the first "
+                   "contact); a road user running into the standing ego is not one.</p>")  # fmt: skip
         if failures:
-            out.append("<table><tr><th>#</th><th>impact speed (m/s)</th><th>t coll (s)</th><th>reproduce</th>"
-                       "<th>scenario</th></tr>")  # fmt: skip
+            out.append("<table><tr><th>#</th><th>impact speed (m/s)</th><th>ego speed (m/s)</th><th>t coll (s)</th>"
+                       "<th>reproduce</th><th>scenario</th></tr>")  # fmt: skip
             for r in failures[:200]:
                 m = r["metrics"]
                 link = f"<a href='{html.escape(r['xosc'])}'>{html.escape(r['xosc'])}</a>" if r.get("xosc") else ""
-                command = html.escape(reproduce(meta["scenario"], r, varied, meta.get("dt_s", 0.01)))
+                command = html.escape(reproduce(meta["scenario"], r, varied, meta.get("dt_s", 0.01), options))
                 out.append(
                     f"<tr><td>{r['variant']}</td><td>{_cell(m.get('impact_speed_mps'))}</td>"
+                    f"<td>{_cell(m.get('ego_speed_at_contact_mps'))}</td>"
                     f"<td>{_cell(m.get('collision_time_s'))}</td><td><code>{command}</code></td><td>{link}</td></tr>"
                 )
             out.append("</table>")

@@ -20,6 +20,9 @@ static double dmax(double a, double b) { return a > b ? a : b; }
  * contact cannot be avoided by braking). Near contact both would otherwise grow without bound. */
 #define VEI_EI_MIN_TTC_S 0.1
 #define VEI_DRAC_CAP_MPS2 20.0
+/* metrics/definitions.py: STANDING_MPS (the ego stands at or below it) and BRAKE_ONSET_MPS2 */
+#define VEI_STANDING_MPS 0.1
+#define VEI_BRAKE_ONSET_MPS2 1.0
 
 /* The least distance from a's corners to box b, operation for operation as
  * vei_scenario.models.boxes.box_distance computes it (each corner in the world, then in b's frame, its
@@ -352,8 +355,9 @@ typedef struct {
 static void score(const VeiBatchScene *sc, double *tr[NTRAJ], double *tg[NTRIG], Scratch *w, double *out) {
     const int n = sc->n_steps + 1;
     const double *t = sc->t;
-    int any_contact = 0, first_contact = -1;
+    int any_contact = 0, first_contact = -1, onset = -1, stand_start = -1, stood_from = -1;
     double min_gap = INFINITY, min_ttc = INFINITY, min_ttc_approx = INFINITY, ei_max = -INFINITY, impact = NAN;
+    double ttc_at_onset = NAN;
     long zone[4] = {0, 0, 0, 0};
     for (int k = 0; k < n; k++) {
         double ex = tr[EX][k], ey = tr[EY][k], eyaw = tr[EYAW][k], ev = tr[ESPEED][k];
@@ -383,12 +387,20 @@ static void score(const VeiBatchScene *sc, double *tr[NTRAJ], double *tg[NTRIG],
         }
         int contact = apart_now ? 0 : vei_trig_boxes_overlap(&eb, &ob);
         w->contact[k] = contact;
-        if (contact && !any_contact) any_contact = 1, first_contact = k, impact = hypot(vx, vy);
+        if (ev <= VEI_STANDING_MPS) {
+            if (stand_start < 0) stand_start = k;
+        } else {
+            stand_start = -1;
+        }
+        if (contact && !any_contact) any_contact = 1, first_contact = k, impact = hypot(vx, vy), stood_from = stand_start;
         double gap = contact ? 0.0 : box_gap(&eb, &ob);
         w->gap[k] = gap;
         min_gap = dmin(min_gap, gap);
         double ttc2d = apart_ahead ? INFINITY : vei_trig_time_to_contact(&eb, evx, evy, &ob, ovx, ovy);
         min_ttc = dmin(min_ttc, ttc2d);
+        /* brake onset: the first step (up to the first contact) the ego decelerates at BRAKE_ONSET or more */
+        if (onset < 0 && (!any_contact || k == first_contact) && tr[EACCEL][k] <= -VEI_BRAKE_ONSET_MPS2)
+            onset = k, ttc_at_onset = ttc2d;
         /* the seed's approximation: gap to the other ahead in the ego's lane band / v_ego; the band is
          * at most half the ego's width plus half the other's diagonal wide, so beyond that the other's
          * relative heading is not needed */
@@ -457,6 +469,13 @@ static void score(const VeiBatchScene *sc, double *tr[NTRAJ], double *tg[NTRIG],
     out[OUT_COMFORT] = (double)comfortable / n;
     out[OUT_NEAR_MISS] = !any_contact && sc->near_lo <= min_ttc && min_ttc <= sc->near_hi;
     out[OUT_IMPACT_SPEED] = impact;
+    double ev_contact = any_contact ? tr[ESPEED][first_contact] : NAN;
+    out[OUT_EGO_CONTACT_SPEED] = ev_contact;
+    out[OUT_EGO_MOVING] = any_contact && ev_contact > VEI_STANDING_MPS;
+    out[OUT_STOOD_BEFORE] = !any_contact ? NAN : (stood_from >= 0 ? t[first_contact] - t[stood_from] : 0.0);
+    out[OUT_BRAKE_ONSET] = onset >= 0 ? t[onset] : NAN;
+    out[OUT_TTC_AT_BRAKE] = onset >= 0 ? ttc_at_onset : NAN;
+    out[OUT_SPEED_REDUCTION] = !any_contact ? NAN : (onset >= 0 ? tr[ESPEED][onset] - ev_contact : 0.0);
 }
 
 /* Keep the states of a planner variant that the prefix does not know yet: 0 .. first_brake are states

@@ -52,7 +52,10 @@ typedef struct {
     X(OUT_SAFETY_INDEX, "safety_index") X(OUT_ACT_MIN, "act_min_s") X(OUT_EI_MAX, "ei_max_mps")           \
     X(OUT_DRAC_MAX, "drac_max_mps2") X(OUT_PET, "pet_s") X(OUT_PEAK_DECEL, "peak_decel_mps2")            \
     X(OUT_MAX_JERK, "max_jerk_mps3") X(OUT_COMFORT, "comfort_score") X(OUT_NEAR_MISS, "near_miss")       \
-    X(OUT_IMPACT_SPEED, "impact_speed_mps")
+    X(OUT_IMPACT_SPEED, "impact_speed_mps") X(OUT_EGO_CONTACT_SPEED, "ego_speed_at_contact_mps")                 \
+    X(OUT_EGO_MOVING, "collision_ego_moving") X(OUT_STOOD_BEFORE, "ego_standing_before_contact_s")           \
+    X(OUT_BRAKE_ONSET, "brake_onset_s") X(OUT_TTC_AT_BRAKE, "ttc_at_brake_onset_s")                         \
+    X(OUT_SPEED_REDUCTION, "speed_reduction_mps")
 
 #define VEI_OUTPUT_ENUM(id, name) id,
 enum { VEI_BATCH_OUTPUT_LIST(VEI_OUTPUT_ENUM) VEI_BATCH_OUTPUTS };

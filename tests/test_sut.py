@@ -1,0 +1,384 @@
+"""The user's own controller (the system under test) on the ego: the contract, every command, its faults.
+
+The controllers in tests/data/sut/ were written from the contract alone, without reading vei's code
+(aeb_good.AEB, aeb_flawed.LateAEB / BlindLeftAEB, faulty.*): they are what a user would bring.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import shlex
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from vei_scenario.cli import main
+from vei_scenario.interpreter import run_scenario
+from vei_scenario.sut import ControllerFault, command_from, parse_controller_options
+
+DATA = Path(__file__).parent / "data" / "sut"
+PLANNER = "vei_scenario.sut.planner:CollisionAvoidancePlanner"
+
+
+@pytest.fixture(scope="module")
+def scenario(compiled) -> Path:
+    return next(p for p in compiled["case_study"].written if p.name == "scenario.xosc")
+
+
+def _config(rider: str, shift: str = "2.197") -> dict[str, str]:
+    return {"RiderType": rider, "CapEnabled": "true", "TimeShift": shift}
+
+
+@pytest.mark.parametrize("rider", ["normal", "aggressive"])
+def test_vei_planner_as_a_plugged_class_reproduces_the_built_in_one(scenario, rider):
+    """Study configurations 4 and 5: the planner seen only through the contract drives as the built-in."""
+    built_in = run_scenario(scenario, _config(rider))
+    plugged = run_scenario(scenario, _config(rider), controllers=parse_controller_options([f"Ego={PLANNER}"]))
+    for name, a in built_in.traces.items():
+        b = plugged.traces[name]
+        assert np.abs(a.x - b.x).max() <= 1e-9 and np.abs(a.y - b.y).max() <= 1e-9
+        assert np.abs(a.speed - b.speed).max() <= 1e-9
+    assert plugged.traces["Ego"].status == built_in.traces["Ego"].status  # cap_cruise / cap_brake
+    assert "cap_brake" in plugged.traces["Ego"].status
+
+
+def test_a_late_aeb_collides_where_a_good_one_does_not(scenario):
+    values = _config("aggressive")
+    late = run_scenario(scenario, values, controllers=parse_controller_options([f"Ego={DATA}/aeb_flawed.py:LateAEB"]))
+    good = run_scenario(scenario, values, controllers=parse_controller_options([f"Ego={DATA}/aeb_good.py:AEB"]))
+    assert [c[1:] for c in late.collisions] == [("Ego", "scooter_1")]
+    assert good.collisions == []
+    # the command went through the vehicle model: the late AEB's -4 m/s² within the jerk limit
+    assert late.traces["Ego"].accel.min() == pytest.approx(-4.0)
+    assert set(late.traces["Ego"].status[1:]) == {"sut"}  # (t = 0 is logged before the first step)
+
+
+def test_the_ego_keeps_its_path_and_its_performance(scenario):
+    """A full-throttle controller: the speed rises at the Performance's maxAcceleration (4 m/s²), the
+    ego stays on the path the built-in run drives."""
+    src = "class Floor:\n    def __init__(self, **kw):\n        pass\n    def step(self, obs):\n        return 50.0\n"
+    path = DATA.parent.parent / "_floor_tmp.py"
+    try:
+        path.write_text(src)
+        r = run_scenario(scenario, _config("replay"), controllers=parse_controller_options([f"Ego={path}:Floor"]))
+    finally:
+        path.unlink()
+    ego = r.traces["Ego"]
+    assert ego.accel.max() == pytest.approx(4.0)
+    assert ego.speed[100] == pytest.approx(5.61 + 4.0 * 1.0 - 4.0**2 / (2 * 50.0), abs=0.05)  # jerk ramp
+    base = run_scenario(scenario, {"RiderType": "replay"}).traces["Ego"]
+    # same path: every plugged position lies on the polyline the unplugged ego drives
+    d = np.hypot(ego.x[:300, None] - base.x[None, :], ego.y[:300, None] - base.y[None, :]).min(axis=1)
+    assert d.max() < 0.05
+
+
+def test_command_forms():
+    assert command_from(-2, "E=x", 0.0).accel_mps2 == -2.0
+    c = command_from({"accel_mps2": -3.5, "state": "brake,hard"}, "E=x", 0.0)
+    assert (c.accel_mps2, c.state) == (-3.5, "brake;hard")
+
+    class Out:
+        accel_mps2 = 1.5
+
+    assert command_from(Out(), "E=x", 0.0).accel_mps2 == 1.5
+    for bad, says in ((True, "True"), (None, "None"), ("brake", "str 'brake'"), ({"a": 1}, "without accel_mps2"),
+                      (float("inf"), "non-finite"), (-1e3, "beyond ±100")):  # fmt: skip
+        with pytest.raises(ControllerFault, match=says):
+            command_from(bad, "Ego=f.py:C", 1.25)
+    with pytest.raises(ControllerFault, match=r"^controller Ego=f.py:C at t = 1.25 s: "):
+        command_from("x", "Ego=f.py:C", 1.25)
+
+
+def _vei(capsys, *argv: str) -> tuple[int, str, str]:
+    code = main([str(a) for a in argv])
+    out = capsys.readouterr()
+    return code, out.out, out.err
+
+
+FAULTS = {
+    # class: (exit code, the one line's tail)
+    "RaisesAt2s": (1, "at t = 2.00 s: step raised RuntimeError: sensor fusion lost track"),
+    "ReturnsNaN": (1, "at t = 1.00 s: step returned a non-finite command (nan)"),
+    "ReturnsAbsurd": (1, "at t = 0.00 s: step returned 1e+06 m/s², beyond ±100 m/s² (no vehicle can)"),
+    "BadReturn": (1, "at t = 0.00 s: step returned str 'brake', not an acceleration"),
+    "NoStep": (2, ": class NoStep has no step(obs) method"),
+    "WrongCtorArgs": (2, ": constructing WrongCtorArgs raised TypeError: "),
+    "Missing": (2, "has no class 'Missing' (it has: BadReturn, Hangs, NoStep"),
+}
+
+
+@pytest.mark.parametrize("cls", sorted(FAULTS))
+def test_faults_in_the_users_code_are_one_line_naming_it(scenario, tmp_path, capsys, cls):
+    code, out, err = _vei(capsys, "run", scenario, "--controller", f"Ego={DATA}/faulty.py:{cls}", "-o", tmp_path / "r")
+    want_code, tail = FAULTS[cls]
+    assert code == want_code
+    assert err.count("\n") == 1 and err.startswith(f"vei: error: controller Ego={DATA}/faulty.py:{cls}")
+    assert tail in err
+    assert not (tmp_path / "r").exists()  # nothing half-written
+
+
+def test_a_missing_file_and_an_unknown_entity_are_refused_before_running(scenario, capsys):
+    code, _, err = _vei(capsys, "run", scenario, "--controller", "Ego=no/such_file.py:AEB")
+    assert code == 2 and err == "vei: error: controller Ego=no/such_file.py:AEB: no/such_file.py: no such file\n"
+    code, _, err = _vei(capsys, "run", scenario, "--controller", f"Bob={DATA}/aeb_good.py:AEB")
+    assert code == 2 and err.endswith("--controller: no entity 'Bob' (entities: Ego, scooter_1)\n")
+    code, _, err = _vei(capsys, "run", scenario, "--controller", "Ego=no_such_package.mod:AEB")
+    assert code == 2 and "no module 'no_such_package'" in err
+
+
+def test_run_names_the_system_under_test_and_logs_its_state(scenario, tmp_path, capsys):
+    target = f"{DATA}/aeb_flawed.py:LateAEB"
+    code, out, _ = _vei(capsys, "run", scenario, "--param", "CapEnabled=true", "--controller", f"Ego={target}",
+                        "--controller-param", "ttc_brake_s=0.8", "-o", tmp_path, "--no-plots")  # fmt: skip
+    assert code == 0 and f"system under test on Ego: {target}" in out
+    doc = json.loads((tmp_path / "metrics.json").read_text())
+    sha = hashlib.sha256((DATA / "aeb_flawed.py").read_bytes()).hexdigest()
+    assert doc["system_under_test"] == [
+        {"entity": "Ego", "controller": target, "file": str(DATA / "aeb_flawed.py"), "sha256": sha,
+         "parameters": {"ttc_brake_s": "0.8"}}
+    ]  # fmt: skip
+    rows = [r.split(",") for r in (tmp_path / "trajectories.csv").read_text().splitlines()[1:]]
+    assert {r[-1] for r in rows[2:] if r[1] == "Ego"} == {"sut"}
+
+
+def test_a_sweep_with_a_faulty_controller_fails_each_variant_and_finishes(scenario, tmp_path, capsys):
+    code, out, err = _vei(capsys, "sweep", scenario, "--vary", "TimeShift=0:2:1", "--workers", "2", "--quiet",
+                          "--controller", f"Ego={DATA}/faulty.py:RaisesAt2s", "-o", tmp_path)  # fmt: skip
+    assert code == 1 and "3 variants (TimeShift): 0 collide (0 with the ego moving), 0 do not, 3 failed" in out
+    assert "vei: 3 of 3 variants failed" in err and "sensor fusion lost track" in err
+    catalog = json.loads((tmp_path / "catalog.json").read_text())
+    assert [r["status"] for r in catalog["variants"]] == ["error"] * 3
+    assert catalog["system_under_test"][0]["controller"].endswith("faulty.py:RaisesAt2s")
+
+
+def test_falsify_finds_the_late_aebs_failures_and_its_reproduce_command_reproduces(scenario, tmp_path, capsys):
+    target = f"Ego={DATA}/aeb_flawed.py:LateAEB"
+    code, out, _ = _vei(capsys, "falsify", scenario, "--bounds", "TimeShift=1:4", "--values", "RiderType=replay",
+                        "--param", "CapEnabled=true", "--controller", target, "-o", tmp_path / "f")  # fmt: skip
+    assert code == 0
+    doc = json.loads((tmp_path / "f" / "falsify.json").read_text())
+    assert doc["regions"] and doc["system_under_test"][0]["entity"] == "Ego"
+    command = doc["regions"][0]["reproduce"]
+    assert f"--controller {target}" in command
+    argv = shlex.split(command)[1:]
+    code, out, _ = _vei(capsys, *argv, "--no-plots")
+    assert code == 0 and "COLLISION" in out  # plain vei, the printed options: the same failure
+
+
+def test_a_scenario_controller_with_a_module_property_drives_as_the_storyboard_activates(scenario, tmp_path):
+    """CARLA ScenarioRunner's convention: a Controller whose property ``module`` names the class (a file
+    found from the scenario's directory), assigned and activated as the scenario says."""
+    from lxml import etree
+
+    tree = etree.parse(str(scenario))
+    props = tree.find("Entities/ScenarioObject[@name='Ego']/ObjectController/Controller/Properties")
+    etree.SubElement(props, "Property", name="module", value="aeb_flawed.py:LateAEB")
+    for f in scenario.parent.iterdir():
+        if f.suffix == ".xodr":
+            (tmp_path / f.name).write_bytes(f.read_bytes())
+    (tmp_path / "aeb_flawed.py").write_bytes((DATA / "aeb_flawed.py").read_bytes())
+    path = tmp_path / "scenario.xosc"
+    tree.write(str(path))
+    on = run_scenario(path, _config("aggressive"))
+    assert set(on.traces["Ego"].status[1:]) == {"sut"} and on.collisions
+    off = run_scenario(path, {**_config("aggressive"), "CapEnabled": "false"})  # never activated: default
+    assert "sut" not in off.traces["Ego"].status
+
+
+def test_a_collision_with_the_ego_standing_is_said_to_be_one(scenario):
+    """The rider replayed 3.35 s late runs into the ego the planner has stopped: a collision, not the
+    planner's failure. The new metrics read off the trace independently."""
+    from vei_scenario.metrics import MetricConfig, PairSeries, compute_metrics
+
+    r = run_scenario(scenario, {"CapEnabled": "true", "RiderType": "replay", "TimeShift": "3.353814"})
+    m = compute_metrics(PairSeries.from_run(r), MetricConfig())
+    ego = r.traces["Ego"]
+    (t_hit, *_), k = r.collisions[0], int(round(r.collisions[0][0] / 0.01))
+    assert m["collision"] and not m["collision_ego_moving"]
+    assert m["ego_speed_at_contact_mps"] == round(float(ego.speed[k]), 4) == 0.0
+    still = np.flatnonzero(ego.speed[: k + 1] > 0.1)[-1] + 1  # the first step of the standstill
+    assert m["ego_standing_before_contact_s"] == pytest.approx(t_hit - r.t[still], abs=1e-3)
+    assert t_hit - r.t[still] > 0.5
+    onset = int(np.flatnonzero(ego.accel <= -1.0)[0])
+    assert m["brake_onset_s"] == pytest.approx(r.t[onset])
+    assert m["speed_reduction_mps"] == pytest.approx(ego.speed[onset] - ego.speed[k], abs=1e-4)
+    # the same run with the late AEB plugged in: the ego still moving at contact, the AEB's own failure
+    late = run_scenario(scenario, _config("aggressive"), controllers=parse_controller_options(
+        [f"Ego={DATA}/aeb_flawed.py:LateAEB"]))  # fmt: skip
+    m = compute_metrics(PairSeries.from_run(late), MetricConfig())
+    assert m["collision_ego_moving"] and m["ego_speed_at_contact_mps"] > 2.0 and m["ego_standing_before_contact_s"] == 0
+    assert 0 < m["ttc_at_brake_onset_s"] < 0.7  # it brakes at TTC < 0.6 s (one step late)
+
+
+def test_a_hanging_controller_fails_its_run_within_the_limit_and_a_sweep_goes_on(scenario, tmp_path, capsys):
+    import time
+
+    hangs = f"Ego={DATA}/faulty.py:Hangs"  # sleeps an hour in step from t = 1 s
+    started = time.perf_counter()
+    code, _, err = _vei(capsys, "run", scenario, "--controller", hangs, "--controller-timeout", "0.3")
+    assert code == 1 and err == (f"vei: error: controller {hangs} at t = 1.00 s: step did not return within 0.3 s "
+                                 "(--controller-timeout)\n")  # fmt: skip
+    code, out, err = _vei(capsys, "sweep", scenario, "--vary", "TimeShift=0:3:1", "--workers", "2", "--quiet",
+                          "--controller", hangs, "--controller-timeout", "0.3", "-o", tmp_path)  # fmt: skip
+    assert code == 1 and "4 failed" in out and "vei: 4 of 4 variants failed" in err
+    assert time.perf_counter() - started < 20
+    assert _children() == []  # no worker left behind
+
+
+def _children() -> list[int]:
+    """Processes whose parent is this one (Linux /proc)."""
+    import os
+
+    out = []
+    for d in Path("/proc").iterdir():
+        if d.name.isdigit():
+            try:
+                stat = (d / "stat").read_text()
+            except OSError:
+                continue
+            if int(stat.rsplit(")", 1)[1].split()[1]) == os.getpid():
+                out.append(int(d.name))
+    return out
+
+
+def test_falsify_and_probability_refuse_a_controller_vei_has_no_model_of(scenario, tmp_path, capsys):
+    typo = tmp_path / "typo.xosc"
+    typo.write_text(scenario.read_text().replace('Controller name="CollisionAvoidancePlanner"',
+                                                 'Controller name="CollisionAvoidancePlaner"'))  # fmt: skip
+    (tmp_path / "scenario.xodr").write_bytes((scenario.parent / "scenario.xodr").read_bytes())
+    box = ["--bounds", "TimeShift=2:3", "--values", "RiderType=replay", "--param", "CapEnabled=true"]
+    code, _, err = _vei(capsys, "falsify", typo, *box)
+    assert code == 2 and err.count("\n") == 1
+    assert "Ego's controller 'CollisionAvoidancePlaner' names no model vei has" in err
+    assert _vei(capsys, "falsify", typo, *box, "--allow-default-controller")[0] == 0
+    assert _vei(capsys, "falsify", typo, *box, "--controller", f"Ego={DATA}/aeb_good.py:AEB")[0] == 0
+    dist = tmp_path / "d.xosc"
+    dist.write_text(
+        '<?xml version="1.0"?><OpenSCENARIO><FileHeader revMajor="1" revMinor="2" date="2024-01-01T00:00:00" '
+        'description="d" author="t"/><ParameterValueDistribution><ScenarioFile filepath="typo.xosc"/>'
+        '<Stochastic numberOfTestRuns="100" randomSeed="1"><StochasticDistribution parameterName="TimeShift">'
+        '<UniformDistribution><Range lowerLimit="0" upperLimit="4"/></UniformDistribution></StochasticDistribution>'
+        "</Stochastic></ParameterValueDistribution></OpenSCENARIO>"
+    )
+    code, _, err = _vei(capsys, "probability", typo, "--dist", dist, "--runs", "100", "--estimator", "monte-carlo")
+    assert code == 2 and "names no model vei has" in err
+
+
+needs_fmus = pytest.mark.skipif(
+    __import__("sys").platform != "linux", reason="the test FMUs carry linux64 binaries only (pythonfmu)"
+)
+
+
+@needs_fmus
+def test_an_fmu_drives_the_ego_through_vei_caps_ports(scenario, tmp_path, capsys):
+    """FMUs with vei_cap's eight inputs and a_cmd (pythonfmu, tests/data/sut/fmu_src): the late one
+    collides with the ego moving, the good one does not; a declared parameter is set, the scenario's
+    planner properties (a_max_mps2, ...) that the FMU does not declare are not pushed onto it."""
+    values = _config("aggressive")
+    late = run_scenario(scenario, values, controllers=parse_controller_options([f"Ego={DATA}/LateAebFmu.fmu"]))
+    good = run_scenario(scenario, values, controllers=parse_controller_options([f"Ego={DATA}/GoodAebFmu.fmu"]))
+    assert late.collisions and not good.collisions
+    assert late.traces["Ego"].accel.min() == pytest.approx(-4.0)  # its -4 m/s² through the vehicle model
+    earlier = run_scenario(scenario, values, controllers=parse_controller_options(
+        [f"Ego={DATA}/LateAebFmu.fmu"], ["ttc_brake_s=1.5"]))  # fmt: skip
+    assert not earlier.collisions  # braking at TTC 1.5 s instead of 0.6 s avoids it
+    code, out, _ = _vei(capsys, "run", scenario, "--controller", f"Ego={DATA}/LateAebFmu.fmu", "-o", tmp_path)
+    doc = json.loads((tmp_path / "metrics.json").read_text())
+    assert code == 0 and doc["system_under_test"][0]["sha256"] == hashlib.sha256(
+        (DATA / "LateAebFmu.fmu").read_bytes()).hexdigest()  # fmt: skip
+
+
+@needs_fmus
+@pytest.mark.parametrize(
+    "argv, code, says",
+    [
+        (["--controller", "Ego={d}/ErrorFmu.fmu"], 1, "ErrorFmu.fmu at t = 1.00 s: the FMU's doStep failed: "
+         "fmi2DoStep returned fmi2Discard"),
+        (["--controller", "Ego={d}/RaisingFmu.fmu"], 1, "RaisingFmu.fmu at t = 1.00 s: the FMU's doStep failed: "
+         "fmi2DoStep returned fmi2"),
+        (["--controller", "Ego={d}/WrongPortsFmu.fmu"], 2, "WrongPortsFmu.fmu: input 'x' (Real) is none vei provides"),
+        (["--controller", "Ego={d}/LateAebFmu.fmu", "--controller-param", "brake=2"], 2,
+         "LateAebFmu.fmu declares no parameter 'brake' (it has: ttc_brake_s)"),
+        (["--controller", "Ego={d}/LateAebFmu.fmu", "--controller-param", "ttc_brake_s=soon"], 2,
+         "parameter ttc_brake_s='soon' is not a Real value"),
+        (["--controller", "Ego={d}/Nothing.fmu"], 2, "Nothing.fmu: no such file"),
+    ],
+)  # fmt: skip
+def test_a_failing_or_mismatched_fmu_is_one_line(scenario, capsys, argv, code, says):
+    got, _, err = _vei(capsys, "run", scenario, "--no-plots", *[a.format(d=DATA) for a in argv])
+    assert got == code and err.count("\n") == 1 and err.startswith("vei: error: controller Ego=") and says in err
+
+
+@needs_fmus
+def test_a_sweep_with_a_failing_fmu_goes_on_and_leaves_no_worker(scenario, tmp_path, capsys):
+    code, out, err = _vei(capsys, "sweep", scenario, "--vary", "TimeShift=0:3:1", "--workers", "2", "--quiet",
+                          "--controller", f"Ego={DATA}/ErrorFmu.fmu", "-o", tmp_path)  # fmt: skip
+    assert code == 1 and "4 failed" in out and "fmi2Discard" in err
+    assert _children() == []
+
+
+def test_vei_planner_as_a_native_fmu_reproduces_the_built_in_one(scenario, tmp_path):
+    """vei fmu build cap (the C planner in an FMU, through fmpy), given the scenario's cruise speed:
+    study configurations 4 and 5 as the built-in planner drives them."""
+    from vei_scenario.fmu import build_fmus
+
+    fmu = build_fmus(["cap"], tmp_path)["cap"]
+    plugged = parse_controller_options([f"Ego={fmu}"], ["cruise_speed_mps=5.61"])
+    for rider in ("normal", "aggressive"):
+        a, b = run_scenario(scenario, _config(rider)), run_scenario(scenario, _config(rider), controllers=plugged)
+        for name, tr in a.traces.items():
+            assert np.abs(tr.x - b.traces[name].x).max() <= 1e-9 and np.abs(tr.y - b.traces[name].y).max() <= 1e-9
+
+
+CPNA = (Path(__file__).resolve().parents[1].parent / "shared" / "osc-ncap" / "OpenSCENARIO" / "NCAP" / "AEB_VRU_2023"
+        / "Variations" / "NCAP_AEB_VRU_CPNA-25_50kph_2023.xosc")  # fmt: skip
+
+
+@pytest.mark.skipif(not CPNA.is_file(), reason="needs the Euro NCAP OpenSCENARIO pack at ../shared/osc-ncap")
+def test_the_users_aeb_on_the_euro_ncap_vut(tmp_path, capsys):
+    """Euro NCAP CPNA-25 at 50 km/h: the VUT, which no controller drives in the pack, hits the child as
+    the pack plays it; with the example AEB plugged in it stops short, braking at 8 m/s²."""
+    code, out, _ = _vei(capsys, "run", CPNA, "--no-plots")
+    assert code == 0 and "Ego vs VRU: COLLISION" in out
+    aeb = f"Ego={Path(__file__).resolve().parents[1]}/examples/controllers/aeb.py:AEB"
+    code, out, _ = _vei(capsys, "run", CPNA, "--controller", aeb, "-o", tmp_path, "--no-plots")
+    m = json.loads((tmp_path / "metrics.json").read_text())["metrics"]
+    assert code == 0 and not m["collision"] and m["peak_decel_mps2"] == 8.0 and m["brake_onset_s"] is not None
+
+
+def test_a_check_suite_names_its_system_under_test(scenario, tmp_path, capsys):
+    (tmp_path / "aeb.py").write_bytes((DATA / "aeb_flawed.py").read_bytes())
+    (tmp_path / "suite.toml").write_text(
+        f'[[case]]\nname = "late AEB"\nscenario = "{scenario}"\n'
+        'parameters = { TimeShift = 2.197, RiderType = "aggressive" }\ncontroller = "Ego=aeb.py:LateAEB"\n'
+        'controller_parameters = { ttc_brake_s = 0.6 }\nexpect = ["collision_ego_moving == false"]\n'
+    )
+    code, out, _ = _vei(capsys, "check", tmp_path / "suite.toml", "--junit", tmp_path / "j.xml")
+    assert code == 1 and "got collision_ego_moving = True" in out
+    sha = hashlib.sha256((DATA / "aeb_flawed.py").read_bytes()).hexdigest()
+    assert f'name="system_under_test.Ego" value="aeb.py:LateAEB sha256={sha}"' in (tmp_path / "j.xml").read_text()
+    (tmp_path / "suite.toml").write_text((tmp_path / "suite.toml").read_text().replace("LateAEB", "Nope"))
+    code, _, err = _vei(capsys, "check", tmp_path / "suite.toml")
+    assert code == 2 and err.endswith("case[0].controller: controller Ego=aeb.py:Nope: aeb.py has no class 'Nope' "
+                                      "(it has: BlindLeftAEB, LateAEB)\n")  # fmt: skip
+
+
+def test_an_entry_point_of_the_group_vei_controllers_names_a_class(scenario, monkeypatch):
+    import importlib.metadata
+
+    class EntryPoint:
+        name = "late-aeb"
+
+        def load(self):
+            return parse_controller_options([f"Ego={DATA}/aeb_flawed.py:LateAEB"])[0].load()
+
+    def entry_points(group=None):
+        return [EntryPoint()] if group == "vei.controllers" else []
+
+    monkeypatch.setattr(importlib.metadata, "entry_points", entry_points)
+    late = run_scenario(scenario, _config("aggressive"), controllers=parse_controller_options(["Ego=late-aeb"]))
+    assert late.collisions
+    with pytest.raises(ControllerFault, match="no FILE.py:CLASS, MODULE:CLASS or entry point"):
+        parse_controller_options(["Ego=no-such-entry"])
