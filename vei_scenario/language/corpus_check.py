@@ -242,12 +242,16 @@ def _nearest_on_path(tr, ego, rows: int = 512):
 
 def play_case(case: dict, make_layers, workdir: Path, seed: int = 0) -> list[str]:
     """Write the scenario of ``case`` (seed ``seed``), play it with ``vei run``'s interpreter, and
-    return what its adversaries did not do (:func:`played_problems`)."""
+    return what its adversaries did not do (:func:`played_problems`); a scenario that cannot be
+    written returns that reason as its one problem."""
     from vei_scenario.interpreter import run_scenario
     from vei_scenario.language.scenario_writer import write_scenario
 
     layers = make_layers(case["text"], seed)
-    written = write_scenario(layers, "scenario")
+    try:
+        written = write_scenario(layers, "scenario")
+    except ValueError as exc:  # (a PlacementError too): nothing to play, and that is what it did not do
+        return [f"could not be written: {exc}"]
     (workdir / "scenario.xosc").write_bytes(written.xosc)
     (workdir / "scenario.xodr").write_bytes(written.xodr)
     result = run_scenario(workdir / "scenario.xosc", None, round(1.0 / float(layers["rate_hz"]), 6))
