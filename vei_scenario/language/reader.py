@@ -31,6 +31,8 @@ from functools import lru_cache
 from vei_scenario.language import lexicon as L
 from vei_scenario.language import vocabulary as V
 from vei_scenario.language.behaviours import BEHAVIOURS
+from vei_scenario.language.ncap import rewrite as ncap_rewrite
+from vei_scenario.language.normalise import normalise
 from vei_scenario.language.reading import ActorSpec, NotUnderstood, Reading
 
 _TOKEN = re.compile(r"\d+(?:\.\d+)?|km/h|m/s²|m/s2|m/s|[a-z][a-z\-]*(?:'[a-z]+)?|'s|[.;,!?:%]")
@@ -229,8 +231,23 @@ def _ncap_target(m: re.Match) -> str:
     return who
 
 
+def _actor_word(word: str) -> bool:
+    """Whether ``word`` alone names a road user other than the ego."""
+    return any(TABLE.get((w,), ("",))[0] == "actor" and TABLE[(w,)][1] != "ego" for w in forms(word))
+
+
+def _actor_noun_in(phrase: str) -> str | None:
+    """The road-user noun a phrase ends in ("white transit van": "van"), or None."""
+    for word in reversed(re.findall(r"[a-z][a-z-]*", phrase)):
+        if _actor_word(word):
+            return word
+    return None
+
+
 def _tokens(text: str) -> list[str]:
     text = text.lower().replace("\u2019", "'").replace("’", "'")
+    text = normalise(text, _actor_noun_in)
+    text = ncap_rewrite(text, _actor_word)
     text = _NCAP_NAME.sub(_ncap_said, text)
     out = []
     for tok in _TOKEN.findall(text):
