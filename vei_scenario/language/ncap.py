@@ -42,7 +42,9 @@ CODES: dict[str, tuple[str, str]] = {
 }
 _CODE = re.compile(r"\b(" + "|".join(sorted(CODES, key=len, reverse=True)) + r")(?:-\d+)?(?:-style)?\b")
 #: The protocols' names of their targets.
-_TARGETS = re.compile(r"\b(?:(?:the|a|an)\s+)?(?:(?:adult|child)\s+)?(?:gvt|evt|soft target|epta|eptc|ept|ebta|ebt|emt|pta|target)\b")
+_TARGETS = re.compile(
+    r"\b(?:(?:the|a|an)\s+)?(?:(?:adult|child)\s+)?(?:gvt|evt|soft target|epta|eptc|ept|ebta|ebt|emt|pta|target)\b"
+)
 
 
 def rewrite(text: str, actor_noun) -> str:
@@ -62,7 +64,9 @@ def rewrite(text: str, actor_noun) -> str:
     if label and any(actor_noun(w) for w in re.findall(r"[a-z][a-z-]*", _TARGETS.sub(f"the {noun}", rest))):
         # "CCRs: the ego approaches a stationary car ...": a label; the text after it says the rest
         rest = re.sub(r"\bthe vehicle\b", "the ego", _TARGETS.sub(f"the {noun}", rest))
-        return text[: m.end()] + re.sub(rf"\b(vut|ego|{re.escape(noun)})\s+(?=\d+(?:\.\d+)?\s*(?:km/h|mph|m/s))", r"\1 at ", rest)
+        return text[: m.end()] + re.sub(
+            rf"\b(vut|ego|{re.escape(noun)})\s+(?=\d+(?:\.\d+)?\s*(?:km/h|mph|m/s))", r"\1 at ", rest
+        )
     ego = re.match(r"\s*[,:]?\s*(?:at\s+)?(\d+(?:\.\d+)?)(?:\s*/\s*(\d+(?:\.\d+)?))?\s*(km/h|mph|m/s)", rest)
     if ego is not None:  # "CCRb 50/50 km/h": the ego's speed, then the target's
         said += f"; the ego drives at {ego.group(1)} {ego.group(3)}"
@@ -72,5 +76,9 @@ def rewrite(text: str, actor_noun) -> str:
     rest = _TARGETS.sub(f"the {noun}", rest)
     rest = re.sub(r"\bthe vehicle\b", "the ego", rest)  # (the vehicle under test)
     text = text[: m.start()] + said + ". " + rest.lstrip(" ,:;")
-    # "VUT 40 km/h", "the pedestrian 5 km/h": a road user and its speed
+    return _speed_after(noun, text)
+
+
+def _speed_after(noun: str, text: str) -> str:
+    """ "VUT 40 km/h", "the pedestrian 5 km/h": a road user and its speed, said with "at"."""
     return re.sub(rf"\b(vut|ego|{re.escape(noun)})\s+(?=\d+(?:\.\d+)?\s*(?:km/h|mph|m/s))", r"\1 at ", text)

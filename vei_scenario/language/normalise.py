@@ -76,14 +76,18 @@ def _numbers_in_words(text: str) -> str:
 
 #: The narrator's own vehicle in police, insurance and witness statements.
 _EGO_ALIASES = [
-    re.compile(r"\b(?:the\s+)?(?:driver\s+of\s+)?(?:vehicle|veh\.?|unit|car|v|d)\s*-?\s*(?:1|one|#1)\b(?!\s*(?:m|km|mph|s)\b)"),
+    re.compile(
+        r"\b(?:the\s+)?(?:driver\s+of\s+)?(?:vehicle|veh\.?|unit|car|v|d)\s*-?\s*(?:1|one|#1)\b(?!\s*(?:m|km|mph|s)\b)"
+    ),
     re.compile(r"\b(?:the\s+)?(?:insured|my\s+client|our\s+client|the\s+claimant)(?:'s\s+(?:vehicle|car))?\b"),
     re.compile(r"\b(?:our|my)\s+(?:vehicle|own\s+car|own\s+vehicle)\b"),
 ]
 #: The other party of a statement: "V2", "Vehicle 2", "Unit 2", "D2" (3, 4 ...).
 _OTHER = re.compile(r"\b(?:vehicle|veh\.?|unit|v|d)\s*-?\s*([2-9])\b(?!\s*(?:m|km|mph|s)\b)")
 #: An apposition after it: "V2, a white Transit van," / "Unit 2, a pedal cyclist,".
-_APPOSITION = re.compile(r"\s*,?\s*(?:an?|the)\s+([^,.;]+?)(?=\s*(?:,|\.|;|\s+(?:travell\w*|driving|was|were|who|which|in|on|at)\b))")
+_APPOSITION = re.compile(
+    r"\s*,?\s*(?:an?|the)\s+([^,.;]+?)(?=\s*(?:,|\.|;|\s+(?:travell\w*|driving|was|were|who|which|in|on|at)\b))"
+)
 
 
 def _other_parties(text: str, known_noun) -> str:

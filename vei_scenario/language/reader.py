@@ -448,9 +448,10 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
                 if i + 1 < len(tokens) and _actor_at(tokens, i + 1):
                     verb = False  # a word naming what kind before an actor ("a police car", "a school bus")
                 elif det and det != "the" and prev in _OPENERS and "VERB" not in pos and _does_next(tokens, i + 1):
-                    # "a unicorn runs out": someone the reader cannot place does something; refused, not
-                    # given to whoever was named last (the ego of "... and a unicorn runs out")
-                    clauses[-1][1].append(_Mention("unknown_actor", tok, tok, i, prev, end=i + 1))
+                    # "a unicorn runs out": someone the reader has no word for does something: a road
+                    # user of its own (its kind read from what it does), not whoever was named last
+                    clauses[-1][1].append(_Mention("actor", UNKNOWN_KIND, tok, i, prev, end=i + 1, det=det))
+                    ignored.pop()
                 if verb or (not pos and after_actor and tok.endswith("s")):  # (a word lemminflect lacks)
                     clauses[-1][1].append(_Mention("unknown_verb", tok, tok, i, prev, end=i + 1))
             i += 1
@@ -800,10 +801,7 @@ def read(text: str) -> Reading:
                     # bus": the bus is what it overtakes, not who)
                     target = clause_subject = subject
                 if target is None:
-                    if m.slot == "unknown_verb":  # something does something, and neither is known
-                        if not named and not r.actors:
-                            refuse.append(m.words)
-                    else:
+                    if m.slot != "unknown_verb":  # (an unknown verb of nobody: listed as not used)
                         pending.append(m)
                     prev = m
                     continue
@@ -857,17 +855,21 @@ def read(text: str) -> Reading:
         for x in joined:
             x.group = None
         joined = []
-    for p in pending:
-        if p.slot in ("behaviour", "turn"):
-            refuse.append(p.words)
-    refuse += [m.words for _, mentions in clauses for m in mentions if m.slot == "unknown_actor"]
+    unplaced = [p.words for p in pending if p.slot in ("behaviour", "turn")]  # (said of nobody)
     if both_with_ego and r.ego_speed_mps is None and actors and actors[0].speed_mps is not None:
         r.ego_speed_mps = actors[0].speed_mps  # (the speed said of both)
-    for a in actors:  # an actor that does nothing known but an unknown verb: that verb cannot be placed
-        if not a.behaviours and not a.stationary and a.unknown:
-            refuse.extend(a.unknown)
-    if refuse:
-        raise NotUnderstood(list(dict.fromkeys(refuse)), text)
+    ignored += unplaced
+    if len(actors) > MAX_ACTORS:
+        raise NotUnderstood([f"{len(actors)} road users (a scenario holds at most {MAX_ACTORS} besides the ego)"], text)
+    _refuse_if_nothing_to_place(text, actors, clauses, ignored)
+    for a in actors:
+        if a.kind == UNKNOWN_KIND:  # a road user the reader has no word for: its kind from what it does
+            names = {b[0] for b in a.behaviours}
+            a.kind = (
+                "pedestrian" if names & {"cross_in_front", "along_road"} and not names & VEHICLE_BEHAVIOURS else "car"
+            )
+        if not a.behaviours and not a.stationary and a.unknown:  # only a verb the reader has no word for: it goes on
+            a.behaviours.append(("keep_going", {}, None, "sequence"))
     for a in actors:  # "turns out of the junction": it comes from a side road
         for k, (_name, cfg, c, lk) in enumerate(a.behaviours):
             if cfg.pop("from_side_road", None):
@@ -948,19 +950,35 @@ def read(text: str) -> Reading:
     if r.map_kind is None and any(s.relation == "junction_opposite" for s in r.actors):
         r.map_kind = "crossroad"
     r.ignored = list(dict.fromkeys(ignored))
-    said = (r.map_kind, r.lanes, r.weather, r.time, r.density, r.intent, r.ego_route, r.ego_speed_mps)
-    mentioned_ego = any(m.slot == "actor" and m.value == "ego" for _, ms in clauses for m in ms)
-    if not r.actors and not mentioned_ego and all(v is None for v in said) and r.ignored:
-        raise NotUnderstood(r.ignored[:12], text)  # nothing of it could be read: say so, name the words
-    if len(r.actors) > MAX_ACTORS:
-        raise NotUnderstood(
-            [f"{len(r.actors)} road users (a scenario holds at most {MAX_ACTORS} besides the ego)"], text
-        )
     return r
+
+
+def _refuse_if_nothing_to_place(text: str, actors: list[_Actor], clauses, ignored: list[str]) -> None:
+    """Refuse only what cannot become a scenario: no road user at all (not even the ego) and nothing
+    else read, or road users of which nothing at all says what they do or where they are (the
+    refusal names what is missing and the words not used). Anything else is read as far as it goes."""
+    unused = list(dict.fromkeys(ignored))
+    mentions = [m for _, ms in clauses for m in ms]
+    if not actors:
+        said = any(m.slot not in ("punct", "link", "conj", "relative", "unknown_verb") for m in mentions)
+        if not said:
+            raise NotUnderstood(unused[:12], text, missing="road user")
+        return
+    verbs = any(m.slot in _VERBS for m in mentions)
+    described = any(
+        a.behaviours or a.stationary or a.unknown or a.speed_mps is not None or a.relation or a.said or a.wrong_way
+        or a.side or a.kerb or a.lane_side or a.distance_m is not None or a.arm
+        for a in actors
+    )  # fmt: skip
+    if not (verbs or described):
+        kinds = ", ".join(dict.fromkeys("road user" if a.kind == UNKNOWN_KIND else a.kind for a in actors))
+        raise NotUnderstood(unused[:12], text, missing="behaviour", of=kinds)
 
 
 #: Adversaries a scenario holds (the layers schema's limit).
 MAX_ACTORS = 8
+#: The kind of a road user named by a word the reader does not know, until what it does tells.
+UNKNOWN_KIND = "unknown"
 VULNERABLE = ("pedestrian", "bicycle", "e-scooter")
 VEHICLES = ("car", "van", "truck")
 RIDERS = ("bicycle", "e-scooter")

@@ -9,15 +9,23 @@ from dataclasses import dataclass, field
 
 
 class NotUnderstood(ValueError):
-    """The description has words the vocabulary cannot place."""
+    """The description cannot become a scenario: it names no road user, or nothing says what its road
+    users do. ``missing`` says which ("road user", "behaviour"); ``words`` are the words not used."""
 
-    def __init__(self, words: list[str], text: str) -> None:
+    def __init__(self, words: list[str], text: str, missing: str | None = None, of: str = "") -> None:
         self.words = words
+        self.missing = missing
         listed = ", ".join(f"'{w}'" for w in words)
-        super().__init__(
-            f"could not place {listed} (the words it knows: vei_scenario/language/vocabulary.py and lexicon.py; "
-            "behaviours: `vei behaviours`)"
-        )
+        unused = f"; words not used: {listed}" if words else ""
+        if missing == "road user":
+            message = (
+                f"no road user found (name one: the ego, a pedestrian, cyclist, e-scooter, car, van, truck ...){unused}"
+            )
+        elif missing == "behaviour":
+            message = f"no behaviour found: nothing says what the {of} does (`vei behaviours` lists them){unused}"
+        else:
+            message = f"could not place {listed}"
+        super().__init__(message)
 
 
 @dataclass
