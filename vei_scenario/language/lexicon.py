@@ -138,6 +138,9 @@ CAR_NOUNS = (
     "automobile",
     "jeep",
     "convertible",
+    "red-light runner",
+    "red light runner",
+    "light runner",
 )
 EGO_NOUNS = (
     "ego",

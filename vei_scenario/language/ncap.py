@@ -18,7 +18,7 @@ import re
 
 #: code (lowercase, longest first) → (the target's noun, the configuration in words, "{who}" the target).
 CODES: dict[str, tuple[str, str]] = {
-    "ccrs": ("car", "a stationary {who} stands ahead"),
+    "ccrs": ("car", "a stationary {who} ahead"),
     "ccrm": ("car", "a {who} ahead drives on"),
     "ccrb": ("car", "a {who} ahead brakes hard"),
     "ccftap": ("car", "the ego turns left; an oncoming {who} goes straight on"),
@@ -35,7 +35,7 @@ CODES: dict[str, tuple[str, str]] = {
     "cbna": ("cyclist", "a {who} crosses from the nearside"),
     "cbfa": ("cyclist", "a {who} crosses from the far side"),
     "cbla": ("cyclist", "a {who} rides along the road ahead"),
-    "cmrs": ("motorcycle", "a stationary {who} stands ahead"),
+    "cmrs": ("motorcycle", "a stationary {who} ahead"),
     "cmrb": ("motorcycle", "a {who} ahead brakes hard"),
     "cmftap": ("motorcycle", "the ego turns left; an oncoming {who} goes straight on"),
     "cmfta": ("motorcycle", "the ego turns left; an oncoming {who} goes straight on"),

@@ -615,7 +615,6 @@ def read(text: str) -> Reading:
     clauses, ego_follows = _ego_following(clauses)
     r = Reading()
     actors: list[_Actor] = []
-    refuse: list[str] = []
     subject: _Actor | str | None = None
     pending: list[_Mention] = []
     last_group: list[_Actor] | None = None  # ("Two scooters ride ahead; one of them brakes": that pair)
@@ -879,9 +878,18 @@ def read(text: str) -> Reading:
                     a.arm = True
         if a.kind == "pedestrian":  # ("comes out of a side street and crosses": one crossing)
             a.behaviours = [b for k, b in enumerate(a.behaviours) if k == 0 or b[0] != a.behaviours[k - 1][0]]
+    for a in actors:
+        names = [b[0] for b in a.behaviours]
+        if a.kind == "pedestrian" and "run_red_light" in names:  # a walker against red crosses the road
+            a.behaviours = [("cross_in_front", *b[1:]) if b[0] == "run_red_light" else b for b in a.behaviours]
+            a.behaviours = [b for k, b in enumerate(a.behaviours) if k == 0 or b[0] != a.behaviours[k - 1][0]]
+        elif a.kind in VEHICLES and names[:1] == ["cross_in_front"] and not (a.kerb or a.kerb_side):
+            # a vehicle crossing the ego's road goes through a junction across its path
+            a.behaviours[0] = ("run_red_light", *a.behaviours[0][1:])
     vehicles_giving_way = any(a.kind in VEHICLES and any(b[0] == "give_way" for b in a.behaviours) for a in actors)
+    at_junction = any(b[0] in JUNCTION_BEHAVIOURS for a in actors for b in a.behaviours)
     if (r.map_kind is None and r.ego_route in ("left", "right")) or (
-        r.map_kind in (None, "straight") and (any(a.arm for a in actors) or vehicles_giving_way)
+        r.map_kind in (None, "straight") and (any(a.arm for a in actors) or vehicles_giving_way or at_junction)
     ):
         r.map_kind = "crossroad"  # the ego turns, or someone comes out of or waits in a side road: a junction
     junction = r.map_kind in ("crossroad", "roundabout")
@@ -977,6 +985,9 @@ def _refuse_if_nothing_to_place(text: str, actors: list[_Actor], clauses, ignore
 
 #: Adversaries a scenario holds (the layers schema's limit).
 MAX_ACTORS = 8
+#: Behaviours that happen only at a junction: a description with one of them is set at a crossroad
+#: (unless it says a roundabout).
+JUNCTION_BEHAVIOURS = ("run_red_light", "turn_across", "turn_into")
 #: The kind of a road user named by a word the reader does not know, until what it does tells.
 UNKNOWN_KIND = "unknown"
 VULNERABLE = ("pedestrian", "bicycle", "e-scooter")
@@ -1159,7 +1170,7 @@ def _tidy(a: _Actor) -> list:
             out[-1] = (name, cfg, crit or b[2], lk)
             continue
         out.append(b)
-    if a.kind in VEHICLES and any(b[0] == "run_red_light" for b in out):
+    if a.kind != "pedestrian" and any(b[0] == "run_red_light" for b in out):
         out = [b for b in out if b[0] != "cross_in_front"]  # crossing against red is the red-light run
     if any(b[0] == "give_way" for b in out):  # "stops at the line and waits for us": giving way stops
         out = [
