@@ -33,6 +33,7 @@ from vei_scenario.language import vocabulary as V
 from vei_scenario.language.behaviours import BEHAVIOURS
 from vei_scenario.language.ncap import rewrite as ncap_rewrite
 from vei_scenario.language.normalise import normalise
+from vei_scenario.language.outcome import stated_outcome
 from vei_scenario.language.reading import ActorSpec, NotUnderstood, Reading
 
 _TOKEN = re.compile(r"\d+(?:\.\d+)?|km/h|m/s²|m/s2|m/s|[a-z][a-z\-]*(?:'[a-z]+)?|'s|[.;,!?:%]")
@@ -958,6 +959,7 @@ def read(text: str) -> Reading:
     if r.map_kind is None and any(s.relation == "junction_opposite" for s in r.actors):
         r.map_kind = "crossroad"
     r.ignored = list(dict.fromkeys(ignored))
+    r.intent = stated_outcome(" ".join(_tokens(text))) or r.intent  # (the whole text's stated outcome first)
     return r
 
 

@@ -1,0 +1,57 @@
+"""The outcome a description states: a collision ("was struck", "we want an impact", "there is the
+crash"), a near miss ("missed it by inches", "stopped 1 m short", "didn't hit him", "no contact was
+made") or a safe pass ("passes safely", "without problem", "uneventful"), read from the whole text
+after its words are normalised (contractions as "did not").
+
+A collision word counts only when nothing denies or hedges it just before ("must not hit", "almost
+hit", "to avoid a collision"): a denied collision after hard braking is the near miss people mean
+when they say it. A text that states none of these has no intent; nothing is assumed.
+"""
+
+from __future__ import annotations
+
+import re
+
+_COLLISION = re.compile(
+    r"\b(?:hit|hits|hitting|struck|strikes|striking|collid\w*|collision|crash|crashes|crashed|crashing|"
+    r"impact|rear-end\w*|rear end\w*|made contact|make contact|makes contact|ran into|runs into|run into|"
+    r"smash\w*|knock\w* (?:down|over)|thump|thrown onto|thrown over|ploughs? into|plowed into|slams? into|"
+    r"slammed into|ran over|runs over|run over)\b(?! (?:the |his |her |my |our )?brakes?\b| point| barrier| warning)"
+)
+#: Words that deny or hedge a collision word a few words after them.
+_DENY = re.compile(
+    r"\b(?:not|never|no|without|avoid|avoids|avoided|avoiding|almost|nearly|narrowly|barely|prevent\w*|"
+    r"would have|could have|nothing)\b(?:\s+\S+){0,3}\s*$"
+)
+_NEAR = re.compile(
+    r"\b(?:almost|nearly|narrowly|near miss|near-miss|close call|just in time|by a whisker|by inches|by an inch|"
+    r"hair's breadth|only just|just missed|just misses|barely missed|barely misses|"
+    r"missed (?:it|him|her|them|us|me|the \S+|his \S+|her \S+|their \S+) by|"
+    r"stopp?(?:ed|s|ing)? [^.;]{0,40}(?:short of|from (?:it|him|her|them|the|his|her))|"
+    r"(?:metres?|meters?|m|inches) short|made it across|no contact|emergency stop)\b"
+)
+_SAFE = re.compile(
+    r"\b(?:safely|safe distance|without (?:any )?(?:problems?|conflict|incident|drama|issue|issues)|"
+    r"no problems?|no drama|no conflict|no incident|uneventful|plenty of (?:room|space)|lots of (?:room|space)|"
+    r"enough (?:room|space)|comfortably|let us go|lets us go|let me go|lets me go|gets through safely)\b"
+)
+
+
+def stated_outcome(text: str) -> str | None:
+    """``collision``, ``near_miss``, ``safe`` or None, from normalised, lowercased ``text``."""
+    positive = denied = False
+    for m in _COLLISION.finditer(text):
+        start = max(text.rfind(".", 0, m.start()), text.rfind(";", 0, m.start()), 0)
+        before = text[start : m.start()]
+        if _DENY.search(before):
+            denied = True
+        else:
+            positive = True
+    if positive:
+        return "collision"
+    near = _NEAR.search(text) is not None
+    if _SAFE.search(text) and not near:
+        return "safe"
+    if near or denied:
+        return "near_miss"
+    return None
