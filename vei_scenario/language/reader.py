@@ -33,7 +33,7 @@ from vei_scenario.language import vocabulary as V
 from vei_scenario.language.behaviours import BEHAVIOURS
 from vei_scenario.language.ncap import rewrite as ncap_rewrite
 from vei_scenario.language.normalise import normalise
-from vei_scenario.language.outcome import stated_outcome
+from vei_scenario.language.stated import stated_lanes, stated_outcome
 from vei_scenario.language.reading import ActorSpec, NotUnderstood, Reading
 
 _TOKEN = re.compile(r"\d+(?:\.\d+)?|km/h|m/s²|m/s2|m/s|[a-z][a-z\-]*(?:'[a-z]+)?|'s|[.;,!?:%]")
@@ -959,7 +959,9 @@ def read(text: str) -> Reading:
     if r.map_kind is None and any(s.relation == "junction_opposite" for s in r.actors):
         r.map_kind = "crossroad"
     r.ignored = list(dict.fromkeys(ignored))
-    r.intent = stated_outcome(" ".join(_tokens(text))) or r.intent  # (the whole text's stated outcome first)
+    said = " ".join(_tokens(text))
+    r.intent = stated_outcome(said) or r.intent  # (the whole text's stated outcome first)
+    r.lanes = stated_lanes(said) or r.lanes
     return r
 
 

@@ -1,4 +1,7 @@
-"""The outcome a description states: a collision ("was struck", "we want an impact", "there is the
+"""What a description states as a whole, read from its normalised text (contractions as "did not",
+numbers before a unit as digits): the outcome it asks for, and the lanes of its road.
+
+The outcome: a collision ("was struck", "we want an impact", "there is the
 crash"), a near miss ("missed it by inches", "stopped 1 m short", "didn't hit him", "no contact was
 made") or a safe pass ("passes safely", "without problem", "uneventful"), read from the whole text
 after its words are normalised (contractions as "did not").
@@ -54,4 +57,32 @@ def stated_outcome(text: str) -> str | None:
         return "safe"
     if near or denied:
         return "near_miss"
+    return None
+
+
+_WORD_NUMBERS = {"one": 1, "two": 2, "three": 3, "four": 4, "1": 1, "2": 2, "3": 3, "4": 4}
+_N = r"(one|two|three|four|[1-4])"
+_EACH_WAY = re.compile(
+    _N + r"[ -]lanes? (?:each way|in each direction|per direction|each direction|in both directions|for each side|"
+    r"on each side|each side|per side|a side|either way|in either direction|for each direction|in every direction)"
+)
+_OF_N = re.compile(
+    r"\b(?:middle|inside|outside|left|right|nearside|offside|centre|center|fast|slow) lane of " + _N + r"\b"
+)
+_ONE_WAY = re.compile(r"\bone[ -]way (?:street|road)[^.;]{0,25}?\b" + _N + r" lanes\b")
+#: A road "two-lane" with traffic both ways: one lane each way (unless it is a motorway or dual carriageway).
+_TWO_LANE_ROAD = re.compile(r"\b(?:two|2)[ -]lane (?!motorway|highway|freeway|expressway|dual)")
+_DIVIDED = re.compile(r"\b(?:motorway|highway|freeway|expressway|autobahn|dual carriageway|one[ -]way)\b")
+
+
+def stated_lanes(text: str) -> int | None:
+    """Lanes per direction a normalised, lowercased description states, where the reader's words do
+    not settle it: "three lanes each way", "the middle lane of three", "a one-way street with two
+    lanes", and "a two-lane road" (one lane each way on a road that is not a motorway)."""
+    for pattern in (_EACH_WAY, _OF_N, _ONE_WAY):
+        m = pattern.search(text)
+        if m is not None:
+            return _WORD_NUMBERS[m.group(1)]
+    if _TWO_LANE_ROAD.search(text) and not _DIVIDED.search(text):
+        return 1
     return None
