@@ -33,8 +33,8 @@ from vei_scenario.language import vocabulary as V
 from vei_scenario.language.behaviours import BEHAVIOURS
 from vei_scenario.language.ncap import rewrite as ncap_rewrite
 from vei_scenario.language.normalise import normalise
-from vei_scenario.language.stated import stated_lanes, stated_outcome
 from vei_scenario.language.reading import ActorSpec, NotUnderstood, Reading
+from vei_scenario.language.stated import stated_lanes, stated_outcome
 
 _TOKEN = re.compile(r"\d+(?:\.\d+)?|km/h|m/s²|m/s2|m/s|[a-z][a-z\-]*(?:'[a-z]+)?|'s|[.;,!?:%]")
 
