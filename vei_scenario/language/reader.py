@@ -199,6 +199,7 @@ class _Actor:
     accel_mps2: float | None = None  # how hard it changes speed ("brakes at 6 m/s²")
     toward: str | None = None  # the side it moves to ("merges right", "swerves left into our lane")
     came_from: bool = False  # a kerb or side said as where it comes from ("walks from the far side")
+    word: str = ""  # the words it was first named by
 
 
 #: Euro NCAP's names of its test scenarios ("Car-to-Car Rear stationary", "Car-to-Pedestrian Nearside
@@ -375,6 +376,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
     tokens = _tokens(text)
     clauses: list[tuple[str, list[_Mention]]] = [("sequence", [])]
     ignored: list[str] = []
+    read_as: list[tuple[str, str]] = []
     i = 0
     while i < len(tokens):
         tok = tokens[i]
@@ -430,6 +432,15 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
             skipped = _best(tokens[: i + 1] + tokens[i + 2 :], i)
             if skipped is not None and len(skipped) > 1:
                 key, adverb = skipped, tokens[i + 1]
+        if key is None and tok not in FUNCTION_WORDS and i + 1 < len(tokens) and _verb_only(tok):
+            # a verb the lexicon lacks, with where it goes ("swung into my lane", "bolted across the road"):
+            # read as the plain motion verb with the same words, when that is a behaviour
+            for plain in PLAIN_MOTION_VERBS:
+                swapped = _best(tokens[:i] + [plain] + tokens[i + 1 :], i)
+                if swapped is not None and len(swapped) > 1 and TABLE[swapped][0] == "behaviour":
+                    key = swapped
+                    read_as.append((" ".join(tokens[i : i + len(swapped)]), " ".join(swapped)))
+                    break
         if key is None and tok in L.CONJUNCTIONS:
             clauses[-1][1].append(_Mention("conj", tok, tok, i, prev, end=i + 1))
             i += 1
@@ -492,7 +503,17 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
             clauses[-1][1].append(_Mention("toward", side, side, toward_at, tokens[toward_at - 1], end=toward_at + 1))
             used = max(used, toward_at + 1 - i)
         i += used
-    return [c for c in clauses if any(m.slot not in ("punct", "link") for m in c[1])], ignored
+    return [c for c in clauses if any(m.slot not in ("punct", "link") for m in c[1])], ignored, read_as
+
+
+#: Plain verbs of motion an unknown verb is read as, with the words after it ("swung into": "move into").
+PLAIN_MOTION_VERBS = ("move", "go", "walk")
+
+
+def _verb_only(word: str) -> bool:
+    """Whether ``word`` is a verb (by lemminflect) and not also a noun or adjective."""
+    pos = _pos(word)
+    return "VERB" in pos and not pos & {"NOUN", "ADJ", "PROPN"}
 
 
 #: Verbs whose very wording is critical ("darts out", "tailgates"), unless the clause says otherwise.
@@ -611,7 +632,7 @@ def _resolve_relation(a: _Actor, map_kind: str | None) -> str | None:
 def read(text: str) -> Reading:
     """Parse ``text`` into a :class:`~vei_scenario.language.reading.Reading` (with ``ignored``
     words); raise :class:`~vei_scenario.language.reading.NotUnderstood` naming what cannot be placed."""
-    clauses, ignored = scan(text)
+    clauses, ignored, read_as = scan(text)
     clauses = _drop_label(clauses)
     clauses, ego_follows = _ego_following(clauses)
     r = Reading()
@@ -706,6 +727,13 @@ def read(text: str) -> Reading:
                     if same and (m.det in ("the", "this", "that", "its", "our", "my") or (not m.det and _bare(m))):
                         who = same[-1]  # ("Target: cyclist, 30 m ahead. Cyclist turns left.": the same one)
                     elif (
+                        role == "prep"
+                        and m.det == "the"
+                        and m.words in ("car", "vehicle")
+                        and not any(a.kind in VEHICLES for a in actors)
+                    ):  # "across in front of the car", no car named before: the one the story is told from
+                        who = "ego"
+                    elif (
                         m.value in ("bicycle", "e-scooter")
                         and m.prev in ("on", "riding")
                         and named
@@ -719,7 +747,7 @@ def read(text: str) -> Reading:
                     else:
                         lead = m.prev in _LEADING or m.words.split()[0] in _LEADING  # ("the lead car": followed)
                         made = [
-                            _Actor(str(m.value), wrong_way=m.words in L.WRONG_WAY_NOUNS, followed=lead)
+                            _Actor(str(m.value), wrong_way=m.words in L.WRONG_WAY_NOUNS, followed=lead, word=m.words)
                             for _ in range(count)
                         ]
                         for a in made:
@@ -862,6 +890,10 @@ def read(text: str) -> Reading:
     if len(actors) > MAX_ACTORS:
         raise NotUnderstood([f"{len(actors)} road users (a scenario holds at most {MAX_ACTORS} besides the ego)"], text)
     _refuse_if_nothing_to_place(text, actors, clauses, ignored)
+    if any(a.behaviours for a in actors):  # people and vehicles only mentioned (passengers, a car in a
+        idle = [a for a in actors if _idle(a)]  # story's aside) are no road users of the scenario
+        actors = [a for a in actors if not _idle(a)]
+        ignored += [a.word or a.kind for a in idle]
     for a in actors:
         if a.kind == UNKNOWN_KIND:  # a road user the reader has no word for: its kind from what it does
             names = {b[0] for b in a.behaviours}
@@ -884,9 +916,13 @@ def read(text: str) -> Reading:
         if a.kind == "pedestrian" and "run_red_light" in names:  # a walker against red crosses the road
             a.behaviours = [("cross_in_front", *b[1:]) if b[0] == "run_red_light" else b for b in a.behaviours]
             a.behaviours = [b for k, b in enumerate(a.behaviours) if k == 0 or b[0] != a.behaviours[k - 1][0]]
-        elif a.kind in VEHICLES and names[:1] == ["cross_in_front"] and not (a.kerb or a.kerb_side):
+        elif a.kind in VEHICLES and names[:1] == ["cross_in_front"] and not (a.kerb or a.kerb_side or a.lane_side):
             # a vehicle crossing the ego's road goes through a junction across its path
             a.behaviours[0] = ("run_red_light", *a.behaviours[0][1:])
+        elif a.kind in VEHICLES and "cross_in_front" in names and a.lane_side:
+            # a vehicle moving across from a lane: into the ego's (what it does next, if said)
+            rest = [b for b in a.behaviours if b[0] != "cross_in_front"]
+            a.behaviours = rest or [("cut_in", *a.behaviours[0][1:])]
     vehicles_giving_way = any(a.kind in VEHICLES and any(b[0] == "give_way" for b in a.behaviours) for a in actors)
     at_junction = any(b[0] in JUNCTION_BEHAVIOURS for a in actors for b in a.behaviours)
     if (r.map_kind is None and r.ego_route in ("left", "right")) or (
@@ -959,10 +995,20 @@ def read(text: str) -> Reading:
     if r.map_kind is None and any(s.relation == "junction_opposite" for s in r.actors):
         r.map_kind = "crossroad"
     r.ignored = list(dict.fromkeys(ignored))
+    r.read_as = read_as
     said = " ".join(_tokens(text))
     r.intent = stated_outcome(said) or r.intent  # (the whole text's stated outcome first)
     r.lanes = stated_lanes(said) or r.lanes
     return r
+
+
+def _idle(a: _Actor) -> bool:
+    """Whether nothing is said of ``a`` but its name (and verbs the reader has no word for)."""
+    return not (
+        a.behaviours or a.stationary or a.speed_mps is not None or a.distance_m is not None or a.relation
+        or a.said or a.wrong_way or a.side or a.kerb or a.lane_side or a.kerb_side or a.arm or a.followed
+        or a.parked or a.object_of is not None
+    )  # fmt: skip
 
 
 def _refuse_if_nothing_to_place(text: str, actors: list[_Actor], clauses, ignored: list[str]) -> None:

@@ -57,6 +57,8 @@ class Reading:
     ego_relation: str | None = None
     actors: list[ActorSpec] = field(default_factory=list)
     ignored: list[str] = field(default_factory=list)  # words read past: nothing in the layers holds them
+    #: Phrases whose verb the reader has no word for, read as a plain motion verb: (said, read as).
+    read_as: list[tuple[str, str]] = field(default_factory=list)
 
 
 def _kph(mps: float | None) -> str | None:
@@ -92,6 +94,7 @@ def reading_document(reading: Reading) -> dict:
         "actors": actors,
         "settings": {k: v for k, v in settings.items() if v is not None},
         "not_used": list(reading.ignored),
+        "read_as": [{"said": said, "read_as": as_} for said, as_ in reading.read_as],
     }
 
 
@@ -120,6 +123,8 @@ def reading_lines(reading: Reading) -> list[str]:
     if "ego_speed_mps" in s:
         shown.insert(0, f"ego speed {_kph(s['ego_speed_mps'])}")
     lines.append("read: settings: " + ("; ".join(shown) if shown else "none stated (drawn per scenario)"))
+    if doc["read_as"]:
+        lines.append("read: " + ", ".join(f"'{x['said']}' as '{x['read_as']}'" for x in doc["read_as"]))
     if doc["not_used"]:
         lines.append("read: not used: " + ", ".join(f"'{w}'" for w in doc["not_used"]))
     return lines
