@@ -866,6 +866,7 @@ CONJUNCTIONS = {
     "if",
     "since",
     "whilst",
+    "where",
 }
 RELATIVE = {"which", "who", "that", "whose"}
 NEW_DETERMINERS = {"a", "an", "another", "some", "one"}

@@ -432,7 +432,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
             skipped = _best(tokens[: i + 1] + tokens[i + 2 :], i)
             if skipped is not None and len(skipped) > 1:
                 key, adverb = skipped, tokens[i + 1]
-        if key is None and tok not in FUNCTION_WORDS and i + 1 < len(tokens) and _verb_only(tok):
+        if key is None and tok not in FUNCTION_WORDS and i + 1 < len(tokens) and _verb_before(tok, tokens[i + 1]):
             # a verb the lexicon lacks, with where it goes ("swung into my lane", "bolted across the road"):
             # read as the plain motion verb with the same words, when that is a behaviour
             for plain in PLAIN_MOTION_VERBS:
@@ -510,10 +510,19 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
 PLAIN_MOTION_VERBS = ("move", "go", "walk")
 
 
-def _verb_only(word: str) -> bool:
-    """Whether ``word`` is a verb (by lemminflect) and not also a noun or adjective."""
+#: Words of where a motion goes, after its verb ("into", "across", "out" ...).
+_MOTION_PARTICLES = frozenset(
+    "into to across out over in onto off through past away back towards toward round around from between".split()
+)
+
+
+def _verb_before(word: str, after: str) -> bool:
+    """Whether ``word`` reads as a verb of motion here: a verb (by lemminflect) that is not also a noun
+    or adjective, or one that is but is followed by where it goes ("changing to our lane")."""
     pos = _pos(word)
-    return "VERB" in pos and not pos & {"NOUN", "ADJ", "PROPN"}
+    if "VERB" not in pos:
+        return False
+    return not pos & {"NOUN", "ADJ", "PROPN"} or (after in _MOTION_PARTICLES and word.endswith(("ing", "ed", "s")))
 
 
 #: Verbs whose very wording is critical ("darts out", "tailgates"), unless the clause says otherwise.
