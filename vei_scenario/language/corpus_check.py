@@ -269,5 +269,10 @@ def play_case(case: dict, make_layers, workdir: Path, seed: int = 0) -> list[str
         return [f"could not be written: {exc}"]
     (workdir / "scenario.xosc").write_bytes(written.xosc)
     (workdir / "scenario.xodr").write_bytes(written.xodr)
-    result = run_scenario(workdir / "scenario.xosc", None, round(1.0 / float(layers["rate_hz"]), 6))
+    from vei_scenario.errors import VeiInputError
+
+    try:
+        result = run_scenario(workdir / "scenario.xosc", None, round(1.0 / float(layers["rate_hz"]), 6))
+    except VeiInputError as exc:  # the player refuses what was written: that is what it did not do
+        return [f"could not be played: {exc.reason}"]
     return played_problems(result, layers)

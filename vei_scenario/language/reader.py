@@ -34,7 +34,7 @@ from vei_scenario.language.behaviours import BEHAVIOURS
 from vei_scenario.language.ncap import rewrite as ncap_rewrite
 from vei_scenario.language.normalise import normalise
 from vei_scenario.language.reading import ActorSpec, NotUnderstood, Reading
-from vei_scenario.language.stated import stated_lanes, stated_outcome
+from vei_scenario.language.stated import stated_clock, stated_lanes, stated_outcome
 
 _TOKEN = re.compile(r"\d+(?:\.\d+)?|km/h|m/s²|m/s2|m/s|[a-z][a-z\-]*(?:'[a-z]+)?|'s|[.;,!?:%]")
 
@@ -469,6 +469,17 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
             i += 1
             continue
         slot, value = TABLE[key]
+        before = tokens[i - 1] if i else ""
+        attributive = before in _DETERMINERS or (before.isalpha() and before not in FUNCTION_WORDS)
+        if slot in ("weather", "time", "density", "map") and attributive and _modifies_actor(tokens, i + len(key)):
+            # "a parked ice cream van", "a night bus": a word of the setting naming what kind of road user
+            j = next(k for k in range(i + len(key), len(tokens)) if _actor_at(tokens, k))
+            ignored.extend(tokens[i:j])
+            last = clauses[-1][1][-1] if clauses[-1][1] else None
+            if last is not None and last.end == i:  # ("parked" stands right before the road user it says)
+                last.end = j
+            i = j
+            continue
         if slot == "actor" and i + len(key) < len(tokens) and tokens[i + len(key)] in _PARTS:
             i += len(key) + 1  # "50 % of the vehicle width", "a car door": a part of one, not a road user
             continue
@@ -504,6 +515,17 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
             used = max(used, toward_at + 1 - i)
         i += used
     return [c for c in clauses if any(m.slot not in ("punct", "link") for m in c[1])], ignored, read_as
+
+
+def _modifies_actor(tokens: list[str], j: int) -> bool:
+    """Whether a road user's name follows at ``j``, past at most two words the reader has no entry
+    for ("ice [cream] van"): the words before it then say what kind it is."""
+    for k in range(j, min(j + 3, len(tokens))):
+        if _actor_at(tokens, k):
+            return True
+        if _best(tokens, k) is not None or tokens[k] in FUNCTION_WORDS or not tokens[k].isalpha():
+            return False
+    return False
 
 
 #: Plain verbs of motion an unknown verb is read as, with the words after it ("swung into": "move into").
@@ -925,9 +947,9 @@ def read(text: str) -> Reading:
         if a.kind == "pedestrian" and "run_red_light" in names:  # a walker against red crosses the road
             a.behaviours = [("cross_in_front", *b[1:]) if b[0] == "run_red_light" else b for b in a.behaviours]
             a.behaviours = [b for k, b in enumerate(a.behaviours) if k == 0 or b[0] != a.behaviours[k - 1][0]]
-        elif a.kind in VEHICLES and names[:1] == ["cross_in_front"] and not (a.kerb or a.kerb_side or a.lane_side):
+        elif a.kind in VEHICLES and "cross_in_front" in names and not (a.kerb or a.kerb_side or a.lane_side):
             # a vehicle crossing the ego's road goes through a junction across its path
-            a.behaviours[0] = ("run_red_light", *a.behaviours[0][1:])
+            a.behaviours = [("run_red_light", *b[1:]) if b[0] == "cross_in_front" else b for b in a.behaviours]
         elif a.kind in VEHICLES and "cross_in_front" in names and a.lane_side:
             # a vehicle moving across from a lane: into the ego's (what it does next, if said)
             rest = [b for b in a.behaviours if b[0] != "cross_in_front"]
@@ -966,7 +988,7 @@ def read(text: str) -> Reading:
         if classes:  # the tone of what it does carries over to its unqualified behaviours
             behaviours = [(n, c, k or classes[0], lk) for n, c, k, lk in behaviours]
         if not behaviours and a.stationary:
-            behaviours = [("keep_going", {}, None, "sequence")]
+            behaviours = [("stop", {}, None, "sequence")]  # (standing: stopped, and stays so)
         if a.accel_mps2 is not None:  # "at 6 m/s²": the deceleration or rate of what it does (within its range)
             behaviours = [(*_with_rate(n, c, a.accel_mps2), k, lk) for n, c, k, lk in behaviours]
         if a.speed_to_mps is not None and a.speed_mps is not None:  # "slows from 80 to 30": by 50 km/h
@@ -1008,6 +1030,7 @@ def read(text: str) -> Reading:
     said = " ".join(_tokens(text))
     r.intent = stated_outcome(said) or r.intent  # (the whole text's stated outcome first)
     r.lanes = stated_lanes(said) or r.lanes
+    r.time = stated_clock(said) or r.time
     return r
 
 
@@ -1046,7 +1069,7 @@ def _refuse_if_nothing_to_place(text: str, actors: list[_Actor], clauses, ignore
 MAX_ACTORS = 8
 #: Behaviours that happen only at a junction: a description with one of them is set at a crossroad
 #: (unless it says a roundabout).
-JUNCTION_BEHAVIOURS = ("run_red_light", "turn_across", "turn_into")
+JUNCTION_BEHAVIOURS = ("run_red_light", "turn_across", "turn_into", "forced_turn")
 #: The kind of a road user named by a word the reader does not know, until what it does tells.
 UNKNOWN_KIND = "unknown"
 VULNERABLE = ("pedestrian", "bicycle", "e-scooter")
@@ -1360,11 +1383,11 @@ def _global(r, m) -> None:
     if m.slot == "map":
         if not (r.map_kind and m.value == "straight"):
             r.map_kind = m.value
-    elif m.slot == "weather":
-        if not (r.weather == "heavy_rain" and m.value == "rain"):
+    elif m.slot == "weather":  # the first said, unless a later word says it more heavily
+        if r.weather is None or (m.value == "heavy_rain" and r.weather == "rain"):
             r.weather = m.value
-    elif m.slot == "time":
-        r.time = m.value
+    elif m.slot == "time":  # (the first said: "at dusk ... in dark clothing" is at dusk)
+        r.time = r.time or m.value
     elif m.slot == "density":
         r.density = m.value
     elif m.slot == "lanes":

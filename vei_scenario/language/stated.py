@@ -86,3 +86,13 @@ def stated_lanes(text: str) -> int | None:
     if _TWO_LANE_ROAD.search(text) and not _DIVIDED.search(text):
         return 1
     return None
+
+
+_CLOCK = re.compile(r"\b([01]?\d|2[0-3]) : ([0-5]\d)\b(?! (?:km/h|mph|m/s|m)\b)")
+
+
+def stated_clock(text: str) -> str | None:
+    """A time of day written as a clock ("at approximately 22:40 hrs": "22:40"), from the reader's
+    tokens joined by spaces ("22 : 40")."""
+    m = _CLOCK.search(text)
+    return None if m is None else f"{int(m.group(1)):02d}:{m.group(2)}"
