@@ -168,7 +168,7 @@ def _ego_frame(result, name: str):
 def played_problems(result, layers: dict) -> list[str]:
     """Did each adversary do what its layers say, in the played run? Checked from the trajectories:
     a stop ends standing, an overtake ends ahead of the ego, a cut-in ends ahead in the ego's lane,
-    a crossing passes the ego's path, a red-light run or a turn across comes within 3 m of the
+    a crossing passes the ego's path (or is hit in it), a red-light run or a turn across comes within 3 m of the
     ego's path, a road user giving way stands and is not hit, one going along the road keeps to
     the ego's lane in its direction, a wrong-way driver is head-on on the ego's path, an oncoming
     one faces the ego when they meet; and no background vehicle collides."""
@@ -196,7 +196,9 @@ def played_problems(result, layers: dict) -> list[str]:
             out.append(f"{name}: cut_in but never ahead in the ego's lane")
         behind_ok = "give_way" in names  # after giving way it crosses behind the ego
         where = lat if behind_ok else lat[lon > -2.0]
-        if "cross_in_front" in names and not (np.sign(where) != np.sign(lat[0])).any():
+        hit_ego = any({name, result.ego} == {a, b} for _, a, b in result.collisions)
+        # (one the ego hits has come into its path: that is the crossing, cut short)
+        if "cross_in_front" in names and not hit_ego and not (np.sign(where) != np.sign(lat[0])).any():
             out.append(f"{name}: cross_in_front but never across the ego's path")
         to_path = (
             _nearest_on_path(tr, ego)

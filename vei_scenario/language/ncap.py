@@ -54,10 +54,10 @@ def rewrite(text: str, actor_noun) -> str:
     if m is None:
         return text
     noun, configuration = CODES[m.group(1)]
-    named = re.search(r"\b([a-z][a-z-]*)\s+target\b", text)
+    named = re.search(r"\b(?:(?:an?|the)\s+)?([a-z][a-z-]*)\s+target\b", text)
     if named and actor_noun(named.group(1)):
-        noun = named.group(1)
-        text = text[: named.start()] + text[named.end() :]  # ("with an e-scooter target": said once, below)
+        noun = named.group(1)  # ("with an e-scooter target", "adult target walking ...": that one)
+        text = text[: named.start()] + f"the {noun}" + text[named.end() :]
     said = configuration.format(who=noun)
     rest = text[m.end() :]
     label = re.match(r"\s*:", rest) is not None
@@ -75,7 +75,7 @@ def rewrite(text: str, actor_noun) -> str:
         rest = rest[ego.end() :]
     rest = _TARGETS.sub(f"the {noun}", rest)
     rest = re.sub(r"\bthe vehicle\b", "the ego", rest)  # (the vehicle under test)
-    text = text[: m.start()] + said + ". " + rest.lstrip(" ,:;")
+    text = text[: m.start()] + said + ", " + rest.lstrip(" ,:;")
     return _speed_after(noun, text)
 
 

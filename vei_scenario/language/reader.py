@@ -878,6 +878,8 @@ def read(text: str) -> Reading:
                 pending.append(replace(m, value=_SEEN_FROM_OBJECT[m.value]))
             else:
                 who = _nearest(named, m)
+                if who == "ego" and m.slot == "distance" and actors:
+                    who = actors[-1]  # a gap said of the ego is the gap to the road user named last
                 if who is None and m.slot == "speed" and isinstance(clause_subject, _Actor):
                     who = clause_subject  # "..., and then overtakes it at 25 km/h": the one who overtakes
                 if who is None and m.slot in ("returns", "wrong_way") and isinstance(subject, _Actor):
@@ -907,6 +909,10 @@ def read(text: str) -> Reading:
             for who, role in named:
                 if isinstance(who, _Actor) and role in ("subject", "participle") and who.crit is None:
                     who.crit = crit_here
+        if not named and actors and any(p.slot == "distance" for p in pending):
+            for p in [p for p in pending if p.slot == "distance"]:  # ("..., 40 m gap": to the one named last)
+                _apply(p, actors[-1], r, link, added)
+            pending = [p for p in pending if p.slot != "distance"]
         if not named and pending and any(p.slot == "speed" for p in pending) and r.ego_speed_mps is None:
             # "Going straight over the junction at 30 km/h while ...": a clause with nobody named is the ego's
             r.ego_speed_mps = next(p.value for p in pending if p.slot == "speed")

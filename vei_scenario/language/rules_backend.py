@@ -148,6 +148,8 @@ def sample_layers(reading: Reading, text: str, seed: int) -> dict:
             room = _crossing_lon_m(spec.kind, relation, first_cfg, ego, lanes) + CROSSING_CLEAR_OF_JUNCTION_M
             if room > float(ego["distance_m"]):
                 ego["distance_m"] = round(min(room, ARM_LENGTH_M - 20.0), 3)
+        if crossing and spec.distance_m is not None:
+            _cross_at_distance(spec.kind, relation, first_cfg, ego, lanes, spec.distance_m)
         spawn, speed = place_adversary(
             spec.kind, relation, first.NAME, first_cfg, ego, lanes, given_speed, spec.distance_m
         )
@@ -432,6 +434,24 @@ CROSSING_CLEAR_OF_JUNCTION_M = 5.0
 
 def _crossing_speed(kind: str, cfg: dict) -> float:
     return max(float(cfg.get("crossing_speed_mps", 1.5 if kind == "pedestrian" else 4.0)), 0.3)
+
+
+def _cross_at_distance(kind: str, relation: str, cfg: dict, ego: dict, lanes: int, distance_m: float) -> None:
+    """A crossing whose distance from the ego is stated ("steps out 15 m ahead"): its timing
+    (``arrival_gap_s``) is the one that sets it off when the ego is that far away, and the distance is
+    kept in its configuration; when that timing lies outside the behaviour's range it is left as drawn."""
+    from vei_scenario.language.behaviours.cross_in_front import PARAMETERS, START_RAMP_S
+
+    k = int(ego["lane"])
+    cross = (k - 0.5) * 3.5 + 1.0 if relation == "roadside_right" else (2 * lanes - k + 0.5) * 3.5 + 1.0
+    speed = _crossing_speed(kind, cfg)
+    accel = TYPES[kind][4]
+    ramp = max(START_RAMP_S, speed / accel if accel > 0 else 0.0)
+    gap = distance_m / max(float(ego["speed_mps"]), 0.5) - (cross / speed + ramp / 2)
+    p = PARAMETERS["arrival_gap_s"]
+    if p.low <= gap <= p.high:
+        cfg["arrival_gap_s"] = round(gap, 3)
+        cfg["distance_m"] = round(distance_m, 3)
 
 
 def _crossing_lon_m(kind: str, relation: str, cfg: dict, ego: dict, lanes: int) -> float:
