@@ -80,5 +80,7 @@ def rewrite(text: str, actor_noun) -> str:
 
 
 def _speed_after(noun: str, text: str) -> str:
-    """ "VUT 40 km/h", "the pedestrian 5 km/h": a road user and its speed, said with "at"."""
-    return re.sub(rf"\b(vut|ego|{re.escape(noun)})\s+(?=\d+(?:\.\d+)?\s*(?:km/h|mph|m/s))", r"\1 at ", text)
+    """ "VUT 40 km/h", "the pedestrian 5 km/h": a road user and its speed, said with "at"; a road user
+    named right after another's speed starts a new item of the list ("VUT 45 km/h EBTa 15 km/h")."""
+    text = re.sub(rf"\b(vut|ego|{re.escape(noun)})\s+(?=\d+(?:\.\d+)?\s*(?:km/h|mph|m/s))", r"\1 at ", text)
+    return re.sub(rf"(km/h|mph|m/s)\s+(?=(?:the\s+)?(?:vut|ego|{re.escape(noun)})\b)", r"\1, ", text)

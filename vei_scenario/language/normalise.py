@@ -132,6 +132,14 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     text = re.sub(
         r"\b(we|i) (?:have|are|am|were|was)\s+(?=(?:about )?\d+(?:\.\d+)? (?:km/h|mph|m/s)\b)", r"\1 drive at ", text
     )
+    # English without articles ("from opposite direction", "on right side"), and "turning to left"
+    text = re.sub(
+        r"\b(from|on|at|to|in|into) (?=(?:opposite|left|right|front|same|other|far|near|left-hand|right-hand) "
+        r"(?:direction|side|lane|kerb|curb|sidewalk|pavement|footpath)\b)",
+        r"\1 the ",
+        text,
+    )
+    text = re.sub(r"\b(turn|turns|turning|turned) to (?:the )?(left|right)\b", r"\1 \2", text)
     for pattern in _EGO_ALIASES:
         text = pattern.sub("the ego", text)
     text = _other_parties(text, known_noun)

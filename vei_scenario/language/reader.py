@@ -34,7 +34,7 @@ from vei_scenario.language.behaviours import BEHAVIOURS
 from vei_scenario.language.ncap import rewrite as ncap_rewrite
 from vei_scenario.language.normalise import normalise
 from vei_scenario.language.reading import ActorSpec, NotUnderstood, Reading
-from vei_scenario.language.stated import stated_clock, stated_lanes, stated_outcome
+from vei_scenario.language.stated import stated_clock, stated_density, stated_lanes, stated_outcome
 
 _TOKEN = re.compile(r"\d+(?:\.\d+)?|km/h|m/s²|m/s2|m/s|[a-z][a-z\-]*(?:'[a-z]+)?|'s|[.;,!?:%]")
 
@@ -1037,6 +1037,7 @@ def read(text: str) -> Reading:
     r.intent = stated_outcome(said) or r.intent  # (the whole text's stated outcome first)
     r.lanes = stated_lanes(said) or r.lanes
     r.time = stated_clock(said) or r.time
+    r.density = stated_density(said) or r.density
     return r
 
 
@@ -1394,8 +1395,8 @@ def _global(r, m) -> None:
             r.weather = m.value
     elif m.slot == "time":  # (the first said: "at dusk ... in dark clothing" is at dusk)
         r.time = r.time or m.value
-    elif m.slot == "density":
-        r.density = m.value
+    elif m.slot == "density":  # (the first said: a later "stop-and-go" in an aside does not override)
+        r.density = r.density or m.value
     elif m.slot == "lanes":
         r.lanes = int(m.value)
     elif m.slot == "intent":

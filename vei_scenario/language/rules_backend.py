@@ -436,10 +436,16 @@ def _crossing_speed(kind: str, cfg: dict) -> float:
     return max(float(cfg.get("crossing_speed_mps", 1.5 if kind == "pedestrian" else 4.0)), 0.3)
 
 
+#: The earliest a crosser may reach the ego's lane before the ego and still cross in front of it (s).
+EARLIEST_IN_FRONT_S = -0.2
+
+
 def _cross_at_distance(kind: str, relation: str, cfg: dict, ego: dict, lanes: int, distance_m: float) -> None:
     """A crossing whose distance from the ego is stated ("steps out 15 m ahead"): its timing
     (``arrival_gap_s``) is the one that sets it off when the ego is that far away, and the distance is
-    kept in its configuration; when that timing lies outside the behaviour's range it is left as drawn."""
+    kept in its configuration. Closer than a crossing can be and still come in front of the ego, it
+    crosses as close as it can (the dangerous profile's earliest timing); beyond the behaviour's range
+    the timing is left as drawn."""
     from vei_scenario.language.behaviours.cross_in_front import PARAMETERS, START_RAMP_S
 
     k = int(ego["lane"])
@@ -448,10 +454,11 @@ def _cross_at_distance(kind: str, relation: str, cfg: dict, ego: dict, lanes: in
     accel = TYPES[kind][4]
     ramp = max(START_RAMP_S, speed / accel if accel > 0 else 0.0)
     gap = distance_m / max(float(ego["speed_mps"]), 0.5) - (cross / speed + ramp / 2)
-    p = PARAMETERS["arrival_gap_s"]
-    if p.low <= gap <= p.high:
+    if EARLIEST_IN_FRONT_S <= gap <= PARAMETERS["arrival_gap_s"].high:
         cfg["arrival_gap_s"] = round(gap, 3)
         cfg["distance_m"] = round(distance_m, 3)
+    elif gap < EARLIEST_IN_FRONT_S:  # too close to get in front of the ego first: as close as it can
+        cfg["arrival_gap_s"] = EARLIEST_IN_FRONT_S
 
 
 def _crossing_lon_m(kind: str, relation: str, cfg: dict, ego: dict, lanes: int) -> float:

@@ -96,3 +96,17 @@ def stated_clock(text: str) -> str | None:
     tokens joined by spaces ("22 : 40")."""
     m = _CLOCK.search(text)
     return None if m is None else f"{int(m.group(1)):02d}:{m.group(2)}"
+
+
+_DENSITY = re.compile(
+    r"\b(?:traffic|motorway|road|roads|street|streets|highway) (?:is|was|were|being) (?:very |quite |fairly |pretty |"
+    r"really )?(light|moderate|heavy|busy|quiet|dense|sparse|empty)\b"
+)
+_DENSITY_WORDS = {"light": "light", "sparse": "light", "moderate": "moderate", "heavy": "heavy", "busy": "heavy",
+                  "dense": "heavy", "quiet": "none", "empty": "none"}  # fmt: skip
+
+
+def stated_density(text: str) -> str | None:
+    """Background traffic said of the road ("the motorway was heavy", "traffic was moderate")."""
+    m = _DENSITY.search(text)
+    return None if m is None else _DENSITY_WORDS[m.group(1)]
