@@ -628,7 +628,8 @@ STATIONARY = (
     "waiting",
 )
 COUNTS = {"two": 2, "three": 3, "both": 2, "a pair of": 2, "2": 2, "3": 3}
-MEMBERS = ("one", "the other", "another one", "the first", "the second", "the other one", "the latter", "the former")
+MEMBERS = ("one", "the other", "another one", "the first", "the second", "the other one", "the latter", "the former",
+           "first one", "second one", "the first one", "the second one")  # fmt: skip
 #: More criticality wording.
 CRITICALITY = {
     "dangerous": (

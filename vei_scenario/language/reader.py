@@ -437,7 +437,12 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
             # read as the plain motion verb with the same words, when that is a behaviour
             for plain in PLAIN_MOTION_VERBS:
                 swapped = _best(tokens[:i] + [plain] + tokens[i + 1 :], i)
-                if swapped is not None and len(swapped) > 1 and TABLE[swapped][0] == "behaviour":
+                if (
+                    swapped is not None
+                    and len(swapped) > 1
+                    and TABLE[swapped][0] == "behaviour"
+                    and TABLE[swapped][1][0] != "keep_going"  # (a specific behaviour, or nothing is read)
+                ):
                     key = swapped
                     read_as.append((" ".join(tokens[i : i + len(swapped)]), " ".join(swapped)))
                     break
@@ -459,7 +464,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
                 verb = "VERB" in pos and not pos & {"ADJ", "ADV"} and not tok.endswith(("ing", "ed"))
                 if i + 1 < len(tokens) and _actor_at(tokens, i + 1):
                     verb = False  # a word naming what kind before an actor ("a police car", "a school bus")
-                elif det and det != "the" and prev in _OPENERS and "VERB" not in pos and _does_next(tokens, i + 1):
+                elif _new_unknown_subject(tokens, i) and "VERB" not in pos and _does_next(tokens, i + 1):
                     # "a unicorn runs out": someone the reader has no word for does something: a road
                     # user of its own (its kind read from what it does), not whoever was named last
                     clauses[-1][1].append(_Mention("actor", UNKNOWN_KIND, tok, i, prev, end=i + 1, det=det))
@@ -515,6 +520,35 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
             used = max(used, toward_at + 1 - i)
         i += used
     return [c for c in clauses if any(m.slot not in ("punct", "link") for m in c[1])], ignored, read_as
+
+
+def _counts_actor(mentions, k: int) -> bool:
+    """Whether count ``mentions[k]`` stands before a road user's name, past words that describe it
+    ("two parked vans"), not before anything else ("the middle lane of three, ...")."""
+    end = mentions[k].end
+    for m in mentions[k + 1 :]:
+        if m.start - end > 1:
+            return False
+        if m.slot == "actor":
+            return True
+        if m.slot not in _POSITIONAL:
+            return False
+        end = m.end
+    return False
+
+
+def _new_unknown_subject(tokens: list[str], i: int) -> bool:
+    """Whether the word at ``i`` names someone new at the start of a clause: "a" or "an" before it,
+    past at most two words the reader has no entry for ("when a black BMW ..."), and a clause
+    opening before that."""
+    j = i - 1
+    while j >= 0 and i - j <= 3 and tokens[j] not in ("a", "an", "another", "some") and _best(tokens, j) is None:
+        if tokens[j] in FUNCTION_WORDS or not tokens[j].isalpha():
+            return False
+        j -= 1
+    if j < 0 or tokens[j] not in ("a", "an", "another", "some"):
+        return False
+    return (tokens[j - 1] if j else "") in _OPENERS
 
 
 def _modifies_actor(tokens: list[str], j: int) -> bool:
@@ -707,10 +741,17 @@ def read(text: str) -> Reading:
                 prev = m
                 continue
             if m.slot == "count":
+                if not _counts_actor(mentions, k):
+                    continue  # ("the middle lane of three": a count of no road user)
                 count = L.COUNTS.get(m.words, 2)
                 if m.words == "both" and not actors:  # "both cars at 50 km/h" before anyone: the ego and one
                     count, both_with_ego = 1, True
                 continue
+            if m.slot == "relative" and m.words == "that" and nxt is not None and nxt.slot == "actor":
+                if nxt.start - m.end <= 1 and nxt.value != "ego":  # "I want that the front car brakes": a new clause
+                    expect_subject = True
+                    prev = m
+                    continue
             if m.slot == "relative":
                 if named and named[-1][1] != "subject":  # "a child who steps out": the child acts
                     clause_subject = subject = named[-1][0]
@@ -766,7 +807,7 @@ def read(text: str) -> Reading:
                         who = "ego"
                     elif (
                         m.value in ("bicycle", "e-scooter")
-                        and m.prev in ("on", "riding")
+                        and m.prev in ("on", "riding", "with")
                         and named
                         and isinstance(named[-1][0], _Actor)
                         and named[-1][0].kind == "pedestrian"
@@ -927,7 +968,7 @@ def read(text: str) -> Reading:
     if len(actors) > MAX_ACTORS:
         raise NotUnderstood([f"{len(actors)} road users (a scenario holds at most {MAX_ACTORS} besides the ego)"], text)
     _refuse_if_nothing_to_place(text, actors, clauses, ignored)
-    if any(a.behaviours for a in actors):  # people and vehicles only mentioned (passengers, a car in a
+    if any(not _idle(a) for a in actors):  # people and vehicles only mentioned (passengers, a car in a
         idle = [a for a in actors if _idle(a)]  # story's aside) are no road users of the scenario
         actors = [a for a in actors if not _idle(a)]
         ignored += [a.word or a.kind for a in idle]
