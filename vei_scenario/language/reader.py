@@ -462,8 +462,10 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
                     bool(clauses[-1][1]) and clauses[-1][1][-1].slot == "actor" and clauses[-1][1][-1].end == i
                 )
                 verb = "VERB" in pos and not pos & {"ADJ", "ADV"} and not tok.endswith(("ing", "ed"))
-                if i + 1 < len(tokens) and _actor_at(tokens, i + 1):
-                    verb = False  # a word naming what kind before an actor ("a police car", "a school bus")
+                if tokens[i - 1 : i] in (["a"], ["an"], ["the"]) or (
+                    i + 1 < len(tokens) and _modifies_actor(tokens, i + 1)
+                ):
+                    verb = False  # a word naming what kind before an actor ("a police car", "a Ford Transit van")
                 elif _new_unknown_subject(tokens, i) and "VERB" not in pos and _does_next(tokens, i + 1):
                     # "a unicorn runs out": someone the reader has no word for does something: a road
                     # user of its own (its kind read from what it does), not whoever was named last
