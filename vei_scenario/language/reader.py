@@ -200,6 +200,7 @@ class _Actor:
     toward: str | None = None  # the side it moves to ("merges right", "swerves left into our lane")
     came_from: bool = False  # a kerb or side said as where it comes from ("walks from the far side")
     word: str = ""  # the words it was first named by
+    acted_on: bool = False  # the object of someone's verb ("overtakes a truck")
 
 
 #: Euro NCAP's names of its test scenarios ("Car-to-Car Rear stationary", "Car-to-Pedestrian Nearside
@@ -462,9 +463,9 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
                     bool(clauses[-1][1]) and clauses[-1][1][-1].slot == "actor" and clauses[-1][1][-1].end == i
                 )
                 verb = "VERB" in pos and not pos & {"ADJ", "ADV"} and not tok.endswith(("ing", "ed"))
-                if tokens[i - 1 : i] in (["a"], ["an"], ["the"]) or (
-                    i + 1 < len(tokens) and _modifies_actor(tokens, i + 1)
-                ):
+                if tokens[i - 1 : i] in (["a"], ["an"], ["the"]):
+                    verb = False  # (right after an article: a name, not a verb)
+                if i + 1 < len(tokens) and _modifies_actor(tokens, i + 1):
                     verb = False  # a word naming what kind before an actor ("a police car", "a Ford Transit van")
                 elif _new_unknown_subject(tokens, i) and "VERB" not in pos and _does_next(tokens, i + 1):
                     # "a unicorn runs out": someone the reader has no word for does something: a road
@@ -851,6 +852,8 @@ def read(text: str) -> Reading:
                     for pm in passive:  # "the AV is tailgated by a sports car": the car tailgates
                         _apply(pm, who, r, link, added)
                     passive = []
+                if role == "verb" and isinstance(who, _Actor) and after_verb:
+                    who.acted_on = True  # ("the ego is overtaking a truck": the truck is in the scene)
                 if role == "verb" and isinstance(who, _Actor) and isinstance(clause_subject, _Actor) and after_verb:
                     who.object_of = who.object_of or clause_subject
                 named.append((who, role))
@@ -1089,7 +1092,7 @@ def _idle(a: _Actor) -> bool:
     return not (
         a.behaviours or a.stationary or a.speed_mps is not None or a.distance_m is not None or a.relation
         or a.said or a.wrong_way or a.side or a.kerb or a.lane_side or a.kerb_side or a.arm or a.followed
-        or a.parked or a.object_of is not None
+        or a.parked or a.object_of is not None or a.acted_on
     )  # fmt: skip
 
 
