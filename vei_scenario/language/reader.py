@@ -436,8 +436,10 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
         if key is None and tok not in FUNCTION_WORDS and i + 1 < len(tokens) and _verb_before(tok, tokens[i + 1]):
             # a verb the lexicon lacks, with where it goes ("swung into my lane", "bolted across the road"):
             # read as the plain motion verb with the same words, when that is a behaviour
+            to_a_place = tokens[i + 1] in ("to", "in") and tokens[i + 2 : i + 3] and tokens[i + 2] in _DETERMINERS
+            into = ["into"] if to_a_place else tokens[i + 1 : i + 2]  # ("changing to our lane", not "decides to")
             for plain in PLAIN_MOTION_VERBS:
-                swapped = _best(tokens[:i] + [plain] + tokens[i + 1 :], i)
+                swapped = _best(tokens[:i] + [plain] + into + tokens[i + 2 :], i)
                 if (
                     swapped is not None
                     and len(swapped) > 1
@@ -463,8 +465,8 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
                     bool(clauses[-1][1]) and clauses[-1][1][-1].slot == "actor" and clauses[-1][1][-1].end == i
                 )
                 verb = "VERB" in pos and not pos & {"ADJ", "ADV"} and not tok.endswith(("ing", "ed"))
-                if tokens[i - 1 : i] in (["a"], ["an"], ["the"]):
-                    verb = False  # (right after an article: a name, not a verb)
+                if _after_article(tokens, i):
+                    verb = False  # (in a noun phrase: "the petrol station" names a place, no verb)
                 if i + 1 < len(tokens) and _modifies_actor(tokens, i + 1):
                     verb = False  # a word naming what kind before an actor ("a police car", "a Ford Transit van")
                 elif _new_unknown_subject(tokens, i) and "VERB" not in pos and _does_next(tokens, i + 1):
@@ -523,6 +525,19 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
             used = max(used, toward_at + 1 - i)
         i += used
     return [c for c in clauses if any(m.slot not in ("punct", "link") for m in c[1])], ignored, read_as
+
+
+def _after_article(tokens: list[str], i: int) -> bool:
+    """Whether the word at ``i`` follows an article, past at most two words the reader has no entry
+    for ("the petrol station", "a Ford Transit"): a name, not a verb."""
+    j = i - 1
+    while j >= 0 and i - j <= 3:
+        if tokens[j] in ("a", "an", "the", "my", "our", "his", "her", "their", "its"):
+            return True
+        if tokens[j] in FUNCTION_WORDS or not tokens[j].isalpha() or _best(tokens, j) is not None:
+            return False
+        j -= 1
+    return False
 
 
 def _counts_actor(mentions, k: int) -> bool:
