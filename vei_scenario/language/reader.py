@@ -34,7 +34,13 @@ from vei_scenario.language.behaviours import BEHAVIOURS
 from vei_scenario.language.ncap import rewrite as ncap_rewrite
 from vei_scenario.language.normalise import normalise
 from vei_scenario.language.reading import ActorSpec, NotUnderstood, Reading
-from vei_scenario.language.stated import stated_clock, stated_density, stated_lanes, stated_outcome
+from vei_scenario.language.stated import (
+    stated_clock,
+    stated_density,
+    stated_heavy_rain,
+    stated_lanes,
+    stated_outcome,
+)
 
 _TOKEN = re.compile(r"\d+(?:\.\d+)?|km/h|m/s²|m/s2|m/s|[a-z][a-z\-]*(?:'[a-z]+)?|'s|[.;,!?:%]")
 
@@ -1099,6 +1105,8 @@ def read(text: str) -> Reading:
     r.lanes = stated_lanes(said) or r.lanes
     r.time = stated_clock(said) or r.time
     r.density = stated_density(said) or r.density
+    if r.weather in (None, "rain") and stated_heavy_rain(said):
+        r.weather = "heavy_rain"
     return r
 
 
@@ -1447,12 +1455,16 @@ def _nearest(named, m):
     return None
 
 
+#: Weather words by how much they change a drive: precipitation and fog over cloud over clear.
+WEATHER_SEVERITY = {"clear": 0, "cloudy": 1, "rain": 2, "fog": 2, "snow": 3, "heavy_rain": 3}
+
+
 def _global(r, m) -> None:
     if m.slot == "map":
         if not (r.map_kind and m.value == "straight"):
             r.map_kind = m.value
-    elif m.slot == "weather":  # the first said, unless a later word says it more heavily
-        if r.weather is None or (m.value == "heavy_rain" and r.weather == "rain"):
+    elif m.slot == "weather":  # the most severe said, of equals the first ("grey, drizzly": rain)
+        if r.weather is None or WEATHER_SEVERITY.get(str(m.value), 0) > WEATHER_SEVERITY.get(r.weather, 0):
             r.weather = m.value
     elif m.slot == "time":  # (the first said: "at dusk ... in dark clothing" is at dusk)
         r.time = r.time or m.value

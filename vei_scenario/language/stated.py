@@ -110,3 +110,14 @@ def stated_density(text: str) -> str | None:
     """Background traffic said of the road ("the motorway was heavy", "traffic was moderate")."""
     m = _DENSITY.search(text)
     return None if m is None else _DENSITY_WORDS[m.group(1)]
+
+
+_HEAVY_RAIN = re.compile(
+    r"\b(?:rain|rains|raining|rained) (?:very |really )?(?:strong|strongly|hard|heavily|heavy|a lot|cats and dogs)\b"
+    r"|\b(?:pouring|bucketing|lashing) (?:with |down )?(?:rain)?"
+)
+
+
+def stated_heavy_rain(text: str) -> bool:
+    """Whether the rain is said to be heavy in words the weather words do not hold ("is raining strong")."""
+    return _HEAVY_RAIN.search(text) is not None
