@@ -499,6 +499,10 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
         if slot == "actor" and i + len(key) < len(tokens) and tokens[i + len(key)] in _PARTS:
             i += len(key) + 1  # "50 % of the vehicle width", "a car door": a part of one, not a road user
             continue
+        if slot == "behaviour" and len(key) == 1 and tokens[i - 1 : i] in _POSSESSIVES:
+            ignored.append(tok)  # "missed his tailgate": after a possessive, a thing, not a behaviour
+            i += 1
+            continue
         if key == ("stop",) and det:  # "the stop", "a stop": a bus stop, a place
             slot, value = "kerb", None
         elif tok == "crossing" and len(key) == 1 and det:  # "at the crossing": a junction, not someone crossing
@@ -531,6 +535,9 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
             used = max(used, toward_at + 1 - i)
         i += used
     return [c for c in clauses if any(m.slot not in ("punct", "link") for m in c[1])], ignored, read_as
+
+
+_POSSESSIVES = (["his"], ["her"], ["its"], ["their"], ["my"], ["our"], ["your"])
 
 
 def _after_article(tokens: list[str], i: int) -> bool:
@@ -730,6 +737,7 @@ def read(text: str) -> Reading:
     pending: list[_Mention] = []
     last_group: list[_Actor] | None = None  # ("Two scooters ride ahead; one of them brakes": that pair)
     both_with_ego = False  # ("CCRb: both cars at 50 km/h ...": the ego is one of them)
+    bound: dict[str, _Actor | str] = {}  # "he"/"she" → whom it first named
     for link, mentions in clauses:
         named: list[tuple[_Actor | str, str]] = []  # (actor, role) in order: subject, prep, verb, participle
         clause_subject: _Actor | str | None = None
@@ -806,6 +814,8 @@ def read(text: str) -> Reading:
                         # drives it) is the last road user's, unless that one stands and it is a slowing
                         still = actors[-1].stationary and verb.value[0] in ("stop", "sudden_stop", "change_speed")
                         who = who if still else actors[-1]
+                    if m.words in ("he", "she"):  # a person's pronoun names the same one all through a story
+                        who = bound.setdefault(m.words, who)  # ("the driver said she ... She braked")
                     role = "subject"
                 elif m.slot == "member":
                     pool = group or last_group or []
