@@ -586,6 +586,8 @@ RELATIONS = {
         "opposing",
         "approaching",
         "approaching from the front",
+        "from the front",
+        "from the front side",
         "opposite approach",
         "opposite arm",
         "opposite road",
