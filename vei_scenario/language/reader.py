@@ -499,7 +499,9 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
         if slot == "actor" and i + len(key) < len(tokens) and tokens[i + len(key)] in _PARTS:
             i += len(key) + 1  # "50 % of the vehicle width", "a car door": a part of one, not a road user
             continue
-        noun_here = tokens[i - 1 : i] in (["the"], ["a"], ["an"]) and "NOUN" in _pos(tok) and key != ("stop",)
+        noun_here = (
+            tokens[i - 1 : i] in (["the"], ["a"], ["an"]) and "NOUN" in _pos(tok) and tok not in ("stop", "crossing")
+        )
         if slot == "behaviour" and len(key) == 1 and (tokens[i - 1 : i] in _POSSESSIVES or noun_here):
             ignored.append(tok)  # "missed his tailgate", "there is the crash": a thing, not a behaviour
             i += 1
