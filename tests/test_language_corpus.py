@@ -138,7 +138,7 @@ def test_a_cut_in_by_a_standing_or_a_faster_car_happens(text, tmp_path):
         # the ego's own view: what it follows is ahead of it
         (
             "Following a lorry, it swerves out to the left, revealing a stalled car.",
-            [("truck", "cut_out", "ahead", None), ("car", "keep_going", "ahead", None)],
+            [("truck", "cut_out", "ahead", None), ("car", "stop", "ahead", None)],
         ),
     ],
     ids=["towards-us", "passive", "joined", "following"],
