@@ -499,6 +499,14 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
         if slot == "actor" and i + len(key) < len(tokens) and tokens[i + len(key)] in _PARTS:
             i += len(key) + 1  # "50 % of the vehicle width", "a car door": a part of one, not a road user
             continue
+        if slot in ("side", "kerb_side", "lane_side") and i + len(key) < len(tokens) and tokens[i + len(key)] in _PARTS:
+            ignored.extend(tokens[i : i + len(key) + 1])  # "the nearside wing": a part of a vehicle, no side
+            i += len(key) + 1
+            continue
+        if slot == "actor" and value != "ego" and _predicate_of_ego(tokens, i):
+            ignored.append(" ".join(tokens[i : i + len(key)]))  # "I was the designated driver": the ego
+            i += len(key)
+            continue
         noun_here = (
             tokens[i - 1 : i] in (["the"], ["a"], ["an"]) and "NOUN" in _pos(tok) and tok not in ("stop", "crossing")
         )
@@ -541,6 +549,17 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
 
 
 _POSSESSIVES = (["his"], ["her"], ["its"], ["their"], ["my"], ["our"], ["your"])
+
+
+def _predicate_of_ego(tokens: list[str], i: int) -> bool:
+    """Whether the road-user noun at ``i`` says what the ego is ("I was the designated driver", "we
+    are the lead car"): after the narrator, a copula and a determiner (and up to two more words)."""
+    j = i - 1
+    while j >= 0 and i - j <= 3 and tokens[j] not in _COPULAS:
+        if tokens[j] not in _DETERMINERS and (tokens[j] in FUNCTION_WORDS or not tokens[j].isalpha()):
+            return False
+        j -= 1
+    return j >= 1 and tokens[j] in _COPULAS and tokens[j - 1] in ("i", "we") and tokens[j + 1] in _DETERMINERS
 
 
 def _after_article(tokens: list[str], i: int) -> bool:
@@ -1358,7 +1377,8 @@ def _tidy(a: _Actor) -> list:
 
 #: Parts and measures of a vehicle: "vehicle width", "car door" name no road user.
 _PARTS = {"width", "length", "overlap", "centreline", "centerline", "door", "doors", "bumper", "mirror", "bonnet",
-          "hood", "boot", "trunk", "wheel", "wheels"}  # fmt: skip
+          "hood", "boot", "trunk", "wheel", "wheels", "wing", "headlight", "headlamp", "panel", "corner",
+          "windscreen", "windshield", "tailgate", "fender", "quarter"}  # fmt: skip
 #: Behaviours that move a road user sideways: a bare "left"/"right" right after them is where it moves to.
 _SIDEWAYS = ("cut_in", "change_lane", "cut_out", "cross_in_front")
 #: Words that make a road user the one the ego follows ("the lead car", "a preceding truck").

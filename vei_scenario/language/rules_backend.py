@@ -146,8 +146,9 @@ def sample_layers(reading: Reading, text: str, seed: int) -> dict:
             # the crossing lies on the ego's way to its junction: the ego starts far enough back for the
             # road user to get across in time (a child crossing four lanes at 1.5 m/s needs ~9 s)
             room = _crossing_lon_m(spec.kind, relation, first_cfg, ego, lanes) + CROSSING_CLEAR_OF_JUNCTION_M
-            if room > float(ego["distance_m"]):
-                ego["distance_m"] = round(min(room, ARM_LENGTH_M - 20.0), 3)
+            if room > float(ego["distance_m"]):  # (within the road before the map's feature: a curve's is short)
+                before = layout({"kind": kind, "lanes_per_direction": lanes}).feature_s_m or ARM_LENGTH_M
+                ego["distance_m"] = round(min(room, ARM_LENGTH_M - 20.0, before - 10.0), 3)
         if crossing and spec.distance_m is not None:
             _cross_at_distance(spec.kind, relation, first_cfg, ego, lanes, spec.distance_m)
         spawn, speed = place_adversary(
