@@ -455,8 +455,16 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
                     key = swapped
                     read_as.append((" ".join(tokens[i : i + len(swapped)]), " ".join(swapped)))
                     break
+        if key is None and (tok == "must" or (tok in _MODAL_VERBS and tokens[i + 1 : i + 2] == ["to"])):
+            clauses[-1][1].append(_Mention("modal", tok, tok, i, prev, end=i + 1))  # "it has to brake"
+            i += 1
+            continue
         if key is None and tok in L.CONJUNCTIONS:
             clauses[-1][1].append(_Mention("conj", tok, tok, i, prev, end=i + 1))
+            i += 1
+            continue
+        if key is None and tok in L.RELATIVE and tokens[i - 1 : i] and tokens[i - 1] in ("in", "at", "on", "during"):
+            clauses[-1][1].append(_Mention("conj", tok, tok, i, prev, end=i + 1))  # "a test in which a truck ..."
             i += 1
             continue
         if key is None and tok in L.RELATIVE:
@@ -548,6 +556,8 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
     return [c for c in clauses if any(m.slot not in ("punct", "link") for m in c[1])], ignored, read_as
 
 
+#: Verbs that with "to" say what someone must do ("it has to brake": a requirement, said of the ego).
+_MODAL_VERBS = frozenset({"has", "have", "had", "needs", "need", "needed"})
 _POSSESSIVES = (["his"], ["her"], ["its"], ["their"], ["my"], ["our"], ["your"])
 
 
@@ -737,7 +747,12 @@ def _resolve_relation(a: _Actor, map_kind: str | None) -> str | None:
         return f"junction_{side}"  # waiting at the junction on the left, then pulling out
     if first == "cross_in_front" and junction:
         return f"junction_{side or 'left'}"
-    if first == "run_red_light" or (a.arm and junction) or (junction and first in (None, "keep_going") and a.side):
+    same_way = "ahead" in a.said and a.relation != "oncoming"  # ("in the same direction on the right": beside)
+    if (
+        first == "run_red_light"
+        or (a.arm and junction)
+        or (junction and first in (None, "keep_going") and a.side and not same_way)
+    ):
         return f"junction_{side or 'left'}"
     lateral = first in ("cut_in", "overtake", "forced_turn", "follow_vehicle")
     if a.kerb and not vehicle and not (lateral and first != "forced_turn"):
@@ -778,6 +793,8 @@ def read(text: str) -> Reading:
                 if m.value != "'s":
                     expect_subject = True
                 prev = prev if m.value == "'s" else m
+                continue
+            if m.slot == "modal":
                 continue
             if m.slot in ("conj", "link"):
                 expect_subject = True
@@ -831,7 +848,8 @@ def read(text: str) -> Reading:
                         continue  # "overtakes it": an object already known
                     who = subject if subject is not None else "ego"
                     verb = next((x for x in mentions[k + 1 :] if x.slot not in ("criticality", "speed_word")), None)
-                    if who == "ego" and actors and verb is not None and verb.slot == "behaviour":
+                    modal = verb is not None and verb.slot == "modal"  # ("Ego at 100 km/h, it has to brake hard")
+                    if who == "ego" and actors and verb is not None and verb.slot == "behaviour" and not modal:
                         # "as the ego approaches, it pulls out": what the ego does not do (the planner
                         # drives it) is the last road user's, unless that one stands and it is a slowing
                         still = actors[-1].stationary and verb.value[0] in ("stop", "sudden_stop", "change_speed")
@@ -1239,7 +1257,7 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool) -> None:
         )
     ):
         returns = a.returns or first == "overtake" or any(n in ("change_lane", "cut_in") for n in names[1:])
-        in_lane = a.wrong_way or "ahead" in a.said
+        in_lane = (a.wrong_way or "ahead" in a.said) and first != "overtake"  # (an overtaker starts in its lane)
         cfg = {"returns": 1.0} if returns else {}
         rest = [b for b in spec.behaviours if b[0] not in ("cut_in", "change_lane", "keep_going", "overtake")]
         spec.behaviours = [("wrong_way", cfg, crit, link)] + rest
