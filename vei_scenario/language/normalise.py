@@ -140,6 +140,8 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
         text,
     )
     text = re.sub(r"\b(turn|turns|turning|turned) to (?:the )?(left|right)\b", r"\1 \2", text)
+    # "traffic was moderate": moderate traffic (the word is then no criticality of what follows)
+    text = re.sub(r"\btraffic (?:is|was|were) (?:very |quite |fairly )?(light|moderate|heavy)\b", r"\1 traffic", text)
     for pattern in _EGO_ALIASES:
         text = pattern.sub("the ego", text)
     text = _other_parties(text, known_noun)

@@ -819,7 +819,7 @@ def read(text: str) -> Reading:
                     count, both_with_ego = 1, True
                 continue
             if m.slot == "relative" and m.words == "that" and nxt is not None and nxt.slot == "actor":
-                if nxt.start - m.end <= 1 and nxt.value != "ego":  # "I want that the front car brakes": a new clause
+                if nxt.start - m.end <= 2 and nxt.value != "ego":  # "I want that the front car brakes": a new clause
                     expect_subject = True
                     prev = m
                     continue
@@ -1567,6 +1567,9 @@ def _apply(m, who, r, link, added) -> None:
             a.speed_to_mps = m.value
         elif m.slot == "accel":
             a.accel_mps2 = m.value
+        elif m.slot == "to_stop" and not a.behaviours:  # "it pulled gently to a stop": it stops
+            a.behaviours.append(("stop", {"_words": m.words}, None, link))
+            added.append((a, len(a.behaviours) - 1))
         elif m.slot == "to_stop" and a.behaviours and a.behaviours[-1][0] == "change_speed":
             name, cfg, crit, lk = a.behaviours[-1]  # "decelerates to a standstill": a stop
             a.behaviours[-1] = ("stop", {"_words": cfg.get("_words", "")}, crit, lk)
