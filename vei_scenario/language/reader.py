@@ -518,7 +518,8 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
         noun_here = (
             tokens[i - 1 : i] in (["the"], ["a"], ["an"]) and "NOUN" in _pos(tok) and tok not in ("stop", "crossing")
         )
-        if slot == "behaviour" and len(key) == 1 and (tokens[i - 1 : i] in _POSSESSIVES or noun_here):
+        braking = "brake" in forms(tok)  # ("slammed on its brakes": the braking, said with its brakes)
+        if slot == "behaviour" and len(key) == 1 and (tokens[i - 1 : i] in _POSSESSIVES or noun_here) and not braking:
             ignored.append(tok)  # "missed his tailgate", "there is the crash": a thing, not a behaviour
             i += 1
             continue
@@ -1122,6 +1123,15 @@ def read(text: str) -> Reading:
         if behaviours and behaviours[0][0] == "cut_in" and a.distance_m is not None:
             name, cfg, c, lk = behaviours[0]
             behaviours[0] = (name, {**cfg, "gap_m": a.distance_m}, c, lk)
+        if (
+            a.kind in VULNERABLE
+            and (a.relation or "").startswith("junction_")
+            and not junction
+            and all(b[0] == "keep_going" for b in behaviours)
+        ):  # "a pedestrian crossing from the left" where there is no junction: it crosses from that kerb
+            a.relation = "roadside_" + str(a.relation).rsplit("_", 1)[1]
+            crit = next((b[2] for b in behaviours if b[2]), a.crit)
+            behaviours = [("cross_in_front", {}, crit, "sequence")]
         a.behaviours = behaviours
         spec.relation = _resolve_relation(a, r.map_kind)
         if (
@@ -1487,7 +1497,7 @@ def _ego_participle(prev, m, nxt) -> bool:
     """Whether behaviour ``m`` is a participle of the ego named in a relation just before it, followed by
     a speed ("15 m ahead of the ego travelling at 40 km/h"): the ego's motion, not the road user's."""
     return (
-        prev is not None and prev.slot == "relation" and _ego_named(prev) and m.start == prev.end
+        prev is not None and prev.slot in ("relation", "actor") and _ego_named(prev) and m.start == prev.end
         and m.words in MOTION_PARTICIPLES and nxt is not None and nxt.slot == "speed"
         and nxt.start - m.end <= (1 if nxt.prev == "at" else 0)
     )  # fmt: skip
