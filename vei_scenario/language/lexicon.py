@@ -434,6 +434,11 @@ RED_LIGHT = (
     "ignore the light",
     "ignore the signal",
     "jump the light",
+    "run the stop sign",
+    "run a stop sign",
+    "ignore the stop sign",
+    "blow through the stop sign",
+    "blow the stop sign",
 )
 TURNS = {
     "right": ("turn right", "make a right turn", "turn off right", "turn into the right", "swing right"),

@@ -327,6 +327,17 @@ def _does_next(tokens: list[str], i: int) -> bool:
     return key is not None and TABLE[key][0] in ("behaviour", "ego_verb", "turn")
 
 
+def _does_soon(tokens: list[str], i: int) -> bool:
+    """Whether a behaviour starts at ``i`` or after a short phrase describing who does it ("a mum with
+    a buggy steps out"), before the clause ends."""
+    for k in range(i, min(i + 6, len(tokens))):
+        if tokens[k] in ".;,!?:" or (k > i and tokens[k] in L.CONJUNCTIONS) or (k > i and _actor_at(tokens, k)):
+            return False
+        if _does_next(tokens, k):
+            return True
+    return False
+
+
 def _actor_at(tokens: list[str], i: int) -> bool:
     """Whether an actor's name starts at ``i`` (of any length: "bus" in "bus stops" too)."""
     return i < len(tokens) and any(
@@ -483,7 +494,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
                     verb = False  # (in a noun phrase: "the petrol station" names a place, no verb)
                 if i + 1 < len(tokens) and _modifies_actor(tokens, i + 1):
                     verb = False  # a word naming what kind before an actor ("a police car", "a Ford Transit van")
-                elif _new_unknown_subject(tokens, i) and "VERB" not in pos and _does_next(tokens, i + 1):
+                elif _new_unknown_subject(tokens, i) and "VERB" not in pos and _does_soon(tokens, i + 1):
                     # "a unicorn runs out": someone the reader has no word for does something: a road
                     # user of its own (its kind read from what it does), not whoever was named last
                     clauses[-1][1].append(_Mention("actor", UNKNOWN_KIND, tok, i, prev, end=i + 1, det=det))
@@ -1039,6 +1050,8 @@ def read(text: str) -> Reading:
             x.group = None
         joined = []
     unplaced = [p.words for p in pending if p.slot in ("behaviour", "turn")]  # (said of nobody)
+    if unplaced and not actors:  # something is done, and nobody the reader can place does it
+        raise NotUnderstood(list(dict.fromkeys(ignored))[:12], text, missing="road user")
     if both_with_ego and r.ego_speed_mps is None and actors and actors[0].speed_mps is not None:
         r.ego_speed_mps = actors[0].speed_mps  # (the speed said of both)
     ignored += unplaced
