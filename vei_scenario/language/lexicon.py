@@ -90,6 +90,10 @@ ACTOR_NOUNS = {
         "semi",
         "tractor-trailer",
         "articulated lorry",
+        "artic",
+        "big rig",
+        "semi-truck",
+        "wheeler",  # ("an 18-wheeler")
         "bus",
         "coach",
         "tanker",

@@ -335,6 +335,8 @@ def _does_soon(tokens: list[str], i: int) -> bool:
             return False
         if _does_next(tokens, k):
             return True
+        if k + 1 < len(tokens) and tokens[k + 1] in _MOTION_PARTICLES and _verb_before(tokens[k], tokens[k + 1]):
+            return True  # (a verb the reader reads through a plain one: "swings across")
     return False
 
 
