@@ -667,6 +667,7 @@ CRITICALITY = {
         "sharply",
         "hard",
         "suddenly",
+        "sudden",
         "aggressive",
         "aggressively",
         "reckless",

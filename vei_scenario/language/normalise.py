@@ -116,6 +116,29 @@ def _other_parties(text: str, known_noun) -> str:
     return "".join(out)
 
 
+_HEADING = re.compile(r"\b(north|south|east|west)(?:bound|wards)\b")
+_OPPOSITE = {"north": "south", "south": "north", "east": "west", "west": "east"}
+
+
+def _headings(text: str) -> str:
+    """Compass headings of a statement ("Unit 1 was southbound ... Unit 2, travelling northbound"): the
+    first is the ego's (said in its sentence); a later opposite one is the other way, the same one the
+    same way as the ego."""
+    first = _HEADING.search(text)
+    if first is None or "the ego" not in text[max(text.rfind(".", 0, first.start()), 0) : first.end()]:
+        return text
+    own = first.group(1)
+
+    def sub(m: re.Match) -> str:
+        if m.start() == first.start():
+            return m.group(0)
+        if m.group(1) == _OPPOSITE[own]:
+            return "in the opposite direction"
+        return "in the same direction" if m.group(1) == own else m.group(0)
+
+    return _HEADING.sub(sub, text)
+
+
 def normalise(text: str, known_noun=lambda phrase: None) -> str:
     """``text`` (lowercased) with numbers in words, units, and the parties of a statement said the
     way the reader reads them. ``known_noun(phrase)`` returns the road-user noun a phrase ends in,
@@ -145,5 +168,6 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     for pattern in _EGO_ALIASES:
         text = pattern.sub("the ego", text)
     text = _other_parties(text, known_noun)
+    text = _headings(text)
     text = re.sub(r"\bthe ego's (?:vehicle|car)\b", "the ego", text)
     return text

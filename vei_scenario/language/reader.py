@@ -1075,8 +1075,10 @@ def read(text: str) -> Reading:
     for a in actors:  # "turns out of the junction": it comes from a side road
         for k, (_name, cfg, c, lk) in enumerate(a.behaviours):
             if cfg.pop("from_side_road", None):
-                if a.kind == "pedestrian":  # "a child emerges from between parked cars": a walker crosses
-                    a.behaviours[k] = ("cross_in_front", cfg, c, lk)  # (from a side road only if one is said)
+                if a.kind == "pedestrian" or (a.kind in RIDERS and not a.arm):
+                    # "a child emerges from between parked cars": a walker (or a rider, unless a side road
+                    # is said) crosses
+                    a.behaviours[k] = ("cross_in_front", cfg, c, lk)
                 else:
                     a.arm = True
         if a.kind == "pedestrian":  # ("comes out of a side street and crosses": one crossing)
@@ -1247,7 +1249,8 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool) -> None:
         and (spec.relation in ("oncoming", "junction_opposite") or "oncoming" in a.said)
     ):
         spec.relation = "junction_opposite"
-        spec.behaviours = [("turn_across", {}, crit, link)] + spec.behaviours[1:]
+        same = ("cut_in", "cross_in_front", "run_red_light", "keep_going")  # ("... and crossed into our path")
+        spec.behaviours = [("turn_across", {}, crit, link)] + [b for b in spec.behaviours[1:] if b[0] not in same]
         return
     if (
         junction
