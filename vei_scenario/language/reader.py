@@ -207,6 +207,7 @@ class _Actor:
     came_from: bool = False  # a kerb or side said as where it comes from ("walks from the far side")
     word: str = ""  # the words it was first named by
     acted_on: bool = False  # the object of someone's verb ("overtakes a truck")
+    pavement: bool = False  # said to be on a pavement (off the road), not in a cycle lane
 
 
 #: Euro NCAP's names of its test scenarios ("Car-to-Car Rear stationary", "Car-to-Pedestrian Nearside
@@ -1149,6 +1150,9 @@ def read(text: str) -> Reading:
             a.relation = "roadside_" + str(a.relation).rsplit("_", 1)[1]
             crit = next((b[2] for b in behaviours if b[2]), a.crit)
             behaviours = [("cross_in_front", {}, crit, "sequence")]
+        if a.kind in RIDERS and a.pavement and behaviours and behaviours[0][0] in ("cut_in", "forced_turn"):
+            # "riding on the sidewalk, then turning into the road before our car": it crosses into the path
+            behaviours = [("cross_in_front", {}, *behaviours[0][2:])] + behaviours[1:]
         a.behaviours = behaviours
         spec.relation = _resolve_relation(a, r.map_kind)
         if (
@@ -1220,6 +1224,8 @@ def _refuse_if_nothing_to_place(text: str, actors: list[_Actor], clauses, ignore
 
 #: Adversaries a scenario holds (the layers schema's limit).
 MAX_ACTORS = 8
+#: Kerb words off the road: a rider there entering the road crosses into the ego's path from that side.
+PAVEMENT_WORDS = ("pavement", "sidewalk", "footpath", "footway", "kerb", "curb")
 #: Behaviours that happen only at a junction: a description with one of them is set at a crossroad
 #: (unless it says a roundabout).
 JUNCTION_BEHAVIOURS = ("run_red_light", "turn_across", "turn_into", "forced_turn")
@@ -1623,6 +1629,7 @@ def _apply(m, who, r, link, added) -> None:
             a.lane_side = m.value
         elif m.slot == "kerb":
             a.kerb = True
+            a.pavement = a.pavement or any(w in m.words for w in PAVEMENT_WORDS)
             a.came_from = a.came_from or _from(m)
         elif m.slot == "kerb_side":
             a.kerb, a.kerb_side = True, m.value
