@@ -151,7 +151,9 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     text = re.sub(r"\b(?:approx\.?|approximately|circa|ca\.|roughly|around|maybe|some)\s+(?=\d)", "about ", text)
     text = re.sub(r"(\d+(?:\.\d+)?)\s*-\s*(?=km/h|mph|m/s|m\b)", r"\1 ", text)
     # "our speed is 100 km/h", "we have 40 km/h", "we are 50 km/h": the ego's speed
-    text = re.sub(r"\b(?:our|my|the ego's|ego) speed (?:is|was|of)\s+(?=(?:about )?\d)", "the ego drives at ", text)
+    text = re.sub(
+        r"\b(?:our|my|the ego's|ego) speed (?:is |was |of |at |:)?\s*(?=(?:about )?\d)", "the ego drives at ", text
+    )
     text = re.sub(
         r"\b(we|i) (?:have|are|am|were|was)\s+(?=(?:about )?\d+(?:\.\d+)? (?:km/h|mph|m/s)\b)", r"\1 drive at ", text
     )

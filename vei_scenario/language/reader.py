@@ -328,6 +328,15 @@ def _does_next(tokens: list[str], i: int) -> bool:
     return key is not None and TABLE[key][0] in ("behaviour", "ego_verb", "turn")
 
 
+def _definite_before(mentions, k: int) -> bool:
+    """Whether the road user named last before mention ``k`` was named definitely ("the car ahead, a
+    taxi, ...": an apposition; "a van, a car, ...": a list)."""
+    for m in reversed(mentions[:k]):
+        if m.slot == "actor":
+            return m.det in ("the", "this", "that", "our", "my", "its")
+    return False
+
+
 def _does_soon(tokens: list[str], i: int) -> bool:
     """Whether a behaviour starts at ``i`` or after a short phrase describing who does it ("a mum with
     a buggy steps out"), before the clause ends."""
@@ -885,6 +894,22 @@ def read(text: str) -> Reading:
                     who = "ego"
                 else:
                     same = [a for a in actors if a.kind == m.value]
+                    last = named[-1][0] if named and isinstance(named[-1][0], _Actor) else None
+                    if (
+                        last is not None
+                        and m.det in ("a", "an")
+                        and k > 0
+                        and mentions[k - 1].slot == "punct"
+                        and mentions[k - 1].value == ","
+                        and nxt is not None
+                        and nxt.slot == "punct"
+                        and not (k + 2 < len(mentions) and mentions[k + 2].slot in ("conj", "actor", "count"))
+                        and _definite_before(mentions, k)
+                        and (last.kind == m.value or (last.kind in VEHICLES and m.value in VEHICLES))
+                    ):  # "the car ahead, a taxi, stops": the same one, said again (its kind the more exact)
+                        last.kind = str(m.value) if last.kind == "car" else last.kind
+                        prev = m
+                        continue
                     if same and (m.det in ("the", "this", "that", "its", "our", "my") or (not m.det and _bare(m))):
                         who = same[-1]  # ("Target: cyclist, 30 m ahead. Cyclist turns left.": the same one)
                     elif (
@@ -922,8 +947,7 @@ def read(text: str) -> Reading:
                     role == "subject"
                     and isinstance(who, _Actor)
                     and prev is not None
-                    and prev.slot == "conj"
-                    and prev.value == "and"
+                    and ((prev.slot == "conj" and prev.value == "and") or (prev.slot == "punct" and prev.value == ","))
                     and named
                     and named[-1][1] == "subject"
                     and isinstance(named[-1][0], _Actor)
@@ -1016,7 +1040,11 @@ def read(text: str) -> Reading:
                     who = clause_subject  # "..., and then overtakes it at 25 km/h": the one who overtakes
                 if who is None and m.slot in ("returns", "wrong_way") and isinstance(subject, _Actor):
                     who = subject  # "..., then cuts back": what it does, said without naming it again
-                if who is None and m.slot == "speed" and not actors and r.ego_speed_mps is None:
+                too_fast = m.slot == "speed" and isinstance(who, _Actor) and m.value > FASTEST_MPS.get(who.kind, 1e9)
+                if too_fast and r.ego_speed_mps is None:
+                    # "a dog ran out in front of the car at 50 km/h": no walker goes that fast; the ego does
+                    r.ego_speed_mps = m.value
+                elif who is None and m.slot == "speed" and not actors and r.ego_speed_mps is None:
                     r.ego_speed_mps = m.value  # "Motorway at 110 km/h, a lorry ...": before anyone, the ego's
                 elif who is None:
                     pending.append(m)
@@ -1224,6 +1252,8 @@ def _refuse_if_nothing_to_place(text: str, actors: list[_Actor], clauses, ignore
 
 #: Adversaries a scenario holds (the layers schema's limit).
 MAX_ACTORS = 8
+#: The fastest a road user of a kind goes on its own (m/s): a faster speed said beside it is the ego's.
+FASTEST_MPS = {"pedestrian": 4.5, "bicycle": 14.0, "e-scooter": 12.0}
 #: Kerb words off the road: a rider there entering the road crosses into the ego's path from that side.
 PAVEMENT_WORDS = ("pavement", "sidewalk", "footpath", "footway", "kerb", "curb")
 #: Behaviours that happen only at a junction: a description with one of them is set at a crossroad
@@ -1327,8 +1357,9 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool) -> None:
 
 
 def _from(m) -> bool:
-    """Whether place mention ``m`` says where its road user comes from ("from the far side")."""
-    return m.prev == "from" or m.words.startswith("from ")
+    """Whether place mention ``m`` says where its road user comes from ("from the far side", "came off
+    the sidewalk")."""
+    return m.prev in ("from", "off") or m.words.startswith(("from ", "off "))
 
 
 def _parked(actors: list[_Actor], specs: list[ActorSpec]) -> None:

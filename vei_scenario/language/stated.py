@@ -19,7 +19,7 @@ _COLLISION = re.compile(
     r"\b(?:hit|hits|hitting|struck|strikes|striking|collid\w*|collision|crash|crashes|crashed|crashing|"
     r"impact|rear-end\w*|rear end\w*|made contact|make contact|makes contact|ran into|runs into|run into|"
     r"smash\w*|knock\w* (?:down|over)|thump|thrown onto|thrown over|ploughs? into|plowed into|slams? into|"
-    r"slammed into|ran over|runs over|run over|t-bone\w*|sideswip\w*)\b"
+    r"slammed into|ran over|runs over|run over|t-bone\w*|sideswip\w*|clipped|clips)\b"
     r"(?! (?:the |his |her |my |our )?brakes?\b| point| barrier| warning)"
 )
 #: Words that deny or hedge a collision word a few words after them.
