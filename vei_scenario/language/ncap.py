@@ -61,7 +61,7 @@ def rewrite(text: str, actor_noun) -> str:
     said = configuration.format(who=noun)
     rest = text[m.end() :]
     label = re.match(r"\s*:", rest) is not None
-    if label and any(actor_noun(w) for w in re.findall(r"[a-z][a-z-]*", _TARGETS.sub(f"the {noun}", rest))):
+    if label and any(actor_noun(w) for w in re.findall(r"[a-z][a-z-]*", _TARGETS.sub(" ", rest))):
         # "CCRs: the ego approaches a stationary car ...": a label; the text after it says the rest
         rest = re.sub(r"\bthe vehicle\b", "the ego", _TARGETS.sub(f"the {noun}", rest))
         return text[: m.end()] + re.sub(
