@@ -1159,6 +1159,8 @@ def read(text: str) -> Reading:
             behaviours = [(n, c, k or classes[0], lk) for n, c, k, lk in behaviours]
         if not behaviours and a.stationary:
             behaviours = [("stop", {}, None, "sequence")]  # (standing: stopped, and stays so)
+        if not behaviours:  # where it is said, but not what it does: it goes on
+            behaviours = [("keep_going", {}, None, "sequence")]
         if a.accel_mps2 is not None:  # "at 6 m/s²": the deceleration or rate of what it does (within its range)
             behaviours = [(*_with_rate(n, c, a.accel_mps2), k, lk) for n, c, k, lk in behaviours]
         if a.speed_to_mps is not None and a.speed_mps is not None:  # "slows from 80 to 30": by 50 km/h
@@ -1181,6 +1183,9 @@ def read(text: str) -> Reading:
         if a.kind in RIDERS and a.pavement and behaviours and behaviours[0][0] in ("cut_in", "forced_turn"):
             # "riding on the sidewalk, then turning into the road before our car": it crosses into the path
             behaviours = [("cross_in_front", {}, *behaviours[0][2:])] + behaviours[1:]
+        crossing_at = next((k for k, b in enumerate(behaviours) if b[0] == "cross_in_front"), None)
+        if a.kind in VULNERABLE and crossing_at:  # ("... stops; then crosses from the left"): from the kerb
+            behaviours = behaviours[crossing_at:]
         a.behaviours = behaviours
         spec.relation = _resolve_relation(a, r.map_kind)
         if (

@@ -84,6 +84,10 @@ def sample_layers(reading: Reading, text: str, seed: int) -> dict:
     ego_lane = 1
     if reading.ego_relation == "left" or ("right" in relations and "left" not in relations) or to_right:
         ego_lane = min(2, lanes)
+    if "right" in relations and ego_lane == 1:
+        # road users in lanes on both sides of the ego (or one on its right on a road said to have one
+        # lane each way): the lanes the story needs, the ego between them
+        lanes, ego_lane = max(lanes, 3 if "left" in relations else 2), 2
     placement = {
         "straight": "straight",
         "crossroad": "before_junction",
