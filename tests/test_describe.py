@@ -292,7 +292,7 @@ def test_both_cars_before_anyone_are_the_ego_and_one_more():
          ["sudden_stop"]),
         ("A cyclist ahead of the ego at 20 km/h falls.", None, "bicycle", "ahead", 20, ["sudden_stop"]),
         # "slow" before a road user is how fast it goes (before: a slowing), not the ego's speed
-        ("A slow truck ahead.", None, "truck", "ahead", -0.7, []),
+        ("A slow truck ahead.", None, "truck", "ahead", -0.7, ["keep_going"]),  # (said where, not what: it goes on)
         ("A slow truck ahead of us at 30 km/h brakes.", None, "truck", "ahead", 30, ["sudden_stop"]),
         ("A slow-moving tractor in front brakes.", None, "truck", "ahead", -0.6, ["sudden_stop"]),
         ("The truck in front is very slow and then stops.", None, "truck", "ahead", -0.7, ["stop"]),
@@ -300,7 +300,7 @@ def test_both_cars_before_anyone_are_the_ego_and_one_more():
         ("Ego cruising at 100 km/h behind a slower van; the van brakes suddenly.", 100, "van", "ahead", -0.7,
          ["sudden_stop"]),
         ("We drive behind a truck that brakes.", None, "truck", "ahead", None, ["sudden_stop"]),
-        ("The AV is following a bus.", None, "truck", "ahead", None, []),
+        ("The AV is following a bus.", None, "truck", "ahead", None, ["keep_going"]),
         ("We are ahead of a motorcycle that overtakes us.", None, "car", "behind", None, ["overtake"]),
         ("A car is behind the ego.", None, "car", "behind", None, ["keep_going"]),
         # the ego's own participle after a relation to it: its speed, not the road user's (before: the

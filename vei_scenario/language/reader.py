@@ -1184,8 +1184,9 @@ def read(text: str) -> Reading:
             # "riding on the sidewalk, then turning into the road before our car": it crosses into the path
             behaviours = [("cross_in_front", {}, *behaviours[0][2:])] + behaviours[1:]
         crossing_at = next((k for k, b in enumerate(behaviours) if b[0] == "cross_in_front"), None)
-        if a.kind in VULNERABLE and crossing_at:  # ("... stops; then crosses from the left"): from the kerb
-            behaviours = behaviours[crossing_at:]
+        before = {b[0] for b in behaviours[:crossing_at]} if crossing_at else set()
+        if a.kind in VULNERABLE and crossing_at and before <= {"keep_going", "stop", "along_road", "keep_lane"}:
+            behaviours = behaviours[crossing_at:]  # ("... stops; then crosses from the left"): from the kerb
         a.behaviours = behaviours
         spec.relation = _resolve_relation(a, r.map_kind)
         if (
