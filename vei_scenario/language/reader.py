@@ -992,6 +992,10 @@ def read(text: str) -> Reading:
                     expect_subject = True
                 prev = m
                 continue
+            if m.slot == "behaviour" and m.next_ == "by" and nxt is not None and nxt.slot == "actor":
+                if nxt.value == "ego" and nxt.start == m.end + 1:  # "a cyclist overtaken by the ego": the ego's
+                    prev = m
+                    continue
             if m.slot in _VERBS:
                 target = clause_subject
                 if (
@@ -1041,7 +1045,12 @@ def read(text: str) -> Reading:
                 if who is None and m.slot in ("returns", "wrong_way") and isinstance(subject, _Actor):
                     who = subject  # "..., then cuts back": what it does, said without naming it again
                 too_fast = m.slot == "speed" and isinstance(who, _Actor) and m.value > FASTEST_MPS.get(who.kind, 1e9)
-                if too_fast and r.ego_speed_mps is None:
+                ego_right_before = (
+                    prev is not None and prev.slot == "actor" and prev.value == "ego" and prev.prev == "by"
+                )
+                if m.slot == "speed" and ego_right_before and _next_to_ego(prev, m) and r.ego_speed_mps is None:
+                    r.ego_speed_mps = m.value  # "overtaken by the ego at 50 km/h": the ego's speed
+                elif too_fast and r.ego_speed_mps is None:
                     # "a dog ran out in front of the car at 50 km/h": no walker goes that fast; the ego does
                     r.ego_speed_mps = m.value
                 elif who is None and m.slot == "speed" and not actors and r.ego_speed_mps is None:
@@ -1124,6 +1133,14 @@ def read(text: str) -> Reading:
             # a vehicle moving across from a lane: into the ego's (what it does next, if said)
             rest = [b for b in a.behaviours if b[0] != "cross_in_front"]
             a.behaviours = rest or [("cut_in", *a.behaviours[0][1:])]
+    for a in actors:  # the ego turning towards the side a rider goes straight on: the rider goes its way
+        if (
+            r.ego_route in ("left", "right")
+            and a.kind in RIDERS
+            and (a.side or a.lane_side) == r.ego_route
+            and [b[0] for b in a.behaviours] in ([], ["keep_going"])
+        ):
+            a.said.add("ahead")
     vehicles_giving_way = any(a.kind in VEHICLES and any(b[0] == "give_way" for b in a.behaviours) for a in actors)
     at_junction = any(b[0] in JUNCTION_BEHAVIOURS for a in actors for b in a.behaviours)
     if (r.map_kind is None and r.ego_route in ("left", "right")) or (
