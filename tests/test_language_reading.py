@@ -199,3 +199,59 @@ def test_the_red_light_runner_from_the_left_generates_every_scenario_and_plays_a
         write_scenario(layers_from_text(RED_LIGHT, seed), "scenario")
     for seed in (0, 1, 2):
         assert play_case({"text": RED_LIGHT}, layers_from_text, tmp_path, seed) == [], seed
+
+
+# --- who does what, in narratives and lists ----------------------------------------------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # the ego's heading first; an opposite one is oncoming: a left turn across its path
+        (
+            "Unit 1 was southbound at 40 mph. Unit 2, a Honda Civic travelling northbound, turned left across "
+            "the path of Unit 1.",
+            [("car", "junction_opposite", "turn_across")],
+        ),
+        # "she" names the narrator all through ("She braked" is not the pickup's)
+        (
+            "My daughter said she was doing 30 mph when an oncoming pickup turned left across our lane. "
+            "She braked hard.",
+            [("van", "junction_opposite", "turn_across")],
+        ),
+        # done to a road user by the ego: the ego's
+        ("A cyclist overtaken by the ego at 50 km/h.", [("bicycle", "ahead", "along_road")]),
+        # an apposition after a definite road user, and a list sharing its verb
+        ("The car ahead, a taxi, stops suddenly.", [("car", "ahead", "sudden_stop")]),
+        (
+            "A van, a car and a truck overtake us.",
+            [("van", None, "overtake"), ("car", None, "overtake"), ("truck", None, "overtake")],
+        ),
+        # passengers and asides are no road users; the narrator's noun is the ego
+        (
+            "I was the designated driver and my kids were asleep in the back when a deer ran out from the left.",
+            [("pedestrian", "roadside_left", "cross_in_front")],
+        ),
+    ],
+    ids=["headings", "she", "passive-by-ego", "apposition", "list", "asides"],
+)
+def test_who_does_what_in_narratives_and_lists(text, expected):
+    assert [(a.kind, a.relation, a.behaviours[0][0]) for a in read(text).actors] == expected
+
+
+@pytest.mark.parametrize(
+    "text, attribute, value",
+    [
+        ("It was grey and drizzly when a cyclist crossed from the right.", "weather", "rain"),
+        ("It is raining strong and a cyclist crosses from the right.", "weather", "heavy_rain"),
+        ("At 22:40 hrs a cyclist crossed from the right.", "time", "22:40"),
+        ("At dusk a jogger in dark clothing crosses from the left.", "time", "19:30"),
+        ("The motorway was heavy when a lorry cut in.", "density", "heavy"),
+    ],
+)
+def test_settings_said_in_other_words(text, attribute, value):
+    assert getattr(read(text), attribute) == value
+
+
+def test_a_stated_distance_times_a_crossing_and_is_kept():
+    layers = layers_from_text("The ego drives at 30 km/h; a pedestrian steps out from the right 20 m ahead.", 0)
+    config = layers["adversaries"][0]["behaviour"]["config"]
+    assert config["distance_m"] == 20.0 and -0.2 <= config["arrival_gap_s"] <= 6.0

@@ -993,7 +993,7 @@ def read(text: str) -> Reading:
                 prev = m
                 continue
             if m.slot == "behaviour" and m.next_ == "by" and nxt is not None and nxt.slot == "actor":
-                if nxt.value == "ego" and nxt.start == m.end + 1:  # "a cyclist overtaken by the ego": the ego's
+                if nxt.value == "ego" and nxt.start <= m.end + 2:  # "a cyclist overtaken by the ego": the ego's
                     prev = m
                     continue
             if m.slot in _VERBS:
