@@ -1,6 +1,6 @@
 """The description corpus (tests/data/language_corpus.json, 126 descriptions in several writers' words,
 written before the reader was rebuilt): at least 90 % are read and turned into layers that carry what
-the text says (checked on three seeds each); every refusal names the words it could not place."""
+the text says (checked on three seeds each); every refusal names what is missing."""
 
 from __future__ import annotations
 
@@ -32,8 +32,25 @@ def test_at_least_nine_in_ten_descriptions_are_understood_and_faithful(corpus):
     failing = "\n".join(f"{r.text}: {r.problems}" for r in results if not r.faithful)
     assert len(faithful) >= 0.9 * len(results), failing
     for r in results:
-        if not r.understood:
-            assert "could not place '" in r.problems[0]
+        if not r.understood:  # (refused only for a missing road user or behaviour, said as such)
+            assert r.problems[0].startswith(("no road user found", "no behaviour found"))
+
+
+#: Written independently by two writers who never saw the reader, both measured before it was changed
+#: for them: A (the development set) 41 understood, 5 faithful of 59; B (held out, measured again only
+#: at the end) 53 understood, 3 faithful of 63. The floors are the figures measured at the end.
+INDEPENDENT = {
+    ROOT / "tests" / "data" / "language_independent_a.json": (59, 44),
+    ROOT / "tests" / "data" / "language_independent_b.json": (63, 12),
+}
+
+
+@pytest.mark.parametrize("corpus", sorted(INDEPENDENT), ids=["independent-a", "independent-b"])
+def test_independent_corpora_stay_at_their_measured_figures(corpus):
+    results = check_corpus(load_corpus(corpus), layers_from_text)
+    understood, faithful = INDEPENDENT[corpus]
+    assert sum(r.understood for r in results) >= understood
+    assert sum(r.faithful for r in results) >= faithful
 
 
 def test_a_case_that_is_not_met_is_reported_with_its_reasons():
@@ -138,7 +155,7 @@ def test_a_cut_in_by_a_standing_or_a_faster_car_happens(text, tmp_path):
         # the ego's own view: what it follows is ahead of it
         (
             "Following a lorry, it swerves out to the left, revealing a stalled car.",
-            [("truck", "cut_out", "ahead", None), ("car", "keep_going", "ahead", None)],
+            [("truck", "cut_out", "ahead", None), ("car", "stop", "ahead", None)],
         ),
     ],
     ids=["towards-us", "passive", "joined", "following"],
@@ -183,10 +200,11 @@ def test_word_salad_of_the_lexicon_is_read_or_refused_never_broken():
 @pytest.mark.parametrize(
     "text, named",
     [
-        ("A zorblat frobnicates the quux.", "'zorblat', 'frobnicates', 'quux'"),
+        ("A zorblat frobnicates the quux.", "no road user found (name one: the ego, a pedestrian"),
+        ("The zorblat frobnicates the quux.", "words not used: 'zorblat', 'frobnicates', 'quux'"),
         ("a car cuts in " * 50, "50 road users (a scenario holds at most 8"),
     ],
-    ids=["nothing-readable", "too-many"],
+    ids=["nothing-readable", "words-named", "too-many"],
 )
 def test_a_description_with_nothing_to_hold_or_too_much_is_refused_by_name(text, named):
     from vei_scenario.language.reading import NotUnderstood

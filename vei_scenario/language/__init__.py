@@ -20,7 +20,7 @@ def describe_command(args) -> int:
     from vei_scenario.language.describe import describe_batch
     from vei_scenario.language.layers import load_layers
     from vei_scenario.language.placement import PlacementError
-    from vei_scenario.language.reading import NotUnderstood
+    from vei_scenario.language.reading import NotUnderstood, reading_document, reading_lines
     from vei_scenario.language.rules_backend import read, sample_layers
 
     if (args.text is None) == (args.layers is None):
@@ -34,6 +34,7 @@ def describe_command(args) -> int:
         from vei_scenario.language.description_text import readable_description
 
         args.text = readable_description(args.text)
+    read_doc = None
     if args.layers is not None:
         fixed = load_layers(Path(args.layers))
         count, text, backend = 1, fixed.get("description", ""), "layers"
@@ -63,6 +64,9 @@ def describe_command(args) -> int:
             reading = read(text)
         except NotUnderstood as exc:
             raise VeiInputError(None, "description", str(exc)) from None
+        read_doc = reading_document(reading)
+        for line in reading_lines(reading):  # what was read, before anything is generated from it
+            print(line)
 
         def make(i: int) -> dict:
             return sample_layers(reading, text, args.seed * 1000 + i)
@@ -85,17 +89,28 @@ def describe_command(args) -> int:
             print(f"\r{done}/{total} scenarios", end="" if done < total else "\n", file=sys.stderr, flush=True)
 
     try:
-        _, doc = describe_batch(make, count, out, text, backend, args.seed, args.refine, args.jobs, progress)
+        records, doc = describe_batch(
+            make, count, out, text, backend, args.seed, args.refine, args.jobs, progress, read_doc
+        )
     except (PlacementError, ValueError, KeyError) as exc:
         if isinstance(exc, VeiInputError):
             raise
         raise VeiInputError(args.layers, "layers", str(exc).strip("'\"")) from None
     s = doc["summary"]
+    if s["scenarios"] == 0:  # nothing could be written: that is the outcome, with the first reason
+        first = next(r for r in records if not r.ok)
+        print(
+            f"vei: error: no scenario could be written ({s['failed']} of {s['failed']} failed); "
+            f"scenario_{first.index:03d}: {first.error}",
+            file=sys.stderr,
+        )
+        return 1
     act = "none" if s["mean_min_act_s"] is None else f"{s['mean_min_act_s']} s"
     rate = "–" if s["crash_rate"] is None else f"{100 * s['crash_rate']:.1f} %"
     print(
         f"{s['scenarios']} scenario(s): crash rate {rate} ({s['crashes']}), mean min ACT {act}, "
-        f"mean comfort {s['mean_comfort']}, mean max EI {s['mean_max_ei_mps']} m/s; intent met {s['intent_met']}"
+        f"mean comfort {s['mean_comfort']}, mean max EI {s['mean_max_ei_mps']} m/s"
+        + (f"; intent met {s['intent_met']} of {s['intent_stated']}" if s["intent_met"] is not None else "")
         + (f" after {s['episodes_run']} runs" if args.refine else "")
     )
     if s["failed"]:

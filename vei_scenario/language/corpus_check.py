@@ -83,6 +83,16 @@ def _actor_problems(adv: dict, want: dict) -> list[str]:
     return out
 
 
+def _scenery(adv: dict) -> bool:
+    """Whether adversary ``adv`` is parked scenery: standing beyond the kerb and doing nothing."""
+    names = {node["behaviour"] for _, node in behaviour_nodes(adv["behaviour"])}
+    return (
+        float(adv.get("speed_mps", 0.0)) == 0.0
+        and str(adv["spawn"].get("relation", "")).startswith("roadside")
+        and names <= {"keep_going", "stop", "keep_lane"}
+    )
+
+
 def layers_problems(layers: dict, case: dict) -> list[str]:
     """Every expectation of ``case`` that ``layers`` does not meet."""
     env = layers["environment"]
@@ -108,6 +118,11 @@ def layers_problems(layers: dict, case: dict) -> list[str]:
     if "intent" in case and layers.get("intent") != case["intent"]:
         out.append(f"intent {layers.get('intent')} (expected {case['intent']})")
     advs, wants = layers["adversaries"], case["actors"]
+    if len(advs) > len(wants) and not any(w.get("speed_kph") == 0 for w in wants):
+        # parked scenery (standing at the kerb, doing nothing) is not among the road users a case lists
+        # ("not parked scenery unless it acts"); a scenario may still hold it, as the occluder it is
+        acting = [a for a in advs if not _scenery(a)]
+        advs = acting if len(acting) >= len(wants) else advs
     if len(advs) != len(wants):
         kinds = [a["type"] for a in advs]
         out.append(f"{len(advs)} adversaries {kinds} (expected {len(wants)}: {[w['type'] for w in wants]})")
@@ -153,7 +168,7 @@ def _ego_frame(result, name: str):
 def played_problems(result, layers: dict) -> list[str]:
     """Did each adversary do what its layers say, in the played run? Checked from the trajectories:
     a stop ends standing, an overtake ends ahead of the ego, a cut-in ends ahead in the ego's lane,
-    a crossing passes the ego's path, a red-light run or a turn across comes within 3 m of the
+    a crossing passes the ego's path (or is hit in it), a red-light run or a turn across comes within 3 m of the
     ego's path, a road user giving way stands and is not hit, one going along the road keeps to
     the ego's lane in its direction, a wrong-way driver is head-on on the ego's path, an oncoming
     one faces the ego when they meet; and no background vehicle collides."""
@@ -181,7 +196,9 @@ def played_problems(result, layers: dict) -> list[str]:
             out.append(f"{name}: cut_in but never ahead in the ego's lane")
         behind_ok = "give_way" in names  # after giving way it crosses behind the ego
         where = lat if behind_ok else lat[lon > -2.0]
-        if "cross_in_front" in names and not (np.sign(where) != np.sign(lat[0])).any():
+        hit_ego = any({name, result.ego} == {a, b} for _, a, b in result.collisions)
+        # (one the ego hits has come into its path: that is the crossing, cut short)
+        if "cross_in_front" in names and not hit_ego and not (np.sign(where) != np.sign(lat[0])).any():
             out.append(f"{name}: cross_in_front but never across the ego's path")
         to_path = (
             _nearest_on_path(tr, ego)
@@ -242,13 +259,22 @@ def _nearest_on_path(tr, ego, rows: int = 512):
 
 def play_case(case: dict, make_layers, workdir: Path, seed: int = 0) -> list[str]:
     """Write the scenario of ``case`` (seed ``seed``), play it with ``vei run``'s interpreter, and
-    return what its adversaries did not do (:func:`played_problems`)."""
+    return what its adversaries did not do (:func:`played_problems`); a scenario that cannot be
+    written returns that reason as its one problem."""
     from vei_scenario.interpreter import run_scenario
     from vei_scenario.language.scenario_writer import write_scenario
 
     layers = make_layers(case["text"], seed)
-    written = write_scenario(layers, "scenario")
+    try:
+        written = write_scenario(layers, "scenario")
+    except ValueError as exc:  # (a PlacementError too): nothing to play, and that is what it did not do
+        return [f"could not be written: {exc}"]
     (workdir / "scenario.xosc").write_bytes(written.xosc)
     (workdir / "scenario.xodr").write_bytes(written.xodr)
-    result = run_scenario(workdir / "scenario.xosc", None, round(1.0 / float(layers["rate_hz"]), 6))
+    from vei_scenario.errors import VeiInputError
+
+    try:
+        result = run_scenario(workdir / "scenario.xosc", None, round(1.0 / float(layers["rate_hz"]), 6))
+    except VeiInputError as exc:  # the player refuses what was written: that is what it did not do
+        return [f"could not be played: {exc.reason}"]
     return played_problems(result, layers)

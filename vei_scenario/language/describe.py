@@ -118,6 +118,7 @@ def batch_summary(records: list[ScenarioRecord]) -> dict:
     comforts = [r.outcome["comfort"] for r in records if r.outcome["comfort"] is not None]
     eis = [r.outcome["ei_max_mps"] for r in records]
     crashes = sum(r.outcome["ego_collided"] for r in records)
+    stated = [r for r in records if r.layers.get("intent", "unspecified") != "unspecified"]
     return {
         "scenarios": n,
         "crash_rate": round(crashes / n, 4) if n else None,
@@ -125,7 +126,9 @@ def batch_summary(records: list[ScenarioRecord]) -> dict:
         "mean_min_act_s": round(sum(acts) / len(acts), 4) if acts else None,
         "mean_comfort": round(sum(comforts) / len(comforts), 4) if comforts else None,
         "mean_max_ei_mps": round(sum(eis) / len(eis), 4) if eis else None,
-        "intent_met": sum(r.episodes[-1]["intent_met"] for r in records),
+        # (only where an intent was stated: with none, nothing can be met)
+        "intent_met": sum(r.episodes[-1]["intent_met"] for r in stated) if stated else None,
+        "intent_stated": len(stated),
         "episodes_run": sum(len(r.episodes) for r in records),
         "failed": len(failed),
     }
@@ -174,7 +177,9 @@ def _row(r: ScenarioRecord) -> dict:
         "alert_time_s": o.get("alert_time_s"),
         "comfort": o.get("comfort"),
         "episodes": len(r.episodes),
-        "intent_met": r.episodes[-1]["intent_met"] if r.episodes else None,
+        "intent_met": r.episodes[-1]["intent_met"]
+        if r.episodes and lay.get("intent", "unspecified") != "unspecified"
+        else None,
         "error": r.error,
     }
 
@@ -188,10 +193,15 @@ def batch_csv(records: list[ScenarioRecord]) -> str:
     return buf.getvalue()
 
 
-def batch_document(description: str, backend: str, seed: int, refine: bool, records: list[ScenarioRecord]) -> dict:
+def batch_document(
+    description: str, backend: str, seed: int, refine: bool, records: list[ScenarioRecord], reading: dict | None = None
+) -> dict:
+    """The batch as batch.json holds it; ``reading`` (:func:`~vei_scenario.language.reading.reading_document`)
+    is what the reader understood of the description, when a reader read it."""
     return {
         "description": description,
         "backend": backend,
+        **({"reading": reading} if reading is not None else {}),
         "seed": seed,
         "refine": refine,
         # the step the scenarios were run and scored at: vei run's default, so it gives the same run
@@ -213,6 +223,7 @@ def describe_batch(
     refine: bool = False,
     jobs: int | None = None,
     progress: Callable[[int, int], None] | None = None,
+    reading: dict | None = None,
 ) -> tuple[list[ScenarioRecord], dict]:
     """Generate, run and score ``count`` scenarios (layers of scenario i: ``make_layers(i)``)."""
     all_layers = []
@@ -246,7 +257,7 @@ def describe_batch(
             records.append(_work(t))
             if progress:
                 progress(len(records), len(tasks))
-    doc = batch_document(description, backend, seed, refine, records)
+    doc = batch_document(description, backend, seed, refine, records, reading)
     if out_dir is not None:
         from vei_scenario.language.report_html import summary_html
 

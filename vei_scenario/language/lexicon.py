@@ -90,6 +90,10 @@ ACTOR_NOUNS = {
         "semi",
         "tractor-trailer",
         "articulated lorry",
+        "artic",
+        "big rig",
+        "semi-truck",
+        "wheeler",  # ("an 18-wheeler")
         "bus",
         "coach",
         "tanker",
@@ -138,6 +142,9 @@ CAR_NOUNS = (
     "automobile",
     "jeep",
     "convertible",
+    "red-light runner",
+    "red light runner",
+    "light runner",
 )
 EGO_NOUNS = (
     "ego",
@@ -431,6 +438,11 @@ RED_LIGHT = (
     "ignore the light",
     "ignore the signal",
     "jump the light",
+    "run the stop sign",
+    "run a stop sign",
+    "ignore the stop sign",
+    "blow through the stop sign",
+    "blow the stop sign",
 )
 TURNS = {
     "right": ("turn right", "make a right turn", "turn off right", "turn into the right", "swing right"),
@@ -583,6 +595,8 @@ RELATIONS = {
         "opposing",
         "approaching",
         "approaching from the front",
+        "from the front",
+        "from the front side",
         "opposite approach",
         "opposite arm",
         "opposite road",
@@ -625,7 +639,8 @@ STATIONARY = (
     "waiting",
 )
 COUNTS = {"two": 2, "three": 3, "both": 2, "a pair of": 2, "2": 2, "3": 3}
-MEMBERS = ("one", "the other", "another one", "the first", "the second", "the other one", "the latter", "the former")
+MEMBERS = ("one", "the other", "another one", "the first", "the second", "the other one", "the latter", "the former",
+           "first one", "second one", "the first one", "the second one")  # fmt: skip
 #: More criticality wording.
 CRITICALITY = {
     "dangerous": (
@@ -652,6 +667,7 @@ CRITICALITY = {
         "sharply",
         "hard",
         "suddenly",
+        "sudden",
         "aggressive",
         "aggressively",
         "reckless",
@@ -863,6 +879,7 @@ CONJUNCTIONS = {
     "if",
     "since",
     "whilst",
+    "where",
 }
 RELATIVE = {"which", "who", "that", "whose"}
 NEW_DETERMINERS = {"a", "an", "another", "some", "one"}

@@ -31,7 +31,16 @@ from functools import lru_cache
 from vei_scenario.language import lexicon as L
 from vei_scenario.language import vocabulary as V
 from vei_scenario.language.behaviours import BEHAVIOURS
+from vei_scenario.language.ncap import rewrite as ncap_rewrite
+from vei_scenario.language.normalise import normalise
 from vei_scenario.language.reading import ActorSpec, NotUnderstood, Reading
+from vei_scenario.language.stated import (
+    stated_clock,
+    stated_density,
+    stated_heavy_rain,
+    stated_lanes,
+    stated_outcome,
+)
 
 _TOKEN = re.compile(r"\d+(?:\.\d+)?|km/h|m/s²|m/s2|m/s|[a-z][a-z\-]*(?:'[a-z]+)?|'s|[.;,!?:%]")
 
@@ -196,6 +205,9 @@ class _Actor:
     accel_mps2: float | None = None  # how hard it changes speed ("brakes at 6 m/s²")
     toward: str | None = None  # the side it moves to ("merges right", "swerves left into our lane")
     came_from: bool = False  # a kerb or side said as where it comes from ("walks from the far side")
+    word: str = ""  # the words it was first named by
+    acted_on: bool = False  # the object of someone's verb ("overtakes a truck")
+    pavement: bool = False  # said to be on a pavement (off the road), not in a cycle lane
 
 
 #: Euro NCAP's names of its test scenarios ("Car-to-Car Rear stationary", "Car-to-Pedestrian Nearside
@@ -229,8 +241,23 @@ def _ncap_target(m: re.Match) -> str:
     return who
 
 
+def _actor_word(word: str) -> bool:
+    """Whether ``word`` alone names a road user other than the ego."""
+    return any(TABLE.get((w,), ("",))[0] == "actor" and TABLE[(w,)][1] != "ego" for w in forms(word))
+
+
+def _actor_noun_in(phrase: str) -> str | None:
+    """The road-user noun a phrase ends in ("white transit van": "van"), or None."""
+    for word in reversed(re.findall(r"[a-z][a-z-]*", phrase)):
+        if _actor_word(word):
+            return word
+    return None
+
+
 def _tokens(text: str) -> list[str]:
     text = text.lower().replace("\u2019", "'").replace("’", "'")
+    text = normalise(text, _actor_noun_in)
+    text = ncap_rewrite(text, _actor_word)
     text = _NCAP_NAME.sub(_ncap_said, text)
     out = []
     for tok in _TOKEN.findall(text):
@@ -301,6 +328,28 @@ def _does_next(tokens: list[str], i: int) -> bool:
     return key is not None and TABLE[key][0] in ("behaviour", "ego_verb", "turn")
 
 
+def _definite_before(mentions, k: int) -> bool:
+    """Whether the road user named last before mention ``k`` was named definitely ("the car ahead, a
+    taxi, ...": an apposition; "a van, a car, ...": a list)."""
+    for m in reversed(mentions[:k]):
+        if m.slot == "actor":
+            return m.det in ("the", "this", "that", "our", "my", "its")
+    return False
+
+
+def _does_soon(tokens: list[str], i: int) -> bool:
+    """Whether a behaviour starts at ``i`` or after a short phrase describing who does it ("a mum with
+    a buggy steps out"), before the clause ends."""
+    for k in range(i, min(i + 6, len(tokens))):
+        if tokens[k] in ".;,!?:" or (k > i and tokens[k] in L.CONJUNCTIONS) or (k > i and _actor_at(tokens, k)):
+            return False
+        if _does_next(tokens, k):
+            return True
+        if k + 1 < len(tokens) and tokens[k + 1] in _MOTION_PARTICLES and _verb_before(tokens[k], tokens[k + 1]):
+            return True  # (a verb the reader reads through a plain one: "swings across")
+    return False
+
+
 def _actor_at(tokens: list[str], i: int) -> bool:
     """Whether an actor's name starts at ``i`` (of any length: "bus" in "bus stops" too)."""
     return i < len(tokens) and any(
@@ -357,6 +406,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
     tokens = _tokens(text)
     clauses: list[tuple[str, list[_Mention]]] = [("sequence", [])]
     ignored: list[str] = []
+    read_as: list[tuple[str, str]] = []
     i = 0
     while i < len(tokens):
         tok = tokens[i]
@@ -412,8 +462,32 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
             skipped = _best(tokens[: i + 1] + tokens[i + 2 :], i)
             if skipped is not None and len(skipped) > 1:
                 key, adverb = skipped, tokens[i + 1]
+        if key is None and tok not in FUNCTION_WORDS and i + 1 < len(tokens) and _verb_before(tok, tokens[i + 1]):
+            # a verb the lexicon lacks, with where it goes ("swung into my lane", "bolted across the road"):
+            # read as the plain motion verb with the same words, when that is a behaviour
+            to_a_place = tokens[i + 1] in ("to", "in") and tokens[i + 2 : i + 3] and tokens[i + 2] in _DETERMINERS
+            into = ["into"] if to_a_place else tokens[i + 1 : i + 2]  # ("changing to our lane", not "decides to")
+            for plain in PLAIN_MOTION_VERBS:
+                swapped = _best(tokens[:i] + [plain] + into + tokens[i + 2 :], i)
+                if (
+                    swapped is not None
+                    and len(swapped) > 1
+                    and TABLE[swapped][0] == "behaviour"
+                    and TABLE[swapped][1][0] != "keep_going"  # (a specific behaviour, or nothing is read)
+                ):
+                    key = swapped
+                    read_as.append((" ".join(tokens[i : i + len(swapped)]), " ".join(swapped)))
+                    break
+        if key is None and (tok == "must" or (tok in _MODAL_VERBS and tokens[i + 1 : i + 2] == ["to"])):
+            clauses[-1][1].append(_Mention("modal", tok, tok, i, prev, end=i + 1))  # "it has to brake"
+            i += 1
+            continue
         if key is None and tok in L.CONJUNCTIONS:
             clauses[-1][1].append(_Mention("conj", tok, tok, i, prev, end=i + 1))
+            i += 1
+            continue
+        if key is None and tok in L.RELATIVE and tokens[i - 1 : i] and tokens[i - 1] in ("in", "at", "on", "during"):
+            clauses[-1][1].append(_Mention("conj", tok, tok, i, prev, end=i + 1))  # "a test in which a truck ..."
             i += 1
             continue
         if key is None and tok in L.RELATIVE:
@@ -428,19 +502,49 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
                     bool(clauses[-1][1]) and clauses[-1][1][-1].slot == "actor" and clauses[-1][1][-1].end == i
                 )
                 verb = "VERB" in pos and not pos & {"ADJ", "ADV"} and not tok.endswith(("ing", "ed"))
-                if i + 1 < len(tokens) and _actor_at(tokens, i + 1):
-                    verb = False  # a word naming what kind before an actor ("a police car", "a school bus")
-                elif det and det != "the" and prev in _OPENERS and "VERB" not in pos and _does_next(tokens, i + 1):
-                    # "a unicorn runs out": someone the reader cannot place does something; refused, not
-                    # given to whoever was named last (the ego of "... and a unicorn runs out")
-                    clauses[-1][1].append(_Mention("unknown_actor", tok, tok, i, prev, end=i + 1))
+                if _after_article(tokens, i):
+                    verb = False  # (in a noun phrase: "the petrol station" names a place, no verb)
+                if i + 1 < len(tokens) and _modifies_actor(tokens, i + 1):
+                    verb = False  # a word naming what kind before an actor ("a police car", "a Ford Transit van")
+                elif _new_unknown_subject(tokens, i) and "VERB" not in pos and _does_soon(tokens, i + 1):
+                    # "a unicorn runs out": someone the reader has no word for does something: a road
+                    # user of its own (its kind read from what it does), not whoever was named last
+                    clauses[-1][1].append(_Mention("actor", UNKNOWN_KIND, tok, i, prev, end=i + 1, det=det))
+                    ignored.pop()
                 if verb or (not pos and after_actor and tok.endswith("s")):  # (a word lemminflect lacks)
                     clauses[-1][1].append(_Mention("unknown_verb", tok, tok, i, prev, end=i + 1))
             i += 1
             continue
         slot, value = TABLE[key]
+        before = tokens[i - 1] if i else ""
+        attributive = before in _DETERMINERS or (before.isalpha() and before not in FUNCTION_WORDS)
+        if slot in ("weather", "time", "density", "map") and attributive and _modifies_actor(tokens, i + len(key)):
+            # "a parked ice cream van", "a night bus": a word of the setting naming what kind of road user
+            j = next(k for k in range(i + len(key), len(tokens)) if _actor_at(tokens, k))
+            ignored.extend(tokens[i:j])
+            last = clauses[-1][1][-1] if clauses[-1][1] else None
+            if last is not None and last.end == i:  # ("parked" stands right before the road user it says)
+                last.end = j
+            i = j
+            continue
         if slot == "actor" and i + len(key) < len(tokens) and tokens[i + len(key)] in _PARTS:
             i += len(key) + 1  # "50 % of the vehicle width", "a car door": a part of one, not a road user
+            continue
+        if slot in ("side", "kerb_side", "lane_side") and i + len(key) < len(tokens) and tokens[i + len(key)] in _PARTS:
+            ignored.extend(tokens[i : i + len(key) + 1])  # "the nearside wing": a part of a vehicle, no side
+            i += len(key) + 1
+            continue
+        if slot == "actor" and value != "ego" and _predicate_of_ego(tokens, i):
+            ignored.append(" ".join(tokens[i : i + len(key)]))  # "I was the designated driver": the ego
+            i += len(key)
+            continue
+        noun_here = (
+            tokens[i - 1 : i] in (["the"], ["a"], ["an"]) and "NOUN" in _pos(tok) and tok not in ("stop", "crossing")
+        )
+        braking = "brake" in forms(tok)  # ("slammed on its brakes": the braking, said with its brakes)
+        if slot == "behaviour" and len(key) == 1 and (tokens[i - 1 : i] in _POSSESSIVES or noun_here) and not braking:
+            ignored.append(tok)  # "missed his tailgate", "there is the crash": a thing, not a behaviour
+            i += 1
             continue
         if key == ("stop",) and det:  # "the stop", "a stop": a bus stop, a place
             slot, value = "kerb", None
@@ -473,7 +577,95 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
             clauses[-1][1].append(_Mention("toward", side, side, toward_at, tokens[toward_at - 1], end=toward_at + 1))
             used = max(used, toward_at + 1 - i)
         i += used
-    return [c for c in clauses if any(m.slot not in ("punct", "link") for m in c[1])], ignored
+    return [c for c in clauses if any(m.slot not in ("punct", "link") for m in c[1])], ignored, read_as
+
+
+#: Verbs that with "to" say what someone must do ("it has to brake": a requirement, said of the ego).
+_MODAL_VERBS = frozenset({"has", "have", "had", "needs", "need", "needed"})
+_POSSESSIVES = (["his"], ["her"], ["its"], ["their"], ["my"], ["our"], ["your"])
+
+
+def _predicate_of_ego(tokens: list[str], i: int) -> bool:
+    """Whether the road-user noun at ``i`` says what the ego is ("I was the designated driver", "we
+    are the lead car"): after the narrator, a copula and a determiner (and up to two more words)."""
+    j = i - 1
+    while j >= 0 and i - j <= 3 and tokens[j] not in _COPULAS:
+        if tokens[j] not in _DETERMINERS and (tokens[j] in FUNCTION_WORDS or not tokens[j].isalpha()):
+            return False
+        j -= 1
+    return j >= 1 and tokens[j] in _COPULAS and tokens[j - 1] in ("i", "we") and tokens[j + 1] in _DETERMINERS
+
+
+def _after_article(tokens: list[str], i: int) -> bool:
+    """Whether the word at ``i`` follows an article, past at most two words the reader has no entry
+    for ("the petrol station", "a Ford Transit"): a name, not a verb."""
+    j = i - 1
+    while j >= 0 and i - j <= 3:
+        if tokens[j] in ("a", "an", "the", "my", "our", "his", "her", "their", "its"):
+            return True
+        if tokens[j] in FUNCTION_WORDS or not tokens[j].isalpha() or _best(tokens, j) is not None:
+            return False
+        j -= 1
+    return False
+
+
+def _counts_actor(mentions, k: int) -> bool:
+    """Whether count ``mentions[k]`` stands before a road user's name, past words that describe it
+    ("two parked vans"), not before anything else ("the middle lane of three, ...")."""
+    end = mentions[k].end
+    for m in mentions[k + 1 :]:
+        if m.start - end > 1:
+            return False
+        if m.slot == "actor":
+            return True
+        if m.slot not in _POSITIONAL:
+            return False
+        end = m.end
+    return False
+
+
+def _new_unknown_subject(tokens: list[str], i: int) -> bool:
+    """Whether the word at ``i`` names someone new at the start of a clause: "a" or "an" before it,
+    past at most two words the reader has no entry for ("when a black BMW ..."), and a clause
+    opening before that."""
+    j = i - 1
+    while j >= 0 and i - j <= 3 and tokens[j] not in ("a", "an", "another", "some") and _best(tokens, j) is None:
+        if tokens[j] in FUNCTION_WORDS or not tokens[j].isalpha():
+            return False
+        j -= 1
+    if j < 0 or tokens[j] not in ("a", "an", "another", "some"):
+        return False
+    return (tokens[j - 1] if j else "") in _OPENERS
+
+
+def _modifies_actor(tokens: list[str], j: int) -> bool:
+    """Whether a road user's name follows at ``j``, past at most two words the reader has no entry
+    for ("ice [cream] van"): the words before it then say what kind it is."""
+    for k in range(j, min(j + 3, len(tokens))):
+        if _actor_at(tokens, k):
+            return True
+        if _best(tokens, k) is not None or tokens[k] in FUNCTION_WORDS or not tokens[k].isalpha():
+            return False
+    return False
+
+
+#: Plain verbs of motion an unknown verb is read as, with the words after it ("swung into": "move into").
+PLAIN_MOTION_VERBS = ("move", "go", "walk")
+
+
+#: Words of where a motion goes, after its verb ("into", "across", "out" ...).
+_MOTION_PARTICLES = frozenset(
+    "into to across out over in onto off through past away back towards toward round around from between".split()
+)
+
+
+def _verb_before(word: str, after: str) -> bool:
+    """Whether ``word`` reads as a verb of motion here: a verb (by lemminflect) that is not also a noun
+    or adjective, or one that is but is followed by where it goes ("changing to our lane")."""
+    pos = _pos(word)
+    if "VERB" not in pos:
+        return False
+    return not pos & {"NOUN", "ADJ", "PROPN"} or (after in _MOTION_PARTICLES and word.endswith(("ing", "ed", "s")))
 
 
 #: Verbs whose very wording is critical ("darts out", "tailgates"), unless the clause says otherwise.
@@ -579,7 +771,12 @@ def _resolve_relation(a: _Actor, map_kind: str | None) -> str | None:
         return f"junction_{side}"  # waiting at the junction on the left, then pulling out
     if first == "cross_in_front" and junction:
         return f"junction_{side or 'left'}"
-    if first == "run_red_light" or (a.arm and junction) or (junction and first in (None, "keep_going") and a.side):
+    same_way = "ahead" in a.said and a.relation != "oncoming"  # ("in the same direction on the right": beside)
+    if (
+        first == "run_red_light"
+        or (a.arm and junction)
+        or (junction and first in (None, "keep_going") and a.side and not same_way)
+    ):
         return f"junction_{side or 'left'}"
     lateral = first in ("cut_in", "overtake", "forced_turn", "follow_vehicle")
     if a.kerb and not vehicle and not (lateral and first != "forced_turn"):
@@ -592,16 +789,16 @@ def _resolve_relation(a: _Actor, map_kind: str | None) -> str | None:
 def read(text: str) -> Reading:
     """Parse ``text`` into a :class:`~vei_scenario.language.reading.Reading` (with ``ignored``
     words); raise :class:`~vei_scenario.language.reading.NotUnderstood` naming what cannot be placed."""
-    clauses, ignored = scan(text)
+    clauses, ignored, read_as = scan(text)
     clauses = _drop_label(clauses)
     clauses, ego_follows = _ego_following(clauses)
     r = Reading()
     actors: list[_Actor] = []
-    refuse: list[str] = []
     subject: _Actor | str | None = None
     pending: list[_Mention] = []
     last_group: list[_Actor] | None = None  # ("Two scooters ride ahead; one of them brakes": that pair)
     both_with_ego = False  # ("CCRb: both cars at 50 km/h ...": the ego is one of them)
+    bound: dict[str, _Actor | str] = {}  # "he"/"she" → whom it first named
     for link, mentions in clauses:
         named: list[tuple[_Actor | str, str]] = []  # (actor, role) in order: subject, prep, verb, participle
         clause_subject: _Actor | str | None = None
@@ -621,6 +818,8 @@ def read(text: str) -> Reading:
                     expect_subject = True
                 prev = prev if m.value == "'s" else m
                 continue
+            if m.slot == "modal":
+                continue
             if m.slot in ("conj", "link"):
                 expect_subject = True
                 prev = m
@@ -637,10 +836,17 @@ def read(text: str) -> Reading:
                 prev = m
                 continue
             if m.slot == "count":
+                if not _counts_actor(mentions, k):
+                    continue  # ("the middle lane of three": a count of no road user)
                 count = L.COUNTS.get(m.words, 2)
                 if m.words == "both" and not actors:  # "both cars at 50 km/h" before anyone: the ego and one
                     count, both_with_ego = 1, True
                 continue
+            if m.slot == "relative" and m.words == "that" and nxt is not None and nxt.slot == "actor":
+                if nxt.start - m.end <= 2 and nxt.value != "ego":  # "I want that the front car brakes": a new clause
+                    expect_subject = True
+                    prev = m
+                    continue
             if m.slot == "relative":
                 if named and named[-1][1] != "subject":  # "a child who steps out": the child acts
                     clause_subject = subject = named[-1][0]
@@ -666,11 +872,14 @@ def read(text: str) -> Reading:
                         continue  # "overtakes it": an object already known
                     who = subject if subject is not None else "ego"
                     verb = next((x for x in mentions[k + 1 :] if x.slot not in ("criticality", "speed_word")), None)
-                    if who == "ego" and actors and verb is not None and verb.slot == "behaviour":
+                    modal = verb is not None and verb.slot == "modal"  # ("Ego at 100 km/h, it has to brake hard")
+                    if who == "ego" and actors and verb is not None and verb.slot == "behaviour" and not modal:
                         # "as the ego approaches, it pulls out": what the ego does not do (the planner
                         # drives it) is the last road user's, unless that one stands and it is a slowing
                         still = actors[-1].stationary and verb.value[0] in ("stop", "sudden_stop", "change_speed")
                         who = who if still else actors[-1]
+                    if m.words in ("he", "she"):  # a person's pronoun names the same one all through a story
+                        who = bound.setdefault(m.words, who)  # ("the driver said she ... She braked")
                     role = "subject"
                 elif m.slot == "member":
                     pool = group or last_group or []
@@ -685,11 +894,34 @@ def read(text: str) -> Reading:
                     who = "ego"
                 else:
                     same = [a for a in actors if a.kind == m.value]
+                    last = named[-1][0] if named and isinstance(named[-1][0], _Actor) else None
+                    if (
+                        last is not None
+                        and m.det in ("a", "an")
+                        and k > 0
+                        and mentions[k - 1].slot == "punct"
+                        and mentions[k - 1].value == ","
+                        and nxt is not None
+                        and nxt.slot == "punct"
+                        and not (k + 2 < len(mentions) and mentions[k + 2].slot in ("conj", "actor", "count"))
+                        and _definite_before(mentions, k)
+                        and (last.kind == m.value or (last.kind in VEHICLES and m.value in VEHICLES))
+                    ):  # "the car ahead, a taxi, stops": the same one, said again (its kind the more exact)
+                        last.kind = str(m.value) if last.kind == "car" else last.kind
+                        prev = m
+                        continue
                     if same and (m.det in ("the", "this", "that", "its", "our", "my") or (not m.det and _bare(m))):
                         who = same[-1]  # ("Target: cyclist, 30 m ahead. Cyclist turns left.": the same one)
                     elif (
+                        role == "prep"
+                        and m.det == "the"
+                        and m.words in ("car", "vehicle")
+                        and not any(a.kind in VEHICLES for a in actors)
+                    ):  # "across in front of the car", no car named before: the one the story is told from
+                        who = "ego"
+                    elif (
                         m.value in ("bicycle", "e-scooter")
-                        and m.prev in ("on", "riding")
+                        and m.prev in ("on", "riding", "with")
                         and named
                         and isinstance(named[-1][0], _Actor)
                         and named[-1][0].kind == "pedestrian"
@@ -701,7 +933,7 @@ def read(text: str) -> Reading:
                     else:
                         lead = m.prev in _LEADING or m.words.split()[0] in _LEADING  # ("the lead car": followed)
                         made = [
-                            _Actor(str(m.value), wrong_way=m.words in L.WRONG_WAY_NOUNS, followed=lead)
+                            _Actor(str(m.value), wrong_way=m.words in L.WRONG_WAY_NOUNS, followed=lead, word=m.words)
                             for _ in range(count)
                         ]
                         for a in made:
@@ -715,8 +947,7 @@ def read(text: str) -> Reading:
                     role == "subject"
                     and isinstance(who, _Actor)
                     and prev is not None
-                    and prev.slot == "conj"
-                    and prev.value == "and"
+                    and ((prev.slot == "conj" and prev.value == "and") or (prev.slot == "punct" and prev.value == ","))
                     and named
                     and named[-1][1] == "subject"
                     and isinstance(named[-1][0], _Actor)
@@ -731,6 +962,8 @@ def read(text: str) -> Reading:
                     for pm in passive:  # "the AV is tailgated by a sports car": the car tailgates
                         _apply(pm, who, r, link, added)
                     passive = []
+                if role == "verb" and isinstance(who, _Actor) and after_verb:
+                    who.acted_on = True  # ("the ego is overtaking a truck": the truck is in the scene)
                 if role == "verb" and isinstance(who, _Actor) and isinstance(clause_subject, _Actor) and after_verb:
                     who.object_of = who.object_of or clause_subject
                 named.append((who, role))
@@ -759,6 +992,10 @@ def read(text: str) -> Reading:
                     expect_subject = True
                 prev = m
                 continue
+            if m.slot == "behaviour" and m.next_ == "by" and nxt is not None and nxt.slot == "actor":
+                if nxt.value == "ego" and nxt.start <= m.end + 2:  # "a cyclist overtaken by the ego": the ego's
+                    prev = m
+                    continue
             if m.slot in _VERBS:
                 target = clause_subject
                 if (
@@ -783,10 +1020,7 @@ def read(text: str) -> Reading:
                     # bus": the bus is what it overtakes, not who)
                     target = clause_subject = subject
                 if target is None:
-                    if m.slot == "unknown_verb":  # something does something, and neither is known
-                        if not named and not r.actors:
-                            refuse.append(m.words)
-                    else:
+                    if m.slot != "unknown_verb":  # (an unknown verb of nobody: listed as not used)
                         pending.append(m)
                     prev = m
                     continue
@@ -804,11 +1038,22 @@ def read(text: str) -> Reading:
                 pending.append(replace(m, value=_SEEN_FROM_OBJECT[m.value]))
             else:
                 who = _nearest(named, m)
+                if who == "ego" and m.slot == "distance" and actors:
+                    who = actors[-1]  # a gap said of the ego is the gap to the road user named last
                 if who is None and m.slot == "speed" and isinstance(clause_subject, _Actor):
                     who = clause_subject  # "..., and then overtakes it at 25 km/h": the one who overtakes
                 if who is None and m.slot in ("returns", "wrong_way") and isinstance(subject, _Actor):
                     who = subject  # "..., then cuts back": what it does, said without naming it again
-                if who is None and m.slot == "speed" and not actors and r.ego_speed_mps is None:
+                too_fast = m.slot == "speed" and isinstance(who, _Actor) and m.value > FASTEST_MPS.get(who.kind, 1e9)
+                ego_right_before = (
+                    prev is not None and prev.slot == "actor" and prev.value == "ego" and prev.prev == "by"
+                )
+                if m.slot == "speed" and ego_right_before and _next_to_ego(prev, m) and r.ego_speed_mps is None:
+                    r.ego_speed_mps = m.value  # "overtaken by the ego at 50 km/h": the ego's speed
+                elif too_fast and r.ego_speed_mps is None:
+                    # "a dog ran out in front of the car at 50 km/h": no walker goes that fast; the ego does
+                    r.ego_speed_mps = m.value
+                elif who is None and m.slot == "speed" and not actors and r.ego_speed_mps is None:
                     r.ego_speed_mps = m.value  # "Motorway at 110 km/h, a lorry ...": before anyone, the ego's
                 elif who is None:
                     pending.append(m)
@@ -833,6 +1078,10 @@ def read(text: str) -> Reading:
             for who, role in named:
                 if isinstance(who, _Actor) and role in ("subject", "participle") and who.crit is None:
                     who.crit = crit_here
+        if not named and actors and any(p.slot == "distance" for p in pending):
+            for p in [p for p in pending if p.slot == "distance"]:  # ("..., 40 m gap": to the one named last)
+                _apply(p, actors[-1], r, link, added)
+            pending = [p for p in pending if p.slot != "distance"]
         if not named and pending and any(p.slot == "speed" for p in pending) and r.ego_speed_mps is None:
             # "Going straight over the junction at 30 km/h while ...": a clause with nobody named is the ego's
             r.ego_speed_mps = next(p.value for p in pending if p.slot == "speed")
@@ -840,29 +1089,62 @@ def read(text: str) -> Reading:
         for x in joined:
             x.group = None
         joined = []
-    for p in pending:
-        if p.slot in ("behaviour", "turn"):
-            refuse.append(p.words)
-    refuse += [m.words for _, mentions in clauses for m in mentions if m.slot == "unknown_actor"]
+    unplaced = [p.words for p in pending if p.slot in ("behaviour", "turn")]  # (said of nobody)
+    if unplaced and not actors:  # something is done, and nobody the reader can place does it
+        raise NotUnderstood(list(dict.fromkeys(ignored))[:12], text, missing="road user")
     if both_with_ego and r.ego_speed_mps is None and actors and actors[0].speed_mps is not None:
         r.ego_speed_mps = actors[0].speed_mps  # (the speed said of both)
-    for a in actors:  # an actor that does nothing known but an unknown verb: that verb cannot be placed
-        if not a.behaviours and not a.stationary and a.unknown:
-            refuse.extend(a.unknown)
-    if refuse:
-        raise NotUnderstood(list(dict.fromkeys(refuse)), text)
+    ignored += unplaced
+    if len(actors) > MAX_ACTORS:
+        raise NotUnderstood([f"{len(actors)} road users (a scenario holds at most {MAX_ACTORS} besides the ego)"], text)
+    _refuse_if_nothing_to_place(text, actors, clauses, ignored)
+    if any(not _idle(a) for a in actors):  # people and vehicles only mentioned (passengers, a car in a
+        idle = [a for a in actors if _idle(a)]  # story's aside) are no road users of the scenario
+        actors = [a for a in actors if not _idle(a)]
+        ignored += [a.word or a.kind for a in idle]
+    for a in actors:
+        if a.kind == UNKNOWN_KIND:  # a road user the reader has no word for: its kind from what it does
+            names = {b[0] for b in a.behaviours}
+            a.kind = (
+                "pedestrian" if names & {"cross_in_front", "along_road"} and not names & VEHICLE_BEHAVIOURS else "car"
+            )
+        if not a.behaviours and not a.stationary and a.unknown:  # only a verb the reader has no word for: it goes on
+            a.behaviours.append(("keep_going", {}, None, "sequence"))
     for a in actors:  # "turns out of the junction": it comes from a side road
         for k, (_name, cfg, c, lk) in enumerate(a.behaviours):
             if cfg.pop("from_side_road", None):
-                if a.kind == "pedestrian":  # "a child emerges from between parked cars": a walker crosses
-                    a.behaviours[k] = ("cross_in_front", cfg, c, lk)  # (from a side road only if one is said)
+                if a.kind == "pedestrian" or (a.kind in RIDERS and not a.arm):
+                    # "a child emerges from between parked cars": a walker (or a rider, unless a side road
+                    # is said) crosses
+                    a.behaviours[k] = ("cross_in_front", cfg, c, lk)
                 else:
                     a.arm = True
         if a.kind == "pedestrian":  # ("comes out of a side street and crosses": one crossing)
             a.behaviours = [b for k, b in enumerate(a.behaviours) if k == 0 or b[0] != a.behaviours[k - 1][0]]
+    for a in actors:
+        names = [b[0] for b in a.behaviours]
+        if a.kind == "pedestrian" and "run_red_light" in names:  # a walker against red crosses the road
+            a.behaviours = [("cross_in_front", *b[1:]) if b[0] == "run_red_light" else b for b in a.behaviours]
+            a.behaviours = [b for k, b in enumerate(a.behaviours) if k == 0 or b[0] != a.behaviours[k - 1][0]]
+        elif a.kind in VEHICLES and "cross_in_front" in names and not (a.kerb or a.kerb_side or a.lane_side):
+            # a vehicle crossing the ego's road goes through a junction across its path
+            a.behaviours = [("run_red_light", *b[1:]) if b[0] == "cross_in_front" else b for b in a.behaviours]
+        elif a.kind in VEHICLES and "cross_in_front" in names and a.lane_side:
+            # a vehicle moving across from a lane: into the ego's (what it does next, if said)
+            rest = [b for b in a.behaviours if b[0] != "cross_in_front"]
+            a.behaviours = rest or [("cut_in", *a.behaviours[0][1:])]
+    for a in actors:  # the ego turning towards the side a rider goes straight on: the rider goes its way
+        if (
+            r.ego_route in ("left", "right")
+            and a.kind in RIDERS
+            and (a.side or a.lane_side) == r.ego_route
+            and [b[0] for b in a.behaviours] in ([], ["keep_going"])
+        ):
+            a.said.add("ahead")
     vehicles_giving_way = any(a.kind in VEHICLES and any(b[0] == "give_way" for b in a.behaviours) for a in actors)
+    at_junction = any(b[0] in JUNCTION_BEHAVIOURS for a in actors for b in a.behaviours)
     if (r.map_kind is None and r.ego_route in ("left", "right")) or (
-        r.map_kind in (None, "straight") and (any(a.arm for a in actors) or vehicles_giving_way)
+        r.map_kind in (None, "straight") and (any(a.arm for a in actors) or vehicles_giving_way or at_junction)
     ):
         r.map_kind = "crossroad"  # the ego turns, or someone comes out of or waits in a side road: a junction
     junction = r.map_kind in ("crossroad", "roundabout")
@@ -893,6 +1175,8 @@ def read(text: str) -> Reading:
         if classes:  # the tone of what it does carries over to its unqualified behaviours
             behaviours = [(n, c, k or classes[0], lk) for n, c, k, lk in behaviours]
         if not behaviours and a.stationary:
+            behaviours = [("stop", {}, None, "sequence")]  # (standing: stopped, and stays so)
+        if not behaviours:  # where it is said, but not what it does: it goes on
             behaviours = [("keep_going", {}, None, "sequence")]
         if a.accel_mps2 is not None:  # "at 6 m/s²": the deceleration or rate of what it does (within its range)
             behaviours = [(*_with_rate(n, c, a.accel_mps2), k, lk) for n, c, k, lk in behaviours]
@@ -904,6 +1188,22 @@ def read(text: str) -> Reading:
         if behaviours and behaviours[0][0] == "cut_in" and a.distance_m is not None:
             name, cfg, c, lk = behaviours[0]
             behaviours[0] = (name, {**cfg, "gap_m": a.distance_m}, c, lk)
+        if (
+            a.kind in VULNERABLE
+            and (a.relation or "").startswith("junction_")
+            and not junction
+            and all(b[0] == "keep_going" for b in behaviours)
+        ):  # "a pedestrian crossing from the left" where there is no junction: it crosses from that kerb
+            a.relation = "roadside_" + str(a.relation).rsplit("_", 1)[1]
+            crit = next((b[2] for b in behaviours if b[2]), a.crit)
+            behaviours = [("cross_in_front", {}, crit, "sequence")]
+        if a.kind in RIDERS and a.pavement and behaviours and behaviours[0][0] in ("cut_in", "forced_turn"):
+            # "riding on the sidewalk, then turning into the road before our car": it crosses into the path
+            behaviours = [("cross_in_front", {}, *behaviours[0][2:])] + behaviours[1:]
+        crossing_at = next((k for k, b in enumerate(behaviours) if b[0] == "cross_in_front"), None)
+        before = {b[0] for b in behaviours[:crossing_at]} if crossing_at else set()
+        if a.kind in VULNERABLE and crossing_at and before <= {"keep_going", "stop", "along_road", "keep_lane"}:
+            behaviours = behaviours[crossing_at:]  # ("... stops; then crosses from the left"): from the kerb
         a.behaviours = behaviours
         spec.relation = _resolve_relation(a, r.map_kind)
         if (
@@ -931,19 +1231,59 @@ def read(text: str) -> Reading:
     if r.map_kind is None and any(s.relation == "junction_opposite" for s in r.actors):
         r.map_kind = "crossroad"
     r.ignored = list(dict.fromkeys(ignored))
-    said = (r.map_kind, r.lanes, r.weather, r.time, r.density, r.intent, r.ego_route, r.ego_speed_mps)
-    mentioned_ego = any(m.slot == "actor" and m.value == "ego" for _, ms in clauses for m in ms)
-    if not r.actors and not mentioned_ego and all(v is None for v in said) and r.ignored:
-        raise NotUnderstood(r.ignored[:12], text)  # nothing of it could be read: say so, name the words
-    if len(r.actors) > MAX_ACTORS:
-        raise NotUnderstood(
-            [f"{len(r.actors)} road users (a scenario holds at most {MAX_ACTORS} besides the ego)"], text
-        )
+    r.read_as = read_as
+    said = " ".join(_tokens(text))
+    r.intent = stated_outcome(said) or r.intent  # (the whole text's stated outcome first)
+    r.lanes = stated_lanes(said) or r.lanes
+    r.time = stated_clock(said) or r.time
+    r.density = stated_density(said) or r.density
+    if r.weather in (None, "rain") and stated_heavy_rain(said):
+        r.weather = "heavy_rain"
     return r
+
+
+def _idle(a: _Actor) -> bool:
+    """Whether nothing is said of ``a`` but its name (and verbs the reader has no word for)."""
+    return not (
+        a.behaviours or a.stationary or a.speed_mps is not None or a.distance_m is not None or a.relation
+        or a.said or a.wrong_way or a.side or a.kerb or a.lane_side or a.kerb_side or a.arm or a.followed
+        or a.parked or a.object_of is not None or a.acted_on
+    )  # fmt: skip
+
+
+def _refuse_if_nothing_to_place(text: str, actors: list[_Actor], clauses, ignored: list[str]) -> None:
+    """Refuse only what cannot become a scenario: no road user at all (not even the ego) and nothing
+    else read, or road users of which nothing at all says what they do or where they are (the
+    refusal names what is missing and the words not used). Anything else is read as far as it goes."""
+    unused = list(dict.fromkeys(ignored))
+    mentions = [m for _, ms in clauses for m in ms]
+    if not actors:
+        said = any(m.slot not in ("punct", "link", "conj", "relative", "unknown_verb") for m in mentions)
+        if not said:
+            raise NotUnderstood(unused[:12], text, missing="road user")
+        return
+    verbs = any(m.slot in _VERBS for m in mentions)
+    described = any(
+        a.behaviours or a.stationary or a.unknown or a.speed_mps is not None or a.relation or a.said or a.wrong_way
+        or a.side or a.kerb or a.lane_side or a.distance_m is not None or a.arm
+        for a in actors
+    )  # fmt: skip
+    if not (verbs or described):
+        kinds = ", ".join(dict.fromkeys("road user" if a.kind == UNKNOWN_KIND else a.kind for a in actors))
+        raise NotUnderstood(unused[:12], text, missing="behaviour", of=kinds)
 
 
 #: Adversaries a scenario holds (the layers schema's limit).
 MAX_ACTORS = 8
+#: The fastest a road user of a kind goes on its own (m/s): a faster speed said beside it is the ego's.
+FASTEST_MPS = {"pedestrian": 4.5, "bicycle": 14.0, "e-scooter": 12.0}
+#: Kerb words off the road: a rider there entering the road crosses into the ego's path from that side.
+PAVEMENT_WORDS = ("pavement", "sidewalk", "footpath", "footway", "kerb", "curb")
+#: Behaviours that happen only at a junction: a description with one of them is set at a crossroad
+#: (unless it says a roundabout).
+JUNCTION_BEHAVIOURS = ("run_red_light", "turn_across", "turn_into", "forced_turn")
+#: The kind of a road user named by a word the reader does not know, until what it does tells.
+UNKNOWN_KIND = "unknown"
 VULNERABLE = ("pedestrian", "bicycle", "e-scooter")
 VEHICLES = ("car", "van", "truck")
 RIDERS = ("bicycle", "e-scooter")
@@ -968,7 +1308,8 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool) -> None:
         and (spec.relation in ("oncoming", "junction_opposite") or "oncoming" in a.said)
     ):
         spec.relation = "junction_opposite"
-        spec.behaviours = [("turn_across", {}, crit, link)] + spec.behaviours[1:]
+        same = ("cut_in", "cross_in_front", "run_red_light", "keep_going")  # ("... and crossed into our path")
+        spec.behaviours = [("turn_across", {}, crit, link)] + [b for b in spec.behaviours[1:] if b[0] not in same]
         return
     if (
         junction
@@ -1003,7 +1344,7 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool) -> None:
         )
     ):
         returns = a.returns or first == "overtake" or any(n in ("change_lane", "cut_in") for n in names[1:])
-        in_lane = a.wrong_way or "ahead" in a.said
+        in_lane = (a.wrong_way or "ahead" in a.said) and first != "overtake"  # (an overtaker starts in its lane)
         cfg = {"returns": 1.0} if returns else {}
         rest = [b for b in spec.behaviours if b[0] not in ("cut_in", "change_lane", "keep_going", "overtake")]
         spec.behaviours = [("wrong_way", cfg, crit, link)] + rest
@@ -1039,8 +1380,9 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool) -> None:
 
 
 def _from(m) -> bool:
-    """Whether place mention ``m`` says where its road user comes from ("from the far side")."""
-    return m.prev == "from" or m.words.startswith("from ")
+    """Whether place mention ``m`` says where its road user comes from ("from the far side", "came off
+    the sidewalk")."""
+    return m.prev in ("from", "off") or m.words.startswith(("from ", "off "))
 
 
 def _parked(actors: list[_Actor], specs: list[ActorSpec]) -> None:
@@ -1124,7 +1466,7 @@ def _tidy(a: _Actor) -> list:
             out[-1] = (name, cfg, crit or b[2], lk)
             continue
         out.append(b)
-    if a.kind in VEHICLES and any(b[0] == "run_red_light" for b in out):
+    if a.kind != "pedestrian" and any(b[0] == "run_red_light" for b in out):
         out = [b for b in out if b[0] != "cross_in_front"]  # crossing against red is the red-light run
     if any(b[0] == "give_way" for b in out):  # "stops at the line and waits for us": giving way stops
         out = [
@@ -1141,7 +1483,8 @@ def _tidy(a: _Actor) -> list:
 
 #: Parts and measures of a vehicle: "vehicle width", "car door" name no road user.
 _PARTS = {"width", "length", "overlap", "centreline", "centerline", "door", "doors", "bumper", "mirror", "bonnet",
-          "hood", "boot", "trunk", "wheel", "wheels"}  # fmt: skip
+          "hood", "boot", "trunk", "wheel", "wheels", "wing", "headlight", "headlamp", "panel", "corner",
+          "windscreen", "windshield", "tailgate", "fender", "quarter"}  # fmt: skip
 #: Behaviours that move a road user sideways: a bare "left"/"right" right after them is where it moves to.
 _SIDEWAYS = ("cut_in", "change_lane", "cut_out", "cross_in_front")
 #: Words that make a road user the one the ego follows ("the lead car", "a preceding truck").
@@ -1232,7 +1575,7 @@ def _ego_participle(prev, m, nxt) -> bool:
     """Whether behaviour ``m`` is a participle of the ego named in a relation just before it, followed by
     a speed ("15 m ahead of the ego travelling at 40 km/h"): the ego's motion, not the road user's."""
     return (
-        prev is not None and prev.slot == "relation" and _ego_named(prev) and m.start == prev.end
+        prev is not None and prev.slot in ("relation", "actor") and _ego_named(prev) and m.start == prev.end
         and m.words in MOTION_PARTICIPLES and nxt is not None and nxt.slot == "speed"
         and nxt.start - m.end <= (1 if nxt.prev == "at" else 0)
     )  # fmt: skip
@@ -1251,17 +1594,21 @@ def _nearest(named, m):
     return None
 
 
+#: Weather words by how much they change a drive: precipitation and fog over cloud over clear.
+WEATHER_SEVERITY = {"clear": 0, "cloudy": 1, "rain": 2, "fog": 2, "snow": 3, "heavy_rain": 3}
+
+
 def _global(r, m) -> None:
     if m.slot == "map":
         if not (r.map_kind and m.value == "straight"):
             r.map_kind = m.value
-    elif m.slot == "weather":
-        if not (r.weather == "heavy_rain" and m.value == "rain"):
+    elif m.slot == "weather":  # the most severe said, of equals the first ("grey, drizzly": rain)
+        if r.weather is None or WEATHER_SEVERITY.get(str(m.value), 0) > WEATHER_SEVERITY.get(r.weather, 0):
             r.weather = m.value
-    elif m.slot == "time":
-        r.time = m.value
-    elif m.slot == "density":
-        r.density = m.value
+    elif m.slot == "time":  # (the first said: "at dusk ... in dark clothing" is at dusk)
+        r.time = r.time or m.value
+    elif m.slot == "density":  # (the first said: a later "stop-and-go" in an aside does not override)
+        r.density = r.density or m.value
     elif m.slot == "lanes":
         r.lanes = int(m.value)
     elif m.slot == "intent":
@@ -1308,6 +1655,9 @@ def _apply(m, who, r, link, added) -> None:
             a.speed_to_mps = m.value
         elif m.slot == "accel":
             a.accel_mps2 = m.value
+        elif m.slot == "to_stop" and not a.behaviours:  # "it pulled gently to a stop": it stops
+            a.behaviours.append(("stop", {"_words": m.words}, None, link))
+            added.append((a, len(a.behaviours) - 1))
         elif m.slot == "to_stop" and a.behaviours and a.behaviours[-1][0] == "change_speed":
             name, cfg, crit, lk = a.behaviours[-1]  # "decelerates to a standstill": a stop
             a.behaviours[-1] = ("stop", {"_words": cfg.get("_words", "")}, crit, lk)
@@ -1333,6 +1683,7 @@ def _apply(m, who, r, link, added) -> None:
             a.lane_side = m.value
         elif m.slot == "kerb":
             a.kerb = True
+            a.pavement = a.pavement or any(w in m.words for w in PAVEMENT_WORDS)
             a.came_from = a.came_from or _from(m)
         elif m.slot == "kerb_side":
             a.kerb, a.kerb_side = True, m.value

@@ -52,6 +52,11 @@ def summary_html(doc: dict) -> str:
             _cell(r["intent_met"] if not r.get("error") else f"not written: {r['error']}"),
         ]
         rows.append(f"<tr{cls}>" + "".join(f"<td>{c}</td>" for c in cells) + "</tr>")
+    intent = (
+        "no intent stated"
+        if s["intent_met"] is None
+        else f"{s['intent_met']} of {s.get('intent_stated', s['scenarios'])} ({s['episodes_run']} runs)"
+    )
     return f"""<!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8"><title>vei describe: {escape(doc["description"][:80])}</title>
 <style>body{{font-family:sans-serif;margin:2em}}table{{border-collapse:collapse}}
@@ -65,7 +70,7 @@ tr.crash{{background:#fde2e2}}.figures td{{font-size:15px}}</style></head><body>
 <tr><td>mean minimum ACT</td><td>{_cell(s["mean_min_act_s"])} s</td></tr>
 <tr><td>mean comfort (share of time |a| ≤ 2 m/s², |jerk| ≤ 2 m/s³)</td><td>{_cell(s["mean_comfort"])}</td></tr>
 <tr><td>mean maximum EI</td><td>{_cell(s["mean_max_ei_mps"])} m/s</td></tr>
-<tr><td>intent met</td><td>{s["intent_met"]} of {s["scenarios"]} ({s["episodes_run"]} runs)</td></tr></table>
+<tr><td>intent met</td><td>{intent}</td></tr></table>
 <h2>Scenarios</h2>
 <table><tr>{"".join(f"<th>{h}</th>" for h in head)}</tr>
 {chr(10).join(rows)}

@@ -84,6 +84,10 @@ def sample_layers(reading: Reading, text: str, seed: int) -> dict:
     ego_lane = 1
     if reading.ego_relation == "left" or ("right" in relations and "left" not in relations) or to_right:
         ego_lane = min(2, lanes)
+    if "right" in relations and ego_lane == 1:
+        # road users in lanes on both sides of the ego (or one on its right on a road said to have one
+        # lane each way): the lanes the story needs, the ego between them
+        lanes, ego_lane = max(lanes, 3 if "left" in relations else 2), 2
     placement = {
         "straight": "straight",
         "crossroad": "before_junction",
@@ -146,8 +150,11 @@ def sample_layers(reading: Reading, text: str, seed: int) -> dict:
             # the crossing lies on the ego's way to its junction: the ego starts far enough back for the
             # road user to get across in time (a child crossing four lanes at 1.5 m/s needs ~9 s)
             room = _crossing_lon_m(spec.kind, relation, first_cfg, ego, lanes) + CROSSING_CLEAR_OF_JUNCTION_M
-            if room > float(ego["distance_m"]):
-                ego["distance_m"] = round(min(room, ARM_LENGTH_M - 20.0), 3)
+            if room > float(ego["distance_m"]):  # (within the road before the map's feature: a curve's is short)
+                before = layout({"kind": kind, "lanes_per_direction": lanes}).feature_s_m or ARM_LENGTH_M
+                ego["distance_m"] = round(min(room, ARM_LENGTH_M - 20.0, before - 10.0), 3)
+        if crossing and spec.distance_m is not None:
+            _cross_at_distance(spec.kind, relation, first_cfg, ego, lanes, spec.distance_m)
         spawn, speed = place_adversary(
             spec.kind, relation, first.NAME, first_cfg, ego, lanes, given_speed, spec.distance_m
         )
@@ -432,6 +439,31 @@ CROSSING_CLEAR_OF_JUNCTION_M = 5.0
 
 def _crossing_speed(kind: str, cfg: dict) -> float:
     return max(float(cfg.get("crossing_speed_mps", 1.5 if kind == "pedestrian" else 4.0)), 0.3)
+
+
+#: The earliest a crosser may reach the ego's lane before the ego and still cross in front of it (s).
+EARLIEST_IN_FRONT_S = -0.2
+
+
+def _cross_at_distance(kind: str, relation: str, cfg: dict, ego: dict, lanes: int, distance_m: float) -> None:
+    """A crossing whose distance from the ego is stated ("steps out 15 m ahead"): its timing
+    (``arrival_gap_s``) is the one that sets it off when the ego is that far away, and the distance is
+    kept in its configuration. Closer than a crossing can be and still come in front of the ego, it
+    crosses as close as it can (the dangerous profile's earliest timing); beyond the behaviour's range
+    the timing is left as drawn."""
+    from vei_scenario.language.behaviours.cross_in_front import PARAMETERS, START_RAMP_S
+
+    k = int(ego["lane"])
+    cross = (k - 0.5) * 3.5 + 1.0 if relation == "roadside_right" else (2 * lanes - k + 0.5) * 3.5 + 1.0
+    speed = _crossing_speed(kind, cfg)
+    accel = TYPES[kind][4]
+    ramp = max(START_RAMP_S, speed / accel if accel > 0 else 0.0)
+    gap = distance_m / max(float(ego["speed_mps"]), 0.5) - (cross / speed + ramp / 2)
+    if EARLIEST_IN_FRONT_S <= gap <= PARAMETERS["arrival_gap_s"].high:
+        cfg["arrival_gap_s"] = round(gap, 3)
+        cfg["distance_m"] = round(distance_m, 3)
+    elif gap < EARLIEST_IN_FRONT_S:  # too close to get in front of the ego first: as close as it can
+        cfg["arrival_gap_s"] = EARLIEST_IN_FRONT_S
 
 
 def _crossing_lon_m(kind: str, relation: str, cfg: dict, ego: dict, lanes: int) -> float:

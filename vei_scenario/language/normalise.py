@@ -1,0 +1,175 @@
+"""Units and styles people write in, said again in the few forms the reader reads: before a
+description is cut into words, numbers written as words become digits where a unit follows
+("forty miles an hour" → "40 mph"), spelt-out units become their symbols ("kilometres per hour" →
+"km/h", "metres per second" → "m/s"), the narrator's vehicle of a police or insurance narrative
+("Vehicle 1", "V1", "Unit 1", "D1", "the insured", "my client") becomes the ego, and the other
+party ("V2, a Vauxhall Corsa, ...") becomes the road user its apposition names. Euro NCAP test codes
+are read by :mod:`vei_scenario.language.ncap`.
+
+Every rewrite is a regular expression over the lowercased text, so what it does to a description is
+the same for every description; words it does not rewrite reach the reader unchanged (and are
+reported as not used when the reader cannot place them).
+"""
+
+from __future__ import annotations
+
+import re
+
+_ONES = {
+    "zero": 0, "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8,
+    "nine": 9, "ten": 10, "eleven": 11, "twelve": 12, "thirteen": 13, "fourteen": 14, "fifteen": 15,
+    "sixteen": 16, "seventeen": 17, "eighteen": 18, "nineteen": 19, "a": 1, "an": 1,
+}  # fmt: skip
+_TENS = {"twenty": 20, "thirty": 30, "forty": 40, "fourty": 40, "fifty": 50, "sixty": 60, "seventy": 70,
+         "eighty": 80, "ninety": 90}  # fmt: skip
+_NUMBER_WORD = "|".join(sorted([w for w in _ONES if w not in ("a", "an")] + list(_TENS) + ["hundred"], key=len)[::-1])
+#: A number in words: "forty", "forty-five", "a hundred and ten", "one hundred", "hundred".
+_NUMBER = re.compile(
+    rf"\b((?:(?:a|an|{_NUMBER_WORD})[\s-]+)?(?:{_NUMBER_WORD})(?:(?:[\s-]+(?:and[\s-]+)?)(?:{_NUMBER_WORD}))*)\b"
+)
+#: Units after which a number in words is a quantity (its unit words as the reader reads them).
+_UNIT_AFTER = re.compile(
+    r"\s*(?:-\s*)?(km/h|kph|kmh|mph|m/s|miles?\b|kilomet(?:er|re)s?\b|km\b|met(?:er|re)s?\b|m\b|seconds?\b|s\b"
+    r"|second\b|lanes?\b|car lengths?\b)"
+)
+
+#: Spelt-out or unusual speed units, as the reader's symbols.
+_UNITS = [
+    (re.compile(r"\bmiles?\s+(?:an|per|a)\s+hour\b|\bmi/h\b|\bm\.p\.h\.?"), "mph"),
+    (re.compile(r"\b(?:kilomet(?:er|re)s?|km)\s+(?:an|per|a)\s+hour\b|\bkm/hr?\b|\bkmph\b|\bkm/std\b"), "km/h"),
+    (re.compile(r"\bmet(?:er|re)s?\s+(?:per|a)\s+second\b|\bmps\b"), "m/s"),
+    (re.compile(r"(\d)\s*(?:kph|kmh)\b"), r"\1 km/h"),
+    (re.compile(r"(\d)(km/h|mph|m/s|m)\b"), r"\1 \2"),
+]
+
+
+def _number_value(words: str) -> int | None:
+    """The value of a number in words ("a hundred and ten": 110), or None."""
+    total, current, seen = 0, 0, False
+    for w in re.split(r"[\s-]+", words.strip()):
+        if w == "and":
+            continue
+        if w in _ONES:
+            current += _ONES[w]
+        elif w in _TENS:
+            current += _TENS[w]
+        elif w == "hundred":
+            current = max(current, 1) * 100
+        else:
+            return None
+        seen = True
+    return total + current if seen else None
+
+
+def _numbers_in_words(text: str) -> str:
+    """Digits for numbers written as words where a unit follows ("thirty kilometer per hour")."""
+
+    def sub(m: re.Match) -> str:
+        after = _UNIT_AFTER.match(text, m.end())
+        if after is None or (after.group(1).startswith("lane") and "-" in text[m.end() : after.start(1)]):
+            return m.group(0)  # ("two-lane road" keeps its word: it is the road's name)
+        value = _number_value(m.group(1))
+        return m.group(0) if value is None else str(value)
+
+    return _NUMBER.sub(sub, text)
+
+
+#: The narrator's own vehicle in police, insurance and witness statements.
+_EGO_ALIASES = [
+    re.compile(
+        r"\b(?:the\s+)?(?:driver\s+of\s+)?(?:vehicle|veh\.?|unit|car|v|d)\s*-?\s*(?:1|one|#1)\b(?!\s*(?:m|km|mph|s)\b)"
+    ),
+    re.compile(r"\b(?:the\s+)?(?:insured|my\s+client|our\s+client|the\s+claimant)(?:'s\s+(?:vehicle|car))?\b"),
+    re.compile(r"\b(?:our|my)\s+(?:vehicle|own\s+car|own\s+vehicle)\b"),
+]
+#: The other party of a statement: "V2", "Vehicle 2", "Unit 2", "D2" (3, 4 ...).
+_OTHER = re.compile(r"\b(?:vehicle|veh\.?|unit|v|d)\s*-?\s*([2-9])\b(?!\s*(?:m|km|mph|s)\b)")
+#: An apposition after it: "V2, a white Transit van," / "Unit 2, a pedal cyclist,".
+_APPOSITION = re.compile(
+    r"\s*,?\s*(?:an?|the)\s+([^,.;]+?)(?=\s*(?:,|\.|;|\s+(?:travell\w*|driving|was|were|who|which|in|on|at)\b))"
+)
+
+
+def _other_parties(text: str, known_noun) -> str:
+    """Each other party named by its code becomes the road user its apposition names (a car when
+    that names none the reader knows: "a Toyota Prius"), and later mentions of the code that one."""
+    names: dict[str, str] = {}
+    out, pos = [], 0
+    for m in _OTHER.finditer(text):
+        code = m.group(1)
+        out.append(text[pos : m.start()])
+        pos = m.end()
+        if code in names:
+            out.append(f"the {names[code]}")
+            continue
+        app = _APPOSITION.match(text, m.end())
+        if app is not None:
+            phrase = app.group(1)
+            noun = known_noun(phrase)
+            names[code] = noun or "car"
+            out.append(f"a {phrase}" if noun else f"a {phrase} car")
+            pos = app.end()
+        else:
+            names[code] = "car"
+            out.append("a car")
+    out.append(text[pos:])
+    return "".join(out)
+
+
+_HEADING = re.compile(r"\b(north|south|east|west)(?:bound|wards)\b")
+_OPPOSITE = {"north": "south", "south": "north", "east": "west", "west": "east"}
+
+
+def _headings(text: str) -> str:
+    """Compass headings of a statement ("Unit 1 was southbound ... Unit 2, travelling northbound"): the
+    first is the ego's (said in its sentence); a later opposite one is the other way, the same one the
+    same way as the ego."""
+    first = _HEADING.search(text)
+    if first is None or "the ego" not in text[max(text.rfind(".", 0, first.start()), 0) : first.end()]:
+        return text
+    own = first.group(1)
+
+    def sub(m: re.Match) -> str:
+        if m.start() == first.start():
+            return m.group(0)
+        if m.group(1) == _OPPOSITE[own]:
+            return "in the opposite direction"
+        return "in the same direction" if m.group(1) == own else m.group(0)
+
+    return _HEADING.sub(sub, text)
+
+
+def normalise(text: str, known_noun=lambda phrase: None) -> str:
+    """``text`` (lowercased) with numbers in words, units, and the parties of a statement said the
+    way the reader reads them. ``known_noun(phrase)`` returns the road-user noun a phrase ends in,
+    or None."""
+    for pattern, repl in _UNITS:
+        text = pattern.sub(repl, text)
+    text = _numbers_in_words(text)
+    for pattern, repl in _UNITS:  # ("10 meter per second" once its number is digits)
+        text = pattern.sub(repl, text)
+    text = re.sub(r"\b(?:approx\.?|approximately|circa|ca\.|roughly|around|maybe|some)\s+(?=\d)", "about ", text)
+    text = re.sub(r"(\d+(?:\.\d+)?)\s*-\s*(?=km/h|mph|m/s|m\b)", r"\1 ", text)
+    # "our speed is 100 km/h", "we have 40 km/h", "we are 50 km/h": the ego's speed
+    text = re.sub(
+        r"\b(?:our|my|the ego's|ego) speed (?:is |was |of |at |:)?\s*(?=(?:about )?\d)", "the ego drives at ", text
+    )
+    text = re.sub(
+        r"\b(we|i) (?:have|are|am|were|was)\s+(?=(?:about )?\d+(?:\.\d+)? (?:km/h|mph|m/s)\b)", r"\1 drive at ", text
+    )
+    # English without articles ("from opposite direction", "on right side"), and "turning to left"
+    text = re.sub(
+        r"\b(from|on|at|to|in|into) (?=(?:opposite|left|right|front|same|other|far|near|left-hand|right-hand) "
+        r"(?:direction|side|lane|kerb|curb|sidewalk|pavement|footpath)\b)",
+        r"\1 the ",
+        text,
+    )
+    text = re.sub(r"\b(turn|turns|turning|turned) to (?:the )?(left|right)\b", r"\1 \2", text)
+    # "traffic was moderate": moderate traffic (the word is then no criticality of what follows)
+    text = re.sub(r"\btraffic (?:is|was|were) (?:very |quite |fairly )?(light|moderate|heavy)\b", r"\1 traffic", text)
+    for pattern in _EGO_ALIASES:
+        text = pattern.sub("the ego", text)
+    text = _other_parties(text, known_noun)
+    text = _headings(text)
+    text = re.sub(r"\bthe ego's (?:vehicle|car)\b", "the ego", text)
+    return text

@@ -1,0 +1,124 @@
+"""What a description states as a whole, read from its normalised text (contractions as "did not",
+numbers before a unit as digits): the outcome it asks for, and the lanes of its road.
+
+The outcome: a collision ("was struck", "we want an impact", "there is the
+crash"), a near miss ("missed it by inches", "stopped 1 m short", "didn't hit him", "no contact was
+made") or a safe pass ("passes safely", "without problem", "uneventful"), read from the whole text
+after its words are normalised (contractions as "did not").
+
+A collision word counts only when nothing denies or hedges it just before ("must not hit", "almost
+hit", "to avoid a collision"): a denied collision after hard braking is the near miss people mean
+when they say it. A text that states none of these has no intent; nothing is assumed.
+"""
+
+from __future__ import annotations
+
+import re
+
+_COLLISION = re.compile(
+    r"\b(?:hit|hits|hitting|struck|strikes|striking|collid\w*|collision|crash|crashes|crashed|crashing|"
+    r"impact|rear-end\w*|rear end\w*|made contact|make contact|makes contact|ran into|runs into|run into|"
+    r"smash\w*|knock\w* (?:down|over)|thump|thrown onto|thrown over|ploughs? into|plowed into|slams? into|"
+    r"slammed into|ran over|runs over|run over|t-bone\w*|sideswip\w*|clipped|clips)\b"
+    r"(?! (?:the |his |her |my |our )?brakes?\b| point| barrier| warning)"
+)
+#: Words that deny or hedge a collision word a few words after them.
+_DENY = re.compile(
+    r"\b(?:not|never|no|without|avoid|avoids|avoided|avoiding|almost|nearly|narrowly|barely|prevent\w*|"
+    r"would have|could have|nothing)\b(?:\s+\S+){0,3}\s*$"
+)
+_NEAR = re.compile(
+    r"\b(?:almost|nearly|narrowly|near miss|near-miss|close call|just in time|by a whisker|by inches|by an inch|"
+    r"hair's breadth|only just|just missed|just misses|barely missed|barely misses|"
+    r"missed (?:it|him|her|them|us|me|the \S+|his \S+|her \S+|their \S+) by|"
+    r"stopp?(?:ed|s|ing)? [^.;]{0,40}(?:short of|from (?:it|him|her|them|the|his|her))|"
+    r"(?:metres?|meters?|m|inches) short|made it across|no contact|emergency stop)\b"
+)
+_SAFE = re.compile(
+    r"\b(?:safely|safe distance|without (?:any )?(?:problems?|conflict|incident|drama|issue|issues)|"
+    r"no problems?|no drama|no conflict|no incident|uneventful|plenty of (?:room|space)|lots of (?:room|space)|"
+    r"enough (?:room|space)|comfortably|let us go|lets us go|let me go|lets me go|gets through safely)\b"
+)
+
+
+def stated_outcome(text: str) -> str | None:
+    """``collision``, ``near_miss``, ``safe`` or None, from normalised, lowercased ``text``."""
+    positive = denied = False
+    for m in _COLLISION.finditer(text):
+        start = max(text.rfind(".", 0, m.start()), text.rfind(";", 0, m.start()), 0)
+        before = text[start : m.start()]
+        if _DENY.search(before):
+            denied = True
+        else:
+            positive = True
+    if positive:
+        return "collision"
+    near = _NEAR.search(text) is not None
+    if _SAFE.search(text) and not near:
+        return "safe"
+    if near or denied:
+        return "near_miss"
+    return None
+
+
+_WORD_NUMBERS = {"one": 1, "two": 2, "three": 3, "four": 4, "1": 1, "2": 2, "3": 3, "4": 4}
+_N = r"(one|two|three|four|[1-4])"
+_EACH_WAY = re.compile(
+    _N + r"[ -]lanes? (?:each way|in each direction|per direction|each direction|in both directions|for each side|"
+    r"on each side|each side|per side|a side|either way|in either direction|for each direction|in every direction)"
+)
+_OF_N = re.compile(
+    r"\b(?:middle|inside|outside|left|right|nearside|offside|centre|center|fast|slow) lane of " + _N + r"\b"
+)
+_ONE_WAY = re.compile(r"\bone[ -]way (?:street|road)[^.;]{0,25}?\b" + _N + r" lanes\b")
+#: A road "two-lane" with traffic both ways: one lane each way (unless it is a motorway or dual carriageway).
+_TWO_LANE_ROAD = re.compile(r"\b(?:two|2)[ -]lane (?!motorway|highway|freeway|expressway|dual)")
+_DIVIDED = re.compile(r"\b(?:motorway|highway|freeway|expressway|autobahn|dual carriageway|one[ -]way)\b")
+
+
+def stated_lanes(text: str) -> int | None:
+    """Lanes per direction a normalised, lowercased description states, where the reader's words do
+    not settle it: "three lanes each way", "the middle lane of three", "a one-way street with two
+    lanes", and "a two-lane road" (one lane each way on a road that is not a motorway)."""
+    for pattern in (_EACH_WAY, _OF_N, _ONE_WAY):
+        m = pattern.search(text)
+        if m is not None:
+            return _WORD_NUMBERS[m.group(1)]
+    if _TWO_LANE_ROAD.search(text) and not _DIVIDED.search(text):
+        return 1
+    return None
+
+
+_CLOCK = re.compile(r"\b([01]?\d|2[0-3]) : ([0-5]\d)\b(?! (?:km/h|mph|m/s|m)\b)")
+
+
+def stated_clock(text: str) -> str | None:
+    """A time of day written as a clock ("at approximately 22:40 hrs": "22:40"), from the reader's
+    tokens joined by spaces ("22 : 40")."""
+    m = _CLOCK.search(text)
+    return None if m is None else f"{int(m.group(1)):02d}:{m.group(2)}"
+
+
+_DENSITY = re.compile(
+    r"\b(?:traffic|motorway|road|roads|street|streets|highway) (?:is|was|were|being) (?:very |quite |fairly |pretty |"
+    r"really )?(light|moderate|heavy|busy|quiet|dense|sparse|empty)\b"
+)
+_DENSITY_WORDS = {"light": "light", "sparse": "light", "moderate": "moderate", "heavy": "heavy", "busy": "heavy",
+                  "dense": "heavy", "quiet": "none", "empty": "none"}  # fmt: skip
+
+
+def stated_density(text: str) -> str | None:
+    """Background traffic said of the road ("the motorway was heavy", "traffic was moderate")."""
+    m = _DENSITY.search(text)
+    return None if m is None else _DENSITY_WORDS[m.group(1)]
+
+
+_HEAVY_RAIN = re.compile(
+    r"\b(?:rain|rains|raining|rained) (?:very |really )?(?:strong|strongly|hard|heavily|heavy|a lot|cats and dogs)\b"
+    r"|\b(?:pouring|bucketing|lashing) (?:with |down )?(?:rain)?"
+)
+
+
+def stated_heavy_rain(text: str) -> bool:
+    """Whether the rain is said to be heavy in words the weather words do not hold ("is raining strong")."""
+    return _HEAVY_RAIN.search(text) is not None
