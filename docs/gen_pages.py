@@ -13,6 +13,7 @@ from __future__ import annotations
 import argparse
 import inspect
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -51,6 +52,12 @@ def cli_page() -> str:
     return "\n".join(lines)
 
 
+def plain(doc: str) -> str:
+    """A docstring as Markdown: Sphinx roles (``:func:`~a.b```) become code (`b`), double backticks single."""
+    doc = re.sub(r":\w+:`~?([\w.]+)`", lambda m: f"`{m.group(1).rsplit('.', 1)[-1]}`", doc)
+    return doc.replace("``", "`")
+
+
 def metrics_page() -> str:
     from vei_scenario.metrics.definitions import METRICS
 
@@ -66,7 +73,7 @@ def metrics_page() -> str:
         "",
     ]
     for name, function in METRICS.items():
-        doc = inspect.getdoc(function) or ""
+        doc = plain(inspect.getdoc(function) or "")
         lines += [f"## `{name}`", "", doc, ""]
     return "\n".join(lines)
 

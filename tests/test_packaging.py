@@ -44,13 +44,17 @@ def test_wheel_is_a_manylinux_platform_wheel_with_the_core(wheel):
 
 def test_wheel_carries_the_examples_and_schemas(wheel):
     names = set(zipfile.ZipFile(wheel).namelist())
-    for rel in ("case_study/clip.json", "maps/helsinki_center.osm", "ci/suite.toml"):
+    for rel in ("case_study/clip.json", "maps/helsinki_center.osm", "ci/suite.toml", "controllers/aeb.py",
+                "generate_dataset.py", "generate_examples.py"):
         assert f"vei_scenario/data/examples/{rel}" in names
     assert "vei_scenario/data/clip.schema.json" in names
 
 
 def test_vei_examples_copies_clips_that_compile(tmp_path, capsys):
     assert main(["examples", str(tmp_path / "ex")]) == 0
+    # the guides' example controller and dataset generator come out too
+    assert (tmp_path / "ex" / "controllers" / "aeb.py").is_file()
+    assert (tmp_path / "ex" / "generate_dataset.py").is_file()
     assert (tmp_path / "ex" / "maps" / "helsinki_center.osm").is_file()
     assert (
         main(["compile", str(tmp_path / "ex" / "case_study" / "clip.json"), "-o", str(tmp_path / "o" / "s.xosc")]) == 0

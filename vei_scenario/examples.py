@@ -12,8 +12,10 @@ from pathlib import Path
 
 from vei_scenario.errors import VeiInputError
 
-#: The folders copied: the example clips, their shared map and the CI suite.
-FOLDERS = ("case_study", "multi_scooter", "no_map", "stop_and_go", "maps", "ci")
+#: The folders copied: the example clips, their shared map, the CI suite and the example controller.
+FOLDERS = ("case_study", "multi_scooter", "no_map", "stop_and_go", "maps", "ci", "controllers")
+#: Scripts beside them: the dataset generator (which builds on the examples' generator).
+SCRIPTS = ("generate_dataset.py", "generate_examples.py")
 
 
 def bundled_examples() -> list[tuple[str, bytes]]:
@@ -25,8 +27,12 @@ def bundled_examples() -> list[tuple[str, bytes]]:
         if not d.is_dir():
             continue
         for f in sorted(d.iterdir(), key=lambda p: p.name):
-            if f.is_file() and not f.name.startswith("."):
+            if f.is_file() and not f.name.startswith(".") and f.suffix != ".pyc":
                 out.append((f"{folder}/{f.name}", f.read_bytes()))
+    for name in SCRIPTS:
+        f = root.joinpath(name)
+        if f.is_file():
+            out.append((name, f.read_bytes()))
     if not out:
         raise VeiInputError(None, "examples", "this installation carries no examples (reinstall vei-scenario)")
     return out

@@ -39,8 +39,8 @@ def impact_speed_mps(p: PairSeries, cfg: MetricConfig) -> np.ndarray:
 
 
 def collision_entities(p: PairSeries, cfg: MetricConfig) -> np.ndarray:
-    """The two entities of the contact, or an empty list (a flag here; names in :func:`to_python`)."""
-    return p.contact.any(axis=-1)
+    """The names of the two entities of the first contact, or an empty list without one."""
+    return p.contact.any(axis=-1)  # a flag here: to_python puts the names in
 
 
 def min_gap_m(p: PairSeries, cfg: MetricConfig) -> np.ndarray:
