@@ -467,7 +467,8 @@ def _cmd_falsify(args: argparse.Namespace) -> int:
               f"over {len(r.windows)} slice(s); worst robustness {r.worst_robustness:.3f}")  # fmt: skip
         print(f"  reproduce: {r.reproduce(args.scenario)}")
     if args.output:
-        print(f"wrote {args.output}/falsify.json and each region's worst scenario under {args.output}/regions/")
+        regions = f" and each region's worst scenario under {args.output}/regions/" if result.regions else ""
+        print(f"wrote {args.output}/falsify.json{regions}")
     return 0
 
 
