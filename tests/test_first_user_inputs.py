@@ -16,19 +16,10 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from test_hostile_inputs import _refused
 
 from conftest import EXAMPLES
 from vei_scenario.cli import main
-
-
-def _refused(capsys, argv, *needles) -> str:
-    code = main(argv)
-    err = capsys.readouterr().err
-    assert code == 2, err
-    assert err.count("\n") == 1 and err.startswith("vei: error: ") and "Traceback" not in err, err
-    for n in needles:
-        assert n in err, err
-    return err
 
 
 @pytest.fixture(scope="module")

@@ -243,34 +243,11 @@ def _run_dask(jobs: list[Job], scheduler: str | None, progress: Callable[[int], 
     """The jobs on a Dask cluster (``scheduler``, or a LocalCluster on this machine's cores). The
     workers write the scenario files, so a remote cluster needs the library folder on a file system
     they share with this machine."""
-    try:
-        from dask.distributed import Client, LocalCluster, as_completed
-    except ImportError:
-        raise VeiInputError(
-            None, "--executor dask", "needs dask.distributed: pip install 'vei-scenario[dask]'"
-        ) from None
-    from vei_scenario.sweep.evaluate import SCHEDULER_TIMEOUT_S
+    from vei_scenario.dask_cluster import dask_client
 
-    cluster = None
-    if scheduler:
-        try:
-            client = Client(scheduler, timeout=SCHEDULER_TIMEOUT_S)
-        except (OSError, TimeoutError, ValueError) as exc:
-            raise VeiInputError(
-                None,
-                "--scheduler",
-                f"cannot reach a Dask scheduler at {scheduler!r} within {SCHEDULER_TIMEOUT_S} s ({exc})",
-            ) from None
-    else:
-        cluster = LocalCluster(
-            n_workers=os.cpu_count() or 1,
-            threads_per_worker=1,
-            processes=True,
-            host="127.0.0.1",
-            dashboard_address=None,
-        )
-        client = Client(cluster)
-    try:
+    with dask_client(scheduler) as client:
+        from dask.distributed import as_completed
+
         futures = [client.submit(compile_job, j, pure=False) for j in jobs]
         index = {f.key: i for i, f in enumerate(futures)}
         rows: list[dict | None] = [None] * len(jobs)
@@ -279,10 +256,6 @@ def _run_dask(jobs: list[Job], scheduler: str | None, progress: Callable[[int], 
             if progress:
                 progress(1)
         return rows  # type: ignore[return-value]
-    finally:
-        client.close()
-        if cluster is not None:
-            cluster.close()
 
 
 def compile_library(

@@ -222,7 +222,6 @@ def _evaluate_native(native, scenario, variants, dt, workers, progress, zone_ttc
 
 
 #: How long vei waits for a Dask scheduler to answer (s).
-SCHEDULER_TIMEOUT_S = 10
 
 
 def evaluate_dask(
@@ -236,36 +235,11 @@ def evaluate_dask(
 ) -> list[dict]:
     """The same evaluation on a Dask distributed cluster (``scheduler`` address, or a LocalCluster); a
     user's controller is loaded by each worker from its file (which the workers must see)."""
-    try:
-        from dask.distributed import Client, LocalCluster, as_completed
-    except ImportError:
-        from vei_scenario.errors import VeiInputError
+    from vei_scenario.dask_cluster import dask_client
 
-        raise VeiInputError(
-            None, "--executor dask", "needs dask.distributed: pip install 'vei-scenario[dask]'"
-        ) from None
-    from vei_scenario.errors import VeiInputError
+    with dask_client(scheduler) as client:
+        from dask.distributed import as_completed
 
-    cluster = None
-    if scheduler:
-        try:  # a bounded wait, and one line when nobody answers there
-            client = Client(scheduler, timeout=SCHEDULER_TIMEOUT_S)
-        except (OSError, TimeoutError, ValueError) as exc:
-            raise VeiInputError(
-                None,
-                "--scheduler",
-                f"cannot reach a Dask scheduler at {scheduler!r} within {SCHEDULER_TIMEOUT_S} s ({exc})",
-            ) from None
-    else:
-        cluster = LocalCluster(
-            n_workers=os.cpu_count() or 1,
-            threads_per_worker=1,
-            processes=True,
-            host="127.0.0.1",
-            dashboard_address=None,
-        )
-        client = Client(cluster)
-    try:
         chunks = _chunks(variants, max(1, min(256, len(variants) // 8 or 1)))
         futures = [client.submit(_chunk, scenario, c, dt, zone_ttc, controllers, pure=False) for c in chunks]
         index = {f.key: i for i, f in enumerate(futures)}
@@ -276,10 +250,6 @@ def evaluate_dask(
             if progress:
                 progress(len(chunks[i]))
         return [row for rows in results for row in rows]
-    finally:
-        client.close()
-        if cluster is not None:
-            cluster.close()
 
 
 def iter_rows(variants: Iterable[dict[str, str]], outcomes: Iterable[dict]) -> list[dict]:
