@@ -14,6 +14,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from conftest import NO_SHARED, SHARED
 from vei_scenario.cli import main
 from vei_scenario.interpreter import run_scenario
 from vei_scenario.sut import ControllerFault, command_from, parse_controller_options
@@ -332,11 +333,10 @@ def test_vei_planner_as_a_native_fmu_reproduces_the_built_in_one(scenario, tmp_p
             assert np.abs(tr.x - b.traces[name].x).max() <= 1e-9 and np.abs(tr.y - b.traces[name].y).max() <= 1e-9
 
 
-CPNA = (Path(__file__).resolve().parents[1].parent / "shared" / "osc-ncap" / "OpenSCENARIO" / "NCAP" / "AEB_VRU_2023"
-        / "Variations" / "NCAP_AEB_VRU_CPNA-25_50kph_2023.xosc")  # fmt: skip
+CPNA = SHARED / "osc-ncap" / "OpenSCENARIO" / "NCAP" / "AEB_VRU_2023" / "Variations" / "NCAP_AEB_VRU_CPNA-25_50kph_2023.xosc"
 
 
-@pytest.mark.skipif(not CPNA.is_file(), reason="needs the Euro NCAP OpenSCENARIO pack at ../shared/osc-ncap")
+@pytest.mark.skipif(not CPNA.is_file(), reason=f"the Euro NCAP pack not found ({NO_SHARED})")
 def test_the_users_aeb_on_the_euro_ncap_vut(tmp_path, capsys):
     """Euro NCAP CPNA-25 at 50 km/h: the VUT, which no controller drives in the pack, hits the child as
     the pack plays it; with the example AEB plugged in it stops short, braking at 8 m/s²."""
