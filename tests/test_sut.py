@@ -333,7 +333,8 @@ def test_vei_planner_as_a_native_fmu_reproduces_the_built_in_one(scenario, tmp_p
             assert np.abs(tr.x - b.traces[name].x).max() <= 1e-9 and np.abs(tr.y - b.traces[name].y).max() <= 1e-9
 
 
-CPNA = SHARED / "osc-ncap" / "OpenSCENARIO" / "NCAP" / "AEB_VRU_2023" / "Variations" / "NCAP_AEB_VRU_CPNA-25_50kph_2023.xosc"
+CPNA = SHARED / "osc-ncap" / "OpenSCENARIO" / "NCAP" / "AEB_VRU_2023" / "Variations"
+CPNA = CPNA / "NCAP_AEB_VRU_CPNA-25_50kph_2023.xosc"
 
 
 @pytest.mark.skipif(not CPNA.is_file(), reason=f"the Euro NCAP pack not found ({NO_SHARED})")
