@@ -224,6 +224,7 @@ def test_a_controller_that_raises_fails_the_scenario_with_its_message(bench, tmp
         (["--controller", "Ego=no/such.py:X"], "no/such.py: no such file"),
         (["--controller", "planner", "--controller-param", "x=1"], "vei's planner takes none"),
         (["--controller", LATE, "--controller-param", "other:x=1"], "no system labelled 'other'"),
+        (["--controller", f"Egoo={SUT / 'aeb_flawed.py'}:LateAEB"], "no entity 'Egoo'"),
     ],
 )
 def test_bad_systems_are_one_line_before_anything_runs(bench, tmp_path, args, says):

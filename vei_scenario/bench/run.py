@@ -178,6 +178,18 @@ def _failure(n: int, c: dict) -> tuple:
     return (c["worst_ego_speed_at_contact_mps"] or 0.0, c["failed_runs"], -n)
 
 
+def plug_error(xosc: Path, opts: BenchOptions, controllers: tuple) -> str | None:
+    """Why the user's system cannot be set up in this scenario (an entity it does not have, a property
+    the constructor refuses), in one line, or None: a setup fault is no failure of the system."""
+    from vei_scenario.sweep.preflight import _build_error
+
+    if not controllers:
+        return None
+    cfg = next(cfg for n, _, cfg in CONFIGURATIONS if n in SUT_CONFIGS and n in opts.configurations)
+    found = _build_error(xosc, dict(cfg), opts.dt, controllers)
+    return " ".join(found.split()) if found else None
+
+
 def bench_entry(library: Path, e: dict, opts: BenchOptions, system: System) -> dict:
     """The row of one library entry: its configurations, whether the system fails it, its worst failure."""
     row = {"file": e.get("file"), "rank": e.get("rank")}
@@ -190,6 +202,9 @@ def bench_entry(library: Path, e: dict, opts: BenchOptions, system: System) -> d
             "error": "the threat's path does not reach the ego's: no conflict to search",
         }
     xosc = library / e["outputs"]["scenario"]
+    plug = plug_error(xosc, opts, system.controllers)
+    if plug:
+        return {**row, "status": "error", "error": f"the system cannot be set up: {plug}", "setup": True}
     try:
         configs = bench_scenario(xosc, float(e["conflict_time_shift_s"]), opts, system.controllers)
     except VeiInputError as exc:
@@ -239,6 +254,10 @@ def run_bench(
         results.append(bench_entry(library, e, opts, system))
         if progress:
             progress(1)
+    setup = [r for r in results if r.pop("setup", False)]
+    tried = [r for r in results if r["status"] != "skipped" and not r.get("error", "").startswith("not compiled")]
+    if setup and len(setup) == len(tried):
+        raise VeiInputError(None, "--controller", f"{setup[0]['error']} (in every scenario of {library})")
     benched = [r for r in results if r["status"] == "ok"]
     fails = [r for r in benched if r["fails"]]
     doc = {
