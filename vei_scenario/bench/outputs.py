@@ -64,6 +64,11 @@ def system_line(doc: dict) -> str:
     return "; ".join(parts)
 
 
+def _title(doc: dict) -> str:
+    label = doc.get("system", {}).get("label")
+    return f"{label} ({doc['system_under_test']})" if label and label != "planner" else doc["system_under_test"]
+
+
 def bench_html(doc: dict) -> str:
     results = doc["results"]
     ok = [r for r in results if r["status"] == "ok"]
@@ -72,9 +77,10 @@ def bench_html(doc: dict) -> str:
     search = doc["time_shift_search"]
     out = [
         "<!DOCTYPE html><html><head><meta charset='utf-8'><title>vei bench</title>",
-        f"<style>{STYLE}</style></head><body><h1>Benchmark: {html.escape(doc['system_under_test'])}</h1>",
+        f"<style>{STYLE}</style></head><body><h1>Benchmark: {html.escape(_title(doc))}</h1>",
         f"<p>System under test: <code>{html.escape(system_line(doc))}</code></p>",
-        f"<p>{doc['scenarios']} scenarios, {doc['benched']} benched: the five configurations at every TimeShift "
+        f"<p>{doc['scenarios']} scenarios, {doc['benched']} benched: configurations "
+        f"{', '.join(map(str, doc['configurations']))} at every TimeShift "
         f"within ±{search['half_width_s']:g} s of each conflict shift, every {search['step_s']:g} s (step "
         f"{search['dt_s']:g} s). <b>{doc['failing']} fail ({share})</b>: with the system on (configurations "
         f"{', '.join(map(str, doc['sut_configurations']))}) the ego collides while moving at some shift, or a run "
