@@ -784,7 +784,11 @@ def build_parser() -> argparse.ArgumentParser:
         metavar="N,N",
         help="the configurations to run (default 1,2,3,4,5; 4 and 5 have the planner on)",
     )
-    bn.add_argument("--workers", type=WORKERS, help="threads of the sweep kernel (default: all cores)")
+    bn.add_argument(
+        "--workers",
+        type=WORKERS,
+        help="cores: threads of the sweep kernel, worker processes for a plugged --controller (default: all)",
+    )
     bn.add_argument("--quiet", action="store_true", help="no progress bar")
     bn.add_argument(
         "--controller",
