@@ -53,6 +53,10 @@ def test_rows_say_what_vei_run_says(bench):
                     assert _collides(str(root / "library" / r["scenario"]), s, c["parameters"]) == inside
                     checked += 1
         assert r["fails"] == any(r["configurations"][n]["collisions_ego_moving"] for n in ("4", "5"))
+        w = r["with_system"]
+        assert w["collides_ego_moving"] == any(r["configurations"][n]["collisions_ego_moving"] for n in ("4", "5"))
+        speeds = [r["configurations"][n]["worst_ego_speed_at_contact_mps"] for n in ("4", "5")]
+        assert w["worst_ego_speed_at_contact_mps"] == max((v for v in speeds if v is not None), default=None)
     assert checked == 3 * 2 * 5
 
 

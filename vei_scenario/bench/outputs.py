@@ -41,6 +41,12 @@ def _histogram_svg(values: list[float], label: str, bins: int = 10) -> str:
     return "".join(out) + "</svg>"
 
 
+def _with_system(w: dict) -> str:
+    ttc = "–" if w["min_ttc_s"] is None else f"{w['min_ttc_s']:.2f} s"
+    alert = "–" if w["max_alert_s"] is None else f"{w['max_alert_s']:.2f} s"
+    return f"{_mps(w['worst_ego_speed_at_contact_mps'])}, {ttc}, {alert}"
+
+
 def _mps(v: float | None) -> str:
     return "–" if v is None else f"{v:.2f} m/s"
 
@@ -102,13 +108,16 @@ def bench_html(doc: dict) -> str:
             )
         out.append("</table>")
     names = {n: c["description"] for n, c in ok[0]["configurations"].items()} if ok else {}
-    out.append("<h2>Scenarios</h2><table><tr><th>scenario</th><th>conflict TimeShift</th><th>verdict</th>")
+    out.append(
+        "<h2>Scenarios</h2><table><tr><th>scenario</th><th>conflict TimeShift</th><th>verdict</th>"
+        "<th>with the system on: worst ego speed at contact, lowest TTC, longest alert</th>"
+    )
     out += [f"<th>{html.escape(n)}: {html.escape(d)}<br>colliding shifts</th>" for n, d in names.items()]
     out.append("</tr>")
     for r in results:
         if r["status"] != "ok":
             out.append(
-                f"<tr><td>{html.escape(str(r['file']))}</td><td colspan='{2 + len(names)}'>"
+                f"<tr><td>{html.escape(str(r['file']))}</td><td colspan='{3 + len(names)}'>"
                 f"{html.escape(r['status'])}: {html.escape(r['error'])}</td></tr>"
             )
             continue
@@ -126,7 +135,7 @@ def bench_html(doc: dict) -> str:
         )
         out.append(
             f"<tr><td>{html.escape(str(r['file']))}</td><td>{r['conflict_time_shift_s']:+.2f} s</td>"
-            f"<td>{verdict}</td>{cells}</tr>"
+            f"<td>{verdict}</td><td>{_with_system(r['with_system'])}</td>{cells}</tr>"
         )
     out.append("</table></body></html>")
     return "\n".join(out) + "\n"

@@ -178,6 +178,24 @@ def _failure(n: int, c: dict) -> tuple:
     return (c["worst_ego_speed_at_contact_mps"] or 0.0, c["failed_runs"], -n)
 
 
+def with_system(sut: list[tuple[int, dict]]) -> dict:
+    """The scenario with the system on (configurations 4 and 5 together): does the ego collide while
+    moving, at which shifts, the worst ego speed at contact, the lowest TTC, the longest alert time."""
+
+    def pick(key: str, fn):
+        found = [c[key] for _, c in sut if c[key] is not None]
+        return fn(found) if found else None
+
+    return {
+        "collides_ego_moving": any(c["collisions_ego_moving"] for _, c in sut),
+        "ego_moving_collision_shifts_s": {str(n): c["ego_moving_collision_shifts_s"] for n, c in sut},
+        "worst_ego_speed_at_contact_mps": pick("worst_ego_speed_at_contact_mps", max),
+        "min_ttc_s": pick("min_ttc_s", min),
+        "max_alert_s": pick("max_alert_s", max),
+        "failed_runs": sum(c["failed_runs"] for _, c in sut),
+    }
+
+
 def plug_error(xosc: Path, opts: BenchOptions, controllers: tuple) -> str | None:
     """Why the user's system cannot be set up in this scenario (an entity it does not have, a property
     the constructor refuses), in one line, or None: a setup fault is no failure of the system."""
@@ -211,6 +229,7 @@ def bench_entry(library: Path, e: dict, opts: BenchOptions, system: System) -> d
         return {**row, "status": "error", "error": " ".join(str(exc).split())}
     sut = [(n, configs[str(n)]) for n in SUT_CONFIGS if str(n) in configs]
     failing = [(n, c) for n, c in sut if c["collisions_ego_moving"] or c["failed_runs"]]
+    row["with_system"] = with_system(sut)
     row.update(
         status="ok",
         scenario=e["outputs"]["scenario"],
