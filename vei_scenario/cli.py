@@ -14,6 +14,7 @@ import json
 import math
 import os
 import sys
+import time
 from pathlib import Path
 
 from vei_scenario import __version__
@@ -190,32 +191,61 @@ def _cmd_clip_split(args: argparse.Namespace) -> int:
 def _cmd_bench(args: argparse.Namespace) -> int:
     from tqdm import tqdm
 
-    from vei_scenario.bench import BenchOptions, run_bench
+    from vei_scenario.bench import BenchOptions, parse_systems, read_bench, read_library, run_bench, write_compare
 
+    if args.compare:
+        if args.library or args.controller or args.controller_param:
+            raise VeiInputError(None, "--compare", "compares two bench.json files: give no LIBRARY and no --controller")
+        a, b = read_bench(args.compare[0]), read_bench(args.compare[1])
+        return _print_compare(write_compare(a, b, args.output), Path(args.output))
+    if not args.library:
+        raise VeiInputError(None, "LIBRARY", "missing: vei bench LIBRARY -o OUT (or --compare A.json B.json -o OUT)")
     opts = BenchOptions(half_width_s=args.half_width, step_s=args.step, dt=args.dt, workers=args.workers)
     if args.configurations:
         opts = dataclasses.replace(opts, configurations=args.configurations)
-    index = Path(args.library) / "library.json"
-    total = None
-    if index.is_file():
-        try:
-            total = len(json.loads(index.read_text("utf-8")).get("scenarios", []))
-        except (ValueError, AttributeError):
-            total = None
-    with tqdm(total=total, unit="scenario", disable=args.quiet or not sys.stderr.isatty(), leave=False) as bar:
-        doc = run_bench(args.library, args.output, opts, bar.update)
-    share = "-" if doc["failure_share"] is None else f"{100 * doc['failure_share']:.1f} %"
-    print(
-        f"{doc['scenarios']} scenarios, {doc['benched']} benched: {doc['failing']} fail ({share}): the planner "
-        "collides at some TimeShift"
-    )
-    for w in doc["worst"][:3]:
-        print(
-            f"  {w['file']}: {w['impact_speed_mps']:.2f} m/s at TimeShift {w['time_shift_s']:+.2f} s; {w['reproduce']}"
-        )
+    opts.check()
+    systems = parse_systems(args.controller, args.controller_param, args.controller_timeout)
+    total = len(read_library(args.library))
     out = Path(args.output)
-    print(f"wrote {out / 'bench.json'}, {out / 'report.html'}, {out / 'junit.xml'}")
-    return 1 if doc["failing"] else 0
+    docs = []
+    for system in systems:
+        where = out / system.label if len(systems) > 1 else out
+        with tqdm(total=total, unit="scenario", disable=args.quiet or not sys.stderr.isatty(), leave=False) as bar:
+            started = time.perf_counter()
+            doc = run_bench(args.library, where, opts, bar.update, system)
+            took = time.perf_counter() - started
+        share = "-" if doc["failure_share"] is None else f"{100 * doc['failure_share']:.1f} %"
+        print(
+            f"{system.label}: {doc['scenarios']} scenarios, {doc['benched']} benched: {doc['failing']} fail ({share}): "
+            f"the ego collides while moving with the system on, or a run fails ({took:.1f} s, "
+            f"{took / max(doc['benched'], 1):.2f} s a scenario)"
+        )
+        _print_sut(system.controllers)
+        for w in doc["worst"][:3]:
+            what = (
+                f"ego at {w['ego_speed_at_contact_mps']:.2f} m/s"
+                if w["ego_speed_at_contact_mps"] is not None
+                else "a run failed"
+            )
+            print(f"  {w['file']}: {what} at TimeShift {w['time_shift_s']:+.2f} s; {w['reproduce']}")
+        print(f"wrote {where / 'bench.json'}, {where / 'report.html'}, {where / 'junit.xml'}")
+        docs.append(doc)
+    if len(docs) == 2:
+        return _print_compare(write_compare(docs[0], docs[1], out), out)
+    return 1 if docs[0]["failing"] else 0
+
+
+def _print_compare(c: dict, out: Path) -> int:
+    """What two benchmarks differ in; 1 when the second system fails a scenario the first passes."""
+    la, lb = c["a"]["label"], c["b"]["label"]
+    print(
+        f"{c['compared']} scenarios benched by both: {la} fails {c['a_failing']}, {lb} fails {c['b_failing']}; "
+        f"{len(c['only_b'])} fail with {lb} only, {len(c['only_a'])} with {la} only"
+    )
+    for r in c["only_b"][:5]:
+        print(f"  {lb} only: {r['file']}; {r['b']['reproduce']}")
+    print(f"wrote {out / 'compare.json'}, {out / 'compare.html'}")
+    return 1 if c["only_b"] else 0
 
 
 def _cmd_examples(args: argparse.Namespace) -> int:
@@ -718,16 +748,31 @@ def build_parser() -> argparse.ArgumentParser:
 
     bn = sub.add_parser(
         "bench",
-        help="vei's planner over every scenario of a library, searched around each conflict; JUnit for CI",
+        help="a system under test (vei's planner or your own) over every scenario of a library, searched "
+        "around each conflict; JUnit for CI; two systems compared",
         formatter_class=argparse.RawDescriptionHelpFormatter,
         description="For every scenario of LIBRARY (vei compile CLIPS/ -o LIBRARY/): the seed paper's five\n"
         "configurations (replay/normal/aggressive rider, planner off/on) at every TimeShift within\n"
-        "--half-width s of its conflict shift, every --step s, through the compiled sweep kernel. A scenario\n"
-        "fails when a configuration with the planner on collides. Writes bench.json, report.html and\n"
-        "junit.xml (one test case per scenario); exit 1 when some scenario fails.",
+        "--half-width s of its conflict shift, every --step s. The system under test drives the ego where\n"
+        "the planner is on (4, 5): vei's planner through the compiled sweep kernel, or your own\n"
+        "(--controller ENTITY=file.py:Class or ENTITY=planner.fmu) through the interpreter. A scenario fails\n"
+        "when, with the system on, the ego collides while moving, or a run fails. Writes bench.json,\n"
+        "report.html and junit.xml (one test case per scenario); exit 1 when some scenario fails.\n\n"
+        "Two systems: --controller A --controller B (each [LABEL=]ENTITY=TARGET, or planner) bench both\n"
+        "into OUT/LABEL/ and write OUT/compare.json and compare.html: the scenarios one fails and the other\n"
+        "does not; --compare A/bench.json B/bench.json -o OUT compares two earlier runs. Exit 1 when the\n"
+        "second fails a scenario the first passes.",
     )
-    bn.add_argument("library", help="a scenario library folder (with library.json)")
-    bn.add_argument("-o", "--output", required=True, help="folder for bench.json, report.html, junit.xml")
+    bn.add_argument("library", nargs="?", help="a scenario library folder (with library.json)")
+    bn.add_argument(
+        "-o", "--output", required=True, help="folder for bench.json, report.html, junit.xml (compare.json, .html)"
+    )
+    bn.add_argument(
+        "--compare",
+        nargs=2,
+        metavar=("A", "B"),
+        help="compare two earlier benchmarks (their bench.json or folders) instead of running one",
+    )
     bn.add_argument(
         "--half-width", type=_number(0, 30), default=1.5, help="TimeShift search: +-S s around the conflict (1.5)"
     )
@@ -739,8 +784,34 @@ def build_parser() -> argparse.ArgumentParser:
         metavar="N,N",
         help="the configurations to run (default 1,2,3,4,5; 4 and 5 have the planner on)",
     )
-    bn.add_argument("--workers", type=WORKERS, help="threads of the sweep kernel (default: all cores)")
+    bn.add_argument(
+        "--workers",
+        type=WORKERS,
+        help="cores: threads of the sweep kernel, worker processes for a plugged --controller (default: all)",
+    )
     bn.add_argument("--quiet", action="store_true", help="no progress bar")
+    bn.add_argument(
+        "--controller",
+        action="append",
+        default=[],
+        metavar="[LABEL=]ENTITY=TARGET",
+        help="the system under test instead of vei's planner: ENTITY=path/file.py:Class, ENTITY=package.module:Class "
+        "or ENTITY=planner.fmu (labelled by its class or file unless LABEL= is given); planner names vei's; "
+        "give it twice to compare two systems",
+    )
+    bn.add_argument(
+        "--controller-param",
+        action="append",
+        default=[],
+        metavar="[LABEL:]NAME=VALUE",
+        help="a property for the --controller's constructor (to every plugged system, or to LABEL's)",
+    )
+    bn.add_argument(
+        "--controller-timeout",
+        type=_number(1e-3, 1e6),
+        metavar="SECONDS",
+        help="the longest one step(obs) of the --controller may take (wall clock); a run over it fails",
+    )
     bn.set_defaults(func=_cmd_bench)
 
     r = sub.add_parser("run", help="run a scenario with the built-in interpreter; write trajectories, metrics, plots")
