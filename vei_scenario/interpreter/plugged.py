@@ -162,6 +162,11 @@ def plug(ctx, specs: tuple[ControllerSpec, ...], scenario: object) -> None:
         if e is None:
             names = ", ".join(ctx.entities)
             raise VeiInputError(scenario, "--controller", f"no entity {spec.entity!r} (entities: {names})")
+        if spec.osmp:  # an OSI traffic participant moves its entity itself
+            from vei_scenario.interpreter.osmp_participant import plug_osmp
+
+            plug_osmp(ctx, spec, e)
+            continue
         props: dict[str, str] = {}
         for c in e.controllers.values():
             props.update(c.props)
