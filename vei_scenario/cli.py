@@ -201,6 +201,8 @@ def _cmd_fmu_cosim(args: argparse.Namespace) -> int:
     )
     dev = ", ".join(f"{k} {v:.3g} m" for k, v in rep.max_deviation_m.items())
     print(f"{args.engine} ({rep.coupling} coupling, {rep.steps} steps): largest deviation from vei run: {dev}")
+    for note in rep.loop.notes:
+        print(f"note: {note}")
     if args.output:
         print(f"wrote {write_record_csv(rep.record, rep.loop, Path(args.output))}")
     worst = max(rep.max_deviation_m.values())
