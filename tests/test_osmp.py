@@ -255,3 +255,43 @@ def test_the_partners_own_host_agrees(tmp_path):
     done = subprocess.run([sys.executable, "host_alone.py"], cwd=tmp_path / "p", capture_output=True, text=True,
                           timeout=300)  # fmt: skip
     assert done.returncode == 0, done.stdout[-2000:] + done.stderr[-2000:]
+
+
+def test_the_same_run_gives_the_same_bytes(scenario, tmp_path, capsys):
+    for out in ("a", "b"):
+        code, _, _ = _vei(capsys, "run", scenario, "--controller", f"Ego={DATA}/SimpleAebOsmp.fmu",
+                          "--param", "TimeShift=2.197", "-o", tmp_path / out, "--no-plots")  # fmt: skip
+        assert code == 0
+    a, b = ((tmp_path / o / "trajectories.csv").read_bytes() for o in ("a", "b"))
+    assert a == b and b",osmp\n" in a
+
+
+def test_risk_hosts_the_participant(scenario, capsys):
+    """The AEB keeps its first speed and brakes at TTC < 2 s on its own speed: against the crossing
+    rider it collides where the rider comes late enough."""
+    code, out, _ = _vei(capsys, "risk", scenario, "--controller", f"Ego={DATA}/SimpleAebOsmp.fmu",
+                        "--window", "1:3", "--coarse", "0.5", "--tol", "0.1", "--workers", "1")  # fmt: skip
+    assert code == 0 and "collision : TimeShift +2.000..+3.000 s" in out
+
+
+def test_a_scenario_controller_naming_a_participant_drives_as_the_storyboard_activates(scenario, tmp_path):
+    """A Controller whose property ``module`` names an OSMP FMU (found from the scenario's directory):
+    in charge of both domains once activated (the case study activates the ego's with CapEnabled)."""
+    from lxml import etree
+
+    tree = etree.parse(str(scenario))
+    props = tree.find("Entities/ScenarioObject[@name='Ego']/ObjectController/Controller/Properties")
+    etree.SubElement(props, "Property", name="module", value="StraightLine.fmu")
+    etree.SubElement(props, "Property", name="speed_mps", value="4")
+    for f in scenario.parent.iterdir():
+        if f.suffix == ".xodr":
+            (tmp_path / f.name).write_bytes(f.read_bytes())
+    shutil.copy(DATA / "StraightLine.fmu", tmp_path)
+    path = tmp_path / "scenario.xosc"
+    tree.write(str(path))
+    on = run_scenario(path, {"CapEnabled": "true"})
+    ego = on.traces["Ego"]
+    steps = [k for k, s in enumerate(ego.status) if s == "osmp"]
+    assert steps and np.allclose(np.asarray(ego.speed)[steps], 4.0, atol=1e-12)
+    off = run_scenario(path, {"CapEnabled": "false"})  # never activated: the default controller drives
+    assert "osmp" not in off.traces["Ego"].status

@@ -42,8 +42,8 @@ class OsmpController:
         self.ports = spec.load()
         self.properties = {k: v for k, v in props.items() if k}
         self.impl = None
-        self.ids = {n: i for i, n in enumerate(ctx.entities)}
-        self.names = {i: n for n, i in self.ids.items()}
+        self.ids: dict[str, int] = {}  # entity -> OSI id, once every entity is known (at the first step)
+        self.names: dict[int, str] = {}
         self._static = None  # the per-entity parts of the ground truth that never change
         self._commanded: dict[str, object] = {}  # domain -> the storyboard action last told
         self._action_id = 0
@@ -151,6 +151,9 @@ class OsmpController:
 
     # -- the step ------------------------------------------------------------------------------
     def move(self, e: Entity, ctx, dt: float) -> bool:
+        if not self.ids:
+            self.ids = {n: i for i, n in enumerate(ctx.entities)}
+            self.names = {i: n for n, i in self.ids.items()}
         impl = self.instance()
         view = self.sensor_view(e, ctx)
         command = self.traffic_command(e, ctx) if impl.ports.traffic_command is not None else None
@@ -173,6 +176,12 @@ class OsmpController:
         e.accel = b.acceleration.x * c + b.acceleration.y * s if b.HasField("acceleration") else (v - v0) / dt
         e.status = self.status
         return True
+
+
+def scenario_participant(name: str, props: dict[str, str], ctx, spec: ControllerSpec, entity: str) -> OsmpController:
+    """A scenario ``Controller`` whose ``module`` property names an OSMP FMU: in charge of both domains
+    as the storyboard assigns and activates it."""
+    return OsmpController(name, {k: v for k, v in props.items() if k != "module"}, ctx, spec, entity)
 
 
 def plug_osmp(ctx, spec: ControllerSpec, e: Entity) -> OsmpController:
