@@ -295,3 +295,33 @@ def test_a_scenario_controller_naming_a_participant_drives_as_the_storyboard_act
     assert steps and np.allclose(np.asarray(ego.speed)[steps], 4.0, atol=1e-12)
     off = run_scenario(path, {"CapEnabled": "false"})  # never activated: the default controller drives
     assert "osmp" not in off.traces["Ego"].status
+
+
+def test_the_sensor_view_holds_the_roads_lanes(monkeypatch, scenario):
+    """One OSI lane per OpenDRIVE lane and lane section (counted in the .xodr itself), ids after the
+    objects' and unique, centre lines sampled at most 2 m apart along the reference line (the points
+    counted from the .xodr's section lengths), neighbours each other's."""
+    from lxml import etree
+
+    _, views, _ = _recorded(monkeypatch, scenario)
+    gt = views[0].global_ground_truth
+    xodr = next(scenario.parent.glob("*.xodr"))
+    lanes, points = 0, 0
+    for road in etree.parse(str(xodr)).getroot().iterfind("road"):
+        sections = road.findall("lanes/laneSection")
+        starts = [float(sec.get("s")) for sec in sections] + [float(road.get("length"))]
+        for k, sec in enumerate(sections):
+            n = sum(1 for lane in sec.iterfind("*/lane") if int(lane.get("id")) != 0)
+            lanes += n
+            points += n * (
+                max(1, math.ceil((starts[k + 1] - starts[k] - (1e-9 if k + 1 < len(sections) else 0)) / 2.0)) + 1
+            )
+    assert len(gt.lane) == lanes > 100
+    assert sum(len(lane.classification.centerline) for lane in gt.lane) == points
+    ids = [lane.id.value for lane in gt.lane]
+    assert len(set(ids)) == len(ids) and min(ids) == len(gt.moving_object) + len(gt.stationary_object)
+    by_id = {lane.id.value: lane for lane in gt.lane}
+    for lane in gt.lane:
+        for left in lane.classification.left_adjacent_lane_id:
+            assert lane.id.value in [r.value for r in by_id[left.value].classification.right_adjacent_lane_id]
+    assert views[1].global_ground_truth.lane[5] == gt.lane[5]  # (the same every step)

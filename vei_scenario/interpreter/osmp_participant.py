@@ -7,7 +7,8 @@ The ground truth follows vei's OSI traces (:mod:`vei_scenario.reports.osi_trace`
 object whose id is its index in the scenario's entity order; vehicles and pedestrians are moving
 objects (with their OSI type: an e-scooter is ``TYPE_STANDUP_SCOOTER``), misc objects stationary
 ones; poses are bounding-box centres in the OpenDRIVE frame, the host vehicle id is the controlled
-entity's. The lanes are not described. The update's ``base.position`` is the box centre too.
+entity's. The OpenDRIVE road's lanes follow (:mod:`vei_scenario.reports.osi_lanes`: centre lines,
+types, neighbours; ids after the entities'). The update's ``base.position`` is the box centre too.
 """
 
 from __future__ import annotations
@@ -44,7 +45,8 @@ class OsmpController:
         self.impl = None
         self.ids: dict[str, int] = {}  # entity -> OSI id, once every entity is known (at the first step)
         self.names: dict[int, str] = {}
-        self._static = None  # the per-entity parts of the ground truth that never change
+        self._static = None  # the map's reference and PROJ string
+        self._lane_bytes: bytes | None = None
         self._commanded: dict[str, object] = {}  # domain -> the storyboard action last told
         self._action_id = 0
         self.status = "osmp"
@@ -108,7 +110,24 @@ class OsmpController:
             b.dimension.length, b.dimension.width, b.dimension.height = length, width, o.height
             b.position.x, b.position.y, b.position.z = x, y, 0.5 * o.height
             b.orientation.yaw, b.orientation.pitch, b.orientation.roll = yaw, o.pitch, o.roll
-        return view.SerializeToString()
+        return view.SerializeToString() + self._lanes(ctx)
+
+    def _lanes(self, ctx) -> bytes:
+        """The road's lanes as the serialised part of a SensorView that holds only them (protobuf
+        merges it into the step's view when appended to it): built once, ids after the entities'."""
+        if self._lane_bytes is None:
+            self._lane_bytes = b""
+            if ctx.road_file is not None and ctx.road_file.is_file():
+                from osi3 import osi_groundtruth_pb2, osi_sensorview_pb2
+
+                from vei_scenario.reports.osi_lanes import lanes_bytes
+
+                gt = osi_groundtruth_pb2.GroundTruth.FromString(lanes_bytes(ctx.road_file, len(self.ids)))
+                if gt.lane:
+                    view = osi_sensorview_pb2.SensorView()
+                    view.global_ground_truth.CopyFrom(gt)
+                    self._lane_bytes = view.SerializeToString()
+        return self._lane_bytes
 
     def traffic_command(self, e: Entity, ctx) -> bytes:
         """The storyboard's actions for the entity that started since the last step, as OSI defines
