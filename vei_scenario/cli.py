@@ -177,6 +177,13 @@ def _cmd_fmu_build(args: argparse.Namespace) -> int:
     from vei_scenario.runner import parse_param_overrides
 
     values = parse_param_overrides(args.param) if args.scenario else None
+    if args.osmp:
+        from vei_scenario.fmu.osmp_rider import build_osmp_rider
+
+        if _models(args.models) != ["sfm"] or not args.scenario:
+            raise VeiInputError(None, "--osmp", "builds the rider only: vei fmu build sfm --osmp --scenario XOSC")
+        print(f"wrote {build_osmp_rider(args.scenario, Path(args.output), values)}")
+        return 0
     for path in build_fmus(_models(args.models), args.output, args.backend, args.fmi, args.scenario, values).values():
         print(f"wrote {path}")
     return 0
@@ -766,6 +773,12 @@ def build_parser() -> argparse.ArgumentParser:
         help="vei-compiled scenario whose values become the FMUs' start values (and stop time)",
     )
     fb.add_argument("--param", action="append", default=[], metavar="NAME=VALUE", help="override a scenario parameter")
+    fb.add_argument(
+        "--osmp",
+        action="store_true",
+        help="the rider (sfm) as an ASAM OSI traffic participant (OSMP: SensorView in, TrafficUpdate out), with "
+        "the --scenario's track and settings; a pythonfmu FMU that needs Python with vei-scenario to run",
+    )
     fb.set_defaults(func=_cmd_fmu_build)
     fs = fsub.add_parser("system", help="the scenario's closed loop (ego + scooter + planner) as an SSP 1.0 package")
     fs.add_argument("scenario", help="vei-compiled OpenSCENARIO file (.xosc)")

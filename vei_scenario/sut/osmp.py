@@ -78,6 +78,7 @@ class OsmpPorts:
     traffic_command: Binary | None
     parameters: dict[str, tuple[int, str]]  # name -> (value reference, type)
     fmi3: bool = False
+    once_per_process: bool = False  # canBeInstantiatedOnlyOncePerProcess
 
 
 def is_osmp(path: Path) -> bool:
@@ -201,6 +202,7 @@ def read_osmp_ports(path: Path, label: str) -> OsmpPorts:
         binaries["OSMPTrafficUpdateOut"],
         binaries.get("OSMPTrafficCommandIn"),
         params,
+        once_per_process=cs.get("canBeInstantiatedOnlyOncePerProcess") == "true",
     )
 
 
@@ -214,6 +216,10 @@ def merge_address(lo: int, hi: int) -> int:
     return ((int(hi) & 0xFFFFFFFF) << 32) | (int(lo) & 0xFFFFFFFF)
 
 
+#: The FMUs declared instantiable only once per process that this process has instantiated.
+_INSTANTIATED: set[Path] = set()
+
+
 class OsmpParticipant:
     """One instance of the OSMP FMU for one run: serialised messages in, the checked update out."""
 
@@ -224,6 +230,11 @@ class OsmpParticipant:
 
         self.ports, self.label = ports, label
         self._kept: list[ctypes.Array] = []
+        if ports.once_per_process:
+            if ports.path.resolve() in _INSTANTIATED:
+                once = "(canBeInstantiatedOnlyOncePerProcess): host it in one run per process"
+                raise ControllerFault(label, f"{ports.path.name} can be instantiated only once per process {once}")
+            _INSTANTIATED.add(ports.path.resolve())
         try:
             self.fmu = FMU2Slave(guid=ports.guid, unzipDirectory=_unzipped(ports.path),
                                  modelIdentifier=ports.identifier, instanceName="osmp")  # fmt: skip
