@@ -140,7 +140,7 @@ def scenario_controller(name: str, props: dict[str, str], el, ctx) -> PluggedCon
     base = str(Path(str(ctx.path)).resolve().parent) if ctx.path else ""
     spec = ControllerSpec("", props[MODULE_PROPERTY], base=base)
     if spec.osmp:  # an OSI traffic participant moves its entity itself
-        from vei_scenario.interpreter.osmp_participant import scenario_participant
+        from vei_scenario.sut.participant import scenario_participant
 
         return scenario_participant(name, props, ctx, spec, _owner(el))
     return PluggedController(name, props, el, ctx, spec, _owner(el))
@@ -167,7 +167,7 @@ def plug(ctx, specs: tuple[ControllerSpec, ...], scenario: object) -> None:
             names = ", ".join(ctx.entities)
             raise VeiInputError(scenario, "--controller", f"no entity {spec.entity!r} (entities: {names})")
         if spec.osmp:  # an OSI traffic participant moves its entity itself
-            from vei_scenario.interpreter.osmp_participant import plug_osmp
+            from vei_scenario.sut.participant import plug_osmp
 
             plug_osmp(ctx, spec, e)
             continue

@@ -1,5 +1,5 @@
 """The lanes of an OpenDRIVE road network as ASAM OSI ``osi3.Lane`` messages (what an OSI traffic
-participant is shown of the road, :mod:`vei_scenario.interpreter.osmp_participant`).
+participant is shown of the road, :mod:`vei_scenario.sut.participant`).
 
 One lane per OpenDRIVE lane and lane section: its centre line sampled at most :data:`SPACING_M` apart
 along the reference line

@@ -13,10 +13,10 @@ types, neighbours; ids after the entities'). The update's ``base.position`` is t
 
 from __future__ import annotations
 
+# (the entity ``e`` of the methods is an interpreter Entity and ``ctx`` its Context, not imported: the
+# interpreter imports this package, not the other way round)
 import math
 
-from vei_scenario.interpreter.actions import Speed
-from vei_scenario.interpreter.entities import Entity
 from vei_scenario.sut.contract import ControllerFault
 from vei_scenario.sut.spec import ControllerSpec, describe_exception
 
@@ -51,7 +51,7 @@ class OsmpController:
         self._action_id = 0
         self.status = "osmp"
 
-    def activated(self, e: Entity, ctx, domains: tuple[str, ...]) -> None:
+    def activated(self, e, ctx, domains: tuple[str, ...]) -> None:
         """It takes over from the entity's state when it first moves."""
 
     def finish(self) -> None:
@@ -64,7 +64,7 @@ class OsmpController:
         return self.impl
 
     # -- the messages --------------------------------------------------------------------------
-    def sensor_view(self, e: Entity, ctx) -> bytes:
+    def sensor_view(self, e, ctx) -> bytes:
         """The scene at the step's start as a serialised ``osi3.SensorView`` (the others as
         coupling shows them: at the step's start under Jacobi coupling)."""
         from osi3 import osi_object_pb2, osi_sensorview_pb2, osi_version_pb2
@@ -129,7 +129,7 @@ class OsmpController:
                     self._lane_bytes = view.SerializeToString()
         return self._lane_bytes
 
-    def traffic_command(self, e: Entity, ctx) -> bytes:
+    def traffic_command(self, e, ctx) -> bytes:
         """The storyboard's actions for the entity that started since the last step, as OSI defines
         them: a SpeedAction (absolute target speed, shape, duration) and a lane change (relative
         target lane, shape, duration or distance)."""
@@ -145,7 +145,9 @@ class OsmpController:
         if speed is not None and speed is not self._commanded.get("longitudinal"):
             self._commanded["longitudinal"] = speed
             profile = e.speed_profile
-            if profile is not None and isinstance(speed, Speed):
+            # (a SpeedAction: the longitudinal action with a speed target; duck-typed, as importing the
+            # actions here would make the interpreter's modules import each other back)
+            if profile is not None and getattr(speed, "target", (None,))[0] in ("absolute", "relative"):
                 a = cmd.action.add().speed_action
                 self._action_id += 1
                 a.action_header.action_id.value = self._action_id
@@ -169,7 +171,7 @@ class OsmpController:
         return cmd.SerializeToString()
 
     # -- the step ------------------------------------------------------------------------------
-    def move(self, e: Entity, ctx, dt: float) -> bool:
+    def move(self, e, ctx, dt: float) -> bool:
         if not self.ids:
             self.ids = {n: i for i, n in enumerate(ctx.entities)}
             self.names = {i: n for n, i in self.ids.items()}
@@ -203,7 +205,7 @@ def scenario_participant(name: str, props: dict[str, str], ctx, spec: Controller
     return OsmpController(name, {k: v for k, v in props.items() if k != "module"}, ctx, spec, entity)
 
 
-def plug_osmp(ctx, spec: ControllerSpec, e: Entity) -> OsmpController:
+def plug_osmp(ctx, spec: ControllerSpec, e) -> OsmpController:
     """Put the participant in charge of ``e`` for the whole run (both domains), in place of its
     controllers (their properties given to it, overridden by the spec's)."""
     props: dict[str, str] = {}
