@@ -9,7 +9,7 @@ against:
   south-west along Bulevardi and crosses in front of it, 2.2 s before the ego reaches the crossing:
   no collision as recorded.
 * ``multi_scooter``: the same street with three scooters (two crossing, 3.0 s and 1.4 s ahead of the
-  ego, one oncoming and occluded for a while) and a pedestrian track that vei skips.
+  ego, one oncoming and occluded for a while) and a pedestrian track that vei replays as recorded.
 * ``stop_and_go``: the case study's street; the scooter slows down, stops 4 m short of the ego's lane
   for 3 s, then sets off from standstill and crosses about 2 s ahead of the ego.
 * ``no_map``: an S-curved road with no map (vei fits a road to the ego track); annotations use the

@@ -17,6 +17,11 @@ EXAMPLES = ROOT / "examples"
 collect_ignore_glob = ["data/*/test_*.py"]
 
 EXAMPLE_NAMES = ("case_study", "multi_scooter", "no_map", "stop_and_go")
+#: The reference material beside the checkout (esmini/ with its examples and roads, osc-ncap/: the Euro NCAP
+#: pack), or a folder named by ``$VEI_SHARED``; tests that need it skip where it is absent.
+SHARED = Path(os.environ.get("VEI_SHARED") or ROOT.parent / "shared")
+#: The one-line reason such a test gives where it is absent.
+NO_SHARED = "set VEI_SHARED to a folder holding esmini/ and osc-ncap/, or place it at ../shared"
 
 
 def _qc_venv() -> Path | None:
@@ -86,7 +91,7 @@ def esmini_if_here():
     assertions stand without it and that compare with it when they can."""
     from vei_scenario.conformance.esmini import find_esmini
 
-    return find_esmini(ROOT.parent / "shared" / "esmini" / "bin" / "esmini")
+    return find_esmini(SHARED / "esmini" / "bin" / "esmini")
 
 
 @pytest.fixture(scope="session")
@@ -95,7 +100,7 @@ def esmini():
     checkout. Skipped where it is absent (a user's machine); CI has it and so runs the cross-checks."""
     from vei_scenario.conformance.esmini import find_esmini
 
-    found = find_esmini(ROOT.parent / "shared" / "esmini" / "bin" / "esmini")
+    found = find_esmini(SHARED / "esmini" / "bin" / "esmini")
     if found is None:
-        pytest.skip("esmini not found (set VEI_ESMINI or place it at ../shared/esmini/bin/esmini)")
+        pytest.skip("esmini not found (set VEI_ESMINI to its binary, or VEI_SHARED to a folder holding esmini/)")
     return found

@@ -7,12 +7,18 @@ ReachPositionCondition on lane 0."""
 from __future__ import annotations
 
 import pytest
+from roads import straight_500m
 from xosc_parts import CAR, step_speed
 
-from conftest import ROOT
+from conftest import SHARED
 from vei_scenario.interpreter import run_scenario
 
-XODR = ROOT.parent / "shared" / "esmini" / "xodr"
+XODR = SHARED / "esmini" / "xodr"
+
+
+def _road(name: str):
+    """The generated straight road, or one of esmini's roads (for the tests that compare with esmini)."""
+    return straight_500m() if name == "straight_500m.xodr" else XODR / name
 
 
 def _scenario(tmp_path, road: str, road_id: str, s: float, offset: float, stop: str = "") -> object:
@@ -21,7 +27,7 @@ def _scenario(tmp_path, road: str, road_id: str, s: float, offset: float, stop: 
     xosc = tmp_path / "centre.xosc"
     xosc.write_text(f"""<OpenSCENARIO>
 <FileHeader revMajor="1" revMinor="2" date="2024-01-01T00:00:00" description="" author=""/>
-<RoadNetwork><LogicFile filepath="{XODR / road}"/></RoadNetwork>
+<RoadNetwork><LogicFile filepath="{_road(road)}"/></RoadNetwork>
 <Entities><ScenarioObject name="Car">{CAR}</ScenarioObject></Entities>
 <Storyboard><Init><Actions><Private entityRef="Car"><PrivateAction><TeleportAction><Position>
 <LanePosition roadId="{road_id}" laneId="0" s="{s}" offset="{offset}"/></Position></TeleportAction></PrivateAction>

@@ -32,6 +32,9 @@ def test_the_loop_holds_every_rider(multi):
     assert loop.parameters["sfm_scooter_1"]["rider_type"] == "replay"
     assert ("ego", "x", "sfm_scooter_3", "ego_x") in loop.connections
     assert loop.sequential_order == ("cap", "ego", "sfm", "sfm_scooter_1", "sfm_scooter_3")
+    assert loop.notes[0] == (
+        "ped_1 (a pedestrian): no rider, replayed in vei run and left out of the loop (nothing in it reacts to it)"
+    )
 
 
 def test_the_ssp_package_has_a_component_per_rider(multi, tmp_path):

@@ -460,7 +460,7 @@ def test_python_fmus_close_the_loop_like_vei_run(case_study, conflict_shift, tmp
     assert out.returncode == 0, out.stdout + out.stderr
     assert "largest deviation from vei run: ego 0 m, sfm 0 m" in out.stdout
     rows = (tmp_path / "loop.csv").read_text().splitlines()
-    assert rows[0].startswith("t,ego.x,ego.y") and len(rows) == 2503
+    assert rows[0].startswith("time_s,ego.x_m,ego.y_m") and len(rows) == 2503
 
 
 def test_the_ssp_runs_in_ecos_like_vei_run_jacobi(case_study, conflict_shift, tmp_path):

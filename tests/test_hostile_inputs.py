@@ -6,6 +6,7 @@ from __future__ import annotations
 import csv
 import errno
 import os
+import re
 import signal
 import subprocess
 import sys
@@ -304,3 +305,94 @@ def test_worker_errors_cross_process_boundaries_intact():
 
     err = pickle.loads(pickle.dumps(VeiInputError("f.xosc", "line 3", "bad")))
     assert (err.file, err.where, err.reason, str(err)) == ("f.xosc", "line 3", "bad", "f.xosc: line 3: bad")
+
+
+# --- cases of an independent hostile-input corpus (written without reading vei's code) -------------------
+
+
+def _clip_text() -> str:
+    return (EXAMPLES / "case_study" / "clip.json").read_text()
+
+
+def _stationary_ego() -> bytes:
+    import json
+
+    d = json.loads(_clip_text())
+    s0 = d["ego"]["samples"][0]
+    for smp in d["ego"]["samples"]:
+        smp["lat"], smp["lon"], smp["heading_deg"], smp["speed_mps"] = s0["lat"], s0["lon"], s0["heading_deg"], 0.0
+    return json.dumps(d).encode()
+
+
+def _samples_object() -> bytes:
+    import json
+
+    d = json.loads(_clip_text())
+    d["ego"]["samples"] = {str(i): s for i, s in enumerate(d["ego"]["samples"])}
+    return json.dumps(d).encode()
+
+
+#: (id, clip bytes, extra arguments, exit code, words the one line must hold)
+CORPUS_CLIPS = [
+    ("compile_bom", lambda: b"\xef\xbb\xbf" + _clip_text().encode(), 0, ()),
+    (
+        "compile_huge_int_time",
+        lambda: _clip_text().replace('"t": 1715706180.0', '"t": ' + "9" * 5000, 1).encode(),
+        2,
+        ("invalid JSON", "digits"),
+    ),
+    ("compile_samples_is_object", _samples_object, 2, ("ego.samples", "must be an array, not an object")),
+    ("compile_ego_stationary", _stationary_ego, 2, ("ego.samples", "does not drive")),
+]
+
+
+@pytest.mark.parametrize("case, make, code, needles", CORPUS_CLIPS, ids=[c[0] for c in CORPUS_CLIPS])
+def test_corpus_clips(tmp_path, capsys, case, make, code, needles):
+    clip = tmp_path / "clip.json"
+    clip.write_bytes(make())
+    out = tmp_path / "out" / "scenario.xosc"
+    argv = ["compile", str(clip), "--no-map", "-o", str(out)]
+    if code:
+        err = _refused(capsys, argv, *needles)
+        assert len(err) < 400 and not (tmp_path / "out").exists()
+    else:
+        assert main(argv) == 0 and out.is_file()
+
+
+def test_corpus_clip_convert_onto_its_input(tmp_path, capsys):
+    clip = tmp_path / "clip.json"
+    clip.write_text(_clip_text())
+    before = clip.read_bytes()
+    _refused(capsys, ["clip", "convert", str(clip), "-o", str(clip)], "is the input clip")
+    assert clip.read_bytes() == before and [p.name for p in tmp_path.iterdir()] == ["clip.json"]
+
+
+@pytest.mark.parametrize(
+    "expect, why",
+    [
+        ("collision === maybe", "is not a number, true, false or null"),
+        ("collision == maybe", "is not a number, true, false or null"),
+        ("safety_index >= high", "needs a number"),
+    ],
+)
+def test_corpus_check_with_an_expectation_that_is_no_value(tmp_path, capsys, expect, why):
+    (tmp_path / "suite.toml").write_text(f'[[case]]\nname = "x"\nclip = "clip.json"\nexpect = ["{expect}"]\n')
+    (tmp_path / "clip.json").write_text(_clip_text())
+    _refused(capsys, ["check", str(tmp_path / "suite.toml")], "expect[0]", why)
+
+
+def test_corpus_untimed_trajectory_whose_times_go_back_plays_with_a_warning(scenario, tmp_path, capsys):
+    """No Timing: the vertex times are not read (esmini 3.6 plays the file); vei says they go back."""
+    text = Path(scenario).read_text()
+    i = text.index("<Polyline>", text.index("EgoFollowTrajectory"))
+    j = text.index("</Polyline>", i)
+    counter = iter(range(10**6))
+    poly = re.sub(r'time="[^"]*"', lambda m: f'time="{max(0, 5 - next(counter))}"', text[i:j])
+    path = Path(scenario).parent / "ego_times_back.xosc"  # (beside its road network)
+    path.write_text(text[:i] + poly + text[j:])
+    try:
+        assert main(["run", str(path), "--no-plots", "-o", str(tmp_path / "r")]) == 0
+        err = capsys.readouterr().err
+        assert "vei: warning:" in err and "'Ego_route': vertex times go back" in err and "Traceback" not in err
+    finally:
+        path.unlink()

@@ -12,18 +12,18 @@ from pathlib import Path
 import pytest
 from lxml import etree
 
-from conftest import ROOT
+from conftest import NO_SHARED, SHARED
 from vei_scenario.errors import VeiError, VeiInputError
 from vei_scenario.interpreter import run_scenario
 
-ESMINI_XOSC = ROOT.parent / "shared" / "esmini" / "xosc"
-NCAP = ROOT.parent / "shared" / "osc-ncap" / "OpenSCENARIO" / "NCAP"
+ESMINI_XOSC = SHARED / "esmini" / "xosc"
+NCAP = SHARED / "osc-ncap" / "OpenSCENARIO" / "NCAP"
 
 
 def _source(name: str) -> Path:
     path = (NCAP if "/" in name else ESMINI_XOSC) / name
     if not path.is_file():
-        pytest.skip(f"{path} not found (../shared)")
+        pytest.skip(f"{path.name} not found ({NO_SHARED})")
     return path
 
 
@@ -84,7 +84,7 @@ def test_a_road_user_without_its_box_is_refused_naming_the_catalog_file(tmp_path
     source = _source("cut-in.xosc")
     vehicles = source.parent.parent / "xosc" / "Catalogs" / "Vehicles"
     if not vehicles.is_dir():
-        pytest.skip("esmini's vehicle catalog not found")
+        pytest.skip(f"esmini's vehicle catalog not found ({NO_SHARED})")
     catalogs = tmp_path / "Vehicles"
     catalogs.mkdir()
     for f in vehicles.glob("*.xosc"):

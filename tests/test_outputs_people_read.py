@@ -117,12 +117,12 @@ def test_run_scenario_takes_python_booleans_and_numbers(compiled):
     assert np.array_equal(typed.traces["Ego"].x, texts.traces["Ego"].x)
 
 
-def test_readme_python_example_runs_as_written_without_the_xsds():
-    """The README's Python API block, in a fresh interpreter with no VEI_QC_VENV (a user's machine)."""
+def test_api_example_runs_as_written_without_the_xsds():
+    """The Python API page's first block, in a fresh interpreter with no VEI_QC_VENV (a user's machine)."""
     from conftest import ROOT
 
-    text = (ROOT / "README.md").read_text()
-    block = text.split("## Python API", 1)[1].split("```python\n", 1)[1].split("```", 1)[0]
+    text = (ROOT / "docs" / "reference" / "api.md").read_text()
+    block = text.split("```python\n", 1)[1].split("```", 1)[0]
     env = {k: v for k, v in os.environ.items() if k not in ("VEI_QC_VENV", "VEI_ASAM_SCHEMAS")}
     proc = subprocess.run([sys.executable, "-c", block], cwd=ROOT, env=env, capture_output=True, text=True)
     assert proc.returncode == 0, proc.stderr[-2000:]
@@ -212,12 +212,13 @@ def test_run_plots_say_whether_there_was_a_collision_and_mark_time_on_the_paths(
     assert legend == ["2-D TTC (zones)", "headway TTC (not used for zones)"]
 
 
-def test_readme_run_example_prints_what_the_readme_shows(compiled):
-    """The lines under `$ vei run ...` in the README, against the command run on the compiled case study."""
+def test_getting_started_run_example_prints_what_the_page_shows(compiled):
+    """The lines under `$ vei run ...` in Getting started, against the command run on the compiled case
+    study."""
     from conftest import ROOT
 
-    text = (ROOT / "README.md").read_text()
-    block = text.split("$ vei run out/case_study/scenario.xosc", 1)[1].split("\n$ ", 1)[0]
+    text = (ROOT / "docs" / "getting-started.md").read_text()
+    block = text.split("$ vei run out/case_study/scenario.xosc", 1)[1].split("\n$ ", 1)[0].split("\n```", 1)[0]
     args, *shown = block.strip("\n").splitlines()
     params = args.split(" -o ")[0].split()
     xosc = compiled["case_study"].written[0]

@@ -14,17 +14,17 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from roads import straight_500m
 from test_cruise import assert_identical, run_both
 from test_cruise_lateral import _event as event_when
 from test_cruise_lateral import _time as time_passed
 from xosc_parts import speed_action, speed_to
 
-from conftest import ROOT
 from vei_scenario.interpreter import run_scenario
 
-ROAD = ROOT.parent / "shared" / "esmini" / "xodr" / "straight_500m.xodr"
+ROAD = straight_500m()
 DT = 0.01
-LANE_Y = -1.535  # (lane -1's centre on esmini's straight road)
+LANE_Y = -1.535  # (lane -1's centre on the straight road)
 
 
 def _relative(ref: str, delta: float, **kw) -> str:
@@ -56,8 +56,8 @@ def _event(name: str, actor: str, action: str, at: float) -> str:
 
 
 def _scenario(tmp_path, objects: str, init: dict[str, tuple[float, float, str]], events: str, end: float) -> object:
-    """``init``: entity -> (x, speed, more Init actions) on lane -1 of esmini's straight road (none: no road)."""
-    network = f'<LogicFile filepath="{ROAD}"/>' if ROAD.is_file() else ""
+    """``init``: entity -> (x, speed, more Init actions) on lane -1 of the 500 m straight road."""
+    network = f'<LogicFile filepath="{ROAD}"/>'
     privates = "".join(
         f'<Private entityRef="{n}"><PrivateAction><TeleportAction><Position><WorldPosition x="{x}" y="{LANE_Y}" '
         f'h="0"/></Position></TeleportAction></PrivateAction>{speed_action(v)}{more}</Private>'
@@ -79,8 +79,8 @@ value="0" rule="greaterThan"/></ByValueCondition></Condition></ConditionGroup></
 
 
 def _agrees_with_esmini(esmini_or_none, path, within_m: float) -> None:
-    """Where esmini and its road are here, every entity within ``within_m`` of esmini's (same collisions)."""
-    if esmini_or_none is None or not ROAD.is_file():
+    """Where esmini is here, every entity within ``within_m`` of esmini's (same collisions)."""
+    if esmini_or_none is None:
         return
     from vei_scenario.conformance.esmini import cross_check
 

@@ -5,6 +5,7 @@ sampling against crude Monte Carlo on the planner's rare failures."""
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import pytest
 
@@ -109,3 +110,83 @@ def test_degenerate_distributions_are_refused(compiled, tmp_path, capsys, body):
     dist = _dist(tmp_path, f'<StochasticDistribution parameterName="TimeShift">{body}</StochasticDistribution>')
     assert main(["probability", str(compiled["case_study"].written[0]), "--dist", str(dist)]) == 2
     assert capsys.readouterr().err.count("\n") == 1
+
+
+def test_the_files_random_seed_is_used_without_seed_and_the_run_says_which(compiled, tmp_path, capsys):
+    """As vei sweep does: the distribution's randomSeed draws the sample unless --seed is given."""
+    scenario = compiled["case_study"].written[0]
+    uniform = '<UniformDistribution><Range lowerLimit="0" upperLimit="4"/></UniformDistribution>'
+    dist = _dist(tmp_path, f'<StochasticDistribution parameterName="TimeShift">{uniform}</StochasticDistribution>')
+    fixed = {"RiderType": "replay", "CapEnabled": "false"}
+    kw = {"estimators": ("monte-carlo",), "runs": 400, "fixed": fixed}
+    (own,) = estimate_probability(scenario, dist, **kw)
+    (seven,) = estimate_probability(scenario, dist, seed=7, **kw)
+    (zero,) = estimate_probability(scenario, dist, seed=0, **kw)
+    assert own.seed == 7 and own.failures == seven.failures and zero.failures != seven.failures
+    argv = ["probability", str(scenario), "--dist", str(dist), "--estimator", "monte-carlo", "--runs", "400"]
+    assert main([*argv, "--param", "RiderType=replay", "--param", "CapEnabled=false"]) == 0
+    assert "seed 7 (the distribution's randomSeed)" in capsys.readouterr().out
+    assert main([*argv, "--param", "RiderType=replay", "--param", "CapEnabled=false", "--seed", "3"]) == 0
+    assert "seed 3 (--seed)" in capsys.readouterr().out
+
+
+def test_help_prints_percent_once_and_the_defaults(capsys):
+    for command, needles in (
+        (
+            "probability",
+            ["Wilson's 95 % interval", "runs per estimator (default 20000)", "(default: the distribution's"],
+        ),
+        ("falsify", ["slices per other range (default 7)", "(default 0.005)"]),
+        ("risk", ["(default 0.01)"]),
+    ):
+        assert main([command, "--help"]) == 0
+        text = " ".join(capsys.readouterr().out.split())
+        assert "%%" not in text
+        for n in needles:
+            assert n in text, (command, n)
+
+
+def test_a_deterministic_distribution_is_refused_with_how_to_write_a_stochastic_one(compiled, capsys):
+    """The compiled scenario.variations.xosc lists values; a probability needs densities."""
+    written = compiled["case_study"].written
+    scenario = next(p for p in written if p.name == "scenario.xosc")
+    variations = next(p for p in written if p.name.endswith(".variations.xosc"))
+    assert main(["probability", str(scenario), "--dist", str(variations)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1
+    assert "Deterministic" in err and "<Stochastic>" in err and "vei compile --stochastic" in err
+
+
+def test_compile_writes_a_stochastic_distribution_that_probability_takes(tmp_path, capsys):
+    """`vei compile --stochastic`: the rider's timing normal around the conflict shift (standard deviation
+    half the collision interval), the rider type uniform; valid against the ASAM XSD, the same bytes on
+    every compile, and the documented probability example runs on it."""
+    from vei_scenario.openscenario.validation import validate_files
+
+    clip = Path(__file__).parent.parent / "examples" / "case_study" / "clip.json"
+    out = []
+    for k in (1, 2):
+        assert main(["compile", str(clip), "-o", str(tmp_path / f"c{k}" / "scenario.xosc"), "--stochastic"]) == 0
+        out.append((tmp_path / f"c{k}" / "scenario.stochastic.xosc").read_bytes())
+    capsys.readouterr()
+    assert out[0] == out[1]
+    dist = tmp_path / "c1" / "scenario.stochastic.xosc"
+    assert validate_files([dist]) == []
+    text = dist.read_text()
+    assert 'parameterName="TimeShift"' in text and "<NormalDistribution" in text and 'parameterName="RiderType"' in text
+    scenario = tmp_path / "c1" / "scenario.xosc"
+    argv = ["probability", str(scenario), "--dist", str(dist), "--param", "CapEnabled=true", "--runs", "2000"]
+    assert main([*argv, "--estimator", "monte-carlo"]) == 0
+    line = capsys.readouterr().out
+    assert "P(collision) = " in line and "seed 1 (the distribution's randomSeed)" in line
+    assert not (tmp_path / "plain").exists()
+    assert main(["compile", str(clip), "-o", str(tmp_path / "plain" / "scenario.xosc")]) == 0
+    assert not (tmp_path / "plain" / "scenario.stochastic.xosc").exists()
+
+
+def test_a_stochastic_distribution_for_openscenario_1_0_is_refused_up_front(tmp_path, capsys):
+    clip = Path(__file__).parent.parent / "examples" / "case_study" / "clip.json"
+    out = tmp_path / "s" / "scenario.xosc"
+    assert main(["compile", str(clip), "-o", str(out), "--stochastic", "--osc-version", "1.0"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "--stochastic" in err and not out.parent.exists()

@@ -12,13 +12,13 @@ from pathlib import Path
 import pytest
 from lxml import etree
 
+from conftest import NO_SHARED, SHARED
 from vei_scenario.errors import VeiInputError
 from vei_scenario.interpreter import clear_file_caches, load_scenario
 from vei_scenario.interpreter import document as doc_module
 from vei_scenario.openscenario.numeric_attributes import check_numbers
 from vei_scenario.safe_xml import parse_xml
 
-SHARED = Path(__file__).resolve().parents[2] / "shared"
 ESMINI_XOSC = SHARED / "esmini" / "xosc"
 NCAP = SHARED / "osc-ncap" / "OpenSCENARIO" / "NCAP"
 
@@ -47,7 +47,10 @@ def _files() -> list[Path]:
     return [f for f in found if "ParameterValueDistribution" not in f.read_text(errors="replace")[:4000]]
 
 
-@pytest.mark.skipif(not ESMINI_XOSC.is_dir() or not NCAP.is_dir(), reason="esmini examples and NCAP pack not here")
+@pytest.mark.skipif(
+    not ESMINI_XOSC.is_dir() or not NCAP.is_dir(),
+    reason=f"esmini's examples or the Euro NCAP pack not found ({NO_SHARED})",
+)
 def test_loads_equal_resolving_the_whole_file_afresh():
     """esmini's examples and the Euro NCAP pack, each loaded three times (its defaults, then numeric
     parameters moved), against the reference: the same XML, byte for byte."""

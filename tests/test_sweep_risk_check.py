@@ -115,7 +115,7 @@ def test_sweep_rows_equal_single_runs_and_report_failures(case_xosc, tmp_path, c
             "--vary",
             "TimeShift=1.5,2.2,3.5",
             "--vary",
-            "RiderType=normal,bogus",
+            "EgoCruiseSpeed=5.6,-5",
             "--vary",
             "CapEnabled=true,false",
             "-o",
@@ -128,20 +128,21 @@ def test_sweep_rows_equal_single_runs_and_report_failures(case_xosc, tmp_path, c
     # the catalog is written whole, and the exit says it has holes (a script or CI gate must not miss them)
     assert code == 1
     err = capsys.readouterr().err
-    assert "6 of 12 variants failed" in err and "riderType 'bogus'" in err and "Traceback" not in err
+    why = "needs a non-negative property cruiseSpeed"
+    assert "6 of 12 variants failed" in err and why in err and "Traceback" not in err
     doc = json.loads((tmp_path / "cat" / "catalog.json").read_text())
     rows = doc["variants"]
     assert len(rows) == 12
-    bogus = [r for r in rows if r["parameters"]["RiderType"] == "bogus"]
-    assert len(bogus) == 6 and all(r["status"] == "error" and "riderType 'bogus'" in r["error"] for r in bogus)
+    bogus = [r for r in rows if r["parameters"]["EgoCruiseSpeed"] == "-5"]
+    assert len(bogus) == 6 and all(r["status"] == "error" and why in r["error"] for r in bogus)
     for r in [r for r in rows if r["status"] == "ok"][:3]:
         single = compute_metrics(PairSeries.from_run(run_scenario(case_xosc, r["parameters"])))
         assert r["metrics"] == json.loads(json.dumps(single))
         # the emitted scenario is that variant for any tool: its declarations carry the values
         emitted = etree.parse(str(tmp_path / "cat" / r["xosc"])).getroot()
         values = {d.get("name"): d.get("value") for d in emitted.iter("ParameterDeclaration")}
-        assert {k: values[k] for k in ("TimeShift", "RiderType", "CapEnabled")} == {
-            k: r["parameters"][k] for k in ("TimeShift", "RiderType", "CapEnabled")
+        assert {k: values[k] for k in ("TimeShift", "EgoCruiseSpeed", "CapEnabled")} == {
+            k: r["parameters"][k] for k in ("TimeShift", "EgoCruiseSpeed", "CapEnabled")
         }
         assert (tmp_path / "cat" / "variants" / emitted.find(".//LogicFile").get("filepath")).is_file()
     with open(tmp_path / "cat" / "catalog.csv") as fh:

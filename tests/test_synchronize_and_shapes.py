@@ -9,9 +9,10 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from roads import straight_500m
 from xosc_parts import ABSOLUTE_TIMING, follow_trajectory
 
-from conftest import ROOT
+from conftest import NO_SHARED, ROOT, SHARED
 from vei_scenario.cli import main
 from vei_scenario.interpreter import run_scenario
 
@@ -294,7 +295,7 @@ def test_a_maneuver_group_runs_as_often_as_it_may(tmp_path):
     assert b.x[-1] == pytest.approx(10.0 * b.t[-1] + 30.0 - 3 * 0.1, abs=1e-6)  # (a jump replaces a step)
 
 
-ROAD = ROOT.parent / "shared" / "esmini" / "xodr" / "straight_500m.xodr"
+ROAD = straight_500m()
 
 
 def _lane_change(tmp_path, lane: int, shape: str, dimension: str, value: float) -> Path:
@@ -335,8 +336,6 @@ def _lane_change(tmp_path, lane: int, shape: str, dimension: str, value: float) 
 def test_a_lane_change_over_a_rate_peaks_at_it(tmp_path, shape, peak):
     """dynamicsDimension="rate": the value is the peak lateral speed, so the change of one lane width
     w takes peak·w/rate; the entity ends in the target lane's centre (and as esmini, when here)."""
-    if not ROAD.is_file():
-        pytest.skip("esmini's roads are not here")
     path = _lane_change(tmp_path, 1, shape, "rate", 1.0)
     b = run_scenario(path).traces["B"]
     y0, y1 = b.y[0], b.y[-1]
@@ -347,14 +346,12 @@ def test_a_lane_change_over_a_rate_peaks_at_it(tmp_path, shape, peak):
     assert vy.max() == pytest.approx(1.0, abs=0.02 if shape != "linear" else 1e-6)
     from vei_scenario.conformance.esmini import cross_check, find_esmini
 
-    esmini = find_esmini(ROOT.parent / "shared" / "esmini" / "bin" / "esmini")
+    esmini = find_esmini(SHARED / "esmini" / "bin" / "esmini")
     if esmini is not None:
         assert cross_check(esmini, path).max_deviation_m < 0.05
 
 
 def test_a_lane_change_to_a_lane_the_road_lacks_is_refused(tmp_path, capsys):
-    if not ROAD.is_file():
-        pytest.skip("esmini's roads are not here")
     path = _lane_change(tmp_path, -5, "cubic", "time", 2.0)
     assert main(["run", str(path), "-o", str(tmp_path / "o")]) != 0
     err = capsys.readouterr().err
@@ -508,8 +505,6 @@ def _lateral(tmp_path, constraints: str, continuous: str = "true", freespace: st
 def test_a_lateral_distance_is_reached_to_the_side_asked(tmp_path, constraints, freespace, gap):
     """B starts level with A (same lane) and moves 1 m to its right (between box sides: 1 + 2 m); with
     maxSpeed 0.5 m/s it takes 2 s to get there, never faster."""
-    if not ROAD.is_file():
-        pytest.skip("esmini's roads are not here")
     r = run_scenario(_lateral(tmp_path, constraints, freespace=freespace))
     a, b = r.traces["A"], r.traces["B"]
     assert a.y[-1] - b.y[-1] == pytest.approx(gap, abs=1e-6)  # to the right: lower y, heading +x
@@ -675,7 +670,7 @@ def test_the_ncap_turning_case_brings_the_pedestrian_to_its_target_with_the_ego(
 
     v = ROOT.parent / "shared/osc-ncap/OpenSCENARIO/NCAP/AEB_VRU_2023/Variations/NCAP_AEB_VRU_CPTAfo-50_10kph_2023.xosc"
     if not v.is_file():
-        pytest.skip("the Euro NCAP pack is not beside the checkout")
+        pytest.skip(f"the Euro NCAP pack not found ({NO_SHARED})")
     base, values = values_of(v)
     doc = load_scenario(base, values)
     sync = next(doc.root.iter("SynchronizeAction"))

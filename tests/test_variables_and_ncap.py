@@ -7,11 +7,11 @@ from pathlib import Path
 
 import pytest
 
-from conftest import ROOT
+from conftest import NO_SHARED, SHARED
 from vei_scenario.cli import main
 from vei_scenario.interpreter import run_scenario
 
-NCAP = ROOT.parent / "shared" / "osc-ncap" / "OpenSCENARIO" / "NCAP"
+NCAP = SHARED / "osc-ncap" / "OpenSCENARIO" / "NCAP"
 
 SCENARIO = """<?xml version="1.0"?>
 <OpenSCENARIO><FileHeader revMajor="1" revMinor="2" date="2024-01-01T00:00:00" description="" author=""/>
@@ -89,9 +89,9 @@ def test_ncap_single_executions_agree_with_esmini(variation, request):
     from vei_scenario.conformance.esmini import cross_check, find_esmini
     from vei_scenario.conformance.ncap import values_of
 
-    esmini = find_esmini(ROOT.parent / "shared" / "esmini" / "bin" / "esmini")
+    esmini = find_esmini(SHARED / "esmini" / "bin" / "esmini")
     if esmini is None:
-        pytest.skip("esmini is not here")
+        pytest.skip(f"esmini not found ({NO_SHARED})")
     if variation.name in ESMINI_DIFFERS:
         request.applymarker(pytest.mark.xfail(reason=ESMINI_DIFFERS[variation.name], strict=True))
     base, values = values_of(variation)
@@ -103,7 +103,7 @@ def test_ncap_single_executions_agree_with_esmini(variation, request):
 
 def test_run_takes_a_distribution_variant(capsys):
     if not NCAP.is_dir():
-        pytest.skip("the NCAP pack is not here")
+        pytest.skip(f"the Euro NCAP pack not found ({NO_SHARED})")
     base = NCAP / "AEB_C2C_2023" / "NCAP_AEB_C2C_CCR_2023.xosc"
     dist = NCAP / "AEB_C2C_2023" / "Variations" / "NCAP_AEB_C2C_CCRm_50kph_2023.xosc"
     assert main(["run", str(base), "--dist", str(dist), "--no-plots"]) == 0
@@ -117,7 +117,7 @@ def test_the_packs_full_variation_files_are_found_apart_from_its_single_executio
     """benchmarks/speed_vs_esmini.py --sweep-all sweeps these: every one a distribution of more than one
     parameter set over a scenario that exists, none of them a single execution."""
     if not NCAP.is_dir():
-        pytest.skip("the NCAP pack is not here")
+        pytest.skip(f"the Euro NCAP pack not found ({NO_SHARED})")
     from vei_scenario.conformance.ncap import base_scenario, full_variations, single_executions
     from vei_scenario.sweep import build_variants
 

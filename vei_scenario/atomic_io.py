@@ -64,16 +64,31 @@ def _write(fd: int, tmp: str, data: bytes) -> None:
     os.chmod(tmp, _default_mode())
 
 
+def _named(exc: OSError, path: Path) -> OSError:
+    """``exc`` naming ``path``, the file the user asked for, not the temporary file beside it (a
+    read-only folder refuses the temporary file first, and the user never named that)."""
+    names = [str(n) for n in (exc.filename, exc.filename2) if n is not None]
+    ours = [n for n in names if Path(n).name.startswith(f".{path.name}.") and n.endswith(".tmp")]
+    if exc.errno is None or (names and not ours):
+        return exc  # (a folder that cannot be made, say: the user's own path already)
+    return OSError(exc.errno, exc.strerror, str(path))
+
+
 def write_bytes_atomic(path: Path, data: bytes) -> None:
     """Write ``data`` to ``path`` through a temporary file and a rename."""
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = _temporary(path)
+    try:
+        fd, tmp = _temporary(path)
+    except OSError as exc:
+        raise _named(exc, path) from None
     try:
         _write(fd, tmp, data)
         os.replace(tmp, path)
-    except BaseException:
+    except BaseException as exc:
         Path(tmp).unlink(missing_ok=True)
+        if isinstance(exc, OSError):
+            raise _named(exc, path) from None
         raise
 
 
@@ -95,22 +110,27 @@ class OutputSet:
             if path.is_dir():
                 raise IsADirectoryError(21, "Is a directory", str(path))
         staged: list[tuple[str, Path]] = []
+        path = None
         try:
             for path, data in self._files.items():
                 path.parent.mkdir(parents=True, exist_ok=True)
                 fd, tmp = _temporary(path)
                 staged.append((tmp, path))  # (before writing: a failed write is cleaned up too)
                 _write(fd, tmp, data)
-        except BaseException:
+        except BaseException as exc:
             for tmp, _ in staged:
                 Path(tmp).unlink(missing_ok=True)
+            if isinstance(exc, OSError) and path is not None:
+                raise _named(exc, path) from None
             raise
         for k, (tmp, path) in enumerate(staged):
             try:
                 os.replace(tmp, path)
-            except BaseException:
+            except BaseException as exc:
                 for rest, _ in staged[k:]:
                     Path(rest).unlink(missing_ok=True)
+                if isinstance(exc, OSError):
+                    raise _named(exc, path) from None
                 raise
 
 

@@ -20,6 +20,7 @@ expect = ["collision == false", "safety_index >= 0.9"]
 from __future__ import annotations
 
 import math
+import operator
 import re
 import sys
 import tempfile
@@ -41,6 +42,14 @@ else:  # pragma: no cover
 
 _EXPECT = re.compile(r"^\s*([A-Za-z_][\w.]*)\s*(==|!=|>=|<=|>|<)\s*(\S.*?)\s*$")
 _ZONES = ("safe", "attention", "alert", "collision")
+_OPS = {
+    "==": operator.eq,
+    "!=": operator.ne,
+    ">=": operator.ge,
+    "<=": operator.le,
+    ">": operator.gt,
+    "<": operator.lt,
+}
 
 
 @dataclass(frozen=True)
@@ -60,7 +69,10 @@ class Expectation:
             ok = (actual is None) == (self.value is None) if self.op in ("==", "!=") else False
             return (ok if self.op == "==" else not ok if self.op == "!=" else False), actual
         a, b = actual, self.value
-        ok = {"==": a == b, "!=": a != b, ">=": a >= b, "<=": a <= b, ">": a > b, "<": a < b}[self.op]
+        try:  # (only the one comparison asked for: a number and a boolean compare, a table does not)
+            ok = _OPS[self.op](a, b)
+        except TypeError:
+            ok = False
         return bool(ok), actual
 
 
@@ -185,6 +197,12 @@ def load_suite(path: str | Path) -> tuple[list[Case], float]:
             if m.group(2) not in ("==", "!=") and (isinstance(value, (bool, str)) or value is None):
                 raise VeiInputError(
                     path, f"{where}.expect[{j}]", f"{e!r}: {m.group(2)} needs a number, not {m.group(3).strip()!r}"
+                )
+            if isinstance(value, str):
+                raise VeiInputError(
+                    path,
+                    f"{where}.expect[{j}]",
+                    f"{e!r}: the value {value!r} is not a number, true, false or null",
                 )
             if isinstance(value, float) and not math.isfinite(value):
                 raise VeiInputError(path, f"{where}.expect[{j}]", f"{e!r}: the value is not a finite number")

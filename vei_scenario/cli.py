@@ -8,6 +8,7 @@ exit with code 2; validation findings, and a fault of the user's controller whil
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import errno
 import json
 import math
@@ -70,6 +71,13 @@ FRAME_RATE_HELP = (
 )
 
 
+def _int_list(text: str) -> tuple[int, ...]:
+    try:
+        return tuple(sorted({int(v) for v in text.split(",")}))
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text[:40]!r} is not a list of numbers like 4,5") from None
+
+
 def _osc_minor(text: str) -> int:
     parts = text.split(".")
     if len(parts) != 2 or parts[0] != "1" or not parts[1].isdigit():
@@ -79,7 +87,6 @@ def _osc_minor(text: str) -> int:
 
 def _cmd_compile(args: argparse.Namespace) -> int:
     from vei_scenario.compiler import CompileOptions, compile_clip
-    from vei_scenario.reports.compile_report import compile_report
 
     opts = CompileOptions(
         rate_hz=args.rate,
@@ -90,11 +97,54 @@ def _cmd_compile(args: argparse.Namespace) -> int:
         threat=args.threat,
         variants_dir=Path(args.variants) if args.variants else None,
         model_parameters=args.model_parameters,
+        stochastic=args.stochastic,
         frame_rate_hz=args.frame_rate,
         time_unit=args.time_unit,
     )
+    if Path(args.clip).is_dir():
+        return _compile_library(args, opts)
+    for flag in ("executor", "scheduler", "workers"):
+        if getattr(args, flag) is not None:
+            raise VeiInputError(None, f"--{flag}", "applies to a folder of clips (vei compile CLIPS/ -o LIBRARY/)")
+    from vei_scenario.reports.compile_report import compile_report
+
     result = compile_clip(args.clip, args.output, opts)
     print(compile_report(result))
+    return 0
+
+
+def _compile_library(args: argparse.Namespace, opts) -> int:
+    from tqdm import tqdm
+
+    from vei_scenario.library import compile_library
+
+    files = sum(1 for p in Path(args.clip).iterdir() if p.suffix.lower() == ".json")
+    with tqdm(total=files, unit="clip", disable=args.quiet or not sys.stderr.isatty(), leave=False) as bar:
+        result = compile_library(
+            args.clip, args.output, opts, args.executor or "local", args.scheduler, args.workers, bar.update
+        )
+    ok = len(result.rows) - len(result.failed)
+    print(
+        f"{len(result.rows)} clips: {ok} compiled, {len(result.failed)} could not be ({result.compiled} tried in this "
+        f"run, {result.kept} unchanged since the last)"
+    )
+    for r in result.rows[:3]:
+        if r["status"] == "ok":
+            print(
+                f"  #{r['rank']} {r['file']}: threat {r['threat']}, collision margin "
+                f"{'-' if r['collision_margin_s'] is None else format(r['collision_margin_s'], '.2f') + ' s'}, "
+                f"closest {r['min_centre_distance_m']:.2f} m"
+            )
+    out = Path(args.output)
+    print(f"wrote {out / 'library.json'}, {out / 'library.html'}")
+    if result.failed:
+        first = result.failed[0]
+        print(
+            f"vei: {len(result.failed)} of {len(result.rows)} clips could not be compiled; their rows in library.json "
+            f"say why (the first: {first['error']})",
+            file=sys.stderr,
+        )
+        return EXIT_VARIANTS_FAILED
     return 0
 
 
@@ -104,6 +154,68 @@ def _cmd_clip_convert(args: argparse.Namespace) -> int:
     path, fmt = convert_clip(args.input, args.output, args.to, args.frame_rate, args.time_unit)
     print(f"wrote {path} ({'ASAM OpenLABEL 1.0' if fmt == 'openlabel' else 'vei-clip/1'})")
     return 0
+
+
+def _cmd_clip_split(args: argparse.Namespace) -> int:
+    from vei_scenario.library.split import SplitOptions, split_drive
+
+    defaults = SplitOptions()
+    opts = SplitOptions(
+        near_m=args.near,
+        horizon_s=args.horizon,
+        max_gap_s=args.max_gap,
+        pad_before_s=args.pad_before,
+        pad_after_s=args.pad_after,
+        merge_gap_s=args.merge_gap,
+        min_length_s=args.min_length,
+        categories=tuple(args.category) if args.category else defaults.categories,
+    )
+    result = split_drive(args.input, args.output, opts, args.to, args.frame_rate, args.time_unit)
+    for part, path in zip(result.interactions, result.written):
+        print(
+            f"wrote {path}: {part.t_end - part.t_start:.1f} s from {part.t_start - result.t0:.1f} s, "
+            f"{', '.join(part.tracks)} (closest {part.closest_m:.1f} m to the ego's path)"
+        )
+    print(
+        f"{len(result.interactions)} interaction(s) in {result.duration_s:.0f} s of {result.source}"
+        + (
+            ""
+            if result.interactions
+            else f" (no {'/'.join(opts.categories)} within {opts.near_m:g} m of the ego's path)"
+        )
+    )
+    return 0
+
+
+def _cmd_bench(args: argparse.Namespace) -> int:
+    from tqdm import tqdm
+
+    from vei_scenario.bench import BenchOptions, run_bench
+
+    opts = BenchOptions(half_width_s=args.half_width, step_s=args.step, dt=args.dt, workers=args.workers)
+    if args.configurations:
+        opts = dataclasses.replace(opts, configurations=args.configurations)
+    index = Path(args.library) / "library.json"
+    total = None
+    if index.is_file():
+        try:
+            total = len(json.loads(index.read_text("utf-8")).get("scenarios", []))
+        except (ValueError, AttributeError):
+            total = None
+    with tqdm(total=total, unit="scenario", disable=args.quiet or not sys.stderr.isatty(), leave=False) as bar:
+        doc = run_bench(args.library, args.output, opts, bar.update)
+    share = "-" if doc["failure_share"] is None else f"{100 * doc['failure_share']:.1f} %"
+    print(
+        f"{doc['scenarios']} scenarios, {doc['benched']} benched: {doc['failing']} fail ({share}): the planner "
+        "collides at some TimeShift"
+    )
+    for w in doc["worst"][:3]:
+        print(
+            f"  {w['file']}: {w['impact_speed_mps']:.2f} m/s at TimeShift {w['time_shift_s']:+.2f} s; {w['reproduce']}"
+        )
+    out = Path(args.output)
+    print(f"wrote {out / 'bench.json'}, {out / 'report.html'}, {out / 'junit.xml'}")
+    return 1 if doc["failing"] else 0
 
 
 def _cmd_examples(args: argparse.Namespace) -> int:
@@ -156,6 +268,7 @@ def _cmd_run(args: argparse.Namespace) -> int:
         coupling=args.coupling,
         osi=args.osi,
         cfg=MetricConfig(zone_ttc=args.zone_ttc),
+        progress=True,
         controllers=controllers,
     )
     for w in report.metrics.get("warnings", ()):
@@ -369,7 +482,7 @@ def _cmd_falsify(args: argparse.Namespace) -> int:
 
 def _cmd_probability(args: argparse.Namespace) -> int:
     from vei_scenario.atomic_io import json_text, write_bytes_atomic
-    from vei_scenario.probability import estimate_probability
+    from vei_scenario.probability import estimate_probability, random_seed
     from vei_scenario.runner import parse_param_overrides
 
     estimators = ("monte-carlo", "importance-sampling") if args.estimator == "both" else (args.estimator,)
@@ -377,6 +490,15 @@ def _cmd_probability(args: argparse.Namespace) -> int:
         args.scenario, args.dist, args.target, estimators, args.runs, parse_param_overrides(args.param),
         args.band, args.seed, args.dt, args.workers, _controllers(args), args.allow_default_controller,
     )  # fmt: skip
+    if results:
+        how = (
+            "--seed"
+            if args.seed is not None
+            else "the distribution's randomSeed"
+            if random_seed(args.dist) is not None
+            else "no --seed, no randomSeed in the file"
+        )
+        print(f"sampling with seed {results[0].seed} ({how})")
     for e in results:
         extra = f", {e.levels} level(s)" if e.estimator == "importance-sampling" else ""
         print(
@@ -391,7 +513,7 @@ def _cmd_probability(args: argparse.Namespace) -> int:
               f"({needed / imp.runs:.1f}x the runs importance sampling took)")  # fmt: skip
     if args.output:
         doc = {"scenario": str(args.scenario), "distribution": str(args.dist), "target": args.target,
-               "fixed": parse_param_overrides(args.param), "seed": args.seed,
+               "fixed": parse_param_overrides(args.param), "seed": results[0].seed if results else args.seed,
                "estimates": [e.as_dict() for e in results]}  # fmt: skip
         if args.controller:
             from vei_scenario.sut import sut_document
@@ -414,7 +536,7 @@ def _cmd_view(args: argparse.Namespace) -> int:
     else:
         raise VeiInputError(src, "input", "not found (a .xosc scenario or a directory written by vei run -o)")
     if args.output:
-        print(f"wrote {write_animation(view, args.output, args.fps, args.speed)}")
+        print(f"wrote {write_animation(view, args.output, args.fps, args.speed, progress=True)}")
     else:
         show(view, args.fps, args.speed)
     return 0
@@ -493,10 +615,25 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument("--version", action="version", version=f"vei-scenario {__version__}")
     sub = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
 
-    c = sub.add_parser("compile", help="compile an annotated clip into OpenSCENARIO + OpenDRIVE")
-    c.add_argument("clip", help="annotated clip: vei-clip/1 JSON or ASAM OpenLABEL 1.0 JSON")
+    c = sub.add_parser(
+        "compile",
+        help="compile an annotated clip (or a folder of clips: a library) into OpenSCENARIO + OpenDRIVE",
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+        description="Compile one clip into a scenario, or every clip (*.json) of a folder into a library:\n"
+        "  LIBRARY/scenarios/NAME/  scenario.xosc, .xodr, .variations.xosc, thumbnail.svg, row.json\n"
+        "  LIBRARY/library.json     a row per clip, ranked by closeness to a collision (the smallest timing\n"
+        "                           change that makes the boxes touch, then the conflict margin, then the\n"
+        "                           closest distance); a clip that could not be compiled is a row with why\n"
+        "  LIBRARY/library.html     the same as a page, with map thumbnails\n"
+        "A clip whose file, map and options are unchanged since the last run is not compiled again. Exit 1\n"
+        "when some clips could not be compiled (the rest are compiled).",
+    )
+    c.add_argument("clip", help="annotated clip (vei-clip/1 or ASAM OpenLABEL 1.0 JSON), or a folder of them")
     c.add_argument(
-        "-o", "--output", required=True, help="scenario file to write (.xosc); .xodr and .variations.xosc go beside it"
+        "-o",
+        "--output",
+        required=True,
+        help="scenario file to write (.xosc; .xodr and .variations.xosc go beside it), or the library folder",
     )
     c.add_argument(
         "--rate", type=_number(0.5, 1000), default=10.0, help="output rate of the trajectories in Hz (default 10)"
@@ -515,8 +652,23 @@ def build_parser() -> argparse.ArgumentParser:
         help="also declare the rider's and the planner's model parameters (RiderDesiredSpeed, RiderRepulsion, "
         "PlannerTimeHeadway, PlannerMaxDecel, PlannerStandstillGap) so that sweeps and vei falsify vary them",
     )
+    c.add_argument(
+        "--stochastic",
+        action="store_true",
+        help="also write STEM.stochastic.xosc, a stochastic ParameterValueDistribution for vei probability: "
+        "TimeShift normal around ConflictTimeShift (standard deviation half the collision interval), the rider "
+        "type uniform",
+    )
     c.add_argument("--frame-rate", type=FRAME_RATE, metavar="HZ", help=FRAME_RATE_HELP)
     c.add_argument("--time-unit", choices=TIME_UNITS, help=TIME_UNIT_HELP)
+    c.add_argument(
+        "--executor",
+        choices=("local", "dask"),
+        help="a folder: local worker processes on all cores (default), or dask: a Dask cluster",
+    )
+    c.add_argument("--scheduler", help="a folder with --executor dask: the scheduler (default: a LocalCluster)")
+    c.add_argument("--workers", type=WORKERS, help="a folder: local worker processes (default: all cores)")
+    c.add_argument("--quiet", action="store_true", help="a folder: no progress bar")
     c.set_defaults(func=_cmd_compile)
 
     ex = sub.add_parser("examples", help="copy the bundled example clips (and their map) into a directory")
@@ -524,7 +676,9 @@ def build_parser() -> argparse.ArgumentParser:
     ex.add_argument("--force", action="store_true", help="overwrite example files already there")
     ex.set_defaults(func=_cmd_examples)
 
-    cl = sub.add_parser("clip", help="annotated clips: convert between vei-clip/1 and ASAM OpenLABEL 1.0")
+    cl = sub.add_parser(
+        "clip", help="annotated clips: convert between vei-clip/1 and ASAM OpenLABEL 1.0; split a drive into clips"
+    )
     clsub = cl.add_subparsers(dest="clip_command", required=True, parser_class=_Parser)
     cv = clsub.add_parser(
         "convert", help="write a clip as ASAM OpenLABEL 1.0, or an OpenLABEL annotation as vei-clip/1"
@@ -535,6 +689,67 @@ def build_parser() -> argparse.ArgumentParser:
     cv.add_argument("--frame-rate", type=FRAME_RATE, metavar="HZ", help=FRAME_RATE_HELP)
     cv.add_argument("--time-unit", choices=TIME_UNITS, help=TIME_UNIT_HELP)
     cv.set_defaults(func=_cmd_clip_convert)
+    sp = clsub.add_parser(
+        "split",
+        help="cut a long recording into interaction clips (a vulnerable road user near the ego's path)",
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+        description="Cut a drive into clips where a road user of --category comes within --near m of the ego's\n"
+        "path (where the ego is from --horizon s before to --horizon s after; consecutive observations up to\n"
+        "--max-gap s apart are joined, so a rider crossing between them counts). A track's near times are one\n"
+        "interaction unless more than --max-gap s apart; each starts --pad-before s earlier, ends --pad-after s\n"
+        "later and lasts at least --min-length s; interactions that overlap or are less than --merge-gap s\n"
+        "apart are one clip. Each clip's extensions.vei_split says where it came from (source file, SHA-256,\n"
+        "time range) and by which rules.",
+    )
+    sp.add_argument("input", help="the recording: vei-clip/1 or OpenLABEL 1.0 JSON (up to 24 h)")
+    sp.add_argument("-o", "--output", required=True, help="folder for the clips (ID.NNN.json)")
+    sp.add_argument("--near", type=_number(positive=True), default=3.5, help="how near the ego's path, m (3.5)")
+    sp.add_argument("--horizon", type=_number(positive=True), default=5.0, help="the ego's path: +-S s (5)")
+    sp.add_argument("--max-gap", type=_number(positive=True), default=10.0, help="longest gap bridged, s (10)")
+    sp.add_argument("--pad-before", type=_number(0), default=6.0, help="padding before, s (6)")
+    sp.add_argument("--pad-after", type=_number(0), default=3.0, help="padding after, s (3)")
+    sp.add_argument(
+        "--merge-gap", type=_number(0), default=0.0, help="merge clips closer than this, s (0: overlapping)"
+    )
+    sp.add_argument("--min-length", type=_number(positive=True), default=5.0, help="shortest clip, s (5)")
+    sp.add_argument(
+        "--category",
+        action="append",
+        metavar="NAME",
+        help="a road-user category to look for (repeatable, any case; default: e-scooter, escooter, e_scooter, "
+        "scooter)",
+    )
+    sp.add_argument("--to", choices=("vei-clip", "openlabel"), default="vei-clip", help="clip format (vei-clip)")
+    sp.add_argument("--frame-rate", type=FRAME_RATE, metavar="HZ", help=FRAME_RATE_HELP)
+    sp.add_argument("--time-unit", choices=TIME_UNITS, help=TIME_UNIT_HELP)
+    sp.set_defaults(func=_cmd_clip_split)
+
+    bn = sub.add_parser(
+        "bench",
+        help="vei's planner over every scenario of a library, searched around each conflict; JUnit for CI",
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+        description="For every scenario of LIBRARY (vei compile CLIPS/ -o LIBRARY/): the seed paper's five\n"
+        "configurations (replay/normal/aggressive rider, planner off/on) at every TimeShift within\n"
+        "--half-width s of its conflict shift, every --step s, through the compiled sweep kernel. A scenario\n"
+        "fails when a configuration with the planner on collides. Writes bench.json, report.html and\n"
+        "junit.xml (one test case per scenario); exit 1 when some scenario fails.",
+    )
+    bn.add_argument("library", help="a scenario library folder (with library.json)")
+    bn.add_argument("-o", "--output", required=True, help="folder for bench.json, report.html, junit.xml")
+    bn.add_argument(
+        "--half-width", type=_number(0, 30), default=1.5, help="TimeShift search: +-S s around the conflict (1.5)"
+    )
+    bn.add_argument("--step", type=_number(0.001, 10), default=0.01, help="TimeShift search step, s (0.01)")
+    bn.add_argument("--dt", type=DT, default=0.01, help="fixed step in s (default 0.01)")
+    bn.add_argument(
+        "--configurations",
+        type=_int_list,
+        metavar="N,N",
+        help="the configurations to run (default 1,2,3,4,5; 4 and 5 have the planner on)",
+    )
+    bn.add_argument("--workers", type=WORKERS, help="threads of the sweep kernel (default: all cores)")
+    bn.add_argument("--quiet", action="store_true", help="no progress bar")
+    bn.set_defaults(func=_cmd_bench)
 
     r = sub.add_parser("run", help="run a scenario with the built-in interpreter; write trajectories, metrics, plots")
     r.add_argument(
@@ -592,15 +807,21 @@ def build_parser() -> argparse.ArgumentParser:
         formatter_class=argparse.RawDescriptionHelpFormatter,
         description="Run every variant (the cartesian product of --vary, or a --dist file) and write:\n"
         "  catalog.csv / catalog.json  one row per variant: its parameters and every metric of vei run\n"
-        "  report.html  first a table per configuration (the varied parameters but TimeShift): variants,\n"
-        "      collisions, whether the planner was on (CapEnabled), the lowest safety index S, the longest\n"
-        "      time in the TTC alert zone and the lowest minimum TTC; configurations that collide with the\n"
-        "      planner on come first, and every such collision (a failure of the system under test) is\n"
-        "      listed with the command that reproduces it. Then plots over TimeShift: S (share of the run\n"
-        "      outside the alert and collision zones; 0 on contact), the minimum 2-D TTC (time until the\n"
-        "      boxes touch at constant velocities) and the minimum gap between the boxes, collision\n"
-        "      regions shaded; then the most severe collisions (by impact speed, the relative speed at\n"
-        "      first contact) and the closest passes (by minimum gap, then TTC).",
+        "  report.html  first the grid (each swept parameter's values and step: a sweep runs its points,\n"
+        "      nothing between them); then a table per configuration (the varied parameters but\n"
+        "      TimeShift): variants, collisions, whether the planner was on (CapEnabled), the lowest\n"
+        "      safety index S, the longest time in the TTC alert zone and the lowest minimum TTC;\n"
+        "      configurations that collide with the planner on come first, and every such collision (a\n"
+        "      failure of the system under test) is listed with the command that reproduces it. With\n"
+        "      none, where the grid shows signs of narrower failure windows (collisions with the planner\n"
+        "      off, near misses with it on) it says so and gives the vei risk / vei falsify commands that\n"
+        "      search between the points. Near misses with the planner on (no contact; minimum gap under\n"
+        "      0.5 m or minimum TTC at most 1.5 s) are listed, the closest first. Then plots over\n"
+        "      TimeShift: S (share of the run outside the alert and collision zones; 0 on contact), the\n"
+        "      minimum 2-D TTC (time until the boxes touch at constant velocities) and the minimum gap\n"
+        "      between the boxes, collision regions shaded, series with equal values in their own marker\n"
+        "      and dash with a legend note; then the most severe collisions (by impact speed, the relative\n"
+        "      speed at first contact) and the closest passes (by minimum gap, then TTC).",
     )
     sw.add_argument(
         "scenario", help="OpenSCENARIO file (.xosc), or a ParameterValueDistribution alone (its ScenarioFile swept)"
@@ -687,9 +908,15 @@ def build_parser() -> argparse.ArgumentParser:
         help="collision (default: a collision with the ego moving, > 0.1 m/s at the first contact: a failure of "
         "the system that drives it), collision_any (every contact) or METRIC<VALUE, e.g. min_ttc_s<1.0",
     )
-    fz.add_argument("--slices", type=_number(2, 200, integer=True), default=7, help="slices per other range")
-    fz.add_argument("--tol", type=_number(1e-5, 10), default=0.005, help="edge tolerance on the primary axis")
-    fz.add_argument("--seed", type=SEED, default=0, help="seed of the Sobol slices (two or more other ranges)")
+    fz.add_argument(
+        "--slices", type=_number(2, 200, integer=True), default=7, help="slices per other range (default 7)"
+    )
+    fz.add_argument(
+        "--tol", type=_number(1e-5, 10), default=0.005, help="edge tolerance on the primary axis (default 0.005)"
+    )
+    fz.add_argument(
+        "--seed", type=SEED, default=0, help="seed of the Sobol slices (two or more other ranges; default 0)"
+    )
     fz.add_argument("--dt", type=DT, default=0.01, help="fixed step in s (default 0.01)")
     fz.add_argument("--workers", type=WORKERS, help="worker threads or processes (default: all cores)")
     fz.add_argument("-o", "--output", help="directory for falsify.json and the regions' worst scenarios")
@@ -707,7 +934,7 @@ def build_parser() -> argparse.ArgumentParser:
         help="P(collision) or P(near miss) under a stochastic distribution: Monte Carlo and importance sampling",
         description="Estimate how likely the target is when the parameters follow the stochastic "
         "ParameterValueDistribution --dist (others fixed by --param or their defaults). monte-carlo: the share "
-        "of failing runs among draws from the distribution, Wilson's 95 %% interval. importance-sampling: "
+        "of failing runs among draws from the distribution, Wilson's 95 % interval. importance-sampling: "
         "levels learn where failures are (kernels around the worst runs), then each failure of a fresh sample "
         "is weighted by nominal / proposal density; the interval from the weights' standard error. Both "
         "report their runs; the second needs far fewer for the same width when failures are rare.",
@@ -726,10 +953,12 @@ def build_parser() -> argparse.ArgumentParser:
         default="both",
         help="which estimate(s) to make (default both, with how many Monte Carlo runs the same width would take)",
     )
-    pr.add_argument("--runs", type=_number(100, 10_000_000, integer=True), default=20000, help="runs per estimator")
+    pr.add_argument(
+        "--runs", type=_number(100, 10_000_000, integer=True), default=20000, help="runs per estimator (default 20000)"
+    )
     pr.add_argument("--param", action="append", default=[], metavar="NAME=VALUE", help="fix a parameter")
     pr.add_argument("--band", type=_pair, default=(0.5, 1.5), help="near-miss band of the minimum TTC, s")
-    pr.add_argument("--seed", type=SEED, default=0, help="seed of the sampling (default 0)")
+    pr.add_argument("--seed", type=SEED, help="seed of the sampling (default: the distribution's randomSeed, else 0)")
     pr.add_argument("--dt", type=DT, default=0.01, help="fixed step in s (default 0.01)")
     pr.add_argument("--workers", type=WORKERS, help="worker threads or processes (default: all cores)")
     pr.add_argument("-o", "--output", help="write the estimates as JSON here")

@@ -45,6 +45,8 @@ class CompileOptions:
     smooth: bool = True
     #: declare the rider's and the planner's model parameters as scenario parameters (MODEL_PARAMETERS)
     model_parameters: bool = False
+    #: also write STEM.stochastic.xosc, a stochastic distribution for vei probability
+    stochastic: bool = False
     #: the frame rate of an OpenLABEL clip without timestamps (Hz)
     frame_rate_hz: float | None = None
     #: the unit of an OpenLABEL clip's timestamps written as numbers (s, ms, us, ns; default s)
@@ -66,6 +68,10 @@ def _check_options(opts: CompileOptions) -> None:
         raise VeiInputError(None, "--rate", f"{opts.rate_hz} Hz is outside 0.5..1000 Hz")
     if opts.osc_minor_version not in SUPPORTED_MINOR_VERSIONS:
         raise VeiInputError(None, "--osc-version", f"1.{opts.osc_minor_version} is not supported (1.0 to 1.3)")
+    if opts.stochastic and opts.osc_minor_version == 0:
+        raise VeiInputError(
+            None, "--stochastic", "varies TimeShift, which an OpenSCENARIO 1.0 scenario does not declare (use 1.1+)"
+        )
 
 
 @dataclass
@@ -134,11 +140,14 @@ def compile_clip(clip_path: str | Path, output: str | Path, options: CompileOpti
         # netconvert, which runs on the other core.
         from vei_scenario.geometry.reconstruct import reconstruct
         from vei_scenario.scenario.model import build_model
+        from vei_scenario.scenario.road_users import replay_note
 
         rec = reconstruct(clip, rate_hz=opts.rate_hz, smooth=opts.smooth)
-        for tid, cat in sorted(rec.skipped_tracks.items()):
-            notes.append(f"track {tid}: category {cat!r} is not modelled; skipped")
-        for tid, track in sorted(rec.scooters.items()):
+        for tid, why in sorted(rec.skipped_tracks.items()):
+            notes.append(f"track {tid}: {why}")
+        for tid, track in sorted(rec.others.items()):
+            notes.append(f"track {tid}: {replay_note(track.category)}")
+        for tid, track in sorted(rec.road_users.items()):
             for a, b in track.gaps:
                 notes.append(f"track {tid}: not observed for {b - a:.1f} s (t = {a:.1f}..{b:.1f} s); spline-bridged")
         stem = output.stem
@@ -156,6 +165,7 @@ def compile_clip(clip_path: str | Path, output: str | Path, options: CompileOpti
 
     from vei_scenario.openscenario.distribution_writer import (
         distribution_xml,
+        stochastic_distribution_xml,
         variant_combinations,
         variant_filename,
     )
@@ -176,6 +186,10 @@ def compile_clip(clip_path: str | Path, output: str | Path, options: CompileOpti
         output.with_name(f"{stem}.variations.xosc"),
         distribution_xml(model, output.name, dist_minor, time_shift=declares_time_shift(opts.osc_minor_version)),
     )
+    if opts.stochastic:
+        outputs.add(
+            output.with_name(f"{stem}.stochastic.xosc"), stochastic_distribution_xml(model, output.name, dist_minor)
+        )
     if opts.variants_dir is not None:
         vdir = Path(opts.variants_dir)
         for i, values in enumerate(variant_combinations(model)):

@@ -130,7 +130,15 @@ def read_stochastic(path: str | Path, declared: dict[str, str]) -> list[Dimensio
     root = parse_xml(path).getroot()
     sto = root.find("ParameterValueDistribution/Stochastic")
     if root.tag != "OpenSCENARIO" or sto is None:
-        raise VeiInputError(path, f"line {root.sourceline}", "not a stochastic ParameterValueDistribution")
+        det = root.find("ParameterValueDistribution/Deterministic")
+        hint = (
+            f" (line {det.sourceline}: <Deterministic> lists values; a probability needs densities: a <Stochastic> "
+            'with a <StochasticDistribution parameterName="..."> per parameter, e.g. a <NormalDistribution> with '
+            "a <Range>; vei compile --stochastic writes one beside the scenario)"
+            if det is not None
+            else ""
+        )
+        raise VeiInputError(path, f"line {root.sourceline}", "not a stochastic ParameterValueDistribution" + hint)
     check_numbers(path, root)
     dims = []
     for d in sto.iterfind("StochasticDistribution"):
@@ -247,6 +255,7 @@ class Estimate:
     runs: int
     failures: int
     levels: int = 0
+    seed: int = 0  # of the sampling (the whole run draws from one generator)
 
     @property
     def width(self) -> float:
@@ -260,6 +269,7 @@ class Estimate:
             "runs": self.runs,
             "failures": self.failures,
             "levels": self.levels,
+            "seed": self.seed,
         }
 
 
@@ -363,6 +373,21 @@ def importance_sampling(
                     failures, levels)  # fmt: skip
 
 
+def random_seed(path: str | Path) -> int | None:
+    """The ``randomSeed`` of a stochastic distribution file, None when it has none: the seed a run
+    takes when none is given, as vei sweep does."""
+    from vei_scenario.safe_xml import float_attribute, parse_xml
+
+    path = Path(path)
+    sto = parse_xml(path).getroot().find("ParameterValueDistribution/Stochastic")
+    if sto is None or sto.get("randomSeed") is None:
+        return None
+    value = float_attribute(path, sto, "randomSeed")
+    if not (value.is_integer() and 0 <= value < 2**63):
+        raise VeiInputError(path, f"line {sto.sourceline}", "the random seed must be a non-negative integer")
+    return int(value)
+
+
 def estimate_probability(
     scenario: str | Path,
     dist: str | Path,
@@ -371,14 +396,15 @@ def estimate_probability(
     runs: int = 20000,
     fixed: dict[str, str] | None = None,
     band: tuple[float, float] = (0.5, 1.5),
-    seed: int = 0,
+    seed: int | None = None,
     dt: float = 0.01,
     workers: int | None = None,
     controllers: tuple = (),
     allow_default_controller: bool = False,
 ) -> list[Estimate]:
     """P(target) under the stochastic distribution ``dist`` (other parameters from ``fixed`` or their
-    defaults), by each of ``estimators``, ``runs`` runs each (plus the levels for importance sampling);
+    defaults), by each of ``estimators``, ``runs`` runs each (plus the levels for importance sampling).
+    ``seed`` None: the file's ``randomSeed``, else 0; each estimate records the seed it drew with.
     ``controllers``: the systems under test (:class:`~vei_scenario.sut.ControllerSpec`); a controller the
     scenario names that vei has no model of is refused unless ``allow_default_controller``."""
     from vei_scenario.checks import check_dt, finite
@@ -393,6 +419,9 @@ def estimate_probability(
         finite(b, "--band")
     doc = load_scenario(scenario)
     dims = read_stochastic(dist, doc.parameter_types)
+    if seed is None:
+        seed = random_seed(dist)
+        seed = 0 if seed is None else seed
     fixed = dict(fixed or {})
     check_values(doc.parameter_types, fixed)
     from vei_scenario.sweep.evaluate import refuse_default_controllers
@@ -408,4 +437,5 @@ def estimate_probability(
             out.append(importance_sampling(evaluate, dims, runs, rng))
         else:
             raise VeiInputError(None, "--estimator", f"{name!r} is not monte-carlo or importance-sampling")
+        out[-1].seed = seed
     return out

@@ -101,12 +101,43 @@ def series_csv(result: RunResult, cfg: MetricConfig) -> str:
     return buf.getvalue()
 
 
+def typed_parameters(result: RunResult) -> dict[str, str | float | int | bool]:
+    """The run's parameters as their declared types (a double a number, a boolean true/false)."""
+    from vei_scenario.interpreter.document import typed_value
+
+    types = result.parameter_types
+    return {k: typed_value(types.get(k, "string"), v) for k, v in result.parameters.items()}
+
+
+def _sha256(path: Path) -> str:
+    import hashlib
+
+    return hashlib.sha256(path.read_bytes()).hexdigest()
+
+
+def provenance(result: RunResult) -> dict[str, str]:
+    """Which vei and which files made the run: the version and the sha256 of the scenario and of the
+    road file it played on, so a metrics.json can be matched to its inputs later."""
+    from vei_scenario import __version__
+
+    doc = {"vei_version": __version__}
+    scenario = Path(result.scenario)
+    if scenario.is_file():
+        doc["scenario_sha256"] = _sha256(scenario)
+    road = result.road_file
+    if road is not None and Path(road).is_file():
+        doc["road_file"] = Path(road).name
+        doc["road_sha256"] = _sha256(Path(road))
+    return doc
+
+
 def metrics_document(result: RunResult, cfg: MetricConfig) -> dict:
     """metrics.json: the ego against its threat, plus every contact between any two entities."""
     metrics = compute_metrics(PairSeries.from_run(result), cfg) if result.threat else {}
     doc = {
         "scenario": Path(result.scenario).name,
-        "parameters": result.parameters,
+        **provenance(result),
+        "parameters": typed_parameters(result),
         "dt_s": result.dt,
         "duration_s": round(float(result.t[-1]), 3),
         "end_reason": result.end_reason,
@@ -136,8 +167,10 @@ def _seconds(value, none: str) -> str:
 
 
 def summary_text(doc: dict) -> str:
+    from vei_scenario.interpreter.document import parameter_text
+
     m = doc["metrics"]
-    params = ", ".join(f"{k}={v}" for k, v in doc["parameters"].items())
+    params = ", ".join(f"{k}={parameter_text(v)}" for k, v in doc["parameters"].items())
     lines = [f"{doc['scenario']} ({params}); {doc['duration_s']:.2f} s at dt {doc['dt_s']} s ({doc['end_reason']})"]
     for s in doc.get("system_under_test", ()):
         lines.append(f"system under test on {s['entity']}: {s['controller']} (sha256 {(s['sha256'] or '-')[:12]})")
@@ -184,6 +217,21 @@ def run_files(result: RunResult, doc: dict, cfg: MetricConfig, plots: bool = Tru
     return files
 
 
+def _check_positions(result: RunResult) -> None:
+    """A position that is not a number is a defect vei could not play: one line naming the entity and
+    when, rather than files of NaN (or a plotting error about axis limits)."""
+    import numpy as np
+
+    for name, tr in result.traces.items():
+        for field in ("x", "y"):
+            bad = ~np.isfinite(np.asarray(getattr(tr, field), dtype=float))
+            if bad.any():
+                t = float(np.asarray(result.t)[int(np.argmax(bad))])
+                raise VeiInputError(
+                    result.scenario, name, f"its position is not a number from t = {t:g} s: vei cannot play it"
+                )
+
+
 def run_to(
     scenario: str | Path,
     out_dir: str | Path | None,
@@ -193,11 +241,13 @@ def run_to(
     cfg: MetricConfig | None = None,
     coupling: str = "sequential",
     osi: str | Path | None = None,
+    progress: bool = False,
     controllers: tuple = (),
 ) -> RunReport:
     """Run ``scenario`` and, with ``out_dir``, write its files there; with ``osi``, also an ASAM OSI
-    ground-truth trace (``.mcap`` or ``.osi``) at that path; ``controllers``: the systems under test
-    (:class:`~vei_scenario.sut.ControllerSpec`). All or nothing."""
+    ground-truth trace (``.mcap`` or ``.osi``) at that path. All or nothing. With ``progress``, a run
+    that may be long says so on stderr at its start, and shows a progress bar on a terminal.
+    ``controllers``: the systems under test (:class:`~vei_scenario.sut.ControllerSpec`)."""
     from vei_scenario.checks import check_dt
 
     check_dt(dt)
@@ -207,7 +257,19 @@ def run_to(
         if Path(osi).suffix.lower() not in FORMATS:
             raise VeiInputError(osi, "--osi", f"unknown trace format {Path(osi).suffix!r} (use .mcap or .osi)")
     cfg = cfg or MetricConfig()
-    result = run_scenario(scenario, parameters, dt, coupling=coupling, controllers=controllers)
+    if progress:
+        from vei_scenario.reports.run_progress import RunProgress
+
+        shown = RunProgress(Path(scenario).name)
+        try:
+            result = run_scenario(
+                scenario, parameters, dt, coupling=coupling, on_start=shown.on_start, controllers=controllers
+            )
+        finally:
+            shown.close()
+    else:
+        result = run_scenario(scenario, parameters, dt, coupling=coupling, controllers=controllers)
+    _check_positions(result)
     doc = metrics_document(result, cfg)
     written: list[Path] = []
     files = OutputSet()

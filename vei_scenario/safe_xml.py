@@ -35,13 +35,25 @@ def parse_xml(path: Path | str, remove_comments: bool = False) -> etree._Element
     except etree.XMLSyntaxError as exc:
         line = exc.lineno if exc.lineno else 0
         msg = exc.msg if hasattr(exc, "msg") else str(exc)
-        raise VeiInputError(path, f"line {line}", f"malformed XML: {msg}") from None
+        raise VeiInputError(path, f"line {line}", f"malformed XML: {msg}{json_hint(path)}") from None
     except OSError as exc:
         raise VeiInputError(path, "", f"cannot read: {exc.strerror or exc}") from None
     docinfo = tree.docinfo
     if docinfo.internalDTD is not None and any(True for _ in docinfo.internalDTD.iterentities()):
         raise VeiInputError(path, "line 1", "XML entity declarations are not accepted (entity expansion is disabled)")
     return tree
+
+
+def json_hint(path: Path) -> str:
+    """A hint when the file is JSON (a clip given where a scenario is wanted): which command takes it."""
+    try:
+        with open(path, "rb") as fh:
+            head = fh.read(512).lstrip(b"\xef\xbb\xbf \t\r\n")
+    except OSError:
+        return ""
+    if not head.startswith((b"{", b"[")):
+        return ""
+    return f" (the file is JSON, not XML: if it is a clip, compile it first: vei compile {path} -o scenario.xosc)"
 
 
 def content_key(path: Path | str) -> bytes:

@@ -10,6 +10,7 @@ from __future__ import annotations
 import json
 import math
 import re
+import sys
 from functools import lru_cache
 from importlib import resources
 from pathlib import Path
@@ -57,7 +58,7 @@ def read_json(path: Path) -> Any:
     if not path.is_file():
         raise VeiInputError(path, "", "file not found")
     try:
-        text = path.read_text("utf-8")
+        text = path.read_text("utf-8-sig")  # (a byte-order mark, as Windows editors write, is no content)
     except UnicodeDecodeError as exc:
         raise VeiInputError(path, "", f"not UTF-8 text ({exc.reason} at byte {exc.start})") from None
     except OSError as exc:
@@ -70,7 +71,10 @@ def read_json(path: Path) -> Any:
             path, "", "nested too deeply to read (more than ~900 levels of arrays or objects)"
         ) from None
     except json.JSONDecodeError as exc:
-        raise VeiInputError(path, f"line {exc.lineno} column {exc.colno}", f"invalid JSON: {exc.msg}") from None
+        hint = ""
+        if text.lstrip("\ufeff \t\r\n").startswith("<"):  # a scenario or road network given for a clip
+            hint = f" (the file is XML, not a JSON clip: if it is an OpenSCENARIO scenario, play it: vei run {path})"
+        raise VeiInputError(path, f"line {exc.lineno} column {exc.colno}", f"invalid JSON: {exc.msg}{hint}") from None
     except _NonJsonConstant as exc:  # NaN / Infinity literals, which Python accepts and JSON does not
         m = re.search(rf"(?<![\w\"]){re.escape(exc.name)}(?![\w\"])", text)
         where = ""
@@ -78,6 +82,9 @@ def read_json(path: Path) -> Any:
             line = text.count("\n", 0, m.start()) + 1
             where = f"line {line} column {m.start() - text.rfind(chr(10), 0, m.start())}"
         raise VeiInputError(path, where, f"invalid JSON: {exc.name} is not a number JSON allows") from None
+    except ValueError:  # (an integer of thousands of digits: Python refuses to convert it)
+        limit = sys.get_int_max_str_digits()
+        raise VeiInputError(path, "", f"invalid JSON: a number of more than {limit} digits, too long to read") from None
 
 
 def _schema_check(path: Path, doc: Any) -> None:
@@ -93,9 +100,29 @@ def _schema_check(path: Path, doc: Any) -> None:
         reason = f"{err.message} (extra fields belong under an 'extensions' object)"
     elif err.validator == "const" and list(err.absolute_path) == ["format"]:
         reason = f"unsupported format {err.instance!r}; expected 'vei-clip/1'"
+    elif err.validator == "type" and len(err.message) > MAX_REASON_CHARS:  # (it quotes a large value whole)
+        reason = f"must be {_json_type_name(err.validator_value)}, not {_json_type_name(_json_type(err.instance))}"
     else:
-        reason = err.message
+        reason = err.message if len(err.message) <= MAX_REASON_CHARS else err.message[:MAX_REASON_CHARS] + " [...]"
     raise VeiInputError(path, where, reason)
+
+
+#: The longest schema message quoted (a message that quotes a large value is cut).
+MAX_REASON_CHARS = 200
+
+
+def _json_type(value: Any) -> str:
+    if isinstance(value, bool):
+        return "boolean"
+    if isinstance(value, (int, float)):
+        return "number"
+    return {dict: "object", list: "array", str: "string", type(None): "null"}.get(type(value), type(value).__name__)
+
+
+def _json_type_name(kind: Any) -> str:
+    kinds = [kind] if isinstance(kind, str) else list(kind)
+    article = {"array": "an array", "object": "an object", "integer": "an integer"}
+    return " or ".join(article.get(k, f"a {k}") for k in kinds)
 
 
 def _strictly_increasing(path: Path, values: np.ndarray, field: str) -> None:
@@ -121,16 +148,16 @@ GPS_ERROR_M = 50.0
 MAX_CLIP_S = 3600.0
 
 
-def _clip_span_fits(path: Path, t: np.ndarray, field: str) -> None:
+def _clip_span_fits(path: Path, t: np.ndarray, field: str, max_span_s: float = MAX_CLIP_S) -> None:
     """Refuse a clip whose times span more than MAX_CLIP_S, naming the sample after the widest gap (a
     time in other units or from another clock, typically)."""
-    if t[-1] - t[0] > MAX_CLIP_S:
+    if t[-1] - t[0] > max_span_s:
         i = int(np.argmax(np.diff(t))) + 1
         raise VeiInputError(
             path,
             field.format(i=i),
             f"the times span {t[-1] - t[0]:.6g} s (a gap of {t[i] - t[i - 1]:.6g} s before this one); a clip "
-            f"spans at most {MAX_CLIP_S:g} s",
+            f"spans at most {max_span_s:g} s",
         )
 
 
@@ -152,9 +179,10 @@ def _track_moves_as_a_vehicle(path: Path, ego: EgoTrack) -> None:
         )
 
 
-def clip_from_document(path: Path, doc: Any) -> Clip:
+def clip_from_document(path: Path, doc: Any, *, max_span_s: float = MAX_CLIP_S, require_scooter: bool = True) -> Clip:
     """A ``vei-clip/1`` document (already parsed) checked and normalised; ``path`` names it in errors
-    and anchors the map file."""
+    and anchors the map file. ``max_span_s`` and ``require_scooter`` are what a clip to compile needs;
+    a whole drive to cut into clips (``vei clip split``) may be longer and have no e-scooter."""
     _schema_check(path, doc)
 
     ego_doc = doc["ego"]
@@ -165,7 +193,7 @@ def clip_from_document(path: Path, doc: Any) -> Clip:
         if bad.size:
             raise VeiInputError(path, f"ego.samples[{int(bad[0])}].{k}", "not a finite number")
     _strictly_increasing(path, cols["t"], "ego.samples[{i}].t")
-    _clip_span_fits(path, cols["t"], "ego.samples[{i}].t")
+    _clip_span_fits(path, cols["t"], "ego.samples[{i}].t", max_span_s)
     ego = EgoTrack(
         t=cols["t"],
         lat=cols["lat"],
@@ -221,12 +249,12 @@ def clip_from_document(path: Path, doc: Any) -> Clip:
 
     annotations = Annotations(offset, y_axis, frame_t, tuple(observations))
     scooters = annotations.tracks(SCOOTER_CATEGORIES)
-    if not scooters:
+    if not scooters and require_scooter:
         raise VeiInputError(
             path, "annotations.frames", f"no e-scooter track (category one of {sorted(SCOOTER_CATEGORIES)})"
         )
     for tid, obs in scooters.items():
-        if len(obs) < 2:
+        if len(obs) < 2 and require_scooter:
             raise VeiInputError(
                 path,
                 f"annotations.frames[{obs[0].frame_index}].objects",

@@ -552,12 +552,19 @@ def clip_from_openlabel(path: Path, doc: dict, frame_rate_hz: float | None = Non
 
 
 def _checked_clip(
-    path: Path, doc: dict, clip_doc: dict, paths: dict[str, str], time_unit: str | None, frame_rate_hz: float | None
+    path: Path,
+    doc: dict,
+    clip_doc: dict,
+    paths: dict[str, str],
+    time_unit: str | None,
+    frame_rate_hz: float | None,
+    **limits,
 ):
     """The vei-clip ``clip_doc`` converted from OpenLABEL ``doc`` checked as a clip, errors naming the
-    OpenLABEL paths (``paths``) and said in OpenLABEL's terms."""
+    OpenLABEL paths (``paths``) and said in OpenLABEL's terms; ``limits``: those of
+    :func:`~vei_scenario.clip.loader.clip_from_document`."""
     try:
-        return clip_from_document(path, clip_doc)
+        return clip_from_document(path, clip_doc, **limits)
     except VeiInputError as exc:
         where = exc.where
         for prefix in sorted(paths, key=len, reverse=True):
@@ -668,6 +675,8 @@ def convert_clip(
     from vei_scenario.atomic_io import write_bytes_atomic
 
     src, dst = Path(src), Path(dst)
+    if dst.exists() and src.exists() and dst.resolve() == src.resolve():
+        raise VeiInputError(dst, "-o", "is the input clip: write the converted clip to another file")
     doc = read_json(src)
     is_openlabel = isinstance(doc, dict) and "openlabel" in doc
     to = to or ("vei-clip" if is_openlabel else "openlabel")

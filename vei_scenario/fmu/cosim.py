@@ -242,14 +242,34 @@ def compare_with_run(rec: dict[str, dict[str, np.ndarray]], run, loop: ClosedLoo
     return out
 
 
+#: The unit of each recorded output, appended to its column name as trajectories.csv names them.
+COLUMN_NAMES = {
+    "x": "x_m",
+    "y": "y_m",
+    "yaw": "heading_rad",
+    "speed": "speed_mps",
+    "accel": "acceleration_mps2",
+    "a_cmd": "a_cmd_mps2",
+}
+
+
+def record_csv(rec: dict[str, dict[str, np.ndarray]], dt: float) -> str:
+    """The co-simulated trajectories as CSV: ``time_s``, then ``component.quantity_unit`` columns (the
+    ego, every rider, the planner), with the precision of trajectories.csv (times to the millisecond, or
+    as many decimals as ``dt`` needs; values to six decimals, no negative zeros)."""
+    riders = [c for c in rec if model_of(c) == "sfm"]
+    cols = [(c, q) for c in ("ego", *riders, "cap") for q in recorded(c)]
+    n = rec["ego"]["x"].size
+    t_digits = max(3, -math.floor(math.log10(dt) + 1e-9)) if dt > 0 else 3
+    lines = ["time_s," + ",".join(f"{c}.{COLUMN_NAMES[q]}" for c, q in cols)]
+    for k in range(n):
+        lines.append(f"{k * dt:.{t_digits}f}," + ",".join(f"{rec[c][q][k]:.6f}" for c, q in cols))
+    return ("\n".join(lines) + "\n").replace(",-0.000000", ",0.000000")
+
+
 def write_record_csv(rec: dict[str, dict[str, np.ndarray]], loop: ClosedLoop, path: Path) -> Path:
-    """The co-simulated trajectories as CSV: t, then component.output columns."""
+    """Write :func:`record_csv` to ``path`` (atomically)."""
     from vei_scenario.atomic_io import write_bytes_atomic
 
-    cols = [(c, q) for c in ("ego", *loop.riders, "cap") for q in recorded(c)]
-    n = rec["ego"]["x"].size
-    lines = ["t," + ",".join(f"{c}.{q}" for c, q in cols)]
-    for k in range(n):
-        lines.append(f"{round(k * loop.dt, 9):.9g}," + ",".join(f"{rec[c][q][k]:.17g}" for c, q in cols))
-    write_bytes_atomic(path, ("\n".join(lines) + "\n").encode())
+    write_bytes_atomic(path, record_csv(rec, loop.dt).encode())
     return path

@@ -107,12 +107,18 @@ def closed_loop(scenario: str | Path, values: dict[str, str] | None = None, dt: 
         b = LoopScene(scenario, dt)
     except NotALoop as exc:
         raise VeiInputError(scenario, "", f"not a vei-compiled closed loop: {exc}") from None
-    others = [n for n in b.names if n not in (b.ego, b.threat)]
-    for n in others:  # (the loop's reading lets them only replay their tracks: riders the planner does not watch)
+    # the others only replay their tracks (the loop's reading refuses anything else) and nothing in the
+    # loop reacts to them (the planner watches the threat alone, a rider is repelled by the ego alone):
+    # the riders among them are in the loop, the other road users are left out, said in a note
+    others, left_out = [], []
+    for n in b.names:
+        if n in (b.ego, b.threat):
+            continue
         kind, category, object_type = b.entity_kinds[n]
-        if kind != "vehicle" or (category not in RIDER_CATEGORIES and object_type.lower() not in SCOOTER_TYPES):
-            what = object_type or category or kind
-            raise VeiInputError(scenario, n, f"a {what} ({kind}) is no rider: the FMU loop holds the ego and riders")
+        if kind == "vehicle" and (category in RIDER_CATEGORIES or object_type.lower() in SCOOTER_TYPES):
+            others.append(n)
+        else:
+            left_out.append(f"{n} (a {object_type or category or kind})")
     if values and not b.accepts(values):  # the interpreter's loader says exactly what is wrong with them
         from vei_scenario.interpreter.document import load_scenario
 
@@ -190,6 +196,11 @@ def closed_loop(scenario: str | Path, values: dict[str, str] | None = None, dt: 
 
     # the threat rides only where the scenario activates it; otherwise it replays, as the others do
     loop.parameters["sfm"] = rider_parameters(b.threat, rider if bool(r.sfm_on[0]) else "replay")
+    if left_out:
+        loop.notes.append(
+            f"{', '.join(left_out)}: no rider, replayed in vei run and left out of the loop (nothing in it "
+            "reacts to it)"
+        )
     on_road = b.raw.find("RoadNetwork/LogicFile") is not None
     for n in others:
         loop.parameters[f"sfm_{n}"] = rider_parameters(n, "replay")

@@ -54,16 +54,24 @@ class Reconstruction:
     ego_fix_y: np.ndarray
     ego_fix_yaw: np.ndarray
     scooters: dict[str, ScooterTrack]
+    #: why a track is left out ({track id: reason}): a road user seen once has no trajectory to replay
     skipped_tracks: dict[str, str] = field(default_factory=dict)
+    #: the other annotated road users (pedestrians, cyclists, cars ...), replayed as recorded
+    others: dict[str, ScooterTrack] = field(default_factory=dict)
+
+    @property
+    def road_users(self) -> dict[str, ScooterTrack]:
+        """Every reconstructed track: the e-scooters, then the other road users."""
+        return {**self.scooters, **self.others}
 
     @property
     def duration_s(self) -> float:
         return float(self.ego.t[-1])
 
     def bbox_xy(self) -> tuple[float, float, float, float]:
-        """Step 1: the box (min x, min y, max x, max y) around the ego and every scooter trajectory."""
-        xs = [self.ego.x] + [s.trajectory.x for s in self.scooters.values()]
-        ys = [self.ego.y] + [s.trajectory.y for s in self.scooters.values()]
+        """Step 1: the box (min x, min y, max x, max y) around the ego and every road user's trajectory."""
+        xs = [self.ego.x] + [s.trajectory.x for s in self.road_users.values()]
+        ys = [self.ego.y] + [s.trajectory.y for s in self.road_users.values()]
         x, y = np.concatenate(xs), np.concatenate(ys)
         return float(x.min()), float(y.min()), float(x.max()), float(y.max())
 
@@ -114,11 +122,13 @@ def reconstruct(clip: Clip, rate_hz: float = 10.0, smooth: bool = True) -> Recon
     ann = clip.annotations
     tracks = ann.tracks()
     scooters: dict[str, ScooterTrack] = {}
+    others: dict[str, ScooterTrack] = {}
     skipped: dict[str, str] = {}
     for tid in sorted(tracks):
         obs = tracks[tid]
-        if obs[0].category.lower() not in SCOOTER_CATEGORIES:
-            skipped[tid] = obs[0].category
+        scooter = obs[0].category.lower() in SCOOTER_CATEGORIES
+        if len(obs) < 2:  # (the loader refuses an e-scooter seen once: the threat needs a path)
+            skipped[tid] = f"category {obs[0].category!r} observed once: no trajectory to replay; skipped"
             continue
         kt = np.array([o.t_annotation for o in obs]) + ann.time_offset_s - t_gps0
         ex, ey = np.asarray(sx(kt)), np.asarray(sy(kt))
@@ -129,6 +139,8 @@ def reconstruct(clip: Clip, rate_hz: float = 10.0, smooth: bool = True) -> Recon
         traj, kyaw = resample_path(kt, wx, wy, rate_hz, smooth=smooth, standing_m=standing_m)
         dt = np.diff(kt)
         gaps = tuple((float(kt[i]), float(kt[i + 1])) for i in np.nonzero(dt > GAP_REPORT_S)[0])
-        scooters[tid] = ScooterTrack(tid, obs[0].category, kt, wx, wy, kyaw, traj, gaps)
+        (scooters if scooter else others)[tid] = ScooterTrack(tid, obs[0].category, kt, wx, wy, kyaw, traj, gaps)
 
-    return Reconstruction(clip, proj, t_gps0, rate_hz, ego_traj, fix_t, fix_x, fix_y, fix_yaw, scooters, skipped)
+    return Reconstruction(
+        clip, proj, t_gps0, rate_hz, ego_traj, fix_t, fix_x, fix_y, fix_yaw, scooters, skipped, others
+    )

@@ -8,19 +8,19 @@ from __future__ import annotations
 
 import numpy as np
 
-from vei_scenario.clip.model import SCOOTER_CATEGORIES, Clip
+from vei_scenario.clip.model import Clip
 from vei_scenario.geometry.frames import ego_to_world
 from vei_scenario.geometry.projection import LocalProjection
 
 
 def coarse_bbox_latlon(clip: Clip, proj: LocalProjection, margin_m: float) -> tuple[float, float, float, float]:
-    """(south, west, north, east) around the GPS fixes and every scooter observation, grown by
+    """(south, west, north, east) around the GPS fixes and every road user's observation, grown by
     ``margin_m``; observations are placed with the ego pose interpolated linearly between fixes."""
     ego = clip.ego
     fx, fy = proj.forward(ego.lat, ego.lon)
     yaw = np.unwrap(proj.heading_to_yaw(ego.lat, ego.lon, ego.heading_deg))
     xs, ys = [fx], [fy]
-    obs = [o for o in clip.annotations.observations if o.category.lower() in SCOOTER_CATEGORIES]
+    obs = list(clip.annotations.observations)
     if obs:
         t = np.array([o.t_annotation for o in obs]) + clip.annotations.time_offset_s
         wx, wy = ego_to_world(

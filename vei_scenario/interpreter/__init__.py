@@ -6,6 +6,7 @@ conditions, ``actions`` and ``controllers`` set what moves the entities, ``engin
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from pathlib import Path
 
 from vei_scenario.interpreter.document import load_scenario
@@ -20,6 +21,7 @@ def run_scenario(
     max_time_s: float = DEFAULT_MAX_TIME_S,
     coupling: str = "sequential",
     controllers: tuple = (),
+    on_start: Callable[[Simulation], Callable[[float], None] | None] | None = None,
 ) -> RunResult:
     """Load ``path``, apply parameter overrides (strings as in the file, or Python booleans and
     numbers), run at the fixed step ``dt`` (``coupling``: see
@@ -28,11 +30,16 @@ def run_scenario(
 
     A file the interpreter cannot read because it breaks the ASAM schema is refused with the schema's
     first complaint (file, line, reason), not with the place where reading it failed
-    (:mod:`~vei_scenario.interpreter.malformed`)."""
+    (:mod:`~vei_scenario.interpreter.malformed`).
+
+    ``on_start``: called with the simulation once it is set up, before the first step; what it
+    returns (if not None) is called with the simulated time now and then as the run goes on (a
+    caller's announcement of a long run and its progress bar)."""
     doc = None
     with refused_when_malformed(path, lambda: doc.root if doc is not None else None):
         doc = load_scenario(path, parameters)
-        return Simulation(doc, dt, max_time_s, coupling, controllers).run()
+        sim = Simulation(doc, dt, max_time_s, coupling, controllers)
+        return sim.run(on_start(sim) if on_start is not None else None)
 
 
 __all__ = ["RunResult", "Simulation", "load_scenario", "run_scenario"]
@@ -51,6 +58,7 @@ def clear_file_caches() -> None:
         document._catalog_tree,
         document._catalog_index,
         document._directory,
+        document._road_network_problem,
         _network,
         _digest,
     ):

@@ -541,6 +541,15 @@ class FollowTrajectory(Action):
             self.timing = (timing.get("domainAbsoluteRelative"), scale, float(timing.get("offset", "0")))
         else:
             self.timing = None
+            ts = self.polyline.ts
+            back = next((k for k in range(1, len(ts)) if None not in ts[k - 1 : k + 1] and ts[k] < ts[k - 1]), None)
+            if back is not None:  # (esmini plays the path and reads no time of it: so does vei, but it says so)
+                ctx.warn(
+                    traj,
+                    f"trajectory {traj.get('name')!r}: vertex times go back ({ts[back - 1]:g} -> {ts[back]:g} at "
+                    f"vertex {back}); with no Timing they are not played (the path is followed at the entity's "
+                    "speed)",
+                )
         mode = el.find("TrajectoryFollowingMode")
         self.mode = mode.get("followingMode", "position") if mode is not None else "position"
         self.initial_s = float(el.get("initialDistanceOffset", "0"))

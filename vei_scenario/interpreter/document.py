@@ -60,6 +60,21 @@ def check_type(type_: str, value: str) -> str | None:
     return None
 
 
+def typed_value(type_: str, value: str) -> str | float | int | bool:
+    """A parameter's text as the JSON value of its declared type (double a number, the integer types
+    an integer, boolean true/false), so outputs a program reads keep the type the scenario declared;
+    string, dateTime and any text its type does not parse stay text."""
+    if check_type(type_, value) is not None:
+        return value
+    if type_ == "double":
+        return float(value)
+    if type_ in ("int", "integer", "unsignedInt", "unsignedShort"):
+        return int(value)
+    if type_ == "boolean":
+        return value == "true"
+    return value
+
+
 #: Largest magnitude of the OpenSCENARIO integer types (xsd:int, xsd:unsignedInt, xsd:unsignedShort).
 INT_LIMITS = {"int": 2**31, "integer": 2**31, "unsignedInt": 2**32 - 1, "unsignedShort": 2**16 - 1}
 
@@ -229,6 +244,24 @@ def _listing(directory: str, inode: int, mtime_ns: int, ctime_ns: int) -> tuple[
     if not d.is_dir():
         return ()
     return tuple(sorted(d / n for n in os.listdir(d) if n.endswith(".xosc")))
+
+
+@functools.lru_cache(maxsize=64)
+def _road_network_problem(path: str, key: bytes) -> str | None:
+    """Why the LogicFile is no OpenDRIVE road network (its first element alone is read, once per
+    content); None when it is one. Why: a file that is not a road (a stray path, another format)
+    must be refused before the run, not found out by a plot or a lane lookup afterwards."""
+    from vei_scenario.safe_xml import SAFE_OPTIONS
+
+    try:
+        for _event, el in etree.iterparse(path, events=("start",), **SAFE_OPTIONS):
+            tag = el.tag if isinstance(el.tag, str) else ""
+            return None if tag == "OpenDRIVE" else f"is not an OpenDRIVE file (its root element is <{tag}>)"
+    except etree.XMLSyntaxError as exc:
+        return f"is not an OpenDRIVE file (malformed XML, line {exc.lineno or 0}: {exc.msg})"
+    except OSError as exc:
+        return f"cannot be read ({exc.strerror or exc})"
+    return "is empty"
 
 
 @functools.lru_cache(maxsize=256)
@@ -496,4 +529,7 @@ def load_scenario(
         road_file = _directory(str(path.parent), logic.get("filepath"))
         if not road_file.is_file():
             raise VeiInputError(path, f"line {logic.sourceline}", f"road network {logic.get('filepath')!r} not found")
+        problem = _road_network_problem(str(road_file), content_key(road_file))
+        if problem:
+            raise VeiInputError(path, f"line {logic.sourceline}", f"road network {logic.get('filepath')!r} {problem}")
     return ScenarioDocument(path, root, minor, scope, types, road_file)

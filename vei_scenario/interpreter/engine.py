@@ -10,7 +10,8 @@ from __future__ import annotations
 
 import copy
 import math
-from dataclasses import dataclass
+from collections.abc import Callable
+from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
@@ -40,6 +41,8 @@ from vei_scenario.models.vehicle import VehicleLimits
 
 #: Runs end here at the latest (s) when the storyboard has no stop trigger that fires.
 DEFAULT_MAX_TIME_S = 600.0
+#: How often (steps) a run reports its progress to an ``on_progress`` callback.
+PROGRESS_EVERY_STEPS = 2000
 
 #: How entities see each other within a step. ``sequential`` (default, Gauss-Seidel): entities move
 #: in declaration order and each sees those moved before it at their new state. ``jacobi``: every
@@ -82,6 +85,8 @@ class RunResult:
     road_file: Path | None = None
     #: What the run played in its own way (Context.warn): file, line, reason, once each.
     warnings: tuple[str, ...] = ()
+    #: The declared type of each top-level parameter (double, boolean, string ...), for typed outputs.
+    parameter_types: dict[str, str] = field(default_factory=dict)
     #: The systems under test plugged in (:class:`~vei_scenario.sut.ControllerSpec`), if any.
     controllers: tuple = ()
 
@@ -377,10 +382,10 @@ class Simulation:
         else:
             advance_along(e, ds)
 
-    def run(self) -> RunResult:
+    def run(self, on_progress: Callable[[float], None] | None = None) -> RunResult:
         """Play the scenario to its end; the controllers that hold resources (an FMU) end with it."""
         try:
-            return self._run()
+            return self._run(on_progress)
         finally:
             for e in self.ctx.entities.values():
                 for c in e.controllers.values():
@@ -388,7 +393,7 @@ class Simulation:
                     if finish is not None:
                         finish()
 
-    def _run(self) -> RunResult:
+    def _run(self, on_progress: Callable[[float], None] | None = None) -> RunResult:
         ctx, dt = self.ctx, self.dt
         names = list(ctx.entities)
         recording = Recording([ctx.entities[n] for n in names])
@@ -420,7 +425,11 @@ class Simulation:
         pending = [a for a in self.init_actions if not a.done]
         entities = list(ctx.entities.values())
         board, offers = self.storyboard, Offers()
+        reported = 0
         while running and ctx.t < self.max_time - 1e-9:
+            if on_progress is not None and ctx.step - reported >= PROGRESS_EVERY_STEPS:
+                on_progress(ctx.t)  # (the simulated time reached: a long run shows it moves)
+                reported = ctx.step
             before = ctx.transitions
             if not board.step():
                 reason = "storyboard stop trigger"
@@ -489,6 +498,7 @@ class Simulation:
             reason,
             self.doc.road_file,
             tuple(ctx.warnings),
+            dict(ctx.parameter_types),
             self.controllers,
         )
 

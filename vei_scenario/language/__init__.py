@@ -30,6 +30,10 @@ def describe_command(args) -> int:
     if args.seed < 0:
         raise VeiInputError(None, "--seed", "must be non-negative")
     out = Path(args.output)
+    if args.text is not None:
+        from vei_scenario.language.description_text import readable_description
+
+        args.text = readable_description(args.text)
     if args.layers is not None:
         fixed = load_layers(Path(args.layers))
         count, text, backend = 1, fixed.get("description", ""), "layers"

@@ -32,6 +32,7 @@ from scenariogeneration import xosc
 from vei_scenario.language import maps, placement
 from vei_scenario.language.behaviours import behaviour
 from vei_scenario.language.behaviours.base import ActorContext, Condition, G
+from vei_scenario.language.description_text import plain_text
 from vei_scenario.language.layers import behaviour_nodes
 from vei_scenario.models.cap import CapParameters
 from vei_scenario.openscenario.scenario_writer import render
@@ -379,7 +380,7 @@ def write_scenario(layers: dict, stem: str) -> WrittenScenario:
         board.add_story(story)
     network = xosc.RoadNetwork(roadfile=xodr_name)
     scenario = xosc.Scenario(
-        layers.get("description", "language scenario")[:200] or "language scenario",
+        plain_text(str(layers.get("description", "language scenario")))[:200] or "language scenario",
         AUTHOR,
         xosc.ParameterDeclarations(),
         entities,

@@ -12,6 +12,7 @@ plays); a scenario of another structure raises :class:`NotALoop` and callers use
 from __future__ import annotations
 
 import copy
+import math
 from dataclasses import dataclass, fields
 from pathlib import Path
 
@@ -208,6 +209,18 @@ class LoopScene:
             return self._resolved(self.rider_raw, scope) in RIDER_TYPES
         except Exception:  # noqa: BLE001 - anything unresolvable is for the interpreter to report
             return False
+
+    def kernel_accepts(self, values: dict[str, str]) -> bool:
+        """:meth:`accepts`, and none of what ``vei run`` refuses that the kernel would play anyway (a
+        negative cruise speed, which the interpreter's planner refuses): such a variant goes through
+        the interpreter and becomes the same failed row as ``vei run`` says."""
+        if not self.accepts(values):
+            return False
+        try:
+            cruise = float(self._resolved(self.cruise_raw, {**self.defaults, **values}))
+        except Exception:  # noqa: BLE001 - for the interpreter to report
+            return False
+        return math.isfinite(cruise) and cruise >= 0
 
     def _prop_or_none(self, entity: str, name: str):
         try:

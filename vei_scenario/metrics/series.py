@@ -34,6 +34,9 @@ class MetricConfig:
     comfort_accel_mps2: float = 2.0
     comfort_jerk_mps3: float = 2.0
     near_miss_ttc_s: tuple[float, float] = (0.5, 1.5)
+    #: A pass without contact closer than this (minimum box gap, m) is a near miss in the sweep report
+    #: whatever its TTC: crossing or side by side, the TTC can stay long while the boxes almost touch.
+    close_pass_m: float = 0.5
 
     def __post_init__(self) -> None:
         if self.zone_ttc not in ZONE_TTCS:

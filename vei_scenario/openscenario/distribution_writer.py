@@ -43,6 +43,48 @@ def distribution_xml(
         ) from None
 
 
+#: Draws and seed of the stochastic distribution (vei probability's default runs per estimator).
+STOCHASTIC_RUNS = 20000
+STOCHASTIC_SEED = 1
+#: Standard deviation of the rider's timing when the paths never collide (s).
+FALLBACK_TIMING_SD_S = 1.0
+
+
+def timing_spread(model: ScenarioModel) -> tuple[float, float]:
+    """Mean and standard deviation (s) of the rider's timing for a stress test of the system under
+    test: centred on the conflict shift (where the two would meet), spread by half the collision
+    interval's width (so about two draws in three would collide without the planner), or 1 s when
+    the paths never lead to contact."""
+    mean = float(model.parameter("ConflictTimeShift").default)
+    shifts = model.conflicts[model.threat].collision_shifts_s
+    sd = (shifts[1] - shifts[0]) / 2 if shifts and shifts[1] > shifts[0] else FALLBACK_TIMING_SD_S
+    return round(mean, 3), round(sd, 3)
+
+
+def stochastic_distribution_xml(model: ScenarioModel, scenario_file: str, minor_version: int = 3) -> bytes:
+    """A stochastic ParameterValueDistribution for ``vei probability`` (and ``vei sweep``): TimeShift
+    normal (:func:`timing_spread`, truncated to three standard deviations either side), the rider type
+    uniform over the rider models; CapEnabled and the rest stay the scenario's (or ``--param``)."""
+    mean, sd = timing_spread(model)
+    sto = xosc.Stochastic(STOCHASTIC_RUNS, STOCHASTIC_SEED)
+    lo, hi = round(mean - 3 * sd, 3), round(mean + 3 * sd, 3)
+    sto.add_distribution("TimeShift", xosc.NormalDistribution(mean, round(sd * sd, 6), xosc.Range(lo, hi)))
+    riders = xosc.ProbabilityDistributionSet()
+    for rider in model.variations()["RiderType"]:
+        riders.add_set(str(rider), 1)
+    sto.add_distribution("RiderType", riders)
+    pvd = xosc.ParameterValueDistribution(
+        f"Stochastic variations of {model.name}: TimeShift ~ N({mean:g} s, ({sd:g} s)^2) on [{lo:g}, {hi:g}] s, "
+        "rider type uniform",
+        AUTHOR,
+        scenario_file,
+        sto,
+        osc_minor_version=minor_version,
+    )
+    pvd.header.creation_date = header_date(model)
+    return render(pvd)
+
+
 def variant_combinations(model: ScenarioModel) -> list[dict[str, object]]:
     """Every combination of the variation set, each a full parameter assignment (defaults elsewhere)."""
     var = model.variations()

@@ -4,7 +4,9 @@ Structure of a compiled scenario:
 
 * ``ParameterDeclarations``: TimeShift, RiderType, CapEnabled, EgoCruiseSpeed, ConflictTimeShift.
 * ``Entities``: ``Ego`` (car) with the ``CollisionAvoidancePlanner`` controller, one bicycle-category
-  vehicle per scooter track; the threat scooter carries the ``SocialForceModel`` controller. Controller
+  vehicle per scooter track; the threat scooter carries the ``SocialForceModel`` controller. Every
+  other annotated road user is typed by its category (``Pedestrian``, a vehicle of its category, or a
+  ``MiscObject``) and replays its track. Controller
   properties hold every model parameter (``$``-references where a scenario parameter decides).
 * ``Init``: every entity teleported to its first pose; the ego at ``$EgoCruiseSpeed``, the scooters at
   their first recorded speed.
@@ -69,19 +71,50 @@ def _vehicle(e: EntitySpec) -> xosc.Vehicle:
     box (``Center x = 0``), and the rear axle is declared there (``positionX = 0``). esmini places the
     box at ``Center.x - RearAxle.positionX`` ahead of the position, vei at ``Center.x``: with the
     rear axle at 0 both put the box where the models, the metrics and the collision check have it."""
-    category = xosc.VehicleCategory.car if e.category == "car" else xosc.VehicleCategory.bicycle
-    box = xosc.BoundingBox(e.width_m, e.length_m, e.height_m, 0.0, 0.0, e.height_m / 2)
-    if e.category == "car":
+    category = getattr(xosc.VehicleCategory, e.category)
+    box = _box(e)
+    if e.name == "Ego":
         front = xosc.Axle(0.52, 0.65, 1.6, 0.3 * e.length_m, 0.325)
         rear = xosc.Axle(0.0, 0.65, 1.6, 0.0, 0.325)
         return xosc.Vehicle(e.name, category, box, front, rear, 50.0, 4.0, 9.0)
-    front = xosc.Axle(0.6, 0.2, 0.1, 0.4, 0.1)
-    rear = xosc.Axle(0.0, 0.2, 0.1, 0.0, 0.1)
-    vehicle = xosc.Vehicle(e.name, category, box, front, rear, 7.0, 2.0, 3.5)
-    # OpenSCENARIO has no e-scooter category (it is a bicycle-category vehicle): the property tells
-    # players that know better types, such as the OSI writer (TYPE_STANDUP_SCOOTER), what it is
-    vehicle.add_property("objectType", "e-scooter")
+    if e.object_type == "e-scooter":
+        front = xosc.Axle(0.6, 0.2, 0.1, 0.4, 0.1)
+        rear = xosc.Axle(0.0, 0.2, 0.1, 0.0, 0.1)
+        vehicle = xosc.Vehicle(e.name, category, box, front, rear, 7.0, 2.0, 3.5)
+    else:  # a replayed road user: limits no recorded motion would reach (it follows its trajectory)
+        wheel = min(0.7, 0.4 * e.height_m)
+        front = xosc.Axle(0.5, wheel, 0.8 * e.width_m, 0.6 * e.length_m, wheel / 2)
+        rear = xosc.Axle(0.0, wheel, 0.8 * e.width_m, 0.0, wheel / 2)
+        vehicle = xosc.Vehicle(e.name, category, box, front, rear, 70.0, 10.0, 10.0, mass=e.mass_kg or None)
+    _type_property(vehicle, e)
     return vehicle
+
+
+def _box(e: EntitySpec) -> xosc.BoundingBox:
+    """The box, centred on the recorded point (see :func:`_vehicle`)."""
+    return xosc.BoundingBox(e.width_m, e.length_m, e.height_m, 0.0, 0.0, e.height_m / 2)
+
+
+def _type_property(obj, e: EntitySpec) -> None:
+    # OpenSCENARIO has no e-scooter category (it is a bicycle-category vehicle), nor one for every
+    # annotated class: the property tells players that know better types, such as the OSI writer
+    # (TYPE_STANDUP_SCOOTER), what it is
+    if e.object_type:
+        obj.add_property("objectType", e.object_type)
+
+
+def _scenario_object(e: EntitySpec, minor_version: int):
+    """The entity's Vehicle, Pedestrian or MiscObject (a road user is typed by its category). A 1.0
+    Pedestrian must name a model (later versions dropped it): its category."""
+    if e.kind == "pedestrian":
+        model = e.category if minor_version == 0 else None
+        obj = xosc.Pedestrian(e.name, e.mass_kg, getattr(xosc.PedestrianCategory, e.category), _box(e), model)
+    elif e.kind == "misc":
+        obj = xosc.MiscObject(e.name, e.mass_kg, getattr(xosc.MiscObjectCategory, e.category), _box(e))
+    else:
+        return _vehicle(e)
+    _type_property(obj, e)
+    return obj
 
 
 def _properties(values: dict[str, object]) -> xosc.Properties:
@@ -206,7 +239,7 @@ def build_scenario(model: ScenarioModel, minor_version: int = 3, resolved: dict 
         elif e.name == model.threat:
             entities.add_scenario_object(e.name, _vehicle(e), _sfm_controller(model, resolved))
         else:
-            entities.add_scenario_object(e.name, _vehicle(e))
+            entities.add_scenario_object(e.name, _scenario_object(e, minor_version))
 
     init = xosc.Init()
     step = xosc.TransitionDynamics(xosc.DynamicsShapes.step, xosc.DynamicsDimension.time, 0)

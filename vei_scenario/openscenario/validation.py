@@ -27,7 +27,7 @@ from lxml import etree
 from vei_scenario.errors import VeiInputError
 from vei_scenario.openscenario import STORYBOARD_ELEMENT_TYPES
 from vei_scenario.openscenario.asam_schemas import xsd_path
-from vei_scenario.safe_xml import safe_parser
+from vei_scenario.safe_xml import json_hint, safe_parser
 
 
 @dataclass(frozen=True)
@@ -56,7 +56,8 @@ def _parse(path: Path, problems: list[Problem]):
     try:
         return etree.parse(str(path), safe_parser())
     except etree.XMLSyntaxError as exc:
-        problems.append(Problem(str(path), exc.lineno or None, "xml.syntax", f"malformed XML: {exc.msg}"))
+        hint = json_hint(path)
+        problems.append(Problem(str(path), exc.lineno or None, "xml.syntax", f"malformed XML: {exc.msg}{hint}"))
     except OSError as exc:
         problems.append(Problem(str(path), None, "file.unreadable", str(exc)))
     return None

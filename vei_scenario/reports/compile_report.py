@@ -11,8 +11,9 @@ def compile_report(result: CompileResult) -> str:
     m, rec = result.model, result.reconstruction
     road = "fitted to the ego track" if result.road_source == "fitted" else f"{result.road_source[4:]} via netconvert"
     lines = [
-        f"clip {rec.clip.id}: {m.duration_s:.1f} s, ego + {len(rec.scooters)} e-scooter track(s), "
-        f"output at {rec.rate_hz:g} Hz",
+        f"clip {rec.clip.id}: {m.duration_s:.1f} s, ego + {len(rec.scooters)} e-scooter track(s)"
+        + (f" + {len(rec.others)} other road user(s) replayed as recorded" if rec.others else "")
+        + f", output at {rec.rate_hz:g} Hz",
         f"road network: {road}; ego GPS fixes on driving lanes: {100 * result.ego_on_lanes:.1f} %",
     ]
     for tid, c in sorted(m.conflicts.items()):

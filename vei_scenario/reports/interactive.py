@@ -42,10 +42,14 @@ def interactive_html(inputs: tuple | None) -> str:
             fixed = "".join(f"<br>{part}" for part in name.split(", ")) if name != "all" else ""
             hover = f"variant %{{customdata}}<br>{x_param} %{{x}}{fixed}<br>{label} %{{y}}<extra></extra>"
             colour = PALETTE[k % len(PALETTE)]
+            # groups with equal values must not hide each other: own symbol (open, larger for the earlier
+            # groups, so markers on one point nest), own dash, wider lines below (as the PNG plots)
+            below = (len(grouped) - 1 - k) / max(len(grouped) - 1, 1)
+            marker = {"size": 4 + 5 * below, "color": colour, "symbol": SYMBOLS[k % len(SYMBOLS)]}
+            line = {"width": 1 + 1.5 * below, "color": colour, "dash": DASHES[k % len(DASHES)]}
             traces.append({"type": "scattergl", "x": _typed(x, "f8"), "y": _typed(y, "f4"),
                            "mode": "lines+markers", "name": name, "customdata": _typed(number, "i4"),
-                           "hovertemplate": hover, "legendgroup": name,
-                           "marker": {"size": 3, "color": colour}, "line": {"width": 1, "color": colour}})  # fmt: skip
+                           "hovertemplate": hover, "legendgroup": name, "marker": marker, "line": line})  # fmt: skip
             if hit.any():
                 traces.append({"type": "scattergl", "x": _typed(x[hit], "f8"), "y": _typed(y[hit], "f4"),
                                "mode": "markers", "name": name, "customdata": _typed(number[hit], "i4"),
@@ -64,6 +68,9 @@ def interactive_html(inputs: tuple | None) -> str:
     return "".join(parts)
 
 
+#: Marker symbols and line dashes per group, in drawing order (as reports.overlap for the PNG plots).
+SYMBOLS = ("circle-open", "square-open", "triangle-up-open", "diamond-open", "triangle-down-open", "star-open")
+DASHES = ("solid", "dash", "dashdot", "dot", "longdash", "longdashdot")
 #: Trace colours (matplotlib's default cycle, as in the PNG plots).
 PALETTE = ("#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22",
            "#17becf")  # fmt: skip

@@ -15,8 +15,10 @@ Every entity is an object with its id (its index in the scenario's entity order)
 dimensions, and its pose, velocity and acceleration at the **centre of its bounding box** in the
 OpenDRIVE (inertial) frame, as OSI defines ``BaseMoving``. Vehicles and pedestrians are moving
 objects (the e-scooter as ``TYPE_STANDUP_SCOOTER``, a bicycle as ``TYPE_BICYCLE``, a car as
-``TYPE_MEDIUM_CAR``, as esmini maps them); misc objects are stationary objects. The ego is the host
-vehicle; the map reference is the ``.xodr`` file name and ``proj_string`` its ``geoReference``.
+``TYPE_MEDIUM_CAR``, as esmini maps them); misc objects are stationary objects, unless they move
+(a road user OpenSCENARIO has no class for, replayed from a clip): then moving objects of
+``TYPE_OTHER``. The ego is the host vehicle; the map reference is the ``.xodr`` file name and
+``proj_string`` its ``geoReference``.
 """
 
 from __future__ import annotations
@@ -51,6 +53,8 @@ SCOOTER_TYPES = frozenset({"e-scooter", "escooter", "e_scooter", "scooter", "sta
 
 def osi_type_names(kind: str, category: str, object_type: str) -> tuple[str, str | None]:
     """(MovingObject.Type name, VehicleClassification.Type name or None) of an entity."""
+    if kind == "misc":  # (a misc object that moves: a road user OpenSCENARIO has no class for)
+        return "TYPE_OTHER", None
     if kind == "pedestrian":
         if category == "animal":
             return "TYPE_ANIMAL", None
@@ -93,6 +97,11 @@ def _kinematics(tr, t: np.ndarray):
     return x, y, vx, vy, ax, ay, rate
 
 
+def _moves(tr) -> bool:
+    """Whether an entity's pose changes during the run (a misc object that moves is a moving object)."""
+    return bool(np.ptp(tr.x) > 0 or np.ptp(tr.y) > 0 or np.ptp(tr.yaw) > 0) if len(tr.x) else False
+
+
 def ground_truths(result, host: str | None = None):
     """The run as ``osi3.GroundTruth`` messages, one per recorded step (a generator: a message is
     serialised before the next is built, so a long run needs no more memory than one step)."""
@@ -115,7 +124,7 @@ def ground_truths(result, host: str | None = None):
     moving, stationary = [], []
     for i, n in enumerate(names):
         tr = result.traces[n]
-        if tr.kind == "misc":
+        if tr.kind == "misc" and not _moves(tr):
             obj = gt.stationary_object.add()
             stationary.append((n, obj))
         else:

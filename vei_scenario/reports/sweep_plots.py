@@ -8,6 +8,7 @@ import base64
 
 import numpy as np
 
+from vei_scenario.reports import overlap
 from vei_scenario.reports.figures import agg_figure, png_bytes
 
 
@@ -48,17 +49,43 @@ def _series_plot(
     label: str,
     xlim: tuple[float, float],
 ) -> tuple[str, int]:
-    """The metric over ``x_param``, one line per group; (PNG, variants without a value). Variants with
-    no value (no TTC: never on a collision course) are marked along the top edge, not dropped."""
-    fig = agg_figure((11, 5.0))
+    """The metric over ``x_param``, one line per group; (PNG, variants without a value)."""
+    fig, missing = series_figure(grouped, x_param, metric, label, xlim)
+    return _png(fig), missing
+
+
+def series_figure(
+    grouped: list[tuple[str, np.ndarray, dict, np.ndarray]],
+    x_param: str,
+    metric: str,
+    label: str,
+    xlim: tuple[float, float],
+):
+    """The metric over ``x_param``, one line per group; (figure, variants without a value). Variants
+    with no value (no TTC: never on a collision course) are marked along the top edge, not dropped."""
+    ncol = 1 if len(grouped) <= 6 else 2  # (legend entries carry notes: one a line while they fit)
+    rows = -(-len(grouped) // ncol)
+    height = 4.3 + 0.2 * rows  # the plot keeps its height; the legend below gets a line per row
+    fig = agg_figure((11, height))
     ax = fig.add_subplot()
     missing = 0
     many = False
-    for name, x, values, coll in grouped:
+    count = len(grouped)
+    # groups with equal values would hide each other: each its own dash, width and open marker (larger
+    # for the earlier groups, so that markers on the same point nest), and a legend note
+    notes = overlap.coincidence_notes([(name, x, values[metric]) for name, x, values, _ in grouped], partial=True)
+    for k, ((name, x, values, coll), note) in enumerate(zip(grouped, notes)):
         y = values[metric]
         marked = x.size <= MARKER_LIMIT
         many |= not marked
-        line = ax.plot(x, y, lw=1.3, marker="." if marked else None, ms=3, label=name)
+        shape = {
+            "marker": overlap.MARKERS[k % len(overlap.MARKERS)],
+            "mfc": "none",
+            "ms": 3 + 4 * (count - 1 - k) / max(count - 1, 1),
+        }
+        line = ax.plot(x, y, ls=overlap.LINE_STYLES[k % len(overlap.LINE_STYLES)],
+                       lw=1.0 + 1.5 * (count - 1 - k) / max(count - 1, 1), label=name + note,
+                       **(shape if marked else {}))  # fmt: skip
         colour = line[0].get_color()
         none = np.isnan(y)
         missing += int(none.sum())
@@ -66,7 +93,8 @@ def _series_plot(
         if marked:
             ax.plot(x[coll], y[coll], "x", color=colour, ms=6)
             if none.any():  # at the top edge, in axes coordinates
-                ax.plot(x[none], np.full(none.sum(), 0.98), "^", color=colour, ms=3, transform=top)
+                # (each group a little lower than the one before: the marks of one do not cover another's)
+                ax.plot(x[none], np.full(none.sum(), 0.98 - 0.012 * k), "^", color=colour, ms=3, transform=top)
         elif none.any():  # one segment along the top edge per run of variants without a value
             for i, j in _runs(none):
                 ax.plot([x[i], x[j]], [0.98, 0.98], color=colour, lw=3, transform=top, solid_capstyle="butt")
@@ -80,14 +108,14 @@ def _series_plot(
     ax.set_xlabel(param_label(x_param))
     ax.set_ylabel(label)
     ax.grid(alpha=0.3)
-    ax.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=3, frameon=False)  # off the data
+    ax.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=ncol, frameon=False)  # off the data
     marks = "red band: collision region" if many else "× collision, red band: collision region"
     title = f"{label} over {param_label(x_param)}: {marks}"
     if missing:
         title += f"; {'bar' if many else '▲'} at the top: no value ({missing} variants)"
     ax.set_title(title, fontsize=10)
-    fig.subplots_adjust(left=0.07, right=0.98, top=0.93, bottom=0.27)
-    return _png(fig), missing
+    fig.subplots_adjust(left=0.07, right=0.98, top=1 - 0.35 / height, bottom=(0.75 + 0.2 * rows) / height)
+    return fig, missing
 
 
 def render_plots(inputs: tuple | None, which: range | None = None) -> list[tuple[str, int]]:

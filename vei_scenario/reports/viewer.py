@@ -92,11 +92,15 @@ def view_run_dir(run_dir: str | Path, scenario: str | Path | None = None) -> Vie
     if not rows:
         raise VeiInputError(csv_path, "line 2", "no trajectory rows")
     boxes = {n: (e["category"], e["length_m"], e["width_m"], e["center_x_m"]) for n, e in doc["entities"].items()}
+    from vei_scenario.interpreter.document import parameter_text
+
+    # (metrics.json keeps the declared types: a run takes them back as OpenSCENARIO text)
+    texts = {k: parameter_text(v) for k, v in (doc.get("parameters") or {}).items()}
     road_file = None
     if scenario is not None:
         from vei_scenario.interpreter import load_scenario
 
-        road_file = load_scenario(scenario, doc.get("parameters")).road_file
+        road_file = load_scenario(scenario, texts).road_file
     traces = {}
     t = None
     for name, vals in rows.items():
@@ -113,7 +117,7 @@ def view_run_dir(run_dir: str | Path, scenario: str | Path | None = None) -> Vie
         t,
         traces,
         collisions,
-        doc.get("parameters", {}),
+        texts,
         doc.get("ego") or next(iter(traces)),
         doc.get("threat"),
         doc.get("end_reason", ""),
@@ -205,12 +209,35 @@ def render_frames(view: View, steps: np.ndarray, size_px: int = 640) -> Iterator
         yield np.asarray(canvas.buffer_rgba())[:, :, :3].copy()
 
 
-def write_animation(view: View, out: str | Path, fps: float = 10.0, speed: float = 1.0, size_px: int = 640) -> Path:
-    """An animated GIF (``.gif``) or MP4 (``.mp4``, needs ffmpeg) of the run, written atomically."""
+def _with_bar(render):
+    """``render`` (view, steps, size) whose frames tick a terminal bar as they are drawn."""
+
+    def frames(view, steps, size_px):
+        from vei_scenario.reports.run_progress import terminal_bar
+
+        bar = terminal_bar(len(steps), "frame", "drawing")
+        try:
+            for f in render(view, steps, size_px):
+                yield f
+                if bar is not None:
+                    bar.update(1)
+        finally:
+            if bar is not None:
+                bar.close()
+
+    return frames
+
+
+def write_animation(
+    view: View, out: str | Path, fps: float = 10.0, speed: float = 1.0, size_px: int = 640, progress: bool = False
+) -> Path:
+    """An animated GIF (``.gif``) or MP4 (``.mp4``, needs ffmpeg) of the run, written atomically. With
+    ``progress``, the frames drawn show as a bar where stderr is a terminal (a film takes seconds)."""
     from vei_scenario.atomic_io import write_bytes_atomic
 
     out = Path(out)
     steps = frame_steps(view, fps, speed)
+    draw = _with_bar(render_frames) if progress else render_frames
     suffix = out.suffix.lower()
     if suffix == ".gif":
         import io
@@ -218,7 +245,7 @@ def write_animation(view: View, out: str | Path, fps: float = 10.0, speed: float
         from matplotlib.colors import to_rgb
         from PIL import Image
 
-        rgb = list(render_frames(view, steps, size_px))
+        rgb = list(draw(view, steps, size_px))
         # one palette for the film, from two frames and swatches of the colours that must survive (a box
         # of a few pixels would otherwise lose its zone colour to the road's greys)
         keys = [*ZONE_FACE.values(), "tab:blue", "tab:gray", "black", "white"]
@@ -238,7 +265,7 @@ def write_animation(view: View, out: str | Path, fps: float = 10.0, speed: float
         import subprocess
         import tempfile
 
-        frames = list(render_frames(view, steps, size_px))
+        frames = list(draw(view, steps, size_px))
         h, w = frames[0].shape[:2]
         with tempfile.TemporaryDirectory(dir=out.parent if out.parent.exists() else None) as tmp:
             part = Path(tmp) / "view.mp4"

@@ -13,9 +13,10 @@ from vei_scenario.geometry.resample import Trajectory
 from vei_scenario.models.cap import CapParameters
 from vei_scenario.models.sfm import RIDER_TYPES, SfmParameters
 from vei_scenario.scenario.parameters import ParameterSpec, declared_parameters, model_parameters
+from vei_scenario.scenario.road_users import E_SCOOTER, road_user_class
 
 #: E-scooter with a standing rider (m): deck and bars ~1.1–1.2 m long, shoulders ~0.6 m, ~1.9 m tall.
-SCOOTER_BOX_M = (1.2, 0.6, 1.9)
+SCOOTER_BOX_M = (E_SCOOTER.length_m, E_SCOOTER.width_m, E_SCOOTER.height_m)
 EGO_HEIGHT_M = 1.5
 #: Timing shifts of the variation set, around the conflict shift (s). The SFM's desired speed defaults
 #: to the threat's median recorded speed, so that a model rider keeps the recorded pace.
@@ -25,11 +26,15 @@ SHIFT_OFFSETS_S = (-1.0, -0.5, 0.0, 0.5, 1.0)
 @dataclass(frozen=True)
 class EntitySpec:
     name: str
-    category: str  # "car" or "bicycle" (OpenSCENARIO VehicleCategory)
+    category: str  # the OpenSCENARIO category of its kind ("car", "bicycle", "pedestrian", ...)
     length_m: float
     width_m: float
     height_m: float
     trajectory: Trajectory
+    kind: str = "vehicle"  # the ScenarioObject element: "vehicle", "pedestrian" or "misc"
+    #: the annotated category where OpenSCENARIO's is coarser ("e-scooter"): the objectType property
+    object_type: str = ""
+    mass_kg: float = 0.0
 
 
 @dataclass(frozen=True)
@@ -38,7 +43,7 @@ class ScenarioModel:
     description: str
     date: str | None
     proj_string: str
-    entities: tuple[EntitySpec, ...]  # Ego first, then scooters by track id
+    entities: tuple[EntitySpec, ...]  # Ego first, then scooters by track id, then other road users
     threat: str
     conflicts: dict[str, Conflict]
     parameters: tuple[ParameterSpec, ...]
@@ -78,10 +83,19 @@ def build_model(
     ego_path = with_run_out(rec.ego, max(short, 0.0) + EGO_RUN_OUT_MARGIN_M)
     ego = EntitySpec("Ego", "car", clip.ego.length_m, clip.ego.width_m, EGO_HEIGHT_M, ego_path)
     scooters = tuple(
-        EntitySpec(tid, "bicycle", *SCOOTER_BOX_M, track.trajectory) for tid, track in sorted(rec.scooters.items())
+        EntitySpec(tid, "bicycle", *SCOOTER_BOX_M, track.trajectory, object_type="e-scooter", mass_kg=E_SCOOTER.mass_kg)
+        for tid, track in sorted(rec.scooters.items())
     )
+    others = tuple(_road_user(tid, track.category, track.trajectory) for tid, track in sorted(rec.others.items()))
     ego_box = (ego.length_m, ego.width_m)
     driven = ego_at_constant_speed(rec.ego, cruise)
+    if driven.t.size < 2 or cruise < MIN_CRUISE_MPS:  # (no path to time a conflict on, no speed to drive it)
+        raise VeiInputError(
+            clip.path,
+            "ego.samples",
+            f"the ego does not drive in this clip (median speed {cruise:.2f} m/s, track "
+            f"{float(rec.ego.arc_length()[-1]):.1f} m long): vei reconstructs encounters with a moving vehicle",
+        )
     conflicts = {
         s.name: analyse_conflict(s.name, driven, s.trajectory, ego_box, (s.length_m, s.width_m)) for s in scooters
     }
@@ -101,7 +115,7 @@ def build_model(
         description=f"Reconstructed vehicle–e-scooter interaction from clip {clip.id}",
         date=clip.recorded_at,
         proj_string=rec.projection.proj_string,
-        entities=(ego, *scooters),
+        entities=(ego, *scooters, *others),
         threat=threat,
         conflicts=conflicts,
         parameters=params,
@@ -110,6 +124,19 @@ def build_model(
         duration_s=rec.duration_s,
     )
 
+
+def _road_user(name: str, category: str, trajectory: Trajectory) -> EntitySpec:
+    """A road user vei has no behaviour model for: replayed as recorded, typed by its category. Not a
+    candidate threat (the conflict analysis and the rider model are the e-scooters')."""
+    cls = road_user_class(category)
+    object_type = "" if cls.category == category.strip().lower() else category
+    return EntitySpec(
+        name, cls.category, cls.length_m, cls.width_m, cls.height_m, trajectory, cls.kind, object_type, cls.mass_kg
+    )
+
+
+#: Below this median speed (m/s) the ego is taken to stand for the whole clip.
+MIN_CRUISE_MPS = 0.1
 
 #: How far the ego's path runs on beyond what driving it at the cruise speed needs (m).
 EGO_RUN_OUT_MARGIN_M = 10.0

@@ -111,7 +111,7 @@ def _chunk(
     native = _native_engine(scenario, dt, zone_ttc, controllers)
     rows: list[dict | None] = [None] * len(chunk)
     if native is not None:
-        ok = [i for i, v in enumerate(chunk) if native.scene.accepts(v)]
+        ok = [i for i, v in enumerate(chunk) if native.scene.kernel_accepts(v)]
         for i, m in zip(ok, native.metrics([chunk[i] for i in ok])):
             rows[i] = {"status": "ok", "error": "", "metrics": m}
     return [
@@ -201,7 +201,7 @@ def _evaluate_native(native, scenario, variants, dt, workers, progress, zone_ttc
 
     scene = native.scene
     rows: list[dict | None] = [None] * len(variants)
-    ok = [i for i, v in enumerate(variants) if scene.accepts(v)]
+    ok = [i for i, v in enumerate(variants) if scene.kernel_accepts(v)]
     tasks = scene.model_groups(ok, variants, 500)  # (variants that share their model parameters)
 
     def task(t: list[int]):  # preparing (Python) overlaps with the other threads' kernel runs (no GIL)

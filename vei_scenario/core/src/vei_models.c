@@ -441,8 +441,13 @@ void vei_polyline_at_s(const VeiPolyline *p, double s, double *x, double *y, dou
 
 double vei_polyline_end_speed(const VeiPolyline *p) {
     if (!isnan(p->exit_speed)) return p->exit_speed;
-    const int e = p->n - 1;
-    return (p->s[e] - p->s[e - 1]) / (p->t[e] - p->t[e - 1]);
+    /* the last segment that takes time: vertices that repeat the last time are a jump at the end (esmini plays
+     * them so), with no speed of their own */
+    for (int e = p->n - 1; e > 0; e--) {
+        double dt = p->t[e] - p->t[e - 1];
+        if (dt > 0) return (p->s[e] - p->s[e - 1]) / dt;
+    }
+    return 0.0;
 }
 
 void vei_polyline_at_time_seg(const VeiPolyline *p, double t, VeiCursor *cur, double *x, double *y, double *h) {
