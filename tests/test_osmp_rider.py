@@ -1,7 +1,8 @@
-"""vei's e-scooter rider as an OSMP traffic participant (``vei fmu build sfm --osmp``), hosted back in
-``vei run`` as one (``--controller scooter_1=vei_sfm_osmp.fmu``): the built-in model's run again.
+"""vei's e-scooter rider and its planner (driving the ego) as OSMP traffic participants (``vei fmu build
+sfm cap --osmp``), hosted back in ``vei run`` as such (``--controller scooter_1=vei_sfm_osmp.fmu``,
+``--controller Ego=vei_cap_osmp.fmu``, or both): the built-in models' run again.
 
-The FMU is a pythonfmu FMU that can be instantiated once per process: each hosted run is a process."""
+The FMUs are pythonfmu FMUs that can be instantiated once per process: each hosted run is a process."""
 
 from __future__ import annotations
 
@@ -21,25 +22,28 @@ from vei_scenario.sut.osmp import read_osmp_ports
 #: Builds the rider for the values, runs the scenario with the built-in rider and with the FMU on the
 #: entity, prints the largest position difference over every entity and whether each collides.
 _COMPARE = """
-import json, sys
+import json, os, sys
 from pathlib import Path
 import numpy as np
-from vei_scenario.fmu.osmp_rider import build_osmp_rider
+from vei_scenario.fmu.osmp_rider import build_osmp
 from vei_scenario.interpreter import run_scenario
 from vei_scenario.sut import parse_controller_options
-scenario, entity, out, values = sys.argv[1], sys.argv[2], Path(sys.argv[3]), json.loads(sys.argv[4])
-fmu = build_osmp_rider(scenario, out, values)
+scenario, plugs, out, values = sys.argv[1], json.loads(sys.argv[2]), Path(sys.argv[3]), json.loads(sys.argv[4])
+options = [f"{entity}={build_osmp(model, scenario, out, values)}" for entity, model in plugs.items()]
 a = run_scenario(scenario, values)
-b = run_scenario(scenario, values, controllers=parse_controller_options([f"{entity}={fmu}"]))
+b = run_scenario(scenario, values, controllers=parse_controller_options(options))
+entity = list(plugs)[-1]
 d = max(float(np.max(np.hypot(a.traces[n].x - b.traces[n].x, a.traces[n].y - b.traces[n].y))) for n in a.traces)
 print(json.dumps({"deviation_m": d, "collides": [bool(a.collisions), bool(b.collisions)],
-                  "status": sorted(set(b.traces[entity].status[1:]))}))
+                  "status": sorted(set(b.traces[entity].status[1:]))}), flush=True)
+os._exit(0)  # (without interpreter teardown, where pythonfmu's embedded runtime can crash)
 """
 
 
-def _compare(scenario: Path, entity: str, out: Path, values: dict) -> dict:
-    done = subprocess.run([sys.executable, "-c", _COMPARE, str(scenario), entity, str(out), json.dumps(values)],
-                          capture_output=True, text=True, timeout=300)  # fmt: skip
+def _compare(scenario: Path, plugs: dict[str, str], out: Path, values: dict) -> dict:
+    """``plugs``: entity -> model (sfm, cap) whose OSMP FMU drives it."""
+    argv = [sys.executable, "-c", _COMPARE, str(scenario), json.dumps(plugs), str(out), json.dumps(values)]
+    done = subprocess.run(argv, capture_output=True, text=True, timeout=300)
     assert done.returncode == 0, done.stderr[-2000:]
     return json.loads(done.stdout.strip().splitlines()[-1])
 
@@ -54,15 +58,21 @@ def multi(compiled) -> Path:
     return next(p for p in compiled["multi_scooter"].written if p.name == "scenario.xosc")
 
 
+PLUGS = {"rider": {"scooter_1": "sfm"}, "planner": {"Ego": "cap"}, "both": {"Ego": "cap", "scooter_1": "sfm"}}
+
+
+@pytest.mark.parametrize("plugs", sorted(PLUGS))
 @pytest.mark.parametrize(("number", "values"), [(n, v) for n, _, v in CONFIGURATIONS])
-def test_the_osmp_rider_reproduces_the_built_in_one_on_the_studys_configurations(case_study, tmp_path, number, values):
-    got = _compare(case_study, "scooter_1", tmp_path, {**values, "TimeShift": "2.197"})
+def test_the_osmp_models_reproduce_the_built_in_ones_on_the_studys_configurations(case_study, tmp_path, number, values,
+                                                                                   plugs):  # fmt: skip
+    got = _compare(case_study, PLUGS[plugs], tmp_path, {**values, "TimeShift": "2.197"})
     assert got["deviation_m"] <= 1e-6 and got["status"] == ["osmp"]
     assert got["collides"][0] == got["collides"][1]
 
 
-def test_the_osmp_rider_reproduces_multi_scooters_threat(multi, tmp_path):
-    got = _compare(multi, "scooter_2", tmp_path, {"RiderType": "normal", "CapEnabled": "true", "TimeShift": "1.41"})
+def test_the_osmp_models_reproduce_multi_scooter(multi, tmp_path):
+    got = _compare(multi, {"Ego": "cap", "scooter_2": "sfm"}, tmp_path,
+                   {"RiderType": "normal", "CapEnabled": "true", "TimeShift": "1.41"})  # fmt: skip
     assert got["deviation_m"] <= 1e-6
 
 
@@ -82,7 +92,10 @@ def test_the_osmp_rider_declares_what_osmp_requires(case_study, tmp_path, capsys
     md = zipfile.ZipFile(fmu).read("modelDescription.xml").decode()
     assert md.index("<VendorAnnotations>") < md.index("<ModelVariables>")
     code = main(["fmu", "build", "cap", "--osmp", "--scenario", str(case_study), "-o", str(tmp_path)])
-    assert code == 2 and "vei fmu build sfm --osmp --scenario XOSC" in capsys.readouterr().err
+    assert code == 0 and read_osmp_ports(tmp_path / "vei_cap_osmp.fmu", "t").parameters["threat_id"][1] == "Integer"
+    assert validate_fmu(str(tmp_path / "vei_cap_osmp.fmu")) == []
+    code = main(["fmu", "build", "ego", "--osmp", "--scenario", str(case_study), "-o", str(tmp_path)])
+    assert code == 2 and "vei fmu build sfm cap --osmp --scenario XOSC" in capsys.readouterr().err
 
 
 def test_a_second_instance_in_one_process_is_refused_in_one_line(case_study, tmp_path):
@@ -99,7 +112,8 @@ run_scenario({str(case_study)!r}, controllers=spec)
 try:
     run_scenario({str(case_study)!r}, controllers=spec)
 except ControllerFault as exc:
-    print(exc)
+    print(exc, flush=True)
+__import__("os")._exit(0)
 """
     done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=300)
     assert done.stdout.strip().endswith(

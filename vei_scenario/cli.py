@@ -291,11 +291,14 @@ def _cmd_fmu_build(args: argparse.Namespace) -> int:
 
     values = parse_param_overrides(args.param) if args.scenario else None
     if args.osmp:
-        from vei_scenario.fmu.osmp_rider import build_osmp_rider
+        from vei_scenario.fmu.osmp_rider import KINDS, build_osmp
 
-        if _models(args.models) != ["sfm"] or not args.scenario:
-            raise VeiInputError(None, "--osmp", "builds the rider only: vei fmu build sfm --osmp --scenario XOSC")
-        print(f"wrote {build_osmp_rider(args.scenario, Path(args.output), values)}")
+        models = _models(args.models)
+        if not args.scenario or any(m not in KINDS for m in models):
+            raise VeiInputError(None, "--osmp", "builds the rider (sfm) and the planner (cap) from a scenario: "
+                                "vei fmu build sfm cap --osmp --scenario XOSC")  # fmt: skip
+        for m in models:
+            print(f"wrote {build_osmp(m, args.scenario, Path(args.output), values)}")
         return 0
     for path in build_fmus(_models(args.models), args.output, args.backend, args.fmi, args.scenario, values).values():
         print(f"wrote {path}")
@@ -1005,8 +1008,9 @@ def build_parser() -> argparse.ArgumentParser:
     fb.add_argument(
         "--osmp",
         action="store_true",
-        help="the rider (sfm) as an ASAM OSI traffic participant (OSMP: SensorView in, TrafficUpdate out), with "
-        "the --scenario's track and settings; a pythonfmu FMU that needs Python with vei-scenario to run",
+        help="the rider (sfm) or the planner with its vehicle (cap) as an ASAM OSI traffic participant (OSMP: "
+        "SensorView in, TrafficUpdate out), with the --scenario's values; pythonfmu FMUs that need Python with "
+        "vei-scenario to run",
     )
     fb.set_defaults(func=_cmd_fmu_build)
     fs = fsub.add_parser("system", help="the scenario's closed loop (ego + scooter + planner) as an SSP 1.0 package")

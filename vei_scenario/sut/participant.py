@@ -106,6 +106,8 @@ class OsmpController:
                 obj.base.velocity.x, obj.base.velocity.y = o.speed * c, o.speed * s
                 obj.base.acceleration.x, obj.base.acceleration.y = o.accel * c, o.accel * s
             obj.id.value = i
+            ref = obj.source_reference.add()  # (which entity it is, by the scenario's name)
+            ref.type, ref.identifier[:] = "net.asam.openscenario", [n]
             b = obj.base
             b.dimension.length, b.dimension.width, b.dimension.height = length, width, o.height
             b.position.x, b.position.y, b.position.z = x, y, 0.5 * o.height
