@@ -26,7 +26,7 @@ def fmus(tmp_path_factory) -> dict[str, Path]:
 
 
 def test_the_loop_holds_every_rider(multi):
-    loop = closed_loop(multi)
+    loop = closed_loop(multi, leave_out=("ped_1",))
     assert loop.components == ("ego", "cap", "sfm", "sfm_scooter_1", "sfm_scooter_3")
     assert loop.entities["sfm"] == "scooter_2" and loop.entities["sfm_scooter_1"] == "scooter_1"
     assert loop.parameters["sfm_scooter_1"]["rider_type"] == "replay"
@@ -38,7 +38,7 @@ def test_the_loop_holds_every_rider(multi):
 
 
 def test_the_ssp_package_has_a_component_per_rider(multi, tmp_path):
-    ssp = build_system(multi, tmp_path / "loop.ssp")
+    ssp = build_system(multi, tmp_path / "loop.ssp", leave_out=("ped_1",))
     with zipfile.ZipFile(ssp) as z:
         root = etree.fromstring(z.read("SystemStructure.ssd"))
         names = sorted(n for n in z.namelist() if n.startswith("resources/"))
@@ -58,7 +58,7 @@ def test_every_rider_reproduces_vei_run_while_it_plays_its_track(multi, fmus, va
     """Within 1e-6 m: the ego and the threat over the whole run; each other rider while vei run plays
     its recorded track. After it, vei run drives it on along its lane (esmini's default), which the
     rider FMU does not model: the loop says so in its notes."""
-    rep = cosimulate(multi, "fmpy", values, 0.01, coupling, fmus=fmus)
+    rep = cosimulate(multi, "fmpy", values, 0.01, coupling, fmus=fmus, leave_out=("ped_1",))
     assert rep.max_deviation_m["ego"] <= 1e-6 and rep.max_deviation_m["sfm"] <= 1e-6, rep.max_deviation_m
     run = run_scenario(multi, values, 0.01, coupling=coupling)
     t = np.asarray(run.t)
@@ -69,6 +69,15 @@ def test_every_rider_reproduces_vei_run_while_it_plays_its_track(multi, fmus, va
         assert any(n.startswith(f"{rep.loop.entities[comp]}'s track ends at {end:.2f} s") for n in rep.loop.notes)
     if values.get("RiderType") == "aggressive":  # (the threat rides: it is not a replay)
         assert rep.loop.parameters["sfm"]["rider_type"] == "aggressive"
+
+
+def test_a_road_user_that_is_no_rider_is_refused_unless_left_out(multi):
+    from vei_scenario.errors import VeiInputError
+
+    with pytest.raises(VeiInputError, match=r"ped_1: a pedestrian is no rider: .* --leave-out ped_1 leaves it out"):
+        closed_loop(multi)
+    with pytest.raises(VeiInputError, match=r"--leave-out: no entity 'bob'"):
+        closed_loop(multi, leave_out=("ped_1", "bob"))
 
 
 def test_the_case_study_loop_is_unchanged(compiled):

@@ -309,7 +309,8 @@ def _cmd_fmu_system(args: argparse.Namespace) -> int:
     from vei_scenario.fmu import build_system
     from vei_scenario.runner import parse_param_overrides
 
-    path = build_system(args.scenario, args.output, parse_param_overrides(args.param), args.dt, args.backend, args.fmi)
+    path = build_system(args.scenario, args.output, parse_param_overrides(args.param), args.dt, args.backend, args.fmi,
+                        tuple(args.leave_out))  # fmt: skip
     print(f"wrote {path}")
     return 0
 
@@ -320,8 +321,9 @@ def _cmd_fmu_cosim(args: argparse.Namespace) -> int:
     from vei_scenario.runner import parse_param_overrides
 
     rep = cosimulate(
-        args.scenario, args.engine, parse_param_overrides(args.param), args.dt, args.coupling, args.backend, args.fmi
-    )
+        args.scenario, args.engine, parse_param_overrides(args.param), args.dt, args.coupling, args.backend, args.fmi,
+        leave_out=tuple(args.leave_out),
+    )  # fmt: skip
     dev = ", ".join(f"{k} {v:.3g} m" for k, v in rep.max_deviation_m.items())
     print(f"{args.engine} ({rep.coupling} coupling, {rep.steps} steps): largest deviation from vei run: {dev}")
     for note in rep.loop.notes:
@@ -1020,6 +1022,14 @@ def build_parser() -> argparse.ArgumentParser:
     fs.add_argument("--dt", type=DT, default=0.01, help="communication step in s (default 0.01)")
     fs.add_argument("--backend", choices=("native", "python"), default="native", help=BACKEND_HELP)
     fs.add_argument("--fmi", type=int, choices=(2, 3), default=2, help="FMI version of the FMUs (default 2)")
+    fs.add_argument(
+        "--leave-out",
+        action="append",
+        default=[],
+        metavar="ENTITY",
+        help="a road user that is no rider, left out of the loop (it replays its track; nothing in the loop "
+        "reacts to it)",
+    )
     fs.set_defaults(func=_cmd_fmu_system)
     fc = fsub.add_parser("cosim", help="run the closed loop in a co-simulation engine and compare it with vei run")
     fc.add_argument("scenario", help="vei-compiled OpenSCENARIO file (.xosc)")
@@ -1034,6 +1044,14 @@ def build_parser() -> argparse.ArgumentParser:
     fc.add_argument("--dt", type=DT, default=0.01, help="communication step in s (default 0.01)")
     fc.add_argument("--backend", choices=("native", "python"), default="native", help=BACKEND_HELP)
     fc.add_argument("--fmi", type=int, choices=(2, 3), default=2, help="FMI version of the FMUs (default 2)")
+    fc.add_argument(
+        "--leave-out",
+        action="append",
+        default=[],
+        metavar="ENTITY",
+        help="a road user that is no rider, left out of the loop (it replays its track; nothing in the loop "
+        "reacts to it)",
+    )
     fc.add_argument("--tolerance", type=_number(0, 1e6), default=1e-6, help="exit 1 above this deviation in m (1e-6)")
     fc.add_argument("-o", "--output", help="write the co-simulated trajectories (CSV) here")
     fc.set_defaults(func=_cmd_fmu_cosim)

@@ -96,8 +96,12 @@ class ClosedLoop:
         return n
 
 
-def closed_loop(scenario: str | Path, values: dict[str, str] | None = None, dt: float = 0.01) -> ClosedLoop:
-    """The closed loop of ``scenario`` with parameter overrides ``values`` at step ``dt``."""
+def closed_loop(
+    scenario: str | Path, values: dict[str, str] | None = None, dt: float = 0.01, leave_out: tuple[str, ...] = ()
+) -> ClosedLoop:
+    """The closed loop of ``scenario`` with parameter overrides ``values`` at step ``dt``. A road user
+    that is no rider is refused in one line, unless ``leave_out`` names it (``--leave-out``): it only
+    replays its track and nothing in the loop reacts to it, so it can be left out, said in a note."""
     from vei_scenario.checks import check_dt
     from vei_scenario.loop import LoopScene, NotALoop
 
@@ -115,10 +119,18 @@ def closed_loop(scenario: str | Path, values: dict[str, str] | None = None, dt: 
         if n in (b.ego, b.threat):
             continue
         kind, category, object_type = b.entity_kinds[n]
+        what = f"{n} (a {object_type or category or kind})"
         if kind == "vehicle" and (category in RIDER_CATEGORIES or object_type.lower() in SCOOTER_TYPES):
             others.append(n)
+        elif n in leave_out:
+            left_out.append(what)
         else:
-            left_out.append(f"{n} (a {object_type or category or kind})")
+            kind_text = f"a {object_type or category or kind}"
+            raise VeiInputError(scenario, n, f"{kind_text} is no rider: the FMU loop holds the ego and riders "
+                                f"(it only replays its track: --leave-out {n} leaves it out)")  # fmt: skip
+    unknown = sorted(set(leave_out) - set(b.names))
+    if unknown:
+        raise VeiInputError(scenario, "--leave-out", f"no entity {unknown[0]!r} (entities: {', '.join(b.names)})")
     if values and not b.accepts(values):  # the interpreter's loader says exactly what is wrong with them
         from vei_scenario.interpreter.document import load_scenario
 
