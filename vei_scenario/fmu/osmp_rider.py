@@ -243,8 +243,13 @@ def build_osmp(model: str, scenario: str | Path, out_dir: Path, values: dict[str
         raise VeiInputError(None, "--osmp", "needs pythonfmu: pip install pythonfmu") from None
     from vei_scenario.fmu.packaging import write_fmu
     from vei_scenario.fmu.system import closed_loop
+    from vei_scenario.loop import LoopScene, NotALoop
 
-    loop = closed_loop(scenario, values)
+    try:  # (the other road users are the host's to show: none of them is packed)
+        names = tuple(LoopScene(scenario).names)
+    except NotALoop:
+        names = ()  # (closed_loop says why)
+    loop = closed_loop(scenario, values, leave_out=names)
     text = json.dumps(_values(loop, model), sort_keys=True)
     # the model identifier names the scenario's values: pythonfmu's runtime imports the FMU's script by
     # that name, so two of these FMUs hosted in one process would otherwise share (and free) one module
