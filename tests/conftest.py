@@ -13,6 +13,9 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLES = ROOT / "examples"
+#: Test partners kept as received under data/ bring their own tests (run through tests/test_osmp.py).
+collect_ignore_glob = ["data/*/test_*.py"]
+
 EXAMPLE_NAMES = ("case_study", "multi_scooter", "no_map", "stop_and_go")
 #: The reference material beside the checkout (esmini/ with its examples and roads, osc-ncap/: the Euro NCAP
 #: pack), or a folder named by ``$VEI_SHARED``; tests that need it skip where it is absent.

@@ -320,6 +320,16 @@ def _cmd_fmu_build(args: argparse.Namespace) -> int:
     from vei_scenario.runner import parse_param_overrides
 
     values = parse_param_overrides(args.param) if args.scenario else None
+    if args.osmp:
+        from vei_scenario.fmu.osmp_rider import KINDS, build_osmp
+
+        models = _models(args.models)
+        if not args.scenario or any(m not in KINDS for m in models):
+            raise VeiInputError(None, "--osmp", "builds the rider (sfm) and the planner (cap) from a scenario: "
+                                "vei fmu build sfm cap --osmp --scenario XOSC")  # fmt: skip
+        for m in models:
+            print(f"wrote {build_osmp(m, args.scenario, Path(args.output), values)}")
+        return 0
     for path in build_fmus(_models(args.models), args.output, args.backend, args.fmi, args.scenario, values).values():
         print(f"wrote {path}")
     return 0
@@ -329,7 +339,8 @@ def _cmd_fmu_system(args: argparse.Namespace) -> int:
     from vei_scenario.fmu import build_system
     from vei_scenario.runner import parse_param_overrides
 
-    path = build_system(args.scenario, args.output, parse_param_overrides(args.param), args.dt, args.backend, args.fmi)
+    path = build_system(args.scenario, args.output, parse_param_overrides(args.param), args.dt, args.backend, args.fmi,
+                        tuple(args.leave_out))  # fmt: skip
     print(f"wrote {path}")
     return 0
 
@@ -340,10 +351,13 @@ def _cmd_fmu_cosim(args: argparse.Namespace) -> int:
     from vei_scenario.runner import parse_param_overrides
 
     rep = cosimulate(
-        args.scenario, args.engine, parse_param_overrides(args.param), args.dt, args.coupling, args.backend, args.fmi
-    )
+        args.scenario, args.engine, parse_param_overrides(args.param), args.dt, args.coupling, args.backend, args.fmi,
+        leave_out=tuple(args.leave_out),
+    )  # fmt: skip
     dev = ", ".join(f"{k} {v:.3g} m" for k, v in rep.max_deviation_m.items())
     print(f"{args.engine} ({rep.coupling} coupling, {rep.steps} steps): largest deviation from vei run: {dev}")
+    for note in rep.loop.notes:
+        print(f"note: {note}")
     if args.output:
         print(f"wrote {write_record_csv(rep.record, rep.loop, Path(args.output))}")
     worst = max(rep.max_deviation_m.values())
@@ -1065,6 +1079,13 @@ def build_parser() -> argparse.ArgumentParser:
         help="vei-compiled scenario whose values become the FMUs' start values (and stop time)",
     )
     fb.add_argument("--param", action="append", default=[], metavar="NAME=VALUE", help="override a scenario parameter")
+    fb.add_argument(
+        "--osmp",
+        action="store_true",
+        help="the rider (sfm) or the planner with its vehicle (cap) as an ASAM OSI traffic participant (OSMP: "
+        "SensorView in, TrafficUpdate out), with the --scenario's values; pythonfmu FMUs that need Python with "
+        "vei-scenario to run",
+    )
     fb.set_defaults(func=_cmd_fmu_build)
     fs = fsub.add_parser("system", help="the scenario's closed loop (ego + scooter + planner) as an SSP 1.0 package")
     fs.add_argument("scenario", help="vei-compiled OpenSCENARIO file (.xosc)")
@@ -1073,6 +1094,14 @@ def build_parser() -> argparse.ArgumentParser:
     fs.add_argument("--dt", type=DT, default=0.01, help="communication step in s (default 0.01)")
     fs.add_argument("--backend", choices=("native", "python"), default="native", help=BACKEND_HELP)
     fs.add_argument("--fmi", type=int, choices=(2, 3), default=2, help="FMI version of the FMUs (default 2)")
+    fs.add_argument(
+        "--leave-out",
+        action="append",
+        default=[],
+        metavar="ENTITY",
+        help="a road user that is no rider, left out of the loop (it replays its track; nothing in the loop "
+        "reacts to it)",
+    )
     fs.set_defaults(func=_cmd_fmu_system)
     fc = fsub.add_parser("cosim", help="run the closed loop in a co-simulation engine and compare it with vei run")
     fc.add_argument("scenario", help="vei-compiled OpenSCENARIO file (.xosc)")
@@ -1087,6 +1116,14 @@ def build_parser() -> argparse.ArgumentParser:
     fc.add_argument("--dt", type=DT, default=0.01, help="communication step in s (default 0.01)")
     fc.add_argument("--backend", choices=("native", "python"), default="native", help=BACKEND_HELP)
     fc.add_argument("--fmi", type=int, choices=(2, 3), default=2, help="FMI version of the FMUs (default 2)")
+    fc.add_argument(
+        "--leave-out",
+        action="append",
+        default=[],
+        metavar="ENTITY",
+        help="a road user that is no rider, left out of the loop (it replays its track; nothing in the loop "
+        "reacts to it)",
+    )
     fc.add_argument("--tolerance", type=_number(0, 1e6), default=1e-6, help="exit 1 above this deviation in m (1e-6)")
     fc.add_argument("-o", "--output", help="write the co-simulated trajectories (CSV) here")
     fc.set_defaults(func=_cmd_fmu_cosim)

@@ -72,11 +72,13 @@ def build_system(
     dt: float = 0.01,
     backend: str = "native",
     fmi: int = 2,
+    leave_out: tuple[str, ...] = (),
 ) -> Path:
-    """The closed loop of ``scenario`` (with parameter overrides) as an SSP package at ``out``."""
+    """The closed loop of ``scenario`` (with parameter overrides) as an SSP package at ``out``;
+    ``leave_out``: road users that are no riders, left out of it."""
     from vei_scenario.fmu.system import closed_loop, write_ssp
 
-    loop = closed_loop(scenario, values, dt)
+    loop = closed_loop(scenario, values, dt, tuple(leave_out))
     with tempfile.TemporaryDirectory(prefix="vei-ssp-") as tmp:
         fmus = build_fmus(list(MODELS), tmp, backend, fmi)
         return write_ssp(loop, fmus, Path(out))
@@ -101,6 +103,7 @@ def cosimulate(
     backend: str = "native",
     fmi: int = 2,
     fmus: dict[str, Path] | None = None,
+    leave_out: tuple[str, ...] = (),
 ) -> CosimReport:
     """Run the closed loop of ``scenario`` in ``engine`` and compare it with ``vei run`` under the same
     coupling (fmpy: sequential by default, or jacobi; libcosim: jacobi, its fixed-step algorithm).
@@ -114,7 +117,7 @@ def cosimulate(
     coupling = coupling or ("jacobi" if engine == "libcosim" else "sequential")
     if engine == "libcosim" and coupling != "jacobi":
         raise VeiInputError(None, "--coupling", "libcosim's fixed-step algorithm couples Jacobi-style only")
-    loop = closed_loop(scenario, values, dt)
+    loop = closed_loop(scenario, values, dt, tuple(leave_out))
     tmp = Path(tempfile.mkdtemp(prefix="vei-cosim-"))
     try:
         fmus = fmus or build_fmus(list(MODELS), tmp, backend, fmi)

@@ -16,10 +16,17 @@ from pathlib import Path
 import numpy as np
 
 from vei_scenario.errors import VeiInputError
-from vei_scenario.fmu.system import CONNECTIONS, SEQUENTIAL_ORDER, ClosedLoop
+from vei_scenario.fmu.system import ClosedLoop, model_of
 from vei_scenario.fmu.variables import SPECS
 
 RECORDED = {"ego": ("x", "y", "yaw", "speed", "accel"), "sfm": ("x", "y", "yaw", "speed", "accel"), "cap": ("a_cmd",)}
+
+
+def recorded(comp: str) -> tuple[str, ...]:
+    """The outputs recorded of a component (every rider's as the threat's)."""
+    return RECORDED[model_of(comp)]
+
+
 COUPLINGS = ("sequential", "jacobi")
 
 
@@ -30,7 +37,7 @@ class FmuInstance:
     def __init__(self, comp: str, fmu: Path, params: dict, workdir: Path) -> None:
         from fmpy import extract, read_model_description
 
-        self.comp, self.spec = comp, SPECS[comp]
+        self.comp, self.spec = comp, SPECS[model_of(comp)]
         md = read_model_description(str(fmu))
         self.fmi3 = md.fmiVersion.startswith("3")
         unzip = extract(str(fmu), unzipdir=str(workdir / comp))
@@ -148,13 +155,15 @@ def run_fmpy(
     slaves: dict[str, FmuInstance] = {}
     comp = ""
     try:
-        for comp in ("ego", "cap", "sfm"):
-            slaves[comp] = FmuInstance(comp, fmus[comp], loop.parameters[comp], work)
-        links = [(slaves[a], slaves[a].out_index[o], slaves[b], slaves[b].in_index[i]) for a, o, b, i in CONNECTIONS]
+        for comp in loop.components:
+            slaves[comp] = FmuInstance(comp, fmus[model_of(comp)], loop.parameters[comp], work)
+        links = [
+            (slaves[a], slaves[a].out_index[o], slaves[b], slaves[b].in_index[i]) for a, o, b, i in loop.connections
+        ]
         into: dict[str, list] = {c: [x for x in links if x[2].comp == c] for c in slaves}
         n, h = loop.steps, loop.dt
-        rec = {c: {q: np.empty(n + 1) for q in RECORDED[c]} for c in slaves}
-        idx = {c: [(q, slaves[c].out_index[q]) for q in RECORDED[c]] for c in slaves}
+        rec = {c: {q: np.empty(n + 1) for q in recorded(c)} for c in slaves}
+        idx = {c: [(q, slaves[c].out_index[q]) for q in recorded(c)] for c in slaves}
 
         def record(k: int, c: str, out) -> None:
             for q, i in idx[c]:
@@ -175,7 +184,7 @@ def run_fmpy(
                 for c, s in slaves.items():
                     record(k + 1, c, s.get())
             else:
-                for c in SEQUENTIAL_ORDER:
+                for c in loop.sequential_order:
                     s = slaves[comp := c]
                     for a, ia, b, ib in into[c]:
                         b._in_val[ib] = a._out_val[ia]
@@ -204,29 +213,29 @@ def run_libcosim(ssp: Path, loop: ClosedLoop) -> dict[str, dict[str, np.ndarray]
     ex = CosimExecution.from_ssp_file(str(ssp), step_size=round(loop.dt * 1e9))  # ns
     obs = CosimObserver.create_last_value()
     ex.add_observer(obs)
-    index = {c: ex.slave_index_from_instance_name(c) for c in ("ego", "cap", "sfm")}
-    refs = {c: [SPECS[c].vr(q) for q in RECORDED[c]] for c in index}
+    index = {c: ex.slave_index_from_instance_name(c) for c in loop.components}
+    refs = {c: [SPECS[model_of(c)].vr(q) for q in recorded(c)] for c in index}
     n = loop.steps
-    rec = {c: {q: np.empty(n + 1) for q in RECORDED[c]} for c in index}
+    rec = {c: {q: np.empty(n + 1) for q in recorded(c)} for c in index}
     initial = {"x": "x0", "y": "y0", "yaw": "yaw0", "speed": "speed0"}
-    for c in ("ego", "sfm"):
-        for q in RECORDED[c]:
+    for c in ("ego", *loop.riders):
+        for q in recorded(c):
             rec[c][q][0] = loop.parameters[c].get(initial.get(q, ""), 0.0)
     rec["cap"]["a_cmd"][0] = 0.0
     for k in range(n):
         ex.step()
         for c, i in index.items():
-            for q, v in zip(RECORDED[c], obs.last_real_values(i, refs[c])):
+            for q, v in zip(recorded(c), obs.last_real_values(i, refs[c])):
                 rec[c][q][k + 1] = v
     ex.stop()
     return rec
 
 
 def compare_with_run(rec: dict[str, dict[str, np.ndarray]], run, loop: ClosedLoop) -> dict[str, float]:
-    """Largest position difference (m) per entity between a co-simulation record and a ``vei run``
-    :class:`RunResult`, over their common communication points."""
+    """Largest position difference (m) per moving component (ego and every rider) between a
+    co-simulation record and a ``vei run`` :class:`RunResult`, over their common communication points."""
     out = {}
-    for comp in ("ego", "sfm"):
+    for comp in ("ego", *loop.riders):
         tr = run.traces[loop.entities[comp]]
         n = min(tr.x.size, rec[comp]["x"].size)
         out[comp] = float(np.max(np.hypot(tr.x[:n] - rec[comp]["x"][:n], tr.y[:n] - rec[comp]["y"][:n])))
@@ -245,10 +254,11 @@ COLUMN_NAMES = {
 
 
 def record_csv(rec: dict[str, dict[str, np.ndarray]], dt: float) -> str:
-    """The co-simulated trajectories as CSV: ``time_s``, then ``component.quantity_unit`` columns, with
-    the precision of trajectories.csv (times to the millisecond, or as many decimals as ``dt`` needs;
-    values to six decimals, no negative zeros)."""
-    cols = [(c, q) for c in ("ego", "sfm", "cap") for q in RECORDED[c]]
+    """The co-simulated trajectories as CSV: ``time_s``, then ``component.quantity_unit`` columns (the
+    ego, every rider, the planner), with the precision of trajectories.csv (times to the millisecond, or
+    as many decimals as ``dt`` needs; values to six decimals, no negative zeros)."""
+    riders = [c for c in rec if model_of(c) == "sfm"]
+    cols = [(c, q) for c in ("ego", *riders, "cap") for q in recorded(c)]
     n = rec["ego"]["x"].size
     t_digits = max(3, -math.floor(math.log10(dt) + 1e-9)) if dt > 0 else 3
     lines = ["time_s," + ",".join(f"{c}.{COLUMN_NAMES[q]}" for c, q in cols)]

@@ -9,6 +9,7 @@ table is written with those numbers) and re-pack the archive reproducibly.
 from __future__ import annotations
 
 import io
+import subprocess
 import sys
 import tempfile
 import zipfile
@@ -33,19 +34,22 @@ class {identifier}(VeiSlave):
 
 def build_python(spec: ModelSpec, out_dir: Path) -> Path:
     try:
-        from pythonfmu.builder import FmuBuilder
+        import pythonfmu  # noqa: F401
     except ImportError:
         raise VeiInputError(None, "--backend python", "needs pythonfmu: pip install pythonfmu") from None
     with tempfile.TemporaryDirectory(prefix="vei-pyfmu-") as tmp:
         script = Path(tmp) / f"{spec.identifier}.py"
         script.write_text(_SCRIPT.format(title=spec.title, identifier=spec.identifier, name=spec.name))
-        try:
-            built = FmuBuilder.build_FMU(script, dest=Path(tmp) / "out")
-        finally:  # pythonfmu imports the script by module name: forget it so a rebuild finds the new one
-            sys.modules.pop(spec.identifier, None)
-            if str(script.parent) in sys.path:
-                sys.path.remove(str(script.parent))
-        with zipfile.ZipFile(io.BytesIO(Path(built).read_bytes())) as zf:
+        # in a child process: pythonfmu's builder imports the script and its own package, and in a process
+        # that has hosted a pythonfmu FMU those can be the FMU's copies (without the binaries to pack)
+        out = Path(tmp) / "out"
+        command = [sys.executable, "-m", "pythonfmu", "build", "-f", str(script), "-d", str(out)]
+        done = subprocess.run(command, capture_output=True, text=True, cwd=tmp)
+        if done.returncode != 0:
+            why = " ".join((done.stderr or done.stdout).strip().splitlines()[-1:]) or f"exit {done.returncode}"
+            raise VeiInputError(None, "--backend python", f"pythonfmu could not build {spec.identifier}: {why}")
+        built = out / f"{spec.identifier}.fmu"
+        with zipfile.ZipFile(io.BytesIO(built.read_bytes())) as zf:
             entries = {n: zf.read(n) for n in zf.namelist() if not n.endswith("/")}
     guid = model_description.guid(spec, "python-fmi2")
     entries["modelDescription.xml"] = model_description.fmi2(

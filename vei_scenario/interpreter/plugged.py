@@ -139,6 +139,10 @@ def scenario_controller(name: str, props: dict[str, str], el, ctx) -> PluggedCon
     found from the scenario's directory)."""
     base = str(Path(str(ctx.path)).resolve().parent) if ctx.path else ""
     spec = ControllerSpec("", props[MODULE_PROPERTY], base=base)
+    if spec.osmp:  # an OSI traffic participant moves its entity itself
+        from vei_scenario.sut.participant import scenario_participant
+
+        return scenario_participant(name, props, ctx, spec, _owner(el))
     return PluggedController(name, props, el, ctx, spec, _owner(el))
 
 
@@ -162,6 +166,11 @@ def plug(ctx, specs: tuple[ControllerSpec, ...], scenario: object) -> None:
         if e is None:
             names = ", ".join(ctx.entities)
             raise VeiInputError(scenario, "--controller", f"no entity {spec.entity!r} (entities: {names})")
+        if spec.osmp:  # an OSI traffic participant moves its entity itself
+            from vei_scenario.sut.participant import plug_osmp
+
+            plug_osmp(ctx, spec, e)
+            continue
         props: dict[str, str] = {}
         for c in e.controllers.values():
             props.update(c.props)

@@ -81,6 +81,8 @@ class LoopScene:
         self.types = dict(doc.parameter_types)
         self._valid_values: set[tuple[str, str]] = set()
         self.names = list(ctx.entities)
+        #: per entity: (ScenarioObject kind, category, object type), what the FMU loop's riders are checked by
+        self.entity_kinds = {n: (e.kind, e.category, e.object_type) for n, e in ctx.entities.items()}
         self.ego, self.threat = sim.ego, sim.threat
         if self.ego != self.names[0] or self.threat is None:
             raise NotALoop("the ego must be the first entity and the planner must name a threat")

@@ -75,8 +75,10 @@ class ControllerSpec:
         if "class" not in self._loaded:
             if self.kind == "fmu":
                 from vei_scenario.sut.fmu import check_parameters, read_ports
+                from vei_scenario.sut.osmp import is_osmp, read_osmp_ports
 
-                ports = read_ports(self._fmu_path(), self.label)
+                path = self._fmu_path()
+                ports = read_osmp_ports(path, self.label) if is_osmp(path) else read_ports(path, self.label)
                 check_parameters(ports, dict(self.parameters), self.label)
                 self._loaded["class"], self._loaded["file"] = ports, ports.path
             else:
@@ -90,12 +92,23 @@ class ControllerSpec:
         properties = {**properties, **dict(self.parameters)}
         if self.kind == "fmu":
             from vei_scenario.sut.fmu import FmuController
+            from vei_scenario.sut.osmp import OsmpParticipant, OsmpPorts
 
+            if isinstance(loaded, OsmpPorts):
+                return OsmpParticipant(loaded, label, properties)
             return FmuController(loaded, label, properties)
         try:
             return loaded(**properties)
         except Exception as exc:  # noqa: BLE001 (the user's code: any failure is theirs, said in one line)
             raise ControllerFault(label, f"constructing {loaded.__name__} raised {describe_exception(exc)}") from None
+
+    @property
+    def osmp(self) -> bool:
+        """Whether it is an OSMP traffic participant (an FMU with OSMP's annotations): it moves its
+        entity itself, from the ``osi3.TrafficUpdate`` it returns."""
+        from vei_scenario.sut.osmp import OsmpPorts
+
+        return self.kind == "fmu" and isinstance(self.load(), OsmpPorts)
 
     @property
     def file(self) -> Path | None:

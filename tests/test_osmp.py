@@ -1,0 +1,327 @@
+"""OSMP traffic participants (ASAM OSI Sensor Model Packaging FMUs) as the controller of an entity.
+
+The partners in tests/data/osmp/ were written from the OSMP specification and the OSI messages alone,
+without reading vei's code (their sources, build script, README with the expected reports and their
+own minimal host are beside them): what an integrator would bring.
+"""
+
+from __future__ import annotations
+
+import ctypes
+import math
+import shutil
+import zipfile
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from vei_scenario.cli import main
+from vei_scenario.interpreter import run_scenario
+from vei_scenario.sut import ControllerFault, parse_controller_options
+
+DATA = Path(__file__).parent / "data" / "osmp"
+STANDING = DATA / "standing_car.xosc"
+
+
+@pytest.fixture(scope="module")
+def scenario(compiled) -> Path:
+    return next(p for p in compiled["case_study"].written if p.name == "scenario.xosc")
+
+
+def _vei(capsys, *argv) -> tuple[int, str, str]:
+    code = main([str(a) for a in argv])
+    out = capsys.readouterr()
+    return code, out.out, out.err
+
+
+def _standing(gap_m: float, lateral_m: float = 0.0, yaw: float = 0.4, speed: float = 20.0, end: float = 3.0):
+    """The parameters that put the standing car ``gap_m`` ahead of the ego's front (box to box) and
+    ``lateral_m`` to its left, both at heading ``yaw`` (the cars are 4.5 m long)."""
+    along = gap_m + 4.5
+    c, s = math.cos(yaw), math.sin(yaw)
+    return {"EgoSpeed": speed, "EgoYaw": yaw, "LeadX": along * c - lateral_m * s, "LeadY": along * s + lateral_m * c,
+            "EndTime": end}  # fmt: skip
+
+
+@pytest.mark.parametrize("speed", [None, "7.5"])
+def test_straight_line_goes_its_speed_along_its_first_heading(scenario, speed):
+    """Analytic: after T s the host is speed_mps·T further along its initial heading, yaw unchanged."""
+    specs = parse_controller_options([f"Ego={DATA}/StraightLine.fmu"], [f"speed_mps={speed}"] if speed else None)
+    r = run_scenario(scenario, controllers=specs)
+    tr, t = r.traces["Ego"], np.asarray(r.t)
+    v = float(speed or 10.0)
+    yaw0 = tr.yaw[0]
+    assert t[-1] > 20
+    assert np.max(np.abs(np.asarray(tr.yaw) - yaw0)) == 0.0
+    err = np.hypot(tr.x - (tr.x[0] + v * t * math.cos(yaw0)), tr.y - (tr.y[0] + v * t * math.sin(yaw0)))
+    assert err.max() < 1e-9
+    assert np.allclose(tr.speed[1:], v, atol=1e-12)
+
+
+def test_simple_aeb_brakes_where_the_partners_analysis_says():
+    """v0 = 20 m/s, gap 60.1 m, dt 0.02 s: braking starts at the first step k with gap0 − v0·dt·k <
+    2·v0 (k = 51, t = 1.02 s); at 6 m/s² the speed 1.00 s later is 14.00 m/s."""
+    specs = parse_controller_options([f"Ego={DATA}/SimpleAebOsmp.fmu"])
+    r = run_scenario(STANDING, _standing(60.1), dt=0.02, controllers=specs)
+    tr, t = r.traces["Ego"], np.asarray(r.t)
+    v = np.asarray(tr.speed)
+    first = int(np.argmax(v < 20.0))  # the first sample after a braking step
+    assert t[first - 1] == pytest.approx(1.02, abs=1e-12)
+    j = np.arange(first - 1, first + 50)  # 1 s of braking at 6 m/s²
+    assert np.max(np.abs(v[j] - (20.0 - 6.0 * (t[j] - 1.02)))) < 1e-9
+    assert v[first + 49] == pytest.approx(14.0, abs=1e-9)
+    # before braking, 20 m/s along the heading 0.4 rad from the origin
+    d = np.hypot(tr.x[:first], tr.y[:first])
+    assert np.max(np.abs(d - 20.0 * t[:first])) < 1e-9
+    assert np.max(np.abs(np.arctan2(tr.y[1:first], tr.x[1:first]) - 0.4)) < 1e-12
+
+
+@pytest.mark.parametrize(("lateral", "brakes"), [(2.0, True), (2.1, False), (-2.0, True)])
+def test_simple_aeb_corridor_edge(lateral, brakes):
+    """The corridor is the host's width + 0.5 m: a parallel car overlaps it iff |offset| ≤ 2.05 m;
+    otherwise it keeps 20 m/s exactly (60 m in 3 s)."""
+    specs = parse_controller_options([f"Ego={DATA}/SimpleAebOsmp.fmu"])
+    r = run_scenario(STANDING, _standing(60.1, lateral), dt=0.02, controllers=specs)
+    tr = r.traces["Ego"]
+    assert bool(min(tr.speed) < 20.0) is brakes
+    if not brakes:
+        k = int(np.argmin(np.abs(np.asarray(r.t) - 3.0)))
+        assert math.hypot(tr.x[k], tr.y[k]) == pytest.approx(60.0, abs=1e-9)
+
+
+BAD = {
+    # partner: (exit code, the whole line after "vei: error: controller Ego=<path>")
+    "WrongMime": (2, ": WrongMime.fmu: modelDescription.xml line 16: OSMPSensorViewIn: MIME type says "
+                     "type=SensorData, OSMP requires type=SensorView for this variable"),
+    "ZeroSize": (1, " at t = 0.00 s: no TrafficUpdate produced (OSMPTrafficUpdateOut has size 0)"),
+    "WrongId": (1, " at t = 0.00 s: the TrafficUpdate is for id 1 (scooter_1), not the host's id 0 (Ego)"),
+    "NeverWrites": (1, " at t = 0.00 s: no TrafficUpdate produced (OSMPTrafficUpdateOut has a null address)"),
+}  # fmt: skip
+
+
+@pytest.mark.parametrize("name", sorted(BAD))
+def test_bad_partners_are_one_line_and_nothing_is_written(scenario, tmp_path, capsys, name):
+    code, out, err = _vei(capsys, "run", scenario, "--controller", f"Ego={DATA}/{name}.fmu", "-o", tmp_path / "r")
+    want_code, tail = BAD[name]
+    assert (code, err) == (want_code, f"vei: error: controller Ego={DATA}/{name}.fmu{tail}\n")
+    assert not (tmp_path / "r").exists()
+
+
+def _repacked(tmp_path: Path, source: Path, old: str, new: str) -> Path:
+    """A copy of ``source`` whose modelDescription.xml has ``old`` replaced by ``new``."""
+    out = tmp_path / source.name
+    with zipfile.ZipFile(source) as zin, zipfile.ZipFile(out, "w", zipfile.ZIP_DEFLATED) as zout:
+        for item in zin.infolist():
+            data = zin.read(item)
+            if item.filename == "modelDescription.xml":
+                assert old.encode() in data
+                data = data.replace(old.encode(), new.encode())
+            zout.writestr(item, data)
+    return out
+
+
+@pytest.mark.parametrize(
+    ("version", "reason"),
+    [("4.0.0", "OSI 4.0.0, this host speaks OSI 3."), ("3.99.0", "OSI 3.99.0 is newer than this host's OSI 3.")],
+)
+def test_an_osi_version_this_host_cannot_speak_is_refused_at_load(tmp_path, version, reason):
+    fmu = _repacked(tmp_path, DATA / "StraightLine.fmu", "type=SensorView; version=3.7.0",
+                    f"type=SensorView; version={version}")  # fmt: skip
+    with pytest.raises(ControllerFault, match="OSMPSensorViewIn: " + reason.replace(".", r"\.")):
+        parse_controller_options([f"Ego={fmu}"])
+
+
+def test_a_model_without_the_osmp_model_annotation_is_no_participant(tmp_path):
+    fmu = _repacked(tmp_path, DATA / "StraightLine.fmu", 'osi-version="3.7.0"', 'osi-version="3.7.0" x="net.pmsf.osmp"')
+    assert parse_controller_options([f"Ego={fmu}"])[0].osmp  # (the annotation is what counts, not the text)
+    fmu2 = tmp_path / "b" / "StraightLine.fmu"
+    fmu2.parent.mkdir()
+    ns = 'xmlns:osmp="http://xsd.pmsf.net/OSISensorModelPackaging">'
+    fmu2 = _repacked(fmu2.parent, DATA / "StraightLine.fmu", f"{ns}<osmp:osmp ", f"{ns}<osmp:other ")
+    with pytest.raises(ControllerFault, match=r"no <VendorAnnotations><Tool name=\"net.pmsf.osmp\">"):
+        parse_controller_options([f"Ego={fmu2}"])
+
+
+def test_a_malformed_traffic_update_is_one_line(monkeypatch, scenario):
+    """The output's bytes must decode as osi3.TrafficUpdate (a stub FMU hands out garbage)."""
+    from vei_scenario.sut import osmp
+
+    garbage = ctypes.create_string_buffer(b"\xff\xff\xff\xff\xff", 5)
+    lo, hi = osmp.split_address(ctypes.addressof(garbage))
+
+    class Stub:
+        def setInteger(self, vrs, values):
+            pass
+
+        def doStep(self, **kw):
+            pass
+
+        def getInteger(self, vrs):
+            return [lo, hi, 5]
+
+        def terminate(self):
+            pass
+
+        def freeInstance(self):
+            pass
+
+    specs = parse_controller_options([f"Ego={DATA}/StraightLine.fmu"])
+    real_init = osmp.OsmpParticipant.__init__
+
+    def init(self, *a, **kw):
+        real_init(self, *a, **kw)
+        self.fmu.terminate()
+        self.fmu.freeInstance()
+        self.fmu = Stub()
+
+    monkeypatch.setattr(osmp.OsmpParticipant, "__init__", init)
+    with pytest.raises(ControllerFault, match=r"at t = 0.00 s: OSMPTrafficUpdateOut: 5 bytes that are no osi3\.Tr"):
+        run_scenario(scenario, controllers=specs)
+
+
+def _recorded(monkeypatch, scenario, parameters=None, entity="Ego"):
+    """(SensorViews, TrafficCommands) given to StraightLine over a run, decoded."""
+    from osi3.osi_sensorview_pb2 import SensorView
+    from osi3.osi_trafficcommand_pb2 import TrafficCommand
+
+    from vei_scenario.sut import osmp
+
+    views, commands = [], []
+    real_step = osmp.OsmpParticipant.step
+
+    def step(self, view, command, *a, **kw):
+        views.append(SensorView.FromString(view))
+        commands.append(TrafficCommand.FromString(command) if command is not None else None)
+        return real_step(self, view, command, *a, **kw)
+
+    monkeypatch.setattr(osmp.OsmpParticipant, "step", step)
+    r = run_scenario(scenario, parameters, controllers=parse_controller_options([f"{entity}={DATA}/StraightLine.fmu"]))
+    return r, views, commands
+
+
+def test_the_sensor_view_holds_every_object_with_its_osi_type(monkeypatch, scenario):
+    from osi3.osi_object_pb2 import MovingObject
+
+    r, views, _ = _recorded(monkeypatch, scenario)
+    first = views[0]
+    gt = first.global_ground_truth
+    assert first.host_vehicle_id.value == gt.host_vehicle_id.value == 0
+    by_id = {m.id.value: m for m in gt.moving_object}
+    assert sorted(by_id) == [0, 1]
+    scooter = by_id[1]
+    assert scooter.type == MovingObject.TYPE_VEHICLE
+    assert scooter.vehicle_classification.type == MovingObject.VehicleClassification.TYPE_STANDUP_SCOOTER
+    assert by_id[0].vehicle_classification.type == MovingObject.VehicleClassification.TYPE_MEDIUM_CAR
+    assert gt.map_reference.endswith(".xodr")
+    # the host at each step's start is where the run recorded it (box centre)
+    tr = r.traces["Ego"]
+    for k in (0, 100, 1000):
+        host = next(m for m in views[k].global_ground_truth.moving_object if m.id.value == 0)
+        cx = tr.x[k] + math.cos(tr.yaw[k]) * tr.center_x
+        assert host.base.position.x == pytest.approx(cx, abs=1e-9)
+        assert views[k].timestamp.seconds + views[k].timestamp.nanos * 1e-9 == pytest.approx(r.t[k], abs=1e-9)
+
+
+def test_the_traffic_command_carries_the_storyboards_speed_actions(monkeypatch):
+    """following_brake.xosc: Ego's Init sets 10 m/s (a step); at a gap of 20 m the story asks for 5 m/s
+    over 2 s (linear), 0.5 s after that for 4 m/s (a step)."""
+    from osi3.osi_trafficcommand_pb2 import TrafficAction
+
+    _, _, commands = _recorded(monkeypatch, Path(__file__).parent / "data" / "following_brake.xosc")
+    told = [(k, a.speed_action) for k, c in enumerate(commands) for a in c.action if a.HasField("speed_action")]
+    assert [(a.absolute_target_speed, a.dynamics_shape, a.duration) for _, a in told] == [
+        (10.0, TrafficAction.DYNAMICS_SHAPE_STEP, 0.0),
+        (5.0, TrafficAction.DYNAMICS_SHAPE_LINEAR, 2.0),
+        (4.0, TrafficAction.DYNAMICS_SHAPE_STEP, 0.0),
+    ]
+    assert [a.action_header.action_id.value for _, a in told] == [1, 2, 3]
+    assert all(c.traffic_participant_id.value == 0 for c in commands)
+    assert told[0][0] == 0
+
+
+def test_a_sweep_hosts_the_participant_in_every_variant(scenario, tmp_path, capsys):
+    code, out, err = _vei(capsys, "sweep", scenario, "--vary", "TimeShift=0:1:1", "--workers", "2", "--quiet",
+                          "--controller", f"Ego={DATA}/StraightLine.fmu", "-o", tmp_path)  # fmt: skip
+    assert code == 0 and "2 variants (TimeShift): 0 collide (0 with the ego moving), 2 do not, 0 failed" in out
+
+
+def test_the_partners_own_host_agrees(tmp_path):
+    """The partners' own minimal host (host_alone.py) passes its analytic checks on this machine."""
+    import subprocess
+    import sys
+
+    shutil.copytree(DATA, tmp_path / "p")
+    done = subprocess.run([sys.executable, "host_alone.py"], cwd=tmp_path / "p", capture_output=True, text=True,
+                          timeout=300)  # fmt: skip
+    assert done.returncode == 0, done.stdout[-2000:] + done.stderr[-2000:]
+
+
+def test_the_same_run_gives_the_same_bytes(scenario, tmp_path, capsys):
+    for out in ("a", "b"):
+        code, _, _ = _vei(capsys, "run", scenario, "--controller", f"Ego={DATA}/SimpleAebOsmp.fmu",
+                          "--param", "TimeShift=2.197", "-o", tmp_path / out, "--no-plots")  # fmt: skip
+        assert code == 0
+    a, b = ((tmp_path / o / "trajectories.csv").read_bytes() for o in ("a", "b"))
+    assert a == b and b",osmp\n" in a
+
+
+def test_risk_hosts_the_participant(scenario, capsys):
+    """The AEB keeps its first speed and brakes at TTC < 2 s on its own speed: against the crossing
+    rider it collides where the rider comes late enough."""
+    code, out, _ = _vei(capsys, "risk", scenario, "--controller", f"Ego={DATA}/SimpleAebOsmp.fmu",
+                        "--window", "1:3", "--coarse", "0.5", "--tol", "0.1", "--workers", "1")  # fmt: skip
+    assert code == 0 and "collision : TimeShift +2.000..+3.000 s" in out
+
+
+def test_a_scenario_controller_naming_a_participant_drives_as_the_storyboard_activates(scenario, tmp_path):
+    """A Controller whose property ``module`` names an OSMP FMU (found from the scenario's directory):
+    in charge of both domains once activated (the case study activates the ego's with CapEnabled)."""
+    from lxml import etree
+
+    tree = etree.parse(str(scenario))
+    props = tree.find("Entities/ScenarioObject[@name='Ego']/ObjectController/Controller/Properties")
+    etree.SubElement(props, "Property", name="module", value="StraightLine.fmu")
+    etree.SubElement(props, "Property", name="speed_mps", value="4")
+    for f in scenario.parent.iterdir():
+        if f.suffix == ".xodr":
+            (tmp_path / f.name).write_bytes(f.read_bytes())
+    shutil.copy(DATA / "StraightLine.fmu", tmp_path)
+    path = tmp_path / "scenario.xosc"
+    tree.write(str(path))
+    on = run_scenario(path, {"CapEnabled": "true"})
+    ego = on.traces["Ego"]
+    steps = [k for k, s in enumerate(ego.status) if s == "osmp"]
+    assert steps and np.allclose(np.asarray(ego.speed)[steps], 4.0, atol=1e-12)
+    off = run_scenario(path, {"CapEnabled": "false"})  # never activated: the default controller drives
+    assert "osmp" not in off.traces["Ego"].status
+
+
+def test_the_sensor_view_holds_the_roads_lanes(monkeypatch, scenario):
+    """One OSI lane per OpenDRIVE lane and lane section (counted in the .xodr itself), ids after the
+    objects' and unique, centre lines sampled at most 2 m apart along the reference line (the points
+    counted from the .xodr's section lengths), neighbours each other's."""
+    from lxml import etree
+
+    _, views, _ = _recorded(monkeypatch, scenario)
+    gt = views[0].global_ground_truth
+    xodr = next(scenario.parent.glob("*.xodr"))
+    lanes, points = 0, 0
+    for road in etree.parse(str(xodr)).getroot().iterfind("road"):
+        sections = road.findall("lanes/laneSection")
+        starts = [float(sec.get("s")) for sec in sections] + [float(road.get("length"))]
+        for k, sec in enumerate(sections):
+            n = sum(1 for lane in sec.iterfind("*/lane") if int(lane.get("id")) != 0)
+            lanes += n
+            points += n * (
+                max(1, math.ceil((starts[k + 1] - starts[k] - (1e-9 if k + 1 < len(sections) else 0)) / 2.0)) + 1
+            )
+    assert len(gt.lane) == lanes > 100
+    assert sum(len(lane.classification.centerline) for lane in gt.lane) == points
+    ids = [lane.id.value for lane in gt.lane]
+    assert len(set(ids)) == len(ids) and min(ids) == len(gt.moving_object) + len(gt.stationary_object)
+    by_id = {lane.id.value: lane for lane in gt.lane}
+    for lane in gt.lane:
+        for left in lane.classification.left_adjacent_lane_id:
+            assert lane.id.value in [r.value for r in by_id[left.value].classification.right_adjacent_lane_id]
+    assert views[1].global_ground_truth.lane[5] == gt.lane[5]  # (the same every step)

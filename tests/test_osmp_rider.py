@@ -1,0 +1,123 @@
+"""vei's e-scooter rider and its planner (driving the ego) as OSMP traffic participants (``vei fmu build
+sfm cap --osmp``), hosted back in ``vei run`` as such (``--controller scooter_1=vei_sfm_osmp.fmu``,
+``--controller Ego=vei_cap_osmp.fmu``, or both): the built-in models' run again.
+
+The FMUs are pythonfmu FMUs that can be instantiated once per process: each hosted run is a process."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+import zipfile
+from pathlib import Path
+
+import pytest
+
+from vei_scenario.cli import main
+from vei_scenario.study import CONFIGURATIONS
+from vei_scenario.sut import ControllerFault, parse_controller_options
+from vei_scenario.sut.osmp import read_osmp_ports
+
+#: Builds the rider for the values, runs the scenario with the built-in rider and with the FMU on the
+#: entity, prints the largest position difference over every entity and whether each collides.
+_COMPARE = """
+import json, os, sys
+from pathlib import Path
+import numpy as np
+from vei_scenario.fmu.osmp_rider import build_osmp
+from vei_scenario.interpreter import run_scenario
+from vei_scenario.sut import parse_controller_options
+scenario, plugs, out, values = sys.argv[1], json.loads(sys.argv[2]), Path(sys.argv[3]), json.loads(sys.argv[4])
+options = [f"{entity}={build_osmp(model, scenario, out, values)}" for entity, model in plugs.items()]
+a = run_scenario(scenario, values)
+b = run_scenario(scenario, values, controllers=parse_controller_options(options))
+entity = list(plugs)[-1]
+d = max(float(np.max(np.hypot(a.traces[n].x - b.traces[n].x, a.traces[n].y - b.traces[n].y))) for n in a.traces)
+print(json.dumps({"deviation_m": d, "collides": [bool(a.collisions), bool(b.collisions)],
+                  "status": sorted(set(b.traces[entity].status[1:]))}), flush=True)
+os._exit(0)  # (without interpreter teardown, where pythonfmu's embedded runtime can crash)
+"""
+
+
+def _compare(scenario: Path, plugs: dict[str, str], out: Path, values: dict) -> dict:
+    """``plugs``: entity -> model (sfm, cap) whose OSMP FMU drives it."""
+    argv = [sys.executable, "-c", _COMPARE, str(scenario), json.dumps(plugs), str(out), json.dumps(values)]
+    done = subprocess.run(argv, capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr[-2000:]
+    return json.loads(done.stdout.strip().splitlines()[-1])
+
+
+@pytest.fixture(scope="module")
+def case_study(compiled) -> Path:
+    return next(p for p in compiled["case_study"].written if p.name == "scenario.xosc")
+
+
+@pytest.fixture(scope="module")
+def multi(compiled) -> Path:
+    return next(p for p in compiled["multi_scooter"].written if p.name == "scenario.xosc")
+
+
+PLUGS = {"rider": {"scooter_1": "sfm"}, "planner": {"Ego": "cap"}, "both": {"Ego": "cap", "scooter_1": "sfm"}}
+
+
+@pytest.mark.parametrize("plugs", sorted(PLUGS))
+@pytest.mark.parametrize(("number", "values"), [(n, v) for n, _, v in CONFIGURATIONS])
+def test_the_osmp_models_reproduce_the_built_in_ones_on_the_studys_configurations(case_study, tmp_path, number, values,
+                                                                                   plugs):  # fmt: skip
+    got = _compare(case_study, PLUGS[plugs], tmp_path, {**values, "TimeShift": "2.197"})
+    assert got["deviation_m"] <= 1e-6 and got["status"] == ["osmp"]
+    assert got["collides"][0] == got["collides"][1]
+
+
+def test_the_osmp_models_reproduce_multi_scooter(multi, tmp_path):
+    got = _compare(multi, {"Ego": "cap", "scooter_2": "sfm"}, tmp_path,
+                   {"RiderType": "normal", "CapEnabled": "true", "TimeShift": "1.41"})  # fmt: skip
+    assert got["deviation_m"] <= 1e-6
+
+
+def test_the_osmp_rider_declares_what_osmp_requires(case_study, tmp_path, capsys):
+    code = main(["fmu", "build", "sfm", "--osmp", "--scenario", str(case_study), "-o", str(tmp_path)])
+    assert code == 0
+    fmu = tmp_path / "vei_sfm_osmp.fmu"
+    ports = read_osmp_ports(fmu, "t")  # (the host's own checks of the annotations)
+    assert ports.sensor_view.mime.endswith("type=SensorView; version=3.8.0") and ports.traffic_command is None
+    assert ports.once_per_process
+    from fmpy.validation import validate_fmu
+
+    assert validate_fmu(str(fmu)) == []
+    first = fmu.read_bytes()
+    assert main(["fmu", "build", "sfm", "--osmp", "--scenario", str(case_study), "-o", str(tmp_path)]) == 0
+    assert fmu.read_bytes() == first  # (the same build, the same bytes)
+    md = zipfile.ZipFile(fmu).read("modelDescription.xml").decode()
+    assert md.index("<VendorAnnotations>") < md.index("<ModelVariables>")
+    code = main(["fmu", "build", "cap", "--osmp", "--scenario", str(case_study), "-o", str(tmp_path)])
+    assert code == 0 and read_osmp_ports(tmp_path / "vei_cap_osmp.fmu", "t").parameters["threat_id"][1] == "Integer"
+    assert validate_fmu(str(tmp_path / "vei_cap_osmp.fmu")) == []
+    code = main(["fmu", "build", "ego", "--osmp", "--scenario", str(case_study), "-o", str(tmp_path)])
+    assert code == 2 and "vei fmu build sfm cap --osmp --scenario XOSC" in capsys.readouterr().err
+
+
+def test_a_second_instance_in_one_process_is_refused_in_one_line(case_study, tmp_path):
+    """What the FMU declares (canBeInstantiatedOnlyOncePerProcess) the host keeps to: the second run in
+    a process is refused with one line, not left to the FMU's runtime."""
+    script = f"""
+import sys
+from vei_scenario.fmu.osmp_rider import build_osmp_rider
+from vei_scenario.interpreter import run_scenario
+from vei_scenario.sut import ControllerFault, parse_controller_options
+fmu = build_osmp_rider({str(case_study)!r}, __import__("pathlib").Path({str(tmp_path)!r}))
+spec = parse_controller_options([f"scooter_1={{fmu}}"])
+run_scenario({str(case_study)!r}, controllers=spec)
+try:
+    run_scenario({str(case_study)!r}, controllers=spec)
+except ControllerFault as exc:
+    print(exc, flush=True)
+__import__("os")._exit(0)
+"""
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=300)
+    assert done.stdout.strip().endswith(
+        "vei_sfm_osmp.fmu can be instantiated only once per process (canBeInstantiatedOnlyOncePerProcess): "
+        "host it in one run per process"
+    ), done.stderr[-1500:]
+    assert ControllerFault and parse_controller_options  # (the names the script uses)
