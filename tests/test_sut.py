@@ -167,6 +167,33 @@ def test_falsify_finds_the_late_aebs_failures_and_its_reproduce_command_reproduc
     assert code == 0 and "COLLISION" in out  # plain vei, the printed options: the same failure
 
 
+def test_falsify_finds_every_failure_window_of_a_dense_grid_with_a_tenth_of_its_runs(scenario):
+    """The late AEB, interpreted: a grid at 0.01 s over TimeShift -1..5 (601 runs) against the search at
+    the same resolution (--tol 0.01): every window of ego-moving collisions the grid finds is a region
+    of the search, its edges on the same lattice point or the next, in at most 10 % of the grid's runs."""
+    from vei_scenario.falsify import Axis, falsify
+    from vei_scenario.sweep.evaluate import evaluate_local
+
+    controllers = tuple(parse_controller_options([f"Ego={DATA}/aeb_flawed.py:LateAEB"]))
+    grid = [{"RiderType": "aggressive", "TimeShift": repr(round(-1 + 0.01 * i, 2))} for i in range(601)]
+    rows = evaluate_local(str(scenario), grid, 0.01, controllers=controllers)
+    moving = [float(v["TimeShift"]) for v, r in zip(grid, rows) if r["metrics"]["collision_ego_moving"]]
+    windows, start = [], None
+    for a, b in zip(moving, moving[1:] + [None]):
+        start = a if start is None else start
+        if b is None or b - a > 0.015:
+            windows.append((start, a))
+            start = None
+    assert windows  # (the grid sees the late AEB fail)
+    result = falsify(scenario, [Axis("TimeShift", -1, 5), Axis("RiderType", values=["aggressive"])], tol=0.01,
+                     controllers=controllers)  # fmt: skip
+    found = [(r.low, r.high) for r in result.regions]
+    assert len(found) == len(windows)
+    for (a, b), (lo, hi) in zip(windows, found):
+        assert abs(lo - a) <= 0.0101 and abs(hi - b) <= 0.0101, (windows, found)
+    assert result.runs <= 0.1 * len(grid), result.runs
+
+
 def test_a_scenario_controller_with_a_module_property_drives_as_the_storyboard_activates(scenario, tmp_path):
     """CARLA ScenarioRunner's convention: a Controller whose property ``module`` names the class (a file
     found from the scenario's directory), assigned and activated as the scenario says."""
