@@ -89,9 +89,9 @@ class ControllerSpec:
         loaded = self.load()
         properties = {**properties, **dict(self.parameters)}
         if self.kind == "fmu":
-            from vei_scenario.sut.fmu import FmuController
+            from vei_scenario.sut.isolated import IsolatedFmu
 
-            return FmuController(loaded, label, properties)
+            return IsolatedFmu(loaded, label, properties, self.step_timeout_s)
         try:
             return loaded(**properties)
         except Exception as exc:  # noqa: BLE001 (the user's code: any failure is theirs, said in one line)
