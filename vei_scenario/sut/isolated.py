@@ -16,10 +16,11 @@ from __future__ import annotations
 import os
 import signal
 import socket
+import struct
 from multiprocessing.connection import Connection
 
 from vei_scenario.sut.contract import ControllerFault, Observation
-from vei_scenario.sut.fmu import FmuController, FmuPorts, _unzipped
+from vei_scenario.sut.fmu import INPUTS, FmuController, FmuPorts, _unzipped
 
 
 class IsolatedFmu:
@@ -40,6 +41,8 @@ class IsolatedFmu:
             finally:
                 os._exit(status)
         child.close()
+        self.inputs = _Inputs(ports)
+        self.vrs = [vr for _, vr in ports.inputs]
         self.conn = Connection(parent.detach())
         self.pending = False  # a step sent and not answered (the parent was interrupted waiting)
         self._answer(None, "while instantiating it")
@@ -64,8 +67,10 @@ class IsolatedFmu:
         return message[1]
 
     def step(self, obs: Observation) -> float:
+        vrs, values = self.inputs.inputs_of(obs)
+        mask = sum(1 << i for i, vr in enumerate(self.vrs) if vr in vrs)  # (the threat's inputs may be absent)
         try:
-            self.conn.send(obs)
+            self.conn.send_bytes(struct.pack(f"<Qdd{len(values)}d", mask, obs.t_s, obs.dt_s, *values))
         except OSError:
             raise ControllerFault(self.label, f"{self.ports.path.name} {self._death()}", obs.t_s) from None
         self.pending = True
@@ -81,7 +86,7 @@ class IsolatedFmu:
             self._kill()
             return
         try:
-            self.conn.send(None)
+            self.conn.send_bytes(b"")
             self.conn.poll(2.0)
         except OSError:
             pass
@@ -132,16 +137,27 @@ def _serve(conn: Connection, ports: FmuPorts, label: str, properties: dict[str, 
         conn.send(("fault", fault.reason, fault.t_s))
         return
     conn.send(("ok", None))
+    all_vrs = [vr for _, vr in ports.inputs]
     while True:
         try:
-            obs = conn.recv()
+            message = conn.recv_bytes()
         except EOFError:
-            obs = None
-        if obs is None:
+            message = b""
+        if not message:
             fmu.close()
             return
+        mask, t_s, dt_s = struct.unpack_from("<Qdd", message)
+        values = list(struct.unpack_from(f"<{(len(message) - 24) // 8}d", message, 24))
+        vrs = [vr for i, vr in enumerate(all_vrs) if mask >> i & 1]
         try:
-            conn.send(("ok", fmu.step(obs)))
+            conn.send(("ok", fmu.step_values(vrs, values, t_s, dt_s)))
         except ControllerFault as fault:  # (the instance is ended as FMI allows, in step)
             conn.send(("fault", fault.reason, fault.t_s))
             return
+
+
+class _Inputs(FmuController):
+    """The parent's half of the FMU: which inputs an observation gives (no instance)."""
+
+    def __init__(self, ports: FmuPorts) -> None:
+        self.ports, self.inputs = ports, [(INPUTS[n], vr) for n, vr in ports.inputs]
