@@ -11,9 +11,10 @@ therefore treats one continuous parameter as the *primary* axis (TimeShift when 
 2. **Line search on each slice.** A coarse scan along the primary axis, scored with a continuous
    robustness value (the minimum box gap, ``-(1 + impact speed)`` on contact with the ego moving, 0 on
    contact with the ego standing, or the margin of a metric target such as ``min_ttc_s<1``), finds failing
-   points directly and, around every local minimum of the robustness below a margin, a bounded Brent
-   minimisation (SciPy) climbs to the failures the scan stepped over. Each failure is bisected to its
-   window's edges (``--tol``).
+   points directly; then branch and bound on the lattice of ``--tol`` splits only the intervals where a
+   failure can hide: where a dip could reach zero between two points (a bound from the scan's steepest
+   slope), beside every local minimum below a margin (zooming into each dip, where a notch sits beside a
+   jump), and at each window's edges, down to ``--tol``. Slices far from failing end after the scan.
 3. **Regions.** Windows on neighbouring slices are one region when their intervals overlap, or when a
    probe on the slice half-way between them finds a window between them (a band that moves faster than
    its width). Each region's primary edges are the extreme window edges, refined along each other
@@ -38,7 +39,7 @@ import numpy as np
 
 from vei_scenario.errors import VeiInputError
 
-#: The robustness below which a local minimum of a coarse scan is climbed (the box gap, m).
+#: The robustness below which a local minimum of the scan is zoomed into, down to --tol (the box gap, m).
 CLIMB_BELOW = 2.0
 #: What an edge search scores where it finds no window (finite: the minimiser does arithmetic on it).
 NO_WINDOW = 1e9
