@@ -213,8 +213,8 @@ def _line_search(run: _Runner, base: dict[str, str], primary: Axis, lo: float, h
     the gap, a discontinuity: the search splits down to ``tol`` wherever the gap comes near zero, while
     a minimiser would stall on the plateau beside it.)"""
 
-    def snap(x: float) -> float:
-        return min(hi, max(lo, primary.low + round((x - primary.low) / tol) * tol))
+    def snap(x: float) -> float:  # (as the parameter is written: the edges are the values run)
+        return float(_fmt(min(hi, max(lo, primary.low + round((x - primary.low) / tol) * tol))))
 
     first = np.linspace(lo, hi, max(3, points // 4 + 1))
     xs = sorted({float(lo), float(hi), *(snap(x) for x in first[1:-1])})
