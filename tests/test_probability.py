@@ -12,6 +12,8 @@ import pytest
 from vei_scenario.cli import main
 from vei_scenario.probability import estimate_probability, wilson
 
+DATA = Path(__file__).parent / "data" / "sut"
+
 DIST = """<?xml version="1.0" encoding="UTF-8"?>
 <OpenSCENARIO><FileHeader revMajor="1" revMinor="2" date="2024-05-14T00:00:00" description="" author=""/>
 <ParameterValueDistribution><ScenarioFile filepath="scenario.xosc"/>
@@ -190,3 +192,25 @@ def test_a_stochastic_distribution_for_openscenario_1_0_is_refused_up_front(tmp_
     assert main(["compile", str(clip), "-o", str(out), "--stochastic", "--osc-version", "1.0"]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "--stochastic" in err and not out.parent.exists()
+
+
+def test_a_plugged_systems_probability_agrees_with_monte_carlo_and_the_exact_value(compiled, tmp_path):
+    """The late AEB, interpreted, TimeShift uniform on [1, 4], the aggressive rider: P(collision with the
+    ego moving) is the length of its failure window (vei falsify to 0.01 s) over 3. Both estimators
+    hold it, agree with each other, and importance sampling spends at most twice the runs asked for on
+    a probability that is not rare (its levels no larger than the estimate)."""
+    from vei_scenario.falsify import Axis, falsify
+    from vei_scenario.sut import parse_controller_options
+
+    scenario = compiled["case_study"].written[0]
+    controllers = tuple(parse_controller_options([f"Ego={DATA}/aeb_flawed.py:LateAEB"]))
+    fixed = {"RiderType": "aggressive"}
+    (region,) = falsify(scenario, [Axis("TimeShift", 1, 4)], fixed, tol=0.01, controllers=controllers).regions
+    exact, slack = (region.high - region.low) / 3, 0.02 / 3
+    uniform = '<UniformDistribution><Range lowerLimit="1" upperLimit="4"/></UniformDistribution>'
+    dist = _dist(tmp_path, f'<StochasticDistribution parameterName="TimeShift">{uniform}</StochasticDistribution>')
+    mc, imp = estimate_probability(scenario, dist, runs=100, fixed=fixed, seed=3, controllers=controllers)
+    for e in (mc, imp):
+        assert e.low - slack <= exact <= e.high + slack, (e, exact)
+    assert mc.low <= imp.probability <= mc.high
+    assert imp.runs <= 2 * 100, imp.runs

@@ -168,6 +168,33 @@ def test_falsify_finds_the_late_aebs_failures_and_its_reproduce_command_reproduc
     assert code == 0 and "COLLISION" in out  # plain vei, the printed options: the same failure
 
 
+def test_falsify_finds_every_failure_window_of_a_dense_grid_with_a_tenth_of_its_runs(scenario):
+    """The late AEB, interpreted: a grid at 0.01 s over TimeShift -1..5 (601 runs) against the search at
+    the same resolution (--tol 0.01): every window of ego-moving collisions the grid finds is a region
+    of the search, its edges on the same lattice point or the next, in at most 10 % of the grid's runs."""
+    from vei_scenario.falsify import Axis, falsify
+    from vei_scenario.sweep.evaluate import evaluate_local
+
+    controllers = tuple(parse_controller_options([f"Ego={DATA}/aeb_flawed.py:LateAEB"]))
+    grid = [{"RiderType": "aggressive", "TimeShift": repr(round(-1 + 0.01 * i, 2))} for i in range(601)]
+    rows = evaluate_local(str(scenario), grid, 0.01, controllers=controllers)
+    moving = [float(v["TimeShift"]) for v, r in zip(grid, rows) if r["metrics"]["collision_ego_moving"]]
+    windows, start = [], None
+    for a, b in zip(moving, moving[1:] + [None]):
+        start = a if start is None else start
+        if b is None or b - a > 0.015:
+            windows.append((start, a))
+            start = None
+    assert windows  # (the grid sees the late AEB fail)
+    result = falsify(scenario, [Axis("TimeShift", -1, 5), Axis("RiderType", values=["aggressive"])], tol=0.01,
+                     controllers=controllers)  # fmt: skip
+    found = [(r.low, r.high) for r in result.regions]
+    assert len(found) == len(windows)
+    for (a, b), (lo, hi) in zip(windows, found):
+        assert abs(lo - a) <= 0.0101 and abs(hi - b) <= 0.0101, (windows, found)
+    assert result.runs <= 0.1 * len(grid), result.runs
+
+
 def test_a_scenario_controller_with_a_module_property_drives_as_the_storyboard_activates(scenario, tmp_path):
     """CARLA ScenarioRunner's convention: a Controller whose property ``module`` names the class (a file
     found from the scenario's directory), assigned and activated as the scenario says."""
@@ -383,3 +410,65 @@ def test_an_entry_point_of_the_group_vei_controllers_names_a_class(scenario, mon
     assert late.collisions
     with pytest.raises(ControllerFault, match="no FILE.py:CLASS, MODULE:CLASS or entry point"):
         parse_controller_options(["Ego=no-such-entry"])
+
+
+@pytest.fixture(scope="module")
+def native_faults(tmp_path_factory) -> dict[str, Path]:
+    """The tiny native FMUs of data/sut/native_src: one segfaults at t >= 1 s, one never returns."""
+    import shutil
+    import sys
+
+    from vei_scenario.core.sources import compiler
+
+    if shutil.which(compiler()) is None:
+        pytest.skip(f"no C compiler ({compiler()}) to build the native test FMUs")
+    sys.path.insert(0, str(DATA / "native_src"))
+    try:
+        from build import build
+    finally:
+        sys.path.remove(str(DATA / "native_src"))
+    out = tmp_path_factory.mktemp("native_fmus")
+    return {fault: build(fault, out) for fault in ("CRASH", "HANG")}
+
+
+def _session() -> set[int]:
+    """Every process of this session (Linux /proc): a child's orphan stays in it."""
+    import os
+
+    sid, out = os.getsid(0), set()
+    for d in Path("/proc").iterdir():
+        if d.name.isdigit():
+            try:
+                stat = (d / "stat").read_text()
+            except OSError:
+                continue
+            fields = stat.rsplit(")", 1)[1].split()
+            if int(fields[3]) == sid and fields[0] != "Z":
+                out.add(int(d.name))
+    return out
+
+
+@pytest.mark.parametrize(
+    ("fault", "options", "reason"),
+    [
+        ("CRASH", [], "SegfaultFmu.fmu crashed (SIGSEGV) in doStep"),
+        ("HANG", ["--controller-timeout", "0.3"], "step did not return within 0.3 s (--controller-timeout)"),
+    ],
+)
+def test_a_native_fmu_that_crashes_or_hangs_fails_its_run_alone(scenario, tmp_path, capsys, native_faults, fault,
+                                                                 options, reason):  # fmt: skip
+    import time
+
+    before = _session()
+    target = f"Ego={native_faults[fault]}"
+    started = time.perf_counter()
+    code, _, err = _vei(capsys, "run", scenario, "--controller", target, *options, "-o", tmp_path / "run")
+    assert (code, err) == (1, f"vei: error: controller {target} at t = 1.00 s: {reason}\n")
+    assert not (tmp_path / "run").exists()  # nothing written for a failed run
+    code, out, err = _vei(capsys, "sweep", scenario, "--vary", "TimeShift=0:3:1", "--workers", "2", "--quiet",
+                          "--controller", target, *options, "-o", tmp_path / "sweep")  # fmt: skip
+    assert code == 1 and "4 failed" in out and "vei: 4 of 4 variants failed" in err
+    catalog = json.loads((tmp_path / "sweep" / "catalog.json").read_text())
+    assert all(reason in v["error"] for v in catalog["variants"])
+    assert time.perf_counter() - started < 30
+    assert _session() - before == set()  # no process left behind (an orphan stays in the session)

@@ -11,9 +11,10 @@ therefore treats one continuous parameter as the *primary* axis (TimeShift when 
 2. **Line search on each slice.** A coarse scan along the primary axis, scored with a continuous
    robustness value (the minimum box gap, ``-(1 + impact speed)`` on contact with the ego moving, 0 on
    contact with the ego standing, or the margin of a metric target such as ``min_ttc_s<1``), finds failing
-   points directly and, around every local minimum of the robustness below a margin, a bounded Brent
-   minimisation (SciPy) climbs to the failures the scan stepped over. Each failure is bisected to its
-   window's edges (``--tol``).
+   points directly; then branch and bound on the lattice of ``--tol`` splits only the intervals where a
+   failure can hide: where a dip could reach zero between two points (a bound from the scan's steepest
+   slope), beside every local minimum below a margin (zooming into each dip, where a notch sits beside a
+   jump), and at each window's edges, down to ``--tol``. Slices far from failing end after the scan.
 3. **Regions.** Windows on neighbouring slices are one region when their intervals overlap, or when a
    probe on the slice half-way between them finds a window between them (a band that moves faster than
    its width). Each region's primary edges are the extreme window edges, refined along each other
@@ -38,7 +39,7 @@ import numpy as np
 
 from vei_scenario.errors import VeiInputError
 
-#: The robustness below which a local minimum of a coarse scan is climbed (the box gap, m).
+#: The robustness below which a local minimum of the scan is zoomed into, down to --tol (the box gap, m).
 CLIMB_BELOW = 2.0
 #: What an edge search scores where it finds no window (finite: the minimiser does arithmetic on it).
 NO_WINDOW = 1e9
@@ -197,48 +198,66 @@ def _fmt(x: float) -> str:
 
 def _line_search(run: _Runner, base: dict[str, str], primary: Axis, lo: float, hi: float, points: int,
                  tol: float) -> list[Window]:  # fmt: skip
-    """Failure windows along the primary axis on one slice, between ``lo`` and ``hi``: a coarse scan,
-    then a scan at ``tol`` around every local minimum of the robustness below :data:`CLIMB_BELOW`.
-    (A planner's failure is a notch at the bottom of a dip of the gap, often a discontinuity: a
-    minimiser stalls on the plateau beside it, while a scan at ``tol`` misses no window wider than
-    ``tol``.)"""
-    xs = np.linspace(lo, hi, max(3, points))
-    rho = np.array(run([{**base, primary.name: _fmt(x)} for x in xs]))
+    """Failure windows along the primary axis on one slice, between ``lo`` and ``hi``, resolved as a
+    grid at ``tol`` would resolve them, with the runs spent only where a failure can hide.
 
-    def f(x: float) -> float:
-        return run([{**base, primary.name: _fmt(x)}])[0]
+    A first scan of about ``points / 4`` runs, then branch and bound: an interval between two
+    non-failing points is split while a dip reaching zero could fit between them, i.e. while
+    ``(ρa + ρb) / 2 - L (b - a) / 2 <= 0``, with ``L`` twice the steepest slope of the robustness
+    between the first scan's non-failing points, or while one of its ends is a local minimum of the
+    robustness below :data:`CLIMB_BELOW` (the search zooms into every dip: a notch sits beside a jump
+    the slope does not bound); an interval with a failing end is split down to ``tol`` (the window's
+    edge). Slices whose robustness stays far from zero end after the first scan. Every probe lies on
+    the lattice ``primary.low + k tol`` (a grid at ``tol`` holds the same points, and the probes of
+    neighbouring searches are shared). (A planner's failure is often a notch at the bottom of a dip of
+    the gap, a discontinuity: the search splits down to ``tol`` wherever the gap comes near zero, while
+    a minimiser would stall on the plateau beside it.)"""
 
-    seeds: list[float] = list(xs[rho < 0])
-    step = xs[1] - xs[0]
-    for i in range(len(xs)):
-        left, right = rho[max(i - 1, 0)], rho[min(i + 1, len(xs) - 1)]
-        if rho[i] >= 0 and rho[i] <= left and rho[i] <= right and rho[i] < CLIMB_BELOW:
-            fine = np.arange(max(lo, xs[i] - step), min(hi, xs[i] + step) + tol / 2, tol)
-            fr = np.array(run([{**base, primary.name: _fmt(x)} for x in fine]))
-            seeds += list(fine[fr < 0])
+    def snap(x: float) -> float:  # (as the parameter is written: the edges are the values run)
+        return float(_fmt(min(hi, max(lo, primary.low + round((x - primary.low) / tol) * tol))))
+
+    first = np.linspace(lo, hi, max(3, points // 4 + 1))
+    xs = sorted({float(lo), float(hi), *(snap(x) for x in first[1:-1])})
+    rho: dict[float, float] = {}
+
+    def evaluate(new: list[float]) -> None:
+        for x, r in zip(new, run([{**base, primary.name: _fmt(x)} for x in new])):
+            rho[x] = r
+
+    evaluate(xs)
+    slopes = [abs(rho[b] - rho[a]) / (b - a) for a, b in zip(xs, xs[1:]) if rho[a] >= 0 and rho[b] >= 0]
+    lipschitz = 2.0 * max(slopes, default=0.0)  # (the first scan's: a jump seen closer would inflate it)
+    while True:
+        v = [rho[x] for x in xs]
+        dip = {
+            xs[i]
+            for i in range(len(xs))
+            if 0 <= v[i] < CLIMB_BELOW and v[i] <= min(v[max(i - 1, 0)], v[min(i + 1, len(v) - 1)])
+        }
+        mids = []
+        for a, b in zip(xs, xs[1:]):
+            ra, rb = rho[a], rho[b]
+            if (ra < 0 and rb < 0) or b - a <= tol * (1 + 1e-9):
+                continue
+            if ra < 0 or rb < 0 or a in dip or b in dip or 0.5 * (ra + rb) - 0.5 * lipschitz * (b - a) <= 0:
+                m = snap(0.5 * (a + b))
+                if a < m < b:
+                    mids.append(m)
+        if not mids:
+            break
+        evaluate(mids)
+        xs = sorted(rho)
     windows: list[Window] = []
-    for s in sorted(seeds):
-        if any(w.start - tol <= s <= w.end + tol for w in windows):
+    current: list[float] = []
+    for x in xs + [math.inf]:
+        if x != math.inf and rho[x] < 0:
+            current.append(x)
             continue
-        step = max(step, tol)
-        edges = []
-        for direction in (-1.0, 1.0):  # bisect out to the window's edge on each side
-            inside, d = s, step / 2
-            outside = None
-            while outside is None:
-                probe = min(hi, max(lo, inside + direction * d))
-                if probe == inside:  # the box's edge
-                    break
-                if f(probe) < 0:
-                    inside, d = probe, d * 2
-                else:
-                    outside = probe
-            if outside is not None:
-                while abs(outside - inside) > tol:
-                    mid = 0.5 * (inside + outside)
-                    inside, outside = (mid, outside) if f(mid) < 0 else (inside, mid)
-            edges.append(inside)
-        windows.append(Window(dict(base), (), min(edges), max(edges)))
+        if current:
+            worst = min(current, key=lambda v: rho[v])
+            windows.append(Window(dict(base), (), current[0], current[-1],
+                                  (rho[worst], {**base, primary.name: _fmt(worst)})))  # fmt: skip
+            current = []
     return windows
 
 
@@ -417,14 +436,8 @@ def _refine_edges(run, r: Region, primary: Axis, others: list[Axis], spacing, to
 
 
 def _worst(run, r: Region, primary: Axis) -> None:
-    """The region's hardest failure: the lowest robustness over a few points inside each window."""
-    best = (math.inf, {})
-    for w in r.windows:
-        xs = np.linspace(w.start, w.end, 5)
-        variants = [{**w.slice_values, primary.name: _fmt(x)} for x in xs]
-        for v, rho in zip(variants, run(variants)):
-            if rho < best[0]:
-                best = (rho, v)
+    """The region's hardest failure: the lowest robustness among its windows' runs."""
+    best = min((w.worst for w in r.windows if w.worst is not None), key=lambda b: b[0], default=(math.inf, {}))
     r.worst_robustness, r.worst = best[0], {**run.fixed, **best[1]}
 
 

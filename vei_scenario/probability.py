@@ -340,10 +340,18 @@ def monte_carlo(evaluate: Evaluator, dims: list[Dimension], runs: int, rng) -> E
     return Estimate("monte-carlo", k / runs, lo, hi, runs, k)
 
 
+#: Runs per level of importance sampling's proposal search (fewer when the estimate takes fewer).
+LEVEL_RUNS = 2000
+
+
 def importance_sampling(
-    evaluate: Evaluator, dims: list[Dimension], runs: int, rng, level_runs: int = 2000, elite: float = 0.1,
+    evaluate: Evaluator, dims: list[Dimension], runs: int, rng, level_runs: int | None = None, elite: float = 0.1,
     max_levels: int = 8,
 ) -> Estimate:  # fmt: skip
+    """Adaptive importance sampling: levels of ``level_runs`` (default :data:`LEVEL_RUNS`, at most
+    ``runs``: a small estimate, as with a system run in the interpreter, does not pay for levels larger
+    than itself) move the proposal towards the failures, then ``runs`` runs from it give the estimate."""
+    level_runs = min(LEVEL_RUNS, runs) if level_runs is None else level_runs
     proposal = Proposal(dims)
     start = evaluate.runs
     levels = 0

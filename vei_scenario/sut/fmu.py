@@ -189,27 +189,36 @@ class FmuController:
         else:
             f.setString([vr], [value])
 
-    def step(self, obs: Observation) -> float:
+    def inputs_of(self, obs: Observation) -> tuple[list[int], list[float]]:
+        """The (value references, values) of the inputs ``obs`` gives (without a threat, none of its)."""
         vrs, values = [], []
         for (who, field), vr in self.inputs:
             state = obs if not who else (obs.ego if who == "ego" else obs.threat)
             if state is not None:
                 vrs.append(vr)
                 values.append(float(getattr(state, field)))
+        return vrs, values
+
+    def step(self, obs: Observation) -> float:
+        vrs, values = self.inputs_of(obs)
+        return self.step_values(vrs, values, obs.t_s, obs.dt_s)
+
+    def step_values(self, vrs: list[int], values: list[float], t_s: float, dt_s: float) -> float:
+        """Set the inputs, ``doStep(t_s, dt_s)``, read ``a_cmd``."""
         f = self.fmu
         try:
             if self.ports.fmi3:
                 if vrs:
                     f.setFloat64(vrs, values)
-                f.doStep(currentCommunicationPoint=obs.t_s, communicationStepSize=obs.dt_s)
+                f.doStep(currentCommunicationPoint=t_s, communicationStepSize=dt_s)
                 return f.getFloat64([self.ports.output])[0]
             if vrs:
                 f.setReal(vrs, values)
-            f.doStep(currentCommunicationPoint=obs.t_s, communicationStepSize=obs.dt_s)
+            f.doStep(currentCommunicationPoint=t_s, communicationStepSize=dt_s)
             return f.getReal([self.ports.output])[0]
         except Exception as exc:  # noqa: BLE001
             self.close(getattr(exc, "status", None))
-            raise ControllerFault(self.label, f"the FMU's doStep failed: {_call_failure(exc)}", obs.t_s) from None
+            raise ControllerFault(self.label, f"the FMU's doStep failed: {_call_failure(exc)}", t_s) from None
 
     def close(self, status: int | None = None) -> None:
         """End the instance after the run, or after a call that returned ``status``: as FMI 2.0 allows,

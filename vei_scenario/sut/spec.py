@@ -91,12 +91,12 @@ class ControllerSpec:
         loaded = self.load()
         properties = {**properties, **dict(self.parameters)}
         if self.kind == "fmu":
-            from vei_scenario.sut.fmu import FmuController
+            from vei_scenario.sut.isolated import IsolatedFmu
             from vei_scenario.sut.osmp import OsmpParticipant, OsmpPorts
 
-            if isinstance(loaded, OsmpPorts):
+            if isinstance(loaded, OsmpPorts):  # its messages are passed by address: it runs in this process
                 return OsmpParticipant(loaded, label, properties)
-            return FmuController(loaded, label, properties)
+            return IsolatedFmu(loaded, label, properties, self.step_timeout_s)
         try:
             return loaded(**properties)
         except Exception as exc:  # noqa: BLE001 (the user's code: any failure is theirs, said in one line)
