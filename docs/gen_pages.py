@@ -83,11 +83,29 @@ def case_study_plots() -> dict[str, bytes]:
     with tempfile.TemporaryDirectory() as tmp:
         scenario = Path(tmp) / "case_study" / "scenario.xosc"
         vei = [sys.executable, "-m", "vei_scenario"]
-        subprocess.run([*vei, "compile", str(ROOT / "examples/case_study/clip.json"), "-o", str(scenario)],
-                       check=True, capture_output=True)
+        subprocess.run(
+            [*vei, "compile", str(ROOT / "examples/case_study/clip.json"), "-o", str(scenario)],
+            check=True,
+            capture_output=True,
+        )
         run = Path(tmp) / "run"
-        subprocess.run([*vei, "run", str(scenario), "--param", "RiderType=aggressive", "--param", "CapEnabled=true",
-                        "--param", "TimeShift=2.197", "-o", str(run)], check=True, capture_output=True)
+        subprocess.run(
+            [
+                *vei,
+                "run",
+                str(scenario),
+                "--param",
+                "RiderType=aggressive",
+                "--param",
+                "CapEnabled=true",
+                "--param",
+                "TimeShift=2.197",
+                "-o",
+                str(run),
+            ],
+            check=True,
+            capture_output=True,
+        )
         return {p.name: p.read_bytes() for p in sorted(run.glob("*.png"))}
 
 

@@ -105,8 +105,11 @@ def _joined(lines: list[str]) -> tuple[str, ...]:
 def case_study(tmp_path_factory) -> Path:
     """The case study compiled once, as README's main command leaves it in ``out/case_study``."""
     out = tmp_path_factory.mktemp("main") / "out" / "case_study"
-    subprocess.run(_vei("compile", str(ROOT / "examples/case_study/clip.json"), "-o", str(out / "scenario.xosc")),
-                   check=True, capture_output=True)
+    subprocess.run(
+        _vei("compile", str(ROOT / "examples/case_study/clip.json"), "-o", str(out / "scenario.xosc")),
+        check=True,
+        capture_output=True,
+    )
     return out
 
 
@@ -214,8 +217,14 @@ def test_readme_is_short_and_opens_with_the_two_commands():
 
 def test_the_site_builds_with_warnings_as_errors(tmp_path):
     pytest.importorskip("mkdocs", reason="the docs extra is not installed (pip install -e '.[docs]')")
-    run = subprocess.run([sys.executable, "-m", "mkdocs", "build", "--strict", "-q", "-d", str(tmp_path / "site")],
-                         cwd=ROOT, capture_output=True, text=True, env=_env(), timeout=600)
+    run = subprocess.run(
+        [sys.executable, "-m", "mkdocs", "build", "--strict", "-q", "-d", str(tmp_path / "site")],
+        cwd=ROOT,
+        capture_output=True,
+        text=True,
+        env=_env(),
+        timeout=600,
+    )
     assert run.returncode == 0, run.stdout[-3000:] + run.stderr[-3000:]
     assert (tmp_path / "site" / "reference" / "cli" / "index.html").is_file()
     assert (tmp_path / "site" / "assets" / "case_study" / "gap_ttc.png").is_file()

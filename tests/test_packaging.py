@@ -44,8 +44,14 @@ def test_wheel_is_a_manylinux_platform_wheel_with_the_core(wheel):
 
 def test_wheel_carries_the_examples_and_schemas(wheel):
     names = set(zipfile.ZipFile(wheel).namelist())
-    for rel in ("case_study/clip.json", "maps/helsinki_center.osm", "ci/suite.toml", "controllers/aeb.py",
-                "generate_dataset.py", "generate_examples.py"):
+    for rel in (
+        "case_study/clip.json",
+        "maps/helsinki_center.osm",
+        "ci/suite.toml",
+        "controllers/aeb.py",
+        "generate_dataset.py",
+        "generate_examples.py",
+    ):
         assert f"vei_scenario/data/examples/{rel}" in names
     assert "vei_scenario/data/clip.schema.json" in names
 
