@@ -66,6 +66,27 @@ def osi_type_names(kind: str, category: str, object_type: str) -> tuple[str, str
     return "TYPE_VEHICLE", VEHICLE_TYPES.get(category, "TYPE_UNKNOWN")
 
 
+def classify_moving(obj, kind: str, category: str, object_type: str, center_x: float) -> None:
+    """Set a ``MovingObject``'s type and vehicle classification from the entity (:func:`osi_type_names`),
+    and for a vehicle its reference point: the rear axle (OpenSCENARIO), ``center_x`` behind the box
+    centre."""
+    from osi3 import osi_object_pb2
+
+    mo_cls = osi_object_pb2.MovingObject
+    type_name, vehicle_type = osi_type_names(kind, category, object_type)
+    obj.type = mo_cls.Type.Value(type_name)
+    if vehicle_type is not None:
+        obj.vehicle_classification.type = mo_cls.VehicleClassification.Type.Value(vehicle_type)
+        obj.vehicle_attributes.bbcenter_to_rear.x = -center_x
+
+
+def interface_version():
+    """The ``osi3.InterfaceVersion`` of the installed OSI bindings: the version of every message vei writes."""
+    from osi3 import osi_version_pb2
+
+    return osi_version_pb2.DESCRIPTOR.GetOptions().Extensions[osi_version_pb2.current_interface_version]
+
+
 def geo_reference(road_file: Path | None) -> str:
     """The ``geoReference`` PROJ string of an OpenDRIVE file ('' when there is none)."""
     if road_file is None or not Path(road_file).is_file():
@@ -105,15 +126,14 @@ def _moves(tr) -> bool:
 def ground_truths(result, host: str | None = None):
     """The run as ``osi3.GroundTruth`` messages, one per recorded step (a generator: a message is
     serialised before the next is built, so a long run needs no more memory than one step)."""
-    from osi3 import osi_groundtruth_pb2, osi_object_pb2, osi_version_pb2
+    from osi3 import osi_groundtruth_pb2
 
-    version = osi_version_pb2.DESCRIPTOR.GetOptions().Extensions[osi_version_pb2.current_interface_version]
+    version = interface_version()
     t = np.asarray(result.t, dtype=float)
     names = list(result.traces)
     host = host or result.ego
     proj = geo_reference(result.road_file)
     map_ref = Path(result.road_file).name if result.road_file is not None else ""
-    mo_cls = osi_object_pb2.MovingObject
     kin = {n: _kinematics(result.traces[n], t) for n in names}
     gt = osi_groundtruth_pb2.GroundTruth()
     gt.version.CopyFrom(version)
@@ -129,12 +149,7 @@ def ground_truths(result, host: str | None = None):
             stationary.append((n, obj))
         else:
             obj = gt.moving_object.add()
-            type_name, vehicle_type = osi_type_names(tr.kind, tr.category, tr.object_type)
-            obj.type = mo_cls.Type.Value(type_name)
-            if vehicle_type is not None:
-                obj.vehicle_classification.type = mo_cls.VehicleClassification.Type.Value(vehicle_type)
-                # the reference point is the rear axle (OpenSCENARIO): its offset from the box centre
-                obj.vehicle_attributes.bbcenter_to_rear.x = -tr.center_x
+            classify_moving(obj, tr.kind, tr.category, tr.object_type, tr.center_x)
             moving.append((n, obj))
         obj.id.value = i
         obj.base.dimension.length = tr.length
@@ -197,7 +212,7 @@ def trace_bytes(result, suffix: str = ".mcap", description: str = "") -> bytes:
     import struct
 
     import google.protobuf
-    from osi3 import osi_groundtruth_pb2, osi_version_pb2
+    from osi3 import osi_groundtruth_pb2
 
     suffix = suffix.lower()
     if suffix not in FORMATS:
@@ -213,7 +228,7 @@ def trace_bytes(result, suffix: str = ".mcap", description: str = "") -> bytes:
 
     from mcap.writer import CompressionType, Writer
 
-    v = osi_version_pb2.DESCRIPTOR.GetOptions().Extensions[osi_version_pb2.current_interface_version]
+    v = interface_version()
     osi_version = f"{v.version_major}.{v.version_minor}.{v.version_patch}"
     pb = google.protobuf.__version__
     buf = io.BytesIO()

@@ -221,22 +221,28 @@ class FmuController:
             raise ControllerFault(self.label, f"the FMU's doStep failed: {_call_failure(exc)}", t_s) from None
 
     def close(self, status: int | None = None) -> None:
-        """End the instance after the run, or after a call that returned ``status``: as FMI 2.0 allows,
-        nothing more after fmi2Fatal (the instance is corrupt), only fmi2FreeInstance after fmi2Error."""
+        """End the instance after the run, or after a call that returned ``status`` (:func:`end_instance`)."""
         if not getattr(self, "live", False):
             return
         self.live = False
-        if status == 4:
-            return
-        if status != 3:
-            try:
-                self.fmu.terminate()
-            except Exception:  # noqa: BLE001, S110 (an instance that failed may refuse to terminate)
-                pass
+        end_instance(self.fmu, status)
+
+
+def end_instance(fmu, status: int | None = None) -> None:
+    """End an FMI 2.0 instance after the run, or after a call that returned ``status``: as the standard
+    allows, nothing more after fmi2Fatal (the instance is corrupt), only fmi2FreeInstance after
+    fmi2Error, fmi2Terminate then fmi2FreeInstance otherwise."""
+    if status == 4:
+        return
+    if status != 3:
         try:
-            self.fmu.freeInstance()
-        except Exception:  # noqa: BLE001, S110
+            fmu.terminate()
+        except Exception:  # noqa: BLE001, S110 (an instance that failed may refuse to terminate)
             pass
+    try:
+        fmu.freeInstance()
+    except Exception:  # noqa: BLE001, S110
+        pass
 
 
 def _call_failure(exc: BaseException) -> str:

@@ -47,9 +47,9 @@ KEPT_BUFFERS = 2
 
 def host_osi_version() -> tuple[int, int, int]:
     """The OSI version of the installed bindings (the messages this host writes)."""
-    from osi3 import osi_version_pb2
+    from vei_scenario.reports.osi_trace import interface_version
 
-    v = osi_version_pb2.DESCRIPTOR.GetOptions().Extensions[osi_version_pb2.current_interface_version]
+    v = interface_version()
     return v.version_major, v.version_minor, v.version_patch
 
 
@@ -326,19 +326,11 @@ class OsmpParticipant:
         return moved
 
     def close(self, status: int | None = None) -> None:
-        """End the instance (as :meth:`~vei_scenario.sut.fmu.FmuController.close`)."""
+        """End the instance (:func:`~vei_scenario.sut.fmu.end_instance`) and let its buffers go."""
         if not getattr(self, "live", False):
             return
         self.live = False
-        if status == 4:
-            return
-        if status != 3:
-            try:
-                self.fmu.terminate()
-            except Exception:  # noqa: BLE001, S110
-                pass
-        try:
-            self.fmu.freeInstance()
-        except Exception:  # noqa: BLE001, S110
-            pass
+        from vei_scenario.sut.fmu import end_instance
+
+        end_instance(self.fmu, status)
         self._kept.clear()

@@ -67,11 +67,11 @@ class OsmpController:
     def sensor_view(self, e, ctx) -> bytes:
         """The scene at the step's start as a serialised ``osi3.SensorView`` (the others as
         coupling shows them: at the step's start under Jacobi coupling)."""
-        from osi3 import osi_object_pb2, osi_sensorview_pb2, osi_version_pb2
+        from osi3 import osi_sensorview_pb2
 
-        from vei_scenario.reports.osi_trace import geo_reference, osi_type_names
+        from vei_scenario.reports.osi_trace import classify_moving, geo_reference, interface_version
 
-        version = osi_version_pb2.DESCRIPTOR.GetOptions().Extensions[osi_version_pb2.current_interface_version]
+        version = interface_version()
         view = osi_sensorview_pb2.SensorView()
         view.version.CopyFrom(version)
         _timestamp(view.timestamp, ctx.t)
@@ -87,7 +87,6 @@ class OsmpController:
             if proj:
                 gt.proj_string = proj
             gt.map_reference = ref
-        mo_cls = osi_object_pb2.MovingObject
         for n, i in self.ids.items():
             o = e if n == e.name else ctx.observed(n)
             if o is None or o.deleted:
@@ -97,11 +96,7 @@ class OsmpController:
                 obj = gt.stationary_object.add()
             else:
                 obj = gt.moving_object.add()
-                type_name, vehicle_type = osi_type_names(o.kind, o.category, o.object_type)
-                obj.type = mo_cls.Type.Value(type_name)
-                if vehicle_type is not None:
-                    obj.vehicle_classification.type = mo_cls.VehicleClassification.Type.Value(vehicle_type)
-                    obj.vehicle_attributes.bbcenter_to_rear.x = -o.center_x
+                classify_moving(obj, o.kind, o.category, o.object_type, o.center_x)
                 c, s = math.cos(yaw), math.sin(yaw)
                 obj.base.velocity.x, obj.base.velocity.y = o.speed * c, o.speed * s
                 obj.base.acceleration.x, obj.base.acceleration.y = o.accel * c, o.accel * s
@@ -135,9 +130,11 @@ class OsmpController:
         """The storyboard's actions for the entity that started since the last step, as OSI defines
         them: a SpeedAction (absolute target speed, shape, duration) and a lane change (relative
         target lane, shape, duration or distance)."""
-        from osi3 import osi_trafficcommand_pb2, osi_version_pb2
+        from osi3 import osi_trafficcommand_pb2
 
-        version = osi_version_pb2.DESCRIPTOR.GetOptions().Extensions[osi_version_pb2.current_interface_version]
+        from vei_scenario.reports.osi_trace import interface_version
+
+        version = interface_version()
         cmd = osi_trafficcommand_pb2.TrafficCommand()
         cmd.version.CopyFrom(version)
         _timestamp(cmd.timestamp, ctx.t)
