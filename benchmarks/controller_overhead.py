@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import argparse
 import tempfile
-import time
+import timeit
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -28,12 +28,8 @@ NOOP = (
 
 
 def _best(fn, repeat: int) -> float:
-    best = float("inf")
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        fn()
-        best = min(best, time.perf_counter() - t0)
-    return best
+    """The fastest of ``repeat`` calls of ``fn``, in s."""
+    return min(timeit.repeat(fn, number=1, repeat=repeat))
 
 
 def _contract_us(xosc: Path, values: dict, plugged: tuple, calls: int = 20000) -> float:

@@ -255,20 +255,25 @@ def test_a_hanging_controller_fails_its_run_within_the_limit_and_a_sweep_goes_on
     assert _children() == []  # no worker left behind
 
 
-def _children() -> list[int]:
-    """Processes whose parent is this one (Linux /proc)."""
-    import os
-
-    out = []
+def _processes() -> dict[int, list[str]]:
+    """Every live process (Linux /proc): its pid and the fields of its stat line after the name (state,
+    parent, process group, session ...)."""
+    out = {}
     for d in Path("/proc").iterdir():
         if d.name.isdigit():
             try:
                 stat = (d / "stat").read_text()
             except OSError:
                 continue
-            if int(stat.rsplit(")", 1)[1].split()[1]) == os.getpid():
-                out.append(int(d.name))
+            out[int(d.name)] = stat.rsplit(")", 1)[1].split()
     return out
+
+
+def _children() -> list[int]:
+    """Processes whose parent is this one."""
+    import os
+
+    return [pid for pid, fields in _processes().items() if int(fields[1]) == os.getpid()]
 
 
 def test_falsify_and_probability_refuse_a_controller_vei_has_no_model_of(scenario, tmp_path, capsys):
@@ -432,20 +437,11 @@ def native_faults(tmp_path_factory) -> dict[str, Path]:
 
 
 def _session() -> set[int]:
-    """Every process of this session (Linux /proc): a child's orphan stays in it."""
+    """Every process of this session that is not a zombie: a child's orphan stays in it."""
     import os
 
-    sid, out = os.getsid(0), set()
-    for d in Path("/proc").iterdir():
-        if d.name.isdigit():
-            try:
-                stat = (d / "stat").read_text()
-            except OSError:
-                continue
-            fields = stat.rsplit(")", 1)[1].split()
-            if int(fields[3]) == sid and fields[0] != "Z":
-                out.add(int(d.name))
-    return out
+    sid = os.getsid(0)
+    return {pid for pid, fields in _processes().items() if int(fields[3]) == sid and fields[0] != "Z"}
 
 
 @pytest.mark.parametrize(
