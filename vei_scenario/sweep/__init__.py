@@ -15,7 +15,7 @@ from vei_scenario.metrics.series import MetricConfig
 from vei_scenario.reports.plot_worker import PlotWorker
 from vei_scenario.sweep.catalog import catalog_csv, catalog_json, variant_xosc
 from vei_scenario.sweep.evaluate import evaluate_dask, evaluate_local, iter_rows
-from vei_scenario.sweep.preflight import check_playable, check_values
+from vei_scenario.sweep.preflight import preflight
 from vei_scenario.sweep.report_html import planner_on, plot_inputs, report_html
 from vei_scenario.variation import cartesian, distributed_scenario, parse_vary, read_distribution
 
@@ -179,8 +179,7 @@ def run_sweep(
     gc.disable()
     try:
         variants, varied = build_variants(scenario, vary or [], Path(dist) if dist else None, seed)
-        check_playable(scenario, variants, dt, controllers)
-        check_values(scenario, variants, varied, dt, "--vary" if vary else "--dist")
+        preflight(scenario, variants, varied, dt, controllers, "--vary" if vary else "--dist")
         bar = _progress_bar(len(variants), quiet)
         tick = bar.update if bar is not None else None
         try:

@@ -34,13 +34,37 @@ def _build_error(scenario: Path, values: dict[str, str], dt: float, controllers:
     return None
 
 
-def check_playable(scenario: Path, variants: list[dict[str, str]], dt: float, controllers: tuple = ()) -> None:
-    """Refuse a scenario that cannot be set up at all: with its defaults, the first variant and the last
-    alike (so the defect does not depend on the values varied); ``controllers``: the systems under test
-    (an entity they name that the scenario lacks is such a defect)."""
+#: "Not built yet", for the defaults' build error a caller may already know (None: it builds).
+_UNKNOWN = object()
+
+
+def preflight(
+    scenario: Path,
+    variants: list[dict[str, str]],
+    varied: list[str],
+    dt: float,
+    controllers: tuple = (),
+    where: str = "--vary",
+) -> None:
+    """Both checks before a sweep (:func:`check_playable`, :func:`check_values`), building the scenario
+    with its defaults once for the two."""
     if not variants:
         return
-    base = _build_error(scenario, {}, dt, controllers)
+    defaults = _build_error(scenario, {}, dt, controllers)
+    check_playable(scenario, variants, dt, controllers, defaults)
+    check_values(scenario, variants, varied, dt, where, defaults if not controllers else _UNKNOWN)
+
+
+def check_playable(
+    scenario: Path, variants: list[dict[str, str]], dt: float, controllers: tuple = (), defaults=_UNKNOWN
+) -> None:
+    """Refuse a scenario that cannot be set up at all: with its defaults, the first variant and the last
+    alike (so the defect does not depend on the values varied); ``controllers``: the systems under test
+    (an entity they name that the scenario lacks is such a defect); ``defaults``: the defaults' build
+    error with those controllers, when the caller has it."""
+    if not variants:
+        return
+    base = _build_error(scenario, {}, dt, controllers) if defaults is _UNKNOWN else defaults
     if base is None:
         return
     for v in (variants[0], variants[-1]):
@@ -89,11 +113,17 @@ def _allowed(groups: list[list[tuple[str, str]]]) -> str:
 
 
 def check_values(
-    scenario: Path, variants: list[dict[str, str]], varied: list[str], dt: float, where: str = "--vary"
+    scenario: Path,
+    variants: list[dict[str, str]],
+    varied: list[str],
+    dt: float,
+    where: str = "--vary",
+    defaults=_UNKNOWN,
 ) -> None:
     """Refuse a varied value outside its declaration's ValueConstraints, or a string value that the
     scenario refuses on its own (tried with every other parameter at its default): one line naming the
-    parameter, the value and what it may be."""
+    parameter, the value and what it may be. ``defaults``: the defaults' build error (no controllers),
+    when the caller has it."""
     doc = load_scenario(scenario)
     constraints = declared_constraints(doc)
     distinct: dict[str, list[str]] = {}
@@ -111,7 +141,9 @@ def check_values(
     probed = {
         n: vs for n, vs in distinct.items() if doc.parameter_types.get(n) == "string" and len(vs) <= MAX_PROBED_VALUES
     }
-    if not probed or _build_error(scenario, {}, dt) is not None:
+    if not probed:
+        return
+    if (_build_error(scenario, {}, dt) if defaults is _UNKNOWN else defaults) is not None:
         return
     for name, values in probed.items():
         for value in values:
