@@ -108,6 +108,16 @@ def test_bad_partners_are_one_line_and_nothing_is_written(scenario, tmp_path, ca
     assert not (tmp_path / "r").exists()
 
 
+@pytest.mark.parametrize("name", ["ZeroSize", "WrongId", "NeverWrites"])
+def test_a_study_of_a_clip_with_a_bad_partner_writes_nothing(tmp_path, capsys, name):
+    """The clip is compiled for the study, but its scenario joins the outputs only once every
+    configuration has run: a partner failing in configuration 4 leaves no folder behind."""
+    clip = Path(__file__).parents[1] / "examples" / "case_study" / "clip.json"
+    code, out, err = _vei(capsys, "study", clip, "--controller", f"Ego={DATA}/{name}.fmu", "-o", tmp_path / "s")
+    assert (code, err) == (1, f"vei: error: controller Ego={DATA}/{name}.fmu{BAD[name][1]}\n")
+    assert not (tmp_path / "s").exists()
+
+
 def _repacked(tmp_path: Path, source: Path, old: str, new: str) -> Path:
     """A copy of ``source`` whose modelDescription.xml has ``old`` replaced by ``new``."""
     out = tmp_path / source.name
