@@ -128,8 +128,9 @@ class OsmpController:
 
     def traffic_command(self, e, ctx) -> bytes:
         """The storyboard's actions for the entity that started since the last step, as OSI defines
-        them: a SpeedAction (absolute target speed, shape, duration) and a lane change (relative
-        target lane, shape, duration or distance)."""
+        them: a SpeedAction (absolute target speed, shape, duration), a lane change (relative
+        target lane, shape, duration or distance) and a FollowTrajectoryAction (its vertices as
+        trajectory points with their simulation times where it is timed, else as path points)."""
         from osi3 import osi_trafficcommand_pb2
 
         from vei_scenario.reports.osi_trace import interface_version
@@ -167,7 +168,41 @@ class OsmpController:
                     a.duration = lateral.value
                 elif lateral.dimension == "distance":
                     a.distance = lateral.value
+        follower = e.follower
+        if follower is not None and follower is not self._commanded.get("path"):
+            self._commanded["path"] = follower
+            self._follow(cmd.action.add(), follower, e)
         return cmd.SerializeToString()
+
+    def _follow(self, action, follower, e) -> None:
+        """A FollowTrajectoryAction as ``follow_trajectory_action`` (timed: each vertex a trajectory
+        point at the simulation time the timing plays it) or ``follow_path_action`` (untimed); each
+        point the pose of the entity's bounding-box centre there, as every pose of vei's OSI messages."""
+        from osi3 import osi_trafficcommand_pb2
+
+        poly = follower.polyline
+        if follower.plays_time:
+            a = action.follow_trajectory_action
+            points = a.trajectory_point
+        else:
+            a = action.follow_path_action
+            points = a.path_point
+        self._action_id += 1
+        a.action_header.action_id.value = self._action_id
+        modes = osi_trafficcommand_pb2.TrafficAction.FollowingMode
+        a.following_mode = modes.Value(
+            "FOLLOWING_MODE_FOLLOW" if follower.mode == "follow" else "FOLLOWING_MODE_POSITION"
+        )
+        a.constrain_orientation = True  # (vei heads the entity as the vertices do)
+        for k in range(len(poly.xs)):
+            h = poly.hs[k]
+            p = points.add()
+            if follower.plays_time:
+                _timestamp(p.timestamp, follower.sim_time_of(poly.ts[k]))
+            p.position.x = poly.xs[k] + math.cos(h) * e.center_x
+            p.position.y = poly.ys[k] + math.sin(h) * e.center_x
+            p.position.z = 0.5 * e.height
+            p.orientation.yaw = h
 
     # -- the step ------------------------------------------------------------------------------
     def move(self, e, ctx, dt: float) -> bool:
