@@ -413,3 +413,85 @@ def test_an_untimed_trajectory_is_told_as_path_points_and_followed(monkeypatch):
     k = 10.0 * t <= s[-1]
     x, y = _centres(tr)
     assert np.max(np.hypot(x[k] - np.interp(10.0 * t[k], s, cx), y[k] - np.interp(10.0 * t[k], s, cy))) < 1e-9
+
+
+def test_a_misc_object_that_moves_is_a_moving_object_in_the_sensor_view_as_in_the_trace(monkeypatch):
+    """misc_objects.xosc: two hand carts (MiscObjects replayed from t = 0 and from t = 1 s) are moving
+    objects of TYPE_OTHER in every SensorView, the cone that stays is a stationary object: the same
+    split, ids and types as vei's OSI trace of the run."""
+    from osi3.osi_object_pb2 import MovingObject
+
+    from vei_scenario.reports.osi_trace import ground_truths
+
+    r, views, _ = _recorded(monkeypatch, DATA / "misc_objects.xosc")
+    traced = [(sorted((m.id.value, m.type) for m in gt.moving_object), sorted(s.id.value for s in gt.stationary_object))
+              for gt in ground_truths(r)]  # fmt: skip
+    other = MovingObject.TYPE_OTHER
+    assert traced[0] == ([(0, MovingObject.TYPE_VEHICLE), (1, MovingObject.TYPE_VEHICLE), (2, other), (3, other)], [4])
+    for k, v in enumerate(views):
+        gt = v.global_ground_truth
+        shown = (
+            sorted((m.id.value, m.type) for m in gt.moving_object),
+            sorted(s.id.value for s in gt.stationary_object),
+        )
+        assert shown == traced[k]
+    cart = next(m for m in views[150].global_ground_truth.moving_object if m.id.value == 2)
+    assert (cart.base.velocity.x, cart.base.velocity.y) == pytest.approx((0.0, 1.2), abs=1e-9)
+
+
+def _trace_poses(path: Path) -> list[dict[str, tuple[float, float, float]]]:
+    """Each message of an OSI trace, read by the OSI project's own reader (asam-osi-utilities): the
+    reference point (x, y) and yaw of every object by its source id (the rear axle of a vehicle:
+    box centre + bbcenter_to_rear, turned by the yaw; the box centre of any other object)."""
+    tracefile = pytest.importorskip("osi_utilities.tracefile")
+    reader = tracefile.create_reader(path)
+    assert reader.open(path)
+    out = []
+    while reader.has_next():
+        res = reader.read_message()
+        if res is None or res.message is None:
+            break
+        gt = res.message
+        poses = {}
+        for obj in (*gt.moving_object, *gt.stationary_object):
+            b, yaw = obj.base, obj.base.orientation.yaw
+            vehicle = "vehicle_attributes" in obj.DESCRIPTOR.fields_by_name and obj.HasField("vehicle_attributes")
+            rear = obj.vehicle_attributes.bbcenter_to_rear if vehicle else None
+            dx, dy = (rear.x, rear.y) if rear is not None else (0.0, 0.0)
+            poses[obj.id.value] = (b.position.x + dx * math.cos(yaw) - dy * math.sin(yaw),
+                                   b.position.y + dx * math.sin(yaw) + dy * math.cos(yaw), yaw)  # fmt: skip
+        out.append(poses)
+    reader.close()
+    return out
+
+
+@pytest.mark.parametrize("case", ["multi_scooter", "misc_objects"])
+def test_the_trace_of_a_run_with_hosted_participants_reads_back_as_trajectories_csv(compiled, tmp_path, capsys, case):
+    """A run with OSMP participants hosted (multi_scooter: the ego following its path, one rider
+    going straight; misc_objects: the ego going straight among replayed carts and a cone) writes its
+    OSI trace; the OSI project's reader gives every object of every step, the hosted ones too, at the
+    pose of trajectories.csv (written to 1e-6 m and rad) within 1e-6 m, and its heading within 1e-6 rad."""
+    import csv
+
+    if case == "multi_scooter":
+        scenario = next(p for p in compiled["multi_scooter"].written if p.name == "scenario.xosc")
+        hosted = {"Ego": "TrajectoryFollower", "scooter_1": "StraightLine"}
+    else:
+        scenario, hosted = DATA / "misc_objects.xosc", {"Ego": "StraightLine"}
+    options = [a for n, fmu in hosted.items() for a in ("--controller", f"{n}={GOOD}/{fmu}.fmu")]
+    code, _, err = _vei(capsys, "run", scenario, *options, "-o", tmp_path / "r", "--no-plots",
+                        "--osi", tmp_path / "trace.mcap")  # fmt: skip
+    assert code == 0, err
+    with (tmp_path / "r" / "trajectories.csv").open() as f:
+        rows = list(csv.DictReader(f))
+    names = list(dict.fromkeys(r["entity"] for r in rows))
+    poses = _trace_poses(tmp_path / "trace.mcap")
+    assert len(poses) * len(names) == len(rows)
+    for n in hosted:
+        assert {r["controller_state"] for r in rows if r["entity"] == n} - {"default"} == {"osmp"}
+    worst_m = worst_rad = 0.0
+    for k, row in enumerate(rows):
+        x, y, yaw = poses[k // len(names)][names.index(row["entity"])]
+        worst_m = max(worst_m, math.hypot(x - float(row["x_m"]), y - float(row["y_m"])))
+        worst_rad = max(worst_rad, abs(math.remainder(yaw - float(row["heading_rad"]), math.tau)))
+    assert worst_m <= 1e-6 and worst_rad <= 1e-6, (worst_m, worst_rad)
