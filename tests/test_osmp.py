@@ -312,6 +312,26 @@ def test_a_scenario_controller_naming_a_participant_drives_as_the_storyboard_act
     assert "osmp" not in off.traces["Ego"].status
 
 
+@pytest.mark.parametrize("name", sorted(BAD))
+def test_a_scenario_controller_naming_a_bad_partner_is_one_line_naming_its_entity(scenario, tmp_path, capsys, name):
+    """The same lines as with --controller, the controller named by its entity and module."""
+    from lxml import etree
+
+    tree = etree.parse(str(scenario))
+    props = tree.find("Entities/ScenarioObject[@name='Ego']/ObjectController/Controller/Properties")
+    etree.SubElement(props, "Property", name="module", value=f"{name}.fmu")
+    for f in scenario.parent.iterdir():
+        if f.suffix == ".xodr":
+            (tmp_path / f.name).write_bytes(f.read_bytes())
+    shutil.copy(DATA / f"{name}.fmu", tmp_path)
+    tree.write(str(tmp_path / "scenario.xosc"))
+    code, out, err = _vei(capsys, "run", tmp_path / "scenario.xosc", "--param", "CapEnabled=true",
+                          "-o", tmp_path / "r", "--no-plots")  # fmt: skip
+    want_code, tail = BAD[name]
+    assert (code, err) == (want_code, f"vei: error: controller Ego={name}.fmu{tail}\n")
+    assert not (tmp_path / "r").exists()
+
+
 def test_the_sensor_view_holds_the_roads_lanes(monkeypatch, scenario):
     """One OSI lane per OpenDRIVE lane and lane section (counted in the .xodr itself), ids after the
     objects' and unique, centre lines sampled at most 2 m apart along the reference line (the points
