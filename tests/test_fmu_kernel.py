@@ -99,8 +99,8 @@ def test_kernel_and_interpreter_give_the_same_rows_for_the_same_fmu(scenario, ca
     the planner switched off through the FMU's parameter enabled among them."""
     s = str(scenario.resolve())
     plugged = parse_controller_options([f"Ego={cap_fmu}"], [CRUISE])
-    variants = [{"TimeShift": ts, "RiderType": r, "CapEnabled": on}
-                for ts in ("2.197", "0.4", "3.35") for r in ("normal", "aggressive", "replay") for on in ("true", "false")]  # fmt: skip
+    variants = [{"TimeShift": ts, "RiderType": r, "CapEnabled": on} for ts in ("2.197", "0.4", "3.35")
+                for r in ("normal", "aggressive", "replay") for on in ("true", "false")]  # fmt: skip
     kernel = evaluate_local(s, variants, 0.01, 2, controllers=plugged)
     built_in = evaluate_local(s, variants, 0.01, 2)
     for v, k, b in zip(variants, kernel, built_in):
@@ -128,8 +128,9 @@ def test_a_faulty_kernel_fmu_fails_its_variants_alone(scenario, faulty, tmp_path
     line = f"controller {target} at t = 1.00 s: {reason}"
     assert (code, err) == (1, f"vei: error: {line}\n")
     before = _children()
-    code, out, err = _vei(capsys, "sweep", scenario, "--vary", "TimeShift=0:3:1", "--vary", "CapEnabled=true,false",
-                          "--workers", "2", "--quiet", "--controller", target, *options, "-o", tmp_path / "sweep")  # fmt: skip
+    vary = ["--vary", "TimeShift=0:3:1", "--vary", "CapEnabled=true,false"]
+    code, out, err = _vei(capsys, "sweep", scenario, *vary, "--workers", "2", "--quiet", "--controller", target,
+                          *options, "-o", tmp_path / "sweep")  # fmt: skip
     assert code == 1 and "4 failed" in out and "vei: 4 of 8 variants failed" in err
     assert _children() - before == set()
     rows = json.loads((tmp_path / "sweep" / "catalog.json").read_text())["variants"]

@@ -151,8 +151,8 @@ class KernelFmu:
         at = None if math.isnan(t) else float(t)
         if timeout:
             what = "step" if at is not None else f"instantiating {self.name}"
-            limit = self.spec.step_timeout_s
-            return str(ControllerFault(self.label, f"{what} did not return within {limit:g} s (--controller-timeout)", at))
+            limit = f"{self.spec.step_timeout_s:g} s (--controller-timeout)"
+            return str(ControllerFault(self.label, f"{what} did not return within {limit}", at))
         where = "in doStep" if at is not None else "while instantiating it"
         if call >= 0 and at is not None and fmu_ego.calls()[call] != "fmi2DoStep":
             where = f"in {fmu_ego.calls()[call]}"

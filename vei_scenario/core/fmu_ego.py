@@ -12,7 +12,7 @@ import numpy as np
 
 from vei_scenario.core.kernel import P, Scene, Variant, load_kernel, pointer
 
-I = ctypes.POINTER(ctypes.c_int)
+INTS = ctypes.POINTER(ctypes.c_int)
 #: per variant in ``faults``: kind, step time, call, status or command (VEI_FMU_FAULT_FIELDS)
 FAULT_FIELDS = 4
 OK, STATUS, NULL, NONFINITE, ABSURD = range(5)
@@ -27,12 +27,12 @@ class FmuEgoStruct(ctypes.Structure):
         ("guid", ctypes.c_char_p),
         ("resource_uri", ctypes.c_char_p),
         ("n_in", ctypes.c_int),
-        ("in_vr", I),
-        ("in_which", I),
+        ("in_vr", INTS),
+        ("in_which", INTS),
         ("out_vr", ctypes.c_int),
         ("n_par", ctypes.c_int),
-        ("par_vr", I),
-        ("par_kind", I),
+        ("par_vr", INTS),
+        ("par_kind", INTS),
         ("par_values", P),
         ("max_speed", ctypes.c_double),
         ("max_command", ctypes.c_double),
@@ -102,8 +102,8 @@ def run(
     values = np.ascontiguousarray(par_values, dtype=float).reshape(n, len(par_vr))
     cfg = FmuEgoStruct(
         handle, b"sut", ports["guid"].encode(), ports["resource_uri"].encode(),
-        len(in_vr), in_vr.ctypes.data_as(I), in_which.ctypes.data_as(I), ports["output"],
-        len(par_vr), par_vr.ctypes.data_as(I), par_kind.ctypes.data_as(I), pointer(values),
+        len(in_vr), in_vr.ctypes.data_as(INTS), in_which.ctypes.data_as(INTS), ports["output"],
+        len(par_vr), par_vr.ctypes.data_as(INTS), par_kind.ctypes.data_as(INTS), pointer(values),
         ports["max_speed"], ports["max_command"], pointer(faults),
         pointer(progress) if progress is not None else None,
     )  # fmt: skip
