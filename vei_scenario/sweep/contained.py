@@ -71,7 +71,7 @@ def run_contained(
     'crashed (SIGSEGV)') or overran ``timeout_s`` in an FMU call."""
     chunks: list[tuple[list[int], bool]] = []
     total = sum(len(g) for g in groups)
-    size = max(1, min(256, -(-total // max(1, 4 * workers))))
+    size = max(1, min(256, -(-total // max(1, workers))))  # (a fork costs ms: one chunk a worker when few)
     for g in groups:
         chunks += [(g[k : k + size], False) for k in range(0, len(g), size)]
     pages = mmap.mmap(-1, max(1, workers) * _SLOT * 8)

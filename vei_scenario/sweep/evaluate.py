@@ -152,7 +152,10 @@ def _chunk(
 ) -> list[dict]:
     """Rows of a chunk: a vei-compiled loop's valid variants through the sweep kernel (rows identical
     to ``vei run``'s: tests/test_batch_native.py), everything else and invalid values through the
-    interpreter, variant by variant."""
+    interpreter, variant by variant; a native FMU on a loop's ego through the kernel in a forked child."""
+    fmu = _kernel_fmu(scenario, dt, zone_ttc, controllers)
+    if fmu is not None:
+        return _evaluate_kernel_fmu(fmu, scenario, chunk, dt, 1, None, zone_ttc, controllers)
     native = _native_engine(scenario, dt, zone_ttc, controllers)
     rows: list[dict | None] = [None] * len(chunk)
     if native is not None:
