@@ -79,8 +79,8 @@ def main() -> None:
         layout, values, _ = k.parameters(variants)
         prepared = native.prepare(variants)
         _, ref = native.run(prepared, record=True)
-        _, faults, got = fmu_ego.run(*prepared, fmu_ego.open_library(k.library), {**k.layout, "parameters": layout},
-                                     values, None, record=True)  # fmt: skip
+        handle = fmu_ego.open_library(k.library, k.ports.fmi3)
+        _, faults, got = fmu_ego.run(*prepared, handle, {**k.layout, "parameters": layout}, values, None, record=True)
         # (x, y of the ego and the rider: rows 0, 1, 5, 6)
         worst = float(np.abs(got[:, [0, 1, 5, 6]] - ref[:, [0, 1, 5, 6]]).max())
 

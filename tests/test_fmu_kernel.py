@@ -94,11 +94,20 @@ def test_vei_planner_as_a_kernel_fmu_reproduces_the_built_in_sweep(scenario, cap
     assert (tmp_path / "built_in" / "catalog.csv").read_bytes() == (tmp_path / "fmu" / "catalog.csv").read_bytes()
 
 
-def test_kernel_and_interpreter_give_the_same_rows_for_the_same_fmu(scenario, cap_fmu):
+@pytest.fixture(scope="module")
+def cap_fmu3(tmp_path_factory) -> Path:
+    from vei_scenario.fmu import build_fmus
+
+    return build_fmus(["cap"], tmp_path_factory.mktemp("cap3"), fmi=3)["cap"]
+
+
+@pytest.mark.parametrize("fmi", [2, 3])
+def test_kernel_and_interpreter_give_the_same_rows_for_the_same_fmu(scenario, cap_fmu, cap_fmu3, fmi):
     """Study configurations 4 and 5 (TimeShift 2.197, normal and aggressive rider, planner on) and others,
-    the planner switched off through the FMU's parameter enabled among them."""
+    the planner switched off through the FMU's parameter enabled among them; FMI 2.0 and 3.0."""
     s = str(scenario.resolve())
-    plugged = parse_controller_options([f"Ego={cap_fmu}"], [CRUISE])
+    plugged = parse_controller_options([f"Ego={cap_fmu if fmi == 2 else cap_fmu3}"], [CRUISE])
+    assert _kernel_fmu(s, 0.01, "2d", plugged) is not None
     variants = [{"TimeShift": ts, "RiderType": r, "CapEnabled": on} for ts in ("2.197", "0.4", "3.35")
                 for r in ("normal", "aggressive", "replay") for on in ("true", "false")]  # fmt: skip
     kernel = evaluate_local(s, variants, 0.01, 2, controllers=plugged)

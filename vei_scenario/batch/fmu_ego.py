@@ -6,7 +6,7 @@ same inputs at the step's start, ``doStep(t, dt)``, ``a_cmd`` checked and driven
 model within the ego's Performance along its path; parameters only where the FMU declares them (the
 ego's controller properties of the variant, ``--controller-param`` over them).
 
-Which FMUs (:func:`kernel_fmu`): one FMI 2.0 co-simulation FMU on the ego with a binary for this
+Which FMUs (:func:`kernel_fmu`): one FMI 2.0 or 3.0 co-simulation FMU on the ego with a binary for this
 platform, vei's port set (:data:`~vei_scenario.sut.fmu.INPUTS`, ``a_cmd``), parameters to set of type
 Real, Integer, Boolean or Enumeration, instantiable more than once per process, and not a PythonFMU
 (its binary runs a Python interpreter of its own: it stays in a process of its own per run); on a
@@ -20,6 +20,7 @@ process that runs it: :mod:`vei_scenario.sweep.contained` runs these variants in
 from __future__ import annotations
 
 import math
+import os
 import sys
 import zipfile
 from pathlib import Path
@@ -34,22 +35,22 @@ from vei_scenario.sut.fmu import _STATUS, INPUTS, FmuPorts, _typed, _unzipped
 
 #: parameter kinds the kernel sets (the rest, strings, in the interpreter)
 _KINDS = {"Real": 0, "Float64": 0, "Integer": 1, "Int32": 1, "Enumeration": 1, "Boolean": 2}
-#: where an FMI 2.0 FMU keeps its binary for this platform
-_PLATFORM = {"linux": ("linux64", ".so")}
+#: where an FMI 2.0 and an FMI 3.0 FMU keep their binary for this platform
+_PLATFORM = {"linux": ("linux64", "x86_64-linux", ".so")}
 
 
 def binary_path(ports: FmuPorts) -> str | None:
     """The archive's path of the FMU's binary for this platform, None without one."""
+    import platform
+
     where = _PLATFORM.get(sys.platform)
-    if where is None or sys.maxsize <= 2**32:
+    if where is None or sys.maxsize <= 2**32 or platform.machine() not in ("x86_64", "AMD64"):
         return None
-    return f"binaries/{where[0]}/{ports.identifier}{where[1]}"
+    return f"binaries/{where[1 if ports.fmi3 else 0]}/{ports.identifier}{where[2]}"
 
 
 def not_for_kernel(ports: FmuPorts) -> str | None:
     """Why the kernel does not step this FMU (it plays in the interpreter), or None."""
-    if ports.fmi3:
-        return "an FMI 3.0 FMU"
     binary = binary_path(ports)
     if binary is None:
         return f"no native FMU in the kernel on {sys.platform}"
@@ -81,7 +82,8 @@ class KernelFmu:
         self.library = str(unzip / binary_path(ports))
         self.layout = {
             "guid": ports.guid,
-            "resource_uri": (unzip / "resources").as_uri(),
+            # (FMI 2.0 a file URI; FMI 3.0 a path with its separator at the end, as fmpy gives them)
+            "resource_uri": str(unzip / "resources") + os.sep if ports.fmi3 else (unzip / "resources").as_uri(),
             "inputs": [(vr, list(INPUTS).index(n)) for n, vr in ports.inputs],
             "output": ports.output,
             "max_speed": self.scene.max_speed,
@@ -117,7 +119,7 @@ class KernelFmu:
     def rows(self, variants: list[dict[str, str]], progress: np.ndarray | None = None) -> list[dict]:
         """The rows of variants that share their model parameters (:meth:`LoopScene.model_groups`), in
         this process: the FMU's binary runs here."""
-        handle = fmu_ego.open_library(self.library)
+        handle = fmu_ego.open_library(self.library, self.ports.fmi3)
         layout, values, errors = self.parameters(variants)
         scene, arr = self.native.prepare(variants)
         out, faults, _ = fmu_ego.run(scene, arr, handle, {**self.layout, "parameters": layout}, values, progress)
@@ -133,7 +135,7 @@ class KernelFmu:
         """The one line ``vei run`` gives for the same fault."""
         kind, t, call, value = fault
         at = None if math.isnan(t) else float(t)
-        name = fmu_ego.calls()[int(call)]
+        name = fmu_ego.calls(self.ports.fmi3)[int(call)]
         if kind == fmu_ego.NULL:
             reason = f"instantiating {self.name} failed: {name} returned NULL"
         elif kind == fmu_ego.STATUS:
@@ -154,8 +156,9 @@ class KernelFmu:
             limit = f"{self.spec.step_timeout_s:g} s (--controller-timeout)"
             return str(ControllerFault(self.label, f"{what} did not return within {limit}", at))
         where = "in doStep" if at is not None else "while instantiating it"
-        if call >= 0 and at is not None and fmu_ego.calls()[call] != "fmi2DoStep":
-            where = f"in {fmu_ego.calls()[call]}"
+        names = fmu_ego.calls(self.ports.fmi3)
+        if call >= 0 and at is not None and names[call] not in ("fmi2DoStep", "fmi3DoStep"):
+            where = f"in {names[call]}"
         return str(ControllerFault(self.label, f"{self.name} {how} {where}", at))
 
 

@@ -44,8 +44,9 @@ class FmuEgoStruct(ctypes.Structure):
 @functools.cache
 def _lib():
     lib = load_kernel()
-    lib.vei_fmu_open.argtypes = [ctypes.c_char_p, ctypes.c_char_p, ctypes.c_int]
+    lib.vei_fmu_open.argtypes = [ctypes.c_char_p, ctypes.c_int, ctypes.c_char_p, ctypes.c_int]
     lib.vei_fmu_open.restype = ctypes.c_void_p
+    lib.vei_fmu_calls.argtypes = [ctypes.c_int]
     lib.vei_fmu_calls.restype = ctypes.c_char_p
     lib.vei_batch_run_fmu.argtypes = [
         ctypes.POINTER(Scene), ctypes.POINTER(Variant), ctypes.c_int, P, P, ctypes.POINTER(FmuEgoStruct)
@@ -55,20 +56,20 @@ def _lib():
 
 
 @functools.cache
-def calls() -> tuple[str, ...]:
-    """The FMI calls by the index ``faults`` and ``progress`` give."""
-    return tuple(_lib().vei_fmu_calls().decode().split(","))
+def calls(fmi3: bool = False) -> tuple[str, ...]:
+    """The FMI calls (of FMI 3.0 with ``fmi3``) by the index ``faults`` and ``progress`` give."""
+    return tuple(_lib().vei_fmu_calls(int(fmi3)).decode().split(","))
 
 
 _OPEN: dict[str, int] = {}
 
 
-def open_library(path: str) -> int:
-    """The FMU's shared library opened (once per process) with its fmi2 functions resolved; OSError with
-    the loader's reason otherwise."""
+def open_library(path: str, fmi3: bool = False) -> int:
+    """The FMU's shared library opened (once per process) with its fmi2 (``fmi3``: fmi3) functions
+    resolved; OSError with the loader's reason otherwise."""
     if path not in _OPEN:
         err = ctypes.create_string_buffer(512)
-        handle = _lib().vei_fmu_open(path.encode(), err, len(err))
+        handle = _lib().vei_fmu_open(path.encode(), int(fmi3), err, len(err))
         if not handle:
             raise OSError(err.value.decode(errors="replace"))
         _OPEN[path] = handle
@@ -89,7 +90,8 @@ def run(
     record: bool = False,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray | None]:
     """(outputs (V, columns), faults (V, FAULT_FIELDS), trajectories or None) of ``variants`` with the FMU
-    on the ego. ``ports``: ``guid``, ``resource_uri``, ``inputs`` [(value reference, input index)],
+    on the ego (``handle``: :func:`open_library`'s). ``ports``: ``guid``, ``resource_uri`` (FMI 3.0: the
+    instantiation token and the resource directory's path), ``inputs`` [(value reference, input index)],
     ``output`` (a_cmd's value reference), ``parameters`` [(value reference, kind 0/1/2)], ``max_speed``,
     ``max_command``; ``par_values`` (V, parameters)."""
     lib = _lib()

@@ -1,7 +1,7 @@
-/* vei_fmu_ego.h: a native FMI 2.0 co-simulation FMU on the ego of the sweep kernel (vei_batch_run_driven):
+/* vei_fmu_ego.h: a native FMI 2.0 or 3.0 co-simulation FMU on the ego of the sweep kernel (vei_batch_run_driven):
  * its shared library opened once per process (dlopen, the fmi2 functions as pointers), an instance per
  * variant, stepped at the kernel's step as vei run's plugged controller steps it
- * (vei_scenario.sut.fmu.FmuController): inputs set, fmi2DoStep(t, dt), a_cmd read and checked.
+ * (vei_scenario.sut.fmu.FmuController): inputs set, doStep(t, dt), a_cmd read and checked.
  *
  * A fault (a call returning more than fmi2Warning, a non-finite or absurd command) fails that variant
  * alone and is kept in `faults` for the caller to word. A crash or a hang inside the FMU cannot be caught
@@ -17,15 +17,18 @@
 enum { VEI_FMU_OK = 0, VEI_FMU_STATUS = 1, VEI_FMU_NULL = 2, VEI_FMU_NONFINITE = 3, VEI_FMU_ABSURD = 4 };
 enum { VEI_FMU_FAULT_FIELDS = 4 };
 /* progress (VEI_FMU_PROGRESS doubles, written before each call into the FMU): calls so far, the step
- * time, the call (VEI_FMU_CALLS' index, -1 between calls), the variant */
+ * time, the call (vei_fmu_calls' index, -1 between calls), the variant */
 enum { VEI_FMU_PROGRESS = 4 };
 #define VEI_FMU_CALLS                                                                                     \
     "fmi2Instantiate,fmi2SetupExperiment,fmi2EnterInitializationMode,fmi2SetReal,fmi2SetInteger,"         \
     "fmi2SetBoolean,fmi2ExitInitializationMode,fmi2DoStep,fmi2GetReal,fmi2Terminate,fmi2FreeInstance"
+#define VEI_FMU3_CALLS                                                                                    \
+    "fmi3InstantiateCoSimulation,,fmi3EnterInitializationMode,fmi3SetFloat64,fmi3SetInt32,fmi3SetBoolean," \
+    "fmi3ExitInitializationMode,fmi3DoStep,fmi3GetFloat64,fmi3Terminate,fmi3FreeInstance"
 
 typedef struct {
     void *lib; /* vei_fmu_open's */
-    const char *instance_name, *guid, *resource_uri;
+    const char *instance_name, *guid, *resource_uri; /* FMI 3.0: the token, the resource directory's path */
     int n_in;
     const int *in_vr, *in_which; /* value reference and VeiEgoDriver input index of each input it declares */
     int out_vr;                   /* a_cmd's */
@@ -37,11 +40,13 @@ typedef struct {
     volatile double *progress;    /* VEI_FMU_PROGRESS, or NULL */
 } VeiFmuEgo;
 
-/* The FMU's shared library opened and its fmi2 functions resolved; NULL with the reason in err. */
-void *vei_fmu_open(const char *library, char *err, int err_size);
+/* The FMU's shared library opened and its fmi2 (fmi3: FMI 3.0) functions resolved; NULL with the
+ * reason in err. */
+void *vei_fmu_open(const char *library, int fmi3, char *err, int err_size);
 
-/* The names of the calls, separated by commas (the index kept in faults and progress). */
-const char *vei_fmu_calls(void);
+/* The names of the calls of FMI 2.0 (fmi3: 3.0), separated by commas (the index kept in faults and
+ * progress; FMI 3.0 has no fmi2SetupExperiment, its name empty). */
+const char *vei_fmu_calls(int fmi3);
 
 /* vei_batch_run with the FMU on the ego. Returns 0, or -1 when out of memory. */
 int vei_batch_run_fmu(const VeiBatchScene *sc, const VeiBatchVariant *v, int n, double *out, double *traj,
