@@ -158,3 +158,76 @@ def test_a_crash_pinpoints_its_variant_among_many(scenario, faulty):
     failed = [k for k, r in enumerate(rows) if r["status"] != "ok"]
     assert failed == [k for k in range(40) if k % 7 == 3]
     assert all("crashed (SIGSEGV) in doStep" in rows[k]["error"] for k in failed)
+
+
+def test_a_hang_without_a_timeout_is_bounded_in_a_sweep(scenario, faulty, monkeypatch):
+    from vei_scenario.batch import fmu_ego
+
+    monkeypatch.setattr(fmu_ego, "CALL_BOUND_S", 0.3)
+    s = str(scenario.resolve())
+    plugged = parse_controller_options([f"Ego={faulty['HANG']}"])
+    rows = evaluate_local(s, [{"CapEnabled": "true"}, {"CapEnabled": "false"}], 0.01, 2, controllers=plugged)
+    assert rows[0]["error"] == (f"controller Ego={faulty['HANG']} at t = 1.00 s: step did not return within 0.3 s "
+                                "(a sweep's bound of one call without --controller-timeout)")  # fmt: skip
+    assert rows[1]["status"] == "ok"
+
+
+def test_a_death_outside_the_fmu_is_found_by_running_the_rest_one_at_a_time():
+    """A child that dies where its page names no call into the FMU: the rest of its chunk runs one
+    variant a child, and only the variant whose own run kills its process fails."""
+    import signal
+
+    from vei_scenario.sweep.contained import run_contained
+
+    def rows(indices, page):
+        if 7 in indices:
+            os.kill(os.getpid(), signal.SIGSEGV)
+        return [{"status": "ok", "i": i} for i in indices]
+
+    def death_row(how, t, call, timed_out):
+        return {"status": "error", "how": how, "call": call, "timed_out": timed_out}
+
+    before = _children()
+    got = run_contained(rows, [list(range(20))], 2, death_row)
+    assert _children() - before == set()
+    assert sorted(got) == list(range(20))
+    assert got[7] == {"status": "error", "how": "crashed (SIGSEGV)", "call": -1, "timed_out": False}
+    assert all(got[i] == {"status": "ok", "i": i} for i in range(20) if i != 7)
+
+
+def test_the_fmu_children_die_with_the_sweep(scenario, faulty, tmp_path):
+    """The sweep killed while its children hang in the FMU: none of them is left."""
+    import signal
+    import subprocess
+    import time
+
+    vary = ["--vary", "TimeShift=0:3:1", "--vary", "CapEnabled=true"]
+    argv = [sys.executable, "-m", "vei_scenario", "sweep", str(scenario), *vary, "--workers", "2", "--quiet",
+            "--controller", f"Ego={faulty['HANG']}", "-o", str(tmp_path)]  # fmt: skip
+    sweep = subprocess.Popen(argv, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+
+    def children_of(pid: int) -> set[int]:
+        out = set()
+        for d in Path("/proc").iterdir():
+            if d.name.isdigit():
+                try:
+                    if int((d / "stat").read_text().rsplit(")", 1)[1].split()[1]) == pid:
+                        out.add(int(d.name))
+                except (OSError, IndexError):
+                    continue
+        return out
+
+    try:
+        deadline = time.monotonic() + 60
+        while len(children_of(sweep.pid)) < 2 and time.monotonic() < deadline:
+            time.sleep(0.1)
+        time.sleep(2.0)  # (at t = 1 s of their first variant they hang)
+        kids = children_of(sweep.pid)
+        assert len(kids) >= 2
+    finally:
+        sweep.send_signal(signal.SIGKILL)
+        sweep.wait()
+    deadline = time.monotonic() + 5
+    while any(Path(f"/proc/{k}").exists() for k in kids) and time.monotonic() < deadline:
+        time.sleep(0.05)
+    assert not any(Path(f"/proc/{k}/stat").exists() and " Z " not in Path(f"/proc/{k}/stat").read_text() for k in kids)

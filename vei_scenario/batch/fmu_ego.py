@@ -33,6 +33,9 @@ from vei_scenario.loop import LoopScene
 from vei_scenario.sut.contract import MAX_COMMAND_MPS2, ControllerFault
 from vei_scenario.sut.fmu import _STATUS, INPUTS, FmuPorts, _typed, _unzipped
 
+#: The longest one call into the FMU may take in a sweep without ``--controller-timeout`` (s): a hang then
+#: fails its variant instead of holding up the sweep (no step of a driving function takes a minute).
+CALL_BOUND_S = 60.0
 #: parameter kinds the kernel sets (the rest, strings, in the interpreter)
 _KINDS = {"Real": 0, "Float64": 0, "Integer": 1, "Int32": 1, "Enumeration": 1, "Boolean": 2}
 #: where an FMI 2.0 and an FMI 3.0 FMU keep their binary for this platform
@@ -147,13 +150,22 @@ class KernelFmu:
             reason = f"step returned {float(value):g} m/s², beyond ±{MAX_COMMAND_MPS2:g} m/s² (no vehicle can)"
         return str(ControllerFault(self.label, reason, at))
 
+    @property
+    def call_bound_s(self) -> float:
+        """The longest one call into the FMU may take: ``--controller-timeout``, else :data:`CALL_BOUND_S`."""
+        return self.spec.step_timeout_s or CALL_BOUND_S
+
     def death_line(self, how: str, t: float, call: int, timeout: bool) -> str:
         """The line of a variant whose process died or overran inside the FMU (as the isolated FMU of
         ``vei run`` says it)."""
         at = None if math.isnan(t) else float(t)
         if timeout:
             what = "step" if at is not None else f"instantiating {self.name}"
-            limit = f"{self.spec.step_timeout_s:g} s (--controller-timeout)"
+            limit = (
+                f"{self.spec.step_timeout_s:g} s (--controller-timeout)"
+                if self.spec.step_timeout_s
+                else (f"{CALL_BOUND_S:g} s (a sweep's bound of one call without --controller-timeout)")
+            )
             return str(ControllerFault(self.label, f"{what} did not return within {limit}", at))
         where = "in doStep" if at is not None else "while instantiating it"
         names = fmu_ego.calls(self.ports.fmi3)

@@ -12,8 +12,9 @@ call into the FMU, which call, which variant and the step time (``vei_fmu_ego.h`
   chunk's other variants without a row are run again in a new child. Where the page names no call into
   the FMU (the child died elsewhere), the rest are run again one at a time, so the variant whose own
   run kills its process is the one that fails.
-* With ``--controller-timeout`` a call into the FMU that does not return within it is killed there:
-  its variant fails with the line ``vei run`` gives, and the rest go on in a new child.
+* A call into the FMU that does not return within ``--controller-timeout`` (without it, a minute:
+  :data:`vei_scenario.batch.fmu_ego.CALL_BOUND_S`) is killed there: its variant fails with the line
+  ``vei run`` gives, and the rest go on in a new child.
 * Children are killed and reaped when the parent stops (and die with it: PR_SET_PDEATHSIG), so no
   process is left behind.
 """

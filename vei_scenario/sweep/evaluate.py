@@ -136,7 +136,7 @@ def _evaluate_kernel_fmu(fmu, scenario, variants, dt, workers, progress, zone_tt
     def death_row(how: str, t: float, call: int, timed_out: bool) -> dict:
         return {"status": "error", "error": fmu.death_line(how, t, call, timed_out), "metrics": {}}
 
-    got = run_contained(rows, groups, workers, death_row, fmu.spec.step_timeout_s, progress, WATCHDOG_S)
+    got = run_contained(rows, groups, workers, death_row, fmu.call_bound_s, progress, WATCHDOG_S)
     out = []
     for i, v in enumerate(variants):
         if i not in got:
