@@ -231,3 +231,15 @@ def test_the_fmu_children_die_with_the_sweep(scenario, faulty, tmp_path):
     while any(Path(f"/proc/{k}").exists() for k in kids) and time.monotonic() < deadline:
         time.sleep(0.05)
     assert not any(Path(f"/proc/{k}/stat").exists() and " Z " not in Path(f"/proc/{k}/stat").read_text() for k in kids)
+
+
+def test_an_exception_of_vei_in_a_child_stops_the_evaluation():
+    from vei_scenario.sweep.contained import run_contained
+
+    def rows(indices, page):
+        raise ValueError("a bug of vei's own")
+
+    before = _children()
+    with pytest.raises(ValueError, match="a bug of vei's own"):
+        run_contained(rows, [list(range(10))], 2, lambda *a: {})
+    assert _children() - before == set()

@@ -15,6 +15,8 @@ call into the FMU, which call, which variant and the step time (``vei_fmu_ego.h`
 * A call into the FMU that does not return within ``--controller-timeout`` (without it, a minute:
   :data:`vei_scenario.batch.fmu_ego.CALL_BOUND_S`) is killed there: its variant fails with the line
   ``vei run`` gives, and the rest go on in a new child.
+* An exception of vei's own code in a child (not the FMU's fault, which is a row) stops the evaluation
+  and is raised in the parent, as a pool raises it.
 * Children are killed and reaped when the parent stops (and die with it: PR_SET_PDEATHSIG), so no
   process is left behind.
 """
@@ -40,6 +42,7 @@ from vei_scenario.errors import VeiInputError
 #: doubles of one child's page: the kernel's progress, then the chunk position of the batch it runs
 _SLOT = PROGRESS + 1
 _HEADER = struct.Struct("<iI")  # (first position in the chunk, payload length)
+_FAILED = -1  # (the payload: the exception that stopped the child)
 #: variants a child runs per kernel call, and sends back together
 BATCH = 32
 
@@ -140,7 +143,10 @@ def _fork(run_rows, chunk: list[int], page: np.ndarray, slot: int, alone: bool, 
             signal.signal(signal.SIGINT, signal.SIG_IGN)  # (Ctrl-C is the parent's to handle)
             for k in range(0, len(chunk), BATCH):
                 page[PROGRESS] = k
-                payload = pickle.dumps(run_rows(chunk[k : k + BATCH], page), pickle.HIGHEST_PROTOCOL)
+                try:
+                    payload = pickle.dumps(run_rows(chunk[k : k + BATCH], page), pickle.HIGHEST_PROTOCOL)
+                except Exception as exc:  # noqa: BLE001 (vei's own failure, not the FMU's: the parent raises it)
+                    payload, k = _exception(exc), _FAILED
                 _write_all(w, _HEADER.pack(k, len(payload)) + payload)
             code = 0
         except BaseException:  # noqa: BLE001, S110 (the parent says what happened, from the missing rows)
@@ -151,6 +157,15 @@ def _fork(run_rows, chunk: list[int], page: np.ndarray, slot: int, alone: bool, 
     return _Child(pid, r, slot, chunk, alone, since=time.monotonic())
 
 
+def _exception(exc: Exception) -> bytes:
+    try:
+        payload = pickle.dumps(exc, pickle.HIGHEST_PROTOCOL)
+        pickle.loads(payload)  # (some exceptions pickle but cannot be rebuilt from their arguments)
+        return payload
+    except Exception:  # noqa: BLE001 (an exception that cannot travel: its text)
+        return pickle.dumps(RuntimeError(f"{type(exc).__name__}: {exc}"))
+
+
 def _take(child: _Child, rows: dict, progress) -> None:
     buf = child.buffer
     while len(buf) >= _HEADER.size:
@@ -159,6 +174,8 @@ def _take(child: _Child, rows: dict, progress) -> None:
             break
         batch = pickle.loads(bytes(buf[_HEADER.size : _HEADER.size + length]))
         del buf[: _HEADER.size + length]
+        if first == _FAILED:  # (an exception of vei's own code in the child: it stops the evaluation)
+            raise batch
         for k, row in enumerate(batch):
             index = child.chunk[first + k]
             rows[index] = row
