@@ -243,3 +243,24 @@ def test_an_exception_of_vei_in_a_child_stops_the_evaluation():
     with pytest.raises(ValueError, match="a bug of vei's own"):
         run_contained(rows, [list(range(10))], 2, lambda *a: {})
     assert _children() - before == set()
+
+
+def test_every_input_reaches_a_kernel_fmu_as_the_interpreter_gives_it(scenario, tmp_path):
+    """A C FMU that reads all 15 inputs (the threat's acceleration, the box sizes, the time ...) into its
+    command: the kernel's rows are the interpreter's, and the riders' differences reach the ego."""
+    from vei_scenario.core.sources import compiler
+
+    if shutil.which(compiler()) is None:
+        pytest.skip(f"no C compiler ({compiler()}) to build the native test FMU")
+    sys.path.insert(0, str(DATA / "native_src"))
+    try:
+        from build import build_all_inputs
+    finally:
+        sys.path.remove(str(DATA / "native_src"))
+    s = str(scenario.resolve())
+    plugged = parse_controller_options([f"Ego={build_all_inputs(tmp_path)}"])
+    assert _kernel_fmu(s, 0.01, "2d", plugged) is not None
+    variants = [{"TimeShift": ts, "RiderType": r} for ts in ("0.5", "3.3") for r in ("normal", "aggressive", "replay")]
+    rows = evaluate_local(s, variants, 0.01, 2, controllers=plugged)
+    assert rows == [evaluate_variant(s, v, 0.01, controllers=plugged) for v in variants]
+    assert len({r["metrics"]["peak_decel_mps2"] for r in rows[3:]}) == 3
