@@ -101,7 +101,7 @@ class KernelFmu:
     def parameters(self, variants: list[dict[str, str]]) -> tuple[list, np.ndarray, list[str | None]]:
         """(value references and kinds of the parameters set, values (V, P), per variant the fault line
         of a value that is not of its parameter's type, else None). The parameters set are those the
-        FMU declares among the properties, in their order; String parameters refuse the kernel."""
+        FMU declares among the properties, in their order (none of type String: :func:`kernel_fmu`)."""
         props = [self.properties(v) for v in variants]
         names = [n for n in dict.fromkeys(k for p in props for k in p) if n in self.ports.parameters]
         layout = [(self.ports.parameters[n][0], _KINDS[self.ports.parameters[n][1]]) for n in names]
@@ -115,17 +115,14 @@ class KernelFmu:
                 errors[i] = str(fault)
         return layout, values, errors
 
-    def accepts(self, values: dict[str, str]) -> bool:
-        """Whether the kernel plays this variant (the rest go through the interpreter)."""
-        return self.scene.accepts(values)
-
-    def rows(self, variants: list[dict[str, str]], progress: np.ndarray | None = None) -> list[dict]:
+    def rows(self, variants: list[dict[str, str]], page: np.ndarray | None = None) -> list[dict]:
         """The rows of variants that share their model parameters (:meth:`LoopScene.model_groups`), in
-        this process: the FMU's binary runs here."""
+        this process: the FMU's binary runs here (``page``: where the kernel notes each call into it,
+        :mod:`vei_scenario.sweep.contained`)."""
         handle = fmu_ego.open_library(self.library, self.ports.fmi3)
         layout, values, errors = self.parameters(variants)
         scene, arr = self.native.prepare(variants)
-        out, faults, _ = fmu_ego.run(scene, arr, handle, {**self.layout, "parameters": layout}, values, progress)
+        out, faults, _ = fmu_ego.run(scene, arr, handle, {**self.layout, "parameters": layout}, values, page)
         metrics = self.native.rows(out)
         rows = []
         for i in range(len(variants)):
