@@ -36,6 +36,8 @@ from vei_scenario.sut.fmu import _STATUS, INPUTS, FmuPorts, _typed, _unzipped
 #: The longest one call into the FMU may take in a sweep without ``--controller-timeout`` (s): a hang then
 #: fails its variant instead of holding up the sweep (no step of a driving function takes a minute).
 CALL_BOUND_S = 60.0
+#: the calls (vei_fmu_calls' indices) up to the end of initialisation
+_LAST_INIT_CALL = 6
 #: parameter kinds the kernel sets (the rest, strings, in the interpreter)
 _KINDS = {"Real": 0, "Float64": 0, "Integer": 1, "Int32": 1, "Enumeration": 1, "Boolean": 2}
 #: where an FMI 2.0 and an FMI 3.0 FMU keep their binary for this platform
@@ -153,22 +155,27 @@ class KernelFmu:
         return self.spec.step_timeout_s or CALL_BOUND_S
 
     def death_line(self, how: str, t: float, call: int, timeout: bool) -> str:
-        """The line of a variant whose process died or overran inside the FMU (as the isolated FMU of
-        ``vei run`` says it)."""
+        """The line of a variant whose process died (``how``) or overran in call number ``call`` into
+        the FMU (-1: between calls) at step time ``t`` (NaN while instantiating), as the isolated FMU of
+        ``vei run`` says it."""
         at = None if math.isnan(t) else float(t)
+        name = fmu_ego.calls(self.ports.fmi3)[call] if call >= 0 else ""
+        instantiating = 0 <= call <= _LAST_INIT_CALL
         if timeout:
-            what = "step" if at is not None else f"instantiating {self.name}"
+            what = f"instantiating {self.name}" if instantiating else ("step" if "DoStep" in name else name)
             limit = (
                 f"{self.spec.step_timeout_s:g} s (--controller-timeout)"
                 if self.spec.step_timeout_s
-                else (f"{CALL_BOUND_S:g} s (a sweep's bound of one call without --controller-timeout)")
+                else f"{CALL_BOUND_S:g} s (a sweep's bound of one call without --controller-timeout)"
             )
             return str(ControllerFault(self.label, f"{what} did not return within {limit}", at))
-        where = "in doStep" if at is not None else "while instantiating it"
-        names = fmu_ego.calls(self.ports.fmi3)
-        if call >= 0 and at is not None and names[call] not in ("fmi2DoStep", "fmi3DoStep"):
-            where = f"in {names[call]}"
-        return str(ControllerFault(self.label, f"{self.name} {how} {where}", at))
+        if instantiating:
+            where = " while instantiating it"
+        elif "DoStep" in name:
+            where = " in doStep"
+        else:  # (in fmi2SetReal, fmi2Terminate ..., or between calls: a worker run alone with its variant)
+            where = f" in {name}" if name else ""
+        return str(ControllerFault(self.label, f"{self.name} {how}{where}", at))
 
 
 def kernel_fmu(native: NativeBatch | None, controllers: tuple) -> KernelFmu | None:

@@ -140,6 +140,7 @@ typedef struct {
     fmi2Component c;
     int variant;
     double *fault;
+    double t; /* the last step's time */
     fmi2ValueReference in_vr[VEI_EGO_INPUTS];
     double calls;
 } Host;
@@ -209,6 +210,7 @@ static int begin(void *self, int variant) {
     h->variant = variant;
     h->fault = g->faults + (size_t)variant * VEI_FMU_FAULT_FIELDS;
     h->fault[0] = VEI_FMU_OK;
+    h->t = NAN;
     if (h->fmi->fmi3) return begin3(h);
     progress(h, C_INSTANTIATE, NAN);
     h->c = h->f->instantiate(g->instance_name, 1 /* fmi2CoSimulation */, g->guid, g->resource_uri, &CALLBACKS, 0, 0);
@@ -236,6 +238,7 @@ static int begin(void *self, int variant) {
 static int step(void *self, const double *in, double t, double dt, double *a_cmd) {
     Host *h = (Host *)self;
     const VeiFmuEgo *g = h->cfg;
+    h->t = t;
     double values[VEI_EGO_INPUTS];
     for (int k = 0; k < g->n_in; k++) values[k] = in[g->in_which[k]];
     fmi2ValueReference out = (fmi2ValueReference)g->out_vr;
@@ -265,14 +268,14 @@ static void end(void *self, int failed) {
     Host *h = (Host *)self;
     if (failed || h->c == NULL) return; /* (ended where it failed) */
     if (h->fmi->fmi3) {
-        progress(h, C_TERMINATE, NAN), h->g->terminate(h->c);
-        progress(h, C_FREE, NAN), h->g->free_instance(h->c);
+        progress(h, C_TERMINATE, h->t), h->g->terminate(h->c);
+        progress(h, C_FREE, h->t), h->g->free_instance(h->c);
     } else {
-        progress(h, C_TERMINATE, NAN), h->f->terminate(h->c);
-        progress(h, C_FREE, NAN), h->f->free_instance(h->c);
+        progress(h, C_TERMINATE, h->t), h->f->terminate(h->c);
+        progress(h, C_FREE, h->t), h->f->free_instance(h->c);
     }
     h->c = NULL;
-    progress(h, -1, NAN);
+    progress(h, -1, h->t);
 }
 
 int vei_batch_run_fmu(const VeiBatchScene *sc, const VeiBatchVariant *v, int n, double *out, double *traj,
