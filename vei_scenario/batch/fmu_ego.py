@@ -38,6 +38,8 @@ from vei_scenario.sut.fmu import _STATUS, INPUTS, FmuPorts, _typed, _unzipped
 CALL_BOUND_S = 60.0
 #: the calls (vei_fmu_calls' indices) up to the end of initialisation
 _LAST_INIT_CALL = 6
+#: the calls of a step: inputs set, doStep, a_cmd read
+_STEP_CALLS = (3, 7, 8)
 #: parameter kinds the kernel sets (the rest, strings, in the interpreter)
 _KINDS = {"Real": 0, "Float64": 0, "Integer": 1, "Int32": 1, "Enumeration": 1, "Boolean": 2}
 #: where an FMI 2.0 and an FMI 3.0 FMU keep their binary for this platform
@@ -160,9 +162,10 @@ class KernelFmu:
         ``vei run`` says it."""
         at = None if math.isnan(t) else float(t)
         name = fmu_ego.calls(self.ports.fmi3)[call] if call >= 0 else ""
-        instantiating = 0 <= call <= _LAST_INIT_CALL
+        instantiating = at is None and 0 <= call <= _LAST_INIT_CALL
+        stepping = at is not None and call in _STEP_CALLS
         if timeout:
-            what = f"instantiating {self.name}" if instantiating else ("step" if "DoStep" in name else name)
+            what = f"instantiating {self.name}" if instantiating else ("step" if stepping or not name else name)
             limit = (
                 f"{self.spec.step_timeout_s:g} s (--controller-timeout)"
                 if self.spec.step_timeout_s
