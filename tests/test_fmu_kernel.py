@@ -4,6 +4,7 @@ and as the interpreter's plugged FMU, and its faults failing their variants alon
 from __future__ import annotations
 
 import json
+import math
 import os
 import shutil
 import sys
@@ -264,3 +265,19 @@ def test_every_input_reaches_a_kernel_fmu_as_the_interpreter_gives_it(scenario, 
     rows = evaluate_local(s, variants, 0.01, 2, controllers=plugged)
     assert rows == [evaluate_variant(s, v, 0.01, controllers=plugged) for v in variants]
     assert len({r["metrics"]["peak_decel_mps2"] for r in rows[3:]}) == 3
+
+
+@pytest.mark.parametrize(
+    ("how", "t", "call", "timed_out", "says"),
+    [
+        ("crashed (SIGSEGV)", math.nan, 0, False, ": vei_cap.fmu crashed (SIGSEGV) while instantiating it"),
+        ("crashed (SIGSEGV)", 1.0, 7, False, " at t = 1.00 s: vei_cap.fmu crashed (SIGSEGV) in doStep"),
+        ("crashed (SIGABRT)", 24.99, 9, False, " at t = 24.99 s: vei_cap.fmu crashed (SIGABRT) in fmi2Terminate"),
+        ("ended with exit status 3", 2.0, 8, False, " at t = 2.00 s: vei_cap.fmu ended with exit status 3 in fmi2GetReal"),  # noqa: E501
+        ("", math.nan, 2, True, ": instantiating vei_cap.fmu did not return within 60 s (a sweep's bound"),
+        ("", 2.0, 3, True, " at t = 2.00 s: step did not return within 60 s (a sweep's bound"),
+    ],
+)  # fmt: skip
+def test_a_workers_death_is_said_by_the_call_it_happened_in(scenario, cap_fmu, how, t, call, timed_out, says):
+    k = _kernel_fmu(str(scenario.resolve()), 0.01, "2d", parse_controller_options([f"Ego={cap_fmu}"], [CRUISE]))
+    assert k.death_line(how, t, call, timed_out).startswith(f"controller Ego={cap_fmu}{says}")
