@@ -306,6 +306,8 @@ def _build_python(model: str, loop, out_dir: Path) -> Path:
     return write_fmu(Path(out_dir) / f"{name}.fmu", entries)
 
 
-def build_osmp_rider(scenario: str | Path, out_dir: Path, values: dict[str, str] | None = None) -> Path:
+def build_osmp_rider(
+    scenario: str | Path, out_dir: Path, values: dict[str, str] | None = None, backend: str = "native"
+) -> Path:
     """:func:`build_osmp` of the rider."""
-    return build_osmp("sfm", scenario, out_dir, values)
+    return build_osmp("sfm", scenario, out_dir, values, backend)
