@@ -135,16 +135,16 @@ def _record(case_study: Path, fmu: Path, values: dict, steps: int) -> tuple[list
     return views, updates
 
 
-#: In a process where vei_scenario (and pythonfmu) cannot be imported: fmpy steps the FMU through the
+#: In a process where vei_scenario cannot be imported: fmpy steps the FMU through the
 #: recorded SensorViews (t = 0.01 k) and prints each TrafficUpdate's host position, or the failure.
 _ALONE = r"""
 import ctypes, importlib.abc, json, sys
 class NoVei(importlib.abc.MetaPathFinder):
     def find_spec(self, name, path=None, target=None):
-        if name.split(".")[0] in ("vei_scenario", "pythonfmu"):
+        if name.split(".")[0] == "vei_scenario":
             raise ModuleNotFoundError(f"No module named {name!r} (blocked)")
 sys.meta_path.insert(0, NoVei())
-for gone in [m for m in sys.modules if m.split(".")[0] in ("vei_scenario", "pythonfmu")]:
+for gone in [m for m in sys.modules if m.split(".")[0] == "vei_scenario"]:
     del sys.modules[gone]
 try:
     import vei_scenario  # noqa
@@ -266,3 +266,43 @@ def test_bytes_that_are_no_sensor_view_fail_the_step_in_one_line(case_study, tmp
     assert len(lines) == 1
     assert lines[0].endswith("doStep at t = 0 s: OSMPSensorViewIn: 5 bytes that are no osi3.SensorView")
     slave.freeInstance()
+
+
+#: The OSMP host the test partners were written with (tests/data/osmp/host_alone.py: fmpy and osi3,
+#: written from the OSMP specification alone), in a process where vei_scenario cannot be imported:
+#: it checks the annotations, hosts the rider (id 1) beside a car (id 0) and checks each update's
+#: buffer is intact until the second doStep after it; prints the rider's positions.
+_PARTNER_HOST = r"""
+import importlib.abc, json, sys
+class NoVei(importlib.abc.MetaPathFinder):
+    def find_spec(self, name, path=None, target=None):
+        if name.split(".")[0] == "vei_scenario":
+            raise ModuleNotFoundError(f"No module named {name!r} (blocked)")
+sys.meta_path.insert(0, NoVei())
+sys.path.insert(0, sys.argv[2])
+import host_alone as h
+rider = h.Obj(id=1, x=float(sys.argv[3]), y=float(sys.argv[4]), yaw=float(sys.argv[5]), speed=0.0)
+car = h.Obj(id=0, x=rider.x - 40.0, y=rider.y - 30.0, yaw=0.0, speed=5.0)
+samples = h.simulate(sys.argv[1], rider, [car], t_end=float(sys.argv[6]), dt=0.01)
+print(json.dumps([[s.x, s.y] for s in samples[1:]]))
+"""
+
+
+def test_the_partners_own_host_runs_the_native_rider_as_vei_does(case_study, tmp_path):
+    """A replaying rider does not depend on the car: hosted by the partners' host, away from vei, its
+    TrafficUpdates hold the positions they hold in vei run (within rounding: that host's step times
+    are k·dt, vei's its own sums), and that host's own lifetime check of the output buffers passes."""
+    from osi3.osi_trafficupdate_pb2 import TrafficUpdate
+
+    values = {"RiderType": "replay", "CapEnabled": "false", "TimeShift": "2.197"}
+    fmu = build_osmp("sfm", case_study, tmp_path, values)
+    _, updates = _record(case_study, fmu, values, steps=500)
+    want = [[u.update[0].base.position.x, u.update[0].base.position.y] for u in map(TrafficUpdate.FromString, updates)]
+    first = TrafficUpdate.FromString(updates[0]).update[0].base
+    argv = [sys.executable, "-c", _PARTNER_HOST, str(fmu), str(Path(__file__).parent / "data" / "osmp"),
+            repr(first.position.x), repr(first.position.y), repr(first.orientation.yaw), "5.0"]  # fmt: skip
+    done = subprocess.run(argv, capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stderr[-1500:]
+    got = np.asarray(json.loads(done.stdout))
+    assert got.shape == (500, 2) and np.max(np.hypot(*(got - np.asarray(want)).T)) < 1e-9
+    assert len({tuple(p) for p in want}) > 100  # (it moves: the replayed track)
