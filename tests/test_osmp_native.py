@@ -306,3 +306,19 @@ def test_the_partners_own_host_runs_the_native_rider_as_vei_does(case_study, tmp
     got = np.asarray(json.loads(done.stdout))
     assert got.shape == (500, 2) and np.max(np.hypot(*(got - np.asarray(want)).T)) < 1e-9
     assert len({tuple(p) for p in want}) > 100  # (it moves: the replayed track)
+
+
+def test_a_runtime_that_does_not_link_into_a_shared_object_is_said_in_one_line(tmp_path, monkeypatch):
+    """The probe links the runtime as the build does: an archive of code that is not position-
+    independent (built here with -fno-pic) is refused before anything is built."""
+    from vei_scenario.core.sources import compiler
+
+    (tmp_path / "fake.c").write_text('static char v[] = "1.4.1";\nconst char *protobuf_c_version(void) { return v; }\n')
+    subprocess.run([compiler(), "-c", "-O2", "-fno-pic", "-fno-pie", "fake.c"], cwd=tmp_path, check=True)
+    subprocess.run(["ar", "rcs", "libprotobuf-c.a", "fake.o"], cwd=tmp_path, check=True)
+    monkeypatch.setattr(osmp_native, "_runtime_archive", lambda cc: tmp_path / "libprotobuf-c.a")
+    why = osmp_native.missing()
+    assert why is not None and "\n" not in why
+    assert why.startswith(f"{tmp_path / 'libprotobuf-c.a'} does not link into a shared object (")
+    monkeypatch.undo()
+    assert osmp_native.missing() is None

@@ -85,7 +85,23 @@ def missing() -> str | None:
         return "a native OSMP FMU needs the OSI Python bindings for OSI's schema: pip install osi-python"
     if lacking:
         return f"a native OSMP FMU needs {' and '.join(lacking)} (Debian/Ubuntu: {INSTALL})"
-    return None
+    return _links(cc)
+
+
+def _links(cc: str) -> str | None:
+    """None where the static protobuf-c runtime links into a shared object (position-independent
+    code, as Debian's, built for executables, is once its names are kept inside); else why not."""
+    archive = _runtime_archive(cc)
+    with tempfile.TemporaryDirectory(prefix="vei-osmp-probe-") as tmp:
+        (Path(tmp) / "probe.c").write_text(
+            "#include <protobuf-c/protobuf-c.h>\nconst char *probe(void) { return protobuf_c_version(); }\n"
+        )
+        cmd = [cc, "-shared", "-fPIC", "-o", "probe.so", "probe.c", str(archive), "-Wl,--exclude-libs,ALL"]
+        done = subprocess.run(cmd, cwd=tmp, capture_output=True, text=True)
+    if done.returncode == 0:
+        return None
+    last = " ".join(done.stderr.strip().splitlines()[-1:])
+    return f"{archive} does not link into a shared object ({last}); a native OSMP FMU needs a position-independent one"
 
 
 #: what the participant reads of a SensorView: (message, its fields); the rest stays undecoded
@@ -192,9 +208,10 @@ def _config(model: str, guid: str, identifier: str, other_entity: str, osi: tupl
     return "\n".join(lines) + "\n"
 
 
-def model_description(model: str, identifier: str, guid: str, osi: str) -> bytes:
-    """The participant's modelDescription: FMI 2.0 co-simulation, OSMP's model annotation and its
-    binary variables (each annotated with its name, role and MIME type), the other object's id."""
+def model_description(model: str, identifier: str, guid: str, osi: str, stop_time: float | None = None) -> bytes:
+    """The participant's modelDescription: FMI 2.0 co-simulation, the scenario's length as default
+    experiment, OSMP's model annotation and its binary variables (each annotated with its name, role
+    and MIME type), the other object's id."""
     from lxml import etree
 
     _, other, description = PARTICIPANTS[model]
@@ -207,6 +224,8 @@ def model_description(model: str, identifier: str, guid: str, osi: str) -> bytes
     cats = etree.SubElement(root, "LogCategories")
     for name in ("logStatusWarning", "logStatusError"):
         etree.SubElement(cats, "Category", name=name)
+    if stop_time is not None:
+        etree.SubElement(root, "DefaultExperiment", startTime="0.0", stopTime=repr(float(stop_time)))
     vendor = etree.SubElement(root, "VendorAnnotations")
     tool = etree.SubElement(vendor, "Tool", name="net.pmsf.osmp", nsmap={"osmp": _NS})
     etree.SubElement(tool, f"{{{_NS}}}osmp", version=OSMP_VERSION, **{"osi-version": osi})
@@ -303,7 +322,7 @@ def build_native_osmp(model: str, specs: dict[str, ModelSpec], other_entity: str
                 "-Wl,--exclude-libs,ALL", "-lm"]  # fmt: skip
         _run(link, build, "linking the participant")
         entries = {
-            "modelDescription.xml": model_description(model, identifier, guid, osi),
+            "modelDescription.xml": model_description(model, identifier, guid, osi, specs[models[0]].stop_time),
             f"binaries/linux64/{binary}": (build / binary).read_bytes(),
         }
     return write_fmu(Path(out_dir) / f"{name}.fmu", entries)

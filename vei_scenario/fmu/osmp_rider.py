@@ -268,7 +268,7 @@ def build_osmp(
         from vei_scenario.fmu.variables import SPECS
 
         models = ("sfm",) if model == "sfm" else ("cap", "ego")
-        specs = {m: SPECS[m].with_starts(loop.parameters[m]) for m in models}
+        specs = {m: SPECS[m].with_starts(loop.parameters[m], loop.steps * loop.dt) for m in models}
         other = loop.entities["ego" if model == "sfm" else "sfm"]
         return build_native_osmp(model, specs, other, Path(out_dir), KINDS[model][2])
     return _build_python(model, loop, Path(out_dir))
