@@ -1,6 +1,7 @@
 """vei's rider and planner as native C OSMP traffic participants (``vei fmu build sfm cap --osmp``):
 hosted back in ``vei run`` they are the built-in models; they declare what OSMP requires; they run in a
-process where vei cannot be imported; their output buffers stay valid as OSMP requires.
+process where vei cannot be imported (fmpy, the test partners' own host) and in a C host with no Python
+at all; their output buffers stay valid as OSMP requires.
 
 They need protoc-c and the protobuf-c runtime (Debian: protobuf-c-compiler, libprotobuf-c-dev); where
 those are missing the tests skip with the line ``vei fmu build --osmp`` prints."""
@@ -9,6 +10,7 @@ from __future__ import annotations
 
 import ctypes
 import json
+import math
 import subprocess
 import sys
 import zipfile
@@ -322,3 +324,39 @@ def test_a_runtime_that_does_not_link_into_a_shared_object_is_said_in_one_line(t
     assert why.startswith(f"{tmp_path / 'libprotobuf-c.a'} does not link into a shared object (")
     monkeypatch.undo()
     assert osmp_native.missing() is None
+
+
+def test_a_c_host_with_no_python_in_it_steps_the_native_rider(case_study, tmp_path):
+    """tests/data/osmp_host/c_host.c loads the participant's binary with dlopen and steps it through
+    recorded SensorViews: the TrafficUpdates it gets back are vei run's (within rounding of the step
+    times: k·0.01 there)."""
+    import struct
+
+    from osi3.osi_trafficupdate_pb2 import TrafficUpdate
+
+    from vei_scenario.core.sources import compiler
+    from vei_scenario.fmu.native import fmi_header_dir
+
+    values = {"RiderType": "aggressive", "CapEnabled": "true", "TimeShift": "2.197"}
+    fmu = build_osmp("sfm", case_study, tmp_path, values)
+    views, updates = _record(case_study, fmu, values, steps=600)
+    (tmp_path / "views.bin").write_bytes(b"".join(struct.pack("<I", len(v)) + v for v in views))
+    host = tmp_path / "c_host"
+    source = Path(__file__).parent / "data" / "osmp_host" / "c_host.c"
+    subprocess.run([compiler(), "-O2", "-std=c99", f"-I{fmi_header_dir()}", "-o", str(host), str(source), "-ldl"],
+                   check=True)  # fmt: skip
+    zipfile.ZipFile(fmu).extractall(tmp_path / "fmu")
+    binary = tmp_path / "fmu" / "binaries" / "linux64" / "vei_sfm_osmp.so"
+    guid = read_osmp_ports(fmu, "t").guid
+    done = subprocess.run([str(host), str(binary), guid, str(tmp_path / "views.bin"), str(tmp_path / "out.bin")],
+                          capture_output=True, text=True, timeout=60, env={})  # fmt: skip
+    assert done.returncode == 0, done.stderr[-1500:]
+    data, got = (tmp_path / "out.bin").read_bytes(), []
+    while data:
+        (n,) = struct.unpack("<I", data[:4])
+        got.append(TrafficUpdate.FromString(data[4 : 4 + n]).update[0].base)
+        data = data[4 + n :]
+    want = [TrafficUpdate.FromString(u).update[0].base for u in updates]
+    assert len(got) == len(want) == 600
+    assert max(math.hypot(a.position.x - b.position.x, a.position.y - b.position.y) for a, b in zip(got, want)) < 1e-9
+    assert len({(b.position.x, b.position.y) for b in want}) > 100  # (it rides)
