@@ -73,7 +73,7 @@ def missing() -> str | None:
     try:
         cc = compiler()
     except VeiInputError as exc:
-        return f"{exc.reason} ({INSTALL})"
+        return f"a native OSMP FMU needs a C compiler: {exc.reason}"
     lacking = []
     if shutil.which("protoc-c") is None:
         lacking.append("protoc-c")
