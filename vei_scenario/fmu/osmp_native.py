@@ -260,6 +260,48 @@ def _run(cmd: list[str], cwd: Path, what: str) -> None:
         raise VeiInputError(None, "--osmp", f"{what} failed: {last}")
 
 
+_SHARED_SOURCES = ("vei_models.c", "vei_models.h", "fmu_instance.h", "fmu_common.c", "osmp_model.c", "osmp_model.h",
+                   "osmp_wrapper.c")  # fmt: skip
+
+
+def _sources(models: tuple[str, ...]) -> dict[str, bytes]:
+    """The C the binary is compiled from (path in the build folder -> content): the core's models,
+    the FMU models' glue, the OSMP wrapper, FMI's headers; each model's own files in its folder."""
+    src, core, fmi = c_source_dir(), source_dir(), fmi_header_dir()
+    files = {n: ((core if (core / n).is_file() else src) / n).read_bytes() for n in _SHARED_SOURCES}
+    files.update({h: (fmi / h).read_bytes() for h in ("fmi2Functions.h", "fmi2FunctionTypes.h", "fmi2TypesPlatform.h")})
+    for m in models:
+        files[f"{m}/model.h"] = f'#include "{m}_model.h"\n'.encode()
+        for n in (f"{m}_model.h", f"{m}_model.c"):
+            files[f"{m}/{n}"] = (src / n).read_bytes()
+    return files
+
+
+def _compile(build: Path, cc: str, models: tuple[str, ...], binary: str) -> None:
+    """OSI's C code generated from ``build/osi.pb``, every unit compiled, the participant linked."""
+    from google.protobuf import descriptor_pb2
+
+    protos = [f.name for f in descriptor_pb2.FileDescriptorSet.FromString((build / "osi.pb").read_bytes()).file]
+    (build / "gen").mkdir()
+    _run(["protoc-c", "--descriptor_set_in=osi.pb", "--c_out=gen", *protos], build, "protoc-c (OSI's C code)")
+    objects: list[str] = []
+    for m in models:  # each model alone, its names prefixed (osmp_model.h)
+        renames = [f"-D{n}={m}_{n}" for n in _RENAMED]
+        for unit in (f"{m}/{m}_model.c", "fmu_common.c", "osmp_model.c"):
+            obj = f"{m}/{Path(unit).stem}.o"
+            _run([cc, *_CFLAGS, "-Wall", *renames, f"-I{m}", "-I.", "-c", unit, "-o", obj], build, f"compiling {unit}")
+            objects.append(obj)
+    generated = sorted(str(p.relative_to(build)) for p in (build / "gen").rglob("*.c"))
+    for unit in ("vei_models.c", "osmp_wrapper.c", *generated):
+        obj = unit[:-2] + ".o"
+        warn = "-w" if unit.startswith("gen") else "-Wall"  # (protoc-c's code as it comes: its warnings not ours)
+        _run([cc, *_CFLAGS, warn, "-I.", "-Igen", "-c", unit, "-o", obj], build, f"compiling {unit}")
+        objects.append(obj)
+    link = [cc, "-shared", "-s", "-pthread", "-o", binary, *objects, str(_runtime_archive(cc)),
+            "-Wl,--exclude-libs,ALL", "-lm"]  # fmt: skip
+    _run(link, build, "linking the participant")
+
+
 def build_native_osmp(model: str, specs: dict[str, ModelSpec], other_entity: str, out_dir: Path, name: str) -> Path:
     """``out_dir/<name>.fmu``: the participant ``model`` (sfm or cap) with ``specs`` (each model of
     its binary with the scenario's start values) watching ``other_entity``."""
@@ -270,59 +312,22 @@ def build_native_osmp(model: str, specs: dict[str, ModelSpec], other_entity: str
 
     osi_tuple = host_osi_version()
     osi = ".".join(map(str, osi_tuple))
-    cc = compiler()
     models = PARTICIPANTS[model][0]
-    descriptors = osi_descriptor_set()
-    headers = {m: variables_header(specs[m], "{osmp}") for m in models}
-    digest = hashlib.sha256(descriptors)
-    for part in (model, other_entity, osi, *headers.values()):
-        digest.update(part.encode() + b"\0")
-    for src in ("osmp_wrapper.c", "osmp_model.c", "osmp_model.h"):
-        digest.update((c_source_dir() / src).read_bytes())
+    files = {"osi.pb": osi_descriptor_set(), **_sources(models)}
+    files.update({f"{m}/vei_{m}_variables.h": variables_header(specs[m], "{osmp}").encode() for m in models})
+    digest = hashlib.sha256(f"{model}\0{other_entity}\0{osi}\0".encode())
+    for path in sorted(files):  # (the GUID names what the binary is made of)
+        digest.update(path.encode() + b"\0" + files[path] + b"\0")
     guid = "{" + str(uuid.uuid5(uuid.NAMESPACE_URL, f"vei-scenario/osmp/{digest.hexdigest()}")) + "}"
-    identifier = name
-    src, core, fmi = c_source_dir(), source_dir(), fmi_header_dir()
+    files["osmp_config.h"] = _config(model, guid, name, other_entity, osi_tuple).encode()
     with tempfile.TemporaryDirectory(prefix="vei-osmp-native-") as tmp:
         build = Path(tmp)
-        (build / "osi.pb").write_bytes(descriptors)
-        gen = build / "gen"
-        gen.mkdir()
-        from google.protobuf import descriptor_pb2
-
-        protos = [f.name for f in descriptor_pb2.FileDescriptorSet.FromString(descriptors).file]
-        _run(["protoc-c", "--descriptor_set_in=osi.pb", "--c_out=gen", *protos], build, "protoc-c (OSI's C code)")
-        for name_ in ("vei_models.c", "vei_models.h", "fmu_instance.h", "fmu_common.c", "osmp_model.c",
-                      "osmp_model.h", "osmp_wrapper.c"):  # fmt: skip
-            (build / name_).write_bytes(((core if (core / name_).is_file() else src) / name_).read_bytes())
-        for h in ("fmi2Functions.h", "fmi2FunctionTypes.h", "fmi2TypesPlatform.h"):
-            (build / h).write_bytes((fmi / h).read_bytes())
-        (build / "osmp_config.h").write_text(_config(model, guid, identifier, other_entity, osi_tuple))
-        objects: list[str] = []
-        for m in models:  # each model alone, its names prefixed (osmp_model.h)
-            d = build / m
-            d.mkdir()
-            (d / f"vei_{m}_variables.h").write_text(headers[m])
-            (d / "model.h").write_text(f'#include "{m}_model.h"\n')
-            (d / f"{m}_model.h").write_bytes((src / f"{m}_model.h").read_bytes())
-            (d / f"{m}_model.c").write_bytes((src / f"{m}_model.c").read_bytes())
-            renames = [f"-D{n}={m}_{n}" for n in _RENAMED]
-            for unit in (f"{m}/{m}_model.c", "fmu_common.c", "osmp_model.c"):
-                obj = f"{m}/{Path(unit).stem}.o"
-                _run([cc, *_CFLAGS, "-Wall", *renames, f"-I{m}", "-I.", "-c", unit, "-o", obj], build,
-                     f"compiling {unit}")  # fmt: skip
-                objects.append(obj)
-        units = ["vei_models.c", "osmp_wrapper.c", *(str(p.relative_to(build)) for p in sorted(gen.rglob("*.c")))]
-        for unit in units:  # (protoc-c's code compiled as it comes: its warnings are not ours)
-            obj = unit[:-2] + ".o"
-            warn = "-w" if unit.startswith("gen") else "-Wall"
-            _run([cc, *_CFLAGS, warn, "-I.", "-Igen", "-c", unit, "-o", obj], build, f"compiling {unit}")
-            objects.append(obj)
-        binary = f"{identifier}.so"
-        link = [cc, "-shared", "-s", "-pthread", "-o", binary, *objects, str(_runtime_archive(cc)),
-                "-Wl,--exclude-libs,ALL", "-lm"]  # fmt: skip
-        _run(link, build, "linking the participant")
+        for path, data in files.items():
+            (build / path).parent.mkdir(parents=True, exist_ok=True)
+            (build / path).write_bytes(data)
+        _compile(build, compiler(), models, f"{name}.so")
         entries = {
-            "modelDescription.xml": model_description(model, identifier, guid, osi, specs[models[0]].stop_time),
-            f"binaries/linux64/{binary}": (build / binary).read_bytes(),
+            "modelDescription.xml": model_description(model, name, guid, osi, specs[models[0]].stop_time),
+            f"binaries/linux64/{name}.so": (build / f"{name}.so").read_bytes(),
         }
     return write_fmu(Path(out_dir) / f"{name}.fmu", entries)
