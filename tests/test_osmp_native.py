@@ -112,9 +112,9 @@ def test_without_the_toolchain_it_says_what_to_install_and_builds_the_pythonfmu_
     assert read_osmp_ports(tmp_path / "vei_sfm_osmp.fmu", "t").once_per_process  # (pythonfmu's)
 
 
-def _record(case_study: Path, fmu: Path, values: dict, steps: int) -> tuple[list[bytes], list[bytes]]:
-    """The first ``steps`` SensorViews vei gives the rider in a hosted run and the TrafficUpdates it
-    returns."""
+def _record(case_study: Path, fmu: Path, values: dict, steps: int, entity: str = "scooter_1"):
+    """The first ``steps`` SensorViews vei gives the participant on ``entity`` in a hosted run and the
+    TrafficUpdates it returns: (views, updates), serialised."""
     from vei_scenario.sut import osmp as host
 
     views, updates = [], []
@@ -131,7 +131,7 @@ def _record(case_study: Path, fmu: Path, values: dict, steps: int) -> tuple[list
 
     host.OsmpParticipant.step = recording
     try:
-        run_scenario(case_study, values, controllers=parse_controller_options([f"scooter_1={fmu}"]))
+        run_scenario(case_study, values, controllers=parse_controller_options([f"{entity}={fmu}"]))
     finally:
         host.OsmpParticipant.step = step
     return views, updates
@@ -326,7 +326,8 @@ def test_a_runtime_that_does_not_link_into_a_shared_object_is_said_in_one_line(t
     assert osmp_native.missing() is None
 
 
-def test_a_c_host_with_no_python_in_it_steps_the_native_rider(case_study, tmp_path):
+@pytest.mark.parametrize(("model", "entity"), [("sfm", "scooter_1"), ("cap", "Ego")])
+def test_a_c_host_with_no_python_in_it_steps_the_native_participants(case_study, tmp_path, model, entity):
     """tests/data/osmp_host/c_host.c loads the participant's binary with dlopen and steps it through
     recorded SensorViews: the TrafficUpdates it gets back are vei run's (within rounding of the step
     times: k·0.01 there)."""
@@ -338,15 +339,15 @@ def test_a_c_host_with_no_python_in_it_steps_the_native_rider(case_study, tmp_pa
     from vei_scenario.fmu.native import fmi_header_dir
 
     values = {"RiderType": "aggressive", "CapEnabled": "true", "TimeShift": "2.197"}
-    fmu = build_osmp("sfm", case_study, tmp_path, values)
-    views, updates = _record(case_study, fmu, values, steps=600)
+    fmu = build_osmp(model, case_study, tmp_path, values)
+    views, updates = _record(case_study, fmu, values, steps=600, entity=entity)
     (tmp_path / "views.bin").write_bytes(b"".join(struct.pack("<I", len(v)) + v for v in views))
     host = tmp_path / "c_host"
     source = Path(__file__).parent / "data" / "osmp_host" / "c_host.c"
     subprocess.run([compiler(), "-O2", "-std=c99", f"-I{fmi_header_dir()}", "-o", str(host), str(source), "-ldl"],
                    check=True)  # fmt: skip
     zipfile.ZipFile(fmu).extractall(tmp_path / "fmu")
-    binary = tmp_path / "fmu" / "binaries" / "linux64" / "vei_sfm_osmp.so"
+    binary = tmp_path / "fmu" / "binaries" / "linux64" / f"vei_{model}_osmp.so"
     guid = read_osmp_ports(fmu, "t").guid
     done = subprocess.run([str(host), str(binary), guid, str(tmp_path / "views.bin"), str(tmp_path / "out.bin")],
                           capture_output=True, text=True, timeout=60, env={})  # fmt: skip
