@@ -321,16 +321,26 @@ def _cmd_fmu_build(args: argparse.Namespace) -> int:
 
     values = parse_param_overrides(args.param) if args.scenario else None
     if args.osmp:
+        from vei_scenario.fmu.osmp_native import missing
         from vei_scenario.fmu.osmp_rider import KINDS, build_osmp
 
         models = _models(args.models)
         if not args.scenario or any(m not in KINDS for m in models):
             raise VeiInputError(None, "--osmp", "builds the rider (sfm) and the planner (cap) from a scenario: "
                                 "vei fmu build sfm cap --osmp --scenario XOSC")  # fmt: skip
+        if args.fmi != 2:
+            raise VeiInputError(None, "--fmi", "OSMP traffic participants are FMI 2.0 FMUs; use --fmi 2")
+        backend = args.backend or "native"
+        why = missing() if backend == "native" else None
+        if why and args.backend is None:  # (asked for nothing in particular: the pythonfmu participant)
+            print(f"vei: note: {why}; building pythonfmu participants instead, which need Python with "
+                  "vei-scenario where they run", file=sys.stderr)  # fmt: skip
+            backend = "python"
         for m in models:
-            print(f"wrote {build_osmp(m, args.scenario, Path(args.output), values)}")
+            print(f"wrote {build_osmp(m, args.scenario, Path(args.output), values, backend)}")
         return 0
-    for path in build_fmus(_models(args.models), args.output, args.backend, args.fmi, args.scenario, values).values():
+    built = build_fmus(_models(args.models), args.output, args.backend or "native", args.fmi, args.scenario, values)
+    for path in built.values():
         print(f"wrote {path}")
     return 0
 
@@ -1072,7 +1082,7 @@ def build_parser() -> argparse.ArgumentParser:
     fb = fsub.add_parser("build", help="build FMUs: sfm (e-scooter), cap (planner), ego (vehicle) or all")
     fb.add_argument("models", nargs="*", metavar="MODEL", help="sfm, cap, ego or all (default: all)")
     fb.add_argument("-o", "--output", default="fmus/dist", help="directory for the .fmu files (default fmus/dist)")
-    fb.add_argument("--backend", choices=("native", "python"), default="native", help=BACKEND_HELP)
+    fb.add_argument("--backend", choices=("native", "python"), default=None, help=BACKEND_HELP)
     fb.add_argument("--fmi", type=int, choices=(2, 3), default=2, help="FMI version (default 2)")
     fb.add_argument(
         "--scenario",
@@ -1084,8 +1094,9 @@ def build_parser() -> argparse.ArgumentParser:
         "--osmp",
         action="store_true",
         help="the rider (sfm) or the planner with its vehicle (cap) as an ASAM OSI traffic participant (OSMP: "
-        "SensorView in, TrafficUpdate out), with the --scenario's values; pythonfmu FMUs that need Python with "
-        "vei-scenario to run",
+        "SensorView in, TrafficUpdate out), with the --scenario's values: native C FMUs that need neither vei nor "
+        "Python to run (built with protoc-c and libprotobuf-c); where those are missing, and without --backend "
+        "native, pythonfmu FMUs that need Python with vei-scenario to run (--backend python builds those)",
     )
     fb.set_defaults(func=_cmd_fmu_build)
     fs = fsub.add_parser("system", help="the scenario's closed loop (ego + scooter + planner) as an SSP 1.0 package")
