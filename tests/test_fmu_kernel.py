@@ -196,42 +196,60 @@ def test_a_death_outside_the_fmu_is_found_by_running_the_rest_one_at_a_time():
     assert all(got[i] == {"status": "ok", "i": i} for i in range(20) if i != 7)
 
 
-def test_the_fmu_children_die_with_the_sweep(scenario, faulty, tmp_path):
-    """The sweep killed while its children hang in the FMU: none of them is left."""
-    import signal
+def _children_of(pid: int) -> set[int]:
+    out = set()
+    for d in Path("/proc").iterdir():
+        if d.name.isdigit():
+            try:
+                if int((d / "stat").read_text().rsplit(")", 1)[1].split()[1]) == pid:
+                    out.add(int(d.name))
+            except (OSError, IndexError):
+                continue
+    return out
+
+
+def _killed_while_hanging(argv: list[str], n_children: int, how) -> None:
+    """Start ``vei``, wait until ``n_children`` children hang in the FMU, kill it with ``how``: none of
+    the children may be left (a hung doStep reads no end-of-file from its dead parent)."""
     import subprocess
     import time
 
-    vary = ["--vary", "TimeShift=0:3:1", "--vary", "CapEnabled=true"]
-    argv = [sys.executable, "-m", "vei_scenario", "sweep", str(scenario), *vary, "--workers", "2", "--quiet",
-            "--controller", f"Ego={faulty['HANG']}", "-o", str(tmp_path)]  # fmt: skip
-    sweep = subprocess.Popen(argv, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-
-    def children_of(pid: int) -> set[int]:
-        out = set()
-        for d in Path("/proc").iterdir():
-            if d.name.isdigit():
-                try:
-                    if int((d / "stat").read_text().rsplit(")", 1)[1].split()[1]) == pid:
-                        out.add(int(d.name))
-                except (OSError, IndexError):
-                    continue
-        return out
-
+    proc = subprocess.Popen(argv, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     try:
         deadline = time.monotonic() + 60
-        while len(children_of(sweep.pid)) < 2 and time.monotonic() < deadline:
+        while len(_children_of(proc.pid)) < n_children and time.monotonic() < deadline:
             time.sleep(0.1)
         time.sleep(2.0)  # (at t = 1 s of their first variant they hang)
-        kids = children_of(sweep.pid)
-        assert len(kids) >= 2
+        kids = _children_of(proc.pid)
+        assert len(kids) >= n_children
     finally:
-        sweep.send_signal(signal.SIGKILL)
-        sweep.wait()
+        proc.send_signal(how)
+        proc.wait()
     deadline = time.monotonic() + 5
     while any(Path(f"/proc/{k}").exists() for k in kids) and time.monotonic() < deadline:
         time.sleep(0.05)
     assert not any(Path(f"/proc/{k}/stat").exists() and " Z " not in Path(f"/proc/{k}/stat").read_text() for k in kids)
+
+
+def test_the_fmu_children_die_with_the_sweep(scenario, faulty, tmp_path):
+    """The sweep killed while its children hang in the FMU: none of them is left."""
+    import signal
+
+    vary = ["--vary", "TimeShift=0:3:1", "--vary", "CapEnabled=true"]
+    argv = [sys.executable, "-m", "vei_scenario", "sweep", str(scenario), *vary, "--workers", "2", "--quiet",
+            "--controller", f"Ego={faulty['HANG']}", "-o", str(tmp_path)]  # fmt: skip
+    _killed_while_hanging(argv, 2, signal.SIGKILL)
+
+
+@pytest.mark.parametrize("how", ["SIGTERM", "SIGKILL"])
+def test_the_fmu_child_of_a_run_dies_with_it(scenario, faulty, tmp_path, how):
+    """vei run steps a native FMU in a child of its own; killed while that child hangs in doStep (no
+    --controller-timeout), the child goes too."""
+    import signal
+
+    argv = [sys.executable, "-m", "vei_scenario", "run", str(scenario), "--param", "CapEnabled=true", "--no-plots",
+            "--controller", f"Ego={faulty['HANG']}", "-o", str(tmp_path)]  # fmt: skip
+    _killed_while_hanging(argv, 1, getattr(signal, how))
 
 
 def test_an_exception_of_vei_in_a_child_stops_the_evaluation():

@@ -23,7 +23,6 @@ call into the FMU, which call, which variant and the step time (``vei_fmu_ego.h`
 
 from __future__ import annotations
 
-import ctypes
 import mmap
 import os
 import pickle
@@ -36,6 +35,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from vei_scenario.child_process import die_with_parent
 from vei_scenario.core.fmu_ego import PROGRESS
 from vei_scenario.errors import VeiInputError
 
@@ -129,6 +129,7 @@ def run_contained(
 
 def _fork(run_rows, chunk: list[int], page: np.ndarray, slot: int, alone: bool, live: dict) -> _Child:
     r, w = os.pipe()
+    parent = os.getpid()
     pid = os.fork()
     if pid == 0:  # the child: run the chunk, batch by batch, and never return into the parent's code
         code = 1
@@ -136,7 +137,7 @@ def _fork(run_rows, chunk: list[int], page: np.ndarray, slot: int, alone: bool, 
             os.close(r)
             for fd in live:
                 os.close(fd)
-            _die_with_parent()
+            die_with_parent(parent)
             import faulthandler
 
             faulthandler.disable()  # (a crash is said once, by the parent, in one line)
@@ -227,17 +228,6 @@ def _kill(child: _Child) -> None:
             pass
         os.waitpid(child.pid, 0)
         child.pid = 0
-
-
-def _die_with_parent() -> None:
-    """Linux: this process gets SIGKILL when its parent dies (a hung FMU never outlives the sweep)."""
-    try:
-        libc = ctypes.CDLL(None, use_errno=True)
-        libc.prctl(1, signal.SIGKILL)  # PR_SET_PDEATHSIG
-    except (OSError, AttributeError):
-        pass
-    if os.getppid() == 1:  # (the parent died before the call)
-        os._exit(1)
 
 
 def _write_all(fd: int, data: bytes) -> None:
