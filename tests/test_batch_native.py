@@ -171,3 +171,25 @@ def test_the_text_probe_refuses_only_files_that_cannot_hold_the_loop(tmp_path):
     # controllers from a catalog: only the full reading can tell
     assert not probe('<ControllerCatalog><Directory path="c"/></ControllerCatalog>')
     assert not _cannot_be_a_loop(tmp_path / "missing.xosc")  # (the full reading says what is wrong)
+
+
+def test_an_ego_that_runs_out_of_its_path_stands_at_its_end_in_both(xosc):
+    """A recorded path ends where the recording did: an ego faster than the recorded one reaches its
+    end within the run and stands there, speed and acceleration 0 (a held position at a kept speed
+    would count as moving), in the kernel as in vei run."""
+    variants = [
+        {"TimeShift": "-3", "RiderType": rt, "CapEnabled": cap, "EgoCruiseSpeed": "12"}
+        for rt in ("replay", "aggressive")
+        for cap in ("true", "false")
+    ]
+    nb = NativeBatch(LoopScene(xosc))
+    _, traj = nb.run(nb.prepare(variants), threads=1, record=True)
+    for i, v in enumerate(variants):
+        tr = run_scenario(xosc, v).traces["Ego"]
+        moved = np.hypot(np.diff(tr.x), np.diff(tr.y))
+        end = int(np.argmax(moved == 0.0)) + 1  # (the first step that leaves it where it was)
+        assert moved[end - 1] == 0.0 and np.all(moved[end - 1 :] == 0.0), v  # it stands from there on
+        assert np.all(tr.speed[end - 1 :] == 0.0) and np.all(tr.accel[end - 1 :] == 0.0), v
+        assert tr.speed[end - 3] > 11.0, v  # (it ran there at its cruise speed)
+        for q, arr in enumerate((tr.x, tr.y, tr.yaw, tr.speed, tr.accel)):
+            np.testing.assert_allclose(traj[i, q], arr, rtol=0, atol=1e-9, err_msg=str((v, q)))

@@ -591,6 +591,12 @@ class FollowTrajectory(Action):
             # esmini 3.6 leaves it, its speed 0 (measured: it was a step further on, at its speed)
             e.speed, e.speed_profile, e.follower = 0.0, None, None
             return
+        if self.done and f is not None and e.modelled and not f.plays_time:
+            ctx.warn(
+                self.traj,
+                f"{self.entity} reaches the end of its path {self.traj.get('name')!r} at {ctx.t + ctx.dt:.2f} s and "
+                "stands there (its controller keeps it on its path)",
+            )
         # the path ends on a lane: the entity drives on along it by default (at the speed it had at
         # the end, a timed one too), as esmini's does. (An entity with one of vei's model controllers
         # — a compiled ego or rider — keeps to what the sweep kernel and the FMUs do; and

@@ -176,8 +176,8 @@ class CollisionAvoidanceController(Controller):
                 lane_keep(e, lon.s, ctx)
             else:
                 advance_along(e, lon.s)
-        else:
-            advance_along(e, lon.s)
+        elif advance_along(e, lon.s):  # (at its path's end it stands: vei_ego_drive)
+            lon = Longitudinal(lon.s, 0.0, 0.0)
         e.speed, e.accel = lon.v, lon.a
         e.status = f"cap_{self.state.mode}"
         return True

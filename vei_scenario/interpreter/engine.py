@@ -379,8 +379,8 @@ class Simulation:
             advance_along(e, ds - over)
             e.x += over * math.cos(e.yaw)
             e.y += over * math.sin(e.yaw)
-        else:
-            advance_along(e, ds)
+        elif advance_along(e, ds) and e.modelled:  # (a modelled one stands at its path's end: vei_ego_drive)
+            e.speed, e.accel = 0.0, 0.0
 
     def run(self, on_progress: Callable[[float], None] | None = None) -> RunResult:
         """Play the scenario to its end; the controllers that hold resources (an FMU) end with it."""

@@ -11,14 +11,18 @@ if TYPE_CHECKING:
     from vei_scenario.interpreter.entities import Entity
 
 
-def advance_along(e: Entity, ds: float) -> None:
-    """Move an entity ``ds`` metres along its followed path, or straight ahead without one."""
+def advance_along(e: Entity, ds: float) -> bool:
+    """Move an entity ``ds`` metres along its followed path, or straight ahead without one. True where
+    the step reaches the end of its path (forwards): a road user with a model of its own (a
+    vei-compiled ego) stands there, as the sweep kernel and the FMUs have it (:func:`stand`)."""
     f = e.follower
     if f is not None:  # (the core's path step, the one its quiet stretches take)
+        at_end = not f.reverse and f.s + ds >= f.polyline.length
         e.x, e.y, e.yaw, f.s = f.polyline.core.advance(f.s, ds, f.reverse)
-    else:
-        e.x += ds * math.cos(e.yaw)
-        e.y += ds * math.sin(e.yaw)
+        return at_end
+    e.x += ds * math.cos(e.yaw)
+    e.y += ds * math.sin(e.yaw)
+    return False
 
 
 def lane_keep(e, ds: float, ctx) -> None:

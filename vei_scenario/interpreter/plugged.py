@@ -123,8 +123,8 @@ class PluggedController:
                 lane_keep(e, s, ctx)
             else:
                 advance_along(e, s)
-        else:
-            advance_along(e, s)
+        elif advance_along(e, s):  # (at its path's end it stands: vei_ego_drive)
+            v, a = 0.0, 0.0
         e.speed, e.accel = v, a
         e.status = cmd.state
         return True

@@ -105,8 +105,11 @@ static void driven(const VeiBatchScene *sc, VeiCursor *cur, double *fs, double a
         ds = 0.5 * (*speed + v) * dt;
     }
     double along = *fs + ds, end = vei_polyline_length(&sc->ego_path);
-    *fs = along < end ? along : end;
-    *speed = v, *accel = a;
+    if (along < end) {
+        *fs = along, *speed = v, *accel = a;
+    } else { /* at the path's end it stands (vei_ego_drive) */
+        *fs = end, *speed = 0.0, *accel = 0.0;
+    }
     vei_polyline_at_s_seg(&sc->ego_path, *fs, cur, x, y, yaw);
 }
 
@@ -233,8 +236,9 @@ static int simulate(const VeiBatchScene *sc, const VeiBatchVariant *v, double *t
                 vei_ego_drive(&sc->ego_path, &on_path, &fs[0], a_cmd, &sc->limits, dt, &x[0], &y[0], &yaw[0],
                               &speed[0], &accel[0]);
             } else {
-                fs[0] = dmin(fs[0] + 0.5 * (v0 + v0) * dt, length);
+                fs[0] = fs[0] + 0.5 * (v0 + v0) * dt;
                 accel[0] = (v0 - v0) / dt;
+                if (fs[0] >= length) fs[0] = length, speed[0] = 0.0, accel[0] = 0.0; /* stands at its end */
                 vei_polyline_at_s_seg(&sc->ego_path, fs[0], &on_path, &x[0], &y[0], &yaw[0]);
             }
             if (yaw[0] != before) c[0] = cos(yaw[0]), s[0] = sin(yaw[0]);

@@ -56,9 +56,11 @@ void vei_ego_drive(const VeiPolyline *path, VeiCursor *cur, double *fs, double a
     VeiLongitudinal lon = {0.0, *speed, *accel};
     vei_longitudinal_step(&lon, a_cmd, lim, dt);
     double along = *fs + lon.s, end = vei_polyline_length(path);
-    *fs = along < end ? along : end; /* held at the path's end */
-    *speed = lon.v;
-    *accel = lon.a;
+    if (along < end) {
+        *fs = along, *speed = lon.v, *accel = lon.a;
+    } else { /* at the path's end it stands (vei_models.h) */
+        *fs = end, *speed = 0.0, *accel = 0.0;
+    }
     vei_polyline_at_s_seg(path, *fs, cur, x, y, yaw);
 }
 

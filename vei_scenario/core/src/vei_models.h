@@ -161,6 +161,9 @@ void vei_rider_step(VeiRider *r, const VeiPolyline *track, double offset, double
  * and moves along the path by the distance it covers, held at the path's end; pose, speed and
  * acceleration updated in place, `fs` the arc length along the path. The sweep kernel and the ego FMU
  * both drive the ego with it. */
+/* The ego moved by a longitudinal command along its path; where the step reaches the path's end it
+ * stands there, speed and acceleration 0 (a recorded path ends where the recording did: a faster
+ * system runs out of it, and a held position at a kept speed would count as moving). */
 void vei_ego_drive(const VeiPolyline *path, VeiCursor *cur, double *fs, double a_cmd, const VeiVehicleLimits *lim,
                    double dt, double *x, double *y, double *yaw, double *speed, double *accel);
 
