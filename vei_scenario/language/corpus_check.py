@@ -84,13 +84,12 @@ def _actor_problems(adv: dict, want: dict) -> list[str]:
 
 
 def _scenery(adv: dict) -> bool:
-    """Whether adversary ``adv`` is parked scenery: standing beyond the kerb and doing nothing."""
+    """Whether adversary ``adv`` is scenery that does not act: standing still and doing nothing,
+    wherever it stands (a car parked at the kerb, a broken-down lorry in the lane that a cut-out
+    reveals). The format lists road users "not parked scenery unless it acts"; a standing vehicle
+    does not act, in a lane or beyond the kerb."""
     names = {node["behaviour"] for _, node in behaviour_nodes(adv["behaviour"])}
-    return (
-        float(adv.get("speed_mps", 0.0)) == 0.0
-        and str(adv["spawn"].get("relation", "")).startswith("roadside")
-        and names <= {"keep_going", "stop", "keep_lane"}
-    )
+    return float(adv.get("speed_mps", 0.0)) == 0.0 and names <= {"keep_going", "stop", "keep_lane"}
 
 
 def layers_problems(layers: dict, case: dict) -> list[str]:

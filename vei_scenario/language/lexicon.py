@@ -298,6 +298,7 @@ BEHAVIOUR_VERBS = {
         "do a lane change",
     ),
     "sudden_stop": (
+        "stand on the brake",
         "brake hard",
         "slam on the brake",
         "slam the brake",
@@ -810,26 +811,30 @@ MAPS = {
 }
 WEATHER = {
     "rain": ("rain", "rainy", "raining", "wet", "drizzle", "drizzly", "shower"),
-    "heavy_rain": ("heavy rain", "pouring", "downpour", "storm", "torrential"),
+    "heavy_rain": ("heavy rain", "pouring", "downpour", "storm", "torrential", "hammering down", "pelting down",
+                   "tipping down", "lashing down", "bucketing down", "driving rain", "cloudburst"),
     "fog": ("fog", "foggy", "mist", "misty", "haze", "hazy"),
-    "snow": ("snow", "snowy", "snowing", "icy", "ice", "sleet", "winter"),
+    "snow": ("snow", "snowy", "snowing", "icy", "ice", "sleet", "winter", "snowfall", "blizzard", "snowstorm",
+             "flurries"),
     "cloudy": ("cloudy", "overcast", "grey", "gray", "dull"),
     "clear": ("clear", "sunny", "dry", "fine", "bright"),
 }
 TIMES = {
-    "23:00": ("night", "at night", "nighttime", "night-time", "dark", "darkness", "midnight"),
+    "23:00": ("night", "at night", "nighttime", "night-time", "dark", "darkness", "midnight", "pitch black",
+              "pitch-black", "pitch dark", "after dark"),
     "06:00": ("dawn", "sunrise", "early morning"),
     "08:30": ("morning",),
     "12:00": ("noon", "midday", "lunchtime"),
     "13:00": ("daylight", "daytime", "broad daylight", "during the day", "by day"),
     "15:30": ("afternoon",),
-    "19:30": ("dusk", "sunset", "twilight"),
+    "19:30": ("dusk", "sunset", "twilight", "getting dark", "get dark", "growing dark", "nightfall", "sundown",
+              "after sunset"),
     "20:00": ("evening",),
     "17:30": ("rush hour", "commute"),
 }
 DENSITY = {
     "none": ("no traffic", "empty road", "empty", "quiet", "deserted"),
-    "light": ("light traffic", "sparse traffic", "little traffic", "few cars"),
+    "light": ("light traffic", "sparse traffic", "little traffic", "few cars", "low traffic", "low traffic volume"),
     "moderate": ("moderate traffic", "some traffic"),
     "heavy": ("heavy traffic", "dense traffic", "busy", "congested", "congestion", "rush hour", "jam", "stop-and-go"),
 }
@@ -968,6 +973,14 @@ WRONG_WAY = (
 )
 #: Nouns that are a wrong-way driver.
 WRONG_WAY_NOUNS = ("ghost driver", "wrong-way driver")
+#: Road-user nouns that say what it does ("a red-light runner", "a jaywalker"): its behaviour when no
+#: verb says another.
+BEHAVIOUR_NOUNS = {
+    "red-light runner": "run_red_light",
+    "red light runner": "run_red_light",
+    "light runner": "run_red_light",
+    "jaywalker": "cross_in_front",
+}
 #: Going back to where it came from (a wrong-way driver to its own side).
 RETURNS = (
     "cut back",

@@ -542,6 +542,10 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
             tokens[i - 1 : i] in (["the"], ["a"], ["an"]) and "NOUN" in _pos(tok) and tok not in ("stop", "crossing")
         )
         braking = "brake" in forms(tok)  # ("slammed on its brakes": the braking, said with its brakes)
+        if slot == "behaviour" and _bare_noun(tokens, i, key):
+            ignored.append(tok)  # "head-on crash.", ", crash", "Full brake.": what happened, said as a noun
+            i += 1
+            continue
         if slot == "behaviour" and len(key) == 1 and (tokens[i - 1 : i] in _POSSESSIVES or noun_here) and not braking:
             ignored.append(tok)  # "missed his tailgate", "there is the crash": a thing, not a behaviour
             i += 1
@@ -583,6 +587,24 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
 #: Verbs that with "to" say what someone must do ("it has to brake": a requirement, said of the ego).
 _MODAL_VERBS = frozenset({"has", "have", "had", "needs", "need", "needed"})
 _POSSESSIVES = (["his"], ["her"], ["its"], ["their"], ["my"], ["our"], ["your"])
+
+
+def _bare_noun(tokens: list[str], i: int, key: tuple[str, ...]) -> bool:
+    """Whether the one-word behaviour at ``i`` is a noun standing on its own at the end of a phrase,
+    as notes and commentary say what happened ("head-on crash.", "night, T-bone crash", "Full brake."):
+    uninflected, with a punctuation mark or the end after it, and before it a punctuation mark, the
+    start, a hyphenated modifier or an adjective (no road user doing it)."""
+    tok = tokens[i]
+    if len(key) != 1 or "NOUN" not in _pos(tok) or tok not in _lemmas(tok).get("VERB", (tok,)):
+        return False  # (an inflected verb is a verb: "a van ahead stops.")
+    if i + 1 < len(tokens) and tokens[i + 1] not in ".;,!?:":
+        return False
+    if i == 0 or tokens[i - 1] in ".;,!?:":
+        return True
+    before = tokens[i - 1]
+    if _actor_word(before) or before in FUNCTION_WORDS:
+        return False
+    return "-" in before or ("ADJ" in _pos(before) and _best(tokens, i - 1) is None)
 
 
 def _predicate_of_ego(tokens: list[str], i: int) -> bool:
@@ -811,11 +833,13 @@ def read(text: str) -> Reading:
         expect_subject = True
         prev: _Mention | None = None
         ego_speed_said: _Mention | None = None  # a speed read as the ego's ahead of its turn
+        reacting = False  # in a stretch of the narrator's reaction ("..., stopped 2 m short,")
         for k, m in enumerate(mentions):
             nxt = mentions[k + 1] if k + 1 < len(mentions) else None
             if m.slot == "punct":
                 if m.value != "'s":
                     expect_subject = True
+                    reacting = False
                 prev = prev if m.value == "'s" else m
                 continue
             if m.slot == "modal":
@@ -1019,6 +1043,11 @@ def read(text: str) -> Reading:
                     # nobody named yet in this clause: the subject goes on ("... while overtaking a
                     # bus": the bus is what it overtakes, not who)
                     target = clause_subject = subject
+                if isinstance(target, _Actor) and _ego_reaction(mentions, k, target):
+                    ignored.append(m.words)  # ("cuts in ahead, on the brakes, ...": the narrator brakes)
+                    reacting = True
+                    prev = m
+                    continue
                 if target is None:
                     if m.slot != "unknown_verb":  # (an unknown verb of nobody: listed as not used)
                         pending.append(m)
@@ -1030,6 +1059,19 @@ def read(text: str) -> Reading:
                 prev = m
                 continue
             # positions, states, numbers: the actor they describe
+            if reacting and m.slot in ("distance", "speed", "accel"):
+                ignored.append(m.words)  # ("stopped 2 m short": how the narrator's stop went)
+                prev = m
+                continue
+            if (
+                m.slot == "stationary"
+                and isinstance(clause_subject, _Actor)
+                and _ego_reaction(mentions, k, clause_subject)
+            ):
+                ignored.append(m.words)  # ("runs the red, stopped 2 m short": the narrator stopped)
+                reacting = True
+                prev = m
+                continue
             before_actor = nxt is not None and nxt.slot in ("actor", "count") and nxt.start == m.end
             if m.slot in _POSITIONAL and before_actor and not (nxt.slot == "actor" and nxt.value == "ego"):
                 pending.append(m)  # an adjective before its actor ("an oncoming car")
@@ -1108,6 +1150,9 @@ def read(text: str) -> Reading:
             a.kind = (
                 "pedestrian" if names & {"cross_in_front", "along_road"} and not names & VEHICLE_BEHAVIOURS else "car"
             )
+        said_by_noun = L.BEHAVIOUR_NOUNS.get(a.word)
+        if said_by_noun and all(b[0] in ("keep_going", "cross_in_front") for b in a.behaviours):
+            a.behaviours = [(said_by_noun, {}, None, "sequence")]  # ("a red-light runner from the left")
         if not a.behaviours and not a.stationary and a.unknown:  # only a verb the reader has no word for: it goes on
             a.behaviours.append(("keep_going", {}, None, "sequence"))
     for a in actors:  # "turns out of the junction": it comes from a side road
@@ -1234,12 +1279,41 @@ def read(text: str) -> Reading:
     r.read_as = read_as
     said = " ".join(_tokens(text))
     r.intent = stated_outcome(said) or r.intent  # (the whole text's stated outcome first)
+    if r.intent is None and not r.actors:
+        r.intent = "safe"  # (nobody but the ego: nothing it could meet)
     r.lanes = stated_lanes(said) or r.lanes
     r.time = stated_clock(said) or r.time
     r.density = stated_density(said) or r.density
     if r.weather in (None, "rain") and stated_heavy_rain(said):
         r.weather = "heavy_rain"
     return r
+
+
+#: What someone does when a road user comes into its path: braking, slowing, stopping.
+_REACTIONS = ("sudden_stop", "stop", "change_speed")
+#: Behaviours that bring a road user into the ego's path: what follows them unattributed is a reaction.
+_CONFLICTS = ("cross_in_front", "run_red_light", "cut_in", "wrong_way", "turn_across", "turn_into", "overtake",
+              "forced_turn")  # fmt: skip
+
+
+def _ego_reaction(mentions, k: int, a: _Actor) -> bool:
+    """Whether braking or stopping ``mentions[k]`` is the narrator's reaction to road user ``a`` rather
+    than ``a``'s own: said after a comma with nobody named ("drifts into our lane, on the brakes, he
+    misses us", "comes off the pavement, braking, braking ... contact"), not as a finite verb
+    ("then brakes hard" stays its own), once ``a`` has already come into the ego's path."""
+    m = mentions[k]
+    if m.slot == "behaviour":
+        if m.value[0] not in _REACTIONS or not (m.words.split()[0].endswith("ing") or m.prev == "on"):
+            return False
+    elif m.slot != "stationary" or m.words not in ("stopped", "stopping"):
+        return False
+    j = k - 1
+    while j >= 0 and mentions[j].slot in ("criticality", "speed_word"):
+        j -= 1
+    if j < 0 or mentions[j].slot != "punct" or mentions[j].value != ",":
+        return False
+    came_in = a.came_from and a.kind in VULNERABLE  # (a walker or rider coming off the kerb)
+    return came_in or any(b[0] in _CONFLICTS for b in a.behaviours)
 
 
 def _idle(a: _Actor) -> bool:
@@ -1590,8 +1664,16 @@ def _nearest(named, m):
             continue
         if m.slot == "speed" and isinstance(who, _Actor) and (who.stationary or role == "verb"):
             continue
+        placed = m.slot == "distance" or (m.slot == "relation" and m.value in ("ahead", "behind"))
+        if placed and isinstance(who, _Actor) and who.parked and role != "subject" and _subject_actor(named):
+            continue  # ("runs out between parked cars, 12 m ahead": where the one running out is)
         return who
     return None
+
+
+def _subject_actor(named) -> bool:
+    """Whether a road user other than the ego is the subject of the clause ``named`` comes from."""
+    return any(isinstance(who, _Actor) and role == "subject" for who, role in named)
 
 
 #: Weather words by how much they change a drive: precipitation and fog over cloud over clear.
