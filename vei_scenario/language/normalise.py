@@ -155,9 +155,7 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     text = _numbers_in_words(text)
     for pattern, repl in _UNITS:  # ("10 meter per second" once its number is digits)
         text = pattern.sub(repl, text)
-    text = re.sub(
-        r"\b(?:approx\.?|approximately|circa|ca\.|roughly|around|maybe|some|like)\s+(?=\d)", "about ", text
-    )
+    text = re.sub(r"\b(?:approx\.?|approximately|circa|ca\.|roughly|around|maybe|some|like)\s+(?=\d)", "about ", text)
     text = re.sub(r"(\d+(?:\.\d+)?)\s*-\s*(?=km/h|mph|m/s|m\b)", r"\1 ", text)
     # "our speed is 100 km/h", "we have 40 km/h", "we are 50 km/h": the ego's speed
     text = re.sub(
