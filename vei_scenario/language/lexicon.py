@@ -63,6 +63,15 @@ ACTOR_NOUNS = {
         "pensioner",
         "someone",
         "somebody",
+        "bloke",
+        "fella",
+        "chap",
+        "idiot",
+        "lunatic",
+        "maniac",
+        "moron",
+        "nutter",
+        "muppet",
         # an animal on the road is played as a pedestrian (OpenSCENARIO's pedestrianCategory "animal" has
         # no model of its own in vei or esmini: its size and way of crossing are a walker's)
         "dog",
@@ -101,6 +110,10 @@ ACTOR_NOUNS = {
         "dump truck",
         "refuse truck",
         "bin lorry",
+        "heavy goods vehicle",
+        "large goods vehicle",
+        "goods vehicle",
+        "gritter",
         "tram",  # (on its rails it crosses and brakes as a long vehicle does)
         "streetcar",
         "trolleybus",
@@ -444,6 +457,14 @@ RED_LIGHT = (
     "ignore the stop sign",
     "blow through the stop sign",
     "blow the stop sign",
+    "through the red",
+    "through a red",
+    "through the red light",
+    "through a red light",
+    "through red",
+    "go through the red",
+    "go through the red light",
+    "go through a red light",
 )
 TURNS = {
     "right": ("turn right", "make a right turn", "turn off right", "turn into the right", "swing right"),
@@ -542,6 +563,8 @@ FARSIDE = (
 #: Where a junction arm is meant ("from the left entrance", "pulls out of a side road").
 JUNCTION_ARM = (
     "entrance",
+    "entry",
+    "entry road",
     "side road",
     "side-road",
     "side street",
@@ -685,7 +708,6 @@ CRITICALITY = {
         "no gap",
         "almost no gap",
         "little room",
-        "idiot",
         "at high speed",
         "ttc about",
         "bumper",
@@ -1018,6 +1040,21 @@ WRONG_WAY = (
 WRONG_WAY_NOUNS = ("ghost driver", "wrong-way driver")
 #: Road-user nouns that say what it does ("a red-light runner", "a jaywalker"): its behaviour when no
 #: verb says another.
+#: Words for a person that say nothing of how they travel ("some guy", "someone"): a walker, unless
+#: what they do is a driver's (braking hard, driving the wrong way, following).
+#: Names people call a road user who drives badly: it drives dangerously, whatever it does.
+INSULTS = ("idiot", "lunatic", "maniac", "moron", "nutter", "muppet")
+GENERIC_PERSONS = ("someone", "somebody", "guy", "bloke", "man", "woman", "person", "lady", "fella", "chap", *INSULTS)
+#: What a driver does and a walker does not.
+DRIVER_BEHAVIOURS = (
+    "sudden_stop",
+    "follow_vehicle",
+    "change_speed",
+    "wrong_way",
+    "turn_across",
+    "turn_into",
+    "run_red_light",
+)
 BEHAVIOUR_NOUNS = {
     "red-light runner": "run_red_light",
     "red light runner": "run_red_light",

@@ -305,9 +305,19 @@ def _match(tokens: list[str], i: int):
     """For each form of the word at ``i``, the longest phrase starting with it that the text holds."""
     for w in forms(tokens[i]):
         for key in _BY_FIRST.get(w, ()):
-            if i + len(key) <= len(tokens) and all(k in forms(tokens[i + j]) for j, k in enumerate(key)):
+            if i + len(key) <= len(tokens) and all(_fits(k, tokens[i + j], j) for j, k in enumerate(key)):
                 yield key
                 break
+
+
+#: Possessives that stand where a phrase has an article ("slams on his brakes", "runs her red").
+_POSSESSIVE_WORDS = frozenset({"his", "her", "their", "its", "my", "our", "your"})
+
+
+def _fits(word: str, token: str, j: int) -> bool:
+    """Whether phrase word ``word`` (its ``j``-th) matches ``token``: one of its forms, or, inside a
+    phrase, a possessive where the phrase has an article."""
+    return word in forms(token) or (j > 0 and word in _ARTICLES and token in _POSSESSIVE_WORDS)
 
 
 #: Words before a place named after a road user ("at the bus stop", "near a taxi rank").
@@ -452,7 +462,13 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
             if prev not in _PLACE_PREPOSITIONS and (verb or participle):
                 key = key[:1]
         adverb = toward_at = None  # (toward_at: where the side it moves to is said)
-        if (key is None or len(key) == 1) and i + 2 < len(tokens) and tokens[i + 1] in ("left", "right"):
+        just_right = tokens[i + 1 : i + 2] == ["right"] and tokens[i + 2 : i + 3] and tokens[i + 2] in _RIGHT_BEFORE
+        if (
+            (key is None or len(key) == 1)
+            and i + 2 < len(tokens)
+            and tokens[i + 1] in ("left", "right")
+            and not just_right
+        ):
             # "swerves left into our lane": the verb's phrase around the side it moves to
             skipped = _best(tokens[: i + 1] + tokens[i + 2 :], i)
             if skipped is not None and len(skipped) > 1 and TABLE[skipped][0] == "behaviour":
@@ -527,6 +543,10 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
                 last.end = j
             i = j
             continue
+        if slot == "arm" and i >= 2 and tokens[i - 1] == "'s" and _ends_with_ego(tokens[: i - 1]):
+            ignored.extend(tokens[i : i + len(key)])  # "cuts across the ego's entry": the ego's arm, not its own
+            i += len(key)
+            continue
         if slot == "actor" and i + len(key) < len(tokens) and tokens[i + len(key)] in _PARTS:
             i += len(key) + 1  # "50 % of the vehicle width", "a car door": a part of one, not a road user
             continue
@@ -569,6 +589,9 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
         if slot == "behaviour" and value[0] in _SIDEWAYS and toward_at is None and nxt in ("left", "right"):
             if after not in _RIGHT_BEFORE:  # "merges right from the middle lane" (not "cuts in right in front")
                 toward_at = i + used
+        if slot in ("sequence", "parallel") and det:
+            i += used  # "from the next entry": a word of order before a noun, no new clause
+            continue
         if slot in ("sequence", "parallel"):
             clauses.append((slot, [_Mention("link", slot, words, i, prev, end=i + used)]))
         elif slot != "noise":
@@ -587,6 +610,11 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
 #: Verbs that with "to" say what someone must do ("it has to brake": a requirement, said of the ego).
 _MODAL_VERBS = frozenset({"has", "have", "had", "needs", "need", "needed"})
 _POSSESSIVES = (["his"], ["her"], ["its"], ["their"], ["my"], ["our"], ["your"])
+
+
+def _ends_with_ego(tokens: list[str]) -> bool:
+    """Whether ``tokens`` end with a name of the ego ("... the ego", "... the subject vehicle")."""
+    return any(tuple(tokens[-len(p.split()) :]) == tuple(p.split()) for p in L.EGO_NOUNS)
 
 
 def _bare_noun(tokens: list[str], i: int, key: tuple[str, ...]) -> bool:
@@ -944,8 +972,10 @@ def read(text: str) -> Reading:
                     ):  # "across in front of the car", no car named before: the one the story is told from
                         who = "ego"
                     elif (
-                        m.value in ("bicycle", "e-scooter")
-                        and m.prev in ("on", "riding", "with")
+                        (
+                            (m.value in ("bicycle", "e-scooter") and m.prev in ("on", "riding", "with"))
+                            or (m.value in VEHICLES and m.prev in ("in", "driving"))  # ("some idiot in a BMW")
+                        )
                         and named
                         and isinstance(named[-1][0], _Actor)
                         and named[-1][0].kind == "pedestrian"
@@ -962,6 +992,7 @@ def read(text: str) -> Reading:
                         ]
                         for a in made:
                             a.group = made if count > 1 else None
+                            a.crit = "dangerous" if m.words in L.INSULTS else None  # ("some idiot ...")
                         actors.extend(made)
                         who = made[0]
                         group = made if count > 1 else group
@@ -1150,6 +1181,10 @@ def read(text: str) -> Reading:
             a.kind = (
                 "pedestrian" if names & {"cross_in_front", "along_road"} and not names & VEHICLE_BEHAVIOURS else "car"
             )
+        if a.kind == "pedestrian" and a.word in L.GENERIC_PERSONS:  # "the guy in front slammed on": a driver
+            names = {b[0] for b in a.behaviours}
+            if (a.wrong_way or names & set(L.DRIVER_BEHAVIOURS)) and not names & {"cross_in_front", "along_road"}:
+                a.kind = "car"
         said_by_noun = L.BEHAVIOUR_NOUNS.get(a.word)
         if said_by_noun and all(b[0] in ("keep_going", "cross_in_front") for b in a.behaviours):
             a.behaviours = [(said_by_noun, {}, None, "sequence")]  # ("a red-light runner from the left")
@@ -1664,6 +1699,8 @@ def _nearest(named, m):
             continue
         if m.slot == "speed" and isinstance(who, _Actor) and (who.stationary or role == "verb"):
             continue
+        if m.slot == "speed" and role == "prep" and ("ego", "subject") in named:
+            continue  # ("I was behind this bus at 20 mph": the ego's, as "the ego follows a bus at 20 mph")
         placed = m.slot == "distance" or (m.slot == "relation" and m.value in ("ahead", "behind"))
         if placed and isinstance(who, _Actor) and who.parked and role != "subject" and _subject_actor(named):
             continue  # ("runs out between parked cars, 12 m ahead": where the one running out is)
@@ -1715,7 +1752,10 @@ def _apply(m, who, r, link, added) -> None:
             continue
         if m.slot == "behaviour":
             name, cfg = m.value
+            if any(w in _NEGATORS for w in m.words.split()):
+                a.goes_on = True  # ("fails to yield", "does not give way": one phrase, and it goes on)
             if a.behaviours and a.behaviours[-1][0] == name and name != "change_speed":
+                a.goes_on = a.goes_on or bool(cfg.get("_denied"))  # ("enters and fails to yield": it goes)
                 continue  # ("brakes ... and stops": said twice over)
             a.behaviours.append((name, dict(cfg, _words=m.words), None, link if not added else "sequence"))
             added.append((a, len(a.behaviours) - 1))
