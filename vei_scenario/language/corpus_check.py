@@ -59,10 +59,16 @@ def _actor_problems(adv: dict, want: dict) -> list[str]:
     elif not names or not set(names) <= set(allowed):
         out.append(f"behaviours {names} (expected among {allowed})")
     relation = adv["spawn"].get("relation")
+    said = {relation}
+    lateral = float(adv["spawn"].get("lateral_m", 0.0))
+    if names[:1] == ["along_road"] and relation == "ahead" and lateral:
+        # a walker or rider going along the road starts ahead at the edge of the ego's lane (lateral_m
+        # left of its centre): on the kerb side the format calls roadside_left / roadside_right
+        said.add("roadside_left" if lateral > 0 else "roadside_right")
     accepted = set(want.get("relation", ()))
     if "oncoming" in accepted:  # at a junction what comes towards the ego starts on the opposite arm
         accepted.add("junction_opposite")
-    if "relation" in want and relation not in accepted:
+    if "relation" in want and not said & accepted:
         out.append(f"relation {relation} (expected {' or '.join(want['relation'])})")
     if "speed_kph" in want:  # its speed, or the speed it crosses at
         speeds = [float(adv["speed_mps"])] + [

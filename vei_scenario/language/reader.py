@@ -1483,8 +1483,11 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool) -> None:
         spec.facing = "against" if towards or a.wrong_way else None  # ("rides against the traffic")
         if spec.relation == "behind":
             spec.facing = None
-        if a.kerb or (spec.relation or "").startswith("roadside"):
-            spec.lateral_m = 1.2 if a.kerb_side == "left" else -1.2  # at the edge of the lane
+        side = a.kerb_side or a.lane_side or a.side
+        if a.kerb or (spec.relation or "").startswith("roadside") or side in ("left", "right"):
+            # at the edge of the lane on the side said ("along the kerb on our left", "on the right side")
+            left = side == "left" or (side is None and spec.relation == "roadside_left")
+            spec.lateral_m = 1.2 if left else -1.2
         spec.relation = "ahead" if spec.relation != "behind" else "behind"
 
 
