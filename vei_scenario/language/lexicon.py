@@ -183,6 +183,7 @@ EGO_NOUNS = (
 BEHAVIOUR_VERBS = {
     "cross_in_front": (
         "cross",
+        "jaywalk",
         "cross in front",
         "walk across",
         "run across",
@@ -312,6 +313,11 @@ BEHAVIOUR_VERBS = {
     ),
     "sudden_stop": (
         "stand on the brake",
+        "stop hard",
+        "only just stop",
+        "just stop in time",
+        "barely stop",
+        "stop just in time",
         "brake hard",
         "slam on the brake",
         "slam the brake",
@@ -335,7 +341,29 @@ BEHAVIOUR_VERBS = {
         "lose grip",
         "lose control",
     ),
-    "stop": ("stop", "halt", "come to a stop", "come to a halt", "stand still", "pull up", "stop at"),
+    "stop": (
+        "stop",
+        "halt",
+        "come to a stop",
+        "come to a halt",
+        "stand still",
+        "pull up",
+        "stop at",
+        # (a bus or car pulling in at a stop or the kerb stops there: no cut-in)
+        "pull in to the stop",
+        "pull into the stop",
+        "pull in at the stop",
+        "pull into the bus stop",
+        "pull in to the bus stop",
+        "pull in at the bus stop",
+        "pull into the kerb",
+        "pull in to the kerb",
+        "pull into the curb",
+        "pull over",
+        "pull in to the side",
+        "pull into the side",
+        "pull into a lay-by",
+    ),
     "follow_vehicle": (
         "tailgate",
         "follow",
@@ -381,7 +409,19 @@ BEHAVIOUR_VERBS = {
         "trundle along",
         "close in",
     ),
-    "keep_lane": ("keep its lane", "keep lane", "stay in its lane", "stay in lane", "hold its lane"),
+    "keep_lane": (
+        "keep its lane",
+        "keep lane",
+        "stay in its lane",
+        "stay in lane",
+        "hold its lane",
+        "pull alongside",
+        "sit alongside",
+        "sit with us",
+        "sit beside us",
+        "drive alongside",
+        "keep pace",
+    ),
     "give_way": (
         "give way",
         "yield",
@@ -434,7 +474,19 @@ BEHAVIOUR_VERBS = {
 }
 #: change_speed with its sign.
 SPEED_CHANGE_VERBS = {
-    -4.0: ("slow down", "slow", "decelerate", "brake gently", "ease off", "reduce speed", "slow to"),
+    -4.0: (
+        "slow down",
+        "slow",
+        "decelerate",
+        "brake gently",
+        "ease off",
+        "reduce speed",
+        "slow to",
+        "drop back",
+        "fall back",
+        "drop behind",
+        "fall behind",
+    ),
     4.0: ("accelerate", "speed up", "pick up speed", "put its foot down", "pull away", "drive off"),
 }
 RED_LIGHT = (

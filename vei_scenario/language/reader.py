@@ -848,6 +848,7 @@ def read(text: str) -> Reading:
     pending: list[_Mention] = []
     last_group: list[_Actor] | None = None  # ("Two scooters ride ahead; one of them brakes": that pair)
     both_with_ego = False  # ("CCRb: both cars at 50 km/h ...": the ego is one of them)
+    first_person = bool({"i", "we", "me", "my", "us", "our"} & set(_tokens(text)))  # (the narrator's story)
     bound: dict[str, _Actor | str] = {}  # "he"/"she" → whom it first named
     for link, mentions in clauses:
         named: list[tuple[_Actor | str, str]] = []  # (actor, role) in order: subject, prep, verb, participle
@@ -1074,7 +1075,7 @@ def read(text: str) -> Reading:
                     # nobody named yet in this clause: the subject goes on ("... while overtaking a
                     # bus": the bus is what it overtakes, not who)
                     target = clause_subject = subject
-                if isinstance(target, _Actor) and _ego_reaction(mentions, k, target):
+                if isinstance(target, _Actor) and _ego_reaction(mentions, k, target, first_person):
                     ignored.append(m.words)  # ("cuts in ahead, on the brakes, ...": the narrator brakes)
                     reacting = True
                     prev = m
@@ -1097,7 +1098,7 @@ def read(text: str) -> Reading:
             if (
                 m.slot == "stationary"
                 and isinstance(clause_subject, _Actor)
-                and _ego_reaction(mentions, k, clause_subject)
+                and _ego_reaction(mentions, k, clause_subject, first_person)
             ):
                 ignored.append(m.words)  # ("runs the red, stopped 2 m short": the narrator stopped)
                 reacting = True
@@ -1143,6 +1144,8 @@ def read(text: str) -> Reading:
         for a, i in added:
             name, cfg, _, lk = a.behaviours[i]
             words = cfg.pop("_words", "")
+            if name == "sudden_stop" and len(words.split()) == 1 and "brake" in forms(words):
+                cfg["_plain_brake"] = 1.0  # ("brakes": how hard, a stop said after it tells)
             a.goes_on = a.goes_on or bool(cfg.pop("_denied", None))
             a.behaviours[i] = (name, cfg, crit_here or _verb_criticality(words), lk)
         if crit_here:
@@ -1331,17 +1334,32 @@ _CONFLICTS = ("cross_in_front", "run_red_light", "cut_in", "wrong_way", "turn_ac
               "forced_turn")  # fmt: skip
 
 
-def _ego_reaction(mentions, k: int, a: _Actor) -> bool:
+def _past(word: str) -> bool:
+    """Whether ``word`` is a verb in the past tense ("slowed", "braked", "stopped")."""
+    lemmas = _lemmas(word).get("VERB", ())
+    return bool(lemmas) and word not in lemmas and not word.endswith(("s", "ing"))
+
+
+def _ego_reaction(mentions, k: int, a: _Actor, first_person: bool = False) -> bool:
     """Whether braking or stopping ``mentions[k]`` is the narrator's reaction to road user ``a`` rather
     than ``a``'s own: said after a comma with nobody named ("drifts into our lane, on the brakes, he
     misses us", "comes off the pavement, braking, braking ... contact"), not as a finite verb
-    ("then brakes hard" stays its own), once ``a`` has already come into the ego's path."""
+    ("then brakes hard" stays its own), once ``a`` has already come into the ego's path; or, in a
+    story told in the first person, opening a sentence in the past tense with no subject ("Slowed
+    down, gave her loads of space.", "Stopped.")."""
     m = mentions[k]
     if m.slot == "behaviour":
-        if m.value[0] not in _REACTIONS or not (m.words.split()[0].endswith("ing") or m.prev == "on"):
+        if m.value[0] not in _REACTIONS:
+            return False
+        verb = m.words.split()[0]
+        if first_person and k == 0 and _past(verb):
+            return True  # "Slowed down, gave her loads of space.": a diary's sentence without its "I"
+        if not (verb.endswith("ing") or m.prev == "on"):
             return False
     elif m.slot != "stationary" or m.words not in ("stopped", "stopping"):
         return False
+    elif first_person and k == 0:
+        return True  # ("Full brake. Stopped.")
     j = k - 1
     while j >= 0 and mentions[j].slot in ("criticality", "speed_word"):
         j -= 1
@@ -1572,7 +1590,16 @@ def _with_rate(name: str, cfg: dict, rate: float) -> tuple[str, dict]:
 def _tidy(a: _Actor) -> list:
     """The actor's behaviours as the layers take them: redundant ones merged."""
     out = []
-    for b in a.behaviours:
+    behaviours = []
+    for k, (name, cfg, crit, lk) in enumerate(a.behaviours):
+        plain = cfg.pop("_plain_brake", None)
+        after = a.behaviours[k + 1][0] if k + 1 < len(a.behaviours) else None
+        if plain and after in ("stop", "sudden_stop"):
+            continue  # "brakes and stops normally": the stop says how
+        if name == "stop" and crit == "dangerous":
+            name = "sudden_stop"  # "decelerates abruptly to a standstill", "stops suddenly": a hard stop
+        behaviours.append((name, cfg, crit, lk))
+    for b in behaviours:
         if out and b[0] == "cut_in" and out[-1][0] == "overtake":
             name, cfg, crit, lk = out[-1]  # an overtake ends by cutting back in: "cuts in sharply" is how
             out[-1] = (name, cfg, crit or b[2], lk)
@@ -1760,7 +1787,8 @@ def _apply(m, who, r, link, added) -> None:
             if a.behaviours and a.behaviours[-1][0] == name and name != "change_speed":
                 a.goes_on = a.goes_on or bool(cfg.get("_denied"))  # ("enters and fails to yield": it goes)
                 continue  # ("brakes ... and stops": said twice over)
-            a.behaviours.append((name, dict(cfg, _words=m.words), None, link if not added else "sequence"))
+            said = m.words if not _adverb(m.next_) else f"{m.words} {m.next_}"  # ("brakes moderately")
+            a.behaviours.append((name, dict(cfg, _words=said), None, link if not added else "sequence"))
             added.append((a, len(a.behaviours) - 1))
         elif m.slot == "turn":
             a.behaviours.append(("forced_turn", {"turn": m.value, "_words": m.words}, None, link))
