@@ -228,6 +228,9 @@ BEHAVIOUR_VERBS = {
         "drop onto the road",
         "drop off the kerb",
         "roll onto the road",
+        "roll across",
+        "come across",
+        "go across",
         "roll into the road",
         "wobble into the road",
         "cross over",
@@ -416,6 +419,7 @@ BEHAVIOUR_VERBS = {
         "stay in lane",
         "hold its lane",
         "pull alongside",
+        "sit in",
         "sit alongside",
         "sit with us",
         "sit beside us",
@@ -440,6 +444,9 @@ BEHAVIOUR_VERBS = {
         "let us go first",
         "wait for the ego",
         "wait for us",
+        "wait for me",
+        "wait for me to pass",
+        "wait for me to go",
         "wait for the av",
         "wait for the ego to pass",
         "wait for us to pass",
@@ -600,6 +607,8 @@ KERB = (
     "shoulder",
     "bus stop",
     "driveway",
+    "on my inside",
+    "on our inside",
 )
 NEARSIDE = ("nearside", "near side", "near-side")
 FARSIDE = (
@@ -655,6 +664,11 @@ RELATIONS = {
         "in the av's lane",
         "in our path",
         "in the ego's path",
+        "in my lane",
+        "my side of the road",
+        "our side of the road",
+        "on my side of the road",
+        "on our side of the road",
     ),
     "behind": (
         "behind",

@@ -945,6 +945,7 @@ def read(text: str) -> Reading:
                     role = "subject"
                 elif m.value == "ego":
                     who = "ego"
+                    count = 1  # ("overtakes both of us": the ego and the one named with it)
                 else:
                     same = [a for a in actors if a.kind == m.value]
                     last = named[-1][0] if named and isinstance(named[-1][0], _Actor) else None
@@ -1052,6 +1053,13 @@ def read(text: str) -> Reading:
                 if nxt.value == "ego" and nxt.start <= m.end + 2:  # "a cyclist overtaken by the ego": the ego's
                     prev = m
                     continue
+            if m.slot in _VERBS and m.prev == "to" and _ego_named(prev) and prev.prev == "for":
+                # "waits on the side road for me to pass": the ego passes; waiting for it is giving way
+                if isinstance(clause_subject, _Actor) and clause_subject.stationary:
+                    _apply(replace(m, slot="behaviour", value=("give_way", {})), clause_subject, r, link, added)
+                ignored.append(m.words)
+                prev = m
+                continue
             if m.slot in _VERBS:
                 target = clause_subject
                 if (
@@ -1162,6 +1170,12 @@ def read(text: str) -> Reading:
             # "Going straight over the junction at 30 km/h while ...": a clause with nobody named is the ego's
             r.ego_speed_mps = next(p.value for p in pending if p.slot == "speed")
             pending = [p for p in pending if p.slot != "speed"]
+        if not named and subject is None and any(p.slot in ("turn", "ego_verb") for p in pending):
+            # "Turning left at the junction in the afternoon; a cyclist ...": a sentence that names nobody,
+            # before anyone is named, is the narrator's
+            for p in [p for p in pending if p.slot in ("turn", "ego_verb")]:
+                _apply(p, "ego", r, link, added)
+            pending = [p for p in pending if p.slot not in ("turn", "ego_verb")]
         for x in joined:
             x.group = None
         joined = []
@@ -1345,14 +1359,15 @@ def _ego_reaction(mentions, k: int, a: _Actor, first_person: bool = False) -> bo
     than ``a``'s own: said after a comma with nobody named ("drifts into our lane, on the brakes, he
     misses us", "comes off the pavement, braking, braking ... contact"), not as a finite verb
     ("then brakes hard" stays its own), once ``a`` has already come into the ego's path; or, in a
-    story told in the first person, opening a sentence in the past tense with no subject ("Slowed
-    down, gave her loads of space.", "Stopped.")."""
+    story told in the first person, opening a sentence with no subject in the past tense or the
+    plain form ("Slowed down, gave her loads of space.", "Stopped.", "Slow and easy."), not the third
+    person ("Brakes hard." stays the road user's)."""
     m = mentions[k]
     if m.slot == "behaviour":
         if m.value[0] not in _REACTIONS:
             return False
         verb = m.words.split()[0]
-        if first_person and k == 0 and _past(verb):
+        if first_person and k == 0 and (_past(verb) or not verb.endswith("s")):
             return True  # "Slowed down, gave her loads of space.": a diary's sentence without its "I"
         if not (verb.endswith("ing") or m.prev == "on"):
             return False
