@@ -237,6 +237,8 @@ BEHAVIOUR_VERBS = {
         "cross to",
     ),
     "cut_in": (
+        "go into the lane",
+        "come into the lane",
         "cut in",
         "cut into",
         "cut in front",
@@ -420,6 +422,7 @@ BEHAVIOUR_VERBS = {
         "hold its lane",
         "pull alongside",
         "sit in",
+        "stay in",
         "sit alongside",
         "sit with us",
         "sit beside us",

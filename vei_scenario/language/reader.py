@@ -208,6 +208,7 @@ class _Actor:
     word: str = ""  # the words it was first named by
     acted_on: bool = False  # the object of someone's verb ("overtakes a truck")
     pavement: bool = False  # said to be on a pavement (off the road), not in a cycle lane
+    member_named: bool = False  # told apart from its group ("the first one", "the other")
 
 
 #: Euro NCAP's names of its test scenarios ("Car-to-Car Rear stationary", "Car-to-Pedestrian Nearside
@@ -320,6 +321,8 @@ def _fits(word: str, token: str, j: int) -> bool:
     return word in forms(token) or (j > 0 and word in _ARTICLES and token in _POSSESSIVE_WORDS)
 
 
+#: Prepositions that name a place as a landmark ("just after the exit"), not where a road user comes from.
+_LANDMARK_PREPOSITIONS = frozenset({"after", "before", "past", "beyond", "near", "by", "beside", "opposite"})
 #: Words before a place named after a road user ("at the bus stop", "near a taxi rank").
 _PLACE_PREPOSITIONS = {"at", "to", "near", "by", "from", "behind", "past", "towards", "toward", "in", "on", "into",
                        "onto", "beside", "outside", "opposite", "before", "after", "of", "off", "around", "across",
@@ -581,7 +584,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
                 slot, value = "speed_word", V.SPEED_WORDS[said]  # "the truck is slow"
         if slot == "behaviour" and _denied(tokens, i) and key[0] not in _NEGATORS:
             name, cfg = _DENIED.get(value[0], ("keep_going", {}))  # ("does not stop": it carries on)
-            value = (name, {**cfg, "_denied": 1.0} if value[0] != "keep_going" else cfg)
+            value = (name, {**cfg, "_denied": 1.0} if value[0] != "keep_going" else {**cfg, "_still": 1.0})
         used = len(key) + (1 if adverb or toward_at else 0)
         words = " ".join(tokens[i : i + used])
         nxt = tokens[i + used] if i + used < len(tokens) else ""
@@ -763,6 +766,12 @@ def _drop_label(clauses):
     return out
 
 
+def _generic_vehicle(a: _Actor) -> bool:
+    """Whether ``a`` was named by a word for any vehicle ("a lead vehicle", "the other vehicle"): an
+    apposition after it ("A lead vehicle, a light goods van, ...") says which, even after "a"."""
+    return a.kind == "car" and a.word.split()[-1] in ("vehicle", "vehicles")
+
+
 def _bare(m) -> bool:
     """Whether an actor is named as a test engineer's notes name it again: the singular noun alone,
     opening its sentence, no article ("Cyclist turns left")."""
@@ -938,8 +947,16 @@ def read(text: str) -> Reading:
                     pool = group or last_group or []
                     if not pool:
                         continue
-                    free = [a for a in pool if not a.behaviours]
-                    who = free[0] if free else pool[-1]
+                    free = [a for a in pool if not a.behaviours and not a.member_named]
+                    unnamed = [a for a in pool if not a.member_named]
+                    words = m.words.split()
+                    if any(w in ("first", "former") for w in words):
+                        who = pool[0]
+                    elif any(w in ("second", "latter") for w in words) and len(pool) > 1:
+                        who = pool[1] if "second" in words else pool[-1]
+                    else:  # ("the first one stops, the one in front of me brakes": the next not yet told)
+                        who = free[0] if free else unnamed[0] if unnamed else pool[-1]
+                    who.member_named = True
                     for a in pool:  # from here on each member is told apart
                         a.group = None
                     role = "subject"
@@ -951,14 +968,14 @@ def read(text: str) -> Reading:
                     last = named[-1][0] if named and isinstance(named[-1][0], _Actor) else None
                     if (
                         last is not None
-                        and m.det in ("a", "an")
+                        and (m.det in ("a", "an") or (not m.det and _generic_vehicle(last)))
                         and k > 0
                         and mentions[k - 1].slot == "punct"
                         and mentions[k - 1].value == ","
                         and nxt is not None
                         and nxt.slot == "punct"
                         and not (k + 2 < len(mentions) and mentions[k + 2].slot in ("conj", "actor", "count"))
-                        and _definite_before(mentions, k)
+                        and (_definite_before(mentions, k) or _generic_vehicle(last))
                         and (last.kind == m.value or (last.kind in VEHICLES and m.value in VEHICLES))
                     ):  # "the car ahead, a taxi, stops": the same one, said again (its kind the more exact)
                         last.kind = str(m.value) if last.kind == "car" else last.kind
@@ -1076,9 +1093,28 @@ def read(text: str) -> Reading:
                     prev = m
                     continue
                 if prev is not None and prev.slot == "actor" and named and named[-1][1] != "subject":
-                    if m.words.split()[0].endswith("ing"):  # "an oncoming car travelling at 30": its participle
+                    crossing_past = (  # ("comes out from in front of the bus crossing": the rider crosses)
+                        m.slot == "behaviour"
+                        and m.value[0] == "cross_in_front"
+                        and isinstance(named[-1][0], _Actor)
+                        and named[-1][0].kind in VEHICLES
+                        and isinstance(clause_subject, _Actor)
+                        and clause_subject.kind in VULNERABLE
+                    )
+                    if m.words.split()[0].endswith("ing") and not crossing_past:  # "an oncoming car travelling at 30"
                         named[-1] = (named[-1][0], "participle")
                         target = named[-1][0]
+                    elif crossing_past:  # (and where it crosses from is the rider's too)
+                        named.append((clause_subject, "participle"))
+                if (
+                    m.slot == "behaviour"
+                    and m.value[0] == "stop"
+                    and m.value[1].get("_still")
+                    and named
+                    and isinstance(named[-1][0], _Actor)
+                    and named[-1][0].stationary
+                ):  # "... was a broken-down car, not moving": the state of the one standing, named last
+                    target = named[-1][0]
                 if target is None and not named and subject is not None:
                     # nobody named yet in this clause: the subject goes on ("... while overtaking a
                     # bus": the bus is what it overtakes, not who)
@@ -1155,6 +1191,7 @@ def read(text: str) -> Reading:
             if name == "sudden_stop" and len(words.split()) == 1 and "brake" in forms(words):
                 cfg["_plain_brake"] = 1.0  # ("brakes": how hard, a stop said after it tells)
             a.goes_on = a.goes_on or bool(cfg.pop("_denied", None))
+            cfg.pop("_still", None)
             a.behaviours[i] = (name, cfg, crit_here or _verb_criticality(words), lk)
         if crit_here:
             if not named and isinstance(subject, _Actor) and subject.crit is None:
@@ -1611,7 +1648,7 @@ def _tidy(a: _Actor) -> list:
         after = a.behaviours[k + 1][0] if k + 1 < len(a.behaviours) else None
         if plain and after in ("stop", "sudden_stop"):
             continue  # "brakes and stops normally": the stop says how
-        if name == "stop" and crit == "dangerous":
+        if name == "stop" and crit == "dangerous" and not a.stationary:
             name = "sudden_stop"  # "decelerates abruptly to a standstill", "stops suddenly": a hard stop
         behaviours.append((name, cfg, crit, lk))
     for b in behaviours:
@@ -1763,8 +1800,8 @@ WEATHER_SEVERITY = {"clear": 0, "cloudy": 1, "rain": 2, "fog": 2, "snow": 3, "he
 
 
 def _global(r, m) -> None:
-    if m.slot == "map":
-        if not (r.map_kind and m.value == "straight"):
+    if m.slot == "map":  # (a roundabout has crossings: "on the crossing after the exit" leaves it one)
+        if not (r.map_kind and m.value == "straight") and not (r.map_kind == "roundabout" and m.value == "crossroad"):
             r.map_kind = m.value
     elif m.slot == "weather":  # the most severe said, of equals the first ("grey, drizzly": rain)
         if r.weather is None or WEATHER_SEVERITY.get(str(m.value), 0) > WEATHER_SEVERITY.get(r.weather, 0):
@@ -1856,8 +1893,8 @@ def _apply(m, who, r, link, added) -> None:
         elif m.slot == "kerb_side":
             a.kerb, a.kerb_side = True, m.value
             a.came_from = a.came_from or _from(m)
-        elif m.slot == "arm":
-            a.arm = True
+        elif m.slot == "arm" and m.prev not in _LANDMARK_PREPOSITIONS:
+            a.arm = True  # (not "on the crossing just after the exit": a landmark, not where it comes from)
         elif m.slot == "stationary":
             a.stationary = True
             a.parked = a.parked or m.words.split()[0] in ("parked", "park")
