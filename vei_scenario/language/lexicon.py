@@ -237,6 +237,7 @@ BEHAVIOUR_VERBS = {
         "cross to",
     ),
     "cut_in": (
+        "cut-in",
         "go into the lane",
         "come into the lane",
         "cut in",
@@ -721,6 +722,8 @@ STATIONARY = (
     "stopped",
     "standing",
     "broken-down",
+    "double-parked",
+    "double parked",
     "broken down",
     "stalled",
     "waiting",

@@ -209,6 +209,7 @@ class _Actor:
     acted_on: bool = False  # the object of someone's verb ("overtakes a truck")
     pavement: bool = False  # said to be on a pavement (off the road), not in a cycle lane
     member_named: bool = False  # told apart from its group ("the first one", "the other")
+    hides: bool = False  # named as what someone comes out from behind or between
 
 
 #: Euro NCAP's names of its test scenarios ("Car-to-Car Rear stationary", "Car-to-Pedestrian Nearside
@@ -766,6 +767,22 @@ def _drop_label(clauses):
     return out
 
 
+def _comes_out_from(prev, m) -> bool:
+    """Whether actor mention ``m`` names what someone comes out from behind, between or in front of
+    ("from behind an ice-cream van", "out between parked cars", "from in front of the bus")."""
+    if m.prev == "between":
+        return True
+    return (
+        prev is not None
+        and prev.slot == "relation"
+        and 0 <= m.start - prev.end <= 3
+        and (
+            prev.words in ("from behind", "from in front of")
+            or (prev.prev == "from" and prev.words in ("behind", "in front"))
+        )
+    )
+
+
 def _generic_vehicle(a: _Actor) -> bool:
     """Whether ``a`` was named by a word for any vehicle ("a lead vehicle", "the other vehicle"): an
     apposition after it ("A lead vehicle, a light goods van, ...") says which, even after "a"."""
@@ -1036,6 +1053,8 @@ def read(text: str) -> Reading:
                     for pm in passive:  # "the AV is tailgated by a sports car": the car tailgates
                         _apply(pm, who, r, link, added)
                     passive = []
+                if isinstance(who, _Actor) and who is not clause_subject and _comes_out_from(prev, m):
+                    who.hides = True  # ("darts out from behind an ice-cream van": what it comes out from)
                 if role == "verb" and isinstance(who, _Actor) and after_verb:
                     who.acted_on = True  # ("the ego is overtaking a truck": the truck is in the scene)
                 if role == "verb" and isinstance(who, _Actor) and isinstance(clause_subject, _Actor) and after_verb:
@@ -1217,6 +1236,20 @@ def read(text: str) -> Reading:
             x.group = None
         joined = []
     unplaced = [p.words for p in pending if p.slot in ("behaviour", "turn")]  # (said of nobody)
+    if unplaced and not actors and any(p.slot == "behaviour" and p.value[0] in _DRIVEN for p in pending):
+        # "cut-in on a busy highway at 100 km/h": what only a vehicle does names its vehicle, a car
+        car = _Actor("car", word="car")
+        actors.append(car)
+        done: list = []
+        for p in pending:
+            if p.slot == "speed" and r.ego_speed_mps is None:
+                r.ego_speed_mps = p.value  # (the one speed of a terse line is the test's, the ego's)
+            elif p.slot != "speed":
+                _apply(p, car, r, "sequence", done)
+        for a, i in done:
+            name, cfg, crit, lk = a.behaviours[i]
+            a.behaviours[i] = (name, {k: v for k, v in cfg.items() if not k.startswith("_")}, crit, lk)
+        pending, unplaced = [], []
     if unplaced and not actors:  # something is done, and nobody the reader can place does it
         raise NotUnderstood(list(dict.fromkeys(ignored))[:12], text, missing="road user")
     if both_with_ego and r.ego_speed_mps is None and actors and actors[0].speed_mps is not None:
@@ -1239,6 +1272,8 @@ def read(text: str) -> Reading:
             names = {b[0] for b in a.behaviours}
             if (a.wrong_way or names & set(L.DRIVER_BEHAVIOURS)) and not names & {"cross_in_front", "along_road"}:
                 a.kind = "car"
+        if a.hides and a.kind in VEHICLES and not a.behaviours and a.speed_mps is None:
+            a.stationary = a.parked = True  # (what someone steps out from behind stands there)
         said_by_noun = L.BEHAVIOUR_NOUNS.get(a.word)
         if said_by_noun and all(b[0] in ("keep_going", "cross_in_front") for b in a.behaviours):
             a.behaviours = [(said_by_noun, {}, None, "sequence")]  # ("a red-light runner from the left")
@@ -1380,6 +1415,11 @@ def read(text: str) -> Reading:
 
 #: What someone does when a road user comes into its path: braking, slowing, stopping.
 _REACTIONS = ("sudden_stop", "stop", "change_speed")
+#: What someone does to get out of the way: swerving, dodging.
+_EVASIONS = ("cut_in", "change_lane", "cut_out")
+#: Behaviours only a vehicle does: said with no road user, a car does them.
+_DRIVEN = ("cut_in", "overtake", "run_red_light", "turn_across", "turn_into", "wrong_way", "cut_out", "forced_turn",
+           "follow_vehicle", "change_lane")  # fmt: skip
 #: Behaviours that bring a road user into the ego's path: what follows them unattributed is a reaction.
 _CONFLICTS = ("cross_in_front", "run_red_light", "cut_in", "wrong_way", "turn_across", "turn_into", "overtake",
               "forced_turn")  # fmt: skip
@@ -1400,17 +1440,19 @@ def _ego_reaction(mentions, k: int, a: _Actor, first_person: bool = False) -> bo
     plain form ("Slowed down, gave her loads of space.", "Stopped.", "Slow and easy."), not the third
     person ("Brakes hard." stays the road user's)."""
     m = mentions[k]
+    opening = not any(x.slot in ("actor", "pronoun", "member") for x in mentions[:k])  # (nobody named before it)
     if m.slot == "behaviour":
+        verb = m.words.split()[0]
+        said_alone = first_person and opening and (_past(verb) or not verb.endswith("s"))
+        if said_alone and m.value[0] in _REACTIONS + _EVASIONS:
+            return True  # "Slowed down, gave her loads of space.": a diary's sentence without its "I"
         if m.value[0] not in _REACTIONS:
             return False
-        verb = m.words.split()[0]
-        if first_person and k == 0 and (_past(verb) or not verb.endswith("s")):
-            return True  # "Slowed down, gave her loads of space.": a diary's sentence without its "I"
         if not (verb.endswith("ing") or m.prev == "on"):
             return False
     elif m.slot != "stationary" or m.words not in ("stopped", "stopping"):
         return False
-    elif first_person and k == 0:
+    elif first_person and opening:
         return True  # ("Full brake. Stopped.")
     j = k - 1
     while j >= 0 and mentions[j].slot in ("criticality", "speed_word"):
@@ -1784,7 +1826,8 @@ def _nearest(named, m):
         if m.slot == "speed" and role == "prep" and ("ego", "subject") in named:
             continue  # ("I was behind this bus at 20 mph": the ego's, as "the ego follows a bus at 20 mph")
         placed = m.slot == "distance" or (m.slot == "relation" and m.value in ("ahead", "behind"))
-        if placed and isinstance(who, _Actor) and who.parked and role != "subject" and _subject_actor(named):
+        hidden_by = isinstance(who, _Actor) and (who.parked or who.hides)
+        if placed and hidden_by and role != "subject" and _subject_actor(named):
             continue  # ("runs out between parked cars, 12 m ahead": where the one running out is)
         return who
     return None
@@ -1897,4 +1940,4 @@ def _apply(m, who, r, link, added) -> None:
             a.arm = True  # (not "on the crossing just after the exit": a landmark, not where it comes from)
         elif m.slot == "stationary":
             a.stationary = True
-            a.parked = a.parked or m.words.split()[0] in ("parked", "park")
+            a.parked = a.parked or m.words.split()[0] in ("parked", "park", "double-parked", "double")
