@@ -140,6 +140,8 @@ CAR_NOUNS = (
     "pov",
     "principal other vehicle",
     "motorcycle",
+    "moped",
+    "motor scooter",
     "motorbike",
     "motorcyclist",
     "adversary",
@@ -318,6 +320,7 @@ BEHAVIOUR_VERBS = {
         "do a lane change",
     ),
     "sudden_stop": (
+        "slam on",
         "stand on the brake",
         "stop hard",
         "only just stop",

@@ -1,0 +1,216 @@
+"""Reading descriptions in the styles people write them in: dashcam commentary, diary-style stories
+told in the first person, terse notes, test-spec prose. Each case here is written for the rule it
+pins down (who brakes when the narrator does not say "I", what an outcome said as a noun means, how
+a clock or a spoken unit is read ...), not taken from a corpus."""
+
+from __future__ import annotations
+
+import pytest
+
+from vei_scenario.language.corpus_check import layers_problems
+from vei_scenario.language.reader import _tokens, read
+from vei_scenario.language.stated import stated_clock, stated_outcome
+
+
+def _actors(text: str) -> list[tuple]:
+    return [(a.kind, a.relation, [b[0] for b in a.behaviours]) for a in read(text).actors]
+
+
+# --- the outcome, said as commentary ------------------------------------------------------------------
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("Cyclist pulls out, I brake, brake... contact.", "collision"),
+        ("A van swings into our lane. Close!", "near_miss"),
+        ("The bus waits at the line for us. Clean.", "safe"),
+        ("A moped cuts across and he misses us by a hair.", "near_miss"),
+        ("I had to jink left to miss her.", "near_miss"),
+        ("We stopped with half a metre to spare.", "near_miss"),
+        ("The jogger kept to the verge and we gave her loads of room.", "safe"),
+        ("The lorry braked and I went into the back of it.", "collision"),
+        ("I tapped the scooter at walking pace.", "collision"),
+        ("The taxi stopped dead but I didn't touch it.", "near_miss"),
+        ("Two cars swerve and no one hits anyone.", "near_miss"),
+        ("The pickup did not stop, hit the kerb and rolled.", "collision"),
+        ("Honestly nothing happened, all fine.", "safe"),
+    ],
+)
+def test_an_outcome_said_as_commentary_is_the_intent(text, intent):
+    assert stated_outcome(" ".join(_tokens(text))) == intent
+
+
+def test_a_description_with_no_other_road_user_is_safe():
+    assert read("Just the ego on an empty country road at 80 km/h in the fog.").intent == "safe"
+
+
+# --- clocks, spoken units, numbers in words -----------------------------------------------------------
+@pytest.mark.parametrize(
+    "said, clock",
+    [("9 : 15 pm", "21:15"), ("7 am", "07:00"), ("12 : 30 am", "00:30"), ("14 : 05", "14:05"), ("11 pm", "23:00")],
+)
+def test_a_clock_with_am_or_pm(said, clock):
+    assert stated_clock(f"it was {said} , a van stops") == clock
+
+
+def test_a_clock_written_with_dots_does_not_end_the_sentence():
+    assert read("At 7 a.m. on a wet Monday a van ahead of us stops.").time == "07:00"
+
+
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("Doing 70 k's on the ring road when a car ahead brakes hard.", 70.0),
+        ("Ego at eighty k, a lorry pulls out from the left.", 80.0),
+        ("I was doing like forty when a cyclist cut in.", 40.0),
+        ("Ego at fifty-five, a car ahead stops.", 55.0),
+    ],
+)
+def test_spoken_speeds(text, kph):
+    assert read(text).ego_speed_mps * 3.6 == pytest.approx(kph)
+
+
+@pytest.mark.parametrize(
+    "text, attribute, value",
+    [
+        ("Rain pelting down, a cyclist crosses from the left.", "weather", "heavy_rain"),
+        ("Light snowfall, a van ahead brakes.", "weather", "snow"),
+        ("Pitch black, a deer runs across.", "time", "23:00"),
+        ("It was getting dark when a child ran out.", "time", "19:30"),
+        ("Low traffic volume; a car overtakes us.", "density", "light"),
+    ],
+)
+def test_settings_said_as_people_say_them(text, attribute, value):
+    assert getattr(read(text), attribute) == value
+
+
+# --- who does what: the narrator's reactions ------------------------------------------------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # braking said after a comma with nobody named, once the road user is in the ego's path
+        (
+            "Taxi swings into our lane from the right, hard on the brakes, stopped a metre short.",
+            [("car", "right", ["cut_in"])],
+        ),  # fmt: skip
+        (
+            "A moped comes out of the side road on the left, braking, braking, phew.",
+            [("car", "junction_left", ["turn_into"])],
+        ),  # fmt: skip
+        # a finite verb stays the road user's own
+        ("A van cuts in ahead of us and then brakes hard.", [("van", "ahead", ["cut_in", "sudden_stop"])]),
+        # a first-person sentence with no subject
+        (
+            "A jogger was running along my lane towards me. Slowed right down and went round her.",
+            [("pedestrian", "ahead", ["along_road"])],
+        ),  # fmt: skip
+    ],
+)
+def test_the_narrators_reactions_are_not_the_road_users(text, expected):
+    assert _actors(text) == expected
+
+
+def test_an_outcome_said_as_a_noun_is_no_behaviour():
+    """ "crash" is also a rider's fall (a sudden stop); standing alone after a modifier it names what
+    happened, and a road-user noun that says what it does does it."""
+    assert _actors("Red-light runner from the right, dusk, side-on crash.") == [
+        ("car", "junction_right", ["run_red_light"])
+    ]
+    assert _actors("Ghost driver in our lane, head-on crash.")[0][2] == ["wrong_way"]
+
+
+def test_a_behaviour_only_a_vehicle_does_said_with_no_road_user_is_a_cars():
+    r = read("Cut-in on a busy motorway at 120 km/h.")
+    assert [(a.kind, [b[0] for b in a.behaviours]) for a in r.actors] == [("car", ["cut_in"])]
+    assert r.ego_speed_mps * 3.6 == pytest.approx(120.0)
+
+
+# --- who does what: people, vehicles, groups --------------------------------------------------------------
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("Some bloke in front slammed on for no reason.", "car"),
+        ("A guy coming the wrong way in our lane.", "car"),
+        ("A guy walks across in front of us.", "pedestrian"),
+        ("Some idiot in a pickup cuts in ahead of us.", "van"),
+    ],
+)
+def test_a_person_word_is_a_driver_when_they_do_what_drivers_do(text, kind):
+    assert [a.kind for a in read(text).actors] == [kind]
+
+
+def test_the_first_and_the_second_of_a_group():
+    r = read("Two vans ahead both brake: the second one stops hard, the first one stops normally.")
+    assert [[b[0] for b in a.behaviours] for a in r.actors] == [["stop"], ["sudden_stop"]]
+
+
+def test_an_apposition_after_a_word_for_any_vehicle_says_which():
+    assert [a.kind for a in read("A lead vehicle, a white box van, brakes hard 20 m ahead.").actors] == ["van"]
+
+
+def test_a_vehicle_someone_comes_out_from_behind_stands_and_the_distance_is_the_crossers():
+    r = read("A boy dashes out from behind a parked-up camper on the left, 9 m ahead of us.")
+    boy, camper = r.actors
+    assert (boy.kind, boy.relation, boy.distance_m) == ("pedestrian", "roadside_left", 9.0)
+    assert (camper.kind, camper.speed_mps, camper.distance_m) == ("van", 0.0, None)
+
+
+def test_a_speed_after_what_the_ego_is_behind_is_the_egos():
+    r = read("I was stuck behind a tractor at about 25 mph when a car overtook us both.")
+    assert r.ego_speed_mps * 3.6 == pytest.approx(25 * 1.609344, abs=0.1)
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # a phrase that denies giving way at a roundabout: straight into the ego's path from its arm
+        (
+            "Roundabout, a lorry coming in from the left does not give way.",
+            [("truck", "junction_left", ["run_red_light"])],
+        ),  # fmt: skip
+        (
+            "At the roundabout a van joins from the next entry on the right without yielding.",
+            [("van", "junction_right", ["turn_into"])],
+        ),  # fmt: skip
+        # a possessive inside a phrase
+        ("A cyclist sails through her red from the left.", [("bicycle", "junction_left", ["run_red_light"])]),
+        # waiting for the ego to pass is giving way
+        ("A car waits in the side road on the right for us to go.", [("car", "junction_right", ["give_way"])]),
+        # pulling in at a stop is a stop, not a cut-in
+        ("The bus ahead pulls in to the bus stop.", [("truck", "ahead", ["stop"])]),
+        # a hard stop said by its wording
+        ("The lorry ahead decelerates sharply to a standstill.", [("truck", "ahead", ["sudden_stop"])]),
+        ("The car ahead brakes and stops gently.", [("car", "ahead", ["stop"])]),
+        # the crossing said after the vehicle a rider comes out from is the rider's, with its side
+        (
+            "A cyclist shoots out from in front of the parked lorry crossing right to left.",
+            [("bicycle", "roadside_right", ["cross_in_front"]), ("truck", "roadside_right", ["stop"])],
+        ),  # fmt: skip
+    ],
+)
+def test_behaviours_as_people_say_them(text, expected):
+    assert _actors(text) == expected
+
+
+# --- the scorer, aligned with the format ---------------------------------------------------------------
+def _layers(adversaries):
+    env = {"map": {"kind": "straight"}, "weather": {"condition": "clear"}, "time_of_day": "12:00"}
+    return {"environment": env | {"traffic_density": "none"}, "ego": {"speed_mps": 10.0}, "adversaries": adversaries}
+
+
+def test_a_vehicle_standing_in_the_lane_doing_nothing_is_scenery_not_a_listed_road_user():
+    """The format lists road users "not parked scenery unless it acts": a broken-down lorry a cut-out
+    reveals does not act, wherever it stands."""
+    cut_out = {"type": "car", "spawn": {"relation": "ahead"}, "speed_mps": 20.0, "behaviour": {"behaviour": "cut_out"}}
+    lorry = {"type": "truck", "spawn": {"relation": "ahead"}, "speed_mps": 0.0, "behaviour": {"behaviour": "stop"}}
+    case = {"actors": [{"type": "car", "behaviours": ["cut_out"]}]}
+    assert layers_problems(_layers([cut_out, lorry]), case) == []
+    moving = dict(lorry, speed_mps=5.0)  # (one that moves acts, and is counted)
+    assert layers_problems(_layers([cut_out, moving]), case) != []
+
+
+def test_a_rider_along_the_road_at_the_edge_of_the_lane_starts_on_that_kerb_side():
+    rider = {"type": "bicycle", "spawn": {"relation": "ahead", "lateral_m": 1.2}, "speed_mps": 5.0,
+             "behaviour": {"behaviour": "along_road"}}  # fmt: skip
+    want = {"type": "bicycle", "behaviours": ["along_road"], "relation": ["roadside_left"]}
+    assert layers_problems(_layers([rider]), {"actors": [want]}) == []
+    assert layers_problems(_layers([rider]), {"actors": [dict(want, relation=["roadside_right"])]}) != []
