@@ -91,18 +91,18 @@ def test_settings_said_as_people_say_them(text, attribute, value):
         (
             "Taxi swings into our lane from the right, hard on the brakes, stopped a metre short.",
             [("car", "right", ["cut_in"])],
-        ),  # fmt: skip
+        ),
         (
             "A moped comes out of the side road on the left, braking, braking, phew.",
             [("car", "junction_left", ["turn_into"])],
-        ),  # fmt: skip
+        ),
         # a finite verb stays the road user's own
         ("A van cuts in ahead of us and then brakes hard.", [("van", "ahead", ["cut_in", "sudden_stop"])]),
         # a first-person sentence with no subject
         (
             "A jogger was running along my lane towards me. Slowed right down and went round her.",
             [("pedestrian", "ahead", ["along_road"])],
-        ),  # fmt: skip
+        ),
     ],
 )
 def test_the_narrators_reactions_are_not_the_road_users(text, expected):
@@ -166,11 +166,11 @@ def test_a_speed_after_what_the_ego_is_behind_is_the_egos():
         (
             "Roundabout, a lorry coming in from the left does not give way.",
             [("truck", "junction_left", ["run_red_light"])],
-        ),  # fmt: skip
+        ),
         (
             "At the roundabout a van joins from the next entry on the right without yielding.",
             [("van", "junction_right", ["turn_into"])],
-        ),  # fmt: skip
+        ),
         # a possessive inside a phrase
         ("A cyclist sails through her red from the left.", [("bicycle", "junction_left", ["run_red_light"])]),
         # waiting for the ego to pass is giving way
@@ -184,7 +184,7 @@ def test_a_speed_after_what_the_ego_is_behind_is_the_egos():
         (
             "A cyclist shoots out from in front of the parked lorry crossing right to left.",
             [("bicycle", "roadside_right", ["cross_in_front"]), ("truck", "roadside_right", ["stop"])],
-        ),  # fmt: skip
+        ),
     ],
 )
 def test_behaviours_as_people_say_them(text, expected):
@@ -209,8 +209,12 @@ def test_a_vehicle_standing_in_the_lane_doing_nothing_is_scenery_not_a_listed_ro
 
 
 def test_a_rider_along_the_road_at_the_edge_of_the_lane_starts_on_that_kerb_side():
-    rider = {"type": "bicycle", "spawn": {"relation": "ahead", "lateral_m": 1.2}, "speed_mps": 5.0,
-             "behaviour": {"behaviour": "along_road"}}  # fmt: skip
+    rider = {
+        "type": "bicycle",
+        "spawn": {"relation": "ahead", "lateral_m": 1.2},
+        "speed_mps": 5.0,
+        "behaviour": {"behaviour": "along_road"},
+    }
     want = {"type": "bicycle", "behaviours": ["along_road"], "relation": ["roadside_left"]}
     assert layers_problems(_layers([rider]), {"actors": [want]}) == []
     assert layers_problems(_layers([rider]), {"actors": [dict(want, relation=["roadside_right"])]}) != []
