@@ -381,6 +381,11 @@ BEHAVIOUR_VERBS = {
         "ride our bumper",
         "sit on the bumper",
         "follow closely",
+        "keep a headway",
+        "keep a time headway",
+        "keep a time gap",
+        "keep a gap",
+        "time headway",
     ),
     "keep_going": (
         "keep going",

@@ -874,6 +874,7 @@ def read(text: str) -> Reading:
     pending: list[_Mention] = []
     last_group: list[_Actor] | None = None  # ("Two scooters ride ahead; one of them brakes": that pair)
     both_with_ego = False  # ("CCRb: both cars at 50 km/h ...": the ego is one of them)
+    ego_is_a_person = False  # (the ego named as "I" or "we": "it" is then never the ego)
     first_person = bool({"i", "we", "me", "my", "us", "our"} & set(_tokens(text)))  # (the narrator's story)
     bound: dict[str, _Actor | str] = {}  # "he"/"she" → whom it first named
     for link, mentions in clauses:
@@ -957,6 +958,15 @@ def read(text: str) -> Reading:
                         # drives it) is the last road user's, unless that one stands and it is a slowing
                         still = actors[-1].stationary and verb.value[0] in ("stop", "sudden_stop", "change_speed")
                         who = who if still else actors[-1]
+                    elif (
+                        who == "ego"
+                        and actors
+                        and m.words == "it"
+                        and ego_is_a_person
+                        and verb is not None
+                        and verb.slot in ("to_stop", "unknown_verb")
+                    ):
+                        who = actors[-1]  # ("We were following the bus when it pulled to a stop": not us)
                     if m.words in ("he", "she"):  # a person's pronoun names the same one all through a story
                         who = bound.setdefault(m.words, who)  # ("the driver said she ... She braked")
                     role = "subject"
@@ -979,6 +989,7 @@ def read(text: str) -> Reading:
                     role = "subject"
                 elif m.value == "ego":
                     who = "ego"
+                    ego_is_a_person = ego_is_a_person or m.words in ("i", "we", "me", "us")
                     count = 1  # ("overtakes both of us": the ego and the one named with it)
                 else:
                     same = [a for a in actors if a.kind == m.value]
@@ -1177,7 +1188,7 @@ def read(text: str) -> Reading:
                 who = _nearest(named, m)
                 if who == "ego" and m.slot == "distance" and actors:
                     who = actors[-1]  # a gap said of the ego is the gap to the road user named last
-                if who is None and m.slot == "speed" and isinstance(clause_subject, _Actor):
+                if who is None and m.slot in ("speed", "distance") and isinstance(clause_subject, _Actor):
                     who = clause_subject  # "..., and then overtakes it at 25 km/h": the one who overtakes
                 if who is None and m.slot in ("returns", "wrong_way") and isinstance(subject, _Actor):
                     who = subject  # "..., then cuts back": what it does, said without naming it again
