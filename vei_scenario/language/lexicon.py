@@ -300,6 +300,11 @@ BEHAVIOUR_VERBS = {
     "change_lane": (
         "change lane",
         "change lanes",
+        "swerve across lanes",
+        "move across lanes",
+        "cut across lanes",
+        "drift across lanes",
+        "weave across lanes",
         "move over",
         "swerve into the next lane",
         "swerve into the next",

@@ -172,6 +172,8 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
         text,
     )
     text = re.sub(r"\b(turn|turns|turning|turned) to (?:the )?(left|right)\b", r"\1 \2", text)
+    # "a van two lanes over": in a lane to the side (which side unsaid), not the road's lanes
+    text = re.sub(r"\b(?:one|a|two|three|\d) lanes? (?:over|across)\b", "from the next lane", text)
     # "crossing left to right": from the left
     text = re.sub(r"\b(?:from )?(?:the )?(left|right) to (?:the )?(?:right|left)\b(?! lane)", r"from the \1", text)
     # "traffic was moderate": moderate traffic (the word is then no criticality of what follows)

@@ -1924,6 +1924,8 @@ def _apply(m, who, r, link, added) -> None:
             a.speed_mps = -float(m.value) if a.speed_mps is None else a.speed_mps
         elif m.slot == "distance":
             a.distance_m = m.value
+        elif m.slot == "relation" and m.value == "ahead" and a.behaviours and a.behaviours[-1][0] == "cut_in":
+            a.said.add("in_front")  # "cuts in 10 m ahead": where it cuts in, not where it starts
         elif m.slot == "relation":
             a.said.add(m.value)
             a.followed = a.followed or (m.value == "ahead" and m.words in ("following", "tailing"))
