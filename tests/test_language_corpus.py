@@ -40,8 +40,8 @@ def test_at_least_nine_in_ten_descriptions_are_understood_and_faithful(corpus):
 #: for them: A (the development set) 41 understood, 5 faithful of 59; B (held out, measured again only
 #: at the end) 53 understood, 3 faithful of 63. The floors are the figures measured at the end.
 INDEPENDENT = {
-    ROOT / "tests" / "data" / "language_independent_a.json": (59, 44),
-    ROOT / "tests" / "data" / "language_independent_b.json": (63, 12),
+    ROOT / "tests" / "data" / "language_independent_a.json": (59, 48),
+    ROOT / "tests" / "data" / "language_independent_b.json": (63, 53),
 }
 
 
