@@ -97,7 +97,7 @@ def test_settings_said_as_people_say_them(text, attribute, value):
             [("car", "junction_left", ["turn_into"])],
         ),
         # a finite verb stays the road user's own
-        ("A van cuts in ahead of us and then brakes hard.", [("van", "ahead", ["cut_in", "sudden_stop"])]),
+        ("A van cuts in ahead of us and then brakes hard.", [("van", None, ["cut_in", "sudden_stop"])]),
         # a first-person sentence with no subject
         (
             "A jogger was running along my lane towards me. Slowed right down and went round her.",

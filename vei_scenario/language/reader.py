@@ -982,7 +982,8 @@ def read(text: str) -> Reading:
                     elif any(w in ("second", "latter") for w in words) and len(pool) > 1:
                         who = pool[1] if "second" in words else pool[-1]
                     else:  # ("the first one stops, the one in front of me brakes": the next not yet told)
-                        who = free[0] if free else unnamed[0] if unnamed else pool[-1]
+                        told = unnamed and len(unnamed) < len(pool)  # (some told apart already)
+                        who = free[0] if free else unnamed[0] if told else pool[-1]
                     who.member_named = True
                     for a in pool:  # from here on each member is told apart
                         a.group = None
