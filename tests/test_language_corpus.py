@@ -41,7 +41,7 @@ def test_at_least_nine_in_ten_descriptions_are_understood_and_faithful(corpus):
 #: at the end) 53 understood, 3 faithful of 63. The floors are the figures measured at the end.
 INDEPENDENT = {
     ROOT / "tests" / "data" / "language_independent_a.json": (59, 48),
-    ROOT / "tests" / "data" / "language_independent_b.json": (63, 53),
+    ROOT / "tests" / "data" / "language_independent_b.json": (63, 56),
 }
 
 

@@ -191,6 +191,47 @@ def test_behaviours_as_people_say_them(text, expected):
     assert _actors(text) == expected
 
 
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # a rider cutting across at a junction crosses the ego's road
+        ("A cyclist cuts across at the crossroads.", [("bicycle", "roadside_right", ["cross_in_front"])]),
+        # a rider pulling out to overtake another does not cross
+        (
+            "Two cyclists ride along the kerb; the second one pulls out to overtake the first, right into our path.",
+            [("bicycle", "ahead", ["along_road"]), ("bicycle", None, ["cut_in", "overtake"])],
+        ),
+        # "two lanes over" is a lane to the side; "ahead" after a cut-in is where it cuts in
+        ("A taxi two lanes over darts into our lane 8 m ahead.", [("car", None, ["cut_in"])]),
+        # keeping a time headway is following
+        ("A pickup keeps a 2 s time headway behind us.", [("van", "behind", ["follow_vehicle"])]),
+    ],
+)
+def test_more_behaviours_as_people_say_them(text, expected):
+    assert _actors(text) == expected
+
+
+def test_the_narrator_drives_where_a_first_person_story_opens_without_its_i():
+    r = read("Just cruising behind my neighbour's van at about 30 mph, nothing to report.")
+    assert r.ego_speed_mps * 3.6 == pytest.approx(30 * 1.609344, abs=0.1)
+    assert [(a.kind, a.relation) for a in r.actors] == [("van", "ahead")]
+
+
+def test_it_in_a_story_told_as_we_is_the_road_user():
+    r = read("We were behind a tram at 25 km/h when it drew to a stop.")
+    assert [(a.kind, [b[0] for b in a.behaviours]) for a in r.actors] == [("truck", ["stop"])]
+
+
+def test_a_bare_speed_among_the_settings_of_a_terse_line_is_the_egos():
+    r = read("Lead van brakes hard, 70 km/h, fog.")
+    assert r.ego_speed_mps * 3.6 == pytest.approx(70.0) and r.actors[0].speed_mps is None
+
+
+def test_a_distance_after_then_is_the_subjects():
+    (car,) = read("A car in the right lane then moves into our lane 12 m ahead of us.").actors
+    assert car.distance_m == 12.0
+
+
 # --- the scorer, aligned with the format ---------------------------------------------------------------
 def _layers(adversaries):
     env = {"map": {"kind": "straight"}, "weather": {"condition": "clear"}, "time_of_day": "12:00"}

@@ -482,7 +482,15 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
             skipped = _best(tokens[: i + 1] + tokens[i + 2 :], i)
             if skipped is not None and len(skipped) > 1:
                 key, adverb = skipped, tokens[i + 1]
-        if key is None and tok not in FUNCTION_WORDS and i + 1 < len(tokens) and _verb_before(tok, tokens[i + 1]):
+        to_a_stop = _best(tokens, i + 1) if i + 1 < len(tokens) else None  # ("drew to a stop": no motion verb)
+        to_a_stop = to_a_stop is not None and TABLE[to_a_stop][0] == "to_stop"
+        if (
+            key is None
+            and tok not in FUNCTION_WORDS
+            and i + 1 < len(tokens)
+            and not to_a_stop
+            and _verb_before(tok, tokens[i + 1])
+        ):
             # a verb the lexicon lacks, with where it goes ("swung into my lane", "bolted across the road"):
             # read as the plain motion verb with the same words, when that is a behaviour
             to_a_place = tokens[i + 1] in ("to", "in") and tokens[i + 2 : i + 3] and tokens[i + 2] in _DETERMINERS
@@ -781,6 +789,23 @@ def _comes_out_from(prev, m) -> bool:
             or (prev.prev == "from" and prev.words in ("behind", "in front"))
         )
     )
+
+
+#: Mentions of a description's settings (where, when, in what weather and traffic).
+_SETTINGS = ("map", "weather", "time", "density", "lanes")
+
+
+def _among_settings(mentions, k: int) -> bool:
+    """Whether the speed ``mentions[k]`` stands alone between commas next to a setting, as terse notes
+    give the test's speed ("car ahead swerves to reveal a stopped truck, 80 km/h, heavy rain")."""
+    before = mentions[k - 1] if k else None
+    after = mentions[k + 1] if k + 1 < len(mentions) else None
+    if before is None or before.slot != "punct" or before.value != ",":
+        return False
+    if after is not None and not (after.slot == "punct" and after.value == ","):
+        return False
+    near = [mentions[j] for j in (k - 2, k + 2) if 0 <= j < len(mentions)]
+    return any(x.slot in _SETTINGS for x in near)
 
 
 def _generic_vehicle(a: _Actor) -> bool:
@@ -1108,6 +1133,18 @@ def read(text: str) -> Reading:
                 ignored.append(m.words)
                 prev = m
                 continue
+            if (
+                first_person
+                and subject is None
+                and not named
+                and m.slot in ("behaviour", "ego_verb")
+                and (m.slot == "ego_verb" or m.value[0] == "keep_going")
+            ):  # "Just cruising behind my mate's car at 60 mph": before anyone is named, the narrator drives
+                clause_subject = subject = "ego"
+                named.append(("ego", "subject"))
+                expect_subject = False
+                prev = m
+                continue
             if m.slot in _VERBS:
                 target = clause_subject
                 if (
@@ -1193,6 +1230,10 @@ def read(text: str) -> Reading:
                     who = clause_subject  # "..., and then overtakes it at 25 km/h": the one who overtakes
                 if who is None and m.slot in ("returns", "wrong_way") and isinstance(subject, _Actor):
                     who = subject  # "..., then cuts back": what it does, said without naming it again
+                if m.slot == "speed" and r.ego_speed_mps is None and _among_settings(mentions, k):
+                    r.ego_speed_mps = m.value  # ("... reveal a stopped truck, 80 km/h, heavy rain": the test's speed)
+                    prev = m
+                    continue
                 too_fast = m.slot == "speed" and isinstance(who, _Actor) and m.value > FASTEST_MPS.get(who.kind, 1e9)
                 ego_right_before = (
                     prev is not None and prev.slot == "actor" and prev.value == "ego" and prev.prev == "by"
@@ -1378,7 +1419,20 @@ def read(text: str) -> Reading:
             a.relation = "roadside_" + str(a.relation).rsplit("_", 1)[1]
             crit = next((b[2] for b in behaviours if b[2]), a.crit)
             behaviours = [("cross_in_front", {}, crit, "sequence")]
-        if a.kind in RIDERS and a.pavement and behaviours and behaviours[0][0] in ("cut_in", "forced_turn"):
+        if a.kind in RIDERS and junction and behaviours[:1] and behaviours[0][0] == "cut_in":
+            if not (a.lane_side or a.followed or a.toward or "ahead" in a.said or a.goes_on):
+                # "an e-scooter cuts across at a junction": a rider crossing the ego's road
+                behaviours = [("cross_in_front", {}, *behaviours[0][2:])] + behaviours[1:]
+        overtaking = any(b[0] == "overtake" for b in behaviours)  # (it rides along, and out to pass)
+        if a.kind in RIDERS and overtaking:
+            behaviours = [b for b in behaviours if b[0] != "cross_in_front"] or behaviours  # ("... right into my path")
+        if (
+            a.kind in RIDERS
+            and a.pavement
+            and not overtaking
+            and behaviours
+            and behaviours[0][0] in ("cut_in", "forced_turn")
+        ):
             # "riding on the sidewalk, then turning into the road before our car": it crosses into the path
             behaviours = [("cross_in_front", {}, *behaviours[0][2:])] + behaviours[1:]
         crossing_at = next((k for k, b in enumerate(behaviours) if b[0] == "cross_in_front"), None)
@@ -1782,6 +1836,9 @@ def _object_follows(mentions, k: int) -> bool:
         return False
     end += 1 if m.next_ == "of" else 0  # ("ahead of a motorcycle")
     for x in mentions[k + 1 :]:
+        if x.slot == "punct" and x.value == "'s" and x.start <= end + 2:
+            end = x.start + 1  # ("behind my mate's car": whose it is, then the car)
+            continue
         if x.start > end + 1:
             return False
         if x.slot == "actor":
