@@ -232,6 +232,36 @@ def test_a_distance_after_then_is_the_subjects():
     assert car.distance_m == 12.0
 
 
+def test_a_junction_named_by_its_line_or_sign_is_no_behaviour():
+    r = read("A van waits at the stop sign on the right, then pulls out in front of us.")
+    assert r.map_kind == "crossroad"
+    assert [(a.kind, a.relation, [b[0] for b in a.behaviours]) for a in r.actors] == [
+        ("van", "junction_right", ["turn_into"])
+    ]
+
+
+def test_a_bare_number_after_a_verb_of_going_is_a_speed():
+    assert read("Ego drives 45, a jogger crosses from the left.").ego_speed_mps * 3.6 == pytest.approx(45.0)
+    assert read("Ego drives 45, a jogger crosses from the left.").actors[0].speed_mps is None
+
+
+def test_an_animal_or_child_moving_into_the_road_crosses_it():
+    assert _actors("A fox shot into the road from the hedge.") == [("pedestrian", "roadside_right", ["cross_in_front"])]
+
+
+def test_the_lights_on_red_are_no_red_light_run_and_another_driver_behind_is_another_car():
+    r = read("Approaching the lights on red, the van in front stops, the van behind us does not stop and hits us.")
+    assert [(a.kind, a.relation) for a in r.actors] == [("van", "ahead"), ("van", "behind")]
+    assert all("run_red_light" not in [b[0] for b in a.behaviours] for a in r.actors)
+
+
+def test_a_zebra_crossing_is_no_junction():
+    r = read("At the zebra crossing a man starts to cross from the right.")
+    assert r.map_kind != "crossroad" and _actors("At the zebra crossing a man crosses from the right.")[0][2] == [
+        "cross_in_front"
+    ]
+
+
 # --- the scorer, aligned with the format ---------------------------------------------------------------
 def _layers(adversaries):
     env = {"map": {"kind": "straight"}, "weather": {"condition": "clear"}, "time_of_day": "12:00"}

@@ -607,6 +607,11 @@ LANE_SIDES = {
 KERB = (
     "kerb",
     "pedestrian crossing",
+    "zebra crossing",
+    "pelican crossing",
+    "puffin crossing",
+    "toucan crossing",
+    "crosswalk",
     "bike lane",
     "cycle lane",
     "bicycle lane",

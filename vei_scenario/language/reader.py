@@ -411,7 +411,16 @@ def _number(tokens: list[str], i: int) -> tuple[str, float, int] | None:
     prev = tokens[i - 1] if i > 0 else ""
     if prev in ("at", "doing", "about", "around", "of") and 3 <= value <= 250:  # "at 120": km/h
         return "speed", value / 3.6, 1
+    ends = nxt in ("", ".", ",", ";", "!", "?", "and", "then", "when", "while", "but")
+    if prev in _MOTION_BEFORE_SPEED and 3 <= value <= 250 and ends:  # "Ego goes 50, ...": km/h
+        return "speed", value / 3.6, 1
     return "unknown", value, 1
+
+
+#: Verbs of going after which a bare number is a speed ("the ego goes 50, ...", "driving 30 when").
+_MOTION_BEFORE_SPEED = frozenset(
+    "go goes going went drive drives driving drove travel travels travelling traveling travelled traveled".split()
+)
 
 
 def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
@@ -574,6 +583,19 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
             tokens[i - 1 : i] in (["the"], ["a"], ["an"]) and "NOUN" in _pos(tok) and tok not in ("stop", "crossing")
         )
         braking = "brake" in forms(tok)  # ("slammed on its brakes": the braking, said with its brakes)
+        if slot == "behaviour" and tokens[i + len(key) : i + len(key) + 1] in (["line"], ["sign"], ["markings"]):
+            # "at the give way line", "a stop sign": a junction's, no behaviour
+            clauses[-1][1].append(_Mention("map", "crossroad", " ".join(tokens[i : i + len(key) + 1]), i, prev))
+            i += len(key) + 1
+            continue
+        if (
+            slot == "behaviour"
+            and value[0] == "run_red_light"
+            and tokens[i - 1 : i] in (["light"], ["lights"], ["signal"])
+        ):
+            ignored.extend(tokens[i : i + len(key)])  # "approaching traffic lights on red": the light's state
+            i += len(key)
+            continue
         if slot == "behaviour" and _bare_noun(tokens, i, key):
             ignored.append(tok)  # "head-on crash.", ", crash", "Full brake.": what happened, said as a noun
             i += 1
@@ -727,7 +749,8 @@ def _verb_before(word: str, after: str) -> bool:
     pos = _pos(word)
     if "VERB" not in pos:
         return False
-    return not pos & {"NOUN", "ADJ", "PROPN"} or (after in _MOTION_PARTICLES and word.endswith(("ing", "ed", "s")))
+    moved = word.endswith(("ing", "ed", "s")) or _past(word)  # ("shot into the road": an irregular past)
+    return not pos & {"NOUN", "ADJ", "PROPN"} or (after in _MOTION_PARTICLES and moved)
 
 
 #: Verbs whose very wording is critical ("darts out", "tailgates"), unless the clause says otherwise.
@@ -940,6 +963,9 @@ def read(text: str) -> Reading:
                     r.ego_speed_mps = m.value
                 prev = m
                 continue
+            if m.slot == "relation" and m.value == "oncoming" and nxt is not None and nxt.slot == "map":
+                prev = m  # "approaching the traffic lights": the ego's approach to a place, no one oncoming
+                continue
             if m.slot == "count":
                 if not _counts_actor(mentions, k):
                     continue  # ("the middle lane of three": a count of no road user)
@@ -1035,7 +1061,19 @@ def read(text: str) -> Reading:
                         last.kind = str(m.value) if last.kind == "car" else last.kind
                         prev = m
                         continue
-                    if same and (m.det in ("the", "this", "that", "its", "our", "my") or (not m.det and _bare(m))):
+                    elsewhere = (  # "the car in front stops, the driver behind us ...": another one
+                        same
+                        and nxt is not None
+                        and nxt.slot == "relation"
+                        and nxt.start == m.end
+                        and nxt.value in ("ahead", "behind")
+                        and ({"ahead", "behind"} - {nxt.value}) & same[-1].said
+                    )
+                    if (
+                        same
+                        and not elsewhere
+                        and (m.det in ("the", "this", "that", "its", "our", "my") or (not m.det and _bare(m)))
+                    ):
                         who = same[-1]  # ("Target: cyclist, 30 m ahead. Cyclist turns left.": the same one)
                     elif (
                         role == "prep"
@@ -1378,6 +1416,13 @@ def read(text: str) -> Reading:
                 ("cross_in_front", c, k, lk) if n == "cut_in" else (n, c, k, lk) for n, c, k, lk in behaviours
             ]
             behaviours = [b for k, b in enumerate(behaviours) if k == 0 or b[0] != behaviours[k - 1][0]]
+        if (
+            a.kind == "pedestrian"
+            and a.word not in L.GENERIC_PERSONS
+            and behaviours[:1]
+            and behaviours[0][0] in ("cut_in", "change_lane")
+        ):  # "a dog bolted into the road": a walker (a child, an animal) moving into the road crosses it
+            behaviours = [("cross_in_front", {}, *behaviours[0][2:])] + behaviours[1:]
         if a.kind == "pedestrian" and behaviours and behaviours[0][0] in VEHICLE_BEHAVIOURS:
             spec.kind = a.kind = "car"
         moving_out = behaviours and behaviours[0][0] == "cut_in" and a.followed
@@ -1982,6 +2027,8 @@ def _apply(m, who, r, link, added) -> None:
             a.speed_mps = -float(m.value) if a.speed_mps is None else a.speed_mps
         elif m.slot == "distance":
             a.distance_m = m.value
+        elif m.slot == "relation" and m.value in ("ahead", "behind") and m.next_ in ("it", "him", "her", "them"):
+            a.said.add("near_other")  # "a car behind it swerves": behind another road user, not the ego
         elif m.slot == "relation" and m.value == "ahead" and a.behaviours and a.behaviours[-1][0] == "cut_in":
             a.said.add("in_front")  # "cuts in 10 m ahead": where it cuts in, not where it starts
         elif m.slot == "relation":
