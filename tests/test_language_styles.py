@@ -262,6 +262,18 @@ def test_a_zebra_crossing_is_no_junction():
     ]
 
 
+def test_where_the_ego_is_struck_from_is_where_the_doer_comes_from():
+    (truck,) = read("Our vehicle was waiting at the lights when it was struck from behind by a lorry.").actors
+    assert (truck.kind, truck.relation) == ("truck", "behind")
+
+
+def test_an_animal_jumping_from_the_side_onto_the_road_crosses():
+    assert _actors("A deer is jumping from the trees on the left, 30 m ahead.")[0][1:] == (
+        "roadside_left",
+        ["cross_in_front"],
+    )
+
+
 # --- the scorer, aligned with the format ---------------------------------------------------------------
 def _layers(adversaries):
     env = {"map": {"kind": "straight"}, "weather": {"condition": "clear"}, "time_of_day": "12:00"}

@@ -185,6 +185,11 @@ EGO_NOUNS = (
 BEHAVIOUR_VERBS = {
     "cross_in_front": (
         "cross",
+        "jump from",
+        "leap from",
+        "leap out",
+        "leap into the road",
+        "leap onto the road",
         "jaywalk",
         "cross in front",
         "walk across",

@@ -1241,6 +1241,17 @@ def read(text: str) -> Reading:
                 prev = m
                 continue
             # positions, states, numbers: the actor they describe
+            if (
+                m.slot == "relation"
+                and clause_subject == "ego"
+                and m.next_ == "by"
+                and nxt is not None
+                and nxt.slot == "actor"
+                and nxt.value != "ego"
+            ):  # "the ego was struck from behind by a truck": where the truck comes from
+                pending.append(m)
+                prev = m
+                continue
             if reacting and m.slot in ("distance", "speed", "accel"):
                 ignored.append(m.words)  # ("stopped 2 m short": how the narrator's stop went)
                 prev = m
