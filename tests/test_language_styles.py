@@ -274,6 +274,19 @@ def test_an_animal_jumping_from_the_side_onto_the_road_crosses():
     )
 
 
+def test_a_road_user_entering_a_roundabout_without_yielding_plays_a_run_into_the_egos_path(tmp_path):
+    """The roundabout's arms link one lane each way into the ring: with one lane each way (unless the
+    text asks for more) the ego and the road user entering from the next arm both reach the ring, and
+    the entry meets the ego's path (before, both stopped at the end of their arms, 60 m apart)."""
+    from vei_scenario.language.corpus_check import play_case
+    from vei_scenario.language.rules_backend import layers_from_text
+
+    text = "On the roundabout a moped comes in from the right without giving way."
+    assert _actors(text) == [("car", "junction_right", ["run_red_light"])]
+    for seed in (0, 1):
+        assert play_case({"text": text}, layers_from_text, tmp_path, seed) == [], seed
+
+
 # --- the scorer, aligned with the format ---------------------------------------------------------------
 def _layers(adversaries):
     env = {"map": {"kind": "straight"}, "weather": {"condition": "clear"}, "time_of_day": "12:00"}
