@@ -287,6 +287,16 @@ def test_a_road_user_entering_a_roundabout_without_yielding_plays_a_run_into_the
         assert play_case({"text": text}, layers_from_text, tmp_path, seed) == [], seed
 
 
+def test_a_vehicle_coming_up_behind_on_a_side_to_cut_in_starts_in_that_lane_faster_than_the_ego(tmp_path):
+    from vei_scenario.language.corpus_check import play_case
+    from vei_scenario.language.rules_backend import layers_from_text
+
+    text = "At 60 mph a van comes up behind on the left and swerves into our lane."
+    (van,) = read(text).actors
+    assert (van.relation, [b[0] for b in van.behaviours]) == ("left", ["cut_in"]) and van.speed_mps < 0  # (faster)
+    assert play_case({"text": text}, layers_from_text, tmp_path) == []
+
+
 # --- the scorer, aligned with the format ---------------------------------------------------------------
 def _layers(adversaries):
     env = {"map": {"kind": "straight"}, "weather": {"condition": "clear"}, "time_of_day": "12:00"}

@@ -881,7 +881,7 @@ def _resolve_relation(a: _Actor, map_kind: str | None) -> str | None:
         return f"junction_{side}" if side in ("left", "right") else "junction_opposite"  # arm said, else opposite
     if a.followed and first == "cut_in":
         return "ahead"  # the ego follows it in its lane: it pulls out of it, to the side said
-    if a.relation == "oncoming" or (a.relation == "behind" and not (a.lane_side and first == "cut_in")):
+    if a.relation == "oncoming" or (a.relation == "behind" and not ((a.lane_side or a.side) and first == "cut_in")):
         return a.relation
     if vehicle and a.kerb_side == "left" and first != "cross_in_front":
         return "oncoming"  # a vehicle on the far side of the road drives the other way
@@ -1505,6 +1505,14 @@ def read(text: str) -> Reading:
         ):  # entering the junction from a side road: across the ego's path
             behaviours[0] = ("run_red_light", behaviours[0][1], behaviours[0][2], behaviours[0][3])
         spec.behaviours = behaviours
+        if (
+            behaviours[:1]
+            and behaviours[0][0] == "cut_in"
+            and "behind" in a.said
+            and spec.relation in ("left", "right")
+            and a.speed_mps is None
+        ):  # "comes up behind on the right and dives into our lane": it passes the ego first
+            a.speed_mps = -V.SPEED_WORDS["fast"]
         spec.distance_m = a.distance_m
         spec.speed_mps = 0.0 if a.stationary and a.speed_mps is None else a.speed_mps
         _specialise(a, spec, junction)
