@@ -297,6 +297,20 @@ def test_a_vehicle_coming_up_behind_on_a_side_to_cut_in_starts_in_that_lane_fast
     assert play_case({"text": text}, layers_from_text, tmp_path) == []
 
 
+def test_braking_to_a_speed_is_a_slowing_by_the_difference():
+    (truck,) = read("A truck at 80 km/h ahead of us brakes to 50 km/h.").actors
+    assert [b[0] for b in truck.behaviours] == ["change_speed"]
+    assert truck.behaviours[0][1]["speed_delta_mps"] * 3.6 == pytest.approx(-30.0)
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [("A van drove into its rear.", "collision"), ("The bus missed us by centimetres.", "near_miss")],
+)
+def test_more_outcomes(text, intent):
+    assert stated_outcome(" ".join(_tokens(text))) == intent
+
+
 # --- the scorer, aligned with the format ---------------------------------------------------------------
 def _layers(adversaries):
     env = {"map": {"kind": "straight"}, "weather": {"condition": "clear"}, "time_of_day": "12:00"}

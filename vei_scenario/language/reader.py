@@ -1279,6 +1279,22 @@ def read(text: str) -> Reading:
                     who = clause_subject  # "..., and then overtakes it at 25 km/h": the one who overtakes
                 if who is None and m.slot in ("returns", "wrong_way") and isinstance(subject, _Actor):
                     who = subject  # "..., then cuts back": what it does, said without naming it again
+                if (
+                    m.slot == "speed"
+                    and m.prev == "to"
+                    and prev is not None
+                    and prev.slot == "behaviour"
+                    and prev.value[0] in ("sudden_stop", "change_speed")
+                    and isinstance(clause_subject, _Actor)
+                    and clause_subject.behaviours
+                    and clause_subject.speed_mps is not None
+                ):  # "the lorry at 56 mph ... brakes to 30 mph": the speed it slows to, not a stop
+                    a = clause_subject
+                    name, cfg, crit, lk = a.behaviours[-1]
+                    a.behaviours[-1] = ("change_speed", {k2: v for k2, v in cfg.items() if k2 == "_words"}, crit, lk)
+                    a.speed_to_mps = m.value
+                    prev = m
+                    continue
                 if m.slot == "speed" and r.ego_speed_mps is None and _among_settings(mentions, k):
                     r.ego_speed_mps = m.value  # ("... reveal a stopped truck, 80 km/h, heavy rain": the test's speed)
                     prev = m

@@ -21,7 +21,8 @@ _COLLISION = re.compile(
     r"smash\w*|knock\w* (?:down|over)|thump|thrown onto|thrown over|ploughs? into|plowed into|slams? into|"
     r"slammed into|ran over|runs over|run over|t-bone\w*|sideswip\w*|clipped|clips|contact|tapped|taps|touch|touches|"
     r"touched|bumped|bumps|bump into|knocked|(?:went|go|goes|going|drove|drive|drives|ran|run|runs) into "
-    r"(?:the (?:back|side|rear) of (?:it|him|her|them|the \S+|his \S+|her \S+)|it|him|her|them))\b"
+    r"(?:the (?:back|side|rear) of (?:it|him|her|them|the \S+|his \S+|her \S+)|"
+    r"(?:its|his|her|their) (?:rear|back|side)|it|him|her|them))\b"
     r"(?! (?:the |his |her |my |our )?brakes?\b| point| barrier| warning)"
 )
 #: Words that deny or hedge a collision word a few words after them.
@@ -37,7 +38,9 @@ _NEAR = re.compile(
     r"(?:metres?|meters?|m|inches) short|made it across|no contact|emergency stop|"
     r"(?:he|she|it|they|just) miss(?:es|ed)?|miss(?:es|ed)? (?:us|me|him|her|it|them) by|"
     r"to miss (?:us|me|him|her|it|them)|"
-    r"by a hair|by a whisker|stops? in time|stopped in time|(?:at the )?last (?:second|moment|minute)|"
+    r"by a hair|by a whisker|"
+    r"by (?:centimetres|centimeters|millimetres|millimeters|a few (?:cm|centimetres|inches|feet))|"
+    r"stops? in time|stopped in time|(?:at the )?last (?:second|moment|minute)|"
     r"(?:a|about a|1|one|half a|0\.5) (?:metre|meter|m|foot|yard) to spare|"
     r"(?:was|were|is) (?:a bit |very |really |pretty |quite )?(?:tight|close))"
 )
