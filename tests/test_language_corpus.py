@@ -38,10 +38,11 @@ def test_at_least_nine_in_ten_descriptions_are_understood_and_faithful(corpus):
 
 #: Written independently by two writers who never saw the reader, both measured before it was changed
 #: for them: A (the development set) 41 understood, 5 faithful of 59; B (held out, measured again only
-#: at the end) 53 understood, 3 faithful of 63. The floors are the figures measured at the end.
+#: at the end) 53 understood, 3 faithful of 63. The floors are the figures measured last (A 59
+#: understood, 48 faithful, 56 played of 59; B 63, 56, 58 of 63).
 INDEPENDENT = {
-    ROOT / "tests" / "data" / "language_independent_a.json": (59, 44),
-    ROOT / "tests" / "data" / "language_independent_b.json": (63, 12),
+    ROOT / "tests" / "data" / "language_independent_a.json": (59, 48),
+    ROOT / "tests" / "data" / "language_independent_b.json": (63, 56),
 }
 
 

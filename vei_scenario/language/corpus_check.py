@@ -59,10 +59,16 @@ def _actor_problems(adv: dict, want: dict) -> list[str]:
     elif not names or not set(names) <= set(allowed):
         out.append(f"behaviours {names} (expected among {allowed})")
     relation = adv["spawn"].get("relation")
+    said = {relation}
+    lateral = float(adv["spawn"].get("lateral_m", 0.0))
+    if names[:1] == ["along_road"] and relation == "ahead" and lateral:
+        # a walker or rider going along the road starts ahead at the edge of the ego's lane (lateral_m
+        # left of its centre): on the kerb side the format calls roadside_left / roadside_right
+        said.add("roadside_left" if lateral > 0 else "roadside_right")
     accepted = set(want.get("relation", ()))
     if "oncoming" in accepted:  # at a junction what comes towards the ego starts on the opposite arm
         accepted.add("junction_opposite")
-    if "relation" in want and relation not in accepted:
+    if "relation" in want and not said & accepted:
         out.append(f"relation {relation} (expected {' or '.join(want['relation'])})")
     if "speed_kph" in want:  # its speed, or the speed it crosses at
         speeds = [float(adv["speed_mps"])] + [
@@ -84,13 +90,12 @@ def _actor_problems(adv: dict, want: dict) -> list[str]:
 
 
 def _scenery(adv: dict) -> bool:
-    """Whether adversary ``adv`` is parked scenery: standing beyond the kerb and doing nothing."""
+    """Whether adversary ``adv`` is scenery that does not act: standing still and doing nothing,
+    wherever it stands (a car parked at the kerb, a broken-down lorry in the lane that a cut-out
+    reveals). The format lists road users "not parked scenery unless it acts"; a standing vehicle
+    does not act, in a lane or beyond the kerb."""
     names = {node["behaviour"] for _, node in behaviour_nodes(adv["behaviour"])}
-    return (
-        float(adv.get("speed_mps", 0.0)) == 0.0
-        and str(adv["spawn"].get("relation", "")).startswith("roadside")
-        and names <= {"keep_going", "stop", "keep_lane"}
-    )
+    return float(adv.get("speed_mps", 0.0)) == 0.0 and names <= {"keep_going", "stop", "keep_lane"}
 
 
 def layers_problems(layers: dict, case: dict) -> list[str]:

@@ -63,6 +63,15 @@ ACTOR_NOUNS = {
         "pensioner",
         "someone",
         "somebody",
+        "bloke",
+        "fella",
+        "chap",
+        "idiot",
+        "lunatic",
+        "maniac",
+        "moron",
+        "nutter",
+        "muppet",
         # an animal on the road is played as a pedestrian (OpenSCENARIO's pedestrianCategory "animal" has
         # no model of its own in vei or esmini: its size and way of crossing are a walker's)
         "dog",
@@ -101,6 +110,10 @@ ACTOR_NOUNS = {
         "dump truck",
         "refuse truck",
         "bin lorry",
+        "heavy goods vehicle",
+        "large goods vehicle",
+        "goods vehicle",
+        "gritter",
         "tram",  # (on its rails it crosses and brakes as a long vehicle does)
         "streetcar",
         "trolleybus",
@@ -127,6 +140,8 @@ CAR_NOUNS = (
     "pov",
     "principal other vehicle",
     "motorcycle",
+    "moped",
+    "motor scooter",
     "motorbike",
     "motorcyclist",
     "adversary",
@@ -170,6 +185,12 @@ EGO_NOUNS = (
 BEHAVIOUR_VERBS = {
     "cross_in_front": (
         "cross",
+        "jump from",
+        "leap from",
+        "leap out",
+        "leap into the road",
+        "leap onto the road",
+        "jaywalk",
         "cross in front",
         "walk across",
         "run across",
@@ -214,12 +235,18 @@ BEHAVIOUR_VERBS = {
         "drop onto the road",
         "drop off the kerb",
         "roll onto the road",
+        "roll across",
+        "come across",
+        "go across",
         "roll into the road",
         "wobble into the road",
         "cross over",
         "cross to",
     ),
     "cut_in": (
+        "cut-in",
+        "go into the lane",
+        "come into the lane",
         "cut in",
         "cut into",
         "cut in front",
@@ -278,6 +305,11 @@ BEHAVIOUR_VERBS = {
     "change_lane": (
         "change lane",
         "change lanes",
+        "swerve across lanes",
+        "move across lanes",
+        "cut across lanes",
+        "drift across lanes",
+        "weave across lanes",
         "move over",
         "swerve into the next lane",
         "swerve into the next",
@@ -298,6 +330,13 @@ BEHAVIOUR_VERBS = {
         "do a lane change",
     ),
     "sudden_stop": (
+        "slam on",
+        "stand on the brake",
+        "stop hard",
+        "only just stop",
+        "just stop in time",
+        "barely stop",
+        "stop just in time",
         "brake hard",
         "slam on the brake",
         "slam the brake",
@@ -321,7 +360,29 @@ BEHAVIOUR_VERBS = {
         "lose grip",
         "lose control",
     ),
-    "stop": ("stop", "halt", "come to a stop", "come to a halt", "stand still", "pull up", "stop at"),
+    "stop": (
+        "stop",
+        "halt",
+        "come to a stop",
+        "come to a halt",
+        "stand still",
+        "pull up",
+        "stop at",
+        # (a bus or car pulling in at a stop or the kerb stops there: no cut-in)
+        "pull in to the stop",
+        "pull into the stop",
+        "pull in at the stop",
+        "pull into the bus stop",
+        "pull in to the bus stop",
+        "pull in at the bus stop",
+        "pull into the kerb",
+        "pull in to the kerb",
+        "pull into the curb",
+        "pull over",
+        "pull in to the side",
+        "pull into the side",
+        "pull into a lay-by",
+    ),
     "follow_vehicle": (
         "tailgate",
         "follow",
@@ -330,6 +391,11 @@ BEHAVIOUR_VERBS = {
         "ride our bumper",
         "sit on the bumper",
         "follow closely",
+        "keep a headway",
+        "keep a time headway",
+        "keep a time gap",
+        "keep a gap",
+        "time headway",
     ),
     "keep_going": (
         "keep going",
@@ -367,7 +433,21 @@ BEHAVIOUR_VERBS = {
         "trundle along",
         "close in",
     ),
-    "keep_lane": ("keep its lane", "keep lane", "stay in its lane", "stay in lane", "hold its lane"),
+    "keep_lane": (
+        "keep its lane",
+        "keep lane",
+        "stay in its lane",
+        "stay in lane",
+        "hold its lane",
+        "pull alongside",
+        "sit in",
+        "stay in",
+        "sit alongside",
+        "sit with us",
+        "sit beside us",
+        "drive alongside",
+        "keep pace",
+    ),
     "give_way": (
         "give way",
         "yield",
@@ -386,6 +466,9 @@ BEHAVIOUR_VERBS = {
         "let us go first",
         "wait for the ego",
         "wait for us",
+        "wait for me",
+        "wait for me to pass",
+        "wait for me to go",
         "wait for the av",
         "wait for the ego to pass",
         "wait for us to pass",
@@ -420,7 +503,19 @@ BEHAVIOUR_VERBS = {
 }
 #: change_speed with its sign.
 SPEED_CHANGE_VERBS = {
-    -4.0: ("slow down", "slow", "decelerate", "brake gently", "ease off", "reduce speed", "slow to"),
+    -4.0: (
+        "slow down",
+        "slow",
+        "decelerate",
+        "brake gently",
+        "ease off",
+        "reduce speed",
+        "slow to",
+        "drop back",
+        "fall back",
+        "drop behind",
+        "fall behind",
+    ),
     4.0: ("accelerate", "speed up", "pick up speed", "put its foot down", "pull away", "drive off"),
 }
 RED_LIGHT = (
@@ -443,6 +538,14 @@ RED_LIGHT = (
     "ignore the stop sign",
     "blow through the stop sign",
     "blow the stop sign",
+    "through the red",
+    "through a red",
+    "through the red light",
+    "through a red light",
+    "through red",
+    "go through the red",
+    "go through the red light",
+    "go through a red light",
 )
 TURNS = {
     "right": ("turn right", "make a right turn", "turn off right", "turn into the right", "swing right"),
@@ -509,6 +612,11 @@ LANE_SIDES = {
 KERB = (
     "kerb",
     "pedestrian crossing",
+    "zebra crossing",
+    "pelican crossing",
+    "puffin crossing",
+    "toucan crossing",
+    "crosswalk",
     "bike lane",
     "cycle lane",
     "bicycle lane",
@@ -526,6 +634,8 @@ KERB = (
     "shoulder",
     "bus stop",
     "driveway",
+    "on my inside",
+    "on our inside",
 )
 NEARSIDE = ("nearside", "near side", "near-side")
 FARSIDE = (
@@ -541,6 +651,8 @@ FARSIDE = (
 #: Where a junction arm is meant ("from the left entrance", "pulls out of a side road").
 JUNCTION_ARM = (
     "entrance",
+    "entry",
+    "entry road",
     "side road",
     "side-road",
     "side street",
@@ -579,6 +691,11 @@ RELATIONS = {
         "in the av's lane",
         "in our path",
         "in the ego's path",
+        "in my lane",
+        "my side of the road",
+        "our side of the road",
+        "on my side of the road",
+        "on our side of the road",
     ),
     "behind": (
         "behind",
@@ -628,6 +745,8 @@ STATIONARY = (
     "stopped",
     "standing",
     "broken-down",
+    "double-parked",
+    "double parked",
     "broken down",
     "stalled",
     "waiting",
@@ -684,7 +803,6 @@ CRITICALITY = {
         "no gap",
         "almost no gap",
         "little room",
-        "idiot",
         "at high speed",
         "ttc about",
         "bumper",
@@ -810,26 +928,73 @@ MAPS = {
 }
 WEATHER = {
     "rain": ("rain", "rainy", "raining", "wet", "drizzle", "drizzly", "shower"),
-    "heavy_rain": ("heavy rain", "pouring", "downpour", "storm", "torrential"),
+    "heavy_rain": (
+        "heavy rain",
+        "pouring",
+        "downpour",
+        "storm",
+        "torrential",
+        "hammering down",
+        "pelting down",
+        "tipping down",
+        "lashing down",
+        "bucketing down",
+        "driving rain",
+        "cloudburst",
+    ),
     "fog": ("fog", "foggy", "mist", "misty", "haze", "hazy"),
-    "snow": ("snow", "snowy", "snowing", "icy", "ice", "sleet", "winter"),
+    "snow": (
+        "snow",
+        "snowy",
+        "snowing",
+        "icy",
+        "ice",
+        "sleet",
+        "winter",
+        "snowfall",
+        "blizzard",
+        "snowstorm",
+        "flurries",
+    ),
     "cloudy": ("cloudy", "overcast", "grey", "gray", "dull"),
     "clear": ("clear", "sunny", "dry", "fine", "bright"),
 }
 TIMES = {
-    "23:00": ("night", "at night", "nighttime", "night-time", "dark", "darkness", "midnight"),
+    "23:00": (
+        "night",
+        "at night",
+        "nighttime",
+        "night-time",
+        "dark",
+        "darkness",
+        "midnight",
+        "pitch black",
+        "pitch-black",
+        "pitch dark",
+        "after dark",
+    ),
     "06:00": ("dawn", "sunrise", "early morning"),
     "08:30": ("morning",),
     "12:00": ("noon", "midday", "lunchtime"),
     "13:00": ("daylight", "daytime", "broad daylight", "during the day", "by day"),
     "15:30": ("afternoon",),
-    "19:30": ("dusk", "sunset", "twilight"),
+    "19:30": (
+        "dusk",
+        "sunset",
+        "twilight",
+        "getting dark",
+        "get dark",
+        "growing dark",
+        "nightfall",
+        "sundown",
+        "after sunset",
+    ),
     "20:00": ("evening",),
     "17:30": ("rush hour", "commute"),
 }
 DENSITY = {
     "none": ("no traffic", "empty road", "empty", "quiet", "deserted"),
-    "light": ("light traffic", "sparse traffic", "little traffic", "few cars"),
+    "light": ("light traffic", "sparse traffic", "little traffic", "few cars", "low traffic", "low traffic volume"),
     "moderate": ("moderate traffic", "some traffic"),
     "heavy": ("heavy traffic", "dense traffic", "busy", "congested", "congestion", "rush hour", "jam", "stop-and-go"),
 }
@@ -968,6 +1133,29 @@ WRONG_WAY = (
 )
 #: Nouns that are a wrong-way driver.
 WRONG_WAY_NOUNS = ("ghost driver", "wrong-way driver")
+#: Road-user nouns that say what it does ("a red-light runner", "a jaywalker"): its behaviour when no
+#: verb says another.
+#: Words for a person that say nothing of how they travel ("some guy", "someone"): a walker, unless
+#: what they do is a driver's (braking hard, driving the wrong way, following).
+#: Names people call a road user who drives badly: it drives dangerously, whatever it does.
+INSULTS = ("idiot", "lunatic", "maniac", "moron", "nutter", "muppet")
+GENERIC_PERSONS = ("someone", "somebody", "guy", "bloke", "man", "woman", "person", "lady", "fella", "chap", *INSULTS)
+#: What a driver does and a walker does not.
+DRIVER_BEHAVIOURS = (
+    "sudden_stop",
+    "follow_vehicle",
+    "change_speed",
+    "wrong_way",
+    "turn_across",
+    "turn_into",
+    "run_red_light",
+)
+BEHAVIOUR_NOUNS = {
+    "red-light runner": "run_red_light",
+    "red light runner": "run_red_light",
+    "light runner": "run_red_light",
+    "jaywalker": "cross_in_front",
+}
 #: Going back to where it came from (a wrong-way driver to its own side).
 RETURNS = (
     "cut back",

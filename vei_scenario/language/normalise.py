@@ -30,15 +30,18 @@ _NUMBER = re.compile(
 #: Units after which a number in words is a quantity (its unit words as the reader reads them).
 _UNIT_AFTER = re.compile(
     r"\s*(?:-\s*)?(km/h|kph|kmh|mph|m/s|miles?\b|kilomet(?:er|re)s?\b|km\b|met(?:er|re)s?\b|m\b|seconds?\b|s\b"
-    r"|second\b|lanes?\b|car lengths?\b)"
+    r"|second\b|lanes?\b|car lengths?\b|k(?:'s|s)?\b)"
 )
+#: Words after which a bare number is a speed ("doing like thirty", "Ego at forty"): the reader reads
+#: a bare number after "at", "doing", "about" as km/h.
+_SPEED_BEFORE = re.compile(r"\b(at|doing|about|like|going)\s+$")
 
 #: Spelt-out or unusual speed units, as the reader's symbols.
 _UNITS = [
     (re.compile(r"\bmiles?\s+(?:an|per|a)\s+hour\b|\bmi/h\b|\bm\.p\.h\.?"), "mph"),
     (re.compile(r"\b(?:kilomet(?:er|re)s?|km)\s+(?:an|per|a)\s+hour\b|\bkm/hr?\b|\bkmph\b|\bkm/std\b"), "km/h"),
     (re.compile(r"\bmet(?:er|re)s?\s+(?:per|a)\s+second\b|\bmps\b"), "m/s"),
-    (re.compile(r"(\d)\s*(?:kph|kmh)\b"), r"\1 km/h"),
+    (re.compile(r"(\d)\s*(?:kph|kmh|k's|ks|k)(?![\w'])"), r"\1 km/h"),  # ("50 k's": spoken km/h)
     (re.compile(r"(\d)(km/h|mph|m/s|m)\b"), r"\1 \2"),
 ]
 
@@ -66,6 +69,9 @@ def _numbers_in_words(text: str) -> str:
 
     def sub(m: re.Match) -> str:
         after = _UNIT_AFTER.match(text, m.end())
+        if after is None and _SPEED_BEFORE.search(text, max(0, m.start() - 8), m.start()):
+            value = _number_value(m.group(1))  # ("at forty": a speed, said without its unit)
+            return str(value) if value is not None and value >= 15 else m.group(0)
         if after is None or (after.group(1).startswith("lane") and "-" in text[m.end() : after.start(1)]):
             return m.group(0)  # ("two-lane road" keeps its word: it is the road's name)
         value = _number_value(m.group(1))
@@ -143,12 +149,13 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     """``text`` (lowercased) with numbers in words, units, and the parties of a statement said the
     way the reader reads them. ``known_noun(phrase)`` returns the road-user noun a phrase ends in,
     or None."""
+    text = re.sub(r"(\d)\s*([ap])\.\s?m\.?", r"\1 \2m", text)  # "6 a.m.": "6 am" (no sentence ends there)
     for pattern, repl in _UNITS:
         text = pattern.sub(repl, text)
     text = _numbers_in_words(text)
     for pattern, repl in _UNITS:  # ("10 meter per second" once its number is digits)
         text = pattern.sub(repl, text)
-    text = re.sub(r"\b(?:approx\.?|approximately|circa|ca\.|roughly|around|maybe|some)\s+(?=\d)", "about ", text)
+    text = re.sub(r"\b(?:approx\.?|approximately|circa|ca\.|roughly|around|maybe|some|like)\s+(?=\d)", "about ", text)
     text = re.sub(r"(\d+(?:\.\d+)?)\s*-\s*(?=km/h|mph|m/s|m\b)", r"\1 ", text)
     # "our speed is 100 km/h", "we have 40 km/h", "we are 50 km/h": the ego's speed
     text = re.sub(
@@ -165,6 +172,10 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
         text,
     )
     text = re.sub(r"\b(turn|turns|turning|turned) to (?:the )?(left|right)\b", r"\1 \2", text)
+    # "a van two lanes over": in a lane to the side (which side unsaid), not the road's lanes
+    text = re.sub(r"\b(?:one|a|two|three|\d) lanes? (?:over|across)\b", "from the next lane", text)
+    # "crossing left to right": from the left
+    text = re.sub(r"\b(?:from )?(?:the )?(left|right) to (?:the )?(?:right|left)\b(?! lane)", r"from the \1", text)
     # "traffic was moderate": moderate traffic (the word is then no criticality of what follows)
     text = re.sub(r"\btraffic (?:is|was|were) (?:very |quite |fairly )?(light|moderate|heavy)\b", r"\1 traffic", text)
     for pattern in _EGO_ALIASES:

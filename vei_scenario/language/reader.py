@@ -208,6 +208,8 @@ class _Actor:
     word: str = ""  # the words it was first named by
     acted_on: bool = False  # the object of someone's verb ("overtakes a truck")
     pavement: bool = False  # said to be on a pavement (off the road), not in a cycle lane
+    member_named: bool = False  # told apart from its group ("the first one", "the other")
+    hides: bool = False  # named as what someone comes out from behind or between
 
 
 #: Euro NCAP's names of its test scenarios ("Car-to-Car Rear stationary", "Car-to-Pedestrian Nearside
@@ -305,11 +307,23 @@ def _match(tokens: list[str], i: int):
     """For each form of the word at ``i``, the longest phrase starting with it that the text holds."""
     for w in forms(tokens[i]):
         for key in _BY_FIRST.get(w, ()):
-            if i + len(key) <= len(tokens) and all(k in forms(tokens[i + j]) for j, k in enumerate(key)):
+            if i + len(key) <= len(tokens) and all(_fits(k, tokens[i + j], j) for j, k in enumerate(key)):
                 yield key
                 break
 
 
+#: Possessives that stand where a phrase has an article ("slams on his brakes", "runs her red").
+_POSSESSIVE_WORDS = frozenset({"his", "her", "their", "its", "my", "our", "your"})
+
+
+def _fits(word: str, token: str, j: int) -> bool:
+    """Whether phrase word ``word`` (its ``j``-th) matches ``token``: one of its forms, or, inside a
+    phrase, a possessive where the phrase has an article."""
+    return word in forms(token) or (j > 0 and word in _ARTICLES and token in _POSSESSIVE_WORDS)
+
+
+#: Prepositions that name a place as a landmark ("just after the exit"), not where a road user comes from.
+_LANDMARK_PREPOSITIONS = frozenset({"after", "before", "past", "beyond", "near", "by", "beside", "opposite"})
 #: Words before a place named after a road user ("at the bus stop", "near a taxi rank").
 _PLACE_PREPOSITIONS = {"at", "to", "near", "by", "from", "behind", "past", "towards", "toward", "in", "on", "into",
                        "onto", "beside", "outside", "opposite", "before", "after", "of", "off", "around", "across",
@@ -397,7 +411,16 @@ def _number(tokens: list[str], i: int) -> tuple[str, float, int] | None:
     prev = tokens[i - 1] if i > 0 else ""
     if prev in ("at", "doing", "about", "around", "of") and 3 <= value <= 250:  # "at 120": km/h
         return "speed", value / 3.6, 1
+    ends = nxt in ("", ".", ",", ";", "!", "?", "and", "then", "when", "while", "but")
+    if prev in _MOTION_BEFORE_SPEED and 3 <= value <= 250 and ends:  # "Ego goes 50, ...": km/h
+        return "speed", value / 3.6, 1
     return "unknown", value, 1
+
+
+#: Verbs of going after which a bare number is a speed ("the ego goes 50, ...", "driving 30 when").
+_MOTION_BEFORE_SPEED = frozenset(
+    "go goes going went drive drives driving drove travel travels travelling traveling travelled traveled".split()
+)
 
 
 def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
@@ -452,7 +475,13 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
             if prev not in _PLACE_PREPOSITIONS and (verb or participle):
                 key = key[:1]
         adverb = toward_at = None  # (toward_at: where the side it moves to is said)
-        if (key is None or len(key) == 1) and i + 2 < len(tokens) and tokens[i + 1] in ("left", "right"):
+        just_right = tokens[i + 1 : i + 2] == ["right"] and tokens[i + 2 : i + 3] and tokens[i + 2] in _RIGHT_BEFORE
+        if (
+            (key is None or len(key) == 1)
+            and i + 2 < len(tokens)
+            and tokens[i + 1] in ("left", "right")
+            and not just_right
+        ):
             # "swerves left into our lane": the verb's phrase around the side it moves to
             skipped = _best(tokens[: i + 1] + tokens[i + 2 :], i)
             if skipped is not None and len(skipped) > 1 and TABLE[skipped][0] == "behaviour":
@@ -462,7 +491,15 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
             skipped = _best(tokens[: i + 1] + tokens[i + 2 :], i)
             if skipped is not None and len(skipped) > 1:
                 key, adverb = skipped, tokens[i + 1]
-        if key is None and tok not in FUNCTION_WORDS and i + 1 < len(tokens) and _verb_before(tok, tokens[i + 1]):
+        to_a_stop = _best(tokens, i + 1) if i + 1 < len(tokens) else None  # ("drew to a stop": no motion verb)
+        to_a_stop = to_a_stop is not None and TABLE[to_a_stop][0] == "to_stop"
+        if (
+            key is None
+            and tok not in FUNCTION_WORDS
+            and i + 1 < len(tokens)
+            and not to_a_stop
+            and _verb_before(tok, tokens[i + 1])
+        ):
             # a verb the lexicon lacks, with where it goes ("swung into my lane", "bolted across the road"):
             # read as the plain motion verb with the same words, when that is a behaviour
             to_a_place = tokens[i + 1] in ("to", "in") and tokens[i + 2 : i + 3] and tokens[i + 2] in _DETERMINERS
@@ -527,6 +564,10 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
                 last.end = j
             i = j
             continue
+        if slot == "arm" and i >= 2 and tokens[i - 1] == "'s" and _ends_with_ego(tokens[: i - 1]):
+            ignored.extend(tokens[i : i + len(key)])  # "cuts across the ego's entry": the ego's arm, not its own
+            i += len(key)
+            continue
         if slot == "actor" and i + len(key) < len(tokens) and tokens[i + len(key)] in _PARTS:
             i += len(key) + 1  # "50 % of the vehicle width", "a car door": a part of one, not a road user
             continue
@@ -542,6 +583,23 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
             tokens[i - 1 : i] in (["the"], ["a"], ["an"]) and "NOUN" in _pos(tok) and tok not in ("stop", "crossing")
         )
         braking = "brake" in forms(tok)  # ("slammed on its brakes": the braking, said with its brakes)
+        if slot == "behaviour" and tokens[i + len(key) : i + len(key) + 1] in (["line"], ["sign"], ["markings"]):
+            # "at the give way line", "a stop sign": a junction's, no behaviour
+            clauses[-1][1].append(_Mention("map", "crossroad", " ".join(tokens[i : i + len(key) + 1]), i, prev))
+            i += len(key) + 1
+            continue
+        if (
+            slot == "behaviour"
+            and value[0] == "run_red_light"
+            and tokens[i - 1 : i] in (["light"], ["lights"], ["signal"])
+        ):
+            ignored.extend(tokens[i : i + len(key)])  # "approaching traffic lights on red": the light's state
+            i += len(key)
+            continue
+        if slot == "behaviour" and _bare_noun(tokens, i, key):
+            ignored.append(tok)  # "head-on crash.", ", crash", "Full brake.": what happened, said as a noun
+            i += 1
+            continue
         if slot == "behaviour" and len(key) == 1 and (tokens[i - 1 : i] in _POSSESSIVES or noun_here) and not braking:
             ignored.append(tok)  # "missed his tailgate", "there is the crash": a thing, not a behaviour
             i += 1
@@ -557,7 +615,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
                 slot, value = "speed_word", V.SPEED_WORDS[said]  # "the truck is slow"
         if slot == "behaviour" and _denied(tokens, i) and key[0] not in _NEGATORS:
             name, cfg = _DENIED.get(value[0], ("keep_going", {}))  # ("does not stop": it carries on)
-            value = (name, {**cfg, "_denied": 1.0} if value[0] != "keep_going" else cfg)
+            value = (name, {**cfg, "_denied": 1.0} if value[0] != "keep_going" else {**cfg, "_still": 1.0})
         used = len(key) + (1 if adverb or toward_at else 0)
         words = " ".join(tokens[i : i + used])
         nxt = tokens[i + used] if i + used < len(tokens) else ""
@@ -565,6 +623,9 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
         if slot == "behaviour" and value[0] in _SIDEWAYS and toward_at is None and nxt in ("left", "right"):
             if after not in _RIGHT_BEFORE:  # "merges right from the middle lane" (not "cuts in right in front")
                 toward_at = i + used
+        if slot in ("sequence", "parallel") and det:
+            i += used  # "from the next entry": a word of order before a noun, no new clause
+            continue
         if slot in ("sequence", "parallel"):
             clauses.append((slot, [_Mention("link", slot, words, i, prev, end=i + used)]))
         elif slot != "noise":
@@ -583,6 +644,29 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
 #: Verbs that with "to" say what someone must do ("it has to brake": a requirement, said of the ego).
 _MODAL_VERBS = frozenset({"has", "have", "had", "needs", "need", "needed"})
 _POSSESSIVES = (["his"], ["her"], ["its"], ["their"], ["my"], ["our"], ["your"])
+
+
+def _ends_with_ego(tokens: list[str]) -> bool:
+    """Whether ``tokens`` end with a name of the ego ("... the ego", "... the subject vehicle")."""
+    return any(tuple(tokens[-len(p.split()) :]) == tuple(p.split()) for p in L.EGO_NOUNS)
+
+
+def _bare_noun(tokens: list[str], i: int, key: tuple[str, ...]) -> bool:
+    """Whether the one-word behaviour at ``i`` is a noun standing on its own at the end of a phrase,
+    as notes and commentary say what happened ("head-on crash.", "night, T-bone crash", "Full brake."):
+    uninflected, with a punctuation mark or the end after it, and before it a punctuation mark, the
+    start, a hyphenated modifier or an adjective (no road user doing it)."""
+    tok = tokens[i]
+    if len(key) != 1 or "NOUN" not in _pos(tok) or tok not in _lemmas(tok).get("VERB", (tok,)):
+        return False  # (an inflected verb is a verb: "a van ahead stops.")
+    if i + 1 < len(tokens) and tokens[i + 1] not in ".;,!?:":
+        return False
+    if i == 0 or tokens[i - 1] in ".;,!?:":
+        return True
+    before = tokens[i - 1]
+    if _actor_word(before) or before in FUNCTION_WORDS:
+        return False
+    return "-" in before or ("ADJ" in _pos(before) and _best(tokens, i - 1) is None)
 
 
 def _predicate_of_ego(tokens: list[str], i: int) -> bool:
@@ -665,7 +749,8 @@ def _verb_before(word: str, after: str) -> bool:
     pos = _pos(word)
     if "VERB" not in pos:
         return False
-    return not pos & {"NOUN", "ADJ", "PROPN"} or (after in _MOTION_PARTICLES and word.endswith(("ing", "ed", "s")))
+    moved = word.endswith(("ing", "ed", "s")) or _past(word)  # ("shot into the road": an irregular past)
+    return not pos & {"NOUN", "ADJ", "PROPN"} or (after in _MOTION_PARTICLES and moved)
 
 
 #: Verbs whose very wording is critical ("darts out", "tailgates"), unless the clause says otherwise.
@@ -713,6 +798,45 @@ def _drop_label(clauses):
     return out
 
 
+def _comes_out_from(prev, m) -> bool:
+    """Whether actor mention ``m`` names what someone comes out from behind, between or in front of
+    ("from behind an ice-cream van", "out between parked cars", "from in front of the bus")."""
+    if m.prev == "between":
+        return True
+    return (
+        prev is not None
+        and prev.slot == "relation"
+        and 0 <= m.start - prev.end <= 3
+        and (
+            prev.words in ("from behind", "from in front of")
+            or (prev.prev == "from" and prev.words in ("behind", "in front"))
+        )
+    )
+
+
+#: Mentions of a description's settings (where, when, in what weather and traffic).
+_SETTINGS = ("map", "weather", "time", "density", "lanes")
+
+
+def _among_settings(mentions, k: int) -> bool:
+    """Whether the speed ``mentions[k]`` stands alone between commas next to a setting, as terse notes
+    give the test's speed ("car ahead swerves to reveal a stopped truck, 80 km/h, heavy rain")."""
+    before = mentions[k - 1] if k else None
+    after = mentions[k + 1] if k + 1 < len(mentions) else None
+    if before is None or before.slot != "punct" or before.value != ",":
+        return False
+    if after is not None and not (after.slot == "punct" and after.value == ","):
+        return False
+    near = [mentions[j] for j in (k - 2, k + 2) if 0 <= j < len(mentions)]
+    return any(x.slot in _SETTINGS for x in near)
+
+
+def _generic_vehicle(a: _Actor) -> bool:
+    """Whether ``a`` was named by a word for any vehicle ("a lead vehicle", "the other vehicle"): an
+    apposition after it ("A lead vehicle, a light goods van, ...") says which, even after "a"."""
+    return a.kind == "car" and a.word.split()[-1] in ("vehicle", "vehicles")
+
+
 def _bare(m) -> bool:
     """Whether an actor is named as a test engineer's notes name it again: the singular noun alone,
     opening its sentence, no article ("Cyclist turns left")."""
@@ -757,7 +881,7 @@ def _resolve_relation(a: _Actor, map_kind: str | None) -> str | None:
         return f"junction_{side}" if side in ("left", "right") else "junction_opposite"  # arm said, else opposite
     if a.followed and first == "cut_in":
         return "ahead"  # the ego follows it in its lane: it pulls out of it, to the side said
-    if a.relation == "oncoming" or (a.relation == "behind" and not (a.lane_side and first == "cut_in")):
+    if a.relation == "oncoming" or (a.relation == "behind" and not ((a.lane_side or a.side) and first == "cut_in")):
         return a.relation
     if vehicle and a.kerb_side == "left" and first != "cross_in_front":
         return "oncoming"  # a vehicle on the far side of the road drives the other way
@@ -798,6 +922,8 @@ def read(text: str) -> Reading:
     pending: list[_Mention] = []
     last_group: list[_Actor] | None = None  # ("Two scooters ride ahead; one of them brakes": that pair)
     both_with_ego = False  # ("CCRb: both cars at 50 km/h ...": the ego is one of them)
+    ego_is_a_person = False  # (the ego named as "I" or "we": "it" is then never the ego)
+    first_person = bool({"i", "we", "me", "my", "us", "our"} & set(_tokens(text)))  # (the narrator's story)
     bound: dict[str, _Actor | str] = {}  # "he"/"she" → whom it first named
     for link, mentions in clauses:
         named: list[tuple[_Actor | str, str]] = []  # (actor, role) in order: subject, prep, verb, participle
@@ -811,11 +937,13 @@ def read(text: str) -> Reading:
         expect_subject = True
         prev: _Mention | None = None
         ego_speed_said: _Mention | None = None  # a speed read as the ego's ahead of its turn
+        reacting = False  # in a stretch of the narrator's reaction ("..., stopped 2 m short,")
         for k, m in enumerate(mentions):
             nxt = mentions[k + 1] if k + 1 < len(mentions) else None
             if m.slot == "punct":
                 if m.value != "'s":
                     expect_subject = True
+                    reacting = False
                 prev = prev if m.value == "'s" else m
                 continue
             if m.slot == "modal":
@@ -834,6 +962,9 @@ def read(text: str) -> Reading:
                 if r.ego_speed_mps is None:
                     r.ego_speed_mps = m.value
                 prev = m
+                continue
+            if m.slot == "relation" and m.value == "oncoming" and nxt is not None and nxt.slot == "map":
+                prev = m  # "approaching the traffic lights": the ego's approach to a place, no one oncoming
                 continue
             if m.slot == "count":
                 if not _counts_actor(mentions, k):
@@ -878,6 +1009,15 @@ def read(text: str) -> Reading:
                         # drives it) is the last road user's, unless that one stands and it is a slowing
                         still = actors[-1].stationary and verb.value[0] in ("stop", "sudden_stop", "change_speed")
                         who = who if still else actors[-1]
+                    elif (
+                        who == "ego"
+                        and actors
+                        and m.words == "it"
+                        and ego_is_a_person
+                        and verb is not None
+                        and verb.slot in ("to_stop", "unknown_verb")
+                    ):
+                        who = actors[-1]  # ("We were following the bus when it pulled to a stop": not us)
                     if m.words in ("he", "she"):  # a person's pronoun names the same one all through a story
                         who = bound.setdefault(m.words, who)  # ("the driver said she ... She braked")
                     role = "subject"
@@ -885,32 +1025,55 @@ def read(text: str) -> Reading:
                     pool = group or last_group or []
                     if not pool:
                         continue
-                    free = [a for a in pool if not a.behaviours]
-                    who = free[0] if free else pool[-1]
+                    free = [a for a in pool if not a.behaviours and not a.member_named]
+                    unnamed = [a for a in pool if not a.member_named]
+                    words = m.words.split()
+                    if any(w in ("first", "former") for w in words):
+                        who = pool[0]
+                    elif any(w in ("second", "latter") for w in words) and len(pool) > 1:
+                        who = pool[1] if "second" in words else pool[-1]
+                    else:  # ("the first one stops, the one in front of me brakes": the next not yet told)
+                        told = unnamed and len(unnamed) < len(pool)  # (some told apart already)
+                        who = free[0] if free else unnamed[0] if told else pool[-1]
+                    who.member_named = True
                     for a in pool:  # from here on each member is told apart
                         a.group = None
                     role = "subject"
                 elif m.value == "ego":
                     who = "ego"
+                    ego_is_a_person = ego_is_a_person or m.words in ("i", "we", "me", "us")
+                    count = 1  # ("overtakes both of us": the ego and the one named with it)
                 else:
                     same = [a for a in actors if a.kind == m.value]
                     last = named[-1][0] if named and isinstance(named[-1][0], _Actor) else None
                     if (
                         last is not None
-                        and m.det in ("a", "an")
+                        and (m.det in ("a", "an") or (not m.det and _generic_vehicle(last)))
                         and k > 0
                         and mentions[k - 1].slot == "punct"
                         and mentions[k - 1].value == ","
                         and nxt is not None
                         and nxt.slot == "punct"
                         and not (k + 2 < len(mentions) and mentions[k + 2].slot in ("conj", "actor", "count"))
-                        and _definite_before(mentions, k)
+                        and (_definite_before(mentions, k) or _generic_vehicle(last))
                         and (last.kind == m.value or (last.kind in VEHICLES and m.value in VEHICLES))
                     ):  # "the car ahead, a taxi, stops": the same one, said again (its kind the more exact)
                         last.kind = str(m.value) if last.kind == "car" else last.kind
                         prev = m
                         continue
-                    if same and (m.det in ("the", "this", "that", "its", "our", "my") or (not m.det and _bare(m))):
+                    elsewhere = (  # "the car in front stops, the driver behind us ...": another one
+                        same
+                        and nxt is not None
+                        and nxt.slot == "relation"
+                        and nxt.start == m.end
+                        and nxt.value in ("ahead", "behind")
+                        and ({"ahead", "behind"} - {nxt.value}) & same[-1].said
+                    )
+                    if (
+                        same
+                        and not elsewhere
+                        and (m.det in ("the", "this", "that", "its", "our", "my") or (not m.det and _bare(m)))
+                    ):
                         who = same[-1]  # ("Target: cyclist, 30 m ahead. Cyclist turns left.": the same one)
                     elif (
                         role == "prep"
@@ -920,8 +1083,10 @@ def read(text: str) -> Reading:
                     ):  # "across in front of the car", no car named before: the one the story is told from
                         who = "ego"
                     elif (
-                        m.value in ("bicycle", "e-scooter")
-                        and m.prev in ("on", "riding", "with")
+                        (
+                            (m.value in ("bicycle", "e-scooter") and m.prev in ("on", "riding", "with"))
+                            or (m.value in VEHICLES and m.prev in ("in", "driving"))  # ("some idiot in a BMW")
+                        )
                         and named
                         and isinstance(named[-1][0], _Actor)
                         and named[-1][0].kind == "pedestrian"
@@ -938,6 +1103,7 @@ def read(text: str) -> Reading:
                         ]
                         for a in made:
                             a.group = made if count > 1 else None
+                            a.crit = "dangerous" if m.words in L.INSULTS else None  # ("some idiot ...")
                         actors.extend(made)
                         who = made[0]
                         group = made if count > 1 else group
@@ -962,6 +1128,8 @@ def read(text: str) -> Reading:
                     for pm in passive:  # "the AV is tailgated by a sports car": the car tailgates
                         _apply(pm, who, r, link, added)
                     passive = []
+                if isinstance(who, _Actor) and who is not clause_subject and _comes_out_from(prev, m):
+                    who.hides = True  # ("darts out from behind an ice-cream van": what it comes out from)
                 if role == "verb" and isinstance(who, _Actor) and after_verb:
                     who.acted_on = True  # ("the ego is overtaking a truck": the truck is in the scene)
                 if role == "verb" and isinstance(who, _Actor) and isinstance(clause_subject, _Actor) and after_verb:
@@ -996,6 +1164,25 @@ def read(text: str) -> Reading:
                 if nxt.value == "ego" and nxt.start <= m.end + 2:  # "a cyclist overtaken by the ego": the ego's
                     prev = m
                     continue
+            if m.slot in _VERBS and m.prev == "to" and _ego_named(prev) and prev.prev == "for":
+                # "waits on the side road for me to pass": the ego passes; waiting for it is giving way
+                if isinstance(clause_subject, _Actor) and clause_subject.stationary:
+                    _apply(replace(m, slot="behaviour", value=("give_way", {})), clause_subject, r, link, added)
+                ignored.append(m.words)
+                prev = m
+                continue
+            if (
+                first_person
+                and subject is None
+                and not named
+                and m.slot in ("behaviour", "ego_verb")
+                and (m.slot == "ego_verb" or m.value[0] == "keep_going")
+            ):  # "Just cruising behind my mate's car at 60 mph": before anyone is named, the narrator drives
+                clause_subject = subject = "ego"
+                named.append(("ego", "subject"))
+                expect_subject = False
+                prev = m
+                continue
             if m.slot in _VERBS:
                 target = clause_subject
                 if (
@@ -1012,13 +1199,37 @@ def read(text: str) -> Reading:
                     prev = m
                     continue
                 if prev is not None and prev.slot == "actor" and named and named[-1][1] != "subject":
-                    if m.words.split()[0].endswith("ing"):  # "an oncoming car travelling at 30": its participle
+                    crossing_past = (  # ("comes out from in front of the bus crossing": the rider crosses)
+                        m.slot == "behaviour"
+                        and m.value[0] == "cross_in_front"
+                        and isinstance(named[-1][0], _Actor)
+                        and named[-1][0].kind in VEHICLES
+                        and isinstance(clause_subject, _Actor)
+                        and clause_subject.kind in VULNERABLE
+                    )
+                    if m.words.split()[0].endswith("ing") and not crossing_past:  # "an oncoming car travelling at 30"
                         named[-1] = (named[-1][0], "participle")
                         target = named[-1][0]
+                    elif crossing_past:  # (and where it crosses from is the rider's too)
+                        named.append((clause_subject, "participle"))
+                if (
+                    m.slot == "behaviour"
+                    and m.value[0] == "stop"
+                    and m.value[1].get("_still")
+                    and named
+                    and isinstance(named[-1][0], _Actor)
+                    and named[-1][0].stationary
+                ):  # "... was a broken-down car, not moving": the state of the one standing, named last
+                    target = named[-1][0]
                 if target is None and not named and subject is not None:
                     # nobody named yet in this clause: the subject goes on ("... while overtaking a
                     # bus": the bus is what it overtakes, not who)
                     target = clause_subject = subject
+                if isinstance(target, _Actor) and _ego_reaction(mentions, k, target, first_person):
+                    ignored.append(m.words)  # ("cuts in ahead, on the brakes, ...": the narrator brakes)
+                    reacting = True
+                    prev = m
+                    continue
                 if target is None:
                     if m.slot != "unknown_verb":  # (an unknown verb of nobody: listed as not used)
                         pending.append(m)
@@ -1030,6 +1241,30 @@ def read(text: str) -> Reading:
                 prev = m
                 continue
             # positions, states, numbers: the actor they describe
+            if (
+                m.slot == "relation"
+                and clause_subject == "ego"
+                and m.next_ == "by"
+                and nxt is not None
+                and nxt.slot == "actor"
+                and nxt.value != "ego"
+            ):  # "the ego was struck from behind by a truck": where the truck comes from
+                pending.append(m)
+                prev = m
+                continue
+            if reacting and m.slot in ("distance", "speed", "accel"):
+                ignored.append(m.words)  # ("stopped 2 m short": how the narrator's stop went)
+                prev = m
+                continue
+            if (
+                m.slot == "stationary"
+                and isinstance(clause_subject, _Actor)
+                and _ego_reaction(mentions, k, clause_subject, first_person)
+            ):
+                ignored.append(m.words)  # ("runs the red, stopped 2 m short": the narrator stopped)
+                reacting = True
+                prev = m
+                continue
             before_actor = nxt is not None and nxt.slot in ("actor", "count") and nxt.start == m.end
             if m.slot in _POSITIONAL and before_actor and not (nxt.slot == "actor" and nxt.value == "ego"):
                 pending.append(m)  # an adjective before its actor ("an oncoming car")
@@ -1040,10 +1275,30 @@ def read(text: str) -> Reading:
                 who = _nearest(named, m)
                 if who == "ego" and m.slot == "distance" and actors:
                     who = actors[-1]  # a gap said of the ego is the gap to the road user named last
-                if who is None and m.slot == "speed" and isinstance(clause_subject, _Actor):
+                if who is None and m.slot in ("speed", "distance") and isinstance(clause_subject, _Actor):
                     who = clause_subject  # "..., and then overtakes it at 25 km/h": the one who overtakes
                 if who is None and m.slot in ("returns", "wrong_way") and isinstance(subject, _Actor):
                     who = subject  # "..., then cuts back": what it does, said without naming it again
+                if (
+                    m.slot == "speed"
+                    and m.prev == "to"
+                    and prev is not None
+                    and prev.slot == "behaviour"
+                    and prev.value[0] in ("sudden_stop", "change_speed")
+                    and isinstance(clause_subject, _Actor)
+                    and clause_subject.behaviours
+                    and clause_subject.speed_mps is not None
+                ):  # "the lorry at 56 mph ... brakes to 30 mph": the speed it slows to, not a stop
+                    a = clause_subject
+                    name, cfg, crit, lk = a.behaviours[-1]
+                    a.behaviours[-1] = ("change_speed", {k2: v for k2, v in cfg.items() if k2 == "_words"}, crit, lk)
+                    a.speed_to_mps = m.value
+                    prev = m
+                    continue
+                if m.slot == "speed" and r.ego_speed_mps is None and _among_settings(mentions, k):
+                    r.ego_speed_mps = m.value  # ("... reveal a stopped truck, 80 km/h, heavy rain": the test's speed)
+                    prev = m
+                    continue
                 too_fast = m.slot == "speed" and isinstance(who, _Actor) and m.value > FASTEST_MPS.get(who.kind, 1e9)
                 ego_right_before = (
                     prev is not None and prev.slot == "actor" and prev.value == "ego" and prev.prev == "by"
@@ -1070,7 +1325,10 @@ def read(text: str) -> Reading:
         for a, i in added:
             name, cfg, _, lk = a.behaviours[i]
             words = cfg.pop("_words", "")
+            if name == "sudden_stop" and len(words.split()) == 1 and "brake" in forms(words):
+                cfg["_plain_brake"] = 1.0  # ("brakes": how hard, a stop said after it tells)
             a.goes_on = a.goes_on or bool(cfg.pop("_denied", None))
+            cfg.pop("_still", None)
             a.behaviours[i] = (name, cfg, crit_here or _verb_criticality(words), lk)
         if crit_here:
             if not named and isinstance(subject, _Actor) and subject.crit is None:
@@ -1086,10 +1344,30 @@ def read(text: str) -> Reading:
             # "Going straight over the junction at 30 km/h while ...": a clause with nobody named is the ego's
             r.ego_speed_mps = next(p.value for p in pending if p.slot == "speed")
             pending = [p for p in pending if p.slot != "speed"]
+        if not named and subject is None and any(p.slot in ("turn", "ego_verb") for p in pending):
+            # "Turning left at the junction in the afternoon; a cyclist ...": a sentence that names nobody,
+            # before anyone is named, is the narrator's
+            for p in [p for p in pending if p.slot in ("turn", "ego_verb")]:
+                _apply(p, "ego", r, link, added)
+            pending = [p for p in pending if p.slot not in ("turn", "ego_verb")]
         for x in joined:
             x.group = None
         joined = []
     unplaced = [p.words for p in pending if p.slot in ("behaviour", "turn")]  # (said of nobody)
+    if unplaced and not actors and any(p.slot == "behaviour" and p.value[0] in _DRIVEN for p in pending):
+        # "cut-in on a busy highway at 100 km/h": what only a vehicle does names its vehicle, a car
+        car = _Actor("car", word="car")
+        actors.append(car)
+        done: list = []
+        for p in pending:
+            if p.slot == "speed" and r.ego_speed_mps is None:
+                r.ego_speed_mps = p.value  # (the one speed of a terse line is the test's, the ego's)
+            elif p.slot != "speed":
+                _apply(p, car, r, "sequence", done)
+        for a, i in done:
+            name, cfg, crit, lk = a.behaviours[i]
+            a.behaviours[i] = (name, {k: v for k, v in cfg.items() if not k.startswith("_")}, crit, lk)
+        pending, unplaced = [], []
     if unplaced and not actors:  # something is done, and nobody the reader can place does it
         raise NotUnderstood(list(dict.fromkeys(ignored))[:12], text, missing="road user")
     if both_with_ego and r.ego_speed_mps is None and actors and actors[0].speed_mps is not None:
@@ -1108,6 +1386,15 @@ def read(text: str) -> Reading:
             a.kind = (
                 "pedestrian" if names & {"cross_in_front", "along_road"} and not names & VEHICLE_BEHAVIOURS else "car"
             )
+        if a.kind == "pedestrian" and a.word in L.GENERIC_PERSONS:  # "the guy in front slammed on": a driver
+            names = {b[0] for b in a.behaviours}
+            if (a.wrong_way or names & set(L.DRIVER_BEHAVIOURS)) and not names & {"cross_in_front", "along_road"}:
+                a.kind = "car"
+        if a.hides and a.kind in VEHICLES and not a.behaviours and a.speed_mps is None:
+            a.stationary = a.parked = True  # (what someone steps out from behind stands there)
+        said_by_noun = L.BEHAVIOUR_NOUNS.get(a.word)
+        if said_by_noun and all(b[0] in ("keep_going", "cross_in_front") for b in a.behaviours):
+            a.behaviours = [(said_by_noun, {}, None, "sequence")]  # ("a red-light runner from the left")
         if not a.behaviours and not a.stationary and a.unknown:  # only a verb the reader has no word for: it goes on
             a.behaviours.append(("keep_going", {}, None, "sequence"))
     for a in actors:  # "turns out of the junction": it comes from a side road
@@ -1156,6 +1443,13 @@ def read(text: str) -> Reading:
                 ("cross_in_front", c, k, lk) if n == "cut_in" else (n, c, k, lk) for n, c, k, lk in behaviours
             ]
             behaviours = [b for k, b in enumerate(behaviours) if k == 0 or b[0] != behaviours[k - 1][0]]
+        if (
+            a.kind == "pedestrian"
+            and a.word not in L.GENERIC_PERSONS
+            and behaviours[:1]
+            and behaviours[0][0] in ("cut_in", "change_lane")
+        ):  # "a dog bolted into the road": a walker (a child, an animal) moving into the road crosses it
+            behaviours = [("cross_in_front", {}, *behaviours[0][2:])] + behaviours[1:]
         if a.kind == "pedestrian" and behaviours and behaviours[0][0] in VEHICLE_BEHAVIOURS:
             spec.kind = a.kind = "car"
         moving_out = behaviours and behaviours[0][0] == "cut_in" and a.followed
@@ -1197,7 +1491,20 @@ def read(text: str) -> Reading:
             a.relation = "roadside_" + str(a.relation).rsplit("_", 1)[1]
             crit = next((b[2] for b in behaviours if b[2]), a.crit)
             behaviours = [("cross_in_front", {}, crit, "sequence")]
-        if a.kind in RIDERS and a.pavement and behaviours and behaviours[0][0] in ("cut_in", "forced_turn"):
+        if a.kind in RIDERS and junction and behaviours[:1] and behaviours[0][0] == "cut_in":
+            if not (a.lane_side or a.followed or a.toward or "ahead" in a.said or a.goes_on):
+                # "an e-scooter cuts across at a junction": a rider crossing the ego's road
+                behaviours = [("cross_in_front", {}, *behaviours[0][2:])] + behaviours[1:]
+        overtaking = any(b[0] == "overtake" for b in behaviours)  # (it rides along, and out to pass)
+        if a.kind in RIDERS and overtaking:
+            behaviours = [b for b in behaviours if b[0] != "cross_in_front"] or behaviours  # ("... right into my path")
+        if (
+            a.kind in RIDERS
+            and a.pavement
+            and not overtaking
+            and behaviours
+            and behaviours[0][0] in ("cut_in", "forced_turn")
+        ):
             # "riding on the sidewalk, then turning into the road before our car": it crosses into the path
             behaviours = [("cross_in_front", {}, *behaviours[0][2:])] + behaviours[1:]
         crossing_at = next((k for k, b in enumerate(behaviours) if b[0] == "cross_in_front"), None)
@@ -1214,6 +1521,14 @@ def read(text: str) -> Reading:
         ):  # entering the junction from a side road: across the ego's path
             behaviours[0] = ("run_red_light", behaviours[0][1], behaviours[0][2], behaviours[0][3])
         spec.behaviours = behaviours
+        if (
+            behaviours[:1]
+            and behaviours[0][0] == "cut_in"
+            and "behind" in a.said
+            and spec.relation in ("left", "right")
+            and a.speed_mps is None
+        ):  # "comes up behind on the right and dives into our lane": it passes the ego first
+            a.speed_mps = -V.SPEED_WORDS["fast"]
         spec.distance_m = a.distance_m
         spec.speed_mps = 0.0 if a.stationary and a.speed_mps is None else a.speed_mps
         _specialise(a, spec, junction)
@@ -1234,12 +1549,64 @@ def read(text: str) -> Reading:
     r.read_as = read_as
     said = " ".join(_tokens(text))
     r.intent = stated_outcome(said) or r.intent  # (the whole text's stated outcome first)
+    if r.intent is None and not r.actors:
+        r.intent = "safe"  # (nobody but the ego: nothing it could meet)
     r.lanes = stated_lanes(said) or r.lanes
     r.time = stated_clock(said) or r.time
     r.density = stated_density(said) or r.density
     if r.weather in (None, "rain") and stated_heavy_rain(said):
         r.weather = "heavy_rain"
     return r
+
+
+#: What someone does when a road user comes into its path: braking, slowing, stopping.
+_REACTIONS = ("sudden_stop", "stop", "change_speed")
+#: What someone does to get out of the way: swerving, dodging.
+_EVASIONS = ("cut_in", "change_lane", "cut_out")
+#: Behaviours only a vehicle does: said with no road user, a car does them.
+_DRIVEN = ("cut_in", "overtake", "run_red_light", "turn_across", "turn_into", "wrong_way", "cut_out", "forced_turn",
+           "follow_vehicle", "change_lane")  # fmt: skip
+#: Behaviours that bring a road user into the ego's path: what follows them unattributed is a reaction.
+_CONFLICTS = ("cross_in_front", "run_red_light", "cut_in", "wrong_way", "turn_across", "turn_into", "overtake",
+              "forced_turn")  # fmt: skip
+
+
+def _past(word: str) -> bool:
+    """Whether ``word`` is a verb in the past tense ("slowed", "braked", "stopped")."""
+    lemmas = _lemmas(word).get("VERB", ())
+    return bool(lemmas) and word not in lemmas and not word.endswith(("s", "ing"))
+
+
+def _ego_reaction(mentions, k: int, a: _Actor, first_person: bool = False) -> bool:
+    """Whether braking or stopping ``mentions[k]`` is the narrator's reaction to road user ``a`` rather
+    than ``a``'s own: said after a comma with nobody named ("drifts into our lane, on the brakes, he
+    misses us", "comes off the pavement, braking, braking ... contact"), not as a finite verb
+    ("then brakes hard" stays its own), once ``a`` has already come into the ego's path; or, in a
+    story told in the first person, opening a sentence with no subject in the past tense or the
+    plain form ("Slowed down, gave her loads of space.", "Stopped.", "Slow and easy."), not the third
+    person ("Brakes hard." stays the road user's)."""
+    m = mentions[k]
+    opening = not any(x.slot in ("actor", "pronoun", "member") for x in mentions[:k])  # (nobody named before it)
+    if m.slot == "behaviour":
+        verb = m.words.split()[0]
+        said_alone = first_person and opening and (_past(verb) or not verb.endswith("s"))
+        if said_alone and m.value[0] in _REACTIONS + _EVASIONS:
+            return True  # "Slowed down, gave her loads of space.": a diary's sentence without its "I"
+        if m.value[0] not in _REACTIONS:
+            return False
+        if not (verb.endswith("ing") or m.prev == "on"):
+            return False
+    elif m.slot != "stationary" or m.words not in ("stopped", "stopping"):
+        return False
+    elif first_person and opening:
+        return True  # ("Full brake. Stopped.")
+    j = k - 1
+    while j >= 0 and mentions[j].slot in ("criticality", "speed_word"):
+        j -= 1
+    if j < 0 or mentions[j].slot != "punct" or mentions[j].value != ",":
+        return False
+    came_in = a.came_from and a.kind in VULNERABLE  # (a walker or rider coming off the kerb)
+    return came_in or any(b[0] in _CONFLICTS for b in a.behaviours)
 
 
 def _idle(a: _Actor) -> bool:
@@ -1374,8 +1741,11 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool) -> None:
         spec.facing = "against" if towards or a.wrong_way else None  # ("rides against the traffic")
         if spec.relation == "behind":
             spec.facing = None
-        if a.kerb or (spec.relation or "").startswith("roadside"):
-            spec.lateral_m = 1.2 if a.kerb_side == "left" else -1.2  # at the edge of the lane
+        side = a.kerb_side or a.lane_side or a.side
+        if a.kerb or (spec.relation or "").startswith("roadside") or side in ("left", "right"):
+            # at the edge of the lane on the side said ("along the kerb on our left", "on the right side")
+            left = side == "left" or (side is None and spec.relation == "roadside_left")
+            spec.lateral_m = 1.2 if left else -1.2
         spec.relation = "ahead" if spec.relation != "behind" else "behind"
 
 
@@ -1460,7 +1830,16 @@ def _with_rate(name: str, cfg: dict, rate: float) -> tuple[str, dict]:
 def _tidy(a: _Actor) -> list:
     """The actor's behaviours as the layers take them: redundant ones merged."""
     out = []
-    for b in a.behaviours:
+    behaviours = []
+    for k, (name, cfg, crit, lk) in enumerate(a.behaviours):
+        plain = cfg.pop("_plain_brake", None)
+        after = a.behaviours[k + 1][0] if k + 1 < len(a.behaviours) else None
+        if plain and after in ("stop", "sudden_stop"):
+            continue  # "brakes and stops normally": the stop says how
+        if name == "stop" and crit == "dangerous" and not a.stationary:
+            name = "sudden_stop"  # "decelerates abruptly to a standstill", "stops suddenly": a hard stop
+        behaviours.append((name, cfg, crit, lk))
+    for b in behaviours:
         if out and b[0] == "cut_in" and out[-1][0] == "overtake":
             name, cfg, crit, lk = out[-1]  # an overtake ends by cutting back in: "cuts in sharply" is how
             out[-1] = (name, cfg, crit or b[2], lk)
@@ -1537,6 +1916,9 @@ def _object_follows(mentions, k: int) -> bool:
         return False
     end += 1 if m.next_ == "of" else 0  # ("ahead of a motorcycle")
     for x in mentions[k + 1 :]:
+        if x.slot == "punct" and x.value == "'s" and x.start <= end + 2:
+            end = x.start + 1  # ("behind my mate's car": whose it is, then the car)
+            continue
         if x.start > end + 1:
             return False
         if x.slot == "actor":
@@ -1590,8 +1972,19 @@ def _nearest(named, m):
             continue
         if m.slot == "speed" and isinstance(who, _Actor) and (who.stationary or role == "verb"):
             continue
+        if m.slot == "speed" and role == "prep" and ("ego", "subject") in named:
+            continue  # ("I was behind this bus at 20 mph": the ego's, as "the ego follows a bus at 20 mph")
+        placed = m.slot == "distance" or (m.slot == "relation" and m.value in ("ahead", "behind"))
+        hidden_by = isinstance(who, _Actor) and (who.parked or who.hides)
+        if placed and hidden_by and role != "subject" and _subject_actor(named):
+            continue  # ("runs out between parked cars, 12 m ahead": where the one running out is)
         return who
     return None
+
+
+def _subject_actor(named) -> bool:
+    """Whether a road user other than the ego is the subject of the clause ``named`` comes from."""
+    return any(isinstance(who, _Actor) and role == "subject" for who, role in named)
 
 
 #: Weather words by how much they change a drive: precipitation and fog over cloud over clear.
@@ -1599,8 +1992,8 @@ WEATHER_SEVERITY = {"clear": 0, "cloudy": 1, "rain": 2, "fog": 2, "snow": 3, "he
 
 
 def _global(r, m) -> None:
-    if m.slot == "map":
-        if not (r.map_kind and m.value == "straight"):
+    if m.slot == "map":  # (a roundabout has crossings: "on the crossing after the exit" leaves it one)
+        if not (r.map_kind and m.value == "straight") and not (r.map_kind == "roundabout" and m.value == "crossroad"):
             r.map_kind = m.value
     elif m.slot == "weather":  # the most severe said, of equals the first ("grey, drizzly": rain)
         if r.weather is None or WEATHER_SEVERITY.get(str(m.value), 0) > WEATHER_SEVERITY.get(r.weather, 0):
@@ -1633,9 +2026,13 @@ def _apply(m, who, r, link, added) -> None:
             continue
         if m.slot == "behaviour":
             name, cfg = m.value
+            if any(w in _NEGATORS for w in m.words.split()):
+                a.goes_on = True  # ("fails to yield", "does not give way": one phrase, and it goes on)
             if a.behaviours and a.behaviours[-1][0] == name and name != "change_speed":
+                a.goes_on = a.goes_on or bool(cfg.get("_denied"))  # ("enters and fails to yield": it goes)
                 continue  # ("brakes ... and stops": said twice over)
-            a.behaviours.append((name, dict(cfg, _words=m.words), None, link if not added else "sequence"))
+            said = m.words if not _adverb(m.next_) else f"{m.words} {m.next_}"  # ("brakes moderately")
+            a.behaviours.append((name, dict(cfg, _words=said), None, link if not added else "sequence"))
             added.append((a, len(a.behaviours) - 1))
         elif m.slot == "turn":
             a.behaviours.append(("forced_turn", {"turn": m.value, "_words": m.words}, None, link))
@@ -1665,6 +2062,10 @@ def _apply(m, who, r, link, added) -> None:
             a.speed_mps = -float(m.value) if a.speed_mps is None else a.speed_mps
         elif m.slot == "distance":
             a.distance_m = m.value
+        elif m.slot == "relation" and m.value in ("ahead", "behind") and m.next_ in ("it", "him", "her", "them"):
+            a.said.add("near_other")  # "a car behind it swerves": behind another road user, not the ego
+        elif m.slot == "relation" and m.value == "ahead" and a.behaviours and a.behaviours[-1][0] == "cut_in":
+            a.said.add("in_front")  # "cuts in 10 m ahead": where it cuts in, not where it starts
         elif m.slot == "relation":
             a.said.add(m.value)
             a.followed = a.followed or (m.value == "ahead" and m.words in ("following", "tailing"))
@@ -1688,8 +2089,8 @@ def _apply(m, who, r, link, added) -> None:
         elif m.slot == "kerb_side":
             a.kerb, a.kerb_side = True, m.value
             a.came_from = a.came_from or _from(m)
-        elif m.slot == "arm":
-            a.arm = True
+        elif m.slot == "arm" and m.prev not in _LANDMARK_PREPOSITIONS:
+            a.arm = True  # (not "on the crossing just after the exit": a landmark, not where it comes from)
         elif m.slot == "stationary":
             a.stationary = True
-            a.parked = a.parked or m.words.split()[0] in ("parked", "park")
+            a.parked = a.parked or m.words.split()[0] in ("parked", "park", "double-parked", "double")

@@ -68,7 +68,9 @@ def sample_layers(reading: Reading, text: str, seed: int) -> dict:
             "turn_into",
         } & set(behaviour_names)
         kind = "crossroad" if at_junction else "straight"
-    lanes = reading.lanes or 2
+    # a roundabout's arms link one lane each way into the ring: unless more are said, one lane each way
+    # (in the kerb lane of a two-lane arm the ego, or an entering road user, could not enter the ring)
+    lanes = reading.lanes or (1 if kind == "roundabout" else 2)
     relations = {
         a.relation or getattr(BEHAVIOURS[a.behaviours[0][0]], "DEFAULT_SPAWN", {}).get("relation")
         for a in reading.actors
@@ -81,6 +83,8 @@ def sample_layers(reading: Reading, text: str, seed: int) -> dict:
     )
     if (("right" in relations and "left" not in relations) or to_right) and reading.lanes is None:
         lanes = max(lanes, 2)  # (someone on the ego's right, or moving over to the right: a lane there)
+    if "left" in relations and reading.lanes is None:
+        lanes = max(lanes, 2)  # (someone in the lane on the ego's left: a roundabout's arm with two lanes)
     ego_lane = 1
     if reading.ego_relation == "left" or ("right" in relations and "left" not in relations) or to_right:
         ego_lane = min(2, lanes)

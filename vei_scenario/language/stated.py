@@ -19,25 +19,42 @@ _COLLISION = re.compile(
     r"\b(?:hit|hits|hitting|struck|strikes|striking|collid\w*|collision|crash|crashes|crashed|crashing|"
     r"impact|rear-end\w*|rear end\w*|made contact|make contact|makes contact|ran into|runs into|run into|"
     r"smash\w*|knock\w* (?:down|over)|thump|thrown onto|thrown over|ploughs? into|plowed into|slams? into|"
-    r"slammed into|ran over|runs over|run over|t-bone\w*|sideswip\w*|clipped|clips)\b"
+    r"slammed into|ran over|runs over|run over|t-bone\w*|sideswip\w*|clipped|clips|contact|tapped|taps|touch|touches|"
+    r"touched|bumped|bumps|bump into|knocked|(?:went|go|goes|going|drove|drive|drives|ran|run|runs) into "
+    r"(?:the (?:back|side|rear) of (?:it|him|her|them|the \S+|his \S+|her \S+)|"
+    r"(?:its|his|her|their) (?:rear|back|side)|it|him|her|them))\b"
     r"(?! (?:the |his |her |my |our )?brakes?\b| point| barrier| warning)"
 )
 #: Words that deny or hedge a collision word a few words after them.
 _DENY = re.compile(
     r"\b(?:not|never|no|without|avoid|avoids|avoided|avoiding|almost|nearly|narrowly|barely|prevent\w*|"
-    r"would have|could have|nothing)\b(?:\s+\S+){0,3}\s*$"
+    r"would have|could have|nothing|nobody|no one|neither)\b(?:\s+[^\s,]+){0,3}\s*$"
 )
 _NEAR = re.compile(
     r"\b(?:almost|nearly|narrowly|near miss|near-miss|close call|just in time|by a whisker|by inches|by an inch|"
     r"hair's breadth|only just|just missed|just misses|barely missed|barely misses|"
     r"missed (?:it|him|her|them|us|me|the \S+|his \S+|her \S+|their \S+) by|"
     r"stopp?(?:ed|s|ing)? [^.;]{0,40}(?:short of|from (?:it|him|her|them|the|his|her))|"
-    r"(?:metres?|meters?|m|inches) short|made it across|no contact|emergency stop)\b"
+    r"(?:metres?|meters?|m|inches) short|made it across|no contact|emergency stop|"
+    r"(?:he|she|it|they|just) miss(?:es|ed)?|miss(?:es|ed)? (?:us|me|him|her|it|them) by|"
+    r"to miss (?:us|me|him|her|it|them)|"
+    r"by a hair|by a whisker|"
+    r"by (?:centimetres|centimeters|millimetres|millimeters|a few (?:cm|centimetres|inches|feet))|"
+    r"stops? in time|stopped in time|(?:at the )?last (?:second|moment|minute)|"
+    r"(?:a|about a|1|one|half a|0\.5) (?:metre|meter|m|foot|yard) to spare|"
+    r"(?:was|were|is) (?:a bit |very |really |pretty |quite )?(?:tight|close))"
 )
+#: A sentence that is only the outcome, as a commentary says it ("Close!", "Clean.").
+_NEAR_SENTENCE = re.compile(r"(?:^|[.!?;] )(?:very |so |too |that was )?close (?:one |call |shave )?(?:[.!?]|$)")
+_SAFE_SENTENCE = re.compile(r"(?:^|[.!?;] )(?:all )?clean (?:[.!?]|$)")
 _SAFE = re.compile(
     r"\b(?:safely|safe distance|without (?:any )?(?:problems?|conflict|incident|drama|issue|issues)|"
     r"no problems?|no drama|no conflict|no incident|uneventful|plenty of (?:room|space)|lots of (?:room|space)|"
-    r"enough (?:room|space)|comfortably|let us go|lets us go|let me go|lets me go|gets through safely)\b"
+    r"enough (?:room|space)|comfortably|let us go|lets us go|let me go|lets me go|gets through safely|"
+    r"(?:loads|lots|heaps|tons|a lot) of (?:room|space)|room to spare|ample (?:margin|room|space|clearance)|"
+    r"clearance (?:exceeds|of more than|above)|(?:all|totally|completely|everything|it was|was) fine|all good|"
+    r"nothing (?:else )?(?:happened|happening|happens)|nothing dramatic|nobody close|no one close|"
+    r"pass(?:es|ed)? (?:him|her|it|them|the \S+ )?wide)"
 )
 
 
@@ -53,8 +70,8 @@ def stated_outcome(text: str) -> str | None:
             positive = True
     if positive:
         return "collision"
-    near = _NEAR.search(text) is not None
-    if _SAFE.search(text) and not near:
+    near = _NEAR.search(text) is not None or _NEAR_SENTENCE.search(text) is not None
+    if (_SAFE.search(text) or _SAFE_SENTENCE.search(text)) and not near:
         return "safe"
     if near or denied:
         return "near_miss"
@@ -89,14 +106,24 @@ def stated_lanes(text: str) -> int | None:
     return None
 
 
-_CLOCK = re.compile(r"\b([01]?\d|2[0-3]) : ([0-5]\d)\b(?! (?:km/h|mph|m/s|m)\b)")
+_CLOCK = re.compile(r"\b([01]?\d|2[0-3]) : ([0-5]\d)\b(?! (?:km/h|mph|m/s|m)\b)(?: (am|pm)\b)?")
+_HOUR = re.compile(r"\b(1[0-2]|0?[1-9]) (am|pm)\b")
 
 
 def stated_clock(text: str) -> str | None:
-    """A time of day written as a clock ("at approximately 22:40 hrs": "22:40"), from the reader's
-    tokens joined by spaces ("22 : 40")."""
+    """A time of day written as a clock ("at approximately 22:40 hrs": "22:40", "6:40 pm": "18:40",
+    "6 am": "06:00"), from the reader's tokens joined by spaces ("22 : 40")."""
     m = _CLOCK.search(text)
-    return None if m is None else f"{int(m.group(1)):02d}:{m.group(2)}"
+    if m is not None:
+        hour, minute, half = int(m.group(1)), m.group(2), m.group(3)
+    else:
+        m = _HOUR.search(text)
+        if m is None:
+            return None
+        hour, minute, half = int(m.group(1)), "00", m.group(2)
+    if half is not None and hour <= 12:  # (12 am is midnight, 12 pm noon)
+        hour = hour % 12 + (12 if half == "pm" else 0)
+    return f"{hour:02d}:{minute}"
 
 
 _DENSITY = re.compile(

@@ -148,7 +148,6 @@ RELATIONS = {
     "at the left entrance": "junction_left",
     "from the left side": "junction_left",
     "from the left road": "junction_left",
-    "crossing from the left": "junction_left",
     "from the right entrance": "junction_right",
     "at the right entrance": "junction_right",
     "from the right side": "junction_right",

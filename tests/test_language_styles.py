@@ -1,0 +1,340 @@
+"""Reading descriptions in the styles people write them in: dashcam commentary, diary-style stories
+told in the first person, terse notes, test-spec prose. Each case here is written for the rule it
+pins down (who brakes when the narrator does not say "I", what an outcome said as a noun means, how
+a clock or a spoken unit is read ...), not taken from a corpus."""
+
+from __future__ import annotations
+
+import pytest
+
+from vei_scenario.language.corpus_check import layers_problems
+from vei_scenario.language.reader import _tokens, read
+from vei_scenario.language.stated import stated_clock, stated_outcome
+
+
+def _actors(text: str) -> list[tuple]:
+    return [(a.kind, a.relation, [b[0] for b in a.behaviours]) for a in read(text).actors]
+
+
+# --- the outcome, said as commentary ------------------------------------------------------------------
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("Cyclist pulls out, I brake, brake... contact.", "collision"),
+        ("A van swings into our lane. Close!", "near_miss"),
+        ("The bus waits at the line for us. Clean.", "safe"),
+        ("A moped cuts across and he misses us by a hair.", "near_miss"),
+        ("I had to jink left to miss her.", "near_miss"),
+        ("We stopped with half a metre to spare.", "near_miss"),
+        ("The jogger kept to the verge and we gave her loads of room.", "safe"),
+        ("The lorry braked and I went into the back of it.", "collision"),
+        ("I tapped the scooter at walking pace.", "collision"),
+        ("The taxi stopped dead but I didn't touch it.", "near_miss"),
+        ("Two cars swerve and no one hits anyone.", "near_miss"),
+        ("The pickup did not stop, hit the kerb and rolled.", "collision"),
+        ("Honestly nothing happened, all fine.", "safe"),
+    ],
+)
+def test_an_outcome_said_as_commentary_is_the_intent(text, intent):
+    assert stated_outcome(" ".join(_tokens(text))) == intent
+
+
+def test_a_description_with_no_other_road_user_is_safe():
+    assert read("Just the ego on an empty country road at 80 km/h in the fog.").intent == "safe"
+
+
+# --- clocks, spoken units, numbers in words -----------------------------------------------------------
+@pytest.mark.parametrize(
+    "said, clock",
+    [("9 : 15 pm", "21:15"), ("7 am", "07:00"), ("12 : 30 am", "00:30"), ("14 : 05", "14:05"), ("11 pm", "23:00")],
+)
+def test_a_clock_with_am_or_pm(said, clock):
+    assert stated_clock(f"it was {said} , a van stops") == clock
+
+
+def test_a_clock_written_with_dots_does_not_end_the_sentence():
+    assert read("At 7 a.m. on a wet Monday a van ahead of us stops.").time == "07:00"
+
+
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("Doing 70 k's on the ring road when a car ahead brakes hard.", 70.0),
+        ("Ego at eighty k, a lorry pulls out from the left.", 80.0),
+        ("I was doing like forty when a cyclist cut in.", 40.0),
+        ("Ego at fifty-five, a car ahead stops.", 55.0),
+    ],
+)
+def test_spoken_speeds(text, kph):
+    assert read(text).ego_speed_mps * 3.6 == pytest.approx(kph)
+
+
+@pytest.mark.parametrize(
+    "text, attribute, value",
+    [
+        ("Rain pelting down, a cyclist crosses from the left.", "weather", "heavy_rain"),
+        ("Light snowfall, a van ahead brakes.", "weather", "snow"),
+        ("Pitch black, a deer runs across.", "time", "23:00"),
+        ("It was getting dark when a child ran out.", "time", "19:30"),
+        ("Low traffic volume; a car overtakes us.", "density", "light"),
+    ],
+)
+def test_settings_said_as_people_say_them(text, attribute, value):
+    assert getattr(read(text), attribute) == value
+
+
+# --- who does what: the narrator's reactions ------------------------------------------------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # braking said after a comma with nobody named, once the road user is in the ego's path
+        (
+            "Taxi swings into our lane from the right, hard on the brakes, stopped a metre short.",
+            [("car", "right", ["cut_in"])],
+        ),
+        (
+            "A moped comes out of the side road on the left, braking, braking, phew.",
+            [("car", "junction_left", ["turn_into"])],
+        ),
+        # a finite verb stays the road user's own
+        ("A van cuts in ahead of us and then brakes hard.", [("van", None, ["cut_in", "sudden_stop"])]),
+        # a first-person sentence with no subject
+        (
+            "A jogger was running along my lane towards me. Slowed right down and went round her.",
+            [("pedestrian", "ahead", ["along_road"])],
+        ),
+    ],
+)
+def test_the_narrators_reactions_are_not_the_road_users(text, expected):
+    assert _actors(text) == expected
+
+
+def test_an_outcome_said_as_a_noun_is_no_behaviour():
+    """ "crash" is also a rider's fall (a sudden stop); standing alone after a modifier it names what
+    happened, and a road-user noun that says what it does does it."""
+    assert _actors("Red-light runner from the right, dusk, side-on crash.") == [
+        ("car", "junction_right", ["run_red_light"])
+    ]
+    assert _actors("Ghost driver in our lane, head-on crash.")[0][2] == ["wrong_way"]
+
+
+def test_a_behaviour_only_a_vehicle_does_said_with_no_road_user_is_a_cars():
+    r = read("Cut-in on a busy motorway at 120 km/h.")
+    assert [(a.kind, [b[0] for b in a.behaviours]) for a in r.actors] == [("car", ["cut_in"])]
+    assert r.ego_speed_mps * 3.6 == pytest.approx(120.0)
+
+
+# --- who does what: people, vehicles, groups --------------------------------------------------------------
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("Some bloke in front slammed on for no reason.", "car"),
+        ("A guy coming the wrong way in our lane.", "car"),
+        ("A guy walks across in front of us.", "pedestrian"),
+        ("Some idiot in a pickup cuts in ahead of us.", "van"),
+    ],
+)
+def test_a_person_word_is_a_driver_when_they_do_what_drivers_do(text, kind):
+    assert [a.kind for a in read(text).actors] == [kind]
+
+
+def test_the_first_and_the_second_of_a_group():
+    r = read("Two vans ahead both brake: the second one stops hard, the first one stops normally.")
+    assert [[b[0] for b in a.behaviours] for a in r.actors] == [["stop"], ["sudden_stop"]]
+
+
+def test_an_apposition_after_a_word_for_any_vehicle_says_which():
+    assert [a.kind for a in read("A lead vehicle, a white box van, brakes hard 20 m ahead.").actors] == ["van"]
+
+
+def test_a_vehicle_someone_comes_out_from_behind_stands_and_the_distance_is_the_crossers():
+    r = read("A boy dashes out from behind a parked-up camper on the left, 9 m ahead of us.")
+    boy, camper = r.actors
+    assert (boy.kind, boy.relation, boy.distance_m) == ("pedestrian", "roadside_left", 9.0)
+    assert (camper.kind, camper.speed_mps, camper.distance_m) == ("van", 0.0, None)
+
+
+def test_a_speed_after_what_the_ego_is_behind_is_the_egos():
+    r = read("I was stuck behind a tractor at about 25 mph when a car overtook us both.")
+    assert r.ego_speed_mps * 3.6 == pytest.approx(25 * 1.609344, abs=0.1)
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # a phrase that denies giving way at a roundabout: straight into the ego's path from its arm
+        (
+            "Roundabout, a lorry coming in from the left does not give way.",
+            [("truck", "junction_left", ["run_red_light"])],
+        ),
+        (
+            "At the roundabout a van joins from the next entry on the right without yielding.",
+            [("van", "junction_right", ["turn_into"])],
+        ),
+        # a possessive inside a phrase
+        ("A cyclist sails through her red from the left.", [("bicycle", "junction_left", ["run_red_light"])]),
+        # waiting for the ego to pass is giving way
+        ("A car waits in the side road on the right for us to go.", [("car", "junction_right", ["give_way"])]),
+        # pulling in at a stop is a stop, not a cut-in
+        ("The bus ahead pulls in to the bus stop.", [("truck", "ahead", ["stop"])]),
+        # a hard stop said by its wording
+        ("The lorry ahead decelerates sharply to a standstill.", [("truck", "ahead", ["sudden_stop"])]),
+        ("The car ahead brakes and stops gently.", [("car", "ahead", ["stop"])]),
+        # the crossing said after the vehicle a rider comes out from is the rider's, with its side
+        (
+            "A cyclist shoots out from in front of the parked lorry crossing right to left.",
+            [("bicycle", "roadside_right", ["cross_in_front"]), ("truck", "roadside_right", ["stop"])],
+        ),
+    ],
+)
+def test_behaviours_as_people_say_them(text, expected):
+    assert _actors(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # a rider cutting across at a junction crosses the ego's road
+        ("A cyclist cuts across at the crossroads.", [("bicycle", "roadside_right", ["cross_in_front"])]),
+        # a rider pulling out to overtake another does not cross
+        (
+            "Two cyclists ride along the kerb; the second one pulls out to overtake the first, right into our path.",
+            [("bicycle", "ahead", ["along_road"]), ("bicycle", None, ["cut_in", "overtake"])],
+        ),
+        # "two lanes over" is a lane to the side; "ahead" after a cut-in is where it cuts in
+        ("A taxi two lanes over darts into our lane 8 m ahead.", [("car", None, ["cut_in"])]),
+        # keeping a time headway is following
+        ("A pickup keeps a 2 s time headway behind us.", [("van", "behind", ["follow_vehicle"])]),
+    ],
+)
+def test_more_behaviours_as_people_say_them(text, expected):
+    assert _actors(text) == expected
+
+
+def test_the_narrator_drives_where_a_first_person_story_opens_without_its_i():
+    r = read("Just cruising behind my neighbour's van at about 30 mph, nothing to report.")
+    assert r.ego_speed_mps * 3.6 == pytest.approx(30 * 1.609344, abs=0.1)
+    assert [(a.kind, a.relation) for a in r.actors] == [("van", "ahead")]
+
+
+def test_it_in_a_story_told_as_we_is_the_road_user():
+    r = read("We were behind a tram at 25 km/h when it drew to a stop.")
+    assert [(a.kind, [b[0] for b in a.behaviours]) for a in r.actors] == [("truck", ["stop"])]
+
+
+def test_a_bare_speed_among_the_settings_of_a_terse_line_is_the_egos():
+    r = read("Lead van brakes hard, 70 km/h, fog.")
+    assert r.ego_speed_mps * 3.6 == pytest.approx(70.0) and r.actors[0].speed_mps is None
+
+
+def test_a_distance_after_then_is_the_subjects():
+    (car,) = read("A car in the right lane then moves into our lane 12 m ahead of us.").actors
+    assert car.distance_m == 12.0
+
+
+def test_a_junction_named_by_its_line_or_sign_is_no_behaviour():
+    r = read("A van waits at the stop sign on the right, then pulls out in front of us.")
+    assert r.map_kind == "crossroad"
+    assert [(a.kind, a.relation, [b[0] for b in a.behaviours]) for a in r.actors] == [
+        ("van", "junction_right", ["turn_into"])
+    ]
+
+
+def test_a_bare_number_after_a_verb_of_going_is_a_speed():
+    assert read("Ego drives 45, a jogger crosses from the left.").ego_speed_mps * 3.6 == pytest.approx(45.0)
+    assert read("Ego drives 45, a jogger crosses from the left.").actors[0].speed_mps is None
+
+
+def test_an_animal_or_child_moving_into_the_road_crosses_it():
+    assert _actors("A fox shot into the road from the hedge.") == [("pedestrian", "roadside_right", ["cross_in_front"])]
+
+
+def test_the_lights_on_red_are_no_red_light_run_and_another_driver_behind_is_another_car():
+    r = read("Approaching the lights on red, the van in front stops, the van behind us does not stop and hits us.")
+    assert [(a.kind, a.relation) for a in r.actors] == [("van", "ahead"), ("van", "behind")]
+    assert all("run_red_light" not in [b[0] for b in a.behaviours] for a in r.actors)
+
+
+def test_a_zebra_crossing_is_no_junction():
+    r = read("At the zebra crossing a man starts to cross from the right.")
+    assert r.map_kind != "crossroad" and _actors("At the zebra crossing a man crosses from the right.")[0][2] == [
+        "cross_in_front"
+    ]
+
+
+def test_where_the_ego_is_struck_from_is_where_the_doer_comes_from():
+    (truck,) = read("Our vehicle was waiting at the lights when it was struck from behind by a lorry.").actors
+    assert (truck.kind, truck.relation) == ("truck", "behind")
+
+
+def test_an_animal_jumping_from_the_side_onto_the_road_crosses():
+    assert _actors("A deer is jumping from the trees on the left, 30 m ahead.")[0][1:] == (
+        "roadside_left",
+        ["cross_in_front"],
+    )
+
+
+def test_a_road_user_entering_a_roundabout_without_yielding_plays_a_run_into_the_egos_path(tmp_path):
+    """The roundabout's arms link one lane each way into the ring: with one lane each way (unless the
+    text asks for more) the ego and the road user entering from the next arm both reach the ring, and
+    the entry meets the ego's path (before, both stopped at the end of their arms, 60 m apart)."""
+    from vei_scenario.language.corpus_check import play_case
+    from vei_scenario.language.rules_backend import layers_from_text
+
+    text = "On the roundabout a moped comes in from the right without giving way."
+    assert _actors(text) == [("car", "junction_right", ["run_red_light"])]
+    for seed in (0, 1):
+        assert play_case({"text": text}, layers_from_text, tmp_path, seed) == [], seed
+
+
+def test_a_vehicle_coming_up_behind_on_a_side_to_cut_in_starts_in_that_lane_faster_than_the_ego(tmp_path):
+    from vei_scenario.language.corpus_check import play_case
+    from vei_scenario.language.rules_backend import layers_from_text
+
+    text = "At 60 mph a van comes up behind on the left and swerves into our lane."
+    (van,) = read(text).actors
+    assert (van.relation, [b[0] for b in van.behaviours]) == ("left", ["cut_in"]) and van.speed_mps < 0  # (faster)
+    assert play_case({"text": text}, layers_from_text, tmp_path) == []
+
+
+def test_braking_to_a_speed_is_a_slowing_by_the_difference():
+    (truck,) = read("A truck at 80 km/h ahead of us brakes to 50 km/h.").actors
+    assert [b[0] for b in truck.behaviours] == ["change_speed"]
+    assert truck.behaviours[0][1]["speed_delta_mps"] * 3.6 == pytest.approx(-30.0)
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [("A van drove into its rear.", "collision"), ("The bus missed us by centimetres.", "near_miss")],
+)
+def test_more_outcomes(text, intent):
+    assert stated_outcome(" ".join(_tokens(text))) == intent
+
+
+# --- the scorer, aligned with the format ---------------------------------------------------------------
+def _layers(adversaries):
+    env = {"map": {"kind": "straight"}, "weather": {"condition": "clear"}, "time_of_day": "12:00"}
+    return {"environment": env | {"traffic_density": "none"}, "ego": {"speed_mps": 10.0}, "adversaries": adversaries}
+
+
+def test_a_vehicle_standing_in_the_lane_doing_nothing_is_scenery_not_a_listed_road_user():
+    """The format lists road users "not parked scenery unless it acts": a broken-down lorry a cut-out
+    reveals does not act, wherever it stands."""
+    cut_out = {"type": "car", "spawn": {"relation": "ahead"}, "speed_mps": 20.0, "behaviour": {"behaviour": "cut_out"}}
+    lorry = {"type": "truck", "spawn": {"relation": "ahead"}, "speed_mps": 0.0, "behaviour": {"behaviour": "stop"}}
+    case = {"actors": [{"type": "car", "behaviours": ["cut_out"]}]}
+    assert layers_problems(_layers([cut_out, lorry]), case) == []
+    moving = dict(lorry, speed_mps=5.0)  # (one that moves acts, and is counted)
+    assert layers_problems(_layers([cut_out, moving]), case) != []
+
+
+def test_a_rider_along_the_road_at_the_edge_of_the_lane_starts_on_that_kerb_side():
+    rider = {
+        "type": "bicycle",
+        "spawn": {"relation": "ahead", "lateral_m": 1.2},
+        "speed_mps": 5.0,
+        "behaviour": {"behaviour": "along_road"},
+    }
+    want = {"type": "bicycle", "behaviours": ["along_road"], "relation": ["roadside_left"]}
+    assert layers_problems(_layers([rider]), {"actors": [want]}) == []
+    assert layers_problems(_layers([rider]), {"actors": [dict(want, relation=["roadside_right"])]}) != []
