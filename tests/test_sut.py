@@ -470,3 +470,79 @@ def test_a_native_fmu_that_crashes_or_hangs_fails_its_run_alone(scenario, tmp_pa
     assert all(reason in v["error"] for v in catalog["variants"])
     assert time.perf_counter() - started < 30
     assert _session() - before == set()  # no process left behind (an orphan stays in the session)
+
+
+SWERVE = '''
+class Swerve:
+    """Holds its speed; from t = at asks to be `offset` metres left of its path or lane."""
+
+    def __init__(self, offset="2.0", at="1.0", **_):
+        self.offset, self.at = float(offset), float(at)
+
+    def step(self, obs):
+        return {"accel_mps2": 0.0, "lateral_offset_m": self.offset if obs.t_s >= self.at - 1e-9 else 0.0}
+'''
+
+
+def _sideways(a, b, k: int) -> tuple[float, float]:
+    """(left, ahead) of run ``a``'s ego from run ``b``'s at row ``k``, in ``b``'s heading."""
+    dx, dy, h = a.x[k] - b.x[k], a.y[k] - b.y[k], b.yaw[k]
+    return -dx * np.sin(h) + dy * np.cos(h), dx * np.cos(h) + dy * np.sin(h)
+
+
+def test_a_lateral_offset_command_moves_the_ego_beside_its_path_at_the_documented_rate(scenario, tmp_path):
+    """lateral_offset_m: the ego moves left of its path at LATERAL_SPEED_MPS until it is there, heads
+    where it moves (atan of sideways over forward speed), and keeps its along-path progress."""
+    from vei_scenario.sut.contract import LATERAL_SPEED_MPS
+
+    (tmp_path / "swerve.py").write_text(SWERVE)
+    runs = {}
+    for offset in ("2.0", "-1.0", "0"):
+        (spec,) = parse_controller_options([f"Ego={tmp_path / 'swerve.py'}:Swerve"], [f"offset={offset}"])
+        runs[offset] = run_scenario(scenario, {"TimeShift": "-3"}, controllers=(spec,)).traces["Ego"]
+    straight = runs["0"]
+    dt = 0.01
+    for offset, sign in (("2.0", 1.0), ("-1.0", -1.0)):
+        tr = runs[offset]
+        k0 = int(round(1.0 / dt))  # the first command to move sideways drives the step from t = 1 s
+        for k, want in ((k0, 0.0), (k0 + 10, 0.1 * LATERAL_SPEED_MPS), (k0 + 50, 0.5 * LATERAL_SPEED_MPS)):
+            left, ahead = _sideways(tr, straight, k)
+            assert left == pytest.approx(sign * want, abs=1e-9) and ahead == pytest.approx(0.0, abs=1e-9), (k, left)
+        turned = tr.yaw[k0 + 10] - straight.yaw[k0 + 10]
+        assert turned == pytest.approx(sign * np.arctan2(LATERAL_SPEED_MPS, straight.speed[k0 + 10]), abs=1e-9)
+        left, _ = _sideways(tr, straight, k0 + 300)
+        assert left == pytest.approx(float(offset), abs=1e-9)
+        assert tr.yaw[k0 + 300] == pytest.approx(straight.yaw[k0 + 300], abs=1e-12)
+
+
+def test_a_lateral_offset_command_moves_a_lane_driving_ego_within_its_road(tmp_path):
+    """On a lane (no path): the offset is the lane offset, to the left of its direction of travel."""
+    from roads import straight_500m
+
+    (tmp_path / "swerve.py").write_text(SWERVE)
+    xosc = tmp_path / "lane.xosc"
+    text = (Path(__file__).parent / "data" / "following_brake.xosc").read_text()
+    assert "<RoadNetwork/>" in text
+    xosc.write_text(
+        text.replace("<RoadNetwork/>", f'<RoadNetwork><LogicFile filepath="{straight_500m()}"/></RoadNetwork>')
+    )
+    (spec,) = parse_controller_options([f"Ego={tmp_path / 'swerve.py'}:Swerve"], ["offset=1.2"])
+    (plain,) = parse_controller_options([f"Ego={tmp_path / 'swerve.py'}:Swerve"], ["offset=0"])
+    moved = run_scenario(xosc, {}, controllers=(spec,)).traces["Ego"]
+    kept = run_scenario(xosc, {}, controllers=(plain,)).traces["Ego"]
+    k = int(round(3.0 / 0.01))
+    left, ahead = _sideways(moved, kept, k)
+    assert left == pytest.approx(1.2, abs=1e-6) and abs(ahead) < 1e-6
+
+
+@pytest.mark.parametrize(
+    "command, needle",
+    [
+        ({"accel_mps2": 0.0, "lateral_offset_m": float("nan")}, "lateral_offset_m nan"),
+        ({"accel_mps2": 0.0, "lateral_offset_m": 30.0}, "not within ±10 m"),
+        ({"accel_mps2": 0.0, "lateral_offset_m": "left"}, "lateral_offset_m is str 'left', not a number"),
+    ],
+)
+def test_a_bad_lateral_command_is_the_controllers_fault(command, needle):
+    with pytest.raises(ControllerFault, match=needle):
+        command_from(command, "Ego=x.py:X", 1.0)

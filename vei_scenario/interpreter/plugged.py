@@ -9,6 +9,7 @@ end, whatever the storyboard activates), or a scenario ``Controller`` with a ``m
 
 from __future__ import annotations
 
+import math
 import signal
 import threading
 from pathlib import Path
@@ -18,7 +19,14 @@ from vei_scenario.interpreter.entities import Entity
 from vei_scenario.interpreter.motion import advance_along, lane_keep
 from vei_scenario.interpreter.positions import ensure_lane
 from vei_scenario.models.vehicle import Longitudinal, longitudinal_step
-from vei_scenario.sut.contract import ControllerFault, ObjectState, Observation, StepTimeout, command_from
+from vei_scenario.sut.contract import (
+    LATERAL_SPEED_MPS,
+    ControllerFault,
+    ObjectState,
+    Observation,
+    StepTimeout,
+    command_from,
+)
 from vei_scenario.sut.spec import ControllerSpec, describe_exception
 
 #: The scenario Controller property that names a user's controller (FILE.py:CLASS or MODULE:CLASS).
@@ -47,6 +55,7 @@ class PluggedController:
         self.impl = None  # made when the run starts (an FMU instance is not made for a run never played)
         self.started = False
         self.held_command = 0.0  # Jacobi coupling: the command computed in the previous step
+        self.lateral = _Lateral()
 
     def activated(self, e: Entity, ctx, domains: tuple[str, ...]) -> None:
         """It takes over from the entity's state when it first moves."""
@@ -108,6 +117,8 @@ class PluggedController:
         if not self.started:
             self._start(e, ctx)
         cmd = command_from(self._step(self.observation(e, ctx), ctx.t), self.label, ctx.t)
+        if cmd.lateral_offset_m is not None:
+            self.lateral.target = cmd.lateral_offset_m
         a_cmd = cmd.accel_mps2
         if ctx.snapshot is not None:  # Jacobi: the vehicle gets this command at the next step
             a_cmd, self.held_command = self.held_command, a_cmd
@@ -117,17 +128,64 @@ class PluggedController:
             v = e.max_speed
             a = (v - e.speed) / dt
             s = 0.5 * (e.speed + v) * dt
+        lateral = self.lateral
+        side = lateral.step(dt) if lateral.active else None  # (m/s to the left this step)
         if e.follower is None:  # an entity that drives by lane keeps to it
             ensure_lane(ctx, e)
             if e.lane is not None:
+                if side is not None:  # (an offset along t: to the left against the road's direction)
+                    e.lane.offset = lateral.base(e.lane.offset) + (
+                        lateral.offset if e.lane.forward else -lateral.offset
+                    )
                 lane_keep(e, s, ctx)
             else:
                 advance_along(e, s)
         elif advance_along(e, s):  # (at its path's end it stands: vei_ego_drive)
             v, a = 0.0, 0.0
+        if side is not None:
+            lateral.place(e, on_lane=e.follower is None and e.lane is not None, ds=s, dt=dt)
         e.speed, e.accel = v, a
         e.status = cmd.state
         return True
+
+
+class _Lateral:
+    """The offset a user's controller asked for (``lateral_offset_m``): the entity moves towards it at
+    :data:`~vei_scenario.sut.contract.LATERAL_SPEED_MPS` at most, beside its path (its pose there shifted
+    to the left of the path's heading) or its lane (the lane offset), and heads where it moves. Inactive
+    until a first command: a system that never steers moves exactly as without this."""
+
+    def __init__(self) -> None:
+        self.target: float | None = None
+        self.offset = 0.0  # where it is now, m to the left
+        self.rate = 0.0  # how fast it moved sideways in the last step, m/s to the left
+        self.lane_base: float | None = None  # the lane offset the scenario gave, kept under the command
+
+    @property
+    def active(self) -> bool:
+        return self.target is not None
+
+    def step(self, dt: float) -> float:
+        """Move towards the target within the rate limit; the sideways speed of this step (m/s)."""
+        reach = LATERAL_SPEED_MPS * dt
+        before = self.offset
+        self.offset += max(-reach, min(reach, self.target - self.offset))
+        self.rate = (self.offset - before) / dt
+        return self.rate
+
+    def base(self, lane_offset: float) -> float:
+        if self.lane_base is None:
+            self.lane_base = lane_offset
+        return self.lane_base
+
+    def place(self, e: Entity, on_lane: bool, ds: float, dt: float) -> None:
+        """Shift ``e`` (on its path: the path's pose) by the offset and turn it to where it moves."""
+        if not on_lane:  # (on its lane the lane offset has placed it)
+            e.x -= self.offset * math.sin(e.yaw)
+            e.y += self.offset * math.cos(e.yaw)
+        if ds > 1e-9 and self.rate != 0.0:  # (a standing entity keeps its heading)
+            turned = e.yaw + math.atan2(self.rate * dt, ds)
+            e.yaw = math.atan2(math.sin(turned), math.cos(turned))
 
 
 def _overran(signum, frame) -> None:

@@ -2,7 +2,9 @@
 
 ``step(obs)`` gets an :class:`Observation` and returns the longitudinal acceleration command (m/s²):
 a number, or a mapping or object with ``accel_mps2`` (and optionally ``state``, a short text shown in
-trajectories.csv's ``controller_state`` column). Anything else, a non-finite number or a command beyond
+trajectories.csv's ``controller_state`` column, and ``lateral_offset_m``, where the entity is to be
+beside its path or lane: metres to the left, reached at :data:`LATERAL_SPEED_MPS` at most).
+Anything else, a non-finite number or a command beyond
 :data:`MAX_COMMAND_MPS2` either way is a :class:`ControllerFault`: one line naming the controller, the
 step time and the reason. A finite command within that bound is held by the vehicle model to the
 entity's Performance (maxAcceleration, maxDeceleration, maxSpeed) and its jerk limit.
@@ -18,6 +20,14 @@ from vei_scenario.errors import VeiError
 #: The largest command, either way, taken as a command at all (m/s², about 10 g): beyond it no road
 #: vehicle brakes or accelerates, so the number is a fault in the controller, not a request.
 MAX_COMMAND_MPS2 = 100.0
+
+#: The largest lateral offset taken as a command (m, either side): two lanes and more away from its path
+#: the entity would be on another road, not beside its own.
+MAX_LATERAL_OFFSET_M = 10.0
+
+#: How fast the entity moves sideways towards a commanded offset (m/s): about an evasive lane change's
+#: (3.5 m in 2 s), and the same in every run, so the system's lateral wish is comparable across tools.
+LATERAL_SPEED_MPS = 1.75
 
 
 class ControllerFault(VeiError):
@@ -75,15 +85,17 @@ class Observation:
 
 @dataclass(frozen=True, slots=True)
 class Command:
-    """A checked command: the acceleration (m/s²) and the state text for trajectories.csv."""
+    """A checked command: the acceleration (m/s²), the state text for trajectories.csv and the lateral
+    offset asked for (m to the left of the path or lane; None: as before)."""
 
     accel_mps2: float
     state: str
+    lateral_offset_m: float | None = None
 
 
 def command_from(value: object, label: str, t_s: float, default_state: str = "sut") -> Command:
     """The command ``step`` returned, checked; a :class:`ControllerFault` for anything that is not one."""
-    state = default_state
+    state, lateral = default_state, None
     if isinstance(value, bool) or value is None:
         raise ControllerFault(label, f"step returned {value!r}, not an acceleration in m/s² (a number)", t_s)
     if isinstance(value, (int, float)):
@@ -92,9 +104,10 @@ def command_from(value: object, label: str, t_s: float, default_state: str = "su
         if isinstance(value, dict):
             if "accel_mps2" not in value:
                 raise ControllerFault(label, "step returned a mapping without accel_mps2", t_s)
-            accel, given = value["accel_mps2"], value.get("state")
+            accel, given, lateral = value["accel_mps2"], value.get("state"), value.get("lateral_offset_m")
         elif hasattr(value, "accel_mps2"):
             accel, given = value.accel_mps2, getattr(value, "state", None)
+            lateral = getattr(value, "lateral_offset_m", None)
         else:
             shown = repr(value) if len(repr(value)) <= 40 else repr(value)[:37] + "..."
             raise ControllerFault(
@@ -114,7 +127,19 @@ def command_from(value: object, label: str, t_s: float, default_state: str = "su
         raise ControllerFault(
             label, f"step returned {accel:g} m/s², beyond ±{MAX_COMMAND_MPS2:g} m/s² (no vehicle can)", t_s
         )
-    return Command(accel, state)
+    if lateral is not None:
+        lateral = _lateral(lateral, label, t_s)
+    return Command(accel, state, lateral)
+
+
+def _lateral(value: object, label: str, t_s: float) -> float:
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise ControllerFault(label, f"lateral_offset_m is {type(value).__name__} {value!r}, not a number", t_s)
+    if not math.isfinite(value) or abs(value) > MAX_LATERAL_OFFSET_M:
+        raise ControllerFault(
+            label, f"step returned lateral_offset_m {value}, not within ±{MAX_LATERAL_OFFSET_M:g} m of its path", t_s
+        )
+    return float(value)
 
 
 def _state_text(given: object) -> str:
