@@ -256,20 +256,30 @@ def bench_entry(library: Path, e: dict, opts: BenchOptions, system: System) -> d
 
 
 def bench_entries(library: Path, entries: list[dict], opts: BenchOptions, system: System) -> Iterator[dict]:
-    """The rows of ``entries`` in their order. vei's planner: the scenarios side by side on ``workers``
-    threads, each scenario's runs on one thread. The kernel releases the GIL, so one thread's Python
-    (reading a scenario, summarising its rows) overlaps the other's kernel runs, and no core idles
-    at the end of a scenario waiting for its last batch of runs (a scenario's 1 505 runs are batches
-    of 500, 500, 500 and 5: on 2 threads the third ran alone, a quarter of a scenario's time). A
-    plugged system: scenario after scenario, each on all workers (forked processes for the
-    interpreter)."""
+    """The rows of ``entries`` in their order. vei's planner: the scenarios the kernel runs side by
+    side on ``workers`` threads, each scenario's runs on one thread. The kernel releases the GIL, so
+    one thread's Python (reading a scenario, summarising its rows) overlaps the other's kernel runs,
+    and no core idles at the end of a scenario waiting for its last batch of runs (a scenario's 1 505
+    runs are batches of 500, 500, 500 and 5: on 2 threads the third ran alone, a quarter of a
+    scenario's time). A scenario the kernel cannot run, and every scenario of a plugged system, runs
+    in the interpreter: scenario after scenario, each on all workers (forked processes)."""
+    from vei_scenario.sweep.evaluate import runs_in_kernel
+
     workers = opts.workers or os.cpu_count() or 1
     if system.controllers or workers == 1 or len(entries) < 2:
         yield from (bench_entry(library, e, opts, system) for e in entries)
         return
     one = replace(opts, workers=1)
+
+    def side_by_side(e: dict) -> dict | None:
+        searched = e.get("status") == "ok" and e.get("conflict_time_shift_s") is not None
+        if searched and not runs_in_kernel(str(library / e["outputs"]["scenario"]), opts.dt):
+            return None  # (for the interpreter, below)
+        return bench_entry(library, e, one, system)
+
     with ThreadPoolExecutor(max_workers=workers) as pool:
-        yield from pool.map(lambda e: bench_entry(library, e, one, system), entries)
+        for e, row in zip(entries, pool.map(side_by_side, entries)):
+            yield row if row is not None else bench_entry(library, e, opts, system)
 
 
 def run_bench(

@@ -102,6 +102,11 @@ def _native_engine(scenario: str, dt: float, zone_ttc: str = "2d", controllers: 
     return _NATIVE[key]
 
 
+def runs_in_kernel(scenario: str, dt: float, zone_ttc: str = "2d") -> bool:
+    """Whether the sweep kernel runs ``scenario`` (a vei-compiled closed loop), the interpreter else."""
+    return _native_engine(scenario, dt, zone_ttc) is not None
+
+
 def release_native(scenario: str, dt: float, zone_ttc: str = "2d") -> None:
     """Forget the sweep kernel's scene of ``scenario``: a caller that runs many scenarios once each (a
     benchmark over a library) frees each one's arrays (1.6 MB for a generated clip) when done with it."""
