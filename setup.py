@@ -16,10 +16,12 @@ setup(
                 "vei_scenario/core/src/road.c",
                 "vei_scenario/core/src/vei_models.c",
                 "vei_scenario/core/src/vei_batch.c",
+                "vei_scenario/core/src/vei_fmu_ego.c",
             ],
             include_dirs=["vei_scenario/core/src"],
             extra_compile_args=[] if sys.platform == "win32" else ["-O3", "-std=c99", "-ffp-contract=off"],
-            libraries=[] if sys.platform == "win32" else ["m"],
+            # (dl: the native FMU on the ego of the sweep kernel, opened with dlopen; in libc since glibc 2.34)
+            libraries=[] if sys.platform == "win32" else ["m"] + (["dl"] if sys.platform.startswith("linux") else []),
         ),
     ]
 )

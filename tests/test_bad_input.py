@@ -135,6 +135,21 @@ def test_a_fix_off_by_gps_error_still_compiles(tmp_path, capsys):
     assert (out / "scenario.xosc").is_file()
 
 
+def test_an_e_scooter_seen_once_beside_the_threat_is_skipped_with_a_note(tmp_path, capsys):
+    """Only a clip whose every e-scooter is seen once is refused; a second rider glimpsed in one frame
+    has no trajectory, so it is left out and the compile says so (the threat still has its path)."""
+    doc = with_map(CASE)
+    frame = doc["annotations"]["frames"][first_frame_with_scooter(doc) + 3]
+    frame["objects"].append({"track_id": "glimpsed", "category": "e-scooter", "x_m": 25.0, "y_m": -6.0})
+    (tmp_path / "clip.json").write_text(json.dumps(doc))
+    code = main(["compile", str(tmp_path / "clip.json"), "-o", str(tmp_path / "out" / "scenario.xosc")])
+    printed = capsys.readouterr()
+    assert code == 0, printed.err
+    assert "track glimpsed: category 'e-scooter' observed once" in printed.out
+    xosc = (tmp_path / "out" / "scenario.xosc").read_text()
+    assert "scooter_1" in xosc and "glimpsed" not in xosc
+
+
 def test_missing_clip_file(tmp_path, capsys):
     code = main(["compile", str(tmp_path / "absent.json"), "-o", str(tmp_path / "o" / "s.xosc")])
     err = capsys.readouterr().err

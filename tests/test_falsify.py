@@ -3,9 +3,12 @@ one-parameter search (vei risk), the worst scenarios reproduce, and bad requests
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import pytest
 
 from vei_scenario.cli import main
+from vei_scenario.errors import VeiInputError
 from vei_scenario.falsify import Axis, falsify, robustness
 
 
@@ -79,7 +82,7 @@ def test_bad_falsification_requests_are_one_line(scenario, tmp_path, capsys):
         ([scenario, "--bounds", "TimeShift=0:1", "--target", "bogus_metric<3"], "unknown numeric metric"),
         ([scenario, "--bounds", "TimeShift=0:1", "--target", "min_ttc_s<1e400"], "not finite"),
         ([scenario, "--values", "RiderType=replay"], "at least one continuous range"),
-        ([str(constrained), "--bounds", "TimeShift=-5:1"], "outside the declared range"),
+        ([str(constrained), "--bounds", "TimeShift=-5:1"], "not within one of its declared ranges"),
         ([scenario, "--bounds", "TimeShift=0:1", "--slices", "1"], "outside"),
     ]
     for argv, needle in cases:
@@ -146,3 +149,41 @@ def test_the_planners_own_failures_on_the_case_study_are_the_dense_grids(scenari
     assert region.discrete == {"RiderType": "replay"}
     assert abs(region.low - 3.429) <= 0.001 and abs(region.high - 3.43) <= 0.001  # (edges to --tol)
     assert result.runs <= 0.1 * len(grid)
+
+
+def test_constraint_groups_are_alternatives_for_bounds_and_values(scenario, tmp_path, capsys):
+    """OpenSCENARIO 1.2: a value must satisfy every ValueConstraint of at least one ConstraintGroup."""
+    two_ranges = tmp_path / "two.xosc"
+    text = (
+        open(scenario)
+        .read()
+        .replace(
+            '<ParameterDeclaration name="TimeShift" parameterType="double" value="0"/>',
+            '<ParameterDeclaration name="TimeShift" parameterType="double" value="2.5"><ConstraintGroup>'
+            '<ValueConstraint rule="greaterOrEqual" value="2"/><ValueConstraint rule="lessOrEqual" value="3"/>'
+            '</ConstraintGroup><ConstraintGroup><ValueConstraint rule="lessOrEqual" value="-1"/>'
+            "</ConstraintGroup></ParameterDeclaration>",
+        )
+        .replace(
+            '<ParameterDeclaration name="RiderType" parameterType="string" value="replay"/>',
+            '<ParameterDeclaration name="RiderType" parameterType="string" value="replay"><ConstraintGroup>'
+            '<ValueConstraint rule="equalTo" value="replay"/></ConstraintGroup><ConstraintGroup>'
+            '<ValueConstraint rule="equalTo" value="aggressive"/></ConstraintGroup></ParameterDeclaration>',
+        )
+    )
+    assert text.count("ConstraintGroup>") == 8, "the fixture's declarations changed"
+    two_ranges.write_text(text)
+    (tmp_path / "scenario.xodr").write_bytes((Path(scenario).parent / "scenario.xodr").read_bytes())
+    from vei_scenario.falsify import check_axes, parse_bounds
+    from vei_scenario.interpreter.document import load_scenario
+
+    doc = load_scenario(two_ranges)
+    for bounds, values in ((["TimeShift=2:3"], []), (["TimeShift=-4:-1"], ["RiderType=aggressive"])):
+        check_axes(two_ranges, doc, parse_bounds(bounds, values), {})  # inside one group each: accepted
+    for bounds, values, needle in (
+        (["TimeShift=0:2.5"], [], "TimeShift=0:2.5 is not within one of its declared ranges"),
+        (["TimeShift=-2:2.5"], [], "greaterOrEqual 2 and lessOrEqual 3 or lessOrEqual -1"),
+        (["TimeShift=2:3"], ["RiderType=normal"], "one of replay, aggressive"),
+    ):
+        with pytest.raises(VeiInputError, match=needle):
+            check_axes(two_ranges, doc, parse_bounds(bounds, values), {})

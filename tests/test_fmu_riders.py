@@ -12,6 +12,7 @@ from lxml import etree
 
 from vei_scenario.fmu import MODELS, build_fmus, build_system, cosimulate
 from vei_scenario.fmu.system import closed_loop
+from vei_scenario.fmu.variables import MAX_PATH
 from vei_scenario.interpreter import run_scenario
 
 
@@ -54,19 +55,21 @@ def test_the_ssp_package_has_a_component_per_rider(multi, tmp_path):
     [({}, "sequential"), ({"RiderType": "aggressive", "CapEnabled": "true"}, "sequential"),
      ({"RiderType": "normal", "CapEnabled": "true"}, "jacobi")],
 )  # fmt: skip
-def test_every_rider_reproduces_vei_run_while_it_plays_its_track(multi, fmus, values, coupling):
-    """Within 1e-6 m: the ego and the threat over the whole run; each other rider while vei run plays
-    its recorded track. After it, vei run drives it on along its lane (esmini's default), which the
-    rider FMU does not model: the loop says so in its notes."""
+def test_every_rider_reproduces_vei_run_over_the_whole_run(multi, fmus, values, coupling):
+    """Within 1e-6 m, every rider over the whole run: the ego and the threat, and each other rider also
+    after its recorded track ends (at 10.3 and 9.3 s), where vei run drives it on along its lane
+    (esmini's default) and its FMU follows that way on, given with its track."""
     rep = cosimulate(multi, "fmpy", values, 0.01, coupling, fmus=fmus, leave_out=("ped_1",))
-    assert rep.max_deviation_m["ego"] <= 1e-6 and rep.max_deviation_m["sfm"] <= 1e-6, rep.max_deviation_m
+    assert max(rep.max_deviation_m.values()) <= 1e-6, rep.max_deviation_m
     run = run_scenario(multi, values, 0.01, coupling=coupling)
     t = np.asarray(run.t)
-    for comp, end in (("sfm_scooter_1", 10.3), ("sfm_scooter_3", 9.3)):
+    for comp in ("sfm_scooter_1", "sfm_scooter_3"):
         tr, rec = run.traces[rep.loop.entities[comp]], rep.record[comp]
-        k = t <= end + 1e-9
-        assert np.max(np.hypot(tr.x[k] - rec["x"][: t.size][k], tr.y[k] - rec["y"][: t.size][k])) <= 1e-6
-        assert any(n.startswith(f"{rep.loop.entities[comp]}'s track ends at {end:.2f} s") for n in rep.loop.notes)
+        n = min(t.size, rec["x"].size)
+        assert t[n - 1] >= 25.0 - 1e-9  # (compared to the end of the run, well past the tracks' ends)
+        assert np.max(np.hypot(tr.x[:n] - rec["x"][:n], tr.y[:n] - rec["y"][:n])) <= 1e-6
+        assert rep.loop.parameters[comp]["track_n"] <= MAX_PATH
+    assert not any("track ends" in n for n in rep.loop.notes), rep.loop.notes
     if values.get("RiderType") == "aggressive":  # (the threat rides: it is not a replay)
         assert rep.loop.parameters["sfm"]["rider_type"] == "aggressive"
 
@@ -84,3 +87,30 @@ def test_the_case_study_loop_is_unchanged(compiled):
     case = next(p for p in compiled["case_study"].written if p.name == "scenario.xosc")
     loop = closed_loop(case)
     assert loop.components == ("ego", "cap", "sfm") and loop.notes == []
+
+
+def test_the_way_on_keeps_only_the_vertices_interpolation_needs():
+    """A straight, uniformly timed way on is two vertices; on an arc of radius 1 km at 5 m/s, every
+    sample the FMU is asked for stays within the tolerance of the kept vertices' interpolation; a
+    budget too small for the coarsest tolerance is cut, and says from when."""
+    from types import SimpleNamespace
+
+    from vei_scenario.fmu.replay_tracks import drive_on, thin
+
+    t = np.arange(0.0, 10.0, 0.01)
+    line = thin(t, 3.0 * t, -t, np.full(t.size, np.arctan2(-1, 3)), 1e-9)
+    assert line == [0, t.size - 1]
+    a = 0.005 * t
+    x, y, h = 1000 * np.sin(a), 1000 - 1000 * np.cos(a), a
+    keep = thin(t, x, y, h, 1e-5)
+    assert 2 < len(keep) < t.size
+    k = np.asarray(keep)
+    xi, yi = np.interp(t, t[k], x[k]), np.interp(t, t[k], y[k])
+    assert np.max(np.hypot(xi - x, yi - y)) <= 1e-5
+    track = (np.array([-1.0, 0.0]), np.array([-5.0, 0.0]), np.array([0.0, 0.0]), np.array([0.0, 0.0]))
+    trace = SimpleNamespace(t=t, x=x, y=y, yaw=h)
+    fits = drive_on(track, trace, 0.0, 512)
+    assert fits.cut_s is None and fits.ts.size <= 512 < 1 + len(thin(t, x, y, h, 1e-6))
+    assert fits.tolerance_m == 1e-5  # (the finest that fits)
+    cut = drive_on(track, trace, 0.0, 3)
+    assert cut.ts.size == 3 and cut.cut_s is not None and cut.cut_s < 9.99

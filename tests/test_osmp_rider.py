@@ -1,8 +1,9 @@
-"""vei's e-scooter rider and its planner (driving the ego) as OSMP traffic participants (``vei fmu build
-sfm cap --osmp``), hosted back in ``vei run`` as such (``--controller scooter_1=vei_sfm_osmp.fmu``,
-``--controller Ego=vei_cap_osmp.fmu``, or both): the built-in models' run again.
+"""vei's e-scooter rider and its planner (driving the ego) as pythonfmu OSMP traffic participants (``vei
+fmu build sfm cap --osmp --backend python``, the fallback of the native ones: test_osmp_native.py),
+hosted back in ``vei run`` as such (``--controller scooter_1=vei_sfm_osmp.fmu``, ``--controller
+Ego=vei_cap_osmp.fmu``, or both): the built-in models' run again.
 
-The FMUs are pythonfmu FMUs that can be instantiated once per process: each hosted run is a process."""
+The FMUs can be instantiated once per process: each hosted run is a process."""
 
 from __future__ import annotations
 
@@ -29,7 +30,7 @@ from vei_scenario.fmu.osmp_rider import build_osmp
 from vei_scenario.interpreter import run_scenario
 from vei_scenario.sut import parse_controller_options
 scenario, plugs, out, values = sys.argv[1], json.loads(sys.argv[2]), Path(sys.argv[3]), json.loads(sys.argv[4])
-options = [f"{entity}={build_osmp(model, scenario, out, values)}" for entity, model in plugs.items()]
+options = [f"{entity}={build_osmp(model, scenario, out, values, backend='python')}" for entity, model in plugs.items()]
 a = run_scenario(scenario, values)
 b = run_scenario(scenario, values, controllers=parse_controller_options(options))
 entity = list(plugs)[-1]
@@ -77,7 +78,8 @@ def test_the_osmp_models_reproduce_multi_scooter(multi, tmp_path):
 
 
 def test_the_osmp_rider_declares_what_osmp_requires(case_study, tmp_path, capsys):
-    code = main(["fmu", "build", "sfm", "--osmp", "--scenario", str(case_study), "-o", str(tmp_path)])
+    py = ["--backend", "python"]
+    code = main(["fmu", "build", "sfm", "--osmp", *py, "--scenario", str(case_study), "-o", str(tmp_path)])
     assert code == 0
     fmu = tmp_path / "vei_sfm_osmp.fmu"
     ports = read_osmp_ports(fmu, "t")  # (the host's own checks of the annotations)
@@ -87,11 +89,11 @@ def test_the_osmp_rider_declares_what_osmp_requires(case_study, tmp_path, capsys
 
     assert validate_fmu(str(fmu)) == []
     first = fmu.read_bytes()
-    assert main(["fmu", "build", "sfm", "--osmp", "--scenario", str(case_study), "-o", str(tmp_path)]) == 0
+    assert main(["fmu", "build", "sfm", "--osmp", *py, "--scenario", str(case_study), "-o", str(tmp_path)]) == 0
     assert fmu.read_bytes() == first  # (the same build, the same bytes)
     md = zipfile.ZipFile(fmu).read("modelDescription.xml").decode()
     assert md.index("<VendorAnnotations>") < md.index("<ModelVariables>")
-    code = main(["fmu", "build", "cap", "--osmp", "--scenario", str(case_study), "-o", str(tmp_path)])
+    code = main(["fmu", "build", "cap", "--osmp", *py, "--scenario", str(case_study), "-o", str(tmp_path)])
     assert code == 0 and read_osmp_ports(tmp_path / "vei_cap_osmp.fmu", "t").parameters["threat_id"][1] == "Integer"
     assert validate_fmu(str(tmp_path / "vei_cap_osmp.fmu")) == []
     code = main(["fmu", "build", "ego", "--osmp", "--scenario", str(case_study), "-o", str(tmp_path)])
@@ -106,7 +108,7 @@ import sys
 from vei_scenario.fmu.osmp_rider import build_osmp_rider
 from vei_scenario.interpreter import run_scenario
 from vei_scenario.sut import ControllerFault, parse_controller_options
-fmu = build_osmp_rider({str(case_study)!r}, __import__("pathlib").Path({str(tmp_path)!r}))
+fmu = build_osmp_rider({str(case_study)!r}, __import__("pathlib").Path({str(tmp_path)!r}), backend="python")
 spec = parse_controller_options([f"scooter_1={{fmu}}"])
 run_scenario({str(case_study)!r}, controllers=spec)
 try:

@@ -49,6 +49,8 @@ def test_wheel_carries_the_examples_and_schemas(wheel):
         "maps/helsinki_center.osm",
         "ci/suite.toml",
         "controllers/aeb.py",
+        "osmp/StraightLine.fmu",
+        "osmp/src/TrajectoryFollower.py",
         "generate_dataset.py",
         "generate_examples.py",
     ):
@@ -62,6 +64,10 @@ def test_vei_examples_copies_clips_that_compile(tmp_path, capsys):
     assert (tmp_path / "ex" / "controllers" / "aeb.py").is_file()
     assert (tmp_path / "ex" / "generate_dataset.py").is_file()
     assert (tmp_path / "ex" / "maps" / "helsinki_center.osm").is_file()
+    # the OSMP guide's participants, with their sources, byte for byte
+    ours = Path(__file__).parents[1] / "examples" / "osmp"
+    for rel in ("SimpleAebOsmp.fmu", "StraightLine.fmu", "TrajectoryFollower.fmu", "src/osmp_common.py"):
+        assert (tmp_path / "ex" / "osmp" / rel).read_bytes() == (ours / rel).read_bytes()
     assert (
         main(["compile", str(tmp_path / "ex" / "case_study" / "clip.json"), "-o", str(tmp_path / "o" / "s.xosc")]) == 0
     )

@@ -321,16 +321,26 @@ def _cmd_fmu_build(args: argparse.Namespace) -> int:
 
     values = parse_param_overrides(args.param) if args.scenario else None
     if args.osmp:
+        from vei_scenario.fmu.osmp_native import missing
         from vei_scenario.fmu.osmp_rider import KINDS, build_osmp
 
         models = _models(args.models)
         if not args.scenario or any(m not in KINDS for m in models):
             raise VeiInputError(None, "--osmp", "builds the rider (sfm) and the planner (cap) from a scenario: "
                                 "vei fmu build sfm cap --osmp --scenario XOSC")  # fmt: skip
+        if args.fmi != 2:
+            raise VeiInputError(None, "--fmi", "OSMP traffic participants are FMI 2.0 FMUs; use --fmi 2")
+        backend = args.backend or "native"
+        why = missing() if backend == "native" else None
+        if why and args.backend is None:  # (asked for nothing in particular: the pythonfmu participant)
+            print(f"vei: note: {why}; building pythonfmu participants instead, which need Python with "
+                  "vei-scenario where they run", file=sys.stderr)  # fmt: skip
+            backend = "python"
         for m in models:
-            print(f"wrote {build_osmp(m, args.scenario, Path(args.output), values)}")
+            print(f"wrote {build_osmp(m, args.scenario, Path(args.output), values, backend)}")
         return 0
-    for path in build_fmus(_models(args.models), args.output, args.backend, args.fmi, args.scenario, values).values():
+    built = build_fmus(_models(args.models), args.output, args.backend or "native", args.fmi, args.scenario, values)
+    for path in built.values():
         print(f"wrote {path}")
     return 0
 
@@ -768,10 +778,11 @@ def build_parser() -> argparse.ArgumentParser:
         description="For every scenario of LIBRARY (vei compile CLIPS/ -o LIBRARY/): the seed paper's five\n"
         "configurations (replay/normal/aggressive rider, planner off/on) at every TimeShift within\n"
         "--half-width s of its conflict shift, every --step s. The system under test drives the ego where\n"
-        "the planner is on (4, 5): vei's planner through the compiled sweep kernel, or your own\n"
-        "(--controller ENTITY=file.py:Class or ENTITY=planner.fmu) through the interpreter. A scenario fails\n"
-        "when, with the system on, the ego collides while moving, or a run fails. Writes bench.json,\n"
-        "report.html and junit.xml (one test case per scenario); exit 1 when some scenario fails.\n\n"
+        "the planner is on (4, 5): vei's planner or a native FMU (--controller Ego=planner.fmu) through\n"
+        "the compiled sweep kernel, a Python class (Ego=file.py:Class) or a PythonFMU through the\n"
+        "interpreter. A scenario fails when, with the system on, the ego collides while moving, or a run\n"
+        "fails. Writes bench.json, report.html and junit.xml (one test case per scenario); exit 1 when\n"
+        "some scenario fails.\n\n"
         "Two systems: --controller A --controller B (each [LABEL=]ENTITY=TARGET, or planner) bench both\n"
         "into OUT/LABEL/ and write OUT/compare.json and compare.html: the scenarios one fails and the other\n"
         "does not; --compare A/bench.json B/bench.json -o OUT compares two earlier runs. Exit 1 when the\n"
@@ -1071,7 +1082,7 @@ def build_parser() -> argparse.ArgumentParser:
     fb = fsub.add_parser("build", help="build FMUs: sfm (e-scooter), cap (planner), ego (vehicle) or all")
     fb.add_argument("models", nargs="*", metavar="MODEL", help="sfm, cap, ego or all (default: all)")
     fb.add_argument("-o", "--output", default="fmus/dist", help="directory for the .fmu files (default fmus/dist)")
-    fb.add_argument("--backend", choices=("native", "python"), default="native", help=BACKEND_HELP)
+    fb.add_argument("--backend", choices=("native", "python"), default=None, help=BACKEND_HELP)
     fb.add_argument("--fmi", type=int, choices=(2, 3), default=2, help="FMI version (default 2)")
     fb.add_argument(
         "--scenario",
@@ -1083,8 +1094,9 @@ def build_parser() -> argparse.ArgumentParser:
         "--osmp",
         action="store_true",
         help="the rider (sfm) or the planner with its vehicle (cap) as an ASAM OSI traffic participant (OSMP: "
-        "SensorView in, TrafficUpdate out), with the --scenario's values; pythonfmu FMUs that need Python with "
-        "vei-scenario to run",
+        "SensorView in, TrafficUpdate out), with the --scenario's values: native C FMUs that need neither vei nor "
+        "Python to run (built with protoc-c and libprotobuf-c); where those are missing, and without --backend "
+        "native, pythonfmu FMUs that need Python with vei-scenario to run (--backend python builds those)",
     )
     fb.set_defaults(func=_cmd_fmu_build)
     fs = fsub.add_parser("system", help="the scenario's closed loop (ego + scooter + planner) as an SSP 1.0 package")

@@ -12,10 +12,24 @@ from pathlib import Path
 
 from vei_scenario.errors import VeiInputError
 
-#: The folders copied: the example clips, their shared map, the CI suite and the example controller.
-FOLDERS = ("case_study", "multi_scooter", "no_map", "stop_and_go", "maps", "ci", "controllers")
+#: The folders copied: the example clips, their shared map, the CI suite, the example controller and the
+#: OSMP traffic participants (FMUs and their sources, in ``osmp/src``).
+FOLDERS = ("case_study", "multi_scooter", "no_map", "stop_and_go", "maps", "ci", "controllers", "osmp")
 #: Scripts beside them: the dataset generator (which builds on the examples' generator).
 SCRIPTS = ("generate_dataset.py", "generate_examples.py")
+
+
+def _files(d, rel: str) -> list[tuple[str, bytes]]:
+    """(relative path, bytes) of the files under ``d``, its subfolders' too, in name order."""
+    out = []
+    for f in sorted(d.iterdir(), key=lambda p: p.name):
+        if f.name.startswith(".") or f.name == "__pycache__":
+            continue
+        if f.is_dir():
+            out.extend(_files(f, f"{rel}/{f.name}"))
+        elif f.is_file() and f.suffix != ".pyc":
+            out.append((f"{rel}/{f.name}", f.read_bytes()))
+    return out
 
 
 def bundled_examples() -> list[tuple[str, bytes]]:
@@ -26,9 +40,7 @@ def bundled_examples() -> list[tuple[str, bytes]]:
         d = root.joinpath(folder)
         if not d.is_dir():
             continue
-        for f in sorted(d.iterdir(), key=lambda p: p.name):
-            if f.is_file() and not f.name.startswith(".") and f.suffix != ".pyc":
-                out.append((f"{folder}/{f.name}", f.read_bytes()))
+        out.extend(_files(d, folder))
     for name in SCRIPTS:
         f = root.joinpath(name)
         if f.is_file():

@@ -445,7 +445,9 @@ def check_axes(path: Path, doc, axes: list[Axis], fixed: dict[str, str]) -> None
     """Bounds against the declared parameters: known names, finite and non-empty ranges of numeric
     parameters, values of the declared type, within the declaration's value constraints."""
     from vei_scenario.interpreter.document import check_type, check_values
+    from vei_scenario.sweep.preflight import declared_constraints, describe_allowed, satisfies
 
+    constraints = declared_constraints(doc)
     seen = set()
     for a in axes:
         if a.name not in doc.parameter_types:
@@ -460,6 +462,11 @@ def check_axes(path: Path, doc, axes: list[Axis], fixed: dict[str, str]) -> None
                 problem = check_type(kind, v)
                 if problem:
                     raise VeiInputError(None, "--values", f"{a.name}={v!r} {problem} ({kind} parameter)")
+                groups = constraints.get(a.name)
+                if groups and not any(all(satisfies(v, rule, b) for rule, b in g) for g in groups):
+                    raise VeiInputError(
+                        None, "--values", f"{a.name}={v!r} is outside its declared values ({describe_allowed(groups)})"
+                    )
             continue
         if kind not in ("double", "int", "integer", "unsignedInt", "unsignedShort"):
             raise VeiInputError(None, "--bounds", f"{a.name} is a {kind} parameter: give --values, not a range")
@@ -467,38 +474,15 @@ def check_axes(path: Path, doc, axes: list[Axis], fixed: dict[str, str]) -> None
             raise VeiInputError(None, "--bounds", f"{a.name}: bounds must be finite numbers")
         if not a.low < a.high:
             raise VeiInputError(None, "--bounds", f"{a.name}={a.low:g}:{a.high:g} is an empty box")
-        for rule, value in doc_constraints(doc, a.name):
-            for bound in (a.low, a.high):
-                if not _satisfies(bound, rule, value):
-                    raise VeiInputError(
-                        None, "--bounds", f"{a.name} bound {bound:g} is outside the declared range ({rule} {value:g})"
-                    )
+        groups = constraints.get(a.name)
+        ends = (repr(a.low), repr(a.high))
+        if groups and not any(all(satisfies(b, rule, v) for b in ends for rule, v in g) for g in groups):
+            raise VeiInputError(
+                None,
+                "--bounds",
+                f"{a.name}={a.low:g}:{a.high:g} is not within one of its declared ranges ({describe_allowed(groups)})",
+            )
     check_values(doc.parameter_types, fixed)
-
-
-def doc_constraints(doc, name: str) -> list[tuple[str, float]]:
-    """(rule, value) of the declaration's ValueConstraints (OpenSCENARIO 1.2 ConstraintGroup)."""
-    out = []
-    for d in doc.root.iterfind("ParameterDeclarations/ParameterDeclaration"):
-        if (d.get("name") or "").lstrip("$") != name:
-            continue
-        for c in d.iterfind("ConstraintGroup/ValueConstraint"):
-            try:
-                out.append((c.get("rule"), float(c.get("value"))))
-            except (TypeError, ValueError):
-                continue
-    return out
-
-
-def _satisfies(x: float, rule: str, value: float) -> bool:
-    return {
-        "greaterThan": x > value,
-        "greaterOrEqual": x >= value,
-        "lessThan": x < value,
-        "lessOrEqual": x <= value,
-        "equalTo": x == value,
-        "notEqualTo": x != value,
-    }.get(rule, True)
 
 
 def parse_bounds(specs: list[str], values: list[str]) -> list[Axis]:

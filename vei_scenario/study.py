@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import csv
 import io
+import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -49,16 +50,18 @@ class StudyReport:
     written: list[Path]
 
 
-def _scenario_for(input_path: Path, out_dir: Path) -> Path:
+def _scenario_for(input_path: Path, staging: Path) -> tuple[Path, list[Path]]:
+    """The scenario to study: a compiled one as given, a clip compiled into ``staging`` (its files
+    join the study's outputs only once every configuration has run: a failed run leaves nothing)."""
     if input_path.suffix == ".json":
         from vei_scenario.compiler import compile_clip
 
-        target = out_dir / "scenario" / "scenario.xosc"
-        compile_clip(input_path, target)
-        return target
+        target = staging / "scenario" / "scenario.xosc"
+        result = compile_clip(input_path, target)
+        return target, list(result.written)
     if input_path.suffix != ".xosc":
         raise VeiInputError(input_path, "", "vei study takes a clip (.json) or a compiled scenario (.xosc)")
-    return input_path
+    return input_path, []
 
 
 #: (header, row key, width, number format) of the printed table.
@@ -112,7 +115,14 @@ def run_study(
     if time_shift_s is not None:
         finite(time_shift_s, "--time-shift", -3600, 3600)
     out = Path(out_dir)
-    scenario = _scenario_for(Path(input_path), out)
+    with tempfile.TemporaryDirectory(prefix="vei-study-") as staging:
+        return _study(Path(input_path), out, Path(staging), dt, time_shift_s, plots, zone_ttc, controllers)
+
+
+def _study(input_path: Path, out: Path, staging: Path, dt: float, time_shift_s: float | None, plots: bool,
+           zone_ttc: str, controllers: tuple) -> StudyReport:  # fmt: skip
+    scenario, compiled = _scenario_for(input_path, staging)
+    shown = out / scenario.relative_to(staging) if compiled else scenario  # (where it is once written)
     declared = load_scenario(scenario).parameters
     for name in ("TimeShift", "RiderType", "CapEnabled"):
         if name not in declared:
@@ -145,7 +155,7 @@ def run_study(
         out / "study.json",
         json_text(
             {
-                "scenario": str(scenario),
+                "scenario": str(shown),
                 "time_shift_s": time_shift_s,
                 "dt_s": dt,
                 "ttc_zones_use": zone_ttc,
@@ -162,5 +172,7 @@ def run_study(
         files.add(out / "trajectories.png", run_plots.trajectories_png(runs, runs[0][1].road_file))
         files.add(out / "speeds.png", run_plots.speeds_png(runs))
         files.add(out / "gap_ttc.png", run_plots.gap_ttc_png(runs, cfg))
+    for path in compiled:
+        files.add(out / path.relative_to(staging), path.read_bytes())
     files.commit()
-    return StudyReport(scenario, float(time_shift_s), rows, files.paths)
+    return StudyReport(shown, float(time_shift_s), rows, files.paths)

@@ -10,10 +10,12 @@ recorded track, route, timing, rider type and social-force parameters, as ``vei 
 --scenario`` sets them, carried in ``resources/sfm_parameters.json``) and reports its new pose,
 velocity and acceleration in the TrafficUpdate.
 
-Built with pythonfmu: the native C FMU would need a protobuf runtime in C; this one needs a Python with
-vei-scenario (and pythonfmu's runtime) where it runs, as ``--backend python`` FMUs do, and like them it
-can be instantiated once per process only (``canBeInstantiatedOnlyOncePerProcess``): one ``vei run``
-per process, not a study or a sweep.
+:func:`build_osmp` builds it, and the planner, as native C FMUs (:mod:`vei_scenario.fmu.osmp_native`:
+no vei, no Python where they run) or, as the fallback where protoc-c and the protobuf-c runtime are
+missing, with pythonfmu (this module's :class:`OsmpBody`). Those need a Python with vei-scenario (and
+pythonfmu's runtime) where they run, as ``--backend python`` FMUs do, and like them can be
+instantiated once per process only (``canBeInstantiatedOnlyOncePerProcess``): one ``vei run`` per
+process, not a study or a sweep.
 """
 
 from __future__ import annotations
@@ -233,23 +235,54 @@ def _values(loop, model: str) -> dict:
     return {"cap": loop.parameters["cap"], "ego": loop.parameters["ego"], "other_entity": loop.entities["sfm"]}
 
 
-def build_osmp(model: str, scenario: str | Path, out_dir: Path, values: dict[str, str] | None = None) -> Path:
+BACKENDS = ("native", "python")
+
+
+def osmp_loop(scenario: str | Path, values: dict[str, str] | None = None):
+    """The scenario's FMU loop as the participants carry it: the threat's rider, the planner and the
+    ego; the other road users are the host's to show, none of them is packed."""
+    from vei_scenario.fmu.system import closed_loop
+    from vei_scenario.loop import LoopScene, NotALoop
+
+    try:
+        names = tuple(LoopScene(scenario).names)
+    except NotALoop:
+        names = ()  # (closed_loop says why)
+    return closed_loop(scenario, values, leave_out=names)
+
+
+def build_osmp(
+    model: str, scenario: str | Path, out_dir: Path, values: dict[str, str] | None = None, backend: str = "native"
+) -> Path:
     """``out_dir/vei_sfm_osmp.fmu`` (the threat's rider) or ``out_dir/vei_cap_osmp.fmu`` (the planner
-    driving the ego) of ``scenario`` (parameter overrides ``values``) as an OSMP traffic participant."""
+    driving the ego) of ``scenario`` (parameter overrides ``values``) as an OSMP traffic participant:
+    native C (``backend`` native, :mod:`vei_scenario.fmu.osmp_native`; runs without vei or Python) or
+    pythonfmu (python; needs Python with vei-scenario where it runs)."""
+    if backend not in BACKENDS:
+        raise VeiInputError(None, "--backend", f"{backend!r} is not one of {', '.join(BACKENDS)}")
+    if model not in KINDS:
+        raise VeiInputError(None, "--osmp", f"{model!r} is not one of {', '.join(KINDS)}")
+    loop = osmp_loop(scenario, values)
+    if backend == "native":
+        from vei_scenario.fmu.osmp_native import build_native_osmp
+        from vei_scenario.fmu.variables import SPECS
+
+        models = ("sfm",) if model == "sfm" else ("cap", "ego")
+        specs = {m: SPECS[m].with_starts(loop.parameters[m], loop.steps * loop.dt) for m in models}
+        other = loop.entities["ego" if model == "sfm" else "sfm"]
+        return build_native_osmp(model, specs, other, Path(out_dir), KINDS[model][2])
+    return _build_python(model, loop, Path(out_dir))
+
+
+def _build_python(model: str, loop, out_dir: Path) -> Path:
+    """The pythonfmu participant (the fallback where no native one can be built)."""
     what, body, name = KINDS[model]
     try:
         import pythonfmu  # noqa: F401
     except ImportError:
         raise VeiInputError(None, "--osmp", "needs pythonfmu: pip install pythonfmu") from None
     from vei_scenario.fmu.packaging import write_fmu
-    from vei_scenario.fmu.system import closed_loop
-    from vei_scenario.loop import LoopScene, NotALoop
 
-    try:  # (the other road users are the host's to show: none of them is packed)
-        names = tuple(LoopScene(scenario).names)
-    except NotALoop:
-        names = ()  # (closed_loop says why)
-    loop = closed_loop(scenario, values, leave_out=names)
     text = json.dumps(_values(loop, model), sort_keys=True)
     # the model identifier names the scenario's values: pythonfmu's runtime imports the FMU's script by
     # that name, so two of these FMUs hosted in one process would otherwise share (and free) one module
@@ -273,6 +306,8 @@ def build_osmp(model: str, scenario: str | Path, out_dir: Path, values: dict[str
     return write_fmu(Path(out_dir) / f"{name}.fmu", entries)
 
 
-def build_osmp_rider(scenario: str | Path, out_dir: Path, values: dict[str, str] | None = None) -> Path:
+def build_osmp_rider(
+    scenario: str | Path, out_dir: Path, values: dict[str, str] | None = None, backend: str = "native"
+) -> Path:
     """:func:`build_osmp` of the rider."""
-    return build_osmp("sfm", scenario, out_dir, values)
+    return build_osmp("sfm", scenario, out_dir, values, backend)

@@ -184,8 +184,9 @@ def closed_loop(
         "behaviour_start_s": start,
     }
 
-    def rider_parameters(name: str, rider_type: str) -> dict:
-        i, (sx, sy, syaw), track, route = b.names.index(name), b.init_pose[name], b.paths[name][0], routes[name]
+    def rider_parameters(name: str, rider_type: str, track=None) -> dict:
+        i, (sx, sy, syaw), route = b.names.index(name), b.init_pose[name], routes[name]
+        track = b.paths[name][0] if track is None else track
         delay = r.delays.get(name)
         return {
             **sfm_props,
@@ -213,16 +214,34 @@ def closed_loop(
             f"{', '.join(left_out)}: no rider, replayed in vei run and left out of the loop (nothing in it "
             "reacts to it)"
         )
-    on_road = b.raw.find("RoadNetwork/LogicFile") is not None
+    # a replayed rider whose track ends before the run: its FMU is given the way vei run drives it on
+    shift = {n: float(r.delays[n][0]) if r.delays.get(n) is not None else 0.0 for n in others}
+    ending = [n for n in others if b.paths[n][0].ts[-1] + shift[n] < r.duration]
+    run = None
+    if ending:
+        from vei_scenario.interpreter import run_scenario
+
+        run = run_scenario(scenario, values, dt)
     for n in others:
-        loop.parameters[f"sfm_{n}"] = rider_parameters(n, "replay")
+        track = None
+        if n in ending:
+            from vei_scenario.fmu.replay_tracks import drive_on
+
+            poly = b.paths[n][0]
+            track = drive_on((poly.ts, poly.xs, poly.ys, poly.hs), run.traces[n], shift[n], MAX_PATH)
+            end = float(poly.ts[-1]) + shift[n]
+            if track.cut_s is not None:
+                loop.notes.append(
+                    f"{n}'s track ends at {end:.2f} s: its FMU follows vei run's way on (along its lane) until "
+                    f"{track.cut_s + shift[n]:.2f} s, then goes on straight (the FMU holds {MAX_PATH} track vertices)"
+                )
+            elif track.tolerance_m > 1e-6:
+                loop.notes.append(
+                    f"{n}'s track ends at {end:.2f} s: its FMU follows vei run's way on (along its lane) within "
+                    f"{track.tolerance_m:g} m (the FMU holds {MAX_PATH} track vertices)"
+                )
+        loop.parameters[f"sfm_{n}"] = rider_parameters(n, "replay", track)
         loop.entities[f"sfm_{n}"] = n
-        end = b.paths[n][0].ts[-1] + loop.parameters[f"sfm_{n}"]["time_shift_s"]
-        if on_road and end < r.duration:
-            loop.notes.append(
-                f"{n}'s track ends at {end:.2f} s: vei run drives it on along its lane (esmini's default), "
-                "its FMU goes on straight at its last speed"
-            )
     return loop
 
 

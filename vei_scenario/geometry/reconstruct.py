@@ -127,7 +127,7 @@ def reconstruct(clip: Clip, rate_hz: float = 10.0, smooth: bool = True) -> Recon
     for tid in sorted(tracks):
         obs = tracks[tid]
         scooter = obs[0].category.lower() in SCOOTER_CATEGORIES
-        if len(obs) < 2:  # (the loader refuses an e-scooter seen once: the threat needs a path)
+        if len(obs) < 2:  # (the loader refuses a clip whose every e-scooter is seen once: a threat needs a path)
             skipped[tid] = f"category {obs[0].category!r} observed once: no trajectory to replay; skipped"
             continue
         kt = np.array([o.t_annotation for o in obs]) + ann.time_offset_s - t_gps0

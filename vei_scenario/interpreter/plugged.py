@@ -138,12 +138,13 @@ def scenario_controller(name: str, props: dict[str, str], el, ctx) -> PluggedCon
     """A scenario ``Controller`` whose ``module`` property names the user's class (a relative file
     found from the scenario's directory)."""
     base = str(Path(str(ctx.path)).resolve().parent) if ctx.path else ""
-    spec = ControllerSpec("", props[MODULE_PROPERTY], base=base)
+    owner = _owner(el)  # (its messages name the entity, from loading the module on)
+    spec = ControllerSpec(owner, props[MODULE_PROPERTY], base=base)
     if spec.osmp:  # an OSI traffic participant moves its entity itself
         from vei_scenario.sut.participant import scenario_participant
 
-        return scenario_participant(name, props, ctx, spec, _owner(el))
-    return PluggedController(name, props, el, ctx, spec, _owner(el))
+        return scenario_participant(name, props, ctx, spec, owner)
+    return PluggedController(name, props, el, ctx, spec, owner)
 
 
 def _owner(el) -> str:

@@ -92,6 +92,8 @@ class LoopScene:
         if any(e.center_x != 0 for e in ents):
             raise NotALoop("box centres off the reference point")
         self.limits = ents[0].limits
+        #: the ego's Performance maxSpeed (a plugged controller's speed is held there)
+        self.max_speed = ents[0].max_speed
         ego_ctrls = [c for c in ents[0].controllers.values() if isinstance(c, CollisionAvoidanceController)]
         threat_ctrls = [
             c for c in ctx.entities[self.threat].controllers.values() if isinstance(c, SocialForceController)
@@ -188,6 +190,22 @@ class LoopScene:
         }
         self.model_varies = any(self.model_raw.values())
         self.cruise_raw = self._prop(self.ego, "cruiseSpeed")
+        #: the ego's controller properties as written (what a plugged controller is given, resolved per
+        #: variant), or None when the scenario gives the ego properties from elsewhere too
+        props = {
+            p.get("name"): (p, p.get("value"))
+            for obj in self.raw.iterfind("Entities/ScenarioObject")
+            if obj.get("name") == self.ego
+            for p in obj.iterfind("ObjectController/Controller/Properties/Property")
+        }
+        built = {k for c in ents[0].controllers.values() for k in c.props}
+        self.ego_props_raw = props if set(props) == built else None
+
+    def ego_properties(self, values: dict[str, str]) -> dict[str, str]:
+        """The ego's controller properties resolved in a variant's values (as ``vei run`` gives them to
+        a plugged controller)."""
+        scope = {**self.defaults, **values}
+        return {name: self._resolved(raw, scope) for name, raw in (self.ego_props_raw or {}).items()}
 
     def accepts(self, values: dict[str, str]) -> bool:
         """Whether this variant's values are all valid (others go through the interpreter, which

@@ -8,7 +8,8 @@ signal handler runs while C code holds the interpreter). The child is forked whe
 controller, builds the :class:`~vei_scenario.sut.fmu.FmuController` there, and answers one message per
 step over a socket pair; the parent waits for each answer at most ``--controller-timeout`` seconds. When
 the child dies (a signal, or an exit without an answer) or overruns, the parent kills and reaps it: no
-process is left behind, and a child whose parent dies reads end-of-file and exits.
+process is left behind, and a child whose parent dies is killed with it (a hung ``doStep`` reads no
+end-of-file).
 """
 
 from __future__ import annotations
@@ -19,6 +20,7 @@ import socket
 import struct
 from multiprocessing.connection import Connection
 
+from vei_scenario.child_process import die_with_parent
 from vei_scenario.sut.contract import ControllerFault, Observation
 from vei_scenario.sut.fmu import INPUTS, FmuController, FmuPorts, _unzipped
 
@@ -30,10 +32,12 @@ class IsolatedFmu:
         self.ports, self.label, self.timeout_s = ports, label, timeout_s
         _unzipped(ports.path)  # (extracted here: the parent owns the directory and removes it at exit)
         parent, child = socket.socketpair()
+        parent_pid = os.getpid()
         self.pid = os.fork()
         if self.pid == 0:  # the child: serve, and never return into the parent's code
             status = 0
             try:
+                die_with_parent(parent_pid)
                 parent.close()
                 _serve(Connection(child.detach()), ports, label, properties)
             except BaseException:  # noqa: BLE001 (the parent says what happened, from the missing answer)

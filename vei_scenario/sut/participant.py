@@ -6,9 +6,10 @@ moves itself, vei does not keep it on a path or lane).
 The ground truth follows vei's OSI traces (:mod:`vei_scenario.reports.osi_trace`): every entity is an
 object whose id is its index in the scenario's entity order; vehicles and pedestrians are moving
 objects (with their OSI type: an e-scooter is ``TYPE_STANDUP_SCOOTER``), misc objects stationary
-ones; poses are bounding-box centres in the OpenDRIVE frame, the host vehicle id is the controlled
-entity's. The OpenDRIVE road's lanes follow (:mod:`vei_scenario.reports.osi_lanes`: centre lines,
-types, neighbours; ids after the entities'). The update's ``base.position`` is the box centre too.
+ones unless they move (:func:`moving_misc`: then moving objects of ``TYPE_OTHER``); poses are
+bounding-box centres in the OpenDRIVE frame, the host vehicle id is the controlled entity's. The
+OpenDRIVE road's lanes follow (:mod:`vei_scenario.reports.osi_lanes`: centre lines, types,
+neighbours; ids after the entities'). The update's ``base.position`` is the box centre too.
 """
 
 from __future__ import annotations
@@ -49,6 +50,7 @@ class OsmpController:
         self._lane_bytes: bytes | None = None
         self._commanded: dict[str, object] = {}  # domain -> the storyboard action last told
         self._action_id = 0
+        self._moving_misc: set[str] = set()  # misc objects shown as moving objects (TYPE_OTHER)
         self.status = "osmp"
 
     def activated(self, e, ctx, domains: tuple[str, ...]) -> None:
@@ -92,7 +94,7 @@ class OsmpController:
             if o is None or o.deleted:
                 continue
             x, y, yaw, length, width = o.box()
-            if o.kind == "misc":
+            if o.kind == "misc" and n not in self._moving_misc:
                 obj = gt.stationary_object.add()
             else:
                 obj = gt.moving_object.add()
@@ -128,8 +130,9 @@ class OsmpController:
 
     def traffic_command(self, e, ctx) -> bytes:
         """The storyboard's actions for the entity that started since the last step, as OSI defines
-        them: a SpeedAction (absolute target speed, shape, duration) and a lane change (relative
-        target lane, shape, duration or distance)."""
+        them: a SpeedAction (absolute target speed, shape, duration), a lane change (relative
+        target lane, shape, duration or distance) and a FollowTrajectoryAction (its vertices as
+        trajectory points with their simulation times where it is timed, else as path points)."""
         from osi3 import osi_trafficcommand_pb2
 
         from vei_scenario.reports.osi_trace import interface_version
@@ -167,13 +170,48 @@ class OsmpController:
                     a.duration = lateral.value
                 elif lateral.dimension == "distance":
                     a.distance = lateral.value
+        follower = e.follower
+        if follower is not None and follower is not self._commanded.get("path"):
+            self._commanded["path"] = follower
+            self._follow(cmd.action.add(), follower, e)
         return cmd.SerializeToString()
+
+    def _follow(self, action, follower, e) -> None:
+        """A FollowTrajectoryAction as ``follow_trajectory_action`` (timed: each vertex a trajectory
+        point at the simulation time the timing plays it) or ``follow_path_action`` (untimed); each
+        point the pose of the entity's bounding-box centre there, as every pose of vei's OSI messages."""
+        from osi3 import osi_trafficcommand_pb2
+
+        poly = follower.polyline
+        if follower.plays_time:
+            a = action.follow_trajectory_action
+            points = a.trajectory_point
+        else:
+            a = action.follow_path_action
+            points = a.path_point
+        self._action_id += 1
+        a.action_header.action_id.value = self._action_id
+        modes = osi_trafficcommand_pb2.TrafficAction.FollowingMode
+        a.following_mode = modes.Value(
+            "FOLLOWING_MODE_FOLLOW" if follower.mode == "follow" else "FOLLOWING_MODE_POSITION"
+        )
+        a.constrain_orientation = True  # (vei heads the entity as the vertices do)
+        for k in range(len(poly.xs)):
+            h = poly.hs[k]
+            p = points.add()
+            if follower.plays_time:
+                _timestamp(p.timestamp, follower.sim_time_of(poly.ts[k]))
+            p.position.x = poly.xs[k] + math.cos(h) * e.center_x
+            p.position.y = poly.ys[k] + math.sin(h) * e.center_x
+            p.position.z = 0.5 * e.height
+            p.orientation.yaw = h
 
     # -- the step ------------------------------------------------------------------------------
     def move(self, e, ctx, dt: float) -> bool:
         if not self.ids:
             self.ids = {n: i for i, n in enumerate(ctx.entities)}
             self.names = {i: n for n, i in self.ids.items()}
+            self._moving_misc = moving_misc(ctx)
         impl = self.instance()
         view = self.sensor_view(e, ctx)
         command = self.traffic_command(e, ctx) if impl.ports.traffic_command is not None else None
@@ -196,6 +234,27 @@ class OsmpController:
         e.accel = b.acceleration.x * c + b.acceleration.y * s if b.HasField("acceleration") else (v - v0) / dt
         e.status = self.status
         return True
+
+
+def moving_misc(ctx) -> set[str]:
+    """The misc objects that move in this run, as the SensorView can tell at its first step: those
+    moving then (a speed, a trajectory) and those a storyboard action acts on. They are moving objects
+    of ``TYPE_OTHER`` (a road user OpenSCENARIO has no class for, replayed from a clip), as in vei's
+    OSI traces (which see the whole run); the others are stationary objects. Decided once, so an
+    object keeps its kind and id for the whole run."""
+    acted_on, seen, stack = set(), set(), list(ctx.elements.values())
+    while stack:  # (every storyboard element and its children; names may repeat, elements do not)
+        el = stack.pop()
+        if id(el) in seen:
+            continue
+        seen.add(id(el))
+        stack.extend(getattr(el, "children", ()))
+        acted_on.update(a.entity for a in getattr(el, "actions", ()) if getattr(a, "entity", None))
+    return {
+        n
+        for n, e in ctx.entities.items()
+        if e.kind == "misc" and (n in acted_on or e.speed != 0.0 or e.follower is not None)
+    }
 
 
 def scenario_participant(name: str, props: dict[str, str], ctx, spec: ControllerSpec, entity: str) -> OsmpController:

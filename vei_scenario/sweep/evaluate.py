@@ -88,11 +88,15 @@ _NATIVE: dict[tuple[str, float, str], object] = {}
 def _native_engine(scenario: str, dt: float, zone_ttc: str = "2d", controllers: tuple = ()):
     """The sweep kernel for a vei-compiled closed loop (cached per process), or None for other files and
     wherever a user's controller drives (it runs in the interpreter)."""
+    if controllers:
+        return None
+    return _loop_batch(scenario, dt, zone_ttc)
+
+
+def _loop_batch(scenario: str, dt: float, zone_ttc: str = "2d"):
     from vei_scenario.batch import NativeBatch
     from vei_scenario.loop import LoopScene, NotALoop
 
-    if controllers:
-        return None
     key = (scenario, dt, zone_ttc)
     if key not in _NATIVE:
         try:
@@ -102,15 +106,59 @@ def _native_engine(scenario: str, dt: float, zone_ttc: str = "2d", controllers: 
     return _NATIVE[key]
 
 
+_KERNEL_FMU: dict[tuple, object] = {}
+
+
+def _kernel_fmu(scenario: str, dt: float, zone_ttc: str, controllers: tuple):
+    """The sweep kernel with the plugged native FMU on the ego (:func:`vei_scenario.batch.fmu_ego.kernel_fmu`),
+    cached per process, or None (the variants then run in the interpreter)."""
+    if not controllers or not forked.available():
+        return None
+    key = (scenario, dt, zone_ttc, controllers)
+    if key not in _KERNEL_FMU:
+        from vei_scenario.batch.fmu_ego import kernel_fmu
+
+        _KERNEL_FMU[key] = kernel_fmu(_loop_batch(scenario, dt, zone_ttc), controllers)
+    return _KERNEL_FMU[key]
+
+
+def _evaluate_kernel_fmu(fmu, scenario, variants, dt, workers, progress, zone_ttc, controllers) -> list[dict]:
+    """The kernel with the FMU on the ego, in forked children (:mod:`vei_scenario.sweep.contained`: a
+    crash or a hang in the FMU fails its variant alone); values it cannot take through the interpreter."""
+    from vei_scenario.sweep.contained import run_contained
+
+    ok = [i for i, v in enumerate(variants) if fmu.scene.kernel_accepts(v)]
+    groups = fmu.scene.model_groups(ok, variants, len(variants) or 1)
+
+    def rows(indices: list[int], page) -> list[dict]:
+        return fmu.rows([variants[i] for i in indices], page)
+
+    def death_row(how: str, t: float, call: int, timed_out: bool) -> dict:
+        return {"status": "error", "error": fmu.death_line(how, t, call, timed_out), "metrics": {}}
+
+    got = run_contained(rows, groups, workers, death_row, fmu.call_bound_s, progress, WATCHDOG_S)
+    out = []
+    for i, v in enumerate(variants):
+        if i not in got:
+            got[i] = evaluate_variant(scenario, v, dt, zone_ttc, controllers)
+            if progress:
+                progress(1)
+        out.append(got[i])
+    return out
+
+
 def runs_in_kernel(scenario: str, dt: float, zone_ttc: str = "2d") -> bool:
     """Whether the sweep kernel runs ``scenario`` (a vei-compiled closed loop), the interpreter else."""
     return _native_engine(scenario, dt, zone_ttc) is not None
 
 
 def release_native(scenario: str, dt: float, zone_ttc: str = "2d") -> None:
-    """Forget the sweep kernel's scene of ``scenario``: a caller that runs many scenarios once each (a
-    benchmark over a library) frees each one's arrays (1.6 MB for a generated clip) when done with it."""
+    """Forget the sweep kernel's scene of ``scenario`` (and a native FMU's on it): a caller that runs
+    many scenarios once each (a benchmark over a library) frees each one's arrays (1.6 MB for a
+    generated clip) when done with it."""
     _NATIVE.pop((scenario, dt, zone_ttc), None)
+    for key in [k for k in _KERNEL_FMU if k[:3] == (scenario, dt, zone_ttc)]:
+        del _KERNEL_FMU[key]  # (it holds the scene too)
 
 
 def _chunk(
@@ -118,7 +166,10 @@ def _chunk(
 ) -> list[dict]:
     """Rows of a chunk: a vei-compiled loop's valid variants through the sweep kernel (rows identical
     to ``vei run``'s: tests/test_batch_native.py), everything else and invalid values through the
-    interpreter, variant by variant."""
+    interpreter, variant by variant; a native FMU on a loop's ego through the kernel in a forked child."""
+    fmu = _kernel_fmu(scenario, dt, zone_ttc, controllers)
+    if fmu is not None:
+        return _evaluate_kernel_fmu(fmu, scenario, chunk, dt, 1, None, zone_ttc, controllers)
     native = _native_engine(scenario, dt, zone_ttc, controllers)
     rows: list[dict | None] = [None] * len(chunk)
     if native is not None:
@@ -151,6 +202,9 @@ def evaluate_local(
     native = _native_engine(scenario, dt, zone_ttc, controllers)
     if native is not None:
         return _evaluate_native(native, scenario, variants, dt, workers, progress, zone_ttc)
+    fmu = _kernel_fmu(scenario, dt, zone_ttc, controllers)
+    if fmu is not None:
+        return _evaluate_kernel_fmu(fmu, scenario, variants, dt, workers, progress, zone_ttc, controllers)
     out: list[dict] = []
     if workers > 1 and len(variants) > 1:
         # The first variant here: it reads the scenario's files (the workers then inherit them read)

@@ -73,7 +73,9 @@ def check_playable(
     raise VeiInputError(None, "", f"{base} (the base scenario cannot be played: no variant was run)")
 
 
-def _satisfies(value: str, rule: str, bound: str) -> bool:
+def satisfies(value: str, rule: str, bound: str) -> bool:
+    """One ValueConstraint: numbers compare as numbers, other text only by equalTo / notEqualTo (a rule
+    the value's type cannot have is not the value's fault, so it holds)."""
     try:
         x, b = float(value), float(bound)
     except ValueError:
@@ -106,7 +108,8 @@ def declared_constraints(doc) -> dict[str, list[list[tuple[str, str]]]]:
     return out
 
 
-def _allowed(groups: list[list[tuple[str, str]]]) -> str:
+def describe_allowed(groups: list[list[tuple[str, str]]]) -> str:
+    """The ConstraintGroups in words, for a refusal: "one of a, b" or "rule v and rule w or ..."."""
     if all(len(g) == 1 and g[0][0] == "equalTo" for g in groups):
         return "one of " + ", ".join(g[0][1] for g in groups)
     return " or ".join(" and ".join(f"{rule} {value}" for rule, value in g) for g in groups)
@@ -134,9 +137,9 @@ def check_values(
     for name, values in distinct.items():
         groups = constraints.get(name)
         for value in values if groups else ():
-            if not any(all(_satisfies(value, rule, bound) for rule, bound in g) for g in groups):
+            if not any(all(satisfies(value, rule, bound) for rule, bound in g) for g in groups):
                 raise VeiInputError(
-                    scenario, where, f"{name}={value!r} is outside its declared values ({_allowed(groups)})"
+                    scenario, where, f"{name}={value!r} is outside its declared values ({describe_allowed(groups)})"
                 )
     probed = {
         n: vs for n, vs in distinct.items() if doc.parameter_types.get(n) == "string" and len(vs) <= MAX_PROBED_VALUES

@@ -1,7 +1,10 @@
 #!/usr/bin/env python
 """Build the OSMP test-partner FMUs deterministically.
 
-1. pythonfmu builds src/<Name>.py (+ src/osmp_common.py) into a temp dir.
+1. pythonfmu builds <src>/<Name>.py (+ the shared osmp_common.py) into a temp dir. The partners that
+   behave (StraightLine, SimpleAebOsmp, TrajectoryFollower) are vei's examples: their sources and the
+   shared base are in examples/osmp/src/ and they are built into examples/osmp/; the bad ones are
+   built here from src/.
 2. modelDescription.xml is post-processed:
    - guid := uuid5 over the FMU's name and all its other files; generationDateAndTime removed
    - <VendorAnnotations><Tool name="net.pmsf.osmp" ...><osmp:osmp version="1.5.0" osi-version="3.7.0"/></Tool></VendorAnnotations>
@@ -25,7 +28,9 @@ import xml.etree.ElementTree as ET
 from pythonfmu.builder import FmuBuilder
 
 HERE = Path(__file__).resolve().parent
+EXAMPLES = HERE.parents[2] / "examples" / "osmp"  # (the good partners: the guide's examples)
 SRC = HERE / "src"
+COMMON = EXAMPLES / "src" / "osmp_common.py"
 OSMP_VERSION = "1.5.0"
 OSI_VERSION = "3.7.0"
 NS = "http://xsd.pmsf.net/OSISensorModelPackaging"
@@ -35,12 +40,19 @@ TYPES = {"OSMPSensorViewIn": "SensorView", "OSMPTrafficCommandIn": "TrafficComma
 PARTNERS = {
     "StraightLine": {},
     "SimpleAebOsmp": {},
+    "TrajectoryFollower": {},
     "WrongMime": {"OSMPSensorViewIn": "SensorData"},   # the deliberate defect
     "ZeroSize": {},
     "WrongId": {},
     "NeverWrites": {},
 }
 FIXED_DATE = (1980, 1, 1, 0, 0, 0)
+GOOD = ("StraightLine", "SimpleAebOsmp", "TrajectoryFollower")
+
+
+def home(name):
+    """Where a partner's source is and its FMU goes."""
+    return (EXAMPLES / "src", EXAMPLES) if name in GOOD else (SRC, HERE)
 
 
 def top_annotation():
@@ -93,9 +105,10 @@ def patch_model_description(xml_bytes, name, overrides, guid):
 
 def build(name):
     overrides = PARTNERS[name]
+    src, dest = home(name)
     with tempfile.TemporaryDirectory() as td:
-        fmu = FmuBuilder.build_FMU(SRC / f"{name}.py", dest=Path(td) / f"{name}.fmu",
-                                   project_files=[SRC / "osmp_common.py"])
+        fmu = FmuBuilder.build_FMU(src / f"{name}.py", dest=Path(td) / f"{name}.fmu",
+                                   project_files=[COMMON])
         with zipfile.ZipFile(fmu) as z:
             files = {i.filename: z.read(i.filename) for i in z.infolist() if not i.is_dir()}
     h = hashlib.sha256(name.encode())
@@ -107,7 +120,7 @@ def build(name):
     guid = uuid.uuid5(uuid.NAMESPACE_URL, "osmp-partner:" + h.hexdigest())
     files["modelDescription.xml"] = patch_model_description(
         files["modelDescription.xml"], name, overrides, guid)
-    out = HERE / f"{name}.fmu"
+    out = dest / f"{name}.fmu"
     buf = io.BytesIO()
     with zipfile.ZipFile(buf, "w", zipfile.ZIP_DEFLATED) as z:
         for fn in sorted(files):

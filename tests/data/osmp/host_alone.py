@@ -40,6 +40,15 @@ from osi3.osi_trafficcommand_pb2 import TrafficCommand
 from osi3.osi_trafficupdate_pb2 import TrafficUpdate
 
 HERE = Path(__file__).resolve().parent
+EXAMPLES = HERE.parents[2] / "examples" / "osmp"  # (the good partners are vei's examples)
+
+
+def partner(fmu):
+    """The partner FMU of that name: beside this script, else among the examples."""
+    fmu = Path(fmu)
+    if fmu.is_absolute():
+        return fmu
+    return HERE / fmu if (HERE / fmu).is_file() else EXAMPLES / fmu
 OSMP_NS = "http://xsd.pmsf.net/OSISensorModelPackaging"
 OSI_MIME = "application/x-open-simulation-interface"
 ROLES = ("base.lo", "base.hi", "size")
@@ -275,7 +284,7 @@ class OsmpHost:
 def simulate(fmu, host, others, t_end, dt, params=None, traffic_command=None):
     """Run fmu as the host's traffic participant; others move at constant velocity.
     Returns [Sample] with the state at t=0, dt, ..., n*dt."""
-    h = OsmpHost(HERE / fmu if not Path(fmu).is_absolute() else fmu, params)
+    h = OsmpHost(partner(fmu), params)
     try:
         n = int(round(t_end / dt))
         out = [Sample(0.0, host.x, host.y, host.yaw, host.speed, gap_ahead(host, others[0]) if others else math.inf)]
@@ -361,7 +370,7 @@ def check_aeb_corridor_edge(v0=20.0, dt=0.02):
 
 def check_no_input_is_safe(fmu="StraightLine.fmu"):
     """OSMPSensorViewIn left at 0/0/0: the partner must not crash and publish nothing."""
-    h = OsmpHost(HERE / fmu)
+    h = OsmpHost(partner(fmu))
     try:
         h.fmu.doStep(currentCommunicationPoint=0.0, communicationStepSize=0.02)
         vals = h.fmu.getInteger([h.vr[f"OSMPTrafficUpdateOut.{r}"] for r in ROLES])

@@ -14,18 +14,18 @@ from fmpy.validation import validate_fmu
 import host_alone as ha
 
 HERE = Path(__file__).resolve().parent
-ALL = ["StraightLine", "SimpleAebOsmp", "WrongMime", "ZeroSize", "WrongId", "NeverWrites"]
+ALL = ["StraightLine", "SimpleAebOsmp", "TrajectoryFollower", "WrongMime", "ZeroSize", "WrongId", "NeverWrites"]
 NS = "http://xsd.pmsf.net/OSISensorModelPackaging"
 
 
 @pytest.mark.parametrize("name", ALL)
 def test_fmpy_validate(name):
-    assert validate_fmu(str(HERE / f"{name}.fmu")) == []
+    assert validate_fmu(str(ha.partner(f"{name}.fmu"))) == []
 
 
 @pytest.mark.parametrize("name", ALL)
 def test_annotation_text(name):
-    md = zipfile.ZipFile(HERE / f"{name}.fmu").read("modelDescription.xml").decode()
+    md = zipfile.ZipFile(ha.partner(f"{name}.fmu")).read("modelDescription.xml").decode()
     assert ('<VendorAnnotations>\n    <Tool name="net.pmsf.osmp" xmlns:osmp="%s">'
             '<osmp:osmp version="1.5.0" osi-version="3.7.0"/></Tool>' % NS) in md
     sv_type = "SensorData" if name == "WrongMime" else "SensorView"
@@ -39,14 +39,14 @@ def test_annotation_text(name):
 
 @pytest.mark.parametrize("name", ["StraightLine", "SimpleAebOsmp", "ZeroSize", "WrongId", "NeverWrites"])
 def test_good_annotations_accepted(name):
-    ann = ha.check_osmp(HERE / f"{name}.fmu", ha.read_model_description(str(HERE / f"{name}.fmu")))
+    ann = ha.check_osmp(ha.partner(f"{name}.fmu"), ha.read_model_description(str(ha.partner(f"{name}.fmu"))))
     assert ann["osmp"] == {"version": "1.5.0", "osi-version": "3.7.0"}
 
 
 def test_build_is_deterministic(tmp_path):
-    before = {n: hashlib.sha256((HERE / f"{n}.fmu").read_bytes()).hexdigest() for n in ALL}
+    before = {n: hashlib.sha256((ha.partner(f"{n}.fmu")).read_bytes()).hexdigest() for n in ALL}
     subprocess.run([sys.executable, str(HERE / "build.py")], check=True, capture_output=True)
-    after = {n: hashlib.sha256((HERE / f"{n}.fmu").read_bytes()).hexdigest() for n in ALL}
+    after = {n: hashlib.sha256((ha.partner(f"{n}.fmu")).read_bytes()).hexdigest() for n in ALL}
     assert before == after
 
 
@@ -117,7 +117,7 @@ def test_zero_size_buffer_would_decode_as_empty_update():
 
 def test_wrong_id_targets_the_other_object():
     host = ha.new_host()
-    h = ha.OsmpHost(HERE / "WrongId.fmu")
+    h = ha.OsmpHost(ha.partner("WrongId.fmu"))
     try:
         with pytest.raises(ha.OsmpError) as e:
             h.step(0.0, 0.02, host, [ha.place(host, 30, 8, id=7, speed=0.0)])
@@ -132,7 +132,7 @@ def test_wrong_id_targets_the_other_object():
 def test_output_buffer_lifetime():
     """Output of doStep k is still intact after doStep k+1 (host_alone checks it before k+2)."""
     host = ha.new_host()
-    h = ha.OsmpHost(HERE / "StraightLine.fmu")
+    h = ha.OsmpHost(ha.partner("StraightLine.fmu"))
     try:
         outs = []
         for k in range(6):

@@ -91,6 +91,25 @@ static double conflict(const VeiBatchScene *sc, double reach, const VeiTrigBox *
                                             sc->cap.horizon_s);
 }
 
+/* The ego moved by a driver's command as vei run's plugged controller moves it (interpreter.plugged):
+ * the vehicle model within the limits, the speed held at the Performance's maxSpeed, then along its path
+ * (held at the path's end). */
+static void driven(const VeiBatchScene *sc, VeiCursor *cur, double *fs, double a_cmd, double max_speed, double dt,
+                   double *x, double *y, double *yaw, double *speed, double *accel) {
+    VeiLongitudinal lon = {0.0, *speed, *accel};
+    vei_longitudinal_step(&lon, a_cmd, &sc->limits, dt);
+    double ds = lon.s, v = lon.v, a = lon.a;
+    if (v > max_speed) { /* reached within the step, held there */
+        v = max_speed;
+        a = (v - *speed) / dt;
+        ds = 0.5 * (*speed + v) * dt;
+    }
+    double along = *fs + ds, end = vei_polyline_length(&sc->ego_path);
+    *fs = along < end ? along : end;
+    *speed = v, *accel = a;
+    vei_polyline_at_s_seg(&sc->ego_path, *fs, cur, x, y, yaw);
+}
+
 /* ---- simulation -------------------------------------------------------------------------------- */
 /* With the planner on, the ego moves the same in every variant at one initial and cruise speed until
  * the planner first decides to brake: only that decision depends on the rider. The prefix of states
@@ -116,7 +135,8 @@ typedef struct {
  * brakes); aux (planner variants) receives the state before each decision of the steps it works out
  * itself. */
 static int simulate(const VeiBatchScene *sc, const VeiBatchVariant *v, double *tr[NTRAJ], double *tg[NTRIG],
-                    int ego_given, int threat_given, const EgoPrefix *pre, EgoSteps *aux, double reach) {
+                    int ego_given, int threat_given, const EgoPrefix *pre, EgoSteps *aux, double reach,
+                    const VeiEgoDriver *drv) {
     const double dt = sc->dt;
     double x[2] = {sc->ego_x0, sc->threat_x0}, y[2] = {sc->ego_y0, sc->threat_y0};
     double yaw[2] = {sc->ego_yaw0, sc->threat_yaw0}, speed[2] = {v->ego_speed0, v->threat_speed0};
@@ -183,7 +203,14 @@ static int simulate(const VeiBatchScene *sc, const VeiBatchVariant *v, double *t
             LOAD(ego_rows, k + 1, 0);
         } else {
             double v0 = speed[0], before = yaw[0];
-            if (v->cap_on) {
+            if (drv != NULL) { /* the driver's command (vei run's plugged controller): shown the step's start */
+                const double in[VEI_EGO_INPUTS] = {x[0], y[0], yaw[0], speed[0], accel[0], sc->ego_length,
+                                                   sc->ego_width, x[1], y[1], yaw[1], speed[1], accel[1],
+                                                   sc->threat_length, sc->threat_width, t};
+                double a_cmd;
+                if (drv->step(drv->self, in, t, dt, &a_cmd)) return -1;
+                driven(sc, &on_path, &fs[0], a_cmd, drv->max_speed, dt, &x[0], &y[0], &yaw[0], &speed[0], &accel[0]);
+            } else if (v->cap_on) {
                 VeiTrigBox ego = {x[0], y[0], yaw[0], sc->ego_length, sc->ego_width, c[0], s[0]};
                 VeiTrigBox threat = {x[1], y[1], yaw[1], sc->threat_length, sc->threat_width, c[1], s[1]};
                 double tvx = speed[1] * threat.c, tvy = speed[1] * threat.s;
@@ -574,11 +601,56 @@ int vei_batch_run(const VeiBatchScene *sc, const VeiBatchVariant *v, int n_varia
         if (vi->cap_on && !same_key(prefix.key, prefix_key)) /* another ego: start a new prefix */
             prefix.len = 0, memcpy(prefix.key, prefix_key, sizeof prefix.key);
         int first_brake = simulate(sc, vi, tr, tg, ego_given, threat_given, vi->cap_on ? &prefix : NULL,
-                                   vi->cap_on ? &own : NULL, reach);
+                                   vi->cap_on ? &own : NULL, reach, NULL);
         if (vi->cap_on) extend_prefix(&prefix, &own, tr, tg, first_brake);
         if (!vi->cap_on && !ego_given) keep(&ego, ego_key, tr, tg, 0, traj, n);
         if (rider_kept && !threat_given) keep(&rider, rider_key, tr, tg, 1, traj, n);
         score(sc, tr, tg, &w, out + (size_t)i * VEI_BATCH_OUTPUTS);
+    }
+    free(buf);
+    free(ibuf);
+    return 0;
+}
+
+int vei_batch_run_driven(const VeiBatchScene *sc, const VeiBatchVariant *v, int n_variants, double *out,
+                         double *traj, const VeiEgoDriver *drv) {
+    const int n = sc->n_steps + 1;
+    enum { PER = NTRAJ + NTRIG + 3, KEPT = NROWS };
+    double *buf = (double *)malloc(sizeof(double) * (size_t)n * (PER + KEPT));
+    int *ibuf = (int *)malloc(sizeof(int) * (size_t)n * 5);
+    if (buf == NULL || ibuf == NULL) {
+        free(buf), free(ibuf);
+        return -1;
+    }
+    double *rows = buf + (size_t)(NTRAJ + NTRIG) * n;
+    Scratch w = {rows, rows + n, rows + 2 * n, ibuf, ibuf + n, ibuf + 2 * n, ibuf + 3 * n, ibuf + 4 * n};
+    Kept rider = {0, {0}, {0}};
+    for (int q = 0; q < KEPT; q++) rider.row[q] = buf + (size_t)(PER + q) * n;
+    const double m = sc->cap.corridor_margin_m;
+    const double reach = vei_conflict_reach(sc->ego_length, sc->ego_width, m, sc->threat_length, sc->threat_width);
+    for (int i = 0; i < n_variants; i++) {
+        const VeiBatchVariant *vi = &v[i];
+        double *o = out + (size_t)i * VEI_BATCH_OUTPUTS;
+        double *tr[NTRAJ], *tg[NTRIG];
+        for (int q = 0; q < NTRAJ; q++) tr[q] = traj ? traj + ((size_t)i * NTRAJ + q) * n : buf + (size_t)q * n;
+        for (int q = 0; q < NTRIG; q++) tg[q] = buf + (size_t)(NTRAJ + q) * n;
+        /* a rider who does not react to the ego moves the same at one time shift and initial speed */
+        const int rider_kept = !vi->sfm_on || !vi->repulsive;
+        const double rider_key[3] = {vi->offset, (double)vi->sfm_on, vi->threat_speed0};
+        int threat_given = rider_kept && rider.valid && same_key(rider.key, rider_key);
+        if (rider_kept) use_kept(&rider, threat_given, tr, tg, 1, traj, n);
+        int failed = drv->begin(drv->self, i) != 0;
+        if (!failed) {
+            failed = simulate(sc, vi, tr, tg, 0, threat_given, NULL, NULL, reach, drv) < 0;
+            drv->end(drv->self, failed);
+        }
+        if (failed) { /* the driver says why; the rows it left half written are no one's */
+            for (int q = 0; q < VEI_BATCH_OUTPUTS; q++) o[q] = NAN;
+            if (rider_kept && !threat_given) rider.valid = 0;
+            continue;
+        }
+        if (rider_kept && !threat_given) keep(&rider, rider_key, tr, tg, 1, traj, n);
+        score(sc, tr, tg, &w, o);
     }
     free(buf);
     free(ibuf);

@@ -68,6 +68,27 @@ const char *vei_batch_outputs(void);
  * speed, accel, then the threat's. Returns 0, or -1 when out of memory. */
 int vei_batch_run(const VeiBatchScene *sc, const VeiBatchVariant *v, int n, double *out, double *traj);
 
+/* An external controller driving the ego in place of the planner (vei run's plugged controller): each
+ * step it is shown the states at the step's start, VEI_EGO_INPUTS doubles in the order of
+ * vei_scenario.sut.fmu.INPUTS (the ego's x, y, yaw, speed, accel, length, width, the threat's, then the
+ * time), and returns the acceleration command; the ego follows it through the vehicle model, held at
+ * max_speed, along its path. begin(variant) before a variant's first step and end(failed) after its
+ * last; begin or step return non-zero for a fault (the driver keeps why), which fails that variant alone. */
+enum { VEI_EGO_INPUTS = 15 };
+typedef struct {
+    void *self;
+    int (*begin)(void *self, int variant);
+    int (*step)(void *self, const double *in, double t, double dt, double *a_cmd);
+    void (*end)(void *self, int failed);
+    double max_speed;
+} VeiEgoDriver;
+
+/* vei_batch_run with the driver on the ego (the planner's switch is not read: the driver is in charge
+ * from the first step); a variant the driver fails has NaN outputs. The scene's behaviour must start at
+ * the first step. Returns 0, or -1 when out of memory. */
+int vei_batch_run_driven(const VeiBatchScene *sc, const VeiBatchVariant *v, int n, double *out, double *traj,
+                         const VeiEgoDriver *drv);
+
 /* The metrics of one recorded run (traj: 10 * (n_steps + 1), laid out as vei_batch_run's) into out
  * (VEI_BATCH_OUTPUTS): how vei run scores any scenario's ego and threat. Only the scene's time, gradient
  * and metric fields and the two boxes' sizes are read. Returns 0, or -1 when out of memory. */
