@@ -8,6 +8,7 @@ import json
 import subprocess
 import sys
 import xml.etree.ElementTree as ET
+from dataclasses import replace
 from pathlib import Path
 
 import pytest
@@ -109,6 +110,42 @@ def test_a_chosen_configuration_alone(bench, tmp_path):
         if r["status"] == "ok":
             assert list(r["configurations"]) == ["4"] and r["configurations"]["4"] == f["configurations"]["4"]
             assert r["fails"] == bool(f["configurations"]["4"]["collisions_ego_moving"])
+
+
+def test_scenarios_side_by_side_give_what_one_after_another_gives_and_keep_no_scene(bench, tmp_path):
+    from vei_scenario.sweep import evaluate
+
+    root, full = bench
+    opts = BenchOptions(half_width_s=0.4, step_s=0.05)
+    alone = run_bench(root / "library", tmp_path / "one", replace(opts, workers=1))
+    side = run_bench(root / "library", tmp_path / "two", replace(opts, workers=2))
+    assert alone["results"] == side["results"] == full["results"]
+    for name in ("bench.json", "report.html", "junit.xml"):
+        assert (tmp_path / "one" / name).read_bytes() == (tmp_path / "two" / name).read_bytes()
+    assert not [k for k in evaluate._NATIVE if str(root / "library") in k[0]]  # (each scene freed once run)
+
+
+def test_a_scenario_the_kernel_cannot_run_goes_to_the_interpreter_on_every_worker(bench, tmp_path, monkeypatch):
+    import threading
+
+    from vei_scenario.bench import run as bench_run
+    from vei_scenario.sweep import evaluate
+
+    root, full = bench
+    interpreted = full["results"][0]["scenario"]
+    seen: dict[str, tuple[bool, int | None]] = {}
+    real_entry, real_kernel = bench_run.bench_entry, evaluate.runs_in_kernel
+
+    def entry(library, e, opts, system):
+        seen[e["file"]] = (threading.current_thread() is threading.main_thread(), opts.workers)
+        return real_entry(library, e, opts, system)
+
+    monkeypatch.setattr(bench_run, "bench_entry", entry)
+    monkeypatch.setattr(evaluate, "runs_in_kernel", lambda x, dt: not x.endswith(interpreted) and real_kernel(x, dt))
+    doc = run_bench(root / "library", tmp_path, BenchOptions(half_width_s=0.4, step_s=0.05, workers=2))
+    assert doc["results"] == full["results"]
+    ok = [r["file"] for r in full["results"] if r["status"] == "ok"]
+    assert seen[ok[0]] == (True, 2) and all(seen[f] == (False, 1) for f in ok[1:])
 
 
 SUT = Path(__file__).parent / "data" / "sut"

@@ -147,6 +147,20 @@ def _evaluate_kernel_fmu(fmu, scenario, variants, dt, workers, progress, zone_tt
     return out
 
 
+def runs_in_kernel(scenario: str, dt: float, zone_ttc: str = "2d") -> bool:
+    """Whether the sweep kernel runs ``scenario`` (a vei-compiled closed loop), the interpreter else."""
+    return _native_engine(scenario, dt, zone_ttc) is not None
+
+
+def release_native(scenario: str, dt: float, zone_ttc: str = "2d") -> None:
+    """Forget the sweep kernel's scene of ``scenario`` (and a native FMU's on it): a caller that runs
+    many scenarios once each (a benchmark over a library) frees each one's arrays (1.6 MB for a
+    generated clip) when done with it."""
+    _NATIVE.pop((scenario, dt, zone_ttc), None)
+    for key in [k for k in _KERNEL_FMU if k[:3] == (scenario, dt, zone_ttc)]:
+        del _KERNEL_FMU[key]  # (it holds the scene too)
+
+
 def _chunk(
     scenario: str, chunk: list[dict[str, str]], dt: float, zone_ttc: str = "2d", controllers: tuple = ()
 ) -> list[dict]:
