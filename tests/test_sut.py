@@ -546,3 +546,46 @@ def test_a_lateral_offset_command_moves_a_lane_driving_ego_within_its_road(tmp_p
 def test_a_bad_lateral_command_is_the_controllers_fault(command, needle):
     with pytest.raises(ControllerFault, match=needle):
         command_from(command, "Ego=x.py:X", 1.0)
+
+
+def test_fmu_call_failures_name_the_status_in_the_fmus_own_version():
+    from vei_scenario.sut.fmu import _call_failure, status_name
+
+    class Failed(Exception):
+        def __init__(self, text, status):
+            super().__init__(text)
+            self.status = status
+
+    assert _call_failure(Failed("fmi2DoStep failed with status 3 (error).", 3)) == "fmi2DoStep returned fmi2Error"
+    assert _call_failure(Failed("fmi3DoStep failed with status 4 (fatal).", 4)) == "fmi3DoStep returned fmi3Fatal"
+    assert status_name("fmi2DoStep", 5) == "fmi2Pending" and status_name("fmi3DoStep", 5) == "status 5"
+
+
+@pytest.mark.parametrize(
+    "fmi3, kind, value, setter",
+    [
+        (False, "Real", "1.5", ("setReal", 1.5)),
+        (False, "Integer", "7", ("setInteger", 7)),
+        (False, "Enumeration", "2", ("setInteger", 2)),
+        (True, "Float64", "1.5", ("setFloat64", 1.5)),
+        (True, "Float32", "1.5", ("setFloat32", 1.5)),
+        (True, "Int64", "9007199254740993", ("setInt64", 9007199254740993)),
+        (True, "UInt8", "200", ("setUInt8", 200)),
+        (True, "Enumeration", "3", ("setInt64", 3)),
+        (True, "Boolean", "true", ("setBoolean", True)),
+    ],
+)
+def test_fmu_parameters_are_set_with_the_setter_of_their_type(fmi3, kind, value, setter):
+    """Each declared type through its own setter (an FMI 3.0 Int64 through setInt32 would be cut)."""
+    from vei_scenario.sut.fmu import FmuController, _typed
+
+    calls = []
+
+    class Recorder:
+        def __getattr__(self, name):
+            return lambda vrs, values: calls.append((name, values[0]))
+
+    ctrl = FmuController.__new__(FmuController)
+    ctrl.fmu, ctrl.ports = Recorder(), type("P", (), {"fmi3": fmi3})()
+    ctrl._set(kind, 1, _typed(kind, value, "p", "Ego=x.fmu"))
+    assert calls == [setter]
