@@ -31,7 +31,7 @@ from vei_scenario.batch.native import NativeBatch
 from vei_scenario.core import fmu_ego
 from vei_scenario.loop import LoopScene
 from vei_scenario.sut.contract import MAX_COMMAND_MPS2, ControllerFault
-from vei_scenario.sut.fmu import INPUTS, FmuPorts, _typed, _unzipped, status_name
+from vei_scenario.sut.fmu import INPUTS, FmuPorts, _typed, _unzipped, fmu_properties, status_name
 
 #: The longest one call into the FMU may take in a sweep without ``--controller-timeout`` (s): a hang then
 #: fails its variant instead of holding up the sweep (no step of a driving function takes a minute).
@@ -100,7 +100,7 @@ class KernelFmu:
     def properties(self, values: dict[str, str]) -> dict[str, str]:
         """The properties the FMU is given in a variant: the ego's controller properties resolved, the
         ``--controller-param`` ones over them."""
-        return {**self.scene.ego_properties(values), **self.given}
+        return fmu_properties({**self.scene.ego_properties(values), **self.given})
 
     def parameters(self, variants: list[dict[str, str]]) -> tuple[list, np.ndarray, list[str | None]]:
         """(value references and kinds of the parameters set, values (V, P), per variant the fault line

@@ -6,7 +6,8 @@ Ports are matched by name. Inputs vei sets each step, from the observation at th
 threat_speed``, plus accelerations, box sizes and the time); positions are box centres in the
 OpenDRIVE frame, headings in rad. Output ``a_cmd`` (m/s²): read after ``doStep(t, dt)``, it drives the
 step from t to t + dt. Without a threat its inputs keep their start values. Parameters are set only
-where the FMU declares them: the scenario's controller properties silently where a name matches,
+where the FMU declares them: the scenario's controller properties silently where a name matches (the
+planner's ``cruiseSpeed`` also as vei_cap's ``cruise_speed_mps``: :data:`PROPERTY_ALIASES`),
 ``--controller-param`` names that the FMU does not declare are refused. An input vei does not provide,
 or no ``a_cmd`` output, is refused before anything runs; a ``doStep`` that does not return fmi2OK
 (warning aside) fails the run with one line.
@@ -112,6 +113,21 @@ def check_parameters(ports: FmuPorts, given: dict[str, str], label: str) -> None
         _typed(ports.parameters[name][1], value, name, label)
 
 
+#: FMU parameter name -> the scenario property that gives it where the FMU is not given it by its own
+#: name: vei-compiled scenarios name the planner's cruise speed ``cruiseSpeed`` (esmini's controllers'
+#: style), vei_cap.fmu ``cruise_speed_mps`` (its other parameters are named alike in both).
+PROPERTY_ALIASES = {"cruise_speed_mps": "cruiseSpeed"}
+
+
+def fmu_properties(properties: dict[str, str]) -> dict[str, str]:
+    """``properties`` with the aliased parameters (:data:`PROPERTY_ALIASES`) added where missing."""
+    out = dict(properties)
+    for parameter, prop in PROPERTY_ALIASES.items():
+        if parameter not in out and prop in out:
+            out[parameter] = out[prop]
+    return out
+
+
 #: Parameter types set as numbers: FMI 2.0's and FMI 3.0's.
 FLOAT_KINDS = ("Real", "Float64", "Float32")
 INT_KINDS = ("Integer", "Enumeration") + tuple(f"{u}Int{n}" for u in ("", "U") for n in (8, 16, 32, 64))
@@ -180,7 +196,7 @@ class FmuController:
                 self.fmu.instantiate()
                 self.fmu.setupExperiment(startTime=0.0)
                 self.fmu.enterInitializationMode()
-            for name, value in properties.items():  # only what it declares
+            for name, value in fmu_properties(properties).items():  # only what it declares
                 if name in ports.parameters:
                     vr, kind = ports.parameters[name]
                     self._set(kind, vr, _typed(kind, value, name, label))
