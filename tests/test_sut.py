@@ -634,3 +634,18 @@ def test_a_search_goes_on_past_the_systems_faults_and_counts_them(scenario, tmp_
     doc = json.loads((tmp_path / "rk" / "risk.json").read_text())
     assert code == 1 and "runs failed in the system under test" in err and err.count("\n") == 1, err
     assert any(s.get("failed_runs") for s in doc["searches"])
+
+
+@pytest.mark.parametrize(
+    "value", [np.float32(-1.5), np.float64(-1.5), np.int64(-2), np.array(-1.5), {"accel_mps2": np.float32(-1.5)}]
+)
+def test_numpy_numbers_are_commands(value):
+    """An AEB computed with NumPy returns NumPy scalars or 0-d arrays: numbers, as the contract says."""
+    cmd = command_from(value, "Ego=x.py:X", 1.0)
+    assert isinstance(cmd.accel_mps2, float) and cmd.accel_mps2 in (-1.5, -2.0)
+
+
+@pytest.mark.parametrize("value", [np.bool_(True), np.array([1.0]), np.array("1")])
+def test_numpy_values_that_are_no_number_are_refused(value):
+    with pytest.raises(ControllerFault, match="not an acceleration"):
+        command_from(value, "Ego=x.py:X", 1.0)
