@@ -95,6 +95,24 @@ def test_vei_planner_as_a_kernel_fmu_reproduces_the_built_in_sweep(scenario, cap
     assert (tmp_path / "built_in" / "catalog.csv").read_bytes() == (tmp_path / "fmu" / "catalog.csv").read_bytes()
 
 
+def test_vei_cap_fmu_takes_the_scenarios_cruise_speed_per_variant(scenario, cap_fmu, tmp_path, capsys):
+    """Without --controller-param, vei_cap.fmu's cruise_speed_mps is the scenario's cruiseSpeed property
+    ($EgoCruiseSpeed, varied here): in the kernel and in vei run, as the built-in planner cruises."""
+    vary = ["--vary", "TimeShift=0,2.197", "--vary", "EgoCruiseSpeed=4,7.5", "--vary", "CapEnabled=true"]
+    code, _, _ = _vei(capsys, "sweep", scenario, *vary, "--quiet", "-o", tmp_path / "built_in")
+    assert code == 0
+    code, _, _ = _vei(capsys, "sweep", scenario, *vary, "--quiet", "--controller", f"Ego={cap_fmu}", "-o",
+                      tmp_path / "fmu")  # fmt: skip
+    assert code == 0
+    assert (tmp_path / "built_in" / "catalog.csv").read_bytes() == (tmp_path / "fmu" / "catalog.csv").read_bytes()
+    from vei_scenario.interpreter import run_scenario
+
+    (plugged,) = parse_controller_options([f"Ego={cap_fmu}"])
+    params = {"TimeShift": "2.197", "EgoCruiseSpeed": "7.5", "CapEnabled": "true"}
+    ego = run_scenario(scenario, params, controllers=(plugged,)).traces["Ego"]
+    assert ego.speed[300] == pytest.approx(7.5, abs=0.05)  # (cruising at the scenario's speed, not 5 m/s)
+
+
 @pytest.fixture(scope="module")
 def cap_fmu3(tmp_path_factory) -> Path:
     from vei_scenario.fmu import build_fmus

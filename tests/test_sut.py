@@ -253,6 +253,9 @@ def test_a_hanging_controller_fails_its_run_within_the_limit_and_a_sweep_goes_on
                           "--controller", hangs, "--controller-timeout", "0.3", "-o", tmp_path)  # fmt: skip
     assert code == 1 and "4 failed" in out and "vei: 4 of 4 variants failed" in err
     assert time.perf_counter() - started < 20
+    deadline = time.monotonic() + 5  # (a worker the pool has told to exit may take a moment to go)
+    while set(_children()) - before and time.monotonic() < deadline:
+        time.sleep(0.05)
     assert set(_children()) - before == set()  # no worker left behind
 
 
@@ -546,3 +549,103 @@ def test_a_lateral_offset_command_moves_a_lane_driving_ego_within_its_road(tmp_p
 def test_a_bad_lateral_command_is_the_controllers_fault(command, needle):
     with pytest.raises(ControllerFault, match=needle):
         command_from(command, "Ego=x.py:X", 1.0)
+
+
+def test_fmu_call_failures_name_the_status_in_the_fmus_own_version():
+    from vei_scenario.sut.fmu import _call_failure, status_name
+
+    class Failed(Exception):
+        def __init__(self, text, status):
+            super().__init__(text)
+            self.status = status
+
+    assert _call_failure(Failed("fmi2DoStep failed with status 3 (error).", 3)) == "fmi2DoStep returned fmi2Error"
+    assert _call_failure(Failed("fmi3DoStep failed with status 4 (fatal).", 4)) == "fmi3DoStep returned fmi3Fatal"
+    assert status_name("fmi2DoStep", 5) == "fmi2Pending" and status_name("fmi3DoStep", 5) == "status 5"
+
+
+@pytest.mark.parametrize(
+    "fmi3, kind, value, setter",
+    [
+        (False, "Real", "1.5", ("setReal", 1.5)),
+        (False, "Integer", "7", ("setInteger", 7)),
+        (False, "Enumeration", "2", ("setInteger", 2)),
+        (True, "Float64", "1.5", ("setFloat64", 1.5)),
+        (True, "Float32", "1.5", ("setFloat32", 1.5)),
+        (True, "Int64", "9007199254740993", ("setInt64", 9007199254740993)),
+        (True, "UInt8", "200", ("setUInt8", 200)),
+        (True, "Enumeration", "3", ("setInt64", 3)),
+        (True, "Boolean", "true", ("setBoolean", True)),
+    ],
+)
+def test_fmu_parameters_are_set_with_the_setter_of_their_type(fmi3, kind, value, setter):
+    """Each declared type through its own setter (an FMI 3.0 Int64 through setInt32 would be cut)."""
+    from vei_scenario.sut.fmu import FmuController, _typed
+
+    calls = []
+
+    class Recorder:
+        def __getattr__(self, name):
+            return lambda vrs, values: calls.append((name, values[0]))
+
+    ctrl = FmuController.__new__(FmuController)
+    ctrl.fmu, ctrl.ports = Recorder(), type("P", (), {"fmi3": fmi3})()
+    ctrl._set(kind, 1, _typed(kind, value, "p", "Ego=x.fmu"))
+    assert calls == [setter]
+
+
+CRASHY = '''
+class Crashy:
+    """Brakes when the threat is within 12 m; raises when it is within 6 m (a bug of its own)."""
+
+    def __init__(self, **_):
+        pass
+
+    def step(self, obs):
+        if obs.threat is None:
+            return 0.0
+        d = ((obs.threat.x_m - obs.ego.x_m) ** 2 + (obs.threat.y_m - obs.ego.y_m) ** 2) ** 0.5
+        if d < 6.0:
+            raise ZeroDivisionError("division by zero")
+        return -6.0 if d < 12.0 else 0.0
+'''
+
+
+def test_a_search_goes_on_past_the_systems_faults_and_counts_them(scenario, tmp_path, capsys):
+    """falsify and risk: a run the system under test fails is a failure of the system (the worst), the
+    search goes on, the outputs list the failed runs and the command exits 1 with the count."""
+    (tmp_path / "crashy.py").write_text(CRASHY)
+    plug = ["--controller", f"Ego={tmp_path / 'crashy.py'}:Crashy"]
+    code = main(["falsify", str(scenario), "--bounds", "TimeShift=0:4", "--values", "RiderType=aggressive",
+                 "--tol", "0.05", *plug, "-o", str(tmp_path / "fz")])  # fmt: skip
+    out, err = capsys.readouterr()
+    doc = json.loads((tmp_path / "fz" / "falsify.json").read_text())
+    failed = doc["failed_runs"]
+    assert code == 1 and 0 < len(failed) < doc["runs"], (code, err)
+    assert err.count("\n") == 1 and f"{len(failed)} of {doc['runs']} runs failed in the system under test" in err
+    assert all("step raised ZeroDivisionError: division by zero" in f["error"] for f in failed)
+    assert "worst robustness the system under test failed" in out and doc["regions"]
+    failing = {float(f["values"]["TimeShift"]) for f in failed}
+    assert all(any(lo <= t <= hi for lo, hi in (g["edges"] for g in doc["regions"])) for t in failing)
+    assert doc["regions"][0]["worst"]["robustness"] == -1e9
+    code = main(["risk", str(scenario), "--window", "0:4", "--coarse", "0.2", "--tol", "0.05", *plug,
+                 "-o", str(tmp_path / "rk")])  # fmt: skip
+    _, err = capsys.readouterr()
+    doc = json.loads((tmp_path / "rk" / "risk.json").read_text())
+    assert code == 1 and "runs failed in the system under test" in err and err.count("\n") == 1, err
+    assert any(s.get("failed_runs") for s in doc["searches"])
+
+
+@pytest.mark.parametrize(
+    "value", [np.float32(-1.5), np.float64(-1.5), np.int64(-2), np.array(-1.5), {"accel_mps2": np.float32(-1.5)}]
+)
+def test_numpy_numbers_are_commands(value):
+    """An AEB computed with NumPy returns NumPy scalars or 0-d arrays: numbers, as the contract says."""
+    cmd = command_from(value, "Ego=x.py:X", 1.0)
+    assert isinstance(cmd.accel_mps2, float) and cmd.accel_mps2 in (-1.5, -2.0)
+
+
+@pytest.mark.parametrize("value", [np.bool_(True), np.array([1.0]), np.array("1")])
+def test_numpy_values_that_are_no_number_are_refused(value):
+    with pytest.raises(ControllerFault, match="not an acceleration"):
+        command_from(value, "Ego=x.py:X", 1.0)

@@ -499,11 +499,18 @@ def _cmd_risk(args: argparse.Namespace) -> int:
             print(f"  note: {note}: widen --window")
     if args.output:
         print(f"wrote {args.output}/risk.json and the critical scenarios")
+    failed = [(r, f) for r in results for f in r.failed]
+    if failed:
+        r, (shift, error) = failed[0]
+        runs = sum(r.evaluations for r in results)
+        print(f"vei: {len(failed)} of {runs} runs failed in the system under test (the first, TimeShift "
+              f"{shift:g}: {error})", file=sys.stderr)  # fmt: skip
+        return 1
     return 0
 
 
 def _cmd_falsify(args: argparse.Namespace) -> int:
-    from vei_scenario.falsify import bounds_from_distribution, falsify, parse_bounds
+    from vei_scenario.falsify import SYSTEM_FAULT, bounds_from_distribution, falsify, parse_bounds
     from vei_scenario.runner import parse_param_overrides
 
     axes = bounds_from_distribution(args.dist) if args.dist else []
@@ -517,12 +524,19 @@ def _cmd_falsify(args: argparse.Namespace) -> int:
     print(f"{len(result.regions)} failure region(s) of {args.target} found in {result.runs} runs")
     for r in result.regions:
         fixed = ", ".join(f"{k}={v}" for k, v in r.discrete.items())
+        worst = "the system under test failed" if r.worst_robustness <= SYSTEM_FAULT else f"{r.worst_robustness:.3f}"
         print(f"region {r.number}{' (' + fixed + ')' if fixed else ''}: {r.primary} {r.low:+.4f}..{r.high:+.4f} "
-              f"over {len(r.windows)} slice(s); worst robustness {r.worst_robustness:.3f}")  # fmt: skip
+              f"over {len(r.windows)} slice(s); worst robustness {worst}")  # fmt: skip
         print(f"  reproduce: {r.reproduce(args.scenario)}")
     if args.output:
         regions = f" and each region's worst scenario under {args.output}/regions/" if result.regions else ""
         print(f"wrote {args.output}/falsify.json{regions}")
+    if result.failed_runs:
+        values, error = result.failed_runs[0]
+        shown = ", ".join(f"{k}={v}" for k, v in values.items())
+        print(f"vei: {len(result.failed_runs)} of {result.runs} runs failed in the system under test, counted as "
+              f"failures (the first, {shown}: {error})", file=sys.stderr)  # fmt: skip
+        return 1
     return 0
 
 

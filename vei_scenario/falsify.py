@@ -115,6 +115,13 @@ class FalsifyResult:
     axes: list[Axis]
     written: list[Path] = field(default_factory=list)
     system_under_test: list[dict] = field(default_factory=list)
+    #: runs the system under test failed (raised, crashed, hung, returned no command): (values, error)
+    failed_runs: list[tuple[dict[str, str], str]] = field(default_factory=list)
+
+
+#: The robustness of a run the system under test failed: the worst failure there is (finite, so the
+#: search's interval bounds stay numbers).
+SYSTEM_FAULT = -1e9
 
 
 #: The target that counts every contact, the ego standing or not (``collision`` counts the ego moving).
@@ -173,6 +180,7 @@ class _Runner:
         self.controllers = controllers
         self.runs = 0
         self.cache: dict[tuple, float] = {}
+        self.failed: list[tuple[dict[str, str], str]] = []
 
     def __call__(self, variants: list[dict[str, str]]) -> list[float]:
         from vei_scenario.sweep.evaluate import evaluate_local
@@ -186,9 +194,14 @@ class _Runner:
             )  # fmt: skip
             self.runs += len(rows)
             for (k, v), r in zip(todo, rows):
-                if r["status"] != "ok":
-                    raise VeiInputError(self.scenario, "variant", f"{v} failed: {r['error']}")
-                self.cache[k] = robustness(r["metrics"], self.target)
+                if r["status"] == "ok":
+                    self.cache[k] = robustness(r["metrics"], self.target)
+                elif self.controllers and str(r["error"]).startswith("controller "):  # (the system's own fault)
+                    self.failed.append((v, str(r["error"])))
+                    self.cache[k] = SYSTEM_FAULT
+                else:
+                    shown = ", ".join(f"{n}={x}" for n, x in v.items())
+                    raise VeiInputError(self.scenario, "variant", f"{shown} failed: {r['error']}")
         return [self.cache[k] for k in keys]
 
 
@@ -349,7 +362,8 @@ def falsify(
         r.dt, r.options = dt, reproduce_options(sut)
         _refine_edges(run, r, primary, others, spacing, tol)
         _worst(run, r, primary)
-    result = FalsifyResult(str(scenario), target, regions, run.runs, axes, system_under_test=sut)
+    result = FalsifyResult(str(scenario), target, regions, run.runs, axes)
+    result.system_under_test, result.failed_runs = sut, run.failed
     if out_dir is not None:
         result.written = _write(result, scenario, Path(out_dir), fixed)
     return result
@@ -556,6 +570,8 @@ def _write(result: FalsifyResult, scenario: Path, out: Path, fixed: dict[str, st
     }
     if result.system_under_test:
         doc["system_under_test"] = result.system_under_test
+    if result.failed_runs:
+        doc["failed_runs"] = [{"values": v, "error": e} for v, e in result.failed_runs]
     for r in result.regions:
         rel = f"regions/region_{r.number:02d}_worst.xosc"
         files.add(out / rel, variant_xosc(scenario, r.worst, out / "regions"))

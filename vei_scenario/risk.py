@@ -33,6 +33,9 @@ class RiskSearch:
     intervals: list[tuple[float, float]]  # TimeShift intervals where the target holds
     open_edges: list[str] = field(default_factory=list)  # edges that touch the search window
     evaluations: int = 0
+    #: TimeShifts where the system under test failed (raised, crashed, hung), with the error: in a
+    #: collision search they count as the target holding, in a near-miss band as not
+    failed: list[tuple[float, str]] = field(default_factory=list)
 
 
 def _holds(metrics: dict, target: str, band: tuple[float, float]) -> bool:
@@ -58,14 +61,18 @@ def search_combination(
     controllers: tuple = (),
 ) -> RiskSearch:
     cache: dict[float, bool] = {}
+    failed: list[tuple[float, str]] = []
 
     def values(shift: float) -> dict[str, str]:
         return {**base, "TimeShift": repr(round(shift, 9))}
 
     def check(outcome: dict, shift: float) -> bool:
-        if outcome["status"] != "ok":
-            raise VeiInputError(scenario, "TimeShift", f"variant at TimeShift {shift:g} failed: {outcome['error']}")
-        return _holds(outcome["metrics"], target, band)
+        if outcome["status"] == "ok":
+            return _holds(outcome["metrics"], target, band)
+        if controllers and str(outcome["error"]).startswith("controller "):  # (the system's own fault)
+            failed.append((shift, str(outcome["error"])))
+            return target in ("collision", "collision_any")
+        raise VeiInputError(scenario, "TimeShift", f"variant at TimeShift {shift:g} failed: {outcome['error']}")
 
     lo, hi = window
     n = int((hi - lo) / coarse + 1e-9) + 1
@@ -105,7 +112,7 @@ def search_combination(
     if start is not None:
         intervals.append((start, grid[-1]))
         open_edges.append(f"target holds at the window's upper end {grid[-1]:g}")
-    return RiskSearch(base, intervals, open_edges, len(cache))
+    return RiskSearch(base, intervals, open_edges, len(cache), sorted(failed))
 
 
 def find_risk(
@@ -182,6 +189,8 @@ def find_risk(
                 "open_edges": r.open_edges,
                 "evaluations": r.evaluations,
             }
+            if r.failed:
+                entry["failed_runs"] = [{"time_shift_s": t, "error": e} for t, e in r.failed]
             for j, (a, b) in enumerate(r.intervals):
                 files_rel = {}
                 for label, shift in (("start", a), ("mid", 0.5 * (a + b)), ("end", b)):

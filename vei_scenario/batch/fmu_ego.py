@@ -31,7 +31,7 @@ from vei_scenario.batch.native import NativeBatch
 from vei_scenario.core import fmu_ego
 from vei_scenario.loop import LoopScene
 from vei_scenario.sut.contract import MAX_COMMAND_MPS2, ControllerFault
-from vei_scenario.sut.fmu import _STATUS, INPUTS, FmuPorts, _typed, _unzipped
+from vei_scenario.sut.fmu import INPUTS, FmuPorts, _typed, _unzipped, fmu_properties, status_name
 
 #: The longest one call into the FMU may take in a sweep without ``--controller-timeout`` (s): a hang then
 #: fails its variant instead of holding up the sweep (no step of a driving function takes a minute).
@@ -71,7 +71,7 @@ def not_for_kernel(ports: FmuPorts) -> str | None:
     if 'canBeInstantiatedOnlyOncePerProcess="true"' in md:
         return "instantiable only once per process"
     kinds = {kind for _, kind in ports.parameters.values()}
-    if kinds - set(_KINDS) - {"String"}:
+    if kinds - set(_KINDS) - {"String"} or (ports.fmi3 and "Enumeration" in kinds):  # (FMI 3.0's is an Int64)
         return "parameters of a type the kernel does not set"
     return None
 
@@ -100,7 +100,7 @@ class KernelFmu:
     def properties(self, values: dict[str, str]) -> dict[str, str]:
         """The properties the FMU is given in a variant: the ego's controller properties resolved, the
         ``--controller-param`` ones over them."""
-        return {**self.scene.ego_properties(values), **self.given}
+        return fmu_properties({**self.scene.ego_properties(values), **self.given})
 
     def parameters(self, variants: list[dict[str, str]]) -> tuple[list, np.ndarray, list[str | None]]:
         """(value references and kinds of the parameters set, values (V, P), per variant the fault line
@@ -143,7 +143,7 @@ class KernelFmu:
         if kind == fmu_ego.NULL:
             reason = f"instantiating {self.name} failed: {name} returned NULL"
         elif kind == fmu_ego.STATUS:
-            said = f"{name} returned {_STATUS.get(int(value), f'status {int(value)}')}"
+            said = f"{name} returned {status_name(name, int(value))}"
             reason = f"instantiating {self.name} failed: {said}" if at is None else f"the FMU's doStep failed: {said}"
         elif kind == fmu_ego.NONFINITE:
             reason = f"step returned a non-finite command ({float(value)})"

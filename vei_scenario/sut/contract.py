@@ -13,7 +13,10 @@ entity's Performance (maxAcceleration, maxDeceleration, maxSpeed) and its jerk l
 from __future__ import annotations
 
 import math
+import numbers
 from dataclasses import dataclass
+
+import numpy
 
 from vei_scenario.errors import VeiError
 
@@ -98,7 +101,7 @@ def command_from(value: object, label: str, t_s: float, default_state: str = "su
     state, lateral = default_state, None
     if isinstance(value, bool) or value is None:
         raise ControllerFault(label, f"step returned {value!r}, not an acceleration in m/s² (a number)", t_s)
-    if isinstance(value, (int, float)):
+    if _is_number(value):
         accel = value
     else:
         if isinstance(value, dict):
@@ -118,7 +121,7 @@ def command_from(value: object, label: str, t_s: float, default_state: str = "su
             )
         if given is not None:
             state = _state_text(given)
-        if isinstance(accel, bool) or not isinstance(accel, (int, float)):
+        if not _is_number(accel):
             raise ControllerFault(label, f"accel_mps2 is {type(accel).__name__} {accel!r}, not a number", t_s)
     accel = float(accel)
     if not math.isfinite(accel):
@@ -132,8 +135,18 @@ def command_from(value: object, label: str, t_s: float, default_state: str = "su
     return Command(accel, state, lateral)
 
 
+def _is_number(value: object) -> bool:
+    """A real number: Python's, NumPy's scalars of any width (float32, int64 ...) and 0-d arrays; not a
+    bool (True is no acceleration)."""
+    if isinstance(value, (bool, numpy.bool_)):
+        return False
+    if isinstance(value, numbers.Real):
+        return True
+    return isinstance(value, numpy.ndarray) and value.shape == () and value.dtype.kind in "iuf"
+
+
 def _lateral(value: object, label: str, t_s: float) -> float:
-    if isinstance(value, bool) or not isinstance(value, (int, float)):
+    if not _is_number(value):
         raise ControllerFault(label, f"lateral_offset_m is {type(value).__name__} {value!r}, not a number", t_s)
     if not math.isfinite(value) or abs(value) > MAX_LATERAL_OFFSET_M:
         raise ControllerFault(

@@ -6,7 +6,8 @@ Ports are matched by name. Inputs vei sets each step, from the observation at th
 threat_speed``, plus accelerations, box sizes and the time); positions are box centres in the
 OpenDRIVE frame, headings in rad. Output ``a_cmd`` (m/s²): read after ``doStep(t, dt)``, it drives the
 step from t to t + dt. Without a threat its inputs keep their start values. Parameters are set only
-where the FMU declares them: the scenario's controller properties silently where a name matches,
+where the FMU declares them: the scenario's controller properties silently where a name matches (the
+planner's ``cruiseSpeed`` also as vei_cap's ``cruise_speed_mps``: :data:`PROPERTY_ALIASES`),
 ``--controller-param`` names that the FMU does not declare are refused. An input vei does not provide,
 or no ``a_cmd`` output, is refused before anything runs; a ``doStep`` that does not return fmi2OK
 (warning aside) fails the run with one line.
@@ -43,7 +44,15 @@ INPUTS = {
     "time": ("", "t_s"),
 }
 OUTPUT = "a_cmd"
-_STATUS = {1: "fmi2Warning", 2: "fmi2Discard", 3: "fmi2Error", 4: "fmi2Fatal", 5: "fmi2Pending"}
+_STATUS = {1: "Warning", 2: "Discard", 3: "Error", 4: "Fatal", 5: "Pending"}  # (FMI 3.0 has no Pending)
+
+
+def status_name(call: str, status: int) -> str:
+    """``fmi2Error`` / ``fmi3Error`` ...: a status named in the version of the ``call`` that returned it."""
+    prefix = call[:4] if call[:4] in ("fmi2", "fmi3") else "fmi2"
+    if status not in _STATUS or (prefix == "fmi3" and status == 5):
+        return f"status {status}"
+    return prefix + _STATUS[status]
 
 
 @dataclass(frozen=True)
@@ -104,14 +113,34 @@ def check_parameters(ports: FmuPorts, given: dict[str, str], label: str) -> None
         _typed(ports.parameters[name][1], value, name, label)
 
 
+#: FMU parameter name -> the scenario property that gives it where the FMU is not given it by its own
+#: name: vei-compiled scenarios name the planner's cruise speed ``cruiseSpeed`` (esmini's controllers'
+#: style), vei_cap.fmu ``cruise_speed_mps`` (its other parameters are named alike in both).
+PROPERTY_ALIASES = {"cruise_speed_mps": "cruiseSpeed"}
+
+
+def fmu_properties(properties: dict[str, str]) -> dict[str, str]:
+    """``properties`` with the aliased parameters (:data:`PROPERTY_ALIASES`) added where missing."""
+    out = dict(properties)
+    for parameter, prop in PROPERTY_ALIASES.items():
+        if parameter not in out and prop in out:
+            out[parameter] = out[prop]
+    return out
+
+
+#: Parameter types set as numbers: FMI 2.0's and FMI 3.0's.
+FLOAT_KINDS = ("Real", "Float64", "Float32")
+INT_KINDS = ("Integer", "Enumeration") + tuple(f"{u}Int{n}" for u in ("", "U") for n in (8, 16, 32, 64))
+
+
 def _typed(kind: str, value: str, name: str, label: str):
     try:
-        if kind in ("Real", "Float64", "Float32"):
+        if kind in FLOAT_KINDS:
             v = float(value)
             if not math.isfinite(v):
                 raise ValueError
             return v
-        if kind in ("Integer", "Int32", "Int64", "Enumeration"):
+        if kind in INT_KINDS:
             return int(value)
         if kind == "Boolean":
             if value.strip().lower() not in ("true", "false", "1", "0"):
@@ -167,7 +196,7 @@ class FmuController:
                 self.fmu.instantiate()
                 self.fmu.setupExperiment(startTime=0.0)
                 self.fmu.enterInitializationMode()
-            for name, value in properties.items():  # only what it declares
+            for name, value in fmu_properties(properties).items():  # only what it declares
                 if name in ports.parameters:
                     vr, kind = ports.parameters[name]
                     self._set(kind, vr, _typed(kind, value, name, label))
@@ -180,10 +209,14 @@ class FmuController:
 
     def _set(self, kind: str, vr: int, value) -> None:
         f = self.fmu
-        if kind in ("Real", "Float64"):
-            (f.setFloat64 if self.ports.fmi3 else f.setReal)([vr], [value])
-        elif kind in ("Integer", "Int32", "Int64", "Enumeration"):
-            (f.setInt32 if self.ports.fmi3 else f.setInteger)([vr], [value])
+        if not self.ports.fmi3:
+            setter = {"Real": f.setReal, "Integer": f.setInteger, "Enumeration": f.setInteger}.get(kind)
+        elif kind == "Enumeration":
+            setter = f.setInt64  # (an FMI 3.0 enumeration is an Int64)
+        else:  # (FMI 3.0: a setter per type, named as the type)
+            setter = getattr(f, f"set{kind}", None) if kind not in ("Boolean", "String") else None
+        if setter is not None:
+            setter([vr], [value])
         elif kind == "Boolean":
             f.setBoolean([vr], [value])
         else:
@@ -251,5 +284,5 @@ def _call_failure(exc: BaseException) -> str:
     status = getattr(exc, "status", None)
     if isinstance(status, int) and status in _STATUS:
         call = text.split(" ", 1)[0] if text else "the call"
-        return f"{call} returned {_STATUS[status]}"
+        return f"{call} returned {status_name(call, status)}"
     return text or type(exc).__name__
