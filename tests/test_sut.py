@@ -649,3 +649,12 @@ def test_numpy_numbers_are_commands(value):
 def test_numpy_values_that_are_no_number_are_refused(value):
     with pytest.raises(ControllerFault, match="not an acceleration"):
         command_from(value, "Ego=x.py:X", 1.0)
+
+
+def test_a_sweep_report_with_a_plugged_system_does_not_speak_of_vei_s_planner(scenario, tmp_path, capsys):
+    code, _, _ = _vei(capsys, "sweep", scenario, "--vary", "TimeShift=2,2.5", "--vary", "CapEnabled=false",
+                      "--quiet", "--controller", f"Ego={DATA}/aeb_flawed.py:LateAEB", "-o", tmp_path)  # fmt: skip
+    assert code == 0
+    page = (tmp_path / "report.html").read_text()
+    assert "Your system under test drives the ego in every variant" in page
+    assert "planner on (CapEnabled=true)" not in page and "<td>plugged</td>" in page and "<td>off</td>" not in page

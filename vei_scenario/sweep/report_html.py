@@ -246,17 +246,23 @@ def _configurations(ok: list[dict], varied: list[str], meta: dict) -> list[str]:
         return (0 if (on and coll) else 1 if coll else 2, -len(coll), key), key, sel, coll, on, s, alert, ttc
 
     rows = sorted((summary(k, v) for k, v in groups.items()), key=lambda t: t[0])
-    out = ["<h2>Per configuration</h2>", "<p class='note'>Configurations whose variants collide with the "
-           "collision-avoidance planner on (CapEnabled=true) come first: those collisions are failures of the "
-           "system under test. Without the planner a collision is the scenario's own risk.</p>",
+    if sut:  # (the user's system drives in every variant, whatever CapEnabled says)
+        note = ("Your system under test drives the ego in every variant: configurations with collisions come "
+                "first, each a failure of the system where the ego was moving.")  # fmt: skip
+    else:
+        note = ("Configurations whose variants collide with the collision-avoidance planner on (CapEnabled=true) "
+                "come first: those collisions are failures of the system under test. Without the planner a "
+                "collision is the scenario's own risk.")  # fmt: skip
+    out = ["<h2>Per configuration</h2>", f"<p class='note'>{note}</p>",
            "<table><tr>", *(f"<th>{html.escape(param_label(p))}</th>" for p in keys),
-           "<th>variants</th><th>collisions</th><th>planner</th><th>min S</th><th>max alert (s)</th>"
-           "<th>min TTC (s)</th></tr>"]  # fmt: skip
+           f"<th>variants</th><th>collisions</th><th>{'system' if sut else 'planner'}</th><th>min S</th>"
+           "<th>max alert (s)</th><th>min TTC (s)</th></tr>"]  # fmt: skip
     for _, key, sel, coll, on, s, alert, ttc in rows:
         cls = " class=coll" if on and coll else ""
+        who = "plugged" if sut else "on" if on else "off" if has_planner else "–"
         out.append(
             "<tr>" + "".join(f"<td>{html.escape(str(v))}</td>" for v in key)
-            + f"<td>{len(sel)}</td><td{cls}>{len(coll)}</td><td>{'on' if on else 'off' if has_planner else '–'}</td>"
+            + f"<td>{len(sel)}</td><td{cls}>{len(coll)}</td><td>{who}</td>"
             f"<td>{_cell(min(s) if s else None)}</td><td>{_cell(max(alert) if alert else None)}</td>"
             f"<td>{_cell(min(ttc) if ttc else None)}</td></tr>"
         )  # fmt: skip
