@@ -255,6 +255,8 @@ def test_a_controller_that_raises_fails_the_scenario_with_its_message(bench, tmp
         c = x["configurations"]["4"]
         assert c["failed_runs"] == 1 and "sensor fusion lost track" in c["first_error"]["error"]
         assert "sensor fusion lost track" in x["worst_failure"]["error"]
+    page = (tmp_path / "report.html").read_text()  # (the reason is in the report too, not only the JSON)
+    assert page.count("run(s) failed (the first: ") == len(ok) and "sensor fusion lost track" in page
 
 
 @pytest.mark.parametrize(

@@ -129,7 +129,12 @@ def bench_html(doc: dict) -> str:
                 if int(n) in doc["sut_configurations"] and c["collisions"] != c["collisions_ego_moving"]
                 else ""
             )
-            + (f"<br><span class=fail>{c['failed_runs']} run(s) failed</span>" if c["failed_runs"] else "")
+            + (
+                f"<br><span class=fail>{c['failed_runs']} run(s) failed (the first: "
+                f"{html.escape(str(c['first_error']['error']))})</span>"
+                if c["failed_runs"]
+                else ""
+            )
             + "</td>"
             for n, c in r["configurations"].items()
         )
