@@ -361,3 +361,63 @@ def test_a_c_host_with_no_python_in_it_steps_the_native_participants(case_study,
     assert len(got) == len(want) == 600
     assert max(math.hypot(a.position.x - b.position.x, a.position.y - b.position.y) for a, b in zip(got, want)) < 1e-9
     assert len({(b.position.x, b.position.y) for b in want}) > 100  # (it rides)
+
+
+@pytest.fixture(scope="module")
+def defaults_built(case_study, tmp_path_factory) -> dict[str, Path]:
+    """The participants built ONCE, with the scenario's default parameter values."""
+    return _built(case_study, tmp_path_factory.mktemp("defaults"), {})
+
+
+@pytest.mark.parametrize("shift", ["2.197", "1.5", "3.0"])
+@pytest.mark.parametrize(("number", "values"), [(n, v) for n, _, v in CONFIGURATIONS])
+def test_participants_built_with_the_defaults_take_the_runs_parameters(case_study, defaults_built, number, values,
+                                                                        shift):  # fmt: skip
+    values = {**values, "TimeShift": shift}
+    ref = run_scenario(case_study, values)
+    options = [f"{entity}={defaults_built[model]}" for entity, model in PLUGS["both"].items()]
+    got = run_scenario(case_study, values, controllers=parse_controller_options(options))
+    assert _deviation(ref, got) <= 1e-6, (number, shift)
+    assert bool(ref.collisions) == bool(got.collisions)
+
+
+def test_the_participants_declare_the_models_parameters_with_the_scenarios_values(case_study, defaults_built):
+    from lxml import etree
+
+    for model, expected in (("cap", {"enabled": ("Boolean", "false"), "cruise_speed_mps": ("Real", "5.61"),
+                                     "a_max_mps2": ("Real", "6.0")}),
+                            ("sfm", {"rider_type": ("String", "replay"), "time_shift_s": ("Real", "0.0"),
+                                     "v0_mps": ("Real", "4.36")})):  # fmt: skip
+        with zipfile.ZipFile(defaults_built[model]) as z:
+            root = etree.fromstring(z.read("modelDescription.xml"))
+        declared = {sv.get("name"): sv for sv in root.iterfind("ModelVariables/ScalarVariable")
+                    if sv.get("causality") == "parameter"}  # fmt: skip
+        for name, (kind, start) in expected.items():
+            assert declared[name].get("variability") == "fixed", name
+            assert declared[name][0].tag == kind and declared[name][0].get("start") == start, name
+
+
+def test_a_run_that_changes_what_the_participant_holds_fixed_is_refused_in_one_line(case_study, defaults_built):
+    from vei_scenario.sut import ControllerFault
+
+    options = [f"Ego={defaults_built['cap']}"]
+    with pytest.raises(ControllerFault) as err:  # (EgoCruiseSpeed is also the ego's Init speed: baked in)
+        run_scenario(case_study, {"EgoCruiseSpeed": "4.0"}, controllers=parse_controller_options(options))
+    text = str(err.value)
+    assert "\n" not in text and "EgoCruiseSpeed=4.0" in text and "EgoCruiseSpeed=5.61" in text
+
+
+def test_a_sweep_with_participants_built_once_gives_the_built_in_sweeps_rows(case_study, defaults_built, tmp_path):
+    from vei_scenario.sweep import run_sweep
+
+    vary = ["TimeShift=1.0:3.0:1.0", "RiderType=normal,aggressive", "CapEnabled=true"]
+    options = [f"{entity}={defaults_built[model]}" for entity, model in PLUGS["both"].items()]
+    ref = run_sweep(case_study, tmp_path / "ref", vary, quiet=True)
+    got = run_sweep(case_study, tmp_path / "got", vary, quiet=True, controllers=parse_controller_options(options))
+    assert len(ref.rows) == len(got.rows) == 6 and len({r["metrics"]["min_gap_m"] for r in got.rows}) > 1
+    for a, b in zip(ref.rows, got.rows):
+        assert a["parameters"] == b["parameters"] and a["status"] == b["status"] == "ok"
+        assert a["metrics"].keys() == b["metrics"].keys()
+        for k, v in a["metrics"].items():  # (the catalog's rounding: equal up to its last digit)
+            same = abs(v - b["metrics"][k]) <= 1e-3 if isinstance(v, float) else v == b["metrics"][k]
+            assert same, (k, a["parameters"], v, b["metrics"][k])

@@ -37,6 +37,12 @@ void osmp_model_free(void *model) {
 
 double *osmp_model_reals(void *model) { return ((Instance *)model)->r; }
 
+int *osmp_model_bools(void *model) { return ((Instance *)model)->b; }
+
+char *osmp_model_string(void *model, int vr) { return ((Instance *)model)->s[vr]; }
+
+int osmp_model_string_capacity(void) { return VEI_STRING_CAPACITY; }
+
 int osmp_model_initialize(void *model) {
     Instance *m = (Instance *)model;
     if (model_initialize(m) != 0) return 1;

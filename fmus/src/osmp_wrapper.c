@@ -5,6 +5,8 @@
  *   0..2  OSMPSensorViewIn.base.lo, .base.hi, .size      input   osi3::SensorView
  *   3..5  OSMPTrafficUpdateOut.base.lo, .base.hi, .size  output  osi3::TrafficUpdate
  *   6     ego_id (the rider) or threat_id (the planner)  parameter: the other object's id
+ * and the model's parameters it declares (Real, Boolean and String, value references from 0 in each
+ * type; osmp_config.h maps them to the model's), fixed: set before initialization ends.
  * A message's address is (base.hi << 32) | base.lo, each half a signed 32-bit integer.
  *
  * Each doStep(t, h) decodes the SensorView (protobuf-c, the C code generated from OSI's schema),
@@ -356,19 +358,100 @@ fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t
     return fmi2OK;
 }
 
-/* (no Real, Boolean or String variables: only an empty request succeeds) */
-#define NO_VARIABLES(fn, type, ...)                                                      \
-    fmi2Status fn(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, __VA_ARGS__) { \
-        (void)vr, (void)value;                                                           \
-        CHECK_ALIVE(#fn);                                                                \
-        return nvr == 0 ? fmi2OK : fail(P, "%s: this FMU has no " type " variables", #fn); \
+/* ---- the declared parameters: the model's own variables (value references in osmp_config.h), set
+ * before initialization ends ---- */
+#if OSMP_PLANNER
+#define PARAMS(p) ((p)->cap)
+#define param_reals cap_osmp_model_reals
+#define param_bools cap_osmp_model_bools
+#define param_string cap_osmp_model_string
+#define param_string_capacity cap_osmp_model_string_capacity
+#else
+#define PARAMS(p) ((p)->model)
+#define param_reals sfm_osmp_model_reals
+#define param_bools sfm_osmp_model_bools
+#define param_string sfm_osmp_model_string
+#define param_string_capacity sfm_osmp_model_string_capacity
+#endif
+static const int REAL_PARAM[] = OSMP_REAL_PARAMS, BOOLEAN_PARAM[] = OSMP_BOOLEAN_PARAMS, STRING_PARAM[] = OSMP_STRING_PARAMS;
+static const char *const REAL_NAME[] = OSMP_REAL_NAMES, *const BOOLEAN_NAME[] = OSMP_BOOLEAN_NAMES,
+                         *const STRING_NAME[] = OSMP_STRING_NAMES;
+
+/* 0 when value reference vr is one of the n parameters of the type and may be set now; else says why */
+static int settable(Participant *p, const char *fn, const char *type, fmi2ValueReference vr, int n,
+                    const char *const names[]) {
+    if ((int)vr >= n) return fail(p, "%s: value reference %u is no %s variable", fn, (unsigned)vr, type), 1;
+    if (p->state != INSTANTIATED && p->state != INITIALIZATION)
+        return fail(p, "%s: %s is a fixed parameter, set before initialization ends", fn, names[vr]), 1;
+    return 0;
+}
+
+fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Real value[]) {
+    CHECK_ALIVE("fmi2GetReal");
+    if (nvr > 0 && (vr == NULL || value == NULL)) return fmi2Error;
+    for (size_t k = 0; k < nvr; k++) {
+        if ((int)vr[k] >= OSMP_N_REAL_PARAMS)
+            return fail(P, "fmi2GetReal: value reference %u is no Real variable", (unsigned)vr[k]);
+        value[k] = param_reals(PARAMS(P))[REAL_PARAM[vr[k]]];
     }
-NO_VARIABLES(fmi2GetReal, "Real", fmi2Real value[])
-NO_VARIABLES(fmi2GetBoolean, "Boolean", fmi2Boolean value[])
-NO_VARIABLES(fmi2GetString, "String", fmi2String value[])
-NO_VARIABLES(fmi2SetReal, "Real", const fmi2Real value[])
-NO_VARIABLES(fmi2SetBoolean, "Boolean", const fmi2Boolean value[])
-NO_VARIABLES(fmi2SetString, "String", const fmi2String value[])
+    return fmi2OK;
+}
+
+fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Real value[]) {
+    CHECK_ALIVE("fmi2SetReal");
+    if (nvr > 0 && (vr == NULL || value == NULL)) return fmi2Error;
+    for (size_t k = 0; k < nvr; k++) {
+        if (settable(P, "fmi2SetReal", "Real", vr[k], OSMP_N_REAL_PARAMS, REAL_NAME)) return fmi2Error;
+        if (!isfinite(value[k])) return fail(P, "fmi2SetReal: %s = %g is not finite", REAL_NAME[vr[k]], value[k]);
+        param_reals(PARAMS(P))[REAL_PARAM[vr[k]]] = value[k];
+    }
+    return fmi2OK;
+}
+
+fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Boolean value[]) {
+    CHECK_ALIVE("fmi2GetBoolean");
+    if (nvr > 0 && (vr == NULL || value == NULL)) return fmi2Error;
+    for (size_t k = 0; k < nvr; k++) {
+        if ((int)vr[k] >= OSMP_N_BOOLEAN_PARAMS)
+            return fail(P, "fmi2GetBoolean: value reference %u is no Boolean variable", (unsigned)vr[k]);
+        value[k] = param_bools(PARAMS(P))[BOOLEAN_PARAM[vr[k]]] ? fmi2True : fmi2False;
+    }
+    return fmi2OK;
+}
+
+fmi2Status fmi2SetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Boolean value[]) {
+    CHECK_ALIVE("fmi2SetBoolean");
+    if (nvr > 0 && (vr == NULL || value == NULL)) return fmi2Error;
+    for (size_t k = 0; k < nvr; k++) {
+        if (settable(P, "fmi2SetBoolean", "Boolean", vr[k], OSMP_N_BOOLEAN_PARAMS, BOOLEAN_NAME)) return fmi2Error;
+        param_bools(PARAMS(P))[BOOLEAN_PARAM[vr[k]]] = value[k] ? 1 : 0;
+    }
+    return fmi2OK;
+}
+
+fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2String value[]) {
+    CHECK_ALIVE("fmi2GetString");
+    if (nvr > 0 && (vr == NULL || value == NULL)) return fmi2Error;
+    for (size_t k = 0; k < nvr; k++) {
+        if ((int)vr[k] >= OSMP_N_STRING_PARAMS)
+            return fail(P, "fmi2GetString: value reference %u is no String variable", (unsigned)vr[k]);
+        value[k] = param_string(PARAMS(P), STRING_PARAM[vr[k]]);
+    }
+    return fmi2OK;
+}
+
+fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2String value[]) {
+    CHECK_ALIVE("fmi2SetString");
+    if (nvr > 0 && (vr == NULL || value == NULL)) return fmi2Error;
+    for (size_t k = 0; k < nvr; k++) {
+        if (settable(P, "fmi2SetString", "String", vr[k], OSMP_N_STRING_PARAMS, STRING_NAME)) return fmi2Error;
+        if (value[k] == NULL) return fail(P, "fmi2SetString: %s = NULL", STRING_NAME[vr[k]]);
+        if ((int)strlen(value[k]) >= param_string_capacity())
+            return fail(P, "fmi2SetString: %s: longer than %d characters", STRING_NAME[vr[k]], param_string_capacity() - 1);
+        strcpy(param_string(PARAMS(P), STRING_PARAM[vr[k]]), value[k]);
+    }
+    return fmi2OK;
+}
 
 static uint64_t address(int lo, int hi) { return ((uint64_t)(uint32_t)hi << 32) | (uint64_t)(uint32_t)lo; }
 

@@ -32,6 +32,7 @@ from pathlib import Path
 from vei_scenario.core.sources import compiler, source_dir
 from vei_scenario.errors import VeiInputError
 from vei_scenario.fmu.native import c_source_dir, fmi_header_dir, variables_header
+from vei_scenario.fmu.osmp_parameters import BuildRecord, annotate, declared_variables, start_text
 from vei_scenario.fmu.packaging import write_fmu
 from vei_scenario.fmu.variables import SPECS, ModelSpec
 
@@ -42,7 +43,8 @@ _NS = "http://xsd.pmsf.net/OSISensorModelPackaging"
 _RENAMED = (
     "model_initialize", "model_do_step", "vei_set_start_values", "vei_fail", "vei_register", "vei_unregister",
     "vei_is_live", "vei_require", "vei_settable", "osmp_model_new", "osmp_model_free", "osmp_model_reals",
-    "osmp_model_initialize", "osmp_model_do_step",
+    "osmp_model_bools", "osmp_model_string", "osmp_model_string_capacity", "osmp_model_initialize",
+    "osmp_model_do_step",
 )  # fmt: skip
 #: the real variables the wrapper reads or writes, per model (osmp_config.h: <MODEL>_<NAME>)
 _REALS = {
@@ -205,13 +207,37 @@ def _config(model: str, guid: str, identifier: str, other_entity: str, osi: tupl
     for m in models:
         spec = SPECS[m]
         lines += [f"#define {m.upper()}_{n.upper()} {spec.first_vr(spec.variable(n))}" for n in _REALS[m]]
+    spec = SPECS[models[0]]  # the declared parameters: FMU value reference (per type, from 0) -> the model's
+    for kind in ("Real", "Boolean", "String"):
+        declared = [v for v in declared_variables(model) if v.type == kind]
+        vrs = ", ".join(str(spec.first_vr(v)) for v in declared) or "-1"
+        names = ", ".join(_c_string(v.name) for v in declared) or '""'
+        kind = kind.upper()
+        lines += [f"#define OSMP_N_{kind}_PARAMS {len(declared)}", f"#define OSMP_{kind}_PARAMS {{{vrs}}}",
+                  f"#define OSMP_{kind}_NAMES {{{names}}}"]  # fmt: skip
     return "\n".join(lines) + "\n"
 
 
-def model_description(model: str, identifier: str, guid: str, osi: str, stop_time: float | None = None) -> bytes:
+def declare_parameters(variables, model: str, starts: dict) -> None:
+    """Append the participant's declared parameters to ``<ModelVariables>``: Real, Boolean and String,
+    value references from 0 in each type, fixed, the build's values (``starts``) their start values."""
+    from lxml import etree
+
+    vrs: dict[str, int] = {}
+    for v in declared_variables(model):
+        vr = vrs[v.type] = vrs.get(v.type, -1) + 1
+        unit = f" ({v.unit})" if v.unit else ""
+        sv = etree.SubElement(variables, "ScalarVariable", name=v.name, valueReference=str(vr), causality="parameter",
+                              variability="fixed", description=v.description + unit)  # fmt: skip
+        etree.SubElement(sv, v.type, start=start_text(starts.get(v.name, v.start)))
+
+
+def model_description(model: str, identifier: str, guid: str, osi: str, stop_time: float | None = None,
+                      starts: dict | None = None, record: BuildRecord | None = None) -> bytes:  # fmt: skip
     """The participant's modelDescription: FMI 2.0 co-simulation, the scenario's length as default
     experiment, OSMP's model annotation and its binary variables (each annotated with its name, role
-    and MIME type), the other object's id."""
+    and MIME type), the other object's id, the model's declared parameters (``starts``: the build's
+    values) and vei's ``record`` of the build."""
     from lxml import etree
 
     _, other, description = PARTICIPANTS[model]
@@ -229,6 +255,8 @@ def model_description(model: str, identifier: str, guid: str, osi: str, stop_tim
     vendor = etree.SubElement(root, "VendorAnnotations")
     tool = etree.SubElement(vendor, "Tool", name="net.pmsf.osmp", nsmap={"osmp": _NS})
     etree.SubElement(tool, f"{{{_NS}}}osmp", version=OSMP_VERSION, **{"osi-version": osi})
+    if record is not None:
+        annotate(vendor, record)
     variables = etree.SubElement(root, "ModelVariables")
     vr = 0
     for prefix, kind, causality in (("OSMPSensorViewIn", "SensorView", "input"),
@@ -247,6 +275,7 @@ def model_description(model: str, identifier: str, guid: str, osi: str, stop_tim
                           variability="fixed", description="the ground-truth id of the object it watches where "
                           "no object's source_reference names the scenario's entity")  # fmt: skip
     etree.SubElement(sv, "Integer", start="0")
+    declare_parameters(variables, model, starts or {})
     outputs = etree.SubElement(etree.SubElement(root, "ModelStructure"), "Outputs")
     for index in (4, 5, 6):
         etree.SubElement(outputs, "Unknown", index=str(index))
@@ -302,9 +331,11 @@ def _compile(build: Path, cc: str, models: tuple[str, ...], binary: str) -> None
     _run(link, build, "linking the participant")
 
 
-def build_native_osmp(model: str, specs: dict[str, ModelSpec], other_entity: str, out_dir: Path, name: str) -> Path:
+def build_native_osmp(model: str, specs: dict[str, ModelSpec], other_entity: str, out_dir: Path, name: str,
+                      record: BuildRecord | None = None) -> Path:  # fmt: skip
     """``out_dir/<name>.fmu``: the participant ``model`` (sfm or cap) with ``specs`` (each model of
-    its binary with the scenario's start values) watching ``other_entity``."""
+    its binary with the scenario's start values) watching ``other_entity``; ``record``: what it was
+    built for (in its modelDescription)."""
     why = missing()
     if why:
         raise VeiInputError(None, "--osmp", why)
@@ -318,6 +349,7 @@ def build_native_osmp(model: str, specs: dict[str, ModelSpec], other_entity: str
     digest = hashlib.sha256(f"{model}\0{other_entity}\0{osi}\0".encode())
     for path in sorted(files):  # (the GUID names what the binary is made of)
         digest.update(path.encode() + b"\0" + files[path] + b"\0")
+    digest.update(repr(record).encode())
     guid = "{" + str(uuid.uuid5(uuid.NAMESPACE_URL, f"vei-scenario/osmp/{digest.hexdigest()}")) + "}"
     files["osmp_config.h"] = _config(model, guid, name, other_entity, osi_tuple).encode()
     with tempfile.TemporaryDirectory(prefix="vei-osmp-native-") as tmp:
@@ -327,7 +359,9 @@ def build_native_osmp(model: str, specs: dict[str, ModelSpec], other_entity: str
             (build / path).write_bytes(data)
         _compile(build, compiler(), models, f"{name}.so")
         entries = {
-            "modelDescription.xml": model_description(model, name, guid, osi, specs[models[0]].stop_time),
+            "modelDescription.xml": model_description(
+                model, name, guid, osi, specs[models[0]].stop_time, dict(specs[models[0]].starts), record
+            ),
             f"binaries/linux64/{name}.so": (build / f"{name}.so").read_bytes(),
         }
     return write_fmu(Path(out_dir) / f"{name}.fmu", entries)

@@ -70,9 +70,12 @@ class OsmpBody:
 
     author = "vei-scenario"
     OTHER = ""  # the parameter naming the other object's id
+    MODEL = ""  # the participant (osmp_parameters.MODELS)
 
     def __init__(self, **kwargs) -> None:
-        from pythonfmu import Fmi2Causality, Fmi2Initial, Fmi2Variability, Integer
+        from pythonfmu import Boolean, Fmi2Causality, Fmi2Initial, Fmi2Variability, Integer, Real, String
+
+        from vei_scenario.fmu.osmp_parameters import declared_variables
 
         super().__init__(**kwargs)
         self.ints = {f"{p}.{r}": 0 for p in ("OSMPSensorViewIn", "OSMPTrafficUpdateOut")
@@ -92,10 +95,23 @@ class OsmpBody:
                         getter=lambda n=name: self.ints[n], setter=lambda v, n=name: self.ints.__setitem__(n, int(v))),
                 nested=False,
             )  # fmt: skip
+        # the model's declared parameters, the build's values (its resources) their start values
+        built = json.loads((Path(self.resources) / PARAMETERS_FILE).read_text())
+        given = built["cap"] if self.MODEL == "cap" else built
+        self.params = {}
+        for v in declared_variables(self.MODEL):
+            kind = {"Real": Real, "Boolean": Boolean, "String": String}[v.type]
+            self.params[v.name] = given.get(v.name, v.start)
+            self.register_variable(
+                kind(v.name, causality=Fmi2Causality.parameter, variability=Fmi2Variability.fixed,
+                     getter=lambda n=v.name: self.params[n], setter=lambda x, n=v.name: self.params.__setitem__(n, x)),
+                nested=False,
+            )  # fmt: skip
 
     def exit_initialization_mode(self) -> None:
         values = json.loads((Path(self.resources) / PARAMETERS_FILE).read_text())
         self.other_name = values.pop("other_entity", "")
+        (values["cap"] if self.MODEL == "cap" else values).update(self.params)  # (as the host set them)
         self.load(values)
 
     def do_step(self, current_time: float, step_size: float) -> bool:
@@ -141,6 +157,7 @@ class OsmpRider(OsmpBody):
 
     description = "vei's e-scooter rider (social force model) as an OSMP traffic participant"
     OTHER = "ego_id"
+    MODEL = "sfm"
 
     def load(self, values: dict) -> None:
         from vei_scenario.fmu.python_models import SfmModel
@@ -165,6 +182,7 @@ class OsmpPlanner(OsmpBody):
 
     description = "vei's collision-avoidance planner driving its vehicle as an OSMP traffic participant"
     OTHER = "threat_id"
+    MODEL = "cap"
 
     def load(self, values: dict) -> None:
         from vei_scenario.fmu.python_models import CapModel, EgoModel
@@ -191,11 +209,13 @@ class OsmpPlanner(OsmpBody):
         return e["x"], e["y"], e["yaw"], e["speed"], e["accel"]
 
 
-def _annotated(md: bytes, osi: str, identifier: str) -> bytes:
+def _annotated(md: bytes, osi: str, identifier: str, model: str, starts: dict, record) -> bytes:
     """pythonfmu's modelDescription with OSMP's annotations: the model's, after DefaultExperiment, and
-    each binary variable's (name, role, MIME type)."""
+    each binary variable's (name, role, MIME type); vei's ``record`` of the build; the declared
+    parameters described and their start values (``starts``) written as the native participant's."""
     from lxml import etree
 
+    from vei_scenario.fmu.osmp_parameters import annotate, declared_variables, start_text
     from vei_scenario.safe_xml import safe_parser
 
     root = etree.fromstring(md, safe_parser())
@@ -208,9 +228,15 @@ def _annotated(md: bytes, osi: str, identifier: str) -> bytes:
     vendor = etree.Element("VendorAnnotations")
     tool = etree.SubElement(vendor, "Tool", name="net.pmsf.osmp", nsmap={"osmp": _NS})
     etree.SubElement(tool, f"{{{_NS}}}osmp", version=OSMP_VERSION, **{"osi-version": osi})
+    annotate(vendor, record)
     root.find("ModelVariables").addprevious(vendor)
     kinds = {"OSMPSensorViewIn": "SensorView", "OSMPTrafficUpdateOut": "TrafficUpdate"}
+    declared = {v.name: v for v in declared_variables(model)}
     for sv in root.iterfind("ModelVariables/ScalarVariable"):
+        v = declared.get(sv.get("name"))
+        if v is not None:
+            sv.set("description", v.description + (f" ({v.unit})" if v.unit else ""))
+            sv[0].set("start", start_text(starts.get(v.name, v.start)))
         prefix, _, role = sv.get("name").partition(".")
         if prefix in kinds:
             ann = etree.SubElement(sv, "Annotations")
@@ -263,6 +289,9 @@ def build_osmp(
     if model not in KINDS:
         raise VeiInputError(None, "--osmp", f"{model!r} is not one of {', '.join(KINDS)}")
     loop = osmp_loop(scenario, values)
+    from vei_scenario.fmu.osmp_parameters import build_record
+
+    record = build_record(model, scenario, values, loop)
     if backend == "native":
         from vei_scenario.fmu.osmp_native import build_native_osmp
         from vei_scenario.fmu.variables import SPECS
@@ -270,11 +299,11 @@ def build_osmp(
         models = ("sfm",) if model == "sfm" else ("cap", "ego")
         specs = {m: SPECS[m].with_starts(loop.parameters[m], loop.steps * loop.dt) for m in models}
         other = loop.entities["ego" if model == "sfm" else "sfm"]
-        return build_native_osmp(model, specs, other, Path(out_dir), KINDS[model][2])
-    return _build_python(model, loop, Path(out_dir))
+        return build_native_osmp(model, specs, other, Path(out_dir), KINDS[model][2], record)
+    return _build_python(model, loop, Path(out_dir), record)
 
 
-def _build_python(model: str, loop, out_dir: Path) -> Path:
+def _build_python(model: str, loop, out_dir: Path, record) -> Path:
     """The pythonfmu participant (the fallback where no native one can be built)."""
     what, body, name = KINDS[model]
     try:
@@ -302,7 +331,9 @@ def _build_python(model: str, loop, out_dir: Path) -> Path:
         built = Path(tmp) / "out" / f"{identifier}.fmu"
         with zipfile.ZipFile(io.BytesIO(built.read_bytes())) as zf:
             entries = {n: zf.read(n) for n in zf.namelist() if not n.endswith("/")}
-    entries["modelDescription.xml"] = _annotated(entries["modelDescription.xml"], _osi_version(), identifier)
+    starts = loop.parameters["cap" if model == "cap" else "sfm"]
+    md = entries["modelDescription.xml"]
+    entries["modelDescription.xml"] = _annotated(md, _osi_version(), identifier, model, starts, record)
     return write_fmu(Path(out_dir) / f"{name}.fmu", entries)
 
 

@@ -114,9 +114,10 @@ def check_parameters(ports: FmuPorts, given: dict[str, str], label: str) -> None
 
 
 #: FMU parameter name -> the scenario property that gives it where the FMU is not given it by its own
-#: name: vei-compiled scenarios name the planner's cruise speed ``cruiseSpeed`` (esmini's controllers'
-#: style), vei_cap.fmu ``cruise_speed_mps`` (its other parameters are named alike in both).
-PROPERTY_ALIASES = {"cruise_speed_mps": "cruiseSpeed"}
+#: name: vei-compiled scenarios name the planner's cruise speed ``cruiseSpeed`` and the rider's type
+#: ``riderType`` (esmini's controllers' style), vei's FMUs ``cruise_speed_mps`` and ``rider_type``
+#: (their other parameters are named alike in both).
+PROPERTY_ALIASES = {"cruise_speed_mps": "cruiseSpeed", "rider_type": "riderType"}
 
 
 def fmu_properties(properties: dict[str, str]) -> dict[str, str]:

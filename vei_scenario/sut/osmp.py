@@ -29,6 +29,7 @@ import zipfile
 from dataclasses import dataclass
 from pathlib import Path
 
+from vei_scenario.fmu.osmp_parameters import BuildRecord, read_record
 from vei_scenario.sut.contract import ControllerFault
 
 OSMP_TOOL = "net.pmsf.osmp"
@@ -79,6 +80,7 @@ class OsmpPorts:
     parameters: dict[str, tuple[int, str]]  # name -> (value reference, type)
     fmi3: bool = False
     once_per_process: bool = False  # canBeInstantiatedOnlyOncePerProcess
+    record: BuildRecord | None = None  # what a vei-built participant was built for
 
 
 def is_osmp(path: Path) -> bool:
@@ -203,6 +205,7 @@ def read_osmp_ports(path: Path, label: str) -> OsmpPorts:
         binaries.get("OSMPTrafficCommandIn"),
         params,
         once_per_process=cs.get("canBeInstantiatedOnlyOncePerProcess") == "true",
+        record=read_record(root),
     )
 
 

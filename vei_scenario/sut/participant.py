@@ -19,6 +19,7 @@ from __future__ import annotations
 import math
 
 from vei_scenario.sut.contract import ControllerFault
+from vei_scenario.sut.participant_parameters import participant_properties
 from vei_scenario.sut.spec import ControllerSpec, describe_exception
 
 _SHAPES = {"linear": "DYNAMICS_SHAPE_LINEAR", "cubic": "DYNAMICS_SHAPE_CUBIC",
@@ -42,7 +43,7 @@ class OsmpController:
         self.spec, self.entity = spec, entity
         self.label = f"{entity}={spec.target}" if entity else spec.label
         self.ports = spec.load()
-        self.properties = {k: v for k, v in props.items() if k}
+        self.properties = participant_properties(self.ports, props, ctx, self.label)
         self.impl = None
         self.ids: dict[str, int] = {}  # entity -> OSI id, once every entity is known (at the first step)
         self.names: dict[int, str] = {}
