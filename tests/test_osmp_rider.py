@@ -123,3 +123,63 @@ __import__("os")._exit(0)
         "host it in one run per process"
     ), done.stderr[-1500:]
     assert ControllerFault and parse_controller_options  # (the names the script uses)
+
+
+#: Runs the scenario with the built-in models and with the given participants (entity -> FMU), prints
+#: the largest position difference over every entity and whether each collides.
+_HOSTED = """
+import json, os, sys
+import numpy as np
+from vei_scenario.interpreter import run_scenario
+from vei_scenario.sut import parse_controller_options
+scenario, plugs, values = sys.argv[1], json.loads(sys.argv[2]), json.loads(sys.argv[3])
+a = run_scenario(scenario, values)
+b = run_scenario(scenario, values, controllers=parse_controller_options([f"{e}={f}" for e, f in plugs.items()]))
+d = max(float(np.max(np.hypot(a.traces[n].x - b.traces[n].x, a.traces[n].y - b.traces[n].y))) for n in a.traces)
+print(json.dumps({"deviation_m": d, "collides": [bool(a.collisions), bool(b.collisions)]}), flush=True)
+os._exit(0)
+"""
+
+
+@pytest.fixture(scope="module")
+def defaults_built(case_study, tmp_path_factory) -> dict[str, Path]:
+    """The pythonfmu participants built ONCE, with the scenario's default parameter values."""
+    from vei_scenario.fmu.osmp_rider import build_osmp
+
+    out = tmp_path_factory.mktemp("defaults")
+    return {m: build_osmp(m, case_study, out, {}, backend="python") for m in ("sfm", "cap")}
+
+
+@pytest.mark.parametrize(("shift", "number", "values"), [("2.197", n, v) for n, _, v in CONFIGURATIONS]
+                         + [(s, n, v) for s in ("1.5", "3.0") for n, _, v in CONFIGURATIONS[-2:]])  # fmt: skip
+def test_pythonfmu_participants_built_with_the_defaults_take_the_runs_parameters(case_study, defaults_built, shift,
+                                                                                  number, values):  # fmt: skip
+    plugs = {"Ego": str(defaults_built["cap"]), "scooter_1": str(defaults_built["sfm"])}
+    argv = [
+        sys.executable,
+        "-c",
+        _HOSTED,
+        str(case_study),
+        json.dumps(plugs),
+        json.dumps({**values, "TimeShift": shift}),
+    ]
+    done = subprocess.run(argv, capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr[-2000:]
+    got = json.loads(done.stdout.strip().splitlines()[-1])
+    assert got["deviation_m"] <= 1e-6 and got["collides"][0] == got["collides"][1], (number, shift)
+
+
+def test_the_pythonfmu_participants_declare_what_the_native_ones_do(case_study, defaults_built):
+    from lxml import etree
+
+    from vei_scenario.fmu.osmp_parameters import DECLARED
+
+    for model, path in defaults_built.items():
+        with zipfile.ZipFile(path) as z:
+            root = etree.fromstring(z.read("modelDescription.xml"))
+        declared = {sv.get("name"): (sv.get("variability"), sv[0].tag, sv[0].get("start"))
+                    for sv in root.iterfind("ModelVariables/ScalarVariable") if sv.get("causality") == "parameter"}  # fmt: skip
+        assert set(declared) == {*DECLARED[model], "ego_id" if model == "sfm" else "threat_id"}
+        assert declared.get("enabled", ("fixed", "Boolean", "false")) == ("fixed", "Boolean", "false")
+        assert declared.get("time_shift_s", ("fixed", "Real", "0.0")) == ("fixed", "Real", "0.0")
+        assert declared.get("rider_type", ("fixed", "String", "replay")) == ("fixed", "String", "replay")
