@@ -177,8 +177,9 @@ def test_the_pythonfmu_participants_declare_what_the_native_ones_do(case_study, 
     for model, path in defaults_built.items():
         with zipfile.ZipFile(path) as z:
             root = etree.fromstring(z.read("modelDescription.xml"))
+        variables = root.iterfind("ModelVariables/ScalarVariable")
         declared = {sv.get("name"): (sv.get("variability"), sv[0].tag, sv[0].get("start"))
-                    for sv in root.iterfind("ModelVariables/ScalarVariable") if sv.get("causality") == "parameter"}  # fmt: skip
+                    for sv in variables if sv.get("causality") == "parameter"}  # fmt: skip
         assert set(declared) == {*DECLARED[model], "ego_id" if model == "sfm" else "threat_id"}
         assert declared.get("enabled", ("fixed", "Boolean", "false")) == ("fixed", "Boolean", "false")
         assert declared.get("time_shift_s", ("fixed", "Real", "0.0")) == ("fixed", "Real", "0.0")
