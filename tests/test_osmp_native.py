@@ -421,3 +421,50 @@ def test_a_sweep_with_participants_built_once_gives_the_built_in_sweeps_rows(cas
         for k, v in a["metrics"].items():  # (the catalog's rounding: equal up to its last digit)
             same = abs(v - b["metrics"][k]) <= 1e-3 if isinstance(v, float) else v == b["metrics"][k]
             assert same, (k, a["parameters"], v, b["metrics"][k])
+
+
+def test_the_declared_parameters_are_read_and_set_before_initialization_ends_only(defaults_built, capfd):
+    from fmpy import extract, read_model_description
+    from fmpy.fmi1 import FMICallException
+    from fmpy.fmi2 import FMU2Slave
+
+    fmu = defaults_built["sfm"]
+    md = read_model_description(str(fmu))
+    vr = {v.name: v.valueReference for v in md.modelVariables}
+    slave = FMU2Slave(guid=md.guid, unzipDirectory=extract(str(fmu)), modelIdentifier=md.coSimulation.modelIdentifier,
+                      instanceName="params")  # fmt: skip
+    slave.instantiate()
+    assert slave.getReal([vr["v0_mps"], vr["time_shift_s"]]) == [4.36, 0.0]
+    assert slave.getString([vr["rider_type"]]) == [b"replay"]
+    slave.setupExperiment(startTime=0.0)
+    slave.enterInitializationMode()
+    slave.setReal([vr["time_shift_s"]], [-2.197])
+    slave.setString([vr["rider_type"]], ["aggressive"])
+    with pytest.raises(FMICallException):  # (the model's own 64-character strings)
+        slave.setString([vr["rider_type"]], ["x" * 64])
+    lines = [line for line in capfd.readouterr().out.splitlines() if "rider_type" in line]
+    assert len(lines) == 1 and lines[0].endswith("fmi2SetString: rider_type: longer than 63 characters")
+    slave.freeInstance()
+    slave = FMU2Slave(guid=md.guid, unzipDirectory=extract(str(fmu)), modelIdentifier=md.coSimulation.modelIdentifier,
+                      instanceName="params")  # fmt: skip
+    slave.instantiate()
+    slave.setupExperiment(startTime=0.0)
+    slave.enterInitializationMode()
+    slave.setReal([vr["time_shift_s"]], [-2.197])
+    slave.exitInitializationMode()
+    assert slave.getReal([vr["time_shift_s"]]) == [-2.197]
+    with pytest.raises(FMICallException):
+        slave.setReal([vr["v0_mps"]], [5.0])
+    lines = [line for line in capfd.readouterr().out.splitlines() if "v0_mps" in line]
+    assert len(lines) == 1 and lines[0].endswith(
+        "fmi2SetReal: v0_mps is a fixed parameter, set before initialization ends"
+    )
+    slave.freeInstance()
+
+
+def test_multi_scooters_participants_built_with_the_defaults_take_the_runs_parameters(multi, tmp_path):
+    fmus = _built(multi, tmp_path, {})
+    values = {"RiderType": "normal", "CapEnabled": "true", "TimeShift": "1.41"}
+    got = run_scenario(multi, values, controllers=parse_controller_options([f"Ego={fmus['cap']}",
+                                                                            f"scooter_2={fmus['sfm']}"]))  # fmt: skip
+    assert _deviation(run_scenario(multi, values), got) <= 1e-6
