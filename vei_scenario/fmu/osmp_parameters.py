@@ -7,17 +7,24 @@ settings; the rider's ``rider_type``, ``time_shift_s`` and social-force settings
 name them, the build's values their start values. The rest (the ego's path, Init pose and speed, the
 rider's recorded track and route, the behaviour's start, the boxes) is held fixed in the binary; the
 FMU records, in a vendor annotation, the scenario's parameter values it was built for and a digest
-of what it holds fixed, so a host can tell a run it would silently get wrong (:func:`fixed_digest`).
+of what it holds fixed, and names :func:`run_values`, which vei's host calls for each run: the
+declared parameters as the built-in models get them in that run, or one line refusing a run whose
+values change what the participant holds fixed (rather than run it silently with the build's).
 """
 
 from __future__ import annotations
 
 import hashlib
 import json
-from dataclasses import dataclass, fields
+from dataclasses import fields
+from functools import lru_cache
+from pathlib import Path
 
+from vei_scenario.errors import VeiInputError
 from vei_scenario.models.cap import CapParameters
 from vei_scenario.models.sfm import SfmParameters
+from vei_scenario.sut.contract import ControllerFault
+from vei_scenario.sut.osmp import BUILD, BuildRecord
 
 #: participant -> its FMU models and the one whose parameters it declares
 MODELS = {"sfm": ("sfm",), "cap": ("cap", "ego")}
@@ -26,9 +33,8 @@ DECLARED = {
     "sfm": (*(f.name for f in fields(SfmParameters)), "rider_type", "time_shift_s"),
     "cap": (*(f.name for f in fields(CapParameters)), "enabled", "cruise_speed_mps"),
 }
-#: the vendor annotation's tool name and element
+#: the vendor annotation's tool name; the function a host calls for a run's values (:func:`run_values`)
 TOOL = "net.vei-scenario"
-BUILD = "Build"
 
 
 def declared_variables(model: str):
@@ -63,21 +69,13 @@ def fixed_digest(model: str, loop) -> str:
     return hashlib.sha256(json.dumps(held, sort_keys=True).encode()).hexdigest()
 
 
-@dataclass(frozen=True)
-class BuildRecord:
-    """What a vei-built participant says it was built for."""
-
-    model: str  # sfm | cap
-    digest: str  # :func:`fixed_digest` of the build's loop
-    parameters: tuple[tuple[str, str], ...]  # the scenario's parameter values of the build
-
-
 def build_record(model: str, scenario, values: dict[str, str] | None, loop) -> BuildRecord:
     """The record of a build of ``model`` from ``scenario`` with ``values`` over its defaults."""
     from vei_scenario.interpreter.document import load_scenario
 
     resolved = load_scenario(scenario, values or {}).parameters
-    return BuildRecord(model, fixed_digest(model, loop), tuple((k, str(v)) for k, v in resolved.items()))
+    params = tuple((k, str(v)) for k, v in resolved.items())
+    return BuildRecord(f"{__name__}:run_values", model, fixed_digest(model, loop), params)
 
 
 def annotate(vendor, record: BuildRecord) -> None:
@@ -85,15 +83,51 @@ def annotate(vendor, record: BuildRecord) -> None:
     from lxml import etree
 
     tool = etree.SubElement(vendor, "Tool", name=TOOL)
-    build = etree.SubElement(tool, BUILD, model=record.model, fixed=record.digest)
+    build = etree.SubElement(tool, BUILD, resolver=record.resolver, model=record.model, fixed=record.digest)
     for name, value in record.parameters:
         etree.SubElement(build, "Parameter", name=name, value=value)
 
 
-def read_record(root) -> BuildRecord | None:
-    """The record in a parsed modelDescription, if a vei build wrote one."""
-    el = root.find(f"VendorAnnotations/Tool[@name='{TOOL}']/{BUILD}")
-    if el is None or el.get("model") not in MODELS:
-        return None
-    params = tuple((p.get("name", ""), p.get("value", "")) for p in el.iterfind("Parameter"))
-    return BuildRecord(el.get("model"), el.get("fixed", ""), params)
+def osmp_loop(scenario: str | Path, values: dict[str, str] | None = None):
+    """The scenario's FMU loop as the participants carry it: the threat's rider, the planner and the
+    ego; the other road users are the host's to show, none of them is packed."""
+    from vei_scenario.fmu.system import closed_loop
+    from vei_scenario.loop import LoopScene, NotALoop
+
+    try:
+        names = tuple(LoopScene(scenario).names)
+    except NotALoop:
+        names = ()  # (closed_loop says why)
+    return closed_loop(scenario, values, leave_out=names)
+
+
+@lru_cache(maxsize=8)
+def _loop(scenario: str, stamp: int, values: tuple[tuple[str, str], ...]):
+    """The scenario's closed loop as the participants carry it, for ``values`` (cached per file
+    version, ``stamp`` its modification time, and values: a run's participants share one)."""
+    return osmp_loop(scenario, dict(values))
+
+
+def run_values(fmu: str, record: BuildRecord, scenario: Path, values: dict[str, str], label: str) -> dict[str, str]:
+    """The declared parameters of the participant ``fmu`` (its file name) with ``record``, for the run
+    of ``scenario`` with the parameter values ``values``: as the built-in models get them, from the
+    scenario's closed loop resolved for the run. What it holds fixed must be what the run would give
+    it too; else one :class:`ControllerFault` line names the values that differ from the build's."""
+    try:
+        loop = _loop(str(scenario.resolve()), scenario.stat().st_mtime_ns, tuple(sorted(values.items())))
+    except VeiInputError as exc:
+        raise ControllerFault(label, f"{fmu} was built by vei for a closed loop: {exc.reason}") from None
+    if fixed_digest(record.model, loop) != record.digest:
+        built = dict(record.parameters)
+        changed = [k for k in values if k in built and values[k] != built[k]]
+        if not changed:
+            raise ControllerFault(label, f"{fmu} was built from another scenario (what it holds fixed differs from "
+                                  f"{scenario.name}'s): build it from this one")  # fmt: skip
+        run = ", ".join(f"{k}={values[k]}" for k in changed)
+        then = ", ".join(f"{k}={built[k]}" for k in changed)
+        fix = " ".join(f"--param {k}={values[k]}" for k in changed)
+        raise ControllerFault(label, f"{fmu} was built for {then}; this run's {run} changes what it holds fixed "
+                              "(the ego's path, Init pose and speed; the rider's track, route and start): build it "
+                              f"for these values (vei fmu build {record.model} --osmp --scenario {scenario} "
+                              f"{fix})")  # fmt: skip
+    return declared_values(record.model, loop)

@@ -264,19 +264,6 @@ def _values(loop, model: str) -> dict:
 BACKENDS = ("native", "python")
 
 
-def osmp_loop(scenario: str | Path, values: dict[str, str] | None = None):
-    """The scenario's FMU loop as the participants carry it: the threat's rider, the planner and the
-    ego; the other road users are the host's to show, none of them is packed."""
-    from vei_scenario.fmu.system import closed_loop
-    from vei_scenario.loop import LoopScene, NotALoop
-
-    try:
-        names = tuple(LoopScene(scenario).names)
-    except NotALoop:
-        names = ()  # (closed_loop says why)
-    return closed_loop(scenario, values, leave_out=names)
-
-
 def build_osmp(
     model: str, scenario: str | Path, out_dir: Path, values: dict[str, str] | None = None, backend: str = "native"
 ) -> Path:
@@ -288,8 +275,9 @@ def build_osmp(
         raise VeiInputError(None, "--backend", f"{backend!r} is not one of {', '.join(BACKENDS)}")
     if model not in KINDS:
         raise VeiInputError(None, "--osmp", f"{model!r} is not one of {', '.join(KINDS)}")
+    from vei_scenario.fmu.osmp_parameters import build_record, osmp_loop
+
     loop = osmp_loop(scenario, values)
-    from vei_scenario.fmu.osmp_parameters import build_record
 
     record = build_record(model, scenario, values, loop)
     if backend == "native":

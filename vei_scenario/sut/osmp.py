@@ -29,7 +29,6 @@ import zipfile
 from dataclasses import dataclass
 from pathlib import Path
 
-from vei_scenario.fmu.osmp_parameters import BuildRecord, read_record
 from vei_scenario.sut.contract import ControllerFault
 
 OSMP_TOOL = "net.pmsf.osmp"
@@ -64,6 +63,32 @@ class Binary:
     size: int
     mime: str
     osi_version: tuple[int, int, int]
+
+
+#: the element of a build record in a ``<VendorAnnotations><Tool>`` of the modelDescription
+BUILD = "Build"
+
+
+@dataclass(frozen=True)
+class BuildRecord:
+    """What a participant built by a tool says it was built for (``<Tool name=...><Build resolver=
+    "MODULE:FUNCTION" model=... fixed=DIGEST><Parameter name= value=/>...``): the function that gives
+    its declared parameters for a run (vei's :func:`vei_scenario.fmu.osmp_parameters.run_values`),
+    its model, a digest of what it holds fixed, the scenario's parameter values of the build."""
+
+    resolver: str
+    model: str
+    digest: str
+    parameters: tuple[tuple[str, str], ...]
+
+
+def read_record(root) -> BuildRecord | None:
+    """The build record in a parsed modelDescription, if a tool wrote one."""
+    el = root.find(f"VendorAnnotations/Tool/{BUILD}[@resolver]")
+    if el is None:
+        return None
+    params = tuple((p.get("name", ""), p.get("value", "")) for p in el.iterfind("Parameter"))
+    return BuildRecord(el.get("resolver", ""), el.get("model", ""), el.get("fixed", ""), params)
 
 
 @dataclass(frozen=True)
