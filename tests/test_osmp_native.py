@@ -468,3 +468,12 @@ def test_multi_scooters_participants_built_with_the_defaults_take_the_runs_param
     got = run_scenario(multi, values, controllers=parse_controller_options([f"Ego={fmus['cap']}",
                                                                             f"scooter_2={fmus['sfm']}"]))  # fmt: skip
     assert _deviation(run_scenario(multi, values), got) <= 1e-6
+
+
+def test_a_participant_built_from_another_scenario_is_refused_in_one_line(multi, defaults_built):
+    from vei_scenario.sut import ControllerFault
+
+    with pytest.raises(ControllerFault) as err:
+        run_scenario(multi, {}, controllers=parse_controller_options([f"Ego={defaults_built['cap']}"]))
+    assert str(err.value).endswith("vei_cap_osmp.fmu was built from another scenario (what it holds fixed differs "
+                                   "from scenario.xosc's): build it from this one")  # fmt: skip

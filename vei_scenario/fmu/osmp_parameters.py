@@ -108,6 +108,16 @@ def _loop(scenario: str, stamp: int, values: tuple[tuple[str, str], ...]):
     return osmp_loop(scenario, dict(values))
 
 
+def _builds(scenario: Path, built: dict[str, str], record: BuildRecord) -> bool:
+    """Whether ``scenario`` with the build's values gives what the participant holds fixed (else it
+    was built from another scenario, or this one has changed since)."""
+    try:
+        loop = _loop(str(scenario.resolve()), scenario.stat().st_mtime_ns, tuple(sorted(built.items())))
+    except VeiInputError:
+        return False
+    return fixed_digest(record.model, loop) == record.digest
+
+
 def run_values(fmu: str, record: BuildRecord, scenario: Path, values: dict[str, str], label: str) -> dict[str, str]:
     """The declared parameters of the participant ``fmu`` (its file name) with ``record``, for the run
     of ``scenario`` with the parameter values ``values``: as the built-in models get them, from the
@@ -120,7 +130,7 @@ def run_values(fmu: str, record: BuildRecord, scenario: Path, values: dict[str, 
     if fixed_digest(record.model, loop) != record.digest:
         built = dict(record.parameters)
         changed = [k for k in values if k in built and values[k] != built[k]]
-        if not changed:
+        if not changed or not _builds(scenario, built, record):
             raise ControllerFault(label, f"{fmu} was built from another scenario (what it holds fixed differs from "
                                   f"{scenario.name}'s): build it from this one")  # fmt: skip
         run = ", ".join(f"{k}={values[k]}" for k in changed)
