@@ -87,12 +87,26 @@ _EGO_ALIASES = [
     ),
     re.compile(r"\b(?:the\s+)?(?:insured|my\s+client|our\s+client|the\s+claimant)(?:'s\s+(?:vehicle|car))?\b"),
     re.compile(r"\b(?:our|my)\s+(?:vehicle|own\s+car|own\s+vehicle)\b"),
+    re.compile(
+        r"\b(?:the\s+|a\s+)?(?:(?:vehicle|car)\s+under\s+test|test\s+(?:car|vehicle)|subject\s+(?:vehicle|car)|"
+        r"ego\s+(?:vehicle|car|veh)|insured\s+(?:vehicle|car)|ego)\b"
+    ),
 ]
+#: The ego named again in apposition: "the ego (the ego, the ego)", "the ego, the ego,", "the driver of the
+#: ego": one ego.
+_EGO_AGAIN = re.compile(
+    r"\bthe ego(?:\s*\(\s*(?:the ego|which is the ego|i\.e\. the ego)(?:\s*,\s*the ego)*\s*\)|"
+    r"\s*,\s*(?:which is |i\.e\. )?the ego\s*(?=,))+"
+)
 #: The other party of a statement: "V2", "Vehicle 2", "Unit 2", "D2" (3, 4 ...).
-_OTHER = re.compile(r"\b(?:vehicle|veh\.?|unit|v|d)\s*-?\s*([2-9])\b(?!\s*(?:m|km|mph|s)\b)")
+_OTHER = re.compile(
+    r"\b(?:(?:the|a|an)\s+)?(?:(?:vehicle|veh\.?|unit|v|d)\s*-?\s*([2-9])\b(?!\s*(?:m|km|mph|s)\b)|"
+    r"(?:pov|principal other vehicle)\s*-?\s*([1-9]?)\b|third[- ]party(?:'s)?\s+(?:vehicle|car)\b)"
+)
 #: An apposition after it: "V2, a white Transit van," / "Unit 2, a pedal cyclist,".
 _APPOSITION = re.compile(
-    r"\s*,?\s*(?:an?|the)\s+([^,.;]+?)(?=\s*(?:,|\.|;|\s+(?:travell\w*|driving|was|were|who|which|in|on|at)\b))"
+    r"\s*(?:,?\s*(?:an?|the)\s+([^,.;()]+?)(?=\s*(?:,|\.|;|\s+(?:travell\w*|driving|was|were|who|which|in|on|at)\b))|"
+    r"\(\s*(?:an?\s+|the\s+)?([^,.;()]+?)\s*\))"
 )
 
 
@@ -102,15 +116,22 @@ def _other_parties(text: str, known_noun) -> str:
     names: dict[str, str] = {}
     out, pos = [], 0
     for m in _OTHER.finditer(text):
-        code = m.group(1)
+        code = m.group(1) or m.group(2) or m.group(0).split()[-1]
         out.append(text[pos : m.start()])
         pos = m.end()
+        if text[: m.start()].rstrip().endswith("(") and text[m.end() :].lstrip().startswith(")"):
+            # "an e-scooter rider (V2)": the code of the road user just named; later mentions are that one
+            named = known_noun(" ".join(text[: m.start()].rstrip()[:-1].split()[-4:]))
+            names.setdefault(code, named or "car")
+            out[-1] = out[-1].rstrip()[:-1]
+            pos = text.index(")", m.end()) + 1
+            continue
         if code in names:
             out.append(f"the {names[code]}")
             continue
         app = _APPOSITION.match(text, m.end())
         if app is not None:
-            phrase = app.group(1)
+            phrase = app.group(1) or app.group(2)
             noun = known_noun(phrase)
             names[code] = noun or "car"
             out.append(f"a {phrase}" if noun else f"a {phrase} car")
@@ -145,17 +166,77 @@ def _headings(text: str) -> str:
     return _HEADING.sub(sub, text)
 
 
+#: Shorthand of radio reports, notes and chat, said in full ("M/bike from L arm", "ego veh NB",
+#: "lt traffic", "dual c/way", "doesnt", "nite"): the same words every writer's shorthand stands for.
+_SHORTHAND = [
+    (re.compile(r"\bm/(?:bike|cycle)s?\b|\bm/c\b"), "motorbike"),
+    (re.compile(r"\bp/cycle\b|\bpedal cycle\b"), "bicycle"),
+    (re.compile(r"\bc/way\b"), "carriageway"),
+    (re.compile(r"\brd\b"), "road"),
+    (re.compile(r"\b(?:jct|jcn|junc)\b\.?"), "junction"),
+    (re.compile(r"\bvehs\b\.?"), "vehicles"),
+    (re.compile(r"\bveh\b\.?"), "vehicle"),
+    (re.compile(r"\bpeds?\b"), "pedestrian"),
+    (re.compile(r"\b(?:lt|lite)\b(?= (?:traffic|rain|snow|fog)\b)"), "light"),
+    (re.compile(r"\b(?:hvy|hevy)\b"), "heavy"),
+    (re.compile(r"\b(?:mod|med)\b\.?(?= traffic\b)"), "moderate"),
+    (re.compile(r"\bnb\b"), "northbound"),
+    (re.compile(r"\bsb\b"), "southbound"),
+    (re.compile(r"\beb\b"), "eastbound"),
+    (re.compile(r"\bwb\b"), "westbound"),
+    # a single L or R where a side is said: "from L arm", "lane to the R", "on the L", "R turn"
+    (re.compile(r"\b(from|to|on|at|in|the|turning|turns|turn)( the)? l\b(?!')"), r"\1\2 left"),
+    (re.compile(r"\b(from|to|on|at|in|the|turning|turns|turn)( the)? r\b(?!')"), r"\1\2 right"),
+    (re.compile(r"\bl(?= (?:arm|lane|side|kerb|edge|turn)\b)"), "left"),
+    (re.compile(r"\br(?= (?:arm|lane|side|kerb|edge|turn)\b)"), "right"),
+    # "doesnt", "dosnt", "didnt", "wasnt": the verb, then "not" (as "doesn't" is read)
+    (re.compile(r"\b(does|dos|doe|do|did|is|was|were|are|could|would|should|has|have|had)nt\b"), r"\1 not"),
+    (re.compile(r"\bcant\b"), "can not"),
+    (re.compile(r"\bwont\b"), "will not"),
+    (re.compile(r"\bdos\b(?= not\b)"), "does"),
+    (re.compile(r"\b(?:nite|nyt)\b"), "night"),
+    (re.compile(r"\btonite\b"), "tonight"),
+    (re.compile(r"\binfront\b"), "in front"),
+    (re.compile(r"\bthru\b"), "through"),
+]
+#: Lengths in other units, as metres ("50 feet": 15.2 m), and the clock said in other ways.
+_FOOT_M, _YARD_M = 0.3048, 0.9144
+_LENGTHS = re.compile(r"(\d+(?:\.\d+)?)\s*(feet|foot|ft|yards?|yds?)\b(?! (?:per|a) second)")
+#: "1930 hrs", "0750h": a four-digit clock; "6pm", "3 in the afternoon", "9 at night": the hour said.
+_FOUR_DIGIT_CLOCK = re.compile(r"\b([01]\d|2[0-3])([0-5]\d)\s*(?:hrs|hours|h)\b")
+_HOUR_OF = re.compile(r"\b(1[0-2]|0?[1-9])(?: o'?clock)? (in the (?:morning|afternoon|evening)|at night)\b")
+_HALF = {"in the morning": "am", "in the afternoon": "pm", "in the evening": "pm", "at night": "pm"}
+
+
+def _hour_of(m: re.Match) -> str:
+    hour = int(m.group(1))
+    half = _HALF[m.group(2)] if not (m.group(2) == "at night" and hour in (12, 1, 2, 3, 4)) else "am"
+    return f"{hour} {half} {m.group(2)}"
+
+
+def _lengths(m: re.Match) -> str:
+    per = _YARD_M if m.group(2).startswith("y") else _FOOT_M
+    return f"{float(m.group(1)) * per:.1f} m"
+
+
 def normalise(text: str, known_noun=lambda phrase: None) -> str:
     """``text`` (lowercased) with numbers in words, units, and the parties of a statement said the
     way the reader reads them. ``known_noun(phrase)`` returns the road-user noun a phrase ends in,
     or None."""
     text = re.sub(r"(\d)\s*([ap])\.\s?m\.?", r"\1 \2m", text)  # "6 a.m.": "6 am" (no sentence ends there)
+    text = re.sub(r"(\d)([ap]m)\b", r"\1 \2", text)  # "6pm": "6 pm"
+    for pattern, repl in _SHORTHAND:
+        text = pattern.sub(repl, text)
+    text = _FOUR_DIGIT_CLOCK.sub(r"\1:\2", text)
     for pattern, repl in _UNITS:
         text = pattern.sub(repl, text)
     text = _numbers_in_words(text)
     for pattern, repl in _UNITS:  # ("10 meter per second" once its number is digits)
         text = pattern.sub(repl, text)
+    text = _LENGTHS.sub(_lengths, text)
+    text = _HOUR_OF.sub(_hour_of, text)
     text = re.sub(r"\b(?:approx\.?|approximately|circa|ca\.|roughly|around|maybe|some|like)\s+(?=\d)", "about ", text)
+    text = re.sub(r"~\s*(?=\d)", "about ", text)
     text = re.sub(r"(\d+(?:\.\d+)?)\s*-\s*(?=km/h|mph|m/s|m\b)", r"\1 ", text)
     # "our speed is 100 km/h", "we have 40 km/h", "we are 50 km/h": the ego's speed
     text = re.sub(
@@ -180,6 +261,8 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     text = re.sub(r"\btraffic (?:is|was|were) (?:very |quite |fairly )?(light|moderate|heavy)\b", r"\1 traffic", text)
     for pattern in _EGO_ALIASES:
         text = pattern.sub("the ego", text)
+    text = re.sub(r"\b(?:the )?(?:driver|rider|operator) of the ego\b", "the ego", text)
+    text = _EGO_AGAIN.sub("the ego", text)
     text = _other_parties(text, known_noun)
     text = _headings(text)
     text = re.sub(r"\bthe ego's (?:vehicle|car)\b", "the ego", text)

@@ -256,7 +256,16 @@ def _actor_noun_in(phrase: str) -> str | None:
     return None
 
 
-def _tokens(text: str) -> list[str]:
+@lru_cache(maxsize=1)
+def _speller():
+    from vei_scenario.language.spelling import Speller
+
+    return Speller({w for key in TABLE for w in key} | FUNCTION_WORDS)
+
+
+def _tokens(text: str, spell: bool = True) -> list[str]:
+    """The words of ``text`` as the reader reads them (normalised; a misspelt word as the word it is
+    one slip from, unless ``spell`` is false)."""
     text = text.lower().replace("\u2019", "'").replace("’", "'")
     text = normalise(text, _actor_noun_in)
     text = ncap_rewrite(text, _actor_word)
@@ -274,6 +283,8 @@ def _tokens(text: str) -> list[str]:
             continue
         else:
             out.append(tok)
+    if spell:
+        out = [_speller().correct(tok) for tok in out]
     return out
 
 
@@ -401,6 +412,8 @@ def _number(tokens: list[str], i: int) -> tuple[str, float, int] | None:
         return "accel", value, 2
     if nxt in ("s", "sec", "seconds", "second", "g", "%", "deg", "degrees", "kg", "km"):
         return "skip", value, 2
+    if nxt in (":", "am", "pm", "hrs", "hours", "o'clock", "oclock"):  # ("about 6 pm", "at 07:50"): a time of day
+        return "skip", value, 4 if nxt == ":" and i + 2 < len(tokens) and tokens[i + 2].isdigit() else 2
     if nxt in ("to", "-") and i + 3 < len(tokens) and re.fullmatch(r"\d+(?:\.\d+)?", tokens[i + 2]):
         unit = tokens[i + 3]
         if unit in V.SPEED_UNITS:  # "from 50 to 20 km/h": the speed, then the one it goes to
@@ -429,7 +442,9 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
     tokens = _tokens(text)
     clauses: list[tuple[str, list[_Mention]]] = [("sequence", [])]
     ignored: list[str] = []
-    read_as: list[tuple[str, str]] = []
+    read_as: list[tuple[str, str]] = [
+        (typed, read) for typed, read in zip(_tokens(text, spell=False), tokens) if typed != read
+    ]
     i = 0
     while i < len(tokens):
         tok = tokens[i]
