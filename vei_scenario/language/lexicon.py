@@ -926,8 +926,10 @@ MAPS = {
         "carriageway",
     ),
 }
+#: Weather words that are also colours ("a grey Audi"): before a thing's name, its colour.
+COLOURS = frozenset(("grey", "gray", "dull"))
 WEATHER = {
-    "rain": ("rain", "rainy", "raining", "wet", "drizzle", "drizzly", "shower"),
+    "rain": ("rain", "rainy", "raining", "wet", "drizzle", "drizzly", "drizzling", "shower", "rainfall"),
     "heavy_rain": (
         "heavy rain",
         "pouring",
@@ -941,6 +943,10 @@ WEATHER = {
         "bucketing down",
         "driving rain",
         "cloudburst",
+        "chucking it down",
+        "tipping it down",
+        "pouring it down",
+        "heavy rainfall",
     ),
     "fog": ("fog", "foggy", "mist", "misty", "haze", "hazy"),
     "snow": (
@@ -988,15 +994,20 @@ TIMES = {
         "nightfall",
         "sundown",
         "after sunset",
+        "dusky",
+        "civil twilight",
     ),
     "20:00": ("evening",),
     "17:30": ("rush hour", "commute"),
 }
 DENSITY = {
-    "none": ("no traffic", "empty road", "empty", "quiet", "deserted"),
+    "none": ("no traffic", "empty road", "empty", "quiet", "deserted", "no other traffic", "no background traffic",
+             "no other vehicles", "nothing else about", "no one else about", "nobody else about"),
     "light": ("light traffic", "sparse traffic", "little traffic", "few cars", "low traffic", "low traffic volume"),
-    "moderate": ("moderate traffic", "some traffic"),
-    "heavy": ("heavy traffic", "dense traffic", "busy", "congested", "congestion", "rush hour", "jam", "stop-and-go"),
+    "moderate": ("moderate traffic", "some traffic", "moderately busy", "medium traffic", "fairly busy"),
+    "heavy": ("heavy traffic", "dense traffic", "busy", "congested", "congestion", "rush hour", "jam", "stop-and-go",
+              "much traffic", "lots of traffic", "a lot of traffic", "bumper to bumper", "bumper-to-bumper",
+              "high traffic"),
 }
 LANES = {
     1: ("single-lane", "one-lane", "single lane", "narrow"),

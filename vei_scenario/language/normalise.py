@@ -223,11 +223,26 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     """``text`` (lowercased) with numbers in words, units, and the parties of a statement said the
     way the reader reads them. ``known_noun(phrase)`` returns the road-user noun a phrase ends in,
     or None."""
+    # a list (bullets, numbered steps, one item a line): each item its own sentence
+    text = re.sub(r"^\s*(?:[-*\u2022\u00b7\u2013]|\d{1,2}[.)])\s+", "", text)
+    text = re.sub(r"\s*\n\s*(?:(?:[-*\u2022\u00b7\u2013]|\d{1,2}[.)])\s+)?", ". ", text)
     text = re.sub(r"(\d)\s*([ap])\.\s?m\.?", r"\1 \2m", text)  # "6 a.m.": "6 am" (no sentence ends there)
     text = re.sub(r"(\d)([ap]m)\b", r"\1 \2", text)  # "6pm": "6 pm"
     for pattern, repl in _SHORTHAND:
         text = pattern.sub(repl, text)
     text = _FOUR_DIGIT_CLOCK.sub(r"\1:\2", text)
+    # "..., PM." / "Snowing, AM": the half of the day said alone
+    text = re.sub(r"(^|[,.;:]\s*)am(?=\s*(?:[,.;!]|$))", r"\1morning", text)
+    text = re.sub(r"(^|[,.;:]\s*)pm(?=\s*(?:[,.;!]|$))", r"\1afternoon", text)
+    # "the sun was going down": sunset
+    text = re.sub(r"\b(?:the )?sun (?:was |is )?(?:going down|setting|low in the sky)\b", "sunset", text)
+    # "traffic: none", "background traffic density: high", "density: moderate": the traffic said as a field
+    text = re.sub(
+        r"\b(?:(?:background )?traffic(?: density)?|density)\s*:\s*(none|nil|zero|light|low|moderate|medium|heavy|high)\b",
+        lambda m: {"nil": "no traffic", "zero": "no traffic", "none": "no traffic", "low": "light traffic",
+                   "medium": "moderate traffic", "high": "heavy traffic"}.get(m.group(1), f"{m.group(1)} traffic"),
+        text,
+    )  # fmt: skip
     for pattern, repl in _UNITS:
         text = pattern.sub(repl, text)
     text = _numbers_in_words(text)

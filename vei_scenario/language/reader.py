@@ -260,7 +260,9 @@ def _actor_noun_in(phrase: str) -> str | None:
 def _speller():
     from vei_scenario.language.spelling import Speller
 
-    return Speller({w for key in TABLE for w in key} | FUNCTION_WORDS)
+    # (and the outcome's words, read from the whole text)
+    outcome = {"collision", "collide", "crash", "accident", "contact", "afternoon", "morning", "evening", "night"}
+    return Speller({w for key in TABLE for w in key} | FUNCTION_WORDS | outcome)
 
 
 def _tokens(text: str, spell: bool = True) -> list[str]:
@@ -570,6 +572,11 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
         slot, value = TABLE[key]
         before = tokens[i - 1] if i else ""
         attributive = before in _DETERMINERS or (before.isalpha() and before not in FUNCTION_WORDS)
+        if slot == "weather" and key[-1] in L.COLOURS and before in _DETERMINERS and _names_a_thing(tokens, i + 1):
+            # "a grey Audi", "the grey one": the colour of something, not the sky
+            ignored.extend(key)
+            i += len(key)
+            continue
         if slot in ("weather", "time", "density", "map") and attributive and _modifies_actor(tokens, i + len(key)):
             # "a parked ice cream van", "a night bus": a word of the setting naming what kind of road user
             j = next(k for k in range(i + len(key), len(tokens)) if _actor_at(tokens, k))
@@ -735,6 +742,15 @@ def _new_unknown_subject(tokens: list[str], i: int) -> bool:
     if j < 0 or tokens[j] not in ("a", "an", "another", "some"):
         return False
     return (tokens[j - 1] if j else "") in _OPENERS
+
+
+def _names_a_thing(tokens: list[str], j: int) -> bool:
+    """Whether the word at ``j`` is a noun the reader has no setting entry for ("Audi", "one"): a
+    colour before it is that thing's colour."""
+    if j >= len(tokens) or not tokens[j].isalpha():
+        return False
+    key = _best(tokens, j)
+    return key is None or TABLE[key][0] == "actor" or tokens[j] == "one"
 
 
 def _modifies_actor(tokens: list[str], j: int) -> bool:
