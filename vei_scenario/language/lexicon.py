@@ -807,6 +807,14 @@ CRITICALITY = {
         "ttc about",
         "bumper",
         "the whole way",
+        "too early",
+        "too soon",
+        "too late",
+        "too close",
+        "too short",
+        "last moment",
+        "in last moment",
+        "in the last moment",
     ),
     "moderate": (
         "normally",
@@ -851,6 +859,11 @@ CRITICALITY = {
         "leisurely",
         "keep a large distance",
         "from far",
+        "good distance",
+        "a good distance",
+        "well clear",
+        "wide berth",
+        "room to spare",
     ),
 }
 INTENTS = {

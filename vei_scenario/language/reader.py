@@ -1574,6 +1574,7 @@ def read(text: str) -> Reading:
         r.ego_speed_mps = actors[0].speed_mps  # "Following a truck at 60 km/h": both at that speed
     _parked(actors, r.actors)
     _cut_outs(r.actors)
+    _criticality_said_apart(clauses, r.actors)
     if r.map_kind is None and any(s.relation == "junction_opposite" for s in r.actors):
         r.map_kind = "crossroad"
     r.ignored = list(dict.fromkeys(ignored))
@@ -1588,6 +1589,18 @@ def read(text: str) -> Reading:
     if r.weather in (None, "rain") and stated_heavy_rain(said):
         r.weather = "heavy_rain"
     return r
+
+
+def _criticality_said_apart(clauses, specs: list[ActorSpec]) -> None:
+    """A manner said of the encounter in a clause of its own ("Ego passes with plenty of room", "the
+    distance is only 5 m, too early"): with one road user in the scene and nothing said of how it moves,
+    that manner is its (one class said, none contradicting it)."""
+    said = {m.value for _, mentions in clauses for m in mentions if m.slot == "criticality"}
+    acting = [s for s in specs if s.speed_mps != 0.0 or any(b[0] not in ("keep_going", "stop") for b in s.behaviours)]
+    if len(said) != 1 or len(acting) != 1 or any(b[2] for b in acting[0].behaviours):
+        return
+    crit = said.pop()
+    acting[0].behaviours = [(name, cfg, crit, link) for name, cfg, _, link in acting[0].behaviours]
 
 
 #: What someone does when a road user comes into its path: braking, slowing, stopping.
