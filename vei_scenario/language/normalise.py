@@ -238,7 +238,8 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     text = re.sub(r"\b(?:the )?sun (?:was |is )?(?:going down|setting|low in the sky)\b", "sunset", text)
     # "traffic: none", "background traffic density: high", "density: moderate": the traffic said as a field
     text = re.sub(
-        r"\b(?:(?:background )?traffic(?: density)?|density)\s*:\s*(none|nil|zero|light|low|moderate|medium|heavy|high)\b",
+        r"\b(?:(?:background )?traffic(?: density)?|density)\s*:\s*"
+        r"(none|nil|zero|light|low|moderate|medium|heavy|high)\b",
         lambda m: {"nil": "no traffic", "zero": "no traffic", "none": "no traffic", "low": "light traffic",
                    "medium": "moderate traffic", "high": "heavy traffic"}.get(m.group(1), f"{m.group(1)} traffic"),
         text,

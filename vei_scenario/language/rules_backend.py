@@ -39,7 +39,10 @@ def _config(rng: random.Random, name: str, given: dict, crit: str | None) -> tup
     mod = BEHAVIOURS[name]
     profiles = mod.PROFILES
     # (a behaviour with no profiles keeps the class its wording says: "rides along ... with plenty of room")
-    cls = crit if crit in profiles or (crit and not profiles) else (rng.choice(CRITICALITY_CLASSES) if profiles else None)
+    if crit in profiles or (crit and not profiles):
+        cls = crit
+    else:
+        cls = rng.choice(CRITICALITY_CLASSES) if profiles else None
     cfg: dict[str, object] = {}
     ranges = profiles.get(cls, {}) if cls else {}
     for pname in mod.PARAMETERS:
