@@ -228,6 +228,15 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     text = re.sub(r"\s*\n\s*(?:(?:[-*\u2022\u00b7\u2013]|\d{1,2}[.)])\s+)?", ". ", text)
     text = re.sub(r"(\d)\s*([ap])\.\s?m\.?", r"\1 \2m", text)  # "6 a.m.": "6 am" (no sentence ends there)
     text = re.sub(r"(\d)([ap]m)\b", r"\1 \2", text)  # "6pm": "6 pm"
+    # the reader addressed ("you're doing 50 km/h", "your lane", "you brake hard"): the ego, as "I" is
+    text = re.sub(r"\byou(?:'re| are| were)\b", "i am", text)
+    text = re.sub(r"\byour\b", "my", text)
+    text = re.sub(
+        r"\byou(?= (?:just |then |also )?(?:brake|stop|pass|slow|swerve|drive|turn|overtake|follow|approach|hit|"
+        r"rear-end|go|come|get|see|keep|manage|miss)\w*)",
+        "i",
+        text,
+    )
     for pattern, repl in _SHORTHAND:
         text = pattern.sub(repl, text)
     text = _FOUR_DIGIT_CLOCK.sub(r"\1:\2", text)
@@ -282,4 +291,20 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     text = _other_parties(text, known_noun)
     text = _headings(text)
     text = re.sub(r"\bthe ego's (?:vehicle|car)\b", "the ego", text)
+    # "speed of the ego is 25 km/h", "ego: 30 km/h", "like 35 kph for me": the ego's speed
+    text = re.sub(r"\bspeed of the ego (?:is |was |:)?\s*(?=(?:about )?\d)", "the ego drives at ", text)
+    text = re.sub(r"\bthe ego\s*:\s*(?=(?:about )?\d+(?:\.\d+)? (?:km/h|mph|m/s)\b)", "the ego drives at ", text)
+    text = re.sub(
+        r"((?:about )?\d+(?:\.\d+)? (?:km/h|mph|m/s)) for (?:me|us|the ego|my car|my vehicle)\b",
+        r"the ego drives at \1",
+        text,
+    )
+    # "the ego was following a lorry", "I'm following a bus": the description opens with the ego
+    # following, so what it follows is ahead
+    text = re.sub(
+        r"^(?:the ego|i|we)(?: (?:am|is|are|was|were|also|just|then))* (?:follow|follows|followed|following|tailing) "
+        r"(?=(?:a|an|the|one) )",
+        "following ",
+        text,
+    )
     return text
