@@ -299,11 +299,18 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
         r"the ego drives at \1",
         text,
     )
+    # "struck the ego on its nearside", "hit me in the rear door": where on the ego's body, not a side of the road
+    text = re.sub(
+        r"\b((?:struck|strikes|hit|hits|impacted|clipped|collided with|made contact with) (?:the ego|me|us|my car)) "
+        r"(?:on|in|at) (?:its|the|my|our) (?:nearside|offside|left|right|front|rear|back|side)[a-z -]*?(?=[,.;!]|$)",
+        r"\1",
+        text,
+    )
     # "the ego was following a lorry", "I'm following a bus": the description opens with the ego
     # following, so what it follows is ahead
     text = re.sub(
         r"^(?:the ego|i|we)(?: (?:am|is|are|was|were|also|just|then))* (?:follow|follows|followed|following|tailing) "
-        r"(?=(?:a|an|the|one) )",
+        r"(?=[a-z])",
         "following ",
         text,
     )

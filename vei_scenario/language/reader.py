@@ -1368,8 +1368,10 @@ def read(text: str) -> Reading:
                 if isinstance(who, _Actor) and role in ("subject", "participle") and who.crit is None:
                     who.crit = crit_here
         if not named and actors and any(p.slot == "distance" for p in pending):
-            for p in [p for p in pending if p.slot == "distance"]:  # ("..., 40 m gap": to the one named last)
-                _apply(p, actors[-1], r, link, added)
+            # ("..., 40 m gap": to the one named last that moves; parked cars are where it comes from)
+            moving = [a for a in actors if not a.stationary] or actors
+            for p in [p for p in pending if p.slot == "distance"]:
+                _apply(p, moving[-1], r, link, added)
             pending = [p for p in pending if p.slot != "distance"]
         if not named and pending and any(p.slot == "speed" for p in pending) and r.ego_speed_mps is None:
             # "Going straight over the junction at 30 km/h while ...": a clause with nobody named is the ego's
