@@ -226,6 +226,7 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     # a list (bullets, numbered steps, one item a line): each item its own sentence
     text = re.sub(r"^\s*(?:[-*\u2022\u00b7\u2013]|\d{1,2}[.)])\s+", "", text)
     text = re.sub(r"\s*\n\s*(?:(?:[-*\u2022\u00b7\u2013]|\d{1,2}[.)])\s+)?", ". ", text)
+    text = re.sub(r"\s*\|\s*|\s+/\s+", ". ", text)  # fields between bars or spaced slashes: one a sentence
     text = re.sub(r"(\d)\s*([ap])\.\s?m\.?", r"\1 \2m", text)  # "6 a.m.": "6 am" (no sentence ends there)
     text = re.sub(r"(\d)([ap]m)\b", r"\1 \2", text)  # "6pm": "6 pm"
     # the reader addressed ("you're doing 50 km/h", "your lane", "you brake hard"): the ego, as "I" is
