@@ -300,6 +300,14 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
         r"the ego drives at \1",
         text,
     )
+    text = re.sub(r"\b(let|lets|letting)\s+(?:me|us)\b", r"\1 the ego", text)  # (whom it lets go: the ego)
+    # "my line", "right line", "two line for each side": a lane in a learner's English ("stop line" stays)
+    text = re.sub(
+        r"\b(my|his|her|its|right|left|same|next|other|opposite|inside|outside|middle|one|two|three|four|\d) "
+        r"line(s?)\b",
+        r"\1 lane\2",
+        text,
+    )
     # "struck the ego on its nearside", "hit me in the rear door": where on the ego's body, not a side of the road
     text = re.sub(
         r"\b((?:struck|strikes|hit|hits|impacted|clipped|collided with|made contact with) (?:the ego|me|us|my car)) "

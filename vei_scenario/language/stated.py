@@ -42,7 +42,8 @@ _NEAR = re.compile(
     r"by (?:centimetres|centimeters|millimetres|millimeters|a few (?:cm|centimetres|inches|feet))|"
     r"stops? in time|stopped in time|(?:at the )?last (?:second|moment|minute)|"
     r"(?:a|about a|1|one|half a|0\.5) (?:metre|meter|m|foot|yard) to spare|"
-    r"(?:was|were|is) (?:a bit |very |really |pretty |quite )?(?:tight|close))"
+    r"(?:was|were|is) (?:a bit |very |really |pretty |quite )?(?:tight|close)|but (?:very |really |quite )?close|"
+    r"stopp?(?:ed|s|ing)? (?:about |only |just )?\d+(?:\.\d+)? (?:m|metres?|meters?|feet|foot) (?:off|from|short))"
 )
 #: A sentence that is only the outcome, as a commentary says it ("Close!", "Clean.").
 _NEAR_SENTENCE = re.compile(r"(?:^|[.!?;] )(?:very |so |too |that was )?close (?:one |call |shave )?(?:[.!?]|$)")
@@ -51,9 +52,11 @@ _SAFE = re.compile(
     r"\b(?:safely|safe distance|without (?:any )?(?:problems?|conflict|incident|drama|issue|issues)|"
     r"no problems?|no drama|no conflict|no incident|uneventful|plenty of (?:room|space)|lots of (?:room|space)|"
     r"enough (?:room|space)|comfortably|let us go|lets us go|let me go|lets me go|gets through safely|"
+    r"lets? the ego (?:go|pass|through|by|past)|"
     r"(?:loads|lots|heaps|tons|a lot) of (?:room|space)|room to spare|ample (?:margin|room|space|clearance)|"
     r"clearance (?:exceeds|of more than|above)|(?:all|totally|completely|everything|it was|was) fine|all good|"
-    r"nothing (?:else )?(?:happened|happening|happens)|nothing dramatic|nobody close|no one close|"
+    r"nothing (?:else )?(?:happened|happening|happens|happen)|nothing dramatic|"
+    r"(?:pass|passes|passed|goes|went) (?:\S+ )?fine|nobody close|no one close|"
     r"pass(?:es|ed)? (?:him|her|it|them|the \S+ )?wide)"
 )
 
