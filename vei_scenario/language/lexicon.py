@@ -158,6 +158,7 @@ CAR_NOUNS = (
     "jeep",
     "convertible",
     "red-light runner",
+    "obstacle",  # (something standing in the lane: a car's size is what the scenario places)
     "red light runner",
     "light runner",
 )

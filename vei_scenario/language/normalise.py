@@ -308,6 +308,16 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
         r"\1 lane\2",
         text,
     )
+    # something lying in the lane ("debris lying in our lane", "a pile of fallen pallets", "a fallen mattress
+    # lying in the left lane"): a standing obstacle, which a vehicle ahead may swerve round and reveal
+    text = re.sub(
+        r"\b(?:an? |the |some )?(?:(?:pile|load|piece|bits|heap) of )?(?:fallen |dropped |shed |lost |large |big )*"
+        r"(debris|pallets?|mattress(?:es)?|obstacles?|boxes|box|tyres?|tires?|rocks?|fallen tree|branch(?:es)?|"
+        r"traffic cones?|cones?|ladders?|objects?|load|cargo)\b(?= (?:lying|left|sitting|standing|in|on|blocking)\b)",
+        "a stationary obstacle",
+        text,
+    )
+    text = re.sub(r"\b(a stationary obstacle) (?:lying|left|sitting)\b", r"\1", text)
     # "struck the ego on its nearside", "hit me in the rear door": where on the ego's body, not a side of the road
     text = re.sub(
         r"\b((?:struck|strikes|hit|hits|impacted|clipped|collided with|made contact with) (?:the ego|me|us|my car)) "
