@@ -1577,6 +1577,8 @@ def read(text: str) -> Reading:
     _parked(actors, r.actors)
     _cut_outs(r.actors)
     _criticality_said_apart(clauses, r.actors)
+    for spec in r.actors:
+        spec.behaviours = _one_act_once(spec)
     if r.map_kind is None and any(s.relation == "junction_opposite" for s in r.actors):
         r.map_kind = "crossroad"
     r.ignored = list(dict.fromkeys(ignored))
@@ -1591,6 +1593,21 @@ def read(text: str) -> Reading:
     if r.weather in (None, "rain") and stated_heavy_rain(said):
         r.weather = "heavy_rain"
     return r
+
+
+def _one_act_once(spec: ActorSpec) -> list:
+    """Its behaviours with one act said twice read once: a walker or rider's crossing said again as
+    coming "into the ego's path" (a cut-in is a lane change, which they do not make after crossing), and
+    a hard stop said again as "came to a complete stop"."""
+    out: list = []
+    for b in spec.behaviours:
+        prev = out[-1][0] if out else None
+        if prev == "cross_in_front" and b[0] == "cut_in" and spec.kind in VULNERABLE:
+            continue
+        if prev == "sudden_stop" and b[0] == "stop":
+            continue
+        out.append(b)
+    return out
 
 
 def _criticality_said_apart(clauses, specs: list[ActorSpec]) -> None:
