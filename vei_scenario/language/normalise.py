@@ -318,6 +318,14 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
         text,
     )
     text = re.sub(r"\b(a stationary obstacle) (?:lying|left|sitting)\b", r"\1", text)
+    # "drifts over into my lane", "is change to my lane": a move into the ego's lane, whatever verb of motion says it
+    text = re.sub(
+        r"\b(?:is |was )?(?:drift\w*|change|changed|changing|wander\w*|veer\w*|slide|slides|slid|sliding|swing\w*|"
+        r"swung|come|comes|came|coming|go|goes|went|going)(?: over| across)? (?:in)?to "
+        r"(my|our|the ego's|the ego 's) lane\b",
+        r"moves into \1 lane",
+        text,
+    )
     # "struck the ego on its nearside", "hit me in the rear door": where on the ego's body, not a side of the road
     text = re.sub(
         r"\b((?:struck|strikes|hit|hits|impacted|clipped|collided with|made contact with) (?:the ego|me|us|my car)) "

@@ -757,8 +757,9 @@ def _modifies_actor(tokens: list[str], j: int) -> bool:
     """Whether a road user's name follows at ``j``, past at most two words the reader has no entry
     for ("ice [cream] van"): the words before it then say what kind it is."""
     for k in range(j, min(j + 3, len(tokens))):
-        if _actor_at(tokens, k):
-            return True
+        if _actor_at(tokens, k):  # (not the ego: "in the roundabout my car drives ...")
+            key = _best(tokens, k)
+            return key is None or TABLE[key] != ("actor", "ego")
         if _best(tokens, k) is not None or tokens[k] in FUNCTION_WORDS or not tokens[k].isalpha():
             return False
     return False
