@@ -568,3 +568,25 @@ def test_one_act_said_twice_is_read_once():
 
 def test_a_map_word_before_the_egos_own_name_is_the_map():
     assert _reading("In the roundabout my car drive 20 km/h, a van enters from the left.").map_kind == "roundabout"
+
+
+@pytest.mark.parametrize(
+    "text, lanes",
+    [
+        ("A 4-lane divided highway at 60 mph, a van ahead brakes hard.", 2),
+        ("Highway, 3 each direction, 60 mph, a van ahead brakes hard.", 3),
+        ("A single-carriageway road at 40 mph, a van ahead brakes hard.", 1),
+    ],
+)
+def test_lanes_said_as_a_total_of_a_divided_road_or_a_carriageway(text, lanes):
+    assert _reading(text).lanes == lanes
+
+
+def test_a_pickup_truck_is_a_van_and_a_curvy_road_a_curve():
+    r = _reading("On a curvy road a pickup truck ahead brakes hard.")
+    assert (r.map_kind, [a.kind for a in r.actors]) == ("curve", ["van"])
+
+
+def test_both_vehicles_after_the_event_are_no_new_road_users():
+    r = _reading("A cyclist crosses from the left kerb, near miss, both vehicles continued.")
+    assert [a.kind for a in r.actors] == ["bicycle"]

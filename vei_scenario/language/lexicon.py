@@ -118,7 +118,18 @@ ACTOR_NOUNS = {
         "streetcar",
         "trolleybus",
     ),
-    "van": ("van", "delivery van", "minivan", "transporter", "ambulance", "camper", "pickup", "pick-up"),
+    "van": (
+        "van",
+        "delivery van",
+        "minivan",
+        "transporter",
+        "ambulance",
+        "camper",
+        "pickup",
+        "pick-up",
+        "pickup truck",
+        "pick-up truck",
+    ),
 }
 CAR_NOUNS = (
     "car",
@@ -930,7 +941,19 @@ MAPS = {
         "priority road",
     ),
     "roundabout": ("roundabout", "traffic circle", "rotary"),
-    "curve": ("bend", "curve", "corner", "winding", "hairpin", "left-hand bend", "right-hand bend"),
+    "curve": (
+        "bend",
+        "curve",
+        "corner",
+        "winding",
+        "hairpin",
+        "left-hand bend",
+        "right-hand bend",
+        "curvy",
+        "bendy",
+        "twisty",
+        "curved",
+    ),
     "straight": (
         "motorway",
         "highway",
@@ -1001,7 +1024,7 @@ TIMES = {
     "08:30": ("morning",),
     "12:00": ("noon", "midday", "lunchtime"),
     "13:00": ("daylight", "daytime", "broad daylight", "during the day", "by day"),
-    "15:30": ("afternoon",),
+    "15:30": ("afternoon", "after lunch"),
     "19:30": (
         "dusk",
         "sunset",
@@ -1052,7 +1075,7 @@ DENSITY = {
     ),
 }
 LANES = {
-    1: ("single-lane", "one-lane", "single lane", "narrow"),
+    1: ("single-lane", "one-lane", "single lane", "narrow", "single carriageway", "single-carriageway"),
     2: ("two-lane", "dual-lane"),
     3: ("three-lane",),
     4: ("four-lane",),

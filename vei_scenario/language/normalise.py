@@ -326,6 +326,10 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
         r"moves into \1 lane",
         text,
     )
+    # "both vehicles continued": the ego and the other after the event, no new pair ("both cars at 50 km/h" stays)
+    text = re.sub(
+        r"\bboth (?:vehicles|vehicle|cars|parties)(?= (?:continued|carried|stopped|came|remained|were))", "they", text
+    )
     # "struck the ego on its nearside", "hit me in the rear door": where on the ego's body, not a side of the road
     text = re.sub(
         r"\b((?:struck|strikes|hit|hits|impacted|clipped|collided with|made contact with) (?:the ego|me|us|my car)) "

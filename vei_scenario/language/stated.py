@@ -84,7 +84,7 @@ def stated_outcome(text: str) -> str | None:
 _WORD_NUMBERS = {"one": 1, "two": 2, "three": 3, "four": 4, "1": 1, "2": 2, "3": 3, "4": 4}
 _N = r"(one|two|three|four|[1-4])"
 _EACH_WAY = re.compile(
-    _N + r"[ -]lanes? (?:each way|in each direction|per direction|each direction|in both directions|for each side|"
+    _N + r"(?:[ -]lanes?)? (?:each way|in each direction|per direction|each direction|in both directions|for each side|"
     r"on each side|each side|per side|a side|either way|in either direction|for each direction|in every direction)"
 )
 _OF_N = re.compile(
@@ -96,6 +96,14 @@ _TWO_LANE_ROAD = re.compile(r"\b(?:two|2)[ -]lane (?!motorway|highway|freeway|ex
 _DIVIDED = re.compile(r"\b(?:motorway|highway|freeway|expressway|autobahn|dual carriageway|one[ -]way)\b")
 
 
+#: "a 4-lane divided highway": lanes of both directions together on a road divided in two.
+_DIVIDED_TOTAL = re.compile(
+    r"\b(four|six|eight|4|6|8)[ -]lanes? (?:divided|dual)(?: carriageway)? ?"
+    r"(?:highway|freeway|motorway|road|expressway)?"
+)
+_TOTAL = {"four": 4, "six": 6, "eight": 8, "4": 4, "6": 6, "8": 8}
+
+
 def stated_lanes(text: str) -> int | None:
     """Lanes per direction a normalised, lowercased description states, where the reader's words do
     not settle it: "three lanes each way", "the middle lane of three", "a one-way street with two
@@ -104,6 +112,9 @@ def stated_lanes(text: str) -> int | None:
         m = pattern.search(text)
         if m is not None:
             return _WORD_NUMBERS[m.group(1)]
+    m = _DIVIDED_TOTAL.search(text)
+    if m is not None:
+        return _TOTAL[m.group(1)] // 2
     if _TWO_LANE_ROAD.search(text) and not _DIVIDED.search(text):
         return 1
     return None
