@@ -590,3 +590,8 @@ def test_a_pickup_truck_is_a_van_and_a_curvy_road_a_curve():
 def test_both_vehicles_after_the_event_are_no_new_road_users():
     r = _reading("A cyclist crosses from the left kerb, near miss, both vehicles continued.")
     assert [a.kind for a in r.actors] == ["bicycle"]
+
+
+@pytest.mark.parametrize("said, density", [("a quiet road", "light"), ("a dead quiet road", "none")])
+def test_a_quiet_road_has_a_little_traffic_a_dead_quiet_one_none(said, density):
+    assert _reading(f"On {said} a van ahead brakes hard.").density == density

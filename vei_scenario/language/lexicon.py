@@ -1046,7 +1046,7 @@ DENSITY = {
         "no traffic",
         "empty road",
         "empty",
-        "quiet",
+        "dead quiet",
         "deserted",
         "no other traffic",
         "no background traffic",
@@ -1055,7 +1055,15 @@ DENSITY = {
         "no one else about",
         "nobody else about",
     ),
-    "light": ("light traffic", "sparse traffic", "little traffic", "few cars", "low traffic", "low traffic volume"),
+    "light": (
+        "light traffic",
+        "sparse traffic",
+        "little traffic",
+        "few cars",
+        "low traffic",
+        "low traffic volume",
+        "quiet",  # (a quiet road has a little traffic; an empty or dead quiet one none)
+    ),
     "moderate": ("moderate traffic", "some traffic", "moderately busy", "medium traffic", "fairly busy"),
     "heavy": (
         "heavy traffic",

@@ -145,7 +145,7 @@ _DENSITY = re.compile(
     r"really )?(light|moderate|heavy|busy|quiet|dense|sparse|empty)\b"
 )
 _DENSITY_WORDS = {"light": "light", "sparse": "light", "moderate": "moderate", "heavy": "heavy", "busy": "heavy",
-                  "dense": "heavy", "quiet": "none", "empty": "none"}  # fmt: skip
+                  "dense": "heavy", "quiet": "light", "empty": "none"}  # fmt: skip
 
 
 def stated_density(text: str) -> str | None:
