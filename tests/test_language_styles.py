@@ -602,3 +602,13 @@ def test_a_rider_the_wrong_way_in_the_road_is_head_on_along_the_kerb_is_along_th
     assert (head_on.behaviours[0][0], head_on.relation) == ("wrong_way", "ahead")
     kerb = _reading("A cyclist rides the wrong way along the left kerb towards me.").actors[0]
     assert (kerb.behaviours[0][0], kerb.facing) == ("along_road", "against")
+
+
+def test_a_term_with_its_abbreviation_in_brackets_is_one_road_user():
+    r = _reading("A principal other vehicle (POV), a van, travels in the left lane and cuts in 8 m ahead.")
+    assert [(a.kind, a.behaviours[0][0]) for a in r.actors] == [("van", "cut_in")]
+
+
+def test_a_cut_across_the_egos_lane_to_turn_is_one_forced_turn():
+    r = _reading("At the crossroads the car in the lane to my right cuts across in front of me to turn left.")
+    assert [b[0] for b in r.actors[0].behaviours] == ["forced_turn"]

@@ -219,6 +219,23 @@ def _lengths(m: re.Match) -> str:
     return f"{float(m.group(1)) * per:.1f} m"
 
 
+_DEFINED = re.compile(r"\b((?:[a-z][\w-]* ){1,5})\(\s*([a-z]{2,6})\s*\)")
+
+
+def _acronyms_defined(text: str) -> str:
+    """A term and its abbreviation in brackets ("principal other vehicle (POV)", "subject vehicle (SV)"):
+    the term once, so the bracket is not read as a second road user."""
+
+    def sub(m: re.Match) -> str:
+        words, short = m.group(1).split(), m.group(2)
+        for n in range(1, len(words) + 1):
+            if "".join(w[0] for w in words[-n:]) == short:
+                return m.group(1).rstrip() + " "
+        return m.group(0)
+
+    return _DEFINED.sub(sub, text)
+
+
 def normalise(text: str, known_noun=lambda phrase: None) -> str:
     """``text`` (lowercased) with numbers in words, units, and the parties of a statement said the
     way the reader reads them. ``known_noun(phrase)`` returns the road-user noun a phrase ends in,
@@ -238,6 +255,7 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
         "i",
         text,
     )
+    text = _acronyms_defined(text)
     for pattern, repl in _SHORTHAND:
         text = pattern.sub(repl, text)
     text = _FOUR_DIGIT_CLOCK.sub(r"\1:\2", text)

@@ -1599,13 +1599,17 @@ def read(text: str) -> Reading:
 def _one_act_once(spec: ActorSpec) -> list:
     """Its behaviours with one act said twice read once: a walker or rider's crossing said again as
     coming "into the ego's path" (a cut-in is a lane change, which they do not make after crossing), and
-    a hard stop said again as "came to a complete stop"."""
+    a hard stop said again as "came to a complete stop", a cut across the ego's lane to turn said as a
+    cut-in first."""
     out: list = []
     for b in spec.behaviours:
         prev = out[-1][0] if out else None
         if prev == "cross_in_front" and b[0] == "cut_in" and spec.kind in VULNERABLE:
             continue
         if prev == "sudden_stop" and b[0] == "stop":
+            continue
+        if prev == "cut_in" and b[0] == "forced_turn":  # ("cuts across in front of me to turn left": one act)
+            out[-1] = b
             continue
         out.append(b)
     return out
