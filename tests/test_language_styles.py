@@ -612,3 +612,15 @@ def test_a_term_with_its_abbreviation_in_brackets_is_one_road_user():
 def test_a_cut_across_the_egos_lane_to_turn_is_one_forced_turn():
     r = _reading("At the crossroads the car in the lane to my right cuts across in front of me to turn left.")
     assert [b[0] for b in r.actors[0].behaviours] == ["forced_turn"]
+
+
+def test_the_car_is_the_ego_when_the_ego_is_the_only_car_named():
+    r = _reading("Ego car drives at 30 km/h, a cyclist comes out from the right, the car must brake hard.")
+    assert [a.kind for a in r.actors] == ["bicycle"]
+    two = _reading("My car at 30 km/h, a car pulls out from the left, the car stops.")  # (another car: that one)
+    assert [a.kind for a in two.actors] == ["car"]
+
+
+def test_an_oncoming_car_keeping_to_its_lane_is_no_wrong_way_driver():
+    (car,) = _reading("A car coming the other way keeps to its lane.").actors
+    assert (car.relation, car.behaviours[0][0]) == ("oncoming", "keep_lane")

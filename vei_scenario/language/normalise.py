@@ -222,6 +222,20 @@ def _lengths(m: re.Match) -> str:
 _DEFINED = re.compile(r"\b((?:[a-z][\w-]* ){1,5})\(\s*([a-z]{2,6})\s*\)")
 
 
+_EGO_AS_A_CAR = re.compile(r"\b(?:ego car|ego vehicle|my car|our car|my vehicle|our vehicle|test car)\b")
+_OTHER_CAR = re.compile(r"\b(?:a|an|another|one|other|some|second|third-party|third party)\s+(?:[a-z-]+\s+)?car\b")
+_THE_CAR = re.compile(r"\bthe car\b(?! (?:in front|ahead|behind|beside|next|on|in|from|that|which|coming))")
+
+
+def _the_car_is_the_ego(text: str) -> str:
+    """ "Ego car is driving ..., an e-scooter enters ..., the car must brake": with the ego named as a car
+    and no other car in the text, "the car" is the ego (not one placed in front or coming from somewhere)."""
+    if not _EGO_AS_A_CAR.search(text) or _OTHER_CAR.search(text):
+        return text
+    first = _EGO_AS_A_CAR.search(text).end()
+    return text[:first] + _THE_CAR.sub("the ego", text[first:])
+
+
 def _acronyms_defined(text: str) -> str:
     """A term and its abbreviation in brackets ("principal other vehicle (POV)", "subject vehicle (SV)"):
     the term once, so the bracket is not read as a second road user."""
@@ -303,6 +317,7 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     text = re.sub(r"\b(?:from )?(?:the )?(left|right) to (?:the )?(?:right|left)\b(?! lane)", r"from the \1", text)
     # "traffic was moderate": moderate traffic (the word is then no criticality of what follows)
     text = re.sub(r"\btraffic (?:is|was|were) (?:very |quite |fairly )?(light|moderate|heavy)\b", r"\1 traffic", text)
+    text = _the_car_is_the_ego(text)
     for pattern in _EGO_ALIASES:
         text = pattern.sub("the ego", text)
     text = re.sub(r"\b(?:the )?(?:driver|rider|operator) of the ego\b", "the ego", text)
