@@ -624,3 +624,13 @@ def test_the_car_is_the_ego_when_the_ego_is_the_only_car_named():
 def test_an_oncoming_car_keeping_to_its_lane_is_no_wrong_way_driver():
     (car,) = _reading("A car coming the other way keeps to its lane.").actors
     assert (car.relation, car.behaviours[0][0]) == ("oncoming", "keep_lane")
+
+
+def test_riders_of_a_group_all_ride_what_they_are_on():
+    r = _reading("Two kids on bicycles rode off the pavement on the right in front of me.")
+    assert [a.kind for a in r.actors] == ["bicycle", "bicycle"]
+
+
+def test_a_noun_without_its_article_after_because_is_the_one_named_before():
+    r = _reading("Bus is pulling out from the stop in front of ego, no accident because bus go slow.")
+    assert [a.kind for a in r.actors] == ["truck"]

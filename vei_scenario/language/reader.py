@@ -871,8 +871,12 @@ def _generic_vehicle(a: _Actor) -> bool:
 
 def _bare(m) -> bool:
     """Whether an actor is named as a test engineer's notes name it again: the singular noun alone,
-    opening its sentence, no article ("Cyclist turns left")."""
-    return m.start == 0 or m.prev in ("", ".", ";", ":", ",")
+    opening its sentence or clause, no article ("Cyclist turns left", "... because bus go slow")."""
+    return m.start == 0 or m.prev in ("", ".", ";", ":", ",") + _CLAUSE_OPENERS
+
+
+#: Words that open a clause, after which a noun without its article is the clause's subject.
+_CLAUSE_OPENERS = ("because", "and", "but", "then", "so", "when", "while", "as", "until", "after", "before")
 
 
 def _ego_following(clauses):
@@ -1124,7 +1128,8 @@ def read(text: str) -> Reading:
                         and named[-1][0].kind == "pedestrian"
                     ):
                         who = named[-1][0]  # "a guy on an e-scooter": the rider is the e-scooter
-                        who.kind = str(m.value)
+                        for rider in who.group or [who]:  # ("two kids on e-scooters": each of them)
+                            rider.kind = str(m.value)
                         prev = m
                         continue
                     else:
