@@ -634,3 +634,20 @@ def test_riders_of_a_group_all_ride_what_they_are_on():
 def test_a_noun_without_its_article_after_because_is_the_one_named_before():
     r = _reading("Bus is pulling out from the stop in front of ego, no accident because bus go slow.")
     assert [a.kind for a in r.actors] == ["truck"]
+
+
+@pytest.mark.parametrize(
+    "text, behaviour",
+    [
+        ("A walker on the right footway initiates a crossing manoeuvre across the ego's path.", "cross_in_front"),
+    ],
+)
+def test_a_behaviour_said_as_a_noun_performed_is_that_behaviour(text, behaviour):
+    assert _reading(text).actors[0].behaviours[0][0] == behaviour
+
+
+@pytest.mark.parametrize(
+    "said", ["when the time-to-collision reaches 1.5 s", "a near-collision without contact, TTC below 1 s"]
+)
+def test_time_to_collision_and_a_near_collision_are_no_collision(said):
+    assert stated_outcome(" ".join(_tokens(f"A van cuts in, {said}."))) != "collision"

@@ -236,6 +236,31 @@ def _the_car_is_the_ego(text: str) -> str:
     return text[:first] + _THE_CAR.sub("the ego", text[first:])
 
 
+_NOMINAL_VERBS = {
+    "lane change": "changes lane",
+    "lane-change": "changes lane",
+    "crossing manoeuvre": "crosses",
+    "crossing maneuver": "crosses",
+    "crossing": "crosses",
+    "cut-in": "cuts in",
+    "cut in": "cuts in",
+    "emergency stop": "brakes hard to a stop",
+    "emergency brake": "brakes hard to a stop",
+    "hard stop": "brakes hard to a stop",
+    "overtaking manoeuvre": "overtakes",
+    "overtaking maneuver": "overtakes",
+    "overtake": "overtakes",
+    "u-turn": "turns around",
+}
+_NOMINAL = re.compile(
+    r"\b(?:performs?|performed|performing|initiates?|initiated|initiating|executes?|executed|executing|"
+    r"carries out|carried out|makes|made|making|does|did) (?:an? |the )?(?:sudden |late |aggressive |abrupt |"
+    r"(?:moderately |very )?(?:moderate|gentle|sharp) )?("
+    + "|".join(sorted(_NOMINAL_VERBS, key=len, reverse=True))
+    + r")\b"
+)
+
+
 def _acronyms_defined(text: str) -> str:
     """A term and its abbreviation in brackets ("principal other vehicle (POV)", "subject vehicle (SV)"):
     the term once, so the bracket is not read as a second road user."""
@@ -363,6 +388,9 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     text = re.sub(
         r"\bboth (?:vehicles|vehicle|cars|parties)(?= (?:continued|carried|stopped|came|remained|were))", "they", text
     )
+    # a behaviour said as a noun a road user performs ("performs a lane change", "initiates a crossing
+    # manoeuvre", "makes an emergency stop"): said as its verb
+    text = _NOMINAL.sub(lambda m: _NOMINAL_VERBS[m.group(1)], text)
     # "struck the ego on its nearside", "hit me in the rear door": where on the ego's body, not a side of the road
     text = re.sub(
         r"\b((?:struck|strikes|hit|hits|impacted|clipped|collided with|made contact with) (?:the ego|me|us|my car)) "

@@ -16,6 +16,7 @@ from __future__ import annotations
 import re
 
 _COLLISION = re.compile(
+    r"(?<!time-to-)(?<!time to )(?<!near-)(?<!near )"  # ("time-to-collision", "near-collision": none)
     r"\b(?:hit|hits|hitting|struck|strikes|striking|collid\w*|collision|crash|crashes|crashed|crashing|"
     r"impact|rear-end\w*|rear end\w*|made contact|make contact|makes contact|ran into|runs into|run into|"
     r"smash\w*|knock\w* (?:down|over)|thump|thrown onto|thrown over|ploughs? into|plowed into|slams? into|"
@@ -31,7 +32,8 @@ _DENY = re.compile(
     r"would have|could have|nothing|nobody|no one|neither)\b(?:\s+[^\s,]+){0,3}\s*$"
 )
 _NEAR = re.compile(
-    r"\b(?:almost|nearly|narrowly|near miss|near-miss|close call|just in time|by a whisker|by inches|by an inch|"
+    r"\b(?:almost|nearly|narrowly|near miss|near-miss|near-collision|near collision|"
+    r"close call|just in time|by a whisker|by inches|by an inch|"
     r"hair's breadth|only just|just missed|just misses|barely missed|barely misses|"
     r"missed (?:it|him|her|them|us|me|the \S+|his \S+|her \S+|their \S+) by|"
     r"stopp?(?:ed|s|ing)? [^.;]{0,40}(?:short of|from (?:it|him|her|them|the|his|her))|"
