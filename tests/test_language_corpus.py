@@ -48,7 +48,7 @@ INDEPENDENT = {
     ROOT / "tests" / "data" / "language_independent_a.json": (59, 49),
     ROOT / "tests" / "data" / "language_independent_b.json": (63, 56),
     ROOT / "tests" / "data" / "language_independent_c.json": (65, 50),
-    ROOT / "tests" / "data" / "language_independent_d.json": (56, 31),
+    ROOT / "tests" / "data" / "language_independent_d.json": (56, 32),
 }
 
 

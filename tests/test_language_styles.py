@@ -564,6 +564,8 @@ def test_one_act_said_twice_is_read_once():
     assert [b[0] for b in walker.behaviours] == ["cross_in_front"]
     car = _reading("The car in front slammed its brakes on and came to a complete stop.").actors[0]
     assert [b[0] for b in car.behaviours] == ["sudden_stop"]
+    rider = _reading("A cyclist at the kerb on the right waits for me to go past, then crosses behind me.").actors[0]
+    assert [b[0] for b in rider.behaviours] == ["give_way"]
 
 
 def test_a_map_word_before_the_egos_own_name_is_the_map():

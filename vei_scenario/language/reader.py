@@ -1604,7 +1604,8 @@ def read(text: str) -> Reading:
 def _one_act_once(spec: ActorSpec) -> list:
     """Its behaviours with one act said twice read once: a walker or rider's crossing said again as
     coming "into the ego's path" (a cut-in is a lane change, which they do not make after crossing), and
-    a hard stop said again as "came to a complete stop", a cut across the ego's lane to turn said as a
+    a hard stop said again as "came to a complete stop", a crossing after giving way (behind the ego:
+    give_way plays it so), a cut across the ego's lane to turn said as a
     cut-in first."""
     out: list = []
     for b in spec.behaviours:
@@ -1612,6 +1613,8 @@ def _one_act_once(spec: ActorSpec) -> list:
         if prev == "cross_in_front" and b[0] == "cut_in" and spec.kind in VULNERABLE:
             continue
         if prev == "sudden_stop" and b[0] == "stop":
+            continue
+        if prev == "give_way" and b[0] == "cross_in_front":  # (giving way, it crosses behind the ego: one act)
             continue
         if prev == "cut_in" and b[0] == "forced_turn":  # ("cuts across in front of me to turn left": one act)
             out[-1] = b
