@@ -653,3 +653,18 @@ def test_a_behaviour_said_as_a_noun_performed_is_that_behaviour(text, behaviour)
 )
 def test_time_to_collision_and_a_near_collision_are_no_collision(said):
     assert stated_outcome(" ".join(_tokens(f"A van cuts in, {said}."))) != "collision"
+
+
+@pytest.mark.parametrize(
+    "text, kind",
+    [("CPNA-25, nearside adult walking at 5 km/h, VUT 40 km/h.", "pedestrian"),
+     ("CBFA-50, farside bicyclist 15 km/h crossing, VUT 30 km/h.", "bicycle")],
+)  # fmt: skip
+def test_the_target_of_a_test_code_said_again_is_that_target(text, kind):
+    (target,) = _reading(text).actors
+    assert target.kind == kind and target.speed_mps is not None
+
+
+def test_an_acceleration_with_a_caret_is_no_speed():
+    (car,) = _reading("CCRb, VUT 50 km/h, GVT 50 km/h, headway 20 m, GVT decel 4 m/s^2 to standstill.").actors
+    assert car.speed_mps == pytest.approx(50 / 3.6)
