@@ -599,13 +599,6 @@ def test_a_quiet_road_has_a_little_traffic_a_dead_quiet_one_none(said, density):
     assert _reading(f"On {said} a van ahead brakes hard.").density == density
 
 
-def test_a_rider_the_wrong_way_in_the_road_is_head_on_along_the_kerb_is_along_the_road():
-    head_on = _reading("An e-scooter rider comes the wrong way down my lane at night.").actors[0]
-    assert (head_on.behaviours[0][0], head_on.relation) == ("wrong_way", "ahead")
-    kerb = _reading("A cyclist rides the wrong way along the left kerb towards me.").actors[0]
-    assert (kerb.behaviours[0][0], kerb.facing) == ("along_road", "against")
-
-
 def test_a_term_with_its_abbreviation_in_brackets_is_one_road_user():
     r = _reading("A principal other vehicle (POV), a van, travels in the left lane and cuts in 8 m ahead.")
     assert [(a.kind, a.behaviours[0][0]) for a in r.actors] == [("van", "cut_in")]

@@ -1778,8 +1778,6 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool) -> None:
         (
             vehicle
             or (a.kind in RIDERS and towards and first in ("cut_in", "change_lane"))  # (an oncoming rider swerving in)
-            # (a rider the wrong way in the road itself, not along a kerb or an edge: head-on in the ego's lane)
-            or (a.kind in RIDERS and a.wrong_way and not (a.kerb or a.kerb_side or a.lane_side or a.side))
         )
         and not junction
         and (
