@@ -40,13 +40,22 @@ def test_at_least_nine_in_ten_descriptions_are_understood_and_faithful(corpus):
 #: for them: A (the development set) 41 understood, 5 faithful of 59; B (held out, measured again only
 #: at the end) 53 understood, 3 faithful of 63. The floors are the figures measured last (A 59
 #: understood, 48 faithful, 56 played of 59; B 63, 56, 58 of 63).
+#: C and D were written by two more writers who never saw the reader (C requests, chat and test-spec
+#: lines; D police, insurance and radio narratives, long paragraphs, lists, learners' English, typos),
+#: measured sealed first (C 65 understood, 29 faithful, 61 played of 65; D 56, 4, 45 of 56) and then
+#: used to develop the reader; their floors are the figures measured last (C 65, 52, 64 played; D 56,
+#: 31, 47 played).
 INDEPENDENT = {
-    ROOT / "tests" / "data" / "language_independent_a.json": (59, 48),
+    ROOT / "tests" / "data" / "language_independent_a.json": (59, 49),
     ROOT / "tests" / "data" / "language_independent_b.json": (63, 56),
+    ROOT / "tests" / "data" / "language_independent_c.json": (65, 52),
+    ROOT / "tests" / "data" / "language_independent_d.json": (56, 31),
 }
 
 
-@pytest.mark.parametrize("corpus", sorted(INDEPENDENT), ids=["independent-a", "independent-b"])
+@pytest.mark.parametrize(
+    "corpus", sorted(INDEPENDENT), ids=["independent-a", "independent-b", "independent-c", "independent-d"]
+)
 def test_independent_corpora_stay_at_their_measured_figures(corpus):
     results = check_corpus(load_corpus(corpus), layers_from_text)
     understood, faithful = INDEPENDENT[corpus]

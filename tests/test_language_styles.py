@@ -338,3 +338,326 @@ def test_a_rider_along_the_road_at_the_edge_of_the_lane_starts_on_that_kerb_side
     want = {"type": "bicycle", "behaviours": ["along_road"], "relation": ["roadside_left"]}
     assert layers_problems(_layers([rider]), {"actors": [want]}) == []
     assert layers_problems(_layers([rider]), {"actors": [dict(want, relation=["roadside_right"])]}) != []
+
+
+# --- text by writers who never saw the reader: slips, shorthand, narratives, lists --------------------
+def _reading(text: str):
+    return read(text)
+
+
+@pytest.mark.parametrize(
+    "typed, read_as",
+    [("stright", "straight"), ("trafic", "traffic"), ("overtaeks", "overtakes"), ("roundabuot", "roundabout"),
+     ("aftrenoon", "afternoon"), ("teh", "the")],
+)  # fmt: skip
+def test_a_word_one_slip_from_a_reader_word_is_read_as_it(typed, read_as):
+    assert _tokens(f"a van on the {typed} bit")[4] == read_as
+
+
+def test_a_word_a_dictionary_knows_is_never_respelt():
+    assert "strait" in _tokens("a ferry in the strait stops")
+
+
+def test_slips_keep_the_scene_and_are_reported():
+    r = _reading("a lorry enterring the roundabuot from the left dosnt give way, hevy trafic, foggy aftrenoon")
+    assert (r.map_kind, r.density, r.weather) == ("roundabout", "heavy", "fog")
+    assert r.time == "15:30" and [(a.kind, a.relation) for a in r.actors] == [("truck", "junction_left")]
+    assert ("roundabuot", "roundabout") in r.read_as
+
+
+@pytest.mark.parametrize(
+    "text, kind, relation",
+    [
+        ("Ego on the ring road roundabout at 20 km/h. M/bike entering from L arm fails to give way.", "car",
+         "junction_left"),
+        ("Ego veh NB, 50 kph. Hatchback from the lane to the R cuts in sharp.", "car", "right"),
+    ],
+)  # fmt: skip
+def test_shorthand_of_radio_reports_is_read(text, kind, relation):
+    assert [(a.kind, a.relation) for a in _reading(text).actors] == [(kind, relation)]
+
+
+def test_lt_traffic_and_nite_are_light_traffic_at_night():
+    r = _reading("Ego 40 kph, a van ahead stops. Lt traffic, nite.")
+    assert (r.density, r.time) == ("light", "23:00")
+
+
+@pytest.mark.parametrize("said, metres", [("40 feet", 12.2), ("20 yards", 18.3), ("30 ft", 9.1)])
+def test_a_distance_in_feet_or_yards_is_metres(said, metres):
+    (actor,) = _reading(f"A jogger steps off the kerb on the left {said} ahead of the ego.").actors
+    assert actor.distance_m == pytest.approx(metres, abs=0.05)
+
+
+@pytest.mark.parametrize(
+    "text, clock",
+    [
+        ("I was doing about 40 mph around 5pm when a van ahead braked hard.", "17:00"),
+        ("At approx. 06:50 hrs the ego at 40 mph met a van braking hard ahead.", "06:50"),
+        ("At 1945 hrs the ego at 40 mph met a van braking hard ahead.", "19:45"),
+        ("It was about 4 in the afternoon, I was at 40 mph and a van ahead braked hard.", "16:00"),
+        ("It was about 10 at night, I was at 40 mph and a van ahead braked hard.", "22:00"),
+    ],
+)
+def test_a_clock_hour_is_the_time_and_never_the_speed(text, clock):
+    r = _reading(text)
+    assert r.time == clock
+    assert r.ego_speed_mps == pytest.approx(40 * 0.44704)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "The subject vehicle (V1, the test car) was at 30 mph when a cyclist (V2) crossed from the left kerb.",
+        "My client, the driver of the insured car, was at 30 mph when a cyclist crossed from the left kerb.",
+        "The insured vehicle (ego) was at 30 mph when a cyclist crossed from the left kerb.",
+    ],
+)
+def test_the_ego_named_again_in_apposition_is_one_ego(text):
+    r = _reading(text)
+    assert [(a.kind, a.relation) for a in r.actors] == [("bicycle", "roadside_left")]
+    assert r.ego_speed_mps == pytest.approx(30 * 0.44704)
+
+
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("The SV drives at 50 km/h. POV1 (van) in the left lane cuts in 10 m ahead of the SV.", "van"),
+        ("The SV drives at 50 km/h. The POV, a 10 m rigid bus, cuts in from the left lane.", "truck"),
+        ("I was at 50 km/h. The third party vehicle, a blue van, cut in from the left lane.", "van"),
+    ],
+)
+def test_a_code_of_the_other_party_is_the_road_user_it_names(text, kind):
+    assert [(a.kind, a.behaviours[0][0]) for a in _reading(text).actors] == [(kind, "cut_in")]
+
+
+@pytest.mark.parametrize("bullet", ["- ", "* ", "\u2022 ", "1. ", "2) "])
+def test_each_item_of_a_list_is_read_on_its_own(bullet):
+    items = ["motorway, sunny", "ego at 90 km/h", "motorbike comes up from behind at 120 km/h, overtakes"]
+    text = "\n".join(bullet + item for item in items)
+    r = _reading(text)
+    assert (r.weather, r.ego_speed_mps) == ("clear", pytest.approx(25.0))
+    assert [(a.kind, a.speed_mps) for a in r.actors] == [("car", pytest.approx(120 / 3.6))]
+
+
+@pytest.mark.parametrize(
+    "text, time",
+    [
+        ("Ego 40 kph, van ahead brakes hard. Dry, PM.", "15:30"),
+        ("Ego 40 kph, van ahead brakes hard. Snowing, AM.", "08:30"),
+        ("The sun was setting as a van ahead braked hard in front of me.", "19:30"),
+    ],
+)
+def test_the_half_of_the_day_or_the_setting_sun_is_the_time(text, time):
+    assert _reading(text).time == time
+
+
+@pytest.mark.parametrize(
+    "said, density",
+    [
+        ("traffic: none", "none"),
+        ("density: high", "heavy"),
+        ("background traffic density: low", "light"),
+        ("no other traffic", "none"),
+        ("moderately busy", "moderate"),
+        ("bumper to bumper", "heavy"),
+    ],
+)
+def test_traffic_said_as_a_field_or_in_other_words(said, density):
+    assert _reading(f"A van ahead brakes hard, {said}.").density == density
+
+
+def test_a_grey_car_is_a_colour_not_the_weather():
+    assert _reading("The car in front, a grey Volvo, braked hard for no reason.").weather is None
+    assert _reading("A grey morning; the car in front braked hard.").weather == "cloudy"
+
+
+def test_a_manner_said_in_a_clause_of_its_own_is_the_one_road_users():
+    r = _reading("A cyclist rides along the left kerb ahead. I pass it with plenty of room.")
+    assert [(b[0], b[2]) for b in r.actors[0].behaviours] == [("along_road", "safe")]
+    from vei_scenario.language.rules_backend import layers_from_text
+
+    (adv,) = layers_from_text("A cyclist rides along the left kerb ahead. I pass it with plenty of room.", 0)[
+        "adversaries"
+    ]
+    assert adv["behaviour"]["config"]["criticality"] == "safe"
+
+
+@pytest.mark.parametrize(
+    "text", ["A lorry overtakes the ego and is cutting in too early.", "A van cuts in, in last moment."]
+)
+def test_too_early_and_in_last_moment_are_dangerous(text):
+    assert _reading(text).actors[0].behaviours[0][2] == "dangerous"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "You're doing 25 mph and the van in front of you brakes hard.",
+        "Ego: 25 mph. Van ahead brakes hard.",
+        "Van ahead brakes hard. Speed of ego is 25 mph.",
+        "Can you do a van ahead that brakes hard, like 25 mph for me?",
+    ],
+)
+def test_the_egos_speed_said_as_you_a_field_or_for_me(text):
+    assert _reading(text).ego_speed_mps == pytest.approx(25 * 0.44704)
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["The ego was following a van at 30 mph. The van braked hard.", "Ego following van, 30 mph. Van brakes hard."],
+)
+def test_what_the_ego_follows_is_ahead(text):
+    assert [(a.kind, a.relation) for a in _reading(text).actors] == [("van", "ahead")]
+
+
+def test_where_the_ego_is_struck_is_not_the_side_it_came_from():
+    text = "At the crossroads a hatchback from the ego's left ran the red light and struck the ego on its nearside."
+    assert [a.relation for a in _reading(text).actors] == ["junction_left"]
+
+
+def test_a_distance_on_its_own_line_is_the_moving_road_users_not_the_parked_cars():
+    text = "- ego at 30 mph\n- a boy runs out from between parked cars on the left\n- 9 metres ahead of ego"
+    moving = [a for a in _reading(text).actors if a.kind == "pedestrian"]
+    assert moving[0].distance_m == 9.0
+
+
+def test_fields_between_bars_are_read_one_at_a_time():
+    r = _reading(
+        "time: 21:30 | ego: 40 km/h | actor1: e-scooter, crosses from right kerb, 18 km/h | outcome: near miss"
+    )
+    assert r.ego_speed_mps == pytest.approx(40 / 3.6)
+
+
+@pytest.mark.parametrize(
+    "text, behaviour",
+    [
+        ("A van waiting in the side road on the right let me go by.", "give_way"),
+        ("One van in right line is change to my line close before me.", "cut_in"),
+        ("A lorry in the left lane drifts over into my lane.", "cut_in"),
+    ],
+)
+def test_learners_and_other_words_for_behaviours(text, behaviour):
+    assert _reading(text).actors[0].behaviours[0][0] == behaviour
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("A van pulled out and I stopped 3 metres short of it.", "near_miss"),
+        ("An e-scooter cut in front, no harm done but close.", "near_miss"),
+        ("A jogger ahead on the verge, I pass her fine.", "safe"),
+        ("A bus stops ahead and I stop behind. Nothing happen.", "safe"),
+    ],
+)
+def test_outcomes_in_other_words(text, intent):
+    assert _reading(text).intent == intent
+
+
+@pytest.mark.parametrize("thing", ["debris lying", "a fallen mattress lying", "a pile of pallets lying", "cones"])
+def test_a_vehicle_swerving_round_something_lying_in_the_lane_is_a_cut_out(thing):
+    r = _reading(f"The van ahead swerves into the right lane to avoid {thing} in our lane.")
+    assert r.actors[0].behaviours[0][0] == "cut_out" and r.actors[0].obstacle == 1
+
+
+def test_one_act_said_twice_is_read_once():
+    walker = _reading("A woman steps off the left kerb and crosses into my path.").actors[0]
+    assert [b[0] for b in walker.behaviours] == ["cross_in_front"]
+    car = _reading("The car in front slammed its brakes on and came to a complete stop.").actors[0]
+    assert [b[0] for b in car.behaviours] == ["sudden_stop"]
+    rider = _reading("A cyclist at the kerb on the right waits for me to go past, then crosses behind me.").actors[0]
+    assert [b[0] for b in rider.behaviours] == ["give_way"]
+
+
+def test_a_map_word_before_the_egos_own_name_is_the_map():
+    assert _reading("In the roundabout my car drive 20 km/h, a van enters from the left.").map_kind == "roundabout"
+
+
+@pytest.mark.parametrize(
+    "text, lanes",
+    [
+        ("A 4-lane divided highway at 60 mph, a van ahead brakes hard.", 2),
+        ("Highway, 3 each direction, 60 mph, a van ahead brakes hard.", 3),
+        ("A single-carriageway road at 40 mph, a van ahead brakes hard.", 1),
+    ],
+)
+def test_lanes_said_as_a_total_of_a_divided_road_or_a_carriageway(text, lanes):
+    assert _reading(text).lanes == lanes
+
+
+def test_a_pickup_truck_is_a_van_and_a_curvy_road_a_curve():
+    r = _reading("On a curvy road a pickup truck ahead brakes hard.")
+    assert (r.map_kind, [a.kind for a in r.actors]) == ("curve", ["van"])
+
+
+def test_both_vehicles_after_the_event_are_no_new_road_users():
+    r = _reading("A cyclist crosses from the left kerb, near miss, both vehicles continued.")
+    assert [a.kind for a in r.actors] == ["bicycle"]
+
+
+@pytest.mark.parametrize("said, density", [("a quiet road", "light"), ("a dead quiet road", "none")])
+def test_a_quiet_road_has_a_little_traffic_a_dead_quiet_one_none(said, density):
+    assert _reading(f"On {said} a van ahead brakes hard.").density == density
+
+
+def test_a_term_with_its_abbreviation_in_brackets_is_one_road_user():
+    r = _reading("A principal other vehicle (POV), a van, travels in the left lane and cuts in 8 m ahead.")
+    assert [(a.kind, a.behaviours[0][0]) for a in r.actors] == [("van", "cut_in")]
+
+
+def test_a_cut_across_the_egos_lane_to_turn_is_one_forced_turn():
+    r = _reading("At the crossroads the car in the lane to my right cuts across in front of me to turn left.")
+    assert [b[0] for b in r.actors[0].behaviours] == ["forced_turn"]
+
+
+def test_the_car_is_the_ego_when_the_ego_is_the_only_car_named():
+    r = _reading("Ego car drives at 30 km/h, a cyclist comes out from the right, the car must brake hard.")
+    assert [a.kind for a in r.actors] == ["bicycle"]
+    two = _reading("My car at 30 km/h, a car pulls out from the left, the car stops.")  # (another car: that one)
+    assert [a.kind for a in two.actors] == ["car"]
+
+
+def test_an_oncoming_car_keeping_to_its_lane_is_no_wrong_way_driver():
+    (car,) = _reading("A car coming the other way keeps to its lane.").actors
+    assert (car.relation, car.behaviours[0][0]) == ("oncoming", "keep_lane")
+
+
+def test_riders_of_a_group_all_ride_what_they_are_on():
+    r = _reading("Two kids on bicycles rode off the pavement on the right in front of me.")
+    assert [a.kind for a in r.actors] == ["bicycle", "bicycle"]
+
+
+def test_a_noun_without_its_article_after_because_is_the_one_named_before():
+    r = _reading("Bus is pulling out from the stop in front of ego, no accident because bus go slow.")
+    assert [a.kind for a in r.actors] == ["truck"]
+
+
+@pytest.mark.parametrize(
+    "text, behaviour",
+    [
+        ("A walker on the right footway initiates a crossing manoeuvre across the ego's path.", "cross_in_front"),
+    ],
+)
+def test_a_behaviour_said_as_a_noun_performed_is_that_behaviour(text, behaviour):
+    assert _reading(text).actors[0].behaviours[0][0] == behaviour
+
+
+@pytest.mark.parametrize(
+    "said", ["when the time-to-collision reaches 1.5 s", "a near-collision without contact, TTC below 1 s"]
+)
+def test_time_to_collision_and_a_near_collision_are_no_collision(said):
+    assert stated_outcome(" ".join(_tokens(f"A van cuts in, {said}."))) != "collision"
+
+
+@pytest.mark.parametrize(
+    "text, kind",
+    [("CPNA-25, nearside adult walking at 5 km/h, VUT 40 km/h.", "pedestrian"),
+     ("CBFA-50, farside bicyclist 15 km/h crossing, VUT 30 km/h.", "bicycle")],
+)  # fmt: skip
+def test_the_target_of_a_test_code_said_again_is_that_target(text, kind):
+    (target,) = _reading(text).actors
+    assert target.kind == kind and target.speed_mps is not None
+
+
+def test_an_acceleration_with_a_caret_is_no_speed():
+    (car,) = _reading("CCRb, VUT 50 km/h, GVT 50 km/h, headway 20 m, GVT decel 4 m/s^2 to standstill.").actors
+    assert car.speed_mps == pytest.approx(50 / 3.6)

@@ -47,6 +47,16 @@ _TARGETS = re.compile(
 )
 
 
+#: The words a test line uses for the target its code names.
+_SAME_TARGET = {
+    "pedestrian": "adult|pedestrian|walker",
+    "child": "child|kid",
+    "cyclist": "bicyclist|cyclist|bicycle|bike",
+    "car": "car|vehicle(?! under)",
+    "motorcycle": "motorcycle|motorbike|motorcyclist",
+}
+
+
 def rewrite(text: str, actor_noun) -> str:
     """``text`` (lowercased, units normalised) with its first Euro NCAP code said in words.
     ``actor_noun(word)`` says whether a word names a road user (for "an e-scooter target")."""
@@ -73,6 +83,9 @@ def rewrite(text: str, actor_noun) -> str:
         if ego.group(2):
             said += f", the {noun} at {ego.group(2)} {ego.group(3)}"
         rest = rest[ego.end() :]
+    if noun in _SAME_TARGET:  # ("CPFA-50, farside adult running at 8 km/h": the code's target, said again)
+        again = r"\b(?:(?:a|an|the)\s+)?(?:target\s+)?(?:(?:farside|nearside|far-side|near-side|longitudinal)\s+)?"
+        rest = re.sub(again + rf"(?:{_SAME_TARGET[noun]})(?:\s+target)?\b", f"the {noun}", rest, count=1)
     rest = _TARGETS.sub(f"the {noun}", rest)
     rest = re.sub(r"\bthe vehicle\b", "the ego", rest)  # (the vehicle under test)
     text = text[: m.start()] + said + ", " + rest.lstrip(" ,:;")

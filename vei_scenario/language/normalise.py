@@ -42,6 +42,7 @@ _UNITS = [
     (re.compile(r"\b(?:kilomet(?:er|re)s?|km)\s+(?:an|per|a)\s+hour\b|\bkm/hr?\b|\bkmph\b|\bkm/std\b"), "km/h"),
     (re.compile(r"\bmet(?:er|re)s?\s+(?:per|a)\s+second\b|\bmps\b"), "m/s"),
     (re.compile(r"(\d)\s*(?:kph|kmh|k's|ks|k)(?![\w'])"), r"\1 km/h"),  # ("50 k's": spoken km/h)
+    (re.compile(r"m/s\s*\^\s*2|m/s/s|m/sec\^?2"), "m/s²"),  # ("decel 6 m/s^2": an acceleration)
     (re.compile(r"(\d)(km/h|mph|m/s|m)\b"), r"\1 \2"),
 ]
 
@@ -87,12 +88,26 @@ _EGO_ALIASES = [
     ),
     re.compile(r"\b(?:the\s+)?(?:insured|my\s+client|our\s+client|the\s+claimant)(?:'s\s+(?:vehicle|car))?\b"),
     re.compile(r"\b(?:our|my)\s+(?:vehicle|own\s+car|own\s+vehicle)\b"),
+    re.compile(
+        r"\b(?:the\s+|a\s+)?(?:(?:vehicle|car)\s+under\s+test|test\s+(?:car|vehicle)|subject\s+(?:vehicle|car)|"
+        r"ego\s+(?:vehicle|car|veh)|insured\s+(?:vehicle|car)|ego)\b"
+    ),
 ]
+#: The ego named again in apposition: "the ego (the ego, the ego)", "the ego, the ego,", "the driver of the
+#: ego": one ego.
+_EGO_AGAIN = re.compile(
+    r"\bthe ego(?:\s*\(\s*(?:the ego|which is the ego|i\.e\. the ego)(?:\s*,\s*the ego)*\s*\)|"
+    r"\s*,\s*(?:which is |i\.e\. )?the ego\s*(?=,))+"
+)
 #: The other party of a statement: "V2", "Vehicle 2", "Unit 2", "D2" (3, 4 ...).
-_OTHER = re.compile(r"\b(?:vehicle|veh\.?|unit|v|d)\s*-?\s*([2-9])\b(?!\s*(?:m|km|mph|s)\b)")
+_OTHER = re.compile(
+    r"\b(?:(?:the|a|an)\s+)?(?:(?:vehicle|veh\.?|unit|v|d)\s*-?\s*([2-9])\b(?!\s*(?:m|km|mph|s)\b)|"
+    r"(?:pov|principal other vehicle)\s*-?\s*([1-9]?)\b|third[- ]party(?:'s)?\s+(?:vehicle|car)\b)"
+)
 #: An apposition after it: "V2, a white Transit van," / "Unit 2, a pedal cyclist,".
 _APPOSITION = re.compile(
-    r"\s*,?\s*(?:an?|the)\s+([^,.;]+?)(?=\s*(?:,|\.|;|\s+(?:travell\w*|driving|was|were|who|which|in|on|at)\b))"
+    r"\s*(?:,?\s*(?:an?|the)\s+([^,.;()]+?)(?=\s*(?:,|\.|;|\s+(?:travell\w*|driving|was|were|who|which|in|on|at)\b))|"
+    r"\(\s*(?:an?\s+|the\s+)?([^,.;()]+?)\s*\))"
 )
 
 
@@ -102,15 +117,22 @@ def _other_parties(text: str, known_noun) -> str:
     names: dict[str, str] = {}
     out, pos = [], 0
     for m in _OTHER.finditer(text):
-        code = m.group(1)
+        code = m.group(1) or m.group(2) or m.group(0).split()[-1]
         out.append(text[pos : m.start()])
         pos = m.end()
+        if text[: m.start()].rstrip().endswith("(") and text[m.end() :].lstrip().startswith(")"):
+            # "an e-scooter rider (V2)": the code of the road user just named; later mentions are that one
+            named = known_noun(" ".join(text[: m.start()].rstrip()[:-1].split()[-4:]))
+            names.setdefault(code, named or "car")
+            out[-1] = out[-1].rstrip()[:-1]
+            pos = text.index(")", m.end()) + 1
+            continue
         if code in names:
             out.append(f"the {names[code]}")
             continue
         app = _APPOSITION.match(text, m.end())
         if app is not None:
-            phrase = app.group(1)
+            phrase = app.group(1) or app.group(2)
             noun = known_noun(phrase)
             names[code] = noun or "car"
             out.append(f"a {phrase}" if noun else f"a {phrase} car")
@@ -145,17 +167,160 @@ def _headings(text: str) -> str:
     return _HEADING.sub(sub, text)
 
 
+#: Shorthand of radio reports, notes and chat, said in full ("M/bike from L arm", "ego veh NB",
+#: "lt traffic", "dual c/way", "doesnt", "nite"): the same words every writer's shorthand stands for.
+_SHORTHAND = [
+    (re.compile(r"\bm/(?:bike|cycle)s?\b|\bm/c\b"), "motorbike"),
+    (re.compile(r"\bp/cycle\b|\bpedal cycle\b"), "bicycle"),
+    (re.compile(r"\bc/way\b"), "carriageway"),
+    (re.compile(r"\brd\b"), "road"),
+    (re.compile(r"\b(?:jct|jcn|junc)\b\.?"), "junction"),
+    (re.compile(r"\bvehs\b\.?"), "vehicles"),
+    (re.compile(r"\bveh\b\.?"), "vehicle"),
+    (re.compile(r"\bpeds?\b"), "pedestrian"),
+    (re.compile(r"\b(?:lt|lite)\b(?= (?:traffic|rain|snow|fog)\b)"), "light"),
+    (re.compile(r"\b(?:hvy|hevy)\b"), "heavy"),
+    (re.compile(r"\b(?:mod|med)\b\.?(?= traffic\b)"), "moderate"),
+    (re.compile(r"\bnb\b"), "northbound"),
+    (re.compile(r"\bsb\b"), "southbound"),
+    (re.compile(r"\beb\b"), "eastbound"),
+    (re.compile(r"\bwb\b"), "westbound"),
+    # a single L or R where a side is said: "from L arm", "lane to the R", "on the L", "R turn"
+    (re.compile(r"\b(from|to|on|at|in|the|turning|turns|turn)( the)? l\b(?!')"), r"\1\2 left"),
+    (re.compile(r"\b(from|to|on|at|in|the|turning|turns|turn)( the)? r\b(?!')"), r"\1\2 right"),
+    (re.compile(r"\bl(?= (?:arm|lane|side|kerb|edge|turn)\b)"), "left"),
+    (re.compile(r"\br(?= (?:arm|lane|side|kerb|edge|turn)\b)"), "right"),
+    # "doesnt", "dosnt", "didnt", "wasnt": the verb, then "not" (as "doesn't" is read)
+    (re.compile(r"\b(does|dos|doe|do|did|is|was|were|are|could|would|should|has|have|had)nt\b"), r"\1 not"),
+    (re.compile(r"\bcant\b"), "can not"),
+    (re.compile(r"\bwont\b"), "will not"),
+    (re.compile(r"\bdos\b(?= not\b)"), "does"),
+    (re.compile(r"\b(?:nite|nyt)\b"), "night"),
+    (re.compile(r"\btonite\b"), "tonight"),
+    (re.compile(r"\binfront\b"), "in front"),
+    (re.compile(r"\bthru\b"), "through"),
+]
+#: Lengths in other units, as metres ("50 feet": 15.2 m), and the clock said in other ways.
+_FOOT_M, _YARD_M = 0.3048, 0.9144
+_LENGTHS = re.compile(r"(\d+(?:\.\d+)?)\s*(feet|foot|ft|yards?|yds?)\b(?! (?:per|a) second)")
+#: "1930 hrs", "0750h": a four-digit clock; "6pm", "3 in the afternoon", "9 at night": the hour said.
+_FOUR_DIGIT_CLOCK = re.compile(r"\b([01]\d|2[0-3])([0-5]\d)\s*(?:hrs|hours|h)\b")
+_HOUR_OF = re.compile(r"\b(1[0-2]|0?[1-9])(?: o'?clock)? (in the (?:morning|afternoon|evening)|at night)\b")
+_HALF = {"in the morning": "am", "in the afternoon": "pm", "in the evening": "pm", "at night": "pm"}
+
+
+def _hour_of(m: re.Match) -> str:
+    hour = int(m.group(1))
+    half = _HALF[m.group(2)] if not (m.group(2) == "at night" and hour in (12, 1, 2, 3, 4)) else "am"
+    return f"{hour} {half} {m.group(2)}"
+
+
+def _lengths(m: re.Match) -> str:
+    per = _YARD_M if m.group(2).startswith("y") else _FOOT_M
+    return f"{float(m.group(1)) * per:.1f} m"
+
+
+_DEFINED = re.compile(r"\b((?:[a-z][\w-]* ){1,5})\(\s*([a-z]{2,6})\s*\)")
+
+
+_EGO_AS_A_CAR = re.compile(r"\b(?:ego car|ego vehicle|my car|our car|my vehicle|our vehicle|test car)\b")
+_OTHER_CAR = re.compile(r"\b(?:a|an|another|one|other|some|second|third-party|third party)\s+(?:[a-z-]+\s+)?car\b")
+_THE_CAR = re.compile(r"\bthe car\b(?! (?:in front|ahead|behind|beside|next|on|in|from|that|which|coming))")
+
+
+def _the_car_is_the_ego(text: str) -> str:
+    """ "Ego car is driving ..., an e-scooter enters ..., the car must brake": with the ego named as a car
+    and no other car in the text, "the car" is the ego (not one placed in front or coming from somewhere)."""
+    if not _EGO_AS_A_CAR.search(text) or _OTHER_CAR.search(text):
+        return text
+    first = _EGO_AS_A_CAR.search(text).end()
+    return text[:first] + _THE_CAR.sub("the ego", text[first:])
+
+
+_NOMINAL_VERBS = {
+    "lane change": "changes lane",
+    "lane-change": "changes lane",
+    "crossing manoeuvre": "crosses",
+    "crossing maneuver": "crosses",
+    "crossing": "crosses",
+    "cut-in": "cuts in",
+    "cut in": "cuts in",
+    "emergency stop": "brakes hard to a stop",
+    "emergency brake": "brakes hard to a stop",
+    "hard stop": "brakes hard to a stop",
+    "overtaking manoeuvre": "overtakes",
+    "overtaking maneuver": "overtakes",
+    "overtake": "overtakes",
+    "u-turn": "turns around",
+}
+_NOMINAL = re.compile(
+    r"\b(?:performs?|performed|performing|initiates?|initiated|initiating|executes?|executed|executing|"
+    r"carries out|carried out|makes|made|making|does|did) (?:an? |the )?(?:sudden |late |aggressive |abrupt |"
+    r"(?:moderately |very )?(?:moderate|gentle|sharp) )?("
+    + "|".join(sorted(_NOMINAL_VERBS, key=len, reverse=True))
+    + r")\b"
+)
+
+
+def _acronyms_defined(text: str) -> str:
+    """A term and its abbreviation in brackets ("principal other vehicle (POV)", "subject vehicle (SV)"):
+    the term once, so the bracket is not read as a second road user."""
+
+    def sub(m: re.Match) -> str:
+        words, short = m.group(1).split(), m.group(2)
+        for n in range(1, len(words) + 1):
+            if "".join(w[0] for w in words[-n:]) == short:
+                return m.group(1).rstrip() + " "
+        return m.group(0)
+
+    return _DEFINED.sub(sub, text)
+
+
 def normalise(text: str, known_noun=lambda phrase: None) -> str:
     """``text`` (lowercased) with numbers in words, units, and the parties of a statement said the
     way the reader reads them. ``known_noun(phrase)`` returns the road-user noun a phrase ends in,
     or None."""
+    # a list (bullets, numbered steps, one item a line): each item its own sentence
+    text = re.sub(r"^\s*(?:[-*\u2022\u00b7\u2013]|\d{1,2}[.)])\s+", "", text)
+    text = re.sub(r"\s*\n\s*(?:(?:[-*\u2022\u00b7\u2013]|\d{1,2}[.)])\s+)?", ". ", text)
+    text = re.sub(r"\s*\|\s*|\s+/\s+", ". ", text)  # fields between bars or spaced slashes: one a sentence
     text = re.sub(r"(\d)\s*([ap])\.\s?m\.?", r"\1 \2m", text)  # "6 a.m.": "6 am" (no sentence ends there)
+    text = re.sub(r"(\d)([ap]m)\b", r"\1 \2", text)  # "6pm": "6 pm"
+    # the reader addressed ("you're doing 50 km/h", "your lane", "you brake hard"): the ego, as "I" is
+    text = re.sub(r"\byou(?:'re| are| were)\b", "i am", text)
+    text = re.sub(r"\byour\b", "my", text)
+    text = re.sub(
+        r"\byou(?= (?:just |then |also )?(?:brake|stop|pass|slow|swerve|drive|turn|overtake|follow|approach|hit|"
+        r"rear-end|go|come|get|see|keep|manage|miss)\w*)",
+        "i",
+        text,
+    )
+    text = _acronyms_defined(text)
+    for pattern, repl in _SHORTHAND:
+        text = pattern.sub(repl, text)
+    text = _FOUR_DIGIT_CLOCK.sub(r"\1:\2", text)
+    # "..., PM." / "Snowing, AM": the half of the day said alone
+    text = re.sub(r"(^|[,.;:]\s*)am(?=\s*(?:[,.;!]|$))", r"\1morning", text)
+    text = re.sub(r"(^|[,.;:]\s*)pm(?=\s*(?:[,.;!]|$))", r"\1afternoon", text)
+    # "the sun was going down": sunset
+    text = re.sub(r"\b(?:the )?sun (?:was |is )?(?:going down|setting|low in the sky)\b", "sunset", text)
+    # "traffic: none", "background traffic density: high", "density: moderate": the traffic said as a field
+    text = re.sub(
+        r"\b(?:(?:background )?traffic(?: density)?|density)\s*:\s*"
+        r"(none|nil|zero|light|low|moderate|medium|heavy|high)\b",
+        lambda m: {"nil": "no traffic", "zero": "no traffic", "none": "no traffic", "low": "light traffic",
+                   "medium": "moderate traffic", "high": "heavy traffic"}.get(m.group(1), f"{m.group(1)} traffic"),
+        text,
+    )  # fmt: skip
     for pattern, repl in _UNITS:
         text = pattern.sub(repl, text)
     text = _numbers_in_words(text)
     for pattern, repl in _UNITS:  # ("10 meter per second" once its number is digits)
         text = pattern.sub(repl, text)
+    text = _LENGTHS.sub(_lengths, text)
+    text = _HOUR_OF.sub(_hour_of, text)
     text = re.sub(r"\b(?:approx\.?|approximately|circa|ca\.|roughly|around|maybe|some|like)\s+(?=\d)", "about ", text)
+    text = re.sub(r"~\s*(?=\d)", "about ", text)
     text = re.sub(r"(\d+(?:\.\d+)?)\s*-\s*(?=km/h|mph|m/s|m\b)", r"\1 ", text)
     # "our speed is 100 km/h", "we have 40 km/h", "we are 50 km/h": the ego's speed
     text = re.sub(
@@ -178,9 +343,68 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     text = re.sub(r"\b(?:from )?(?:the )?(left|right) to (?:the )?(?:right|left)\b(?! lane)", r"from the \1", text)
     # "traffic was moderate": moderate traffic (the word is then no criticality of what follows)
     text = re.sub(r"\btraffic (?:is|was|were) (?:very |quite |fairly )?(light|moderate|heavy)\b", r"\1 traffic", text)
+    text = _the_car_is_the_ego(text)
     for pattern in _EGO_ALIASES:
         text = pattern.sub("the ego", text)
+    text = re.sub(r"\b(?:the )?(?:driver|rider|operator) of the ego\b", "the ego", text)
+    text = _EGO_AGAIN.sub("the ego", text)
     text = _other_parties(text, known_noun)
     text = _headings(text)
     text = re.sub(r"\bthe ego's (?:vehicle|car)\b", "the ego", text)
+    # "speed of the ego is 25 km/h", "ego: 30 km/h", "like 35 kph for me": the ego's speed
+    text = re.sub(r"\bspeed of the ego (?:is |was |:)?\s*(?=(?:about )?\d)", "the ego drives at ", text)
+    text = re.sub(r"\bthe ego\s*:\s*(?=(?:about )?\d+(?:\.\d+)? (?:km/h|mph|m/s)\b)", "the ego drives at ", text)
+    text = re.sub(
+        r"((?:about )?\d+(?:\.\d+)? (?:km/h|mph|m/s)) for (?:me|us|the ego|my car|my vehicle)\b",
+        r"the ego drives at \1",
+        text,
+    )
+    text = re.sub(r"\b(let|lets|letting)\s+(?:me|us)\b", r"\1 the ego", text)  # (whom it lets go: the ego)
+    # "my line", "right line", "two line for each side": a lane in a learner's English ("stop line" stays)
+    text = re.sub(
+        r"\b(my|his|her|its|right|left|same|next|other|opposite|inside|outside|middle|one|two|three|four|\d) "
+        r"line(s?)\b",
+        r"\1 lane\2",
+        text,
+    )
+    # something lying in the lane ("debris lying in our lane", "a pile of fallen pallets", "a fallen mattress
+    # lying in the left lane"): a standing obstacle, which a vehicle ahead may swerve round and reveal
+    text = re.sub(
+        r"\b(?:an? |the |some )?(?:(?:pile|load|piece|bits|heap) of )?(?:fallen |dropped |shed |lost |large |big )*"
+        r"(debris|pallets?|mattress(?:es)?|obstacles?|boxes|box|tyres?|tires?|rocks?|fallen tree|branch(?:es)?|"
+        r"traffic cones?|cones?|ladders?|objects?|load|cargo)\b(?= (?:lying|left|sitting|standing|in|on|blocking)\b)",
+        "a stationary obstacle",
+        text,
+    )
+    text = re.sub(r"\b(a stationary obstacle) (?:lying|left|sitting)\b", r"\1", text)
+    # "drifts over into my lane", "is change to my lane": a move into the ego's lane, whatever verb of motion says it
+    text = re.sub(
+        r"\b(?:is |was )?(?:drift\w*|change|changed|changing|wander\w*|veer\w*|slide|slides|slid|sliding|swing\w*|"
+        r"swung|come|comes|came|coming|go|goes|went|going)(?: over| across)? (?:in)?to "
+        r"(my|our|the ego's|the ego 's) lane\b",
+        r"moves into \1 lane",
+        text,
+    )
+    # "both vehicles continued": the ego and the other after the event, no new pair ("both cars at 50 km/h" stays)
+    text = re.sub(
+        r"\bboth (?:vehicles|vehicle|cars|parties)(?= (?:continued|carried|stopped|came|remained|were))", "they", text
+    )
+    # a behaviour said as a noun a road user performs ("performs a lane change", "initiates a crossing
+    # manoeuvre", "makes an emergency stop"): said as its verb
+    text = _NOMINAL.sub(lambda m: _NOMINAL_VERBS[m.group(1)], text)
+    # "struck the ego on its nearside", "hit me in the rear door": where on the ego's body, not a side of the road
+    text = re.sub(
+        r"\b((?:struck|strikes|hit|hits|impacted|clipped|collided with|made contact with) (?:the ego|me|us|my car)) "
+        r"(?:on|in|at) (?:its|the|my|our) (?:nearside|offside|left|right|front|rear|back|side)[a-z -]*?(?=[,.;!]|$)",
+        r"\1",
+        text,
+    )
+    # "the ego was following a lorry", "I'm following a bus": the description opens with the ego
+    # following, so what it follows is ahead
+    text = re.sub(
+        r"^(?:the ego|i|we)(?: (?:am|is|are|was|were|also|just|then))* (?:follow|follows|followed|following|tailing) "
+        r"(?=[a-z])",
+        "following ",
+        text,
+    )
     return text

@@ -256,7 +256,18 @@ def _actor_noun_in(phrase: str) -> str | None:
     return None
 
 
-def _tokens(text: str) -> list[str]:
+@lru_cache(maxsize=1)
+def _speller():
+    from vei_scenario.language.spelling import Speller
+
+    # (and the outcome's words, read from the whole text)
+    outcome = {"collision", "collide", "crash", "accident", "contact", "afternoon", "morning", "evening", "night"}
+    return Speller({w for key in TABLE for w in key} | FUNCTION_WORDS | outcome)
+
+
+def _tokens(text: str, spell: bool = True) -> list[str]:
+    """The words of ``text`` as the reader reads them (normalised; a misspelt word as the word it is
+    one slip from, unless ``spell`` is false)."""
     text = text.lower().replace("\u2019", "'").replace("’", "'")
     text = normalise(text, _actor_noun_in)
     text = ncap_rewrite(text, _actor_word)
@@ -274,6 +285,8 @@ def _tokens(text: str) -> list[str]:
             continue
         else:
             out.append(tok)
+    if spell:
+        out = [_speller().correct(tok) for tok in out]
     return out
 
 
@@ -401,6 +414,8 @@ def _number(tokens: list[str], i: int) -> tuple[str, float, int] | None:
         return "accel", value, 2
     if nxt in ("s", "sec", "seconds", "second", "g", "%", "deg", "degrees", "kg", "km"):
         return "skip", value, 2
+    if nxt in (":", "am", "pm", "hrs", "hours", "o'clock", "oclock"):  # ("about 6 pm", "at 07:50"): a time of day
+        return "skip", value, 4 if nxt == ":" and i + 2 < len(tokens) and tokens[i + 2].isdigit() else 2
     if nxt in ("to", "-") and i + 3 < len(tokens) and re.fullmatch(r"\d+(?:\.\d+)?", tokens[i + 2]):
         unit = tokens[i + 3]
         if unit in V.SPEED_UNITS:  # "from 50 to 20 km/h": the speed, then the one it goes to
@@ -429,7 +444,9 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
     tokens = _tokens(text)
     clauses: list[tuple[str, list[_Mention]]] = [("sequence", [])]
     ignored: list[str] = []
-    read_as: list[tuple[str, str]] = []
+    read_as: list[tuple[str, str]] = [
+        (typed, read) for typed, read in zip(_tokens(text, spell=False), tokens) if typed != read
+    ]
     i = 0
     while i < len(tokens):
         tok = tokens[i]
@@ -555,6 +572,11 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
         slot, value = TABLE[key]
         before = tokens[i - 1] if i else ""
         attributive = before in _DETERMINERS or (before.isalpha() and before not in FUNCTION_WORDS)
+        if slot == "weather" and key[-1] in L.COLOURS and before in _DETERMINERS and _names_a_thing(tokens, i + 1):
+            # "a grey Audi", "the grey one": the colour of something, not the sky
+            ignored.extend(key)
+            i += len(key)
+            continue
         if slot in ("weather", "time", "density", "map") and attributive and _modifies_actor(tokens, i + len(key)):
             # "a parked ice cream van", "a night bus": a word of the setting naming what kind of road user
             j = next(k for k in range(i + len(key), len(tokens)) if _actor_at(tokens, k))
@@ -722,12 +744,22 @@ def _new_unknown_subject(tokens: list[str], i: int) -> bool:
     return (tokens[j - 1] if j else "") in _OPENERS
 
 
+def _names_a_thing(tokens: list[str], j: int) -> bool:
+    """Whether the word at ``j`` is a noun the reader has no setting entry for ("Audi", "one"): a
+    colour before it is that thing's colour."""
+    if j >= len(tokens) or not tokens[j].isalpha():
+        return False
+    key = _best(tokens, j)
+    return key is None or TABLE[key][0] == "actor" or tokens[j] == "one"
+
+
 def _modifies_actor(tokens: list[str], j: int) -> bool:
     """Whether a road user's name follows at ``j``, past at most two words the reader has no entry
     for ("ice [cream] van"): the words before it then say what kind it is."""
     for k in range(j, min(j + 3, len(tokens))):
-        if _actor_at(tokens, k):
-            return True
+        if _actor_at(tokens, k):  # (not the ego: "in the roundabout my car drives ...")
+            key = _best(tokens, k)
+            return key is None or TABLE[key] != ("actor", "ego")
         if _best(tokens, k) is not None or tokens[k] in FUNCTION_WORDS or not tokens[k].isalpha():
             return False
     return False
@@ -839,8 +871,12 @@ def _generic_vehicle(a: _Actor) -> bool:
 
 def _bare(m) -> bool:
     """Whether an actor is named as a test engineer's notes name it again: the singular noun alone,
-    opening its sentence, no article ("Cyclist turns left")."""
-    return m.start == 0 or m.prev in ("", ".", ";", ":", ",")
+    opening its sentence or clause, no article ("Cyclist turns left", "... because bus go slow")."""
+    return m.start == 0 or m.prev in ("", ".", ";", ":", ",") + _CLAUSE_OPENERS
+
+
+#: Words that open a clause, after which a noun without its article is the clause's subject.
+_CLAUSE_OPENERS = ("because", "and", "but", "then", "so", "when", "while", "as", "until", "after", "before")
 
 
 def _ego_following(clauses):
@@ -1092,7 +1128,8 @@ def read(text: str) -> Reading:
                         and named[-1][0].kind == "pedestrian"
                     ):
                         who = named[-1][0]  # "a guy on an e-scooter": the rider is the e-scooter
-                        who.kind = str(m.value)
+                        for rider in who.group or [who]:  # ("two kids on e-scooters": each of them)
+                            rider.kind = str(m.value)
                         prev = m
                         continue
                     else:
@@ -1337,8 +1374,10 @@ def read(text: str) -> Reading:
                 if isinstance(who, _Actor) and role in ("subject", "participle") and who.crit is None:
                     who.crit = crit_here
         if not named and actors and any(p.slot == "distance" for p in pending):
-            for p in [p for p in pending if p.slot == "distance"]:  # ("..., 40 m gap": to the one named last)
-                _apply(p, actors[-1], r, link, added)
+            # ("..., 40 m gap": to the one named last that moves; parked cars are where it comes from)
+            moving = [a for a in actors if not a.stationary] or actors
+            for p in [p for p in pending if p.slot == "distance"]:
+                _apply(p, moving[-1], r, link, added)
             pending = [p for p in pending if p.slot != "distance"]
         if not named and pending and any(p.slot == "speed" for p in pending) and r.ego_speed_mps is None:
             # "Going straight over the junction at 30 km/h while ...": a clause with nobody named is the ego's
@@ -1543,6 +1582,9 @@ def read(text: str) -> Reading:
         r.ego_speed_mps = actors[0].speed_mps  # "Following a truck at 60 km/h": both at that speed
     _parked(actors, r.actors)
     _cut_outs(r.actors)
+    _criticality_said_apart(clauses, r.actors)
+    for spec in r.actors:
+        spec.behaviours = _one_act_once(spec)
     if r.map_kind is None and any(s.relation == "junction_opposite" for s in r.actors):
         r.map_kind = "crossroad"
     r.ignored = list(dict.fromkeys(ignored))
@@ -1557,6 +1599,40 @@ def read(text: str) -> Reading:
     if r.weather in (None, "rain") and stated_heavy_rain(said):
         r.weather = "heavy_rain"
     return r
+
+
+def _one_act_once(spec: ActorSpec) -> list:
+    """Its behaviours with one act said twice read once: a walker or rider's crossing said again as
+    coming "into the ego's path" (a cut-in is a lane change, which they do not make after crossing), and
+    a hard stop said again as "came to a complete stop", a crossing after giving way (behind the ego:
+    give_way plays it so), a cut across the ego's lane to turn said as a
+    cut-in first."""
+    out: list = []
+    for b in spec.behaviours:
+        prev = out[-1][0] if out else None
+        if prev == "cross_in_front" and b[0] == "cut_in" and spec.kind in VULNERABLE:
+            continue
+        if prev == "sudden_stop" and b[0] == "stop":
+            continue
+        if prev == "give_way" and b[0] == "cross_in_front":  # (giving way, it crosses behind the ego: one act)
+            continue
+        if prev == "cut_in" and b[0] == "forced_turn":  # ("cuts across in front of me to turn left": one act)
+            out[-1] = b
+            continue
+        out.append(b)
+    return out
+
+
+def _criticality_said_apart(clauses, specs: list[ActorSpec]) -> None:
+    """A manner said of the encounter in a clause of its own ("Ego passes with plenty of room", "the
+    distance is only 5 m, too early"): with one road user in the scene and nothing said of how it moves,
+    that manner is its (one class said, none contradicting it)."""
+    said = {m.value for _, mentions in clauses for m in mentions if m.slot == "criticality"}
+    acting = [s for s in specs if s.speed_mps != 0.0 or any(b[0] not in ("keep_going", "stop") for b in s.behaviours)]
+    if len(said) != 1 or len(acting) != 1 or any(b[2] for b in acting[0].behaviours):
+        return
+    crit = said.pop()
+    acting[0].behaviours = [(name, cfg, crit, link) for name, cfg, _, link in acting[0].behaviours]
 
 
 #: What someone does when a road user comes into its path: braking, slowing, stopping.
@@ -1700,8 +1776,9 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool) -> None:
         return
     if (
         (
-            vehicle or (a.kind in RIDERS and towards and first in ("cut_in", "change_lane"))
-        )  # (an oncoming rider swerving in)
+            vehicle
+            or (a.kind in RIDERS and towards and first in ("cut_in", "change_lane"))  # (an oncoming rider swerving in)
+        )
         and not junction
         and (
             a.wrong_way

@@ -38,7 +38,11 @@ def _u(rng: random.Random, lo: float, hi: float) -> float:
 def _config(rng: random.Random, name: str, given: dict, crit: str | None) -> tuple[dict, str | None]:
     mod = BEHAVIOURS[name]
     profiles = mod.PROFILES
-    cls = crit if crit in profiles else (rng.choice(CRITICALITY_CLASSES) if profiles else None)
+    # (a behaviour with no profiles keeps the class its wording says: "rides along ... with plenty of room")
+    if crit in profiles or (crit and not profiles):
+        cls = crit
+    else:
+        cls = rng.choice(CRITICALITY_CLASSES) if profiles else None
     cfg: dict[str, object] = {}
     ranges = profiles.get(cls, {}) if cls else {}
     for pname in mod.PARAMETERS:

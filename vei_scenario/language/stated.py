@@ -16,6 +16,7 @@ from __future__ import annotations
 import re
 
 _COLLISION = re.compile(
+    r"(?<!time-to-)(?<!time to )(?<!near-)(?<!near )"  # ("time-to-collision", "near-collision": none)
     r"\b(?:hit|hits|hitting|struck|strikes|striking|collid\w*|collision|crash|crashes|crashed|crashing|"
     r"impact|rear-end\w*|rear end\w*|made contact|make contact|makes contact|ran into|runs into|run into|"
     r"smash\w*|knock\w* (?:down|over)|thump|thrown onto|thrown over|ploughs? into|plowed into|slams? into|"
@@ -31,7 +32,8 @@ _DENY = re.compile(
     r"would have|could have|nothing|nobody|no one|neither)\b(?:\s+[^\s,]+){0,3}\s*$"
 )
 _NEAR = re.compile(
-    r"\b(?:almost|nearly|narrowly|near miss|near-miss|close call|just in time|by a whisker|by inches|by an inch|"
+    r"\b(?:almost|nearly|narrowly|near miss|near-miss|near-collision|near collision|"
+    r"close call|just in time|by a whisker|by inches|by an inch|"
     r"hair's breadth|only just|just missed|just misses|barely missed|barely misses|"
     r"missed (?:it|him|her|them|us|me|the \S+|his \S+|her \S+|their \S+) by|"
     r"stopp?(?:ed|s|ing)? [^.;]{0,40}(?:short of|from (?:it|him|her|them|the|his|her))|"
@@ -42,7 +44,8 @@ _NEAR = re.compile(
     r"by (?:centimetres|centimeters|millimetres|millimeters|a few (?:cm|centimetres|inches|feet))|"
     r"stops? in time|stopped in time|(?:at the )?last (?:second|moment|minute)|"
     r"(?:a|about a|1|one|half a|0\.5) (?:metre|meter|m|foot|yard) to spare|"
-    r"(?:was|were|is) (?:a bit |very |really |pretty |quite )?(?:tight|close))"
+    r"(?:was|were|is) (?:a bit |very |really |pretty |quite )?(?:tight|close)|but (?:very |really |quite )?close|"
+    r"stopp?(?:ed|s|ing)? (?:about |only |just )?\d+(?:\.\d+)? (?:m|metres?|meters?|feet|foot) (?:off|from|short))"
 )
 #: A sentence that is only the outcome, as a commentary says it ("Close!", "Clean.").
 _NEAR_SENTENCE = re.compile(r"(?:^|[.!?;] )(?:very |so |too |that was )?close (?:one |call |shave )?(?:[.!?]|$)")
@@ -51,9 +54,11 @@ _SAFE = re.compile(
     r"\b(?:safely|safe distance|without (?:any )?(?:problems?|conflict|incident|drama|issue|issues)|"
     r"no problems?|no drama|no conflict|no incident|uneventful|plenty of (?:room|space)|lots of (?:room|space)|"
     r"enough (?:room|space)|comfortably|let us go|lets us go|let me go|lets me go|gets through safely|"
+    r"lets? the ego (?:go|pass|through|by|past)|"
     r"(?:loads|lots|heaps|tons|a lot) of (?:room|space)|room to spare|ample (?:margin|room|space|clearance)|"
     r"clearance (?:exceeds|of more than|above)|(?:all|totally|completely|everything|it was|was) fine|all good|"
-    r"nothing (?:else )?(?:happened|happening|happens)|nothing dramatic|nobody close|no one close|"
+    r"nothing (?:else )?(?:happened|happening|happens|happen)|nothing dramatic|"
+    r"(?:pass|passes|passed|goes|went) (?:\S+ )?fine|nobody close|no one close|"
     r"pass(?:es|ed)? (?:him|her|it|them|the \S+ )?wide)"
 )
 
@@ -81,7 +86,7 @@ def stated_outcome(text: str) -> str | None:
 _WORD_NUMBERS = {"one": 1, "two": 2, "three": 3, "four": 4, "1": 1, "2": 2, "3": 3, "4": 4}
 _N = r"(one|two|three|four|[1-4])"
 _EACH_WAY = re.compile(
-    _N + r"[ -]lanes? (?:each way|in each direction|per direction|each direction|in both directions|for each side|"
+    _N + r"(?:[ -]lanes?)? (?:each way|in each direction|per direction|each direction|in both directions|for each side|"
     r"on each side|each side|per side|a side|either way|in either direction|for each direction|in every direction)"
 )
 _OF_N = re.compile(
@@ -93,6 +98,14 @@ _TWO_LANE_ROAD = re.compile(r"\b(?:two|2)[ -]lane (?!motorway|highway|freeway|ex
 _DIVIDED = re.compile(r"\b(?:motorway|highway|freeway|expressway|autobahn|dual carriageway|one[ -]way)\b")
 
 
+#: "a 4-lane divided highway": lanes of both directions together on a road divided in two.
+_DIVIDED_TOTAL = re.compile(
+    r"\b(four|six|eight|4|6|8)[ -]lanes? (?:divided|dual)(?: carriageway)? ?"
+    r"(?:highway|freeway|motorway|road|expressway)?"
+)
+_TOTAL = {"four": 4, "six": 6, "eight": 8, "4": 4, "6": 6, "8": 8}
+
+
 def stated_lanes(text: str) -> int | None:
     """Lanes per direction a normalised, lowercased description states, where the reader's words do
     not settle it: "three lanes each way", "the middle lane of three", "a one-way street with two
@@ -101,6 +114,9 @@ def stated_lanes(text: str) -> int | None:
         m = pattern.search(text)
         if m is not None:
             return _WORD_NUMBERS[m.group(1)]
+    m = _DIVIDED_TOTAL.search(text)
+    if m is not None:
+        return _TOTAL[m.group(1)] // 2
     if _TWO_LANE_ROAD.search(text) and not _DIVIDED.search(text):
         return 1
     return None
@@ -131,7 +147,7 @@ _DENSITY = re.compile(
     r"really )?(light|moderate|heavy|busy|quiet|dense|sparse|empty)\b"
 )
 _DENSITY_WORDS = {"light": "light", "sparse": "light", "moderate": "moderate", "heavy": "heavy", "busy": "heavy",
-                  "dense": "heavy", "quiet": "none", "empty": "none"}  # fmt: skip
+                  "dense": "heavy", "quiet": "light", "empty": "none"}  # fmt: skip
 
 
 def stated_density(text: str) -> str | None:
