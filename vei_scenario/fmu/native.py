@@ -19,7 +19,7 @@ from vei_scenario.fmu.packaging import write_fmu
 from vei_scenario.fmu.variables import MAX_PATH, MAX_ROUTE, ModelSpec
 
 COMMON_SOURCES = ("vei_models.c", "fmu_common.c")
-HEADERS = ("vei_models.h", "fmu_instance.h")
+HEADERS = ("vei_models.h", "fmu_instance.h", "fmi2_unsupported.h")
 WRAPPER = {2: "fmi2_wrapper.c", 3: "fmi3_wrapper.c"}
 FMI_HEADERS = {
     2: ("fmi2Functions.h", "fmi2FunctionTypes.h", "fmi2TypesPlatform.h"),

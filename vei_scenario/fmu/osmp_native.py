@@ -290,7 +290,7 @@ def _run(cmd: list[str], cwd: Path, what: str) -> None:
 
 
 _SHARED_SOURCES = ("vei_models.c", "vei_models.h", "fmu_instance.h", "fmu_common.c", "osmp_model.c", "osmp_model.h",
-                   "osmp_wrapper.c")  # fmt: skip
+                   "osmp_wrapper.c", "fmi2_unsupported.h")  # fmt: skip
 
 
 def _sources(models: tuple[str, ...]) -> dict[str, bytes]:
