@@ -1,6 +1,7 @@
 /* The FMI 2.0 co-simulation functions of capabilities vei's FMUs do not declare (FMU state,
- * derivatives): each says so through the including wrapper's own
- * `static fmi2Status unsupported(fmi2Component c, const char *fn)` and returns fmi2Error.
+ * derivatives, asynchronous steps' status but the last successful time): the status queries are
+ * discarded, the others each say so through the including wrapper's own
+ * `static fmi2Status unsupported(fmi2Component c, const char *fn)` and return fmi2Error.
  * Included once by each FMI 2.0 wrapper (fmi2_wrapper.c, osmp_wrapper.c), after `unsupported`. */
 #ifndef VEI_FMI2_UNSUPPORTED_H
 #define VEI_FMI2_UNSUPPORTED_H
@@ -44,6 +45,23 @@ fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c, const fmi2ValueReferenc
                                         const fmi2Integer order[], fmi2Real value[]) {
     (void)vr, (void)nvr, (void)order, (void)value;
     return unsupported(c, "fmi2GetRealOutputDerivatives");
+}
+
+fmi2Status fmi2GetStatus(fmi2Component c, const fmi2StatusKind s, fmi2Status *value) {
+    (void)c, (void)s, (void)value;
+    return fmi2Discard;
+}
+fmi2Status fmi2GetIntegerStatus(fmi2Component c, const fmi2StatusKind s, fmi2Integer *value) {
+    (void)c, (void)s, (void)value;
+    return fmi2Discard;
+}
+fmi2Status fmi2GetBooleanStatus(fmi2Component c, const fmi2StatusKind s, fmi2Boolean *value) {
+    (void)c, (void)s, (void)value;
+    return fmi2Discard;
+}
+fmi2Status fmi2GetStringStatus(fmi2Component c, const fmi2StatusKind s, fmi2String *value) {
+    (void)c, (void)s, (void)value;
+    return fmi2Discard;
 }
 
 #endif

@@ -564,26 +564,10 @@ fmi2Status fmi2CancelStep(fmi2Component c) {
     (void)c;
     return fmi2Error;
 }
-fmi2Status fmi2GetStatus(fmi2Component c, const fmi2StatusKind s, fmi2Status *value) {
-    (void)c, (void)s, (void)value;
-    return fmi2Discard;
-}
 fmi2Status fmi2GetRealStatus(fmi2Component c, const fmi2StatusKind s, fmi2Real *value) {
     if (!is_live(c) || s != fmi2LastSuccessfulTime || value == NULL) return fmi2Discard;
     *value = P->time;
     return fmi2OK;
-}
-fmi2Status fmi2GetIntegerStatus(fmi2Component c, const fmi2StatusKind s, fmi2Integer *value) {
-    (void)c, (void)s, (void)value;
-    return fmi2Discard;
-}
-fmi2Status fmi2GetBooleanStatus(fmi2Component c, const fmi2StatusKind s, fmi2Boolean *value) {
-    (void)c, (void)s, (void)value;
-    return fmi2Discard;
-}
-fmi2Status fmi2GetStringStatus(fmi2Component c, const fmi2StatusKind s, fmi2String *value) {
-    (void)c, (void)s, (void)value;
-    return fmi2Discard;
 }
 
 /* ---- capabilities this FMU does not declare ---- */
