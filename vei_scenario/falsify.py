@@ -38,6 +38,7 @@ from pathlib import Path
 import numpy as np
 
 from vei_scenario.errors import VeiInputError
+from vei_scenario.sut.contract import is_system_fault
 
 #: The robustness below which a local minimum of the scan is zoomed into, down to --tol (the box gap, m).
 CLIMB_BELOW = 2.0
@@ -196,7 +197,7 @@ class _Runner:
             for (k, v), r in zip(todo, rows):
                 if r["status"] == "ok":
                     self.cache[k] = robustness(r["metrics"], self.target)
-                elif self.controllers and str(r["error"]).startswith("controller "):  # (the system's own fault)
+                elif self.controllers and is_system_fault(r["error"]):
                     self.failed.append((v, str(r["error"])))
                     self.cache[k] = SYSTEM_FAULT
                 else:

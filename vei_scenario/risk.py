@@ -16,6 +16,7 @@ from pathlib import Path
 from vei_scenario.atomic_io import OutputSet, json_text
 from vei_scenario.errors import VeiInputError
 from vei_scenario.interpreter.document import load_scenario
+from vei_scenario.sut.contract import is_system_fault
 from vei_scenario.sweep.catalog import variant_xosc
 from vei_scenario.sweep.evaluate import evaluate_local, evaluate_variant
 from vei_scenario.variation import cartesian, parse_vary
@@ -69,7 +70,7 @@ def search_combination(
     def check(outcome: dict, shift: float) -> bool:
         if outcome["status"] == "ok":
             return _holds(outcome["metrics"], target, band)
-        if controllers and str(outcome["error"]).startswith("controller "):  # (the system's own fault)
+        if controllers and is_system_fault(outcome["error"]):
             failed.append((shift, str(outcome["error"])))
             return target in ("collision", "collision_any")
         raise VeiInputError(scenario, "TimeShift", f"variant at TimeShift {shift:g} failed: {outcome['error']}")

@@ -51,6 +51,12 @@ class ControllerFault(VeiError):
         return f"controller {self.label}{at}: {self.reason}"
 
 
+def is_system_fault(error: object) -> bool:
+    """Whether a failed run's error line is a :class:`ControllerFault` (the system under test's own
+    failure, worded ``controller ENTITY=TARGET ...``) rather than a defect of the scenario or of vei."""
+    return str(error).startswith("controller ")
+
+
 class StepTimeout(BaseException):
     """Raised into a ``step`` that overran its time limit (a BaseException: the user's own
     ``except Exception`` does not swallow it)."""
