@@ -73,6 +73,34 @@ def noise_free_dir(tmp_path_factory) -> Path:
     return out
 
 
+def native_test_fmus():
+    """The builder of the tiny native C test FMUs (data/sut/native_src/build.py: faults, all inputs),
+    loaded as a module; skips the test where there is no C compiler to build them."""
+    import shutil
+
+    from vei_scenario.core.sources import compiler
+
+    if shutil.which(compiler()) is None:
+        pytest.skip(f"no C compiler ({compiler()}) to build the native test FMUs")
+    path = Path(__file__).parent / "data" / "sut" / "native_src" / "build.py"
+    spec = importlib.util.spec_from_file_location("native_test_fmus", path)
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+@pytest.fixture(scope="session")
+def case_study(compiled) -> Path:
+    """The compiled case study's scenario.xosc."""
+    return next(p for p in compiled["case_study"].written if p.name == "scenario.xosc")
+
+
+@pytest.fixture(scope="session")
+def multi(compiled) -> Path:
+    """The compiled multi_scooter example's scenario.xosc."""
+    return next(p for p in compiled["multi_scooter"].written if p.name == "scenario.xosc")
+
+
 def load_generator():
     spec = importlib.util.spec_from_file_location("generate_examples", EXAMPLES / "generate_examples.py")
     mod = importlib.util.module_from_spec(spec)

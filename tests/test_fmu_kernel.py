@@ -6,12 +6,12 @@ from __future__ import annotations
 import json
 import math
 import os
-import shutil
 import sys
 from pathlib import Path
 
 import pytest
 
+from conftest import native_test_fmus
 from vei_scenario.cli import main
 from vei_scenario.sut import parse_controller_options
 from vei_scenario.sweep.evaluate import _kernel_fmu, evaluate_local, evaluate_variant
@@ -35,15 +35,7 @@ def cap_fmu(tmp_path_factory) -> Path:
 @pytest.fixture(scope="module")
 def faulty(tmp_path_factory) -> dict[str, Path]:
     """The tiny native FMUs of data/sut/native_src, each failing at t >= 1 s where CapEnabled is true."""
-    from vei_scenario.core.sources import compiler
-
-    if shutil.which(compiler()) is None:
-        pytest.skip(f"no C compiler ({compiler()}) to build the native test FMUs")
-    sys.path.insert(0, str(DATA / "native_src"))
-    try:
-        from build import build
-    finally:
-        sys.path.remove(str(DATA / "native_src"))
+    build = native_test_fmus().build
     out = tmp_path_factory.mktemp("faulty")
     return {fault: build(fault, out, gated=True) for fault in ("ERROR", "NAN", "CRASH", "HANG")}
 
@@ -285,17 +277,8 @@ def test_an_exception_of_vei_in_a_child_stops_the_evaluation():
 def test_every_input_reaches_a_kernel_fmu_as_the_interpreter_gives_it(scenario, tmp_path):
     """A C FMU that reads all 15 inputs (the threat's acceleration, the box sizes, the time ...) into its
     command: the kernel's rows are the interpreter's, and the riders' differences reach the ego."""
-    from vei_scenario.core.sources import compiler
-
-    if shutil.which(compiler()) is None:
-        pytest.skip(f"no C compiler ({compiler()}) to build the native test FMU")
-    sys.path.insert(0, str(DATA / "native_src"))
-    try:
-        from build import build_all_inputs
-    finally:
-        sys.path.remove(str(DATA / "native_src"))
     s = str(scenario.resolve())
-    plugged = parse_controller_options([f"Ego={build_all_inputs(tmp_path)}"])
+    plugged = parse_controller_options([f"Ego={native_test_fmus().build_all_inputs(tmp_path)}"])
     assert _kernel_fmu(s, 0.01, "2d", plugged) is not None
     variants = [{"TimeShift": ts, "RiderType": r} for ts in ("0.5", "3.3") for r in ("normal", "aggressive", "replay")]
     rows = evaluate_local(s, variants, 0.01, 2, controllers=plugged)

@@ -17,11 +17,6 @@ from vei_scenario.interpreter import run_scenario
 
 
 @pytest.fixture(scope="module")
-def multi(compiled) -> Path:
-    return next(p for p in compiled["multi_scooter"].written if p.name == "scenario.xosc")
-
-
-@pytest.fixture(scope="module")
 def fmus(tmp_path_factory) -> dict[str, Path]:
     return build_fmus(list(MODELS), tmp_path_factory.mktemp("fmus"))
 

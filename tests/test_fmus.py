@@ -39,11 +39,6 @@ def fmu_sets(tmp_path_factory) -> dict[str, dict[str, Path]]:
 
 
 @pytest.fixture(scope="session")
-def case_study(compiled) -> Path:
-    return next(p for p in compiled["case_study"].written if p.name == "scenario.xosc")
-
-
-@pytest.fixture(scope="session")
 def conflict_shift(case_study) -> str:
     """The compile's conflict TimeShift, where the study runs its configurations."""
     from vei_scenario.interpreter import load_scenario

@@ -33,16 +33,6 @@ pytestmark = pytest.mark.skipif(MISSING is not None, reason=MISSING or "")
 PLUGS = {"rider": {"scooter_1": "sfm"}, "planner": {"Ego": "cap"}, "both": {"Ego": "cap", "scooter_1": "sfm"}}
 
 
-@pytest.fixture(scope="module")
-def case_study(compiled) -> Path:
-    return next(p for p in compiled["case_study"].written if p.name == "scenario.xosc")
-
-
-@pytest.fixture(scope="module")
-def multi(compiled) -> Path:
-    return next(p for p in compiled["multi_scooter"].written if p.name == "scenario.xosc")
-
-
 def _deviation(a, b) -> float:
     """The largest distance between any entity's positions in two runs."""
     return max(float(np.max(np.hypot(a.traces[n].x - b.traces[n].x, a.traces[n].y - b.traces[n].y))) for n in a.traces)

@@ -49,16 +49,6 @@ def _compare(scenario: Path, plugs: dict[str, str], out: Path, values: dict) -> 
     return json.loads(done.stdout.strip().splitlines()[-1])
 
 
-@pytest.fixture(scope="module")
-def case_study(compiled) -> Path:
-    return next(p for p in compiled["case_study"].written if p.name == "scenario.xosc")
-
-
-@pytest.fixture(scope="module")
-def multi(compiled) -> Path:
-    return next(p for p in compiled["multi_scooter"].written if p.name == "scenario.xosc")
-
-
 PLUGS = {"rider": {"scooter_1": "sfm"}, "planner": {"Ego": "cap"}, "both": {"Ego": "cap", "scooter_1": "sfm"}}
 
 

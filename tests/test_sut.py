@@ -14,7 +14,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from conftest import NO_SHARED, SHARED
+from conftest import NO_SHARED, SHARED, native_test_fmus
 from vei_scenario.cli import main
 from vei_scenario.interpreter import run_scenario
 from vei_scenario.sut import ControllerFault, command_from, parse_controller_options
@@ -425,18 +425,7 @@ def test_an_entry_point_of_the_group_vei_controllers_names_a_class(scenario, mon
 @pytest.fixture(scope="module")
 def native_faults(tmp_path_factory) -> dict[str, Path]:
     """The tiny native FMUs of data/sut/native_src: one segfaults at t >= 1 s, one never returns."""
-    import shutil
-    import sys
-
-    from vei_scenario.core.sources import compiler
-
-    if shutil.which(compiler()) is None:
-        pytest.skip(f"no C compiler ({compiler()}) to build the native test FMUs")
-    sys.path.insert(0, str(DATA / "native_src"))
-    try:
-        from build import build
-    finally:
-        sys.path.remove(str(DATA / "native_src"))
+    build = native_test_fmus().build
     out = tmp_path_factory.mktemp("native_fmus")
     return {fault: build(fault, out) for fault in ("CRASH", "HANG")}
 
