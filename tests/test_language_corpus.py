@@ -75,6 +75,18 @@ def test_a_case_that_is_not_met_is_reported_with_its_reasons():
     assert any("ego speed" in p for p in r.problems) and any("type car (expected truck)" in p for p in r.problems)
 
 
+def test_an_actor_whose_behaviour_the_text_does_not_settle_is_checked_on_the_rest():
+    """An expectation may leave out what the road user does (a target standing in the lane): its type
+    and start are still checked, and any behaviour is accepted."""
+    text = "A cyclist rides along the kerb ahead of the ego."
+    [fits] = check_corpus([{"text": text, "actors": [{"type": "bicycle"}]}], layers_from_text, seeds=(0,))
+    assert fits.faithful, fits.problems
+    [wrong] = check_corpus(
+        [{"text": text, "actors": [{"type": "bicycle", "relation": ["oncoming"]}]}], layers_from_text, seeds=(0,)
+    )
+    assert not wrong.faithful and any("relation" in p for p in wrong.problems)
+
+
 def test_every_description_gives_a_scenario_that_can_be_written():
     """Whatever the reading, the layers place every actor on the map: no description of the corpus
     ends in a placement error (seed 0 of each; the files are not kept)."""
