@@ -58,6 +58,35 @@ def test_refinement_records_each_episode():
         assert r.episodes[-1]["intent_met"] or len(r.episodes) == 5
 
 
+def test_a_value_that_started_in_the_target_profile_is_probed_on_both_sides():
+    """A crossing timed in the middle of its dangerous profile has nowhere to go towards that middle:
+    sharpening tries one profile width past it (earlier, the side the profiles order towards), then
+    one on the other side, then two, within the parameter's range."""
+    from vei_scenario.language.refinement import adjust
+
+    layers = layers_from_text("A pedestrian steps out from the right kerb in front of the ego and is hit.", 0)
+    cross = BEHAVIOURS["cross_in_front"]
+    lo, hi = cross.PROFILES["dangerous"]["arrival_gap_s"]
+    layers["adversaries"][0]["behaviour"]["config"]["arrival_gap_s"] = (lo + hi) / 2
+    tried = [adjust(layers, "sharpen", k)["adversaries"][0]["behaviour"]["config"]["arrival_gap_s"] for k in range(4)]
+    mid, w = (lo + hi) / 2, hi - lo
+    assert tried == pytest.approx([mid - w, mid + w, mid - 2 * w, mid + 2 * w], abs=1e-3)
+    # a value that started outside it still moves a growing share of the way to its middle
+    layers["adversaries"][0]["behaviour"]["config"]["arrival_gap_s"] = 3.5
+    moved = adjust(layers, "sharpen", 0)["adversaries"][0]["behaviour"]["config"]["arrival_gap_s"]
+    assert moved == pytest.approx(3.5 + 0.3 * (mid - 3.5), abs=1e-3)
+
+
+def test_a_collision_asked_for_is_reached_although_the_planner_brakes():
+    """With the ego's planner braking, a crossing in the middle of the dangerous profile is avoided;
+    refining probes past the profile until the pedestrian is hit (every scenario of the batch)."""
+    text = "A pedestrian suddenly steps out from the right kerb right in front of the ego and is hit."
+    records, doc = describe_batch(lambda i: layers_from_text(text, i), 3, None, text, "rules", 0, True)
+    assert all(not r.episodes[0]["ego_collided"] for r in records)  # the planner avoids the first try
+    assert all(r.episodes[-1]["intent_met"] and r.episodes[-1]["ego_collided"] for r in records)
+    assert doc["summary"]["intent_met"] == 3
+
+
 def test_same_seed_same_bytes_other_seed_other_scenarios(tmp_path):
     def files(out):
         return {p.relative_to(out): p.read_bytes() for p in sorted(out.rglob("*")) if p.is_file()}
