@@ -669,3 +669,16 @@ def test_what_the_layers_say_is_what_plays(text, tmp_path):
 
     for seed in (0, 1):
         assert play_case({"text": text}, layers_from_text, tmp_path, seed) == [], seed
+
+
+@pytest.mark.parametrize("kind", ["e-scooter", "bicycle"])
+def test_a_junction_road_user_without_a_stated_speed_keeps_within_its_top_speed(kind):
+    """Its timing is worked out from the speed the layers give it: a speed its vehicle cannot reach
+    would bring it to the ego's path seconds late."""
+    from vei_scenario.language.scenario_writer import TYPES
+
+    text = f"The ego goes straight at a crossroad with lights. A {kind.replace('-', ' ')} from the right runs the red."
+    for seed in range(5):
+        [adv] = layers_from_text(text, seed)["adversaries"]
+        assert adv["type"] == kind and adv["behaviour"]["behaviour"] == "run_red_light"
+        assert 0 < adv["speed_mps"] <= TYPES[kind][3]

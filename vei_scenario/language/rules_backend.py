@@ -141,7 +141,7 @@ def sample_layers(reading: Reading, text: str, seed: int) -> dict:
         if given_speed is None and first.NAME == "wrong_way":
             given_speed = min(_u(rng, 10.0, 20.0), TYPES[spec.kind][3])  # (a rider within its own top speed)
         if given_speed is None and relation in ("junction_left", "junction_right") and first.NAME not in WAITING:
-            given_speed = _u(rng, 9.0, 13.0)
+            given_speed = min(_u(rng, 9.0, 13.0), TYPES[spec.kind][3])  # (its timing holds only below its top speed)
         if (
             given_speed
             and given_speed > 0
