@@ -682,3 +682,45 @@ def test_a_junction_road_user_without_a_stated_speed_keeps_within_its_top_speed(
         [adv] = layers_from_text(text, seed)["adversaries"]
         assert adv["type"] == kind and adv["behaviour"]["behaviour"] == "run_red_light"
         assert 0 < adv["speed_mps"] <= TYPES[kind][3]
+
+
+def _crossing_at(gap: float) -> dict:
+    from vei_scenario.language.rules_backend import place_adversary
+
+    layers = layers_from_text("A pedestrian crosses from the right kerb in front of the ego.", 0)
+    adv = layers["adversaries"][0]
+    adv["behaviour"]["config"]["arrival_gap_s"] = gap
+    adv["spawn"], adv["speed_mps"] = place_adversary(
+        adv["type"], adv["spawn"]["relation"], "cross_in_front", adv["behaviour"]["config"], layers["ego"], 1
+    )
+    return layers
+
+
+@pytest.mark.parametrize("gap, first", [(4.0, "adversary"), (-3.0, "ego")])
+def test_each_episode_says_who_passed_first(gap, first):
+    """A pedestrian timed to be across seconds before the ego arrives went first; one timed to reach
+    the lane seconds after the ego passed did not."""
+    from vei_scenario.language.describe import run_one
+
+    record = run_one(_crossing_at(gap), 0, refine=False)
+    assert record.episodes[0]["passed_first"] == {"Adversary1": first}
+    assert not record.episodes[0]["ego_collided"]
+
+
+def test_sharpening_a_timing_halves_the_closest_bracket():
+    """Once one timing let the road user go first and another let the ego, the next try is the middle
+    of the closest such pair; a pair narrower than the limit is not halved again."""
+    from vei_scenario.language.refinement import NARROWEST_BRACKET_S, adjust
+
+    def episode(gap: float, first: str) -> dict:
+        layers = _crossing_at(gap)
+        conf = [{"adversary": a["name"], "behaviour": a["behaviour"]} for a in layers["adversaries"]]
+        return {"configuration": conf, "passed_first": {"Adversary1": first}}
+
+    history = [episode(2.0, "adversary"), episode(-1.0, "ego"), episode(0.5, "adversary")]
+    layers = _crossing_at(0.5)
+    nxt = adjust(layers, "sharpen", 3, history=history)["adversaries"][0]["behaviour"]["config"]["arrival_gap_s"]
+    assert nxt == pytest.approx(-0.25)
+    narrow = [episode(0.0, "adversary"), episode(NARROWEST_BRACKET_S / 2, "ego")]
+    kept = adjust(layers, "sharpen", 2, start=_crossing_at(3.5), history=narrow)
+    assert kept["adversaries"][0]["behaviour"]["config"]["arrival_gap_s"] != pytest.approx(NARROWEST_BRACKET_S / 4)

@@ -77,6 +77,7 @@ def run_one(layers: dict, index: int, refine: bool) -> ScenarioRecord:
                         }
                         for a in layers["adversaries"]
                     ],
+                    "passed_first": outcome["passed_first"],
                     "ego_collided": outcome["ego_collided"],
                     "act_min_s": outcome["act_min_s"],
                     "intent_met": met,
@@ -85,7 +86,7 @@ def run_one(layers: dict, index: int, refine: bool) -> ScenarioRecord:
             )
             if met or not refine or episode == MAX_EPISODES - 1:
                 break
-            layers = adjust(layers, direction, episode, start)
+            layers = adjust(layers, direction, episode, start, episodes)
     files = {f"{SCENARIO_STEM}.xosc": written.xosc, f"{SCENARIO_STEM}.xodr": written.xodr}
     files["layers.json"] = (json_text(layers, indent=2, sort_keys=False) + "\n").encode()
     return ScenarioRecord(index, layers, files, outcome, episodes)

@@ -16,6 +16,8 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
+import numpy as np
+
 from vei_scenario.interpreter import run_scenario
 from vei_scenario.language.scenario_writer import DEFAULT_RATE_HZ
 from vei_scenario.metrics import MetricConfig, PairSeries, compute_metrics
@@ -43,6 +45,7 @@ def evaluate(xosc: Path, rate_hz: float = DEFAULT_RATE_HZ) -> dict:
     comfort = per[adversaries[0]]["comfort_score"] if adversaries else _comfort_only(result, cfg)
     alert = sum(m["ttc_zones_s"]["alert"] + m["ttc_zones_s"]["collision"] for m in per.values())
     return {
+        "passed_first": {n: passed_first(result, n, n in {x for c in ego_hit for x in c["entities"]}) for n in per},
         "ego_collided": bool(ego_hit),
         "collided_with": sorted({n for c in ego_hit for n in c["entities"] if n != ego}),
         "collisions": collisions,
@@ -55,6 +58,26 @@ def evaluate(xosc: Path, rate_hz: float = DEFAULT_RATE_HZ) -> dict:
         "end_reason": result.end_reason,
         "per_adversary": per,
     }
+
+
+def passed_first(result, name: str, touched: bool) -> str:
+    """Who of the ego and road user ``name`` came first where their paths meet: ``contact`` when they
+    touched; ``adversary`` when, at their closest approach, it is already across the ego's path or in
+    it ahead; ``ego`` when it is still on the side it started from, or in the ego's path behind it.
+
+    Refinement brackets a timing with this: between a timing at which the road user went first and one
+    at which the ego did lies one at which they meet, wherever the ego's braking moved it."""
+    if touched:
+        return "contact"
+    ego, other = result.traces[result.ego], result.traces[name]
+    dx, dy = other.x - ego.x, other.y - ego.y
+    k = int(np.argmin(np.hypot(dx, dy)))
+    c, s = math.cos(ego.yaw[k]), math.sin(ego.yaw[k])
+    lat_now = c * dy[k] - s * dx[k]
+    lat_start = c * (other.y[0] - ego.y[k]) - s * (other.x[0] - ego.x[k])
+    if abs(lat_now) <= (ego.width + other.width) / 2:  # in the ego's path: ahead went first
+        return "adversary" if c * dx[k] + s * dy[k] > 0 else "ego"
+    return "adversary" if lat_now * lat_start < 0 else "ego"
 
 
 def _comfort_only(result, cfg: MetricConfig) -> float:

@@ -13,6 +13,11 @@ on both sides of the profile instead, one and then two profile widths from its m
 side the profiles order towards (past ``dangerous`` when sharpening), then on the other: where the
 outcome turns depends on how the ego brakes, which no closed form here knows (a crossing meets a
 braking ego when timed early, a red-light runner when timed late).
+
+Sharpening a timing (``arrival_gap_s``: when a road user reaches the ego's path against when the ego
+does) uses what the episodes so far showed: once one timing let the road user go first and another
+let the ego go first, the two meet between them, and the next episode tries the middle of the
+closest such pair (bisection), whatever the ego's braking did to the closed form's timing.
 """
 
 from __future__ import annotations
@@ -31,10 +36,18 @@ STEP_FRACTIONS = (0.3, 0.4, 0.5, 0.6, 0.7)
 PROBES = (1.0, -1.0, 2.0, -2.0)
 
 
-def adjust(layers: dict, direction: str, episode: int, start: dict | None = None) -> dict:
+#: The timing parameter that refinement brackets, and the narrowest bracket it still halves (s).
+TIMING = "arrival_gap_s"
+NARROWEST_BRACKET_S = 0.05
+
+
+def adjust(
+    layers: dict, direction: str, episode: int, start: dict | None = None, history: list[dict] | None = None
+) -> dict:
     """A copy of ``layers`` moved one episode's step in ``direction`` (``soften``/``sharpen``).
     ``start``: the layers of the first episode (default ``layers``), which say whether a value began
-    inside the target profile and is probed around it instead."""
+    inside the target profile and is probed around it instead. ``history``: the episodes run so far
+    (their configuration and who passed first), which bracket a timing when sharpening."""
     out = copy.deepcopy(layers)
     frac = STEP_FRACTIONS[min(episode, len(STEP_FRACTIONS) - 1)]
     target = "safe" if direction == "soften" else "dangerous"
@@ -51,6 +64,10 @@ def adjust(layers: dict, direction: str, episode: int, start: dict | None = None
             for name, (lo, hi) in ranges.items():
                 p = mod.PARAMETERS[name]
                 now = float(cfg.get(name, p.default))
+                middle = _bracketed(history, adv["name"], b, p.default) if name == TIMING and b == 0 else None
+                if direction == "sharpen" and middle is not None:
+                    cfg[name] = round(middle, 3)
+                    continue
                 was = float(began[a][b].get(name, p.default)) if a < len(began) and b < len(began[a]) else now
                 side = _side(mod.PROFILES, name, target)
                 if lo <= was <= hi and side:
@@ -77,3 +94,23 @@ def _side(profiles: dict, name: str, target: str) -> int:
         return 0
     mid, other_mid = sum(profiles[target][name]) / 2, sum(other) / 2
     return (mid > other_mid) - (mid < other_mid)
+
+
+def _bracketed(history: list[dict] | None, adversary: str, node: int, default: float) -> float | None:
+    """The middle of the closest pair of timings tried for ``adversary`` (its behaviour ``node``) at
+    which it once went first and once the ego did; None without such a pair or once it is narrower
+    than :data:`NARROWEST_BRACKET_S`."""
+    tried: dict[str, list[float]] = {"adversary": [], "ego": []}
+    for ep in history or []:
+        first = ep.get("passed_first", {}).get(adversary)
+        conf = next((c for c in ep["configuration"] if c["adversary"] == adversary), None)
+        if first not in tried or conf is None:
+            continue
+        nodes = [n for _, n in behaviour_nodes(conf["behaviour"])]
+        if node < len(nodes):
+            tried[first].append(float(nodes[node].get("config", {}).get(TIMING, default)))
+    pairs = [(abs(a - e), (a + e) / 2) for a in tried["adversary"] for e in tried["ego"]]
+    if not pairs:
+        return None
+    width, middle = min(pairs)
+    return middle if width > NARROWEST_BRACKET_S else None
