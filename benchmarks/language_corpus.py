@@ -6,6 +6,10 @@ unfaithful with the reasons, then the figures: understood, faithful (every expec
 0-2), and the words most often refused.
 
     python benchmarks/language_corpus.py [--corpus FILE] [--quiet] [--played] [--backend local] [--limit N]
+    python benchmarks/language_corpus.py --all [--played]
+
+``--all`` prints one line per corpus of tests/data (understood, faithful, played) beside the figures
+first measured on the independently written ones, before the reader was changed for them.
 
 With ``--played`` every description's scenario (seed 0) is also played, and the trajectories are
 checked for what the layers say each adversary does (a stop ends standing, a cut-in ends ahead in
@@ -21,6 +25,47 @@ import sys
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
+#: Corpora written by people who never saw the reader: (cases, understood, faithful, played or None)
+#: first measured, before any change was made for them, and on what.
+FIRST = {
+    "language_independent_a.json": ((59, 41, 5, None), "measured when written"),
+    "language_independent_b.json": ((63, 53, 3, None), "held out, measured when written"),
+    "language_independent_c.json": ((65, 65, 26, 59), "sealed, measured when written"),
+    "language_independent_d.json": ((56, 56, 4, 43), "sealed, measured when written"),
+    "language_independent_e.json": ((70, 70, 16, 55), "sealed, measured once before a pass of reader work"),
+    "language_independent_f.json": ((60, 60, 32, 58), "measured when written"),
+}
+
+
+def _pct(k: int | None, n: int) -> str:
+    return "-" if k is None else f"{k} ({100 * k / n:.0f} %)"
+
+
+def all_corpora(played: bool) -> int:
+    """One line per corpus of tests/data: what it gives now and, for the independent ones, first."""
+    import tempfile
+
+    from vei_scenario.language.corpus_check import check_corpus, load_corpus, play_case
+    from vei_scenario.language.rules_backend import layers_from_text
+
+    head = f"{'corpus':32} {'n':>3}  {'understood':>10} {'faithful':>10} {'played':>10}"
+    print(head + "   first: understood / faithful / played")
+    for path in sorted((ROOT / "tests" / "data").glob("language_*.json")):
+        cases = load_corpus(path)
+        results = check_corpus(cases, layers_from_text)
+        n = len(results)
+        done = None
+        if played:
+            with tempfile.TemporaryDirectory() as tmp:
+                done = sum(
+                    not play_case(c, layers_from_text, Path(tmp)) for c, r in zip(cases, results) if r.understood
+                )
+        (fn, fu, ff, fp), how = FIRST.get(path.name, ((n, None, None, None), ""))
+        first = f"{_pct(fu, fn)} / {_pct(ff, fn)} / {_pct(fp, fn)} ({how})" if how else "(the project's own)"
+        understood = sum(r.understood for r in results)
+        faithful = sum(r.faithful for r in results)
+        print(f"{path.stem:32} {n:>3}  {understood:>10} {faithful:>10} {'-' if done is None else done:>10}   {first}")
+    return 0
 
 
 def main() -> int:
@@ -30,7 +75,10 @@ def main() -> int:
     ap.add_argument("--played", action="store_true", help="also play each scenario and check what happened")
     ap.add_argument("--backend", choices=("rules", "local"), default="rules", help="local: the GGUF model")
     ap.add_argument("--limit", type=int, default=0, help="only the first N descriptions")
+    ap.add_argument("--all", action="store_true", help="every corpus of tests/data, one line each")
     args = ap.parse_args()
+    if args.all:
+        return all_corpora(args.played)
     from vei_scenario.language.corpus_check import check_corpus, load_corpus
     from vei_scenario.language.rules_backend import layers_from_text
 
