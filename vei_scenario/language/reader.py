@@ -29,6 +29,7 @@ from dataclasses import dataclass, field, replace
 from functools import lru_cache
 
 from vei_scenario.language import lexicon as L
+from vei_scenario.language import sides
 from vei_scenario.language import vocabulary as V
 from vei_scenario.language.behaviours import BEHAVIOURS
 from vei_scenario.language.ncap import rewrite as ncap_rewrite
@@ -447,6 +448,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
     read_as: list[tuple[str, str]] = [
         (typed, read) for typed, read in zip(_tokens(text, spell=False), tokens) if typed != read
     ]
+    left_hand, ring = sides.drives_on_left(tokens), "roundabout" in tokens
     i = 0
     while i < len(tokens):
         tok = tokens[i]
@@ -482,6 +484,14 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
             clauses[-1][1].append(_Mention("behaviour", ("change_lane", {}), words, i, prev, side, side_at, det))
             clauses[-1][1].append(_Mention("toward", side, side, side_at, tokens[side_at - 1], after, side_at + 2))
             i = side_at + 2
+            continue
+        said = sides.phrase_at(tokens, i, left_hand, ring)
+        if said is not None:  # a lane, kerb or arm and its side ("in the offside lane", "a side road on my left")
+            words = " ".join(tokens[said.start : said.end])
+            nxt = tokens[said.end] if said.end < len(tokens) else ""
+            for slot, value in said.mentions:
+                clauses[-1][1].append(_Mention(slot, value, words, said.start, said.prep or prev, nxt, said.end, det))
+            i = said.end
             continue
         key = _best(tokens, i)
         if key and len(key) > 1 and TABLE[key][0] != "actor" and TABLE.get(key[:1], ("",))[0] == "actor":
@@ -1409,6 +1419,8 @@ def read(text: str) -> Reading:
         pending, unplaced = [], []
     if unplaced and not actors:  # something is done, and nobody the reader can place does it
         raise NotUnderstood(list(dict.fromkeys(ignored))[:12], text, missing="road user")
+    for a in actors:  # a lane said of both: the road user's side is where its lane is from the ego's
+        a.lane_side = sides.beside(a.lane_side, r.ego_relation)
     if both_with_ego and r.ego_speed_mps is None and actors and actors[0].speed_mps is not None:
         r.ego_speed_mps = actors[0].speed_mps  # (the speed said of both)
     ignored += unplaced
@@ -1500,7 +1512,10 @@ def read(text: str) -> Reading:
                     a.relation = origin
             elif not (a.lane_side or a.side or a.kerb_side):
                 a.side = "left" if a.toward == "right" else "right"
-        if behaviours and (behaviours[0][0] in ("change_lane", "cut_out") or moving_out) and (a.lane_side or a.side):
+        if behaviours and behaviours[0][0] == "change_lane" and sides.starts_in_lane(a.lane_side, a.side, a.toward):
+            name, cfg, c, lk = behaviours[0]  # "a coach in the left lane moves over": from there, towards the ego
+            behaviours[0] = (name, {**cfg, "direction": -1.0 if a.lane_side == "left" else 1.0}, c, lk)
+        elif behaviours and (behaviours[0][0] in ("change_lane", "cut_out") or moving_out) and (a.lane_side or a.side):
             name, cfg, c, lk = behaviours[0]  # "moves over into the right lane": where to, not where from
             behaviours[0] = (name, {**cfg, "direction": 1.0 if (a.lane_side or a.side) == "left" else -1.0}, c, lk)
             a.lane_side = a.side = None
@@ -2098,7 +2113,9 @@ def _apply(m, who, r, link, added) -> None:
                 r.ego_route = "straight"
             elif m.slot == "behaviour" and m.value[0] == "forced_turn":
                 r.ego_route = m.value[1].get("turn", "right")
-            elif m.slot in ("side", "lane_side"):
+            elif m.slot == "lane_side":  # (the lane it starts in: the first said)
+                r.ego_relation = r.ego_relation or m.value
+            elif m.slot == "side":
                 r.ego_relation = m.value
             continue
         if m.slot == "behaviour":
@@ -2157,8 +2174,8 @@ def _apply(m, who, r, link, added) -> None:
             a.came_from = a.came_from or _from(m)
         elif m.slot == "toward":
             a.toward = m.value
-        elif m.slot == "lane_side":
-            a.lane_side = m.value
+        elif m.slot == "lane_side":  # (the lane it starts in: the first said)
+            a.lane_side = a.lane_side or m.value
         elif m.slot == "kerb":
             a.kerb = True
             a.pavement = a.pavement or any(w in m.words for w in PAVEMENT_WORDS)

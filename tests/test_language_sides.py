@@ -1,0 +1,89 @@
+"""Where a road user starts beside the ego, read from the side phrase attached to it: lane, kerb and
+junction-arm nouns with their side word before or after them, in the writer's driving convention."""
+
+import pytest
+
+from vei_scenario.language.reader import read
+from vei_scenario.language.sides import beside, drives_on_left, phrase_at
+
+
+def relation(text: str) -> str | None:
+    return read(text).actors[0].relation
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # a UK writer (miles per hour): the nearside / inside lane is the left one, offside / outside the right
+        (
+            "I was cruising at 60 mph in the offside lane when a coach in the nearside lane moves over into my lane.",
+            "left",
+        ),
+        ("I was doing 50 mph in the inside lane when a taxi in the outside lane swerved into mine.", "right"),
+        (
+            "I was at 40 mph in the nearside lane and a hatchback travelling in the offside lane came across into my lane.",
+            "right",
+        ),
+        # the same words without miles per hour keep the right-hand convention
+        ("Ego at 90 km/h; a minibus in the nearside lane moves into the ego lane 20 m ahead.", "right"),
+    ],
+)
+def test_lane_words_follow_the_writers_driving_side(text, expected):
+    assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("I was in the left lane at 30 mph and a pickup in the right lane swung across into my lane.", "right"),
+        ("We sat in the middle lane at 65 mph; a coach in lane 1 drifted into our lane.", "left"),
+        ("Going 45 mph in lane 1, a saloon in lane 2 squeezed into my lane.", "right"),
+    ],
+)
+def test_a_lane_is_compared_with_the_egos_own(text, expected):
+    assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("At 20 mph a boy stepped out from the nearside (right) footpath into my path.", "roadside_right"),
+        ("At 25 mph a girl ran out from the offside (left) verge in front of me.", "roadside_left"),
+        ("At 15 mph a man stepped from the nearside footpath into the road ahead of me.", "roadside_left"),
+    ],
+)
+def test_a_kerb_side_restated_plainly_wins(text, expected):
+    assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("At 30 km/h a van came out of a minor road on our right and pulled into our road ahead.", "junction_right"),
+        ("Driving at 40 km/h, a hatchback emerged from a side street on my left into my road.", "junction_left"),
+        (
+            "At 30 km/h a motorbike came out of the side road on the ego's right and turned into our road.",
+            "junction_right",
+        ),
+    ],
+)
+def test_an_arm_with_its_side_after_it(text, expected):
+    assert relation(text) == expected
+
+
+def test_phrases_in_both_orders():
+    said = phrase_at("a jogger came off the footpath on my right".split(), 3, False, False)
+    assert said is not None and ("kerb_side", "right") in said.mentions
+    said = phrase_at("from the right-hand verge".split(), 0, False, False)
+    assert said is not None and ("kerb_side", "right") in said.mentions
+    assert phrase_at("in the same lane 30 m ahead".split(), 0, False, False) is None  # (a distance, no lane 30)
+    assert phrase_at("from the right".split(), 0, False, False) is None  # (no noun: the lexicon's)
+    # a roundabout's inner lane is by the island, on the offside
+    assert phrase_at("on the inner lane".split(), 0, False, True).mentions == (("lane_side", "left"),)
+    assert phrase_at("on the inner lane".split(), 0, True, True).mentions == (("lane_side", "right"),)
+
+
+def test_beside_and_convention():
+    assert beside("left", "right") == "left" and beside("right", "middle") == "right"
+    assert beside("left", None) == "left" and beside("middle", None) is None and beside("left", "left") is None
+    assert drives_on_left("at 30 mph".split()) and not drives_on_left("at 30 km/h".split())

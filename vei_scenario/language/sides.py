@@ -1,0 +1,207 @@
+"""Where a road user starts beside the ego, read from the phrase that places it: a side word and the
+noun it is attached to ("in the offside lane", "off the pavement on my left", "a side road on the
+ego's right").
+
+Why a module of its own: the side of a lane, kerb or junction arm is said in two orders (side word
+before the noun, "the left-hand footway"; or after it, "the footway on my left") and in words whose
+side depends on the country the writer drives in ("nearside", "offside", "inside lane"). Matching
+fixed phrases missed most of the combinations; this reads the few closed word classes involved
+(prepositions, determiners and possessives, side words, lane/kerb/arm nouns) and composes them.
+
+Conventions:
+
+- *nearside* is the kerb side, *offside* the centre-line side. A writer who gives speeds in miles per
+  hour drives on the left (UK), so there the nearside is the left; elsewhere the right (the project's
+  own convention, and Euro NCAP's, whose codes are rewritten before this reads them).
+- on a straight road the *inside* lane is the nearside one, the *outside* lane the offside one; on a
+  roundabout *inner*/*inside* is towards the island, which is on the offside.
+- a side word restated right after ("the nearside (left) footway") wins: the writer said it plainly.
+- lanes are compared with the ego's own when it is said ("I was in the right lane ... the van in the
+  left lane": the van is to the left).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+#: Side words that name a side outright.
+_PLAIN = {"left": "left", "right": "right", "left-hand": "left", "right-hand": "right"}
+#: Side words relative to the kerb: "near" (kerb side) or "off" (centre side), and the middle.
+_RELATIVE = {
+    "nearside": "near", "near-side": "near", "offside": "off", "off-side": "off",
+    "slow": "near", "fast": "off", "overtaking": "off", "passing": "off",
+    "middle": "middle", "centre": "middle", "center": "middle",
+}  # fmt: skip
+#: Words whose side depends on the road: a straight road's inside lane is the nearside one, a
+#: roundabout's is towards the island (offside).
+_RING = {"inside": "near", "inner": "near", "outside": "off", "outer": "off"}
+#: Nouns of a kerb or the ground beside the carriageway.
+KERB_NOUNS = frozenset({"kerb", "curb", "kerbside", "pavement", "sidewalk", "footway", "footpath", "verge", "shoulder"})
+#: Nouns of a junction arm; "road"/"street" only when said to be a side or minor one.
+ARM_NOUNS = frozenset({"arm", "entry", "entrance", "approach"})
+_ROAD_NOUNS = frozenset({"road", "street"})
+_MINOR = frozenset({"side", "minor"})  # (a slip road joins as a lane does: not an arm)
+#: Lanes that are beside the carriageway rather than in it: a rider there starts at the kerb.
+_KERB_LANES = frozenset({"cycle", "bike", "bus"})
+_DETERMINERS = frozenset({"the", "a", "an", "my", "our", "its", "his", "her", "their", "your", "this", "that"})
+_POSSESSIVE = (["my"], ["our"], ["its"], ["his"], ["her"], ["their"], ["your"])
+_OPENING = frozenset({"in", "on", "from", "off", "out", "of", "along", "into", "onto", "at", "down", "up"})
+_INTO = frozenset({"into", "onto"})
+_LINKS = frozenset({"on", "to", "at"})
+_MODIFIERS = frozenset({"adjacent", "next", "neighbouring", "neighboring", "nearest"})
+_ORDER = {"left": 0, "middle": 1, "right": 2}
+
+
+@dataclass(frozen=True)
+class Said:
+    """A side phrase found at ``start`` (its first word after the preposition and determiners) up to
+    ``end``: mentions as (slot, value) in the reader's slots, and the preposition before it."""
+
+    start: int
+    end: int
+    prep: str
+    mentions: tuple[tuple[str, object], ...]
+
+
+def drives_on_left(tokens: list[str]) -> bool:
+    """Whether the writer drives on the left: speeds in miles per hour (the reader's normaliser writes
+    every "miles an hour" as "mph")."""
+    return "mph" in tokens
+
+
+def _side(word: str, after: str, left_hand: bool, ring: bool) -> str | None:
+    """The side (left, right or middle) a side word says, the restated plain side winning."""
+    if after in ("left", "right") and (word in _RELATIVE or word in _RING):
+        return after  # "the nearside (left) lane"
+    if word in _PLAIN:
+        return _PLAIN[word]
+    rel = _RELATIVE.get(word)
+    if rel is None and word in _RING:
+        rel = _RING[word]
+        if ring:  # a roundabout's inner lane is by the island, on the offside
+            rel = "off" if rel == "near" else "near"
+    if rel is None:
+        return None
+    if rel == "middle":
+        return "middle"
+    near = "left" if left_hand else "right"
+    far = "right" if left_hand else "left"
+    return near if rel == "near" else far
+
+
+def _is_side_word(word: str) -> bool:
+    return word in _PLAIN or word in _RELATIVE or word in _RING
+
+
+def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | None:
+    """The side phrase starting at token ``i`` (at its preposition, determiner or first content word),
+    or None. Two orders are read:
+
+    - side word, noun: "in the offside lane", "from the left-hand footway", "the right arm";
+    - noun, "on/to/at", determiner or possessive, side word: "a side street on my left", "off the
+      pavement on our right", "the lane to my left".
+
+    "lane" followed by a number ("lane 1") is numbered from the nearside."""
+    n = len(tokens)
+    j = i
+    prep = ""
+    if j < n and tokens[j] in _OPENING:
+        prep = tokens[j]
+        j += 1
+        if prep == "out" and tokens[j : j + 1] == ["of"]:
+            j += 1
+    elif i > 0 and tokens[i - 1] in _OPENING:  # (the preposition read with its verb: "swerved into")
+        prep = tokens[i - 1]
+    while j < n and tokens[j] in _DETERMINERS:
+        j += 1
+    while j < n and tokens[j] in _MODIFIERS:
+        j += 1
+    if j >= n:
+        return None
+    start = j
+    if i != start and tokens[i] not in _OPENING and tokens[i] not in _DETERMINERS:
+        return None
+    # side word, then noun
+    if _is_side_word(tokens[j]):
+        k = j + 1
+        after = tokens[k] if k < n else ""
+        if after in ("left", "right") and tokens[j] not in _PLAIN:
+            k += 1
+        if tokens[k : k + 1] == ["hand"]:  # ("right hand lane")
+            k += 1
+        noun = tokens[k] if k < n else ""
+        side = _side(tokens[j], after, left_hand, ring)
+        if side is None:
+            return None
+        owner = tokens[k + 2 : k + 4]
+        of_another = tokens[k + 1 : k + 2] == ["of"] and (owner[:1] in _POSSESSIVE or owner == ["the", "ego"])
+        if noun == "lane" and not of_another:  # (not "the left lane of the ego": a lane named by another's)
+            if prep in _INTO:  # where it moves to, not where it starts
+                return Said(start, k + 1, prep, (("toward", side),)) if side != "middle" else None
+            return Said(start, k + 1, prep, (("lane_side", side),))
+        if noun in KERB_NOUNS and side != "middle":
+            return Said(start, k + 1, prep, (("kerb", None), ("kerb_side", side)))
+        if (noun in ARM_NOUNS or noun in ("road", "street")) and side != "middle" and tokens[j] in _PLAIN:
+            return Said(start, k + 1, prep, (("arm", None), ("side", side)))
+        return None
+    # "lane 1": numbered from the nearside
+    numbered = j + 1 < n and tokens[j + 1].isdigit() and 0 < int(tokens[j + 1]) < 7
+    if tokens[j] == "lane" and numbered and tokens[j + 2 : j + 3] != ["m"] and prep in ("in", "into", "from", "on"):
+        number = int(tokens[j + 1])
+        side = _side("nearside", "", left_hand, ring) if number == 1 else "middle" if number == 2 else None
+        if side is None:
+            side = _side("offside", "", left_hand, ring)
+        return Said(start, j + 2, prep, (("lane_side", side),))
+    # noun, then "on my left"
+    k = j
+    kind = None
+    if tokens[k] in _MINOR and k + 1 < n and tokens[k + 1] in _ROAD_NOUNS:
+        kind, k = "arm", k + 2
+    elif tokens[k] in ARM_NOUNS:
+        kind, k = "arm", k + 1
+    elif tokens[k] in KERB_NOUNS:
+        kind, k = "kerb", k + 1
+    elif tokens[k] in _KERB_LANES and tokens[k + 1 : k + 2] == ["lane"]:
+        kind, k = "kerb", k + 2
+    elif tokens[k] == "lane":
+        kind, k = "lane", k + 1
+    if kind is None or k >= n or tokens[k] not in _LINKS:
+        return None
+    m = k + 1
+    if tokens[m : m + 1] == ["the"] and tokens[m + 1 : m + 3] == ["ego", "'s"]:
+        m += 3  # "on the ego's right"
+    elif m < n and tokens[m] in _DETERMINERS:
+        m += 1
+    if m >= n or tokens[m] not in ("left", "right"):
+        return None
+    side = tokens[m]
+    end = m + 1
+    if tokens[end : end + 1] in (["side"], ["hand"]):  # ("on my left side")
+        end += 1
+    if tokens[end : end + 1] == ["lane"] or (tokens[end : end + 1] == ["-"]):
+        return None  # ("the lane to the left lane": not this)
+    if kind == "arm":
+        return Said(start, end, prep, (("arm", None), ("side", side)))
+    if kind == "kerb":
+        return Said(start, end, prep, (("kerb", None), ("kerb_side", side)))
+    return Said(start, end, prep, (("lane_side", side),))
+
+
+def beside(lane: str | None, ego_lane: str | None) -> str | None:
+    """The side of the ego a road user in ``lane`` is on, when the ego's own lane is said too (lanes
+    as left, middle or right): the lane with the lower rank is to the left. Without the ego's lane the
+    lane's own side is kept (the ego is then in the other one); the same lane as the ego's, or a middle
+    lane with nothing to compare it with, says no side."""
+    if lane not in _ORDER:
+        return lane
+    if ego_lane not in _ORDER:
+        return lane if lane != "middle" else None
+    if _ORDER[lane] == _ORDER[ego_lane]:
+        return None
+    return "left" if _ORDER[lane] < _ORDER[ego_lane] else "right"
+
+
+def starts_in_lane(lane: str | None, side: str | None, toward: str | None) -> bool:
+    """Whether a lane changer's lane was said as where it starts ("a coach in the left lane moves
+    over"): a lane of its own beside the ego's, and no other side said for where it goes."""
+    return lane in ("left", "right") and side is None and toward is None
