@@ -21,7 +21,7 @@ def relation(text: str) -> str | None:
         ),
         ("I was doing 50 mph in the inside lane when a taxi in the outside lane swerved into mine.", "right"),
         (
-            "I was at 40 mph in the nearside lane and a hatchback travelling in the offside lane came across into my lane.",
+            "I was at 40 mph in the nearside lane and a hatchback in the offside lane came across into my lane.",
             "right",
         ),
         # the same words without miles per hour keep the right-hand convention
@@ -87,3 +87,36 @@ def test_beside_and_convention():
     assert beside("left", "right") == "left" and beside("right", "middle") == "right"
     assert beside("left", None) == "left" and beside("middle", None) is None and beside("left", "left") is None
     assert drives_on_left("at 30 mph".split()) and not drives_on_left("at 30 km/h".split())
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        (
+            "On the roundabout at 15 mph, a taxi entering from my left did not stop and hit my nearside.",
+            "junction_left",
+        ),
+        (
+            "Round the roundabout at 20 mph, a pickup came out of the entry on our left and hit our offside.",
+            "junction_left",
+        ),
+        (
+            "I was in lane 2 at 60 mph when a coach in lane 1 moved over; its offside touched the nearside of my car.",
+            "left",
+        ),
+    ],
+)
+def test_a_side_of_a_vehicle_is_no_place(text, expected):
+    assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("Doing 20 mph, a toddler ran out from the nearside into my path.", "roadside_left"),
+        ("At 25 mph a jogger stepped off the offside straight in front of me.", "roadside_right"),
+        ("At 30 km/h a toddler runs out from the nearside into the ego's path.", "roadside_right"),
+    ],
+)
+def test_a_bare_kerb_side_follows_the_writers_driving_side(text, expected):
+    assert relation(text) == expected

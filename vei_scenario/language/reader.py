@@ -489,6 +489,8 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
         if said is not None:  # a lane, kerb or arm and its side ("in the offside lane", "a side road on my left")
             words = " ".join(tokens[said.start : said.end])
             nxt = tokens[said.end] if said.end < len(tokens) else ""
+            if not said.mentions:
+                ignored.extend(tokens[said.start : said.end])  # (a side of a vehicle: no place)
             for slot, value in said.mentions:
                 clauses[-1][1].append(_Mention(slot, value, words, said.start, said.prep or prev, nxt, said.end, det))
             i = said.end

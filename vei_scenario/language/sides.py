@@ -45,6 +45,9 @@ _MINOR = frozenset({"side", "minor"})  # (a slip road joins as a lane does: not 
 _KERB_LANES = frozenset({"cycle", "bike", "bus"})
 _DETERMINERS = frozenset({"the", "a", "an", "my", "our", "its", "his", "her", "their", "your", "this", "that"})
 _POSSESSIVE = (["my"], ["our"], ["its"], ["his"], ["her"], ["their"], ["your"])
+_OWNERS = frozenset({"my", "our", "its", "his", "her", "their", "your"})
+#: Side words of a kerb, bare ("on the nearside") or of a vehicle ("the offside of the van").
+_KERB_SIDES = frozenset({"nearside", "near-side", "offside", "off-side"})
 _OPENING = frozenset({"in", "on", "from", "off", "out", "of", "along", "into", "onto", "at", "down", "up"})
 _INTO = frozenset({"into", "onto"})
 _LINKS = frozenset({"on", "to", "at"})
@@ -121,6 +124,13 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
     start = j
     if i != start and tokens[i] not in _OPENING and tokens[i] not in _DETERMINERS:
         return None
+    if tokens[j] in _KERB_SIDES:
+        part = tokens[j + 1 : j + 2] == ["of"] or tokens[j - 1] in _OWNERS or tokens[j - 1] == "'s"
+        if part:  # "the offside of the HGV", "into our nearside": a side of a vehicle, no road user's place
+            return Said(start, j + 1, prep, ())
+        if tokens[j + 1 : j + 2] not in (["lane"], ["left"], ["right"], ["hand"]) and prep in ("on", "from", "off"):
+            side = _side(tokens[j], "", left_hand, ring)  # "from the nearside": that kerb
+            return Said(start, j + 1, prep, (("kerb", None), ("kerb_side", side)))
     # side word, then noun
     if _is_side_word(tokens[j]):
         k = j + 1
