@@ -165,7 +165,7 @@ def test_a_cut_in_by_a_standing_or_a_faster_car_happens(text, tmp_path):
         # what is said of the ego as an object ("towards us") stays with the actor it was said of
         (
             "A ghost driver comes towards us in our lane while a cyclist rides along the kerb ahead.",
-            [("car", "wrong_way", "ahead", "against"), ("bicycle", "along_road", "ahead", None)],
+            [("car", "wrong_way", "oncoming", None), ("bicycle", "along_road", "ahead", None)],
         ),
         # the passive: the doer follows "by"
         ("The AV gets cut off by a van from the right lane.", [("van", "cut_in", "right", None)]),

@@ -120,3 +120,15 @@ def test_a_side_of_a_vehicle_is_no_place(text, expected):
 )
 def test_a_bare_kerb_side_follows_the_writers_driving_side(text, expected):
     assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Doing 40 mph on a country lane when a pickup came straight towards us in our lane.",
+        "At 60 km/h a taxi came towards us on our side of the road.",
+        "On the bend at 50 km/h a lorry crossed the white line and came head-on at me in my lane.",
+    ],
+)
+def test_a_road_user_coming_at_the_ego_in_its_lane_starts_oncoming(text):
+    assert relation(text) == "oncoming"

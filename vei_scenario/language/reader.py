@@ -1806,6 +1806,7 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool) -> None:
     ):
         returns = a.returns or first == "overtake" or any(n in ("change_lane", "cut_in") for n in names[1:])
         in_lane = (a.wrong_way or "ahead" in a.said) and first != "overtake"  # (an overtaker starts in its lane)
+        in_lane = in_lane and sides.starts_in_ego_lane(a.said)
         cfg = {"returns": 1.0} if returns else {}
         rest = [b for b in spec.behaviours if b[0] not in ("cut_in", "change_lane", "keep_going", "overtake")]
         spec.behaviours = [("wrong_way", cfg, crit, link)] + rest

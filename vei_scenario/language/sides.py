@@ -215,3 +215,11 @@ def starts_in_lane(lane: str | None, side: str | None, toward: str | None) -> bo
     """Whether a lane changer's lane was said as where it starts ("a coach in the left lane moves
     over"): a lane of its own beside the ego's, and no other side said for where it goes."""
     return lane in ("left", "right") and side is None and toward is None
+
+
+def starts_in_ego_lane(said: set) -> bool:
+    """Whether a wrong-way road user starts in the ego's lane facing it, rather than oncoming in its
+    own and drifting over: not when it is said to come towards the ego ("comes at me head-on in my
+    lane", "over the centre line, coming straight at me"): the writer saw it arrive from the other
+    way, and "in my lane" says where it drives into."""
+    return "oncoming" not in said
