@@ -132,3 +132,32 @@ def test_a_bare_kerb_side_follows_the_writers_driving_side(text, expected):
 )
 def test_a_road_user_coming_at_the_ego_in_its_lane_starts_oncoming(text):
     assert relation(text) == "oncoming"
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        (
+            "Unit 1 was heading north at 30 mph when Unit 2, travelling southbound, turned left across its path.",
+            ("oncoming", "junction_opposite"),
+        ),
+        (
+            "V1 was westbound at 40 km/h. V2, northbound, went through the red light into the path of V1.",
+            ("junction_left",),
+        ),
+        (
+            "The ego was heading south at 50 km/h when a lorry going east ran the red at the crossroads.",
+            ("junction_right",),
+        ),
+        (
+            "V1 was eastbound at 40 km/h when V2, heading north, drove across the junction in front of V1.",
+            ("junction_right",),
+        ),
+        (
+            "V1 was northbound at 30 mph; V2 was travelling southbound in the northbound lane and hit V1 head-on.",
+            ("oncoming",),
+        ),
+    ],
+)
+def test_compass_headings_are_related_to_the_egos(text, expected):
+    assert relation(text) in expected

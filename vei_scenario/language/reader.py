@@ -485,6 +485,11 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
             clauses[-1][1].append(_Mention("toward", side, side, side_at, tokens[side_at - 1], after, side_at + 2))
             i = side_at + 2
             continue
+        heading = sides.heading_at(tokens, i)
+        if heading is not None:  # "eastbound", "heading north": related to the ego's heading once both are read
+            clauses[-1][1].append(_Mention("heading", heading, tok, i, prev, end=i + 1))
+            i += 1
+            continue
         said = sides.phrase_at(tokens, i, left_hand, ring)
         if said is not None:  # a lane, kerb or arm and its side ("in the offside lane", "a side road on my left")
             words = " ".join(tokens[said.start : said.end])
@@ -962,6 +967,7 @@ def read(text: str) -> Reading:
     """Parse ``text`` into a :class:`~vei_scenario.language.reading.Reading` (with ``ignored``
     words); raise :class:`~vei_scenario.language.reading.NotUnderstood` naming what cannot be placed."""
     clauses, ignored, read_as = scan(text)
+    clauses = sides.relate_headings(clauses)
     clauses = _drop_label(clauses)
     clauses, ego_follows = _ego_following(clauses)
     r = Reading()

@@ -223,3 +223,72 @@ def starts_in_ego_lane(said: set) -> bool:
     lane", "over the centre line, coming straight at me"): the writer saw it arrive from the other
     way, and "in my lane" says where it drives into."""
     return "oncoming" not in said
+
+
+#: Compass headings in degrees, and the words that say them ("eastbound"; "heading east").
+_COMPASS = {"north": 0, "east": 90, "south": 180, "west": 270}
+_BOUND = {f"{word}bound": word for word in _COMPASS}
+_MOTION = frozenset(
+    {"heading", "headed", "travelling", "traveling", "going", "driving", "riding", "proceeding", "moving"}
+)
+#: Nouns a compass adjective names, not a road user's heading ("in the northbound lane").
+_COMPASS_NOUNS = frozenset({"lane", "lanes", "carriageway", "side", "sidewalk", "pavement", "kerb", "footway", "exit"})
+
+
+def heading_at(tokens: list[str], i: int) -> str | None:
+    """The compass heading said at token ``i`` of a road user ("eastbound", "heading north"), or None
+    (a compass word naming a lane or a place: "the northbound lane", "from the east sidewalk")."""
+    word = tokens[i]
+    after = tokens[i + 1] if i + 1 < len(tokens) else ""
+    if after in _COMPASS_NOUNS:
+        return None
+    if word in _BOUND:
+        return _BOUND[word]
+    if word in _COMPASS and i > 0 and tokens[i - 1] in _MOTION:
+        return word
+    return None
+
+
+def relate_headings(clauses: list) -> list:
+    """Clauses (link, mentions) with each road user's compass heading made its start relative to the
+    ego's heading: the opposite heading is oncoming, a crossing one comes from the junction arm on the
+    side it comes from (heading south towards an ego heading east: from the north, on its left); the
+    same heading says nothing more. A heading is the road user's named last before it ("V2, eastbound";
+    "the path of V1, which was westbound": V1's). Without the ego's heading, headings say nothing."""
+    flat = [m for _, mentions in clauses for m in mentions]
+    owner: dict[int, object] = {}
+    last = None
+    for m in flat:
+        if m.slot == "actor":
+            last = m
+        elif m.slot == "pronoun":
+            last = None  # (whom a pronoun names is the reader's to say)
+        elif m.slot == "heading" and last is not None:
+            owner[id(m)] = last
+    ego = next((m.value for m in flat if m.slot == "heading" and id(m) in owner and owner[id(m)].value == "ego"), None)
+    out = []
+    for link, mentions in clauses:
+        kept = []
+        for m in mentions:
+            if m.slot != "heading":
+                kept.append(m)
+                continue
+            who = owner.get(id(m))
+            if ego is None or who is None or who.value == "ego":
+                continue
+            relation = _from_heading(_COMPASS[str(m.value)], _COMPASS[str(ego)])
+            if relation is not None:
+                kept.append(type(m)(**{**m.__dict__, "slot": "relation", "value": relation}))
+        out.append((link, kept))
+    return out
+
+
+def _from_heading(heading: int, ego_heading: int) -> str | None:
+    """Where a road user heading ``heading`` starts for an ego heading ``ego_heading`` (degrees)."""
+    turn = (heading - ego_heading) % 360
+    if turn == 180:
+        return "oncoming"
+    if turn == 0:
+        return None
+    came_from = (heading + 180 - ego_heading) % 360  # the side it comes from, clockwise from the ego's front
+    return "junction_right" if came_from == 90 else "junction_left"
