@@ -161,3 +161,25 @@ def test_a_road_user_coming_at_the_ego_in_its_lane_starts_oncoming(text):
 )
 def test_compass_headings_are_related_to_the_egos(text, expected):
     assert relation(text) in expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        (
+            "At 30 km/h a cyclist came out of a side road on my right and turned into my road ahead of me.",
+            "junction_right",
+        ),
+        (
+            "At 25 mph an e-scooter rider emerged from a minor road on our left and pulled into our road.",
+            "junction_left",
+        ),
+        (
+            "The ego drives at 40 km/h; a cyclist comes out of the side street on its left into its road.",
+            "junction_left",
+        ),
+    ],
+)
+def test_a_rider_out_of_a_side_road_turns_in_from_that_arm(text, expected):
+    reading = read(text)
+    assert (reading.actors[0].relation, reading.actors[0].behaviours[0][0]) == (expected, "turn_into")

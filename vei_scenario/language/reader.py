@@ -1554,7 +1554,8 @@ def read(text: str) -> Reading:
             crit = next((b[2] for b in behaviours if b[2]), a.crit)
             behaviours = [("cross_in_front", {}, crit, "sequence")]
         if a.kind in RIDERS and junction and behaviours[:1] and behaviours[0][0] == "cut_in":
-            if not (a.lane_side or a.followed or a.toward or "ahead" in a.said or a.goes_on):
+            out_of_arm = sides.rides_out_of_arm(True, a.arm, a.side, junction)  # (then it turns into the road)
+            if not (a.lane_side or a.followed or a.toward or "ahead" in a.said or a.goes_on or out_of_arm):
                 # "an e-scooter cuts across at a junction": a rider crossing the ego's road
                 behaviours = [("cross_in_front", {}, *behaviours[0][2:])] + behaviours[1:]
         overtaking = any(b[0] == "overtake" for b in behaviours)  # (it rides along, and out to pass)

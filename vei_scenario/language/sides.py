@@ -292,3 +292,11 @@ def _from_heading(heading: int, ego_heading: int) -> str | None:
         return None
     came_from = (heading + 180 - ego_heading) % 360  # the side it comes from, clockwise from the ego's front
     return "junction_right" if came_from == 90 else "junction_left"
+
+
+def rides_out_of_arm(rider: bool, arm: bool, side: str | None, junction: bool) -> bool:
+    """Whether a rider pulling into the road comes out of a junction arm rather than across it: a side
+    road said with its side ("came out of a side street on my left") at a junction. A rider (unlike
+    a walker) out of a side road takes the road as a vehicle does: it turns into the ego's road from
+    that arm."""
+    return rider and arm and junction and side in ("left", "right")
