@@ -183,3 +183,23 @@ def test_compass_headings_are_related_to_the_egos(text, expected):
 def test_a_rider_out_of_a_side_road_turns_in_from_that_arm(text, expected):
     reading = read(text)
     assert (reading.actors[0].relation, reading.actors[0].behaviours[0][0]) == (expected, "turn_into")
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A car in the right lane 15 m ahead cuts across to turn into a side street; ego at 50 km/h.", "right"),
+        ("A taxi in front of us swings left into a minor road on the left; we are doing 30 km/h.", "ahead"),
+        ("At 40 km/h a van ahead of me turned right into the side road on the right.", "ahead"),
+        ("At 30 km/h a cyclist ahead of me turned left into a side street on the left.", "ahead"),
+    ],
+)
+def test_a_side_road_turned_into_is_where_it_goes_not_where_it_starts(text, expected):
+    reading = read(text)
+    assert reading.actors[0].relation == expected
+    assert reading.map_kind == "crossroad"  # (the side road is a junction all the same)
+
+
+def test_the_edge_of_the_road_is_a_kerb():
+    said = phrase_at("keeping to the right edge".split(), 1, False, False)
+    assert said is not None and ("kerb_side", "right") in said.mentions

@@ -36,9 +36,11 @@ _RELATIVE = {
 #: roundabout's is towards the island (offside).
 _RING = {"inside": "near", "inner": "near", "outside": "off", "outer": "off"}
 #: Nouns of a kerb or the ground beside the carriageway.
-KERB_NOUNS = frozenset({"kerb", "curb", "kerbside", "pavement", "sidewalk", "footway", "footpath", "verge", "shoulder"})
+KERB_NOUNS = frozenset(
+    {"kerb", "curb", "kerbside", "pavement", "sidewalk", "footway", "footpath", "verge", "shoulder", "edge"}
+)
 #: Nouns of a junction arm; "road"/"street" only when said to be a side or minor one.
-ARM_NOUNS = frozenset({"arm", "entry", "entrance", "approach"})
+ARM_NOUNS = frozenset({"arm", "entry", "entrance", "approach", "exit"})
 _ROAD_NOUNS = frozenset({"road", "street"})
 _MINOR = frozenset({"side", "minor"})  # (a slip road joins as a lane does: not an arm)
 #: Lanes that are beside the carriageway rather than in it: a rider there starts at the kerb.
@@ -48,7 +50,12 @@ _POSSESSIVE = (["my"], ["our"], ["its"], ["his"], ["her"], ["their"], ["your"])
 _OWNERS = frozenset({"my", "our", "its", "his", "her", "their", "your"})
 #: Side words of a kerb, bare ("on the nearside") or of a vehicle ("the offside of the van").
 _KERB_SIDES = frozenset({"nearside", "near-side", "offside", "off-side"})
-_OPENING = frozenset({"in", "on", "from", "off", "out", "of", "along", "into", "onto", "at", "down", "up"})
+_OPENING = frozenset(
+    {"in", "on", "from", "off", "out", "of", "along", "into", "onto", "at", "down", "up", "to", "towards", "toward"}
+)
+#: Prepositions of where a road user goes into: an arm after them is its way out, not where it starts
+#: (not "to": "comes up to the entry and waits" is at that arm).
+_GOAL = frozenset({"into", "onto"})
 _INTO = frozenset({"into", "onto"})
 _LINKS = frozenset({"on", "to", "at"})
 _MODIFIERS = frozenset({"adjacent", "next", "neighbouring", "neighboring", "nearest"})
@@ -175,6 +182,12 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
         kind, k = "kerb", k + 2
     elif tokens[k] == "lane":
         kind, k = "lane", k + 1
+    if kind == "arm" and prep in _GOAL:  # "to turn into a side street": where it goes
+        end = k
+        if tokens[k : k + 1] == ["on"] and tokens[k + 1 : k + 2] in (["the"], ["my"], ["our"], ["its"]):
+            if tokens[k + 2 : k + 3] in (["left"], ["right"]):
+                end = k + 3
+        return Said(start, end, prep, (("map", "crossroad"),))  # (a junction all the same)
     if kind is None or k >= n or tokens[k] not in _LINKS:
         return None
     m = k + 1
