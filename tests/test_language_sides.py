@@ -203,3 +203,15 @@ def test_a_side_road_turned_into_is_where_it_goes_not_where_it_starts(text, expe
 def test_the_edge_of_the_road_is_a_kerb():
     said = phrase_at("keeping to the right edge".split(), 1, False, False)
     assert said is not None and ("kerb_side", "right") in said.mentions
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("VUT 30 km/h; child running from the near (left) side at 6 km/h.", "roadside_left"),
+        ("Ego at 40 km/h, an adult walking from the far (right) side at 5 km/h.", "roadside_right"),
+        ("VUT 25 km/h; elderly pedestrian moving from the opposite (left) kerb at 3 km/h.", "roadside_left"),
+    ],
+)
+def test_a_far_or_near_side_restated_plainly(text, expected):
+    assert relation(text) == expected

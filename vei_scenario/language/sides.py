@@ -50,6 +50,8 @@ _POSSESSIVE = (["my"], ["our"], ["its"], ["his"], ["her"], ["their"], ["your"])
 _OWNERS = frozenset({"my", "our", "its", "his", "her", "their", "your"})
 #: Side words of a kerb, bare ("on the nearside") or of a vehicle ("the offside of the van").
 _KERB_SIDES = frozenset({"nearside", "near-side", "offside", "off-side"})
+#: Words of the far or near side of the road, before a plain side that restates them.
+_FAR_NEAR = frozenset({"far", "near", "opposite", "other"})
 _OPENING = frozenset(
     {"in", "on", "from", "off", "out", "of", "along", "into", "onto", "at", "down", "up", "to", "towards", "toward"}
 )
@@ -138,6 +140,9 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
         if tokens[j + 1 : j + 2] not in (["lane"], ["left"], ["right"], ["hand"]) and prep in ("on", "from", "off"):
             side = _side(tokens[j], "", left_hand, ring)  # "from the nearside": that kerb
             return Said(start, j + 1, prep, (("kerb", None), ("kerb_side", side)))
+    restated = tokens[j + 1 : j + 2] in (["left"], ["right"]) and tokens[j + 2 : j + 3] in (["side"], ["kerb"])
+    if tokens[j] in _FAR_NEAR and restated:  # "from the far (left) side": the side said plainly
+        return Said(start, j + 3, prep, (("kerb", None), ("kerb_side", tokens[j + 1])))
     # side word, then noun
     if _is_side_word(tokens[j]):
         k = j + 1
