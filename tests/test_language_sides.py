@@ -215,3 +215,15 @@ def test_the_edge_of_the_road_is_a_kerb():
 )
 def test_a_far_or_near_side_restated_plainly(text, expected):
     assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("At 40 mph a coach in the left lane moved over into our lane; our mirror hit its rear window.", "left"),
+        ("At 30 mph a taxi in the left lane moved over into my lane; my bonnet hit its rear door.", "left"),
+        ("At 35 mph a pickup in the right lane moved over into my lane; my wing touched its back tyre.", "right"),
+    ],
+)
+def test_an_end_of_a_vehicle_is_no_place(text, expected):
+    assert relation(text) == expected

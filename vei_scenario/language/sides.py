@@ -50,6 +50,12 @@ _POSSESSIVE = (["my"], ["our"], ["its"], ["his"], ["her"], ["their"], ["your"])
 _OWNERS = frozenset({"my", "our", "its", "his", "her", "their", "your"})
 #: Side words of a kerb, bare ("on the nearside") or of a vehicle ("the offside of the van").
 _KERB_SIDES = frozenset({"nearside", "near-side", "offside", "off-side"})
+#: The parts of a vehicle a side or end word can name ("the rear bumper", "its front wing").
+VEHICLE_PARTS = frozenset(
+    {"bumper", "wing", "door", "doors", "wheel", "wheels", "corner", "quarter", "panel", "light", "lights", "lamp",
+     "end", "tyre", "tire", "fender", "windscreen", "windshield", "window", "mirror", "offside", "nearside"}
+)  # fmt: skip
+_ENDS = frozenset({"rear", "front", "back"})
 #: Words of the far or near side of the road, before a plain side that restates them.
 _FAR_NEAR = frozenset({"far", "near", "opposite", "other"})
 _OPENING = frozenset(
@@ -140,6 +146,8 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
         if tokens[j + 1 : j + 2] not in (["lane"], ["left"], ["right"], ["hand"]) and prep in ("on", "from", "off"):
             side = _side(tokens[j], "", left_hand, ring)  # "from the nearside": that kerb
             return Said(start, j + 1, prep, (("kerb", None), ("kerb_side", side)))
+    if tokens[j] in _ENDS and tokens[j + 1 : j + 2] and tokens[j + 1] in VEHICLE_PARTS:
+        return Said(start, j + 2, prep, ())  # "clipped his rear bumper": a part of a vehicle, no place
     restated = tokens[j + 1 : j + 2] in (["left"], ["right"]) and tokens[j + 2 : j + 3] in (["side"], ["kerb"])
     if tokens[j] in _FAR_NEAR and restated:  # "from the far (left) side": the side said plainly
         return Said(start, j + 3, prep, (("kerb", None), ("kerb_side", tokens[j + 1])))
