@@ -29,6 +29,7 @@ from dataclasses import dataclass, field, replace
 from functools import lru_cache
 
 from vei_scenario.language import lexicon as L
+from vei_scenario.language import quantities as Q
 from vei_scenario.language import vocabulary as V
 from vei_scenario.language.behaviours import BEHAVIOURS
 from vei_scenario.language.ncap import rewrite as ncap_rewrite
@@ -176,6 +177,7 @@ class _Mention:
     next_: str = ""  # the token after it
     end: int = 0  # token index after it
     det: str = ""  # the determiner right before it ("the", "a", ...)
+    owners: tuple = ()  # a number's: the starts of the mentions its grammar says it of (quantities.owners)
 
 
 @dataclass
@@ -424,11 +426,11 @@ def _number(tokens: list[str], i: int) -> tuple[str, float, int] | None:
         if value == int(value) and 1 <= value <= 8:  # "3 lanes", "a 2-lane road": lanes a direction
             return "lanes", int(value), 2 if nxt != "-" else 3
     prev = tokens[i - 1] if i > 0 else ""
-    if prev in ("at", "doing", "about", "around", "of") and 3 <= value <= 250:  # "at 120": km/h
-        return "speed", value / 3.6, 1
+    if prev in ("at", "doing", "about", "around", "of") and 3 <= value <= 250:  # "at 120": the unit said before
+        return "speed", value * Q.carried_unit(tokens, i), 1
     ends = nxt in ("", ".", ",", ";", "!", "?", "and", "then", "when", "while", "but")
     if prev in _MOTION_BEFORE_SPEED and 3 <= value <= 250 and ends:  # "Ego goes 50, ...": km/h
-        return "speed", value / 3.6, 1
+        return "speed", value * Q.carried_unit(tokens, i), 1
     return "unknown", value, 1
 
 
@@ -447,6 +449,12 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
     read_as: list[tuple[str, str]] = [
         (typed, read) for typed, read in zip(_tokens(text, spell=False), tokens) if typed != read
     ]
+
+    def ending_at(k: int) -> int | None:  # the start of the road-user mention whose last word is token k
+        return next(
+            (x.start for _, ms in clauses for x in ms if x.slot in ("actor", "pronoun") and x.end == k + 1), None
+        )
+
     i = 0
     while i < len(tokens):
         tok = tokens[i]
@@ -466,13 +474,16 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
         if re.fullmatch(r"\d+(?:\.\d+)?", tok):
             kind, value, used = _number(tokens, i)
             words = " ".join(tokens[i : i + used])
+            if kind in ("speed", "distance", "speed_range") and Q.lateral(tokens, i, used):
+                kind = "skip"  # ("a lateral velocity of 1 m/s", "1.5 m clearance"): across the road, no travel
+            owners = Q.owners(tokens, i, tokens[i + 1 : i + 2] != [] and tokens[i + 1] in V.SPEED_UNITS, ending_at)
             if kind == "unknown":
                 ignored.append(tok)
             elif kind == "speed_range":  # the speed it has, and (its own slot) the one it changes to
                 clauses[-1][1].append(_Mention("speed", value[0], words, i, prev, end=i + used))
                 clauses[-1][1].append(_Mention("speed_to", value[1], words, i, prev, end=i + used))
             elif kind != "skip":
-                clauses[-1][1].append(_Mention(kind, value, words, i, prev, end=i + used))
+                clauses[-1][1].append(_Mention(kind, value, words, i, prev, end=i + used, owners=owners))
             i += used
             continue
         side_at = _lane_to_side(tokens, i)
@@ -824,6 +835,9 @@ def _drop_label(clauses):
         if colon is None or (k and colon > 2) or any(m.slot in ("member", "pronoun") for m in mentions[colon:]):
             out.append((link, mentions))
             continue
+        if {m.start for m in mentions[:colon]} & {o for m in mentions[colon:] for o in m.owners}:
+            out.append((link, mentions))  # ("cyclist: 12 m ahead, 15 km/h, brakes"): a key whose values follow
+            continue
         dropped = ("actor", "behaviour", "relation", "side", "count", "unknown_verb") + _POSITIONAL
         head = [m for m in mentions[:colon] if m.slot not in dropped]
         out.append((link, head + mentions[colon + 1 :]))
@@ -961,6 +975,8 @@ def read(text: str) -> Reading:
     ego_is_a_person = False  # (the ego named as "I" or "we": "it" is then never the ego)
     first_person = bool({"i", "we", "me", "my", "us", "our"} & set(_tokens(text)))  # (the narrator's story)
     bound: dict[str, _Actor | str] = {}  # "he"/"she" → whom it first named
+    resolved: dict[int, _Actor | str] = {}  # a road-user mention's start → whom it names
+    owned = {o for _, ms in clauses for x in ms for o in x.owners}  # mentions a number is said of
     for link, mentions in clauses:
         named: list[tuple[_Actor | str, str]] = []  # (actor, role) in order: subject, prep, verb, participle
         clause_subject: _Actor | str | None = None
@@ -983,6 +999,15 @@ def read(text: str) -> Reading:
                 prev = prev if m.value == "'s" else m
                 continue
             if m.slot == "modal":
+                continue
+            whose = [resolved.get(o) for o in m.owners]
+            if whose and None not in whose and not (m.slot == "distance" and "ego" in whose):
+                for who in whose:  # ("van speed 60 km/h", "cyclist: 12 m ahead, 15 km/h"): whose its grammar says
+                    if who == "ego" and m.slot == "speed":
+                        r.ego_speed_mps = m.value
+                    elif who != "ego":
+                        _apply(m, who, r, link, added)
+                prev = m
                 continue
             if m.slot in ("conj", "link"):
                 expect_subject = True
@@ -1024,6 +1049,8 @@ def read(text: str) -> Reading:
                 if m.slot == "actor" and prev is not None and prev.slot == "actor" and prev.end == m.start:
                     if prev.words == "target" and named and isinstance(named[-1][0], _Actor) and m.value != "ego":
                         named[-1][0].kind = str(m.value)  # "the target pedestrian": a walker
+                    if prev.start in resolved:
+                        resolved[m.start] = resolved[prev.start]
                     prev = m
                     continue  # "adult pedestrian", "bicycle courier", "target pedestrian (adult)": one actor
                 after_verb = prev is not None and prev.slot in _VERBS
@@ -1108,7 +1135,10 @@ def read(text: str) -> Reading:
                     if (
                         same
                         and not elsewhere
-                        and (m.det in ("the", "this", "that", "its", "our", "my") or (not m.det and _bare(m)))
+                        and (
+                            m.det in ("the", "this", "that", "its", "our", "my")
+                            or (not m.det and (_bare(m) or m.start in owned))  # ("speed of scooter 20 km/h")
+                        )
                     ):
                         who = same[-1]  # ("Target: cyclist, 30 m ahead. Cyclist turns left.": the same one)
                     elif (
@@ -1172,6 +1202,7 @@ def read(text: str) -> Reading:
                 if role == "verb" and isinstance(who, _Actor) and isinstance(clause_subject, _Actor) and after_verb:
                     who.object_of = who.object_of or clause_subject
                 named.append((who, role))
+                resolved[m.start] = who
                 if role == "subject":
                     subject = clause_subject = who
                     for p in pending:

@@ -1,0 +1,91 @@
+"""Numbers as people state them: a number's unit, its head (what it measures) and its owner (the road
+user it is said of) read from the grammar around it.
+
+Every wording here is written for these tests (none is from a corpus)."""
+
+from __future__ import annotations
+
+import pytest
+
+from vei_scenario.language.reader import read
+
+MPH = 0.44704
+KPH = 1 / 3.6
+
+
+def _speeds(text: str) -> tuple[float | None, list[float | None]]:
+    r = read(text)
+    return r.ego_speed_mps, [a.speed_mps for a in r.actors]
+
+
+# --- the owner of a speed -------------------------------------------------------------------------------
+@pytest.mark.parametrize(
+    "text, ego, other",
+    [
+        ("A van merges in front of us from the left. Van speed 60 km/h, ego speed 80 km/h.", 80, 60),
+        ("A cyclist rides ahead of the ego in its lane, cyclist speed 18 km/h, ego speed 35 km/h.", 35, 18),
+        ("A bus pulls out from a stop ahead. Speed of bus 15 km/h, speed of ego 45 km/h.", 45, 15),
+        ("Ego speed 70 km/h. A lorry brakes hard ahead, lorry speed 65 km/h.", 70, 65),
+    ],
+    ids=["noun-speed", "noun-speed-after-clause", "speed-of-noun", "ego-first"],
+)
+def test_a_speed_headed_by_a_road_user_noun_is_that_road_users(text, ego, other):
+    ego_mps, others = _speeds(text)
+    assert ego_mps == pytest.approx(ego * KPH) and len(others) == 1 and others[0] == pytest.approx(other * KPH)
+
+
+@pytest.mark.parametrize(
+    "text, ego, other",
+    [
+        ("- ego: 40 km/h, straight on\n- cyclist: 12 m ahead, 15 km/h, brakes suddenly", 40, 15),
+        ("* car ahead: 25 m, 50 km/h, stops hard\n* ego: 60 km/h", 60, 50),
+        ("ego: 30 mph\nmotorcycle: 20 metres ahead, 25 mph, slows down", 30 * 3.6 * MPH, 25 * 3.6 * MPH),
+    ],
+    ids=["bullets", "ego-last", "lines-mph"],
+)
+def test_a_number_on_a_key_value_line_belongs_to_the_key(text, ego, other):
+    ego_mps, others = _speeds(text)
+    assert ego_mps == pytest.approx(ego * KPH) and len(others) == 1 and others[0] == pytest.approx(other * KPH)
+
+
+@pytest.mark.parametrize(
+    "text, ego",
+    [
+        ("A cyclist overtakes me doing 18 mph, I'm at 25, and cuts in.", 25 * MPH),
+        ("The lorry ahead was doing about 40 mph and I was at 45 when it braked hard.", 45 * MPH),
+        ("Van in front at 30 m/s brakes suddenly, ego at 32.", 32.0),
+    ],
+    ids=["mph", "mph-about", "m/s"],
+)
+def test_a_bare_number_carries_the_unit_said_before_it(text, ego):
+    assert read(text).ego_speed_mps == pytest.approx(ego)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A van ahead drifts into our lane at a lateral speed of 2 m/s; ego at 60 km/h.",
+        "Ego at 60 km/h; a van ahead cuts in with a lateral velocity of 0.8 m/s.",
+        "Ego at 60 km/h. A cyclist is overtaken with a lateral clearance of 1.2 m, 40 m ahead.",
+    ],
+    ids=["lateral-speed", "lateral-velocity", "lateral-clearance"],
+)
+def test_a_lateral_quantity_is_not_a_speed_or_gap_of_travel(text):
+    r = read(text)
+    assert r.ego_speed_mps == pytest.approx(60 * KPH)
+    assert all(a.speed_mps is None or a.speed_mps > 5 for a in r.actors)
+    assert all(a.distance_m in (None, 40.0) for a in r.actors)
+
+
+@pytest.mark.parametrize(
+    "text, speed",
+    [
+        ("The ego and a lead truck both at 70 km/h, 30 m apart; the truck brakes hard.", 70),
+        ("Ego and target car both at 45 km/h, gap 20 m, target stops suddenly.", 45),
+        ("The ego and the van ahead are both doing 50 km/h when the van brakes.", 50),
+    ],
+    ids=["the-ego-and", "notes", "doing"],
+)
+def test_both_at_a_speed_gives_it_to_the_ego_and_the_other(text, speed):
+    ego_mps, others = _speeds(text)
+    assert ego_mps == pytest.approx(speed * KPH) and others == [pytest.approx(speed * KPH)]

@@ -1,0 +1,123 @@
+"""A number as a quantity: its unit, its head (what it measures) and its owner (whom it is said of),
+read from the grammar around it rather than from where it stands.
+
+Why: a speed or a gap lost or given to the wrong road user is the commonest way a description is read
+unfaithfully, and position alone ("the road user named last") cannot tell "van speed 60 km/h, ego speed
+80 km/h" apart from "a van overtakes the ego at 60 km/h". The constructions that name a number's owner
+are few and closed, and the same in every writer's style:
+
+- a noun heading the quantity: "<road user> speed N", "speed of <road user> N", "<road user> N km/h";
+- a key and its values: "<road user>: 6 m ahead, 20 mph, ..." (a bullet or a line of notes);
+- a coordinated subject with "both": "<road user> and <road user> both at N".
+
+What a number measures is said by the unit after it and, where a unit is shared, by its head noun: a
+lateral speed, a sideways clearance, a visibility distance are numbers of the scene, not the speed a road
+user travels at or its gap to the ego. A bare number ("I'm at 50") carries the speed unit the text used
+before it. Everything here works on the reader's tokens; what a road-user mention is comes from the
+reader (a callback), so the owner is the mention the reader already found.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from vei_scenario.language import vocabulary as V
+
+#: Heads that make a number no speed of travel nor a starting gap: a measure across the road ("a lateral
+#: velocity of 1 m/s", "1.5 m clearance"), how far one sees ("visibility reduced to 150 m"), or the
+#: closest approach, an outcome ("a minimum separation of 0.5 m"); a plain "separation of 120 m" is a gap.
+LATERAL_HEADS = frozenset(
+    {"lateral", "laterally", "sideways", "clearance", "visibility", "offset", "minimum", "closest"}
+)
+#: Nouns that head a speed ("van speed 60 km/h", "speed of the bus 15 km/h").
+SPEED_HEADS = frozenset({"speed", "velocity"})
+#: Words between a head and its number that carry nothing ("speed is about 20", "speed of ~20").
+_LINKS = frozenset({"about", "is", "was", "of", "at", "=", "approximately", "around", "roughly", "ca", "circa"})
+_STOPS = frozenset({".", ";", "!", "?"})
+_MOTION = frozenset({"doing", "going", "driving", "travelling", "traveling", "moving", "riding"})
+_DETERMINERS = frozenset({"the", "a", "an", "this", "that", "our", "my", "its", "their", "his", "her"})
+
+#: ``mention_ending_at(k)``: the start of the road-user (or ego) mention whose last word is token ``k``.
+Mentions = Callable[[int], "int | None"]
+
+
+def carried_unit(tokens: list[str], i: int) -> float:
+    """The factor to m/s of a bare speed at ``i`` ("I'm at 50"): the unit of the last speed said with
+    one before it, else km/h (the unit of a test engineer who gives none)."""
+    for k in range(i - 1, 0, -1):
+        if tokens[k] in V.SPEED_UNITS and tokens[k - 1].replace(".", "", 1).isdigit():
+            return V.SPEED_UNITS[tokens[k]]
+    return 1 / 3.6
+
+
+def lateral(tokens: list[str], i: int, used: int) -> bool:
+    """Whether the number at ``i`` (``used`` tokens with its unit) measures across the road: a lateral
+    head in the three words before it or the two after it, within its clause."""
+    for k in range(i - 1, max(i - 4, -1), -1):
+        if tokens[k] in _STOPS or tokens[k] == ",":
+            break
+        if tokens[k] in LATERAL_HEADS:
+            return True
+    after = tokens[i + used : i + used + 2]
+    return bool(after) and after[0] in LATERAL_HEADS
+
+
+def _skip_back(tokens: list[str], j: int) -> int:
+    while j >= 0 and tokens[j] in _LINKS:
+        j -= 1
+    return j
+
+
+def owners(tokens: list[str], i: int, unit: bool, mention_ending_at: Mentions) -> tuple[int, ...]:
+    """The starts of the mentions the number at ``i`` is said of by grammar (empty where the grammar
+    names none and the reader's reading of the clause decides). ``unit``: a speed unit follows it."""
+    j = _skip_back(tokens, i - 1)
+    if j < 0:
+        return ()
+    if tokens[j] in SPEED_HEADS:  # "van speed 60 km/h"
+        owner = mention_ending_at(j - 1)
+        return (owner,) if owner is not None else ()
+    owner = mention_ending_at(j)
+    if owner is not None:
+        k = owner - 1
+        while k >= 0 and tokens[k] in _DETERMINERS:
+            k -= 1
+        if k >= 1 and tokens[k] == "of" and tokens[k - 1] in SPEED_HEADS:  # "speed of the bus 15 km/h"
+            return (owner,)
+        if j == i - 1 and unit:  # "cyclist 15 km/h": said of the noun it stands after
+            return (owner,)
+    if tokens[j] in _MOTION and j and tokens[j - 1] == "both":  # "... are both doing 50 km/h"
+        j -= 1
+    if tokens[j] == "both":  # "the ego and a lead truck both at 70 km/h"
+        k = j - 1
+        while k >= 0 and tokens[k] in ("are", "were", "is", "was"):
+            k -= 1
+        second = _mention_near(k, mention_ending_at)  # (past a word after it: "the van ahead")
+        joint = next((a for a in range(second - 1, second - 4, -1) if a >= 1 and tokens[a] in ("and", "&")), None)
+        first = None if joint is None else _mention_near(joint - 1, mention_ending_at)
+        return (first, second) if first is not None and first >= 0 else ()
+    return _key_of_line(tokens, i, mention_ending_at)
+
+
+def _mention_near(k: int, mention_ending_at: Mentions) -> int:
+    """The start of a mention ending at ``k`` or one word before it, else -1."""
+    for end in (k, k - 1):
+        start = mention_ending_at(end) if end >= 0 else None
+        if start is not None:
+            return start
+    return -1
+
+
+def _key_of_line(tokens: list[str], i: int, mention_ending_at: Mentions) -> tuple[int, ...]:
+    """ "<road user> ...: 6 m ahead, 20 mph": the road user that keys the line the number is on, when
+    no other road user is named between the key and the number."""
+    start = i
+    while start > 0 and tokens[start - 1] not in _STOPS:
+        start -= 1
+    colon = next((k for k in range(start, i) if tokens[k] == ":"), None)
+    if colon is None or colon - start > 4:
+        return ()
+    key = next((s for k in range(start, colon) if (s := mention_ending_at(k)) is not None and s >= start), None)
+    if key is None or any(mention_ending_at(k) is not None for k in range(colon + 1, i)):
+        return ()
+    return (key,)
