@@ -30,6 +30,7 @@ from functools import lru_cache
 
 from vei_scenario.language import lexicon as L
 from vei_scenario.language import quantities as Q
+from vei_scenario.language import settings as S
 from vei_scenario.language import vocabulary as V
 from vei_scenario.language.behaviours import BEHAVIOURS
 from vei_scenario.language.ncap import rewrite as ncap_rewrite
@@ -285,8 +286,8 @@ def _tokens(text: str, spell: bool = True) -> list[str]:
             out.append(tok.split("'", 1)[0])  # "we're": "we" (the rest carries nothing here)
         elif tok.endswith("'") or tok in ("'",):
             continue
-        else:
-            out.append(tok)
+        else:  # ("rush-hour", "mid-afternoon": a setting's words)
+            out.extend(S.compound_words(tok, lambda key: TABLE.get(key, (None,))[0]))
     if spell:
         out = [_speller().correct(tok) for tok in out]
     return out
@@ -1500,8 +1501,10 @@ def read(text: str) -> Reading:
             a.said.add("ahead")
     vehicles_giving_way = any(a.kind in VEHICLES and any(b[0] == "give_way" for b in a.behaviours) for a in actors)
     at_junction = any(b[0] in JUNCTION_BEHAVIOURS for a in actors for b in a.behaviours)
-    if (r.map_kind is None and r.ego_route in ("left", "right")) or (
-        r.map_kind in (None, "straight") and (any(a.arm for a in actors) or vehicles_giving_way or at_junction)
+    if (
+        (r.map_kind is None and r.ego_route in ("left", "right"))
+        or (r.map_kind in (None, "straight") and (any(a.arm for a in actors) or vehicles_giving_way or at_junction))
+        or (r.map_kind in (None, "straight", "curve") and S.turns_into_a_road(text, " ".join(_tokens(text))))
     ):
         r.map_kind = "crossroad"  # the ego turns, or someone comes out of or waits in a side road: a junction
     junction = r.map_kind in ("crossroad", "roundabout")
@@ -1625,8 +1628,12 @@ def read(text: str) -> Reading:
     if r.intent is None and not r.actors:
         r.intent = "safe"  # (nobody but the ego: nothing it could meet)
     r.lanes = stated_lanes(said) or r.lanes
-    r.time = stated_clock(said) or r.time
-    r.density = stated_density(said) or r.density
+    oncoming = any(s.relation == "oncoming" or any(b[0] == "wrong_way" for b in s.behaviours) for s in r.actors)
+    r.lanes = S.lanes_of_two_way_road(said, oncoming) or r.lanes
+    said_as = [(m.slot, m.words, m.value) for _, ms in clauses for m in ms if m.slot in ("time", "weather")]
+    r.time = S.time_of_day([(w, v) for k, w, v in said_as if k == "time"], stated_clock(said)) or r.time
+    r.weather = S.sky_over_surface([(w, v) for k, w, v in said_as if k == "weather"]) or r.weather
+    r.density = "none" if S.no_other_traffic(said) else stated_density(said) or r.density
     if r.weather in (None, "rain") and stated_heavy_rain(said):
         r.weather = "heavy_rain"
     return r
@@ -2101,7 +2108,8 @@ WEATHER_SEVERITY = {"clear": 0, "cloudy": 1, "rain": 2, "fog": 2, "snow": 3, "he
 
 def _global(r, m) -> None:
     if m.slot == "map":  # (a roundabout has crossings: "on the crossing after the exit" leaves it one)
-        if not (r.map_kind and m.value == "straight") and not (r.map_kind == "roundabout" and m.value == "crossroad"):
+        junction = r.map_kind in ("crossroad", "roundabout")  # ("at the crossroads ... round the corner": its corner)
+        if not (r.map_kind and m.value == "straight") and not (junction and m.value in ("crossroad", "curve")):
             r.map_kind = m.value
     elif m.slot == "weather":  # the most severe said, of equals the first ("grey, drizzly": rain)
         if r.weather is None or WEATHER_SEVERITY.get(str(m.value), 0) > WEATHER_SEVERITY.get(r.weather, 0):

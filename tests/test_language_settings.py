@@ -1,0 +1,120 @@
+"""The settings as people state them: the time of day, traffic, weather, lanes and road read from the
+words that state them, weak words giving way to precise ones and a clock read with the part of the day
+said beside it.
+
+Every wording here is written for these tests (none is from a corpus)."""
+
+from __future__ import annotations
+
+import pytest
+
+from vei_scenario.language.reader import read
+
+
+# --- settings ---------------------------------------------------------------------------------------------
+@pytest.mark.parametrize(
+    "text, lo, hi",
+    [
+        ("Mid-morning, a cyclist crosses ahead of the ego.", 6, 11),
+        ("Late-evening drive; a pedestrian crosses ahead of the ego.", 18, 22),
+        ("A van cuts in front of the ego, early-afternoon.", 12, 17),
+    ],
+    ids=["mid-morning", "late-evening", "early-afternoon"],
+)
+def test_a_part_of_the_day_with_a_modifier_is_that_part(text, lo, hi):
+    assert lo <= int(read(text).time.split(":")[0]) <= hi
+
+
+@pytest.mark.parametrize(
+    "text, lo, hi",
+    [
+        ("On my commute, a dark wet morning, a cyclist swerved in front of me.", 6, 11),
+        ("Rush hour on a foggy evening; a car ahead brakes hard in front of the ego.", 18, 22),
+        ("In daylight, late afternoon, a child runs out in front of the ego.", 12, 17),
+    ],
+    ids=["commute-morning", "rush-hour-evening", "daylight-afternoon"],
+)
+def test_a_part_of_the_day_outweighs_a_word_that_only_hints_at_it(text, lo, hi):
+    assert lo <= int(read(text).time.split(":")[0]) <= hi
+
+
+@pytest.mark.parametrize(
+    "text, lo, hi",
+    [
+        ("17:40, evening, rain: a cyclist crosses ahead of the ego.", 18, 22),
+        ("At 05:45 in the morning a van pulls out in front of the ego.", 6, 11),
+        ("11:50, afternoon, clear; a pedestrian steps out ahead of the ego.", 12, 17),
+    ],
+    ids=["evening", "morning", "afternoon"],
+)
+def test_a_clock_next_to_a_part_of_the_day_is_read_within_that_part(text, lo, hi):
+    assert lo <= int(read(text).time.split(":")[0]) <= hi
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Dusk, rush-hour traffic, a van ahead brakes suddenly in front of the ego.",
+        "A bus pulls out ahead of the ego in the stop-start rush-hour crawl.",
+        "Queueing in rush-hour jams, a motorbike filters past the ego and cuts in.",
+    ],
+    ids=["traffic", "crawl", "jams"],
+)
+def test_a_hyphenated_setting_phrase_is_read_as_the_phrase(text):
+    assert read(text).density == "heavy"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Quiet lane at night, no other vehicle in sight; a fox runs out in front of the ego.",
+        "Empty streets, not a single other car around, a cyclist swerves in front of me.",
+        "A quiet road with nobody else around; a van pulls out in front of the ego.",
+    ],
+    ids=["no-other-vehicle", "not-a-single-car", "nobody-else"],
+)
+def test_saying_there_is_no_other_traffic_is_no_traffic(text):
+    assert read(text).density == "none"
+
+
+@pytest.mark.parametrize(
+    "text, lanes",
+    [
+        ("On a three-lane roundabout a van in the inner lane cuts across in front of the ego.", 3),
+        ("A two-lane highway through the hills; an oncoming car drifts into the ego's lane.", 1),
+        ("On a two-lane highway an oncoming truck overtakes and comes head-on at the ego.", 1),
+    ],
+    ids=["roundabout", "highway-oncoming", "highway-head-on"],
+)
+def test_lanes_of_a_named_road_count_per_direction_as_its_traffic_runs(text, lanes):
+    assert read(text).lanes == lanes
+
+
+@pytest.mark.parametrize(
+    "text, weather",
+    [
+        ("Wet tarmac under an overcast sky; a cyclist crosses ahead of the ego.", "cloudy"),
+        ("A cloudy day on a wet road, a pedestrian steps out ahead of the ego.", "cloudy"),
+        ("Damp surface, sunny, a van cuts in ahead of the ego.", "clear"),
+    ],
+    ids=["wet-tarmac", "wet-road", "damp-surface"],
+)
+def test_a_wet_surface_gives_way_to_the_sky_said(text, weather):
+    assert read(text).weather == weather
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I turned left into a side street and a cyclist came round the corner at me.",
+        "The ego turns right into a side road; a pedestrian is crossing it.",
+        "Turning into Park Road off the high street, a scooter rider comes out from behind a van.",
+    ],
+    ids=["side-street", "side-road", "named-road"],
+)
+def test_turning_into_a_road_makes_a_junction(text):
+    assert read(text).map_kind == "crossroad"
+
+
+def test_nothing_else_happening_says_nothing_of_the_traffic():
+    assert read("Light traffic; a van cuts in ahead of the ego, and nothing else happens.").density == "light"
