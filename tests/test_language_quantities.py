@@ -89,3 +89,38 @@ def test_a_lateral_quantity_is_not_a_speed_or_gap_of_travel(text):
 def test_both_at_a_speed_gives_it_to_the_ego_and_the_other(text, speed):
     ego_mps, others = _speeds(text)
     assert ego_mps == pytest.approx(speed * KPH) and others == [pytest.approx(speed * KPH)]
+
+
+@pytest.mark.parametrize(
+    "text, ego, other",
+    [
+        (
+            "A car (the intruder) cuts in from the right lane 20 m ahead. Ego speed 90 km/h, intruder speed 75 km/h.",
+            90,
+            75,
+        ),
+        ("A motorbike, our opponent, brakes hard 25 m ahead. Opponent speed 45 km/h. Ego speed 50 km/h.", 50, 45),
+        (
+            "A lorry, the interloper, swerves into our lane 30 m ahead; interloper speed 60 km/h, ego speed 80 km/h.",
+            80,
+            60,
+        ),
+    ],
+    ids=["intruder", "opponent", "interloper"],
+)
+def test_a_speed_headed_by_a_name_the_reader_lacks_is_the_other_road_users(text, ego, other):
+    ego_mps, others = _speeds(text)
+    assert ego_mps == pytest.approx(ego * KPH) and others == [pytest.approx(other * KPH)]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Ego 40 km/h, the ETX crosses from the right at 15 km/h, contact at 30% of the front.",
+        "Ego speed 40 km/h, the QRB walks across from the left at 5 km/h, contact at 50% of the front.",
+        "Subject car 40 km/h, the XPT darts across from the right at 12 km/h, impact at 25% of the front.",
+    ],
+    ids=["ego-n", "ego-speed", "subject-car"],
+)
+def test_the_egos_speed_said_by_grammar_stands_against_later_speeds_of_unknown_road_users(text):
+    assert read(text).ego_speed_mps == pytest.approx(40 * KPH)

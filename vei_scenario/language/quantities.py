@@ -34,7 +34,11 @@ SPEED_HEADS = frozenset({"speed", "velocity"})
 #: Words between a head and its number that carry nothing ("speed is about 20", "speed of ~20").
 _LINKS = frozenset({"about", "is", "was", "of", "at", "=", "approximately", "around", "roughly", "ca", "circa"})
 _STOPS = frozenset({".", ";", "!", "?"})
-_MOTION = frozenset({"doing", "going", "driving", "travelling", "traveling", "moving", "riding"})
+#: Verbs of going whose subject a speed after "at" is said of ("the ego drives at 40 km/h").
+_MOTION = frozenset(
+    "doing going driving travelling traveling moving riding drives travels moves rides goes drove travelled "
+    "traveled moved rode went".split()
+)
 _DETERMINERS = frozenset({"the", "a", "an", "this", "that", "our", "my", "its", "their", "his", "her"})
 
 #: ``mention_ending_at(k)``: the start of the road-user (or ego) mention whose last word is token ``k``.
@@ -68,14 +72,23 @@ def _skip_back(tokens: list[str], j: int) -> int:
     return j
 
 
-def owners(tokens: list[str], i: int, unit: bool, mention_ending_at: Mentions) -> tuple[int, ...]:
+#: An owner the reader has no word for ("challenger speed 90 km/h"): a road user other than the ego.
+UNNAMED = -1
+
+
+def owners(
+    tokens: list[str], i: int, unit: bool, mention_ending_at: Mentions, noun: Callable[[str], bool] = lambda w: False
+) -> tuple[int, ...]:
     """The starts of the mentions the number at ``i`` is said of by grammar (empty where the grammar
-    names none and the reader's reading of the clause decides). ``unit``: a speed unit follows it."""
+    names none and the reader's reading of the clause decides). ``unit``: a speed unit follows it;
+    ``noun(word)``: whether a word is only a noun (a name of someone, not "top" or "constant")."""
     j = _skip_back(tokens, i - 1)
     if j < 0:
         return ()
-    if tokens[j] in SPEED_HEADS:  # "van speed 60 km/h"
+    if tokens[j] in SPEED_HEADS:  # "van speed 60 km/h"; "challenger speed 90 km/h": someone not the ego
         owner = mention_ending_at(j - 1)
+        if owner is None and j and noun(tokens[j - 1]) and tokens[j - 2 : j - 1] not in (["the"], ["a"], ["its"]):
+            return (UNNAMED,)
         return (owner,) if owner is not None else ()
     owner = mention_ending_at(j)
     if owner is not None:
@@ -88,6 +101,9 @@ def owners(tokens: list[str], i: int, unit: bool, mention_ending_at: Mentions) -
             return (owner,)
     if tokens[j] in _MOTION and j and tokens[j - 1] == "both":  # "... are both doing 50 km/h"
         j -= 1
+    elif tokens[j] in _MOTION and tokens[j + 1] == "at" and unit:  # "the ego drives at 40 km/h": its subject's
+        owner = mention_ending_at(j - 1)
+        return (owner,) if owner is not None else ()
     if tokens[j] == "both":  # "the ego and a lead truck both at 70 km/h"
         k = j - 1
         while k >= 0 and tokens[k] in ("are", "were", "is", "was"):

@@ -477,7 +477,8 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
             words = " ".join(tokens[i : i + used])
             if kind in ("speed", "distance", "speed_range") and Q.lateral(tokens, i, used):
                 kind = "skip"  # ("a lateral velocity of 1 m/s", "1.5 m clearance"): across the road, no travel
-            owners = Q.owners(tokens, i, tokens[i + 1 : i + 2] != [] and tokens[i + 1] in V.SPEED_UNITS, ending_at)
+            unit = tokens[i + 1 : i + 2] != [] and tokens[i + 1] in V.SPEED_UNITS
+            owners = Q.owners(tokens, i, unit, ending_at, lambda w: _pos(w) == {"NOUN"} and w not in FUNCTION_WORDS)
             if kind == "unknown":
                 ignored.append(tok)
             elif kind == "speed_range":  # the speed it has, and (its own slot) the one it changes to
@@ -978,6 +979,7 @@ def read(text: str) -> Reading:
     bound: dict[str, _Actor | str] = {}  # "he"/"she" → whom it first named
     resolved: dict[int, _Actor | str] = {}  # a road-user mention's start → whom it names
     owned = {o for _, ms in clauses for x in ms for o in x.owners}  # mentions a number is said of
+    ego_said: float | None = None  # the ego's speed as the grammar says it (no position rule overrides it)
     for link, mentions in clauses:
         named: list[tuple[_Actor | str, str]] = []  # (actor, role) in order: subject, prep, verb, participle
         clause_subject: _Actor | str | None = None
@@ -1001,11 +1003,11 @@ def read(text: str) -> Reading:
                 continue
             if m.slot == "modal":
                 continue
-            whose = [resolved.get(o) for o in m.owners]
+            whose = [resolved.get(o) if o != Q.UNNAMED else (actors[-1] if actors else None) for o in m.owners]
             if whose and None not in whose and not (m.slot == "distance" and "ego" in whose):
                 for who in whose:  # ("van speed 60 km/h", "cyclist: 12 m ahead, 15 km/h"): whose its grammar says
                     if who == "ego" and m.slot == "speed":
-                        r.ego_speed_mps = m.value
+                        r.ego_speed_mps = ego_said = m.value
                     elif who != "ego":
                         _apply(m, who, r, link, added)
                 prev = m
@@ -1621,6 +1623,7 @@ def read(text: str) -> Reading:
         spec.behaviours = _one_act_once(spec)
     if r.map_kind is None and any(s.relation == "junction_opposite" for s in r.actors):
         r.map_kind = "crossroad"
+    r.ego_speed_mps = ego_said if ego_said is not None else r.ego_speed_mps
     r.ignored = list(dict.fromkeys(ignored))
     r.read_as = read_as
     said = " ".join(_tokens(text))
