@@ -124,3 +124,43 @@ def test_a_speed_headed_by_a_name_the_reader_lacks_is_the_other_road_users(text,
 )
 def test_the_egos_speed_said_by_grammar_stands_against_later_speeds_of_unknown_road_users(text):
     assert read(text).ego_speed_mps == pytest.approx(40 * KPH)
+
+
+@pytest.mark.parametrize(
+    "text, ego",
+    [
+        ("Doing 20-30 mph through the estate, a child chased a ball out from the right.", 25 * MPH),
+        ("Ego somewhere between 40 and 60 km/h; a deer leaps out from the left.", 50 * KPH),
+        ("The ego cruises at 70–90 km/h when a lorry ahead sheds its load and stops.", 80 * KPH),
+    ],
+    ids=["hyphen", "between", "en-dash"],
+)
+def test_a_range_is_read_as_its_middle(text, ego):
+    assert read(text).ego_speed_mps == pytest.approx(ego)
+
+
+@pytest.mark.parametrize(
+    "text, gap",
+    [
+        ("A lorry stops suddenly 20-30 m ahead of the ego at 60 km/h.", 25.0),
+        ("A van brakes hard between 8 and 12 metres in front of the ego, ego at 40 km/h.", 10.0),
+        ("A tractor pulls out 2 car lengths ahead of the ego at 50 km/h.", 9.0),
+    ],
+    ids=["range", "between", "car-lengths"],
+)
+def test_a_gap_said_as_a_range_or_in_car_lengths_is_metres(text, gap):
+    r = read(text)
+    assert len(r.actors) == 1 and r.actors[0].distance_m == pytest.approx(gap)
+
+
+@pytest.mark.parametrize(
+    "text, ego",
+    [
+        ("We were at a gentle 35 when a fox ran out from the left.", 35 * KPH),
+        ("Ego at a constant 45, a jogger steps out from the right.", 45 * KPH),
+        ("I was going at around forty when a dog shot out from the left.", 40 * KPH),
+    ],
+    ids=["gentle", "constant", "around-words"],
+)
+def test_a_speed_after_at_and_a_modifier_is_read(text, ego):
+    assert read(text).ego_speed_mps == pytest.approx(ego)

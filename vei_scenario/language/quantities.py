@@ -19,6 +19,7 @@ reader (a callback), so the owner is the mention the reader already found.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable
 
 from vei_scenario.language import vocabulary as V
@@ -40,6 +41,38 @@ _MOTION = frozenset(
     "traveled moved rode went".split()
 )
 _DETERMINERS = frozenset({"the", "a", "an", "this", "that", "our", "my", "its", "their", "his", "her"})
+
+#: A car's length (m), the unit of "two car lengths behind".
+CAR_LENGTH_M = 4.5
+#: Words that may stand between "at" and a bare speed: an article and one modifier ("at a steady 50").
+_ARTICLES = frozenset({"a", "an"})
+
+#: "20-30 mph", "70–90 km/h", "between 8 and 12 metres": a range with its unit.
+_RANGE = re.compile(
+    r"\b(?:between\s+)?(\d+(?:\.\d+)?)\s*(?:-|\u2013|\u2014|(?<=\d) and)\s*(\d+(?:\.\d+)?)\s*"
+    r"(?=(?:km/h|mph|m/s|m|metres|meters|metre|meter|car lengths?)\b)"
+)
+
+
+def ranges(text: str) -> str:
+    """Each range of a quantity in the normalised ``text`` as its middle, approximately ("20-30 mph":
+    "about 25 mph"): a writer giving a range means a value within it, and the middle is the one that
+    errs least. "From 50 to 20 km/h" is a change of speed, not a range, and stays."""
+
+    def middle(m: re.Match) -> str:
+        if not m.group(0).startswith("between") and " and" in m.group(0):
+            return m.group(0)  # ("slows to 30 and 20 m later": a list, not a range)
+        value = (float(m.group(1)) + float(m.group(2))) / 2
+        return f"about {value:g} "
+
+    return _RANGE.sub(middle, text)
+
+
+def after_at(tokens: list[str], i: int) -> bool:
+    """Whether a bare number at ``i`` follows "at" (or "doing") past an article and one modifier
+    ("at a steady 50", "doing a brisk 30"): a speed, as "at 50" is."""
+    return i >= 3 and tokens[i - 2] in _ARTICLES and tokens[i - 3] in ("at", "doing") and tokens[i - 1].isalpha()
+
 
 #: ``mention_ending_at(k)``: the start of the road-user (or ego) mention whose last word is token ``k``.
 Mentions = Callable[[int], "int | None"]

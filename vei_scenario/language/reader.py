@@ -272,7 +272,7 @@ def _tokens(text: str, spell: bool = True) -> list[str]:
     """The words of ``text`` as the reader reads them (normalised; a misspelt word as the word it is
     one slip from, unless ``spell`` is false)."""
     text = text.lower().replace("\u2019", "'").replace("’", "'")
-    text = normalise(text, _actor_noun_in)
+    text = Q.ranges(normalise(text, _actor_noun_in))
     text = ncap_rewrite(text, _actor_word)
     text = _NCAP_NAME.sub(_ncap_said, text)
     out = []
@@ -413,6 +413,8 @@ def _number(tokens: list[str], i: int) -> tuple[str, float, int] | None:
         return "speed", value * V.SPEED_UNITS[nxt], 2
     if nxt in ("m", "meters", "metres", "meter", "metre"):
         return "distance", value, 2
+    if nxt == "car" and tokens[i + 2 : i + 3] in (["length"], ["lengths"]):  # "2 car lengths back"
+        return "distance", value * Q.CAR_LENGTH_M, 3
     if nxt in ("m/s²", "m/s2"):  # "brakes at 6 m/s²": how hard
         return "accel", value, 2
     if nxt in ("s", "sec", "seconds", "second", "g", "%", "deg", "degrees", "kg", "km"):
@@ -427,7 +429,8 @@ def _number(tokens: list[str], i: int) -> tuple[str, float, int] | None:
         if value == int(value) and 1 <= value <= 8:  # "3 lanes", "a 2-lane road": lanes a direction
             return "lanes", int(value), 2 if nxt != "-" else 3
     prev = tokens[i - 1] if i > 0 else ""
-    if prev in ("at", "doing", "about", "around", "of") and 3 <= value <= 250:  # "at 120": the unit said before
+    if (prev in ("at", "doing", "about", "around", "of") or Q.after_at(tokens, i)) and 3 <= value <= 250:
+        # "at 120", "at a steady 50": in the unit said before
         return "speed", value * Q.carried_unit(tokens, i), 1
     ends = nxt in ("", ".", ",", ";", "!", "?", "and", "then", "when", "while", "but")
     if prev in _MOTION_BEFORE_SPEED and 3 <= value <= 250 and ends:  # "Ego goes 50, ...": km/h
