@@ -118,3 +118,56 @@ def test_turning_into_a_road_makes_a_junction(text):
 
 def test_nothing_else_happening_says_nothing_of_the_traffic():
     assert read("Light traffic; a van cuts in ahead of the ego, and nothing else happens.").density == "light"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Barely any traffic about; a van pulls out in front of the ego.",
+        "Not much traffic on the ring road, and a cyclist swerves in front of the ego.",
+        "Only a handful of cars around when a bus pulls out in front of the ego.",
+    ],
+    ids=["barely-any", "not-much", "handful"],
+)
+def test_a_small_quantity_of_traffic_is_light_traffic(text):
+    assert read(text).density == "light"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Blue skies over the bypass; a van cuts in front of the ego.",
+        "The sun was out and a cyclist swerved in front of me.",
+        "Warm sunshine, a pedestrian steps out in front of the ego from the left.",
+    ],
+    ids=["blue-skies", "sun-out", "sunshine"],
+)
+def test_the_sun_or_a_blue_sky_is_clear_weather(text):
+    assert read(text).weather == "clear"
+
+
+@pytest.mark.parametrize(
+    "text, clock",
+    [
+        ("At 8.15am a van pulls out in front of the ego.", "08:15"),
+        ("Around 6.45 pm a cyclist crosses in front of the ego from the left.", "18:45"),
+        ("At 11.05 p.m. a pedestrian steps out in front of the ego.", "23:05"),
+    ],
+    ids=["am", "pm-spaced", "p.m."],
+)
+def test_a_clock_with_a_dot_and_its_half_of_the_day_is_a_clock(text, clock):
+    assert read(text).time == clock
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "In the small hours a fox runs out in front of the ego.",
+        "In the early hours of Sunday a van pulls out in front of the ego.",
+        "In the wee hours a cyclist swerves in front of the ego.",
+    ],
+    ids=["small", "early", "wee"],
+)
+def test_the_small_hours_are_night(text):
+    hour = int(read(text).time.split(":")[0])
+    assert hour >= 21 or hour <= 5

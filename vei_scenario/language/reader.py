@@ -1637,9 +1637,10 @@ def read(text: str) -> Reading:
     oncoming = any(s.relation == "oncoming" or any(b[0] == "wrong_way" for b in s.behaviours) for s in r.actors)
     r.lanes = S.lanes_of_two_way_road(said, oncoming) or r.lanes
     said_as = [(m.slot, m.words, m.value) for _, ms in clauses for m in ms if m.slot in ("time", "weather")]
-    r.time = S.time_of_day([(w, v) for k, w, v in said_as if k == "time"], stated_clock(said)) or r.time
-    r.weather = S.sky_over_surface([(w, v) for k, w, v in said_as if k == "weather"]) or r.weather
-    r.density = "none" if S.no_other_traffic(said) else stated_density(said) or r.density
+    clock = S.dotted_clock(said) or stated_clock(said)
+    r.time = S.time_of_day([(w, v) for k, w, v in said_as if k == "time"], clock) or r.time
+    r.weather = S.sky_over_surface([(w, v) for k, w, v in said_as if k == "weather"]) or r.weather or S.sunny(said)
+    r.density = S.density(said) or stated_density(said) or r.density
     if r.weather in (None, "rain") and stated_heavy_rain(said):
         r.weather = "heavy_rain"
     return r

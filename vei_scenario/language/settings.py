@@ -23,6 +23,7 @@ TIME_HINTS = frozenset(
 #: The hours (first, last) each of the lexicon's times of day covers, by the clock the lexicon gives it.
 PART_OF_DAY_HOURS = {
     "23:00": (21, 5),  # night
+    "02:00": (0, 5),  # the small hours
     "06:00": (5, 7),  # dawn, early morning
     "08:30": (6, 11),  # morning
     "12:00": (11, 13),  # noon
@@ -95,6 +96,49 @@ _NO_OTHERS = re.compile(
 def no_other_traffic(said: str) -> bool:
     """Whether the normalised text says there is no other road user about (no background traffic)."""
     return _NO_OTHERS.search(said) is not None
+
+
+#: "barely any traffic", "not much traffic", "only a handful of cars": a small quantity of other traffic.
+_FEW_OTHERS = re.compile(
+    r"\b(?:hardly|barely|scarcely) any (?:other )?(?:traffic|cars|vehicles)\b"
+    r"|\bnot (?:much|many|a lot of) (?:other )?(?:traffic|cars|vehicles)\b"
+    r"|\ba handful of (?:other )?(?:cars|vehicles)\b"
+    r"|\bvery (?:little|few) (?:other )?(?:traffic|cars|vehicles)\b"
+)
+
+
+def density(said: str) -> str | None:
+    """Background traffic said as a quantity of other road users: none ("not another car about"), light
+    ("barely any traffic", "only a handful of cars"), or None where the text says neither."""
+    if no_other_traffic(said):
+        return "none"
+    return "light" if _FEW_OTHERS.search(said) else None
+
+
+#: The sun or a blue sky said ("blue skies", "the sun was out", "sunshine", "low sun glare"): clear.
+_SUN = re.compile(
+    r"\b(?:blue sk(?:y|ies)|sunshine|sunlight|sun (?:was |is )?(?:out|shining|blazing|beating down)|"
+    r"(?:bright|strong|low|blazing|hot) sun|sun glare)\b"
+)
+
+
+def sunny(said: str) -> str | None:
+    """``clear`` when the normalised text speaks of the sun or a blue sky, else None (to be used where
+    no weather word is said)."""
+    return "clear" if _SUN.search(said) else None
+
+
+#: "8.15 am", "6.45 pm": a clock written with a dot, which its half of the day tells from a decimal.
+_DOTTED_CLOCK = re.compile(r"\b(1[0-2]|0?[1-9])\.([0-5]\d) (am|pm)\b")
+
+
+def dotted_clock(said: str) -> str | None:
+    """A clock written with a dot and its half of the day ("6.45 pm": "18:45"), else None."""
+    m = _DOTTED_CLOCK.search(said)
+    if m is None:
+        return None
+    hour = int(m.group(1)) % 12 + (12 if m.group(3) == "pm" else 0)
+    return f"{hour:02d}:{m.group(2)}"
 
 
 _TWO_LANE_HIGHWAY = re.compile(r"\b(?:two|2)[ -]lane (?:highway|freeway|expressway|road)\b")
