@@ -164,3 +164,17 @@ def test_a_gap_said_as_a_range_or_in_car_lengths_is_metres(text, gap):
 )
 def test_a_speed_after_at_and_a_modifier_is_read(text, ego):
     assert read(text).ego_speed_mps == pytest.approx(ego)
+
+
+@pytest.mark.parametrize(
+    "text, ego, other",
+    [
+        ("CCRm 60/20, dry track, daylight", 60, 20),
+        ("CMRb 70/70; headway 20 m, target decelerates at 4 m/s²", 70, 70),
+        ("CCRb 80/80, 12 m headway, wet", 80, 80),
+    ],
+    ids=["ccrm", "cmrb", "ccrb"],
+)
+def test_a_speed_pair_after_a_test_code_is_the_egos_and_the_targets_in_km_h(text, ego, other):
+    ego_mps, others = _speeds(text)
+    assert ego_mps == pytest.approx(ego * KPH) and others == [pytest.approx(other * KPH)]
