@@ -178,3 +178,17 @@ def test_a_speed_after_at_and_a_modifier_is_read(text, ego):
 def test_a_speed_pair_after_a_test_code_is_the_egos_and_the_targets_in_km_h(text, ego, other):
     ego_mps, others = _speeds(text)
     assert ego_mps == pytest.approx(ego * KPH) and others == [pytest.approx(other * KPH)]
+
+
+@pytest.mark.parametrize(
+    "text, gap",
+    [
+        ("Ego at 72 km/h; a van follows at a 2 s gap and then overtakes.", 40.0),
+        ("The ego drives at 90 km/h and a lorry tailgates it with a 1-second headway.", 25.0),
+        ("Ego 36 km/h, a cyclist 3 seconds ahead brakes suddenly.", 30.0),
+    ],
+    ids=["gap", "headway", "ahead"],
+)
+def test_a_time_gap_is_the_distance_covered_in_it_at_the_speed_said(text, gap):
+    r = read(text)
+    assert len(r.actors) == 1 and r.actors[0].distance_m == pytest.approx(gap)

@@ -68,6 +68,29 @@ def ranges(text: str) -> str:
     return _RANGE.sub(middle, text)
 
 
+#: Words that make a number of seconds a time gap between two road users ("a 2 s gap", "1.5 s headway",
+#: "3 seconds ahead"), not a time of the story ("at t = 3 s", "TTC 1.5 s", "for 2 seconds").
+HEADWAY_WORDS = frozenset({"gap", "headway", "ahead", "behind", "apart", "back", "following", "interval"})
+_SECONDS = frozenset({"s", "sec", "secs", "second", "seconds"})
+
+
+def headway_m(tokens: list[str], i: int) -> float | None:
+    """The distance (m) of a time gap at ``i`` ("a 2 s gap" at 72 km/h: 40 m): the seconds times the
+    speed said last before it with its unit (a time gap is the time one takes to reach where the other
+    is); None where it is no time gap or no speed is said before it."""
+    if tokens[i + 1 : i + 2] == [] or tokens[i + 1] not in _SECONDS:
+        return None
+    nxt = tokens[i + 2 : i + 3] if tokens[i + 2 : i + 3] != ["time"] else tokens[i + 3 : i + 4]  # ("1.5 s time gap")
+    before = tokens[max(i - 6, 0) : i]
+    follows = any(w.startswith(("follow", "tailgat")) for w in before) and tokens[i - 1] in ("at", "about", "a")
+    if not (nxt and nxt[0] in HEADWAY_WORDS) and not follows:
+        return None
+    for k in range(i - 1, 0, -1):
+        if tokens[k] in V.SPEED_UNITS and tokens[k - 1].replace(".", "", 1).isdigit():
+            return float(tokens[i]) * float(tokens[k - 1]) * V.SPEED_UNITS[tokens[k]]
+    return None
+
+
 def after_at(tokens: list[str], i: int) -> bool:
     """Whether a bare number at ``i`` follows "at" (or "doing") past an article and one modifier
     ("at a steady 50", "doing a brisk 30"): a speed, as "at 50" is."""

@@ -417,6 +417,8 @@ def _number(tokens: list[str], i: int) -> tuple[str, float, int] | None:
         return "distance", value * Q.CAR_LENGTH_M, 3
     if nxt in ("m/s²", "m/s2"):  # "brakes at 6 m/s²": how hard
         return "accel", value, 2
+    if (gap := Q.headway_m(tokens, i)) is not None:  # "a 2 s gap" at 72 km/h: 40 m
+        return "distance", gap, 2
     if nxt in ("s", "sec", "seconds", "second", "g", "%", "deg", "degrees", "kg", "km"):
         return "skip", value, 2
     if nxt in (":", "am", "pm", "hrs", "hours", "o'clock", "oclock"):  # ("about 6 pm", "at 07:50"): a time of day
