@@ -192,3 +192,32 @@ def test_a_speed_pair_after_a_test_code_is_the_egos_and_the_targets_in_km_h(text
 def test_a_time_gap_is_the_distance_covered_in_it_at_the_speed_said(text, gap):
     r = read(text)
     assert len(r.actors) == 1 and r.actors[0].distance_m == pytest.approx(gap)
+
+
+@pytest.mark.parametrize(
+    "text, to",
+    [
+        ("Ego at 70 km/h; the lorry ahead slows to 30 km/h.", 30 * KPH),
+        ("Ego at 50 km/h. The car in front speeds up to 80 as the road clears.", 80 * KPH),
+        ("We're doing 40 mph when the bus ahead brakes to 20.", 20 * MPH),
+    ],
+    ids=["slows-to", "speeds-up-to-bare", "brakes-to-bare"],
+)
+def test_a_speed_after_to_a_change_of_speed_is_read_in_the_unit_said(text, to):
+    (a,) = read(text).actors
+    assert a.speed_mps == pytest.approx(to)
+    assert any(b[0] in ("change_speed", "sudden_stop") for b in a.behaviours)
+
+
+@pytest.mark.parametrize(
+    "text, ego, other",
+    [
+        ("I was doing 40 mph behind a tractor doing 15 mph when it turned right.", 40 * MPH, 15 * MPH),
+        ("The bus's speed is 30 km/h; it pulls out ahead of the ego at 50 km/h.", 50 * KPH, 30 * KPH),
+        ("I was at 30 and a moped going 20 mph ahead of me braked hard.", 30 * MPH, 20 * MPH),
+    ],
+    ids=["participle", "possessive", "unit-after"],
+)
+def test_a_speed_is_said_of_the_noun_its_participle_or_possessive_names(text, ego, other):
+    ego_mps, others = _speeds(text)
+    assert ego_mps == pytest.approx(ego) and others == [pytest.approx(other)]

@@ -40,6 +40,7 @@ _MOTION = frozenset(
     "doing going driving travelling traveling moving riding drives travels moves rides goes drove travelled "
     "traveled moved rode went".split()
 )
+_OBJECT_PRONOUNS = frozenset({"me", "us", "him", "her", "them", "it", "you"})
 _DETERMINERS = frozenset({"the", "a", "an", "this", "that", "our", "my", "its", "their", "his", "her"})
 
 #: A car's length (m), the unit of "two car lengths behind".
@@ -103,8 +104,14 @@ Mentions = Callable[[int], "int | None"]
 
 def carried_unit(tokens: list[str], i: int) -> float:
     """The factor to m/s of a bare speed at ``i`` ("I'm at 50"): the unit of the last speed said with
-    one before it, else km/h (the unit of a test engineer who gives none)."""
+    one before it, else of the first said after it in its sentence, else km/h (the unit of a test
+    engineer who gives none)."""
     for k in range(i - 1, 0, -1):
+        if tokens[k] in V.SPEED_UNITS and tokens[k - 1].replace(".", "", 1).isdigit():
+            return V.SPEED_UNITS[tokens[k]]
+    for k in range(i + 1, len(tokens)):  # none before: the one said after it in its sentence ("at 30 and ... 20 mph")
+        if tokens[k] in _STOPS:
+            break
         if tokens[k] in V.SPEED_UNITS and tokens[k - 1].replace(".", "", 1).isdigit():
             return V.SPEED_UNITS[tokens[k]]
     return 1 / 3.6
@@ -143,6 +150,8 @@ def owners(
         return ()
     if tokens[j] in SPEED_HEADS:  # "van speed 60 km/h"; "challenger speed 90 km/h": someone not the ego
         owner = mention_ending_at(j - 1)
+        if owner is None and j >= 2 and tokens[j - 1] == "'s":  # "the bus's speed is 30 km/h"
+            owner = mention_ending_at(j - 2)
         if owner is None and j and noun(tokens[j - 1]) and tokens[j - 2 : j - 1] not in (["the"], ["a"], ["its"]):
             return (UNNAMED,)
         return (owner,) if owner is not None else ()
@@ -157,7 +166,8 @@ def owners(
             return (owner,)
     if tokens[j] in _MOTION and j and tokens[j - 1] == "both":  # "... are both doing 50 km/h"
         j -= 1
-    elif tokens[j] in _MOTION and tokens[j + 1] == "at" and unit:  # "the ego drives at 40 km/h": its subject's
+    elif tokens[j] in _MOTION and unit and tokens[j - 1] not in _OBJECT_PRONOUNS:
+        # "the ego drives at 40 km/h", "a tractor doing 15 mph": its subject's ("overtakes me doing 18 mph": not mine)
         owner = mention_ending_at(j - 1)
         return (owner,) if owner is not None else ()
     if tokens[j] == "both":  # "the ego and a lead truck both at 70 km/h"

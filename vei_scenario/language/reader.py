@@ -431,13 +431,24 @@ def _number(tokens: list[str], i: int) -> tuple[str, float, int] | None:
         if value == int(value) and 1 <= value <= 8:  # "3 lanes", "a 2-lane road": lanes a direction
             return "lanes", int(value), 2 if nxt != "-" else 3
     prev = tokens[i - 1] if i > 0 else ""
-    if (prev in ("at", "doing", "about", "around", "of") or Q.after_at(tokens, i)) and 3 <= value <= 250:
+    to_changed = prev == "to" and _changes_speed_before(tokens, i - 1)  # ("speeds up to 80": the speed it reaches)
+    if (prev in ("at", "doing", "about", "around", "of") or to_changed or Q.after_at(tokens, i)) and 3 <= value <= 250:
         # "at 120", "at a steady 50": in the unit said before
         return "speed", value * Q.carried_unit(tokens, i), 1
     ends = nxt in ("", ".", ",", ";", "!", "?", "and", "then", "when", "while", "but")
     if prev in _MOTION_BEFORE_SPEED and 3 <= value <= 250 and ends:  # "Ego goes 50, ...": km/h
         return "speed", value * Q.carried_unit(tokens, i), 1
     return "unknown", value, 1
+
+
+def _changes_speed_before(tokens: list[str], k: int) -> bool:
+    """Whether a change of speed is said right before token ``k`` ("slows", "speeds up", "brakes")."""
+    for start in range(max(k - 4, 0), k):
+        key = _best(tokens, start)
+        if key and start + len(key) == k and TABLE[key][0] == "behaviour":
+            if TABLE[key][1][0] in ("change_speed", "sudden_stop", "stop"):
+                return True
+    return False
 
 
 #: Verbs of going after which a bare number is a speed ("the ego goes 50, ...", "driving 30 when").
@@ -985,6 +996,7 @@ def read(text: str) -> Reading:
     resolved: dict[int, _Actor | str] = {}  # a road-user mention's start → whom it names
     owned = {o for _, ms in clauses for x in ms for o in x.owners}  # mentions a number is said of
     ego_said: float | None = None  # the ego's speed as the grammar says it (no position rule overrides it)
+    said_of: list[tuple[_Actor, str, float]] = []  # a road user's speed or gap as the grammar says it, likewise
     for link, mentions in clauses:
         named: list[tuple[_Actor | str, str]] = []  # (actor, role) in order: subject, prep, verb, participle
         clause_subject: _Actor | str | None = None
@@ -1015,6 +1027,7 @@ def read(text: str) -> Reading:
                         r.ego_speed_mps = ego_said = m.value
                     elif who != "ego":
                         _apply(m, who, r, link, added)
+                        said_of.append((who, m.slot, m.value))
                 prev = m
                 continue
             if m.slot in ("conj", "link"):
@@ -1394,7 +1407,11 @@ def read(text: str) -> Reading:
                         m.slot == "speed" and isinstance(who, _Actor) and who.kind in VEHICLES
                         and who.speed_mps is None and r.ego_speed_mps is None and _next_to_ego(prev, m)
                     )  # fmt: skip
-                    _apply(m, who, r, link, added)
+                    own = m.slot == "speed" and any(x is who and k == "speed" for x, k, _ in said_of)
+                    if own and r.ego_speed_mps is None and _next_to_ego(prev, m):
+                        r.ego_speed_mps = m.value  # (its own said already: "... ahead of the ego at 50" is the ego's)
+                    else:
+                        _apply(m, who, r, link, added)
                     if of_both:
                         r.ego_speed_mps = m.value
             prev = m
@@ -1515,6 +1532,8 @@ def read(text: str) -> Reading:
     ):
         r.map_kind = "crossroad"  # the ego turns, or someone comes out of or waits in a side road: a junction
     junction = r.map_kind in ("crossroad", "roundabout")
+    for a, slot, value in said_of:
+        a.speed_mps, a.distance_m = (value, a.distance_m) if slot == "speed" else (a.speed_mps, value)
     for a in actors:
         spec = ActorSpec(a.kind)
         behaviours = _tidy(a)
@@ -1554,7 +1573,7 @@ def read(text: str) -> Reading:
             behaviours = [("keep_going", {}, None, "sequence")]
         if a.accel_mps2 is not None:  # "at 6 m/s²": the deceleration or rate of what it does (within its range)
             behaviours = [(*_with_rate(n, c, a.accel_mps2), k, lk) for n, c, k, lk in behaviours]
-        if a.speed_to_mps is not None and a.speed_mps is not None:  # "slows from 80 to 30": by 50 km/h
+        if a.speed_to_mps is not None and a.speed_mps is not None and a.speed_mps >= 0:  # "slows from 80 to 30"
             delta = a.speed_to_mps - a.speed_mps
             behaviours = [
                 (n, {**c, "speed_delta_mps": delta} if n == "change_speed" else c, k, lk) for n, c, k, lk in behaviours
