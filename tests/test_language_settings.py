@@ -171,3 +171,29 @@ def test_a_clock_with_a_dot_and_its_half_of_the_day_is_a_clock(text, clock):
 def test_the_small_hours_are_night(text):
     hour = int(read(text).time.split(":")[0])
     assert hour >= 21 or hour <= 5
+
+
+@pytest.mark.parametrize(
+    "text, lanes",
+    [
+        ("In lane 2 of 3, a van cuts in front of the ego.", 3),
+        ("The ego is in lane one of two when a lorry drifts into it.", 2),
+        ("Lane 3 of 4: a car from the left lane cuts in front of the ego.", 4),
+    ],
+    ids=["2-of-3", "one-of-two", "3-of-4"],
+)
+def test_lane_n_of_m_is_m_lanes(text, lanes):
+    assert read(text).lanes == lanes
+
+
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("At a mini-roundabout a van pulls out in front of the ego from the right.", "roundabout"),
+        ("At a Y-junction a van pulls out in front of the ego from the left.", "crossroad"),
+        ("On a hairpin-bend a van comes towards the ego on the wrong side.", "curve"),
+    ],
+    ids=["mini-roundabout", "y-junction", "hairpin-bend"],
+)
+def test_a_hyphenated_road_word_is_read_by_its_head(text, kind):
+    assert read(text).map_kind == kind

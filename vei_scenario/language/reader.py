@@ -1656,7 +1656,7 @@ def read(text: str) -> Reading:
         r.intent = "safe"  # (nobody but the ego: nothing it could meet)
     r.lanes = stated_lanes(said) or r.lanes
     oncoming = any(s.relation == "oncoming" or any(b[0] == "wrong_way" for b in s.behaviours) for s in r.actors)
-    r.lanes = S.lanes_of_two_way_road(said, oncoming) or r.lanes
+    r.lanes = S.lanes_of_two_way_road(said, oncoming) or S.lanes_counted(said) or r.lanes
     said_as = [(m.slot, m.words, m.value) for _, ms in clauses for m in ms if m.slot in ("time", "weather")]
     clock = S.dotted_clock(said) or stated_clock(said)
     r.time = S.time_of_day([(w, v) for k, w, v in said_as if k == "time"], clock) or r.time

@@ -42,12 +42,15 @@ SURFACE_WORDS = frozenset({"wet", "dry", "damp"})
 
 def compound_words(token: str, slot_of: Callable[[tuple[str, ...]], str | None]) -> list[str]:
     """A hyphenated token the reader has no entry for, as its words when they are a setting phrase
-    ("rush-hour": "rush hour") or a modifier before a time of day ("mid-afternoon": "mid afternoon")."""
+    ("rush-hour": "rush hour") or a modifier before a time of day or a road word ("mid-afternoon":
+    "mid afternoon", "mini-roundabout": "mini roundabout")."""
     if "-" not in token or slot_of((token,)) is not None:
         return [token]
     parts = [p for p in token.split("-") if p]
-    if len(parts) > 1 and (slot_of(tuple(parts)) in SETTING_SLOTS or slot_of((parts[-1],)) == "time"):
-        return parts
+    if len(parts) < 2 or slot_of((parts[0],)) == "actor":  # ("bus-lane": a road user's word first, no setting)
+        return [token]
+    if slot_of(tuple(parts)) in SETTING_SLOTS or slot_of((parts[-1],)) in ("time", "map"):
+        return parts  # ("mini-roundabout", "Y-junction": a road by its head word)
     return [token]
 
 
@@ -144,6 +147,21 @@ def dotted_clock(said: str) -> str | None:
 _TWO_LANE_HIGHWAY = re.compile(r"\b(?:two|2)[ -]lane (?:highway|freeway|expressway|road)\b")
 _EACH_WAY = re.compile(r"\b(?:each|per|either|every|both) (?:way|direction|side)s?\b|\bone[ -]way\b")
 _TWO_WAY = re.compile(r"\b(?:oncoming|head-on|head on|the other way|opposite direction|wrong way)\b")
+
+
+_WORD = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6}
+_N = r"(\d|one|two|three|four|five|six)"
+#: "lane 2 of 3", "lane one of two": the lane the writer is in, of the road's lanes in its direction.
+_LANE_OF = re.compile(r"\blane " + _N + r" of " + _N + r"\b")
+
+
+def lanes_counted(said: str) -> int | None:
+    """The lanes of "lane 2 of 3" (3), else None."""
+    m = _LANE_OF.search(said)
+    if m is None:
+        return None
+    n = int(m.group(2)) if m.group(2).isdigit() else _WORD[m.group(2)]
+    return n if 1 <= n <= 6 else None
 
 
 def lanes_of_two_way_road(said: str, oncoming: bool) -> int | None:
