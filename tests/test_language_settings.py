@@ -197,3 +197,17 @@ def test_lane_n_of_m_is_m_lanes(text, lanes):
 )
 def test_a_hyphenated_road_word_is_read_by_its_head(text, kind):
     assert read(text).map_kind == kind
+
+
+@pytest.mark.parametrize(
+    "text, lo, hi",
+    [
+        ("It had been raining since midnight; at dawn a cyclist swerved in front of me.", 5, 7),
+        ("I'd been driving since 5 am and in the afternoon a van pulled out in front of me.", 12, 17),
+        ("The lights stay off until 6 pm; at night a pedestrian steps out in front of the ego.", 21, 5),
+    ],
+    ids=["since-midnight", "since-clock", "until-clock"],
+)
+def test_a_time_after_since_or_until_is_not_the_scenarios(text, lo, hi):
+    hour = int(read(text).time.split(":")[0])
+    assert (lo <= hour <= hi) if lo <= hi else (hour >= lo or hour <= hi)

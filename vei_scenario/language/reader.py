@@ -1657,8 +1657,13 @@ def read(text: str) -> Reading:
     r.lanes = stated_lanes(said) or r.lanes
     oncoming = any(s.relation == "oncoming" or any(b[0] == "wrong_way" for b in s.behaviours) for s in r.actors)
     r.lanes = S.lanes_of_two_way_road(said, oncoming) or S.lanes_counted(said) or r.lanes
-    said_as = [(m.slot, m.words, m.value) for _, ms in clauses for m in ms if m.slot in ("time", "weather")]
-    clock = S.dotted_clock(said) or stated_clock(said)
+    said_as = [
+        (m.slot, m.words, m.value)
+        for _, ms in clauses
+        for m in ms
+        if m.slot == "weather" or (m.slot == "time" and m.prev not in S.BOUNDS)  # (not "since midnight")
+    ]
+    clock = S.dotted_clock(S.without_bounds(said)) or stated_clock(S.without_bounds(said))
     r.time = S.time_of_day([(w, v) for k, w, v in said_as if k == "time"], clock) or r.time
     r.weather = S.sky_over_surface([(w, v) for k, w, v in said_as if k == "weather"]) or r.weather or S.sunny(said)
     r.density = S.density(said) or stated_density(said) or r.density

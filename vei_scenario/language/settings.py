@@ -76,6 +76,17 @@ def time_of_day(said: list[tuple[str, str]], clock: str | None) -> str | None:
     return clock
 
 
+#: Words before a time that make it a bound of something else ("raining since midnight", "off until 6 pm"),
+#: not the scenario's time.
+BOUNDS = frozenset({"since", "until", "till"})
+_BOUNDED_CLOCK = re.compile(r"\b(?:since|until|till) (?:about |around )?\d[\d.: ]*(?:am|pm|hrs|hours)?")
+
+
+def without_bounds(said: str) -> str:
+    """The normalised text without the clocks that bound something else ("since 5 am")."""
+    return _BOUNDED_CLOCK.sub(" ", said)
+
+
 def sky_over_surface(said: list[tuple[str, str]]) -> str | None:
     """The weather of the sky words among the weather words ``said`` as (words, value), when surface
     words ("wet track") are said with them (the most severe sky word, of equals the first); else None."""
