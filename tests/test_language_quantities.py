@@ -221,3 +221,17 @@ def test_a_speed_after_to_a_change_of_speed_is_read_in_the_unit_said(text, to):
 def test_a_speed_is_said_of_the_noun_its_participle_or_possessive_names(text, ego, other):
     ego_mps, others = _speeds(text)
     assert ego_mps == pytest.approx(ego) and others == [pytest.approx(other)]
+
+
+@pytest.mark.parametrize(
+    "text, ego, other",
+    [
+        ("I reckon the lorry was going 50 mph when it cut in front of me; I was doing 60 mph.", 60 * MPH, 50 * MPH),
+        ("The moped is also doing 20 mph and swerves ahead of me while I am doing 30 mph.", 30 * MPH, 20 * MPH),
+        ("The coach was still travelling at 40 km/h when it pulled in ahead; we were at 70 km/h.", 70 * KPH, 40 * KPH),
+    ],
+    ids=["was-going", "is-also-doing", "was-still-travelling"],
+)
+def test_a_speed_after_a_subject_and_its_verb_of_going_is_the_subjects(text, ego, other):
+    ego_mps, others = _speeds(text)
+    assert ego_mps == pytest.approx(ego) and others == [pytest.approx(other)]

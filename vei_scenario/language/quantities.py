@@ -40,6 +40,7 @@ _MOTION = frozenset(
     "doing going driving travelling traveling moving riding drives travels moves rides goes drove travelled "
     "traveled moved rode went".split()
 )
+_AUXILIARIES = frozenset({"is", "was", "are", "were", "am", "be", "been", "'s", "still", "also", "then", "just"})
 _OBJECT_PRONOUNS = frozenset({"me", "us", "him", "her", "them", "it", "you"})
 _DETERMINERS = frozenset({"the", "a", "an", "this", "that", "our", "my", "its", "their", "his", "her"})
 
@@ -168,7 +169,10 @@ def owners(
         j -= 1
     elif tokens[j] in _MOTION and unit and tokens[j - 1] not in _OBJECT_PRONOUNS:
         # "the ego drives at 40 km/h", "a tractor doing 15 mph": its subject's ("overtakes me doing 18 mph": not mine)
-        owner = mention_ending_at(j - 1)
+        k = j - 1
+        while k > 0 and tokens[k] in _AUXILIARIES:  # ("the van was going 40 mph", "I was doing 50")
+            k -= 1
+        owner = mention_ending_at(k)
         return (owner,) if owner is not None else ()
     if tokens[j] == "both":  # "the ego and a lead truck both at 70 km/h"
         k = j - 1
