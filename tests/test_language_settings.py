@@ -211,3 +211,29 @@ def test_a_hyphenated_road_word_is_read_by_its_head(text, kind):
 def test_a_time_after_since_or_until_is_not_the_scenarios(text, lo, hi):
     hour = int(read(text).time.split(":")[0])
     assert (lo <= hour <= hi) if lo <= hi else (hour >= lo or hour <= hi)
+
+
+@pytest.mark.parametrize(
+    "text, weather",
+    [
+        ("No rain today, clear skies; a van pulls out in front of the ego.", "clear"),
+        ("It wasn't foggy, just overcast, when a cyclist swerved in front of me.", "cloudy"),
+        ("There was not any snow, it was sunny; a pedestrian steps out in front of the ego.", "clear"),
+    ],
+    ids=["no-rain", "was-not-foggy", "not-any-snow"],
+)
+def test_a_negated_weather_word_is_not_the_weather(text, weather):
+    assert read(text).weather == weather
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "It was not dark yet; a cyclist swerved in front of me.",
+        "Not night-time, a van pulls out in front of the ego.",
+        "It wasn't dusk yet when a pedestrian stepped out in front of me.",
+    ],
+    ids=["not-dark", "not-night", "was-not-dusk"],
+)
+def test_a_negated_time_word_is_not_the_time(text):
+    assert read(text).time is None

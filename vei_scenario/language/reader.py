@@ -599,6 +599,10 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
             i += 1
             continue
         slot, value = TABLE[key]
+        if slot in ("weather", "time", "density") and S.negated(tokens, i):
+            ignored.extend(tokens[i : i + len(key)])  # ("no rain, clear skies", "it wasn't dark yet"): denied
+            i += len(key)
+            continue
         before = tokens[i - 1] if i else ""
         attributive = before in _DETERMINERS or (before.isalpha() and before not in FUNCTION_WORDS)
         if slot == "weather" and key[-1] in L.COLOURS and before in _DETERMINERS and _names_a_thing(tokens, i + 1):

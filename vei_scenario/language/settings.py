@@ -40,6 +40,21 @@ SETTING_SLOTS = frozenset({"time", "density", "weather", "map", "lanes"})
 SURFACE_WORDS = frozenset({"wet", "dry", "damp"})
 
 
+#: Words that deny the setting word right after them ("no rain", "wasn't foggy", "not dark yet").
+NEGATORS = frozenset({"no", "not", "never", "without", "nor"})
+#: Words that may stand between a negator and its setting word ("not very foggy", "not any rain").
+_DEGREE = frozenset({"very", "too", "that", "really", "particularly", "especially", "a", "any", "much", "even"})
+
+
+def negated(tokens: list[str], i: int) -> bool:
+    """Whether the setting word at ``i`` is denied by the word before it (past one word of degree):
+    a denied weather, time or traffic is not the scenario's ("no rain, clear skies")."""
+    k = i - 1
+    if k >= 0 and tokens[k] in _DEGREE:
+        k -= 1
+    return k >= 0 and tokens[k] in NEGATORS
+
+
 def compound_words(token: str, slot_of: Callable[[tuple[str, ...]], str | None]) -> list[str]:
     """A hyphenated token the reader has no entry for, as its words when they are a setting phrase
     ("rush-hour": "rush hour") or a modifier before a time of day or a road word ("mid-afternoon":
