@@ -235,3 +235,17 @@ def test_a_speed_is_said_of_the_noun_its_participle_or_possessive_names(text, eg
 def test_a_speed_after_a_subject_and_its_verb_of_going_is_the_subjects(text, ego, other):
     ego_mps, others = _speeds(text)
     assert ego_mps == pytest.approx(ego) and others == [pytest.approx(other)]
+
+
+@pytest.mark.parametrize(
+    "text, other",
+    [
+        ("A cyclist crosses from the left. Target speed: 15 km/h. Ego speed: 40 km/h.", 15),
+        ("A child steps out ahead of the ego at 40 km/h; target speed 8 km/h.", 8),
+        ("A pedestrian walks out from the right, 20 m ahead. Target: 6 km/h. Ego: 30 km/h.", 6),
+    ],
+    ids=["target-speed-key", "target-speed", "target-key"],
+)
+def test_the_target_heading_a_number_is_the_road_user_already_named(text, other):
+    r = read(text)
+    assert len(r.actors) == 1 and r.actors[0].speed_mps == pytest.approx(other * KPH)

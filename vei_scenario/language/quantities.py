@@ -30,6 +30,9 @@ from vei_scenario.language import vocabulary as V
 LATERAL_HEADS = frozenset(
     {"lateral", "laterally", "sideways", "clearance", "visibility", "offset", "minimum", "closest"}
 )
+#: Nouns a test engineer calls the other road user by, whatever it is ("target speed: 15 km/h"): heading a
+#: number after a road user is named, they name that one.
+ROLE_NOUNS = frozenset({"target", "other vehicle"})
 #: Nouns that head a speed ("van speed 60 km/h", "speed of the bus 15 km/h").
 SPEED_HEADS = frozenset({"speed", "velocity"})
 #: Words between a head and its number that carry nothing ("speed is about 20", "speed of ~20").

@@ -1157,7 +1157,9 @@ def read(text: str) -> Reading:
                         and nxt.value in ("ahead", "behind")
                         and ({"ahead", "behind"} - {nxt.value}) & same[-1].said
                     )
-                    if (
+                    if m.start in owned and m.words in Q.ROLE_NOUNS and actors and m.det in ("", "the"):
+                        who = actors[-1]  # ("a cyclist crosses ... Target speed: 15 km/h": the cyclist)
+                    elif (
                         same
                         and not elsewhere
                         and (
