@@ -249,3 +249,17 @@ def test_a_speed_after_a_subject_and_its_verb_of_going_is_the_subjects(text, ego
 def test_the_target_heading_a_number_is_the_road_user_already_named(text, other):
     r = read(text)
     assert len(r.actors) == 1 and r.actors[0].speed_mps == pytest.approx(other * KPH)
+
+
+@pytest.mark.parametrize(
+    "text, ego, other",
+    [
+        ("The van at 60 km/h overtakes the ego at 50 km/h and cuts in.", 50, 60),
+        ("A lorry at 70 km/h passes the ego at 90 km/h in the other lane, then cuts in.", 90, 70),
+        ("The motorbike at 80 km/h comes up behind the ego at 60 km/h and overtakes.", 60, 80),
+    ],
+    ids=["van", "lorry", "motorbike"],
+)
+def test_a_speed_after_a_subject_opening_its_clause_is_the_subjects(text, ego, other):
+    ego_mps, others = _speeds(text)
+    assert ego_mps == pytest.approx(ego * KPH) and others == [pytest.approx(other * KPH)]

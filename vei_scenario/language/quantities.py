@@ -44,6 +44,8 @@ _MOTION = frozenset(
     "traveled moved rode went".split()
 )
 _AUXILIARIES = frozenset({"is", "was", "are", "were", "am", "be", "been", "'s", "still", "also", "then", "just"})
+#: Words after which a noun opens a clause, as its subject ("; the bus at 15 km/h", "and the van at 60").
+_CLAUSE_OPENERS = frozenset({",", ";", ":", ".", "and", "but", "while", "whereas", "when", "then", "as"})
 _OBJECT_PRONOUNS = frozenset({"me", "us", "him", "her", "them", "it", "you"})
 _DETERMINERS = frozenset({"the", "a", "an", "this", "that", "our", "my", "its", "their", "his", "her"})
 
@@ -168,6 +170,8 @@ def owners(
             return (owner,)
         if j == i - 1 and unit:  # "cyclist 15 km/h": said of the noun it stands after
             return (owner,)
+        if unit and tokens[j + 1] == "at" and (k < 0 or tokens[k] in _CLAUSE_OPENERS):
+            return (owner,)  # "the van at 60 km/h overtakes ...": said of the subject opening its clause
     if tokens[j] in _MOTION and j and tokens[j - 1] == "both":  # "... are both doing 50 km/h"
         j -= 1
     elif tokens[j] in _MOTION and unit and tokens[j - 1] not in _OBJECT_PRONOUNS:
