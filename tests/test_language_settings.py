@@ -237,3 +237,16 @@ def test_a_negated_weather_word_is_not_the_weather(text, weather):
 )
 def test_a_negated_time_word_is_not_the_time(text):
     assert read(text).time is None
+
+
+@pytest.mark.parametrize(
+    "text, lanes",
+    [
+        ("Lanes: 3. A van cuts in front of the ego.", 3),
+        ("road: urban | lanes: 2/dir | a cyclist swerves in front of the ego", 2),
+        ("Setting - lanes = two; a lorry drifts into the ego's lane.", 2),
+    ],
+    ids=["colon", "per-dir", "equals-word"],
+)
+def test_a_lanes_field_is_lanes_per_direction(text, lanes):
+    assert read(text).lanes == lanes

@@ -181,12 +181,21 @@ _N = r"(\d|one|two|three|four|five|six)"
 _LANE_OF = re.compile(r"\blane " + _N + r" of " + _N + r"\b")
 
 
+#: "lanes: 3", "lanes: 2/dir", "lanes = two": a field of notes giving the lanes (per direction, as the
+#: reader counts them).
+_LANES_FIELD = re.compile(r"\blanes\s*[:=]?\s*" + _N + r"\b")
+
+
 def lanes_counted(said: str) -> int | None:
-    """The lanes of "lane 2 of 3" (3), else None."""
+    """The lanes of "lane 2 of 3" (3) or of a lanes field ("lanes: 2/dir"), else None."""
     m = _LANE_OF.search(said)
-    if m is None:
+    word = m.group(2) if m is not None else None
+    if word is None:
+        field = _LANES_FIELD.search(said)
+        word = field.group(1) if field is not None else None
+    if word is None:
         return None
-    n = int(m.group(2)) if m.group(2).isdigit() else _WORD[m.group(2)]
+    n = int(word) if word.isdigit() else _WORD[word]
     return n if 1 <= n <= 6 else None
 
 
