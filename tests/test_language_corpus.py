@@ -44,15 +44,16 @@ def test_at_least_nine_in_ten_descriptions_are_understood_and_faithful(corpus):
 #: lines; D police, insurance and radio narratives, long paragraphs, lists, learners' English, typos),
 #: measured sealed first (C 65 understood, 29 faithful, 61 played of 65; D 56, 4, 45 of 56) and then
 #: used to develop the reader; their floors are the figures measured last (C 65, 52, 64 played; D 56,
-#: 31, 47 played). E and F (two more writers, measured once when written: E 70, 16, 55 played of 70;
-#: F 60, 32, 58 of 60) are development data too; all floors are the figures measured last.
+#: 31, 47 played). E (the newest writer, all styles) was measured at 70 understood, 26 faithful of 70
+#: before numbers and settings were read by their grammar, F at 60 and 32; their floors are the figures
+#: measured last.
 INDEPENDENT = {
     ROOT / "tests" / "data" / "language_independent_a.json": (59, 51),
-    ROOT / "tests" / "data" / "language_independent_b.json": (63, 56),
+    ROOT / "tests" / "data" / "language_independent_b.json": (63, 57),
     ROOT / "tests" / "data" / "language_independent_c.json": (65, 52),
     ROOT / "tests" / "data" / "language_independent_d.json": (56, 33),
-    ROOT / "tests" / "data" / "language_independent_e.json": (70, 32),
-    ROOT / "tests" / "data" / "language_independent_f.json": (60, 34),
+    ROOT / "tests" / "data" / "language_independent_e.json": (70, 37),
+    ROOT / "tests" / "data" / "language_independent_f.json": (60, 36),
 }
 
 

@@ -1026,6 +1026,7 @@ TIMES = {
         "pitch dark",
         "after dark",
     ),
+    "02:00": ("small hours", "early hours", "wee hours"),
     "06:00": ("dawn", "sunrise", "early morning"),
     "08:30": ("morning",),
     "12:00": ("noon", "midday", "lunchtime"),

@@ -78,10 +78,13 @@ def rewrite(text: str, actor_noun) -> str:
             rf"\b(vut|ego|{re.escape(noun)})\s+(?=\d+(?:\.\d+)?\s*(?:km/h|mph|m/s))", r"\1 at ", rest
         )
     ego = re.match(r"\s*[,:]?\s*(?:at\s+)?(\d+(?:\.\d+)?)(?:\s*/\s*(\d+(?:\.\d+)?))?\s*(km/h|mph|m/s)", rest)
+    # ("CCRb 50/50, ...": the pair without its unit, in the protocols' km/h)
+    ego = ego or re.match(r"\s*[,:]?\s*(\d+(?:\.\d+)?)\s*/\s*(\d+(?:\.\d+)?)()(?=\s*(?:[,;.]|$))", rest)
     if ego is not None:  # "CCRb 50/50 km/h": the ego's speed, then the target's
-        said += f"; the ego drives at {ego.group(1)} {ego.group(3)}"
+        unit = ego.group(3) or "km/h"
+        said += f"; the ego drives at {ego.group(1)} {unit}"
         if ego.group(2):
-            said += f", the {noun} at {ego.group(2)} {ego.group(3)}"
+            said += f", the {noun} at {ego.group(2)} {unit}"
         rest = rest[ego.end() :]
     if noun in _SAME_TARGET:  # ("CPFA-50, farside adult running at 8 km/h": the code's target, said again)
         again = r"\b(?:(?:a|an|the)\s+)?(?:target\s+)?(?:(?:farside|nearside|far-side|near-side|longitudinal)\s+)?"

@@ -34,7 +34,7 @@ _UNIT_AFTER = re.compile(
 )
 #: Words after which a bare number is a speed ("doing like thirty", "Ego at forty"): the reader reads
 #: a bare number after "at", "doing", "about" as km/h.
-_SPEED_BEFORE = re.compile(r"\b(at|doing|about|like|going)\s+$")
+_SPEED_BEFORE = re.compile(r"\b(at|doing|about|like|going|around|roughly|approximately)\s+$")
 
 #: Spelt-out or unusual speed units, as the reader's symbols.
 _UNITS = [

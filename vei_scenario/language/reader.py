@@ -29,6 +29,8 @@ from dataclasses import dataclass, field, replace
 from functools import lru_cache
 
 from vei_scenario.language import lexicon as L
+from vei_scenario.language import quantities as Q
+from vei_scenario.language import settings as S
 from vei_scenario.language import sides
 from vei_scenario.language import vocabulary as V
 from vei_scenario.language.behaviours import BEHAVIOURS
@@ -177,6 +179,7 @@ class _Mention:
     next_: str = ""  # the token after it
     end: int = 0  # token index after it
     det: str = ""  # the determiner right before it ("the", "a", ...)
+    owners: tuple = ()  # a number's: the starts of the mentions its grammar says it of (quantities.owners)
 
 
 @dataclass
@@ -270,7 +273,7 @@ def _tokens(text: str, spell: bool = True) -> list[str]:
     """The words of ``text`` as the reader reads them (normalised; a misspelt word as the word it is
     one slip from, unless ``spell`` is false)."""
     text = text.lower().replace("\u2019", "'").replace("’", "'")
-    text = normalise(text, _actor_noun_in)
+    text = Q.ranges(normalise(text, _actor_noun_in))
     text = ncap_rewrite(text, _actor_word)
     text = _NCAP_NAME.sub(_ncap_said, text)
     out = []
@@ -284,8 +287,8 @@ def _tokens(text: str, spell: bool = True) -> list[str]:
             out.append(tok.split("'", 1)[0])  # "we're": "we" (the rest carries nothing here)
         elif tok.endswith("'") or tok in ("'",):
             continue
-        else:
-            out.append(tok)
+        else:  # ("rush-hour", "mid-afternoon": a setting's words)
+            out.extend(S.compound_words(tok, lambda key: TABLE.get(key, (None,))[0]))
     if spell:
         out = [_speller().correct(tok) for tok in out]
     return out
@@ -411,8 +414,12 @@ def _number(tokens: list[str], i: int) -> tuple[str, float, int] | None:
         return "speed", value * V.SPEED_UNITS[nxt], 2
     if nxt in ("m", "meters", "metres", "meter", "metre"):
         return "distance", value, 2
+    if nxt == "car" and tokens[i + 2 : i + 3] in (["length"], ["lengths"]):  # "2 car lengths back"
+        return "distance", value * Q.CAR_LENGTH_M, 3
     if nxt in ("m/s²", "m/s2"):  # "brakes at 6 m/s²": how hard
         return "accel", value, 2
+    if (gap := Q.headway_m(tokens, i)) is not None:  # "a 2 s gap" at 72 km/h: 40 m
+        return "distance", gap, 2
     if nxt in ("s", "sec", "seconds", "second", "g", "%", "deg", "degrees", "kg", "km"):
         return "skip", value, 2
     if nxt in (":", "am", "pm", "hrs", "hours", "o'clock", "oclock"):  # ("about 6 pm", "at 07:50"): a time of day
@@ -425,12 +432,24 @@ def _number(tokens: list[str], i: int) -> tuple[str, float, int] | None:
         if value == int(value) and 1 <= value <= 8:  # "3 lanes", "a 2-lane road": lanes a direction
             return "lanes", int(value), 2 if nxt != "-" else 3
     prev = tokens[i - 1] if i > 0 else ""
-    if prev in ("at", "doing", "about", "around", "of") and 3 <= value <= 250:  # "at 120": km/h
-        return "speed", value / 3.6, 1
+    to_changed = prev == "to" and _changes_speed_before(tokens, i - 1)  # ("speeds up to 80": the speed it reaches)
+    if (prev in ("at", "doing", "about", "around", "of") or to_changed or Q.after_at(tokens, i)) and 3 <= value <= 250:
+        # "at 120", "at a steady 50": in the unit said before
+        return "speed", value * Q.carried_unit(tokens, i), 1
     ends = nxt in ("", ".", ",", ";", "!", "?", "and", "then", "when", "while", "but")
     if prev in _MOTION_BEFORE_SPEED and 3 <= value <= 250 and ends:  # "Ego goes 50, ...": km/h
-        return "speed", value / 3.6, 1
+        return "speed", value * Q.carried_unit(tokens, i), 1
     return "unknown", value, 1
+
+
+def _changes_speed_before(tokens: list[str], k: int) -> bool:
+    """Whether a change of speed is said right before token ``k`` ("slows", "speeds up", "brakes")."""
+    for start in range(max(k - 4, 0), k):
+        key = _best(tokens, start)
+        if key and start + len(key) == k and TABLE[key][0] == "behaviour":
+            if TABLE[key][1][0] in ("change_speed", "sudden_stop", "stop"):
+                return True
+    return False
 
 
 #: Verbs of going after which a bare number is a speed ("the ego goes 50, ...", "driving 30 when").
@@ -449,6 +468,12 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
         (typed, read) for typed, read in zip(_tokens(text, spell=False), tokens) if typed != read
     ]
     left_hand, ring = sides.drives_on_left(tokens), "roundabout" in tokens
+
+    def ending_at(k: int) -> int | None:  # the start of the road-user mention whose last word is token k
+        return next(
+            (x.start for _, ms in clauses for x in ms if x.slot in ("actor", "pronoun") and x.end == k + 1), None
+        )
+
     i = 0
     while i < len(tokens):
         tok = tokens[i]
@@ -468,13 +493,17 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
         if re.fullmatch(r"\d+(?:\.\d+)?", tok):
             kind, value, used = _number(tokens, i)
             words = " ".join(tokens[i : i + used])
+            if kind in ("speed", "distance", "speed_range") and Q.lateral(tokens, i, used):
+                kind = "skip"  # ("a lateral velocity of 1 m/s", "1.5 m clearance"): across the road, no travel
+            unit = tokens[i + 1 : i + 2] != [] and tokens[i + 1] in V.SPEED_UNITS
+            owners = Q.owners(tokens, i, unit, ending_at, lambda w: _pos(w) == {"NOUN"} and w not in FUNCTION_WORDS)
             if kind == "unknown":
                 ignored.append(tok)
             elif kind == "speed_range":  # the speed it has, and (its own slot) the one it changes to
                 clauses[-1][1].append(_Mention("speed", value[0], words, i, prev, end=i + used))
                 clauses[-1][1].append(_Mention("speed_to", value[1], words, i, prev, end=i + used))
             elif kind != "skip":
-                clauses[-1][1].append(_Mention(kind, value, words, i, prev, end=i + used))
+                clauses[-1][1].append(_Mention(kind, value, words, i, prev, end=i + used, owners=owners))
             i += used
             continue
         side_at = _lane_to_side(tokens, i)
@@ -587,6 +616,10 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
             i += 1
             continue
         slot, value = TABLE[key]
+        if slot in ("weather", "time", "density") and S.negated(tokens, i):
+            ignored.extend(tokens[i : i + len(key)])  # ("no rain, clear skies", "it wasn't dark yet"): denied
+            i += len(key)
+            continue
         before = tokens[i - 1] if i else ""
         attributive = before in _DETERMINERS or (before.isalpha() and before not in FUNCTION_WORDS)
         if slot == "weather" and key[-1] in L.COLOURS and before in _DETERMINERS and _names_a_thing(tokens, i + 1):
@@ -841,6 +874,9 @@ def _drop_label(clauses):
         if colon is None or (k and colon > 2) or any(m.slot in ("member", "pronoun") for m in mentions[colon:]):
             out.append((link, mentions))
             continue
+        if {m.start for m in mentions[:colon]} & {o for m in mentions[colon:] for o in m.owners}:
+            out.append((link, mentions))  # ("cyclist: 12 m ahead, 15 km/h, brakes"): a key whose values follow
+            continue
         dropped = ("actor", "behaviour", "relation", "side", "count", "unknown_verb") + _POSITIONAL
         head = [m for m in mentions[:colon] if m.slot not in dropped]
         out.append((link, head + mentions[colon + 1 :]))
@@ -979,6 +1015,10 @@ def read(text: str) -> Reading:
     ego_is_a_person = False  # (the ego named as "I" or "we": "it" is then never the ego)
     first_person = bool({"i", "we", "me", "my", "us", "our"} & set(_tokens(text)))  # (the narrator's story)
     bound: dict[str, _Actor | str] = {}  # "he"/"she" → whom it first named
+    resolved: dict[int, _Actor | str] = {}  # a road-user mention's start → whom it names
+    owned = {o for _, ms in clauses for x in ms for o in x.owners}  # mentions a number is said of
+    ego_said: float | None = None  # the ego's speed as the grammar says it (no position rule overrides it)
+    said_of: list[tuple[_Actor, str, float]] = []  # a road user's speed or gap as the grammar says it, likewise
     for link, mentions in clauses:
         named: list[tuple[_Actor | str, str]] = []  # (actor, role) in order: subject, prep, verb, participle
         clause_subject: _Actor | str | None = None
@@ -1001,6 +1041,16 @@ def read(text: str) -> Reading:
                 prev = prev if m.value == "'s" else m
                 continue
             if m.slot == "modal":
+                continue
+            whose = [resolved.get(o) if o != Q.UNNAMED else (actors[-1] if actors else None) for o in m.owners]
+            if whose and None not in whose and not (m.slot == "distance" and "ego" in whose):
+                for who in whose:  # ("van speed 60 km/h", "cyclist: 12 m ahead, 15 km/h"): whose its grammar says
+                    if who == "ego" and m.slot == "speed":
+                        r.ego_speed_mps = ego_said = m.value
+                    elif who != "ego":
+                        _apply(m, who, r, link, added)
+                        said_of.append((who, m.slot, m.value))
+                prev = m
                 continue
             if m.slot in ("conj", "link"):
                 expect_subject = True
@@ -1042,6 +1092,8 @@ def read(text: str) -> Reading:
                 if m.slot == "actor" and prev is not None and prev.slot == "actor" and prev.end == m.start:
                     if prev.words == "target" and named and isinstance(named[-1][0], _Actor) and m.value != "ego":
                         named[-1][0].kind = str(m.value)  # "the target pedestrian": a walker
+                    if prev.start in resolved:
+                        resolved[m.start] = resolved[prev.start]
                     prev = m
                     continue  # "adult pedestrian", "bicycle courier", "target pedestrian (adult)": one actor
                 after_verb = prev is not None and prev.slot in _VERBS
@@ -1123,10 +1175,15 @@ def read(text: str) -> Reading:
                         and nxt.value in ("ahead", "behind")
                         and ({"ahead", "behind"} - {nxt.value}) & same[-1].said
                     )
-                    if (
+                    if m.start in owned and m.words in Q.ROLE_NOUNS and actors and m.det in ("", "the"):
+                        who = actors[-1]  # ("a cyclist crosses ... Target speed: 15 km/h": the cyclist)
+                    elif (
                         same
                         and not elsewhere
-                        and (m.det in ("the", "this", "that", "its", "our", "my") or (not m.det and _bare(m)))
+                        and (
+                            m.det in ("the", "this", "that", "its", "our", "my")
+                            or (not m.det and (_bare(m) or m.start in owned))  # ("speed of scooter 20 km/h")
+                        )
                     ):
                         who = same[-1]  # ("Target: cyclist, 30 m ahead. Cyclist turns left.": the same one)
                     elif (
@@ -1190,6 +1247,7 @@ def read(text: str) -> Reading:
                 if role == "verb" and isinstance(who, _Actor) and isinstance(clause_subject, _Actor) and after_verb:
                     who.object_of = who.object_of or clause_subject
                 named.append((who, role))
+                resolved[m.start] = who
                 if role == "subject":
                     subject = clause_subject = who
                     for p in pending:
@@ -1373,7 +1431,11 @@ def read(text: str) -> Reading:
                         m.slot == "speed" and isinstance(who, _Actor) and who.kind in VEHICLES
                         and who.speed_mps is None and r.ego_speed_mps is None and _next_to_ego(prev, m)
                     )  # fmt: skip
-                    _apply(m, who, r, link, added)
+                    own = m.slot == "speed" and any(x is who and k == "speed" for x, k, _ in said_of)
+                    if own and r.ego_speed_mps is None and _next_to_ego(prev, m):
+                        r.ego_speed_mps = m.value  # (its own said already: "... ahead of the ego at 50" is the ego's)
+                    else:
+                        _apply(m, who, r, link, added)
                     if of_both:
                         r.ego_speed_mps = m.value
             prev = m
@@ -1489,11 +1551,15 @@ def read(text: str) -> Reading:
             a.said.add("ahead")
     vehicles_giving_way = any(a.kind in VEHICLES and any(b[0] == "give_way" for b in a.behaviours) for a in actors)
     at_junction = any(b[0] in JUNCTION_BEHAVIOURS for a in actors for b in a.behaviours)
-    if (r.map_kind is None and r.ego_route in ("left", "right")) or (
-        r.map_kind in (None, "straight") and (any(a.arm for a in actors) or vehicles_giving_way or at_junction)
+    if (
+        (r.map_kind is None and r.ego_route in ("left", "right"))
+        or (r.map_kind in (None, "straight") and (any(a.arm for a in actors) or vehicles_giving_way or at_junction))
+        or (r.map_kind in (None, "straight", "curve") and S.turns_into_a_road(text, " ".join(_tokens(text))))
     ):
         r.map_kind = "crossroad"  # the ego turns, or someone comes out of or waits in a side road: a junction
     junction = r.map_kind in ("crossroad", "roundabout")
+    for a, slot, value in said_of:
+        a.speed_mps, a.distance_m = (value, a.distance_m) if slot == "speed" else (a.speed_mps, value)
     for a in actors:
         spec = ActorSpec(a.kind)
         behaviours = _tidy(a)
@@ -1536,7 +1602,7 @@ def read(text: str) -> Reading:
             behaviours = [("keep_going", {}, None, "sequence")]
         if a.accel_mps2 is not None:  # "at 6 m/s²": the deceleration or rate of what it does (within its range)
             behaviours = [(*_with_rate(n, c, a.accel_mps2), k, lk) for n, c, k, lk in behaviours]
-        if a.speed_to_mps is not None and a.speed_mps is not None:  # "slows from 80 to 30": by 50 km/h
+        if a.speed_to_mps is not None and a.speed_mps is not None and a.speed_mps >= 0:  # "slows from 80 to 30"
             delta = a.speed_to_mps - a.speed_mps
             behaviours = [
                 (n, {**c, "speed_delta_mps": delta} if n == "change_speed" else c, k, lk) for n, c, k, lk in behaviours
@@ -1611,6 +1677,7 @@ def read(text: str) -> Reading:
         spec.behaviours = _one_act_once(spec)
     if r.map_kind is None and any(s.relation == "junction_opposite" for s in r.actors):
         r.map_kind = "crossroad"
+    r.ego_speed_mps = ego_said if ego_said is not None else r.ego_speed_mps
     r.ignored = list(dict.fromkeys(ignored))
     r.read_as = read_as
     said = " ".join(_tokens(text))
@@ -1618,8 +1685,18 @@ def read(text: str) -> Reading:
     if r.intent is None and not r.actors:
         r.intent = "safe"  # (nobody but the ego: nothing it could meet)
     r.lanes = stated_lanes(said) or r.lanes
-    r.time = stated_clock(said) or r.time
-    r.density = stated_density(said) or r.density
+    oncoming = any(s.relation == "oncoming" or any(b[0] == "wrong_way" for b in s.behaviours) for s in r.actors)
+    r.lanes = S.lanes_of_two_way_road(said, oncoming) or S.lanes_counted(said) or r.lanes
+    said_as = [
+        (m.slot, m.words, m.value)
+        for _, ms in clauses
+        for m in ms
+        if m.slot == "weather" or (m.slot == "time" and m.prev not in S.BOUNDS)  # (not "since midnight")
+    ]
+    clock = S.dotted_clock(S.without_bounds(said)) or stated_clock(S.without_bounds(said))
+    r.time = S.time_of_day([(w, v) for k, w, v in said_as if k == "time"], clock) or r.time
+    r.weather = S.sky_over_surface([(w, v) for k, w, v in said_as if k == "weather"]) or r.weather or S.sunny(said)
+    r.density = S.density(said) or stated_density(said) or r.density
     if r.weather in (None, "rain") and stated_heavy_rain(said):
         r.weather = "heavy_rain"
     return r
@@ -2095,7 +2172,8 @@ WEATHER_SEVERITY = {"clear": 0, "cloudy": 1, "rain": 2, "fog": 2, "snow": 3, "he
 
 def _global(r, m) -> None:
     if m.slot == "map":  # (a roundabout has crossings: "on the crossing after the exit" leaves it one)
-        if not (r.map_kind and m.value == "straight") and not (r.map_kind == "roundabout" and m.value == "crossroad"):
+        junction = r.map_kind in ("crossroad", "roundabout")  # ("at the crossroads ... round the corner": its corner)
+        if not (r.map_kind and m.value == "straight") and not (junction and m.value in ("crossroad", "curve")):
             r.map_kind = m.value
     elif m.slot == "weather":  # the most severe said, of equals the first ("grey, drizzly": rain)
         if r.weather is None or WEATHER_SEVERITY.get(str(m.value), 0) > WEATHER_SEVERITY.get(r.weather, 0):

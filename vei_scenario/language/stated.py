@@ -93,8 +93,9 @@ _OF_N = re.compile(
     r"\b(?:middle|inside|outside|left|right|nearside|offside|centre|center|fast|slow) lane of " + _N + r"\b"
 )
 _ONE_WAY = re.compile(r"\bone[ -]way (?:street|road)[^.;]{0,25}?\b" + _N + r" lanes\b")
-#: A road "two-lane" with traffic both ways: one lane each way (unless it is a motorway or dual carriageway).
-_TWO_LANE_ROAD = re.compile(r"\b(?:two|2)[ -]lane (?!motorway|highway|freeway|expressway|dual)")
+#: A road "two-lane" with traffic both ways: one lane each way (unless it is a motorway, dual carriageway or
+#: roundabout, which traffic uses one way).
+_TWO_LANE_ROAD = re.compile(r"\b(?:two|2)[ -]lane (?!motorway|highway|freeway|expressway|dual|roundabout)")
 _DIVIDED = re.compile(r"\b(?:motorway|highway|freeway|expressway|autobahn|dual carriageway|one[ -]way)\b")
 
 

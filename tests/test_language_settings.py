@@ -1,0 +1,252 @@
+"""The settings as people state them: the time of day, traffic, weather, lanes and road read from the
+words that state them, weak words giving way to precise ones and a clock read with the part of the day
+said beside it.
+
+Every wording here is written for these tests (none is from a corpus)."""
+
+from __future__ import annotations
+
+import pytest
+
+from vei_scenario.language.reader import read
+
+
+# --- settings ---------------------------------------------------------------------------------------------
+@pytest.mark.parametrize(
+    "text, lo, hi",
+    [
+        ("Mid-morning, a cyclist crosses ahead of the ego.", 6, 11),
+        ("Late-evening drive; a pedestrian crosses ahead of the ego.", 18, 22),
+        ("A van cuts in front of the ego, early-afternoon.", 12, 17),
+    ],
+    ids=["mid-morning", "late-evening", "early-afternoon"],
+)
+def test_a_part_of_the_day_with_a_modifier_is_that_part(text, lo, hi):
+    assert lo <= int(read(text).time.split(":")[0]) <= hi
+
+
+@pytest.mark.parametrize(
+    "text, lo, hi",
+    [
+        ("On my commute, a dark wet morning, a cyclist swerved in front of me.", 6, 11),
+        ("Rush hour on a foggy evening; a car ahead brakes hard in front of the ego.", 18, 22),
+        ("In daylight, late afternoon, a child runs out in front of the ego.", 12, 17),
+    ],
+    ids=["commute-morning", "rush-hour-evening", "daylight-afternoon"],
+)
+def test_a_part_of_the_day_outweighs_a_word_that_only_hints_at_it(text, lo, hi):
+    assert lo <= int(read(text).time.split(":")[0]) <= hi
+
+
+@pytest.mark.parametrize(
+    "text, lo, hi",
+    [
+        ("17:40, evening, rain: a cyclist crosses ahead of the ego.", 18, 22),
+        ("At 05:45 in the morning a van pulls out in front of the ego.", 6, 11),
+        ("11:50, afternoon, clear; a pedestrian steps out ahead of the ego.", 12, 17),
+    ],
+    ids=["evening", "morning", "afternoon"],
+)
+def test_a_clock_next_to_a_part_of_the_day_is_read_within_that_part(text, lo, hi):
+    assert lo <= int(read(text).time.split(":")[0]) <= hi
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Dusk, rush-hour traffic, a van ahead brakes suddenly in front of the ego.",
+        "A bus pulls out ahead of the ego in the stop-start rush-hour crawl.",
+        "Queueing in rush-hour jams, a motorbike filters past the ego and cuts in.",
+    ],
+    ids=["traffic", "crawl", "jams"],
+)
+def test_a_hyphenated_setting_phrase_is_read_as_the_phrase(text):
+    assert read(text).density == "heavy"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Quiet lane at night, no other vehicle in sight; a fox runs out in front of the ego.",
+        "Empty streets, not a single other car around, a cyclist swerves in front of me.",
+        "A quiet road with nobody else around; a van pulls out in front of the ego.",
+    ],
+    ids=["no-other-vehicle", "not-a-single-car", "nobody-else"],
+)
+def test_saying_there_is_no_other_traffic_is_no_traffic(text):
+    assert read(text).density == "none"
+
+
+@pytest.mark.parametrize(
+    "text, lanes",
+    [
+        ("On a three-lane roundabout a van in the inner lane cuts across in front of the ego.", 3),
+        ("A two-lane highway through the hills; an oncoming car drifts into the ego's lane.", 1),
+        ("On a two-lane highway an oncoming truck overtakes and comes head-on at the ego.", 1),
+    ],
+    ids=["roundabout", "highway-oncoming", "highway-head-on"],
+)
+def test_lanes_of_a_named_road_count_per_direction_as_its_traffic_runs(text, lanes):
+    assert read(text).lanes == lanes
+
+
+@pytest.mark.parametrize(
+    "text, weather",
+    [
+        ("Wet tarmac under an overcast sky; a cyclist crosses ahead of the ego.", "cloudy"),
+        ("A cloudy day on a wet road, a pedestrian steps out ahead of the ego.", "cloudy"),
+        ("Damp surface, sunny, a van cuts in ahead of the ego.", "clear"),
+    ],
+    ids=["wet-tarmac", "wet-road", "damp-surface"],
+)
+def test_a_wet_surface_gives_way_to_the_sky_said(text, weather):
+    assert read(text).weather == weather
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I turned left into a side street and a cyclist came round the corner at me.",
+        "The ego turns right into a side road; a pedestrian is crossing it.",
+        "Turning into Park Road off the high street, a scooter rider comes out from behind a van.",
+    ],
+    ids=["side-street", "side-road", "named-road"],
+)
+def test_turning_into_a_road_makes_a_junction(text):
+    assert read(text).map_kind == "crossroad"
+
+
+def test_nothing_else_happening_says_nothing_of_the_traffic():
+    assert read("Light traffic; a van cuts in ahead of the ego, and nothing else happens.").density == "light"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Barely any traffic about; a van pulls out in front of the ego.",
+        "Not much traffic on the ring road, and a cyclist swerves in front of the ego.",
+        "Only a handful of cars around when a bus pulls out in front of the ego.",
+    ],
+    ids=["barely-any", "not-much", "handful"],
+)
+def test_a_small_quantity_of_traffic_is_light_traffic(text):
+    assert read(text).density == "light"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Blue skies over the bypass; a van cuts in front of the ego.",
+        "The sun was out and a cyclist swerved in front of me.",
+        "Warm sunshine, a pedestrian steps out in front of the ego from the left.",
+    ],
+    ids=["blue-skies", "sun-out", "sunshine"],
+)
+def test_the_sun_or_a_blue_sky_is_clear_weather(text):
+    assert read(text).weather == "clear"
+
+
+@pytest.mark.parametrize(
+    "text, clock",
+    [
+        ("At 8.15am a van pulls out in front of the ego.", "08:15"),
+        ("Around 6.45 pm a cyclist crosses in front of the ego from the left.", "18:45"),
+        ("At 11.05 p.m. a pedestrian steps out in front of the ego.", "23:05"),
+    ],
+    ids=["am", "pm-spaced", "p.m."],
+)
+def test_a_clock_with_a_dot_and_its_half_of_the_day_is_a_clock(text, clock):
+    assert read(text).time == clock
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "In the small hours a fox runs out in front of the ego.",
+        "In the early hours of Sunday a van pulls out in front of the ego.",
+        "In the wee hours a cyclist swerves in front of the ego.",
+    ],
+    ids=["small", "early", "wee"],
+)
+def test_the_small_hours_are_night(text):
+    hour = int(read(text).time.split(":")[0])
+    assert hour >= 21 or hour <= 5
+
+
+@pytest.mark.parametrize(
+    "text, lanes",
+    [
+        ("In lane 2 of 3, a van cuts in front of the ego.", 3),
+        ("The ego is in lane one of two when a lorry drifts into it.", 2),
+        ("Lane 3 of 4: a car from the left lane cuts in front of the ego.", 4),
+    ],
+    ids=["2-of-3", "one-of-two", "3-of-4"],
+)
+def test_lane_n_of_m_is_m_lanes(text, lanes):
+    assert read(text).lanes == lanes
+
+
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("At a mini-roundabout a van pulls out in front of the ego from the right.", "roundabout"),
+        ("At a Y-junction a van pulls out in front of the ego from the left.", "crossroad"),
+        ("On a hairpin-bend a van comes towards the ego on the wrong side.", "curve"),
+    ],
+    ids=["mini-roundabout", "y-junction", "hairpin-bend"],
+)
+def test_a_hyphenated_road_word_is_read_by_its_head(text, kind):
+    assert read(text).map_kind == kind
+
+
+@pytest.mark.parametrize(
+    "text, lo, hi",
+    [
+        ("It had been raining since midnight; at dawn a cyclist swerved in front of me.", 5, 7),
+        ("I'd been driving since 5 am and in the afternoon a van pulled out in front of me.", 12, 17),
+        ("The lights stay off until 6 pm; at night a pedestrian steps out in front of the ego.", 21, 5),
+    ],
+    ids=["since-midnight", "since-clock", "until-clock"],
+)
+def test_a_time_after_since_or_until_is_not_the_scenarios(text, lo, hi):
+    hour = int(read(text).time.split(":")[0])
+    assert (lo <= hour <= hi) if lo <= hi else (hour >= lo or hour <= hi)
+
+
+@pytest.mark.parametrize(
+    "text, weather",
+    [
+        ("No rain today, clear skies; a van pulls out in front of the ego.", "clear"),
+        ("It wasn't foggy, just overcast, when a cyclist swerved in front of me.", "cloudy"),
+        ("There was not any snow, it was sunny; a pedestrian steps out in front of the ego.", "clear"),
+    ],
+    ids=["no-rain", "was-not-foggy", "not-any-snow"],
+)
+def test_a_negated_weather_word_is_not_the_weather(text, weather):
+    assert read(text).weather == weather
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "It was not dark yet; a cyclist swerved in front of me.",
+        "Not night-time, a van pulls out in front of the ego.",
+        "It wasn't dusk yet when a pedestrian stepped out in front of me.",
+    ],
+    ids=["not-dark", "not-night", "was-not-dusk"],
+)
+def test_a_negated_time_word_is_not_the_time(text):
+    assert read(text).time is None
+
+
+@pytest.mark.parametrize(
+    "text, lanes",
+    [
+        ("Lanes: 3. A van cuts in front of the ego.", 3),
+        ("road: urban | lanes: 2/dir | a cyclist swerves in front of the ego", 2),
+        ("Setting - lanes = two; a lorry drifts into the ego's lane.", 2),
+    ],
+    ids=["colon", "per-dir", "equals-word"],
+)
+def test_a_lanes_field_is_lanes_per_direction(text, lanes):
+    assert read(text).lanes == lanes

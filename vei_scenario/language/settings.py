@@ -1,0 +1,223 @@
+"""The settings a description states (time of day, traffic, weather, lanes, road), where the words that
+state them are weighed against each other rather than taken first-said or most-severe.
+
+Why: people state a setting more than once and in words of different precision. "My usual commute, a
+grey morning" names the morning; "commute" only hints at an hour. "17:30, autumn evening" gives a clock
+and the light the writer means. "Wet track, overcast sky" says what the road surface is and what the
+sky is. "A quiet lane with not another car about" says there is no traffic at all. "A two-lane highway"
+with a car coming head-on is one lane each way, "a two-lane roundabout" two lanes going round. Turning
+into a road ("into Church Lane", "into a side street") means the road has a junction there, whatever
+else the text calls the road. Each rule below is one such construction; none names a corpus sentence.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable
+
+#: Time words that tell the light or the traffic, not the hour: a part of the day said with them wins.
+TIME_HINTS = frozenset(
+    "dark|darkness|pitch black|pitch-black|pitch dark|after dark|daylight|daytime|broad daylight|during the day|"
+    "by day|rush hour|commute".split("|")
+)
+#: The hours (first, last) each of the lexicon's times of day covers, by the clock the lexicon gives it.
+PART_OF_DAY_HOURS = {
+    "23:00": (21, 5),  # night
+    "02:00": (0, 5),  # the small hours
+    "06:00": (5, 7),  # dawn, early morning
+    "08:30": (6, 11),  # morning
+    "12:00": (11, 13),  # noon
+    "15:30": (12, 17),  # afternoon
+    "19:30": (18, 21),  # dusk
+    "20:00": (18, 22),  # evening
+}
+#: How far (hours) a clock may lie outside the part of the day said beside it and still be read within it
+#: ("17:40, evening": early evening, 18:00); further off, the clock is what the writer means.
+CLOCK_SLACK_H = 1
+#: Slots of the settings a hyphenated compound may spell ("rush-hour", "mid-afternoon").
+SETTING_SLOTS = frozenset({"time", "density", "weather", "map", "lanes"})
+#: Weather words that say what the road surface is, not the sky: a sky word said with them wins.
+SURFACE_WORDS = frozenset({"wet", "dry", "damp"})
+
+
+#: Words that deny the setting word right after them ("no rain", "wasn't foggy", "not dark yet").
+NEGATORS = frozenset({"no", "not", "never", "without", "nor"})
+#: Words that may stand between a negator and its setting word ("not very foggy", "not any rain").
+_DEGREE = frozenset({"very", "too", "that", "really", "particularly", "especially", "a", "any", "much", "even"})
+
+
+def negated(tokens: list[str], i: int) -> bool:
+    """Whether the setting word at ``i`` is denied by the word before it (past one word of degree):
+    a denied weather, time or traffic is not the scenario's ("no rain, clear skies")."""
+    k = i - 1
+    if k >= 0 and tokens[k] in _DEGREE:
+        k -= 1
+    return k >= 0 and tokens[k] in NEGATORS
+
+
+def compound_words(token: str, slot_of: Callable[[tuple[str, ...]], str | None]) -> list[str]:
+    """A hyphenated token the reader has no entry for, as its words when they are a setting phrase
+    ("rush-hour": "rush hour") or a modifier before a time of day or a road word ("mid-afternoon":
+    "mid afternoon", "mini-roundabout": "mini roundabout")."""
+    if "-" not in token or slot_of((token,)) is not None:
+        return [token]
+    parts = [p for p in token.split("-") if p]
+    if len(parts) < 2 or slot_of((parts[0],)) == "actor":  # ("bus-lane": a road user's word first, no setting)
+        return [token]
+    if slot_of(tuple(parts)) in SETTING_SLOTS or slot_of((parts[-1],)) in ("time", "map"):
+        return parts  # ("mini-roundabout", "Y-junction": a road by its head word)
+    return [token]
+
+
+def time_of_day(said: list[tuple[str, str]], clock: str | None) -> str | None:
+    """The scenario's time from the time words ``said`` in order as (words, clock) and a clock stated in
+    the text: a part of the day over a hint of one, the first of equals; a clock over both, read within
+    the part of the day said beside it when it lies just outside it."""
+    parts = [value for words, value in said if words not in TIME_HINTS]
+    part = parts[0] if parts else (said[0][1] if said else None)
+    if clock is None:
+        return part
+    if not parts or parts[0] not in PART_OF_DAY_HOURS:
+        return clock
+    first, last = PART_OF_DAY_HOURS[parts[0]]
+    hour = int(clock.split(":")[0])
+    if (first <= hour <= last) if first <= last else (hour >= first or hour <= last):
+        return clock
+    before, after = (first - hour) % 24, (hour - last) % 24
+    if before <= CLOCK_SLACK_H:
+        return f"{first:02d}:00"
+    if after <= CLOCK_SLACK_H:
+        return f"{last:02d}:00"
+    return clock
+
+
+#: Words before a time that make it a bound of something else ("raining since midnight", "off until 6 pm"),
+#: not the scenario's time.
+BOUNDS = frozenset({"since", "until", "till"})
+_BOUNDED_CLOCK = re.compile(r"\b(?:since|until|till) (?:about |around )?\d[\d.: ]*(?:am|pm|hrs|hours)?")
+
+
+def without_bounds(said: str) -> str:
+    """The normalised text without the clocks that bound something else ("since 5 am")."""
+    return _BOUNDED_CLOCK.sub(" ", said)
+
+
+def sky_over_surface(said: list[tuple[str, str]]) -> str | None:
+    """The weather of the sky words among the weather words ``said`` as (words, value), when surface
+    words ("wet track") are said with them (the most severe sky word, of equals the first); else None."""
+    severity = {"clear": 0, "cloudy": 1, "rain": 2, "fog": 2, "snow": 3, "heavy_rain": 3}
+    sky = [value for words, value in said if words not in SURFACE_WORDS]
+    if not sky or len(sky) == len(said):
+        return None
+    return max(sky, key=lambda v: (severity.get(v, 0), -sky.index(v)))
+
+
+#: "no other car", "not another vehicle about", "not a single other car", "nobody else on the road":
+#: a negated other road user is no background traffic.
+_NO_OTHERS = re.compile(
+    r"\b(?:nobody|no one|no-one|not a soul) else\b"
+    r"|\b(?:no |not (?:a |one )?(?:single )?)other (?:cars?|vehicles?|traffic|road users?)\b"
+    r"|\bnot (?:a single |one )?(?:another|other) (?:cars?|vehicles?|soul)\b"
+    r"|\bnot a single (?:cars?|vehicles?)\b"
+)
+
+
+def no_other_traffic(said: str) -> bool:
+    """Whether the normalised text says there is no other road user about (no background traffic)."""
+    return _NO_OTHERS.search(said) is not None
+
+
+#: "barely any traffic", "not much traffic", "only a handful of cars": a small quantity of other traffic.
+_FEW_OTHERS = re.compile(
+    r"\b(?:hardly|barely|scarcely) any (?:other )?(?:traffic|cars|vehicles)\b"
+    r"|\bnot (?:much|many|a lot of) (?:other )?(?:traffic|cars|vehicles)\b"
+    r"|\ba handful of (?:other )?(?:cars|vehicles)\b"
+    r"|\bvery (?:little|few) (?:other )?(?:traffic|cars|vehicles)\b"
+)
+
+
+def density(said: str) -> str | None:
+    """Background traffic said as a quantity of other road users: none ("not another car about"), light
+    ("barely any traffic", "only a handful of cars"), or None where the text says neither."""
+    if no_other_traffic(said):
+        return "none"
+    return "light" if _FEW_OTHERS.search(said) else None
+
+
+#: The sun or a blue sky said ("blue skies", "the sun was out", "sunshine", "low sun glare"): clear.
+_SUN = re.compile(
+    r"\b(?:blue sk(?:y|ies)|sunshine|sunlight|sun (?:was |is )?(?:out|shining|blazing|beating down)|"
+    r"(?:bright|strong|low|blazing|hot) sun|sun glare)\b"
+)
+
+
+def sunny(said: str) -> str | None:
+    """``clear`` when the normalised text speaks of the sun or a blue sky, else None (to be used where
+    no weather word is said)."""
+    return "clear" if _SUN.search(said) else None
+
+
+#: "8.15 am", "6.45 pm": a clock written with a dot, which its half of the day tells from a decimal.
+_DOTTED_CLOCK = re.compile(r"\b(1[0-2]|0?[1-9])\.([0-5]\d) (am|pm)\b")
+
+
+def dotted_clock(said: str) -> str | None:
+    """A clock written with a dot and its half of the day ("6.45 pm": "18:45"), else None."""
+    m = _DOTTED_CLOCK.search(said)
+    if m is None:
+        return None
+    hour = int(m.group(1)) % 12 + (12 if m.group(3) == "pm" else 0)
+    return f"{hour:02d}:{m.group(2)}"
+
+
+_TWO_LANE_HIGHWAY = re.compile(r"\b(?:two|2)[ -]lane (?:highway|freeway|expressway|road)\b")
+_EACH_WAY = re.compile(r"\b(?:each|per|either|every|both) (?:way|direction|side)s?\b|\bone[ -]way\b")
+_TWO_WAY = re.compile(r"\b(?:oncoming|head-on|head on|the other way|opposite direction|wrong way)\b")
+
+
+_WORD = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6}
+_N = r"(\d|one|two|three|four|five|six)"
+#: "lane 2 of 3", "lane one of two": the lane the writer is in, of the road's lanes in its direction.
+_LANE_OF = re.compile(r"\blane " + _N + r" of " + _N + r"\b")
+
+
+#: "lanes: 3", "lanes: 2/dir", "lanes = two": a field of notes giving the lanes (per direction, as the
+#: reader counts them).
+_LANES_FIELD = re.compile(r"\blanes\s*[:=]?\s*" + _N + r"\b")
+
+
+def lanes_counted(said: str) -> int | None:
+    """The lanes of "lane 2 of 3" (3) or of a lanes field ("lanes: 2/dir"), else None."""
+    m = _LANE_OF.search(said)
+    word = m.group(2) if m is not None else None
+    if word is None:
+        field = _LANES_FIELD.search(said)
+        word = field.group(1) if field is not None else None
+    if word is None:
+        return None
+    n = int(word) if word.isdigit() else _WORD[word]
+    return n if 1 <= n <= 6 else None
+
+
+def lanes_of_two_way_road(said: str, oncoming: bool) -> int | None:
+    """1 for "a two-lane highway" that traffic uses both ways (someone comes towards the ego on it, or
+    the text says so), where the text does not count its lanes per direction itself."""
+    if not _TWO_LANE_HIGHWAY.search(said) or _EACH_WAY.search(said):
+        return None
+    return 1 if oncoming or _TWO_WAY.search(said) else None
+
+
+#: A turn into a road: a side road or street, or one named ("into Church Lane", "into Park Road").
+_INTO_SIDE_ROAD = re.compile(
+    r"\bturn(?:s|ed|ing)?(?: (?:left|right|off))? into (?:a |the |one of the )?side[ -]?(?:roads?|streets?)\b"
+)
+_INTO_NAMED_ROAD = re.compile(
+    r"\b[Tt]urn(?:s|ed|ing)?(?: (?:left|right|off))? into (?:[A-Z][\w']+ )+"
+    r"(?:Road|Lane|Street|Avenue|Close|Drive|Way|Grove|Crescent|Place|Terrace|Rd|St|Ave)\b"
+)
+
+
+def turns_into_a_road(text: str, said: str) -> bool:
+    """Whether someone turns into a road (a side road, or one named in the original ``text``): the road
+    has a junction there."""
+    return _INTO_SIDE_ROAD.search(said) is not None or _INTO_NAMED_ROAD.search(text) is not None
