@@ -51,8 +51,10 @@ def _actor_problems(adv: dict, want: dict) -> list[str]:
         return [f"type {adv['type']} (expected {want['type']})"]
     nodes = [node for _, node in behaviour_nodes(adv["behaviour"])]
     names = [n["behaviour"] for n in nodes]
-    allowed = want["behaviours"]
-    if want.get("all"):
+    allowed = want.get("behaviours")  # (a case may leave what it does unsaid)
+    if allowed is None:
+        pass
+    elif want.get("all"):
         it = iter(names)  # every expected behaviour, in the order given
         if not all(any(b == x for x in it) for b in allowed):
             out.append(f"behaviours {names} (expected all of {allowed} in order)")
