@@ -31,6 +31,7 @@ from functools import lru_cache
 from vei_scenario.language import lexicon as L
 from vei_scenario.language import vocabulary as V
 from vei_scenario.language.behaviours import BEHAVIOURS
+from vei_scenario.language.motion import one_path
 from vei_scenario.language.ncap import rewrite as ncap_rewrite
 from vei_scenario.language.normalise import normalise
 from vei_scenario.language.reading import ActorSpec, NotUnderstood, Reading
@@ -1585,6 +1586,7 @@ def read(text: str) -> Reading:
     _criticality_said_apart(clauses, r.actors)
     for spec in r.actors:
         spec.behaviours = _one_act_once(spec)
+        spec.behaviours = one_path(spec)
     if r.map_kind is None and any(s.relation == "junction_opposite" for s in r.actors):
         r.map_kind = "crossroad"
     r.ignored = list(dict.fromkeys(ignored))

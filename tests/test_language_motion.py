@@ -1,0 +1,43 @@
+"""One path per road user (:mod:`vei_scenario.language.motion`): the manner said with a path is not a
+second behaviour. Wordings written for each construction, none taken from a corpus."""
+
+from __future__ import annotations
+
+import pytest
+
+from vei_scenario.language.reader import read
+
+
+def _behaviours(text: str) -> list[str]:
+    (actor,) = read(text).actors
+    return [b[0] for b in actor.behaviours]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "At the signalised crossroads a taxi from the right arm drives through against the red light, passing the ego.",
+        "A moped rider came out of the junction on my left against a red light.",
+        "The ego goes straight on at 30 km/h; a van from the left arm runs the red signal and overtakes the ego.",
+    ],
+)
+def test_running_the_red_is_the_whole_path(text):
+    names = _behaviours(text)
+    assert "run_red_light" in names and not {"overtake", "turn_into"} & set(names)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "At the T-junction a delivery van on the side road to the right stops at the line and waits.",
+        "Ego on the main road at 40 km/h; a cyclist on the side road on the left comes to a stop at the give-way line.",
+        "A tractor in the side road on my right halts at the junction and sits there while I go past.",
+    ],
+)
+def test_a_road_user_on_a_junction_arm_that_stops_gives_way(text):
+    assert _behaviours(text) == ["give_way"]
+
+
+def test_a_car_standing_on_a_junction_arm_stays_stopped():
+    r = read("A parked car stands in the side road on the left; the ego drives past at 30 km/h.")
+    assert all(b[0] != "give_way" for a in r.actors for b in a.behaviours)
