@@ -41,3 +41,32 @@ def test_a_road_user_on_a_junction_arm_that_stops_gives_way(text):
 def test_a_car_standing_on_a_junction_arm_stays_stopped():
     r = read("A parked car stands in the side road on the left; the ego drives past at 30 km/h.")
     assert all(b[0] != "give_way" for a in r.actors for b in a.behaviours)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist on the wrong side of the road rides straight at the ego.",
+        "A girl on an e-scooter is riding the wrong way down the middle of the road towards us.",
+        "Some lad on a push bike came the wrong way round the bend, on my side, heading for me.",
+    ],
+)
+def test_a_rider_the_wrong_way_away_from_the_kerb_comes_head_on_in_the_ego_lane(text):
+    assert _behaviours(text) == ["wrong_way"]
+
+
+def test_a_rider_the_wrong_way_along_the_kerb_rides_along_the_road():
+    assert _behaviours("A kid on a scooter rides against the traffic along the kerb on my left.") == ["along_road"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "The ego is heading southbound on Mill Road at 25 mph. A moped was riding northbound in the southbound lane.",
+        "Ego eastbound at 50 km/h; a cyclist heading westbound along the eastbound carriageway.",
+        "My car was westbound on the ring road when a van came eastbound down the westbound lane.",
+    ],
+)
+def test_heading_one_compass_way_in_the_lane_of_the_other_is_the_wrong_way(text):
+    (actor,) = read(text).actors
+    assert ([b[0] for b in actor.behaviours], actor.relation, actor.facing) == (["wrong_way"], "ahead", "against")

@@ -8,10 +8,16 @@ keep the path:
 * running the red light is the whole of a road user's path across the junction: a pass of the ego
   or an emergence from an arm said with it is how it goes, not a second manoeuvre;
 * a road user on a junction arm that only stops (and waits) is giving way: that is what stopping at
-  the line of a side road is.
+  the line of a side road is;
+* a rider going along the road against the traffic, said to be on the wrong side and not at the
+  kerb, is coming head-on in the ego's lane: the wrong-way rider, not one riding along the edge;
+* a road user heading one compass way in the lane of the other ("southbound in the northbound
+  lane") is driving the wrong way in that lane.
 """
 
 from __future__ import annotations
+
+import re
 
 from vei_scenario.language.reading import ActorSpec
 
@@ -20,9 +26,46 @@ _MANNER_OF_A_RUN = frozenset(("overtake", "turn_into"))
 _ARMS = frozenset(("junction_left", "junction_right", "junction_opposite"))
 
 
-def one_path(spec: ActorSpec) -> list:
-    """``spec``'s behaviours with the manner of its path dropped (see the module's rules)."""
+def head_on(spec: ActorSpec, against_traffic: bool) -> list:
+    """``spec``'s behaviours, with riding along the road against the traffic (``against_traffic``:
+    said as the wrong way or side) away from the kerb read as driving head-on in the ego's lane."""
     names = [b[0] for b in spec.behaviours]
+    if against_traffic and names == ["along_road"] and spec.facing == "against" and spec.lateral_m is None:
+        _, cfg, crit, link = spec.behaviours[0]
+        return [("wrong_way", {}, crit, link)]
+    return spec.behaviours
+
+
+_OPPOSITE = {"north": "south", "south": "north", "east": "west", "west": "east"}
+_COMPASS_LANE = re.compile(
+    r"\b(north|south|east|west)bound\b(?:\s+\S+){0,3}?\s+(?:in|on|along|down|up|into)\s+(?:the|a)\s+"
+    r"(north|south|east|west)bound\s+(?:lane|lanes|carriageway|side)\b"
+)
+
+
+#: The same, after the normaliser has said compass headings relative to the ego's ("southbound",
+#: the ego northbound: "in the opposite direction"; "the northbound lane": "the in the same direction lane").
+_RELATIVE_LANE = re.compile(
+    r"\bopposite direction\b(?:\s+\S+){0,3}?\s+(?:in|on|along|down|up|into)\s+(?:the\s+)?(?:in\s+the\s+)?"
+    r"(?:ego 's |my |our )?same direction\s+(?:lane|lanes|carriageway|side)\b"
+)
+
+
+def compass_against(said: str) -> bool:
+    """Whether ``said`` (normalised, lowercased) puts someone heading one way in the lane of the other."""
+    if _RELATIVE_LANE.search(said):
+        return True
+    return any(_OPPOSITE[m.group(1)] == m.group(2) for m in _COMPASS_LANE.finditer(said))
+
+
+def one_path(spec: ActorSpec, said: str = "") -> list:
+    """``spec``'s behaviours with the manner of its path dropped (see the module's rules); ``said`` is
+    the description's normalised text, for what a road user's own clause cannot place."""
+    names = [b[0] for b in spec.behaviours]
+    if names in (["along_road"], ["keep_going"]) and spec.lateral_m is None and compass_against(said):
+        _, cfg, crit, link = spec.behaviours[0]
+        spec.relation, spec.facing = "ahead", "against"
+        return [("wrong_way", {}, crit, link)]
     if "run_red_light" in names:
         return [b for b in spec.behaviours if b[0] not in _MANNER_OF_A_RUN]
     if names == ["stop"] and spec.relation in _ARMS:

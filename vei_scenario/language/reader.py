@@ -31,7 +31,7 @@ from functools import lru_cache
 from vei_scenario.language import lexicon as L
 from vei_scenario.language import vocabulary as V
 from vei_scenario.language.behaviours import BEHAVIOURS
-from vei_scenario.language.motion import one_path
+from vei_scenario.language.motion import head_on, one_path
 from vei_scenario.language.ncap import rewrite as ncap_rewrite
 from vei_scenario.language.normalise import normalise
 from vei_scenario.language.reading import ActorSpec, NotUnderstood, Reading
@@ -1584,9 +1584,10 @@ def read(text: str) -> Reading:
     _parked(actors, r.actors)
     _cut_outs(r.actors)
     _criticality_said_apart(clauses, r.actors)
+    said = " ".join(_tokens(text))
     for spec in r.actors:
         spec.behaviours = _one_act_once(spec)
-        spec.behaviours = one_path(spec)
+        spec.behaviours = one_path(spec, said)
     if r.map_kind is None and any(s.relation == "junction_opposite" for s in r.actors):
         r.map_kind = "crossroad"
     r.ignored = list(dict.fromkeys(ignored))
@@ -1826,6 +1827,7 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool) -> None:
             left = side == "left" or (side is None and spec.relation == "roadside_left")
             spec.lateral_m = 1.2 if left else -1.2
         spec.relation = "ahead" if spec.relation != "behind" else "behind"
+        spec.behaviours = head_on(spec, a.kind in RIDERS and a.wrong_way)
 
 
 def _from(m) -> bool:
