@@ -50,7 +50,7 @@ INDEPENDENT = {
     ROOT / "tests" / "data" / "language_independent_b.json": (63, 56),
     ROOT / "tests" / "data" / "language_independent_c.json": (65, 53),
     ROOT / "tests" / "data" / "language_independent_d.json": (56, 32),
-    ROOT / "tests" / "data" / "language_independent_e.json": (70, 32),
+    ROOT / "tests" / "data" / "language_independent_e.json": (70, 33),
 }
 
 

@@ -70,3 +70,28 @@ def test_a_rider_the_wrong_way_along_the_kerb_rides_along_the_road():
 def test_heading_one_compass_way_in_the_lane_of_the_other_is_the_wrong_way(text):
     (actor,) = read(text).actors
     assert ([b[0] for b in actor.behaviours], actor.relation, actor.facing) == (["wrong_way"], "ahead", "against")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A taxi swings out of a driveway on the left and we collide.",
+        "A moped darts across from the right pavement and they crash.",
+        "The jogger steps off the kerb on the left without looking and we hit.",
+    ],
+)
+def test_a_contact_of_both_parties_is_the_outcome_not_a_behaviour(text):
+    r = read(text)
+    assert r.intent == "collision" and "sudden_stop" not in [b[0] for a in r.actors for b in a.behaviours]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist rides straight on in the lane beside the turning ego; the set-up should yield a near miss.",
+        "An e-scooter keeps going along the cycle lane on the right while the ego turns right, to yield an impact.",
+        "A pedestrian walks along the left verge as the ego passes; the layout is meant to yield a safe pass.",
+    ],
+)
+def test_yield_with_an_object_produces_it_and_is_no_giving_way(text):
+    assert "give_way" not in [b[0] for a in read(text).actors for b in a.behaviours]

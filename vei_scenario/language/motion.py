@@ -13,6 +13,10 @@ keep the path:
   kerb, is coming head-on in the ego's lane: the wrong-way rider, not one riding along the edge;
 * a road user heading one compass way in the lane of the other ("southbound in the northbound
   lane") is driving the wrong way in that lane.
+
+Some verbs a clause holds are no behaviour at all but the outcome (read by
+:mod:`vei_scenario.language.outcome`): a verb of contact whose subject is both parties ("they are
+crashing", "we collided") and "yield" with an object ("designed to yield a collision": to produce).
 """
 
 from __future__ import annotations
@@ -34,6 +38,33 @@ def head_on(spec: ActorSpec, against_traffic: bool) -> list:
         _, cfg, crit, link = spec.behaviours[0]
         return [("wrong_way", {}, crit, link)]
     return spec.behaviours
+
+
+#: Subjects that are both parties of a contact: the verb is what happened between them.
+_BOTH = frozenset(("they", "we", "both", "us"))
+#: Verbs of contact a behaviour may be read from ("the rider crashes": it falls).
+_CONTACT = frozenset(("crash", "crashes", "crashed", "crashing", "collide", "collides", "collided", "colliding", "hit",
+                      "hits", "hitting", "smash", "smashed", "smashes", "smashing"))  # fmt: skip
+
+
+def outcome_not_behaviour(clauses: list) -> list:
+    """``clauses`` (the reader's mentions, by clause) without the verbs that state the outcome rather
+    than what a road user does: a contact verb whose subject is both parties, "yield a/an ..."."""
+    out = []
+    for link, mentions in clauses:
+        kept = []
+        for k, m in enumerate(mentions):
+            if m.slot == "behaviour":
+                first = m.words.split()[0]
+                before = next((x for x in reversed(mentions[:k]) if x.slot not in ("modal", "ego_verb")), None)
+                plural = m.prev in _BOTH or (before is not None and before.slot == "pronoun" and before.words in _BOTH)
+                if first in _CONTACT and plural:
+                    continue  # ("they are crashing": the collision, said of both)
+                if first in ("yield", "yields", "yielded", "yielding") and m.next_ in ("a", "an"):
+                    continue  # ("designed to yield a collision")
+            kept.append(m)
+        out.append((link, kept))
+    return out
 
 
 _OPPOSITE = {"north": "south", "south": "north", "east": "west", "west": "east"}
