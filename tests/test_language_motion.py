@@ -95,3 +95,30 @@ def test_a_contact_of_both_parties_is_the_outcome_not_a_behaviour(text):
 )
 def test_yield_with_an_object_produces_it_and_is_no_giving_way(text):
     assert "give_way" not in [b[0] for a in read(text).actors for b in a.behaviours]
+
+
+@pytest.mark.parametrize(
+    "text, relation, turn",
+    [
+        ("A taxi in the left lane 15 m ahead swings right across the ego to turn into a side road.", "left", "right"),
+        (
+            "The van in the lane to my right cuts left across me to turn into one of the side streets on the left.",
+            "right",
+            "left",
+        ),
+        ("A cyclist in the right lane suddenly swerves left across my lane into a side road.", "right", "left"),
+    ],
+)
+def test_a_side_road_turned_into_is_where_it_goes_not_where_it_comes_from(text, relation, turn):
+    (actor,) = read(text).actors
+    assert (actor.relation, actor.behaviours[0][0], actor.behaviours[0][1]["turn"]) == (relation, "forced_turn", turn)
+
+
+def test_a_side_road_come_out_of_is_still_where_it_comes_from():
+    (van,) = read("A van pulls out of the side road on the left into my lane.").actors
+    assert (van.relation, van.behaviours[0][0]) == ("junction_left", "turn_into")
+
+
+def test_the_gap_said_of_a_forced_turn_is_its_gap_when_it_cuts_across():
+    (taxi,) = read("A taxi in the left lane 15 m ahead swings right across the ego to turn into a side road.").actors
+    assert taxi.behaviours[0][1]["gap_m"] == 15.0

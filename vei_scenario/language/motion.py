@@ -14,6 +14,10 @@ keep the path:
 * a road user heading one compass way in the lane of the other ("southbound in the northbound
   lane") is driving the wrong way in that lane.
 
+A side road or exit said after "into", "onto" or "to" is where a road user goes, not where it
+comes from: "swung across my lane to turn into one of the side roads on the right" is a turn off the
+ego's road (across it, from the lane it was in), not an emergence from that side road.
+
 Some verbs a clause holds are no behaviour at all but the outcome (read by
 :mod:`vei_scenario.language.outcome`): a verb of contact whose subject is both parties ("they are
 crashing", "we collided") and "yield" with an object ("designed to yield a collision": to produce).
@@ -22,6 +26,7 @@ crashing", "we collided") and "yield" with an object ("designed to yield a colli
 from __future__ import annotations
 
 import re
+from dataclasses import replace
 
 from vei_scenario.language.reading import ActorSpec
 
@@ -67,6 +72,67 @@ def outcome_not_behaviour(clauses: list) -> list:
     return out
 
 
+_TOWARDS = frozenset(("into", "onto"))
+_POSSESSIVE = frozenset(("its", "his", "her", "their"))
+
+
+def destinations_not_origins(clauses: list) -> list:
+    """``clauses`` without the side roads and exits said as where a road user goes ("into a side
+    street", "into one of the side roads on the right", "to get to its exit"), and the side said of
+    them; where a road user comes from or is stays ("out of the side road", "up to the entry"). A
+    road user of that clause moving across the ego's way towards a side ("cuts left across me to
+    turn into a side street") is turning off across it: a turn that way, read as the reader reads
+    "swings left across"."""
+    out = []
+    for link, mentions in clauses:
+        kept: list = []
+        drop_side = False
+        gone: str | None = None  # the side of where it goes, if said
+        dropped = False
+        for k, m in enumerate(mentions):
+            before = mentions[k - 1] if k > 0 else None
+            if m.slot == "arm" and _led_towards(m, before):
+                drop_side = dropped = True
+                if kept and kept[-1] is before and before.slot in ("pronoun", "member"):
+                    kept.pop()
+                continue
+            if drop_side and m.slot == "side" and before is not None and before.slot in ("arm", "side"):
+                gone = gone or str(m.value)
+                continue  # ("... side roads on the right": the side of where it goes)
+            drop_side = False
+            kept.append(m)
+        out.append((link, _across_as_a_turn(kept, gone) if dropped else kept))
+    return out
+
+
+def _led_towards(m, before) -> bool:
+    """Whether a side road or exit mention ``m`` is led by "into"/"onto" (a destination)."""
+    if m.prev in _TOWARDS:
+        return True
+    if before is None:
+        return False
+    if before.slot == "pronoun" and before.words in _POSSESSIVE and before.prev in _TOWARDS | {"to"}:
+        return before.end == m.start  # ("to get to its exit")
+    return before.slot == "member" and before.prev in _TOWARDS and m.prev == "of"  # ("into one of the side roads")
+
+
+def _across_as_a_turn(mentions: list, gone: str | None) -> list:
+    """``mentions`` with a lateral move across ("cuts left across", "swerves across") read as a turn
+    that way, the clause having said where it turns off to."""
+    out = list(mentions)
+    for k, m in enumerate(out):
+        if m.slot != "behaviour" or m.value[0] not in ("cut_in", "cross_in_front", "change_lane"):
+            continue
+        nxt = out[k + 1] if k + 1 < len(out) else None
+        if nxt is not None and nxt.slot == "side" and nxt.next_ == "across":
+            out[k : k + 2] = [replace(m, slot="turn", value=str(nxt.value), words=f"{m.words} {nxt.words}")]
+            return out
+        if m.next_ == "across" and gone is not None:
+            out[k] = replace(m, slot="turn", value=gone)
+            return out
+    return out
+
+
 _OPPOSITE = {"north": "south", "south": "north", "east": "west", "west": "east"}
 _COMPASS_LANE = re.compile(
     r"\b(north|south|east|west)bound\b(?:\s+\S+){0,3}?\s+(?:in|on|along|down|up|into)\s+(?:the|a)\s+"
@@ -99,6 +165,9 @@ def one_path(spec: ActorSpec, said: str = "") -> list:
         return [("wrong_way", {}, crit, link)]
     if "run_red_light" in names:
         return [b for b in spec.behaviours if b[0] not in _MANNER_OF_A_RUN]
+    if names[:1] == ["forced_turn"] and spec.distance_m is not None and "gap_m" not in spec.behaviours[0][1]:
+        name, cfg, crit, link = spec.behaviours[0]  # ("10 m ahead ... swings across": the gap it cuts across at)
+        return [(name, {**cfg, "gap_m": spec.distance_m}, crit, link)] + spec.behaviours[1:]
     if names == ["stop"] and spec.relation in _ARMS:
         _, cfg, crit, link = spec.behaviours[0]
         return [("give_way", {}, crit, link)]

@@ -31,7 +31,7 @@ from functools import lru_cache
 from vei_scenario.language import lexicon as L
 from vei_scenario.language import vocabulary as V
 from vei_scenario.language.behaviours import BEHAVIOURS
-from vei_scenario.language.motion import head_on, one_path, outcome_not_behaviour
+from vei_scenario.language.motion import destinations_not_origins, head_on, one_path, outcome_not_behaviour
 from vei_scenario.language.ncap import rewrite as ncap_rewrite
 from vei_scenario.language.normalise import normalise
 from vei_scenario.language.reading import ActorSpec, NotUnderstood, Reading
@@ -951,7 +951,7 @@ def read(text: str) -> Reading:
     """Parse ``text`` into a :class:`~vei_scenario.language.reading.Reading` (with ``ignored``
     words); raise :class:`~vei_scenario.language.reading.NotUnderstood` naming what cannot be placed."""
     clauses, ignored, read_as = scan(text)
-    clauses = outcome_not_behaviour(_drop_label(clauses))
+    clauses = destinations_not_origins(outcome_not_behaviour(_drop_label(clauses)))
     clauses, ego_follows = _ego_following(clauses)
     r = Reading()
     actors: list[_Actor] = []
