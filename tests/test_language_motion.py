@@ -122,3 +122,22 @@ def test_a_side_road_come_out_of_is_still_where_it_comes_from():
 def test_the_gap_said_of_a_forced_turn_is_its_gap_when_it_cuts_across():
     (taxi,) = read("A taxi in the left lane 15 m ahead swings right across the ego to turn into a side road.").actors
     assert taxi.behaviours[0][1]["gap_m"] == 15.0
+
+
+@pytest.mark.parametrize(
+    "text, relation",
+    [
+        ("A cyclist came out of a side road on the right and turned into my road ahead of me.", "junction_right"),
+        ("A moped shot out from the side road on the right straight in front of me.", "junction_right"),
+        ("An e-scooter bursts out of a side street on my left into my lane.", "junction_left"),
+        ("A girl on a bike nips out of the side road on the left and heads off in front of us.", "junction_left"),
+    ],
+)
+def test_a_rider_or_vehicle_out_of_a_side_road_enters_from_that_arm(text, relation):
+    (actor,) = read(text).actors
+    assert (actor.relation, actor.behaviours[0][0]) == (relation, "turn_into")
+
+
+def test_a_walker_out_of_a_side_road_crosses():
+    (child,) = read("A child pops out of a side street on the left.").actors
+    assert child.behaviours[0][0] == "cross_in_front"

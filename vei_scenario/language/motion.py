@@ -14,6 +14,10 @@ keep the path:
 * a road user heading one compass way in the lane of the other ("southbound in the northbound
   lane") is driving the wrong way in that lane.
 
+A verb with the particle "out" and "of" or "from" a side road ("pops out of a side street", "shot
+out from the side road") is coming out of that road, whatever the verb: the reader reads it as it
+reads "comes out of" (a walker then crosses; a rider or a vehicle enters from that arm).
+
 A side road or exit said after "into", "onto" or "to" is where a road user goes, not where it
 comes from: "swung across my lane to turn into one of the side roads on the right" is a turn off the
 ego's road (across it, from the lane it was in), not an emergence from that side road.
@@ -102,6 +106,23 @@ def destinations_not_origins(clauses: list) -> list:
             drop_side = False
             kept.append(m)
         out.append((link, _across_as_a_turn(kept, gone) if dropped else kept))
+    return out
+
+
+def out_of_a_side_road(clauses: list) -> list:
+    """``clauses`` with a verb + "out" + "of"/"from" + a side road read as coming out of that road."""
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k, m in enumerate(kept[:-1]):
+            nxt = kept[k + 1]
+            particle = m.words.endswith((" out", " out of", " out from")) and (
+                m.next_ in ("of", "from") or m.words.endswith(("of", "from"))
+            )
+            if m.slot == "behaviour" and particle and nxt.slot == "arm" and nxt.prev in ("of", "from"):
+                if not m.value[1].get("from_side_road"):
+                    kept[k] = replace(m, value=("cut_in", {**m.value[1], "from_side_road": 1.0}))
+        out.append((link, kept))
     return out
 
 

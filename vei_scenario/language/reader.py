@@ -31,7 +31,13 @@ from functools import lru_cache
 from vei_scenario.language import lexicon as L
 from vei_scenario.language import vocabulary as V
 from vei_scenario.language.behaviours import BEHAVIOURS
-from vei_scenario.language.motion import destinations_not_origins, head_on, one_path, outcome_not_behaviour
+from vei_scenario.language.motion import (
+    destinations_not_origins,
+    head_on,
+    one_path,
+    out_of_a_side_road,
+    outcome_not_behaviour,
+)
 from vei_scenario.language.ncap import rewrite as ncap_rewrite
 from vei_scenario.language.normalise import normalise
 from vei_scenario.language.reading import ActorSpec, NotUnderstood, Reading
@@ -951,7 +957,7 @@ def read(text: str) -> Reading:
     """Parse ``text`` into a :class:`~vei_scenario.language.reading.Reading` (with ``ignored``
     words); raise :class:`~vei_scenario.language.reading.NotUnderstood` naming what cannot be placed."""
     clauses, ignored, read_as = scan(text)
-    clauses = destinations_not_origins(outcome_not_behaviour(_drop_label(clauses)))
+    clauses = out_of_a_side_road(destinations_not_origins(outcome_not_behaviour(_drop_label(clauses))))
     clauses, ego_follows = _ego_following(clauses)
     r = Reading()
     actors: list[_Actor] = []
@@ -1532,7 +1538,7 @@ def read(text: str) -> Reading:
             crit = next((b[2] for b in behaviours if b[2]), a.crit)
             behaviours = [("cross_in_front", {}, crit, "sequence")]
         if a.kind in RIDERS and junction and behaviours[:1] and behaviours[0][0] == "cut_in":
-            if not (a.lane_side or a.followed or a.toward or "ahead" in a.said or a.goes_on):
+            if not (a.lane_side or a.followed or a.toward or "ahead" in a.said or a.goes_on or a.arm):
                 # "an e-scooter cuts across at a junction": a rider crossing the ego's road
                 behaviours = [("cross_in_front", {}, *behaviours[0][2:])] + behaviours[1:]
         overtaking = any(b[0] == "overtake" for b in behaviours)  # (it rides along, and out to pass)
