@@ -141,3 +141,20 @@ def test_a_rider_or_vehicle_out_of_a_side_road_enters_from_that_arm(text, relati
 def test_a_walker_out_of_a_side_road_crosses():
     (child,) = read("A child pops out of a side street on the left.").actors
     assert child.behaviours[0][0] == "cross_in_front"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A taxi in the right lane travelling alongside moves across into my lane.",
+        "An e-scooter in the bike lane on the right swerves out into my lane just ahead.",
+        "A coach in the left lane changes lanes into the ego's lane 20 m ahead.",
+        "A van from the lane on our left keeps going straight into our lane ahead of us.",
+    ],
+)
+def test_a_move_into_the_ego_lane_is_a_cut_in(text):
+    assert _behaviours(text) == ["cut_in"]
+
+
+def test_a_move_into_another_lane_is_a_lane_change():
+    assert _behaviours("A lorry in the right lane moves over into the left lane.") == ["change_lane"]

@@ -18,6 +18,10 @@ A verb with the particle "out" and "of" or "from" a side road ("pops out of a si
 out from the side road") is coming out of that road, whatever the verb: the reader reads it as it
 reads "comes out of" (a walker then crosses; a rider or a vehicle enters from that arm).
 
+A move whose destination is the ego's lane or path ("swung out into my lane", "moved across into
+the ego's lane", "swerves out of the bike lane into my lane") is a cut-in, whatever the verb: the
+destination says what the move is, the verb only how it is made.
+
 A side road or exit said after "into", "onto" or "to" is where a road user goes, not where it
 comes from: "swung across my lane to turn into one of the side roads on the right" is a turn off the
 ego's road (across it, from the lane it was in), not an emergence from that side road.
@@ -124,6 +128,41 @@ def out_of_a_side_road(clauses: list) -> list:
                     kept[k] = replace(m, value=("cut_in", {**m.value[1], "from_side_road": 1.0}))
         out.append((link, kept))
     return out
+
+
+#: Moves that, into the ego's lane, are a cut-in.
+_INTO_EGO_LANE_FROM = frozenset(("keep_going", "change_lane", "cut_out", "cross_in_front"))
+_EGO_OWNERS = (("my",), ("our",), ("the", "ego", "'s"), ("ego", "'s"), ("the", "ego"))
+_STOPS = frozenset((".", ",", ";", ":", "!", "?", "and", "but", "then", "while", "when", "as"))
+
+
+def into_the_ego_lane(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a move into the ego's lane or path read as a cut-in (``tokens``: the reader's
+    tokens, which the mentions index)."""
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k, m in enumerate(kept):
+            if m.slot == "behaviour" and m.value[0] in _INTO_EGO_LANE_FROM and _into_ego_lane(tokens, m.end):
+                kept[k] = replace(m, value=("cut_in", {x: v for x, v in m.value[1].items() if x != "direction"}))
+        out.append((link, kept))
+    return out
+
+
+def _into_ego_lane(tokens: list[str], j: int) -> bool:
+    """Whether "into" + the ego's lane or path follows within the clause from token ``j``."""
+    for i in range(j, min(j + 10, len(tokens))):
+        if tokens[i] in _STOPS:
+            return False
+        if tokens[i] != "into":
+            continue
+        rest = tokens[i + 1 : i + 5]
+        for owner in _EGO_OWNERS:
+            n = len(owner)
+            if tuple(rest[:n]) == owner and len(rest) > n and rest[n] in ("lane", "path"):
+                return True
+        return False
+    return False
 
 
 def _led_towards(m, before) -> bool:
