@@ -80,6 +80,31 @@ EVASION = {
         "The van kept coming as if nothing happened, so I had to dodge him.",
     ],
 }
+# what would have happened, or came within a margin of happening: a near miss
+COUNTERFACTUAL = {
+    "near_miss": [
+        "The kid came within a metre of hitting her.",
+        "If I had not swerved, I would have hit him.",
+        "If the ego hadn't braked, it'd have struck the jogger.",
+        "The van stopped inches from my door.",
+    ],
+}
+# what is denied of a near miss, or free of trouble, is a safe pass
+SAFE_FORMS = {
+    "safe": [
+        "All clear.",
+        "No near miss, no collision, nothing.",
+        "A collision-free pass of the cyclist, please.",
+    ],
+}
+# a body thrown onto or off the ego's parts was hit
+THROWN = {
+    "collision": [
+        "He bounced off my bonnet and landed in the road.",
+        "The cyclist rolled over the windscreen.",
+        "The jogger slid across the hood and over the roof.",
+    ],
+}
 # nothing about the outcome is said: none is assumed
 UNSAID = {
     None: [
@@ -90,6 +115,7 @@ UNSAID = {
         "Keep the time-to-collision above 2 s while the van merges.",
         "A truck ahead of the ego brakes sharply.",
         "The van behind tailgated me way too close.",
+        "The lorry pulled off the hard shoulder ahead of us.",
     ],
 }
 
@@ -102,6 +128,9 @@ UNSAID = {
     + _case(MISS_AND_MARGIN)
     + _case(SAFE)
     + _case(EVASION)
+    + _case(COUNTERFACTUAL)
+    + _case(SAFE_FORMS)
+    + _case(THROWN)
     + _case(UNSAID),
 )
 def test_the_outcome_is_read_from_the_clause(text, intent):

@@ -69,6 +69,8 @@ _PERSON_OBJECTS = frozenset(("me", "us", "him", "her", "it", "them", "you", "eac
 _POSSESSIVES = frozenset(("my", "our", "his", "her", "its", "their", "your"))
 #: Motion verbs that carry the mover into what it meets ("went into the side of it", "ploughed into him").
 _INTO = "into"
+#: The parts of a vehicle a body is thrown against ("bounced off my bonnet").
+_STRUCK_PARTS = frozenset(("bonnet", "hood", "windscreen", "windshield", "bumper", "roof", "wing", "mirror", "door"))
 #: The places one moves into (a path, not a thing one meets): "into my lane", "into the side road".
 _PLACES = frozenset(
     ("lane", "lanes", "road", "street", "path", "way", "junction", "intersection", "roundabout", "carriageway", "gap",
@@ -160,6 +162,8 @@ class _Clause:
     words: list[str]
     first_of_sentence: bool
     inherited: str | None = None
+    #: An earlier clause of its sentence is a condition ("if I had not braked, I would have hit him").
+    after_if: bool = False
     signs: set[str] = field(default_factory=set)
 
 
@@ -168,16 +172,19 @@ def _clauses(tokens: list[str]) -> list[_Clause]:
     out: list[_Clause] = []
     current: list[str] = []
     first = True
+    condition = False
     for tok in tokens:
         if tok in _BREAK_PUNCT or tok in _BREAK_WORDS:
             if current:
-                out.append(_Clause(current, first))
+                out.append(_Clause(current, first, after_if=condition))
+                condition = condition or bool({"if", "unless"} & set(current))
             first = tok in ".;!?:" or (first and not current)
+            condition = condition and tok not in ".;!?:"
             current = []
             continue
         current.append(tok)
     if current:
-        out.append(_Clause(current, first))
+        out.append(_Clause(current, first, after_if=condition))
     return out
 
 
@@ -232,6 +239,10 @@ def _is_contact(words: list[str], i: int) -> bool:
         if w in ("crash", "crashes") and nxt in ("into", "through"):
             return True
         return not (w == "contact" and prev in ("eye",))
+    if w in ("onto", "off", "over", "across") and i > 0 and _is_verb(prev) and prev not in _LENGTH_UNITS | _SMALL_UNITS:
+        rest = words[i + 1 : i + 4]
+        if rest[:1] and rest[0] in _POSSESSIVES | {"the"} and set(rest[1:]) & _STRUCK_PARTS:
+            return True  # ("bounced off my bonnet", "rolled over the windscreen")
     if w in ("versus", "vs") and 0 < i < len(words) - 1:
         return True  # ("car versus e-scooter": a report's name for a collision between the two)
     if (
@@ -368,6 +379,8 @@ def _margin(words: list[str], i: int) -> str | None:
             and (words[k + 1] in _POSSESSIVES | _PERSON_OBJECTS | {"the", "of"})
         ):
             value = _number(words[i - 1]) if i > 0 else None
+            if value is None and words[i] in ("inches", "centimetres", "centimeters", "cm", "millimetres", "mm"):
+                value = 0.1  # ("stopped inches from my door")
             if value is None and i > 0 and words[i - 1] in ("a", "an", "few", "couple", "of"):
                 value = 2.0 if "couple" in words[max(0, i - 3) : i] else 1.0
             if value is not None:
@@ -496,8 +509,9 @@ def outcome_cues(said: str) -> list[Cue]:
 
         for i, w in enumerate(words):
             if _is_contact(words, i):
-                hedged = _scoped(words, i, _HEDGES | {"only"}, 5)
-                if hedged or (_scoped(words, i, _HYPOTHETICAL, 3) and "have" in words[:i]):
+                hedged = _scoped(words, i, _HEDGES | {"only", "within"}, 5)
+                counterfactual = "have" in words[:i] and (_scoped(words, i, _HYPOTHETICAL, 3) or clause.after_if)
+                if hedged or counterfactual:
                     add("hedged")
                 elif _denied_before(words, i) or _scoped(words, i, _HYPOTHETICAL, 2):
                     add("denied")
@@ -505,8 +519,13 @@ def outcome_cues(said: str) -> list[Cue]:
                     add("contact")
                 continue
             if _near_noun(words, i):
-                add("near")
+                add("safe" if _denied_before(words, i) else "near")  # ("no near miss": nothing close)
                 continue
+            if w.endswith("-free") and w[:-5] in _CONTACT_NOUNS | {"conflict", "incident", "drama", "problem"}:
+                add("safe")  # ("a collision-free pass")
+                continue
+            if len(words) == 2 and words[0] == "all" and w in ("clear", "good", "fine", "ok", "okay", "well"):
+                add("safe")  # ("All clear.")
             if _miss(words, i):
                 add("contact" if _denied_before(words, i) else "near")  # ("did not miss him")
                 continue
