@@ -158,3 +158,15 @@ def test_a_move_into_the_ego_lane_is_a_cut_in(text):
 
 def test_a_move_into_another_lane_is_a_lane_change():
     assert _behaviours("A lorry in the right lane moves over into the left lane.") == ["change_lane"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "At the roundabout a van waiting at the entry on the left gives us the right of way.",
+        "A cyclist at the junction on the right gave the ego priority.",
+        "A lorry on the side road on my left stops and gives me the way.",
+    ],
+)
+def test_giving_the_ego_the_way_is_giving_way(text):
+    assert _behaviours(text)[-1:] == ["give_way"]

@@ -22,6 +22,9 @@ A move whose destination is the ego's lane or path ("swung out into my lane", "m
 the ego's lane", "swerves out of the bike lane into my lane") is a cut-in, whatever the verb: the
 destination says what the move is, the verb only how it is made.
 
+"Give" with the ego as its first object and the way as its second ("gives me the way", "gave us
+priority", "gives the ego the right of way") is giving way, the ditransitive form of "give way".
+
 A side road or exit said after "into", "onto" or "to" is where a road user goes, not where it
 comes from: "swung across my lane to turn into one of the side roads on the right" is a turn off the
 ego's road (across it, from the lane it was in), not an emergence from that side road.
@@ -163,6 +166,38 @@ def _into_ego_lane(tokens: list[str], j: int) -> bool:
                 return True
         return False
     return False
+
+
+_GIVE = frozenset(("give", "gives", "gave", "giving", "given"))
+_WAY = frozenset(("way", "priority", "precedence"))
+
+
+def give_the_ego_the_way(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with "give" + the ego + the way (priority, the right of way) read as giving way."""
+    out = []
+    for link, mentions in clauses:
+        kept: list = []
+        skip_to = -1
+        for k, m in enumerate(mentions):
+            if m.start < skip_to:
+                continue
+            nxt = mentions[k + 1] if k + 1 < len(mentions) else None
+            if (
+                m.words in _GIVE
+                and m.slot in ("unknown_verb", "behaviour")
+                and nxt is not None
+                and nxt.slot == "actor"
+                and nxt.value == "ego"
+                and all(t in ("the", "a") for t in tokens[m.end : nxt.start])  # ("gave the ego priority")
+                and set(tokens[nxt.end : nxt.end + 4]) & _WAY
+            ):
+                way = next(i for i in range(nxt.end, nxt.end + 4) if tokens[i] in _WAY)
+                kept.append(replace(m, slot="behaviour", value=("give_way", {}), end=way + 1))
+                skip_to = way + 1  # (the ego and "the right of way" said with it)
+                continue
+            kept.append(m)
+        out.append((link, kept))
+    return out
 
 
 def _led_towards(m, before) -> bool:

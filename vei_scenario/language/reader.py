@@ -33,6 +33,7 @@ from vei_scenario.language import vocabulary as V
 from vei_scenario.language.behaviours import BEHAVIOURS
 from vei_scenario.language.motion import (
     destinations_not_origins,
+    give_the_ego_the_way,
     head_on,
     into_the_ego_lane,
     one_path,
@@ -959,7 +960,8 @@ def read(text: str) -> Reading:
     words); raise :class:`~vei_scenario.language.reading.NotUnderstood` naming what cannot be placed."""
     clauses, ignored, read_as = scan(text)
     clauses = out_of_a_side_road(destinations_not_origins(outcome_not_behaviour(_drop_label(clauses))))
-    clauses = into_the_ego_lane(clauses, _tokens(text))
+    tokens = _tokens(text)
+    clauses = give_the_ego_the_way(into_the_ego_lane(clauses, tokens), tokens)
     clauses, ego_follows = _ego_following(clauses)
     r = Reading()
     actors: list[_Actor] = []
