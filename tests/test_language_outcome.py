@@ -29,6 +29,9 @@ CONTACT = {
         "I rolled into the side of her at walking pace.",
         "Report: lorry vs cyclist at the lights, ambulance requested.",
         "There was a sickening thud and the scooter went under the car.",
+        "The lorry swiped my wing mirror.",
+        "A van shunted us from behind at the lights.",
+        "The motorbike wiped out the cyclist.",
         "The e-bike rider was thrown over the bonnet.",
     ],
 }
@@ -87,6 +90,11 @@ COUNTERFACTUAL = {
         "If I had not swerved, I would have hit him.",
         "If the ego hadn't braked, it'd have struck the jogger.",
         "The van stopped inches from my door.",
+        "I only just got out of the way.",
+        "The ego stops half a metre before the child.",
+        "Expected outcome: minimum TTC 0.8 s.",
+        "The TTC dropped to 0.9 s as the van merged.",
+        "The lowest time to collision was 1.1 s.",
     ],
 }
 # what is denied of a near miss, or free of trouble, is a safe pass
@@ -95,6 +103,8 @@ SAFE_FORMS = {
         "All clear.",
         "No near miss, no collision, nothing.",
         "A collision-free pass of the cyclist, please.",
+        "The ego passes the horse riders comfortably.",
+        "The cut-in goes smoothly.",
     ],
 }
 # a body thrown onto or off the ego's parts was hit
@@ -116,6 +126,8 @@ UNSAID = {
         "A truck ahead of the ego brakes sharply.",
         "The van behind tailgated me way too close.",
         "The lorry pulled off the hard shoulder ahead of us.",
+        "Trigger the van when the time-to-collision reaches 1.5 s.",
+        "A bus ahead pulls in smoothly at its stop.",
     ],
 }
 

@@ -48,7 +48,7 @@ _HYPOTHETICAL = frozenset(("would", "could", "might", "if", "before"))
 #: what they take as object.
 _CONTACT_VERBS = frozenset(
     ("hit", "strike", "collide", "crash", "clip", "tag", "scrape", "touch", "bump", "smash", "ram", "sideswipe",
-     "rear-end", "t-bone", "graze", "wallop", "thump", "knock", "tap", "mow")
+     "rear-end", "t-bone", "graze", "wallop", "thump", "knock", "tap", "mow", "swipe", "shunt")
 )  # fmt: skip
 #: Nouns of a contact; "rtc" and "rta" are the road traffic collision (accident) of a report.
 _CONTACT_NOUNS = frozenset(("collision", "crash", "impact", "contact", "accident", "smash", "prang", "rtc", "rta"))
@@ -252,6 +252,8 @@ def _is_contact(words: list[str], i: int) -> bool:
     ):
         return True
     lem = _lemmas(w)
+    if "wipe" in lem and "out" in words[i + 1 : i + 3]:
+        return _meets_road_user(words[i + 1 : i + 4])  # ("wiped out the cyclist", "wiped him out")
     if lem & {"run", "knock", "mow"} and nxt in ("over", "down"):
         return _meets_road_user(words[i + 2 : i + 5]) and not (nxt == "down" and lem & {"run"} and "road" in words)
     if lem & {"make", "come"} and nxt == "contact":
@@ -374,7 +376,7 @@ def _margin(words: list[str], i: int) -> str | None:
         if words[k] == "or" and k + 2 < len(words):
             k += 2  # ("a metre or two from my bumper")
         if (
-            words[k] in ("from", "off", "short")
+            words[k] in ("from", "off", "short", "before")
             and k + 1 < len(words)
             and (words[k + 1] in _POSSESSIVES | _PERSON_OBJECTS | {"the", "of"})
         ):
@@ -529,6 +531,9 @@ def outcome_cues(said: str) -> list[Cue]:
             if _miss(words, i):
                 add("contact" if _denied_before(words, i) else "near")  # ("did not miss him")
                 continue
+            if _close_ttc(words, i):
+                add("near")
+                continue
             margin = _margin(words, i)
             if margin is not None:
                 add("near" if margin == NEAR_MISS else "safe")
@@ -537,7 +542,8 @@ def outcome_cues(said: str) -> list[Cue]:
                 add("hedged")
             if w in _TROUBLE and (_denied_before(words, i) or _scoped(words, i, ("without",), 3)):
                 add("safe")
-            if w in ("safe", "safely", "uneventful", "uneventfully", "fine") and not _denied_before(words, i):
+            went = w == "smoothly" and i > 0 and _lemmas(words[i - 1]) & {"go", "pass", "run"}  # ("it went smoothly")
+            if (w in _SAFE_WORDS or went) and not _denied_before(words, i):
                 if not (w == "fine" and i + 1 < len(words)):  # ("fine rain": weather)
                     add("safe")
             then = (
@@ -600,6 +606,24 @@ def stated_intent(said: str) -> str | None:
     return decide(outcome_cues(said))
 
 
+#: Words that say the pass was safe, wherever they stand ("passes safely", "a comfortable pass").
+_SAFE_WORDS = frozenset(("safe", "safely", "uneventful", "uneventfully", "fine", "comfortably"))
+#: A time to collision said as its least value: below this it was a near miss.
+_TTC_WORDS = frozenset(("ttc", "time-to-collision"))
+_LOWEST = frozenset(("minimum", "min", "lowest", "dropped", "drops", "fell", "falls", "below", "under"))
+
+
+def _close_ttc(words: list[str], i: int) -> bool:
+    """ "minimum TTC 0.8 s", "the TTC dropped to 0.9 s": the least time to collision, under 1.5 s."""
+    if words[i] not in _TTC_WORDS and not (words[i] == "collision" and words[i - 2 : i] == ["time", "to"]):
+        return False
+    window = words[max(0, i - 3) : i + 6]
+    if not set(window) & _LOWEST:
+        return False
+    values = [_number(w) for w in words[i + 1 : i + 6]]
+    return any(v is not None and v < 1.5 for v in values)
+
+
 _COPULA = frozenset(("is", "was", "were", "be", "been", "being", "are", "'s", "it's", "its", "got", "nobody", "no"))
 _DEGREE = frozenset(
     ("very", "really", "so", "too", "quite", "pretty", "a", "bit", "little", "rather", "extremely", "one")
@@ -623,6 +647,6 @@ def _hedged_act(words: list[str], i: int) -> bool:
     after = words[i + 1 : i + 5]
     if not after or not _is_verb(after[0]) or after[0].endswith("ing"):
         return False  # ("barely crawling": how fast, not what happened)
-    if _lemmas(after[0]) & {"stop", "avoid", "manage", "make"}:
+    if _lemmas(after[0]) & {"stop", "avoid", "manage", "make", "get"}:
         return True
     return bool(set(after[1:]) & (_PERSON_OBJECTS - {"one", "each"} | _POSSESSIVES))
