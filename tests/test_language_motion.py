@@ -170,3 +170,23 @@ def test_a_move_into_another_lane_is_a_lane_change():
 )
 def test_giving_the_ego_the_way_is_giving_way(text):
     assert _behaviours(text)[-1:] == ["give_way"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "At the crossroads a pickup heading southbound made a left turn across the path of the ego, which was "
+        "northbound at 30 mph.",
+        "V1 was northbound at 40 km/h at the lights. V2, southbound, turned left across the front of V1.",
+        "The insured vehicle was eastbound through the junction at 20 mph; a taxi, westbound, turned left "
+        "across its path.",
+    ],
+)
+def test_a_left_turn_across_by_the_party_heading_the_other_way_is_a_turn_across(text):
+    (actor,) = read(text).actors
+    assert (actor.relation, actor.behaviours[0][0]) == ("junction_opposite", "turn_across")
+
+
+def test_a_left_turn_across_by_a_party_heading_the_same_way_stays_a_forced_turn():
+    text = "At the crossroads a pickup heading northbound made a left turn across the path of the ego, northbound too."
+    assert _behaviours(text) == ["forced_turn"]

@@ -12,7 +12,10 @@ keep the path:
 * a rider going along the road against the traffic, said to be on the wrong side and not at the
   kerb, is coming head-on in the ego's lane: the wrong-way rider, not one riding along the edge;
 * a road user heading one compass way in the lane of the other ("southbound in the northbound
-  lane") is driving the wrong way in that lane.
+  lane") is driving the wrong way in that lane;
+* where the only two headings a narrative gives are opposite ("V2, eastbound, ... V1, which was
+  westbound"), the road user is coming the other way: its left turn across the ego's path is the
+  turn across an oncoming path.
 
 A verb with the particle "out" and "of" or "from" a side road ("pops out of a side street", "shot
 out from the side road") is coming out of that road, whatever the verb: the reader reads it as it
@@ -250,6 +253,15 @@ def compass_against(said: str) -> bool:
     return any(_OPPOSITE[m.group(1)] == m.group(2) for m in _COMPASS_LANE.finditer(said))
 
 
+_HEADING = re.compile(r"\b(north|south|east|west)bound\b")
+
+
+def compass_opposed(said: str) -> bool:
+    """Whether the headings ``said`` gives are exactly two, and opposite (the two parties meet)."""
+    found = {m.group(1) for m in _HEADING.finditer(said)}
+    return len(found) == 2 and _OPPOSITE[min(found)] == max(found)
+
+
 def one_path(spec: ActorSpec, said: str = "") -> list:
     """``spec``'s behaviours with the manner of its path dropped (see the module's rules); ``said`` is
     the description's normalised text, for what a road user's own clause cannot place."""
@@ -260,6 +272,11 @@ def one_path(spec: ActorSpec, said: str = "") -> list:
         return [("wrong_way", {}, crit, link)]
     if "run_red_light" in names:
         return [b for b in spec.behaviours if b[0] not in _MANNER_OF_A_RUN]
+    turning_left = names[:1] == ["forced_turn"] and spec.behaviours[0][1].get("turn") == "left"
+    if turning_left and spec.relation is None and compass_opposed(said):
+        _, cfg, crit, link = spec.behaviours[0]
+        spec.relation = "junction_opposite"
+        return [("turn_across", {}, crit, link)] + spec.behaviours[1:]
     if names[:1] == ["forced_turn"] and spec.distance_m is not None and "gap_m" not in spec.behaviours[0][1]:
         name, cfg, crit, link = spec.behaviours[0]  # ("10 m ahead ... swings across": the gap it cuts across at)
         return [(name, {**cfg, "gap_m": spec.distance_m}, crit, link)] + spec.behaviours[1:]
