@@ -190,3 +190,17 @@ def test_a_left_turn_across_by_the_party_heading_the_other_way_is_a_turn_across(
 def test_a_left_turn_across_by_a_party_heading_the_same_way_stays_a_forced_turn():
     text = "At the crossroads a pickup heading northbound made a left turn across the path of the ego, northbound too."
     assert _behaviours(text) == ["forced_turn"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "An e-scooter rider was ahead of me on the left. I was hanging back. Then he swung right across my lane.",
+        "A taxi was in front of me. I was keeping my distance. Then she turned left into a side street.",
+        "A van sat ahead of us in the right lane. We were doing 30 mph. Then he made a left turn across our lane.",
+    ],
+)
+def test_he_or_she_in_a_first_person_story_is_the_road_user_not_the_narrator(text):
+    r = read(text)
+    (actor,) = r.actors
+    assert r.ego_route is None and actor.behaviours[0][0] == "forced_turn"

@@ -1066,6 +1066,8 @@ def read(text: str) -> Reading:
                     ):
                         who = actors[-1]  # ("We were following the bus when it pulled to a stop": not us)
                     if m.words in ("he", "she"):  # a person's pronoun names the same one all through a story
+                        if who == "ego" and ego_is_a_person and actors and m.words not in bound:
+                            who = actors[-1]  # (the narrator is "I": "he" is someone else)
                         who = bound.setdefault(m.words, who)  # ("the driver said she ... She braked")
                     role = "subject"
                 elif m.slot == "member":
