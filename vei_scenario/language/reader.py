@@ -33,6 +33,15 @@ from vei_scenario.language import quantities as Q
 from vei_scenario.language import settings as S
 from vei_scenario.language import vocabulary as V
 from vei_scenario.language.behaviours import BEHAVIOURS
+from vei_scenario.language.motion import (
+    destinations_not_origins,
+    give_the_ego_the_way,
+    head_on,
+    into_the_ego_lane,
+    one_path,
+    out_of_a_side_road,
+    outcome_not_behaviour,
+)
 from vei_scenario.language.ncap import rewrite as ncap_rewrite
 from vei_scenario.language.normalise import normalise
 from vei_scenario.language.reading import ActorSpec, NotUnderstood, Reading
@@ -986,7 +995,9 @@ def read(text: str) -> Reading:
     """Parse ``text`` into a :class:`~vei_scenario.language.reading.Reading` (with ``ignored``
     words); raise :class:`~vei_scenario.language.reading.NotUnderstood` naming what cannot be placed."""
     clauses, ignored, read_as = scan(text)
-    clauses = _drop_label(clauses)
+    clauses = out_of_a_side_road(destinations_not_origins(outcome_not_behaviour(_drop_label(clauses))))
+    tokens = _tokens(text)
+    clauses = give_the_ego_the_way(into_the_ego_lane(clauses, tokens), tokens)
     clauses, ego_follows = _ego_following(clauses)
     r = Reading()
     actors: list[_Actor] = []
@@ -1107,6 +1118,8 @@ def read(text: str) -> Reading:
                     ):
                         who = actors[-1]  # ("We were following the bus when it pulled to a stop": not us)
                     if m.words in ("he", "she"):  # a person's pronoun names the same one all through a story
+                        if who == "ego" and ego_is_a_person and actors and m.words not in bound:
+                            who = actors[-1]  # (the narrator is "I": "he" is someone else)
                         who = bound.setdefault(m.words, who)  # ("the driver said she ... She braked")
                     role = "subject"
                 elif m.slot == "member":
@@ -1597,7 +1610,7 @@ def read(text: str) -> Reading:
             crit = next((b[2] for b in behaviours if b[2]), a.crit)
             behaviours = [("cross_in_front", {}, crit, "sequence")]
         if a.kind in RIDERS and junction and behaviours[:1] and behaviours[0][0] == "cut_in":
-            if not (a.lane_side or a.followed or a.toward or "ahead" in a.said or a.goes_on):
+            if not (a.lane_side or a.followed or a.toward or "ahead" in a.said or a.goes_on or a.arm):
                 # "an e-scooter cuts across at a junction": a rider crossing the ego's road
                 behaviours = [("cross_in_front", {}, *behaviours[0][2:])] + behaviours[1:]
         overtaking = any(b[0] == "overtake" for b in behaviours)  # (it rides along, and out to pass)
@@ -1649,8 +1662,10 @@ def read(text: str) -> Reading:
     _parked(actors, r.actors)
     _cut_outs(r.actors)
     _criticality_said_apart(clauses, r.actors)
+    said = " ".join(_tokens(text))
     for spec in r.actors:
         spec.behaviours = _one_act_once(spec)
+        spec.behaviours = one_path(spec, said)
     if r.map_kind is None and any(s.relation == "junction_opposite" for s in r.actors):
         r.map_kind = "crossroad"
     r.ego_speed_mps = ego_said if ego_said is not None else r.ego_speed_mps
@@ -1901,6 +1916,7 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool) -> None:
             left = side == "left" or (side is None and spec.relation == "roadside_left")
             spec.lateral_m = 1.2 if left else -1.2
         spec.relation = "ahead" if spec.relation != "behind" else "behind"
+        spec.behaviours = head_on(spec, a.kind in RIDERS and a.wrong_way)
 
 
 def _from(m) -> bool:
