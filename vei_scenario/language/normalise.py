@@ -102,13 +102,17 @@ _EGO_AGAIN = re.compile(
 #: The other party of a statement: "V2", "Vehicle 2", "Unit 2", "D2" (3, 4 ...).
 _OTHER = re.compile(
     r"\b(?:(?:the|a|an)\s+)?(?:(?:vehicle|veh\.?|unit|v|d)\s*-?\s*([2-9])\b(?!\s*(?:m|km|mph|s)\b)|"
-    r"(?:pov|principal other vehicle)\s*-?\s*([1-9]?)\b|third[- ]party(?:'s)?\s+(?:vehicle|car)\b)"
+    r"(?:pov|principal other vehicle)(?:\s*-?\s*([1-9]))?\b|third[- ]party(?:'s)?\s+(?:vehicle|car)\b)"
 )
 #: An apposition after it: "V2, a white Transit van," / "Unit 2, a pedal cyclist,".
 _APPOSITION = re.compile(
     r"\s*(?:,?\s*(?:an?|the)\s+([^,.;()]+?)(?=\s*(?:,|\.|;|\s+(?:travell\w*|driving|was|were|who|which|in|on|at)\b))|"
-    r"\(\s*(?:an?\s+|the\s+)?([^,.;()]+?)\s*\))"
+    r"\(\s*(?:an?\s+|the\s+)?([^,.;()]+?)\s*(?:,[^()]*)?\))"  # ("(e-scooter, male rider)": the first says what)
 )
+
+
+#: What follows a call sign opening a radio report ("Unit 4 to control", "Car 12 calling base").
+_CALLING = re.compile(r"\s*,?\s*(?:to|calling|for)\b")
 
 
 def _other_parties(text: str, known_noun) -> str:
@@ -117,6 +121,8 @@ def _other_parties(text: str, known_noun) -> str:
     names: dict[str, str] = {}
     out, pos = [], 0
     for m in _OTHER.finditer(text):
+        if not text[: m.start()].strip(" -*,.") and _CALLING.match(text, m.end()):
+            continue  # "Unit 4 to control, ...": the caller's own vehicle (read as the ego by discourse)
         code = m.group(1) or m.group(2) or m.group(0).split()[-1]
         out.append(text[pos : m.start()])
         pos = m.end()

@@ -28,6 +28,7 @@ import re
 from dataclasses import dataclass, field, replace
 from functools import lru_cache
 
+from vei_scenario.language import discourse
 from vei_scenario.language import lexicon as L
 from vei_scenario.language import vocabulary as V
 from vei_scenario.language.behaviours import BEHAVIOURS
@@ -43,6 +44,7 @@ from vei_scenario.language.stated import (
 )
 
 _TOKEN = re.compile(r"\d+(?:\.\d+)?|km/h|m/s²|m/s2|m/s|[a-z][a-z\-]*(?:'[a-z]+)?|'s|[.;,!?:%]")
+_TOKEN_BRACKETS = re.compile(_TOKEN.pattern + "|[()]")  # (for discourse: a name said in brackets)
 
 
 @lru_cache(maxsize=4096)
@@ -265,15 +267,15 @@ def _speller():
     return Speller({w for key in TABLE for w in key} | FUNCTION_WORDS | outcome)
 
 
-def _tokens(text: str, spell: bool = True) -> list[str]:
+def _tokens(text: str, spell: bool = True, brackets: bool = False) -> list[str]:
     """The words of ``text`` as the reader reads them (normalised; a misspelt word as the word it is
-    one slip from, unless ``spell`` is false)."""
+    one slip from, unless ``spell`` is false; brackets kept as words if ``brackets``)."""
     text = text.lower().replace("\u2019", "'").replace("’", "'")
     text = normalise(text, _actor_noun_in)
     text = ncap_rewrite(text, _actor_word)
     text = _NCAP_NAME.sub(_ncap_said, text)
     out = []
-    for tok in _TOKEN.findall(text):
+    for tok in (_TOKEN_BRACKETS if brackets else _TOKEN).findall(text):
         if tok.endswith("'s") and len(tok) > 2:
             out += [tok[:-2], "'s"]
         elif "'" in tok and tok.split("'", 1)[1] == "t":  # "doesn't", "won't", "can't": the verb, then "not"
@@ -398,6 +400,17 @@ def _best(tokens: list[str], i: int) -> tuple[str, ...] | None:
 _DETERMINERS = {"the", "a", "an", "its", "our", "my", "their", "his", "her", "this", "that", "another", "some"}
 
 
+def _kind_at(tokens: list[str], i: int) -> tuple[str, int] | None:
+    """The road-user type a phrase at ``i`` names and its length, or None (for :mod:`discourse`)."""
+    key = _best(tokens, i)
+    return (str(TABLE[key][1]), len(key)) if key is not None and TABLE[key][0] == "actor" else None
+
+
+def _known(tokens: list[str], i: int) -> bool:
+    """Whether the reader has a phrase starting at ``i`` (for :mod:`discourse`)."""
+    return _best(tokens, i) is not None
+
+
 def _adverb(word: str) -> bool:
     return word.endswith("ly") or word in ("hard", "fast", "straight", "just", "then")
 
@@ -441,12 +454,12 @@ _MOTION_BEFORE_SPEED = frozenset(
 def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
     """(clauses as (link, mentions), ignored words) of ``text``; a word that is only a verb and unknown
     stays in its clause as an ``unknown_verb`` mention."""
-    tokens = _tokens(text)
+    tokens = _tokens(text, brackets=True)
     clauses: list[tuple[str, list[_Mention]]] = [("sequence", [])]
-    ignored: list[str] = []
     read_as: list[tuple[str, str]] = [
-        (typed, read) for typed, read in zip(_tokens(text, spell=False), tokens) if typed != read
+        (typed, read) for typed, read in zip(_tokens(text, spell=False, brackets=True), tokens) if typed != read
     ]
+    tokens, ignored = discourse.resolve(tokens, _kind_at, _known)  # (who is who; the words it took out)
     i = 0
     while i < len(tokens):
         tok = tokens[i]

@@ -1,0 +1,178 @@
+"""Who is who in a description: the ego named in the third person, one road user named twice, people
+and animals that are only scenery. Each construction is pinned by wordings of our own (none of them
+from a corpus), read through the whole reader: the road users it finds and the ego's speed."""
+
+from __future__ import annotations
+
+import pytest
+
+from vei_scenario.language.reader import read
+
+MPH = 0.44704
+
+
+def kinds(text: str) -> list[str]:
+    return [a.kind for a in read(text).actors]
+
+
+# --- a person on a vehicle is one rider of that vehicle ------------------------------------------------
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("At dusk some lad on a Voi scooter shot out from the right in front of me.", "e-scooter"),
+        ("A student on one of those hire bikes cut across my lane from the left.", "bicycle"),
+        ("A pizza courier on an electric scooter crossed from the right just ahead of me.", "e-scooter"),
+        ("An old woman riding a bicycle wobbled across the road from the left in front of us.", "bicycle"),
+    ],
+    ids=["brand", "one-of-those", "two-word-person", "riding"],
+)
+def test_a_person_on_a_vehicle_is_one_rider_of_it(text, kind):
+    assert kinds(text) == [kind]
+
+
+# --- a companion of a walker is no road user of its own, unless it acts -------------------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A woman with a poodle stood at the kerb on my right and waited for me to pass.", ["pedestrian"]),
+        ("An old man with his spaniel was walking along the left verge towards us.", ["pedestrian"]),
+        (
+            "A boy with his dog was walking on the pavement, and the dog suddenly ran across in front of me.",
+            ["pedestrian", "pedestrian"],
+        ),
+    ],
+    ids=["waits", "walks", "the-animal-acts"],
+)
+def test_a_walkers_companion_is_a_road_user_only_when_it_acts(text, expected):
+    assert kinds(text) == expected
+
+
+# --- the ego's own vehicle and what is in it are not road users ------------------------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "We were in a borrowed van, a battered old Ford, doing 30 mph when a cyclist swung out from the left ahead.",
+        "I was in a hire car at about 40 km/h and a jogger stepped out from the right in front of me.",
+        "Van full of tools and a dog, I was doing 50 km/h on the ring road when a cyclist cut across from the left.",
+    ],
+    ids=["borrowed-van", "hire-car", "full-of"],
+)
+def test_the_narrators_vehicle_and_its_load_are_the_ego(text):
+    assert kinds(text) in (["bicycle"], ["pedestrian"])
+
+
+# --- a motor vehicle set against a vulnerable road user, with no ego named, is the ego ------------------
+@pytest.mark.parametrize(
+    "text, kind, speed_kph",
+    [
+        (
+            "Base, collision van versus cyclist at the lights. Cyclist went across the van's front, van at 30 km/h.",
+            "bicycle",
+            30,
+        ),
+        (
+            "Update: pedestrian vs car on the high street. Pedestrian stepped out from the left, car doing 25 mph.",
+            "pedestrian",
+            25 * MPH * 3.6,
+        ),
+        (
+            "Caller reports jogger hit. Vehicle was going straight at about 40 km/h, jogger crossing from the right.",
+            "pedestrian",
+            40,
+        ),
+    ],
+    ids=["versus", "vs", "bare-vehicle"],
+)
+def test_the_motor_vehicle_against_a_vulnerable_road_user_is_the_ego(text, kind, speed_kph):
+    r = read(text)
+    assert [a.kind for a in r.actors] == [kind]
+    assert r.ego_speed_mps is not None and abs(r.ego_speed_mps * 3.6 - speed_kph) < 0.5
+
+
+# --- a radio call sign is the speaker's vehicle --------------------------------------------------------
+@pytest.mark.parametrize(
+    "text, speed_kph",
+    [
+        ("Unit 4 to base, a cyclist just swerved out from the left in front of me, I'm at 40, all fine.", 40),
+        ("Car 12 to control, a pedestrian ran across from the right, I was doing 30 km/h, no injuries.", 30),
+        ("Van 2 calling control: I'm at 60 km/h and a lorry in the left lane has just cut into my lane.", 60),
+    ],
+    ids=["unit", "car", "van"],
+)
+def test_a_call_sign_is_the_ego(text, speed_kph):
+    r = read(text)
+    assert len(r.actors) == 1
+    assert r.ego_speed_mps is not None and abs(r.ego_speed_mps * 3.6 - speed_kph) < 0.5
+
+
+# --- a road user named again is the same one -----------------------------------------------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A cyclist rides towards the ego in its lane, speed of cyclist 15 km/h, ego 40 km/h.", ["bicycle"]),
+        ("A bus pulls out of a stop ahead of the ego; velocity of bus 10 km/h; ego 50 km/h.", ["truck"]),
+        ("The front vehicle, a coach, drives 20 m ahead of the ego. The front vehicle then brakes hard.", ["truck"]),
+        ("The vehicle ahead, a tanker, cruises at 80 km/h. Later the vehicle slows to 40 km/h.", ["truck"]),
+    ],
+    ids=["speed-of-bare", "velocity-of-bare", "definite-generic", "definite-generic-2"],
+)
+def test_a_road_user_named_again_is_the_same_one(text, expected):
+    assert kinds(text) == expected
+
+
+def test_a_new_label_or_an_indefinite_article_is_a_new_road_user():
+    text = "A cyclist crosses from the left in front of the ego, then another cyclist crosses from the right."
+    assert kinds(text) == ["bicycle", "bicycle"]
+
+
+# --- a road user said in apposition in brackets ----------------------------------------------------
+@pytest.mark.parametrize(
+    "text, kind, speed_kph",
+    [
+        (
+            "A sports car (the intruder) in the right lane, 10 m ahead of the ego, cuts into the ego lane. "
+            "Ego speed 90 km/h, intruder speed 110 km/h.",
+            "car",
+            110,
+        ),
+        (
+            "A delivery van (the obstacle) stands 40 m ahead of the ego in its lane. Ego speed 50 km/h, "
+            "obstacle speed 0 km/h.",
+            "van",
+            0,
+        ),
+    ],
+    ids=["intruder", "obstacle"],
+)
+def test_a_name_given_in_brackets_names_that_road_user(text, kind, speed_kph):
+    r = read(text)
+    assert [a.kind for a in r.actors] == [kind]
+    assert r.actors[0].speed_mps is not None and abs(r.actors[0].speed_mps * 3.6 - speed_kph) < 0.5
+
+
+# --- a misspelt road-user word still names its road user --------------------------------------------
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("e-scoter comes at me the wrong way in my lane, im doing 30 mph", "e-scooter"),
+        ("pedestrain crosses from the rigth in front of ego", "pedestrian"),
+        ("a motorbik pulls out from a side road on the left in front of me", "car"),
+    ],
+    ids=["hyphenated", "plain", "vehicle"],
+)
+def test_a_misspelt_road_user_is_found(text, kind):
+    assert kinds(text) == [kind]
+
+
+# --- the narrator's own people are no road users --------------------------------------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Drove my child to nursery this morning, about 30 mph. A cyclist swung out from the left in front of me.",
+        "Our dog was barking in the back, 40 km/h, and a cyclist crossed from the right just ahead of us.",
+        "Taking my toddler to the park, doing 20 mph, a cyclist came out from the kerb on my left.",
+    ],
+    ids=["child", "our-dog", "toddler"],
+)
+def test_the_narrators_own_people_are_no_road_users(text):
+    assert kinds(text) == ["bicycle"]

@@ -1,0 +1,482 @@
+"""Who is who in a description: the ego and the other road users as discourse referents.
+
+People name the same road user in many ways and name things that are no road users at all. Police,
+insurance and radio reports name the ego in the third person ("Car 3 to control", "car versus
+e-scooter ... car doing 20 mph", "Vehicle was turning right"); a rider is named as a person on a
+vehicle ("some lad on a hire scooter": one rider, not a walker and a scooter); a road user is named
+again bare or by a general word ("speed of cyclist 15 km/h", "the front vehicle" after "a coach");
+the narrator's own vehicle, what it carries and who walks beside whom are scenery ("we were in a hire
+car", "van full of tools and a dog", "a woman with her dog").
+
+This module keeps a small model of referents over the reader's words, with the grammar that tells
+new from known: an indefinite article opens a new referent, a definite article, a bare noun or a
+general noun ("vehicle") the most recent compatible one; "X on/riding a Y" is one referent of
+type Y; a vehicle label (a noun and a number) opening a report is the reporter's vehicle, the ego;
+a motor vehicle set against a vulnerable road user in a text that names no ego is the ego. It
+then says each referent the one way the reader reads it ("the ego", "a e-scooter", "the truck"), so
+the reader's actors and the ego's speed follow the referents. Words it takes out (a companion, a
+vehicle's load, a second name of the ego's vehicle) are returned so they are reported as not used.
+
+It knows no content words of its own: which words name road users (and of what type) comes from the
+reader's lexicon through ``kind_at``; what it adds is a few closed classes of function words
+(articles, first-person pronouns, forms of "be").
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+#: ``kind_at(tokens, i)``: the road-user type named by a phrase starting at ``i`` ("ego" for the ego)
+#: and the phrase's length, or None when no road-user phrase starts there.
+KindAt = Callable[[list[str], int], "tuple[str, int] | None"]
+#: ``known(tokens, i)``: whether the reader has any phrase starting at ``i``.
+Known = Callable[[list[str], int], bool]
+
+INDEFINITE = frozenset({"a", "an", "some", "another", "one", "this"})  # ("this guy on a bike": new)
+DEFINITE = frozenset({"the", "that", "these", "those"})
+POSSESSIVE = frozenset({"my", "our", "his", "her", "their", "its", "your"})
+DETERMINERS = INDEFINITE | DEFINITE | POSSESSIVE
+FIRST_PERSON = frozenset({"i", "we", "me", "us", "my", "our"})
+BE = frozenset({"am", "is", "are", "was", "were", "be", "been", "being", "sat", "sitting"})
+PUNCT = frozenset({".", ";", "!", "?", ":", ","})
+SENTENCE_END = frozenset({".", ";", "!", "?", ":"})
+#: Prepositions that join a person to the vehicle it rides ("a lad on a scooter", "a kid astride a bike").
+RIDING = frozenset({"on", "riding", "astride", "aboard"})
+VEHICLES = frozenset({"car", "van", "truck"})
+VULNERABLE = frozenset({"pedestrian", "bicycle", "e-scooter"})
+#: The words a report sets two parties against each other with ("car versus e-scooter").
+VERSUS = frozenset({"versus", "vs", "v"})
+#: Nouns that name any vehicle: a definite one of them is the most recent vehicle named.
+GENERAL_VEHICLE = frozenset({"vehicle", "vehicles"})
+#: The plain noun the reader reads for each type, to say a referent again as the reader reads it.
+NOUN = {"car": "car", "van": "van", "truck": "truck", "bicycle": "cyclist", "e-scooter": "e-scooter",
+        "pedestrian": "pedestrian"}  # fmt: skip
+#: Words of where someone is relative to another, after a vehicle noun ("the car ahead"): that vehicle
+#: is placed relative to the ego, so it is not the ego.
+PLACED = frozenset({"ahead", "behind", "in", "parked", "oncoming", "following", "alongside", "beside", "next"})
+#: Words naming a quantity after a referent ("speed of cyclist 15 km/h").
+SPEED_NOUNS = frozenset({"speed", "velocity"})
+
+
+@dataclass
+class Referent:
+    """One road user (or the ego) as the text names it."""
+
+    kind: str
+    noun: str  # the noun it was last named by
+    names: set[str] = field(default_factory=set)  # names given it in brackets ("the challenger")
+
+
+@dataclass
+class _Phrase:
+    start: int  # its determiner, or its first word
+    head: int  # the road-user phrase
+    end: int  # after it
+    det: str
+    kind: str
+
+
+def _phrase_at(tokens: list[str], i: int, kind_at: KindAt, known: Known, reach: int = 3) -> _Phrase | None:
+    """The noun phrase whose road-user noun starts at ``i``: its determiner (within ``reach`` words
+    before, past modifiers the reader has no phrase for) and its type."""
+    found = kind_at(tokens, i)
+    if found is None:
+        return None
+    kind, n = found
+    start, det = i, ""
+    for j in range(i - 1, max(i - 1 - reach, -1), -1):
+        w = tokens[j]
+        if w in DETERMINERS:
+            start, det = j, w
+            break
+        if w in PUNCT or not w.replace("-", "").isalpha() or known(tokens, j):
+            break
+    return _Phrase(start, i, i + n, det, kind)
+
+
+def _phrases(tokens: list[str], kind_at: KindAt, known: Known) -> list[_Phrase]:
+    out, i = [], 0
+    while i < len(tokens):
+        p = _phrase_at(tokens, i, kind_at, known)
+        if p is None:
+            i += 1
+            continue
+        out.append(p)
+        i = p.end
+    return out
+
+
+def _unknown_person(tokens: list[str], i: int, known: Known) -> int | None:
+    """Where the noun phrase ends at ``i`` begins, when it is a determiner and up to three words the
+    reader has no phrase for ("some lad", "a pizza courier"), else None."""
+    for j in range(i, max(i - 4, -1), -1):
+        if tokens[j] in DETERMINERS:
+            return j if j < i else None
+        if tokens[j] in PUNCT or not tokens[j].replace("-", "").isalpha() or (j < i and known(tokens, j)):
+            return None
+    return None
+
+
+def _riders(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
+    """ "a lad on a scooter", "a student on one of those hire bikes", "a woman riding a bike": one
+    referent of the vehicle's type, said with the person's determiner."""
+    out: list[str] = []
+    i = 0
+    while i < len(tokens):
+        if tokens[i] not in RIDING or not out:
+            out.append(tokens[i])
+            i += 1
+            continue
+        # the person: a walker's noun (or a word the reader lacks) right before the preposition
+        k = len(out) - 1
+        person_start = None
+        for back in range(k, max(k - 3, -1), -1):
+            found = kind_at(out, back)
+            if found is not None and found[0] == "pedestrian" and back + found[1] == k + 1:
+                p = _phrase_at(out, back, kind_at, known)
+                person_start = p.start if p is not None and p.det else None
+                break
+        if person_start is None and not known(out, k):
+            person_start = _unknown_person(out, k, known)
+        if person_start is None or out[person_start] not in DETERMINERS:
+            out.append(tokens[i])
+            i += 1
+            continue
+        # the vehicle: [det | one of those] [up to two modifiers] a rideable noun
+        j = i + 1
+        if tokens[j : j + 3] in (["one", "of", "those"], ["one", "of", "these"], ["one", "of", "the"]):
+            j += 3
+        elif j < len(tokens) and tokens[j] in DETERMINERS:
+            j += 1
+        head = next(
+            (h for h in range(j, min(j + 3, len(tokens))) if kind_at(tokens, h) is not None),
+            None,
+        )
+        ride = kind_at(tokens, head) if head is not None else None
+        between_known = head is not None and any(known(tokens, h) for h in range(j, head))
+        if ride is None or ride[0] in ("pedestrian", "truck", "ego") or between_known:
+            out.append(tokens[i])
+            i += 1
+            continue
+        det = out[person_start]
+        det = "a" if det in INDEFINITE else det
+        out[person_start:] = [det]
+        i = j
+    return out
+
+
+def _companions(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "a woman with her dog": the walker is the road user; the one with it is not, unless it is
+    named again (then it is a referent of its own from there: "the dog" is said "a dog")."""
+    out: list[str] = []
+    companions: set[str] = set()
+    i = 0
+    while i < len(tokens):
+        if tokens[i] in companions and out and out[-1] in DEFINITE | POSSESSIVE:
+            companions.discard(tokens[i])
+            out[-1] = "an" if tokens[i][0] in "aeiou" else "a"
+            out.append(tokens[i])
+            i += 1
+            continue
+        if tokens[i] == "with" and out:
+            before = next((b for b in range(len(out) - 1, max(len(out) - 3, -1), -1) if kind_at(out, b)), None)
+            person = kind_at(out, before) if before is not None else None
+            ends = person is not None and before + person[1] == len(out)
+            j = i + 1
+            if j < len(tokens) and tokens[j] in DETERMINERS:
+                j += 1
+            head = next((h for h in range(j, min(j + 3, len(tokens))) if kind_at(tokens, h) is not None), None)
+            other = kind_at(tokens, head) if head is not None else None
+            if ends and person[0] == "pedestrian" and other is not None and other[0] == "pedestrian":
+                dropped.extend(tokens[j : head + other[1]])
+                companions.add(tokens[head + other[1] - 1])
+                i = head + other[1]
+                continue
+        out.append(tokens[i])
+        i += 1
+    return out
+
+
+def _narrators_people(tokens: list[str], kind_at: KindAt, dropped: list[str]) -> list[str]:
+    """People and animals the narrator calls theirs ("drove my kid to school", "our dog in the back")
+    travel with the ego or stay at home: no road users of the scenario."""
+    out: list[str] = []
+    i = 0
+    while i < len(tokens):
+        if tokens[i] in ("my", "our") and i + 1 < len(tokens):
+            found = kind_at(tokens, i + 1)
+            owner = found is not None and tokens[i + 1 + found[1] : i + 2 + found[1]] == ["'s"]  # ("my mate's car")
+            if found is not None and found[0] == "pedestrian" and not owner:
+                dropped.extend(tokens[i : i + 1 + found[1]])
+                i += 1 + found[1]
+                continue
+        out.append(tokens[i])
+        i += 1
+    return out
+
+
+def _apposition_end(tokens: list[str], i: int, kind_at: KindAt) -> int | None:
+    """Where an apposition starting at ``i`` ends (", a tiny Fiat," / "a battered old Ford"): an
+    indefinite article, up to three words, then a punctuation mark or the end."""
+    j = i + 1 if i < len(tokens) and tokens[i] == "," else i
+    if j >= len(tokens) or tokens[j] not in ("a", "an"):
+        return None
+    for k in range(j + 1, min(j + 5, len(tokens) + 1)):
+        if k == len(tokens) or tokens[k] in PUNCT:
+            found = [kind_at(tokens, h) for h in range(j + 1, k)]
+            if any(f is not None and f[0] not in VEHICLES for f in found):
+                return None  # (", a cyclist, ...": someone else)
+            return k
+        if tokens[k] in ("and", "but", "when", "then", "while") or tokens[k].isdigit():
+            return None
+    return None
+
+
+def _own_vehicle(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """The narrator's vehicle named as a vehicle ("we were in a hire car", "car full of bags") is the
+    ego; a second name of it in apposition is the same; what it is full of is no road user."""
+    first_person = bool(FIRST_PERSON & set(tokens))
+    out = list(tokens)
+    i = 0
+    while i < len(out):
+        p = _phrase_at(out, i, kind_at, known)
+        if p is None or p.kind not in VEHICLES:
+            i += 1
+            continue
+        full = out[p.end : p.end + 2] == ["full", "of"]
+        inside = first_person and p.det in ("a", "an", "my", "our") and p.start > 0 and out[p.start - 1] == "in"
+        if inside:  # "in a hire car" said of the narrator being somewhere ("we were ... in a hire car")
+            j = p.start - 2
+            while j >= 0 and out[j] not in SENTENCE_END and out[j] not in BE:
+                j -= 1
+            inside = j >= 1 and out[j] in BE and out[j - 1] in ("i", "we")
+        if full:
+            k = p.end + 2
+            while k < len(out) and out[k] not in PUNCT:
+                k += 1
+            dropped.extend(out[p.end : k])
+            del out[p.end : k]
+        if inside or (full and first_person and p.det in ("", "my", "our")):
+            dropped.extend(out[p.start : p.end])
+            out[p.start : p.end] = ["the", "ego"]
+            after = p.start + 2
+            end = _apposition_end(out, after, kind_at)
+            if end is not None:
+                dropped.extend(w for w in out[after:end] if w != ",")
+                del out[after:end]
+            i = p.start + 2
+            continue
+        i = p.end
+    return out
+
+
+def _label(tokens: list[str], i: int, kind_at: KindAt) -> int:
+    """The length of a vehicle label at ``i`` ("car 3", "unit 4", "van 12"), or 0: a vehicle noun or
+    "unit" with no determiner, then a number that no unit follows."""
+    if i + 1 >= len(tokens) or not tokens[i + 1].isdigit():
+        return 0
+    if i and tokens[i - 1] in DETERMINERS:
+        return 0
+    after = tokens[i + 2] if i + 2 < len(tokens) else ""
+    if after in ("m", "km/h", "mph", "m/s", "s", "%", "metres", "meters", "lanes", "lane", ":", "pm", "am"):
+        return 0
+    found = kind_at(tokens, i)
+    if tokens[i] == "unit" or (found is not None and found[0] in VEHICLES and found[1] == 1):
+        return 2
+    return 0
+
+
+def _call_sign(tokens: list[str], kind_at: KindAt) -> list[str]:
+    """A vehicle label opening a report ("Car 3 to control, ...", "Unit 4, ...") is the reporter's
+    vehicle: the ego (the first vehicle label of a narrative is the ego), and so is the label again."""
+    if any(t == "ego" for t in tokens):
+        return tokens
+    start = 0
+    while start < len(tokens) and tokens[start] in PUNCT:
+        start += 1
+    n = _label(tokens, start, kind_at)
+    if not n:
+        return tokens
+    label = tokens[start : start + n]
+    out, i = tokens[:start], start
+    while i < len(tokens):
+        if tokens[i : i + n] == label and (i == 0 or tokens[i - 1] not in DETERMINERS):
+            out += ["the", "ego"]
+            i += n
+        else:
+            out.append(tokens[i])
+            i += 1
+    return out
+
+
+def _ego_unnamed(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
+    """A text that names no ego, with a vulnerable road user and one motor vehicle named only bare or
+    with "the" ("car versus e-scooter ... car doing about 20 mph", "Vehicle was turning right ...,
+    pedestrian crossing"): that vehicle is the one the report is told from, the ego. A vehicle placed
+    relative to something ("the car ahead", "parked cars") or named with "a" is another road user."""
+    if any(t == "ego" or t in FIRST_PERSON for t in tokens):
+        return tokens
+    phrases = _phrases(tokens, kind_at, known)
+    if not any(p.kind in VULNERABLE for p in phrases):
+        return tokens
+    motor = [p for p in phrases if p.kind in VEHICLES]
+    if not motor:
+        return tokens
+    nouns = {" ".join(tokens[p.head : p.end]) for p in motor}
+    versus = any(
+        (p.end < len(tokens) and tokens[p.end] in VERSUS) or (p.start and tokens[p.start - 1] in VERSUS) for p in motor
+    )
+    if len(nouns) != 1 or not (versus or nouns <= {"car", "vehicle"}):
+        return tokens
+    for p in motor:
+        if p.det not in ("", "the") or p.end - p.head != 1:
+            return tokens
+        after = tokens[p.end] if p.end < len(tokens) else ""
+        before = tokens[p.start - 1] if p.start else ""
+        if after in PLACED or before in PLACED or before in ("between", "behind") or after in ("s", "park"):
+            return tokens
+    out = list(tokens)
+    for p in reversed(motor):
+        out[p.start : p.end] = ["the", "ego"]
+    return out
+
+
+def _brackets(tokens: list[str], kind_at: KindAt, known: Known, names: dict[str, str], dropped: list[str]) -> list[str]:
+    """Brackets go; a name given a road user in them ("a passenger car (the challenger)") is kept as a
+    name of that referent, and the bracket is not read as a second road user."""
+    out: list[str] = []
+    i = 0
+    while i < len(tokens):
+        if tokens[i] == "(":
+            close = next((k for k in range(i + 1, min(i + 6, len(tokens))) if tokens[k] == ")"), None)
+            inner = tokens[i + 1 : close] if close is not None else []
+            words = [w for w in inner if w not in DEFINITE]
+            last = next((b for b in range(len(out) - 1, max(len(out) - 3, -1), -1) if kind_at(out, b)), None)
+            kind = kind_at(out, last) if last is not None else None
+            naming = (  # ("(the challenger)", "(the obstacle)": a definite name of the one just named)
+                kind is not None
+                and kind[0] != "ego"
+                and last + kind[1] == len(out)
+                and inner[:1] == ["the"]
+                and len(words) == 1
+                and words[0].isalpha()
+                and kind_at(words, 0) in (None, (kind[0], 1), ("car", 1))  # (a general noun: "obstacle")
+            )
+            if naming:
+                names[words[0]] = NOUN.get(kind[0], kind[0])
+                dropped.extend(inner)
+                i = close + 1
+                continue
+        if tokens[i] not in ("(", ")"):
+            out.append(tokens[i])
+        i += 1
+    return out
+
+
+def _named_speeds(tokens: list[str], kind_at: KindAt, known: Known, names: dict[str, str]) -> list[str]:
+    """ "speed of cyclist 15 km/h", "velocity of the bus: 10 km/h", "challenger speed 90 km/h": the
+    speed of the referent named, said as the reader reads a road user's speed ("the cyclist at ...")."""
+    out: list[str] = []
+    i = 0
+    while i < len(tokens):
+        t = tokens[i]
+        if t in SPEED_NOUNS and i + 1 < len(tokens) and tokens[i + 1] == "of":
+            j = i + 2 + (tokens[i + 2] in DEFINITE if i + 2 < len(tokens) else 0)
+            found = kind_at(tokens, j) if j < len(tokens) else None
+            named = j < len(tokens) and tokens[j] in names
+            noun = tokens[j : j + found[1]] if found else [names[tokens[j]]] if named else None
+            k = j + (found[1] if found else 1)
+            k += k < len(tokens) and tokens[k] in ("is", "was", ":", "=")
+            if noun is not None and k < len(tokens) and tokens[k].replace(".", "").isdigit():
+                if noun == ["ego"]:
+                    out += ["the", "ego", "drives", "at"]
+                else:
+                    out += ["the", *noun, "at"]
+                i = k
+                continue
+        if t in names and i + 1 < len(tokens) and tokens[i + 1] in SPEED_NOUNS:
+            k = i + 2 + (i + 2 < len(tokens) and tokens[i + 2] in ("is", "was", ":", "="))
+            if k < len(tokens) and tokens[k].replace(".", "").isdigit():
+                if out and out[-1] in DEFINITE:
+                    out.pop()
+                out += ["the", names[t], "at"]
+                i = k
+                continue
+        if t in names and out and out[-1] in DEFINITE:
+            out.append(names[t])
+            i += 1
+            continue
+        out.append(t)
+        i += 1
+    return out
+
+
+#: Words that set a road user apart from one of its type already named ("the other car", "a second cyclist").
+OTHER = frozenset({"other", "second", "third", "fourth", "next", "another", "different", "further"})
+
+
+def _mentions_again(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
+    """A road user named again with "the" is the most recent one of its type, said as the reader reads
+    a known one: "the" right before its noun ("the silver hatchback" → "the hatchback"); a definite
+    general noun ("the front vehicle") is the most recent vehicle, said by its type ("the truck" after
+    "a coach"); a vehicle named again in apposition (", a coach,") is the same one, more exactly."""
+    out = list(tokens)
+    referents: list[Referent] = []
+    i, last_end = 0, -1
+    while i < len(out):
+        p = _phrase_at(out, i, kind_at, known)
+        if p is None:
+            i += 1
+            continue
+        noun = " ".join(out[p.head : p.end])
+        general = out[p.end - 1] in GENERAL_VEHICLE and p.kind == "car"
+        apposition = (
+            referents
+            and p.det in ("a", "an")
+            and p.start
+            and out[p.start - 1] == ","
+            and p.end < len(out)
+            and out[p.end] == ","
+            and last_end == p.start - 1
+        )
+        apart = any(w in OTHER for w in out[p.start : p.head])
+        if p.kind == "ego":
+            pass
+        elif apposition and p.kind in VEHICLES and referents[-1].kind in VEHICLES:
+            referents[-1].kind = p.kind if referents[-1].kind == "car" else referents[-1].kind
+        elif p.det == "the" and not apart and referents:
+            if general:
+                same = next((r for r in reversed(referents) if r.kind in VEHICLES), None)
+            else:
+                same = next((r for r in reversed(referents) if r.kind == p.kind), None)
+            if same is not None and (p.head > p.start + 1 or (general and same.kind != "car")):
+                said = [NOUN[same.kind]] if general else out[p.head : p.end]
+                out[p.start : p.end] = ["the", *said]
+                last_end = p.start + 1 + len(said)
+                i = last_end
+                continue
+            if same is None:
+                referents.append(Referent(p.kind, noun))
+        elif p.det in INDEFINITE or not referents or p.det == "":
+            referents.append(Referent(p.kind, noun))
+        last_end = p.end
+        i = p.end
+    return out
+
+
+def resolve(tokens: list[str], kind_at: KindAt, known: Known) -> tuple[list[str], list[str]]:
+    """``tokens`` with every road user said the one way the reader reads it (see the module's
+    docstring), and the words taken out (to be reported as not used)."""
+    dropped: list[str] = []
+    names: dict[str, str] = {}
+    tokens = _brackets(tokens, kind_at, known, names, dropped)
+    tokens = _call_sign(tokens, kind_at)
+    tokens = _riders(tokens, kind_at, known)
+    tokens = _companions(tokens, kind_at, known, dropped)
+    tokens = _own_vehicle(tokens, kind_at, known, dropped)
+    tokens = _narrators_people(tokens, kind_at, dropped)
+    tokens = _ego_unnamed(tokens, kind_at, known)
+    tokens = _named_speeds(tokens, kind_at, known, names)
+    tokens = _mentions_again(tokens, kind_at, known)
+    return tokens, dropped
