@@ -176,3 +176,74 @@ def test_a_misspelt_road_user_is_found(text, kind):
 )
 def test_the_narrators_own_people_are_no_road_users(text):
     assert kinds(text) == ["bicycle"]
+
+
+# --- a second name of the ego is the ego -----------------------------------------------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Vehicle 1 (V1), a Skoda Octavia, was travelling at 30 mph when a cyclist crossed from the left ahead of V1.",
+        "The ego, a small hatchback, drives at 40 km/h; a pedestrian steps out from the right in front of it.",
+        "V1, a blue Vauxhall, was proceeding at 20 mph. A pedestrian walked out from the nearside kerb ahead of V1.",
+        "The subject vehicle, an estate car, travels at 50 km/h; a cyclist crosses from the left in front of it.",
+    ],
+    ids=["code-and-bracket", "ego", "code", "subject-vehicle"],
+)
+def test_a_second_name_of_the_ego_is_the_ego(text):
+    assert len(read(text).actors) == 1
+
+
+# --- passengers ride inside the ego ----------------------------------------------------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Heading home with the twins squabbling in the back seat, doing 30 mph, when a cyclist cut across from the left.",
+        "I had the dog in the boot, about 40 km/h, and a cyclist came out from the right just ahead of me.",
+        "Grandma chatting on the passenger seat, 30 mph, when a cyclist rode out from the kerb on my left.",
+        "Two kids arguing in the back seat, 20 mph, and a cyclist came out from the right in front of me.",
+        "Kids singing in the back, 25 mph, a cyclist swung out from the kerb on my left in front of me.",
+    ],
+    ids=["back-seat", "boot", "passenger-seat", "two-kids", "back"],
+)
+def test_people_inside_the_ego_are_no_road_users(text):
+    assert kinds(text) == ["bicycle"]
+
+
+# --- a bare noun after a preposition names again the one of its type ----------------------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("Cyclist rides along the kerb ahead, 15 km/h. Ego stays behind cyclist, no overtake.", ["bicycle"]),
+        ("Actor: a van ahead at 40 km/h. Ego: 50 km/h, closes up to van and brakes.", ["van"]),
+        ("Walker on the left verge ahead. Ego passes walker wide at 30 km/h.", ["pedestrian"]),
+    ],
+    ids=["behind", "to", "passes"],
+)
+def test_a_bare_noun_after_a_preposition_is_the_one_named_before(text, expected):
+    assert kinds(text) == expected
+
+
+# --- the other party of a statement, named by its code twice, then in apposition --------------------------
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        (
+            "Vehicle 1 (V1) was travelling at 30 mph. Vehicle 2 (V2), a Mercedes Sprinter van, pulled out from "
+            "a side road on the left into the path of V1.",
+            "van",
+        ),
+        (
+            "Unit 1 was doing 40 km/h. Unit 2 (U2), a Scania lorry, emerged from the junction on the right ahead "
+            "of Unit 1.",
+            "truck",
+        ),
+        (
+            "V1 was proceeding at 20 mph. Vehicle 3 (V3), a Honda motorcycle, came out of a side road on the "
+            "right in front of V1.",
+            "car",
+        ),
+    ],
+    ids=["van", "lorry", "motorcycle"],
+)
+def test_the_other_party_named_by_code_and_apposition_is_one_road_user(text, kind):
+    assert kinds(text) == [kind]

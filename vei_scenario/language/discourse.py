@@ -216,9 +216,10 @@ def _narrators_people(tokens: list[str], kind_at: KindAt, dropped: list[str]) ->
     return out
 
 
-def _apposition_end(tokens: list[str], i: int, kind_at: KindAt) -> int | None:
+def _apposition_end(tokens: list[str], i: int, kind_at: KindAt, known: Known) -> int | None:
     """Where an apposition starting at ``i`` ends (", a tiny Fiat," / "a battered old Ford"): an
-    indefinite article, up to three words, then a punctuation mark or the end."""
+    indefinite article, up to three words that are vehicle nouns or words the reader has no phrase
+    for, then a punctuation mark or the end."""
     j = i + 1 if i < len(tokens) and tokens[i] == "," else i
     if j >= len(tokens) or tokens[j] not in ("a", "an"):
         return None
@@ -227,9 +228,9 @@ def _apposition_end(tokens: list[str], i: int, kind_at: KindAt) -> int | None:
             found = [kind_at(tokens, h) for h in range(j + 1, k)]
             if any(f is not None and f[0] not in VEHICLES for f in found):
                 return None  # (", a cyclist, ...": someone else)
-            return k
-        if tokens[k] in ("and", "but", "when", "then", "while") or tokens[k].isdigit():
-            return None
+            return k if any(f is not None for f in found) or k > j + 1 else None
+        if not tokens[k].replace("-", "").isalpha() or (known(tokens, k) and kind_at(tokens, k) is None):
+            return None  # (", a car ahead brakes": a clause of its own)
     return None
 
 
@@ -261,11 +262,60 @@ def _own_vehicle(tokens: list[str], kind_at: KindAt, known: Known, dropped: list
             dropped.extend(out[p.start : p.end])
             out[p.start : p.end] = ["the", "ego"]
             after = p.start + 2
-            end = _apposition_end(out, after, kind_at)
+            end = _apposition_end(out, after, kind_at, known)
             if end is not None:
                 dropped.extend(w for w in out[after:end] if w != ",")
                 del out[after:end]
             i = p.start + 2
+            continue
+        i = p.end
+    return out
+
+
+def _ego_apposition(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "the ego, an estate car, travels ...", "Vehicle 1 (V1), a Ford Focus, ...": a vehicle said in
+    apposition to the ego is the ego, no second road user."""
+    out = list(tokens)
+    i = 0
+    while i + 1 < len(out):
+        if out[i : i + 2] == ["the", "ego"] and i + 2 < len(out) and out[i + 2] == ",":
+            end = _apposition_end(out, i + 2, kind_at, known)
+            if end is not None:
+                dropped.extend(out[i + 3 : end])
+                del out[i + 2 : end]
+        i += 1
+    return out
+
+
+#: The places inside a vehicle where passengers and pets ride ("in the back", "on the back seat",
+#: "in the boot", "in a carrier"): someone there travels with the ego, no road user.
+INTERIOR = frozenset({"back", "boot", "trunk", "seat", "seats", "carrier", "footwell", "cage", "crate"})
+
+
+def _passengers(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """People and animals said to be inside the vehicle ("kids bickering in the back", "the cat in a
+    carrier on the back seat") travel with the ego: no road users."""
+    out = list(tokens)
+    i = 0
+    while i < len(out):
+        p = _phrase_at(out, i, kind_at, known)
+        if p is None or p.kind != "pedestrian":
+            i += 1
+            continue
+        inside = False
+        for k in range(p.end, min(p.end + 3, len(out))):
+            if out[k] in PUNCT:
+                break
+            if out[k] in ("in", "on"):
+                rest = out[k + 1 : k + 5]
+                stop = next((n for n, w in enumerate(rest) if w in PUNCT), len(rest))
+                inside = any(w in INTERIOR for w in rest[:stop][:3])
+                break
+        if inside and (p.det in DEFINITE or p.det == "" or p.det in POSSESSIVE or p.det in ("a", "an")):
+            start = p.start - (p.start > 0 and out[p.start - 1].isdigit())
+            dropped.extend(out[start : p.end])
+            del out[start : p.end]
+            i = start
             continue
         i = p.end
     return out
@@ -458,11 +508,39 @@ def _mentions_again(tokens: list[str], kind_at: KindAt, known: Known) -> list[st
                 continue
             if same is None:
                 referents.append(Referent(p.kind, noun))
+        elif p.det == "" and referents and _bare_again(out, p, referents, kind_at):
+            out.insert(p.start, "the")  # ("... ego stays behind cyclist": the cyclist named before)
+            last_end = p.end + 1
+            i = p.end + 1
+            continue
         elif p.det in INDEFINITE or not referents or p.det == "":
             referents.append(Referent(p.kind, noun))
         last_end = p.end
         i = p.end
     return out
+
+
+def _singular(word: str) -> bool:
+    from lemminflect import getAllLemmas
+
+    lemmas = getAllLemmas(word).get("NOUN")
+    return not lemmas or word in lemmas
+
+
+def _bare_again(tokens: list[str], p: _Phrase, referents: list[Referent], kind_at: KindAt) -> bool:
+    """Whether a bare singular noun inside a clause ("behind cyclist", "passes walker") names again the
+    one of its type named before (a bare noun opening a clause the reader takes so already)."""
+    before = tokens[p.start - 1] if p.start else ""
+    if p.head != p.start or before in PUNCT or before == "" or before.isdigit() or before in OTHER:
+        return False
+    for j in range(p.start - 1, max(p.start - 4, -1), -1):  # ("a stationary car": its article before
+        if tokens[j] in DETERMINERS:  # a word the reader knows; "the ego passes walker": another's)
+            return False
+        if tokens[j] in PUNCT or kind_at(tokens, j) is not None:
+            break
+    if before in ("and", "or", "versus", "vs", "v", "of") or not _singular(tokens[p.end - 1]):
+        return False  # ("a cyclist and pedestrian", "car versus cyclist": a list; "groups of cyclists")
+    return p.kind != "ego" and any(r.kind == p.kind for r in referents)
 
 
 def resolve(tokens: list[str], kind_at: KindAt, known: Known) -> tuple[list[str], list[str]]:
@@ -476,6 +554,8 @@ def resolve(tokens: list[str], kind_at: KindAt, known: Known) -> tuple[list[str]
     tokens = _companions(tokens, kind_at, known, dropped)
     tokens = _own_vehicle(tokens, kind_at, known, dropped)
     tokens = _narrators_people(tokens, kind_at, dropped)
+    tokens = _passengers(tokens, kind_at, known, dropped)
+    tokens = _ego_apposition(tokens, kind_at, known, dropped)
     tokens = _ego_unnamed(tokens, kind_at, known)
     tokens = _named_speeds(tokens, kind_at, known, names)
     tokens = _mentions_again(tokens, kind_at, known)

@@ -111,6 +111,8 @@ _APPOSITION = re.compile(
 )
 
 
+#: A party's code said again in brackets after its name ("Vehicle 2 (V2)"): the apposition follows it.
+_CODE_AGAIN = re.compile(r"\s*\(\s*[a-z]{1,3}\s*-?\s*[2-9]\s*\)")
 #: What follows a call sign opening a radio report ("Unit 4 to control", "Car 12 calling base").
 _CALLING = re.compile(r"\s*,?\s*(?:to|calling|for)\b")
 
@@ -121,6 +123,8 @@ def _other_parties(text: str, known_noun) -> str:
     names: dict[str, str] = {}
     out, pos = [], 0
     for m in _OTHER.finditer(text):
+        if m.start() < pos:
+            continue  # (inside what was read already: "(V2)" after "Vehicle 2")
         if not text[: m.start()].strip(" -*,.") and _CALLING.match(text, m.end()):
             continue  # "Unit 4 to control, ...": the caller's own vehicle (read as the ego by discourse)
         code = m.group(1) or m.group(2) or m.group(0).split()[-1]
@@ -136,7 +140,10 @@ def _other_parties(text: str, known_noun) -> str:
         if code in names:
             out.append(f"the {names[code]}")
             continue
-        app = _APPOSITION.match(text, m.end())
+        code_again = _CODE_AGAIN.match(text, m.end())  # ("Vehicle 2 (V2), a Ford Transit van, ...")
+        if code_again is not None:
+            pos = code_again.end()
+        app = _APPOSITION.match(text, pos)
         if app is not None:
             phrase = app.group(1) or app.group(2)
             noun = known_noun(phrase)
