@@ -197,7 +197,7 @@ def test_a_second_name_of_the_ego_is_the_ego(text):
 @pytest.mark.parametrize(
     "text",
     [
-        "Heading home with the twins squabbling in the back seat, doing 30 mph, when a cyclist cut across from the left.",
+        "Heading home with the twins squabbling in the back seat, 30 mph, when a cyclist cut across from the left.",
         "I had the dog in the boot, about 40 km/h, and a cyclist came out from the right just ahead of me.",
         "Grandma chatting on the passenger seat, 30 mph, when a cyclist rode out from the kerb on my left.",
         "Two kids arguing in the back seat, 20 mph, and a cyclist came out from the right in front of me.",
