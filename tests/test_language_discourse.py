@@ -247,3 +247,71 @@ def test_a_bare_noun_after_a_preposition_is_the_one_named_before(text, expected)
 )
 def test_the_other_party_named_by_code_and_apposition_is_one_road_user(text, kind):
     assert kinds(text) == [kind]
+
+
+# --- who arrives after the collision is no road user of the scenario ---------------------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist shot out from the left and I hit him at 20 mph. He was fine by the time the ambulance came.",
+        "We were doing 30 mph when a pedestrian stepped out from the right and we struck her; the bus driver behind "
+        "us stopped to help.",
+        "A cyclist came across from the right at the lights and we collided at 25 km/h. The police car pulled up "
+        "behind us ten minutes later.",
+    ],
+    ids=["van-came", "bus-driver", "police-car"],
+)
+def test_who_arrives_after_the_collision_is_no_road_user(text):
+    assert len(read(text).actors) == 1
+
+
+# --- a log line's clock does not hide the road user after it ----------------------------------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("09:10 ego drives off at 40 km/h\n09:11 van ahead at 30 m brakes hard", ["van"]),
+        ("16:05 ego on the ring road, 60 km/h\n16:06 cyclist crosses from the left", ["bicycle"]),
+        ("07:45 ego at 30 mph\n07:46 pedestrian steps out from the right\n07:46 ego brakes", ["pedestrian"]),
+    ],
+    ids=["van", "cyclist", "pedestrian"],
+)
+def test_a_clock_at_the_start_of_a_line_hides_no_road_user(text, expected):
+    assert kinds(text) == expected
+
+
+# --- lettered and numbered labels name referents --------------------------------------------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        (
+            "ego: 50 km/h\nactor A: van cuts in ahead of ego because of actor B\nactor B: truck in the left lane, "
+            "steady speed",
+            ["van", "truck"],
+        ),
+        (
+            "ego at 40 km/h\nparticipant 1: cyclist crosses from the right\nparticipant 2: oncoming car keeps going",
+            ["bicycle", "car"],
+        ),
+        (
+            "ego: 30 mph\nobject C: pedestrian steps out from the left\nobject D: parked van, does nothing",
+            ["pedestrian", "van"],
+        ),
+    ],
+    ids=["actor-letters", "participant-numbers", "object-letters"],
+)
+def test_labels_name_referents(text, expected):
+    assert sorted(kinds(text)) == sorted(expected)
+
+
+# --- a road user named as a field of a list is the subject of what follows ----------------------------
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("cyclist: comes out from the kerb on the left, then rides ahead at 15 km/h. ego: 30 km/h.", "bicycle"),
+        ("pedestrian: steps out from the right 20 m ahead. ego: 40 km/h. time: night.", "pedestrian"),
+        ("van: pulls out of a side road on the left. ego: 50 km/h. weather: rain.", "van"),
+    ],
+    ids=["cyclist", "pedestrian", "van"],
+)
+def test_a_road_user_as_a_field_name_is_the_subject(text, kind):
+    assert kinds(text) == [kind]

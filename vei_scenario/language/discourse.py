@@ -321,6 +321,90 @@ def _passengers(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[
     return out
 
 
+#: Verbs of contact: after a clause that says the collision, someone named for the first time arrives
+#: in its aftermath ("the ambulance came", "the bus driver behind us stopped to help").
+CONTACT = frozenset({"hit", "strike", "collide", "clip", "crash", "smash", "knock", "tag", "rear-end", "plough"})
+
+
+def _lemma_in(word: str, lemmas: frozenset[str]) -> bool:
+    from lemminflect import getAllLemmas
+
+    return word in lemmas or any(x in lemmas for forms in getAllLemmas(word).values() for x in forms)
+
+
+PRONOUNS = frozenset({"him", "her", "it", "them", "us", "me", "he", "she", "they", "we", "i"})
+
+
+def _hits_someone(tokens: list[str], k: int, kind_at: KindAt) -> bool:
+    """Whether the contact verb at ``k`` says a collision: a road user or a pronoun next to it ("we hit
+    him", "struck the cyclist", "he and I collided"), or a verb that needs none ("we collided"); not
+    "hit the brakes"."""
+    if _lemma_in(tokens[k], frozenset({"collide", "crash"})):
+        return True
+    for j in range(k + 1, min(k + 4, len(tokens))):
+        if tokens[j] in PUNCT:
+            break
+        if tokens[j] in PRONOUNS or kind_at(tokens, j) is not None:
+            return True
+    return False
+
+
+def _aftermath(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """Road users first named with "the" (or bare) after the sentence that says the collision ("We hit
+    him; he was talking when the ambulance came", "the bloke from the chippy came out") come in its
+    aftermath: no road users of the scenario. One named with "a" or one already named before stays."""
+    contact = next(
+        (k for k, w in enumerate(tokens) if _lemma_in(w, CONTACT) and _hits_someone(tokens, k, kind_at)), None
+    )
+    if contact is None:
+        return tokens
+    end = next((k for k in range(contact, len(tokens)) if tokens[k] in (".", ";", "!", "?")), None)
+    if end is None:
+        return tokens
+    before = {p.kind for p in _phrases(tokens[:end], kind_at, known)}
+    out = tokens[: end + 1]
+    i = end + 1
+    while i < len(tokens):
+        p = _phrase_at(tokens, i, kind_at, known)
+        if p is None or p.kind in before or p.kind == "ego" or p.det not in ("the", ""):
+            out.append(tokens[i])
+            i += 1
+            continue
+        if p.start < i:  # (its article and modifiers were copied already)
+            del out[len(out) - (i - p.start) :]
+        dropped.extend(tokens[p.start : p.end])
+        i = p.end
+    return out
+
+
+def _field_names(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
+    """A road user as the name of a field ("cyclist: comes out from the left kerb", "van: 30 m ahead")
+    is the subject of the field's value: "a cyclist comes out ..." ("the" if one was named before). A
+    field whose value names a road user ("Target: cyclist") is left as it is."""
+    out: list[str] = []
+    seen: set[str] = set()
+    i = 0
+    while i < len(tokens):
+        opens = not out or out[-1] in SENTENCE_END
+        found = kind_at(tokens, i) if opens else None
+        if found is not None and found[0] != "ego" and tokens[i + found[1] : i + found[1] + 1] == [":"]:
+            j = i + found[1] + 1
+            value = tokens[j] if j < len(tokens) else ""
+            said = value.replace(".", "").isdigit() or (
+                value not in DETERMINERS and known(tokens, j) and kind_at(tokens, j) is None
+            )
+            if said:
+                out += ["the" if found[0] in seen else "a", *tokens[i : i + found[1]]]
+                seen.add(found[0])
+                i = j
+                continue
+        if found is not None:
+            seen.add(found[0])
+        out.append(tokens[i])
+        i += 1
+    return out
+
+
 def _label(tokens: list[str], i: int, kind_at: KindAt) -> int:
     """The length of a vehicle label at ``i`` ("car 3", "unit 4", "van 12"), or 0: a vehicle noun or
     "unit" with no determiner, then a number that no unit follows."""
@@ -550,12 +634,14 @@ def resolve(tokens: list[str], kind_at: KindAt, known: Known) -> tuple[list[str]
     names: dict[str, str] = {}
     tokens = _brackets(tokens, kind_at, known, names, dropped)
     tokens = _call_sign(tokens, kind_at)
+    tokens = _field_names(tokens, kind_at, known)
     tokens = _riders(tokens, kind_at, known)
     tokens = _companions(tokens, kind_at, known, dropped)
     tokens = _own_vehicle(tokens, kind_at, known, dropped)
     tokens = _narrators_people(tokens, kind_at, dropped)
     tokens = _passengers(tokens, kind_at, known, dropped)
     tokens = _ego_apposition(tokens, kind_at, known, dropped)
+    tokens = _aftermath(tokens, kind_at, known, dropped)
     tokens = _ego_unnamed(tokens, kind_at, known)
     tokens = _named_speeds(tokens, kind_at, known, names)
     tokens = _mentions_again(tokens, kind_at, known)

@@ -428,7 +428,9 @@ def _number(tokens: list[str], i: int) -> tuple[str, float, int] | None:
     if nxt in ("s", "sec", "seconds", "second", "g", "%", "deg", "degrees", "kg", "km"):
         return "skip", value, 2
     if nxt in (":", "am", "pm", "hrs", "hours", "o'clock", "oclock"):  # ("about 6 pm", "at 07:50"): a time of day
-        return "skip", value, 4 if nxt == ":" and i + 2 < len(tokens) and tokens[i + 2].isdigit() else 2
+        if nxt == ":" and i + 2 < len(tokens) and tokens[i + 2].isdigit():  # ("07:50", "07:50 hrs"; not what follows)
+            return "skip", value, 4 if tokens[i + 3 : i + 4] in (["hrs"], ["hours"], ["am"], ["pm"]) else 3
+        return "skip", value, 2
     if nxt in ("to", "-") and i + 3 < len(tokens) and re.fullmatch(r"\d+(?:\.\d+)?", tokens[i + 2]):
         unit = tokens[i + 3]
         if unit in V.SPEED_UNITS:  # "from 50 to 20 km/h": the speed, then the one it goes to
