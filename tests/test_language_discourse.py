@@ -296,8 +296,13 @@ def test_a_clock_at_the_start_of_a_line_hides_no_road_user(text, expected):
             "ego: 30 mph\nobject C: pedestrian steps out from the left\nobject D: parked van, does nothing",
             ["pedestrian", "van"],
         ),
+        (
+            "ego: 40 mph\nactor A: motorcycle overtakes ego on the bend, cuts back in because of actor B\n"
+            "actor B: oncoming car, keeps going",
+            ["car", "car"],
+        ),
     ],
-    ids=["actor-letters", "participant-numbers", "object-letters"],
+    ids=["actor-letters", "participant-numbers", "object-letters", "two-of-one-type"],
 )
 def test_labels_name_referents(text, expected):
     assert sorted(kinds(text)) == sorted(expected)

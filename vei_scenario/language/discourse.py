@@ -405,6 +405,47 @@ def _field_names(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
     return out
 
 
+def _letter_labels(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """Labels of a list ("actor A: motorbike overtakes ...", "participant 2: oncoming car"): a word and
+    a letter or number opening a line before a colon name the road user the line names, a new one
+    ("a motorbike"); the label said elsewhere is that one ("the car"), or, before the line that
+    defines it, a reference to one not yet placed (left out)."""
+    defined: dict[tuple[str, str], tuple[int, str]] = {}  # label -> (where defined, its noun)
+    for s in range(len(tokens) - 2):
+        opens = s == 0 or tokens[s - 1] in SENTENCE_END
+        w, letter = tokens[s], tokens[s + 1]
+        is_label = (len(letter) == 1 and letter.isalpha()) or letter.isdigit()
+        if opens and is_label and tokens[s + 2] == ":" and w.isalpha() and w != "ego":
+            end = next((k for k in range(s + 3, len(tokens)) if tokens[k] in SENTENCE_END), len(tokens))
+            first = next((p for p in _phrases(tokens[s + 3 : end], kind_at, known) if p.kind != "ego"), None)
+            if first is not None:
+                defined[(w, letter)] = (s, NOUN.get(first.kind, first.kind))
+    if not defined:
+        return tokens
+    out: list[str] = []
+    i = 0
+    while i < len(tokens):
+        label = (tokens[i], tokens[i + 1]) if i + 1 < len(tokens) else None
+        if label in defined:
+            where, noun = defined[label]
+            if i == where:  # the definition: the road user it names is a new one ("an oncoming car")
+                i += 3
+                end = next((k for k in range(i, len(tokens)) if tokens[k] in SENTENCE_END), len(tokens))
+                first = next((p for p in _phrases(tokens[i:end], kind_at, known) if p.kind != "ego"), None)
+                if first is not None and not first.det and first.start <= 2:  # (past "oncoming", "parked")
+                    out.append("an" if tokens[i][0] in "aeiou" else "a")
+                continue
+            if i > where:
+                out += ["the", noun]
+            else:
+                dropped.extend(tokens[i : i + 2])
+            i += 2
+            continue
+        out.append(tokens[i])
+        i += 1
+    return out
+
+
 def _label(tokens: list[str], i: int, kind_at: KindAt) -> int:
     """The length of a vehicle label at ``i`` ("car 3", "unit 4", "van 12"), or 0: a vehicle noun or
     "unit" with no determiner, then a number that no unit follows."""
@@ -634,6 +675,7 @@ def resolve(tokens: list[str], kind_at: KindAt, known: Known) -> tuple[list[str]
     names: dict[str, str] = {}
     tokens = _brackets(tokens, kind_at, known, names, dropped)
     tokens = _call_sign(tokens, kind_at)
+    tokens = _letter_labels(tokens, kind_at, known, dropped)
     tokens = _field_names(tokens, kind_at, known)
     tokens = _riders(tokens, kind_at, known)
     tokens = _companions(tokens, kind_at, known, dropped)
