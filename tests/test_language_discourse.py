@@ -320,3 +320,31 @@ def test_labels_name_referents(text, expected):
 )
 def test_a_road_user_as_a_field_name_is_the_subject(text, kind):
     assert kinds(text) == [kind]
+
+
+# --- a name no dictionary knows, as what the ego follows, is a vehicle -----------------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was following a red Corsa at 30 mph through the village when it braked hard for no reason.",
+        "We were tailing a Qashqai at about 40 km/h and it suddenly stopped dead in front of us.",
+        "Following a grey Octavia on the ring road at 50 km/h, it slammed on its brakes.",
+    ],
+    ids=["corsa", "qashqai", "octavia"],
+)
+def test_a_name_the_ego_follows_is_a_vehicle(text):
+    assert kinds(text) == ["car"]
+
+
+# --- the ego named as a car, then the car said bare, is the ego ------------------------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "ego car drive 50 km/h, one cyclist come from right and cross, car is brake hard",
+        "my car go 40 km/h on small road, pedestrian walk out from left side, car not stop in time",
+        "ego vehicle at 30 km/h, e-scooter cross from the right, vehicle is hit him",
+    ],
+    ids=["brake", "not-stop", "hit"],
+)
+def test_the_ego_named_as_a_car_and_then_bare_is_the_ego(text):
+    assert len(read(text).actors) == 1

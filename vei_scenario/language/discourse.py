@@ -446,6 +446,44 @@ def _letter_labels(tokens: list[str], kind_at: KindAt, known: Known, dropped: li
     return out
 
 
+#: The closed class of prepositions and conjunctions that end a noun phrase ("a Corsa at 30 mph").
+PREPOSITIONS = frozenset(
+    "at on in through along down up with when and but for from to into past by near around as while behind "
+    "ahead across over of then so because".split()
+)
+#: Verbs whose object is a road user ("following a Corsa", "tailing a Qashqai", "overtook a Prius").
+FOLLOWING = frozenset({"follow", "tail", "overtake", "trail"})
+
+
+def _in_no_dictionary(word: str) -> bool:
+    from lemminflect import getAllLemmas
+
+    return word.isalpha() and not getAllLemmas(word)
+
+
+def _followed_names(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
+    """What the ego follows or overtakes, named by a name no dictionary knows ("following a silver
+    Astra", "tailing a Qashqai"), is a vehicle: a make or model; said with "car" after it, as the
+    reader reads "a silver Astra car"."""
+    out: list[str] = []
+    i = 0
+    while i < len(tokens):
+        out.append(tokens[i])
+        if _lemma_in(tokens[i], FOLLOWING) and i + 2 < len(tokens) and tokens[i + 1] in ("a", "an"):
+            j = i + 2
+            while j < i + 5 and j < len(tokens) and tokens[j].isalpha() and tokens[j] not in PREPOSITIONS:
+                if kind_at(tokens, j) is not None:
+                    break  # ("following a grey car": a road user the reader knows)
+                j += 1
+            ends = j == len(tokens) or tokens[j] in PREPOSITIONS or tokens[j] in PUNCT
+            if j > i + 2 and ends and _in_no_dictionary(tokens[j - 1]) and not known(tokens, j - 1):
+                out += [*tokens[i + 1 : j], "car"]
+                i = j
+                continue
+        i += 1
+    return out
+
+
 def _label(tokens: list[str], i: int, kind_at: KindAt) -> int:
     """The length of a vehicle label at ``i`` ("car 3", "unit 4", "van 12"), or 0: a vehicle noun or
     "unit" with no determiner, then a number that no unit follows."""
@@ -679,6 +717,7 @@ def resolve(tokens: list[str], kind_at: KindAt, known: Known) -> tuple[list[str]
     tokens = _field_names(tokens, kind_at, known)
     tokens = _riders(tokens, kind_at, known)
     tokens = _companions(tokens, kind_at, known, dropped)
+    tokens = _followed_names(tokens, kind_at, known)
     tokens = _own_vehicle(tokens, kind_at, known, dropped)
     tokens = _narrators_people(tokens, kind_at, dropped)
     tokens = _passengers(tokens, kind_at, known, dropped)

@@ -241,13 +241,21 @@ _OTHER_CAR = re.compile(r"\b(?:a|an|another|one|other|some|second|third-party|th
 _THE_CAR = re.compile(r"\bthe car\b(?! (?:in front|ahead|behind|beside|next|on|in|from|that|which|coming))")
 
 
+#: "car" or "vehicle" opening a clause with no article ("..., car is brake hard", "and vehicle stops").
+_BARE_CAR = re.compile(
+    r"(?:(?<=[,.;:] )|(?<=\band )|(?<=\bbut )|(?<=\bso ))(?:car|vehicle)\b"
+    r"(?! (?:in front|ahead|behind|beside|next|on|in|from|that|which|coming))"
+)
+
+
 def _the_car_is_the_ego(text: str) -> str:
     """ "Ego car is driving ..., an e-scooter enters ..., the car must brake": with the ego named as a car
     and no other car in the text, "the car" is the ego (not one placed in front or coming from somewhere)."""
     if not _EGO_AS_A_CAR.search(text) or _OTHER_CAR.search(text):
         return text
     first = _EGO_AS_A_CAR.search(text).end()
-    return text[:first] + _THE_CAR.sub("the ego", text[first:])
+    rest = _BARE_CAR.sub("the ego", _THE_CAR.sub("the ego", text[first:]))  # ("..., car is brake hard")
+    return text[:first] + rest
 
 
 _NOMINAL_VERBS = {
