@@ -348,3 +348,20 @@ def test_a_name_the_ego_follows_is_a_vehicle(text):
 )
 def test_the_ego_named_as_a_car_and_then_bare_is_the_ego(text):
     assert len(read(text).actors) == 1
+
+
+# --- a speed said of the ego and another road user together is each one's --------------------------------
+@pytest.mark.parametrize(
+    "text, ego_kph, other_kph",
+    [
+        ("The ego and the lead car both travel at 60 km/h; the lead car brakes hard.", 60, 60),
+        ("A van and the ego are both doing 70 km/h, 20 m apart; the van brakes.", 70, 70),
+        ("The truck ahead and I were both going 50 mph when it braked suddenly.", 50 * MPH * 3.6, 50 * MPH * 3.6),
+    ],
+    ids=["ego-first", "ego-second", "narrator"],
+)
+def test_a_speed_said_of_the_ego_and_another_is_each_ones(text, ego_kph, other_kph):
+    r = read(text)
+    assert len(r.actors) == 1
+    assert r.ego_speed_mps is not None and abs(r.ego_speed_mps * 3.6 - ego_kph) < 0.5
+    assert r.actors[0].speed_mps is not None and abs(r.actors[0].speed_mps * 3.6 - other_kph) < 0.5

@@ -484,6 +484,39 @@ def _followed_names(tokens: list[str], kind_at: KindAt, known: Known) -> list[st
     return out
 
 
+SPEED_UNITS = frozenset({"km/h", "mph", "m/s"})
+
+
+def _speed_of_both(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
+    """ "The ego and the lead car both travel at 60 km/h", "a van and I are both doing 70 km/h", "VUT and
+    GVT both at 50 km/h": the speed is each one's. Said as the ego's speed first, then the other's
+    sentence with its speed ("the ego drives at 60 km/h , the lead car travel at 60 km/h")."""
+    if "both" not in tokens:
+        return tokens
+    b = tokens.index("both")
+    speed = next((k for k in range(b + 1, min(b + 5, len(tokens) - 1)) if tokens[k + 1] in SPEED_UNITS), None)
+    if speed is None or not tokens[speed].replace(".", "").isdigit():
+        return tokens
+    j = b - 1
+    while j >= 0 and tokens[j] in BE:
+        j -= 1
+    phrases = [p for p in _phrases(tokens[: j + 1], kind_at, known) if p.end > j + 1 - 6]
+    if len(phrases) < 2 or phrases[-1].end != j + 1:
+        return tokens
+    first, second = phrases[-2], phrases[-1]
+    between = tokens[first.end : second.start]  # ("the truck ahead and I": where it is, then "and")
+    if not between or between[-1] != "and" or len(between) > 3 or any(w in PUNCT for w in between):
+        return tokens
+    if (first.kind == "ego") == (second.kind == "ego"):
+        return tokens
+    said = ["the", "ego", "drives", "at", tokens[speed], tokens[speed + 1], ","]
+    other_words = tokens[second.start : second.end] if first.kind == "ego" else tokens[first.start : second.start - 1]
+    rest = tokens[b + 1 :]
+    if rest[0].replace(".", "").isdigit():
+        rest = ["at", *rest]  # ("both 50 km/h")
+    return tokens[: first.start] + said + other_words + rest
+
+
 def _label(tokens: list[str], i: int, kind_at: KindAt) -> int:
     """The length of a vehicle label at ``i`` ("car 3", "unit 4", "van 12"), or 0: a vehicle noun or
     "unit" with no determiner, then a number that no unit follows."""
@@ -725,5 +758,6 @@ def resolve(tokens: list[str], kind_at: KindAt, known: Known) -> tuple[list[str]
     tokens = _aftermath(tokens, kind_at, known, dropped)
     tokens = _ego_unnamed(tokens, kind_at, known)
     tokens = _named_speeds(tokens, kind_at, known, names)
+    tokens = _speed_of_both(tokens, kind_at, known)
     tokens = _mentions_again(tokens, kind_at, known)
     return tokens, dropped
