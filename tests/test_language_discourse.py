@@ -365,3 +365,16 @@ def test_a_speed_said_of_the_ego_and_another_is_each_ones(text, ego_kph, other_k
     assert len(r.actors) == 1
     assert r.ego_speed_mps is not None and abs(r.ego_speed_mps * 3.6 - ego_kph) < 0.5
     assert r.actors[0].speed_mps is not None and abs(r.actors[0].speed_mps * 3.6 - other_kph) < 0.5
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A van nearly hit me at 30 mph. Then the cyclist behind it swerved across from the left.", ["van", "bicycle"]),
+        ("We collided at 20 mph. The van had pulled out from the left without looking.", ["van"]),
+        ("I hit the brakes when the cyclist ahead swerved across from the left.", ["bicycle"]),
+    ],
+    ids=["near-miss", "told-after", "hit-the-brakes"],
+)
+def test_no_aftermath_without_a_collision_with_someone_named_before(text, expected):
+    assert kinds(text) == expected

@@ -160,7 +160,7 @@ def _riders(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
             i += 1
             continue
         det = out[person_start]
-        det = "a" if det in INDEFINITE else det
+        det = "a" if det in INDEFINITE | POSSESSIVE else det  # ("my mate on his bike": a rider)
         out[person_start:] = [det]
         i = j
     return out
@@ -353,6 +353,10 @@ def _aftermath(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[s
     """Road users first named with "the" (or bare) after the sentence that says the collision ("We hit
     him; he was talking when the ambulance came", "the bloke from the chippy came out") come in its
     aftermath: no road users of the scenario. One named with "a" or one already named before stays."""
+    from vei_scenario.language.stated import stated_outcome
+
+    if stated_outcome(" ".join(tokens)) != "collision":
+        return tokens  # ("a van nearly hit me. Then the cyclist behind it ...": no aftermath)
     contact = next(
         (k for k, w in enumerate(tokens) if _lemma_in(w, CONTACT) and _hits_someone(tokens, k, kind_at)), None
     )
@@ -362,6 +366,8 @@ def _aftermath(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[s
     if end is None:
         return tokens
     before = {p.kind for p in _phrases(tokens[:end], kind_at, known)}
+    if not before - {"ego"}:
+        return tokens  # ("We collided. The van had pulled out ...": the one hit, told after)
     out = tokens[: end + 1]
     i = end + 1
     while i < len(tokens):
