@@ -378,3 +378,29 @@ def test_a_speed_said_of_the_ego_and_another_is_each_ones(text, ego_kph, other_k
 )
 def test_no_aftermath_without_a_collision_with_someone_named_before(text, expected):
     assert kinds(text) == expected
+
+
+# --- vehicle labels: the first (or number one, or A) is the ego unless another is marked so ----------------
+@pytest.mark.parametrize(
+    "text, kind, ego_kph",
+    [
+        (
+            "Vehicle A was travelling at 40 mph when Vehicle B pulled out of a side road on the left in front of "
+            "Vehicle A.",
+            "car",
+            40 * MPH * 3.6,
+        ),
+        ("Car B (ego) drives at 50 km/h; Car A cuts in from the right lane 10 m ahead of car B.", "car", 50),
+        ("Truck B pulled out in front of Car A. Car A was doing 40 km/h.", "truck", 40),
+        (
+            "Car 1 was doing 30 mph. Van 2 pulled out from a side road on the right ahead of Car 1.",
+            "van",
+            30 * MPH * 3.6,
+        ),
+    ],
+    ids=["a-first", "b-marked", "a-second", "numbers"],
+)
+def test_the_first_vehicle_label_is_the_ego_unless_another_is_marked(text, kind, ego_kph):
+    r = read(text)
+    assert [a.kind for a in r.actors] == [kind]
+    assert r.ego_speed_mps is not None and abs(r.ego_speed_mps * 3.6 - ego_kph) < 0.5

@@ -523,42 +523,78 @@ def _speed_of_both(tokens: list[str], kind_at: KindAt, known: Known) -> list[str
     return tokens[: first.start] + said + other_words + rest
 
 
-def _label(tokens: list[str], i: int, kind_at: KindAt) -> int:
-    """The length of a vehicle label at ``i`` ("car 3", "unit 4", "van 12"), or 0: a vehicle noun or
-    "unit" with no determiner, then a number that no unit follows."""
-    if i + 1 >= len(tokens) or not tokens[i + 1].isdigit():
-        return 0
-    if i and tokens[i - 1] in DETERMINERS:
-        return 0
-    after = tokens[i + 2] if i + 2 < len(tokens) else ""
-    if after in ("m", "km/h", "mph", "m/s", "s", "%", "metres", "meters", "lanes", "lane", ":", "pm", "am"):
-        return 0
-    found = kind_at(tokens, i)
-    if tokens[i] == "unit" or (found is not None and found[0] in VEHICLES and found[1] == 1):
-        return 2
-    return 0
+#: Words after a letter that show it is a label, not an article ("Vehicle A was ...", "Car B (ego)").
+AFTER_LABEL = frozenset({"and", "then", "had", "has", "which", "who", "to", "calling", "(", ")"})
+#: Units after which a number is a quantity, not a label ("car 3 m ahead").
+UNITS_AFTER = frozenset({"m", "km/h", "mph", "m/s", "s", "%", "metres", "meters", "lanes", "lane", ":", "pm", "am"})
 
 
-def _call_sign(tokens: list[str], kind_at: KindAt) -> list[str]:
-    """A vehicle label opening a report ("Car 3 to control, ...", "Unit 4, ...") is the reporter's
-    vehicle: the ego (the first vehicle label of a narrative is the ego), and so is the label again."""
-    if any(t == "ego" for t in tokens):
+def _labels(tokens: list[str], kind_at: KindAt, known: Known) -> list[tuple[int, str, str]]:
+    """Every vehicle label in ``tokens`` as (where, its noun, its letter or number): a vehicle noun or
+    "unit" with no determiner, then a number no unit follows, or a letter ("Car A", "Vehicle B") when
+    what follows cannot go on a noun phrase and another letter labels a vehicle too."""
+    found = []
+    for i in range(len(tokens) - 1):
+        noun, mark = tokens[i], tokens[i + 1]
+        kind = kind_at(tokens, i)
+        vehicle = noun == "unit" or (kind is not None and kind[0] in VEHICLES and kind[1] == 1)
+        if not vehicle or (i and tokens[i - 1] in DETERMINERS):
+            continue
+        after = tokens[i + 2] if i + 2 < len(tokens) else "."
+        if mark.isdigit() and after not in UNITS_AFTER:
+            found.append((i, noun, mark))
+        elif len(mark) == 1 and mark.isalpha() and mark not in "iv":
+            label_like = (
+                after in PUNCT
+                or after in BE
+                or after in AFTER_LABEL
+                or after == "the"
+                or (known(tokens, i + 2) and kind_at(tokens, i + 2) is None)
+            )
+            if label_like:
+                found.append((i, noun, mark))
+    letters = {m for _, _, m in found if m.isalpha()}
+    return [x for x in found if x[2].isdigit() or len(letters) > 1]
+
+
+def _vehicle_labels(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
+    """Vehicle labels of a report ("Car 3 to control", "Vehicle A ... Vehicle B", "Car B (ego)"): the
+    one marked as the ego ("Car B (ego)"), else, where the text names no ego otherwise, number one or
+    A, else the first label, is the ego; each other label is a road user of its noun's type, "a van"
+    where first named and "the van" after."""
+    labels = _labels(tokens, kind_at, known)
+    if not labels:
         return tokens
-    start = 0
-    while start < len(tokens) and tokens[start] in PUNCT:
-        start += 1
-    n = _label(tokens, start, kind_at)
-    if not n:
-        return tokens
-    label = tokens[start : start + n]
-    out, i = tokens[:start], start
+    names = [(noun, mark) for _, noun, mark in labels]
+    marked = [
+        (n, m) for i, n, m in labels if tokens[i + 2 : i + 3] == ["ego"] or tokens[i + 2 : i + 4] == ["the", "ego"]
+    ]
+    if marked:
+        ego = marked[0]
+    elif "ego" in tokens:  # (the ego is named otherwise: every label is another road user)
+        ego = None
+    else:
+        ego = next((x for x in names if x[1] in ("1", "a")), names[0])
+    out: list[str] = []
+    seen: set[tuple[str, str]] = set()
+    i = 0
+    at = {k: (n, m) for k, n, m in labels}
     while i < len(tokens):
-        if tokens[i : i + n] == label and (i == 0 or tokens[i - 1] not in DETERMINERS):
-            out += ["the", "ego"]
-            i += n
-        else:
-            out.append(tokens[i])
-            i += 1
+        if i in at:
+            label = at[i]
+            if label == ego:
+                out += ["the", "ego"]
+                i += 2
+                i += 1 if tokens[i : i + 1] == ["ego"] else 2 if tokens[i : i + 2] == ["the", "ego"] else 0
+                continue
+            kind = kind_at(tokens, i)
+            noun = NOUN.get(kind[0], "car") if kind is not None else "car"
+            out += ["the" if label in seen else ("an" if noun[0] in "aeiou" else "a"), noun]
+            seen.add(label)
+            i += 2
+            continue
+        out.append(tokens[i])
+        i += 1
     return out
 
 
@@ -751,7 +787,7 @@ def resolve(tokens: list[str], kind_at: KindAt, known: Known) -> tuple[list[str]
     dropped: list[str] = []
     names: dict[str, str] = {}
     tokens = _brackets(tokens, kind_at, known, names, dropped)
-    tokens = _call_sign(tokens, kind_at)
+    tokens = _vehicle_labels(tokens, kind_at, known)
     tokens = _letter_labels(tokens, kind_at, known, dropped)
     tokens = _field_names(tokens, kind_at, known)
     tokens = _riders(tokens, kind_at, known)
