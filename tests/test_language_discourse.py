@@ -404,3 +404,31 @@ def test_the_first_vehicle_label_is_the_ego_unless_another_is_marked(text, kind,
     r = read(text)
     assert [a.kind for a in r.actors] == [kind]
     assert r.ego_speed_mps is not None and abs(r.ego_speed_mps * 3.6 - ego_kph) < 0.5
+
+
+# --- someone pushing or carrying a bike is a walker, one road user ----------------------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A man pushing a bike crossed from the left in front of the ego at 30 km/h.",
+        "A girl wheeling her e-scooter stepped out from the right ahead of me; I was at 20 mph.",
+        "A commuter carrying a folding bicycle walked out from the left in front of us at 40 km/h.",
+    ],
+    ids=["pushing", "wheeling", "carrying"],
+)
+def test_someone_pushing_a_bike_is_one_walker(text):
+    assert kinds(text) == ["pedestrian"]
+
+
+# --- the driver or rider of a vehicle is that vehicle -----------------------------------------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("The driver of the lorry ahead braked hard; we were at 50 km/h.", ["truck"]),
+        ("The rider of a moped came out of a side road on the left ahead of me.", ["car"]),
+        ("The van's driver pulled out from the kerb on the left just in front of the ego.", ["van"]),
+    ],
+    ids=["driver-of", "rider-of", "possessive"],
+)
+def test_the_driver_of_a_vehicle_is_that_vehicle(text, expected):
+    assert kinds(text) == expected

@@ -166,6 +166,84 @@ def _riders(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
     return out
 
 
+#: Verbs of riding: a person doing one of them to a vehicle rides it ("a woman riding a bike").
+RIDE_VERBS = frozenset({"ride", "pedal", "drive", "scoot"})
+
+
+def _pushed(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "a man pushing a bike", "a girl wheeling her e-scooter": a walker with a vehicle in hand, one
+    road user (a walker); any verb in -ing but a verb of riding puts the bike in the walker's hands."""
+    out: list[str] = []
+    i = 0
+    while i < len(tokens):
+        w = tokens[i]
+        if w.endswith("ing") and out and not _lemma_in(w, RIDE_VERBS) and w not in RIDING:
+            before = next((b for b in range(len(out) - 1, max(len(out) - 3, -1), -1) if kind_at(out, b)), None)
+            person = kind_at(out, before) if before is not None else None
+            j = i + 1 + (i + 1 < len(tokens) and tokens[i + 1] in DETERMINERS)
+            head = next((h for h in range(j, min(j + 3, len(tokens))) if kind_at(tokens, h) is not None), None)
+            thing = kind_at(tokens, head) if head is not None else None
+            plain = head is not None and not any(known(tokens, h) for h in range(j, head))
+            if (
+                person is not None
+                and person[0] == "pedestrian"
+                and before + person[1] == len(out)
+                and thing is not None
+                and thing[0] in ("bicycle", "e-scooter")
+                and plain
+            ):
+                dropped.extend(tokens[i : head + thing[1]])
+                i = head + thing[1]
+                continue
+        out.append(w)
+        i += 1
+    return out
+
+
+def _person_at(tokens: list[str], i: int, kind_at: KindAt, known: Known) -> int:
+    """The length of a noun for whoever is at the wheel or handlebars at ``i``: a road-user noun ("the
+    driver", "the cyclist") or an agent noun the reader has no phrase for ("the rider", "the
+    operator"), else 0."""
+    found = kind_at(tokens, i)
+    if found is not None:
+        return found[1] if found[0] != "ego" else 0
+    w = tokens[i]
+    return 1 if w.endswith(("er", "or")) and w.isalpha() and not known(tokens, i) and _agent_noun(w) else 0
+
+
+def _agent_noun(word: str) -> bool:
+    """Whether ``word`` names who does a verb ("rider": ride, "operator": operate, "owner": own), not a
+    thing or place ("corner", "border")."""
+    from lemminflect import getAllLemmas
+
+    stems = (word[:-1], word[:-2], word[:-2] + "e")
+    return any(stem in getAllLemmas(stem).get("VERB", ()) for stem in stems if len(stem) > 2)
+
+
+def _drivers(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
+    """ "the driver of the lorry ahead", "the rider of a moped", "the van's driver": whoever is at the
+    wheel is the vehicle, one road user (said as the vehicle's phrase)."""
+    out: list[str] = []
+    i = 0
+    while i < len(tokens):
+        n = _person_at(tokens, i, kind_at, known) if out and out[-1] in DETERMINERS else 0
+        if n and tokens[i + n : i + n + 1] == ["of"] and i + n + 1 < len(tokens) and tokens[i + n + 1] in DETERMINERS:
+            head = next((h for h in range(i + n + 2, min(i + n + 5, len(tokens))) if kind_at(tokens, h)), None)
+            q = _phrase_at(tokens, head, kind_at, known) if head is not None else None
+            if q is not None and q.kind in VEHICLES and q.start == i + n + 1:
+                out.pop()  # (the person's article)
+                i = q.start
+                continue
+        n = _person_at(tokens, i, kind_at, known)
+        if n and len(out) >= 2 and out[-1] == "'s" and (kind_at(out, len(out) - 2) or ("", 0))[0] in VEHICLES:
+            out.pop()  # ("the van's driver": the van)
+            i += n
+            continue
+        out.append(tokens[i])
+        i += 1
+    return out
+
+
 def _companions(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """ "a woman with her dog": the walker is the road user; the one with it is not, unless it is
     named again (then it is a referent of its own from there: "the dog" is said "a dog")."""
@@ -791,6 +869,8 @@ def resolve(tokens: list[str], kind_at: KindAt, known: Known) -> tuple[list[str]
     tokens = _letter_labels(tokens, kind_at, known, dropped)
     tokens = _field_names(tokens, kind_at, known)
     tokens = _riders(tokens, kind_at, known)
+    tokens = _pushed(tokens, kind_at, known, dropped)
+    tokens = _drivers(tokens, kind_at, known)
     tokens = _companions(tokens, kind_at, known, dropped)
     tokens = _followed_names(tokens, kind_at, known)
     tokens = _own_vehicle(tokens, kind_at, known, dropped)
