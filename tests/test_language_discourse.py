@@ -432,3 +432,10 @@ def test_someone_pushing_a_bike_is_one_walker(text):
 )
 def test_the_driver_of_a_vehicle_is_that_vehicle(text, expected):
     assert kinds(text) == expected
+
+
+def test_who_is_no_road_user_is_listed_as_not_used():
+    r = read("Drove my child to nursery this morning, about 30 mph. A cyclist swung out from the left in front of me.")
+    assert "child" in r.ignored and "my" not in r.ignored
+    r = read("A man with his dog stood at the kerb on my right and waited for me to pass.")
+    assert "dog" in r.ignored

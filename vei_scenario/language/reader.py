@@ -461,7 +461,8 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
     read_as: list[tuple[str, str]] = [
         (typed, read) for typed, read in zip(_tokens(text, spell=False, brackets=True), tokens) if typed != read
     ]
-    tokens, ignored = discourse.resolve(tokens, _kind_at, _known)  # (who is who; the words it took out)
+    tokens, dropped = discourse.resolve(tokens, _kind_at, _known)  # (who is who; the words it took out)
+    ignored: list[str] = [w for w in dropped if w not in FUNCTION_WORDS and w.isalpha()]
     i = 0
     while i < len(tokens):
         tok = tokens[i]
