@@ -1,31 +1,48 @@
 """Who is who in a description: the ego and the other road users as discourse referents.
 
-People name the same road user in many ways and name things that are no road users at all. Police,
-insurance and radio reports name the ego in the third person ("Car 3 to control", "car versus
-e-scooter ... car doing 20 mph", "Vehicle was turning right"); a rider is named as a person on a
-vehicle ("some lad on a hire scooter": one rider, not a walker and a scooter); a road user is named
-again bare or by a general word ("speed of cyclist 15 km/h", "the front vehicle" after "a coach");
-the narrator's own vehicle, what it carries and who walks beside whom are scenery ("we were in a hire
-car", "van full of tools and a dog", "a woman with her dog").
+People name the same road user in many ways, name the ego in the third person, and name people and
+vehicles that are no road users of the scenario at all. This module keeps a small model of referents
+over the reader's words, built from the grammar that tells new from known, and then says each
+referent the one way the reader reads it ("the ego", "a e-scooter", "the truck"), so the reader's
+actors and the ego's speed follow the referents. It runs once on a description's words, before the
+reader scans them (:func:`resolve`).
 
-This module keeps a small model of referents over the reader's words, with the grammar that tells
-new from known: an indefinite article opens a new referent, a definite article, a bare noun or a
-general noun ("vehicle") the most recent compatible one; "X on/riding a Y" is one referent of
-type Y; a vehicle label (a noun and a number) opening a report is the reporter's vehicle, the ego;
-a motor vehicle set against a vulnerable road user in a text that names no ego is the ego. It
-then says each referent the one way the reader reads it ("the ego", "a e-scooter", "the truck"), so
-the reader's actors and the ego's speed follow the referents. Words it takes out (a companion, a
-vehicle's load, a second name of the ego's vehicle) are returned so they are reported as not used.
+- **New or known.** An indefinite article opens a new referent ("a cyclist", "another cyclist"); a
+  definite article, or a bare singular noun inside a clause, is the most recent one of its type ("ego
+  stays behind cyclist", "the silver hatchback" → "the hatchback"); a definite general noun is the
+  most recent vehicle ("the front vehicle" after "a coach" → "the truck"); an apposition (", a coach,")
+  is the same one; a name in brackets is its name ("a passenger car (the challenger) ... challenger
+  speed 90 km/h"), as is "speed of cyclist 15 km/h".
+- **One road user, not two.** A person on or riding a vehicle is one rider of it ("a lad on one of
+  those electric scooters"); a person pushing a bike is one walker; the driver of a vehicle is the
+  vehicle ("the driver of the lorry ahead", "the van's driver").
+- **The ego in the third person.** Vehicle labels ("Car 3 to control", "Vehicle A ... Vehicle B", "Car
+  B (ego)"): the one marked as the ego, else (no ego named otherwise) number one or A, else the first;
+  every other label is a road user of its noun's type. A vehicle in apposition to the ego ("V1, a Ford
+  Focus,"); the narrator's vehicle named as one ("we were in a hire car", "car full of bags"); in a
+  report that names no ego, the one motor vehicle set against a walker or rider ("car versus
+  e-scooter ... car doing 20 mph", "Vehicle was turning right ..., pedestrian crossing"). A speed said
+  of the ego and another together ("a van and I were both doing 70 km/h") is each one's.
+- **Lists.** A road user as a field name ("cyclist: comes out from the left") is the subject of the
+  value; lettered or numbered labels of a list ("actor A: motorbike ...", "actor B: oncoming car")
+  each name a new road user, and the label said again is that one.
+- **No road users.** A walker's companion ("a man with his dog", unless named again doing something),
+  passengers and pets inside the vehicle ("kids bickering in the back"), the narrator's own people
+  ("drove my kid to school"), a vehicle's load, and whoever arrives after a stated collision with
+  someone named before it ("the ambulance came"). Their words are returned, to be listed as not used.
+- **Names no dictionary knows.** What the ego follows or overtakes named by a make or model
+  ("following a silver Astra") is a vehicle.
 
 It knows no content words of its own: which words name road users (and of what type) comes from the
-reader's lexicon through ``kind_at``; what it adds is a few closed classes of function words
-(articles, first-person pronouns, forms of "be").
+reader's lexicon through ``kind_at``; what it adds are closed classes of function words (articles,
+possessives, pronouns, forms of "be", prepositions) and of a few verbs (of riding, following and
+contact), and lemmas from lemminflect.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 #: ``kind_at(tokens, i)``: the road-user type named by a phrase starting at ``i`` ("ego" for the ego)
 #: and the phrase's length, or None when no road-user phrase starts there.
@@ -65,7 +82,6 @@ class Referent:
 
     kind: str
     noun: str  # the noun it was last named by
-    names: set[str] = field(default_factory=set)  # names given it in brackets ("the challenger")
 
 
 @dataclass
@@ -861,7 +877,12 @@ def _bare_again(tokens: list[str], p: _Phrase, referents: list[Referent], kind_a
 
 def resolve(tokens: list[str], kind_at: KindAt, known: Known) -> tuple[list[str], list[str]]:
     """``tokens`` with every road user said the one way the reader reads it (see the module's
-    docstring), and the words taken out (to be reported as not used)."""
+    docstring), and the words taken out (to be reported as not used).
+
+    The order matters: labels and bracketed names first (they say who the ego is and what a name
+    stands for), then what makes two mentions one road user, then what is no road user at all, then
+    the ego of a report that names none (once the scenery is gone), and last the speeds bound to
+    referents and the mentions said again (over the referents that remain)."""
     dropped: list[str] = []
     names: dict[str, str] = {}
     tokens = _brackets(tokens, kind_at, known, names, dropped)
