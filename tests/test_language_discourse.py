@@ -439,3 +439,19 @@ def test_who_is_no_road_user_is_listed_as_not_used():
     assert "child" in r.ignored and "my" not in r.ignored
     r = read("A man with his dog stood at the kerb on my right and waited for me to pass.")
     assert "dog" in r.ignored
+
+
+# --- a relative clause after the ego is said of the ego ----------------------------------------------------
+@pytest.mark.parametrize(
+    "text, ego_kph",
+    [
+        ("A truck pulled out in front of the ego, which was doing 40 km/h.", 40),
+        ("A cyclist swerved into the path of the test vehicle, which was travelling at 30 km/h.", 30),
+        ("The van cut in ahead of V1, which was proceeding at 50 mph.", 50 * MPH * 3.6),
+    ],
+    ids=["doing", "travelling", "proceeding"],
+)
+def test_a_relative_clause_after_the_ego_is_the_egos(text, ego_kph):
+    r = read(text)
+    assert r.ego_speed_mps is not None and abs(r.ego_speed_mps * 3.6 - ego_kph) < 0.5
+    assert all(a.speed_mps is None for a in r.actors)

@@ -651,6 +651,18 @@ def _labels(tokens: list[str], kind_at: KindAt, known: Known) -> list[tuple[int,
     return [x for x in found if x[2].isdigit() or len(letters) > 1]
 
 
+def _relative_of_ego(tokens: list[str]) -> list[str]:
+    """ "... in front of the ego, which was doing 40 km/h": a relative clause right after the ego is said
+    of the ego; said as a clause of its own with the ego as its subject ("..., the ego was doing ...")."""
+    out: list[str] = []
+    for k, w in enumerate(tokens):
+        if w in ("which", "who", "that") and k >= 2 and tokens[k - 1] == "," and tokens[k - 2] == "ego":
+            out += ["the", "ego"]
+            continue
+        out.append(w)
+    return out
+
+
 def _vehicle_labels(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
     """Vehicle labels of a report ("Car 3 to control", "Vehicle A ... Vehicle B", "Car B (ego)"): the
     one marked as the ego ("Car B (ego)"), else, where the text names no ego otherwise, number one or
@@ -902,5 +914,6 @@ def resolve(tokens: list[str], kind_at: KindAt, known: Known) -> tuple[list[str]
     tokens = _ego_unnamed(tokens, kind_at, known)
     tokens = _named_speeds(tokens, kind_at, known, names)
     tokens = _speed_of_both(tokens, kind_at, known)
+    tokens = _relative_of_ego(tokens)
     tokens = _mentions_again(tokens, kind_at, known)
     return tokens, dropped
