@@ -254,8 +254,8 @@ def test_the_other_party_named_by_code_and_apposition_is_one_road_user(text, kin
     "text",
     [
         "A cyclist shot out from the left and I hit him at 20 mph. He was fine by the time the ambulance came.",
-        "We were doing 30 mph when a pedestrian stepped out from the right and we struck her; the bus driver behind "
-        "us stopped to help.",
+        "We were doing 30 mph when a pedestrian stepped out from the right and we struck her; the bus driver "
+        "stopped to help.",
         "A cyclist came across from the right at the lights and we collided at 25 km/h. The police car pulled up "
         "behind us ten minutes later.",
     ],
@@ -455,3 +455,23 @@ def test_a_relative_clause_after_the_ego_is_the_egos(text, ego_kph):
     r = read(text)
     assert r.ego_speed_mps is not None and abs(r.ego_speed_mps * 3.6 - ego_kph) < 0.5
     assert all(a.speed_mps is None for a in r.actors)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist swung out from the left and I clipped his back wheel at 20 mph. The man from the kiosk came out.",
+        "A scooter rider came off the kerb on the right and we hit her front wheel at 15 mph. The lady from the "
+        "cafe ran over.",
+        "A cyclist cut across from the left and I struck his rear wheel at 25 km/h; the guy from the garage walked "
+        "over to help.",
+    ],
+    ids=["clipped-his", "hit-her", "struck-his"],
+)
+def test_who_comes_after_hitting_someones_wheel_is_no_road_user(text):
+    assert len(read(text).actors) == 1
+
+
+def test_someone_placed_by_the_ego_after_the_collision_is_still_a_road_user():
+    text = "A van pulled out from the left, I hit my brakes and we collided at 20 mph. The cyclist behind me swerved."
+    assert kinds(text) == ["van", "bicycle"]

@@ -430,23 +430,24 @@ PRONOUNS = frozenset({"him", "her", "it", "them", "us", "me", "he", "she", "they
 
 
 def _hits_someone(tokens: list[str], k: int, kind_at: KindAt) -> bool:
-    """Whether the contact verb at ``k`` says a collision: a road user or a pronoun next to it ("we hit
-    him", "struck the cyclist", "he and I collided"), or a verb that needs none ("we collided"); not
-    "hit the brakes"."""
+    """Whether the contact verb at ``k`` says a collision: a road user, a pronoun or a possessive after
+    it ("we hit him", "struck the cyclist", "clipped his back wheel"), or a verb that needs none ("we
+    collided"); not "hit the brakes"."""
     if _lemma_in(tokens[k], frozenset({"collide", "crash"})):
         return True
     for j in range(k + 1, min(k + 4, len(tokens))):
         if tokens[j] in PUNCT:
             break
-        if tokens[j] in PRONOUNS or kind_at(tokens, j) is not None:
-            return True
+        if tokens[j] in PRONOUNS or tokens[j] in POSSESSIVE - {"my", "our", "your"} or kind_at(tokens, j):
+            return True  # ("hit him", "clipped his back wheel", "struck the cyclist")
     return False
 
 
 def _aftermath(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """Road users first named with "the" (or bare) after the sentence that says the collision ("We hit
     him; he was talking when the ambulance came", "the bloke from the chippy came out") come in its
-    aftermath: no road users of the scenario. One named with "a" or one already named before stays."""
+    aftermath: no road users of the scenario. One named with "a", one already named before, and one
+    placed relative to someone ("the cyclist behind me swerved") stay."""
     from vei_scenario.language.stated import stated_outcome
 
     if stated_outcome(" ".join(tokens)) != "collision":
@@ -466,7 +467,8 @@ def _aftermath(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[s
     i = end + 1
     while i < len(tokens):
         p = _phrase_at(tokens, i, kind_at, known)
-        if p is None or p.kind in before or p.kind == "ego" or p.det not in ("the", ""):
+        placed = p is not None and any(w in PLACED for w in tokens[p.end : p.end + 2])  # ("the cyclist behind me")
+        if p is None or p.kind in before or p.kind == "ego" or p.det not in ("the", "") or placed:
             out.append(tokens[i])
             i += 1
             continue
