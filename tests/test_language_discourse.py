@@ -475,3 +475,20 @@ def test_who_comes_after_hitting_someones_wheel_is_no_road_user(text):
 def test_someone_placed_by_the_ego_after_the_collision_is_still_a_road_user():
     text = "A van pulled out from the left, I hit my brakes and we collided at 20 mph. The cyclist behind me swerved."
     assert kinds(text) == ["van", "bicycle"]
+
+
+# --- a log line's road user said again after its clock is the one named before -----------------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("10:02 ego at 50 km/h\n10:03 bus ahead at 30 m slows down\n10:04 bus stops at the kerb", ["truck"]),
+        (
+            "18:20 ego sets off at 40 km/h, van following\n18:21 cyclist ahead at 20 m\n18:22 cyclist turns left",
+            ["van", "bicycle"],
+        ),
+        ("06:15 ego on the bypass, 80 km/h\n06:16 lorry ahead slows\n06:17 lorry brakes hard", ["truck"]),
+    ],
+    ids=["bus", "cyclist", "lorry"],
+)
+def test_a_road_user_said_again_after_a_clock_is_the_same(text, expected):
+    assert sorted(kinds(text)) == sorted(expected)

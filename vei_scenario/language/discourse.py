@@ -877,6 +877,9 @@ def _bare_again(tokens: list[str], p: _Phrase, referents: list[Referent], kind_a
     """Whether a bare singular noun inside a clause ("behind cyclist", "passes walker") names again the
     one of its type named before (a bare noun opening a clause the reader takes so already)."""
     before = tokens[p.start - 1] if p.start else ""
+    clock = p.start >= 3 and before.isdigit() and tokens[p.start - 2] == ":" and tokens[p.start - 3].isdigit()
+    if clock and p.head == p.start:  # ("14:34 lorry brakes": a log line opens with its clock)
+        return p.kind != "ego" and any(r.kind == p.kind for r in referents)
     if p.head != p.start or before in PUNCT or before == "" or before.isdigit() or before in OTHER:
         return False
     for j in range(p.start - 1, max(p.start - 4, -1), -1):  # ("a stationary car": its article before

@@ -403,6 +403,9 @@ _DETERMINERS = {"the", "a", "an", "its", "our", "my", "their", "his", "her", "th
 def _kind_at(tokens: list[str], i: int) -> tuple[str, int] | None:
     """The road-user type a phrase at ``i`` names and its length, or None (for :mod:`discourse`)."""
     key = _best(tokens, i)
+    if key is not None and len(key) > 1 and TABLE[key][0] != "actor" and TABLE.get(key[:1], ("",))[0] == "actor":
+        if tokens[i + len(key) - 1] == key[-1] + "s":  # ("the bus stops": the bus, then its verb, as scan reads it)
+            key = key[:1]
     return (str(TABLE[key][1]), len(key)) if key is not None and TABLE[key][0] == "actor" else None
 
 
