@@ -492,3 +492,19 @@ def test_someone_placed_by_the_ego_after_the_collision_is_still_a_road_user():
 )
 def test_a_road_user_said_again_after_a_clock_is_the_same(text, expected):
     assert sorted(kinds(text)) == sorted(expected)
+
+
+# --- an abbreviation defined in brackets stands for its term all through ---------------------------------
+@pytest.mark.parametrize(
+    "text, ego_kph",
+    [
+        ("The insured vehicle (IV) was travelling at 40 mph. A cyclist swerved across the path of the IV.", 64.4),
+        ("Our test car (TC) drives at 30 km/h. A pedestrian crosses from the left 10 m ahead of TC.", 30),
+        ("The host vehicle (HV) approaches at 50 km/h; a van pulls out 20 m in front of the HV.", 50),
+    ],
+    ids=["iv", "tc", "hv"],
+)
+def test_an_abbreviation_defined_in_brackets_stands_for_its_term(text, ego_kph):
+    r = read(text)
+    assert len(r.actors) == 1 and "iv" not in r.ignored and "tc" not in r.ignored and "hv" not in r.ignored
+    assert r.ego_speed_mps is not None and abs(r.ego_speed_mps * 3.6 - ego_kph) < 0.5

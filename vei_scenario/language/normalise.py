@@ -284,17 +284,24 @@ _NOMINAL = re.compile(
 
 
 def _acronyms_defined(text: str) -> str:
-    """A term and its abbreviation in brackets ("principal other vehicle (POV)", "subject vehicle (SV)"):
-    the term once, so the bracket is not read as a second road user."""
+    """A term and its abbreviation in brackets ("principal other vehicle (POV)", "insured vehicle (IV)"):
+    the term once, so the bracket is not read as a second road user, and the term again wherever the
+    abbreviation is used after it ("the path of the IV": of the insured vehicle)."""
+    terms: dict[str, str] = {}
 
     def sub(m: re.Match) -> str:
         words, short = m.group(1).split(), m.group(2)
         for n in range(1, len(words) + 1):
             if "".join(w[0] for w in words[-n:]) == short:
+                terms[short] = " ".join(words[-n:])
                 return m.group(1).rstrip() + " "
         return m.group(0)
 
-    return _DEFINED.sub(sub, text)
+    text = _DEFINED.sub(sub, text)
+    for short, term in terms.items():
+        if len(short) > 1:  # ("the IV", "ahead of TC": the term, with its article)
+            text = re.sub(rf"\b(?:the\s+)?{re.escape(short)}\b(?!\s*\()", f"the {term}", text)
+    return text
 
 
 def normalise(text: str, known_noun=lambda phrase: None) -> str:
