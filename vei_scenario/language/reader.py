@@ -28,6 +28,7 @@ import re
 from dataclasses import dataclass, field, replace
 from functools import lru_cache
 
+from vei_scenario.language import discourse
 from vei_scenario.language import lexicon as L
 from vei_scenario.language import quantities as Q
 from vei_scenario.language import settings as S
@@ -54,6 +55,7 @@ from vei_scenario.language.stated import (
 )
 
 _TOKEN = re.compile(r"\d+(?:\.\d+)?|km/h|m/s²|m/s2|m/s|[a-z][a-z\-]*(?:'[a-z]+)?|'s|[.;,!?:%]")
+_TOKEN_BRACKETS = re.compile(_TOKEN.pattern + "|[()]")  # (for discourse: a name said in brackets)
 
 
 @lru_cache(maxsize=4096)
@@ -277,15 +279,15 @@ def _speller():
     return Speller({w for key in TABLE for w in key} | FUNCTION_WORDS | outcome)
 
 
-def _tokens(text: str, spell: bool = True) -> list[str]:
+def _tokens(text: str, spell: bool = True, brackets: bool = False) -> list[str]:
     """The words of ``text`` as the reader reads them (normalised; a misspelt word as the word it is
-    one slip from, unless ``spell`` is false)."""
+    one slip from, unless ``spell`` is false; brackets kept as words if ``brackets``)."""
     text = text.lower().replace("\u2019", "'").replace("’", "'")
     text = Q.ranges(normalise(text, _actor_noun_in))
     text = ncap_rewrite(text, _actor_word)
     text = _NCAP_NAME.sub(_ncap_said, text)
     out = []
-    for tok in _TOKEN.findall(text):
+    for tok in (_TOKEN_BRACKETS if brackets else _TOKEN).findall(text):
         if tok.endswith("'s") and len(tok) > 2:
             out += [tok[:-2], "'s"]
         elif "'" in tok and tok.split("'", 1)[1] == "t":  # "doesn't", "won't", "can't": the verb, then "not"
@@ -410,6 +412,20 @@ def _best(tokens: list[str], i: int) -> tuple[str, ...] | None:
 _DETERMINERS = {"the", "a", "an", "its", "our", "my", "their", "his", "her", "this", "that", "another", "some"}
 
 
+def _kind_at(tokens: list[str], i: int) -> tuple[str, int] | None:
+    """The road-user type a phrase at ``i`` names and its length, or None (for :mod:`discourse`)."""
+    key = _best(tokens, i)
+    if key is not None and len(key) > 1 and TABLE[key][0] != "actor" and TABLE.get(key[:1], ("",))[0] == "actor":
+        if tokens[i + len(key) - 1] == key[-1] + "s":  # ("the bus stops": the bus, then its verb, as scan reads it)
+            key = key[:1]
+    return (str(TABLE[key][1]), len(key)) if key is not None and TABLE[key][0] == "actor" else None
+
+
+def _known(tokens: list[str], i: int) -> bool:
+    """Whether the reader has a phrase starting at ``i`` (for :mod:`discourse`)."""
+    return _best(tokens, i) is not None
+
+
 def _adverb(word: str) -> bool:
     return word.endswith("ly") or word in ("hard", "fast", "straight", "just", "then")
 
@@ -431,7 +447,9 @@ def _number(tokens: list[str], i: int) -> tuple[str, float, int] | None:
     if nxt in ("s", "sec", "seconds", "second", "g", "%", "deg", "degrees", "kg", "km"):
         return "skip", value, 2
     if nxt in (":", "am", "pm", "hrs", "hours", "o'clock", "oclock"):  # ("about 6 pm", "at 07:50"): a time of day
-        return "skip", value, 4 if nxt == ":" and i + 2 < len(tokens) and tokens[i + 2].isdigit() else 2
+        if nxt == ":" and i + 2 < len(tokens) and tokens[i + 2].isdigit():  # ("07:50", "07:50 hrs"; not what follows)
+            return "skip", value, 4 if tokens[i + 3 : i + 4] in (["hrs"], ["hours"], ["am"], ["pm"]) else 3
+        return "skip", value, 2
     if nxt in ("to", "-") and i + 3 < len(tokens) and re.fullmatch(r"\d+(?:\.\d+)?", tokens[i + 2]):
         unit = tokens[i + 3]
         if unit in V.SPEED_UNITS:  # "from 50 to 20 km/h": the speed, then the one it goes to
@@ -469,12 +487,13 @@ _MOTION_BEFORE_SPEED = frozenset(
 def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
     """(clauses as (link, mentions), ignored words) of ``text``; a word that is only a verb and unknown
     stays in its clause as an ``unknown_verb`` mention."""
-    tokens = _tokens(text)
+    tokens = _tokens(text, brackets=True)
     clauses: list[tuple[str, list[_Mention]]] = [("sequence", [])]
-    ignored: list[str] = []
     read_as: list[tuple[str, str]] = [
-        (typed, read) for typed, read in zip(_tokens(text, spell=False), tokens) if typed != read
+        (typed, read) for typed, read in zip(_tokens(text, spell=False, brackets=True), tokens) if typed != read
     ]
+    tokens, dropped = discourse.resolve(tokens, _kind_at, _known)  # (who is who; the words it took out)
+    ignored: list[str] = [w for w in dropped if w not in FUNCTION_WORDS and w.isalpha()]
 
     def ending_at(k: int) -> int | None:  # the start of the road-user mention whose last word is token k
         return next(
