@@ -441,8 +441,8 @@ def test_pulling_away_and_cutting_the_corner():
 
 
 def test_riders_against_the_traffic_come_towards_the_ego():
-    (cyclist,) = read("A cyclist rides against the traffic in the ego's lane.").actors
-    assert (cyclist.relation, cyclist.facing, cyclist.behaviours[0][0]) == ("ahead", "against", "along_road")
+    (cyclist,) = read("A cyclist rides against the traffic in the ego's lane.").actors  # (head-on: the wrong way)
+    assert (cyclist.relation, cyclist.facing, cyclist.behaviours[0][0]) == ("ahead", "against", "wrong_way")
     (rider,) = read("An e-scooter rides ahead of the ego.").actors
     assert rider.facing is None
 

@@ -48,12 +48,12 @@ def test_at_least_nine_in_ten_descriptions_are_understood_and_faithful(corpus):
 #: before numbers and settings were read by their grammar, F at 60 and 32; their floors are the figures
 #: measured last.
 INDEPENDENT = {
-    ROOT / "tests" / "data" / "language_independent_a.json": (59, 51),
+    ROOT / "tests" / "data" / "language_independent_a.json": (59, 53),
     ROOT / "tests" / "data" / "language_independent_b.json": (63, 57),
-    ROOT / "tests" / "data" / "language_independent_c.json": (65, 52),
-    ROOT / "tests" / "data" / "language_independent_d.json": (56, 33),
-    ROOT / "tests" / "data" / "language_independent_e.json": (70, 37),
-    ROOT / "tests" / "data" / "language_independent_f.json": (60, 36),
+    ROOT / "tests" / "data" / "language_independent_c.json": (65, 55),
+    ROOT / "tests" / "data" / "language_independent_d.json": (56, 34),
+    ROOT / "tests" / "data" / "language_independent_e.json": (70, 49),
+    ROOT / "tests" / "data" / "language_independent_f.json": (60, 52),
 }
 
 

@@ -102,13 +102,19 @@ _EGO_AGAIN = re.compile(
 #: The other party of a statement: "V2", "Vehicle 2", "Unit 2", "D2" (3, 4 ...).
 _OTHER = re.compile(
     r"\b(?:(?:the|a|an)\s+)?(?:(?:vehicle|veh\.?|unit|v|d)\s*-?\s*([2-9])\b(?!\s*(?:m|km|mph|s)\b)|"
-    r"(?:pov|principal other vehicle)\s*-?\s*([1-9]?)\b|third[- ]party(?:'s)?\s+(?:vehicle|car)\b)"
+    r"(?:pov|principal other vehicle)(?:\s*-?\s*([1-9]))?\b|third[- ]party(?:'s)?\s+(?:vehicle|car)\b)"
 )
 #: An apposition after it: "V2, a white Transit van," / "Unit 2, a pedal cyclist,".
 _APPOSITION = re.compile(
     r"\s*(?:,?\s*(?:an?|the)\s+([^,.;()]+?)(?=\s*(?:,|\.|;|\s+(?:travell\w*|driving|was|were|who|which|in|on|at)\b))|"
-    r"\(\s*(?:an?\s+|the\s+)?([^,.;()]+?)\s*\))"
+    r"\(\s*(?:an?\s+|the\s+)?([^,.;()]+?)\s*(?:,[^()]*)?\))"  # ("(e-scooter, male rider)": the first says what)
 )
+
+
+#: A party's code said again in brackets after its name ("Vehicle 2 (V2)"): the apposition follows it.
+_CODE_AGAIN = re.compile(r"\s*\(\s*[a-z]{1,3}\s*-?\s*[2-9]\s*\)")
+#: What follows a call sign opening a radio report ("Unit 4 to control", "Car 12 calling base").
+_CALLING = re.compile(r"\s*,?\s*(?:to|calling|for)\b")
 
 
 def _other_parties(text: str, known_noun) -> str:
@@ -117,6 +123,10 @@ def _other_parties(text: str, known_noun) -> str:
     names: dict[str, str] = {}
     out, pos = [], 0
     for m in _OTHER.finditer(text):
+        if m.start() < pos:
+            continue  # (inside what was read already: "(V2)" after "Vehicle 2")
+        if not text[: m.start()].strip(" -*,.") and _CALLING.match(text, m.end()):
+            continue  # "Unit 4 to control, ...": the caller's own vehicle (read as the ego by discourse)
         code = m.group(1) or m.group(2) or m.group(0).split()[-1]
         out.append(text[pos : m.start()])
         pos = m.end()
@@ -130,7 +140,10 @@ def _other_parties(text: str, known_noun) -> str:
         if code in names:
             out.append(f"the {names[code]}")
             continue
-        app = _APPOSITION.match(text, m.end())
+        code_again = _CODE_AGAIN.match(text, m.end())  # ("Vehicle 2 (V2), a Ford Transit van, ...")
+        if code_again is not None:
+            pos = code_again.end()
+        app = _APPOSITION.match(text, pos)
         if app is not None:
             phrase = app.group(1) or app.group(2)
             noun = known_noun(phrase)
@@ -228,13 +241,21 @@ _OTHER_CAR = re.compile(r"\b(?:a|an|another|one|other|some|second|third-party|th
 _THE_CAR = re.compile(r"\bthe car\b(?! (?:in front|ahead|behind|beside|next|on|in|from|that|which|coming))")
 
 
+#: "car" or "vehicle" opening a clause with no article ("..., car is brake hard", "and vehicle stops").
+_BARE_CAR = re.compile(
+    r"(?:(?<=[,.;:] )|(?<=\band )|(?<=\bbut )|(?<=\bso ))(?:car|vehicle)\b"
+    r"(?! (?:in front|ahead|behind|beside|next|on|in|from|that|which|coming))"
+)
+
+
 def _the_car_is_the_ego(text: str) -> str:
     """ "Ego car is driving ..., an e-scooter enters ..., the car must brake": with the ego named as a car
     and no other car in the text, "the car" is the ego (not one placed in front or coming from somewhere)."""
     if not _EGO_AS_A_CAR.search(text) or _OTHER_CAR.search(text):
         return text
     first = _EGO_AS_A_CAR.search(text).end()
-    return text[:first] + _THE_CAR.sub("the ego", text[first:])
+    rest = _BARE_CAR.sub("the ego", _THE_CAR.sub("the ego", text[first:]))  # ("..., car is brake hard")
+    return text[:first] + rest
 
 
 _NOMINAL_VERBS = {
@@ -263,17 +284,24 @@ _NOMINAL = re.compile(
 
 
 def _acronyms_defined(text: str) -> str:
-    """A term and its abbreviation in brackets ("principal other vehicle (POV)", "subject vehicle (SV)"):
-    the term once, so the bracket is not read as a second road user."""
+    """A term and its abbreviation in brackets ("principal other vehicle (POV)", "insured vehicle (IV)"):
+    the term once, so the bracket is not read as a second road user, and the term again wherever the
+    abbreviation is used after it ("the path of the IV": of the insured vehicle)."""
+    terms: dict[str, str] = {}
 
     def sub(m: re.Match) -> str:
         words, short = m.group(1).split(), m.group(2)
         for n in range(1, len(words) + 1):
             if "".join(w[0] for w in words[-n:]) == short:
+                terms[short] = " ".join(words[-n:])
                 return m.group(1).rstrip() + " "
         return m.group(0)
 
-    return _DEFINED.sub(sub, text)
+    text = _DEFINED.sub(sub, text)
+    for short, term in terms.items():
+        if len(short) > 1:  # ("the IV", "ahead of TC": the term, with its article)
+            text = re.sub(rf"\b(?:the\s+)?{re.escape(short)}\b(?!\s*\()", f"the {term}", text)
+    return text
 
 
 def normalise(text: str, known_noun=lambda phrase: None) -> str:

@@ -28,12 +28,21 @@ import re
 from dataclasses import dataclass, field, replace
 from functools import lru_cache
 
+from vei_scenario.language import discourse, sides
 from vei_scenario.language import lexicon as L
 from vei_scenario.language import quantities as Q
 from vei_scenario.language import settings as S
-from vei_scenario.language import sides
 from vei_scenario.language import vocabulary as V
 from vei_scenario.language.behaviours import BEHAVIOURS
+from vei_scenario.language.motion import (
+    destinations_not_origins,
+    give_the_ego_the_way,
+    head_on,
+    into_the_ego_lane,
+    one_path,
+    out_of_a_side_road,
+    outcome_not_behaviour,
+)
 from vei_scenario.language.ncap import rewrite as ncap_rewrite
 from vei_scenario.language.normalise import normalise
 from vei_scenario.language.reading import ActorSpec, NotUnderstood, Reading
@@ -46,6 +55,7 @@ from vei_scenario.language.stated import (
 )
 
 _TOKEN = re.compile(r"\d+(?:\.\d+)?|km/h|m/s²|m/s2|m/s|[a-z][a-z\-]*(?:'[a-z]+)?|'s|[.;,!?:%]")
+_TOKEN_BRACKETS = re.compile(_TOKEN.pattern + "|[()]")  # (for discourse: a name said in brackets)
 
 
 @lru_cache(maxsize=4096)
@@ -269,15 +279,15 @@ def _speller():
     return Speller({w for key in TABLE for w in key} | FUNCTION_WORDS | outcome)
 
 
-def _tokens(text: str, spell: bool = True) -> list[str]:
+def _tokens(text: str, spell: bool = True, brackets: bool = False) -> list[str]:
     """The words of ``text`` as the reader reads them (normalised; a misspelt word as the word it is
-    one slip from, unless ``spell`` is false)."""
+    one slip from, unless ``spell`` is false; brackets kept as words if ``brackets``)."""
     text = text.lower().replace("\u2019", "'").replace("’", "'")
     text = Q.ranges(normalise(text, _actor_noun_in))
     text = ncap_rewrite(text, _actor_word)
     text = _NCAP_NAME.sub(_ncap_said, text)
     out = []
-    for tok in _TOKEN.findall(text):
+    for tok in (_TOKEN_BRACKETS if brackets else _TOKEN).findall(text):
         if tok.endswith("'s") and len(tok) > 2:
             out += [tok[:-2], "'s"]
         elif "'" in tok and tok.split("'", 1)[1] == "t":  # "doesn't", "won't", "can't": the verb, then "not"
@@ -402,6 +412,20 @@ def _best(tokens: list[str], i: int) -> tuple[str, ...] | None:
 _DETERMINERS = {"the", "a", "an", "its", "our", "my", "their", "his", "her", "this", "that", "another", "some"}
 
 
+def _kind_at(tokens: list[str], i: int) -> tuple[str, int] | None:
+    """The road-user type a phrase at ``i`` names and its length, or None (for :mod:`discourse`)."""
+    key = _best(tokens, i)
+    if key is not None and len(key) > 1 and TABLE[key][0] != "actor" and TABLE.get(key[:1], ("",))[0] == "actor":
+        if tokens[i + len(key) - 1] == key[-1] + "s":  # ("the bus stops": the bus, then its verb, as scan reads it)
+            key = key[:1]
+    return (str(TABLE[key][1]), len(key)) if key is not None and TABLE[key][0] == "actor" else None
+
+
+def _known(tokens: list[str], i: int) -> bool:
+    """Whether the reader has a phrase starting at ``i`` (for :mod:`discourse`)."""
+    return _best(tokens, i) is not None
+
+
 def _adverb(word: str) -> bool:
     return word.endswith("ly") or word in ("hard", "fast", "straight", "just", "then")
 
@@ -423,7 +447,9 @@ def _number(tokens: list[str], i: int) -> tuple[str, float, int] | None:
     if nxt in ("s", "sec", "seconds", "second", "g", "%", "deg", "degrees", "kg", "km"):
         return "skip", value, 2
     if nxt in (":", "am", "pm", "hrs", "hours", "o'clock", "oclock"):  # ("about 6 pm", "at 07:50"): a time of day
-        return "skip", value, 4 if nxt == ":" and i + 2 < len(tokens) and tokens[i + 2].isdigit() else 2
+        if nxt == ":" and i + 2 < len(tokens) and tokens[i + 2].isdigit():  # ("07:50", "07:50 hrs"; not what follows)
+            return "skip", value, 4 if tokens[i + 3 : i + 4] in (["hrs"], ["hours"], ["am"], ["pm"]) else 3
+        return "skip", value, 2
     if nxt in ("to", "-") and i + 3 < len(tokens) and re.fullmatch(r"\d+(?:\.\d+)?", tokens[i + 2]):
         unit = tokens[i + 3]
         if unit in V.SPEED_UNITS:  # "from 50 to 20 km/h": the speed, then the one it goes to
@@ -461,12 +487,13 @@ _MOTION_BEFORE_SPEED = frozenset(
 def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
     """(clauses as (link, mentions), ignored words) of ``text``; a word that is only a verb and unknown
     stays in its clause as an ``unknown_verb`` mention."""
-    tokens = _tokens(text)
+    tokens = _tokens(text, brackets=True)
     clauses: list[tuple[str, list[_Mention]]] = [("sequence", [])]
-    ignored: list[str] = []
     read_as: list[tuple[str, str]] = [
-        (typed, read) for typed, read in zip(_tokens(text, spell=False), tokens) if typed != read
+        (typed, read) for typed, read in zip(_tokens(text, spell=False, brackets=True), tokens) if typed != read
     ]
+    tokens, dropped = discourse.resolve(tokens, _kind_at, _known)  # (who is who; the words it took out)
+    ignored: list[str] = [w for w in dropped if w not in FUNCTION_WORDS and w.isalpha()]
     left_hand, ring = sides.drives_on_left(tokens), "roundabout" in tokens
 
     def ending_at(k: int) -> int | None:  # the start of the road-user mention whose last word is token k
@@ -1004,7 +1031,9 @@ def read(text: str) -> Reading:
     words); raise :class:`~vei_scenario.language.reading.NotUnderstood` naming what cannot be placed."""
     clauses, ignored, read_as = scan(text)
     clauses = sides.relate_headings(clauses)
-    clauses = _drop_label(clauses)
+    clauses = out_of_a_side_road(destinations_not_origins(outcome_not_behaviour(_drop_label(clauses))))
+    tokens = _tokens(text)
+    clauses = give_the_ego_the_way(into_the_ego_lane(clauses, tokens), tokens)
     clauses, ego_follows = _ego_following(clauses)
     r = Reading()
     actors: list[_Actor] = []
@@ -1125,6 +1154,8 @@ def read(text: str) -> Reading:
                     ):
                         who = actors[-1]  # ("We were following the bus when it pulled to a stop": not us)
                     if m.words in ("he", "she"):  # a person's pronoun names the same one all through a story
+                        if who == "ego" and ego_is_a_person and actors and m.words not in bound:
+                            who = actors[-1]  # (the narrator is "I": "he" is someone else)
                         who = bound.setdefault(m.words, who)  # ("the driver said she ... She braked")
                     role = "subject"
                 elif m.slot == "member":
@@ -1620,8 +1651,7 @@ def read(text: str) -> Reading:
             crit = next((b[2] for b in behaviours if b[2]), a.crit)
             behaviours = [("cross_in_front", {}, crit, "sequence")]
         if a.kind in RIDERS and junction and behaviours[:1] and behaviours[0][0] == "cut_in":
-            out_of_arm = sides.rides_out_of_arm(True, a.arm, a.side, junction)  # (then it turns into the road)
-            if not (a.lane_side or a.followed or a.toward or "ahead" in a.said or a.goes_on or out_of_arm):
+            if not (a.lane_side or a.followed or a.toward or "ahead" in a.said or a.goes_on or a.arm):
                 # "an e-scooter cuts across at a junction": a rider crossing the ego's road
                 behaviours = [("cross_in_front", {}, *behaviours[0][2:])] + behaviours[1:]
         overtaking = any(b[0] == "overtake" for b in behaviours)  # (it rides along, and out to pass)
@@ -1673,8 +1703,10 @@ def read(text: str) -> Reading:
     _parked(actors, r.actors)
     _cut_outs(r.actors)
     _criticality_said_apart(clauses, r.actors)
+    said = " ".join(_tokens(text))
     for spec in r.actors:
         spec.behaviours = _one_act_once(spec)
+        spec.behaviours = one_path(spec, said)
     if r.map_kind is None and any(s.relation == "junction_opposite" for s in r.actors):
         r.map_kind = "crossroad"
     r.ego_speed_mps = ego_said if ego_said is not None else r.ego_speed_mps
@@ -1926,6 +1958,7 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool) -> None:
             left = side == "left" or (side is None and spec.relation == "roadside_left")
             spec.lateral_m = 1.2 if left else -1.2
         spec.relation = "ahead" if spec.relation != "behind" else "behind"
+        spec.behaviours = head_on(spec, a.kind in RIDERS and a.wrong_way)
 
 
 def _from(m) -> bool:

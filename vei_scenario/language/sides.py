@@ -61,9 +61,6 @@ _FAR_NEAR = frozenset({"far", "near", "opposite", "other"})
 _OPENING = frozenset(
     {"in", "on", "from", "off", "out", "of", "along", "into", "onto", "at", "down", "up", "to", "towards", "toward"}
 )
-#: Prepositions of where a road user goes into: an arm after them is its way out, not where it starts
-#: (not "to": "comes up to the entry and waits" is at that arm).
-_GOAL = frozenset({"into", "onto"})
 _INTO = frozenset({"into", "onto"})
 _LINKS = frozenset({"on", "to", "at"})
 _MODIFIERS = frozenset({"adjacent", "next", "neighbouring", "neighboring", "nearest"})
@@ -195,12 +192,6 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
         kind, k = "kerb", k + 2
     elif tokens[k] == "lane":
         kind, k = "lane", k + 1
-    if kind == "arm" and prep in _GOAL:  # "to turn into a side street": where it goes
-        end = k
-        if tokens[k : k + 1] == ["on"] and tokens[k + 1 : k + 2] in (["the"], ["my"], ["our"], ["its"]):
-            if tokens[k + 2 : k + 3] in (["left"], ["right"]):
-                end = k + 3
-        return Said(start, end, prep, (("map", "crossroad"),))  # (a junction all the same)
     if kind is None or k >= n or tokens[k] not in _LINKS:
         return None
     m = k + 1
@@ -268,6 +259,8 @@ def heading_at(tokens: list[str], i: int) -> str | None:
     after = tokens[i + 1] if i + 1 < len(tokens) else ""
     if after in _COMPASS_NOUNS:
         return None
+    if tokens[i + 1 : i + 3] == ["in", "the"] and tokens[i + 3 : i + 4] and tokens[i + 3] in _BOUND:  # (the wrong
+        return None  # way in the other's lane, "northbound in the southbound lane", which motion.py reads)
     if word in _BOUND:
         return _BOUND[word]
     if word in _COMPASS and i > 0 and tokens[i - 1] in _MOTION:
@@ -318,11 +311,3 @@ def _from_heading(heading: int, ego_heading: int) -> str | None:
         return None
     came_from = (heading + 180 - ego_heading) % 360  # the side it comes from, clockwise from the ego's front
     return "junction_right" if came_from == 90 else "junction_left"
-
-
-def rides_out_of_arm(rider: bool, arm: bool, side: str | None, junction: bool) -> bool:
-    """Whether a rider pulling into the road comes out of a junction arm rather than across it: a side
-    road said with its side ("came out of a side street on my left") at a junction. A rider (unlike
-    a walker) out of a side road takes the road as a vehicle does: it turns into the ego's road from
-    that arm."""
-    return rider and arm and junction and side in ("left", "right")

@@ -40,7 +40,7 @@ class Speller:
     @lru_cache(maxsize=8192)  # noqa: B019 (one speller per process, its words fixed)
     def correct(self, word: str) -> str:
         """``word``, or the one known word it is a slip of."""
-        if len(word) < 3 or not word.isalpha() or word in self.words:
+        if len(word) < 3 or not word.replace("-", "").isalpha() or word in self.words:
             return word
         from lemminflect import getAllLemmas
 

@@ -1,87 +1,16 @@
 """What a description states as a whole, read from its normalised text (contractions as "did not",
-numbers before a unit as digits): the outcome it asks for, and the lanes of its road.
-
-The outcome: a collision ("was struck", "we want an impact", "there is the
-crash"), a near miss ("missed it by inches", "stopped 1 m short", "didn't hit him", "no contact was
-made") or a safe pass ("passes safely", "without problem", "uneventful"), read from the whole text
-after its words are normalised (contractions as "did not").
-
-A collision word counts only when nothing denies or hedges it just before ("must not hit", "almost
-hit", "to avoid a collision"): a denied collision after hard braking is the near miss people mean
-when they say it. A text that states none of these has no intent; nothing is assumed.
+numbers before a unit as digits): the lanes of its road, a clock time, the traffic, heavy rain. The
+outcome it states is read by :mod:`vei_scenario.language.outcome` (``stated_outcome`` here is that
+reading, under the name the reader has always imported).
 """
 
 from __future__ import annotations
 
 import re
 
-_COLLISION = re.compile(
-    r"(?<!time-to-)(?<!time to )(?<!near-)(?<!near )"  # ("time-to-collision", "near-collision": none)
-    r"\b(?:hit|hits|hitting|struck|strikes|striking|collid\w*|collision|crash|crashes|crashed|crashing|"
-    r"impact|rear-end\w*|rear end\w*|made contact|make contact|makes contact|ran into|runs into|run into|"
-    r"smash\w*|knock\w* (?:down|over)|thump|thrown onto|thrown over|ploughs? into|plowed into|slams? into|"
-    r"slammed into|ran over|runs over|run over|t-bone\w*|sideswip\w*|clipped|clips|contact|tapped|taps|touch|touches|"
-    r"touched|bumped|bumps|bump into|knocked|(?:went|go|goes|going|drove|drive|drives|ran|run|runs) into "
-    r"(?:the (?:back|side|rear) of (?:it|him|her|them|the \S+|his \S+|her \S+)|"
-    r"(?:its|his|her|their) (?:rear|back|side)|it|him|her|them))\b"
-    r"(?! (?:the |his |her |my |our )?brakes?\b| point| barrier| warning)"
-)
-#: Words that deny or hedge a collision word a few words after them.
-_DENY = re.compile(
-    r"\b(?:not|never|no|without|avoid|avoids|avoided|avoiding|almost|nearly|narrowly|barely|prevent\w*|"
-    r"would have|could have|nothing|nobody|no one|neither)\b(?:\s+[^\s,]+){0,3}\s*$"
-)
-_NEAR = re.compile(
-    r"\b(?:almost|nearly|narrowly|near miss|near-miss|near-collision|near collision|"
-    r"close call|just in time|by a whisker|by inches|by an inch|"
-    r"hair's breadth|only just|just missed|just misses|barely missed|barely misses|"
-    r"missed (?:it|him|her|them|us|me|the \S+|his \S+|her \S+|their \S+) by|"
-    r"stopp?(?:ed|s|ing)? [^.;]{0,40}(?:short of|from (?:it|him|her|them|the|his|her))|"
-    r"(?:metres?|meters?|m|inches) short|made it across|no contact|emergency stop|"
-    r"(?:he|she|it|they|just) miss(?:es|ed)?|miss(?:es|ed)? (?:us|me|him|her|it|them) by|"
-    r"to miss (?:us|me|him|her|it|them)|"
-    r"by a hair|by a whisker|"
-    r"by (?:centimetres|centimeters|millimetres|millimeters|a few (?:cm|centimetres|inches|feet))|"
-    r"stops? in time|stopped in time|(?:at the )?last (?:second|moment|minute)|"
-    r"(?:a|about a|1|one|half a|0\.5) (?:metre|meter|m|foot|yard) to spare|"
-    r"(?:was|were|is) (?:a bit |very |really |pretty |quite )?(?:tight|close)|but (?:very |really |quite )?close|"
-    r"stopp?(?:ed|s|ing)? (?:about |only |just )?\d+(?:\.\d+)? (?:m|metres?|meters?|feet|foot) (?:off|from|short))"
-)
-#: A sentence that is only the outcome, as a commentary says it ("Close!", "Clean.").
-_NEAR_SENTENCE = re.compile(r"(?:^|[.!?;] )(?:very |so |too |that was )?close (?:one |call |shave )?(?:[.!?]|$)")
-_SAFE_SENTENCE = re.compile(r"(?:^|[.!?;] )(?:all )?clean (?:[.!?]|$)")
-_SAFE = re.compile(
-    r"\b(?:safely|safe distance|without (?:any )?(?:problems?|conflict|incident|drama|issue|issues)|"
-    r"no problems?|no drama|no conflict|no incident|uneventful|plenty of (?:room|space)|lots of (?:room|space)|"
-    r"enough (?:room|space)|comfortably|let us go|lets us go|let me go|lets me go|gets through safely|"
-    r"lets? the ego (?:go|pass|through|by|past)|"
-    r"(?:loads|lots|heaps|tons|a lot) of (?:room|space)|room to spare|ample (?:margin|room|space|clearance)|"
-    r"clearance (?:exceeds|of more than|above)|(?:all|totally|completely|everything|it was|was) fine|all good|"
-    r"nothing (?:else )?(?:happened|happening|happens|happen)|nothing dramatic|"
-    r"(?:pass|passes|passed|goes|went) (?:\S+ )?fine|nobody close|no one close|"
-    r"pass(?:es|ed)? (?:him|her|it|them|the \S+ )?wide)"
-)
+from vei_scenario.language.outcome import stated_intent as stated_outcome
 
-
-def stated_outcome(text: str) -> str | None:
-    """``collision``, ``near_miss``, ``safe`` or None, from normalised, lowercased ``text``."""
-    positive = denied = False
-    for m in _COLLISION.finditer(text):
-        start = max(text.rfind(".", 0, m.start()), text.rfind(";", 0, m.start()), 0)
-        before = text[start : m.start()]
-        if _DENY.search(before):
-            denied = True
-        else:
-            positive = True
-    if positive:
-        return "collision"
-    near = _NEAR.search(text) is not None or _NEAR_SENTENCE.search(text) is not None
-    if (_SAFE.search(text) or _SAFE_SENTENCE.search(text)) and not near:
-        return "safe"
-    if near or denied:
-        return "near_miss"
-    return None
-
+__all__ = ["stated_outcome", "stated_lanes", "stated_clock", "stated_density", "stated_heavy_rain"]
 
 _WORD_NUMBERS = {"one": 1, "two": 2, "three": 3, "four": 4, "1": 1, "2": 2, "3": 3, "4": 4}
 _N = r"(one|two|three|four|[1-4])"

@@ -1,0 +1,208 @@
+"""One path per road user (:mod:`vei_scenario.language.motion`): the manner said with a path is not a
+second behaviour. Wordings written for each construction, none taken from a corpus."""
+
+from __future__ import annotations
+
+import pytest
+
+from vei_scenario.language.reader import read
+
+
+def _behaviours(text: str) -> list[str]:
+    (actor,) = read(text).actors
+    return [b[0] for b in actor.behaviours]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "At the signalised crossroads a taxi from the right arm drives through against the red light, passing the ego.",
+        "A moped rider came out of the junction on my left against a red light.",
+        "The ego goes straight on at 30 km/h; a van from the left arm runs the red signal and overtakes the ego.",
+    ],
+)
+def test_running_the_red_is_the_whole_path(text):
+    names = _behaviours(text)
+    assert "run_red_light" in names and not {"overtake", "turn_into"} & set(names)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "At the T-junction a delivery van on the side road to the right stops at the line and waits.",
+        "Ego on the main road at 40 km/h; a cyclist on the side road on the left comes to a stop at the give-way line.",
+        "A tractor in the side road on my right halts at the junction and sits there while I go past.",
+    ],
+)
+def test_a_road_user_on_a_junction_arm_that_stops_gives_way(text):
+    assert _behaviours(text) == ["give_way"]
+
+
+def test_a_car_standing_on_a_junction_arm_stays_stopped():
+    r = read("A parked car stands in the side road on the left; the ego drives past at 30 km/h.")
+    assert all(b[0] != "give_way" for a in r.actors for b in a.behaviours)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist on the wrong side of the road rides straight at the ego.",
+        "A girl on an e-scooter is riding the wrong way down the middle of the road towards us.",
+        "Some lad on a push bike came the wrong way round the bend, on my side, heading for me.",
+    ],
+)
+def test_a_rider_the_wrong_way_away_from_the_kerb_comes_head_on_in_the_ego_lane(text):
+    assert _behaviours(text) == ["wrong_way"]
+
+
+def test_a_rider_the_wrong_way_along_the_kerb_rides_along_the_road():
+    assert _behaviours("A kid on a scooter rides against the traffic along the kerb on my left.") == ["along_road"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "The ego is heading southbound on Mill Road at 25 mph. A moped was riding northbound in the southbound lane.",
+        "Ego eastbound at 50 km/h; a cyclist heading westbound along the eastbound carriageway.",
+        "My car was westbound on the ring road when a van came eastbound down the westbound lane.",
+    ],
+)
+def test_heading_one_compass_way_in_the_lane_of_the_other_is_the_wrong_way(text):
+    (actor,) = read(text).actors
+    assert [b[0] for b in actor.behaviours] == ["wrong_way"]
+    # in the ego's lane facing it, or (said to come the opposite way: sides.py) oncoming drifting over
+    assert (actor.relation, actor.facing) in (("ahead", "against"), ("oncoming", None))
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A taxi swings out of a driveway on the left and we collide.",
+        "A moped darts across from the right pavement and they crash.",
+        "The jogger steps off the kerb on the left without looking and we hit.",
+    ],
+)
+def test_a_contact_of_both_parties_is_the_outcome_not_a_behaviour(text):
+    r = read(text)
+    assert r.intent == "collision" and "sudden_stop" not in [b[0] for a in r.actors for b in a.behaviours]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist rides straight on in the lane beside the turning ego; the set-up should yield a near miss.",
+        "An e-scooter keeps going along the cycle lane on the right while the ego turns right, to yield an impact.",
+        "A pedestrian walks along the left verge as the ego passes; the layout is meant to yield a safe pass.",
+    ],
+)
+def test_yield_with_an_object_produces_it_and_is_no_giving_way(text):
+    assert "give_way" not in [b[0] for a in read(text).actors for b in a.behaviours]
+
+
+@pytest.mark.parametrize(
+    "text, relation, turn",
+    [
+        ("A taxi in the left lane 15 m ahead swings right across the ego to turn into a side road.", "left", "right"),
+        (
+            "The van in the lane to my right cuts left across me to turn into one of the side streets on the left.",
+            "right",
+            "left",
+        ),
+        ("A cyclist in the right lane suddenly swerves left across my lane into a side road.", "right", "left"),
+    ],
+)
+def test_a_side_road_turned_into_is_where_it_goes_not_where_it_comes_from(text, relation, turn):
+    (actor,) = read(text).actors
+    assert (actor.relation, actor.behaviours[0][0], actor.behaviours[0][1]["turn"]) == (relation, "forced_turn", turn)
+
+
+def test_a_side_road_come_out_of_is_still_where_it_comes_from():
+    (van,) = read("A van pulls out of the side road on the left into my lane.").actors
+    assert (van.relation, van.behaviours[0][0]) == ("junction_left", "turn_into")
+
+
+def test_the_gap_said_of_a_forced_turn_is_its_gap_when_it_cuts_across():
+    (taxi,) = read("A taxi in the left lane 15 m ahead swings right across the ego to turn into a side road.").actors
+    assert taxi.behaviours[0][1]["gap_m"] == 15.0
+
+
+@pytest.mark.parametrize(
+    "text, relation",
+    [
+        ("A cyclist came out of a side road on the right and turned into my road ahead of me.", "junction_right"),
+        ("A moped shot out from the side road on the right straight in front of me.", "junction_right"),
+        ("An e-scooter bursts out of a side street on my left into my lane.", "junction_left"),
+        ("A girl on a bike nips out of the side road on the left and heads off in front of us.", "junction_left"),
+    ],
+)
+def test_a_rider_or_vehicle_out_of_a_side_road_enters_from_that_arm(text, relation):
+    (actor,) = read(text).actors
+    assert (actor.relation, actor.behaviours[0][0]) == (relation, "turn_into")
+
+
+def test_a_walker_out_of_a_side_road_crosses():
+    (child,) = read("A child pops out of a side street on the left.").actors
+    assert child.behaviours[0][0] == "cross_in_front"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A taxi in the right lane travelling alongside moves across into my lane.",
+        "An e-scooter in the bike lane on the right swerves out into my lane just ahead.",
+        "A coach in the left lane changes lanes into the ego's lane 20 m ahead.",
+        "A van from the lane on our left keeps going straight into our lane ahead of us.",
+    ],
+)
+def test_a_move_into_the_ego_lane_is_a_cut_in(text):
+    assert _behaviours(text) == ["cut_in"]
+
+
+def test_a_move_into_another_lane_is_a_lane_change():
+    assert _behaviours("A lorry in the right lane moves over into the left lane.") == ["change_lane"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "At the roundabout a van waiting at the entry on the left gives us the right of way.",
+        "A cyclist at the junction on the right gave the ego priority.",
+        "A lorry on the side road on my left stops and gives me the way.",
+    ],
+)
+def test_giving_the_ego_the_way_is_giving_way(text):
+    assert _behaviours(text)[-1:] == ["give_way"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "At the crossroads a pickup heading southbound made a left turn across the path of the ego, which was "
+        "northbound at 30 mph.",
+        "V1 was northbound at 40 km/h at the lights. V2, southbound, turned left across the front of V1.",
+        "The insured vehicle was eastbound through the junction at 20 mph; a taxi, westbound, turned left "
+        "across its path.",
+    ],
+)
+def test_a_left_turn_across_by_the_party_heading_the_other_way_is_a_turn_across(text):
+    (actor,) = read(text).actors
+    assert (actor.relation, actor.behaviours[0][0]) == ("junction_opposite", "turn_across")
+
+
+def test_a_left_turn_across_by_a_party_heading_the_same_way_stays_a_forced_turn():
+    text = "At the crossroads a pickup heading northbound made a left turn across the path of the ego, northbound too."
+    assert _behaviours(text) == ["forced_turn"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "An e-scooter rider was ahead of me on the left. I was hanging back. Then he swung right across my lane.",
+        "A taxi was in front of me. I was keeping my distance. Then she turned left into a side street.",
+        "A van sat ahead of us in the right lane. We were doing 30 mph. Then he made a left turn across our lane.",
+    ],
+)
+def test_he_or_she_in_a_first_person_story_is_the_road_user_not_the_narrator(text):
+    r = read(text)
+    (actor,) = r.actors
+    assert r.ego_route is None and actor.behaviours[0][0] == "forced_turn"

@@ -1,0 +1,168 @@
+"""The outcome a description states, read from the structure of its clauses
+(:mod:`vei_scenario.language.outcome`). Each group is one construction, in wordings written for it
+(none taken from a corpus)."""
+
+from __future__ import annotations
+
+import pytest
+
+from vei_scenario.language.outcome import outcome_cues, stated_intent
+from vei_scenario.language.reader import _tokens, read
+
+
+def _intent(text: str) -> str | None:
+    return stated_intent(" ".join(_tokens(text)))
+
+
+def _case(group: dict[str, list[str]]):
+    return [(text, intent) for intent, texts in group.items() for text in texts]
+
+
+# a verb of contact, in any tense or voice, or a noun of one: a collision
+CONTACT = {
+    "collision": [
+        "The moped was rammed by a van at the lights.",
+        "A jogger got sideswiped by the bus.",
+        "I grazed the cyclist with my wing mirror.",
+        "The delivery bike clipped our front wing as it passed.",
+        "The tram ploughed into the back of the taxi.",
+        "I rolled into the side of her at walking pace.",
+        "Report: lorry vs cyclist at the lights, ambulance requested.",
+        "There was a sickening thud and the scooter went under the car.",
+        "The lorry swiped my wing mirror.",
+        "A van shunted us from behind at the lights.",
+        "The motorbike wiped out the cyclist.",
+        "The e-bike rider was thrown over the bonnet.",
+    ],
+}
+# a contact denied in its clause, or hedged: not a collision
+DENIED_OR_HEDGED = {
+    "near_miss": [
+        "I stood on the brakes and never touched him.",
+        "We dodged left without touching the skateboarder.",
+        "The ego braked hard, so no collision occurred.",
+        "The bus nearly flattened us.",
+        "The ego narrowly avoided hitting the pram.",
+        "That courier almost wiped me out on the bend.",
+    ],
+}
+# two denials cancel: the contact happened
+DOUBLE_DENIAL = {
+    "collision": [
+        "The taxi was unable to avoid a crash with the moped.",
+        "Our car could not avoid the collision with the jogger.",
+        "The minibus failed to prevent an impact with the rider.",
+    ],
+}
+# a verb of missing with someone as its object, or a small margin: a near miss
+MISS_AND_MARGIN = {
+    "near_miss": [
+        "He missed my mirror by a hand's width.",
+        "The two scooters missed one another somehow.",
+        "I pulled up a few centimetres short of the pram.",
+        "The ego came to a halt three feet from her.",
+        "Honestly, it was tight.",
+    ],
+}
+# trouble denied, or someone giving way with nothing else said: a safe pass
+SAFE = {
+    "safe": [
+        "The bus pulled out well ahead. No dramas at all.",
+        "Nothing untoward happened at the roundabout.",
+        "The tractor waited at the gate and let me through.",
+        "I hung back behind the horse riders until the lane widened.",
+        "The van moved over with loads of space to spare.",
+    ],
+}
+# the ego's evasion, with no contact said: a near miss
+EVASION = {
+    "near_miss": [
+        "A lorry drifted across, I veered onto the verge.",
+        "The cyclist wobbled out and we swerved hard right.",
+        "Yanked the wheel and got round my neighbour's pushchair somehow.",
+        "The van kept coming as if nothing happened, so I had to dodge him.",
+    ],
+}
+# what would have happened, or came within a margin of happening: a near miss
+COUNTERFACTUAL = {
+    "near_miss": [
+        "The kid came within a metre of hitting her.",
+        "If I had not swerved, I would have hit him.",
+        "If the ego hadn't braked, it'd have struck the jogger.",
+        "The van stopped inches from my door.",
+        "I only just got out of the way.",
+        "The ego stops half a metre before the child.",
+        "Expected outcome: minimum TTC 0.8 s.",
+        "The TTC dropped to 0.9 s as the van merged.",
+        "The lowest time to collision was 1.1 s.",
+    ],
+}
+# what is denied of a near miss, or free of trouble, is a safe pass
+SAFE_FORMS = {
+    "safe": [
+        "All clear.",
+        "No near miss, no collision, nothing.",
+        "A collision-free pass of the cyclist, please.",
+        "The ego passes the horse riders comfortably.",
+        "The cut-in goes smoothly.",
+    ],
+}
+# a body thrown onto or off the ego's parts was hit
+THROWN = {
+    "collision": [
+        "He bounced off my bonnet and landed in the road.",
+        "The cyclist rolled over the windscreen.",
+        "The jogger slid across the hood and over the roof.",
+    ],
+}
+# nothing about the outcome is said: none is assumed
+UNSAID = {
+    None: [
+        "A cyclist rides ahead of the ego at 20 km/h.",
+        "The ego hits 50 km/h just before the junction.",
+        "Traffic was slow because of a tube strike, and a van cut in ahead.",
+        "A car pulls into my lane about 30 m ahead.",
+        "Keep the time-to-collision above 2 s while the van merges.",
+        "A truck ahead of the ego brakes sharply.",
+        "The van behind tailgated me way too close.",
+        "The lorry pulled off the hard shoulder ahead of us.",
+        "Trigger the van when the time-to-collision reaches 1.5 s.",
+        "A bus ahead pulls in smoothly at its stop.",
+    ],
+}
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    _case(CONTACT)
+    + _case(DENIED_OR_HEDGED)
+    + _case(DOUBLE_DENIAL)
+    + _case(MISS_AND_MARGIN)
+    + _case(SAFE)
+    + _case(EVASION)
+    + _case(COUNTERFACTUAL)
+    + _case(SAFE_FORMS)
+    + _case(THROWN)
+    + _case(UNSAID),
+)
+def test_the_outcome_is_read_from_the_clause(text, intent):
+    assert _intent(text) == intent, outcome_cues(" ".join(_tokens(text)))
+
+
+def test_contact_after_a_near_miss_is_a_collision():
+    assert _intent("He missed the first scooter by inches but then struck the second one.") == "collision"
+
+
+def test_a_negation_ends_with_its_clause():
+    # ("not" denies the stop; the contact after "and" stands)
+    assert _intent("The lorry did not stop and hit the cyclist.") == "collision"
+
+
+def test_each_cue_names_the_clause_it_was_read_from():
+    cues = outcome_cues(" ".join(_tokens("The van braked late, but no contact.")))
+    assert [(c.kind, c.words) for c in cues] == [("denied", "no contact")]
+
+
+def test_the_reader_takes_the_stated_outcome():
+    assert read("A rider on an e-scooter shoots out from the left and I tag him at 20 km/h.").intent == "collision"
+    assert read("A cyclist crosses ahead from the left; the ego waits and lets him go.").intent == "safe"

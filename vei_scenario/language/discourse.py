@@ -1,0 +1,933 @@
+"""Who is who in a description: the ego and the other road users as discourse referents.
+
+People name the same road user in many ways, name the ego in the third person, and name people and
+vehicles that are no road users of the scenario at all. This module keeps a small model of referents
+over the reader's words, built from the grammar that tells new from known, and then says each
+referent the one way the reader reads it ("the ego", "a e-scooter", "the truck"), so the reader's
+actors and the ego's speed follow the referents. It runs once on a description's words, before the
+reader scans them (:func:`resolve`).
+
+- **New or known.** An indefinite article opens a new referent ("a cyclist", "another cyclist"); a
+  definite article, or a bare singular noun inside a clause, is the most recent one of its type ("ego
+  stays behind cyclist", "the silver hatchback" → "the hatchback"); a definite general noun is the
+  most recent vehicle ("the front vehicle" after "a coach" → "the truck"); an apposition (", a coach,")
+  is the same one; a name in brackets is its name ("a passenger car (the challenger) ... challenger
+  speed 90 km/h"), as is "speed of cyclist 15 km/h".
+- **One road user, not two.** A person on or riding a vehicle is one rider of it ("a lad on one of
+  those electric scooters"); a person pushing a bike is one walker; the driver of a vehicle is the
+  vehicle ("the driver of the lorry ahead", "the van's driver").
+- **The ego in the third person.** Vehicle labels ("Car 3 to control", "Vehicle A ... Vehicle B", "Car
+  B (ego)"): the one marked as the ego, else (no ego named otherwise) number one or A, else the first;
+  every other label is a road user of its noun's type. A vehicle in apposition to the ego ("V1, a Ford
+  Focus,"); the narrator's vehicle named as one ("we were in a hire car", "car full of bags"); in a
+  report that names no ego, the one motor vehicle set against a walker or rider ("car versus
+  e-scooter ... car doing 20 mph", "Vehicle was turning right ..., pedestrian crossing"). A speed said
+  of the ego and another together ("a van and I were both doing 70 km/h") is each one's.
+- **Lists.** A road user as a field name ("cyclist: comes out from the left") is the subject of the
+  value; lettered or numbered labels of a list ("actor A: motorbike ...", "actor B: oncoming car")
+  each name a new road user, and the label said again is that one.
+- **No road users.** A walker's companion ("a man with his dog", unless named again doing something),
+  passengers and pets inside the vehicle ("kids bickering in the back"), the narrator's own people
+  ("drove my kid to school"), a vehicle's load, and whoever arrives after a stated collision with
+  someone named before it ("the ambulance came"). Their words are returned, to be listed as not used.
+- **Names no dictionary knows.** What the ego follows or overtakes named by a make or model
+  ("following a silver Astra") is a vehicle.
+
+It knows no content words of its own: which words name road users (and of what type) comes from the
+reader's lexicon through ``kind_at``; what it adds are closed classes of function words (articles,
+possessives, pronouns, forms of "be", prepositions) and of a few verbs (of riding, following and
+contact), and lemmas from lemminflect.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+#: ``kind_at(tokens, i)``: the road-user type named by a phrase starting at ``i`` ("ego" for the ego)
+#: and the phrase's length, or None when no road-user phrase starts there.
+KindAt = Callable[[list[str], int], "tuple[str, int] | None"]
+#: ``known(tokens, i)``: whether the reader has any phrase starting at ``i``.
+Known = Callable[[list[str], int], bool]
+
+INDEFINITE = frozenset({"a", "an", "some", "another", "one", "this"})  # ("this guy on a bike": new)
+DEFINITE = frozenset({"the", "that", "these", "those"})
+POSSESSIVE = frozenset({"my", "our", "his", "her", "their", "its", "your"})
+DETERMINERS = INDEFINITE | DEFINITE | POSSESSIVE
+FIRST_PERSON = frozenset({"i", "we", "me", "us", "my", "our"})
+BE = frozenset({"am", "is", "are", "was", "were", "be", "been", "being", "sat", "sitting"})
+PUNCT = frozenset({".", ";", "!", "?", ":", ","})
+SENTENCE_END = frozenset({".", ";", "!", "?", ":"})
+#: Prepositions that join a person to the vehicle it rides ("a lad on a scooter", "a kid astride a bike").
+RIDING = frozenset({"on", "riding", "astride", "aboard"})
+VEHICLES = frozenset({"car", "van", "truck"})
+VULNERABLE = frozenset({"pedestrian", "bicycle", "e-scooter"})
+#: The words a report sets two parties against each other with ("car versus e-scooter").
+VERSUS = frozenset({"versus", "vs", "v"})
+#: Nouns that name any vehicle: a definite one of them is the most recent vehicle named.
+GENERAL_VEHICLE = frozenset({"vehicle", "vehicles"})
+#: The plain noun the reader reads for each type, to say a referent again as the reader reads it.
+NOUN = {"car": "car", "van": "van", "truck": "truck", "bicycle": "cyclist", "e-scooter": "e-scooter",
+        "pedestrian": "pedestrian"}  # fmt: skip
+#: Words of where someone is relative to another, after a vehicle noun ("the car ahead"): that vehicle
+#: is placed relative to the ego, so it is not the ego.
+PLACED = frozenset({"ahead", "behind", "in", "parked", "oncoming", "following", "alongside", "beside", "next"})
+#: Words naming a quantity after a referent ("speed of cyclist 15 km/h").
+SPEED_NOUNS = frozenset({"speed", "velocity"})
+
+
+@dataclass
+class Referent:
+    """One road user (or the ego) as the text names it."""
+
+    kind: str
+    noun: str  # the noun it was last named by
+
+
+@dataclass
+class _Phrase:
+    start: int  # its determiner, or its first word
+    head: int  # the road-user phrase
+    end: int  # after it
+    det: str
+    kind: str
+
+
+def _phrase_at(tokens: list[str], i: int, kind_at: KindAt, known: Known, reach: int = 3) -> _Phrase | None:
+    """The noun phrase whose road-user noun starts at ``i``: its determiner (within ``reach`` words
+    before, past modifiers the reader has no phrase for) and its type."""
+    found = kind_at(tokens, i)
+    if found is None:
+        return None
+    kind, n = found
+    start, det = i, ""
+    for j in range(i - 1, max(i - 1 - reach, -1), -1):
+        w = tokens[j]
+        if w in DETERMINERS:
+            start, det = j, w
+            break
+        if w in PUNCT or not w.replace("-", "").isalpha() or known(tokens, j):
+            break
+    return _Phrase(start, i, i + n, det, kind)
+
+
+def _phrases(tokens: list[str], kind_at: KindAt, known: Known) -> list[_Phrase]:
+    out, i = [], 0
+    while i < len(tokens):
+        p = _phrase_at(tokens, i, kind_at, known)
+        if p is None:
+            i += 1
+            continue
+        out.append(p)
+        i = p.end
+    return out
+
+
+def _unknown_person(tokens: list[str], i: int, known: Known) -> int | None:
+    """Where the noun phrase ends at ``i`` begins, when it is a determiner and up to three words the
+    reader has no phrase for ("some lad", "a pizza courier"), else None."""
+    for j in range(i, max(i - 4, -1), -1):
+        if tokens[j] in DETERMINERS:
+            return j if j < i else None
+        if tokens[j] in PUNCT or not tokens[j].replace("-", "").isalpha() or (j < i and known(tokens, j)):
+            return None
+    return None
+
+
+def _riders(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
+    """ "a lad on a scooter", "a student on one of those hire bikes", "a woman riding a bike": one
+    referent of the vehicle's type, said with the person's determiner."""
+    out: list[str] = []
+    i = 0
+    while i < len(tokens):
+        if tokens[i] not in RIDING or not out:
+            out.append(tokens[i])
+            i += 1
+            continue
+        # the person: a walker's noun (or a word the reader lacks) right before the preposition
+        k = len(out) - 1
+        person_start = None
+        for back in range(k, max(k - 3, -1), -1):
+            found = kind_at(out, back)
+            if found is not None and found[0] == "pedestrian" and back + found[1] == k + 1:
+                p = _phrase_at(out, back, kind_at, known)
+                person_start = p.start if p is not None and p.det else None
+                break
+        if person_start is None and not known(out, k):
+            person_start = _unknown_person(out, k, known)
+        if person_start is None or out[person_start] not in DETERMINERS:
+            out.append(tokens[i])
+            i += 1
+            continue
+        # the vehicle: [det | one of those] [up to two modifiers] a rideable noun
+        j = i + 1
+        if tokens[j : j + 3] in (["one", "of", "those"], ["one", "of", "these"], ["one", "of", "the"]):
+            j += 3
+        elif j < len(tokens) and tokens[j] in DETERMINERS:
+            j += 1
+        head = next(
+            (h for h in range(j, min(j + 3, len(tokens))) if kind_at(tokens, h) is not None),
+            None,
+        )
+        ride = kind_at(tokens, head) if head is not None else None
+        between_known = head is not None and any(known(tokens, h) for h in range(j, head))
+        if ride is None or ride[0] in ("pedestrian", "truck", "ego") or between_known:
+            out.append(tokens[i])
+            i += 1
+            continue
+        det = out[person_start]
+        det = "a" if det in INDEFINITE | POSSESSIVE else det  # ("my mate on his bike": a rider)
+        out[person_start:] = [det]
+        i = j
+    return out
+
+
+#: Verbs of riding: a person doing one of them to a vehicle rides it ("a woman riding a bike").
+RIDE_VERBS = frozenset({"ride", "pedal", "drive", "scoot"})
+
+
+def _pushed(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "a man pushing a bike", "a girl wheeling her e-scooter": a walker with a vehicle in hand, one
+    road user (a walker); any verb in -ing but a verb of riding puts the bike in the walker's hands."""
+    out: list[str] = []
+    i = 0
+    while i < len(tokens):
+        w = tokens[i]
+        if w.endswith("ing") and out and not _lemma_in(w, RIDE_VERBS) and w not in RIDING:
+            before = next((b for b in range(len(out) - 1, max(len(out) - 3, -1), -1) if kind_at(out, b)), None)
+            person = kind_at(out, before) if before is not None else None
+            j = i + 1 + (i + 1 < len(tokens) and tokens[i + 1] in DETERMINERS)
+            head = next((h for h in range(j, min(j + 3, len(tokens))) if kind_at(tokens, h) is not None), None)
+            thing = kind_at(tokens, head) if head is not None else None
+            plain = head is not None and not any(known(tokens, h) for h in range(j, head))
+            if (
+                person is not None
+                and person[0] == "pedestrian"
+                and before + person[1] == len(out)
+                and thing is not None
+                and thing[0] in ("bicycle", "e-scooter")
+                and plain
+            ):
+                dropped.extend(tokens[i : head + thing[1]])
+                i = head + thing[1]
+                continue
+        out.append(w)
+        i += 1
+    return out
+
+
+def _person_at(tokens: list[str], i: int, kind_at: KindAt, known: Known) -> int:
+    """The length of a noun for whoever is at the wheel or handlebars at ``i``: a road-user noun ("the
+    driver", "the cyclist") or an agent noun the reader has no phrase for ("the rider", "the
+    operator"), else 0."""
+    found = kind_at(tokens, i)
+    if found is not None:
+        return found[1] if found[0] != "ego" else 0
+    w = tokens[i]
+    return 1 if w.endswith(("er", "or")) and w.isalpha() and not known(tokens, i) and _agent_noun(w) else 0
+
+
+def _agent_noun(word: str) -> bool:
+    """Whether ``word`` names who does a verb ("rider": ride, "operator": operate, "owner": own), not a
+    thing or place ("corner", "border")."""
+    from lemminflect import getAllLemmas
+
+    stems = (word[:-1], word[:-2], word[:-2] + "e")
+    return any(stem in getAllLemmas(stem).get("VERB", ()) for stem in stems if len(stem) > 2)
+
+
+def _drivers(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
+    """ "the driver of the lorry ahead", "the rider of a moped", "the van's driver": whoever is at the
+    wheel is the vehicle, one road user (said as the vehicle's phrase)."""
+    out: list[str] = []
+    i = 0
+    while i < len(tokens):
+        n = _person_at(tokens, i, kind_at, known) if out and out[-1] in DETERMINERS else 0
+        if n and tokens[i + n : i + n + 1] == ["of"] and i + n + 1 < len(tokens) and tokens[i + n + 1] in DETERMINERS:
+            head = next((h for h in range(i + n + 2, min(i + n + 5, len(tokens))) if kind_at(tokens, h)), None)
+            q = _phrase_at(tokens, head, kind_at, known) if head is not None else None
+            if q is not None and q.kind in VEHICLES and q.start == i + n + 1:
+                out.pop()  # (the person's article)
+                i = q.start
+                continue
+        n = _person_at(tokens, i, kind_at, known)
+        if n and len(out) >= 2 and out[-1] == "'s" and (kind_at(out, len(out) - 2) or ("", 0))[0] in VEHICLES:
+            out.pop()  # ("the van's driver": the van)
+            i += n
+            continue
+        out.append(tokens[i])
+        i += 1
+    return out
+
+
+def _companions(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "a woman with her dog": the walker is the road user; the one with it is not, unless it is
+    named again (then it is a referent of its own from there: "the dog" is said "a dog")."""
+    out: list[str] = []
+    companions: set[str] = set()
+    i = 0
+    while i < len(tokens):
+        if tokens[i] in companions and out and out[-1] in DEFINITE | POSSESSIVE:
+            companions.discard(tokens[i])
+            out[-1] = "an" if tokens[i][0] in "aeiou" else "a"
+            out.append(tokens[i])
+            i += 1
+            continue
+        if tokens[i] == "with" and out:
+            before = next((b for b in range(len(out) - 1, max(len(out) - 3, -1), -1) if kind_at(out, b)), None)
+            person = kind_at(out, before) if before is not None else None
+            ends = person is not None and before + person[1] == len(out)
+            j = i + 1
+            if j < len(tokens) and tokens[j] in DETERMINERS:
+                j += 1
+            head = next((h for h in range(j, min(j + 3, len(tokens))) if kind_at(tokens, h) is not None), None)
+            other = kind_at(tokens, head) if head is not None else None
+            if ends and person[0] == "pedestrian" and other is not None and other[0] == "pedestrian":
+                dropped.extend(tokens[j : head + other[1]])
+                companions.add(tokens[head + other[1] - 1])
+                i = head + other[1]
+                continue
+        out.append(tokens[i])
+        i += 1
+    return out
+
+
+def _narrators_people(tokens: list[str], kind_at: KindAt, dropped: list[str]) -> list[str]:
+    """People and animals the narrator calls theirs ("drove my kid to school", "our dog in the back")
+    travel with the ego or stay at home: no road users of the scenario."""
+    out: list[str] = []
+    i = 0
+    while i < len(tokens):
+        if tokens[i] in ("my", "our") and i + 1 < len(tokens):
+            found = kind_at(tokens, i + 1)
+            owner = found is not None and tokens[i + 1 + found[1] : i + 2 + found[1]] == ["'s"]  # ("my mate's car")
+            if found is not None and found[0] == "pedestrian" and not owner:
+                dropped.extend(tokens[i : i + 1 + found[1]])
+                i += 1 + found[1]
+                continue
+        out.append(tokens[i])
+        i += 1
+    return out
+
+
+def _apposition_end(tokens: list[str], i: int, kind_at: KindAt, known: Known) -> int | None:
+    """Where an apposition starting at ``i`` ends (", a tiny Fiat," / "a battered old Ford"): an
+    indefinite article, up to three words that are vehicle nouns or words the reader has no phrase
+    for, then a punctuation mark or the end."""
+    j = i + 1 if i < len(tokens) and tokens[i] == "," else i
+    if j >= len(tokens) or tokens[j] not in ("a", "an"):
+        return None
+    for k in range(j + 1, min(j + 5, len(tokens) + 1)):
+        if k == len(tokens) or tokens[k] in PUNCT:
+            found = [kind_at(tokens, h) for h in range(j + 1, k)]
+            if any(f is not None and f[0] not in VEHICLES for f in found):
+                return None  # (", a cyclist, ...": someone else)
+            return k if any(f is not None for f in found) or k > j + 1 else None
+        if not tokens[k].replace("-", "").isalpha() or (known(tokens, k) and kind_at(tokens, k) is None):
+            return None  # (", a car ahead brakes": a clause of its own)
+    return None
+
+
+def _own_vehicle(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """The narrator's vehicle named as a vehicle ("we were in a hire car", "car full of bags") is the
+    ego; a second name of it in apposition is the same; what it is full of is no road user."""
+    first_person = bool(FIRST_PERSON & set(tokens))
+    out = list(tokens)
+    i = 0
+    while i < len(out):
+        p = _phrase_at(out, i, kind_at, known)
+        if p is None or p.kind not in VEHICLES:
+            i += 1
+            continue
+        full = out[p.end : p.end + 2] == ["full", "of"]
+        inside = first_person and p.det in ("a", "an", "my", "our") and p.start > 0 and out[p.start - 1] == "in"
+        if inside:  # "in a hire car" said of the narrator being somewhere ("we were ... in a hire car")
+            j = p.start - 2
+            while j >= 0 and out[j] not in SENTENCE_END and out[j] not in BE:
+                j -= 1
+            inside = j >= 1 and out[j] in BE and out[j - 1] in ("i", "we")
+        if full:
+            k = p.end + 2
+            while k < len(out) and out[k] not in PUNCT:
+                k += 1
+            dropped.extend(out[p.end : k])
+            del out[p.end : k]
+        if inside or (full and first_person and p.det in ("", "my", "our")):
+            dropped.extend(out[p.start : p.end])
+            out[p.start : p.end] = ["the", "ego"]
+            after = p.start + 2
+            end = _apposition_end(out, after, kind_at, known)
+            if end is not None:
+                dropped.extend(w for w in out[after:end] if w != ",")
+                del out[after:end]
+            i = p.start + 2
+            continue
+        i = p.end
+    return out
+
+
+def _ego_apposition(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "the ego, an estate car, travels ...", "Vehicle 1 (V1), a Ford Focus, ...": a vehicle said in
+    apposition to the ego is the ego, no second road user."""
+    out = list(tokens)
+    i = 0
+    while i + 1 < len(out):
+        if out[i : i + 2] == ["the", "ego"] and i + 2 < len(out) and out[i + 2] == ",":
+            end = _apposition_end(out, i + 2, kind_at, known)
+            if end is not None:
+                dropped.extend(out[i + 3 : end])
+                del out[i + 2 : end]
+        i += 1
+    return out
+
+
+#: The places inside a vehicle where passengers and pets ride ("in the back", "on the back seat",
+#: "in the boot", "in a carrier"): someone there travels with the ego, no road user.
+INTERIOR = frozenset({"back", "boot", "trunk", "seat", "seats", "carrier", "footwell", "cage", "crate"})
+
+
+def _passengers(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """People and animals said to be inside the vehicle ("kids bickering in the back", "the cat in a
+    carrier on the back seat") travel with the ego: no road users."""
+    out = list(tokens)
+    i = 0
+    while i < len(out):
+        p = _phrase_at(out, i, kind_at, known)
+        if p is None or p.kind != "pedestrian":
+            i += 1
+            continue
+        inside = False
+        for k in range(p.end, min(p.end + 3, len(out))):
+            if out[k] in PUNCT:
+                break
+            if out[k] in ("in", "on"):
+                rest = out[k + 1 : k + 5]
+                stop = next((n for n, w in enumerate(rest) if w in PUNCT), len(rest))
+                inside = any(w in INTERIOR for w in rest[:stop][:3])
+                break
+        if inside and (p.det in DEFINITE or p.det == "" or p.det in POSSESSIVE or p.det in ("a", "an")):
+            start = p.start - (p.start > 0 and out[p.start - 1].isdigit())
+            dropped.extend(out[start : p.end])
+            del out[start : p.end]
+            i = start
+            continue
+        i = p.end
+    return out
+
+
+#: Verbs of contact: after a clause that says the collision, someone named for the first time arrives
+#: in its aftermath ("the ambulance came", "the bus driver behind us stopped to help").
+CONTACT = frozenset({"hit", "strike", "collide", "clip", "crash", "smash", "knock", "tag", "rear-end", "plough"})
+
+
+def _lemma_in(word: str, lemmas: frozenset[str]) -> bool:
+    from lemminflect import getAllLemmas
+
+    return word in lemmas or any(x in lemmas for forms in getAllLemmas(word).values() for x in forms)
+
+
+PRONOUNS = frozenset({"him", "her", "it", "them", "us", "me", "he", "she", "they", "we", "i"})
+
+
+def _hits_someone(tokens: list[str], k: int, kind_at: KindAt) -> bool:
+    """Whether the contact verb at ``k`` says a collision: a road user, a pronoun or a possessive after
+    it ("we hit him", "struck the cyclist", "clipped his back wheel"), or a verb that needs none ("we
+    collided"); not "hit the brakes"."""
+    if _lemma_in(tokens[k], frozenset({"collide", "crash"})):
+        return True
+    for j in range(k + 1, min(k + 4, len(tokens))):
+        if tokens[j] in PUNCT:
+            break
+        if tokens[j] in PRONOUNS or tokens[j] in POSSESSIVE - {"my", "our", "your"} or kind_at(tokens, j):
+            return True  # ("hit him", "clipped his back wheel", "struck the cyclist")
+    return False
+
+
+def _aftermath(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """Road users first named with "the" (or bare) after the sentence that says the collision ("We hit
+    him; he was talking when the ambulance came", "the bloke from the chippy came out") come in its
+    aftermath: no road users of the scenario. One named with "a", one already named before, and one
+    placed relative to someone ("the cyclist behind me swerved") stay."""
+    from vei_scenario.language.stated import stated_outcome
+
+    if stated_outcome(" ".join(tokens)) != "collision":
+        return tokens  # ("a van nearly hit me. Then the cyclist behind it ...": no aftermath)
+    contact = next(
+        (k for k, w in enumerate(tokens) if _lemma_in(w, CONTACT) and _hits_someone(tokens, k, kind_at)), None
+    )
+    if contact is None:
+        return tokens
+    end = next((k for k in range(contact, len(tokens)) if tokens[k] in (".", ";", "!", "?")), None)
+    if end is None:
+        return tokens
+    before = {p.kind for p in _phrases(tokens[:end], kind_at, known)}
+    if not before - {"ego"}:
+        return tokens  # ("We collided. The van had pulled out ...": the one hit, told after)
+    out = tokens[: end + 1]
+    i = end + 1
+    while i < len(tokens):
+        p = _phrase_at(tokens, i, kind_at, known)
+        placed = p is not None and any(w in PLACED for w in tokens[p.end : p.end + 2])  # ("the cyclist behind me")
+        if p is None or p.kind in before or p.kind == "ego" or p.det not in ("the", "") or placed:
+            out.append(tokens[i])
+            i += 1
+            continue
+        if p.start < i:  # (its article and modifiers were copied already)
+            del out[len(out) - (i - p.start) :]
+        dropped.extend(tokens[p.start : p.end])
+        i = p.end
+    return out
+
+
+#: Words that name a road user of no particular type: as a field's name, the one named before.
+_ANY_ROAD_USER = frozenset({"target", "vehicle"})
+
+
+def _field_names(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
+    """A road user as the name of a field ("cyclist: comes out from the left kerb", "van: 30 m ahead")
+    is the subject of the field's value: "a cyclist comes out ..." ("the" if one was named before, and
+    for a word that names no type, "target" or "vehicle", if any road user was). A field whose value
+    names a road user ("Target: cyclist") is left as it is."""
+    out: list[str] = []
+    seen: set[str] = set()
+    i = 0
+    while i < len(tokens):
+        opens = not out or out[-1] in SENTENCE_END
+        found = kind_at(tokens, i)
+        if found is not None and not opens:
+            seen.add(found[0])
+            found = None
+        if found is not None and found[0] != "ego" and tokens[i + found[1] : i + found[1] + 1] == [":"]:
+            j = i + found[1] + 1
+            value = tokens[j] if j < len(tokens) else ""
+            said = value.replace(".", "").isdigit() or (
+                value not in DETERMINERS and known(tokens, j) and kind_at(tokens, j) is None
+            )
+            if said:
+                named = found[0] in seen or (tokens[i + found[1] - 1] in _ANY_ROAD_USER and seen - {"ego"})
+                out += ["the" if named else "a", *tokens[i : i + found[1]]]
+                seen.add(found[0])
+                i = j
+                continue
+        if found is not None:
+            seen.add(found[0])
+        out.append(tokens[i])
+        i += 1
+    return out
+
+
+def _letter_labels(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """Labels of a list ("actor A: motorbike overtakes ...", "participant 2: oncoming car"): a word and
+    a letter or number opening a line before a colon name the road user the line names, a new one
+    ("a motorbike"); the label said elsewhere is that one ("the car"), or, before the line that
+    defines it, a reference to one not yet placed (left out)."""
+    defined: dict[tuple[str, str], tuple[int, str]] = {}  # label -> (where defined, its noun)
+    for s in range(len(tokens) - 2):
+        opens = s == 0 or tokens[s - 1] in SENTENCE_END
+        w, letter = tokens[s], tokens[s + 1]
+        is_label = (len(letter) == 1 and letter.isalpha()) or letter.isdigit()
+        if opens and is_label and tokens[s + 2] == ":" and w.isalpha() and w != "ego":
+            end = next((k for k in range(s + 3, len(tokens)) if tokens[k] in SENTENCE_END), len(tokens))
+            first = next((p for p in _phrases(tokens[s + 3 : end], kind_at, known) if p.kind != "ego"), None)
+            if first is not None:
+                defined[(w, letter)] = (s, NOUN.get(first.kind, first.kind))
+    if not defined:
+        return tokens
+    out: list[str] = []
+    i = 0
+    while i < len(tokens):
+        label = (tokens[i], tokens[i + 1]) if i + 1 < len(tokens) else None
+        if label in defined:
+            where, noun = defined[label]
+            if i == where:  # the definition: the road user it names is a new one ("an oncoming car")
+                i += 3
+                end = next((k for k in range(i, len(tokens)) if tokens[k] in SENTENCE_END), len(tokens))
+                first = next((p for p in _phrases(tokens[i:end], kind_at, known) if p.kind != "ego"), None)
+                if first is not None and not first.det and first.start <= 2:  # (past "oncoming", "parked")
+                    out.append("an" if tokens[i][0] in "aeiou" else "a")
+                continue
+            if i > where:
+                out += ["the", noun]
+            else:
+                dropped.extend(tokens[i : i + 2])
+            i += 2
+            continue
+        out.append(tokens[i])
+        i += 1
+    return out
+
+
+#: The closed class of prepositions and conjunctions that end a noun phrase ("a Corsa at 30 mph").
+PREPOSITIONS = frozenset(
+    "at on in through along down up with when and but for from to into past by near around as while behind "
+    "ahead across over of then so because".split()
+)
+#: Verbs whose object is a road user ("following a Corsa", "tailing a Qashqai", "overtook a Prius").
+FOLLOWING = frozenset({"follow", "tail", "overtake", "trail"})
+
+
+def _in_no_dictionary(word: str) -> bool:
+    from lemminflect import getAllLemmas
+
+    return word.isalpha() and not getAllLemmas(word)
+
+
+def _followed_names(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
+    """What the ego follows or overtakes, named by a name no dictionary knows ("following a silver
+    Astra", "tailing a Qashqai"), is a vehicle: a make or model; said with "car" after it, as the
+    reader reads "a silver Astra car"."""
+    out: list[str] = []
+    i = 0
+    while i < len(tokens):
+        out.append(tokens[i])
+        if _lemma_in(tokens[i], FOLLOWING) and i + 2 < len(tokens) and tokens[i + 1] in ("a", "an"):
+            j = i + 2
+            while j < i + 5 and j < len(tokens) and tokens[j].isalpha() and tokens[j] not in PREPOSITIONS:
+                if kind_at(tokens, j) is not None:
+                    break  # ("following a grey car": a road user the reader knows)
+                j += 1
+            ends = j == len(tokens) or tokens[j] in PREPOSITIONS or tokens[j] in PUNCT
+            if j > i + 2 and ends and _in_no_dictionary(tokens[j - 1]) and not known(tokens, j - 1):
+                out += [*tokens[i + 1 : j], "car"]
+                i = j
+                continue
+        i += 1
+    return out
+
+
+SPEED_UNITS = frozenset({"km/h", "mph", "m/s"})
+
+
+def _speed_of_both(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
+    """ "The ego and the lead car both travel at 60 km/h", "a van and I are both doing 70 km/h", "VUT and
+    GVT both at 50 km/h": the speed is each one's. Said as the ego's speed first, then the other's
+    sentence with its speed ("the ego drives at 60 km/h , the lead car travel at 60 km/h")."""
+    if "both" not in tokens:
+        return tokens
+    b = tokens.index("both")
+    speed = next((k for k in range(b + 1, min(b + 5, len(tokens) - 1)) if tokens[k + 1] in SPEED_UNITS), None)
+    if speed is None or not tokens[speed].replace(".", "").isdigit():
+        return tokens
+    j = b - 1
+    while j >= 0 and tokens[j] in BE:
+        j -= 1
+    phrases = [p for p in _phrases(tokens[: j + 1], kind_at, known) if p.end > j + 1 - 6]
+    if len(phrases) < 2 or phrases[-1].end != j + 1:
+        return tokens
+    first, second = phrases[-2], phrases[-1]
+    between = tokens[first.end : second.start]  # ("the truck ahead and I": where it is, then "and")
+    if not between or between[-1] != "and" or len(between) > 3 or any(w in PUNCT for w in between):
+        return tokens
+    if (first.kind == "ego") == (second.kind == "ego"):
+        return tokens
+    said = ["the", "ego", "drives", "at", tokens[speed], tokens[speed + 1], ","]
+    other_words = tokens[second.start : second.end] if first.kind == "ego" else tokens[first.start : second.start - 1]
+    rest = tokens[b + 1 :]
+    if rest[0].replace(".", "").isdigit():
+        rest = ["at", *rest]  # ("both 50 km/h")
+    return tokens[: first.start] + said + other_words + rest
+
+
+#: Words after a letter that show it is a label, not an article ("Vehicle A was ...", "Car B (ego)").
+AFTER_LABEL = frozenset({"and", "then", "had", "has", "which", "who", "to", "calling", "(", ")"})
+#: Units after which a number is a quantity, not a label ("car 3 m ahead").
+UNITS_AFTER = frozenset({"m", "km/h", "mph", "m/s", "s", "%", "metres", "meters", "lanes", "lane", ":", "pm", "am"})
+
+
+def _labels(tokens: list[str], kind_at: KindAt, known: Known) -> list[tuple[int, str, str]]:
+    """Every vehicle label in ``tokens`` as (where, its noun, its letter or number): a vehicle noun or
+    "unit" with no determiner, then a number no unit follows, or a letter ("Car A", "Vehicle B") when
+    what follows cannot go on a noun phrase and another letter labels a vehicle too."""
+    found = []
+    for i in range(len(tokens) - 1):
+        noun, mark = tokens[i], tokens[i + 1]
+        kind = kind_at(tokens, i)
+        vehicle = noun == "unit" or (kind is not None and kind[0] in VEHICLES and kind[1] == 1)
+        if not vehicle or (i and tokens[i - 1] in DETERMINERS):
+            continue
+        after = tokens[i + 2] if i + 2 < len(tokens) else "."
+        if mark.isdigit() and after not in UNITS_AFTER:
+            found.append((i, noun, mark))
+        elif len(mark) == 1 and mark.isalpha() and mark not in "iv":
+            label_like = (
+                after in PUNCT
+                or after in BE
+                or after in AFTER_LABEL
+                or after == "the"
+                or (known(tokens, i + 2) and kind_at(tokens, i + 2) is None)
+            )
+            if label_like:
+                found.append((i, noun, mark))
+    letters = {m for _, _, m in found if m.isalpha()}
+    return [x for x in found if x[2].isdigit() or len(letters) > 1]
+
+
+def _relative_of_ego(tokens: list[str]) -> list[str]:
+    """ "... in front of the ego, which was doing 40 km/h": a relative clause right after the ego is said
+    of the ego; said as a clause of its own with the ego as its subject ("..., the ego was doing ...")."""
+    out: list[str] = []
+    for k, w in enumerate(tokens):
+        if w in ("which", "who", "that") and k >= 2 and tokens[k - 1] == "," and tokens[k - 2] == "ego":
+            out += ["the", "ego"]
+            continue
+        out.append(w)
+    return out
+
+
+def _vehicle_labels(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
+    """Vehicle labels of a report ("Car 3 to control", "Vehicle A ... Vehicle B", "Car B (ego)"): the
+    one marked as the ego ("Car B (ego)"), else, where the text names no ego otherwise, number one or
+    A, else the first label, is the ego; each other label is a road user of its noun's type, "a van"
+    where first named and "the van" after."""
+    labels = _labels(tokens, kind_at, known)
+    if not labels:
+        return tokens
+    names = [(noun, mark) for _, noun, mark in labels]
+    marked = [
+        (n, m) for i, n, m in labels if tokens[i + 2 : i + 3] == ["ego"] or tokens[i + 2 : i + 4] == ["the", "ego"]
+    ]
+    if marked:
+        ego = marked[0]
+    elif "ego" in tokens:  # (the ego is named otherwise: every label is another road user)
+        ego = None
+    else:
+        ego = next((x for x in names if x[1] in ("1", "a")), names[0])
+    out: list[str] = []
+    seen: set[tuple[str, str]] = set()
+    i = 0
+    at = {k: (n, m) for k, n, m in labels}
+    while i < len(tokens):
+        if i in at:
+            label = at[i]
+            if label == ego:
+                out += ["the", "ego"]
+                i += 2
+                i += 1 if tokens[i : i + 1] == ["ego"] else 2 if tokens[i : i + 2] == ["the", "ego"] else 0
+                continue
+            kind = kind_at(tokens, i)
+            noun = NOUN.get(kind[0], "car") if kind is not None else "car"
+            out += ["the" if label in seen else ("an" if noun[0] in "aeiou" else "a"), noun]
+            seen.add(label)
+            i += 2
+            continue
+        out.append(tokens[i])
+        i += 1
+    return out
+
+
+def _ego_unnamed(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
+    """A text that names no ego, with a vulnerable road user and one motor vehicle named only bare or
+    with "the" ("car versus e-scooter ... car doing about 20 mph", "Vehicle was turning right ...,
+    pedestrian crossing"): that vehicle is the one the report is told from, the ego. A vehicle placed
+    relative to something ("the car ahead", "parked cars") or named with "a" is another road user."""
+    if any(t == "ego" or t in FIRST_PERSON for t in tokens):
+        return tokens
+    phrases = _phrases(tokens, kind_at, known)
+    if not any(p.kind in VULNERABLE for p in phrases):
+        return tokens
+    motor = [p for p in phrases if p.kind in VEHICLES]
+    if not motor:
+        return tokens
+    nouns = {" ".join(tokens[p.head : p.end]) for p in motor}
+    versus = any(
+        (p.end < len(tokens) and tokens[p.end] in VERSUS) or (p.start and tokens[p.start - 1] in VERSUS) for p in motor
+    )
+    if len(nouns) != 1 or not (versus or nouns <= {"car", "vehicle"}):
+        return tokens
+    for p in motor:
+        if p.det not in ("", "the") or p.end - p.head != 1:
+            return tokens
+        after = tokens[p.end] if p.end < len(tokens) else ""
+        before = tokens[p.start - 1] if p.start else ""
+        if after in PLACED or before in PLACED or before in ("between", "behind") or after in ("s", "park"):
+            return tokens
+    out = list(tokens)
+    for p in reversed(motor):
+        out[p.start : p.end] = ["the", "ego"]
+    return out
+
+
+def _brackets(tokens: list[str], kind_at: KindAt, known: Known, names: dict[str, str], dropped: list[str]) -> list[str]:
+    """Brackets go; a name given a road user in them ("a passenger car (the challenger)") is kept as a
+    name of that referent, and the bracket is not read as a second road user."""
+    out: list[str] = []
+    i = 0
+    while i < len(tokens):
+        if tokens[i] == "(":
+            close = next((k for k in range(i + 1, min(i + 6, len(tokens))) if tokens[k] == ")"), None)
+            inner = tokens[i + 1 : close] if close is not None else []
+            words = [w for w in inner if w not in DEFINITE]
+            last = next((b for b in range(len(out) - 1, max(len(out) - 3, -1), -1) if kind_at(out, b)), None)
+            kind = kind_at(out, last) if last is not None else None
+            naming = (  # ("(the challenger)", "(the obstacle)": a definite name of the one just named)
+                kind is not None
+                and kind[0] != "ego"
+                and last + kind[1] == len(out)
+                and inner[:1] == ["the"]
+                and len(words) == 1
+                and words[0].isalpha()
+                and kind_at(words, 0) in (None, (kind[0], 1), ("car", 1))  # (a general noun: "obstacle")
+            )
+            if naming:
+                names[words[0]] = NOUN.get(kind[0], kind[0])
+                dropped.extend(inner)
+                i = close + 1
+                continue
+        if tokens[i] not in ("(", ")"):
+            out.append(tokens[i])
+        i += 1
+    return out
+
+
+def _named_speeds(tokens: list[str], kind_at: KindAt, known: Known, names: dict[str, str]) -> list[str]:
+    """ "speed of cyclist 15 km/h", "velocity of the bus: 10 km/h", "challenger speed 90 km/h": the
+    speed of the referent named, said as the reader reads a road user's speed ("the cyclist at ...")."""
+    out: list[str] = []
+    i = 0
+    while i < len(tokens):
+        t = tokens[i]
+        if t in SPEED_NOUNS and i + 1 < len(tokens) and tokens[i + 1] == "of":
+            j = i + 2 + (tokens[i + 2] in DEFINITE if i + 2 < len(tokens) else 0)
+            found = kind_at(tokens, j) if j < len(tokens) else None
+            named = j < len(tokens) and tokens[j] in names
+            noun = tokens[j : j + found[1]] if found else [names[tokens[j]]] if named else None
+            k = j + (found[1] if found else 1)
+            k += k < len(tokens) and tokens[k] in ("is", "was", ":", "=")
+            if noun is not None and k < len(tokens) and tokens[k].replace(".", "").isdigit():
+                if noun == ["ego"]:
+                    out += ["the", "ego", "drives", "at"]
+                else:
+                    out += ["the", *noun, "at"]
+                i = k
+                continue
+        if t in names and i + 1 < len(tokens) and tokens[i + 1] in SPEED_NOUNS:
+            k = i + 2 + (i + 2 < len(tokens) and tokens[i + 2] in ("is", "was", ":", "="))
+            if k < len(tokens) and tokens[k].replace(".", "").isdigit():
+                if out and out[-1] in DEFINITE:
+                    out.pop()
+                out += ["the", names[t], "at"]
+                i = k
+                continue
+        if t in names and out and out[-1] in DEFINITE:
+            out.append(names[t])
+            i += 1
+            continue
+        out.append(t)
+        i += 1
+    return out
+
+
+#: Words that set a road user apart from one of its type already named ("the other car", "a second cyclist").
+OTHER = frozenset({"other", "second", "third", "fourth", "next", "another", "different", "further"})
+
+
+def _mentions_again(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
+    """A road user named again with "the" is the most recent one of its type, said as the reader reads
+    a known one: "the" right before its noun ("the silver hatchback" → "the hatchback"); a definite
+    general noun ("the front vehicle") is the most recent vehicle, said by its type ("the truck" after
+    "a coach"); a vehicle named again in apposition (", a coach,") is the same one, more exactly."""
+    out = list(tokens)
+    referents: list[Referent] = []
+    i, last_end = 0, -1
+    while i < len(out):
+        p = _phrase_at(out, i, kind_at, known)
+        if p is None:
+            i += 1
+            continue
+        noun = " ".join(out[p.head : p.end])
+        general = out[p.end - 1] in GENERAL_VEHICLE and p.kind == "car"
+        apposition = (
+            referents
+            and p.det in ("a", "an")
+            and p.start
+            and out[p.start - 1] == ","
+            and p.end < len(out)
+            and out[p.end] == ","
+            and last_end == p.start - 1
+        )
+        apart = any(w in OTHER for w in out[p.start : p.head])
+        if p.kind == "ego":
+            pass
+        elif apposition and p.kind in VEHICLES and referents[-1].kind in VEHICLES:
+            referents[-1].kind = p.kind if referents[-1].kind == "car" else referents[-1].kind
+        elif p.det == "the" and not apart and referents:
+            if general:
+                same = next((r for r in reversed(referents) if r.kind in VEHICLES), None)
+            else:
+                same = next((r for r in reversed(referents) if r.kind == p.kind), None)
+            if same is not None and (p.head > p.start + 1 or (general and same.kind != "car")):
+                said = [NOUN[same.kind]] if general else out[p.head : p.end]
+                out[p.start : p.end] = ["the", *said]
+                last_end = p.start + 1 + len(said)
+                i = last_end
+                continue
+            if same is None:
+                referents.append(Referent(p.kind, noun))
+        elif p.det == "" and referents and _bare_again(out, p, referents, kind_at):
+            out.insert(p.start, "the")  # ("... ego stays behind cyclist": the cyclist named before)
+            last_end = p.end + 1
+            i = p.end + 1
+            continue
+        elif p.det in INDEFINITE or not referents or p.det == "":
+            referents.append(Referent(p.kind, noun))
+        last_end = p.end
+        i = p.end
+    return out
+
+
+def _singular(word: str) -> bool:
+    from lemminflect import getAllLemmas
+
+    lemmas = getAllLemmas(word).get("NOUN")
+    return not lemmas or word in lemmas
+
+
+def _bare_again(tokens: list[str], p: _Phrase, referents: list[Referent], kind_at: KindAt) -> bool:
+    """Whether a bare singular noun inside a clause ("behind cyclist", "passes walker") names again the
+    one of its type named before (a bare noun opening a clause the reader takes so already)."""
+    before = tokens[p.start - 1] if p.start else ""
+    clock = p.start >= 3 and before.isdigit() and tokens[p.start - 2] == ":" and tokens[p.start - 3].isdigit()
+    if clock and p.head == p.start:  # ("14:34 lorry brakes": a log line opens with its clock)
+        return p.kind != "ego" and any(r.kind == p.kind for r in referents)
+    if p.head != p.start or before in PUNCT or before == "" or before.isdigit() or before in OTHER:
+        return False
+    for j in range(p.start - 1, max(p.start - 4, -1), -1):  # ("a stationary car": its article before
+        if tokens[j] in DETERMINERS:  # a word the reader knows; "the ego passes walker": another's)
+            return False
+        if tokens[j] in PUNCT or kind_at(tokens, j) is not None:
+            break
+    if before in ("and", "or", "versus", "vs", "v", "of") or not _singular(tokens[p.end - 1]):
+        return False  # ("a cyclist and pedestrian", "car versus cyclist": a list; "groups of cyclists")
+    return p.kind != "ego" and any(r.kind == p.kind for r in referents)
+
+
+def resolve(tokens: list[str], kind_at: KindAt, known: Known) -> tuple[list[str], list[str]]:
+    """``tokens`` with every road user said the one way the reader reads it (see the module's
+    docstring), and the words taken out (to be reported as not used).
+
+    The order matters: labels and bracketed names first (they say who the ego is and what a name
+    stands for), then what makes two mentions one road user, then what is no road user at all, then
+    the ego of a report that names none (once the scenery is gone), and last the speeds bound to
+    referents and the mentions said again (over the referents that remain)."""
+    dropped: list[str] = []
+    names: dict[str, str] = {}
+    tokens = _brackets(tokens, kind_at, known, names, dropped)
+    tokens = _vehicle_labels(tokens, kind_at, known)
+    tokens = _letter_labels(tokens, kind_at, known, dropped)
+    tokens = _field_names(tokens, kind_at, known)
+    tokens = _riders(tokens, kind_at, known)
+    tokens = _pushed(tokens, kind_at, known, dropped)
+    tokens = _drivers(tokens, kind_at, known)
+    tokens = _companions(tokens, kind_at, known, dropped)
+    tokens = _followed_names(tokens, kind_at, known)
+    tokens = _own_vehicle(tokens, kind_at, known, dropped)
+    tokens = _narrators_people(tokens, kind_at, dropped)
+    tokens = _passengers(tokens, kind_at, known, dropped)
+    tokens = _ego_apposition(tokens, kind_at, known, dropped)
+    tokens = _aftermath(tokens, kind_at, known, dropped)
+    tokens = _ego_unnamed(tokens, kind_at, known)
+    tokens = _named_speeds(tokens, kind_at, known, names)
+    tokens = _speed_of_both(tokens, kind_at, known)
+    tokens = _relative_of_ego(tokens)
+    tokens = _mentions_again(tokens, kind_at, known)
+    return tokens, dropped

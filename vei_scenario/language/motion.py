@@ -1,0 +1,286 @@
+"""What a road user does, settled from the behaviours its clauses gave it: one path per road user.
+
+A clause often says a road user's path and its manner in two verbs ("proceeds against the red
+signal, passing the ego"; "emerged from the left against a red signal"; "stops at the give-way line
+and waits"). The reader reads each verb, so the manner arrives as a second behaviour. These rules
+keep the path:
+
+* running the red light is the whole of a road user's path across the junction: a pass of the ego
+  or an emergence from an arm said with it is how it goes, not a second manoeuvre;
+* a road user on a junction arm that only stops (and waits) is giving way: that is what stopping at
+  the line of a side road is;
+* a rider going along the road against the traffic, said to be on the wrong side and not at the
+  kerb, is coming head-on in the ego's lane: the wrong-way rider, not one riding along the edge;
+* a road user heading one compass way in the lane of the other ("southbound in the northbound
+  lane") is driving the wrong way in that lane;
+* where the only two headings a narrative gives are opposite ("V2, eastbound, ... V1, which was
+  westbound"), the road user is coming the other way: its left turn across the ego's path is the
+  turn across an oncoming path.
+
+A verb with the particle "out" and "of" or "from" a side road ("pops out of a side street", "shot
+out from the side road") is coming out of that road, whatever the verb: the reader reads it as it
+reads "comes out of" (a walker then crosses; a rider or a vehicle enters from that arm).
+
+A move whose destination is the ego's lane or path ("swung out into my lane", "moved across into
+the ego's lane", "swerves out of the bike lane into my lane") is a cut-in, whatever the verb: the
+destination says what the move is, the verb only how it is made.
+
+"Give" with the ego as its first object and the way as its second ("gives me the way", "gave us
+priority", "gives the ego the right of way") is giving way, the ditransitive form of "give way".
+
+A side road or exit said after "into", "onto" or "to" is where a road user goes, not where it
+comes from: "swung across my lane to turn into one of the side roads on the right" is a turn off the
+ego's road (across it, from the lane it was in), not an emergence from that side road.
+
+Some verbs a clause holds are no behaviour at all but the outcome (read by
+:mod:`vei_scenario.language.outcome`): a verb of contact whose subject is both parties ("they are
+crashing", "we collided") and "yield" with an object ("designed to yield a collision": to produce).
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import replace
+
+from vei_scenario.language.reading import ActorSpec
+
+#: Behaviours that, said with running the red, are the manner of that run.
+_MANNER_OF_A_RUN = frozenset(("overtake", "turn_into"))
+_ARMS = frozenset(("junction_left", "junction_right", "junction_opposite"))
+
+
+def head_on(spec: ActorSpec, against_traffic: bool) -> list:
+    """``spec``'s behaviours, with riding along the road against the traffic (``against_traffic``:
+    said as the wrong way or side) away from the kerb read as driving head-on in the ego's lane."""
+    names = [b[0] for b in spec.behaviours]
+    if against_traffic and names == ["along_road"] and spec.facing == "against" and spec.lateral_m is None:
+        _, cfg, crit, link = spec.behaviours[0]
+        return [("wrong_way", {}, crit, link)]
+    return spec.behaviours
+
+
+#: Subjects that are both parties of a contact: the verb is what happened between them.
+_BOTH = frozenset(("they", "we", "both", "us"))
+#: Verbs of contact a behaviour may be read from ("the rider crashes": it falls).
+_CONTACT = frozenset(("crash", "crashes", "crashed", "crashing", "collide", "collides", "collided", "colliding", "hit",
+                      "hits", "hitting", "smash", "smashed", "smashes", "smashing"))  # fmt: skip
+
+
+def outcome_not_behaviour(clauses: list) -> list:
+    """``clauses`` (the reader's mentions, by clause) without the verbs that state the outcome rather
+    than what a road user does: a contact verb whose subject is both parties, "yield a/an ..."."""
+    out = []
+    for link, mentions in clauses:
+        kept = []
+        for k, m in enumerate(mentions):
+            if m.slot == "behaviour":
+                first = m.words.split()[0]
+                before = next((x for x in reversed(mentions[:k]) if x.slot not in ("modal", "ego_verb")), None)
+                plural = m.prev in _BOTH or (before is not None and before.slot == "pronoun" and before.words in _BOTH)
+                if first in _CONTACT and plural:
+                    continue  # ("they are crashing": the collision, said of both)
+                if first in ("yield", "yields", "yielded", "yielding") and m.next_ in ("a", "an"):
+                    continue  # ("designed to yield a collision")
+            kept.append(m)
+        out.append((link, kept))
+    return out
+
+
+_TOWARDS = frozenset(("into", "onto"))
+_POSSESSIVE = frozenset(("its", "his", "her", "their"))
+
+
+def destinations_not_origins(clauses: list) -> list:
+    """``clauses`` without the side roads and exits said as where a road user goes ("into a side
+    street", "into one of the side roads on the right", "to get to its exit"), and the side said of
+    them; where a road user comes from or is stays ("out of the side road", "up to the entry"). A
+    road user of that clause moving across the ego's way towards a side ("cuts left across me to
+    turn into a side street") is turning off across it: a turn that way, read as the reader reads
+    "swings left across"."""
+    out = []
+    for link, mentions in clauses:
+        kept: list = []
+        drop_side = False
+        gone: str | None = None  # the side of where it goes, if said
+        dropped = False
+        for k, m in enumerate(mentions):
+            before = mentions[k - 1] if k > 0 else None
+            if m.slot == "arm" and _led_towards(m, before):
+                drop_side = dropped = True
+                if kept and kept[-1] is before and before.slot in ("pronoun", "member"):
+                    kept.pop()
+                continue
+            if drop_side and m.slot == "side" and before is not None and before.slot in ("arm", "side"):
+                gone = gone or str(m.value)
+                continue  # ("... side roads on the right": the side of where it goes)
+            drop_side = False
+            kept.append(m)
+        out.append((link, _across_as_a_turn(kept, gone) if dropped else kept))
+    return out
+
+
+def out_of_a_side_road(clauses: list) -> list:
+    """``clauses`` with a verb + "out" + "of"/"from" + a side road read as coming out of that road."""
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k, m in enumerate(kept[:-1]):
+            nxt = kept[k + 1]
+            particle = m.words.endswith((" out", " out of", " out from")) and (
+                m.next_ in ("of", "from") or m.words.endswith(("of", "from"))
+            )
+            if m.slot == "behaviour" and particle and nxt.slot == "arm" and nxt.prev in ("of", "from"):
+                if not m.value[1].get("from_side_road"):
+                    kept[k] = replace(m, value=("cut_in", {**m.value[1], "from_side_road": 1.0}))
+        out.append((link, kept))
+    return out
+
+
+#: Moves that, into the ego's lane, are a cut-in.
+_INTO_EGO_LANE_FROM = frozenset(("keep_going", "change_lane", "cut_out", "cross_in_front"))
+_EGO_OWNERS = (("my",), ("our",), ("the", "ego", "'s"), ("ego", "'s"), ("the", "ego"))
+_STOPS = frozenset((".", ",", ";", ":", "!", "?", "and", "but", "then", "while", "when", "as"))
+
+
+def into_the_ego_lane(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a move into the ego's lane or path read as a cut-in (``tokens``: the reader's
+    tokens, which the mentions index)."""
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k, m in enumerate(kept):
+            if m.slot == "behaviour" and m.value[0] in _INTO_EGO_LANE_FROM and _into_ego_lane(tokens, m.end):
+                kept[k] = replace(m, value=("cut_in", {x: v for x, v in m.value[1].items() if x != "direction"}))
+        out.append((link, kept))
+    return out
+
+
+def _into_ego_lane(tokens: list[str], j: int) -> bool:
+    """Whether "into" + the ego's lane or path follows within the clause from token ``j``."""
+    for i in range(j, min(j + 10, len(tokens))):
+        if tokens[i] in _STOPS:
+            return False
+        if tokens[i] != "into":
+            continue
+        rest = tokens[i + 1 : i + 5]
+        for owner in _EGO_OWNERS:
+            n = len(owner)
+            if tuple(rest[:n]) == owner and len(rest) > n and rest[n] in ("lane", "path"):
+                return True
+        return False
+    return False
+
+
+_GIVE = frozenset(("give", "gives", "gave", "giving", "given"))
+_WAY = frozenset(("way", "priority", "precedence"))
+
+
+def give_the_ego_the_way(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with "give" + the ego + the way (priority, the right of way) read as giving way."""
+    out = []
+    for link, mentions in clauses:
+        kept: list = []
+        skip_to = -1
+        for k, m in enumerate(mentions):
+            if m.start < skip_to:
+                continue
+            nxt = mentions[k + 1] if k + 1 < len(mentions) else None
+            if (
+                m.words in _GIVE
+                and m.slot in ("unknown_verb", "behaviour")
+                and nxt is not None
+                and nxt.slot == "actor"
+                and nxt.value == "ego"
+                and all(t in ("the", "a") for t in tokens[m.end : nxt.start])  # ("gave the ego priority")
+                and set(tokens[nxt.end : nxt.end + 4]) & _WAY
+            ):
+                way = next(i for i in range(nxt.end, nxt.end + 4) if tokens[i] in _WAY)
+                kept.append(replace(m, slot="behaviour", value=("give_way", {}), end=way + 1))
+                skip_to = way + 1  # (the ego and "the right of way" said with it)
+                continue
+            kept.append(m)
+        out.append((link, kept))
+    return out
+
+
+def _led_towards(m, before) -> bool:
+    """Whether a side road or exit mention ``m`` is led by "into"/"onto" (a destination)."""
+    if m.prev in _TOWARDS:
+        return True
+    if before is None:
+        return False
+    if before.slot == "pronoun" and before.words in _POSSESSIVE and before.prev in _TOWARDS | {"to"}:
+        return before.end == m.start  # ("to get to its exit")
+    return before.slot == "member" and before.prev in _TOWARDS and m.prev == "of"  # ("into one of the side roads")
+
+
+def _across_as_a_turn(mentions: list, gone: str | None) -> list:
+    """``mentions`` with a lateral move across ("cuts left across", "swerves across") read as a turn
+    that way, the clause having said where it turns off to."""
+    out = list(mentions)
+    for k, m in enumerate(out):
+        if m.slot != "behaviour" or m.value[0] not in ("cut_in", "cross_in_front", "change_lane"):
+            continue
+        nxt = out[k + 1] if k + 1 < len(out) else None
+        if nxt is not None and nxt.slot == "side" and nxt.next_ == "across":
+            out[k : k + 2] = [replace(m, slot="turn", value=str(nxt.value), words=f"{m.words} {nxt.words}")]
+            return out
+        if m.next_ == "across" and gone is not None:
+            out[k] = replace(m, slot="turn", value=gone)
+            return out
+    return out
+
+
+_OPPOSITE = {"north": "south", "south": "north", "east": "west", "west": "east"}
+_COMPASS_LANE = re.compile(
+    r"\b(north|south|east|west)bound\b(?:\s+\S+){0,3}?\s+(?:in|on|along|down|up|into)\s+(?:the|a)\s+"
+    r"(north|south|east|west)bound\s+(?:lane|lanes|carriageway|side)\b"
+)
+
+
+#: The same, after the normaliser has said compass headings relative to the ego's ("southbound",
+#: the ego northbound: "in the opposite direction"; "the northbound lane": "the in the same direction lane").
+_RELATIVE_LANE = re.compile(
+    r"\bopposite direction\b(?:\s+\S+){0,3}?\s+(?:in|on|along|down|up|into)\s+(?:the\s+)?(?:in\s+the\s+)?"
+    r"(?:ego 's |my |our )?same direction\s+(?:lane|lanes|carriageway|side)\b"
+)
+
+
+def compass_against(said: str) -> bool:
+    """Whether ``said`` (normalised, lowercased) puts someone heading one way in the lane of the other."""
+    if _RELATIVE_LANE.search(said):
+        return True
+    return any(_OPPOSITE[m.group(1)] == m.group(2) for m in _COMPASS_LANE.finditer(said))
+
+
+_HEADING = re.compile(r"\b(north|south|east|west)bound\b")
+
+
+def compass_opposed(said: str) -> bool:
+    """Whether the headings ``said`` gives are exactly two, and opposite (the two parties meet)."""
+    found = {m.group(1) for m in _HEADING.finditer(said)}
+    return len(found) == 2 and _OPPOSITE[min(found)] == max(found)
+
+
+def one_path(spec: ActorSpec, said: str = "") -> list:
+    """``spec``'s behaviours with the manner of its path dropped (see the module's rules); ``said`` is
+    the description's normalised text, for what a road user's own clause cannot place."""
+    names = [b[0] for b in spec.behaviours]
+    if names in (["along_road"], ["keep_going"]) and spec.lateral_m is None and compass_against(said):
+        _, cfg, crit, link = spec.behaviours[0]
+        spec.relation, spec.facing = "ahead", "against"
+        return [("wrong_way", {}, crit, link)]
+    if "run_red_light" in names:
+        return [b for b in spec.behaviours if b[0] not in _MANNER_OF_A_RUN]
+    turning_left = names[:1] == ["forced_turn"] and spec.behaviours[0][1].get("turn") == "left"
+    if turning_left and spec.relation is None and compass_opposed(said):
+        _, cfg, crit, link = spec.behaviours[0]
+        spec.relation = "junction_opposite"
+        return [("turn_across", {}, crit, link)] + spec.behaviours[1:]
+    if names[:1] == ["forced_turn"] and spec.distance_m is not None and "gap_m" not in spec.behaviours[0][1]:
+        name, cfg, crit, link = spec.behaviours[0]  # ("10 m ahead ... swings across": the gap it cuts across at)
+        return [(name, {**cfg, "gap_m": spec.distance_m}, crit, link)] + spec.behaviours[1:]
+    if names == ["stop"] and spec.relation in _ARMS:
+        _, cfg, crit, link = spec.behaviours[0]
+        return [("give_way", {}, crit, link)]
+    return spec.behaviours

@@ -1,0 +1,652 @@
+"""The outcome a description states (its intent: ``collision``, ``near_miss`` or ``safe``), read from
+the structure of its clauses rather than from a list of phrases.
+
+People state an outcome in three ways, and each is a construction, not a set of words:
+
+* **an event between the ego and a road user**: a verb of contact ("hit", "clipped", "was struck
+  by", "went into the side of him", "made contact"), a noun of one ("a collision", "the impact"), or a
+  person "down" ("rider down"); a verb of missing with a person as object ("missed him", "missed each
+  other"); a margin ("with inches to spare", "stopped a foot short", "0.5 m clearance");
+* **the scope of a negation or a hedge over that event**: "no contact", "did not hit", "without
+  touching", "avoided a collision" deny it; "nearly", "almost", "barely", "would have" hedge it. A
+  denied or hedged contact is not a collision: a hedged one is a near miss, a denied one a near miss
+  when the ego had to act (swerve, brake, stop short) or it was close, and a safe pass when the ego only
+  gave way;
+* **what the ego does about it**: swerving or braking hard with no contact said is a near miss;
+  waiting, giving way or letting the other go with nothing else said is a safe pass.
+
+A scope ends at the clause: punctuation or a conjunction ("no contact, but he fell" leaves "fell"
+alone). One contact stated anywhere makes the whole a collision (a near miss followed by contact is
+still a collision). A text that states none of these has no intent: nothing is assumed.
+
+The closed classes below are grammatical (negators, hedges, conjunctions, pronouns) or the small set
+of English verbs and nouns of contact; the rest is read from where words stand in a clause.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from functools import lru_cache
+
+COLLISION, NEAR_MISS, SAFE = "collision", "near_miss", "safe"
+
+#: What ends a clause, and with it the scope of a negation or a hedge.
+_BREAK_PUNCT = frozenset(".;!?:,")
+_BREAK_WORDS = frozenset(
+    ("but", "and", "then", "so", "because", "when", "while", "whilst", "until", "till", "although", "though")
+)
+#: Negators: they deny what follows them in their clause.
+_NEGATORS = frozenset(("no", "not", "never", "without", "nobody", "nothing", "neither", "nor", "none"))
+#: Verbs (lemmas) whose object is denied: "avoided contact", "prevents a collision".
+_DENYING_VERBS = frozenset(("avoid", "prevent", "escape", "evade"))
+#: Hedges: what follows them almost happened ("nearly hit", "barely missed", "almost a crash").
+_HEDGES = frozenset(("nearly", "almost", "narrowly", "barely", "virtually", "practically"))
+#: Words of a condition or a counterfactual: what follows did not happen ("would have hit", "if it hits").
+_HYPOTHETICAL = frozenset(("would", "could", "might", "if", "before"))
+
+#: English verbs of contact (lemmas). Ambiguous ones ("hit the brakes", "touch 50") are checked for
+#: what they take as object.
+_CONTACT_VERBS = frozenset(
+    ("hit", "strike", "collide", "crash", "clip", "tag", "scrape", "touch", "bump", "smash", "ram", "sideswipe",
+     "rear-end", "t-bone", "graze", "wallop", "thump", "knock", "tap", "mow", "swipe", "shunt")
+)  # fmt: skip
+#: Nouns of a contact; "rtc" and "rta" are the road traffic collision (accident) of a report.
+_CONTACT_NOUNS = frozenset(("collision", "crash", "impact", "contact", "accident", "smash", "prang", "rtc", "rta"))
+#: The sounds of an impact, said as what happened ("there was a horrible thump").
+_IMPACT_SOUNDS = frozenset(("thump", "thud", "bang", "smack", "crunch", "bump"))
+#: A contact noun before one of these is a modifier of something else ("collision warning").
+_COMPOUND_HEADS = frozenset(
+    ("warning", "avoidance", "barrier", "barriers", "mitigation", "system", "systems", "detection", "alert", "sensor",
+     "helmet", "zone", "risk", "test", "tests", "course", "imminent", "scene", "data", "report", "ref", "reference")
+)  # fmt: skip
+#: Objects that make a contact verb something else ("hit the brakes", "hit the gas", "clipped the kerb").
+_NOT_ROAD_USERS = frozenset(
+    ("brake", "brakes", "gas", "accelerator", "pedal", "throttle", "horn", "pothole", "puddle", "button", "road",
+     "jackpot", "traffic", "red", "green", "lights", "light", "speed", "mph", "km/h", "m/s", "limit", "eye", "base")
+)  # fmt: skip
+#: The closed class of object pronouns and reciprocal phrases: who is met or missed.
+_PERSON_OBJECTS = frozenset(("me", "us", "him", "her", "it", "them", "you", "each", "one"))
+_POSSESSIVES = frozenset(("my", "our", "his", "her", "its", "their", "your"))
+#: Motion verbs that carry the mover into what it meets ("went into the side of it", "ploughed into him").
+_INTO = "into"
+#: The parts of a vehicle a body is thrown against ("bounced off my bonnet").
+_STRUCK_PARTS = frozenset(("bonnet", "hood", "windscreen", "windshield", "bumper", "roof", "wing", "mirror", "door"))
+#: The places one moves into (a path, not a thing one meets): "into my lane", "into the side road".
+_PLACES = frozenset(
+    ("lane", "lanes", "road", "street", "path", "way", "junction", "intersection", "roundabout", "carriageway", "gap",
+     "space", "traffic", "crossing", "exit", "entry", "lay-by", "bay", "stop", "drive", "driveway", "verge", "shoulder",
+     "kerb", "curb", "pavement", "footway", "sidewalk", "footpath", "bend", "corner", "view", "position", "line",
+     "arm", "spot", "skid", "spin", "park", "lot", "entrance", "carpark", "turn", "area", "zone", "middle", "centre")
+)  # fmt: skip
+#: Words that end an object's noun phrase ("into the pallets lying in the lane": "the pallets").
+_PHRASE_ENDS = frozenset(("of", "at", "on", "in", "from", "behind", "and", "with", "to", "without", "lying", "which",
+                          "that", "who", "before", "after", "as", "while", "by", "for", "ahead"))  # fmt: skip
+#: The parts of a road user one runs into.
+_PARTS = frozenset(("side", "back", "rear", "front", "wing", "door", "trailer", "bumper", "tail", "bonnet", "boot"))
+#: Words that end a small margin: units of length and the idioms of a hair's width.
+_SMALL_UNITS = frozenset(("inch", "inches", "cm", "centimetre", "centimetres", "centimeter", "centimeters", "mm",
+                          "millimetres", "foot", "feet", "whisker", "hair", "hairs", "paint", "fraction", "breadth",
+                          "width", "cigarette", "fag"))  # fmt: skip
+_LENGTH_UNITS = frozenset(("m", "metre", "metres", "meter", "meters", "foot", "feet", "yard", "yards"))
+#: Quantity words of a wide margin ("plenty of room", "loads of space").
+_WIDE = frozenset(("plenty", "lots", "loads", "heaps", "tons", "ample", "enough", "room", "space", "wide", "generous"))
+#: Nouns of trouble that, denied, state a safe pass ("no issues", "without incident", "no danger").
+_TROUBLE = frozenset(
+    ("issue", "issues", "problem", "problems", "conflict", "conflicts", "danger", "drama", "incident", "incidents",
+     "trouble", "harm", "risk", "worry", "worries", "dramas")
+)  # fmt: skip
+#: Words of a close call said of the situation ("it was close", "dangerous", "scary").
+_CLOSE = frozenset(("close", "tight", "dangerous", "scary", "scared", "frightening", "hairy"))
+#: Auxiliaries, modals and adverbs between a subject and its verb ("the ego has to quickly brake").
+_BETWEEN = frozenset(
+    ("has", "have", "had", "to", "must", "also", "just", "then", "is", "was", "were", "are", "be", "been", "will",
+     "would", "can", "could", "should", "did", "does", "do", "quickly", "immediately", "simply", "still", "got",
+     "gets", "needs", "need", "needed", "am", "too", "both", "only", "really", "instantly", "hard", "sharply")
+)  # fmt: skip
+#: The ego's names as the reader normalises them (a narrator, the ego, the subject vehicle).
+_EGO_HEADS = frozenset(("i", "we", "ego", "sv", "vut", "av", "im"))
+_EGO_PHRASES = ("ego vehicle", "ego car", "subject vehicle", "test vehicle", "vehicle under test", "our car",
+                "my car", "host vehicle")  # fmt: skip
+#: What the ego does when it has to act: evasion, and its manner.
+_EVADE = frozenset(("swerve", "dodge", "veer", "slam", "stamp", "jump", "stand", "yank", "jerk"))
+_HARD = frozenset(("hard", "sharply", "heavily", "suddenly", "firmly", "harshly", "violently", "emergency", "full",
+                   "strongly", "abruptly"))  # fmt: skip
+_BRAKE = frozenset(("brake", "stop"))
+_MILD = frozenset(("gently", "softly", "lightly", "slightly", "normally", "smoothly", "gradually", "calmly"))
+#: What a road user that gives way does (lemmas).
+_YIELD = frozenset(("wait", "yield", "give", "let", "hang", "hold"))
+#: Words after "let X": it goes, so the one who lets gives way ("let it pass", "let him go first").
+_LET_GO = frozenset(("pass", "go", "through", "by", "past", "first", "cross", "in", "out"))
+
+
+@lru_cache(maxsize=8192)
+def _pos(word: str) -> dict[str, tuple[str, ...]]:
+    """lemminflect's lemmas by part of speech; a hyphenated word ("rear-ended", "T-boned") by its last
+    part, joined again."""
+    from lemminflect import getAllLemmas
+
+    found = getAllLemmas(word)
+    if not found and "-" in word:
+        head, _, last = word.rpartition("-")
+        found = {pos: tuple(f"{head}-{x}" for x in lemmas) for pos, lemmas in getAllLemmas(last).items()}
+    return found
+
+
+@lru_cache(maxsize=8192)
+def _lemmas(word: str) -> frozenset[str]:
+    out = {word}
+    for lemmas in _pos(word).values():
+        out.update(lemmas)
+    return frozenset(out)
+
+
+def _is_verb(word: str) -> bool:
+    return "VERB" in _pos(word)
+
+
+_WORD_NUMBERS = {"two": 2.0, "three": 3.0, "four": 4.0, "five": 5.0, "six": 6.0, "half": 0.5}
+
+
+def _number(word: str) -> float | None:
+    """A number as digits, or a small one in words ("three feet from her": no unit the normaliser knows)."""
+    try:
+        return float(word)
+    except ValueError:
+        return _WORD_NUMBERS.get(word)
+
+
+@dataclass
+class _Clause:
+    """One clause's tokens, and the subject it inherits when it names none ("braked and swerved")."""
+
+    words: list[str]
+    first_of_sentence: bool
+    inherited: str | None = None
+    #: An earlier clause of its sentence is a condition ("if I had not braked, I would have hit him").
+    after_if: bool = False
+    signs: set[str] = field(default_factory=set)
+
+
+def _clauses(tokens: list[str]) -> list[_Clause]:
+    """The clauses of ``tokens``: cut at punctuation and at conjunctions."""
+    out: list[_Clause] = []
+    current: list[str] = []
+    first = True
+    condition = False
+    for tok in tokens:
+        if tok in _BREAK_PUNCT or tok in _BREAK_WORDS:
+            if current:
+                out.append(_Clause(current, first, after_if=condition))
+                condition = condition or bool({"if", "unless"} & set(current))
+            first = tok in ".;!?:" or (first and not current)
+            condition = condition and tok not in ".;!?:"
+            current = []
+            continue
+        current.append(tok)
+    if current:
+        out.append(_Clause(current, first, after_if=condition))
+    return out
+
+
+def _scoped(words: list[str], i: int, closed: frozenset[str], reach: int = 4) -> bool:
+    """Whether a word of ``closed`` stands up to ``reach`` words before ``i`` in the clause."""
+    return any(w in closed for w in words[max(0, i - reach) : i])
+
+
+#: Words that deny the verb after them as a negator does ("was unable to avoid", "failed to stop").
+_FAILING = frozenset(("unable", "fail", "fails", "failed", "failing"))
+
+
+def _denied_before(words: list[str], i: int) -> bool:
+    """Whether what stands at ``i`` is denied in its clause: an odd count of negators and denying
+    verbs before it ("no contact", "did not make contact", "managed to avoid hitting"); two cancel
+    ("was unable to avoid the collision", "could not avoid him": it happened)."""
+    count = sum(1 for w in words[:i] if w in _NEGATORS or w in _FAILING)
+    count += sum(1 for w in words[max(0, i - 4) : i] if _lemmas(w) & _DENYING_VERBS)  # (its object: "avoid a crash")
+    return count % 2 == 1
+
+
+def _object_of(words: list[str], i: int) -> list[str]:
+    """The words after a verb at ``i`` up to its object's head (past a particle and determiners)."""
+    return words[i + 1 : i + 4]
+
+
+def _meets_road_user(after: list[str]) -> bool:
+    """Whether the object after a contact verb is a road user, not a brake pedal or a speed."""
+    if not after:
+        return True  # ("... and it crashed", "they collided")
+    for w in after:
+        if w in _NOT_ROAD_USERS or _number(w) is not None:
+            return False
+        if w in ("the", "a", "an", "on", "off", "down", "over", "into", "with") or w in _POSSESSIVES:
+            continue
+        return True
+    return True
+
+
+def _is_contact(words: list[str], i: int) -> bool:
+    """Whether the word at ``i`` states a contact between road users."""
+    w = words[i]
+    nxt = words[i + 1] if i + 1 < len(words) else ""
+    prev = words[i - 1] if i > 0 else ""
+    if w in _CONTACT_NOUNS or (w.endswith("s") and w[:-1] in _CONTACT_NOUNS):
+        if nxt in _COMPOUND_HEADS or prev in ("time-to", "eye") or w.startswith("time-to"):
+            return False
+        if prev == "to" and i > 1 and words[i - 2] == "time":
+            return False
+        if prev in ("near", "near-"):
+            return False  # ("a near collision": a near miss, read by _is_near)
+        if w in ("crash", "crashes") and nxt in ("into", "through"):
+            return True
+        return not (w == "contact" and prev in ("eye",))
+    if w in ("onto", "off", "over", "across") and i > 0 and _is_verb(prev) and prev not in _LENGTH_UNITS | _SMALL_UNITS:
+        rest = words[i + 1 : i + 4]
+        if rest[:1] and rest[0] in _POSSESSIVES | {"the"} and set(rest[1:]) & _STRUCK_PARTS:
+            return True  # ("bounced off my bonnet", "rolled over the windscreen")
+    if w in ("versus", "vs") and 0 < i < len(words) - 1:
+        return True  # ("car versus e-scooter": a report's name for a collision between the two)
+    if (
+        w in _IMPACT_SOUNDS
+        and prev not in ("speed", "road")
+        and (prev in ("a", "an", "the") or words[i - 2 : i - 1] == ["a"])
+    ):
+        return True
+    lem = _lemmas(w)
+    if "wipe" in lem and "out" in words[i + 1 : i + 3]:
+        return _meets_road_user(words[i + 1 : i + 4])  # ("wiped out the cyclist", "wiped him out")
+    if lem & {"run", "knock", "mow"} and nxt in ("over", "down"):
+        return _meets_road_user(words[i + 2 : i + 5]) and not (nxt == "down" and lem & {"run"} and "road" in words)
+    if lem & {"make", "come"} and nxt == "contact":
+        return True
+    if lem & _CONTACT_VERBS and _is_verb(w) and _verbal(words, i):
+        if w.startswith("crash") and nxt in _COMPOUND_HEADS:
+            return False
+        return _meets_road_user(_object_of(words, i))
+    if _is_verb(w) and not lem & {"turn", "look", "get", "change", "switch", "fall", "slow"}:
+        j = i + 1
+        while j < len(words) and (words[j].endswith("ly") or words[j] in ("straight", "right", "head-on", "back")):
+            j += 1  # ("went straight into the side of it")
+        if j < len(words) and words[j] == _INTO and not w.endswith("ing"):
+            return _into_road_user(words, j)  # (not "starts merging into me": a motion under way)
+        if lem & {"throw", "fling", "launch", "toss"} and j < len(words) and words[j] in ("onto", "over"):
+            return True  # ("was thrown onto the bonnet": it was hit)
+    return False
+
+
+#: Words before a verb that make a noun-verb homograph a verb ("I hit", "to strike", "did not tap").
+_VERBAL_BEFORE = frozenset(("i", "we", "you", "he", "she", "it", "they", "to", "not", "will", "would", "could", "did",
+                            "does", "do", "ego", "then", "and", "just", "might", "may", "must", "can", "should",
+                            "is", "was", "were", "be", "been", "being", "got", "get", "gets", "are"))  # fmt: skip
+
+
+def _verbal(words: list[str], i: int) -> bool:
+    """Whether a word that can be a noun ("hit", "strike", "tag") is a verb here: inflected, after a
+    subject pronoun, a modal or "to", or before its object; "the rail strike" and "a hit" are nouns."""
+    w = words[i]
+    if "NOUN" not in _pos(w) or w not in _pos(w).get("VERB", ()):
+        return True  # (no noun, or inflected: "struck", "tagged", "hits")
+    prev = words[i - 1] if i > 0 else ""
+    nxt = words[i + 1] if i + 1 < len(words) else ""
+    if prev in ("a", "an", "the", "this", "that") or prev in _POSSESSIVES:
+        return False
+    return prev in _VERBAL_BEFORE or nxt in {"the", "a", "an", "into", "with"} | _POSSESSIVES | _PERSON_OBJECTS
+
+
+def _into_road_user(words: list[str], j: int) -> bool:
+    """Whether "into" at ``j`` has a thing met as object ("into the side of it", "into him", "into the
+    back of the van", "into the pallets"), not a place ("into my lane", "into the side road")."""
+    obj = words[j + 1 : j + 7]
+    if not obj:
+        return False
+    if obj[0] in _PERSON_OBJECTS:
+        return True
+    chunk: list[str] = []
+    for w in obj:
+        if w in _PHRASE_ENDS:
+            break
+        chunk.append(w)
+    if not chunk or set(chunk) & _PLACES:
+        return False  # ("into the right lane", "into our path")
+    if set(chunk) & _PARTS:
+        return "of" in obj or chunk[0] in _POSSESSIVES  # ("into the side of it", "into his back")
+    nouns = [w for w in chunk if "NOUN" in _pos(w) and _number(w) is None]
+    return bool(nouns) and chunk[0] in {"the", "a", "an", "some"} | _POSSESSIVES
+
+
+def _miss(words: list[str], i: int) -> bool:
+    """A verb of missing whose object is someone ("missed him", "missed each other", "miss the cyclist")."""
+    if "miss" not in _lemmas(words[i]) or words[i] in ("miss", "mis") and i > 0 and words[i - 1] == "near":
+        return False
+    after = words[i + 1 : i + 3]
+    if not after:
+        return True  # ("he swerved and just missed")
+    if after[0] in _PERSON_OBJECTS or after[0] == "by" or after[0] in _POSSESSIVES:
+        return True
+    return after[0] in ("the", "a") and len(after) > 1 and after[1] not in ("turn", "exit", "junction", "light")
+
+
+def _near_noun(words: list[str], i: int) -> bool:
+    """ "a near miss", "near-collision", "a close call", "a narrow escape"."""
+    w = words[i]
+    nxt = words[i + 1] if i + 1 < len(words) else ""
+    if w.startswith("near-") and (w[5:] in _CONTACT_NOUNS or w[5:].startswith("mis")):
+        return True
+    if w == "near" and (nxt.startswith("mis") or nxt in _CONTACT_NOUNS or nxt.rstrip("s") in _CONTACT_NOUNS):
+        return True
+    return (w in ("close", "narrow") and nxt in ("call", "shave", "escape", "one", "thing")) or w == "near-miss"
+
+
+def _margin(words: list[str], i: int) -> str | None:
+    """A margin stated at ``i``: "with inches to spare", "stopped a foot short", "by a whisker",
+    "0.5 m clearance", "a separation of 0.5 m". Small: a near miss; wide: safe."""
+    w = words[i]
+    if w == "spare" and i > 0 and words[i - 1] == "to":
+        said = words[max(0, i - 6) : i - 1]
+        if set(said) & _WIDE:
+            return SAFE
+        return NEAR_MISS if said else None
+    if w in ("clearance", "separation", "margin", "room", "space", "distance") and set(
+        words[max(0, i - 3) : i]
+    ) & _WIDE - {"room", "space"}:
+        return SAFE  # ("plenty of room", "an ample margin", "enough distance")
+    if w == "clear" and i > 0 and words[i - 1] in ("well", "safely", "comfortably"):
+        return SAFE
+    if (
+        w in ("time",)
+        and i > 0
+        and words[i - 1] == "in"
+        and any(_lemmas(x) & {"stop", "brake", "halt"} for x in words[max(0, i - 5) : i])
+    ):
+        return NEAR_MISS  # ("stopped just in time")
+    if w in ("moment", "second", "minute", "instant") and i > 1 and words[i - 1] == "last":
+        return NEAR_MISS  # ("swerved back at the last second")
+    context = set(words[max(0, i - 4) : i + 2])
+    if w in ("clearance", "separation", "margin") and (
+        w == "clearance" or context & {"minimum", "lateral", "with", "passing"}
+    ):
+        near = words[max(0, i - 4) : i + 6]
+        for k, x in enumerate(near):
+            value = _number(x)
+            if value is not None and k + 1 < len(near) and near[k + 1] in _LENGTH_UNITS:
+                metres = value * (0.3048 if near[k + 1] in ("foot", "feet") else 1.0)
+                return NEAR_MISS if metres <= 1.0 else SAFE if metres >= 1.5 else None
+        return None
+    if w in _LENGTH_UNITS | _SMALL_UNITS and i + 1 < len(words):
+        k = i + 1
+        if words[k] == "or" and k + 2 < len(words):
+            k += 2  # ("a metre or two from my bumper")
+        if (
+            words[k] in ("from", "off", "short", "before")
+            and k + 1 < len(words)
+            and (words[k + 1] in _POSSESSIVES | _PERSON_OBJECTS | {"the", "of"})
+        ):
+            value = _number(words[i - 1]) if i > 0 else None
+            if value is None and words[i] in ("inches", "centimetres", "centimeters", "cm", "millimetres", "mm"):
+                value = 0.1  # ("stopped inches from my door")
+            if value is None and i > 0 and words[i - 1] in ("a", "an", "few", "couple", "of"):
+                value = 2.0 if "couple" in words[max(0, i - 3) : i] else 1.0
+            if value is not None:
+                metres = value * (
+                    0.3048 if words[i] in ("foot", "feet") else 0.0254 if words[i].startswith("inch") else 1.0
+                )
+                if metres <= 3.0:
+                    return NEAR_MISS  # ("stopped two metres off his door", "a foot from him")
+    if w == "short" and i > 0:
+        before = words[max(0, i - 4) : i]
+        if any(_lemmas(x) & {"stop", "pull", "come"} for x in words[max(0, i - 7) : i]):
+            return NEAR_MISS
+    if w == "by" and i > 0 and "miss" in _lemmas(words[i - 1]) | (_lemmas(words[i - 2]) if i > 1 else frozenset()):
+        return NEAR_MISS
+    if w in _SMALL_UNITS and i > 0 and words[i - 1] in ("a", "an", "few", "inches") + tuple("0123456789"):
+        before = words[max(0, i - 6) : i]
+        if any(_lemmas(x) & {"stop", "miss", "pass", "clear", "halt"} for x in before) or "by" in before:
+            return NEAR_MISS
+    return None
+
+
+def _subject_is_ego(words: list[str], i: int, clause: _Clause, story: bool) -> bool:
+    """Whether the verb at ``i`` is the ego's: its subject before it is the ego, or it has none and the
+    clause inherits the ego or opens a narrator's sentence ("Had to brake", "Swerved round him")."""
+    j = i - 1
+    while j >= 0 and (words[j] in _BETWEEN or words[j].endswith("ly")):
+        j -= 1
+    if j < 0:
+        if clause.inherited is not None:
+            return clause.inherited == "ego"
+        return story and clause.first_of_sentence
+    return _names_ego(words[: j + 1])
+
+
+#: Words after which the ego is an object, not the subject ("the car behind the ego", "following ego").
+_OBJECT_MARKERS = frozenset(
+    ("of", "behind", "to", "with", "for", "at", "from", "past", "by", "than", "before", "after", "towards", "toward",
+     "ahead", "beside", "alongside", "near", "like", "into")
+)  # fmt: skip
+
+
+def _names_ego(words: list[str]) -> bool:
+    """Whether the noun phrase ending ``words`` is the ego (not the ego as an object inside it)."""
+    if not words:
+        return False
+    n = 0
+    if words[-1] in _EGO_HEADS:
+        n = 1
+    else:
+        tail = " ".join(words[-3:])
+        phrase = next((p for p in _EGO_PHRASES if tail.endswith(p)), None)
+        if phrase is None:
+            return False
+        n = len(phrase.split())
+    rest = [w for w in words[: len(words) - n] if w not in ("the", "a", "an")]
+    return not rest or not (rest[-1] in _OBJECT_MARKERS or rest[-1].endswith("ing"))
+
+
+def _subject(words: list[str]) -> str | None:
+    """The clause's own subject, told apart only as the ego or someone else ("I at 50": the ego)."""
+    if words and words[0] in _EGO_HEADS:
+        return "ego"
+    for k, w in enumerate(words):
+        if _is_verb(w) and w not in _BETWEEN and k > 0 and w not in ("ego", "car", "rider", "lane"):
+            return "ego" if _names_ego(words[:k]) else "other"
+    return None
+
+
+def _ego_acts(words: list[str], i: int) -> str | None:
+    """What the ego's verb at ``i`` says of the outcome: "evade" (swerve, brake hard), "brake" (a
+    plain brake), "yield" (waits, gives way, stops gently, lets the other go) or None."""
+    lem = _lemmas(words[i])
+    if not _is_verb(words[i]):
+        return None
+    if words[i].endswith(("ed", "ing")) and i + 1 < len(words) and set(_pos(words[i + 1])) == {"NOUN"}:
+        return None  # ("Stopped car ahead": a participle before its noun)
+    window = words[max(0, i - 3) : i + 5]
+    if lem & _EVADE:
+        if lem & {"slam", "stamp", "jump", "stand"} and not {"on", "brake", "brakes"} & set(window):
+            return None
+        return "evade"
+    if lem & _BRAKE or words[i] == "braking":
+        if set(window) & _MILD or "behind" in words[i + 1 : i + 3]:
+            return "yield"
+        if set(window) & _HARD:
+            return "evade"
+        return "brake" if lem & {"brake"} else "yield" if lem & {"stop"} else None
+    if lem & _YIELD:
+        after = words[i + 1 : i + 4]
+        if lem & {"give"} and "way" not in after:
+            return None
+        if lem & {"let"} and not set(after) & _LET_GO:
+            return None
+        if lem & {"hang", "hold"} and "back" not in after:
+            return None
+        return "yield"
+    return None
+
+
+@dataclass(frozen=True)
+class Cue:
+    """One statement of the outcome found in a clause: what it says (``contact``, ``hedged``,
+    ``denied``, ``near``, ``close``, ``safe``, ``evade``, ``brake``, ``yield``) and the words it was
+    read from, so a reading can say why it chose its intent."""
+
+    kind: str
+    words: str
+
+
+def outcome_cues(said: str) -> list[Cue]:
+    """The statements of the outcome in ``said`` (the reader's normalised, lowercased tokens joined by
+    spaces, contractions as "did not"), in text order."""
+    tokens = said.split()
+    story = bool({"i", "we", "me", "my", "us", "our"} & set(tokens))
+    cues: list[Cue] = []
+    previous: str | None = None
+    for clause in _clauses(tokens):
+        words = clause.words
+        own = _subject(words)
+        clause.inherited = None if clause.first_of_sentence else previous
+        previous = own or clause.inherited or ("ego" if story and clause.first_of_sentence else None)
+        text = " ".join(words)
+
+        def add(kind: str) -> None:
+            cues.append(Cue(kind, text))  # noqa: B023 (the clause being read)
+
+        for i, w in enumerate(words):
+            if _is_contact(words, i):
+                hedged = _scoped(words, i, _HEDGES | {"only", "within"}, 5)
+                counterfactual = "have" in words[:i] and (_scoped(words, i, _HYPOTHETICAL, 3) or clause.after_if)
+                if hedged or counterfactual:
+                    add("hedged")
+                elif _denied_before(words, i) or _scoped(words, i, _HYPOTHETICAL, 2):
+                    add("denied")
+                else:
+                    add("contact")
+                continue
+            if _near_noun(words, i):
+                add("safe" if _denied_before(words, i) else "near")  # ("no near miss": nothing close)
+                continue
+            if w.endswith("-free") and w[:-5] in _CONTACT_NOUNS | {"conflict", "incident", "drama", "problem"}:
+                add("safe")  # ("a collision-free pass")
+                continue
+            if len(words) == 2 and words[0] == "all" and w in ("clear", "good", "fine", "ok", "okay", "well"):
+                add("safe")  # ("All clear.")
+            if _miss(words, i):
+                add("contact" if _denied_before(words, i) else "near")  # ("did not miss him")
+                continue
+            if _close_ttc(words, i):
+                add("near")
+                continue
+            margin = _margin(words, i)
+            if margin is not None:
+                add("near" if margin == NEAR_MISS else "safe")
+            hedge = w in _HEDGES or (w == "just" and i > 0 and words[i - 1] == "only")
+            if hedge and _hedged_act(words, i):
+                add("hedged")
+            if w in _TROUBLE and (_denied_before(words, i) or _scoped(words, i, ("without",), 3)):
+                add("safe")
+            went = w == "smoothly" and i > 0 and _lemmas(words[i - 1]) & {"go", "pass", "run"}  # ("it went smoothly")
+            if (w in _SAFE_WORDS or went) and not _denied_before(words, i):
+                if not (w == "fine" and i + 1 < len(words)):  # ("fine rain": weather)
+                    add("safe")
+            then = (
+                words[i + 2]
+                if i + 2 < len(words) and words[i + 1] == "else"
+                else words[i + 1]
+                if i + 1 < len(words)
+                else ""
+            )
+            if (
+                w == "nothing"
+                and words[i - 1 : i] not in (["like"], ["if"])
+                and ("ADJ" in _pos(then) or _lemmas(then) & {"happen", "occur"})
+            ):
+                add("safe")  # ("nothing happened", "Nothing dramatic": nothing of note)
+            if w in _CLOSE and _predicate(words, i):
+                add("safe" if _denied_before(words, i) else "close")  # ("nobody close"; "it was close")
+            if len(words) == 1 and w in ("clean", "clear", "close", "tight"):
+                add("safe" if w in ("clean", "clear") else "close")  # (a one-word verdict: "Clean.", "but close")
+            if _is_verb(w) and _subject_is_ego(words, i, clause, story):
+                act = _ego_acts(words, i)
+                if act is not None:
+                    add(act)
+            elif _lemmas(w) & {"let", "give", "yield"} and _is_verb(w) and not w.endswith("ing"):
+                if _ego_acts(words, i) == "yield" and not _denied_before(words, i):
+                    add("yield")  # (someone gives way or lets the other go: no conflict)
+            if (
+                _lemmas(w) & {"avoid", "dodge", "evade"}
+                and words[i + 1 : i + 2]
+                and words[i + 1] in _PERSON_OBJECTS - {"it", "one"}
+            ):
+                if not _denied_before(words, i):
+                    add("evade")  # ("dived into the outside lane to avoid him")
+    return cues
+
+
+def decide(cues: list[Cue]) -> str | None:
+    """The intent the cues state. A contact anywhere is a collision; a hedge, a miss, a small margin
+    or a close call a near miss; then a stated safe pass; a denied contact is a near miss unless the
+    ego only gave way; the ego's evasion alone a near miss, its giving way alone a safe pass."""
+    kinds = {c.kind for c in cues}
+    if "contact" in kinds:
+        return COLLISION
+    if kinds & {"hedged", "near", "close"}:
+        return NEAR_MISS
+    if "safe" in kinds:
+        return SAFE
+    if "denied" in kinds:
+        return SAFE if "yield" in kinds and not kinds & {"evade", "brake"} else NEAR_MISS
+    if "evade" in kinds:
+        return NEAR_MISS
+    if "yield" in kinds and "brake" not in kinds:
+        return SAFE
+    return None
+
+
+def stated_intent(said: str) -> str | None:
+    """``collision``, ``near_miss``, ``safe`` or None, from the reader's normalised, lowercased tokens
+    joined by spaces (contractions as "did not")."""
+    return decide(outcome_cues(said))
+
+
+#: Words that say the pass was safe, wherever they stand ("passes safely", "a comfortable pass").
+_SAFE_WORDS = frozenset(("safe", "safely", "uneventful", "uneventfully", "fine", "comfortably"))
+#: A time to collision said as its least value: below this it was a near miss.
+_TTC_WORDS = frozenset(("ttc", "time-to-collision"))
+_LOWEST = frozenset(("minimum", "min", "lowest", "dropped", "drops", "fell", "falls", "below", "under"))
+
+
+def _close_ttc(words: list[str], i: int) -> bool:
+    """ "minimum TTC 0.8 s", "the TTC dropped to 0.9 s": the least time to collision, under 1.5 s."""
+    if words[i] not in _TTC_WORDS and not (words[i] == "collision" and words[i - 2 : i] == ["time", "to"]):
+        return False
+    window = words[max(0, i - 3) : i + 6]
+    if not set(window) & _LOWEST:
+        return False
+    values = [_number(w) for w in words[i + 1 : i + 6]]
+    return any(v is not None and v < 1.5 for v in values)
+
+
+_COPULA = frozenset(("is", "was", "were", "be", "been", "being", "are", "'s", "it's", "its", "got", "nobody", "no"))
+_DEGREE = frozenset(
+    ("very", "really", "so", "too", "quite", "pretty", "a", "bit", "little", "rather", "extremely", "one")
+)
+
+
+def _predicate(words: list[str], i: int) -> bool:
+    """Whether a word of closeness at ``i`` is said of the situation, after a copula, and ends its
+    clause ("it was close", "but it was dangerous", "nobody close"); not "pulls in too close ahead"."""
+    if i + 1 < len(words) and words[i + 1] not in ("one", "call", "thing"):
+        return False
+    j = i - 1
+    while j >= 0 and words[j] in _DEGREE:
+        j -= 1
+    return j >= 0 and words[j] in _COPULA
+
+
+def _hedged_act(words: list[str], i: int) -> bool:
+    """A hedge before a verb that acts on someone ("nearly took my bumper off", "almost wiped us
+    out"), or before a stop ("only just stopped", "barely stopped in time")."""
+    after = words[i + 1 : i + 5]
+    if not after or not _is_verb(after[0]) or after[0].endswith("ing"):
+        return False  # ("barely crawling": how fast, not what happened)
+    if _lemmas(after[0]) & {"stop", "avoid", "manage", "make", "get"}:
+        return True
+    return bool(set(after[1:]) & (_PERSON_OBJECTS - {"one", "each"} | _POSSESSIVES))
