@@ -52,7 +52,7 @@ INDEPENDENT = {
     ROOT / "tests" / "data" / "language_independent_b.json": (63, 57),
     ROOT / "tests" / "data" / "language_independent_c.json": (65, 55),
     ROOT / "tests" / "data" / "language_independent_d.json": (56, 34),
-    ROOT / "tests" / "data" / "language_independent_e.json": (70, 49),
+    ROOT / "tests" / "data" / "language_independent_e.json": (70, 53),
     ROOT / "tests" / "data" / "language_independent_f.json": (60, 52),
 }
 
@@ -258,3 +258,24 @@ def test_the_map_layout_known_before_writing_is_the_written_maps(spec):
     from vei_scenario.language import maps
 
     assert maps.layout(spec) == maps.build_map(spec)[1]
+
+
+def test_a_road_user_ahead_facing_the_ego_counts_as_oncoming():
+    """The layers place a wrong-way rider ahead in the ego's lane facing it; the format calls that start
+    oncoming. One ahead going the ego's way is not."""
+    towards = "An e-scooter rides the wrong way in the ego's lane towards the ego."
+    layers = layers_from_text(towards, 0)
+    assert layers["adversaries"][0]["spawn"] == {
+        **layers["adversaries"][0]["spawn"],
+        "relation": "ahead",
+        "facing": "against",
+    }
+    want = {"type": "e-scooter", "relation": ["oncoming"]}
+    [r] = check_corpus([{"text": towards, "actors": [want]}], layers_from_text, seeds=(0,))
+    assert r.faithful, r.problems
+    [r] = check_corpus(
+        [{"text": "A cyclist rides ahead of the ego.", "actors": [{**want, "type": "bicycle"}]}],
+        layers_from_text,
+        seeds=(0,),
+    )
+    assert not r.faithful and any("relation ahead" in p for p in r.problems)

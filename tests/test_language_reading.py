@@ -255,3 +255,23 @@ def test_a_stated_distance_times_a_crossing_and_is_kept():
     layers = layers_from_text("The ego drives at 30 km/h; a pedestrian steps out from the right 20 m ahead.", 0)
     config = layers["adversaries"][0]["behaviour"]["config"]
     assert config["distance_m"] == 20.0 and -0.2 <= config["arrival_gap_s"] <= 6.0
+
+
+@pytest.mark.parametrize(
+    "text, side",
+    [
+        ("At the crossroads a jogger comes from the left.", "left"),
+        ("At the intersection a woman with a pram comes from the right while the ego turns left.", "right"),
+        ("Near the junction an old man on foot appears from the left, ego at 30 km/h.", "left"),
+    ],
+)
+def test_a_walker_coming_from_a_side_of_a_junction_crosses_from_that_kerb(text, side):
+    """A road user on a junction arm who just comes on drives across the ego's path; on foot it crosses
+    from the kerb of that side (a walker does not drive down an arm), and its scenario can be written."""
+    from vei_scenario.language.rules_backend import layers_from_text
+    from vei_scenario.language.scenario_writer import write_scenario
+
+    [walker] = read(text).actors
+    assert (walker.kind, walker.relation) == ("pedestrian", f"roadside_{side}")
+    assert [b[0] for b in walker.behaviours] == ["cross_in_front"]
+    write_scenario(layers_from_text(text, 0), "scenario")

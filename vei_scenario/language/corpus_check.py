@@ -67,6 +67,8 @@ def _actor_problems(adv: dict, want: dict) -> list[str]:
         # a walker or rider going along the road starts ahead at the edge of the ego's lane (lateral_m
         # left of its centre): on the kerb side the format calls roadside_left / roadside_right
         said.add("roadside_left" if lateral > 0 else "roadside_right")
+    if relation == "ahead" and adv["spawn"].get("facing") == "against":
+        said.add("oncoming")  # (ahead in the ego's lane, facing it: it comes from the opposite direction)
     accepted = set(want.get("relation", ()))
     if "oncoming" in accepted:  # at a junction what comes towards the ego starts on the opposite arm
         accepted.add("junction_opposite")

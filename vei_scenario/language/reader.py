@@ -1678,7 +1678,11 @@ def read(text: str) -> Reading:
             and behaviours[:1]
             and (behaviours[0][0] == "keep_going" and not a.stationary)
         ):  # entering the junction from a side road: across the ego's path
-            behaviours[0] = ("run_red_light", behaviours[0][1], behaviours[0][2], behaviours[0][3])
+            if a.kind == "pedestrian":  # (on foot, from the kerb of that side: a walker does not drive an arm)
+                spec.relation = "roadside_" + spec.relation.split("_")[1]
+                behaviours[0] = ("cross_in_front", behaviours[0][1], behaviours[0][2], behaviours[0][3])
+            else:
+                behaviours[0] = ("run_red_light", behaviours[0][1], behaviours[0][2], behaviours[0][3])
         spec.behaviours = behaviours
         if (
             behaviours[:1]
