@@ -117,6 +117,8 @@ ACTOR_NOUNS = {
         "tram",  # (on its rails it crosses and brakes as a long vehicle does)
         "streetcar",
         "trolleybus",
+        "double-decker",
+        "double decker",
     ),
     "van": (
         "van",
@@ -155,6 +157,9 @@ CAR_NOUNS = (
     "motor scooter",
     "motorbike",
     "motorcyclist",
+    "powered two-wheeler",  # (Euro NCAP's word for a motorcycle or moped)
+    "two-wheeler",
+    "ptw",
     "adversary",
     "adversarial vehicle",
     "driver",
@@ -1156,6 +1161,9 @@ SEQUENCE = (
 PARALLEL = ("while", "at the same time", "simultaneously", "meanwhile", "whilst")
 #: Phrases that look like content but are not.
 NOISE = (
+    "street light",  # (lighting along a road, not a junction's signals: "lights" alone are those)
+    "street lighting",
+    "street lamp",
     "row of",
     "line of",
     "give-way line",

@@ -283,21 +283,61 @@ _NOMINAL = re.compile(
 )
 
 
-def _acronyms_defined(text: str) -> str:
+def _lemmas_of(word: str) -> bool:
+    """Whether ``word`` is an English word lemminflect knows (then it is no abbreviation)."""
+    from lemminflect import getAllLemmas
+
+    return bool(getAllLemmas(word))
+
+
+def _initials(words: list[str]) -> str:
+    """The initials of ``words``, a hyphenated word giving one per part ("e-scooter target": "est",
+    "powered two-wheeler": "ptw"), as abbreviations are made."""
+    return "".join(part[0] for w in words for part in w.split("-") if part)
+
+
+#: A word that may be an abbreviation: three or four letters, no vowel but as its first letter (units
+#: excepted).
+_SHORT = re.compile(r"\b(?!(?:mph|kph|kmh|mps|hrs)\b)[a-z][b-df-hj-np-tv-z]{2,3}\b")
+#: Words an abbreviated term does not start with.
+_NOT_IN_TERMS = frozenset("a an the at in on of to and or my our his her their its with from by".split())
+
+
+def _acronyms_defined(text: str, known_noun=lambda phrase: None) -> str:
     """A term and its abbreviation in brackets ("principal other vehicle (POV)", "insured vehicle (IV)"):
     the term once, so the bracket is not read as a second road user, and the term again wherever the
-    abbreviation is used after it ("the path of the IV": of the insured vehicle)."""
+    abbreviation is used after it ("the path of the IV": of the insured vehicle). A road user's term
+    used first in full and then by its initials without brackets ("an e-scooter target ... EST
+    crosses") is the same: writers of test protocols abbreviate what they have just named."""
     terms: dict[str, str] = {}
 
     def sub(m: re.Match) -> str:
         words, short = m.group(1).split(), m.group(2)
         for n in range(1, len(words) + 1):
-            if "".join(w[0] for w in words[-n:]) == short:
+            if _initials(words[-n:]) == short:
                 terms[short] = " ".join(words[-n:])
                 return m.group(1).rstrip() + " "
         return m.group(0)
 
     text = _DEFINED.sub(sub, text)
+    for m in _SHORT.finditer(text):
+        short = m.group(0)
+        if short in terms or _lemmas_of(short) or known_noun(short):
+            continue
+        words = re.findall(r"[a-z][a-z-]*", text[: m.start()])
+        found = next(
+            (
+                words[end - n : end]
+                for end in range(len(words), 0, -1)
+                for n in range(1, min(len(short), end) + 1)
+                if _initials(words[end - n : end]) == short
+                and words[end - n] not in _NOT_IN_TERMS
+                and known_noun(" ".join(words[end - n : end]))
+            ),
+            None,
+        )
+        if found:
+            terms[short] = " ".join(found)
     for short, term in terms.items():
         if len(short) > 1:  # ("the IV", "ahead of TC": the term, with its article)
             text = re.sub(rf"\b(?:the\s+)?{re.escape(short)}\b(?!\s*\()", f"the {term}", text)
@@ -323,7 +363,7 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
         "i",
         text,
     )
-    text = _acronyms_defined(text)
+    text = _acronyms_defined(text, known_noun)
     for pattern, repl in _SHORTHAND:
         text = pattern.sub(repl, text)
     text = _FOUR_DIGIT_CLOCK.sub(r"\1:\2", text)

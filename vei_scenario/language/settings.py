@@ -55,16 +55,23 @@ def negated(tokens: list[str], i: int) -> bool:
     return k >= 0 and tokens[k] in NEGATORS
 
 
+#: Prepositions, a closed class: a compound starting with one modifies ("in-car commentary").
+_PREPOSITIONS = frozenset("in on off out over under up down by through inside outside within after non".split())
+
+
 def compound_words(token: str, slot_of: Callable[[tuple[str, ...]], str | None]) -> list[str]:
     """A hyphenated token the reader has no entry for, as its words when they are a setting phrase
     ("rush-hour": "rush hour") or a modifier before a time of day or a road word ("mid-afternoon":
-    "mid afternoon", "mini-roundabout": "mini roundabout")."""
+    "mid afternoon", "mini-roundabout": "mini roundabout"), or a modifier before a road user's noun
+    (an English compound names what its head does: "tow-truck" is a truck, "camper-van" a van)."""
     if "-" not in token or slot_of((token,)) is not None:
         return [token]
     parts = [p for p in token.split("-") if p]
-    if len(parts) < 2 or slot_of((parts[0],)) == "actor":  # ("bus-lane": a road user's word first, no setting)
+    # (a preposition first makes a modifier, not a noun: "in-car", "off-truck" name no road user)
+    head_actor = slot_of((parts[-1],)) == "actor" and parts[0] not in _PREPOSITIONS
+    if len(parts) < 2 or (slot_of((parts[0],)) == "actor" and not head_actor):  # ("bus-lane": no road user)
         return [token]
-    if slot_of(tuple(parts)) in SETTING_SLOTS or slot_of((parts[-1],)) in ("time", "map"):
+    if slot_of(tuple(parts)) in SETTING_SLOTS or slot_of((parts[-1],)) in ("time", "map") or head_actor:
         return parts  # ("mini-roundabout", "Y-junction": a road by its head word)
     return [token]
 

@@ -1,0 +1,60 @@
+"""What kind of road user a noun phrase names, and setting words that name no road user: a hyphenated
+compound by its head noun, an abbreviation by the term whose initials it spells, street lighting as
+lighting (not traffic lights)."""
+
+from __future__ import annotations
+
+import pytest
+
+from vei_scenario.language.reader import read
+
+
+def _kinds(text: str) -> list[str]:
+    return [a.kind for a in read(text).actors]
+
+
+# --- a hyphenated compound is the road user its head noun names ---------------------------------------
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("A tow-truck pulls out from the left in front of us while we drive at 30 km/h.", "truck"),
+        ("An e-bike comes out of a driveway on the right and crosses in front of us at 25 km/h.", "bicycle"),
+        ("Our car at 40 km/h; a camper-van ahead brakes hard.", "van"),
+        ("A double-decker pulls away from the stop on our left at 20 km/h, ego 30 km/h.", "truck"),
+    ],
+    ids=["tow-truck", "e-bike", "camper-van", "double-decker"],
+)
+def test_a_hyphenated_compound_is_read_by_its_head_noun(text, kind):
+    assert _kinds(text) == [kind]
+
+
+def test_a_compound_opened_by_a_preposition_names_no_road_user():
+    assert _kinds("In-car footage: a cyclist ahead of us brakes hard while we drive at 30 km/h.") == ["bicycle"]
+
+
+# --- an abbreviation is the term whose initials it spells -------------------------------------------
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("Test with a bicycle target dummy: ego 40 km/h, the BTD crosses from the right.", "bicycle"),
+        ("Setup with an e-scooter dummy, ego at 30 km/h; ESD rides across from the left.", "e-scooter"),
+        ("Powered two-wheeler (PTW) ahead at 40 km/h; the PTW brakes hard, ego 50 km/h.", "car"),
+    ],
+    ids=["btd", "esd-undefined", "ptw-bracketed"],
+)
+def test_an_abbreviation_is_the_term_whose_initials_it_spells(text, kind):
+    assert _kinds(text) == [kind]
+
+
+# --- street lighting is lighting, not a signalised junction -------------------------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "At night under orange street lights a jogger ahead of us crosses from the left, we drive at 40 km/h.",
+        "The streetlights are out; a cyclist ahead of us brakes hard while we drive at 30 km/h.",
+        "Dark road with street lamps, a deer jumps out from the right, ego 60 km/h.",
+    ],
+    ids=["street-lights", "streetlights", "street-lamps"],
+)
+def test_street_lighting_does_not_make_a_junction(text):
+    assert read(text).map_kind in (None, "straight")
