@@ -58,3 +58,22 @@ def test_an_abbreviation_is_the_term_whose_initials_it_spells(text, kind):
 )
 def test_street_lighting_does_not_make_a_junction(text):
     assert read(text).map_kind in (None, "straight")
+
+
+# --- the writer's own vehicle or driver is the ego ------------------------------------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist crosses from the left and our driver stamps on the brakes at 40 km/h.",
+        "A jogger steps out from the right; my old van brakes hard, doing 30 mph.",
+        "At 50 km/h our lorry follows a bus that suddenly stops ahead.",
+    ],
+    ids=["our-driver", "my-old-van", "our-lorry"],
+)
+def test_a_first_person_possessive_before_a_vehicle_names_the_ego(text):
+    assert len(read(text).actors) == 1
+
+
+def test_a_first_person_possessive_before_a_person_is_no_vehicle():
+    r = read("I drove my kid to school at 20 mph when a cyclist ahead of us braked hard.")
+    assert [a.kind for a in r.actors] == ["bicycle"]

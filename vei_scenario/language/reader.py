@@ -53,6 +53,7 @@ from vei_scenario.language.stated import (
     stated_lanes,
     stated_outcome,
 )
+from vei_scenario.language.who import own_vehicles
 
 _TOKEN = re.compile(r"\d+(?:\.\d+)?|km/h|m/s²|m/s2|m/s|[a-z][a-z\-]*(?:'[a-z]+)?|'s|[.;,!?:%]")
 _TOKEN_BRACKETS = re.compile(_TOKEN.pattern + "|[()]")  # (for discourse: a name said in brackets)
@@ -301,7 +302,7 @@ def _tokens(text: str, spell: bool = True, brackets: bool = False) -> list[str]:
             out.extend(S.compound_words(tok, lambda key: TABLE.get(key, (None,))[0]))
     if spell:
         out = [_speller().correct(tok) for tok in out]
-    return out
+    return own_vehicles(out, _kind_at, lambda w: w.isalpha() and w not in FUNCTION_WORDS and not _known([w], 0))
 
 
 #: Contractions whose verb is not the word before "n't" less its "n".

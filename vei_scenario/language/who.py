@@ -1,0 +1,45 @@
+"""Who a noun phrase names when its determiner says whose it is: the writer's own vehicle or driver
+("my van", "our driver", "our old lorry") is the ego, whatever its type, as "my car" is. A person
+after "my" or "our" ("my kid", "our passenger") is someone in the ego, not a road user, and is left as
+it is."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+#: First-person possessives, a closed class: what they own is the writer's, hence the ego.
+FIRST_PERSON_POSSESSIVES = frozenset({"my", "our"})
+#: At most this many modifiers between the possessive and its head noun ("our white transit van").
+_MODIFIERS = 2
+
+KindAt = Callable[[list[str], int], "tuple[str, int] | None"]
+
+
+def _own_vehicle_end(tokens: list[str], i: int, kind_at: KindAt, modifier: Callable[[str], bool]) -> int | None:
+    """Where the phrase "my/our [modifiers] <vehicle noun>" starting at ``i`` ends, or None."""
+    for j in range(i + 1, min(i + 2 + _MODIFIERS, len(tokens))):
+        found = kind_at(tokens, j)
+        if found is not None:
+            kind, length = found
+            return j + length if kind not in ("pedestrian", "ego") else None
+        if not modifier(tokens[j]):
+            return None
+    return None
+
+
+def own_vehicles(tokens: list[str], kind_at: KindAt, modifier: Callable[[str], bool]) -> list[str]:
+    """``tokens`` with each "my/our [modifiers] <vehicle noun>" as the one token "ego".
+    ``kind_at(tokens, i)`` gives the road-user type a phrase at ``i`` names and its length;
+    ``modifier(word)`` whether a word may stand before a head noun (a content word the reader has no
+    phrase for)."""
+    out: list[str] = []
+    i = 0
+    while i < len(tokens):
+        end = _own_vehicle_end(tokens, i, kind_at, modifier) if tokens[i] in FIRST_PERSON_POSSESSIVES else None
+        if end is None:
+            out.append(tokens[i])
+            i += 1
+        else:
+            out.append("ego")
+            i = end
+    return out
