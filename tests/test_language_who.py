@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import pytest
 
+from vei_scenario.language.reader import _tokens as _TOKENS
 from vei_scenario.language.reader import read
 
 
@@ -77,3 +78,28 @@ def test_a_first_person_possessive_before_a_vehicle_names_the_ego(text):
 def test_a_first_person_possessive_before_a_person_is_no_vehicle():
     r = read("I drove my kid to school at 20 mph when a cyclist ahead of us braked hard.")
     assert [a.kind for a in r.actors] == ["bicycle"]
+
+
+# --- a closed compound is the road user its head names ------------------------------------------------
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("A firetruck pulls out from the left in front of us at 30 km/h.", "truck"),
+        ("A schoolbus ahead of us stops suddenly, we drive at 40 km/h.", "truck"),
+        ("A minicab overtakes us and cuts in, ego at 50 km/h.", "car"),
+    ],
+    ids=["firetruck", "schoolbus", "minicab"],
+)
+def test_a_closed_compound_is_read_by_its_head_noun(text, kind):
+    assert _kinds(text) == [kind]
+
+
+@pytest.mark.parametrize("word", ["vicar", "syllabus", "caravan", "oscar"])
+def test_a_word_that_only_ends_like_a_vehicle_is_left_whole(word):
+    # (what is before the vehicle noun is no word of its own, or too short to be one)
+    assert _TOKENS(f"the {word} waits")[1] == word
+
+
+@pytest.mark.parametrize("noun", ["people carrier", "MPV"])
+def test_a_people_carrier_is_a_van(noun):
+    assert _kinds(f"A {noun} pulls out from the right in front of us at 30 km/h.") == ["van"]

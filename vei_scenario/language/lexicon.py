@@ -131,6 +131,8 @@ ACTOR_NOUNS = {
         "pick-up",
         "pickup truck",
         "pick-up truck",
+        "people carrier",
+        "mpv",
     ),
 }
 CAR_NOUNS = (

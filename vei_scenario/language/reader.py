@@ -53,7 +53,7 @@ from vei_scenario.language.stated import (
     stated_lanes,
     stated_outcome,
 )
-from vei_scenario.language.who import own_vehicles
+from vei_scenario.language.who import closed_compound, own_vehicles
 
 _TOKEN = re.compile(r"\d+(?:\.\d+)?|km/h|m/s²|m/s2|m/s|[a-z][a-z\-]*(?:'[a-z]+)?|'s|[.;,!?:%]")
 _TOKEN_BRACKETS = re.compile(_TOKEN.pattern + "|[()]")  # (for discourse: a name said in brackets)
@@ -258,6 +258,12 @@ def _ncap_target(m: re.Match) -> str:
     return who
 
 
+def _single_kind(word: str) -> str | None:
+    """The road-user type ``word`` alone names, or None (for :mod:`who`)."""
+    slot, value = TABLE.get((word,), (None, None))
+    return str(value) if slot == "actor" else None
+
+
 def _actor_word(word: str) -> bool:
     """Whether ``word`` alone names a road user other than the ego."""
     return any(TABLE.get((w,), ("",))[0] == "actor" and TABLE[(w,)][1] != "ego" for w in forms(word))
@@ -299,7 +305,8 @@ def _tokens(text: str, spell: bool = True, brackets: bool = False) -> list[str]:
         elif tok.endswith("'") or tok in ("'",):
             continue
         else:  # ("rush-hour", "mid-afternoon": a setting's words)
-            out.extend(S.compound_words(tok, lambda key: TABLE.get(key, (None,))[0]))
+            for word in S.compound_words(tok, lambda key: TABLE.get(key, (None,))[0]):
+                out.extend([word] if (word,) in TABLE else closed_compound(word, _single_kind))
     if spell:
         out = [_speller().correct(tok) for tok in out]
     return own_vehicles(out, _kind_at, lambda w: w.isalpha() and w not in FUNCTION_WORDS and not _known([w], 0))

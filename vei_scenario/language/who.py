@@ -6,6 +6,7 @@ it is."""
 from __future__ import annotations
 
 from collections.abc import Callable
+from functools import lru_cache
 
 #: First-person possessives, a closed class: what they own is the writer's, hence the ego.
 FIRST_PERSON_POSSESSIVES = frozenset({"my", "our"})
@@ -43,3 +44,28 @@ def own_vehicles(tokens: list[str], kind_at: KindAt, modifier: Callable[[str], b
             out.append("ego")
             i = end
     return out
+
+
+#: The shortest head and modifier a closed compound is split into ("minibus": "mini" + "bus").
+_SHORTEST_PART = 3
+
+
+@lru_cache(maxsize=1)
+def _english():
+    from lemminflect import getAllLemmas
+
+    return getAllLemmas
+
+
+def closed_compound(token: str, kind_of: Callable[[str], str | None]) -> list[str]:
+    """A word written as one that is a modifier and a vehicle noun ("firetruck", "schoolbus",
+    "minicab"), as those two words, so that it names what its head names; a word whose beginning is
+    no English word of its own ("syllabus", "caravan", "vicar") is left whole. ``kind_of(word)`` is
+    the road-user type a single word names, or None."""
+    if kind_of(token) is not None:
+        return [token]
+    for cut in range(_SHORTEST_PART, len(token) - _SHORTEST_PART + 1):
+        head, modifier = token[cut:], token[:cut]
+        if kind_of(head) not in (None, "pedestrian", "ego") and _english()(modifier):
+            return [modifier, head]
+    return [token]
