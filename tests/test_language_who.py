@@ -103,3 +103,22 @@ def test_a_word_that_only_ends_like_a_vehicle_is_left_whole(word):
 @pytest.mark.parametrize("noun", ["people carrier", "MPV"])
 def test_a_people_carrier_is_a_van(noun):
     assert _kinds(f"A {noun} pulls out from the right in front of us at 30 km/h.") == ["van"]
+
+
+# --- lights named by a modifier are a vehicle's or a street's, not a junction's signals -------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "An ambulance with flashing lights overtakes us at 80 km/h while we drive at 50 km/h.",
+        "A police car with its blue lights on passes us at 90 km/h, ego 60 km/h.",
+        "In the dark I see only the tail lights of a truck ahead, which brakes hard; ego 70 km/h.",
+    ],
+    ids=["flashing", "blue", "tail"],
+)
+def test_lights_after_a_modifier_make_no_junction(text):
+    assert read(text).map_kind in (None, "straight")
+
+
+@pytest.mark.parametrize("lights", ["the lights", "the traffic lights", "red lights", "temporary lights"])
+def test_signal_lights_still_make_a_junction(lights):
+    assert read(f"A car ahead of us stops at {lights}, we drive at 30 km/h.").map_kind == "crossroad"

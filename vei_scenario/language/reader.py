@@ -53,7 +53,7 @@ from vei_scenario.language.stated import (
     stated_lanes,
     stated_outcome,
 )
-from vei_scenario.language.who import closed_compound, own_vehicles
+from vei_scenario.language.who import closed_compound, lamps_not_signals, own_vehicles
 
 _TOKEN = re.compile(r"\d+(?:\.\d+)?|km/h|m/s²|m/s2|m/s|[a-z][a-z\-]*(?:'[a-z]+)?|'s|[.;,!?:%]")
 _TOKEN_BRACKETS = re.compile(_TOKEN.pattern + "|[()]")  # (for discourse: a name said in brackets)
@@ -309,6 +309,7 @@ def _tokens(text: str, spell: bool = True, brackets: bool = False) -> list[str]:
                 out.extend([word] if (word,) in TABLE else closed_compound(word, _single_kind))
     if spell:
         out = [_speller().correct(tok) for tok in out]
+    out = lamps_not_signals(out, lambda w: w.isalpha() and w not in FUNCTION_WORDS)
     return own_vehicles(out, _kind_at, lambda w: w.isalpha() and w not in FUNCTION_WORDS and not _known([w], 0))
 
 

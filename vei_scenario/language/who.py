@@ -1,7 +1,8 @@
-"""Who a noun phrase names when its determiner says whose it is: the writer's own vehicle or driver
-("my van", "our driver", "our old lorry") is the ego, whatever its type, as "my car" is. A person
-after "my" or "our" ("my kid", "our passenger") is someone in the ego, not a road user, and is left as
-it is."""
+"""What a noun phrase names, by its structure: whose it is (the writer's own vehicle or driver, "my
+van", "our driver", "our old lorry", is the ego, whatever its type, as "my car" is; a person after
+"my" or "our", "my kid", is someone in the ego and left as it is), its head (a closed compound,
+"firetruck", names what its head names) and its modifier ("flashing lights" are a vehicle's lamps,
+not a junction's signals, which "lights" alone are)."""
 
 from __future__ import annotations
 
@@ -69,3 +70,21 @@ def closed_compound(token: str, kind_of: Callable[[str], str | None]) -> list[st
         if kind_of(head) not in (None, "pedestrian", "ego") and _english()(modifier):
             return [modifier, head]
     return [token]
+
+
+#: Modifiers of "lights" that still name a junction's signals ("traffic lights", "temporary lights");
+#: any other content word before it names another kind of lamp ("flashing", "blue", "tail", "fog").
+SIGNAL_MODIFIERS = frozenset(
+    {"traffic", "signal", "red", "green", "amber", "yellow", "temporary", "pedestrian", "crossing", "junction"}
+)
+
+
+def lamps_not_signals(tokens: list[str], content_word: Callable[[str], bool]) -> list[str]:
+    """``tokens`` with "lights" after a content word other than a signal's modifier as "lamps" (a word
+    that names no junction). ``content_word(word)`` whether a word is no function word."""
+    return [
+        "lamps"
+        if tok == "lights" and i > 0 and tokens[i - 1] not in SIGNAL_MODIFIERS and content_word(tokens[i - 1])
+        else tok
+        for i, tok in enumerate(tokens)
+    ]
