@@ -122,3 +122,10 @@ def test_lights_after_a_modifier_make_no_junction(text):
 @pytest.mark.parametrize("lights", ["the lights", "the traffic lights", "red lights", "temporary lights"])
 def test_signal_lights_still_make_a_junction(lights):
     assert read(f"A car ahead of us stops at {lights}, we drive at 30 km/h.").map_kind == "crossroad"
+
+
+# --- a motor two-wheeler or quad named by "bike" is a car, as FORMAT has motorbikes ---------------------------
+@pytest.mark.parametrize("noun", ["motor bike", "quad bike", "dirt bike", "4x4", "fire engine"])
+def test_motor_vehicles_named_by_their_trade_words(noun):
+    kind = "truck" if noun == "fire engine" else "car"
+    assert _kinds(f"A {noun} ahead of us brakes hard, ego at 50 km/h.") == [kind]

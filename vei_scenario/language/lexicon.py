@@ -119,6 +119,7 @@ ACTOR_NOUNS = {
         "trolleybus",
         "double-decker",
         "double decker",
+        "fire engine",
     ),
     "van": (
         "van",
@@ -162,6 +163,11 @@ CAR_NOUNS = (
     "powered two-wheeler",  # (Euro NCAP's word for a motorcycle or moped)
     "two-wheeler",
     "ptw",
+    "motor bike",  # (a motor two-wheeler or a quad named by "bike" is no bicycle)
+    "quad bike",
+    "quad",
+    "dirt bike",
+    "four-by-four",
     "adversary",
     "adversarial vehicle",
     "driver",

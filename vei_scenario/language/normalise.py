@@ -185,6 +185,7 @@ def _headings(text: str) -> str:
 _SHORTHAND = [
     (re.compile(r"\bm/(?:bike|cycle)s?\b|\bm/c\b"), "motorbike"),
     (re.compile(r"\bp/cycle\b|\bpedal cycle\b"), "bicycle"),
+    (re.compile(r"\b4\s?x\s?4s?\b"), "four-by-four"),
     (re.compile(r"\bc/way\b"), "carriageway"),
     (re.compile(r"\brd\b"), "road"),
     (re.compile(r"\b(?:jct|jcn|junc)\b\.?"), "junction"),
