@@ -275,3 +275,17 @@ def test_a_walker_coming_from_a_side_of_a_junction_crosses_from_that_kerb(text, 
     assert (walker.kind, walker.relation) == ("pedestrian", f"roadside_{side}")
     assert [b[0] for b in walker.behaviours] == ["cross_in_front"]
     write_scenario(layers_from_text(text, 0), "scenario")
+
+
+@pytest.mark.parametrize(
+    "text, word",
+    [
+        ("A van came out of the side road on the right and V1 clipped it.", "clipped"),
+        ("The ego is doing 40 km/h; a jogger steps out from the left and gets bumped.", "bumped"),
+        ("A cyclist swerves in front of us and we tag him.", "tag"),
+    ],
+)
+def test_words_the_outcome_was_read_from_are_not_listed_as_unused(text, word):
+    """A verb of contact read as the outcome (collision) was used: "not used" does not list it."""
+    r = read(text)
+    assert r.intent == "collision" and word not in r.ignored

@@ -45,6 +45,7 @@ from vei_scenario.language.motion import (
 )
 from vei_scenario.language.ncap import rewrite as ncap_rewrite
 from vei_scenario.language.normalise import normalise
+from vei_scenario.language.outcome import outcome_cues
 from vei_scenario.language.reading import ActorSpec, NotUnderstood, Reading
 from vei_scenario.language.stated import (
     stated_clock,
@@ -1727,6 +1728,8 @@ def read(text: str) -> Reading:
     r.read_as = read_as
     said = " ".join(_tokens(text))
     r.intent = stated_outcome(said) or r.intent  # (the whole text's stated outcome first)
+    told = {w for cue in outcome_cues(said) for w in cue.words.split()}  # (words the outcome was read from)
+    r.ignored = [w for w in r.ignored if w not in told]
     if r.intent is None and not r.actors:
         r.intent = "safe"  # (nobody but the ego: nothing it could meet)
     r.lanes = stated_lanes(said) or r.lanes
