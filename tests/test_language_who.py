@@ -129,3 +129,8 @@ def test_signal_lights_still_make_a_junction(lights):
 def test_motor_vehicles_named_by_their_trade_words(noun):
     kind = "truck" if noun == "fire engine" else "car"
     assert _kinds(f"A {noun} ahead of us brakes hard, ego at 50 km/h.") == [kind]
+
+
+@pytest.mark.parametrize("noun, kind", [("tow-trucks", "truck"), ("firetrucks", "truck"), ("e-bikes", "bicycle")])
+def test_a_plural_compound_is_read_by_its_head_noun(noun, kind):
+    assert set(_kinds(f"Two {noun} ahead of us brake hard, ego at 50 km/h.")) == {kind}

@@ -260,9 +260,19 @@ def _ncap_target(m: re.Match) -> str:
 
 
 def _single_kind(word: str) -> str | None:
-    """The road-user type ``word`` alone names, or None (for :mod:`who`)."""
-    slot, value = TABLE.get((word,), (None, None))
-    return str(value) if slot == "actor" else None
+    """The road-user type ``word`` alone (or its lemma: "trucks") names, or None (for :mod:`who`)."""
+    for w in sorted(forms(word), key=lambda f: f != word):
+        slot, value = TABLE.get((w,), (None, None))
+        if slot == "actor":
+            return str(value)
+    return None
+
+
+def _slot_of(key: tuple[str, ...]) -> str | None:
+    """The slot of phrase ``key``; of a single word, of its lemma where the word itself has none."""
+    if key in TABLE or len(key) > 1:
+        return TABLE.get(key, (None,))[0]
+    return next((TABLE[(w,)][0] for w in sorted(forms(key[0])) if (w,) in TABLE), None)
 
 
 def _actor_word(word: str) -> bool:
@@ -306,7 +316,7 @@ def _tokens(text: str, spell: bool = True, brackets: bool = False) -> list[str]:
         elif tok.endswith("'") or tok in ("'",):
             continue
         else:  # ("rush-hour", "mid-afternoon": a setting's words)
-            for word in S.compound_words(tok, lambda key: TABLE.get(key, (None,))[0]):
+            for word in S.compound_words(tok, _slot_of):
                 out.extend([word] if (word,) in TABLE else closed_compound(word, _single_kind))
     if spell:
         out = [_speller().correct(tok) for tok in out]
