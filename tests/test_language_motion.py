@@ -206,3 +206,16 @@ def test_he_or_she_in_a_first_person_story_is_the_road_user_not_the_narrator(tex
     r = read(text)
     (actor,) = r.actors
     assert r.ego_route is None and actor.behaviours[0][0] == "forced_turn"
+
+
+@pytest.mark.parametrize(
+    "text,expected",
+    [
+        ("A moped squeezing past on my left between me and the verge abruptly pulled out into our path.", ["cut_in"]),
+        ("A courier on a bike overtaking on my inside suddenly cut out into my lane in front of me.", ["cut_in"]),
+        ("A van overtaking me on the left suddenly swung out into my lane.", ["cut_in"]),
+        ("A rider going past on the inside between me and the kerb abruptly turned across my lane.", ["forced_turn"]),
+    ],
+)
+def test_a_participle_after_a_road_user_is_where_it_was_not_a_second_move(text, expected):
+    assert _behaviours(text) == expected

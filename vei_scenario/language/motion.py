@@ -284,3 +284,51 @@ def one_path(spec: ActorSpec, said: str = "") -> list:
         _, cfg, crit, link = spec.behaviours[0]
         return [("give_way", {}, crit, link)]
     return spec.behaviours
+
+
+#: Mentions that name the main verb's move.
+_MAIN_MOVE = frozenset(("behaviour", "turn"))
+#: Going along the road (alone, on past, behind): what a participle of state says a road user is doing.
+_ALONG = frozenset(("overtake", "along_road", "keep_going", "follow_vehicle"))
+#: Moves out of that course, across a lane: the main verb's move that replaces it.
+_ACROSS = frozenset(("cut_in", "change_lane", "cross_in_front", "forced_turn", "turn_into"))
+
+
+def participle_of_state(clauses: list) -> list:
+    """``clauses`` without a participle that says how a road user is going along when the clause's
+    main verb says it leaves that course across a lane: "a rider filtering up the inside ... swung out
+    into my lane" is a cut-in, the filtering only where it was. The participle (an "-ing" verb
+    straight after the road user) is a reduced relative clause; the finite verb after it in the same
+    clause, with no other road user as its subject, is the behaviour. A conjunction other than an
+    "and" joining nouns ("between me and the kerb") ends the clause, and with it the rule. A crossing
+    said as the participle is a path of its own ("a walker crossing from the right stops")."""
+    out = []
+    for link, mentions in clauses:
+        drop: set[int] = set()
+        for k, m in enumerate(mentions):
+            before = mentions[k - 1] if k > 0 else None
+            if not (
+                m.slot == "behaviour"
+                and m.words.split()[0].endswith("ing")
+                and m.value[0] in _ALONG
+                and before is not None
+                and before.slot == "actor"
+                and before.value != "ego"
+                and before.end == m.start
+            ):
+                continue
+            for j in range(k + 1, len(mentions)):
+                x = mentions[j]
+                if x.slot == "actor" and x.value != "ego":
+                    break  # (another road user: its own verb)
+                if x.slot == "conj":
+                    nxt = mentions[j + 1] if j + 1 < len(mentions) else None
+                    if x.words != "and" or nxt is None or nxt.slot in _MAIN_MOVE or nxt.slot == "actor":
+                        break
+                if x.slot in _MAIN_MOVE:
+                    across = x.slot == "turn" or x.value[0] in _ACROSS
+                    if across and not x.words.split()[0].endswith("ing") and x.prev != "to":
+                        drop.add(k)  # (a finite verb: the move; the participle its setting)
+                    break
+        out.append((link, [m for k, m in enumerate(mentions) if k not in drop]))
+    return out

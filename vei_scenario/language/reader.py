@@ -42,6 +42,7 @@ from vei_scenario.language.motion import (
     one_path,
     out_of_a_side_road,
     outcome_not_behaviour,
+    participle_of_state,
 )
 from vei_scenario.language.ncap import rewrite as ncap_rewrite
 from vei_scenario.language.normalise import normalise
@@ -1033,7 +1034,7 @@ def read(text: str) -> Reading:
     clauses = sides.relate_headings(clauses)
     clauses = out_of_a_side_road(destinations_not_origins(outcome_not_behaviour(_drop_label(clauses))))
     tokens = _tokens(text)
-    clauses = give_the_ego_the_way(into_the_ego_lane(clauses, tokens), tokens)
+    clauses = participle_of_state(give_the_ego_the_way(into_the_ego_lane(clauses, tokens), tokens))
     clauses, ego_follows = _ego_following(clauses)
     r = Reading()
     actors: list[_Actor] = []
