@@ -219,3 +219,17 @@ def test_he_or_she_in_a_first_person_story_is_the_road_user_not_the_narrator(tex
 )
 def test_a_participle_after_a_road_user_is_where_it_was_not_a_second_move(text, expected):
     assert _behaviours(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Waiting to turn left at the crossroads, I saw a cyclist come round the corner on the wrong side of the road"
+        " straight towards me.",
+        "At the T-junction a kid on a bike swung round the corner the wrong way, riding straight at us.",
+        "Turning into the side road at the junction, I met a scooter rider coming round the bend on the wrong side"
+        " of the road, straight at me.",
+    ],
+)
+def test_a_rider_the_wrong_way_at_a_junction_still_comes_head_on(text):
+    assert _behaviours(text) == ["wrong_way"]

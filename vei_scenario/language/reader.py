@@ -1951,7 +1951,7 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool) -> None:
         and set(names) <= {"keep_going", "keep_lane"}
         and spec.speed_mps != 0.0
         and spec.relation in (None, "ahead", "oncoming", "roadside_right", "roadside_left", "behind")
-        and not (junction and spec.relation is None)
+        and not (junction and spec.relation is None and not (a.kind in RIDERS and a.wrong_way))
     ):
         spec.behaviours = [("along_road", {}, crit, link)]
         spec.facing = "against" if towards or a.wrong_way else None  # ("rides against the traffic")
