@@ -233,3 +233,16 @@ def test_a_participle_after_a_road_user_is_where_it_was_not_a_second_move(text, 
 )
 def test_a_rider_the_wrong_way_at_a_junction_still_comes_head_on(text):
     assert _behaviours(text) == ["wrong_way"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A taxi comes up from behind, swings out, overtakes me and cuts back in.",
+        "On the dual carriageway a van came up behind us, pulled out, passed us and tucked back in ahead.",
+        "Behind me a hatchback swung out, overtook me and dived back in.",
+        "A coach sat behind us for a while, then swung out and overtook us.",
+    ],
+)
+def test_pulling_out_just_before_an_overtake_is_how_it_starts(text):
+    assert _behaviours(text) == ["overtake"]

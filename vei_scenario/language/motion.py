@@ -332,3 +332,33 @@ def participle_of_state(clauses: list) -> list:
                     break
         out.append((link, [m for k, m in enumerate(mentions) if k not in drop]))
     return out
+
+
+#: Moves a verb + "out" is read as; before an overtake, they are its pulling out.
+_OUT_MOVES = frozenset(("cut_in", "cross_in_front", "change_lane"))
+#: Mentions that may stand between pulling out and the overtake it starts.
+_BETWEEN_OUT_AND_PASS = frozenset(("punct", "criticality", "conj"))
+
+
+def out_to_overtake(clauses: list) -> list:
+    """``clauses`` without a move out ("swings out", "pulled out", "moves out") said just before an
+    overtake by the same road user ("swings out, overtakes me and cuts back in"): pulling out of the
+    lane is how an overtake starts, not a move of its own across the ego's path. An overtake said as
+    its purpose ("pulls out to overtake") is not yet made: the move out stays."""
+    out = []
+    for link, mentions in clauses:
+        drop: set[int] = set()
+        for k, m in enumerate(mentions):
+            if not (m.slot == "behaviour" and m.value[0] in _OUT_MOVES and m.words.split()[-1] == "out"):
+                continue
+            j = k + 1
+            while j < len(mentions) and mentions[j].slot in _BETWEEN_OUT_AND_PASS:
+                if mentions[j].slot == "conj" and mentions[j].words not in ("and", "then"):
+                    break
+                j += 1
+            passing = mentions[j] if j < len(mentions) else None
+            if passing is not None and passing.slot == "behaviour" and passing.value[0] == "overtake":
+                if passing.prev != "to":  # ("pulls out to overtake ... into our path": the pull-out is the move)
+                    drop.add(k)
+        out.append((link, [m for k, m in enumerate(mentions) if k not in drop]))
+    return out

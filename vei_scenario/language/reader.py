@@ -41,6 +41,7 @@ from vei_scenario.language.motion import (
     into_the_ego_lane,
     one_path,
     out_of_a_side_road,
+    out_to_overtake,
     outcome_not_behaviour,
     participle_of_state,
 )
@@ -1034,7 +1035,7 @@ def read(text: str) -> Reading:
     clauses = sides.relate_headings(clauses)
     clauses = out_of_a_side_road(destinations_not_origins(outcome_not_behaviour(_drop_label(clauses))))
     tokens = _tokens(text)
-    clauses = participle_of_state(give_the_ego_the_way(into_the_ego_lane(clauses, tokens), tokens))
+    clauses = out_to_overtake(participle_of_state(give_the_ego_the_way(into_the_ego_lane(clauses, tokens), tokens)))
     clauses, ego_follows = _ego_following(clauses)
     r = Reading()
     actors: list[_Actor] = []
