@@ -246,3 +246,23 @@ def test_a_rider_the_wrong_way_at_a_junction_still_comes_head_on(text):
 )
 def test_pulling_out_just_before_an_overtake_is_how_it_starts(text):
     assert _behaviours(text) == ["overtake"]
+
+
+@pytest.mark.parametrize(
+    "text,expected",
+    [
+        ("A cyclist ahead of me keeping close to the kerb swung right across my lane to turn into a side road.",
+         ["forced_turn"]),
+        ("A lad on a bike ahead was hugging the curb; then he cut right across my lane to turn into a side street.",
+         ["forced_turn"]),
+        ("An e-scooter rider filtering between me and the kerb suddenly swerved out into my lane.", ["cut_in"]),
+    ],
+)  # fmt: skip
+def test_a_rider_along_the_kerb_is_in_the_road_not_on_the_footway(text, expected):
+    assert _behaviours(text) == expected
+
+
+def test_a_rider_off_the_kerb_or_pavement_crosses_into_the_road():
+    assert _behaviours("A cyclist came off the kerb into my path.") == ["cross_in_front"]
+    said = "A cyclist rode on the pavement, then swung out into the road in front of me."
+    assert _behaviours(said) == ["cross_in_front"]

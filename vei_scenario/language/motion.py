@@ -362,3 +362,27 @@ def out_to_overtake(clauses: list) -> list:
                     drop.add(k)
         out.append((link, [m for k, m in enumerate(mentions) if k not in drop]))
     return out
+
+
+#: Words of a footway: said of a road user, it is off the road.
+_FOOTWAY = ("pavement", "sidewalk", "footpath", "footway")
+#: Words of the kerb, the road's edge: a road user is on the footway only when on, off or from it.
+_KERB = ("kerb", "curb")
+#: Prepositions that put a road user on (or take it off) what they lead.
+_ON_OR_OFF = frozenset(("on", "off", "from", "onto", "up", "over"))
+
+
+def on_the_footway(m) -> bool:
+    """Whether kerb mention ``m`` puts its road user off the road, on the footway: a pavement or
+    sidewalk always does; a kerb only as what it is on, off or from ("rides on the kerb", "came off
+    the curb"). Going along or close to the kerb ("hugging the kerb", "between me and the kerb") is
+    riding in the road at its edge, and "the kerb side" names a side, not a place."""
+    words = m.words.split()
+    if any(w in _FOOTWAY for w in words):
+        return True
+    kerb = next((k for k, w in enumerate(words) if w in _KERB), None)
+    if kerb is None:
+        return False
+    if kerb == len(words) - 1 and m.next_ in ("side", "lane", "edge"):
+        return False  # ("on the kerb side": which side)
+    return m.prev in _ON_OR_OFF

@@ -39,6 +39,7 @@ from vei_scenario.language.motion import (
     give_the_ego_the_way,
     head_on,
     into_the_ego_lane,
+    on_the_footway,
     one_path,
     out_of_a_side_road,
     out_to_overtake,
@@ -2305,7 +2306,7 @@ def _apply(m, who, r, link, added) -> None:
             a.lane_side = a.lane_side or m.value
         elif m.slot == "kerb":
             a.kerb = True
-            a.pavement = a.pavement or any(w in m.words for w in PAVEMENT_WORDS)
+            a.pavement = a.pavement or on_the_footway(m)
             a.came_from = a.came_from or _from(m)
         elif m.slot == "kerb_side":
             a.kerb, a.kerb_side = True, m.value
