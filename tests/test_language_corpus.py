@@ -52,7 +52,7 @@ INDEPENDENT = {
     ROOT / "tests" / "data" / "language_independent_b.json": (63, 57),
     ROOT / "tests" / "data" / "language_independent_c.json": (65, 55),
     ROOT / "tests" / "data" / "language_independent_d.json": (56, 34),
-    ROOT / "tests" / "data" / "language_independent_e.json": (70, 56),
+    ROOT / "tests" / "data" / "language_independent_e.json": (70, 58),
     ROOT / "tests" / "data" / "language_independent_f.json": (60, 52),
 }
 

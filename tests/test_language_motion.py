@@ -206,3 +206,63 @@ def test_he_or_she_in_a_first_person_story_is_the_road_user_not_the_narrator(tex
     r = read(text)
     (actor,) = r.actors
     assert r.ego_route is None and actor.behaviours[0][0] == "forced_turn"
+
+
+@pytest.mark.parametrize(
+    "text,expected",
+    [
+        ("A moped squeezing past on my left between me and the verge abruptly pulled out into our path.", ["cut_in"]),
+        ("A courier on a bike overtaking on my inside suddenly cut out into my lane in front of me.", ["cut_in"]),
+        ("A van overtaking me on the left suddenly swung out into my lane.", ["cut_in"]),
+        ("A rider going past on the inside between me and the kerb abruptly turned across my lane.", ["forced_turn"]),
+    ],
+)
+def test_a_participle_after_a_road_user_is_where_it_was_not_a_second_move(text, expected):
+    assert _behaviours(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Waiting to turn left at the crossroads, I saw a cyclist come round the corner on the wrong side of the road"
+        " straight towards me.",
+        "At the T-junction a kid on a bike swung round the corner the wrong way, riding straight at us.",
+        "Turning into the side road at the junction, I met a scooter rider coming round the bend on the wrong side"
+        " of the road, straight at me.",
+    ],
+)
+def test_a_rider_the_wrong_way_at_a_junction_still_comes_head_on(text):
+    assert _behaviours(text) == ["wrong_way"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A taxi comes up from behind, swings out, overtakes me and cuts back in.",
+        "On the dual carriageway a van came up behind us, pulled out, passed us and tucked back in ahead.",
+        "Behind me a hatchback swung out, overtook me and dived back in.",
+        "A coach sat behind us for a while, then swung out and overtook us.",
+    ],
+)
+def test_pulling_out_just_before_an_overtake_is_how_it_starts(text):
+    assert _behaviours(text) == ["overtake"]
+
+
+@pytest.mark.parametrize(
+    "text,expected",
+    [
+        ("A cyclist ahead of me keeping close to the kerb swung right across my lane to turn into a side road.",
+         ["forced_turn"]),
+        ("A lad on a bike ahead was hugging the curb; then he cut right across my lane to turn into a side street.",
+         ["forced_turn"]),
+        ("An e-scooter rider filtering between me and the kerb suddenly swerved out into my lane.", ["cut_in"]),
+    ],
+)  # fmt: skip
+def test_a_rider_along_the_kerb_is_in_the_road_not_on_the_footway(text, expected):
+    assert _behaviours(text) == expected
+
+
+def test_a_rider_off_the_kerb_or_pavement_crosses_into_the_road():
+    assert _behaviours("A cyclist came off the kerb into my path.") == ["cross_in_front"]
+    said = "A cyclist rode on the pavement, then swung out into the road in front of me."
+    assert _behaviours(said) == ["cross_in_front"]

@@ -284,3 +284,105 @@ def one_path(spec: ActorSpec, said: str = "") -> list:
         _, cfg, crit, link = spec.behaviours[0]
         return [("give_way", {}, crit, link)]
     return spec.behaviours
+
+
+#: Mentions that name the main verb's move.
+_MAIN_MOVE = frozenset(("behaviour", "turn"))
+#: Going along the road (alone, on past, behind): what a participle of state says a road user is doing.
+_ALONG = frozenset(("overtake", "along_road", "keep_going", "follow_vehicle"))
+#: Moves out of that course, across a lane: the main verb's move that replaces it.
+_ACROSS = frozenset(("cut_in", "change_lane", "cross_in_front", "forced_turn", "turn_into"))
+
+
+def participle_of_state(clauses: list) -> list:
+    """``clauses`` without a participle that says how a road user is going along when the clause's
+    main verb says it leaves that course across a lane: "a rider filtering up the inside ... swung out
+    into my lane" is a cut-in, the filtering only where it was. The participle (an "-ing" verb
+    straight after the road user) is a reduced relative clause; the finite verb after it in the same
+    clause, with no other road user as its subject, is the behaviour. A conjunction other than an
+    "and" joining nouns ("between me and the kerb") ends the clause, and with it the rule. A crossing
+    said as the participle is a path of its own ("a walker crossing from the right stops")."""
+    out = []
+    for link, mentions in clauses:
+        drop: set[int] = set()
+        for k, m in enumerate(mentions):
+            before = mentions[k - 1] if k > 0 else None
+            if not (
+                m.slot == "behaviour"
+                and m.words.split()[0].endswith("ing")
+                and m.value[0] in _ALONG
+                and before is not None
+                and before.slot == "actor"
+                and before.value != "ego"
+                and before.end == m.start
+            ):
+                continue
+            for j in range(k + 1, len(mentions)):
+                x = mentions[j]
+                if x.slot == "actor" and x.value != "ego":
+                    break  # (another road user: its own verb)
+                if x.slot == "conj":
+                    nxt = mentions[j + 1] if j + 1 < len(mentions) else None
+                    if x.words != "and" or nxt is None or nxt.slot in _MAIN_MOVE or nxt.slot == "actor":
+                        break
+                if x.slot in _MAIN_MOVE:
+                    across = x.slot == "turn" or x.value[0] in _ACROSS
+                    if across and not x.words.split()[0].endswith("ing") and x.prev != "to":
+                        drop.add(k)  # (a finite verb: the move; the participle its setting)
+                    break
+        out.append((link, [m for k, m in enumerate(mentions) if k not in drop]))
+    return out
+
+
+#: Moves a verb + "out" is read as; before an overtake, they are its pulling out.
+_OUT_MOVES = frozenset(("cut_in", "cross_in_front", "change_lane"))
+#: Mentions that may stand between pulling out and the overtake it starts.
+_BETWEEN_OUT_AND_PASS = frozenset(("punct", "criticality", "conj"))
+
+
+def out_to_overtake(clauses: list) -> list:
+    """``clauses`` without a move out ("swings out", "pulled out", "moves out") said just before an
+    overtake by the same road user ("swings out, overtakes me and cuts back in"): pulling out of the
+    lane is how an overtake starts, not a move of its own across the ego's path. An overtake said as
+    its purpose ("pulls out to overtake") is not yet made: the move out stays."""
+    out = []
+    for link, mentions in clauses:
+        drop: set[int] = set()
+        for k, m in enumerate(mentions):
+            if not (m.slot == "behaviour" and m.value[0] in _OUT_MOVES and m.words.split()[-1] == "out"):
+                continue
+            j = k + 1
+            while j < len(mentions) and mentions[j].slot in _BETWEEN_OUT_AND_PASS:
+                if mentions[j].slot == "conj" and mentions[j].words not in ("and", "then"):
+                    break
+                j += 1
+            passing = mentions[j] if j < len(mentions) else None
+            if passing is not None and passing.slot == "behaviour" and passing.value[0] == "overtake":
+                if passing.prev != "to":  # ("pulls out to overtake ... into our path": the pull-out is the move)
+                    drop.add(k)
+        out.append((link, [m for k, m in enumerate(mentions) if k not in drop]))
+    return out
+
+
+#: Words of a footway: said of a road user, it is off the road.
+_FOOTWAY = ("pavement", "sidewalk", "footpath", "footway")
+#: Words of the kerb, the road's edge: a road user is on the footway only when on, off or from it.
+_KERB = ("kerb", "curb")
+#: Prepositions that put a road user on (or take it off) what they lead.
+_ON_OR_OFF = frozenset(("on", "off", "from", "onto", "up", "over"))
+
+
+def on_the_footway(m) -> bool:
+    """Whether kerb mention ``m`` puts its road user off the road, on the footway: a pavement or
+    sidewalk always does; a kerb only as what it is on, off or from ("rides on the kerb", "came off
+    the curb"). Going along or close to the kerb ("hugging the kerb", "between me and the kerb") is
+    riding in the road at its edge, and "the kerb side" names a side, not a place."""
+    words = m.words.split()
+    if any(w in _FOOTWAY for w in words):
+        return True
+    kerb = next((k for k, w in enumerate(words) if w in _KERB), None)
+    if kerb is None:
+        return False
+    if kerb == len(words) - 1 and m.next_ in ("side", "lane", "edge"):
+        return False  # ("on the kerb side": which side)
+    return m.prev in _ON_OR_OFF

@@ -39,9 +39,12 @@ from vei_scenario.language.motion import (
     give_the_ego_the_way,
     head_on,
     into_the_ego_lane,
+    on_the_footway,
     one_path,
     out_of_a_side_road,
+    out_to_overtake,
     outcome_not_behaviour,
+    participle_of_state,
 )
 from vei_scenario.language.ncap import rewrite as ncap_rewrite
 from vei_scenario.language.normalise import normalise
@@ -1053,7 +1056,7 @@ def read(text: str) -> Reading:
     clauses = sides.relate_headings(clauses)
     clauses = out_of_a_side_road(destinations_not_origins(outcome_not_behaviour(_drop_label(clauses))))
     tokens = _tokens(text)
-    clauses = give_the_ego_the_way(into_the_ego_lane(clauses, tokens), tokens)
+    clauses = out_to_overtake(participle_of_state(give_the_ego_the_way(into_the_ego_lane(clauses, tokens), tokens)))
     clauses, ego_follows = _ego_following(clauses)
     r = Reading()
     actors: list[_Actor] = []
@@ -1972,7 +1975,7 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool) -> None:
         and set(names) <= {"keep_going", "keep_lane"}
         and spec.speed_mps != 0.0
         and spec.relation in (None, "ahead", "oncoming", "roadside_right", "roadside_left", "behind")
-        and not (junction and spec.relation is None)
+        and not (junction and spec.relation is None and not (a.kind in RIDERS and a.wrong_way))
     ):
         spec.behaviours = [("along_road", {}, crit, link)]
         spec.facing = "against" if towards or a.wrong_way else None  # ("rides against the traffic")
@@ -2325,7 +2328,7 @@ def _apply(m, who, r, link, added) -> None:
             a.lane_side = a.lane_side or m.value
         elif m.slot == "kerb":
             a.kerb = True
-            a.pavement = a.pavement or any(w in m.words for w in PAVEMENT_WORDS)
+            a.pavement = a.pavement or on_the_footway(m)
             a.came_from = a.came_from or _from(m)
         elif m.slot == "kerb_side":
             a.kerb, a.kerb_side = True, m.value
