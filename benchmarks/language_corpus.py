@@ -34,6 +34,7 @@ FIRST = {
     "language_independent_d.json": ((56, 56, 4, 43), "sealed, measured when written"),
     "language_independent_e.json": ((70, 70, 16, 55), "sealed, measured once before a pass of reader work"),
     "language_independent_f.json": ((60, 60, 32, 58), "measured when written"),
+    "language_independent_g.json": ((60, 60, 24, 56), "sealed until the reader's last change"),
 }
 
 
