@@ -44,6 +44,8 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass
 
+from vei_scenario.language.lemmas import english, lemmas
+
 #: ``kind_at(tokens, i)``: the road-user type named by a phrase starting at ``i`` ("ego" for the ego)
 #: and the phrase's length, or None when no road-user phrase starts there.
 KindAt = Callable[[list[str], int], "tuple[str, int] | None"]
@@ -230,10 +232,8 @@ def _person_at(tokens: list[str], i: int, kind_at: KindAt, known: Known) -> int:
 def _agent_noun(word: str) -> bool:
     """Whether ``word`` names who does a verb ("rider": ride, "operator": operate, "owner": own), not a
     thing or place ("corner", "border")."""
-    from lemminflect import getAllLemmas
-
     stems = (word[:-1], word[:-2], word[:-2] + "e")
-    return any(stem in getAllLemmas(stem).get("VERB", ()) for stem in stems if len(stem) > 2)
+    return any(stem in lemmas(stem).get("VERB", ()) for stem in stems if len(stem) > 2)
 
 
 def _drivers(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
@@ -420,10 +420,8 @@ def _passengers(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[
 CONTACT = frozenset({"hit", "strike", "collide", "clip", "crash", "smash", "knock", "tag", "rear-end", "plough"})
 
 
-def _lemma_in(word: str, lemmas: frozenset[str]) -> bool:
-    from lemminflect import getAllLemmas
-
-    return word in lemmas or any(x in lemmas for forms in getAllLemmas(word).values() for x in forms)
+def _lemma_in(word: str, wanted: frozenset[str]) -> bool:
+    return word in wanted or any(x in wanted for forms in lemmas(word).values() for x in forms)
 
 
 PRONOUNS = frozenset({"him", "her", "it", "them", "us", "me", "he", "she", "they", "we", "i"})
@@ -567,9 +565,7 @@ FOLLOWING = frozenset({"follow", "tail", "overtake", "trail"})
 
 
 def _in_no_dictionary(word: str) -> bool:
-    from lemminflect import getAllLemmas
-
-    return word.isalpha() and not getAllLemmas(word)
+    return word.isalpha() and not english(word)
 
 
 def _followed_names(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
@@ -876,10 +872,8 @@ def _mentions_again(tokens: list[str], kind_at: KindAt, known: Known) -> list[st
 
 
 def _singular(word: str) -> bool:
-    from lemminflect import getAllLemmas
-
-    lemmas = getAllLemmas(word).get("NOUN")
-    return not lemmas or word in lemmas
+    nouns = lemmas(word).get("NOUN")
+    return not nouns or word in nouns
 
 
 def _bare_again(tokens: list[str], p: _Phrase, referents: list[Referent], kind_at: KindAt) -> bool:

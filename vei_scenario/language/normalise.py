@@ -15,6 +15,8 @@ from __future__ import annotations
 
 import re
 
+from vei_scenario.language.lemmas import english
+
 _ONES = {
     "zero": 0, "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8,
     "nine": 9, "ten": 10, "eleven": 11, "twelve": 12, "thirteen": 13, "fourteen": 14, "fifteen": 15,
@@ -284,13 +286,6 @@ _NOMINAL = re.compile(
 )
 
 
-def _lemmas_of(word: str) -> bool:
-    """Whether ``word`` is an English word lemminflect knows (then it is no abbreviation)."""
-    from lemminflect import getAllLemmas
-
-    return bool(getAllLemmas(word))
-
-
 def _initials(words: list[str]) -> str:
     """The initials of ``words``, a hyphenated word giving one per part ("e-scooter target": "est",
     "powered two-wheeler": "ptw"), as abbreviations are made."""
@@ -323,7 +318,7 @@ def _acronyms_defined(text: str, known_noun=lambda phrase: None) -> str:
     text = _DEFINED.sub(sub, text)
     for m in _SHORT.finditer(text):
         short = m.group(0)
-        if short in terms or _lemmas_of(short) or known_noun(short):
+        if short in terms or english(short) or known_noun(short):
             continue
         words = re.findall(r"[a-z][a-z-]*", text[: m.start()])
         found = next(

@@ -28,6 +28,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from functools import lru_cache
 
+from vei_scenario.language.lemmas import lemmas
+
 COLLISION, NEAR_MISS, SAFE = "collision", "near_miss", "safe"
 
 #: What ends a clause, and with it the scope of a negation or a hedge.
@@ -123,20 +125,18 @@ _LET_GO = frozenset(("pass", "go", "through", "by", "past", "first", "cross", "i
 def _pos(word: str) -> dict[str, tuple[str, ...]]:
     """lemminflect's lemmas by part of speech; a hyphenated word ("rear-ended", "T-boned") by its last
     part, joined again."""
-    from lemminflect import getAllLemmas
-
-    found = getAllLemmas(word)
+    found = lemmas(word)
     if not found and "-" in word:
         head, _, last = word.rpartition("-")
-        found = {pos: tuple(f"{head}-{x}" for x in lemmas) for pos, lemmas in getAllLemmas(last).items()}
+        found = {pos: tuple(f"{head}-{x}" for x in forms) for pos, forms in lemmas(last).items()}
     return found
 
 
 @lru_cache(maxsize=8192)
 def _lemmas(word: str) -> frozenset[str]:
     out = {word}
-    for lemmas in _pos(word).values():
-        out.update(lemmas)
+    for forms in _pos(word).values():
+        out.update(forms)
     return frozenset(out)
 
 

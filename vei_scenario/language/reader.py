@@ -34,6 +34,7 @@ from vei_scenario.language import quantities as Q
 from vei_scenario.language import settings as S
 from vei_scenario.language import vocabulary as V
 from vei_scenario.language.behaviours import BEHAVIOURS
+from vei_scenario.language.lemmas import lemmas as _lemmas
 from vei_scenario.language.motion import (
     destinations_not_origins,
     give_the_ego_the_way,
@@ -48,27 +49,18 @@ from vei_scenario.language.motion import (
 )
 from vei_scenario.language.ncap import rewrite as ncap_rewrite
 from vei_scenario.language.normalise import normalise
-from vei_scenario.language.outcome import outcome_cues
+from vei_scenario.language.outcome import decide, outcome_cues
 from vei_scenario.language.reading import ActorSpec, NotUnderstood, Reading
 from vei_scenario.language.stated import (
     stated_clock,
     stated_density,
     stated_heavy_rain,
     stated_lanes,
-    stated_outcome,
 )
 from vei_scenario.language.who import closed_compound, lamps_not_signals, own_vehicles
 
 _TOKEN = re.compile(r"\d+(?:\.\d+)?|km/h|m/s²|m/s2|m/s|[a-z][a-z\-]*(?:'[a-z]+)?|'s|[.;,!?:%]")
 _TOKEN_BRACKETS = re.compile(_TOKEN.pattern + "|[()]")  # (for discourse: a name said in brackets)
-
-
-@lru_cache(maxsize=4096)
-def _lemmas(word: str) -> dict[str, tuple[str, ...]]:
-    """lemminflect's lemmas of ``word`` by part of speech (looked up once per word)."""
-    from lemminflect import getAllLemmas
-
-    return getAllLemmas(word)
 
 
 #: The articles, one another's forms in a phrase.
@@ -1056,6 +1048,7 @@ def read(text: str) -> Reading:
     clauses = sides.relate_headings(clauses)
     clauses = out_of_a_side_road(destinations_not_origins(outcome_not_behaviour(_drop_label(clauses))))
     tokens = _tokens(text)
+    said = " ".join(tokens)  # (the whole text as the reader reads it, for what is stated of it as a whole)
     clauses = out_to_overtake(participle_of_state(give_the_ego_the_way(into_the_ego_lane(clauses, tokens), tokens)))
     clauses, ego_follows = _ego_following(clauses)
     r = Reading()
@@ -1065,7 +1058,7 @@ def read(text: str) -> Reading:
     last_group: list[_Actor] | None = None  # ("Two scooters ride ahead; one of them brakes": that pair)
     both_with_ego = False  # ("CCRb: both cars at 50 km/h ...": the ego is one of them)
     ego_is_a_person = False  # (the ego named as "I" or "we": "it" is then never the ego)
-    first_person = bool({"i", "we", "me", "my", "us", "our"} & set(_tokens(text)))  # (the narrator's story)
+    first_person = bool({"i", "we", "me", "my", "us", "our"} & set(tokens))  # (the narrator's story)
     bound: dict[str, _Actor | str] = {}  # "he"/"she" → whom it first named
     resolved: dict[int, _Actor | str] = {}  # a road-user mention's start → whom it names
     owned = {o for _, ms in clauses for x in ms for o in x.owners}  # mentions a number is said of
@@ -1608,7 +1601,7 @@ def read(text: str) -> Reading:
     if (
         (r.map_kind is None and r.ego_route in ("left", "right"))
         or (r.map_kind in (None, "straight") and (any(a.arm for a in actors) or vehicles_giving_way or at_junction))
-        or (r.map_kind in (None, "straight", "curve") and S.turns_into_a_road(text, " ".join(_tokens(text))))
+        or (r.map_kind in (None, "straight", "curve") and S.turns_into_a_road(text, said))
     ):
         r.map_kind = "crossroad"  # the ego turns, or someone comes out of or waits in a side road: a junction
     junction = r.map_kind in ("crossroad", "roundabout")
@@ -1730,7 +1723,6 @@ def read(text: str) -> Reading:
     _parked(actors, r.actors)
     _cut_outs(r.actors)
     _criticality_said_apart(clauses, r.actors)
-    said = " ".join(_tokens(text))
     for spec in r.actors:
         spec.behaviours = _one_act_once(spec)
         spec.behaviours = one_path(spec, said)
@@ -1739,9 +1731,9 @@ def read(text: str) -> Reading:
     r.ego_speed_mps = ego_said if ego_said is not None else r.ego_speed_mps
     r.ignored = list(dict.fromkeys(ignored))
     r.read_as = read_as
-    said = " ".join(_tokens(text))
-    r.intent = stated_outcome(said) or r.intent  # (the whole text's stated outcome first)
-    told = {w for cue in outcome_cues(said) for w in cue.words.split()}  # (words the outcome was read from)
+    cues = outcome_cues(said)
+    r.intent = decide(cues) or r.intent  # (the whole text's stated outcome first)
+    told = {w for cue in cues for w in cue.words.split()}  # (words the outcome was read from)
     r.ignored = [w for w in r.ignored if w not in told]
     if r.intent is None and not r.actors:
         r.intent = "safe"  # (nobody but the ego: nothing it could meet)

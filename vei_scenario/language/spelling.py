@@ -13,6 +13,8 @@ from __future__ import annotations
 
 from functools import lru_cache
 
+from vei_scenario.language.lemmas import english
+
 
 def _edits1(word: str) -> set[str]:
     """Every string one edit from ``word`` (Norvig's enumeration, with transpositions)."""
@@ -42,9 +44,7 @@ class Speller:
         """``word``, or the one known word it is a slip of."""
         if len(word) < 3 or not word.replace("-", "").isalpha() or word in self.words:
             return word
-        from lemminflect import getAllLemmas
-
-        if getAllLemmas(word):
+        if english(word):
             return word
         near = sorted(self.words & _edits1(word))
         if len(word) == 3:  # (three letters: only two neighbours swapped, "teh")

@@ -7,7 +7,8 @@ not a junction's signals, which "lights" alone are)."""
 from __future__ import annotations
 
 from collections.abc import Callable
-from functools import lru_cache
+
+from vei_scenario.language.lemmas import english
 
 #: First-person possessives, a closed class: what they own is the writer's, hence the ego.
 FIRST_PERSON_POSSESSIVES = frozenset({"my", "our"})
@@ -51,13 +52,6 @@ def own_vehicles(tokens: list[str], kind_at: KindAt, modifier: Callable[[str], b
 _SHORTEST_PART = 3
 
 
-@lru_cache(maxsize=1)
-def _english():
-    from lemminflect import getAllLemmas
-
-    return getAllLemmas
-
-
 def closed_compound(token: str, kind_of: Callable[[str], str | None]) -> list[str]:
     """A word written as one that is a modifier and a vehicle noun ("firetruck", "schoolbus",
     "minicab"), as those two words, so that it names what its head names; a word whose beginning is
@@ -67,7 +61,7 @@ def closed_compound(token: str, kind_of: Callable[[str], str | None]) -> list[st
         return [token]
     for cut in range(_SHORTEST_PART, len(token) - _SHORTEST_PART + 1):
         head, modifier = token[cut:], token[:cut]
-        if kind_of(head) not in (None, "pedestrian", "ego") and _english()(modifier):
+        if kind_of(head) not in (None, "pedestrian", "ego") and english(modifier):
             return [modifier, head]
     return [token]
 
