@@ -38,15 +38,24 @@ FIRST = {
 }
 
 
+def _played(cases: list, results: list, make) -> list[list[str]]:
+    """Each understood description's scenario (seed 0) played and checked: what did not happen as its
+    layers say (empty: all did); a refused one has nothing to play and is ``None``."""
+    import tempfile
+
+    from vei_scenario.language.corpus_check import play_case
+
+    with tempfile.TemporaryDirectory() as tmp:
+        return [play_case(c, make, Path(tmp)) if r.understood else None for c, r in zip(cases, results)]
+
+
 def _pct(k: int | None, n: int) -> str:
     return "-" if k is None else f"{k} ({100 * k / n:.0f} %)"
 
 
 def all_corpora(played: bool) -> int:
     """One line per corpus of tests/data: what it gives now and, for the independent ones, first."""
-    import tempfile
-
-    from vei_scenario.language.corpus_check import check_corpus, load_corpus, play_case
+    from vei_scenario.language.corpus_check import check_corpus, load_corpus
     from vei_scenario.language.rules_backend import layers_from_text
 
     head = f"{'corpus':32} {'n':>3}  {'understood':>10} {'faithful':>10} {'played':>10}"
@@ -57,10 +66,7 @@ def all_corpora(played: bool) -> int:
         n = len(results)
         done = None
         if played:
-            with tempfile.TemporaryDirectory() as tmp:
-                done = sum(
-                    not play_case(c, layers_from_text, Path(tmp)) for c, r in zip(cases, results) if r.understood
-                )
+            done = sum(problems == [] for problems in _played(cases, results, layers_from_text))
         (fn, fu, ff, fp), how = FIRST.get(path.name, ((n, None, None, None), ""))
         first = f"{_pct(fu, fn)} / {_pct(ff, fn)} / {_pct(fp, fn)} ({how})" if how else "(the project's own)"
         understood = sum(r.understood for r in results)
@@ -104,19 +110,11 @@ def main() -> int:
     )
     print("most refused words: " + ", ".join(f"{w} ({k})" for w, k in refused_words.most_common(25)))
     if args.played:
-        import tempfile
-
-        from vei_scenario.language.corpus_check import play_case
-
-        done = 0
-        with tempfile.TemporaryDirectory() as tmp:
-            for case, result in zip(cases, results):
-                if not result.understood:  # (refused: nothing to play; counted as not done)
-                    continue
-                problems = play_case(case, make, Path(tmp))
-                done += not problems
-                if problems and not args.quiet:
-                    print(f"PLAYED   {case['text']}\n    " + "\n    ".join(problems))
+        played = _played(cases, results, make)  # (a refused one: nothing to play, counted as not done)
+        done = sum(problems == [] for problems in played)
+        for case, problems in zip(cases, played):
+            if problems and not args.quiet:
+                print(f"PLAYED   {case['text']}\n    " + "\n    ".join(problems))
         print(f"played: {done} of {n} ({100 * done / n:.0f} %) did what their layers say")
     return 0
 

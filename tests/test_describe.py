@@ -722,5 +722,5 @@ def test_sharpening_a_timing_halves_the_closest_bracket():
     nxt = adjust(layers, "sharpen", 3, history=history)["adversaries"][0]["behaviour"]["config"]["arrival_gap_s"]
     assert nxt == pytest.approx(-0.25)
     narrow = [episode(0.0, "adversary"), episode(NARROWEST_BRACKET_S / 2, "ego")]
-    kept = adjust(layers, "sharpen", 2, start=_crossing_at(3.5), history=narrow)
+    kept = adjust(layers, "sharpen", 2, history=narrow)
     assert kept["adversaries"][0]["behaviour"]["config"]["arrival_gap_s"] != pytest.approx(NARROWEST_BRACKET_S / 4)

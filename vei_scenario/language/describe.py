@@ -50,7 +50,6 @@ def run_one(layers: dict, index: int, refine: bool) -> ScenarioRecord:
     or the episodes are spent."""
     episodes: list[dict] = []
     intent = layers.get("intent", "unspecified")
-    start = layers
     with tempfile.TemporaryDirectory(prefix="vei-describe-") as tmp:
         for episode in range(MAX_EPISODES if refine else 1):
             try:
@@ -86,7 +85,7 @@ def run_one(layers: dict, index: int, refine: bool) -> ScenarioRecord:
             )
             if met or not refine or episode == MAX_EPISODES - 1:
                 break
-            layers = adjust(layers, direction, episode, start, episodes)
+            layers = adjust(layers, direction, episode, episodes)
     files = {f"{SCENARIO_STEM}.xosc": written.xosc, f"{SCENARIO_STEM}.xodr": written.xodr}
     files["layers.json"] = (json_text(layers, indent=2, sort_keys=False) + "\n").encode()
     return ScenarioRecord(index, layers, files, outcome, episodes)

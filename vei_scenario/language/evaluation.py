@@ -44,10 +44,11 @@ def evaluate(xosc: Path, rate_hz: float = DEFAULT_RATE_HZ) -> dict:
     # comfort is the ego's alone: any pair gives it; without an adversary, the ego with anyone
     comfort = per[adversaries[0]]["comfort_score"] if adversaries else _comfort_only(result, cfg)
     alert = sum(m["ttc_zones_s"]["alert"] + m["ttc_zones_s"]["collision"] for m in per.values())
+    hit = {n for c in ego_hit for n in c["entities"] if n != ego}
     return {
-        "passed_first": {n: passed_first(result, n, n in {x for c in ego_hit for x in c["entities"]}) for n in per},
+        "passed_first": {n: passed_first(result, n, n in hit) for n in per},
         "ego_collided": bool(ego_hit),
-        "collided_with": sorted({n for c in ego_hit for n in c["entities"] if n != ego}),
+        "collided_with": sorted(hit),
         "collisions": collisions,
         "act_min_s": min(acts) if acts else None,
         "ei_max_mps": max(eis) if eis else 0.0,

@@ -41,19 +41,17 @@ TIMING = "arrival_gap_s"
 NARROWEST_BRACKET_S = 0.05
 
 
-def adjust(
-    layers: dict, direction: str, episode: int, start: dict | None = None, history: list[dict] | None = None
-) -> dict:
+def adjust(layers: dict, direction: str, episode: int, history: list[dict] | None = None) -> dict:
     """A copy of ``layers`` moved one episode's step in ``direction`` (``soften``/``sharpen``).
-    ``start``: the layers of the first episode (default ``layers``), which say whether a value began
-    inside the target profile and is probed around it instead. ``history``: the episodes run so far
-    (their configuration and who passed first), which bracket a timing when sharpening."""
+    ``history``: the episodes run so far (their configuration and who passed first): the first says
+    whether a value began inside the target profile and is probed around it instead (without one,
+    ``layers`` does), and together they bracket a timing when sharpening."""
     out = copy.deepcopy(layers)
     frac = STEP_FRACTIONS[min(episode, len(STEP_FRACTIONS) - 1)]
     target = "safe" if direction == "soften" else "dangerous"
     began = [
         [node.get("config", {}) for _, node in behaviour_nodes(adv["behaviour"])]
-        for adv in (start or layers)["adversaries"]
+        for adv in (history[0]["configuration"] if history else layers["adversaries"])
     ]
     for a, adv in enumerate(out["adversaries"]):
         first = None
