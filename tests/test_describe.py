@@ -722,5 +722,8 @@ def test_sharpening_a_timing_halves_the_closest_bracket():
     nxt = adjust(layers, "sharpen", 3, history=history)["adversaries"][0]["behaviour"]["config"]["arrival_gap_s"]
     assert nxt == pytest.approx(-0.25)
     narrow = [episode(0.0, "adversary"), episode(NARROWEST_BRACKET_S / 2, "ego")]
-    kept = adjust(layers, "sharpen", 2, history=narrow)
-    assert kept["adversaries"][0]["behaviour"]["config"]["arrival_gap_s"] != pytest.approx(NARROWEST_BRACKET_S / 4)
+    kept = adjust(layers, "sharpen", 2, history=narrow)["adversaries"][0]["behaviour"]["config"]["arrival_gap_s"]
+    assert kept != pytest.approx(NARROWEST_BRACKET_S / 4)
+    # (the first try, 0 s, lay in the dangerous profile: probed two widths past it instead)
+    lo, hi = BEHAVIOURS["cross_in_front"].PROFILES["dangerous"]["arrival_gap_s"]
+    assert kept == pytest.approx((lo + hi) / 2 - 2 * (hi - lo))
