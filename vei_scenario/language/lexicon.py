@@ -204,6 +204,11 @@ EGO_NOUNS = (
     "my car",
     "host vehicle",
     "sv",
+    "sut",  # (system under test)
+    "system under test",
+    "reporting vehicle",  # (a report's own vehicle, by its role)
+    "reporting car",
+    "reporting driver",
 )
 
 #: Behaviours by their verbs (lemmas). Longer phrases win.

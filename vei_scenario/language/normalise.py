@@ -118,6 +118,30 @@ _CODE_AGAIN = re.compile(r"\s*\(\s*[a-z]{1,3}\s*-?\s*[2-9]\s*\)")
 #: What follows a call sign opening a radio report ("Unit 4 to control", "Car 12 calling base").
 _CALLING = re.compile(r"\s*,?\s*(?:to|calling|for)\b")
 
+#: A call sign opening a sentence that goes on to see the report's subject ("Unit 3, proceeding ...,
+#: observed the subject vehicle"): the call sign is the observer, the report's own vehicle.
+_OBSERVER = re.compile(
+    r"(?:^|(?<=[.;!?:]\s))((?:unit|patrol|car|vehicle|v)\s*-?\s*\d+)\b[^.;!?]*?"
+    r"\b(?:observed|observes|saw|sees|noticed|notices|spotted|spots|witnessed|watched)\s+(?:the\s+)?subject\s+(?:vehicle|car)\b"
+)
+_SUBJECT = re.compile(r"\b(?:the\s+)?subject\s+(?:vehicle|car)\b")
+
+
+def _observer(text: str, known_noun) -> str:
+    """In a report whose call sign sees "the subject vehicle", the call sign is the ego (every
+    mention of it) and the subject is the other party: what its apposition names ("the subject
+    vehicle, a blue saloon,"), else "a car", where first named, and "the" that after."""
+    m = _OBSERVER.search(text)
+    if m is None:
+        return text
+    text = re.sub(rf"\b{re.escape(m.group(1))}\b", "the ego", text)
+    first = _SUBJECT.search(text)
+    app = _APPOSITION.match(text, first.end())
+    noun = known_noun(app.group(1) or app.group(2)) if app is not None else None
+    said = f"a {app.group(1) or app.group(2)}" if noun else "a car"
+    text = text[: first.start()] + said + text[app.end() if noun else first.end() :]
+    return _SUBJECT.sub(f"the {noun or 'car'}", text)
+
 
 def _other_parties(text: str, known_noun) -> str:
     """Each other party named by its code becomes the road user its apposition names (a car when
@@ -408,6 +432,7 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     # "traffic was moderate": moderate traffic (the word is then no criticality of what follows)
     text = re.sub(r"\btraffic (?:is|was|were) (?:very |quite |fairly )?(light|moderate|heavy)\b", r"\1 traffic", text)
     text = _the_car_is_the_ego(text)
+    text = _observer(text, known_noun)
     for pattern in _EGO_ALIASES:
         text = pattern.sub("the ego", text)
     text = re.sub(r"\b(?:the )?(?:driver|rider|operator) of the ego\b", "the ego", text)

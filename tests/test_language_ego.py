@@ -1,0 +1,190 @@
+"""Which road user is the ego when a description names it by a role, by its driver, through a witness
+or in the third person (vei_scenario.language.ego): that road user is the ego (its speed the ego's),
+never one more actor, and the others stay actors."""
+
+from __future__ import annotations
+
+import pytest
+
+from vei_scenario.language.reader import read
+
+
+def _kinds(text: str) -> list[str]:
+    return [a.kind for a in read(text).actors]
+
+
+def _ego_kph(text: str) -> float | None:
+    mps = read(text).ego_speed_mps
+    return None if mps is None else round(mps * 3.6, 1)
+
+
+# A report's own vehicle marked by a role: in brackets after it, or as the value of an ego phrase's
+# field or copula.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        (
+            "Reporting vehicle: a double-decker bus, travelling at 20 mph along the high street. A cyclist "
+            "pulled out from the kerb on the left into the bus's path.",
+            ["bicycle"],
+            32.2,
+        ),
+        ("A minicab (reporting driver) doing 25 mph was clipped by a cyclist coming out of a side road on the right.",
+         ["bicycle"], 40.2),
+        ("Host vehicle is a 7.5 t lorry going straight at 30 km/h; a pedestrian steps out from the right kerb.",
+         ["pedestrian"], 30.0),
+        ("SUT: small van, 40 km/h. An e-scooter rider crosses from the left kerb.", ["e-scooter"], 40.0),
+        ("The system under test is a coach at 60 km/h; a car ahead brakes hard.", ["car"], 60.0),
+    ],
+)  # fmt: skip
+def test_a_vehicle_marked_by_its_role_is_the_ego(text, kinds, kph):
+    assert _kinds(text) == kinds
+    assert _ego_kph(text) == kph
+
+
+def test_a_vehicle_length_after_the_ego_is_no_vehicle_of_the_ego():
+    assert _kinds("The ego is a car length behind a truck at 50 km/h; the truck brakes hard.") == ["truck"]
+
+
+# The ego named by the person at its wheel: a name with "who is driving a ...", or a learner's role in
+# a sentence that gives a road speed.
+@pytest.mark.parametrize(
+    "text, kinds",
+    [
+        ("Over to Sue, who is driving a tanker on the ring road: a motorbike has just cut in right in front of her.",
+         ["car"]),
+        ("Quick one from Raj, driving a minibus through town at 20 mph, when a jogger ran out from the left.",
+         ["pedestrian"]),
+        ("Pupil turned left at the junction at about 10 mph and a cyclist came up on the inside.", ["bicycle"]),
+        ("The learner pulled away at 15 mph and didn't see a van coming from the right.", ["van"]),
+    ],
+)  # fmt: skip
+def test_the_person_at_the_wheel_names_the_ego(text, kinds):
+    assert _kinds(text) == kinds
+
+
+def test_a_pupil_introduced_with_a_is_a_road_user():
+    assert _kinds("A pupil ran out from the school gate in front of the ego at 30 km/h.") == ["pedestrian"]
+
+
+# A witness narrator, who only stands, waits or watches: the one vehicle they saw is the ego.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        (
+            "I was waiting at the lights on foot when I saw a grey estate car heading into town at about 25 mph. "
+            "A cyclist swerved out from the kerb and the estate car braked sharply.",
+            ["bicycle"],
+            40.2,
+        ),
+        (
+            "We were sitting outside the cafe and watched a taxi come round the corner at 20 mph; a dog ran into "
+            "the road and the taxi stopped just in time.",
+            ["pedestrian"],
+            32.2,
+        ),
+        (
+            "I was stood at the crossing and saw a white van doing about 30 mph when a boy on a bike shot out of a "
+            "driveway on the left. The driver of the van stopped in time.",
+            ["bicycle"],
+            48.3,
+        ),
+    ],
+)
+def test_a_witness_narrator_is_no_road_user_and_what_they_saw_is_the_ego(text, kinds, kph):
+    assert _kinds(text) == kinds
+    assert _ego_kph(text) == kph
+
+
+def test_a_narrator_met_by_the_vehicle_is_no_witness():
+    assert "car" in _kinds("I was standing at the bus stop when a car came towards me.")
+
+
+# A news report in the third person: the one vehicle that strikes a walker or rider is the ego.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        (
+            "A pensioner was knocked down by a van on Mill Road on Tuesday. The van, travelling at 25 mph, hit the "
+            "man as he crossed from the right.",
+            ["pedestrian"],
+            40.2,
+        ),
+        (
+            "A cyclist was hit by a lorry at the junction of King Street this morning; the lorry was turning left "
+            "at 10 mph.",
+            ["bicycle"],
+            16.1,
+        ),
+        (
+            "A taxi travelling at 30 mph struck a teenager on an e-scooter who rode out of a side street on the left.",
+            ["e-scooter"],
+            48.3,
+        ),
+    ],
+)
+def test_the_one_vehicle_that_strikes_a_walker_or_rider_in_a_report_is_the_ego(text, kinds, kph):
+    assert _kinds(text) == kinds
+    assert _ego_kph(text) == kph
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A car overtakes a cyclist on a straight road.",
+        "A cyclist brakes hard in front of a car and the car hits the brakes.",
+    ],
+)
+def test_a_vehicle_that_strikes_no_one_stays_a_road_user(text):
+    assert "car" in _kinds(text)
+
+
+# What the narrator gets into is the narrator's vehicle.
+@pytest.mark.parametrize(
+    "text, kinds",
+    [
+        ("Jumped in the car after work, heading home at 30 mph, and a lad on a bike came straight out of a "
+         "driveway on my left.", ["bicycle"]),
+        ("We piled into the minibus and set off along the coast road at 40 mph; a jogger ran out from the right.",
+         ["pedestrian"]),
+        ("I climbed back into the lorry, pulled out at 10 mph and a cyclist came up on my left.", ["bicycle"]),
+    ],
+)  # fmt: skip
+def test_the_vehicle_the_narrator_gets_into_is_the_ego(text, kinds):
+    assert _kinds(text) == kinds
+
+
+# The ego's own vehicle named as the ego's ("the insured's hatchback"), and that vehicle again.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("The claimant's estate car was doing 30 mph when a cyclist pulled out from a side road on the left; the "
+         "estate car could not stop.", ["bicycle"], 48.3),
+        ("My client's van was travelling at 20 mph when a pedestrian stepped out from the right; the van braked.",
+         ["pedestrian"], 32.2),
+        ("The insured's pickup, doing 40 mph, was struck by a motorbike coming from the right.", ["car"], 64.4),
+    ],
+)  # fmt: skip
+def test_the_egos_own_vehicle_is_the_ego(text, kinds, kph):
+    assert _kinds(text) == kinds
+    assert _ego_kph(text) == kph
+
+
+# A call sign that observes "the subject vehicle" is the observer, the report's own vehicle.
+@pytest.mark.parametrize(
+    "text, kinds",
+    [
+        ("Unit 5, stationary in a lay-by, saw the subject vehicle, a silver van, go past on the wrong side at 70 mph.",
+         ["van"]),
+        ("Car 12 observed the subject vehicle travelling the wrong way towards it. Car 12 braked and the subject "
+         "vehicle passed.", ["car"]),
+        ("Patrol 7 was parked in a lay-by when officers saw the subject car, a white van, overtaking at 70 mph.",
+         ["van"]),
+    ],
+)  # fmt: skip
+def test_a_call_sign_that_observes_the_subject_vehicle_is_the_ego(text, kinds):
+    assert _kinds(text) == kinds
+
+
+def test_a_vehicle_that_sees_the_ego_stays_another_road_user():
+    assert _kinds("Vehicle 2 saw the ego vehicle too late and pulled out from the left.") == ["car"]

@@ -1,0 +1,389 @@
+"""Which road user is the ego when the text names it by role or in the third person.
+
+A description is told from one road user's point of view, but people often name that road user
+without "I" or "the ego": a report names its own vehicle by a role ("Reporting vehicle: city shuttle
+bus", "a taxi (reporting driver)", "Host vehicle is a 40 t truck"), by a call sign that observes
+another ("Unit 3 ... observed the subject vehicle"), or by the person at its wheel ("a word from Dave,
+who's driving a bin lorry", "Pupil approached the roundabout at 20 mph"); a witness tells what one
+vehicle met ("I was standing at the bus stop ... I saw a blue car coming"); a news report sets one
+vehicle against a walker or rider it struck ("a woman riding an e-scooter was struck by a car").
+
+:func:`frame` finds that road user by the structure that frames it and says it "the ego" (every
+mention of it, "the bus", "the driver of the car", once it is known to be the ego), so the reader
+reads one ego and the other road users as actors. Each rule reads only where the text names no ego
+otherwise, except those that mark one named road user as the ego explicitly. It knows no content
+words of its own beyond small closed classes (verbs of seeing, of boarding and of contact; the roles
+a person has in a driving lesson or a claim); which words name road users comes from the reader's
+lexicon through ``kind_at``.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from vei_scenario.language.lemmas import lemmas
+
+KindAt = Callable[[list[str], int], "tuple[str, int] | None"]
+Known = Callable[[list[str], int], bool]
+
+VEHICLES = frozenset({"car", "van", "truck"})
+DEFINITE = frozenset({"the", "that", "this"})
+INDEFINITE = frozenset({"a", "an", "another", "some", "one"})
+BE = frozenset({"am", "is", "are", "was", "were", "be", "been", "being"})
+SENTENCE_END = frozenset({".", ";", "!", "?"})
+PUNCT = SENTENCE_END | {",", ":"}
+#: First-person subjects: a narrator who is in the scenario is the ego, one who only watches is not.
+FIRST_PERSON = frozenset({"i", "we"})
+#: First-person words that put the narrator in the scene as someone met or moved ("came at me", "my lane").
+NARRATOR_INVOLVED = frozenset({"me", "us", "my", "our", "ego"})
+#: Verbs of seeing: the one who sees another is the observer, the one the report is told from.
+SEEING = frozenset({"see", "observe", "notice", "witness", "spot", "watch"})
+#: What a witness does where the narrator stands apart from the traffic ("I was standing at the stop").
+STANCE = frozenset({"stand", "wait", "sit", "walk", "queue"}) | SEEING
+#: Auxiliaries and adverbs between a subject and its verb ("I had just seen", "we were all waiting").
+BETWEEN = BE | {"had", "have", "has", "would", "could", "did", "just", "all", "both", "then", "also", "'d"}
+#: Verbs of getting into a vehicle: what the narrator gets into is the narrator's vehicle.
+BOARDING = frozenset({"get", "climb", "jump", "hop", "pile", "sit"})
+#: Verbs of contact: the one vehicle that strikes a walker or rider in a news report is the ego.
+CONTACT = frozenset({"hit", "strike", "collide", "clip", "knock", "plough", "mow", "crash"})
+#: Words of driving a vehicle, after the person at its wheel ("Dave, who's driving a bin lorry").
+DRIVING = frozenset({"driving", "drives", "drove", "driven"})
+#: Roles of the person a driving lesson is about: at a road speed or at a wheel, that person drives.
+LEARNER = frozenset({"pupil", "learner", "trainee", "candidate", "student"})
+#: Roles of the party a claim is made for: always the one the statement is told for.
+PARTY = frozenset({"client", "claimant", "insured", "policyholder"})
+#: The person at the wheel of a vehicle, in "the driver of the car" (that vehicle's mention).
+AT_WHEEL = frozenset({"driver", "rider", "motorist"})
+PRONOUNS = frozenset({"he", "she", "it", "they", "him", "her", "them", "who", "you", "one", "someone"})
+SPEED_UNITS = frozenset({"mph", "km/h", "m/s"})
+#: Words of where a vehicle is relative to another ("the car ahead", "parked cars"): not the ego.
+PLACED = frozenset({"ahead", "behind", "parked", "oncoming", "following", "alongside"})
+
+
+def _lemma_in(word: str, wanted: frozenset[str]) -> bool:
+    return word in wanted or any(x in wanted for forms in lemmas(word).values() for x in forms)
+
+
+def _ego_at(tokens: list[str], i: int, kind_at: KindAt) -> int:
+    """The length of an ego phrase at ``i`` ("the ego", "reporting vehicle", "sut"), else 0."""
+    found = kind_at(tokens, i)
+    return found[1] if found is not None and found[0] == "ego" else 0
+
+
+def names_ego(tokens: list[str], kind_at: KindAt) -> bool:
+    """Whether the text names its ego itself: an ego phrase, or a first-person word."""
+    return any(_ego_at(tokens, i, kind_at) for i in range(len(tokens))) or bool(
+        (FIRST_PERSON | NARRATOR_INVOLVED) & set(tokens)
+    )
+
+
+def _road_users(tokens: list[str], kind_at: KindAt, known: Known) -> list:
+    """The road-user phrases of ``tokens``, two vehicle nouns in a row as one ("an estate car")."""
+    from vei_scenario.language.discourse import _Phrase, _phrases
+
+    out: list = []
+    for p in _phrases(tokens, kind_at, known):
+        if out and out[-1].end == p.start and out[-1].kind in VEHICLES and p.kind in VEHICLES:
+            q = out.pop()
+            p = _Phrase(q.start, q.head, p.end, q.det, p.kind)
+        out.append(p)
+    return out
+
+
+def _vehicle_phrases(tokens: list[str], kind_at: KindAt, known: Known) -> list:
+    return [p for p in _road_users(tokens, kind_at, known) if p.kind in VEHICLES]
+
+
+def _placed(tokens: list[str], p) -> bool:
+    after = tokens[p.end : p.end + 2]
+    before = tokens[p.start - 1] if p.start else ""
+    return (
+        (bool(after) and (after[0] in PLACED or after == ["in", "front"]))
+        or before in PLACED | {"between", "behind"}
+        or any(w in PLACED for w in tokens[p.start : p.head])
+    )
+
+
+def _at_wheel(tokens: list[str], p) -> bool:
+    """Whether ``p`` is "the driver" of a vehicle named elsewhere, no vehicle of its own."""
+    return tokens[p.end - 1] in AT_WHEEL and p.det in DEFINITE
+
+
+def _referents(tokens: list[str], phrases) -> dict[str, list]:
+    """Vehicle mentions grouped by their head noun: one referent per noun, when it is introduced once
+    (a second indefinite mention of the same noun is a second vehicle: the noun maps to None)."""
+    out: dict[str, list] = {}
+    for p in phrases:
+        noun = tokens[p.end - 1]
+        if noun in out and p.det in INDEFINITE:
+            out[noun] = None
+        elif out.get(noun, []) is not None:
+            out.setdefault(noun, []).append(p)
+    return out
+
+
+def _as_ego(
+    tokens: list[str], kind_at: KindAt, known: Known, noun: str, dropped: list[str], only: bool = False
+) -> list[str]:
+    """``tokens`` with every definite or bare mention of the vehicle named by ``noun`` (its head) said
+    "the ego", as is "the driver of" it, and where it is the ``only`` vehicle, "the driver"; an
+    indefinite one ("another bus") is someone else."""
+    out = list(tokens)
+    for p in reversed(_vehicle_phrases(out, kind_at, known)):
+        driver = only and _at_wheel(out, p) and out[p.end : p.end + 1] != ["of"]
+        new = p.det in INDEFINITE and not (only and p.det in ("a", "an"))
+        if (out[p.end - 1] != noun and not driver) or new or "other" in out[p.start : p.head]:
+            continue
+        start = p.start
+        back = next((b for b in range(start - 1, max(start - 3, -1), -1) if out[b] in DEFINITE | INDEFINITE), None)
+        if not p.det and back is not None and all(out[b].isalpha() for b in range(back, start)):
+            start = back  # ("a grey estate car": its article before a word the reader reads otherwise)
+        if start >= 3 and out[start - 1] == "of" and out[start - 2] in AT_WHEEL and out[start - 3] in DEFINITE:
+            start -= 3  # ("the driver of the corsa": the corsa)
+        dropped.extend(w for w in out[start : p.end] if w not in DEFINITE)
+        out[start : p.end] = ["the", "ego"]
+    return out
+
+
+def _marked(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """A vehicle marked as the ego: with an ego phrase in brackets after it ("a Prius taxi (reporting
+    driver)", "the white van (ego)"), or as the value of an ego phrase's field or copula ("Reporting
+    vehicle: city shuttle bus", "Host vehicle is a 40 t truck"): that vehicle is the ego, and so is
+    every later "the bus"."""
+    for p in _vehicle_phrases(tokens, kind_at, known):
+        noun = tokens[p.end - 1]
+        if tokens[p.end : p.end + 1] == ["("]:
+            close = next((k for k in range(p.end + 1, min(p.end + 6, len(tokens))) if tokens[k] == ")"), None)
+            inner = [w for w in tokens[p.end + 1 : close] if w not in DEFINITE] if close else []
+            if inner and _ego_at(inner, 0, kind_at) == len(inner):
+                dropped.extend(w for w in tokens[p.start : close + 1] if w.isalpha() and w not in DEFINITE)
+                out = [*tokens[: p.start], "the", "ego", *tokens[close + 1 :]]
+                return _marked(_as_ego(out, kind_at, known, noun, dropped), kind_at, known, dropped)
+        # "<ego phrase> : / is a <modifiers> <vehicle>": where its value starts, past its article
+        j = p.head
+        while j > 0 and (
+            tokens[j - 1].replace(".", "").isdigit() or (tokens[j - 1].isalpha() and not known(tokens, j - 1))
+        ):
+            j -= 1
+        j -= j > 0 and tokens[j - 1] in ("a", "an")
+        marker = j - 1
+        if marker < 1 or p.head - j > 4 or (tokens[marker] != ":" and tokens[marker] not in BE):
+            continue
+        ego_end = next((k for k in range(max(marker - 3, 0), marker) if k + _ego_at(tokens, k, kind_at) == marker), 0)
+        if not _ego_at(tokens, ego_end, kind_at) or tokens[ego_end] in FIRST_PERSON:
+            continue
+        if tokens[p.end : p.end + 1] and (tokens[p.end] in PLACED or tokens[p.end].startswith("length")):
+            continue  # ("the ego is a car length behind")
+        end = p.end + (tokens[marker] == ":" and tokens[p.end : p.end + 1] == [","])
+        dropped.extend(w for w in tokens[j : p.end] if w.isalpha() and w not in ("a", "an"))
+        out = tokens[:j] + tokens[end:]
+        return _marked(_as_ego(out, kind_at, known, noun, dropped), kind_at, known, dropped)
+    return tokens
+
+
+def _possessed(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """The ego's vehicle named as the ego's ("the insured's hatchback", "the claimant's Fiesta") is the
+    ego, and so is every later "the hatchback"."""
+    for p in _vehicle_phrases(tokens, kind_at, known):
+        if p.head >= 3 and tokens[p.start - 1] == "'s" and _ego_at(tokens, p.start - 2, kind_at):
+            if any(known(tokens, k) for k in range(p.start, p.head)):
+                continue
+            noun = tokens[p.end - 1]
+            dropped.extend(tokens[p.start : p.end])
+            out = tokens[: p.start - 1] + tokens[p.end :]
+            return _possessed(_as_ego(out, kind_at, known, noun, dropped), kind_at, known, dropped)
+    return tokens
+
+
+def _person_end(tokens: list[str], i: int, kind_at: KindAt, known: Known) -> int | None:
+    """Where a person's name or role that may stand at a wheel, starting at ``i``, ends: a name the
+    reader has no phrase for ("Dave"), or a person's noun with "the" or none ("the pupil"), not one
+    with "a" (someone new: another road user)."""
+    w = tokens[i]
+    if i and tokens[i - 1] in INDEFINITE:
+        return None
+    found = kind_at(tokens, i)
+    if found is not None:
+        return i + found[1] if found[0] == "pedestrian" else None
+    name = w.isalpha() and not known(tokens, i) and w not in BE | PRONOUNS and not {"ADV", "ADJ"} & set(lemmas(w))
+    return i + 1 if name else None
+
+
+def _at_the_wheel(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "a word from Dave, who's driving a bin lorry", "the pupil, driving the school's hatchback":
+    the person at the wheel and the vehicle are the ego (the vehicle named once, its person after)."""
+    for k, w in enumerate(tokens):
+        if w not in DRIVING:
+            continue
+        start = k  # the person, past ", who is"
+        start -= start > 0 and tokens[start - 1] in BE | {"'s"}
+        start -= start > 0 and tokens[start - 1] == "who"
+        relative = start < k
+        start -= start > 0 and tokens[start - 1] == ","
+        end = start
+        person = next(
+            (s for s in range(max(start - 2, 0), start) if _person_end(tokens, s, kind_at, known) == end), None
+        )
+        if person is None:
+            continue
+        j = k + 1 + (k + 1 < len(tokens) and tokens[k + 1] in DEFINITE | INDEFINITE | {"his", "her", "their"})
+        head = next((h for h in range(j, min(j + 3, len(tokens))) if kind_at(tokens, h) is not None), None)
+        found = kind_at(tokens, head) if head is not None else None
+        if found is None or found[0] not in VEHICLES or any(known(tokens, h) for h in range(j, head)):
+            continue
+        name = tokens[person:end]
+        cut = (end if relative else k + 1, head + found[1])
+        dropped.extend(x for x in tokens[cut[0] : cut[1]] if x.isalpha())
+        out = tokens[: cut[0]] + tokens[cut[1] :]
+        said: list[str] = []
+        i = 0
+        while i < len(out):  # the person, wherever named again, is the ego
+            if out[i : i + len(name)] == name and (not i or out[i - 1] not in INDEFINITE):
+                if said and said[-1] in DEFINITE:
+                    said.pop()
+                said += ["the", "ego"]
+                i += len(name)
+                continue
+            said.append(out[i])
+            i += 1
+        return said
+    return tokens
+
+
+def _role(tokens: list[str], kind_at: KindAt) -> list[str]:
+    """A person named by the role a driving lesson or a claim gives them ("Pupil approached the
+    roundabout at 20 mph", "the policyholder was travelling"): a learner in a sentence that gives a
+    road speed, or a party to a claim, is the ego (each mention not introduced with "a")."""
+    out = list(tokens)
+    roles = set()
+    for i, w in enumerate(tokens):
+        if w not in LEARNER | PARTY or (i and tokens[i - 1] in INDEFINITE):
+            continue
+        s, e = i, i
+        while s > 0 and tokens[s - 1] not in SENTENCE_END:
+            s -= 1
+        while e < len(tokens) and tokens[e] not in SENTENCE_END:
+            e += 1
+        if w in PARTY or any(u in SPEED_UNITS for u in tokens[s:e]):
+            roles.add(w)
+    if not roles:
+        return tokens
+    said: list[str] = []
+    for i, w in enumerate(out):
+        if w in roles and not (i and out[i - 1] in INDEFINITE):
+            if said and said[-1] in DEFINITE | {"my", "our"}:
+                said.pop()
+            said += ["the", "ego"]
+            continue
+        said.append(w)
+    return said
+
+
+def _boarded(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "I got back in the van", "we climbed into a minibus": what the narrator gets into is the
+    narrator's vehicle, the ego (and so is every later "the van")."""
+    if not (FIRST_PERSON | NARRATOR_INVOLVED) & set(tokens):
+        return tokens
+    for k, w in enumerate(tokens):
+        if not _lemma_in(w, BOARDING) or w in BE:
+            continue
+        s = k - 1
+        while s >= 0 and tokens[s] in BETWEEN:
+            s -= 1
+        if s >= 0 and tokens[s] not in FIRST_PERSON | {",", "and"}:
+            continue  # (someone else's verb: "the cyclist got in front")
+        j = k + 1 + (k + 1 < len(tokens) and tokens[k + 1] in ("back", "straight"))
+        if tokens[j : j + 1] not in (["in"], ["into"]):
+            continue
+        p = next((q for q in _vehicle_phrases(tokens, kind_at, known) if q.start == j + 1), None)
+        if p is None or _placed(tokens, p) or p.det not in DEFINITE | INDEFINITE | {""}:
+            continue
+        noun = tokens[p.end - 1]
+        dropped.extend(tokens[p.start : p.end])
+        out = [*tokens[: p.start], "the", "ego", *tokens[p.end :]]
+        return _as_ego(out, kind_at, known, noun, dropped)
+    return tokens
+
+
+def _one_vehicle(tokens: list[str], kind_at: KindAt, known: Known) -> tuple[str, list] | None:
+    """The one vehicle a text names (its head noun and mentions), when it names one and another road
+    user: not placed relative to someone ("the car ahead", "parked vans")."""
+    phrases = [p for p in _road_users(tokens, kind_at, known) if not _at_wheel(tokens, p) and p.kind != "ego"]
+    vehicles = [p for p in phrases if p.kind in VEHICLES]
+    if not vehicles or len(vehicles) == len(phrases):
+        return None
+    groups = _referents(tokens, vehicles)
+    if len(groups) != 1 or None in groups.values() or any(_placed(tokens, p) for p in vehicles):
+        return None
+    return next(iter(groups.items()))
+
+
+def _witnessed(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """A narrator who only watches ("I was standing at the bus stop ... I saw a blue car coming"),
+    never met nor moved in the story: the one vehicle they saw is the ego, and the narrator no road
+    user (said "you", a word the reader reads as nobody)."""
+    if not FIRST_PERSON & set(tokens) or NARRATOR_INVOLVED & set(tokens):
+        return tokens
+    for i, w in enumerate(tokens):
+        if w not in FIRST_PERSON:
+            continue
+        k = i + 1
+        while k < len(tokens) and tokens[k] in BETWEEN:
+            k += 1
+        if k >= len(tokens) or not _lemma_in(tokens[k], STANCE | {"say", "think", "reckon", "guess", "hear"}):
+            return tokens  # (a narrator who does anything else may be driving)
+    one = _one_vehicle(tokens, kind_at, known)
+    if one is None:
+        return tokens
+    out = ["you" if w in FIRST_PERSON else w for w in tokens]
+    return _as_ego(out, kind_at, known, one[0], dropped, only=True)
+
+
+def _struck(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """A report in the third person of one vehicle that strikes a walker or rider ("a woman riding an
+    e-scooter was struck by a car"; "the car hit the scooter"): that vehicle is the one the report
+    is told from, the ego."""
+    one = _one_vehicle(tokens, kind_at, known)
+    if one is None:
+        return tokens
+    from vei_scenario.language.discourse import _hits_someone
+
+    noun, mentions = one
+    for k, w in enumerate(tokens):
+        if not _lemma_in(w, CONTACT):
+            continue
+        j = k + 1 + (tokens[k + 1 : k + 2] in (["down"], ["over"], ["off"]))
+        if tokens[j : j + 1] != ["by"] and not _hits_someone(tokens, k, kind_at):
+            continue  # ("hit the brakes")
+        s, e = k, k
+        while s > 0 and tokens[s - 1] not in SENTENCE_END:
+            s -= 1
+        while e < len(tokens) and tokens[e] not in SENTENCE_END:
+            e += 1
+        if any(s <= p.start < e for p in mentions):  # ("struck by a car", "the van ... hit the man")
+            return _as_ego(tokens, kind_at, known, noun, dropped, only=True)
+    return tokens
+
+
+def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """``tokens`` with the road user the text is told from said "the ego" where the text names it by
+    a role, by its driver or in the third person (see the module's docstring); the words that only
+    named it are added to ``dropped``. Runs before brackets go (an ego phrase in brackets marks the
+    vehicle before it) and before riders are read (a named person at a wheel is the ego)."""
+    tokens = _marked(tokens, kind_at, known, dropped)
+    tokens = _possessed(tokens, kind_at, known, dropped)
+    tokens = _boarded(tokens, kind_at, known, dropped)
+    tokens = _witnessed(tokens, kind_at, known, dropped)
+    if names_ego(tokens, kind_at):
+        return tokens
+    from vei_scenario.language.discourse import _labels
+
+    if _labels(tokens, kind_at, known):
+        return tokens  # (a report's labels say who the ego is)
+    tokens = _at_the_wheel(tokens, kind_at, known, dropped)
+    if names_ego(tokens, kind_at):
+        return tokens
+    tokens = _role(tokens, kind_at)
+    if names_ego(tokens, kind_at):
+        return tokens
+    return _struck(tokens, kind_at, known, dropped)
