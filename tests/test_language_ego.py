@@ -57,6 +57,7 @@ def test_a_vehicle_length_after_the_ego_is_no_vehicle_of_the_ego():
          ["pedestrian"]),
         ("Pupil turned left at the junction at about 10 mph and a cyclist came up on the inside.", ["bicycle"]),
         ("The learner pulled away at 15 mph and didn't see a van coming from the right.", ["van"]),
+        ("Mo in his tipper truck was reversing out at 5 mph when a pedestrian walked behind.", ["pedestrian"]),
     ],
 )  # fmt: skip
 def test_the_person_at_the_wheel_names_the_ego(text, kinds):
@@ -188,3 +189,19 @@ def test_a_call_sign_that_observes_the_subject_vehicle_is_the_ego(text, kinds):
 
 def test_a_vehicle_that_sees_the_ego_stays_another_road_user():
     assert _kinds("Vehicle 2 saw the ego vehicle too late and pulled out from the left.") == ["car"]
+
+
+# A vehicle that a first-person relative clause puts the narrator in or at the wheel of.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("The bus I was driving pulled away from the stop at 10 mph and a cyclist came up on the inside.",
+         ["bicycle"], 16.1),
+        ("The taxi we were in was doing 30 mph when a cyclist pulled out from a side road on the left.",
+         ["bicycle"], 48.3),
+        ("The lorry that I drive was doing 40 mph when a van pulled out from the right.", ["van"], 64.4),
+    ],
+)  # fmt: skip
+def test_the_vehicle_the_narrator_is_in_by_a_relative_clause_is_the_ego(text, kinds, kph):
+    assert _kinds(text) == kinds
+    assert _ego_kph(text) == kph

@@ -99,7 +99,7 @@ def _placed(tokens: list[str], p) -> bool:
     before = tokens[p.start - 1] if p.start else ""
     return (
         (bool(after) and (after[0] in PLACED or after == ["in", "front"]))
-        or before in PLACED | {"between", "behind"}
+        or before in PLACED | {"behind"}
         or any(w in PLACED for w in tokens[p.start : p.head])
     )
 
@@ -213,7 +213,8 @@ def _at_the_wheel(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
     """ "a word from Dave, who's driving a bin lorry", "the pupil, driving the school's hatchback":
     the person at the wheel and the vehicle are the ego (the vehicle named once, its person after)."""
     for k, w in enumerate(tokens):
-        if w not in DRIVING:
+        inside = w == "in" and tokens[k + 1 : k + 2] in (["his"], ["her"], ["their"])
+        if w not in DRIVING and not inside:
             continue
         start = k  # the person, past ", who is"
         start -= start > 0 and tokens[start - 1] in BE | {"'s"}
@@ -232,7 +233,7 @@ def _at_the_wheel(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
         if found is None or found[0] not in VEHICLES or any(known(tokens, h) for h in range(j, head)):
             continue
         name = tokens[person:end]
-        cut = (end if relative else k + 1, head + found[1])
+        cut = (end if relative else k + (not inside), head + found[1])
         dropped.extend(x for x in tokens[cut[0] : cut[1]] if x.isalpha())
         out = tokens[: cut[0]] + tokens[cut[1] :]
         said: list[str] = []
@@ -277,6 +278,27 @@ def _role(tokens: list[str], kind_at: KindAt) -> list[str]:
             continue
         said.append(w)
     return said
+
+
+def _relative_own(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "the bus I was driving", "the taxi we were in", "the van that I drive": a vehicle that a
+    first-person relative clause puts the narrator in or at the wheel of is the narrator's, the ego."""
+    for p in _vehicle_phrases(tokens, kind_at, known):
+        k = p.end + (tokens[p.end : p.end + 1] in (["that"], ["which"]))
+        if tokens[k : k + 1] not in (["i"], ["we"]):
+            continue
+        k += 1
+        while k < len(tokens) and tokens[k] in BETWEEN:
+            k += 1
+        verb = tokens[k] if k < len(tokens) else ""
+        if verb not in DRIVING | {"drive", "in", "riding", "aboard"}:
+            continue
+        end = k + 1
+        noun = tokens[p.end - 1]
+        dropped.extend(tokens[p.start : end])
+        out = [*tokens[: p.start], "the", "ego", *tokens[end:]]
+        return _as_ego(out, kind_at, known, noun, dropped)
+    return tokens
 
 
 def _boarded(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
@@ -372,6 +394,7 @@ def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) 
     vehicle before it) and before riders are read (a named person at a wheel is the ego)."""
     tokens = _marked(tokens, kind_at, known, dropped)
     tokens = _possessed(tokens, kind_at, known, dropped)
+    tokens = _relative_own(tokens, kind_at, known, dropped)
     tokens = _boarded(tokens, kind_at, known, dropped)
     tokens = _witnessed(tokens, kind_at, known, dropped)
     if names_ego(tokens, kind_at):
