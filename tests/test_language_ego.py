@@ -155,22 +155,6 @@ def test_the_vehicle_the_narrator_gets_into_is_the_ego(text, kinds):
     assert _kinds(text) == kinds
 
 
-# The ego's own vehicle named as the ego's ("the insured's hatchback"), and that vehicle again.
-@pytest.mark.parametrize(
-    "text, kinds, kph",
-    [
-        ("The claimant's estate car was doing 30 mph when a cyclist pulled out from a side road on the left; the "
-         "estate car could not stop.", ["bicycle"], 48.3),
-        ("My client's van was travelling at 20 mph when a pedestrian stepped out from the right; the van braked.",
-         ["pedestrian"], 32.2),
-        ("The insured's pickup, doing 40 mph, was struck by a motorbike coming from the right.", ["car"], 64.4),
-    ],
-)  # fmt: skip
-def test_the_egos_own_vehicle_is_the_ego(text, kinds, kph):
-    assert _kinds(text) == kinds
-    assert _ego_kph(text) == kph
-
-
 # A call sign that observes "the subject vehicle" is the observer, the report's own vehicle.
 @pytest.mark.parametrize(
     "text, kinds",

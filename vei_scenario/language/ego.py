@@ -2,11 +2,13 @@
 
 A description is told from one road user's point of view, but people often name that road user
 without "I" or "the ego": a report names its own vehicle by a role ("Reporting vehicle: city shuttle
-bus", "a taxi (reporting driver)", "Host vehicle is a 40 t truck"), by a call sign that observes
-another ("Unit 3 ... observed the subject vehicle"), or by the person at its wheel ("a word from Dave,
-who's driving a bin lorry", "Pupil approached the roundabout at 20 mph"); a witness tells what one
-vehicle met ("I was standing at the bus stop ... I saw a blue car coming"); a news report sets one
-vehicle against a walker or rider it struck ("a woman riding an e-scooter was struck by a car").
+bus", "a taxi (reporting driver)", "Host vehicle is a 40 t truck") or by the person at its wheel ("a
+word from Dave, who's driving a bin lorry", "Pupil approached the roundabout at 20 mph"); a narrator
+names the vehicle they are in by getting into it or by a relative clause ("got back in the van", "the
+bus I was driving"); a witness tells what one vehicle met ("I was standing at the bus stop ... I saw a
+blue car coming"); a news report sets one vehicle against a walker or rider it struck ("a woman riding
+an e-scooter was struck by a car"). (A call sign that observes "the subject vehicle" is read where the
+report's parties are, in :mod:`vei_scenario.language.normalise`.)
 
 :func:`frame` finds that road user by the structure that frames it and says it "the ego" (every
 mention of it, "the bus", "the driver of the car", once it is known to be the ego), so the reader
@@ -178,20 +180,6 @@ def _marked(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]
         dropped.extend(w for w in tokens[j : p.end] if w.isalpha() and w not in ("a", "an"))
         out = tokens[:j] + tokens[end:]
         return _marked(_as_ego(out, kind_at, known, noun, dropped), kind_at, known, dropped)
-    return tokens
-
-
-def _possessed(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
-    """The ego's vehicle named as the ego's ("the insured's hatchback", "the claimant's Fiesta") is the
-    ego, and so is every later "the hatchback"."""
-    for p in _vehicle_phrases(tokens, kind_at, known):
-        if p.head >= 3 and tokens[p.start - 1] == "'s" and _ego_at(tokens, p.start - 2, kind_at):
-            if any(known(tokens, k) for k in range(p.start, p.head)):
-                continue
-            noun = tokens[p.end - 1]
-            dropped.extend(tokens[p.start : p.end])
-            out = tokens[: p.start - 1] + tokens[p.end :]
-            return _possessed(_as_ego(out, kind_at, known, noun, dropped), kind_at, known, dropped)
     return tokens
 
 
@@ -393,7 +381,6 @@ def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) 
     named it are added to ``dropped``. Runs before brackets go (an ego phrase in brackets marks the
     vehicle before it) and before riders are read (a named person at a wheel is the ego)."""
     tokens = _marked(tokens, kind_at, known, dropped)
-    tokens = _possessed(tokens, kind_at, known, dropped)
     tokens = _relative_own(tokens, kind_at, known, dropped)
     tokens = _boarded(tokens, kind_at, known, dropped)
     tokens = _witnessed(tokens, kind_at, known, dropped)
