@@ -22,6 +22,7 @@ lexicon through ``kind_at``.
 from __future__ import annotations
 
 from collections.abc import Callable
+from functools import lru_cache
 
 from vei_scenario.language.lemmas import lemmas
 
@@ -72,24 +73,30 @@ def _ego_at(tokens: list[str], i: int, kind_at: KindAt) -> int:
     return found[1] if found is not None and found[0] == "ego" else 0
 
 
-def names_ego(tokens: list[str], kind_at: KindAt) -> bool:
+def names_ego(tokens: list[str], kind_at: KindAt, known: Known) -> bool:
     """Whether the text names its ego itself: an ego phrase, or a first-person word."""
-    return any(_ego_at(tokens, i, kind_at) for i in range(len(tokens))) or bool(
-        (FIRST_PERSON | NARRATOR_INVOLVED) & set(tokens)
+    return bool((FIRST_PERSON | NARRATOR_INVOLVED) & set(tokens)) or any(
+        p.kind == "ego" for p in _road_users(tokens, kind_at, known)
     )
 
 
 def _road_users(tokens: list[str], kind_at: KindAt, known: Known) -> list:
     """The road-user phrases of ``tokens``, two vehicle nouns in a row as one ("an estate car")."""
+    return _road_users_of(tuple(tokens), kind_at, known)
+
+
+@lru_cache(maxsize=16)
+def _road_users_of(tokens: tuple[str, ...], kind_at: KindAt, known: Known) -> tuple:
+    """(Cached: the rules ask for the phrases of the same words several times.)"""
     from vei_scenario.language.discourse import _Phrase, _phrases
 
     out: list = []
-    for p in _phrases(tokens, kind_at, known):
+    for p in _phrases(list(tokens), kind_at, known):
         if out and out[-1].end == p.start and out[-1].kind in VEHICLES and p.kind in VEHICLES:
             q = out.pop()
             p = _Phrase(q.start, q.head, p.end, q.det, p.kind)
         out.append(p)
-    return out
+    return tuple(out)
 
 
 def _vehicle_phrases(tokens: list[str], kind_at: KindAt, known: Known) -> list:
@@ -152,6 +159,8 @@ def _marked(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]
     driver)", "the white van (ego)"), or as the value of an ego phrase's field or copula ("Reporting
     vehicle: city shuttle bus", "Host vehicle is a 40 t truck"): that vehicle is the ego, and so is
     every later "the bus"."""
+    if not any(p.kind == "ego" for p in _road_users(tokens, kind_at, known)):
+        return tokens
     for p in _vehicle_phrases(tokens, kind_at, known):
         noun = tokens[p.end - 1]
         if tokens[p.end : p.end + 1] == ["("]:
@@ -271,6 +280,8 @@ def _role(tokens: list[str], kind_at: KindAt) -> list[str]:
 def _relative_own(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """ "the bus I was driving", "the taxi we were in", "the van that I drive": a vehicle that a
     first-person relative clause puts the narrator in or at the wheel of is the narrator's, the ego."""
+    if not FIRST_PERSON & set(tokens):
+        return tokens
     for p in _vehicle_phrases(tokens, kind_at, known):
         k = p.end + (tokens[p.end : p.end + 1] in (["that"], ["which"]))
         if tokens[k : k + 1] not in (["i"], ["we"]):
@@ -353,6 +364,8 @@ def _struck(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]
     """A report in the third person of one vehicle that strikes a walker or rider ("a woman riding an
     e-scooter was struck by a car"; "the car hit the scooter"): that vehicle is the one the report
     is told from, the ego."""
+    if not any(_lemma_in(w, CONTACT) for w in tokens):
+        return tokens
     one = _one_vehicle(tokens, kind_at, known)
     if one is None:
         return tokens
@@ -384,16 +397,16 @@ def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) 
     tokens = _relative_own(tokens, kind_at, known, dropped)
     tokens = _boarded(tokens, kind_at, known, dropped)
     tokens = _witnessed(tokens, kind_at, known, dropped)
-    if names_ego(tokens, kind_at):
+    if names_ego(tokens, kind_at, known):
         return tokens
     from vei_scenario.language.discourse import _labels
 
     if _labels(tokens, kind_at, known):
         return tokens  # (a report's labels say who the ego is)
     tokens = _at_the_wheel(tokens, kind_at, known, dropped)
-    if names_ego(tokens, kind_at):
+    if names_ego(tokens, kind_at, known):
         return tokens
     tokens = _role(tokens, kind_at)
-    if names_ego(tokens, kind_at):
+    if names_ego(tokens, kind_at, known):
         return tokens
     return _struck(tokens, kind_at, known, dropped)
