@@ -189,3 +189,33 @@ def test_a_vehicle_that_sees_the_ego_stays_another_road_user():
 def test_the_vehicle_the_narrator_is_in_by_a_relative_clause_is_the_ego(text, kinds, kph):
     assert _kinds(text) == kinds
     assert _ego_kph(text) == kph
+
+
+# An automated vehicle named as such is the one under test; the ego's own crew named by role is the ego.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("The robotaxi was doing 25 mph when a cyclist pulled out from a side road on the left.", ["bicycle"], 40.2),
+        ("A driverless car at 30 km/h approaches a zebra crossing; a pedestrian steps out from the right.",
+         ["pedestrian"], 30.0),
+        ("A self-driving vehicle cruises at 50 km/h; a van ahead brakes hard.", ["van"], 50.0),
+        ("The safety driver took over at 30 km/h when a cyclist swerved into the lane from the right.",
+         ["bicycle"], 30.0),
+        ("Test driver reports: approaching the junction at 40 km/h, a van pulled out from the left.", ["van"], 40.0),
+    ],
+)  # fmt: skip
+def test_an_automated_vehicle_or_its_crew_names_the_ego(text, kinds, kph):
+    assert _kinds(text) == kinds
+    assert _ego_kph(text) == kph
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was doing 30 mph on Market Street when a robotaxi pulled out of a side road on my left.",
+        "A self-driving car cut me up on the motorway at 70 mph.",
+        "We were sat at the lights when a driverless car rolled into the back of us.",
+    ],
+)
+def test_an_automated_vehicle_that_meets_the_narrator_is_another_road_user(text):
+    assert _kinds(text) == ["car"]

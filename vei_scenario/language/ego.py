@@ -192,6 +192,29 @@ def _marked(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]
     return tokens
 
 
+def _met_by_narrator(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
+    """ "a robotaxi cut me up", "a self-driving car pulled out in front of us": an ego phrase new to
+    the text ("a"/"an") that meets the narrator in its sentence is another road user, a car (the
+    narrator is the ego); "the robotaxi" after it is that car."""
+    out = list(tokens)
+    for p in reversed(_road_users(tokens, kind_at, known)):
+        if p.kind != "ego" or p.det not in ("a", "an") or tokens[p.head] in FIRST_PERSON | NARRATOR_INVOLVED:
+            continue
+        e = p.end
+        while e < len(tokens) and tokens[e] not in SENTENCE_END:
+            e += 1
+        if not {"me", "us", "my", "our"} & set(tokens[p.end : e]):
+            continue
+        said = tokens[p.head : p.end]
+        k = p.end
+        while k <= len(out) - len(said):  # (its later mentions: that car)
+            if out[k : k + len(said)] == said and out[k - 1] in DEFINITE:
+                out[k : k + len(said)] = ["car"]
+            k += 1
+        out[p.start : p.end] = ["a", "car"]
+    return out
+
+
 def _person_end(tokens: list[str], i: int, kind_at: KindAt, known: Known) -> int | None:
     """Where a person's name or role that may stand at a wheel, starting at ``i``, ends: a name the
     reader has no phrase for ("Dave"), or a person's noun with "the" or none ("the pupil"), not one
@@ -393,6 +416,7 @@ def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) 
     a role, by its driver or in the third person (see the module's docstring); the words that only
     named it are added to ``dropped``. Runs before brackets go (an ego phrase in brackets marks the
     vehicle before it) and before riders are read (a named person at a wheel is the ego)."""
+    tokens = _met_by_narrator(tokens, kind_at, known)
     tokens = _marked(tokens, kind_at, known, dropped)
     tokens = _relative_own(tokens, kind_at, known, dropped)
     tokens = _boarded(tokens, kind_at, known, dropped)

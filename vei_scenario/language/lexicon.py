@@ -209,6 +209,19 @@ EGO_NOUNS = (
     "reporting vehicle",  # (a report's own vehicle, by its role)
     "reporting car",
     "reporting driver",
+    "robotaxi",  # (an automated vehicle, in its usual sense: the one under test)
+    "robo-taxi",
+    "driverless car",
+    "driverless vehicle",
+    "self-driving car",
+    "self-driving vehicle",
+    "automated vehicle",
+    "automated car",
+    "autonomous car",
+    "safety driver",  # (the ego's own crew, by role: at its wheel)
+    "test driver",
+    "learner driver",
+    "student driver",
 )
 
 #: Behaviours by their verbs (lemmas). Longer phrases win.
