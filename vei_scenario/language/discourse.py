@@ -44,7 +44,6 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass
 
-from vei_scenario.language import ego
 from vei_scenario.language.lemmas import english, lemmas
 
 #: ``kind_at(tokens, i)``: the road-user type named by a phrase starting at ``i`` ("ego" for the ego)
@@ -906,7 +905,6 @@ def resolve(tokens: list[str], kind_at: KindAt, known: Known) -> tuple[list[str]
     referents and the mentions said again (over the referents that remain)."""
     dropped: list[str] = []
     names: dict[str, str] = {}
-    tokens = ego.frame(tokens, kind_at, known, dropped)  # (the ego named by a role, its driver or a witness)
     tokens = _brackets(tokens, kind_at, known, names, dropped)
     tokens = _vehicle_labels(tokens, kind_at, known)
     tokens = _letter_labels(tokens, kind_at, known, dropped)

@@ -414,7 +414,8 @@ def _struck(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]
 def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """``tokens`` with the road user the text is told from said "the ego" where the text names it by
     a role, by its driver or in the third person (see the module's docstring); the words that only
-    named it are added to ``dropped``. Runs before brackets go (an ego phrase in brackets marks the
+    named it are added to ``dropped``. The reader runs it before :func:`discourse.resolve` (which this
+    module's rules use the phrases of): before brackets go (an ego phrase in brackets marks the
     vehicle before it) and before riders are read (a named person at a wheel is the ego)."""
     tokens = _met_by_narrator(tokens, kind_at, known)
     tokens = _marked(tokens, kind_at, known, dropped)

@@ -28,7 +28,7 @@ import re
 from dataclasses import dataclass, field, replace
 from functools import lru_cache
 
-from vei_scenario.language import discourse, sides
+from vei_scenario.language import discourse, ego, sides
 from vei_scenario.language import lexicon as L
 from vei_scenario.language import quantities as Q
 from vei_scenario.language import settings as S
@@ -507,7 +507,10 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
     read_as: list[tuple[str, str]] = [
         (typed, read) for typed, read in zip(_tokens(text, spell=False, brackets=True), tokens) if typed != read
     ]
+    framed: list[str] = []
+    tokens = ego.frame(tokens, _kind_at, _known, framed)  # (the ego named by a role, its driver, a witness)
     tokens, dropped = discourse.resolve(tokens, _kind_at, _known)  # (who is who; the words it took out)
+    dropped = framed + dropped
     ignored: list[str] = [w for w in dropped if w not in FUNCTION_WORDS and w.isalpha()]
     left_hand, ring = sides.drives_on_left(tokens), "roundabout" in tokens
 
