@@ -1,5 +1,5 @@
-"""Which road user is the ego when a description names it by a role, by its driver, through a witness
-or in the third person (vei_scenario.language.ego): that road user is the ego (its speed the ego's),
+"""Which road user is the ego when a description names it by a role, by its driver or in the third
+person (vei_scenario.language.ego): that road user is the ego (its speed the ego's),
 never one more actor, and the others stay actors."""
 
 from __future__ import annotations
@@ -66,39 +66,6 @@ def test_the_person_at_the_wheel_names_the_ego(text, kinds):
 
 def test_a_pupil_introduced_with_a_is_a_road_user():
     assert _kinds("A pupil ran out from the school gate in front of the ego at 30 km/h.") == ["pedestrian"]
-
-
-# A witness narrator, who only stands, waits or watches: the one vehicle they saw is the ego.
-@pytest.mark.parametrize(
-    "text, kinds, kph",
-    [
-        (
-            "I was waiting at the lights on foot when I saw a grey estate car heading into town at about 25 mph. "
-            "A cyclist swerved out from the kerb and the estate car braked sharply.",
-            ["bicycle"],
-            40.2,
-        ),
-        (
-            "We were sitting outside the cafe and watched a taxi come round the corner at 20 mph; a dog ran into "
-            "the road and the taxi stopped just in time.",
-            ["pedestrian"],
-            32.2,
-        ),
-        (
-            "I was stood at the crossing and saw a white van doing about 30 mph when a boy on a bike shot out of a "
-            "driveway on the left. The driver of the van stopped in time.",
-            ["bicycle"],
-            48.3,
-        ),
-    ],
-)
-def test_a_witness_narrator_is_no_road_user_and_what_they_saw_is_the_ego(text, kinds, kph):
-    assert _kinds(text) == kinds
-    assert _ego_kph(text) == kph
-
-
-def test_a_narrator_met_by_the_vehicle_is_no_witness():
-    assert "car" in _kinds("I was standing at the bus stop when a car came towards me.")
 
 
 # A news report in the third person: the one vehicle that strikes a walker or rider is the ego.

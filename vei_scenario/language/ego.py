@@ -5,18 +5,19 @@ without "I" or "the ego": a report names its own vehicle by a role ("Reporting v
 bus", "a taxi (reporting driver)", "Host vehicle is a 40 t truck") or by the person at its wheel ("a
 word from Dave, who's driving a bin lorry", "Pupil approached the roundabout at 20 mph"); a narrator
 names the vehicle they are in by getting into it or by a relative clause ("got back in the van", "the
-bus I was driving"); a witness tells what one vehicle met ("I was standing at the bus stop ... I saw a
-blue car coming"); a news report sets one vehicle against a walker or rider it struck ("a woman riding
-an e-scooter was struck by a car"). (A call sign that observes "the subject vehicle" is read where the
-report's parties are, in :mod:`vei_scenario.language.normalise`.)
+bus I was driving"); a news report sets one vehicle against a walker or rider it struck ("a woman
+riding an e-scooter was struck by a car"); an automated vehicle that meets the narrator ("a robotaxi
+cut me up") is not the ego but another car. (A call sign that observes "the subject vehicle" is read
+where the report's parties are, in :mod:`vei_scenario.language.normalise`; a narrator who only
+watches, by discourse.)
 
 :func:`frame` finds that road user by the structure that frames it and says it "the ego" (every
 mention of it, "the bus", "the driver of the car", once it is known to be the ego), so the reader
 reads one ego and the other road users as actors. Each rule reads only where the text names no ego
 otherwise, except those that mark one named road user as the ego explicitly. It knows no content
-words of its own beyond small closed classes (verbs of seeing, of boarding and of contact; the roles
-a person has in a driving lesson or a claim); which words name road users comes from the reader's
-lexicon through ``kind_at``.
+words of its own beyond small closed classes (verbs of boarding and of contact; the roles a person
+has in a driving lesson or a claim); which words name road users comes from the reader's lexicon
+through ``kind_at``.
 """
 
 from __future__ import annotations
@@ -39,10 +40,6 @@ PUNCT = SENTENCE_END | {",", ":"}
 FIRST_PERSON = frozenset({"i", "we"})
 #: First-person words that put the narrator in the scene as someone met or moved ("came at me", "my lane").
 NARRATOR_INVOLVED = frozenset({"me", "us", "my", "our", "ego"})
-#: Verbs of seeing: the one who sees another is the observer, the one the report is told from.
-SEEING = frozenset({"see", "observe", "notice", "witness", "spot", "watch"})
-#: What a witness does where the narrator stands apart from the traffic ("I was standing at the stop").
-STANCE = frozenset({"stand", "wait", "sit", "walk", "queue"}) | SEEING
 #: Auxiliaries and adverbs between a subject and its verb ("I had just seen", "we were all waiting").
 BETWEEN = BE | {"had", "have", "has", "would", "could", "did", "just", "all", "both", "then", "also", "'d"}
 #: Verbs of getting into a vehicle: what the narrator gets into is the narrator's vehicle.
@@ -362,27 +359,6 @@ def _one_vehicle(tokens: list[str], kind_at: KindAt, known: Known) -> tuple[str,
     return next(iter(groups.items()))
 
 
-def _witnessed(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
-    """A narrator who only watches ("I was standing at the bus stop ... I saw a blue car coming"),
-    never met nor moved in the story: the one vehicle they saw is the ego, and the narrator no road
-    user (said "you", a word the reader reads as nobody)."""
-    if not FIRST_PERSON & set(tokens) or NARRATOR_INVOLVED & set(tokens):
-        return tokens
-    for i, w in enumerate(tokens):
-        if w not in FIRST_PERSON:
-            continue
-        k = i + 1
-        while k < len(tokens) and tokens[k] in BETWEEN:
-            k += 1
-        if k >= len(tokens) or not _lemma_in(tokens[k], STANCE | {"say", "think", "reckon", "guess", "hear"}):
-            return tokens  # (a narrator who does anything else may be driving)
-    one = _one_vehicle(tokens, kind_at, known)
-    if one is None:
-        return tokens
-    out = ["you" if w in FIRST_PERSON else w for w in tokens]
-    return _as_ego(out, kind_at, known, one[0], dropped, only=True)
-
-
 def _struck(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """A report in the third person of one vehicle that strikes a walker or rider ("a woman riding an
     e-scooter was struck by a car"; "the car hit the scooter"): that vehicle is the one the report
@@ -421,7 +397,6 @@ def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) 
     tokens = _marked(tokens, kind_at, known, dropped)
     tokens = _relative_own(tokens, kind_at, known, dropped)
     tokens = _boarded(tokens, kind_at, known, dropped)
-    tokens = _witnessed(tokens, kind_at, known, dropped)
     if names_ego(tokens, kind_at, known):
         return tokens
     from vei_scenario.language.discourse import _labels
