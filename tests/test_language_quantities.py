@@ -263,3 +263,36 @@ def test_the_target_heading_a_number_is_the_road_user_already_named(text, other)
 def test_a_speed_after_a_subject_opening_its_clause_is_the_subjects(text, ego, other):
     ego_mps, others = _speeds(text)
     assert ego_mps == pytest.approx(ego * KPH) and others == [pytest.approx(other * KPH)]
+
+
+# --- the unit of a bare speed from the road it is said on -----------------------------------------------
+@pytest.mark.parametrize(
+    "text, mph",
+    [
+        ("Cruising along the M4 at about 60 when a coach pulls across into my lane.", 60),
+        ("We were doing 55 on the interstate and a pickup cut in ahead of us.", 55),
+        ("On a narrow B-road at 30, a tractor pulls out of a field on the left.", 30),
+        ("Dual carriageway, I'm at 50 in the left lane, and a van merges in front of me.", 50),
+        ("Heading north on I-5 doing 60, a motorbike weaves in front of me.", 60),
+        ("Doing about 25 in a 25 limit when a dog runs out in front of me.", 25),
+        ("Southbound on the A34 at 50, a car ahead brakes hard.", 50),
+    ],
+    ids=["motorway-number", "interstate", "b-road", "carriageway", "interstate-number", "us-limit", "a-road-number"],
+)
+def test_a_bare_speed_on_a_road_of_a_miles_country_is_in_mph(text, mph):
+    assert read(text).ego_speed_mps == pytest.approx(mph * MPH)
+
+
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("On the M4 at 90 km/h, a coach pulls across into my lane.", 90),
+        ("On the freeway at 100, a car cuts in front. The car is going 110 km/h.", 100),
+        ("On a motorway at 100, a lorry changes lane in front of the ego.", 100),
+        ("At 50 on a road through town, a cyclist swerves in front of me.", 50),
+        ("Doing 30 in a 30 zone, a child runs out between parked cars.", 30),
+    ],
+    ids=["unit-said", "unit-said-later", "motorway-unnumbered", "a-road-article", "limit-of-both"],
+)
+def test_a_bare_speed_elsewhere_stays_in_the_unit_said_or_km_h(text, kph):
+    assert read(text).ego_speed_mps == pytest.approx(kph * KPH)

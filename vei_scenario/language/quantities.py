@@ -110,17 +110,44 @@ Mentions = Callable[[int], "int | None"]
 
 def carried_unit(tokens: list[str], i: int) -> float:
     """The factor to m/s of a bare speed at ``i`` ("I'm at 50"): the unit of the last speed said with
-    one before it, else of the first said after it in its sentence, else km/h (the unit of a test
-    engineer who gives none)."""
+    one before it, else of the first said after it, else mph on a road of a country that signs miles
+    (:func:`miles_country`), else km/h (the unit of a test engineer who gives none)."""
     for k in range(i - 1, 0, -1):
         if tokens[k] in V.SPEED_UNITS and tokens[k - 1].replace(".", "", 1).isdigit():
             return V.SPEED_UNITS[tokens[k]]
-    for k in range(i + 1, len(tokens)):  # none before: the one said after it in its sentence ("at 30 and ... 20 mph")
-        if tokens[k] in _STOPS:
-            break
+    for k in range(i + 1, len(tokens)):  # none before: the one said after it ("at 30 and ... 20 mph")
         if tokens[k] in V.SPEED_UNITS and tokens[k - 1].replace(".", "", 1).isdigit():
             return V.SPEED_UNITS[tokens[k]]
-    return 1 / 3.6
+    return V.SPEED_UNITS["mph"] if miles_country(tokens) else 1 / 3.6
+
+
+#: Roads only countries that sign speeds in miles per hour have: the British "carriageway" and the
+#: American interstate, freeway and turnpike. ("Motorway" and "highway" are said where km/h is signed too.)
+_MILES_ROADS = frozenset({"carriageway", "carriageways", "interstate", "freeway", "freeways", "turnpike"})
+#: Letters of numbered roads in Britain (M6, A34, B1234) and the United States (I-95), as tokens.
+_ROAD_LETTERS = frozenset({"m", "a", "b", "i-"})
+#: Speed limits only miles per hour have (25, 35, 45, 55, 65 mph); km/h limits are multiples of ten.
+_MILES_LIMITS = frozenset({15, 25, 35, 45, 55, 65, 75})
+
+
+def miles_country(tokens: list[str]) -> bool:
+    """Whether the road the text is set on is one of a country that signs speeds in mph: a British or
+    American road word, a numbered road ("the M25", "the A34", "B-road", "I-95"), or a limit only mph
+    has ("a 35 zone"). Why: a driver who gives a bare number ("doing about 70") gives it in the unit of
+    their road signs, and names the road far more often than the unit."""
+    for k, tok in enumerate(tokens):
+        nxt = tokens[k + 1] if k + 1 < len(tokens) else ""
+        if tok in _MILES_ROADS:
+            return True
+        if tok in _ROAD_LETTERS and nxt.isdigit() and not (k and tokens[k - 1].replace(".", "", 1).isdigit()):
+            # "the M25", "I-95" (not "5 m 20": metres; not "a 40": an article unless "the" stands before it)
+            if tok in ("m", "i-") or (tok == "b" and len(nxt) >= 2) or (k and tokens[k - 1] == "the"):
+                return True
+        if tok == "b" and nxt in ("road", "roads"):  # ("a B-road"; "A-road" reads as "a road")
+            return True
+        if tok.isdigit() and int(tok) in _MILES_LIMITS and nxt in ("limit", "zone"):
+            return True
+    return False
 
 
 def lateral(tokens: list[str], i: int, used: int) -> bool:
