@@ -250,3 +250,77 @@ def test_a_negated_time_word_is_not_the_time(text):
 )
 def test_a_lanes_field_is_lanes_per_direction(text, lanes):
     assert read(text).lanes == lanes
+
+
+# --- settings said in passing ------------------------------------------------------------------------------
+@pytest.mark.parametrize(
+    "text, weather",
+    [
+        ("Evening, thick fog - cyclist ahead brakes hard.", "fog"),
+        ("Half eight, sleet \u2013 taxi pulls out from the kerb on the left.", "snow"),
+        ("Drizzle \u2014 moped ahead of me slows down.", "rain"),
+    ],
+    ids=["hyphen", "en-dash", "em-dash"],
+)
+def test_a_setting_before_a_spaced_dash_is_not_a_road_users_kind(text, weather):
+    assert read(text).weather == weather
+
+
+def test_a_time_before_a_spaced_dash_is_the_time():
+    assert read("Snowy night \u2014 minibus ahead brakes hard.").time == "23:00"
+
+
+@pytest.mark.parametrize(
+    "text, weather",
+    [
+        ("grey van ahead brakes hard | clear, morning", "clear"),
+        ("Ego 50 km/h, grey saloon cuts in from the left, clear skies", "clear"),
+        ("gray pickup turns across the ego at the junction, dry and sunny", "clear"),
+        ("Grey, drizzly morning. A van brakes hard ahead.", "rain"),
+        ("Grey sky, a van brakes hard ahead.", "cloudy"),
+    ],
+    ids=["bar-line", "after-comma", "gray", "grey-day", "grey-sky"],
+)
+def test_a_colour_right_before_a_road_user_is_its_colour_not_the_sky(text, weather):
+    assert read(text).weather == weather
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Taking a tight left-hander at 40 km/h when a motorbike comes the other way on my side.",
+        "A van stopped just past a right-hander, I brake hard.",
+        "Halfway round a sharp right hander a cyclist is in the middle of my lane.",
+    ],
+    ids=["left-hander", "right-hander", "spaced"],
+)
+def test_a_left_or_right_hander_is_a_bend(text):
+    assert read(text).map_kind == "curve"
+
+
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("A taxi ahead suddenly makes a left onto Elm Avenue and I have to brake.", "crossroad"),
+        ("The bus in front takes a right into 3rd Street.", "crossroad"),
+        ("A cyclist in front of me hangs a left onto the main road.", "crossroad"),
+        ("A car in front of me moves onto the hard shoulder and stops.", None),
+    ],
+    ids=["make-a-left-onto", "take-a-right-into", "onto-the-main-road", "hard-shoulder"],
+)
+def test_a_turn_onto_a_road_is_at_a_junction(text, kind):
+    assert read(text).map_kind == kind
+
+
+@pytest.mark.parametrize(
+    "text, lanes",
+    [
+        ("I'm in lane 3 when a car ahead brakes hard.", 3),
+        ("A van in lane two drifts into my lane.", 2),
+        ("Ego in the middle lane, a car on the left cuts in.", 3),
+        ("Lane 2 of 4, a lorry changes lane in front of me.", 4),
+    ],
+    ids=["lane-3", "lane-two", "middle-lane", "lane-of"],
+)
+def test_a_numbered_or_middle_lane_needs_that_many_lanes(text, lanes):
+    assert read(text).lanes == lanes

@@ -664,8 +664,11 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
             continue
         before = tokens[i - 1] if i else ""
         attributive = before in _DETERMINERS or (before.isalpha() and before not in FUNCTION_WORDS)
-        if slot == "weather" and key[-1] in L.COLOURS and before in _DETERMINERS and _names_a_thing(tokens, i + 1):
-            # "a grey Audi", "the grey one": the colour of something, not the sky
+        if (
+            slot == "weather"
+            and key[-1] in L.COLOURS
+            and ((before in _DETERMINERS and _names_a_thing(tokens, i + 1)) or _actor_at(tokens, i + 1))
+        ):  # "a grey Audi", "the grey one", "grey van ahead brakes": the colour of something, not the sky
             ignored.extend(key)
             i += len(key)
             continue
@@ -1740,6 +1743,7 @@ def read(text: str) -> Reading:
     r.lanes = stated_lanes(said) or r.lanes
     oncoming = any(s.relation == "oncoming" or any(b[0] == "wrong_way" for b in s.behaviours) for s in r.actors)
     r.lanes = S.lanes_of_two_way_road(said, oncoming) or S.lanes_counted(said) or r.lanes
+    r.lanes = max(r.lanes or 0, S.lanes_at_least(said) or 0) or r.lanes  # ("in lane 3": three at least)
     said_as = [
         (m.slot, m.words, m.value)
         for _, ms in clauses

@@ -214,17 +214,39 @@ def lanes_of_two_way_road(said: str, oncoming: bool) -> int | None:
     return 1 if oncoming or _TWO_WAY.search(said) else None
 
 
-#: A turn into a road: a side road or street, or one named ("into Church Lane", "into Park Road").
-_INTO_SIDE_ROAD = re.compile(
-    r"\bturn(?:s|ed|ing)?(?: (?:left|right|off))? into (?:a |the |one of the )?side[ -]?(?:roads?|streets?)\b"
+#: A turn into or onto a road: said with the verb "turn" ("turns left into") or as a turn made, taken or
+#: hung ("makes a right onto", "hangs a left into").
+_TURN = (
+    r"(?:turn(?:s|ed|ing)?(?: (?:left|right|off))?"
+    r"|(?:makes?|making|made|takes?|taking|took|hangs?|hanging|hung) a (?:left|right))"
 )
+#: A side road or street, or the main road (what one turns onto from a side road).
+_INTO_SIDE_ROAD = re.compile(
+    rf"\b{_TURN} (?:in|on)to (?:a |the |one of the )?(?:side[ -]?(?:roads?|streets?)|main road)\b"
+)
+#: A road named ("into Church Lane", "onto 9th St"): capitalised or numbered words before a road's noun.
 _INTO_NAMED_ROAD = re.compile(
-    r"\b[Tt]urn(?:s|ed|ing)?(?: (?:left|right|off))? into (?:[A-Z][\w']+ )+"
-    r"(?:Road|Lane|Street|Avenue|Close|Drive|Way|Grove|Crescent|Place|Terrace|Rd|St|Ave)\b"
+    rf"\b(?i:{_TURN}) (?:in|on)to (?:[A-Z0-9][\w']* )+"
+    r"(?:Road|Lane|Street|Avenue|Close|Drive|Way|Grove|Crescent|Place|Terrace|Boulevard|Rd|St|Ave|Blvd)\b"
 )
 
 
 def turns_into_a_road(text: str, said: str) -> bool:
-    """Whether someone turns into a road (a side road, or one named in the original ``text``): the road
-    has a junction there."""
+    """Whether someone turns into or onto a road (a side road, the main road, or one named in the
+    original ``text``): the road has a junction there."""
     return _INTO_SIDE_ROAD.search(said) is not None or _INTO_NAMED_ROAD.search(text) is not None
+
+
+#: "lane 3", "lane two" (not "lane 2 of 3", which counts the lanes itself): a lane numbered from the kerb.
+_LANE_NUMBER = re.compile(r"\blane " + _N + r"\b(?! of)")
+#: "the middle lane", "the centre lane": a lane with one on each side.
+_MIDDLE_LANE = re.compile(r"\b(?:middle|centre|center) lane\b")
+
+
+def lanes_at_least(said: str) -> int | None:
+    """The fewest lanes a direction has for the lanes the normalised text names: a lane numbered N
+    ("in lane 3") needs N, a middle lane three; None where it names neither. Why: a writer who puts
+    someone in lane 3 or the middle lane seldom also counts the lanes."""
+    numbers = [int(w) if w.isdigit() else _WORD[w] for w in _LANE_NUMBER.findall(said)]
+    fewest = max([n for n in numbers if 1 <= n <= 6] + [3 if _MIDDLE_LANE.search(said) else 0])
+    return fewest or None
