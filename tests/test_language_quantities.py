@@ -296,3 +296,48 @@ def test_a_bare_speed_on_a_road_of_a_miles_country_is_in_mph(text, mph):
 )
 def test_a_bare_speed_elsewhere_stays_in_the_unit_said_or_km_h(text, kph):
     assert read(text).ego_speed_mps == pytest.approx(kph * KPH)
+
+
+# --- the ego standing still -------------------------------------------------------------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was sat at a red light when a van went into the back of me.",
+        "We were waiting at the lights and a bus clipped our rear.",
+        "Ego is stationary at a stop line; a lorry approaches from behind and fails to stop.",
+        "The claimant had stopped in a queue when the defendant's van struck the rear of her car.",
+        "A taxi hit me from behind while I was queuing at the junction.",
+    ],
+    ids=["sat", "waiting", "stationary", "had-stopped", "while-queuing"],
+)
+def test_the_ego_said_to_stand_still_starts_at_rest(text):
+    assert read(text).ego_speed_mps == 0.0
+
+
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("A child ran out from between parked cars and I was stopped just in time.", None),
+        ("I was doing 30 km/h when a van pulled out; I was stopped within a few metres.", 30),
+        ("A car in front of me is waiting at the lights, I approach at 40 km/h.", 40),
+    ],
+    ids=["stop-as-reaction", "speed-said", "someone-else-waits"],
+)
+def test_a_stop_the_ego_makes_or_anothers_wait_is_no_start_at_rest(text, kph):
+    speed = read(text).ego_speed_mps
+    assert (speed is None) if kph is None else speed == pytest.approx(kph * KPH)
+
+
+@pytest.mark.parametrize(
+    "text, relation",
+    [
+        ("I was waiting at the lights when a van in the same lane ran into my rear.", "behind"),
+        ("I was sat at a red light when a van went into the back of me.", "behind"),
+        ("We were queuing at the roundabout and a minibus drove straight into us.", "behind"),
+        ("I was waiting at the lights in my lane when the van in front pulled away.", "ahead"),
+    ],
+    ids=["ran-into-rear", "back-of-me", "drove-into-us", "pulls-away-ahead"],
+)
+def test_who_meets_the_ego_at_rest_along_its_lane_comes_from_behind(text, relation):
+    r = read(text)
+    assert r.ego_speed_mps == 0.0 and [a.relation for a in r.actors] == [relation]

@@ -241,3 +241,49 @@ def _key_of_line(tokens: list[str], i: int, mention_ending_at: Mentions) -> tupl
     if key is None or any(mention_ending_at(k) is not None for k in range(colon + 1, i)):
         return ()
     return (key,)
+
+
+#: Words that say a road user stands still ("was stationary", "were waiting", "sat at a red light").
+STILL_WORDS = frozenset(
+    "stationary stopped parked waiting queuing queueing queued sat sitting idling halted".split() + ["at a standstill"]
+)
+#: Words before a still word that make it a state the subject is in, not a stop it makes ("was stopped",
+#: "had stopped", "were still waiting"); a stop said as an event ("I stopped just short") is a reaction.
+_STATE_BEFORE = _AUXILIARIES | {"had", "have", "has", "already", "patiently"}
+#: Conjunctions that make a clause the background of what happens ("... while I was queuing").
+_BACKGROUND = frozenset({"while", "whilst", "as", "when"})
+
+
+def ego_at_rest(clauses) -> bool:
+    """Whether the ego is said to stand still as the scene opens: the ego, then a state of standing
+    ("was stationary", "were waiting at the lights", "had stopped in a queue"), said before anyone does
+    anything or as the background of what they do ("... while I was queuing"). Why: the one struck
+    while waiting is a common report, and a stop the ego makes in reply ("... and I was stopped just
+    in time") is no start at rest. ``clauses``: the reader's (link, mentions)."""
+    acted = False
+    for _, mentions in clauses:
+        said = [
+            m for m in mentions if m.slot not in ("punct", "conj") and not (m.slot == "ego_verb" and m.value is None)
+        ]
+        for k, m in enumerate(said):
+            if m.slot == "behaviour":
+                acted = True
+            if m.words not in STILL_WORDS or m.slot not in ("stationary", "unknown_verb") or not k:
+                continue
+            ego = said[k - 1]
+            if ego.slot == "actor" and ego.value == "ego" and m.prev in _STATE_BEFORE:
+                if not acted or ego.prev in _BACKGROUND:
+                    return True
+    return False
+
+
+def struck_at_rest(actors, ego_speed_mps: float | None, intent: str | None) -> None:
+    """Each road user read as going along the ego's lane (ahead, or nowhere said) that meets the ego at
+    rest comes from behind it: one ahead going the same way never reaches a standing ego. ``actors``:
+    the reading's specs; ``intent``: the outcome read (a collision or a near miss is a meeting)."""
+    if ego_speed_mps != 0.0 or intent not in ("collision", "near_miss"):
+        return
+    for a in actors:
+        going = [b[0] for b in a.behaviours] in ([], ["keep_going"]) and a.speed_mps != 0.0
+        if going and a.relation in (None, "ahead"):
+            a.relation = "behind"

@@ -1543,6 +1543,8 @@ def read(text: str) -> Reading:
         a.lane_side = sides.beside(a.lane_side, r.ego_relation)
     if both_with_ego and r.ego_speed_mps is None and actors and actors[0].speed_mps is not None:
         r.ego_speed_mps = actors[0].speed_mps  # (the speed said of both)
+    if r.ego_speed_mps is None and Q.ego_at_rest(clauses):
+        r.ego_speed_mps = 0.0  # ("I was sat at the lights when ..."): the ego stands still
     ignored += unplaced
     if len(actors) > MAX_ACTORS:
         raise NotUnderstood([f"{len(actors)} road users (a scenario holds at most {MAX_ACTORS} besides the ego)"], text)
@@ -1740,6 +1742,7 @@ def read(text: str) -> Reading:
     r.ignored = [w for w in r.ignored if w not in told]
     if r.intent is None and not r.actors:
         r.intent = "safe"  # (nobody but the ego: nothing it could meet)
+    Q.struck_at_rest(r.actors, r.ego_speed_mps, r.intent)  # ("I was waiting at the lights when a van hit me")
     r.lanes = stated_lanes(said) or r.lanes
     oncoming = any(s.relation == "oncoming" or any(b[0] == "wrong_way" for b in s.behaviours) for s in r.actors)
     r.lanes = S.lanes_of_two_way_road(said, oncoming) or S.lanes_counted(said) or r.lanes
