@@ -341,3 +341,33 @@ def test_a_stop_the_ego_makes_or_anothers_wait_is_no_start_at_rest(text, kph):
 def test_who_meets_the_ego_at_rest_along_its_lane_comes_from_behind(text, relation):
     r = read(text)
     assert r.ego_speed_mps == 0.0 and [a.relation for a in r.actors] == [relation]
+
+
+# --- a hedged speed, a bare speed after the ego's name ----------------------------------------------------
+@pytest.mark.parametrize(
+    "text, ego, other",
+    [
+        ("A van behind me overtook on the bend doing at least 70 mph and cut back in. I was at 50 mph.", 50, 70),
+        ("A motorbike going well over 60 passes me on the right, I'm doing 40 mph.", 40, 60),
+        ("A taxi cuts in at just under 50 km/h, ego at nearly 70 km/h.", 70, 50),
+    ],
+    ids=["at-least", "well-over", "just-under-nearly"],
+)
+def test_a_hedged_speed_is_read_as_the_speed(text, ego, other):
+    ego_mps, others = _speeds(text)
+    unit = MPH if "mph" in text else KPH
+    assert ego_mps == pytest.approx(ego * unit) and others == [pytest.approx(other * unit)]
+
+
+@pytest.mark.parametrize(
+    "text, ego",
+    [
+        ("Van pulls out from the left 20 m ahead, ego 60, wet road", 60),
+        ("Lane 3, ego 80 and a lorry moves over in front", 80),
+        ("Cyclist 20 km/h ahead on the right, ego 45.", 45),
+        ("SUT at 40 km/h, a pedestrian crosses from the left 15 m ahead.", 40),
+    ],
+    ids=["ego-n-comma", "ego-n-and", "ego-n-end", "sut"],
+)
+def test_a_bare_number_after_the_egos_name_is_its_speed(text, ego):
+    assert read(text).ego_speed_mps == pytest.approx(ego * KPH)

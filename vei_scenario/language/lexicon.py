@@ -192,6 +192,8 @@ EGO_NOUNS = (
     "ego car",
     "vehicle under test",
     "vut",
+    "sut",
+    "system under test",
     "subject vehicle",
     "test vehicle",
     "autonomous vehicle",

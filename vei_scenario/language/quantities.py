@@ -36,7 +36,25 @@ ROLE_NOUNS = frozenset({"target", "other vehicle"})
 #: Nouns that head a speed ("van speed 60 km/h", "speed of the bus 15 km/h").
 SPEED_HEADS = frozenset({"speed", "velocity"})
 #: Words between a head and its number that carry nothing ("speed is about 20", "speed of ~20").
-_LINKS = frozenset({"about", "is", "was", "of", "at", "=", "approximately", "around", "roughly", "ca", "circa"})
+_LINKS = frozenset({"about", "is", "was", "of", "at", "=", "approximately", "around", "roughly", "ca", "circa"}) | {
+    "least", "most", "over", "under", "nearly", "almost", "well", "easily", "maybe", "like", "just", "only"
+}  # fmt: skip
+#: Words that bound or hedge a number ("at least 70", "well over 60", "nearly 50", "just under 30"): the
+#: number is still the speed the words before them say.
+APPROXIMATORS = frozenset(
+    {"least", "most", "over", "under", "nearly", "almost", "well", "easily", "maybe", "like", "just", "only"}
+)
+
+
+def before_hedge(tokens: list[str], i: int) -> str:
+    """The word before the number at ``i`` past its hedge ("doing at least 70": "at"; "going well
+    over 60": "going"), the plain word before it where there is none."""
+    k = i - 1
+    while k > 0 and tokens[k] in APPROXIMATORS:
+        k -= 1
+    return tokens[k] if k >= 0 else ""
+
+
 _STOPS = frozenset({".", ";", "!", "?"})
 #: Verbs of going whose subject a speed after "at" is said of ("the ego drives at 40 km/h").
 _MOTION = frozenset(
@@ -102,6 +120,18 @@ def after_at(tokens: list[str], i: int) -> bool:
     """Whether a bare number at ``i`` follows "at" (or "doing") past an article and one modifier
     ("at a steady 50", "doing a brisk 30"): a speed, as "at 50" is."""
     return i >= 3 and tokens[i - 2] in _ARTICLES and tokens[i - 3] in ("at", "doing") and tokens[i - 1].isalpha()
+
+
+#: Words after which a number ends its note ("ego 50, ...", "ego 50 and a van ...").
+_NOTE_ENDS = frozenset({"", ".", ",", ";", "!", "?", "and", "then", "when", "while", "but", ")"})
+
+
+def after_ego(tokens: list[str], i: int) -> bool:
+    """Whether the bare number at ``i`` stands right after the ego's name and ends its note ("..., ego
+    50", "SUT 40, cyclist ..."): the ego's speed, as "cyclist 15 km/h" is the cyclist's. (Only the
+    ego's: "Vehicle 2." or "lane 3," name things by a number.)"""
+    nxt = tokens[i + 1] if i + 1 < len(tokens) else ""
+    return i >= 1 and tokens[i - 1] == "ego" and nxt in _NOTE_ENDS
 
 
 #: ``mention_ending_at(k)``: the start of the road-user (or ego) mention whose last word is token ``k``.
@@ -195,7 +225,7 @@ def owners(
             k -= 1
         if k >= 1 and tokens[k] == "of" and tokens[k - 1] in SPEED_HEADS:  # "speed of the bus 15 km/h"
             return (owner,)
-        if j == i - 1 and unit:  # "cyclist 15 km/h": said of the noun it stands after
+        if j == i - 1 and (unit or after_ego(tokens, i)):  # "cyclist 15 km/h", "ego 50": of the noun before it
             return (owner,)
         if unit and tokens[j + 1] == "at" and (k < 0 or tokens[k] in _CLAUSE_OPENERS):
             return (owner,)  # "the van at 60 km/h overtakes ...": said of the subject opening its clause

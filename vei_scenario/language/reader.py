@@ -472,13 +472,16 @@ def _number(tokens: list[str], i: int) -> tuple[str, float, int] | None:
     if nxt in ("lanes", "lane") or (nxt == "-" and i + 2 < len(tokens) and tokens[i + 2] in ("lane", "lanes")):
         if value == int(value) and 1 <= value <= 8:  # "3 lanes", "a 2-lane road": lanes a direction
             return "lanes", int(value), 2 if nxt != "-" else 3
-    prev = tokens[i - 1] if i > 0 else ""
-    to_changed = prev == "to" and _changes_speed_before(tokens, i - 1)  # ("speeds up to 80": the speed it reaches)
+    prev = Q.before_hedge(tokens, i) if i > 0 else ""  # ("doing at least 70", "going well over 60")
+    to_changed = tokens[i - 1] == "to" and _changes_speed_before(
+        tokens, i - 1
+    )  # ("speeds up to 80": the speed it reaches)
     if (prev in ("at", "doing", "about", "around", "of") or to_changed or Q.after_at(tokens, i)) and 3 <= value <= 250:
         # "at 120", "at a steady 50": in the unit said before
         return "speed", value * Q.carried_unit(tokens, i), 1
     ends = nxt in ("", ".", ",", ";", "!", "?", "and", "then", "when", "while", "but")
-    if prev in _MOTION_BEFORE_SPEED and 3 <= value <= 250 and ends:  # "Ego goes 50, ...": km/h
+    hedged = prev != tokens[i - 1]  # ("going well over 60 passes me": a speed, however the clause goes on)
+    if (prev in _MOTION_BEFORE_SPEED or Q.after_ego(tokens, i)) and 3 <= value <= 250 and (ends or hedged):
         return "speed", value * Q.carried_unit(tokens, i), 1
     return "unknown", value, 1
 
