@@ -324,3 +324,60 @@ def test_a_turn_onto_a_road_is_at_a_junction(text, kind):
 )
 def test_a_numbered_or_middle_lane_needs_that_many_lanes(text, lanes):
     assert read(text).lanes == lanes
+
+
+@pytest.mark.parametrize(
+    "text, weather",
+    [
+        ("Light rain ended about 10 minutes before the run, sky overcast. A van brakes ahead of me.", "cloudy"),
+        ("It had stopped raining by then; a cyclist swerves in front of me.", None),
+        ("The fog had lifted, bright sunshine now; a bus pulls out on the left.", "clear"),
+        ("Rain. A van brakes ahead of me and stopped.", "rain"),
+    ],
+    ids=["rain-ended", "stopped-raining", "fog-lifted", "the-van-stopped"],
+)
+def test_a_weather_said_to_have_ended_is_not_the_weather(text, weather):
+    assert read(text).weather == weather
+
+
+@pytest.mark.parametrize(
+    "text, density",
+    [
+        ("Sunny afternoon, traffic moderate. A car cuts in front of me.", "moderate"),
+        ("Traffic heavy, dusk. A car cuts in front of me.", "heavy"),
+        ("Weather: dry. Traffic: light. A van pulls out ahead.", "light"),
+        ("A car runs the traffic light in front of me.", None),
+    ],
+    ids=["traffic-moderate", "traffic-heavy", "traffic-colon", "traffic-light-signal"],
+)
+def test_traffic_noted_with_its_value_after_it(text, density):
+    assert read(text).density == density
+
+
+@pytest.mark.parametrize(
+    "text, clock",
+    [
+        ("Outside the school at 3:15, a child runs out in front of me.", "15:15"),
+        ("At 5:40 a van pulled out of a side road on my left.", "17:40"),
+        ("At 5:30 in the morning a van pulled out on me.", "06:00"),
+        ("At 03:15 a van pulled out on me.", "03:15"),
+        ("At 2:30 at night a van pulled out on me.", "02:30"),
+        ("At 9:40 a van pulled out on me.", "09:40"),
+    ],
+    ids=["school-3-15", "5-40", "morning-said", "two-digit-hour", "night-said", "morning-hour"],
+)
+def test_a_twelve_hour_clock_of_the_first_hours_is_the_afternoons(text, clock):
+    assert read(text).time == clock
+
+
+@pytest.mark.parametrize(
+    "text, lanes",
+    [
+        ("On the two-lane approach to the roundabout, a van in the left lane cuts across me.", 2),
+        ("Coming down a two-lane slip road, a lorry on my right moves over.", 2),
+        ("A two-lane road through a village, a tractor comes the other way.", 1),
+    ],
+    ids=["approach", "slip-road", "village-road"],
+)
+def test_a_two_lane_approach_or_slip_road_counts_one_direction(text, lanes):
+    assert read(text).lanes == lanes

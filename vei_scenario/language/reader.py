@@ -661,7 +661,9 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
             i += 1
             continue
         slot, value = TABLE[key]
-        if slot in ("weather", "time", "density") and S.negated(tokens, i):
+        if slot in ("weather", "time", "density") and (
+            S.negated(tokens, i) or (slot == "weather" and S.ended(tokens, i, len(key)))
+        ):
             ignored.extend(tokens[i : i + len(key)])  # ("no rain, clear skies", "it wasn't dark yet"): denied
             i += len(key)
             continue
@@ -1757,6 +1759,7 @@ def read(text: str) -> Reading:
         if m.slot == "weather" or (m.slot == "time" and m.prev not in S.BOUNDS)  # (not "since midnight")
     ]
     clock = S.dotted_clock(S.without_bounds(said)) or stated_clock(S.without_bounds(said))
+    clock = S.twelve_hour(clock, S.without_bounds(said), [v for k, w, v in said_as if k == "time"])
     r.time = S.time_of_day([(w, v) for k, w, v in said_as if k == "time"], clock) or r.time
     r.weather = S.sky_over_surface([(w, v) for k, w, v in said_as if k == "weather"]) or r.weather or S.sunny(said)
     r.density = S.density(said) or stated_density(said) or r.density
