@@ -371,3 +371,29 @@ def test_a_hedged_speed_is_read_as_the_speed(text, ego, other):
 )
 def test_a_bare_number_after_the_egos_name_is_its_speed(text, ego):
     assert read(text).ego_speed_mps == pytest.approx(ego * KPH)
+
+
+# --- a stated speed reaches the layers ------------------------------------------------------------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("Ego at 40 km/h. Crossing car from the right runs the red at 60 km/h.", 60),
+        ("Ego 30 km/h on green. Speeding van from the left jumps the lights at 70 km/h.", 70),
+        ("Ego doing 50 km/h. Reversing lorry backs out of a yard on the left at 8 km/h.", 8),
+    ],
+    ids=["crossing-car", "speeding-van", "reversing-lorry"],
+)
+def test_a_terse_lines_participle_before_a_road_user_is_that_road_users(text, kph):
+    r = read(text)
+    assert len(r.actors) == 1 and r.actors[0].speed_mps == pytest.approx(kph * KPH)
+    assert r.ego_speed_mps != pytest.approx(kph * KPH)
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_a_stated_speed_is_kept_in_every_generated_scenario(seed):
+    from vei_scenario.language.rules_backend import sample_layers
+
+    text = "Junction with lights, ego straight on at 40 km/h. A car from the right runs the red at 60 km/h."
+    layers = sample_layers(read(text), text, seed)
+    assert float(layers["adversaries"][0]["speed_mps"]) == pytest.approx(60 * KPH, abs=0.01)
+    assert float(layers["ego"]["speed_mps"]) == pytest.approx(40 * KPH, abs=0.01)

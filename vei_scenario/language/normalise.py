@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import re
 
-from vei_scenario.language.lemmas import english
+from vei_scenario.language.lemmas import english, lemmas
 
 _ONES = {
     "zero": 0, "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8,
@@ -340,6 +340,22 @@ def _acronyms_defined(text: str, known_noun=lambda phrase: None) -> str:
     return text
 
 
+#: A sentence opening with a participle right before a noun ("Crossing car from the right runs the red").
+_PARTICIPLE_OPENING = re.compile(r"(^|[.;!?]\s+)([a-z]+ing) ([a-z][a-z-]*)\b")
+#: Nouns of the time of day that end as participles do ("evening bus"): no participle.
+_TIME_NOUNS = frozenset({"morning", "evening"})
+
+
+def _with_article(m: re.Match, known_noun) -> str:
+    """A terse line's participle before a road user's noun with its article restored ("crossing car
+    ...": "a crossing car ..."): the road user's own participle, not a clause of whoever came before
+    (the reader reads a sentence opening with a participle as its narrator's, "Crossing the road, I ...")."""
+    start, participle, noun = m.groups()
+    if participle in _TIME_NOUNS or "VERB" not in lemmas(participle) or known_noun(noun) != noun:
+        return m.group(0)
+    return f"{start}a {participle} {noun}"
+
+
 def normalise(text: str, known_noun=lambda phrase: None) -> str:
     """``text`` (lowercased) with numbers in words, units, and the parties of a statement said the
     way the reader reads them. ``known_noun(phrase)`` returns the road-user noun a phrase ends in,
@@ -362,6 +378,7 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
         text,
     )
     text = _acronyms_defined(text, known_noun)
+    text = _PARTICIPLE_OPENING.sub(lambda m: _with_article(m, known_noun), text)
     for pattern, repl in _SHORTHAND:
         text = pattern.sub(repl, text)
     text = _FOUR_DIGIT_CLOCK.sub(r"\1:\2", text)
