@@ -276,8 +276,12 @@ def test_a_speed_after_a_subject_opening_its_clause_is_the_subjects(text, ego, o
         ("Heading north on I-5 doing 60, a motorbike weaves in front of me.", 60),
         ("Doing about 25 in a 25 limit when a dog runs out in front of me.", 25),
         ("Southbound on the A34 at 50, a car ahead brakes hard.", 50),
+        ("A van sat on my tail for two miles while I was doing 50, then overtook and cut in.", 50),
     ],
-    ids=["motorway-number", "interstate", "b-road", "carriageway", "interstate-number", "us-limit", "a-road-number"],
+    ids=[
+        "motorway-number", "interstate", "b-road", "carriageway", "interstate-number", "us-limit", "a-road-number",
+        "miles",
+    ],  # fmt: skip
 )
 def test_a_bare_speed_on_a_road_of_a_miles_country_is_in_mph(text, mph):
     assert read(text).ego_speed_mps == pytest.approx(mph * MPH)

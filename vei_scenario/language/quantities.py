@@ -154,6 +154,9 @@ def carried_unit(tokens: list[str], i: int) -> float:
 #: Roads only countries that sign speeds in miles per hour have: the British "carriageway" and the
 #: American interstate, freeway and turnpike. ("Motorway" and "highway" are said where km/h is signed too.)
 _MILES_ROADS = frozenset({"carriageway", "carriageways", "interstate", "freeway", "freeways", "turnpike"})
+#: Distances in miles ("for a mile", "two miles back"): a writer who measures the road in miles reads
+#: its speeds in miles per hour.
+_MILES = frozenset({"mile", "miles"})
 #: Letters of numbered roads in Britain (M6, A34, B1234) and the United States (I-95), as tokens.
 _ROAD_LETTERS = frozenset({"m", "a", "b", "i-"})
 #: Speed limits only miles per hour have (25, 35, 45, 55, 65 mph); km/h limits are multiples of ten.
@@ -162,12 +165,12 @@ _MILES_LIMITS = frozenset({15, 25, 35, 45, 55, 65, 75})
 
 def miles_country(tokens: list[str]) -> bool:
     """Whether the road the text is set on is one of a country that signs speeds in mph: a British or
-    American road word, a numbered road ("the M25", "the A34", "B-road", "I-95"), or a limit only mph
-    has ("a 35 zone"). Why: a driver who gives a bare number ("doing about 70") gives it in the unit of
+    American road word, a numbered road ("the M25", "the A34", "B-road", "I-95"), a limit only mph
+    has ("a 35 zone"), or a distance in miles. Why: a driver who gives a bare number ("doing about 70") gives it in the unit of
     their road signs, and names the road far more often than the unit."""
     for k, tok in enumerate(tokens):
         nxt = tokens[k + 1] if k + 1 < len(tokens) else ""
-        if tok in _MILES_ROADS:
+        if tok in _MILES_ROADS or tok in _MILES:
             return True
         if tok in _ROAD_LETTERS and nxt.isdigit() and not (k and tokens[k - 1].replace(".", "", 1).isdigit()):
             # "the M25", "I-95" (not "5 m 20": metres; not "a 40": an article unless "the" stands before it)
