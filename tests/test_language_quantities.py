@@ -279,7 +279,13 @@ def test_a_speed_after_a_subject_opening_its_clause_is_the_subjects(text, ego, o
         ("A van sat on my tail for two miles while I was doing 50, then overtook and cut in.", 50),
     ],
     ids=[
-        "motorway-number", "interstate", "b-road", "carriageway", "interstate-number", "us-limit", "a-road-number",
+        "motorway-number",
+        "interstate",
+        "b-road",
+        "carriageway",
+        "interstate-number",
+        "us-limit",
+        "a-road-number",
         "miles",
     ],  # fmt: skip
 )

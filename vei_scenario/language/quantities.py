@@ -166,8 +166,8 @@ _MILES_LIMITS = frozenset({15, 25, 35, 45, 55, 65, 75})
 def miles_country(tokens: list[str]) -> bool:
     """Whether the road the text is set on is one of a country that signs speeds in mph: a British or
     American road word, a numbered road ("the M25", "the A34", "B-road", "I-95"), a limit only mph
-    has ("a 35 zone"), or a distance in miles. Why: a driver who gives a bare number ("doing about 70") gives it in the unit of
-    their road signs, and names the road far more often than the unit."""
+    has ("a 35 zone"), or a distance in miles. Why: a driver who gives a bare number ("doing about
+    70") gives it in the unit of their road signs, and names the road far more often than the unit."""
     for k, tok in enumerate(tokens):
         nxt = tokens[k + 1] if k + 1 < len(tokens) else ""
         if tok in _MILES_ROADS or tok in _MILES:
