@@ -301,8 +301,9 @@ def test_a_bare_speed_on_a_road_of_a_miles_country_is_in_mph(text, mph):
         ("On a motorway at 100, a lorry changes lane in front of the ego.", 100),
         ("At 50 on a road through town, a cyclist swerves in front of me.", 50),
         ("Doing 30 in a 30 zone, a child runs out between parked cars.", 30),
+        ("Car B 20 m ahead brakes hard, ego at 40.", 40),
     ],
-    ids=["unit-said", "unit-said-later", "motorway-unnumbered", "a-road-article", "limit-of-both"],
+    ids=["unit-said", "unit-said-later", "motorway-unnumbered", "a-road-article", "limit-of-both", "label-b"],
 )
 def test_a_bare_speed_elsewhere_stays_in_the_unit_said_or_km_h(text, kph):
     assert read(text).ego_speed_mps == pytest.approx(kph * KPH)
@@ -407,3 +408,9 @@ def test_a_stated_speed_is_kept_in_every_generated_scenario(seed):
     layers = sample_layers(read(text), text, seed)
     assert float(layers["adversaries"][0]["speed_mps"]) == pytest.approx(60 * KPH, abs=0.01)
     assert float(layers["ego"]["speed_mps"]) == pytest.approx(40 * KPH, abs=0.01)
+
+
+def test_a_participle_of_going_towards_another_keeps_its_object():
+    """ "Following lorry at 30 m": the ego follows it (the lorry is ahead), not a following lorry."""
+    r = read("Following lorry at 30 m, ego brakes hard at 60 km/h.")
+    assert [a.relation for a in r.actors] == ["ahead"]

@@ -344,6 +344,11 @@ def _acronyms_defined(text: str, known_noun=lambda phrase: None) -> str:
 _PARTICIPLE_OPENING = re.compile(r"(^|[.;!?]\s+)([a-z]+ing) ([a-z][a-z-]*)\b")
 #: Nouns of the time of day that end as participles do ("evening bus"): no participle.
 _TIME_NOUNS = frozenset({"morning", "evening"})
+#: Verbs of one road user towards another, whose participle takes the noun after it as its object
+#: ("Following lorry at 30 m, ego brakes": the ego follows it): those stay as written.
+_TOWARDS_ANOTHER = frozenset(
+    {"follow", "overtake", "approach", "pass", "tail", "chase", "lead", "trail", "meet", "see", "spot", "hit", "avoid"}
+)
 
 
 def _with_article(m: re.Match, known_noun) -> str:
@@ -351,7 +356,8 @@ def _with_article(m: re.Match, known_noun) -> str:
     ...": "a crossing car ..."): the road user's own participle, not a clause of whoever came before
     (the reader reads a sentence opening with a participle as its narrator's, "Crossing the road, I ...")."""
     start, participle, noun = m.groups()
-    if participle in _TIME_NOUNS or "VERB" not in lemmas(participle) or known_noun(noun) != noun:
+    verbs = lemmas(participle).get("VERB", ())
+    if participle in _TIME_NOUNS or not verbs or _TOWARDS_ANOTHER & set(verbs) or known_noun(noun) != noun:
         return m.group(0)
     return f"{start}a {participle} {noun}"
 

@@ -163,6 +163,14 @@ _ROAD_LETTERS = frozenset({"m", "a", "b", "i-"})
 _MILES_LIMITS = frozenset({15, 25, 35, 45, 55, 65, 75})
 
 
+#: Units of length and time after a number: a number said with one measures, it names no road.
+_MEASURES = frozenset({"m", "metres", "meters", "metre", "meter", "km", "s", "sec", "secs", "seconds", "%"})
+
+
+def _is_number(word: str) -> bool:
+    return word.replace(".", "", 1).isdigit()
+
+
 def miles_country(tokens: list[str]) -> bool:
     """Whether the road the text is set on is one of a country that signs speeds in mph: a British or
     American road word, a numbered road ("the M25", "the A34", "B-road", "I-95"), a limit only mph
@@ -172,8 +180,10 @@ def miles_country(tokens: list[str]) -> bool:
         nxt = tokens[k + 1] if k + 1 < len(tokens) else ""
         if tok in _MILES_ROADS or tok in _MILES:
             return True
-        if tok in _ROAD_LETTERS and nxt.isdigit() and not (k and tokens[k - 1].replace(".", "", 1).isdigit()):
-            # "the M25", "I-95" (not "5 m 20": metres; not "a 40": an article unless "the" stands before it)
+        measured = tokens[k + 2 : k + 3] != [] and (tokens[k + 2] in _MEASURES or tokens[k + 2] in V.SPEED_UNITS)
+        if tok in _ROAD_LETTERS and nxt.isdigit() and not measured and not (k and _is_number(tokens[k - 1])):
+            # "the M25", "I-95" (not "5 m 20": metres; not "a 40": an article unless "the" stands before it;
+            # not "car B 20 m ahead": a label, then a measure)
             if tok in ("m", "i-") or (tok == "b" and len(nxt) >= 2) or (k and tokens[k - 1] == "the"):
                 return True
         if tok == "b" and nxt in ("road", "roads"):  # ("a B-road"; "A-road" reads as "a road")
