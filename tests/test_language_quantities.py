@@ -414,3 +414,23 @@ def test_a_participle_of_going_towards_another_keeps_its_object():
     """ "Following lorry at 30 m": the ego follows it (the lorry is ahead), not a following lorry."""
     r = read("Following lorry at 30 m, ego brakes hard at 60 km/h.")
     assert [a.relation for a in r.actors] == ["ahead"]
+
+
+@pytest.mark.parametrize(
+    "text, mph",
+    [
+        ("I was doing 40ish mph when a van pulled out of a side road on my left.", 40),
+        ("A motorbike came past at 70-odd mph and cut in; I was doing 50 mph.", 50),
+        ("The ego was at 30 mph-ish when a cyclist swerved in front.", 30),
+        ("I was in the high 60s mph on the motorway when a lorry moved into my lane.", 68),
+        ("Doing the mid-40s mph, I saw a deer run out from the left.", 45),
+    ],
+    ids=["ish", "odd", "unit-ish", "high-60s", "mid-40s"],
+)
+def test_a_number_hedged_after_it_keeps_its_unit(text, mph):
+    assert read(text).ego_speed_mps == pytest.approx(mph * MPH)
+
+
+def test_an_age_in_decades_is_no_speed():
+    r = read("A man in his mid-40s steps out from behind a bus; I'm doing 30 km/h.")
+    assert r.ego_speed_mps == pytest.approx(30 * KPH) and all(a.speed_mps is None for a in r.actors)

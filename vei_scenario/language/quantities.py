@@ -79,10 +79,34 @@ _RANGE = re.compile(
 )
 
 
+_UNITS_AHEAD = r"(?=\s*(?:km/h|kph|kmh|mph|m/s|m|metres|meters)\b)"
+#: "40ish mph", "70-odd mph", "30 plus km/h": a hedge between a number and its unit.
+_HEDGED_AFTER = re.compile(r"\b(\d+(?:\.\d+)?)\s*-?\s*(?:ish|odd|plus)\b" + _UNITS_AHEAD)
+#: "30 mph-ish": a hedge on the unit.
+_UNIT_ISH = re.compile(r"\b(km/h|kph|kmh|mph|m/s)-?ish\b")
+#: "the high 60s mph", "doing the mid-40s": a speed said by its decade (an age is not: "in his mid-40s").
+_DECADE = re.compile(r"\b(?:(?:in )?the )?(low|mid|high)[- ]?([1-9])0s\b")
+_IN_DECADE = {"low": 2, "mid": 5, "high": 8}
+_SPEED_UNIT_AHEAD = re.compile(r"\s*(?:km/h|kph|kmh|mph|m/s)\b")
+
+
+def _decade(m: re.Match) -> str:
+    """ "about 68" for "the high 60s" said as a speed: with a speed unit after it, or after a verb of
+    going or "at"; else as written."""
+    before = m.string[: m.start()].split()[-1:]
+    if _SPEED_UNIT_AHEAD.match(m.string, m.end()) is None and before not in (["doing"], ["going"], ["at"]):
+        return m.group(0)
+    return f"about {int(m.group(2)) * 10 + _IN_DECADE[m.group(1)]}"
+
+
 def ranges(text: str) -> str:
     """Each range of a quantity in the normalised ``text`` as its middle, approximately ("20-30 mph":
     "about 25 mph"): a writer giving a range means a value within it, and the middle is the one that
-    errs least. "From 50 to 20 km/h" is a change of speed, not a range, and stays."""
+    errs least. "From 50 to 20 km/h" is a change of speed, not a range, and stays. A number hedged
+    after it ("40ish mph", "30 mph-ish") or said by its decade ("the high 60s mph") is about that
+    number."""
+    text = _UNIT_ISH.sub(r"\1", _HEDGED_AFTER.sub(r"about \1", text))
+    text = _DECADE.sub(_decade, text)
 
     def middle(m: re.Match) -> str:
         if not m.group(0).startswith("between") and " and" in m.group(0):
