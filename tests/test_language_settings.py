@@ -381,3 +381,19 @@ def test_a_twelve_hour_clock_of_the_first_hours_is_the_afternoons(text, clock):
 )
 def test_a_two_lane_approach_or_slip_road_counts_one_direction(text, lanes):
     assert read(text).lanes == lanes
+
+
+@pytest.mark.parametrize(
+    "text, weather",
+    [
+        ("It was teeming down when a taxi pulled out of a side road on my left.", "heavy_rain"),
+        ("The heavens opened just as a cyclist swerved in front of me.", "heavy_rain"),
+        ("Rain coming down in sheets, a bus brakes hard ahead of me.", "heavy_rain"),
+        ("It was only spitting when a van cut in front of me.", "rain"),
+        ("A proper pea-souper, a lorry ahead brakes suddenly.", "fog"),
+        ("Frosty morning; a moped skids out of a junction on the right.", "snow"),
+    ],
+    ids=["teeming-down", "heavens-opened", "in-sheets", "spitting", "pea-souper", "frosty"],
+)
+def test_weather_said_in_idioms(text, weather):
+    assert read(text).weather == weather

@@ -998,7 +998,8 @@ MAPS = {
 #: Weather words that are also colours ("a grey Audi"): before a thing's name, its colour.
 COLOURS = frozenset(("grey", "gray", "dull"))
 WEATHER = {
-    "rain": ("rain", "rainy", "raining", "wet", "drizzle", "drizzly", "drizzling", "shower", "rainfall"),
+    "rain": ("rain", "rainy", "raining", "wet", "drizzle", "drizzly", "drizzling", "shower", "rainfall", "mizzle",
+             "spitting"),  # fmt: skip
     "heavy_rain": (
         "heavy rain",
         "pouring",
@@ -1016,8 +1017,19 @@ WEATHER = {
         "tipping it down",
         "pouring it down",
         "heavy rainfall",
+        "pissing down",
+        "pissing it down",
+        "peeing down",
+        "peeing it down",
+        "teeming down",
+        "teeming it down",
+        "sheeting down",
+        "belting down",
+        "coming down in sheets",
+        "coming down in buckets",
+        "heavens opened",
     ),
-    "fog": ("fog", "foggy", "mist", "misty", "haze", "hazy"),
+    "fog": ("fog", "foggy", "mist", "misty", "haze", "hazy", "murky", "pea-souper", "pea souper"),
     "snow": (
         "snow",
         "snowy",
@@ -1030,6 +1042,9 @@ WEATHER = {
         "blizzard",
         "snowstorm",
         "flurries",
+        "frost",
+        "frosty",
+        "whiteout",
     ),
     "cloudy": ("cloudy", "overcast", "grey", "gray", "dull"),
     "clear": ("clear", "sunny", "dry", "fine", "bright"),
