@@ -998,8 +998,19 @@ MAPS = {
 #: Weather words that are also colours ("a grey Audi"): before a thing's name, its colour.
 COLOURS = frozenset(("grey", "gray", "dull"))
 WEATHER = {
-    "rain": ("rain", "rainy", "raining", "wet", "drizzle", "drizzly", "drizzling", "shower", "rainfall", "mizzle",
-             "spitting"),  # fmt: skip
+    "rain": (
+        "rain",
+        "rainy",
+        "raining",
+        "wet",
+        "drizzle",
+        "drizzly",
+        "drizzling",
+        "shower",
+        "rainfall",
+        "mizzle",
+        "spitting",
+    ),  # fmt: skip
     "heavy_rain": (
         "heavy rain",
         "pouring",
