@@ -263,3 +263,174 @@ def test_the_target_heading_a_number_is_the_road_user_already_named(text, other)
 def test_a_speed_after_a_subject_opening_its_clause_is_the_subjects(text, ego, other):
     ego_mps, others = _speeds(text)
     assert ego_mps == pytest.approx(ego * KPH) and others == [pytest.approx(other * KPH)]
+
+
+# --- the unit of a bare speed from the road it is said on -----------------------------------------------
+@pytest.mark.parametrize(
+    "text, mph",
+    [
+        ("Cruising along the M4 at about 60 when a coach pulls across into my lane.", 60),
+        ("We were doing 55 on the interstate and a pickup cut in ahead of us.", 55),
+        ("On a narrow B-road at 30, a tractor pulls out of a field on the left.", 30),
+        ("Dual carriageway, I'm at 50 in the left lane, and a van merges in front of me.", 50),
+        ("Heading north on I-5 doing 60, a motorbike weaves in front of me.", 60),
+        ("Doing about 25 in a 25 limit when a dog runs out in front of me.", 25),
+        ("Southbound on the A34 at 50, a car ahead brakes hard.", 50),
+        ("A van sat on my tail for two miles while I was doing 50, then overtook and cut in.", 50),
+    ],
+    ids=[
+        "motorway-number",
+        "interstate",
+        "b-road",
+        "carriageway",
+        "interstate-number",
+        "us-limit",
+        "a-road-number",
+        "miles",
+    ],  # fmt: skip
+)
+def test_a_bare_speed_on_a_road_of_a_miles_country_is_in_mph(text, mph):
+    assert read(text).ego_speed_mps == pytest.approx(mph * MPH)
+
+
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("On the M4 at 90 km/h, a coach pulls across into my lane.", 90),
+        ("On the freeway at 100, a car cuts in front. The car is going 110 km/h.", 100),
+        ("On a motorway at 100, a lorry changes lane in front of the ego.", 100),
+        ("At 50 on a road through town, a cyclist swerves in front of me.", 50),
+        ("Doing 30 in a 30 zone, a child runs out between parked cars.", 30),
+        ("Car B 20 m ahead brakes hard, ego at 40.", 40),
+    ],
+    ids=["unit-said", "unit-said-later", "motorway-unnumbered", "a-road-article", "limit-of-both", "label-b"],
+)
+def test_a_bare_speed_elsewhere_stays_in_the_unit_said_or_km_h(text, kph):
+    assert read(text).ego_speed_mps == pytest.approx(kph * KPH)
+
+
+# --- the ego standing still -------------------------------------------------------------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was sat at a red light when a van went into the back of me.",
+        "We were waiting at the lights and a bus clipped our rear.",
+        "Ego is stationary at a stop line; a lorry approaches from behind and fails to stop.",
+        "The claimant had stopped in a queue when the defendant's van struck the rear of her car.",
+        "A taxi hit me from behind while I was queuing at the junction.",
+    ],
+    ids=["sat", "waiting", "stationary", "had-stopped", "while-queuing"],
+)
+def test_the_ego_said_to_stand_still_starts_at_rest(text):
+    assert read(text).ego_speed_mps == 0.0
+
+
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("A child ran out from between parked cars and I was stopped just in time.", None),
+        ("I was doing 30 km/h when a van pulled out; I was stopped within a few metres.", 30),
+        ("A car in front of me is waiting at the lights, I approach at 40 km/h.", 40),
+    ],
+    ids=["stop-as-reaction", "speed-said", "someone-else-waits"],
+)
+def test_a_stop_the_ego_makes_or_anothers_wait_is_no_start_at_rest(text, kph):
+    speed = read(text).ego_speed_mps
+    assert (speed is None) if kph is None else speed == pytest.approx(kph * KPH)
+
+
+@pytest.mark.parametrize(
+    "text, relation",
+    [
+        ("I was waiting at the lights when a van in the same lane ran into my rear.", "behind"),
+        ("I was sat at a red light when a van went into the back of me.", "behind"),
+        ("We were queuing at the roundabout and a minibus drove straight into us.", "behind"),
+        ("I was waiting at the lights in my lane when the van in front pulled away.", "ahead"),
+    ],
+    ids=["ran-into-rear", "back-of-me", "drove-into-us", "pulls-away-ahead"],
+)
+def test_who_meets_the_ego_at_rest_along_its_lane_comes_from_behind(text, relation):
+    r = read(text)
+    assert r.ego_speed_mps == 0.0 and [a.relation for a in r.actors] == [relation]
+
+
+# --- a hedged speed, a bare speed after the ego's name ----------------------------------------------------
+@pytest.mark.parametrize(
+    "text, ego, other",
+    [
+        ("A van behind me overtook on the bend doing at least 70 mph and cut back in. I was at 50 mph.", 50, 70),
+        ("A motorbike going well over 60 passes me on the right, I'm doing 40 mph.", 40, 60),
+        ("A taxi cuts in at just under 50 km/h, ego at nearly 70 km/h.", 70, 50),
+    ],
+    ids=["at-least", "well-over", "just-under-nearly"],
+)
+def test_a_hedged_speed_is_read_as_the_speed(text, ego, other):
+    ego_mps, others = _speeds(text)
+    unit = MPH if "mph" in text else KPH
+    assert ego_mps == pytest.approx(ego * unit) and others == [pytest.approx(other * unit)]
+
+
+@pytest.mark.parametrize(
+    "text, ego",
+    [
+        ("Van pulls out from the left 20 m ahead, ego 60, wet road", 60),
+        ("Lane 3, ego 80 and a lorry moves over in front", 80),
+        ("Cyclist 20 km/h ahead on the right, ego 45.", 45),
+        ("SUT at 40 km/h, a pedestrian crosses from the left 15 m ahead.", 40),
+    ],
+    ids=["ego-n-comma", "ego-n-and", "ego-n-end", "sut"],
+)
+def test_a_bare_number_after_the_egos_name_is_its_speed(text, ego):
+    assert read(text).ego_speed_mps == pytest.approx(ego * KPH)
+
+
+# --- a stated speed reaches the layers ------------------------------------------------------------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("Ego at 40 km/h. Crossing car from the right runs the red at 60 km/h.", 60),
+        ("Ego 30 km/h on green. Speeding van from the left jumps the lights at 70 km/h.", 70),
+        ("Ego doing 50 km/h. Reversing lorry backs out of a yard on the left at 8 km/h.", 8),
+    ],
+    ids=["crossing-car", "speeding-van", "reversing-lorry"],
+)
+def test_a_terse_lines_participle_before_a_road_user_is_that_road_users(text, kph):
+    r = read(text)
+    assert len(r.actors) == 1 and r.actors[0].speed_mps == pytest.approx(kph * KPH)
+    assert r.ego_speed_mps != pytest.approx(kph * KPH)
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_a_stated_speed_is_kept_in_every_generated_scenario(seed):
+    from vei_scenario.language.rules_backend import sample_layers
+
+    text = "Junction with lights, ego straight on at 40 km/h. A car from the right runs the red at 60 km/h."
+    layers = sample_layers(read(text), text, seed)
+    assert float(layers["adversaries"][0]["speed_mps"]) == pytest.approx(60 * KPH, abs=0.01)
+    assert float(layers["ego"]["speed_mps"]) == pytest.approx(40 * KPH, abs=0.01)
+
+
+def test_a_participle_of_going_towards_another_keeps_its_object():
+    """ "Following lorry at 30 m": the ego follows it (the lorry is ahead), not a following lorry."""
+    r = read("Following lorry at 30 m, ego brakes hard at 60 km/h.")
+    assert [a.relation for a in r.actors] == ["ahead"]
+
+
+@pytest.mark.parametrize(
+    "text, mph",
+    [
+        ("I was doing 40ish mph when a van pulled out of a side road on my left.", 40),
+        ("A motorbike came past at 70-odd mph and cut in; I was doing 50 mph.", 50),
+        ("The ego was at 30 mph-ish when a cyclist swerved in front.", 30),
+        ("I was in the high 60s mph on the motorway when a lorry moved into my lane.", 68),
+        ("Doing the mid-40s mph, I saw a deer run out from the left.", 45),
+    ],
+    ids=["ish", "odd", "unit-ish", "high-60s", "mid-40s"],
+)
+def test_a_number_hedged_after_it_keeps_its_unit(text, mph):
+    assert read(text).ego_speed_mps == pytest.approx(mph * MPH)
+
+
+def test_an_age_in_decades_is_no_speed():
+    r = read("A man in his mid-40s steps out from behind a bus; I'm doing 30 km/h.")
+    assert r.ego_speed_mps == pytest.approx(30 * KPH) and all(a.speed_mps is None for a in r.actors)

@@ -250,3 +250,150 @@ def test_a_negated_time_word_is_not_the_time(text):
 )
 def test_a_lanes_field_is_lanes_per_direction(text, lanes):
     assert read(text).lanes == lanes
+
+
+# --- settings said in passing ------------------------------------------------------------------------------
+@pytest.mark.parametrize(
+    "text, weather",
+    [
+        ("Evening, thick fog - cyclist ahead brakes hard.", "fog"),
+        ("Half eight, sleet \u2013 taxi pulls out from the kerb on the left.", "snow"),
+        ("Drizzle \u2014 moped ahead of me slows down.", "rain"),
+    ],
+    ids=["hyphen", "en-dash", "em-dash"],
+)
+def test_a_setting_before_a_spaced_dash_is_not_a_road_users_kind(text, weather):
+    assert read(text).weather == weather
+
+
+def test_a_time_before_a_spaced_dash_is_the_time():
+    assert read("Snowy night \u2014 minibus ahead brakes hard.").time == "23:00"
+
+
+@pytest.mark.parametrize(
+    "text, weather",
+    [
+        ("grey van ahead brakes hard | clear, morning", "clear"),
+        ("Ego 50 km/h, grey saloon cuts in from the left, clear skies", "clear"),
+        ("gray pickup turns across the ego at the junction, dry and sunny", "clear"),
+        ("Grey, drizzly morning. A van brakes hard ahead.", "rain"),
+        ("Grey sky, a van brakes hard ahead.", "cloudy"),
+    ],
+    ids=["bar-line", "after-comma", "gray", "grey-day", "grey-sky"],
+)
+def test_a_colour_right_before_a_road_user_is_its_colour_not_the_sky(text, weather):
+    assert read(text).weather == weather
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Taking a tight left-hander at 40 km/h when a motorbike comes the other way on my side.",
+        "A van stopped just past a right-hander, I brake hard.",
+        "Halfway round a sharp right hander a cyclist is in the middle of my lane.",
+    ],
+    ids=["left-hander", "right-hander", "spaced"],
+)
+def test_a_left_or_right_hander_is_a_bend(text):
+    assert read(text).map_kind == "curve"
+
+
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("A taxi ahead suddenly makes a left onto Elm Avenue and I have to brake.", "crossroad"),
+        ("The bus in front takes a right into 3rd Street.", "crossroad"),
+        ("A cyclist in front of me hangs a left onto the main road.", "crossroad"),
+        ("A car in front of me moves onto the hard shoulder and stops.", None),
+    ],
+    ids=["make-a-left-onto", "take-a-right-into", "onto-the-main-road", "hard-shoulder"],
+)
+def test_a_turn_onto_a_road_is_at_a_junction(text, kind):
+    assert read(text).map_kind == kind
+
+
+@pytest.mark.parametrize(
+    "text, lanes",
+    [
+        ("I'm in lane 3 when a car ahead brakes hard.", 3),
+        ("A van in lane two drifts into my lane.", 2),
+        ("Ego in the middle lane, a car on the left cuts in.", 3),
+        ("Lane 2 of 4, a lorry changes lane in front of me.", 4),
+    ],
+    ids=["lane-3", "lane-two", "middle-lane", "lane-of"],
+)
+def test_a_numbered_or_middle_lane_needs_that_many_lanes(text, lanes):
+    assert read(text).lanes == lanes
+
+
+@pytest.mark.parametrize(
+    "text, weather",
+    [
+        ("Light rain ended about 10 minutes before the run, sky overcast. A van brakes ahead of me.", "cloudy"),
+        ("It had stopped raining by then; a cyclist swerves in front of me.", None),
+        ("The fog had lifted, bright sunshine now; a bus pulls out on the left.", "clear"),
+        ("Rain. A van brakes ahead of me and stopped.", "rain"),
+    ],
+    ids=["rain-ended", "stopped-raining", "fog-lifted", "the-van-stopped"],
+)
+def test_a_weather_said_to_have_ended_is_not_the_weather(text, weather):
+    assert read(text).weather == weather
+
+
+@pytest.mark.parametrize(
+    "text, density",
+    [
+        ("Sunny afternoon, traffic moderate. A car cuts in front of me.", "moderate"),
+        ("Traffic heavy, dusk. A car cuts in front of me.", "heavy"),
+        ("Weather: dry. Traffic: light. A van pulls out ahead.", "light"),
+        ("A car runs the traffic light in front of me.", None),
+    ],
+    ids=["traffic-moderate", "traffic-heavy", "traffic-colon", "traffic-light-signal"],
+)
+def test_traffic_noted_with_its_value_after_it(text, density):
+    assert read(text).density == density
+
+
+@pytest.mark.parametrize(
+    "text, clock",
+    [
+        ("Outside the school at 3:15, a child runs out in front of me.", "15:15"),
+        ("At 5:40 a van pulled out of a side road on my left.", "17:40"),
+        ("At 5:30 in the morning a van pulled out on me.", "06:00"),
+        ("At 03:15 a van pulled out on me.", "03:15"),
+        ("At 2:30 at night a van pulled out on me.", "02:30"),
+        ("At 9:40 a van pulled out on me.", "09:40"),
+    ],
+    ids=["school-3-15", "5-40", "morning-said", "two-digit-hour", "night-said", "morning-hour"],
+)
+def test_a_twelve_hour_clock_of_the_first_hours_is_the_afternoons(text, clock):
+    assert read(text).time == clock
+
+
+@pytest.mark.parametrize(
+    "text, lanes",
+    [
+        ("On the two-lane approach to the roundabout, a van in the left lane cuts across me.", 2),
+        ("Coming down a two-lane slip road, a lorry on my right moves over.", 2),
+        ("A two-lane road through a village, a tractor comes the other way.", 1),
+    ],
+    ids=["approach", "slip-road", "village-road"],
+)
+def test_a_two_lane_approach_or_slip_road_counts_one_direction(text, lanes):
+    assert read(text).lanes == lanes
+
+
+@pytest.mark.parametrize(
+    "text, weather",
+    [
+        ("It was teeming down when a taxi pulled out of a side road on my left.", "heavy_rain"),
+        ("The heavens opened just as a cyclist swerved in front of me.", "heavy_rain"),
+        ("Rain coming down in sheets, a bus brakes hard ahead of me.", "heavy_rain"),
+        ("It was only spitting when a van cut in front of me.", "rain"),
+        ("A proper pea-souper, a lorry ahead brakes suddenly.", "fog"),
+        ("Frosty morning; a moped skids out of a junction on the right.", "snow"),
+    ],
+    ids=["teeming-down", "heavens-opened", "in-sheets", "spitting", "pea-souper", "frosty"],
+)
+def test_weather_said_in_idioms(text, weather):
+    assert read(text).weather == weather

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import re
 
-from vei_scenario.language.lemmas import english
+from vei_scenario.language.lemmas import english, lemmas
 
 _ONES = {
     "zero": 0, "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8,
@@ -364,6 +364,28 @@ def _acronyms_defined(text: str, known_noun=lambda phrase: None) -> str:
     return text
 
 
+#: A sentence opening with a participle right before a noun ("Crossing car from the right runs the red").
+_PARTICIPLE_OPENING = re.compile(r"(^|[.;!?]\s+)([a-z]+ing) ([a-z][a-z-]*)\b")
+#: Nouns of the time of day that end as participles do ("evening bus"): no participle.
+_TIME_NOUNS = frozenset({"morning", "evening"})
+#: Verbs of one road user towards another, whose participle takes the noun after it as its object
+#: ("Following lorry at 30 m, ego brakes": the ego follows it): those stay as written.
+_TOWARDS_ANOTHER = frozenset(
+    {"follow", "overtake", "approach", "pass", "tail", "chase", "lead", "trail", "meet", "see", "spot", "hit", "avoid"}
+)
+
+
+def _with_article(m: re.Match, known_noun) -> str:
+    """A terse line's participle before a road user's noun with its article restored ("crossing car
+    ...": "a crossing car ..."): the road user's own participle, not a clause of whoever came before
+    (the reader reads a sentence opening with a participle as its narrator's, "Crossing the road, I ...")."""
+    start, participle, noun = m.groups()
+    verbs = lemmas(participle).get("VERB", ())
+    if participle in _TIME_NOUNS or not verbs or _TOWARDS_ANOTHER & set(verbs) or known_noun(noun) != noun:
+        return m.group(0)
+    return f"{start}a {participle} {noun}"
+
+
 def normalise(text: str, known_noun=lambda phrase: None) -> str:
     """``text`` (lowercased) with numbers in words, units, and the parties of a statement said the
     way the reader reads them. ``known_noun(phrase)`` returns the road-user noun a phrase ends in,
@@ -372,6 +394,8 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     text = re.sub(r"^\s*(?:[-*\u2022\u00b7\u2013]|\d{1,2}[.)])\s+", "", text)
     text = re.sub(r"\s*\n\s*(?:(?:[-*\u2022\u00b7\u2013]|\d{1,2}[.)])\s+)?", ". ", text)
     text = re.sub(r"\s*\|\s*|\s+/\s+", ". ", text)  # fields between bars or spaced slashes: one a sentence
+    # a spaced dash between words ("light rain - delivery truck ..."): a break in the sentence, as a comma is
+    text = re.sub(r"(?<=[^\W\d_])\s+[-\u2013\u2014]\s+(?=[^\W\d_])", ", ", text)
     text = re.sub(r"(\d)\s*([ap])\.\s?m\.?", r"\1 \2m", text)  # "6 a.m.": "6 am" (no sentence ends there)
     text = re.sub(r"(\d)([ap]m)\b", r"\1 \2", text)  # "6pm": "6 pm"
     # the reader addressed ("you're doing 50 km/h", "your lane", "you brake hard"): the ego, as "I" is
@@ -384,6 +408,7 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
         text,
     )
     text = _acronyms_defined(text, known_noun)
+    text = _PARTICIPLE_OPENING.sub(lambda m: _with_article(m, known_noun), text)
     for pattern, repl in _SHORTHAND:
         text = pattern.sub(repl, text)
     text = _FOUR_DIGIT_CLOCK.sub(r"\1:\2", text)

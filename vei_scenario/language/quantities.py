@@ -36,7 +36,25 @@ ROLE_NOUNS = frozenset({"target", "other vehicle"})
 #: Nouns that head a speed ("van speed 60 km/h", "speed of the bus 15 km/h").
 SPEED_HEADS = frozenset({"speed", "velocity"})
 #: Words between a head and its number that carry nothing ("speed is about 20", "speed of ~20").
-_LINKS = frozenset({"about", "is", "was", "of", "at", "=", "approximately", "around", "roughly", "ca", "circa"})
+_LINKS = frozenset({"about", "is", "was", "of", "at", "=", "approximately", "around", "roughly", "ca", "circa"}) | {
+    "least", "most", "over", "under", "nearly", "almost", "well", "easily", "maybe", "like", "just", "only"
+}  # fmt: skip
+#: Words that bound or hedge a number ("at least 70", "well over 60", "nearly 50", "just under 30"): the
+#: number is still the speed the words before them say.
+APPROXIMATORS = frozenset(
+    {"least", "most", "over", "under", "nearly", "almost", "well", "easily", "maybe", "like", "just", "only"}
+)
+
+
+def before_hedge(tokens: list[str], i: int) -> str:
+    """The word before the number at ``i`` past its hedge ("doing at least 70": "at"; "going well
+    over 60": "going"), the plain word before it where there is none."""
+    k = i - 1
+    while k > 0 and tokens[k] in APPROXIMATORS:
+        k -= 1
+    return tokens[k] if k >= 0 else ""
+
+
 _STOPS = frozenset({".", ";", "!", "?"})
 #: Verbs of going whose subject a speed after "at" is said of ("the ego drives at 40 km/h").
 _MOTION = frozenset(
@@ -61,10 +79,34 @@ _RANGE = re.compile(
 )
 
 
+_UNITS_AHEAD = r"(?=\s*(?:km/h|kph|kmh|mph|m/s|m|metres|meters)\b)"
+#: "40ish mph", "70-odd mph", "30 plus km/h": a hedge between a number and its unit.
+_HEDGED_AFTER = re.compile(r"\b(\d+(?:\.\d+)?)\s*-?\s*(?:ish|odd|plus)\b" + _UNITS_AHEAD)
+#: "30 mph-ish": a hedge on the unit.
+_UNIT_ISH = re.compile(r"\b(km/h|kph|kmh|mph|m/s)-?ish\b")
+#: "the high 60s mph", "doing the mid-40s": a speed said by its decade (an age is not: "in his mid-40s").
+_DECADE = re.compile(r"\b(?:(?:in )?the )?(low|mid|high)[- ]?([1-9])0s\b")
+_IN_DECADE = {"low": 2, "mid": 5, "high": 8}
+_SPEED_UNIT_AHEAD = re.compile(r"\s*(?:km/h|kph|kmh|mph|m/s)\b")
+
+
+def _decade(m: re.Match) -> str:
+    """ "about 68" for "the high 60s" said as a speed: with a speed unit after it, or after a verb of
+    going or "at"; else as written."""
+    before = m.string[: m.start()].split()[-1:]
+    if _SPEED_UNIT_AHEAD.match(m.string, m.end()) is None and before not in (["doing"], ["going"], ["at"]):
+        return m.group(0)
+    return f"about {int(m.group(2)) * 10 + _IN_DECADE[m.group(1)]}"
+
+
 def ranges(text: str) -> str:
     """Each range of a quantity in the normalised ``text`` as its middle, approximately ("20-30 mph":
     "about 25 mph"): a writer giving a range means a value within it, and the middle is the one that
-    errs least. "From 50 to 20 km/h" is a change of speed, not a range, and stays."""
+    errs least. "From 50 to 20 km/h" is a change of speed, not a range, and stays. A number hedged
+    after it ("40ish mph", "30 mph-ish") or said by its decade ("the high 60s mph") is about that
+    number."""
+    text = _UNIT_ISH.sub(r"\1", _HEDGED_AFTER.sub(r"about \1", text))
+    text = _DECADE.sub(_decade, text)
 
     def middle(m: re.Match) -> str:
         if not m.group(0).startswith("between") and " and" in m.group(0):
@@ -104,23 +146,75 @@ def after_at(tokens: list[str], i: int) -> bool:
     return i >= 3 and tokens[i - 2] in _ARTICLES and tokens[i - 3] in ("at", "doing") and tokens[i - 1].isalpha()
 
 
+#: Words after which a number ends its note ("ego 50, ...", "ego 50 and a van ...").
+_NOTE_ENDS = frozenset({"", ".", ",", ";", "!", "?", "and", "then", "when", "while", "but", ")"})
+
+
+def after_ego(tokens: list[str], i: int) -> bool:
+    """Whether the bare number at ``i`` stands right after the ego's name and ends its note ("..., ego
+    50", "SUT 40, cyclist ..."): the ego's speed, as "cyclist 15 km/h" is the cyclist's. (Only the
+    ego's: "Vehicle 2." or "lane 3," name things by a number.)"""
+    nxt = tokens[i + 1] if i + 1 < len(tokens) else ""
+    return i >= 1 and tokens[i - 1] == "ego" and nxt in _NOTE_ENDS
+
+
 #: ``mention_ending_at(k)``: the start of the road-user (or ego) mention whose last word is token ``k``.
 Mentions = Callable[[int], "int | None"]
 
 
 def carried_unit(tokens: list[str], i: int) -> float:
     """The factor to m/s of a bare speed at ``i`` ("I'm at 50"): the unit of the last speed said with
-    one before it, else of the first said after it in its sentence, else km/h (the unit of a test
-    engineer who gives none)."""
+    one before it, else of the first said after it, else mph on a road of a country that signs miles
+    (:func:`miles_country`), else km/h (the unit of a test engineer who gives none)."""
     for k in range(i - 1, 0, -1):
         if tokens[k] in V.SPEED_UNITS and tokens[k - 1].replace(".", "", 1).isdigit():
             return V.SPEED_UNITS[tokens[k]]
-    for k in range(i + 1, len(tokens)):  # none before: the one said after it in its sentence ("at 30 and ... 20 mph")
-        if tokens[k] in _STOPS:
-            break
+    for k in range(i + 1, len(tokens)):  # none before: the one said after it ("at 30 and ... 20 mph")
         if tokens[k] in V.SPEED_UNITS and tokens[k - 1].replace(".", "", 1).isdigit():
             return V.SPEED_UNITS[tokens[k]]
-    return 1 / 3.6
+    return V.SPEED_UNITS["mph"] if miles_country(tokens) else 1 / 3.6
+
+
+#: Roads only countries that sign speeds in miles per hour have: the British "carriageway" and the
+#: American interstate, freeway and turnpike. ("Motorway" and "highway" are said where km/h is signed too.)
+_MILES_ROADS = frozenset({"carriageway", "carriageways", "interstate", "freeway", "freeways", "turnpike"})
+#: Distances in miles ("for a mile", "two miles back"): a writer who measures the road in miles reads
+#: its speeds in miles per hour.
+_MILES = frozenset({"mile", "miles"})
+#: Letters of numbered roads in Britain (M6, A34, B1234) and the United States (I-95), as tokens.
+_ROAD_LETTERS = frozenset({"m", "a", "b", "i-"})
+#: Speed limits only miles per hour have (25, 35, 45, 55, 65 mph); km/h limits are multiples of ten.
+_MILES_LIMITS = frozenset({15, 25, 35, 45, 55, 65, 75})
+
+
+#: Units of length and time after a number: a number said with one measures, it names no road.
+_MEASURES = frozenset({"m", "metres", "meters", "metre", "meter", "km", "s", "sec", "secs", "seconds", "%"})
+
+
+def _is_number(word: str) -> bool:
+    return word.replace(".", "", 1).isdigit()
+
+
+def miles_country(tokens: list[str]) -> bool:
+    """Whether the road the text is set on is one of a country that signs speeds in mph: a British or
+    American road word, a numbered road ("the M25", "the A34", "B-road", "I-95"), a limit only mph
+    has ("a 35 zone"), or a distance in miles. Why: a driver who gives a bare number ("doing about
+    70") gives it in the unit of their road signs, and names the road far more often than the unit."""
+    for k, tok in enumerate(tokens):
+        nxt = tokens[k + 1] if k + 1 < len(tokens) else ""
+        if tok in _MILES_ROADS or tok in _MILES:
+            return True
+        measured = tokens[k + 2 : k + 3] != [] and (tokens[k + 2] in _MEASURES or tokens[k + 2] in V.SPEED_UNITS)
+        if tok in _ROAD_LETTERS and nxt.isdigit() and not measured and not (k and _is_number(tokens[k - 1])):
+            # "the M25", "I-95" (not "5 m 20": metres; not "a 40": an article unless "the" stands before it;
+            # not "car B 20 m ahead": a label, then a measure)
+            if tok in ("m", "i-") or (tok == "b" and len(nxt) >= 2) or (k and tokens[k - 1] == "the"):
+                return True
+        if tok == "b" and nxt in ("road", "roads"):  # ("a B-road"; "A-road" reads as "a road")
+            return True
+        if tok.isdigit() and int(tok) in _MILES_LIMITS and nxt in ("limit", "zone"):
+            return True
+    return False
 
 
 def lateral(tokens: list[str], i: int, used: int) -> bool:
@@ -168,7 +262,7 @@ def owners(
             k -= 1
         if k >= 1 and tokens[k] == "of" and tokens[k - 1] in SPEED_HEADS:  # "speed of the bus 15 km/h"
             return (owner,)
-        if j == i - 1 and unit:  # "cyclist 15 km/h": said of the noun it stands after
+        if j == i - 1 and (unit or after_ego(tokens, i)):  # "cyclist 15 km/h", "ego 50": of the noun before it
             return (owner,)
         if unit and tokens[j + 1] == "at" and (k < 0 or tokens[k] in _CLAUSE_OPENERS):
             return (owner,)  # "the van at 60 km/h overtakes ...": said of the subject opening its clause
@@ -214,3 +308,49 @@ def _key_of_line(tokens: list[str], i: int, mention_ending_at: Mentions) -> tupl
     if key is None or any(mention_ending_at(k) is not None for k in range(colon + 1, i)):
         return ()
     return (key,)
+
+
+#: Words that say a road user stands still ("was stationary", "were waiting", "sat at a red light").
+STILL_WORDS = frozenset(
+    "stationary stopped parked waiting queuing queueing queued sat sitting idling halted".split() + ["at a standstill"]
+)
+#: Words before a still word that make it a state the subject is in, not a stop it makes ("was stopped",
+#: "had stopped", "were still waiting"); a stop said as an event ("I stopped just short") is a reaction.
+_STATE_BEFORE = _AUXILIARIES | {"had", "have", "has", "already", "patiently"}
+#: Conjunctions that make a clause the background of what happens ("... while I was queuing").
+_BACKGROUND = frozenset({"while", "whilst", "as", "when"})
+
+
+def ego_at_rest(clauses) -> bool:
+    """Whether the ego is said to stand still as the scene opens: the ego, then a state of standing
+    ("was stationary", "were waiting at the lights", "had stopped in a queue"), said before anyone does
+    anything or as the background of what they do ("... while I was queuing"). Why: the one struck
+    while waiting is a common report, and a stop the ego makes in reply ("... and I was stopped just
+    in time") is no start at rest. ``clauses``: the reader's (link, mentions)."""
+    acted = False
+    for _, mentions in clauses:
+        said = [
+            m for m in mentions if m.slot not in ("punct", "conj") and not (m.slot == "ego_verb" and m.value is None)
+        ]
+        for k, m in enumerate(said):
+            if m.slot == "behaviour":
+                acted = True
+            if m.words not in STILL_WORDS or m.slot not in ("stationary", "unknown_verb") or not k:
+                continue
+            ego = said[k - 1]
+            if ego.slot == "actor" and ego.value == "ego" and m.prev in _STATE_BEFORE:
+                if not acted or ego.prev in _BACKGROUND:
+                    return True
+    return False
+
+
+def struck_at_rest(actors, ego_speed_mps: float | None, intent: str | None) -> None:
+    """Each road user read as going along the ego's lane (ahead, or nowhere said) that meets the ego at
+    rest comes from behind it: one ahead going the same way never reaches a standing ego. ``actors``:
+    the reading's specs; ``intent``: the outcome read (a collision or a near miss is a meeting)."""
+    if ego_speed_mps != 0.0 or intent not in ("collision", "near_miss"):
+        return
+    for a in actors:
+        going = [b[0] for b in a.behaviours] in ([], ["keep_going"]) and a.speed_mps != 0.0
+        if going and a.relation in (None, "ahead"):
+            a.relation = "behind"

@@ -472,13 +472,16 @@ def _number(tokens: list[str], i: int) -> tuple[str, float, int] | None:
     if nxt in ("lanes", "lane") or (nxt == "-" and i + 2 < len(tokens) and tokens[i + 2] in ("lane", "lanes")):
         if value == int(value) and 1 <= value <= 8:  # "3 lanes", "a 2-lane road": lanes a direction
             return "lanes", int(value), 2 if nxt != "-" else 3
-    prev = tokens[i - 1] if i > 0 else ""
-    to_changed = prev == "to" and _changes_speed_before(tokens, i - 1)  # ("speeds up to 80": the speed it reaches)
+    prev = Q.before_hedge(tokens, i) if i > 0 else ""  # ("doing at least 70", "going well over 60")
+    to_changed = tokens[i - 1] == "to" and _changes_speed_before(
+        tokens, i - 1
+    )  # ("speeds up to 80": the speed it reaches)
     if (prev in ("at", "doing", "about", "around", "of") or to_changed or Q.after_at(tokens, i)) and 3 <= value <= 250:
         # "at 120", "at a steady 50": in the unit said before
         return "speed", value * Q.carried_unit(tokens, i), 1
     ends = nxt in ("", ".", ",", ";", "!", "?", "and", "then", "when", "while", "but")
-    if prev in _MOTION_BEFORE_SPEED and 3 <= value <= 250 and ends:  # "Ego goes 50, ...": km/h
+    hedged = prev != tokens[i - 1]  # ("going well over 60 passes me": a speed, however the clause goes on)
+    if (prev in _MOTION_BEFORE_SPEED or Q.after_ego(tokens, i)) and 3 <= value <= 250 and (ends or hedged):
         return "speed", value * Q.carried_unit(tokens, i), 1
     return "unknown", value, 1
 
@@ -661,14 +664,19 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
             i += 1
             continue
         slot, value = TABLE[key]
-        if slot in ("weather", "time", "density") and S.negated(tokens, i):
+        if slot in ("weather", "time", "density") and (
+            S.negated(tokens, i) or (slot == "weather" and S.ended(tokens, i, len(key)))
+        ):
             ignored.extend(tokens[i : i + len(key)])  # ("no rain, clear skies", "it wasn't dark yet"): denied
             i += len(key)
             continue
         before = tokens[i - 1] if i else ""
         attributive = before in _DETERMINERS or (before.isalpha() and before not in FUNCTION_WORDS)
-        if slot == "weather" and key[-1] in L.COLOURS and before in _DETERMINERS and _names_a_thing(tokens, i + 1):
-            # "a grey Audi", "the grey one": the colour of something, not the sky
+        if (
+            slot == "weather"
+            and key[-1] in L.COLOURS
+            and ((before in _DETERMINERS and _names_a_thing(tokens, i + 1)) or _actor_at(tokens, i + 1))
+        ):  # "a grey Audi", "the grey one", "grey van ahead brakes": the colour of something, not the sky
             ignored.extend(key)
             i += len(key)
             continue
@@ -1543,6 +1551,8 @@ def read(text: str) -> Reading:
         a.lane_side = sides.beside(a.lane_side, r.ego_relation)
     if both_with_ego and r.ego_speed_mps is None and actors and actors[0].speed_mps is not None:
         r.ego_speed_mps = actors[0].speed_mps  # (the speed said of both)
+    if r.ego_speed_mps is None and Q.ego_at_rest(clauses):
+        r.ego_speed_mps = 0.0  # ("I was sat at the lights when ..."): the ego stands still
     ignored += unplaced
     if len(actors) > MAX_ACTORS:
         raise NotUnderstood([f"{len(actors)} road users (a scenario holds at most {MAX_ACTORS} besides the ego)"], text)
@@ -1740,9 +1750,11 @@ def read(text: str) -> Reading:
     r.ignored = [w for w in r.ignored if w not in told]
     if r.intent is None and not r.actors:
         r.intent = "safe"  # (nobody but the ego: nothing it could meet)
+    Q.struck_at_rest(r.actors, r.ego_speed_mps, r.intent)  # ("I was waiting at the lights when a van hit me")
     r.lanes = stated_lanes(said) or r.lanes
     oncoming = any(s.relation == "oncoming" or any(b[0] == "wrong_way" for b in s.behaviours) for s in r.actors)
     r.lanes = S.lanes_of_two_way_road(said, oncoming) or S.lanes_counted(said) or r.lanes
+    r.lanes = max(r.lanes or 0, S.lanes_at_least(said) or 0) or r.lanes  # ("in lane 3": three at least)
     said_as = [
         (m.slot, m.words, m.value)
         for _, ms in clauses
@@ -1750,6 +1762,7 @@ def read(text: str) -> Reading:
         if m.slot == "weather" or (m.slot == "time" and m.prev not in S.BOUNDS)  # (not "since midnight")
     ]
     clock = S.dotted_clock(S.without_bounds(said)) or stated_clock(S.without_bounds(said))
+    clock = S.twelve_hour(clock, S.without_bounds(said), [v for k, w, v in said_as if k == "time"])
     r.time = S.time_of_day([(w, v) for k, w, v in said_as if k == "time"], clock) or r.time
     r.weather = S.sky_over_surface([(w, v) for k, w, v in said_as if k == "weather"]) or r.weather or S.sunny(said)
     r.density = S.density(said) or stated_density(said) or r.density

@@ -138,6 +138,8 @@ def sample_layers(reading: Reading, text: str, seed: int) -> dict:
         given_speed = spec.speed_mps
         if given_speed is not None and given_speed < 0:  # a speed word: a factor on the default speed
             given_speed = _default_speed(spec.kind, relation, ego_speed) * -given_speed
+        if given_speed is None and ego_speed == 0.0 and relation == "behind" and not vulnerable(spec.kind):
+            given_speed = _u(rng, lo, hi)  # (coming up behind an ego at rest: at the road's pace, not the ego's)
         if given_speed is None and first.NAME == "wrong_way":
             given_speed = min(_u(rng, 10.0, 20.0), TYPES[spec.kind][3])  # (a rider within its own top speed)
         if given_speed is None and relation in ("junction_left", "junction_right") and first.NAME not in WAITING:

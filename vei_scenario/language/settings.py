@@ -55,6 +55,20 @@ def negated(tokens: list[str], i: int) -> bool:
     return k >= 0 and tokens[k] in NEGATORS
 
 
+#: Verbs that end a weather ("the rain had stopped", "light rain ended", "stopped raining"): what has
+#: ended is not the weather the scene is in.
+ENDING_VERBS = frozenset({"ended", "stopped", "cleared", "ceased", "eased", "finished", "passed", "lifted"})
+
+
+def ended(tokens: list[str], i: int, n: int) -> bool:
+    """Whether the weather word at ``i`` (``n`` words) is said to have ended: an ending verb right
+    after it (past "had", "has", "just") or right before it ("had stopped raining")."""
+    k = i + n
+    while k < len(tokens) and tokens[k] in ("had", "has", "just", "already", "finally"):
+        k += 1
+    return (k < len(tokens) and tokens[k] in ENDING_VERBS) or (i > 0 and tokens[i - 1] in ENDING_VERBS)
+
+
 #: Prepositions, a closed class: a compound starting with one modifies ("in-car commentary").
 _PREPOSITIONS = frozenset("in on off out over under up down by through inside outside within after non".split())
 
@@ -96,6 +110,30 @@ def time_of_day(said: list[tuple[str, str]], clock: str | None) -> str | None:
     if after <= CLOCK_SLACK_H:
         return f"{last:02d}:00"
     return clock
+
+
+#: A clock with a one-digit hour of the afternoon's first hours and no half of the day said ("at 3:15",
+#: in the reader's tokens "3 : 15"): a twelve-hour clock, as people write one.
+_TWELVE_HOUR = re.compile(r"(?<![\d:] )(?<!\d)\b([1-6]) : [0-5]\d\b(?! (?:am|pm|hrs|hours|h)\b)")
+
+
+def twelve_hour(clock: str | None, said: str, parts: list[str]) -> str | None:
+    """``clock`` read as the afternoon's where it is written as people write a twelve-hour clock ("at
+    3:15") and no part of the day said beside it puts it in the small hours or the morning (``parts``:
+    the clocks of the parts of the day said): a driver outside a school at 3:15 means 15:15."""
+    if clock is None or _TWELVE_HOUR.search(said) is None or int(clock[:2]) > 6:
+        return clock
+    hour, pm = int(clock[:2]), int(clock[:2]) + 12
+    for part in parts:
+        if part in PART_OF_DAY_HOURS and (not _within(pm, part) or _within(hour, part)):
+            return clock
+    return f"{pm:02d}{clock[2:]}"
+
+
+def _within(hour: int, part: str) -> bool:
+    """Whether ``hour`` lies in the part of the day whose lexicon clock is ``part``."""
+    first, last = PART_OF_DAY_HOURS[part]
+    return first <= hour <= last if first <= last else (hour >= first or hour <= last)
 
 
 #: Words before a time that make it a bound of something else ("raining since midnight", "off until 6 pm"),
@@ -143,12 +181,26 @@ _FEW_OTHERS = re.compile(
 )
 
 
+#: "traffic moderate", "traffic: heavy", "traffic = light": a note of the traffic, its value after it
+#: (not "traffic light", a signal, unless a colon or equals sign says it is a value).
+_TRAFFIC_NOTE = re.compile(
+    r"\btraffic(?: (moderate|heavy|busy|dense|sparse|quiet)"
+    r"| ?[:=] ?(light|moderate|heavy|busy|dense|sparse|quiet|none))\b"
+)
+_NOTED = {"moderate": "moderate", "heavy": "heavy", "busy": "heavy", "dense": "heavy", "sparse": "light",
+          "quiet": "light", "light": "light", "none": "none"}  # fmt: skip
+
+
 def density(said: str) -> str | None:
     """Background traffic said as a quantity of other road users: none ("not another car about"), light
-    ("barely any traffic", "only a handful of cars"), or None where the text says neither."""
+    ("barely any traffic", "only a handful of cars"), or as a note ("traffic moderate"); None where the
+    text says none of these."""
     if no_other_traffic(said):
         return "none"
-    return "light" if _FEW_OTHERS.search(said) else None
+    if _FEW_OTHERS.search(said):
+        return "light"
+    note = _TRAFFIC_NOTE.search(said)
+    return None if note is None else _NOTED[note.group(1) or note.group(2)]
 
 
 #: The sun or a blue sky said ("blue skies", "the sun was out", "sunshine", "low sun glare"): clear.
@@ -214,17 +266,39 @@ def lanes_of_two_way_road(said: str, oncoming: bool) -> int | None:
     return 1 if oncoming or _TWO_WAY.search(said) else None
 
 
-#: A turn into a road: a side road or street, or one named ("into Church Lane", "into Park Road").
-_INTO_SIDE_ROAD = re.compile(
-    r"\bturn(?:s|ed|ing)?(?: (?:left|right|off))? into (?:a |the |one of the )?side[ -]?(?:roads?|streets?)\b"
+#: A turn into or onto a road: said with the verb "turn" ("turns left into") or as a turn made, taken or
+#: hung ("makes a right onto", "hangs a left into").
+_TURN = (
+    r"(?:turn(?:s|ed|ing)?(?: (?:left|right|off))?"
+    r"|(?:makes?|making|made|takes?|taking|took|hangs?|hanging|hung) a (?:left|right))"
 )
+#: A side road or street, or the main road (what one turns onto from a side road).
+_INTO_SIDE_ROAD = re.compile(
+    rf"\b{_TURN} (?:in|on)to (?:a |the |one of the )?(?:side[ -]?(?:roads?|streets?)|main road)\b"
+)
+#: A road named ("into Church Lane", "onto 9th St"): capitalised or numbered words before a road's noun.
 _INTO_NAMED_ROAD = re.compile(
-    r"\b[Tt]urn(?:s|ed|ing)?(?: (?:left|right|off))? into (?:[A-Z][\w']+ )+"
-    r"(?:Road|Lane|Street|Avenue|Close|Drive|Way|Grove|Crescent|Place|Terrace|Rd|St|Ave)\b"
+    rf"\b(?i:{_TURN}) (?:in|on)to (?:[A-Z0-9][\w']* )+"
+    r"(?:Road|Lane|Street|Avenue|Close|Drive|Way|Grove|Crescent|Place|Terrace|Boulevard|Rd|St|Ave|Blvd)\b"
 )
 
 
 def turns_into_a_road(text: str, said: str) -> bool:
-    """Whether someone turns into a road (a side road, or one named in the original ``text``): the road
-    has a junction there."""
+    """Whether someone turns into or onto a road (a side road, the main road, or one named in the
+    original ``text``): the road has a junction there."""
     return _INTO_SIDE_ROAD.search(said) is not None or _INTO_NAMED_ROAD.search(text) is not None
+
+
+#: "lane 3", "lane two" (not "lane 2 of 3", which counts the lanes itself): a lane numbered from the kerb.
+_LANE_NUMBER = re.compile(r"\blane " + _N + r"\b(?! of)")
+#: "the middle lane", "the centre lane": a lane with one on each side.
+_MIDDLE_LANE = re.compile(r"\b(?:middle|centre|center) lane\b")
+
+
+def lanes_at_least(said: str) -> int | None:
+    """The fewest lanes a direction has for the lanes the normalised text names: a lane numbered N
+    ("in lane 3") needs N, a middle lane three; None where it names neither. Why: a writer who puts
+    someone in lane 3 or the middle lane seldom also counts the lanes."""
+    numbers = [int(w) if w.isdigit() else _WORD[w] for w in _LANE_NUMBER.findall(said)]
+    fewest = max([n for n in numbers if 1 <= n <= 6] + [3 if _MIDDLE_LANE.search(said) else 0])
+    return fewest or None

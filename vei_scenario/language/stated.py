@@ -24,7 +24,10 @@ _OF_N = re.compile(
 _ONE_WAY = re.compile(r"\bone[ -]way (?:street|road)[^.;]{0,25}?\b" + _N + r" lanes\b")
 #: A road "two-lane" with traffic both ways: one lane each way (unless it is a motorway, dual carriageway or
 #: roundabout, which traffic uses one way).
-_TWO_LANE_ROAD = re.compile(r"\b(?:two|2)[ -]lane (?!motorway|highway|freeway|expressway|dual|roundabout)")
+_TWO_LANE_ROAD = re.compile(
+    r"\b(?:two|2)[ -]lane (?!motorway|highway|freeway|expressway|dual|roundabout|approach|slip|exit|entry|on-ramp"
+    r"|off-ramp|ramp|carriageway)"
+)  # (an approach, a slip road, a ramp, a carriageway: one direction's lanes)
 _DIVIDED = re.compile(r"\b(?:motorway|highway|freeway|expressway|autobahn|dual carriageway|one[ -]way)\b")
 
 
