@@ -51,6 +51,7 @@ from vei_scenario.language.ncap import rewrite as ncap_rewrite
 from vei_scenario.language.normalise import normalise
 from vei_scenario.language.outcome import decide, outcome_cues
 from vei_scenario.language.reading import ActorSpec, NotUnderstood, Reading
+from vei_scenario.language.route import ego_route
 from vei_scenario.language.stated import (
     stated_clock,
     stated_density,
@@ -1588,6 +1589,7 @@ def read(text: str) -> Reading:
             # a vehicle moving across from a lane: into the ego's (what it does next, if said)
             rest = [b for b in a.behaviours if b[0] != "cross_in_front"]
             a.behaviours = rest or [("cut_in", *a.behaviours[0][1:])]
+    r.ego_route = ego_route(tokens) or r.ego_route  # (a turn in a clause whose subject is the ego)
     for a in actors:  # the ego turning towards the side a rider goes straight on: the rider goes its way
         if (
             r.ego_route in ("left", "right")
