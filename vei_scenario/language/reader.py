@@ -35,6 +35,7 @@ from vei_scenario.language import settings as S
 from vei_scenario.language import vocabulary as V
 from vei_scenario.language.behaviours import BEHAVIOURS
 from vei_scenario.language.lemmas import lemmas as _lemmas
+from vei_scenario.language.manner import apply_manner, stated_manner
 from vei_scenario.language.motion import (
     destinations_not_origins,
     give_the_ego_the_way,
@@ -1725,6 +1726,7 @@ def read(text: str) -> Reading:
     _parked(actors, r.actors)
     _cut_outs(r.actors)
     _criticality_said_apart(clauses, r.actors)
+    apply_manner(stated_manner(tokens), r.actors)  # (the scales of closeness, margin and timing)
     for spec in r.actors:
         spec.behaviours = _one_act_once(spec)
         spec.behaviours = one_path(spec, said)
