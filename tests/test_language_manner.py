@@ -87,3 +87,17 @@ def test_the_one_road_user_takes_the_stated_manner(text, cls):
     specs = read(text).actors
     classes = {b[2] for s in specs for b in s.behaviours if b[2] is not None}
     assert classes == {cls}, [(s.kind, s.behaviours) for s in specs]
+
+
+# a manner said in a clause whose subject is another road user is that road user's, not the encounter's
+OTHERS_MANNER = [
+    "A hatchback pulled out of the side road and we collided. A minibus behind me stopped safely.",
+    "The moped swung out from the kerb into my path. A cyclist further back pulled up gently.",
+    "A pickup nosed out of the farm track into my lane; the tractor following it waited politely.",
+]
+
+
+@pytest.mark.parametrize("text", OTHERS_MANNER)
+def test_a_manner_said_of_another_road_user_is_not_the_encounters(text):
+    first = read(text).actors[0]
+    assert all(b[2] != "safe" for b in first.behaviours), first.behaviours

@@ -1784,8 +1784,15 @@ def _one_act_once(spec: ActorSpec) -> list:
 def _criticality_said_apart(clauses, specs: list[ActorSpec]) -> None:
     """A manner said of the encounter in a clause of its own ("Ego passes with plenty of room", "the
     distance is only 5 m, too early"): with one road user in the scene and nothing said of how it moves,
-    that manner is its (one class said, none contradicting it)."""
-    said = {m.value for _, mentions in clauses for m in mentions if m.slot == "criticality"}
+    that manner is its (one class said, none contradicting it). A manner said in a clause that names
+    another road user ("a bus behind me stopped safely") is that road user's, not the encounter's."""
+    said = {
+        m.value
+        for _, mentions in clauses
+        if not any(x.slot == "actor" and x.value != "ego" for x in mentions)
+        for m in mentions
+        if m.slot == "criticality"
+    }
     acting = [s for s in specs if s.speed_mps != 0.0 or any(b[0] not in ("keep_going", "stop") for b in s.behaviours)]
     if len(said) != 1 or len(acting) != 1 or any(b[2] for b in acting[0].behaviours):
         return
