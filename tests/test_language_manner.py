@@ -15,6 +15,7 @@ MILD_CLOSENESS = {
         "The taxi merged in front of me slightly close, I lifted off.",
         "A courier van nosed out of the side street a little too, er, a little close for comfort.",
         "The minibus came back in somewhat closer than I wanted.",
+        "The pickup overtook and tucked in a little too close for comfort.",
     ],
 }
 # a closeness graded by a strong degree word: dangerous
@@ -42,6 +43,7 @@ DENIED_DANGER = {
 WIDE_MARGIN = {
     "safe": [
         "The horse rider crossed the lane a long way off.",
+        "The moped pulled out a fair way ahead of us.",
         "A camper van moved over well in front of us.",
         "The jogger crossed with heaps of space to my bumper.",
     ],

@@ -33,6 +33,7 @@ NARRATOR = {
         "Turning left out of the car park, a kid on a bike came along the pavement towards me.",
         "Made a left at the church and a woman with a buggy was halfway over the road in front of me.",
         "Bearing left at the fork at about 15 mph, I saw a horse rider ahead of me.",
+        "We went left at the mini-roundabout and a cyclist came round towards us.",
     ],
 }
 # the ego named by a noun, before the verb or as the subject of a copula whose complement turns;
@@ -57,6 +58,7 @@ OTHERS = {
         "The lorry in front swung left into the yard and I slowed behind it.",
         "I waited at the lights for the bus to turn right.",
         "A moped pulled right in front of me at the junction.",
+        "I braked but the van went right into the back of the taxi.",
     ],
 }
 

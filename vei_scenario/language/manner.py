@@ -63,10 +63,10 @@ def _closeness(words: list[str], i: int) -> str | None:
     before = words[max(0, i - 3) : i]
     if any(w in _NEGATORS for w in before):
         return None  # (read as a denied danger)
+    if set(before) & _MILD and not set(before) & _STRONG - {"too"}:
+        return MODERATE  # ("a bit close", "a little too close": the mild degree grades the excess)
     if set(before) & _STRONG:
         return DANGEROUS
-    if set(before) & _MILD:
-        return MODERATE
     if words[i] in ("closer", "tighter") and "than" in after[:1]:
         return MODERATE  # ("closer than I'd like": more than wished, not an emergency)
     return None
@@ -86,7 +86,7 @@ def _margin(words: list[str], i: int) -> str | None:
         return DANGEROUS if denied else SAFE
     if w == "much" and nxt in _ROOM and denied:
         return DANGEROUS  # ("not much room")
-    if w == "way" and i > 0 and words[i - 1] in ("good", "long") and nxt in _AWAY:
+    if w == "way" and i > 0 and words[i - 1] in ("good", "long", "fair") and nxt in _AWAY:
         return SAFE  # ("a good way ahead", "a long way off")
     if w == "well" and nxt in _AWAY and not (nxt == "in" and words[i + 2 : i + 3] != ["front"]):
         return SAFE  # ("well ahead of me", "well clear", "well in front")

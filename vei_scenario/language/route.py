@@ -21,11 +21,12 @@ from __future__ import annotations
 
 from vei_scenario.language.lemmas import lemmas
 
-#: Verbs that take a direction as a turn ("turn left", "bear right", "swing left").
-_TURNING = frozenset(("turn", "bear", "swing"))
+#: Verbs that take a direction as a turn ("turn left", "bear right", "swing left", "went left").
+_TURNING = frozenset(("turn", "bear", "swing", "go", "head"))
 #: Words after "right" that make it an intensifier, not a direction ("swung right across my bonnet").
 _INTENSIFIED = frozenset(("in", "across", "through", "out", "up", "behind", "next", "there", "now", "away", "over",
-                          "past", "beside", "alongside", "under", "round", "around", "at", "by"))  # fmt: skip
+                          "past", "beside", "alongside", "under", "round", "around", "at", "by", "into",
+                          "onto"))  # fmt: skip
 #: Verbs that take "a left" or "the next right" as a turn ("make a left", "hang a right", "take a left").
 _TAKING = frozenset(("make", "take", "hang", "do", "pull", "swing", "chuck", "throw"))
 _DIRECTIONS = frozenset(("left", "right"))
