@@ -157,6 +157,23 @@ PHRASAL_CONTACT = {
         "She took out a loan for the van.",
     ],
 }
+# a road user sent flying by a blow, or landing on the ego's parts: a contact
+SENT_FLYING = {
+    "collision": [
+        "The taxi sent the jogger flying at the crossing.",
+        "A lorry clipped the scooter and sent its rider sprawling.",
+        "The kid landed on my bonnet after running out.",
+    ],
+    None: ["The wind sent leaves flying across the road."],
+}
+# "a near thing": a near miss
+NEAR_THING = {
+    "near_miss": [
+        "That was a near thing with the scooter.",
+        "The bus pulled out, a near thing for the cyclist.",
+        "Very near thing at the lights with a moped.",
+    ],
+}
 # a verb of touching whose object is a part of a vehicle: a contact
 PART_CONTACT = {
     "collision": [
@@ -214,6 +231,8 @@ BEGUN_MOTION = {
 @pytest.mark.parametrize(
     "text, intent",
     _case(NEGATED_BY_PREFIX)
+    + _case(SENT_FLYING)
+    + _case(NEAR_THING)
     + _case(PHRASAL_CONTACT)
     + _case(PART_CONTACT)
     + _case(PASSIVE_DENIAL)

@@ -245,6 +245,13 @@ def _is_contact(words: list[str], i: int) -> bool:
         rest = words[i + 1 : i + 4]
         if rest[:1] and rest[0] in _POSSESSIVES | {"the"} and set(rest[1:]) & _STRUCK_PARTS:
             return True  # ("bounced off my bonnet", "rolled over the windscreen")
+    if w == "on" and i > 0 and (_lemmas(prev) & {"land"} or words[i - 2 : i] in (["ended", "up"], ["ends", "up"])):
+        rest = words[i + 1 : i + 4]
+        if rest[:1] and rest[0] in _POSSESSIVES | {"the"} and set(rest[1:]) & _STRUCK_PARTS:
+            return True  # ("landed on my bonnet", "ended up on the windscreen")
+    if w in _THROWN_RESULTS and i > 1 and any(_lemmas(x) & {"send", "knock"} for x in words[max(0, i - 5) : i - 1]):
+        k = next(k for k in range(max(0, i - 5), i) if _lemmas(words[k]) & {"send", "knock"})
+        return _names_road_user(words[k + 1 : i])  # ("sent the jogger flying", "knocked him sprawling")
     if w in ("versus", "vs") and 0 < i < len(words) - 1:
         return True  # ("car versus e-scooter": a report's name for a collision between the two)
     if (
@@ -329,6 +336,8 @@ _DIRECTIONS = ("left", "right")
 #: jogger", "knocked the child over"); with any other object they are not ("took out his phone").
 _PHRASAL_CONTACT = frozenset(("take", "knock", "mow", "bowl"))
 _PARTICLES = frozenset(("out", "over", "down"))
+#: What a road user sent or knocked by a blow does ("sent him flying", "knocked the rider sprawling").
+_THROWN_RESULTS = frozenset(("flying", "sprawling", "spinning", "tumbling"))
 #: Verbs of touching that are a contact only when their object is a part of a vehicle ("caught my
 #: bumper"; not "caught sight of", "caught up with").
 _TOUCHING = frozenset(("catch", "nick", "kiss", "brush", "touch", "clip", "scratch", "dent", "take"))
@@ -368,6 +377,12 @@ def _phrasal_object(words: list[str], i: int) -> bool:
         if k is None:
             return False
         obj = after[:k]
+    return _names_road_user(obj)
+
+
+def _names_road_user(obj: list[str]) -> bool:
+    """Whether the object ``obj`` is a road user: a person pronoun, or a noun phrase whose noun names
+    one ("a jogger", "its rider", "the scooter rider")."""
     for w in obj:
         if w in ("the", "a", "an", "this", "that", "some") or w in _POSSESSIVES:
             continue
@@ -450,7 +465,9 @@ def _near_noun(words: list[str], i: int) -> bool:
     nxt = words[i + 1] if i + 1 < len(words) else ""
     if w.startswith("near-") and (w[5:] in _CONTACT_NOUNS or w[5:].startswith("mis")):
         return True
-    if w == "near" and (nxt.startswith("mis") or nxt in _CONTACT_NOUNS or nxt.rstrip("s") in _CONTACT_NOUNS):
+    if w == "near" and (
+        nxt.startswith("mis") or nxt in _CONTACT_NOUNS or nxt.rstrip("s") in _CONTACT_NOUNS or nxt == "thing"
+    ):
         return True
     return (w in ("close", "narrow") and nxt in ("call", "shave", "escape", "one", "thing")) or w == "near-miss"
 
