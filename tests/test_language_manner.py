@@ -62,6 +62,13 @@ LATE = {
     ],
     None: ["A cyclist rode along the kerb in the late afternoon sun."],
 }
+# scales that disagree state no single class: the lexicon's reading of each clause stands
+DISAGREEING = {
+    None: [
+        "A hatchback cut in aggressively, though a long way ahead of me.",
+        "The van squeezed past a bit close, then pulled in well ahead.",
+    ],
+}
 # closeness to a place is where a road user keeps, not a margin to the ego
 POSITION = {
     "safe": [
@@ -76,7 +83,7 @@ def _cases(*groups: dict) -> list:
     return [(text, cls) for group in groups for cls, texts in group.items() for text in texts]
 
 
-ALL = _cases(MILD_CLOSENESS, STRONG_CLOSENESS, DENIED_DANGER, WIDE_MARGIN, LABELLED, LATE, POSITION)
+ALL = _cases(MILD_CLOSENESS, STRONG_CLOSENESS, DENIED_DANGER, WIDE_MARGIN, LABELLED, LATE, POSITION, DISAGREEING)
 
 
 @pytest.mark.parametrize("text, cls", ALL)

@@ -33,6 +33,8 @@ _NEGATORS = frozenset(("no", "not", "never", "nothing", "none", "nowhere", "hard
 _DANGER = frozenset(("dangerous", "dangerously", "aggressive", "aggressively", "reckless", "recklessly", "crazy",
                      "scary", "hairy", "mad", "wild", "dramatic", "alarming", "sketchy", "close", "sudden",
                      "risky", "frightening", "terrifying", "hectic"))  # fmt: skip
+#: Words of danger that say the class outright when not denied.
+_SAID_DANGER = frozenset(("dangerous", "dangerously", "aggressive", "aggressively", "reckless", "recklessly"))
 #: Quantities of a wide margin and what they measure ("plenty of room", "loads of space").
 _WIDE = frozenset(("plenty", "loads", "lots", "heaps", "tons", "ample", "enough", "masses", "oodles"))
 _ROOM = frozenset(("room", "space", "time", "distance", "gap", "margin", "clearance"))
@@ -121,6 +123,9 @@ def manner_cues(tokens: list[str]) -> list[str]:
         for i, w in enumerate(words):
             if _denied_danger(words, i):
                 cues.append("denied")
+                continue
+            if w in _SAID_DANGER:
+                cues.append(DANGEROUS)  # (so that "aggressively, but well ahead" is no single class)
                 continue
             if w in _CLOSE:
                 found = _closeness(words, i)
