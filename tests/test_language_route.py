@@ -75,3 +75,16 @@ def test_the_ego_route_is_read_from_the_ego_clauses(text, route):
 @pytest.mark.parametrize("text, route", _cases(INHERITED, NARRATOR, NAMED))
 def test_the_reader_takes_the_ego_route(text, route):
     assert read(text).ego_route == route
+
+
+# the ego turning left or right turns at a junction, whatever the road was called
+TURN_AT_A_JUNCTION = [
+    "Made a right onto Elm Street at 15 mph when a kid on a scooter came off the kerb on my left.",
+    "I turned left into Rope Walk, a narrow street, and a dog ran out from between parked cars.",
+    "On a straight road the ego turns right into a driveway while a cyclist comes the other way.",
+]
+
+
+@pytest.mark.parametrize("text", TURN_AT_A_JUNCTION)
+def test_the_ego_turning_turns_at_a_junction(text):
+    assert read(text).map_kind == "crossroad"

@@ -1602,7 +1602,7 @@ def read(text: str) -> Reading:
     vehicles_giving_way = any(a.kind in VEHICLES and any(b[0] == "give_way" for b in a.behaviours) for a in actors)
     at_junction = any(b[0] in JUNCTION_BEHAVIOURS for a in actors for b in a.behaviours)
     if (
-        (r.map_kind is None and r.ego_route in ("left", "right"))
+        (r.map_kind in (None, "straight") and r.ego_route in ("left", "right"))
         or (r.map_kind in (None, "straight") and (any(a.arm for a in actors) or vehicles_giving_way or at_junction))
         or (r.map_kind in (None, "straight", "curve") and S.turns_into_a_road(text, said))
     ):
