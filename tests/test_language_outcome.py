@@ -210,6 +210,14 @@ LETS_THE_EGO = {
         "The pedestrian holds back and lets us complete the manoeuvre.",
     ],
 }
+# the ego pausing for someone, with nothing else said: a safe pass
+PAUSING = {
+    "safe": [
+        "I paused for the cyclist to clear the junction.",
+        "The ego pauses at the line while the pedestrian crosses.",
+        "We paused until the horse had gone by.",
+    ],
+}
 # the direction of a turn into a place is no verb ("turned left into it"): no contact; the ego waits
 TURN_INTO_A_PLACE = {
     "safe": [
@@ -238,6 +246,7 @@ BEGUN_MOTION = {
     + _case(PASSIVE_DENIAL)
     + _case(DENIED_STOP_IN_TIME)
     + _case(LETS_THE_EGO)
+    + _case(PAUSING)
     + _case(TURN_INTO_A_PLACE)
     + _case(BEGUN_MOTION),
 )

@@ -118,7 +118,7 @@ _HARD = frozenset(("hard", "sharply", "heavily", "suddenly", "firmly", "harshly"
 _BRAKE = frozenset(("brake", "stop"))
 _MILD = frozenset(("gently", "softly", "lightly", "slightly", "normally", "smoothly", "gradually", "calmly"))
 #: What a road user that gives way does (lemmas).
-_YIELD = frozenset(("wait", "yield", "give", "let", "hang", "hold"))
+_YIELD = frozenset(("wait", "yield", "give", "let", "hang", "hold", "pause"))
 #: Words after "let X": it goes, so the one who lets gives way ("let it pass", "let him go first").
 _LET_GO = frozenset(("pass", "go", "through", "by", "past", "first", "cross", "in", "out"))
 
