@@ -50,6 +50,23 @@ NAMED = {
         "Ego 25 km/h, crossroads, turning R, oncoming cyclist.",
     ],
 }
+# "a left turn" as the object of the ego's verb; an opening participle takes the main clause's subject
+TURN_NOUN_AND_OPENING = {
+    "left": [
+        "The ego performs a left turn at the signalised junction while a pedestrian waits.",
+        "While turning left, the test vehicle meets a cyclist on the inside.",
+        "Pulling away from the lights to go left, I spotted a jogger on the crossing.",
+    ],
+    "right": [
+        "The subject vehicle executes a right turn into the side road at 12 km/h.",
+        "Before turning right, the ego slows to 15 km/h for a pedestrian.",
+        "We completed the right turn onto the high street as a moped came past.",
+    ],
+    None: [
+        "The van ahead of the ego sits in the left turn lane.",
+        "While turning right, a cyclist cuts across the ego's path.",
+    ],
+}
 # another road user's turn is its own, however it is said: the ego's route is not read from it
 OTHERS = {
     None: [
@@ -67,7 +84,7 @@ def _cases(*groups: dict) -> list:
     return [(text, route) for group in groups for route, texts in group.items() for text in texts]
 
 
-@pytest.mark.parametrize("text, route", _cases(INHERITED, NARRATOR, NAMED, OTHERS))
+@pytest.mark.parametrize("text, route", _cases(INHERITED, NARRATOR, NAMED, TURN_NOUN_AND_OPENING, OTHERS))
 def test_the_ego_route_is_read_from_the_ego_clauses(text, route):
     assert ego_route(_tokens(text)) == route
 

@@ -31,6 +31,9 @@ _INTENSIFIED = frozenset(("in", "across", "through", "out", "up", "behind", "nex
 _TAKING = frozenset(("make", "take", "hang", "do", "pull", "swing", "chuck", "throw"))
 _DIRECTIONS = frozenset(("left", "right"))
 _INITIALS = {"l": "left", "r": "right"}
+#: What may follow "a left turn" when it is the turn itself (a preposition), not a modifier of a noun.
+_AFTER_TURN_NOUN = frozenset(("at", "into", "onto", "across", "from", "in", "on", "towards", "toward", "to", "off",
+                              "out", "through", "and", "with", "when", "while"))  # fmt: skip
 #: Words between a verb of turning and its direction ("turns at right", "turn to the left", "off left").
 _BEFORE_DIRECTION = frozenset(("at", "to", "the", "off", "hard", "sharp", "sharply", "slightly", "then", "on"))
 #: Words between "take"/"make" and "left" ("take the next left", "make a quick right", "the first left").
@@ -38,7 +41,10 @@ _BEFORE_TURN_NOUN = frozenset(("a", "the", "next", "first", "second", "quick", "
 #: What ends a clause: punctuation and the conjunctions that open one.
 _BREAK_PUNCT = frozenset(".;!?:,—-()")
 _SENTENCE_END = frozenset(".;!?:")
-_BREAK_WORDS = frozenset(("and", "but", "then", "so", "as", "when", "while", "whilst", "until", "because", "where"))
+_BREAK_WORDS = frozenset(
+    ("and", "but", "then", "so", "as", "when", "while", "whilst", "until", "because", "where", "before", "after",
+     "once")
+)  # fmt: skip
 #: Auxiliaries, modals and adverbs between a subject and its verb ("I was just turning").
 _BETWEEN = frozenset(
     ("is", "was", "were", "are", "am", "be", "been", "being", "has", "have", "had", "will", "would", "can", "could",
@@ -83,6 +89,18 @@ def _lemma_in(word: str, verbs: frozenset[str]) -> bool:
     return bool(forms & verbs)
 
 
+def _turn_noun_at(words: list[str], i: int) -> int | None:
+    """Where the verb stands whose object is "a left turn" / "the right turn" at ``i`` (the direction):
+    "the ego performs a left turn at the junction", "we completed the right turn"; not "a left-turn lane"
+    or "the left turn signal"."""
+    if words[i] not in _DIRECTIONS or words[i + 1 : i + 2] != ["turn"] or i < 2 or words[i - 1] not in ("a", "the"):
+        return None
+    after = words[i + 2 : i + 3]
+    if after and after[0] not in _AFTER_TURN_NOUN:
+        return None
+    return i - 2 if _is_verb(words[i - 2]) or "VERB" in lemmas(words[i - 2]) else None
+
+
 def _turn_at(words: list[str], i: int) -> str | None:
     """The direction of a turn whose verb stands at ``i``, or None."""
     w = words[i]
@@ -125,8 +143,8 @@ def _subject_before(words: list[str], i: int) -> list[str]:
         for k, w in enumerate(before):
             if w in _EGO_HEADS and k == 0:
                 return [w]
-            if k > 0 and w not in _BETWEEN and _is_verb(w):
-                return _subject_before(before, k)
+            if w not in _BETWEEN and _is_verb(w):
+                return _subject_before(before, k)  # (none before a participle: "pulling out to go right")
     return words[: j + 1]
 
 
@@ -185,16 +203,25 @@ def ego_route(tokens: list[str]) -> str | None:
     normalised, lowercased tokens."""
     story = bool(_FIRST_PERSON & set(tokens))
     previous: str | None = None
-    for words, first in _clauses(tokens):
+    clauses = _clauses(tokens)
+    for n, (words, first) in enumerate(clauses):
         if first:
             previous = None
         for i in range(len(words)):
-            direction = _turn_at(words, i)
+            direction, verb = _turn_at(words, i), i
             if direction is None:
+                verb = _turn_noun_at(words, i)
+                direction = words[i] if verb is not None else None
+            if direction is None or verb is None:
                 continue
-            who = _whose(_subject_before(words, i))
-            if who is None:
-                who = previous if previous is not None else ("ego" if story and first else None)
+            who = _whose(_subject_before(words, verb))
+            if who is None and previous is not None:
+                who = previous
+            elif who is None and first:
+                # a sentence opening with the turn: the narrator's in a story, else the subject of the
+                # main clause after it ("While turning right, the ego meets a cyclist")
+                following = clauses[n + 1] if n + 1 < len(clauses) and not clauses[n + 1][1] else None
+                who = "ego" if story else _own_subject(following[0]) if following else None
             if who == "ego":
                 return direction
         own = _own_subject(words)
