@@ -44,6 +44,7 @@ WIDE_MARGIN = {
     "safe": [
         "The horse rider crossed the lane a long way off.",
         "The moped pulled out a fair way ahead of us.",
+        "The jogger crossed miles ahead of me.",
         "A camper van moved over well in front of us.",
         "The jogger crossed with heaps of space to my bumper.",
     ],

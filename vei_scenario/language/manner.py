@@ -90,6 +90,8 @@ def _margin(words: list[str], i: int) -> str | None:
         return DANGEROUS  # ("not much room")
     if w == "way" and i > 0 and words[i - 1] in ("good", "long", "fair") and nxt in _AWAY:
         return SAFE  # ("a good way ahead", "a long way off")
+    if w in ("miles", "ages") and nxt in _AWAY:
+        return SAFE  # ("miles ahead": a margin beyond measure)
     if w == "well" and nxt in _AWAY and not (nxt == "in" and words[i + 2 : i + 3] != ["front"]):
         return SAFE  # ("well ahead of me", "well clear", "well in front")
     return None
