@@ -132,6 +132,128 @@ UNSAID = {
 }
 
 
+# a noun of an event or of trouble negated by its prefix ("non-"): nothing happens, a safe pass
+NEGATED_BY_PREFIX = {
+    "safe": [
+        "The tractor pulling out should be a total non-event for the driver.",
+        "Make the cyclist's crossing a nonevent, please.",
+        "For the ego this merge is a non-issue.",
+    ],
+}
+# a phrasal verb of contact (verb + out/down/over) with a road user as its object; hedged, a near miss
+PHRASAL_CONTACT = {
+    "collision": [
+        "The van took out a cyclist at the lights.",
+        "A lorry knocked the jogger over on the zebra.",
+        "The taxi took the scooter rider out on the bend.",
+    ],
+    "near_miss": [
+        "Honestly I very nearly took out a dog walker this morning.",
+        "That bus almost took me out at the roundabout.",
+        "The moped nearly knocked over a pensioner.",
+    ],
+    None: [
+        "The courier took out his phone at the lights.",
+        "She took out a loan for the van.",
+    ],
+}
+# a road user sent flying by a blow, or landing on the ego's parts: a contact
+SENT_FLYING = {
+    "collision": [
+        "The taxi sent the jogger flying at the crossing.",
+        "A lorry clipped the scooter and sent its rider sprawling.",
+        "The kid landed on my bonnet after running out.",
+    ],
+    None: ["The wind sent leaves flying across the road."],
+}
+# "a near thing": a near miss
+NEAR_THING = {
+    "near_miss": [
+        "That was a near thing with the scooter.",
+        "The bus pulled out, a near thing for the cyclist.",
+        "Very near thing at the lights with a moped.",
+    ],
+}
+# a verb of touching whose object is a part of a vehicle: a contact
+PART_CONTACT = {
+    "collision": [
+        "The cyclist's pedal caught my rear door as he squeezed past.",
+        "His handlebar caught the wing mirror of the taxi.",
+        "Then the moped nicked our back bumper.",
+    ],
+    None: [
+        "I caught sight of the scooter in my mirror.",
+        "We caught up with the tractor on the hill.",
+    ],
+}
+# a contact noun as the subject of a passive denying verb ("collision avoided"): denied or hedged
+PASSIVE_DENIAL = {
+    "near_miss": [
+        "Ego swerves, crash only just averted.",
+        "The lorry braked; a collision was narrowly prevented.",
+        "Contact barely avoided as the bus pulled in.",
+    ],
+}
+# a denied act of stopping in time: it could not be avoided, a collision
+DENIED_STOP_IN_TIME = {
+    "collision": [
+        "The jogger stepped off the kerb and the taxi could not stop in time.",
+        "A dog ran out, and the bus was unable to brake in time.",
+        "The van failed to pull up in time behind the scooter.",
+    ],
+}
+# a road user lets the ego finish what it does: it gives way, a safe pass
+LETS_THE_EGO = {
+    "safe": [
+        "The cyclist waits at the corner and lets the ego finish its turn.",
+        "A jogger pauses on the verge and lets me clear the bridge.",
+        "The pedestrian holds back and lets us complete the manoeuvre.",
+    ],
+}
+# the ego pausing for someone, with nothing else said: a safe pass
+PAUSING = {
+    "safe": [
+        "I paused for the cyclist to clear the junction.",
+        "The ego pauses at the line while the pedestrian crosses.",
+        "We paused until the horse had gone by.",
+    ],
+}
+# the direction of a turn into a place is no verb ("turned left into it"): no contact; the ego waits
+TURN_INTO_A_PLACE = {
+    "safe": [
+        "A woman with a pram crossed the lane as we turned right into it, so we waited for her.",
+        "I turned left into it and waited while the boy crossed.",
+        "A dog was in the car park as I swung left into it, I stopped and let it pass.",
+    ],
+}
+# a motion towards the ego that only begins ("starts drifting into me"): not a contact
+BEGUN_MOTION = {
+    "near_miss": [
+        "The coach began sliding over into us on the bend, so I swerved.",
+        "A van started edging into me at the lights and I braked hard.",
+        "The tractor started veering into us and I dodged onto the verge.",
+    ],
+}
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    _case(NEGATED_BY_PREFIX)
+    + _case(SENT_FLYING)
+    + _case(NEAR_THING)
+    + _case(PHRASAL_CONTACT)
+    + _case(PART_CONTACT)
+    + _case(PASSIVE_DENIAL)
+    + _case(DENIED_STOP_IN_TIME)
+    + _case(LETS_THE_EGO)
+    + _case(PAUSING)
+    + _case(TURN_INTO_A_PLACE)
+    + _case(BEGUN_MOTION),
+)
+def test_outcome_constructions_of_wish_and_event(text, intent):
+    assert _intent(text) == intent, outcome_cues(" ".join(_tokens(text)))
+
+
 @pytest.mark.parametrize(
     "text, intent",
     _case(CONTACT)

@@ -28,6 +28,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from functools import lru_cache
 
+from vei_scenario.language import lexicon as L
+from vei_scenario.language import vocabulary as V
 from vei_scenario.language.lemmas import lemmas
 
 COLLISION, NEAR_MISS, SAFE = "collision", "near_miss", "safe"
@@ -40,7 +42,7 @@ _BREAK_WORDS = frozenset(
 #: Negators: they deny what follows them in their clause.
 _NEGATORS = frozenset(("no", "not", "never", "without", "nobody", "nothing", "neither", "nor", "none"))
 #: Verbs (lemmas) whose object is denied: "avoided contact", "prevents a collision".
-_DENYING_VERBS = frozenset(("avoid", "prevent", "escape", "evade"))
+_DENYING_VERBS = frozenset(("avoid", "prevent", "escape", "evade", "avert"))
 #: Hedges: what follows them almost happened ("nearly hit", "barely missed", "almost a crash").
 _HEDGES = frozenset(("nearly", "almost", "narrowly", "barely", "virtually", "practically"))
 #: Words of a condition or a counterfactual: what follows did not happen ("would have hit", "if it hits").
@@ -116,7 +118,7 @@ _HARD = frozenset(("hard", "sharply", "heavily", "suddenly", "firmly", "harshly"
 _BRAKE = frozenset(("brake", "stop"))
 _MILD = frozenset(("gently", "softly", "lightly", "slightly", "normally", "smoothly", "gradually", "calmly"))
 #: What a road user that gives way does (lemmas).
-_YIELD = frozenset(("wait", "yield", "give", "let", "hang", "hold"))
+_YIELD = frozenset(("wait", "yield", "give", "let", "hang", "hold", "pause"))
 #: Words after "let X": it goes, so the one who lets gives way ("let it pass", "let him go first").
 _LET_GO = frozenset(("pass", "go", "through", "by", "past", "first", "cross", "in", "out"))
 
@@ -243,6 +245,13 @@ def _is_contact(words: list[str], i: int) -> bool:
         rest = words[i + 1 : i + 4]
         if rest[:1] and rest[0] in _POSSESSIVES | {"the"} and set(rest[1:]) & _STRUCK_PARTS:
             return True  # ("bounced off my bonnet", "rolled over the windscreen")
+    if w == "on" and i > 0 and (_lemmas(prev) & {"land"} or words[i - 2 : i] in (["ended", "up"], ["ends", "up"])):
+        rest = words[i + 1 : i + 4]
+        if rest[:1] and rest[0] in _POSSESSIVES | {"the"} and set(rest[1:]) & _STRUCK_PARTS:
+            return True  # ("landed on my bonnet", "ended up on the windscreen")
+    if w in _THROWN_RESULTS and i > 1 and any(_lemmas(x) & {"send", "knock"} for x in words[max(0, i - 5) : i - 1]):
+        k = next(k for k in range(max(0, i - 5), i) if _lemmas(words[k]) & {"send", "knock"})
+        return _names_road_user(words[k + 1 : i])  # ("sent the jogger flying", "knocked him sprawling")
     if w in ("versus", "vs") and 0 < i < len(words) - 1:
         return True  # ("car versus e-scooter": a report's name for a collision between the two)
     if (
@@ -254,6 +263,10 @@ def _is_contact(words: list[str], i: int) -> bool:
     lem = _lemmas(w)
     if "wipe" in lem and "out" in words[i + 1 : i + 3]:
         return _meets_road_user(words[i + 1 : i + 4])  # ("wiped out the cyclist", "wiped him out")
+    if lem & _PHRASAL_CONTACT and _is_verb(w) and _phrasal_object(words, i):
+        return True  # ("took out a jogger", "knocked the child over")
+    if lem & _TOUCHING and _is_verb(w) and _vehicle_part(words[i + 1 : i + 6]):
+        return True  # ("caught my front bumper", "nicked the wing mirror of the taxi")
     if lem & {"run", "knock", "mow"} and nxt in ("over", "down"):
         return _meets_road_user(words[i + 2 : i + 5]) and not (nxt == "down" and lem & {"run"} and "road" in words)
     if lem & {"make", "come"} and nxt == "contact":
@@ -264,9 +277,13 @@ def _is_contact(words: list[str], i: int) -> bool:
         return _meets_road_user(_object_of(words, i))
     if _is_verb(w) and not lem & {"turn", "look", "get", "change", "switch", "fall", "slow"}:
         j = i + 1
-        while j < len(words) and (words[j].endswith("ly") or words[j] in ("straight", "right", "head-on", "back")):
+        if w in _DIRECTIONS and i > 0 and _is_verb(words[i - 1]):
+            return False  # ("turned left into it": a direction after its verb, not "left" the verb)
+        while j < len(words) and (words[j].endswith("ly") or words[j] in ("straight", "head-on", "back", *_DIRECTIONS)):
             j += 1  # ("went straight into the side of it")
-        if j < len(words) and words[j] == _INTO and not w.endswith("ing"):
+        if j < len(words) and words[j] == _INTO and not w.endswith("ing") and not _begun(words, i):
+            if words[i + 1] in _DIRECTIONS and words[j + 1 : j + 2] == ["it"]:
+                return False  # ("swung left into it": a turn into a place)
             return _into_road_user(words, j)  # (not "starts merging into me": a motion under way)
         if lem & {"throw", "fling", "launch", "toss"} and j < len(words) and words[j] in ("onto", "over"):
             return True  # ("was thrown onto the bonnet": it was hit)
@@ -313,6 +330,123 @@ def _into_road_user(words: list[str], j: int) -> bool:
     return bool(nouns) and chunk[0] in {"the", "a", "an", "some"} | _POSSESSIVES
 
 
+#: Directions said after a verb of motion; "left" is also the past of "leave".
+_DIRECTIONS = ("left", "right")
+#: Verbs that with a particle (out, over, down) and a road user as object are a contact ("took out a
+#: jogger", "knocked the child over"); with any other object they are not ("took out his phone").
+_PHRASAL_CONTACT = frozenset(("take", "knock", "mow", "bowl"))
+_PARTICLES = frozenset(("out", "over", "down"))
+#: What a road user sent or knocked by a blow does ("sent him flying", "knocked the rider sprawling").
+_THROWN_RESULTS = frozenset(("flying", "sprawling", "spinning", "tumbling"))
+#: Verbs of touching that are a contact only when their object is a part of a vehicle ("caught my
+#: bumper"; not "caught sight of", "caught up with").
+_TOUCHING = frozenset(("catch", "nick", "kiss", "brush", "touch", "clip", "scratch", "dent", "take"))
+#: The parts of a vehicle (and of a bicycle) that a contact is said to touch.
+_VEHICLE_PARTS = _STRUCK_PARTS | _PARTS | frozenset(
+    ("wheel", "pedal", "handlebar", "handlebars", "arch", "panel", "quarter", "corner", "headlight", "taillight",
+     "indicator", "tailgate", "sill", "fender")
+)  # fmt: skip
+#: Verbs of a motion only begun ("started drifting into me"): what it would have met, it did not yet.
+_BEGIN = frozenset(("start", "begin", "try", "attempt"))
+
+
+@lru_cache(maxsize=1)
+def _road_user_heads() -> frozenset[str]:
+    """The last words of the lexicon's road-user nouns ("jogger", "rider", "cyclist", "bloke")."""
+    phrases = [p for ps in L.ACTOR_NOUNS.values() for p in ps] + list(L.CAR_NOUNS) + list(L.GENERIC_PERSONS)
+    phrases += [k for k, (slot, _) in V.ACTORS.items() if slot == "actor"]
+    return frozenset(p.split()[-1] for p in phrases) | {"rider", "driver", "cyclist", "motorcyclist", "pensioner"}
+
+
+def _road_user_word(w: str) -> bool:
+    """Whether ``w`` (or its noun lemma) names a road user."""
+    heads = _road_user_heads()
+    return w in heads or any(x in heads for x in _pos(w).get("NOUN", ()))
+
+
+def _phrasal_object(words: list[str], i: int) -> bool:
+    """Whether the verb at ``i`` takes a particle and a road user ("took out a jogger", "took me out",
+    "knocked the rider over"): the particle right after the verb or after its object."""
+    after = words[i + 1 : i + 7]
+    if not after:
+        return False
+    if after[0] in _PARTICLES:
+        obj = after[1:]
+    else:
+        k = next((k for k, x in enumerate(after) if x in _PARTICLES), None)
+        if k is None:
+            return False
+        obj = after[:k]
+    return _names_road_user(obj)
+
+
+def _names_road_user(obj: list[str]) -> bool:
+    """Whether the object ``obj`` is a road user: a person pronoun, or a noun phrase whose noun names
+    one ("a jogger", "its rider", "the scooter rider")."""
+    for w in obj:
+        if w in ("the", "a", "an", "this", "that", "some") or w in _POSSESSIVES:
+            continue
+        if w in _PERSON_OBJECTS - {"it", "one", "each"}:
+            return True
+        if _road_user_word(w):
+            return True
+        if w in _PHRASE_ENDS or w in _BREAK_WORDS:
+            return False
+    return False
+
+
+def _vehicle_part(after: list[str]) -> bool:
+    """Whether ``after`` (a verb's object) is a vehicle's part: a determiner or possessive, then up to
+    three modifiers, then the part ("my front bumper", "the wing mirror of the taxi")."""
+    if not after or not (after[0] in _POSSESSIVES or after[0] in ("the", "a", "his", "her")):
+        return False
+    for w in after[1:4]:
+        if w in _VEHICLE_PARTS or w.rstrip("s") in _VEHICLE_PARTS:
+            return True
+        if w in _PHRASE_ENDS:
+            return False
+    return False
+
+
+def _begun(words: list[str], i: int) -> bool:
+    """Whether the verb at ``i`` follows a verb of beginning in its clause ("started edging into me")."""
+    return any(_lemmas(x) & _BEGIN for x in words[max(0, i - 3) : i])
+
+
+def _lets_do(words: list[str], i: int) -> bool:
+    """ "let" at ``i`` with an object and a bare verb after it ("lets the ego finish its turn", "let me
+    clear the bridge"): the one who lets gives way to whatever the other does."""
+    for w in words[i + 1 : i + 5]:
+        if w in ("the", "a", "an") or w in _PERSON_OBJECTS or w in _EGO_HEADS or w in _POSSESSIVES:
+            continue
+        if w in _pos(w).get("VERB", ()):
+            return True  # (its bare form: "finish", "clear", "complete")
+        if "VERB" in _pos(w) or w in _PHRASE_ENDS:
+            return False  # (an inflected verb or a preposition: no object and bare verb)
+    return False
+
+
+def _negated_by_prefix(w: str) -> bool:
+    """A noun of an event or of trouble negated by its prefix ("non-event", "nonevent", "non-issue"):
+    nothing of note happens."""
+    for prefix in ("non-", "non"):
+        if w.startswith(prefix) and w[len(prefix) :] in _TROUBLE | {"event", "events"}:
+            return True
+    return False
+
+
+def _denied_after(words: list[str], i: int) -> str | None:
+    """A contact noun at ``i`` as the subject of a passive denying verb after it in its clause
+    ("collision avoided", "a crash was narrowly averted"): "hedged" with a hedge, else "denied"."""
+    after = words[i + 1 : i + 5]
+    for k, x in enumerate(after):
+        if x.endswith("ed") and _lemmas(x) & _DENYING_VERBS:
+            return "hedged" if set(after[:k]) & (_HEDGES | {"just"}) else "denied"
+        if x not in ("was", "is", "were", "been", "being", "be", "has", "had", "only", "just") and x not in _HEDGES:
+            return None
+    return None
+
+
 def _miss(words: list[str], i: int) -> bool:
     """A verb of missing whose object is someone ("missed him", "missed each other", "miss the cyclist")."""
     if "miss" not in _lemmas(words[i]) or words[i] in ("miss", "mis") and i > 0 and words[i - 1] == "near":
@@ -331,7 +465,9 @@ def _near_noun(words: list[str], i: int) -> bool:
     nxt = words[i + 1] if i + 1 < len(words) else ""
     if w.startswith("near-") and (w[5:] in _CONTACT_NOUNS or w[5:].startswith("mis")):
         return True
-    if w == "near" and (nxt.startswith("mis") or nxt in _CONTACT_NOUNS or nxt.rstrip("s") in _CONTACT_NOUNS):
+    if w == "near" and (
+        nxt.startswith("mis") or nxt in _CONTACT_NOUNS or nxt.rstrip("s") in _CONTACT_NOUNS or nxt == "thing"
+    ):
         return True
     return (w in ("close", "narrow") and nxt in ("call", "shave", "escape", "one", "thing")) or w == "near-miss"
 
@@ -355,7 +491,7 @@ def _margin(words: list[str], i: int) -> str | None:
         w in ("time",)
         and i > 0
         and words[i - 1] == "in"
-        and any(_lemmas(x) & {"stop", "brake", "halt"} for x in words[max(0, i - 5) : i])
+        and any(_lemmas(x) & {"stop", "brake", "halt"} or x == "up" for x in words[max(0, i - 5) : i])
     ):
         return NEAR_MISS  # ("stopped just in time")
     if w in ("moment", "second", "minute", "instant") and i > 1 and words[i - 1] == "last":
@@ -474,7 +610,7 @@ def _ego_acts(words: list[str], i: int) -> str | None:
         after = words[i + 1 : i + 4]
         if lem & {"give"} and "way" not in after:
             return None
-        if lem & {"let"} and not set(after) & _LET_GO:
+        if lem & {"let"} and not set(after) & _LET_GO and not _lets_do(words, i):
             return None
         if lem & {"hang", "hold"} and "back" not in after:
             return None
@@ -511,11 +647,12 @@ def outcome_cues(said: str) -> list[Cue]:
 
         for i, w in enumerate(words):
             if _is_contact(words, i):
-                hedged = _scoped(words, i, _HEDGES | {"only", "within"}, 5)
+                passive = _denied_after(words, i)  # ("collision narrowly avoided", "a crash was averted")
+                hedged = _scoped(words, i, _HEDGES | {"only", "within"}, 5) or passive == "hedged"
                 counterfactual = "have" in words[:i] and (_scoped(words, i, _HYPOTHETICAL, 3) or clause.after_if)
                 if hedged or counterfactual:
                     add("hedged")
-                elif _denied_before(words, i) or _scoped(words, i, _HYPOTHETICAL, 2):
+                elif _denied_before(words, i) or _scoped(words, i, _HYPOTHETICAL, 2) or passive == "denied":
                     add("denied")
                 else:
                     add("contact")
@@ -526,6 +663,9 @@ def outcome_cues(said: str) -> list[Cue]:
             if w.endswith("-free") and w[:-5] in _CONTACT_NOUNS | {"conflict", "incident", "drama", "problem"}:
                 add("safe")  # ("a collision-free pass")
                 continue
+            if _negated_by_prefix(w):
+                add("safe")  # ("a complete non-event", "a non-issue")
+                continue
             if len(words) == 2 and words[0] == "all" and w in ("clear", "good", "fine", "ok", "okay", "well"):
                 add("safe")  # ("All clear.")
             if _miss(words, i):
@@ -535,7 +675,9 @@ def outcome_cues(said: str) -> list[Cue]:
                 add("near")
                 continue
             margin = _margin(words, i)
-            if margin is not None:
+            if margin is not None and margin == NEAR_MISS and w == "time" and _denied_before(words, i):
+                add("contact")  # ("could not stop in time", "failed to pull up in time": it was not avoided)
+            elif margin is not None:
                 add("near" if margin == NEAR_MISS else "safe")
             hedge = w in _HEDGES or (w == "just" and i > 0 and words[i - 1] == "only")
             if hedge and _hedged_act(words, i):

@@ -35,6 +35,7 @@ from vei_scenario.language import settings as S
 from vei_scenario.language import vocabulary as V
 from vei_scenario.language.behaviours import BEHAVIOURS
 from vei_scenario.language.lemmas import lemmas as _lemmas
+from vei_scenario.language.manner import apply_manner, stated_manner
 from vei_scenario.language.motion import (
     destinations_not_origins,
     give_the_ego_the_way,
@@ -51,6 +52,7 @@ from vei_scenario.language.ncap import rewrite as ncap_rewrite
 from vei_scenario.language.normalise import normalise
 from vei_scenario.language.outcome import decide, outcome_cues
 from vei_scenario.language.reading import ActorSpec, NotUnderstood, Reading
+from vei_scenario.language.route import ego_route
 from vei_scenario.language.stated import (
     stated_clock,
     stated_density,
@@ -1601,6 +1603,7 @@ def read(text: str) -> Reading:
             # a vehicle moving across from a lane: into the ego's (what it does next, if said)
             rest = [b for b in a.behaviours if b[0] != "cross_in_front"]
             a.behaviours = rest or [("cut_in", *a.behaviours[0][1:])]
+    r.ego_route = ego_route(tokens) or r.ego_route  # (a turn in a clause whose subject is the ego)
     for a in actors:  # the ego turning towards the side a rider goes straight on: the rider goes its way
         if (
             r.ego_route in ("left", "right")
@@ -1612,7 +1615,7 @@ def read(text: str) -> Reading:
     vehicles_giving_way = any(a.kind in VEHICLES and any(b[0] == "give_way" for b in a.behaviours) for a in actors)
     at_junction = any(b[0] in JUNCTION_BEHAVIOURS for a in actors for b in a.behaviours)
     if (
-        (r.map_kind is None and r.ego_route in ("left", "right"))
+        (r.map_kind in (None, "straight") and r.ego_route in ("left", "right"))
         or (r.map_kind in (None, "straight") and (any(a.arm for a in actors) or vehicles_giving_way or at_junction))
         or (r.map_kind in (None, "straight", "curve") and S.turns_into_a_road(text, said))
     ):
@@ -1736,6 +1739,7 @@ def read(text: str) -> Reading:
     _parked(actors, r.actors)
     _cut_outs(r.actors)
     _criticality_said_apart(clauses, r.actors)
+    apply_manner(stated_manner(tokens), r.actors)  # (the scales of closeness, margin and timing)
     for spec in r.actors:
         spec.behaviours = _one_act_once(spec)
         spec.behaviours = one_path(spec, said)
@@ -1796,8 +1800,15 @@ def _one_act_once(spec: ActorSpec) -> list:
 def _criticality_said_apart(clauses, specs: list[ActorSpec]) -> None:
     """A manner said of the encounter in a clause of its own ("Ego passes with plenty of room", "the
     distance is only 5 m, too early"): with one road user in the scene and nothing said of how it moves,
-    that manner is its (one class said, none contradicting it)."""
-    said = {m.value for _, mentions in clauses for m in mentions if m.slot == "criticality"}
+    that manner is its (one class said, none contradicting it). A manner said in a clause that names
+    another road user ("a bus behind me stopped safely") is that road user's, not the encounter's."""
+    said = {
+        m.value
+        for _, mentions in clauses
+        if not any(x.slot == "actor" and x.value != "ego" for x in mentions)
+        for m in mentions
+        if m.slot == "criticality"
+    }
     acting = [s for s in specs if s.speed_mps != 0.0 or any(b[0] not in ("keep_going", "stop") for b in s.behaviours)]
     if len(said) != 1 or len(acting) != 1 or any(b[2] for b in acting[0].behaviours):
         return

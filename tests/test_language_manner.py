@@ -1,0 +1,113 @@
+"""How aggressively a road user acts, read from the scales of closeness, margin and timing with their
+degree words and negation (:mod:`vei_scenario.language.manner`). Each group is one construction, in
+wordings written for it (none taken from a corpus)."""
+
+from __future__ import annotations
+
+import pytest
+
+from vei_scenario.language.manner import stated_manner
+from vei_scenario.language.reader import _tokens, read
+
+# a closeness graded by a mild degree word, or more than wished: moderate
+MILD_CLOSENESS = {
+    "moderate": [
+        "The taxi merged in front of me slightly close, I lifted off.",
+        "A courier van nosed out of the side street a little too, er, a little close for comfort.",
+        "The minibus came back in somewhat closer than I wanted.",
+        "The pickup overtook and tucked in a little too close for comfort.",
+    ],
+}
+# a closeness graded by a strong degree word: dangerous
+STRONG_CLOSENESS = {
+    "dangerous": [
+        "The pickup swung in uncomfortably close to my bonnet.",
+        "A lorry squeezed past way too tight.",
+        "The estate car slotted in dangerously close in the fog.",
+    ],
+}
+# a danger denied: safe alone, moderate beside a mild closeness
+DENIED_DANGER = {
+    "safe": [
+        "The tractor pulled out of the farm gate ahead of us, nothing scary at all.",
+        "A delivery van merged into the lane, it was not aggressive in any way.",
+        "Cyclist crossed the lane in front. Never anything dramatic.",
+    ],
+    "moderate": [
+        "The coach moved over a little close, though nothing alarming.",
+        "A hatchback slotted in a bit tight but nothing mad.",
+        "The jogger stepped out slightly close to my wing, nothing risky though.",
+    ],
+}
+# a wide margin, said as a quantity of room or as a distance "well"/"a good way" off: safe
+WIDE_MARGIN = {
+    "safe": [
+        "The horse rider crossed the lane a long way off.",
+        "The moped pulled out a fair way ahead of us.",
+        "The jogger crossed miles ahead of me.",
+        "A camper van moved over well in front of us.",
+        "The jogger crossed with heaps of space to my bumper.",
+    ],
+}
+# a level stated under a label
+LABELLED = {
+    "dangerous": ["Case 12 | target: car, lane 2 | manoeuvre: cut-in | criticality: high"],
+    "moderate": ["Cut-in by a van from the left lane, severity medium."],
+    "safe": ["Pedestrian crossing at 30 m, crit low, dry road."],
+}
+# timing: an act done "very late" or "too late" is dangerous; "late afternoon" is a time
+LATE = {
+    "dangerous": [
+        "The SUV in front swerved round the debris really late.",
+        "A moped indicated and cut across too late for comfort.",
+    ],
+    None: ["A cyclist rode along the kerb in the late afternoon sun."],
+}
+# scales that disagree state no single class: the lexicon's reading of each clause stands
+DISAGREEING = {
+    None: [
+        "A hatchback cut in aggressively, though a long way ahead of me.",
+        "The van squeezed past a bit close, then pulled in well ahead.",
+    ],
+}
+# closeness to a place is where a road user keeps, not a margin to the ego
+POSITION = {
+    "safe": [
+        "A boy on a bike kept close to the verge all the way and I gave him heaps of room.",
+        "The mobility scooter hugged the wall, tight to the kerb, and we passed with masses of space.",
+        "A walker stayed close to the hedge, and I went by with plenty of room.",
+    ],
+}
+
+
+def _cases(*groups: dict) -> list:
+    return [(text, cls) for group in groups for cls, texts in group.items() for text in texts]
+
+
+ALL = _cases(MILD_CLOSENESS, STRONG_CLOSENESS, DENIED_DANGER, WIDE_MARGIN, LABELLED, LATE, POSITION, DISAGREEING)
+
+
+@pytest.mark.parametrize("text, cls", ALL)
+def test_the_manner_is_read_from_its_scale(text, cls):
+    assert stated_manner(_tokens(text)) == cls
+
+
+@pytest.mark.parametrize("text, cls", [(t, c) for t, c in ALL if c is not None])
+def test_the_one_road_user_takes_the_stated_manner(text, cls):
+    specs = read(text).actors
+    classes = {b[2] for s in specs for b in s.behaviours if b[2] is not None}
+    assert classes == {cls}, [(s.kind, s.behaviours) for s in specs]
+
+
+# a manner said in a clause whose subject is another road user is that road user's, not the encounter's
+OTHERS_MANNER = [
+    "A hatchback pulled out of the side road and we collided. A minibus behind me stopped safely.",
+    "The moped swung out from the kerb into my path. A cyclist further back pulled up gently.",
+    "A pickup nosed out of the farm track into my lane; the tractor following it waited politely.",
+]
+
+
+@pytest.mark.parametrize("text", OTHERS_MANNER)
+def test_a_manner_said_of_another_road_user_is_not_the_encounters(text):
+    first = read(text).actors[0]
+    assert all(b[2] != "safe" for b in first.behaviours), first.behaviours

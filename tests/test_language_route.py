@@ -1,0 +1,107 @@
+"""Where the ego goes at a junction (:mod:`vei_scenario.language.route`): read from the clauses whose
+subject is the ego, never from another road user's turn. Each group is one construction, in wordings
+written for it (none taken from a corpus)."""
+
+from __future__ import annotations
+
+import pytest
+
+from vei_scenario.language.reader import _tokens, read
+from vei_scenario.language.route import ego_route
+
+# a participle or a verb after "and" with no subject of its own: the subject of the clause before it
+INHERITED = {
+    "left": [
+        "I was easing round the gyratory at 10 mph, bearing left for the retail park, when a skater rolled out.",
+        "We came up to the lights and swung left onto Quay Street as a jogger stepped out.",
+        "The ego slows for the junction, then turns left towards the station; a pedestrian waits on the corner.",
+    ],
+    "right": [
+        "I slowed at the crossroads, turning right behind a bus, and a cyclist came down the outside.",
+        "The test vehicle approaches the T-junction at 20 km/h and turns to the right.",
+        "We were at the lights by the bakery, making a right turn, when a lad on a scooter shot across.",
+    ],
+}
+# a narrator's sentence that opens with the turn: the narrator turns
+NARRATOR = {
+    "right": [
+        "Turning right into the industrial estate, a forklift reversed out in front of me.",
+        "Hanging a right at the chapel, I spotted a dog loose on the verge.",
+        "Taking the next right off the bypass, I met a cyclist coming the wrong way.",
+    ],
+    "left": [
+        "Turning left out of the car park, a kid on a bike came along the pavement towards me.",
+        "Made a left at the church and a woman with a buggy was halfway over the road in front of me.",
+        "Bearing left at the fork at about 15 mph, I saw a horse rider ahead of me.",
+        "We went left at the mini-roundabout and a cyclist came round towards us.",
+    ],
+}
+# the ego named by a noun, before the verb or as the subject of a copula whose complement turns;
+# an infinitive shares the subject of the verb it completes
+NAMED = {
+    "left": [
+        "The host vehicle is a minibus turning left at a signalised crossroads at 12 km/h.",
+        "I'm sitting at the give-way line waiting to turn left, and a cyclist passes along the main road.",
+        "Our car pulls up at the junction to turn left while a pedestrian crosses the side road.",
+    ],
+    "right": [
+        "VUT turns at right at the crossing, a pedestrian is on the far kerb.",
+        "The ego Volvo XC60 arrived at the junction and turned right, a cyclist was coming the other way.",
+        "Ego 25 km/h, crossroads, turning R, oncoming cyclist.",
+    ],
+}
+# "a left turn" as the object of the ego's verb; an opening participle takes the main clause's subject
+TURN_NOUN_AND_OPENING = {
+    "left": [
+        "The ego performs a left turn at the signalised junction while a pedestrian waits.",
+        "While turning left, the test vehicle meets a cyclist on the inside.",
+        "Pulling away from the lights to go left, I spotted a jogger on the crossing.",
+    ],
+    "right": [
+        "The subject vehicle executes a right turn into the side road at 12 km/h.",
+        "Before turning right, the ego slows to 15 km/h for a pedestrian.",
+        "We completed the right turn onto the high street as a moped came past.",
+    ],
+    None: [
+        "The van ahead of the ego sits in the left turn lane.",
+        "While turning right, a cyclist cuts across the ego's path.",
+    ],
+}
+# another road user's turn is its own, however it is said: the ego's route is not read from it
+OTHERS = {
+    None: [
+        "A van coming the other way made a right across my lane into the garage forecourt.",
+        "I was heading into town when the cyclist ahead of me turned left without signalling.",
+        "The lorry in front swung left into the yard and I slowed behind it.",
+        "I waited at the lights for the bus to turn right.",
+        "A moped pulled right in front of me at the junction.",
+        "I braked but the van went right into the back of the taxi.",
+    ],
+}
+
+
+def _cases(*groups: dict) -> list:
+    return [(text, route) for group in groups for route, texts in group.items() for text in texts]
+
+
+@pytest.mark.parametrize("text, route", _cases(INHERITED, NARRATOR, NAMED, TURN_NOUN_AND_OPENING, OTHERS))
+def test_the_ego_route_is_read_from_the_ego_clauses(text, route):
+    assert ego_route(_tokens(text)) == route
+
+
+@pytest.mark.parametrize("text, route", _cases(INHERITED, NARRATOR, NAMED))
+def test_the_reader_takes_the_ego_route(text, route):
+    assert read(text).ego_route == route
+
+
+# the ego turning left or right turns at a junction, whatever the road was called
+TURN_AT_A_JUNCTION = [
+    "Made a right onto Elm Street at 15 mph when a kid on a scooter came off the kerb on my left.",
+    "I turned left into Rope Walk, a narrow street, and a dog ran out from between parked cars.",
+    "On a straight road the ego turns right into a driveway while a cyclist comes the other way.",
+]
+
+
+@pytest.mark.parametrize("text", TURN_AT_A_JUNCTION)
+def test_the_ego_turning_turns_at_a_junction(text):
+    assert read(text).map_kind == "crossroad"

@@ -1,0 +1,172 @@
+"""How aggressively a road user acts (its criticality: ``dangerous``, ``moderate`` or ``safe``), read
+from the scales people state it on rather than from a list of phrases.
+
+Three small closed scales carry it, each with its degree words and its negation:
+
+* **closeness to the ego**: "close", "tight" (and "closer than I'd like"), graded by a degree word: a
+  mild one ("a bit", "slightly", "a little") makes it moderate, a strong one ("very", "too",
+  "dangerously") dangerous. Closeness to a place ("tight to the kerb", "close to the verge") is where a
+  road user rides, not a margin to the ego;
+* **the margin left**: a wide one ("plenty of room", "loads of space", "a good way ahead", "well
+  clear", "well ahead of me") is safe; a wide one denied ("not much room") is dangerous;
+* **timing**: "late" said of an act ("changed lane very late") is dangerous; "late morning" is a time.
+
+A negator before a word of danger ("nothing dangerous", "not aggressive", "nothing crazy") denies the
+danger: alone it leaves a safe pass, beside a mild closeness ("bit close but nothing crazy") a
+moderate one. A level stated under a label ("Crit: high", "criticality low") is taken as said.
+"""
+
+from __future__ import annotations
+
+DANGEROUS, MODERATE, SAFE = "dangerous", "moderate", "safe"
+
+_CLOSE = frozenset(("close", "closer", "tight", "tighter", "near"))
+#: Degree words below and above the plain meaning.
+_MILD = frozenset(("bit", "little", "slightly", "somewhat", "fairly", "tad", "touch", "mildly", "reasonably"))
+_STRONG = frozenset(("very", "too", "really", "so", "dangerously", "uncomfortably", "extremely", "way", "scarily",
+                     "much", "far", "seriously", "properly", "incredibly", "terribly", "bloody"))  # fmt: skip
+#: Places a road user keeps close to: its line, not a margin to the ego.
+_PLACES = frozenset(("kerb", "curb", "verge", "edge", "side", "wall", "line", "centre", "center", "gutter", "hedge",
+                     "pavement", "sidewalk", "shoulder", "fence", "barrier", "left", "right", "middle"))  # fmt: skip
+_NEGATORS = frozenset(("no", "not", "never", "nothing", "none", "nowhere", "hardly", "without", "neither", "nor"))
+#: Words of danger a negator denies ("nothing dangerous", "not aggressive", "nothing crazy").
+_DANGER = frozenset(("dangerous", "dangerously", "aggressive", "aggressively", "reckless", "recklessly", "crazy",
+                     "scary", "hairy", "mad", "wild", "dramatic", "alarming", "sketchy", "close", "sudden",
+                     "risky", "frightening", "terrifying", "hectic"))  # fmt: skip
+#: Words of danger that say the class outright when not denied.
+_SAID_DANGER = frozenset(("dangerous", "dangerously", "aggressive", "aggressively", "reckless", "recklessly"))
+#: Quantities of a wide margin and what they measure ("plenty of room", "loads of space").
+_WIDE = frozenset(("plenty", "loads", "lots", "heaps", "tons", "ample", "enough", "masses", "oodles"))
+_ROOM = frozenset(("room", "space", "time", "distance", "gap", "margin", "clearance"))
+#: Where a wide margin lies ("well ahead", "a good way in front", "well clear").
+_AWAY = frozenset(("ahead", "clear", "back", "behind", "before", "away", "off", "short", "in", "out"))
+_TIMES = frozenset(("morning", "afternoon", "evening", "night", "shift", "summer", "winter", "autumn", "spring"))
+_LEVELS = {"high": DANGEROUS, "medium": MODERATE, "moderate": MODERATE, "mid": MODERATE, "low": SAFE}
+_LABELS = frozenset(("crit", "criticality", "severity", "criticity"))
+_BREAKS = frozenset(".;!?,") | {"but", "and", "then", "so", "though", "although", "because"}
+
+
+def _clauses(tokens: list[str]) -> list[list[str]]:
+    out: list[list[str]] = [[]]
+    for tok in tokens:
+        if tok in _BREAKS:
+            out.append([])
+        else:
+            out[-1].append(tok)
+    return [c for c in out if c]
+
+
+def _closeness(words: list[str], i: int) -> str | None:
+    """The class of a closeness word at ``i`` graded by its degree, "position" for closeness to a
+    place, or None for a plain one (left to the lexicon's reading)."""
+    after = words[i + 1 : i + 4]
+    if after[:1] in (["to"], ["against"], ["along"]) and set(after[1:]) & _PLACES:
+        return "position"  # ("tight to the curb", "close to the verge")
+    before = words[max(0, i - 3) : i]
+    if any(w in _NEGATORS for w in before):
+        return None  # (read as a denied danger)
+    if set(before) & _MILD and not set(before) & _STRONG - {"too"}:
+        return MODERATE  # ("a bit close", "a little too close": the mild degree grades the excess)
+    if set(before) & _STRONG:
+        return DANGEROUS
+    if words[i] in ("closer", "tighter") and "than" in after[:1]:
+        return MODERATE  # ("closer than I'd like": more than wished, not an emergency)
+    return None
+
+
+def _denied_danger(words: list[str], i: int) -> bool:
+    return words[i] in _DANGER and any(w in _NEGATORS for w in words[max(0, i - 3) : i])
+
+
+def _margin(words: list[str], i: int) -> str | None:
+    """A wide margin at ``i`` ("plenty of room", "a good way ahead", "well clear"): safe, or
+    dangerous when denied ("not much room", "without enough space")."""
+    w = words[i]
+    nxt = words[i + 1] if i + 1 < len(words) else ""
+    denied = any(x in _NEGATORS for x in words[max(0, i - 3) : i])
+    if w in _WIDE and (nxt in _ROOM or (nxt == "of" and i + 2 < len(words) and words[i + 2] in _ROOM)):
+        return DANGEROUS if denied else SAFE
+    if w == "much" and nxt in _ROOM and denied:
+        return DANGEROUS  # ("not much room")
+    if w == "way" and i > 0 and words[i - 1] in ("good", "long", "fair") and nxt in _AWAY:
+        return SAFE  # ("a good way ahead", "a long way off")
+    if w in ("miles", "ages") and nxt in _AWAY:
+        return SAFE  # ("miles ahead": a margin beyond measure)
+    if w == "well" and nxt in _AWAY and not (nxt == "in" and words[i + 2 : i + 3] != ["front"]):
+        return SAFE  # ("well ahead of me", "well clear", "well in front")
+    return None
+
+
+def _late(words: list[str], i: int) -> bool:
+    """ "late" said of an act ("changes lane very late", "pulled out late"), not of a time of day."""
+    if words[i] != "late":
+        return False
+    nxt = words[i + 1] if i + 1 < len(words) else ""
+    return nxt not in _TIMES and not nxt.endswith("ish") and (i == 0 or words[i - 1] not in ("a", "the", "in"))
+
+
+def _labelled(tokens: list[str]) -> str | None:
+    """A level under a label: "Crit: high", "criticality low", "severity: medium"."""
+    for i, w in enumerate(tokens):
+        if w in _LABELS:
+            for x in tokens[i + 1 : i + 3]:
+                if x in _LEVELS:
+                    return _LEVELS[x]
+                if x not in (":", "=", "-", "is"):
+                    break
+    return None
+
+
+def manner_cues(tokens: list[str]) -> list[str]:
+    """What each clause of ``tokens`` (the reader's normalised, lowercased tokens) says on the scales:
+    a class, "position" or "denied" (a denied danger), in text order."""
+    cues: list[str] = []
+    for words in _clauses(tokens):
+        for i, w in enumerate(words):
+            if _denied_danger(words, i):
+                cues.append("denied")
+                continue
+            if w in _SAID_DANGER:
+                cues.append(DANGEROUS)  # (so that "aggressively, but well ahead" is no single class)
+                continue
+            if w in _CLOSE:
+                found = _closeness(words, i)
+                if found is not None:
+                    cues.append(found)
+                continue
+            margin = _margin(words, i)
+            if margin is not None:
+                cues.append(margin)
+            elif _late(words, i) and any(x in _STRONG for x in words[max(0, i - 2) : i]):
+                cues.append(DANGEROUS)  # ("very late", "too late")
+    return cues
+
+
+def stated_manner(tokens: list[str]) -> str | None:
+    """The class the scales state for the encounter, or None when they say nothing or disagree: a
+    label first; then a denied danger with a mild closeness is moderate, alone or with a wide margin
+    safe; one class said (positions aside) is that class."""
+    label = _labelled(tokens)
+    if label is not None:
+        return label
+    cues = [c for c in manner_cues(tokens) if c != "position"]
+    kinds = set(cues)
+    if "denied" in kinds:
+        rest = kinds - {"denied"}
+        if rest <= {SAFE}:
+            return SAFE
+        if rest == {MODERATE}:
+            return MODERATE
+        return None
+    return kinds.pop() if len(kinds) == 1 else None
+
+
+def apply_manner(cls: str | None, specs: list) -> None:
+    """Give the class the scales state to the one road user that acts (moves, or does more than go on
+    or stop): the scales speak of the encounter, and with one road user in it, of that road user."""
+    if cls is None:
+        return
+    acting = [s for s in specs if s.speed_mps != 0.0 or any(b[0] not in ("keep_going", "stop") for b in s.behaviours)]
+    if len(acting) != 1:
+        return
+    acting[0].behaviours = [(name, cfg, cls, link) for name, cfg, _, link in acting[0].behaviours]

@@ -1,0 +1,229 @@
+"""Where the ego goes at a junction or a roundabout (its route: ``left`` or ``right``), read from the
+clauses whose subject is the ego, never from another road user's turn.
+
+A turn is a construction: a verb of turning or of taking a way, then a direction ("turn left", "turns
+at right", "turning to the right", "bear left", "make a left", "hang a right", "take the next left",
+"making a right turn"). Whose turn it is, is who the clause's subject is:
+
+* a subject before the verb that names the ego ("I", "we", "the ego", "VUT", "the host vehicle");
+* a subject that is the complement of a copula whose subject is the ego ("the host vehicle is a truck
+  turning right": the truck is the ego);
+* no subject of its own (a participle or a verb after "and"): the subject of the clause before it in
+  its sentence ("I was going round, turning left at the first exit"), or, at the start of a sentence of
+  a narrator's story, the narrator ("Turning right at the lights, ...").
+
+Any other subject ("a guy on a scooter made a left across my lane") makes the turn someone else's.
+The closed classes below are grammatical (auxiliaries, determiners, clause breaks) or the handful of
+English verbs that take a direction as a turn.
+"""
+
+from __future__ import annotations
+
+from vei_scenario.language.lemmas import lemmas
+
+#: Verbs that take a direction as a turn ("turn left", "bear right", "swing left", "went left").
+_TURNING = frozenset(("turn", "bear", "swing", "go", "head"))
+#: Words after "right" that make it an intensifier, not a direction ("swung right across my bonnet").
+_INTENSIFIED = frozenset(("in", "across", "through", "out", "up", "behind", "next", "there", "now", "away", "over",
+                          "past", "beside", "alongside", "under", "round", "around", "at", "by", "into",
+                          "onto"))  # fmt: skip
+#: Verbs that take "a left" or "the next right" as a turn ("make a left", "hang a right", "take a left").
+_TAKING = frozenset(("make", "take", "hang", "do", "pull", "swing", "chuck", "throw"))
+_DIRECTIONS = frozenset(("left", "right"))
+_INITIALS = {"l": "left", "r": "right"}
+#: What may follow "a left turn" when it is the turn itself (a preposition), not a modifier of a noun.
+_AFTER_TURN_NOUN = frozenset(("at", "into", "onto", "across", "from", "in", "on", "towards", "toward", "to", "off",
+                              "out", "through", "and", "with", "when", "while"))  # fmt: skip
+#: Words between a verb of turning and its direction ("turns at right", "turn to the left", "off left").
+_BEFORE_DIRECTION = frozenset(("at", "to", "the", "off", "hard", "sharp", "sharply", "slightly", "then", "on"))
+#: Words between "take"/"make" and "left" ("take the next left", "make a quick right", "the first left").
+_BEFORE_TURN_NOUN = frozenset(("a", "the", "next", "first", "second", "quick", "sharp", "hard", "late", "its", "my"))
+#: What ends a clause: punctuation and the conjunctions that open one.
+_BREAK_PUNCT = frozenset(".;!?:,—-()")
+_SENTENCE_END = frozenset(".;!?:")
+_BREAK_WORDS = frozenset(
+    ("and", "but", "then", "so", "as", "when", "while", "whilst", "until", "because", "where", "before", "after",
+     "once")
+)  # fmt: skip
+#: Auxiliaries, modals and adverbs between a subject and its verb ("I was just turning").
+_BETWEEN = frozenset(
+    ("is", "was", "were", "are", "am", "be", "been", "being", "has", "have", "had", "will", "would", "can", "could",
+     "should", "must", "to", "just", "then", "also", "still", "already", "about", "going", "slowly", "did", "does",
+     "do", "needs", "need", "wants", "want", "starts", "started", "begins", "began", "shall", "'s", "'m", "'re")
+)  # fmt: skip
+_COPULA = frozenset(("is", "was", "are", "were", "'s"))
+#: The ego's names as the reader normalises them.
+_EGO_HEADS = frozenset(("i", "we", "ego", "vut", "sut", "sv", "av", "im"))
+_EGO_PHRASES = (
+    ("host", "vehicle"), ("subject", "vehicle"), ("test", "vehicle"), ("our", "car"), ("my", "car"),
+    ("our", "vehicle"), ("my", "vehicle"), ("under", "test"), ("ego", "vehicle"), ("ego", "car"),
+)  # fmt: skip
+_FIRST_PERSON = frozenset(("i", "we", "me", "my", "us", "our"))
+_PREPOSITIONS = frozenset(("of", "behind", "to", "with", "for", "at", "from", "past", "by", "than", "before", "after",
+                           "towards", "toward", "ahead", "beside", "near", "like", "into", "in", "on"))  # fmt: skip
+_DETERMINERS = frozenset(("the", "a", "an", "this", "that", "my", "our", "his", "her", "its", "their", "your"))
+
+
+def _clauses(tokens: list[str]) -> list[tuple[list[str], bool]]:
+    """The clauses of ``tokens`` with whether each opens its sentence."""
+    out: list[tuple[list[str], bool]] = []
+    current: list[str] = []
+    first = True
+    for tok in tokens:
+        if tok in _BREAK_PUNCT or tok in _BREAK_WORDS:
+            if current:
+                out.append((current, first))
+            first = tok in _SENTENCE_END or (first and not current)
+            current = []
+            continue
+        current.append(tok)
+    if current:
+        out.append((current, first))
+    return out
+
+
+def _lemma_in(word: str, verbs: frozenset[str]) -> bool:
+    forms = {word}
+    for found in lemmas(word).values():
+        forms.update(found)
+    return bool(forms & verbs)
+
+
+def _turn_noun_at(words: list[str], i: int) -> int | None:
+    """Where the verb stands whose object is "a left turn" / "the right turn" at ``i`` (the direction):
+    "the ego performs a left turn at the junction", "we completed the right turn"; not "a left-turn lane"
+    or "the left turn signal"."""
+    if words[i] not in _DIRECTIONS or words[i + 1 : i + 2] != ["turn"] or i < 2 or words[i - 1] not in ("a", "the"):
+        return None
+    after = words[i + 2 : i + 3]
+    if after and after[0] not in _AFTER_TURN_NOUN:
+        return None
+    return i - 2 if _is_verb(words[i - 2]) or "VERB" in lemmas(words[i - 2]) else None
+
+
+def _turn_at(words: list[str], i: int) -> str | None:
+    """The direction of a turn whose verb stands at ``i``, or None."""
+    w = words[i]
+    after = words[i + 1 : i + 5]
+    if _lemma_in(w, _TURNING):
+        if after and after[0] in _INITIALS:
+            return _INITIALS[after[0]]  # ("turning R": a terse report's initial)
+        for k, x in enumerate(after):
+            if x in _DIRECTIONS:
+                nxt = after[k + 1] if k + 1 < len(after) else ""
+                if x == "right" and nxt in _INTENSIFIED and not _lemma_in(w, frozenset(("turn",))):
+                    return None
+                return x  # ("turn left", "turns at right", "turning to the right")
+            if x not in _BEFORE_DIRECTION:
+                break
+    if _lemma_in(w, _TAKING):
+        for k, x in enumerate(after):
+            if x in _DIRECTIONS:
+                nxt = after[k + 1] if k + 1 < len(after) else ""
+                if (k > 0 or nxt == "turn") and nxt not in ("lane", "side", "hand", "of", "kerb", "arm", "pavement"):
+                    return x  # ("make a left", "take the next right", "making a right turn")
+                break
+            if x not in _BEFORE_TURN_NOUN:
+                break
+    return None
+
+
+def _subject_before(words: list[str], i: int) -> list[str]:
+    """The words of the subject before the verb at ``i`` (past auxiliaries and adverbs). A verb in the
+    infinitive ("... to turn left") shares the subject of the clause it completes ("I'm sat waiting to
+    turn right", "I pulled up to the junction to turn left"), unless "for" names its own ("for the van
+    to turn")."""
+    j = i - 1
+    while j >= 0 and (words[j] in _BETWEEN or words[j].endswith("ly")):
+        j -= 1
+    if i > 0 and words[i - 1] == "to":
+        before = words[: i - 1]
+        if "for" in before[-4:]:
+            return before[before.index("for", max(0, len(before) - 4)) + 1 :]
+        for k, w in enumerate(before):
+            if w in _EGO_HEADS and k == 0:
+                return [w]
+            if w not in _BETWEEN and _is_verb(w):
+                return _subject_before(before, k)  # (none before a participle: "pulling out to go right")
+    return words[: j + 1]
+
+
+def _is_verb(w: str) -> bool:
+    found = lemmas(w)
+    return "VERB" in found and "NOUN" not in found
+
+
+def _names_ego(phrase: list[str]) -> bool:
+    """Whether the noun phrase ending ``phrase`` is the ego: it ends with one of the ego's names (a
+    pronoun "I"/"we" right before the verb is always its subject; "ego" not after a preposition, as in
+    "the car behind the ego"), or it opens with one and goes on with no preposition ("the ego Skoda
+    Octavia": the ego and its make)."""
+    if not phrase:
+        return False
+    if phrase[-1] in ("i", "we"):
+        return True
+    if phrase[-1] in _EGO_HEADS:
+        return len(phrase) == 1 or phrase[-2] in ("the", "our", "my", "and")
+    if any(tuple(phrase[-len(p) :]) == p for p in _EGO_PHRASES):
+        return True
+    return _opens_with_ego(phrase) and not _PREPOSITIONS & set(phrase)
+
+
+def _opens_with_ego(words: list[str]) -> bool:
+    """Whether ``words`` open with a name of the ego ("the ego 30 mph", "host vehicle is ...")."""
+    head = words[1:] if words and words[0] in ("the", "our", "my") else words
+    return bool(head) and (head[0] in _EGO_HEADS or any(tuple(head[: len(p)]) == p for p in _EGO_PHRASES))
+
+
+def _whose(subject: list[str]) -> str | None:
+    """``ego``, ``other`` or None (no subject) for the words before a verb."""
+    if not subject:
+        return None
+    if _names_ego(subject):
+        return "ego"
+    # the complement of a copula: "the host vehicle is a 40 t truck (turning right)"
+    for k in range(len(subject) - 1, 0, -1):
+        if subject[k] in _COPULA:
+            return "ego" if _names_ego(subject[:k]) else "other"
+    return "other"
+
+
+def _own_subject(words: list[str]) -> str | None:
+    """The clause's own subject, told apart as the ego or someone else: the words before its first verb."""
+    if words and words[0] in _EGO_HEADS:
+        return "ego"
+    for k, w in enumerate(words):
+        if k > 0 and w not in _BETWEEN and "VERB" in lemmas(w) and words[k - 1] not in _DETERMINERS:
+            return _whose(_subject_before(words, k))
+    return "ego" if _opens_with_ego(words) else None  # (a noun phrase alone: "Ego 30 mph, T-junction, ...")
+
+
+def ego_route(tokens: list[str]) -> str | None:
+    """``left`` or ``right`` when a clause whose subject is the ego turns, else None; from the reader's
+    normalised, lowercased tokens."""
+    story = bool(_FIRST_PERSON & set(tokens))
+    previous: str | None = None
+    clauses = _clauses(tokens)
+    for n, (words, first) in enumerate(clauses):
+        if first:
+            previous = None
+        for i in range(len(words)):
+            direction, verb = _turn_at(words, i), i
+            if direction is None:
+                verb = _turn_noun_at(words, i)
+                direction = words[i] if verb is not None else None
+            if direction is None or verb is None:
+                continue
+            who = _whose(_subject_before(words, verb))
+            if who is None and previous is not None:
+                who = previous
+            elif who is None and first:
+                # a sentence opening with the turn: the narrator's in a story, else the subject of the
+                # main clause after it ("While turning right, the ego meets a cyclist")
+                following = clauses[n + 1] if n + 1 < len(clauses) and not clauses[n + 1][1] else None
+                who = "ego" if story else _own_subject(following[0]) if following else None
+            if who == "ego":
+                return direction
+        own = _own_subject(words)
+        previous = own or previous
+    return None
