@@ -227,3 +227,51 @@ def test_a_far_or_near_side_restated_plainly(text, expected):
 )
 def test_an_end_of_a_vehicle_is_no_place(text, expected):
     assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        (
+            "Three lanes each way, ego in the left lane at 90 km/h; a coach in the middle lane 25 m ahead "
+            "moves over to the right lane.",
+            "right",
+        ),
+        ("Ego: middle lane, 100 km/h. A van in the right lane, 15 m ahead, changes to the left lane.", "right"),
+        (
+            "I'm in the right lane at 60 mph; a minibus in the centre lane 40 m in front drifts to the left lane.",
+            "left",
+        ),
+    ],
+)
+def test_a_lane_beside_the_egos_with_a_distance_ahead_is_where_it_starts(text, expected):
+    """The lane says the side, "N m ahead" how far along: a lane change from it starts beside the ego."""
+    assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A scooter rider overtakes me, and once he is in my lane he slams on the brakes. I'm at 40 km/h.",
+        "At 80 km/h a sports car passes us and then, in our lane, it brakes hard.",
+        "ego 60 km/h, bike overtake ego then he go in ego lane and he stop suddenly",
+    ],
+)
+def test_a_road_user_overtaking_the_ego_starts_behind_it(text):
+    """Overtaking the ego ends in its lane ahead: "in my lane" said after it is where it ends up."""
+    reading = read(text)
+    assert reading.actors[0].relation in ("behind", None)
+    assert reading.actors[0].behaviours[0][0] == "overtake"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "On a roundabout at 25 km/h, the van ahead of me brakes at the exit.",
+        "Roundabout, ego 30 km/h: the car in front slows down at the entrance.",
+        "At the crossroads, ego 40 km/h, the bus in front of us stops at the approach.",
+    ],
+)
+def test_a_lead_doing_something_at_a_junction_arm_stays_ahead(text):
+    """ "at the entry" after what a lead does is where it does it, not an arm it comes out of."""
+    assert relation(text) == "ahead"

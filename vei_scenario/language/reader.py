@@ -1629,8 +1629,7 @@ def read(text: str) -> Reading:
             if behaviours[0][0] in ("change_lane", "cut_out") or moving_out:
                 origin = a.lane_side or a.side  # ("a truck in the right lane moves into the left lane": from there)
                 a.lane_side, a.side = None, a.toward
-                if a.relation is None and origin in ("left", "right") and origin != a.toward:
-                    a.relation = origin
+                a.relation = sides.origin_lane(origin, a.relation) or a.relation
             elif not (a.lane_side or a.side or a.kerb_side):
                 a.side = "left" if a.toward == "right" else "right"
         if behaviours and behaviours[0][0] == "change_lane" and sides.starts_in_lane(a.lane_side, a.side, a.toward):
@@ -2300,7 +2299,7 @@ def _apply(m, who, r, link, added) -> None:
             a.distance_m = m.value
         elif m.slot == "relation" and m.value in ("ahead", "behind") and m.next_ in ("it", "him", "her", "them"):
             a.said.add("near_other")  # "a car behind it swerves": behind another road user, not the ego
-        elif m.slot == "relation" and m.value == "ahead" and a.behaviours and a.behaviours[-1][0] == "cut_in":
+        elif m.slot == "relation" and sides.where_it_ends(m.value, a.behaviours):
             a.said.add("in_front")  # "cuts in 10 m ahead": where it cuts in, not where it starts
         elif m.slot == "relation":
             a.said.add(m.value)
@@ -2325,7 +2324,11 @@ def _apply(m, who, r, link, added) -> None:
         elif m.slot == "kerb_side":
             a.kerb, a.kerb_side = True, m.value
             a.came_from = a.came_from or _from(m)
-        elif m.slot == "arm" and m.prev not in _LANDMARK_PREPOSITIONS:
+        elif (
+            m.slot == "arm"
+            and m.prev not in _LANDMARK_PREPOSITIONS
+            and not sides.arm_is_where_it_acts(m.prev, a.said, a.behaviours)
+        ):
             a.arm = True  # (not "on the crossing just after the exit": a landmark, not where it comes from)
         elif m.slot == "stationary":
             a.stationary = True

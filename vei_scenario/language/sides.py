@@ -234,6 +234,35 @@ def starts_in_lane(lane: str | None, side: str | None, toward: str | None) -> bo
     return lane in ("left", "right") and side is None and toward is None
 
 
+#: Behaviours that end in the ego's lane in front of it: a cut-in, an overtake of the ego.
+_ENDS_IN_FRONT = frozenset({"cut_in", "overtake"})
+
+
+def where_it_ends(relation: object, behaviours: list) -> bool:
+    """Whether "ahead" (or "in my lane") said of a road user after it has cut in or overtaken the ego
+    says where that behaviour ends, not where it starts ("overtakes me, and once in my lane he
+    brakes", "cuts in 10 m ahead"): overtaking the ego, it started behind or beside it."""
+    return relation == "ahead" and any(b[0] in _ENDS_IN_FRONT for b in behaviours)
+
+
+def arm_is_where_it_acts(prep: str | None, said: set, behaviours: list) -> bool:
+    """Whether a junction arm said "at" after what a road user ahead of (or behind) the ego does is
+    where it does it ("the car in front slows at the entry", "the van behind me stops at the exit"),
+    not an arm it comes out of: it drives in the ego's lane towards that arm."""
+    return prep == "at" and bool(said & {"ahead", "behind"}) and bool(behaviours)
+
+
+def origin_lane(origin: str | None, relation: str | None) -> str | None:
+    """Where a lane changer starts when its own lane and the lane it moves to are both said ("a coach
+    in the middle lane, 25 m ahead, moves over to the right lane", the ego in the left lane): the
+    side of its own lane, beside the ego, even when a distance ahead is said too ("ahead" says how
+    far along, the lane which lane); None when the lane says no side or the relation stands. (Its own
+    lane is relative to the ego's, the lane it moves to is named as the road's: they are not compared.)"""
+    if origin in ("left", "right") and relation in (None, "ahead"):
+        return origin
+    return None
+
+
 def starts_in_ego_lane(said: set) -> bool:
     """Whether a wrong-way road user starts in the ego's lane facing it, rather than oncoming in its
     own and drifting over: not when it is said to come towards the ego ("comes at me head-on in my
