@@ -275,3 +275,19 @@ def test_a_road_user_overtaking_the_ego_starts_behind_it(text):
 def test_a_lead_doing_something_at_a_junction_arm_stays_ahead(text):
     """ "at the entry" after what a lead does is where it does it, not an arm it comes out of."""
     assert relation(text) == "ahead"
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("At a crossroads I'm doing 20 mph and a van comes from the left, slows and lets me through.", "junction_left"),
+        ("Approaching the junction at 40 km/h, a cyclist comes along from my left and slows down.", "junction_left"),
+        ("T-junction ahead, ego 30 km/h: a moped rider approaching from the right eases off.", "junction_right"),
+    ],
+)
+def test_a_road_user_coming_from_a_side_at_a_junction_comes_along_that_arm(text, expected):
+    assert relation(text) == expected
+
+
+def test_a_lane_said_at_a_junction_stays_a_lane():
+    assert relation("At the junction at 40 km/h, a car in the right lane slows down.") == "right"

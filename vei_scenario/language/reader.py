@@ -1008,6 +1008,9 @@ def _resolve_relation(a: _Actor, map_kind: str | None) -> str | None:
         return f"{where}_{side if side in ('left', 'right') else 'right'}"
     if junction and a.arm and side in ("left", "right"):
         return f"junction_{side}"  # from the side road on the left: that arm, even if it approaches
+    on_the_road = a.came_from and rides and not (a.kerb or a.kerb_side or a.lane_side)
+    if arm := sides.arm_it_comes_from(junction, on_the_road, a.side, first, a.said):
+        return arm  # ("at the T-junction a cyclist comes from the right")
     if a.relation == "oncoming" and junction:  # at a junction what comes towards the ego comes from the
         return f"junction_{side}" if side in ("left", "right") else "junction_opposite"  # arm said, else opposite
     if a.followed and first == "cut_in":

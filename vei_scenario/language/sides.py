@@ -252,6 +252,20 @@ def arm_is_where_it_acts(prep: str | None, said: set, behaviours: list) -> bool:
     return prep == "at" and bool(said & {"ahead", "behind"}) and bool(behaviours)
 
 
+#: What a road user does first that keeps it on the ego's road even when it is said to come from a side.
+_ALONG_THE_EGOS_ROAD = frozenset({"overtake", "follow_vehicle", "cut_out", "change_lane", "wrong_way"})
+
+
+def arm_it_comes_from(junction: bool, came_from: bool, side: str | None, first: str | None, said: set) -> str | None:
+    """The junction arm a vehicle or rider comes along when, at a junction, it is said to come *from*
+    a side with no lane or kerb named ("a cyclist is coming along from the right", "a van comes from
+    my left and slows"): the road on that side, not a lane beside the ego. None where it is not so
+    (a lane or the kerb said, "ahead" said of it, or what it does keeps it on the ego's road)."""
+    if not (junction and came_from and side in ("left", "right")) or "ahead" in said:
+        return None
+    return None if first in _ALONG_THE_EGOS_ROAD else f"junction_{side}"
+
+
 def origin_lane(origin: str | None, relation: str | None) -> str | None:
     """Where a lane changer starts when its own lane and the lane it moves to are both said ("a coach
     in the middle lane, 25 m ahead, moves over to the right lane", the ego in the left lane): the
