@@ -291,3 +291,28 @@ def test_a_road_user_coming_from_a_side_at_a_junction_comes_along_that_arm(text,
 
 def test_a_lane_said_at_a_junction_stays_a_lane():
     assert relation("At the junction at 40 km/h, a car in the right lane slows down.") == "right"
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # British words, no unit at all: the writer drives on the left, so the inside lane is the left one
+        ("On the motorway in the middle lane doing 60, a lorry in the inside lane wanders across into mine.", "left"),
+        ("Dual carriageway, I'm in lane 2, an HGV in the outside lane starts coming over on me.", "right"),
+        ("Middle lane of the M6, a coach on the inside lane swerves across into me, I'm doing about 65.", "left"),
+        # American words with miles per hour: the writer drives on the right
+        ("On the freeway at 60 mph in the middle lane, a semi in the inside lane drifts into mine.", "right"),
+        ("At 25 mph a kid ran out from the nearside sidewalk in front of me.", "roadside_right"),
+    ],
+)
+def test_the_writers_driving_side_from_their_words(text, expected):
+    assert relation(text) == expected
+
+
+def test_driving_side_words():
+    assert drives_on_left("a lorry in the inside lane drifted into me".split())
+    assert not drives_on_left("a lorry in the nearside lane cuts in ahead of the av".split())  # (a test line)
+    assert not drives_on_left("i was at 60 km/h and a lorry cut in".split())  # (metric: Euro NCAP's convention)
+    assert drives_on_left("on the m 25 at 70".split())
+    assert not drives_on_left("on the interstate at 70 mph".split())
+    assert not drives_on_left("stopped 25 m ahead at 70 km/h".split())

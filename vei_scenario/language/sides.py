@@ -22,7 +22,7 @@ Conventions:
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 #: Side words that name a side outright.
 _PLAIN = {"left": "left", "right": "right", "left-hand": "left", "right-hand": "right"}
@@ -78,10 +78,45 @@ class Said:
     mentions: tuple[tuple[str, object], ...]
 
 
+#: Words of the road only writers who drive on the left use (British), and only writers who drive on
+#: the right and give miles per hour use (American): they say which side a writer's "inside lane" or
+#: "nearside" is on, with or without a unit.
+_LEFT_HAND_WORDS = frozenset({"lorry", "lorries", "carriageway", "kerb", "kerbs", "kerbside", "hgv", "hgvs"})
+_RIGHT_HAND_WORDS = frozenset(
+    {"freeway", "interstate", "sidewalk", "sidewalks", "curb", "curbs", "crosswalk", "stoplight", "semi"}
+)
+
+
+#: Speed units of a writer who follows the metric convention (Euro NCAP's: the nearside is the right).
+_METRIC_SPEEDS = frozenset({"km/h", "kph", "m/s"})
+
+
+#: Words of a narrator telling their own drive.
+_FIRST_PERSON = frozenset({"i", "me", "my", "mine", "we", "us", "our", "ours"})
+
+
 def drives_on_left(tokens: list[str]) -> bool:
-    """Whether the writer drives on the left: speeds in miles per hour (the reader's normaliser writes
-    every "miles an hour" as "mph")."""
-    return "mph" in tokens
+    """Whether the writer drives on the left: speeds in miles per hour without American road words
+    (the reader's normaliser writes every "miles an hour" as "mph"); or, with no metric speed, a
+    motorway named as Britain's ("the M25"), or a driver telling their own drive in British road words
+    ("a lorry in the inside lane drifted into me"). A test line ("a lorry in the nearside lane cuts in
+    ahead of the AV") or metric speeds follow Euro NCAP's convention, a right-hand one, whatever
+    their words."""
+    words = set(tokens)
+    if "mph" in words:
+        return not words & _RIGHT_HAND_WORDS
+    if words & _METRIC_SPEEDS:
+        return False
+    return _motorway_number(tokens) or bool(words & _LEFT_HAND_WORDS and words & _FIRST_PERSON)
+
+
+def _motorway_number(tokens: list[str]) -> bool:
+    """A British motorway named by its number ("the M25", read as "m 25"): "m" before a number, never
+    after one as a distance is."""
+    return any(
+        w == "m" and k + 1 < len(tokens) and tokens[k + 1].isdigit() and not (k and tokens[k - 1][:1].isdigit())
+        for k, w in enumerate(tokens)
+    )
 
 
 def _side(word: str, after: str, left_hand: bool, ring: bool) -> str | None:
@@ -283,6 +318,25 @@ def starts_in_ego_lane(said: set) -> bool:
     lane", "over the centre line, coming straight at me"): the writer saw it arrive from the other
     way, and "in my lane" says where it drives into."""
     return "oncoming" not in said
+
+
+def narrator_lane(clauses: list) -> list:
+    """Clauses (link, mentions) with a lane said before anyone is named given to the ego, when the
+    first road user named after it has a lane of its own said right after it ("On the motorway in the
+    middle lane doing 60, a lorry in the inside lane wanders across": the middle lane is the
+    narrator's). One road user does not start in two lanes, and the writer drives in the first."""
+    flat = [m for _, mentions in clauses for m in mentions]
+    first = next((k for k, m in enumerate(flat) if m.slot in ("actor", "pronoun", "lane_side")), None)
+    if first is None or flat[first].slot != "lane_side":
+        return clauses
+    after = next((k for k in range(first + 1, len(flat)) if flat[k].slot in ("actor", "pronoun")), None)
+    if after is None or flat[after].slot != "actor" or flat[after].value == "ego" or after + 1 >= len(flat):
+        return clauses
+    if flat[after + 1].slot != "lane_side" or flat[first].end == flat[after].start:
+        return clauses  # (its lane is not said, or the first lane is the road user's: "middle-lane car")
+    lane = flat[first]
+    ego = replace(lane, slot="actor", value="ego", words="ego", end=lane.start, next_=lane.words.split()[0])
+    return [(link, [x for m in mentions for x in ((ego, m) if m is lane else (m,))]) for link, mentions in clauses]
 
 
 #: Compass headings in degrees, and the words that say them ("eastbound"; "heading east").
