@@ -316,3 +316,17 @@ def test_driving_side_words():
     assert drives_on_left("on the m 25 at 70".split())
     assert not drives_on_left("on the interstate at 70 mph".split())
     assert not drives_on_left("stopped 25 m ahead at 70 km/h".split())
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("VUT 40 km/h, cyclist crossing R->L at 15 km/h", "roadside_right"),
+        ("A child runs across right to left in front of the ego at 30 km/h.", "roadside_right"),
+        ("pedestrian crossing left->right, ego 30 km/h", "roadside_left"),
+        ("Ego 25 km/h; a jogger crosses L > R.", "roadside_left"),
+    ],
+)
+def test_a_crossing_direction_in_notation_starts_at_its_first_side(text, expected):
+    """ "L->R", "right to left": the crossing starts on the side said first."""
+    assert relation(text) == expected
