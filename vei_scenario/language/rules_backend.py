@@ -59,8 +59,10 @@ def _config(rng: random.Random, name: str, given: dict, crit: str | None) -> tup
     return cfg, cls
 
 
-def sample_layers(reading: Reading, text: str, seed: int) -> dict:
-    """The layers of one scenario of ``reading``, details drawn from ``seed``."""
+def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | None = None) -> dict:
+    """The layers of one scenario of ``reading``, details drawn from ``seed``. What the text states
+    that these layers cannot keep (a gap too short for the road user to cover) is appended to
+    ``notes``, one sentence each, for the run to say."""
     rng = random.Random(seed)
     behaviour_names = [b[0] for a in reading.actors for b in a.behaviours]
     kind = reading.map_kind
@@ -154,6 +156,10 @@ def sample_layers(reading: Reading, text: str, seed: int) -> dict:
         else:
             spec_lateral = spec.lateral_m
         crossing = relation.startswith("roadside") and first.NAME == "cross_in_front"
+        if crossing and spec.distance_m is not None:
+            why = _cross_at_distance(spec.kind, relation, first_cfg, ego, lanes, spec.distance_m)
+            if why and notes is not None:
+                notes.append(f"{name}: {why}")
         if "distance_m" in ego and not adversaries and crossing:
             # the crossing lies on the ego's way to its junction: the ego starts far enough back for the
             # road user to get across in time (a child crossing four lanes at 1.5 m/s needs ~9 s)
@@ -161,8 +167,6 @@ def sample_layers(reading: Reading, text: str, seed: int) -> dict:
             if room > float(ego["distance_m"]):  # (within the road before the map's feature: a curve's is short)
                 before = layout({"kind": kind, "lanes_per_direction": lanes}).feature_s_m or ARM_LENGTH_M
                 ego["distance_m"] = round(min(room, ARM_LENGTH_M - 20.0, before - 10.0), 3)
-        if crossing and spec.distance_m is not None:
-            _cross_at_distance(spec.kind, relation, first_cfg, ego, lanes, spec.distance_m)
         spawn, speed = place_adversary(
             spec.kind, relation, first.NAME, first_cfg, ego, lanes, given_speed, spec.distance_m
         )
@@ -453,25 +457,52 @@ def _crossing_speed(kind: str, cfg: dict) -> float:
 EARLIEST_IN_FRONT_S = -0.2
 
 
-def _cross_at_distance(kind: str, relation: str, cfg: dict, ego: dict, lanes: int, distance_m: float) -> None:
+def _cross_at_distance(kind: str, relation: str, cfg: dict, ego: dict, lanes: int, distance_m: float) -> str | None:
     """A crossing whose distance from the ego is stated ("steps out 15 m ahead"): its timing
     (``arrival_gap_s``) is the one that sets it off when the ego is that far away, and the distance is
-    kept in its configuration. Closer than a crossing can be and still come in front of the ego, it
-    crosses as close as it can (the dangerous profile's earliest timing); beyond the behaviour's range
-    the timing is left as drawn."""
+    kept in its configuration. Where its usual crossing speed cannot meet the ego as its criticality
+    says from there, the crossing speed (unless stated) is the one within its type's reach that comes
+    nearest, and the timing follows from the stated gap (a child 10 m ahead of a car at 30 km/h runs,
+    and reaches the lane just as the car does). Returns None when the gap is kept, else why not (the
+    timing is then the nearest the behaviour holds)."""
     from vei_scenario.language.behaviours.cross_in_front import PARAMETERS, START_RAMP_S
 
     k = int(ego["lane"])
     cross = (k - 0.5) * 3.5 + 1.0 if relation == "roadside_right" else (2 * lanes - k + 0.5) * 3.5 + 1.0
-    speed = _crossing_speed(kind, cfg)
     accel = TYPES[kind][4]
-    ramp = max(START_RAMP_S, speed / accel if accel > 0 else 0.0)
-    gap = distance_m / max(float(ego["speed_mps"]), 0.5) - (cross / speed + ramp / 2)
-    if EARLIEST_IN_FRONT_S <= gap <= PARAMETERS["arrival_gap_s"].high:
+    ego_speed = max(float(ego["speed_mps"]), 0.5)
+    low, high = PARAMETERS["arrival_gap_s"].low, PARAMETERS["arrival_gap_s"].high
+
+    def gap_at(speed: float) -> float:
+        ramp = max(START_RAMP_S, speed / accel if accel > 0 else 0.0)
+        return distance_m / ego_speed - (cross / speed + ramp / 2)
+
+    speed = _crossing_speed(kind, cfg)
+    gap = gap_at(speed)
+    if not EARLIEST_IN_FRONT_S <= gap <= high and "crossing_speed_mps" not in cfg:
+        wanted = min(max(float(cfg.get("arrival_gap_s", 0.5)), EARLIEST_IN_FRONT_S), high)
+        top = min(PARAMETERS["crossing_speed_mps"].high, TYPES[kind][3])
+        lo = PARAMETERS["crossing_speed_mps"].low
+        steps = max(int((top - lo) / CROSSING_SPEED_STEP_MPS), 1)
+        candidates = [round(lo + (top - lo) * i / steps, 3) for i in range(steps + 1)]
+        speed = min(candidates, key=lambda v: (abs(gap_at(v) - wanted), abs(v - speed)))
+        gap = gap_at(speed)
+        if low <= gap <= high:
+            cfg["crossing_speed_mps"] = speed
+    if low <= gap <= high:
         cfg["arrival_gap_s"] = round(gap, 3)
         cfg["distance_m"] = round(distance_m, 3)
-    elif gap < EARLIEST_IN_FRONT_S:  # too close to get in front of the ego first: as close as it can
-        cfg["arrival_gap_s"] = EARLIEST_IN_FRONT_S
+        return None
+    cfg["arrival_gap_s"] = EARLIEST_IN_FRONT_S if gap < low else float(cfg.get("arrival_gap_s", 0.5))
+    needed = "faster" if gap < low else "more slowly"
+    return (
+        f"the {kind}'s stated gap of {distance_m:g} m: to set off then and still meet the ego it would "
+        f"have to cross the {cross:.1f} m to the ego's lane {needed} than a {kind} can at the ego's speed"
+    )
+
+
+#: The step of the crossing speeds tried for a stated gap (m/s).
+CROSSING_SPEED_STEP_MPS = 0.05
 
 
 def _crossing_lon_m(kind: str, relation: str, cfg: dict, ego: dict, lanes: int) -> float:

@@ -1,0 +1,65 @@
+"""A gap the text states reaches the layers: a crossing sets off when the ego is that far away (its
+crossing speed, unless stated, adjusted so its timing still fits), or the run says why it cannot."""
+
+import pytest
+
+from vei_scenario.language.behaviours.cross_in_front import trigger_distance
+from vei_scenario.language.layers import behaviour_nodes
+from vei_scenario.language.reader import read
+from vei_scenario.language.rules_backend import sample_layers
+from vei_scenario.language.scenario_writer import TYPES
+
+LANE_M = 3.5
+
+
+def _crossing(layers: dict) -> tuple[dict, dict]:
+    for adv in layers["adversaries"]:
+        for _, node in behaviour_nodes(adv["behaviour"]):
+            if node["behaviour"] == "cross_in_front":
+                return adv, node["config"]
+    raise AssertionError("no crossing")
+
+
+def _set_off_distance(layers: dict) -> float:
+    """The ego's distance when the crosser sets off, from the layers' own values."""
+    adv, cfg = _crossing(layers)
+    lanes = layers["environment"]["map"]["lanes_per_direction"]
+    k = int(layers["ego"]["lane"])
+    right = adv["spawn"]["relation"] == "roadside_right"
+    cross = (k - 0.5) * LANE_M + 1.0 if right else (2 * lanes - k + 0.5) * LANE_M + 1.0
+    speed = float(cfg.get("crossing_speed_mps", 1.5 if adv["type"] == "pedestrian" else 4.0))
+    return trigger_distance(
+        float(layers["ego"]["speed_mps"]), cross, speed, TYPES[adv["type"]][4], cfg["arrival_gap_s"]
+    )
+
+
+@pytest.mark.parametrize(
+    "text, gap",
+    [
+        ("A boy dashes out from between parked cars on the right 8 m ahead of the ego at 40 km/h.", 8.0),
+        ("Ego 50 km/h; a woman steps off the kerb on the right only 12 m in front of the car.", 12.0),
+        ("At 30 km/h a cyclist shoots out from the right kerb 6 m in front of us.", 6.0),
+        ("Ego at 20 km/h. Toddler wanders off the pavement on the right 55 m ahead.", 55.0),
+    ],
+)
+def test_a_stated_crossing_gap_is_where_it_sets_off(text, gap):
+    reading = read(text)
+    for seed in range(3):
+        layers = sample_layers(reading, text, seed)
+        _, cfg = _crossing(layers)
+        assert cfg.get("distance_m") == gap
+        assert _set_off_distance(layers) == pytest.approx(gap, abs=0.3)
+
+
+def test_a_stated_gap_no_crossing_can_keep_is_said_with_its_reason(tmp_path, capsys):
+    """Three lanes to cross on foot in under a second: the run says the gap is not kept, and why."""
+    from vei_scenario.cli import main
+
+    text = "Ego at 60 km/h, two lanes each way. A man sprints out from the left kerb 5 m in front of the ego."
+    notes: list[str] = []
+    layers = sample_layers(read(text), text, 0, notes)
+    assert "distance_m" not in _crossing(layers)[1]
+    assert len(notes) == 1 and "stated gap of 5 m" in notes[0] and "faster than a pedestrian can" in notes[0]
+    assert main(["describe", text, "-o", str(tmp_path / "x"), "--count", "2", "--layers-only"]) == 0
+    said = capsys.readouterr().out
+    assert "not kept in 2 of 2 scenario(s): Adversary1: the pedestrian's stated gap of 5 m" in said
