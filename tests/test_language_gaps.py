@@ -63,3 +63,40 @@ def test_a_stated_gap_no_crossing_can_keep_is_said_with_its_reason(tmp_path, cap
     assert main(["describe", text, "-o", str(tmp_path / "x"), "--count", "2", "--layers-only"]) == 0
     said = capsys.readouterr().out
     assert "not kept in 2 of 2 scenario(s): Adversary1: the pedestrian's stated gap of 5 m" in said
+
+
+def _overtake_gap(text: str) -> float | None:
+    spec = read(text).actors[0]
+    return next((cfg.get("gap_m") for name, cfg, _, _ in spec.behaviours if name == "overtake"), None)
+
+
+@pytest.mark.parametrize(
+    "text, gap",
+    [
+        ("A sports car overtakes me at 80 km/h and pulls back in only 3 m ahead of my bumper.", 3.0),
+        ("Doing 50 mph when a van passes us and cuts back in with about 10 feet to spare.", 3.05),
+        ("ego 100 km/h, motorbike overtake me and come back in my lane 5 m in front", 5.0),
+    ],
+)
+def test_a_gap_said_after_an_overtake_is_where_it_cuts_back_in(text, gap):
+    assert _overtake_gap(text) == pytest.approx(gap, abs=0.06)
+    layers = sample_layers(read(text), text, 0)
+    assert layers["adversaries"][0]["spawn"]["longitudinal_m"] < -10.0  # (it starts behind the ego, not at the gap)
+
+
+def test_a_gap_said_before_an_overtake_is_where_it_starts():
+    text = "A car 20 m behind me overtakes me at 90 km/h."
+    assert _overtake_gap(text) is None
+    assert sample_layers(read(text), text, 0)["adversaries"][0]["spawn"]["longitudinal_m"] == -20.0
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A coupe overtakes me at 110 km/h on the motorway and then leaves at the next exit.",
+        "Doing 60 mph, a van passes me and then takes the exit.",
+        "A bike overtakes us and turns off into the exit ahead.",
+    ],
+)
+def test_an_arm_said_after_an_overtake_is_where_it_goes(text):
+    assert not read(text).actors[0].relation or not read(text).actors[0].relation.startswith("junction")

@@ -216,6 +216,7 @@ class _Actor:
     accel_mps2: float | None = None  # how hard it changes speed ("brakes at 6 m/s²")
     toward: str | None = None  # the side it moves to ("merges right", "swerves left into our lane")
     came_from: bool = False  # a kerb or side said as where it comes from ("walks from the far side")
+    end_gap: str | None = None  # the behaviour its distance is the end gap of ("overtakes, 3 m to spare")
     word: str = ""  # the words it was first named by
     acted_on: bool = False  # the object of someone's verb ("overtakes a truck")
     pavement: bool = False  # said to be on a pavement (off the road), not in a cycle lane
@@ -1659,6 +1660,10 @@ def read(text: str) -> Reading:
         if behaviours and behaviours[0][0] == "cut_in" and a.distance_m is not None:
             name, cfg, c, lk = behaviours[0]
             behaviours[0] = (name, {**cfg, "gap_m": a.distance_m}, c, lk)
+        if a.end_gap and a.distance_m is not None:  # ("passes me and cuts back in 3 m ahead": its end gap)
+            behaviours = [
+                (n, {**c, "gap_m": a.distance_m} if n == a.end_gap else c, k, lk) for n, c, k, lk in behaviours
+            ]
         if (
             a.kind in VULNERABLE
             and (a.relation or "").startswith("junction_")
@@ -2300,6 +2305,7 @@ def _apply(m, who, r, link, added) -> None:
             a.speed_mps = -float(m.value) if a.speed_mps is None else a.speed_mps
         elif m.slot == "distance":
             a.distance_m = m.value
+            a.end_gap = sides.gap_where_it_ends(a.behaviours)
         elif m.slot == "relation" and m.value in ("ahead", "behind") and m.next_ in ("it", "him", "her", "them"):
             a.said.add("near_other")  # "a car behind it swerves": behind another road user, not the ego
         elif m.slot == "relation" and sides.where_it_ends(m.value, a.behaviours):

@@ -414,7 +414,12 @@ def _place_adversary(
             lon = min(lon, float(ego["distance_m"]) - CROSSING_CLEAR_OF_JUNCTION_M)
         spawn["longitudinal_m"] = round(lon, 3)
         out_speed = 0.0
-    elif distance_m is not None and relation in ("ahead", "behind", "oncoming") and behaviour_name != "cut_in":
+    elif (
+        distance_m is not None
+        and relation in ("ahead", "behind", "oncoming")
+        and behaviour_name != "cut_in"
+        and not (behaviour_name == "overtake" and cfg.get("gap_m") == distance_m)  # (its gap where it cuts back in)
+    ):
         spawn["longitudinal_m"] = -distance_m if relation == "behind" else distance_m  # as the text says
     elif behaviour_name == "cut_in" and speed is not None and speed > ego_speed + mod.FASTER_MPS:
         spawn["longitudinal_m"] = 0.0  # a faster car starts alongside: it draws ahead, then cuts in

@@ -280,10 +280,20 @@ def where_it_ends(relation: object, behaviours: list) -> bool:
     return relation == "ahead" and any(b[0] in _ENDS_IN_FRONT for b in behaviours)
 
 
+def gap_where_it_ends(behaviours: list) -> str | None:
+    """The behaviour a distance said of a road user is the end gap of, when it is said after the road
+    user has overtaken the ego ("overtakes me and pulls back in 3 m ahead", "whips back in front of me
+    with 20 feet to spare"): the overtake's gap where it cuts back in, not where it starts."""
+    return "overtake" if any(b[0] == "overtake" for b in behaviours) else None
+
+
 def arm_is_where_it_acts(prep: str | None, said: set, behaviours: list) -> bool:
     """Whether a junction arm said "at" after what a road user ahead of (or behind) the ego does is
     where it does it ("the car in front slows at the entry", "the van behind me stops at the exit"),
-    not an arm it comes out of: it drives in the ego's lane towards that arm."""
+    or said after it has passed the ego is where it goes, not an arm it comes out of: it drives in
+    the ego's lane towards that arm."""
+    if gap_where_it_ends(behaviours):
+        return True  # (having passed the ego: "overtakes me, then takes the next exit": where it goes)
     return prep == "at" and bool(said & {"ahead", "behind"}) and bool(behaviours)
 
 
