@@ -263,3 +263,18 @@ def test_the_target_heading_a_number_is_the_road_user_already_named(text, other)
 def test_a_speed_after_a_subject_opening_its_clause_is_the_subjects(text, ego, other):
     ego_mps, others = _speeds(text)
     assert ego_mps == pytest.approx(ego * KPH) and others == [pytest.approx(other * KPH)]
+
+
+@pytest.mark.parametrize(
+    "text, gap",
+    [
+        ("Ego: 90 km/h. Lead van at 60 km/h far ahead. Car behind the ego, following at a 2 s gap.", 50.0),
+        ("I was doing 72 km/h. A bus at 50 km/h was in the left lane. A taxi sat 1 second behind me.", 20.0),
+        ("- Ego 108 kph\n- Actor 1: lorry ahead, 70 kph\n- Actor 2: car behind, 2 s headway", 60.0),
+    ],
+)
+def test_a_time_gap_to_the_ego_is_at_the_egos_speed(text, gap):
+    """The time gap between the ego and a road user behind or ahead of it is covered at the ego's speed
+    (the follower's, who keeps pace), not at the speed of another road user said in between."""
+    r = read(text)
+    assert [a.distance_m for a in r.actors if a.distance_m is not None] == [pytest.approx(gap)]
