@@ -100,3 +100,30 @@ def test_a_gap_said_before_an_overtake_is_where_it_starts():
 )
 def test_an_arm_said_after_an_overtake_is_where_it_goes(text):
     assert not read(text).actors[0].relation or not read(text).actors[0].relation.startswith("junction")
+
+
+@pytest.mark.parametrize(
+    "text, gap",
+    [
+        ("A hatchback noses out of a side road on the right 25 m ahead of the ego, ego at 40 km/h.", 25.0),
+        ("Ego 60 km/h; a tractor pulls out from a minor road on the left 30 m in front of us.", 30.0),
+        ("Moped emerges from the side street on my right, maybe 12 metres ahead of me; I was at 30 mph.", 12.0),
+    ],
+)
+def test_a_stated_gap_of_a_road_user_pulling_out_of_a_side_road_is_where_it_sets_off(text, gap):
+    from vei_scenario.language.behaviours.base import time_to_cover
+    from vei_scenario.language.behaviours.turn_into import paths_m
+    from vei_scenario.language.placement import lane_id
+
+    reading = read(text)
+    for seed in range(3):
+        layers = sample_layers(reading, text, seed)
+        adv = layers["adversaries"][0]
+        cfg = adv["behaviour"]["config"]
+        assert adv["behaviour"]["behaviour"] == "turn_into" and cfg["distance_m"] == gap
+        lanes = layers["environment"]["map"]["lanes_per_direction"]
+        path, ego_path = paths_m(adv["spawn"]["relation"] == "junction_left", lane_id(lanes, layers["ego"]["lane"]))
+        t_actor = time_to_cover(path, min(cfg.get("speed_mps", 10.0), 8.0), cfg.get("accel_mps2", 2.5), 0.0)
+        # the ego is the stated distance before the side road's mouth when it sets off
+        to_mouth = layers["ego"]["speed_mps"] * (t_actor + cfg["arrival_gap_s"]) - ego_path
+        assert to_mouth == pytest.approx(gap, abs=0.05)

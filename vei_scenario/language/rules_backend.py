@@ -156,10 +156,17 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
         else:
             spec_lateral = spec.lateral_m
         crossing = relation.startswith("roadside") and first.NAME == "cross_in_front"
+        why = None
         if crossing and spec.distance_m is not None:
             why = _cross_at_distance(spec.kind, relation, first_cfg, ego, lanes, spec.distance_m)
-            if why and notes is not None:
-                notes.append(f"{name}: {why}")
+        if (
+            first.NAME == "turn_into"
+            and relation in ("junction_left", "junction_right")
+            and spec.distance_m is not None
+        ):
+            why = _turn_in_at_distance(spec.kind, relation, first_cfg, ego, lanes, spec.distance_m)
+        if why and notes is not None:
+            notes.append(f"{name}: {why}")
         if "distance_m" in ego and not adversaries and crossing:
             # the crossing lies on the ego's way to its junction: the ego starts far enough back for the
             # road user to get across in time (a child crossing four lanes at 1.5 m/s needs ~9 s)
@@ -503,6 +510,27 @@ def _cross_at_distance(kind: str, relation: str, cfg: dict, ego: dict, lanes: in
     return (
         f"the {kind}'s stated gap of {distance_m:g} m: to set off then and still meet the ego it would "
         f"have to cross the {cross:.1f} m to the ego's lane {needed} than a {kind} can at the ego's speed"
+    )
+
+
+def _turn_in_at_distance(kind: str, relation: str, cfg: dict, ego: dict, lanes: int, distance_m: float) -> str | None:
+    """A road user pulling out of a side road at a stated distance ahead of the ego ("pulls out of a
+    side street 20 m ahead of me"): its timing (``arrival_gap_s``) is the one that sets it off when the
+    ego is that far from where it joins, and the distance is kept in its configuration. Returns None
+    when kept, else why not (the timing is then the nearest the behaviour holds)."""
+    from vei_scenario.language.behaviours.turn_into import PARAMETERS, gap_for_distance
+
+    from_left = relation == "junction_left"
+    gap = gap_for_distance(distance_m, float(ego["speed_mps"]), from_left, lane_id(lanes, int(ego["lane"])), cfg)
+    low, high = PARAMETERS["arrival_gap_s"].low, PARAMETERS["arrival_gap_s"].high
+    if low <= gap <= high:
+        cfg["arrival_gap_s"] = round(gap, 3)
+        cfg["distance_m"] = round(distance_m, 3)
+        return None
+    cfg["arrival_gap_s"] = low if gap < low else high
+    return (
+        f"the {kind}'s stated gap of {distance_m:g} m: pulling out of the side road then, it would reach the "
+        f"ego's road {'too late to come before the ego' if gap < low else 'too long before the ego comes'}"
     )
 
 
