@@ -127,3 +127,26 @@ def test_a_stated_gap_of_a_road_user_pulling_out_of_a_side_road_is_where_it_sets
         # the ego is the stated distance before the side road's mouth when it sets off
         to_mouth = layers["ego"]["speed_mps"] * (t_actor + cfg["arrival_gap_s"]) - ego_path
         assert to_mouth == pytest.approx(gap, abs=0.05)
+
+
+@pytest.mark.parametrize(
+    "text, gap",
+    [
+        ("A girl runs out from the left 9 m ahead of me; I'm doing 30 km/h.", 9.0),
+        ("Ego 40 km/h. An old man shuffles off the far kerb about 25 m in front of the ego.", 25.0),
+        ("at 25 mph a lad on a bike darts out from the left-hand pavement 10 metres ahead", 10.0),
+    ],
+)
+def test_a_far_side_crossing_at_a_stated_gap_keeps_it_on_a_road_the_text_leaves_open(text, gap):
+    reading = read(text)
+    layers = sample_layers(reading, text, 0)
+    assert layers["environment"]["map"]["lanes_per_direction"] == 1
+    assert _crossing(layers)[1].get("distance_m") == gap
+    assert _set_off_distance(layers) == pytest.approx(gap, abs=0.3)
+
+
+def test_the_lanes_the_text_states_stay():
+    text = "Two lanes each way, ego 60 km/h: a girl runs out from the left 6 m ahead of the ego."
+    notes: list[str] = []
+    layers = sample_layers(read(text), text, 0, notes)
+    assert layers["environment"]["map"]["lanes_per_direction"] == 2 and len(notes) == 1

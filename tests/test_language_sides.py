@@ -330,3 +330,35 @@ def test_driving_side_words():
 def test_a_crossing_direction_in_notation_starts_at_its_first_side(text, expected):
     """ "L->R", "right to left": the crossing starts on the side said first."""
     assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("Ego 40 km/h. An old man shuffles off the far kerb in front of the ego.", "roadside_left"),
+        ("At 20 mph a woman stepped out from the opposite pavement right in front of me.", "roadside_right"),
+        ("Ego 30 km/h; a boy runs from the near kerb across the road ahead.", "roadside_right"),
+        ("Doing 30 mph, a kid ran out from the far side of the road into my path.", "roadside_right"),
+    ],
+)
+def test_a_far_or_near_kerb_follows_the_writers_driving_side(text, expected):
+    """The far kerb is across the road: on the left where traffic keeps right, on the right where it
+    keeps left (a writer in miles per hour)."""
+    assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        (
+            "At 20 mph a man walked out from the far side of the road, that is from my left, into my path.",
+            "roadside_left",
+        ),
+        (
+            "Ego 30 km/h; a girl comes off the opposite kerb (i.e. from the right) in front of the car.",
+            "roadside_right",
+        ),
+    ],
+)
+def test_a_far_side_restated_later_as_a_plain_side(text, expected):
+    assert relation(text) == expected

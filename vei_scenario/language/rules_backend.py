@@ -76,7 +76,7 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
         kind = "crossroad" if at_junction else "straight"
     # a roundabout's arms link one lane each way into the ring: unless more are said, one lane each way
     # (in the kerb lane of a two-lane arm the ego, or an entering road user, could not enter the ring)
-    lanes = reading.lanes or (1 if kind == "roundabout" else 2)
+    lanes = reading.lanes or (1 if kind == "roundabout" or _far_side_gap(reading) else 2)
     relations = {
         a.relation or getattr(BEHAVIOURS[a.behaviours[0][0]], "DEFAULT_SPAWN", {}).get("relation")
         for a in reading.actors
@@ -224,6 +224,18 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
     }
     layers["background"]["vehicles"] = background(rng, layers)
     return layers
+
+
+def _far_side_gap(reading: Reading) -> bool:
+    """Whether someone crosses from the far kerb at a stated gap ("ran into the road from the left
+    about 20 m in front of me"): on a road whose lanes the text leaves open, one lane each way, the
+    road on which such a gap can be kept (across two lanes each way no one on foot covers 13 m in the
+    second or two the gap leaves)."""
+    return any(
+        a.relation == "roadside_left" and a.distance_m is not None and a.behaviours[:1]
+        and a.behaviours[0][0] == "cross_in_front"
+        for a in reading.actors
+    )  # fmt: skip
 
 
 #: Behaviours that start standing at a junction's stop line and set off when the ego comes.

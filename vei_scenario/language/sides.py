@@ -183,6 +183,11 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
     restated = tokens[j + 1 : j + 2] in (["left"], ["right"]) and tokens[j + 2 : j + 3] in (["side"], ["kerb"])
     if tokens[j] in _FAR_NEAR and restated:  # "from the far (left) side": the side said plainly
         return Said(start, j + 3, prep, (("kerb", None), ("kerb_side", tokens[j + 1])))
+    kerb_after = tokens[j + 1 : j + 2] and (tokens[j + 1] in KERB_NOUNS or tokens[j + 1] == "side")
+    if tokens[j] in _FAR_NEAR and kerb_after and j > i and tokens[j - 1] in _DETERMINERS:
+        # "off the far kerb", "from the opposite pavement": across the road, the offside; "the near kerb" the nearside
+        side = _restated(tokens, j + 2) or _side("nearside" if tokens[j] == "near" else "offside", "", left_hand, False)
+        return Said(start, j + 2, prep, (("kerb", None), ("kerb_side", side)))
     # side word, then noun
     if _is_side_word(tokens[j]):
         k = j + 1
@@ -247,6 +252,18 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
     if kind == "kerb":
         return Said(start, end, prep, (("kerb", None), ("kerb_side", side)))
     return Said(start, end, prep, (("lane_side", side),))
+
+
+def _restated(tokens: list[str], k: int) -> str | None:
+    """A plain side restating a far or near side later in its sentence ("from the far side of the road,
+    i.e. from my client's left"): "from" and, within four words, left or right. The writer said it
+    plainly, and that wins over the driving convention."""
+    for m in range(k, min(k + 10, len(tokens))):
+        if tokens[m] == ";" or (tokens[m] == "." and len(tokens[m - 1]) > 1):  # (not the stops of "i.e.")
+            return None
+        if tokens[m] == "from":
+            return next((w for w in tokens[m + 1 : m + 5] if w in ("left", "right")), None)
+    return None
 
 
 def beside(lane: str | None, ego_lane: str | None) -> str | None:
