@@ -108,6 +108,7 @@ def test_an_arm_said_after_an_overtake_is_where_it_goes(text):
         ("A hatchback noses out of a side road on the right 25 m ahead of the ego, ego at 40 km/h.", 25.0),
         ("Ego 60 km/h; a tractor pulls out from a minor road on the left 30 m in front of us.", 30.0),
         ("Moped emerges from the side street on my right, maybe 12 metres ahead of me; I was at 30 mph.", 12.0),
+        ("I was doing 40 mph when a Mini shot out of a side road on my left barely 25 m ahead.", 25.0),
     ],
 )
 def test_a_stated_gap_of_a_road_user_pulling_out_of_a_side_road_is_where_it_sets_off(text, gap):

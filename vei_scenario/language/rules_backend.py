@@ -533,8 +533,22 @@ def _turn_in_at_distance(kind: str, relation: str, cfg: dict, ego: dict, lanes: 
     from vei_scenario.language.behaviours.turn_into import PARAMETERS, gap_for_distance
 
     from_left = relation == "junction_left"
-    gap = gap_for_distance(distance_m, float(ego["speed_mps"]), from_left, lane_id(lanes, int(ego["lane"])), cfg)
+    ego_speed, ego_lane = float(ego["speed_mps"]), lane_id(lanes, int(ego["lane"]))
+    gap = gap_for_distance(distance_m, ego_speed, from_left, ego_lane, cfg)
     low, high = PARAMETERS["arrival_gap_s"].low, PARAMETERS["arrival_gap_s"].high
+    wanted = float(cfg.get("arrival_gap_s", PARAMETERS["arrival_gap_s"].default))
+    if not low <= gap <= high and "accel_mps2" not in cfg:  # (how hard it pulls away: the timing around the gap)
+        rates = PARAMETERS["accel_mps2"]
+        steps = int((rates.high - rates.low) / 0.1)
+        candidates = [round(rates.low + (rates.high - rates.low) * i / steps, 3) for i in range(steps + 1)]
+
+        def off(a: float) -> float:
+            return abs(gap_for_distance(distance_m, ego_speed, from_left, ego_lane, {**cfg, "accel_mps2": a}) - wanted)
+
+        accel = min(candidates, key=off)
+        gap = gap_for_distance(distance_m, ego_speed, from_left, ego_lane, {**cfg, "accel_mps2": accel})
+        if low <= gap <= high:
+            cfg["accel_mps2"] = accel
     if low <= gap <= high:
         cfg["arrival_gap_s"] = round(gap, 3)
         cfg["distance_m"] = round(distance_m, 3)
