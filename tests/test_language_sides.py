@@ -362,3 +362,20 @@ def test_a_far_or_near_kerb_follows_the_writers_driving_side(text, expected):
 )
 def test_a_far_side_restated_later_as_a_plain_side(text, expected):
     assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("Ego 30 km/h. A child runs across to the left in front of the ego.", "roadside_right"),
+        ("At 20 mph a dog dashed across the road towards the right, just in front of me.", "roadside_left"),
+        ("Ego 40 km/h; a jogger crosses over to the right 20 m ahead.", "roadside_left"),
+        ("Ego 40 km/h; a jogger crosses from the left to the right 20 m ahead.", "roadside_left"),
+    ],
+)
+def test_a_side_a_crossing_goes_to_puts_its_start_on_the_other(text, expected):
+    assert relation(text) == expected
+
+
+def test_a_side_of_another_road_user_is_a_place_not_where_a_crossing_goes():
+    assert relation("Ego 30 km/h. A boy crosses to the left of the parked bus, in front of the ego.") == "roadside_left"

@@ -2320,7 +2320,7 @@ def _apply(m, who, r, link, added) -> None:
         elif m.slot == "returns":
             a.returns = True
         elif m.slot == "side":
-            a.side = a.side or m.value
+            a.side = a.side or sides.crossing_from(m.value, m.words, m.prev, m.next_, a.behaviours)
             a.came_from = a.came_from or _from(m)
         elif m.slot == "toward":
             a.toward = m.value

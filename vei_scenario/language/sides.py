@@ -328,6 +328,19 @@ def arm_it_comes_from(junction: bool, came_from: bool, side: str | None, first: 
     return None if first in _ALONG_THE_EGOS_ROAD else f"junction_{side}"
 
 
+_TOWARDS = frozenset({"to", "towards", "toward"})
+
+
+def crossing_from(side: object, words: str, prev: str, after: str, behaviours: list) -> object:
+    """The side a crossing starts from when a side is said of it: "runs across to the left", "dashed
+    across the road towards the right" say where it goes, so it starts on the other side; any other
+    side ("from the left", "on the right", "to the right of the bus": a place) is where it starts."""
+    towards = (prev in _TOWARDS or words.split()[0] in _TOWARDS) and after != "of"
+    if towards and side in ("left", "right") and behaviours and behaviours[-1][0] == "cross_in_front":
+        return "right" if side == "left" else "left"
+    return side
+
+
 def origin_lane(origin: str | None, relation: str | None) -> str | None:
     """Where a lane changer starts when its own lane and the lane it moves to are both said ("a coach
     in the middle lane, 25 m ahead, moves over to the right lane", the ego in the left lane): the
