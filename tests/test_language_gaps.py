@@ -1,5 +1,6 @@
 """A gap the text states reaches the layers: a crossing sets off when the ego is that far away (its
-crossing speed, unless stated, adjusted so its timing still fits), or the run says why it cannot."""
+crossing speed, unless stated, adjusted so its timing still fits), or, too close for that, is in the
+ego's path when the ego is that far away; where neither holds the run says why."""
 
 import pytest
 
@@ -18,6 +19,13 @@ def _crossing(layers: dict) -> tuple[dict, dict]:
             if node["behaviour"] == "cross_in_front":
                 return adv, node["config"]
     raise AssertionError("no crossing")
+
+
+def _kept(layers: dict, gap: float) -> bool:
+    """The gap as the ego's distance when the crosser sets off, or when it is in the ego's lane."""
+    cfg = _crossing(layers)[1]
+    in_path = float(layers["ego"]["speed_mps"]) * cfg["arrival_gap_s"]
+    return abs(_set_off_distance(layers) - gap) < 0.3 or abs(in_path - gap) < 0.3
 
 
 def _set_off_distance(layers: dict) -> float:
@@ -48,21 +56,22 @@ def test_a_stated_crossing_gap_is_where_it_sets_off(text, gap):
         layers = sample_layers(reading, text, seed)
         _, cfg = _crossing(layers)
         assert cfg.get("distance_m") == gap
-        assert _set_off_distance(layers) == pytest.approx(gap, abs=0.3)
+        assert _kept(layers, gap)
 
 
 def test_a_stated_gap_no_crossing_can_keep_is_said_with_its_reason(tmp_path, capsys):
-    """Three lanes to cross on foot in under a second: the run says the gap is not kept, and why."""
+    """80 m ahead at 10 km/h: even at a slow walk it would be across half a minute before the ego
+    comes. The run says the gap is not kept, and why."""
     from vei_scenario.cli import main
 
-    text = "Ego at 60 km/h, two lanes each way. A man sprints out from the left kerb 5 m in front of the ego."
+    text = "Ego at 10 km/h. A man steps off the right kerb 80 m in front of the ego."
     notes: list[str] = []
     layers = sample_layers(read(text), text, 0, notes)
     assert "distance_m" not in _crossing(layers)[1]
-    assert len(notes) == 1 and "stated gap of 5 m" in notes[0] and "faster than a pedestrian can" in notes[0]
+    assert len(notes) == 1 and "stated gap of 80 m" in notes[0] and "more slowly than a pedestrian can" in notes[0]
     assert main(["describe", text, "-o", str(tmp_path / "x"), "--count", "2", "--layers-only"]) == 0
     said = capsys.readouterr().out
-    assert "not kept in 2 of 2 scenario(s): Adversary1: the pedestrian's stated gap of 5 m" in said
+    assert "not kept in 2 of 2 scenario(s): Adversary1: the pedestrian's stated gap of 80 m" in said
 
 
 def _overtake_gap(text: str) -> float | None:
@@ -125,9 +134,11 @@ def test_a_stated_gap_of_a_road_user_pulling_out_of_a_side_road_is_where_it_sets
         lanes = layers["environment"]["map"]["lanes_per_direction"]
         path, ego_path = paths_m(adv["spawn"]["relation"] == "junction_left", lane_id(lanes, layers["ego"]["lane"]))
         t_actor = time_to_cover(path, min(cfg.get("speed_mps", 10.0), 8.0), cfg.get("accel_mps2", 2.5), 0.0)
-        # the ego is the stated distance before the side road's mouth when it sets off
+        # the ego is the stated distance before the side road's mouth when it sets off, or (too close
+        # for that) that far from where it joins when it is there
         to_mouth = layers["ego"]["speed_mps"] * (t_actor + cfg["arrival_gap_s"]) - ego_path
-        assert to_mouth == pytest.approx(gap, abs=0.05)
+        in_road = layers["ego"]["speed_mps"] * cfg["arrival_gap_s"]
+        assert to_mouth == pytest.approx(gap, abs=0.05) or in_road == pytest.approx(gap, abs=0.05)
 
 
 @pytest.mark.parametrize(
@@ -143,11 +154,10 @@ def test_a_far_side_crossing_at_a_stated_gap_keeps_it_on_a_road_the_text_leaves_
     layers = sample_layers(reading, text, 0)
     assert layers["environment"]["map"]["lanes_per_direction"] == 1
     assert _crossing(layers)[1].get("distance_m") == gap
-    assert _set_off_distance(layers) == pytest.approx(gap, abs=0.3)
+    assert _kept(layers, gap)
 
 
 def test_the_lanes_the_text_states_stay():
     text = "Two lanes each way, ego 60 km/h: a girl runs out from the left 6 m ahead of the ego."
-    notes: list[str] = []
-    layers = sample_layers(read(text), text, 0, notes)
-    assert layers["environment"]["map"]["lanes_per_direction"] == 2 and len(notes) == 1
+    layers = sample_layers(read(text), text, 0)
+    assert layers["environment"]["map"]["lanes_per_direction"] == 2 and _kept(layers, 6.0)

@@ -511,17 +511,26 @@ def _cross_at_distance(kind: str, relation: str, cfg: dict, ego: dict, lanes: in
         candidates = [round(lo + (top - lo) * i / steps, 3) for i in range(steps + 1)]
         speed = min(candidates, key=lambda v: (abs(gap_at(v) - wanted), abs(v - speed)))
         gap = gap_at(speed)
-        if low <= gap <= high:
-            cfg["crossing_speed_mps"] = speed
-    if low <= gap <= high:
+        cfg["crossing_speed_mps"] = speed
+    # the latest it may reach the ego's lane and still meet the ego (its side, as the ego goes by):
+    # later, it would cross behind the ego, which is no crossing in front of it
+    band = (TYPES["car"][0][1] + TYPES[kind][0][1]) / 2
+    latest = -((TYPES["car"][0][0] + TYPES[kind][0][0]) / ego_speed + band / speed)
+    if max(low, latest) <= gap <= high:
         cfg["arrival_gap_s"] = round(gap, 3)
         cfg["distance_m"] = round(distance_m, 3)
         return None
-    cfg["arrival_gap_s"] = EARLIEST_IN_FRONT_S if gap < low else float(cfg.get("arrival_gap_s", 0.5))
-    needed = "faster" if gap < low else "more slowly"
+    if gap < high:
+        # too close to set off then and still meet the ego: the gap is where it is in the ego's path
+        # ("runs out 10 m in front of me": in the lane when the ego is 10 m away), the reading a
+        # crossing in front of the ego can keep
+        cfg["arrival_gap_s"] = round(min(max(distance_m / ego_speed, EARLIEST_IN_FRONT_S), high), 3)
+        cfg["distance_m"] = round(distance_m, 3)
+        return None
+    cfg["arrival_gap_s"] = float(cfg.get("arrival_gap_s", 0.5))
     return (
         f"the {kind}'s stated gap of {distance_m:g} m: to set off then and still meet the ego it would "
-        f"have to cross the {cross:.1f} m to the ego's lane {needed} than a {kind} can at the ego's speed"
+        f"have to cross the {cross:.1f} m to the ego's lane more slowly than a {kind} can at the ego's speed"
     )
 
 
@@ -537,7 +546,7 @@ def _turn_in_at_distance(kind: str, relation: str, cfg: dict, ego: dict, lanes: 
     gap = gap_for_distance(distance_m, ego_speed, from_left, ego_lane, cfg)
     low, high = PARAMETERS["arrival_gap_s"].low, PARAMETERS["arrival_gap_s"].high
     wanted = float(cfg.get("arrival_gap_s", PARAMETERS["arrival_gap_s"].default))
-    if not low <= gap <= high and "accel_mps2" not in cfg:  # (how hard it pulls away: the timing around the gap)
+    if not 0.0 <= gap <= high and "accel_mps2" not in cfg:  # (how hard it pulls away: the timing around the gap)
         rates = PARAMETERS["accel_mps2"]
         steps = int((rates.high - rates.low) / 0.1)
         candidates = [round(rates.low + (rates.high - rates.low) * i / steps, 3) for i in range(steps + 1)]
@@ -549,14 +558,20 @@ def _turn_in_at_distance(kind: str, relation: str, cfg: dict, ego: dict, lanes: 
         gap = gap_for_distance(distance_m, ego_speed, from_left, ego_lane, {**cfg, "accel_mps2": accel})
         if low <= gap <= high:
             cfg["accel_mps2"] = accel
-    if low <= gap <= high:
+    if 0.0 <= gap <= high:
         cfg["arrival_gap_s"] = round(gap, 3)
         cfg["distance_m"] = round(distance_m, 3)
         return None
-    cfg["arrival_gap_s"] = low if gap < low else high
+    if gap < 0.0:
+        # it would join behind the ego, no turning in ahead of it: the gap is where it is in the ego's
+        # road ("pulls out 15 m ahead of me": there when the ego is 15 m away), which it can keep
+        cfg["arrival_gap_s"] = round(min(max(distance_m / max(ego_speed, 0.5), low), high), 3)
+        cfg["distance_m"] = round(distance_m, 3)
+        return None
+    cfg["arrival_gap_s"] = high
     return (
         f"the {kind}'s stated gap of {distance_m:g} m: pulling out of the side road then, it would reach the "
-        f"ego's road {'too late to come before the ego' if gap < low else 'too long before the ego comes'}"
+        "ego's road too long before the ego comes"
     )
 
 
