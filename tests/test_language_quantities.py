@@ -434,3 +434,17 @@ def test_a_number_hedged_after_it_keeps_its_unit(text, mph):
 def test_an_age_in_decades_is_no_speed():
     r = read("A man in his mid-40s steps out from behind a bus; I'm doing 30 km/h.")
     assert r.ego_speed_mps == pytest.approx(30 * KPH) and all(a.speed_mps is None for a in r.actors)
+
+@pytest.mark.parametrize(
+    "text, gap",
+    [
+        ("Ego: 90 km/h. Lead van at 60 km/h far ahead. Car behind the ego, following at a 2 s gap.", 50.0),
+        ("I was doing 72 km/h. A bus at 50 km/h was in the left lane. A taxi sat 1 second behind me.", 20.0),
+        ("- Ego 108 kph\n- Actor 1: lorry ahead, 70 kph\n- Actor 2: car behind, 2 s headway", 60.0),
+    ],
+)
+def test_a_time_gap_to_the_ego_is_at_the_egos_speed(text, gap):
+    """The time gap between the ego and a road user behind or ahead of it is covered at the ego's speed
+    (the follower's, who keeps pace), not at the speed of another road user said in between."""
+    r = read(text)
+    assert [a.distance_m for a in r.actors if a.distance_m is not None] == [pytest.approx(gap)]

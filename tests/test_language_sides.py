@@ -227,3 +227,155 @@ def test_a_far_or_near_side_restated_plainly(text, expected):
 )
 def test_an_end_of_a_vehicle_is_no_place(text, expected):
     assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        (
+            "Three lanes each way, ego in the left lane at 90 km/h; a coach in the middle lane 25 m ahead "
+            "moves over to the right lane.",
+            "right",
+        ),
+        ("Ego: middle lane, 100 km/h. A van in the right lane, 15 m ahead, changes to the left lane.", "right"),
+        (
+            "I'm in the right lane at 60 mph; a minibus in the centre lane 40 m in front drifts to the left lane.",
+            "left",
+        ),
+    ],
+)
+def test_a_lane_beside_the_egos_with_a_distance_ahead_is_where_it_starts(text, expected):
+    """The lane says the side, "N m ahead" how far along: a lane change from it starts beside the ego."""
+    assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A scooter rider overtakes me, and once he is in my lane he slams on the brakes. I'm at 40 km/h.",
+        "At 80 km/h a sports car passes us and then, in our lane, it brakes hard.",
+        "ego 60 km/h, bike overtake ego then he go in ego lane and he stop suddenly",
+    ],
+)
+def test_a_road_user_overtaking_the_ego_starts_behind_it(text):
+    """Overtaking the ego ends in its lane ahead: "in my lane" said after it is where it ends up."""
+    reading = read(text)
+    assert reading.actors[0].relation in ("behind", None)
+    assert reading.actors[0].behaviours[0][0] == "overtake"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "On a roundabout at 25 km/h, the van ahead of me brakes at the exit.",
+        "Roundabout, ego 30 km/h: the car in front slows down at the entrance.",
+        "At the crossroads, ego 40 km/h, the bus in front of us stops at the approach.",
+    ],
+)
+def test_a_lead_doing_something_at_a_junction_arm_stays_ahead(text):
+    """ "at the entry" after what a lead does is where it does it, not an arm it comes out of."""
+    assert relation(text) == "ahead"
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("At a crossroads I'm doing 20 mph and a van comes from the left, slows and lets me through.", "junction_left"),
+        ("Approaching the junction at 40 km/h, a cyclist comes along from my left and slows down.", "junction_left"),
+        ("T-junction ahead, ego 30 km/h: a moped rider approaching from the right eases off.", "junction_right"),
+    ],
+)
+def test_a_road_user_coming_from_a_side_at_a_junction_comes_along_that_arm(text, expected):
+    assert relation(text) == expected
+
+
+def test_a_lane_said_at_a_junction_stays_a_lane():
+    assert relation("At the junction at 40 km/h, a car in the right lane slows down.") == "right"
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # British words, no unit at all: the writer drives on the left, so the inside lane is the left one
+        ("On the motorway in the middle lane doing 60, a lorry in the inside lane wanders across into mine.", "left"),
+        ("Dual carriageway, I'm in lane 2, an HGV in the outside lane starts coming over on me.", "right"),
+        ("Middle lane of the M6, a coach on the inside lane swerves across into me, I'm doing about 65.", "left"),
+        # American words with miles per hour: the writer drives on the right
+        ("On the freeway at 60 mph in the middle lane, a semi in the inside lane drifts into mine.", "right"),
+        ("At 25 mph a kid ran out from the nearside sidewalk in front of me.", "roadside_right"),
+    ],
+)
+def test_the_writers_driving_side_from_their_words(text, expected):
+    assert relation(text) == expected
+
+
+def test_driving_side_words():
+    assert drives_on_left("a lorry in the inside lane drifted into me".split())
+    assert not drives_on_left("a lorry in the nearside lane cuts in ahead of the av".split())  # (a test line)
+    assert not drives_on_left("i was at 60 km/h and a lorry cut in".split())  # (metric: Euro NCAP's convention)
+    assert drives_on_left("on the m 25 at 70".split())
+    assert not drives_on_left("on the interstate at 70 mph".split())
+    assert not drives_on_left("stopped 25 m ahead at 70 km/h".split())
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("VUT 40 km/h, cyclist crossing R->L at 15 km/h", "roadside_right"),
+        ("A child runs across right to left in front of the ego at 30 km/h.", "roadside_right"),
+        ("pedestrian crossing left->right, ego 30 km/h", "roadside_left"),
+        ("Ego 25 km/h; a jogger crosses L > R.", "roadside_left"),
+    ],
+)
+def test_a_crossing_direction_in_notation_starts_at_its_first_side(text, expected):
+    """ "L->R", "right to left": the crossing starts on the side said first."""
+    assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("Ego 40 km/h. An old man shuffles off the far kerb in front of the ego.", "roadside_left"),
+        ("At 20 mph a woman stepped out from the opposite pavement right in front of me.", "roadside_right"),
+        ("Ego 30 km/h; a boy runs from the near kerb across the road ahead.", "roadside_right"),
+        ("Doing 30 mph, a kid ran out from the far side of the road into my path.", "roadside_right"),
+    ],
+)
+def test_a_far_or_near_kerb_follows_the_writers_driving_side(text, expected):
+    """The far kerb is across the road: on the left where traffic keeps right, on the right where it
+    keeps left (a writer in miles per hour)."""
+    assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        (
+            "At 20 mph a man walked out from the far side of the road, that is from my left, into my path.",
+            "roadside_left",
+        ),
+        (
+            "Ego 30 km/h; a girl comes off the opposite kerb (i.e. from the right) in front of the car.",
+            "roadside_right",
+        ),
+    ],
+)
+def test_a_far_side_restated_later_as_a_plain_side(text, expected):
+    assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("Ego 30 km/h. A child runs across to the left in front of the ego.", "roadside_right"),
+        ("At 20 mph a dog dashed across the road towards the right, just in front of me.", "roadside_left"),
+        ("Ego 40 km/h; a jogger crosses over to the right 20 m ahead.", "roadside_left"),
+        ("Ego 40 km/h; a jogger crosses from the left to the right 20 m ahead.", "roadside_left"),
+    ],
+)
+def test_a_side_a_crossing_goes_to_puts_its_start_on_the_other(text, expected):
+    assert relation(text) == expected
+
+
+def test_a_side_of_another_road_user_is_a_place_not_where_a_crossing_goes():
+    assert relation("Ego 30 km/h. A boy crosses to the left of the parked bus, in front of the ego.") == "roadside_left"

@@ -10,6 +10,7 @@ comfort, collisions) → ``refinement`` → ``describe`` (batches, CSV/JSON, HTM
 from __future__ import annotations
 
 import sys
+from collections import Counter
 from pathlib import Path
 
 from vei_scenario.errors import VeiInputError
@@ -35,6 +36,7 @@ def describe_command(args) -> int:
 
         args.text = readable_description(args.text)
     read_doc = None
+    notes: list[str] = []  # what the text states that a scenario could not keep, and why (the rules backend's)
     if args.layers is not None:
         fixed = load_layers(Path(args.layers))
         count, text, backend = 1, fixed.get("description", ""), "layers"
@@ -69,7 +71,7 @@ def describe_command(args) -> int:
             print(line)
 
         def make(i: int) -> dict:
-            return sample_layers(reading, text, args.seed * 1000 + i)
+            return sample_layers(reading, text, args.seed * 1000 + i, notes)
 
     if args.layers_only:
         from vei_scenario.atomic_io import OutputSet, json_text
@@ -81,6 +83,7 @@ def describe_command(args) -> int:
             validate_layers(layers, f"scenario {i}")
             files.add(out / f"scenario_{i:03d}" / "layers.json", json_text(layers, indent=2) + "\n")
         files.commit()
+        _say_not_kept(notes, count)
         print(f"wrote {count} layers file(s) under {out}")
         return 0
 
@@ -115,5 +118,13 @@ def describe_command(args) -> int:
     )
     if s["failed"]:
         print(f"{s['failed']} scenario(s) could not be written: their reasons are in batch.csv (error)")
+    _say_not_kept(notes, count)
     print(f"wrote {out / 'batch.csv'}, {out / 'batch.json'}, {out / 'summary.html'} and {count} scenario folder(s)")
     return 0
+
+
+def _say_not_kept(notes: list[str], count: int) -> None:
+    """One line per thing the text states that some scenarios could not keep, with the reason and in
+    how many of the ``count`` scenarios."""
+    for note, times in Counter(notes).items():
+        print(f"not kept in {times} of {count} scenario(s): {note}")

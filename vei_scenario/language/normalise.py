@@ -206,6 +206,7 @@ def _headings(text: str) -> str:
     return _HEADING.sub(sub, text)
 
 
+_SIDE = {"l": "left", "r": "right"}
 #: Shorthand of radio reports, notes and chat, said in full ("M/bike from L arm", "ego veh NB",
 #: "lt traffic", "dual c/way", "doesnt", "nite"): the same words every writer's shorthand stands for.
 _SHORTHAND = [
@@ -225,6 +226,13 @@ _SHORTHAND = [
     (re.compile(r"\bsb\b"), "southbound"),
     (re.compile(r"\beb\b"), "eastbound"),
     (re.compile(r"\bwb\b"), "westbound"),
+    # a crossing's direction in notation ("L->R", "R > L", "right to left"): from the side said first
+    (
+        re.compile(r"\b(?:from )?(l|r|left|right) ?(?:-+>|=>|\u2192|>|to) ?(l|r|left|right)\b(?!')"),
+        lambda m: (
+            m.group(0) if m.group(1)[0] == m.group(2)[0] else f"from {_SIDE[m.group(1)[0]]} to {_SIDE[m.group(2)[0]]}"
+        ),
+    ),
     # a single L or R where a side is said: "from L arm", "lane to the R", "on the L", "R turn"
     (re.compile(r"\b(from|to|on|at|in|the|turning|turns|turn)( the)? l\b(?!')"), r"\1\2 left"),
     (re.compile(r"\b(from|to|on|at|in|the|turning|turns|turn)( the)? r\b(?!')"), r"\1\2 right"),

@@ -125,8 +125,9 @@ _SECONDS = frozenset({"s", "sec", "secs", "second", "seconds"})
 
 def headway_m(tokens: list[str], i: int) -> float | None:
     """The distance (m) of a time gap at ``i`` ("a 2 s gap" at 72 km/h: 40 m): the seconds times the
-    speed said last before it with its unit (a time gap is the time one takes to reach where the other
-    is); None where it is no time gap or no speed is said before it."""
+    ego's speed where it is said as the ego's, else the speed said last before it with its unit (a time
+    gap is the time one takes to reach where the other is); None where it is no time gap or no speed
+    is said before it."""
     if tokens[i + 1 : i + 2] == [] or tokens[i + 1] not in _SECONDS:
         return None
     nxt = tokens[i + 2 : i + 3] if tokens[i + 2 : i + 3] != ["time"] else tokens[i + 3 : i + 4]  # ("1.5 s time gap")
@@ -134,9 +135,31 @@ def headway_m(tokens: list[str], i: int) -> float | None:
     follows = any(w.startswith(("follow", "tailgat")) for w in before) and tokens[i - 1] in ("at", "about", "a")
     if not (nxt and nxt[0] in HEADWAY_WORDS) and not follows:
         return None
+    ego = ego_speed_mps(tokens)
+    if ego is not None:
+        return float(tokens[i]) * ego
     for k in range(i - 1, 0, -1):
         if tokens[k] in V.SPEED_UNITS and tokens[k - 1].replace(".", "", 1).isdigit():
             return float(tokens[i]) * float(tokens[k - 1]) * V.SPEED_UNITS[tokens[k]]
+    return None
+
+
+#: Words that name the ego as the subject of its own speed ("ego 90 km/h", "I was doing 72 km/h").
+_EGO_SUBJECTS = frozenset({"ego", "i", "we", "vut", "sv"})
+
+
+def ego_speed_mps(tokens: list[str]) -> float | None:
+    """The ego's speed (m/s) where the text gives it with its unit right after naming the ego (within
+    four words of its clause: "Ego: 90 km/h", "I was doing 72 km/h"), else None. A time gap to the ego
+    is covered at this speed: the ego's, or its follower's, who keeps pace with it."""
+    for k, word in enumerate(tokens):
+        if word not in V.SPEED_UNITS or not k or not tokens[k - 1].replace(".", "", 1).isdigit():
+            continue
+        for j in range(k - 2, max(k - 7, -1), -1):
+            if tokens[j] in _STOPS or tokens[j] == ",":
+                break
+            if tokens[j] in _EGO_SUBJECTS:
+                return float(tokens[k - 1]) * V.SPEED_UNITS[word]
     return None
 
 

@@ -218,6 +218,7 @@ class _Actor:
     accel_mps2: float | None = None  # how hard it changes speed ("brakes at 6 m/s²")
     toward: str | None = None  # the side it moves to ("merges right", "swerves left into our lane")
     came_from: bool = False  # a kerb or side said as where it comes from ("walks from the far side")
+    end_gap: str | None = None  # the behaviour its distance is the end gap of ("overtakes, 3 m to spare")
     word: str = ""  # the words it was first named by
     acted_on: bool = False  # the object of someone's verb ("overtakes a truck")
     pavement: bool = False  # said to be on a pavement (off the road), not in a cycle lane
@@ -1021,6 +1022,9 @@ def _resolve_relation(a: _Actor, map_kind: str | None) -> str | None:
         return f"{where}_{side if side in ('left', 'right') else 'right'}"
     if junction and a.arm and side in ("left", "right"):
         return f"junction_{side}"  # from the side road on the left: that arm, even if it approaches
+    on_the_road = a.came_from and rides and not (a.kerb or a.kerb_side or a.lane_side)
+    if arm := sides.arm_it_comes_from(junction, on_the_road, a.side, first, a.said):
+        return arm  # ("at the T-junction a cyclist comes from the right")
     if a.relation == "oncoming" and junction:  # at a junction what comes towards the ego comes from the
         return f"junction_{side}" if side in ("left", "right") else "junction_opposite"  # arm said, else opposite
     if a.followed and first == "cut_in":
@@ -1058,7 +1062,7 @@ def read(text: str) -> Reading:
     """Parse ``text`` into a :class:`~vei_scenario.language.reading.Reading` (with ``ignored``
     words); raise :class:`~vei_scenario.language.reading.NotUnderstood` naming what cannot be placed."""
     clauses, ignored, read_as = scan(text)
-    clauses = sides.relate_headings(clauses)
+    clauses = sides.narrator_lane(sides.relate_headings(clauses))
     clauses = out_of_a_side_road(destinations_not_origins(outcome_not_behaviour(_drop_label(clauses))))
     tokens = _tokens(text)
     said = " ".join(tokens)  # (the whole text as the reader reads it, for what is stated of it as a whole)
@@ -1645,8 +1649,7 @@ def read(text: str) -> Reading:
             if behaviours[0][0] in ("change_lane", "cut_out") or moving_out:
                 origin = a.lane_side or a.side  # ("a truck in the right lane moves into the left lane": from there)
                 a.lane_side, a.side = None, a.toward
-                if a.relation is None and origin in ("left", "right") and origin != a.toward:
-                    a.relation = origin
+                a.relation = sides.origin_lane(origin, a.relation) or a.relation
             elif not (a.lane_side or a.side or a.kerb_side):
                 a.side = "left" if a.toward == "right" else "right"
         if behaviours and behaviours[0][0] == "change_lane" and sides.starts_in_lane(a.lane_side, a.side, a.toward):
@@ -1673,6 +1676,10 @@ def read(text: str) -> Reading:
         if behaviours and behaviours[0][0] == "cut_in" and a.distance_m is not None:
             name, cfg, c, lk = behaviours[0]
             behaviours[0] = (name, {**cfg, "gap_m": a.distance_m}, c, lk)
+        if a.end_gap and a.distance_m is not None:  # ("passes me and cuts back in 3 m ahead": its end gap)
+            behaviours = [
+                (n, {**c, "gap_m": a.distance_m} if n == a.end_gap else c, k, lk) for n, c, k, lk in behaviours
+            ]
         if (
             a.kind in VULNERABLE
             and (a.relation or "").startswith("junction_")
@@ -2325,9 +2332,10 @@ def _apply(m, who, r, link, added) -> None:
             a.speed_mps = -float(m.value) if a.speed_mps is None else a.speed_mps
         elif m.slot == "distance":
             a.distance_m = m.value
+            a.end_gap = sides.gap_where_it_ends(a.behaviours)
         elif m.slot == "relation" and m.value in ("ahead", "behind") and m.next_ in ("it", "him", "her", "them"):
             a.said.add("near_other")  # "a car behind it swerves": behind another road user, not the ego
-        elif m.slot == "relation" and m.value == "ahead" and a.behaviours and a.behaviours[-1][0] == "cut_in":
+        elif m.slot == "relation" and sides.where_it_ends(m.value, a.behaviours):
             a.said.add("in_front")  # "cuts in 10 m ahead": where it cuts in, not where it starts
         elif m.slot == "relation":
             a.said.add(m.value)
@@ -2339,7 +2347,7 @@ def _apply(m, who, r, link, added) -> None:
         elif m.slot == "returns":
             a.returns = True
         elif m.slot == "side":
-            a.side = a.side or m.value
+            a.side = a.side or sides.crossing_from(m.value, m.words, m.prev, m.next_, a.behaviours)
             a.came_from = a.came_from or _from(m)
         elif m.slot == "toward":
             a.toward = m.value
@@ -2352,7 +2360,11 @@ def _apply(m, who, r, link, added) -> None:
         elif m.slot == "kerb_side":
             a.kerb, a.kerb_side = True, m.value
             a.came_from = a.came_from or _from(m)
-        elif m.slot == "arm" and m.prev not in _LANDMARK_PREPOSITIONS:
+        elif (
+            m.slot == "arm"
+            and m.prev not in _LANDMARK_PREPOSITIONS
+            and not sides.arm_is_where_it_acts(m.prev, a.said, a.behaviours)
+        ):
             a.arm = True  # (not "on the crossing just after the exit": a landmark, not where it comes from)
         elif m.slot == "stationary":
             a.stationary = True

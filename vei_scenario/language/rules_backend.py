@@ -59,8 +59,10 @@ def _config(rng: random.Random, name: str, given: dict, crit: str | None) -> tup
     return cfg, cls
 
 
-def sample_layers(reading: Reading, text: str, seed: int) -> dict:
-    """The layers of one scenario of ``reading``, details drawn from ``seed``."""
+def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | None = None) -> dict:
+    """The layers of one scenario of ``reading``, details drawn from ``seed``. What the text states
+    that these layers cannot keep (a gap too short for the road user to cover) is appended to
+    ``notes``, one sentence each, for the run to say."""
     rng = random.Random(seed)
     behaviour_names = [b[0] for a in reading.actors for b in a.behaviours]
     kind = reading.map_kind
@@ -74,7 +76,7 @@ def sample_layers(reading: Reading, text: str, seed: int) -> dict:
         kind = "crossroad" if at_junction else "straight"
     # a roundabout's arms link one lane each way into the ring: unless more are said, one lane each way
     # (in the kerb lane of a two-lane arm the ego, or an entering road user, could not enter the ring)
-    lanes = reading.lanes or (1 if kind == "roundabout" else 2)
+    lanes = reading.lanes or (1 if kind == "roundabout" or _far_side_gap(reading) else 2)
     relations = {
         a.relation or getattr(BEHAVIOURS[a.behaviours[0][0]], "DEFAULT_SPAWN", {}).get("relation")
         for a in reading.actors
@@ -156,6 +158,17 @@ def sample_layers(reading: Reading, text: str, seed: int) -> dict:
         else:
             spec_lateral = spec.lateral_m
         crossing = relation.startswith("roadside") and first.NAME == "cross_in_front"
+        why = None
+        if crossing and spec.distance_m is not None:
+            why = _cross_at_distance(spec.kind, relation, first_cfg, ego, lanes, spec.distance_m)
+        if (
+            first.NAME == "turn_into"
+            and relation in ("junction_left", "junction_right")
+            and spec.distance_m is not None
+        ):
+            why = _turn_in_at_distance(spec.kind, relation, first_cfg, ego, lanes, spec.distance_m)
+        if why and notes is not None:
+            notes.append(f"{name}: {why}")
         if "distance_m" in ego and not adversaries and crossing:
             # the crossing lies on the ego's way to its junction: the ego starts far enough back for the
             # road user to get across in time (a child crossing four lanes at 1.5 m/s needs ~9 s)
@@ -163,8 +176,6 @@ def sample_layers(reading: Reading, text: str, seed: int) -> dict:
             if room > float(ego["distance_m"]):  # (within the road before the map's feature: a curve's is short)
                 before = layout({"kind": kind, "lanes_per_direction": lanes}).feature_s_m or ARM_LENGTH_M
                 ego["distance_m"] = round(min(room, ARM_LENGTH_M - 20.0, before - 10.0), 3)
-        if crossing and spec.distance_m is not None:
-            _cross_at_distance(spec.kind, relation, first_cfg, ego, lanes, spec.distance_m)
         spawn, speed = place_adversary(
             spec.kind, relation, first.NAME, first_cfg, ego, lanes, given_speed, spec.distance_m
         )
@@ -215,6 +226,18 @@ def sample_layers(reading: Reading, text: str, seed: int) -> dict:
     }
     layers["background"]["vehicles"] = background(rng, layers)
     return layers
+
+
+def _far_side_gap(reading: Reading) -> bool:
+    """Whether someone crosses from the far kerb at a stated gap ("ran into the road from the left
+    about 20 m in front of me"): on a road whose lanes the text leaves open, one lane each way, the
+    road on which such a gap can be kept (across two lanes each way no one on foot covers 13 m in the
+    second or two the gap leaves)."""
+    return any(
+        a.relation == "roadside_left" and a.distance_m is not None and a.behaviours[:1]
+        and a.behaviours[0][0] == "cross_in_front"
+        for a in reading.actors
+    )  # fmt: skip
 
 
 #: Behaviours that start standing at a junction's stop line and set off when the ego comes.
@@ -412,7 +435,12 @@ def _place_adversary(
             lon = min(lon, float(ego["distance_m"]) - CROSSING_CLEAR_OF_JUNCTION_M)
         spawn["longitudinal_m"] = round(lon, 3)
         out_speed = 0.0
-    elif distance_m is not None and relation in ("ahead", "behind", "oncoming") and behaviour_name != "cut_in":
+    elif (
+        distance_m is not None
+        and relation in ("ahead", "behind", "oncoming")
+        and behaviour_name != "cut_in"
+        and not (behaviour_name == "overtake" and cfg.get("gap_m") == distance_m)  # (its gap where it cuts back in)
+    ):
         spawn["longitudinal_m"] = -distance_m if relation == "behind" else distance_m  # as the text says
     elif behaviour_name == "cut_in" and speed is not None and speed > ego_speed + mod.FASTER_MPS:
         spawn["longitudinal_m"] = 0.0  # a faster car starts alongside: it draws ahead, then cuts in
@@ -455,25 +483,102 @@ def _crossing_speed(kind: str, cfg: dict) -> float:
 EARLIEST_IN_FRONT_S = -0.2
 
 
-def _cross_at_distance(kind: str, relation: str, cfg: dict, ego: dict, lanes: int, distance_m: float) -> None:
+def _cross_at_distance(kind: str, relation: str, cfg: dict, ego: dict, lanes: int, distance_m: float) -> str | None:
     """A crossing whose distance from the ego is stated ("steps out 15 m ahead"): its timing
     (``arrival_gap_s``) is the one that sets it off when the ego is that far away, and the distance is
-    kept in its configuration. Closer than a crossing can be and still come in front of the ego, it
-    crosses as close as it can (the dangerous profile's earliest timing); beyond the behaviour's range
-    the timing is left as drawn."""
+    kept in its configuration. Where its usual crossing speed cannot meet the ego as its criticality
+    says from there, the crossing speed (unless stated) is the one within its type's reach that comes
+    nearest, and the timing follows from the stated gap (a child 10 m ahead of a car at 30 km/h runs,
+    and reaches the lane just as the car does). Returns None when the gap is kept, else why not (the
+    timing is then the nearest the behaviour holds)."""
     from vei_scenario.language.behaviours.cross_in_front import PARAMETERS, START_RAMP_S
 
     k = int(ego["lane"])
     cross = (k - 0.5) * 3.5 + 1.0 if relation == "roadside_right" else (2 * lanes - k + 0.5) * 3.5 + 1.0
-    speed = _crossing_speed(kind, cfg)
     accel = TYPES[kind][4]
-    ramp = max(START_RAMP_S, speed / accel if accel > 0 else 0.0)
-    gap = distance_m / max(float(ego["speed_mps"]), 0.5) - (cross / speed + ramp / 2)
-    if EARLIEST_IN_FRONT_S <= gap <= PARAMETERS["arrival_gap_s"].high:
+    ego_speed = max(float(ego["speed_mps"]), 0.5)
+    low, high = PARAMETERS["arrival_gap_s"].low, PARAMETERS["arrival_gap_s"].high
+
+    def gap_at(speed: float) -> float:
+        ramp = max(START_RAMP_S, speed / accel if accel > 0 else 0.0)
+        return distance_m / ego_speed - (cross / speed + ramp / 2)
+
+    speed = _crossing_speed(kind, cfg)
+    gap = gap_at(speed)
+    if not EARLIEST_IN_FRONT_S <= gap <= high and "crossing_speed_mps" not in cfg:
+        wanted = min(max(float(cfg.get("arrival_gap_s", 0.5)), EARLIEST_IN_FRONT_S), high)
+        top = min(PARAMETERS["crossing_speed_mps"].high, TYPES[kind][3])
+        lo = PARAMETERS["crossing_speed_mps"].low
+        steps = max(int((top - lo) / CROSSING_SPEED_STEP_MPS), 1)
+        candidates = [round(lo + (top - lo) * i / steps, 3) for i in range(steps + 1)]
+        speed = min(candidates, key=lambda v: (abs(gap_at(v) - wanted), abs(v - speed)))
+        gap = gap_at(speed)
+        cfg["crossing_speed_mps"] = speed
+    # the latest it may reach the ego's lane and still meet the ego (its side, as the ego goes by):
+    # later, it would cross behind the ego, which is no crossing in front of it
+    band = (TYPES["car"][0][1] + TYPES[kind][0][1]) / 2
+    latest = -((TYPES["car"][0][0] + TYPES[kind][0][0]) / ego_speed + band / speed)
+    if max(low, latest) <= gap <= high:
         cfg["arrival_gap_s"] = round(gap, 3)
         cfg["distance_m"] = round(distance_m, 3)
-    elif gap < EARLIEST_IN_FRONT_S:  # too close to get in front of the ego first: as close as it can
-        cfg["arrival_gap_s"] = EARLIEST_IN_FRONT_S
+        return None
+    if gap < high:
+        # too close to set off then and still meet the ego: the gap is where it is in the ego's path
+        # ("runs out 10 m in front of me": in the lane when the ego is 10 m away), the reading a
+        # crossing in front of the ego can keep
+        cfg["arrival_gap_s"] = round(min(max(distance_m / ego_speed, EARLIEST_IN_FRONT_S), high), 3)
+        cfg["distance_m"] = round(distance_m, 3)
+        return None
+    cfg["arrival_gap_s"] = float(cfg.get("arrival_gap_s", 0.5))
+    return (
+        f"the {kind}'s stated gap of {distance_m:g} m: to set off then and still meet the ego it would "
+        f"have to cross the {cross:.1f} m to the ego's lane more slowly than a {kind} can at the ego's speed"
+    )
+
+
+def _turn_in_at_distance(kind: str, relation: str, cfg: dict, ego: dict, lanes: int, distance_m: float) -> str | None:
+    """A road user pulling out of a side road at a stated distance ahead of the ego ("pulls out of a
+    side street 20 m ahead of me"): its timing (``arrival_gap_s``) is the one that sets it off when the
+    ego is that far from where it joins, and the distance is kept in its configuration. Returns None
+    when kept, else why not (the timing is then the nearest the behaviour holds)."""
+    from vei_scenario.language.behaviours.turn_into import PARAMETERS, gap_for_distance
+
+    from_left = relation == "junction_left"
+    ego_speed, ego_lane = float(ego["speed_mps"]), lane_id(lanes, int(ego["lane"]))
+    gap = gap_for_distance(distance_m, ego_speed, from_left, ego_lane, cfg)
+    low, high = PARAMETERS["arrival_gap_s"].low, PARAMETERS["arrival_gap_s"].high
+    wanted = float(cfg.get("arrival_gap_s", PARAMETERS["arrival_gap_s"].default))
+    if not 0.0 <= gap <= high and "accel_mps2" not in cfg:  # (how hard it pulls away: the timing around the gap)
+        rates = PARAMETERS["accel_mps2"]
+        steps = int((rates.high - rates.low) / 0.1)
+        candidates = [round(rates.low + (rates.high - rates.low) * i / steps, 3) for i in range(steps + 1)]
+
+        def off(a: float) -> float:
+            return abs(gap_for_distance(distance_m, ego_speed, from_left, ego_lane, {**cfg, "accel_mps2": a}) - wanted)
+
+        accel = min(candidates, key=off)
+        gap = gap_for_distance(distance_m, ego_speed, from_left, ego_lane, {**cfg, "accel_mps2": accel})
+        if low <= gap <= high:
+            cfg["accel_mps2"] = accel
+    if 0.0 <= gap <= high:
+        cfg["arrival_gap_s"] = round(gap, 3)
+        cfg["distance_m"] = round(distance_m, 3)
+        return None
+    if gap < 0.0:
+        # it would join behind the ego, no turning in ahead of it: the gap is where it is in the ego's
+        # road ("pulls out 15 m ahead of me": there when the ego is 15 m away), which it can keep
+        cfg["arrival_gap_s"] = round(min(max(distance_m / max(ego_speed, 0.5), low), high), 3)
+        cfg["distance_m"] = round(distance_m, 3)
+        return None
+    cfg["arrival_gap_s"] = high
+    return (
+        f"the {kind}'s stated gap of {distance_m:g} m: pulling out of the side road then, it would reach the "
+        "ego's road too long before the ego comes"
+    )
+
+
+#: The step of the crossing speeds tried for a stated gap (m/s).
+CROSSING_SPEED_STEP_MPS = 0.05
 
 
 def _crossing_lon_m(kind: str, relation: str, cfg: dict, ego: dict, lanes: int) -> float:

@@ -22,7 +22,7 @@ Conventions:
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 #: Side words that name a side outright.
 _PLAIN = {"left": "left", "right": "right", "left-hand": "left", "right-hand": "right"}
@@ -78,10 +78,45 @@ class Said:
     mentions: tuple[tuple[str, object], ...]
 
 
+#: Words of the road only writers who drive on the left use (British), and only writers who drive on
+#: the right and give miles per hour use (American): they say which side a writer's "inside lane" or
+#: "nearside" is on, with or without a unit.
+_LEFT_HAND_WORDS = frozenset({"lorry", "lorries", "carriageway", "kerb", "kerbs", "kerbside", "hgv", "hgvs"})
+_RIGHT_HAND_WORDS = frozenset(
+    {"freeway", "interstate", "sidewalk", "sidewalks", "curb", "curbs", "crosswalk", "stoplight", "semi"}
+)
+
+
+#: Speed units of a writer who follows the metric convention (Euro NCAP's: the nearside is the right).
+_METRIC_SPEEDS = frozenset({"km/h", "kph", "m/s"})
+
+
+#: Words of a narrator telling their own drive.
+_FIRST_PERSON = frozenset({"i", "me", "my", "mine", "we", "us", "our", "ours"})
+
+
 def drives_on_left(tokens: list[str]) -> bool:
-    """Whether the writer drives on the left: speeds in miles per hour (the reader's normaliser writes
-    every "miles an hour" as "mph")."""
-    return "mph" in tokens
+    """Whether the writer drives on the left: speeds in miles per hour without American road words
+    (the reader's normaliser writes every "miles an hour" as "mph"); or, with no metric speed, a
+    motorway named as Britain's ("the M25"), or a driver telling their own drive in British road words
+    ("a lorry in the inside lane drifted into me"). A test line ("a lorry in the nearside lane cuts in
+    ahead of the AV") or metric speeds follow Euro NCAP's convention, a right-hand one, whatever
+    their words."""
+    words = set(tokens)
+    if "mph" in words:
+        return not words & _RIGHT_HAND_WORDS
+    if words & _METRIC_SPEEDS:
+        return False
+    return _motorway_number(tokens) or bool(words & _LEFT_HAND_WORDS and words & _FIRST_PERSON)
+
+
+def _motorway_number(tokens: list[str]) -> bool:
+    """A British motorway named by its number ("the M25", read as "m 25"): "m" before a number, never
+    after one as a distance is."""
+    return any(
+        w == "m" and k + 1 < len(tokens) and tokens[k + 1].isdigit() and not (k and tokens[k - 1][:1].isdigit())
+        for k, w in enumerate(tokens)
+    )
 
 
 def _side(word: str, after: str, left_hand: bool, ring: bool) -> str | None:
@@ -148,6 +183,11 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
     restated = tokens[j + 1 : j + 2] in (["left"], ["right"]) and tokens[j + 2 : j + 3] in (["side"], ["kerb"])
     if tokens[j] in _FAR_NEAR and restated:  # "from the far (left) side": the side said plainly
         return Said(start, j + 3, prep, (("kerb", None), ("kerb_side", tokens[j + 1])))
+    kerb_after = tokens[j + 1 : j + 2] and (tokens[j + 1] in KERB_NOUNS or tokens[j + 1] == "side")
+    if tokens[j] in _FAR_NEAR and kerb_after and j > i and tokens[j - 1] in _DETERMINERS:
+        # "off the far kerb", "from the opposite pavement": across the road, the offside; "the near kerb" the nearside
+        side = _restated(tokens, j + 2) or _side("nearside" if tokens[j] == "near" else "offside", "", left_hand, False)
+        return Said(start, j + 2, prep, (("kerb", None), ("kerb_side", side)))
     # side word, then noun
     if _is_side_word(tokens[j]):
         k = j + 1
@@ -214,6 +254,18 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
     return Said(start, end, prep, (("lane_side", side),))
 
 
+def _restated(tokens: list[str], k: int) -> str | None:
+    """A plain side restating a far or near side later in its sentence ("from the far side of the road,
+    i.e. from my client's left"): "from" and, within four words, left or right. The writer said it
+    plainly, and that wins over the driving convention."""
+    for m in range(k, min(k + 10, len(tokens))):
+        if tokens[m] == ";" or (tokens[m] == "." and len(tokens[m - 1]) > 1):  # (not the stops of "i.e.")
+            return None
+        if tokens[m] == "from":
+            return next((w for w in tokens[m + 1 : m + 5] if w in ("left", "right")), None)
+    return None
+
+
 def beside(lane: str | None, ego_lane: str | None) -> str | None:
     """The side of the ego a road user in ``lane`` is on, when the ego's own lane is said too (lanes
     as left, middle or right): the lane with the lower rank is to the left. Without the ego's lane the
@@ -234,12 +286,97 @@ def starts_in_lane(lane: str | None, side: str | None, toward: str | None) -> bo
     return lane in ("left", "right") and side is None and toward is None
 
 
+#: Behaviours that end in the ego's lane in front of it: a cut-in, an overtake of the ego.
+_ENDS_IN_FRONT = frozenset({"cut_in", "overtake"})
+
+
+def where_it_ends(relation: object, behaviours: list) -> bool:
+    """Whether "ahead" (or "in my lane") said of a road user after it has cut in or overtaken the ego
+    says where that behaviour ends, not where it starts ("overtakes me, and once in my lane he
+    brakes", "cuts in 10 m ahead"): overtaking the ego, it started behind or beside it."""
+    return relation == "ahead" and any(b[0] in _ENDS_IN_FRONT for b in behaviours)
+
+
+def gap_where_it_ends(behaviours: list) -> str | None:
+    """The behaviour a distance said of a road user is the end gap of, when it is said after the road
+    user has overtaken the ego ("overtakes me and pulls back in 3 m ahead", "whips back in front of me
+    with 20 feet to spare"): the overtake's gap where it cuts back in, not where it starts."""
+    return "overtake" if any(b[0] == "overtake" for b in behaviours) else None
+
+
+def arm_is_where_it_acts(prep: str | None, said: set, behaviours: list) -> bool:
+    """Whether a junction arm said "at" after what a road user ahead of (or behind) the ego does is
+    where it does it ("the car in front slows at the entry", "the van behind me stops at the exit"),
+    or said after it has passed the ego is where it goes, not an arm it comes out of: it drives in
+    the ego's lane towards that arm."""
+    if gap_where_it_ends(behaviours):
+        return True  # (having passed the ego: "overtakes me, then takes the next exit": where it goes)
+    return prep == "at" and bool(said & {"ahead", "behind"}) and bool(behaviours)
+
+
+#: What a road user does first that keeps it on the ego's road even when it is said to come from a side.
+_ALONG_THE_EGOS_ROAD = frozenset({"overtake", "follow_vehicle", "cut_out", "change_lane", "wrong_way"})
+
+
+def arm_it_comes_from(junction: bool, came_from: bool, side: str | None, first: str | None, said: set) -> str | None:
+    """The junction arm a vehicle or rider comes along when, at a junction, it is said to come *from*
+    a side with no lane or kerb named ("a cyclist is coming along from the right", "a van comes from
+    my left and slows"): the road on that side, not a lane beside the ego. None where it is not so
+    (a lane or the kerb said, "ahead" said of it, or what it does keeps it on the ego's road)."""
+    if not (junction and came_from and side in ("left", "right")) or "ahead" in said:
+        return None
+    return None if first in _ALONG_THE_EGOS_ROAD else f"junction_{side}"
+
+
+_TOWARDS = frozenset({"to", "towards", "toward"})
+
+
+def crossing_from(side: object, words: str, prev: str, after: str, behaviours: list) -> object:
+    """The side a crossing starts from when a side is said of it: "runs across to the left", "dashed
+    across the road towards the right" say where it goes, so it starts on the other side; any other
+    side ("from the left", "on the right", "to the right of the bus": a place) is where it starts."""
+    towards = (prev in _TOWARDS or words.split()[0] in _TOWARDS) and after != "of"
+    if towards and side in ("left", "right") and behaviours and behaviours[-1][0] == "cross_in_front":
+        return "right" if side == "left" else "left"
+    return side
+
+
+def origin_lane(origin: str | None, relation: str | None) -> str | None:
+    """Where a lane changer starts when its own lane and the lane it moves to are both said ("a coach
+    in the middle lane, 25 m ahead, moves over to the right lane", the ego in the left lane): the
+    side of its own lane, beside the ego, even when a distance ahead is said too ("ahead" says how
+    far along, the lane which lane); None when the lane says no side or the relation stands. (Its own
+    lane is relative to the ego's, the lane it moves to is named as the road's: they are not compared.)"""
+    if origin in ("left", "right") and relation in (None, "ahead"):
+        return origin
+    return None
+
+
 def starts_in_ego_lane(said: set) -> bool:
     """Whether a wrong-way road user starts in the ego's lane facing it, rather than oncoming in its
     own and drifting over: not when it is said to come towards the ego ("comes at me head-on in my
     lane", "over the centre line, coming straight at me"): the writer saw it arrive from the other
     way, and "in my lane" says where it drives into."""
     return "oncoming" not in said
+
+
+def narrator_lane(clauses: list) -> list:
+    """Clauses (link, mentions) with a lane said before anyone is named given to the ego, when the
+    first road user named after it has a lane of its own said right after it ("On the motorway in the
+    middle lane doing 60, a lorry in the inside lane wanders across": the middle lane is the
+    narrator's). One road user does not start in two lanes, and the writer drives in the first."""
+    flat = [m for _, mentions in clauses for m in mentions]
+    first = next((k for k, m in enumerate(flat) if m.slot in ("actor", "pronoun", "lane_side")), None)
+    if first is None or flat[first].slot != "lane_side":
+        return clauses
+    after = next((k for k in range(first + 1, len(flat)) if flat[k].slot in ("actor", "pronoun")), None)
+    if after is None or flat[after].slot != "actor" or flat[after].value == "ego" or after + 1 >= len(flat):
+        return clauses
+    if flat[after + 1].slot != "lane_side" or flat[first].end == flat[after].start:
+        return clauses  # (its lane is not said, or the first lane is the road user's: "middle-lane car")
+    lane = flat[first]
+    ego = replace(lane, slot="actor", value="ego", words="ego", end=lane.start, next_=lane.words.split()[0])
+    return [(link, [x for m in mentions for x in ((ego, m) if m is lane else (m,))]) for link, mentions in clauses]
 
 
 #: Compass headings in degrees, and the words that say them ("eastbound"; "heading east").

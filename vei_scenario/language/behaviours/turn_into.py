@@ -5,7 +5,7 @@ right). It sets off when the ego is close enough that the ego reaches the point 
 
 from __future__ import annotations
 
-from vei_scenario.language.behaviours.base import ActorContext, Parameter, Step, value
+from vei_scenario.language.behaviours.base import ActorContext, Parameter, Step, time_to_cover, value
 from vei_scenario.language.behaviours.junction_entry import ego_trigger_distance_m, go_through, lane_offset_m
 from vei_scenario.language.maps import JUNCTION_RADIUS_M
 
@@ -30,12 +30,27 @@ def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
     turn = "left" if from_left else "right"
     if ctx.actor_exits.get(turn) != ctx.exits.get("straight"):
         raise ValueError(f"{ctx.actor}: turn_into needs a spawn on a side road (junction_left or junction_right)")
-    r = JUNCTION_RADIUS_M
-    e = lane_offset_m(ctx.ego_lane_id)
-    # from the left it crosses the far half and joins beyond the centre; from the right it joins at once
-    actor_path = 2.0 + (r + e + 3.0 if from_left else 0.6 * r + 3.0)
-    ego_path = r + (r * 0.5 if from_left else 3.0)
+    actor_path, ego_path = paths_m(from_left, ctx.ego_lane_id)
     v = value(cfg, PARAMETERS, "speed_mps")
     a = value(cfg, PARAMETERS, "accel_mps2")
     trigger = ego_trigger_distance_m(ctx, actor_path, ego_path, min(v, 8.0), a, value(cfg, PARAMETERS, "arrival_gap_s"))
     return go_through(ctx, turn, v, a, trigger, "turn_into")
+
+
+def paths_m(from_left: bool, ego_lane_id: int) -> tuple[float, float]:
+    """(the road user's path from its stop line to where it joins, the ego's from its junction entry
+    to there) (m): from the left it crosses the far half and joins beyond the centre, from the right
+    it joins at once."""
+    r = JUNCTION_RADIUS_M
+    e = lane_offset_m(ego_lane_id)
+    return 2.0 + (r + e + 3.0 if from_left else 0.6 * r + 3.0), r + (r * 0.5 if from_left else 3.0)
+
+
+def gap_for_distance(distance_m: float, ego_speed_mps: float, from_left: bool, ego_lane_id: int, cfg: dict) -> float:
+    """The ``arrival_gap_s`` that sets it off from its stop line when the ego is ``distance_m`` before
+    the side road's mouth ("pulls out of a side road 20 m ahead of me": the distance the driver sees
+    to the road it comes out of): the ego's time to where it joins less its own time to get there."""
+    actor_path, ego_path = paths_m(from_left, ego_lane_id)
+    v = min(value(cfg, PARAMETERS, "speed_mps"), 8.0)
+    t_actor = time_to_cover(actor_path, v, value(cfg, PARAMETERS, "accel_mps2"), 0.0)
+    return (distance_m + ego_path) / max(ego_speed_mps, 0.5) - t_actor
