@@ -45,6 +45,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from vei_scenario.language.lemmas import english, lemmas
+from vei_scenario.language.who import make_and_model
 
 #: ``kind_at(tokens, i)``: the road-user type named by a phrase starting at ``i`` ("ego" for the ego)
 #: and the phrase's length, or None when no road-user phrase starts there.
@@ -61,7 +62,9 @@ BE = frozenset({"am", "is", "are", "was", "were", "be", "been", "being", "sat", 
 PUNCT = frozenset({".", ";", "!", "?", ":", ","})
 SENTENCE_END = frozenset({".", ";", "!", "?", ":"})
 #: Prepositions that join a person to the vehicle it rides ("a lad on a scooter", "a kid astride a bike").
-RIDING = frozenset({"on", "riding", "astride", "aboard"})
+RIDING = frozenset({"on", "riding", "astride", "aboard", "in", "inside", "driving"})
+#: Of those, the prepositions that put a person inside a motor vehicle ("a bloke in a white van").
+INSIDE = frozenset({"in", "inside", "driving"})
 VEHICLES = frozenset({"car", "van", "truck"})
 VULNERABLE = frozenset({"pedestrian", "bicycle", "e-scooter"})
 #: The words a report sets two parties against each other with ("car versus e-scooter").
@@ -157,7 +160,9 @@ def _riders(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
                 break
         if person_start is None and not known(out, k):
             person_start = _unknown_person(out, k, known)
-        if person_start is None or out[person_start] not in DETERMINERS:
+        if person_start is None:
+            person_start = _bare_person(out, kind_at)
+        if person_start is None or (out[person_start] not in DETERMINERS and person_start != len(out) - 1):
             out.append(tokens[i])
             i += 1
             continue
@@ -167,21 +172,46 @@ def _riders(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
             j += 3
         elif j < len(tokens) and tokens[j] in DETERMINERS:
             j += 1
+        elif tokens[i] in INSIDE:  # ("a test in which a truck ...": no vehicle a person is in)
+            out.append(tokens[i])
+            i += 1
+            continue
         head = next(
             (h for h in range(j, min(j + 3, len(tokens))) if kind_at(tokens, h) is not None),
             None,
         )
         ride = kind_at(tokens, head) if head is not None else None
         between_known = head is not None and any(known(tokens, h) for h in range(j, head))
-        if ride is None or ride[0] in ("pedestrian", "truck", "ego") or between_known:
+        unfit = ("pedestrian", "ego", "bicycle", "e-scooter") if tokens[i] in INSIDE else ("pedestrian", "truck", "ego")
+        if (
+            ride is None
+            or ride[0] in unfit
+            or between_known
+            or (tokens[i] in INSIDE and _goes_on(tokens, head + ride[1], known))
+        ):
             out.append(tokens[i])
             i += 1
             continue
-        det = out[person_start]
+        det = out[person_start] if out[person_start] in DETERMINERS else "a"  # ("guy on a moped": a rider)
         det = "a" if det in INDEFINITE | POSSESSIVE else det  # ("my mate on his bike": a rider)
         out[person_start:] = [det]
         i = j
     return out
+
+
+def _bare_person(out: list[str], kind_at: KindAt) -> int | None:
+    """Where a person's noun with no determiner that opens a clause ends ``out`` ("Guy on a moped
+    coming the wrong way", "..., bloke in a white van pulls out"), else None."""
+    k = len(out) - 1
+    found = kind_at(out, k)
+    opens = k == 0 or out[k - 1] in PUNCT
+    return k if found is not None and found == ("pedestrian", 1) and opens else None
+
+
+def _goes_on(tokens: list[str], k: int, known: Known) -> bool:
+    """Whether the noun phrase goes on past ``k`` with a noun the reader has no phrase for ("a baby in a
+    car seat": the seat, not the car)."""
+    return k < len(tokens) and tokens[k].isalpha() and not known(tokens, k) and tokens[k] not in PREPOSITIONS
 
 
 #: Verbs of riding: a person doing one of them to a vehicle rides it ("a woman riding a bike").
@@ -310,6 +340,13 @@ def _narrators_people(tokens: list[str], kind_at: KindAt, dropped: list[str]) ->
     return out
 
 
+#: Colours, a closed class: before a noun they are its modifiers ("a grey Audi"), whatever else the
+#: reader reads them as alone ("grey" skies).
+COLOURS = frozenset(
+    "white black grey gray silver red blue green yellow orange brown purple pink gold beige maroon navy".split()
+)
+
+
 def _apposition_end(tokens: list[str], i: int, kind_at: KindAt, known: Known) -> int | None:
     """Where an apposition starting at ``i`` ends (", a tiny Fiat," / "a battered old Ford"): an
     indefinite article, up to three words that are vehicle nouns or words the reader has no phrase
@@ -323,7 +360,14 @@ def _apposition_end(tokens: list[str], i: int, kind_at: KindAt, known: Known) ->
             if any(f is not None and f[0] not in VEHICLES for f in found):
                 return None  # (", a cyclist, ...": someone else)
             return k if any(f is not None for f in found) or k > j + 1 else None
-        if not tokens[k].replace("-", "").isalpha() or (known(tokens, k) and kind_at(tokens, k) is None):
+        nxt = tokens[k + 1] if k + 1 < len(tokens) else "."
+        year = tokens[k].isdigit() and nxt.isalpha() and nxt not in UNITS_AFTER  # ("a 2019 Honda")
+        if year:
+            continue
+        modifier = tokens[k] in COLOURS and nxt not in PUNCT
+        if not tokens[k].replace("-", "").isalpha() or (
+            known(tokens, k) and kind_at(tokens, k) is None and not modifier
+        ):
             return None  # (", a car ahead brakes": a clause of its own)
     return None
 
@@ -378,6 +422,99 @@ def _ego_apposition(tokens: list[str], kind_at: KindAt, known: Known, dropped: l
                 dropped.extend(out[i + 3 : end])
                 del out[i + 2 : end]
         i += 1
+    return out
+
+
+#: Words of a placement after a road user's noun ("the van behind me", "the lorry in the next lane").
+_PLACEMENT_WORDS = frozenset({"front", "next", "left", "right", "other", "same", "inside", "outside", "middle"})
+
+
+def _placement(words: list[str]) -> bool:
+    """Whether ``words`` place a road user and say nothing it does ("behind me", "in the next lane",
+    "ahead of us"): prepositions, determiners, pronouns and nouns, no verb."""
+    if not 1 <= len(words) <= 5:
+        return False
+    for w in words:
+        closed = w in PREPOSITIONS or w in DETERMINERS or w in PRONOUNS or w in PLACED or w in _PLACEMENT_WORDS
+        if not closed and (not w.isalpha() or "VERB" in lemmas(w)):
+            return False
+    return True
+
+
+def _placed_apposition(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "The van behind me, a white Sprinter, ...", "the car ahead of us, a silver Octavia, ...": a vehicle
+    said in apposition after a road user and its placement is that road user, no second one; where it
+    names the type more exactly than a general noun ("the vehicle in front, a lorry,") its noun is used."""
+    out = list(tokens)
+    i = 0
+    while i < len(out):
+        p = _phrase_at(out, i, kind_at, known)
+        if p is None or p.kind not in VEHICLES or p.det not in DEFINITE:
+            i += 1
+            continue
+        comma = next((k for k in range(p.end, min(p.end + 6, len(out))) if out[k] in PUNCT), None)
+        end = _apposition_end(out, comma, kind_at, known) if comma is not None and out[comma] == "," else None
+        if end is None or not _placement(out[p.end : comma]) or end >= len(out) or out[end] != ",":
+            i = p.end
+            continue
+        q = next((x for x in _phrases(out[comma + 1 : end], kind_at, known)), None)
+        said = out[comma + 1 + q.head : comma + 1 + q.end] if q is not None else []
+        dropped.extend(w for w in out[comma + 1 : end] if w != ",")
+        del out[comma:end]
+        if said and p.kind == "car" and q.kind != "car":
+            out[p.head : p.end] = said
+        i = p.end
+    return out
+
+
+#: Words between the ego and the vehicle it is in ("the ego was driving his Tesla", "the ego, in her van").
+_AT_THE_WHEEL = frozenset({"driving", "in", "inside", "behind", "at", "wheel", "of", ","}) | BE
+
+
+def _egos_vehicle(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """The ego's own vehicle is the ego: "the ego's Fiesta" (the insured's, the claimant's) is said "the
+    ego"; "the ego was driving his Tesla", "the ego, in her van," keep the ego and lose the vehicle; and
+    the vehicle named so, named again with "the" ("the Fiesta, travelling at 30 mph, ..."), is the ego,
+    until one of its kind is named new with "a"."""
+    out = list(tokens)
+    own: set[str] = set()
+    i = 0
+    while i < len(out):
+        p = _phrase_at(out, i, kind_at, known)
+        if p is None:
+            i += 1
+            continue
+        noun = " ".join(out[p.head : p.end])
+        if p.kind in VEHICLES and p.det in ("a", "an") and noun in own:
+            own.discard(noun)  # (another one of the same make)
+        elif p.kind in VEHICLES and p.det == "the" and noun in own:
+            dropped.extend(out[p.start + 1 : p.end])
+            out[p.start : p.end] = ["the", "ego"]
+            i = p.start + 2
+            continue
+        elif p.kind == "ego":
+            j = p.end
+            if out[j : j + 1] == ["'s"]:  # ("the ego 's fiesta")
+                q = _phrase_at(
+                    out, next((h for h in range(j + 1, min(j + 4, len(out))) if kind_at(out, h)), j), kind_at, known
+                )
+                if q is not None and q.kind in VEHICLES and all(not known(out, h) for h in range(j + 1, q.head)):
+                    own.add(" ".join(out[q.head : q.end]))
+                    dropped.extend(out[j : q.end])
+                    del out[j : q.end]
+            else:
+                k = j
+                while k < min(j + 4, len(out)) and out[k] in _AT_THE_WHEEL:
+                    k += 1
+                if k > j and k < len(out) and out[k] in ("his", "her", "their", "its"):
+                    head = next((h for h in range(k + 1, min(k + 4, len(out))) if kind_at(out, h)), None)
+                    q = _phrase_at(out, head, kind_at, known) if head is not None else None
+                    if q is not None and q.kind in VEHICLES and q.start == k:
+                        own.add(" ".join(out[q.head : q.end]))
+                        dropped.extend(out[k : q.end])
+                        cut = k - 1 if out[k - 1] in ("in", "inside") else k  # ("in her van": where the ego is)
+                        del out[cut : q.end]
+        i = p.end
     return out
 
 
@@ -905,6 +1042,7 @@ def resolve(tokens: list[str], kind_at: KindAt, known: Known) -> tuple[list[str]
     referents and the mentions said again (over the referents that remain)."""
     dropped: list[str] = []
     names: dict[str, str] = {}
+    tokens = make_and_model(tokens, kind_at, known)
     tokens = _brackets(tokens, kind_at, known, names, dropped)
     tokens = _vehicle_labels(tokens, kind_at, known)
     tokens = _letter_labels(tokens, kind_at, known, dropped)
@@ -918,6 +1056,8 @@ def resolve(tokens: list[str], kind_at: KindAt, known: Known) -> tuple[list[str]
     tokens = _narrators_people(tokens, kind_at, dropped)
     tokens = _passengers(tokens, kind_at, known, dropped)
     tokens = _ego_apposition(tokens, kind_at, known, dropped)
+    tokens = _placed_apposition(tokens, kind_at, known, dropped)
+    tokens = _egos_vehicle(tokens, kind_at, known, dropped)
     tokens = _aftermath(tokens, kind_at, known, dropped)
     tokens = _ego_unnamed(tokens, kind_at, known)
     tokens = _named_speeds(tokens, kind_at, known, names)

@@ -1,0 +1,157 @@
+"""Who is there: which road users a description names, which one is the ego, and their types. Each
+construction is pinned by wordings of our own (none from a corpus), read through the whole reader."""
+
+from __future__ import annotations
+
+import pytest
+
+from vei_scenario.language.reader import read
+
+MPH = 0.44704
+
+
+def kinds(text: str) -> list[str]:
+    return [a.kind for a in read(text).actors]
+
+
+def ego_kph(text: str) -> float | None:
+    r = read(text)
+    return None if r.ego_speed_mps is None else r.ego_speed_mps * 3.6
+
+
+# --- makes and models name vehicles of their type ---------------------------------------------------
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("A grey Skoda pulled out of a side road on the right in front of me while I was doing 30 mph.", "car"),
+        ("Some lad in a Sprinter was tailgating me on the motorway at 70 mph.", "van"),
+        ("Ego at 50 km/h, a Vauxhall Astra ahead brakes hard.", "car"),
+        ("A Mercedes Sprinter van overtook me on the dual carriageway at 60 mph.", "van"),
+        ("I'm doing 50 mph on the bypass, Volvo sits right on my tail for miles then overtakes.", "car"),
+        ("Ego at 40 km/h; a Scania ahead in our lane brakes hard.", "truck"),
+    ],
+    ids=["make", "van-model", "make-and-model", "make-model-noun", "bare-make", "truck-make"],
+)
+def test_a_make_or_model_names_a_vehicle_of_its_type(text, kind):
+    assert kinds(text) == [kind]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was doing 25 mph on the high street when a silver Mokka pulled out from a side road on the left.",
+        "A woman in a red Zafira cut across in front of me from the right as I drove at 30 km/h.",
+        "On the motorway at 60 mph, a black Touareg sat on my bumper for miles and then overtook me.",
+    ],
+    ids=["subject", "person-in", "on-my-bumper"],
+)
+def test_a_capitalised_name_in_a_vehicles_place_is_a_car(text):
+    assert kinds(text) == ["car"]
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("I was doing 30 mph past the Odeon when a cyclist pulled out from the right in front of me.", ["bicycle"]),
+        ("Near the Crown a jogger crossed from the left in front of me at 20 mph.", ["pedestrian"]),
+    ],
+    ids=["past-the-place", "near-the-place"],
+)
+def test_a_capitalised_place_is_no_vehicle(text, expected):
+    assert kinds(text) == expected
+
+
+# --- a person on or in a vehicle is one road user of that vehicle --------------------------------------
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("Kid on a motorbike came the wrong way down the slip road towards me, I was doing 40 mph.", "car"),
+        ("Woman on a moped pulled out of a side road on the left right in front of me, I was at 30 km/h.", "car"),
+        ("Some guy in a van reversed out of a driveway on the right into my path while I did 20 mph.", "van"),
+        ("A bloke in a lorry drifted into my lane from the left on the motorway, me at 60 mph.", "truck"),
+    ],
+    ids=["bare-on-motorbike", "bare-on-moped", "guy-in-van", "bloke-in-lorry"],
+)
+def test_a_person_on_or_in_a_vehicle_is_that_vehicle(text, kind):
+    assert kinds(text) == [kind]
+
+
+# --- a second road user after a collision, named as new, is a road user ------------------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        (
+            "A taxi pulled out of a side road on the left and hit my front wing at 20 mph; then a cyclist "
+            "that was behind me ran into my back bumper.",
+            ["car", "bicycle"],
+        ),
+        (
+            "I hit a deer that jumped out from the right at 60 km/h, and a moment later a lorry following "
+            "me struck my rear.",
+            ["pedestrian", "truck"],
+        ),
+        (
+            "A van clipped my mirror as it overtook me at 40 mph. Then a motorbike behind me went straight "
+            "into my boot.",
+            ["van", "car"],
+        ),
+    ],
+    ids=["cyclist-behind", "lorry-following", "motorbike-behind"],
+)
+def test_a_new_road_user_after_a_collision_is_a_road_user(text, expected):
+    assert kinds(text) == expected
+
+
+# --- a vehicle in apposition after a placed road user is that road user ----------------------------
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("The van behind me, a white Sprinter, flashed its lights and overtook me at 50 mph.", "van"),
+        ("The lorry in the next lane, a big Scania, drifted into my lane as I drove at 60 mph.", "truck"),
+        ("The car ahead of us, a silver Octavia, braked sharply; we were at 40 km/h.", "car"),
+    ],
+    ids=["behind-me", "in-the-next-lane", "ahead-of-us"],
+)
+def test_a_vehicle_in_apposition_after_a_placed_road_user_is_that_one(text, kind):
+    assert kinds(text) == [kind]
+
+
+# --- the ego's own vehicle, named by its make or kind, is the ego ---------------------------------------
+@pytest.mark.parametrize(
+    "text, kind, speed_kph",
+    [
+        (
+            "My client was driving her Volvo at 30 mph when a cyclist swung out from the left in front of her.",
+            "bicycle",
+            30 * MPH * 3.6,
+        ),
+        (
+            "The insured's Corsa was travelling at 25 mph when a pedestrian stepped out from the right ahead of it.",
+            "pedestrian",
+            25 * MPH * 3.6,
+        ),
+        (
+            "A cyclist cut across from the left in front of the insured's Passat. The Passat was doing about 30 mph.",
+            "bicycle",
+            30 * MPH * 3.6,
+        ),
+    ],
+    ids=["driving-her", "possessive", "named-again"],
+)
+def test_the_egos_own_vehicle_is_the_ego(text, kind, speed_kph):
+    r = read(text)
+    assert [a.kind for a in r.actors] == [kind]
+    assert r.ego_speed_mps is not None and abs(r.ego_speed_mps * 3.6 - speed_kph) < 0.5
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "V1, a 2017 Skoda Octavia, was travelling at 30 mph when a cyclist crossed from the left ahead of V1.",
+        "The ego, a 2021 Ford Transit van, drives at 40 km/h; a jogger steps out from the right in front of it.",
+        "Unit 1, a 2015 Toyota, was proceeding at 20 mph. A pedestrian walked out from the nearside kerb ahead.",
+    ],
+    ids=["year-make-model", "year-make-model-noun", "year-make"],
+)
+def test_a_vehicle_with_its_year_in_apposition_to_the_ego_is_the_ego(text):
+    assert len(read(text).actors) == 1
