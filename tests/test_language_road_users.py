@@ -155,3 +155,47 @@ def test_the_egos_own_vehicle_is_the_ego(text, kind, speed_kph):
 )
 def test_a_vehicle_with_its_year_in_apposition_to_the_ego_is_the_ego(text):
     assert len(read(text).actors) == 1
+
+
+# --- someone who only sees, watches or films is a witness, no road user --------------------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        (
+            "I was doing 30 mph when a van pulled out of a side road on the left in front of me. "
+            "A man at the bus stop watched it all.",
+            ["van"],
+        ),
+        (
+            "A cyclist swerved into my lane from the right as I passed at 40 km/h; "
+            "a woman on the pavement filmed it on her phone.",
+            ["bicycle"],
+        ),
+        (
+            "There was an old chap on the corner who saw everything. I was at 25 mph and a lorry "
+            "cut across from the right in front of me.",
+            ["truck"],
+        ),
+        (
+            "A taxi ahead of me braked hard while I was doing 50 km/h, and two kids waiting "
+            "for the bus noticed the whole thing.",
+            ["car"],
+        ),
+    ],
+    ids=["watched", "filmed", "saw-relative", "noticed"],
+)
+def test_a_witness_is_no_road_user(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A man who saw me coming stepped out anyway from the left in front of me, I was doing 20 mph.",
+        "A boy staring at his phone walked out into the road from the right ahead of me at 30 km/h.",
+        "A woman watched the traffic and then ran across the road from the left in front of me, 25 mph.",
+    ],
+    ids=["saw-then-stepped", "staring-walked", "watched-then-ran"],
+)
+def test_someone_who_looks_and_moves_is_a_road_user(text):
+    assert kinds(text) == ["pedestrian"]

@@ -552,6 +552,75 @@ def _passengers(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[
     return out
 
 
+#: Verbs of perceiving: someone whose doing is only one of these watches the scene from outside it.
+PERCEIVE = frozenset({"see", "watch", "witness", "film", "record", "notice", "observe"})
+#: Auxiliaries and forms of "have" and "do", which say no doing of their own.
+_AUXILIARIES = frozenset({"have", "has", "had", "do", "does", "did", "will", "would", "could", "can", "must"})
+
+
+def _verb_of(word: str) -> bool:
+    return word.isalpha() and "VERB" in lemmas(word) and word not in BE and word not in _AUXILIARIES
+
+
+def _only_perceives(tokens: list[str], start: int, kind_at: KindAt) -> int | None:
+    """Where the perceiving verb is, when the first verb after a road user's phrase (``start``, past
+    its modifiers and a relative pronoun) is one of perceiving and nothing after it in the sentence is
+    a doing of its own ("a woman on the pavement filmed it", "a lady ... who saw the whole thing"); a
+    verb after another road user is that one's ("watched as a cyclist swerved"). Else None."""
+    k = start
+    while k < len(tokens) and tokens[k] not in SENTENCE_END and tokens[k] != ",":
+        w = tokens[k]
+        if _lemma_in(w, PERCEIVE) and _verb_of(w):
+            break
+        found = kind_at(tokens, k)
+        if found is not None:
+            det = tokens[k - 1] in DETERMINERS
+            if tokens[k - 1 - det] in PREPOSITIONS:  # ("waiting for the bus": an object)
+                k += found[1]
+                continue
+            return None  # (someone else named first)
+        modifier = "NOUN" in lemmas(w) or w.endswith("ing") or w in DETERMINERS or w in PRONOUNS
+        if _verb_of(w) and not modifier:  # (nouns and participles modify: "at the bus stop", "waiting")
+            return None
+        k += 1
+    if k >= len(tokens) or not _lemma_in(tokens[k], PERCEIVE):
+        return None
+    for j in range(k + 1, len(tokens)):
+        w = tokens[j]
+        if w in SENTENCE_END:
+            break
+        found = kind_at(tokens, j)
+        if found is not None and found[0] != "ego":
+            break  # (what follows is the other one's doing)
+        noun = tokens[j - 1] in DETERMINERS or tokens[j - 1] in POSSESSIVE
+        if _verb_of(w) and not noun and not _lemma_in(w, PERCEIVE):
+            return None  # ("watched the traffic and then ran across": a road user)
+    return k
+
+
+def _witnesses(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """Someone who only sees, watches, films or notices ("a man at the bus stop watched it all", "there
+    was a lady with a stroller on the sidewalk who saw the whole thing") is a witness, no road user: the
+    phrase, with its number and modifiers, up to the verb of perceiving is taken out. Whoever also does
+    something on the road ("a man who saw me coming stepped out anyway") stays."""
+    out = list(tokens)
+    i = 0
+    while i < len(out):
+        p = _phrase_at(out, i, kind_at, known)
+        if p is None or p.kind == "ego" or (p.start > 0 and out[p.start - 1] in PREPOSITIONS):
+            i += 1 if p is None else p.end - i  # (after a preposition it is no subject: "for the bus")
+            continue
+        k = _only_perceives(out, p.end, kind_at)
+        if k is None:
+            i = p.end
+            continue
+        start = p.start - (p.start > 0 and out[p.start - 1].isdigit())  # ("2 kids waiting ... noticed")
+        dropped.extend(w for w in out[start : k + 1] if w.isalpha())
+        del out[start : k + 1]
+        i = start
+    return out
+
+
 #: Verbs of contact: after a clause that says the collision, someone named for the first time arrives
 #: in its aftermath ("the ambulance came", "the bus driver behind us stopped to help").
 CONTACT = frozenset({"hit", "strike", "collide", "clip", "crash", "smash", "knock", "tag", "rear-end", "plough"})
@@ -1055,6 +1124,7 @@ def resolve(tokens: list[str], kind_at: KindAt, known: Known) -> tuple[list[str]
     tokens = _own_vehicle(tokens, kind_at, known, dropped)
     tokens = _narrators_people(tokens, kind_at, dropped)
     tokens = _passengers(tokens, kind_at, known, dropped)
+    tokens = _witnesses(tokens, kind_at, known, dropped)
     tokens = _ego_apposition(tokens, kind_at, known, dropped)
     tokens = _placed_apposition(tokens, kind_at, known, dropped)
     tokens = _egos_vehicle(tokens, kind_at, known, dropped)
