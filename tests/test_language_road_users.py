@@ -199,3 +199,41 @@ def test_a_witness_is_no_road_user(text, expected):
 )
 def test_someone_who_looks_and_moves_is_a_road_user(text):
     assert kinds(text) == ["pedestrian"]
+
+
+# --- a narrator on foot: the vehicle the other road user comes in front of is the ego -------------------
+@pytest.mark.parametrize(
+    "text, kind, speed_kph",
+    [
+        (
+            "I was waiting at the lights on foot when I saw a cyclist shoot across from the right in front "
+            "of a blue estate doing about 30 km/h. The estate braked hard and stopped.",
+            "bicycle",
+            30,
+        ),
+        (
+            "Walking my dog along the pavement, I watched a kid on a bike ride out of a driveway on the "
+            "left right into the path of a red hatchback. The hatchback was doing maybe 25 mph and swerved.",
+            "bicycle",
+            25 * MPH * 3.6,
+        ),
+        (
+            "I was sitting outside the cafe and saw a jogger step off the kerb on the right in front of a "
+            "white van going at 40 km/h. The driver stopped just in time.",
+            "pedestrian",
+            40,
+        ),
+    ],
+    ids=["waiting-estate", "walking-hatchback", "sitting-van"],
+)
+def test_a_narrator_on_foot_is_no_road_user_and_the_vehicle_in_the_conflict_is_the_ego(text, kind, speed_kph):
+    r = read(text)
+    assert [a.kind for a in r.actors] == [kind]
+    assert r.ego_speed_mps is not None and abs(r.ego_speed_mps * 3.6 - speed_kph) < 0.5
+
+
+def test_a_narrator_who_drives_stays_the_ego():
+    text = "I was driving at 40 km/h when I saw a jogger step out from the right in front of a parked van."
+    r = read(text)
+    assert abs(r.ego_speed_mps * 3.6 - 40) < 0.5
+    assert "pedestrian" in [a.kind for a in r.actors]

@@ -621,6 +621,97 @@ def _witnesses(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[s
     return out
 
 
+#: Verbs of being somewhere on foot: a narrator doing one of them is no driver ("I was standing at the
+#: bus stop", "walking my dog along the pavement, I ...").
+ON_FOOT = frozenset({"stand", "wait", "walk", "sit", "jog", "stroll", "queue"})
+#: Verbs a vehicle in a conflict does: the one that does one is the one the conflict is told from.
+_REACTS = frozenset({"brake", "stop", "swerve", "skid", "slam", "slow", "hoot", "honk"})
+
+
+def _narrator_frame(tokens: list[str], kind_at: KindAt) -> tuple[int, int] | None:
+    """The span from the sentence's start to the narrator's verb of perceiving ("I was standing at the
+    bus stop when I saw", "I was sitting outside and saw", "Walking my dog along the pavement, I
+    watched"), when the narrator is on foot in it, else None."""
+    for k, w in enumerate(tokens):
+        if not (_lemma_in(w, PERCEIVE) and _verb_of(w)):
+            continue
+        start = max((j + 1 for j in range(k) if tokens[j] in (".", ";", "!", "?")), default=0)
+        said = tokens[start:k]
+        others = any((kind_at(tokens, j) or ("ego",))[0] != "ego" for j in range(start, k))
+        if ("i" in said or "we" in said) and not others and any(_lemma_in(t, ON_FOOT) or t == "foot" for t in said):
+            return start, k
+    return None
+
+
+#: Participles that give a vehicle's speed after it ("a blue estate doing about 30 km/h").
+_GOING = frozenset({"doing", "going", "travelling", "traveling", "driving", "moving"})
+
+
+def _speed_after(tokens: list[str], i: int) -> int:
+    """The end of a participle of going and its speed at ``i`` ("doing about 30 km/h"), else ``i``."""
+    if i >= len(tokens) or tokens[i] not in _GOING:
+        return i
+    for j in range(i + 1, min(i + 5, len(tokens) - 1)):
+        if tokens[j].replace(".", "").isdigit():
+            return j + 2 if tokens[j + 1] in SPEED_UNITS else i
+    return i
+
+
+def _narrator_on_foot(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """A narrator on foot who watches ("I was standing at the bus stop when I saw a boy on an e-scooter
+    come out ... into the path of a silver Audi. The Audi ... braked") is no road user: the ego is the
+    vehicle at the centre of the conflict: the one the other road user comes into the path or in front
+    of, else the one that brakes, stops or swerves, else the only one. It is said "the ego" wherever it is
+    named ("the Audi", "the driver"), and the narrator's frame up to the verb of seeing is taken out.
+    A narrator who is in the traffic too ("in front of me", "my car") is left the ego."""
+    if "ego" in tokens or "me" in tokens or "us" in tokens:
+        return tokens
+    frame = _narrator_frame(tokens, kind_at)
+    if frame is None:
+        return tokens
+    phrases = [p for p in _phrases(tokens, kind_at, known) if p.start > frame[1]]
+    motor = [p for p in phrases if p.kind in VEHICLES and p.det in ("a", "an", "the", "")]
+    if not motor or not any(p.kind not in VEHICLES and p.kind != "ego" for p in phrases):
+        return tokens
+    centre = next((p for p in motor if tokens[p.start - 2 : p.start] in (["path", "of"], ["front", "of"])), None)
+    centre = centre or next(
+        (p for p in motor if _lemma_in(tokens[p.end] if p.end < len(tokens) else "", _REACTS)), None
+    )
+    nouns = {" ".join(tokens[p.head : p.end]) for p in motor}
+    if centre is None and len(nouns) == 1:
+        centre = motor[0]
+    if centre is None:
+        return tokens
+    noun = " ".join(tokens[centre.head : centre.end])
+    out: list[str] = []
+    i = 0
+    while i < len(tokens):
+        if frame[0] <= i <= frame[1]:
+            dropped.append(tokens[i])
+            i += 1
+            continue
+        p = next((x for x in phrases if x.start == i), None)
+        again = p is not None and p.start >= centre.start and " ".join(tokens[p.head : p.end]) == noun
+        driver = tokens[i : i + 2] == ["the", "driver"] and i > centre.start and tokens[i + 2 : i + 3] != ["of"]
+        if p is not None and (p is centre or (again and p.det == "the")):
+            dropped.extend(tokens[p.start : p.end])
+            out += ["the", "ego"]
+            i = p.end
+            end = _speed_after(tokens, i)
+            if end > i and p.start > 0 and tokens[p.start - 1] in PREPOSITIONS:  # ("in front of a van doing
+                stop = next((k for k in range(end, len(tokens)) if tokens[k] in SENTENCE_END), len(tokens))
+                out += tokens[end:stop] + [",", "the", "ego", "was"] + tokens[i:end]  # 30": the ego's speed)
+                i = stop
+            continue
+        if driver:
+            out += ["the", "ego"]
+            i += 2
+            continue
+        out.append(tokens[i])
+        i += 1
+    return out
+
+
 #: Verbs of contact: after a clause that says the collision, someone named for the first time arrives
 #: in its aftermath ("the ambulance came", "the bus driver behind us stopped to help").
 CONTACT = frozenset({"hit", "strike", "collide", "clip", "crash", "smash", "knock", "tag", "rear-end", "plough"})
@@ -1125,6 +1216,7 @@ def resolve(tokens: list[str], kind_at: KindAt, known: Known) -> tuple[list[str]
     tokens = _narrators_people(tokens, kind_at, dropped)
     tokens = _passengers(tokens, kind_at, known, dropped)
     tokens = _witnesses(tokens, kind_at, known, dropped)
+    tokens = _narrator_on_foot(tokens, kind_at, known, dropped)
     tokens = _ego_apposition(tokens, kind_at, known, dropped)
     tokens = _placed_apposition(tokens, kind_at, known, dropped)
     tokens = _egos_vehicle(tokens, kind_at, known, dropped)
