@@ -237,3 +237,19 @@ def test_a_narrator_who_drives_stays_the_ego():
     r = read(text)
     assert abs(r.ego_speed_mps * 3.6 - 40) < 0.5
     assert "pedestrian" in [a.kind for a in r.actors]
+
+
+# --- an animal and its rider are one road user ------------------------------------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A woman on a horse was trotting along the verge on my left as I came round the bend at 30 mph.",
+        "A girl riding a pony came out of a gate on the right in front of me while I was doing 20 km/h.",
+        "A rider and her horse were walking along the left side of the road ahead of me at 40 km/h.",
+        "A man leading a horse crossed the road from the left ahead of me, I was doing 25 mph.",
+        "An old man and his horse were walking along the left verge ahead of me, I was at 30 km/h.",
+    ],
+    ids=["on-a-horse", "riding-a-pony", "rider-and-horse", "leading", "man-and-his-horse"],
+)
+def test_an_animal_and_its_rider_are_one_road_user(text):
+    assert kinds(text) == ["pedestrian"]

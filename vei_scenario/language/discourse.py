@@ -45,6 +45,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from vei_scenario.language.lemmas import english, lemmas
+from vei_scenario.language.lexicon import ANIMALS
 from vei_scenario.language.who import make_and_model
 
 #: ``kind_at(tokens, i)``: the road-user type named by a phrase starting at ``i`` ("ego" for the ego)
@@ -214,6 +215,11 @@ def _goes_on(tokens: list[str], k: int, known: Known) -> bool:
     return k < len(tokens) and tokens[k].isalpha() and not known(tokens, k) and tokens[k] not in PREPOSITIONS
 
 
+#: Animals: one led, walked or ridden by a person ("a man leading a horse", "a girl riding a pony") is
+#: in that person's hands, one road user.
+ANIMAL_WORDS = frozenset(ANIMALS) - {"animal"}
+
+
 #: Verbs of riding: a person doing one of them to a vehicle rides it ("a woman riding a bike").
 RIDE_VERBS = frozenset({"ride", "pedal", "drive", "scoot"})
 
@@ -225,7 +231,8 @@ def _pushed(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]
     i = 0
     while i < len(tokens):
         w = tokens[i]
-        if w.endswith("ing") and out and not _lemma_in(w, RIDE_VERBS) and w not in RIDING:
+        animal = i + 2 < len(tokens) and any(t in ANIMAL_WORDS for t in tokens[i + 1 : i + 3])
+        if w.endswith("ing") and out and (animal or not _lemma_in(w, RIDE_VERBS)) and (animal or w not in RIDING):
             before = next((b for b in range(len(out) - 1, max(len(out) - 3, -1), -1) if kind_at(out, b)), None)
             person = kind_at(out, before) if before is not None else None
             j = i + 1 + (i + 1 < len(tokens) and tokens[i + 1] in DETERMINERS)
@@ -237,7 +244,7 @@ def _pushed(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]
                 and person[0] == "pedestrian"
                 and before + person[1] == len(out)
                 and thing is not None
-                and thing[0] in ("bicycle", "e-scooter")
+                and (thing[0] in ("bicycle", "e-scooter") or tokens[head] in ANIMAL_WORDS)
                 and plain
             ):
                 dropped.extend(tokens[i : head + thing[1]])

@@ -30,6 +30,11 @@ VAN_MODELS = (
 )  # fmt: skip
 TRUCK_MAKES = ("scania", "iveco", "daf", "transit bus")
 
+#: Animals on the road, played as pedestrians (OpenSCENARIO's pedestrianCategory "animal" has no model of
+#: its own in vei or esmini: its size and way of crossing are a walker's). One led, walked or ridden by a
+#: person is that person's, one road user (:mod:`discourse`).
+ANIMALS = ("dog", "deer", "animal", "cat", "fox", "horse", "pony")
+
 ACTOR_NOUNS = {
     "car": ("car",),
     "pedestrian": (
@@ -95,14 +100,7 @@ ACTOR_NOUNS = {
         "moron",
         "nutter",
         "muppet",
-        # an animal on the road is played as a pedestrian (OpenSCENARIO's pedestrianCategory "animal" has
-        # no model of its own in vei or esmini: its size and way of crossing are a walker's)
-        "dog",
-        "deer",
-        "animal",
-        "cat",
-        "fox",
-        "horse",
+        *ANIMALS,
     ),
     "bicycle": ("bicycle", "bike", "cyclist", "bicyclist", "biker", "kid on a bike", "cargo bike"),
     "e-scooter": (
