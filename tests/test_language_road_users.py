@@ -253,3 +253,83 @@ def test_a_narrator_who_drives_stays_the_ego():
 )
 def test_an_animal_and_its_rider_are_one_road_user(text):
     assert kinds(text) == ["pedestrian"]
+
+
+# --- the ego said to be a vehicle is that vehicle, no second road user ------------------------------
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("The ego is a 7.5 t lorry turning left at 15 km/h; a cyclist comes up on its left from behind.", "bicycle"),
+        ("Host vehicle is a minibus doing 30 km/h when a jogger steps out from the right ahead of it.", "pedestrian"),
+        ("The subject vehicle was a white van at 40 km/h; a motorbike overtook it on the right.", "car"),
+    ],
+    ids=["lorry", "minibus", "van"],
+)
+def test_the_ego_said_to_be_a_vehicle_is_no_second_road_user(text, kind):
+    assert kinds(text) == [kind]
+
+
+# --- a narrator on foot told over two sentences -----------------------------------------------------
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        (
+            "I was waiting outside the library at lunchtime. I saw a red Kia coming down the hill at about "
+            "30 km/h. A girl ran out into the road from the left and the driver of the Kia stopped.",
+            "pedestrian",
+        ),
+        (
+            "We were walking back from the match. We watched a grey hatchback come along the high street, "
+            "and a cyclist swung out from the right in front of it; the hatchback braked hard.",
+            "bicycle",
+        ),
+        (
+            "I was sat on the bench by the crossing. I noticed a taxi approaching at 25 mph when a jogger "
+            "stepped off the kerb on the right, and the taxi swerved.",
+            "pedestrian",
+        ),
+    ],
+    ids=["waiting-kia", "walking-hatchback", "sat-taxi"],
+)
+def test_a_narrator_on_foot_over_two_sentences_is_no_road_user(text, kind):
+    assert kinds(text) == [kind]
+
+
+# --- a report that names no ego: the one motor vehicle that strikes a walker or rider is the ego ------
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        (
+            "A teenager on a bike was hurt on Tuesday when he was hit by a car on Mill Road. Police said the car "
+            "was travelling at about 30 mph when the boy rode out from a side street on the left.",
+            "bicycle",
+        ),
+        (
+            "An elderly man was struck by a van on the high street. The van, going at around 20 mph, hit him "
+            "as he crossed from the right.",
+            "pedestrian",
+        ),
+        (
+            "A woman on an e-scooter was knocked down by a car at the junction. The car was doing about "
+            "25 mph when she came across from the left.",
+            "e-scooter",
+        ),
+    ],
+    ids=["bike-car", "man-van", "scooter-car"],
+)
+def test_the_one_motor_vehicle_in_a_report_with_no_ego_is_the_ego(text, kind):
+    assert kinds(text) == [kind]
+
+
+# --- a driver said in brackets after a vehicle is that vehicle's ------------------------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A car coming the other way drifts into our lane (driver on the phone), we are at 70 km/h.",
+        "A lorry ahead of us brakes hard (the driver fell asleep) while we drive at 80 km/h.",
+        "A van pulls out from the left (driver not looking) right in front of us at 30 km/h.",
+    ],
+    ids=["on-the-phone", "fell-asleep", "not-looking"],
+)
+def test_a_driver_in_brackets_is_the_vehicles(text):
+    assert len(read(text).actors) == 1

@@ -112,7 +112,7 @@ def _phrase_at(tokens: list[str], i: int, kind_at: KindAt, known: Known, reach: 
         if w in DETERMINERS:
             start, det = j, w
             break
-        if w in PUNCT or not w.replace("-", "").isalpha() or known(tokens, j):
+        if w in PUNCT or not w.replace("-", "").isalpha() or (known(tokens, j) and w not in COLOURS):
             break
     return _Phrase(start, i, i + n, det, kind)
 
@@ -417,6 +417,33 @@ def _own_vehicle(tokens: list[str], kind_at: KindAt, known: Known, dropped: list
     return out
 
 
+def _plain_modifier(tokens: list[str], h: int, known: Known) -> bool:
+    """Whether the word at ``h`` may stand before a vehicle's noun ("a 7.5 t", "a white", "a battered")."""
+    w = tokens[h]
+    return w.replace(".", "").isdigit() or (w.isalpha() and not known(tokens, h)) or w in COLOURS or w in UNITS_AFTER
+
+
+def _ego_predicate(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "The ego is a 7.5 t lorry", "host vehicle was a minibus": a vehicle said of the ego with a form of
+    "be" says what the ego is, no second road user."""
+    out = list(tokens)
+    for e in range(len(out) - 3):
+        ego = kind_at(out, e)
+        if ego is None or ego[0] != "ego":
+            continue
+        i = e + ego[1] - 1  # (the ego's last word: "host vehicle")
+        if i + 3 >= len(out) or out[i + 1] not in ("is", "was") or out[i + 2] not in ("a", "an"):
+            continue
+        head = next((h for h in range(i + 3, min(i + 7, len(out))) if kind_at(out, h)), None)
+        q = _phrase_at(out, head, kind_at, known) if head is not None else None
+        plain = all(_plain_modifier(out, h, known) for h in range(i + 3, head or 0))
+        if q is not None and q.kind in VEHICLES and plain:
+            dropped.extend(out[i + 2 : q.end])
+            del out[i + 2 : q.end]  # ("the ego is turning left ...": what it does stays its)
+            break
+    return out
+
+
 def _ego_apposition(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """ "the ego, an estate car, travels ...", "Vehicle 1 (V1), a Ford Focus, ...": a vehicle said in
     apposition to the ego is the ego, no second road user."""
@@ -643,10 +670,13 @@ def _narrator_frame(tokens: list[str], kind_at: KindAt) -> tuple[int, int] | Non
         if not (_lemma_in(w, PERCEIVE) and _verb_of(w)):
             continue
         start = max((j + 1 for j in range(k) if tokens[j] in (".", ";", "!", "?")), default=0)
-        said = tokens[start:k]
-        others = any((kind_at(tokens, j) or ("ego",))[0] != "ego" for j in range(start, k))
-        if ("i" in said or "we" in said) and not others and any(_lemma_in(t, ON_FOOT) or t == "foot" for t in said):
-            return start, k
+        before = max((j + 1 for j in range(start - 1) if tokens[j] in (".", ";", "!", "?")), default=0)
+        for first in (start, before):  # (the sentence, or the one before it: "I was waiting outside. I saw")
+            said = tokens[first:k]
+            others = any((kind_at(tokens, j) or ("ego",))[0] != "ego" for j in range(first, k))
+            on_foot = any(_lemma_in(t, ON_FOOT) or t == "foot" for t in said)
+            if ("i" in said or "we" in said) and not others and on_foot:
+                return first, k
     return None
 
 
@@ -690,6 +720,7 @@ def _narrator_on_foot(tokens: list[str], kind_at: KindAt, known: Known, dropped:
     if centre is None:
         return tokens
     noun = " ".join(tokens[centre.head : centre.end])
+    centre = next(p for p in motor if " ".join(tokens[p.head : p.end]) == noun)  # (its first mention)
     out: list[str] = []
     i = 0
     while i < len(tokens):
@@ -1032,10 +1063,16 @@ def _ego_unnamed(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
     versus = any(
         (p.end < len(tokens) and tokens[p.end] in VERSUS) or (p.start and tokens[p.start - 1] in VERSUS) for p in motor
     )
-    if len(nouns) != 1 or not (versus or nouns <= {"car", "vehicle"}):
+    struck = any(  # ("hit by a car", "was knocked down by a van": the report's vehicle strikes)
+        p.start
+        and tokens[p.start - 1] == "by"
+        and any(_lemma_in(t, CONTACT) for t in tokens[max(p.start - 4, 0) : p.start])
+        for p in motor
+    )
+    if len(nouns) != 1 or not (versus or struck or nouns <= {"car", "vehicle"}):
         return tokens
     for p in motor:
-        if p.det not in ("", "the") or p.end - p.head != 1:
+        if (p.det not in ("", "the") and not (struck and p.det in ("a", "an"))) or p.end - p.head != 1:
             return tokens
         after = tokens[p.end] if p.end < len(tokens) else ""
         before = tokens[p.start - 1] if p.start else ""
@@ -1045,6 +1082,17 @@ def _ego_unnamed(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
     for p in reversed(motor):
         out[p.start : p.end] = ["the", "ego"]
     return out
+
+
+def _last_vehicle_in_sentence(out: list[str], kind_at: KindAt) -> bool:
+    """Whether the last road user named in the sentence so far, the ego aside, is a vehicle."""
+    for j in range(len(out) - 1, -1, -1):
+        if out[j] in SENTENCE_END:
+            return False
+        found = kind_at(out, j)
+        if found is not None and found[0] != "ego":
+            return found[0] in VEHICLES
+    return False
 
 
 def _brackets(tokens: list[str], kind_at: KindAt, known: Known, names: dict[str, str], dropped: list[str]) -> list[str]:
@@ -1068,6 +1116,13 @@ def _brackets(tokens: list[str], kind_at: KindAt, known: Known, names: dict[str,
                 and words[0].isalpha()
                 and kind_at(words, 0) in (None, (kind[0], 1), ("car", 1))  # (a general noun: "obstacle")
             )
+            at_wheel = (  # ("a car ... (driver asleep)": its driver, no one else)
+                close is not None and words[:1] in (["driver"], ["rider"]) and _last_vehicle_in_sentence(out, kind_at)
+            )
+            if at_wheel:
+                dropped.extend(inner)
+                i = close + 1
+                continue
             if naming:
                 names[words[0]] = NOUN.get(kind[0], kind[0])
                 dropped.extend(inner)
@@ -1225,6 +1280,7 @@ def resolve(tokens: list[str], kind_at: KindAt, known: Known) -> tuple[list[str]
     tokens = _witnesses(tokens, kind_at, known, dropped)
     tokens = _narrator_on_foot(tokens, kind_at, known, dropped)
     tokens = _ego_apposition(tokens, kind_at, known, dropped)
+    tokens = _ego_predicate(tokens, kind_at, known, dropped)
     tokens = _placed_apposition(tokens, kind_at, known, dropped)
     tokens = _egos_vehicle(tokens, kind_at, known, dropped)
     tokens = _aftermath(tokens, kind_at, known, dropped)
