@@ -42,8 +42,11 @@ def test_a_make_or_model_names_a_vehicle_of_its_type(text, kind):
         "I was doing 25 mph on the high street when a silver Mokka pulled out from a side road on the left.",
         "A woman in a red Zafira cut across in front of me from the right as I drove at 30 km/h.",
         "On the motorway at 60 mph, a black Touareg sat on my bumper for miles and then overtook me.",
+        "I was doing 40 mph when a black Focus in the next lane cut in front of me.",
+        "Some kid in a red Mini came the wrong way down the street at me, I was at 20 mph.",
+        "I was at 30 km/h and an Uber pulled out of a side road on the right in front of me.",
     ],
-    ids=["subject", "person-in", "on-my-bumper"],
+    ids=["subject", "person-in", "on-my-bumper", "english-word-model", "person-in-english-word", "an-uber"],
 )
 def test_a_capitalised_name_in_a_vehicles_place_is_a_car(text):
     assert kinds(text) == ["car"]
@@ -54,8 +57,12 @@ def test_a_capitalised_name_in_a_vehicles_place_is_a_car(text):
     [
         ("I was doing 30 mph past the Odeon when a cyclist pulled out from the right in front of me.", ["bicycle"]),
         ("Near the Crown a jogger crossed from the left in front of me at 20 mph.", ["pedestrian"]),
+        ("Outside the Red Lion a cyclist swung out from the left in front of me at 25 mph.", ["bicycle"]),
+        ("I was at 30 mph along the Strand when a Golf pulled out from the left in front of me.", ["car"]),
+        ("It was a Tuesday, I was at 30 mph and a jogger crossed from the left in front of me.", ["pedestrian"]),
+        ("A woman with a Spaniel on a lead crossed from the right ahead of me, I was at 20 mph.", ["pedestrian"]),
     ],
-    ids=["past-the-place", "near-the-place"],
+    ids=["past-the-place", "near-the-place", "two-word-name", "along-the-place", "a-day", "a-dog"],
 )
 def test_a_capitalised_place_is_no_vehicle(text, expected):
     assert kinds(text) == expected

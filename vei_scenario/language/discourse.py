@@ -1254,17 +1254,63 @@ def _bare_again(tokens: list[str], p: _Phrase, referents: list[Referent], kind_a
     return p.kind != "ego" and any(r.kind == p.kind for r in referents)
 
 
-def resolve(tokens: list[str], kind_at: KindAt, known: Known) -> tuple[list[str], list[str]]:
+#: Prepositions of place: a name after one of them and an article is a place ("past the Odeon").
+_PLACE_BEFORE = frozenset(
+    "at near past by outside opposite towards toward to from along across over under through round around "
+    "onto off beside inside with".split()  # (and a companion's: "a man with a Labrador")
+)
+#: Names of days and months, a closed class: "a Saturday" is a day, no vehicle.
+_CALENDAR = frozenset(
+    "monday tuesday wednesday thursday friday saturday sunday january february march april may june july "
+    "august september october november december".split()
+)
+
+
+def _named_vehicles(tokens: list[str], kind_at: KindAt, known: Known, proper: frozenset[str]) -> list[str]:
+    """A name written with its own capital that no lexicon has, in a vehicle's place ("a silver Mokka
+    pulled out", "a kid in a red Mini", "a black Focus in the next lane"), is a car: said with "car"
+    after it, as the reader reads "a silver Mokka car". Its place: after an article (and up to two
+    colours or words the reader lacks), not after a preposition of place ("past the Odeon", "near the
+    Crown"), and ending the noun phrase: a verb, a preposition, a punctuation mark or the end follow,
+    not another name ("the Red Lion")."""
+    if not proper:
+        return tokens
+    out: list[str] = []
+    for i, w in enumerate(tokens):
+        out.append(w)
+        if w not in proper or w in _CALENDAR or known(tokens, i) or kind_at(tokens, i) is not None:
+            continue
+        j = i - 1
+        while j >= max(i - 3, 0) and tokens[j] not in DETERMINERS and tokens[j] != "'s":
+            if tokens[j] in proper or not (tokens[j] in COLOURS or (tokens[j].isalpha() and not known(tokens, j))):
+                break
+            j -= 1
+        if j < 0 or tokens[j] not in ("a", "an", "the", "his", "her", "their", "'s"):
+            continue
+        if j > 0 and (tokens[j - 1] in _PLACE_BEFORE or tokens[j - 1] in BE):  # (or said of something: "was a")
+            continue
+        nxt = tokens[i + 1] if i + 1 < len(tokens) else "."
+        ends = nxt in PUNCT or nxt in PREPOSITIONS or (nxt not in proper and _verb_of(nxt))
+        if ends and not (i and tokens[i - 1] in proper):
+            out.append("car")
+    return out
+
+
+def resolve(
+    tokens: list[str], kind_at: KindAt, known: Known, proper: frozenset[str] = frozenset()
+) -> tuple[list[str], list[str]]:
     """``tokens`` with every road user said the one way the reader reads it (see the module's
     docstring), and the words taken out (to be reported as not used).
 
     The order matters: labels and bracketed names first (they say who the ego is and what a name
     stands for), then what makes two mentions one road user, then what is no road user at all, then
     the ego of a report that names none (once the scenery is gone), and last the speeds bound to
-    referents and the mentions said again (over the referents that remain)."""
+    referents and the mentions said again (over the referents that remain). ``proper`` are the words
+    the text writes with their own capital (:func:`who.proper_names`)."""
     dropped: list[str] = []
     names: dict[str, str] = {}
     tokens = make_and_model(tokens, kind_at, known)
+    tokens = _named_vehicles(tokens, kind_at, known, proper)
     tokens = _brackets(tokens, kind_at, known, names, dropped)
     tokens = _vehicle_labels(tokens, kind_at, known)
     tokens = _letter_labels(tokens, kind_at, known, dropped)

@@ -57,7 +57,7 @@ from vei_scenario.language.stated import (
     stated_heavy_rain,
     stated_lanes,
 )
-from vei_scenario.language.who import closed_compound, lamps_not_signals, own_vehicles
+from vei_scenario.language.who import closed_compound, lamps_not_signals, own_vehicles, proper_names
 
 _TOKEN = re.compile(r"\d+(?:\.\d+)?|km/h|m/s²|m/s2|m/s|[a-z][a-z\-]*(?:'[a-z]+)?|'s|[.;,!?:%]")
 _TOKEN_BRACKETS = re.compile(_TOKEN.pattern + "|[()]")  # (for discourse: a name said in brackets)
@@ -507,7 +507,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
     read_as: list[tuple[str, str]] = [
         (typed, read) for typed, read in zip(_tokens(text, spell=False, brackets=True), tokens) if typed != read
     ]
-    tokens, dropped = discourse.resolve(tokens, _kind_at, _known)  # (who is who; the words it took out)
+    tokens, dropped = discourse.resolve(tokens, _kind_at, _known, proper_names(text))  # (who is who; words out)
     ignored: list[str] = [w for w in dropped if w not in FUNCTION_WORDS and w.isalpha()]
     left_hand, ring = sides.drives_on_left(tokens), "roundabout" in tokens
 

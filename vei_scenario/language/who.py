@@ -6,6 +6,7 @@ not a junction's signals, which "lights" alone are)."""
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable
 
 from vei_scenario.language.lemmas import english, lemmas
@@ -113,3 +114,27 @@ def make_and_model(tokens: list[str], kind_at: KindAt, known: Callable[[list[str
         out.append(w)
         i += 1
     return out
+
+
+_WORD = re.compile(r"[A-Za-z][A-Za-z-]*")
+#: Marks that open a sentence, a line or a field, after which any word is capitalised.
+_OPENERS = frozenset(".!?:;\n|-(\"'\u2014\u2013*#>")
+
+
+def proper_names(text: str) -> frozenset[str]:
+    """The words ``text`` writes only with a capital, at least once where a sentence does not open (so
+    the capital is the word's own: "a silver Mokka", "this guy in a Charger"), lower-cased as the
+    reader's words are. All-capital words (abbreviations, shouting) are left out."""
+    capital: set[str] = set()
+    lower: set[str] = set()
+    for m in _WORD.finditer(text):
+        w = m.group(0)
+        if w[0].islower():
+            lower.add(w.lower())
+        elif not w.isupper():
+            j = m.start() - 1
+            while j >= 0 and text[j] in " \t":
+                j -= 1
+            if j >= 0 and text[j] not in _OPENERS:
+                capital.add(w.lower())
+    return frozenset(capital - lower)
