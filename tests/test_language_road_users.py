@@ -340,3 +340,32 @@ def test_the_one_motor_vehicle_in_a_report_with_no_ego_is_the_ego(text, kind):
 )
 def test_a_driver_in_brackets_is_the_vehicles(text):
     assert len(read(text).actors) == 1
+
+
+@pytest.mark.parametrize(
+    "text, kind, ego_mph",
+    [
+        (
+            "Reporting vehicle: school minibus, travelling at 20 mph. A lad on a bike swerved out from the left "
+            "into the path of the minibus.",
+            "bicycle",
+            20,
+        ),
+        (
+            "Reporting vehicle: council refuse truck, going at 10 mph. A cyclist came up the inside of the truck.",
+            "bicycle",
+            10,
+        ),
+        (
+            "Reporting vehicle: airport shuttle coach, proceeding at 25 mph. A jogger stepped out from the right "
+            "in front of the coach.",
+            "pedestrian",
+            25,
+        ),
+    ],
+    ids=["minibus", "refuse-truck", "shuttle-coach"],
+)
+def test_the_vehicle_a_report_names_as_its_own_is_the_ego(text, kind, ego_mph):
+    r = read(text)
+    assert [a.kind for a in r.actors] == [kind]
+    assert r.ego_speed_mps is not None and abs(r.ego_speed_mps - ego_mph * MPH) < 0.1

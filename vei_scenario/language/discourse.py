@@ -432,15 +432,39 @@ def _ego_predicate(tokens: list[str], kind_at: KindAt, known: Known, dropped: li
         if ego is None or ego[0] != "ego":
             continue
         i = e + ego[1] - 1  # (the ego's last word: "host vehicle")
-        if i + 3 >= len(out) or out[i + 1] not in ("is", "was") or out[i + 2] not in ("a", "an"):
+        field = out[i + 1 : i + 2] == [":"]  # ("Reporting vehicle: city shuttle bus, ...")
+        if i + 3 >= len(out) or not (field or (out[i + 1] in ("is", "was") and out[i + 2] in ("a", "an"))):
             continue
-        head = next((h for h in range(i + 3, min(i + 7, len(out))) if kind_at(out, h)), None)
+        first = i + 2 + (out[i + 2] in ("a", "an"))
+        head = next((h for h in range(first, min(first + 4, len(out))) if kind_at(out, h)), None)
         q = _phrase_at(out, head, kind_at, known) if head is not None else None
-        plain = all(_plain_modifier(out, h, known) for h in range(i + 3, head or 0))
+        plain = all(_plain_modifier(out, h, known) for h in range(first, head or 0))
         if q is not None and q.kind in VEHICLES and plain:
+            noun = out[q.head : q.end]
             dropped.extend(out[i + 2 : q.end])
             del out[i + 2 : q.end]  # ("the ego is turning left ...": what it does stays its)
+            return _said_again_as_ego(out, i + 2, noun, kind_at, known, dropped)
+    return out
+
+
+def _said_again_as_ego(tokens: list[str], start: int, noun: list[str], kind_at: KindAt, known: Known,
+                       dropped: list[str]) -> list[str]:  # fmt: skip
+    """``tokens`` with each "the <noun>" from ``start`` on said "the ego", until one is named new."""
+    out = list(tokens)
+    i = start
+    while i < len(out):
+        p = _phrase_at(out, i, kind_at, known)
+        if p is None:
+            i += 1
+            continue
+        if out[p.head : p.end] == noun and p.det in ("a", "an", "another"):
             break
+        if out[p.head : p.end] == noun and p.det == "the":
+            dropped.extend(out[p.start + 1 : p.end])
+            out[p.start : p.end] = ["the", "ego"]
+            i = p.start + 2
+            continue
+        i = p.end
     return out
 
 
@@ -724,8 +748,12 @@ def _narrator_on_foot(tokens: list[str], kind_at: KindAt, known: Known, dropped:
     out: list[str] = []
     i = 0
     while i < len(tokens):
-        if frame[0] <= i <= frame[1]:
-            dropped.append(tokens[i])
+        if frame[0] <= i <= frame[1]:  # (the narrator's words go; the scene's, "in the afternoon", stay)
+            w = tokens[i]
+            if w in FIRST_PERSON or w in BE or w in _AUXILIARIES or _lemma_in(w, ON_FOOT | PERCEIVE) or w == "when":
+                dropped.append(w)
+            else:
+                out.append(w)
             i += 1
             continue
         p = next((x for x in phrases if x.start == i), None)

@@ -227,6 +227,7 @@ EGO_NOUNS = (
     "our car",
     "my car",
     "host vehicle",
+    "reporting vehicle",  # (a police or fleet report's own vehicle)
     "sv",
 )
 
