@@ -369,3 +369,19 @@ def test_the_vehicle_a_report_names_as_its_own_is_the_ego(text, kind, ego_mph):
     r = read(text)
     assert [a.kind for a in r.actors] == [kind]
     assert r.ego_speed_mps is not None and abs(r.ego_speed_mps - ego_mph * MPH) < 0.1
+
+
+# --- a test engineer's names for the vehicle under test name the ego -------------------------------------
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("The SUT drives at 50 km/h; a pedestrian crosses from the left 20 m ahead of it.", "pedestrian"),
+        ("System under test at 70 km/h in the right lane, a truck ahead brakes hard.", "truck"),
+        ("Host car cruises in lane 2 with 90 km/h, a lorry in lane 1 moves over in front of it.", "truck"),
+    ],
+    ids=["sut", "system-under-test", "host-car"],
+)
+def test_names_for_the_vehicle_under_test_are_the_ego(text, kind):
+    r = read(text)
+    assert [a.kind for a in r.actors] == [kind]
+    assert r.ego_speed_mps is not None

@@ -228,6 +228,10 @@ EGO_NOUNS = (
     "my car",
     "host vehicle",
     "reporting vehicle",  # (a police or fleet report's own vehicle)
+    "sut",  # (system under test)
+    "system under test",
+    "host car",
+    "automated vehicle",
     "sv",
 )
 
