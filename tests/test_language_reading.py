@@ -160,7 +160,7 @@ def test_a_police_narrative_names_the_ego_and_the_other_party():
         "the left into the path of V1. V2 struck V1."
     )
     assert r.ego_speed_mps == pytest.approx(30 * MPH) and r.intent == "collision"
-    assert [(a.kind, a.relation, a.behaviours[0][0]) for a in r.actors] == [("car", "junction_left", "turn_into")]
+    assert [(a.kind, a.relation, a.behaviours[0][0]) for a in r.actors] == [("van", "junction_left", "turn_into")]
 
 
 @pytest.mark.parametrize(

@@ -45,6 +45,8 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from vei_scenario.language.lemmas import english, lemmas
+from vei_scenario.language.lexicon import ANIMALS
+from vei_scenario.language.who import make_and_model
 
 #: ``kind_at(tokens, i)``: the road-user type named by a phrase starting at ``i`` ("ego" for the ego)
 #: and the phrase's length, or None when no road-user phrase starts there.
@@ -61,7 +63,9 @@ BE = frozenset({"am", "is", "are", "was", "were", "be", "been", "being", "sat", 
 PUNCT = frozenset({".", ";", "!", "?", ":", ","})
 SENTENCE_END = frozenset({".", ";", "!", "?", ":"})
 #: Prepositions that join a person to the vehicle it rides ("a lad on a scooter", "a kid astride a bike").
-RIDING = frozenset({"on", "riding", "astride", "aboard"})
+RIDING = frozenset({"on", "riding", "astride", "aboard", "in", "inside", "driving"})
+#: Of those, the prepositions that put a person inside a motor vehicle ("a bloke in a white van").
+INSIDE = frozenset({"in", "inside", "driving"})
 VEHICLES = frozenset({"car", "van", "truck"})
 VULNERABLE = frozenset({"pedestrian", "bicycle", "e-scooter"})
 #: The words a report sets two parties against each other with ("car versus e-scooter").
@@ -108,7 +112,7 @@ def _phrase_at(tokens: list[str], i: int, kind_at: KindAt, known: Known, reach: 
         if w in DETERMINERS:
             start, det = j, w
             break
-        if w in PUNCT or not w.replace("-", "").isalpha() or known(tokens, j):
+        if w in PUNCT or not w.replace("-", "").isalpha() or (known(tokens, j) and w not in COLOURS):
             break
     return _Phrase(start, i, i + n, det, kind)
 
@@ -157,7 +161,9 @@ def _riders(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
                 break
         if person_start is None and not known(out, k):
             person_start = _unknown_person(out, k, known)
-        if person_start is None or out[person_start] not in DETERMINERS:
+        if person_start is None:
+            person_start = _bare_person(out, kind_at)
+        if person_start is None or (out[person_start] not in DETERMINERS and person_start != len(out) - 1):
             out.append(tokens[i])
             i += 1
             continue
@@ -167,21 +173,51 @@ def _riders(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
             j += 3
         elif j < len(tokens) and tokens[j] in DETERMINERS:
             j += 1
+        elif tokens[i] in INSIDE:  # ("a test in which a truck ...": no vehicle a person is in)
+            out.append(tokens[i])
+            i += 1
+            continue
         head = next(
             (h for h in range(j, min(j + 3, len(tokens))) if kind_at(tokens, h) is not None),
             None,
         )
         ride = kind_at(tokens, head) if head is not None else None
         between_known = head is not None and any(known(tokens, h) for h in range(j, head))
-        if ride is None or ride[0] in ("pedestrian", "truck", "ego") or between_known:
+        unfit = ("pedestrian", "ego", "bicycle", "e-scooter") if tokens[i] in INSIDE else ("pedestrian", "truck", "ego")
+        if (
+            ride is None
+            or ride[0] in unfit
+            or between_known
+            or (tokens[i] in INSIDE and _goes_on(tokens, head + ride[1], known))
+        ):
             out.append(tokens[i])
             i += 1
             continue
-        det = out[person_start]
+        det = out[person_start] if out[person_start] in DETERMINERS else "a"  # ("guy on a moped": a rider)
         det = "a" if det in INDEFINITE | POSSESSIVE else det  # ("my mate on his bike": a rider)
         out[person_start:] = [det]
         i = j
     return out
+
+
+def _bare_person(out: list[str], kind_at: KindAt) -> int | None:
+    """Where a person's noun with no determiner that opens a clause ends ``out`` ("Guy on a moped
+    coming the wrong way", "..., bloke in a white van pulls out"), else None."""
+    k = len(out) - 1
+    found = kind_at(out, k)
+    opens = k == 0 or out[k - 1] in PUNCT
+    return k if found is not None and found == ("pedestrian", 1) and opens else None
+
+
+def _goes_on(tokens: list[str], k: int, known: Known) -> bool:
+    """Whether the noun phrase goes on past ``k`` with a noun the reader has no phrase for ("a baby in a
+    car seat": the seat, not the car)."""
+    return k < len(tokens) and tokens[k].isalpha() and not known(tokens, k) and tokens[k] not in PREPOSITIONS
+
+
+#: Animals: one led, walked or ridden by a person ("a man leading a horse", "a girl riding a pony") is
+#: in that person's hands, one road user.
+ANIMAL_WORDS = frozenset(ANIMALS) - {"animal"}
 
 
 #: Verbs of riding: a person doing one of them to a vehicle rides it ("a woman riding a bike").
@@ -195,7 +231,8 @@ def _pushed(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]
     i = 0
     while i < len(tokens):
         w = tokens[i]
-        if w.endswith("ing") and out and not _lemma_in(w, RIDE_VERBS) and w not in RIDING:
+        animal = i + 2 < len(tokens) and any(t in ANIMAL_WORDS for t in tokens[i + 1 : i + 3])
+        if w.endswith("ing") and out and (animal or not _lemma_in(w, RIDE_VERBS)) and (animal or w not in RIDING):
             before = next((b for b in range(len(out) - 1, max(len(out) - 3, -1), -1) if kind_at(out, b)), None)
             person = kind_at(out, before) if before is not None else None
             j = i + 1 + (i + 1 < len(tokens) and tokens[i + 1] in DETERMINERS)
@@ -207,7 +244,7 @@ def _pushed(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]
                 and person[0] == "pedestrian"
                 and before + person[1] == len(out)
                 and thing is not None
-                and thing[0] in ("bicycle", "e-scooter")
+                and (thing[0] in ("bicycle", "e-scooter") or tokens[head] in ANIMAL_WORDS)
                 and plain
             ):
                 dropped.extend(tokens[i : head + thing[1]])
@@ -310,6 +347,13 @@ def _narrators_people(tokens: list[str], kind_at: KindAt, dropped: list[str]) ->
     return out
 
 
+#: Colours, a closed class: before a noun they are its modifiers ("a grey Audi"), whatever else the
+#: reader reads them as alone ("grey" skies).
+COLOURS = frozenset(
+    "white black grey gray silver red blue green yellow orange brown purple pink gold beige maroon navy".split()
+)
+
+
 def _apposition_end(tokens: list[str], i: int, kind_at: KindAt, known: Known) -> int | None:
     """Where an apposition starting at ``i`` ends (", a tiny Fiat," / "a battered old Ford"): an
     indefinite article, up to three words that are vehicle nouns or words the reader has no phrase
@@ -323,7 +367,14 @@ def _apposition_end(tokens: list[str], i: int, kind_at: KindAt, known: Known) ->
             if any(f is not None and f[0] not in VEHICLES for f in found):
                 return None  # (", a cyclist, ...": someone else)
             return k if any(f is not None for f in found) or k > j + 1 else None
-        if not tokens[k].replace("-", "").isalpha() or (known(tokens, k) and kind_at(tokens, k) is None):
+        nxt = tokens[k + 1] if k + 1 < len(tokens) else "."
+        year = tokens[k].isdigit() and nxt.isalpha() and nxt not in UNITS_AFTER  # ("a 2019 Honda")
+        if year:
+            continue
+        modifier = tokens[k] in COLOURS and nxt not in PUNCT
+        if not tokens[k].replace("-", "").isalpha() or (
+            known(tokens, k) and kind_at(tokens, k) is None and not modifier
+        ):
             return None  # (", a car ahead brakes": a clause of its own)
     return None
 
@@ -366,6 +417,57 @@ def _own_vehicle(tokens: list[str], kind_at: KindAt, known: Known, dropped: list
     return out
 
 
+def _plain_modifier(tokens: list[str], h: int, known: Known) -> bool:
+    """Whether the word at ``h`` may stand before a vehicle's noun ("a 7.5 t", "a white", "a battered")."""
+    w = tokens[h]
+    return w.replace(".", "").isdigit() or (w.isalpha() and not known(tokens, h)) or w in COLOURS or w in UNITS_AFTER
+
+
+def _ego_predicate(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "The ego is a 7.5 t lorry", "host vehicle was a minibus": a vehicle said of the ego with a form of
+    "be" says what the ego is, no second road user."""
+    out = list(tokens)
+    for e in range(len(out) - 3):
+        ego = kind_at(out, e)
+        if ego is None or ego[0] != "ego":
+            continue
+        i = e + ego[1] - 1  # (the ego's last word: "host vehicle")
+        field = out[i + 1 : i + 2] == [":"]  # ("Reporting vehicle: city shuttle bus, ...")
+        if i + 3 >= len(out) or not (field or (out[i + 1] in ("is", "was") and out[i + 2] in ("a", "an"))):
+            continue
+        first = i + 2 + (out[i + 2] in ("a", "an"))
+        head = next((h for h in range(first, min(first + 4, len(out))) if kind_at(out, h)), None)
+        q = _phrase_at(out, head, kind_at, known) if head is not None else None
+        plain = all(_plain_modifier(out, h, known) for h in range(first, head or 0))
+        if q is not None and q.kind in VEHICLES and plain:
+            noun = out[q.head : q.end]
+            dropped.extend(out[i + 2 : q.end])
+            del out[i + 2 : q.end]  # ("the ego is turning left ...": what it does stays its)
+            return _said_again_as_ego(out, i + 2, noun, kind_at, known, dropped)
+    return out
+
+
+def _said_again_as_ego(tokens: list[str], start: int, noun: list[str], kind_at: KindAt, known: Known,
+                       dropped: list[str]) -> list[str]:  # fmt: skip
+    """``tokens`` with each "the <noun>" from ``start`` on said "the ego", until one is named new."""
+    out = list(tokens)
+    i = start
+    while i < len(out):
+        p = _phrase_at(out, i, kind_at, known)
+        if p is None:
+            i += 1
+            continue
+        if out[p.head : p.end] == noun and p.det in ("a", "an", "another"):
+            break
+        if out[p.head : p.end] == noun and p.det == "the":
+            dropped.extend(out[p.start + 1 : p.end])
+            out[p.start : p.end] = ["the", "ego"]
+            i = p.start + 2
+            continue
+        i = p.end
+    return out
+
+
 def _ego_apposition(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """ "the ego, an estate car, travels ...", "Vehicle 1 (V1), a Ford Focus, ...": a vehicle said in
     apposition to the ego is the ego, no second road user."""
@@ -378,6 +480,99 @@ def _ego_apposition(tokens: list[str], kind_at: KindAt, known: Known, dropped: l
                 dropped.extend(out[i + 3 : end])
                 del out[i + 2 : end]
         i += 1
+    return out
+
+
+#: Words of a placement after a road user's noun ("the van behind me", "the lorry in the next lane").
+_PLACEMENT_WORDS = frozenset({"front", "next", "left", "right", "other", "same", "inside", "outside", "middle"})
+
+
+def _placement(words: list[str]) -> bool:
+    """Whether ``words`` place a road user and say nothing it does ("behind me", "in the next lane",
+    "ahead of us"): prepositions, determiners, pronouns and nouns, no verb."""
+    if not 1 <= len(words) <= 5:
+        return False
+    for w in words:
+        closed = w in PREPOSITIONS or w in DETERMINERS or w in PRONOUNS or w in PLACED or w in _PLACEMENT_WORDS
+        if not closed and (not w.isalpha() or "VERB" in lemmas(w)):
+            return False
+    return True
+
+
+def _placed_apposition(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "The van behind me, a white Sprinter, ...", "the car ahead of us, a silver Octavia, ...": a vehicle
+    said in apposition after a road user and its placement is that road user, no second one; where it
+    names the type more exactly than a general noun ("the vehicle in front, a lorry,") its noun is used."""
+    out = list(tokens)
+    i = 0
+    while i < len(out):
+        p = _phrase_at(out, i, kind_at, known)
+        if p is None or p.kind not in VEHICLES or p.det not in DEFINITE:
+            i += 1
+            continue
+        comma = next((k for k in range(p.end, min(p.end + 6, len(out))) if out[k] in PUNCT), None)
+        end = _apposition_end(out, comma, kind_at, known) if comma is not None and out[comma] == "," else None
+        if end is None or not _placement(out[p.end : comma]) or end >= len(out) or out[end] != ",":
+            i = p.end
+            continue
+        q = next((x for x in _phrases(out[comma + 1 : end], kind_at, known)), None)
+        said = out[comma + 1 + q.head : comma + 1 + q.end] if q is not None else []
+        dropped.extend(w for w in out[comma + 1 : end] if w != ",")
+        del out[comma:end]
+        if said and p.kind == "car" and q.kind != "car":
+            out[p.head : p.end] = said
+        i = p.end
+    return out
+
+
+#: Words between the ego and the vehicle it is in ("the ego was driving his Tesla", "the ego, in her van").
+_AT_THE_WHEEL = frozenset({"driving", "in", "inside", "behind", "at", "wheel", "of", ","}) | BE
+
+
+def _egos_vehicle(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """The ego's own vehicle is the ego: "the ego's Fiesta" (the insured's, the claimant's) is said "the
+    ego"; "the ego was driving his Tesla", "the ego, in her van," keep the ego and lose the vehicle; and
+    the vehicle named so, named again with "the" ("the Fiesta, travelling at 30 mph, ..."), is the ego,
+    until one of its kind is named new with "a"."""
+    out = list(tokens)
+    own: set[str] = set()
+    i = 0
+    while i < len(out):
+        p = _phrase_at(out, i, kind_at, known)
+        if p is None:
+            i += 1
+            continue
+        noun = " ".join(out[p.head : p.end])
+        if p.kind in VEHICLES and p.det in ("a", "an") and noun in own:
+            own.discard(noun)  # (another one of the same make)
+        elif p.kind in VEHICLES and p.det == "the" and noun in own:
+            dropped.extend(out[p.start + 1 : p.end])
+            out[p.start : p.end] = ["the", "ego"]
+            i = p.start + 2
+            continue
+        elif p.kind == "ego":
+            j = p.end
+            if out[j : j + 1] == ["'s"]:  # ("the ego 's fiesta")
+                q = _phrase_at(
+                    out, next((h for h in range(j + 1, min(j + 4, len(out))) if kind_at(out, h)), j), kind_at, known
+                )
+                if q is not None and q.kind in VEHICLES and all(not known(out, h) for h in range(j + 1, q.head)):
+                    own.add(" ".join(out[q.head : q.end]))
+                    dropped.extend(out[j : q.end])
+                    del out[j : q.end]
+            else:
+                k = j
+                while k < min(j + 4, len(out)) and out[k] in _AT_THE_WHEEL:
+                    k += 1
+                if k > j and k < len(out) and out[k] in ("his", "her", "their", "its"):
+                    head = next((h for h in range(k + 1, min(k + 4, len(out))) if kind_at(out, h)), None)
+                    q = _phrase_at(out, head, kind_at, known) if head is not None else None
+                    if q is not None and q.kind in VEHICLES and q.start == k:
+                        own.add(" ".join(out[q.head : q.end]))
+                        dropped.extend(out[k : q.end])
+                        cut = k - 1 if out[k - 1] in ("in", "inside") else k  # ("in her van": where the ego is)
+                        del out[cut : q.end]
+        i = p.end
     return out
 
 
@@ -412,6 +607,174 @@ def _passengers(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[
             i = start
             continue
         i = p.end
+    return out
+
+
+#: Verbs of perceiving: someone whose doing is only one of these watches the scene from outside it.
+PERCEIVE = frozenset({"see", "watch", "witness", "film", "record", "notice", "observe"})
+#: Auxiliaries and forms of "have" and "do", which say no doing of their own.
+_AUXILIARIES = frozenset({"have", "has", "had", "do", "does", "did", "will", "would", "could", "can", "must"})
+
+
+def _verb_of(word: str) -> bool:
+    return word.isalpha() and "VERB" in lemmas(word) and word not in BE and word not in _AUXILIARIES
+
+
+def _only_perceives(tokens: list[str], start: int, kind_at: KindAt) -> int | None:
+    """Where the perceiving verb is, when the first verb after a road user's phrase (``start``, past
+    its modifiers and a relative pronoun) is one of perceiving and nothing after it in the sentence is
+    a doing of its own ("a woman on the pavement filmed it", "a lady ... who saw the whole thing"); a
+    verb after another road user is that one's ("watched as a cyclist swerved"). Else None."""
+    k = start
+    while k < len(tokens) and tokens[k] not in SENTENCE_END and tokens[k] != ",":
+        w = tokens[k]
+        if _lemma_in(w, PERCEIVE) and _verb_of(w):
+            break
+        found = kind_at(tokens, k)
+        if found is not None:
+            det = tokens[k - 1] in DETERMINERS
+            if tokens[k - 1 - det] in PREPOSITIONS:  # ("waiting for the bus": an object)
+                k += found[1]
+                continue
+            return None  # (someone else named first)
+        modifier = "NOUN" in lemmas(w) or w.endswith("ing") or w in DETERMINERS or w in PRONOUNS
+        if _verb_of(w) and not modifier:  # (nouns and participles modify: "at the bus stop", "waiting")
+            return None
+        k += 1
+    if k >= len(tokens) or not _lemma_in(tokens[k], PERCEIVE):
+        return None
+    for j in range(k + 1, len(tokens)):
+        w = tokens[j]
+        if w in SENTENCE_END:
+            break
+        found = kind_at(tokens, j)
+        if found is not None and found[0] != "ego":
+            break  # (what follows is the other one's doing)
+        noun = tokens[j - 1] in DETERMINERS or tokens[j - 1] in POSSESSIVE
+        if _verb_of(w) and not noun and not _lemma_in(w, PERCEIVE):
+            return None  # ("watched the traffic and then ran across": a road user)
+    return k
+
+
+def _witnesses(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """Someone who only sees, watches, films or notices ("a man at the bus stop watched it all", "there
+    was a lady with a stroller on the sidewalk who saw the whole thing") is a witness, no road user: the
+    phrase, with its number and modifiers, up to the verb of perceiving is taken out. Whoever also does
+    something on the road ("a man who saw me coming stepped out anyway") stays."""
+    out = list(tokens)
+    i = 0
+    while i < len(out):
+        p = _phrase_at(out, i, kind_at, known)
+        if p is None or p.kind == "ego" or (p.start > 0 and out[p.start - 1] in PREPOSITIONS):
+            i += 1 if p is None else p.end - i  # (after a preposition it is no subject: "for the bus")
+            continue
+        k = _only_perceives(out, p.end, kind_at)
+        if k is None:
+            i = p.end
+            continue
+        start = p.start - (p.start > 0 and out[p.start - 1].isdigit())  # ("2 kids waiting ... noticed")
+        dropped.extend(w for w in out[start : k + 1] if w.isalpha())
+        del out[start : k + 1]
+        i = start
+    return out
+
+
+#: Verbs of being somewhere on foot: a narrator doing one of them is no driver ("I was standing at the
+#: bus stop", "walking my dog along the pavement, I ...").
+ON_FOOT = frozenset({"stand", "wait", "walk", "sit", "jog", "stroll", "queue"})
+#: Verbs a vehicle in a conflict does: the one that does one is the one the conflict is told from.
+_REACTS = frozenset({"brake", "stop", "swerve", "skid", "slam", "slow", "hoot", "honk"})
+
+
+def _narrator_frame(tokens: list[str], kind_at: KindAt) -> tuple[int, int] | None:
+    """The span from the sentence's start to the narrator's verb of perceiving ("I was standing at the
+    bus stop when I saw", "I was sitting outside and saw", "Walking my dog along the pavement, I
+    watched"), when the narrator is on foot in it, else None."""
+    for k, w in enumerate(tokens):
+        if not (_lemma_in(w, PERCEIVE) and _verb_of(w)):
+            continue
+        start = max((j + 1 for j in range(k) if tokens[j] in (".", ";", "!", "?")), default=0)
+        before = max((j + 1 for j in range(start - 1) if tokens[j] in (".", ";", "!", "?")), default=0)
+        for first in (start, before):  # (the sentence, or the one before it: "I was waiting outside. I saw")
+            said = tokens[first:k]
+            others = any((kind_at(tokens, j) or ("ego",))[0] != "ego" for j in range(first, k))
+            on_foot = any(_lemma_in(t, ON_FOOT) or t == "foot" for t in said)
+            if ("i" in said or "we" in said) and not others and on_foot:
+                return first, k
+    return None
+
+
+#: Participles that give a vehicle's speed after it ("a blue estate doing about 30 km/h").
+_GOING = frozenset({"doing", "going", "travelling", "traveling", "driving", "moving"})
+
+
+def _speed_after(tokens: list[str], i: int) -> int:
+    """The end of a participle of going and its speed at ``i`` ("doing about 30 km/h"), else ``i``."""
+    if i >= len(tokens) or tokens[i] not in _GOING:
+        return i
+    for j in range(i + 1, min(i + 5, len(tokens) - 1)):
+        if tokens[j].replace(".", "").isdigit():
+            return j + 2 if tokens[j + 1] in SPEED_UNITS else i
+    return i
+
+
+def _narrator_on_foot(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """A narrator on foot who watches ("I was standing at the bus stop when I saw a boy on an e-scooter
+    come out ... into the path of a silver Audi. The Audi ... braked") is no road user: the ego is the
+    vehicle at the centre of the conflict: the one the other road user comes into the path or in front
+    of, else the one that brakes, stops or swerves, else the only one. It is said "the ego" wherever it is
+    named ("the Audi", "the driver"), and the narrator's frame up to the verb of seeing is taken out.
+    A narrator who is in the traffic too ("in front of me", "my car") is left the ego."""
+    if "ego" in tokens or "me" in tokens or "us" in tokens:
+        return tokens
+    frame = _narrator_frame(tokens, kind_at)
+    if frame is None:
+        return tokens
+    phrases = [p for p in _phrases(tokens, kind_at, known) if p.start > frame[1]]
+    motor = [p for p in phrases if p.kind in VEHICLES and p.det in ("a", "an", "the", "")]
+    if not motor or not any(p.kind not in VEHICLES and p.kind != "ego" for p in phrases):
+        return tokens
+    centre = next((p for p in motor if tokens[p.start - 2 : p.start] in (["path", "of"], ["front", "of"])), None)
+    centre = centre or next(
+        (p for p in motor if _lemma_in(tokens[p.end] if p.end < len(tokens) else "", _REACTS)), None
+    )
+    nouns = {" ".join(tokens[p.head : p.end]) for p in motor}
+    if centre is None and len(nouns) == 1:
+        centre = motor[0]
+    if centre is None:
+        return tokens
+    noun = " ".join(tokens[centre.head : centre.end])
+    centre = next(p for p in motor if " ".join(tokens[p.head : p.end]) == noun)  # (its first mention)
+    out: list[str] = []
+    i = 0
+    while i < len(tokens):
+        if frame[0] <= i <= frame[1]:  # (the narrator's words go; the scene's, "in the afternoon", stay)
+            w = tokens[i]
+            if w in FIRST_PERSON or w in BE or w in _AUXILIARIES or _lemma_in(w, ON_FOOT | PERCEIVE) or w == "when":
+                dropped.append(w)
+            else:
+                out.append(w)
+            i += 1
+            continue
+        p = next((x for x in phrases if x.start == i), None)
+        again = p is not None and p.start >= centre.start and " ".join(tokens[p.head : p.end]) == noun
+        driver = tokens[i : i + 2] == ["the", "driver"] and i > centre.start and tokens[i + 2 : i + 3] != ["of"]
+        if p is not None and (p is centre or (again and p.det == "the")):
+            dropped.extend(tokens[p.start : p.end])
+            out += ["the", "ego"]
+            i = p.end
+            end = _speed_after(tokens, i)
+            if end > i and p.start > 0 and tokens[p.start - 1] in PREPOSITIONS:  # ("in front of a van doing
+                stop = next((k for k in range(end, len(tokens)) if tokens[k] in SENTENCE_END), len(tokens))
+                out += tokens[end:stop] + [",", "the", "ego", "was"] + tokens[i:end]  # 30": the ego's speed)
+                i = stop
+            continue
+        if driver:
+            out += ["the", "ego"]
+            i += 2
+            continue
+        out.append(tokens[i])
+        i += 1
     return out
 
 
@@ -728,10 +1091,16 @@ def _ego_unnamed(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
     versus = any(
         (p.end < len(tokens) and tokens[p.end] in VERSUS) or (p.start and tokens[p.start - 1] in VERSUS) for p in motor
     )
-    if len(nouns) != 1 or not (versus or nouns <= {"car", "vehicle"}):
+    struck = any(  # ("hit by a car", "was knocked down by a van": the report's vehicle strikes)
+        p.start
+        and tokens[p.start - 1] == "by"
+        and any(_lemma_in(t, CONTACT) for t in tokens[max(p.start - 4, 0) : p.start])
+        for p in motor
+    )
+    if len(nouns) != 1 or not (versus or struck or nouns <= {"car", "vehicle"}):
         return tokens
     for p in motor:
-        if p.det not in ("", "the") or p.end - p.head != 1:
+        if (p.det not in ("", "the") and not (struck and p.det in ("a", "an"))) or p.end - p.head != 1:
             return tokens
         after = tokens[p.end] if p.end < len(tokens) else ""
         before = tokens[p.start - 1] if p.start else ""
@@ -741,6 +1110,17 @@ def _ego_unnamed(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
     for p in reversed(motor):
         out[p.start : p.end] = ["the", "ego"]
     return out
+
+
+def _last_vehicle_in_sentence(out: list[str], kind_at: KindAt) -> bool:
+    """Whether the last road user named in the sentence so far, the ego aside, is a vehicle."""
+    for j in range(len(out) - 1, -1, -1):
+        if out[j] in SENTENCE_END:
+            return False
+        found = kind_at(out, j)
+        if found is not None and found[0] != "ego":
+            return found[0] in VEHICLES
+    return False
 
 
 def _brackets(tokens: list[str], kind_at: KindAt, known: Known, names: dict[str, str], dropped: list[str]) -> list[str]:
@@ -764,6 +1144,13 @@ def _brackets(tokens: list[str], kind_at: KindAt, known: Known, names: dict[str,
                 and words[0].isalpha()
                 and kind_at(words, 0) in (None, (kind[0], 1), ("car", 1))  # (a general noun: "obstacle")
             )
+            at_wheel = (  # ("a car ... (driver asleep)": its driver, no one else)
+                close is not None and words[:1] in (["driver"], ["rider"]) and _last_vehicle_in_sentence(out, kind_at)
+            )
+            if at_wheel:
+                dropped.extend(inner)
+                i = close + 1
+                continue
             if naming:
                 names[words[0]] = NOUN.get(kind[0], kind[0])
                 dropped.extend(inner)
@@ -895,16 +1282,63 @@ def _bare_again(tokens: list[str], p: _Phrase, referents: list[Referent], kind_a
     return p.kind != "ego" and any(r.kind == p.kind for r in referents)
 
 
-def resolve(tokens: list[str], kind_at: KindAt, known: Known) -> tuple[list[str], list[str]]:
+#: Prepositions of place: a name after one of them and an article is a place ("past the Odeon").
+_PLACE_BEFORE = frozenset(
+    "at near past by outside opposite towards toward to from along across over under through round around "
+    "onto off beside inside with".split()  # (and a companion's: "a man with a Labrador")
+)
+#: Names of days and months, a closed class: "a Saturday" is a day, no vehicle.
+_CALENDAR = frozenset(
+    "monday tuesday wednesday thursday friday saturday sunday january february march april may june july "
+    "august september october november december".split()
+)
+
+
+def _named_vehicles(tokens: list[str], kind_at: KindAt, known: Known, proper: frozenset[str]) -> list[str]:
+    """A name written with its own capital that no lexicon has, in a vehicle's place ("a silver Mokka
+    pulled out", "a kid in a red Mini", "a black Focus in the next lane"), is a car: said with "car"
+    after it, as the reader reads "a silver Mokka car". Its place: after an article (and up to two
+    colours or words the reader lacks), not after a preposition of place ("past the Odeon", "near the
+    Crown"), and ending the noun phrase: a verb, a preposition, a punctuation mark or the end follow,
+    not another name ("the Red Lion")."""
+    if not proper:
+        return tokens
+    out: list[str] = []
+    for i, w in enumerate(tokens):
+        out.append(w)
+        if w not in proper or w in _CALENDAR or known(tokens, i) or kind_at(tokens, i) is not None:
+            continue
+        j = i - 1
+        while j >= max(i - 3, 0) and tokens[j] not in DETERMINERS and tokens[j] != "'s":
+            if tokens[j] in proper or not (tokens[j] in COLOURS or (tokens[j].isalpha() and not known(tokens, j))):
+                break
+            j -= 1
+        if j < 0 or tokens[j] not in ("a", "an", "the", "his", "her", "their", "'s"):
+            continue
+        if j > 0 and (tokens[j - 1] in _PLACE_BEFORE or tokens[j - 1] in BE):  # (or said of something: "was a")
+            continue
+        nxt = tokens[i + 1] if i + 1 < len(tokens) else "."
+        ends = nxt in PUNCT or nxt in PREPOSITIONS or (nxt not in proper and _verb_of(nxt))
+        if ends and not (i and tokens[i - 1] in proper):
+            out.append("car")
+    return out
+
+
+def resolve(
+    tokens: list[str], kind_at: KindAt, known: Known, proper: frozenset[str] = frozenset()
+) -> tuple[list[str], list[str]]:
     """``tokens`` with every road user said the one way the reader reads it (see the module's
     docstring), and the words taken out (to be reported as not used).
 
     The order matters: labels and bracketed names first (they say who the ego is and what a name
     stands for), then what makes two mentions one road user, then what is no road user at all, then
     the ego of a report that names none (once the scenery is gone), and last the speeds bound to
-    referents and the mentions said again (over the referents that remain)."""
+    referents and the mentions said again (over the referents that remain). ``proper`` are the words
+    the text writes with their own capital (:func:`who.proper_names`)."""
     dropped: list[str] = []
     names: dict[str, str] = {}
+    tokens = make_and_model(tokens, kind_at, known)
+    tokens = _named_vehicles(tokens, kind_at, known, proper)
     tokens = _brackets(tokens, kind_at, known, names, dropped)
     tokens = _vehicle_labels(tokens, kind_at, known)
     tokens = _letter_labels(tokens, kind_at, known, dropped)
@@ -917,7 +1351,12 @@ def resolve(tokens: list[str], kind_at: KindAt, known: Known) -> tuple[list[str]
     tokens = _own_vehicle(tokens, kind_at, known, dropped)
     tokens = _narrators_people(tokens, kind_at, dropped)
     tokens = _passengers(tokens, kind_at, known, dropped)
+    tokens = _witnesses(tokens, kind_at, known, dropped)
+    tokens = _narrator_on_foot(tokens, kind_at, known, dropped)
     tokens = _ego_apposition(tokens, kind_at, known, dropped)
+    tokens = _ego_predicate(tokens, kind_at, known, dropped)
+    tokens = _placed_apposition(tokens, kind_at, known, dropped)
+    tokens = _egos_vehicle(tokens, kind_at, known, dropped)
     tokens = _aftermath(tokens, kind_at, known, dropped)
     tokens = _ego_unnamed(tokens, kind_at, known)
     tokens = _named_speeds(tokens, kind_at, known, names)

@@ -7,6 +7,34 @@ A phrase is a tuple of words, each matched against a token's surface form and al
 
 from __future__ import annotations
 
+#: Makes and models, by the type of vehicle they name ("a silver Audi", "a white Transit", "a Scania"): a
+#: writer names a vehicle by its badge as often as by its kind. Only names that are no everyday English
+#: word ("Focus", "Golf", "Charger", "Mini" and "Dodge" are: :mod:`discourse` reads a capitalised name
+#: by its place in the sentence instead). A make before a model or a vehicle noun ("a Ford Transit", "a
+#: Toyota Prius", "a Mercedes van") is one vehicle (:func:`who.make_and_model`).
+CAR_MAKES = (
+    "audi", "bmw", "beemer", "tesla", "vauxhall", "opel", "toyota", "honda", "nissan", "hyundai", "kia",
+    "mazda", "subaru", "lexus", "porsche", "volvo", "fiat", "renault", "peugeot", "citroen", "skoda",
+    "volkswagen", "vw", "mercedes", "merc", "mercedes-benz", "chevrolet", "chevy", "cadillac", "chrysler",
+    "ferrari", "lamborghini", "maserati", "bentley", "mitsubishi", "suzuki", "dacia", "alfa romeo",
+    "land rover", "landrover", "range rover", "ford", "lada", "hummer",
+    # models
+    "prius", "corsa", "astra", "fiesta", "mondeo", "qashqai", "yaris", "corolla", "camry", "octavia",
+    "passat", "clio", "micra", "kuga", "cortina", "tiguan", "zafira", "insignia",
+    # motorcycles and mopeds (a motor two-wheeler is read as a car)
+    "harley", "harley-davidson", "ducati", "vespa", "kawasaki", "yamaha",
+)  # fmt: skip
+VAN_MODELS = (
+    "transit", "transit van", "sprinter", "vivaro", "crafter", "ducato", "berlingo", "kangoo", "hiace",
+    "vito", "econoline", "promaster",
+)  # fmt: skip
+TRUCK_MAKES = ("scania", "iveco", "daf", "transit bus")
+
+#: Animals on the road, played as pedestrians (OpenSCENARIO's pedestrianCategory "animal" has no model of
+#: its own in vei or esmini: its size and way of crossing are a walker's). One led, walked or ridden by a
+#: person is that person's, one road user (:mod:`discourse`).
+ANIMALS = ("dog", "deer", "animal", "cat", "fox", "horse", "pony")
+
 ACTOR_NOUNS = {
     "car": ("car",),
     "pedestrian": (
@@ -72,14 +100,7 @@ ACTOR_NOUNS = {
         "moron",
         "nutter",
         "muppet",
-        # an animal on the road is played as a pedestrian (OpenSCENARIO's pedestrianCategory "animal" has
-        # no model of its own in vei or esmini: its size and way of crossing are a walker's)
-        "dog",
-        "deer",
-        "animal",
-        "cat",
-        "fox",
-        "horse",
+        *ANIMALS,
     ),
     "bicycle": ("bicycle", "bike", "cyclist", "bicyclist", "biker", "kid on a bike", "cargo bike"),
     "e-scooter": (
@@ -120,6 +141,7 @@ ACTOR_NOUNS = {
         "double-decker",
         "double decker",
         "fire engine",
+        *TRUCK_MAKES,
     ),
     "van": (
         "van",
@@ -134,6 +156,7 @@ ACTOR_NOUNS = {
         "pick-up truck",
         "people carrier",
         "mpv",
+        *VAN_MODELS,
     ),
 }
 CAR_NOUNS = (
@@ -185,6 +208,7 @@ CAR_NOUNS = (
     "obstacle",  # (something standing in the lane: a car's size is what the scenario places)
     "red light runner",
     "light runner",
+    *CAR_MAKES,
 )
 EGO_NOUNS = (
     "ego",
@@ -205,6 +229,11 @@ EGO_NOUNS = (
     "our car",
     "my car",
     "host vehicle",
+    "reporting vehicle",  # (a police or fleet report's own vehicle)
+    "sut",  # (system under test)
+    "system under test",
+    "host car",
+    "automated vehicle",
     "sv",
     "sut",  # (system under test)
     "system under test",
@@ -1222,6 +1251,9 @@ SEQUENCE = (
 PARALLEL = ("while", "at the same time", "simultaneously", "meanwhile", "whilst")
 #: Phrases that look like content but are not.
 NOISE = (
+    "public transit",  # (not a Transit van)
+    "mass transit",
+    "in transit",
     "street light",  # (lighting along a road, not a junction's signals: "lights" alone are those)
     "street lighting",
     "street lamp",

@@ -59,7 +59,7 @@ from vei_scenario.language.stated import (
     stated_heavy_rain,
     stated_lanes,
 )
-from vei_scenario.language.who import closed_compound, lamps_not_signals, own_vehicles
+from vei_scenario.language.who import closed_compound, lamps_not_signals, own_vehicles, proper_names
 
 _TOKEN = re.compile(r"\d+(?:\.\d+)?|km/h|m/s²|m/s2|m/s|[a-z][a-z\-]*(?:'[a-z]+)?|'s|[.;,!?:%]")
 _TOKEN_BRACKETS = re.compile(_TOKEN.pattern + "|[()]")  # (for discourse: a name said in brackets)
@@ -515,7 +515,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
     ]
     framed: list[str] = []
     tokens = ego.frame(tokens, _kind_at, _known, framed)  # (the ego named by a role, its driver, a witness)
-    tokens, dropped = discourse.resolve(tokens, _kind_at, _known)  # (who is who; the words it took out)
+    tokens, dropped = discourse.resolve(tokens, _kind_at, _known, proper_names(text))  # (who is who; words out)
     dropped = framed + dropped
     ignored: list[str] = [w for w in dropped if w not in FUNCTION_WORDS and w.isalpha()]
     left_hand, ring = sides.drives_on_left(tokens), "roundabout" in tokens

@@ -6,9 +6,11 @@ not a junction's signals, which "lights" alone are)."""
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable
 
-from vei_scenario.language.lemmas import english
+from vei_scenario.language.lemmas import english, lemmas
+from vei_scenario.language.lexicon import CAR_MAKES, TRUCK_MAKES
 
 #: First-person possessives, a closed class: what they own is the writer's, hence the ego.
 FIRST_PERSON_POSSESSIVES = frozenset({"my", "our"})
@@ -82,3 +84,57 @@ def lamps_not_signals(tokens: list[str], content_word: Callable[[str], bool]) ->
         else tok
         for i, tok in enumerate(tokens)
     ]
+
+
+#: Makes: a word after one of them is its model or the vehicle's noun ("Ford Transit", "Vauxhall Astra").
+MAKES = frozenset(m for m in CAR_MAKES + TRUCK_MAKES if " " not in m)
+
+
+def make_and_model(tokens: list[str], kind_at: KindAt, known: Callable[[list[str], int], bool]) -> list[str]:
+    """A make and what follows it as one vehicle: before a vehicle noun or a model the lexicon has ("a
+    Ford Transit", "a Mercedes van", "a Vauxhall Astra") the make goes and the noun says the type; before
+    a model it lacks (a word no dictionary knows, "a Toyota Prius", or a noun the reader has no phrase for,
+    "a Ford Focus") the model goes and the make says it is a car. A verb after a make stays ("a BMW came
+    past")."""
+    out: list[str] = []
+    i = 0
+    while i < len(tokens):
+        w = tokens[i]
+        nxt = tokens[i + 1] if i + 1 < len(tokens) else ""
+        if w in MAKES and nxt.isalpha():
+            after = kind_at(tokens, i + 1)
+            if after is not None and after[0] not in ("pedestrian", "ego"):
+                i += 1  # (the make goes; its noun or model stays)
+                continue
+            unknown_model = not known(tokens, i + 1) and (not english(nxt) or nxt in lemmas(nxt).get("NOUN", ()))
+            if unknown_model:
+                out.append(w)
+                i += 2
+                continue
+        out.append(w)
+        i += 1
+    return out
+
+
+_WORD = re.compile(r"[A-Za-z][A-Za-z-]*")
+#: Marks that open a sentence, a line or a field, after which any word is capitalised.
+_OPENERS = frozenset(".!?:;\n|-(\"'\u2014\u2013*#>")
+
+
+def proper_names(text: str) -> frozenset[str]:
+    """The words ``text`` writes only with a capital, at least once where a sentence does not open (so
+    the capital is the word's own: "a silver Mokka", "this guy in a Charger"), lower-cased as the
+    reader's words are. All-capital words (abbreviations, shouting) are left out."""
+    capital: set[str] = set()
+    lower: set[str] = set()
+    for m in _WORD.finditer(text):
+        w = m.group(0)
+        if w[0].islower():
+            lower.add(w.lower())
+        elif not w.isupper():
+            j = m.start() - 1
+            while j >= 0 and text[j] in " \t":
+                j -= 1
+            if j >= 0 and text[j] not in _OPENERS:
+                capital.add(w.lower())
+    return frozenset(capital - lower)
