@@ -321,6 +321,7 @@ def write_scenario(layers: dict, stem: str) -> WrittenScenario:
             exits=info.exits,
             junction_end_s_m=info.feature_s_m,
             actor_max_accel_mps2=TYPES[kind][4],
+            actor_max_speed_mps=TYPES[kind][3],
             ego_s_m=ego_pose.s,
             actor_length_m=TYPES[kind][0][0],
             actor_exits=_own_exits(info, pose.road),

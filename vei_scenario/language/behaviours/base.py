@@ -85,6 +85,8 @@ class ActorContext:
     trajectories: dict[str, xosc.Trajectory] = field(default_factory=dict)
     #: The actor's Performance maxAcceleration: a speed it is told to reach takes at least v / a.
     actor_max_accel_mps2: float = 0.0
+    #: The actor's Performance maxSpeed (0: not bounded): a timing worked out at a faster speed fails.
+    actor_max_speed_mps: float = 0.0
     #: The ego's s on its road (m); the actor's length (m).
     ego_s_m: float = 0.0
     actor_length_m: float = 4.6
@@ -96,6 +98,13 @@ class ActorContext:
     def ego_to_junction_m(self) -> float:
         """The ego's distance to its junction entry (m), 0 on a map without one."""
         return max(0.0, self.junction_end_s_m - self.ego_s_m) if self.junction_end_s_m else 0.0
+
+    def reachable(self, speed_mps: float, accel_mps2: float) -> tuple[float, float]:
+        """(speed, acceleration) bounded by what the actor's vehicle can do: a timing worked out at
+        more than that brings it to the meeting point late (a rider timed as a car comes out
+        behind the ego)."""
+        top = min(speed_mps, self.actor_max_speed_mps) if self.actor_max_speed_mps > 0 else speed_mps
+        return top, min(accel_mps2, self.actor_max_accel_mps2) if self.actor_max_accel_mps2 > 0 else accel_mps2
 
     def max_decel(self, wanted: float) -> float:
         """``wanted`` bounded by what the road's friction allows."""

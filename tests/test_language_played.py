@@ -1,0 +1,69 @@
+"""A generated scenario plays what its layers say: each test writes a small scenario, plays it with
+vei run's interpreter and checks from the trajectories that the behaviour happened (the checks of
+:func:`~vei_scenario.language.corpus_check.played_problems`, and where they are loose, a stricter
+one of the behaviour's own definition)."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import pytest
+
+from vei_scenario.interpreter import run_scenario
+from vei_scenario.language.corpus_check import played_problems
+from vei_scenario.language.rules_backend import layers_from_text
+from vei_scenario.language.scenario_writer import write_scenario
+
+
+def _play(layers: dict, tmp_path: Path):
+    written = write_scenario(layers, "scenario")
+    (tmp_path / "scenario.xosc").write_bytes(written.xosc)
+    (tmp_path / "scenario.xodr").write_bytes(written.xodr)
+    return run_scenario(tmp_path / "scenario.xosc", None, round(1.0 / float(layers["rate_hz"]), 6))
+
+
+def _turned_rad(trace) -> float:
+    """How far a road user's heading turned from its first sample to its last (rad, -pi..pi)."""
+    return float((trace.yaw[-1] - trace.yaw[0] + math.pi) % (2 * math.pi) - math.pi)
+
+
+@pytest.mark.parametrize(
+    ("side", "ego_route"),
+    # (not from the right with the ego turning right: on the right-hand side of the road the ego's
+    # right turn stays in the junction's near corner, which straight traffic from the right never crosses)
+    [("left", "left"), ("left", "right"), ("left", "straight"), ("right", "left"), ("right", "straight")],
+)
+def test_a_red_light_runner_drives_straight_on_across_the_ego_s_path_whichever_way_the_ego_turns(
+    side, ego_route, tmp_path
+):
+    """Running the red is driving straight through the junction: the runner leaves on the arm
+    opposite its own (it had taken the exit the ego goes straight to, turning into it), and meets the
+    ego's path, whether the ego goes straight or turns."""
+    layers = layers_from_text(f"At a crossroad with lights a van approaching from the {side} runs the red.", 0)
+    layers["ego"]["route"] = ego_route
+    [adv] = layers["adversaries"]
+    assert adv["behaviour"]["behaviour"] == "run_red_light" and adv["spawn"]["relation"] == f"junction_{side}"
+    result = _play(layers, tmp_path)
+    assert played_problems(result, layers) == []
+    assert abs(_turned_rad(result.traces["Adversary1"])) < 0.2
+
+
+@pytest.mark.parametrize("kind", ["bicycle", "e-scooter", "truck"])
+@pytest.mark.parametrize("side", ["left", "right"])
+def test_a_slow_vehicle_pulling_out_of_a_side_road_comes_out_ahead_of_the_ego(kind, side, tmp_path):
+    """A road user pulling out of a side road sets off when the ego is as far as its own time to the
+    ego's lane needs: that time is worked out at the speed and acceleration its vehicle has (a
+    rider or a lorry timed as a car came out behind the ego)."""
+    word = {"bicycle": "a cyclist", "e-scooter": "a rider on an e-scooter", "truck": "a lorry"}[kind]
+    text = (
+        f"The ego drives straight over a crossroad. {word.capitalize()} pulls out of the side road on the {side}"
+        " into the ego's lane just in front of it."
+    )
+    layers = layers_from_text(text, 0)
+    [adv] = layers["adversaries"]
+    assert (adv["type"], adv["behaviour"]["behaviour"]) == (kind, "turn_into"), adv
+    adv["spawn"]["relation"] = f"junction_{side}"
+    for seed_gap in (0.0, 0.6, 2.0):
+        adv["behaviour"]["config"]["arrival_gap_s"] = seed_gap
+        assert played_problems(_play(layers, tmp_path), layers) == [], seed_gap
