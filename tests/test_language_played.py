@@ -67,3 +67,46 @@ def test_a_slow_vehicle_pulling_out_of_a_side_road_comes_out_ahead_of_the_ego(ki
     for seed_gap in (0.0, 0.6, 2.0):
         adv["behaviour"]["config"]["arrival_gap_s"] = seed_gap
         assert played_problems(_play(layers, tmp_path), layers) == [], seed_gap
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Approaching a roundabout, a moped rider on the wrong side comes head-on towards the ego.",
+        "At 70 km/h the ego nears a crossroad while a cyclist pedals along the kerb in front of it.",
+        "The ego waits to turn left at the crossroads; a car approaches from the other direction and drives on.",
+    ],
+)
+def test_what_starts_ahead_of_the_ego_before_a_junction_fits_on_the_ego_s_road(text, tmp_path):
+    """A road user placed ahead of the ego (by its timing or as oncoming traffic) stands on the ego's
+    road before the junction or roundabout: the ego starts far enough back for it to fit there,
+    instead of the spawn falling beyond the road's end and nothing being written."""
+    from vei_scenario.language.corpus_check import play_case
+
+    for seed in (0, 1, 2):
+        layers = layers_from_text(text, seed)
+        assert layers["environment"]["map"]["kind"] in ("crossroad", "roundabout")
+        assert play_case({"text": text}, layers_from_text, tmp_path, seed) == [], seed
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "The ego turns right at the crossroads while a cyclist rides along the kerb ahead of it.",
+        "The ego takes the second exit of a roundabout behind a cyclist riding along the kerb.",
+        "Turning left at a crossroad, the ego comes up behind a rider on an e-scooter going along the kerb.",
+    ],
+)
+def test_a_rider_along_the_ego_s_road_keeps_to_it_when_the_ego_turns_off(text, tmp_path):
+    """Going along the road is going along the ego's road: the rider keeps its lane and goes straight
+    on through the junction (not the junction's first link, a turn), and it is judged while the ego is
+    on that road too: once the ego turns off, the rider going on straight is not leaving the ego's
+    lane."""
+    for seed in (0, 1):
+        layers = layers_from_text(text, seed)
+        [adv] = layers["adversaries"]
+        assert adv["behaviour"]["behaviour"] == "along_road"
+        result = _play(layers, tmp_path)
+        assert played_problems(result, layers) == [], seed
+        if layers["environment"]["map"]["kind"] == "crossroad":  # (in a roundabout the run ends in its ring)
+            assert abs(_turned_rad(result.traces["Adversary1"])) < 0.2

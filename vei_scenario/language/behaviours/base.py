@@ -133,18 +133,19 @@ def lane_change_to(lane_id: int, duration: float) -> xosc.AbsoluteLaneChangeActi
 
 
 def route_action(
-    ctx: ActorContext, turn: str, exit_s_m: float = 40.0, own_view: bool = False
+    ctx: ActorContext, turn: str, exit_s_m: float = 40.0, own_view: bool = False, exit_lane: int = 1
 ) -> xosc.AssignRouteAction:
     """A route from the actor's position through the junction to the exit on side ``turn``
     (straight, left, right; seen by the ego, or by the actor itself with ``own_view``): it leaves on
-    the exit arm's lanes that drive away from the junction."""
+    the exit arm's lanes that drive away from the junction (lane ``exit_lane`` of them, 1 the one
+    next to the centre)."""
     exit_road = (ctx.actor_exits if own_view else ctx.exits).get(turn)
     if exit_road is None:
         raise ValueError(f"{ctx.actor}: the {ctx.map_kind} map has no {turn} exit")
     route = xosc.Route(f"{ctx.actor}_{turn}")
     start = xosc.LanePosition(round(ctx.actor_s_m, 3), 0, ctx.actor_lane_id, ctx.actor_road)
     route.add_waypoint(start, xosc.RouteStrategy.shortest)
-    route.add_waypoint(xosc.LanePosition(exit_s_m, 0, 1, exit_road), xosc.RouteStrategy.shortest)
+    route.add_waypoint(xosc.LanePosition(exit_s_m, 0, exit_lane, exit_road), xosc.RouteStrategy.shortest)
     return xosc.AssignRouteAction(route)
 
 
