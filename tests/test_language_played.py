@@ -110,3 +110,23 @@ def test_a_rider_along_the_ego_s_road_keeps_to_it_when_the_ego_turns_off(text, t
         assert played_problems(result, layers) == [], seed
         if layers["environment"]["map"]["kind"] == "crossroad":  # (in a roundabout the run ends in its ring)
             assert abs(_turned_rad(result.traces["Adversary1"])) < 0.2
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "On a twisty road at 90 km/h a fox darts across from the right in front of the ego.",
+        "The ego rounds a long bend at 70 km/h when a man steps out from the left verge and walks across.",
+        "Driving 75 km/h through a sweeping curve, the ego meets a boy running over the road from the left.",
+    ],
+)
+def test_a_crossing_on_a_curved_road_reaches_the_ego_s_path(text, tmp_path):
+    """On a curved road the crossing need not lie before the bend (as it must before a junction, where
+    the ego's road ends): a slow crosser facing a fast ego starts as far ahead as its timing needs,
+    on the bend if need be, and gets across the ego's path."""
+    for seed in (0, 1):
+        layers = layers_from_text(text, seed)
+        assert layers["environment"]["map"]["kind"] == "curve"
+        [adv] = layers["adversaries"]
+        assert adv["behaviour"]["behaviour"] == "cross_in_front"
+        assert played_problems(_play(layers, tmp_path), layers) == [], seed

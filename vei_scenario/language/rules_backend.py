@@ -435,7 +435,9 @@ def _place_adversary(
     elif relation.startswith("roadside"):
         cfg.setdefault("crossing_speed_mps", _crossing_speed(kind, cfg))
         lon = _crossing_lon_m(kind, relation, cfg, ego, lanes)
-        if "distance_m" in ego:  # before a junction: the crossing lies on the ego's way to it
+        if "distance_m" in ego and ego.get("placement") != "on_curve":
+            # before a junction: the crossing lies on the ego's way to it (a curved road goes on: there
+            # it may lie on the bend)
             lon = min(lon, float(ego["distance_m"]) - CROSSING_CLEAR_OF_JUNCTION_M)
         spawn["longitudinal_m"] = round(lon, 3)
         out_speed = 0.0
