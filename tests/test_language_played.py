@@ -130,3 +130,27 @@ def test_a_crossing_on_a_curved_road_reaches_the_ego_s_path(text, tmp_path):
         [adv] = layers["adversaries"]
         assert adv["behaviour"]["behaviour"] == "cross_in_front"
         assert played_problems(_play(layers, tmp_path), layers) == [], seed
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist waiting at the right kerb swerves into the ego's lane.",
+        "An e-scooter rider on the right kerb swerves into the ego's lane.",
+        "On a straight road at 50 km/h a cyclist on the right kerb swerves into the ego's lane.",
+    ],
+)
+def test_a_rider_at_the_kerb_swerving_into_the_road_ends_in_the_ego_s_lane(text, tmp_path):
+    """A rider at the kerb on the ego's side that swerves into the road starts on the kerb lane's
+    edge (beyond the kerb it is on no lane, and the scenario could not be played) and ends in the
+    ego's lane, ahead of it."""
+    from vei_scenario.language.corpus_check import _ego_frame
+
+    layers = layers_from_text(text, 0)
+    [adv] = layers["adversaries"]
+    assert adv["spawn"]["relation"] == "roadside_right"
+    assert adv["behaviour"]["behaviour"] in ("change_lane", "cut_in")
+    result = _play(layers, tmp_path)
+    assert played_problems(result, layers) == []
+    lon, lat = _ego_frame(result, "Adversary1")
+    assert lon[-1] > 0 and abs(lat[-1]) < 0.5

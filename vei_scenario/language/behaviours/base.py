@@ -94,6 +94,8 @@ class ActorContext:
     actor_exits: dict[str, str] = field(default_factory=dict)
     #: Which way the actor faces: ``with`` its lane's driving direction, or ``against`` it.
     facing: str = "with"
+    #: The actor's offset from its lane's centre at the start (m): a rider at the kerb edge.
+    actor_offset_m: float = 0.0
 
     def ego_to_junction_m(self) -> float:
         """The ego's distance to its junction entry (m), 0 on a map without one."""
