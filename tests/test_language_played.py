@@ -154,3 +154,23 @@ def test_a_rider_at_the_kerb_swerving_into_the_road_ends_in_the_ego_s_lane(text,
     assert played_problems(result, layers) == []
     lon, lat = _ego_frame(result, "Adversary1")
     assert lon[-1] > 0 and abs(lat[-1]) < 0.5
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Creeping along at 12 km/h, the ego is cut up dangerously by a cyclist from the lane on its left.",
+        "At 15 km/h in a queue, an e-scooter rider from the left lane cuts in right in front of the ego.",
+        "The ego edges forward at 10 km/h when a car in the left lane cuts in sharply right in front of it.",
+    ],
+)
+def test_a_slow_cut_in_ends_in_the_ego_s_lane(text, tmp_path):
+    """A cut-in brakes as it comes over, by ``brake_delta_mps``: from a crawl that would bring it to a
+    stand halfway across (a road user standing still moves sideways no further, turned across the
+    lane), so it keeps moving until it is in."""
+    for seed in (0, 1, 2):
+        layers = layers_from_text(text, seed)
+        [adv] = layers["adversaries"]
+        assert adv["behaviour"]["behaviour"] == "cut_in"
+        adv["behaviour"]["config"]["criticality"] = "dangerous"
+        assert played_problems(_play(layers, tmp_path), layers) == [], seed
