@@ -179,12 +179,19 @@ def played_problems(result, layers: dict) -> list[str]:
     a stop ends standing, an overtake ends ahead of the ego, a cut-in ends ahead in the ego's lane,
     a crossing passes the ego's path (or is hit in it), a red-light run or a turn across comes within 3 m of the
     ego's path, a road user giving way stands and is not hit, one going along the road keeps to
-    the ego's lane in its direction, a wrong-way driver is head-on on the ego's path, an oncoming
-    one faces the ego when they meet; and no background vehicle collides."""
+    the ego's lane in its direction (while both are on the ego's road), a wrong-way driver is head-on
+    on the ego's path, an oncoming one faces the ego when they meet; and no background vehicle
+    collides."""
     import numpy as np
 
     out = []
     ego = result.traces[result.ego]
+    on_own_road = np.ones(len(ego.x), dtype=bool)
+    if "route" in layers["ego"] and "distance_m" in layers["ego"]:
+        # through a junction or roundabout: the ego is on its own road until it has driven the
+        # distance_m it started before the junction (from there on its frame is other roads')
+        travelled = np.concatenate([[0.0], np.cumsum(np.hypot(np.diff(ego.x), np.diff(ego.y)))])
+        on_own_road = travelled < float(layers["ego"]["distance_m"])
     for t, a, b in result.collisions:  # background traffic keeps to its lanes and out of the way
         if a.startswith("Background") or b.startswith("Background"):
             out.append(f"background collision of {a} and {b} at {t:.1f} s")
@@ -229,11 +236,18 @@ def played_problems(result, layers: dict) -> list[str]:
         if names[0] == "along_road":
             facing = adv["spawn"].get("facing", "with")
             want = np.pi if facing == "against" else 0.0
-            moving = np.abs(tr.speed) > 0.3
+            # along the ego's road: judged while both are on it, i.e. before a route through a
+            # junction or roundabout takes either off it (after that the ego's frame is another road's)
+            on_road = on_own_road.copy()
+            if "route" in layers["ego"] and "distance_m" in layers["ego"] and facing == "with":
+                travelled = np.concatenate([[0.0], np.cumsum(np.hypot(np.diff(tr.x), np.diff(tr.y)))])
+                on_road &= travelled < float(layers["ego"]["distance_m"]) - float(lon[0])
+            moving = (np.abs(tr.speed) > 0.3) & on_road
+            ahead = (lon > 0) & on_road
             if (
                 not moving.any()
                 or np.abs(heading[moving] - want).max() > 0.35
-                or np.ptp(lat[lon > 0] if (lon > 0).any() else lat) > 1.5
+                or np.ptp(lat[ahead] if ahead.any() else lat[on_road]) > 1.5
             ):
                 out.append(f"{name}: along_road but not moving along the ego's lane ({facing} the traffic)")
         if "wrong_way" in names:

@@ -127,3 +127,11 @@ def _on_road(info: MapInfo, pose: Pose) -> Pose:
     if not 0.0 <= pose.s <= length:
         raise PlacementError(f"the spawn lies {pose.s:.1f} m along road {pose.road}, outside its 0..{length:.0f} m")
     return pose
+
+
+def kerb_edge(pose: Pose, width_m: float) -> Pose:
+    """``pose`` (beyond the kerb) moved onto the road, to the outer edge of the kerb lane: where a
+    rider at the kerb rides before it swerves into the road (beyond the kerb it is on no lane, and
+    a lane change cannot start there)."""
+    inside = LANE_WIDTH_M / 2 - width_m / 2 - 0.2
+    return Pose(pose.road, pose.lane_id, pose.s, inside if pose.offset > 0 else -inside, pose.facing)

@@ -195,6 +195,7 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
         )
     _place_obstacles(reading, adversaries, ego_speed)
     _place_occluders(reading, adversaries)
+    _room_ahead_before_feature(ego, adversaries, kind)
     layers = {
         "format": "vei-layers/1",
         "description": text,
@@ -278,6 +279,34 @@ def _place_obstacles(reading: Reading, adversaries: list[dict], ego_speed: float
             lon = lead_lon + (lead_len + obs_len) / 2 + reveal + float(adv["speed_mps"]) * 3.0
             obstacle["spawn"] = {"relation": "ahead", "longitudinal_m": round(min(lon, MAX_SPAWN_M), 3)}
             obstacle["speed_mps"] = 0.0
+
+
+#: Room left between where the ego meets a road user ahead of it and its junction or roundabout (m).
+MEETING_CLEAR_OF_FEATURE_M = 10.0
+
+
+def _room_ahead_before_feature(ego: dict, adversaries: list[dict], kind: str) -> None:
+    """Before a junction or roundabout the ego's road ends at it: a road user placed ahead of the ego
+    (a wrong-way rider timed by its speed, oncoming traffic, a cyclist the ego catches up with) must
+    stand on that road, and the ego meet it there, not in the junction. Where one would not, the ego
+    starts farther back (as far as the arm allows); where all fit, nothing changes."""
+    if kind not in ("crossroad", "roundabout") or "distance_m" not in ego:
+        return
+    ego_speed = float(ego["speed_mps"])
+    need = 0.0
+    for adv in adversaries:
+        spawn = adv["spawn"]
+        if spawn["relation"] not in ("ahead", "oncoming", "left", "right", "roadside_left", "roadside_right"):
+            continue
+        default = 90.0 if spawn["relation"] == "oncoming" else 30.0  # (placement's defaults)
+        lon = float(spawn.get("longitudinal_m", default))
+        speed = float(adv.get("speed_mps", 0.0))
+        meet = lon
+        if spawn.get("facing", "with") == "with" and spawn["relation"] != "oncoming" and speed < ego_speed - 1.0:
+            meet = lon * ego_speed / (ego_speed - speed)  # (the ego catches up with it there)
+        need = max(need, lon, meet + MEETING_CLEAR_OF_FEATURE_M if meet > lon else lon)
+    if need > float(ego["distance_m"]) - 1.0:
+        ego["distance_m"] = round(min(need + MEETING_CLEAR_OF_FEATURE_M, ARM_LENGTH_M - 20.0), 3)
 
 
 def _place_occluders(reading: Reading, adversaries: list[dict]) -> None:
@@ -431,7 +460,9 @@ def _place_adversary(
     elif relation.startswith("roadside"):
         cfg.setdefault("crossing_speed_mps", _crossing_speed(kind, cfg))
         lon = _crossing_lon_m(kind, relation, cfg, ego, lanes)
-        if "distance_m" in ego:  # before a junction: the crossing lies on the ego's way to it
+        if "distance_m" in ego and ego.get("placement") != "on_curve":
+            # before a junction: the crossing lies on the ego's way to it (a curved road goes on: there
+            # it may lie on the bend)
             lon = min(lon, float(ego["distance_m"]) - CROSSING_CLEAR_OF_JUNCTION_M)
         spawn["longitudinal_m"] = round(lon, 3)
         out_speed = 0.0

@@ -64,6 +64,9 @@ def vulnerable(kind: str) -> bool:
     return TYPES[kind][1] in ("pedestrian", "bicycle")
 
 
+#: First behaviours of a rider at the kerb that move it sideways into the road along its lanes
+#: (a crossing goes straight across instead, from beyond the kerb).
+SWERVES_FROM_KERB = ("change_lane", "cut_in")
 #: Signal state strings (red;yellow;green lamps), as esmini's examples write them.
 RED, GREEN = "on;off;off", "off;off;on"
 WEATHER = {  # cloud state, precipitation (type, intensity mm/h), fog visual range (m), default friction
@@ -321,13 +324,21 @@ def write_scenario(layers: dict, stem: str) -> WrittenScenario:
             exits=info.exits,
             junction_end_s_m=info.feature_s_m,
             actor_max_accel_mps2=TYPES[kind][4],
+            actor_max_speed_mps=TYPES[kind][3],
             ego_s_m=ego_pose.s,
             actor_length_m=TYPES[kind][0][0],
             actor_exits=_own_exits(info, pose.road),
             facing=pose.facing,
         )
         controller = None
-        if adv["spawn"]["relation"].startswith("roadside") and vulnerable(kind):
+        first = next(n["behaviour"] for _, n in behaviour_nodes(adv["behaviour"]))
+        at_kerb = adv["spawn"]["relation"].startswith("roadside") and vulnerable(kind)
+        if at_kerb and first in SWERVES_FROM_KERB and pose.lane_id < 0:
+            # a rider at the kerb of the ego's side that swerves into the road: on the kerb lane's edge
+            pose = placement.kerb_edge(pose, TYPES[kind][0][1])
+            ctx.actor_offset_m = pose.offset
+            at_kerb = False
+        if at_kerb:
             net = net or _road_network(xodr_bytes)  # (only crossings ask the road model)
             road = net.road(pose.road)
             t0 = road.lane_center_t(pose.s, pose.lane_id) + pose.offset

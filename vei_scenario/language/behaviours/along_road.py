@@ -1,11 +1,13 @@
 """along the road: a pedestrian, cyclist or e-scooter rider moving along the ego's road in the ego's
 lane or at its kerb edge, in the ego's direction or towards it (the Euro NCAP longitudinal cases
 CPLA and CBLA). Where it is in the lane is its spawn's ``lateral_m``, which way it faces the
-spawn's ``facing``; here it holds its speed for ``hold_s``."""
+spawn's ``facing``; here it holds its speed for ``hold_s``. Going the ego's way towards a junction
+it goes straight on through it, as the ego's own road does (left to itself a road user takes the
+junction's first link, a turn)."""
 
 from __future__ import annotations
 
-from vei_scenario.language.behaviours.base import ActorContext, Parameter, Step, speed_action, value
+from vei_scenario.language.behaviours.base import ActorContext, Parameter, Step, route_action, speed_action, value
 
 NAME = "along_road"
 AGENT = "route follower"
@@ -18,4 +20,8 @@ PACE_MPS = {"pedestrian": 1.4, "bicycle": 4.5, "e-scooter": 4.0}
 
 
 def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
-    return [Step("along_road", [speed_action(ctx.actor_speed_mps)], hold_s=value(cfg, PARAMETERS, "hold_s"))]
+    actions: list = [speed_action(ctx.actor_speed_mps)]
+    on_ego_road = ctx.exits and ctx.actor_exits.get("straight") == ctx.exits.get("straight")
+    if on_ego_road and ctx.facing == "with" and ctx.actor_lane_id < 0:
+        actions.insert(0, route_action(ctx, "straight", own_view=True, exit_lane=-ctx.actor_lane_id))
+    return [Step("along_road", actions, hold_s=value(cfg, PARAMETERS, "hold_s"))]

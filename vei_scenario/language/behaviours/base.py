@@ -85,6 +85,8 @@ class ActorContext:
     trajectories: dict[str, xosc.Trajectory] = field(default_factory=dict)
     #: The actor's Performance maxAcceleration: a speed it is told to reach takes at least v / a.
     actor_max_accel_mps2: float = 0.0
+    #: The actor's Performance maxSpeed (0: not bounded): a timing worked out at a faster speed fails.
+    actor_max_speed_mps: float = 0.0
     #: The ego's s on its road (m); the actor's length (m).
     ego_s_m: float = 0.0
     actor_length_m: float = 4.6
@@ -92,10 +94,19 @@ class ActorContext:
     actor_exits: dict[str, str] = field(default_factory=dict)
     #: Which way the actor faces: ``with`` its lane's driving direction, or ``against`` it.
     facing: str = "with"
+    #: The actor's offset from its lane's centre at the start (m): a rider at the kerb edge.
+    actor_offset_m: float = 0.0
 
     def ego_to_junction_m(self) -> float:
         """The ego's distance to its junction entry (m), 0 on a map without one."""
         return max(0.0, self.junction_end_s_m - self.ego_s_m) if self.junction_end_s_m else 0.0
+
+    def reachable(self, speed_mps: float, accel_mps2: float) -> tuple[float, float]:
+        """(speed, acceleration) bounded by what the actor's vehicle can do: a timing worked out at
+        more than that brings it to the meeting point late (a rider timed as a car comes out
+        behind the ego)."""
+        top = min(speed_mps, self.actor_max_speed_mps) if self.actor_max_speed_mps > 0 else speed_mps
+        return top, min(accel_mps2, self.actor_max_accel_mps2) if self.actor_max_accel_mps2 > 0 else accel_mps2
 
     def max_decel(self, wanted: float) -> float:
         """``wanted`` bounded by what the road's friction allows."""
@@ -124,18 +135,19 @@ def lane_change_to(lane_id: int, duration: float) -> xosc.AbsoluteLaneChangeActi
 
 
 def route_action(
-    ctx: ActorContext, turn: str, exit_s_m: float = 40.0, own_view: bool = False
+    ctx: ActorContext, turn: str, exit_s_m: float = 40.0, own_view: bool = False, exit_lane: int = 1
 ) -> xosc.AssignRouteAction:
     """A route from the actor's position through the junction to the exit on side ``turn``
     (straight, left, right; seen by the ego, or by the actor itself with ``own_view``): it leaves on
-    the exit arm's lanes that drive away from the junction."""
+    the exit arm's lanes that drive away from the junction (lane ``exit_lane`` of them, 1 the one
+    next to the centre)."""
     exit_road = (ctx.actor_exits if own_view else ctx.exits).get(turn)
     if exit_road is None:
         raise ValueError(f"{ctx.actor}: the {ctx.map_kind} map has no {turn} exit")
     route = xosc.Route(f"{ctx.actor}_{turn}")
     start = xosc.LanePosition(round(ctx.actor_s_m, 3), 0, ctx.actor_lane_id, ctx.actor_road)
     route.add_waypoint(start, xosc.RouteStrategy.shortest)
-    route.add_waypoint(xosc.LanePosition(exit_s_m, 0, 1, exit_road), xosc.RouteStrategy.shortest)
+    route.add_waypoint(xosc.LanePosition(exit_s_m, 0, exit_lane, exit_road), xosc.RouteStrategy.shortest)
     return xosc.AssignRouteAction(route)
 
 

@@ -1,8 +1,21 @@
-"""change lane: one lane to the left or to the right."""
+"""change lane: one lane to the left or to the right. A rider at the kerb edge of the ego's own lane
+that changes lane towards the road moves into the ego's lane itself (to its centre): the lane it
+swerves into is the one it rides at the edge of."""
 
 from __future__ import annotations
 
-from vei_scenario.language.behaviours.base import ActorContext, Parameter, Step, lane_change_to, neighbour_lane, value
+import math
+
+from scenariogeneration import xosc
+
+from vei_scenario.language.behaviours.base import (
+    ActorContext,
+    Parameter,
+    Step,
+    lane_change_to,
+    neighbour_lane,
+    value,
+)
 
 NAME = "change_lane"
 AGENT = "route follower"
@@ -19,7 +32,20 @@ PROFILES = {
 }
 
 
+#: An actor this far off its lane's centre (m) rides at the lane's edge.
+AT_EDGE_M = 0.5
+
+
 def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
-    target = neighbour_lane(ctx, value(cfg, PARAMETERS, "direction"))
     dur = value(cfg, PARAMETERS, "lane_change_s")
-    return [Step("change_lane", [lane_change_to(target, dur)], delay_s=value(cfg, PARAMETERS, "delay_s"))]
+    direction = value(cfg, PARAMETERS, "direction")
+    # (a lane's t grows to the left of its driving direction on the right side, ids < 0)
+    towards_centre = -ctx.actor_offset_m if ctx.actor_lane_id < 0 else ctx.actor_offset_m
+    at_edge = abs(ctx.actor_offset_m) > AT_EDGE_M and towards_centre * direction > 0
+    if ctx.actor_lane_id == ctx.ego_lane_id and at_edge:
+        # to the lane's centre over ``dur``: a sinusoidal offset change peaks at (Δ/2)(π/T)²
+        peak = abs(ctx.actor_offset_m) / 2 * (math.pi / dur) ** 2
+        action = xosc.AbsoluteLaneOffsetAction(0.0, xosc.DynamicsShapes.sinusoidal, round(peak, 3))
+    else:
+        action = lane_change_to(neighbour_lane(ctx, direction), dur)
+    return [Step("change_lane", [action], delay_s=value(cfg, PARAMETERS, "delay_s"))]

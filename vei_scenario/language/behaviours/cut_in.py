@@ -66,6 +66,8 @@ FASTER_MPS = 0.5
 STANDING_MPS = 0.5
 
 
+#: A cut-in's brake leaves it at least this fast (m/s), or as fast as it was when slower.
+MOVING_MPS = 1.0
 #: How long after its planned closing time a cut-in goes ahead without its gap (s).
 LATE_S = 2.0
 
@@ -80,7 +82,10 @@ def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
         return [
             Step("cut_in", actions, conditions=[Condition("ego_within", pull_out_distance_m(ctx.ego_speed_mps, cfg))])
         ]
-    after = max(0.0, ctx.actor_speed_mps - value(cfg, PARAMETERS, "brake_delta_mps"))
+    # it brakes as it comes over, but not to a stand: standing still it would move sideways no further
+    after = max(
+        0.0, ctx.actor_speed_mps - value(cfg, PARAMETERS, "brake_delta_mps"), min(ctx.actor_speed_mps, MOVING_MPS)
+    )
     rate = ctx.max_decel(value(cfg, PARAMETERS, "brake_rate_mps2"))
     actions = [lane_change_to_ego(ctx.ego, duration), speed_action(after, rate=rate)]
     # if the gap never comes (the ego slows for something else), it cuts in when it planned to anyway

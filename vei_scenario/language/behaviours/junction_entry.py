@@ -38,13 +38,18 @@ def ego_trigger_distance_m(
 ) -> float:
     """Straight-line ego–actor distance at which the actor sets off: the actor needs
     ``actor_path_m`` (from standing, at ``accel`` up to ``go_speed``) to the conflict point, the ego
-    ``ego_path_m`` beyond its junction entry plus what it still has before it."""
+    ``ego_path_m`` beyond its junction entry plus what it still has before it. ``actor_path_m`` is
+    counted from the stop line; the actor's reference point stands half its length behind it (a
+    lorry's 4 m more to go), and it goes at what its vehicle can reach."""
+    go_speed, accel = ctx.reachable(go_speed, accel)
+    standing = STOP_LINE_M + ctx.actor_length_m / 2  # (its centre's distance to its arm's end)
+    actor_path_m += standing - STOP_LINE_M
     t_actor = time_to_cover(actor_path_m, go_speed, accel, ctx.actor_speed_mps)
     ego_before_conflict = max(ctx.ego_speed_mps * (t_actor + arrival_gap_s), 0.0)
     # the ego on its approach, the actor at its stop line on another arm: both about the centre
     r = JUNCTION_RADIUS_M
     ego_from_centre = max(ego_before_conflict - ego_path_m, -r) + r
-    actor_from_centre = r + STOP_LINE_M
+    actor_from_centre = r + standing
     e, a = lane_offset_m(ctx.ego_lane_id), lane_offset_m(ctx.actor_lane_id)
     # the ego comes from the east on the north half (x = ego_from_centre, y = e); the arm ahead of it
     # comes from the west (its lanes on the south half), the one on its left from the south (east

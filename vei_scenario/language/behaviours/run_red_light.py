@@ -21,4 +21,4 @@ PROFILES = {
 
 def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
     # the spawn distance (placement) sets the timing; here only the route and the held speed
-    return [Step("run_red_light", [route_action(ctx, "straight"), speed_action(ctx.actor_speed_mps)])]
+    return [Step("run_red_light", [route_action(ctx, "straight", own_view=True), speed_action(ctx.actor_speed_mps)])]

@@ -1,0 +1,176 @@
+"""A generated scenario plays what its layers say: each test writes a small scenario, plays it with
+vei run's interpreter and checks from the trajectories that the behaviour happened (the checks of
+:func:`~vei_scenario.language.corpus_check.played_problems`, and where they are loose, a stricter
+one of the behaviour's own definition)."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import pytest
+
+from vei_scenario.interpreter import run_scenario
+from vei_scenario.language.corpus_check import played_problems
+from vei_scenario.language.rules_backend import layers_from_text
+from vei_scenario.language.scenario_writer import write_scenario
+
+
+def _play(layers: dict, tmp_path: Path):
+    written = write_scenario(layers, "scenario")
+    (tmp_path / "scenario.xosc").write_bytes(written.xosc)
+    (tmp_path / "scenario.xodr").write_bytes(written.xodr)
+    return run_scenario(tmp_path / "scenario.xosc", None, round(1.0 / float(layers["rate_hz"]), 6))
+
+
+def _turned_rad(trace) -> float:
+    """How far a road user's heading turned from its first sample to its last (rad, -pi..pi)."""
+    return float((trace.yaw[-1] - trace.yaw[0] + math.pi) % (2 * math.pi) - math.pi)
+
+
+@pytest.mark.parametrize(
+    ("side", "ego_route"),
+    # (not from the right with the ego turning right: on the right-hand side of the road the ego's
+    # right turn stays in the junction's near corner, which straight traffic from the right never crosses)
+    [("left", "left"), ("left", "right"), ("left", "straight"), ("right", "left"), ("right", "straight")],
+)
+def test_a_red_light_runner_drives_straight_on_across_the_ego_s_path_whichever_way_the_ego_turns(
+    side, ego_route, tmp_path
+):
+    """Running the red is driving straight through the junction: the runner leaves on the arm
+    opposite its own (it had taken the exit the ego goes straight to, turning into it), and meets the
+    ego's path, whether the ego goes straight or turns."""
+    layers = layers_from_text(f"At a crossroad with lights a van approaching from the {side} runs the red.", 0)
+    layers["ego"]["route"] = ego_route
+    [adv] = layers["adversaries"]
+    assert adv["behaviour"]["behaviour"] == "run_red_light" and adv["spawn"]["relation"] == f"junction_{side}"
+    result = _play(layers, tmp_path)
+    assert played_problems(result, layers) == []
+    assert abs(_turned_rad(result.traces["Adversary1"])) < 0.2
+
+
+@pytest.mark.parametrize("kind", ["bicycle", "e-scooter", "truck"])
+@pytest.mark.parametrize("side", ["left", "right"])
+def test_a_slow_vehicle_pulling_out_of_a_side_road_comes_out_ahead_of_the_ego(kind, side, tmp_path):
+    """A road user pulling out of a side road sets off when the ego is as far as its own time to the
+    ego's lane needs: that time is worked out at the speed and acceleration its vehicle has (a
+    rider or a lorry timed as a car came out behind the ego)."""
+    word = {"bicycle": "a cyclist", "e-scooter": "a rider on an e-scooter", "truck": "a lorry"}[kind]
+    text = (
+        f"The ego drives straight over a crossroad. {word.capitalize()} pulls out of the side road on the {side}"
+        " into the ego's lane just in front of it."
+    )
+    layers = layers_from_text(text, 0)
+    [adv] = layers["adversaries"]
+    assert (adv["type"], adv["behaviour"]["behaviour"]) == (kind, "turn_into"), adv
+    adv["spawn"]["relation"] = f"junction_{side}"
+    for seed_gap in (0.0, 0.6, 2.0):
+        adv["behaviour"]["config"]["arrival_gap_s"] = seed_gap
+        assert played_problems(_play(layers, tmp_path), layers) == [], seed_gap
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Approaching a roundabout, a moped rider on the wrong side comes head-on towards the ego.",
+        "At 70 km/h the ego nears a crossroad while a cyclist pedals along the kerb in front of it.",
+        "The ego waits to turn left at the crossroads; a car approaches from the other direction and drives on.",
+    ],
+)
+def test_what_starts_ahead_of_the_ego_before_a_junction_fits_on_the_ego_s_road(text, tmp_path):
+    """A road user placed ahead of the ego (by its timing or as oncoming traffic) stands on the ego's
+    road before the junction or roundabout: the ego starts far enough back for it to fit there,
+    instead of the spawn falling beyond the road's end and nothing being written."""
+    from vei_scenario.language.corpus_check import play_case
+
+    for seed in (0, 1, 2):
+        layers = layers_from_text(text, seed)
+        assert layers["environment"]["map"]["kind"] in ("crossroad", "roundabout")
+        assert play_case({"text": text}, layers_from_text, tmp_path, seed) == [], seed
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "The ego turns right at the crossroads while a cyclist rides along the kerb ahead of it.",
+        "The ego takes the second exit of a roundabout behind a cyclist riding along the kerb.",
+        "Turning left at a crossroad, the ego comes up behind a rider on an e-scooter going along the kerb.",
+    ],
+)
+def test_a_rider_along_the_ego_s_road_keeps_to_it_when_the_ego_turns_off(text, tmp_path):
+    """Going along the road is going along the ego's road: the rider keeps its lane and goes straight
+    on through the junction (not the junction's first link, a turn), and it is judged while the ego is
+    on that road too: once the ego turns off, the rider going on straight is not leaving the ego's
+    lane."""
+    for seed in (0, 1):
+        layers = layers_from_text(text, seed)
+        [adv] = layers["adversaries"]
+        assert adv["behaviour"]["behaviour"] == "along_road"
+        result = _play(layers, tmp_path)
+        assert played_problems(result, layers) == [], seed
+        if layers["environment"]["map"]["kind"] == "crossroad":  # (in a roundabout the run ends in its ring)
+            assert abs(_turned_rad(result.traces["Adversary1"])) < 0.2
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "On a twisty road at 90 km/h a fox darts across from the right in front of the ego.",
+        "The ego rounds a long bend at 70 km/h when a man steps out from the left verge and walks across.",
+        "Driving 75 km/h through a sweeping curve, the ego meets a boy running over the road from the left.",
+    ],
+)
+def test_a_crossing_on_a_curved_road_reaches_the_ego_s_path(text, tmp_path):
+    """On a curved road the crossing need not lie before the bend (as it must before a junction, where
+    the ego's road ends): a slow crosser facing a fast ego starts as far ahead as its timing needs,
+    on the bend if need be, and gets across the ego's path."""
+    for seed in (0, 1):
+        layers = layers_from_text(text, seed)
+        assert layers["environment"]["map"]["kind"] == "curve"
+        [adv] = layers["adversaries"]
+        assert adv["behaviour"]["behaviour"] == "cross_in_front"
+        assert played_problems(_play(layers, tmp_path), layers) == [], seed
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist waiting at the right kerb swerves into the ego's lane.",
+        "An e-scooter rider on the right kerb swerves into the ego's lane.",
+        "On a straight road at 50 km/h a cyclist on the right kerb swerves into the ego's lane.",
+    ],
+)
+def test_a_rider_at_the_kerb_swerving_into_the_road_ends_in_the_ego_s_lane(text, tmp_path):
+    """A rider at the kerb on the ego's side that swerves into the road starts on the kerb lane's
+    edge (beyond the kerb it is on no lane, and the scenario could not be played) and ends in the
+    ego's lane, ahead of it."""
+    from vei_scenario.language.corpus_check import _ego_frame
+
+    layers = layers_from_text(text, 0)
+    [adv] = layers["adversaries"]
+    assert adv["spawn"]["relation"] == "roadside_right"
+    assert adv["behaviour"]["behaviour"] in ("change_lane", "cut_in")
+    result = _play(layers, tmp_path)
+    assert played_problems(result, layers) == []
+    lon, lat = _ego_frame(result, "Adversary1")
+    assert lon[-1] > 0 and abs(lat[-1]) < 0.5
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Creeping along at 12 km/h, the ego is cut up dangerously by a cyclist from the lane on its left.",
+        "At 15 km/h in a queue, an e-scooter rider from the left lane cuts in right in front of the ego.",
+        "The ego edges forward at 10 km/h when a car in the left lane cuts in sharply right in front of it.",
+    ],
+)
+def test_a_slow_cut_in_ends_in_the_ego_s_lane(text, tmp_path):
+    """A cut-in brakes as it comes over, by ``brake_delta_mps``: from a crawl that would bring it to a
+    stand halfway across (a road user standing still moves sideways no further, turned across the
+    lane), so it keeps moving until it is in."""
+    for seed in (0, 1, 2):
+        layers = layers_from_text(text, seed)
+        [adv] = layers["adversaries"]
+        assert adv["behaviour"]["behaviour"] == "cut_in"
+        adv["behaviour"]["config"]["criticality"] = "dangerous"
+        assert played_problems(_play(layers, tmp_path), layers) == [], seed
