@@ -386,3 +386,144 @@ def on_the_footway(m) -> bool:
     if kerb == len(words) - 1 and m.next_ in ("side", "lane", "edge"):
         return False  # ("on the kerb side": which side)
     return m.prev in _ON_OR_OFF
+
+
+#: What a plain verb of motion ("goes", "moved", "heads") is read as before a destination is said.
+_PLAIN_MOVES = frozenset(("keep_going",))
+#: Words that lead where a move goes.
+_TO_A_LANE = frozenset(("to", "into", "onto"))
+#: Words that may stand between the verb and where it goes ("goes over to", "moved across from lane 1 into").
+_ON_THE_WAY = frozenset(("over", "across", "back", "out", "suddenly", "quickly", "slowly", "then", "straight"))
+#: Lanes that are no lane of the ego's direction: a move into them is no lane change.
+_NOT_OUR_WAY = frozenset(("opposite", "oncoming", "opposing", "wrong"))
+_DETERMINERS = frozenset(("the", "a", "an", "another", "its", "his", "her", "their"))
+_BEFORE_EGO = (("in", "front", "of"), ("ahead", "of"), ("just", "ahead", "of"), ("before",))
+_EGO_WORDS = frozenset(("me", "us", "ego"))
+
+
+def _lane_after(tokens: list[str], i: int) -> tuple[int, bool, str] | None:
+    """The lane said from ``tokens[i]`` ("the next lane", "another lane", "lane 2", "my lane"): where
+    it ends, whether it is the ego's own, and its number ("" if none), or None."""
+    j = i
+    own = False
+    if j < len(tokens) and tokens[j] in _DETERMINERS:
+        j += 1
+    for owner in _EGO_OWNERS:
+        if tuple(tokens[j : j + len(owner)]) == owner:
+            own, j = True, j + len(owner)
+            break
+    start = j
+    while j < len(tokens) and j - start < 3 and tokens[j] not in ("lane", "lanes") and tokens[j] not in _STOPS:
+        j += 1
+    if j >= len(tokens) or tokens[j] not in ("lane", "lanes") or set(tokens[start:j]) & _NOT_OUR_WAY:
+        return None
+    j += 1
+    number = tokens[j] if j < len(tokens) and tokens[j].isdigit() else ""
+    return j + bool(number), own, number
+
+
+def _ego_lanes(clauses: list) -> set[str]:
+    """The numbers of the lanes the ego is said to be in ("I was in lane 2", "Vehicle 1 ... in lane 2"):
+    a lane number said in a clause whose first road user is the ego, before any other."""
+    out = set()
+    for _, mentions in clauses:
+        first = next((m for m in mentions if m.slot in ("actor", "pronoun")), None)
+        if first is None or first.value != "ego":
+            continue
+        for m in mentions:
+            if m.slot in ("actor", "pronoun") and m.value != "ego":
+                break
+            words = m.words.split()
+            if m.slot == "lane_side" and len(words) == 2 and words[0] == "lane" and words[1].isdigit():
+                out.add(words[1])
+    return out
+
+
+def _before_the_ego(tokens: list[str], j: int) -> bool:
+    """Whether "in front of" / "ahead of" the ego follows ``tokens[j]`` (an adverb or two between)."""
+    while j < len(tokens) and tokens[j] in ("directly", "right", "just", "immediately", "straight"):
+        j += 1
+    for lead in _BEFORE_EGO:
+        n = len(lead)
+        if tuple(tokens[j : j + n]) == lead:
+            rest = tokens[j + n : j + n + 3]
+            return bool(rest) and (rest[0] in _EGO_WORDS or rest[:2] == ["the", "ego"])
+    return False
+
+
+def into_a_lane(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a plain verb of motion whose destination is a lane ("goes over to the next
+    lane", "moved from lane 1 into lane 2", "heads into another lane") read as the move it is: into
+    the ego's lane (its own words, the number of the lane the ego is said to be in, or "in front of"
+    the ego said right after) a cut-in, into any other lane of its way a lane change. The verb says
+    only that it moves; where to says which move, and so a behaviour said after it in the same chain
+    ("... and then brakes") is the second of two, not the only one. The lane's mention, used up, is
+    dropped ("the other lane" is no member of a group)."""
+    ego_lanes = _ego_lanes(clauses)
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        used: set[int] = set()
+        for k, m in enumerate(kept):
+            plain = m.slot == "ego_verb" or (m.slot == "behaviour" and m.value[0] in _PLAIN_MOVES)
+            if not plain or m.words.split()[0].endswith("ing"):
+                continue  # ("travelling in lane 2": where it goes along, not a move)
+            j = m.end
+            while j < len(tokens) and tokens[j] in _ON_THE_WAY:
+                j += 1
+            if j < len(tokens) and tokens[j] == "from":  # ("from lane 1 into lane 2": where it leaves)
+                left = _lane_after(tokens, j + 1)
+                if left is None:
+                    continue
+                j = left[0]
+            if j >= len(tokens) or tokens[j] not in _TO_A_LANE:
+                continue
+            lane = _lane_after(tokens, j + 1)
+            if lane is None:
+                continue
+            end, own, number = lane
+            ours = own or (number and number in ego_lanes) or _before_the_ego(tokens, end)
+            name = "cut_in" if ours else "change_lane"
+            kept[k] = replace(m, slot="behaviour", value=(name, {}))
+            used |= {x for x in range(k + 1, len(kept)) if kept[x].slot == "member" and kept[x].start < end}
+        out.append((link, [m for x, m in enumerate(kept) if x not in used]))
+    return out
+
+
+#: Mentions that may stand between a slowing and the stop it ends in ("slows, and stops", "eases off
+#: gently and pulls up").
+_BETWEEN_SLOWING_AND_STOP = frozenset(("conj", "punct", "criticality", "speed_word"))
+_STOPPING = frozenset(("stop", "sudden_stop"))
+
+
+def slowing_into_a_stop(clauses: list) -> list:
+    """``clauses`` without a slowing said just before the stop it ends in ("slows down and stops",
+    "decelerates and comes to a halt", "eases off and pulls up"): slowing is how a stop is made, not a
+    speed change of its own. A slowing to a stated speed ("slows to 30 km/h and then stops") is a
+    step of its own and stays."""
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        drop: set[int] = set()
+        for k, m in enumerate(kept):
+            slowing = m.slot == "behaviour" and m.value[0] == "change_speed"
+            if not (slowing and m.value[1].get("speed_delta_mps", 0) < 0):
+                continue
+            j = k + 1
+            while j < len(kept) and kept[j].slot in _BETWEEN_SLOWING_AND_STOP:
+                if kept[j].slot == "conj" and kept[j].words not in ("and", "then", "and then"):
+                    break
+                j += 1
+            nxt = kept[j] if j < len(kept) else None
+            if nxt is not None and (nxt.slot == "to_stop" or (nxt.slot == "behaviour" and nxt.value[0] in _STOPPING)):
+                drop.add(k)  # (how it slows is how it stops: "brakes gently and comes to a halt" is a gentle stop)
+                kept[j] = replace(nxt, words=f"{m.words} {nxt.words}")
+        out.append((link, [m for k, m in enumerate(kept) if k not in drop]))
+    return out
+
+
+def chains(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with what a chain of verbs says one road user does read move by move: a plain move
+    into a lane as the lane change or cut-in it is (:func:`into_a_lane`), a slowing into a stop as the
+    stop (:func:`slowing_into_a_stop`)."""
+    return slowing_into_a_stop(into_a_lane(clauses, tokens))

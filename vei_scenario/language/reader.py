@@ -36,6 +36,7 @@ from vei_scenario.language import vocabulary as V
 from vei_scenario.language.behaviours import BEHAVIOURS
 from vei_scenario.language.lemmas import lemmas as _lemmas
 from vei_scenario.language.motion import (
+    chains,
     destinations_not_origins,
     give_the_ego_the_way,
     head_on,
@@ -1050,6 +1051,7 @@ def read(text: str) -> Reading:
     tokens = _tokens(text)
     said = " ".join(tokens)  # (the whole text as the reader reads it, for what is stated of it as a whole)
     clauses = out_to_overtake(participle_of_state(give_the_ego_the_way(into_the_ego_lane(clauses, tokens), tokens)))
+    clauses = chains(clauses, tokens)
     clauses, ego_follows = _ego_following(clauses)
     r = Reading()
     actors: list[_Actor] = []
@@ -1820,6 +1822,7 @@ def _ego_reaction(mentions, k: int, a: _Actor, first_person: bool = False) -> bo
     if m.slot == "behaviour":
         verb = m.words.split()[0]
         said_alone = first_person and opening and (_past(verb) or not verb.endswith("s"))
+        said_alone = said_alone and m.prev not in ("then", "and")  # ("... into my lane and then braked": its)
         if said_alone and m.value[0] in _REACTIONS + _EVASIONS:
             return True  # "Slowed down, gave her loads of space.": a diary's sentence without its "I"
         if m.value[0] not in _REACTIONS:

@@ -1,0 +1,51 @@
+"""What a road user does, said as a chain of verbs (:mod:`vei_scenario.language.motion`): two
+behaviours in one clause chain stay two, in order; one behaviour said in two verbs stays one.
+Wordings written for each construction, none taken from a corpus."""
+
+from __future__ import annotations
+
+import pytest
+
+from vei_scenario.language.reader import read
+
+
+def _behaviours(text: str) -> list[str]:
+    (actor,) = read(text).actors
+    return [b[0] for b in actor.behaviours]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Ego at 90 km/h, dual carriageway. The lorry ahead goes over to the next lane and then speeds up to 100 km/h.",
+        "A van in front of us heads into the adjacent lane and accelerates hard.",
+        "Ego 70 km/h, two lanes. The coach ahead of me moves to another lane, then it speeds up.",
+    ],
+)
+def test_a_plain_move_into_another_lane_is_a_lane_change_then_what_follows(text):
+    assert _behaviours(text) == ["change_lane", "change_speed"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was in lane 2 at 50 mph. A pickup moved from lane 3 into lane 2 just ahead of me and then braked hard.",
+        "The ego is in lane 1 at 80 km/h; a taxi goes from lane 2 into lane 1 right in front of the ego and stops.",
+        "Ego at 60 km/h. A hatchback came over into my lane in front of me and slammed on its brakes.",
+    ],
+)
+def test_a_move_into_the_ego_lane_then_a_brake_is_a_cut_in_then_the_brake(text):
+    names = _behaviours(text)
+    assert names[0] == "cut_in" and names[-1] in ("sudden_stop", "stop") and len(names) == 2
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Ego at 40 km/h behind a bin lorry; the lorry slows down and stops at the kerb.",
+        "The taxi in front of me eases off and pulls up at the taxi rank. Ego 30 km/h.",
+        "A delivery van ahead decelerates and comes to a halt outside the shop; ego 25 mph.",
+    ],
+)
+def test_slowing_into_a_stop_is_the_stop(text):
+    assert _behaviours(text) == ["stop"]
