@@ -49,3 +49,32 @@ def test_a_move_into_the_ego_lane_then_a_brake_is_a_cut_in_then_the_brake(text):
 )
 def test_slowing_into_a_stop_is_the_stop(text):
     assert _behaviours(text) == ["stop"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Was driving at 30 mph past the shops when a lad ran out from the kerb on the left. Braked and he "
+        "made it over with room to spare.",
+        "Came along the high street at 20 mph; a woman stepped out from the right. Slowed right down and she got "
+        "to the other side fine.",
+        "Was doing 40 km/h through the village when an old chap walked out from the left. Eased off and he got "
+        "over safely.",
+    ],
+)
+def test_a_diary_without_its_i_keeps_the_narrator_reaction_and_one_crossing(text):
+    assert _behaviours(text) == ["cross_in_front"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Ego turning right out of a side road at 10 mph. A van coming from the left slows, stops and flashes "
+        "then waves me across.",
+        "I wait to pull out of the junction; a lorry from the right eases to a halt and beckons me out.",
+        "Ego at 20 km/h turns left at the crossroads; a cyclist on the right arm stops and allows the ego to "
+        "finish its turn.",
+    ],
+)
+def test_a_road_user_letting_the_ego_go_gives_way(text):
+    assert _behaviours(text) == ["give_way"]

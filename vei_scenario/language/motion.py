@@ -42,6 +42,7 @@ from __future__ import annotations
 import re
 from dataclasses import replace
 
+from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.reading import ActorSpec
 
 #: Behaviours that, said with running the red, are the manner of that run.
@@ -203,6 +204,49 @@ def give_the_ego_the_way(clauses: list, tokens: list[str]) -> list:
     return out
 
 
+#: Verbs (lemmas) of letting someone go: with the ego as their object, the road user gives way.
+_LET = frozenset(("let", "allow", "wave", "beckon"))
+#: Words after "lets/waves the ego": where or how it goes ("waves me out", "lets us through").
+#: (a verb after the ego, "lets the ego complete the turn", says it as well)
+_GO_WORDS = frozenset(("out", "through", "on", "in", "past", "across", "by", "first", "ahead", "over", "to"))
+
+
+def lets_the_ego_go(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a road user letting the ego go ("waves me out", "beckons us across", "lets the
+    ego complete the turn", "allows the ego to finish its turn") read as giving way: the ego as the
+    object of a verb of letting, then where it goes or what it does. Letting the ego do something is
+    what giving way to it is, however the verb is said."""
+    out = []
+    for link, mentions in clauses:
+        kept: list = []
+        skip_to = -1
+        for k, m in enumerate(mentions):
+            if m.start < skip_to:
+                continue
+            nxt = mentions[k + 1] if k + 1 < len(mentions) else None
+            verb = m.words.split()[0]
+            letting = m.slot in ("unknown_verb", "behaviour", "ego_verb") and bool(
+                set(lemmas(verb).get("VERB", ())) & _LET
+            )
+            if (
+                letting
+                and not verb.endswith("ing")
+                and nxt is not None
+                and nxt.slot == "actor"
+                and nxt.value == "ego"
+                and all(t in ("the", "a") for t in tokens[m.end : nxt.start])
+                and nxt.end < len(tokens)
+                and (tokens[nxt.end] in _GO_WORDS or "VERB" in lemmas(tokens[nxt.end]))
+            ):
+                end = nxt.end + 1 + (tokens[nxt.end] == "to")  # ("allows the ego to pass": through its verb)
+                kept.append(replace(m, slot="behaviour", value=("give_way", {}), end=end))
+                skip_to = end
+                continue
+            kept.append(m)
+        out.append((link, kept))
+    return out
+
+
 def _led_towards(m, before) -> bool:
     """Whether a side road or exit mention ``m`` is led by "into"/"onto" (a destination)."""
     if m.prev in _TOWARDS:
@@ -262,9 +306,27 @@ def compass_opposed(said: str) -> bool:
     return len(found) == 2 and _OPPOSITE[min(found)] == max(found)
 
 
+#: Moves across the road: after a walker's crossing, its getting over, across or to the other side.
+_ACROSS_THE_ROAD = frozenset(("cross_in_front", "cut_in", "change_lane"))
+
+
+def _one_crossing(behaviours: list) -> list:
+    """A walker's behaviours with the end of its crossing said again ("stepped off the kerb ... and
+    he got across", "made it over", "got to the other side") read as the one crossing: a walker has
+    no lane to change, so a move across after its crossing is that crossing."""
+    out: list = []
+    for b in behaviours:
+        if out and out[-1][0] == "cross_in_front" and b[0] in _ACROSS_THE_ROAD:
+            continue
+        out.append(b)
+    return out
+
+
 def one_path(spec: ActorSpec, said: str = "") -> list:
     """``spec``'s behaviours with the manner of its path dropped (see the module's rules); ``said`` is
     the description's normalised text, for what a road user's own clause cannot place."""
+    if spec.kind == "pedestrian":
+        spec.behaviours = _one_crossing(spec.behaviours)
     names = [b[0] for b in spec.behaviours]
     if names in (["along_road"], ["keep_going"]) and spec.lateral_m is None and compass_against(said):
         _, cfg, crit, link = spec.behaviours[0]
@@ -522,8 +584,29 @@ def slowing_into_a_stop(clauses: list) -> list:
     return out
 
 
+#: Words a verb of motion takes right after it ("came round", "pulled out", "drove along").
+_PARTICLES = frozenset(("round", "around", "out", "off", "up", "down", "into", "onto", "along", "through", "over",
+                        "past", "across", "back", "away", "in", "on", "at", "to", "from", "towards"))  # fmt: skip
+
+
+def diary(tokens: list[str]) -> bool:
+    """Whether the text opens as a driver's diary, its "I" left out: an auxiliary and a participle
+    ("Was doing 50 kph ...", "Were sitting at the lights ..."), or a verb in the past and the particle
+    or preposition it takes ("Came round a blind bend ...", "Pulled out of the junction ..."). A past
+    participle before a noun ("Parked cars on both sides") is no such verb. The story is then the
+    narrator's, as one told with "I" is."""
+    if len(tokens) < 2:
+        return False
+    first, second = tokens[0], tokens[1]
+    if first in ("was", "were"):
+        return second.endswith("ing")
+    verbs = lemmas(first).get("VERB", ())
+    past = bool(verbs) and first not in verbs and not first.endswith(("s", "ing"))
+    return past and second in _PARTICLES
+
+
 def chains(clauses: list, tokens: list[str]) -> list:
     """``clauses`` with what a chain of verbs says one road user does read move by move: a plain move
-    into a lane as the lane change or cut-in it is (:func:`into_a_lane`), a slowing into a stop as the
-    stop (:func:`slowing_into_a_stop`)."""
-    return slowing_into_a_stop(into_a_lane(clauses, tokens))
+    into a lane as the lane change or cut-in it is (:func:`into_a_lane`), letting the ego go as giving
+    way (:func:`lets_the_ego_go`), a slowing into a stop as the stop (:func:`slowing_into_a_stop`)."""
+    return slowing_into_a_stop(lets_the_ego_go(into_a_lane(clauses, tokens), tokens))
