@@ -78,3 +78,58 @@ def test_a_diary_without_its_i_keeps_the_narrator_reaction_and_one_crossing(text
 )
 def test_a_road_user_letting_the_ego_go_gives_way(text):
     assert _behaviours(text) == ["give_way"]
+
+
+#: Euro NCAP codes by their grammar: what each configuration is, whatever target it names.
+_CODES = [
+    ("CCRs", "car", "ahead", ["stop"], None),
+    ("CCRm", "car", "ahead", ["keep_going"], None),
+    ("CCRb", "car", "ahead", ["sudden_stop"], None),
+    ("CMRs", "car", "ahead", ["stop"], None),
+    ("CMRb", "car", "ahead", ["sudden_stop"], None),
+    ("CCFtap", "car", "junction_opposite", ["keep_going"], "left"),
+    ("CMFtap", "car", "junction_opposite", ["keep_going"], "left"),
+    ("CCCscp", "car", None, ["run_red_light"], None),
+    ("CMCscp", "car", None, ["run_red_light"], None),
+    ("CCFhos", "car", "oncoming", ["wrong_way"], None),
+    ("CCFhol", "car", "oncoming", ["wrong_way"], None),
+    ("CPNA-25", "pedestrian", "roadside_right", ["cross_in_front"], None),
+    ("CPNCO-50", "pedestrian", "roadside_right", ["cross_in_front"], None),
+    ("CPFA-50", "pedestrian", "roadside_left", ["cross_in_front"], None),
+    ("CPLA-25", "pedestrian", "ahead", ["along_road"], None),
+    ("CBNAO", "bicycle", "roadside_right", ["cross_in_front"], None),
+    ("CBFA-50", "bicycle", "roadside_left", ["cross_in_front"], None),
+    ("CBLA-50", "bicycle", "ahead", ["along_road"], None),
+    ("CSFA", "e-scooter", "roadside_left", ["cross_in_front"], None),
+    ("CSNA", "e-scooter", "roadside_right", ["cross_in_front"], None),
+    ("CSLA", "e-scooter", "ahead", ["along_road"], None),
+    ("CPTAfs-50", "pedestrian", "roadside_left", ["cross_in_front"], "left"),
+    ("CPTAfo", "pedestrian", "roadside_right", ["cross_in_front"], "left"),
+    ("CPTAns-50", "pedestrian", "roadside_right", ["cross_in_front"], "right"),
+    ("CPTAno", "pedestrian", "roadside_left", ["cross_in_front"], "right"),
+    ("CBTAns", "bicycle", "roadside_right", ["cross_in_front"], "right"),
+    ("CBTAfo", "bicycle", "roadside_right", ["cross_in_front"], "left"),
+]
+
+
+@pytest.mark.parametrize("form", ["{code} VUT 40 km/h, target 10 km/h", "{code}: VUT 40 km/h, target 10 km/h, dry"])
+@pytest.mark.parametrize(("code", "kind", "relation", "names", "route"), _CODES)
+def test_a_euro_ncap_code_reads_by_its_grammar(form, code, kind, relation, names, route):
+    r = read(form.format(code=code))
+    (actor,) = r.actors
+    assert (actor.kind, [b[0] for b in actor.behaviours]) == (kind, names)
+    assert relation is None or actor.relation == relation
+    assert r.ego_route == route and round(r.ego_speed_mps * 3.6) == 40
+
+
+@pytest.mark.parametrize(
+    ("text", "kind", "relation"),
+    [
+        ("CPFA: VUT 30 km/h, pedestrian target 8 km/h", "pedestrian", "roadside_left"),
+        ("CBNA (bike from the right): VUT 20 km/h, cyclist target 15 km/h, night", "bicycle", "roadside_right"),
+        ("CPFA-75 (a child this time): VUT 25 km/h, EPTc 5 km/h", "pedestrian", "roadside_left"),
+    ],
+)
+def test_a_code_labelling_a_list_of_speeds_still_says_its_configuration(text, kind, relation):
+    (actor,) = read(text).actors
+    assert (actor.kind, actor.relation, [b[0] for b in actor.behaviours]) == (kind, relation, ["cross_in_front"])
