@@ -133,3 +133,41 @@ def test_a_euro_ncap_code_reads_by_its_grammar(form, code, kind, relation, names
 def test_a_code_labelling_a_list_of_speeds_still_says_its_configuration(text, kind, relation):
     (actor,) = read(text).actors
     assert (actor.kind, actor.relation, [b[0] for b in actor.behaviours]) == (kind, relation, ["cross_in_front"])
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "An oncoming van drifted across the centre line and hit us head-on. Heavy snow kept falling all evening.",
+        "A car coming the other way crossed the center line and struck the ego head on. Rain had started falling.",
+        "Ego on a bend at 50 km/h; an oncoming pickup drifted over the centre line and hit us head-on while hail "
+        "was falling.",
+    ],
+)
+def test_what_the_weather_does_is_no_behaviour_of_a_road_user(text):
+    assert _behaviours(text) == ["wrong_way"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Ego at 40 km/h in the right lane; a cab in the lane to my left cuts across my lane to make a right.",
+        "I'm going straight at 25 mph when the SUV beside me on the right swerves across in front of me to hang a "
+        "left.",
+        "A box truck in the left lane swung over across my lane to take a right at the lights. Ego 30 mph.",
+    ],
+)
+def test_a_move_across_the_ego_lane_to_make_a_turn_is_the_turn(text):
+    assert _behaviours(text) == ["forced_turn"]
+
+
+@pytest.mark.parametrize(
+    ("text", "route"),
+    [
+        ("I make a left at the lights at 20 km/h; a cyclist rides straight on beside me.", "left"),
+        ("The ego takes a right at the crossroads at 15 mph while a pedestrian waits at the kerb.", "right"),
+        ("Ego hangs a left at the junction at 20 km/h; an oncoming van goes straight.", "left"),
+    ],
+)
+def test_making_a_left_or_a_right_is_turning_that_way(text, route):
+    assert read(text).ego_route == route

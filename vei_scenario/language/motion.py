@@ -605,8 +605,106 @@ def diary(tokens: list[str]) -> bool:
     return past and second in _PARTICLES
 
 
+def weather_not_behaviour(clauses: list) -> list:
+    """``clauses`` without a verb whose subject is the weather ("snow was falling", "rain had started
+    falling", "hail kept coming down"): what the weather does is the setting, no road user's behaviour.
+    The subject is the weather mention right before the verb, with only auxiliaries or verbs of aspect
+    ("was", "kept", "had started") between."""
+    out = []
+    for link, mentions in clauses:
+        kept = [
+            m
+            for k, m in enumerate(mentions)
+            if not (
+                m.slot == "behaviour"
+                and k > 0
+                and mentions[k - 1].slot in ("weather", "unknown_verb")
+                and _weather_word(mentions[k - 1])
+                and 0 <= m.start - mentions[k - 1].end <= 3
+            )
+        ]
+        out.append((link, kept))
+    return out
+
+
+#: Words of weather that fall or come down ("hail", which the reader may not know as a setting).
+_PRECIPITATION = frozenset(("rain", "snow", "sleet", "hail", "drizzle", "snowflakes", "raindrops"))
+
+
+def _weather_word(m) -> bool:
+    """Whether mention ``m`` names the weather (a setting the reader read, or a word of precipitation)."""
+    return m.slot == "weather" or m.words in _PRECIPITATION
+
+
+#: Verbs (lemmas) that with "a left" / "a right" say a turn ("make a right", "hang a left", "take a right").
+_TURN_VERBS = frozenset(("make", "take", "hang", "do", "pull", "swing", "chuck"))
+#: Words after "the left/right" that make it a place, not a turn ("takes the right lane").
+_NOT_A_TURN = frozenset(("lane", "lanes", "side", "kerb", "curb", "edge", "hand", "shoulder", "verge", "of"))
+
+
+def a_left_or_a_right(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with "make / take / hang a left (a right, a left turn)" read as turning that way,
+    as "turns left" is, whoever does it: the verb is light, the turn is its object."""
+    out = []
+    for link, mentions in clauses:
+        kept: list = []
+        skip = -1
+        for k, m in enumerate(mentions):
+            if k == skip:
+                continue
+            nxt = mentions[k + 1] if k + 1 < len(mentions) else None
+            verb = m.words.split()[0]
+            if (
+                m.slot in ("unknown_verb", "ego_verb", "behaviour")
+                and len(m.words.split()) == 1
+                and set(lemmas(verb).get("VERB", ())) & _TURN_VERBS
+                and nxt is not None
+                and nxt.slot == "side"
+                and nxt.value in ("left", "right")
+                and tokens[m.end : nxt.start] in (["a"], ["the"])
+                and (nxt.end >= len(tokens) or tokens[nxt.end] not in _NOT_A_TURN)
+            ):
+                words = f"{m.words} {' '.join(tokens[m.end : nxt.end])}"
+                kept.append(replace(m, slot="behaviour", value=("forced_turn", {"turn": nxt.value}), words=words,
+                                    end=nxt.end))  # fmt: skip
+                skip = k + 1
+                continue
+            kept.append(m)
+        out.append((link, kept))
+    return out
+
+
+#: Moves across lanes that a turn said as their purpose makes part of that turn.
+_LATERAL = frozenset(("cut_in", "change_lane", "cross_in_front"))
+
+
+def across_to_turn(clauses: list) -> list:
+    """``clauses`` without a move across lanes made to turn ("swings across my lane to make a right",
+    "cuts over in front of me to turn left"): the turn said as its purpose (after "to") is the
+    behaviour, the move across how it begins."""
+    out = []
+    for link, mentions in clauses:
+        drop: set[int] = set()
+        for k, m in enumerate(mentions):
+            if not (m.slot == "behaviour" and m.value[0] in _LATERAL):
+                continue
+            for x in mentions[k + 1 :]:
+                if x.slot in ("actor", "pronoun") and x.value != "ego" or x.slot == "link":
+                    break
+                turning = x.slot == "turn" or (x.slot == "behaviour" and x.value[0] == "forced_turn")
+                if turning and x.prev == "to":
+                    drop.add(k)
+                    break
+        out.append((link, [m for k, m in enumerate(mentions) if k not in drop]))
+    return out
+
+
 def chains(clauses: list, tokens: list[str]) -> list:
     """``clauses`` with what a chain of verbs says one road user does read move by move: a plain move
     into a lane as the lane change or cut-in it is (:func:`into_a_lane`), letting the ego go as giving
-    way (:func:`lets_the_ego_go`), a slowing into a stop as the stop (:func:`slowing_into_a_stop`)."""
+    way (:func:`lets_the_ego_go`), a slowing into a stop as the stop (:func:`slowing_into_a_stop`), and
+    what the weather does as no one's behaviour (:func:`weather_not_behaviour`), "makes a left" as
+    turning left (:func:`a_left_or_a_right`), a move across made to turn as the turn
+    (:func:`across_to_turn`)."""
+    clauses = across_to_turn(a_left_or_a_right(weather_not_behaviour(clauses), tokens))
     return slowing_into_a_stop(lets_the_ego_go(into_a_lane(clauses, tokens), tokens))

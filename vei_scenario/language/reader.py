@@ -501,9 +501,10 @@ _MOTION_BEFORE_SPEED = frozenset(
 )
 
 
-def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
-    """(clauses as (link, mentions), ignored words) of ``text``; a word that is only a verb and unknown
-    stays in its clause as an ``unknown_verb`` mention."""
+def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, list[str]]:
+    """(clauses as (link, mentions), ignored words, words read as others, the tokens the mentions
+    index) of ``text``; a word that is only a verb and unknown stays in its clause as an
+    ``unknown_verb`` mention."""
     tokens = _tokens(text, brackets=True)
     clauses: list[tuple[str, list[_Mention]]] = [("sequence", [])]
     read_as: list[tuple[str, str]] = [
@@ -754,7 +755,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
             clauses[-1][1].append(_Mention("toward", side, side, toward_at, tokens[toward_at - 1], end=toward_at + 1))
             used = max(used, toward_at + 1 - i)
         i += used
-    return [c for c in clauses if any(m.slot not in ("punct", "link") for m in c[1])], ignored, read_as
+    return [c for c in clauses if any(m.slot not in ("punct", "link") for m in c[1])], ignored, read_as, tokens
 
 
 #: Verbs that with "to" say what someone must do ("it has to brake": a requirement, said of the ego).
@@ -1046,13 +1047,13 @@ def _resolve_relation(a: _Actor, map_kind: str | None) -> str | None:
 def read(text: str) -> Reading:
     """Parse ``text`` into a :class:`~vei_scenario.language.reading.Reading` (with ``ignored``
     words); raise :class:`~vei_scenario.language.reading.NotUnderstood` naming what cannot be placed."""
-    clauses, ignored, read_as = scan(text)
+    clauses, ignored, read_as, scanned = scan(text)
     clauses = sides.relate_headings(clauses)
     clauses = out_of_a_side_road(destinations_not_origins(outcome_not_behaviour(_drop_label(clauses))))
     tokens = _tokens(text)
     said = " ".join(tokens)  # (the whole text as the reader reads it, for what is stated of it as a whole)
-    clauses = out_to_overtake(participle_of_state(give_the_ego_the_way(into_the_ego_lane(clauses, tokens), tokens)))
-    clauses = chains(clauses, tokens)
+    clauses = out_to_overtake(participle_of_state(give_the_ego_the_way(into_the_ego_lane(clauses, scanned), scanned)))
+    clauses = chains(clauses, scanned)
     clauses, ego_follows = _ego_following(clauses)
     r = Reading()
     actors: list[_Actor] = []
