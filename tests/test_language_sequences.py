@@ -171,3 +171,39 @@ def test_a_move_across_the_ego_lane_to_make_a_turn_is_the_turn(text):
 )
 def test_making_a_left_or_a_right_is_turning_that_way(text, route):
     assert read(text).ego_route == route
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was following a bus along the high road at 30 mph. The bus pulled out to get round a lorry parked in "
+        "the lane and I had to brake hard for the lorry.",
+        "Ego follows a taxi at 40 km/h. The taxi swerves out to pass a van parked in our lane, revealing it late.",
+        "Ego behind a pickup at 50 km/h; the pickup moves out to overtake a car parked in the road ahead.",
+    ],
+)
+def test_the_vehicle_ahead_moving_out_round_one_standing_in_the_lane_is_a_cut_out(text):
+    r = read(text)
+    names = {a.kind: [b[0] for b in a.behaviours] for a in r.actors}
+    movers = [a for a in r.actors if a.speed_mps != 0.0]
+    (mover,) = movers
+    assert [b[0] for b in mover.behaviours] == ["cut_out"] and mover.relation == "ahead", names
+    (standing,) = [a for a in r.actors if a is not mover]
+    assert standing.relation == "ahead"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "car in front of me change suddenly to other lane because there is stopped truck on road, i crash in it. "
+        "speed 60 kmh",
+        "the van ahead of me go quickly to other lane because there was broken lorry in lane, i hit the lorry. "
+        "me 50 km/h",
+        "Ego 80 km/h. Car in front swerves to the next lane since there is a broken-down bus in the lane.",
+    ],
+)
+def test_moving_out_because_something_stands_there_is_a_cut_out(text):
+    r = read(text)
+    kinds = [(a.kind, [b[0] for b in a.behaviours]) for a in r.actors]
+    assert len(r.actors) == 2, kinds
+    assert [b[0] for b in r.actors[0].behaviours] == ["cut_out"], kinds

@@ -327,6 +327,9 @@ def one_path(spec: ActorSpec, said: str = "") -> list:
     the description's normalised text, for what a road user's own clause cannot place."""
     if spec.kind == "pedestrian":
         spec.behaviours = _one_crossing(spec.behaviours)
+    if spec.obstacle is not None and spec.behaviours[:1] and spec.behaviours[0][0] == "cut_out":
+        # ("pulled out to pass a lorry parked in the lane": passing what it reveals is the cut-out)
+        spec.behaviours = spec.behaviours[:1] + [b for b in spec.behaviours[1:] if b[0] != "overtake"]
     names = [b[0] for b in spec.behaviours]
     if names in (["along_road"], ["keep_going"]) and spec.lateral_m is None and compass_against(said):
         _, cfg, crit, link = spec.behaviours[0]
@@ -452,6 +455,8 @@ def on_the_footway(m) -> bool:
 
 #: What a plain verb of motion ("goes", "moved", "heads") is read as before a destination is said.
 _PLAIN_MOVES = frozenset(("keep_going",))
+#: Verbs (lemmas) the reader may not know as a behaviour that, with a lane as where to, move into it.
+_MOVE_VERBS = frozenset(("change", "switch", "move", "go", "get", "swap", "shift"))
 #: Words that lead where a move goes.
 _TO_A_LANE = frozenset(("to", "into", "onto"))
 #: Words that may stand between the verb and where it goes ("goes over to", "moved across from lane 1 into").
@@ -528,6 +533,7 @@ def into_a_lane(clauses: list, tokens: list[str]) -> list:
         used: set[int] = set()
         for k, m in enumerate(kept):
             plain = m.slot == "ego_verb" or (m.slot == "behaviour" and m.value[0] in _PLAIN_MOVES)
+            plain = plain or (m.slot == "unknown_verb" and bool(set(lemmas(m.words).get("VERB", ())) & _MOVE_VERBS))
             if not plain or m.words.split()[0].endswith("ing"):
                 continue  # ("travelling in lane 2": where it goes along, not a move)
             j = m.end
@@ -699,12 +705,93 @@ def across_to_turn(clauses: list) -> list:
     return out
 
 
+#: Where a vehicle parked stands in the way, not at the side ("parked in the lane", "on the road").
+_IN_THE_WAY = frozenset(("lane", "road", "carriageway", "roadway", "street"))
+
+
+def parked_in_the_lane(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a vehicle said parked in the lane or on the road ("a lorry parked in the lane",
+    "a van parked in our lane") read as standing there, in the way, not parked at the kerb: where it
+    is parked says which."""
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k, m in enumerate(kept):
+            if m.slot != "stationary" or "park" not in m.words:
+                continue
+            after = tokens[m.end : m.end + 4]
+            if after[:1] in (["in"], ["on"]) and len(after) > 2 and after[1] in _DETERMINERS | {"my", "our"}:
+                if after[2] in _IN_THE_WAY and after[2:4] != ["road", "side"]:
+                    kept[k] = replace(m, words="standing")
+        out.append((link, kept))
+    return out
+
+
+#: Adjectives of a vehicle's state that say it stands only said of it, right before its noun ("a
+#: broken car"; not "the broken line", "a broken light").
+_STATE_BEFORE_NOUN = frozenset(("broken",))
+
+
+def state_before_its_noun(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` without a state adjective ("broken") not right before a road user's noun: said of
+    anything else it is no road user's state."""
+    out = []
+    for link, mentions in clauses:
+        kept = []
+        for k, m in enumerate(mentions):
+            nxt = mentions[k + 1] if k + 1 < len(mentions) else None
+            noun = nxt is not None and nxt.slot == "actor" and set(tokens[m.end : nxt.start]) <= _DETERMINERS
+            if m.slot == "stationary" and m.words in _STATE_BEFORE_NOUN and not noun:
+                continue
+            kept.append(m)
+        out.append((link, kept))
+    return out
+
+
+#: "There is / are / was / were": what follows is said to be there, for the first time.
+_EXISTENTIAL = frozenset(("is", "are", "was", "were", "'s"))
+
+
+def there_is_a_new_one(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with the road user after "there is / was" ("because there is broken car stop on
+    road") read as a new one, with or without its article: an existential sentence introduces what it
+    names. (A bare noun otherwise names one already met, as terse writing drops articles.) A
+    stationary adjective before it ("broken", "stopped") stays its own."""
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        drop: set[int] = set()
+        for k, m in enumerate(kept):
+            if m.slot != "actor" or m.value == "ego" or m.det not in ("", "the"):
+                continue
+            i = m.start - 1
+            while i >= 0 and (
+                tokens[i] in _DETERMINERS or any(x.slot == "stationary" and x.start <= i < x.end for x in kept[:k])
+            ):
+                i -= 1  # (past "broken", "stopped": the vehicle's state; "there is the ..." is no known one)
+            if not (i >= 1 and tokens[i] in _EXISTENTIAL and tokens[i - 1] == "there"):
+                continue
+            kept[k] = replace(m, det="a")
+            for j in range(k - 1, -1, -1):
+                x = kept[j]
+                if x.start < i:
+                    break
+                if x.slot == "stationary":  # (its state, said of it: up to its noun)
+                    kept[j] = replace(x, end=m.start, next_=tokens[m.start])
+                elif x.start == i and x.slot in ("ego_verb", "unknown_verb"):
+                    drop.add(j)  # ("there is": no verb of anyone's; what is there is the subject of what follows)
+        out.append((link, [m for j, m in enumerate(kept) if j not in drop]))
+    return out
+
+
 def chains(clauses: list, tokens: list[str]) -> list:
     """``clauses`` with what a chain of verbs says one road user does read move by move: a plain move
     into a lane as the lane change or cut-in it is (:func:`into_a_lane`), letting the ego go as giving
     way (:func:`lets_the_ego_go`), a slowing into a stop as the stop (:func:`slowing_into_a_stop`), and
     what the weather does as no one's behaviour (:func:`weather_not_behaviour`), "makes a left" as
     turning left (:func:`a_left_or_a_right`), a move across made to turn as the turn
-    (:func:`across_to_turn`)."""
+    (:func:`across_to_turn`); and who stands in the way, for a cut-out (:func:`parked_in_the_lane`,
+    :func:`there_is_a_new_one`)."""
     clauses = across_to_turn(a_left_or_a_right(weather_not_behaviour(clauses), tokens))
+    clauses = there_is_a_new_one(parked_in_the_lane(state_before_its_noun(clauses, tokens), tokens), tokens)
     return slowing_into_a_stop(lets_the_ego_go(into_a_lane(clauses, tokens), tokens))

@@ -2026,7 +2026,8 @@ def _cut_outs(specs: list[ActorSpec]) -> None:
         if not standing or not s.behaviours or s.kind not in VEHICLES or k in standing:
             continue
         name, cfg, crit, link = s.behaviours[0]
-        swerves = name in ("cut_out", "change_lane") or (name == "cut_in" and s.relation in (None, "ahead"))
+        passes = name in ("cut_in", "overtake") and s.relation in (None, "ahead")  # ("pulls out to pass a parked van")
+        swerves = name in ("cut_out", "change_lane") or passes
         if swerves and s.relation in (None, "ahead", "behind"):
             direction = {key: v for key, v in cfg.items() if key == "direction"}
             s.behaviours = [("cut_out", direction, crit, link)] + s.behaviours[1:]
