@@ -207,3 +207,29 @@ def test_moving_out_because_something_stands_there_is_a_cut_out(text):
     kinds = [(a.kind, [b[0] for b in a.behaviours]) for a in r.actors]
     assert len(r.actors) == 2, kinds
     assert [b[0] for b in r.actors[0].behaviours] == ["cut_out"], kinds
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was in lane one at 50 mph. A van moved over into lane one, right ahead of me, leaving no room to stop.",
+        "Ego in lane two at 70 km/h; a coupe came across into lane two just in front of the ego with too little "
+        "space to brake.",
+        "We were in lane one doing 40 mph when a lorry switched into lane one without signalling, directly ahead "
+        "of us.",
+    ],
+)
+def test_a_move_into_the_ego_lane_said_in_words_is_a_cut_in_and_room_to_stop_is_no_stop(text):
+    assert _behaviours(text) == ["cut_in"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "The van ahead of me was dawdling, then suddenly accelerated hard. I kept to 40 mph.",
+        "I was behind a tractor at 20 mph and it crept along, then abruptly sped up to 40 mph.",
+        "the lorry in front of me was crawling along then suddenly sped up to about 70 mph. i stayed at 40 mph.",
+    ],
+)
+def test_a_verb_after_then_in_a_first_person_story_keeps_its_subject(text):
+    assert _behaviours(text) == ["change_speed"]

@@ -485,29 +485,36 @@ def _lane_after(tokens: list[str], i: int) -> tuple[int, bool, str] | None:
     if j >= len(tokens) or tokens[j] not in ("lane", "lanes") or set(tokens[start:j]) & _NOT_OUR_WAY:
         return None
     j += 1
-    number = tokens[j] if j < len(tokens) and tokens[j].isdigit() else ""
+    number = _lane_number(tokens[j]) if j < len(tokens) else ""
     return j + bool(number), own, number
 
 
-def _ego_lanes(clauses: list) -> set[str]:
-    """The numbers of the lanes the ego is said to be in ("I was in lane 2", "Vehicle 1 ... in lane 2"):
-    a lane number said in a clause whose first road user is the ego, before any other."""
+_NUMBER_WORDS = {"one": "1", "two": "2", "three": "3", "four": "4", "five": "5"}
+
+
+def _lane_number(token: str) -> str:
+    """The lane number ``token`` says ("2", "two"), or ""."""
+    return token if token.isdigit() else _NUMBER_WORDS.get(token, "")
+
+
+def _ego_lanes(clauses: list, tokens: list[str]) -> set[str]:
+    """The numbers of the lanes the ego is said to be in ("I was in lane 2", "Vehicle 1 ... in lane
+    two"): "in lane N" said in a clause whose first road user is the ego, before any other."""
     out = set()
     for _, mentions in clauses:
         first = next((m for m in mentions if m.slot in ("actor", "pronoun")), None)
         if first is None or first.value != "ego":
             continue
-        for m in mentions:
-            if m.slot in ("actor", "pronoun") and m.value != "ego":
-                break
-            words = m.words.split()
-            if m.slot == "lane_side" and len(words) == 2 and words[0] == "lane" and words[1].isdigit():
-                out.add(words[1])
+        other = next((m.start for m in mentions if m.slot in ("actor", "pronoun") and m.value != "ego"), len(tokens))
+        for i in range(first.end, min(other, len(tokens)) - 1):
+            if tokens[i] == "in" and tokens[i + 1] == "lane" and i + 2 < len(tokens) and _lane_number(tokens[i + 2]):
+                out.add(_lane_number(tokens[i + 2]))
     return out
 
 
 def _before_the_ego(tokens: list[str], j: int) -> bool:
-    """Whether "in front of" / "ahead of" the ego follows ``tokens[j]`` (an adverb or two between)."""
+    """Whether "in front of" / "ahead of" the ego follows ``tokens[j]`` (an adverb or two between;
+    not "well ahead of me", which is where, not the ego's lane)."""
     while j < len(tokens) and tokens[j] in ("directly", "right", "just", "immediately", "straight"):
         j += 1
     for lead in _BEFORE_EGO:
@@ -526,7 +533,7 @@ def into_a_lane(clauses: list, tokens: list[str]) -> list:
     only that it moves; where to says which move, and so a behaviour said after it in the same chain
     ("... and then brakes") is the second of two, not the only one. The lane's mention, used up, is
     dropped ("the other lane" is no member of a group)."""
-    ego_lanes = _ego_lanes(clauses)
+    ego_lanes = _ego_lanes(clauses, tokens)
     out = []
     for link, mentions in clauses:
         kept = list(mentions)
@@ -534,7 +541,8 @@ def into_a_lane(clauses: list, tokens: list[str]) -> list:
         for k, m in enumerate(kept):
             plain = m.slot == "ego_verb" or (m.slot == "behaviour" and m.value[0] in _PLAIN_MOVES)
             plain = plain or (m.slot == "unknown_verb" and bool(set(lemmas(m.words).get("VERB", ())) & _MOVE_VERBS))
-            if not plain or m.words.split()[0].endswith("ing"):
+            across = m.slot == "behaviour" and m.value[0] in ("cross_in_front", "change_lane")  # (into ours: a cut-in)
+            if not (plain or across) or m.words.split()[0].endswith("ing"):
                 continue  # ("travelling in lane 2": where it goes along, not a move)
             j = m.end
             while j < len(tokens) and tokens[j] in _ON_THE_WAY:
@@ -544,13 +552,17 @@ def into_a_lane(clauses: list, tokens: list[str]) -> list:
                 if left is None:
                     continue
                 j = left[0]
-            if j >= len(tokens) or tokens[j] not in _TO_A_LANE:
+            if m.words.split()[-1] in _TO_A_LANE:  # ("moved over into": the verb's phrase holds it)
+                j -= 1
+            elif j >= len(tokens) or tokens[j] not in _TO_A_LANE:
                 continue
             lane = _lane_after(tokens, j + 1)
             if lane is None:
                 continue
             end, own, number = lane
             ours = own or (number and number in ego_lanes) or _before_the_ego(tokens, end)
+            if across and not (ours and (not own or m.value[0] == "cross_in_front")):
+                continue  # (a lane change "into my lane" is :func:`into_the_ego_lane`'s to read)
             name = "cut_in" if ours else "change_lane"
             kept[k] = replace(m, slot="behaviour", value=(name, {}))
             used |= {x for x in range(k + 1, len(kept)) if kept[x].slot == "member" and kept[x].start < end}
@@ -784,6 +796,29 @@ def there_is_a_new_one(clauses: list, tokens: list[str]) -> list:
     return out
 
 
+#: Words of quantity before a noun whose "to" + verb says what there is room for ("no room to stop").
+_QUANTITY = frozenset(("no", "enough", "insufficient", "sufficient", "little", "any", "more", "less", "much",
+                       "some", "the", "a", "plenty", "not"))  # fmt: skip
+
+
+def room_to_act_not_behaviour(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` without a verb said as what a quantity of something allows ("leaving no room to
+    stop", "with too little space to brake", "not enough time to swerve"): the infinitive completes
+    the noun; nobody does it."""
+    out = []
+    for link, mentions in clauses:
+        kept = []
+        for m in mentions:
+            i = m.start
+            if m.slot == "behaviour" and i >= 3 and tokens[i - 1] == "to" and tokens[i - 3] in _QUANTITY:
+                named = any(x.start <= i - 2 < max(x.end, x.start + 1) and x.slot != "unknown_verb" for x in mentions)
+                if "NOUN" in lemmas(tokens[i - 2]) and not named:  # (not "tells the van to stop": a road user)
+                    continue
+            kept.append(m)
+        out.append((link, kept))
+    return out
+
+
 def chains(clauses: list, tokens: list[str]) -> list:
     """``clauses`` with what a chain of verbs says one road user does read move by move: a plain move
     into a lane as the lane change or cut-in it is (:func:`into_a_lane`), letting the ego go as giving
@@ -791,7 +826,8 @@ def chains(clauses: list, tokens: list[str]) -> list:
     what the weather does as no one's behaviour (:func:`weather_not_behaviour`), "makes a left" as
     turning left (:func:`a_left_or_a_right`), a move across made to turn as the turn
     (:func:`across_to_turn`); and who stands in the way, for a cut-out (:func:`parked_in_the_lane`,
-    :func:`there_is_a_new_one`)."""
-    clauses = across_to_turn(a_left_or_a_right(weather_not_behaviour(clauses), tokens))
+    :func:`there_is_a_new_one`); "no room to stop" as nobody's stop (:func:`room_to_act_not_behaviour`)."""
+    clauses = weather_not_behaviour(room_to_act_not_behaviour(clauses, tokens))
+    clauses = across_to_turn(a_left_or_a_right(clauses, tokens))
     clauses = there_is_a_new_one(parked_in_the_lane(state_before_its_noun(clauses, tokens), tokens), tokens)
     return slowing_into_a_stop(lets_the_ego_go(into_a_lane(clauses, tokens), tokens))

@@ -1824,7 +1824,8 @@ def _ego_reaction(mentions, k: int, a: _Actor, first_person: bool = False) -> bo
     if m.slot == "behaviour":
         verb = m.words.split()[0]
         said_alone = first_person and opening and (_past(verb) or not verb.endswith("s"))
-        said_alone = said_alone and m.prev not in ("then", "and")  # ("... into my lane and then braked": its)
+        joined = any(x.slot in ("link", "conj") and x.words.split()[-1] in ("then", "and") for x in mentions[:k])
+        said_alone = said_alone and not joined  # ("... into my lane and then braked": its)
         if said_alone and m.value[0] in _REACTIONS + _EVASIONS:
             return True  # "Slowed down, gave her loads of space.": a diary's sentence without its "I"
         if m.value[0] not in _REACTIONS:
