@@ -46,9 +46,9 @@ INDEPENDENT = {
     ROOT / "tests" / "data" / "language_independent_b.json": (63, 57),
     ROOT / "tests" / "data" / "language_independent_c.json": (65, 55),
     ROOT / "tests" / "data" / "language_independent_d.json": (56, 34),
-    ROOT / "tests" / "data" / "language_independent_e.json": (70, 58),
-    ROOT / "tests" / "data" / "language_independent_f.json": (60, 52),
-    ROOT / "tests" / "data" / "language_independent_g.json": (60, 29),
+    ROOT / "tests" / "data" / "language_independent_e.json": (70, 59),
+    ROOT / "tests" / "data" / "language_independent_f.json": (60, 53),
+    ROOT / "tests" / "data" / "language_independent_g.json": (60, 38),
 }
 
 
