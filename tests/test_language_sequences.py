@@ -233,3 +233,16 @@ def test_a_move_into_the_ego_lane_said_in_words_is_a_cut_in_and_room_to_stop_is_
 )
 def test_a_verb_after_then_in_a_first_person_story_keeps_its_subject(text):
     assert _behaviours(text) == ["change_speed"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Ego turns left at 15 km/h; a walker at the corner waits on the kerb and lets the ego finish turning.",
+        "At the T-junction ego goes right at 20 km/h; a cyclist on the side road holds back and lets us complete "
+        "the manoeuvre.",
+        "I turn right at 10 mph and a lady with a pram stops at the edge and lets me make the turn.",
+    ],
+)
+def test_letting_the_ego_complete_what_it_does_is_a_safe_outcome(text):
+    assert read(text).intent == "safe"
