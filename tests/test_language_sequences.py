@@ -74,6 +74,8 @@ def test_a_diary_without_its_i_keeps_the_narrator_reaction_and_one_crossing(text
         "I wait to pull out of the junction; a lorry from the right eases to a halt and beckons me out.",
         "Ego at 20 km/h turns left at the crossroads; a cyclist on the right arm stops and allows the ego to "
         "finish its turn.",
+        "Ego 30 km/h on the main road. From the side street on the left a moped pulls up short of the line, "
+        "letting the ego go by.",
     ],
 )
 def test_a_road_user_letting_the_ego_go_gives_way(text):

@@ -211,6 +211,17 @@ _LET = frozenset(("let", "allow", "wave", "beckon"))
 _GO_WORDS = frozenset(("out", "through", "on", "in", "past", "across", "by", "first", "ahead", "over", "to"))
 
 
+def _let_before(tokens: list[str], i: int, before) -> int:
+    """Where a verb of letting stands right before the ego at ``tokens[i]`` ("letting the ego", "lets
+    me"), when no mention holds it (``before``: the mention before the ego), else 0."""
+    j = i - 1
+    while j > 0 and tokens[j] in ("the", "a"):
+        j -= 1
+    if j <= 0 or (before is not None and before.end > j):
+        return 0
+    return j if set(lemmas(tokens[j]).get("VERB", ())) & _LET else 0
+
+
 def lets_the_ego_go(clauses: list, tokens: list[str]) -> list:
     """``clauses`` with a road user letting the ego go ("waves me out", "beckons us across", "lets the
     ego complete the turn", "allows the ego to finish its turn") read as giving way: the ego as the
@@ -228,18 +239,23 @@ def lets_the_ego_go(clauses: list, tokens: list[str]) -> list:
             letting = m.slot in ("unknown_verb", "behaviour", "ego_verb") and bool(
                 set(lemmas(verb).get("VERB", ())) & _LET
             )
+            after = nxt.end if nxt is not None else len(tokens)
+            said = m
+            if m.slot == "actor" and m.value == "ego" and _let_before(tokens, m.start, mentions[k - 1] if k else None):
+                nxt, after = m, m.end  # ("..., letting the ego go by": a participle the reader reads past)
+                said = replace(m, words=" ".join(tokens[_let_before(tokens, m.start, None) : m.end]))
+                letting = True
             if (
                 letting
-                and not verb.endswith("ing")
                 and nxt is not None
                 and nxt.slot == "actor"
                 and nxt.value == "ego"
                 and all(t in ("the", "a") for t in tokens[m.end : nxt.start])
-                and nxt.end < len(tokens)
-                and (tokens[nxt.end] in _GO_WORDS or "VERB" in lemmas(tokens[nxt.end]))
+                and after < len(tokens)
+                and (tokens[after] in _GO_WORDS or "VERB" in lemmas(tokens[after]))
             ):
-                end = nxt.end + 1 + (tokens[nxt.end] == "to")  # ("allows the ego to pass": through its verb)
-                kept.append(replace(m, slot="behaviour", value=("give_way", {}), end=end))
+                end = after + 1 + (tokens[after] == "to")  # ("allows the ego to pass": through its verb)
+                kept.append(replace(said, slot="behaviour", value=("give_way", {}), end=end))
                 skip_to = end
                 continue
             kept.append(m)
