@@ -829,6 +829,7 @@ STATIONARY = (
     "stopped",
     "standing",
     "broken-down",
+    "broken",
     "double-parked",
     "double parked",
     "broken down",

@@ -42,6 +42,7 @@ from __future__ import annotations
 import re
 from dataclasses import replace
 
+from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.reading import ActorSpec
 
 #: Behaviours that, said with running the red, are the manner of that run.
@@ -203,6 +204,65 @@ def give_the_ego_the_way(clauses: list, tokens: list[str]) -> list:
     return out
 
 
+#: Verbs (lemmas) of letting someone go: with the ego as their object, the road user gives way.
+_LET = frozenset(("let", "allow", "wave", "beckon"))
+#: Words after "lets/waves the ego": where or how it goes ("waves me out", "lets us through").
+#: (a verb after the ego, "lets the ego complete the turn", says it as well)
+_GO_WORDS = frozenset(("out", "through", "on", "in", "past", "across", "by", "first", "ahead", "over", "to"))
+
+
+def _let_before(tokens: list[str], i: int, before) -> int:
+    """Where a verb of letting stands right before the ego at ``tokens[i]`` ("letting the ego", "lets
+    me"), when no mention holds it (``before``: the mention before the ego), else 0."""
+    j = i - 1
+    while j > 0 and tokens[j] in ("the", "a"):
+        j -= 1
+    if j <= 0 or (before is not None and before.end > j):
+        return 0
+    return j if set(lemmas(tokens[j]).get("VERB", ())) & _LET else 0
+
+
+def lets_the_ego_go(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a road user letting the ego go ("waves me out", "beckons us across", "lets the
+    ego complete the turn", "allows the ego to finish its turn") read as giving way: the ego as the
+    object of a verb of letting, then where it goes or what it does. Letting the ego do something is
+    what giving way to it is, however the verb is said."""
+    out = []
+    for link, mentions in clauses:
+        kept: list = []
+        skip_to = -1
+        for k, m in enumerate(mentions):
+            if m.start < skip_to:
+                continue
+            nxt = mentions[k + 1] if k + 1 < len(mentions) else None
+            verb = m.words.split()[0]
+            letting = m.slot in ("unknown_verb", "behaviour", "ego_verb") and bool(
+                set(lemmas(verb).get("VERB", ())) & _LET
+            )
+            after = nxt.end if nxt is not None else len(tokens)
+            said = m
+            if m.slot == "actor" and m.value == "ego" and _let_before(tokens, m.start, mentions[k - 1] if k else None):
+                nxt, after = m, m.end  # ("..., letting the ego go by": a participle the reader reads past)
+                said = replace(m, words=" ".join(tokens[_let_before(tokens, m.start, None) : m.end]))
+                letting = True
+            if (
+                letting
+                and nxt is not None
+                and nxt.slot == "actor"
+                and nxt.value == "ego"
+                and all(t in ("the", "a") for t in tokens[m.end : nxt.start])
+                and after < len(tokens)
+                and (tokens[after] in _GO_WORDS or "VERB" in lemmas(tokens[after]))
+            ):
+                end = after + 1 + (tokens[after] == "to")  # ("allows the ego to pass": through its verb)
+                kept.append(replace(said, slot="behaviour", value=("give_way", {}), end=end))
+                skip_to = end
+                continue
+            kept.append(m)
+        out.append((link, kept))
+    return out
+
+
 def _led_towards(m, before) -> bool:
     """Whether a side road or exit mention ``m`` is led by "into"/"onto" (a destination)."""
     if m.prev in _TOWARDS:
@@ -262,9 +322,30 @@ def compass_opposed(said: str) -> bool:
     return len(found) == 2 and _OPPOSITE[min(found)] == max(found)
 
 
+#: Moves across the road: after a walker's crossing, its getting over, across or to the other side.
+_ACROSS_THE_ROAD = frozenset(("cross_in_front", "cut_in", "change_lane"))
+
+
+def _one_crossing(behaviours: list) -> list:
+    """A walker's behaviours with the end of its crossing said again ("stepped off the kerb ... and
+    he got across", "made it over", "got to the other side") read as the one crossing: a walker has
+    no lane to change, so a move across after its crossing is that crossing."""
+    out: list = []
+    for b in behaviours:
+        if out and out[-1][0] == "cross_in_front" and b[0] in _ACROSS_THE_ROAD:
+            continue
+        out.append(b)
+    return out
+
+
 def one_path(spec: ActorSpec, said: str = "") -> list:
     """``spec``'s behaviours with the manner of its path dropped (see the module's rules); ``said`` is
     the description's normalised text, for what a road user's own clause cannot place."""
+    if spec.kind == "pedestrian":
+        spec.behaviours = _one_crossing(spec.behaviours)
+    if spec.obstacle is not None and spec.behaviours[:1] and spec.behaviours[0][0] == "cut_out":
+        # ("pulled out to pass a lorry parked in the lane": passing what it reveals is the cut-out)
+        spec.behaviours = spec.behaviours[:1] + [b for b in spec.behaviours[1:] if b[0] != "overtake"]
     names = [b[0] for b in spec.behaviours]
     if names in (["along_road"], ["keep_going"]) and spec.lateral_m is None and compass_against(said):
         _, cfg, crit, link = spec.behaviours[0]
@@ -386,3 +467,383 @@ def on_the_footway(m) -> bool:
     if kerb == len(words) - 1 and m.next_ in ("side", "lane", "edge"):
         return False  # ("on the kerb side": which side)
     return m.prev in _ON_OR_OFF
+
+
+#: What a plain verb of motion ("goes", "moved", "heads") is read as before a destination is said.
+_PLAIN_MOVES = frozenset(("keep_going",))
+#: Verbs (lemmas) the reader may not know as a behaviour that, with a lane as where to, move into it.
+_MOVE_VERBS = frozenset(("change", "switch", "move", "go", "get", "swap", "shift"))
+#: Words that lead where a move goes.
+_TO_A_LANE = frozenset(("to", "into", "onto"))
+#: Words that may stand between the verb and where it goes ("goes over to", "moved across from lane 1 into").
+_ON_THE_WAY = frozenset(("over", "across", "back", "out", "suddenly", "quickly", "slowly", "then", "straight"))
+#: Lanes that are no lane of the ego's direction: a move into them is no lane change.
+_NOT_OUR_WAY = frozenset(("opposite", "oncoming", "opposing", "wrong"))
+_DETERMINERS = frozenset(("the", "a", "an", "another", "its", "his", "her", "their"))
+_BEFORE_EGO = (("in", "front", "of"), ("ahead", "of"), ("just", "ahead", "of"), ("before",))
+_EGO_WORDS = frozenset(("me", "us", "ego"))
+
+
+def _lane_after(tokens: list[str], i: int) -> tuple[int, bool, str] | None:
+    """The lane said from ``tokens[i]`` ("the next lane", "another lane", "lane 2", "my lane"): where
+    it ends, whether it is the ego's own, and its number ("" if none), or None."""
+    j = i
+    own = False
+    if j < len(tokens) and tokens[j] in _DETERMINERS:
+        j += 1
+    for owner in _EGO_OWNERS:
+        if tuple(tokens[j : j + len(owner)]) == owner:
+            own, j = True, j + len(owner)
+            break
+    start = j
+    while j < len(tokens) and j - start < 3 and tokens[j] not in ("lane", "lanes") and tokens[j] not in _STOPS:
+        j += 1
+    if j >= len(tokens) or tokens[j] not in ("lane", "lanes") or set(tokens[start:j]) & _NOT_OUR_WAY:
+        return None
+    j += 1
+    number = _lane_number(tokens[j]) if j < len(tokens) else ""
+    return j + bool(number), own, number
+
+
+_NUMBER_WORDS = {"one": "1", "two": "2", "three": "3", "four": "4", "five": "5"}
+
+
+def _lane_number(token: str) -> str:
+    """The lane number ``token`` says ("2", "two"), or ""."""
+    return token if token.isdigit() else _NUMBER_WORDS.get(token, "")
+
+
+def _ego_lanes(clauses: list, tokens: list[str]) -> set[str]:
+    """The numbers of the lanes the ego is said to be in ("I was in lane 2", "Vehicle 1 ... in lane
+    two"): "in lane N" said in a clause whose first road user is the ego, before any other."""
+    out = set()
+    for _, mentions in clauses:
+        first = next((m for m in mentions if m.slot in ("actor", "pronoun")), None)
+        if first is None or first.value != "ego":
+            continue
+        other = next((m.start for m in mentions if m.slot in ("actor", "pronoun") and m.value != "ego"), len(tokens))
+        for i in range(first.end, min(other, len(tokens)) - 1):
+            if tokens[i] == "in" and tokens[i + 1] == "lane" and i + 2 < len(tokens) and _lane_number(tokens[i + 2]):
+                out.add(_lane_number(tokens[i + 2]))
+    return out
+
+
+def _before_the_ego(tokens: list[str], j: int) -> bool:
+    """Whether "in front of" / "ahead of" the ego follows ``tokens[j]`` (an adverb or two between;
+    not "well ahead of me", which is where, not the ego's lane)."""
+    while j < len(tokens) and tokens[j] in ("directly", "right", "just", "immediately", "straight"):
+        j += 1
+    for lead in _BEFORE_EGO:
+        n = len(lead)
+        if tuple(tokens[j : j + n]) == lead:
+            rest = tokens[j + n : j + n + 3]
+            return bool(rest) and (rest[0] in _EGO_WORDS or rest[:2] == ["the", "ego"])
+    return False
+
+
+def into_a_lane(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a plain verb of motion whose destination is a lane ("goes over to the next
+    lane", "moved from lane 1 into lane 2", "heads into another lane") read as the move it is: into
+    the ego's lane (its own words, the number of the lane the ego is said to be in, or "in front of"
+    the ego said right after) a cut-in, into any other lane of its way a lane change. The verb says
+    only that it moves; where to says which move, and so a behaviour said after it in the same chain
+    ("... and then brakes") is the second of two, not the only one. The lane's mention, used up, is
+    dropped ("the other lane" is no member of a group)."""
+    ego_lanes = _ego_lanes(clauses, tokens)
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        used: set[int] = set()
+        for k, m in enumerate(kept):
+            plain = m.slot == "ego_verb" or (m.slot == "behaviour" and m.value[0] in _PLAIN_MOVES)
+            plain = plain or (m.slot == "unknown_verb" and bool(set(lemmas(m.words).get("VERB", ())) & _MOVE_VERBS))
+            across = m.slot == "behaviour" and m.value[0] in ("cross_in_front", "change_lane")  # (into ours: a cut-in)
+            if not (plain or across) or m.words.split()[0].endswith("ing"):
+                continue  # ("travelling in lane 2": where it goes along, not a move)
+            j = m.end
+            while j < len(tokens) and tokens[j] in _ON_THE_WAY:
+                j += 1
+            if j < len(tokens) and tokens[j] == "from":  # ("from lane 1 into lane 2": where it leaves)
+                left = _lane_after(tokens, j + 1)
+                if left is None:
+                    continue
+                j = left[0]
+            if m.words.split()[-1] in _TO_A_LANE:  # ("moved over into": the verb's phrase holds it)
+                j -= 1
+            elif j >= len(tokens) or tokens[j] not in _TO_A_LANE:
+                continue
+            lane = _lane_after(tokens, j + 1)
+            if lane is None:
+                continue
+            end, own, number = lane
+            ours = own or (number and number in ego_lanes) or _before_the_ego(tokens, end)
+            if across and not (ours and (not own or m.value[0] == "cross_in_front")):
+                continue  # (a lane change "into my lane" is :func:`into_the_ego_lane`'s to read)
+            name = "cut_in" if ours else "change_lane"
+            kept[k] = replace(m, slot="behaviour", value=(name, {}))
+            used |= {x for x in range(k + 1, len(kept)) if kept[x].slot == "member" and kept[x].start < end}
+        out.append((link, [m for x, m in enumerate(kept) if x not in used]))
+    return out
+
+
+#: Mentions that may stand between a slowing and the stop it ends in ("slows, and stops", "eases off
+#: gently and pulls up").
+_BETWEEN_SLOWING_AND_STOP = frozenset(("conj", "punct", "criticality", "speed_word"))
+_STOPPING = frozenset(("stop", "sudden_stop"))
+
+
+def slowing_into_a_stop(clauses: list) -> list:
+    """``clauses`` without a slowing said just before the stop it ends in ("slows down and stops",
+    "decelerates and comes to a halt", "eases off and pulls up"): slowing is how a stop is made, not a
+    speed change of its own. A slowing to a stated speed ("slows to 30 km/h and then stops") is a
+    step of its own and stays."""
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        drop: set[int] = set()
+        for k, m in enumerate(kept):
+            slowing = m.slot == "behaviour" and m.value[0] == "change_speed"
+            if not (slowing and m.value[1].get("speed_delta_mps", 0) < 0):
+                continue
+            j = k + 1
+            while j < len(kept) and kept[j].slot in _BETWEEN_SLOWING_AND_STOP:
+                if kept[j].slot == "conj" and kept[j].words not in ("and", "then", "and then"):
+                    break
+                j += 1
+            nxt = kept[j] if j < len(kept) else None
+            if nxt is not None and (nxt.slot == "to_stop" or (nxt.slot == "behaviour" and nxt.value[0] in _STOPPING)):
+                drop.add(k)  # (how it slows is how it stops: "brakes gently and comes to a halt" is a gentle stop)
+                kept[j] = replace(nxt, words=f"{m.words} {nxt.words}")
+        out.append((link, [m for k, m in enumerate(kept) if k not in drop]))
+    return out
+
+
+#: Words a verb of motion takes right after it ("came round", "pulled out", "drove along").
+_PARTICLES = frozenset(("round", "around", "out", "off", "up", "down", "into", "onto", "along", "through", "over",
+                        "past", "across", "back", "away", "in", "on", "at", "to", "from", "towards"))  # fmt: skip
+
+
+def diary(tokens: list[str]) -> bool:
+    """Whether the text opens as a driver's diary, its "I" left out: an auxiliary and a participle
+    ("Was doing 50 kph ...", "Were sitting at the lights ..."), or a verb in the past and the particle
+    or preposition it takes ("Came round a blind bend ...", "Pulled out of the junction ..."). A past
+    participle before a noun ("Parked cars on both sides") is no such verb. The story is then the
+    narrator's, as one told with "I" is."""
+    if len(tokens) < 2:
+        return False
+    first, second = tokens[0], tokens[1]
+    if first in ("was", "were"):
+        return second.endswith("ing")
+    verbs = lemmas(first).get("VERB", ())
+    past = bool(verbs) and first not in verbs and not first.endswith(("s", "ing"))
+    return past and second in _PARTICLES
+
+
+def weather_not_behaviour(clauses: list) -> list:
+    """``clauses`` without a verb whose subject is the weather ("snow was falling", "rain had started
+    falling", "hail kept coming down"): what the weather does is the setting, no road user's behaviour.
+    The subject is the weather mention right before the verb, with only auxiliaries or verbs of aspect
+    ("was", "kept", "had started") between."""
+    out = []
+    for link, mentions in clauses:
+        kept = [
+            m
+            for k, m in enumerate(mentions)
+            if not (
+                m.slot == "behaviour"
+                and k > 0
+                and mentions[k - 1].slot in ("weather", "unknown_verb")
+                and _weather_word(mentions[k - 1])
+                and 0 <= m.start - mentions[k - 1].end <= 3
+            )
+        ]
+        out.append((link, kept))
+    return out
+
+
+#: Words of weather that fall or come down ("hail", which the reader may not know as a setting).
+_PRECIPITATION = frozenset(("rain", "snow", "sleet", "hail", "drizzle", "snowflakes", "raindrops"))
+
+
+def _weather_word(m) -> bool:
+    """Whether mention ``m`` names the weather (a setting the reader read, or a word of precipitation)."""
+    return m.slot == "weather" or m.words in _PRECIPITATION
+
+
+#: Verbs (lemmas) that with "a left" / "a right" say a turn ("make a right", "hang a left", "take a right").
+_TURN_VERBS = frozenset(("make", "take", "hang", "do", "pull", "swing", "chuck"))
+#: Words after "the left/right" that make it a place, not a turn ("takes the right lane").
+_NOT_A_TURN = frozenset(("lane", "lanes", "side", "kerb", "curb", "edge", "hand", "shoulder", "verge", "of"))
+
+
+def a_left_or_a_right(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with "make / take / hang a left (a right, a left turn)" read as turning that way,
+    as "turns left" is, whoever does it: the verb is light, the turn is its object."""
+    out = []
+    for link, mentions in clauses:
+        kept: list = []
+        skip = -1
+        for k, m in enumerate(mentions):
+            if k == skip:
+                continue
+            nxt = mentions[k + 1] if k + 1 < len(mentions) else None
+            verb = m.words.split()[0]
+            if (
+                m.slot in ("unknown_verb", "ego_verb", "behaviour")
+                and len(m.words.split()) == 1
+                and set(lemmas(verb).get("VERB", ())) & _TURN_VERBS
+                and nxt is not None
+                and nxt.slot == "side"
+                and nxt.value in ("left", "right")
+                and tokens[m.end : nxt.start] in (["a"], ["the"])
+                and (nxt.end >= len(tokens) or tokens[nxt.end] not in _NOT_A_TURN)
+            ):
+                words = f"{m.words} {' '.join(tokens[m.end : nxt.end])}"
+                kept.append(replace(m, slot="behaviour", value=("forced_turn", {"turn": nxt.value}), words=words,
+                                    end=nxt.end))  # fmt: skip
+                skip = k + 1
+                continue
+            kept.append(m)
+        out.append((link, kept))
+    return out
+
+
+#: Moves across lanes that a turn said as their purpose makes part of that turn.
+_LATERAL = frozenset(("cut_in", "change_lane", "cross_in_front"))
+
+
+def across_to_turn(clauses: list) -> list:
+    """``clauses`` without a move across lanes made to turn ("swings across my lane to make a right",
+    "cuts over in front of me to turn left"): the turn said as its purpose (after "to") is the
+    behaviour, the move across how it begins."""
+    out = []
+    for link, mentions in clauses:
+        drop: set[int] = set()
+        for k, m in enumerate(mentions):
+            if not (m.slot == "behaviour" and m.value[0] in _LATERAL):
+                continue
+            for x in mentions[k + 1 :]:
+                if x.slot in ("actor", "pronoun") and x.value != "ego" or x.slot == "link":
+                    break
+                turning = x.slot == "turn" or (x.slot == "behaviour" and x.value[0] == "forced_turn")
+                if turning and x.prev == "to":
+                    drop.add(k)
+                    break
+        out.append((link, [m for k, m in enumerate(mentions) if k not in drop]))
+    return out
+
+
+#: Where a vehicle parked stands in the way, not at the side ("parked in the lane", "on the road").
+_IN_THE_WAY = frozenset(("lane", "road", "carriageway", "roadway", "street"))
+
+
+def parked_in_the_lane(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a vehicle said parked in the lane or on the road ("a lorry parked in the lane",
+    "a van parked in our lane") read as standing there, in the way, not parked at the kerb: where it
+    is parked says which."""
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k, m in enumerate(kept):
+            if m.slot != "stationary" or "park" not in m.words:
+                continue
+            after = tokens[m.end : m.end + 4]
+            if after[:1] in (["in"], ["on"]) and len(after) > 2 and after[1] in _DETERMINERS | {"my", "our"}:
+                if after[2] in _IN_THE_WAY and after[2:4] != ["road", "side"]:
+                    kept[k] = replace(m, words="standing")
+        out.append((link, kept))
+    return out
+
+
+#: Adjectives of a vehicle's state that say it stands only said of it, right before its noun ("a
+#: broken car"; not "the broken line", "a broken light").
+_STATE_BEFORE_NOUN = frozenset(("broken",))
+
+
+def state_before_its_noun(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` without a state adjective ("broken") not right before a road user's noun: said of
+    anything else it is no road user's state."""
+    out = []
+    for link, mentions in clauses:
+        kept = []
+        for k, m in enumerate(mentions):
+            nxt = mentions[k + 1] if k + 1 < len(mentions) else None
+            noun = nxt is not None and nxt.slot == "actor" and set(tokens[m.end : nxt.start]) <= _DETERMINERS
+            if m.slot == "stationary" and m.words in _STATE_BEFORE_NOUN and not noun:
+                continue
+            kept.append(m)
+        out.append((link, kept))
+    return out
+
+
+#: "There is / are / was / were": what follows is said to be there, for the first time.
+_EXISTENTIAL = frozenset(("is", "are", "was", "were", "'s"))
+
+
+def there_is_a_new_one(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with the road user after "there is / was" ("because there is broken car stop on
+    road") read as a new one, with or without its article: an existential sentence introduces what it
+    names. (A bare noun otherwise names one already met, as terse writing drops articles.) A
+    stationary adjective before it ("broken", "stopped") stays its own."""
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        drop: set[int] = set()
+        for k, m in enumerate(kept):
+            if m.slot != "actor" or m.value == "ego" or m.det not in ("", "the"):
+                continue
+            i = m.start - 1
+            while i >= 0 and (
+                tokens[i] in _DETERMINERS or any(x.slot == "stationary" and x.start <= i < x.end for x in kept[:k])
+            ):
+                i -= 1  # (past "broken", "stopped": the vehicle's state; "there is the ..." is no known one)
+            if not (i >= 1 and tokens[i] in _EXISTENTIAL and tokens[i - 1] == "there"):
+                continue
+            kept[k] = replace(m, det="a")
+            for j in range(k - 1, -1, -1):
+                x = kept[j]
+                if x.start < i:
+                    break
+                if x.slot == "stationary":  # (its state, said of it: up to its noun)
+                    kept[j] = replace(x, end=m.start, next_=tokens[m.start])
+                elif x.start == i and x.slot in ("ego_verb", "unknown_verb"):
+                    drop.add(j)  # ("there is": no verb of anyone's; what is there is the subject of what follows)
+        out.append((link, [m for j, m in enumerate(kept) if j not in drop]))
+    return out
+
+
+#: Words of quantity before a noun whose "to" + verb says what there is room for ("no room to stop").
+_QUANTITY = frozenset(("no", "enough", "insufficient", "sufficient", "little", "any", "more", "less", "much",
+                       "some", "the", "a", "plenty", "not"))  # fmt: skip
+
+
+def room_to_act_not_behaviour(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` without a verb said as what a quantity of something allows ("leaving no room to
+    stop", "with too little space to brake", "not enough time to swerve"): the infinitive completes
+    the noun; nobody does it."""
+    out = []
+    for link, mentions in clauses:
+        kept = []
+        for m in mentions:
+            i = m.start
+            if m.slot == "behaviour" and i >= 3 and tokens[i - 1] == "to" and tokens[i - 3] in _QUANTITY:
+                named = any(x.start <= i - 2 < max(x.end, x.start + 1) and x.slot != "unknown_verb" for x in mentions)
+                if "NOUN" in lemmas(tokens[i - 2]) and not named:  # (not "tells the van to stop": a road user)
+                    continue
+            kept.append(m)
+        out.append((link, kept))
+    return out
+
+
+def chains(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with what a chain of verbs says one road user does read move by move: a plain move
+    into a lane as the lane change or cut-in it is (:func:`into_a_lane`), letting the ego go as giving
+    way (:func:`lets_the_ego_go`), a slowing into a stop as the stop (:func:`slowing_into_a_stop`), and
+    what the weather does as no one's behaviour (:func:`weather_not_behaviour`), "makes a left" as
+    turning left (:func:`a_left_or_a_right`), a move across made to turn as the turn
+    (:func:`across_to_turn`); and who stands in the way, for a cut-out (:func:`parked_in_the_lane`,
+    :func:`there_is_a_new_one`); "no room to stop" as nobody's stop (:func:`room_to_act_not_behaviour`)."""
+    clauses = weather_not_behaviour(room_to_act_not_behaviour(clauses, tokens))
+    clauses = across_to_turn(a_left_or_a_right(clauses, tokens))
+    clauses = there_is_a_new_one(parked_in_the_lane(state_before_its_noun(clauses, tokens), tokens), tokens)
+    return slowing_into_a_stop(lets_the_ego_go(into_a_lane(clauses, tokens), tokens))

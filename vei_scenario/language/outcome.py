@@ -587,6 +587,13 @@ def _subject(words: list[str]) -> str | None:
     return None
 
 
+def _does_next(after: list[str]) -> bool:
+    """Whether a bare verb follows the object of "let" ("lets the ego complete the turn", "lets me make
+    the turn"): the one let does something, so the one who lets gives way."""
+    k = 1 if after[:1] in (["the"], ["a"]) else 0
+    return len(after) > k + 1 and _is_verb(after[k + 1]) and after[k + 1] in _lemmas(after[k + 1])
+
+
 def _ego_acts(words: list[str], i: int) -> str | None:
     """What the ego's verb at ``i`` says of the outcome: "evade" (swerve, brake hard), "brake" (a
     plain brake), "yield" (waits, gives way, stops gently, lets the other go) or None."""
@@ -610,8 +617,8 @@ def _ego_acts(words: list[str], i: int) -> str | None:
         after = words[i + 1 : i + 4]
         if lem & {"give"} and "way" not in after:
             return None
-        if lem & {"let"} and not set(after) & _LET_GO and not _lets_do(words, i):
-            return None
+        if lem & {"let"} and not set(after) & _LET_GO and not (_lets_do(words, i) or _does_next(after)):
+            return None  # (letting someone go, or do anything: "lets the ego complete the turn")
         if lem & {"hang", "hold"} and "back" not in after:
             return None
         return "yield"

@@ -37,7 +37,9 @@ from vei_scenario.language.behaviours import BEHAVIOURS
 from vei_scenario.language.lemmas import lemmas as _lemmas
 from vei_scenario.language.manner import apply_manner, stated_manner
 from vei_scenario.language.motion import (
+    chains,
     destinations_not_origins,
+    diary,
     give_the_ego_the_way,
     head_on,
     into_the_ego_lane,
@@ -505,9 +507,10 @@ _MOTION_BEFORE_SPEED = frozenset(
 )
 
 
-def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
-    """(clauses as (link, mentions), ignored words) of ``text``; a word that is only a verb and unknown
-    stays in its clause as an ``unknown_verb`` mention."""
+def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, list[str]]:
+    """(clauses as (link, mentions), ignored words, words read as others, the tokens the mentions
+    index) of ``text``; a word that is only a verb and unknown stays in its clause as an
+    ``unknown_verb`` mention."""
     tokens = _tokens(text, brackets=True)
     clauses: list[tuple[str, list[_Mention]]] = [("sequence", [])]
     read_as: list[tuple[str, str]] = [
@@ -766,7 +769,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str]]:
             clauses[-1][1].append(_Mention("toward", side, side, toward_at, tokens[toward_at - 1], end=toward_at + 1))
             used = max(used, toward_at + 1 - i)
         i += used
-    return [c for c in clauses if any(m.slot not in ("punct", "link") for m in c[1])], ignored, read_as
+    return [c for c in clauses if any(m.slot not in ("punct", "link") for m in c[1])], ignored, read_as, tokens
 
 
 #: Verbs that with "to" say what someone must do ("it has to brake": a requirement, said of the ego).
@@ -1061,12 +1064,13 @@ def _resolve_relation(a: _Actor, map_kind: str | None) -> str | None:
 def read(text: str) -> Reading:
     """Parse ``text`` into a :class:`~vei_scenario.language.reading.Reading` (with ``ignored``
     words); raise :class:`~vei_scenario.language.reading.NotUnderstood` naming what cannot be placed."""
-    clauses, ignored, read_as = scan(text)
+    clauses, ignored, read_as, scanned = scan(text)
     clauses = sides.narrator_lane(sides.relate_headings(clauses))
     clauses = out_of_a_side_road(destinations_not_origins(outcome_not_behaviour(_drop_label(clauses))))
     tokens = _tokens(text)
     said = " ".join(tokens)  # (the whole text as the reader reads it, for what is stated of it as a whole)
-    clauses = out_to_overtake(participle_of_state(give_the_ego_the_way(into_the_ego_lane(clauses, tokens), tokens)))
+    clauses = out_to_overtake(participle_of_state(give_the_ego_the_way(into_the_ego_lane(clauses, scanned), scanned)))
+    clauses = chains(clauses, scanned)
     clauses, ego_follows = _ego_following(clauses)
     r = Reading()
     actors: list[_Actor] = []
@@ -1075,7 +1079,7 @@ def read(text: str) -> Reading:
     last_group: list[_Actor] | None = None  # ("Two scooters ride ahead; one of them brakes": that pair)
     both_with_ego = False  # ("CCRb: both cars at 50 km/h ...": the ego is one of them)
     ego_is_a_person = False  # (the ego named as "I" or "we": "it" is then never the ego)
-    first_person = bool({"i", "we", "me", "my", "us", "our"} & set(tokens))  # (the narrator's story)
+    first_person = bool({"i", "we", "me", "my", "us", "our"} & set(tokens)) or diary(tokens)  # (the narrator's)
     bound: dict[str, _Actor | str] = {}  # "he"/"she" → whom it first named
     resolved: dict[int, _Actor | str] = {}  # a road-user mention's start → whom it names
     owned = {o for _, ms in clauses for x in ms for o in x.owners}  # mentions a number is said of
@@ -1854,6 +1858,8 @@ def _ego_reaction(mentions, k: int, a: _Actor, first_person: bool = False) -> bo
     if m.slot == "behaviour":
         verb = m.words.split()[0]
         said_alone = first_person and opening and (_past(verb) or not verb.endswith("s"))
+        joined = any(x.slot in ("link", "conj") and x.words.split()[-1] in ("then", "and") for x in mentions[:k])
+        said_alone = said_alone and not joined  # ("... into my lane and then braked": its)
         if said_alone and m.value[0] in _REACTIONS + _EVASIONS:
             return True  # "Slowed down, gave her loads of space.": a diary's sentence without its "I"
         if m.value[0] not in _REACTIONS:
@@ -2055,7 +2061,8 @@ def _cut_outs(specs: list[ActorSpec]) -> None:
         if not standing or not s.behaviours or s.kind not in VEHICLES or k in standing:
             continue
         name, cfg, crit, link = s.behaviours[0]
-        swerves = name in ("cut_out", "change_lane") or (name == "cut_in" and s.relation in (None, "ahead"))
+        passes = name in ("cut_in", "overtake") and s.relation in (None, "ahead")  # ("pulls out to pass a parked van")
+        swerves = name in ("cut_out", "change_lane") or passes
         if swerves and s.relation in (None, "ahead", "behind"):
             direction = {key: v for key, v in cfg.items() if key == "direction"}
             s.behaviours = [("cut_out", direction, crit, link)] + s.behaviours[1:]
