@@ -435,6 +435,7 @@ def test_an_age_in_decades_is_no_speed():
     r = read("A man in his mid-40s steps out from behind a bus; I'm doing 30 km/h.")
     assert r.ego_speed_mps == pytest.approx(30 * KPH) and all(a.speed_mps is None for a in r.actors)
 
+
 @pytest.mark.parametrize(
     "text, gap",
     [
