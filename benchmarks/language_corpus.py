@@ -35,6 +35,8 @@ FIRST = {
     "language_independent_e.json": ((70, 70, 16, 55), "sealed, measured once before a pass of reader work"),
     "language_independent_f.json": ((60, 60, 32, 58), "measured when written"),
     "language_independent_g.json": ((60, 60, 24, 56), "sealed until the reader's last change"),
+    "language_independent_h.json": ((50, 50, 30, 43), "measured when written"),
+    "language_independent_i.json": ((50, 50, 12, 38), "measured when written"),
 }
 
 

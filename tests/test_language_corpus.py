@@ -36,26 +36,28 @@ def test_at_least_nine_in_ten_descriptions_are_understood_and_faithful(corpus):
             assert r.problems[0].startswith(("no road user found", "no behaviour found"))
 
 
-#: Written independently by writers who never saw the reader (A-G: requests, chat, test-spec lines,
+#: Written independently by writers who never saw the reader (A-I: requests, chat, test-spec lines,
 #: police, insurance and radio narratives, long stories, lists, learners' English, typos). The figures
 #: first measured on each, before the reader was changed for it, are in benchmarks/language_corpus.py
 #: (FIRST; ``--all`` prints them beside today's); G was kept sealed until the reader's last change and
 #: measured once after it. The floors are the figures measured last: (understood, faithful).
 INDEPENDENT = {
-    ROOT / "tests" / "data" / "language_independent_a.json": (59, 53),
-    ROOT / "tests" / "data" / "language_independent_b.json": (63, 57),
-    ROOT / "tests" / "data" / "language_independent_c.json": (65, 56),
-    ROOT / "tests" / "data" / "language_independent_d.json": (56, 35),
-    ROOT / "tests" / "data" / "language_independent_e.json": (70, 60),
-    ROOT / "tests" / "data" / "language_independent_f.json": (60, 52),
-    ROOT / "tests" / "data" / "language_independent_g.json": (60, 32),
+    ROOT / "tests" / "data" / "language_independent_a.json": (59, 57),
+    ROOT / "tests" / "data" / "language_independent_b.json": (63, 60),
+    ROOT / "tests" / "data" / "language_independent_c.json": (65, 57),
+    ROOT / "tests" / "data" / "language_independent_d.json": (56, 39),
+    ROOT / "tests" / "data" / "language_independent_e.json": (70, 61),
+    ROOT / "tests" / "data" / "language_independent_f.json": (60, 56),
+    ROOT / "tests" / "data" / "language_independent_g.json": (60, 55),
+    ROOT / "tests" / "data" / "language_independent_h.json": (50, 39),
+    ROOT / "tests" / "data" / "language_independent_i.json": (50, 29),
 }
 
 
 @pytest.mark.parametrize(
     "corpus",
     sorted(INDEPENDENT),
-    ids=[f"independent-{c}" for c in "abcdefg"],
+    ids=[f"independent-{c}" for c in "abcdefghi"],
 )
 def test_independent_corpora_stay_at_their_measured_figures(corpus):
     results = check_corpus(load_corpus(corpus), layers_from_text)
