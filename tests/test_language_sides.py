@@ -416,3 +416,20 @@ def test_a_bare_inside_or_outside_is_a_side_of_the_writers_road(text, expected):
 )
 def test_one_that_comes_up_or_past_on_a_side_starts_behind_the_ego(text):
     assert read(text).actors[0].relation in ("behind", "left", "right")
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("At 30 mph a car pulled out of a lay-by on my left in front of me.", "roadside_left"),
+        ("A van pulled out of a parking space on my right just ahead of me at 30 mph.", "roadside_right"),
+        ("Doing 40 km/h, a taxi pulls out of a driveway on the left into our lane.", "roadside_left"),
+        ("At 20 km/h, a cyclist shoots out of a driveway on the left across the road.", "roadside_left"),
+    ],
+)
+def test_out_of_a_place_beside_the_road_is_from_the_roadside_not_a_junction_arm(text, expected):
+    """A driveway, a bus stop, a lay-by or a parking space is beside the carriageway: what comes out of
+    it pulls in (or crosses) from that side, not out of a side road (no junction arm, no turn into)."""
+    actor = read(text).actors[0]
+    assert actor.relation in (expected, expected.removeprefix("roadside_"))
+    assert actor.behaviours[0][0] in ("cut_in", "cross_in_front")

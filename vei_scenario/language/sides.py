@@ -43,6 +43,13 @@ KERB_NOUNS = frozenset(
 ARM_NOUNS = frozenset({"arm", "entry", "entrance", "approach", "exit"})
 _ROAD_NOUNS = frozenset({"road", "street"})
 _MINOR = frozenset({"side", "minor"})  # (a slip road joins as a lane does: not an arm)
+#: Places off the carriageway a road user comes out of onto the road beside it, not a junction arm:
+#: "out of a driveway on the right", "pulled out of the stop on my left" (a bus stop).
+OFF_ROAD_PLACES = frozenset({"driveway", "drive", "stop", "lay-by", "layby", "gateway", "forecourt", "bay"})
+#: Two-word places of that kind, by their first word ("a parking space", "the car park").
+_PLACE_HEADS = {"parking": (["space"], ["spot"], ["bay"], ["place"]), "car": (["park"],), "bus": (["stop"],)}
+#: Prepositions that say a road user comes out of a place.
+_OUT_OF = frozenset({"out", "from", "of"})
 #: Lanes that are beside the carriageway rather than in it: a rider there starts at the kerb.
 _KERB_LANES = frozenset({"cycle", "bike", "bus"})
 _DETERMINERS = frozenset({"the", "a", "an", "my", "our", "its", "his", "her", "their", "your", "this", "that"})
@@ -230,6 +237,8 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
         kind, k = "arm", k + 1
     elif tokens[k] in KERB_NOUNS:
         kind, k = "kerb", k + 1
+    elif prep in _OUT_OF and (tokens[k] in OFF_ROAD_PLACES or tokens[k + 1 : k + 2] in _PLACE_HEADS.get(tokens[k], ())):
+        kind, k = "place", k + 1 + (tokens[k] not in OFF_ROAD_PLACES)
     elif tokens[k] in _KERB_LANES and tokens[k + 1 : k + 2] == ["lane"]:
         kind, k = "kerb", k + 2
     elif tokens[k] == "lane":
@@ -253,6 +262,8 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
         return Said(start, end, prep, (("arm", None), ("side", side)))
     if kind == "kerb":
         return Said(start, end, prep, (("kerb", None), ("kerb_side", side)))
+    if kind == "place":  # beside the carriageway, where it comes onto the road from, along the ego's way
+        return Said(start, end, prep, (("kerb", None), ("lane_side", side)))
     return Said(start, end, prep, (("lane_side", side),))
 
 
