@@ -379,3 +379,57 @@ def test_a_side_a_crossing_goes_to_puts_its_start_on_the_other(text, expected):
 
 def test_a_side_of_another_road_user_is_a_place_not_where_a_crossing_goes():
     assert relation("Ego 30 km/h. A boy crosses to the left of the parked bus, in front of the ego.") == "roadside_left"
+
+
+def _side_started(text: str) -> str | None:
+    """The side of the ego a road user starts on: said by its relation, or by its offset at the edge of
+    the ego's lane (a rider going along the road)."""
+    a = read(text).actors[0]
+    if a.relation in ("left", "right", "roadside_left", "roadside_right"):
+        return a.relation.removeprefix("roadside_")
+    if a.lateral_m:
+        return "left" if a.lateral_m > 0 else "right"
+    return None
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # a bare "inside" is the kerb side of the writer's road: the left where speeds are in mph
+        ("Rolling at 10 mph in town, a courier on a bike crept up on our inside and rode on.", "left"),
+        ("Doing 15 mph past the shops, a cyclist nipped up the inside of me and kept going.", "left"),
+        ("At 20 km/h in traffic a cyclist rolls along on our inside and carries on.", "right"),
+        ("Doing 30 mph when a cyclist came by on the outside and kept going.", "right"),
+    ],
+)
+def test_a_bare_inside_or_outside_is_a_side_of_the_writers_road(text, expected):
+    assert _side_started(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "At 40 mph on the bypass a van tore past me on the outside and then cut in just ahead of me.",
+        "Doing 50 mph in the middle lane when a hatchback shot up the inside and cut in ahead of me.",
+        "At 60 km/h a motorbike came up on the outside of us and pulled in sharply in front.",
+    ],
+)
+def test_one_that_comes_up_or_past_on_a_side_starts_behind_the_ego(text):
+    assert read(text).actors[0].relation in ("behind", "left", "right")
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("At 30 mph a car pulled out of a lay-by on my left in front of me.", "roadside_left"),
+        ("A van pulled out of a parking space on my right just ahead of me at 30 mph.", "roadside_right"),
+        ("Doing 40 km/h, a taxi pulls out of a driveway on the left into our lane.", "roadside_left"),
+        ("At 20 km/h, a cyclist shoots out of a driveway on the left across the road.", "roadside_left"),
+    ],
+)
+def test_out_of_a_place_beside_the_road_is_from_the_roadside_not_a_junction_arm(text, expected):
+    """A driveway, a bus stop, a lay-by or a parking space is beside the carriageway: what comes out of
+    it pulls in (or crosses) from that side, not out of a side road (no junction arm, no turn into)."""
+    actor = read(text).actors[0]
+    assert actor.relation in (expected, expected.removeprefix("roadside_"))
+    assert actor.behaviours[0][0] in ("cut_in", "cross_in_front")

@@ -44,6 +44,7 @@ from dataclasses import replace
 
 from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.reading import ActorSpec
+from vei_scenario.language.sides import OFF_ROAD_PLACES
 
 #: Behaviours that, said with running the red, are the manner of that run.
 _MANNER_OF_A_RUN = frozenset(("overtake", "turn_into"))
@@ -133,8 +134,21 @@ def out_of_a_side_road(clauses: list) -> list:
             if m.slot == "behaviour" and particle and nxt.slot == "arm" and nxt.prev in ("of", "from"):
                 if not m.value[1].get("from_side_road"):
                     kept[k] = replace(m, value=("cut_in", {**m.value[1], "from_side_road": 1.0}))
+            elif m.slot == "behaviour" and m.value[1].get("from_side_road") and _out_of_a_place(nxt):
+                # "pulled out of the stop", "out of a driveway": onto the road from beside it, no arm
+                cfg = {x: v for x, v in m.value[1].items() if x != "from_side_road"}
+                kept[k] = replace(m, value=(m.value[0], cfg))
         out.append((link, kept))
     return out
+
+
+def _out_of_a_place(m) -> bool:
+    """Whether mention ``m`` is a place off the carriageway said as where a road user comes out of
+    ("out of a driveway on the right", "from the bus stop"): sides.py reads it as a kerb with a side."""
+    return m.slot == "kerb" and m.prev in ("of", "from", "out") and bool(set(m.words.split()) & _PLACE_WORDS)
+
+
+_PLACE_WORDS = OFF_ROAD_PLACES | {"space", "spot", "park"}
 
 
 #: Moves that, into the ego's lane, are a cut-in.

@@ -43,6 +43,13 @@ KERB_NOUNS = frozenset(
 ARM_NOUNS = frozenset({"arm", "entry", "entrance", "approach", "exit"})
 _ROAD_NOUNS = frozenset({"road", "street"})
 _MINOR = frozenset({"side", "minor"})  # (a slip road joins as a lane does: not an arm)
+#: Places off the carriageway a road user comes out of onto the road beside it, not a junction arm:
+#: "out of a driveway on the right", "pulled out of the stop on my left" (a bus stop).
+OFF_ROAD_PLACES = frozenset({"driveway", "drive", "stop", "lay-by", "layby", "gateway", "forecourt", "bay"})
+#: Two-word places of that kind, by their first word ("a parking space", "the car park").
+_PLACE_HEADS = {"parking": (["space"], ["spot"], ["bay"], ["place"]), "car": (["park"],), "bus": (["stop"],)}
+#: Prepositions that say a road user comes out of a place.
+_OUT_OF = frozenset({"out", "from", "of"})
 #: Lanes that are beside the carriageway rather than in it: a rider there starts at the kerb.
 _KERB_LANES = frozenset({"cycle", "bike", "bus"})
 _DETERMINERS = frozenset({"the", "a", "an", "my", "our", "its", "his", "her", "their", "your", "this", "that"})
@@ -188,6 +195,8 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
         # "off the far kerb", "from the opposite pavement": across the road, the offside; "the near kerb" the nearside
         side = _restated(tokens, j + 2) or _side("nearside" if tokens[j] == "near" else "offside", "", left_hand, False)
         return Said(start, j + 2, prep, (("kerb", None), ("kerb_side", side)))
+    if not ring and (bare := _bare_ring_side(tokens, i, j, prep, left_hand)) is not None:
+        return bare
     # side word, then noun
     if _is_side_word(tokens[j]):
         k = j + 1
@@ -228,6 +237,8 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
         kind, k = "arm", k + 1
     elif tokens[k] in KERB_NOUNS:
         kind, k = "kerb", k + 1
+    elif prep in _OUT_OF and (tokens[k] in OFF_ROAD_PLACES or tokens[k + 1 : k + 2] in _PLACE_HEADS.get(tokens[k], ())):
+        kind, k = "place", k + 1 + (tokens[k] not in OFF_ROAD_PLACES)
     elif tokens[k] in _KERB_LANES and tokens[k + 1 : k + 2] == ["lane"]:
         kind, k = "kerb", k + 2
     elif tokens[k] == "lane":
@@ -251,7 +262,54 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
         return Said(start, end, prep, (("arm", None), ("side", side)))
     if kind == "kerb":
         return Said(start, end, prep, (("kerb", None), ("kerb_side", side)))
+    if kind == "place":  # beside the carriageway, where it comes onto the road from, along the ego's way
+        return Said(start, end, prep, (("kerb", None), ("lane_side", side)))
     return Said(start, end, prep, (("lane_side", side),))
+
+
+#: Prepositions a bare "inside"/"outside" follows when it names a side of the ego ("up the inside").
+_ALONG = frozenset({"on", "up", "down", "along", "by", "past"})
+#: Prepositions of going up to and past the ego along its side: said of one that comes from behind.
+_FROM_BEHIND = frozenset({"up", "past"})
+#: Words after "the inside" that make it a noun phrase of its own: "the inside of the bend" is no side.
+_OF_A_PLACE = frozenset({"bend", "curve", "corner", "turn", "roundabout", "car", "van", "vehicle", "bus", "cab"})
+
+
+def _bare_ring_side(tokens: list[str], i: int, j: int, prep: str, left_hand: bool) -> Said | None:
+    """ "on my inside", "up the inside (of him)", "on the outside": inside or outside said as a noun, the
+    side of the ego's road a rider or driver goes by on, in the ego's direction (a lane beside it, not a
+    kerb a walker steps off): the inside is the kerb side, the outside the centre-line side. Coming
+    "up" or "past" it, it comes from behind. Which side is which follows the writer's driving side, as
+    "nearside" does. (On a roundabout the same words may point to the island or the outer edge: the
+    caller leaves them unread there.)"""
+    word = tokens[j]
+    if word not in ("inside", "outside") or prep not in _ALONG or j == i or tokens[j - 1] not in _DETERMINERS:
+        return None
+    after = tokens[j + 1 : j + 2]
+    end = j + 1
+    if after == ["of"]:
+        owner = tokens[j + 2 : j + 4]
+        if owner[:1] and owner[0] in ("me", "us", "him", "her", "them", "it"):
+            end = j + 3
+        elif owner[:1] and owner[0] in _DETERMINERS and owner[1:] and owner[1] in _OF_A_PLACE:
+            return None  # ("the inside of the bend": a place on the road, no side of the ego)
+        else:
+            end = j + 1
+    elif after and (after[0] in _RING_NOUNS or after[0] in KERB_NOUNS or after[0] in _ROAD_NOUNS):
+        return None  # ("the inside lane", "the outside line": a side word before its noun)
+    near, far = ("left", "right") if left_hand else ("right", "left")
+    # "came up the inside", "coming up on my inside", "went past on the outside": it comes from behind
+    # (the verb's particle said before: "came up on my inside", "went past me on the outside")
+    behind = (("relation", "behind"),) if prep in _FROM_BEHIND or set(tokens[max(0, i - 2) : i]) & _FROM_BEHIND else ()
+    if word == "inside":  # (by the kerb: a rider there rides at its edge)
+        return Said(j, end, prep, (("kerb", None), ("lane_side", near), *behind))
+    return Said(j, end, prep, (("lane_side", far), *behind))
+
+
+#: Nouns "inside"/"outside" qualify as side words ("the outside lane", "its inside wheel").
+_RING_NOUNS = frozenset(
+    {"lane", "lanes", "line", "track", "wheel", "wheels", "mirror", "mirrors", "loop", "bend", "corner", "ring"}
+)
 
 
 def _restated(tokens: list[str], k: int) -> str | None:
