@@ -266,3 +266,15 @@ def test_a_rider_off_the_kerb_or_pavement_crosses_into_the_road():
     assert _behaviours("A cyclist came off the kerb into my path.") == ["cross_in_front"]
     said = "A cyclist rode on the pavement, then swung out into the road in front of me."
     assert _behaviours(said) == ["cross_in_front"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Ego 40 km/h on the main road. A van waits at the stop line on the left, letting the ego (40 km/h) go by.",
+        "On the side road to our right a cyclist pulls up at the line, allowing us (at 30 mph) to pass.",
+        "A lorry at the junction on my left holds back and lets me (doing 25 mph in the main road) through.",
+    ],
+)
+def test_an_aside_in_brackets_after_the_ego_does_not_break_letting_it_go(text):
+    assert _behaviours(text)[-1:] == ["give_way"]

@@ -222,6 +222,25 @@ def _let_before(tokens: list[str], i: int, before) -> int:
     return j if set(lemmas(tokens[j]).get("VERB", ())) & _LET else 0
 
 
+def _past_its_speed(mentions: list, tokens: list[str], i: int) -> int:
+    """Where the words after the ego at ``tokens[i]`` go on once a speed said as an aside of it is read
+    past ("letting the ego (50 km/h) pass", "lets me, doing 30 mph on the main road, through"): the aside says how fast
+    the ego goes, not what it is let do."""
+    j = i
+    while j < len(tokens) and tokens[j] in ("at", "doing", "going", ","):
+        j += 1
+    said = next((s for s in mentions if s.slot == "speed" and s.start == j), None)
+    if said is None:
+        return i
+    j = said.end
+    if j < len(tokens) and tokens[j] in ("on", "in", "along"):  # ("(50 km/h on the main road)": where it goes)
+        where = next((s for s in mentions if s.slot == "map" and j < s.start <= j + 4), None)
+        j = where.end if where is not None else j
+    while j < len(tokens) and tokens[j] == ",":
+        j += 1
+    return j
+
+
 def lets_the_ego_go(clauses: list, tokens: list[str]) -> list:
     """``clauses`` with a road user letting the ego go ("waves me out", "beckons us across", "lets the
     ego complete the turn", "allows the ego to finish its turn") read as giving way: the ego as the
@@ -245,6 +264,8 @@ def lets_the_ego_go(clauses: list, tokens: list[str]) -> list:
                 nxt, after = m, m.end  # ("..., letting the ego go by": a participle the reader reads past)
                 said = replace(m, words=" ".join(tokens[_let_before(tokens, m.start, None) : m.end]))
                 letting = True
+            if nxt is not None and nxt.slot == "actor" and nxt.value == "ego":
+                after = _past_its_speed(mentions, tokens, after)
             if (
                 letting
                 and nxt is not None
