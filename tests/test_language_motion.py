@@ -278,3 +278,18 @@ def test_a_rider_off_the_kerb_or_pavement_crosses_into_the_road():
 )
 def test_an_aside_in_brackets_after_the_ego_does_not_break_letting_it_go(text):
     assert _behaviours(text)[-1:] == ["give_way"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Ego at 50 km/h. A cyclist rides along the right edge in our direction at 15 km/h, ego passes him.",
+        "Ego 50 km/h. A walker on the left verge going our way at 5 km/h; the ego overtakes her.",
+        "Overtook a cyclist on our way home, he was riding by the verge at about 10 mph.",
+        "I went past a mobility scooter on the lane this morning, she was trundling along at 5 mph.",
+    ],
+)
+def test_a_road_user_the_ego_passes_goes_along_ahead_of_it(text):
+    (actor,) = read(text).actors
+    assert actor.behaviours[0][0] in ("along_road", "keep_lane", "keep_going")
+    assert actor.relation in ("ahead", "roadside_left", "roadside_right")

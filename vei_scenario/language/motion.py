@@ -868,3 +868,37 @@ def chains(clauses: list, tokens: list[str]) -> list:
     clauses = across_to_turn(a_left_or_a_right(clauses, tokens))
     clauses = there_is_a_new_one(parked_in_the_lane(state_before_its_noun(clauses, tokens), tokens), tokens)
     return slowing_into_a_stop(lets_the_ego_go(into_a_lane(clauses, tokens), tokens))
+
+
+#: What a road user the ego passes may already be said to do: going on, along the road or its lane.
+_BEING_PASSED = frozenset(("keep_going", "along_road", "keep_lane"))
+
+
+def passes(m) -> bool:
+    """Whether mention ``m`` is a verb of passing ("passes", "overtook", "went past")."""
+    return m is not None and m.slot == "behaviour" and m.value[0] == "overtake" and m.prev not in _DENYING
+
+
+#: Words that, right before a verb or noun of passing, say it is not done ("no overtake", "never passed").
+_DENYING = frozenset(("no", "not", "never", "without", "n't", "nor"))
+
+
+def passed_goes_along(behaviours: list, passed: bool) -> list:
+    """``behaviours`` of a road user the ego passes ("the ego overtakes her", "ego passes him"): being
+    passed, it goes along the road ahead of the ego, not across it, whatever its place would otherwise
+    make of a road user said only to go on. A move said of it (it turns, it cuts in) stays."""
+    if not passed or not all(b[0] in _BEING_PASSED for b in behaviours):
+        return behaviours
+    return [("along_road", {}, *behaviours[0][2:])]
+
+
+def passes_someone(m, nxt) -> bool:
+    """Whether ``m`` is a verb of passing with a road user as its object ("overtook a cyclist", not
+    "passes me" nor "passes without any conflict")."""
+    return (
+        passes(m)
+        and nxt is not None
+        and nxt.slot in ("actor", "pronoun")
+        and nxt.value != "ego"
+        and nxt.start <= m.end + 2
+    )
