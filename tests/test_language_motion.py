@@ -293,3 +293,17 @@ def test_a_road_user_the_ego_passes_goes_along_ahead_of_it(text):
     (actor,) = read(text).actors
     assert actor.behaviours[0][0] in ("along_road", "keep_lane", "keep_going")
     assert actor.relation in ("ahead", "roadside_left", "roadside_right")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Ego 60 km/h on the ring road. A van is following us closely.",
+        "Ego at 50 mph, a pickup has been tailing me for miles, braking whenever I braked. It never overtook.",
+        "Ego 70 km/h; a lorry follows the ego at 10 m the whole way.",
+    ],
+)
+def test_a_road_user_following_the_ego_follows_it_from_behind(text):
+    (actor,) = read(text).actors
+    assert actor.behaviours[0][0] == "follow_vehicle"
+    assert actor.relation == "behind"

@@ -459,6 +459,7 @@ BEHAVIOUR_VERBS = {
     ),
     "follow_vehicle": (
         "tailgate",
+        "tail",
         "follow",
         "ride bumper",
         "ride my bumper",

@@ -867,7 +867,42 @@ def chains(clauses: list, tokens: list[str]) -> list:
     clauses = weather_not_behaviour(room_to_act_not_behaviour(clauses, tokens))
     clauses = across_to_turn(a_left_or_a_right(clauses, tokens))
     clauses = there_is_a_new_one(parked_in_the_lane(state_before_its_noun(clauses, tokens), tokens), tokens)
+    clauses = follows_the_ego(clauses, tokens)
     return slowing_into_a_stop(lets_the_ego_go(into_a_lane(clauses, tokens), tokens))
+
+
+def _a_following(m) -> bool:
+    """Whether ``m`` says following: the behaviour, or "following" read as where one is (behind)."""
+    if m.slot == "behaviour":
+        return m.value[0] == "follow_vehicle" and m.prev not in _DENYING
+    return m.slot == "relation" and m.value == "behind" and "follow" in lemmas(m.words.split()[0]).get("VERB", ())
+
+
+def follows_the_ego(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a road user following the ego ("a bus is following us", "tailgating me",
+    "follows the ego") read as following it from behind: the ego as the object of a verb of following
+    said of a road user is what it follows, so it starts behind the ego and keeps to its speed."""
+    out = []
+    for link, mentions in clauses:
+        kept: list = []
+        for k, m in enumerate(mentions):
+            nxt = mentions[k + 1] if k + 1 < len(mentions) else None
+            subject = next((x for x in reversed(mentions[:k]) if x.slot == "actor"), None)
+            if (
+                _a_following(m)
+                and nxt is not None
+                and nxt.slot == "actor"
+                and nxt.value == "ego"
+                and all(t in ("the", "a") for t in tokens[m.end : nxt.start])
+                and subject is not None
+                and subject.value != "ego"
+            ):
+                kept.append(replace(m, slot="behaviour", value=("follow_vehicle", {})))
+                kept.append(replace(m, slot="relation", value="behind"))
+                continue
+            kept.append(m)
+        out.append((link, kept))
+    return out
 
 
 #: What a road user the ego passes may already be said to do: going on, along the road or its lane.
