@@ -298,6 +298,19 @@ def test_a_road_user_the_ego_passes_goes_along_ahead_of_it(text):
 @pytest.mark.parametrize(
     "text",
     [
+        "Ego turns right at a junction; an oncoming cyclist goes straight at 20 km/h, ego gives way and "
+        "the cyclist passes.",
+        "We give way at the T-junction, and a lorry on the main road goes past at 60 km/h.",
+        "The ego waits at the give-way line and a motorbike on the main road passes by at 50 km/h.",
+    ],
+)
+def test_a_road_user_passing_while_the_ego_yields_keeps_going(text):
+    assert _behaviours(text)[0] in ("keep_going", "keep_lane", "along_road")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
         "Ego 60 km/h on the ring road. A van is following us closely.",
         "Ego at 50 mph, a pickup has been tailing me for miles, braking whenever I braked. It never overtook.",
         "Ego 70 km/h; a lorry follows the ego at 10 m the whole way.",

@@ -867,7 +867,7 @@ def chains(clauses: list, tokens: list[str]) -> list:
     clauses = weather_not_behaviour(room_to_act_not_behaviour(clauses, tokens))
     clauses = across_to_turn(a_left_or_a_right(clauses, tokens))
     clauses = there_is_a_new_one(parked_in_the_lane(state_before_its_noun(clauses, tokens), tokens), tokens)
-    clauses = follows_the_ego(clauses, tokens)
+    clauses = passes_while_the_ego_yields(follows_the_ego(clauses, tokens))
     return slowing_into_a_stop(lets_the_ego_go(into_a_lane(clauses, tokens), tokens))
 
 
@@ -937,3 +937,32 @@ def passes_someone(m, nxt) -> bool:
         and nxt.value != "ego"
         and nxt.start <= m.end + 2
     )
+
+
+#: What the ego does when it lets another go first: gives way, waits, stops.
+_EGO_HOLDS = frozenset(("give_way", "stop"))
+
+
+def passes_while_the_ego_yields(clauses: list) -> list:
+    """``clauses`` with a road user passing, with no one as the object, after the ego gives way ("ego
+    yields and the scooter passes", "we wait; the bus goes past") read as going on: it passes through
+    the place the ego holds back from, it does not overtake the ego."""
+    out = []
+    held = False
+    for link, mentions in clauses:
+        kept: list = []
+        for k, m in enumerate(mentions):
+            before = mentions[k - 1] if k else None
+            if before is not None and before.slot == "modal":
+                before = mentions[k - 2] if k > 1 else None
+            holds = m.slot == "stationary" or (m.slot == "behaviour" and m.value[0] in _EGO_HOLDS)
+            if holds and before is not None:
+                held = held or (before.slot == "actor" and before.value == "ego")
+            nxt = mentions[k + 1] if k + 1 < len(mentions) else None
+            acted_on = nxt is not None and nxt.slot in ("actor", "pronoun") and nxt.start <= m.end + 2
+            if held and passes(m) and not acted_on and not (before is not None and before.value == "ego"):
+                kept.append(replace(m, value=("keep_going", {})))
+                continue
+            kept.append(m)
+        out.append((link, kept))
+    return out
