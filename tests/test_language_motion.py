@@ -320,3 +320,18 @@ def test_a_road_user_following_the_ego_follows_it_from_behind(text):
     (actor,) = read(text).actors
     assert actor.behaviours[0][0] == "follow_vehicle"
     assert actor.relation == "behind"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Ego at 20 km/h at a roundabout, a van already going round from the left, we yield. The van carries on round.",
+        "Mini-roundabout: the ego waits at the line; a cyclist coming round from the right continues at 15 km/h.",
+        "At the roundabout we give way. A lorry from the left keeps going at 25 km/h.",
+    ],
+)
+def test_a_road_user_the_ego_gives_way_to_goes_on_through_the_junction(text):
+    (actor,) = read(text).actors
+    assert (actor.relation, actor.behaviours[0][0]) in {
+        (f"junction_{side}", name) for side in ("left", "right") for name in ("keep_going", "keep_lane")
+    }

@@ -946,7 +946,8 @@ _EGO_HOLDS = frozenset(("give_way", "stop"))
 def passes_while_the_ego_yields(clauses: list) -> list:
     """``clauses`` with a road user passing, with no one as the object, after the ego gives way ("ego
     yields and the scooter passes", "we wait; the bus goes past") read as going on: it passes through
-    the place the ego holds back from, it does not overtake the ego."""
+    the place the ego holds back from, it does not overtake the ego. Going on, it has the way
+    ("_has_way"): it does not run across the ego's path against a signal, the ego let it by."""
     out = []
     held = False
     for link, mentions in clauses:
@@ -960,8 +961,12 @@ def passes_while_the_ego_yields(clauses: list) -> list:
                 held = held or (before.slot == "actor" and before.value == "ego")
             nxt = mentions[k + 1] if k + 1 < len(mentions) else None
             acted_on = nxt is not None and nxt.slot in ("actor", "pronoun") and nxt.start <= m.end + 2
-            if held and passes(m) and not acted_on and not (before is not None and before.value == "ego"):
-                kept.append(replace(m, value=("keep_going", {})))
+            by_another = not (before is not None and before.value == "ego")
+            if held and passes(m) and not acted_on and by_another:
+                kept.append(replace(m, value=("keep_going", {"_has_way": 1.0})))
+                continue
+            if held and m.slot == "behaviour" and m.value[0] == "keep_going" and by_another:
+                kept.append(replace(m, value=("keep_going", {**m.value[1], "_has_way": 1.0})))
                 continue
             kept.append(m)
         out.append((link, kept))

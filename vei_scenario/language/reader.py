@@ -227,6 +227,7 @@ class _Actor:
     member_named: bool = False  # told apart from its group ("the first one", "the other")
     hides: bool = False  # named as what someone comes out from behind or between
     passed: bool = False  # what the ego passes ("the ego overtakes her"): going along ahead of it
+    has_way: bool = False  # going on while the ego gives way ("we yield; the van carries on")
 
 
 #: Euro NCAP's names of its test scenarios ("Car-to-Car Rear stationary", "Car-to-Pedestrian Nearside
@@ -1531,6 +1532,7 @@ def read(text: str) -> Reading:
                 cfg["_plain_brake"] = 1.0  # ("brakes": how hard, a stop said after it tells)
             a.goes_on = a.goes_on or bool(cfg.pop("_denied", None))
             cfg.pop("_still", None)
+            a.has_way = a.has_way or bool(cfg.pop("_has_way", None))
             a.behaviours[i] = (name, cfg, crit_here or _verb_criticality(words), lk)
         if crit_here:
             if not named and isinstance(subject, _Actor) and subject.crit is None:
@@ -1739,7 +1741,7 @@ def read(text: str) -> Reading:
             junction
             and spec.relation in ("junction_left", "junction_right")
             and behaviours[:1]
-            and (behaviours[0][0] == "keep_going" and not a.stationary)
+            and (behaviours[0][0] == "keep_going" and not a.stationary and not a.has_way)
         ):  # entering the junction from a side road: across the ego's path
             if a.kind == "pedestrian":  # (on foot, from the kerb of that side: a walker does not drive an arm)
                 spec.relation = "roadside_" + spec.relation.split("_")[1]
@@ -2327,6 +2329,7 @@ def _apply(m, who, r, link, added) -> None:
                 a.goes_on = True  # ("fails to yield", "does not give way": one phrase, and it goes on)
             if a.behaviours and a.behaviours[-1][0] == name and name != "change_speed":
                 a.goes_on = a.goes_on or bool(cfg.get("_denied"))  # ("enters and fails to yield": it goes)
+                a.has_way = a.has_way or bool(cfg.get("_has_way"))  # ("going round ... we yield; it goes on")
                 continue  # ("brakes ... and stops": said twice over)
             said = m.words if not _adverb(m.next_) else f"{m.words} {m.next_}"  # ("brakes moderately")
             a.behaviours.append((name, dict(cfg, _words=said), None, link if not added else "sequence"))
