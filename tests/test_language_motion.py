@@ -335,3 +335,15 @@ def test_a_road_user_the_ego_gives_way_to_goes_on_through_the_junction(text):
     assert (actor.relation, actor.behaviours[0][0]) in {
         (f"junction_{side}", name) for side in ("left", "right") for name in ("keep_going", "keep_lane")
     }
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Ego at 50 km/h; a motorbike comes past us on the right at 80 km/h.",
+        "I was doing 40 mph when a van came past me on the outside.",
+        "We are at 30 km/h and a cyclist is coming past us on the left.",
+    ],
+)
+def test_coming_past_the_ego_is_overtaking_it(text):
+    assert _behaviours(text)[0] == "overtake"
