@@ -340,7 +340,7 @@ def test_both_cars_before_anyone_are_the_ego_and_one_more():
          ["cross_in_front"]),
         # a clause that goes on with its subject: the speed is that subject's (before: the ego's)
         ("An e-scooter follows the ego closely and then overtakes it on the right at 25 km/h.", None, "e-scooter",
-         None, 25, ["follow_vehicle", "overtake"]),
+         "behind", 25, ["follow_vehicle", "overtake"]),
         # the ego follows someone, or someone leads: that one is ahead (before: no place)
         ("The subject vehicle follows a lead car at a 2 s gap; the lead car brakes hard.", None, "car", "ahead",
          None, ["sudden_stop"]),

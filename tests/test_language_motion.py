@@ -266,3 +266,84 @@ def test_a_rider_off_the_kerb_or_pavement_crosses_into_the_road():
     assert _behaviours("A cyclist came off the kerb into my path.") == ["cross_in_front"]
     said = "A cyclist rode on the pavement, then swung out into the road in front of me."
     assert _behaviours(said) == ["cross_in_front"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Ego 40 km/h on the main road. A van waits at the stop line on the left, letting the ego (40 km/h) go by.",
+        "On the side road to our right a cyclist pulls up at the line, allowing us (at 30 mph) to pass.",
+        "A lorry at the junction on my left holds back and lets me (doing 25 mph in the main road) through.",
+    ],
+)
+def test_an_aside_in_brackets_after_the_ego_does_not_break_letting_it_go(text):
+    assert _behaviours(text)[-1:] == ["give_way"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Ego at 50 km/h. A cyclist rides along the right edge in our direction at 15 km/h, ego passes him.",
+        "Ego 50 km/h. A walker on the left verge going our way at 5 km/h; the ego overtakes her.",
+        "Overtook a cyclist on our way home, he was riding by the verge at about 10 mph.",
+        "I went past a mobility scooter on the lane this morning, she was trundling along at 5 mph.",
+    ],
+)
+def test_a_road_user_the_ego_passes_goes_along_ahead_of_it(text):
+    (actor,) = read(text).actors
+    assert actor.behaviours[0][0] in ("along_road", "keep_lane", "keep_going")
+    assert actor.relation in ("ahead", "roadside_left", "roadside_right")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Ego turns right at a junction; an oncoming cyclist goes straight at 20 km/h, ego gives way and "
+        "the cyclist passes.",
+        "We give way at the T-junction, and a lorry on the main road goes past at 60 km/h.",
+        "The ego waits at the give-way line and a motorbike on the main road passes by at 50 km/h.",
+    ],
+)
+def test_a_road_user_passing_while_the_ego_yields_keeps_going(text):
+    assert _behaviours(text)[0] in ("keep_going", "keep_lane", "along_road")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Ego 60 km/h on the ring road. A van is following us closely.",
+        "Ego at 50 mph, a pickup has been tailing me for miles, braking whenever I braked. It never overtook.",
+        "Ego 70 km/h; a lorry follows the ego at 10 m the whole way.",
+    ],
+)
+def test_a_road_user_following_the_ego_follows_it_from_behind(text):
+    (actor,) = read(text).actors
+    assert actor.behaviours[0][0] == "follow_vehicle"
+    assert actor.relation == "behind"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Ego at 20 km/h at a roundabout, a van already going round from the left, we yield. The van carries on round.",
+        "Mini-roundabout: the ego waits at the line; a cyclist coming round from the right continues at 15 km/h.",
+        "At the roundabout we give way. A lorry from the left keeps going at 25 km/h.",
+    ],
+)
+def test_a_road_user_the_ego_gives_way_to_goes_on_through_the_junction(text):
+    (actor,) = read(text).actors
+    assert (actor.relation, actor.behaviours[0][0]) in {
+        (f"junction_{side}", name) for side in ("left", "right") for name in ("keep_going", "keep_lane")
+    }
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Ego at 50 km/h; a motorbike comes past us on the right at 80 km/h.",
+        "I was doing 40 mph when a van came past me on the outside.",
+        "We are at 30 km/h and a cyclist is coming past us on the left.",
+    ],
+)
+def test_coming_past_the_ego_is_overtaking_it(text):
+    assert _behaviours(text)[0] == "overtake"

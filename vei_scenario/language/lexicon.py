@@ -375,7 +375,7 @@ BEHAVIOUR_VERBS = {
         "drift over",
         "drift across",
     ),
-    "overtake": ("overtake", "pass", "filter", "undertake", "pull past", "go past", "zoom past"),
+    "overtake": ("overtake", "pass", "filter", "undertake", "pull past", "go past", "come past", "zoom past"),
     "change_lane": (
         "change lane",
         "change lanes",
@@ -459,6 +459,7 @@ BEHAVIOUR_VERBS = {
     ),
     "follow_vehicle": (
         "tailgate",
+        "tail",
         "follow",
         "ride bumper",
         "ride my bumper",

@@ -236,6 +236,25 @@ def _let_before(tokens: list[str], i: int, before) -> int:
     return j if set(lemmas(tokens[j]).get("VERB", ())) & _LET else 0
 
 
+def _past_its_speed(mentions: list, tokens: list[str], i: int) -> int:
+    """Where the words after the ego at ``tokens[i]`` go on once a speed said as an aside of it is read
+    past ("letting the ego (50 km/h) pass", "lets me, doing 30 mph on the main road, through"): the aside says how fast
+    the ego goes, not what it is let do."""
+    j = i
+    while j < len(tokens) and tokens[j] in ("at", "doing", "going", ","):
+        j += 1
+    said = next((s for s in mentions if s.slot == "speed" and s.start == j), None)
+    if said is None:
+        return i
+    j = said.end
+    if j < len(tokens) and tokens[j] in ("on", "in", "along"):  # ("(50 km/h on the main road)": where it goes)
+        where = next((s for s in mentions if s.slot == "map" and j < s.start <= j + 4), None)
+        j = where.end if where is not None else j
+    while j < len(tokens) and tokens[j] == ",":
+        j += 1
+    return j
+
+
 def lets_the_ego_go(clauses: list, tokens: list[str]) -> list:
     """``clauses`` with a road user letting the ego go ("waves me out", "beckons us across", "lets the
     ego complete the turn", "allows the ego to finish its turn") read as giving way: the ego as the
@@ -259,6 +278,8 @@ def lets_the_ego_go(clauses: list, tokens: list[str]) -> list:
                 nxt, after = m, m.end  # ("..., letting the ego go by": a participle the reader reads past)
                 said = replace(m, words=" ".join(tokens[_let_before(tokens, m.start, None) : m.end]))
                 letting = True
+            if nxt is not None and nxt.slot == "actor" and nxt.value == "ego":
+                after = _past_its_speed(mentions, tokens, after)
             if (
                 letting
                 and nxt is not None
@@ -860,4 +881,107 @@ def chains(clauses: list, tokens: list[str]) -> list:
     clauses = weather_not_behaviour(room_to_act_not_behaviour(clauses, tokens))
     clauses = across_to_turn(a_left_or_a_right(clauses, tokens))
     clauses = there_is_a_new_one(parked_in_the_lane(state_before_its_noun(clauses, tokens), tokens), tokens)
+    clauses = passes_while_the_ego_yields(follows_the_ego(clauses, tokens))
     return slowing_into_a_stop(lets_the_ego_go(into_a_lane(clauses, tokens), tokens))
+
+
+def _a_following(m) -> bool:
+    """Whether ``m`` says following: the behaviour, or "following" read as where one is (behind)."""
+    if m.slot == "behaviour":
+        return m.value[0] == "follow_vehicle" and m.prev not in _DENYING
+    return m.slot == "relation" and m.value == "behind" and "follow" in lemmas(m.words.split()[0]).get("VERB", ())
+
+
+def follows_the_ego(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a road user following the ego ("a bus is following us", "tailgating me",
+    "follows the ego") read as following it from behind: the ego as the object of a verb of following
+    said of a road user is what it follows, so it starts behind the ego and keeps to its speed."""
+    out = []
+    for link, mentions in clauses:
+        kept: list = []
+        for k, m in enumerate(mentions):
+            nxt = mentions[k + 1] if k + 1 < len(mentions) else None
+            subject = next((x for x in reversed(mentions[:k]) if x.slot == "actor"), None)
+            if (
+                _a_following(m)
+                and nxt is not None
+                and nxt.slot == "actor"
+                and nxt.value == "ego"
+                and all(t in ("the", "a") for t in tokens[m.end : nxt.start])
+                and subject is not None
+                and subject.value != "ego"
+            ):
+                kept.append(replace(m, slot="behaviour", value=("follow_vehicle", {})))
+                kept.append(replace(m, slot="relation", value="behind"))
+                continue
+            kept.append(m)
+        out.append((link, kept))
+    return out
+
+
+#: What a road user the ego passes may already be said to do: going on, along the road or its lane.
+_BEING_PASSED = frozenset(("keep_going", "along_road", "keep_lane"))
+
+
+def passes(m) -> bool:
+    """Whether mention ``m`` is a verb of passing ("passes", "overtook", "went past")."""
+    return m is not None and m.slot == "behaviour" and m.value[0] == "overtake" and m.prev not in _DENYING
+
+
+#: Words that, right before a verb or noun of passing, say it is not done ("no overtake", "never passed").
+_DENYING = frozenset(("no", "not", "never", "without", "n't", "nor"))
+
+
+def passed_goes_along(behaviours: list, passed: bool) -> list:
+    """``behaviours`` of a road user the ego passes ("the ego overtakes her", "ego passes him"): being
+    passed, it goes along the road ahead of the ego, not across it, whatever its place would otherwise
+    make of a road user said only to go on. A move said of it (it turns, it cuts in) stays."""
+    if not passed or not all(b[0] in _BEING_PASSED for b in behaviours):
+        return behaviours
+    return [("along_road", {}, *behaviours[0][2:])]
+
+
+def passes_someone(m, nxt) -> bool:
+    """Whether ``m`` is a verb of passing with a road user as its object ("overtook a cyclist", not
+    "passes me" nor "passes without any conflict")."""
+    return (
+        passes(m)
+        and nxt is not None
+        and nxt.slot in ("actor", "pronoun")
+        and nxt.value != "ego"
+        and nxt.start <= m.end + 2
+    )
+
+
+#: What the ego does when it lets another go first: gives way, waits, stops.
+_EGO_HOLDS = frozenset(("give_way", "stop"))
+
+
+def passes_while_the_ego_yields(clauses: list) -> list:
+    """``clauses`` with a road user passing, with no one as the object, after the ego gives way ("ego
+    yields and the scooter passes", "we wait; the bus goes past") read as going on: it passes through
+    the place the ego holds back from, it does not overtake the ego. Going on, it has the way
+    ("_has_way"): it does not run across the ego's path against a signal, the ego let it by."""
+    out = []
+    held = False
+    for link, mentions in clauses:
+        kept: list = []
+        for k, m in enumerate(mentions):
+            before = mentions[k - 1] if k else None
+            if before is not None and before.slot == "modal":
+                before = mentions[k - 2] if k > 1 else None
+            holds = m.slot == "stationary" or (m.slot == "behaviour" and m.value[0] in _EGO_HOLDS)
+            if holds and before is not None:
+                held = held or (before.slot == "actor" and before.value == "ego")
+            nxt = mentions[k + 1] if k + 1 < len(mentions) else None
+            acted_on = nxt is not None and nxt.slot in ("actor", "pronoun") and nxt.start <= m.end + 2
+            by_another = not (before is not None and before.value == "ego")
+            if held and passes(m) and not acted_on and by_another:
+                kept.append(replace(m, value=("keep_going", {"_has_way": 1.0})))
+                continue
+            if held and m.slot == "behaviour" and m.value[0] == "keep_going" and by_another:
+                kept.append(replace(m, value=("keep_going", {**m.value[1], "_has_way": 1.0})))
+                continue
+            kept.append(m)
+        out.append((link, kept))
+    return out

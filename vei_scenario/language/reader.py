@@ -28,7 +28,7 @@ import re
 from dataclasses import dataclass, field, replace
 from functools import lru_cache
 
-from vei_scenario.language import discourse, ego, sides
+from vei_scenario.language import discourse, ego, motion, sides
 from vei_scenario.language import lexicon as L
 from vei_scenario.language import quantities as Q
 from vei_scenario.language import settings as S
@@ -226,6 +226,8 @@ class _Actor:
     pavement: bool = False  # said to be on a pavement (off the road), not in a cycle lane
     member_named: bool = False  # told apart from its group ("the first one", "the other")
     hides: bool = False  # named as what someone comes out from behind or between
+    passed: bool = False  # what the ego passes ("the ego overtakes her"): going along ahead of it
+    has_way: bool = False  # going on while the ego gives way ("we yield; the van carries on")
 
 
 #: Euro NCAP's names of its test scenarios ("Car-to-Car Rear stationary", "Car-to-Pedestrian Nearside
@@ -1171,6 +1173,8 @@ def read(text: str) -> Reading:
                     role = "verb"  # "approaches a stationary car"
                 if m.slot == "pronoun":
                     if after_verb or m.prev in L.OBJECT_PREPOSITIONS:
+                        if after_verb and subject == "ego" and actors and motion.passes(prev):
+                            (bound.get(m.words) or actors[-1]).passed = True  # ("ego passes him")
                         prev = m
                         continue  # "overtakes it": an object already known
                     who = subject if subject is not None else "ego"
@@ -1312,6 +1316,8 @@ def read(text: str) -> Reading:
                     who.hides = True  # ("darts out from behind an ice-cream van": what it comes out from)
                 if role == "verb" and isinstance(who, _Actor) and after_verb:
                     who.acted_on = True  # ("the ego is overtaking a truck": the truck is in the scene)
+                if role == "verb" and isinstance(who, _Actor) and clause_subject == "ego" and motion.passes(prev):
+                    who.passed = True  # ("the ego overtakes a cyclist")
                 if role == "verb" and isinstance(who, _Actor) and isinstance(clause_subject, _Actor) and after_verb:
                     who.object_of = who.object_of or clause_subject
                 named.append((who, role))
@@ -1357,7 +1363,7 @@ def read(text: str) -> Reading:
                 and subject is None
                 and not named
                 and m.slot in ("behaviour", "ego_verb")
-                and (m.slot == "ego_verb" or m.value[0] == "keep_going")
+                and (m.slot == "ego_verb" or m.value[0] == "keep_going" or motion.passes_someone(m, nxt))
             ):  # "Just cruising behind my mate's car at 60 mph": before anyone is named, the narrator drives
                 clause_subject = subject = "ego"
                 named.append(("ego", "subject"))
@@ -1375,6 +1381,18 @@ def read(text: str) -> Reading:
                     pending.append(replace(m, slot="relation", value="ahead"))
                     prev = m
                     continue
+                if (
+                    target == "ego"
+                    and actors
+                    and motion.passes(m)
+                    and prev is not None
+                    and (_ego_named(prev) or prev.words in ("we", "i", "you"))
+                    and prev.end >= m.start - 1
+                    and not motion.passes_someone(m, nxt)
+                    and m.next_ not in ("each", "one")  # ("we pass each other": both go on their way)
+                    and "oncoming" not in actors[-1].said | {actors[-1].relation}
+                ):
+                    actors[-1].passed = True  # ("a jogger on the verge, ego passes": the one said before)
                 if target == "ego" and m.slot == "behaviour" and m.prev in PASSIVE_AUXILIARIES:
                     passive.append(m)  # said of the ego in the passive: the doer follows after "by"
                     prev = m
@@ -1514,6 +1532,7 @@ def read(text: str) -> Reading:
                 cfg["_plain_brake"] = 1.0  # ("brakes": how hard, a stop said after it tells)
             a.goes_on = a.goes_on or bool(cfg.pop("_denied", None))
             cfg.pop("_still", None)
+            a.has_way = a.has_way or bool(cfg.pop("_has_way", None))
             a.behaviours[i] = (name, cfg, crit_here or _verb_criticality(words), lk)
         if crit_here:
             if not named and isinstance(subject, _Actor) and subject.crit is None:
@@ -1670,6 +1689,9 @@ def read(text: str) -> Reading:
             behaviours = [("stop", {}, None, "sequence")]  # (standing: stopped, and stays so)
         if not behaviours:  # where it is said, but not what it does: it goes on
             behaviours = [("keep_going", {}, None, "sequence")]
+        behaviours = motion.passed_goes_along(behaviours, a.passed)
+        if a.passed and behaviours[0][0] == "along_road" and not (a.relation or a.said):
+            a.said.add("ahead")  # (what the ego passes starts ahead of it)
         if a.accel_mps2 is not None:  # "at 6 m/s²": the deceleration or rate of what it does (within its range)
             behaviours = [(*_with_rate(n, c, a.accel_mps2), k, lk) for n, c, k, lk in behaviours]
         if a.speed_to_mps is not None and a.speed_mps is not None and a.speed_mps >= 0:  # "slows from 80 to 30"
@@ -1719,7 +1741,7 @@ def read(text: str) -> Reading:
             junction
             and spec.relation in ("junction_left", "junction_right")
             and behaviours[:1]
-            and (behaviours[0][0] == "keep_going" and not a.stationary)
+            and (behaviours[0][0] == "keep_going" and not a.stationary and not a.has_way)
         ):  # entering the junction from a side road: across the ego's path
             if a.kind == "pedestrian":  # (on foot, from the kerb of that side: a walker does not drive an arm)
                 spec.relation = "roadside_" + spec.relation.split("_")[1]
@@ -2004,7 +2026,7 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool) -> None:
     if (
         a.kind in VULNERABLE
         and spec.behaviours
-        and set(names) <= {"keep_going", "keep_lane"}
+        and set(names) <= {"keep_going", "keep_lane", *(("along_road",) if a.passed else ())}
         and spec.speed_mps != 0.0
         and spec.relation in (None, "ahead", "oncoming", "roadside_right", "roadside_left", "behind")
         and not (junction and spec.relation is None and not (a.kind in RIDERS and a.wrong_way))
@@ -2307,6 +2329,7 @@ def _apply(m, who, r, link, added) -> None:
                 a.goes_on = True  # ("fails to yield", "does not give way": one phrase, and it goes on)
             if a.behaviours and a.behaviours[-1][0] == name and name != "change_speed":
                 a.goes_on = a.goes_on or bool(cfg.get("_denied"))  # ("enters and fails to yield": it goes)
+                a.has_way = a.has_way or bool(cfg.get("_has_way"))  # ("going round ... we yield; it goes on")
                 continue  # ("brakes ... and stops": said twice over)
             said = m.words if not _adverb(m.next_) else f"{m.words} {m.next_}"  # ("brakes moderately")
             a.behaviours.append((name, dict(cfg, _words=said), None, link if not added else "sequence"))
