@@ -37,6 +37,8 @@ FIRST = {
     "language_independent_g.json": ((60, 60, 24, 56), "sealed until the reader's last change"),
     "language_independent_h.json": ((50, 50, 30, 43), "measured when written"),
     "language_independent_i.json": ((50, 50, 12, 38), "measured when written"),
+    "language_independent_j.json": ((45, 45, 27, 38), "sealed until the reader's last change"),
+    "language_independent_k.json": ((45, 45, 24, 41), "sealed until the reader's last change"),
 }
 
 
