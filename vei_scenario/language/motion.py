@@ -190,8 +190,9 @@ _GIVE = frozenset(("give", "gives", "gave", "giving", "given"))
 _WAY = frozenset(("way", "priority", "precedence"))
 
 
-def give_the_ego_the_way(clauses: list, tokens: list[str]) -> list:
-    """``clauses`` with "give" + the ego + the way (priority, the right of way) read as giving way."""
+def _rewrite(clauses: list, rule) -> list:
+    """``clauses`` with each mention for which ``rule(k, m, mentions)`` gives a new mention replaced by
+    it; the mentions that new one spans (up to its ``end``) are read into it and dropped."""
     out = []
     for link, mentions in clauses:
         kept: list = []
@@ -199,23 +200,35 @@ def give_the_ego_the_way(clauses: list, tokens: list[str]) -> list:
         for k, m in enumerate(mentions):
             if m.start < skip_to:
                 continue
-            nxt = mentions[k + 1] if k + 1 < len(mentions) else None
-            if (
-                m.words in _GIVE
-                and m.slot in ("unknown_verb", "behaviour")
-                and nxt is not None
-                and nxt.slot == "actor"
-                and nxt.value == "ego"
-                and all(t in ("the", "a") for t in tokens[m.end : nxt.start])  # ("gave the ego priority")
-                and set(tokens[nxt.end : nxt.end + 4]) & _WAY
-            ):
-                way = next(i for i in range(nxt.end, nxt.end + 4) if tokens[i] in _WAY)
-                kept.append(replace(m, slot="behaviour", value=("give_way", {}), end=way + 1))
-                skip_to = way + 1  # (the ego and "the right of way" said with it)
+            new = rule(k, m, mentions)
+            if new is not None:
+                kept.append(new)
+                skip_to = new.end
                 continue
             kept.append(m)
         out.append((link, kept))
     return out
+
+
+def give_the_ego_the_way(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with "give" + the ego + the way (priority, the right of way) read as giving way."""
+
+    def rule(k: int, m, mentions: list):
+        nxt = mentions[k + 1] if k + 1 < len(mentions) else None
+        if (
+            m.words in _GIVE
+            and m.slot in ("unknown_verb", "behaviour")
+            and nxt is not None
+            and nxt.slot == "actor"
+            and nxt.value == "ego"
+            and all(t in ("the", "a") for t in tokens[m.end : nxt.start])  # ("gave the ego priority")
+            and set(tokens[nxt.end : nxt.end + 4]) & _WAY
+        ):
+            way = next(i for i in range(nxt.end, nxt.end + 4) if tokens[i] in _WAY)
+            return replace(m, slot="behaviour", value=("give_way", {}), end=way + 1)  # (with "the way")
+        return None
+
+    return _rewrite(clauses, rule)
 
 
 #: Verbs (lemmas) of letting someone go: with the ego as their object, the road user gives way.
@@ -260,42 +273,33 @@ def lets_the_ego_go(clauses: list, tokens: list[str]) -> list:
     ego complete the turn", "allows the ego to finish its turn") read as giving way: the ego as the
     object of a verb of letting, then where it goes or what it does. Letting the ego do something is
     what giving way to it is, however the verb is said."""
-    out = []
-    for link, mentions in clauses:
-        kept: list = []
-        skip_to = -1
-        for k, m in enumerate(mentions):
-            if m.start < skip_to:
-                continue
-            nxt = mentions[k + 1] if k + 1 < len(mentions) else None
-            verb = m.words.split()[0]
-            letting = m.slot in ("unknown_verb", "behaviour", "ego_verb") and bool(
-                set(lemmas(verb).get("VERB", ())) & _LET
-            )
-            after = nxt.end if nxt is not None else len(tokens)
-            said = m
-            if m.slot == "actor" and m.value == "ego" and _let_before(tokens, m.start, mentions[k - 1] if k else None):
-                nxt, after = m, m.end  # ("..., letting the ego go by": a participle the reader reads past)
-                said = replace(m, words=" ".join(tokens[_let_before(tokens, m.start, None) : m.end]))
-                letting = True
-            if nxt is not None and nxt.slot == "actor" and nxt.value == "ego":
-                after = _past_its_speed(mentions, tokens, after)
-            if (
-                letting
-                and nxt is not None
-                and nxt.slot == "actor"
-                and nxt.value == "ego"
-                and all(t in ("the", "a") for t in tokens[m.end : nxt.start])
-                and after < len(tokens)
-                and (tokens[after] in _GO_WORDS or "VERB" in lemmas(tokens[after]))
-            ):
-                end = after + 1 + (tokens[after] == "to")  # ("allows the ego to pass": through its verb)
-                kept.append(replace(said, slot="behaviour", value=("give_way", {}), end=end))
-                skip_to = end
-                continue
-            kept.append(m)
-        out.append((link, kept))
-    return out
+
+    def rule(k: int, m, mentions: list):
+        nxt = mentions[k + 1] if k + 1 < len(mentions) else None
+        verb = m.words.split()[0]
+        letting = m.slot in ("unknown_verb", "behaviour", "ego_verb") and bool(set(lemmas(verb).get("VERB", ())) & _LET)
+        after = nxt.end if nxt is not None else len(tokens)
+        said = m
+        if m.slot == "actor" and m.value == "ego" and _let_before(tokens, m.start, mentions[k - 1] if k else None):
+            nxt, after = m, m.end  # ("..., letting the ego go by": a participle the reader reads past)
+            said = replace(m, words=" ".join(tokens[_let_before(tokens, m.start, None) : m.end]))
+            letting = True
+        if nxt is not None and nxt.slot == "actor" and nxt.value == "ego":
+            after = _past_its_speed(mentions, tokens, after)
+        if (
+            letting
+            and nxt is not None
+            and nxt.slot == "actor"
+            and nxt.value == "ego"
+            and all(t in ("the", "a") for t in tokens[m.end : nxt.start])
+            and after < len(tokens)
+            and (tokens[after] in _GO_WORDS or "VERB" in lemmas(tokens[after]))
+        ):
+            end = after + 1 + (tokens[after] == "to")  # ("allows the ego to pass": through its verb)
+            return replace(said, slot="behaviour", value=("give_way", {}), end=end)
+        return None
+
+    return _rewrite(clauses, rule)
 
 
 def _led_towards(m, before) -> bool:

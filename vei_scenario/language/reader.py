@@ -57,7 +57,6 @@ from vei_scenario.language.reading import ActorSpec, NotUnderstood, Reading
 from vei_scenario.language.route import ego_route
 from vei_scenario.language.stated import (
     stated_clock,
-    stated_density,
     stated_heavy_rain,
     stated_lanes,
 )
@@ -1802,7 +1801,7 @@ def read(text: str) -> Reading:
     clock = S.twelve_hour(clock, S.without_bounds(said), [v for k, w, v in said_as if k == "time"])
     r.time = S.time_of_day([(w, v) for k, w, v in said_as if k == "time"], clock) or r.time
     r.weather = S.sky_over_surface([(w, v) for k, w, v in said_as if k == "weather"]) or r.weather or S.sunny(said)
-    r.density = S.density(said) or stated_density(said) or r.density
+    r.density = S.density(said) or r.density
     if r.weather in (None, "rain") and stated_heavy_rain(said):
         r.weather = "heavy_rain"
     return r

@@ -187,20 +187,29 @@ _TRAFFIC_NOTE = re.compile(
     r"\btraffic(?: (moderate|heavy|busy|dense|sparse|quiet)"
     r"| ?[:=] ?(light|moderate|heavy|busy|dense|sparse|quiet|none))\b"
 )
-_NOTED = {"moderate": "moderate", "heavy": "heavy", "busy": "heavy", "dense": "heavy", "sparse": "light",
-          "quiet": "light", "light": "light", "none": "none"}  # fmt: skip
+#: Traffic said of the road ("the motorway was heavy", "traffic was moderate").
+_SAID_OF_ROAD = re.compile(
+    r"\b(?:traffic|motorway|road|roads|street|streets|highway) (?:is|was|were|being) (?:very |quite |fairly |pretty |"
+    r"really )?(light|moderate|heavy|busy|quiet|dense|sparse|empty)\b"
+)
+#: What each word of the two patterns above says of the traffic.
+_DENSITY_WORDS = {"light": "light", "sparse": "light", "quiet": "light", "moderate": "moderate", "heavy": "heavy",
+                  "busy": "heavy", "dense": "heavy", "empty": "none", "none": "none"}  # fmt: skip
 
 
 def density(said: str) -> str | None:
     """Background traffic said as a quantity of other road users: none ("not another car about"), light
-    ("barely any traffic", "only a handful of cars"), or as a note ("traffic moderate"); None where the
-    text says none of these."""
+    ("barely any traffic", "only a handful of cars"), as a note ("traffic moderate") or of the road ("the
+    motorway was heavy"); None where the text says none of these."""
     if no_other_traffic(said):
         return "none"
     if _FEW_OTHERS.search(said):
         return "light"
     note = _TRAFFIC_NOTE.search(said)
-    return None if note is None else _NOTED[note.group(1) or note.group(2)]
+    if note is not None:
+        return _DENSITY_WORDS[note.group(1) or note.group(2)]
+    m = _SAID_OF_ROAD.search(said)
+    return None if m is None else _DENSITY_WORDS[m.group(1)]
 
 
 #: The sun or a blue sky said ("blue skies", "the sun was out", "sunshine", "low sun glare"): clear.

@@ -1,7 +1,7 @@
 """What a description states as a whole, read from its normalised text (contractions as "did not",
-numbers before a unit as digits): the lanes of its road, a clock time, the traffic, heavy rain. The
-outcome it states is read by :mod:`vei_scenario.language.outcome` (``stated_outcome`` here is that
-reading, under the name the reader has always imported).
+numbers before a unit as digits): the lanes of its road, a clock time, heavy rain. The traffic is read
+by :mod:`vei_scenario.language.settings`, the outcome by :mod:`vei_scenario.language.outcome`
+(``stated_outcome`` here is that reading, under the name the reader has always imported).
 """
 
 from __future__ import annotations
@@ -10,7 +10,7 @@ import re
 
 from vei_scenario.language.outcome import stated_intent as stated_outcome
 
-__all__ = ["stated_outcome", "stated_lanes", "stated_clock", "stated_density", "stated_heavy_rain"]
+__all__ = ["stated_outcome", "stated_lanes", "stated_clock", "stated_heavy_rain"]
 
 _WORD_NUMBERS = {"one": 1, "two": 2, "three": 3, "four": 4, "1": 1, "2": 2, "3": 3, "4": 4}
 _N = r"(one|two|three|four|[1-4])"
@@ -73,20 +73,6 @@ def stated_clock(text: str) -> str | None:
     if half is not None and hour <= 12:  # (12 am is midnight, 12 pm noon)
         hour = hour % 12 + (12 if half == "pm" else 0)
     return f"{hour:02d}:{minute}"
-
-
-_DENSITY = re.compile(
-    r"\b(?:traffic|motorway|road|roads|street|streets|highway) (?:is|was|were|being) (?:very |quite |fairly |pretty |"
-    r"really )?(light|moderate|heavy|busy|quiet|dense|sparse|empty)\b"
-)
-_DENSITY_WORDS = {"light": "light", "sparse": "light", "moderate": "moderate", "heavy": "heavy", "busy": "heavy",
-                  "dense": "heavy", "quiet": "light", "empty": "none"}  # fmt: skip
-
-
-def stated_density(text: str) -> str | None:
-    """Background traffic said of the road ("the motorway was heavy", "traffic was moderate")."""
-    m = _DENSITY.search(text)
-    return None if m is None else _DENSITY_WORDS[m.group(1)]
 
 
 _HEAVY_RAIN = re.compile(
