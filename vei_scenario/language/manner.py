@@ -18,6 +18,8 @@ moderate one. A level stated under a label ("Crit: high", "criticality low") is 
 
 from __future__ import annotations
 
+from vei_scenario.language.clauses import split
+
 DANGEROUS, MODERATE, SAFE = "dangerous", "moderate", "safe"
 
 _CLOSE = frozenset(("close", "closer", "tight", "tighter", "near"))
@@ -44,16 +46,6 @@ _TIMES = frozenset(("morning", "afternoon", "evening", "night", "shift", "summer
 _LEVELS = {"high": DANGEROUS, "medium": MODERATE, "moderate": MODERATE, "mid": MODERATE, "low": SAFE}
 _LABELS = frozenset(("crit", "criticality", "severity", "criticity"))
 _BREAKS = frozenset(".;!?,") | {"but", "and", "then", "so", "though", "although", "because"}
-
-
-def _clauses(tokens: list[str]) -> list[list[str]]:
-    out: list[list[str]] = [[]]
-    for tok in tokens:
-        if tok in _BREAKS:
-            out.append([])
-        else:
-            out[-1].append(tok)
-    return [c for c in out if c]
 
 
 def _closeness(words: list[str], i: int) -> str | None:
@@ -121,7 +113,7 @@ def manner_cues(tokens: list[str]) -> list[str]:
     """What each clause of ``tokens`` (the reader's normalised, lowercased tokens) says on the scales:
     a class, "position" or "denied" (a denied danger), in text order."""
     cues: list[str] = []
-    for words in _clauses(tokens):
+    for words, _ in split(tokens, _BREAKS):
         for i, w in enumerate(words):
             if _denied_danger(words, i):
                 cues.append("denied")

@@ -30,6 +30,7 @@ from functools import lru_cache
 
 from vei_scenario.language import lexicon as L
 from vei_scenario.language import vocabulary as V
+from vei_scenario.language.clauses import split
 from vei_scenario.language.lemmas import lemmas
 
 COLLISION, NEAR_MISS, SAFE = "collision", "near_miss", "safe"
@@ -170,23 +171,14 @@ class _Clause:
 
 
 def _clauses(tokens: list[str]) -> list[_Clause]:
-    """The clauses of ``tokens``: cut at punctuation and at conjunctions."""
+    """The clauses of ``tokens``: cut at punctuation and at conjunctions; one after a clause with "if"
+    or "unless" in its sentence is marked ``after_if``."""
     out: list[_Clause] = []
-    current: list[str] = []
-    first = True
     condition = False
-    for tok in tokens:
-        if tok in _BREAK_PUNCT or tok in _BREAK_WORDS:
-            if current:
-                out.append(_Clause(current, first, after_if=condition))
-                condition = condition or bool({"if", "unless"} & set(current))
-            first = tok in ".;!?:" or (first and not current)
-            condition = condition and tok not in ".;!?:"
-            current = []
-            continue
-        current.append(tok)
-    if current:
-        out.append(_Clause(current, first, after_if=condition))
+    for words, first in split(tokens, _BREAK_PUNCT | _BREAK_WORDS):
+        condition = condition and not first  # (a condition holds to the end of its sentence)
+        out.append(_Clause(words, first, after_if=condition))
+        condition = condition or bool({"if", "unless"} & set(words))
     return out
 
 

@@ -19,6 +19,7 @@ English verbs that take a direction as a turn.
 
 from __future__ import annotations
 
+from vei_scenario.language.clauses import split
 from vei_scenario.language.lemmas import lemmas
 
 #: Verbs that take a direction as a turn ("turn left", "bear right", "swing left", "went left").
@@ -40,7 +41,6 @@ _BEFORE_DIRECTION = frozenset(("at", "to", "the", "off", "hard", "sharp", "sharp
 _BEFORE_TURN_NOUN = frozenset(("a", "the", "next", "first", "second", "quick", "sharp", "hard", "late", "its", "my"))
 #: What ends a clause: punctuation and the conjunctions that open one.
 _BREAK_PUNCT = frozenset(".;!?:,—-()")
-_SENTENCE_END = frozenset(".;!?:")
 _BREAK_WORDS = frozenset(
     ("and", "but", "then", "so", "as", "when", "while", "whilst", "until", "because", "where", "before", "after",
      "once")
@@ -62,24 +62,6 @@ _FIRST_PERSON = frozenset(("i", "we", "me", "my", "us", "our"))
 _PREPOSITIONS = frozenset(("of", "behind", "to", "with", "for", "at", "from", "past", "by", "than", "before", "after",
                            "towards", "toward", "ahead", "beside", "near", "like", "into", "in", "on"))  # fmt: skip
 _DETERMINERS = frozenset(("the", "a", "an", "this", "that", "my", "our", "his", "her", "its", "their", "your"))
-
-
-def _clauses(tokens: list[str]) -> list[tuple[list[str], bool]]:
-    """The clauses of ``tokens`` with whether each opens its sentence."""
-    out: list[tuple[list[str], bool]] = []
-    current: list[str] = []
-    first = True
-    for tok in tokens:
-        if tok in _BREAK_PUNCT or tok in _BREAK_WORDS:
-            if current:
-                out.append((current, first))
-            first = tok in _SENTENCE_END or (first and not current)
-            current = []
-            continue
-        current.append(tok)
-    if current:
-        out.append((current, first))
-    return out
 
 
 def _lemma_in(word: str, verbs: frozenset[str]) -> bool:
@@ -203,7 +185,7 @@ def ego_route(tokens: list[str]) -> str | None:
     normalised, lowercased tokens."""
     story = bool(_FIRST_PERSON & set(tokens))
     previous: str | None = None
-    clauses = _clauses(tokens)
+    clauses = split(tokens, _BREAK_PUNCT | _BREAK_WORDS)
     for n, (words, first) in enumerate(clauses):
         if first:
             previous = None

@@ -1,0 +1,31 @@
+"""Cutting a token list into clauses. The readers of the outcome, the manner and the ego's turn each
+read within a clause (a negation's scope, a degree word's, a turn's subject), and each cuts at its own
+words: what ends a clause for one is part of a clause for another ("as" opens a clause of time for the
+turn, and is a comparison for the outcome), so the cut words are theirs and the cutting is here."""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+
+#: What ends a sentence, and so a clause for every reader.
+SENTENCE_END = frozenset(".;!?:")
+
+
+def split(tokens: Iterable[str], breaks: frozenset[str]) -> list[tuple[list[str], bool]]:
+    """The non-empty clauses of ``tokens`` cut at each of ``breaks`` (punctuation or conjunctions, left
+    out of the clauses), each with whether it opens its sentence (nothing but breaks before it since
+    the text began or a sentence ended)."""
+    out: list[tuple[list[str], bool]] = []
+    current: list[str] = []
+    first = True
+    for tok in tokens:
+        if tok in breaks:
+            if current:
+                out.append((current, first))
+            first = tok in SENTENCE_END or (first and not current)
+            current = []
+            continue
+        current.append(tok)
+    if current:
+        out.append((current, first))
+    return out
