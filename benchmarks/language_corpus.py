@@ -39,6 +39,8 @@ FIRST = {
     "language_independent_i.json": ((50, 50, 12, 38), "measured when written"),
     "language_independent_j.json": ((45, 45, 27, 38), "sealed until the reader's last change"),
     "language_independent_k.json": ((45, 45, 24, 41), "sealed until the reader's last change"),
+    "language_independent_l.json": ((50, 50, 23, 44), "measured when written"),
+    "language_independent_m.json": ((50, 50, 19, 41), "measured when written"),
 }
 
 
