@@ -6,6 +6,7 @@ The controllers in tests/data/sut/ were written from the contract alone, without
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
 import json
 import shlex
@@ -430,12 +431,33 @@ def native_faults(tmp_path_factory) -> dict[str, Path]:
     return {fault: build(fault, out) for fault in ("CRASH", "HANG")}
 
 
-def _session() -> set[int]:
-    """Every process of this session that is not a zombie: a child's orphan stays in it."""
+def _descendants() -> set[int]:
+    """Every live descendant of this process that is not a zombie."""
     import os
 
-    sid = os.getsid(0)
-    return {pid for pid, fields in _processes().items() if int(fields[3]) == sid and fields[0] != "Z"}
+    procs = _processes()
+    found, frontier = set(), {os.getpid()}
+    while frontier:
+        frontier = {pid for pid, fields in procs.items() if int(fields[1]) in frontier and fields[0] != "Z"} - found
+        found |= frontier
+    return found
+
+
+@contextlib.contextmanager
+def _adopting_orphans():
+    """Make this process the child subreaper (Linux prctl) while the block runs, so that a process its
+    children leave behind is re-parented here rather than to init, and ``_descendants`` still sees it.
+    Counting descendants, not the whole session, keeps other jobs of the same session out of the count."""
+    import ctypes
+
+    prctl = ctypes.CDLL(None, use_errno=True).prctl
+    pr_set_child_subreaper = 36
+    if prctl(pr_set_child_subreaper, 1, 0, 0, 0) != 0:
+        pytest.skip("prctl(PR_SET_CHILD_SUBREAPER) is not available here")
+    try:
+        yield
+    finally:
+        prctl(pr_set_child_subreaper, 0, 0, 0, 0)
 
 
 @pytest.mark.parametrize(
@@ -447,10 +469,15 @@ def _session() -> set[int]:
 )
 def test_a_native_fmu_that_crashes_or_hangs_fails_its_run_alone(scenario, tmp_path, capsys, native_faults, fault,
                                                                  options, reason):  # fmt: skip
+    with _adopting_orphans():
+        _fails_alone(scenario, tmp_path, capsys, native_faults[fault], options, reason)
+
+
+def _fails_alone(scenario, tmp_path, capsys, fmu, options, reason):
     import time
 
-    before = _session()
-    target = f"Ego={native_faults[fault]}"
+    before = _descendants()
+    target = f"Ego={fmu}"
     started = time.perf_counter()
     code, _, err = _vei(capsys, "run", scenario, "--controller", target, *options, "-o", tmp_path / "run")
     assert (code, err) == (1, f"vei: error: controller {target} at t = 1.00 s: {reason}\n")
@@ -461,7 +488,7 @@ def test_a_native_fmu_that_crashes_or_hangs_fails_its_run_alone(scenario, tmp_pa
     catalog = json.loads((tmp_path / "sweep" / "catalog.json").read_text())
     assert all(reason in v["error"] for v in catalog["variants"])
     assert time.perf_counter() - started < 30
-    assert _session() - before == set()  # no process left behind (an orphan stays in the session)
+    assert _descendants() - before == set()  # no process left behind (an orphan is adopted here)
 
 
 SWERVE = '''
