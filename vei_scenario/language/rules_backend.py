@@ -468,7 +468,7 @@ def _place_adversary(
         out_speed = 0.0
     elif (
         distance_m is not None
-        and relation in ("ahead", "behind", "oncoming")
+        and relation in ("ahead", "behind", "oncoming", "left", "right")  # (in its lane or the next one)
         and behaviour_name != "cut_in"
         and not (behaviour_name == "overtake" and cfg.get("gap_m") == distance_m)  # (its gap where it cuts back in)
     ):
