@@ -229,3 +229,26 @@ def test_a_road_user_in_the_next_lane_at_a_stated_gap_starts_there(text, gap):
         [adv] = layers["adversaries"]
         assert adv["spawn"]["relation"] in ("left", "right")
         assert abs(float(adv["spawn"]["longitudinal_m"])) == pytest.approx(gap), seed
+
+
+# --- a gap said in a clause whose only subject is the ego, seeing the other ------------------------------
+@pytest.mark.parametrize(
+    "text, gap",
+    [
+        ("An oncoming van swung into my lane at 30 mph. Maybe 40 feet off when I noticed it.", 12.2),
+        ("A cyclist was coming the wrong way in my lane at night. Roughly 20 m away when I first saw him.", 20.0),
+        ("A lorry ahead of us braked hard to a stop; about 25 metres out when we clocked it, at 50 km/h.", 25.0),
+    ],
+    ids=["feet-noticed", "metres-saw", "metres-clocked"],
+)
+def test_a_gap_said_before_the_ego_sees_the_road_user_is_that_road_user_s(text, gap):
+    """ "N m away when I saw him": no one's gap but the one seen; the ego named as the one who sees
+    it has no gap to itself."""
+    [a] = read(text).actors
+    assert a.distance_m == pytest.approx(gap, abs=0.1)
+
+
+def test_where_the_ego_stops_is_no_gap_of_the_road_user_it_stops_for():
+    """ "I stopped 2 m short" is how the narrator's stop went, not where the van was."""
+    [a] = read("A van pulled out of a side road on my left. I stopped 2 m short of it at 20 mph.").actors
+    assert a.distance_m is None

@@ -1324,8 +1324,11 @@ def read(text: str) -> Reading:
                 resolved[m.start] = who
                 if role == "subject":
                     subject = clause_subject = who
+                    seen = [a for a in actors if not a.stationary] or actors
                     for p in pending:
-                        _apply(p, who, r, link, added)
+                        # ("about 20 m away when I saw him": the ego has no gap to itself; the one seen has)
+                        gap_of_seen = who == "ego" and p.slot == "distance" and seen
+                        _apply(p, seen[-1] if gap_of_seen else who, r, link, added)
                     pending = []
                 else:
                     keep = []
@@ -1473,6 +1476,10 @@ def read(text: str) -> Reading:
             else:
                 who = _nearest(named, m)
                 gap_to = _gap_to(mentions, k) if who == "ego" and m.slot == "distance" else None
+                if who == "ego" and m.slot == "distance" and clause_subject == "ego" and _stop_before(prev):
+                    ignored.append(m.words)  # ("I stopped 2 m short of it": how the ego's stop went, no gap)
+                    prev = m
+                    continue
                 if gap_to == "road user":
                     pending.append(m)  # ("the ego at 30 km/h 15 m behind a bus": the gap to the bus, named next)
                     gaps_to_next.append(m)
@@ -2212,6 +2219,16 @@ def _after_copula(tokens: list[str], i: int) -> bool:
 
 #: A relation said of the ego towards another road user ("the ego is behind a truck"), as that one's place.
 _SEEN_FROM_OBJECT = {"behind": "ahead", "ahead": "behind"}
+
+
+def _stop_before(prev) -> bool:
+    """Whether mention ``prev`` is a stop ("stopped", "pulled up", "braked to a stop"): a distance right
+    after the ego's stop says where it stopped, short of someone, not where that someone was."""
+    if prev is None:
+        return False
+    return prev.slot in ("stationary", "to_stop") or (
+        prev.slot == "behaviour" and prev.value[0] in ("stop", "sudden_stop")
+    )
 
 
 def _gap_to(mentions, k: int) -> str | None:
