@@ -174,3 +174,24 @@ def test_a_slow_cut_in_ends_in_the_ego_s_lane(text, tmp_path):
         assert adv["behaviour"]["behaviour"] == "cut_in"
         adv["behaviour"]["config"]["criticality"] = "dangerous"
         assert played_problems(_play(layers, tmp_path), layers) == [], seed
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "An e-scooter rider in the cycle lane on the right ahead of the ego turns left across our lane into a "
+        "side road; ego at 40 km/h.",
+        "Ego at 30 mph. A lad on a bike on the right-hand kerb ahead slows right down, then suddenly swings out "
+        "into our lane.",
+        "Ego at 25 km/h. A jogger on the right verge ahead slows down, then overtakes a parked van.",
+    ],
+    ids=["forced-turn", "slows-then-swings-out", "change-speed-then-overtake"],
+)
+def test_a_road_user_at_the_kerb_that_changes_lane_later_starts_on_a_lane(text, tmp_path):
+    """Whatever it does first, a road user at the kerb of the ego's side that at some point moves over
+    into the road (a lane change, an overtake, a turn across the lanes) starts on the kerb lane's edge:
+    beyond the kerb it is on no lane and the player refuses the lane change."""
+    layers = layers_from_text(text, 0)
+    adv = layers["adversaries"][0]  # (a van it goes round stands beyond the kerb)
+    assert adv["spawn"]["relation"] == "roadside_right"
+    assert played_problems(_play(layers, tmp_path), layers) == []
