@@ -195,3 +195,22 @@ def test_a_road_user_at_the_kerb_that_changes_lane_later_starts_on_a_lane(text, 
     adv = layers["adversaries"][0]  # (a van it goes round stands beyond the kerb)
     assert adv["spawn"]["relation"] == "roadside_right"
     assert played_problems(_play(layers, tmp_path), layers) == []
+
+
+@pytest.mark.parametrize(
+    "text, gap",
+    [
+        ("Round a bend at 30 mph a moped came the other way on my side of the road, about forty feet off.", 12.2),
+        ("At 50 km/h a cyclist riding the wrong way came at us head-on in our lane, some 20 m away.", 20.0),
+        ("Ego at 40 km/h. An oncoming e-scooter rider drifts onto our side of the road 15 metres ahead.", 15.0),
+    ],
+    ids=["moped-feet", "cyclist-wrong-way", "scooter-drifts"],
+)
+def test_a_wrong_way_road_user_at_a_short_stated_gap_is_head_on_in_the_ego_s_lane(text, gap, tmp_path):
+    """At a gap too short to drift over from its own lane before they meet, the road user the text puts
+    on the ego's side at that gap is there already, facing the ego, and meets it head-on."""
+    layers = layers_from_text(text, 0)
+    [adv] = layers["adversaries"]
+    assert adv["behaviour"]["behaviour"] == "wrong_way"
+    assert abs(float(adv["spawn"]["longitudinal_m"])) == pytest.approx(gap, abs=0.1)
+    assert played_problems(_play(layers, tmp_path), layers) == []

@@ -183,7 +183,10 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
             spawn["lateral_m"] = round(spec_lateral, 3)
         facing = spec.facing or getattr(first, "DEFAULT_SPAWN", {}).get("facing")
         if first.NAME == "wrong_way" and relation == "oncoming":
-            facing = None  # it starts in its own lane and drifts over
+            if _in_lane_at_gap(spec.distance_m, ego_speed, speed, first_cfg):
+                spawn["relation"] = "ahead"  # (at a gap too short to drift over in: already in the ego's lane)
+            else:
+                facing = None  # it starts in its own lane and drifts over
         if facing == "against":
             spawn["facing"] = "against"
         if first.NAME == "along_road" and spec.distance_m is None:
@@ -227,6 +230,24 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
     }
     layers["background"]["vehicles"] = background(rng, layers)
     return layers
+
+
+#: Seconds of head-on closing a wrong-way road user needs beyond its swerve, drifting over from its own
+#: lane, to be in the ego's lane, facing it, before they meet.
+SETTLED_S = 1.0
+
+
+def _in_lane_at_gap(distance_m: float | None, ego_speed: float, speed: float, cfg: dict) -> bool:
+    """Whether a wrong-way road user coming from the oncoming lane at a stated gap is in the ego's lane
+    already: "it came at me on my side, 20 m off" gives where it is when seen, and at that gap, drifting
+    over from its own lane, it would still be across the line when they meet (not head-on)."""
+    if distance_m is None:
+        return False
+    from vei_scenario.language.behaviours.base import value
+    from vei_scenario.language.behaviours.wrong_way import PARAMETERS
+
+    swerve = value(cfg, PARAMETERS, "lane_change_s")
+    return distance_m < (ego_speed + speed) * (swerve + SETTLED_S)
 
 
 def _far_side_gap(reading: Reading) -> bool:
