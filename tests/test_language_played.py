@@ -214,3 +214,21 @@ def test_a_wrong_way_road_user_at_a_short_stated_gap_is_head_on_in_the_ego_s_lan
     assert adv["behaviour"]["behaviour"] == "wrong_way"
     assert abs(float(adv["spawn"]["longitudinal_m"])) == pytest.approx(gap, abs=0.1)
     assert played_problems(_play(layers, tmp_path), layers) == []
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist flies past me on the inside and cuts in right in front of my car.",
+        "An e-scooter rider undertakes us at the junction, then pulls in ahead of us.",
+        "Some lad on a bike overtook the ego on the right and swung in front of it.",
+    ],
+    ids=["cyclist-inside", "scooter-undertakes", "bike-overtook"],
+)
+def test_a_rider_passing_the_ego_at_a_speed_the_text_leaves_open_gets_ahead(text, tmp_path):
+    """A bicycle or an e-scooter that passes the ego can do so only where the ego is slower than the
+    rider's top speed: where the text leaves the ego's speed open it is one the rider can pass."""
+    for seed in (0, 1):
+        layers = layers_from_text(text, seed)
+        assert "overtake" in str(layers["adversaries"][0]["behaviour"])
+        assert played_problems(_play(layers, tmp_path), layers) == [], seed

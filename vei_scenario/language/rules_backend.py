@@ -106,6 +106,8 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
     }[kind]
     lo, hi = {"straight": (13.0, 17.0), "curve": (11.0, 15.0)}.get(kind, (10.0, 13.0))
     ego_speed = reading.ego_speed_mps if reading.ego_speed_mps is not None else _u(rng, lo, hi)
+    if reading.ego_speed_mps is None:
+        ego_speed = min([ego_speed] + [_passable_mps(a.kind) for a in reading.actors if _passes_ego(a)])
     ego_speed = min(max(ego_speed, 0.0), MAX_SPEED_MPS)
     weather = reading.weather or rng.choice(["clear", "clear", "cloudy"])
     time = reading.time or f"{rng.randint(7, 18):02d}:{rng.choice([0, 15, 30, 45]):02d}"
@@ -230,6 +232,21 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
     }
     layers["background"]["vehicles"] = background(rng, layers)
     return layers
+
+
+#: How much slower than a rider's top speed an ego it passes goes, where the text leaves the ego's
+#: speed open (m/s): enough to draw ahead and cut in within the run.
+PASSING_MARGIN_MPS = 4.0
+
+
+def _passes_ego(spec) -> bool:
+    return any(b[0] == "overtake" for b in spec.behaviours)
+
+
+def _passable_mps(kind: str) -> float:
+    """The fastest the ego may go for a road user of ``kind`` to pass it: a bicycle or an e-scooter
+    that overtakes ("flies past me on the inside") tells of an ego slower than the rider can ride."""
+    return max(TYPES[kind][3] - PASSING_MARGIN_MPS, 2.0)
 
 
 #: Seconds of head-on closing a wrong-way road user needs beyond its swerve, drifting over from its own
