@@ -232,3 +232,22 @@ def test_a_rider_passing_the_ego_at_a_speed_the_text_leaves_open_gets_ahead(text
         layers = layers_from_text(text, seed)
         assert "overtake" in str(layers["adversaries"][0]["behaviour"])
         assert played_problems(_play(layers, tmp_path), layers) == [], seed
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Motorway, two lanes each way, I'm in the outside lane at 110 km/h. The car ahead of me suddenly swerves "
+        "out round a stalled lorry in my lane.",
+        "Dual carriageway, two lanes each way, ego in the fast lane at 100 km/h. The car in front of us swerves "
+        "out to avoid a broken-down van in our lane.",
+        "Two lanes each way, ego in the overtaking lane at 90 km/h; the lead car pulls out of the lane suddenly "
+        "to reveal a stationary car ahead of us.",
+    ],
+    ids=["outside-lane", "fast-lane", "overtaking-lane"],
+)
+def test_a_lead_car_leaving_the_innermost_lane_by_an_unsaid_side_goes_where_a_lane_is(text, tmp_path):
+    """The side of a cut-out the text leaves open is the one with a lane in its direction: from the
+    innermost lane of a road with two lanes each way, to the right."""
+    layers = layers_from_text(text, 0)
+    assert played_problems(_play(layers, tmp_path), layers) == []
