@@ -251,3 +251,25 @@ def test_a_lead_car_leaving_the_innermost_lane_by_an_unsaid_side_goes_where_a_la
     innermost lane of a road with two lanes each way, to the right."""
     layers = layers_from_text(text, 0)
     assert played_problems(_play(layers, tmp_path), layers) == []
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "At a roundabout at 20 km/h, a car from the left entry cuts across in front of us.",
+        "Going round the roundabout at 25 km/h, a van joining from the entry on our left pulls out right in "
+        "front of us.",
+        "At the roundabout at 20 km/h a car joining from the right pulls out in front of us.",
+    ],
+    ids=["car-left-entry", "van-left-entry", "car-right-entry"],
+)
+def test_a_road_user_joining_a_roundabout_in_front_of_the_ego_sets_off_and_meets_it(text, tmp_path):
+    """A road user waiting at another entry of a roundabout sets off when the ego is as far from it as
+    the ring's geometry says (its arms end well out from the centre, not at a crossroad's corner), so
+    it joins the ego's way in front of it."""
+    for seed in (0, 1):
+        layers = layers_from_text(text, seed)
+        adv = layers["adversaries"][0]
+        assert layers["environment"]["map"]["kind"] == "roundabout"
+        assert adv["behaviour"]["behaviour"] == "turn_into"
+        assert played_problems(_play(layers, tmp_path), layers) == [], seed
