@@ -252,3 +252,28 @@ def test_where_the_ego_stops_is_no_gap_of_the_road_user_it_stops_for():
     """ "I stopped 2 m short" is how the narrator's stop went, not where the van was."""
     [a] = read("A van pulled out of a side road on my left. I stopped 2 m short of it at 20 mph.").actors
     assert a.distance_m is None
+
+
+# --- a red-light runner at a stated gap -----------------------------------------------------------------
+@pytest.mark.parametrize(
+    "text, gap",
+    [
+        ("At the crossroads at 40 km/h, a car from the left runs the red light about 15 m in front of me.", 15.0),
+        ("Ego at 50 km/h. A van from the right ignores its red signal and shoots across 20 metres ahead of us.", 20.0),
+        ("I'm at 30 mph approaching the lights; a pickup jumps the red from the left, maybe 60 feet ahead.", 18.3),
+    ],
+    ids=["car-left", "van-right", "pickup-feet"],
+)
+def test_a_red_light_runner_at_a_stated_gap_is_in_the_ego_s_path_when_the_ego_is_that_far(text, gap):
+    """ "runs the red 15 m in front of me": it is in the ego's path when the ego is that far from it,
+    so it reaches the conflict that distance's time at the ego's speed before the ego does."""
+    r = read(text)
+    for seed in (0, 1, 2):
+        layers = sample_layers(r, text, seed)
+        [adv] = layers["adversaries"]
+        [(_, node)] = list(behaviour_nodes(adv["behaviour"]))
+        assert node["behaviour"] == "run_red_light"
+        cfg = node["config"]
+        assert cfg["distance_m"] == pytest.approx(gap, abs=0.1)
+        speed = float(layers["ego"]["speed_mps"])
+        assert cfg["arrival_gap_s"] == pytest.approx(-gap / speed, abs=0.01)

@@ -169,6 +169,12 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
             and spec.distance_m is not None
         ):
             why = _turn_in_at_distance(spec.kind, relation, first_cfg, ego, lanes, spec.distance_m)
+        if (
+            first.NAME == "run_red_light"
+            and relation in ("junction_left", "junction_right")
+            and spec.distance_m is not None
+        ):
+            why = _run_at_distance(spec.kind, first_cfg, ego_speed, spec.distance_m)
         if why and notes is not None:
             notes.append(f"{name}: {why}")
         if "distance_m" in ego and not adversaries and crossing:
@@ -602,6 +608,25 @@ def _cross_at_distance(kind: str, relation: str, cfg: dict, ego: dict, lanes: in
     return (
         f"the {kind}'s stated gap of {distance_m:g} m: to set off then and still meet the ego it would "
         f"have to cross the {cross:.1f} m to the ego's lane more slowly than a {kind} can at the ego's speed"
+    )
+
+
+def _run_at_distance(kind: str, cfg: dict, ego_speed: float, distance_m: float) -> str | None:
+    """A road user running the red across the ego's road at a stated distance ahead ("a car ran the red
+    15 m in front of me"): it is in the ego's path when the ego is that far away, so it reaches the
+    conflict that distance's time at the ego's speed before the ego would (``arrival_gap_s`` negative),
+    and the distance is kept in its configuration. Returns None when kept, else why not."""
+    from vei_scenario.language.behaviours.run_red_light import PARAMETERS
+
+    low = PARAMETERS["arrival_gap_s"].low
+    gap = -distance_m / max(ego_speed, 0.5)
+    cfg["distance_m"] = round(distance_m, 3)
+    cfg["arrival_gap_s"] = round(max(gap, low), 3)
+    if gap >= low:
+        return None
+    return (
+        f"the {kind}'s stated gap of {distance_m:g} m: at the ego's speed that is more than "
+        f"{-low:g} s before the ego reaches its path, later than the red-light run can be timed"
     )
 
 
