@@ -161,3 +161,119 @@ def test_the_lanes_the_text_states_stay():
     text = "Two lanes each way, ego 60 km/h: a girl runs out from the left 6 m ahead of the ego."
     layers = sample_layers(read(text), text, 0)
     assert layers["environment"]["map"]["lanes_per_direction"] == 2 and _kept(layers, 6.0)
+
+
+# --- a length said in feet or yards, in words ------------------------------------------------------------
+@pytest.mark.parametrize(
+    "text, gap",
+    [
+        ("A lorry brakes hard to a stop ahead of me, maybe forty feet in front, I'm doing 30 mph.", 12.2),
+        ("An e-scooter rider came at me head-on in my lane, about a hundred feet off, at 20 mph.", 30.5),
+        ("Twenty yards ahead a van stops dead in my lane; I was at 40 km/h.", 18.3),
+    ],
+    ids=["forty-feet", "a-hundred-feet", "twenty-yards"],
+)
+def test_a_length_in_feet_or_yards_said_in_words_is_the_gap(text, gap):
+    """A number in words before feet or yards is a length as its digits are ("forty feet": 12.2 m):
+    an American or British driver says a gap in feet far more often than in metres."""
+    [a] = read(text).actors
+    assert a.distance_m == pytest.approx(gap, abs=0.1)
+
+
+def test_a_size_in_feet_said_before_a_noun_is_no_gap():
+    """ "a six-foot hedge" is how tall the hedge is: no gap to the child who runs out from behind it."""
+    [a] = read("From behind a six-foot hedge on the left, a child runs out in front of me at 30 mph.").actors
+    assert a.distance_m is None
+
+
+# --- the ego said to be some way behind or ahead of a road user named after it --------------------------
+@pytest.mark.parametrize(
+    "text, gap",
+    [
+        ("Ego at 40 km/h roughly 20 metres behind a bus. The bus brakes hard and stops.", 20.0),
+        ("We were at 50 km/h some 25 m behind a tipper lorry when the lorry slammed on its brakes.", 25.0),
+        ("The ego, doing 60 km/h, is 30 m behind a minibus that stops suddenly.", 30.0),
+        ("I was about 10 metres ahead of a cyclist in the same lane at 25 km/h, the cyclist kept going.", 10.0),
+    ],
+    ids=["ego-at-behind", "we-behind", "ego-is-behind", "ahead-of"],
+)
+def test_a_gap_said_of_the_ego_to_a_road_user_named_after_it_is_that_road_user_s(text, gap):
+    """ "<ego> N m behind <road user>": the gap between the two, said from the ego's side; the road user
+    named after the preposition is the one at that gap (not one named before, not nobody)."""
+    [a] = read(text).actors
+    assert a.distance_m == pytest.approx(gap)
+
+
+def test_a_gap_said_of_the_ego_to_a_place_is_no_road_user_s():
+    """ "20 m behind the stop line" places the ego, not the van named before it."""
+    r = read("A van ahead brakes hard to a stop. The ego at 40 km/h is 20 m behind the stop line.")
+    assert [a.distance_m for a in r.actors] == [None]
+
+
+# --- a stated gap kept whatever the road user's first behaviour places it by -----------------------------
+@pytest.mark.parametrize(
+    "text, gap",
+    [
+        ("Two lanes each way, ego at 50 km/h. A van in the right-hand lane 15 m ahead slows down to 30 km/h.", 15.0),
+        ("Ego 80 km/h on a motorway, two lanes each way. A car in the left lane 25 m ahead keeps its lane.", 25.0),
+        ("Ego at 70 km/h in the left lane, a lorry in the right lane 30 metres ahead brakes hard to a stop.", 30.0),
+        ("Ego at 60 km/h in the right lane; a bus in the left lane 20 m ahead of it slows gently to a stop.", 20.0),
+    ],
+    ids=["change-speed-right", "keep-lane-left", "sudden-stop-right", "stop-left"],
+)
+def test_a_road_user_in_the_next_lane_at_a_stated_gap_starts_there(text, gap):
+    """A road user in a lane beside the ego's, said to be N m ahead, starts N m ahead: its behaviour's
+    own placement is for when the text leaves the gap open."""
+    for seed in (0, 1, 2):
+        layers = sample_layers(read(text), text, seed)
+        [adv] = layers["adversaries"]
+        assert adv["spawn"]["relation"] in ("left", "right")
+        assert abs(float(adv["spawn"]["longitudinal_m"])) == pytest.approx(gap), seed
+
+
+# --- a gap said in a clause whose only subject is the ego, seeing the other ------------------------------
+@pytest.mark.parametrize(
+    "text, gap",
+    [
+        ("An oncoming van swung into my lane at 30 mph. Maybe 40 feet off when I noticed it.", 12.2),
+        ("A cyclist was coming the wrong way in my lane at night. Roughly 20 m away when I first saw him.", 20.0),
+        ("A lorry ahead of us braked hard to a stop; about 25 metres out when we clocked it, at 50 km/h.", 25.0),
+    ],
+    ids=["feet-noticed", "metres-saw", "metres-clocked"],
+)
+def test_a_gap_said_before_the_ego_sees_the_road_user_is_that_road_user_s(text, gap):
+    """ "N m away when I saw him": no one's gap but the one seen; the ego named as the one who sees
+    it has no gap to itself."""
+    [a] = read(text).actors
+    assert a.distance_m == pytest.approx(gap, abs=0.1)
+
+
+def test_where_the_ego_stops_is_no_gap_of_the_road_user_it_stops_for():
+    """ "I stopped 2 m short" is how the narrator's stop went, not where the van was."""
+    [a] = read("A van pulled out of a side road on my left. I stopped 2 m short of it at 20 mph.").actors
+    assert a.distance_m is None
+
+
+# --- a red-light runner at a stated gap -----------------------------------------------------------------
+@pytest.mark.parametrize(
+    "text, gap",
+    [
+        ("At the crossroads at 40 km/h, a car from the left runs the red light about 15 m in front of me.", 15.0),
+        ("Ego at 50 km/h. A van from the right ignores its red signal and shoots across 20 metres ahead of us.", 20.0),
+        ("I'm at 30 mph approaching the lights; a pickup jumps the red from the left, maybe 60 feet ahead.", 18.3),
+    ],
+    ids=["car-left", "van-right", "pickup-feet"],
+)
+def test_a_red_light_runner_at_a_stated_gap_is_in_the_ego_s_path_when_the_ego_is_that_far(text, gap):
+    """ "runs the red 15 m in front of me": it is in the ego's path when the ego is that far from it,
+    so it reaches the conflict that distance's time at the ego's speed before the ego does."""
+    r = read(text)
+    for seed in (0, 1, 2):
+        layers = sample_layers(r, text, seed)
+        [adv] = layers["adversaries"]
+        [(_, node)] = list(behaviour_nodes(adv["behaviour"]))
+        assert node["behaviour"] == "run_red_light"
+        cfg = node["config"]
+        assert cfg["distance_m"] == pytest.approx(gap, abs=0.1)
+        speed = float(layers["ego"]["speed_mps"])
+        assert cfg["arrival_gap_s"] == pytest.approx(-gap / speed, abs=0.01)

@@ -174,3 +174,102 @@ def test_a_slow_cut_in_ends_in_the_ego_s_lane(text, tmp_path):
         assert adv["behaviour"]["behaviour"] == "cut_in"
         adv["behaviour"]["config"]["criticality"] = "dangerous"
         assert played_problems(_play(layers, tmp_path), layers) == [], seed
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "An e-scooter rider in the cycle lane on the right ahead of the ego turns left across our lane into a "
+        "side road; ego at 40 km/h.",
+        "Ego at 30 mph. A lad on a bike on the right-hand kerb ahead slows right down, then suddenly swings out "
+        "into our lane.",
+        "Ego at 25 km/h. A jogger on the right verge ahead slows down, then overtakes a parked van.",
+    ],
+    ids=["forced-turn", "slows-then-swings-out", "change-speed-then-overtake"],
+)
+def test_a_road_user_at_the_kerb_that_changes_lane_later_starts_on_a_lane(text, tmp_path):
+    """Whatever it does first, a road user at the kerb of the ego's side that at some point moves over
+    into the road (a lane change, an overtake, a turn across the lanes) starts on the kerb lane's edge:
+    beyond the kerb it is on no lane and the player refuses the lane change."""
+    layers = layers_from_text(text, 0)
+    adv = layers["adversaries"][0]  # (a van it goes round stands beyond the kerb)
+    assert adv["spawn"]["relation"] == "roadside_right"
+    assert played_problems(_play(layers, tmp_path), layers) == []
+
+
+@pytest.mark.parametrize(
+    "text, gap",
+    [
+        ("Round a bend at 30 mph a moped came the other way on my side of the road, about forty feet off.", 12.2),
+        ("At 50 km/h a cyclist riding the wrong way came at us head-on in our lane, some 20 m away.", 20.0),
+        ("Ego at 40 km/h. An oncoming e-scooter rider drifts onto our side of the road 15 metres ahead.", 15.0),
+    ],
+    ids=["moped-feet", "cyclist-wrong-way", "scooter-drifts"],
+)
+def test_a_wrong_way_road_user_at_a_short_stated_gap_is_head_on_in_the_ego_s_lane(text, gap, tmp_path):
+    """At a gap too short to drift over from its own lane before they meet, the road user the text puts
+    on the ego's side at that gap is there already, facing the ego, and meets it head-on."""
+    layers = layers_from_text(text, 0)
+    [adv] = layers["adversaries"]
+    assert adv["behaviour"]["behaviour"] == "wrong_way"
+    assert abs(float(adv["spawn"]["longitudinal_m"])) == pytest.approx(gap, abs=0.1)
+    assert played_problems(_play(layers, tmp_path), layers) == []
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist flies past me on the inside and cuts in right in front of my car.",
+        "An e-scooter rider undertakes us at the junction, then pulls in ahead of us.",
+        "Some lad on a bike overtook the ego on the right and swung in front of it.",
+    ],
+    ids=["cyclist-inside", "scooter-undertakes", "bike-overtook"],
+)
+def test_a_rider_passing_the_ego_at_a_speed_the_text_leaves_open_gets_ahead(text, tmp_path):
+    """A bicycle or an e-scooter that passes the ego can do so only where the ego is slower than the
+    rider's top speed: where the text leaves the ego's speed open it is one the rider can pass."""
+    for seed in (0, 1):
+        layers = layers_from_text(text, seed)
+        assert "overtake" in str(layers["adversaries"][0]["behaviour"])
+        assert played_problems(_play(layers, tmp_path), layers) == [], seed
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Motorway, two lanes each way, I'm in the outside lane at 110 km/h. The car ahead of me suddenly swerves "
+        "out round a stalled lorry in my lane.",
+        "Dual carriageway, two lanes each way, ego in the fast lane at 100 km/h. The car in front of us swerves "
+        "out to avoid a broken-down van in our lane.",
+        "Two lanes each way, ego in the overtaking lane at 90 km/h; the lead car pulls out of the lane suddenly "
+        "to reveal a stationary car ahead of us.",
+    ],
+    ids=["outside-lane", "fast-lane", "overtaking-lane"],
+)
+def test_a_lead_car_leaving_the_innermost_lane_by_an_unsaid_side_goes_where_a_lane_is(text, tmp_path):
+    """The side of a cut-out the text leaves open is the one with a lane in its direction: from the
+    innermost lane of a road with two lanes each way, to the right."""
+    layers = layers_from_text(text, 0)
+    assert played_problems(_play(layers, tmp_path), layers) == []
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "At a roundabout at 20 km/h, a car from the left entry cuts across in front of us.",
+        "Going round the roundabout at 25 km/h, a van joining from the entry on our left pulls out right in "
+        "front of us.",
+        "At the roundabout at 20 km/h a car joining from the right pulls out in front of us.",
+    ],
+    ids=["car-left-entry", "van-left-entry", "car-right-entry"],
+)
+def test_a_road_user_joining_a_roundabout_in_front_of_the_ego_sets_off_and_meets_it(text, tmp_path):
+    """A road user waiting at another entry of a roundabout sets off when the ego is as far from it as
+    the ring's geometry says (its arms end well out from the centre, not at a crossroad's corner), so
+    it joins the ego's way in front of it."""
+    for seed in (0, 1):
+        layers = layers_from_text(text, seed)
+        adv = layers["adversaries"][0]
+        assert layers["environment"]["map"]["kind"] == "roundabout"
+        assert adv["behaviour"]["behaviour"] == "turn_into"
+        assert played_problems(_play(layers, tmp_path), layers) == [], seed

@@ -32,7 +32,7 @@ _NUMBER = re.compile(
 #: Units after which a number in words is a quantity (its unit words as the reader reads them).
 _UNIT_AFTER = re.compile(
     r"\s*(?:-\s*)?(km/h|kph|kmh|mph|m/s|miles?\b|kilomet(?:er|re)s?\b|km\b|met(?:er|re)s?\b|m\b|seconds?\b|s\b"
-    r"|second\b|lanes?\b|car lengths?\b|k(?:'s|s)?\b)"
+    r"|second\b|lanes?\b|car lengths?\b|k(?:'s|s)?\b|feet\b|ft\b|yards?\b|yds?\b|foot\b)"
 )
 #: Words after which a bare number is a speed ("doing like thirty", "Ego at forty"): the reader reads
 #: a bare number after "at", "doing", "about" as km/h.
@@ -75,8 +75,9 @@ def _numbers_in_words(text: str) -> str:
         if after is None and _SPEED_BEFORE.search(text, max(0, m.start() - 8), m.start()):
             value = _number_value(m.group(1))  # ("at forty": a speed, said without its unit)
             return str(value) if value is not None and value >= 15 else m.group(0)
-        if after is None or (after.group(1).startswith("lane") and "-" in text[m.end() : after.start(1)]):
-            return m.group(0)  # ("two-lane road" keeps its word: it is the road's name)
+        joined = "-" in text[m.end() : after.start(1)] if after is not None else False
+        if after is None or (joined and after.group(1)[0] in "lfy"):
+            return m.group(0)  # ("two-lane road", "a six-foot hedge" keep their words: a name, a size)
         value = _number_value(m.group(1))
         return m.group(0) if value is None else str(value)
 

@@ -1077,6 +1077,7 @@ def read(text: str) -> Reading:
     actors: list[_Actor] = []
     subject: _Actor | str | None = None
     pending: list[_Mention] = []
+    gaps_to_next: list[_Mention] = []  # (pending gaps said of the ego to the road user named next)
     last_group: list[_Actor] | None = None  # ("Two scooters ride ahead; one of them brakes": that pair)
     both_with_ego = False  # ("CCRb: both cars at 50 km/h ...": the ego is one of them)
     ego_is_a_person = False  # (the ego named as "I" or "we": "it" is then never the ego)
@@ -1323,13 +1324,16 @@ def read(text: str) -> Reading:
                 resolved[m.start] = who
                 if role == "subject":
                     subject = clause_subject = who
+                    seen = [a for a in actors if not a.stationary] or actors
                     for p in pending:
-                        _apply(p, who, r, link, added)
+                        # ("about 20 m away when I saw him": the ego has no gap to itself; the one seen has)
+                        gap_of_seen = who == "ego" and p.slot == "distance" and seen
+                        _apply(p, seen[-1] if gap_of_seen else who, r, link, added)
                     pending = []
                 else:
                     keep = []
                     for p in pending:
-                        if p.slot in _POSITIONAL and who != "ego":
+                        if (p.slot in _POSITIONAL or any(p is g for g in gaps_to_next)) and who != "ego":
                             _apply(p, who, r, link, added)
                         else:
                             keep.append(p)
@@ -1471,6 +1475,20 @@ def read(text: str) -> Reading:
                 pending.append(replace(m, value=_SEEN_FROM_OBJECT[m.value]))
             else:
                 who = _nearest(named, m)
+                gap_to = _gap_to(mentions, k) if who == "ego" and m.slot == "distance" else None
+                if who == "ego" and m.slot == "distance" and clause_subject == "ego" and _stop_before(prev):
+                    ignored.append(m.words)  # ("I stopped 2 m short of it": how the ego's stop went, no gap)
+                    prev = m
+                    continue
+                if gap_to == "road user":
+                    pending.append(m)  # ("the ego at 30 km/h 15 m behind a bus": the gap to the bus, named next)
+                    gaps_to_next.append(m)
+                    prev = m
+                    continue
+                if gap_to == "place":
+                    ignored.append(m.words)  # ("the ego is 20 m behind the stop line": no one's gap)
+                    prev = m
+                    continue
                 if who == "ego" and m.slot == "distance" and actors:
                     who = actors[-1]  # a gap said of the ego is the gap to the road user named last
                 if who is None and m.slot in ("speed", "distance") and isinstance(clause_subject, _Actor):
@@ -2201,6 +2219,36 @@ def _after_copula(tokens: list[str], i: int) -> bool:
 
 #: A relation said of the ego towards another road user ("the ego is behind a truck"), as that one's place.
 _SEEN_FROM_OBJECT = {"behind": "ahead", "ahead": "behind"}
+
+
+def _stop_before(prev) -> bool:
+    """Whether mention ``prev`` is a stop ("stopped", "pulled up", "braked to a stop"): a distance right
+    after the ego's stop says where it stopped, short of someone, not where that someone was."""
+    if prev is None:
+        return False
+    return prev.slot in ("stationary", "to_stop") or (
+        prev.slot == "behaviour" and prev.value[0] in ("stop", "sudden_stop")
+    )
+
+
+def _gap_to(mentions, k: int) -> str | None:
+    """What distance ``mentions[k]``, said of the ego, measures to when a preposition of place follows it
+    ("15 m behind", "10 m ahead of", "20 m in front of"): "road user" where a road user is its object,
+    named right after it; "place" where a place of the road is ("behind the stop line"); else None.
+    Why: "<ego> N m behind <road user>" states the gap from the ego's side, before the road user is
+    named, so the one named last before it is not the one it is said of."""
+    if k + 1 >= len(mentions):
+        return None
+    rel = mentions[k + 1]
+    if rel.slot != "relation" or rel.value not in ("behind", "ahead") or rel.start != mentions[k].end:
+        return None
+    after = mentions[k + 2] if k + 2 < len(mentions) else None
+    end = rel.end + (1 if rel.next_ == "of" else 0)
+    if after is None or after.start > end + 3:  # (its object: an article and up to two words before the noun)
+        return None
+    if after.slot == "actor" and after.value != "ego":
+        return "road user"
+    return "place" if after.slot == "map" else None
 
 
 def _object_follows(mentions, k: int) -> bool:

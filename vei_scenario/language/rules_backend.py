@@ -106,6 +106,8 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
     }[kind]
     lo, hi = {"straight": (13.0, 17.0), "curve": (11.0, 15.0)}.get(kind, (10.0, 13.0))
     ego_speed = reading.ego_speed_mps if reading.ego_speed_mps is not None else _u(rng, lo, hi)
+    if reading.ego_speed_mps is None:
+        ego_speed = min([ego_speed] + [_passable_mps(a.kind) for a in reading.actors if _passes_ego(a)])
     ego_speed = min(max(ego_speed, 0.0), MAX_SPEED_MPS)
     weather = reading.weather or rng.choice(["clear", "clear", "cloudy"])
     time = reading.time or f"{rng.randint(7, 18):02d}:{rng.choice([0, 15, 30, 45]):02d}"
@@ -167,6 +169,12 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
             and spec.distance_m is not None
         ):
             why = _turn_in_at_distance(spec.kind, relation, first_cfg, ego, lanes, spec.distance_m)
+        if (
+            first.NAME == "run_red_light"
+            and relation in ("junction_left", "junction_right")
+            and spec.distance_m is not None
+        ):
+            why = _run_at_distance(spec.kind, first_cfg, ego_speed, spec.distance_m)
         if why and notes is not None:
             notes.append(f"{name}: {why}")
         if "distance_m" in ego and not adversaries and crossing:
@@ -183,7 +191,10 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
             spawn["lateral_m"] = round(spec_lateral, 3)
         facing = spec.facing or getattr(first, "DEFAULT_SPAWN", {}).get("facing")
         if first.NAME == "wrong_way" and relation == "oncoming":
-            facing = None  # it starts in its own lane and drifts over
+            if _in_lane_at_gap(spec.distance_m, ego_speed, speed, first_cfg):
+                spawn["relation"] = "ahead"  # (at a gap too short to drift over in: already in the ego's lane)
+            else:
+                facing = None  # it starts in its own lane and drifts over
         if facing == "against":
             spawn["facing"] = "against"
         if first.NAME == "along_road" and spec.distance_m is None:
@@ -227,6 +238,39 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
     }
     layers["background"]["vehicles"] = background(rng, layers)
     return layers
+
+
+#: How much slower than a rider's top speed an ego it passes goes, where the text leaves the ego's
+#: speed open (m/s): enough to draw ahead and cut in within the run.
+PASSING_MARGIN_MPS = 4.0
+
+
+def _passes_ego(spec) -> bool:
+    return any(b[0] == "overtake" for b in spec.behaviours)
+
+
+def _passable_mps(kind: str) -> float:
+    """The fastest the ego may go for a road user of ``kind`` to pass it: a bicycle or an e-scooter
+    that overtakes ("flies past me on the inside") tells of an ego slower than the rider can ride."""
+    return max(TYPES[kind][3] - PASSING_MARGIN_MPS, 2.0)
+
+
+#: Seconds of head-on closing a wrong-way road user needs beyond its swerve, drifting over from its own
+#: lane, to be in the ego's lane, facing it, before they meet.
+SETTLED_S = 1.0
+
+
+def _in_lane_at_gap(distance_m: float | None, ego_speed: float, speed: float, cfg: dict) -> bool:
+    """Whether a wrong-way road user coming from the oncoming lane at a stated gap is in the ego's lane
+    already: "it came at me on my side, 20 m off" gives where it is when seen, and at that gap, drifting
+    over from its own lane, it would still be across the line when they meet (not head-on)."""
+    if distance_m is None:
+        return False
+    from vei_scenario.language.behaviours.base import value
+    from vei_scenario.language.behaviours.wrong_way import PARAMETERS
+
+    swerve = value(cfg, PARAMETERS, "lane_change_s")
+    return distance_m < (ego_speed + speed) * (swerve + SETTLED_S)
 
 
 def _far_side_gap(reading: Reading) -> bool:
@@ -468,7 +512,7 @@ def _place_adversary(
         out_speed = 0.0
     elif (
         distance_m is not None
-        and relation in ("ahead", "behind", "oncoming")
+        and relation in ("ahead", "behind", "oncoming", "left", "right")  # (in its lane or the next one)
         and behaviour_name != "cut_in"
         and not (behaviour_name == "overtake" and cfg.get("gap_m") == distance_m)  # (its gap where it cuts back in)
     ):
@@ -564,6 +608,25 @@ def _cross_at_distance(kind: str, relation: str, cfg: dict, ego: dict, lanes: in
     return (
         f"the {kind}'s stated gap of {distance_m:g} m: to set off then and still meet the ego it would "
         f"have to cross the {cross:.1f} m to the ego's lane more slowly than a {kind} can at the ego's speed"
+    )
+
+
+def _run_at_distance(kind: str, cfg: dict, ego_speed: float, distance_m: float) -> str | None:
+    """A road user running the red across the ego's road at a stated distance ahead ("a car ran the red
+    15 m in front of me"): it is in the ego's path when the ego is that far away, so it reaches the
+    conflict that distance's time at the ego's speed before the ego would (``arrival_gap_s`` negative),
+    and the distance is kept in its configuration. Returns None when kept, else why not."""
+    from vei_scenario.language.behaviours.run_red_light import PARAMETERS
+
+    low = PARAMETERS["arrival_gap_s"].low
+    gap = -distance_m / max(ego_speed, 0.5)
+    cfg["distance_m"] = round(distance_m, 3)
+    cfg["arrival_gap_s"] = round(max(gap, low), 3)
+    if gap >= low:
+        return None
+    return (
+        f"the {kind}'s stated gap of {distance_m:g} m: at the ego's speed that is more than "
+        f"{-low:g} s before the ego reaches its path, later than the red-light run can be timed"
     )
 
 

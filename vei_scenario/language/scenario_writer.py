@@ -64,9 +64,9 @@ def vulnerable(kind: str) -> bool:
     return TYPES[kind][1] in ("pedestrian", "bicycle")
 
 
-#: First behaviours of a rider at the kerb that move it sideways into the road along its lanes
-#: (a crossing goes straight across instead, from beyond the kerb).
-SWERVES_FROM_KERB = ("change_lane", "cut_in")
+#: Behaviours of a rider at the kerb that move it sideways into the road along its lanes (a crossing
+#: goes straight across instead, from beyond the kerb): a lane change can start only on a lane.
+SWERVES_FROM_KERB = ("change_lane", "cut_in", "overtake", "forced_turn", "cut_out")
 #: Signal state strings (red;yellow;green lamps), as esmini's examples write them.
 RED, GREEN = "on;off;off", "off;off;on"
 WEATHER = {  # cloud state, precipitation (type, intensity mm/h), fog visual range (m), default friction
@@ -331,13 +331,16 @@ def write_scenario(layers: dict, stem: str) -> WrittenScenario:
             facing=pose.facing,
         )
         controller = None
-        first = next(n["behaviour"] for _, n in behaviour_nodes(adv["behaviour"]))
+        does = [n["behaviour"] for _, n in behaviour_nodes(adv["behaviour"])]
         at_kerb = adv["spawn"]["relation"].startswith("roadside") and vulnerable(kind)
-        if at_kerb and first in SWERVES_FROM_KERB and pose.lane_id < 0:
-            # a rider at the kerb of the ego's side that swerves into the road: on the kerb lane's edge
+        swerves = set(does) & set(SWERVES_FROM_KERB) and "cross_in_front" not in does
+        if at_kerb and swerves:
+            # a rider at the kerb that swerves into the road (or a walker at the verge the text has move
+            # along it): on the kerb lane's edge, where a lane change can start; one that gives way first
+            # still stands there as at the kerb, its way across measured from there
             pose = placement.kerb_edge(pose, TYPES[kind][0][1])
             ctx.actor_offset_m = pose.offset
-            at_kerb = False
+            at_kerb = "give_way" in does
         if at_kerb:
             net = net or _road_network(xodr_bytes)  # (only crossings ask the road model)
             road = net.road(pose.road)

@@ -170,6 +170,20 @@ def time_to_cover(distance_m: float, speed_mps: float, accel_mps2: float, start_
     return (v - v0) / a + (distance_m - ramp_m) / v
 
 
+def side_with_a_lane(ctx: ActorContext, cfg: dict, default: float) -> float:
+    """The side (+1 left, -1 right) a lane change goes to: the one the configuration states, else
+    ``default`` where the road has a lane there in the actor's direction, else the other side. Why:
+    "the car ahead swerves out" leaves the side open, and from the innermost lane of a one-way road
+    or a dual carriageway the only way out is to the right."""
+    if "direction" in cfg:
+        return float(cfg["direction"])
+    try:
+        neighbour_lane(ctx, default)
+    except ValueError:
+        return -default
+    return default
+
+
 def neighbour_lane(ctx: ActorContext, direction: float) -> int:
     """The lane next to the actor's in its own direction of travel, to the left (``direction`` ≥ 0)
     or the right; ValueError when the road has none there."""

@@ -14,6 +14,7 @@ from vei_scenario.language.behaviours.base import (
     Step,
     lane_change_to,
     neighbour_lane,
+    side_with_a_lane,
     value,
 )
 
@@ -38,7 +39,7 @@ AT_EDGE_M = 0.5
 
 def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
     dur = value(cfg, PARAMETERS, "lane_change_s")
-    direction = value(cfg, PARAMETERS, "direction")
+    direction = side_with_a_lane(ctx, cfg, PARAMETERS["direction"].default)
     # (a lane's t grows to the left of its driving direction on the right side, ids < 0)
     towards_centre = -ctx.actor_offset_m if ctx.actor_lane_id < 0 else ctx.actor_offset_m
     at_edge = abs(ctx.actor_offset_m) > AT_EDGE_M and towards_centre * direction > 0

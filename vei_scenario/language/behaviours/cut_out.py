@@ -11,6 +11,7 @@ from vei_scenario.language.behaviours.base import (
     Step,
     lane_change_to,
     neighbour_lane,
+    side_with_a_lane,
     value,
 )
 
@@ -50,7 +51,7 @@ def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
     obstacle = cfg.get("obstacle")
     if not isinstance(obstacle, str) or not obstacle:
         raise ValueError(f"{ctx.actor}: cut_out needs config obstacle (the name of what stands in the lane)")
-    target = neighbour_lane(ctx, value(cfg, PARAMETERS, "direction"))
+    target = neighbour_lane(ctx, side_with_a_lane(ctx, cfg, PARAMETERS["direction"].default))
     change = lane_change_to(target, value(cfg, PARAMETERS, "lane_change_s"))
     return [Step("cut_out", [change], conditions=[Condition("ego_within", round(reveal_gap_m(ctx, cfg), 2), obstacle)])]
 

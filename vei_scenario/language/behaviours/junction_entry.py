@@ -22,10 +22,21 @@ from vei_scenario.language.behaviours.base import (
     speed_action,
     time_to_cover,
 )
-from vei_scenario.language.maps import JUNCTION_RADIUS_M, LANE_WIDTH_M
+from vei_scenario.language.maps import JUNCTION_RADIUS_M, LANE_WIDTH_M, ROUNDABOUT_RADIUS_M
 
 #: Where a waiting road user stands: this far before its arm's end (m).
 STOP_LINE_M = 2.0
+#: How far a roundabout's arms end from its centre (m), as :mod:`~vei_scenario.language.maps` builds it.
+RING_ARM_END_M = ROUNDABOUT_RADIUS_M + 12.0
+#: A quarter of the ring between two entries, as driven (m): the arcs less the junctions' share.
+RING_QUARTER_M = ROUNDABOUT_RADIUS_M * math.pi / 2
+
+
+def arm_end_m(ctx: ActorContext) -> float:
+    """How far the arms end from the junction's centre (m): a roundabout's arms stop at its ring, well
+    out from the centre, a crossroad's at its corner. Why: the straight-line distance at which a road
+    user waiting at another arm sets off is measured from where the arms really end."""
+    return RING_ARM_END_M if ctx.map_kind == "roundabout" else JUNCTION_RADIUS_M
 
 
 def lane_offset_m(lane_id: int) -> float:
@@ -47,7 +58,7 @@ def ego_trigger_distance_m(
     t_actor = time_to_cover(actor_path_m, go_speed, accel, ctx.actor_speed_mps)
     ego_before_conflict = max(ctx.ego_speed_mps * (t_actor + arrival_gap_s), 0.0)
     # the ego on its approach, the actor at its stop line on another arm: both about the centre
-    r = JUNCTION_RADIUS_M
+    r = arm_end_m(ctx)
     ego_from_centre = max(ego_before_conflict - ego_path_m, -r) + r
     actor_from_centre = r + standing
     e, a = lane_offset_m(ctx.ego_lane_id), lane_offset_m(ctx.actor_lane_id)

@@ -6,8 +6,14 @@ right). It sets off when the ego is close enough that the ego reaches the point 
 from __future__ import annotations
 
 from vei_scenario.language.behaviours.base import ActorContext, Parameter, Step, time_to_cover, value
-from vei_scenario.language.behaviours.junction_entry import ego_trigger_distance_m, go_through, lane_offset_m
-from vei_scenario.language.maps import JUNCTION_RADIUS_M
+from vei_scenario.language.behaviours.junction_entry import (
+    RING_ARM_END_M,
+    RING_QUARTER_M,
+    ego_trigger_distance_m,
+    go_through,
+    lane_offset_m,
+)
+from vei_scenario.language.maps import JUNCTION_RADIUS_M, ROUNDABOUT_RADIUS_M
 
 NAME = "turn_into"
 AGENT = "route follower"
@@ -30,17 +36,24 @@ def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
     turn = "left" if from_left else "right"
     if ctx.actor_exits.get(turn) != ctx.exits.get("straight"):
         raise ValueError(f"{ctx.actor}: turn_into needs a spawn on a side road (junction_left or junction_right)")
-    actor_path, ego_path = paths_m(from_left, ctx.ego_lane_id)
+    actor_path, ego_path = paths_m(from_left, ctx.ego_lane_id, ring=ctx.map_kind == "roundabout")
     v = value(cfg, PARAMETERS, "speed_mps")
     a = value(cfg, PARAMETERS, "accel_mps2")
     trigger = ego_trigger_distance_m(ctx, actor_path, ego_path, min(v, 8.0), a, value(cfg, PARAMETERS, "arrival_gap_s"))
     return go_through(ctx, turn, v, a, trigger, "turn_into")
 
 
-def paths_m(from_left: bool, ego_lane_id: int) -> tuple[float, float]:
+def paths_m(from_left: bool, ego_lane_id: int, ring: bool = False) -> tuple[float, float]:
     """(the road user's path from its stop line to where it joins, the ego's from its junction entry
     to there) (m): from the left it crosses the far half and joins beyond the centre, from the right
-    it joins at once."""
+    it joins at once. On a roundabout (``ring``) the ring runs anticlockwise: from the entry on the
+    ego's left it goes a quarter round to the ego's own entry and joins there, in front of the ego;
+    from the entry on its right it joins at once, where the ego arrives a quarter round later."""
+    if ring:
+        to_ring = RING_ARM_END_M - ROUNDABOUT_RADIUS_M
+        if from_left:
+            return 2.0 + to_ring + RING_QUARTER_M, to_ring
+        return 2.0 + to_ring + 3.0, to_ring + RING_QUARTER_M
     r = JUNCTION_RADIUS_M
     e = lane_offset_m(ego_lane_id)
     return 2.0 + (r + e + 3.0 if from_left else 0.6 * r + 3.0), r + (r * 0.5 if from_left else 3.0)
