@@ -1,0 +1,135 @@
+"""The ego of a text that speaks of drivers in general (vei_scenario.language.generic_ego) and the
+ego's speed said by a limit it keeps or of traffic in general (vei_scenario.language.ego_speed):
+the driver in general is the ego, never one more car, unless it does something to someone in traffic
+named as generally, who is then the ego."""
+
+from __future__ import annotations
+
+import pytest
+
+from vei_scenario.language.ego_speed import at_the_limit, of_traffic
+from vei_scenario.language.generic_ego import frame
+from vei_scenario.language.reader import _kind_at, _known, _tokens, read
+
+
+def _kinds(text: str) -> list[str]:
+    return sorted(a.kind for a in read(text).actors)
+
+
+def _ego_kph(text: str) -> float | None:
+    mps = read(text).ego_speed_mps
+    return None if mps is None else round(mps * 3.6, 1)
+
+
+# A driver said in general ("a driver", "drivers", "motorists") who does the scenario's driving is the
+# ego: the road users it meets stay actors, and its speed is the ego's.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("Usual pattern here: a driver coming down the hill at around 35 mph finds a pedestrian stepping out "
+         "from the right.", ["pedestrian"], 56.3),
+        ("Motorists leaving the village at 50 km/h meet a tractor pulling out of a farm track on the left.",
+         ["truck"], 50.0),
+        ("What happens most evenings: drivers travelling at 30 mph on the bypass are overtaken by a van "
+         "that cuts in sharply.", ["van"], 48.3),
+        ("Picture a driver at 60 km/h on the ring road when a cyclist swerves out of the cycle lane ahead.",
+         ["bicycle"], 60.0),
+    ],
+)  # fmt: skip
+def test_a_driver_in_general_is_the_ego(text, kinds, kph):
+    assert _kinds(text) == kinds
+    assert _ego_kph(text) == kph
+
+
+# A narrator who only reports or sees what drivers go through is no road user; the driver is the ego.
+@pytest.mark.parametrize(
+    "text",
+    [
+        "We often see drivers heading into town at 40 mph surprised by a jogger crossing from the left.",
+        "I have had several complaints about motorists at 30 mph meeting a cyclist who rides out of the park.",
+        "We get reports of drivers at 50 km/h that hit a deer crossing from the right.",
+    ],
+)
+def test_a_narrator_who_only_reports_leaves_the_driver_the_ego(text):
+    assert len(read(text).actors) == 1
+    assert _ego_kph(text) is not None
+
+
+# What a driver in general does to someone in traffic named as generally ("a vehicle", "traffic")
+# happens to that one, the ego: the driver is the actor.
+@pytest.mark.parametrize(
+    "text, kinds",
+    [
+        ("Typically a driver on the slip road pushes in front of a vehicle in the inside lane.", ["car"]),
+        ("A driver leaving the car park reverses out into passing traffic.", ["car"]),
+        ("Now and then a driver turns right across oncoming traffic without looking.", ["car"]),
+    ],
+)
+def test_what_a_driver_does_to_traffic_happens_to_the_ego(text, kinds):
+    r = read(text)
+    assert _kinds(text) == kinds
+    assert r.actors[0].behaviours, "the driver is the actor and does what is said"
+
+
+# Near misses: a driver in particular ("a drunk driver", "the bus driver", "the driver of the van"),
+# "the driver" of a vehicle named before, or any text that names its ego ("I", "you", "my") keeps its
+# words: no one is said the ego.
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A drunk driver swerves into the oncoming lane at night.",
+        "The bus driver pulls out from the stop in front of a cyclist.",
+        "A van pulls out of a side road and the driver waves a cyclist across.",
+        "The driver of the lorry brakes hard for a pedestrian.",
+        "You are following a driver who brakes suddenly.",
+        "A driver pulls out of a side road in front of my car.",
+        "A wrong-way driver comes straight at a cyclist on the bypass.",
+    ],
+)
+def test_a_driver_in_particular_is_no_ego(text):
+    tokens = _tokens(text, brackets=True)
+    assert frame(tokens, _kind_at, _known, []) == tokens
+
+
+# Going at a limit is going at that speed; a limit said of the road alone is no speed of going.
+@pytest.mark.parametrize(
+    "tokens, said",
+    [
+        ("drivers doing the 30 limit brake late", "drivers doing 30 brake late"),
+        ("i was sitting at the 50 mph limit", "i was sitting at 50 mph"),
+        ("keeping to the 40 km/h speed limit the ego meets", "keeping to 40 km/h the ego meets"),
+        ("a road with the 30 limit", "a road with the 30 limit"),
+        ("the ego exceeds the 20 limit", "the ego exceeds the 20 limit"),
+        ("going at a 60 limit", "going at a 60 limit"),
+    ],
+)
+def test_going_at_the_limit_is_that_speed(tokens, said):
+    assert " ".join(at_the_limit(tokens.split())) == said
+
+
+def test_a_driver_keeping_to_the_limit_has_that_speed():
+    assert _ego_kph("I was keeping to the 40 mph limit when a deer jumped out from the right.") == 64.4
+
+
+# Traffic in general ("Cars are usually doing 20 mph here") goes at the ego's speed; the speed of
+# particular cars ("the cars", "two cars") is theirs.
+@pytest.mark.parametrize(
+    "tokens, kph",
+    [
+        ("vehicles typically travel at about 40 mph through the village .", 64.4),
+        ("it is quiet . traffic is normally moving at 25 km/h here .", 25.0),
+        ("on this stretch , motorists are usually doing 60 km/h .", 60.0),
+        ("the cars are doing 50 km/h .", None),
+        ("two cars are doing 50 km/h .", None),
+        ("cars parked at 50 m intervals .", None),
+    ],
+)
+def test_the_speed_of_traffic_in_general(tokens, kph):
+    mps = of_traffic(tokens.split())
+    assert (None if mps is None else round(mps * 3.6, 1)) == kph
+
+
+def test_traffic_speed_is_the_ego_speed_where_none_is_said_of_it():
+    text = "Vehicles usually travel at about 30 mph on this street. A cyclist often pulls out from the left."
+    assert _ego_kph(text) == 48.3
+    assert _ego_kph("I was doing 20 km/h. Cars usually travel at 50 km/h here. A cyclist pulls out.") == 20.0
