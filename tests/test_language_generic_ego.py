@@ -133,3 +133,24 @@ def test_traffic_speed_is_the_ego_speed_where_none_is_said_of_it():
     text = "Vehicles usually travel at about 30 mph on this street. A cyclist often pulls out from the left."
     assert _ego_kph(text) == 48.3
     assert _ego_kph("I was doing 20 km/h. Cars usually travel at 50 km/h here. A cyclist pulls out.") == 20.0
+
+
+# A speed after a participle whose subject follows "with" is that subject's ("with us coming at 80
+# km/h": the ego's, as the text is told from it; "with a bus coming at 30 mph": the bus's).
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("A delivery van reverses out of a driveway on the right with us coming at 45 km/h.", 45.0),
+        ("A jogger crosses from the left kerb with me driving at 20 mph.", 32.2),
+        ("A cyclist drifts into the lane, with the ego approaching at 60 km/h.", 60.0),
+    ],
+)
+def test_the_speed_of_a_participle_after_with_is_its_subjects(text, kph):
+    assert _ego_kph(text) == kph
+    assert all(a.speed_mps is None for a in read(text).actors)
+
+
+def test_the_speed_after_with_of_another_road_user_is_its_own():
+    r = read("A pedestrian steps out with a bus coming at 30 mph behind the ego.")
+    assert r.ego_speed_mps is None
+    assert [round(a.speed_mps * 3.6, 1) for a in r.actors if a.speed_mps] == [48.3]

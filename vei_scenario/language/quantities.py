@@ -289,6 +289,9 @@ def owners(
             return (owner,)
         if unit and tokens[j + 1] == "at" and (k < 0 or tokens[k] in _CLAUSE_OPENERS):
             return (owner,)  # "the van at 60 km/h overtakes ...": said of the subject opening its clause
+    subject = mention_ending_at(j - 1) if unit and j and tokens[j].endswith("ing") else None
+    if subject is not None and subject and tokens[subject - 1] == "with":
+        return (subject,)  # "with us coming at 80 km/h": the subject of a participle after "with"
     if tokens[j] in _MOTION and j and tokens[j - 1] == "both":  # "... are both doing 50 km/h"
         j -= 1
     elif tokens[j] in _MOTION and unit and tokens[j - 1] not in _OBJECT_PRONOUNS:
