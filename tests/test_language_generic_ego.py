@@ -154,3 +154,23 @@ def test_the_speed_after_with_of_another_road_user_is_its_own():
     r = read("A pedestrian steps out with a bus coming at 30 mph behind the ego.")
     assert r.ego_speed_mps is None
     assert [round(a.speed_mps * 3.6, 1) for a in r.actors if a.speed_mps] == [48.3]
+
+
+# A numbered reference in square brackets says no quantity of the scene ("the taxonomy of [12]").
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("Following the method of [14], a cyclist crosses from the left in front of the ego.", None),
+        ("As described in [3, 5], the ego drives at 40 km/h and a pedestrian steps out from the right.", 40.0),
+        ("Going by [7], a van cuts in front of the ego.", None),
+    ],
+)
+def test_a_citation_is_no_speed(text, kph):
+    assert _ego_kph(text) == kph
+
+
+def test_a_bracketed_label_with_words_stays():
+    from vei_scenario.language.quantities import citations
+
+    assert citations("see [12] and [3-4]") == "see   and  "
+    assert citations("[ALERT] lane 2 [a]") == "[ALERT] lane 2 [a]"

@@ -302,7 +302,7 @@ def _tokens(text: str, spell: bool = True, brackets: bool = False) -> list[str]:
     """The words of ``text`` as the reader reads them (normalised; a misspelt word as the word it is
     one slip from, unless ``spell`` is false; brackets kept as words if ``brackets``)."""
     text = text.lower().replace("\u2019", "'").replace("’", "'")
-    text = Q.ranges(normalise(text, _actor_noun_in))
+    text = Q.ranges(normalise(Q.citations(text), _actor_noun_in))
     text = ncap_rewrite(text, _actor_word)
     text = _NCAP_NAME.sub(_ncap_said, text)
     out = []
