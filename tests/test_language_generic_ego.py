@@ -174,3 +174,25 @@ def test_a_bracketed_label_with_words_stays():
 
     assert citations("see [12] and [3-4]") == "see   and  "
     assert citations("[ALERT] lane 2 [a]") == "[ALERT] lane 2 [a]"
+
+
+# Where no vehicle is named that a driver could be at the wheel of, "the driver" is the driver spoken
+# of in general, the ego: its side is the ego's side, and it is never one more car.
+@pytest.mark.parametrize(
+    "text, kerb_side",
+    [
+        ("Set it up so that a boy on a bike rides out of a gate on the driver's right.", "right"),
+        ("A dog darts out from behind the hedge on the driver's left. Drivers on this lane go too fast.", "left"),
+        ("Typical report: a jogger steps off the kerb on the driver's left. Motorists only see her late.",
+         "left"),
+    ],
+)  # fmt: skip
+def test_the_driver_with_no_vehicle_to_drive_is_the_ego(text, kerb_side):
+    r = read(text)
+    assert len(r.actors) == 1 and r.actors[0].kind != "car"
+    assert kerb_side in (r.actors[0].relation or "")
+
+
+def test_the_driver_of_a_vehicle_named_is_that_vehicles():
+    tokens = _tokens("A lorry reverses out of a yard and the driver waves a cyclist past.", brackets=True)
+    assert frame(tokens, _kind_at, _known, []) == tokens

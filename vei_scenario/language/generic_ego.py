@@ -21,9 +21,11 @@ from vei_scenario.language.ego import (
     DEFINITE,
     INDEFINITE,
     SENTENCE_END,
+    VEHICLES,
     KindAt,
     Known,
     _lemma_in,
+    _placed,
     _road_users,
     names_ego,
 )
@@ -123,6 +125,18 @@ def _only_reports(tokens: list[str]) -> bool:
     return bool(said)
 
 
+def _own_vehicles(tokens: list[str], kind_at: KindAt, known: Known, drivers: list) -> list:
+    """The vehicles of ``tokens`` a driver could be at the wheel of: not the drivers themselves, nor
+    vehicles placed as scenery ("parked cars", "the car ahead"). Where there is none, "the driver"
+    can only be the driver spoken of in general ("a child runs out on the driver's left")."""
+    heads = {p.head for p in drivers}
+    return [
+        p
+        for p in _road_users(tokens, kind_at, known)
+        if p.kind in VEHICLES and p.head not in heads and tokens[p.end - 1] not in DRIVERS and not _placed(tokens, p)
+    ]
+
+
 def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """``tokens`` with the ego of a text that speaks of drivers in general said "the ego" (see the
     module's docstring): the first generic driver, or what it does something to; the words that only
@@ -132,10 +146,11 @@ def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) 
     from vei_scenario.language.discourse import _labels
 
     drivers = _generic_drivers(tokens, kind_at, known)
-    first = next((p for p in drivers if p.det not in ("the", "that", "this")), None)
+    lone = not _own_vehicles(tokens, kind_at, known, drivers)
+    first = next((p for p in drivers if lone or p.det not in DEFINITE), None)
     if first is None or _labels(tokens, kind_at, known):
         return tokens  # ("a van pulls out and the driver brakes": that van's driver)
-    drivers = [p for p in drivers if p.start >= first.start]
+    drivers = [p for p in drivers if lone or p.start >= first.start]
     met = _anyone_met(tokens, first.end, _sentence_end(tokens, first.end))
     if met is not None:
         dropped.extend(w for w in tokens[met[0] : met[1]] if w not in INDEFINITE)
