@@ -196,3 +196,35 @@ def test_the_driver_with_no_vehicle_to_drive_is_the_ego(text, kerb_side):
 def test_the_driver_of_a_vehicle_named_is_that_vehicles():
     tokens = _tokens("A lorry reverses out of a yard and the driver waves a cyclist past.", brackets=True)
     assert frame(tokens, _kind_at, _known, []) == tokens
+
+
+# A bare plural of vehicles opening its sentence on the move ("Cars coming down the hill ...") is
+# traffic in general: the ego, not one more car; vehicles standing ("Cars were parked") are not.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("Cars coming down the hill at 40 mph have little time to stop when a pedestrian steps out from the left.",
+         ["pedestrian"], 64.4),
+        ("Near the school gates. Vehicles pulling away from the lights at 30 km/h meet children crossing "
+         "from the right.", ["pedestrian"], 30.0),
+        ("Cars overtake a cyclist on this bend while a van comes the other way. Cars travel at 50 mph.",
+         ["bicycle", "van"], 80.5),
+    ],
+)  # fmt: skip
+def test_traffic_in_general_on_the_move_is_the_ego(text, kinds, kph):
+    assert _kinds(text) == kinds
+    assert _ego_kph(text) == kph
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Cars were parked on both sides. A child runs out from between them.",
+        "The cars coming down the hill brake for a pedestrian.",
+        "Two cars come down the hill and a pedestrian steps out.",
+        "Cars coming down the hill meet me at the bend.",
+    ],
+)
+def test_vehicles_in_particular_or_standing_are_no_ego(text):
+    tokens = _tokens(text, brackets=True)
+    assert frame(tokens, _kind_at, _known, []) == tokens

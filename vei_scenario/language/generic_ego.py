@@ -18,6 +18,7 @@ from __future__ import annotations
 
 from vei_scenario.language.discourse import _Phrase
 from vei_scenario.language.ego import (
+    BE,
     DEFINITE,
     INDEFINITE,
     SENTENCE_END,
@@ -46,6 +47,10 @@ INVOLVED = frozenset({"me", "us", "my", "our", "ego", "myself", "ourselves"})
 #: Words before a driver that place it relative to someone whose view it is ("behind a driver",
 #: "overtaking drivers"): a driver met, not the driver whose view the text takes.
 MET = frozenset("behind ahead past following overtaking passing tailgating towards toward by after approaching".split())
+#: Bare plurals of vehicles that open a sentence as traffic in general ("Cars coming down the hill").
+MOVING_PLURALS = frozenset({"cars", "vehicles"})
+#: Words of vehicles standing, not moving ("Cars were parked", "vehicles queuing").
+STANDING = frozenset({"parked", "stationary", "stopped", "queuing", "queueing", "queued", "waiting", "standing"})
 #: Words before a noun that make it someone besides a driver already named ("other drivers").
 OTHER = frozenset({"other", "another"})
 
@@ -64,13 +69,27 @@ def _opening_participle(tokens: list[str], k: int) -> bool:
     return tokens[k].endswith("ing") and (k == 0 or tokens[k - 1] in SENTENCE_END)
 
 
+def _traffic_subject(tokens: list[str], k: int) -> bool:
+    """Whether the bare plural at ``k`` ("Cars coming down the hill ...", "Vehicles leaving the
+    roundabout ...") opens its sentence as traffic in general on the move: not standing ("Cars were
+    parked on both sides")."""
+    if tokens[k] not in MOVING_PLURALS or (k and tokens[k - 1] not in SENTENCE_END | {":"}):
+        return False
+    j = k + 1
+    while j < len(tokens) and tokens[j] in BE:
+        j += 1
+    return j < len(tokens) and tokens[j] not in STANDING and ("VERB" in lemmas(tokens[j]))
+
+
 def _generic_drivers(tokens: list[str], kind_at: KindAt, known: Known) -> list:
     """The phrases naming a driver in general: the person-at-a-wheel noun alone ("a driver", "the
     driver", "drivers"), not a vehicle's driver ("the bus driver", "the driver of the van") nor
     someone besides ("other drivers")."""
     out = []
     for p in _road_users(tokens, kind_at, known):
-        if p.end - p.head != 1 or tokens[p.head] not in DRIVERS or tokens[p.end : p.end + 1] == ["of"]:
+        if p.end - p.head != 1 or tokens[p.end : p.end + 1] == ["of"]:
+            continue
+        if tokens[p.head] not in DRIVERS and not _traffic_subject(tokens, p.head):
             continue
         before = tokens[p.head - 1] if p.head else ""
         if before in OTHER or (p.head and kind_at(tokens, p.head - 1) is not None) or _modifier(before):
