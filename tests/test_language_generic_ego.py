@@ -228,3 +228,31 @@ def test_traffic_in_general_on_the_move_is_the_ego(text, kinds, kph):
 def test_vehicles_in_particular_or_standing_are_no_ego(text):
     tokens = _tokens(text, brackets=True)
     assert frame(tokens, _kind_at, _known, []) == tokens
+
+
+# Once a road user is said right ahead of the ego, "the following driver" (car, vehicle) is the one
+# following it: the ego, not one more car behind.
+@pytest.mark.parametrize(
+    "text, kinds",
+    [
+        ("The lorry ahead of me pulls out round a parked bus and the following car has to brake hard.",
+         ["truck", "truck"]),
+        ("The van in front of you stops dead at a bus stop, and the following driver swerves.",
+         ["van"]),
+        ("A bus right ahead of the ego brakes, and the following vehicle stops just in time.", ["truck"]),
+    ],
+)  # fmt: skip
+def test_the_follower_of_the_ego_lead_is_the_ego(text, kinds):
+    assert _kinds(text) == kinds
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist brakes hard and the following car runs into her.",
+        "The van ahead of the cyclist brakes and the following car hits it.",
+    ],
+)
+def test_a_follower_of_someone_else_stays_a_road_user(text):
+    tokens = _tokens(text, brackets=True)
+    assert frame(tokens, _kind_at, _known, []) == tokens

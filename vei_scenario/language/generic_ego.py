@@ -156,10 +156,42 @@ def _own_vehicles(tokens: list[str], kind_at: KindAt, known: Known, drivers: lis
     ]
 
 
+#: Words that name the ego after "in front of" / "ahead of" ("the car in front of you").
+EGO_WORDS = frozenset({"you", "i", "me", "us", "ego"})
+#: Vehicle and driver nouns a follower is named by ("the following driver", "the following car").
+FOLLOWERS = frozenset({"driver", "car", "vehicle", "motorist"})
+
+
+def _ahead_of_ego(tokens: list[str], k: int) -> bool:
+    """Whether "in front of" / "ahead of" at ``k`` places someone right ahead of the ego ("in front of
+    you", "ahead of the ego")."""
+    if tokens[k : k + 2] not in (["in", "front"], ["ahead", "of"]):
+        return False
+    j = k + 2 + (tokens[k + 1] == "front" and tokens[k + 2 : k + 3] == ["of"])
+    j += tokens[j : j + 1] == ["the"]
+    return tokens[j : j + 1] != [] and tokens[j] in EGO_WORDS
+
+
+def _follower_of_lead(tokens: list[str], dropped: list[str]) -> list[str]:
+    """ "The car in front of you swerves out round the van, and the following driver is faced with a
+    stationary van": once a road user is said to be right ahead of the ego, "the following driver"
+    (car, vehicle) is the one following it, the ego."""
+    lead = next((k for k in range(len(tokens) - 2) if _ahead_of_ego(tokens, k)), None)
+    if lead is None:
+        return tokens
+    out = list(tokens)
+    for k in range(len(out) - 2, lead, -1):
+        if out[k - 1 : k + 1] == ["the", "following"] and out[k + 1] in FOLLOWERS:
+            dropped.extend(out[k : k + 2])
+            out[k - 1 : k + 2] = ["the", "ego"]
+    return out
+
+
 def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """``tokens`` with the ego of a text that speaks of drivers in general said "the ego" (see the
     module's docstring): the first generic driver, or what it does something to; the words that only
     named it are added to ``dropped``."""
+    tokens = _follower_of_lead(tokens, dropped)
     if (names_ego(tokens, kind_at, known) and not _only_reports(tokens)) or SECOND_PERSON & set(tokens):
         return tokens
     from vei_scenario.language.discourse import _labels
