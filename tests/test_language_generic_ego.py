@@ -256,3 +256,10 @@ def test_the_follower_of_the_ego_lead_is_the_ego(text, kinds):
 def test_a_follower_of_someone_else_stays_a_road_user(text):
     tokens = _tokens(text, brackets=True)
     assert frame(tokens, _kind_at, _known, []) == tokens
+
+
+def test_a_narrator_who_has_a_driver_do_something_is_the_ego():
+    tokens = _tokens("I had a driver pull out right in front at the junction.", brackets=True)
+    assert frame(tokens, _kind_at, _known, []) == tokens
+    tokens = _tokens("We get complaints about drivers speeding past a cyclist.", brackets=True)
+    assert frame(tokens, _kind_at, _known, []) != tokens

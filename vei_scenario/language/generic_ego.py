@@ -41,7 +41,11 @@ ANYONE = frozenset({"vehicle", "vehicles", "traffic", "motorist", "motorists", "
 SECOND_PERSON = frozenset({"you", "your", "yourself"})
 #: Verbs of a narrator who only reports or sees what drivers go through ("we have had three reports",
 #: "we regularly see children stepping out"): such a narrator is no road user.
-REPORTING = frozenset({"see", "watch", "notice", "observe", "hear", "receive", "record", "log", "get", "have"})
+REPORTING = frozenset({"see", "watch", "notice", "observe", "hear", "receive", "record", "log"})
+#: Verbs that report only with an account as their object ("we have had three reports", "I get
+#: complaints"), not with a road user ("I had a driver pull out"), and those accounts.
+HAVING = frozenset({"have", "get"})
+ACCOUNTS = frozenset({"report", "complaint", "incident", "case", "call", "collision", "claim"})
 #: First-person words that put the narrator in the traffic ("in front of me", "our lane").
 INVOLVED = frozenset({"me", "us", "my", "our", "ego", "myself", "ourselves"})
 #: Words before a driver that place it relative to someone whose view it is ("behind a driver",
@@ -60,7 +64,8 @@ def _modifier(word: str) -> bool:
     wrong-way driver", "safety driver"): an adjective or noun, not an article or adverb."""
     if word in DEFINITE | INDEFINITE or not word.replace("-", "").isalpha():
         return False
-    return "-" in word or bool({"ADJ", "NOUN"} & set(lemmas(word)))
+    pos = set(lemmas(word))
+    return "-" in word or (bool({"ADJ", "NOUN"} & pos) and "ADV" not in pos)  # (not "about drivers")
 
 
 def _opening_participle(tokens: list[str], k: int) -> bool:
@@ -139,7 +144,10 @@ def _only_reports(tokens: list[str]) -> bool:
     said = [k for k, w in enumerate(tokens) if w in ("i", "we")]
     for k in said:
         after = tokens[k + 1 : k + 4]
-        if "to" in after[:3] or not any(_lemma_in(w, REPORTING) for w in after):
+        account = any(_lemma_in(w, HAVING) for w in after) and any(
+            _lemma_in(w, ACCOUNTS) for w in tokens[k + 1 : k + 6]
+        )
+        if "to" in after[:3] or not (account or any(_lemma_in(w, REPORTING) for w in after)):
             return False
     return bool(said)
 
