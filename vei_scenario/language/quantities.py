@@ -99,6 +99,16 @@ def _decade(m: re.Match) -> str:
     return f"about {int(m.group(2)) * 10 + _IN_DECADE[m.group(1)]}"
 
 
+#: A reference to a numbered source in square brackets ("[12]", "[3, 7]", "[4-6]").
+_CITATION = re.compile(r"\[\s*\d+(?:\s*[,\u2013-]\s*\d+)*\s*\]")
+
+
+def citations(text: str) -> str:
+    """``text`` without its numbered references ("the taxonomy of [12]"): a writer citing a source
+    says no quantity of the scene, and a bare number there would read as a speed."""
+    return _CITATION.sub(" ", text)
+
+
 def ranges(text: str) -> str:
     """Each range of a quantity in the normalised ``text`` as its middle, approximately ("20-30 mph":
     "about 25 mph"): a writer giving a range means a value within it, and the middle is the one that
@@ -289,6 +299,9 @@ def owners(
             return (owner,)
         if unit and tokens[j + 1] == "at" and (k < 0 or tokens[k] in _CLAUSE_OPENERS):
             return (owner,)  # "the van at 60 km/h overtakes ...": said of the subject opening its clause
+    subject = mention_ending_at(j - 1) if unit and j and tokens[j].endswith("ing") else None
+    if subject is not None and subject and tokens[subject - 1] == "with":
+        return (subject,)  # "with us coming at 80 km/h": the subject of a participle after "with"
     if tokens[j] in _MOTION and j and tokens[j - 1] == "both":  # "... are both doing 50 km/h"
         j -= 1
     elif tokens[j] in _MOTION and unit and tokens[j - 1] not in _OBJECT_PRONOUNS:

@@ -28,7 +28,7 @@ import re
 from dataclasses import dataclass, field, replace
 from functools import lru_cache
 
-from vei_scenario.language import discourse, ego, motion, sides
+from vei_scenario.language import discourse, ego, ego_speed, generic_ego, motion, sides
 from vei_scenario.language import lexicon as L
 from vei_scenario.language import quantities as Q
 from vei_scenario.language import settings as S
@@ -302,7 +302,7 @@ def _tokens(text: str, spell: bool = True, brackets: bool = False) -> list[str]:
     """The words of ``text`` as the reader reads them (normalised; a misspelt word as the word it is
     one slip from, unless ``spell`` is false; brackets kept as words if ``brackets``)."""
     text = text.lower().replace("\u2019", "'").replace("’", "'")
-    text = Q.ranges(normalise(text, _actor_noun_in))
+    text = Q.ranges(normalise(Q.citations(text), _actor_noun_in))
     text = ncap_rewrite(text, _actor_word)
     text = _NCAP_NAME.sub(_ncap_said, text)
     out = []
@@ -519,6 +519,8 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
     ]
     framed: list[str] = []
     tokens = ego.frame(tokens, _kind_at, _known, framed)  # (the ego named by a role, its driver, a witness)
+    tokens = generic_ego.frame(tokens, _kind_at, _known, framed)  # (the ego as drivers in general)
+    tokens = ego_speed.at_the_limit(tokens)  # ("doing the 20 limit": at 20)
     tokens, dropped = discourse.resolve(tokens, _kind_at, _known, proper_names(text))  # (who is who; words out)
     dropped = framed + dropped
     ignored: list[str] = [w for w in dropped if w not in FUNCTION_WORDS and w.isalpha()]
@@ -1599,6 +1601,8 @@ def read(text: str) -> Reading:
         r.ego_speed_mps = actors[0].speed_mps  # (the speed said of both)
     if r.ego_speed_mps is None and Q.ego_at_rest(clauses):
         r.ego_speed_mps = 0.0  # ("I was sat at the lights when ..."): the ego stands still
+    if r.ego_speed_mps is None:
+        r.ego_speed_mps = ego_speed.of_traffic(scanned)  # ("Cars are usually doing 20 mph here")
     ignored += unplaced
     if len(actors) > MAX_ACTORS:
         raise NotUnderstood([f"{len(actors)} road users (a scenario holds at most {MAX_ACTORS} besides the ego)"], text)
