@@ -108,8 +108,15 @@ ACTOR_NOUNS = {
         *ANIMALS,
     ),
     "bicycle": (
-        "bicycle", "bike", "cyclist", "bicyclist", "biker", "kid on a bike", "cargo bike",
-        "ebta", "ebt",  # (Euro NCAP's bicyclist target)
+        "bicycle",
+        "bike",
+        "cyclist",
+        "bicyclist",
+        "biker",
+        "kid on a bike",
+        "cargo bike",
+        "ebta",
+        "ebt",  # (Euro NCAP's bicyclist target)
     ),  # fmt: skip
     "e-scooter": (
         "e-scooter",
