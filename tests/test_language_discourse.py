@@ -508,3 +508,30 @@ def test_an_abbreviation_defined_in_brackets_stands_for_its_term(text, ego_kph):
     r = read(text)
     assert len(r.actors) == 1 and "iv" not in r.ignored and "tc" not in r.ignored and "hv" not in r.ignored
     assert r.ego_speed_mps is not None and abs(r.ego_speed_mps * 3.6 - ego_kph) < 0.5
+
+
+# --- a person placed first and then said to be on or in a vehicle is one rider of it ------------------
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("A woman ahead of us on a bicycle brakes suddenly while we drive at 30 km/h.", "bicycle"),
+        ("The bloke next to me in a white van cuts into my lane, I'm at 50 km/h.", "van"),
+        ("Some lad behind us on an e-scooter overtakes on the left, ego 20 km/h.", "e-scooter"),
+        ("A man alongside the ego in a lorry drifts into its lane, ego 70 km/h.", "truck"),
+    ],
+    ids=["ahead-of-us-on", "next-to-me-in", "behind-us-on", "alongside-the-ego-in"],
+)
+def test_a_person_placed_then_on_a_vehicle_is_one_rider_of_it(text, kind):
+    assert [a.kind for a in read(text).actors] == [kind]
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A pedestrian ahead of us in the road crosses from the left, ego 30 km/h.", ["pedestrian"]),
+        ("A man ahead of us on the pavement steps out from the left, ego 30 km/h.", ["pedestrian"]),
+    ],
+    ids=["in-the-road", "on-the-pavement"],
+)
+def test_a_person_placed_then_in_no_vehicle_stays_a_person(text, expected):
+    assert [a.kind for a in read(text).actors] == expected

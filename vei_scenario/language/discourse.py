@@ -140,6 +140,55 @@ def _unknown_person(tokens: list[str], i: int, known: Known) -> int | None:
     return None
 
 
+#: Where a person is, said between the person and the vehicle they ride or drive ("the guy behind me in
+#: a pickup"): a closed class of place words, each with the words that may follow it before its object.
+_PLACE_WORDS = {"ahead": ("of",), "behind": (), "alongside": (), "beside": (), "next": ("to",), "in": ("front", "of")}
+#: The objects of such a place: the narrator or the ego (another road user there would be a third party).
+_PLACE_OBJECTS = frozenset({"me", "us", "ego", "him", "her", "them"})
+
+
+def _placement_end(tokens: list[str], i: int) -> int | None:
+    """Where a placement of a person starting at ``i`` ends ("behind me", "ahead of us", "in front of
+    the ego", "next to me"), or None."""
+    after = _PLACE_WORDS.get(tokens[i]) if i < len(tokens) else None
+    if after is None:
+        return None
+    j = i + 1
+    for w in after:
+        if j < len(tokens) and tokens[j] == w:
+            j += 1
+        elif w != "of" or tokens[i] != "ahead":  # ("ahead" alone is a place too: "a guy ahead on a bike")
+            return None
+    if j < len(tokens) and tokens[j] == "the":
+        j += 1
+    if j < len(tokens) and tokens[j] in _PLACE_OBJECTS:
+        return j + 1
+    return j if tokens[i] == "ahead" and j == i + 1 else None
+
+
+def _placed_riders(tokens: list[str], kind_at: KindAt) -> list[str]:
+    """ "the guy behind me in a pickup", "a woman ahead of us on a bicycle": a person, where they are,
+    then the vehicle they are on or in, said as :func:`_riders` reads one rider ("the guy in a pickup
+    behind me"). Only a walker's noun right before the place, and the preposition of riding right after
+    it, move; what follows the preposition is left to :func:`_riders` to judge a vehicle or not."""
+    out = list(tokens)
+    for i in range(1, len(out)):
+        found = kind_at(out, i - 1)
+        if found is None or found != ("pedestrian", 1):
+            continue
+        end = _placement_end(out, i)
+        if end is None or end >= len(out) or out[end] not in RIDING:
+            continue
+        k = end + 1  # the vehicle's phrase: a determiner, up to two modifiers, its noun
+        k += 1 if k < len(out) and out[k] in DETERMINERS else 0
+        head = next((h for h in range(k, min(k + 3, len(out))) if kind_at(out, h) is not None), None)
+        if head is None or kind_at(out, head)[0] in ("pedestrian", "ego"):
+            continue
+        stop = head + kind_at(out, head)[1]
+        out[i:stop] = out[end:stop] + out[i:end]
+    return out
+
+
 def _riders(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
     """ "a lad on a scooter", "a student on one of those hire bikes", "a woman riding a bike": one
     referent of the vehicle's type, said with the person's determiner."""
@@ -1343,7 +1392,7 @@ def resolve(
     tokens = _vehicle_labels(tokens, kind_at, known)
     tokens = _letter_labels(tokens, kind_at, known, dropped)
     tokens = _field_names(tokens, kind_at, known)
-    tokens = _riders(tokens, kind_at, known)
+    tokens = _riders(_placed_riders(tokens, kind_at), kind_at, known)
     tokens = _pushed(tokens, kind_at, known, dropped)
     tokens = _drivers(tokens, kind_at, known)
     tokens = _companions(tokens, kind_at, known, dropped)
