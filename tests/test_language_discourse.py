@@ -535,3 +535,30 @@ def test_a_person_placed_then_on_a_vehicle_is_one_rider_of_it(text, kind):
 )
 def test_a_person_placed_then_in_no_vehicle_stays_a_person(text, expected):
     assert [a.kind for a in read(text).actors] == expected
+
+
+# --- an apposition that goes on with a participle is the same road user -------------------------------
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("The lead vehicle, a coach heading for the airport, brakes sharply in front of us, ego 30 km/h.", "truck"),
+        ("A vehicle on our right, a grey pickup doing about 40 mph, drifts into our lane.", "van"),
+        ("The truck ahead, an old lorry loaded with gravel, stops suddenly, ego 50 km/h.", "truck"),
+    ],
+    ids=["heading-for", "doing-a-speed", "loaded-with"],
+)
+def test_an_apposition_with_a_participle_is_the_same_road_user(text, kind):
+    assert [a.kind for a in read(text).actors] == [kind]
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A car, a van turning left, and a cyclist all cross in front of us, ego 30 km/h.", 3),
+        ("The car ahead brakes, a cyclist coming the other way swerves, ego 30 km/h.", 2),
+        ("A car overtakes us, a van following it closely, then both cut in, ego 60 km/h.", 2),
+    ],
+    ids=["a-list", "another-clause", "an-absolute-clause"],
+)
+def test_a_list_or_a_new_clause_after_a_comma_is_another_road_user(text, expected):
+    assert len(read(text).actors) == expected

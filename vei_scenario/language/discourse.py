@@ -1172,6 +1172,57 @@ def _last_vehicle_in_sentence(out: list[str], kind_at: KindAt) -> bool:
     return False
 
 
+def _participle(word: str) -> bool:
+    """Whether ``word`` is a verb's participle ("heading", "doing", "loaded"): a non-finite form that
+    can go on a noun phrase without opening a clause."""
+    return word.endswith(("ing", "ed")) and _verb_of(word) and word not in lemmas(word).get("VERB", ())
+
+
+def _participial_apposition(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
+    """ "An oncoming vehicle, a delivery van travelling at 70 km/h, drifts ...", "the car ahead, a taxi
+    doing 40, brakes": an apposition whose noun goes on with a participle phrase is still the road user
+    named before the comma, said as an apposition closed right after its noun (", a delivery van,
+    travelling at 70 km/h, drifts"), which the reader already takes as the same one. Only when the road
+    users are of one type or both motor vehicles, nothing in the participle phrase names another road user
+    or a list ("and", "or"), and a verb follows its closing comma: the predicate of the sentence the two
+    names share ("a car, a van turning left, and a cyclist": a list; "the car brakes, a cyclist coming the
+    other way swerves": a clause of its own)."""
+    out = list(tokens)
+    i = 1
+    while i < len(out):
+        if out[i] != "," or i + 1 >= len(out) or out[i + 1] not in ("a", "an"):
+            i += 1
+            continue
+        before = None  # (the road user before the comma, past a short placement: "a vehicle on our right")
+        for b in range(i - 1, max(i - 6, -1), -1):
+            if out[b] in PUNCT or kind_at(out, b) is not None:
+                before = b if out[b] not in PUNCT else None
+                break
+        head = next((h for h in range(i + 2, min(i + 5, len(out))) if kind_at(out, h) is not None), None)
+        if before is None or head is None or out[i + 2 : head] and any(w in PUNCT for w in out[i + 2 : head]):
+            i += 1
+            continue
+        first, second = kind_at(out, before)[0], kind_at(out, head)[0]
+        end = head + kind_at(out, head)[1]
+        if not (first == second or (first in VEHICLES and second in VEHICLES)) or first == "ego":
+            i += 1
+            continue
+        close = next((k for k in range(end, min(end + 10, len(out))) if out[k] in PUNCT), None)
+        fits = (
+            end < len(out)
+            and _participle(out[end])
+            and close is not None
+            and out[close] == ","
+            and close + 1 < len(out)
+            and _verb_of(out[close + 1])
+            and not any(kind_at(out, k) is not None or out[k] in ("and", "or") for k in range(end, close))
+        )
+        if fits:
+            out.insert(end, ",")
+        i = end
+    return out
+
+
 def _brackets(tokens: list[str], kind_at: KindAt, known: Known, names: dict[str, str], dropped: list[str]) -> list[str]:
     """Brackets go; a name given a road user in them ("a passenger car (the challenger)") is kept as a
     name of that referent, and the bracket is not read as a second road user."""
@@ -1389,6 +1440,7 @@ def resolve(
     tokens = make_and_model(tokens, kind_at, known)
     tokens = _named_vehicles(tokens, kind_at, known, proper)
     tokens = _brackets(tokens, kind_at, known, names, dropped)
+    tokens = _participial_apposition(tokens, kind_at, known)
     tokens = _vehicle_labels(tokens, kind_at, known)
     tokens = _letter_labels(tokens, kind_at, known, dropped)
     tokens = _field_names(tokens, kind_at, known)
