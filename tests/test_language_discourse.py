@@ -562,3 +562,30 @@ def test_an_apposition_with_a_participle_is_the_same_road_user(text, kind):
 )
 def test_a_list_or_a_new_clause_after_a_comma_is_another_road_user(text, expected):
     assert len(read(text).actors) == expected
+
+
+# --- a capitalised name after a preposition of place, or owned by a name, is a place, no vehicle -------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("Coming down the Sea to Sky at 80 km/h, a lorry comes the other way in our lane.", ["truck"]),
+        ("Driving up the Kingsway at 30 mph, a cyclist ahead of us brakes hard.", ["bicycle"]),
+        ("Outside St Mary's Infants on the High Street a child runs out from the left, ego 20 mph.", ["pedestrian"]),
+        ("Past Hill Farm's Lodge on the right a deer jumps out, ego 50 km/h.", ["pedestrian"]),
+    ],
+    ids=["down-the", "up-the", "outside-a-name's", "past-a-name's"],
+)
+def test_a_name_in_a_place_is_no_vehicle(text, expected):
+    assert [a.kind for a in read(text).actors] == expected
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "My neighbour Dave's Mokka pulled out in front of me, I was at 30 mph.",
+        "Going up the hill at 30 mph, a silver Mokka pulled out in front of me.",
+    ],
+    ids=["a-person's-car", "after-a-place"],
+)
+def test_a_name_in_a_vehicles_place_is_still_a_car(text):
+    assert [a.kind for a in read(text).actors] == ["car"]

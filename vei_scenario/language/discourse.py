@@ -1385,13 +1385,23 @@ def _bare_again(tokens: list[str], p: _Phrase, referents: list[Referent], kind_a
 #: Prepositions of place: a name after one of them and an article is a place ("past the Odeon").
 _PLACE_BEFORE = frozenset(
     "at near past by outside opposite towards toward to from along across over under through round around "
-    "onto off beside inside with".split()  # (and a companion's: "a man with a Labrador")
+    "onto off beside inside with up down".split()  # (and a companion's: "a man with a Labrador")
 )
 #: Names of days and months, a closed class: "a Saturday" is a day, no vehicle.
 _CALENDAR = frozenset(
     "monday tuesday wednesday thursday friday saturday sunday january february march april may june july "
     "august september october november december".split()
 )
+
+
+def _owner_placed(tokens: list[str], s: int, proper: frozenset[str]) -> bool:
+    """Whether the name that owns what follows the "'s" at ``s`` stands after a preposition of place
+    ("outside St Mary's Infants", "past Hill Farm's Lodge"): then what it owns is a place too."""
+    j = s - 1  # (past the name's words, at least one of them written with its capital: the speller may
+    while j >= max(s - 4, 0) and tokens[j].isalpha() and tokens[j] not in _PLACE_BEFORE:  # have changed one)
+        j -= 1
+    named = any(w in proper for w in tokens[j + 1 : s])
+    return named and j >= 0 and tokens[j] in _PLACE_BEFORE
 
 
 def _named_vehicles(tokens: list[str], kind_at: KindAt, known: Known, proper: frozenset[str]) -> list[str]:
@@ -1416,6 +1426,8 @@ def _named_vehicles(tokens: list[str], kind_at: KindAt, known: Known, proper: fr
         if j < 0 or tokens[j] not in ("a", "an", "the", "his", "her", "their", "'s"):
             continue
         if j > 0 and (tokens[j - 1] in _PLACE_BEFORE or tokens[j - 1] in BE):  # (or said of something: "was a")
+            continue
+        if tokens[j] == "'s" and _owner_placed(tokens, j, proper):  # ("outside St Mary's Infants": a place)
             continue
         nxt = tokens[i + 1] if i + 1 < len(tokens) else "."
         ends = nxt in PUNCT or nxt in PREPOSITIONS or (nxt not in proper and _verb_of(nxt))
