@@ -589,3 +589,52 @@ def test_a_name_in_a_place_is_no_vehicle(text, expected):
 )
 def test_a_name_in_a_vehicles_place_is_still_a_car(text):
     assert [a.kind for a in read(text).actors] == ["car"]
+
+
+# --- a bare plural that a singular instance follows is what happens in general, not another road user --
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        (
+            "Joggers often cross here without looking; simulate a jogger crossing from the right, ego 30 km/h.",
+            "pedestrian",
+        ),
+        (
+            "We see cyclists running the red light every morning. Build one where a cyclist runs the red from the "
+            "left, ego 40 km/h.",
+            "bicycle",
+        ),
+        (
+            "Teenagers on e-bikes keep jumping the kerb on Park Lane. Simulate a teenager on an e-bike riding off "
+            "the kerb from the left, ego 25 mph.",
+            "bicycle",
+        ),
+    ],
+    ids=["joggers-a-jogger", "cyclists-a-cyclist", "riders-a-rider"],
+)
+def test_a_generic_plural_then_one_of_them_is_one_road_user(text, kind):
+    assert [a.kind for a in read(text).actors] == [kind]
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("Two joggers cross from the left, then a jogger crosses from the right, ego 30 km/h.", 3),
+        ("Cyclists ahead of us ride two abreast, ego 30 km/h.", 1),
+        ("Vans often stop dead here. The van ahead of us stops, then a van behind us honks, ego 30 km/h.", 2),
+    ],
+    ids=["counted", "no-instance", "named-again-first"],
+)
+def test_a_counted_or_only_plural_stays_a_road_user(text, expected):
+    assert len(read(text).actors) >= expected
+
+
+def test_plural_parked_vehicles_a_walker_comes_out_from_stay_in_the_scene():
+    kinds = [
+        a.kind
+        for a in read(
+            "A child runs out from between parked cars on the left, and a car coming the "
+            "other way swerves, ego 30 km/h."
+        ).actors
+    ]
+    assert "pedestrian" in kinds and kinds.count("car") == 2

@@ -189,6 +189,64 @@ def _placed_riders(tokens: list[str], kind_at: KindAt) -> list[str]:
     return out
 
 
+#: Words that count a plural: counted road users are so many road users ("two joggers"), no generality.
+_COUNTED = frozenset("two three four five six seven eight nine ten both several couple pair".split())
+#: Words before a plural that make it a place or scenery rather than road users in general.
+#: (with the prepositions of place, :data:`_PLACE_BEFORE`)
+_A_PLACE = frozenset({"between", "behind", "among", "amongst", "in", "beyond", "parked", "stationary"})
+#: Words that end the clause a generic plural is the subject or object of.
+_CLAUSE_ENDS = frozenset({"and", "but", "so", "which", "who", "while", "when", "whereas", "because"})
+
+
+def _ridden_kind(tokens: list[str], p: _Phrase, kind_at: KindAt) -> tuple[str, int]:
+    """The type a person's phrase names and where it ends, counting what they ride ("teenagers on
+    e-bikes", "a teenager on an e-bike": a bicycle's)."""
+    k = p.end
+    if p.kind != "pedestrian" or k >= len(tokens) or tokens[k] not in ("on", "riding"):
+        return p.kind, p.end
+    for h in range(k + 1, min(k + 4, len(tokens))):
+        found = kind_at(tokens, h)
+        if found is not None:
+            return (found[0], h + found[1]) if found[0] not in ("pedestrian", "ego") else (p.kind, p.end)
+    return p.kind, p.end
+
+
+def _generic_plurals(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "We regularly see children stepping out ... Please simulate a child running out", "joggers often
+    cross here; simulate a jogger crossing": a bare plural (no article, no count) says what road users
+    of a type do in general; when the first road user of that type named after it is a new one ("a
+    child"), that one is the scenario's, and the plural's clause is left out (listed as not used). A
+    plural with nothing after it, or said again first as known ("the van"), is the road user itself."""
+    phrases = _phrases(tokens, kind_at, known)
+    out = list(tokens)
+    cut: list[tuple[int, int]] = []
+    for n, p in enumerate(phrases):
+        before = tokens[p.start - 1] if p.start else ""
+        if cut and p.start < cut[-1][1]:
+            continue  # (what a plural rides: "on e-bikes", inside the clause already left out)
+        if p.det or p.kind == "ego" or _singular(tokens[p.end - 1]) or before in _COUNTED or before.isdigit():
+            continue
+        if any(w in _A_PLACE or w in _PLACE_BEFORE for w in tokens[max(p.start - 2, 0) : p.start]):
+            continue  # ("out from between parked cars": where someone is, not who)
+        kind, end = _ridden_kind(tokens, p, kind_at)
+        later = next(
+            (q for q in phrases[n + 1 :] if q.start >= end and _ridden_kind(tokens, q, kind_at)[0] == kind), None
+        )
+        if later is None or later.det not in ("a", "an") or not _singular(tokens[later.end - 1]):
+            continue
+        stop = end
+        while stop < len(tokens) and not (
+            tokens[stop] in PUNCT or tokens[stop] in _CLAUSE_ENDS or not tokens[stop].replace("-", "").isalpha()
+        ):
+            stop += 1
+        cut.append((p.start, stop))
+    for start, stop in cut:
+        dropped.extend(tokens[start:stop])
+    for start, stop in reversed(cut):
+        del out[start:stop]
+    return out
+
+
 def _riders(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
     """ "a lad on a scooter", "a student on one of those hire bikes", "a woman riding a bike": one
     referent of the vehicle's type, said with the person's determiner."""
@@ -1456,6 +1514,7 @@ def resolve(
     tokens = _vehicle_labels(tokens, kind_at, known)
     tokens = _letter_labels(tokens, kind_at, known, dropped)
     tokens = _field_names(tokens, kind_at, known)
+    tokens = _generic_plurals(tokens, kind_at, known, dropped)
     tokens = _riders(_placed_riders(tokens, kind_at), kind_at, known)
     tokens = _pushed(tokens, kind_at, known, dropped)
     tokens = _drivers(tokens, kind_at, known)
