@@ -638,3 +638,33 @@ def test_plural_parked_vehicles_a_walker_comes_out_from_stay_in_the_scene():
         ).actors
     ]
     assert "pedestrian" in kinds and kinds.count("car") == 2
+
+
+# --- "X, followed by Y, does ...": two road users who both do it, Y after X ----------------------------
+@pytest.mark.parametrize(
+    "text, kinds, behaviour",
+    [
+        (
+            "A jogger, followed by a cyclist, crosses from the left, ego 30 km/h.",
+            ["pedestrian", "bicycle"],
+            "cross_in_front",
+        ),
+        (
+            "A woman, closely followed by a child, steps out from the right, ego 25 mph.",
+            ["pedestrian", "pedestrian"],
+            "cross_in_front",
+        ),
+        ("A van chased by a motorbike runs the red light from the left, ego 40 km/h.", ["van", "car"], "run_red_light"),
+    ],
+    ids=["followed-by", "closely-followed-by", "chased-by-no-commas"],
+)
+def test_a_road_user_followed_by_another_is_two_who_do_the_same(text, kinds, behaviour):
+    actors = read(text).actors
+    assert [a.kind for a in actors] == kinds
+    assert all(behaviour in [b[0] for b in a.behaviours] for a in actors)
+
+
+def test_a_passive_clause_of_following_stays_its_own():
+    actors = read("The cyclist was followed by a van for a while; the van overtakes us, ego 50 km/h.").actors
+    assert [a.kind for a in actors] == ["bicycle", "van"]
+    assert "overtake" not in [b[0] for b in actors[0].behaviours]

@@ -247,6 +247,40 @@ def _generic_plurals(tokens: list[str], kind_at: KindAt, known: Known, dropped: 
     return out
 
 
+#: Verbs of coming after someone: "X, followed by Y, ..." names two road users going one after the other.
+_COMING_AFTER = frozenset({"follow", "trail", "tail", "chase", "pursue", "accompany"})
+
+
+def _followed_by(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "A cyclist, closely followed by an e-scooter rider, comes off the towpath": a participle of
+    coming after, set off by commas, says a second road user who does what the first does, behind it;
+    said as "a cyclist and an e-scooter rider comes off ...", which the reader reads as two who share
+    the verb. Only a new road user after "by" ("by a ...", not the ego), and no form of "be" before
+    ("the cyclist was followed by a van": a clause of its own)."""
+    out = list(tokens)
+    i = 1
+    while i + 2 < len(out):
+        if out[i] != "," or kind_at(out, i - 1) is None or kind_at(out, i - 1)[0] == "ego":
+            i += 1
+            continue
+        j = i + 1
+        if j < len(out) and out[j].endswith("ly") and "ADV" in lemmas(out[j]):
+            j += 1  # ("closely", "immediately")
+        passive = j + 1 < len(out) and out[j + 1] == "by" and out[j].endswith("ed")
+        if not passive or not (_COMING_AFTER & set(lemmas(out[j]).get("VERB", ()))):
+            i += 1
+            continue
+        head = next((h for h in range(j + 3, min(j + 6, len(out))) if kind_at(out, h) is not None), None)
+        q = _phrase_at(out, head, kind_at, known) if head is not None and out[j + 2] in ("a", "an") else None
+        if q is None or q.start != j + 2 or q.kind == "ego" or q.end >= len(out) or out[q.end] != ",":
+            i += 1
+            continue
+        dropped.extend(out[i + 1 : j + 2])
+        out[i : q.end + 1] = ["and", *out[j + 2 : q.end]]
+        i += 1
+    return out
+
+
 def _riders(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
     """ "a lad on a scooter", "a student on one of those hire bikes", "a woman riding a bike": one
     referent of the vehicle's type, said with the person's determiner."""
@@ -1515,6 +1549,7 @@ def resolve(
     tokens = _letter_labels(tokens, kind_at, known, dropped)
     tokens = _field_names(tokens, kind_at, known)
     tokens = _generic_plurals(tokens, kind_at, known, dropped)
+    tokens = _followed_by(tokens, kind_at, known, dropped)
     tokens = _riders(_placed_riders(tokens, kind_at), kind_at, known)
     tokens = _pushed(tokens, kind_at, known, dropped)
     tokens = _drivers(tokens, kind_at, known)
