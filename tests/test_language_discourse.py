@@ -668,3 +668,22 @@ def test_a_passive_clause_of_following_stays_its_own():
     actors = read("The cyclist was followed by a van for a while; the van overtakes us, ego 50 km/h.").actors
     assert [a.kind for a in actors] == ["bicycle", "van"]
     assert "overtake" not in [b[0] for b in actors[0].behaviours]
+
+
+# --- a vehicle's type said in brackets after it is that road user's type, no second one ---------------
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("Vehicle B (white van) brakes hard 30 m ahead of the ego, ego 50 km/h.", "van"),
+        ("The target (a small hatchback) stops suddenly ahead, ego 40 km/h.", "car"),
+        ("The other vehicle (a lorry) pulls out from the left, ego 40 km/h.", "truck"),
+    ],
+    ids=["label-gloss", "same-type-gloss", "general-noun-gloss"],
+)
+def test_a_type_in_brackets_glosses_the_road_user_before_it(text, kind):
+    assert [a.kind for a in read(text).actors] == [kind]
+
+
+def test_a_second_road_user_in_brackets_stays_a_second_one():
+    kinds = [a.kind for a in read("A car (and a cyclist behind it) turns left across us, ego 40 km/h.").actors]
+    assert kinds == ["car", "bicycle"]

@@ -1315,6 +1315,33 @@ def _participial_apposition(tokens: list[str], kind_at: KindAt, known: Known) ->
     return out
 
 
+def _type_gloss(out: list[str], inner: list[str], kind_at: KindAt) -> list[str] | None:
+    """What a bracket after a road user says when it only names that road user's type ("Vehicle B (white
+    van)", "the other vehicle (a lorry)"): an apposition (", a white van ,") where it names a more exact
+    vehicle than a general one, nothing (an empty list) where it names the same type; None where the
+    bracket says anything else (another road user, "and", a verb)."""
+    last = next((b for b in range(len(out) - 1, max(len(out) - 4, -1), -1) if kind_at(out, b)), None)
+    outer = kind_at(out, last) if last is not None else None
+    label = len(out) - 1 if out and (out[-1].isdigit() or len(out[-1]) == 1) else len(out)  # ("Vehicle B (...)")
+    if outer is None or outer[0] == "ego" or last + outer[1] not in (label, len(out)) or not 1 <= len(inner) <= 4:
+        return None
+    if inner[0] in DEFINITE:  # ("(the obstacle)": a name, see _brackets)
+        return None
+    words = inner[1:] if inner[0] in ("a", "an") else inner
+    head = next((h for h in range(len(words)) if kind_at(words, h) is not None), None)
+    found = kind_at(words, head) if head is not None else None
+    if found is None or head + found[1] != len(words):
+        return None  # (the bracket must end in its first road-user noun)
+    kind = found[0]
+    if any(not w.replace("-", "").isalpha() or w in ("and", "or") or set(lemmas(w)) == {"VERB"} for w in words[:head]):
+        return None
+    if kind == outer[0] or (kind == "car" and outer[0] in VEHICLES):
+        return []
+    if outer[0] == "car" and kind in VEHICLES:
+        return [",", "a", *words, ","]
+    return None
+
+
 def _brackets(tokens: list[str], kind_at: KindAt, known: Known, names: dict[str, str], dropped: list[str]) -> list[str]:
     """Brackets go; a name given a road user in them ("a passenger car (the challenger)") is kept as a
     name of that referent, and the bracket is not read as a second road user."""
@@ -1341,6 +1368,12 @@ def _brackets(tokens: list[str], kind_at: KindAt, known: Known, names: dict[str,
             )
             if at_wheel:
                 dropped.extend(inner)
+                i = close + 1
+                continue
+            gloss = _type_gloss(out, inner, kind_at) if close is not None else None
+            if gloss is not None:  # ("Vehicle B (white van)", "the target (a hatchback)": its type)
+                dropped.extend(w for w in inner if w not in gloss)
+                out.extend(gloss)
                 i = close + 1
                 continue
             if naming:
