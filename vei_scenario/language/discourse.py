@@ -234,9 +234,13 @@ def _generic_plurals(tokens: list[str], kind_at: KindAt, known: Known, dropped: 
         )
         if later is None or later.det not in ("a", "an") or not _singular(tokens[later.end - 1]):
             continue
-        stop = end
+        stop = end  # (to the clause's end, or a place: "stepping out between parked cars" keeps the cars)
         while stop < len(tokens) and not (
-            tokens[stop] in PUNCT or tokens[stop] in _CLAUSE_ENDS or not tokens[stop].replace("-", "").isalpha()
+            tokens[stop] in PUNCT
+            or tokens[stop] in _CLAUSE_ENDS
+            or tokens[stop] in _A_PLACE
+            or tokens[stop] in _PLACE_BEFORE
+            or not tokens[stop].replace("-", "").isalpha()
         ):
             stop += 1
         cut.append((p.start, stop))
