@@ -156,10 +156,9 @@ ACTOR_NOUNS = {
         "double-decker",
         "double decker",
         "fire engine",
-        "road train",  # (a prime mover with two or more trailers)
+        "road train",  # (a tractor unit with two or more trailers)
         "b-double",
         "b-train",
-        "prime mover",
         *TRUCK_MAKES,
     ),
     "van": (
