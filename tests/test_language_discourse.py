@@ -508,3 +508,182 @@ def test_an_abbreviation_defined_in_brackets_stands_for_its_term(text, ego_kph):
     r = read(text)
     assert len(r.actors) == 1 and "iv" not in r.ignored and "tc" not in r.ignored and "hv" not in r.ignored
     assert r.ego_speed_mps is not None and abs(r.ego_speed_mps * 3.6 - ego_kph) < 0.5
+
+
+# --- a person placed first and then said to be on or in a vehicle is one rider of it ------------------
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("A woman ahead of us on a bicycle brakes suddenly while we drive at 30 km/h.", "bicycle"),
+        ("The bloke next to me in a white van cuts into my lane, I'm at 50 km/h.", "van"),
+        ("Some lad behind us on an e-scooter overtakes on the left, ego 20 km/h.", "e-scooter"),
+        ("A man alongside the ego in a lorry drifts into its lane, ego 70 km/h.", "truck"),
+    ],
+    ids=["ahead-of-us-on", "next-to-me-in", "behind-us-on", "alongside-the-ego-in"],
+)
+def test_a_person_placed_then_on_a_vehicle_is_one_rider_of_it(text, kind):
+    assert [a.kind for a in read(text).actors] == [kind]
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A pedestrian ahead of us in the road crosses from the left, ego 30 km/h.", ["pedestrian"]),
+        ("A man ahead of us on the pavement steps out from the left, ego 30 km/h.", ["pedestrian"]),
+    ],
+    ids=["in-the-road", "on-the-pavement"],
+)
+def test_a_person_placed_then_in_no_vehicle_stays_a_person(text, expected):
+    assert [a.kind for a in read(text).actors] == expected
+
+
+# --- an apposition that goes on with a participle is the same road user -------------------------------
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("The lead vehicle, a coach heading for the airport, brakes sharply in front of us, ego 30 km/h.", "truck"),
+        ("A vehicle on our right, a grey pickup doing about 40 mph, drifts into our lane.", "van"),
+        ("The truck ahead, an old lorry loaded with gravel, stops suddenly, ego 50 km/h.", "truck"),
+    ],
+    ids=["heading-for", "doing-a-speed", "loaded-with"],
+)
+def test_an_apposition_with_a_participle_is_the_same_road_user(text, kind):
+    assert [a.kind for a in read(text).actors] == [kind]
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A car, a van turning left, and a cyclist all cross in front of us, ego 30 km/h.", 3),
+        ("The car ahead brakes, a cyclist coming the other way swerves, ego 30 km/h.", 2),
+        ("A car overtakes us, a van following it closely, then both cut in, ego 60 km/h.", 2),
+    ],
+    ids=["a-list", "another-clause", "an-absolute-clause"],
+)
+def test_a_list_or_a_new_clause_after_a_comma_is_another_road_user(text, expected):
+    assert len(read(text).actors) == expected
+
+
+# --- a capitalised name after a preposition of place, or owned by a name, is a place, no vehicle -------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("Coming down the Sea to Sky at 80 km/h, a lorry comes the other way in our lane.", ["truck"]),
+        ("Driving up the Kingsway at 30 mph, a cyclist ahead of us brakes hard.", ["bicycle"]),
+        ("Outside St Mary's Infants on the High Street a child runs out from the left, ego 20 mph.", ["pedestrian"]),
+        ("Past Hill Farm's Lodge on the right a deer jumps out, ego 50 km/h.", ["pedestrian"]),
+    ],
+    ids=["down-the", "up-the", "outside-a-name's", "past-a-name's"],
+)
+def test_a_name_in_a_place_is_no_vehicle(text, expected):
+    assert [a.kind for a in read(text).actors] == expected
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "My neighbour Dave's Mokka pulled out in front of me, I was at 30 mph.",
+        "Going up the hill at 30 mph, a silver Mokka pulled out in front of me.",
+    ],
+    ids=["a-person's-car", "after-a-place"],
+)
+def test_a_name_in_a_vehicles_place_is_still_a_car(text):
+    assert [a.kind for a in read(text).actors] == ["car"]
+
+
+# --- a bare plural that a singular instance follows is what happens in general, not another road user --
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        (
+            "Joggers often cross here without looking; simulate a jogger crossing from the right, ego 30 km/h.",
+            "pedestrian",
+        ),
+        (
+            "We see cyclists running the red light every morning. Build one where a cyclist runs the red from the "
+            "left, ego 40 km/h.",
+            "bicycle",
+        ),
+        (
+            "Teenagers on e-bikes keep jumping the kerb on Park Lane. Simulate a teenager on an e-bike riding off "
+            "the kerb from the left, ego 25 mph.",
+            "bicycle",
+        ),
+    ],
+    ids=["joggers-a-jogger", "cyclists-a-cyclist", "riders-a-rider"],
+)
+def test_a_generic_plural_then_one_of_them_is_one_road_user(text, kind):
+    assert [a.kind for a in read(text).actors] == [kind]
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("Two joggers cross from the left, then a jogger crosses from the right, ego 30 km/h.", 3),
+        ("Cyclists ahead of us ride two abreast, ego 30 km/h.", 1),
+        ("Vans often stop dead here. The van ahead of us stops, then a van behind us honks, ego 30 km/h.", 2),
+    ],
+    ids=["counted", "no-instance", "named-again-first"],
+)
+def test_a_counted_or_only_plural_stays_a_road_user(text, expected):
+    assert len(read(text).actors) >= expected
+
+
+def test_plural_parked_vehicles_a_walker_comes_out_from_stay_in_the_scene():
+    kinds = [
+        a.kind
+        for a in read(
+            "A child runs out from between parked cars on the left, and a car coming the "
+            "other way swerves, ego 30 km/h."
+        ).actors
+    ]
+    assert "pedestrian" in kinds and kinds.count("car") == 2
+
+
+# --- "X, followed by Y, does ...": two road users who both do it, Y after X ----------------------------
+@pytest.mark.parametrize(
+    "text, kinds, behaviour",
+    [
+        (
+            "A jogger, followed by a cyclist, crosses from the left, ego 30 km/h.",
+            ["pedestrian", "bicycle"],
+            "cross_in_front",
+        ),
+        (
+            "A woman, closely followed by a child, steps out from the right, ego 25 mph.",
+            ["pedestrian", "pedestrian"],
+            "cross_in_front",
+        ),
+        ("A van chased by a motorbike runs the red light from the left, ego 40 km/h.", ["van", "car"], "run_red_light"),
+    ],
+    ids=["followed-by", "closely-followed-by", "chased-by-no-commas"],
+)
+def test_a_road_user_followed_by_another_is_two_who_do_the_same(text, kinds, behaviour):
+    actors = read(text).actors
+    assert [a.kind for a in actors] == kinds
+    assert all(behaviour in [b[0] for b in a.behaviours] for a in actors)
+
+
+def test_a_passive_clause_of_following_stays_its_own():
+    actors = read("The cyclist was followed by a van for a while; the van overtakes us, ego 50 km/h.").actors
+    assert [a.kind for a in actors] == ["bicycle", "van"]
+    assert "overtake" not in [b[0] for b in actors[0].behaviours]
+
+
+# --- a vehicle's type said in brackets after it is that road user's type, no second one ---------------
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("Vehicle B (white van) brakes hard 30 m ahead of the ego, ego 50 km/h.", "van"),
+        ("The target (a small hatchback) stops suddenly ahead, ego 40 km/h.", "car"),
+        ("The other vehicle (a lorry) pulls out from the left, ego 40 km/h.", "truck"),
+    ],
+    ids=["label-gloss", "same-type-gloss", "general-noun-gloss"],
+)
+def test_a_type_in_brackets_glosses_the_road_user_before_it(text, kind):
+    assert [a.kind for a in read(text).actors] == [kind]
+
+
+def test_a_second_road_user_in_brackets_stays_a_second_one():
+    kinds = [a.kind for a in read("A car (and a cyclist behind it) turns left across us, ego 40 km/h.").actors]
+    assert kinds == ["car", "bicycle"]

@@ -134,3 +134,44 @@ def test_motor_vehicles_named_by_their_trade_words(noun):
 @pytest.mark.parametrize("noun, kind", [("tow-trucks", "truck"), ("firetrucks", "truck"), ("e-bikes", "bicycle")])
 def test_a_plural_compound_is_read_by_its_head_noun(noun, kind):
     assert set(_kinds(f"Two {noun} ahead of us brake hard, ego at 50 km/h.")) == {kind}
+
+
+# --- Euro NCAP target abbreviations name their target's type, with or without a test code -------------
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("Ego at 30 km/h on a straight road; an EPTa steps out from the right 20 m ahead.", "pedestrian"),
+        ("The EPTc runs across from the left kerb, VUT 20 km/h.", "pedestrian"),
+        ("VUT at 40 km/h, the EBTa rides across from the left at 15 km/h.", "bicycle"),
+        ("An EMT ahead of the VUT brakes hard; VUT 50 km/h.", "car"),
+    ],
+    ids=["epta", "eptc", "ebta", "emt"],
+)
+def test_a_euro_ncap_target_abbreviation_names_its_target_type(text, kind):
+    assert _kinds(text) == [kind]
+
+
+def test_the_target_abbreviation_said_again_is_the_same_target():
+    assert _kinds("Ego 25 km/h. EPTa on the zebra from the far side at 5 km/h. Ego stops for the EPTa.") == [
+        "pedestrian"
+    ]
+
+
+# --- trade words and models of heavy, light and three-wheeled vehicles -------------------------------
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("A road train coming the other way drifts into our lane, ego 90 km/h.", "truck"),
+        ("A B-double ahead of us brakes hard while we drive at 80 km/h.", "truck"),
+        ("A Hilux pulls out of a farm track on the left in front of us, we drive at 60 km/h.", "van"),
+        ("A tuk-tuk ahead of the ego stops suddenly, ego 30 km/h.", "car"),
+        ("An auto rickshaw cuts in from the right lane, ego at 40 km/h.", "car"),
+    ],
+    ids=["road-train", "b-double", "pickup-model", "tuk-tuk", "auto-rickshaw"],
+)
+def test_heavy_light_and_three_wheeled_vehicles_by_their_trade_words(text, kind):
+    assert _kinds(text) == [kind]
+
+
+def test_a_pickup_model_after_a_person_in_it_is_a_van():
+    assert _kinds("Some guy in a Tacoma runs the red light from the left, ego 40 km/h.") == ["van"]

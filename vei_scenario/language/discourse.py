@@ -140,6 +140,151 @@ def _unknown_person(tokens: list[str], i: int, known: Known) -> int | None:
     return None
 
 
+#: Where a person is, said between the person and the vehicle they ride or drive ("the guy behind me in
+#: a pickup"): a closed class of place words, each with the words that may follow it before its object.
+_PLACE_WORDS = {"ahead": ("of",), "behind": (), "alongside": (), "beside": (), "next": ("to",), "in": ("front", "of")}
+#: The objects of such a place: the narrator or the ego (another road user there would be a third party).
+_PLACE_OBJECTS = frozenset({"me", "us", "ego", "him", "her", "them"})
+
+
+def _placement_end(tokens: list[str], i: int) -> int | None:
+    """Where a placement of a person starting at ``i`` ends ("behind me", "ahead of us", "in front of
+    the ego", "next to me"), or None."""
+    after = _PLACE_WORDS.get(tokens[i]) if i < len(tokens) else None
+    if after is None:
+        return None
+    j = i + 1
+    for w in after:
+        if j < len(tokens) and tokens[j] == w:
+            j += 1
+        elif w != "of" or tokens[i] != "ahead":  # ("ahead" alone is a place too: "a guy ahead on a bike")
+            return None
+    if j < len(tokens) and tokens[j] == "the":
+        j += 1
+    if j < len(tokens) and tokens[j] in _PLACE_OBJECTS:
+        return j + 1
+    return j if tokens[i] == "ahead" and j == i + 1 else None
+
+
+def _placed_riders(tokens: list[str], kind_at: KindAt) -> list[str]:
+    """ "the guy behind me in a pickup", "a woman ahead of us on a bicycle": a person, where they are,
+    then the vehicle they are on or in, said as :func:`_riders` reads one rider ("the guy in a pickup
+    behind me"). Only a walker's noun right before the place, and the preposition of riding right after
+    it, move; what follows the preposition is left to :func:`_riders` to judge a vehicle or not."""
+    out = list(tokens)
+    for i in range(1, len(out)):
+        found = kind_at(out, i - 1)
+        if found is None or found != ("pedestrian", 1):
+            continue
+        end = _placement_end(out, i)
+        if end is None or end >= len(out) or out[end] not in RIDING:
+            continue
+        k = end + 1  # the vehicle's phrase: a determiner, up to two modifiers, its noun
+        k += 1 if k < len(out) and out[k] in DETERMINERS else 0
+        head = next((h for h in range(k, min(k + 3, len(out))) if kind_at(out, h) is not None), None)
+        if head is None or kind_at(out, head)[0] in ("pedestrian", "ego"):
+            continue
+        stop = head + kind_at(out, head)[1]
+        out[i:stop] = out[end:stop] + out[i:end]
+    return out
+
+
+#: Words that count a plural: counted road users are so many road users ("two joggers"), no generality.
+_COUNTED = frozenset("two three four five six seven eight nine ten both several couple pair".split())
+#: Words before a plural that make it a place or scenery rather than road users in general.
+#: (with the prepositions of place, :data:`_PLACE_BEFORE`)
+_A_PLACE = frozenset({"between", "behind", "among", "amongst", "in", "beyond", "parked", "stationary"})
+#: Words that end the clause a generic plural is the subject or object of.
+_CLAUSE_ENDS = frozenset({"and", "but", "so", "which", "who", "while", "when", "whereas", "because"})
+
+
+def _ridden_kind(tokens: list[str], p: _Phrase, kind_at: KindAt) -> tuple[str, int]:
+    """The type a person's phrase names and where it ends, counting what they ride ("teenagers on
+    e-bikes", "a teenager on an e-bike": a bicycle's)."""
+    k = p.end
+    if p.kind != "pedestrian" or k >= len(tokens) or tokens[k] not in ("on", "riding"):
+        return p.kind, p.end
+    for h in range(k + 1, min(k + 4, len(tokens))):
+        found = kind_at(tokens, h)
+        if found is not None:
+            return (found[0], h + found[1]) if found[0] not in ("pedestrian", "ego") else (p.kind, p.end)
+    return p.kind, p.end
+
+
+def _generic_plurals(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "We regularly see children stepping out ... Please simulate a child running out", "joggers often
+    cross here; simulate a jogger crossing": a bare plural (no article, no count) says what road users
+    of a type do in general; when the first road user of that type named after it is a new one ("a
+    child"), that one is the scenario's, and the plural's clause is left out (listed as not used). A
+    plural with nothing after it, or said again first as known ("the van"), is the road user itself."""
+    phrases = _phrases(tokens, kind_at, known)
+    out = list(tokens)
+    cut: list[tuple[int, int]] = []
+    for n, p in enumerate(phrases):
+        before = tokens[p.start - 1] if p.start else ""
+        if cut and p.start < cut[-1][1]:
+            continue  # (what a plural rides: "on e-bikes", inside the clause already left out)
+        if p.det or p.kind == "ego" or _singular(tokens[p.end - 1]) or before in _COUNTED or before.isdigit():
+            continue
+        if any(w in _A_PLACE or w in _PLACE_BEFORE for w in tokens[max(p.start - 2, 0) : p.start]):
+            continue  # ("out from between parked cars": where someone is, not who)
+        kind, end = _ridden_kind(tokens, p, kind_at)
+        later = next(
+            (q for q in phrases[n + 1 :] if q.start >= end and _ridden_kind(tokens, q, kind_at)[0] == kind), None
+        )
+        if later is None or later.det not in ("a", "an") or not _singular(tokens[later.end - 1]):
+            continue
+        stop = end  # (to the clause's end, or a place: "stepping out between parked cars" keeps the cars)
+        while stop < len(tokens) and not (
+            tokens[stop] in PUNCT
+            or tokens[stop] in _CLAUSE_ENDS
+            or tokens[stop] in _A_PLACE
+            or tokens[stop] in _PLACE_BEFORE
+            or not tokens[stop].replace("-", "").isalpha()
+        ):
+            stop += 1
+        cut.append((p.start, stop))
+    for start, stop in cut:
+        dropped.extend(tokens[start:stop])
+    for start, stop in reversed(cut):
+        del out[start:stop]
+    return out
+
+
+#: Verbs of coming after someone: "X, followed by Y, ..." names two road users going one after the other.
+_COMING_AFTER = frozenset({"follow", "trail", "tail", "chase", "pursue", "accompany"})
+
+
+def _followed_by(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "A cyclist, closely followed by an e-scooter rider, comes off the towpath": a participle of
+    coming after, set off by commas, says a second road user who does what the first does, behind it;
+    said as "a cyclist and an e-scooter rider comes off ...", which the reader reads as two who share
+    the verb. Only a new road user after "by" ("by a ...", not the ego), and no form of "be" before
+    ("the cyclist was followed by a van": a clause of its own)."""
+    out = list(tokens)
+    i = 1
+    while i + 2 < len(out):
+        if out[i] != "," or kind_at(out, i - 1) is None or kind_at(out, i - 1)[0] == "ego":
+            i += 1
+            continue
+        j = i + 1
+        if j < len(out) and out[j].endswith("ly") and "ADV" in lemmas(out[j]):
+            j += 1  # ("closely", "immediately")
+        passive = j + 1 < len(out) and out[j + 1] == "by" and out[j].endswith("ed")
+        if not passive or not (_COMING_AFTER & set(lemmas(out[j]).get("VERB", ()))):
+            i += 1
+            continue
+        head = next((h for h in range(j + 3, min(j + 6, len(out))) if kind_at(out, h) is not None), None)
+        q = _phrase_at(out, head, kind_at, known) if head is not None and out[j + 2] in ("a", "an") else None
+        if q is None or q.start != j + 2 or q.kind == "ego" or q.end >= len(out) or out[q.end] != ",":
+            i += 1
+            continue
+        dropped.extend(out[i + 1 : j + 2])
+        out[i : q.end + 1] = ["and", *out[j + 2 : q.end]]
+        i += 1
+    return out
+
+
 def _riders(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
     """ "a lad on a scooter", "a student on one of those hire bikes", "a woman riding a bike": one
     referent of the vehicle's type, said with the person's determiner."""
@@ -1123,6 +1268,84 @@ def _last_vehicle_in_sentence(out: list[str], kind_at: KindAt) -> bool:
     return False
 
 
+def _participle(word: str) -> bool:
+    """Whether ``word`` is a verb's participle ("heading", "doing", "loaded"): a non-finite form that
+    can go on a noun phrase without opening a clause."""
+    return word.endswith(("ing", "ed")) and _verb_of(word) and word not in lemmas(word).get("VERB", ())
+
+
+def _participial_apposition(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
+    """ "An oncoming vehicle, a delivery van travelling at 70 km/h, drifts ...", "the car ahead, a taxi
+    doing 40, brakes": an apposition whose noun goes on with a participle phrase is still the road user
+    named before the comma, said as an apposition closed right after its noun (", a delivery van,
+    travelling at 70 km/h, drifts"), which the reader already takes as the same one. Only when the road
+    users are of one type or both motor vehicles, nothing in the participle phrase names another road user
+    or a list ("and", "or"), and a verb follows its closing comma: the predicate of the sentence the two
+    names share ("a car, a van turning left, and a cyclist": a list; "the car brakes, a cyclist coming the
+    other way swerves": a clause of its own)."""
+    out = list(tokens)
+    i = 1
+    while i < len(out):
+        if out[i] != "," or i + 1 >= len(out) or out[i + 1] not in ("a", "an"):
+            i += 1
+            continue
+        before = None  # (the road user before the comma, past a short placement: "a vehicle on our right")
+        for b in range(i - 1, max(i - 6, -1), -1):
+            if out[b] in PUNCT or kind_at(out, b) is not None:
+                before = b if out[b] not in PUNCT else None
+                break
+        head = next((h for h in range(i + 2, min(i + 5, len(out))) if kind_at(out, h) is not None), None)
+        if before is None or head is None or out[i + 2 : head] and any(w in PUNCT for w in out[i + 2 : head]):
+            i += 1
+            continue
+        first, second = kind_at(out, before)[0], kind_at(out, head)[0]
+        end = head + kind_at(out, head)[1]
+        if not (first == second or (first in VEHICLES and second in VEHICLES)) or first == "ego":
+            i += 1
+            continue
+        close = next((k for k in range(end, min(end + 10, len(out))) if out[k] in PUNCT), None)
+        fits = (
+            end < len(out)
+            and _participle(out[end])
+            and close is not None
+            and out[close] == ","
+            and close + 1 < len(out)
+            and _verb_of(out[close + 1])
+            and not any(kind_at(out, k) is not None or out[k] in ("and", "or") for k in range(end, close))
+        )
+        if fits:
+            out.insert(end, ",")
+        i = end
+    return out
+
+
+def _type_gloss(out: list[str], inner: list[str], kind_at: KindAt) -> list[str] | None:
+    """What a bracket after a road user says when it only names that road user's type ("Vehicle B (white
+    van)", "the other vehicle (a lorry)"): an apposition (", a white van ,") where it names a more exact
+    vehicle than a general one, nothing (an empty list) where it names the same type; None where the
+    bracket says anything else (another road user, "and", a verb)."""
+    last = next((b for b in range(len(out) - 1, max(len(out) - 4, -1), -1) if kind_at(out, b)), None)
+    outer = kind_at(out, last) if last is not None else None
+    label = len(out) - 1 if out and (out[-1].isdigit() or len(out[-1]) == 1) else len(out)  # ("Vehicle B (...)")
+    if outer is None or outer[0] == "ego" or last + outer[1] not in (label, len(out)) or not 1 <= len(inner) <= 4:
+        return None
+    if inner[0] in DEFINITE:  # ("(the obstacle)": a name, see _brackets)
+        return None
+    words = inner[1:] if inner[0] in ("a", "an") else inner
+    head = next((h for h in range(len(words)) if kind_at(words, h) is not None), None)
+    found = kind_at(words, head) if head is not None else None
+    if found is None or head + found[1] != len(words):
+        return None  # (the bracket must end in its first road-user noun)
+    kind = found[0]
+    if any(not w.replace("-", "").isalpha() or w in ("and", "or") or set(lemmas(w)) == {"VERB"} for w in words[:head]):
+        return None
+    if kind == outer[0] or (kind == "car" and outer[0] in VEHICLES):
+        return []
+    if outer[0] == "car" and kind in VEHICLES:
+        return [",", "a", *words, ","]
+    return None
+
+
 def _brackets(tokens: list[str], kind_at: KindAt, known: Known, names: dict[str, str], dropped: list[str]) -> list[str]:
     """Brackets go; a name given a road user in them ("a passenger car (the challenger)") is kept as a
     name of that referent, and the bracket is not read as a second road user."""
@@ -1149,6 +1372,12 @@ def _brackets(tokens: list[str], kind_at: KindAt, known: Known, names: dict[str,
             )
             if at_wheel:
                 dropped.extend(inner)
+                i = close + 1
+                continue
+            gloss = _type_gloss(out, inner, kind_at) if close is not None else None
+            if gloss is not None:  # ("Vehicle B (white van)", "the target (a hatchback)": its type)
+                dropped.extend(w for w in inner if w not in gloss)
+                out.extend(gloss)
                 i = close + 1
                 continue
             if naming:
@@ -1285,13 +1514,23 @@ def _bare_again(tokens: list[str], p: _Phrase, referents: list[Referent], kind_a
 #: Prepositions of place: a name after one of them and an article is a place ("past the Odeon").
 _PLACE_BEFORE = frozenset(
     "at near past by outside opposite towards toward to from along across over under through round around "
-    "onto off beside inside with".split()  # (and a companion's: "a man with a Labrador")
+    "onto off beside inside with up down".split()  # (and a companion's: "a man with a Labrador")
 )
 #: Names of days and months, a closed class: "a Saturday" is a day, no vehicle.
 _CALENDAR = frozenset(
     "monday tuesday wednesday thursday friday saturday sunday january february march april may june july "
     "august september october november december".split()
 )
+
+
+def _owner_placed(tokens: list[str], s: int, proper: frozenset[str]) -> bool:
+    """Whether the name that owns what follows the "'s" at ``s`` stands after a preposition of place
+    ("outside St Mary's Infants", "past Hill Farm's Lodge"): then what it owns is a place too."""
+    j = s - 1  # (past the name's words, at least one of them written with its capital: the speller may
+    while j >= max(s - 4, 0) and tokens[j].isalpha() and tokens[j] not in _PLACE_BEFORE:  # have changed one)
+        j -= 1
+    named = any(w in proper for w in tokens[j + 1 : s])
+    return named and j >= 0 and tokens[j] in _PLACE_BEFORE
 
 
 def _named_vehicles(tokens: list[str], kind_at: KindAt, known: Known, proper: frozenset[str]) -> list[str]:
@@ -1317,6 +1556,8 @@ def _named_vehicles(tokens: list[str], kind_at: KindAt, known: Known, proper: fr
             continue
         if j > 0 and (tokens[j - 1] in _PLACE_BEFORE or tokens[j - 1] in BE):  # (or said of something: "was a")
             continue
+        if tokens[j] == "'s" and _owner_placed(tokens, j, proper):  # ("outside St Mary's Infants": a place)
+            continue
         nxt = tokens[i + 1] if i + 1 < len(tokens) else "."
         ends = nxt in PUNCT or nxt in PREPOSITIONS or (nxt not in proper and _verb_of(nxt))
         if ends and not (i and tokens[i - 1] in proper):
@@ -1340,10 +1581,13 @@ def resolve(
     tokens = make_and_model(tokens, kind_at, known)
     tokens = _named_vehicles(tokens, kind_at, known, proper)
     tokens = _brackets(tokens, kind_at, known, names, dropped)
+    tokens = _participial_apposition(tokens, kind_at, known)
     tokens = _vehicle_labels(tokens, kind_at, known)
     tokens = _letter_labels(tokens, kind_at, known, dropped)
     tokens = _field_names(tokens, kind_at, known)
-    tokens = _riders(tokens, kind_at, known)
+    tokens = _generic_plurals(tokens, kind_at, known, dropped)
+    tokens = _followed_by(tokens, kind_at, known, dropped)
+    tokens = _riders(_placed_riders(tokens, kind_at), kind_at, known)
     tokens = _pushed(tokens, kind_at, known, dropped)
     tokens = _drivers(tokens, kind_at, known)
     tokens = _companions(tokens, kind_at, known, dropped)

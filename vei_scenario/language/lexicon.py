@@ -27,6 +27,8 @@ CAR_MAKES = (
 VAN_MODELS = (
     "transit", "transit van", "sprinter", "vivaro", "crafter", "ducato", "berlingo", "kangoo", "hiace",
     "vito", "econoline", "promaster",
+    # pickups (a pickup is read as a van)
+    "silverado", "tacoma", "tundra", "hilux", "navara", "amarok", "f-150", "f150", "f-250", "triton",
 )  # fmt: skip
 TRUCK_MAKES = ("scania", "iveco", "daf", "transit bus")
 
@@ -100,9 +102,22 @@ ACTOR_NOUNS = {
         "moron",
         "nutter",
         "muppet",
+        "epta",  # (Euro NCAP's pedestrian targets: adult, child, and either)
+        "eptc",
+        "ept",
         *ANIMALS,
     ),
-    "bicycle": ("bicycle", "bike", "cyclist", "bicyclist", "biker", "kid on a bike", "cargo bike"),
+    "bicycle": (
+        "bicycle",
+        "bike",
+        "cyclist",
+        "bicyclist",
+        "biker",
+        "kid on a bike",
+        "cargo bike",
+        "ebta",
+        "ebt",  # (Euro NCAP's bicyclist target)
+    ),  # fmt: skip
     "e-scooter": (
         "e-scooter",
         "escooter",
@@ -141,6 +156,9 @@ ACTOR_NOUNS = {
         "double-decker",
         "double decker",
         "fire engine",
+        "road train",  # (a tractor unit with two or more trailers)
+        "b-double",
+        "b-train",
         *TRUCK_MAKES,
     ),
     "van": (
@@ -176,6 +194,7 @@ CAR_NOUNS = (
     "target car",
     "gvt",
     "global vehicle target",
+    "emt",  # (Euro NCAP's motorcyclist target; a motor two-wheeler is read as a car)
     "pov",
     "principal other vehicle",
     "motorcycle",
@@ -188,6 +207,11 @@ CAR_NOUNS = (
     "ptw",
     "motor bike",  # (a motor two-wheeler or a quad named by "bike" is no bicycle)
     "quad bike",
+    "tuk-tuk",  # (a motor three-wheeler is read as a car, as a motor two-wheeler is)
+    "tuktuk",
+    "auto-rickshaw",
+    "autorickshaw",
+    "auto rickshaw",
     "quad",
     "dirt bike",
     "four-by-four",
