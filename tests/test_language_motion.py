@@ -347,3 +347,36 @@ def test_a_road_user_the_ego_gives_way_to_goes_on_through_the_junction(text):
 )
 def test_coming_past_the_ego_is_overtaking_it(text):
     assert _behaviours(text)[0] == "overtake"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "We drive on the left here. An oncoming van turns right across our path at the crossroads.",
+        "UK layout, ego at 40 km/h: at the junction an oncoming cyclist turns right across the front of us.",
+        "Left-hand traffic. At the crossroads a car coming towards us swings right across our lane.",
+    ],
+)
+def test_in_left_hand_traffic_the_oncoming_turn_across_the_ego_is_to_the_right(text):
+    (actor,) = read(text).actors
+    assert (actor.relation, [b[0] for b in actor.behaviours]) == ("junction_opposite", ["turn_across"])
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "An oncoming car turns left across our path at the crossroads.",  # (right-hand traffic: the far side)
+        "Ego at 40 km/h. At the crossroads an oncoming van turns right.",  # (right-hand: the near side, no crossing)
+    ],
+)
+def test_the_turn_across_is_to_the_far_side_of_the_traffic_the_text_drives_in(text):
+    (actor,) = read(text).actors
+    turns_across = [b[0] for b in actor.behaviours] == ["turn_across"]
+    assert turns_across == ("left" in text)
+
+
+def test_driving_on_the_left_lane_says_no_traffic_side():
+    from vei_scenario.language.sides import drives_on_left
+
+    assert not drives_on_left("i am driving on the left lane at 50 km/h".split())
+    assert drives_on_left("we are driving on the left , at 50 km/h".split())

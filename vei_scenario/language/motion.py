@@ -15,7 +15,7 @@ keep the path:
   lane") is driving the wrong way in that lane;
 * where the only two headings a narrative gives are opposite ("V2, eastbound, ... V1, which was
   westbound"), the road user is coming the other way: its left turn across the ego's path is the
-  turn across an oncoming path.
+  turn across an oncoming path (its right turn, where the text says traffic keeps left).
 
 A verb with the particle "out" and "of" or "from" a side road ("pops out of a side street", "shot
 out from the side road") is coming out of that road, whatever the verb: the reader reads it as it
@@ -44,7 +44,7 @@ from dataclasses import replace
 
 from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.reading import ActorSpec
-from vei_scenario.language.sides import OFF_ROAD_PLACES
+from vei_scenario.language.sides import OFF_ROAD_PLACES, stated_traffic_side
 
 #: Behaviours that, said with running the red, are the manner of that run.
 _MANNER_OF_A_RUN = frozenset(("overtake", "turn_into"))
@@ -377,9 +377,18 @@ def _one_crossing(behaviours: list) -> list:
     return out
 
 
-def one_path(spec: ActorSpec, said: str = "") -> list:
+def turn_across_side(tokens: list[str]) -> str:
+    """The turn that takes a road user coming the other way across the ego's path: to the far side of
+    the road, left where traffic keeps right, right where the text says it keeps left ("we drive on
+    the left", "UK layout"). Only a stated side counts: units and road words are too weak a guess to
+    read an oncoming left turn as one away from the ego."""
+    return "right" if stated_traffic_side(tokens) == "left" else "left"
+
+
+def one_path(spec: ActorSpec, said: str = "", across: str = "left") -> list:
     """``spec``'s behaviours with the manner of its path dropped (see the module's rules); ``said`` is
-    the description's normalised text, for what a road user's own clause cannot place."""
+    the description's normalised text, for what a road user's own clause cannot place; ``across`` the
+    turn that crosses an oncoming path (:func:`turn_across_side`)."""
     if spec.kind == "pedestrian":
         spec.behaviours = _one_crossing(spec.behaviours)
     if spec.obstacle is not None and spec.behaviours[:1] and spec.behaviours[0][0] == "cut_out":
@@ -392,7 +401,7 @@ def one_path(spec: ActorSpec, said: str = "") -> list:
         return [("wrong_way", {}, crit, link)]
     if "run_red_light" in names:
         return [b for b in spec.behaviours if b[0] not in _MANNER_OF_A_RUN]
-    turning_left = names[:1] == ["forced_turn"] and spec.behaviours[0][1].get("turn") == "left"
+    turning_left = names[:1] == ["forced_turn"] and spec.behaviours[0][1].get("turn") == across
     if turning_left and spec.relation is None and compass_opposed(said):
         _, cfg, crit, link = spec.behaviours[0]
         spec.relation = "junction_opposite"

@@ -49,6 +49,7 @@ from vei_scenario.language.motion import (
     out_to_overtake,
     outcome_not_behaviour,
     participle_of_state,
+    turn_across_side,
 )
 from vei_scenario.language.ncap import rewrite as ncap_rewrite
 from vei_scenario.language.normalise import normalise
@@ -1758,7 +1759,7 @@ def read(text: str) -> Reading:
             a.speed_mps = -V.SPEED_WORDS["fast"]
         spec.distance_m = a.distance_m
         spec.speed_mps = 0.0 if a.stationary and a.speed_mps is None else a.speed_mps
-        _specialise(a, spec, junction)
+        _specialise(a, spec, junction, turn_across_side(tokens))
         r.actors.append(spec)
     for a, spec in zip(actors, r.actors):  # what an oncoming car overtakes comes towards the ego too
         k = next((k for k, x in enumerate(actors) if x is a.object_of), None)
@@ -1774,7 +1775,7 @@ def read(text: str) -> Reading:
     apply_manner(stated_manner(tokens), r.actors)  # (the scales of closeness, margin and timing)
     for spec in r.actors:
         spec.behaviours = _one_act_once(spec)
-        spec.behaviours = one_path(spec, said)
+        spec.behaviours = one_path(spec, said, turn_across_side(tokens))
     if r.map_kind is None and any(s.relation == "junction_opposite" for s in r.actors):
         r.map_kind = "crossroad"
     r.ego_speed_mps = ego_said if ego_said is not None else r.ego_speed_mps
@@ -1949,7 +1950,7 @@ RIDERS = ("bicycle", "e-scooter")
 PASSIVE_AUXILIARIES = {"is", "are", "was", "were", "be", "been", "being", "get", "gets", "got", "getting"}
 
 
-def _specialise(a: _Actor, spec: ActorSpec, junction: bool) -> None:
+def _specialise(a: _Actor, spec: ActorSpec, junction: bool, across: str = "left") -> None:
     """The behaviours that what was said around the verbs makes specific: a left turn by someone
     coming the other way is a turn across the ego's path; pulling out of a side road is turning into
     the ego's road; a vehicle driving at the ego in its lane is a wrong-way driver; a walker or rider
@@ -1962,7 +1963,7 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool) -> None:
     towards = "oncoming" in a.said or spec.relation in ("oncoming", "junction_opposite") or a.kerb_side == "left"
     if (
         first == "forced_turn"
-        and spec.behaviours[0][1].get("turn") == "left"
+        and spec.behaviours[0][1].get("turn") == across  # (left; right where traffic keeps left)
         and (spec.relation in ("oncoming", "junction_opposite") or "oncoming" in a.said)
     ):
         spec.relation = "junction_opposite"
