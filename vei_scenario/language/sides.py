@@ -122,7 +122,7 @@ def drives_on_left(tokens: list[str]) -> bool:
 
 #: Words after "on the left/right" that make it a lane or a place, not the side traffic keeps to.
 _A_PLACE_AFTER = frozenset(("lane", "lanes", "side", "kerb", "curb", "verge", "shoulder", "edge", "hand", "of", "arm"))
-_DRIVE_LEMMAS = frozenset(("drive", "driving", "drives", "drove", "keep", "keeps", "keeping", "traffic", "ride", "riding"))
+_DRIVE_WORDS = frozenset(("drive", "driving", "drives", "drove", "keep", "keeps", "keeping", "traffic", "ride"))
 
 
 def stated_traffic_side(tokens: list[str]) -> str | None:
@@ -133,7 +133,7 @@ def stated_traffic_side(tokens: list[str]) -> str | None:
     for k, w in enumerate(tokens):
         if w in ("left", "right") and k >= 2 and tokens[k - 1] == "the" and tokens[k - 2] == "on":
             after = tokens[k + 1] if k + 1 < len(tokens) else ""
-            if k >= 3 and tokens[k - 3] in _DRIVE_LEMMAS and after not in _A_PLACE_AFTER and after != "-":
+            if k >= 3 and tokens[k - 3] in _DRIVE_WORDS and after not in _A_PLACE_AFTER and after != "-":
                 return w
         if w in ("left-hand", "right-hand") and tokens[k + 1 : k + 2] in (["traffic"], ["drive"], ["driving"]):
             return w.split("-")[0]
