@@ -380,3 +380,30 @@ def test_driving_on_the_left_lane_says_no_traffic_side():
 
     assert not drives_on_left("i am driving on the left lane at 50 km/h".split())
     assert drives_on_left("we are driving on the left , at 50 km/h".split())
+
+
+@pytest.mark.parametrize(
+    "text, relation",
+    [
+        ("At the junction a van came out from a side road on the right just ahead of us.", "junction_right"),
+        ("At the crossroads an e-scooter exits a side road on the left onto our road 15 m ahead.", "junction_left"),
+        ("A cyclist rode out from the side street on my left into the road in front of me.", "junction_left"),
+        ("At the T-junction a lorry is leaving the side road on our right as we arrive.", "junction_right"),
+    ],
+)
+def test_coming_out_from_or_leaving_a_side_road_is_turning_into_the_ego_road(text, relation):
+    (actor,) = read(text).actors
+    assert (actor.relation, actor.behaviours[0][0]) == (relation, "turn_into")
+
+
+@pytest.mark.parametrize(
+    "text, first",
+    [
+        ("At the crossroads a car comes from the left and drives straight across.", "run_red_light"),
+        ("A man walks out from a side street on the left.", "cross_in_front"),
+        ("At the roundabout a bus takes the exit on the left.", None),
+    ],
+)
+def test_what_is_not_coming_out_of_a_side_road_stays_as_it_was(text, first):
+    (actor,) = read(text).actors
+    assert actor.behaviours[0][0] != "turn_into" and (first is None or actor.behaviours[0][0] == first)

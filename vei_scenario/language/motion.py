@@ -121,11 +121,39 @@ def destinations_not_origins(clauses: list) -> list:
     return out
 
 
-def out_of_a_side_road(clauses: list) -> list:
-    """``clauses`` with a verb + "out" + "of"/"from" + a side road read as coming out of that road."""
+#: Verbs (lemmas) of leaving a place: with a side road as their object, a road user comes out of it.
+_LEAVE = frozenset(("exit", "leave", "quit"))
+_OUT_OF = (["out", "of"], ["out", "from"], ["outta"])
+
+
+def _leaves_the_arm(tokens: list[str], arm) -> int | None:
+    """Where the verb stands that says a road user comes out of side road mention ``arm``: a verb +
+    "out of" / "out from" before it ("came out from a side road", "rode out of the side street"), or
+    a verb of leaving with it as its object ("exits a side road", "is leaving the side street"); None
+    if neither. The verb is whatever it is: the particle or the verb's class says it leaves."""
+    j = arm.start - 1
+    while j >= 0 and tokens[j] in _DETERMINERS:
+        j -= 1
+    for particle in _OUT_OF:
+        n = len(particle)
+        if j - n + 1 >= 1 and tokens[j - n + 1 : j + 1] == particle:
+            return j - n  # (the verb before the particle)
+    verb = tokens[j] if j >= 0 else ""
+    inflected = verb.endswith(("s", "ed", "ing")) and j > 0 and tokens[j - 1] not in _DETERMINERS
+    if inflected and set(lemmas(verb).get("VERB", ())) & _LEAVE:
+        return j
+    return None
+
+
+def out_of_a_side_road(clauses: list, tokens: list[str] | None = None) -> list:
+    """``clauses`` with a verb + "out" + "of"/"from" + a side road, or a verb of leaving with a side
+    road as its object, read as coming out of that road (``tokens``: the reader's tokens, which the
+    mentions index)."""
     out = []
     for link, mentions in clauses:
         kept = list(mentions)
+        if tokens is not None:
+            kept = _leaving_a_side_road(kept, tokens)
         for k, m in enumerate(kept[:-1]):
             nxt = kept[k + 1]
             particle = m.words.endswith((" out", " out of", " out from")) and (
@@ -139,6 +167,32 @@ def out_of_a_side_road(clauses: list) -> list:
                 cfg = {x: v for x, v in m.value[1].items() if x != "from_side_road"}
                 kept[k] = replace(m, value=(m.value[0], cfg))
         out.append((link, kept))
+    return out
+
+
+def _leaving_a_side_road(mentions: list, tokens: list[str]) -> list:
+    """``mentions`` with the verb that says its road user leaves a side road (:func:`_leaves_the_arm`)
+    read as coming out of it: its behaviour mention made the pull-out from a side road, or one put in
+    where the reader held the verb as no behaviour ("exits" read as an exit, "leaving" read past)."""
+    out = list(mentions)
+    for k in range(len(out) - 1, -1, -1):
+        arm = out[k]
+        if arm.slot != "arm" or arm.words.split()[0] in ("exit", "exits", "exited", "exiting"):
+            continue
+        at = _leaves_the_arm(tokens, arm)
+        if at is None or at < 0:
+            continue
+        verb = next((x for x in out[:k] if x.start <= at < max(x.end, x.start + 1)), None)
+        pull_out = ("cut_in", {"from_side_road": 1.0})
+        if verb is not None and verb.slot in ("behaviour", "unknown_verb", "ego_verb", "arm"):
+            if verb.slot == "behaviour" and verb.value[1].get("from_side_road"):
+                continue
+            if verb.slot == "behaviour" and verb.value[0] not in _PLAIN_MOVES | {"cut_in", "cross_in_front"}:
+                continue  # (a move of its own: "turns out of ...", read as it is)
+            out[out.index(verb)] = replace(verb, slot="behaviour", value=pull_out)
+        elif verb is None:
+            said = replace(arm, slot="behaviour", value=pull_out, words=tokens[at], start=at, end=at + 1, det="")
+            out.insert(k, said)
     return out
 
 
