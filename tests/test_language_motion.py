@@ -407,3 +407,29 @@ def test_coming_out_from_or_leaving_a_side_road_is_turning_into_the_ego_road(tex
 def test_what_is_not_coming_out_of_a_side_road_stays_as_it_was(text, first):
     (actor,) = read(text).actors
     assert actor.behaviours[0][0] != "turn_into" and (first is None or actor.behaviours[0][0] == first)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist was coming the other way in my lane.",
+        "A moped comes round the corner on our side of the road, head on.",
+        "A quad bike is riding in the wrong direction towards us.",
+        "At the roundabout a cyclist goes the wrong way round, straight towards us.",
+        "A tractor was heading the other way down our lane.",
+    ],
+)
+def test_a_road_user_coming_the_other_way_in_the_ego_lane_comes_head_on(text):
+    assert _behaviours(text) == ["wrong_way"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "An oncoming car 50 m ahead keeps to its lane.",
+        "A van in our lane 30 m ahead drives on at 40 km/h.",
+        "A cyclist rides ahead of us in our lane, the same way as us.",
+    ],
+)
+def test_oncoming_in_its_own_lane_or_ahead_the_same_way_is_no_wrong_way(text):
+    assert "wrong_way" not in _behaviours(text)

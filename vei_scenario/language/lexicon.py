@@ -809,6 +809,7 @@ RELATIONS = {
         "towards the ego",
         "towards us",
         "head-on",
+        "head on",
         "coming the other way",
         "come towards",
         "drive towards",
@@ -1324,6 +1325,9 @@ WRONG_WAY = (
     "wrong side of the road",
     "on the wrong side of the road",
     "head-on in our lane",
+    "wrong direction",
+    "the wrong direction",
+    "in the wrong direction",
 )
 #: Nouns that are a wrong-way driver.
 WRONG_WAY_NOUNS = ("ghost driver", "wrong-way driver")

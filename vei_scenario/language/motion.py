@@ -61,6 +61,35 @@ def head_on(spec: ActorSpec, against_traffic: bool) -> list:
     return spec.behaviours
 
 
+#: Words that own a lane, path or side as the ego's ("my lane", "our side of the road", "the ego's path").
+_EGO_OWNER_WORDS = frozenset(("my", "our", "ego", "ego's", "av's", "sv's", "ev's"))
+_WAYS = frozenset(("lane", "path", "side"))
+
+
+def in_the_ego_lane(words: str) -> bool:
+    """Whether a relation said as ``words`` puts its road user in the ego's own lane, path or side of
+    the road ("in my lane", "on our side of the road", "down the ego's lane"), not merely in front
+    ("ahead", "in front of us") nor in its own lane ("in its lane")."""
+    said = words.replace(" 's", "'s").split()
+    return any(a in _EGO_OWNER_WORDS and b in _WAYS for a, b in zip(said, said[1:]))
+
+
+#: What a road user coming at the ego in its lane may be said to do besides: go on, or move about in
+#: that lane (a swerve said with no subject is often the narrator's).
+_HEAD_ON_MOVES = frozenset(("keep_going", "along_road", "cut_in", "change_lane", "wrong_way", "keep_lane"))
+
+
+def comes_head_on(names: list[str], wrong_way: bool, said: set) -> bool:
+    """Whether a road user with behaviours ``names``, said to go the wrong way (``wrong_way``) and
+    said the relations ``said``, is driving or riding head-on in the ego's lane: against the traffic
+    (the wrong way, or coming towards the ego) and in the ego's lane (``"in_ego_lane"``), or the wrong
+    way and towards the ego. Its path is the wrong-way one whatever plain verb says it goes, and
+    wherever the ego is (a roundabout, a junction); a turn or an overtake is a path of its own."""
+    against = wrong_way or "oncoming" in said
+    placed = "in_ego_lane" in said or (wrong_way and "oncoming" in said)
+    return against and placed and bool(names) and set(names) <= _HEAD_ON_MOVES
+
+
 #: Subjects that are both parties of a contact: the verb is what happened between them.
 _BOTH = frozenset(("they", "we", "both", "us"))
 #: Verbs of contact a behaviour may be read from ("the rider crashes": it falls).

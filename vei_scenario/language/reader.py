@@ -1970,6 +1970,11 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool, across: str = "left"
         same = ("cut_in", "cross_in_front", "run_red_light", "keep_going")  # ("... and crossed into our path")
         spec.behaviours = [("turn_across", {}, crit, link)] + [b for b in spec.behaviours[1:] if b[0] not in same]
         return
+    if a.kind != "pedestrian" and motion.comes_head_on(names, a.wrong_way, a.said):
+        in_lane = sides.starts_in_ego_lane(a.said)  # (seen coming from the other way: drifts over into it)
+        spec.behaviours = [("wrong_way", {}, crit, link)]
+        spec.relation, spec.facing = ("ahead", "against") if in_lane else ("oncoming", None)
+        return
     if (
         junction
         and a.kind != "pedestrian"
@@ -1998,7 +2003,7 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool, across: str = "left"
         and not junction
         and (
             a.wrong_way
-            or ("ahead" in a.said and towards)
+            or ("ahead" in a.said and towards and "keep_lane" not in names)  # (not "keeps to its lane")
             or (towards and first in ("cut_in", "change_lane"))
             or (spec.relation == "oncoming" and first == "overtake")  # (overtaking into the ego's lane)
         )
@@ -2369,6 +2374,8 @@ def _apply(m, who, r, link, added) -> None:
             a.said.add("in_front")  # "cuts in 10 m ahead": where it cuts in, not where it starts
         elif m.slot == "relation":
             a.said.add(m.value)
+            if m.value == "ahead" and motion.in_the_ego_lane(m.words):
+                a.said.add("in_ego_lane")  # ("in my lane": not only in front, in the ego's own lane)
             a.followed = a.followed or (m.value == "ahead" and m.words in ("following", "tailing"))
             if a.relation is None or m.value == "oncoming":
                 a.relation = m.value
