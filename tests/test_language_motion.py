@@ -433,3 +433,26 @@ def test_a_road_user_coming_the_other_way_in_the_ego_lane_comes_head_on(text):
 )
 def test_oncoming_in_its_own_lane_or_ahead_the_same_way_is_no_wrong_way(text):
     assert "wrong_way" not in _behaviours(text)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A jogger waits at the kerb on the left and does not cross.",
+        "A woman stands on the pavement on our right and never crosses.",
+        "An elderly man on the left footway hesitates but doesn't cross in front of us.",
+    ],
+)
+def test_a_walker_who_waits_and_does_not_cross_gives_way(text):
+    assert _behaviours(text) == ["give_way"]
+
+
+@pytest.mark.parametrize(
+    "text, names",
+    [
+        ("A pedestrian waits at the kerb on the right, then crosses in front of us.", ["cross_in_front"]),
+        ("A man on the right does not stop and crosses in front of us.", ["cross_in_front"]),
+    ],
+)
+def test_a_walker_who_crosses_after_all_crosses(text, names):
+    assert _behaviours(text)[-1:] == names

@@ -337,8 +337,11 @@ _BETWEEN = {"does", "do", "did", "will", "would", "is", "are", "was", "were", "c
             "manages"}  # fmt: skip
 #: What a road user does instead of a behaviour it is said not to do: one that does not give way goes
 #: (as "fails to yield" reads), one that does not stop, brake or slow carries on, one that does not go
-#: on stops; any other denied behaviour leaves it carrying on.
-_DENIED = {"give_way": ("cut_in", {}), "keep_going": ("stop", {}), "cross_in_front": ("stop", {})}
+#: on stops; not crossing is holding back for the ego, giving way; any other denied behaviour leaves
+#: it carrying on.
+_DENIED = {"give_way": ("cut_in", {}), "keep_going": ("stop", {}), "cross_in_front": ("give_way", {})}
+#: Denied behaviours whose denial holds the road user back: it does not go on.
+_HELD_BACK = frozenset(("keep_going", "cross_in_front"))
 
 
 def _denied(tokens: list[str], i: int) -> bool:
@@ -748,7 +751,8 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
                 slot, value = "speed_word", V.SPEED_WORDS[said]  # "the truck is slow"
         if slot == "behaviour" and _denied(tokens, i) and key[0] not in _NEGATORS:
             name, cfg = _DENIED.get(value[0], ("keep_going", {}))  # ("does not stop": it carries on)
-            value = (name, {**cfg, "_denied": 1.0} if value[0] != "keep_going" else {**cfg, "_still": 1.0})
+            held = {**cfg, "_still": 1.0} if value[0] == "keep_going" else cfg
+            value = (name, {**cfg, "_denied": 1.0} if value[0] not in _HELD_BACK else held)
         used = len(key) + (1 if adverb or toward_at else 0)
         words = " ".join(tokens[i : i + used])
         nxt = tokens[i + used] if i + used < len(tokens) else ""
