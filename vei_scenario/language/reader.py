@@ -1975,7 +1975,8 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool, across: str = "left"
         spec.behaviours = [("turn_across", {}, crit, link)] + [b for b in spec.behaviours[1:] if b[0] not in same]
         return
     if a.kind != "pedestrian" and motion.comes_head_on(names, a.wrong_way, a.said):
-        in_lane = sides.starts_in_ego_lane(a.said)  # (seen coming from the other way: drifts over into it)
+        # (a vehicle seen coming from the other way drifts over into the ego's lane; a rider rides in it)
+        in_lane = a.kind in RIDERS or sides.starts_in_ego_lane(a.said)
         spec.behaviours = [("wrong_way", {}, crit, link)]
         spec.relation, spec.facing = ("ahead", "against") if in_lane else ("oncoming", None)
         return
