@@ -456,3 +456,26 @@ def test_a_walker_who_waits_and_does_not_cross_gives_way(text):
 )
 def test_a_walker_who_crosses_after_all_crosses(text, names):
     assert _behaviours(text)[-1:] == names
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A van 20 m ahead of us hard-brakes.",
+        "The lead car emergency-brakes to a complete stop 20 m ahead.",
+        "The bus in front of me panic-brakes for no reason.",
+    ],
+)
+def test_a_manner_and_a_verb_of_braking_in_one_hyphenated_word_read_as_the_phrase(text):
+    assert _behaviours(text) == ["sudden_stop"]
+
+
+@pytest.mark.parametrize(
+    "text, names",
+    [
+        ("A lorry ahead slows to a full stop at the lights.", ["stop"]),
+        ("A well-known local cyclist rides along the kerb ahead.", ["along_road"]),
+    ],
+)
+def test_a_hyphenated_word_that_is_no_manner_and_verb_reads_as_before(text, names):
+    assert _behaviours(text) == names

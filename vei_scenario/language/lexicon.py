@@ -1300,7 +1300,18 @@ NOISE = (
     "unlit",
 )
 #: Saying a change of speed ends standing ("decelerates to a standstill": a stop).
-TO_A_STOP = ("to a stop", "to a standstill", "to a halt", "down to standstill", "to standstill")
+TO_A_STOP = (
+    "to a stop",
+    "to a standstill",
+    "to a halt",
+    "down to standstill",
+    "to standstill",
+    "to a full stop",
+    "to a complete stop",
+    "to a full standstill",
+    "to a complete standstill",
+    "to a complete halt",
+)
 
 #: Leaving a side road ("turns out of the junction", "emerges from the side road"): a pull-out whose
 #: actor comes from a junction arm.

@@ -90,6 +90,22 @@ def comes_head_on(names: list[str], wrong_way: bool, said: set) -> bool:
     return against and placed and bool(names) and set(names) <= _HEAD_ON_MOVES
 
 
+def manner_compound(tokens: list[str], i: int, behaviour_at) -> list[str] | None:
+    """The words a hyphenated manner + verb at ``tokens[i]`` says ("hard-brakes": "brakes hard",
+    "emergency-brakes": "emergency brakes", "panic-brakes": "panic brakes"), or None: the verb is the
+    compound's head (its last part), the first part how it is done. The order that makes a longer
+    phrase of the lexicon wins; the verb alone is read where neither does. ``behaviour_at(tokens,
+    i)`` gives how many words from ``i`` read as a specific behaviour (0: none, nor a plain motion)."""
+    tok = tokens[i]
+    if tok.count("-") != 1 or behaviour_at(tokens, i) or not all(tok.split("-")):
+        return None
+    manner, verb = tok.split("-")
+    if "VERB" not in lemmas(verb) or not behaviour_at([verb], 0):
+        return None
+    best = max(([verb, manner], [manner, verb]), key=lambda pair: behaviour_at(tokens[:i] + pair + tokens[i + 1 :], i))
+    return best
+
+
 #: Subjects that are both parties of a contact: the verb is what happened between them.
 _BOTH = frozenset(("they", "we", "both", "us"))
 #: Verbs of contact a behaviour may be read from ("the rider crashes": it falls).

@@ -535,6 +535,8 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
 
     i = 0
     while i < len(tokens):
+        if (split := motion.manner_compound(tokens, i, _specific_behaviour)) is not None:
+            tokens[i : i + 1] = split  # ("hard-brakes": "brakes hard")
         tok = tokens[i]
         j = i - 1  # the word before, past a determiner ("in front of the ego": "of")
         while j > 0 and tokens[j] in _DETERMINERS:
@@ -776,6 +778,12 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             used = max(used, toward_at + 1 - i)
         i += used
     return [c for c in clauses if any(m.slot not in ("punct", "link") for m in c[1])], ignored, read_as, tokens
+
+
+def _specific_behaviour(tokens: list[str], i: int) -> int:
+    """How many words from ``tokens[i]`` the lexicon reads as a behaviour other than going on (0: none)."""
+    key = _best(tokens, i)
+    return len(key) if key and TABLE[key][0] == "behaviour" and TABLE[key][1][0] != "keep_going" else 0
 
 
 #: Verbs that with "to" say what someone must do ("it has to brake": a requirement, said of the ego).
