@@ -479,3 +479,44 @@ def test_a_manner_and_a_verb_of_braking_in_one_hyphenated_word_read_as_the_phras
 )
 def test_a_hyphenated_word_that_is_no_manner_and_verb_reads_as_before(text, names):
     assert _behaviours(text) == names
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "On the dual carriageway a coupe in the left lane darts across in front of us to catch the exit.",
+        "A hatchback in the inside lane slices over in front of me to make its exit.",
+        "Two lanes each way; a pickup in the right lane cuts across ahead of us to reach the exit.",
+    ],
+)
+def test_an_exit_said_as_the_purpose_of_a_move_is_where_it_goes(text):
+    (actor,) = read(text).actors
+    assert not (actor.relation or "").startswith("junction") and actor.behaviours[0][0] == "cut_in"
+
+
+def test_an_exit_a_road_user_comes_out_of_is_still_where_it_comes_from():
+    (actor,) = read("A car comes out of the exit on the left and pulls into my lane.").actors
+    assert actor.relation == "junction_left"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A scooter rider in the cycle lane moves across into the ego's lane 10 m ahead.",
+        "A van in the lane next to me drifts over into my lane.",
+        "A removal lorry in the left lane changes lanes right in front of us.",
+    ],
+)
+def test_a_move_that_ends_in_the_ego_lane_or_right_in_front_of_it_is_a_cut_in(text):
+    assert _behaviours(text) == ["cut_in"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A lorry in the left lane changes lanes 50 m behind us.",
+        "A car ahead of us in the right lane moves into the left lane.",
+    ],
+)
+def test_a_lane_change_elsewhere_stays_a_lane_change(text):
+    assert _behaviours(text) == ["change_lane"]

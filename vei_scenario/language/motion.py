@@ -152,7 +152,7 @@ def destinations_not_origins(clauses: list) -> list:
         dropped = False
         for k, m in enumerate(mentions):
             before = mentions[k - 1] if k > 0 else None
-            if m.slot == "arm" and _led_towards(m, before):
+            if m.slot == "arm" and _led_towards(m, before, mentions[k - 2] if k > 1 else None):
                 drop_side = dropped = True
                 if kept and kept[-1] is before and before.slot in ("pronoun", "member"):
                     kept.pop()
@@ -256,14 +256,42 @@ _EGO_OWNERS = (("my",), ("our",), ("the", "ego", "'s"), ("ego", "'s"), ("the", "
 _STOPS = frozenset((".", ",", ";", ":", "!", "?", "and", "but", "then", "while", "when", "as"))
 
 
+#: Mentions that may stand between a move and where it ends ("swerves suddenly, 5 m ahead, in front of us").
+_BETWEEN_MOVE_AND_WHERE = frozenset(("punct", "criticality", "distance", "speed"))
+
+
+def _ends_in_front_of_the_ego(mentions: list, k: int) -> bool:
+    """Whether the lane change at ``mentions[k]`` is said to end right in front of the ego ("changed
+    lanes directly in front of my client", "slices over in front of me"): the ego named in a relation
+    of being ahead of it, or right after one, before anything else is said. Ending in front of the
+    ego, in its lane, is what a cut-in is."""
+    j = k + 1
+    in_front = ("relation", "criticality")  # ("right in front" is read as how close, and says where too)
+    while j < len(mentions) and mentions[j].slot in _BETWEEN_MOVE_AND_WHERE and "in front" not in mentions[j].words:
+        j += 1
+    if j >= len(mentions) or mentions[j].slot not in in_front:
+        return False
+    where = mentions[j]
+    if not where.words.startswith(("in front", "just in front", "right in front", "directly in front")):
+        return False
+    nxt = mentions[j + 1] if j + 1 < len(mentions) else None
+    named = any(w in _EGO_WORDS for w in where.words.split()) or where.words.endswith("the ego")
+    return named or (nxt is not None and nxt.slot == "actor" and nxt.value == "ego" and nxt.start <= where.end + 2)
+
+
 def into_the_ego_lane(clauses: list, tokens: list[str]) -> list:
     """``clauses`` with a move into the ego's lane or path read as a cut-in (``tokens``: the reader's
-    tokens, which the mentions index)."""
+    tokens, which the mentions index): "into" + the ego's lane after the verb's phrase ("moves across
+    into my lane"), or a lane change that ends right in front of the ego
+    (:func:`_ends_in_front_of_the_ego`)."""
     out = []
     for link, mentions in clauses:
         kept = list(mentions)
         for k, m in enumerate(kept):
-            if m.slot == "behaviour" and m.value[0] in _INTO_EGO_LANE_FROM and _into_ego_lane(tokens, m.end):
+            if m.slot != "behaviour" or m.value[0] not in _INTO_EGO_LANE_FROM:
+                continue
+            lane_change = m.value[0] == "change_lane" and _ends_in_front_of_the_ego(kept, k)
+            if _into_ego_lane(tokens, m.end) or lane_change:
                 kept[k] = replace(m, value=("cut_in", {x: v for x, v in m.value[1].items() if x != "direction"}))
         out.append((link, kept))
     return out
@@ -401,12 +429,21 @@ def lets_the_ego_go(clauses: list, tokens: list[str]) -> list:
     return _rewrite(clauses, rule)
 
 
-def _led_towards(m, before) -> bool:
-    """Whether a side road or exit mention ``m`` is led by "into"/"onto" (a destination)."""
+def _led_towards(m, before, earlier=None) -> bool:
+    """Whether a side road or exit mention ``m`` is led by "into"/"onto" (a destination), or is the
+    object of an infinitive of purpose ("to take the exit", "to make its exit", "to catch the exit"):
+    what a road user moves to reach is where it goes, whatever the verb."""
     if m.prev in _TOWARDS:
         return True
     if before is None:
         return False
+    verb = before
+    if before.slot == "pronoun" and before.words in _POSSESSIVE and before.end == m.start and earlier is not None:
+        verb = earlier  # ("to make its exit": past whose it is)
+    purpose = verb.slot in ("unknown_verb", "behaviour", "ego_verb") and verb.prev == "to"
+    direct = "VERB" in lemmas(verb.words.split()[-1])  # (its object: not "to pull out of the side road")
+    if purpose and direct and verb.end <= m.start <= verb.end + 1:
+        return True  # ("... to take the exit": past its determiner)
     if before.slot == "pronoun" and before.words in _POSSESSIVE and before.prev in _TOWARDS | {"to"}:
         return before.end == m.start  # ("to get to its exit")
     return before.slot == "member" and before.prev in _TOWARDS and m.prev == "of"  # ("into one of the side roads")

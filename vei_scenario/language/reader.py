@@ -762,8 +762,8 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
         if slot == "behaviour" and value[0] in _SIDEWAYS and toward_at is None and nxt in ("left", "right"):
             if after not in _RIGHT_BEFORE:  # "merges right from the middle lane" (not "cuts in right in front")
                 toward_at = i + used
-        if slot in ("sequence", "parallel") and det:
-            i += used  # "from the next entry": a word of order before a noun, no new clause
+        if slot in ("sequence", "parallel") and (det or tokens[i + used : i + used + 1] == ["to"]):
+            i += used  # "from the next entry", "next to me": a word of order before a noun or "to", no new clause
             continue
         if slot in ("sequence", "parallel"):
             clauses.append((slot, [_Mention("link", slot, words, i, prev, end=i + used)]))
