@@ -520,3 +520,22 @@ def test_a_move_that_ends_in_the_ego_lane_or_right_in_front_of_it_is_a_cut_in(te
 )
 def test_a_lane_change_elsewhere_stays_a_lane_change(text):
     assert _behaviours(text) == ["change_lane"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A moped is following behind us at a two-second gap; at the lights it pulls up behind us.",
+        "A taxi is following behind me at 30 km/h and then pulls up behind me.",
+        "A cyclist is following behind the ego and then comes to a stop behind it.",
+    ],
+)
+def test_following_behind_the_ego_then_stopping_is_both_in_order(text):
+    r = read(text)
+    follower = next(a for a in r.actors if a.relation == "behind")
+    assert [b[0] for b in follower.behaviours] == ["follow_vehicle", "stop"]
+
+
+def test_behind_the_ego_without_following_is_only_where_it_is():
+    (van,) = read("A van waits behind us at the lights and then stops.").actors
+    assert "follow_vehicle" not in [b[0] for b in van.behaviours]

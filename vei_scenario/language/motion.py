@@ -1041,10 +1041,26 @@ def _a_following(m) -> bool:
     return m.slot == "relation" and m.value == "behind" and "follow" in lemmas(m.words.split()[0]).get("VERB", ())
 
 
+def _the_ego(m) -> bool:
+    return m.slot == "actor" and m.value == "ego"
+
+
+def _behind_the_ego(m, after) -> bool:
+    """Whether ``m`` (``after``: the mention after it) says "behind" the ego ("behind us", "behind"
+    + the ego named on its own): following behind it is following it."""
+    words = m.words.split()
+    if not (m.slot == "relation" and m.value == "behind" and words[0] == "behind"):
+        return False
+    return words[-1] in _EGO_WORDS or (
+        words == ["behind"] and after is not None and _the_ego(after) and after.start == m.end
+    )
+
+
 def follows_the_ego(clauses: list, tokens: list[str]) -> list:
     """``clauses`` with a road user following the ego ("a bus is following us", "tailgating me",
-    "follows the ego") read as following it from behind: the ego as the object of a verb of following
-    said of a road user is what it follows, so it starts behind the ego and keeps to its speed."""
+    "follows the ego", "following behind us") read as following it from behind: the ego as the object
+    of a verb of following said of a road user is what it follows, so it starts behind the ego and
+    keeps to its speed."""
     out = []
     for link, mentions in clauses:
         kept: list = []
@@ -1054,9 +1070,8 @@ def follows_the_ego(clauses: list, tokens: list[str]) -> list:
             if (
                 _a_following(m)
                 and nxt is not None
-                and nxt.slot == "actor"
-                and nxt.value == "ego"
-                and all(t in ("the", "a") for t in tokens[m.end : nxt.start])
+                and (_the_ego(nxt) or _behind_the_ego(nxt, mentions[k + 2] if k + 2 < len(mentions) else None))
+                and all(t in ("the", "a") or "ADV" in lemmas(t) for t in tokens[m.end : nxt.start])
                 and subject is not None
                 and subject.value != "ego"
             ):
