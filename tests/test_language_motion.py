@@ -539,3 +539,26 @@ def test_following_behind_the_ego_then_stopping_is_both_in_order(text):
 def test_behind_the_ego_without_following_is_only_where_it_is():
     (van,) = read("A van waits behind us at the lights and then stops.").actors
     assert "follow_vehicle" not in [b[0] for b in van.behaviours]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A van overtakes me and then turns left across my path.",
+        "A taxi passed us on the right and swung right across our lane into a side road.",
+        "A cyclist undertakes us at the lights then cuts across in front of us to turn right.",
+    ],
+)
+def test_passing_the_ego_to_turn_across_its_path_is_the_turn(text):
+    assert _behaviours(text) == ["forced_turn"]
+
+
+@pytest.mark.parametrize(
+    "text, names",
+    [
+        ("A car overtakes us and cuts back in.", ["overtake"]),
+        ("A van overtakes us and then stops at the bus stop ahead.", ["overtake", "stop"]),
+    ],
+)
+def test_an_overtake_with_no_turn_after_it_stays(text, names):
+    assert _behaviours(text) == names

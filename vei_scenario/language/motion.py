@@ -7,6 +7,8 @@ keep the path:
 
 * running the red light is the whole of a road user's path across the junction: a pass of the ego
   or an emergence from an arm said with it is how it goes, not a second manoeuvre;
+* passing the ego and then turning across its path (a "left hook") is the turn: the pass is how
+  the road user gets ahead to make it;
 * a road user on a junction arm that only stops (and waits) is giving way: that is what stopping at
   the line of a side road is;
 * a rider going along the road against the traffic, said to be on the wrong side and not at the
@@ -537,6 +539,10 @@ def one_path(spec: ActorSpec, said: str = "", across: str = "left") -> list:
         return [("wrong_way", {}, crit, link)]
     if "run_red_light" in names:
         return [b for b in spec.behaviours if b[0] not in _MANNER_OF_A_RUN]
+    if names[:2] == ["overtake", "forced_turn"]:
+        # (passing the ego to turn across its path, a "left hook": the pass is how it gets there)
+        spec.behaviours = spec.behaviours[1:]
+        names = names[1:]
     turning_left = names[:1] == ["forced_turn"] and spec.behaviours[0][1].get("turn") == across
     if turning_left and spec.relation is None and compass_opposed(said):
         _, cfg, crit, link = spec.behaviours[0]
