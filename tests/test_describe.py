@@ -141,7 +141,7 @@ def test_reading_of_positions_sequences_and_words():
         ("The lead car doesn't brake.", "car", "ahead", ["keep_going"]),
         ("The van in front didn't even bother to slow down.", "van", "ahead", ["keep_going"]),
         ("The truck ahead never slows down.", "truck", "ahead", ["keep_going"]),
-        ("A pedestrian waits at the kerb and does not cross.", "pedestrian", "roadside_right", ["stop"]),
+        ("A pedestrian waits at the kerb and does not cross.", "pedestrian", "roadside_right", ["give_way"]),
         # "too fast to stop" does not stop; a stop sign is a junction; a rider not giving way rides through
         ("The ego waits at a stop sign, then pulls out; a car from the left is going too fast to stop.", "car",
          "junction_left", ["run_red_light"]),

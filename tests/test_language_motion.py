@@ -347,3 +347,218 @@ def test_a_road_user_the_ego_gives_way_to_goes_on_through_the_junction(text):
 )
 def test_coming_past_the_ego_is_overtaking_it(text):
     assert _behaviours(text)[0] == "overtake"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "We drive on the left here. An oncoming van turns right across our path at the crossroads.",
+        "UK layout, ego at 40 km/h: at the junction an oncoming cyclist turns right across the front of us.",
+        "Left-hand traffic. At the crossroads a car coming towards us swings right across our lane.",
+    ],
+)
+def test_in_left_hand_traffic_the_oncoming_turn_across_the_ego_is_to_the_right(text):
+    (actor,) = read(text).actors
+    assert (actor.relation, [b[0] for b in actor.behaviours]) == ("junction_opposite", ["turn_across"])
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "An oncoming car turns left across our path at the crossroads.",  # (right-hand traffic: the far side)
+        "Ego at 40 km/h. At the crossroads an oncoming van turns right.",  # (right-hand: the near side, no crossing)
+    ],
+)
+def test_the_turn_across_is_to_the_far_side_of_the_traffic_the_text_drives_in(text):
+    (actor,) = read(text).actors
+    turns_across = [b[0] for b in actor.behaviours] == ["turn_across"]
+    assert turns_across == ("left" in text)
+
+
+def test_driving_on_the_left_lane_says_no_traffic_side():
+    from vei_scenario.language.sides import drives_on_left
+
+    assert not drives_on_left("i am driving on the left lane at 50 km/h".split())
+    assert drives_on_left("we are driving on the left , at 50 km/h".split())
+
+
+@pytest.mark.parametrize(
+    "text, relation",
+    [
+        ("At the junction a van came out from a side road on the right just ahead of us.", "junction_right"),
+        ("At the crossroads an e-scooter exits a side road on the left onto our road 15 m ahead.", "junction_left"),
+        ("A cyclist rode out from the side street on my left into the road in front of me.", "junction_left"),
+        ("At the T-junction a lorry is leaving the side road on our right as we arrive.", "junction_right"),
+    ],
+)
+def test_coming_out_from_or_leaving_a_side_road_is_turning_into_the_ego_road(text, relation):
+    (actor,) = read(text).actors
+    assert (actor.relation, actor.behaviours[0][0]) == (relation, "turn_into")
+
+
+@pytest.mark.parametrize(
+    "text, first",
+    [
+        ("At the crossroads a car comes from the left and drives straight across.", "run_red_light"),
+        ("A man walks out from a side street on the left.", "cross_in_front"),
+        ("At the roundabout a bus takes the exit on the left.", None),
+    ],
+)
+def test_what_is_not_coming_out_of_a_side_road_stays_as_it_was(text, first):
+    (actor,) = read(text).actors
+    assert actor.behaviours[0][0] != "turn_into" and (first is None or actor.behaviours[0][0] == first)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist was coming the other way in my lane.",
+        "A moped comes round the corner on our side of the road, head on.",
+        "A quad bike is riding in the wrong direction towards us.",
+        "At the roundabout a cyclist goes the wrong way round, straight towards us.",
+        "A tractor was heading the other way down our lane.",
+    ],
+)
+def test_a_road_user_coming_the_other_way_in_the_ego_lane_comes_head_on(text):
+    assert _behaviours(text) == ["wrong_way"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "An oncoming car 50 m ahead keeps to its lane.",
+        "A van in our lane 30 m ahead drives on at 40 km/h.",
+        "A cyclist rides ahead of us in our lane, the same way as us.",
+    ],
+)
+def test_oncoming_in_its_own_lane_or_ahead_the_same_way_is_no_wrong_way(text):
+    assert "wrong_way" not in _behaviours(text)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A jogger waits at the kerb on the left and does not cross.",
+        "A woman stands on the pavement on our right and never crosses.",
+        "An elderly man on the left footway hesitates but doesn't cross in front of us.",
+    ],
+)
+def test_a_walker_who_waits_and_does_not_cross_gives_way(text):
+    assert _behaviours(text) == ["give_way"]
+
+
+@pytest.mark.parametrize(
+    "text, names",
+    [
+        ("A pedestrian waits at the kerb on the right, then crosses in front of us.", ["cross_in_front"]),
+        ("A man on the right does not stop and crosses in front of us.", ["cross_in_front"]),
+    ],
+)
+def test_a_walker_who_crosses_after_all_crosses(text, names):
+    assert _behaviours(text)[-1:] == names
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A van 20 m ahead of us hard-brakes.",
+        "The lead car emergency-brakes to a complete stop 20 m ahead.",
+        "The bus in front of me panic-brakes for no reason.",
+    ],
+)
+def test_a_manner_and_a_verb_of_braking_in_one_hyphenated_word_read_as_the_phrase(text):
+    assert _behaviours(text) == ["sudden_stop"]
+
+
+@pytest.mark.parametrize(
+    "text, names",
+    [
+        ("A lorry ahead slows to a full stop at the lights.", ["stop"]),
+        ("A well-known local cyclist rides along the kerb ahead.", ["along_road"]),
+    ],
+)
+def test_a_hyphenated_word_that_is_no_manner_and_verb_reads_as_before(text, names):
+    assert _behaviours(text) == names
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "On the dual carriageway a coupe in the left lane darts across in front of us to catch the exit.",
+        "A hatchback in the inside lane slices over in front of me to make its exit.",
+        "Two lanes each way; a pickup in the right lane cuts across ahead of us to reach the exit.",
+    ],
+)
+def test_an_exit_said_as_the_purpose_of_a_move_is_where_it_goes(text):
+    (actor,) = read(text).actors
+    assert not (actor.relation or "").startswith("junction") and actor.behaviours[0][0] == "cut_in"
+
+
+def test_an_exit_a_road_user_comes_out_of_is_still_where_it_comes_from():
+    (actor,) = read("A car comes out of the exit on the left and pulls into my lane.").actors
+    assert actor.relation == "junction_left"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A scooter rider in the cycle lane moves across into the ego's lane 10 m ahead.",
+        "A van in the lane next to me drifts over into my lane.",
+        "A removal lorry in the left lane changes lanes right in front of us.",
+    ],
+)
+def test_a_move_that_ends_in_the_ego_lane_or_right_in_front_of_it_is_a_cut_in(text):
+    assert _behaviours(text) == ["cut_in"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A lorry in the left lane changes lanes 50 m behind us.",
+        "A car ahead of us in the right lane moves into the left lane.",
+    ],
+)
+def test_a_lane_change_elsewhere_stays_a_lane_change(text):
+    assert _behaviours(text) == ["change_lane"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A moped is following behind us at a two-second gap; at the lights it pulls up behind us.",
+        "A taxi is following behind me at 30 km/h and then pulls up behind me.",
+        "A cyclist is following behind the ego and then comes to a stop behind it.",
+    ],
+)
+def test_following_behind_the_ego_then_stopping_is_both_in_order(text):
+    r = read(text)
+    follower = next(a for a in r.actors if a.relation == "behind")
+    assert [b[0] for b in follower.behaviours] == ["follow_vehicle", "stop"]
+
+
+def test_behind_the_ego_without_following_is_only_where_it_is():
+    (van,) = read("A van waits behind us at the lights and then stops.").actors
+    assert "follow_vehicle" not in [b[0] for b in van.behaviours]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A van overtakes me and then turns left across my path.",
+        "A taxi passed us on the right and swung right across our lane into a side road.",
+        "A cyclist undertakes us at the lights then cuts across in front of us to turn right.",
+    ],
+)
+def test_passing_the_ego_to_turn_across_its_path_is_the_turn(text):
+    assert _behaviours(text) == ["forced_turn"]
+
+
+@pytest.mark.parametrize(
+    "text, names",
+    [
+        ("A car overtakes us and cuts back in.", ["overtake"]),
+        ("A van overtakes us and then stops at the bus stop ahead.", ["overtake", "stop"]),
+    ],
+)
+def test_an_overtake_with_no_turn_after_it_stays(text, names):
+    assert _behaviours(text) == names

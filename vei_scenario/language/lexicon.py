@@ -833,6 +833,7 @@ RELATIONS = {
         "towards the ego",
         "towards us",
         "head-on",
+        "head on",
         "coming the other way",
         "come towards",
         "drive towards",
@@ -1323,7 +1324,18 @@ NOISE = (
     "unlit",
 )
 #: Saying a change of speed ends standing ("decelerates to a standstill": a stop).
-TO_A_STOP = ("to a stop", "to a standstill", "to a halt", "down to standstill", "to standstill")
+TO_A_STOP = (
+    "to a stop",
+    "to a standstill",
+    "to a halt",
+    "down to standstill",
+    "to standstill",
+    "to a full stop",
+    "to a complete stop",
+    "to a full standstill",
+    "to a complete standstill",
+    "to a complete halt",
+)
 
 #: Leaving a side road ("turns out of the junction", "emerges from the side road"): a pull-out whose
 #: actor comes from a junction arm.
@@ -1348,6 +1360,9 @@ WRONG_WAY = (
     "wrong side of the road",
     "on the wrong side of the road",
     "head-on in our lane",
+    "wrong direction",
+    "the wrong direction",
+    "in the wrong direction",
 )
 #: Nouns that are a wrong-way driver.
 WRONG_WAY_NOUNS = ("ghost driver", "wrong-way driver")

@@ -7,6 +7,8 @@ keep the path:
 
 * running the red light is the whole of a road user's path across the junction: a pass of the ego
   or an emergence from an arm said with it is how it goes, not a second manoeuvre;
+* passing the ego and then turning across its path (a "left hook") is the turn: the pass is how
+  the road user gets ahead to make it;
 * a road user on a junction arm that only stops (and waits) is giving way: that is what stopping at
   the line of a side road is;
 * a rider going along the road against the traffic, said to be on the wrong side and not at the
@@ -15,7 +17,7 @@ keep the path:
   lane") is driving the wrong way in that lane;
 * where the only two headings a narrative gives are opposite ("V2, eastbound, ... V1, which was
   westbound"), the road user is coming the other way: its left turn across the ego's path is the
-  turn across an oncoming path.
+  turn across an oncoming path (its right turn, where the text says traffic keeps left).
 
 A verb with the particle "out" and "of" or "from" a side road ("pops out of a side street", "shot
 out from the side road") is coming out of that road, whatever the verb: the reader reads it as it
@@ -44,7 +46,7 @@ from dataclasses import replace
 
 from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.reading import ActorSpec
-from vei_scenario.language.sides import OFF_ROAD_PLACES
+from vei_scenario.language.sides import OFF_ROAD_PLACES, stated_traffic_side
 
 #: Behaviours that, said with running the red, are the manner of that run.
 _MANNER_OF_A_RUN = frozenset(("overtake", "turn_into"))
@@ -59,6 +61,51 @@ def head_on(spec: ActorSpec, against_traffic: bool) -> list:
         _, cfg, crit, link = spec.behaviours[0]
         return [("wrong_way", {}, crit, link)]
     return spec.behaviours
+
+
+#: Words that own a lane, path or side as the ego's ("my lane", "our side of the road", "the ego's path").
+_EGO_OWNER_WORDS = frozenset(("my", "our", "ego", "ego's", "av's", "sv's", "ev's"))
+_WAYS = frozenset(("lane", "path", "side"))
+
+
+def in_the_ego_lane(words: str) -> bool:
+    """Whether a relation said as ``words`` puts its road user in the ego's own lane, path or side of
+    the road ("in my lane", "on our side of the road", "down the ego's lane"), not merely in front
+    ("ahead", "in front of us") nor in its own lane ("in its lane")."""
+    said = words.replace(" 's", "'s").split()
+    return any(a in _EGO_OWNER_WORDS and b in _WAYS for a, b in zip(said, said[1:]))
+
+
+#: What a road user coming at the ego in its lane may be said to do besides: go on, or move about in
+#: that lane (a swerve said with no subject is often the narrator's).
+_HEAD_ON_MOVES = frozenset(("keep_going", "along_road", "cut_in", "change_lane", "wrong_way", "keep_lane"))
+
+
+def comes_head_on(names: list[str], wrong_way: bool, said: set) -> bool:
+    """Whether a road user with behaviours ``names``, said to go the wrong way (``wrong_way``) and
+    said the relations ``said``, is driving or riding head-on in the ego's lane: against the traffic
+    (the wrong way, or coming towards the ego) and in the ego's lane (``"in_ego_lane"``), or the wrong
+    way and towards the ego. Its path is the wrong-way one whatever plain verb says it goes, and
+    wherever the ego is (a roundabout, a junction); a turn or an overtake is a path of its own."""
+    against = wrong_way or "oncoming" in said
+    placed = "in_ego_lane" in said or (wrong_way and "oncoming" in said)
+    return against and placed and bool(names) and set(names) <= _HEAD_ON_MOVES
+
+
+def manner_compound(tokens: list[str], i: int, behaviour_at) -> list[str] | None:
+    """The words a hyphenated manner + verb at ``tokens[i]`` says ("hard-brakes": "brakes hard",
+    "emergency-brakes": "emergency brakes", "panic-brakes": "panic brakes"), or None: the verb is the
+    compound's head (its last part), the first part how it is done. The order that makes a longer
+    phrase of the lexicon wins; the verb alone is read where neither does. ``behaviour_at(tokens,
+    i)`` gives how many words from ``i`` read as a specific behaviour (0: none, nor a plain motion)."""
+    tok = tokens[i]
+    if tok.count("-") != 1 or behaviour_at(tokens, i) or not all(tok.split("-")):
+        return None
+    manner, verb = tok.split("-")
+    if "VERB" not in lemmas(verb) or not behaviour_at([verb], 0):
+        return None
+    best = max(([verb, manner], [manner, verb]), key=lambda pair: behaviour_at(tokens[:i] + pair + tokens[i + 1 :], i))
+    return best
 
 
 #: Subjects that are both parties of a contact: the verb is what happened between them.
@@ -107,7 +154,7 @@ def destinations_not_origins(clauses: list) -> list:
         dropped = False
         for k, m in enumerate(mentions):
             before = mentions[k - 1] if k > 0 else None
-            if m.slot == "arm" and _led_towards(m, before):
+            if m.slot == "arm" and _led_towards(m, before, mentions[k - 2] if k > 1 else None):
                 drop_side = dropped = True
                 if kept and kept[-1] is before and before.slot in ("pronoun", "member"):
                     kept.pop()
@@ -121,11 +168,39 @@ def destinations_not_origins(clauses: list) -> list:
     return out
 
 
-def out_of_a_side_road(clauses: list) -> list:
-    """``clauses`` with a verb + "out" + "of"/"from" + a side road read as coming out of that road."""
+#: Verbs (lemmas) of leaving a place: with a side road as their object, a road user comes out of it.
+_LEAVE = frozenset(("exit", "leave", "quit"))
+_OUT_OF = (["out", "of"], ["out", "from"], ["outta"])
+
+
+def _leaves_the_arm(tokens: list[str], arm) -> int | None:
+    """Where the verb stands that says a road user comes out of side road mention ``arm``: a verb +
+    "out of" / "out from" before it ("came out from a side road", "rode out of the side street"), or
+    a verb of leaving with it as its object ("exits a side road", "is leaving the side street"); None
+    if neither. The verb is whatever it is: the particle or the verb's class says it leaves."""
+    j = arm.start - 1
+    while j >= 0 and tokens[j] in _DETERMINERS:
+        j -= 1
+    for particle in _OUT_OF:
+        n = len(particle)
+        if j - n + 1 >= 1 and tokens[j - n + 1 : j + 1] == particle:
+            return j - n  # (the verb before the particle)
+    verb = tokens[j] if j >= 0 else ""
+    inflected = verb.endswith(("s", "ed", "ing")) and j > 0 and tokens[j - 1] not in _DETERMINERS
+    if inflected and set(lemmas(verb).get("VERB", ())) & _LEAVE:
+        return j
+    return None
+
+
+def out_of_a_side_road(clauses: list, tokens: list[str] | None = None) -> list:
+    """``clauses`` with a verb + "out" + "of"/"from" + a side road, or a verb of leaving with a side
+    road as its object, read as coming out of that road (``tokens``: the reader's tokens, which the
+    mentions index)."""
     out = []
     for link, mentions in clauses:
         kept = list(mentions)
+        if tokens is not None:
+            kept = _leaving_a_side_road(kept, tokens)
         for k, m in enumerate(kept[:-1]):
             nxt = kept[k + 1]
             particle = m.words.endswith((" out", " out of", " out from")) and (
@@ -139,6 +214,32 @@ def out_of_a_side_road(clauses: list) -> list:
                 cfg = {x: v for x, v in m.value[1].items() if x != "from_side_road"}
                 kept[k] = replace(m, value=(m.value[0], cfg))
         out.append((link, kept))
+    return out
+
+
+def _leaving_a_side_road(mentions: list, tokens: list[str]) -> list:
+    """``mentions`` with the verb that says its road user leaves a side road (:func:`_leaves_the_arm`)
+    read as coming out of it: its behaviour mention made the pull-out from a side road, or one put in
+    where the reader held the verb as no behaviour ("exits" read as an exit, "leaving" read past)."""
+    out = list(mentions)
+    for k in range(len(out) - 1, -1, -1):
+        arm = out[k]
+        if arm.slot != "arm" or arm.words.split()[0] in ("exit", "exits", "exited", "exiting"):
+            continue
+        at = _leaves_the_arm(tokens, arm)
+        if at is None or at < 0:
+            continue
+        verb = next((x for x in out[:k] if x.start <= at < max(x.end, x.start + 1)), None)
+        pull_out = ("cut_in", {"from_side_road": 1.0})
+        if verb is not None and verb.slot in ("behaviour", "unknown_verb", "ego_verb", "arm"):
+            if verb.slot == "behaviour" and verb.value[1].get("from_side_road"):
+                continue
+            if verb.slot == "behaviour" and verb.value[0] not in _PLAIN_MOVES | {"cut_in", "cross_in_front"}:
+                continue  # (a move of its own: "turns out of ...", read as it is)
+            out[out.index(verb)] = replace(verb, slot="behaviour", value=pull_out)
+        elif verb is None:
+            said = replace(arm, slot="behaviour", value=pull_out, words=tokens[at], start=at, end=at + 1, det="")
+            out.insert(k, said)
     return out
 
 
@@ -157,14 +258,42 @@ _EGO_OWNERS = (("my",), ("our",), ("the", "ego", "'s"), ("ego", "'s"), ("the", "
 _STOPS = frozenset((".", ",", ";", ":", "!", "?", "and", "but", "then", "while", "when", "as"))
 
 
+#: Mentions that may stand between a move and where it ends ("swerves suddenly, 5 m ahead, in front of us").
+_BETWEEN_MOVE_AND_WHERE = frozenset(("punct", "criticality", "distance", "speed"))
+
+
+def _ends_in_front_of_the_ego(mentions: list, k: int) -> bool:
+    """Whether the lane change at ``mentions[k]`` is said to end right in front of the ego ("changed
+    lanes directly in front of my client", "slices over in front of me"): the ego named in a relation
+    of being ahead of it, or right after one, before anything else is said. Ending in front of the
+    ego, in its lane, is what a cut-in is."""
+    j = k + 1
+    in_front = ("relation", "criticality")  # ("right in front" is read as how close, and says where too)
+    while j < len(mentions) and mentions[j].slot in _BETWEEN_MOVE_AND_WHERE and "in front" not in mentions[j].words:
+        j += 1
+    if j >= len(mentions) or mentions[j].slot not in in_front:
+        return False
+    where = mentions[j]
+    if not where.words.startswith(("in front", "just in front", "right in front", "directly in front")):
+        return False
+    nxt = mentions[j + 1] if j + 1 < len(mentions) else None
+    named = any(w in _EGO_WORDS for w in where.words.split()) or where.words.endswith("the ego")
+    return named or (nxt is not None and nxt.slot == "actor" and nxt.value == "ego" and nxt.start <= where.end + 2)
+
+
 def into_the_ego_lane(clauses: list, tokens: list[str]) -> list:
     """``clauses`` with a move into the ego's lane or path read as a cut-in (``tokens``: the reader's
-    tokens, which the mentions index)."""
+    tokens, which the mentions index): "into" + the ego's lane after the verb's phrase ("moves across
+    into my lane"), or a lane change that ends right in front of the ego
+    (:func:`_ends_in_front_of_the_ego`)."""
     out = []
     for link, mentions in clauses:
         kept = list(mentions)
         for k, m in enumerate(kept):
-            if m.slot == "behaviour" and m.value[0] in _INTO_EGO_LANE_FROM and _into_ego_lane(tokens, m.end):
+            if m.slot != "behaviour" or m.value[0] not in _INTO_EGO_LANE_FROM:
+                continue
+            lane_change = m.value[0] == "change_lane" and _ends_in_front_of_the_ego(kept, k)
+            if _into_ego_lane(tokens, m.end) or lane_change:
                 kept[k] = replace(m, value=("cut_in", {x: v for x, v in m.value[1].items() if x != "direction"}))
         out.append((link, kept))
     return out
@@ -302,12 +431,21 @@ def lets_the_ego_go(clauses: list, tokens: list[str]) -> list:
     return _rewrite(clauses, rule)
 
 
-def _led_towards(m, before) -> bool:
-    """Whether a side road or exit mention ``m`` is led by "into"/"onto" (a destination)."""
+def _led_towards(m, before, earlier=None) -> bool:
+    """Whether a side road or exit mention ``m`` is led by "into"/"onto" (a destination), or is the
+    object of an infinitive of purpose ("to take the exit", "to make its exit", "to catch the exit"):
+    what a road user moves to reach is where it goes, whatever the verb."""
     if m.prev in _TOWARDS:
         return True
     if before is None:
         return False
+    verb = before
+    if before.slot == "pronoun" and before.words in _POSSESSIVE and before.end == m.start and earlier is not None:
+        verb = earlier  # ("to make its exit": past whose it is)
+    purpose = verb.slot in ("unknown_verb", "behaviour", "ego_verb") and verb.prev == "to"
+    direct = "VERB" in lemmas(verb.words.split()[-1])  # (its object: not "to pull out of the side road")
+    if purpose and direct and verb.end <= m.start <= verb.end + 1:
+        return True  # ("... to take the exit": past its determiner)
     if before.slot == "pronoun" and before.words in _POSSESSIVE and before.prev in _TOWARDS | {"to"}:
         return before.end == m.start  # ("to get to its exit")
     return before.slot == "member" and before.prev in _TOWARDS and m.prev == "of"  # ("into one of the side roads")
@@ -377,9 +515,18 @@ def _one_crossing(behaviours: list) -> list:
     return out
 
 
-def one_path(spec: ActorSpec, said: str = "") -> list:
+def turn_across_side(tokens: list[str]) -> str:
+    """The turn that takes a road user coming the other way across the ego's path: to the far side of
+    the road, left where traffic keeps right, right where the text says it keeps left ("we drive on
+    the left", "UK layout"). Only a stated side counts: units and road words are too weak a guess to
+    read an oncoming left turn as one away from the ego."""
+    return "right" if stated_traffic_side(tokens) == "left" else "left"
+
+
+def one_path(spec: ActorSpec, said: str = "", across: str = "left") -> list:
     """``spec``'s behaviours with the manner of its path dropped (see the module's rules); ``said`` is
-    the description's normalised text, for what a road user's own clause cannot place."""
+    the description's normalised text, for what a road user's own clause cannot place; ``across`` the
+    turn that crosses an oncoming path (:func:`turn_across_side`)."""
     if spec.kind == "pedestrian":
         spec.behaviours = _one_crossing(spec.behaviours)
     if spec.obstacle is not None and spec.behaviours[:1] and spec.behaviours[0][0] == "cut_out":
@@ -392,7 +539,11 @@ def one_path(spec: ActorSpec, said: str = "") -> list:
         return [("wrong_way", {}, crit, link)]
     if "run_red_light" in names:
         return [b for b in spec.behaviours if b[0] not in _MANNER_OF_A_RUN]
-    turning_left = names[:1] == ["forced_turn"] and spec.behaviours[0][1].get("turn") == "left"
+    if names[:2] == ["overtake", "forced_turn"]:
+        # (passing the ego to turn across its path, a "left hook": the pass is how it gets there)
+        spec.behaviours = spec.behaviours[1:]
+        names = names[1:]
+    turning_left = names[:1] == ["forced_turn"] and spec.behaviours[0][1].get("turn") == across
     if turning_left and spec.relation is None and compass_opposed(said):
         _, cfg, crit, link = spec.behaviours[0]
         spec.relation = "junction_opposite"
@@ -896,10 +1047,26 @@ def _a_following(m) -> bool:
     return m.slot == "relation" and m.value == "behind" and "follow" in lemmas(m.words.split()[0]).get("VERB", ())
 
 
+def _the_ego(m) -> bool:
+    return m.slot == "actor" and m.value == "ego"
+
+
+def _behind_the_ego(m, after) -> bool:
+    """Whether ``m`` (``after``: the mention after it) says "behind" the ego ("behind us", "behind"
+    + the ego named on its own): following behind it is following it."""
+    words = m.words.split()
+    if not (m.slot == "relation" and m.value == "behind" and words[0] == "behind"):
+        return False
+    return words[-1] in _EGO_WORDS or (
+        words == ["behind"] and after is not None and _the_ego(after) and after.start == m.end
+    )
+
+
 def follows_the_ego(clauses: list, tokens: list[str]) -> list:
     """``clauses`` with a road user following the ego ("a bus is following us", "tailgating me",
-    "follows the ego") read as following it from behind: the ego as the object of a verb of following
-    said of a road user is what it follows, so it starts behind the ego and keeps to its speed."""
+    "follows the ego", "following behind us") read as following it from behind: the ego as the object
+    of a verb of following said of a road user is what it follows, so it starts behind the ego and
+    keeps to its speed."""
     out = []
     for link, mentions in clauses:
         kept: list = []
@@ -909,9 +1076,8 @@ def follows_the_ego(clauses: list, tokens: list[str]) -> list:
             if (
                 _a_following(m)
                 and nxt is not None
-                and nxt.slot == "actor"
-                and nxt.value == "ego"
-                and all(t in ("the", "a") for t in tokens[m.end : nxt.start])
+                and (_the_ego(nxt) or _behind_the_ego(nxt, mentions[k + 2] if k + 2 < len(mentions) else None))
+                and all(t in ("the", "a") or "ADV" in lemmas(t) for t in tokens[m.end : nxt.start])
                 and subject is not None
                 and subject.value != "ego"
             ):

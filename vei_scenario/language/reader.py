@@ -49,6 +49,7 @@ from vei_scenario.language.motion import (
     out_to_overtake,
     outcome_not_behaviour,
     participle_of_state,
+    turn_across_side,
 )
 from vei_scenario.language.ncap import rewrite as ncap_rewrite
 from vei_scenario.language.normalise import normalise
@@ -336,8 +337,11 @@ _BETWEEN = {"does", "do", "did", "will", "would", "is", "are", "was", "were", "c
             "manages"}  # fmt: skip
 #: What a road user does instead of a behaviour it is said not to do: one that does not give way goes
 #: (as "fails to yield" reads), one that does not stop, brake or slow carries on, one that does not go
-#: on stops; any other denied behaviour leaves it carrying on.
-_DENIED = {"give_way": ("cut_in", {}), "keep_going": ("stop", {}), "cross_in_front": ("stop", {})}
+#: on stops; not crossing is holding back for the ego, giving way; any other denied behaviour leaves
+#: it carrying on.
+_DENIED = {"give_way": ("cut_in", {}), "keep_going": ("stop", {}), "cross_in_front": ("give_way", {})}
+#: Denied behaviours whose denial holds the road user back: it does not go on.
+_HELD_BACK = frozenset(("keep_going", "cross_in_front"))
 
 
 def _denied(tokens: list[str], i: int) -> bool:
@@ -533,6 +537,8 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
 
     i = 0
     while i < len(tokens):
+        if (split := motion.manner_compound(tokens, i, _specific_behaviour)) is not None:
+            tokens[i : i + 1] = split  # ("hard-brakes": "brakes hard")
         tok = tokens[i]
         j = i - 1  # the word before, past a determiner ("in front of the ego": "of")
         while j > 0 and tokens[j] in _DETERMINERS:
@@ -749,7 +755,8 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
                 slot, value = "speed_word", V.SPEED_WORDS[said]  # "the truck is slow"
         if slot == "behaviour" and _denied(tokens, i) and key[0] not in _NEGATORS:
             name, cfg = _DENIED.get(value[0], ("keep_going", {}))  # ("does not stop": it carries on)
-            value = (name, {**cfg, "_denied": 1.0} if value[0] != "keep_going" else {**cfg, "_still": 1.0})
+            held = {**cfg, "_still": 1.0} if value[0] == "keep_going" else cfg
+            value = (name, {**cfg, "_denied": 1.0} if value[0] not in _HELD_BACK else held)
         used = len(key) + (1 if adverb or toward_at else 0)
         words = " ".join(tokens[i : i + used])
         nxt = tokens[i + used] if i + used < len(tokens) else ""
@@ -757,8 +764,8 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
         if slot == "behaviour" and value[0] in _SIDEWAYS and toward_at is None and nxt in ("left", "right"):
             if after not in _RIGHT_BEFORE:  # "merges right from the middle lane" (not "cuts in right in front")
                 toward_at = i + used
-        if slot in ("sequence", "parallel") and det:
-            i += used  # "from the next entry": a word of order before a noun, no new clause
+        if slot in ("sequence", "parallel") and (det or tokens[i + used : i + used + 1] == ["to"]):
+            i += used  # "from the next entry", "next to me": a word of order before a noun or "to", no new clause
             continue
         if slot in ("sequence", "parallel"):
             clauses.append((slot, [_Mention("link", slot, words, i, prev, end=i + used)]))
@@ -773,6 +780,12 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             used = max(used, toward_at + 1 - i)
         i += used
     return [c for c in clauses if any(m.slot not in ("punct", "link") for m in c[1])], ignored, read_as, tokens
+
+
+def _specific_behaviour(tokens: list[str], i: int) -> int:
+    """How many words from ``tokens[i]`` the lexicon reads as a behaviour other than going on (0: none)."""
+    key = _best(tokens, i)
+    return len(key) if key and TABLE[key][0] == "behaviour" and TABLE[key][1][0] != "keep_going" else 0
 
 
 #: Verbs that with "to" say what someone must do ("it has to brake": a requirement, said of the ego).
@@ -1069,7 +1082,7 @@ def read(text: str) -> Reading:
     words); raise :class:`~vei_scenario.language.reading.NotUnderstood` naming what cannot be placed."""
     clauses, ignored, read_as, scanned = scan(text)
     clauses = sides.narrator_lane(sides.relate_headings(clauses))
-    clauses = out_of_a_side_road(destinations_not_origins(outcome_not_behaviour(_drop_label(clauses))))
+    clauses = out_of_a_side_road(destinations_not_origins(outcome_not_behaviour(_drop_label(clauses))), scanned)
     tokens = _tokens(text)
     said = " ".join(tokens)  # (the whole text as the reader reads it, for what is stated of it as a whole)
     clauses = out_to_overtake(participle_of_state(give_the_ego_the_way(into_the_ego_lane(clauses, scanned), scanned)))
@@ -1780,7 +1793,7 @@ def read(text: str) -> Reading:
             a.speed_mps = -V.SPEED_WORDS["fast"]
         spec.distance_m = a.distance_m
         spec.speed_mps = 0.0 if a.stationary and a.speed_mps is None else a.speed_mps
-        _specialise(a, spec, junction)
+        _specialise(a, spec, junction, turn_across_side(tokens))
         r.actors.append(spec)
     for a, spec in zip(actors, r.actors):  # what an oncoming car overtakes comes towards the ego too
         k = next((k for k, x in enumerate(actors) if x is a.object_of), None)
@@ -1796,7 +1809,7 @@ def read(text: str) -> Reading:
     apply_manner(stated_manner(tokens), r.actors)  # (the scales of closeness, margin and timing)
     for spec in r.actors:
         spec.behaviours = _one_act_once(spec)
-        spec.behaviours = one_path(spec, said)
+        spec.behaviours = one_path(spec, said, turn_across_side(tokens))
     if r.map_kind is None and any(s.relation == "junction_opposite" for s in r.actors):
         r.map_kind = "crossroad"
     r.ego_speed_mps = ego_said if ego_said is not None else r.ego_speed_mps
@@ -1971,7 +1984,7 @@ RIDERS = ("bicycle", "e-scooter")
 PASSIVE_AUXILIARIES = {"is", "are", "was", "were", "be", "been", "being", "get", "gets", "got", "getting"}
 
 
-def _specialise(a: _Actor, spec: ActorSpec, junction: bool) -> None:
+def _specialise(a: _Actor, spec: ActorSpec, junction: bool, across: str = "left") -> None:
     """The behaviours that what was said around the verbs makes specific: a left turn by someone
     coming the other way is a turn across the ego's path; pulling out of a side road is turning into
     the ego's road; a vehicle driving at the ego in its lane is a wrong-way driver; a walker or rider
@@ -1984,12 +1997,18 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool) -> None:
     towards = "oncoming" in a.said or spec.relation in ("oncoming", "junction_opposite") or a.kerb_side == "left"
     if (
         first == "forced_turn"
-        and spec.behaviours[0][1].get("turn") == "left"
+        and spec.behaviours[0][1].get("turn") == across  # (left; right where traffic keeps left)
         and (spec.relation in ("oncoming", "junction_opposite") or "oncoming" in a.said)
     ):
         spec.relation = "junction_opposite"
         same = ("cut_in", "cross_in_front", "run_red_light", "keep_going")  # ("... and crossed into our path")
         spec.behaviours = [("turn_across", {}, crit, link)] + [b for b in spec.behaviours[1:] if b[0] not in same]
+        return
+    if a.kind != "pedestrian" and motion.comes_head_on(names, a.wrong_way, a.said):
+        # (a vehicle seen coming from the other way drifts over into the ego's lane; a rider rides in it)
+        in_lane = a.kind in RIDERS or sides.starts_in_ego_lane(a.said)
+        spec.behaviours = [("wrong_way", {}, crit, link)]
+        spec.relation, spec.facing = ("ahead", "against") if in_lane else ("oncoming", None)
         return
     if (
         junction
@@ -2019,7 +2038,7 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool) -> None:
         and not junction
         and (
             a.wrong_way
-            or ("ahead" in a.said and towards)
+            or ("ahead" in a.said and towards and "keep_lane" not in names)  # (not "keeps to its lane")
             or (towards and first in ("cut_in", "change_lane"))
             or (spec.relation == "oncoming" and first == "overtake")  # (overtaking into the ego's lane)
         )
@@ -2420,6 +2439,8 @@ def _apply(m, who, r, link, added) -> None:
             a.said.add("in_front")  # "cuts in 10 m ahead": where it cuts in, not where it starts
         elif m.slot == "relation":
             a.said.add(m.value)
+            if m.value == "ahead" and motion.in_the_ego_lane(m.words):
+                a.said.add("in_ego_lane")  # ("in my lane": not only in front, in the ego's own lane)
             a.followed = a.followed or (m.value == "ahead" and m.words in ("following", "tailing"))
             if a.relation is None or m.value == "oncoming":
                 a.relation = m.value

@@ -109,12 +109,39 @@ def drives_on_left(tokens: list[str]) -> bool:
     ("a lorry in the inside lane drifted into me"). A test line ("a lorry in the nearside lane cuts in
     ahead of the AV") or metric speeds follow Euro NCAP's convention, a right-hand one, whatever
     their words."""
+    stated = stated_traffic_side(tokens)
+    if stated is not None:
+        return stated == "left"
     words = set(tokens)
     if "mph" in words:
         return not words & _RIGHT_HAND_WORDS
     if words & _METRIC_SPEEDS:
         return False
     return _motorway_number(tokens) or bool(words & _LEFT_HAND_WORDS and words & _FIRST_PERSON)
+
+
+#: Words after "on the left/right" that make it a lane or a place, not the side traffic keeps to.
+_A_PLACE_AFTER = frozenset(("lane", "lanes", "side", "kerb", "curb", "verge", "shoulder", "edge", "hand", "of", "arm"))
+_DRIVE_WORDS = frozenset(("drive", "driving", "drives", "drove", "keep", "keeps", "keeping", "traffic", "ride"))
+
+
+def stated_traffic_side(tokens: list[str]) -> str | None:
+    """The side traffic keeps to where the writer says it outright ("we drive on the left", "driving
+    on the right", "left-hand traffic", "UK layout"), else None: a statement outweighs any guess from
+    units or road words (a British writer may give speeds in km/h). "Driving on the left lane" names
+    a lane, no traffic side."""
+    for k, w in enumerate(tokens):
+        if w in ("left", "right") and k >= 2 and tokens[k - 1] == "the" and tokens[k - 2] == "on":
+            after = tokens[k + 1] if k + 1 < len(tokens) else ""
+            if k >= 3 and tokens[k - 3] in _DRIVE_WORDS and after not in _A_PLACE_AFTER and after != "-":
+                return w
+        if w in ("left-hand", "right-hand") and tokens[k + 1 : k + 2] in (["traffic"], ["drive"], ["driving"]):
+            return w.split("-")[0]
+        if w in ("left", "right") and tokens[k + 1 : k + 4] in (["-", "hand", "traffic"], ["hand", "traffic"]):
+            return w
+        if w == "uk" and tokens[k + 1 : k + 2] in ([], ["layout"], ["rules"], ["."], [","], [")"]):
+            return "left"  # ("(UK)", "UK layout": the country said as the traffic's rules, not "a UK lorry")
+    return None
 
 
 def _motorway_number(tokens: list[str]) -> bool:
