@@ -522,7 +522,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
     tokens, dropped = discourse.resolve(tokens, _kind_at, _known, proper_names(text))  # (who is who; words out)
     dropped = framed + dropped
     ignored: list[str] = [w for w in dropped if w not in FUNCTION_WORDS and w.isalpha()]
-    left_hand, ring = sides.drives_on_left(tokens), "roundabout" in tokens
+    left_hand, ring = sides.drives_on_left(tokens, text), "roundabout" in tokens
 
     def ending_at(k: int) -> int | None:  # the start of the road-user mention whose last word is token k
         return next(

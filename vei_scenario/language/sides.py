@@ -22,6 +22,7 @@ Conventions:
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, replace
 
 #: Side words that name a side outright.
@@ -102,13 +103,66 @@ _METRIC_SPEEDS = frozenset({"km/h", "kph", "m/s"})
 _FIRST_PERSON = frozenset({"i", "me", "my", "mine", "we", "us", "our", "ours"})
 
 
-def drives_on_left(tokens: list[str]) -> bool:
-    """Whether the writer drives on the left: speeds in miles per hour without American road words
-    (the reader's normaliser writes every "miles an hour" as "mph"); or, with no metric speed, a
-    motorway named as Britain's ("the M25"), or a driver telling their own drive in British road words
-    ("a lorry in the inside lane drifted into me"). A test line ("a lorry in the nearside lane cuts in
-    ahead of the AV") or metric speeds follow Euro NCAP's convention, a right-hand one, whatever
-    their words."""
+#: Countries and cities whose traffic keeps left, and keeps right: named outright ("it's Ireland after
+#: all", "UK layout", "a rental in Spain"), the place says the writer's side, whatever the speed unit
+#: (Ireland, Australia and India give km/h and keep left). Nouns only: an adjective names a make or a
+#: language as often as a place ("a Japanese hatchback", "my English is not good").
+_KEEPS_LEFT = (
+    "UK", "U.K.", "United Kingdom", "Britain", "Great Britain", "England", "Scotland", "Wales", "Ireland",
+    "Northern Ireland", "Australia", "New Zealand", "South Africa", "Japan", "India", "Pakistan", "Bangladesh",
+    "Sri Lanka", "Nepal", "Singapore", "Malaysia", "Indonesia", "Thailand", "Hong Kong", "Kenya", "Uganda",
+    "Tanzania", "Zambia", "Zimbabwe", "Botswana", "Namibia", "Jamaica", "Cyprus", "Malta", "Mauritius",
+    "London", "Dublin", "Edinburgh", "Glasgow", "Cardiff", "Belfast", "Melbourne", "Brisbane", "Auckland",
+    "Johannesburg", "Cape Town", "Tokyo", "Osaka", "Mumbai", "Delhi", "Bangalore", "Bengaluru", "Chennai",
+    "Kolkata", "Karachi", "Dhaka", "Nairobi", "Kuala Lumpur",
+)  # fmt: skip
+_KEEPS_RIGHT = (
+    "US", "U.S.", "USA", "U.S.A.", "United States", "America", "Canada", "Mexico", "France", "Germany", "Spain",
+    "Italy", "Portugal", "Netherlands", "Belgium", "Switzerland", "Austria", "Poland", "Sweden", "Norway",
+    "Denmark", "Finland", "Greece", "China", "Korea", "Brazil", "Argentina", "Chile", "Turkey", "Israel",
+    "Paris", "Berlin", "Munich", "Madrid", "Barcelona", "Rome", "Milan", "Amsterdam", "Toronto", "Vancouver",
+    "Montreal", "New York", "Los Angeles", "Chicago", "California", "Texas", "Florida",
+)  # fmt: skip
+#: Upper case only: "US" the country, never "us" the pronoun.
+_CASED = frozenset({"US", "UK", "USA"})
+
+
+def _place_pattern(names: tuple[str, ...]) -> re.Pattern:
+    cased = "|".join(re.escape(n) for n in names if n in _CASED)
+    other = "|".join(re.escape(n) for n in sorted(names, key=len, reverse=True) if n not in _CASED)
+    return re.compile(rf"(?<![\w.])(?:{cased}|(?i:{other}))(?![\w-])")
+
+
+_LEFT_PLACES, _RIGHT_PLACES = _place_pattern(_KEEPS_LEFT), _place_pattern(_KEEPS_RIGHT)
+#: The convention said in words: "left-hand traffic", "we drive on the left", "traffic keeps right".
+_CONVENTION = re.compile(
+    r"\b(left|right)[- ]hand traffic\b"
+    r"|\b(?:we|you|they|people|everyone|traffic|cars|drivers)\s+(?:drive|drives|keep|keeps)\s+(?:on\s+the\s+)?"
+    r"(left|right)\b(?!\s*[- ]?(?:lane|lanes|kerb|curb|verge|shoulder|pavement|sidewalk|footway|arm|turn|exit)\b)",
+    re.IGNORECASE,
+)
+
+
+def stated_side(text: str) -> str | None:
+    """The side traffic keeps to, when the writer says it ("left-hand traffic", "we drive on the left")
+    or names where the road is ("Dublin", "a UK layout", "US city street"); None when neither is said,
+    or places of both conventions are named (a holiday abroad: the other cues decide)."""
+    if m := _CONVENTION.search(text):
+        return (m.group(1) or m.group(2)).lower()
+    left, right = bool(_LEFT_PLACES.search(text)), bool(_RIGHT_PLACES.search(text))
+    return "left" if left and not right else "right" if right and not left else None
+
+
+def drives_on_left(tokens: list[str], text: str = "") -> bool:
+    """Whether the writer drives on the left: said outright (:func:`stated_side`); else speeds in miles
+    per hour without American road words (the reader's normaliser writes every "miles an hour" as
+    "mph"); or, with no metric speed, a motorway named as Britain's ("the M25"), or a driver telling
+    their own drive in British road words ("a lorry in the inside lane drifted into me"). A test line
+    ("a lorry in the nearside lane cuts in ahead of the AV") or metric speeds follow Euro NCAP's
+    convention, a right-hand one, whatever their words."""
+    said = stated_side(text)
+    if said is not None:
+        return said == "left"
     words = set(tokens)
     if "mph" in words:
         return not words & _RIGHT_HAND_WORDS
