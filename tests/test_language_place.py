@@ -36,6 +36,7 @@ def _tokens(text: str) -> list[str]:
         "Left-hand traffic please. Ego at 40 km/h on a two-lane road.",
         "Based in Mumbai: ego at 30 km/h and an auto-rickshaw in the inside lane.",
         "Japan, city street, 30 km/h, cyclist on the nearside.",
+        "Rural road, driving on the left, 70 km/h; a tractor on the nearside.",
     ],
 )
 def test_a_place_or_convention_of_left_hand_traffic_said_outright(text):
@@ -53,6 +54,7 @@ def test_a_place_or_convention_of_left_hand_traffic_said_outright(text):
         "On holiday in France, 50 mph, a cyclist on my inside.",
         # near misses: words that only look like a place or a convention
         "The van drove on the left lane at 60 km/h.",
+        "A car driving on the left of us at 60 km/h cuts in.",
         "My English is not good: ego 30 km/h, a bike on the inside.",
         "A Japanese hatchback in the nearside lane, ego 50 km/h.",
     ],
@@ -81,3 +83,84 @@ def test_two_places_of_different_conventions_say_nothing_of_the_side():
 )
 def test_a_left_hand_place_sets_the_inside(text, expected):
     assert _side_started(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Doing 25 mph, a courier on a moped shot past the test car on the inside and cut in front of us.",
+        "At 30 km/h an e-scooter went past our van on the outside, then pulled in ahead of it.",
+        "At 40 mph a motorbike flew past my car on the inside and swerved in right in front.",
+    ],
+)
+def test_one_that_goes_past_the_ego_on_a_side_comes_from_behind(text):
+    """ "past the ego on the inside": the verb's particle is said before its object, and the side after."""
+    assert relation(text) == "behind"
+
+
+def test_a_side_said_after_a_clause_break_is_no_overtake_from_behind():
+    assert relation("At 20 mph, a cyclist up ahead, on the inside, keeps riding.") != "behind"
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # the far kerb is across the road: the left one where traffic keeps right, the right one where it keeps left
+        ("Ego 50 km/h. A tractor along the left verge is coming towards us.", "oncoming"),
+        ("Doing 40 mph, a tractor along the right verge was coming towards us.", "oncoming"),
+        ("In Ireland at 60 km/h, a lorry hugging the right kerb came towards us.", "oncoming"),
+    ],
+)
+def test_a_vehicle_at_the_far_kerb_comes_the_other_way(text, expected):
+    assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Doing 40 mph, a tractor along the left verge slows down.",
+        "In Ireland at 60 km/h, a van tucked in at the left kerb slows down.",
+    ],
+)
+def test_a_vehicle_at_the_near_kerb_of_a_left_hand_writer_goes_the_egos_way(text):
+    assert relation(text) != "oncoming"
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # no side said: the kerb a rider rides along or a walker steps off is the writer's near one
+        ("Doing 20 mph, a cyclist riding along the kerb ahead suddenly swerves into my path.", "left"),
+        ("In Dublin at 30 km/h, a boy stepped off the kerb right in front of us.", "left"),
+        ("Ego at 30 km/h; a boy steps off the kerb right in front of the car.", "right"),
+        ("Doing 25 mph, a cyclist rode along the kerb ahead of me on our side of the road.", "left"),
+    ],
+)
+def test_a_kerb_with_no_side_said_is_the_near_one(text, expected):
+    assert _side_started(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist riding along the kerb ahead swerves into my lane. I was at 30 km/h.",
+        "Ego 45 km/h; an e-scooter in the bike lane pulls out into our lane.",
+        "We do 40 km/h and a cyclist at the kerb cuts into our lane at 15 km/h.",
+    ],
+)
+def test_a_rider_at_the_kerb_who_swerves_in_rides_along_it_first_and_plays(text, tmp_path):
+    """A rider at the kerb (no side said: the near one) keeps its pace before it swerves into the ego's
+    lane, and the scenario plays: it starts on the kerb lane's edge and ends ahead in the ego's lane."""
+    from vei_scenario.interpreter import run_scenario
+    from vei_scenario.language.corpus_check import played_problems
+    from vei_scenario.language.rules_backend import layers_from_text
+    from vei_scenario.language.scenario_writer import write_scenario
+
+    layers = layers_from_text(text, 0)
+    adv = layers["adversaries"][0]
+    assert adv["spawn"]["relation"] == "roadside_right" and adv["speed_mps"] > 1.0
+    written = write_scenario(layers, "scenario")
+    (tmp_path / "scenario.xosc").write_bytes(written.xosc)
+    (tmp_path / "scenario.xodr").write_bytes(written.xodr)
+    result = run_scenario(tmp_path / "scenario.xosc", None, round(1.0 / float(layers["rate_hz"]), 6))
+    assert played_problems(result, layers) == []

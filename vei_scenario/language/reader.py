@@ -1007,8 +1007,11 @@ def _ego_following(clauses):
     return [(link, mentions[:first] + [ahead] + mentions[first + 1 :])] + clauses[1:], True
 
 
-def _resolve_relation(a: _Actor, map_kind: str | None) -> str | None:
-    """The spawn relation of an actor from what was said about where it is and what it does first."""
+def _resolve_relation(a: _Actor, map_kind: str | None, left_hand: bool = False) -> str | None:
+    """The spawn relation of an actor from what was said about where it is and what it does first.
+    A kerb with no side said is the writer's near one (the left where traffic keeps left), and a
+    vehicle at the far kerb drives the other way (:func:`sides.near_and_far`)."""
+    near, far = sides.near_and_far(left_hand)
     first = a.behaviours[0][0] if a.behaviours else None
     junction = map_kind in ("crossroad", "roundabout")
     vehicle = a.kind in VEHICLES
@@ -1016,14 +1019,14 @@ def _resolve_relation(a: _Actor, map_kind: str | None) -> str | None:
     if first == "cross_in_front" and not vehicle:  # a crossing starts at a kerb (at a junction too)
         if side is None and a.relation and a.relation.startswith(("junction", "roadside")):
             side = a.relation.rsplit("_", 1)[1]
-        return f"roadside_{side if side in ('left', 'right') else 'right'}"
+        return f"roadside_{side if side in ('left', 'right') else near}"
     if a.relation and a.relation.startswith(("junction", "roadside")):
         return a.relation
     rides = a.kind != "pedestrian"  # (a rider at a junction takes the road as a vehicle does)
     if first == "give_way" or (junction and rides and a.goes_on and first == "cut_in" and a.relation != "oncoming"):
         # lets the ego pass (or is said not to): where their paths meet, in a side road or at the kerb
         where = "junction" if vehicle or (junction and not a.kerb) else "roadside"
-        return f"{where}_{side if side in ('left', 'right') else 'right'}"
+        return f"{where}_{side if side in ('left', 'right') else near}"
     if junction and a.arm and side in ("left", "right"):
         return f"junction_{side}"  # from the side road on the left: that arm, even if it approaches
     on_the_road = a.came_from and rides and not (a.kerb or a.kerb_side or a.lane_side)
@@ -1035,7 +1038,7 @@ def _resolve_relation(a: _Actor, map_kind: str | None) -> str | None:
         return "ahead"  # the ego follows it in its lane: it pulls out of it, to the side said
     if a.relation == "oncoming" or (a.relation == "behind" and not ((a.lane_side or a.side) and first == "cut_in")):
         return a.relation
-    if vehicle and a.kerb_side == "left" and first != "cross_in_front":
+    if vehicle and a.kerb_side == far and first != "cross_in_front":
         return "oncoming"  # a vehicle on the far side of the road drives the other way
     if (
         junction
@@ -1055,8 +1058,9 @@ def _resolve_relation(a: _Actor, map_kind: str | None) -> str | None:
     ):
         return f"junction_{side or 'left'}"
     lateral = first in ("cut_in", "overtake", "forced_turn", "follow_vehicle")
-    if a.kerb and not vehicle and not (lateral and first != "forced_turn"):
-        return f"roadside_{side or 'right'}"  # (a rider cutting in from the kerb or cycle lane: from that lane)
+    if a.kerb and not vehicle and (not (lateral and first != "forced_turn") or side is None):
+        # (a rider cutting in from the kerb or cycle lane of a side said: from that lane)
+        return f"roadside_{side or near}"
     if side and (lateral or a.relation is None or a.lane_side):
         return side
     return a.relation or side or ("ahead" if a.followed else None)  # (the lead car: ahead in the ego's lane)
@@ -1735,7 +1739,7 @@ def read(text: str) -> Reading:
         if a.kind in VULNERABLE and crossing_at and before <= {"keep_going", "stop", "along_road", "keep_lane"}:
             behaviours = behaviours[crossing_at:]  # ("... stops; then crosses from the left"): from the kerb
         a.behaviours = behaviours
-        spec.relation = _resolve_relation(a, r.map_kind)
+        spec.relation = _resolve_relation(a, r.map_kind, sides.drives_on_left(scanned, text))
         if (
             junction
             and spec.relation in ("junction_left", "junction_right")

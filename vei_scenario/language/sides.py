@@ -138,7 +138,9 @@ _LEFT_PLACES, _RIGHT_PLACES = _place_pattern(_KEEPS_LEFT), _place_pattern(_KEEPS
 _CONVENTION = re.compile(
     r"\b(left|right)[- ]hand traffic\b"
     r"|\b(?:we|you|they|people|everyone|traffic|cars|drivers)\s+(?:drive|drives|keep|keeps)\s+(?:on\s+the\s+)?"
-    r"(left|right)\b(?!\s*[- ]?(?:lane|lanes|kerb|curb|verge|shoulder|pavement|sidewalk|footway|arm|turn|exit)\b)",
+    r"(left|right)\b(?!\s*[- ]?(?:lane|lanes|kerb|curb|verge|shoulder|pavement|sidewalk|footway|arm|turn|exit)\b)"
+    r"|(?:^|[.,;:(]\s*)driving\s+on\s+the\s+(left|right)(?:[- ]hand)?(?:\s+side)?(?:\s+of\s+the\s+road)?"
+    r"\s*(?=[.,;:)]|$)",
     re.IGNORECASE,
 )
 
@@ -148,7 +150,7 @@ def stated_side(text: str) -> str | None:
     or names where the road is ("Dublin", "a UK layout", "US city street"); None when neither is said,
     or places of both conventions are named (a holiday abroad: the other cues decide)."""
     if m := _CONVENTION.search(text):
-        return (m.group(1) or m.group(2)).lower()
+        return next(g for g in m.groups() if g).lower()
     left, right = bool(_LEFT_PLACES.search(text)), bool(_RIGHT_PLACES.search(text))
     return "left" if left and not right else "right" if right and not left else None
 
@@ -169,6 +171,12 @@ def drives_on_left(tokens: list[str], text: str = "") -> bool:
     if words & _METRIC_SPEEDS:
         return False
     return _motorway_number(tokens) or bool(words & _LEFT_HAND_WORDS and words & _FIRST_PERSON)
+
+
+def near_and_far(left_hand: bool) -> tuple[str, str]:
+    """(near, far) kerb of a writer's road: the kerb side is the left where traffic keeps left. A kerb
+    said with no side ("rode along the kerb", "stepped off the kerb") is the near one."""
+    return ("left", "right") if left_hand else ("right", "left")
 
 
 def _motorway_number(tokens: list[str]) -> bool:
@@ -354,10 +362,26 @@ def _bare_ring_side(tokens: list[str], i: int, j: int, prep: str, left_hand: boo
     near, far = ("left", "right") if left_hand else ("right", "left")
     # "came up the inside", "coming up on my inside", "went past on the outside": it comes from behind
     # (the verb's particle said before: "came up on my inside", "went past me on the outside")
-    behind = (("relation", "behind"),) if prep in _FROM_BEHIND or set(tokens[max(0, i - 2) : i]) & _FROM_BEHIND else ()
+    behind = (("relation", "behind"),) if prep in _FROM_BEHIND or _particle_before(tokens, i) else ()
     if word == "inside":  # (by the kerb: a rider there rides at its edge)
         return Said(j, end, prep, (("kerb", None), ("lane_side", near), *behind))
     return Said(j, end, prep, (("lane_side", far), *behind))
+
+
+#: Words of the object between a verb's particle and the side ("came past the test car on the inside").
+_OBJECT_WORDS = frozenset({"me", "us", "him", "her", "them", "it", "ego", "car", "van", "vehicle", "bus", "truck"})
+
+
+def _particle_before(tokens: list[str], i: int) -> bool:
+    """Whether "up" or "past" ends the verb before token ``i``, right before it or before the verb's
+    object ("came up on my inside", "went past me on the outside", "shot past the ego on the inside");
+    never across a clause ("up ahead, on the inside")."""
+    for k in range(i - 1, max(-1, i - 5), -1):
+        if tokens[k] in _FROM_BEHIND:
+            return True
+        if tokens[k] not in _OBJECT_WORDS and tokens[k] not in _DETERMINERS:
+            return False
+    return False
 
 
 #: Nouns "inside"/"outside" qualify as side words ("the outside lane", "its inside wheel").
