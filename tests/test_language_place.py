@@ -164,3 +164,22 @@ def test_a_rider_at_the_kerb_who_swerves_in_rides_along_it_first_and_plays(text,
     (tmp_path / "scenario.xodr").write_bytes(written.xodr)
     result = run_scenario(tmp_path / "scenario.xosc", None, round(1.0 / float(layers["rate_hz"]), 6))
     assert played_problems(result, layers) == []
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Doing 15 mph past the shops, a cyclist nipped up the inside of me and kept going.",
+        "At 10 km/h in the queue, an e-scooter came up on our inside along the kerb and rode on.",
+        "Crawling at 8 mph when a cyclist rolled up behind me on the left and carried on.",
+    ],
+)
+def test_one_going_along_the_road_from_behind_starts_behind_and_comes_up(text):
+    """The layers keep a rider going along the road where the reader put it: behind the ego, and
+    faster than it (it comes up), not ahead of it."""
+    from vei_scenario.language.rules_backend import layers_from_text
+
+    for seed in (0, 1):
+        adv = layers_from_text(text, seed)["adversaries"][0]
+        assert adv["spawn"]["relation"] == "behind" and adv["spawn"]["longitudinal_m"] < 0
+        assert adv["speed_mps"] > layers_from_text(text, seed)["ego"]["speed_mps"]

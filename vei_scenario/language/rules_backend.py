@@ -186,7 +186,10 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
             facing = None  # it starts in its own lane and drifts over
         if facing == "against":
             spawn["facing"] = "against"
-        if first.NAME == "along_road" and spec.distance_m is None:
+        if first.NAME == "along_road" and spec.distance_m is None and spawn["relation"] == "behind":
+            closing = max(speed - ego_speed, 1.0)  # (it comes up on the ego within a few seconds)
+            spawn["longitudinal_m"] = -round(min(max(closing * _u(rng, 3.0, 5.0), 8.0), 40.0), 3)
+        elif first.NAME == "along_road" and spec.distance_m is None:
             closing = ego_speed + speed if facing == "against" else max(ego_speed - speed, 1.0)
             spawn["longitudinal_m"] = round(min(max(closing * _u(rng, 4.0, 6.0), 20.0), 200.0), 3)
         speed = min(max(speed, 0.0), MAX_SPEED_MPS)  # (within what the layers hold)
@@ -447,6 +450,11 @@ def _place_adversary(
         from vei_scenario.language.behaviours.along_road import PACE_MPS
 
         pace = PACE_MPS.get(kind, 4.0) if speed is None else speed
+        if relation == "behind":  # coming up from behind ("came up the inside along the kerb"): faster
+            if speed is None:
+                pace = max(pace, min(ego_speed + COMES_UP_MPS, TYPES[kind][3]))
+            spawn["longitudinal_m"] = -(distance_m if distance_m is not None else 20.0)
+            return spawn, round(pace, 3)
         spawn["relation"] = "ahead"
         spawn["longitudinal_m"] = distance_m if distance_m is not None else 40.0
         return spawn, round(pace, 3)
@@ -492,6 +500,9 @@ def _place_adversary(
     return spawn, round(out_speed, 3)
 
 
+#: How much faster than the ego one going along the road that comes up from behind rides, when its
+#: speed is not said (m/s; within its own top speed).
+COMES_UP_MPS = 2.0
 #: Riders who ride along the kerb or in a cycle lane before they swerve into the road (a walker there
 #: stands: what it does into the road is a crossing).
 RIDERS_AT_KERB = ("bicycle", "e-scooter")
