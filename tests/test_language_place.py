@@ -141,14 +141,17 @@ def test_a_kerb_with_no_side_said_is_the_near_one(text, expected):
 
 
 @pytest.mark.parametrize(
-    "text",
+    "text, side",
     [
-        "A cyclist riding along the kerb ahead swerves into my lane. I was at 30 km/h.",
-        "Ego 45 km/h; an e-scooter in the bike lane pulls out into our lane.",
-        "We do 40 km/h and a cyclist at the kerb cuts into our lane at 15 km/h.",
+        ("A cyclist riding along the kerb ahead swerves into my lane. I was at 30 km/h.", "right"),
+        ("Ego 45 km/h; an e-scooter in the bike lane pulls out into our lane.", "right"),
+        ("We do 40 km/h and a cyclist at the kerb cuts into our lane at 15 km/h.", "right"),
+        # a writer who keeps left: the near kerb is the left one, and the rider rides the ego's way there
+        ("Doing 20 mph, a cyclist riding along the kerb ahead suddenly swerves into my path.", "left"),
+        ("In Dublin at 30 km/h an e-scooter riding by the kerb pulls out into our lane.", "left"),
     ],
 )
-def test_a_rider_at_the_kerb_who_swerves_in_rides_along_it_first_and_plays(text, tmp_path):
+def test_a_rider_at_the_kerb_who_swerves_in_rides_along_it_first_and_plays(text, side, tmp_path):
     """A rider at the kerb (no side said: the near one) keeps its pace before it swerves into the ego's
     lane, and the scenario plays: it starts on the kerb lane's edge and ends ahead in the ego's lane."""
     from vei_scenario.interpreter import run_scenario
@@ -158,7 +161,7 @@ def test_a_rider_at_the_kerb_who_swerves_in_rides_along_it_first_and_plays(text,
 
     layers = layers_from_text(text, 0)
     adv = layers["adversaries"][0]
-    assert adv["spawn"]["relation"] == "roadside_right" and adv["speed_mps"] > 1.0
+    assert adv["spawn"]["relation"] == f"roadside_{side}" and adv["speed_mps"] > 1.0
     written = write_scenario(layers, "scenario")
     (tmp_path / "scenario.xosc").write_bytes(written.xosc)
     (tmp_path / "scenario.xodr").write_bytes(written.xodr)
@@ -183,3 +186,34 @@ def test_one_going_along_the_road_from_behind_starts_behind_and_comes_up(text):
         adv = layers_from_text(text, seed)["adversaries"][0]
         assert adv["spawn"]["relation"] == "behind" and adv["spawn"]["longitudinal_m"] < 0
         assert adv["speed_mps"] > layers_from_text(text, seed)["ego"]["speed_mps"]
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # a bare nearside / offside said of a driver is the lane on that side; of a walker, that kerb
+        ("Doing 50 mph, a car on the offside drifted into my lane.", "right"),
+        ("At 60 km/h a van on the nearside came across into our lane.", "right"),
+        ("Doing 40 mph when a hatchback on the nearside swerved into me.", "left"),
+    ],
+)
+def test_a_bare_near_or_offside_of_a_driver_is_a_lane_beside_the_ego(text, expected):
+    assert relation(text) == expected
+
+
+def test_a_bare_offside_of_a_walker_is_still_the_far_kerb():
+    assert relation("At 25 mph a jogger stepped off the offside straight in front of me.") == "roadside_right"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Doing 20 mph, a cyclist at the right kerb pulls out into my lane to pass a parked van.",
+        "In London at 30 km/h, an e-scooter in the cycle lane on our right cuts into our lane.",
+    ],
+)
+def test_a_rider_at_the_kerb_who_swerves_in_goes_the_egos_way(text):
+    """A rider at a kerb swerving into the ego's lane rides beside it, not against it, for a writer who
+    keeps left too: the right kerb is said of where it is, not of the traffic across the road."""
+    actor = read(text).actors[0]
+    assert actor.relation in ("right", "roadside_right") and actor.behaviours[0][0] != "wrong_way"

@@ -1038,7 +1038,7 @@ def _resolve_relation(a: _Actor, map_kind: str | None, left_hand: bool = False) 
         return "ahead"  # the ego follows it in its lane: it pulls out of it, to the side said
     if a.relation == "oncoming" or (a.relation == "behind" and not ((a.lane_side or a.side) and first == "cut_in")):
         return a.relation
-    if vehicle and a.kerb_side == far and first != "cross_in_front":
+    if vehicle and a.kerb_side == far and not a.lane_side and first != "cross_in_front":
         return "oncoming"  # a vehicle on the far side of the road drives the other way
     if (
         junction
@@ -1762,7 +1762,7 @@ def read(text: str) -> Reading:
             a.speed_mps = -V.SPEED_WORDS["fast"]
         spec.distance_m = a.distance_m
         spec.speed_mps = 0.0 if a.stationary and a.speed_mps is None else a.speed_mps
-        _specialise(a, spec, junction)
+        _specialise(a, spec, junction, sides.drives_on_left(scanned, text))
         r.actors.append(spec)
     for a, spec in zip(actors, r.actors):  # what an oncoming car overtakes comes towards the ego too
         k = next((k for k, x in enumerate(actors) if x is a.object_of), None)
@@ -1953,7 +1953,7 @@ RIDERS = ("bicycle", "e-scooter")
 PASSIVE_AUXILIARIES = {"is", "are", "was", "were", "be", "been", "being", "get", "gets", "got", "getting"}
 
 
-def _specialise(a: _Actor, spec: ActorSpec, junction: bool) -> None:
+def _specialise(a: _Actor, spec: ActorSpec, junction: bool, left_hand: bool = False) -> None:
     """The behaviours that what was said around the verbs makes specific: a left turn by someone
     coming the other way is a turn across the ego's path; pulling out of a side road is turning into
     the ego's road; a vehicle driving at the ego in its lane is a wrong-way driver; a walker or rider
@@ -1963,7 +1963,10 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool) -> None:
     vehicle = a.kind in VEHICLES
     crit = next((b[2] for b in spec.behaviours if b[2]), a.crit)
     link = spec.behaviours[0][3] if spec.behaviours else "sequence"
-    towards = "oncoming" in a.said or spec.relation in ("oncoming", "junction_opposite") or a.kerb_side == "left"
+    # across the road where traffic keeps right; a writer who keeps left puts a rider on the far (right)
+    # kerb that swerves in beside the ego going its way (a vehicle there is oncoming: _resolve_relation)
+    far_kerb = a.kerb_side == "left" and not left_hand and not a.lane_side
+    towards = "oncoming" in a.said or spec.relation in ("oncoming", "junction_opposite") or far_kerb
     if (
         first == "forced_turn"
         and spec.behaviours[0][1].get("turn") == "left"

@@ -333,8 +333,9 @@ def write_scenario(layers: dict, stem: str) -> WrittenScenario:
         controller = None
         first = next(n["behaviour"] for _, n in behaviour_nodes(adv["behaviour"]))
         at_kerb = adv["spawn"]["relation"].startswith("roadside") and vulnerable(kind)
-        if at_kerb and first in SWERVES_FROM_KERB and pose.lane_id < 0:
-            # a rider at the kerb of the ego's side that swerves into the road: on the kerb lane's edge
+        if at_kerb and first in SWERVES_FROM_KERB:
+            # a rider at the kerb of the ego's side that swerves into the road: on the kerb lane's edge;
+            # at the left kerb (a writer who keeps left), on the left edge of the ego's direction
             pose = placement.kerb_edge(pose, TYPES[kind][0][1])
             ctx.actor_offset_m = pose.offset
             at_kerb = False

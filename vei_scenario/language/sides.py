@@ -245,8 +245,9 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
         if part:  # "the offside of the HGV", "into our nearside": a side of a vehicle, no road user's place
             return Said(start, j + 1, prep, ())
         if tokens[j + 1 : j + 2] not in (["lane"], ["left"], ["right"], ["hand"]) and prep in ("on", "from", "off"):
-            side = _side(tokens[j], "", left_hand, ring)  # "from the nearside": that kerb
-            return Said(start, j + 1, prep, (("kerb", None), ("kerb_side", side)))
+            side = _side(tokens[j], "", left_hand, ring)  # "from the nearside": that kerb (a walker's),
+            # or the lane on that side (a driver's, "a car on the offside drifted in"): the reader says whose
+            return Said(start, j + 1, prep, (("kerb", None), ("kerb_side", side), ("lane_side", side)))
     if tokens[j] in _ENDS and tokens[j + 1 : j + 2] and tokens[j + 1] in VEHICLE_PARTS:
         return Said(start, j + 2, prep, ())  # "clipped his rear bumper": a part of a vehicle, no place
     restated = tokens[j + 1 : j + 2] in (["left"], ["right"]) and tokens[j + 2 : j + 3] in (["side"], ["kerb"])
