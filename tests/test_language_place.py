@@ -217,3 +217,23 @@ def test_a_rider_at_the_kerb_who_swerves_in_goes_the_egos_way(text):
     keeps left too: the right kerb is said of where it is, not of the traffic across the road."""
     actor = read(text).actors[0]
     assert actor.relation in ("right", "roadside_right") and actor.behaviours[0][0] != "wrong_way"
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("Ego 40 km/h in the right lane; a taxi in the left lane darts across us to reach the exit.", "left"),
+        ("Two lanes, 30 mph, a hatchback in the right lane dived in front of me to get the exit.", "right"),
+        ("Ego 60 km/h in lane 1; a van in lane 2 cuts across us heading for the exit.", "left"),
+    ],
+)
+def test_an_exit_a_road_user_makes_for_is_where_it_goes_not_where_it_comes_from(text, expected):
+    """ "to take the exit", "heading for the exit": the exit is the object of where it goes; it starts in
+    its lane beside the ego, not on a junction arm."""
+    assert relation(text) == expected
+
+
+def test_an_exit_it_comes_out_of_is_still_its_arm():
+    assert relation("At the junction, ego 30 km/h, a van pulls out of the exit on our left in front of us.") == (
+        "junction_left"
+    )

@@ -89,6 +89,8 @@ def outcome_not_behaviour(clauses: list) -> list:
 
 
 _TOWARDS = frozenset(("into", "onto"))
+#: Prepositions of where a road user makes for ("heading for the exit", "towards the exit").
+_MAKING_FOR = frozenset(("for", "towards", "toward"))
 _POSSESSIVE = frozenset(("its", "his", "her", "their"))
 
 
@@ -304,10 +306,12 @@ def lets_the_ego_go(clauses: list, tokens: list[str]) -> list:
 
 def _led_towards(m, before) -> bool:
     """Whether a side road or exit mention ``m`` is led by "into"/"onto" (a destination)."""
-    if m.prev in _TOWARDS:
+    if m.prev in _TOWARDS or m.prev in _MAKING_FOR:
         return True
     if before is None:
         return False
+    if before.slot == "unknown_verb" and before.prev == "to" and m.prev == before.words:
+        return True  # ("to take the exit", "to reach the exit"): the object of a purpose, where it goes
     if before.slot == "pronoun" and before.words in _POSSESSIVE and before.prev in _TOWARDS | {"to"}:
         return before.end == m.start  # ("to get to its exit")
     return before.slot == "member" and before.prev in _TOWARDS and m.prev == "of"  # ("into one of the side roads")
