@@ -237,3 +237,34 @@ def test_an_exit_it_comes_out_of_is_still_its_arm():
     assert relation("At the junction, ego 30 km/h, a van pulls out of the exit on our left in front of us.") == (
         "junction_left"
     )
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Ego at 70 km/h on a country road. On the bend a van is coming on our lane because it is overtaking a tractor.",
+        "Doing 50 mph, a car was coming down my lane, passing a lorry.",
+        "Ego 60 km/h; a motorbike comes along the ego's lane while it overtakes a bus.",
+        "At 40 km/h a truck heading at us in our lane.",
+    ],
+)
+def test_one_coming_in_the_egos_lane_comes_towards_it(text):
+    """ "coming on our lane", "comes along the ego's lane": coming in the ego's own lane is coming at it."""
+    assert relation(text) in ("oncoming", "junction_opposite")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Ego 50 km/h; a van coming at 40 km/h cuts in ahead of us.",  # (a speed, not at the ego)
+        "Ego 50 km/h; a van came into our lane from the left.",  # (into: a cut-in)
+        "Ego 30 km/h; a cyclist is coming up behind us in our lane.",
+    ],
+)
+def test_coming_into_or_behind_or_at_a_speed_is_not_towards_the_ego(text):
+    assert relation(text) != "oncoming"
+
+
+def test_arriving_in_the_egos_lane_after_passing_it_is_no_oncoming():
+    text = "Ego 60 km/h, a van overtakes me and once it came in my lane it braked hard."
+    assert relation(text) != "oncoming"

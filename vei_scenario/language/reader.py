@@ -574,6 +574,12 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             clauses[-1][1].append(_Mention("heading", heading, tok, i, prev, end=i + 1))
             i += 1
             continue
+        towards = sides.towards_in_ego_lane(tokens, i)
+        if towards is not None:  # "coming on our lane", "heading at us": at the ego, in its lane
+            words = " ".join(tokens[i:towards])
+            clauses[-1][1].append(_Mention("relation", "oncoming", words, i, prev, end=towards, det=det))
+            i = towards
+            continue
         said = sides.phrase_at(tokens, i, left_hand, ring)
         if said is not None:  # a lane, kerb or arm and its side ("in the offside lane", "a side road on my left")
             words = " ".join(tokens[said.start : said.end])
@@ -671,6 +677,15 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             i += 1
             continue
         slot, value = TABLE[key]
+        if (
+            slot == "relation"
+            and key[-1] == "at"
+            and re.fullmatch(
+                r"\d+(?:\.\d+)?", tokens[i + len(key) : i + len(key) + 1][0] if i + len(key) < len(tokens) else ""
+            )
+        ):
+            i += len(key) - 1  # ("coming at 40 km/h": a speed, not at the ego)
+            continue
         if slot in ("weather", "time", "density") and (
             S.negated(tokens, i) or (slot == "weather" and S.ended(tokens, i, len(key)))
         ):

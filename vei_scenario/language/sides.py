@@ -403,6 +403,38 @@ def _restated(tokens: list[str], k: int) -> str | None:
     return None
 
 
+#: Forms of the verbs that say a road user comes or heads somewhere.
+_COMING = frozenset(
+    {"come", "comes", "coming", "came", "head", "heads", "heading", "headed", "drive", "drives", "driving", "drove"}
+)
+#: Prepositions of going along a lane (not "into" it: that is a cut-in).
+_ALONG_LANE = frozenset({"on", "in", "down", "along", "up"})
+_EGO_OWNERS = (["my"], ["our"], ["the", "ego", "'s"], ["ego", "'s"])
+
+
+def towards_in_ego_lane(tokens: list[str], i: int) -> int | None:
+    """Where a phrase ends that says a road user comes at the ego along its own lane, starting at token
+    ``i`` ("coming on our lane", "came down my lane", "heading at us"), or None. Coming in the ego's
+    lane, with nothing saying it is behind ("coming up behind us in our lane"), is coming at it.
+    Not "coming into our lane" (a cut-in) nor "coming at 40 km/h" (a speed)."""
+    if tokens[i] not in _COMING or i + 2 >= len(tokens):
+        return None
+    if tokens[i + 1] == "at" and tokens[i + 2] in ("me", "us", "ego") and tokens[i + 1 : i + 3] != ["at", "the"]:
+        return i + 3  # ("heading at us")
+    if tokens[i + 1] not in _ALONG_LANE:
+        return None
+    if tokens[i + 1] in ("in", "on") and not tokens[i].endswith("ing"):
+        return None  # ("once he came in my lane": arrived in it, a cut-in; "coming on our lane" goes on)
+    k = i + 2
+    owner = next((o for o in _EGO_OWNERS if tokens[k : k + len(o)] == o), None)
+    if owner is None or tokens[k + len(owner) : k + len(owner) + 1] != ["lane"]:
+        return None
+    end = k + len(owner) + 1
+    if "behind" in tokens[max(0, i - 3) : end + 3]:
+        return None  # ("coming up behind us in our lane")
+    return end
+
+
 def beside(lane: str | None, ego_lane: str | None) -> str | None:
     """The side of the ego a road user in ``lane`` is on, when the ego's own lane is said too (lanes
     as left, middle or right): the lane with the lower rank is to the left. Without the ego's lane the
