@@ -268,3 +268,21 @@ def test_coming_into_or_behind_or_at_a_speed_is_not_towards_the_ego(text):
 def test_arriving_in_the_egos_lane_after_passing_it_is_no_oncoming():
     text = "Ego 60 km/h, a van overtakes me and once it came in my lane it braked hard."
     assert relation(text) != "oncoming"
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("ego 30 km/h, car from side road R pulls out in front", "junction_right"),
+        ("host 40 km/h | van out of junction L into our path ~10 m ahead", "junction_left"),
+        ("Ego at 30 km/h; a car from the junction on the right pulls out in front of us.", "junction_right"),
+        ("ego 25 km/h, kid steps off kerb R in front", "roadside_right"),
+    ],
+)
+def test_a_side_said_after_the_place_it_names(text, expected):
+    """ "junction L", "side road R", "from the junction on the right": the side of the road it comes out of."""
+    assert relation(text) == expected
+
+
+def test_a_junction_said_only_as_where_the_ego_is_names_no_side():
+    assert relation("At the junction at 40 km/h, a car in the right lane slows down.") == "right"

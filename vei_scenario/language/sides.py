@@ -296,8 +296,8 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
     kind = None
     if tokens[k] in _MINOR and k + 1 < n and tokens[k + 1] in _ROAD_NOUNS:
         kind, k = "arm", k + 2
-    elif tokens[k] in ARM_NOUNS:
-        kind, k = "arm", k + 1
+    elif tokens[k] in ARM_NOUNS or (tokens[k] == "junction" and prep in _OUT_OF | {"at"}):
+        kind, k = "arm", k + 1  # ("from the junction on the left": the road joining there on that side)
     elif tokens[k] in KERB_NOUNS:
         kind, k = "kerb", k + 1
     elif prep in _OUT_OF and (tokens[k] in OFF_ROAD_PLACES or tokens[k + 1 : k + 2] in _PLACE_HEADS.get(tokens[k], ())):
