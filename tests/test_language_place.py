@@ -133,7 +133,7 @@ def test_a_vehicle_at_the_near_kerb_of_a_left_hand_writer_goes_the_egos_way(text
         ("Doing 20 mph, a cyclist riding along the kerb ahead suddenly swerves into my path.", "left"),
         ("In Dublin at 30 km/h, a boy stepped off the kerb right in front of us.", "left"),
         ("Ego at 30 km/h; a boy steps off the kerb right in front of the car.", "right"),
-        ("Doing 25 mph, a cyclist rode along the kerb ahead of me on our side of the road.", "left"),
+        ("Doing 20 mph, a lad stepped off the kerb just in front of me.", "left"),
     ],
 )
 def test_a_kerb_with_no_side_said_is_the_near_one(text, expected):

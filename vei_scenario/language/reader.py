@@ -2059,7 +2059,9 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool, left_hand: bool = Fa
         side = a.kerb_side or a.lane_side or a.side
         if a.kerb or (spec.relation or "").startswith("roadside") or side in ("left", "right"):
             # at the edge of the lane on the side said ("along the kerb on our left", "on the right side")
-            left = side == "left" or (side is None and spec.relation == "roadside_left")
+            # (a kerb with no side: the right edge, which the layers' right-hand road keeps clear of the
+            # lane beside it; relation and start stay the writer's near kerb's)
+            left = side == "left" or (side is None and spec.relation == "roadside_left" and not a.kerb)
             spec.lateral_m = 1.2 if left else -1.2
         spec.relation = "ahead" if spec.relation != "behind" else "behind"
         spec.behaviours = head_on(spec, a.kind in RIDERS and a.wrong_way)
