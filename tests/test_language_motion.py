@@ -378,8 +378,10 @@ def test_the_turn_across_is_to_the_far_side_of_the_traffic_the_text_drives_in(te
 def test_driving_on_the_left_lane_says_no_traffic_side():
     from vei_scenario.language.sides import drives_on_left
 
-    assert not drives_on_left("i am driving on the left lane at 50 km/h".split())
-    assert drives_on_left("we are driving on the left , at 50 km/h".split())
+    for text in ("i am driving on the left lane at 50 km/h", "we were driving on the left edge of the lane at 50 km/h"):
+        assert not drives_on_left(text.split(), text)
+    for text in ("we are driving on the left , at 50 km/h", "I drove on the left, at 50 km/h", "we keep left here"):
+        assert drives_on_left(text.split(), text)
 
 
 @pytest.mark.parametrize(

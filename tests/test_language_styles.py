@@ -199,7 +199,8 @@ def test_behaviours_as_people_say_them(text, expected):
         # a rider pulling out to overtake another does not cross
         (
             "Two cyclists ride along the kerb; the second one pulls out to overtake the first, right into our path.",
-            [("bicycle", "ahead", ["along_road"]), ("bicycle", None, ["cut_in", "overtake"])],
+            # (it pulls out from the kerb, the near one of a writer who says "kerb": the left)
+            [("bicycle", "ahead", ["along_road"]), ("bicycle", "roadside_left", ["cut_in", "overtake"])],
         ),
         # "two lanes over" is a lane to the side; "ahead" after a cut-in is where it cuts in
         ("A taxi two lanes over darts into our lane 8 m ahead.", [("car", None, ["cut_in"])]),

@@ -46,7 +46,7 @@ from dataclasses import replace
 
 from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.reading import ActorSpec
-from vei_scenario.language.sides import OFF_ROAD_PLACES, stated_traffic_side
+from vei_scenario.language.sides import OFF_ROAD_PLACES, stated_side
 
 #: Behaviours that, said with running the red, are the manner of that run.
 _MANNER_OF_A_RUN = frozenset(("overtake", "turn_into"))
@@ -136,6 +136,8 @@ def outcome_not_behaviour(clauses: list) -> list:
 
 
 _TOWARDS = frozenset(("into", "onto"))
+#: Prepositions of where a road user makes for ("heading for the exit", "towards the exit").
+_MAKING_FOR = frozenset(("for", "towards", "toward"))
 _POSSESSIVE = frozenset(("its", "his", "her", "their"))
 
 
@@ -432,10 +434,11 @@ def lets_the_ego_go(clauses: list, tokens: list[str]) -> list:
 
 
 def _led_towards(m, before, earlier=None) -> bool:
-    """Whether a side road or exit mention ``m`` is led by "into"/"onto" (a destination), or is the
-    object of an infinitive of purpose ("to take the exit", "to make its exit", "to catch the exit"):
-    what a road user moves to reach is where it goes, whatever the verb."""
-    if m.prev in _TOWARDS:
+    """Whether a side road or exit mention ``m`` is led by "into"/"onto" or "for"/"towards" (a
+    destination: "heading for the exit"), or is the object of an infinitive of purpose ("to take the
+    exit", "to make its exit", "to catch the exit"): what a road user moves to reach is where it goes,
+    whatever the verb."""
+    if m.prev in _TOWARDS or m.prev in _MAKING_FOR:
         return True
     if before is None:
         return False
@@ -515,12 +518,12 @@ def _one_crossing(behaviours: list) -> list:
     return out
 
 
-def turn_across_side(tokens: list[str]) -> str:
+def turn_across_side(text: str) -> str:
     """The turn that takes a road user coming the other way across the ego's path: to the far side of
     the road, left where traffic keeps right, right where the text says it keeps left ("we drive on
     the left", "UK layout"). Only a stated side counts: units and road words are too weak a guess to
     read an oncoming left turn as one away from the ego."""
-    return "right" if stated_traffic_side(tokens) == "left" else "left"
+    return "right" if stated_side(text) == "left" else "left"
 
 
 def one_path(spec: ActorSpec, said: str = "", across: str = "left") -> list:

@@ -237,6 +237,13 @@ _SHORTHAND = [
     # a single L or R where a side is said: "from L arm", "lane to the R", "on the L", "R turn"
     (re.compile(r"\b(from|to|on|at|in|the|turning|turns|turn)( the)? l\b(?!')"), r"\1\2 left"),
     (re.compile(r"\b(from|to|on|at|in|the|turning|turns|turn)( the)? r\b(?!')"), r"\1\2 right"),
+    # ... or after the place it names: "junction L", "side road R", "kerb L": on that side
+    (
+        re.compile(
+            r"\b(junction|arm|entry|exit|side road|side street|kerb|curb|pavement|footpath|sidewalk|verge) (l|r)\b(?!')"
+        ),
+        lambda m: f"{m.group(1)} on the {_SIDE[m.group(2)]}",
+    ),
     (re.compile(r"\bl(?= (?:arm|lane|side|kerb|edge|turn)\b)"), "left"),
     (re.compile(r"\br(?= (?:arm|lane|side|kerb|edge|turn)\b)"), "right"),
     # "doesnt", "dosnt", "didnt", "wasnt": the verb, then "not" (as "doesn't" is read)

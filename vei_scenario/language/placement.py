@@ -132,6 +132,10 @@ def _on_road(info: MapInfo, pose: Pose) -> Pose:
 def kerb_edge(pose: Pose, width_m: float) -> Pose:
     """``pose`` (beyond the kerb) moved onto the road, to the outer edge of the kerb lane: where a
     rider at the kerb rides before it swerves into the road (beyond the kerb it is on no lane, and
-    a lane change cannot start there)."""
+    a lane change cannot start there). A left kerb (said by a writer who keeps left, on whose road
+    it is the near one) becomes the left edge of the ego's direction: the rider rides the ego's way
+    on its left, as the writer has it."""
     inside = LANE_WIDTH_M / 2 - width_m / 2 - 0.2
+    if pose.lane_id > 0:  # the left kerb, across the other direction: the left edge of the ego's own
+        return Pose(pose.road, -1, pose.s, inside, pose.facing)  # (a rider there goes the ego's way)
     return Pose(pose.road, pose.lane_id, pose.s, inside if pose.offset > 0 else -inside, pose.facing)

@@ -528,7 +528,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
     tokens, dropped = discourse.resolve(tokens, _kind_at, _known, proper_names(text))  # (who is who; words out)
     dropped = framed + dropped
     ignored: list[str] = [w for w in dropped if w not in FUNCTION_WORDS and w.isalpha()]
-    left_hand, ring = sides.drives_on_left(tokens), "roundabout" in tokens
+    left_hand, ring = sides.drives_on_left(tokens, text), "roundabout" in tokens
 
     def ending_at(k: int) -> int | None:  # the start of the road-user mention whose last word is token k
         return next(
@@ -581,6 +581,12 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
         if heading is not None:  # "eastbound", "heading north": related to the ego's heading once both are read
             clauses[-1][1].append(_Mention("heading", heading, tok, i, prev, end=i + 1))
             i += 1
+            continue
+        towards = sides.towards_in_ego_lane(tokens, i)
+        if towards is not None:  # "coming on our lane", "heading at us": at the ego, in its lane
+            words = " ".join(tokens[i:towards])
+            clauses[-1][1].append(_Mention("relation", "oncoming", words, i, prev, end=towards, det=det))
+            i = towards
             continue
         said = sides.phrase_at(tokens, i, left_hand, ring)
         if said is not None:  # a lane, kerb or arm and its side ("in the offside lane", "a side road on my left")
@@ -679,6 +685,15 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             i += 1
             continue
         slot, value = TABLE[key]
+        if (
+            slot == "relation"
+            and key[-1] == "at"
+            and re.fullmatch(
+                r"\d+(?:\.\d+)?", tokens[i + len(key) : i + len(key) + 1][0] if i + len(key) < len(tokens) else ""
+            )
+        ):
+            i += len(key) - 1  # ("coming at 40 km/h": a speed, not at the ego)
+            continue
         if slot in ("weather", "time", "density") and (
             S.negated(tokens, i) or (slot == "weather" and S.ended(tokens, i, len(key)))
         ):
@@ -1022,8 +1037,11 @@ def _ego_following(clauses):
     return [(link, mentions[:first] + [ahead] + mentions[first + 1 :])] + clauses[1:], True
 
 
-def _resolve_relation(a: _Actor, map_kind: str | None) -> str | None:
-    """The spawn relation of an actor from what was said about where it is and what it does first."""
+def _resolve_relation(a: _Actor, map_kind: str | None, left_hand: bool = False) -> str | None:
+    """The spawn relation of an actor from what was said about where it is and what it does first.
+    A kerb with no side said is the writer's near one (the left where traffic keeps left), and a
+    vehicle at the far kerb drives the other way (:func:`sides.near_and_far`)."""
+    near, far = sides.near_and_far(left_hand)
     first = a.behaviours[0][0] if a.behaviours else None
     junction = map_kind in ("crossroad", "roundabout")
     vehicle = a.kind in VEHICLES
@@ -1031,14 +1049,14 @@ def _resolve_relation(a: _Actor, map_kind: str | None) -> str | None:
     if first == "cross_in_front" and not vehicle:  # a crossing starts at a kerb (at a junction too)
         if side is None and a.relation and a.relation.startswith(("junction", "roadside")):
             side = a.relation.rsplit("_", 1)[1]
-        return f"roadside_{side if side in ('left', 'right') else 'right'}"
+        return f"roadside_{side if side in ('left', 'right') else near}"
     if a.relation and a.relation.startswith(("junction", "roadside")):
         return a.relation
     rides = a.kind != "pedestrian"  # (a rider at a junction takes the road as a vehicle does)
     if first == "give_way" or (junction and rides and a.goes_on and first == "cut_in" and a.relation != "oncoming"):
         # lets the ego pass (or is said not to): where their paths meet, in a side road or at the kerb
         where = "junction" if vehicle or (junction and not a.kerb) else "roadside"
-        return f"{where}_{side if side in ('left', 'right') else 'right'}"
+        return f"{where}_{side if side in ('left', 'right') else near}"
     if junction and a.arm and side in ("left", "right"):
         return f"junction_{side}"  # from the side road on the left: that arm, even if it approaches
     on_the_road = a.came_from and rides and not (a.kerb or a.kerb_side or a.lane_side)
@@ -1050,7 +1068,7 @@ def _resolve_relation(a: _Actor, map_kind: str | None) -> str | None:
         return "ahead"  # the ego follows it in its lane: it pulls out of it, to the side said
     if a.relation == "oncoming" or (a.relation == "behind" and not ((a.lane_side or a.side) and first == "cut_in")):
         return a.relation
-    if vehicle and a.kerb_side == "left" and first != "cross_in_front":
+    if vehicle and a.kerb_side == far and not a.lane_side and first != "cross_in_front":
         return "oncoming"  # a vehicle on the far side of the road drives the other way
     if (
         junction
@@ -1070,8 +1088,9 @@ def _resolve_relation(a: _Actor, map_kind: str | None) -> str | None:
     ):
         return f"junction_{side or 'left'}"
     lateral = first in ("cut_in", "overtake", "forced_turn", "follow_vehicle")
-    if a.kerb and not vehicle and not (lateral and first != "forced_turn"):
-        return f"roadside_{side or 'right'}"  # (a rider cutting in from the kerb or cycle lane: from that lane)
+    if a.kerb and not vehicle and (not (lateral and first != "forced_turn") or side is None):
+        # (a rider cutting in from the kerb or cycle lane of a side said: from that lane)
+        return f"roadside_{side or near}"
     if side and (lateral or a.relation is None or a.lane_side):
         return side
     return a.relation or side or ("ahead" if a.followed else None)  # (the lead car: ahead in the ego's lane)
@@ -1770,7 +1789,7 @@ def read(text: str) -> Reading:
         if a.kind in VULNERABLE and crossing_at and before <= {"keep_going", "stop", "along_road", "keep_lane"}:
             behaviours = behaviours[crossing_at:]  # ("... stops; then crosses from the left"): from the kerb
         a.behaviours = behaviours
-        spec.relation = _resolve_relation(a, r.map_kind)
+        spec.relation = _resolve_relation(a, r.map_kind, sides.drives_on_left(scanned, text))
         if (
             junction
             and spec.relation in ("junction_left", "junction_right")
@@ -1793,7 +1812,7 @@ def read(text: str) -> Reading:
             a.speed_mps = -V.SPEED_WORDS["fast"]
         spec.distance_m = a.distance_m
         spec.speed_mps = 0.0 if a.stationary and a.speed_mps is None else a.speed_mps
-        _specialise(a, spec, junction, turn_across_side(tokens))
+        _specialise(a, spec, junction, sides.drives_on_left(scanned, text), turn_across_side(text))
         r.actors.append(spec)
     for a, spec in zip(actors, r.actors):  # what an oncoming car overtakes comes towards the ego too
         k = next((k for k, x in enumerate(actors) if x is a.object_of), None)
@@ -1809,7 +1828,7 @@ def read(text: str) -> Reading:
     apply_manner(stated_manner(tokens), r.actors)  # (the scales of closeness, margin and timing)
     for spec in r.actors:
         spec.behaviours = _one_act_once(spec)
-        spec.behaviours = one_path(spec, said, turn_across_side(tokens))
+        spec.behaviours = one_path(spec, said, turn_across_side(text))
     if r.map_kind is None and any(s.relation == "junction_opposite" for s in r.actors):
         r.map_kind = "crossroad"
     r.ego_speed_mps = ego_said if ego_said is not None else r.ego_speed_mps
@@ -1984,7 +2003,7 @@ RIDERS = ("bicycle", "e-scooter")
 PASSIVE_AUXILIARIES = {"is", "are", "was", "were", "be", "been", "being", "get", "gets", "got", "getting"}
 
 
-def _specialise(a: _Actor, spec: ActorSpec, junction: bool, across: str = "left") -> None:
+def _specialise(a: _Actor, spec: ActorSpec, junction: bool, left_hand: bool = False, across: str = "left") -> None:
     """The behaviours that what was said around the verbs makes specific: a left turn by someone
     coming the other way is a turn across the ego's path; pulling out of a side road is turning into
     the ego's road; a vehicle driving at the ego in its lane is a wrong-way driver; a walker or rider
@@ -1994,7 +2013,10 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool, across: str = "left"
     vehicle = a.kind in VEHICLES
     crit = next((b[2] for b in spec.behaviours if b[2]), a.crit)
     link = spec.behaviours[0][3] if spec.behaviours else "sequence"
-    towards = "oncoming" in a.said or spec.relation in ("oncoming", "junction_opposite") or a.kerb_side == "left"
+    # across the road where traffic keeps right; a writer who keeps left puts a rider on the far (right)
+    # kerb that swerves in beside the ego going its way (a vehicle there is oncoming: _resolve_relation)
+    far_kerb = a.kerb_side == "left" and not left_hand and not a.lane_side
+    towards = "oncoming" in a.said or spec.relation in ("oncoming", "junction_opposite") or far_kerb
     if (
         first == "forced_turn"
         and spec.behaviours[0][1].get("turn") == across  # (left; right where traffic keeps left)
@@ -2078,7 +2100,9 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool, across: str = "left"
         side = a.kerb_side or a.lane_side or a.side
         if a.kerb or (spec.relation or "").startswith("roadside") or side in ("left", "right"):
             # at the edge of the lane on the side said ("along the kerb on our left", "on the right side")
-            left = side == "left" or (side is None and spec.relation == "roadside_left")
+            # (a kerb with no side: the right edge, which the layers' right-hand road keeps clear of the
+            # lane beside it; relation and start stay the writer's near kerb's)
+            left = side == "left" or (side is None and spec.relation == "roadside_left" and not a.kerb)
             spec.lateral_m = 1.2 if left else -1.2
         spec.relation = "ahead" if spec.relation != "behind" else "behind"
         spec.behaviours = head_on(spec, a.kind in RIDERS and a.wrong_way)

@@ -19,7 +19,7 @@ from vei_scenario.language.maps import ARM_LENGTH_M, layout
 from vei_scenario.language.placement import DEFAULT_FEATURE_DISTANCE_M, ego_pose, junction_conflict_m, lane_id
 from vei_scenario.language.reader import read as read_text
 from vei_scenario.language.reading import Reading
-from vei_scenario.language.scenario_writer import DEFAULT_RATE_HZ, TYPES, vulnerable
+from vei_scenario.language.scenario_writer import DEFAULT_RATE_HZ, SWERVES_FROM_KERB, TYPES, vulnerable
 
 CRITICALITY_CLASSES = ("dangerous", "moderate", "safe")
 
@@ -197,7 +197,10 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
                 facing = None  # it starts in its own lane and drifts over
         if facing == "against":
             spawn["facing"] = "against"
-        if first.NAME == "along_road" and spec.distance_m is None:
+        if first.NAME == "along_road" and spec.distance_m is None and spawn["relation"] == "behind":
+            closing = max(speed - ego_speed, 1.0)  # (it comes up on the ego within a few seconds)
+            spawn["longitudinal_m"] = -round(min(max(closing * _u(rng, 3.0, 5.0), 8.0), 40.0), 3)
+        elif first.NAME == "along_road" and spec.distance_m is None:
             closing = ego_speed + speed if facing == "against" else max(ego_speed - speed, 1.0)
             spawn["longitudinal_m"] = round(min(max(closing * _u(rng, 4.0, 6.0), 20.0), 200.0), 3)
         speed = min(max(speed, 0.0), MAX_SPEED_MPS)  # (within what the layers hold)
@@ -482,6 +485,8 @@ def _place_adversary(
         # parked beyond the kerb (placed by the road user it hides, if any: _place_occluders)
         spawn["longitudinal_m"] = distance_m if distance_m is not None else 40.0
         return spawn, 0.0
+    if relation.startswith("roadside") and kind in RIDERS_AT_KERB and behaviour_name in SWERVES_FROM_KERB:
+        return _kerb_rider(kind, behaviour_name, cfg, ego_speed, lengths, speed, distance_m, spawn)
     if relation.startswith("roadside") and behaviour_name == "give_way":
         spawn["longitudinal_m"] = round(max(30.0, ego_speed * 3.0), 3) if distance_m is None else distance_m
         return spawn, 0.0
@@ -489,6 +494,11 @@ def _place_adversary(
         from vei_scenario.language.behaviours.along_road import PACE_MPS
 
         pace = PACE_MPS.get(kind, 4.0) if speed is None else speed
+        if relation == "behind":  # coming up from behind ("came up the inside along the kerb"): faster
+            if speed is None:
+                pace = max(pace, min(ego_speed + COMES_UP_MPS, TYPES[kind][3]))
+            spawn["longitudinal_m"] = -(distance_m if distance_m is not None else 20.0)
+            return spawn, round(pace, 3)
         spawn["relation"] = "ahead"
         spawn["longitudinal_m"] = distance_m if distance_m is not None else 40.0
         return spawn, round(pace, 3)
@@ -532,6 +542,42 @@ def _place_adversary(
     elif distance_m is not None:
         spawn["longitudinal_m"] = distance_m if relation != "behind" else -distance_m
     return spawn, round(out_speed, 3)
+
+
+#: How much faster than the ego one going along the road that comes up from behind rides, when its
+#: speed is not said (m/s; within its own top speed).
+COMES_UP_MPS = 2.0
+#: Riders who ride along the kerb or in a cycle lane before they swerve into the road (a walker there
+#: stands: what it does into the road is a crossing).
+RIDERS_AT_KERB = ("bicycle", "e-scooter")
+
+
+def _kerb_rider(
+    kind: str,
+    behaviour_name: str,
+    cfg: dict,
+    ego_speed: float,
+    lengths: float,
+    speed: float | None,
+    distance_m: float | None,
+    spawn: dict,
+) -> tuple[dict, float]:
+    """(spawn, speed) of a rider at the kerb of the ego's road who swerves into it ("a cyclist riding
+    along the kerb pulls out into my lane", "an e-scooter in the bike lane cuts in"): it rides along
+    the kerb at its own pace (its stated speed, else a rider's usual one) and is placed as far ahead as
+    ``lead_s`` seconds of the ego closing in before its gap, or at the distance said. The scenario
+    writer puts it on the kerb lane's edge, where a lane change can start."""
+    from vei_scenario.language.behaviours.along_road import PACE_MPS
+
+    pace = PACE_MPS.get(kind, 4.0) if speed is None else speed
+    params = BEHAVIOURS[behaviour_name].PARAMETERS
+    if distance_m is not None:
+        spawn["longitudinal_m"] = distance_m
+    else:
+        gap = value(cfg, params, "gap_m") if "gap_m" in params else 10.0
+        closing = max(ego_speed - pace, 1.0)
+        spawn["longitudinal_m"] = round(lengths / 2 + gap + closing * float(cfg.get("lead_s", 2.5)), 3)
+    return spawn, round(pace, 3)
 
 
 def _topology(nodes: list[tuple[str, dict]]) -> dict:

@@ -337,7 +337,8 @@ def write_scenario(layers: dict, stem: str) -> WrittenScenario:
         if at_kerb and swerves:
             # a rider at the kerb that swerves into the road (or a walker at the verge the text has move
             # along it): on the kerb lane's edge, where a lane change can start; one that gives way first
-            # still stands there as at the kerb, its way across measured from there
+            # still stands there as at the kerb, its way across measured from there; at the left kerb (a
+            # writer who keeps left), on the left edge of the ego's direction
             pose = placement.kerb_edge(pose, TYPES[kind][0][1])
             ctx.actor_offset_m = pose.offset
             at_kerb = "give_way" in does

@@ -22,6 +22,7 @@ Conventions:
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, replace
 
 #: Side words that name a side outright.
@@ -102,16 +103,69 @@ _METRIC_SPEEDS = frozenset({"km/h", "kph", "m/s"})
 _FIRST_PERSON = frozenset({"i", "me", "my", "mine", "we", "us", "our", "ours"})
 
 
-def drives_on_left(tokens: list[str]) -> bool:
-    """Whether the writer drives on the left: speeds in miles per hour without American road words
-    (the reader's normaliser writes every "miles an hour" as "mph"); or, with no metric speed, a
-    motorway named as Britain's ("the M25"), or a driver telling their own drive in British road words
-    ("a lorry in the inside lane drifted into me"). A test line ("a lorry in the nearside lane cuts in
-    ahead of the AV") or metric speeds follow Euro NCAP's convention, a right-hand one, whatever
-    their words."""
-    stated = stated_traffic_side(tokens)
-    if stated is not None:
-        return stated == "left"
+#: Countries and cities whose traffic keeps left, and keeps right: named outright ("it's Ireland after
+#: all", "UK layout", "a rental in Spain"), the place says the writer's side, whatever the speed unit
+#: (Ireland, Australia and India give km/h and keep left). Nouns only: an adjective names a make or a
+#: language as often as a place ("a Japanese hatchback", "my English is not good").
+_KEEPS_LEFT = (
+    "UK", "U.K.", "United Kingdom", "Britain", "Great Britain", "England", "Scotland", "Wales", "Ireland",
+    "Northern Ireland", "Australia", "New Zealand", "South Africa", "Japan", "India", "Pakistan", "Bangladesh",
+    "Sri Lanka", "Nepal", "Singapore", "Malaysia", "Indonesia", "Thailand", "Hong Kong", "Kenya", "Uganda",
+    "Tanzania", "Zambia", "Zimbabwe", "Botswana", "Namibia", "Jamaica", "Cyprus", "Malta", "Mauritius",
+    "London", "Dublin", "Edinburgh", "Glasgow", "Cardiff", "Belfast", "Melbourne", "Brisbane", "Auckland",
+    "Johannesburg", "Cape Town", "Tokyo", "Osaka", "Mumbai", "Delhi", "Bangalore", "Bengaluru", "Chennai",
+    "Kolkata", "Karachi", "Dhaka", "Nairobi", "Kuala Lumpur",
+)  # fmt: skip
+_KEEPS_RIGHT = (
+    "US", "U.S.", "USA", "U.S.A.", "United States", "America", "Canada", "Mexico", "France", "Germany", "Spain",
+    "Italy", "Portugal", "Netherlands", "Belgium", "Switzerland", "Austria", "Poland", "Sweden", "Norway",
+    "Denmark", "Finland", "Greece", "China", "Korea", "Brazil", "Argentina", "Chile", "Turkey", "Israel",
+    "Paris", "Berlin", "Munich", "Madrid", "Barcelona", "Rome", "Milan", "Amsterdam", "Toronto", "Vancouver",
+    "Montreal", "New York", "Los Angeles", "Chicago", "California", "Texas", "Florida",
+)  # fmt: skip
+#: Upper case only: "US" the country, never "us" the pronoun.
+_CASED = frozenset({"US", "UK", "USA"})
+
+
+def _place_pattern(names: tuple[str, ...]) -> re.Pattern:
+    cased = "|".join(re.escape(n) for n in names if n in _CASED)
+    other = "|".join(re.escape(n) for n in sorted(names, key=len, reverse=True) if n not in _CASED)
+    return re.compile(rf"(?<![\w.])(?:{cased}|(?i:{other}))(?![\w-])")
+
+
+_LEFT_PLACES, _RIGHT_PLACES = _place_pattern(_KEEPS_LEFT), _place_pattern(_KEEPS_RIGHT)
+#: The convention said in words: "left-hand traffic", "we drive on the left", "traffic keeps right".
+_CONVENTION = re.compile(
+    r"\b(left|right)[- ]hand traffic\b"
+    r"|\b(?:we|you|they|i|people|everyone|traffic|cars|drivers)\s+(?:(?:am|are|is|was|were|'re|'m)\s+)?"
+    r"(?:drive|drives|drove|driving|keep|keeps|keeping)\s+(?:on\s+the\s+)?(left|right)\b"
+    r"(?!\s*[- ]?(?:lane|lanes|kerb|curb|verge|shoulder|pavement|sidewalk|footway|arm|turn|exit|edge|of)\b)"
+    r"|(?:^|[.,;:(]\s*)driving\s+on\s+the\s+(left|right)(?:[- ]hand)?(?:\s+side)?(?:\s+of\s+the\s+road)?"
+    r"\s*(?=[.,;:)]|$)",
+    re.IGNORECASE,
+)
+
+
+def stated_side(text: str) -> str | None:
+    """The side traffic keeps to, when the writer says it ("left-hand traffic", "we drive on the left")
+    or names where the road is ("Dublin", "a UK layout", "US city street"); None when neither is said,
+    or places of both conventions are named (a holiday abroad: the other cues decide)."""
+    if m := _CONVENTION.search(text):
+        return next(g for g in m.groups() if g).lower()
+    left, right = bool(_LEFT_PLACES.search(text)), bool(_RIGHT_PLACES.search(text))
+    return "left" if left and not right else "right" if right and not left else None
+
+
+def drives_on_left(tokens: list[str], text: str = "") -> bool:
+    """Whether the writer drives on the left: said outright (:func:`stated_side`); else speeds in miles
+    per hour without American road words (the reader's normaliser writes every "miles an hour" as
+    "mph"); or, with no metric speed, a motorway named as Britain's ("the M25"), or a driver telling
+    their own drive in British road words ("a lorry in the inside lane drifted into me"). A test line
+    ("a lorry in the nearside lane cuts in ahead of the AV") or metric speeds follow Euro NCAP's
+    convention, a right-hand one, whatever their words."""
+    said = stated_side(text)
+    if said is not None:
+        return said == "left"
     words = set(tokens)
     if "mph" in words:
         return not words & _RIGHT_HAND_WORDS
@@ -120,28 +174,10 @@ def drives_on_left(tokens: list[str]) -> bool:
     return _motorway_number(tokens) or bool(words & _LEFT_HAND_WORDS and words & _FIRST_PERSON)
 
 
-#: Words after "on the left/right" that make it a lane or a place, not the side traffic keeps to.
-_A_PLACE_AFTER = frozenset(("lane", "lanes", "side", "kerb", "curb", "verge", "shoulder", "edge", "hand", "of", "arm"))
-_DRIVE_WORDS = frozenset(("drive", "driving", "drives", "drove", "keep", "keeps", "keeping", "traffic", "ride"))
-
-
-def stated_traffic_side(tokens: list[str]) -> str | None:
-    """The side traffic keeps to where the writer says it outright ("we drive on the left", "driving
-    on the right", "left-hand traffic", "UK layout"), else None: a statement outweighs any guess from
-    units or road words (a British writer may give speeds in km/h). "Driving on the left lane" names
-    a lane, no traffic side."""
-    for k, w in enumerate(tokens):
-        if w in ("left", "right") and k >= 2 and tokens[k - 1] == "the" and tokens[k - 2] == "on":
-            after = tokens[k + 1] if k + 1 < len(tokens) else ""
-            if k >= 3 and tokens[k - 3] in _DRIVE_WORDS and after not in _A_PLACE_AFTER and after != "-":
-                return w
-        if w in ("left-hand", "right-hand") and tokens[k + 1 : k + 2] in (["traffic"], ["drive"], ["driving"]):
-            return w.split("-")[0]
-        if w in ("left", "right") and tokens[k + 1 : k + 4] in (["-", "hand", "traffic"], ["hand", "traffic"]):
-            return w
-        if w == "uk" and tokens[k + 1 : k + 2] in ([], ["layout"], ["rules"], ["."], [","], [")"]):
-            return "left"  # ("(UK)", "UK layout": the country said as the traffic's rules, not "a UK lorry")
-    return None
+def near_and_far(left_hand: bool) -> tuple[str, str]:
+    """(near, far) kerb of a writer's road: the kerb side is the left where traffic keeps left. A kerb
+    said with no side ("rode along the kerb", "stepped off the kerb") is the near one."""
+    return ("left", "right") if left_hand else ("right", "left")
 
 
 def _motorway_number(tokens: list[str]) -> bool:
@@ -210,8 +246,9 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
         if part:  # "the offside of the HGV", "into our nearside": a side of a vehicle, no road user's place
             return Said(start, j + 1, prep, ())
         if tokens[j + 1 : j + 2] not in (["lane"], ["left"], ["right"], ["hand"]) and prep in ("on", "from", "off"):
-            side = _side(tokens[j], "", left_hand, ring)  # "from the nearside": that kerb
-            return Said(start, j + 1, prep, (("kerb", None), ("kerb_side", side)))
+            side = _side(tokens[j], "", left_hand, ring)  # "from the nearside": that kerb (a walker's),
+            # or the lane on that side (a driver's, "a car on the offside drifted in"): the reader says whose
+            return Said(start, j + 1, prep, (("kerb", None), ("kerb_side", side), ("lane_side", side)))
     if tokens[j] in _ENDS and tokens[j + 1 : j + 2] and tokens[j + 1] in VEHICLE_PARTS:
         return Said(start, j + 2, prep, ())  # "clipped his rear bumper": a part of a vehicle, no place
     restated = tokens[j + 1 : j + 2] in (["left"], ["right"]) and tokens[j + 2 : j + 3] in (["side"], ["kerb"])
@@ -260,8 +297,8 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
     kind = None
     if tokens[k] in _MINOR and k + 1 < n and tokens[k + 1] in _ROAD_NOUNS:
         kind, k = "arm", k + 2
-    elif tokens[k] in ARM_NOUNS:
-        kind, k = "arm", k + 1
+    elif tokens[k] in ARM_NOUNS or (tokens[k] == "junction" and prep in _OUT_OF | {"at"}):
+        kind, k = "arm", k + 1  # ("from the junction on the left": the road joining there on that side)
     elif tokens[k] in KERB_NOUNS:
         kind, k = "kerb", k + 1
     elif prep in _OUT_OF and (tokens[k] in OFF_ROAD_PLACES or tokens[k + 1 : k + 2] in _PLACE_HEADS.get(tokens[k], ())):
@@ -327,10 +364,26 @@ def _bare_ring_side(tokens: list[str], i: int, j: int, prep: str, left_hand: boo
     near, far = ("left", "right") if left_hand else ("right", "left")
     # "came up the inside", "coming up on my inside", "went past on the outside": it comes from behind
     # (the verb's particle said before: "came up on my inside", "went past me on the outside")
-    behind = (("relation", "behind"),) if prep in _FROM_BEHIND or set(tokens[max(0, i - 2) : i]) & _FROM_BEHIND else ()
+    behind = (("relation", "behind"),) if prep in _FROM_BEHIND or _particle_before(tokens, i) else ()
     if word == "inside":  # (by the kerb: a rider there rides at its edge)
         return Said(j, end, prep, (("kerb", None), ("lane_side", near), *behind))
     return Said(j, end, prep, (("lane_side", far), *behind))
+
+
+#: Words of the object between a verb's particle and the side ("came past the test car on the inside").
+_OBJECT_WORDS = frozenset({"me", "us", "him", "her", "them", "it", "ego", "car", "van", "vehicle", "bus", "truck"})
+
+
+def _particle_before(tokens: list[str], i: int) -> bool:
+    """Whether "up" or "past" ends the verb before token ``i``, right before it or before the verb's
+    object ("came up on my inside", "went past me on the outside", "shot past the ego on the inside");
+    never across a clause ("up ahead, on the inside")."""
+    for k in range(i - 1, max(-1, i - 5), -1):
+        if tokens[k] in _FROM_BEHIND:
+            return True
+        if tokens[k] not in _OBJECT_WORDS and tokens[k] not in _DETERMINERS:
+            return False
+    return False
 
 
 #: Nouns "inside"/"outside" qualify as side words ("the outside lane", "its inside wheel").
@@ -349,6 +402,38 @@ def _restated(tokens: list[str], k: int) -> str | None:
         if tokens[m] == "from":
             return next((w for w in tokens[m + 1 : m + 5] if w in ("left", "right")), None)
     return None
+
+
+#: Forms of the verbs that say a road user comes or heads somewhere.
+_COMING = frozenset(
+    {"come", "comes", "coming", "came", "head", "heads", "heading", "headed", "drive", "drives", "driving", "drove"}
+)
+#: Prepositions of going along a lane (not "into" it: that is a cut-in).
+_ALONG_LANE = frozenset({"on", "in", "down", "along", "up"})
+_EGO_OWNERS = (["my"], ["our"], ["the", "ego", "'s"], ["ego", "'s"])
+
+
+def towards_in_ego_lane(tokens: list[str], i: int) -> int | None:
+    """Where a phrase ends that says a road user comes at the ego along its own lane, starting at token
+    ``i`` ("coming on our lane", "came down my lane", "heading at us"), or None. Coming in the ego's
+    lane, with nothing saying it is behind ("coming up behind us in our lane"), is coming at it.
+    Not "coming into our lane" (a cut-in) nor "coming at 40 km/h" (a speed)."""
+    if tokens[i] not in _COMING or i + 2 >= len(tokens):
+        return None
+    if tokens[i + 1] == "at" and tokens[i + 2] in ("me", "us", "ego") and tokens[i + 1 : i + 3] != ["at", "the"]:
+        return i + 3  # ("heading at us")
+    if tokens[i + 1] not in _ALONG_LANE:
+        return None
+    if tokens[i + 1] in ("in", "on") and not tokens[i].endswith("ing"):
+        return None  # ("once he came in my lane": arrived in it, a cut-in; "coming on our lane" goes on)
+    k = i + 2
+    owner = next((o for o in _EGO_OWNERS if tokens[k : k + len(o)] == o), None)
+    if owner is None or tokens[k + len(owner) : k + len(owner) + 1] != ["lane"]:
+        return None
+    end = k + len(owner) + 1
+    if "behind" in tokens[max(0, i - 3) : end + 3]:
+        return None  # ("coming up behind us in our lane")
+    return end
 
 
 def beside(lane: str | None, ego_lane: str | None) -> str | None:
