@@ -186,3 +186,65 @@ def test_an_automated_vehicle_or_its_crew_names_the_ego(text, kinds, kph):
 )
 def test_an_automated_vehicle_that_meets_the_narrator_is_another_road_user(text):
     assert _kinds(text) == ["car"]
+
+
+# A report told from a vehicle it never calls the ego: the first vehicle, the subject of its clause
+# with its own speed, named bare or with "the" (never with "a"), with no narrator in its sentence, is
+# the ego; so is every later "the <noun>" and "the driver" (no other motor vehicle named before it).
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("Minibus doing 40 km/h along a wet high street when a pedestrian stepped out from the left. The driver "
+         "braked hard.", ["pedestrian"], 40.0),
+        ("Company hatchback heading through the crossroads at 30 mph, a cyclist ran the red from the right and "
+         "the hatchback clipped his back wheel.", ["bicycle"], 48.3),
+        ("Half eight, wet, tipper truck rolling along at 25 km/h past the school. A kid on a scooter rolled off "
+         "the kerb in front of the truck. Driver stopped in time.", ["e-scooter"], 25.0),
+        ("Two joggers were running along the verge ahead of the tanker. Tanker was doing 50 km/h; the driver "
+         "eased out and passed them.", ["pedestrian", "pedestrian"], 50.0),
+        ("Driver was holding 80 km/h on the motorway when a van cut in 10 m ahead. Our driver braked.",
+         ["van"], 80.0),
+    ],
+)  # fmt: skip
+def test_the_vehicle_a_report_is_told_from_is_the_ego(text, kinds, kph):
+    assert sorted(_kinds(text)) == sorted(kinds)
+    assert _ego_kph(text) == kph
+
+
+# Near misses: a vehicle new to the text ("a van"), one that meets the narrator in its sentence, or
+# one placed relative to someone, is another road user; a narrator with its own speed is the ego.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("A van travelling at 40 km/h pulls out of a side road on the left in front of the ego.", ["van"], None),
+        ("Coach pulled away from the stop right in front of us while we were doing 30 km/h.", ["truck"], 30.0),
+        ("Lorry doing 70 km/h drifts into my lane.", ["truck"], None),
+        ("The car ahead brakes hard at 60 km/h and a cyclist swerves out.", ["car", "bicycle"], None),
+        ("Pickup towing a caravan at 50 km/h overtook us; we were doing 40 km/h.", ["van"], 40.0),
+    ],
+)  # fmt: skip
+def test_a_vehicle_that_meets_the_narrator_or_is_new_is_no_ego(text, kinds, kph):
+    assert sorted(_kinds(text)) == sorted(kinds)
+    assert _ego_kph(text) == kph
+
+
+# The vehicle the ego's subject is in, in its own clause, is the ego's vehicle; "the driver" and
+# "the vehicle" after it are the ego while no other motor vehicle is named.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("Our driver was pulling out of the depot in the minibus at 15 km/h when a cyclist came along the "
+         "pavement on the right. The driver braked.", ["bicycle"], 15.0),
+        ("I was heading home in the taxi at 30 mph when a jogger stepped out in front of the taxi.",
+         ["pedestrian"], 48.3),
+        ("We came round the bend in the camper at 40 km/h and a deer was standing in front of the vehicle.",
+         ["pedestrian"], 40.0),
+        # near misses: a place named by a vehicle noun, and a vehicle the ego is behind
+        ("I was waiting in the car park at 5 km/h when a van reversed into me.", ["van"], 5.0),
+        ("We were stuck in traffic behind a bus at 10 km/h when a cyclist squeezed past.",
+         ["truck", "bicycle"], 10.0),
+    ],
+)  # fmt: skip
+def test_the_vehicle_the_ego_is_in_is_the_ego(text, kinds, kph):
+    assert sorted(_kinds(text)) == sorted(kinds)
+    assert _ego_kph(text) == kph

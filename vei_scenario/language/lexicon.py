@@ -26,7 +26,7 @@ CAR_MAKES = (
 )  # fmt: skip
 VAN_MODELS = (
     "transit", "transit van", "sprinter", "vivaro", "crafter", "ducato", "berlingo", "kangoo", "hiace",
-    "vito", "econoline", "promaster",
+    "vito", "econoline", "promaster", "hilux",
 )  # fmt: skip
 TRUCK_MAKES = ("scania", "iveco", "daf", "transit bus")
 
@@ -141,6 +141,9 @@ ACTOR_NOUNS = {
         "double-decker",
         "double decker",
         "fire engine",
+        "prime mover",  # (an articulated truck's tractor unit, Australian and NZ usage)
+        "b-double",
+        "road train",
         *TRUCK_MAKES,
     ),
     "van": (
@@ -156,6 +159,8 @@ ACTOR_NOUNS = {
         "pick-up truck",
         "people carrier",
         "mpv",
+        "ute",  # (a utility vehicle: a pickup, Australian and NZ usage)
+        "utility vehicle",
         *VAN_MODELS,
     ),
 }
