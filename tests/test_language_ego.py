@@ -248,3 +248,28 @@ def test_a_vehicle_that_meets_the_narrator_or_is_new_is_no_ego(text, kinds, kph)
 def test_the_vehicle_the_ego_is_in_is_the_ego(text, kinds, kph):
     assert sorted(_kinds(text)) == sorted(kinds)
     assert _ego_kph(text) == kph
+
+
+# A fleet log opened by its own vehicle's call sign ("Coach 31 | ...", "TRK-09 | ...", "Unit 6 ..."):
+# that vehicle is the ego, and so is the same noun said again bare or with "the" ("coach pulled
+# away"); "host" alone is the host vehicle.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("Coach 31 | 08:10 | pedestrian stepped off the kerb on the left as coach pulled away from the stop at "
+         "15 km/h", ["pedestrian"], 15.0),
+        ("SHIFT LOG | Van 4 | cyclist came out of a side road on the right, van doing 30 km/h, braked, no contact",
+         ["bicycle"], 30.0),
+        ("EVENT 77 | TRK-09 | car from the left lane cut in 8 m ahead | host 95 km/h | dry", ["car"], 95.0),
+        ("Unit 6 AEB event, pedestrian crossing from the right, unit speed 25 mph, dusk.", ["pedestrian"], 40.2),
+    ],
+)  # fmt: skip
+def test_a_call_sign_and_its_noun_again_are_the_ego(text, kinds, kph):
+    assert sorted(_kinds(text)) == sorted(kinds)
+    assert _ego_kph(text) == kph
+
+
+def test_a_second_label_of_the_same_noun_keeps_the_noun_anyone_s():
+    # near miss: two labels of one noun, so "the car" could be either: no mention is read as the ego's
+    r = read("Car 1 was doing 30 mph. Car 2 pulled out from a side road on the right ahead of Car 1.")
+    assert [a.kind for a in r.actors] == ["car"]

@@ -234,6 +234,7 @@ EGO_NOUNS = (
     "our car",
     "my car",
     "host vehicle",
+    "host",  # (a fleet or test log's own vehicle: "host 88 km/h")
     "reporting vehicle",  # (a police or fleet report's own vehicle)
     "sut",  # (system under test)
     "system under test",
