@@ -273,3 +273,37 @@ def test_a_second_label_of_the_same_noun_keeps_the_noun_anyone_s():
     # near miss: two labels of one noun, so "the car" could be either: no mention is read as the ego's
     r = read("Car 1 was doing 30 mph. Car 2 pulled out from a side road on the right ahead of Car 1.")
     assert [a.kind for a in r.actors] == ["car"]
+
+
+# A labelled vehicle marked as the ego in brackets ("Car C (the test vehicle)"): every later mention
+# of its label is the ego.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("At 09:40 Car C (the test vehicle) was going straight over the crossroads at 30 km/h. A cyclist came "
+         "from the right and was hit by Car C.", ["bicycle"], 30.0),
+        ("Truck 3 (ego) turns left at 15 km/h; a pedestrian crosses the side road in front of Truck 3.",
+         ["pedestrian"], 15.0),
+        ("Van B (the subject vehicle) was doing 40 km/h when a jogger stepped out ahead of Van B from the left.",
+         ["pedestrian"], 40.0),
+    ],
+)  # fmt: skip
+def test_a_label_marked_as_the_ego_is_the_ego_wherever_it_is_said(text, kinds, kph):
+    assert sorted(_kinds(text)) == sorted(kinds)
+    assert _ego_kph(text) == kph
+
+
+# A person named and marked as the ego in brackets ("Tom (the ego driver)"): the ego, wherever named.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("Exercise 2. Sanjay (the ego driver) goes straight through the junction at 25 mph. A van coming the "
+         "other way turns right across his path and Sanjay must brake hard.", ["van"], 40.2),
+        ("Lena (ego) drives at 40 km/h on a country lane; a deer runs out from the left in front of Lena and "
+         "Lena brakes hard.", ["pedestrian"], 40.0),
+    ],
+)  # fmt: skip
+def test_a_person_marked_as_the_ego_is_the_ego_wherever_named(text, kinds, kph):
+    assert sorted(_kinds(text)) == sorted(kinds)
+    assert _ego_kph(text) == kph
+    assert not any(b[0] == "sudden_stop" for a in read(text).actors for b in a.behaviours)

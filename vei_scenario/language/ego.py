@@ -162,6 +162,14 @@ def _marked(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]
         return tokens
     for p in _vehicle_phrases(tokens, kind_at, known):
         noun = tokens[p.end - 1]
+        label = tokens[p.end : p.end + 2]
+        if len(label) == 2 and label[1] == "(" and (label[0].isdigit() or (len(label[0]) == 1 and label[0].isalpha())):
+            close = next((k for k in range(p.end + 2, min(p.end + 7, len(tokens))) if tokens[k] == ")"), None)
+            inner = [w for w in tokens[p.end + 2 : close] if w not in DEFINITE] if close else []
+            if inner and _ego_at(inner, 0, kind_at) == len(inner):  # "Car C (the test vehicle)": the label
+                dropped.extend(w for w in tokens[p.head : close + 1] if w.isalpha() and w not in DEFINITE | {"ego"})
+                out = [*tokens[: p.start], "the", "ego", *tokens[close + 1 :]]
+                return _marked(_label_as_ego(out, [noun, label[0]]), kind_at, known, dropped)
         if tokens[p.end : p.end + 1] == ["("]:
             close = next((k for k in range(p.end + 1, min(p.end + 6, len(tokens))) if tokens[k] == ")"), None)
             inner = [w for w in tokens[p.end + 1 : close] if w not in DEFINITE] if close else []
@@ -188,6 +196,40 @@ def _marked(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]
         dropped.extend(w for w in tokens[j : p.end] if w.isalpha() and w not in ("a", "an"))
         out = tokens[:j] + tokens[end:]
         return _marked(_as_ego(out, kind_at, known, noun, dropped), kind_at, known, dropped)
+    return tokens
+
+
+def _label_as_ego(tokens: list[str], label: list[str]) -> list[str]:
+    """``tokens`` with every mention of a vehicle's ``label`` ("car c", "the van b") said "the ego"."""
+    out: list[str] = []
+    k = 0
+    while k < len(tokens):
+        if tokens[k : k + 2] == label:
+            if out and out[-1] in DEFINITE:
+                out.pop()
+            out += ["the", "ego"]
+            k += 2
+            continue
+        out.append(tokens[k])
+        k += 1
+    return out
+
+
+def _marked_person(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """A person named and marked as the ego in brackets ("Maria (the ego driver) proceeds", "Tom (ego)"):
+    the ego, wherever the name is said again."""
+    for k in range(len(tokens) - 2):
+        if tokens[k + 1] != "(" or _person_end(tokens, k, kind_at, known) != k + 1:
+            continue
+        close = next((c for c in range(k + 2, min(k + 7, len(tokens))) if tokens[c] == ")"), None)
+        inner = [w for w in tokens[k + 2 : close] if w not in DEFINITE] if close else []
+        n = _ego_at(inner, 0, kind_at) if inner else 0
+        if not n or inner[n:] not in ([], ["driver"], ["rider"]):
+            continue
+        name = tokens[k]
+        dropped.append(name)
+        out = [*tokens[:k], "the", "ego", *tokens[close + 1 :]]
+        return [x for w in out for x in (["the", "ego"] if w == name else [w])]
     return tokens
 
 
@@ -525,6 +567,7 @@ def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) 
     vehicle before it) and before riders are read (a named person at a wheel is the ego)."""
     tokens = _met_by_narrator(tokens, kind_at, known)
     tokens = _marked(tokens, kind_at, known, dropped)
+    tokens = _marked_person(tokens, kind_at, known, dropped)
     tokens = _relative_own(tokens, kind_at, known, dropped)
     tokens = _boarded(tokens, kind_at, known, dropped)
     tokens = _told_from(tokens, kind_at, known, dropped)
