@@ -307,3 +307,23 @@ def test_a_person_marked_as_the_ego_is_the_ego_wherever_named(text, kinds, kph):
     assert sorted(_kinds(text)) == sorted(kinds)
     assert _ego_kph(text) == kph
     assert not any(b[0] == "sudden_stop" for a in read(text).actors for b in a.behaviours)
+
+
+# A vehicle designated as the ego ("with the policyholder's car as the ego", "treat the taxi as the
+# ego"): it and its owner are the ego wherever said; "as the ego <verb>" is a clause of time, no
+# designation.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("The claimant was doing 30 mph when a bus pulled out from the stop right in front of the car. Use the "
+         "claimant's car as the ego.", ["truck"], 48.3),
+        ("A motorbike cut across the front of the taxi at the lights; the taxi was doing 20 km/h. Treat the taxi "
+         "as the ego.", ["car"], 20.0),
+        ("Jo's hatchback was doing 25 mph when a jogger ran out in front of the hatchback. Take Jo's hatchback as "
+         "the ego, please.", ["pedestrian"], 40.2),
+        ("A bus pulled out in front of the ego at 30 km/h as the ego approached.", ["truck"], 30.0),
+    ],
+)  # fmt: skip
+def test_a_vehicle_designated_as_the_ego_is_the_ego(text, kinds, kph):
+    assert sorted(_kinds(text)) == sorted(kinds)
+    assert _ego_kph(text) == kph

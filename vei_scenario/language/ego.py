@@ -233,6 +233,42 @@ def _marked_person(tokens: list[str], kind_at: KindAt, known: Known, dropped: li
     return tokens
 
 
+def _designated(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """A vehicle designated as the ego ("with the policyholder's car as the ego", "Treat the taxi as the
+    ego."): that vehicle, every "the <noun>" of it and its owner wherever named are the ego; the words
+    that designate it go. "as the ego approached" (a clause of time) designates nothing."""
+    for k in range(1, len(tokens)):
+        n = 3 if tokens[k : k + 3] == ["as", "the", "ego"] else 2 if tokens[k : k + 2] == ["as", "ego"] else 0
+        if not n or (k + n < len(tokens) and tokens[k + n] not in PUNCT):
+            continue
+        p = next((q for q in _vehicle_phrases(tokens, kind_at, known) if q.end == k), None)
+        if p is None:
+            continue
+        noun, start = tokens[p.end - 1], p.start
+        owner: list[str] = []
+        if start >= 2 and tokens[start - 1] == "'s" and tokens[start - 2].isalpha():
+            owner, start = [tokens[start - 2]], start - 2
+            start -= start > 0 and tokens[start - 1] in DEFINITE | {"our", "my"}
+        s, e = _sentence(tokens, k)
+        others = [q for q in _road_users(tokens, kind_at, known) if s <= q.start < e and q.start != p.start]
+        cut = (s, e + (e < len(tokens))) if not others else (start, k + n)
+        dropped.extend(w for w in tokens[cut[0] : cut[1]] if w.isalpha() and w not in DEFINITE | {"ego"})
+        out = [*tokens[: cut[0]], *([] if not others else ["the", "ego"]), *tokens[cut[1] :]]
+        if owner and owner[0] not in ("ego",):
+            said: list[str] = []
+            for i, w in enumerate(out):
+                if w == owner[0] and not (i and out[i - 1] in INDEFINITE):
+                    if said and said[-1] in DEFINITE | {"our", "my"}:
+                        said.pop()
+                    said += ["the", "ego"]
+                    continue
+                said.append(w)
+            out = said
+        out = _as_ego(out, kind_at, known, noun, dropped)
+        return _driver_is_ego(out, kind_at, known, dropped)
+    return tokens
+
+
 def _met_by_narrator(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
     """ "a robotaxi cut me up", "a self-driving car pulled out in front of us": an ego phrase new to
     the text ("a"/"an") that meets the narrator in its sentence is another road user, a car (the
@@ -565,6 +601,7 @@ def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) 
     named it are added to ``dropped``. The reader runs it before :func:`discourse.resolve` (which this
     module's rules use the phrases of): before brackets go (an ego phrase in brackets marks the
     vehicle before it) and before riders are read (a named person at a wheel is the ego)."""
+    tokens = _designated(tokens, kind_at, known, dropped)
     tokens = _met_by_narrator(tokens, kind_at, known)
     tokens = _marked(tokens, kind_at, known, dropped)
     tokens = _marked_person(tokens, kind_at, known, dropped)
