@@ -327,3 +327,20 @@ def test_a_person_marked_as_the_ego_is_the_ego_wherever_named(text, kinds, kph):
 def test_a_vehicle_designated_as_the_ego_is_the_ego(text, kinds, kph):
     assert sorted(_kinds(text)) == sorted(kinds)
     assert _ego_kph(text) == kph
+
+
+# A told-from vehicle named by its owner ("Grandad's Volvo was doing 40 mph"): the ego; one that meets
+# the narrator ("the neighbour's van pulled out in front of us") is someone else.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("Grandad's Volvo was doing 40 mph down the lane when a cyclist pulled out from a drive on the left.",
+         ["bicycle"], 64.4),
+        ("Mum's people carrier was crawling at 10 km/h past the school gates when a child ran out from the "
+         "right.", ["pedestrian"], 10.0),
+        ("The neighbour's van pulled out in front of us at 20 mph.", ["van"], 32.2),
+    ],
+)  # fmt: skip
+def test_a_vehicle_named_by_its_owner_is_the_ego_when_told_from(text, kinds, kph):
+    assert sorted(_kinds(text)) == sorted(kinds)
+    assert _ego_kph(text) == kph

@@ -485,6 +485,9 @@ def _own_speed(tokens: list[str], p, users) -> bool:
     """Whether the mention ``p`` opens its clause and a speed follows it there before anyone else is
     named ("ute doing 45 km/h", "Tanker was doing 50 km/h", "van turning L ... at approx 10 mph")."""
     start = p.start
+    if start >= 2 and tokens[start - 1] == "'s" and tokens[start - 2].isalpha():  # ("Grandad's Volvo")
+        start -= 2
+        start -= start > 0 and tokens[start - 1] in DEFINITE
     for _ in range(2):  # (past its modifiers: "tipper truck", "company hatchback", "pool car")
         w = tokens[start - 1] if start else ""
         if w.isalpha() and w not in BE | PRONOUNS | FIRST_PERSON | NARRATOR_INVOLVED | DEFINITE | INDEFINITE:
@@ -514,6 +517,7 @@ def _told_from(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[s
     first = next((p for p in users if p.kind in VEHICLES | {"ego"} and not _at_wheel(tokens, p)), None)
     if first is None or first.kind == "ego" or first.det not in ("", "the") or _placed(tokens, first):
         return tokens
+    owner = first.start >= 2 and tokens[first.start - 1] == "'s" and kind_at(tokens, first.start - 2) is None
     narrator = FIRST_PERSON | NARRATOR_INVOLVED
     for k, w in enumerate(tokens):  # (a narrator or an ego with a speed of its own is the ego)
         if w in narrator or w in {"ego", "host"}:
@@ -530,7 +534,12 @@ def _told_from(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[s
         s, e = _sentence(tokens, p.start)
         if narrator & set(tokens[s:e]) or any(q.kind == "ego" and s <= q.start < e for q in users):
             return tokens
-    out = _as_ego(tokens, kind_at, known, noun, dropped)
+    out = list(tokens)
+    if owner:  # ("Grandad's Volvo": the owner's words go with it)
+        start = first.start - 2 - (first.start > 2 and tokens[first.start - 3] in DEFINITE)
+        dropped.extend(w for w in tokens[start : first.start] if w.isalpha() and w not in DEFINITE)
+        out[start : first.start] = []
+    out = _as_ego(out, kind_at, known, noun, dropped)
     return _driver_is_ego(out, kind_at, known, dropped)
 
 
