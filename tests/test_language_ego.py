@@ -186,3 +186,161 @@ def test_an_automated_vehicle_or_its_crew_names_the_ego(text, kinds, kph):
 )
 def test_an_automated_vehicle_that_meets_the_narrator_is_another_road_user(text):
     assert _kinds(text) == ["car"]
+
+
+# A report told from a vehicle it never calls the ego: the first vehicle, the subject of its clause
+# with its own speed, named bare or with "the" (never with "a"), with no narrator in its sentence, is
+# the ego; so is every later "the <noun>" and "the driver" (no other motor vehicle named before it).
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("Minibus doing 40 km/h along a wet high street when a pedestrian stepped out from the left. The driver "
+         "braked hard.", ["pedestrian"], 40.0),
+        ("Company hatchback heading through the crossroads at 30 mph, a cyclist ran the red from the right and "
+         "the hatchback clipped his back wheel.", ["bicycle"], 48.3),
+        ("Half eight, wet, tipper truck rolling along at 25 km/h past the school. A kid on a scooter rolled off "
+         "the kerb in front of the truck. Driver stopped in time.", ["e-scooter"], 25.0),
+        ("Two joggers were running along the verge ahead of the tanker. Tanker was doing 50 km/h; the driver "
+         "eased out and passed them.", ["pedestrian", "pedestrian"], 50.0),
+        ("Driver was holding 80 km/h on the motorway when a van cut in 10 m ahead. Our driver braked.",
+         ["van"], 80.0),
+    ],
+)  # fmt: skip
+def test_the_vehicle_a_report_is_told_from_is_the_ego(text, kinds, kph):
+    assert sorted(_kinds(text)) == sorted(kinds)
+    assert _ego_kph(text) == kph
+
+
+# Near misses: a vehicle new to the text ("a van"), one that meets the narrator in its sentence, or
+# one placed relative to someone, is another road user; a narrator with its own speed is the ego.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("A van travelling at 40 km/h pulls out of a side road on the left in front of the ego.", ["van"], None),
+        ("Coach pulled away from the stop right in front of us while we were doing 30 km/h.", ["truck"], 30.0),
+        ("Lorry doing 70 km/h drifts into my lane.", ["truck"], None),
+        ("The car ahead brakes hard at 60 km/h and a cyclist swerves out.", ["car", "bicycle"], None),
+        ("Pickup towing a caravan at 50 km/h overtook us; we were doing 40 km/h.", ["van"], 40.0),
+    ],
+)  # fmt: skip
+def test_a_vehicle_that_meets_the_narrator_or_is_new_is_no_ego(text, kinds, kph):
+    assert sorted(_kinds(text)) == sorted(kinds)
+    assert _ego_kph(text) == kph
+
+
+# The vehicle the ego's subject is in, in its own clause, is the ego's vehicle; "the driver" and
+# "the vehicle" after it are the ego while no other motor vehicle is named.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("Our driver was pulling out of the depot in the minibus at 15 km/h when a cyclist came along the "
+         "pavement on the right. The driver braked.", ["bicycle"], 15.0),
+        ("I was heading home in the taxi at 30 mph when a jogger stepped out in front of the taxi.",
+         ["pedestrian"], 48.3),
+        ("We came round the bend in the camper at 40 km/h and a deer was standing in front of the vehicle.",
+         ["pedestrian"], 40.0),
+        # near misses: a place named by a vehicle noun, and a vehicle the ego is behind
+        ("I was waiting in the car park at 5 km/h when a van reversed into me.", ["van"], 5.0),
+        ("We were stuck in traffic behind a bus at 10 km/h when a cyclist squeezed past.",
+         ["truck", "bicycle"], 10.0),
+    ],
+)  # fmt: skip
+def test_the_vehicle_the_ego_is_in_is_the_ego(text, kinds, kph):
+    assert sorted(_kinds(text)) == sorted(kinds)
+    assert _ego_kph(text) == kph
+
+
+# A fleet log opened by its own vehicle's call sign ("Coach 31 | ...", "TRK-09 | ...", "Unit 6 ..."):
+# that vehicle is the ego, and so is the same noun said again bare or with "the" ("coach pulled
+# away"); "host" alone is the host vehicle.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("Coach 31 | 08:10 | pedestrian stepped off the kerb on the left as coach pulled away from the stop at "
+         "15 km/h", ["pedestrian"], 15.0),
+        ("SHIFT LOG | Van 4 | cyclist came out of a side road on the right, van doing 30 km/h, braked, no contact",
+         ["bicycle"], 30.0),
+        ("EVENT 77 | TRK-09 | car from the left lane cut in 8 m ahead | host 95 km/h | dry", ["car"], 95.0),
+        ("Unit 6 AEB event, pedestrian crossing from the right, unit speed 25 mph, dusk.", ["pedestrian"], 40.2),
+    ],
+)  # fmt: skip
+def test_a_call_sign_and_its_noun_again_are_the_ego(text, kinds, kph):
+    assert sorted(_kinds(text)) == sorted(kinds)
+    assert _ego_kph(text) == kph
+
+
+def test_a_second_label_of_the_same_noun_keeps_the_noun_anyone_s():
+    # near miss: two labels of one noun, so "the car" could be either: no mention is read as the ego's
+    r = read("Car 1 was doing 30 mph. Car 2 pulled out from a side road on the right ahead of Car 1.")
+    assert [a.kind for a in r.actors] == ["car"]
+
+
+# A labelled vehicle marked as the ego in brackets ("Car C (the test vehicle)"): every later mention
+# of its label is the ego.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("At 09:40 Car C (the test vehicle) was going straight over the crossroads at 30 km/h. A cyclist came "
+         "from the right and was hit by Car C.", ["bicycle"], 30.0),
+        ("Truck 3 (ego) turns left at 15 km/h; a pedestrian crosses the side road in front of Truck 3.",
+         ["pedestrian"], 15.0),
+        ("Van B (the subject vehicle) was doing 40 km/h when a jogger stepped out ahead of Van B from the left.",
+         ["pedestrian"], 40.0),
+    ],
+)  # fmt: skip
+def test_a_label_marked_as_the_ego_is_the_ego_wherever_it_is_said(text, kinds, kph):
+    assert sorted(_kinds(text)) == sorted(kinds)
+    assert _ego_kph(text) == kph
+
+
+# A person named and marked as the ego in brackets ("Tom (the ego driver)"): the ego, wherever named.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("Exercise 2. Sanjay (the ego driver) goes straight through the junction at 25 mph. A van coming the "
+         "other way turns right across his path and Sanjay must brake hard.", ["van"], 40.2),
+        ("Lena (ego) drives at 40 km/h on a country lane; a deer runs out from the left in front of Lena and "
+         "Lena brakes hard.", ["pedestrian"], 40.0),
+    ],
+)  # fmt: skip
+def test_a_person_marked_as_the_ego_is_the_ego_wherever_named(text, kinds, kph):
+    assert sorted(_kinds(text)) == sorted(kinds)
+    assert _ego_kph(text) == kph
+    assert not any(b[0] == "sudden_stop" for a in read(text).actors for b in a.behaviours)
+
+
+# A vehicle designated as the ego ("with the policyholder's car as the ego", "treat the taxi as the
+# ego"): it and its owner are the ego wherever said; "as the ego <verb>" is a clause of time, no
+# designation.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("The claimant was doing 30 mph when a bus pulled out from the stop right in front of the car. Use the "
+         "claimant's car as the ego.", ["truck"], 48.3),
+        ("A motorbike cut across the front of the taxi at the lights; the taxi was doing 20 km/h. Treat the taxi "
+         "as the ego.", ["car"], 20.0),
+        ("Jo's hatchback was doing 25 mph when a jogger ran out in front of the hatchback. Take Jo's hatchback as "
+         "the ego, please.", ["pedestrian"], 40.2),
+        ("A bus pulled out in front of the ego at 30 km/h as the ego approached.", ["truck"], 30.0),
+    ],
+)  # fmt: skip
+def test_a_vehicle_designated_as_the_ego_is_the_ego(text, kinds, kph):
+    assert sorted(_kinds(text)) == sorted(kinds)
+    assert _ego_kph(text) == kph
+
+
+# A told-from vehicle named by its owner ("Grandad's Volvo was doing 40 mph"): the ego; one that meets
+# the narrator ("the neighbour's van pulled out in front of us") is someone else.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("Grandad's Volvo was doing 40 mph down the lane when a cyclist pulled out from a drive on the left.",
+         ["bicycle"], 64.4),
+        ("Mum's people carrier was crawling at 10 km/h past the school gates when a child ran out from the "
+         "right.", ["pedestrian"], 10.0),
+        ("The neighbour's van pulled out in front of us at 20 mph.", ["van"], 32.2),
+    ],
+)  # fmt: skip
+def test_a_vehicle_named_by_its_owner_is_the_ego_when_told_from(text, kinds, kph):
+    assert sorted(_kinds(text)) == sorted(kinds)
+    assert _ego_kph(text) == kph

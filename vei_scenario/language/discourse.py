@@ -1216,6 +1216,28 @@ def _vehicle_labels(tokens: list[str], kind_at: KindAt, known: Known) -> list[st
             continue
         out.append(tokens[i])
         i += 1
+    return _label_noun_again(out, ego, names)
+
+
+def _label_noun_again(tokens: list[str], ego: tuple[str, str] | None, names: list[tuple[str, str]]) -> list[str]:
+    """A log opened by its own vehicle's call sign ("Van 07 | ... van turning left", "Unit 14 ... unit
+    speed 54 mph"): the noun of the ego's label said again bare or with "the" is the ego, where no other
+    label has that noun and nothing introduces another of it ("a van")."""
+    if ego is None or any(n_m[0] == ego[0] and n_m != ego for n_m in names):
+        return tokens
+    noun = ego[0]
+    if any(tokens[k] == noun and k and tokens[k - 1] in INDEFINITE for k in range(len(tokens))):
+        return tokens
+    out: list[str] = []
+    seen = False
+    for k, w in enumerate(tokens):
+        seen = seen or tokens[k : k + 2] == ["the", "ego"]
+        if w == noun and seen and tokens[k + 1 : k + 2] != ["of"] and (not k or tokens[k - 1] not in POSSESSIVE):
+            if out and out[-1] == "the":
+                out.pop()
+            out += ["the", "ego"]
+            continue
+        out.append(w)
     return out
 
 

@@ -57,7 +57,9 @@ AT_WHEEL = frozenset({"driver", "rider", "motorist"})
 PRONOUNS = frozenset({"he", "she", "it", "they", "him", "her", "them", "who", "you", "one", "someone"})
 SPEED_UNITS = frozenset({"mph", "km/h", "m/s"})
 #: Words of where a vehicle is relative to another ("the car ahead", "parked cars"): not the ego.
-PLACED = frozenset({"ahead", "behind", "parked", "oncoming", "following", "alongside"})
+PLACED = frozenset(
+    {"ahead", "behind", "parked", "oncoming", "following", "alongside", "lead", "leading", "preceding", "trailing"}
+)
 
 
 def _lemma_in(word: str, wanted: frozenset[str]) -> bool:
@@ -160,6 +162,14 @@ def _marked(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]
         return tokens
     for p in _vehicle_phrases(tokens, kind_at, known):
         noun = tokens[p.end - 1]
+        label = tokens[p.end : p.end + 2]
+        if len(label) == 2 and label[1] == "(" and (label[0].isdigit() or (len(label[0]) == 1 and label[0].isalpha())):
+            close = next((k for k in range(p.end + 2, min(p.end + 7, len(tokens))) if tokens[k] == ")"), None)
+            inner = [w for w in tokens[p.end + 2 : close] if w not in DEFINITE] if close else []
+            if inner and _ego_at(inner, 0, kind_at) == len(inner):  # "Car C (the test vehicle)": the label
+                dropped.extend(w for w in tokens[p.head : close + 1] if w.isalpha() and w not in DEFINITE | {"ego"})
+                out = [*tokens[: p.start], "the", "ego", *tokens[close + 1 :]]
+                return _marked(_label_as_ego(out, [noun, label[0]]), kind_at, known, dropped)
         if tokens[p.end : p.end + 1] == ["("]:
             close = next((k for k in range(p.end + 1, min(p.end + 6, len(tokens))) if tokens[k] == ")"), None)
             inner = [w for w in tokens[p.end + 1 : close] if w not in DEFINITE] if close else []
@@ -186,6 +196,76 @@ def _marked(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]
         dropped.extend(w for w in tokens[j : p.end] if w.isalpha() and w not in ("a", "an"))
         out = tokens[:j] + tokens[end:]
         return _marked(_as_ego(out, kind_at, known, noun, dropped), kind_at, known, dropped)
+    return tokens
+
+
+def _label_as_ego(tokens: list[str], label: list[str]) -> list[str]:
+    """``tokens`` with every mention of a vehicle's ``label`` ("car c", "the van b") said "the ego"."""
+    out: list[str] = []
+    k = 0
+    while k < len(tokens):
+        if tokens[k : k + 2] == label:
+            if out and out[-1] in DEFINITE:
+                out.pop()
+            out += ["the", "ego"]
+            k += 2
+            continue
+        out.append(tokens[k])
+        k += 1
+    return out
+
+
+def _marked_person(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """A person named and marked as the ego in brackets ("Maria (the ego driver) proceeds", "Tom (ego)"):
+    the ego, wherever the name is said again."""
+    for k in range(len(tokens) - 2):
+        if tokens[k + 1] != "(" or _person_end(tokens, k, kind_at, known) != k + 1:
+            continue
+        close = next((c for c in range(k + 2, min(k + 7, len(tokens))) if tokens[c] == ")"), None)
+        inner = [w for w in tokens[k + 2 : close] if w not in DEFINITE] if close else []
+        n = _ego_at(inner, 0, kind_at) if inner else 0
+        if not n or inner[n:] not in ([], ["driver"], ["rider"]):
+            continue
+        name = tokens[k]
+        dropped.append(name)
+        out = [*tokens[:k], "the", "ego", *tokens[close + 1 :]]
+        return [x for w in out for x in (["the", "ego"] if w == name else [w])]
+    return tokens
+
+
+def _designated(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """A vehicle designated as the ego ("with the policyholder's car as the ego", "Treat the taxi as the
+    ego."): that vehicle, every "the <noun>" of it and its owner wherever named are the ego; the words
+    that designate it go. "as the ego approached" (a clause of time) designates nothing."""
+    for k in range(1, len(tokens)):
+        n = 3 if tokens[k : k + 3] == ["as", "the", "ego"] else 2 if tokens[k : k + 2] == ["as", "ego"] else 0
+        if not n or (k + n < len(tokens) and tokens[k + n] not in PUNCT):
+            continue
+        p = next((q for q in _vehicle_phrases(tokens, kind_at, known) if q.end == k), None)
+        if p is None:
+            continue
+        noun, start = tokens[p.end - 1], p.start
+        owner: list[str] = []
+        if start >= 2 and tokens[start - 1] == "'s" and tokens[start - 2].isalpha():
+            owner, start = [tokens[start - 2]], start - 2
+            start -= start > 0 and tokens[start - 1] in DEFINITE | {"our", "my"}
+        s, e = _sentence(tokens, k)
+        others = [q for q in _road_users(tokens, kind_at, known) if s <= q.start < e and q.start != p.start]
+        cut = (s, e + (e < len(tokens))) if not others else (start, k + n)
+        dropped.extend(w for w in tokens[cut[0] : cut[1]] if w.isalpha() and w not in DEFINITE | {"ego"})
+        out = [*tokens[: cut[0]], *([] if not others else ["the", "ego"]), *tokens[cut[1] :]]
+        if owner and owner[0] not in ("ego",):
+            said: list[str] = []
+            for i, w in enumerate(out):
+                if w == owner[0] and not (i and out[i - 1] in INDEFINITE):
+                    if said and said[-1] in DEFINITE | {"our", "my"}:
+                        said.pop()
+                    said += ["the", "ego"]
+                    continue
+                said.append(w)
+            out = said
+        out = _as_ego(out, kind_at, known, noun, dropped)
+        return _driver_is_ego(out, kind_at, known, dropped)
     return tokens
 
 
@@ -387,16 +467,157 @@ def _struck(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]
     return tokens
 
 
+#: Words that may open the clause a told-from vehicle is the subject of (a field or heading before it:
+#: "Near miss - prime mover turning", "7:15 am, ute doing 45 km/h").
+CLAUSE_OPENING = PUNCT | {"-", "and"}
+
+
+def _sentence(tokens: list[str], i: int) -> tuple[int, int]:
+    s, e = i, i
+    while s > 0 and tokens[s - 1] not in SENTENCE_END:
+        s -= 1
+    while e < len(tokens) and tokens[e] not in SENTENCE_END:
+        e += 1
+    return s, e
+
+
+def _own_speed(tokens: list[str], p, users) -> bool:
+    """Whether the mention ``p`` opens its clause and a speed follows it there before anyone else is
+    named ("ute doing 45 km/h", "Tanker was doing 50 km/h", "van turning L ... at approx 10 mph")."""
+    start = p.start
+    if start >= 2 and tokens[start - 1] == "'s" and tokens[start - 2].isalpha():  # ("Grandad's Volvo")
+        start -= 2
+        start -= start > 0 and tokens[start - 1] in DEFINITE
+    for _ in range(2):  # (past its modifiers: "tipper truck", "company hatchback", "pool car")
+        w = tokens[start - 1] if start else ""
+        if w.isalpha() and w not in BE | PRONOUNS | FIRST_PERSON | NARRATOR_INVOLVED | DEFINITE | INDEFINITE:
+            if not lemmas(w) or {"NOUN", "ADJ"} & set(lemmas(w)):
+                start -= 1
+    if start and tokens[start - 1] not in CLAUSE_OPENING:
+        return False
+    _, e = _sentence(tokens, p.end)
+    e = next((k for k in range(p.end, e) if tokens[k] == ","), e)  # (its clause: "Lead van brakes, 70 km/h")
+    nxt = min((q.start for q in users if q.start >= p.end), default=e)
+    return any(w in SPEED_UNITS for w in tokens[p.end : min(e, nxt)])
+
+
+def _told_from(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """A report told from a vehicle it never calls the ego ("Ute travelling at 60 km/h ...", "Pool car
+    entering a roundabout at 20 km/h ... our driver had to stop", "Driver was sitting on 100 km/h"):
+    the first vehicle named (before any mention of the ego), bare or with "the" and never with "a",
+    not placed relative to someone, that opens a clause with its own speed in a sentence with no
+    narrator in it, is the ego, and so is every later "the <noun>". A vehicle that meets the narrator
+    in its sentence ("Bus pulled out in front of us") or any vehicle where the narrator or the ego
+    has a speed of its own, is someone else."""
+    from vei_scenario.language.discourse import _labels, _singular
+
+    if _labels(tokens, kind_at, known):
+        return tokens  # (a report's labels say who the ego is: "Vehicle A was travelling ...")
+    users = _road_users(tokens, kind_at, known)
+    first = next((p for p in users if p.kind in VEHICLES | {"ego"} and not _at_wheel(tokens, p)), None)
+    if first is None or first.kind == "ego" or first.det not in ("", "the") or _placed(tokens, first):
+        return tokens
+    owner = first.start >= 2 and tokens[first.start - 1] == "'s" and kind_at(tokens, first.start - 2) is None
+    narrator = FIRST_PERSON | NARRATOR_INVOLVED
+    for k, w in enumerate(tokens):  # (a narrator or an ego with a speed of its own is the ego)
+        if w in narrator or w in {"ego", "host"}:
+            s, e = _sentence(tokens, k)
+            if any(u in SPEED_UNITS for u in tokens[k:e]) and not any(k < q.start < e for q in users):
+                return tokens
+    noun = tokens[first.end - 1]
+    mentions = _referents(tokens, [p for p in users if p.kind in VEHICLES]).get(noun)
+    if not mentions or not any(p.det in ("", "the") and _own_speed(tokens, p, users) for p in mentions):
+        return tokens
+    if not _singular(noun) or (first.start and tokens[first.start - 1] in ("both", "two", "all")):
+        return tokens
+    for p in mentions:  # (one that meets the narrator or the ego in its sentence is someone else)
+        s, e = _sentence(tokens, p.start)
+        if narrator & set(tokens[s:e]) or any(q.kind == "ego" and s <= q.start < e for q in users):
+            return tokens
+    out = list(tokens)
+    if owner:  # ("Grandad's Volvo": the owner's words go with it)
+        start = first.start - 2 - (first.start > 2 and tokens[first.start - 3] in DEFINITE)
+        dropped.extend(w for w in tokens[start : first.start] if w.isalpha() and w not in DEFINITE)
+        out[start : first.start] = []
+    out = _as_ego(out, kind_at, known, noun, dropped)
+    return _driver_is_ego(out, kind_at, known, dropped)
+
+
+def _compound(tokens: list[str], p) -> bool:
+    """Whether the noun after ``p`` makes it a modifier ("car park", "bus lane"), no vehicle."""
+    w = tokens[p.end] if p.end < len(tokens) else ""
+    return w.isalpha() and set(lemmas(w)) == {"NOUN"}
+
+
+def _ego_aboard(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "our driver was entering a roundabout in the Hilux", "I was heading home in my cab", "we came
+    through in the minibus": a vehicle the ego's subject is in, in its own clause, is the ego's
+    vehicle, the ego; so is every later "the <noun>", and "the driver" (no other motor vehicle named
+    before it)."""
+    users = _road_users(tokens, kind_at, known)
+    for k, w in enumerate(tokens):
+        if w not in ("ego", "i", "we") or (k and tokens[k - 1] not in CLAUSE_OPENING | {"the"}):
+            continue
+        _, e = _sentence(tokens, k)
+        nxt = next((q for q in users if q.start > k), None)
+        if nxt is None or nxt.start >= e or nxt.kind not in VEHICLES or _placed(tokens, nxt) or _compound(tokens, nxt):
+            continue
+        if tokens[nxt.start - 1] not in ("in", "inside", "aboard") or nxt.det not in {"", "a", "an"} | DEFINITE:
+            continue
+        if any(t in PUNCT for t in tokens[k : nxt.start]) or (w != "ego" and nxt.det in INDEFINITE):
+            continue  # ("we were in a hire car, a Fiat": discourse reads the narrator's vehicle and its name)
+        from vei_scenario.language.discourse import _apposition_end
+
+        noun = tokens[nxt.end - 1]
+        end = _apposition_end(tokens, nxt.end, kind_at, known) or nxt.end  # ("in the van, an old Ford,")
+        dropped.extend(x for x in tokens[nxt.start - 1 : end] if x.isalpha())
+        out = [*tokens[: nxt.start - 1], *tokens[end:]]
+        return _driver_is_ego(_as_ego(out, kind_at, known, noun, dropped), kind_at, known, dropped)
+    return tokens
+
+
+#: Nouns that name the ego again once it is the vehicle a report is told from, while no other motor
+#: vehicle has been named: its driver ("the driver", "Driver braked") and a general vehicle noun
+#: ("in front of the vehicle", "behind the car").
+SAID_AGAIN = {"driver": ("", "the"), "vehicle": ("the",), "car": ("the",)}
+
+
+def _driver_is_ego(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """Once the ego is the vehicle a report is told from, "the driver" (or "driver") is its driver
+    and "the vehicle" is it, until another motor vehicle is named: a walker or rider has no driver."""
+    out = list(tokens)
+    for p in reversed(_road_users(out, kind_at, known)):
+        noun = out[p.end - 1]
+        if p.det not in SAID_AGAIN.get(noun, ()) or p.end - p.head != 1 or out[p.end : p.end + 1] == ["of"]:
+            continue
+        if (p.start and out[p.start - 1] == "'s") or _placed(out, p):
+            continue
+        before = [
+            q
+            for q in _road_users(out[: p.start], kind_at, known)
+            if q.kind in VEHICLES and q.det not in SAID_AGAIN.get(out[q.end - 1], ()) and not _placed(out, q)
+        ]
+        if before:
+            continue
+        dropped.extend(w for w in out[p.start : p.end] if w not in DEFINITE)
+        out[p.start : p.end] = ["the", "ego"]
+    return out
+
+
 def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """``tokens`` with the road user the text is told from said "the ego" where the text names it by
     a role, by its driver or in the third person (see the module's docstring); the words that only
     named it are added to ``dropped``. The reader runs it before :func:`discourse.resolve` (which this
     module's rules use the phrases of): before brackets go (an ego phrase in brackets marks the
     vehicle before it) and before riders are read (a named person at a wheel is the ego)."""
+    tokens = _designated(tokens, kind_at, known, dropped)
     tokens = _met_by_narrator(tokens, kind_at, known)
     tokens = _marked(tokens, kind_at, known, dropped)
+    tokens = _marked_person(tokens, kind_at, known, dropped)
     tokens = _relative_own(tokens, kind_at, known, dropped)
     tokens = _boarded(tokens, kind_at, known, dropped)
+    tokens = _told_from(tokens, kind_at, known, dropped)
+    tokens = _ego_aboard(tokens, kind_at, known, dropped)
     if names_ego(tokens, kind_at, known):
         return tokens
     from vei_scenario.language.discourse import _labels

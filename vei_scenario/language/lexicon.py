@@ -159,6 +159,7 @@ ACTOR_NOUNS = {
         "road train",  # (a tractor unit with two or more trailers)
         "b-double",
         "b-train",
+        "prime mover",  # (an articulated truck's tractor unit, Australian and NZ usage)
         *TRUCK_MAKES,
     ),
     "van": (
@@ -174,6 +175,8 @@ ACTOR_NOUNS = {
         "pick-up truck",
         "people carrier",
         "mpv",
+        "ute",  # (a utility vehicle: a pickup, Australian and NZ usage)
+        "utility vehicle",
         *VAN_MODELS,
     ),
 }
@@ -253,6 +256,7 @@ EGO_NOUNS = (
     "our car",
     "my car",
     "host vehicle",
+    "host",  # (a fleet or test log's own vehicle: "host 88 km/h")
     "reporting vehicle",  # (a police or fleet report's own vehicle)
     "sut",  # (system under test)
     "system under test",

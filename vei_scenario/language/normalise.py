@@ -116,6 +116,8 @@ _APPOSITION = re.compile(
 
 #: A party's code said again in brackets after its name ("Vehicle 2 (V2)"): the apposition follows it.
 _CODE_AGAIN = re.compile(r"\s*\(\s*[a-z]{1,3}\s*-?\s*[2-9]\s*\)")
+#: Words that name the ego or a first code ("Vehicle 1"): a code opening such a text is another party.
+_NAMES_EGO = re.compile(r"\b(?:i|we|me|us|my|our|ego|(?:vehicle|veh|unit|car|v|d)\s*-?\s*(?:1|one))\b")
 #: What follows a call sign opening a radio report ("Unit 4 to control", "Car 12 calling base").
 _CALLING = re.compile(r"\s*,?\s*(?:to|calling|for)\b")
 
@@ -152,8 +154,9 @@ def _other_parties(text: str, known_noun) -> str:
     for m in _OTHER.finditer(text):
         if m.start() < pos:
             continue  # (inside what was read already: "(V2)" after "Vehicle 2")
-        if not text[: m.start()].strip(" -*,.") and _CALLING.match(text, m.end()):
-            continue  # "Unit 4 to control, ...": the caller's own vehicle (read as the ego by discourse)
+        opening = not re.sub(r"\[[^\]]*\]", "", text[: m.start()]).strip(" -*,.:")
+        if opening and (_CALLING.match(text, m.end()) or not _NAMES_EGO.search(text)):
+            continue  # "Unit 4 to control, ...", "Unit 6 AEB event, ...": the report's own vehicle (discourse)
         code = m.group(1) or m.group(2) or m.group(0).split()[-1]
         out.append(text[pos : m.start()])
         pos = m.end()
@@ -219,6 +222,9 @@ _SHORTHAND = [
     (re.compile(r"\b(?:jct|jcn|junc)\b\.?"), "junction"),
     (re.compile(r"\bvehs\b\.?"), "vehicles"),
     (re.compile(r"\bveh\b\.?"), "vehicle"),
+    (re.compile(r"\btrk\b\.?"), "truck"),
+    # a fleet call sign written as a code ("VAN-112", "TRK-22"): the noun and its number, as "Van 07" is
+    (re.compile(r"\b(van|bus|truck|trk|car|coach|unit|cab|taxi)-(\d{1,4})\b(?!\s*(?:m|km|mph|s)\b)"), r"\1 \2"),
     (re.compile(r"\bpeds?\b"), "pedestrian"),
     (re.compile(r"\b(?:lt|lite)\b(?= (?:traffic|rain|snow|fog)\b)"), "light"),
     (re.compile(r"\b(?:hvy|hevy)\b"), "heavy"),
