@@ -51,7 +51,7 @@ from vei_scenario.language.motion import (
     participle_of_state,
 )
 from vei_scenario.language.ncap import rewrite as ncap_rewrite
-from vei_scenario.language.normalise import normalise
+from vei_scenario.language.normalise import NUMBER_WORDS, normalise
 from vei_scenario.language.outcome import decide, outcome_cues
 from vei_scenario.language.reading import ActorSpec, NotUnderstood, Reading
 from vei_scenario.language.route import ego_route
@@ -295,7 +295,7 @@ def _speller():
 
     # (and the outcome's words, read from the whole text)
     outcome = {"collision", "collide", "crash", "accident", "contact", "afternoon", "morning", "evening", "night"}
-    return Speller({w for key in TABLE for w in key} | FUNCTION_WORDS | outcome)
+    return Speller({w for key in TABLE for w in key} | FUNCTION_WORDS | outcome | NUMBER_WORDS)
 
 
 def _tokens(text: str, spell: bool = True, brackets: bool = False) -> list[str]:
@@ -1798,10 +1798,12 @@ def read(text: str) -> Reading:
         if m.slot == "weather" or (m.slot == "time" and m.prev not in S.BOUNDS)  # (not "since midnight")
     ]
     clock = S.dotted_clock(S.without_bounds(said)) or stated_clock(S.without_bounds(said))
-    clock = S.twelve_hour(clock, S.without_bounds(said), [v for k, w, v in said_as if k == "time"])
+    clock = S.twelve_hour(clock, S.without_bounds(said), [v for k, w, v in said_as if k == "time"]) or S.clock_in_words(
+        S.without_bounds(said), [v for k, w, v in said_as if k == "time"]
+    )
     r.time = S.time_of_day([(w, v) for k, w, v in said_as if k == "time"], clock) or r.time
     r.weather = S.sky_over_surface([(w, v) for k, w, v in said_as if k == "weather"]) or r.weather or S.sunny(said)
-    r.density = S.density(said) or r.density
+    r.density = S.density(said, r.density)
     if r.weather in (None, "rain") and stated_heavy_rain(said):
         r.weather = "heavy_rain"
     return r
