@@ -377,3 +377,60 @@ def test_a_contact_denied_as_a_requirement_is_a_safe_outcome(text, intent):
 )
 def test_passing_wide_is_a_safe_pass(text, intent):
     assert _intent(text) == intent
+
+
+# a one-word verdict ends its sentence ("Clear." after the event); in a list of notes ("Clear, 3 pm") it is the sky
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("A van cut in ahead of the test car and braked. No contact. Clear, dry, 4 pm.", "near_miss"),
+        ("Sunny, clear, light traffic; a moped pulls out in front of me.", None),
+        ("A cyclist waited at the kerb and the ego went by. Clear.", "safe"),
+    ],
+    ids=["clear-in-notes", "clear-in-a-list", "clear-verdict"],
+)
+def test_a_one_word_verdict_ends_its_sentence(text, intent):
+    assert _intent(text) == intent
+
+
+# a pass with a strong degree of closeness ("passed so close", "overtook far too close"): a near miss
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("A taxi overtook us really close on the bridge.", "near_miss"),
+        ("The lorry went by me far too close, then pulled in.", "near_miss"),
+        ("A van squeezed past so close that I felt the wind.", "near_miss"),
+        ("The cyclist rode too close to the kerb and a car passed him.", None),
+    ],
+    ids=["overtook-really-close", "went-by-too-close", "squeezed-so-close", "close-to-the-kerb"],
+)
+def test_a_pass_said_too_close_is_a_near_miss(text, intent):
+    assert _intent(text) == intent
+
+
+# going only once the way is clear is a safe pass
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("The learner only pulled out once the road was clear.", "safe"),
+        ("The bus held back until it was clear, then overtook the cyclist.", "safe"),
+        ("It was clear and bright when a van cut across in front of me.", None),
+    ],
+    ids=["once-the-road-was-clear", "until-it-was-clear", "clear-and-bright"],
+)
+def test_going_once_the_way_is_clear_is_safe(text, intent):
+    assert _intent(text) == intent
+
+
+# meeting someone head-on is a collision; coming head-on is only a direction
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("On the bend the van met the tractor head-on.", "collision"),
+        ("They met head on in the middle of the bridge.", "collision"),
+        ("A lorry came head-on towards us in our lane.", None),
+    ],
+    ids=["met-the-tractor-head-on", "met-head-on", "came-head-on"],
+)
+def test_meeting_head_on_is_a_collision(text, intent):
+    assert _intent(text) == intent

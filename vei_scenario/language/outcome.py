@@ -264,6 +264,12 @@ def _is_contact(words: list[str], i: int) -> bool:
         return _meets_road_user(words[i + 2 : i + 5]) and not (nxt == "down" and lem & {"run"} and "road" in words)
     if lem & {"make", "come"} and nxt == "contact":
         return True
+    if (
+        lem & {"meet"}
+        and _is_verb(w)
+        and ("head-on" in words[i + 1 : i + 6] or "head on" in " ".join(words[i + 1 : i + 7]))
+    ):
+        return True  # ("met the tractor head-on", "they met head on")
     if lem & _CONTACT_VERBS and _is_verb(w) and _verbal(words, i):
         if w.startswith("crash") and nxt in _COMPOUND_HEADS:
             return False
@@ -537,6 +543,18 @@ def _margin(words: list[str], i: int) -> str | None:
     return None
 
 
+def _passed_close(before: list[str], after: list[str]) -> bool:
+    """A pass said close with a strong degree ("overtook us really close", "went by far too close",
+    "squeezed past so close"): ``before`` its sentence up to "close", ``after`` the next words; not
+    closeness to a place ("too close to the kerb")."""
+    if not before or before[-1] not in ("so", "too", "really", "very", "dangerously", "uncomfortably", "bloody"):
+        return False
+    if after[:1] == ["to"] and after[1:2] and after[1] not in _PERSON_OBJECTS | _EGO_HEADS:
+        return False
+    passing = {"pass", "overtake", "go", "squeeze", "come", "cut", "swing", "drive", "ride", "shave"}
+    return any(_lemmas(x) & passing for x in before[-7:-1])
+
+
 def _passed_wide(before: list[str], after: list[str]) -> bool:
     """ "wide" said of a pass ("passed wide", "overtook him nice and wide", "went round wide of her"):
     ``before`` its sentence up to it, ``after`` the rest of its clause; not "a wide load"."""
@@ -693,8 +711,17 @@ def outcome_cues(said: str) -> list[Cue]:
     cues: list[Cue] = []
     previous: str | None = None
     sentence: list[str] = []
-    for clause in _clauses(tokens):
+    clauses = _clauses(tokens)
+    raw = [ws for ws, _ in split(tokens, _BREAK_PUNCT - {","})]  # (its sentences with their conjunctions)
+    said_in, cursor = -1, 0
+    for n, clause in enumerate(clauses):
         words = clause.words
+        ends_sentence = n + 1 == len(clauses) or clauses[n + 1].first_of_sentence
+        if clause.first_of_sentence:
+            said_in, cursor = min(said_in + 1, len(raw) - 1), 0
+        whole = raw[said_in] if raw else words
+        at = next((k for k in range(cursor, len(whole)) if whole[k : k + len(words)] == words), cursor)
+        cursor = at + len(words)
         sentence = words if clause.first_of_sentence else sentence + words
         own = _subject(words)
         clause.inherited = None if clause.first_of_sentence else previous
@@ -767,7 +794,14 @@ def outcome_cues(said: str) -> list[Cue]:
                 add("safe")  # ("nothing happened", "Nothing dramatic": nothing of note)
             if w in _CLOSE and _predicate(words, i):
                 add("safe" if _denied_before(words, i) else "close")  # ("nobody close"; "it was close")
-            if len(words) == 1 and w in ("clean", "clear", "close", "tight"):
+            before = whole[: at + i]  # (its sentence up to this word, with its conjunctions)
+            if w == "clear" and i > 0 and words[i - 1] in _COPULA and set(before[-8:]) & {"once", "until", "till"}:
+                add("safe")  # ("pulled out once the road was clear", "held back until it was clear")
+                continue
+            if w in ("close", "closely") and _passed_close(before, words[i + 1 : i + 3]):
+                add("close")  # ("overtook us really close", "went by far too close")
+                continue
+            if len(words) == 1 and w in ("clean", "close", "tight") or (words == ["clear"] and ends_sentence):
                 add("safe" if w in ("clean", "clear") else "close")  # (a one-word verdict: "Clean.", "but close")
             if _is_verb(w) and _subject_is_ego(words, i, clause, story):
                 act = _ego_acts(words, i)
