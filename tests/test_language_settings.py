@@ -531,3 +531,18 @@ def test_lanes_said_per_direction(text, lanes):
 )
 def test_a_road_user_stopping_after_a_contrast_leaves_the_weather(text, weather):
     assert read(text).weather == weather
+
+
+# "the crossing" after a pedestrian crossing is named is that crossing (a known mention), not a junction
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("A long straight road with a pelican crossing. A man waits at the crossing and lets the ego go by.", None),
+        ("There is a puffin crossing outside the shop; a woman stands at the crossing and lets me pass.", None),
+        ("On the high street's zebra, a boy waits at the crossing and lets the ego go past.", None),
+        ("A van waits at the crossing and lets the ego go past.", "crossroad"),
+    ],
+    ids=["pelican", "puffin", "zebra-alone", "no-crossing-named"],
+)
+def test_the_crossing_after_a_pedestrian_crossing_is_that_crossing(text, kind):
+    assert read(text).map_kind in ((kind, "straight") if kind is None else (kind,))

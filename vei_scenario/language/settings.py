@@ -434,6 +434,16 @@ def turns_into_a_road(text: str, said: str) -> bool:
     )
 
 
+#: Words that make a crossing one for people on foot ("a zebra crossing", "the pelican", "a crosswalk").
+_FOOT_CROSSINGS = frozenset({"zebra", "pelican", "puffin", "toucan", "pedestrian", "crosswalk", "crosswalks"})
+
+
+def foot_crossing_named_before(tokens: list[str], i: int) -> bool:
+    """Whether a crossing for people on foot is named before token ``i``: then "the crossing" at ``i``
+    is that one, a known mention (the article says so), and not a junction."""
+    return any(t in _FOOT_CROSSINGS for t in tokens[:i])
+
+
 #: "lane 3", "lane two" (not "lane 2 of 3", which counts the lanes itself): a lane numbered from the kerb.
 _LANE_NUMBER = re.compile(r"\blane " + _N + r"\b(?! of)")
 #: "the middle lane", "the centre lane": a lane with one on each side.
