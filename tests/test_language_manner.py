@@ -111,3 +111,22 @@ OTHERS_MANNER = [
 def test_a_manner_said_of_another_road_user_is_not_the_encounters(text):
     first = read(text).actors[0]
     assert all(b[2] != "safe" for b in first.behaviours), first.behaviours
+
+
+# an act that ends right at the ego ("cut straight in front of us", "swung directly across our bonnet"):
+# dangerous; the same words naming where a road user stands ("the car directly in front of me") say no manner
+@pytest.mark.parametrize(
+    "text, cls",
+    [
+        ("A courier van swerved straight in front of us on the flyover.", "dangerous"),
+        ("The taxi swung out directly across our bonnet.", "dangerous"),
+        ("A jogger darted bang in front of the ego.", "dangerous"),
+        ("The moped went across my front bumper from the left.", "dangerous"),
+        ("The car directly in front of me braked gently for the lights.", None),
+        ("A pickup stood right in front of us at the lights.", None),
+    ],
+    ids=["swerved-straight-in-front", "directly-across-our-bonnet", "bang-in-front", "across-my-bumper",
+         "the-car-directly-in-front", "stood-right-in-front"],
+)  # fmt: skip
+def test_an_act_ending_right_at_the_ego_is_dangerous(text, cls):
+    assert stated_manner(_tokens(text)) == cls

@@ -288,3 +288,149 @@ def test_each_cue_names_the_clause_it_was_read_from():
 def test_the_reader_takes_the_stated_outcome():
     assert read("A rider on an e-scooter shoots out from the left and I tag him at 20 km/h.").intent == "collision"
     assert read("A cyclist crosses ahead from the left; the ego waits and lets him go.").intent == "safe"
+
+
+# a weather word before its noun ("on a fine, dry evening") describes the day, not how things went
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("On a fine, dry evening a van cuts in front of the ego.", None),
+        ("A fine clear day; a moped pulls out of a drive ahead of me.", None),
+        ("A van cut in on a fine morning but it was fine.", "safe"),
+    ],
+    ids=["fine-dry-evening", "fine-clear-day", "it-was-fine"],
+)
+def test_fine_before_its_noun_is_the_weather_not_a_verdict(text, intent):
+    assert _intent(text) == intent
+
+
+# a stop short by a wide margin ("well short") is a safe stop; by a small one a near miss
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("The bus pulled up well short of the jogger.", "safe"),
+        ("I came to a halt comfortably short of the pram.", "safe"),
+        ("We stopped a long way short of the cyclist.", "safe"),
+        ("I stopped just short of the jogger.", "near_miss"),
+        ("I pulled up a foot short of her.", "near_miss"),
+    ],
+    ids=["well-short", "comfortably-short", "long-way-short", "just-short", "foot-short"],
+)
+def test_a_stop_short_by_a_wide_margin_is_safe(text, intent):
+    assert _intent(text) == intent
+
+
+# "wipe out" with no one as its object is a fall, not a contact
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("A moped wiped out on the wet cobbles ahead of me.", None),
+        ("The cyclist wipes out just ahead of the ego, no contact.", "near_miss"),
+        ("The van wiped the rider out at the junction.", "collision"),
+    ],
+    ids=["moped-wiped-out", "wipes-out-no-contact", "wiped-the-rider-out"],
+)
+def test_wiping_out_alone_is_a_fall(text, intent):
+    assert _intent(text) == intent
+
+
+# the ego forced off its line ("had to mount the verge to avoid it"): a near miss
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("A tractor came round wide and I had to mount the verge to avoid it.", "near_miss"),
+        ("The lorry strayed over the line; we were forced onto the grass to avoid it.", "near_miss"),
+        ("A van came at us in our lane so I had to go up on the kerb.", "near_miss"),
+        ("A tractor came round the bend and I had to wait for it.", "safe"),
+    ],
+    ids=["mount-the-verge", "forced-onto-grass", "up-on-the-kerb", "had-to-wait"],
+)
+def test_the_ego_forced_off_its_line_is_a_near_miss(text, intent):
+    assert _intent(text) == intent
+
+
+# a contact denied as what the test requires ("must not touch him") states the safe outcome wanted
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("The ego has to pass the jogger and must not touch her.", "safe"),
+        ("The test car should get by the scooter without hitting it.", "safe"),
+        ("Ego needs to overtake the rider and not make contact.", "safe"),
+        ("The van must not have seen me and nearly hit me.", "near_miss"),
+        ("I braked hard and stopped; no contact.", "near_miss"),
+    ],
+    ids=["must-not-touch", "should-without-hitting", "needs-to-not-contact", "must-not-have-seen", "braked-hard"],
+)
+def test_a_contact_denied_as_a_requirement_is_a_safe_outcome(text, intent):
+    assert _intent(text) == intent
+
+
+# passing wide of someone is a safe pass
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("The learner overtook the cyclist nice and wide.", "safe"),
+        ("We went round the jogger wide.", "safe"),
+        ("A wide load overtook me and cut in.", None),
+    ],
+    ids=["overtook-wide", "went-round-wide", "wide-load"],
+)
+def test_passing_wide_is_a_safe_pass(text, intent):
+    assert _intent(text) == intent
+
+
+# a one-word verdict ends its sentence ("Clear." after the event); in a list of notes ("Clear, 3 pm") it is the sky
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("A van cut in ahead of the test car and braked. No contact. Clear, dry, 4 pm.", "near_miss"),
+        ("Sunny, clear, light traffic; a moped pulls out in front of me.", None),
+        ("A cyclist waited at the kerb and the ego went by. Clear.", "safe"),
+    ],
+    ids=["clear-in-notes", "clear-in-a-list", "clear-verdict"],
+)
+def test_a_one_word_verdict_ends_its_sentence(text, intent):
+    assert _intent(text) == intent
+
+
+# a pass with a strong degree of closeness ("passed so close", "overtook far too close"): a near miss
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("A taxi overtook us really close on the bridge.", "near_miss"),
+        ("The lorry went by me far too close, then pulled in.", "near_miss"),
+        ("A van squeezed past so close that I felt the wind.", "near_miss"),
+        ("The cyclist rode too close to the kerb and a car passed him.", None),
+    ],
+    ids=["overtook-really-close", "went-by-too-close", "squeezed-so-close", "close-to-the-kerb"],
+)
+def test_a_pass_said_too_close_is_a_near_miss(text, intent):
+    assert _intent(text) == intent
+
+
+# going only once the way is clear is a safe pass
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("The learner only pulled out once the road was clear.", "safe"),
+        ("The bus held back until it was clear, then overtook the cyclist.", "safe"),
+        ("It was clear and bright when a van cut across in front of me.", None),
+    ],
+    ids=["once-the-road-was-clear", "until-it-was-clear", "clear-and-bright"],
+)
+def test_going_once_the_way_is_clear_is_safe(text, intent):
+    assert _intent(text) == intent
+
+
+# meeting someone head-on is a collision; coming head-on is only a direction
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("On the bend the van met the tractor head-on.", "collision"),
+        ("They met head on in the middle of the bridge.", "collision"),
+        ("A lorry came head-on towards us in our lane.", None),
+    ],
+    ids=["met-the-tractor-head-on", "met-head-on", "came-head-on"],
+)
+def test_meeting_head_on_is_a_collision(text, intent):
+    assert _intent(text) == intent

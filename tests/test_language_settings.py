@@ -397,3 +397,152 @@ def test_a_two_lane_approach_or_slip_road_counts_one_direction(text, lanes):
 )
 def test_weather_said_in_idioms(text, weather):
     assert read(text).weather == weather
+
+
+# --- density said in its own sentence, as a quantity, or negated with a modifier ------------------------------
+@pytest.mark.parametrize(
+    "text, density",
+    [
+        ("A lorry pulls out ahead of me. Traffic volumes were moderate.", "moderate"),
+        ("The traffic levels are heavy around here. A van cuts in front of me.", "heavy"),
+        ("Tons of traffic on the ring road when a taxi swerved in front of me.", "heavy"),
+        ("Heaps of cars about, and a cyclist darts out ahead of me.", "heavy"),
+        ("A van cuts in front of the ego, no background traffic at all.", "none"),
+        ("No through traffic that morning; a jogger steps off the kerb ahead of me.", "none"),
+        ("Traffic was sparse. A van braked ahead of me and a car behind hit it. No other vehicles were involved.",
+         "light"),
+        ("There was no traffic light at the corner where a cyclist swerved ahead of me.", None),
+    ],
+    ids=["volumes-were", "levels-are", "tons-of", "heaps-of-cars", "no-background", "no-through",
+         "others-involved", "no-traffic-light"],
+)  # fmt: skip
+def test_traffic_said_as_a_quantity_or_of_its_volume(text, density):
+    assert read(text).density == density
+
+
+def test_other_road_users_not_involved_says_nothing_of_the_traffic():
+    text = "A van braked ahead of me and I ran into it. No other road users were involved."
+    assert read(text).density is None
+
+
+# --- a weather said of before, and since cleared -------------------------------------------------------------
+@pytest.mark.parametrize(
+    "text, weather",
+    [
+        ("It had been misty first thing but it has lifted now; a van pulls out ahead of me.", None),
+        ("Drizzly earlier, though that had stopped by the time a cyclist swerved in front of me.", None),
+        ("There was snow earlier but it has all cleared, bright sunshine; a van cuts in front of me.", "clear"),
+        ("It was foggy and it was getting worse when a van cut in front of me.", "fog"),
+        ("Rain earlier and it was still raining when a van cut in front of me.", "rain"),
+    ],
+    ids=["misty-lifted", "drizzly-stopped", "snow-cleared-sun", "fog-worse", "still-raining"],
+)
+def test_a_weather_of_earlier_since_cleared_is_not_the_weather(text, weather):
+    assert read(text).weather == weather
+
+
+# --- a clock said in words -------------------------------------------------------------------------------------
+@pytest.mark.parametrize(
+    "text, clock",
+    [
+        ("At quarter to nine a van cut in front of me.", "08:45"),
+        ("About twenty past seven in the evening a van cut in front of me.", "19:20"),
+        ("Around half past ten at night a cyclist swerved ahead of me.", "22:30"),
+        ("At half nine a cyclist swerved ahead of me on the way to work, morning rush.", "09:30"),
+        ("A quarter past eleven a van cut in front of me.", "11:15"),
+    ],
+    ids=["quarter-to-nine", "twenty-past-seven-evening", "half-past-ten-night", "half-nine", "quarter-past-eleven"],
+)
+def test_a_clock_in_words_is_that_clock(text, clock):
+    assert read(text).time == clock
+
+
+def test_half_a_quantity_is_no_clock():
+    text = "Half a second later a van cut in front of me at half past the junction."
+    assert read(text).time is None
+
+
+# --- a pedestrian crossing is not a junction --------------------------------------------------------------
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("On a straight avenue with a zebra crossing, a jogger steps out ahead of the ego.", "straight"),
+        ("A woman waits at the pelican crossing as the ego drives up the high street.", "straight"),
+        ("Mid-block crosswalk on a long road; a child runs across in front of me.", "straight"),
+        ("At the crossroads a pedestrian on the zebra crossing steps out in front of me.", "crossroad"),
+        ("Turning right at the lights, a man on the crosswalk steps out in front of me.", "crossroad"),
+    ],
+    ids=["zebra", "pelican", "crosswalk", "crossroads-zebra", "turning-at-lights"],
+)
+def test_a_pedestrian_crossing_alone_is_no_junction(text, kind):
+    assert read(text).map_kind == kind
+
+
+# --- a turn said without "turn into" ---------------------------------------------------------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "The ego makes an unprotected right on a green arrow while a cyclist comes the other way.",
+        "A bus takes the left onto 5th as I come up beside it.",
+        "A jogger crosses the road we are turning into.",
+        "A child runs across the side street the ego is turning into.",
+    ],
+    ids=["unprotected-right", "left-onto-5th", "road-we-turn-into", "side-street-turning-into"],
+)
+def test_a_turn_said_in_other_words_is_at_a_junction(text):
+    assert read(text).map_kind == "crossroad"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "The ego keeps left onto the hard shoulder as a van cuts in.",
+        "A van turning into a shop car park ahead slows, on a straight road.",
+    ],
+    ids=["keeps-left-onto-shoulder", "into-car-park"],
+)
+def test_a_move_onto_a_shoulder_or_a_car_park_is_no_junction(text):
+    assert read(text).map_kind != "crossroad"
+
+
+# --- lanes a direction, said in other words --------------------------------------------------------------
+@pytest.mark.parametrize(
+    "text, lanes",
+    [
+        ("On a one-lane-each-way country road, a tractor comes the other way.", 1),
+        ("A dual carriageway, two lanes each way; a van in the left lane brakes.", 2),
+        ("A one-way street with three lanes; a cab in the right lane cuts in front of me.", 3),
+        ("4 lanes per direction on the ring road, a coach moves into my lane.", 4),
+        ("A two-lanes-per-direction highway; a car on my left cuts in.", 2),
+    ],
+    ids=["one-lane-each-way", "two-lanes-each-way", "one-way-three-lanes", "4-per-direction", "hyphen-per-direction"],
+)
+def test_lanes_said_per_direction(text, lanes):
+    assert read(text).lanes == lanes
+
+
+@pytest.mark.parametrize(
+    "text, weather",
+    [
+        ("Heavy fog, but the van stopped ahead of me in time.", "fog"),
+        ("It was raining, but it stopped in time: a cyclist swerved in front of me.", "rain"),
+    ],
+    ids=["van-stopped", "it-stopped-in-time"],
+)
+def test_a_road_user_stopping_after_a_contrast_leaves_the_weather(text, weather):
+    assert read(text).weather == weather
+
+
+# "the crossing" after a pedestrian crossing is named is that crossing (a known mention), not a junction
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("A long straight road with a pelican crossing. A man waits at the crossing and lets the ego go by.", None),
+        ("There is a puffin crossing outside the shop; a woman stands at the crossing and lets me pass.", None),
+        ("On the high street's zebra, a boy waits at the crossing and lets the ego go past.", None),
+        ("A van waits at the crossing and lets the ego go past.", "crossroad"),
+    ],
+    ids=["pelican", "puffin", "zebra-alone", "no-crossing-named"],
+)
+def test_the_crossing_after_a_pedestrian_crossing_is_that_crossing(text, kind):
+    assert read(text).map_kind in ((kind, "straight") if kind is None else (kind,))

@@ -9,7 +9,10 @@ Three small closed scales carry it, each with its degree words and its negation:
   road user rides, not a margin to the ego;
 * **the margin left**: a wide one ("plenty of room", "loads of space", "a good way ahead", "well
   clear", "well ahead of me") is safe; a wide one denied ("not much room") is dangerous;
-* **timing**: "late" said of an act ("changed lane very late") is dangerous; "late morning" is a time.
+* **timing**: "late" said of an act ("changed lane very late") is dangerous; "late morning" is a time;
+* **where an act ends**: right at the ego ("cut straight in front of us", "swung directly across our
+  bonnet", "went across my front bumper") is dangerous; the same words after a noun name where a road
+  user stands ("the car directly in front of me"), and after a verb of standing where it waits.
 
 A negator before a word of danger ("nothing dangerous", "not aggressive", "nothing crazy") denies the
 danger: alone it leaves a safe pass, beside a mild closeness ("bit close but nothing crazy") a
@@ -46,6 +49,15 @@ _TIMES = frozenset(("morning", "afternoon", "evening", "night", "shift", "summer
 _LEVELS = {"high": DANGEROUS, "medium": MODERATE, "moderate": MODERATE, "mid": MODERATE, "low": SAFE}
 _LABELS = frozenset(("crit", "criticality", "severity", "criticity"))
 _BREAKS = frozenset(".;!?,") | {"but", "and", "then", "so", "though", "although", "because"}
+#: Degree words of a place exactly there ("right in front", "straight across", "bang in front").
+_EXACTLY = frozenset(("right", "straight", "directly", "just", "bang", "smack", "slap", "dead", "square", "squarely"))
+#: The ego as what an act ends at, and the parts of its vehicle an act crosses ("across our bonnet").
+_EGO = frozenset(("me", "us", "ego", "i", "we"))
+_EGO_PARTS = frozenset(("bonnet", "hood", "nose", "bumper", "bows", "front", "grille", "wheels", "wheel"))
+_OURS = frozenset(("my", "our", "the"))
+#: Verbs of standing or waiting: an act does not end where they stand.
+_STANDING = frozenset(("stand", "stood", "stands", "standing", "wait", "waited", "waits", "waiting", "sat", "sits",
+                       "sitting", "parked", "stopped", "is", "was", "were", "are", "queued", "queuing"))  # fmt: skip
 
 
 def _closeness(words: list[str], i: int) -> str | None:
@@ -97,6 +109,37 @@ def _late(words: list[str], i: int) -> bool:
     return nxt not in _TIMES and not nxt.endswith("ish") and (i == 0 or words[i - 1] not in ("a", "the", "in"))
 
 
+def _at_the_ego(words: list[str], i: int) -> bool:
+    """An act that ends right at the ego, at ``i`` its place word: "in front of" or "across" the ego or a
+    part of its vehicle, after a degree of exactness ("straight in front of us") or across a part of
+    it ("across my front bumper"); not after a noun or a verb of standing ("the car directly in front
+    of me", "stood right in front of us": where it is)."""
+    w = words[i]
+    if w == "in" and words[i + 1 : i + 3] == ["front", "of"]:
+        after = words[i + 3 : i + 7]
+    elif w == "across":
+        after = words[i + 1 : i + 5]
+    else:
+        return False
+    exact = i > 0 and words[i - 1] in _EXACTLY
+    k = i - 1 if exact else i
+    prev = words[k - 1] if k > 0 else ""
+    if not prev or prev in _STANDING or _noun_only(prev):
+        return False
+    at_ego = after[:1] and (after[0] in _EGO or (after[0] == "the" and after[1:2] == ["ego"]))
+    ours = after[:1] and after[0] in _OURS and bool(set(after[1:4]) & _EGO_PARTS)
+    return bool((exact and (at_ego or ours)) or (w == "across" and ours and after[0] != "the"))
+
+
+def _noun_only(word: str) -> bool:
+    """Whether ``word`` is only a noun (or unknown as a verb): what stands before a place phrase
+    that says where a road user is ("the car directly in front of me")."""
+    from vei_scenario.language.lemmas import lemmas
+
+    found = lemmas(word)
+    return bool(found) and "VERB" not in found and word not in ("out", "in", "back", "over", "off", "round")
+
+
 def _labelled(tokens: list[str]) -> str | None:
     """A level under a label: "Crit: high", "criticality low", "severity: medium"."""
     for i, w in enumerate(tokens):
@@ -125,6 +168,9 @@ def manner_cues(tokens: list[str]) -> list[str]:
                 found = _closeness(words, i)
                 if found is not None:
                     cues.append(found)
+                continue
+            if _at_the_ego(words, i):
+                cues.append(DANGEROUS)  # ("cut straight in front of us", "across our bonnet")
                 continue
             margin = _margin(words, i)
             if margin is not None:

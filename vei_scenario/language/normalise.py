@@ -24,6 +24,8 @@ _ONES = {
 }  # fmt: skip
 _TENS = {"twenty": 20, "thirty": 30, "forty": 40, "fourty": 40, "fifty": 50, "sixty": 60, "seventy": 70,
          "eighty": 80, "ninety": 90}  # fmt: skip
+#: The English number words: words, never a slip of another ("seven" is not "even").
+NUMBER_WORDS = frozenset(w for w in [*_ONES, *_TENS, "hundred"] if w not in ("a", "an"))
 _NUMBER_WORD = "|".join(sorted([w for w in _ONES if w not in ("a", "an")] + list(_TENS) + ["hundred"], key=len)[::-1])
 #: A number in words: "forty", "forty-five", "a hundred and ten", "one hundred", "hundred".
 _NUMBER = re.compile(

@@ -253,8 +253,9 @@ def _is_contact(words: list[str], i: int) -> bool:
     ):
         return True
     lem = _lemmas(w)
-    if "wipe" in lem and "out" in words[i + 1 : i + 3]:
-        return _meets_road_user(words[i + 1 : i + 4])  # ("wiped out the cyclist", "wiped him out")
+    if "wipe" in lem and "out" in words[i + 1 : i + 4]:
+        k = words.index("out", i + 1)  # ("wiped out the cyclist", "wiped him out"; "wiped out on the ice": fell)
+        return _names_road_user(words[i + 1 : k] or words[k + 1 : k + 4])
     if lem & _PHRASAL_CONTACT and _is_verb(w) and _phrasal_object(words, i):
         return True  # ("took out a jogger", "knocked the child over")
     if lem & _TOUCHING and _is_verb(w) and _vehicle_part(words[i + 1 : i + 6]):
@@ -263,6 +264,12 @@ def _is_contact(words: list[str], i: int) -> bool:
         return _meets_road_user(words[i + 2 : i + 5]) and not (nxt == "down" and lem & {"run"} and "road" in words)
     if lem & {"make", "come"} and nxt == "contact":
         return True
+    if (
+        lem & {"meet"}
+        and _is_verb(w)
+        and ("head-on" in words[i + 1 : i + 6] or "head on" in " ".join(words[i + 1 : i + 7]))
+    ):
+        return True  # ("met the tractor head-on", "they met head on")
     if lem & _CONTACT_VERBS and _is_verb(w) and _verbal(words, i):
         if w.startswith("crash") and nxt in _COMPOUND_HEADS:
             return False
@@ -520,9 +527,13 @@ def _margin(words: list[str], i: int) -> str | None:
                 if metres <= 3.0:
                     return NEAR_MISS  # ("stopped two metres off his door", "a foot from him")
     if w == "short" and i > 0:
-        before = words[max(0, i - 4) : i]
-        if any(_lemmas(x) & {"stop", "pull", "come"} for x in words[max(0, i - 7) : i]):
-            return NEAR_MISS
+        if any(_lemmas(x) & {"stop", "pull", "come", "halt"} for x in words[max(0, i - 7) : i]):
+            # (by a wide margin: "well short", "comfortably short", "a long way short")
+            wide = words[i - 1] in ("well", "comfortably", "safely") or words[i - 2 : i] in (
+                ["long", "way"],
+                ["good", "way"],
+            )
+            return SAFE if wide else NEAR_MISS
     if w == "by" and i > 0 and "miss" in _lemmas(words[i - 1]) | (_lemmas(words[i - 2]) if i > 1 else frozenset()):
         return NEAR_MISS
     if w in _SMALL_UNITS and i > 0 and words[i - 1] in ("a", "an", "few", "inches") + tuple("0123456789"):
@@ -530,6 +541,27 @@ def _margin(words: list[str], i: int) -> str | None:
         if any(_lemmas(x) & {"stop", "miss", "pass", "clear", "halt"} for x in before) or "by" in before:
             return NEAR_MISS
     return None
+
+
+def _passed_close(before: list[str], after: list[str]) -> bool:
+    """A pass said close with a strong degree ("overtook us really close", "went by far too close",
+    "squeezed past so close"): ``before`` its sentence up to "close", ``after`` the next words; not
+    closeness to a place ("too close to the kerb")."""
+    if not before or before[-1] not in ("so", "too", "really", "very", "dangerously", "uncomfortably", "bloody"):
+        return False
+    if after[:1] == ["to"] and after[1:2] and after[1] not in _PERSON_OBJECTS | _EGO_HEADS:
+        return False
+    passing = {"pass", "overtake", "go", "squeeze", "come", "cut", "swing", "drive", "ride", "shave"}
+    return any(_lemmas(x) & passing for x in before[-7:-1])
+
+
+def _passed_wide(before: list[str], after: list[str]) -> bool:
+    """ "wide" said of a pass ("passed wide", "overtook him nice and wide", "went round wide of her"):
+    ``before`` its sentence up to it, ``after`` the rest of its clause; not "a wide load"."""
+    if after and after[0] not in ("of", "and", "berth", "around", "round", "enough"):
+        return False  # (before its noun: "a wide load", "the wide lane")
+    passing = {"pass", "overtake", "go", "swing", "give", "drive", "steer", "ride"}
+    return any(_lemmas(x) & passing for x in before[-6:])
 
 
 def _subject_is_ego(words: list[str], i: int, clause: _Clause, story: bool) -> bool:
@@ -586,6 +618,24 @@ def _does_next(after: list[str]) -> bool:
     return len(after) > k + 1 and _is_verb(after[k + 1]) and after[k + 1] in _lemmas(after[k + 1])
 
 
+#: The edges of a road the ego is driven onto to escape ("had to mount the verge", "forced onto the grass").
+_ROAD_EDGES = frozenset(("verge", "gravel", "shoulder", "grass", "kerb", "curb", "pavement", "footpath", "sidewalk",
+                         "ditch", "hedge", "reservation", "median", "dirt", "rumble"))  # fmt: skip
+#: Words that make what follows a forced act ("had to", "was forced onto").
+_FORCED = frozenset(("had", "force", "forced", "made", "needed", "mount", "mounted", "mounting"))
+
+
+def _off_the_road(words: list[str], i: int) -> bool:
+    """The ego's verb at ``i`` taking it onto the road's edge when it is forced to ("had to put two
+    wheels on the gravel", "was forced onto the grass", "mounted the kerb"): it escaped something."""
+    after = words[i + 1 : i + 7]
+    edge = next((k for k, x in enumerate(after) if x in _ROAD_EDGES), None)
+    if edge is None or not ({"onto", "on", "up", "into", "over"} & set(after[:edge]) or _lemmas(words[i]) & {"mount"}):
+        return False
+    before = words[max(0, i - 3) : i + 1]
+    return bool(set(before) & _FORCED or _lemmas(words[i]) & {"force", "mount"})
+
+
 def _ego_acts(words: list[str], i: int) -> str | None:
     """What the ego's verb at ``i`` says of the outcome: "evade" (swerve, brake hard), "brake" (a
     plain brake), "yield" (waits, gives way, stops gently, lets the other go) or None."""
@@ -595,6 +645,8 @@ def _ego_acts(words: list[str], i: int) -> str | None:
     if words[i].endswith(("ed", "ing")) and i + 1 < len(words) and set(_pos(words[i + 1])) == {"NOUN"}:
         return None  # ("Stopped car ahead": a participle before its noun)
     window = words[max(0, i - 3) : i + 5]
+    if _off_the_road(words, i):
+        return "evade"
     if lem & _EVADE:
         if lem & {"slam", "stamp", "jump", "stand"} and not {"on", "brake", "brakes"} & set(window):
             return None
@@ -620,11 +672,35 @@ def _ego_acts(words: list[str], i: int) -> str | None:
 @dataclass(frozen=True)
 class Cue:
     """One statement of the outcome found in a clause: what it says (``contact``, ``hedged``,
-    ``denied``, ``near``, ``close``, ``safe``, ``evade``, ``brake``, ``yield``) and the words it was
+    ``denied``, ``required``: a contact denied as what the test requires, ``near``, ``close``,
+    ``safe``, ``evade``, ``brake``, ``yield``) and the words it was
     read from, so a reading can say why it chose its intent."""
 
     kind: str
     words: str
+
+
+#: Modals of what a test requires ("must", "should", "needs to", "has to"); the past "had to" is what
+#: was forced, and "must have" a guess, not a requirement.
+_REQUIRING = frozenset(("must", "should", "shall", "needs", "need", "has", "have", "is", "are"))
+
+
+def _required(sentence: list[str]) -> bool:
+    """Whether ``sentence`` (its words so far) states what the test requires ("the ego must pass him",
+    "should get by", "needs to overtake"): a modal of obligation, not "must have" nor "is driving"."""
+    if set(sentence) & _HARD or any(_lemmas(w) & _EVADE for w in sentence):
+        return False  # ("has to brake hard but must not hit it": a forced escape, whoever brakes)
+    for k, w in enumerate(sentence):
+        nxt = sentence[k + 1] if k + 1 < len(sentence) else ""
+        if w in ("must", "should", "shall") and nxt != "have":
+            return True
+        if (
+            w in ("needs", "need", "has", "have", "is", "are")
+            and nxt == "to"
+            and (w != "have" or k == 0 or sentence[k - 1] != "would")
+        ):
+            return True
+    return False
 
 
 def outcome_cues(said: str) -> list[Cue]:
@@ -634,8 +710,19 @@ def outcome_cues(said: str) -> list[Cue]:
     story = bool({"i", "we", "me", "my", "us", "our"} & set(tokens))
     cues: list[Cue] = []
     previous: str | None = None
-    for clause in _clauses(tokens):
+    sentence: list[str] = []
+    clauses = _clauses(tokens)
+    raw = [ws for ws, _ in split(tokens, _BREAK_PUNCT - {","})]  # (its sentences with their conjunctions)
+    said_in, cursor = -1, 0
+    for n, clause in enumerate(clauses):
         words = clause.words
+        ends_sentence = n + 1 == len(clauses) or clauses[n + 1].first_of_sentence
+        if clause.first_of_sentence:
+            said_in, cursor = min(said_in + 1, len(raw) - 1), 0
+        whole = raw[said_in] if raw else words
+        at = next((k for k in range(cursor, len(whole)) if whole[k : k + len(words)] == words), cursor)
+        cursor = at + len(words)
+        sentence = words if clause.first_of_sentence else sentence + words
         own = _subject(words)
         clause.inherited = None if clause.first_of_sentence else previous
         previous = own or clause.inherited or ("ego" if story and clause.first_of_sentence else None)
@@ -652,7 +739,8 @@ def outcome_cues(said: str) -> list[Cue]:
                 if hedged or counterfactual:
                     add("hedged")
                 elif _denied_before(words, i) or _scoped(words, i, _HYPOTHETICAL, 2) or passive == "denied":
-                    add("denied")
+                    # ("must overtake him and not touch him": the outcome the test wants, no contact)
+                    add("required" if _required(sentence[: len(sentence) - len(words) + i]) else "denied")
                 else:
                     add("contact")
                 continue
@@ -673,6 +761,9 @@ def outcome_cues(said: str) -> list[Cue]:
             if _close_ttc(words, i):
                 add("near")
                 continue
+            if w == "wide" and _passed_wide(sentence[: len(sentence) - len(words) + i], words[i + 1 :]):
+                add("safe")
+                continue
             margin = _margin(words, i)
             if margin is not None and margin == NEAR_MISS and w == "time" and _denied_before(words, i):
                 add("contact")  # ("could not stop in time", "failed to pull up in time": it was not avoided)
@@ -685,7 +776,8 @@ def outcome_cues(said: str) -> list[Cue]:
                 add("safe")
             went = w == "smoothly" and i > 0 and _lemmas(words[i - 1]) & {"go", "pass", "run"}  # ("it went smoothly")
             if (w in _SAFE_WORDS or went) and not _denied_before(words, i):
-                if not (w == "fine" and i + 1 < len(words)):  # ("fine rain": weather)
+                # ("fine rain", "on a fine, dry evening": a word of the weather before its noun)
+                if not (w == "fine" and (i + 1 < len(words) or words[i - 1 : i] in (["a"], ["an"], ["the"]))):
                     add("safe")
             then = (
                 words[i + 2]
@@ -702,7 +794,14 @@ def outcome_cues(said: str) -> list[Cue]:
                 add("safe")  # ("nothing happened", "Nothing dramatic": nothing of note)
             if w in _CLOSE and _predicate(words, i):
                 add("safe" if _denied_before(words, i) else "close")  # ("nobody close"; "it was close")
-            if len(words) == 1 and w in ("clean", "clear", "close", "tight"):
+            before = whole[: at + i]  # (its sentence up to this word, with its conjunctions)
+            if w == "clear" and i > 0 and words[i - 1] in _COPULA and set(before[-8:]) & {"once", "until", "till"}:
+                add("safe")  # ("pulled out once the road was clear", "held back until it was clear")
+                continue
+            if w in ("close", "closely") and _passed_close(before, words[i + 1 : i + 3]):
+                add("close")  # ("overtook us really close", "went by far too close")
+                continue
+            if len(words) == 1 and w in ("clean", "close", "tight") or (words == ["clear"] and ends_sentence):
                 add("safe" if w in ("clean", "clear") else "close")  # (a one-word verdict: "Clean.", "but close")
             if _is_verb(w) and _subject_is_ego(words, i, clause, story):
                 act = _ego_acts(words, i)
@@ -714,8 +813,8 @@ def outcome_cues(said: str) -> list[Cue]:
             if (
                 _lemmas(w) & {"avoid", "dodge", "evade"}
                 and words[i + 1 : i + 2]
-                and words[i + 1] in _PERSON_OBJECTS - {"it", "one"}
-            ):
+                and (words[i + 1] in _PERSON_OBJECTS - {"it", "one"} or words[i - 1 : i + 2] == ["to", w, "it"])
+            ):  # (and a purpose: "... to avoid it")
                 if not _denied_before(words, i):
                     add("evade")  # ("dived into the outside lane to avoid him")
     return cues
@@ -732,7 +831,9 @@ def decide(cues: list[Cue]) -> str | None:
         return NEAR_MISS
     if "safe" in kinds:
         return SAFE
-    if "denied" in kinds:
+    if "required" in kinds and not kinds & {"evade", "brake", "denied"}:
+        return SAFE  # (no contact, as the test requires, and nothing forced)
+    if "denied" in kinds or "required" in kinds:
         return SAFE if "yield" in kinds and not kinds & {"evade", "brake"} else NEAR_MISS
     if "evade" in kinds:
         return NEAR_MISS

@@ -52,7 +52,7 @@ from vei_scenario.language.motion import (
     turn_across_side,
 )
 from vei_scenario.language.ncap import rewrite as ncap_rewrite
-from vei_scenario.language.normalise import normalise
+from vei_scenario.language.normalise import NUMBER_WORDS, normalise
 from vei_scenario.language.outcome import decide, outcome_cues
 from vei_scenario.language.reading import ActorSpec, NotUnderstood, Reading
 from vei_scenario.language.route import ego_route
@@ -296,7 +296,7 @@ def _speller():
 
     # (and the outcome's words, read from the whole text)
     outcome = {"collision", "collide", "crash", "accident", "contact", "afternoon", "morning", "evening", "night"}
-    return Speller({w for key in TABLE for w in key} | FUNCTION_WORDS | outcome)
+    return Speller({w for key in TABLE for w in key} | FUNCTION_WORDS | outcome | NUMBER_WORDS)
 
 
 def _tokens(text: str, spell: bool = True, brackets: bool = False) -> list[str]:
@@ -762,7 +762,8 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
         if key == ("stop",) and det:  # "the stop", "a stop": a bus stop, a place
             slot, value = "kerb", None
         elif tok == "crossing" and len(key) == 1 and det:  # "at the crossing": a junction, not someone crossing
-            slot, value = "map", "crossroad"
+            # (unless a zebra or pelican crossing was named: then it is that one, beside the road)
+            slot, value = ("kerb", None) if S.foot_crossing_named_before(tokens, i) else ("map", "crossroad")
         elif slot in ("behaviour", "speed_word") and (said := " ".join(tokens[i : i + len(key)])) in V.SPEED_WORDS:
             if det and _actor_at(tokens, i + len(key)):  # "a slow truck": how fast it goes, not a slowing
                 slot, value = "speed_adjective", V.SPEED_WORDS[said]  # (nor the subject's speed)
@@ -1852,10 +1853,12 @@ def read(text: str) -> Reading:
         if m.slot == "weather" or (m.slot == "time" and m.prev not in S.BOUNDS)  # (not "since midnight")
     ]
     clock = S.dotted_clock(S.without_bounds(said)) or stated_clock(S.without_bounds(said))
-    clock = S.twelve_hour(clock, S.without_bounds(said), [v for k, w, v in said_as if k == "time"])
+    clock = S.twelve_hour(clock, S.without_bounds(said), [v for k, w, v in said_as if k == "time"]) or S.clock_in_words(
+        S.without_bounds(said), [v for k, w, v in said_as if k == "time"]
+    )
     r.time = S.time_of_day([(w, v) for k, w, v in said_as if k == "time"], clock) or r.time
     r.weather = S.sky_over_surface([(w, v) for k, w, v in said_as if k == "weather"]) or r.weather or S.sunny(said)
-    r.density = S.density(said) or r.density
+    r.density = S.density(said, r.density)
     if r.weather in (None, "rain") and stated_heavy_rain(said):
         r.weather = "heavy_rain"
     return r

@@ -15,6 +15,8 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 
+from vei_scenario.language import lexicon as L
+
 #: Time words that tell the light or the traffic, not the hour: a part of the day said with them wins.
 TIME_HINTS = frozenset(
     "dark|darkness|pitch black|pitch-black|pitch dark|after dark|daylight|daytime|broad daylight|during the day|"
@@ -57,16 +59,44 @@ def negated(tokens: list[str], i: int) -> bool:
 
 #: Verbs that end a weather ("the rain had stopped", "light rain ended", "stopped raining"): what has
 #: ended is not the weather the scene is in.
-ENDING_VERBS = frozenset({"ended", "stopped", "cleared", "ceased", "eased", "finished", "passed", "lifted"})
+ENDING_VERBS = frozenset({"ended", "stopped", "cleared", "ceased", "eased", "finished", "passed", "lifted", "gone"})
+#: Conjunctions that set a later state against an earlier one ("foggy earlier, but that has cleared").
+_CONTRAST = frozenset({"but", "though", "although", "yet", "however"})
+_SENTENCE_END = frozenset({".", ";", "!", "?"})
 
 
 def ended(tokens: list[str], i: int, n: int) -> bool:
     """Whether the weather word at ``i`` (``n`` words) is said to have ended: an ending verb right
-    after it (past "had", "has", "just") or right before it ("had stopped raining")."""
+    after it (past "had", "has", "just") or right before it ("had stopped raining"), or in a clause set
+    against it later in its sentence ("misty first thing, but it has lifted now")."""
     k = i + n
     while k < len(tokens) and tokens[k] in ("had", "has", "just", "already", "finally"):
         k += 1
-    return (k < len(tokens) and tokens[k] in ENDING_VERBS) or (i > 0 and tokens[i - 1] in ENDING_VERBS)
+    if (k < len(tokens) and tokens[k] in ENDING_VERBS) or (i > 0 and tokens[i - 1] in ENDING_VERBS):
+        return True
+    for j in range(i + n, min(len(tokens), i + n + 8)):
+        if tokens[j] in _SENTENCE_END:
+            return False
+        if tokens[j] in _CONTRAST:
+            return _ends_clause(tokens[j + 1 : j + 7])
+    return False
+
+
+def _ends_clause(words: list[str]) -> bool:
+    """Whether a clause ``words`` after a contrast says that something ended, with a pronoun or a
+    weather noun as its subject ("that has cleared", "it had all lifted", "the fog has gone")."""
+    for k, w in enumerate(words):
+        if w in _SENTENCE_END or w == ",":
+            return False
+        if w in ENDING_VERBS and k > 0:
+            if words[0] in _WEATHER_NOUNS or (words[0] == "the" and words[1] in _WEATHER_NOUNS):
+                return True
+            # (a pronoun may be a road user: "but it stopped in time" is a vehicle, "it has cleared" the sky)
+            return words[0] in ("that", "this") or (words[0] == "it" and w not in ("stopped", "passed", "finished"))
+    return False
+
+
+_WEATHER_NOUNS = frozenset({"rain", "fog", "mist", "snow", "drizzle", "haze", "shower", "showers", "sleet"})
 
 
 #: Prepositions, a closed class: a compound starting with one modifies ("in-car commentary").
@@ -136,6 +166,60 @@ def _within(hour: int, part: str) -> bool:
     return first <= hour <= last if first <= last else (hour >= first or hour <= last)
 
 
+_HOURS = {w: k + 1 for k, w in enumerate("one two three four five six seven eight nine ten eleven twelve".split())}
+_MINUTES = {"quarter": 15, "half": 30, "five": 5, "ten": 10, "twenty": 20, "twenty-five": 25, "twenty five": 25}
+_HOUR_WORD = r"(one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|1[0-2]|[1-9])"
+#: "quarter past eight", "twenty to seven", "half past ten", and the British "half five" (half past five).
+_NOT_A_CLOCK = r"(?! (?:m|metres|meters|km/h|mph|m/s|seconds|s|hours?|minutes?|cars?|vehicles?)\b)"
+_CLOCK_IN_WORDS = re.compile(
+    rf"\b(?:a )?(quarter|half|twenty[- ]five|twenty|ten|five|[1-5]?\d(?: minutes)?) (past|after|to|before) "
+    rf"{_HOUR_WORD}\b{_NOT_A_CLOCK}|\bhalf {_HOUR_WORD}\b{_NOT_A_CLOCK}"
+)
+#: Said beside a clock in words, the half of the day it is in.
+_AFTERNOON_SAID = re.compile(r"\b(?:in the (?:afternoon|evening)|at night|tonight|pm|p m)\b")
+_MORNING_SAID = re.compile(r"\b(?:in the morning|am|a m)\b")
+
+
+def clock_in_words(said: str, parts: list[str]) -> str | None:
+    """A clock said in words ("quarter past eight": "08:15", "twenty to seven in the evening": "18:40",
+    "half five": "05:30" or "17:30"), else None. Words give no half of the day: it is the one said
+    ("in the evening", "pm"), else the one that lies within the part of the day said (``parts``: the
+    lexicon's clocks of the parts said), else the afternoon for the first hours and the morning after."""
+    m = _CLOCK_IN_WORDS.search(said)
+    if m is None:
+        return None
+    if m.group(4) is not None:  # ("half five")
+        hour, minute = _hour(m.group(4)), 30
+    else:
+        said_minutes = m.group(1).replace(" minutes", "")
+        minutes = _MINUTES.get(said_minutes.replace("-", " ")) or _MINUTES.get(said_minutes)
+        minutes = minutes if minutes is not None else int(said_minutes)
+        if not 0 < minutes < 60:
+            return None
+        hour, minute = _hour(m.group(3)), minutes
+        if m.group(2) in ("to", "before"):
+            hour, minute = (hour - 2) % 12 + 1, 60 - minutes
+    rest = said[m.end() : m.end() + 30]
+    am, pm = hour % 12, hour % 12 + 12
+    if _AFTERNOON_SAID.match(rest.strip()) or _AFTERNOON_SAID.search(rest[:16]):
+        hour = pm
+    elif _MORNING_SAID.search(rest[:16]):
+        hour = am
+    else:
+        known = [p for p in parts if p in PART_OF_DAY_HOURS]
+        if known and _within(pm, known[0]) and not _within(am, known[0]):
+            hour = pm
+        elif known and _within(am, known[0]):
+            hour = am
+        else:
+            hour = pm if 1 <= hour <= 6 else am if hour < 12 else 12
+    return f"{hour:02d}:{minute:02d}"
+
+
+def _hour(word: str) -> int:
+    return int(word) if word.isdigit() else _HOURS[word]
+
+
 #: Words before a time that make it a bound of something else ("raining since midnight", "off until 6 pm"),
 #: not the scenario's time.
 BOUNDS = frozenset({"since", "until", "till"})
@@ -157,13 +241,25 @@ def sky_over_surface(said: list[tuple[str, str]]) -> str | None:
     return max(sky, key=lambda v: (severity.get(v, 0), -sky.index(v)))
 
 
-#: "no other car", "not another vehicle about", "not a single other car", "nobody else on the road":
-#: a negated other road user is no background traffic.
+#: "no other car", "not another vehicle about", "not a single other car", "nobody else on the road",
+#: "no background traffic", "no through traffic": a negated other road user, or traffic with one word of
+#: what kind, is no background traffic (not "no traffic lights": a compound naming something else; not
+#: "no heavy traffic": a degree denied). Who was involved in an incident is not who was about.
 _NO_OTHERS = re.compile(
-    r"\b(?:nobody|no one|no-one|not a soul) else\b"
+    r"(?:\b(?:nobody|no one|no-one|not a soul) else\b"
     r"|\b(?:no |not (?:a |one )?(?:single )?)other (?:cars?|vehicles?|traffic|road users?)\b"
     r"|\bnot (?:a single |one )?(?:another|other) (?:cars?|vehicles?|soul)\b"
     r"|\bnot a single (?:cars?|vehicles?)\b"
+    r"|\bno (?!(?:heavy|real|much|major|serious|big|bad|dense|busy) )(?:[a-z]+ )?traffic\b"
+    r"(?! (?:lights?|signals?|islands?|cones?|calming|control|police|wardens?|lanes?|jams?|queues?|cameras?)\b))"
+    r"(?! (?:were|was|are|is|got|had been) (?:involved|hurt|injured|damaged)\b)"
+)
+#: "no other vehicles were involved", "no traffic lights": words the lexicon reads as no traffic that do
+#: not speak of the traffic about (who took part in an incident; a road's signals).
+_NOT_TRAFFIC = re.compile(
+    r"\b(?:no|not any) other (?:cars?|vehicles?|road users?|parties|party|people|persons)"
+    r" (?:were|was|are|is|got|had been) (?:involved|hurt|injured|damaged)\b"
+    r"|\bno traffic (?:lights?|signals?|islands?|cones?|calming|control|police|wardens?|lanes?|cameras?)\b"
 )
 
 
@@ -181,6 +277,14 @@ _FEW_OTHERS = re.compile(
 )
 
 
+#: "loads of traffic", "tons of cars", "a lot of vehicles": a large quantity of other traffic (not "lots
+#: of cars parked": parked cars are scenery).
+_MANY_OTHERS = re.compile(
+    r"\b(?:loads|lots|tons|heaps|masses|plenty|a lot|a load|a ton|a great deal|a fair bit|a stack)"
+    r" of (?:other )?(?:traffic|cars|vehicles)\b(?! (?:were |are )?parked\b)"
+)
+
+
 #: "traffic moderate", "traffic: heavy", "traffic = light": a note of the traffic, its value after it
 #: (not "traffic light", a signal, unless a colon or equals sign says it is a value).
 _TRAFFIC_NOTE = re.compile(
@@ -189,7 +293,8 @@ _TRAFFIC_NOTE = re.compile(
 )
 #: Traffic said of the road ("the motorway was heavy", "traffic was moderate").
 _SAID_OF_ROAD = re.compile(
-    r"\b(?:traffic|motorway|road|roads|street|streets|highway) (?:is|was|were|being) (?:very |quite |fairly |pretty |"
+    r"\b(?:traffic(?: volumes?| levels?| flows?)?|motorway|road|roads|street|streets|highway)"
+    r" (?:is|was|were|are|being|looked|seemed) (?:very |quite |fairly |pretty |"
     r"really )?(light|moderate|heavy|busy|quiet|dense|sparse|empty)\b"
 )
 #: What each word of the two patterns above says of the traffic.
@@ -197,19 +302,32 @@ _DENSITY_WORDS = {"light": "light", "sparse": "light", "quiet": "light", "modera
                   "busy": "heavy", "dense": "heavy", "empty": "none", "none": "none"}  # fmt: skip
 
 
-def density(said: str) -> str | None:
+def density(said: str, read: str | None = None) -> str | None:
     """Background traffic said as a quantity of other road users: none ("not another car about"), light
-    ("barely any traffic", "only a handful of cars"), as a note ("traffic moderate") or of the road ("the
-    motorway was heavy"); None where the text says none of these."""
-    if no_other_traffic(said):
+    ("barely any traffic", "only a handful of cars"), heavy ("loads of traffic"), as a note ("traffic
+    moderate") or of the road ("the motorway was heavy", "traffic volumes are heavy"); else ``read``
+    (what the reader's words gave), unless that was "none" read only from words that do not speak of
+    the traffic about ("no other vehicles were involved", "no traffic lights")."""
+    said_of_traffic = _NOT_TRAFFIC.sub(" ", said)
+    if no_other_traffic(said_of_traffic):
         return "none"
-    if _FEW_OTHERS.search(said):
+    if _FEW_OTHERS.search(said_of_traffic):
         return "light"
-    note = _TRAFFIC_NOTE.search(said)
+    if _MANY_OTHERS.search(said_of_traffic):
+        return "heavy"
+    note = _TRAFFIC_NOTE.search(said_of_traffic)
     if note is not None:
         return _DENSITY_WORDS[note.group(1) or note.group(2)]
-    m = _SAID_OF_ROAD.search(said)
-    return None if m is None else _DENSITY_WORDS[m.group(1)]
+    m = _SAID_OF_ROAD.search(said_of_traffic)
+    if m is not None:
+        return _DENSITY_WORDS[m.group(1)]
+    if read == "none" and _NOT_TRAFFIC.search(said) and not _NONE_WORDS.search(said_of_traffic):
+        return None
+    return read
+
+
+#: The lexicon's words of no traffic, as a pattern over the normalised text.
+_NONE_WORDS = re.compile(r"\b(?:" + "|".join(re.escape(w) for w in L.DENSITY["none"]) + r")\b")
 
 
 #: The sun or a blue sky said ("blue skies", "the sun was out", "sunshine", "low sun glare"): clear.
@@ -279,7 +397,9 @@ def lanes_of_two_way_road(said: str, oncoming: bool) -> int | None:
 #: hung ("makes a right onto", "hangs a left into").
 _TURN = (
     r"(?:turn(?:s|ed|ing)?(?: (?:left|right|off))?"
-    r"|(?:makes?|making|made|takes?|taking|took|hangs?|hanging|hung) a (?:left|right))"
+    r"|(?:makes?|making|made|takes?|taking|took|hangs?|hanging|hung) a (?:left|right)"
+    r"|(?:makes?|making|made|takes?|taking|took|wants?|wanted|wanting|goes|going|went|is going|swings?|swung)"
+    r" the (?:left|right))"
 )
 #: A side road or street, or the main road (what one turns onto from a side road).
 _INTO_SIDE_ROAD = re.compile(
@@ -287,15 +407,41 @@ _INTO_SIDE_ROAD = re.compile(
 )
 #: A road named ("into Church Lane", "onto 9th St"): capitalised or numbered words before a road's noun.
 _INTO_NAMED_ROAD = re.compile(
-    rf"\b(?i:{_TURN}) (?:in|on)to (?:[A-Z0-9][\w']* )+"
+    rf"\b(?i:{_TURN}) (?:in|on)to (?:(?:[A-Z0-9][\w']* )+"
     r"(?:Road|Lane|Street|Avenue|Close|Drive|Way|Grove|Crescent|Place|Terrace|Boulevard|Rd|St|Ave|Blvd)\b"
+    r"|\d+(?:st|nd|rd|th)\b)"  # (or an American street by its number alone: "onto 42nd")
 )
+#: The road turned into said before its turn ("the street we are turning into", "the side road the bus
+#: turned onto"): a relative clause whose preposition is left at its end.
+_ROAD_TURNED_INTO = re.compile(
+    r"\b(?:road|street|lane|avenue|side road|side street)s? (?:that |which )?(?:[a-z]+ ){1,3}?"
+    rf"{_TURN} (?:in|on)to(?= [.,;:!?]| and\b| but\b| then\b| when\b| as\b|$)"
+)
+#: A turn across the opposing traffic without a protected signal phase ("an unprotected left"): made at
+#: a junction, whatever else the text calls the road.
+_UNPROTECTED = re.compile(r"\bunprotected (?:left|right)\b")
 
 
 def turns_into_a_road(text: str, said: str) -> bool:
-    """Whether someone turns into or onto a road (a side road, the main road, or one named in the
-    original ``text``): the road has a junction there."""
-    return _INTO_SIDE_ROAD.search(said) is not None or _INTO_NAMED_ROAD.search(text) is not None
+    """Whether someone turns into or onto a road (a side road, the main road, one named in the
+    original ``text``, or one said before its turn: "the street we are turning into") or makes an
+    unprotected turn: the road has a junction there."""
+    return (
+        _INTO_SIDE_ROAD.search(said) is not None
+        or _INTO_NAMED_ROAD.search(text) is not None
+        or _ROAD_TURNED_INTO.search(said) is not None
+        or _UNPROTECTED.search(said) is not None
+    )
+
+
+#: Words that make a crossing one for people on foot ("a zebra crossing", "the pelican", "a crosswalk").
+_FOOT_CROSSINGS = frozenset({"zebra", "pelican", "puffin", "toucan", "pedestrian", "crosswalk", "crosswalks"})
+
+
+def foot_crossing_named_before(tokens: list[str], i: int) -> bool:
+    """Whether a crossing for people on foot is named before token ``i``: then "the crossing" at ``i``
+    is that one, a known mention (the article says so), and not a junction."""
+    return any(t in _FOOT_CROSSINGS for t in tokens[:i])
 
 
 #: "lane 3", "lane two" (not "lane 2 of 3", which counts the lanes itself): a lane numbered from the kerb.

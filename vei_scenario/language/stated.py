@@ -39,10 +39,16 @@ _DIVIDED_TOTAL = re.compile(
 _TOTAL = {"four": 4, "six": 6, "eight": 8, "4": 4, "6": 6, "8": 8}
 
 
+#: A hyphenated compound of lanes and their direction ("one-lane-each-way", "two-lanes-per-direction"):
+#: read as its words.
+_LANE_COMPOUND = re.compile(r"\b[a-z0-9]+-lanes?-(?:each|per|in|either|a|every)(?:-[a-z]+)+\b")
+
+
 def stated_lanes(text: str) -> int | None:
     """Lanes per direction a normalised, lowercased description states, where the reader's words do
     not settle it: "three lanes each way", "the middle lane of three", "a one-way street with two
     lanes", and "a two-lane road" (one lane each way on a road that is not a motorway)."""
+    text = _LANE_COMPOUND.sub(lambda m: m.group(0).replace("-", " "), text)  # ("one-lane-each-way road")
     for pattern in (_EACH_WAY, _OF_N, _ONE_WAY):
         m = pattern.search(text)
         if m is not None:
