@@ -556,8 +556,9 @@ def _ego_aboard(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[
     before it)."""
     users = _road_users(tokens, kind_at, known)
     for k, w in enumerate(tokens):
-        if w not in ("ego", "i", "we") or (k and tokens[k - 1] not in CLAUSE_OPENING | {"the"}):
-            continue
+        at = k - 1 if k and tokens[k - 1] == "the" else k  # (the subject's first word: "the ego")
+        if w not in ("ego", "i", "we") or (at and tokens[at - 1] not in CLAUSE_OPENING):
+            continue  # (not the subject: "a man alongside the ego in a lorry" is the man's lorry)
         _, e = _sentence(tokens, k)
         nxt = next((q for q in users if q.start > k), None)
         if nxt is None or nxt.start >= e or nxt.kind not in VEHICLES or _placed(tokens, nxt) or _compound(tokens, nxt):
