@@ -41,6 +41,8 @@ FIRST = {
     "language_independent_k.json": ((45, 45, 24, 41), "sealed until the reader's last change"),
     "language_independent_l.json": ((50, 50, 23, 44), "measured when written"),
     "language_independent_m.json": ((50, 50, 19, 41), "measured when written"),
+    "language_independent_n.json": ((45, 45, 9, 32), "sealed until the reader's last change"),
+    "language_independent_o.json": ((45, 45, 8, 34), "sealed until the reader's last change"),
 }
 
 
