@@ -14,6 +14,7 @@ from __future__ import annotations
 
 from vei_scenario.language import vocabulary as V
 from vei_scenario.language.ego import SENTENCE_END
+from vei_scenario.language.quantities import _is_number
 
 #: Words of going at a speed, before "the <number> limit" ("doing", "sitting at", "keeping to").
 GOING = frozenset(
@@ -26,10 +27,6 @@ _BETWEEN = frozenset(
     "are is were was usually typically normally generally often mostly still tend to be will all".split()
 )
 _HEDGES = frozenset({"about", "around", "roughly", "approximately", "at", "nearly", "some"})
-
-
-def _number(word: str) -> bool:
-    return word.replace(".", "", 1).isdigit()
 
 
 def at_the_limit(tokens: list[str]) -> list[str]:
@@ -45,7 +42,7 @@ def at_the_limit(tokens: list[str]) -> list[str]:
         j = k - (out[k - 1] == "speed")
         unit = j >= 1 and out[j - 1] in V.SPEED_UNITS
         n = j - 1 - unit
-        if n >= 2 and _number(out[n]) and out[n - 1] == "the":
+        if n >= 2 and _is_number(out[n]) and out[n - 1] == "the":
             verb = n - 2 - (out[n - 2] in ("at", "to"))
             if verb >= 0 and out[verb] in GOING:
                 out[n - 1 : end] = out[n : n + 1 + unit]
@@ -70,6 +67,6 @@ def of_traffic(tokens: list[str]) -> float | None:
         j += 1
         while j < len(tokens) and tokens[j] in _HEDGES:
             j += 1
-        if j + 1 < len(tokens) and _number(tokens[j]) and tokens[j + 1] in V.SPEED_UNITS:
+        if j + 1 < len(tokens) and _is_number(tokens[j]) and tokens[j + 1] in V.SPEED_UNITS:
             return float(tokens[j]) * V.SPEED_UNITS[tokens[j + 1]]
     return None

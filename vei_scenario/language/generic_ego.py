@@ -28,6 +28,7 @@ from vei_scenario.language.ego import (
     _lemma_in,
     _placed,
     _road_users,
+    _sentence,
     names_ego,
 )
 from vei_scenario.language.lemmas import lemmas
@@ -105,12 +106,6 @@ def _generic_drivers(tokens: list[str], kind_at: KindAt, known: Known) -> list:
             continue  # ("Following a driver who brakes": the driver met)
         out.append(_Phrase(start, p.head, p.end, det, p.kind))  # (its own article only)
     return out
-
-
-def _sentence_end(tokens: list[str], i: int) -> int:
-    while i < len(tokens) and tokens[i] not in SENTENCE_END:
-        i += 1
-    return i
 
 
 def _anyone_met(tokens: list[str], start: int, end: int) -> tuple[int, int] | None:
@@ -210,7 +205,7 @@ def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) 
     if first is None or _labels(tokens, kind_at, known):
         return tokens  # ("a van pulls out and the driver brakes": that van's driver)
     drivers = [p for p in drivers if lone or p.start >= first.start]
-    met = _anyone_met(tokens, first.end, _sentence_end(tokens, first.end))
+    met = _anyone_met(tokens, first.end, _sentence(tokens, first.end)[1])
     if met is not None:
         dropped.extend(w for w in tokens[met[0] : met[1]] if w not in INDEFINITE)
         return [*tokens[: met[0]], "the", "ego", *tokens[met[1] :]]
