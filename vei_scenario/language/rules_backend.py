@@ -491,9 +491,7 @@ def _place_adversary(
         spawn["longitudinal_m"] = round(max(30.0, ego_speed * 3.0), 3) if distance_m is None else distance_m
         return spawn, 0.0
     if behaviour_name == "along_road":
-        from vei_scenario.language.behaviours.along_road import PACE_MPS
-
-        pace = PACE_MPS.get(kind, 4.0) if speed is None else speed
+        pace = _pace(kind, speed)
         if relation == "behind":  # coming up from behind ("came up the inside along the kerb"): faster
             if speed is None:
                 pace = max(pace, min(ego_speed + COMES_UP_MPS, TYPES[kind][3]))
@@ -544,6 +542,13 @@ def _place_adversary(
     return spawn, round(out_speed, 3)
 
 
+def _pace(kind: str, speed: float | None) -> float:
+    """The pace of a walker or rider going along the road: its stated speed, else its kind's usual one."""
+    from vei_scenario.language.behaviours.along_road import PACE_MPS
+
+    return PACE_MPS.get(kind, 4.0) if speed is None else speed
+
+
 #: How much faster than the ego one going along the road that comes up from behind rides, when its
 #: speed is not said (m/s; within its own top speed).
 COMES_UP_MPS = 2.0
@@ -567,9 +572,7 @@ def _kerb_rider(
     the kerb at its own pace (its stated speed, else a rider's usual one) and is placed as far ahead as
     ``lead_s`` seconds of the ego closing in before its gap, or at the distance said. The scenario
     writer puts it on the kerb lane's edge, where a lane change can start."""
-    from vei_scenario.language.behaviours.along_road import PACE_MPS
-
-    pace = PACE_MPS.get(kind, 4.0) if speed is None else speed
+    pace = _pace(kind, speed)
     params = BEHAVIOURS[behaviour_name].PARAMETERS
     if distance_m is not None:
         spawn["longitudinal_m"] = distance_m
