@@ -47,11 +47,23 @@ def reveal_gap_m(ctx: ActorContext, cfg: dict) -> float:
     return reveal_gap(ctx.ego_speed_mps, ctx.actor_speed_mps, lead_gap, ctx.actor_length_m, cfg)
 
 
+def swerve_lane(ctx: ActorContext, cfg: dict) -> int:
+    """The lane the lead swerves into: the neighbour lane of its own direction on the side said (or
+    the side that has one); on a road with no such lane (one lane each way) the oncoming lane next to
+    the centre line, which is where drivers go round what stands in their lane."""
+    try:
+        return neighbour_lane(ctx, side_with_a_lane(ctx, cfg, PARAMETERS["direction"].default))
+    except ValueError:
+        if ctx.lanes != 1:
+            raise
+        return -1 if ctx.actor_lane_id > 0 else 1
+
+
 def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
     obstacle = cfg.get("obstacle")
     if not isinstance(obstacle, str) or not obstacle:
         raise ValueError(f"{ctx.actor}: cut_out needs config obstacle (the name of what stands in the lane)")
-    target = neighbour_lane(ctx, side_with_a_lane(ctx, cfg, PARAMETERS["direction"].default))
+    target = swerve_lane(ctx, cfg)
     change = lane_change_to(target, value(cfg, PARAMETERS, "lane_change_s"))
     return [Step("cut_out", [change], conditions=[Condition("ego_within", round(reveal_gap_m(ctx, cfg), 2), obstacle)])]
 
