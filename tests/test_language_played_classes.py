@@ -98,3 +98,61 @@ def test_a_lane_change_to_a_side_with_no_lane_of_its_own_direction_is_refused_in
     )
     with pytest.raises(ValueError, match="Adversary1 has no lane to the"):
         write_scenario(layers, "scenario")
+
+
+def _crosser(relation: str, lon: float, speed: float, nodes: list[dict], kind: str = "bicycle") -> dict:
+    behaviour = nodes[0] if len(nodes) == 1 else {"sequence": nodes}
+    return {
+        "name": "Adversary1",
+        "type": kind,
+        "spawn": {"relation": relation, "longitudinal_m": lon},
+        "speed_mps": speed,
+        "behaviour": behaviour,
+    }
+
+
+@pytest.mark.parametrize(
+    ("relation", "ego_lane", "lanes", "before"),
+    [
+        ("right", 2, 2, [{"behaviour": "cut_in", "config": {"gap_m": 20.0}}]),  # (out of a side way, then across)
+        ("right", 2, 2, []),  # (already on the road at the ego's right)
+        ("left", 1, 2, []),  # (in the lane on the ego's left: across to the kerb side)
+        ("oncoming", 1, 1, []),  # (on the far side of the road)
+        ("ahead", 1, 1, [{"behaviour": "keep_going", "config": {}}]),  # (in the ego's lane: across to the far side)
+    ],
+    ids=["after-cut-in", "from-right-lane", "from-left-lane", "from-oncoming-lane", "from-ego-lane"],
+)
+@pytest.mark.parametrize(("ego_speed", "kind"), [(6.0, "bicycle"), (11.0, "e-scooter"), (16.0, "pedestrian")])
+def test_a_road_user_already_on_the_road_crosses_the_ego_s_path(
+    relation, ego_lane, lanes, before, ego_speed, kind, tmp_path
+):
+    """A crossing by a road user that starts in a lane (it rode out of a driveway and along, or is on
+    the road already) has no kerb to set off from: it moves across the ego's lane to the other side
+    of it, ahead of the ego, at its crossing pace."""
+    speed = 0.0 if kind == "pedestrian" else 4.0
+    nodes = before + [{"behaviour": "cross_in_front", "config": {"arrival_gap_s": 2.0}}]
+    layers = _layers(
+        "straight",
+        lanes,
+        {"speed_mps": ego_speed, "lane": ego_lane},
+        [_crosser(relation, 30.0 + ego_speed, speed, nodes, kind)],
+    )
+    assert _play(layers, tmp_path) == []
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+@pytest.mark.parametrize(("relation", "ego_lane"), [("right", 2), ("left", 1)])
+def test_background_traffic_keeps_out_of_the_lanes_a_road_user_crosses_from_a_lane_into(
+    relation, ego_lane, seed, tmp_path
+):
+    """Background vehicles keep to lanes nobody uses; one crossing from a lane uses the lanes on both
+    sides of the ego (where it crosses to), so none drives through it."""
+    import random
+
+    from vei_scenario.language.rules_backend import background
+
+    nodes = [{"behaviour": "cross_in_front", "config": {"arrival_gap_s": 2.0}}]
+    layers = _layers("straight", 2, {"speed_mps": 10.0, "lane": ego_lane}, [_crosser(relation, 40.0, 4.0, nodes)])
+    layers["environment"]["traffic_density"] = "heavy"
+    layers["background"]["vehicles"] = background(random.Random(seed), layers)
+    assert _play(layers, tmp_path) == []

@@ -781,6 +781,9 @@ def background(rng: random.Random, layers: dict) -> list[dict]:
                 used.update(range(ego_lane, 2))  # (the lanes it crosses and swerves back to)
             elif name == "overtake":
                 used.add(ego_lane + 1 if ego_lane != -1 else 1)
+            elif name == "cross_in_front" and not rel.startswith("roadside"):
+                # (one crossing from a lane goes over to a lane on the ego's other side: either)
+                used.update({ego_lane + 1 if ego_lane != -1 else 1, ego_lane - 1})
     free = [k for k in range(1, lanes + 1) if k not in used]
     if env["kind"] not in ("crossroad", "roundabout"):  # (towards a junction, players may choose other turns)
         free += [-k for k in range(1, lanes + 1) if -k not in used]

@@ -48,9 +48,41 @@ def trigger_distance_m(ctx: ActorContext, cfg: dict) -> float:
     return trigger_distance(ctx.ego_speed_mps, ctx.crossing_distance_m or 0.0, v, ctx.actor_max_accel_mps2, gap)
 
 
+#: Lane width the writer's maps use (m): a crossing from a lane measures its way across in lanes.
+LANE_WIDTH_M = 3.5
+
+
+def across_from_lane(ctx: ActorContext, cfg: dict) -> list[Step]:
+    """A crossing by a road user that starts in a lane, not at the kerb (it came out of a driveway
+    and along the road first, or the text puts it on the road): it has no kerb to set off from, so it
+    moves over the ego's lane to the other side of it, at its crossing pace, ahead of the ego. From
+    the ego's right it goes to the lane left of the ego (the oncoming one from the lane next to the
+    centre); from the ego's left or its own lane to the ego's right, past the kerb lane's edge when
+    there is no lane there."""
+    right_of_ego = ctx.actor_lane_id < 0 and ctx.actor_lane_id < ctx.ego_lane_id
+    offset = 0.0
+    if right_of_ego:
+        target = ctx.ego_lane_id + 1 if ctx.ego_lane_id != -1 else 1
+    elif abs(ctx.ego_lane_id) < ctx.lanes:
+        target = ctx.ego_lane_id - 1
+    else:  # (the ego drives in the kerb lane: across it to its kerb edge)
+        target, offset = ctx.ego_lane_id, -(LANE_WIDTH_M / 2 + 0.5)
+    lanes_over = abs(target - ctx.actor_lane_id) - (1 if (target > 0) != (ctx.actor_lane_id > 0) else 0)
+    across_m = max(lanes_over, 0) * LANE_WIDTH_M + abs(offset)
+    v = value(cfg, PARAMETERS, "crossing_speed_mps")
+    duration = min(max(across_m / v, 1.0), 6.0)
+    dyn = xosc.TransitionDynamics(xosc.DynamicsShapes.sinusoidal, xosc.DynamicsDimension.time, round(duration, 3))
+    change = xosc.AbsoluteLaneChangeAction(target, dyn, round(offset, 3) if offset else None)
+    # it sets off when the ego is as far away as it takes to get halfway over, plus the arrival gap
+    gap = value(cfg, PARAMETERS, "arrival_gap_s")
+    trigger = Condition("ego_within", round(max(1.0, ctx.ego_speed_mps * (duration / 2 + max(gap, 0.0))), 2))
+    actions = [change] + ([speed_action(v, rate=v / START_RAMP_S)] if ctx.actor_speed_mps < 0.5 else [])
+    return [Step("cross", actions, conditions=[trigger], fallback_s=2.0)]
+
+
 def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
     if ctx.crossing_path is None:
-        raise ValueError(f"{ctx.actor}: cross_in_front needs a roadside spawn (roadside_right or roadside_left)")
+        return across_from_lane(ctx, cfg)
     traj = xosc.Trajectory(f"{ctx.actor}_crossing", False)
     traj.add_shape(
         xosc.Polyline(
