@@ -156,3 +156,57 @@ def test_background_traffic_keeps_out_of_the_lanes_a_road_user_crosses_from_a_la
     layers["environment"]["traffic_density"] = "heavy"
     layers["background"]["vehicles"] = background(random.Random(seed), layers)
     assert _play(layers, tmp_path) == []
+
+
+def _runner(relation: str, speed: float, then: list[dict], ego: dict, kind: str, lanes: int = 1) -> dict:
+    """Layers of a road user running the red (or entering without stopping) from ``relation``, timed
+    by the rules backend's own placement, then doing ``then``."""
+    from vei_scenario.language.rules_backend import place_adversary
+
+    placement = {"crossroad": "before_junction", "roundabout": "before_roundabout"}[kind]
+    ego = {"placement": placement, "lane": 1, "agent": "cap"} | ego
+    cfg = {"arrival_gap_s": 0.0}
+    spawn, speed = place_adversary("car", relation, "run_red_light", cfg, ego, lanes, speed, None)
+    nodes = [{"behaviour": "run_red_light", "config": cfg}] + then
+    adv = {"name": "Adversary1", "type": "car", "spawn": spawn, "speed_mps": speed}
+    adv["behaviour"] = nodes[0] if len(nodes) == 1 else {"sequence": nodes}
+    layers = _layers("straight", lanes, {}, [adv], duration_s=40.0)
+    layers["environment"]["map"]["kind"] = kind
+    layers["ego"] = ego
+    return layers
+
+
+@pytest.mark.parametrize("then", ["", "sudden_stop", "stop"])
+@pytest.mark.parametrize("relation", ["junction_left", "junction_right"])
+@pytest.mark.parametrize(("ego_speed", "speed"), [(5.0, 12.0), (10.0, 9.0), (14.0, 6.0)])
+@pytest.mark.parametrize("kind", ["crossroad", "roundabout"])
+def test_a_red_light_runner_meets_the_ego_s_path_and_what_it_does_next_comes_after(
+    kind, ego_speed, speed, relation, then, tmp_path
+):
+    """Running the red (entering a roundabout without stopping) takes the runner to the ego's path
+    whatever the ego's and its own speed; a stop told after it comes once it is there, and is held."""
+    after = [{"behaviour": then, "config": {"decel_mps2": 8.0, "delay_s": 0.5}}] if then else []
+    ego = {"speed_mps": ego_speed, "distance_m": 60.0, "route": "straight"}
+    layers = _runner(relation, speed, after, ego, kind)
+    assert _play(layers, tmp_path) == []
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "At the roundabout a van from the left entry barrels on without yielding and then brakes to a halt.",
+        "We go round the roundabout at 30 km/h when a car from the right entry fails to give way, then stops dead.",
+        "Roundabout, ego at 15 km/h; a taxi joining from the left ignores the give-way line and slams to a stop.",
+    ],
+)
+def test_a_roundabout_run_then_a_stop_lasts_long_enough_to_be_played(text, tmp_path):
+    """The run of a road user entering a roundabout without giving way lasts half round the ring, and
+    the scenario lasts long enough for the stop it makes after it."""
+    from vei_scenario.language.rules_backend import layers_from_text
+
+    for seed in (0, 1):
+        layers = layers_from_text(text, seed)
+        names = [n["behaviour"] for n in layers["adversaries"][0]["behaviour"].get("sequence", [])]
+        if layers["environment"]["map"]["kind"] != "roundabout" or names[:1] != ["run_red_light"]:
+            pytest.skip(f"read otherwise: {names}")  # (the reader's part, not this one's)
+        assert _play(layers, tmp_path) == [], seed

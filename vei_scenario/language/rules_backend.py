@@ -10,12 +10,13 @@ Words it cannot place are reported (:class:`~vei_scenario.language.reading.NotUn
 
 from __future__ import annotations
 
+import math
 import random
 
 from vei_scenario.language.behaviours import BEHAVIOURS
 from vei_scenario.language.behaviours.base import value
 from vei_scenario.language.layers import behaviour_nodes
-from vei_scenario.language.maps import ARM_LENGTH_M, layout
+from vei_scenario.language.maps import ARM_LENGTH_M, ROUNDABOUT_RADIUS_M, layout
 from vei_scenario.language.placement import DEFAULT_FEATURE_DISTANCE_M, ego_pose, junction_conflict_m, lane_id
 from vei_scenario.language.reader import read as read_text
 from vei_scenario.language.reading import Reading
@@ -220,7 +221,7 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
             min(
                 120.0,
                 round(
-                    max((topology_time_s(a["behaviour"], ego_speed) for a in adversaries), default=0)
+                    max((topology_time_s(a["behaviour"], ego_speed) + _ring_s(a, kind) for a in adversaries), default=0)
                     + _approach_s(ego, adversaries)
                     + 5,
                     1,
@@ -292,6 +293,14 @@ def _far_side_gap(reading: Reading) -> bool:
 WAITING = ("turn_across", "turn_into", "give_way")
 #: Behaviours whose timing is the ego's arrival at the junction.
 AT_JUNCTION = ("run_red_light", "turn_across", "turn_into", "give_way", "forced_turn")
+
+
+def _ring_s(adv: dict, kind: str) -> float:
+    """The time a road user entering a roundabout without stopping takes half round its ring (s): its
+    run lasts until then (what it does next comes once it is on the ego's way), so the run must too."""
+    if kind != "roundabout" or not any(n["behaviour"] == "run_red_light" for _, n in behaviour_nodes(adv["behaviour"])):
+        return 0.0
+    return math.pi * ROUNDABOUT_RADIUS_M / max(float(adv["speed_mps"]), 1.0)
 
 
 def _approach_s(ego: dict, adversaries: list[dict]) -> float:

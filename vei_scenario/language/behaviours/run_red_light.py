@@ -3,7 +3,17 @@ the ego's path about when the ego does (``arrival_gap_s`` after it; negative: be
 
 from __future__ import annotations
 
-from vei_scenario.language.behaviours.base import ActorContext, Parameter, Step, route_action, speed_action
+import math
+
+from vei_scenario.language.behaviours.base import (
+    ActorContext,
+    Parameter,
+    Step,
+    route_action,
+    speed_action,
+    time_to_cover,
+)
+from vei_scenario.language.maps import JUNCTION_RADIUS_M, ROUNDABOUT_RADIUS_M
 
 NAME = "run_red_light"
 AGENT = "route follower"
@@ -21,4 +31,16 @@ PROFILES = {
 
 def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
     # the spawn distance (placement) sets the timing; here only the route and the held speed
-    return [Step("run_red_light", [route_action(ctx, "straight", own_view=True), speed_action(ctx.actor_speed_mps)])]
+    actions = [route_action(ctx, "straight", own_view=True), speed_action(ctx.actor_speed_mps)]
+    return [Step("run_red_light", actions, hold_s=through_s(ctx))]
+
+
+def through_s(ctx: ActorContext) -> float:
+    """How long the run lasts (s): until the runner is through the junction's middle, or half round a
+    roundabout's ring (from the entry left of the ego's the ways meet only after a quarter). Why: its actions end at
+    once, and what the text has it do next ("... and stops dead") must come once it is on the ego's
+    path, not seconds after it set off far up its arm."""
+    to_entry = max(0.0, ctx.junction_end_s_m - ctx.actor_s_m) if ctx.junction_end_s_m else 0.0
+    through = math.pi * ROUNDABOUT_RADIUS_M if ctx.map_kind == "roundabout" else 2 * JUNCTION_RADIUS_M
+    v = ctx.actor_speed_mps
+    return round(min(time_to_cover(to_entry + through, v, ctx.actor_max_accel_mps2, start_mps=v), 60.0), 3)
