@@ -210,3 +210,28 @@ def test_a_roundabout_run_then_a_stop_lasts_long_enough_to_be_played(text, tmp_p
         if layers["environment"]["map"]["kind"] != "roundabout" or names[:1] != ["run_red_light"]:
             pytest.skip(f"read otherwise: {names}")  # (the reader's part, not this one's)
         assert _play(layers, tmp_path) == [], seed
+
+
+@pytest.mark.parametrize("kind", ["e-scooter", "bicycle", "truck"])
+@pytest.mark.parametrize("ego_speed", [7.0, 11.0, 16.0])
+@pytest.mark.parametrize("map_kind", ["straight", "curve"])
+def test_an_overtake_gets_ahead_of_the_ego_whatever_its_kind_s_usual_top_speed(kind, ego_speed, map_kind, tmp_path):
+    """An overtake the layers give a road user passes the ego: it is given the speed that takes (the
+    ego's and the pass's gain), even past what its kind usually does (a tuned e-scooter, a lorry on
+    a fast road), and the time."""
+    layers = _layers(
+        map_kind,
+        1,
+        {"speed_mps": ego_speed},
+        [
+            {
+                "name": "Adversary1",
+                "type": kind,
+                "spawn": {"relation": "behind", "longitudinal_m": -18.0},
+                "speed_mps": ego_speed,
+                "behaviour": {"behaviour": "overtake", "config": {"gap_m": 10.0, "lane_change_s": 2.0}},
+            }
+        ],
+        duration_s=25.0,
+    )
+    assert _play(layers, tmp_path) == []

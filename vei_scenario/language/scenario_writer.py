@@ -31,7 +31,7 @@ from scenariogeneration import xosc
 
 from vei_scenario.language import maps, placement
 from vei_scenario.language.behaviours import behaviour
-from vei_scenario.language.behaviours.base import ActorContext, Condition, G
+from vei_scenario.language.behaviours.base import ActorContext, Condition, G, value
 from vei_scenario.language.description_text import plain_text
 from vei_scenario.language.layers import behaviour_nodes
 from vei_scenario.models.cap import CapParameters
@@ -91,8 +91,22 @@ def friction(layers: dict) -> float:
     return float(w.get("friction", WEATHER[w["condition"]][3]))
 
 
-def _vehicle(name: str, kind: str, mu: float):
-    (length, width, height), category, mass, vmax, amax, dmax = TYPES[kind]
+def top_speed(adv: dict, ego_speed: float) -> float:
+    """The top speed (m/s) of adversary ``adv``'s vehicle: its kind's usual one, or more where its
+    layers ask more of it: the speed they give it (a rider the text has doing 30 mph rides a tuned
+    scooter), and an overtake's pass, which must outrun the ego (at its kind's usual top a rider
+    never gets past an ego as fast as that)."""
+    top = max(TYPES[adv["type"]][3], float(adv.get("speed_mps", 0.0)))
+    for _, node in behaviour_nodes(adv["behaviour"]):
+        if node["behaviour"] == "overtake":
+            gain = value(node.get("config", {}), behaviour("overtake").PARAMETERS, "speed_gain_mps")
+            top = max(top, ego_speed + gain)
+    return round(top, 3)
+
+
+def _vehicle(name: str, kind: str, mu: float, vmax: float | None = None):
+    (length, width, height), category, mass, kind_vmax, amax, dmax = TYPES[kind]
+    vmax = kind_vmax if vmax is None else vmax
     box = xosc.BoundingBox(width, length, height, 0.0, 0.0, height / 2)
     dmax = round(min(dmax, mu * G), 3)
     if category == "pedestrian":
@@ -308,6 +322,7 @@ def write_scenario(layers: dict, stem: str) -> WrittenScenario:
         name, kind = adv["name"], adv["type"]
         pose = placement.adversary_pose(info, ego_pose, adv["spawn"])
         speed = float(adv.get("speed_mps", 0.0 if vulnerable(kind) else ego_speed))
+        top = top_speed(adv, ego_speed)
         ctx = ActorContext(
             actor=name,
             actor_type=kind,
@@ -324,7 +339,7 @@ def write_scenario(layers: dict, stem: str) -> WrittenScenario:
             exits=info.exits,
             junction_end_s_m=info.feature_s_m,
             actor_max_accel_mps2=TYPES[kind][4],
-            actor_max_speed_mps=TYPES[kind][3],
+            actor_max_speed_mps=top,
             ego_s_m=ego_pose.s,
             actor_length_m=TYPES[kind][0][0],
             actor_exits=_own_exits(info, pose.road),
@@ -362,9 +377,9 @@ def write_scenario(layers: dict, stem: str) -> WrittenScenario:
         else:
             position = _lane_position(pose)
         if controller is not None:
-            entities.add_scenario_object(name, _vehicle(name, kind, mu), controller)
+            entities.add_scenario_object(name, _vehicle(name, kind, mu, top), controller)
         else:
-            entities.add_scenario_object(name, _vehicle(name, kind, mu))
+            entities.add_scenario_object(name, _vehicle(name, kind, mu, top))
         init.add_init_action(name, xosc.TeleportAction(position))
         init.add_init_action(name, xosc.AbsoluteSpeedAction(round(speed, 3), _step()))
         builder = _StoryBuilder(name, ctx)
