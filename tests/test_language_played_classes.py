@@ -235,3 +235,21 @@ def test_an_overtake_gets_ahead_of_the_ego_whatever_its_kind_s_usual_top_speed(k
         duration_s=25.0,
     )
     assert _play(layers, tmp_path) == []
+
+
+@pytest.mark.parametrize("stop", ["sudden_stop", "stop"])
+@pytest.mark.parametrize(
+    ("kind", "agent"), [("e-scooter", "sfm"), ("bicycle", "sfm"), ("e-scooter", None), ("pedestrian", None)]
+)
+@pytest.mark.parametrize("ego_speed", [6.0, 11.0, 15.0])
+def test_a_crosser_told_to_stop_after_crossing_comes_to_a_standstill(stop, kind, agent, ego_speed, tmp_path):
+    """A stop after a crossing is reached and held, whoever drives the crossing: a rider the social
+    force model steers hands its speed back to the scenario when the stop begins (the model would
+    keep it at its own pace)."""
+    cross = {"behaviour": "cross_in_front", "config": {"arrival_gap_s": 2.0, "crossing_speed_mps": 4.0}}
+    if agent:
+        cross["config"]["agent"] = agent
+    nodes = [cross, {"behaviour": stop, "config": {"decel_mps2": 6.0, "delay_s": 0.5}}]
+    adv = _crosser("roadside_right", 40.0 + 2 * ego_speed, 0.0, nodes, kind)
+    layers = _layers("straight", 1, {"speed_mps": ego_speed}, [adv], duration_s=25.0)
+    assert _play(layers, tmp_path) == []

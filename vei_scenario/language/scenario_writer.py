@@ -185,6 +185,8 @@ class _StoryBuilder:
         self.actor, self.ctx = actor, ctx
         self.maneuver = xosc.Maneuver(f"{actor}_behaviour")
         self.count = 0
+        #: A controller (the social force model) a crossing switched on is in charge of the actor
+        self.controlled = False
 
     def emit(self, node: dict, after: list[_Anchor]) -> list[_Anchor]:
         if "sequence" in node:
@@ -199,6 +201,13 @@ class _StoryBuilder:
         mod = behaviour(node["behaviour"])
         cfg = dict(node.get("config", {}))
         steps = mod.compile(self.ctx, cfg)
+        activates = [a for st in steps for a in st.actions if isinstance(a, xosc.ActivateControllerAction)]
+        if self.controlled and steps and not activates:
+            # what follows a ride the social force model steered (a stop after crossing) is the
+            # scenario's to play: the model would hold the rider at its own pace
+            steps[0].actions.insert(0, xosc.ActivateControllerAction(lateral=False, longitudinal=False))
+            self.controlled = False
+        self.controlled = self.controlled or bool(activates)
         start = node.get("start", {})
         prev = after
         for i, step in enumerate(steps):
