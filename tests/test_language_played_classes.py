@@ -39,12 +39,15 @@ def _layers(kind: str, lanes: int, ego: dict, adversaries: list[dict], duration_
     }
 
 
-def _play(layers: dict, tmp_path: Path) -> list[str]:
+def _run(layers: dict, tmp_path: Path):
     written = write_scenario(layers, "scenario")
     (tmp_path / "scenario.xosc").write_bytes(written.xosc)
     (tmp_path / "scenario.xodr").write_bytes(written.xodr)
-    result = run_scenario(tmp_path / "scenario.xosc", None, round(1.0 / float(layers["rate_hz"]), 6))
-    return played_problems(result, layers)
+    return run_scenario(tmp_path / "scenario.xosc", None, round(1.0 / float(layers["rate_hz"]), 6))
+
+
+def _play(layers: dict, tmp_path: Path) -> list[str]:
+    return played_problems(_run(layers, tmp_path), layers)
 
 
 @pytest.mark.parametrize("kind", ["straight", "curve"])
@@ -253,3 +256,26 @@ def test_a_crosser_told_to_stop_after_crossing_comes_to_a_standstill(stop, kind,
     adv = _crosser("roadside_right", 40.0 + 2 * ego_speed, 0.0, nodes, kind)
     layers = _layers("straight", 1, {"speed_mps": ego_speed}, [adv], duration_s=25.0)
     assert _play(layers, tmp_path) == []
+
+
+@pytest.mark.parametrize("relation", ["junction_left", "junction_right"])
+@pytest.mark.parametrize(("first_m", "then_m"), [(60.0, 150.0), (50.0, 220.0), (80.0, 120.0)])
+def test_a_red_light_runner_is_timed_again_when_the_ego_starts_farther_back(relation, first_m, then_m, tmp_path):
+    """A runner's spawn is timed from where the ego starts; when the ego is moved back to make room
+    for someone ahead of it, the runner is timed again, so they still meet. One whose distance the
+    text states keeps it."""
+    from vei_scenario.language.rules_backend import retime_junction_runs
+
+    ego = {"speed_mps": 12.0, "distance_m": first_m, "route": "straight"}
+    layers = _runner(relation, 10.0, [], ego, "crossroad", lanes=2)
+    layers["ego"]["distance_m"] = then_m  # (moved back after the runner was placed)
+    stated = {"name": "Adversary9", "spawn": {"relation": relation, "longitudinal_m": 33.0}}
+    stated |= {"speed_mps": 10.0, "behaviour": {"behaviour": "run_red_light", "config": {}}}
+    retime_junction_runs(layers["ego"], layers["adversaries"] + [stated], 2, {"Adversary1"})
+    assert stated["spawn"]["longitudinal_m"] == 33.0
+    result = _run(layers, tmp_path)
+    assert played_problems(result, layers) == []
+    ego, runner = result.traces[result.ego], result.traces["Adversary1"]
+    import numpy as np
+
+    assert float(np.hypot(ego.x - runner.x, ego.y - runner.y).min()) < 12.0  # (they meet: it was timed to)

@@ -121,6 +121,7 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
         ego["route"] = reading.ego_route if reading.ego_route in ("straight", "left", "right") else "straight"
     intent = reading.intent or "unspecified"
     adversaries = []
+    timed: set[str] = set()  # (red-light runners timed by placement, not at a distance the text states)
     for spec in reading.actors:
         behaviours = spec.behaviours or [("keep_going", {}, None, "sequence")]  # (the reading stays as read)
         name = f"Adversary{len(adversaries) + 1}"
@@ -188,6 +189,8 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
         spawn, speed = place_adversary(
             spec.kind, relation, first.NAME, first_cfg, ego, lanes, given_speed, spec.distance_m
         )
+        if first.NAME == "run_red_light" and relation.startswith("junction") and spec.distance_m is None:
+            timed.add(name)
         if spec_lateral:
             spawn["lateral_m"] = round(spec_lateral, 3)
         facing = spec.facing or getattr(first, "DEFAULT_SPAWN", {}).get("facing")
@@ -210,7 +213,10 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
         )
     _place_obstacles(reading, adversaries, ego_speed)
     _place_occluders(reading, adversaries)
+    start_m = ego.get("distance_m")
     _room_ahead_before_feature(ego, adversaries, kind)
+    if ego.get("distance_m") != start_m:
+        retime_junction_runs(ego, adversaries, lanes, timed)
     layers = {
         "format": "vei-layers/1",
         "description": text,
@@ -363,6 +369,19 @@ def _room_ahead_before_feature(ego: dict, adversaries: list[dict], kind: str) ->
         need = max(need, lon, meet + MEETING_CLEAR_OF_FEATURE_M if meet > lon else lon)
     if need > float(ego["distance_m"]) - 1.0:
         ego["distance_m"] = round(min(need + MEETING_CLEAR_OF_FEATURE_M, ARM_LENGTH_M - 20.0), 3)
+
+
+def retime_junction_runs(ego: dict, adversaries: list[dict], lanes: int, names: set[str]) -> None:
+    """Red-light runners ``names`` placed again for where the ego now starts: their spawn was timed
+    to meet the ego at the junction from its first start, and it starts farther back when a road
+    user ahead of it needs the room (they had crossed long before the ego came)."""
+    for adv in adversaries:
+        if adv["name"] in names and adv["spawn"]["relation"] in ("junction_left", "junction_right"):
+            cfg = next(n for _, n in behaviour_nodes(adv["behaviour"]))["config"]
+            lon = _junction_spawn(
+                ego, lanes, adv["spawn"]["relation"], float(adv["speed_mps"]), float(ego["speed_mps"]), cfg
+            )
+            adv["spawn"]["longitudinal_m"] = round(lon, 3)
 
 
 def _place_occluders(reading: Reading, adversaries: list[dict]) -> None:
