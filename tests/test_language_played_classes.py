@@ -279,3 +279,27 @@ def test_a_red_light_runner_is_timed_again_when_the_ego_starts_farther_back(rela
     import numpy as np
 
     assert float(np.hypot(ego.x - runner.x, ego.y - runner.y).min()) < 12.0  # (they meet: it was timed to)
+
+
+@pytest.mark.parametrize("kind", ["truck", "bicycle", "car"])
+@pytest.mark.parametrize("relation", ["junction_left", "junction_right"])
+@pytest.mark.parametrize(("ego_speed", "distance_m"), [(22.0, 60.0), (18.0, 45.0), (12.0, 30.0)])
+def test_a_road_user_pulling_out_ahead_of_a_fast_ego_has_the_room_to_do_it(
+    kind, relation, ego_speed, distance_m, tmp_path
+):
+    """A road user pulling out of a side road in front of the ego sets off when the ego is as far as
+    its own time to the ego's lane needs; a fast ego starting too near the junction is moved back so
+    that far (a lorry needs five seconds to come out: at 80 km/h that is over 100 m)."""
+    import random
+
+    from vei_scenario.language.rules_backend import make_room_to_pull_out, place_adversary
+
+    ego = {"placement": "before_junction", "lane": 1, "agent": "cap", "speed_mps": ego_speed}
+    ego |= {"distance_m": distance_m, "route": "straight"}
+    cfg = {"arrival_gap_s": random.Random(ego_speed).uniform(0.0, 0.6)}
+    spawn, speed = place_adversary(kind, relation, "turn_into", cfg, ego, 1, None, None)
+    adv = {"name": "Adversary1", "type": kind, "spawn": spawn, "speed_mps": speed}
+    adv["behaviour"] = {"behaviour": "turn_into", "config": cfg}
+    make_room_to_pull_out(ego, [adv])
+    layers = _layers("crossroad", 1, ego, [adv], duration_s=30.0)
+    assert _play(layers, tmp_path) == []

@@ -14,7 +14,7 @@ import math
 import random
 
 from vei_scenario.language.behaviours import BEHAVIOURS
-from vei_scenario.language.behaviours.base import value
+from vei_scenario.language.behaviours.base import time_to_cover, value
 from vei_scenario.language.layers import behaviour_nodes
 from vei_scenario.language.maps import ARM_LENGTH_M, ROUNDABOUT_RADIUS_M, layout
 from vei_scenario.language.placement import DEFAULT_FEATURE_DISTANCE_M, ego_pose, junction_conflict_m, lane_id
@@ -215,6 +215,7 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
     _place_occluders(reading, adversaries)
     start_m = ego.get("distance_m")
     _room_ahead_before_feature(ego, adversaries, kind)
+    make_room_to_pull_out(ego, adversaries, lanes, kind == "roundabout")
     if ego.get("distance_m") != start_m:
         retime_junction_runs(ego, adversaries, lanes, timed)
     layers = {
@@ -369,6 +370,37 @@ def _room_ahead_before_feature(ego: dict, adversaries: list[dict], kind: str) ->
         need = max(need, lon, meet + MEETING_CLEAR_OF_FEATURE_M if meet > lon else lon)
     if need > float(ego["distance_m"]) - 1.0:
         ego["distance_m"] = round(min(need + MEETING_CLEAR_OF_FEATURE_M, ARM_LENGTH_M - 20.0), 3)
+
+
+#: How much farther back than a side-road road user's own time to pull out needs the ego starts (m).
+PULL_OUT_MARGIN_M = 10.0
+
+
+def make_room_to_pull_out(ego: dict, adversaries: list[dict], lanes: int = 1, ring: bool = False) -> None:
+    """The ego starts far enough before its junction for a road user waiting in a side road to pull
+    out in front of it: that road user sets off when the ego is as far as its own time to the ego's
+    lane (from standing, at what its vehicle can do) takes at the ego's speed. Where the ego starts
+    nearer (a fast ego, a slow lorry), it is moved back; where it is far enough, nothing changes."""
+    from vei_scenario.language.behaviours import turn_into
+
+    if "distance_m" not in ego:
+        return
+    ego_speed = float(ego["speed_mps"])
+    for adv in adversaries:
+        relation = adv["spawn"]["relation"]
+        node = next(n for _, n in behaviour_nodes(adv["behaviour"]))
+        if node["behaviour"] != "turn_into" or relation not in ("junction_left", "junction_right"):
+            continue
+        cfg = node.get("config", {})
+        length, top, accel = TYPES[adv["type"]][0][0], TYPES[adv["type"]][3], TYPES[adv["type"]][4]
+        actor_path, ego_path = turn_into.paths_m(relation == "junction_left", lane_id(lanes, ego["lane"]), ring)
+        v = min(value(cfg, turn_into.PARAMETERS, "speed_mps"), 8.0, top)
+        a = min(value(cfg, turn_into.PARAMETERS, "accel_mps2"), accel)
+        t_actor = time_to_cover(actor_path + length / 2, v, a, 0.0)
+        gap = value(cfg, turn_into.PARAMETERS, "arrival_gap_s")
+        need = ego_speed * (t_actor + max(gap, 0.0)) - ego_path + PULL_OUT_MARGIN_M
+        if need > float(ego["distance_m"]):
+            ego["distance_m"] = round(min(need, ARM_LENGTH_M - 20.0), 3)
 
 
 def retime_junction_runs(ego: dict, adversaries: list[dict], lanes: int, names: set[str]) -> None:
