@@ -344,3 +344,53 @@ def test_a_vehicle_designated_as_the_ego_is_the_ego(text, kinds, kph):
 def test_a_vehicle_named_by_its_owner_is_the_ego_when_told_from(text, kinds, kph):
     assert sorted(_kinds(text)) == sorted(kinds)
     assert _ego_kph(text) == kph
+
+
+# An operator's fleet ("our scooters", "one of our bikes") is many vehicles, none of them the writer's
+# own: its members are other road users, where "our van" (one vehicle) is the ego.
+@pytest.mark.parametrize(
+    "text, kinds",
+    [
+        ("A cyclist swung out across the front of our van at 20 km/h.", ["bicycle"]),
+        ("A taxi driver tells us one of our e-bikes came off the kerb on his left and crossed in front of him.",
+         ["bicycle"]),
+        ("Complaint: one of our hire scooters shot out of a side street on the left into the path of a "
+         "motorist doing 25 mph.", ["e-scooter"]),
+    ],
+)  # fmt: skip
+def test_one_of_a_fleet_is_another_road_user(text, kinds):
+    assert sorted(_kinds(text)) == sorted(kinds)
+
+
+# A driver (or rider) whose account a report gives ("Bus driver says ...", "the driver of a car states
+# that ...") is the one the report is told from: the ego; "they"/"he"/"them"/"their" of the account
+# are that driver, whose speed is the ego's.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("Lorry driver says he was doing 40 mph when a cyclist veered out in front of him.", ["bicycle"], 64.4),
+        ("The cab driver stated that she was going at 10 mph when a pedestrian stepped off the kerb into her path.",
+         ["pedestrian"], 16.1),
+        ("Motorist claims they were travelling at 30 km/h when one of our e-scooters pulled out from the left "
+         "into their lane.", ["e-scooter"], 30.0),
+        ("The driver of a minibus reports that a man on a bike braked sharply in front of them. Driver was "
+         "doing 35 km/h.", ["bicycle"], 35.0),
+    ],
+)  # fmt: skip
+def test_the_driver_whose_account_is_reported_is_the_ego(text, kinds, kph):
+    assert _kinds(text) == kinds
+    assert _ego_kph(text) == kph
+
+
+def test_the_account_of_the_other_driver_in_a_first_person_story_stays_that_driver():
+    text = "I was doing 30 mph when a van pulled out in front of me; the van driver says he never saw me."
+    assert _kinds(text) == ["van"]
+    assert _ego_kph(text) == 48.3
+
+
+def test_a_driver_who_says_nothing_of_a_road_user_is_no_report():
+    # a reporting verb with no driver as its subject leaves the road users as they are
+    assert _kinds("A witness says a van hit a cyclist who had swerved out at 20 mph.") in (
+        ["bicycle"],
+        ["van", "bicycle"],
+    )

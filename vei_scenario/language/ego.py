@@ -605,6 +605,91 @@ def _driver_is_ego(tokens: list[str], kind_at: KindAt, known: Known, dropped: li
     return out
 
 
+#: Verbs that give someone's account ("Driver states ...", "motorist reports ..."), a closed class.
+REPORTS = frozenset(
+    {"say", "state", "report", "claim", "tell", "explain", "allege", "estimate", "recall", "insist", "admit"}
+)
+#: Pronouns of the one whose account is given, as they stand in it: subject, object, possessive.
+ACCOUNT_SUBJECT = frozenset({"they", "he", "she"})
+ACCOUNT_OBJECT = frozenset({"them", "him"})
+ACCOUNT_POSSESSIVE = frozenset({"their", "his"})
+#: First-person words of a narrator at a wheel, whose story it is (a "we" of an operator is not one).
+NARRATOR = frozenset({"i", "me", "my", "myself"})
+
+
+def _reporter_at(tokens: list[str], k: int, kind_at: KindAt) -> tuple[int, str | None] | None:
+    """Where the person at a wheel whose account the verb at ``k`` gives starts ("car driver", "the
+    driver of a car", "Motorist", opening its clause), and the noun of that person's vehicle if said;
+    None where the verb's subject is no such person."""
+    j = k - 1
+    while j >= 0 and tokens[j] in {"has", "had", "also", "later", "then"}:
+        j -= 1
+    vehicle = None
+    if j >= 3 and tokens[j - 2] == "of" and (found := kind_at(tokens, j)) is not None and found[0] in VEHICLES:
+        vehicle, j = tokens[j], j - 3 + (tokens[j - 1] not in DEFINITE | INDEFINITE)  # ("driver of a car")
+    if j < 0 or tokens[j] not in AT_WHEEL:
+        return None
+    start = j
+    if vehicle is None and start and (found := kind_at(tokens, start - 1)) is not None and found[0] in VEHICLES:
+        vehicle, start = tokens[start - 1], start - 1  # ("car driver", "the cab driver")
+    start -= start > 0 and tokens[start - 1] in DEFINITE | INDEFINITE
+    return (start, vehicle) if not start or tokens[start - 1] in CLAUSE_OPENING else None
+
+
+def _reported(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """A report that gives the account of a person at a wheel ("Car driver says one of our scooters
+    ...", "Driver states they were turning right at 15 mph", "the driver of a van reports that ..."):
+    that person is the one the report is told from, the ego, and so are the pronouns that stand for
+    them in the account (the subject right after the verb of saying: "says they were"; "them", "his"
+    where the account's other road user acts on them: "in front of them"), every later bare or
+    "the" mention of that person ("Driver braked") and their vehicle ("the car"). A text told by
+    an "I" is that narrator's, whatever another driver says."""
+    named = [p for p in _road_users(tokens, kind_at, known) if p.kind == "ego" and tokens[p.start] not in ("us", "we")]
+    if NARRATOR & set(tokens) or named:  # ("tells us": an operator's "we" only hears the account)
+        return tokens
+    at = next(
+        (
+            (k, found)
+            for k, w in enumerate(tokens)
+            if _lemma_in(w, REPORTS) and (found := _reporter_at(tokens, k, kind_at))
+        ),
+        None,
+    )
+    if at is None:
+        return tokens
+    k, (start, vehicle) = at
+    person = tokens[k - 1] if tokens[k - 1] in AT_WHEEL else next(w for w in tokens[start:k] if w in AT_WHEEL)
+    dropped.extend(w for w in tokens[start:k] if w.isalpha() and w not in DEFINITE | INDEFINITE)
+    out = [*tokens[:start], "the", "ego", *tokens[k:]]
+    said: list[str] = []
+    for i, w in enumerate(out):  # (the same person said again, bare or with "the")
+        if w == person and (not i or out[i - 1] in CLAUSE_OPENING | {"the"}) and out[i + 1 : i + 2] != ["of"]:
+            if said and said[-1] == "the":
+                said.pop()
+            said += ["the", "ego"]
+            continue
+        said.append(w)
+    out = said
+    for i in range(len(out) - 1, -1, -1):  # (the account's pronouns, in each sentence the ego tells)
+        s, e = _sentence(out, i)
+        if out[i] not in ACCOUNT_SUBJECT | ACCOUNT_OBJECT | ACCOUNT_POSSESSIVE | {"her"} or out[s : s + 2] != [
+            "the",
+            "ego",
+        ]:
+            continue
+        if not any(_lemma_in(w, REPORTS) for w in out[s:i]):
+            continue
+        before = out[i - 1] if out[i - 1] != "that" else out[i - 2]
+        nxt = out[i + 1] if i + 1 < len(out) else ""
+        possessive = out[i] in ACCOUNT_POSSESSIVE or (out[i] == "her" and nxt.isalpha() and "NOUN" in lemmas(nxt))
+        if out[i] in ACCOUNT_SUBJECT and not _lemma_in(before, REPORTS):
+            continue  # (a "he" of its own: the account's other road user)
+        out[i : i + 1] = ["the", "ego", "'s"] if possessive else ["the", "ego"]
+    if vehicle is not None:
+        out = _as_ego(out, kind_at, known, vehicle, dropped)
+    return _driver_is_ego(out, kind_at, known, dropped)
+
+
 def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """``tokens`` with the road user the text is told from said "the ego" where the text names it by
     a role, by its driver or in the third person (see the module's docstring); the words that only
@@ -619,6 +704,7 @@ def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) 
     tokens = _boarded(tokens, kind_at, known, dropped)
     tokens = _told_from(tokens, kind_at, known, dropped)
     tokens = _ego_aboard(tokens, kind_at, known, dropped)
+    tokens = _reported(tokens, kind_at, known, dropped)
     if names_ego(tokens, kind_at, known):
         return tokens
     from vei_scenario.language.discourse import _labels
