@@ -394,3 +394,25 @@ def test_a_driver_who_says_nothing_of_a_road_user_is_no_report():
         ["bicycle"],
         ["van", "bicycle"],
     )
+
+
+# One vehicle of the writer's fleet that the story follows ("one of our vans was doing 30 mph ...") is
+# the ego, unless it is told in someone else's account ("a cyclist says one of our vans ...").
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("Last week one of our vans was doing 30 mph on the ring road when a cyclist pulled out in front of it.",
+         ["bicycle"], 48.3),
+        ("One of our buses was pulling away from the stop at 10 km/h when a pedestrian ran across in front of the bus.",
+         ["pedestrian"], 10.0),
+        ("Yesterday, one of our tippers was turning right at 5 mph. The driver stopped when a cyclist came up on "
+         "the inside.", ["bicycle"], 8.0),
+    ],
+)  # fmt: skip
+def test_one_of_the_writers_fleet_the_story_follows_is_the_ego(text, kinds, kph):
+    assert _kinds(text) == kinds
+    assert _ego_kph(text) == kph
+
+
+def test_one_of_the_fleet_in_someone_elses_account_is_another_road_user():
+    assert "van" in _kinds("A cyclist says one of our vans pulled out in front of him at 20 mph.")

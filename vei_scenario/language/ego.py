@@ -690,6 +690,32 @@ def _reported(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[st
     return _driver_is_ego(out, kind_at, known, dropped)
 
 
+def _fleet_member(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "Last week one of our vans was doing 30 mph ...", "One of our buses was pulling away ...": one
+    vehicle of the writer's fleet, the subject of its clause, is the one the story follows, the ego
+    (so are its later "the van" and "the driver"); said inside someone's account ("a cyclist says one
+    of our vans pulled out") it is another road user, as a fleet said in the plural always is."""
+    if NARRATOR & set(tokens) or any(p.kind == "ego" for p in _road_users(tokens, kind_at, known)):
+        return tokens
+    for k in range(len(tokens) - 3):
+        if tokens[k : k + 3] != ["one", "of", "our"]:
+            continue
+        p = next((q for q in _vehicle_phrases(tokens, kind_at, known) if k + 2 <= q.start <= k + 5), None)
+        if p is not None and any(kind_at(tokens, j) is not None for j in range(k + 3, p.start)):
+            p = None  # (past its modifiers only: "one of our 7.5-tonners")
+        if p is None or p.end >= len(tokens) or not (tokens[p.end] in BE or "VERB" in lemmas(tokens[p.end])):
+            continue
+        s, _ = _sentence(tokens, k)
+        if any(_lemma_in(w, REPORTS) for w in tokens[s:k]):
+            continue  # (someone's account of our vehicle)
+        plural = tokens[p.end - 1]
+        noun = next(iter(lemmas(plural).get("NOUN", (plural,))))
+        dropped.extend(w for w in tokens[k : p.end] if w.isalpha())
+        out = [*tokens[:k], "the", "ego", *tokens[p.end :]]
+        return _driver_is_ego(_as_ego(out, kind_at, known, noun, dropped), kind_at, known, dropped)
+    return tokens
+
+
 def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """``tokens`` with the road user the text is told from said "the ego" where the text names it by
     a role, by its driver or in the third person (see the module's docstring); the words that only
@@ -705,6 +731,7 @@ def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) 
     tokens = _told_from(tokens, kind_at, known, dropped)
     tokens = _ego_aboard(tokens, kind_at, known, dropped)
     tokens = _reported(tokens, kind_at, known, dropped)
+    tokens = _fleet_member(tokens, kind_at, known, dropped)
     if names_ego(tokens, kind_at, known):
         return tokens
     from vei_scenario.language.discourse import _labels
