@@ -416,3 +416,31 @@ def test_one_of_the_writers_fleet_the_story_follows_is_the_ego(text, kinds, kph)
 
 def test_one_of_the_fleet_in_someone_elses_account_is_another_road_user():
     assert "van" in _kinds("A cyclist says one of our vans pulled out in front of him at 20 mph.")
+
+
+# The ego named by a role, then the vehicle it drives ("The insured was driving a Ford Fiesta", "the
+# claimant, driving her own Micra,", "Insured (Mr Jones, driving his works van)"): that vehicle is the
+# ego's own, never another road user, and the speed said of the ego is the ego's.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("The insured was driving a Ford Fiesta at 30 mph when a cyclist pulled out from the left.", ["bicycle"], 48.3),
+        ("Claimant, driving her own Nissan Micra at 20 mph, stopped when a pedestrian stepped out.", ["pedestrian"],
+         32.2),
+        ("Insured (Mr B. Jones, driving his works van) was doing 25 mph when a cyclist swerved into his path. The van "
+         "stopped.", ["bicycle"], 40.2),
+        ("The complainant was riding a moped at 15 mph when a car pulled out of a side road on the right.", ["car"],
+         24.1),
+    ],
+)  # fmt: skip
+def test_the_vehicle_the_ego_drives_is_its_own(text, kinds, kph):
+    assert _kinds(text) == kinds
+    assert _ego_kph(text) == kph
+
+
+def test_a_vehicle_driven_by_someone_else_stays_a_road_user():
+    # the one at the wheel is another person: their vehicle is a road user
+    text = "The insured was doing 20 mph when a man driving a van pulled out from the left in front of the insured."
+    assert _kinds(text) == ["van"]
+    text = "I was doing 30 mph; a man driving a white van pulled out in front of me."
+    assert _kinds(text) == ["van"]

@@ -51,7 +51,7 @@ DRIVING = frozenset({"driving", "drives", "drove", "driven"})
 #: Roles of the person a driving lesson is about: at a road speed or at a wheel, that person drives.
 LEARNER = frozenset({"pupil", "learner", "trainee", "candidate", "student"})
 #: Roles of the party a claim is made for: always the one the statement is told for.
-PARTY = frozenset({"client", "claimant", "insured", "policyholder"})
+PARTY = frozenset({"client", "claimant", "insured", "policyholder", "complainant"})
 #: The person at the wheel of a vehicle, in "the driver of the car" (that vehicle's mention).
 AT_WHEEL = frozenset({"driver", "rider", "motorist"})
 PRONOUNS = frozenset({"he", "she", "it", "they", "him", "her", "them", "who", "you", "one", "someone"})
@@ -330,7 +330,8 @@ def _at_the_wheel(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
         if found is None or found[0] not in VEHICLES or any(known(tokens, h) for h in range(j, head)):
             continue
         name = tokens[person:end]
-        cut = (end if relative else k + (not inside), head + found[1])
+        whole = next((q.end for q in _vehicle_phrases(tokens, kind_at, known) if q.start <= head < q.end), 0)
+        cut = (end if relative else k + (not inside), max(head + found[1], whole))  # ("her own Nissan Micra")
         dropped.extend(x for x in tokens[cut[0] : cut[1]] if x.isalpha())
         out = tokens[: cut[0]] + tokens[cut[1] :]
         said: list[str] = []
@@ -716,6 +717,42 @@ def _fleet_member(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
     return tokens
 
 
+#: Words between "driving" and the vehicle driven ("driving her own car", "riding his works van").
+OWNING = DEFINITE | INDEFINITE | {"his", "her", "their", "its", "own"}
+
+
+def _driving_ego(tokens: list[str], k: int) -> bool:
+    """Whether the driving word at ``k`` is said of "the ego": right after it ("the ego was driving",
+    "the ego, driving") or inside brackets that follow it ("Insured (Mr Jones, driving his van)")."""
+    j = k - 1
+    while j >= 0 and (tokens[j] in BETWEEN or tokens[j] == ","):
+        j -= 1
+    if j >= 1 and tokens[j - 1 : j + 1] == ["the", "ego"]:
+        return True
+    opening = next((b for b in range(k - 1, max(k - 12, -1), -1) if tokens[b] in ("(", ")")), None)
+    return opening is not None and tokens[opening] == "(" and tokens[opening - 2 : opening] == ["the", "ego"]
+
+
+def _ego_drives(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "The insured was driving a Ford Fiesta", "Claimant, driving her own Micra,", "Insured (Mr
+    Jones, driving his works van)": the vehicle the ego drives or rides is its own, no road user; it
+    goes (the verb stays, with the speed it may carry) and every later "the <noun>" is the ego."""
+    if "ego" not in tokens:
+        return tokens
+    for k, w in enumerate(tokens):
+        if w not in DRIVING | {"riding", "rode", "ridden"} or not _driving_ego(tokens, k):
+            continue
+        p = next((q for q in _vehicle_phrases(tokens, kind_at, known) if k < q.start <= k + 4), None)
+        if p is None or any(not (x in OWNING or (x.isalpha() and not known(tokens, j))) for j, x in
+                            enumerate(tokens[k + 1 : p.start], k + 1)):  # fmt: skip
+            continue
+        noun = tokens[p.end - 1]
+        dropped.extend(x for x in tokens[k + 1 : p.end] if x.isalpha() and x not in OWNING)
+        out = [*tokens[: k + 1], *tokens[p.end :]]
+        return _driver_is_ego(_as_ego(out, kind_at, known, noun, dropped), kind_at, known, dropped)
+    return tokens
+
+
 def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """``tokens`` with the road user the text is told from said "the ego" where the text names it by
     a role, by its driver or in the third person (see the module's docstring); the words that only
@@ -732,6 +769,7 @@ def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) 
     tokens = _ego_aboard(tokens, kind_at, known, dropped)
     tokens = _reported(tokens, kind_at, known, dropped)
     tokens = _fleet_member(tokens, kind_at, known, dropped)
+    tokens = _ego_drives(tokens, kind_at, known, dropped)
     if names_ego(tokens, kind_at, known):
         return tokens
     from vei_scenario.language.discourse import _labels
@@ -743,5 +781,5 @@ def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) 
         return tokens
     tokens = _role(tokens, kind_at)
     if names_ego(tokens, kind_at, known):
-        return tokens
+        return _ego_drives(tokens, kind_at, known, dropped)
     return _struck(tokens, kind_at, known, dropped)
