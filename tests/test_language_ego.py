@@ -444,3 +444,25 @@ def test_a_vehicle_driven_by_someone_else_stays_a_road_user():
     assert _kinds(text) == ["van"]
     text = "I was doing 30 mph; a man driving a white van pulled out in front of me."
     assert _kinds(text) == ["van"]
+
+
+# A narrator who names only the vehicle they are in: an opening clause with no subject ("Cruising at
+# 40 mph in the lorry ...") or right after "me" ("stepped out in front of me in the van"): that vehicle
+# is the narrator's, the ego.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("Cruising at 40 mph in the lorry along the bypass when a cyclist wobbled out in front of me.", ["bicycle"],
+         64.4),
+        ("Heading home in the minibus at 20 mph, and a jogger ran across in front of me.", ["pedestrian"], 32.2),
+        ("At 15 mph a pedestrian stepped out in front of me in the van.", ["pedestrian"], 24.1),
+    ],
+)  # fmt: skip
+def test_the_vehicle_a_narrator_is_in_is_the_ego(text, kinds, kph):
+    assert _kinds(text) == kinds
+    assert _ego_kph(text) == kph
+
+
+def test_a_vehicle_someone_else_is_in_stays_a_road_user():
+    assert "van" in _kinds("Doing 30 mph, I saw a man in the van ahead brake hard.")
+    assert "van" in _kinds("I was doing 30 mph when I was cut up by a man in a van.")

@@ -746,10 +746,40 @@ def _ego_drives(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[
         if p is None or any(not (x in OWNING or (x.isalpha() and not known(tokens, j))) for j, x in
                             enumerate(tokens[k + 1 : p.start], k + 1)):  # fmt: skip
             continue
-        noun = tokens[p.end - 1]
-        dropped.extend(x for x in tokens[k + 1 : p.end] if x.isalpha() and x not in OWNING)
-        out = [*tokens[: k + 1], *tokens[p.end :]]
+        noun, end = tokens[p.end - 1], p.end
+        model = next((j for j in range(p.end, min(p.end + 3, len(tokens))) if tokens[j] in PUNCT | {")"}), None)
+        if model is not None and all(
+            x.isalnum() and not known(tokens, j) for j, x in enumerate(tokens[end:model], end)
+        ):
+            end = model  # (its model's name, up to where the phrase ends: "her own Honda Jazz,")
+        dropped.extend(x for x in tokens[k + 1 : end] if x.isalpha() and x not in OWNING)
+        out = [*tokens[: k + 1], *tokens[end:]]
         return _driver_is_ego(_as_ego(out, kind_at, known, noun, dropped), kind_at, known, dropped)
+    return tokens
+
+
+def _narrator_in(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "Doing 30 mph in the van down Corporation St ...", "Heading home in the minibus ...", "let me
+    through in the van": in a text told in the first person, "in the/my <vehicle>" (not placed: "in
+    the van ahead") after a clause that opens with a participle and no subject, or right after "me",
+    is the vehicle the narrator is in, the ego (so is every later "the van")."""
+    if not (FIRST_PERSON | NARRATOR_INVOLVED) & set(tokens):
+        return tokens
+    users = _road_users(tokens, kind_at, known)
+    for p in _vehicle_phrases(tokens, kind_at, known):
+        if p.start < 2 or tokens[p.start - 1] != "in" or p.det not in ("the", "my", "our") or _placed(tokens, p):
+            continue
+        s, _ = _sentence(tokens, p.start)
+        opening = tokens[s].endswith("ing") and "VERB" in lemmas(tokens[s]) and s < p.start - 1
+        opening = opening and not any(s <= q.start < p.start for q in users)
+        opening = opening and not any(t in PUNCT or t in FIRST_PERSON for t in tokens[s : p.start])
+        after_me = bool({"me", "ego"} & set(tokens[max(p.start - 3, s) : p.start - 1]))
+        if not (opening or after_me):
+            continue
+        noun = tokens[p.end - 1]
+        dropped.extend(w for w in tokens[p.start - 1 : p.end] if w not in DEFINITE)
+        out = [*tokens[: p.start - 1], *tokens[p.end :]]
+        return _as_ego(out, kind_at, known, noun, dropped)
     return tokens
 
 
@@ -767,6 +797,7 @@ def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) 
     tokens = _boarded(tokens, kind_at, known, dropped)
     tokens = _told_from(tokens, kind_at, known, dropped)
     tokens = _ego_aboard(tokens, kind_at, known, dropped)
+    tokens = _narrator_in(tokens, kind_at, known, dropped)
     tokens = _reported(tokens, kind_at, known, dropped)
     tokens = _fleet_member(tokens, kind_at, known, dropped)
     tokens = _ego_drives(tokens, kind_at, known, dropped)
