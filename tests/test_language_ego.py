@@ -466,3 +466,18 @@ def test_the_vehicle_a_narrator_is_in_is_the_ego(text, kinds, kph):
 def test_a_vehicle_someone_else_is_in_stays_a_road_user():
     assert "van" in _kinds("Doing 30 mph, I saw a man in the van ahead brake hard.")
     assert "van" in _kinds("I was doing 30 mph when I was cut up by a man in a van.")
+
+
+# "IV" (the insured vehicle of a claim) is the ego; a roman numeral in a heading names nothing.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("IV is a 44 t lorry travelling at 50 mph in lane 1; a car merged in directly ahead of IV.", ["car"], 80.5),
+        ("IV was doing 20 mph when a cyclist came off the pavement into IV's path.", ["bicycle"], 32.2),
+        ("Test procedure IV: the VUT approaches at 30 km/h and a pedestrian crosses from the left.", ["pedestrian"],
+         30.0),
+    ],
+)  # fmt: skip
+def test_the_insured_vehicle_by_its_initials_is_the_ego(text, kinds, kph):
+    assert _kinds(text) == kinds
+    assert _ego_kph(text) == kph

@@ -242,6 +242,7 @@ CAR_NOUNS = (
 )
 EGO_NOUNS = (
     "ego",
+    "iv",  # (a claim's insured vehicle)
     "ego vehicle",
     "ego car",
     "vehicle under test",
