@@ -344,3 +344,140 @@ def test_a_vehicle_designated_as_the_ego_is_the_ego(text, kinds, kph):
 def test_a_vehicle_named_by_its_owner_is_the_ego_when_told_from(text, kinds, kph):
     assert sorted(_kinds(text)) == sorted(kinds)
     assert _ego_kph(text) == kph
+
+
+# An operator's fleet ("our scooters", "one of our bikes") is many vehicles, none of them the writer's
+# own: its members are other road users, where "our van" (one vehicle) is the ego.
+@pytest.mark.parametrize(
+    "text, kinds",
+    [
+        ("A cyclist swung out across the front of our van at 20 km/h.", ["bicycle"]),
+        ("A taxi driver tells us one of our e-bikes came off the kerb on his left and crossed in front of him.",
+         ["bicycle"]),
+        ("Complaint: one of our hire scooters shot out of a side street on the left into the path of a "
+         "motorist doing 25 mph.", ["e-scooter"]),
+    ],
+)  # fmt: skip
+def test_one_of_a_fleet_is_another_road_user(text, kinds):
+    assert sorted(_kinds(text)) == sorted(kinds)
+
+
+# A driver (or rider) whose account a report gives ("Bus driver says ...", "the driver of a car states
+# that ...") is the one the report is told from: the ego; "they"/"he"/"them"/"their" of the account
+# are that driver, whose speed is the ego's.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("Lorry driver says he was doing 40 mph when a cyclist veered out in front of him.", ["bicycle"], 64.4),
+        ("The cab driver stated that she was going at 10 mph when a pedestrian stepped off the kerb into her path.",
+         ["pedestrian"], 16.1),
+        ("Motorist claims they were travelling at 30 km/h when one of our e-scooters pulled out from the left "
+         "into their lane.", ["e-scooter"], 30.0),
+        ("The driver of a minibus reports that a man on a bike braked sharply in front of them. Driver was "
+         "doing 35 km/h.", ["bicycle"], 35.0),
+    ],
+)  # fmt: skip
+def test_the_driver_whose_account_is_reported_is_the_ego(text, kinds, kph):
+    assert _kinds(text) == kinds
+    assert _ego_kph(text) == kph
+
+
+def test_the_account_of_the_other_driver_in_a_first_person_story_stays_that_driver():
+    text = "I was doing 30 mph when a van pulled out in front of me; the van driver says he never saw me."
+    assert _kinds(text) == ["van"]
+    assert _ego_kph(text) == 48.3
+
+
+def test_a_driver_who_says_nothing_of_a_road_user_is_no_report():
+    # a reporting verb with no driver as its subject leaves the road users as they are
+    assert _kinds("A witness says a van hit a cyclist who had swerved out at 20 mph.") in (
+        ["bicycle"],
+        ["van", "bicycle"],
+    )
+
+
+# One vehicle of the writer's fleet that the story follows ("one of our vans was doing 30 mph ...") is
+# the ego, unless it is told in someone else's account ("a cyclist says one of our vans ...").
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("Last week one of our vans was doing 30 mph on the ring road when a cyclist pulled out in front of it.",
+         ["bicycle"], 48.3),
+        ("One of our buses was pulling away from the stop at 10 km/h when a pedestrian ran across in front of the bus.",
+         ["pedestrian"], 10.0),
+        ("Yesterday, one of our tippers was turning right at 5 mph. The driver stopped when a cyclist came up on "
+         "the inside.", ["bicycle"], 8.0),
+    ],
+)  # fmt: skip
+def test_one_of_the_writers_fleet_the_story_follows_is_the_ego(text, kinds, kph):
+    assert _kinds(text) == kinds
+    assert _ego_kph(text) == kph
+
+
+def test_one_of_the_fleet_in_someone_elses_account_is_another_road_user():
+    assert "van" in _kinds("A cyclist says one of our vans pulled out in front of him at 20 mph.")
+
+
+# The ego named by a role, then the vehicle it drives ("The insured was driving a Ford Fiesta", "the
+# claimant, driving her own Micra,", "Insured (Mr Jones, driving his works van)"): that vehicle is the
+# ego's own, never another road user, and the speed said of the ego is the ego's.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("The insured was driving a Ford Fiesta at 30 mph when a cyclist pulled out from the left.", ["bicycle"], 48.3),
+        ("Claimant, driving her own Nissan Micra at 20 mph, stopped when a pedestrian stepped out.", ["pedestrian"],
+         32.2),
+        ("Insured (Mr B. Jones, driving his works van) was doing 25 mph when a cyclist swerved into his path. The van "
+         "stopped.", ["bicycle"], 40.2),
+        ("The complainant was riding a moped at 15 mph when a car pulled out of a side road on the right.", ["car"],
+         24.1),
+    ],
+)  # fmt: skip
+def test_the_vehicle_the_ego_drives_is_its_own(text, kinds, kph):
+    assert _kinds(text) == kinds
+    assert _ego_kph(text) == kph
+
+
+def test_a_vehicle_driven_by_someone_else_stays_a_road_user():
+    # the one at the wheel is another person: their vehicle is a road user
+    text = "The insured was doing 20 mph when a man driving a van pulled out from the left in front of the insured."
+    assert _kinds(text) == ["van"]
+    text = "I was doing 30 mph; a man driving a white van pulled out in front of me."
+    assert _kinds(text) == ["van"]
+
+
+# A narrator who names only the vehicle they are in: an opening clause with no subject ("Cruising at
+# 40 mph in the lorry ...") or right after "me" ("stepped out in front of me in the van"): that vehicle
+# is the narrator's, the ego.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("Cruising at 40 mph in the lorry along the bypass when a cyclist wobbled out in front of me.", ["bicycle"],
+         64.4),
+        ("Heading home in the minibus at 20 mph, and a jogger ran across in front of me.", ["pedestrian"], 32.2),
+        ("At 15 mph a pedestrian stepped out in front of me in the van.", ["pedestrian"], 24.1),
+    ],
+)  # fmt: skip
+def test_the_vehicle_a_narrator_is_in_is_the_ego(text, kinds, kph):
+    assert _kinds(text) == kinds
+    assert _ego_kph(text) == kph
+
+
+def test_a_vehicle_someone_else_is_in_stays_a_road_user():
+    assert "van" in _kinds("Doing 30 mph, I saw a man in the van ahead brake hard.")
+    assert "van" in _kinds("I was doing 30 mph when I was cut up by a man in a van.")
+
+
+# "IV" (the insured vehicle of a claim) is the ego; a roman numeral in a heading names nothing.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("IV is a 44 t lorry travelling at 50 mph in lane 1; a car merged in directly ahead of IV.", ["car"], 80.5),
+        ("IV was doing 20 mph when a cyclist came off the pavement into IV's path.", ["bicycle"], 32.2),
+        ("Test procedure IV: the VUT approaches at 30 km/h and a pedestrian crosses from the left.", ["pedestrian"],
+         30.0),
+    ],
+)  # fmt: skip
+def test_the_insured_vehicle_by_its_initials_is_the_ego(text, kinds, kph):
+    assert _kinds(text) == kinds
+    assert _ego_kph(text) == kph

@@ -51,7 +51,7 @@ DRIVING = frozenset({"driving", "drives", "drove", "driven"})
 #: Roles of the person a driving lesson is about: at a road speed or at a wheel, that person drives.
 LEARNER = frozenset({"pupil", "learner", "trainee", "candidate", "student"})
 #: Roles of the party a claim is made for: always the one the statement is told for.
-PARTY = frozenset({"client", "claimant", "insured", "policyholder"})
+PARTY = frozenset({"client", "claimant", "insured", "policyholder", "complainant"})
 #: The person at the wheel of a vehicle, in "the driver of the car" (that vehicle's mention).
 AT_WHEEL = frozenset({"driver", "rider", "motorist"})
 PRONOUNS = frozenset({"he", "she", "it", "they", "him", "her", "them", "who", "you", "one", "someone"})
@@ -330,7 +330,8 @@ def _at_the_wheel(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
         if found is None or found[0] not in VEHICLES or any(known(tokens, h) for h in range(j, head)):
             continue
         name = tokens[person:end]
-        cut = (end if relative else k + (not inside), head + found[1])
+        whole = next((q.end for q in _vehicle_phrases(tokens, kind_at, known) if q.start <= head < q.end), 0)
+        cut = (end if relative else k + (not inside), max(head + found[1], whole))  # ("her own Nissan Micra")
         dropped.extend(x for x in tokens[cut[0] : cut[1]] if x.isalpha())
         out = tokens[: cut[0]] + tokens[cut[1] :]
         said: list[str] = []
@@ -605,6 +606,183 @@ def _driver_is_ego(tokens: list[str], kind_at: KindAt, known: Known, dropped: li
     return out
 
 
+#: Verbs that give someone's account ("Driver states ...", "motorist reports ..."), a closed class.
+REPORTS = frozenset(
+    {"say", "state", "report", "claim", "tell", "explain", "allege", "estimate", "recall", "insist", "admit"}
+)
+#: Pronouns of the one whose account is given, as they stand in it: subject, object, possessive.
+ACCOUNT_SUBJECT = frozenset({"they", "he", "she"})
+ACCOUNT_OBJECT = frozenset({"them", "him"})
+ACCOUNT_POSSESSIVE = frozenset({"their", "his"})
+#: First-person words of a narrator at a wheel, whose story it is (a "we" of an operator is not one).
+NARRATOR = frozenset({"i", "me", "my", "myself"})
+
+
+def _reporter_at(tokens: list[str], k: int, kind_at: KindAt) -> tuple[int, str | None] | None:
+    """Where the person at a wheel whose account the verb at ``k`` gives starts ("car driver", "the
+    driver of a car", "Motorist", opening its clause), and the noun of that person's vehicle if said;
+    None where the verb's subject is no such person."""
+    j = k - 1
+    while j >= 0 and tokens[j] in {"has", "had", "also", "later", "then"}:
+        j -= 1
+    vehicle = None
+    if j >= 3 and tokens[j - 2] == "of" and (found := kind_at(tokens, j)) is not None and found[0] in VEHICLES:
+        vehicle, j = tokens[j], j - 3 + (tokens[j - 1] not in DEFINITE | INDEFINITE)  # ("driver of a car")
+    if j < 0 or tokens[j] not in AT_WHEEL:
+        return None
+    start = j
+    if vehicle is None and start and (found := kind_at(tokens, start - 1)) is not None and found[0] in VEHICLES:
+        vehicle, start = tokens[start - 1], start - 1  # ("car driver", "the cab driver")
+    start -= start > 0 and tokens[start - 1] in DEFINITE | INDEFINITE
+    return (start, vehicle) if not start or tokens[start - 1] in CLAUSE_OPENING else None
+
+
+def _reported(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """A report that gives the account of a person at a wheel ("Car driver says one of our scooters
+    ...", "Driver states they were turning right at 15 mph", "the driver of a van reports that ..."):
+    that person is the one the report is told from, the ego, and so are the pronouns that stand for
+    them in the account (the subject right after the verb of saying: "says they were"; "them", "his"
+    where the account's other road user acts on them: "in front of them"), every later bare or
+    "the" mention of that person ("Driver braked") and their vehicle ("the car"). A text told by
+    an "I" is that narrator's, whatever another driver says."""
+    named = [p for p in _road_users(tokens, kind_at, known) if p.kind == "ego" and tokens[p.start] not in ("us", "we")]
+    if NARRATOR & set(tokens) or named:  # ("tells us": an operator's "we" only hears the account)
+        return tokens
+    at = next(
+        (
+            (k, found)
+            for k, w in enumerate(tokens)
+            if _lemma_in(w, REPORTS) and (found := _reporter_at(tokens, k, kind_at))
+        ),
+        None,
+    )
+    if at is None:
+        return tokens
+    k, (start, vehicle) = at
+    person = tokens[k - 1] if tokens[k - 1] in AT_WHEEL else next(w for w in tokens[start:k] if w in AT_WHEEL)
+    dropped.extend(w for w in tokens[start:k] if w.isalpha() and w not in DEFINITE | INDEFINITE)
+    out = [*tokens[:start], "the", "ego", *tokens[k:]]
+    said: list[str] = []
+    for i, w in enumerate(out):  # (the same person said again, bare or with "the")
+        if w == person and (not i or out[i - 1] in CLAUSE_OPENING | {"the"}) and out[i + 1 : i + 2] != ["of"]:
+            if said and said[-1] == "the":
+                said.pop()
+            said += ["the", "ego"]
+            continue
+        said.append(w)
+    out = said
+    for i in range(len(out) - 1, -1, -1):  # (the account's pronouns, in each sentence the ego tells)
+        s, e = _sentence(out, i)
+        if out[i] not in ACCOUNT_SUBJECT | ACCOUNT_OBJECT | ACCOUNT_POSSESSIVE | {"her"} or out[s : s + 2] != [
+            "the",
+            "ego",
+        ]:
+            continue
+        if not any(_lemma_in(w, REPORTS) for w in out[s:i]):
+            continue
+        before = out[i - 1] if out[i - 1] != "that" else out[i - 2]
+        nxt = out[i + 1] if i + 1 < len(out) else ""
+        possessive = out[i] in ACCOUNT_POSSESSIVE or (out[i] == "her" and nxt.isalpha() and "NOUN" in lemmas(nxt))
+        if out[i] in ACCOUNT_SUBJECT and not _lemma_in(before, REPORTS):
+            continue  # (a "he" of its own: the account's other road user)
+        out[i : i + 1] = ["the", "ego", "'s"] if possessive else ["the", "ego"]
+    if vehicle is not None:
+        out = _as_ego(out, kind_at, known, vehicle, dropped)
+    return _driver_is_ego(out, kind_at, known, dropped)
+
+
+def _fleet_member(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "Last week one of our vans was doing 30 mph ...", "One of our buses was pulling away ...": one
+    vehicle of the writer's fleet, the subject of its clause, is the one the story follows, the ego
+    (so are its later "the van" and "the driver"); said inside someone's account ("a cyclist says one
+    of our vans pulled out") it is another road user, as a fleet said in the plural always is."""
+    if NARRATOR & set(tokens) or any(p.kind == "ego" for p in _road_users(tokens, kind_at, known)):
+        return tokens
+    for k in range(len(tokens) - 3):
+        if tokens[k : k + 3] != ["one", "of", "our"]:
+            continue
+        p = next((q for q in _vehicle_phrases(tokens, kind_at, known) if k + 2 <= q.start <= k + 5), None)
+        if p is not None and any(kind_at(tokens, j) is not None for j in range(k + 3, p.start)):
+            p = None  # (past its modifiers only: "one of our 7.5-tonners")
+        if p is None or p.end >= len(tokens) or not (tokens[p.end] in BE or "VERB" in lemmas(tokens[p.end])):
+            continue
+        s, _ = _sentence(tokens, k)
+        if any(_lemma_in(w, REPORTS) for w in tokens[s:k]):
+            continue  # (someone's account of our vehicle)
+        plural = tokens[p.end - 1]
+        noun = next(iter(lemmas(plural).get("NOUN", (plural,))))
+        dropped.extend(w for w in tokens[k : p.end] if w.isalpha())
+        out = [*tokens[:k], "the", "ego", *tokens[p.end :]]
+        return _driver_is_ego(_as_ego(out, kind_at, known, noun, dropped), kind_at, known, dropped)
+    return tokens
+
+
+#: Words between "driving" and the vehicle driven ("driving her own car", "riding his works van").
+OWNING = DEFINITE | INDEFINITE | {"his", "her", "their", "its", "own"}
+
+
+def _driving_ego(tokens: list[str], k: int) -> bool:
+    """Whether the driving word at ``k`` is said of "the ego": right after it ("the ego was driving",
+    "the ego, driving") or inside brackets that follow it ("Insured (Mr Jones, driving his van)")."""
+    j = k - 1
+    while j >= 0 and (tokens[j] in BETWEEN or tokens[j] == ","):
+        j -= 1
+    if j >= 1 and tokens[j - 1 : j + 1] == ["the", "ego"]:
+        return True
+    opening = next((b for b in range(k - 1, max(k - 12, -1), -1) if tokens[b] in ("(", ")")), None)
+    return opening is not None and tokens[opening] == "(" and tokens[opening - 2 : opening] == ["the", "ego"]
+
+
+def _ego_drives(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "The insured was driving a Ford Fiesta", "Claimant, driving her own Micra,", "Insured (Mr
+    Jones, driving his works van)": the vehicle the ego drives or rides is its own, no road user; it
+    goes (the verb stays, with the speed it may carry) and every later "the <noun>" is the ego."""
+    if "ego" not in tokens:
+        return tokens
+    for k, w in enumerate(tokens):
+        if w not in DRIVING | {"riding", "rode", "ridden"} or not _driving_ego(tokens, k):
+            continue
+        p = next((q for q in _vehicle_phrases(tokens, kind_at, known) if k < q.start <= k + 4), None)
+        if p is None or any(not (x in OWNING or (x.isalpha() and not known(tokens, j))) for j, x in
+                            enumerate(tokens[k + 1 : p.start], k + 1)):  # fmt: skip
+            continue
+        noun, end = tokens[p.end - 1], p.end
+        model = next((j for j in range(p.end, min(p.end + 3, len(tokens))) if tokens[j] in PUNCT | {")"}), None)
+        if model is not None and all(
+            x.isalnum() and not known(tokens, j) for j, x in enumerate(tokens[end:model], end)
+        ):
+            end = model  # (its model's name, up to where the phrase ends: "her own Honda Jazz,")
+        dropped.extend(x for x in tokens[k + 1 : end] if x.isalpha() and x not in OWNING)
+        out = [*tokens[: k + 1], *tokens[end:]]
+        return _driver_is_ego(_as_ego(out, kind_at, known, noun, dropped), kind_at, known, dropped)
+    return tokens
+
+
+def _narrator_in(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "Doing 30 mph in the van down Corporation St ...", "Heading home in the minibus ...", "let me
+    through in the van": in a text told in the first person, "in the/my <vehicle>" (not placed: "in
+    the van ahead") after a clause that opens with a participle and no subject, or right after "me",
+    is the vehicle the narrator is in, the ego (so is every later "the van")."""
+    if not (FIRST_PERSON | NARRATOR_INVOLVED) & set(tokens):
+        return tokens
+    users = _road_users(tokens, kind_at, known)
+    for p in _vehicle_phrases(tokens, kind_at, known):
+        if p.start < 2 or tokens[p.start - 1] != "in" or p.det not in ("the", "my", "our") or _placed(tokens, p):
+            continue
+        s, _ = _sentence(tokens, p.start)
+        opening = tokens[s].endswith("ing") and "VERB" in lemmas(tokens[s]) and s < p.start - 1
+        opening = opening and not any(s <= q.start < p.start for q in users)
+        opening = opening and not any(t in PUNCT or t in FIRST_PERSON for t in tokens[s : p.start])
+        after_me = bool({"me", "ego"} & set(tokens[max(p.start - 3, s) : p.start - 1]))
+        if not (opening or after_me):
+            continue
+        noun = tokens[p.end - 1]
+        dropped.extend(w for w in tokens[p.start - 1 : p.end] if w not in DEFINITE)
+        out = [*tokens[: p.start - 1], *tokens[p.end :]]
+        return _as_ego(out, kind_at, known, noun, dropped)
+    return tokens
+
+
 def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """``tokens`` with the road user the text is told from said "the ego" where the text names it by
     a role, by its driver or in the third person (see the module's docstring); the words that only
@@ -619,6 +797,10 @@ def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) 
     tokens = _boarded(tokens, kind_at, known, dropped)
     tokens = _told_from(tokens, kind_at, known, dropped)
     tokens = _ego_aboard(tokens, kind_at, known, dropped)
+    tokens = _narrator_in(tokens, kind_at, known, dropped)
+    tokens = _reported(tokens, kind_at, known, dropped)
+    tokens = _fleet_member(tokens, kind_at, known, dropped)
+    tokens = _ego_drives(tokens, kind_at, known, dropped)
     if names_ego(tokens, kind_at, known):
         return tokens
     from vei_scenario.language.discourse import _labels
@@ -630,5 +812,5 @@ def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) 
         return tokens
     tokens = _role(tokens, kind_at)
     if names_ego(tokens, kind_at, known):
-        return tokens
+        return _ego_drives(tokens, kind_at, known, dropped)
     return _struck(tokens, kind_at, known, dropped)

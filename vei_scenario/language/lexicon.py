@@ -139,6 +139,9 @@ ACTOR_NOUNS = {
         "big rig",
         "semi-truck",
         "wheeler",  # ("an 18-wheeler")
+        "tonner",  # ("a 7.5-tonner", "one of our 18-tonners")
+        "tonners",  # (a plural lemminflect does not know)
+        "tipper",
         "bus",
         "coach",
         "tanker",
@@ -239,6 +242,7 @@ CAR_NOUNS = (
 )
 EGO_NOUNS = (
     "ego",
+    "iv",  # (a claim's insured vehicle)
     "ego vehicle",
     "ego car",
     "vehicle under test",

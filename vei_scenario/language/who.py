@@ -14,19 +14,34 @@ from vei_scenario.language.lexicon import CAR_MAKES, TRUCK_MAKES
 
 #: First-person possessives, a closed class: what they own is the writer's, hence the ego.
 FIRST_PERSON_POSSESSIVES = frozenset({"my", "our"})
+#: Words that pick some out of many ("one of our bikes", "two of our vans").
+_PICKED = frozenset("one two three four several some each any none all many most".split())
 #: At most this many modifiers between the possessive and its head noun ("our white transit van").
 _MODIFIERS = 2
 
 KindAt = Callable[[list[str], int], "tuple[str, int] | None"]
 
 
+def _fleet(tokens: list[str], i: int, end: int) -> bool:
+    """Whether "our <vehicles>" at ``i`` (ending at ``end``) is a fleet: its head a plural ("our
+    scooters") or one picked out of many ("one of our bikes"). The writer is in one vehicle, so a
+    fleet's members are other road users, as an operator's report names them."""
+    head = tokens[end - 1]
+    nouns = lemmas(head).get("NOUN")
+    picked = i > 1 and tokens[i - 1] == "of" and (tokens[i - 2] in _PICKED or tokens[i - 2].isdigit())
+    return bool(nouns and head not in nouns) or picked
+
+
 def _own_vehicle_end(tokens: list[str], i: int, kind_at: KindAt, modifier: Callable[[str], bool]) -> int | None:
-    """Where the phrase "my/our [modifiers] <vehicle noun>" starting at ``i`` ends, or None."""
+    """Where the phrase "my/our [modifiers] <vehicle noun>" starting at ``i`` ends, or None (also for a
+    fleet: see :func:`_fleet`)."""
     for j in range(i + 1, min(i + 2 + _MODIFIERS, len(tokens))):
         found = kind_at(tokens, j)
         if found is not None:
             kind, length = found
-            return j + length if kind not in ("pedestrian", "ego") else None
+            if kind in ("pedestrian", "ego") or _fleet(tokens, i, j + length):
+                return None
+            return j + length
         if not modifier(tokens[j]):
             return None
     return None
