@@ -433,3 +433,59 @@ def test_out_of_a_place_beside_the_road_is_from_the_roadside_not_a_junction_arm(
     actor = read(text).actors[0]
     assert actor.relation in (expected, expected.removeprefix("roadside_"))
     assert actor.behaviours[0][0] in ("cut_in", "cross_in_front")
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # a vehicle that comes out of a place beside the carriageway starts at that roadside, whatever owns
+        # the place ("the builders' yard", "the hotel gates", "the school car park", "a farm track")
+        ("Doing 35 mph, a delivery truck nosed out of the builders' yard on my right just in front of me.",
+         "roadside_right"),
+        ("At 50 km/h a minibus eased out of the hotel gates on the left into our lane.", "roadside_left"),
+        ("A pickup rolled out from the school car park on our left straight into my path at 25 mph.", "roadside_left"),
+        ("Cruising at 60 km/h, a tractor crept out of a farm track on the right a few metres ahead.",
+         "roadside_right"),
+        # no side said: the writer's near kerb (the left of one who gives miles per hour)
+        ("At 30 mph the coach lurched out of the stop ahead of me without indicating.", "roadside_left"),
+        ("A minibus edged out from its stop just ahead of us at 40 km/h.", "roadside_right"),
+    ],
+)  # fmt: skip
+def test_a_vehicle_out_of_a_place_beside_the_road_starts_at_that_roadside(text, expected):
+    assert read(text).actors[0].relation == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # going to, past or by such a place is no start there
+        ("At 40 mph a van in the right lane pulled in to the stop on my left just ahead of me.", "right"),
+        ("A lorry in the left lane overtook the bus waiting at the stop on my left at 30 mph.", "left"),
+        # backing out of it: into the lane it backs across (the layers have no reversing)
+        ("A van reversed out of a driveway on the right into my path at 20 mph.", "right"),
+        # a farm or a field is no place of that kind: only the place noun at the head decides
+        ("At 40 mph a tractor on the right came out of the farm and cut in ahead of me.", None),
+    ],
+)
+def test_near_misses_of_a_place_beside_the_road(text, expected):
+    relation = read(text).actors[0].relation
+    assert not str(relation).startswith("roadside") and (expected is None or relation == expected)
+
+
+def test_a_vehicle_pulling_out_of_a_place_beside_the_road_stands_there_and_plays_a_cut_in(tmp_path):
+    """Its layers: standing at the roadside far enough ahead for the ego to close in (a distance said is
+    its gap when it pulls out), then cutting in; the scenario plays and it ends ahead in the ego's lane."""
+    from vei_scenario.interpreter import run_scenario
+    from vei_scenario.language.corpus_check import played_problems
+    from vei_scenario.language.rules_backend import layers_from_text
+    from vei_scenario.language.scenario_writer import write_scenario
+
+    layers = layers_from_text("At 30 mph a bus pulled out of the stop on my left 10 m ahead of me.", 0)
+    adv = layers["adversaries"][0]
+    assert adv["spawn"]["relation"] == "roadside_left" and adv["speed_mps"] == 0.0
+    assert adv["spawn"]["longitudinal_m"] > 20.0
+    written = write_scenario(layers, "scenario")
+    (tmp_path / "scenario.xosc").write_bytes(written.xosc)
+    (tmp_path / "scenario.xodr").write_bytes(written.xodr)
+    result = run_scenario(tmp_path / "scenario.xosc", None, round(1.0 / float(layers["rate_hz"]), 6))
+    assert played_problems(result, layers) == []

@@ -213,6 +213,7 @@ class _Actor:
     returns: bool = False  # it goes back (a wrong-way driver to its own side)
     crit: str | None = None  # the criticality its clause's wording gives, verbs or not
     parked: bool = False  # said to be parked (at the side of the road, unless put in a lane)
+    out_of_place: bool = False  # said to come out of a place beside the road (a driveway, a stop, a gate)
     followed: bool = False  # the ego follows it ("Following a truck, ...")
     object_of: _Actor | None = None  # whose verb it is the object of ("overtakes a bus": the bus)
     goes_on: bool = False  # said not to give way, stop or slow ("does not yield", "fails to stop")
@@ -948,7 +949,7 @@ VERB_CRITICALITY = {
 }
 _POSITIONAL = (
     "relation", "side", "lane_side", "kerb", "kerb_side", "arm", "stationary", "wrong_way", "returns",
-    "speed_adjective", "toward",
+    "speed_adjective", "toward", "place",
 )  # fmt: skip
 _VERBS = ("behaviour", "turn", "unknown_verb", "ego_verb", "speed_word")
 
@@ -2093,6 +2094,7 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool, left_hand: bool = Fa
         and spec.behaviours
         and set(names) <= {"keep_going", "keep_lane", *(("along_road",) if a.passed else ())}
         and spec.speed_mps != 0.0
+        and not sides.comes_onto_the_road(a.out_of_place, spec.relation)
         and spec.relation in (None, "ahead", "oncoming", "roadside_right", "roadside_left", "behind")
         and not (junction and spec.relation is None and not (a.kind in RIDERS and a.wrong_way))
     ):
@@ -2486,6 +2488,8 @@ def _apply(m, who, r, link, added) -> None:
             a.kerb = True
             a.pavement = a.pavement or on_the_footway(m)
             a.came_from = a.came_from or _from(m)
+        elif m.slot == "place":
+            a.out_of_place = True
         elif m.slot == "kerb_side":
             a.kerb, a.kerb_side = True, m.value
             a.came_from = a.came_from or _from(m)
