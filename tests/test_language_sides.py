@@ -489,3 +489,30 @@ def test_a_vehicle_pulling_out_of_a_place_beside_the_road_stands_there_and_plays
     (tmp_path / "scenario.xodr").write_bytes(written.xodr)
     result = run_scenario(tmp_path / "scenario.xosc", None, round(1.0 / float(layers["rate_hz"]), 6))
     assert played_problems(result, layers) == []
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # a count of lanes with a side says how far over a road user is: a lane on that side
+        ("At 80 km/h on a three-lane motorway, a van two lanes to our left moved across into the lane next to ours.",
+         "left"),
+        ("Doing 110 km/h on the autobahn, a sports car three lanes over on my right cut across into my lane.", "right"),
+        ("At 100 km/h a coach 2 lanes to the ego's right drifted across one lane.", "right"),
+    ],
+)  # fmt: skip
+def test_a_count_of_lanes_to_a_side_is_a_lane_on_that_side(text, expected):
+    assert read(text).actors[0].relation == expected
+
+
+@pytest.mark.parametrize(
+    "text, lanes",
+    [
+        # the road's lanes on a side of something else, or the ego's own side: no road user's place
+        ("On a road with two lanes to the left of the median at 80 km/h, a van ahead braked.", 2),
+        ("At 80 km/h on a road with 2 lanes on our side, a truck ahead braked.", 2),
+    ],
+)
+def test_a_count_of_the_roads_lanes_is_no_place(text, lanes):
+    reading = read(text)
+    assert reading.actors[0].relation == "ahead" and reading.lanes == lanes

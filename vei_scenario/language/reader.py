@@ -554,7 +554,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             clauses[-1][1].append(_Mention("punct", tok, tok, i, prev))
             i += 1
             continue
-        if re.fullmatch(r"\d+(?:\.\d+)?", tok):
+        if re.fullmatch(r"\d+(?:\.\d+)?", tok) and not sides.lanes_away(tokens, i):  # (not "2 lanes to our left")
             kind, value, used = _number(tokens, i)
             words = " ".join(tokens[i : i + used])
             if kind in ("speed", "distance", "speed_range") and Q.lateral(tokens, i, used):

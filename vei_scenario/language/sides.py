@@ -98,6 +98,20 @@ def _side_follows(tokens: list[str], m: int) -> bool:
     return tokens[m : m + 1] in (["left"], ["right"])
 
 
+#: Counts of lanes between a road user and the ego ("two lanes to our right").
+_LANE_COUNTS = frozenset({"two", "three", "four", "2", "3", "4"})
+
+
+def lanes_away(tokens: list[str], i: int) -> bool:
+    """Whether a count of lanes at token ``i`` says how many lanes over a road user is ("two lanes to
+    our right", "3 lanes over on my left"): a place beside the ego on that side, not the road's lanes."""
+    if tokens[i] not in _LANE_COUNTS or tokens[i + 1 : i + 2] != ["lanes"]:
+        return False
+    k = i + 2 + (tokens[i + 2 : i + 3] == ["over"])
+    m = _past_owner(tokens, k + 1)  # (not "two lanes to the left of the median": the road's lanes)
+    return tokens[k : k + 1] in (["to"], ["on"]) and _side_follows(tokens, k + 1) and tokens[m + 1 : m + 2] != ["of"]
+
+
 #: Prepositions that say a road user comes out of a place.
 _OUT_OF = frozenset({"out", "from", "of"})
 #: Lanes that are beside the carriageway rather than in it: a rider there starts at the kerb.
@@ -356,6 +370,8 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
         kind, k = "kerb", k + 2
     elif tokens[k] == "lane":
         kind, k = "lane", k + 1
+    elif lanes_away(tokens, k):
+        kind, k = "lane", k + 2 + (tokens[k + 2] == "over")  # ("two lanes (over) to our right": a lane there)
     sided = k < n and tokens[k] in _LINKS and _side_follows(tokens, k + 1)
     if kind == "place" and not sided and not _reversing(tokens, i):
         near = "left" if left_hand else "right"  # ("pulled out from the stop": beside the writer's near kerb)
