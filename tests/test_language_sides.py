@@ -516,3 +516,29 @@ def test_a_count_of_lanes_to_a_side_is_a_lane_on_that_side(text, expected):
 def test_a_count_of_the_roads_lanes_is_no_place(text, lanes):
     reading = read(text)
     assert reading.actors[0].relation == "ahead" and reading.lanes == lanes
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # a rider from the other side of a junction who rides on comes from the opposite arm
+        "At the crossroads I was turning right at 15 km/h; a cyclist came from the opposite side going straight.",
+        "At the junction I turned left at 20 km/h and a scooter from the other side carried straight on into me.",
+        "At the T-junction, ego turning left at 15 km/h, a cyclist from the other side goes straight ahead.",
+    ],
+)
+def test_a_rider_from_the_other_side_of_a_junction_comes_from_the_opposite_arm(text):
+    assert read(text).actors[0].relation == "junction_opposite"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # a walker from there, the far side of the road, or a road away from any junction: a crossing
+        "A pedestrian came from the opposite side at the crossroads and I stopped at 30 km/h.",
+        "At the crossroads a cyclist came from the other side of the road across in front of me at 30 km/h.",
+        "At 30 km/h on a straight road a cyclist came from the opposite side.",
+    ],
+)
+def test_near_misses_of_the_opposite_arm(text):
+    assert read(text).actors[0].relation != "junction_opposite"

@@ -321,7 +321,11 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
     if tokens[j] in _FAR_NEAR and kerb_after and j > i and tokens[j - 1] in _DETERMINERS:
         # "off the far kerb", "from the opposite pavement": across the road, the offside; "the near kerb" the nearside
         side = _restated(tokens, j + 2) or _side("nearside" if tokens[j] == "near" else "offside", "", left_hand, False)
-        return Said(start, j + 2, prep, (("kerb", None), ("kerb_side", side)))
+        # ("from the opposite side": the far approach; not "the far side", "the other side of the road")
+        across = tokens[j] in ("opposite", "other") and tokens[j + 1] == "side" and tokens[j + 2 : j + 3] != ["of"]
+        return Said(
+            start, j + 2, prep, (("kerb", None), ("kerb_side", side), *((("far_side", None),) if across else ()))
+        )
     if not ring and (bare := _bare_ring_side(tokens, i, j, prep, left_hand)) is not None:
         return bare
     # side word, then noun
@@ -694,3 +698,12 @@ def comes_onto_the_road(out_of_place: bool, relation: str | None) -> bool:
     right") starts at that roadside and comes onto the road: it does not go along the kerb, whatever
     plain verb of going it has ("rides", "goes")."""
     return out_of_place and (relation or "").startswith("roadside")
+
+
+def opposite_approach(junction: bool, kind: str, far_side: bool, first: str | None) -> bool:
+    """Whether a rider said to come from the other side at a junction ("a cyclist came from the opposite
+    side going straight", "a scooter from the other side carried straight on") rides towards the ego
+    from the opposite arm, as a vehicle from there does: the side of a junction is an approach to it,
+    not a kerb, when the one who comes from it rides and does not cross. A walker from there, or a
+    rider said to cross, comes off the far kerb."""
+    return junction and far_side and kind in ("bicycle", "e-scooter") and first in (None, "keep_going", "keep_lane")
