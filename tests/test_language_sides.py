@@ -433,3 +433,112 @@ def test_out_of_a_place_beside_the_road_is_from_the_roadside_not_a_junction_arm(
     actor = read(text).actors[0]
     assert actor.relation in (expected, expected.removeprefix("roadside_"))
     assert actor.behaviours[0][0] in ("cut_in", "cross_in_front")
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # a vehicle that comes out of a place beside the carriageway starts at that roadside, whatever owns
+        # the place ("the builders' yard", "the hotel gates", "the school car park", "a farm track")
+        ("Doing 35 mph, a delivery truck nosed out of the builders' yard on my right just in front of me.",
+         "roadside_right"),
+        ("At 50 km/h a minibus eased out of the hotel gates on the left into our lane.", "roadside_left"),
+        ("A pickup rolled out from the school car park on our left straight into my path at 25 mph.", "roadside_left"),
+        ("Cruising at 60 km/h, a tractor crept out of a farm track on the right a few metres ahead.",
+         "roadside_right"),
+        # no side said: the writer's near kerb (the left of one who gives miles per hour)
+        ("At 30 mph the coach lurched out of the stop ahead of me without indicating.", "roadside_left"),
+        ("A minibus edged out from its stop just ahead of us at 40 km/h.", "roadside_right"),
+    ],
+)  # fmt: skip
+def test_a_vehicle_out_of_a_place_beside_the_road_starts_at_that_roadside(text, expected):
+    assert read(text).actors[0].relation == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # going to, past or by such a place is no start there
+        ("At 40 mph a van in the right lane pulled in to the stop on my left just ahead of me.", "right"),
+        ("A lorry in the left lane overtook the bus waiting at the stop on my left at 30 mph.", "left"),
+        # backing out of it: into the lane it backs across (the layers have no reversing)
+        ("A van reversed out of a driveway on the right into my path at 20 mph.", "right"),
+        # a farm or a field is no place of that kind: only the place noun at the head decides
+        ("At 40 mph a tractor on the right came out of the farm and cut in ahead of me.", None),
+    ],
+)
+def test_near_misses_of_a_place_beside_the_road(text, expected):
+    relation = read(text).actors[0].relation
+    assert not str(relation).startswith("roadside") and (expected is None or relation == expected)
+
+
+def test_a_vehicle_pulling_out_of_a_place_beside_the_road_stands_there_and_plays_a_cut_in(tmp_path):
+    """Its layers: standing at the roadside far enough ahead for the ego to close in (a distance said is
+    its gap when it pulls out), then cutting in; the scenario plays and it ends ahead in the ego's lane."""
+    from vei_scenario.interpreter import run_scenario
+    from vei_scenario.language.corpus_check import played_problems
+    from vei_scenario.language.rules_backend import layers_from_text
+    from vei_scenario.language.scenario_writer import write_scenario
+
+    layers = layers_from_text("At 30 mph a bus pulled out of the stop on my left 10 m ahead of me.", 0)
+    adv = layers["adversaries"][0]
+    assert adv["spawn"]["relation"] == "roadside_left" and adv["speed_mps"] == 0.0
+    assert adv["spawn"]["longitudinal_m"] > 20.0
+    written = write_scenario(layers, "scenario")
+    (tmp_path / "scenario.xosc").write_bytes(written.xosc)
+    (tmp_path / "scenario.xodr").write_bytes(written.xodr)
+    result = run_scenario(tmp_path / "scenario.xosc", None, round(1.0 / float(layers["rate_hz"]), 6))
+    assert played_problems(result, layers) == []
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # a count of lanes with a side says how far over a road user is: a lane on that side
+        ("At 80 km/h on a three-lane motorway, a van two lanes to our left moved across into the lane next to ours.",
+         "left"),
+        ("Doing 110 km/h on the autobahn, a sports car three lanes over on my right cut across into my lane.", "right"),
+        ("At 100 km/h a coach 2 lanes to the ego's right drifted across one lane.", "right"),
+    ],
+)  # fmt: skip
+def test_a_count_of_lanes_to_a_side_is_a_lane_on_that_side(text, expected):
+    assert read(text).actors[0].relation == expected
+
+
+@pytest.mark.parametrize(
+    "text, lanes",
+    [
+        # the road's lanes on a side of something else, or the ego's own side: no road user's place
+        ("On a road with two lanes to the left of the median at 80 km/h, a van ahead braked.", 2),
+        ("At 80 km/h on a road with 2 lanes on our side, a truck ahead braked.", 2),
+    ],
+)
+def test_a_count_of_the_roads_lanes_is_no_place(text, lanes):
+    reading = read(text)
+    assert reading.actors[0].relation == "ahead" and reading.lanes == lanes
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # a rider from the other side of a junction who rides on comes from the opposite arm
+        "At the crossroads I was turning right at 15 km/h; a cyclist came from the opposite side going straight.",
+        "At the junction I turned left at 20 km/h and a scooter from the other side carried straight on into me.",
+        "At the T-junction, ego turning left at 15 km/h, a cyclist from the other side goes straight ahead.",
+    ],
+)
+def test_a_rider_from_the_other_side_of_a_junction_comes_from_the_opposite_arm(text):
+    assert read(text).actors[0].relation == "junction_opposite"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # a walker from there, the far side of the road, or a road away from any junction: a crossing
+        "A pedestrian came from the opposite side at the crossroads and I stopped at 30 km/h.",
+        "At the crossroads a cyclist came from the other side of the road across in front of me at 30 km/h.",
+        "At 30 km/h on a straight road a cyclist came from the opposite side.",
+    ],
+)
+def test_near_misses_of_the_opposite_arm(text):
+    assert read(text).actors[0].relation != "junction_opposite"

@@ -213,6 +213,8 @@ class _Actor:
     returns: bool = False  # it goes back (a wrong-way driver to its own side)
     crit: str | None = None  # the criticality its clause's wording gives, verbs or not
     parked: bool = False  # said to be parked (at the side of the road, unless put in a lane)
+    out_of_place: bool = False  # said to come out of a place beside the road (a driveway, a stop, a gate)
+    far_side: bool = False  # said to come from the other side ("from the opposite side")
     followed: bool = False  # the ego follows it ("Following a truck, ...")
     object_of: _Actor | None = None  # whose verb it is the object of ("overtakes a bus": the bus)
     goes_on: bool = False  # said not to give way, stop or slow ("does not yield", "fails to stop")
@@ -553,7 +555,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             clauses[-1][1].append(_Mention("punct", tok, tok, i, prev))
             i += 1
             continue
-        if re.fullmatch(r"\d+(?:\.\d+)?", tok):
+        if re.fullmatch(r"\d+(?:\.\d+)?", tok) and not sides.lanes_away(tokens, i):  # (not "2 lanes to our left")
             kind, value, used = _number(tokens, i)
             words = " ".join(tokens[i : i + used])
             if kind in ("speed", "distance", "speed_range") and Q.lateral(tokens, i, used):
@@ -948,7 +950,7 @@ VERB_CRITICALITY = {
 }
 _POSITIONAL = (
     "relation", "side", "lane_side", "kerb", "kerb_side", "arm", "stationary", "wrong_way", "returns",
-    "speed_adjective", "toward",
+    "speed_adjective", "toward", "place", "far_side",
 )  # fmt: skip
 _VERBS = ("behaviour", "turn", "unknown_verb", "ego_verb", "speed_word")
 
@@ -1053,6 +1055,8 @@ def _resolve_relation(a: _Actor, map_kind: str | None, left_hand: bool = False) 
         return f"roadside_{side if side in ('left', 'right') else near}"
     if a.relation and a.relation.startswith(("junction", "roadside")):
         return a.relation
+    if sides.opposite_approach(junction, a.kind, a.far_side, first):
+        return "junction_opposite"
     rides = a.kind != "pedestrian"  # (a rider at a junction takes the road as a vehicle does)
     if first == "give_way" or (junction and rides and a.goes_on and first == "cut_in" and a.relation != "oncoming"):
         # lets the ego pass (or is said not to): where their paths meet, in a side road or at the kerb
@@ -2093,6 +2097,7 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool, left_hand: bool = Fa
         and spec.behaviours
         and set(names) <= {"keep_going", "keep_lane", *(("along_road",) if a.passed else ())}
         and spec.speed_mps != 0.0
+        and not sides.comes_onto_the_road(a.out_of_place, spec.relation)
         and spec.relation in (None, "ahead", "oncoming", "roadside_right", "roadside_left", "behind")
         and not (junction and spec.relation is None and not (a.kind in RIDERS and a.wrong_way))
     ):
@@ -2486,6 +2491,10 @@ def _apply(m, who, r, link, added) -> None:
             a.kerb = True
             a.pavement = a.pavement or on_the_footway(m)
             a.came_from = a.came_from or _from(m)
+        elif m.slot == "place":
+            a.out_of_place = True
+        elif m.slot == "far_side":
+            a.far_side = True
         elif m.slot == "kerb_side":
             a.kerb, a.kerb_side = True, m.value
             a.came_from = a.came_from or _from(m)

@@ -541,6 +541,12 @@ def _place_adversary(
             cfg.setdefault(go_key, round(speed, 3))  # its stated speed is the speed it goes at
         spawn["longitudinal_m"] = round(STOP_LINE_M + length / 2, 3)
         return spawn, 0.0
+    if relation.startswith("roadside") and not vulnerable(kind) and behaviour_name == "cut_in":
+        # pulls out of a place beside the road (a stop, a driveway, a lay-by): it stands there until the
+        # ego has closed in for lead_s, as a parked car that pulls out does
+        lead = float(cfg.get("lead_s", 2.5))
+        spawn["longitudinal_m"] = round(lengths / 2 + mod.pull_out_distance_m(ego_speed, cfg) + ego_speed * lead, 3)
+        return spawn, 0.0
     if relation.startswith("roadside") and not vulnerable(kind):
         # parked beyond the kerb (placed by the road user it hides, if any: _place_occluders)
         spawn["longitudinal_m"] = distance_m if distance_m is not None else 40.0

@@ -25,6 +25,8 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, replace
 
+from vei_scenario.language.lemmas import lemmas
+
 #: Side words that name a side outright.
 _PLAIN = {"left": "left", "right": "right", "left-hand": "left", "right-hand": "right"}
 #: Side words relative to the kerb: "near" (kerb side) or "off" (centre side), and the middle.
@@ -46,9 +48,70 @@ _ROAD_NOUNS = frozenset({"road", "street"})
 _MINOR = frozenset({"side", "minor"})  # (a slip road joins as a lane does: not an arm)
 #: Places off the carriageway a road user comes out of onto the road beside it, not a junction arm:
 #: "out of a driveway on the right", "pulled out of the stop on my left" (a bus stop).
-OFF_ROAD_PLACES = frozenset({"driveway", "drive", "stop", "lay-by", "layby", "gateway", "forecourt", "bay"})
+OFF_ROAD_PLACES = frozenset(
+    {"driveway", "drive", "stop", "lay-by", "layby", "gateway", "gate", "gates", "forecourt", "bay", "track", "yard"}
+)
 #: Two-word places of that kind, by their first word ("a parking space", "the car park").
 _PLACE_HEADS = {"parking": (["space"], ["spot"], ["bay"], ["place"]), "car": (["park"],), "bus": (["stop"],)}
+#: Nouns that may name what a place beside the road belongs to, before its head ("a field gate", "the
+#: school car park"): any word but these, which end or turn the noun phrase.
+_NOT_A_MODIFIER = frozenset({"left", "right", "on", "to", "at", "in", "into", "onto", "of", "and", "or", "the", "a"})
+
+
+def _place_head(tokens: list[str], k: int) -> int | None:
+    """Where the noun phrase of a place beside the carriageway that starts at token ``k`` ends (past its
+    head), or None: the head a place noun ("driveway", "gate", "stop") or a two-word one ("car park"),
+    after at most two nouns that say whose it is ("the quarry gate", "a farm track", "the petrol station
+    forecourt"). Only the head decides: "the stop" and "the bus stop" are one place, "the farm" none."""
+    for m in range(k, min(k + 3, len(tokens))):
+        word = tokens[m]
+        if word in OFF_ROAD_PLACES:
+            return m + 1
+        if tokens[m + 1 : m + 2] in _PLACE_HEADS.get(word, ()):
+            return m + 2
+        if word in _NOT_A_MODIFIER or not word.isalpha():
+            return None
+    return None
+
+
+def _reversing(tokens: list[str], i: int) -> bool:
+    """Whether the verb right before the phrase at token ``i`` (and its particle) is reversing ("backed
+    out of", "reverses from"): one that backs out of a place is read into the lane it backs across,
+    as the layers have no reversing; one that pulls or comes out starts at the roadside."""
+    verb = tokens[i - 2] if i >= 2 and tokens[i - 1] == "out" else tokens[i - 1] if i else ""
+    return "reverse" in lemmas(verb).get("VERB", ()) or "back" in lemmas(verb).get("VERB", ())
+
+
+def _past_owner(tokens: list[str], m: int) -> int:
+    """Token ``m`` moved past whose side is said before a side word: a determiner or possessive ("my",
+    "the"), or a possessive noun ("the ego's", "the driver's", "V1's")."""
+    if tokens[m + 1 : m + 2] == ["'s"] and tokens[m : m + 1] != ["the"]:
+        return m + 2  # ("on V1's left")
+    if tokens[m : m + 1] == ["the"] and tokens[m + 2 : m + 3] == ["'s"]:
+        return m + 3  # ("on the ego's right", "on the driver's left")
+    return m + 1 if m < len(tokens) and tokens[m] in _DETERMINERS else m
+
+
+def _side_follows(tokens: list[str], m: int) -> bool:
+    """Whether a side ("left"/"right", after whose it is) follows at token ``m``."""
+    m = _past_owner(tokens, m)
+    return tokens[m : m + 1] in (["left"], ["right"])
+
+
+#: Counts of lanes between a road user and the ego ("two lanes to our right").
+_LANE_COUNTS = frozenset({"two", "three", "four", "2", "3", "4"})
+
+
+def lanes_away(tokens: list[str], i: int) -> bool:
+    """Whether a count of lanes at token ``i`` says how many lanes over a road user is ("two lanes to
+    our right", "3 lanes over on my left"): a place beside the ego on that side, not the road's lanes."""
+    if tokens[i] not in _LANE_COUNTS or tokens[i + 1 : i + 2] != ["lanes"]:
+        return False
+    k = i + 2 + (tokens[i + 2 : i + 3] == ["over"])
+    m = _past_owner(tokens, k + 1)  # (not "two lanes to the left of the median": the road's lanes)
+    return tokens[k : k + 1] in (["to"], ["on"]) and _side_follows(tokens, k + 1) and tokens[m + 1 : m + 2] != ["of"]
+
+
 #: Prepositions that say a road user comes out of a place.
 _OUT_OF = frozenset({"out", "from", "of"})
 #: Lanes that are beside the carriageway rather than in it: a rider there starts at the kerb.
@@ -258,7 +321,11 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
     if tokens[j] in _FAR_NEAR and kerb_after and j > i and tokens[j - 1] in _DETERMINERS:
         # "off the far kerb", "from the opposite pavement": across the road, the offside; "the near kerb" the nearside
         side = _restated(tokens, j + 2) or _side("nearside" if tokens[j] == "near" else "offside", "", left_hand, False)
-        return Said(start, j + 2, prep, (("kerb", None), ("kerb_side", side)))
+        # ("from the opposite side": the far approach; not "the far side", "the other side of the road")
+        across = tokens[j] in ("opposite", "other") and tokens[j + 1] == "side" and tokens[j + 2 : j + 3] != ["of"]
+        return Said(
+            start, j + 2, prep, (("kerb", None), ("kerb_side", side), *((("far_side", None),) if across else ()))
+        )
     if not ring and (bare := _bare_ring_side(tokens, i, j, prep, left_hand)) is not None:
         return bare
     # side word, then noun
@@ -301,19 +368,21 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
         kind, k = "arm", k + 1  # ("from the junction on the left": the road joining there on that side)
     elif tokens[k] in KERB_NOUNS:
         kind, k = "kerb", k + 1
-    elif prep in _OUT_OF and (tokens[k] in OFF_ROAD_PLACES or tokens[k + 1 : k + 2] in _PLACE_HEADS.get(tokens[k], ())):
-        kind, k = "place", k + 1 + (tokens[k] not in OFF_ROAD_PLACES)
+    elif prep in _OUT_OF and (head := _place_head(tokens, k)) is not None:
+        kind, k = "place", head
     elif tokens[k] in _KERB_LANES and tokens[k + 1 : k + 2] == ["lane"]:
         kind, k = "kerb", k + 2
     elif tokens[k] == "lane":
         kind, k = "lane", k + 1
+    elif lanes_away(tokens, k):
+        kind, k = "lane", k + 2 + (tokens[k + 2] == "over")  # ("two lanes (over) to our right": a lane there)
+    sided = k < n and tokens[k] in _LINKS and _side_follows(tokens, k + 1)
+    if kind == "place" and not sided and not _reversing(tokens, i):
+        near = "left" if left_hand else "right"  # ("pulled out from the stop": beside the writer's near kerb)
+        return Said(start, k, prep, (("kerb", None), ("place", None), ("relation", f"roadside_{near}")))
     if kind is None or k >= n or tokens[k] not in _LINKS:
         return None
-    m = k + 1
-    if tokens[m : m + 1] == ["the"] and tokens[m + 1 : m + 3] == ["ego", "'s"]:
-        m += 3  # "on the ego's right"
-    elif m < n and tokens[m] in _DETERMINERS:
-        m += 1
+    m = _past_owner(tokens, k + 1)
     if m >= n or tokens[m] not in ("left", "right"):
         return None
     side = tokens[m]
@@ -326,8 +395,12 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
         return Said(start, end, prep, (("arm", None), ("side", side)))
     if kind == "kerb":
         return Said(start, end, prep, (("kerb", None), ("kerb_side", side)))
-    if kind == "place":  # beside the carriageway, where it comes onto the road from, along the ego's way
-        return Said(start, end, prep, (("kerb", None), ("lane_side", side)))
+    if kind == "place":  # beside the carriageway, where it comes onto the road from: that roadside
+        if _reversing(tokens, i):  # (it backs across into the lane on that side: no pulling out ahead)
+            return Said(start, end, prep, (("kerb", None), ("lane_side", side)))
+        return Said(
+            start, end, prep, (("kerb", None), ("place", None), ("lane_side", side), ("relation", f"roadside_{side}"))
+        )
     return Said(start, end, prep, (("lane_side", side),))
 
 
@@ -618,3 +691,19 @@ def _from_heading(heading: int, ego_heading: int) -> str | None:
         return None
     came_from = (heading + 180 - ego_heading) % 360  # the side it comes from, clockwise from the ego's front
     return "junction_right" if came_from == 90 else "junction_left"
+
+
+def comes_onto_the_road(out_of_place: bool, relation: str | None) -> bool:
+    """Whether a road user said to come out of a place beside the road ("rides out of a gate on the
+    right") starts at that roadside and comes onto the road: it does not go along the kerb, whatever
+    plain verb of going it has ("rides", "goes")."""
+    return out_of_place and (relation or "").startswith("roadside")
+
+
+def opposite_approach(junction: bool, kind: str, far_side: bool, first: str | None) -> bool:
+    """Whether a rider said to come from the other side at a junction ("a cyclist came from the opposite
+    side going straight", "a scooter from the other side carried straight on") rides towards the ego
+    from the opposite arm, as a vehicle from there does: the side of a junction is an approach to it,
+    not a kerb, when the one who comes from it rides and does not cross. A walker from there, or a
+    rider said to cross, comes off the far kerb."""
+    return junction and far_side and kind in ("bicycle", "e-scooter") and first in (None, "keep_going", "keep_lane")
