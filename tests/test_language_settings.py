@@ -561,3 +561,17 @@ def test_the_crossing_after_a_pedestrian_crossing_is_that_crossing(text, kind):
 )
 def test_a_degree_of_traffic_with_words_of_which_traffic_between(text, density):
     assert read(text).density == density
+
+
+@pytest.mark.parametrize(
+    "text, lo, hi",
+    [
+        ("Around seven o'clock tonight a moped cut in front of the ego.", 18, 20),
+        ("At 8 o'clock in the morning a cyclist crosses ahead of the ego.", 8, 8),
+        ("Sunday arvo, a jogger steps out in front of the ego.", 12, 17),
+        ("At nine o'clock a bus pulls out in front of the ego, late evening.", 21, 21),
+    ],
+)
+def test_a_whole_hour_and_the_colloquial_parts_of_the_day(text, lo, hi):
+    hour = int(read(text).time.split(":")[0])
+    assert lo <= hour <= hi

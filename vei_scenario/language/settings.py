@@ -175,6 +175,8 @@ _CLOCK_IN_WORDS = re.compile(
     rf"\b(?:a )?(quarter|half|twenty[- ]five|twenty|ten|five|[1-5]?\d(?: minutes)?) (past|after|to|before) "
     rf"{_HOUR_WORD}\b{_NOT_A_CLOCK}|\bhalf {_HOUR_WORD}\b{_NOT_A_CLOCK}"
 )
+#: "six o'clock", "7 o'clock": a whole hour, its half of the day said beside it or told by the part of the day.
+_OCLOCK = re.compile(rf"\b{_HOUR_WORD} o'?clock\b")
 #: Said beside a clock in words, the half of the day it is in.
 _AFTERNOON_SAID = re.compile(r"\b(?:in the (?:afternoon|evening)|at night|tonight|pm|p m)\b")
 _MORNING_SAID = re.compile(r"\b(?:in the morning|am|a m)\b")
@@ -186,9 +188,13 @@ def clock_in_words(said: str, parts: list[str]) -> str | None:
     ("in the evening", "pm"), else the one that lies within the part of the day said (``parts``: the
     lexicon's clocks of the parts said), else the afternoon for the first hours and the morning after."""
     m = _CLOCK_IN_WORDS.search(said)
-    if m is None:
+    oclock = _OCLOCK.search(said) if m is None else None
+    if m is None and oclock is None:
         return None
-    if m.group(4) is not None:  # ("half five")
+    if oclock is not None:
+        m = oclock
+        hour, minute = _hour(oclock.group(1)), 0
+    elif m.group(4) is not None:  # ("half five")
         hour, minute = _hour(m.group(4)), 30
     else:
         said_minutes = m.group(1).replace(" minutes", "")
