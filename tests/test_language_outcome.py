@@ -434,3 +434,189 @@ def test_going_once_the_way_is_clear_is_safe(text, intent):
 )
 def test_meeting_head_on_is_a_collision(text, intent):
     assert _intent(text) == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("I overtook the tractor and then my phone app crashed twice.", None),
+        ("The cyclist swerved round the bin lorry; later the booking website crashed.", None),
+        ("A moped pulled out in front of us and the dashcam software crashed.", None),
+        ("The van turned into the side road and crashed.", "collision"),  # (a road user crashing)
+        ("Two scooters collided outside the station.", "collision"),
+    ],
+)
+def test_a_crash_said_of_a_thing_that_is_no_road_user_is_not_a_contact(text, intent):
+    assert _intent(text) == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("A moped overtook and swung across my bonnet into the petrol station.", None),
+        ("The jogger ran across the front of the bus.", None),
+        ("The cyclist darted across my bumper to reach the cycle path.", None),
+        ("The rider slid across my bonnet.", "collision"),  # (a body thrown over it)
+        ("She bounced off the windscreen of the taxi.", "collision"),
+    ],
+)
+def test_across_a_vehicle_part_after_a_verb_of_going_is_a_path_not_a_contact(text, intent):
+    assert _intent(text) == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("A lad on a bike pulled out of the car park, straight into my passenger door.", "collision"),
+        ("The scooter came off the kerb and smack into the side of the bus.", "collision"),
+        ("The van reversed out. Right into the back of my car.", "collision"),
+        ("Then the moped came through the gap and under the front of the lorry.", "collision"),
+        ("A cyclist rode under the nearside front wheel of the tipper.", "collision"),
+        ("A moped came out of the side road and straight into my lane.", None),  # (a place)
+        ("The cyclist rode under the railway bridge and into the junction.", None),
+    ],
+)
+def test_a_verbless_into_or_under_a_vehicle_part_is_a_contact(text, intent):
+    assert _intent(text) == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("A jogger ran out and I stopped only feet from her.", "near_miss"),
+        ("The bus braked and pulled up mere inches from the cyclist.", "near_miss"),
+        ("A scooter cut in barely 2 m in front of us.", "near_miss"),
+        ("The hatchback merged back about one metre ahead of me.", "near_miss"),
+        ("The van cut in 30 m in front of us.", None),
+        ("The lorry stopped 2 m in front of the stop line.", None),
+    ],
+)
+def test_a_small_distance_from_the_other_is_a_near_miss(text, intent):
+    assert _intent(text) == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("Outcome: ego stops, no crash (close call).", "near_miss"),
+        ("Pass criteria: no impact (near miss acceptable).", "near_miss"),
+        ("The car behind braked, no collision, no near miss.", "safe"),
+    ],
+)
+def test_a_negation_governs_its_noun_phrase_not_one_after_it(text, intent):
+    assert _intent(text) == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("The moped waited at the give way line. No interaction with the ego.", "safe"),
+        ("A lorry changed lanes two lanes over, with no interaction at all.", "safe"),
+        ("The cyclist had an interaction with the bus driver.", None),
+    ],
+)
+def test_no_interaction_is_a_safe_pass(text, intent):
+    assert _intent(text) == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("A pedestrian was killed when a bus mounted the pavement.", "collision"),
+        ("Two cyclists were badly hurt after a van turned across them.", "collision"),
+        ("The scooter rider got injured when the taxi pulled out.", "collision"),
+        ("Nobody was injured, the moped braked in time.", "near_miss"),
+        ("The cyclist escaped injury when the van stopped short of him.", "near_miss"),
+        ("My knee was injured last year so I drive an automatic.", None),
+    ],
+)
+def test_a_road_user_injured_is_a_collision(text, intent):
+    assert _intent(text) == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("A cyclist came at me on the narrow lane and squeezed by.", "near_miss"),
+        ("The taxi squeezed through between me and the parked van.", "near_miss"),
+        ("A moped squeezed past us on the bridge.", "near_miss"),
+        ("I squeezed the brake lever gently and the bus pulled away.", None),
+        ("We squeezed in a coffee before the moped overtook us.", None),
+    ],
+)
+def test_squeezing_past_is_a_tight_pass(text, intent):
+    assert _intent(text) == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("The jogger stepped out. I should have waited. He had to jump back onto the kerb.", "near_miss"),
+        ("A van turned across me. I could have given way. He had to swerve round my bumper. No contact.", "near_miss"),
+        ("I waited for the moped to pass.", "safe"),
+    ],
+)
+def test_a_yield_under_a_modal_of_hindsight_did_not_happen(text, intent):
+    assert _intent(text) == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("A boy on a bike came off the path and I had to stop dead. The boy was fine.", "near_miss"),
+        ("The pram rolled into the road, I stopped dead. The baby was okay.", "near_miss"),
+        ("The scooter rider swerved and clipped my mirror. She was fine.", "collision"),
+        ("The cyclist kept to the kerb and the pass was fine.", "safe"),
+    ],
+)
+def test_a_person_said_fine_is_unhurt_not_a_safe_pass(text, intent):
+    assert _intent(text) == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("The bus pulled out on me. No damage, just a fright.", "near_miss"),
+        ("A cyclist swung out in front of the van, no injuries.", "near_miss"),
+        ("The moped scraped along my door. No injuries.", "collision"),
+    ],
+)
+def test_no_damage_or_injury_denies_a_contact(text, intent):
+    assert _intent(text) == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("The jogger darted out and I stamped on the brakes. Stopped in time. Just.", "near_miss"),
+        ("Lorry drifted over into my lane. Made it. Just!", "near_miss"),
+        ("It was just a normal day when the cyclist turned left.", None),
+    ],
+)
+def test_just_as_a_sentence_of_its_own_is_barely(text, intent):
+    assert _intent(text) == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("Server crashed overnight; a cyclist passed the van wide.", "safe"),
+        ("Laptop crashed. Next run: the moped cuts in and clips the ego.", "collision"),
+        ("Van crashed.", "collision"),
+        ("We need the cyclist to cross late. The ego should brake hard and avoid contact.", "near_miss"),
+        ("Slow down there before someone gets killed; a van nearly hit me.", "near_miss"),
+    ],
+)
+def test_bare_subjects_and_modals_of_requirement(text, intent):
+    assert _intent(text) == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("Both riders wobble, nobody hits anybody.", "near_miss"),
+        ("Someone crashed into the back of the bus.", "collision"),
+    ],
+)
+def test_indefinite_pronoun_subjects_are_people(text, intent):
+    assert _intent(text) == intent

@@ -546,3 +546,32 @@ def test_a_road_user_stopping_after_a_contrast_leaves_the_weather(text, weather)
 )
 def test_the_crossing_after_a_pedestrian_crossing_is_that_crossing(text, kind):
     assert read(text).map_kind in ((kind, "straight") if kind is None else (kind,))
+
+
+@pytest.mark.parametrize(
+    "text, density",
+    [
+        ("In heavy commuter traffic a moped cuts in front of the ego.", "heavy"),
+        ("Light weekend traffic; a cyclist crosses ahead of the ego.", "light"),
+        ("Moderate bg traffic, the van ahead brakes hard.", "moderate"),
+        ("Zero background traffic. A jogger crosses in front of the ego.", "none"),
+        ("The ego crawls along in slow holiday traffic when a scooter cuts in.", "heavy"),
+        ("In light rain traffic lights ahead turn red and a cyclist crosses.", None),  # (rain; a signal)
+    ],
+)
+def test_a_degree_of_traffic_with_words_of_which_traffic_between(text, density):
+    assert read(text).density == density
+
+
+@pytest.mark.parametrize(
+    "text, lo, hi",
+    [
+        ("Around seven o'clock tonight a moped cut in front of the ego.", 18, 20),
+        ("At 8 o'clock in the morning a cyclist crosses ahead of the ego.", 8, 8),
+        ("Sunday arvo, a jogger steps out in front of the ego.", 12, 17),
+        ("At nine o'clock a bus pulls out in front of the ego, late evening.", 21, 21),
+    ],
+)
+def test_a_whole_hour_and_the_colloquial_parts_of_the_day(text, lo, hi):
+    hour = int(read(text).time.split(":")[0])
+    assert lo <= hour <= hi

@@ -1161,7 +1161,7 @@ TIMES = {
     "08:30": ("morning",),
     "12:00": ("noon", "midday", "lunchtime"),
     "13:00": ("daylight", "daytime", "broad daylight", "during the day", "by day"),
-    "15:30": ("afternoon", "after lunch"),
+    "15:30": ("afternoon", "after lunch", "arvo"),  # ("this arvo": the afternoon, in Australian English)
     "19:30": (
         "dusk",
         "sunset",
@@ -1175,7 +1175,7 @@ TIMES = {
         "dusky",
         "civil twilight",
     ),
-    "20:00": ("evening",),
+    "20:00": ("evening", "tonight"),
     "17:30": ("rush hour", "commute"),
 }
 DENSITY = {

@@ -98,7 +98,7 @@ _WIDE = frozenset(("plenty", "lots", "loads", "heaps", "tons", "ample", "enough"
 #: Nouns of trouble that, denied, state a safe pass ("no issues", "without incident", "no danger").
 _TROUBLE = frozenset(
     ("issue", "issues", "problem", "problems", "conflict", "conflicts", "danger", "drama", "incident", "incidents",
-     "trouble", "harm", "risk", "worry", "worries", "dramas")
+     "trouble", "harm", "risk", "worry", "worries", "dramas", "interaction", "interactions")
 )  # fmt: skip
 #: Words of a close call said of the situation ("it was close", "dangerous", "scary").
 _CLOSE = frozenset(("close", "tight", "dangerous", "scary", "scared", "frightening", "hairy"))
@@ -114,8 +114,8 @@ _EGO_PHRASES = ("ego vehicle", "ego car", "subject vehicle", "test vehicle", "ve
                 "my car", "host vehicle")  # fmt: skip
 #: What the ego does when it has to act: evasion, and its manner.
 _EVADE = frozenset(("swerve", "dodge", "veer", "slam", "stamp", "jump", "stand", "yank", "jerk"))
-_HARD = frozenset(("hard", "sharply", "heavily", "suddenly", "firmly", "harshly", "violently", "emergency", "full",
-                   "strongly", "abruptly"))  # fmt: skip
+_HARD = frozenset(("hard", "dead", "sharply", "heavily", "suddenly", "firmly", "harshly", "violently", "emergency",
+                   "full", "strongly", "abruptly"))  # fmt: skip
 _BRAKE = frozenset(("brake", "stop"))
 _MILD = frozenset(("gently", "softly", "lightly", "slightly", "normally", "smoothly", "gradually", "calmly"))
 #: What a road user that gives way does (lemmas).
@@ -233,7 +233,9 @@ def _is_contact(words: list[str], i: int) -> bool:
         if w in ("crash", "crashes") and nxt in ("into", "through"):
             return True
         return not (w == "contact" and prev in ("eye",))
-    if w in ("onto", "off", "over", "across") and i > 0 and _is_verb(prev) and prev not in _LENGTH_UNITS | _SMALL_UNITS:
+    if w == "across" and not _lemmas(prev) & _SLIDING:
+        pass  # ("cut across my bonnet", "darted across the front of the bus": a path in front, not a contact)
+    elif w in ("onto", "off", "over", "across") and _is_verb(prev) and prev not in _LENGTH_UNITS | _SMALL_UNITS:
         rest = words[i + 1 : i + 4]
         if rest[:1] and rest[0] in _POSSESSIVES | {"the"} and set(rest[1:]) & _STRUCK_PARTS:
             return True  # ("bounced off my bonnet", "rolled over the windscreen")
@@ -244,6 +246,12 @@ def _is_contact(words: list[str], i: int) -> bool:
     if w in _THROWN_RESULTS and i > 1 and any(_lemmas(x) & {"send", "knock"} for x in words[max(0, i - 5) : i - 1]):
         k = next(k for k in range(max(0, i - 5), i) if _lemmas(words[k]) & {"send", "knock"})
         return _names_road_user(words[k + 1 : i])  # ("sent the jogger flying", "knocked him sprawling")
+    if w == _INTO and all(x in _ONSET for x in words[:i]) and _into_road_user(words, i):
+        return True  # (a clause of its own: ", straight into my door", "Right into the back of the van.")
+    if w == "under" and (i == 0 or _is_verb(prev) or all(x in _ONSET for x in words[:i])):
+        obj = words[i + 1 : i + 6]
+        if obj[:1] and (obj[0] in _POSSESSIVES or obj[0] in ("the", "a")) and _under_road_user(obj[1:]):
+            return True  # ("went under the nearside front", "and under the wheels of the lorry")
     if w in ("versus", "vs") and 0 < i < len(words) - 1:
         return True  # ("car versus e-scooter": a report's name for a collision between the two)
     if (
@@ -273,6 +281,8 @@ def _is_contact(words: list[str], i: int) -> bool:
     if lem & _CONTACT_VERBS and _is_verb(w) and _verbal(words, i):
         if w.startswith("crash") and nxt in _COMPOUND_HEADS:
             return False
+        if _thing_subject(words, i) and not _names_road_user(_object_of(words, i)):
+            return False  # ("the booking website crashed", "my phone app crashed twice")
         return _meets_road_user(_object_of(words, i))
     if _is_verb(w) and not lem & {"turn", "look", "get", "change", "switch", "fall", "slow"}:
         j = i + 1
@@ -293,6 +303,46 @@ def _is_contact(words: list[str], i: int) -> bool:
 _VERBAL_BEFORE = frozenset(("i", "we", "you", "he", "she", "it", "they", "to", "not", "will", "would", "could", "did",
                             "does", "do", "ego", "then", "and", "just", "might", "may", "must", "can", "should",
                             "is", "was", "were", "be", "been", "being", "got", "get", "gets", "are"))  # fmt: skip
+
+
+#: Adverbs that open a clause with no verb of its own ("and straight into the side of it").
+_ONSET = frozenset(("straight", "right", "smack", "slap", "bang", "slam", "head-first", "headfirst", "directly", "and",
+                    "then", "just", "full", "square", "squarely"))  # fmt: skip
+#: Verbs of a body carried over a surface: across a vehicle's part with one of these is a contact.
+_SLIDING = frozenset(("slide", "roll", "bounce", "fly", "tumble", "skid", "sprawl", "throw", "fling", "scrape"))
+_DETERMINERS = frozenset(("the", "a", "an", "this", "that", "some"))
+
+
+def _under_road_user(obj: list[str]) -> bool:
+    """Whether the noun phrase after "under the" is a vehicle's part or a road user ("the nearside
+    front", "the wheels of the bus"), not a place ("the railway bridge")."""
+    for w in obj:
+        if w in _PHRASE_ENDS:
+            return False
+        if w in _VEHICLE_PARTS or w.rstrip("s") in _VEHICLE_PARTS or _road_user_word(w):
+            return True
+    return False
+
+
+def _thing_subject(words: list[str], i: int) -> bool:
+    """Whether the verb at ``i`` has as subject a noun phrase opened by a determiner that names no road
+    user ("the booking website", "my phone app"): software or a market crashes, not a road user."""
+    for k in range(i - 1, max(-1, i - 5), -1):
+        if words[k] in _DETERMINERS or words[k] in _POSSESSIVES:
+            phrase = words[k + 1 : i]
+            return bool(phrase) and not any(
+                _road_user_word(x) or x in _EGO_HEADS or x in _PERSON_OBJECTS for x in phrase
+            )
+        if words[k] in _BREAK_WORDS or words[k] in _PHRASE_ENDS or words[k] in _VERBAL_BEFORE:
+            return False
+    phrase = words[max(0, i - 4) : i]  # (a bare noun opening its clause: "app crashed twice")
+    return 0 < i <= 2 and all(
+        not (_road_user_word(x) or x in _EGO_HEADS | _PERSON_OBJECTS | _NEGATORS or any(c.isdigit() for c in x))
+        and not x.endswith(("body", "one"))  # ("nobody hits anybody", "someone crashed")
+        and "VERB" not in _pos(x)
+        and "ADV" not in _pos(x)
+        for x in phrase
+    )
 
 
 def _verbal(words: list[str], i: int) -> bool:
@@ -316,6 +366,8 @@ def _into_road_user(words: list[str], j: int) -> bool:
         return False
     if obj[0] in _PERSON_OBJECTS:
         return True
+    if obj[0] in _EGO_HEADS:
+        return not (obj[1:2] and obj[1] in _PLACES)  # ("into my car" read as "into ego"; not "into ego lane")
     chunk: list[str] = []
     for w in obj:
         if w in _PHRASE_ENDS:
@@ -510,12 +562,15 @@ def _margin(words: list[str], i: int) -> str | None:
         k = i + 1
         if words[k] == "or" and k + 2 < len(words):
             k += 2  # ("a metre or two from my bumper")
-        if (
+        front = _relative_to_other(words, k)  # ("2 m in front of us", "a metre ahead")
+        if front or (
             words[k] in ("from", "off", "short", "before")
             and k + 1 < len(words)
             and (words[k + 1] in _POSSESSIVES | _PERSON_OBJECTS | {"the", "of"})
         ):
             value = _number(words[i - 1]) if i > 0 else None
+            if value is None and i > 0 and words[i - 1] in _MERE and words[i].endswith(("s", "feet")):
+                value = 1.0  # ("only feet from her", "mere inches from the cyclist")
             if value is None and words[i] in ("inches", "centimetres", "centimeters", "cm", "millimetres", "mm"):
                 value = 0.1  # ("stopped inches from my door")
             if value is None and i > 0 and words[i - 1] in ("a", "an", "few", "couple", "of"):
@@ -524,7 +579,7 @@ def _margin(words: list[str], i: int) -> str | None:
                 metres = value * (
                     0.3048 if words[i] in ("foot", "feet") else 0.0254 if words[i].startswith("inch") else 1.0
                 )
-                if metres <= 3.0:
+                if metres <= (2.0 if front else 3.0):
                     return NEAR_MISS  # ("stopped two metres off his door", "a foot from him")
     if w == "short" and i > 0:
         if any(_lemmas(x) & {"stop", "pull", "come", "halt"} for x in words[max(0, i - 7) : i]):
@@ -541,6 +596,25 @@ def _margin(words: list[str], i: int) -> str | None:
         if any(_lemmas(x) & {"stop", "miss", "pass", "clear", "halt"} for x in before) or "by" in before:
             return NEAR_MISS
     return None
+
+
+#: Words that make a bare plural unit small ("only feet from", "mere inches").
+_MERE = frozenset(("only", "just", "mere", "barely", "scarcely", "within"))
+
+
+def _relative_to_other(words: list[str], k: int) -> bool:
+    """Whether "in front" or "ahead" at ``k`` (after a distance) is relative to the ego or the other
+    road user: said alone at the end of its clause, or "of" the ego, a pronoun or a road user; not "2 m
+    in front of the stop line"."""
+    if words[k : k + 2] == ["in", "front"]:
+        k += 1
+    elif words[k] != "ahead":
+        return False
+    after = words[k + 1 : k + 5]
+    if not after or after[0] != "of":
+        return not after or after[0] in _BREAK_WORDS or after[0] in _PHRASE_ENDS - {"of"}
+    obj = after[1:]
+    return bool(obj) and (obj[0] in _PERSON_OBJECTS | _EGO_HEADS or _names_road_user(obj))
 
 
 def _passed_close(before: list[str], after: list[str]) -> bool:
@@ -703,6 +777,37 @@ def _required(sentence: list[str]) -> bool:
     return False
 
 
+def _after_contact_noun(words: list[str], i: int) -> int:
+    """Where the noun phrase of a word at ``i`` begins after an earlier contact noun in its clause: a
+    negation governs its own noun, not one set beside it ("no collision (near miss)")."""
+    return max((k + 1 for k in range(i) if words[k] in _CONTACT_NOUNS and words[k - 1 : k] != ["near"]), default=0)
+
+
+#: Harm to a road user (lemmas as passive participles): "was injured", "were badly hurt", "got killed".
+_HARMED = frozenset(("injure", "hurt", "kill", "wound", "maim"))
+#: Nouns of the consequences of a contact: denied ("no damage", "escaped injury"), a contact was not.
+_HARM_NOUNS = frozenset(("damage", "injury", "injuries", "casualty", "casualties", "scratch", "dent"))
+#: Words of being unhurt, said of a person ("the boy was fine"): no injury, which is not a safe pass.
+_UNHURT = frozenset(("fine", "ok", "okay", "alright", "unhurt", "unharmed", "unscathed", "uninjured"))
+_PASSIVE_AUX = frozenset(("was", "were", "got", "get", "gets", "is", "are", "been", "be", "being"))
+
+
+def _person_subject(words: list[str], i: int) -> bool:
+    """Whether the predicate at ``i`` (after a copula or passive auxiliary and adverbs) is said of a
+    person or road user: "a pedestrian was killed", "the boy was fine", "she was okay"."""
+    k = i - 1
+    while k >= 0 and (words[k].endswith("ly") or words[k] in _DEGREE | {"not", "all"}):
+        k -= 1
+    if k < 0 or words[k] not in _PASSIVE_AUX:
+        return False
+    subject = words[max(0, k - 4) : k]
+    return bool(subject) and any(
+        x in ("he", "she", "they", "everyone", "everybody", "nobody", "kid", "boy", "girl", "baby", "rider")
+        or _road_user_word(x)
+        for x in subject
+    )
+
+
 def outcome_cues(said: str) -> list[Cue]:
     """The statements of the outcome in ``said`` (the reader's normalised, lowercased tokens joined by
     spaces, contractions as "did not"), in text order."""
@@ -745,13 +850,34 @@ def outcome_cues(said: str) -> list[Cue]:
                     add("contact")
                 continue
             if _near_noun(words, i):
-                add("safe" if _denied_before(words, i) else "near")  # ("no near miss": nothing close)
+                own = _after_contact_noun(words, i)  # ("no collision (near miss)": "no" is not said of it)
+                add("safe" if _denied_before(words[own:], i - own) else "near")  # ("no near miss": nothing close)
                 continue
             if w.endswith("-free") and w[:-5] in _CONTACT_NOUNS | {"conflict", "incident", "drama", "problem"}:
                 add("safe")  # ("a collision-free pass")
                 continue
             if _negated_by_prefix(w):
                 add("safe")  # ("a complete non-event", "a non-issue")
+                continue
+            if (
+                _lemmas(w) & _HARMED
+                and not w.endswith("ing")
+                and _person_subject(words, i)
+                and not (_scoped(words, i, _HYPOTHETICAL, 4) or clause.after_if)  # ("before someone gets killed")
+            ):
+                add("denied" if _denied_before(words, i) else "contact")  # ("a cyclist was seriously injured")
+                continue
+            if w in _HARM_NOUNS and (_denied_before(words, i) or _scoped(words, i, ("without",), 3)):
+                add("denied")  # ("no damage", "escaped serious injury": no harm said, not that all was well)
+                continue
+            if w in _UNHURT and _person_subject(words, i):
+                add("denied")  # ("the kid was fine": unhurt, however close it was)
+                continue
+            if _lemmas(w) & {"squeeze"} and _is_verb(w) and words[i + 1 : i + 2] and words[i + 1] in _SQUEEZE_BY:
+                add("close")  # ("squeezed past", "squeezed through between us": a pass with no room)
+                continue
+            if words == ["just"] and ends_sentence and n > 0:
+                add("hedged")  # ("Made it. Just.": barely)
                 continue
             if len(words) == 2 and words[0] == "all" and w in ("clear", "good", "fine", "ok", "okay", "well"):
                 add("safe")  # ("All clear.")
@@ -803,7 +929,11 @@ def outcome_cues(said: str) -> list[Cue]:
                 continue
             if len(words) == 1 and w in ("clean", "close", "tight") or (words == ["clear"] and ends_sentence):
                 add("safe" if w in ("clean", "clear") else "close")  # (a one-word verdict: "Clean.", "but close")
-            if _is_verb(w) and _subject_is_ego(words, i, clause, story):
+            if _is_verb(w) and _hindsight(words, i):
+                pass  # ("I should have waited": what was not done)
+            elif _is_verb(w) and words[max(0, i - 2) : i] == ["had", "to"] and _ego_acts(words, i) == "evade":
+                add("evade")  # (anyone forced to swerve: "he had to swerve round my bonnet")
+            elif _is_verb(w) and _subject_is_ego(words, i, clause, story):
                 act = _ego_acts(words, i)
                 if act is not None:
                     add(act)
@@ -818,6 +948,20 @@ def outcome_cues(said: str) -> list[Cue]:
                 if not _denied_before(words, i):
                     add("evade")  # ("dived into the outside lane to avoid him")
     return cues
+
+
+#: The particles of squeezing by someone ("squeezed past", "squeezed through").
+_SQUEEZE_BY = frozenset(("past", "by", "through", "between", "round", "around"))
+
+
+def _hindsight(words: list[str], i: int) -> bool:
+    """Whether the verb at ``i`` is under a modal of hindsight ("should have waited", "should've
+    waited", "could have given way", "ought to have"): said, not done; "should brake" in a test's
+    wording is what it requires, and is read as such."""
+    before = words[max(0, i - 3) : i]
+    if words[i - 1 : i] == ["should"] and words[i].endswith(("ed", "en")):
+        return True  # ("I should've waited", its "'ve" dropped)
+    return "have" in before and bool(set(before) & {"could", "would", "might", "should", "ought"})
 
 
 def decide(cues: list[Cue]) -> str | None:

@@ -175,6 +175,8 @@ _CLOCK_IN_WORDS = re.compile(
     rf"\b(?:a )?(quarter|half|twenty[- ]five|twenty|ten|five|[1-5]?\d(?: minutes)?) (past|after|to|before) "
     rf"{_HOUR_WORD}\b{_NOT_A_CLOCK}|\bhalf {_HOUR_WORD}\b{_NOT_A_CLOCK}"
 )
+#: "six o'clock", "7 o'clock": a whole hour, its half of the day said beside it or told by the part of the day.
+_OCLOCK = re.compile(rf"\b{_HOUR_WORD} o'?clock\b")
 #: Said beside a clock in words, the half of the day it is in.
 _AFTERNOON_SAID = re.compile(r"\b(?:in the (?:afternoon|evening)|at night|tonight|pm|p m)\b")
 _MORNING_SAID = re.compile(r"\b(?:in the morning|am|a m)\b")
@@ -186,9 +188,13 @@ def clock_in_words(said: str, parts: list[str]) -> str | None:
     ("in the evening", "pm"), else the one that lies within the part of the day said (``parts``: the
     lexicon's clocks of the parts said), else the afternoon for the first hours and the morning after."""
     m = _CLOCK_IN_WORDS.search(said)
-    if m is None:
+    oclock = _OCLOCK.search(said) if m is None else None
+    if m is None and oclock is None:
         return None
-    if m.group(4) is not None:  # ("half five")
+    if oclock is not None:
+        m = oclock
+        hour, minute = _hour(oclock.group(1)), 0
+    elif m.group(4) is not None:  # ("half five")
         hour, minute = _hour(m.group(4)), 30
     else:
         said_minutes = m.group(1).replace(" minutes", "")
@@ -297,9 +303,19 @@ _SAID_OF_ROAD = re.compile(
     r" (?:is|was|were|are|being|looked|seemed) (?:very |quite |fairly |pretty |"
     r"really )?(light|moderate|heavy|busy|quiet|dense|sparse|empty)\b"
 )
-#: What each word of the two patterns above says of the traffic.
+#: A degree of traffic before up to two words saying which traffic ("heavy morning traffic", "moderate bg
+#: traffic", "zero ambient traffic", "slow queuing traffic"): the degree is said of the traffic all the
+#: same. A word of the weather between ("light rain traffic") or a signal after ("traffic lights") is not.
+_DEGREE_OF_TRAFFIC = re.compile(
+    r"\b(light|moderate|heavy|busy|dense|sparse|zero|slow|queuing|queueing|crawling|stationary)"
+    r"((?: (?!(?:and|or|but|with|of|in|on|the|a|rain|snow|fog|drizzle|mist|wind)\b)[a-z-]+){0,2}) traffic\b"
+    r"(?! (?:lights?|signals?|islands?|cones?|calming|control|police|wardens?|lanes?|cameras?)\b)"
+)
+#: What each word of the patterns above says of the traffic; a queue is heavy traffic.
 _DENSITY_WORDS = {"light": "light", "sparse": "light", "quiet": "light", "moderate": "moderate", "heavy": "heavy",
-                  "busy": "heavy", "dense": "heavy", "empty": "none", "none": "none"}  # fmt: skip
+                  "busy": "heavy", "dense": "heavy", "empty": "none", "none": "none", "zero": "none",
+                  "slow": "heavy", "queuing": "heavy", "queueing": "heavy", "crawling": "heavy",
+                  "stationary": "heavy"}  # fmt: skip
 
 
 def density(said: str, read: str | None = None) -> str | None:
@@ -320,6 +336,9 @@ def density(said: str, read: str | None = None) -> str | None:
         return _DENSITY_WORDS[note.group(1) or note.group(2)]
     m = _SAID_OF_ROAD.search(said_of_traffic)
     if m is not None:
+        return _DENSITY_WORDS[m.group(1)]
+    m = _DEGREE_OF_TRAFFIC.search(said_of_traffic)
+    if m is not None and m.group(2):  # (a degree directly before "traffic" is the lexicon's to read)
         return _DENSITY_WORDS[m.group(1)]
     if read == "none" and _NOT_TRAFFIC.search(said) and not _NONE_WORDS.search(said_of_traffic):
         return None
