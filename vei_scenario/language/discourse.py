@@ -46,7 +46,7 @@ from dataclasses import dataclass
 
 from vei_scenario.language.lemmas import english, lemmas
 from vei_scenario.language.lexicon import ANIMALS
-from vei_scenario.language.who import make_and_model
+from vei_scenario.language.who import make_and_model, person_with_vehicle
 
 #: ``kind_at(tokens, i)``: the road-user type named by a phrase starting at ``i`` ("ego" for the ego)
 #: and the phrase's length, or None when no road-user phrase starts there.
@@ -1600,7 +1600,7 @@ def resolve(
     the text writes with their own capital (:func:`who.proper_names`)."""
     dropped: list[str] = []
     names: dict[str, str] = {}
-    tokens = make_and_model(tokens, kind_at, known)
+    tokens = person_with_vehicle(make_and_model(tokens, kind_at, known), kind_at)
     tokens = _named_vehicles(tokens, kind_at, known, proper)
     tokens = _brackets(tokens, kind_at, known, names, dropped)
     tokens = _participial_apposition(tokens, kind_at, known)

@@ -35,7 +35,8 @@ TRUCK_MAKES = ("scania", "iveco", "daf", "transit bus")
 #: Animals on the road, played as pedestrians (OpenSCENARIO's pedestrianCategory "animal" has no model of
 #: its own in vei or esmini: its size and way of crossing are a walker's). One led, walked or ridden by a
 #: person is that person's, one road user (:mod:`discourse`).
-ANIMALS = ("dog", "deer", "animal", "cat", "fox", "horse", "pony")
+ANIMALS = ("dog", "deer", "animal", "cat", "fox", "horse", "pony", "cow", "cattle", "sheep", "goat", "kangaroo",
+           "wallaby", "boar", "donkey", "camel")  # fmt: skip
 
 ACTOR_NOUNS = {
     "car": ("car",),
@@ -127,6 +128,9 @@ ACTOR_NOUNS = {
         "scooter rider",
         "electric scooter",
         "scooterist",
+        "kickboard",  # (a kick scooter, as it is called in Korea and Japan; an electric one is an e-scooter)
+        "electric kickboard",
+        "stand-up scooter",
     ),
     "truck": (
         "truck",
@@ -160,6 +164,16 @@ ACTOR_NOUNS = {
         "b-double",
         "b-train",
         "prime mover",  # (an articulated truck's tractor unit, Australian and NZ usage)
+        "tipper",  # (a tipper lorry; the trades' names of a rigid or articulated goods vehicle)
+        "curtainsider",
+        "curtain-sider",
+        "box truck",
+        "flatbed",
+        "low loader",
+        "low-loader",
+        "cement mixer",
+        "concrete mixer",
+        "dustcart",
         *TRUCK_MAKES,
     ),
     "van": (
@@ -177,6 +191,14 @@ ACTOR_NOUNS = {
         "mpv",
         "ute",  # (a utility vehicle: a pickup, Australian and NZ usage)
         "utility vehicle",
+        "bakkie",  # (a pickup, South African usage)
+        "kombi",  # (a minibus: southern African and Australian usage)
+        "minibus",
+        "minibus taxi",
+        "matatu",  # (a shared minibus taxi, East Africa)
+        "dala dala",
+        "dala-dala",
+        "jeepney",  # (a shared minibus, the Philippines)
         *VAN_MODELS,
     ),
 }
@@ -210,6 +232,10 @@ CAR_NOUNS = (
     "ptw",
     "motor bike",  # (a motor two-wheeler or a quad named by "bike" is no bicycle)
     "quad bike",
+    "boda-boda",  # (a motorcycle taxi, East Africa; West Africa's "okada")
+    "boda boda",
+    "boda",
+    "okada",
     "tuk-tuk",  # (a motor three-wheeler is read as a car, as a motor two-wheeler is)
     "tuktuk",
     "auto-rickshaw",
