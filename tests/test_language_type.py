@@ -103,10 +103,11 @@ def test_a_person_and_a_vehicle_in_separate_phrases_stay_two(text, kinds):
 @pytest.mark.parametrize(
     "text",
     [
+        "I was going to the station by car at 40 km/h when a cyclist ahead of me braked hard.",
         "We came into town by van at 30 km/h and a pedestrian stepped out from the left in front of us.",
         "Travelling home by car at 50 km/h, I saw a cyclist ahead of me swerve into my lane.",
     ],
-    ids=["by-van", "travelling-by-car"],
+    ids=["by-car", "by-van", "travelling-by-car"],
 )
 def test_how_the_narrator_travels_is_no_road_user(text):
     kinds = _kinds(text)
@@ -133,8 +134,9 @@ def test_a_vehicle_that_acts_after_by_is_a_road_user(text, kind):
         ("A van pulls out of the car park on the left in front of us; ego 30 km/h.", "van"),
         ("A cyclist leaves the bike rack and crosses in front of us from the right; ego 20 km/h.", "bicycle"),
         ("A car swerves out of the bus lane on the left into our lane; ego 50 km/h.", "car"),
+        ("A pedestrian steps out of the scooter lane on the right in front of us; ego 30 km/h.", "pedestrian"),
     ],
-    ids=["bus-stop", "car-park", "bike-rack", "bus-lane"],
+    ids=["bus-stop", "car-park", "bike-rack", "bus-lane", "scooter-lane"],
 )
 def test_a_place_named_after_a_vehicle_is_no_road_user(text, kind):
     assert _kinds(text) == [kind]
@@ -144,3 +146,25 @@ def test_a_person_target_stays_a_person():
     assert _kinds("Ego at 30 km/h; a child pedestrian target crosses from the right in front of the ego.") == [
         "pedestrian"
     ]
+
+
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("A van pulls out of the taxi rank on the right in front of us; ego 30 km/h.", "van"),
+        ("A jogger runs out from behind the bus shelter on the left in front of us; ego 30 km/h.", "pedestrian"),
+        ("A car leaves the truck depot on the right and pulls out in front of us; ego 40 km/h.", "car"),
+    ],
+    ids=["taxi-rank", "bus-shelter", "truck-depot"],
+)
+def test_a_place_for_vehicles_names_no_road_user(text, kind):
+    assert _kinds(text) == [kind]
+
+
+def test_a_place_named_by_a_vehicle_keeps_its_own_reading():
+    """ "the bus stops" is a bus and its verb; "a bus stop" a place where a bus stops."""
+    assert _kinds("The bus ahead of us stops suddenly; we were at 40 km/h.") == ["truck"]
+
+
+def test_a_vehicle_by_a_place_is_a_place_not_a_mode():
+    assert _kinds("A man waiting by bus stop 4 steps out in front of us from the left; ego 30 km/h.") == ["pedestrian"]

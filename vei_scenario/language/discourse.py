@@ -46,7 +46,7 @@ from dataclasses import dataclass
 
 from vei_scenario.language.lemmas import english, lemmas
 from vei_scenario.language.lexicon import ANIMALS
-from vei_scenario.language.who import make_and_model, person_with_vehicle
+from vei_scenario.language.who import make_and_model, person_with_vehicle, travel_modes, vehicle_places
 
 #: ``kind_at(tokens, i)``: the road-user type named by a phrase starting at ``i`` ("ego" for the ego)
 #: and the phrase's length, or None when no road-user phrase starts there.
@@ -1601,6 +1601,7 @@ def resolve(
     dropped: list[str] = []
     names: dict[str, str] = {}
     tokens = person_with_vehicle(make_and_model(tokens, kind_at, known), kind_at)
+    tokens = vehicle_places(travel_modes(tokens, kind_at), kind_at)
     tokens = _named_vehicles(tokens, kind_at, known, proper)
     tokens = _brackets(tokens, kind_at, known, names, dropped)
     tokens = _participial_apposition(tokens, kind_at, known)

@@ -116,6 +116,70 @@ def person_with_vehicle(tokens: list[str], kind_at: KindAt) -> list[str]:
     return out
 
 
+#: Places named after the vehicles they are for ("the scooter lane", "a bike rack", "the taxi rank", "a
+#: bus shelter"): a closed class of nouns that are never a verb, after which the vehicle's noun is the
+#: place's modifier, no road user ("stop" and "park", verbs too, are left to the phrases that have them).
+PLACE_HEADS = frozenset({"lane", "rank", "rack", "bay", "shelter", "depot", "station", "garage", "route", "lot",
+                         "showroom", "wash", "yard", "dealership"})  # fmt: skip
+
+
+def vehicle_places(tokens: list[str], kind_at: KindAt) -> list[str]:
+    """``tokens`` without a vehicle's noun that names the place after it ("out of the scooter lane",
+    "past the taxi rank"): the place stays, the vehicle goes."""
+    out: list[str] = []
+    i = 0
+    while i < len(tokens):
+        found = kind_at(tokens, i)
+        if found is not None and found[0] not in ("pedestrian", "ego"):
+            end = i + found[1]
+            if end < len(tokens) and tokens[end] in PLACE_HEADS:
+                i = end
+                continue
+        out.append(tokens[i])
+        i += 1
+    return out
+
+
+#: Verbs of going somewhere: "by" after one of them says how, not who ("I travelled by car", "we came
+#: by van"); after any other participle it names the doer ("hit by car", "overtaken by van").
+_TRAVEL_VERBS = frozenset({"go", "come", "travel", "commute", "arrive", "return", "head", "get", "journey", "leave"})
+#: Words that open a noun phrase, after which a vehicle's noun is no modifier of a compound.
+_PHRASE_OPENERS = frozenset({"this", "that", "these", "those", "the", "a", "an", "every", "each", "some", "my", "our"})
+
+
+def _doer_follows(word: str) -> bool:
+    """Whether "by" after ``word`` names who did it: ``word`` is a participle of a verb other than one
+    of going somewhere ("hit", "overtaken", "struck")."""
+    from lemminflect import getAllInflections
+
+    for lemma in lemmas(word).get("VERB", ()):
+        if word in getAllInflections(lemma).get("VBN", ()) and lemma not in _TRAVEL_VERBS:
+            return True
+    return False
+
+
+def travel_modes(tokens: list[str], kind_at: KindAt) -> list[str]:
+    """``tokens`` without "by" and a bare vehicle's noun that say how someone travels ("going to work
+    by car", "we came into town by van", "travelling home by bus"): a means of travel, no road user.
+    Kept: a vehicle with an article ("by a car"), the doer of a participle ("hit by car", "overtaken by
+    van"), and a compound's modifier ("by bus stop 4", "by car park C": a place)."""
+    out: list[str] = []
+    i = 0
+    while i < len(tokens):
+        found = kind_at(tokens, i + 1) if tokens[i] == "by" and i + 1 < len(tokens) else None
+        if found is not None and found[0] not in ("pedestrian", "ego"):
+            end = i + 1 + found[1]
+            nxt = tokens[end] if end < len(tokens) else ""
+            pos = lemmas(nxt) if nxt.isalpha() else {}
+            compound = "NOUN" in pos and "ADV" not in pos and nxt not in _PHRASE_OPENERS
+            if not compound and not (out and _doer_follows(out[-1])):
+                i = end
+                continue
+        out.append(tokens[i])
+        i += 1
+    return out
+
+
 #: Modifiers of "lights" that still name a junction's signals ("traffic lights", "temporary lights");
 #: any other content word before it names another kind of lamp ("flashing", "blue", "tail", "fog").
 SIGNAL_MODIFIERS = frozenset(
