@@ -168,3 +168,30 @@ def test_a_place_named_by_a_vehicle_keeps_its_own_reading():
 
 def test_a_vehicle_by_a_place_is_a_place_not_a_mode():
     assert _kinds("A man waiting by bus stop 4 steps out in front of us from the left; ego 30 km/h.") == ["pedestrian"]
+
+
+# --- a person "in" or "on" a two-wheeler, the article left out, rides it ----------------------------------
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("One woman in electric scooter come from the pavement of right side and cross in front of me.", "e-scooter"),
+        ("A boy in bicycle came from the left side and crossed in front of my car, I was going 30 km/h.", "bicycle"),
+        ("A man on e-scooter comes out from the sidewalk on the left and crosses in front of us.", "e-scooter"),
+        ("One girl in a bicycle cross the road in front of me from the right side.", "bicycle"),
+    ],
+    ids=["in-electric-scooter", "in-bicycle", "on-e-scooter", "in-a-bicycle"],
+)  # fmt: skip
+def test_a_person_in_or_on_a_two_wheeler_rides_it(text, kind):
+    assert _kinds(text) == [kind]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A man in bike gear steps off the kerb on the left in front of us; ego 30 km/h.",
+        "A child in a bicycle helmet walks out from the right in front of us; ego 30 km/h.",
+    ],
+    ids=["bike-gear", "bicycle-helmet"],
+)
+def test_a_person_in_something_named_after_a_two_wheeler_walks(text):
+    assert _kinds(text) == ["pedestrian"]

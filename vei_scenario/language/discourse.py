@@ -318,8 +318,8 @@ def _riders(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
             j += 3
         elif j < len(tokens) and tokens[j] in DETERMINERS:
             j += 1
-        elif tokens[i] in INSIDE:  # ("a test in which a truck ...": no vehicle a person is in)
-            out.append(tokens[i])
+        elif tokens[i] in INSIDE and not _two_wheeler_next(tokens, j, kind_at, known):
+            out.append(tokens[i])  # ("a test in which a truck ...": no vehicle a person is in)
             i += 1
             continue
         head = next(
@@ -328,7 +328,7 @@ def _riders(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
         )
         ride = kind_at(tokens, head) if head is not None else None
         between_known = head is not None and any(known(tokens, h) for h in range(j, head))
-        unfit = ("pedestrian", "ego", "bicycle", "e-scooter") if tokens[i] in INSIDE else ("pedestrian", "truck", "ego")
+        unfit = ("pedestrian", "ego") if tokens[i] in INSIDE else ("pedestrian", "truck", "ego")
         if (
             ride is None
             or ride[0] in unfit
@@ -343,6 +343,19 @@ def _riders(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
         out[person_start:] = [det]
         i = j
     return out
+
+
+def _two_wheeler_next(tokens: list[str], j: int, kind_at: KindAt, known: Known) -> bool:
+    """Whether a bicycle's or an e-scooter's noun follows at ``j`` with no article, past up to two
+    modifiers the reader has no phrase for: "a boy in bicycle", "one woman in electric scooter" (English
+    of writers whose language has no articles, or says "in" where English says "on")."""
+    for h in range(j, min(j + 3, len(tokens))):
+        found = kind_at(tokens, h)
+        if found is not None:
+            return found[0] in ("bicycle", "e-scooter")
+        if not tokens[h].isalpha() or known(tokens, h):
+            return False
+    return False
 
 
 def _bare_person(out: list[str], kind_at: KindAt) -> int | None:

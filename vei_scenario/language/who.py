@@ -116,23 +116,25 @@ def person_with_vehicle(tokens: list[str], kind_at: KindAt) -> list[str]:
     return out
 
 
-#: Places named after the vehicles they are for ("the scooter lane", "a bike rack", "the taxi rank", "a
-#: bus shelter"): a closed class of nouns that are never a verb, after which the vehicle's noun is the
-#: place's modifier, no road user ("stop" and "park", verbs too, are left to the phrases that have them).
-PLACE_HEADS = frozenset({"lane", "rank", "rack", "bay", "shelter", "depot", "station", "garage", "route", "lot",
-                         "showroom", "wash", "yard", "dealership"})  # fmt: skip
+#: Places and things named after the vehicles they are for ("the scooter lane", "a bike rack", "the taxi
+#: rank", "a bus shelter", "bike gear", "a bicycle helmet"): a closed class of nouns that are never a
+#: verb, after which the vehicle's noun is a modifier, no road user ("stop" and "park", verbs too, are
+#: left to the phrases that have them).
+THINGS_FOR_VEHICLES = frozenset({"lane", "rank", "rack", "bay", "shelter", "depot", "station", "garage", "route",
+                                 "lot", "showroom", "wash", "yard", "dealership", "helmet", "helmets", "gear",
+                                 "shop", "lock", "seat", "clothing", "shorts", "jersey"})  # fmt: skip
 
 
 def vehicle_places(tokens: list[str], kind_at: KindAt) -> list[str]:
-    """``tokens`` without a vehicle's noun that names the place after it ("out of the scooter lane",
-    "past the taxi rank"): the place stays, the vehicle goes."""
+    """``tokens`` without a vehicle's noun that names the place or thing after it ("out of the scooter
+    lane", "past the taxi rank", "a man in bike gear"): the place or thing stays, the vehicle goes."""
     out: list[str] = []
     i = 0
     while i < len(tokens):
         found = kind_at(tokens, i)
         if found is not None and found[0] not in ("pedestrian", "ego"):
             end = i + found[1]
-            if end < len(tokens) and tokens[end] in PLACE_HEADS:
+            if end < len(tokens) and tokens[end] in THINGS_FOR_VEHICLES:
                 i = end
                 continue
         out.append(tokens[i])
