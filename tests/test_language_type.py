@@ -195,3 +195,37 @@ def test_a_person_in_or_on_a_two_wheeler_rides_it(text, kind):
 )
 def test_a_person_in_something_named_after_a_two_wheeler_walks(text):
     assert _kinds(text) == ["pedestrian"]
+
+
+# --- the other ways people get about ---------------------------------------------------------------------
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("A 7.5-tonner ahead of us brakes hard; we were at 50 km/h.", "truck"),
+        ("One of those 44-tonners in the left lane moves into our lane; ego 80 km/h.", "truck"),
+        ("A man on a mobility scooter crosses from the left in front of us; ego 20 km/h.", "pedestrian"),
+        ("A rollerblader comes off the pavement on the right and crosses in front of us; ego 20 km/h.", "pedestrian"),
+        ("An inline skater crosses in front of us from the left; ego 25 km/h.", "pedestrian"),
+        ("A kid on a hoverboard shoots out from the right in front of us; ego 20 km/h.", "e-scooter"),
+        ("A segway rider crosses in front of us from the left; ego 20 km/h.", "e-scooter"),
+        ("A motorhome ahead of us brakes hard; we were at 60 km/h.", "van"),
+        ("A unicyclist crosses in front of us from the right; ego 20 km/h.", "bicycle"),
+    ],
+    ids=["7.5-tonner", "44-tonners", "mobility-scooter", "rollerblader", "inline-skater", "hoverboard", "segway",
+         "motorhome", "unicyclist"],
+)  # fmt: skip
+def test_other_ways_of_getting_about(text, kind):
+    assert _kinds(text) == [kind]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A woman in a wheelchair crosses from the left in front of us; ego 20 km/h.",
+        "An old man on a mobility scooter comes off the kerb on the right in front of us; ego 20 km/h.",
+        "A girl on a pony crosses from the left in front of us; ego 20 km/h.",
+    ],
+    ids=["wheelchair", "mobility-scooter", "pony"],
+)
+def test_a_person_on_what_goes_at_a_walkers_pace_is_one_walker(text):
+    assert _kinds(text) == ["pedestrian"]

@@ -45,7 +45,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from vei_scenario.language.lemmas import english, lemmas
-from vei_scenario.language.lexicon import ANIMALS
+from vei_scenario.language.lexicon import ANIMALS, WALKER_PACED
 from vei_scenario.language.who import make_and_model, person_with_vehicle, travel_modes, vehicle_places
 
 #: ``kind_at(tokens, i)``: the road-user type named by a phrase starting at ``i`` ("ego" for the ego)
@@ -303,7 +303,8 @@ def _riders(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
             if found is not None and found[0] == "pedestrian" and back + found[1] == k + 1:
                 p = _phrase_at(out, back, kind_at, known)
                 person_start = p.start if p is not None and p.det else None
-                break
+                if person_start is not None:  # (else a longer noun may end here: "an old man")
+                    break
         if person_start is None and not known(out, k):
             person_start = _unknown_person(out, k, known)
         if person_start is None:
@@ -329,9 +330,10 @@ def _riders(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
         ride = kind_at(tokens, head) if head is not None else None
         between_known = head is not None and any(known(tokens, h) for h in range(j, head))
         unfit = ("pedestrian", "ego") if tokens[i] in INSIDE else ("pedestrian", "truck", "ego")
+        walker_paced = ride is not None and " ".join(tokens[head : head + ride[1]]) in WALKER_PACED
         if (
             ride is None
-            or ride[0] in unfit
+            or (ride[0] in unfit and not walker_paced)
             or between_known
             or (tokens[i] in INSIDE and _goes_on(tokens, head + ride[1], known))
         ):

@@ -38,6 +38,10 @@ TRUCK_MAKES = ("scania", "iveco", "daf", "transit bus")
 ANIMALS = ("dog", "deer", "animal", "cat", "fox", "horse", "pony", "cow", "cattle", "sheep", "goat", "kangaroo",
            "wallaby", "boar", "donkey", "camel")  # fmt: skip
 
+#: What a person rides or sits in at a walker's pace, on the pavement or the road's edge: the person and it
+#: are one walker ("a man on a mobility scooter", "a woman in a wheelchair", "a girl on a pony").
+WALKER_PACED = ("wheelchair", "mobility scooter", *ANIMALS)
+
 ACTOR_NOUNS = {
     "car": ("car",),
     "pedestrian": (
@@ -70,6 +74,12 @@ ACTOR_NOUNS = {
         "passerby",
         "skateboarder",
         "wheelchair user",
+        "wheelchair",  # (a wheelchair or a mobility scooter goes at a walker's pace, on the pavement)
+        "mobility scooter",
+        "rollerblader",
+        "roller skater",
+        "inline skater",
+        "skater",
         "courier",
         "postman",
         "postwoman",
@@ -116,6 +126,8 @@ ACTOR_NOUNS = {
         "biker",
         "kid on a bike",
         "cargo bike",
+        "unicycle",
+        "unicyclist",
         "ebta",
         "ebt",  # (Euro NCAP's bicyclist target)
     ),  # fmt: skip
@@ -128,6 +140,10 @@ ACTOR_NOUNS = {
         "scooter rider",
         "electric scooter",
         "scooterist",
+        "hoverboard",  # (small electric rideables: an e-scooter's size and speed)
+        "segway",
+        "electric unicycle",
+        "onewheel",
         "kickboard",  # (a kick scooter, as it is called in Korea and Japan; an electric one is an e-scooter)
         "electric kickboard",
         "stand-up scooter",
@@ -164,6 +180,7 @@ ACTOR_NOUNS = {
         "b-double",
         "b-train",
         "prime mover",  # (an articulated truck's tractor unit, Australian and NZ usage)
+        "tonner",  # ("a 7.5-tonner", "44-tonners": a goods vehicle named by its weight)
         "tipper",  # (a tipper lorry; the trades' names of a rigid or articulated goods vehicle)
         "curtainsider",
         "curtain-sider",
@@ -183,6 +200,9 @@ ACTOR_NOUNS = {
         "transporter",
         "ambulance",
         "camper",
+        "motorhome",
+        "motor home",
+        "motor-home",
         "pickup",
         "pick-up",
         "pickup truck",
