@@ -45,8 +45,8 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from vei_scenario.language.lemmas import english, lemmas
-from vei_scenario.language.lexicon import ANIMALS
-from vei_scenario.language.who import make_and_model
+from vei_scenario.language.lexicon import ANIMALS, WALKER_PACED
+from vei_scenario.language.who import make_and_model, person_with_vehicle, travel_modes, vehicle_places
 
 #: ``kind_at(tokens, i)``: the road-user type named by a phrase starting at ``i`` ("ego" for the ego)
 #: and the phrase's length, or None when no road-user phrase starts there.
@@ -303,7 +303,8 @@ def _riders(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
             if found is not None and found[0] == "pedestrian" and back + found[1] == k + 1:
                 p = _phrase_at(out, back, kind_at, known)
                 person_start = p.start if p is not None and p.det else None
-                break
+                if person_start is not None:  # (else a longer noun may end here: "an old man")
+                    break
         if person_start is None and not known(out, k):
             person_start = _unknown_person(out, k, known)
         if person_start is None:
@@ -318,8 +319,8 @@ def _riders(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
             j += 3
         elif j < len(tokens) and tokens[j] in DETERMINERS:
             j += 1
-        elif tokens[i] in INSIDE:  # ("a test in which a truck ...": no vehicle a person is in)
-            out.append(tokens[i])
+        elif tokens[i] in INSIDE and not _two_wheeler_next(tokens, j, kind_at, known):
+            out.append(tokens[i])  # ("a test in which a truck ...": no vehicle a person is in)
             i += 1
             continue
         head = next(
@@ -328,10 +329,11 @@ def _riders(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
         )
         ride = kind_at(tokens, head) if head is not None else None
         between_known = head is not None and any(known(tokens, h) for h in range(j, head))
-        unfit = ("pedestrian", "ego", "bicycle", "e-scooter") if tokens[i] in INSIDE else ("pedestrian", "truck", "ego")
+        unfit = ("pedestrian", "ego") if tokens[i] in INSIDE else ("pedestrian", "truck", "ego")
+        walker_paced = ride is not None and " ".join(tokens[head : head + ride[1]]) in WALKER_PACED
         if (
             ride is None
-            or ride[0] in unfit
+            or (ride[0] in unfit and not walker_paced)
             or between_known
             or (tokens[i] in INSIDE and _goes_on(tokens, head + ride[1], known))
         ):
@@ -343,6 +345,19 @@ def _riders(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
         out[person_start:] = [det]
         i = j
     return out
+
+
+def _two_wheeler_next(tokens: list[str], j: int, kind_at: KindAt, known: Known) -> bool:
+    """Whether a bicycle's or an e-scooter's noun follows at ``j`` with no article, past up to two
+    modifiers the reader has no phrase for: "a boy in bicycle", "one woman in electric scooter" (English
+    of writers whose language has no articles, or says "in" where English says "on")."""
+    for h in range(j, min(j + 3, len(tokens))):
+        found = kind_at(tokens, h)
+        if found is not None:
+            return found[0] in ("bicycle", "e-scooter")
+        if not tokens[h].isalpha() or known(tokens, h):
+            return False
+    return False
 
 
 def _bare_person(out: list[str], kind_at: KindAt) -> int | None:
@@ -1600,7 +1615,8 @@ def resolve(
     the text writes with their own capital (:func:`who.proper_names`)."""
     dropped: list[str] = []
     names: dict[str, str] = {}
-    tokens = make_and_model(tokens, kind_at, known)
+    tokens = person_with_vehicle(make_and_model(tokens, kind_at, known), kind_at)
+    tokens = vehicle_places(travel_modes(tokens, kind_at), kind_at)
     tokens = _named_vehicles(tokens, kind_at, known, proper)
     tokens = _brackets(tokens, kind_at, known, names, dropped)
     tokens = _participial_apposition(tokens, kind_at, known)

@@ -35,7 +35,12 @@ TRUCK_MAKES = ("scania", "iveco", "daf", "transit bus")
 #: Animals on the road, played as pedestrians (OpenSCENARIO's pedestrianCategory "animal" has no model of
 #: its own in vei or esmini: its size and way of crossing are a walker's). One led, walked or ridden by a
 #: person is that person's, one road user (:mod:`discourse`).
-ANIMALS = ("dog", "deer", "animal", "cat", "fox", "horse", "pony")
+ANIMALS = ("dog", "deer", "animal", "cat", "fox", "horse", "pony", "cow", "cattle", "sheep", "goat", "kangaroo",
+           "wallaby", "boar", "donkey", "camel")  # fmt: skip
+
+#: What a person rides or sits in at a walker's pace, on the pavement or the road's edge: the person and it
+#: are one walker ("a man on a mobility scooter", "a woman in a wheelchair", "a girl on a pony").
+WALKER_PACED = ("wheelchair", "mobility scooter", *ANIMALS)
 
 ACTOR_NOUNS = {
     "car": ("car",),
@@ -69,6 +74,12 @@ ACTOR_NOUNS = {
         "passerby",
         "skateboarder",
         "wheelchair user",
+        "wheelchair",  # (a wheelchair or a mobility scooter goes at a walker's pace, on the pavement)
+        "mobility scooter",
+        "rollerblader",
+        "roller skater",
+        "inline skater",
+        "skater",
         "courier",
         "postman",
         "postwoman",
@@ -115,6 +126,8 @@ ACTOR_NOUNS = {
         "biker",
         "kid on a bike",
         "cargo bike",
+        "unicycle",
+        "unicyclist",
         "ebta",
         "ebt",  # (Euro NCAP's bicyclist target)
     ),  # fmt: skip
@@ -127,6 +140,13 @@ ACTOR_NOUNS = {
         "scooter rider",
         "electric scooter",
         "scooterist",
+        "hoverboard",  # (small electric rideables: an e-scooter's size and speed)
+        "segway",
+        "electric unicycle",
+        "onewheel",
+        "kickboard",  # (a kick scooter, as it is called in Korea and Japan; an electric one is an e-scooter)
+        "electric kickboard",
+        "stand-up scooter",
     ),
     "truck": (
         "truck",
@@ -163,6 +183,17 @@ ACTOR_NOUNS = {
         "b-double",
         "b-train",
         "prime mover",  # (an articulated truck's tractor unit, Australian and NZ usage)
+        "tonner",  # ("a 7.5-tonner", "44-tonners": a goods vehicle named by its weight)
+        "tipper",  # (a tipper lorry; the trades' names of a rigid or articulated goods vehicle)
+        "curtainsider",
+        "curtain-sider",
+        "box truck",
+        "flatbed",
+        "low loader",
+        "low-loader",
+        "cement mixer",
+        "concrete mixer",
+        "dustcart",
         *TRUCK_MAKES,
     ),
     "van": (
@@ -172,6 +203,9 @@ ACTOR_NOUNS = {
         "transporter",
         "ambulance",
         "camper",
+        "motorhome",
+        "motor home",
+        "motor-home",
         "pickup",
         "pick-up",
         "pickup truck",
@@ -180,6 +214,14 @@ ACTOR_NOUNS = {
         "mpv",
         "ute",  # (a utility vehicle: a pickup, Australian and NZ usage)
         "utility vehicle",
+        "bakkie",  # (a pickup, South African usage)
+        "kombi",  # (a minibus: southern African and Australian usage)
+        "minibus",
+        "minibus taxi",
+        "matatu",  # (a shared minibus taxi, East Africa)
+        "dala dala",
+        "dala-dala",
+        "jeepney",  # (a shared minibus, the Philippines)
         *VAN_MODELS,
     ),
 }
@@ -213,6 +255,10 @@ CAR_NOUNS = (
     "ptw",
     "motor bike",  # (a motor two-wheeler or a quad named by "bike" is no bicycle)
     "quad bike",
+    "boda-boda",  # (a motorcycle taxi, East Africa; West Africa's "okada")
+    "boda boda",
+    "boda",
+    "okada",
     "tuk-tuk",  # (a motor three-wheeler is read as a car, as a motor two-wheeler is)
     "tuktuk",
     "auto-rickshaw",

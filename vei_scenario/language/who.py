@@ -10,7 +10,7 @@ import re
 from collections.abc import Callable
 
 from vei_scenario.language.lemmas import english, lemmas
-from vei_scenario.language.lexicon import CAR_MAKES, TRUCK_MAKES
+from vei_scenario.language.lexicon import ANIMALS, CAR_MAKES, TRUCK_MAKES
 
 #: First-person possessives, a closed class: what they own is the writer's, hence the ego.
 FIRST_PERSON_POSSESSIVES = frozenset({"my", "our"})
@@ -83,6 +83,120 @@ def closed_compound(token: str, kind_of: Callable[[str], str | None]) -> list[st
     return [token]
 
 
+def _singular_noun(word: str) -> bool:
+    return word.isalpha() and word in lemmas(word).get("NOUN", ()) and word not in ("people", "folk", "folks")
+
+
+def _person_at(tokens: list[str], i: int, kind_at: KindAt) -> int | None:
+    """The length of a singular person's noun at ``i`` ("man", "courier", "kid"; no animal), or None."""
+    found = kind_at(tokens, i) if i < len(tokens) else None
+    if found is None or found[0] != "pedestrian" or tokens[i] in ANIMALS:
+        return None
+    return found[1] if _singular_noun(tokens[i + found[1] - 1]) else None
+
+
+#: Nouns that name a road user of any kind a test places, not a vehicle ("a child pedestrian target").
+_ANY_KIND = frozenset({"target", "vehicle", "obstacle", "adversary", "dummy", "participant"})
+
+
+def _vehicle_at(tokens: list[str], i: int, kind_at: KindAt) -> int | None:
+    """The length of a singular vehicle's noun at ``i`` (a car, van, truck, bicycle or e-scooter), or None."""
+    found = kind_at(tokens, i) if i < len(tokens) else None
+    if found is None or found[0] in ("pedestrian", "ego") or _ANY_KIND & set(tokens[i : i + found[1]]):
+        return None
+    last = tokens[i + found[1] - 1]
+    return found[1] if _singular_noun(last) or not english(last) else None
+
+
+def person_with_vehicle(tokens: list[str], kind_at: KindAt) -> list[str]:
+    """``tokens`` with a person's noun and a vehicle's noun said together as one noun ("a courier van",
+    "a pizza courier bike", "a scooter kid", "boda-boda man", "the bike messenger") as the vehicle alone:
+    a compound of the two names one road user, the person on or in that vehicle, whichever of them is
+    the head. Both nouns singular and side by side; a person and a vehicle with an article each ("a
+    jogger and a van") or split by a mark are two road users."""
+    out: list[str] = []
+    i = 0
+    while i < len(tokens):
+        person = _person_at(tokens, i, kind_at)
+        if person is not None and _vehicle_at(tokens, i + person, kind_at) is not None:
+            i += person  # ("a courier van": the van)
+            continue
+        vehicle = _vehicle_at(tokens, i, kind_at)
+        if vehicle is not None and (after := _person_at(tokens, i + vehicle, kind_at)) is not None:
+            out.extend(tokens[i : i + vehicle])  # ("a scooter kid": the scooter)
+            i += vehicle + after
+            continue
+        out.append(tokens[i])
+        i += 1
+    return out
+
+
+#: Places and things named after the vehicles they are for ("the scooter lane", "a bike rack", "the taxi
+#: rank", "a bus shelter", "bike gear", "a bicycle helmet"): a closed class of nouns that are never a
+#: verb, after which the vehicle's noun is a modifier, no road user ("stop" and "park", verbs too, are
+#: left to the phrases that have them).
+THINGS_FOR_VEHICLES = frozenset({"lane", "rank", "rack", "bay", "shelter", "depot", "station", "garage", "route",
+                                 "lot", "showroom", "wash", "yard", "dealership", "helmet", "helmets", "gear",
+                                 "shop", "lock", "seat", "clothing", "shorts", "jersey"})  # fmt: skip
+
+
+def vehicle_places(tokens: list[str], kind_at: KindAt) -> list[str]:
+    """``tokens`` without a vehicle's noun that names the place or thing after it ("out of the scooter
+    lane", "past the taxi rank", "a man in bike gear"): the place or thing stays, the vehicle goes."""
+    out: list[str] = []
+    i = 0
+    while i < len(tokens):
+        found = kind_at(tokens, i)
+        if found is not None and found[0] not in ("pedestrian", "ego"):
+            end = i + found[1]
+            if end < len(tokens) and tokens[end] in THINGS_FOR_VEHICLES:
+                i = end
+                continue
+        out.append(tokens[i])
+        i += 1
+    return out
+
+
+#: Verbs of going somewhere: "by" after one of them says how, not who ("I travelled by car", "we came
+#: by van"); after any other participle it names the doer ("hit by car", "overtaken by van").
+_TRAVEL_VERBS = frozenset({"go", "come", "travel", "commute", "arrive", "return", "head", "get", "journey", "leave"})
+#: Words that open a noun phrase, after which a vehicle's noun is no modifier of a compound.
+_PHRASE_OPENERS = frozenset({"this", "that", "these", "those", "the", "a", "an", "every", "each", "some", "my", "our"})
+
+
+def _doer_follows(word: str) -> bool:
+    """Whether "by" after ``word`` names who did it: ``word`` is a participle of a verb other than one
+    of going somewhere ("hit", "overtaken", "struck")."""
+    from lemminflect import getAllInflections
+
+    for lemma in lemmas(word).get("VERB", ()):
+        if word in getAllInflections(lemma).get("VBN", ()) and lemma not in _TRAVEL_VERBS:
+            return True
+    return False
+
+
+def travel_modes(tokens: list[str], kind_at: KindAt) -> list[str]:
+    """``tokens`` without "by" and a bare vehicle's noun that say how someone travels ("going to work
+    by car", "we came into town by van", "travelling home by bus"): a means of travel, no road user.
+    Kept: a vehicle with an article ("by a car"), the doer of a participle ("hit by car", "overtaken by
+    van"), and a compound's modifier ("by bus stop 4", "by car park C": a place)."""
+    out: list[str] = []
+    i = 0
+    while i < len(tokens):
+        found = kind_at(tokens, i + 1) if tokens[i] == "by" and i + 1 < len(tokens) else None
+        if found is not None and found[0] not in ("pedestrian", "ego"):
+            end = i + 1 + found[1]
+            nxt = tokens[end] if end < len(tokens) else ""
+            pos = lemmas(nxt) if nxt.isalpha() else {}
+            compound = "NOUN" in pos and "ADV" not in pos and nxt not in _PHRASE_OPENERS
+            if not compound and not (out and _doer_follows(out[-1])):
+                i = end
+                continue
+        out.append(tokens[i])
+        i += 1
+    return out
+
+
 #: Modifiers of "lights" that still name a junction's signals ("traffic lights", "temporary lights");
 #: any other content word before it names another kind of lamp ("flashing", "blue", "tail", "fog").
 SIGNAL_MODIFIERS = frozenset(
@@ -105,12 +219,49 @@ def lamps_not_signals(tokens: list[str], content_word: Callable[[str], bool]) ->
 MAKES = frozenset(m for m in CAR_MAKES + TRUCK_MAKES if " " not in m)
 
 
+#: Words after a number that make it a quantity (a distance, a speed, a time), not a model's number.
+_UNITS_AFTER = frozenset(
+    "m km km/h kph mph m/s s sec secs second seconds min mins minute minutes h hr hrs hour hours ft feet foot "
+    "yard yards yd mile miles metre metres meter meters % pm am o'clock lane lanes".split()
+)  # fmt: skip
+
+
+def _model_code_end(tokens: list[str], i: int, kind_at: KindAt) -> int | None:
+    """Where a model code starting at ``i`` ends ("X3", "C220", "A4", "308" are read as "x 3", "c 220",
+    "a 4", "308"), or None: up to three letters that are no English word (or one letter) then a whole
+    number, or a whole number alone; a number that a unit or a road user follows is a quantity
+    ("a Toyota 25 m ahead", "a BMW 2 cars ahead")."""
+    j = i
+    w = tokens[i] if i < len(tokens) else ""
+    if w.isalpha() and (len(w) == 1 or (len(w) <= 3 and not english(w))):
+        j += 1
+    if j >= len(tokens) or not tokens[j].isdigit():
+        return None
+    after = tokens[j + 1] if j + 1 < len(tokens) else ""
+    if after in _UNITS_AFTER or after.isdigit() or (after and kind_at(tokens, j + 1) is not None):
+        return None
+    return j + 1
+
+
+def model_codes(tokens: list[str], kind_at: KindAt) -> list[str]:
+    """``tokens`` without the model code after a make ("a BMW X3", "a Peugeot 308", "a Scania R500
+    truck"): the make says the vehicle (or the noun after the code does), the code says nothing more."""
+    out: list[str] = []
+    i = 0
+    while i < len(tokens):
+        out.append(tokens[i])
+        end = _model_code_end(tokens, i + 1, kind_at) if tokens[i] in MAKES else None
+        i = end if end is not None else i + 1
+    return out
+
+
 def make_and_model(tokens: list[str], kind_at: KindAt, known: Callable[[list[str], int], bool]) -> list[str]:
     """A make and what follows it as one vehicle: before a vehicle noun or a model the lexicon has ("a
     Ford Transit", "a Mercedes van", "a Vauxhall Astra") the make goes and the noun says the type; before
     a model it lacks (a word no dictionary knows, "a Toyota Prius", or a noun the reader has no phrase for,
     "a Ford Focus") the model goes and the make says it is a car. A verb after a make stays ("a BMW came
-    past")."""
+    past"). A model code after the make goes first (:func:`model_codes`)."""
+    tokens = model_codes(tokens, kind_at)
     out: list[str] = []
     i = 0
     while i < len(tokens):

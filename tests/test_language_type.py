@@ -1,0 +1,231 @@
+"""The type of each road user, by how people name it: a make and its model code ("an Audi A4"), the
+vehicle words of other Englishes and trades, a person named by the vehicle they ride or drive ("the
+courier van", "a boda-boda guy"), and a vehicle that only says how the narrator travels ("I went by
+car"), which is no road user. Near misses name a place or a mode, not a road user."""
+
+from __future__ import annotations
+
+import pytest
+
+from vei_scenario.language.reader import read
+
+
+def _kinds(text: str) -> list[str]:
+    return [a.kind for a in read(text).actors]
+
+
+# --- a make followed by a model code is that make's vehicle ---------------------------------------------
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("A dark blue BMW X3 pulls out from the left in front of us; we were at 40 km/h.", "car"),
+        ("Ego at 50 km/h; a Peugeot 308 ahead of us brakes hard.", "car"),
+        ("We drive at 30 km/h and a grey Mercedes C220 comes out of a side road on the right.", "car"),
+        ("Ego 80 km/h on the motorway; an Audi Q7 in the left lane moves into our lane.", "car"),
+        ("A Scania R500 ahead of us brakes hard while we drive at 60 km/h.", "truck"),
+    ],
+    ids=["bmw-x3", "peugeot-308", "mercedes-c220", "audi-q7", "scania-r500"],
+)
+def test_a_make_and_its_model_code_is_one_vehicle(text, kind):
+    assert _kinds(text) == [kind]
+
+
+def test_a_number_after_a_make_that_is_a_distance_stays_a_distance():
+    reading = read("A Toyota 25 m ahead of us brakes hard while we drive at 50 km/h.")
+    assert [a.kind for a in reading.actors] == ["car"]
+    assert reading.actors[0].distance_m == 25.0
+
+
+def test_a_speed_after_a_make_stays_a_speed():
+    reading = read("A Honda 40 km/h in the left lane cuts in front of us; ego at 60 km/h.")
+    assert [a.kind for a in reading.actors] == ["car"]
+
+
+# --- vehicle words of other Englishes and trades ----------------------------------------------------------
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("A bakkie ahead of us brakes hard while we drive at 60 km/h.", "van"),
+        ("We were doing 50 when a kombi came out of the side road on the left.", "van"),
+        ("A matatu ahead of us stops suddenly; we drive at 40 km/h.", "van"),
+        ("A minibus pulls out from the left in front of us at 30 km/h.", "van"),
+        ("A jeepney ahead of us stops sharply while we drive at 30 km/h.", "van"),
+        ("A tipper ahead of us brakes hard; ego at 50 km/h.", "truck"),
+        ("A curtainsider in the right lane moves into our lane while we do 80 km/h.", "truck"),
+        ("A box truck ahead of us stops suddenly; we were at 40 km/h.", "truck"),
+        ("A boda-boda came out of the side road on my left; I was doing 30 km/h.", "car"),
+        ("An okada crosses in front of us from the right; ego 30 km/h.", "car"),
+        ("A kid on a kickboard comes off the pavement on the left and crosses in front of us.", "e-scooter"),
+        ("A cow wanders across the road from the left in front of us; we were at 60 km/h.", "pedestrian"),
+        ("A sheep runs across the road from the right; ego 50 km/h.", "pedestrian"),
+    ],
+    ids=["bakkie", "kombi", "matatu", "minibus", "jeepney", "tipper", "curtainsider", "box-truck", "boda-boda",
+         "okada", "kickboard", "cow", "sheep"],
+)  # fmt: skip
+def test_vehicle_words_of_other_englishes_and_trades(text, kind):
+    assert _kinds(text) == [kind]
+
+
+# --- a person named with the vehicle they ride or drive is that vehicle -----------------------------------
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("A courier van in the left lane moves into our lane; ego at 60 km/h.", "van"),
+        ("A pizza courier bike comes out of a driveway on the right and crosses in front of us.", "bicycle"),
+        ("Boda-boda man came out of the side road on my left at 20 km/h; I was doing 40.", "car"),
+        ("A scooter kid comes off the pavement on the right and crosses in front of us; ego 30 km/h.", "e-scooter"),
+        ("A bike messenger cuts across in front of us from the left while we drive at 25 km/h.", "bicycle"),
+    ],
+    ids=["courier-van", "courier-bike", "boda-boda-man", "scooter-kid", "bike-messenger"],
+)
+def test_a_person_named_with_their_vehicle_is_that_vehicle(text, kind):
+    assert _kinds(text) == [kind]
+
+
+@pytest.mark.parametrize(
+    "text, kinds",
+    [
+        # a person and a vehicle, each with its own article: two road users
+        ("A jogger and a van come from the left in front of us; we drive at 30 km/h.", ["pedestrian", "van"]),
+        # a walker's noun that ends a phrase, and the vehicle of the next one
+        ("A man walks out in front of the bus, the car behind it brakes hard; ego 30 km/h.", None),
+    ],
+    ids=["two-articles", "separate-phrases"],
+)
+def test_a_person_and_a_vehicle_in_separate_phrases_stay_two(text, kinds):
+    got = _kinds(text)
+    if kinds is not None:
+        assert sorted(got) == sorted(kinds)
+    assert "pedestrian" in got
+
+
+# --- a vehicle after "by" that says how the narrator travels is no road user ------------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was going to the station by car at 40 km/h when a cyclist ahead of me braked hard.",
+        "We came into town by van at 30 km/h and a pedestrian stepped out from the left in front of us.",
+        "Travelling home by car at 50 km/h, I saw a cyclist ahead of me swerve into my lane.",
+    ],
+    ids=["by-car", "by-van", "travelling-by-car"],
+)
+def test_how_the_narrator_travels_is_no_road_user(text):
+    kinds = _kinds(text)
+    assert len(kinds) == 1 and kinds[0] in ("bicycle", "pedestrian")
+
+
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("I was hit by a car pulling out from the left; I was doing 20 km/h.", "car"),
+        ("I was overtaken by van at 80 km/h which then cut in front of me; ego 60 km/h.", "van"),
+    ],
+    ids=["hit-by-a-car", "overtaken-by-van"],
+)
+def test_a_vehicle_that_acts_after_by_is_a_road_user(text, kind):
+    assert kind in _kinds(text)
+
+
+# --- a place named after a vehicle is no road user -------------------------------------------------------
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("A bus ahead of us pulls in hard at the bus stop; we were at 40 km/h.", "truck"),
+        ("A van pulls out of the car park on the left in front of us; ego 30 km/h.", "van"),
+        ("A cyclist leaves the bike rack and crosses in front of us from the right; ego 20 km/h.", "bicycle"),
+        ("A car swerves out of the bus lane on the left into our lane; ego 50 km/h.", "car"),
+        ("A pedestrian steps out of the scooter lane on the right in front of us; ego 30 km/h.", "pedestrian"),
+    ],
+    ids=["bus-stop", "car-park", "bike-rack", "bus-lane", "scooter-lane"],
+)
+def test_a_place_named_after_a_vehicle_is_no_road_user(text, kind):
+    assert _kinds(text) == [kind]
+
+
+def test_a_person_target_stays_a_person():
+    assert _kinds("Ego at 30 km/h; a child pedestrian target crosses from the right in front of the ego.") == [
+        "pedestrian"
+    ]
+
+
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("A van pulls out of the taxi rank on the right in front of us; ego 30 km/h.", "van"),
+        ("A jogger runs out from behind the bus shelter on the left in front of us; ego 30 km/h.", "pedestrian"),
+        ("A car leaves the truck depot on the right and pulls out in front of us; ego 40 km/h.", "car"),
+    ],
+    ids=["taxi-rank", "bus-shelter", "truck-depot"],
+)
+def test_a_place_for_vehicles_names_no_road_user(text, kind):
+    assert _kinds(text) == [kind]
+
+
+def test_a_place_named_by_a_vehicle_keeps_its_own_reading():
+    """ "the bus stops" is a bus and its verb; "a bus stop" a place where a bus stops."""
+    assert _kinds("The bus ahead of us stops suddenly; we were at 40 km/h.") == ["truck"]
+
+
+def test_a_vehicle_by_a_place_is_a_place_not_a_mode():
+    assert _kinds("A man waiting by bus stop 4 steps out in front of us from the left; ego 30 km/h.") == ["pedestrian"]
+
+
+# --- a person "in" or "on" a two-wheeler, the article left out, rides it ----------------------------------
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("One woman in electric scooter come from the pavement of right side and cross in front of me.", "e-scooter"),
+        ("A boy in bicycle came from the left side and crossed in front of my car, I was going 30 km/h.", "bicycle"),
+        ("A man on e-scooter comes out from the sidewalk on the left and crosses in front of us.", "e-scooter"),
+        ("One girl in a bicycle cross the road in front of me from the right side.", "bicycle"),
+    ],
+    ids=["in-electric-scooter", "in-bicycle", "on-e-scooter", "in-a-bicycle"],
+)  # fmt: skip
+def test_a_person_in_or_on_a_two_wheeler_rides_it(text, kind):
+    assert _kinds(text) == [kind]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A man in bike gear steps off the kerb on the left in front of us; ego 30 km/h.",
+        "A child in a bicycle helmet walks out from the right in front of us; ego 30 km/h.",
+    ],
+    ids=["bike-gear", "bicycle-helmet"],
+)
+def test_a_person_in_something_named_after_a_two_wheeler_walks(text):
+    assert _kinds(text) == ["pedestrian"]
+
+
+# --- the other ways people get about ---------------------------------------------------------------------
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("A 7.5-tonner ahead of us brakes hard; we were at 50 km/h.", "truck"),
+        ("One of those 44-tonners in the left lane moves into our lane; ego 80 km/h.", "truck"),
+        ("A man on a mobility scooter crosses from the left in front of us; ego 20 km/h.", "pedestrian"),
+        ("A rollerblader comes off the pavement on the right and crosses in front of us; ego 20 km/h.", "pedestrian"),
+        ("An inline skater crosses in front of us from the left; ego 25 km/h.", "pedestrian"),
+        ("A kid on a hoverboard shoots out from the right in front of us; ego 20 km/h.", "e-scooter"),
+        ("A segway rider crosses in front of us from the left; ego 20 km/h.", "e-scooter"),
+        ("A motorhome ahead of us brakes hard; we were at 60 km/h.", "van"),
+        ("A unicyclist crosses in front of us from the right; ego 20 km/h.", "bicycle"),
+    ],
+    ids=["7.5-tonner", "44-tonners", "mobility-scooter", "rollerblader", "inline-skater", "hoverboard", "segway",
+         "motorhome", "unicyclist"],
+)  # fmt: skip
+def test_other_ways_of_getting_about(text, kind):
+    assert _kinds(text) == [kind]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A woman in a wheelchair crosses from the left in front of us; ego 20 km/h.",
+        "An old man on a mobility scooter comes off the kerb on the right in front of us; ego 20 km/h.",
+        "A girl on a pony crosses from the left in front of us; ego 20 km/h.",
+    ],
+    ids=["wheelchair", "mobility-scooter", "pony"],
+)
+def test_a_person_on_what_goes_at_a_walkers_pace_is_one_walker(text):
+    assert _kinds(text) == ["pedestrian"]
