@@ -564,3 +564,27 @@ def test_passing_the_ego_to_turn_across_its_path_is_the_turn(text):
 )
 def test_an_overtake_with_no_turn_after_it_stays(text, names):
     assert _behaviours(text) == names
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "The minibus in front of us stopped abruptly outside the school.",
+        "A cyclist ahead of me pulled up sharply at the junction.",
+        "The hatchback ahead abruptly stopped in the middle of the road.",
+        "In front of us the delivery van halted very sudden at the corner.",
+    ],
+)
+def test_a_stop_made_hard_or_abruptly_is_a_sudden_stop(text):
+    assert _behaviours(text) == ["sudden_stop"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "The minibus in front of us stopped gently outside the school.",
+        "The hatchback ahead stopped at the lights and then pulled away abruptly.",
+    ],
+)
+def test_a_stop_with_no_hard_manner_of_its_own_is_a_stop(text):
+    assert _behaviours(text)[0] == "stop"

@@ -1035,8 +1035,9 @@ def chains(clauses: list, tokens: list[str]) -> list:
     what the weather does as no one's behaviour (:func:`weather_not_behaviour`), "makes a left" as
     turning left (:func:`a_left_or_a_right`), a move across made to turn as the turn
     (:func:`across_to_turn`); and who stands in the way, for a cut-out (:func:`parked_in_the_lane`,
-    :func:`there_is_a_new_one`); "no room to stop" as nobody's stop (:func:`room_to_act_not_behaviour`)."""
-    clauses = weather_not_behaviour(room_to_act_not_behaviour(clauses, tokens))
+    :func:`there_is_a_new_one`); "no room to stop" as nobody's stop (:func:`room_to_act_not_behaviour`); a stop
+    made abruptly as a sudden stop (:func:`hard_stops`)."""
+    clauses = hard_stops(weather_not_behaviour(room_to_act_not_behaviour(clauses, tokens)), tokens)
     clauses = across_to_turn(a_left_or_a_right(clauses, tokens))
     clauses = there_is_a_new_one(parked_in_the_lane(state_before_its_noun(clauses, tokens), tokens), tokens)
     clauses = passes_while_the_ego_yields(follows_the_ego(clauses, tokens))
@@ -1156,5 +1157,50 @@ def passes_while_the_ego_yields(clauses: list) -> list:
                 kept.append(replace(m, value=("keep_going", {**m.value[1], "_has_way": 1.0})))
                 continue
             kept.append(m)
+        out.append((link, kept))
+    return out
+
+
+#: Adverbs of a hard or sudden manner ("abruptly", "sharply"); their adjective said as an adverb
+#: ("stopped very sudden", "braked strong"), as second-language writers often do, says the same.
+_HARD_MANNER = frozenset(("abruptly", "suddenly", "sharply", "harshly", "violently", "strongly", "hard", "dead"))
+#: Words that only make the adverb after them stronger ("very abruptly").
+_INTENSIFIERS = frozenset(("very", "really", "so", "quite", "extremely", "too", "rather"))
+#: Verbs of stopping (lemmas) a stationary mention may be said with ("stopped", not "parked").
+_STOP_VERBS = frozenset(("stop", "halt"))
+
+
+def _hard_manner(word: str) -> bool:
+    """Whether ``word`` says a hard or sudden manner, as its adverb or its adjective ("abrupt")."""
+    return word in _HARD_MANNER or f"{word}ly" in _HARD_MANNER
+
+
+def _stopping(m) -> bool:
+    """Whether mention ``m`` is a road user's plain stop: the behaviour, or "stopped" read as a state."""
+    if m.slot == "behaviour":
+        return m.value[0] == "stop" and m.prev not in _DENYING
+    verb = m.words.split()[-1]
+    stops = bool(set(lemmas(verb).get("VERB", ())) & _STOP_VERBS)
+    return m.slot == "stationary" and verb.endswith(("ed", "s")) and stops
+
+
+def hard_stops(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a stop said in a hard or sudden manner ("stopped abruptly", "abruptly stopped",
+    "stopped very sudden") read as the sudden stop it is: the adverb right before the verb, or right
+    after it (past an intensifier), is how that stop is made. An adverb further on belongs to the next
+    verb ("stopped, then pulled away abruptly")."""
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k, m in enumerate(kept):
+            if not _stopping(m):
+                continue
+            j = m.end
+            while j < len(tokens) and tokens[j] in _INTENSIFIERS:
+                j += 1
+            after = j < len(tokens) and _hard_manner(tokens[j])
+            before = m.start > 0 and _hard_manner(tokens[m.start - 1]) and tokens[m.start - 1] != "dead"
+            if after or before:
+                kept[k] = replace(m, slot="behaviour", value=("sudden_stop", {}))
         out.append((link, kept))
     return out
