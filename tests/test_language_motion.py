@@ -588,3 +588,27 @@ def test_a_stop_made_hard_or_abruptly_is_a_sudden_stop(text):
 )
 def test_a_stop_with_no_hard_manner_of_its_own_is_a_stop(text):
     assert _behaviours(text)[0] == "stop"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "On the motorway the white car in the lane beside us switched to our lane just ahead.",
+        "On the dual carriageway the coach in the right lane is moving to my lane without signalling.",
+        "Doing 70 mph, a pickup from the next lane changed to my lane a few metres ahead.",
+        "On the motorway a hatchback in the next lane was drifting over to our lane.",
+    ],
+)
+def test_a_move_to_the_ego_lane_is_a_cut_in(text):
+    assert _behaviours(text) == ["cut_in"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "On the motorway the white car in the lane beside us switched to the left lane.",
+        "On the dual carriageway the coach is moving to the inside lane.",
+    ],
+)
+def test_a_move_to_a_lane_not_the_ego_s_is_a_lane_change(text):
+    assert _behaviours(text) == ["change_lane"]

@@ -734,6 +734,10 @@ def _before_the_ego(tokens: list[str], j: int) -> bool:
     return False
 
 
+#: Forms of "be" that make an "-ing" verb after them the finite verb ("is moving", "was drifting").
+_BE = frozenset(("is", "was", "are", "were", "'s", "be", "been"))
+
+
 def into_a_lane(clauses: list, tokens: list[str]) -> list:
     """``clauses`` with a plain verb of motion whose destination is a lane ("goes over to the next
     lane", "moved from lane 1 into lane 2", "heads into another lane") read as the move it is: into
@@ -751,7 +755,8 @@ def into_a_lane(clauses: list, tokens: list[str]) -> list:
             plain = m.slot == "ego_verb" or (m.slot == "behaviour" and m.value[0] in _PLAIN_MOVES)
             plain = plain or (m.slot == "unknown_verb" and bool(set(lemmas(m.words).get("VERB", ())) & _MOVE_VERBS))
             across = m.slot == "behaviour" and m.value[0] in ("cross_in_front", "change_lane")  # (into ours: a cut-in)
-            if not (plain or across) or m.words.split()[0].endswith("ing"):
+            progressive = m.start > 0 and tokens[m.start - 1] in _BE  # ("is moving to my lane": a move under way)
+            if not (plain or across) or (m.words.split()[0].endswith("ing") and not progressive):
                 continue  # ("travelling in lane 2": where it goes along, not a move)
             j = m.end
             while j < len(tokens) and tokens[j] in _ON_THE_WAY:
@@ -770,8 +775,9 @@ def into_a_lane(clauses: list, tokens: list[str]) -> list:
                 continue
             end, own, number = lane
             ours = own or (number and number in ego_lanes) or _before_the_ego(tokens, end)
-            if across and not (ours and (not own or m.value[0] == "cross_in_front")):
-                continue  # (a lane change "into my lane" is :func:`into_the_ego_lane`'s to read)
+            into = across and m.value[0] == "change_lane" and own and m.words.split()[-1] == "into"
+            if across and (not ours or into):
+                continue  # (not the ego's lane: it stays; "swerves into my lane": :func:`into_the_ego_lane`'s)
             name = "cut_in" if ours else "change_lane"
             kept[k] = replace(m, slot="behaviour", value=(name, {}))
             used |= {x for x in range(k + 1, len(kept)) if kept[x].slot == "member" and kept[x].start < end}
