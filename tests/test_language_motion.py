@@ -612,3 +612,27 @@ def test_a_move_to_the_ego_lane_is_a_cut_in(text):
 )
 def test_a_move_to_a_lane_not_the_ego_s_is_a_lane_change(text):
     assert _behaviours(text) == ["change_lane"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "On a narrow lane a tractor came round the corner on my side of the road.",
+        "A hatchback came over the crest on our side of the road at speed.",
+        "A minibus was coming down the hill in my lane.",
+    ],
+)
+def test_coming_along_on_the_ego_side_of_the_road_is_head_on(text):
+    assert _behaviours(text) == ["wrong_way"]
+
+
+@pytest.mark.parametrize(
+    "text, names",
+    [
+        ("A hatchback came up behind us in our lane.", {"keep_going", "follow_vehicle", "along_road", "keep_lane"}),
+        ("A minibus came into my lane from the slip road.", {"cut_in"}),
+        ("A hatchback overtook us and then came in our lane.", {"overtake", "cut_in"}),
+    ],
+)
+def test_coming_up_behind_or_into_the_ego_lane_is_not_head_on(text, names):
+    assert set(_behaviours(text)) <= names

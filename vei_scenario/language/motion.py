@@ -1042,11 +1042,12 @@ def chains(clauses: list, tokens: list[str]) -> list:
     turning left (:func:`a_left_or_a_right`), a move across made to turn as the turn
     (:func:`across_to_turn`); and who stands in the way, for a cut-out (:func:`parked_in_the_lane`,
     :func:`there_is_a_new_one`); "no room to stop" as nobody's stop (:func:`room_to_act_not_behaviour`); a stop
-    made abruptly as a sudden stop (:func:`hard_stops`)."""
+    made abruptly as a sudden stop (:func:`hard_stops`); one coming along in the ego's lane as coming
+    at it (:func:`coming_in_the_ego_lane`)."""
     clauses = hard_stops(weather_not_behaviour(room_to_act_not_behaviour(clauses, tokens)), tokens)
     clauses = across_to_turn(a_left_or_a_right(clauses, tokens))
     clauses = there_is_a_new_one(parked_in_the_lane(state_before_its_noun(clauses, tokens), tokens), tokens)
-    clauses = passes_while_the_ego_yields(follows_the_ego(clauses, tokens))
+    clauses = coming_in_the_ego_lane(passes_while_the_ego_yields(follows_the_ego(clauses, tokens)))
     return slowing_into_a_stop(lets_the_ego_go(into_a_lane(clauses, tokens), tokens))
 
 
@@ -1208,5 +1209,42 @@ def hard_stops(clauses: list, tokens: list[str]) -> list:
             before = m.start > 0 and _hard_manner(tokens[m.start - 1]) and tokens[m.start - 1] != "dead"
             if after or before:
                 kept[k] = replace(m, slot="behaviour", value=("sudden_stop", {}))
+        out.append((link, kept))
+    return out
+
+
+#: Prepositions that put a road user in a lane or on a side of the road, not into it.
+_IN_OR_ON = frozenset(("in", "on", "down", "along", "up"))
+
+
+def coming_in_the_ego_lane(clauses: list) -> list:
+    """``clauses`` with a road user that "comes" along in the ego's own lane or on its side of the road
+    ("a tractor came round the corner on my side of the road", "a van was coming down the hill in my
+    lane") read as coming towards the ego: "come" is motion towards the one telling, and in the ego's
+    lane that is head-on. Coming up behind, or into the lane, is not: any other place said in the
+    clause ("behind us", "from the right") or "into" keeps the verb a plain going on; so does a pass
+    said before it ("overtook me, then came in my lane": going the ego's way, it cuts back in)."""
+    out = []
+    passed = False
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k, m in enumerate(mentions):
+            passed = passed or passes(m) or (m.slot == "relation" and m.value == "behind")
+            if passed or not (m.slot == "behaviour" and m.value[0] == "keep_going"):
+                continue
+            if "come" not in lemmas(m.words.split()[0]).get("VERB", ()):
+                continue
+            subject = next((x for x in reversed(mentions[:k]) if x.slot in ("actor", "pronoun")), None)
+            if subject is None or subject.value == "ego":
+                continue
+            places = [x for x in mentions[k + 1 :] if x.slot in ("relation", "side", "lane_side", "kerb", "arm")]
+            lane = next((x for x in places if x.slot == "relation" and in_the_ego_lane(x.words)), None)
+            if lane is None or lane.words.split()[0] not in _IN_OR_ON:
+                continue
+            if any(x.slot != "relation" or x.value not in ("ahead", "oncoming") for x in places):
+                continue  # ("came up behind us in our lane", "came from the left into my lane")
+            towards = replace(lane, value="oncoming", words="towards")
+            kept.insert(kept.index(lane), towards)
+            break
         out.append((link, kept))
     return out
