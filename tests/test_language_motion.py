@@ -636,3 +636,46 @@ def test_coming_along_on_the_ego_side_of_the_road_is_head_on(text):
 )
 def test_coming_up_behind_or_into_the_ego_lane_is_not_head_on(text, names):
     assert set(_behaviours(text)) <= names
+
+
+@pytest.mark.parametrize(
+    "text, turn",
+    [
+        ("At the crossroads the minibus in front of me turned to its right.", "right"),
+        ("At the junction a pickup ahead of us turns to the left without indicating.", "left"),
+        ("At the lights the hatchback ahead was turning to his left.", "left"),
+    ],
+)
+def test_turning_to_a_side_is_a_turn_that_way(text, turn):
+    (actor,) = read(text).actors
+    assert [b[0] for b in actor.behaviours] == ["forced_turn"]
+    assert actor.behaviours[0][1].get("turn") == turn
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "At the crossroads the minibus in front of me moved to the left lane.",
+        "At the junction the pickup ahead of us pulled over to the left.",
+    ],
+)
+def test_a_lane_or_a_pull_to_a_side_is_no_turn(text):
+    assert "forced_turn" not in _behaviours(text)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "At the crossroads a minibus coming towards me turned to its left across my path.",
+        "At the lights a hatchback coming the other way turned right across our path.",
+        "At the junction an oncoming pickup swung right across my way.",
+    ],
+)
+def test_an_oncoming_turn_said_across_the_ego_path_is_the_turn_across(text):
+    assert _behaviours(text) == ["turn_across"]
+
+
+def test_an_oncoming_turn_away_from_the_ego_path_stays_a_turn():
+    assert _behaviours("At the lights a hatchback coming the other way turned right into a side street.") != [
+        "turn_across"
+    ]

@@ -1045,7 +1045,7 @@ def chains(clauses: list, tokens: list[str]) -> list:
     made abruptly as a sudden stop (:func:`hard_stops`); one coming along in the ego's lane as coming
     at it (:func:`coming_in_the_ego_lane`)."""
     clauses = hard_stops(weather_not_behaviour(room_to_act_not_behaviour(clauses, tokens)), tokens)
-    clauses = across_to_turn(a_left_or_a_right(clauses, tokens))
+    clauses = across_to_turn(turning_to_a_side(a_left_or_a_right(clauses, tokens), tokens))
     clauses = there_is_a_new_one(parked_in_the_lane(state_before_its_noun(clauses, tokens), tokens), tokens)
     clauses = coming_in_the_ego_lane(passes_while_the_ego_yields(follows_the_ego(clauses, tokens)))
     return slowing_into_a_stop(lets_the_ego_go(into_a_lane(clauses, tokens), tokens))
@@ -1246,5 +1246,61 @@ def coming_in_the_ego_lane(clauses: list) -> list:
             towards = replace(lane, value="oncoming", words="towards")
             kept.insert(kept.index(lane), towards)
             break
+        out.append((link, kept))
+    return out
+
+
+#: Words that own a way as the ego's, before "path", "way" or "lane" ("across my path", "the ego's way").
+_ACROSS_WAYS = frozenset(("path", "way", "lane", "lanes", "side"))
+
+
+def _across_the_ego(tokens: list[str], j: int) -> bool:
+    """Whether "across" + the ego's path, way or lane is said from ``tokens[j]`` ("across my path",
+    "straight across our way", "across the ego's lane")."""
+    while j < len(tokens) and tokens[j] in ("straight", "right", "directly", "just"):
+        j += 1
+    if j >= len(tokens) or tokens[j] != "across":
+        return False
+    said = " ".join(tokens[j + 1 : j + 5]).replace(" 's", "'s").split()
+    for n, owner in enumerate(said[:3]):
+        if owner in _EGO_OWNER_WORDS and n + 1 < len(said) and said[n + 1] in _ACROSS_WAYS:
+            return n == 0 or said[:n] == ["the"]
+    return False
+
+
+def turning_to_a_side(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with "turn to its left / to the right" read as turning that way, as "turns left" is
+    (the side after "to" and a possessive or article is where the turn goes; "to the left lane" is a
+    lane, no turn); and a turn said across the ego's path ("turned right across our path", "swung
+    left across my way") by a road user said to come the other way read as the turn across the
+    ego's path: "across" the ego's path says the turn crosses it, whichever side the writer's traffic
+    keeps to (a turn to the far side the reader already reads so, with where it comes from)."""
+
+    def rule(k: int, m, mentions: list):
+        verb = m.words.split()[0]
+        if m.slot in ("behaviour", "unknown_verb", "ego_verb", "turn") and "turn" in lemmas(verb).get("VERB", ()):
+            j = m.start + 1
+            side = tokens[j + 2] if j + 2 < len(tokens) else ""
+            after = tokens[j + 3] if j + 3 < len(tokens) else ""
+            if tokens[j : j + 1] == ["to"] and tokens[j + 1] in _POSSESSIVE | {"the"} and side in ("left", "right"):
+                if after not in _NOT_A_TURN:
+                    return replace(m, slot="turn", value=side, words=" ".join(tokens[m.start : j + 3]), end=j + 3)
+        return None
+
+    clauses = _rewrite(clauses, rule)
+    across = turn_across_side(" ".join(tokens))
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k, m in enumerate(kept):
+            turning = m.slot == "turn" or (m.slot == "behaviour" and m.value[0] == "forced_turn")
+            if not turning or (m.value if m.slot == "turn" else m.value[1].get("turn")) == across:
+                continue
+            if not _across_the_ego(tokens, m.end):
+                continue  # (the turn to the far side: the reader makes it the turn across, with its arm)
+            subject = next((x for x in reversed(kept[:k]) if x.slot in ("actor", "pronoun") and x.value != "ego"), None)
+            towards = any(x.slot == "relation" and x.value == "oncoming" for x in kept[:k])
+            if subject is not None and towards:
+                kept[k] = replace(m, slot="behaviour", value=("turn_across", {}))
         out.append((link, kept))
     return out
