@@ -679,3 +679,30 @@ def test_an_oncoming_turn_away_from_the_ego_path_stays_a_turn():
     assert _behaviours("At the lights a hatchback coming the other way turned right into a side street.") != [
         "turn_across"
     ]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist suddenly rode out from between two parked vans just ahead of us.",
+        "A lad on an e-scooter came straight out into the street in front of me.",
+        "A jogger went out into the road from behind a parked lorry.",
+    ],
+)
+def test_a_walker_or_rider_out_into_the_road_crosses_it(text):
+    assert read(text).actors[0].behaviours[0][0] == "cross_in_front"
+
+
+def test_a_vehicle_out_into_the_road_pulls_out():
+    assert _behaviours("A hatchback drove out into the road just ahead of us.") == ["cut_in"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist rode out in the middle of the road ahead of us.",
+        "A cyclist rode out of the village on the road ahead of us.",
+    ],
+)
+def test_riding_out_in_the_road_is_no_crossing(text):
+    assert "cross_in_front" not in _behaviours(text)

@@ -1048,6 +1048,7 @@ def chains(clauses: list, tokens: list[str]) -> list:
     clauses = across_to_turn(turning_to_a_side(a_left_or_a_right(clauses, tokens), tokens))
     clauses = there_is_a_new_one(parked_in_the_lane(state_before_its_noun(clauses, tokens), tokens), tokens)
     clauses = coming_in_the_ego_lane(passes_while_the_ego_yields(follows_the_ego(clauses, tokens)))
+    clauses = out_into_the_road(clauses, tokens)
     return slowing_into_a_stop(lets_the_ego_go(into_a_lane(clauses, tokens), tokens))
 
 
@@ -1302,5 +1303,52 @@ def turning_to_a_side(clauses: list, tokens: list[str]) -> list:
             towards = any(x.slot == "relation" and x.value == "oncoming" for x in kept[:k])
             if subject is not None and towards:
                 kept[k] = replace(m, slot="behaviour", value=("turn_across", {}))
+        out.append((link, kept))
+    return out
+
+
+#: Words of the carriageway a road user comes out into ("out into the road").
+_CARRIAGEWAY = frozenset(("road", "street", "carriageway", "roadway", "traffic"))
+#: Where a road user comes out from that hides it at the side ("out from between", "out from behind").
+_FROM_HIDING = frozenset(("between", "behind"))
+#: Adverbs that may stand between the verb and "out" ("came straight out", "rode suddenly out").
+_BEFORE_OUT = frozenset(("straight", "suddenly", "right", "just", "quickly", "then"))
+#: Road users that cross a road they come out into (a vehicle pulls out into it).
+_CROSSERS = frozenset(("pedestrian", "bicycle", "e-scooter"))
+
+
+def _out_into_the_road(tokens: list[str], j: int) -> int | None:
+    """Where "out into the road" / "out from between ..." / "out from behind ..." said from
+    ``tokens[j]`` ends (past "out" and its preposition), or None."""
+    while j < len(tokens) and tokens[j] in _BEFORE_OUT:
+        j += 1
+    if tokens[j : j + 1] != ["out"]:
+        return None
+    nxt = tokens[j + 1 : j + 4]
+    if nxt[:1] in (["into"], ["onto"]) and len(nxt) > 2 and nxt[1] in _DETERMINERS and nxt[2] in _CARRIAGEWAY:
+        return j + 2
+    if nxt[:1] == ["from"] and len(nxt) > 1 and nxt[1] in _FROM_HIDING:
+        return j + 2
+    return None
+
+
+def out_into_the_road(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a plain verb of motion + "out into the road" or "out from between / behind"
+    (parked vehicles) read as coming out onto the road in front of the ego, whatever the verb ("rode
+    out from between two vans", "came straight out into the street", "went out into the road"): a
+    walker or rider crosses it, a vehicle pulls out into it. "Out in the road" is where one rides,
+    not a move out."""
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k, m in enumerate(kept):
+            plain = m.slot == "ego_verb" or (m.slot == "behaviour" and m.value[0] in _PLAIN_MOVES | {"along_road"})
+            if not plain or _out_into_the_road(tokens, m.end) is None:
+                continue
+            subject = next((x for x in reversed(kept[:k]) if x.slot == "actor"), None)
+            if subject is None or subject.value == "ego":
+                continue
+            name = "cross_in_front" if subject.value in _CROSSERS else "cut_in"
+            kept[k] = replace(m, slot="behaviour", value=(name, {}))
         out.append((link, kept))
     return out
