@@ -706,3 +706,26 @@ def test_a_vehicle_out_into_the_road_pulls_out():
 )
 def test_riding_out_in_the_road_is_no_crossing(text):
     assert "cross_in_front" not in _behaviours(text)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A jogger stepped off the kerb in front of my car. Braked hard, just missed her.",
+        "A courier on a bike cut across in front of my taxi. Slammed on, stopped a metre short.",
+        "A lad on a scooter came off the pavement in front of my van. Stopped sharply.",
+    ],
+)
+def test_a_verb_with_no_subject_in_the_narrator_s_story_is_the_narrator_s(text):
+    assert "sudden_stop" not in _behaviours(text)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A jogger stepped off the kerb in front of my car and then braked hard.",
+        "The bus in front of my car braked hard.",
+    ],
+)
+def test_a_verb_said_of_the_road_user_in_the_narrator_s_story_stays_its_own(text):
+    assert "sudden_stop" in _behaviours(text)

@@ -1352,3 +1352,15 @@ def out_into_the_road(clauses: list, tokens: list[str]) -> list:
             kept[k] = replace(m, slot="behaviour", value=(name, {}))
         out.append((link, kept))
     return out
+
+
+#: Words of the one telling the story.
+_FIRST_PERSON = frozenset(("i", "we", "me", "my", "us", "our", "i'm", "i've", "i'd", "we're"))
+
+
+def told_in_the_first_person(text: str, tokens: list[str]) -> bool:
+    """Whether ``text`` is the narrator's own story: it says "I", "we", "my" ... as written (the
+    reader's ``tokens`` have "my car" already read as the ego), or opens as a diary without its "I"
+    (:func:`diary`). A verb with no subject in such a story is the narrator's ("Braked hard.")."""
+    said = set(re.findall(r"[a-z']+", text.lower()))
+    return bool(_FIRST_PERSON & (said | set(tokens))) or diary(tokens)
