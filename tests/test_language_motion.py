@@ -729,3 +729,26 @@ def test_a_verb_with_no_subject_in_the_narrator_s_story_is_the_narrator_s(text):
 )
 def test_a_verb_said_of_the_road_user_in_the_narrator_s_story_stays_its_own(text):
     assert "sudden_stop" in _behaviours(text)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "At the crossroads a cyclist from the left passed in front of us.",
+        "A pedestrian passes in front of the ego at the zebra.",
+        "At the junction a boy on a scooter passed right in front of my bonnet from the right.",
+    ],
+)
+def test_passing_in_front_of_the_ego_with_no_object_crosses_its_path(text):
+    assert read(text).actors[0].behaviours[0][0] != "overtake"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A van passed us and pulled in front of us.",
+        "A motorbike passes the ego and cuts in front of it.",
+    ],
+)
+def test_passing_the_ego_then_in_front_stays_an_overtake(text):
+    assert _behaviours(text)[0] == "overtake"

@@ -1048,7 +1048,7 @@ def chains(clauses: list, tokens: list[str]) -> list:
     clauses = across_to_turn(turning_to_a_side(a_left_or_a_right(clauses, tokens), tokens))
     clauses = there_is_a_new_one(parked_in_the_lane(state_before_its_noun(clauses, tokens), tokens), tokens)
     clauses = coming_in_the_ego_lane(passes_while_the_ego_yields(follows_the_ego(clauses, tokens)))
-    clauses = out_into_the_road(clauses, tokens)
+    clauses = passing_in_front(out_into_the_road(clauses, tokens), tokens)
     return slowing_into_a_stop(lets_the_ego_go(into_a_lane(clauses, tokens), tokens))
 
 
@@ -1364,3 +1364,32 @@ def told_in_the_first_person(text: str, tokens: list[str]) -> bool:
     (:func:`diary`). A verb with no subject in such a story is the narrator's ("Braked hard.")."""
     said = set(re.findall(r"[a-z']+", text.lower()))
     return bool(_FIRST_PERSON & (said | set(tokens))) or diary(tokens)
+
+
+#: Adverbs that may stand between a verb and "in front of" ("passed right in front of us").
+_CLOSE = frozenset(("right", "just", "directly", "straight", "immediately"))
+
+
+def passing_in_front(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a verb of passing that has no object and goes on "in front of" the ego ("a
+    cyclist passed in front of us", "passes right in front of my bonnet") read as crossing the ego's
+    path: an overtake takes the one it passes as its object ("passed us"); passing in front of it,
+    a road user goes across where the ego is heading."""
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k, m in enumerate(kept):
+            if not passes(m) or len(m.words.split()) != 1:
+                continue
+            j = m.end
+            while j < len(tokens) and tokens[j] in _CLOSE:
+                j += 1
+            if tokens[j : j + 3] != ["in", "front", "of"]:
+                continue
+            rest = tokens[j + 3 : j + 7]
+            named = bool(rest[:1]) and rest[0] in _EGO_WORDS | {"my", "our"} or rest[:2] == ["the", "ego"]
+            ego = next((x for x in kept[k + 1 :] if x.slot in ("actor", "pronoun")), None)
+            if named or (ego is not None and ego.value == "ego" and ego.start <= j + 5):
+                kept[k] = replace(m, value=("cross_in_front", {}))
+        out.append((link, kept))
+    return out
