@@ -564,3 +564,191 @@ def test_passing_the_ego_to_turn_across_its_path_is_the_turn(text):
 )
 def test_an_overtake_with_no_turn_after_it_stays(text, names):
     assert _behaviours(text) == names
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "The minibus in front of us stopped abruptly outside the school.",
+        "A cyclist ahead of me pulled up sharply at the junction.",
+        "The hatchback ahead abruptly stopped in the middle of the road.",
+        "In front of us the delivery van halted very sudden at the corner.",
+    ],
+)
+def test_a_stop_made_hard_or_abruptly_is_a_sudden_stop(text):
+    assert _behaviours(text) == ["sudden_stop"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "The minibus in front of us stopped gently outside the school.",
+        "The hatchback ahead stopped at the lights and then pulled away abruptly.",
+    ],
+)
+def test_a_stop_with_no_hard_manner_of_its_own_is_a_stop(text):
+    assert _behaviours(text)[0] == "stop"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "On the motorway the white car in the lane beside us switched to our lane just ahead.",
+        "On the dual carriageway the coach in the right lane is moving to my lane without signalling.",
+        "Doing 70 mph, a pickup from the next lane changed to my lane a few metres ahead.",
+        "On the motorway a hatchback in the next lane was drifting over to our lane.",
+    ],
+)
+def test_a_move_to_the_ego_lane_is_a_cut_in(text):
+    assert _behaviours(text) == ["cut_in"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "On the motorway the white car in the lane beside us switched to the left lane.",
+        "On the dual carriageway the coach is moving to the inside lane.",
+    ],
+)
+def test_a_move_to_a_lane_not_the_ego_s_is_a_lane_change(text):
+    assert _behaviours(text) == ["change_lane"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "On a narrow lane a tractor came round the corner on my side of the road.",
+        "A hatchback came over the crest on our side of the road at speed.",
+        "A minibus was coming down the hill in my lane.",
+    ],
+)
+def test_coming_along_on_the_ego_side_of_the_road_is_head_on(text):
+    assert _behaviours(text) == ["wrong_way"]
+
+
+@pytest.mark.parametrize(
+    "text, names",
+    [
+        ("A hatchback came up behind us in our lane.", {"keep_going", "follow_vehicle", "along_road", "keep_lane"}),
+        ("A minibus came into my lane from the slip road.", {"cut_in"}),
+        ("A hatchback overtook us and then came in our lane.", {"overtake", "cut_in"}),
+    ],
+)
+def test_coming_up_behind_or_into_the_ego_lane_is_not_head_on(text, names):
+    assert set(_behaviours(text)) <= names
+
+
+@pytest.mark.parametrize(
+    "text, turn",
+    [
+        ("At the crossroads the minibus in front of me turned to its right.", "right"),
+        ("At the junction a pickup ahead of us turns to the left without indicating.", "left"),
+        ("At the lights the hatchback ahead was turning to his left.", "left"),
+    ],
+)
+def test_turning_to_a_side_is_a_turn_that_way(text, turn):
+    (actor,) = read(text).actors
+    assert [b[0] for b in actor.behaviours] == ["forced_turn"]
+    assert actor.behaviours[0][1].get("turn") == turn
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "At the crossroads the minibus in front of me moved to the left lane.",
+        "At the junction the pickup ahead of us pulled over to the left.",
+    ],
+)
+def test_a_lane_or_a_pull_to_a_side_is_no_turn(text):
+    assert "forced_turn" not in _behaviours(text)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "At the crossroads a minibus coming towards me turned to its left across my path.",
+        "At the lights a hatchback coming the other way turned right across our path.",
+        "At the junction an oncoming pickup swung right across my way.",
+    ],
+)
+def test_an_oncoming_turn_said_across_the_ego_path_is_the_turn_across(text):
+    assert _behaviours(text) == ["turn_across"]
+
+
+def test_an_oncoming_turn_away_from_the_ego_path_stays_a_turn():
+    assert _behaviours("At the lights a hatchback coming the other way turned right into a side street.") != [
+        "turn_across"
+    ]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist suddenly rode out from between two parked vans just ahead of us.",
+        "A lad on an e-scooter came straight out into the street in front of me.",
+        "A jogger went out into the road from behind a parked lorry.",
+    ],
+)
+def test_a_walker_or_rider_out_into_the_road_crosses_it(text):
+    assert read(text).actors[0].behaviours[0][0] == "cross_in_front"
+
+
+def test_a_vehicle_out_into_the_road_pulls_out():
+    assert _behaviours("A hatchback drove out into the road just ahead of us.") == ["cut_in"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist rode out in the middle of the road ahead of us.",
+        "A cyclist rode out of the village on the road ahead of us.",
+    ],
+)
+def test_riding_out_in_the_road_is_no_crossing(text):
+    assert "cross_in_front" not in _behaviours(text)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A jogger stepped off the kerb in front of my car. Braked hard, just missed her.",
+        "A courier on a bike cut across in front of my taxi. Slammed on, stopped a metre short.",
+        "A lad on a scooter came off the pavement in front of my van. Stopped sharply.",
+    ],
+)
+def test_a_verb_with_no_subject_in_the_narrator_s_story_is_the_narrator_s(text):
+    assert "sudden_stop" not in _behaviours(text)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A jogger stepped off the kerb in front of my car and then braked hard.",
+        "The bus in front of my car braked hard.",
+    ],
+)
+def test_a_verb_said_of_the_road_user_in_the_narrator_s_story_stays_its_own(text):
+    assert "sudden_stop" in _behaviours(text)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "At the crossroads a cyclist from the left passed in front of us.",
+        "A pedestrian passes in front of the ego at the zebra.",
+        "At the junction a boy on a scooter passed right in front of my bonnet from the right.",
+    ],
+)
+def test_passing_in_front_of_the_ego_with_no_object_crosses_its_path(text):
+    assert read(text).actors[0].behaviours[0][0] != "overtake"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A van passed us and pulled in front of us.",
+        "A motorbike passes the ego and cuts in front of it.",
+    ],
+)
+def test_passing_the_ego_then_in_front_stays_an_overtake(text):
+    assert _behaviours(text)[0] == "overtake"

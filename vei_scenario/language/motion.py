@@ -734,6 +734,10 @@ def _before_the_ego(tokens: list[str], j: int) -> bool:
     return False
 
 
+#: Forms of "be" that make an "-ing" verb after them the finite verb ("is moving", "was drifting").
+_BE = frozenset(("is", "was", "are", "were", "'s", "be", "been"))
+
+
 def into_a_lane(clauses: list, tokens: list[str]) -> list:
     """``clauses`` with a plain verb of motion whose destination is a lane ("goes over to the next
     lane", "moved from lane 1 into lane 2", "heads into another lane") read as the move it is: into
@@ -751,7 +755,8 @@ def into_a_lane(clauses: list, tokens: list[str]) -> list:
             plain = m.slot == "ego_verb" or (m.slot == "behaviour" and m.value[0] in _PLAIN_MOVES)
             plain = plain or (m.slot == "unknown_verb" and bool(set(lemmas(m.words).get("VERB", ())) & _MOVE_VERBS))
             across = m.slot == "behaviour" and m.value[0] in ("cross_in_front", "change_lane")  # (into ours: a cut-in)
-            if not (plain or across) or m.words.split()[0].endswith("ing"):
+            progressive = m.start > 0 and tokens[m.start - 1] in _BE  # ("is moving to my lane": a move under way)
+            if not (plain or across) or (m.words.split()[0].endswith("ing") and not progressive):
                 continue  # ("travelling in lane 2": where it goes along, not a move)
             j = m.end
             while j < len(tokens) and tokens[j] in _ON_THE_WAY:
@@ -770,8 +775,9 @@ def into_a_lane(clauses: list, tokens: list[str]) -> list:
                 continue
             end, own, number = lane
             ours = own or (number and number in ego_lanes) or _before_the_ego(tokens, end)
-            if across and not (ours and (not own or m.value[0] == "cross_in_front")):
-                continue  # (a lane change "into my lane" is :func:`into_the_ego_lane`'s to read)
+            into = across and m.value[0] == "change_lane" and own and m.words.split()[-1] == "into"
+            if across and (not ours or into):
+                continue  # (not the ego's lane: it stays; "swerves into my lane": :func:`into_the_ego_lane`'s)
             name = "cut_in" if ours else "change_lane"
             kept[k] = replace(m, slot="behaviour", value=(name, {}))
             used |= {x for x in range(k + 1, len(kept)) if kept[x].slot == "member" and kept[x].start < end}
@@ -1035,11 +1041,14 @@ def chains(clauses: list, tokens: list[str]) -> list:
     what the weather does as no one's behaviour (:func:`weather_not_behaviour`), "makes a left" as
     turning left (:func:`a_left_or_a_right`), a move across made to turn as the turn
     (:func:`across_to_turn`); and who stands in the way, for a cut-out (:func:`parked_in_the_lane`,
-    :func:`there_is_a_new_one`); "no room to stop" as nobody's stop (:func:`room_to_act_not_behaviour`)."""
-    clauses = weather_not_behaviour(room_to_act_not_behaviour(clauses, tokens))
-    clauses = across_to_turn(a_left_or_a_right(clauses, tokens))
+    :func:`there_is_a_new_one`); "no room to stop" as nobody's stop (:func:`room_to_act_not_behaviour`); a stop
+    made abruptly as a sudden stop (:func:`hard_stops`); one coming along in the ego's lane as coming
+    at it (:func:`coming_in_the_ego_lane`)."""
+    clauses = hard_stops(weather_not_behaviour(room_to_act_not_behaviour(clauses, tokens)), tokens)
+    clauses = across_to_turn(turning_to_a_side(a_left_or_a_right(clauses, tokens), tokens))
     clauses = there_is_a_new_one(parked_in_the_lane(state_before_its_noun(clauses, tokens), tokens), tokens)
-    clauses = passes_while_the_ego_yields(follows_the_ego(clauses, tokens))
+    clauses = coming_in_the_ego_lane(passes_while_the_ego_yields(follows_the_ego(clauses, tokens)))
+    clauses = passing_in_front(out_into_the_road(clauses, tokens), tokens)
     return slowing_into_a_stop(lets_the_ego_go(into_a_lane(clauses, tokens), tokens))
 
 
@@ -1156,5 +1165,231 @@ def passes_while_the_ego_yields(clauses: list) -> list:
                 kept.append(replace(m, value=("keep_going", {**m.value[1], "_has_way": 1.0})))
                 continue
             kept.append(m)
+        out.append((link, kept))
+    return out
+
+
+#: Adverbs of a hard or sudden manner ("abruptly", "sharply"); their adjective said as an adverb
+#: ("stopped very sudden", "braked strong"), as second-language writers often do, says the same.
+_HARD_MANNER = frozenset(("abruptly", "suddenly", "sharply", "harshly", "violently", "strongly", "hard", "dead"))
+#: Words that only make the adverb after them stronger ("very abruptly").
+_INTENSIFIERS = frozenset(("very", "really", "so", "quite", "extremely", "too", "rather"))
+#: Verbs of stopping (lemmas) a stationary mention may be said with ("stopped", not "parked").
+_STOP_VERBS = frozenset(("stop", "halt"))
+
+
+def _hard_manner(word: str) -> bool:
+    """Whether ``word`` says a hard or sudden manner, as its adverb or its adjective ("abrupt")."""
+    return word in _HARD_MANNER or f"{word}ly" in _HARD_MANNER
+
+
+def _stopping(m) -> bool:
+    """Whether mention ``m`` is a road user's plain stop: the behaviour, or "stopped" read as a state."""
+    if m.slot == "behaviour":
+        return m.value[0] == "stop" and m.prev not in _DENYING
+    verb = m.words.split()[-1]
+    stops = bool(set(lemmas(verb).get("VERB", ())) & _STOP_VERBS)
+    return m.slot == "stationary" and verb.endswith(("ed", "s")) and stops
+
+
+def hard_stops(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a stop said in a hard or sudden manner ("stopped abruptly", "abruptly stopped",
+    "stopped very sudden") read as the sudden stop it is: the adverb right before the verb, or right
+    after it (past an intensifier), is how that stop is made. An adverb further on belongs to the next
+    verb ("stopped, then pulled away abruptly")."""
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k, m in enumerate(kept):
+            if not _stopping(m):
+                continue
+            j = m.end
+            while j < len(tokens) and tokens[j] in _INTENSIFIERS:
+                j += 1
+            after = j < len(tokens) and _hard_manner(tokens[j])
+            before = m.start > 0 and _hard_manner(tokens[m.start - 1]) and tokens[m.start - 1] != "dead"
+            if after or before:
+                kept[k] = replace(m, slot="behaviour", value=("sudden_stop", {}))
+        out.append((link, kept))
+    return out
+
+
+#: Prepositions that put a road user in a lane or on a side of the road, not into it.
+_IN_OR_ON = frozenset(("in", "on", "down", "along", "up"))
+
+
+def coming_in_the_ego_lane(clauses: list) -> list:
+    """``clauses`` with a road user that "comes" along in the ego's own lane or on its side of the road
+    ("a tractor came round the corner on my side of the road", "a van was coming down the hill in my
+    lane") read as coming towards the ego: "come" is motion towards the one telling, and in the ego's
+    lane that is head-on. Coming up behind, or into the lane, is not: any other place said in the
+    clause ("behind us", "from the right") or "into" keeps the verb a plain going on; so does a pass
+    said before it ("overtook me, then came in my lane": going the ego's way, it cuts back in)."""
+    out = []
+    passed = False
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k, m in enumerate(mentions):
+            passed = passed or passes(m) or (m.slot == "relation" and m.value == "behind")
+            if passed or not (m.slot == "behaviour" and m.value[0] == "keep_going"):
+                continue
+            if "come" not in lemmas(m.words.split()[0]).get("VERB", ()):
+                continue
+            subject = next((x for x in reversed(mentions[:k]) if x.slot in ("actor", "pronoun")), None)
+            if subject is None or subject.value == "ego":
+                continue
+            places = [x for x in mentions[k + 1 :] if x.slot in ("relation", "side", "lane_side", "kerb", "arm")]
+            lane = next((x for x in places if x.slot == "relation" and in_the_ego_lane(x.words)), None)
+            if lane is None or lane.words.split()[0] not in _IN_OR_ON:
+                continue
+            if any(x.slot != "relation" or x.value not in ("ahead", "oncoming") for x in places):
+                continue  # ("came up behind us in our lane", "came from the left into my lane")
+            towards = replace(lane, value="oncoming", words="towards")
+            kept.insert(kept.index(lane), towards)
+            break
+        out.append((link, kept))
+    return out
+
+
+#: Words that own a way as the ego's, before "path", "way" or "lane" ("across my path", "the ego's way").
+_ACROSS_WAYS = frozenset(("path", "way", "lane", "lanes", "side"))
+
+
+def _across_the_ego(tokens: list[str], j: int) -> bool:
+    """Whether "across" + the ego's path, way or lane is said from ``tokens[j]`` ("across my path",
+    "straight across our way", "across the ego's lane")."""
+    while j < len(tokens) and tokens[j] in ("straight", "right", "directly", "just"):
+        j += 1
+    if j >= len(tokens) or tokens[j] != "across":
+        return False
+    said = " ".join(tokens[j + 1 : j + 5]).replace(" 's", "'s").split()
+    for n, owner in enumerate(said[:3]):
+        if owner in _EGO_OWNER_WORDS and n + 1 < len(said) and said[n + 1] in _ACROSS_WAYS:
+            return n == 0 or said[:n] == ["the"]
+    return False
+
+
+def turning_to_a_side(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with "turn to its left / to the right" read as turning that way, as "turns left" is
+    (the side after "to" and a possessive or article is where the turn goes; "to the left lane" is a
+    lane, no turn); and a turn said across the ego's path ("turned right across our path", "swung
+    left across my way") by a road user said to come the other way read as the turn across the
+    ego's path: "across" the ego's path says the turn crosses it, whichever side the writer's traffic
+    keeps to (a turn to the far side the reader already reads so, with where it comes from)."""
+
+    def rule(k: int, m, mentions: list):
+        verb = m.words.split()[0]
+        if m.slot in ("behaviour", "unknown_verb", "ego_verb", "turn") and "turn" in lemmas(verb).get("VERB", ()):
+            j = m.start + 1
+            side = tokens[j + 2] if j + 2 < len(tokens) else ""
+            after = tokens[j + 3] if j + 3 < len(tokens) else ""
+            if tokens[j : j + 1] == ["to"] and tokens[j + 1] in _POSSESSIVE | {"the"} and side in ("left", "right"):
+                if after not in _NOT_A_TURN:
+                    return replace(m, slot="turn", value=side, words=" ".join(tokens[m.start : j + 3]), end=j + 3)
+        return None
+
+    clauses = _rewrite(clauses, rule)
+    across = turn_across_side(" ".join(tokens))
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k, m in enumerate(kept):
+            turning = m.slot == "turn" or (m.slot == "behaviour" and m.value[0] == "forced_turn")
+            if not turning or (m.value if m.slot == "turn" else m.value[1].get("turn")) == across:
+                continue
+            if not _across_the_ego(tokens, m.end):
+                continue  # (the turn to the far side: the reader makes it the turn across, with its arm)
+            subject = next((x for x in reversed(kept[:k]) if x.slot in ("actor", "pronoun") and x.value != "ego"), None)
+            towards = any(x.slot == "relation" and x.value == "oncoming" for x in kept[:k])
+            if subject is not None and towards:
+                kept[k] = replace(m, slot="behaviour", value=("turn_across", {}))
+        out.append((link, kept))
+    return out
+
+
+#: Words of the carriageway a road user comes out into ("out into the road").
+_CARRIAGEWAY = frozenset(("road", "street", "carriageway", "roadway", "traffic"))
+#: Where a road user comes out from that hides it at the side ("out from between", "out from behind").
+_FROM_HIDING = frozenset(("between", "behind"))
+#: Adverbs that may stand between the verb and "out" ("came straight out", "rode suddenly out").
+_BEFORE_OUT = frozenset(("straight", "suddenly", "right", "just", "quickly", "then"))
+#: Road users that cross a road they come out into (a vehicle pulls out into it).
+_CROSSERS = frozenset(("pedestrian", "bicycle", "e-scooter"))
+
+
+def _out_into_the_road(tokens: list[str], j: int) -> int | None:
+    """Where "out into the road" / "out from between ..." / "out from behind ..." said from
+    ``tokens[j]`` ends (past "out" and its preposition), or None."""
+    while j < len(tokens) and tokens[j] in _BEFORE_OUT:
+        j += 1
+    if tokens[j : j + 1] != ["out"]:
+        return None
+    nxt = tokens[j + 1 : j + 4]
+    if nxt[:1] in (["into"], ["onto"]) and len(nxt) > 2 and nxt[1] in _DETERMINERS and nxt[2] in _CARRIAGEWAY:
+        return j + 2
+    if nxt[:1] == ["from"] and len(nxt) > 1 and nxt[1] in _FROM_HIDING:
+        return j + 2
+    return None
+
+
+def out_into_the_road(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a plain verb of motion + "out into the road" or "out from between / behind"
+    (parked vehicles) read as coming out onto the road in front of the ego, whatever the verb ("rode
+    out from between two vans", "came straight out into the street", "went out into the road"): a
+    walker or rider crosses it, a vehicle pulls out into it. "Out in the road" is where one rides,
+    not a move out."""
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k, m in enumerate(kept):
+            plain = m.slot == "ego_verb" or (m.slot == "behaviour" and m.value[0] in _PLAIN_MOVES | {"along_road"})
+            if not plain or _out_into_the_road(tokens, m.end) is None:
+                continue
+            subject = next((x for x in reversed(kept[:k]) if x.slot == "actor"), None)
+            if subject is None or subject.value == "ego":
+                continue
+            name = "cross_in_front" if subject.value in _CROSSERS else "cut_in"
+            kept[k] = replace(m, slot="behaviour", value=(name, {}))
+        out.append((link, kept))
+    return out
+
+
+#: Words of the one telling the story.
+_FIRST_PERSON = frozenset(("i", "we", "me", "my", "us", "our", "i'm", "i've", "i'd", "we're"))
+
+
+def told_in_the_first_person(text: str, tokens: list[str]) -> bool:
+    """Whether ``text`` is the narrator's own story: it says "I", "we", "my" ... as written (the
+    reader's ``tokens`` have "my car" already read as the ego), or opens as a diary without its "I"
+    (:func:`diary`). A verb with no subject in such a story is the narrator's ("Braked hard.")."""
+    said = set(re.findall(r"[a-z']+", text.lower()))
+    return bool(_FIRST_PERSON & (said | set(tokens))) or diary(tokens)
+
+
+#: Adverbs that may stand between a verb and "in front of" ("passed right in front of us").
+_CLOSE = frozenset(("right", "just", "directly", "straight", "immediately"))
+
+
+def passing_in_front(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a verb of passing that has no object and goes on "in front of" the ego ("a
+    cyclist passed in front of us", "passes right in front of my bonnet") read as crossing the ego's
+    path: an overtake takes the one it passes as its object ("passed us"); passing in front of it,
+    a road user goes across where the ego is heading."""
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k, m in enumerate(kept):
+            if not passes(m) or len(m.words.split()) != 1:
+                continue
+            j = m.end
+            while j < len(tokens) and tokens[j] in _CLOSE:
+                j += 1
+            if tokens[j : j + 3] != ["in", "front", "of"]:
+                continue
+            rest = tokens[j + 3 : j + 7]
+            named = bool(rest[:1]) and rest[0] in _EGO_WORDS | {"my", "our"} or rest[:2] == ["the", "ego"]
+            ego = next((x for x in kept[k + 1 :] if x.slot in ("actor", "pronoun")), None)
+            if named or (ego is not None and ego.value == "ego" and ego.start <= j + 5):
+                kept[k] = replace(m, value=("cross_in_front", {}))
         out.append((link, kept))
     return out

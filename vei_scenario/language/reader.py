@@ -39,7 +39,6 @@ from vei_scenario.language.manner import apply_manner, stated_manner
 from vei_scenario.language.motion import (
     chains,
     destinations_not_origins,
-    diary,
     give_the_ego_the_way,
     head_on,
     into_the_ego_lane,
@@ -1120,7 +1119,7 @@ def read(text: str) -> Reading:
     last_group: list[_Actor] | None = None  # ("Two scooters ride ahead; one of them brakes": that pair)
     both_with_ego = False  # ("CCRb: both cars at 50 km/h ...": the ego is one of them)
     ego_is_a_person = False  # (the ego named as "I" or "we": "it" is then never the ego)
-    first_person = bool({"i", "we", "me", "my", "us", "our"} & set(tokens)) or diary(tokens)  # (the narrator's)
+    first_person = motion.told_in_the_first_person(text, tokens)  # (the narrator's)
     bound: dict[str, _Actor | str] = {}  # "he"/"she" → whom it first named
     resolved: dict[int, _Actor | str] = {}  # a road-user mention's start → whom it names
     owned = {o for _, ms in clauses for x in ms for o in x.owners}  # mentions a number is said of
