@@ -1587,6 +1587,40 @@ def _named_vehicles(tokens: list[str], kind_at: KindAt, known: Known, proper: fr
     return out
 
 
+#: Nouns that say only that something is a road user ("target", "vehicle"): as the head of a compound
+#: they leave its type to the noun before them ("a bus target" is a bus).
+_GENERAL_HEADS = _ANY_ROAD_USER | GENERAL_VEHICLE
+
+
+def _compounds(tokens: list[str], kind_at: KindAt) -> list[str]:
+    """ "a schoolboy cyclist", "a woman cyclist", "a girl pedestrian", "a bus target", "a child
+    pedestrian target": road-user nouns back to back, with nothing between them, are one noun phrase,
+    one road user (a noun before another modifies it: says who rides, or what a test target stands
+    for). It is said by one of its nouns: the last vehicle's that names a type (not "target" or
+    "vehicle"), whoever rides it ("an e-scooter guy": an e-scooter); with no vehicle, a walker's most
+    exact noun, the first ("child", not "pedestrian"). Nouns apart
+    ("a child and a cyclist", "the jogger, a cyclist") are two. The nouns left out were read, so they
+    are not listed as words not used."""
+    out: list[str] = []
+    i = 0
+    while i < len(tokens):
+        run: list[tuple[int, int, str]] = []  # (start, end, kind) of each noun of the run
+        k = i
+        while k < len(tokens) and (found := kind_at(tokens, k)) is not None:
+            run.append((k, k + found[1], found[0]))
+            k += found[1]
+        if len(run) < 2 or any(kind == "ego" for *_, kind in run):
+            out.extend(tokens[i : max(k, i + 1)])
+            i = max(k, i + 1)
+            continue
+        typed = [r for r in run if tokens[r[1] - 1] not in _GENERAL_HEADS] or run[:1]
+        ridden = [r for r in typed if r[2] != "pedestrian"]
+        chosen = ridden[-1] if ridden else typed[0]
+        out.extend(tokens[chosen[0] : chosen[1]])
+        i = k
+    return out
+
+
 def resolve(
     tokens: list[str], kind_at: KindAt, known: Known, proper: frozenset[str] = frozenset()
 ) -> tuple[list[str], list[str]]:
@@ -1603,6 +1637,7 @@ def resolve(
     tokens = make_and_model(tokens, kind_at, known)
     tokens = _named_vehicles(tokens, kind_at, known, proper)
     tokens = _brackets(tokens, kind_at, known, names, dropped)
+    tokens = _compounds(tokens, kind_at)
     tokens = _participial_apposition(tokens, kind_at, known)
     tokens = _vehicle_labels(tokens, kind_at, known)
     tokens = _letter_labels(tokens, kind_at, known, dropped)

@@ -35,7 +35,10 @@ TRUCK_MAKES = ("scania", "iveco", "daf", "transit bus")
 #: Animals on the road, played as pedestrians (OpenSCENARIO's pedestrianCategory "animal" has no model of
 #: its own in vei or esmini: its size and way of crossing are a walker's). One led, walked or ridden by a
 #: person is that person's, one road user (:mod:`discourse`).
-ANIMALS = ("dog", "deer", "animal", "cat", "fox", "horse", "pony")
+ANIMALS = (
+    "dog", "deer", "animal", "cat", "fox", "horse", "pony", "cow", "cattle", "sheep", "goat", "kangaroo",
+    "moose", "elk", "boar", "badger",
+)  # fmt: skip
 
 ACTOR_NOUNS = {
     "car": ("car",),
