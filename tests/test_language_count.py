@@ -59,6 +59,4 @@ def test_an_animal_on_the_road_is_a_pedestrian(text):
 
 
 def test_animals_named_as_a_place_are_no_road_users():
-    assert kinds("I drove past a field of cows when a cyclist pulled out from the left in front of me.") == [
-        "bicycle"
-    ]
+    assert kinds("I drove past a field of cows when a cyclist pulled out from the left in front of me.") == ["bicycle"]
