@@ -25,8 +25,9 @@ def kinds(text: str) -> list[str]:
         ("A girl pedestrian ran out from the left in front of me at dusk.", ["pedestrian"]),
         ("A scooter kid rode straight across from the right in front of me.", ["e-scooter"]),
         ("The van target brakes hard 20 m ahead of the ego.", ["van"]),
+        ("The tanker driver ahead of me braked hard at 50 mph.", ["truck"]),
     ],
-    ids=["schoolboy-cyclist", "woman-cyclist", "adult-dummy", "girl-pedestrian", "scooter-kid", "van-target"],
+    ids=["schoolboy-cyclist", "woman-cyclist", "adult-dummy", "girl-pedestrian", "scooter-kid", "van-target", "driver"],
 )
 def test_a_person_noun_before_a_road_user_noun_is_one_road_user(text, expected):
     assert kinds(text) == expected
@@ -41,6 +42,85 @@ def test_a_person_noun_before_a_road_user_noun_is_one_road_user(text, expected):
     ids=["joined-by-and", "separate-clauses"],
 )
 def test_two_road_user_nouns_apart_stay_two(text, expected):
+    assert kinds(text) == expected
+
+
+# --- a person set in apposition to a vehicle is whoever drives it -------------------------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("The hatchback's driver, a woman in her twenties, braked hard right in front of me.", ["car"]),
+        ("The motorcyclist, a man in his fifties, overtook me and cut in sharply.", ["car"]),
+        ("The driver of the pickup, an elderly man, pulled out from the right in front of me.", ["van"]),
+    ],
+    ids=["driver-possessive", "rider-noun", "driver-of"],
+)
+def test_a_person_in_apposition_to_a_vehicle_is_its_driver(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("The taxi stopped, a woman got out and walked across in front of me.", ["car", "pedestrian"]),
+        ("I passed the bus, a man stepped out from behind it and crossed in front of me.", ["pedestrian", "truck"]),
+    ],
+    ids=["got-out", "stepped-out"],
+)
+def test_a_person_opening_a_clause_after_a_vehicle_is_someone_else(text, expected):
+    assert kinds(text) == expected
+
+
+# --- the people whose own vehicle acts are that vehicle's occupants, no walkers -----------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Two men were injured when their van ran into the back of a queuing lorry on the A40.",
+        "Four teenagers were taken to hospital after their hatchback hit the back of a bus on the B4060.",
+        "A young couple escaped unhurt when their camper van swerved into the path of a lorry on the A9.",
+    ],
+    ids=["their-van", "their-hatchback", "couple"],
+)
+def test_people_whose_own_vehicle_acts_are_its_occupants(text):
+    assert "pedestrian" not in kinds(text)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A woman got out of her car and walked across the road in front of me.",
+        "A boy was hurt when a van hit him as he ran across from the left.",
+    ],
+    ids=["out-of-her-car", "no-vehicle-of-theirs"],
+)
+def test_a_person_who_leaves_a_vehicle_or_has_none_stays_a_walker(text):
+    assert "pedestrian" in kinds(text)
+
+
+# --- "two of our scooters": a number of a plural is so many road users --------------------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("Two of our e-scooters came out of the side road on the left without stopping.", ["e-scooter"] * 2),
+        ("Three of the cyclists in the group swung out into my lane ahead of me.", ["bicycle"] * 3),
+        ("Both of the joggers ran across the road from the left in front of me.", ["pedestrian"] * 2),
+    ],
+    ids=["two-of-our", "three-of-the", "both-of-the"],
+)
+def test_a_number_of_a_plural_is_so_many_road_users(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("One of the cyclists in the group swung out into my lane ahead of me.", ["bicycle"]),
+        ("One of our vans pulled out of the depot on the left right in front of me.", ["van"]),
+        ("Two of my kids were in the back when a cyclist swung out from the left in front of me.", ["bicycle"]),
+    ],
+    ids=["one-of-the", "one-of-our-fleet", "the-narrators-people"],
+)
+def test_one_of_a_plural_is_one_road_user_and_the_narrators_people_none(text, expected):
     assert kinds(text) == expected
 
 

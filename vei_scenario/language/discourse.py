@@ -1587,9 +1587,10 @@ def _named_vehicles(tokens: list[str], kind_at: KindAt, known: Known, proper: fr
     return out
 
 
-#: Nouns that say only that something is a road user ("target", "vehicle"): as the head of a compound
-#: they leave its type to the noun before them ("a bus target" is a bus).
-_GENERAL_HEADS = _ANY_ROAD_USER | GENERAL_VEHICLE
+#: Nouns that say only that something is a road user ("target", "vehicle") or who is at its wheel
+#: ("driver", "rider"): as the head of a compound they leave its type to the noun before them ("a bus
+#: target" is a bus, "the lorry driver" the lorry).
+_GENERAL_HEADS = _ANY_ROAD_USER | GENERAL_VEHICLE | frozenset({"driver", "drivers", "rider", "riders"})
 
 
 def _compounds(tokens: list[str], kind_at: KindAt) -> list[str]:
@@ -1621,6 +1622,123 @@ def _compounds(tokens: list[str], kind_at: KindAt) -> list[str]:
     return out
 
 
+def partitives(tokens: list[str], kind_at: KindAt) -> list[str]:
+    """ "two of our scooters", "three of the cyclists in the group", "both of the joggers": a count of a
+    definite or possessive plural is so many road users of that plural, said as a plain counted plural
+    ("two scooters", "both" as "two"); the possessive is the speaker's fleet or group, not the
+    narrator's vehicle (:func:`who.own_vehicles` leaves it)."""
+    out = list(tokens)
+    i = 0
+    while i + 3 < len(out):
+        count = out[i] in _COUNTED - {"several", "couple", "pair"} or (out[i].isdigit() and int(out[i]) > 1)
+        if not count or out[i + 1] != "of" or out[i + 2] not in DEFINITE | POSSESSIVE:
+            i += 1
+            continue
+        head = next((h for h in range(i + 3, min(i + 6, len(out))) if kind_at(out, h) is not None), None)
+        end = head + kind_at(out, head)[1] if head is not None else 0
+        if head is None or kind_at(out, head)[0] == "ego" or out[end : end + 1] == ["'s"]:  # ("of the car's")
+            i += 1
+            continue
+        out[i : i + 3] = ["two" if out[i] == "both" else out[i]]
+        i += 1
+    return out
+
+
+#: Words after which a possessive vehicle is the subject of a clause ("when their car ran into ...") or
+#: holds its people ("three people in their car"), not a place someone is or goes ("out of her car").
+_OWN_VEHICLE_OPENS = frozenset(
+    "when after as and but then while because before until so once where in inside , ; :".split()
+)
+
+
+def _modifies(word: str) -> bool:
+    """Whether ``word`` can stand before a person's noun in its phrase: an article, a count, an
+    adjective (no verb, no punctuation)."""
+    return word in DETERMINERS or word in _COUNTED or word.isdigit() or (word.isalpha() and not _verb_of(word))
+
+
+def _occupants(tokens: list[str], kind_at: KindAt, dropped: list[str]) -> list[str]:
+    """ "Three people were injured when their car ran into a lorry", "a man escaped unhurt after his van
+    overturned": the people whose own vehicle ("their car", "his van") does something in the same
+    sentence are its occupants, that vehicle, no walkers; their phrase (with its count) is left out
+    (listed as not used). Only the nearest walker's phrase before the possessive, with no other road
+    user between; and only where the vehicle opens a clause or holds them ("in their car"): a person
+    who leaves or goes to their vehicle ("got out of her car and walked across") is a walker."""
+    out = list(tokens)
+    for p in range(len(out) - 1, 0, -1):
+        if out[p] not in ("their", "his", "her") or out[p - 1] not in _OWN_VEHICLE_OPENS:
+            continue
+        owned = next((h for h in range(p + 1, min(p + 4, len(out))) if kind_at(out, h) is not None), None)
+        if (
+            owned is None
+            or kind_at(out, owned)[0] in ("pedestrian", "ego")
+            or any(w in PUNCT for w in out[p + 1 : owned])
+        ):
+            continue
+        person = None
+        for b in range(p - 1, -1, -1):
+            if out[b] in SENTENCE_END:
+                break
+            if (found := kind_at(out, b)) is not None:
+                person = (b, found) if found[0] == "pedestrian" and b + found[1] <= p else None
+                break
+        if person is None:
+            continue
+        b, (_, n) = person
+        start = b  # (back over its count, article and up to two modifiers: "three young people")
+        while start > max(b - 3, 0) and _modifies(out[start - 1]):
+            start -= 1
+        dropped.extend(out[start : b + n])
+        del out[start : b + n]
+    return out
+
+
+def _only_a_verb(word: str) -> bool:
+    """Whether ``word`` can only be a verb ("stepped", "overtook"), not also a noun or an adjective
+    ("phone", "aged"): such a word opens a clause."""
+    return _verb_of(word) and not {"NOUN", "ADJ"} & set(lemmas(word))
+
+
+def _driver_apposition(tokens: list[str], kind_at: KindAt, dropped: list[str]) -> list[str]:
+    """ "the driver of the pickup, an elderly man, pulled out", "the motorcyclist, a man in his
+    fifties, overtook me": a person set in apposition to a vehicle (an indefinite walker's noun with its
+    modifiers between commas, the sentence's verb right after) says who drives it, no road user of its
+    own; the apposition is left out (listed as not used). A person whose own verb follows ("I passed
+    the bus, a man stepped out ...") opens a clause of their own and stays."""
+    out = list(tokens)
+    i = 1
+    while i + 2 < len(out):
+        vehicle = next((b for b in range(i - 1, max(i - 4, -1), -1) if (f := kind_at(out, b)) and b + f[1] == i), None)
+        if (
+            out[i] != ","
+            or out[i + 1] not in ("a", "an")
+            or vehicle is None
+            or kind_at(out, vehicle)[0] not in VEHICLES
+        ):
+            i += 1
+            continue
+        head = next((h for h in range(i + 2, min(i + 6, len(out))) if kind_at(out, h) is not None), None)
+        close = next((k for k in range(i + 2, min(i + 12, len(out))) if out[k] in PUNCT), None)
+        fits = (
+            head is not None
+            and close is not None
+            and head < close
+            and kind_at(out, head)[0] == "pedestrian"
+            and out[close] == ","
+            and close + 1 < len(out)
+            and _verb_of(out[close + 1])
+            and not any(
+                kind_at(out, k) is not None or out[k] in ("and", "or") or _only_a_verb(out[k])
+                for k in [*range(i + 2, head), *range(head + kind_at(out, head)[1], close)]
+            )
+        )
+        if fits:
+            dropped.extend(out[i + 1 : close])
+            del out[i:close]
+        i += 1
+    return out
+
+
 def resolve(
     tokens: list[str], kind_at: KindAt, known: Known, proper: frozenset[str] = frozenset()
 ) -> tuple[list[str], list[str]]:
@@ -1638,6 +1756,7 @@ def resolve(
     tokens = _named_vehicles(tokens, kind_at, known, proper)
     tokens = _brackets(tokens, kind_at, known, names, dropped)
     tokens = _compounds(tokens, kind_at)
+    tokens = partitives(tokens, kind_at)
     tokens = _participial_apposition(tokens, kind_at, known)
     tokens = _vehicle_labels(tokens, kind_at, known)
     tokens = _letter_labels(tokens, kind_at, known, dropped)
@@ -1647,7 +1766,9 @@ def resolve(
     tokens = _riders(_placed_riders(tokens, kind_at), kind_at, known)
     tokens = _pushed(tokens, kind_at, known, dropped)
     tokens = _drivers(tokens, kind_at, known)
+    tokens = _driver_apposition(tokens, kind_at, dropped)
     tokens = _companions(tokens, kind_at, known, dropped)
+    tokens = _occupants(tokens, kind_at, dropped)
     tokens = _followed_names(tokens, kind_at, known)
     tokens = _own_vehicle(tokens, kind_at, known, dropped)
     tokens = _narrators_people(tokens, kind_at, dropped)
