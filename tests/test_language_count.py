@@ -97,6 +97,59 @@ def test_a_person_who_leaves_a_vehicle_or_has_none_stays_a_walker(text):
     assert "pedestrian" in kinds(text)
 
 
+# --- someone who only tells what happened is a witness, no road user ----------------------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        (
+            "A cyclist shot across from the left in front of me. A man at the bus stop said the cyclist never looked.",
+            ["bicycle"],
+        ),
+        ("A woman claims the bus pulled out from the stop on the left right in front of me at 20 mph.", ["truck"]),
+        ("The lorry came through the red light from the right, a pedestrian later confirmed.", ["truck"]),
+    ],
+    ids=["said", "claims", "confirmed"],
+)
+def test_someone_who_only_tells_is_no_road_user(text, expected):
+    assert kinds(text) == expected
+
+
+def test_someone_who_tells_and_then_acts_is_a_road_user():
+    assert kinds("A pedestrian said something to me and then stepped out in front of the car.") == ["pedestrian"]
+
+
+# --- road users in general, asked or warned to do something, are none of the scene ---------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        (
+            "A cyclist came through the red light from the left. Campaigners want drivers to slow down here.",
+            ["bicycle"],
+        ),
+        ("A van pulled out of the side road on the right. The council has asked cyclists to use the path.", ["van"]),
+        (
+            "A jogger ran across from the left in front of me; the police warn motorists to take care there.",
+            ["pedestrian"],
+        ),
+    ],
+    ids=["want", "asked", "warn"],
+)
+def test_road_users_asked_to_do_something_are_no_road_users_of_the_scene(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("Two cyclists tried to squeeze past me on the left and cut in ahead.", ["bicycle", "bicycle"]),
+        ("A cyclist to my left swerved into my lane just ahead of me.", ["bicycle"]),
+    ],
+    ids=["counted", "a-place"],
+)
+def test_counted_plurals_and_places_before_to_stay(text, expected):
+    assert kinds(text) == expected
+
+
 # --- "two of our scooters": a number of a plural is so many road users --------------------------------
 @pytest.mark.parametrize(
     "text, expected",

@@ -757,6 +757,10 @@ def _passengers(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[
 
 #: Verbs of perceiving: someone whose doing is only one of these watches the scene from outside it.
 PERCEIVE = frozenset({"see", "watch", "witness", "film", "record", "notice", "observe"})
+#: Verbs of telling: someone who only tells what happened ("a man at the bus stop said ...", "the
+#: passenger states ...") is a witness too, as one who only saw it.
+TELL = frozenset({"say", "state", "tell", "claim", "report", "confirm", "admit", "explain", "insist", "describe"})
+_WITNESS_VERBS = PERCEIVE | TELL
 #: Auxiliaries and forms of "have" and "do", which say no doing of their own.
 _AUXILIARIES = frozenset({"have", "has", "had", "do", "does", "did", "will", "would", "could", "can", "must"})
 
@@ -767,13 +771,14 @@ def _verb_of(word: str) -> bool:
 
 def _only_perceives(tokens: list[str], start: int, kind_at: KindAt) -> int | None:
     """Where the perceiving verb is, when the first verb after a road user's phrase (``start``, past
-    its modifiers and a relative pronoun) is one of perceiving and nothing after it in the sentence is
+    its modifiers and a relative pronoun) is one of perceiving or telling (:data:`TELL`: "a man at the
+    bus stop said the cyclist never looked") and nothing after it in the sentence is
     a doing of its own ("a woman on the pavement filmed it", "a lady ... who saw the whole thing"); a
     verb after another road user is that one's ("watched as a cyclist swerved"). Else None."""
     k = start
     while k < len(tokens) and tokens[k] not in SENTENCE_END and tokens[k] != ",":
         w = tokens[k]
-        if _lemma_in(w, PERCEIVE) and _verb_of(w):
+        if _lemma_in(w, _WITNESS_VERBS) and _verb_of(w):
             break
         found = kind_at(tokens, k)
         if found is not None:
@@ -786,7 +791,7 @@ def _only_perceives(tokens: list[str], start: int, kind_at: KindAt) -> int | Non
         if _verb_of(w) and not modifier:  # (nouns and participles modify: "at the bus stop", "waiting")
             return None
         k += 1
-    if k >= len(tokens) or not _lemma_in(tokens[k], PERCEIVE):
+    if k >= len(tokens) or not _lemma_in(tokens[k], _WITNESS_VERBS):
         return None
     for j in range(k + 1, len(tokens)):
         w = tokens[j]
@@ -796,13 +801,13 @@ def _only_perceives(tokens: list[str], start: int, kind_at: KindAt) -> int | Non
         if found is not None and found[0] != "ego":
             break  # (what follows is the other one's doing)
         noun = tokens[j - 1] in DETERMINERS or tokens[j - 1] in POSSESSIVE
-        if _verb_of(w) and not noun and not _lemma_in(w, PERCEIVE):
+        if _verb_of(w) and not noun and not _lemma_in(w, _WITNESS_VERBS):
             return None  # ("watched the traffic and then ran across": a road user)
     return k
 
 
 def _witnesses(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
-    """Someone who only sees, watches, films or notices ("a man at the bus stop watched it all", "there
+    """Someone who only sees, watches, films, notices or tells ("a man at the bus stop watched it all", "there
     was a lady with a stroller on the sidewalk who saw the whole thing") is a witness, no road user: the
     phrase, with its number and modifiers, up to the verb of perceiving is taken out. Whoever also does
     something on the road ("a man who saw me coming stepped out anyway") stays."""
@@ -1644,6 +1649,38 @@ def partitives(tokens: list[str], kind_at: KindAt) -> list[str]:
     return out
 
 
+def _people_in_general(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "Police are urging drivers to slow down", "campaigners want cyclists to wear lights": a bare plural
+    (no article, no count) followed by "to" and a verb is whom someone asks, warns or wants to do
+    something: road users in general, none of the scene; the plural is left out (listed as not used).
+    A counted or definite plural ("two cyclists tried to pass", "the drivers tried to stop") and a
+    place ("a cyclist to my left") stay."""
+    out = list(tokens)
+    i = 0
+    while i < len(out):
+        p = _phrase_at(out, i, kind_at, known)
+        if p is None:
+            i += 1
+            continue
+        before = out[p.start - 1] if p.start else ""
+        nxt = out[p.end + 1] if p.end + 1 < len(out) else ""
+        general = (
+            not p.det
+            and p.kind != "ego"
+            and not _singular(out[p.end - 1])
+            and before not in _COUNTED
+            and not before.isdigit()
+            and out[p.end : p.end + 1] == ["to"]
+            and nxt in lemmas(nxt).get("VERB", ())
+        )
+        if general:
+            dropped.extend(out[p.start : p.end])
+            del out[p.start : p.end]
+            continue
+        i = p.end
+    return out
+
+
 #: Words after which a possessive vehicle is the subject of a clause ("when their car ran into ...") or
 #: holds its people ("three people in their car"), not a place someone is or goes ("out of her car").
 _OWN_VEHICLE_OPENS = frozenset(
@@ -1774,6 +1811,7 @@ def resolve(
     tokens = _narrators_people(tokens, kind_at, dropped)
     tokens = _passengers(tokens, kind_at, known, dropped)
     tokens = _witnesses(tokens, kind_at, known, dropped)
+    tokens = _people_in_general(tokens, kind_at, known, dropped)
     tokens = _narrator_on_foot(tokens, kind_at, known, dropped)
     tokens = _ego_apposition(tokens, kind_at, known, dropped)
     tokens = _ego_predicate(tokens, kind_at, known, dropped)
