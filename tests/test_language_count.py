@@ -150,6 +150,42 @@ def test_counted_plurals_and_places_before_to_stay(text, expected):
     assert kinds(text) == expected
 
 
+# --- a heading's bare road user is the one the text goes on to introduce ----------------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        (
+            "Cyclist swerve on rural bend\nSetup: ego at 60 km/h. A cyclist ahead swerves into the ego's lane.",
+            ["bicycle"],
+        ),
+        (
+            "Regression - lorry merge at motorway junction\n* Ego 100 km/h in lane 1\n"
+            "* A lorry on the slip road merges right in front of the ego",
+            ["truck"],
+        ),
+        (
+            "TICKET-88: pedestrian dash at night\nA pedestrian runs across from the right 20 m ahead of the ego.",
+            ["pedestrian"],
+        ),
+    ],
+    ids=["setup", "bullets", "ticket"],
+)
+def test_a_headings_road_user_is_the_one_introduced_after_it(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A cyclist swerves into my lane. A van overtakes me and cuts in.", ["bicycle", "van"]),
+        ("Cyclist pulls out from the left. A cyclist comes the other way in my lane.", ["bicycle", "bicycle"]),
+    ],
+    ids=["first-sentence-with-article", "first-sentence-with-verb"],
+)
+def test_a_first_sentence_that_is_no_heading_keeps_its_road_users(text, expected):
+    assert kinds(text) == expected
+
+
 # --- "two of our scooters": a number of a plural is so many road users --------------------------------
 @pytest.mark.parametrize(
     "text, expected",

@@ -1681,6 +1681,38 @@ def _people_in_general(tokens: list[str], kind_at: KindAt, known: Known, dropped
     return out
 
 
+#: Marks that end a heading: the end of its line or sentence (a colon goes on with a label's value).
+_HEADING_ENDS = frozenset({".", "!", "?"})
+
+
+def _finite(word: str) -> bool:
+    """Whether ``word`` is a verb inflected for a subject ("pulls", "swerved"), which makes a sentence;
+    a bare stem ("merge", "swerve") or an -ing form names an event, as headings do."""
+    return _verb_of(word) and not word.endswith("ing") and word not in lemmas(word).get("VERB", ())
+
+
+def _heading(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "E-scooter cut-in on urban straight", "AEB validation - e-scooter crossing at urban junction": a
+    first line written as a heading (no article, no pronoun, no inflected verb) names the
+    scenario; a road user it names bare is the one the text goes on to introduce with "a" or "an" ("an
+    e-scooter, starts in the left lane ..."), one road user, so the heading's noun is left out (listed
+    as not used) and what the heading says of the setting stays. A first sentence with an article or
+    a verb ("Cyclist pulls out ...", "A van brakes.") is no heading."""
+    end = next((k for k, w in enumerate(tokens) if w in _HEADING_ENDS), None)
+    if end is None or end + 1 >= len(tokens):
+        return tokens
+    head = tokens[:end]
+    if any(w in DETERMINERS or w in PRONOUNS or w in FIRST_PERSON or w in BE or _finite(w) for w in head):
+        return tokens
+    later = [p for p in _phrases(tokens[end:], kind_at, known) if p.det in ("a", "an")]
+    out = list(tokens)
+    for p in reversed(_phrases(head, kind_at, known)):
+        if p.kind != "ego" and not p.det and any(q.kind == p.kind for q in later):
+            dropped.extend(out[p.head : p.end])
+            del out[p.head : p.end]
+    return out
+
+
 #: Words after which a possessive vehicle is the subject of a clause ("when their car ran into ...") or
 #: holds its people ("three people in their car"), not a place someone is or goes ("out of her car").
 _OWN_VEHICLE_OPENS = frozenset(
@@ -1798,6 +1830,7 @@ def resolve(
     tokens = _vehicle_labels(tokens, kind_at, known)
     tokens = _letter_labels(tokens, kind_at, known, dropped)
     tokens = _field_names(tokens, kind_at, known)
+    tokens = _heading(tokens, kind_at, known, dropped)  # (after the labels: "Actor 1: e-scooter")
     tokens = _generic_plurals(tokens, kind_at, known, dropped)
     tokens = _followed_by(tokens, kind_at, known, dropped)
     tokens = _riders(_placed_riders(tokens, kind_at), kind_at, known)
