@@ -229,3 +229,22 @@ def test_an_animal_on_the_road_is_a_pedestrian(text):
 
 def test_animals_named_as_a_place_are_no_road_users():
     assert kinds("I drove past a field of cows when a cyclist pulled out from the left in front of me.") == ["bicycle"]
+
+
+# --- "a person in electric scooter": a rider, in English written as a second language -------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("One man in electric scooter come from left side and cross in front of my car.", ["e-scooter"]),
+        ("A boy in bicycle suddenly go across the road from the right in front of me.", ["bicycle"]),
+        ("The woman in e-scooter is coming from sidewalk of right side and cross before me.", ["e-scooter"]),
+    ],
+    ids=["electric-scooter", "bicycle", "e-scooter"],
+)
+def test_a_person_in_a_bare_rideable_noun_rides_it(text, expected):
+    assert kinds(text) == expected
+
+
+def test_a_person_in_a_motor_vehicle_or_a_lane_is_not_riding_a_bike():
+    assert "bicycle" not in kinds("A man in the bike lane waved as a van pulled out from the left in front of me.")
+    assert kinds("A man in a hire van pulled out from the left in front of me.") == ["van"]

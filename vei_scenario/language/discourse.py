@@ -318,7 +318,7 @@ def _riders(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
             j += 3
         elif j < len(tokens) and tokens[j] in DETERMINERS:
             j += 1
-        elif tokens[i] in INSIDE:  # ("a test in which a truck ...": no vehicle a person is in)
+        elif tokens[i] in INSIDE and not _bare_ridden(tokens, j, kind_at):  # ("a test in which a truck ...")
             out.append(tokens[i])
             i += 1
             continue
@@ -328,7 +328,8 @@ def _riders(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
         )
         ride = kind_at(tokens, head) if head is not None else None
         between_known = head is not None and any(known(tokens, h) for h in range(j, head))
-        unfit = ("pedestrian", "ego", "bicycle", "e-scooter") if tokens[i] in INSIDE else ("pedestrian", "truck", "ego")
+        inside = tokens[i] in INSIDE and not _bare_ridden(tokens, j, kind_at)
+        unfit = ("pedestrian", "ego", "bicycle", "e-scooter") if inside else ("pedestrian", "truck", "ego")
         if (
             ride is None
             or ride[0] in unfit
@@ -343,6 +344,20 @@ def _riders(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
         out[person_start:] = [det]
         i = j
     return out
+
+
+def _bare_ridden(tokens: list[str], j: int, kind_at: KindAt) -> bool:
+    """Whether a bicycle's or e-scooter's noun, with no article, follows "in" at ``j`` ("one person in
+    electric scooter", "a boy in bike"): English written as a second language drops the article and
+    says "in" for "on"; no one is inside such a vehicle, so the person rides it."""
+    head = next((h for h in range(j, min(j + 2, len(tokens))) if kind_at(tokens, h) is not None), None)
+    return (
+        j < len(tokens)
+        and tokens[j] not in DETERMINERS
+        and head is not None
+        and kind_at(tokens, head)[0] in ("bicycle", "e-scooter")
+        and not _goes_on(tokens, head + kind_at(tokens, head)[1], lambda t, k: True)
+    )
 
 
 def _bare_person(out: list[str], kind_at: KindAt) -> int | None:
