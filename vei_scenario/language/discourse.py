@@ -772,6 +772,10 @@ def _passengers(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[
 
 #: Verbs of perceiving: someone whose doing is only one of these watches the scene from outside it.
 PERCEIVE = frozenset({"see", "watch", "witness", "film", "record", "notice", "observe"})
+#: Verbs of telling: someone who only tells what happened ("a man at the bus stop said ...", "the
+#: passenger states ...") is a witness too, as one who only saw it.
+TELL = frozenset({"say", "state", "tell", "claim", "report", "confirm", "admit", "explain", "insist", "describe"})
+_WITNESS_VERBS = PERCEIVE | TELL
 #: Auxiliaries and forms of "have" and "do", which say no doing of their own.
 _AUXILIARIES = frozenset({"have", "has", "had", "do", "does", "did", "will", "would", "could", "can", "must"})
 
@@ -782,13 +786,14 @@ def _verb_of(word: str) -> bool:
 
 def _only_perceives(tokens: list[str], start: int, kind_at: KindAt) -> int | None:
     """Where the perceiving verb is, when the first verb after a road user's phrase (``start``, past
-    its modifiers and a relative pronoun) is one of perceiving and nothing after it in the sentence is
+    its modifiers and a relative pronoun) is one of perceiving or telling (:data:`TELL`: "a man at the
+    bus stop said the cyclist never looked") and nothing after it in the sentence is
     a doing of its own ("a woman on the pavement filmed it", "a lady ... who saw the whole thing"); a
     verb after another road user is that one's ("watched as a cyclist swerved"). Else None."""
     k = start
     while k < len(tokens) and tokens[k] not in SENTENCE_END and tokens[k] != ",":
         w = tokens[k]
-        if _lemma_in(w, PERCEIVE) and _verb_of(w):
+        if _lemma_in(w, _WITNESS_VERBS) and _verb_of(w):
             break
         found = kind_at(tokens, k)
         if found is not None:
@@ -801,7 +806,7 @@ def _only_perceives(tokens: list[str], start: int, kind_at: KindAt) -> int | Non
         if _verb_of(w) and not modifier:  # (nouns and participles modify: "at the bus stop", "waiting")
             return None
         k += 1
-    if k >= len(tokens) or not _lemma_in(tokens[k], PERCEIVE):
+    if k >= len(tokens) or not _lemma_in(tokens[k], _WITNESS_VERBS):
         return None
     for j in range(k + 1, len(tokens)):
         w = tokens[j]
@@ -811,13 +816,13 @@ def _only_perceives(tokens: list[str], start: int, kind_at: KindAt) -> int | Non
         if found is not None and found[0] != "ego":
             break  # (what follows is the other one's doing)
         noun = tokens[j - 1] in DETERMINERS or tokens[j - 1] in POSSESSIVE
-        if _verb_of(w) and not noun and not _lemma_in(w, PERCEIVE):
+        if _verb_of(w) and not noun and not _lemma_in(w, _WITNESS_VERBS):
             return None  # ("watched the traffic and then ran across": a road user)
     return k
 
 
 def _witnesses(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
-    """Someone who only sees, watches, films or notices ("a man at the bus stop watched it all", "there
+    """Someone who only sees, watches, films, notices or tells ("a man at the bus stop watched it all", "there
     was a lady with a stroller on the sidewalk who saw the whole thing") is a witness, no road user: the
     phrase, with its number and modifiers, up to the verb of perceiving is taken out. Whoever also does
     something on the road ("a man who saw me coming stepped out anyway") stays."""
@@ -1602,6 +1607,222 @@ def _named_vehicles(tokens: list[str], kind_at: KindAt, known: Known, proper: fr
     return out
 
 
+#: Nouns that say only that something is a road user ("target", "vehicle") or who is at its wheel
+#: ("driver", "rider"): as the head of a compound they leave its type to the noun before them ("a bus
+#: target" is a bus, "the lorry driver" the lorry).
+_GENERAL_HEADS = _ANY_ROAD_USER | GENERAL_VEHICLE | frozenset({"driver", "drivers", "rider", "riders"})
+
+
+def _compounds(tokens: list[str], kind_at: KindAt) -> list[str]:
+    """ "a schoolboy cyclist", "a woman cyclist", "a girl pedestrian", "a bus target", "a child
+    pedestrian target": road-user nouns back to back, with nothing between them, are one noun phrase,
+    one road user (a noun before another modifies it: says who rides, or what a test target stands
+    for). It is said by one of its nouns: the last vehicle's that names a type (not "target" or
+    "vehicle"), whoever rides it ("an e-scooter guy": an e-scooter); with no vehicle, a walker's most
+    exact noun, the first ("child", not "pedestrian"). Nouns apart
+    ("a child and a cyclist", "the jogger, a cyclist") are two. The nouns left out were read, so they
+    are not listed as words not used."""
+    out: list[str] = []
+    i = 0
+    while i < len(tokens):
+        run: list[tuple[int, int, str]] = []  # (start, end, kind) of each noun of the run
+        k = i
+        while k < len(tokens) and (found := kind_at(tokens, k)) is not None:
+            run.append((k, k + found[1], found[0]))
+            k += found[1]
+        if len(run) < 2 or any(kind == "ego" for *_, kind in run):
+            out.extend(tokens[i : max(k, i + 1)])
+            i = max(k, i + 1)
+            continue
+        typed = [r for r in run if tokens[r[1] - 1] not in _GENERAL_HEADS] or run[:1]
+        ridden = [r for r in typed if r[2] != "pedestrian"]
+        chosen = ridden[-1] if ridden else typed[0]
+        out.extend(tokens[chosen[0] : chosen[1]])
+        i = k
+    return out
+
+
+def partitives(tokens: list[str], kind_at: KindAt) -> list[str]:
+    """ "two of our scooters", "three of the cyclists in the group", "both of the joggers": a count of a
+    definite or possessive plural is so many road users of that plural, said as a plain counted plural
+    ("two scooters", "both" as "two"); the possessive is the speaker's fleet or group, not the
+    narrator's vehicle (:func:`who.own_vehicles` leaves it)."""
+    out = list(tokens)
+    i = 0
+    while i + 3 < len(out):
+        count = out[i] in _COUNTED - {"several", "couple", "pair"} or (out[i].isdigit() and int(out[i]) > 1)
+        if not count or out[i + 1] != "of" or out[i + 2] not in DEFINITE | POSSESSIVE:
+            i += 1
+            continue
+        head = next((h for h in range(i + 3, min(i + 6, len(out))) if kind_at(out, h) is not None), None)
+        end = head + kind_at(out, head)[1] if head is not None else 0
+        if head is None or kind_at(out, head)[0] == "ego" or out[end : end + 1] == ["'s"]:  # ("of the car's")
+            i += 1
+            continue
+        out[i : i + 3] = ["two" if out[i] == "both" else out[i]]
+        i += 1
+    return out
+
+
+def _people_in_general(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "Police are urging drivers to slow down", "campaigners want cyclists to wear lights": a bare plural
+    (no article, no count) followed by "to" and a verb is whom someone asks, warns or wants to do
+    something: road users in general, none of the scene; the plural is left out (listed as not used).
+    A counted or definite plural ("two cyclists tried to pass", "the drivers tried to stop") and a
+    place ("a cyclist to my left") stay."""
+    out = list(tokens)
+    i = 0
+    while i < len(out):
+        p = _phrase_at(out, i, kind_at, known)
+        if p is None:
+            i += 1
+            continue
+        before = out[p.start - 1] if p.start else ""
+        nxt = out[p.end + 1] if p.end + 1 < len(out) else ""
+        general = (
+            not p.det
+            and p.kind != "ego"
+            and not _singular(out[p.end - 1])
+            and before not in _COUNTED
+            and not before.isdigit()
+            and out[p.end : p.end + 1] == ["to"]
+            and nxt in lemmas(nxt).get("VERB", ())
+        )
+        if general:
+            dropped.extend(out[p.start : p.end])
+            del out[p.start : p.end]
+            continue
+        i = p.end
+    return out
+
+
+#: Marks that end a heading: the end of its line or sentence (a colon goes on with a label's value).
+_HEADING_ENDS = frozenset({".", "!", "?"})
+
+
+def _finite(word: str) -> bool:
+    """Whether ``word`` is a verb inflected for a subject ("pulls", "swerved"), which makes a sentence;
+    a bare stem ("merge", "swerve") or an -ing form names an event, as headings do."""
+    return _verb_of(word) and not word.endswith("ing") and word not in lemmas(word).get("VERB", ())
+
+
+def _heading(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "E-scooter cut-in on urban straight", "AEB validation - e-scooter crossing at urban junction": a
+    first line written as a heading (no article, no pronoun, no inflected verb) names the
+    scenario; a road user it names bare is the one the text goes on to introduce with "a" or "an" ("an
+    e-scooter, starts in the left lane ..."), one road user, so the heading's noun is left out (listed
+    as not used) and what the heading says of the setting stays. A first sentence with an article or
+    a verb ("Cyclist pulls out ...", "A van brakes.") is no heading."""
+    end = next((k for k, w in enumerate(tokens) if w in _HEADING_ENDS), None)
+    if end is None or end + 1 >= len(tokens):
+        return tokens
+    head = tokens[:end]
+    if any(w in DETERMINERS or w in PRONOUNS or w in FIRST_PERSON or w in BE or _finite(w) for w in head):
+        return tokens
+    later = [p for p in _phrases(tokens[end:], kind_at, known) if p.det in ("a", "an")]
+    out = list(tokens)
+    for p in reversed(_phrases(head, kind_at, known)):
+        if p.kind != "ego" and not p.det and any(q.kind == p.kind for q in later):
+            dropped.extend(out[p.head : p.end])
+            del out[p.head : p.end]
+    return out
+
+
+#: Words after which a possessive vehicle is the subject of a clause ("when their car ran into ...") or
+#: holds its people ("three people in their car"), not a place someone is or goes ("out of her car").
+_OWN_VEHICLE_OPENS = frozenset(
+    "when after as and but then while because before until so once where in inside , ; :".split()
+)
+
+
+def _modifies(word: str) -> bool:
+    """Whether ``word`` can stand before a person's noun in its phrase: an article, a count, an
+    adjective (no verb, no punctuation)."""
+    return word in DETERMINERS or word in _COUNTED or word.isdigit() or (word.isalpha() and not _verb_of(word))
+
+
+def _occupants(tokens: list[str], kind_at: KindAt, dropped: list[str]) -> list[str]:
+    """ "Three people were injured when their car ran into a lorry", "a man escaped unhurt after his van
+    overturned": the people whose own vehicle ("their car", "his van") does something in the same
+    sentence are its occupants, that vehicle, no walkers; their phrase (with its count) is left out
+    (listed as not used). Only the nearest walker's phrase before the possessive, with no other road
+    user between; and only where the vehicle opens a clause or holds them ("in their car"): a person
+    who leaves or goes to their vehicle ("got out of her car and walked across") is a walker."""
+    out = list(tokens)
+    for p in range(len(out) - 1, 0, -1):
+        if out[p] not in ("their", "his", "her") or out[p - 1] not in _OWN_VEHICLE_OPENS:
+            continue
+        owned = next((h for h in range(p + 1, min(p + 4, len(out))) if kind_at(out, h) is not None), None)
+        if (
+            owned is None
+            or kind_at(out, owned)[0] in ("pedestrian", "ego")
+            or any(w in PUNCT for w in out[p + 1 : owned])
+        ):
+            continue
+        person = None
+        for b in range(p - 1, -1, -1):
+            if out[b] in SENTENCE_END:
+                break
+            if (found := kind_at(out, b)) is not None:
+                person = (b, found) if found[0] == "pedestrian" and b + found[1] <= p else None
+                break
+        if person is None:
+            continue
+        b, (_, n) = person
+        start = b  # (back over its count, article and up to two modifiers: "three young people")
+        while start > max(b - 3, 0) and _modifies(out[start - 1]):
+            start -= 1
+        dropped.extend(out[start : b + n])
+        del out[start : b + n]
+    return out
+
+
+def _only_a_verb(word: str) -> bool:
+    """Whether ``word`` can only be a verb ("stepped", "overtook"), not also a noun or an adjective
+    ("phone", "aged"): such a word opens a clause."""
+    return _verb_of(word) and not {"NOUN", "ADJ"} & set(lemmas(word))
+
+
+def _driver_apposition(tokens: list[str], kind_at: KindAt, dropped: list[str]) -> list[str]:
+    """ "the driver of the pickup, an elderly man, pulled out", "the motorcyclist, a man in his
+    fifties, overtook me": a person set in apposition to a vehicle (an indefinite walker's noun with its
+    modifiers between commas, the sentence's verb right after) says who drives it, no road user of its
+    own; the apposition is left out (listed as not used). A person whose own verb follows ("I passed
+    the bus, a man stepped out ...") opens a clause of their own and stays."""
+    out = list(tokens)
+    i = 1
+    while i + 2 < len(out):
+        vehicle = next((b for b in range(i - 1, max(i - 4, -1), -1) if (f := kind_at(out, b)) and b + f[1] == i), None)
+        if (
+            out[i] != ","
+            or out[i + 1] not in ("a", "an")
+            or vehicle is None
+            or kind_at(out, vehicle)[0] not in VEHICLES
+        ):
+            i += 1
+            continue
+        head = next((h for h in range(i + 2, min(i + 6, len(out))) if kind_at(out, h) is not None), None)
+        close = next((k for k in range(i + 2, min(i + 12, len(out))) if out[k] in PUNCT), None)
+        fits = (
+            head is not None
+            and close is not None
+            and head < close
+            and kind_at(out, head)[0] == "pedestrian"
+            and out[close] == ","
+            and close + 1 < len(out)
+            and _verb_of(out[close + 1])
+            and not any(
+                kind_at(out, k) is not None or out[k] in ("and", "or") or _only_a_verb(out[k])
+                for k in [*range(i + 2, head), *range(head + kind_at(out, head)[1], close)]
+            )
+        )
+        if fits:
+            dropped.extend(out[i + 1 : close])
+            del out[i:close]
+        i += 1
+    return out
+
+
 def resolve(
     tokens: list[str], kind_at: KindAt, known: Known, proper: frozenset[str] = frozenset()
 ) -> tuple[list[str], list[str]]:
@@ -1619,21 +1840,27 @@ def resolve(
     tokens = vehicle_places(travel_modes(tokens, kind_at), kind_at)
     tokens = _named_vehicles(tokens, kind_at, known, proper)
     tokens = _brackets(tokens, kind_at, known, names, dropped)
+    tokens = _compounds(tokens, kind_at)
+    tokens = partitives(tokens, kind_at)
     tokens = _participial_apposition(tokens, kind_at, known)
     tokens = _vehicle_labels(tokens, kind_at, known)
     tokens = _letter_labels(tokens, kind_at, known, dropped)
     tokens = _field_names(tokens, kind_at, known)
+    tokens = _heading(tokens, kind_at, known, dropped)  # (after the labels: "Actor 1: e-scooter")
     tokens = _generic_plurals(tokens, kind_at, known, dropped)
     tokens = _followed_by(tokens, kind_at, known, dropped)
     tokens = _riders(_placed_riders(tokens, kind_at), kind_at, known)
     tokens = _pushed(tokens, kind_at, known, dropped)
     tokens = _drivers(tokens, kind_at, known)
+    tokens = _driver_apposition(tokens, kind_at, dropped)
     tokens = _companions(tokens, kind_at, known, dropped)
+    tokens = _occupants(tokens, kind_at, dropped)
     tokens = _followed_names(tokens, kind_at, known)
     tokens = _own_vehicle(tokens, kind_at, known, dropped)
     tokens = _narrators_people(tokens, kind_at, dropped)
     tokens = _passengers(tokens, kind_at, known, dropped)
     tokens = _witnesses(tokens, kind_at, known, dropped)
+    tokens = _people_in_general(tokens, kind_at, known, dropped)
     tokens = _narrator_on_foot(tokens, kind_at, known, dropped)
     tokens = _ego_apposition(tokens, kind_at, known, dropped)
     tokens = _ego_predicate(tokens, kind_at, known, dropped)

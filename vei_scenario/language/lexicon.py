@@ -35,8 +35,10 @@ TRUCK_MAKES = ("scania", "iveco", "daf", "transit bus")
 #: Animals on the road, played as pedestrians (OpenSCENARIO's pedestrianCategory "animal" has no model of
 #: its own in vei or esmini: its size and way of crossing are a walker's). One led, walked or ridden by a
 #: person is that person's, one road user (:mod:`discourse`).
-ANIMALS = ("dog", "deer", "animal", "cat", "fox", "horse", "pony", "cow", "cattle", "sheep", "goat", "kangaroo",
-           "wallaby", "boar", "donkey", "camel")  # fmt: skip
+ANIMALS = (
+    "dog", "deer", "animal", "cat", "fox", "horse", "pony", "cow", "cattle", "sheep", "goat", "kangaroo",
+    "wallaby", "moose", "elk", "boar", "badger", "donkey", "camel",
+)  # fmt: skip
 
 #: What a person rides or sits in at a walker's pace, on the pavement or the road's edge: the person and it
 #: are one walker ("a man on a mobility scooter", "a woman in a wheelchair", "a girl on a pony").

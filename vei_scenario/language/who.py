@@ -47,15 +47,27 @@ def _own_vehicle_end(tokens: list[str], i: int, kind_at: KindAt, modifier: Calla
     return None
 
 
+#: Words that count what "of" takes a part of ("two of our scooters", "one of our vans"): a fleet's or a
+#: group's vehicles, of which the writer's is at most one.
+_COUNTS = frozenset("one two three four five six seven eight nine ten both several some none".split())
+
+
+def _counted_of(before: list[str]) -> bool:
+    """Whether the words ``before`` a possessive end in a count and "of" ("two of", "one of")."""
+    return len(before) >= 2 and before[-1] == "of" and (before[-2] in _COUNTS or before[-2].isdigit())
+
+
 def own_vehicles(tokens: list[str], kind_at: KindAt, modifier: Callable[[str], bool]) -> list[str]:
-    """``tokens`` with each "my/our [modifiers] <vehicle noun>" as the one token "ego".
+    """``tokens`` with each "my/our [modifiers] <vehicle noun>" as the one token "ego", but for a part
+    of a fleet or group ("two of our scooters", "one of our vans": road users of their own).
     ``kind_at(tokens, i)`` gives the road-user type a phrase at ``i`` names and its length;
     ``modifier(word)`` whether a word may stand before a head noun (a content word the reader has no
     phrase for)."""
     out: list[str] = []
     i = 0
     while i < len(tokens):
-        end = _own_vehicle_end(tokens, i, kind_at, modifier) if tokens[i] in FIRST_PERSON_POSSESSIVES else None
+        own = tokens[i] in FIRST_PERSON_POSSESSIVES and not _counted_of(out)
+        end = _own_vehicle_end(tokens, i, kind_at, modifier) if own else None
         if end is None:
             out.append(tokens[i])
             i += 1

@@ -1,0 +1,250 @@
+"""How many road users a description names: the road users other than the ego that act on the road,
+not the people a story mentions who are no road users of the scene, and each road user once however
+often or however differently it is named. Each construction is pinned by wordings of our own (none of
+them from a corpus), read through the whole reader, with near misses that look alike but must read
+otherwise."""
+
+from __future__ import annotations
+
+import pytest
+
+from vei_scenario.language.reader import read
+
+
+def kinds(text: str) -> list[str]:
+    return sorted(a.kind for a in read(text).actors)
+
+
+# --- a person's noun before a road user's noun modifies it: one road user, of the head noun's type ----
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A schoolboy cyclist rode across from the right just ahead of me.", ["bicycle"]),
+        ("A woman cyclist swung out from the left kerb in front of me.", ["bicycle"]),
+        ("An adult pedestrian dummy walks across from the right at 5 km/h in front of the ego.", ["pedestrian"]),
+        ("A girl pedestrian ran out from the left in front of me at dusk.", ["pedestrian"]),
+        ("A scooter kid rode straight across from the right in front of me.", ["e-scooter"]),
+        ("The van target brakes hard 20 m ahead of the ego.", ["van"]),
+        ("The tanker driver ahead of me braked hard at 50 mph.", ["truck"]),
+    ],
+    ids=["schoolboy-cyclist", "woman-cyclist", "adult-dummy", "girl-pedestrian", "scooter-kid", "van-target", "driver"],
+)
+def test_a_person_noun_before_a_road_user_noun_is_one_road_user(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A child and a cyclist crossed from the left in front of me.", ["bicycle", "pedestrian"]),
+        ("As I passed the jogger, a cyclist came out from the left in front of me.", ["bicycle", "pedestrian"]),
+    ],
+    ids=["joined-by-and", "separate-clauses"],
+)
+def test_two_road_user_nouns_apart_stay_two(text, expected):
+    assert kinds(text) == expected
+
+
+# --- a person set in apposition to a vehicle is whoever drives it -------------------------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("The hatchback's driver, a woman in her twenties, braked hard right in front of me.", ["car"]),
+        ("The motorcyclist, a man in his fifties, overtook me and cut in sharply.", ["car"]),
+        ("The driver of the pickup, an elderly man, pulled out from the right in front of me.", ["van"]),
+    ],
+    ids=["driver-possessive", "rider-noun", "driver-of"],
+)
+def test_a_person_in_apposition_to_a_vehicle_is_its_driver(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("The taxi stopped, a woman got out and walked across in front of me.", ["car", "pedestrian"]),
+        ("I passed the bus, a man stepped out from behind it and crossed in front of me.", ["pedestrian", "truck"]),
+    ],
+    ids=["got-out", "stepped-out"],
+)
+def test_a_person_opening_a_clause_after_a_vehicle_is_someone_else(text, expected):
+    assert kinds(text) == expected
+
+
+# --- the people whose own vehicle acts are that vehicle's occupants, no walkers -----------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Two men were injured when their van ran into the back of a queuing lorry on the A40.",
+        "Four teenagers were taken to hospital after their hatchback hit the back of a bus on the B4060.",
+        "A young couple escaped unhurt when their camper van swerved into the path of a lorry on the A9.",
+    ],
+    ids=["their-van", "their-hatchback", "couple"],
+)
+def test_people_whose_own_vehicle_acts_are_its_occupants(text):
+    assert "pedestrian" not in kinds(text)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A woman got out of her car and walked across the road in front of me.",
+        "A boy was hurt when a van hit him as he ran across from the left.",
+    ],
+    ids=["out-of-her-car", "no-vehicle-of-theirs"],
+)
+def test_a_person_who_leaves_a_vehicle_or_has_none_stays_a_walker(text):
+    assert "pedestrian" in kinds(text)
+
+
+# --- someone who only tells what happened is a witness, no road user ----------------------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        (
+            "A cyclist shot across from the left in front of me. A man at the bus stop said the cyclist never looked.",
+            ["bicycle"],
+        ),
+        ("A woman claims the bus pulled out from the stop on the left right in front of me at 20 mph.", ["truck"]),
+        ("The lorry came through the red light from the right, a pedestrian later confirmed.", ["truck"]),
+    ],
+    ids=["said", "claims", "confirmed"],
+)
+def test_someone_who_only_tells_is_no_road_user(text, expected):
+    assert kinds(text) == expected
+
+
+def test_someone_who_tells_and_then_acts_is_a_road_user():
+    assert kinds("A pedestrian said something to me and then stepped out in front of the car.") == ["pedestrian"]
+
+
+# --- road users in general, asked or warned to do something, are none of the scene ---------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        (
+            "A cyclist came through the red light from the left. Campaigners want drivers to slow down here.",
+            ["bicycle"],
+        ),
+        ("A van pulled out of the side road on the right. The council has asked cyclists to use the path.", ["van"]),
+        (
+            "A jogger ran across from the left in front of me; the police warn motorists to take care there.",
+            ["pedestrian"],
+        ),
+    ],
+    ids=["want", "asked", "warn"],
+)
+def test_road_users_asked_to_do_something_are_no_road_users_of_the_scene(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("Two cyclists tried to squeeze past me on the left and cut in ahead.", ["bicycle", "bicycle"]),
+        ("A cyclist to my left swerved into my lane just ahead of me.", ["bicycle"]),
+    ],
+    ids=["counted", "a-place"],
+)
+def test_counted_plurals_and_places_before_to_stay(text, expected):
+    assert kinds(text) == expected
+
+
+# --- a heading's bare road user is the one the text goes on to introduce ----------------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        (
+            "Cyclist swerve on rural bend\nSetup: ego at 60 km/h. A cyclist ahead swerves into the ego's lane.",
+            ["bicycle"],
+        ),
+        (
+            "Regression - lorry merge at motorway junction\n* Ego 100 km/h in lane 1\n"
+            "* A lorry on the slip road merges right in front of the ego",
+            ["truck"],
+        ),
+        (
+            "TICKET-88: pedestrian dash at night\nA pedestrian runs across from the right 20 m ahead of the ego.",
+            ["pedestrian"],
+        ),
+    ],
+    ids=["setup", "bullets", "ticket"],
+)
+def test_a_headings_road_user_is_the_one_introduced_after_it(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A cyclist swerves into my lane. A van overtakes me and cuts in.", ["bicycle", "van"]),
+        ("Cyclist pulls out from the left. A cyclist comes the other way in my lane.", ["bicycle", "bicycle"]),
+    ],
+    ids=["first-sentence-with-article", "first-sentence-with-verb"],
+)
+def test_a_first_sentence_that_is_no_heading_keeps_its_road_users(text, expected):
+    assert kinds(text) == expected
+
+
+# --- "two of our scooters": a number of a plural is so many road users --------------------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("Two of our e-scooters came out of the side road on the left without stopping.", ["e-scooter"] * 2),
+        ("Three of the cyclists in the group swung out into my lane ahead of me.", ["bicycle"] * 3),
+        ("Both of the joggers ran across the road from the left in front of me.", ["pedestrian"] * 2),
+    ],
+    ids=["two-of-our", "three-of-the", "both-of-the"],
+)
+def test_a_number_of_a_plural_is_so_many_road_users(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("One of the cyclists in the group swung out into my lane ahead of me.", ["bicycle"]),
+        ("One of our vans pulled out of the depot on the left right in front of me.", ["van"]),
+        ("Two of my kids were in the back when a cyclist swung out from the left in front of me.", ["bicycle"]),
+    ],
+    ids=["one-of-the", "one-of-our-fleet", "the-narrators-people"],
+)
+def test_one_of_a_plural_is_one_road_user_and_the_narrators_people_none(text, expected):
+    assert kinds(text) == expected
+
+
+# --- animals on the road are walkers ---------------------------------------------------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cow wandered across the road from the left in front of me.",
+        "Cattle were crossing the lane from the left ahead of me.",
+        "There was a kangaroo hopping across from the right about 20 m ahead.",
+    ],
+    ids=["cow", "cattle", "kangaroo"],
+)
+def test_an_animal_on_the_road_is_a_pedestrian(text):
+    assert kinds(text) == ["pedestrian"]
+
+
+def test_animals_named_as_a_place_are_no_road_users():
+    assert kinds("I drove past a field of cows when a cyclist pulled out from the left in front of me.") == ["bicycle"]
+
+
+# --- "a person in electric scooter": a rider, in English written as a second language -------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("One man in electric scooter come from left side and cross in front of my car.", ["e-scooter"]),
+        ("A boy in bicycle suddenly go across the road from the right in front of me.", ["bicycle"]),
+        ("The woman in e-scooter is coming from sidewalk of right side and cross before me.", ["e-scooter"]),
+    ],
+    ids=["electric-scooter", "bicycle", "e-scooter"],
+)
+def test_a_person_in_a_bare_rideable_noun_rides_it(text, expected):
+    assert kinds(text) == expected
+
+
+def test_a_person_in_a_motor_vehicle_or_a_lane_is_not_riding_a_bike():
+    assert "bicycle" not in kinds("A man in the bike lane waved as a van pulled out from the left in front of me.")
+    assert kinds("A man in a hire van pulled out from the left in front of me.") == ["van"]
