@@ -194,27 +194,6 @@ def test_a_red_light_runner_meets_the_ego_s_path_and_what_it_does_next_comes_aft
     assert _play(layers, tmp_path) == []
 
 
-@pytest.mark.parametrize(
-    "text",
-    [
-        "At the roundabout a van from the left entry barrels on without yielding and then brakes to a halt.",
-        "We go round the roundabout at 30 km/h when a car from the right entry fails to give way, then stops dead.",
-        "Roundabout, ego at 15 km/h; a taxi joining from the left ignores the give-way line and slams to a stop.",
-    ],
-)
-def test_a_roundabout_run_then_a_stop_lasts_long_enough_to_be_played(text, tmp_path):
-    """The run of a road user entering a roundabout without giving way lasts half round the ring, and
-    the scenario lasts long enough for the stop it makes after it."""
-    from vei_scenario.language.rules_backend import layers_from_text
-
-    for seed in (0, 1):
-        layers = layers_from_text(text, seed)
-        names = [n["behaviour"] for n in layers["adversaries"][0]["behaviour"].get("sequence", [])]
-        if layers["environment"]["map"]["kind"] != "roundabout" or names[:1] != ["run_red_light"]:
-            pytest.skip(f"read otherwise: {names}")  # (the reader's part, not this one's)
-        assert _play(layers, tmp_path) == [], seed
-
-
 @pytest.mark.parametrize("kind", ["e-scooter", "bicycle", "truck"])
 @pytest.mark.parametrize("ego_speed", [7.0, 11.0, 16.0])
 @pytest.mark.parametrize("map_kind", ["straight", "curve"])
