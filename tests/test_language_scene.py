@@ -14,7 +14,7 @@ SCENE = "I am doing 40 km/h on a straight road in the rain and a van cuts in ahe
 def _what(text: str):
     r = read(text)
     actors = [(a.kind, [b[0] for b in a.behaviours], a.relation, a.speed_mps, a.distance_m) for a in r.actors]
-    return actors, r.ego_speed_mps, r.intent, r.weather, r.map_kind
+    return actors, r.ego_speed_mps, r.intent, r.weather, r.map_kind, r.time, r.density, r.lanes
 
 
 @pytest.mark.parametrize(
@@ -52,7 +52,7 @@ def test_the_answer_options_of_a_question_are_not_the_scene(wrapped, unused):
 def test_what_is_said_about_the_scene_is_not_the_scene(aside):
     for text in (SCENE + " " + aside, aside + " " + SCENE):
         assert _what(text) == _what(SCENE), text
-    assert set(read(SCENE + " " + aside).ignored) >= {w.strip("#?.") for w in aside.split()[-1:]} - {""}
+    assert set(read(SCENE + " " + aside).ignored) & {w.strip("#?.,").lower() for w in aside.split()}
 
 
 def test_thread_numbering_gives_no_number():
@@ -84,3 +84,41 @@ def test_a_denied_counterfactual_still_says_what_happened():
     """Saying "If I hadn't braked, ..." says the narrator braked: the sentence stays and its outcome is read."""
     text = "A cyclist pulls out in front of me at 30 km/h. If I hadn't braked, I would have hit him."
     assert read(text).intent == "near_miss"
+
+
+@pytest.mark.parametrize(
+    "record",
+    [
+        "Minutes of the Parish Roads Group, Monday 4 March, 7.15pm.\nPresent: Cllrs Moss, Reyes.\n"
+        "Apologies: Cllr Tan.\nThe minutes of the previous meeting were approved.\n" + SCENE + "\n"
+        "RESOLVED that the bus operator be written to.",
+        "Dear Highways Team,\n" + SCENE + "\nYours sincerely,\nJo Hart, who drives a lorry past there daily",
+        "Dear Sir,\n\n" + SCENE + "\n\nBest regards,\nSam, cyclist and van owner",
+    ],
+    ids=["minutes", "letter", "letter-blank-lines"],
+)
+def test_the_frame_of_a_record_or_a_letter_is_not_the_scene(record):
+    assert _what(record) == _what(SCENE)
+
+
+@pytest.mark.parametrize(
+    "text, kind, behaviour",
+    [
+        ("Actor: a van. Action: cuts in ahead of the ego at 40 km/h.", "van", "cut_in"),
+        (
+            "Dear colleagues, please build a test in which a cyclist crosses in front of the ego.",
+            "bicycle",
+            "cross_in_front",
+        ),
+        (
+            "Present in the scene: a pedestrian who crosses in front of the ego from the left kerb.",
+            "pedestrian",
+            "cross_in_front",
+        ),
+    ],
+    ids=["action-label", "salutation-in-the-request", "present-in-the-scene"],
+)
+def test_labels_that_look_like_a_record_are_still_read(text, kind, behaviour):
+    r = read(text)
+    assert [a.kind for a in r.actors] == [kind]
+    assert behaviour in [b[0] for b in r.actors[0].behaviours]

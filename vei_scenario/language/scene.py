@@ -38,6 +38,20 @@ _ASKED = re.compile(
 #: A condition in the past perfect, not denied ("if he'd been", "if I had left"): what did not happen.
 #: ("if I hadn't braked, I would have hit him" says what did happen, and is kept.)
 _COUNTERFACTUAL = re.compile(r"^\W*if\b[^,;]*?(?:\w(?:'d|’d)|\bhad)\s+(?!not\b)\w+", re.IGNORECASE)
+#: The formulas that frame a record or a letter rather than tell of the road: a meeting's roll and
+#: decisions ("Present: ...", "Apologies: ...", "RESOLVED that ...", "Minutes of ...",
+#: "The minutes of the last meeting were agreed"), and a letter's salutation and close ("Dear ...,",
+#: "Kind regards," and the name after it).
+_RECORD = re.compile(
+    r"^\W*(?:present|apologies|attendees|in attendance|agenda|cc)\s*:"
+    r"|^\W*resolved\b|^\W*(?:the\s+)?minutes\s+of\b|^\W*dear\b[^.!?\n]*,\s*$",
+    re.IGNORECASE,
+)
+_CLOSE = re.compile(
+    r"^\W*(?:(?:kind|best|warm)\s+(?:regards|wishes)|regards|yours\s+(?:faithfully|sincerely|truly)|"
+    r"many\s+thanks|thanks\s+in\s+advance)\s*,?\s*$",
+    re.IGNORECASE,
+)
 #: A past modal perfect said by someone afterwards ("I should've waited", "you could have stopped").
 _SHOULD_HAVE = re.compile(r"\bshould\s*(?:'ve|’ve|\s+have)\b", re.IGNORECASE)
 
@@ -61,6 +75,9 @@ def only_the_scene(text: str, names_road_user: Callable[[str], object]) -> tuple
         rest = "".join(parts[k + 2 :])
         if sentence.rstrip().endswith("?") and _options_follow(rest):
             aside += _words(sentence) + _words(rest)  # (a quiz: the stem before it is the scene)
+            break
+        if _CLOSE.match(sentence):
+            aside += _words(sentence) + _words(rest)  # (a letter's close and the signature after it)
             break
         if _not_the_scene(sentence, names_road_user):
             aside += _words(sentence)
@@ -87,8 +104,10 @@ def _not_the_scene(sentence: str, names_road_user: Callable[[str], object]) -> b
         return True  # ("Is this allowed?", "Was it your fault?", "Thoughts?")
     if _ASKED.search(said):
         return True  # ("She asked whether hire scooters could be geofenced off pavements.")
+    if _RECORD.match(said):
+        return True  # (a meeting's roll or decisions, a letter's salutation)
     return bool(_COUNTERFACTUAL.match(said) or _SHOULD_HAVE.search(said))
 
 
 def _words(part: str) -> list[str]:
-    return re.findall(r"[A-Za-z][A-Za-z'-]*", part)
+    return [w.lower() for w in re.findall(r"[A-Za-z][A-Za-z'-]*", part)]
