@@ -80,6 +80,18 @@ def test_a_question_or_list_that_is_the_scene_is_read(text, kind, behaviour):
     assert behaviour in [b[0] for b in r.actors[0].behaviours]
 
 
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Can you make a scenario where the ego drives at 50 km/h? A cyclist crosses in front of it from the right.",
+        "Could the ego be doing 30 mph on a wet night? A van pulls out in front of it.",
+        "What if I'm going 40 km/h? Then a bus brakes hard ahead of me.",
+    ],
+)
+def test_a_question_that_states_the_ego_or_a_number_is_the_scene(text):
+    assert read(text).ego_speed_mps is not None
+
+
 def test_a_denied_counterfactual_still_says_what_happened():
     """Saying "If I hadn't braked, ..." says the narrator braked: the sentence stays and its outcome is read."""
     text = "A cyclist pulls out in front of me at 30 km/h. If I hadn't braked, I would have hit him."

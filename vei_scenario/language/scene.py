@@ -29,6 +29,9 @@ _SECOND = re.compile(_OPTION.format("[Bb2]"))
 _THREAD = re.compile(r"(?m)^\s*\d{1,2}/(?=\s)")
 _HASHTAG = re.compile(r"#[A-Za-z]\w*")
 _PICTOGRAPH = re.compile("[\u2600-\u27bf\U0001f000-\U0001faff\ufe0f\u200d]")
+#: What only the scene has: a number (a speed, a gap, a clock time) or the ego named as such. A question
+#: with one asks for the scene ("Can the ego be doing 50 km/h?").
+_OF_THE_SCENE = re.compile(r"\d|\bego\b", re.IGNORECASE)
 #: A verb of asking or wondering, then the word that opens the question it reports.
 _ASKED = re.compile(
     r"\b(ask|asks|asked|asking|wonder|wonders|wondered|query|queried|queries|enquired|inquired)\s+"
@@ -100,7 +103,7 @@ def _not_the_scene(sentence: str, names_road_user: Callable[[str], object]) -> b
     """A question to the reader, a reported question, a counterfactual, or what someone says should
     have been done: none of them is what happened."""
     said = sentence.strip()
-    if said.endswith("?") and not names_road_user(said):
+    if said.endswith("?") and not (names_road_user(said) or _OF_THE_SCENE.search(said)):
         return True  # ("Is this allowed?", "Was it your fault?", "Thoughts?")
     if _ASKED.search(said):
         return True  # ("She asked whether hire scooters could be geofenced off pavements.")
