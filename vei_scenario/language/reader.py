@@ -55,6 +55,7 @@ from vei_scenario.language.normalise import NUMBER_WORDS, normalise
 from vei_scenario.language.outcome import decide, outcome_cues
 from vei_scenario.language.reading import ActorSpec, NotUnderstood, Reading
 from vei_scenario.language.route import ego_route
+from vei_scenario.language.scene import only_the_scene
 from vei_scenario.language.stated import (
     stated_clock,
     stated_heavy_rain,
@@ -1103,7 +1104,9 @@ def _resolve_relation(a: _Actor, map_kind: str | None, left_hand: bool = False) 
 def read(text: str) -> Reading:
     """Parse ``text`` into a :class:`~vei_scenario.language.reading.Reading` (with ``ignored``
     words); raise :class:`~vei_scenario.language.reading.NotUnderstood` naming what cannot be placed."""
+    text, aside = only_the_scene(text, lambda part: _actor_noun_in(part.lower()))  # (what is not the scene)
     clauses, ignored, read_as, scanned = scan(text)
+    ignored[:0] = [w for w in aside if w not in FUNCTION_WORDS]
     clauses = sides.narrator_lane(sides.relate_headings(clauses))
     clauses = out_of_a_side_road(destinations_not_origins(outcome_not_behaviour(_drop_label(clauses))), scanned)
     tokens = _tokens(text)

@@ -1,0 +1,116 @@
+"""Which parts of a text describe the scene at all.
+
+Real descriptions wrap the scene in material that is not the scene: the answer options of a quiz
+question, questions put to the reader ("Was it my fault?", "Thoughts?"), questions reported of
+someone ("She asked whether hire scooters could be geofenced"), what did not happen ("If he'd been
+sat on the lorry's bumper, ..."), thread numbering ("1/") and hashtags. Read as the scene, these give
+road users, behaviours, speeds and settings nobody saw. Each is recognised by its structure (a question
+mark, a run of lettered options after it, a verb of asking before "whether", a past perfect after
+"if"), never by its wording, and is set aside whole: its words are reported as not used.
+
+What is kept is what may be the scene: a question or an option list that names a road user and is
+not answering a question ("Can you make a scenario where a cyclist cuts in?", "Scenario: A) ego at
+50 km/h, B) a van cuts in") stays, and a text that would keep no road user is kept as it was.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable
+
+#: Between sentences: whitespace after an end mark, or a line break.
+_BREAK = re.compile(r"((?<=[.!?])\s+|\s*\n\s*)")
+#: The marker of an answer option: "A)", "(a)", "A.", "1.", "1)" at the start of a line or after
+#: whitespace, followed by a space.
+_OPTION = r"(?:^|(?<=\s))\(?{}[.)]\s"
+_FIRST = re.compile(_OPTION.format("[Aa1]"))
+_SECOND = re.compile(_OPTION.format("[Bb2]"))
+#: Thread numbering at the start of a line ("1/", "2/"), a hashtag, pictographs.
+_THREAD = re.compile(r"(?m)^\s*\d{1,2}/(?=\s)")
+_HASHTAG = re.compile(r"#[A-Za-z]\w*")
+_PICTOGRAPH = re.compile("[\u2600-\u27bf\U0001f000-\U0001faff\ufe0f\u200d]")
+#: What only the scene has: a number (a speed, a gap, a clock time) or the ego named as such. A question
+#: with one asks for the scene ("Can the ego be doing 50 km/h?").
+_OF_THE_SCENE = re.compile(r"\d|\bego\b", re.IGNORECASE)
+#: A verb of asking or wondering, then the word that opens the question it reports.
+_ASKED = re.compile(
+    r"\b(ask|asks|asked|asking|wonder|wonders|wondered|query|queried|queries|enquired|inquired)\s+"
+    r"(whether|if|what|why|how|who|when|where)\b",
+    re.IGNORECASE,
+)
+#: A condition in the past perfect, not denied ("if he'd been", "if I had left"): what did not happen.
+#: ("if I hadn't braked, I would have hit him" says what did happen, and is kept.)
+_COUNTERFACTUAL = re.compile(r"^\W*if\b[^,;]*?(?:\w(?:'d|’d)|\bhad)\s+(?!not\b)\w+", re.IGNORECASE)
+#: The formulas that frame a record or a letter rather than tell of the road: a meeting's roll and
+#: decisions ("Present: ...", "Apologies: ...", "RESOLVED that ...", "Minutes of ...",
+#: "The minutes of the last meeting were agreed"), and a letter's salutation and close ("Dear ...,",
+#: "Kind regards," and the name after it).
+_RECORD = re.compile(
+    r"^\W*(?:present|apologies|attendees|in attendance|agenda|cc)\s*:"
+    r"|^\W*resolved\b|^\W*(?:the\s+)?minutes\s+of\b|^\W*dear\b[^.!?\n]*,\s*$",
+    re.IGNORECASE,
+)
+_CLOSE = re.compile(
+    r"^\W*(?:(?:kind|best|warm)\s+(?:regards|wishes)|regards|yours\s+(?:faithfully|sincerely|truly)|"
+    r"many\s+thanks|thanks\s+in\s+advance)\s*,?\s*$",
+    re.IGNORECASE,
+)
+#: A past modal perfect said by someone afterwards ("I should've waited", "you could have stopped").
+_SHOULD_HAVE = re.compile(r"\bshould\s*(?:'ve|’ve|\s+have)\b", re.IGNORECASE)
+
+
+def only_the_scene(text: str, names_road_user: Callable[[str], object]) -> tuple[str, list[str]]:
+    """(the parts of ``text`` that may describe the scene, the words of the parts set aside).
+
+    ``names_road_user(phrase)`` is truthy when the phrase names a road user; a question or an option
+    list that names none is not the scene, and the scene must keep at least one if the text has one."""
+    aside: list[str] = []
+    text = _PICTOGRAPH.sub(" ", text)
+    text = _THREAD.sub(" ", text)
+    for tag in _HASHTAG.findall(text):
+        aside.append(tag[1:])
+    text = _HASHTAG.sub(" ", text)
+    kept: list[str] = []
+    parts = _BREAK.split(text)
+    k = 0
+    while k < len(parts):
+        sentence, sep = parts[k], parts[k + 1] if k + 1 < len(parts) else ""
+        rest = "".join(parts[k + 2 :])
+        if sentence.rstrip().endswith("?") and _options_follow(rest):
+            aside += _words(sentence) + _words(rest)  # (a quiz: the stem before it is the scene)
+            break
+        if _CLOSE.match(sentence):
+            aside += _words(sentence) + _words(rest)  # (a letter's close and the signature after it)
+            break
+        if _not_the_scene(sentence, names_road_user):
+            aside += _words(sentence)
+        else:
+            kept.append(sentence + sep)
+        k += 2
+    scene = "".join(kept).strip()
+    if not scene or (names_road_user(text) and not names_road_user(scene)):
+        return text, []
+    return scene, aside
+
+
+def _options_follow(rest: str) -> bool:
+    """Whether ``rest`` opens with a first answer option and has a second one after it."""
+    first = _FIRST.match(rest.lstrip())
+    return bool(first) and bool(_SECOND.search(rest.lstrip(), first.end()))
+
+
+def _not_the_scene(sentence: str, names_road_user: Callable[[str], object]) -> bool:
+    """A question to the reader, a reported question, a counterfactual, or what someone says should
+    have been done: none of them is what happened."""
+    said = sentence.strip()
+    if said.endswith("?") and not (names_road_user(said) or _OF_THE_SCENE.search(said)):
+        return True  # ("Is this allowed?", "Was it your fault?", "Thoughts?")
+    if _ASKED.search(said):
+        return True  # ("She asked whether hire scooters could be geofenced off pavements.")
+    if _RECORD.match(said):
+        return True  # (a meeting's roll or decisions, a letter's salutation)
+    return bool(_COUNTERFACTUAL.match(said) or _SHOULD_HAVE.search(said))
+
+
+def _words(part: str) -> list[str]:
+    return [w.lower() for w in re.findall(r"[A-Za-z][A-Za-z'-]*", part)]
