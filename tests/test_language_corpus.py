@@ -57,13 +57,15 @@ INDEPENDENT = {
     ROOT / "tests" / "data" / "language_independent_m.json": (50, 31),
     ROOT / "tests" / "data" / "language_independent_n.json": (45, 10),
     ROOT / "tests" / "data" / "language_independent_o.json": (45, 8),
+    ROOT / "tests" / "data" / "language_independent_r.json": (50, 8),
+    ROOT / "tests" / "data" / "language_independent_s.json": (50, 22),
 }
 
 
 @pytest.mark.parametrize(
     "corpus",
     sorted(INDEPENDENT),
-    ids=[f"independent-{c}" for c in "abcdefghijklmno"],
+    ids=[f"independent-{c}" for c in "abcdefghijklmnors"],
 )
 def test_independent_corpora_stay_at_their_measured_figures(corpus):
     results = check_corpus(load_corpus(corpus), layers_from_text)
