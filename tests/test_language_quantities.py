@@ -449,3 +449,58 @@ def test_a_time_gap_to_the_ego_is_at_the_egos_speed(text, gap):
     (the follower's, who keeps pace), not at the speed of another road user said in between."""
     r = read(text)
     assert [a.distance_m for a in r.actors if a.distance_m is not None] == [pytest.approx(gap)]
+
+
+# "@" before a number is the shorthand for "at": the number keeps the grammar of "at 3 m/s" and is
+# said of the road user that acts in its clause, not of the noun right before the sign.
+@pytest.mark.parametrize(
+    "text, kind, speed_mps",
+    [
+        ("A toddler toddles out from behind parked vans @ 1.5 m/s, ego 30 km/h.", "pedestrian", 1.5),
+        ("Ego 50 km/h; cyclist crosses between stationary buses @ 4 m/s from the left.", "bicycle", 4.0),
+        ("Ego 40 km/h; a fox darts across between parked cars @2 m/s.", "pedestrian", 2.0),
+    ],
+)
+def test_an_at_sign_before_a_number_reads_as_at(text, kind, speed_mps):
+    specs = read(text).actors
+    mover = next(s for s in specs if s.kind == kind)
+    assert mover.speed_mps == pytest.approx(speed_mps)
+    assert all(s.speed_mps in (None, 0.0) for s in specs if s is not mover)  # (the parked ones stand)
+
+
+def test_an_at_sign_without_a_number_is_no_speed():
+    from vei_scenario.language.reader import _tokens
+
+    assert "at" not in _tokens("ping @ops when the van @ the depot leaves")  # (a handle, a place: no number)
+    assert _tokens("a car @30kph")[-3:] == ["at", "30", "km/h"]
+
+
+# A number right after a noun that is the object of a place preposition ("between parked cars 3 m/s")
+# is not said of that noun: the scenery says where; the one that comes out from there has the number.
+@pytest.mark.parametrize(
+    "text, kind, speed_mps",
+    [
+        ("A jogger steps out between parked cars 3 m/s.", "pedestrian", 3.0),
+        ("A child runs out from behind two stationary vans 2 m/s, ego 30 km/h.", "pedestrian", 2.0),
+        ("Ego 40 km/h, a boy darts out between a few parked lorries 5 m/s.", "pedestrian", 5.0),
+        ("A scooter rider shoots out from behind a parked bus 4 m/s.", "e-scooter", 4.0),
+    ],
+)
+def test_a_number_after_scenery_in_a_place_phrase_is_the_movers(text, kind, speed_mps):
+    specs = read(text).actors
+    mover = next(s for s in specs if s.kind == kind)
+    assert mover.speed_mps == pytest.approx(speed_mps)
+    assert all(s.speed_mps in (None, 0.0) for s in specs if s is not mover)
+
+
+@pytest.mark.parametrize(
+    "text, kind, speed_mps",
+    [
+        # near misses: a number right after a road user that is no place's object is its own
+        ("Ego 50 km/h; cyclist 15 km/h ahead.", "bicycle", 15 / 3.6),
+        ("Ego 50 km/h, a car behind us 60 km/h.", "car", 60 / 3.6),
+    ],
+)
+def test_a_number_after_a_road_user_outside_a_place_phrase_stays_its_own(text, kind, speed_mps):
+    spec = next(s for s in read(text).actors if s.kind == kind)
+    assert spec.speed_mps == pytest.approx(speed_mps)

@@ -542,3 +542,52 @@ def test_a_rider_from_the_other_side_of_a_junction_comes_from_the_opposite_arm(t
 )
 def test_near_misses_of_the_opposite_arm(text):
     assert read(text).actors[0].relation != "junction_opposite"
+
+
+# A degree word before a place phrase ("right in front of me", "just ahead", "right behind us")
+# sharpens the place and never changes it: the road user starts where the bare phrase puts it.
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A taxi pulled up right in front of us and the driver got out.", "ahead"),
+        ("A lorry braked just in front of me at 40 km/h.", "ahead"),
+        ("A bus halted right ahead of us.", "ahead"),
+        ("A pickup braked directly in front of us.", "ahead"),
+        ("A hatchback sat right behind me for a mile, then overtook.", "behind"),
+    ],
+)
+def test_a_degree_word_keeps_the_place_it_sharpens(text, expected):
+    assert relation(text) == expected
+    bare = text.replace("right ", "").replace("just ", "").replace("directly ", "")
+    assert relation(bare) == expected  # (the same start as without the degree word)
+
+
+def test_a_degree_word_before_a_place_still_says_how_close():
+    # the danger the degree word says of an act at the ego stays read alongside the place
+    spec = read("A lorry braked just in front of me at 40 km/h.").actors[0]
+    assert spec.relation == "ahead" and abs(spec.speed_mps - 40 / 3.6) < 1e-9
+
+
+@pytest.mark.parametrize(
+    "text, behaviour, turn",
+    [
+        # near misses: "right" is the side a road user turns to, not a degree of the place after it
+        ("The cyclist turns right in front of me.", "forced_turn", "right"),
+        ("A van turned right into the side road just ahead of us.", "forced_turn", "right"),
+    ],
+)
+def test_a_side_word_before_a_place_stays_a_turn(text, behaviour, turn):
+    name, cfg, *_ = read(text).actors[0].behaviours[0]
+    assert (name, cfg.get("turn")) == (behaviour, turn)
+
+
+def test_place_after_degree_needs_a_degree_word_and_a_place():
+    from vei_scenario.language.reader import _relation_length
+    from vei_scenario.language.sides import place_after_degree
+
+    words = "a van stopped right in front of us".split()
+    assert place_after_degree(words, 3, ("right", "in", "front"), _relation_length) == 8
+    words = "he arrived just in time".split()  # "in time": no place after the degree word
+    assert place_after_degree(words, 2, ("just", "in", "time"), _relation_length) is None
+    words = "a car in the right lane".split()  # no degree word where the phrase starts
+    assert place_after_degree(words, 4, ("right", "lane"), _relation_length) is None

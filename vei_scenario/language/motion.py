@@ -264,6 +264,13 @@ _STOPS = frozenset((".", ",", ";", ":", "!", "?", "and", "but", "then", "while",
 _BETWEEN_MOVE_AND_WHERE = frozenset(("punct", "criticality", "distance", "speed"))
 
 
+def _place_follows(mentions: list, j: int) -> bool:
+    """Whether the place a degree phrase at ``mentions[j]`` starts is read as a relation of its own
+    right after it ("right in front of us": how exactly, then where)."""
+    nxt = mentions[j + 1] if j + 1 < len(mentions) else None
+    return nxt is not None and nxt.slot == "relation" and nxt.start == mentions[j].start + 1
+
+
 def _ends_in_front_of_the_ego(mentions: list, k: int) -> bool:
     """Whether the lane change at ``mentions[k]`` is said to end right in front of the ego ("changed
     lanes directly in front of my client", "slices over in front of me"): the ego named in a relation
@@ -271,7 +278,11 @@ def _ends_in_front_of_the_ego(mentions: list, k: int) -> bool:
     ego, in its lane, is what a cut-in is."""
     j = k + 1
     in_front = ("relation", "criticality")  # ("right in front" is read as how close, and says where too)
-    while j < len(mentions) and mentions[j].slot in _BETWEEN_MOVE_AND_WHERE and "in front" not in mentions[j].words:
+    while (
+        j < len(mentions)
+        and mentions[j].slot in _BETWEEN_MOVE_AND_WHERE
+        and ("in front" not in mentions[j].words or _place_follows(mentions, j))
+    ):
         j += 1
     if j >= len(mentions) or mentions[j].slot not in in_front:
         return False

@@ -420,6 +420,9 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     text = re.sub(r"\s*\|\s*|\s+/\s+", ". ", text)  # fields between bars or spaced slashes: one a sentence
     # a spaced dash between words ("light rain - delivery truck ..."): a break in the sentence, as a comma is
     text = re.sub(r"(?<=[^\W\d_])\s+[-\u2013\u2014]\s+(?=[^\W\d_])", ", ", text)
+    # "@ 3 m/s", "car@30kph": the shorthand for "at" before a number, so the number keeps the grammar of
+    # "at 3 m/s" (said of the one that acts), not of a bare number after a noun
+    text = re.sub(r"\s*@\s*(?=[~\d])", " at ", text)
     text = re.sub(r"(\d)\s*([ap])\.\s?m\.?", r"\1 \2m", text)  # "6 a.m.": "6 am" (no sentence ends there)
     text = re.sub(r"(\d)([ap]m)\b", r"\1 \2", text)  # "6pm": "6 pm"
     # the reader addressed ("you're doing 50 km/h", "your lane", "you brake hard"): the ego, as "I" is

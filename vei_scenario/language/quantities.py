@@ -295,6 +295,8 @@ def owners(
             k -= 1
         if k >= 1 and tokens[k] == "of" and tokens[k - 1] in SPEED_HEADS:  # "speed of the bus 15 km/h"
             return (owner,)
+        if j == i - 1 and _in_a_place_phrase(tokens, owner):
+            return ()  # "steps out between parked cars 3 m/s": the cars say where; the clause says whose
         if j == i - 1 and (unit or after_ego(tokens, i)):  # "cyclist 15 km/h", "ego 50": of the noun before it
             return (owner,)
         if unit and tokens[j + 1] == "at" and (k < 0 or tokens[k] in _CLAUSE_OPENERS):
@@ -320,6 +322,24 @@ def owners(
         first = None if joint is None else _mention_near(joint - 1, mention_ending_at)
         return (first, second) if first is not None and first >= 0 else ()
     return _key_of_line(tokens, i, mention_ending_at)
+
+
+#: Prepositions whose object is scenery a road user comes out of or past, not one that moves itself.
+_PLACE_OF_COMING_OUT = frozenset({"between", "among", "amongst", "behind"})
+#: Words that may stand in that object's noun phrase before its noun ("between two parked vans").
+_IN_THE_PHRASE = frozenset(
+    {"parked", "stationary", "stopped", "two", "three", "few", "couple", "some", "several", "of", "the", "a", "an"}
+)
+
+
+def _in_a_place_phrase(tokens: list[str], start: int) -> bool:
+    """Whether the road-user noun starting at ``start`` is the object of a place preposition ("between
+    parked cars", "from behind two stationary vans"): a number right after it is not said of it (the
+    scenery stands), but of the one the clause says comes out from there."""
+    k = start - 1
+    while k >= 0 and tokens[k] in _IN_THE_PHRASE:
+        k -= 1
+    return k >= 0 and tokens[k] in _PLACE_OF_COMING_OUT and k + 1 < start
 
 
 def _mention_near(k: int, mention_ending_at: Mentions) -> int:

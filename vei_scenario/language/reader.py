@@ -439,6 +439,12 @@ def _best(tokens: list[str], i: int) -> tuple[str, ...] | None:
 _DETERMINERS = {"the", "a", "an", "its", "our", "my", "their", "his", "her", "this", "that", "another", "some"}
 
 
+def _relation_length(tokens: list[str], k: int) -> int:
+    """The length of the relation phrase the table lists at token ``k`` ("in front of us"), or 0."""
+    key = _best(tokens, k) if k < len(tokens) else None
+    return len(key) if key is not None and TABLE[key][0] == "relation" else 0
+
+
 def _kind_at(tokens: list[str], i: int) -> tuple[str, int] | None:
     """The road-user type a phrase at ``i`` names and its length, or None (for :mod:`discourse`)."""
     key = _best(tokens, i)
@@ -687,6 +693,15 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             i += 1
             continue
         slot, value = TABLE[key]
+        placed = sides.place_after_degree(tokens, i, key, _relation_length) if slot != "relation" else None
+        if placed is not None:  # ("right in front of me": how exactly, and the place; "right ahead" too)
+            if slot != "noise":
+                clauses[-1][1].append(_Mention(slot, value, " ".join(key), i, prev, end=i + len(key)))
+            rel = TABLE[_best(tokens, i + 1)][1]
+            nxt = tokens[placed] if placed < len(tokens) else ""
+            clauses[-1][1].append(_Mention("relation", rel, " ".join(tokens[i + 1 : placed]), i + 1, tok, nxt, placed))
+            i = placed
+            continue
         if (
             slot == "relation"
             and key[-1] == "at"

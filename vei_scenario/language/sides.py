@@ -707,3 +707,21 @@ def opposite_approach(junction: bool, kind: str, far_side: bool, first: str | No
     not a kerb, when the one who comes from it rides and does not cross. A walker from there, or a
     rider said to cross, comes off the far kerb."""
     return junction and far_side and kind in ("bicycle", "e-scooter") and first in (None, "keep_going", "keep_lane")
+
+
+#: Degree words that say a place is exactly there ("right in front", "just ahead", "directly behind"):
+#: they sharpen the place, they never change it.
+_DEGREE = frozenset(("right", "just", "directly", "straight", "immediately", "bang", "dead", "smack", "slap"))
+
+
+def place_after_degree(tokens: list[str], i: int, key: tuple[str, ...], place_at) -> int | None:
+    """Where the place phrase ends when ``key`` (a phrase the lexicon lists at ``i``, of another slot)
+    is a degree word and the start of a place phrase ("right in front of me", "just ahead", "right
+    behind us"), else None. Why: the lexicon lists such phrases whole as a manner or as noise, and the
+    longest match then swallowed the place, so "stopped right in front of me" said no start at all
+    while "stopped in front of me" is ahead. ``place_at(tokens, k)`` is the length of the place phrase the
+    lexicon lists at token ``k`` (0 when none); the place must cover the rest of ``key``."""
+    if len(key) < 2 or key[0] not in _DEGREE or tokens[i] != key[0]:
+        return None
+    used = place_at(tokens, i + 1)
+    return i + 1 + used if used and 1 + used >= len(key) else None
