@@ -481,3 +481,40 @@ def test_a_vehicle_someone_else_is_in_stays_a_road_user():
 def test_the_insured_vehicle_by_its_initials_is_the_ego(text, kinds, kph):
     assert _kinds(text) == kinds
     assert _ego_kph(text) == kph
+
+
+# A named person in a vehicle ("Name, in the <vehicle>", "Name in one of the <vehicles>") is the one
+# the story follows: the vehicle is the ego (the person's speed its speed), never one more actor.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("Last night Marek, in the minibus on Elm Row doing 20 mph, had a jogger step out from the left "
+         "kerb in front of him.", ["pedestrian"], 32.2),
+        ("Oksana in the tipper on the ring road, doing 30 mph, and a cyclist swerved out from the "
+         "left into her lane.", ["bicycle"], 48.3),
+        ("Worst one: Tobias, in one of the Transits, going 25 km/h past the school when a child ran "
+         "out from the right in front of him.", ["pedestrian"], 25.0),
+    ],
+)  # fmt: skip
+def test_a_named_person_in_a_vehicle_is_the_ego(text, kinds, kph):
+    assert _kinds(text) == kinds
+    assert _ego_kph(text) == kph
+
+
+# Near misses: a person new to the text ("a man in the van"), a role ("the boy in the car"), a name
+# in a place named by a vehicle noun ("in the bus lane", "in the car park"): no ego from them.
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A man in the van opened his door as a cyclist doing 15 mph came past on the right.",
+        "Marek, in the bus lane on his bicycle, was clipped by a van doing 20 mph.",
+        "Oksana in the car park was nearly hit by a cyclist doing 15 mph who came out from the left.",
+        "The boy in the car waved as a cyclist doing 15 mph came out from the left.",
+    ],
+)  # fmt: skip
+def test_a_person_in_a_place_named_by_a_vehicle_noun_is_no_ego(text):
+    from vei_scenario.language import ego
+    from vei_scenario.language.reader import _kind_at, _known, _tokens
+
+    tokens = _tokens(text, brackets=True)
+    assert ego._at_the_wheel(tokens, _kind_at, _known, []) == tokens

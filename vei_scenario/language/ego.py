@@ -306,11 +306,28 @@ def _person_end(tokens: list[str], i: int, kind_at: KindAt, known: Known) -> int
     return i + 1 if name else None
 
 
+def _named_in(tokens: list[str], k: int, kind_at: KindAt, known: Known) -> bool:
+    """Whether the "in" at ``k`` puts a person just named in a vehicle ("Darren, in the van doing 15
+    mph", "Keith in the artic", "Priya, in one of the Corollas"): "the" (or "one of the") and a
+    vehicle phrase right after it that is no modifier of a place ("in the bus lane", "in the car
+    park") and not placed relative to someone ("in the van ahead": someone else's)."""
+    j = k + 1 + 2 * (tokens[k + 1 : k + 4] == ["one", "of", "the"])
+    if tokens[j : j + 1] != ["the"]:
+        return False
+    p = next((q for q in _vehicle_phrases(tokens, kind_at, known) if q.start in (j, j + 1)), None)
+    if p is None or _placed(tokens, p):
+        return False
+    after = tokens[p.end] if p.end < len(tokens) else ""
+    return not (after.isalpha() and after in lemmas(after).get("NOUN", ()))  # ("in the car park")
+
+
 def _at_the_wheel(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """ "a word from Dave, who's driving a bin lorry", "the pupil, driving the school's hatchback":
     the person at the wheel and the vehicle are the ego (the vehicle named once, its person after)."""
     for k, w in enumerate(tokens):
         inside = w == "in" and tokens[k + 1 : k + 2] in (["his"], ["her"], ["their"])
+        named_in = w == "in" and not inside and _named_in(tokens, k, kind_at, known)
+        inside = inside or named_in
         if w not in DRIVING and not inside:
             continue
         start = k  # the person, past ", who is"
@@ -322,9 +339,11 @@ def _at_the_wheel(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
         person = next(
             (s for s in range(max(start - 2, 0), start) if _person_end(tokens, s, kind_at, known) == end), None
         )
-        if person is None:
-            continue
+        if person is None or (named_in and kind_at(tokens, person) is not None):
+            continue  # (a name, not a role, in "the" vehicle: "the boy in the car" is a passenger)
         j = k + 1 + (k + 1 < len(tokens) and tokens[k + 1] in DEFINITE | INDEFINITE | {"his", "her", "their"})
+        if tokens[k + 1 : k + 4] == ["one", "of", "the"]:
+            j = k + 4  # ("in one of the Corollas")
         head = next((h for h in range(j, min(j + 3, len(tokens))) if kind_at(tokens, h) is not None), None)
         found = kind_at(tokens, head) if head is not None else None
         if found is None or found[0] not in VEHICLES or any(known(tokens, h) for h in range(j, head)):
