@@ -518,3 +518,39 @@ def test_a_person_in_a_place_named_by_a_vehicle_noun_is_no_ego(text):
 
     tokens = _tokens(text, brackets=True)
     assert ego._at_the_wheel(tokens, _kind_at, _known, []) == tokens
+
+
+# A news report about a driver ("A taxi driver has been praised ...", "The driver of a tipper, who was
+# doing 30 mph, ...") whose vehicle has a speed of its own is told from that vehicle: the ego, and so
+# is every later "the <noun>" of it and of the same kind of vehicle ("the taxi", "the cab").
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("A taxi driver has been thanked after stopping for a boy who ran out from the left. The cab, "
+         "going at around 25 mph, halted a metre short of him.", ["pedestrian"], 40.2),
+        ("The driver of a tipper, who was doing 30 mph, swerved when a cyclist came out of a side road "
+         "on the right.", ["bicycle"], 48.3),
+        ("A bus driver has been hailed a hero after a girl on a bike came out from the right in front "
+         "of the bus, which was travelling at 30 mph.", ["bicycle"], 48.3),
+    ],
+)  # fmt: skip
+def test_the_driver_a_news_report_is_about_is_the_ego(text, kinds, kph):
+    assert _kinds(text) == kinds
+    assert _ego_kph(text) == kph
+
+
+# Near misses: the speed is another road user's, or the driver is no subject of the story.
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A taxi driver watched as a van doing 40 mph hit a cyclist who came out from the left.",
+        "A cyclist has been praised after the driver of a bus overtook him on the right at 30 mph.",
+        "The driver of a bus parked ahead saw a cyclist doing 15 mph come out from the left.",
+    ],
+)  # fmt: skip
+def test_a_driver_without_a_speed_of_their_own_is_no_ego(text):
+    from vei_scenario.language import ego
+    from vei_scenario.language.reader import _kind_at, _known, _tokens
+
+    tokens = _tokens(text, brackets=True)
+    assert ego._news_driver(tokens, _kind_at, _known, []) == tokens

@@ -368,6 +368,54 @@ def _at_the_wheel(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
     return tokens
 
 
+def _news_driver(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """A news report about a driver ("A taxi driver has been praised ...", "The driver of a delivery
+    van, who was doing 20 mph, braked ..."): the driver, the subject opening its clause, named with
+    their vehicle, is the one the report follows when that vehicle has a speed of its own (right
+    after the driver, before anyone else is named: ", who was doing 20 mph"; or at a later "the
+    <noun>": "the lorry, travelling at 50 mph"). That vehicle is the ego, and so is every later
+    "the" mention of it and of the same kind of vehicle no "a" introduces ("the HGV")."""
+    users = _road_users(tokens, kind_at, known)
+    for n, p in enumerate(users):
+        if tokens[p.end - 1] != "driver" or (p.start and tokens[p.start - 1] not in CLAUSE_OPENING):
+            continue
+        if p.end - p.head == 2 and (found := kind_at(tokens, p.end - 2)) is not None and found[0] in VEHICLES:
+            vehicle, end = tokens[p.end - 2], p.end  # ("a lorry driver")
+        elif tokens[p.end : p.end + 1] == ["of"] and n + 1 < len(users) and users[n + 1].start == p.end + 1:
+            q = users[n + 1]  # ("the driver of a delivery van")
+            if q.kind not in VEHICLES or _placed(tokens, q):
+                return tokens
+            vehicle, end = tokens[q.end - 1], q.end
+        else:
+            return tokens  # (only the first driver named, as the story's subject)
+        kind = kind_at(tokens, tokens.index(vehicle, p.start))[0]  # type: ignore[index]
+        later = [q for q in users if q.start >= end]
+        if any(q.det in INDEFINITE and tokens[q.end - 1] == vehicle for q in later):
+            return tokens  # (another vehicle of that name)
+        new = {tokens[q.end - 1] for q in later if q.det in INDEFINITE}
+        spans = [(end, next((q.start for q in later), len(tokens)))]
+        spans += [  # ("the lorry, travelling at 50 mph", "the cab, going at 25 mph")
+            (q.end, next((r.start for r in later if r.start >= q.end), len(tokens)))
+            for q in later
+            if q.det == "the" and q.kind == kind and tokens[q.end - 1] not in new and tokens[q.end : q.end + 1] == [","]
+        ]
+        if not any(any(w in SPEED_UNITS for w in tokens[a : min(b, _sentence(tokens, a)[1])]) for a, b in spans):
+            return tokens
+        dropped.extend(w for w in tokens[p.start : end] if w.isalpha() and w not in DEFINITE | INDEFINITE)
+        out = [*tokens[: p.start], "the", "ego", *tokens[end:]]
+        out = _as_ego(out, kind_at, known, vehicle, dropped)
+        same = {
+            out[q.end - 1]
+            for q in _vehicle_phrases(out, kind_at, known)
+            if q.kind == kind and q.det == "the" and q.end - q.head == 1
+        }
+        for noun in sorted(same):
+            if not any(q.det in INDEFINITE and out[q.end - 1] == noun for q in _vehicle_phrases(out, kind_at, known)):
+                out = _as_ego(out, kind_at, known, noun, dropped)
+        return out
+    return tokens
+
+
 def _role(tokens: list[str], kind_at: KindAt) -> list[str]:
     """A person named by the role a driving lesson or a claim gives them ("Pupil approached the
     roundabout at 20 mph", "the policyholder was travelling"): a learner in a sentence that gives a
@@ -827,6 +875,9 @@ def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) 
     if _labels(tokens, kind_at, known):
         return tokens  # (a report's labels say who the ego is)
     tokens = _at_the_wheel(tokens, kind_at, known, dropped)
+    if names_ego(tokens, kind_at, known):
+        return tokens
+    tokens = _news_driver(tokens, kind_at, known, dropped)
     if names_ego(tokens, kind_at, known):
         return tokens
     tokens = _role(tokens, kind_at)
