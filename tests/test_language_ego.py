@@ -554,3 +554,35 @@ def test_a_driver_without_a_speed_of_their_own_is_no_ego(text):
 
     tokens = _tokens(text, brackets=True)
     assert ego._news_driver(tokens, _kind_at, _known, []) == tokens
+
+
+# Once a named person driving "her"/"his" vehicle is the ego, "she"/"he" (and "her"/"him") are that
+# driver: braking or stopping said of them is the ego's reaction, no behaviour of the other road user.
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Gran was driving her old Fiesta through the village at 20 mph when a van pulled out right in "
+        "front of her. She braked hard.",
+        "Aisha was driving her hatchback down the hill at 25 mph and a bus pulled out from a stop just "
+        "ahead of her. She stopped dead.",
+        "Uncle Ray was driving his pickup at 30 mph when a lorry reversed out of a yard on the left "
+        "in front of him. He slammed on the brakes.",
+    ],
+)
+def test_the_pronoun_of_a_named_driver_is_the_ego(text):
+    assert len(read(text).actors) == 1
+    assert not any(b[0] == "sudden_stop" for a in read(text).actors for b in a.behaviours)
+
+
+# Near misses: the other road user is the subject of the stop, or a person of the same gender is
+# named besides the driver (then "she" may be her).
+def test_a_pronoun_that_may_be_someone_else_stays():
+    text = "Gran was driving her Fiesta at 20 mph when a van in front of her stopped suddenly."
+    assert any(b[0] == "sudden_stop" for a in read(text).actors for b in a.behaviours)
+    from vei_scenario.language import ego
+    from vei_scenario.language.reader import _kind_at, _known, _tokens
+
+    text = "Gran was driving her Fiesta at 20 mph when a girl ran out in front of her; she stopped in the road."
+    assert "she" in ego.frame(_tokens(text, brackets=True), _kind_at, _known, [])
+    text = "Ray was driving his van at 20 mph when a man stepped out in front of him and he stopped dead."
+    assert "he" in ego.frame(_tokens(text, brackets=True), _kind_at, _known, [])

@@ -364,8 +364,42 @@ def _at_the_wheel(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
                 continue
             said.append(out[i])
             i += 1
-        return said
+        owner = tokens[k + 1] if k + 1 < len(tokens) and tokens[k + 1] in PRONOUNS_OF else None
+        return _pronouns_as_ego(said, owner, known) if owner else said
     return tokens
+
+
+#: The pronouns ("she", "her") that a possessive ("driving her car") gives its owner: subject,
+#: object. Only the gendered ones: "they" may be any group of road users.
+PRONOUNS_OF = {"her": ("she", "her"), "his": ("he", "him")}
+#: Person nouns of each gender, a small closed class: one named besides the driver may be "she"/"he".
+GENDERED = {
+    "her": frozenset("woman women girl girls lady mother mum gran grandmother schoolgirl daughter".split()),
+    "his": frozenset("man men boy boys lad lads gentleman father dad grandad schoolboy son bloke".split()),
+}
+
+
+def _pronouns_as_ego(tokens: list[str], owner: str, known: Known) -> list[str]:
+    """``tokens`` (a named driver already said "the ego") with the driver's pronouns after the ego
+    said "the ego" too ("a van pulled out in front of her. She braked hard": the ego's reaction, not
+    the van's), where no other person of that gender is named ("a girl ran out ... she stopped");
+    "her" before a noun is the ego's ("her mirror")."""
+    subject, obj = PRONOUNS_OF[owner]
+    if any(w in GENDERED[owner] for w in tokens):
+        return tokens
+    first = next((i for i in range(len(tokens) - 1) if tokens[i : i + 2] == ["the", "ego"]), None)
+    if first is None:
+        return tokens
+    out = tokens[: first + 2]
+    for i in range(first + 2, len(tokens)):
+        w, nxt = tokens[i], tokens[i + 1] if i + 1 < len(tokens) else ""
+        if w == subject or (w == obj and w != owner):
+            out += ["the", "ego"]
+        elif w == owner == obj and not (nxt.isalpha() and "NOUN" in lemmas(nxt) and nxt not in BETWEEN):
+            out += ["the", "ego"]  # ("in front of her": the object, no possessive)
+        else:
+            out.append(w)
+    return out
 
 
 def _news_driver(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
