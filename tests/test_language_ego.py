@@ -586,3 +586,28 @@ def test_a_pronoun_that_may_be_someone_else_stays():
     assert "she" in ego.frame(_tokens(text, brackets=True), _kind_at, _known, [])
     text = "Ray was driving his van at 20 mph when a man stepped out in front of him and he stopped dead."
     assert "he" in ego.frame(_tokens(text, brackets=True), _kind_at, _known, [])
+
+
+# A bare speed on a British high street is in mph, the unit of its signs (the ego's speed).
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("Mum was driving her Polo along the High Street, about 20, when a bus pulled out ahead of her.", 32.2),
+        ("Doing 30 down the high street and a cyclist came out of a side road on the left.", 48.3),
+        ("Ben was driving his van up Castle High Street at maybe 15 when a dog ran out from the right.", 24.1),
+    ],
+)  # fmt: skip
+def test_a_bare_speed_on_a_high_street_is_mph(text, kph):
+    assert _ego_kph(text) == kph
+
+
+# Near misses: a speed with its unit keeps it; a street that is only high is no high street.
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("Doing 30 km/h down the high street and a cyclist came out of a side road on the left.", 30.0),
+        ("Doing 30 on a high, narrow street and a cyclist came out of a side road on the left.", 30.0),
+    ],
+)  # fmt: skip
+def test_a_speed_with_its_unit_or_no_high_street_keeps_km_h(text, kph):
+    assert _ego_kph(text) == kph
