@@ -611,3 +611,39 @@ def test_a_bare_speed_on_a_high_street_is_mph(text, kph):
 )  # fmt: skip
 def test_a_speed_with_its_unit_or_no_high_street_keeps_km_h(text, kph):
     assert _ego_kph(text) == kph
+
+
+# A clause of driving with no subject of its own ("while driving her own car ..., she had to brake")
+# has the subject of the clause it leads into: that person drives, so the vehicle is the ego and so
+# are "she"/"he" after it.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("While driving his taxi along Park Road at 25 mph, he had to brake when a cyclist rode out from "
+         "the left in front of him.", ["bicycle"], 40.2),
+        ("Mrs Hale said that, when driving her own car through town at 20 km/h, she was cut up by a van "
+         "from the right.", ["van"], 20.0),
+        ("Driving his lorry out of the depot at 10 km/h, he met a jogger who ran across from the left.",
+         ["pedestrian"], 10.0),
+    ],
+)  # fmt: skip
+def test_a_subjectless_clause_of_driving_makes_its_vehicle_the_ego(text, kinds, kph):
+    assert _kinds(text) == kinds
+    assert _ego_kph(text) == kph
+
+
+# Near misses: the pronoun after it is not the driver's; the driving clause has a subject of its own.
+@pytest.mark.parametrize(
+    "text",
+    [
+        "While driving his van at 20 km/h, she saw a cyclist come out from the left.",
+        "A woman driving her car at 20 km/h stopped when a cyclist came out from the left.",
+        "While he was driving his van at 20 km/h, she saw a cyclist come out from the left.",
+    ],
+)
+def test_a_clause_of_driving_with_another_subject_frames_nothing(text):
+    from vei_scenario.language import ego
+    from vei_scenario.language.reader import _kind_at, _known, _tokens
+
+    tokens = _tokens(text, brackets=True)
+    assert ego._driving_subject(tokens, _kind_at, _known, []) == tokens

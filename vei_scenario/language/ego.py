@@ -402,6 +402,37 @@ def _pronouns_as_ego(tokens: list[str], owner: str, known: Known) -> list[str]:
     return out
 
 
+#: Words that open a clause of driving that has no subject of its own ("while driving her car, she").
+SUBORDINATORS = frozenset({"while", "whilst", "when"})
+
+
+def _driving_subject(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "while driving her own car along Victoria Road at 20 mph, she had to brake", "Driving his lorry
+    out of the depot, he met ...": a clause of driving with no subject of its own, opening its
+    sentence or after "while"/"when", has the subject of the clause it leads into; where that is the
+    pronoun its possessive gives ("her" car: "she"), that person drives: the vehicle is the ego (it
+    goes, the verb stays with its speed), and so are that pronoun and the later ones of its owner."""
+    for k, w in enumerate(tokens):
+        if w not in DRIVING or k + 1 >= len(tokens) or tokens[k + 1] not in PRONOUNS_OF:
+            continue
+        before = tokens[k - 1] if k else ""
+        if before not in SUBORDINATORS and k and before not in CLAUSE_OPENING | {"that"}:
+            continue
+        p = next((q for q in _vehicle_phrases(tokens, kind_at, known) if k + 1 < q.end <= k + 5), None)
+        if p is None or _placed(tokens, p) or any(x not in OWNING and known(tokens, j) for j, x in
+                                                  enumerate(tokens[k + 1 : p.start], k + 1)):  # fmt: skip
+            continue
+        _, e = _sentence(tokens, k)
+        comma = next((c for c in range(p.end, e) if tokens[c] == ","), None)
+        owner = tokens[k + 1]
+        if comma is None or tokens[comma + 1 : comma + 2] != [PRONOUNS_OF[owner][0]]:
+            continue
+        dropped.extend(x for x in tokens[k + 1 : p.end] if x.isalpha() and x not in OWNING)
+        out = [*tokens[: k + 1], *tokens[p.end : comma + 1], "the", "ego", *tokens[comma + 2 :]]
+        return _pronouns_as_ego(out, owner, known)
+    return tokens
+
+
 def _news_driver(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """A news report about a driver ("A taxi driver has been praised ...", "The driver of a delivery
     van, who was doing 20 mph, braked ..."): the driver, the subject opening its clause, named with
@@ -909,6 +940,9 @@ def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) 
     if _labels(tokens, kind_at, known):
         return tokens  # (a report's labels say who the ego is)
     tokens = _at_the_wheel(tokens, kind_at, known, dropped)
+    if names_ego(tokens, kind_at, known):
+        return tokens
+    tokens = _driving_subject(tokens, kind_at, known, dropped)
     if names_ego(tokens, kind_at, known):
         return tokens
     tokens = _news_driver(tokens, kind_at, known, dropped)
