@@ -647,3 +647,15 @@ def test_a_clause_of_driving_with_another_subject_frames_nothing(text):
 
     tokens = _tokens(text, brackets=True)
     assert ego._driving_subject(tokens, _kind_at, _known, []) == tokens
+
+
+def test_a_subject_pronoun_after_a_walker_or_rider_may_be_them():
+    from vei_scenario.language import ego
+    from vei_scenario.language.reader import _kind_at, _known, _tokens
+
+    for text in (
+        "Tom was driving his van at 20 mph when a cyclist pulled out in front of him; he wobbled and fell off.",
+        "Jo was driving her car at 20 km/h when a jogger crossed in front of her and she tripped on the kerb.",
+    ):
+        framed = ego.frame(_tokens(text, brackets=True), _kind_at, _known, [])
+        assert framed.count("ego") == 2  # (the driver and the object pronoun, not the rider's "he")

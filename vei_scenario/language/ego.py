@@ -365,7 +365,7 @@ def _at_the_wheel(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
             said.append(out[i])
             i += 1
         owner = tokens[k + 1] if k + 1 < len(tokens) and tokens[k + 1] in PRONOUNS_OF else None
-        return _pronouns_as_ego(said, owner, known) if owner else said
+        return _pronouns_as_ego(said, owner, kind_at, known) if owner else said
     return tokens
 
 
@@ -379,7 +379,7 @@ GENDERED = {
 }
 
 
-def _pronouns_as_ego(tokens: list[str], owner: str, known: Known) -> list[str]:
+def _pronouns_as_ego(tokens: list[str], owner: str, kind_at: KindAt, known: Known) -> list[str]:
     """``tokens`` (a named driver already said "the ego") with the driver's pronouns after the ego
     said "the ego" too ("a van pulled out in front of her. She braked hard": the ego's reaction, not
     the van's), where no other person of that gender is named ("a girl ran out ... she stopped");
@@ -390,10 +390,14 @@ def _pronouns_as_ego(tokens: list[str], owner: str, known: Known) -> list[str]:
     first = next((i for i in range(len(tokens) - 1) if tokens[i : i + 2] == ["the", "ego"]), None)
     if first is None:
         return tokens
+    users = _road_users(tokens, kind_at, known)
     out = tokens[: first + 2]
     for i in range(first + 2, len(tokens)):
         w, nxt = tokens[i], tokens[i + 1] if i + 1 < len(tokens) else ""
-        if w == subject or (w == obj and w != owner):
+        last = next((q for q in reversed(users) if q.end <= i), None)
+        if w == subject and last is not None and last.kind not in VEHICLES | {"ego"}:
+            out.append(w)  # (a walker or rider just named may be "he": "a cyclist pulled out; he fell")
+        elif w == subject or (w == obj and w != owner):
             out += ["the", "ego"]
         elif w == owner == obj and not (nxt.isalpha() and "NOUN" in lemmas(nxt) and nxt not in BETWEEN):
             out += ["the", "ego"]  # ("in front of her": the object, no possessive)
@@ -429,7 +433,7 @@ def _driving_subject(tokens: list[str], kind_at: KindAt, known: Known, dropped: 
             continue
         dropped.extend(x for x in tokens[k + 1 : p.end] if x.isalpha() and x not in OWNING)
         out = [*tokens[: k + 1], *tokens[p.end : comma + 1], "the", "ego", *tokens[comma + 2 :]]
-        return _pronouns_as_ego(out, owner, known)
+        return _pronouns_as_ego(out, owner, kind_at, known)
     return tokens
 
 
