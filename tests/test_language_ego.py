@@ -481,3 +481,181 @@ def test_a_vehicle_someone_else_is_in_stays_a_road_user():
 def test_the_insured_vehicle_by_its_initials_is_the_ego(text, kinds, kph):
     assert _kinds(text) == kinds
     assert _ego_kph(text) == kph
+
+
+# A named person in a vehicle ("Name, in the <vehicle>", "Name in one of the <vehicles>") is the one
+# the story follows: the vehicle is the ego (the person's speed its speed), never one more actor.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("Last night Marek, in the minibus on Elm Row doing 20 mph, had a jogger step out from the left "
+         "kerb in front of him.", ["pedestrian"], 32.2),
+        ("Oksana in the tipper on the ring road, doing 30 mph, and a cyclist swerved out from the "
+         "left into her lane.", ["bicycle"], 48.3),
+        ("Worst one: Tobias, in one of the Transits, going 25 km/h past the school when a child ran "
+         "out from the right in front of him.", ["pedestrian"], 25.0),
+    ],
+)  # fmt: skip
+def test_a_named_person_in_a_vehicle_is_the_ego(text, kinds, kph):
+    assert _kinds(text) == kinds
+    assert _ego_kph(text) == kph
+
+
+# Near misses: a person new to the text ("a man in the van"), a role ("the boy in the car"), a name
+# in a place named by a vehicle noun ("in the bus lane", "in the car park"): no ego from them.
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A man in the van opened his door as a cyclist doing 15 mph came past on the right.",
+        "Marek, in the bus lane on his bicycle, was clipped by a van doing 20 mph.",
+        "Oksana in the car park was nearly hit by a cyclist doing 15 mph who came out from the left.",
+        "The boy in the car waved as a cyclist doing 15 mph came out from the left.",
+    ],
+)  # fmt: skip
+def test_a_person_in_a_place_named_by_a_vehicle_noun_is_no_ego(text):
+    from vei_scenario.language import ego
+    from vei_scenario.language.reader import _kind_at, _known, _tokens
+
+    tokens = _tokens(text, brackets=True)
+    assert ego._at_the_wheel(tokens, _kind_at, _known, []) == tokens
+
+
+# A news report about a driver ("A taxi driver has been praised ...", "The driver of a tipper, who was
+# doing 30 mph, ...") whose vehicle has a speed of its own is told from that vehicle: the ego, and so
+# is every later "the <noun>" of it and of the same kind of vehicle ("the taxi", "the cab").
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("A taxi driver has been thanked after stopping for a boy who ran out from the left. The cab, "
+         "going at around 25 mph, halted a metre short of him.", ["pedestrian"], 40.2),
+        ("The driver of a tipper, who was doing 30 mph, swerved when a cyclist came out of a side road "
+         "on the right.", ["bicycle"], 48.3),
+        ("A bus driver has been hailed a hero after a girl on a bike came out from the right in front "
+         "of the bus, which was travelling at 30 mph.", ["bicycle"], 48.3),
+    ],
+)  # fmt: skip
+def test_the_driver_a_news_report_is_about_is_the_ego(text, kinds, kph):
+    assert _kinds(text) == kinds
+    assert _ego_kph(text) == kph
+
+
+# Near misses: the speed is another road user's, or the driver is no subject of the story.
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A taxi driver watched as a van doing 40 mph hit a cyclist who came out from the left.",
+        "A cyclist has been praised after the driver of a bus overtook him on the right at 30 mph.",
+        "The driver of a bus parked ahead saw a cyclist doing 15 mph come out from the left.",
+    ],
+)  # fmt: skip
+def test_a_driver_without_a_speed_of_their_own_is_no_ego(text):
+    from vei_scenario.language import ego
+    from vei_scenario.language.reader import _kind_at, _known, _tokens
+
+    tokens = _tokens(text, brackets=True)
+    assert ego._news_driver(tokens, _kind_at, _known, []) == tokens
+
+
+# Once a named person driving "her"/"his" vehicle is the ego, "she"/"he" (and "her"/"him") are that
+# driver: braking or stopping said of them is the ego's reaction, no behaviour of the other road user.
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Gran was driving her old Fiesta through the village at 20 mph when a van pulled out right in "
+        "front of her. She braked hard.",
+        "Aisha was driving her hatchback down the hill at 25 mph and a bus pulled out from a stop just "
+        "ahead of her. She stopped dead.",
+        "Uncle Ray was driving his pickup at 30 mph when a lorry reversed out of a yard on the left "
+        "in front of him. He slammed on the brakes.",
+    ],
+)
+def test_the_pronoun_of_a_named_driver_is_the_ego(text):
+    assert len(read(text).actors) == 1
+    assert not any(b[0] == "sudden_stop" for a in read(text).actors for b in a.behaviours)
+
+
+# Near misses: the other road user is the subject of the stop, or a person of the same gender is
+# named besides the driver (then "she" may be her).
+def test_a_pronoun_that_may_be_someone_else_stays():
+    text = "Gran was driving her Fiesta at 20 mph when a van in front of her stopped suddenly."
+    assert any(b[0] == "sudden_stop" for a in read(text).actors for b in a.behaviours)
+    from vei_scenario.language import ego
+    from vei_scenario.language.reader import _kind_at, _known, _tokens
+
+    text = "Gran was driving her Fiesta at 20 mph when a girl ran out in front of her; she stopped in the road."
+    assert "she" in ego.frame(_tokens(text, brackets=True), _kind_at, _known, [])
+    text = "Ray was driving his van at 20 mph when a man stepped out in front of him and he stopped dead."
+    assert "he" in ego.frame(_tokens(text, brackets=True), _kind_at, _known, [])
+
+
+# A bare speed on a British high street is in mph, the unit of its signs (the ego's speed).
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("Mum was driving her Polo along the High Street, about 20, when a bus pulled out ahead of her.", 32.2),
+        ("Doing 30 down the high street and a cyclist came out of a side road on the left.", 48.3),
+        ("Ben was driving his van up Castle High Street at maybe 15 when a dog ran out from the right.", 24.1),
+    ],
+)  # fmt: skip
+def test_a_bare_speed_on_a_high_street_is_mph(text, kph):
+    assert _ego_kph(text) == kph
+
+
+# Near misses: a speed with its unit keeps it; a street that is only high is no high street.
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("Doing 30 km/h down the high street and a cyclist came out of a side road on the left.", 30.0),
+        ("Doing 30 on a high, narrow street and a cyclist came out of a side road on the left.", 30.0),
+    ],
+)  # fmt: skip
+def test_a_speed_with_its_unit_or_no_high_street_keeps_km_h(text, kph):
+    assert _ego_kph(text) == kph
+
+
+# A clause of driving with no subject of its own ("while driving her own car ..., she had to brake")
+# has the subject of the clause it leads into: that person drives, so the vehicle is the ego and so
+# are "she"/"he" after it.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("While driving his taxi along Park Road at 25 mph, he had to brake when a cyclist rode out from "
+         "the left in front of him.", ["bicycle"], 40.2),
+        ("Mrs Hale said that, when driving her own car through town at 20 km/h, she was cut up by a van "
+         "from the right.", ["van"], 20.0),
+        ("Driving his lorry out of the depot at 10 km/h, he met a jogger who ran across from the left.",
+         ["pedestrian"], 10.0),
+    ],
+)  # fmt: skip
+def test_a_subjectless_clause_of_driving_makes_its_vehicle_the_ego(text, kinds, kph):
+    assert _kinds(text) == kinds
+    assert _ego_kph(text) == kph
+
+
+# Near misses: the pronoun after it is not the driver's; the driving clause has a subject of its own.
+@pytest.mark.parametrize(
+    "text",
+    [
+        "While driving his van at 20 km/h, she saw a cyclist come out from the left.",
+        "A woman driving her car at 20 km/h stopped when a cyclist came out from the left.",
+        "While he was driving his van at 20 km/h, she saw a cyclist come out from the left.",
+    ],
+)
+def test_a_clause_of_driving_with_another_subject_frames_nothing(text):
+    from vei_scenario.language import ego
+    from vei_scenario.language.reader import _kind_at, _known, _tokens
+
+    tokens = _tokens(text, brackets=True)
+    assert ego._driving_subject(tokens, _kind_at, _known, []) == tokens
+
+
+def test_a_subject_pronoun_after_a_walker_or_rider_may_be_them():
+    from vei_scenario.language import ego
+    from vei_scenario.language.reader import _kind_at, _known, _tokens
+
+    for text in (
+        "Tom was driving his van at 20 mph when a cyclist pulled out in front of him; he wobbled and fell off.",
+        "Jo was driving her car at 20 km/h when a jogger crossed in front of her and she tripped on the kerb.",
+    ):
+        framed = ego.frame(_tokens(text, brackets=True), _kind_at, _known, [])
+        assert framed.count("ego") == 2  # (the driver and the object pronoun, not the rider's "he")

@@ -306,11 +306,28 @@ def _person_end(tokens: list[str], i: int, kind_at: KindAt, known: Known) -> int
     return i + 1 if name else None
 
 
+def _named_in(tokens: list[str], k: int, kind_at: KindAt, known: Known) -> bool:
+    """Whether the "in" at ``k`` puts a person just named in a vehicle ("Darren, in the van doing 15
+    mph", "Keith in the artic", "Priya, in one of the Corollas"): "the" (or "one of the") and a
+    vehicle phrase right after it that is no modifier of a place ("in the bus lane", "in the car
+    park") and not placed relative to someone ("in the van ahead": someone else's)."""
+    j = k + 1 + 2 * (tokens[k + 1 : k + 4] == ["one", "of", "the"])
+    if tokens[j : j + 1] != ["the"]:
+        return False
+    p = next((q for q in _vehicle_phrases(tokens, kind_at, known) if q.start in (j, j + 1)), None)
+    if p is None or _placed(tokens, p):
+        return False
+    after = tokens[p.end] if p.end < len(tokens) else ""
+    return not (after.isalpha() and after in lemmas(after).get("NOUN", ()))  # ("in the car park")
+
+
 def _at_the_wheel(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """ "a word from Dave, who's driving a bin lorry", "the pupil, driving the school's hatchback":
     the person at the wheel and the vehicle are the ego (the vehicle named once, its person after)."""
     for k, w in enumerate(tokens):
         inside = w == "in" and tokens[k + 1 : k + 2] in (["his"], ["her"], ["their"])
+        named_in = w == "in" and not inside and _named_in(tokens, k, kind_at, known)
+        inside = inside or named_in
         if w not in DRIVING and not inside:
             continue
         start = k  # the person, past ", who is"
@@ -322,9 +339,11 @@ def _at_the_wheel(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
         person = next(
             (s for s in range(max(start - 2, 0), start) if _person_end(tokens, s, kind_at, known) == end), None
         )
-        if person is None:
-            continue
+        if person is None or (named_in and kind_at(tokens, person) is not None):
+            continue  # (a name, not a role, in "the" vehicle: "the boy in the car" is a passenger)
         j = k + 1 + (k + 1 < len(tokens) and tokens[k + 1] in DEFINITE | INDEFINITE | {"his", "her", "their"})
+        if tokens[k + 1 : k + 4] == ["one", "of", "the"]:
+            j = k + 4  # ("in one of the Corollas")
         head = next((h for h in range(j, min(j + 3, len(tokens))) if kind_at(tokens, h) is not None), None)
         found = kind_at(tokens, head) if head is not None else None
         if found is None or found[0] not in VEHICLES or any(known(tokens, h) for h in range(j, head)):
@@ -345,7 +364,124 @@ def _at_the_wheel(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
                 continue
             said.append(out[i])
             i += 1
-        return said
+        owner = tokens[k + 1] if k + 1 < len(tokens) and tokens[k + 1] in PRONOUNS_OF else None
+        return _pronouns_as_ego(said, owner, kind_at, known) if owner else said
+    return tokens
+
+
+#: The pronouns ("she", "her") that a possessive ("driving her car") gives its owner: subject,
+#: object. Only the gendered ones: "they" may be any group of road users.
+PRONOUNS_OF = {"her": ("she", "her"), "his": ("he", "him")}
+#: Person nouns of each gender, a small closed class: one named besides the driver may be "she"/"he".
+GENDERED = {
+    "her": frozenset("woman women girl girls lady mother mum gran grandmother schoolgirl daughter".split()),
+    "his": frozenset("man men boy boys lad lads gentleman father dad grandad schoolboy son bloke".split()),
+}
+
+
+def _pronouns_as_ego(tokens: list[str], owner: str, kind_at: KindAt, known: Known) -> list[str]:
+    """``tokens`` (a named driver already said "the ego") with the driver's pronouns after the ego
+    said "the ego" too ("a van pulled out in front of her. She braked hard": the ego's reaction, not
+    the van's), where no other person of that gender is named ("a girl ran out ... she stopped");
+    "her" before a noun is the ego's ("her mirror")."""
+    subject, obj = PRONOUNS_OF[owner]
+    if any(w in GENDERED[owner] for w in tokens):
+        return tokens
+    first = next((i for i in range(len(tokens) - 1) if tokens[i : i + 2] == ["the", "ego"]), None)
+    if first is None:
+        return tokens
+    users = _road_users(tokens, kind_at, known)
+    out = tokens[: first + 2]
+    for i in range(first + 2, len(tokens)):
+        w, nxt = tokens[i], tokens[i + 1] if i + 1 < len(tokens) else ""
+        last = next((q for q in reversed(users) if q.end <= i), None)
+        if w == subject and last is not None and last.kind not in VEHICLES | {"ego"}:
+            out.append(w)  # (a walker or rider just named may be "he": "a cyclist pulled out; he fell")
+        elif w == subject or (w == obj and w != owner):
+            out += ["the", "ego"]
+        elif w == owner == obj and not (nxt.isalpha() and "NOUN" in lemmas(nxt) and nxt not in BETWEEN):
+            out += ["the", "ego"]  # ("in front of her": the object, no possessive)
+        else:
+            out.append(w)
+    return out
+
+
+#: Words that open a clause of driving that has no subject of its own ("while driving her car, she").
+SUBORDINATORS = frozenset({"while", "whilst", "when"})
+
+
+def _driving_subject(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "while driving her own car along Victoria Road at 20 mph, she had to brake", "Driving his lorry
+    out of the depot, he met ...": a clause of driving with no subject of its own, opening its
+    sentence or after "while"/"when", has the subject of the clause it leads into; where that is the
+    pronoun its possessive gives ("her" car: "she"), that person drives: the vehicle is the ego (it
+    goes, the verb stays with its speed), and so are that pronoun and the later ones of its owner."""
+    for k, w in enumerate(tokens):
+        if w not in DRIVING or k + 1 >= len(tokens) or tokens[k + 1] not in PRONOUNS_OF:
+            continue
+        before = tokens[k - 1] if k else ""
+        if before not in SUBORDINATORS and k and before not in CLAUSE_OPENING | {"that"}:
+            continue
+        p = next((q for q in _vehicle_phrases(tokens, kind_at, known) if k + 1 < q.end <= k + 5), None)
+        if p is None or _placed(tokens, p) or any(x not in OWNING and known(tokens, j) for j, x in
+                                                  enumerate(tokens[k + 1 : p.start], k + 1)):  # fmt: skip
+            continue
+        _, e = _sentence(tokens, k)
+        comma = next((c for c in range(p.end, e) if tokens[c] == ","), None)
+        owner = tokens[k + 1]
+        if comma is None or tokens[comma + 1 : comma + 2] != [PRONOUNS_OF[owner][0]]:
+            continue
+        dropped.extend(x for x in tokens[k + 1 : p.end] if x.isalpha() and x not in OWNING)
+        out = [*tokens[: k + 1], *tokens[p.end : comma + 1], "the", "ego", *tokens[comma + 2 :]]
+        return _pronouns_as_ego(out, owner, kind_at, known)
+    return tokens
+
+
+def _news_driver(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """A news report about a driver ("A taxi driver has been praised ...", "The driver of a delivery
+    van, who was doing 20 mph, braked ..."): the driver, the subject opening its clause, named with
+    their vehicle, is the one the report follows when that vehicle has a speed of its own (right
+    after the driver, before anyone else is named: ", who was doing 20 mph"; or at a later "the
+    <noun>": "the lorry, travelling at 50 mph"). That vehicle is the ego, and so is every later
+    "the" mention of it and of the same kind of vehicle no "a" introduces ("the HGV")."""
+    users = _road_users(tokens, kind_at, known)
+    for n, p in enumerate(users):
+        if tokens[p.end - 1] != "driver" or (p.start and tokens[p.start - 1] not in CLAUSE_OPENING):
+            continue
+        if p.end - p.head == 2 and (found := kind_at(tokens, p.end - 2)) is not None and found[0] in VEHICLES:
+            vehicle, end = tokens[p.end - 2], p.end  # ("a lorry driver")
+        elif tokens[p.end : p.end + 1] == ["of"] and n + 1 < len(users) and users[n + 1].start == p.end + 1:
+            q = users[n + 1]  # ("the driver of a delivery van")
+            if q.kind not in VEHICLES or _placed(tokens, q):
+                return tokens
+            vehicle, end = tokens[q.end - 1], q.end
+        else:
+            return tokens  # (only the first driver named, as the story's subject)
+        kind = kind_at(tokens, tokens.index(vehicle, p.start))[0]  # type: ignore[index]
+        later = [q for q in users if q.start >= end]
+        if any(q.det in INDEFINITE and tokens[q.end - 1] == vehicle for q in later):
+            return tokens  # (another vehicle of that name)
+        new = {tokens[q.end - 1] for q in later if q.det in INDEFINITE}
+        spans = [(end, next((q.start for q in later), len(tokens)))]
+        spans += [  # ("the lorry, travelling at 50 mph", "the cab, going at 25 mph")
+            (q.end, next((r.start for r in later if r.start >= q.end), len(tokens)))
+            for q in later
+            if q.det == "the" and q.kind == kind and tokens[q.end - 1] not in new and tokens[q.end : q.end + 1] == [","]
+        ]
+        if not any(any(w in SPEED_UNITS for w in tokens[a : min(b, _sentence(tokens, a)[1])]) for a, b in spans):
+            return tokens
+        dropped.extend(w for w in tokens[p.start : end] if w.isalpha() and w not in DEFINITE | INDEFINITE)
+        out = [*tokens[: p.start], "the", "ego", *tokens[end:]]
+        out = _as_ego(out, kind_at, known, vehicle, dropped)
+        same = {
+            out[q.end - 1]
+            for q in _vehicle_phrases(out, kind_at, known)
+            if q.kind == kind and q.det == "the" and q.end - q.head == 1
+        }
+        for noun in sorted(same):
+            if not any(q.det in INDEFINITE and out[q.end - 1] == noun for q in _vehicle_phrases(out, kind_at, known)):
+                out = _as_ego(out, kind_at, known, noun, dropped)
+        return out
     return tokens
 
 
@@ -808,6 +944,12 @@ def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) 
     if _labels(tokens, kind_at, known):
         return tokens  # (a report's labels say who the ego is)
     tokens = _at_the_wheel(tokens, kind_at, known, dropped)
+    if names_ego(tokens, kind_at, known):
+        return tokens
+    tokens = _driving_subject(tokens, kind_at, known, dropped)
+    if names_ego(tokens, kind_at, known):
+        return tokens
+    tokens = _news_driver(tokens, kind_at, known, dropped)
     if names_ego(tokens, kind_at, known):
         return tokens
     tokens = _role(tokens, kind_at)

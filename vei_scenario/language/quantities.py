@@ -230,7 +230,7 @@ def _is_number(word: str) -> bool:
 
 def miles_country(tokens: list[str]) -> bool:
     """Whether the road the text is set on is one of a country that signs speeds in mph: a British or
-    American road word, a numbered road ("the M25", "the A34", "B-road", "I-95"), a limit only mph
+    American road word (a "high street" too), a numbered road ("the M25", "the A34", "B-road", "I-95"), a limit only mph
     has ("a 35 zone"), or a distance in miles. Why: a driver who gives a bare number ("doing about
     70") gives it in the unit of their road signs, and names the road far more often than the unit."""
     for k, tok in enumerate(tokens):
@@ -246,6 +246,8 @@ def miles_country(tokens: list[str]) -> bool:
         if tok == "b" and nxt in ("road", "roads"):  # ("a B-road"; "A-road" reads as "a road")
             return True
         if tok.isdigit() and int(tok) in _MILES_LIMITS and nxt in ("limit", "zone"):
+            return True
+        if tok == "high" and nxt in ("street", "st"):  # (the British town-centre road: "down the high street")
             return True
     return False
 
