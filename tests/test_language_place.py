@@ -5,6 +5,7 @@ start) leaves open."""
 import re
 
 import pytest
+from play_layers import play_layers
 
 from vei_scenario.language.reader import read
 from vei_scenario.language.sides import drives_on_left
@@ -154,18 +155,13 @@ def test_a_kerb_with_no_side_said_is_the_near_one(text, expected):
 def test_a_rider_at_the_kerb_who_swerves_in_rides_along_it_first_and_plays(text, side, tmp_path):
     """A rider at the kerb (no side said: the near one) keeps its pace before it swerves into the ego's
     lane, and the scenario plays: it starts on the kerb lane's edge and ends ahead in the ego's lane."""
-    from vei_scenario.interpreter import run_scenario
     from vei_scenario.language.corpus_check import played_problems
     from vei_scenario.language.rules_backend import layers_from_text
-    from vei_scenario.language.scenario_writer import write_scenario
 
     layers = layers_from_text(text, 0)
     adv = layers["adversaries"][0]
     assert adv["spawn"]["relation"] == f"roadside_{side}" and adv["speed_mps"] > 1.0
-    written = write_scenario(layers, "scenario")
-    (tmp_path / "scenario.xosc").write_bytes(written.xosc)
-    (tmp_path / "scenario.xodr").write_bytes(written.xodr)
-    result = run_scenario(tmp_path / "scenario.xosc", None, round(1.0 / float(layers["rate_hz"]), 6))
+    result = play_layers(layers, tmp_path)
     assert played_problems(result, layers) == []
 
 

@@ -6,21 +6,12 @@ one of the behaviour's own definition)."""
 from __future__ import annotations
 
 import math
-from pathlib import Path
 
 import pytest
+from play_layers import play_layers
 
-from vei_scenario.interpreter import run_scenario
 from vei_scenario.language.corpus_check import played_problems
 from vei_scenario.language.rules_backend import layers_from_text
-from vei_scenario.language.scenario_writer import write_scenario
-
-
-def _play(layers: dict, tmp_path: Path):
-    written = write_scenario(layers, "scenario")
-    (tmp_path / "scenario.xosc").write_bytes(written.xosc)
-    (tmp_path / "scenario.xodr").write_bytes(written.xodr)
-    return run_scenario(tmp_path / "scenario.xosc", None, round(1.0 / float(layers["rate_hz"]), 6))
 
 
 def _turned_rad(trace) -> float:
@@ -44,7 +35,7 @@ def test_a_red_light_runner_drives_straight_on_across_the_ego_s_path_whichever_w
     layers["ego"]["route"] = ego_route
     [adv] = layers["adversaries"]
     assert adv["behaviour"]["behaviour"] == "run_red_light" and adv["spawn"]["relation"] == f"junction_{side}"
-    result = _play(layers, tmp_path)
+    result = play_layers(layers, tmp_path)
     assert played_problems(result, layers) == []
     assert abs(_turned_rad(result.traces["Adversary1"])) < 0.2
 
@@ -66,7 +57,7 @@ def test_a_slow_vehicle_pulling_out_of_a_side_road_comes_out_ahead_of_the_ego(ki
     adv["spawn"]["relation"] = f"junction_{side}"
     for seed_gap in (0.0, 0.6, 2.0):
         adv["behaviour"]["config"]["arrival_gap_s"] = seed_gap
-        assert played_problems(_play(layers, tmp_path), layers) == [], seed_gap
+        assert played_problems(play_layers(layers, tmp_path), layers) == [], seed_gap
 
 
 @pytest.mark.parametrize(
@@ -106,7 +97,7 @@ def test_a_rider_along_the_ego_s_road_keeps_to_it_when_the_ego_turns_off(text, t
         layers = layers_from_text(text, seed)
         [adv] = layers["adversaries"]
         assert adv["behaviour"]["behaviour"] == "along_road"
-        result = _play(layers, tmp_path)
+        result = play_layers(layers, tmp_path)
         assert played_problems(result, layers) == [], seed
         if layers["environment"]["map"]["kind"] == "crossroad":  # (in a roundabout the run ends in its ring)
             assert abs(_turned_rad(result.traces["Adversary1"])) < 0.2
@@ -129,7 +120,7 @@ def test_a_crossing_on_a_curved_road_reaches_the_ego_s_path(text, tmp_path):
         assert layers["environment"]["map"]["kind"] == "curve"
         [adv] = layers["adversaries"]
         assert adv["behaviour"]["behaviour"] == "cross_in_front"
-        assert played_problems(_play(layers, tmp_path), layers) == [], seed
+        assert played_problems(play_layers(layers, tmp_path), layers) == [], seed
 
 
 @pytest.mark.parametrize(
@@ -150,7 +141,7 @@ def test_a_rider_at_the_kerb_swerving_into_the_road_ends_in_the_ego_s_lane(text,
     [adv] = layers["adversaries"]
     assert adv["spawn"]["relation"] == "roadside_right"
     assert adv["behaviour"]["behaviour"] in ("change_lane", "cut_in")
-    result = _play(layers, tmp_path)
+    result = play_layers(layers, tmp_path)
     assert played_problems(result, layers) == []
     lon, lat = _ego_frame(result, "Adversary1")
     assert lon[-1] > 0 and abs(lat[-1]) < 0.5
@@ -173,7 +164,7 @@ def test_a_slow_cut_in_ends_in_the_ego_s_lane(text, tmp_path):
         [adv] = layers["adversaries"]
         assert adv["behaviour"]["behaviour"] == "cut_in"
         adv["behaviour"]["config"]["criticality"] = "dangerous"
-        assert played_problems(_play(layers, tmp_path), layers) == [], seed
+        assert played_problems(play_layers(layers, tmp_path), layers) == [], seed
 
 
 @pytest.mark.parametrize(
@@ -194,7 +185,7 @@ def test_a_road_user_at_the_kerb_that_changes_lane_later_starts_on_a_lane(text, 
     layers = layers_from_text(text, 0)
     adv = layers["adversaries"][0]  # (a van it goes round stands beyond the kerb)
     assert adv["spawn"]["relation"] == "roadside_right"
-    assert played_problems(_play(layers, tmp_path), layers) == []
+    assert played_problems(play_layers(layers, tmp_path), layers) == []
 
 
 @pytest.mark.parametrize(
@@ -213,7 +204,7 @@ def test_a_wrong_way_road_user_at_a_short_stated_gap_is_head_on_in_the_ego_s_lan
     [adv] = layers["adversaries"]
     assert adv["behaviour"]["behaviour"] == "wrong_way"
     assert abs(float(adv["spawn"]["longitudinal_m"])) == pytest.approx(gap, abs=0.1)
-    assert played_problems(_play(layers, tmp_path), layers) == []
+    assert played_problems(play_layers(layers, tmp_path), layers) == []
 
 
 @pytest.mark.parametrize(
@@ -231,7 +222,7 @@ def test_a_rider_passing_the_ego_at_a_speed_the_text_leaves_open_gets_ahead(text
     for seed in (0, 1):
         layers = layers_from_text(text, seed)
         assert "overtake" in str(layers["adversaries"][0]["behaviour"])
-        assert played_problems(_play(layers, tmp_path), layers) == [], seed
+        assert played_problems(play_layers(layers, tmp_path), layers) == [], seed
 
 
 @pytest.mark.parametrize(
@@ -250,7 +241,7 @@ def test_a_lead_car_leaving_the_innermost_lane_by_an_unsaid_side_goes_where_a_la
     """The side of a cut-out the text leaves open is the one with a lane in its direction: from the
     innermost lane of a road with two lanes each way, to the right."""
     layers = layers_from_text(text, 0)
-    assert played_problems(_play(layers, tmp_path), layers) == []
+    assert played_problems(play_layers(layers, tmp_path), layers) == []
 
 
 @pytest.mark.parametrize(
@@ -272,4 +263,4 @@ def test_a_road_user_joining_a_roundabout_in_front_of_the_ego_sets_off_and_meets
         adv = layers["adversaries"][0]
         assert layers["environment"]["map"]["kind"] == "roundabout"
         assert adv["behaviour"]["behaviour"] == "turn_into"
-        assert played_problems(_play(layers, tmp_path), layers) == [], seed
+        assert played_problems(play_layers(layers, tmp_path), layers) == [], seed

@@ -8,8 +8,8 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+from play_layers import play_layers
 
-from vei_scenario.interpreter import run_scenario
 from vei_scenario.language.corpus_check import played_problems
 from vei_scenario.language.scenario_writer import write_scenario
 
@@ -39,15 +39,8 @@ def _layers(kind: str, lanes: int, ego: dict, adversaries: list[dict], duration_
     }
 
 
-def _run(layers: dict, tmp_path: Path):
-    written = write_scenario(layers, "scenario")
-    (tmp_path / "scenario.xosc").write_bytes(written.xosc)
-    (tmp_path / "scenario.xodr").write_bytes(written.xodr)
-    return run_scenario(tmp_path / "scenario.xosc", None, round(1.0 / float(layers["rate_hz"]), 6))
-
-
 def _play(layers: dict, tmp_path: Path) -> list[str]:
-    return played_problems(_run(layers, tmp_path), layers)
+    return played_problems(play_layers(layers, tmp_path), layers)
 
 
 @pytest.mark.parametrize("kind", ["straight", "curve"])
@@ -252,7 +245,7 @@ def test_a_red_light_runner_is_timed_again_when_the_ego_starts_farther_back(rela
     stated |= {"speed_mps": 10.0, "behaviour": {"behaviour": "run_red_light", "config": {}}}
     retime_junction_runs(layers["ego"], layers["adversaries"] + [stated], 2, {"Adversary1"})
     assert stated["spawn"]["longitudinal_m"] == 33.0
-    result = _run(layers, tmp_path)
+    result = play_layers(layers, tmp_path)
     assert played_problems(result, layers) == []
     ego, runner = result.traces[result.ego], result.traces["Adversary1"]
     import numpy as np

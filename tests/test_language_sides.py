@@ -2,6 +2,7 @@
 junction-arm nouns with their side word before or after them, in the writer's driving convention."""
 
 import pytest
+from play_layers import play_layers
 
 from vei_scenario.language.reader import read
 from vei_scenario.language.sides import beside, drives_on_left, phrase_at
@@ -475,19 +476,14 @@ def test_near_misses_of_a_place_beside_the_road(text, expected):
 def test_a_vehicle_pulling_out_of_a_place_beside_the_road_stands_there_and_plays_a_cut_in(tmp_path):
     """Its layers: standing at the roadside far enough ahead for the ego to close in (a distance said is
     its gap when it pulls out), then cutting in; the scenario plays and it ends ahead in the ego's lane."""
-    from vei_scenario.interpreter import run_scenario
     from vei_scenario.language.corpus_check import played_problems
     from vei_scenario.language.rules_backend import layers_from_text
-    from vei_scenario.language.scenario_writer import write_scenario
 
     layers = layers_from_text("At 30 mph a bus pulled out of the stop on my left 10 m ahead of me.", 0)
     adv = layers["adversaries"][0]
     assert adv["spawn"]["relation"] == "roadside_left" and adv["speed_mps"] == 0.0
     assert adv["spawn"]["longitudinal_m"] > 20.0
-    written = write_scenario(layers, "scenario")
-    (tmp_path / "scenario.xosc").write_bytes(written.xosc)
-    (tmp_path / "scenario.xodr").write_bytes(written.xodr)
-    result = run_scenario(tmp_path / "scenario.xosc", None, round(1.0 / float(layers["rate_hz"]), 6))
+    result = play_layers(layers, tmp_path)
     assert played_problems(result, layers) == []
 
 
