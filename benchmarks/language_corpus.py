@@ -43,6 +43,8 @@ FIRST = {
     "language_independent_m.json": ((50, 50, 19, 41), "measured when written"),
     "language_independent_n.json": ((45, 45, 9, 32), "sealed until the reader's last change"),
     "language_independent_o.json": ((45, 45, 8, 34), "sealed until the reader's last change"),
+    "language_independent_p.json": ((45, 45, 18, 41), "sealed until the reader's last change"),
+    "language_independent_q.json": ((45, 45, 17, 41), "sealed until the reader's last change"),
     "language_independent_r.json": ((50, 50, 8, 41), "measured when written"),
     "language_independent_s.json": ((50, 50, 22, 47), "measured when written"),
 }
