@@ -28,7 +28,7 @@ import re
 from dataclasses import dataclass, field, replace
 from functools import lru_cache
 
-from vei_scenario.language import discourse, ego, ego_speed, generic_ego, motion, sides
+from vei_scenario.language import discourse, ego, ego_speed, generic_ego, motion, scenery, sides
 from vei_scenario.language import lexicon as L
 from vei_scenario.language import quantities as Q
 from vei_scenario.language import settings as S
@@ -679,7 +679,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
                     bool(clauses[-1][1]) and clauses[-1][1][-1].slot == "actor" and clauses[-1][1][-1].end == i
                 )
                 verb = "VERB" in pos and not pos & {"ADJ", "ADV"} and not tok.endswith(("ing", "ed"))
-                if _after_article(tokens, i):
+                if _after_article(tokens, i) or _counted_plural(tokens, i):
                     verb = False  # (in a noun phrase: "the petrol station" names a place, no verb)
                 if i + 1 < len(tokens) and _modifies_actor(tokens, i + 1):
                     verb = False  # a word naming what kind before an actor ("a police car", "a Ford Transit van")
@@ -871,6 +871,19 @@ def _after_article(tokens: list[str], i: int) -> bool:
             return False
         j -= 1
     return False
+
+
+#: Quantifiers before a noun: a plural right after one is counted, so a noun ("on both sides").
+_QUANTIFIERS = frozenset(("both", "each", "every", "either", "neither", "several", "many", "few", "all"))
+
+
+def _counted_plural(tokens: list[str], i: int) -> bool:
+    """Whether the word at ``i`` is a plural counted by the word before it ("both sides", "two sides",
+    "several times"): a noun, not a verb said of whoever was named before it. (A verb after a floating
+    quantifier has no -s: "they both stop".)"""
+    before = tokens[i - 1] if i else ""
+    counted = before in _QUANTIFIERS or before in NUMBER_WORDS or before.isdigit()
+    return counted and tokens[i].endswith("s") and not tokens[i].endswith("ss")
 
 
 def _counts_actor(mentions, k: int) -> bool:
@@ -1359,6 +1372,7 @@ def read(text: str) -> Reading:
                     and isinstance(named[-1][0], _Actor)
                     and named[-1][0] is not who
                     and not any(x is named[-1][0] for x, _ in added)
+                    and not named[-1][0].stationary  # ("with parked cars, a jogger ran out": the cars stand)
                 ):  # "a cyclist and a pedestrian both cross": one verb for both
                     pair = (named[-1][0].group or [named[-1][0]]) + [who]
                     for x in pair:
@@ -1368,8 +1382,13 @@ def read(text: str) -> Reading:
                     for pm in passive:  # "the AV is tailgated by a sports car": the car tailgates
                         _apply(pm, who, r, link, added)
                     passive = []
-                if isinstance(who, _Actor) and who is not clause_subject and _comes_out_from(prev, m):
-                    who.hides = True  # ("darts out from behind an ice-cream van": what it comes out from)
+                if (
+                    isinstance(who, _Actor)
+                    and who is not clause_subject
+                    and (_comes_out_from(prev, m) or scenery.among_them(scanned, m.start))
+                ):
+                    for hider in who.group or [who]:  # ("from between two vans": both of them)
+                        hider.hides = True  # ("darts out from behind an ice-cream van": what it comes out from)
                 if role == "verb" and isinstance(who, _Actor) and after_verb:
                     who.acted_on = True  # ("the ego is overtaking a truck": the truck is in the scene)
                 if role == "verb" and isinstance(who, _Actor) and clause_subject == "ego" and motion.passes(prev):
@@ -1524,6 +1543,12 @@ def read(text: str) -> Reading:
                 prev = m
                 continue
             before_actor = nxt is not None and nxt.slot in ("actor", "count") and nxt.start == m.end
+            before_actor = before_actor or (  # ("a stationary foam target car": its state, past its modifiers)
+                m.slot == "stationary"
+                and nxt is not None
+                and nxt.slot == "actor"
+                and scenery.plain_modifiers(scanned, m.end, nxt.start, lambda w: w in FUNCTION_WORDS)
+            )
             if m.slot in _POSITIONAL and before_actor and not (nxt.slot == "actor" and nxt.value == "ego"):
                 pending.append(m)  # an adjective before its actor ("an oncoming car")
             elif clause_subject == "ego" and m.value in _SEEN_FROM_OBJECT and _object_follows(mentions, k):

@@ -1,0 +1,100 @@
+"""What is not a road user: standing vehicles that only block or hide, and vehicles named only as the
+place someone comes out from. The format lists the road users that act on the road; a vehicle that
+stands and does nothing is scenery (the scenario may still hold it, parked, as the occluder it is).
+Each construction is pinned by wordings of our own (none of them from a corpus), read through the
+whole reader, with near misses that look alike and must read the other way."""
+
+from __future__ import annotations
+
+import pytest
+
+from vei_scenario.language.reader import read
+
+#: What a standing vehicle may be given and still be scenery: it stays where it stands.
+STANDING = {"stop", "keep_going", "keep_lane"}
+
+
+def acting(text: str) -> list[str]:
+    """The kinds of the road users ``text`` is read with that act: not standing still doing nothing."""
+    out = []
+    for a in read(text).actors:
+        names = {b[0] for b in a.behaviours}
+        if not (a.speed_mps == 0.0 and names <= STANDING):
+            out.append(a.kind)
+    return out
+
+
+# --- a state word before a vehicle's noun says it stands, whatever modifiers come between -----------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        (
+            "The ego drives at 50 km/h behind a lead car; the lead car swerves left and reveals a stationary "
+            "foam target car in the ego lane.",
+            ["car"],
+        ),
+        ("I was doing 30 mph behind a hatchback when it pulled out round a parked white van in my lane.", ["car"]),
+        (
+            "Driving at 40 km/h behind a taxi, the taxi swerved into the next lane and there was a stopped "
+            "grey lorry in our lane.",
+            ["car"],
+        ),
+    ],
+    ids=["two-modifiers", "colour", "existential"],
+)
+def test_a_state_word_before_modifiers_and_a_vehicle_noun_makes_it_stand(text, expected):
+    assert acting(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A parked white van pulled out in front of me while I was doing 30 km/h.", ["van"]),
+        ("A stationary blue bus pulled away from the stop right in front of us while we drove at 40 km/h.", ["truck"]),
+    ],
+    ids=["parked-pulls-out", "stationary-pulls-away"],
+)
+def test_a_standing_vehicle_that_then_moves_is_a_road_user(text, expected):
+    assert acting(text) == expected
+
+
+# --- vehicles counted as the place someone comes out from between are scenery ------------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("I was driving at 30 km/h when a girl stepped out from between two vans on the right.", ["pedestrian"]),
+        ("At 25 mph a kid on a bike shot out between three lorries on my left.", ["bicycle"]),
+        (
+            "Doing 20 mph along a road with parked cars both sides, a jogger ran out from between two of the "
+            "cars on the right.",
+            ["pedestrian"],
+        ),
+    ],
+    ids=["two-vans", "three-lorries", "two-of-the-cars"],
+)
+def test_counted_vehicles_someone_comes_out_from_between_are_scenery(text, expected):
+    assert acting(text) == expected
+
+
+def test_vehicles_that_come_out_from_between_something_are_road_users():
+    text = "Two vans pulled out from between the houses right in front of me while I was doing 30 km/h."
+    assert acting(text) == ["van", "van"]
+
+
+# --- a standing vehicle named before a comma does not share the verb of the one named after it -------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("Doing 20 mph along a road with parked cars, a jogger ran out on the right.", ["pedestrian"]),
+        ("At 30 km/h past a row of stationary vans, a cyclist darted out from the left.", ["bicycle"]),
+        ("Doing 20 mph along a road with parked cars on both sides, a child ran out on the left.", ["pedestrian"]),
+    ],
+    ids=["parked-cars-comma", "stationary-vans-comma", "both-sides"],
+)
+def test_a_standing_vehicle_before_a_comma_does_not_share_the_next_verb(text, expected):
+    assert acting(text) == expected
+
+
+def test_two_road_users_said_before_one_verb_both_do_it():
+    text = "While I was doing 30 km/h, a cyclist, a jogger and a dog all crossed from the left in front of me."
+    assert sorted(acting(text)) == ["bicycle", "pedestrian", "pedestrian"]
