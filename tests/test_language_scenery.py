@@ -98,3 +98,47 @@ def test_a_standing_vehicle_before_a_comma_does_not_share_the_next_verb(text, ex
 def test_two_road_users_said_before_one_verb_both_do_it():
     text = "While I was doing 30 km/h, a cyclist, a jogger and a dog all crossed from the left in front of me."
     assert sorted(acting(text)) == ["bicycle", "pedestrian", "pedestrian"]
+
+
+# --- a singular vehicle noun before a plural noun modifies it: no road user ----------------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("The estate roads were quiet at 30 km/h when a boy ran out from the right in front of me.", ["pedestrian"]),
+        (
+            "Two car crashes here this year already. At 40 mph a lorry pulled out of a side road on the left "
+            "right in front of me.",
+            ["truck"],
+        ),
+        (
+            "Five van break-ins on this street lately; at 20 mph a jogger ran out from the left in front of me.",
+            ["pedestrian"],
+        ),
+    ],
+    ids=["estate-roads", "counted-agrees", "unknown-plural-counted"],
+)
+def test_a_vehicle_noun_modifying_a_plural_noun_is_no_road_user(text, expected):
+    assert acting(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("At 30 km/h a scooter wobbles out from the left kerb in front of me.", ["e-scooter"]),
+        ("Two scooter riders came off the pavement on my left in front of me at 20 mph.", ["e-scooter", "e-scooter"]),
+        ("At 30 mph the car ahead brakes hard in front of me.", ["car"]),
+    ],
+    ids=["verb-after-singular", "riders-are-road-users", "known-verb"],
+)
+def test_a_vehicle_noun_before_its_verb_stays_a_road_user(text, expected):
+    assert acting(text) == expected
+
+
+def test_a_vehicle_noun_before_a_measure_stays_a_measure():
+    text = "Doing about 10 mph, I stayed four car lengths behind a cyclist on the high street."
+    assert [a.kind for a in read(text).actors] == ["bicycle"]
+
+
+def test_a_figure_before_a_vehicle_noun_is_no_count_of_it():
+    text = "08:15 ego at 30 km/h on the high street\n08:16 cyclist crosses from the right in front of the ego"
+    assert acting(text) == ["bicycle"]

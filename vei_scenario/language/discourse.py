@@ -46,6 +46,7 @@ from dataclasses import dataclass
 
 from vei_scenario.language.lemmas import english, lemmas
 from vei_scenario.language.lexicon import ANIMALS, WALKER_PACED
+from vei_scenario.language.scenery import vehicle_modifiers
 from vei_scenario.language.who import make_and_model, person_with_vehicle, travel_modes, vehicle_places
 
 #: ``kind_at(tokens, i)``: the road-user type named by a phrase starting at ``i`` ("ego" for the ego)
@@ -1841,6 +1842,7 @@ def resolve(
     tokens = _named_vehicles(tokens, kind_at, known, proper)
     tokens = _brackets(tokens, kind_at, known, names, dropped)
     tokens = _compounds(tokens, kind_at)
+    tokens = vehicle_modifiers(tokens, kind_at, dropped)
     tokens = partitives(tokens, kind_at)
     tokens = _participial_apposition(tokens, kind_at, known)
     tokens = _vehicle_labels(tokens, kind_at, known)

@@ -55,3 +55,52 @@ def among_them(tokens: list[str], start: int) -> bool:
     while j >= 0 and start - j <= 5 and tokens[j] in _COUNTED_PHRASE:
         j -= 1
     return j >= 0 and tokens[j] in _AMID
+
+
+#: Road-user types whose noun can modify another noun ("scooter incidents", "estate roads").
+_VEHICLE_KINDS = frozenset(("car", "van", "truck", "bicycle", "e-scooter"))
+#: Plural nouns a vehicle noun makes a measure of ("four car lengths back"): a distance, read as one.
+_MEASURES = frozenset(("lengths", "widths"))
+#: Counts that make a plural: a count over one before a singular noun agrees with the noun after it.
+_MANY = frozenset("two three four five six seven eight nine ten several many few".split())
+
+
+def _plural_noun(word: str, counted: bool) -> bool:
+    """Whether ``word`` is a plural noun ("incidents", "roads", "near-misses"). A word that may also be
+    a verb ("crashes", "swerves") is one only where a count before it agrees with it ("two car
+    crashes"; "the car crashes" is a verb)."""
+    if not word.endswith("s") or word.endswith("ss") or not word.replace("-", "").isalpha():
+        return False
+    pos = lemmas(word)
+    if not pos:
+        return counted  # (a word the dictionary lacks: "four scooter near-misses")
+    nouns = pos.get("NOUN", ())
+    return bool(nouns) and word not in nouns and ("VERB" not in pos or counted)
+
+
+def vehicle_modifiers(tokens: list[str], kind_at: Callable[[list[str], int], tuple[str, int] | None],
+                      dropped: list[str]) -> list[str]:  # fmt: skip
+    """``tokens`` without a singular vehicle noun that modifies the plural noun right after it ("three
+    scooter incidents", "the estate roads", "two car crashes"): the phrase names incidents or roads,
+    no road user. What follows the vehicle noun must be a plural noun that names no road user itself
+    ("two scooter riders" are two riders). The words left out are listed as not used."""
+    out: list[str] = []
+    i = 0
+    while i < len(tokens):
+        found = kind_at(tokens, i)
+        if found is None or found[0] not in _VEHICLE_KINDS:
+            out.append(tokens[i])
+            i += 1
+            continue
+        end = i + found[1]
+        noun = tokens[end - 1]
+        head = tokens[end] if end < len(tokens) else ""
+        counted = i > 0 and tokens[i - 1] in _MANY  # (not a figure: "16:06 cyclist crosses" is a clock)
+        singular = "NOUN" in lemmas(noun) and noun in lemmas(noun)["NOUN"] or not noun.endswith("s")
+        measure = head in _MEASURES
+        if singular and head and not measure and kind_at(tokens, end) is None and _plural_noun(head, counted):
+            dropped.extend(tokens[i:end])
+        else:
+            out.extend(tokens[i:end])
+        i = end
+    return out
