@@ -142,3 +142,21 @@ def test_a_vehicle_noun_before_a_measure_stays_a_measure():
 def test_a_figure_before_a_vehicle_noun_is_no_count_of_it():
     text = "08:15 ego at 30 km/h on the high street\n08:16 cyclist crosses from the right in front of the ego"
     assert acting(text) == ["bicycle"]
+
+
+# --- a word right before an auxiliary is its subject, a noun: people of the aftermath do nothing --------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A car came the wrong way towards me in my lane at 50 mph. Police have arrested a 42-year-old man.",
+        "A van cut in from the left in front of me at 40 mph. Police are questioning a local man.",
+        "A lorry pulled out of a side road on my right at 30 mph. Police were called and spoke to a woman.",
+    ],
+    ids=["have", "are", "were"],
+)
+def test_a_noun_before_an_auxiliary_is_no_verb_of_the_person_after_it(text):
+    assert len(acting(text)) == 1
+
+
+def test_an_unknown_verb_before_no_auxiliary_is_still_a_verb():
+    assert acting("At 40 mph a deer bounds across the road in front of me from the left.") == ["pedestrian"]

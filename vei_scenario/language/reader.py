@@ -679,7 +679,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
                     bool(clauses[-1][1]) and clauses[-1][1][-1].slot == "actor" and clauses[-1][1][-1].end == i
                 )
                 verb = "VERB" in pos and not pos & {"ADJ", "ADV"} and not tok.endswith(("ing", "ed"))
-                if _after_article(tokens, i) or _counted_plural(tokens, i):
+                if _after_article(tokens, i) or _counted_plural(tokens, i) or _before_auxiliary(tokens, i):
                     verb = False  # (in a noun phrase: "the petrol station" names a place, no verb)
                 if i + 1 < len(tokens) and _modifies_actor(tokens, i + 1):
                     verb = False  # a word naming what kind before an actor ("a police car", "a Ford Transit van")
@@ -884,6 +884,17 @@ def _counted_plural(tokens: list[str], i: int) -> bool:
     before = tokens[i - 1] if i else ""
     counted = before in _QUANTIFIERS or before in NUMBER_WORDS or before.isdigit()
     return counted and tokens[i].endswith("s") and not tokens[i].endswith("ss")
+
+
+#: Auxiliaries and verbs of saying: the word right before one is its subject, a noun ("Police have").
+_AUXILIARIES = frozenset(("have", "has", "had", "are", "is", "was", "were", "will", "would", "said", "say"))
+
+
+def _before_auxiliary(tokens: list[str], i: int) -> bool:
+    """Whether the word at ``i`` stands right before an auxiliary or a verb of saying ("Police have
+    arrested a man", "Witnesses said", "Residents are asking"): the subject of that verb, a noun; a
+    finite verb is not followed by another."""
+    return i + 1 < len(tokens) and tokens[i + 1] in _AUXILIARIES
 
 
 def _counts_actor(mentions, k: int) -> bool:
