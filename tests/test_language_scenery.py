@@ -160,3 +160,30 @@ def test_a_noun_before_an_auxiliary_is_no_verb_of_the_person_after_it(text):
 
 def test_an_unknown_verb_before_no_auxiliary_is_still_a_verb():
     assert acting("At 40 mph a deer bounds across the road in front of me from the left.") == ["pedestrian"]
+
+
+# --- a participle of stopping after what "there is" is its state: it stands ----------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "At 50 mph the van in front swerves out at the last second and there's a car stopped dead in our lane.",
+        "Doing 70 km/h behind a bus, the bus swerved left and there was a lorry stopped suddenly in our lane.",
+        "At 40 mph the taxi in front swerved out and there was a van stopped dead in lane 1 with its hazards on.",
+    ],
+    ids=["stopped-dead", "stopped-suddenly", "hazards"],
+)
+def test_a_stop_said_as_a_participle_of_what_is_there_is_standing(text):
+    assert len(acting(text)) == 1
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "At 50 mph the van in front swerves out and a car stopped dead in our lane right in front of me.",
+        "At 50 mph there was a car ahead that stopped dead in our lane right in front of me.",
+    ],
+    ids=["finite", "relative-clause"],
+)
+def test_a_finite_stop_is_the_stop_it_says(text):
+    reading = read(text)
+    assert any(b[0] == "sudden_stop" for a in reading.actors for b in a.behaviours)

@@ -18,6 +18,7 @@ and the reader asks them here:
 from __future__ import annotations
 
 from collections.abc import Callable
+from dataclasses import replace
 
 from vei_scenario.language.lemmas import lemmas
 
@@ -103,4 +104,34 @@ def vehicle_modifiers(tokens: list[str], kind_at: Callable[[list[str], int], tup
         else:
             out.extend(tokens[i:end])
         i = end
+    return out
+
+
+#: "There is / are / was / were": what follows is said to be there.
+_EXISTENTIAL = frozenset(("is", "are", "was", "were", "'s"))
+#: Behaviours of stopping that, said as a participle after what is there, are the state it is in.
+_STOPPING = frozenset(("stop", "sudden_stop"))
+
+
+def standing_there(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a participle of stopping right after a road user said to be there ("there's a
+    car stopped dead in lane 2", "there was a van halted in our lane") read as the state it is in,
+    standing: in an existential sentence the participle after the noun describes it (a reduced
+    relative), it tells no event. A finite stop ("a van stopped dead in our lane") or one in a
+    relative clause ("there was a van that stopped dead") is the stop it says."""
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k in range(len(kept) - 1):
+            m, nxt = kept[k], kept[k + 1]
+            if m.slot != "actor" or m.value == "ego" or nxt.start != m.end:
+                continue
+            i = m.start - 1
+            while i >= 0 and tokens[i] in ("a", "an", "another", "one"):
+                i -= 1
+            there = i >= 1 and tokens[i] in _EXISTENTIAL and tokens[i - 1] == "there"
+            stop = nxt.slot == "behaviour" and nxt.value[0] in _STOPPING
+            if there and stop and nxt.words.split()[0].endswith("ed"):
+                kept[k + 1] = replace(nxt, slot="stationary", value=None, words="stopped")
+        out.append((link, kept))
     return out
