@@ -28,7 +28,7 @@ import re
 from dataclasses import dataclass, field, replace
 from functools import lru_cache
 
-from vei_scenario.language import discourse, ego, ego_speed, generic_ego, motion, sides
+from vei_scenario.language import discourse, ego, ego_speed, generic_ego, motion, sides, whose_act
 from vei_scenario.language import lexicon as L
 from vei_scenario.language import quantities as Q
 from vei_scenario.language import settings as S
@@ -786,6 +786,10 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
                 slot, value = "speed_adjective", V.SPEED_WORDS[said]  # (nor the subject's speed)
             elif slot == "behaviour" and _after_copula(tokens, i):
                 slot, value = "speed_word", V.SPEED_WORDS[said]  # "the truck is slow"
+        if slot == "behaviour" and whose_act.not_meant(tokens, i):
+            ignored.append(" ".join(tokens[i : i + len(key)]))  # ("no intention of crossing": no act)
+            i += len(key)
+            continue
         if slot == "behaviour" and _denied(tokens, i) and key[0] not in _NEGATORS:
             name, cfg = _DENIED.get(value[0], ("keep_going", {}))  # ("does not stop": it carries on)
             held = {**cfg, "_still": 1.0} if value[0] == "keep_going" else cfg
@@ -1138,6 +1142,7 @@ def read(text: str) -> Reading:
     both_with_ego = False  # ("CCRb: both cars at 50 km/h ...": the ego is one of them)
     ego_is_a_person = False  # (the ego named as "I" or "we": "it" is then never the ego)
     first_person = motion.told_in_the_first_person(text, tokens)  # (the narrator's)
+    narrators = whose_act.narrators_acts(clauses, scanned, first_person)  # ("Had to brake.": the narrator's verbs)
     bound: dict[str, _Actor | str] = {}  # "he"/"she" → whom it first named
     resolved: dict[int, _Actor | str] = {}  # a road-user mention's start → whom it names
     owned = {o for _, ms in clauses for x in ms for o in x.owners}  # mentions a number is said of
@@ -1427,6 +1432,13 @@ def read(text: str) -> Reading:
                 clause_subject = subject = "ego"
                 named.append(("ego", "subject"))
                 expect_subject = False
+                prev = m
+                continue
+            if m.slot in _VERBS and m.start in narrators and actors:
+                ignored.append(m.words)  # ("Waited, then passed them wide.": the narrator's, not theirs)
+                if narrators[m.start]:
+                    actors[-1].passed = True
+                reacting = not narrators[m.start]
                 prev = m
                 continue
             if m.slot in _VERBS:

@@ -1,0 +1,92 @@
+"""Whose behaviour a verb is: the narrator's reactions and manoeuvres, said without a subject, are not
+the road user's; a behaviour said not to be meant or not to happen is not read."""
+
+from __future__ import annotations
+
+import pytest
+
+from vei_scenario.language.reader import read
+
+
+def _behaviours(text: str) -> list[list[str]]:
+    return [[b[0] for b in a.behaviours] for a in read(text).actors]
+
+
+# --- a sentence with its subject left out, in a story told by its driver --------------------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # a reaction said as a modal and a verb with "the brakes" as its object
+        ("A cyclist wobbled into my lane. Needed to stamp on the brakes.", [["cut_in"]]),
+        ("A taxi veered into my lane ahead of me. Had to jump on the brakes.", [["cut_in"]]),
+        ("A delivery van nosed into my lane. Managed to get on the brakes in time.", [["cut_in"]]),
+        # the narrator passing a road user named before: that one just goes along
+        (
+            "I was driving at 50 km/h. A jogger was running along the left edge ahead. "
+            "Waited for a gap and passed him wide.",
+            [["along_road"]],
+        ),
+        (
+            "I was cycling at 15 km/h. A woman was walking along the verge ahead of me. "
+            "Rang my bell and overtook her slowly.",
+            [["along_road"]],
+        ),
+        (
+            "I was doing 40 km/h. A man was walking along the kerb on my left. "
+            "Slowed right down and went past him carefully.",
+            [["along_road"]],
+        ),
+    ],
+    ids=["needed-to-stamp", "had-to-jump", "managed-to-get-on", "waited-passed-him", "overtook-her", "went-past"],
+)
+def test_a_sentence_without_its_subject_is_the_narrators(text, expected):
+    assert _behaviours(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # the road user's own braking, its subject named, stays its own
+        ("The lorry in front of me slammed on its brakes.", [["sudden_stop"]]),
+        ("I was at 40 km/h. The bus ahead of me jumped on its brakes.", [["sudden_stop"]]),
+        # said in the third person with no subject: the road user's, not the narrator's
+        ("A van pulled out in front of me. Brakes hard right after.", [["cut_in", "sudden_stop"]]),
+        # told of someone else, not by its driver: a subject-less verb goes on with the road user
+        ("A cyclist rides ahead of the ego. Then overtakes a parked car.", [["overtake"], ["stop"]]),
+    ],
+    ids=["lorry-own-brakes", "bus-own-brakes", "third-person", "not-first-person"],
+)
+def test_a_road_users_own_verb_stays_its_own(text, expected):
+    assert _behaviours(text) == expected
+
+
+# --- a behaviour said not to be meant or not to happen ----------------------------------------------
+@pytest.mark.parametrize(
+    "text, denied",
+    [
+        ("An e-scooter rides in the bike lane beside the ego at 15 km/h, no crossing intended.", "cross_in_front"),
+        ("A cyclist rides on the cycle track next to us at 18 km/h with no intention of crossing.", "cross_in_front"),
+        ("A pedestrian walks along the right verge towards the ego, showing no sign of crossing.", "cross_in_front"),
+        ("A moped goes along the kerb ahead of the ego at 20 km/h, no overtaking.", "overtake"),
+        ("The car in front drives on at 40 km/h, no braking at all.", "sudden_stop"),
+    ],
+    ids=["no-crossing-intended", "no-intention-of", "no-sign-of", "no-overtaking", "no-braking"],
+)
+def test_a_behaviour_said_not_to_happen_is_not_read(text, denied):
+    read_ = _behaviours(text)
+    assert len(read_) == 1 and denied not in read_[0]
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # "no" that is not the verb's: a behaviour said after it is still read
+        ("No lights on, a cyclist crosses in front of the ego.", "cross_in_front"),
+        ("With no warning, the lorry ahead brakes hard.", "sudden_stop"),
+        ("There was no time to react when a jogger ran across in front of me.", "cross_in_front"),
+    ],
+    ids=["no-lights", "no-warning", "no-time"],
+)
+def test_a_behaviour_after_an_unrelated_no_is_read(text, expected):
+    read_ = _behaviours(text)
+    assert any(expected in b for b in read_)
