@@ -90,3 +90,33 @@ def test_a_behaviour_said_not_to_happen_is_not_read(text, denied):
 def test_a_behaviour_after_an_unrelated_no_is_read(text, expected):
     read_ = _behaviours(text)
     assert any(expected in b for b in read_)
+
+
+# --- a road user at the side that swerves out into the road before the ego ----------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist in the bike lane on my right swerved out into the road right in front of me.",
+        "An e-scooter rider on the cycle track beside us veers out into the carriageway just ahead of us.",
+        "A cyclist at the kerb on the left wobbles out into the traffic right in front of the ego.",
+        "An e-scooter in the cycle lane on my right swerves out just in front of me.",
+    ],
+    ids=["bike-lane-into-road", "cycle-track-into-carriageway", "kerb-into-traffic", "cycle-lane-in-front"],
+)
+def test_a_swerve_out_from_the_side_before_the_ego_enters_its_path(text):
+    read_ = _behaviours(text)
+    assert read_[0][:1] in (["cut_in"], ["cross_in_front"])  # (into the ego's path, either way)
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # out of the lane with nothing said of the ego's path: a move aside, not into it
+        ("A cyclist in the bike lane on my right swerved out to avoid a pothole.", "cut_in"),
+        # a lead car in the ego's lane swerving out: not from the side of the road
+        ("On the motorway the car in front of me swerved out into the outside lane.", "cut_in"),
+    ],
+    ids=["avoids-a-pothole", "lead-car-swerves-out"],
+)
+def test_a_swerve_out_not_from_the_side_into_the_ego_path_is_no_cut_in(text, expected):
+    assert expected not in _behaviours(text)[0]
