@@ -120,3 +120,32 @@ def test_a_swerve_out_from_the_side_before_the_ego_enters_its_path(text):
 )
 def test_a_swerve_out_not_from_the_side_into_the_ego_path_is_no_cut_in(text, expected):
     assert expected not in _behaviours(text)[0]
+
+
+# --- a run-on sentence: "had to" with its subject left out starts the narrator's own clause --------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("so a van pulled out of a side road right in front of me had to brake hard", [["turn_into"]]),
+        ("this cyclist swung into my lane just ahead of us had to jam on the brakes", [["cut_in"]]),
+        ("i was doing 40 and a taxi nosed into my lane no signal nothing needed to slow right down", [["cut_in"]]),
+        ("a bus pulled out from the stop in front of me, had to stamp on the brakes", [["cut_in"]]),
+    ],
+    ids=["van-had-to-brake", "cyclist-had-to-jam", "taxi-needed-to-slow", "bus-comma-had-to"],
+)
+def test_a_run_on_modal_without_its_subject_is_the_narrators(text, expected):
+    assert _behaviours(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # joined by "and", the road user goes on as the subject
+        ("The bus cut in front of me and had to stop at the lights.", [["cut_in", "stop"]]),
+        # the road user named right before the modal is its subject
+        ("I was doing 30 mph when the cyclist ahead of me had to brake hard.", [["sudden_stop"]]),
+    ],
+    ids=["joined-by-and", "subject-before-modal"],
+)
+def test_a_modal_with_the_road_user_as_its_subject_stays_its_own(text, expected):
+    assert _behaviours(text) == expected

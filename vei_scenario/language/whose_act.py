@@ -7,7 +7,9 @@ hard stop, an overtake of the ego). The grammar says whose it is:
 
 * a sentence whose subject is left out, told in the first person, is the narrator's when its first
   verb (or the modal before it: "had to", "needed to") is in the past tense or the plain form; the
-  third person ("Brakes hard.") stays the road user's;
+  third person ("Brakes hard.") stays the road user's; a modal said after a clause's verb with
+  nothing joining it ("pulled out right in front of me had to brake", "..., had to stamp on the
+  brakes") opens such a sentence, as said aloud without a full stop;
 * in such a sentence, a reaction (braking, stopping, slowing, swerving) is the narrator's, and so is
   a verb whose object is a road user said before as "him", "her", "them" or "it": whoever does it to
   that road user is not that road user ("passed them wide": the narrator passes, the riders go on).
@@ -60,11 +62,15 @@ def narrators_acts(clauses: list, tokens: list[str], first_person: bool) -> dict
     for _, mentions in clauses:
         if not (mentions and mentions[0].slot == "link"):  # (a new sentence: no "then" or "while" before)
             bare, lead_seen = True, False
+        acted = False  # (a verb said in this clause so far)
         for k, m in enumerate(mentions):
+            if m.slot == "modal" and acted and _run_on(mentions, k):
+                bare, lead_seen = True, False  # ("... right in front of me had to brake": a new one)
             if m.slot in _NAMING:
                 bare = False
+            acted = acted or m.slot in _VERB_SLOTS
             if not bare:
-                break
+                continue
             if m.slot not in _VERB_SLOTS:
                 continue
             if not lead_seen:
@@ -83,6 +89,22 @@ def narrators_acts(clauses: list, tokens: list[str], first_person: bool) -> dict
             if objected or (m.value[0] in _REACTIONS and not to_the_ego):
                 out[m.start] = objected and m.value[0] == "overtake"
     return out
+
+
+def _run_on(mentions: list, k: int) -> bool:
+    """Whether the modal at ``mentions[k]``, said after a verb in its clause, opens a clause of its own
+    with its subject left out ("pulled out right in front of me had to brake", "..., had to stamp on
+    the brakes"): nothing joins it to what came before ("and", "then") and no road user stands right
+    before it as its subject ("the cyclist ahead of me had to brake" is the cyclist's)."""
+    j = k - 1
+    while j >= 0 and mentions[j].slot == "punct" and mentions[j].value == ",":
+        j -= 1
+    if j < 0:
+        return False
+    before = mentions[j]
+    if before.slot in ("conj", "link", "relative"):
+        return False
+    return not (before.slot in _NAMING and before.value != "ego")
 
 
 def not_meant(tokens: list[str], i: int) -> bool:
