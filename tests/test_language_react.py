@@ -149,3 +149,45 @@ def test_a_run_on_modal_without_its_subject_is_the_narrators(text, expected):
 )
 def test_a_modal_with_the_road_user_as_its_subject_stays_its_own(text, expected):
     assert _behaviours(text) == expected
+
+
+# --- "the rider": the road user named before that rides, said again -----------------------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        (
+            "A cyclist rides 15 m ahead of the ego at 18 km/h; the ego follows at 30 km/h. "
+            "After 4 s the rider makes an emergency stop.",
+            [["sudden_stop"]],
+        ),
+        (
+            "I was following a lad on an e-scooter at 25 km/h. Then the rider slammed on his brakes.",
+            [["sudden_stop"]],
+        ),
+        (
+            "An e-scooter rider is ahead of the AV in its lane; the AV keeps 20 m behind. This rider then stops hard.",
+            [["sudden_stop"]],
+        ),
+    ],
+    ids=["cyclist-then-the-rider", "lad-on-e-scooter", "this-rider"],
+)
+def test_the_rider_is_the_riding_road_user_named_before(text, expected):
+    assert _behaviours(text) == expected
+
+
+# --- a fall after contact is the outcome, not a second behaviour ----------------------------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A cyclist cut in front of the ego, clipped its bumper and fell off.", [["cut_in"]]),
+        ("A cyclist cut in ahead of me, struck my wing mirror, falling into the road.", [["cut_in"]]),
+        ("A moped cut in ahead of us and collided with our bumper, then fell over.", [["cut_in"]]),
+    ],
+    ids=["clipped-fell-off", "struck-falling", "collided-then-fell"],
+)
+def test_a_fall_after_contact_is_the_outcome(text, expected):
+    assert _behaviours(text) == expected
+
+
+def test_a_fall_with_no_contact_before_it_stays_a_behaviour():
+    assert "sudden_stop" in _behaviours("The cyclist ahead of the ego falls off on the wet road.")[0]

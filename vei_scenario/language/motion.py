@@ -115,15 +115,34 @@ _CONTACT = frozenset(("crash", "crashes", "crashed", "crashing", "collide", "col
                       "hits", "hitting", "smash", "smashed", "smashes", "smashing"))  # fmt: skip
 
 
-def outcome_not_behaviour(clauses: list) -> list:
+#: Verbs (lemmas) of touching another road user: a fall said after one is what the contact did.
+_TOUCH = frozenset(("hit", "strike", "clip", "collide", "crash", "smash", "touch", "bump", "knock", "tap", "graze"))
+
+
+def _touched_before(tokens: list[str], i: int) -> bool:
+    """Whether a verb of contact stands before token ``i`` in its sentence ("struck", "clipped")."""
+    for tok in reversed(tokens[:i]):
+        if tok in (".", "!", "?", ";"):
+            return False
+        if set(lemmas(tok).get("VERB", ())) & _TOUCH:
+            return True
+    return False
+
+
+def outcome_not_behaviour(clauses: list, tokens: list[str] | None = None) -> list:
     """``clauses`` (the reader's mentions, by clause) without the verbs that state the outcome rather
-    than what a road user does: a contact verb whose subject is both parties, "yield a/an ..."."""
+    than what a road user does: a contact verb whose subject is both parties, "yield a/an ...", and a
+    fall said after a contact in its sentence ("clipped my mirror and fell off": what the contact did,
+    not a stop the road user makes; ``tokens``: those the mentions index)."""
     out = []
     for link, mentions in clauses:
         kept = []
         for k, m in enumerate(mentions):
             if m.slot == "behaviour":
                 first = m.words.split()[0]
+                fall = tokens is not None and "fall" in lemmas(first).get("VERB", ())
+                if fall and _touched_before(tokens, m.start):
+                    continue  # ("..., struck the ego's mirror, falling into the road": the outcome)
                 before = next((x for x in reversed(mentions[:k]) if x.slot not in ("modal", "ego_verb")), None)
                 plural = m.prev in _BOTH or (before is not None and before.slot == "pronoun" and before.words in _BOTH)
                 if first in _CONTACT and plural:

@@ -14,6 +14,9 @@ hard stop, an overtake of the ego). The grammar says whose it is:
   a verb whose object is a road user said before as "him", "her", "them" or "it": whoever does it to
   that road user is not that road user ("passed them wide": the narrator passes, the riders go on).
 
+"The rider" said alone names the road user named before that rides (a cyclist, an e-scooter rider):
+read as no one, its verb would go to whoever was the subject last (often the ego, "the SV follows").
+
 A behaviour said as a noun after "no" ("no braking", "no crossing intended", "no overtaking") or as
 what an intent or a sign is denied of ("no intention of crossing", "without any sign of stopping")
 does not happen: nothing is read of it. (A verb denied, "does not stop", is read by the reader as
@@ -21,6 +24,8 @@ what the road user does instead.)
 """
 
 from __future__ import annotations
+
+from collections.abc import Callable
 
 from vei_scenario.language.lemmas import lemmas
 
@@ -122,3 +127,29 @@ def not_meant(tokens: list[str], i: int) -> bool:
     while j >= 0 and tokens[j] in _BEFORE_INTENT:
         j -= 1
     return j >= 0 and tokens[j] in ("no", "without")
+
+
+#: Road-user types that are ridden: "the rider" is one of them.
+_RIDDEN = frozenset(("bicycle", "e-scooter"))
+#: Words before "rider" that say it is one named before ("the rider", "this rider").
+_BACK = frozenset(("the", "this", "that"))
+
+
+def the_rider(tokens: list[str], kind_at: Callable[[list[str], int], tuple[str, int] | None]) -> list[str]:
+    """``tokens`` with "the rider" (or "this rider") said as the word of
+    the last ridden road user named before it ("a cyclist ... the rider": "the cyclist"), where
+    ``kind_at`` (the reader's) reads no road user at that word and one was named. ``kind_at(tokens,
+    i)`` gives the road-user type a phrase at ``i`` names and its length."""
+    out = list(tokens)
+    for i, tok in enumerate(out):
+        if tok != "rider" or not i or out[i - 1] not in _BACK or kind_at(out, i) is not None:
+            continue
+        word, j = None, 0
+        while j < i:
+            found = kind_at(out, j)
+            if found is not None and found[0] in _RIDDEN:
+                word = out[j]
+            j += found[1] if found is not None else 1
+        if word is not None:
+            out[i] = word
+    return out
