@@ -115,15 +115,34 @@ _CONTACT = frozenset(("crash", "crashes", "crashed", "crashing", "collide", "col
                       "hits", "hitting", "smash", "smashed", "smashes", "smashing"))  # fmt: skip
 
 
-def outcome_not_behaviour(clauses: list) -> list:
+#: Verbs (lemmas) of touching another road user: a fall said after one is what the contact did.
+_TOUCH = frozenset(("hit", "strike", "clip", "collide", "crash", "smash", "touch", "bump", "knock", "tap", "graze"))
+
+
+def _touched_before(tokens: list[str], i: int) -> bool:
+    """Whether a verb of contact stands before token ``i`` in its sentence ("struck", "clipped")."""
+    for tok in reversed(tokens[:i]):
+        if tok in (".", "!", "?", ";"):
+            return False
+        if set(lemmas(tok).get("VERB", ())) & _TOUCH:
+            return True
+    return False
+
+
+def outcome_not_behaviour(clauses: list, tokens: list[str] | None = None) -> list:
     """``clauses`` (the reader's mentions, by clause) without the verbs that state the outcome rather
-    than what a road user does: a contact verb whose subject is both parties, "yield a/an ..."."""
+    than what a road user does: a contact verb whose subject is both parties, "yield a/an ...", and a
+    fall said after a contact in its sentence ("clipped my mirror and fell off": what the contact did,
+    not a stop the road user makes; ``tokens``: those the mentions index)."""
     out = []
     for link, mentions in clauses:
         kept = []
         for k, m in enumerate(mentions):
             if m.slot == "behaviour":
                 first = m.words.split()[0]
+                fall = tokens is not None and "fall" in lemmas(first).get("VERB", ())
+                if fall and _touched_before(tokens, m.start):
+                    continue  # ("..., struck the ego's mirror, falling into the road": the outcome)
                 before = next((x for x in reversed(mentions[:k]) if x.slot not in ("modal", "ego_verb")), None)
                 plural = m.prev in _BOTH or (before is not None and before.slot == "pronoun" and before.words in _BOTH)
                 if first in _CONTACT and plural:
@@ -297,8 +316,9 @@ def _ends_in_front_of_the_ego(mentions: list, k: int) -> bool:
 def into_the_ego_lane(clauses: list, tokens: list[str]) -> list:
     """``clauses`` with a move into the ego's lane or path read as a cut-in (``tokens``: the reader's
     tokens, which the mentions index): "into" + the ego's lane after the verb's phrase ("moves across
-    into my lane"), or a lane change that ends right in front of the ego
-    (:func:`_ends_in_front_of_the_ego`)."""
+    into my lane"), a lane change that ends right in front of the ego
+    (:func:`_ends_in_front_of_the_ego`), or a swerve out from the side of the road (:func:`_from_the_side`)
+    into the road or right in front of the ego."""
     out = []
     for link, mentions in clauses:
         kept = list(mentions)
@@ -306,10 +326,37 @@ def into_the_ego_lane(clauses: list, tokens: list[str]) -> list:
             if m.slot != "behaviour" or m.value[0] not in _INTO_EGO_LANE_FROM:
                 continue
             lane_change = m.value[0] == "change_lane" and _ends_in_front_of_the_ego(kept, k)
-            if _into_ego_lane(tokens, m.end) or lane_change:
+            from_the_side = m.value[0] in _OUT_OF_A_LANE and _from_the_side(kept, k)
+            out_in_front = from_the_side and (_ends_in_front_of_the_ego(kept, k) or _into_the_road(tokens, m.end))
+            if _into_ego_lane(tokens, m.end) or lane_change or out_in_front:
                 kept[k] = replace(m, value=("cut_in", {x: v for x, v in m.value[1].items() if x != "direction"}))
         out.append((link, kept))
     return out
+
+
+#: Moves out of a lane: from the side of the road, out into the ego's path.
+_OUT_OF_A_LANE = frozenset(("change_lane", "cut_out"))
+#: Where a move out from the side of the road ends: on the road, in the traffic.
+_THE_ROAD = frozenset(("road", "carriageway", "roadway", "street", "traffic"))
+
+
+def _from_the_side(mentions: list, k: int) -> bool:
+    """Whether the road user whose move is ``mentions[k]`` was said to be at the side of the road (at
+    the kerb, in a bike lane, on the pavement, at a stop) since it was named: a swerve out of there is
+    out into the road, not out of the ego's lane as a lead car's is."""
+    for x in reversed(mentions[:k]):
+        if x.slot == "kerb":
+            return True
+        if x.slot in ("actor", "pronoun", "member") and x.value != "ego":
+            return False
+    return False
+
+
+def _into_the_road(tokens: list[str], j: int) -> bool:
+    """Whether "into" or "onto" + the road or the traffic follows right after token ``j`` ("swerved out
+    into the road", "wobbles out into the traffic")."""
+    rest = [t for t in tokens[j : j + 4] if t not in ("the", "a", "busy", "main")]
+    return len(rest) >= 2 and rest[0] in ("into", "onto") and rest[1] in _THE_ROAD
 
 
 def _into_ego_lane(tokens: list[str], j: int) -> bool:

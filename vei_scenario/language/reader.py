@@ -28,7 +28,16 @@ import re
 from dataclasses import dataclass, field, replace
 from functools import lru_cache
 
-from vei_scenario.language import discourse, ego, ego_speed, generic_ego, motion, scenery, sides
+from vei_scenario.language import (
+    discourse,
+    ego,
+    ego_speed,
+    generic_ego,
+    motion,
+    scenery,
+    sides,
+    whose_act,
+)
 from vei_scenario.language import lexicon as L
 from vei_scenario.language import quantities as Q
 from vei_scenario.language import settings as S
@@ -534,6 +543,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
     tokens = generic_ego.frame(tokens, _kind_at, _known, framed)  # (the ego as drivers in general)
     tokens = ego_speed.at_the_limit(tokens)  # ("doing the 20 limit": at 20)
     tokens, dropped = discourse.resolve(tokens, _kind_at, _known, proper_names(text))  # (who is who; words out)
+    tokens = whose_act.the_rider(tokens, _kind_at)  # ("a cyclist ... the rider brakes": the cyclist)
     dropped = framed + dropped
     ignored: list[str] = [w for w in dropped if w not in FUNCTION_WORDS and w.isalpha()]
     left_hand, ring = sides.drives_on_left(tokens, text), "roundabout" in tokens
@@ -786,6 +796,10 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
                 slot, value = "speed_adjective", V.SPEED_WORDS[said]  # (nor the subject's speed)
             elif slot == "behaviour" and _after_copula(tokens, i):
                 slot, value = "speed_word", V.SPEED_WORDS[said]  # "the truck is slow"
+        if slot == "behaviour" and whose_act.not_meant(tokens, i):
+            ignored.append(" ".join(tokens[i : i + len(key)]))  # ("no intention of crossing": no act)
+            i += len(key)
+            continue
         if slot == "behaviour" and _denied(tokens, i) and key[0] not in _NEGATORS:
             name, cfg = _DENIED.get(value[0], ("keep_going", {}))  # ("does not stop": it carries on)
             held = {**cfg, "_still": 1.0} if value[0] == "keep_going" else cfg
@@ -1147,7 +1161,9 @@ def read(text: str) -> Reading:
     clauses, ignored, read_as, scanned = scan(text)
     ignored[:0] = [w for w in aside if w not in FUNCTION_WORDS]
     clauses = sides.narrator_lane(sides.relate_headings(clauses))
-    clauses = out_of_a_side_road(destinations_not_origins(outcome_not_behaviour(_drop_label(clauses))), scanned)
+    clauses = out_of_a_side_road(
+        destinations_not_origins(outcome_not_behaviour(_drop_label(clauses), scanned)), scanned
+    )
     tokens = _tokens(text)
     said = " ".join(tokens)  # (the whole text as the reader reads it, for what is stated of it as a whole)
     clauses = out_to_overtake(participle_of_state(give_the_ego_the_way(into_the_ego_lane(clauses, scanned), scanned)))
@@ -1162,6 +1178,7 @@ def read(text: str) -> Reading:
     both_with_ego = False  # ("CCRb: both cars at 50 km/h ...": the ego is one of them)
     ego_is_a_person = False  # (the ego named as "I" or "we": "it" is then never the ego)
     first_person = motion.told_in_the_first_person(text, tokens)  # (the narrator's)
+    narrators = whose_act.narrators_acts(clauses, scanned, first_person)  # ("Had to brake.": the narrator's verbs)
     bound: dict[str, _Actor | str] = {}  # "he"/"she" → whom it first named
     resolved: dict[int, _Actor | str] = {}  # a road-user mention's start → whom it names
     owned = {o for _, ms in clauses for x in ms for o in x.owners}  # mentions a number is said of
@@ -1457,6 +1474,13 @@ def read(text: str) -> Reading:
                 clause_subject = subject = "ego"
                 named.append(("ego", "subject"))
                 expect_subject = False
+                prev = m
+                continue
+            if m.slot in _VERBS and m.start in narrators and actors:
+                ignored.append(m.words)  # ("Waited, then passed them wide.": the narrator's, not theirs)
+                if narrators[m.start]:
+                    actors[-1].passed = True
+                reacting = not narrators[m.start]
                 prev = m
                 continue
             if m.slot in _VERBS:
