@@ -13,6 +13,7 @@ from __future__ import annotations
 import math
 import random
 
+from vei_scenario.language import lane_room
 from vei_scenario.language.behaviours import BEHAVIOURS
 from vei_scenario.language.behaviours.base import time_to_cover, value
 from vei_scenario.language.layers import behaviour_nodes
@@ -99,6 +100,8 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
         # road users in lanes on both sides of the ego (or one on its right on a road said to have one
         # lane each way): the lanes the story needs, the ego between them
         lanes, ego_lane = max(lanes, 3 if "left" in relations else 2), 2
+    lane_choice = lane_room.choose([_lane_user(a) for a in reading.actors], lanes, ego_lane)
+    lanes, ego_lane = lane_choice.lanes, lane_choice.ego_lane
     placement = {
         "straight": "straight",
         "crossroad": "before_junction",
@@ -122,7 +125,7 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
     intent = reading.intent or "unspecified"
     adversaries = []
     timed: set[str] = set()  # (red-light runners timed by placement, not at a distance the text states)
-    for spec in reading.actors:
+    for index, spec in enumerate(reading.actors):
         behaviours = spec.behaviours or [("keep_going", {}, None, "sequence")]  # (the reading stays as read)
         name = f"Adversary{len(adversaries) + 1}"
         nodes = []
@@ -140,7 +143,11 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
             nodes.append((link, {"behaviour": bname, "config": cfg}))
         topology = _topology(nodes)
         first = BEHAVIOURS[behaviours[0][0]]
-        relation = spec.relation or getattr(first, "DEFAULT_SPAWN", {}).get("relation", "ahead")
+        relation = (
+            lane_choice.relations.get(index)
+            or spec.relation
+            or getattr(first, "DEFAULT_SPAWN", {}).get("relation", "ahead")
+        )
         given_speed = spec.speed_mps
         if given_speed is not None and given_speed < 0:  # a speed word: a factor on the default speed
             given_speed = _default_speed(spec.kind, relation, ego_speed) * -given_speed
@@ -249,6 +256,24 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
     }
     layers["background"]["vehicles"] = background(rng, layers)
     return layers
+
+
+def _lane_user(spec) -> lane_room.LaneUser:
+    """What :func:`lane_room.choose` needs of a road user as read: where it starts, its first
+    behaviour's usual side where the text leaves it open, whether it swerves from the kerb (the
+    writer puts such a rider on the kerb lane's edge), and its lane changes with their stated sides."""
+    behaviours = spec.behaviours or [("keep_going", {}, None, "sequence")]
+    names = [b[0] for b in behaviours]
+    default = getattr(BEHAVIOURS[names[0]], "DEFAULT_SPAWN", {}).get("relation", "ahead")
+    relation = spec.relation or default
+    swerves = bool(set(names) & set(SWERVES_FROM_KERB)) and "cross_in_front" not in names
+    at_kerb = relation.startswith("roadside") and vulnerable(spec.kind) and swerves
+    changes = tuple(
+        (b[0], float(b[1]["direction"]) if "direction" in b[1] else None)
+        for b in behaviours
+        if b[0] in lane_room.LANE_CHANGES
+    )
+    return lane_room.LaneUser(spec.relation, default, at_kerb, changes)
 
 
 #: How much slower than a rider's top speed an ego it passes goes, where the text leaves the ego's
@@ -866,7 +891,8 @@ def background(rng: random.Random, layers: dict) -> list[dict]:
     crossings = [
         ego_s + float(a["spawn"].get("longitudinal_m", 0.0))
         for a in layers["adversaries"]
-        if a["spawn"]["relation"].startswith("roadside") or (a["spawn"]["relation"] == "ahead" and a["speed_mps"] == 0)
+        if a["spawn"]["relation"].startswith("roadside")
+        or (a["spawn"]["relation"] in ("ahead", "left", "right") and a["speed_mps"] == 0)
     ]
 
     def passes_crossing(lane: int, s: float, v: float) -> bool:
