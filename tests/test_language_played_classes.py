@@ -275,3 +275,28 @@ def test_a_road_user_pulling_out_ahead_of_a_fast_ego_has_the_room_to_do_it(
     make_room_to_pull_out(ego, [adv])
     layers = _layers("crossroad", 1, ego, [adv], duration_s=30.0)
     assert _play(layers, tmp_path) == []
+
+
+@pytest.mark.parametrize("relation", ["roadside_left", "roadside_right"])
+@pytest.mark.parametrize(("ego_speed", "kind"), [(7.0, "e-scooter"), (11.0, "bicycle"), (14.0, "e-scooter")])
+def test_a_rider_at_either_kerb_who_swerves_in_and_turns_at_the_junction_sets_off_from_a_lane_of_the_ego_s_way(
+    relation, ego_speed, kind, tmp_path
+):
+    """A rider at the kerb that swerves into the road starts on the edge of a lane of the ego's
+    direction (at the left kerb, the lane next to the centre line): its route through the junction
+    starts in that lane, not in the lane across the centre line it stood beside."""
+    layers = _layers(
+        "crossroad",
+        2,
+        {"speed_mps": ego_speed},
+        [
+            _crosser(
+                relation,
+                15.0,
+                min(ego_speed - 1.0, 6.5),
+                [{"behaviour": "forced_turn", "config": {"turn": "right", "gap_m": 4.0}}],
+                kind,
+            )
+        ],
+    )
+    assert _play(layers, tmp_path) == []

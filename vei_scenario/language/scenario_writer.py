@@ -365,6 +365,7 @@ def write_scenario(layers: dict, stem: str) -> WrittenScenario:
             # writer who keeps left), on the left edge of the ego's direction
             pose = placement.kerb_edge(pose, TYPES[kind][0][1])
             ctx.actor_offset_m = pose.offset
+            ctx.actor_lane_id = pose.lane_id  # (from the left kerb: a lane of the ego's direction; routes start there)
             at_kerb = "give_way" in does
         if at_kerb:
             net = net or _road_network(xodr_bytes)  # (only crossings ask the road model)
