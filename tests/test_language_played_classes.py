@@ -300,3 +300,54 @@ def test_a_rider_at_either_kerb_who_swerves_in_and_turns_at_the_junction_sets_of
         ],
     )
     assert _play(layers, tmp_path) == []
+
+
+@pytest.mark.parametrize("map_kind", ["straight", "curve"])
+@pytest.mark.parametrize(
+    ("ego_speed", "speed", "kind"), [(6.0, 6.0, "e-scooter"), (12.0, 10.0, "van"), (20.0, 18.0, "car")]
+)
+def test_an_oncoming_road_user_that_overtakes_comes_over_to_the_ego_s_side_and_gets_back_in(
+    map_kind, ego_speed, speed, kind, tmp_path
+):
+    """Overtaking, seen by the ego, of a road user coming the other way: it pulls out onto the ego's
+    side of the road, ahead of the ego and facing it, and is back in its own lane when they meet."""
+    import numpy as np
+
+    from vei_scenario.language.behaviours.overtake import place_oncoming
+    from vei_scenario.language.corpus_check import _ego_frame
+
+    cfg = {"gap_m": 15.0, "lane_change_s": 1.5}
+    lon = place_oncoming(ego_speed, speed, 4.6 + 4.6, cfg)
+    adv = {
+        "name": "Adversary1",
+        "type": kind,
+        "spawn": {"relation": "oncoming", "longitudinal_m": round(min(lon, 250.0), 3)},
+        "speed_mps": speed,
+        "behaviour": {"behaviour": "overtake", "config": cfg},
+    }
+    layers = _layers(map_kind, 1, {"speed_mps": ego_speed}, [adv], duration_s=25.0)
+    result = play_layers(layers, tmp_path)
+    assert played_problems(result, layers) == []
+    assert not result.collisions
+    if map_kind == "straight":  # (on a bend the ego's frame bends away from the road)
+        lon_t, lat_t = _ego_frame(result, "Adversary1")
+        assert ((lon_t > 0) & (np.abs(lat_t) < 1.0)).any()  # on the ego's side, ahead of it
+        closest = int(np.argmin(np.hypot(lon_t, lat_t)))
+        assert abs(lat_t[closest]) > 2.5  # back in its own lane when they meet
+
+
+def test_an_overtake_read_from_the_far_arm_of_a_junction_starts_on_the_ego_s_road(tmp_path):
+    """Near the ego's junction, one coming the other way from beyond it that overtakes starts on the
+    ego's road, not before the opposite arm's start (outside the road)."""
+    from vei_scenario.language.reading import ActorSpec, Reading
+    from vei_scenario.language.rules_backend import sample_layers
+
+    for seed in (0, 1, 2):
+        reading = Reading(
+            map_kind="crossroad",
+            actors=[ActorSpec("van", "junction_opposite", None, None, [("overtake", {}, None, "sequence")])],
+        )
+        layers = sample_layers(reading, "built by a test", seed)
+        assert layers["adversaries"][0]["spawn"]["relation"] == "oncoming"
+        assert layers["adversaries"][0]["spawn"]["longitudinal_m"] > 0
+        assert played_problems(play_layers(layers, tmp_path), layers) == []

@@ -622,6 +622,13 @@ def _place_adversary(
         # a parked car that pulls out: far enough ahead for the ego to close in for lead_s first
         lead = float(cfg.get("lead_s", 2.5))
         spawn["longitudinal_m"] = round(lengths / 2 + mod.pull_out_distance_m(ego_speed, cfg) + ego_speed * lead, 3)
+    elif behaviour_name == "overtake" and relation in ("oncoming", "junction_opposite"):
+        # coming the other way, it overtakes on the ego's side of the road: ahead, on the ego's road
+        spawn["relation"] = "oncoming"
+        out_speed = ego_speed if speed is None else speed
+        stated = distance_m is not None and cfg.get("gap_m") != distance_m  # (not its gap where it gets back in)
+        lon = distance_m if stated else mod.place_oncoming(ego_speed, out_speed, lengths, cfg)
+        spawn["longitudinal_m"] = round(lon, 3)
     elif hasattr(mod, "place"):
         lon, placed_speed = mod.place(ego_speed, lengths, cfg)
         if relation == "behind" and lon > 0:
