@@ -351,3 +351,23 @@ def test_an_overtake_read_from_the_far_arm_of_a_junction_starts_on_the_ego_s_roa
         assert layers["adversaries"][0]["spawn"]["relation"] == "oncoming"
         assert layers["adversaries"][0]["spawn"]["longitudinal_m"] > 0
         assert played_problems(play_layers(layers, tmp_path), layers) == []
+
+
+@pytest.mark.parametrize("relation", ["junction_left", "junction_right"])
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_a_red_light_runner_read_at_a_standstill_still_drives_through_and_meets_the_ego_s_path(
+    relation, seed, tmp_path
+):
+    """A run of the red is a drive through it: a runner whose reading gives it no speed (0) is given a
+    road pace, and meets the ego's path; one with a speed keeps it (near miss below)."""
+    from vei_scenario.language.reading import ActorSpec, Reading
+    from vei_scenario.language.rules_backend import sample_layers
+
+    def runner(speed):
+        actor = ActorSpec("car", relation, None, speed, [("run_red_light", {}, None, "sequence")])
+        return sample_layers(Reading(map_kind="crossroad", actors=[actor]), "built by a test", seed)
+
+    layers = runner(0.0)
+    assert layers["adversaries"][0]["speed_mps"] > 5.0
+    assert played_problems(play_layers(layers, tmp_path), layers) == []
+    assert runner(8.0)["adversaries"][0]["speed_mps"] == 8.0
