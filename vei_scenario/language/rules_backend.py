@@ -15,7 +15,7 @@ import random
 
 from vei_scenario.language import lane_room
 from vei_scenario.language.behaviours import BEHAVIOURS
-from vei_scenario.language.behaviours.base import time_to_cover, value
+from vei_scenario.language.behaviours.base import value
 from vei_scenario.language.layers import behaviour_nodes
 from vei_scenario.language.maps import ARM_LENGTH_M, ROUNDABOUT_RADIUS_M, layout
 from vei_scenario.language.placement import DEFAULT_FEATURE_DISTANCE_M, ego_pose, junction_conflict_m, lane_id
@@ -421,15 +421,17 @@ def make_room_to_pull_out(ego: dict, adversaries: list[dict], lanes: int = 1, ri
         if node["behaviour"] != "turn_into" or relation not in ("junction_left", "junction_right"):
             continue
         cfg = node.get("config", {})
-        length, top, accel = TYPES[adv["type"]][0][0], TYPES[adv["type"]][3], TYPES[adv["type"]][4]
         actor_path, ego_path = turn_into.paths_m(relation == "junction_left", lane_id(lanes, ego["lane"]), ring)
-        v = min(value(cfg, turn_into.PARAMETERS, "speed_mps"), 8.0, top)
-        a = min(value(cfg, turn_into.PARAMETERS, "accel_mps2"), accel)
-        t_actor = time_to_cover(actor_path + length / 2, v, a, 0.0)
-        gap = value(cfg, turn_into.PARAMETERS, "arrival_gap_s")
-        need = ego_speed * (t_actor + max(gap, 0.0)) - ego_path + PULL_OUT_MARGIN_M
+        t_actor = turn_into.time_to_join_s(actor_path, cfg, *_vehicle(adv["type"]))
+        gap = max(value(cfg, turn_into.PARAMETERS, "arrival_gap_s"), 0.0)
+        need = turn_into.ego_distance_at_set_off_m(ego_speed, t_actor, ego_path, gap) + PULL_OUT_MARGIN_M
         if need > float(ego["distance_m"]):
             ego["distance_m"] = round(min(need, ARM_LENGTH_M - 20.0), 3)
+
+
+def _vehicle(kind: str) -> tuple[float, float, float]:
+    """(length m, top speed m/s, acceleration m/s²) of a road user of ``kind`` as the writer gives it."""
+    return TYPES[kind][0][0], TYPES[kind][3], TYPES[kind][4]
 
 
 def retime_junction_runs(ego: dict, adversaries: list[dict], lanes: int, names: set[str]) -> None:
@@ -786,10 +788,16 @@ def _turn_in_at_distance(kind: str, relation: str, cfg: dict, ego: dict, lanes: 
     side street 20 m ahead of me"): its timing (``arrival_gap_s``) is the one that sets it off when the
     ego is that far from where it joins, and the distance is kept in its configuration. Returns None
     when kept, else why not (the timing is then the nearest the behaviour holds)."""
-    from vei_scenario.language.behaviours.turn_into import PARAMETERS, gap_for_distance
+    from vei_scenario.language.behaviours import turn_into
+    from vei_scenario.language.behaviours.turn_into import PARAMETERS
 
     from_left = relation == "junction_left"
     ego_speed, ego_lane = float(ego["speed_mps"]), lane_id(lanes, int(ego["lane"]))
+    ring = ego.get("placement") == "before_roundabout"
+
+    def gap_for_distance(distance_m: float, ego_speed: float, from_left: bool, ego_lane: int, cfg: dict) -> float:
+        return turn_into.gap_for_distance(distance_m, ego_speed, from_left, ego_lane, cfg, _vehicle(kind), ring)
+
     gap = gap_for_distance(distance_m, ego_speed, from_left, ego_lane, cfg)
     low, high = PARAMETERS["arrival_gap_s"].low, PARAMETERS["arrival_gap_s"].high
     wanted = float(cfg.get("arrival_gap_s", PARAMETERS["arrival_gap_s"].default))
