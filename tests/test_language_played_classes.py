@@ -371,3 +371,19 @@ def test_a_red_light_runner_read_at_a_standstill_still_drives_through_and_meets_
     assert layers["adversaries"][0]["speed_mps"] > 5.0
     assert played_problems(play_layers(layers, tmp_path), layers) == []
     assert runner(8.0)["adversaries"][0]["speed_mps"] == 8.0
+
+
+@pytest.mark.parametrize("relation", ["roadside_right", "roadside_left"])
+@pytest.mark.parametrize(
+    ("ego_speed", "kind", "first"),
+    [(7.0, "bicycle", "cut_in"), (10.0, "e-scooter", "cut_in"), (12.0, "bicycle", "change_lane")],
+)
+def test_a_rider_at_the_kerb_who_swerves_in_and_then_crosses_sets_off_from_a_lane(
+    relation, ego_speed, kind, first, tmp_path
+):
+    """A rider at the kerb whose first move is a swerve into the road (then across it) starts on the
+    kerb lane's edge, where a lane change can start, and crosses from that lane; beyond the kerb it
+    is on no lane and its swerve cannot be played."""
+    nodes = [{"behaviour": first, "config": {"gap_m": 20.0}}, {"behaviour": "cross_in_front", "config": {}}]
+    layers = _layers("straight", 2, {"speed_mps": ego_speed}, [_crosser(relation, 30.0, 4.0, nodes, kind)])
+    assert _play(layers, tmp_path) == []

@@ -268,7 +268,9 @@ def _lane_user(spec) -> lane_room.LaneUser:
     names = [b[0] for b in behaviours]
     default = getattr(BEHAVIOURS[names[0]], "DEFAULT_SPAWN", {}).get("relation", "ahead")
     relation = spec.relation or default
-    swerves = bool(set(names) & set(SWERVES_FROM_KERB)) and "cross_in_front" not in names
+    swerves = names[0] in SWERVES_FROM_KERB or (
+        bool(set(names) & set(SWERVES_FROM_KERB)) and "cross_in_front" not in names
+    )
     at_kerb = relation.startswith("roadside") and vulnerable(spec.kind) and swerves
     changes = tuple(
         (b[0], float(b[1]["direction"]) if "direction" in b[1] else None)

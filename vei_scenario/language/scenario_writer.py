@@ -357,7 +357,9 @@ def write_scenario(layers: dict, stem: str) -> WrittenScenario:
         controller = None
         does = [n["behaviour"] for _, n in behaviour_nodes(adv["behaviour"])]
         at_kerb = adv["spawn"]["relation"].startswith("roadside") and vulnerable(kind)
-        swerves = set(does) & set(SWERVES_FROM_KERB) and "cross_in_front" not in does
+        # (one whose first move is a swerve swerves from the kerb lane's edge, and crosses from that lane
+        # after it, if it does; one that crosses first crosses from the kerb)
+        swerves = does[0] in SWERVES_FROM_KERB or (set(does) & set(SWERVES_FROM_KERB) and "cross_in_front" not in does)
         if at_kerb and swerves:
             # a rider at the kerb that swerves into the road (or a walker at the verge the text has move
             # along it): on the kerb lane's edge, where a lane change can start; one that gives way first
