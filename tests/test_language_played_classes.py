@@ -387,3 +387,33 @@ def test_a_rider_at_the_kerb_who_swerves_in_and_then_crosses_sets_off_from_a_lan
     nodes = [{"behaviour": first, "config": {"gap_m": 20.0}}, {"behaviour": "cross_in_front", "config": {}}]
     layers = _layers("straight", 2, {"speed_mps": ego_speed}, [_crosser(relation, 30.0, 4.0, nodes, kind)])
     assert _play(layers, tmp_path) == []
+
+
+@pytest.mark.parametrize(
+    ("meets", "relation"),
+    [("run_red_light", "junction_left"), ("run_red_light", "junction_right"), ("turn_into", "junction_right")],
+)
+@pytest.mark.parametrize(
+    ("seed", "ego_speed", "stop"), [(0, 9.0, "sudden_stop"), (1, 12.5, "stop"), (2, 16.0, "sudden_stop")]
+)
+def test_a_vehicle_ahead_that_stops_does_not_hold_the_ego_short_of_the_junction_where_someone_meets_it(
+    meets, relation, seed, ego_speed, stop, tmp_path
+):
+    """A vehicle ahead of the ego that stops (when, not said) while someone is to meet the ego at its
+    junction stops once through the junction: the ego reaches the junction and the other meets its
+    path. A stop whose time is said keeps it (near miss), and so does one on a road with no junction."""
+    from vei_scenario.language.reading import ActorSpec, Reading
+    from vei_scenario.language.rules_backend import sample_layers
+
+    def reading(stop_cfg, map_kind="crossroad", other=True):
+        actors = [ActorSpec("car", "ahead", None, None, [(stop, stop_cfg, None, "sequence")])]
+        if other:
+            actors.append(ActorSpec("car", relation, None, None, [(meets, {}, None, "sequence")]))
+        return Reading(map_kind=map_kind, ego_speed_mps=ego_speed, actors=actors)
+
+    layers = sample_layers(reading({}), "built by a test", seed)
+    assert played_problems(play_layers(layers, tmp_path), layers) == []
+    kept = sample_layers(reading({"delay_s": 1.5}), "built by a test", seed)
+    assert kept["adversaries"][0]["behaviour"]["config"]["delay_s"] == 1.5
+    plain = sample_layers(reading({}, "straight", other=False), "built by a test", seed)
+    assert plain["adversaries"][0]["behaviour"]["config"].get("delay_s", 1.0) < 5.0

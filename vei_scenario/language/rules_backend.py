@@ -125,6 +125,7 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
     intent = reading.intent or "unspecified"
     adversaries = []
     timed: set[str] = set()  # (red-light runners timed by placement, not at a distance the text states)
+    stops_open: set[str] = set()  # (stops whose time the text leaves open)
     for index, spec in enumerate(reading.actors):
         behaviours = spec.behaviours or [("keep_going", {}, None, "sequence")]  # (the reading stays as read)
         name = f"Adversary{len(adversaries) + 1}"
@@ -140,6 +141,8 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
                 cfg.setdefault("agent", "sfm")  # the e-scooter rider is the social force model's
             if idx == 0:
                 first_cfg = cfg
+                if bname in ("stop", "sudden_stop") and "delay_s" not in given:
+                    stops_open.add(name)
             nodes.append((link, {"behaviour": bname, "config": cfg}))
         topology = _topology(nodes)
         first = BEHAVIOURS[behaviours[0][0]]
@@ -227,6 +230,8 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
     make_room_to_pull_out(ego, adversaries, lanes, kind == "roundabout")
     if ego.get("distance_m") != start_m:
         retime_junction_runs(ego, adversaries, lanes, timed)
+    if kind == "crossroad":
+        stop_beyond_junction(ego, adversaries, stops_open)
     layers = {
         "format": "vei-layers/1",
         "description": text,
@@ -429,6 +434,28 @@ def make_room_to_pull_out(ego: dict, adversaries: list[dict], lanes: int = 1, ri
         need = turn_into.ego_distance_at_set_off_m(ego_speed, t_actor, ego_path, gap) + PULL_OUT_MARGIN_M
         if need > float(ego["distance_m"]):
             ego["distance_m"] = round(min(need, ARM_LENGTH_M - 20.0), 3)
+
+
+def stop_beyond_junction(ego: dict, adversaries: list[dict], names: set[str]) -> None:
+    """A vehicle ahead of the ego that stops (``names``: when, the text leaves open), where someone
+    meets the ego at its junction: it stops once through the junction, not on the ego's approach.
+    Why: stopping before it, it would hold the ego short of the junction, and what is to meet the
+    ego there (a red-light runner, a road user pulling out) would pass where the ego never comes."""
+    from vei_scenario.language.maps import JUNCTION_RADIUS_M
+
+    if "distance_m" not in ego or not any(
+        n["behaviour"] in AT_JUNCTION for a in adversaries for _, n in behaviour_nodes(a["behaviour"])
+    ):
+        return
+    for adv in adversaries:
+        speed = float(adv["speed_mps"])
+        if adv["name"] not in names or adv["spawn"]["relation"] != "ahead" or speed < 1.0:
+            continue
+        node = next(n for _, n in behaviour_nodes(adv["behaviour"]))
+        lon = float(adv["spawn"].get("longitudinal_m", 30.0))
+        through = float(ego["distance_m"]) - lon + 2 * JUNCTION_RADIUS_M + TYPES[adv["type"]][0][0]
+        if through > 0:
+            node["config"]["delay_s"] = round(through / speed, 3)
 
 
 def _vehicle(kind: str) -> tuple[float, float, float]:
