@@ -124,6 +124,7 @@ def test_a_stated_gap_of_a_road_user_pulling_out_of_a_side_road_is_where_it_sets
     from vei_scenario.language.behaviours.base import time_to_cover
     from vei_scenario.language.behaviours.turn_into import paths_m
     from vei_scenario.language.placement import lane_id
+    from vei_scenario.language.scenario_writer import TYPES
 
     reading = read(text)
     for seed in range(3):
@@ -133,7 +134,11 @@ def test_a_stated_gap_of_a_road_user_pulling_out_of_a_side_road_is_where_it_sets
         assert adv["behaviour"]["behaviour"] == "turn_into" and cfg["distance_m"] == gap
         lanes = layers["environment"]["map"]["lanes_per_direction"]
         path, ego_path = paths_m(adv["spawn"]["relation"] == "junction_left", lane_id(lanes, layers["ego"]["lane"]))
-        t_actor = time_to_cover(path, min(cfg.get("speed_mps", 10.0), 8.0), cfg.get("accel_mps2", 2.5), 0.0)
+        # (the writer's trigger: its reference point half its length behind the stop line, at what its
+        # vehicle can reach)
+        (length, _, _), _, _, top, accel, _ = TYPES[adv["type"]]
+        v, a = min(cfg.get("speed_mps", 10.0), 8.0, top), min(cfg.get("accel_mps2", 2.5), accel)
+        t_actor = time_to_cover(path + length / 2, v, a, 0.0)
         # the ego is the stated distance before the side road's mouth when it sets off, or (too close
         # for that) that far from where it joins when it is there
         to_mouth = layers["ego"]["speed_mps"] * (t_actor + cfg["arrival_gap_s"]) - ego_path

@@ -275,3 +275,145 @@ def test_a_road_user_pulling_out_ahead_of_a_fast_ego_has_the_room_to_do_it(
     make_room_to_pull_out(ego, [adv])
     layers = _layers("crossroad", 1, ego, [adv], duration_s=30.0)
     assert _play(layers, tmp_path) == []
+
+
+@pytest.mark.parametrize("relation", ["roadside_left", "roadside_right"])
+@pytest.mark.parametrize(("ego_speed", "kind"), [(7.0, "e-scooter"), (11.0, "bicycle"), (14.0, "e-scooter")])
+def test_a_rider_at_either_kerb_who_swerves_in_and_turns_at_the_junction_sets_off_from_a_lane_of_the_ego_s_way(
+    relation, ego_speed, kind, tmp_path
+):
+    """A rider at the kerb that swerves into the road starts on the edge of a lane of the ego's
+    direction (at the left kerb, the lane next to the centre line): its route through the junction
+    starts in that lane, not in the lane across the centre line it stood beside."""
+    layers = _layers(
+        "crossroad",
+        2,
+        {"speed_mps": ego_speed},
+        [
+            _crosser(
+                relation,
+                15.0,
+                min(ego_speed - 1.0, 6.5),
+                [{"behaviour": "forced_turn", "config": {"turn": "right", "gap_m": 4.0}}],
+                kind,
+            )
+        ],
+    )
+    assert _play(layers, tmp_path) == []
+
+
+@pytest.mark.parametrize("map_kind", ["straight", "curve"])
+@pytest.mark.parametrize(
+    ("ego_speed", "speed", "kind"), [(6.0, 6.0, "e-scooter"), (12.0, 10.0, "van"), (20.0, 18.0, "car")]
+)
+def test_an_oncoming_road_user_that_overtakes_comes_over_to_the_ego_s_side_and_gets_back_in(
+    map_kind, ego_speed, speed, kind, tmp_path
+):
+    """Overtaking, seen by the ego, of a road user coming the other way: it pulls out onto the ego's
+    side of the road, ahead of the ego and facing it, and is back in its own lane when they meet."""
+    import numpy as np
+
+    from vei_scenario.language.behaviours.overtake import place_oncoming
+    from vei_scenario.language.corpus_check import _ego_frame
+
+    cfg = {"gap_m": 15.0, "lane_change_s": 1.5}
+    lon = place_oncoming(ego_speed, speed, 4.6 + 4.6, cfg)
+    adv = {
+        "name": "Adversary1",
+        "type": kind,
+        "spawn": {"relation": "oncoming", "longitudinal_m": round(min(lon, 250.0), 3)},
+        "speed_mps": speed,
+        "behaviour": {"behaviour": "overtake", "config": cfg},
+    }
+    layers = _layers(map_kind, 1, {"speed_mps": ego_speed}, [adv], duration_s=25.0)
+    result = play_layers(layers, tmp_path)
+    assert played_problems(result, layers) == []
+    assert not result.collisions
+    if map_kind == "straight":  # (on a bend the ego's frame bends away from the road)
+        lon_t, lat_t = _ego_frame(result, "Adversary1")
+        assert ((lon_t > 0) & (np.abs(lat_t) < 1.0)).any()  # on the ego's side, ahead of it
+        closest = int(np.argmin(np.hypot(lon_t, lat_t)))
+        assert abs(lat_t[closest]) > 2.5  # back in its own lane when they meet
+
+
+def test_an_overtake_read_from_the_far_arm_of_a_junction_starts_on_the_ego_s_road(tmp_path):
+    """Near the ego's junction, one coming the other way from beyond it that overtakes starts on the
+    ego's road, not before the opposite arm's start (outside the road)."""
+    from vei_scenario.language.reading import ActorSpec, Reading
+    from vei_scenario.language.rules_backend import sample_layers
+
+    for seed in (0, 1, 2):
+        reading = Reading(
+            map_kind="crossroad",
+            actors=[ActorSpec("van", "junction_opposite", None, None, [("overtake", {}, None, "sequence")])],
+        )
+        layers = sample_layers(reading, "built by a test", seed)
+        assert layers["adversaries"][0]["spawn"]["relation"] == "oncoming"
+        assert layers["adversaries"][0]["spawn"]["longitudinal_m"] > 0
+        assert played_problems(play_layers(layers, tmp_path), layers) == []
+
+
+@pytest.mark.parametrize("relation", ["junction_left", "junction_right"])
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_a_red_light_runner_read_at_a_standstill_still_drives_through_and_meets_the_ego_s_path(
+    relation, seed, tmp_path
+):
+    """A run of the red is a drive through it: a runner whose reading gives it no speed (0) is given a
+    road pace, and meets the ego's path; one with a speed keeps it (near miss below)."""
+    from vei_scenario.language.reading import ActorSpec, Reading
+    from vei_scenario.language.rules_backend import sample_layers
+
+    def runner(speed):
+        actor = ActorSpec("car", relation, None, speed, [("run_red_light", {}, None, "sequence")])
+        return sample_layers(Reading(map_kind="crossroad", actors=[actor]), "built by a test", seed)
+
+    layers = runner(0.0)
+    assert layers["adversaries"][0]["speed_mps"] > 5.0
+    assert played_problems(play_layers(layers, tmp_path), layers) == []
+    assert runner(8.0)["adversaries"][0]["speed_mps"] == 8.0
+
+
+@pytest.mark.parametrize("relation", ["roadside_right", "roadside_left"])
+@pytest.mark.parametrize(
+    ("ego_speed", "kind", "first"),
+    [(7.0, "bicycle", "cut_in"), (10.0, "e-scooter", "cut_in"), (12.0, "bicycle", "change_lane")],
+)
+def test_a_rider_at_the_kerb_who_swerves_in_and_then_crosses_sets_off_from_a_lane(
+    relation, ego_speed, kind, first, tmp_path
+):
+    """A rider at the kerb whose first move is a swerve into the road (then across it) starts on the
+    kerb lane's edge, where a lane change can start, and crosses from that lane; beyond the kerb it
+    is on no lane and its swerve cannot be played."""
+    nodes = [{"behaviour": first, "config": {"gap_m": 20.0}}, {"behaviour": "cross_in_front", "config": {}}]
+    layers = _layers("straight", 2, {"speed_mps": ego_speed}, [_crosser(relation, 30.0, 4.0, nodes, kind)])
+    assert _play(layers, tmp_path) == []
+
+
+@pytest.mark.parametrize(
+    ("meets", "relation"),
+    [("run_red_light", "junction_left"), ("run_red_light", "junction_right"), ("turn_into", "junction_right")],
+)
+@pytest.mark.parametrize(
+    ("seed", "ego_speed", "stop"), [(0, 9.0, "sudden_stop"), (1, 12.5, "stop"), (2, 16.0, "sudden_stop")]
+)
+def test_a_vehicle_ahead_that_stops_does_not_hold_the_ego_short_of_the_junction_where_someone_meets_it(
+    meets, relation, seed, ego_speed, stop, tmp_path
+):
+    """A vehicle ahead of the ego that stops (when, not said) while someone is to meet the ego at its
+    junction stops once through the junction: the ego reaches the junction and the other meets its
+    path. A stop whose time is said keeps it (near miss), and so does one on a road with no junction."""
+    from vei_scenario.language.reading import ActorSpec, Reading
+    from vei_scenario.language.rules_backend import sample_layers
+
+    def reading(stop_cfg, map_kind="crossroad", other=True):
+        actors = [ActorSpec("car", "ahead", None, None, [(stop, stop_cfg, None, "sequence")])]
+        if other:
+            actors.append(ActorSpec("car", relation, None, None, [(meets, {}, None, "sequence")]))
+        return Reading(map_kind=map_kind, ego_speed_mps=ego_speed, actors=actors)
+
+    layers = sample_layers(reading({}), "built by a test", seed)
+    assert played_problems(play_layers(layers, tmp_path), layers) == []
+    kept = sample_layers(reading({"delay_s": 1.5}), "built by a test", seed)
+    assert kept["adversaries"][0]["behaviour"]["config"]["delay_s"] == 1.5
+    plain = sample_layers(reading({}, "straight", other=False), "built by a test", seed)
+    assert plain["adversaries"][0]["behaviour"]["config"].get("delay_s", 1.0) < 5.0

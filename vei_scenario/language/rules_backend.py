@@ -13,8 +13,9 @@ from __future__ import annotations
 import math
 import random
 
+from vei_scenario.language import lane_room
 from vei_scenario.language.behaviours import BEHAVIOURS
-from vei_scenario.language.behaviours.base import time_to_cover, value
+from vei_scenario.language.behaviours.base import value
 from vei_scenario.language.layers import behaviour_nodes
 from vei_scenario.language.maps import ARM_LENGTH_M, ROUNDABOUT_RADIUS_M, layout
 from vei_scenario.language.placement import DEFAULT_FEATURE_DISTANCE_M, ego_pose, junction_conflict_m, lane_id
@@ -99,6 +100,8 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
         # road users in lanes on both sides of the ego (or one on its right on a road said to have one
         # lane each way): the lanes the story needs, the ego between them
         lanes, ego_lane = max(lanes, 3 if "left" in relations else 2), 2
+    lane_choice = lane_room.choose([_lane_user(a) for a in reading.actors], lanes, ego_lane)
+    lanes, ego_lane = lane_choice.lanes, lane_choice.ego_lane
     placement = {
         "straight": "straight",
         "crossroad": "before_junction",
@@ -122,7 +125,8 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
     intent = reading.intent or "unspecified"
     adversaries = []
     timed: set[str] = set()  # (red-light runners timed by placement, not at a distance the text states)
-    for spec in reading.actors:
+    stops_open: set[str] = set()  # (stops whose time the text leaves open)
+    for index, spec in enumerate(reading.actors):
         behaviours = spec.behaviours or [("keep_going", {}, None, "sequence")]  # (the reading stays as read)
         name = f"Adversary{len(adversaries) + 1}"
         nodes = []
@@ -137,10 +141,16 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
                 cfg.setdefault("agent", "sfm")  # the e-scooter rider is the social force model's
             if idx == 0:
                 first_cfg = cfg
+                if bname in ("stop", "sudden_stop") and "delay_s" not in given:
+                    stops_open.add(name)
             nodes.append((link, {"behaviour": bname, "config": cfg}))
         topology = _topology(nodes)
         first = BEHAVIOURS[behaviours[0][0]]
-        relation = spec.relation or getattr(first, "DEFAULT_SPAWN", {}).get("relation", "ahead")
+        relation = (
+            lane_choice.relations.get(index)
+            or spec.relation
+            or getattr(first, "DEFAULT_SPAWN", {}).get("relation", "ahead")
+        )
         given_speed = spec.speed_mps
         if given_speed is not None and given_speed < 0:  # a speed word: a factor on the default speed
             given_speed = _default_speed(spec.kind, relation, ego_speed) * -given_speed
@@ -148,6 +158,8 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
             given_speed = _u(rng, lo, hi)  # (coming up behind an ego at rest: at the road's pace, not the ego's)
         if given_speed is None and first.NAME == "wrong_way":
             given_speed = min(_u(rng, 10.0, 20.0), TYPES[spec.kind][3])  # (a rider within its own top speed)
+        if first.NAME == "run_red_light" and given_speed is not None and given_speed < RUNS_AT_LEAST_MPS:
+            given_speed = None  # (a run of the red is a drive through it: one read as standing goes at a road pace)
         if given_speed is None and relation in ("junction_left", "junction_right") and first.NAME not in WAITING:
             given_speed = min(_u(rng, 9.0, 13.0), TYPES[spec.kind][3])  # (its timing holds only below its top speed)
         if (
@@ -218,6 +230,8 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
     make_room_to_pull_out(ego, adversaries, lanes, kind == "roundabout")
     if ego.get("distance_m") != start_m:
         retime_junction_runs(ego, adversaries, lanes, timed)
+    if kind == "crossroad":
+        stop_beyond_junction(ego, adversaries, stops_open)
     layers = {
         "format": "vei-layers/1",
         "description": text,
@@ -249,6 +263,26 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
     }
     layers["background"]["vehicles"] = background(rng, layers)
     return layers
+
+
+def _lane_user(spec) -> lane_room.LaneUser:
+    """What :func:`lane_room.choose` needs of a road user as read: where it starts, its first
+    behaviour's usual side where the text leaves it open, whether it swerves from the kerb (the
+    writer puts such a rider on the kerb lane's edge), and its lane changes with their stated sides."""
+    behaviours = spec.behaviours or [("keep_going", {}, None, "sequence")]
+    names = [b[0] for b in behaviours]
+    default = getattr(BEHAVIOURS[names[0]], "DEFAULT_SPAWN", {}).get("relation", "ahead")
+    relation = spec.relation or default
+    swerves = names[0] in SWERVES_FROM_KERB or (
+        bool(set(names) & set(SWERVES_FROM_KERB)) and "cross_in_front" not in names
+    )
+    at_kerb = relation.startswith("roadside") and vulnerable(spec.kind) and swerves
+    changes = tuple(
+        (b[0], float(b[1]["direction"]) if "direction" in b[1] else None)
+        for b in behaviours
+        if b[0] in lane_room.LANE_CHANGES
+    )
+    return lane_room.LaneUser(spec.relation, default, at_kerb, changes)
 
 
 #: How much slower than a rider's top speed an ego it passes goes, where the text leaves the ego's
@@ -296,6 +330,8 @@ def _far_side_gap(reading: Reading) -> bool:
     )  # fmt: skip
 
 
+#: A red-light runner read at less than this (m/s) is given a road pace: standing, it would run no red.
+RUNS_AT_LEAST_MPS = 0.5
 #: Behaviours that start standing at a junction's stop line and set off when the ego comes.
 WAITING = ("turn_across", "turn_into", "give_way")
 #: Behaviours whose timing is the ego's arrival at the junction.
@@ -392,15 +428,39 @@ def make_room_to_pull_out(ego: dict, adversaries: list[dict], lanes: int = 1, ri
         if node["behaviour"] != "turn_into" or relation not in ("junction_left", "junction_right"):
             continue
         cfg = node.get("config", {})
-        length, top, accel = TYPES[adv["type"]][0][0], TYPES[adv["type"]][3], TYPES[adv["type"]][4]
         actor_path, ego_path = turn_into.paths_m(relation == "junction_left", lane_id(lanes, ego["lane"]), ring)
-        v = min(value(cfg, turn_into.PARAMETERS, "speed_mps"), 8.0, top)
-        a = min(value(cfg, turn_into.PARAMETERS, "accel_mps2"), accel)
-        t_actor = time_to_cover(actor_path + length / 2, v, a, 0.0)
-        gap = value(cfg, turn_into.PARAMETERS, "arrival_gap_s")
-        need = ego_speed * (t_actor + max(gap, 0.0)) - ego_path + PULL_OUT_MARGIN_M
+        t_actor = turn_into.time_to_join_s(actor_path, cfg, *_vehicle(adv["type"]))
+        gap = max(value(cfg, turn_into.PARAMETERS, "arrival_gap_s"), 0.0)
+        need = turn_into.ego_distance_at_set_off_m(ego_speed, t_actor, ego_path, gap) + PULL_OUT_MARGIN_M
         if need > float(ego["distance_m"]):
             ego["distance_m"] = round(min(need, ARM_LENGTH_M - 20.0), 3)
+
+
+def stop_beyond_junction(ego: dict, adversaries: list[dict], names: set[str]) -> None:
+    """A vehicle ahead of the ego that stops (``names``: when, the text leaves open), where someone
+    meets the ego at its junction: it stops once through the junction, not on the ego's approach.
+    Why: stopping before it, it would hold the ego short of the junction, and what is to meet the
+    ego there (a red-light runner, a road user pulling out) would pass where the ego never comes."""
+    from vei_scenario.language.maps import JUNCTION_RADIUS_M
+
+    if "distance_m" not in ego or not any(
+        n["behaviour"] in AT_JUNCTION for a in adversaries for _, n in behaviour_nodes(a["behaviour"])
+    ):
+        return
+    for adv in adversaries:
+        speed = float(adv["speed_mps"])
+        if adv["name"] not in names or adv["spawn"]["relation"] != "ahead" or speed < 1.0:
+            continue
+        node = next(n for _, n in behaviour_nodes(adv["behaviour"]))
+        lon = float(adv["spawn"].get("longitudinal_m", 30.0))
+        through = float(ego["distance_m"]) - lon + 2 * JUNCTION_RADIUS_M + TYPES[adv["type"]][0][0]
+        if through > 0:
+            node["config"]["delay_s"] = round(through / speed, 3)
+
+
+def _vehicle(kind: str) -> tuple[float, float, float]:
+    """(length m, top speed m/s, acceleration m/s²) of a road user of ``kind`` as the writer gives it."""
+    return TYPES[kind][0][0], TYPES[kind][3], TYPES[kind][4]
 
 
 def retime_junction_runs(ego: dict, adversaries: list[dict], lanes: int, names: set[str]) -> None:
@@ -597,6 +657,13 @@ def _place_adversary(
         # a parked car that pulls out: far enough ahead for the ego to close in for lead_s first
         lead = float(cfg.get("lead_s", 2.5))
         spawn["longitudinal_m"] = round(lengths / 2 + mod.pull_out_distance_m(ego_speed, cfg) + ego_speed * lead, 3)
+    elif behaviour_name == "overtake" and relation in ("oncoming", "junction_opposite"):
+        # coming the other way, it overtakes on the ego's side of the road: ahead, on the ego's road
+        spawn["relation"] = "oncoming"
+        out_speed = ego_speed if speed is None else speed
+        stated = distance_m is not None and cfg.get("gap_m") != distance_m  # (not its gap where it gets back in)
+        lon = distance_m if stated else mod.place_oncoming(ego_speed, out_speed, lengths, cfg)
+        spawn["longitudinal_m"] = round(lon, 3)
     elif hasattr(mod, "place"):
         lon, placed_speed = mod.place(ego_speed, lengths, cfg)
         if relation == "behind" and lon > 0:
@@ -750,10 +817,16 @@ def _turn_in_at_distance(kind: str, relation: str, cfg: dict, ego: dict, lanes: 
     side street 20 m ahead of me"): its timing (``arrival_gap_s``) is the one that sets it off when the
     ego is that far from where it joins, and the distance is kept in its configuration. Returns None
     when kept, else why not (the timing is then the nearest the behaviour holds)."""
-    from vei_scenario.language.behaviours.turn_into import PARAMETERS, gap_for_distance
+    from vei_scenario.language.behaviours import turn_into
+    from vei_scenario.language.behaviours.turn_into import PARAMETERS
 
     from_left = relation == "junction_left"
     ego_speed, ego_lane = float(ego["speed_mps"]), lane_id(lanes, int(ego["lane"]))
+    ring = ego.get("placement") == "before_roundabout"
+
+    def gap_for_distance(distance_m: float, ego_speed: float, from_left: bool, ego_lane: int, cfg: dict) -> float:
+        return turn_into.gap_for_distance(distance_m, ego_speed, from_left, ego_lane, cfg, _vehicle(kind), ring)
+
     gap = gap_for_distance(distance_m, ego_speed, from_left, ego_lane, cfg)
     low, high = PARAMETERS["arrival_gap_s"].low, PARAMETERS["arrival_gap_s"].high
     wanted = float(cfg.get("arrival_gap_s", PARAMETERS["arrival_gap_s"].default))
@@ -866,7 +939,8 @@ def background(rng: random.Random, layers: dict) -> list[dict]:
     crossings = [
         ego_s + float(a["spawn"].get("longitudinal_m", 0.0))
         for a in layers["adversaries"]
-        if a["spawn"]["relation"].startswith("roadside") or (a["spawn"]["relation"] == "ahead" and a["speed_mps"] == 0)
+        if a["spawn"]["relation"].startswith("roadside")
+        or (a["spawn"]["relation"] in ("ahead", "left", "right") and a["speed_mps"] == 0)
     ]
 
     def passes_crossing(lane: int, s: float, v: float) -> bool:

@@ -357,7 +357,9 @@ def write_scenario(layers: dict, stem: str) -> WrittenScenario:
         controller = None
         does = [n["behaviour"] for _, n in behaviour_nodes(adv["behaviour"])]
         at_kerb = adv["spawn"]["relation"].startswith("roadside") and vulnerable(kind)
-        swerves = set(does) & set(SWERVES_FROM_KERB) and "cross_in_front" not in does
+        # (one whose first move is a swerve swerves from the kerb lane's edge, and crosses from that lane
+        # after it, if it does; one that crosses first crosses from the kerb)
+        swerves = does[0] in SWERVES_FROM_KERB or (set(does) & set(SWERVES_FROM_KERB) and "cross_in_front" not in does)
         if at_kerb and swerves:
             # a rider at the kerb that swerves into the road (or a walker at the verge the text has move
             # along it): on the kerb lane's edge, where a lane change can start; one that gives way first
@@ -365,6 +367,7 @@ def write_scenario(layers: dict, stem: str) -> WrittenScenario:
             # writer who keeps left), on the left edge of the ego's direction
             pose = placement.kerb_edge(pose, TYPES[kind][0][1])
             ctx.actor_offset_m = pose.offset
+            ctx.actor_lane_id = pose.lane_id  # (from the left kerb: a lane of the ego's direction; routes start there)
             at_kerb = "give_way" in does
         if at_kerb:
             net = net or _road_network(xodr_bytes)  # (only crossings ask the road model)

@@ -45,17 +45,26 @@ def lane_offset_m(lane_id: int) -> float:
 
 
 def ego_trigger_distance_m(
-    ctx: ActorContext, actor_path_m: float, ego_path_m: float, go_speed: float, accel: float, arrival_gap_s: float
+    ctx: ActorContext,
+    actor_path_m: float,
+    ego_path_m: float,
+    go_speed: float,
+    accel: float,
+    arrival_gap_s: float,
+    t_actor_s: float | None = None,
 ) -> float:
     """Straight-line ego–actor distance at which the actor sets off: the actor needs
     ``actor_path_m`` (from standing, at ``accel`` up to ``go_speed``) to the conflict point, the ego
     ``ego_path_m`` beyond its junction entry plus what it still has before it. ``actor_path_m`` is
     counted from the stop line; the actor's reference point stands half its length behind it (a
-    lorry's 4 m more to go), and it goes at what its vehicle can reach."""
-    go_speed, accel = ctx.reachable(go_speed, accel)
+    lorry's 4 m more to go), and it goes at what its vehicle can reach. A behaviour whose timing the
+    sampler works out as well passes its time to the conflict (``t_actor_s``), from the one helper
+    both use, so that the two never differ."""
     standing = STOP_LINE_M + ctx.actor_length_m / 2  # (its centre's distance to its arm's end)
-    actor_path_m += standing - STOP_LINE_M
-    t_actor = time_to_cover(actor_path_m, go_speed, accel, ctx.actor_speed_mps)
+    if t_actor_s is None:
+        go_speed, accel = ctx.reachable(go_speed, accel)
+        t_actor_s = time_to_cover(actor_path_m + standing - STOP_LINE_M, go_speed, accel, ctx.actor_speed_mps)
+    t_actor = t_actor_s
     ego_before_conflict = max(ctx.ego_speed_mps * (t_actor + arrival_gap_s), 0.0)
     # the ego on its approach, the actor at its stop line on another arm: both about the centre
     r = arm_end_m(ctx)

@@ -32,6 +32,8 @@ PROFILES = {
 
 def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
     dur = value(cfg, PARAMETERS, "lane_change_s")
+    if oncoming(ctx):
+        return _oncoming_steps(ctx, cfg, dur)
     # it passes in the lane left of the ego (right-hand traffic: left of -k is -k+1, of -1 the
     # oncoming +1); one already there only speeds up
     left = ctx.ego_lane_id + 1 if ctx.ego_lane_id != -1 else 1
@@ -54,3 +56,43 @@ def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
 def place(ego_speed: float, lengths_m: float, cfg: dict) -> tuple[float, float]:
     """(spawn longitudinal_m, speed_mps): behind the ego, at its speed until it pulls out."""
     return -(lengths_m / 2 + 15.0), ego_speed
+
+
+def oncoming(ctx: ActorContext) -> bool:
+    """Whether the road user drives the other way on the ego's road: in a lane across the centre line,
+    facing that lane's way (road users on other roads start in lanes of the ego's sign)."""
+    return ctx.facing == "with" and (ctx.actor_lane_id > 0) != (ctx.ego_lane_id > 0)
+
+
+def _oncoming_steps(ctx: ActorContext, cfg: dict, dur: float) -> list[Step]:
+    """An oncoming road user overtaking what is ahead of it pulls out to its left, which is the ego's
+    side of the road (the lane next to the centre line), passes at ``speed_gain_mps`` more, and
+    pulls back into its own lane when the free-space gap to the ego is what a lane change at their
+    closing speed leaves ``gap_m`` of. Why: to the ego that is the overtake it sees, a vehicle on its
+    side coming at it that gets back in ``gap_m`` before they meet."""
+    into = -1 if ctx.actor_lane_id > 0 else 1
+    fast = ctx.actor_speed_mps + value(cfg, PARAMETERS, "speed_gain_mps")
+    closing = ctx.ego_speed_mps + fast
+    back_at = value(cfg, PARAMETERS, "gap_m") + closing * dur
+    return [
+        Step(
+            "pull_out",
+            [lane_change_to(into, dur), speed_action(fast, rate=2.5)],
+            delay_s=value(cfg, PARAMETERS, "delay_s"),
+        ),
+        Step(
+            "cut_back",
+            [lane_change_to(ctx.actor_lane_id, dur), speed_action(ctx.actor_speed_mps, rate=2.5)],
+            conditions=[Condition("ego_within", round(back_at, 2))],
+        ),
+    ]
+
+
+def place_oncoming(ego_speed: float, speed: float, lengths_m: float, cfg: dict) -> float:
+    """Spawn distance ahead of the ego of an oncoming overtaker: room to pull out, pass for a few
+    seconds, and get back in before the gap it leaves (m)."""
+    dur = value(cfg, PARAMETERS, "lane_change_s")
+    closing = ego_speed + speed + value(cfg, PARAMETERS, "speed_gain_mps")
+    return (
+        lengths_m / 2 + value(cfg, PARAMETERS, "gap_m") + closing * (value(cfg, PARAMETERS, "delay_s") + 2 * dur + 3.0)
+    )

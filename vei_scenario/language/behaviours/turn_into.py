@@ -39,8 +39,37 @@ def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
     actor_path, ego_path = paths_m(from_left, ctx.ego_lane_id, ring=ctx.map_kind == "roundabout")
     v = value(cfg, PARAMETERS, "speed_mps")
     a = value(cfg, PARAMETERS, "accel_mps2")
-    trigger = ego_trigger_distance_m(ctx, actor_path, ego_path, min(v, 8.0), a, value(cfg, PARAMETERS, "arrival_gap_s"))
+    t_actor = time_to_join_s(
+        actor_path, cfg, ctx.actor_length_m, ctx.actor_max_speed_mps, ctx.actor_max_accel_mps2, ctx.actor_speed_mps
+    )
+    gap = value(cfg, PARAMETERS, "arrival_gap_s")
+    trigger = ego_trigger_distance_m(ctx, actor_path, ego_path, min(v, JOIN_SPEED_CAP_MPS), a, gap, t_actor)
     return go_through(ctx, turn, v, a, trigger, "turn_into")
+
+
+#: The fastest a road user pulling out is counted on to go until it has joined the ego's road (m/s).
+JOIN_SPEED_CAP_MPS = 8.0
+
+
+def time_to_join_s(
+    actor_path_m: float,
+    cfg: dict,
+    length_m: float = 0.0,
+    top_mps: float = 0.0,
+    max_accel_mps2: float = 0.0,
+    start_mps: float = 0.0,
+) -> float:
+    """The road user's time from its stop line to where it joins the ego's road (s): ``actor_path_m``
+    (:func:`paths_m`) plus the half of its length its reference point stands behind the line, at its
+    acceleration up to its speed (held below :data:`JOIN_SPEED_CAP_MPS` until it is in), each no more
+    than its vehicle's (``top_mps``, ``max_accel_mps2``; 0: not bounded). Why one helper: the writer's
+    trigger, the sampler's room for the ego and its timing for a stated gap must agree, or a road
+    user told to pull out 20 m ahead sets off at another distance."""
+    v = min(value(cfg, PARAMETERS, "speed_mps"), JOIN_SPEED_CAP_MPS)
+    a = value(cfg, PARAMETERS, "accel_mps2")
+    v = min(v, top_mps) if top_mps > 0 else v
+    a = min(a, max_accel_mps2) if max_accel_mps2 > 0 else a
+    return time_to_cover(actor_path_m + length_m / 2, v, a, start_mps)
 
 
 def paths_m(from_left: bool, ego_lane_id: int, ring: bool = False) -> tuple[float, float]:
@@ -59,11 +88,25 @@ def paths_m(from_left: bool, ego_lane_id: int, ring: bool = False) -> tuple[floa
     return 2.0 + (r + e + 3.0 if from_left else 0.6 * r + 3.0), r + (r * 0.5 if from_left else 3.0)
 
 
-def gap_for_distance(distance_m: float, ego_speed_mps: float, from_left: bool, ego_lane_id: int, cfg: dict) -> float:
+def gap_for_distance(
+    distance_m: float,
+    ego_speed_mps: float,
+    from_left: bool,
+    ego_lane_id: int,
+    cfg: dict,
+    vehicle: tuple[float, float, float] = (0.0, 0.0, 0.0),
+    ring: bool = False,
+) -> float:
     """The ``arrival_gap_s`` that sets it off from its stop line when the ego is ``distance_m`` before
     the side road's mouth ("pulls out of a side road 20 m ahead of me": the distance the driver sees
-    to the road it comes out of): the ego's time to where it joins less its own time to get there."""
-    actor_path, ego_path = paths_m(from_left, ego_lane_id)
-    v = min(value(cfg, PARAMETERS, "speed_mps"), 8.0)
-    t_actor = time_to_cover(actor_path, v, value(cfg, PARAMETERS, "accel_mps2"), 0.0)
+    to the road it comes out of): the ego's time to where it joins less its own time to get there
+    (:func:`time_to_join_s`; ``vehicle`` its length, top speed and acceleration)."""
+    actor_path, ego_path = paths_m(from_left, ego_lane_id, ring)
+    t_actor = time_to_join_s(actor_path, cfg, *vehicle)
     return (distance_m + ego_path) / max(ego_speed_mps, 0.5) - t_actor
+
+
+def ego_distance_at_set_off_m(ego_speed_mps: float, t_actor_s: float, ego_path_m: float, arrival_gap_s: float) -> float:
+    """How far before its junction entry the ego is when the road user sets off (m): it reaches
+    where the road user joins ``arrival_gap_s`` after the road user's ``t_actor_s``."""
+    return ego_speed_mps * (t_actor_s + arrival_gap_s) - ego_path_m
