@@ -2005,8 +2005,28 @@ def _refuse_if_nothing_to_place(text: str, actors: list[_Actor], clauses, ignore
         for a in actors
     )  # fmt: skip
     if not (verbs or described):
+        if any(m.slot == "intent" for m in mentions) or any(_inflected_verb(w) for w in unused):
+            for a in actors:  # ("a van nicked my mirror", "was clipped by"): it did something; its kind's commonest
+                a.behaviours.append((motion.default_behaviour(a.kind), {}, None, "sequence"))
+            return
         kinds = ", ".join(dict.fromkeys("road user" if a.kind == UNKNOWN_KIND else a.kind for a in actors))
         raise NotUnderstood(unused[:12], text, missing="behaviour", of=kinds)
+
+
+#: Verbs that only carry another ("was", "had", "did"): no deed of their own.
+_CARRIERS = frozenset(
+    "am is are was were be been being have has had having do does did will would can could shall should may might"
+    " must".split()
+)
+
+
+def _inflected_verb(word: str) -> bool:
+    """Whether ``word`` is a verb in an inflected form ("nicked", "tapping", "t-boned", "side-swiped":
+    the last part of a compound), not a carrier: a word that is a verb only in its plain form ("wet",
+    "mirror") is more likely a noun or an adjective."""
+    last = word.rpartition("-")[2]
+    verb = _lemmas(last).get("VERB", ())
+    return bool(verb) and word not in _CARRIERS and (last not in verb or last.endswith("ing"))
 
 
 #: Adversaries a scenario holds (the layers schema's limit).

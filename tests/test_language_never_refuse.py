@@ -1,0 +1,101 @@
+"""A description that names a road user and says what it does is never refused: an unusual noun for
+the road user, a verb the reader has no entry for, a passive, codes and IDs around it, or a text typed
+in capitals, bullets or a table are read as well as they can be, and what was not used is listed.
+Refusal stays where there is no road user at all, or nothing at all says what one does, and it names
+what is missing."""
+
+from __future__ import annotations
+
+import pytest
+
+from vei_scenario.language.reader import read
+from vei_scenario.language.reading import NotUnderstood
+
+RIDERS = ("bicycle", "e-scooter")
+
+
+def _kinds(text: str) -> list[str]:
+    return [a.kind for a in read(text).actors]
+
+
+def _behaviours(text: str) -> list[list[str]]:
+    return [[b[0] for b in a.behaviours] for a in read(text).actors]
+
+
+# --- a behaviour said by a verb the reader has no entry for --------------------------------------------
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("A lorry nicked our wing mirror on the ring road.", "truck"),
+        ("A taxi T-boned us at the crossroads.", "car"),
+        ("A delivery van rear-ended the ego at the lights.", "van"),
+        ("A cyclist side-swiped the ego.", "bicycle"),
+        ("A jogger grazed the ego's mirror.", "pedestrian"),
+        ("An e-scooter tapped the test car's bumper.", "e-scooter"),
+    ],
+    ids=["nicked", "t-boned", "rear-ended", "side-swiped", "grazed", "tapped"],
+)
+def test_an_unknown_verb_of_contact_gives_a_default_behaviour_not_a_refusal(text, kind):
+    reading = read(text)
+    assert [a.kind for a in reading.actors] == [kind]
+    assert reading.actors[0].behaviours
+
+
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("The cyclist got hit by the ego vehicle.", "bicycle"),
+        ("A pedestrian was clipped by the test car.", "pedestrian"),
+        ("A kid was struck by the ego.", "pedestrian"),
+    ],
+    ids=["got-hit-by", "was-clipped-by", "was-struck-by"],
+)
+def test_the_subject_of_a_passive_is_a_road_user_with_a_behaviour(text, kind):
+    reading = read(text)
+    assert [a.kind for a in reading.actors] == [kind]
+    assert reading.actors[0].behaviours
+
+
+# --- codes, capitals, bullets and tables round one road user ------------------------------------------
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("Ticket 8812-B / ref 31/220 / VIN ZZ9PLURALZA: scooter struck by ego.", "e-scooter"),
+        ("LORRY PULLS OUT OF SIDE ROAD EGO BRAKES HARD", "truck"),
+        ("* ego 40 km/h\n* cyclist crosses from the left", "bicycle"),
+        ("| who | does |\n|---|---|\n| pedestrian | crosses from the right |", "pedestrian"),
+    ],
+    ids=["codes", "capitals", "bullets", "table"],
+)
+def test_formatting_and_codes_round_a_road_user_are_read_past(text, kind):
+    assert _kinds(text) == [kind]
+
+
+# --- what must stay refused, or read as no road user --------------------------------------------------
+@pytest.mark.parametrize(
+    "text, missing",
+    [
+        ("A bike rack stood next to the bus lane.", "road user"),
+        ("A zorblat frobnicates the quux.", "road user"),
+        ("There was a cyclist.", "behaviour"),
+        ("A van on a wet Tuesday.", "behaviour"),
+    ],
+    ids=["bike-rack", "nonsense", "only-there", "no-verb"],
+)
+def test_refused_where_no_road_user_or_no_behaviour_is_found(text, missing):
+    with pytest.raises(NotUnderstood) as refused:
+        read(text)
+    assert refused.value.missing == missing
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "The ego drives past the scooter bay at 30 km/h.",
+        "The ego drives along the bus lane at 40 km/h.",
+        "The rider manual lay on the ego's back seat while the ego drove at 50 km/h.",
+    ],
+    ids=["scooter-bay", "bus-lane", "rider-manual"],
+)
+def test_a_vehicle_word_naming_a_place_or_thing_is_no_road_user(text):
+    assert read(text).actors == []
