@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import pytest
 
+from vei_scenario.cli import main
 from vei_scenario.language.reader import read
 from vei_scenario.language.reading import NotUnderstood
 
@@ -20,6 +21,26 @@ def _kinds(text: str) -> list[str]:
 
 def _behaviours(text: str) -> list[list[str]]:
     return [[b[0] for b in a.behaviours] for a in read(text).actors]
+
+
+# --- a road user named by a noun the lexicon lacks ----------------------------------------------------
+@pytest.mark.parametrize(
+    "text, kinds",
+    [
+        ("The rider shot off the kerb right in front of us.", [RIDERS]),
+        ("Two riders rolled across the road ahead of the test vehicle.", [RIDERS, RIDERS]),
+        ("A rider swung out of a side street on our left.", [RIDERS]),
+        ("A figure in dark clothes walked out in front of the ego.", [("pedestrian",)]),
+        ("Three escooters came along the kerb towards us at dusk.", [RIDERS, RIDERS, RIDERS]),
+        ("Some lads on hire scooters zipped across the road ahead of us.", [RIDERS]),
+    ],
+    ids=["the-rider", "two-riders", "a-rider", "figure-in-clothes", "plural-lemminflect-lacks", "lads-on"],
+)
+def test_a_road_user_named_by_an_unusual_noun_is_read(text, kinds):
+    read_kinds = _kinds(text)
+    assert len(read_kinds) == len(kinds), read_kinds
+    assert all(k in allowed for k, allowed in zip(read_kinds, kinds)), read_kinds
+    assert all(_behaviours(text)), _behaviours(text)
 
 
 # --- a behaviour said by a verb the reader has no entry for --------------------------------------------
@@ -75,12 +96,13 @@ def test_formatting_and_codes_round_a_road_user_are_read_past(text, kind):
 @pytest.mark.parametrize(
     "text, missing",
     [
+        ("It was raining on Tuesday.", "road user"),
         ("A bike rack stood next to the bus lane.", "road user"),
         ("A zorblat frobnicates the quux.", "road user"),
         ("There was a cyclist.", "behaviour"),
         ("A van on a wet Tuesday.", "behaviour"),
     ],
-    ids=["bike-rack", "nonsense", "only-there", "no-verb"],
+    ids=["weather-only", "bike-rack", "nonsense", "only-there", "no-verb"],
 )
 def test_refused_where_no_road_user_or_no_behaviour_is_found(text, missing):
     with pytest.raises(NotUnderstood) as refused:
@@ -99,3 +121,10 @@ def test_refused_where_no_road_user_or_no_behaviour_is_found(text, missing):
 )
 def test_a_vehicle_word_naming_a_place_or_thing_is_no_road_user(text):
     assert read(text).actors == []
+
+
+def test_the_command_line_names_what_is_missing_in_one_line(tmp_path, capsys):
+    code = main(["describe", "It was raining on Tuesday.", "-o", str(tmp_path / "out")])
+    err = capsys.readouterr().err.strip()
+    assert code != 0 and len(err.splitlines()) == 1 and "no road user found" in err
+    assert not (tmp_path / "out").exists()

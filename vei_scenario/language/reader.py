@@ -61,7 +61,14 @@ from vei_scenario.language.stated import (
     stated_heavy_rain,
     stated_lanes,
 )
-from vei_scenario.language.who import closed_compound, lamps_not_signals, own_vehicles, proper_names
+from vei_scenario.language.who import (
+    closed_compound,
+    lamps_not_signals,
+    own_vehicles,
+    proper_names,
+    rider_noun,
+    unnamed_subject,
+)
 
 _TOKEN = re.compile(r"\d+(?:\.\d+)?|km/h|m/s²|m/s2|m/s|[a-z][a-z\-]*(?:'[a-z]+)?|'s|[.;,!?:%]")
 _TOKEN_BRACKETS = re.compile(_TOKEN.pattern + "|[()]")  # (for discourse: a name said in brackets)
@@ -79,6 +86,8 @@ def forms(word: str) -> frozenset[str]:
     out = {word}
     for lemmas in _lemmas(word).values():
         out.update(lemmas)
+    if not _lemmas(word) and word.endswith("s") and not word.endswith("ss") and len(word) > 3:
+        out.add(word[:-1])  # ("escooters", "segways": a plural of a noun no dictionary has is its noun's)
     if "-" in word:  # "e-scooters", "pick-ups": the lemmas of the last part, joined again
         head, _, last = word.rpartition("-")
         out.update(f"{head}-{lemma}" for lemma in forms(last))
@@ -1118,7 +1127,35 @@ def _resolve_relation(a: _Actor, map_kind: str | None, left_hand: bool = False) 
 
 def read(text: str) -> Reading:
     """Parse ``text`` into a :class:`~vei_scenario.language.reading.Reading` (with ``ignored``
-    words); raise :class:`~vei_scenario.language.reading.NotUnderstood` naming what cannot be placed."""
+    words); raise :class:`~vei_scenario.language.reading.NotUnderstood` naming what cannot be placed.
+
+    Where no road user is found, a noun the lexicon lacks that is the subject of a verb ("the rider
+    shot off the kerb", "a figure in black walked out") is read as a road user of a general noun
+    (:func:`who.unnamed_subject`), if that gives it a behaviour; the noun is listed as not used."""
+    try:
+        reading, refused = _read(text), None
+    except NotUnderstood as e:
+        if e.missing != "road user":
+            raise
+        reading, refused = None, e
+    if reading is not None and reading.actors:
+        return reading
+    unnamed = unnamed_subject(text, lambda w: _best([w], 0) is not None, _actor_word)
+    if unnamed is not None:
+        try:
+            again = _read(unnamed[0])
+        except NotUnderstood:
+            again = None
+        if again is not None and again.actors and all(a.behaviours for a in again.actors):
+            again.ignored = list(dict.fromkeys([unnamed[1], *again.ignored]))
+            return again
+    if refused is not None:
+        raise refused
+    return reading
+
+
+def _read(text: str) -> Reading:
+    """One reading of ``text`` as it is written (see :func:`read`)."""
     text, aside = only_the_scene(text, lambda part: _actor_noun_in(part.lower()))  # (what is not the scene)
     clauses, ignored, read_as, scanned = scan(text)
     ignored[:0] = [w for w in aside if w not in FUNCTION_WORDS]
@@ -1671,6 +1708,8 @@ def read(text: str) -> Reading:
             a.kind = (
                 "pedestrian" if names & {"cross_in_front", "along_road"} and not names & VEHICLE_BEHAVIOURS else "car"
             )
+            if rider_noun(min(_lemmas(a.word or "").get("NOUN", (a.word or "",)))):
+                a.kind = "e-scooter"  # ("a rider swung out": who rides, the two-wheeler this reader is about)
         if a.kind == "pedestrian" and a.word in L.GENERIC_PERSONS:  # "the guy in front slammed on": a driver
             names = {b[0] for b in a.behaviours}
             if (a.wrong_way or names & set(L.DRIVER_BEHAVIOURS)) and not names & {"cross_in_front", "along_road"}:
@@ -1993,8 +2032,8 @@ def _refuse_if_nothing_to_place(text: str, actors: list[_Actor], clauses, ignore
     refusal names what is missing and the words not used). Anything else is read as far as it goes."""
     unused = list(dict.fromkeys(ignored))
     mentions = [m for _, ms in clauses for m in ms]
-    if not actors:
-        said = any(m.slot not in ("punct", "link", "conj", "relative", "unknown_verb") for m in mentions)
+    if not actors:  # a scene with nobody in it ("It was raining on Tuesday.") names no road user, not even the ego
+        said = any((m.slot == "actor" and m.value == "ego") or m.slot in _EGO_SAID for m in mentions)
         if not said:
             raise NotUnderstood(unused[:12], text, missing="road user")
         return
@@ -2011,6 +2050,11 @@ def _refuse_if_nothing_to_place(text: str, actors: list[_Actor], clauses, ignore
             return
         kinds = ", ".join(dict.fromkeys("road user" if a.kind == UNKNOWN_KIND else a.kind for a in actors))
         raise NotUnderstood(unused[:12], text, missing="behaviour", of=kinds)
+
+
+#: What says something of the ego where it is not named: its speed, its verbs, a turn ("Driving at 50
+#: km/h in fog", "turning left at the lights").
+_EGO_SAID = frozenset(("ego_verb", "speed", "speed_word", "behaviour", "turn", "to_stop"))
 
 
 #: Verbs that only carry another ("was", "had", "did"): no deed of their own.
