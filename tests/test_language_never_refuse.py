@@ -43,6 +43,23 @@ def test_a_road_user_named_by_an_unusual_noun_is_read(text, kinds):
     assert all(_behaviours(text)), _behaviours(text)
 
 
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A busker shuffled off the kerb in front of us.",
+        "A picnicker hurried across in front of the ego.",
+        "A punter stumbled off the kerb outside the pub.",
+    ],
+    ids=["busker", "picnicker", "punter"],
+)
+def test_someone_named_by_a_noun_of_who_does_a_verb_walks(text):
+    assert _kinds(text) == ["pedestrian"]
+
+
+def test_a_noun_of_who_does_a_verb_that_drives_is_a_vehicle():
+    assert _kinds("A camper pulled out of a side road.")[0] in ("car", "van")
+
+
 # --- a behaviour said by a verb the reader has no entry for --------------------------------------------
 @pytest.mark.parametrize(
     "text, kind",
@@ -60,6 +77,15 @@ def test_an_unknown_verb_of_contact_gives_a_default_behaviour_not_a_refusal(text
     reading = read(text)
     assert [a.kind for a in reading.actors] == [kind]
     assert reading.actors[0].behaviours
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["A child hotfooted it across the road.", "A pensioner legged it over the zebra.", "A kid legged it."],
+    ids=["hotfooted", "legged-it-over", "legged-it"],
+)
+def test_a_word_in_ed_right_after_its_subject_is_its_deed(text):
+    assert _kinds(text) == ["pedestrian"] and _behaviours(text)[0]
 
 
 @pytest.mark.parametrize(
@@ -100,9 +126,11 @@ def test_formatting_and_codes_round_a_road_user_are_read_past(text, kind):
         ("A bike rack stood next to the bus lane.", "road user"),
         ("A zorblat frobnicates the quux.", "road user"),
         ("There was a cyclist.", "behaviour"),
+        ("A tired cyclist.", "behaviour"),
+        ("A battered van.", "behaviour"),
         ("A van on a wet Tuesday.", "behaviour"),
     ],
-    ids=["weather-only", "bike-rack", "nonsense", "only-there", "no-verb"],
+    ids=["weather-only", "bike-rack", "nonsense", "only-there", "participle-before", "participle-of-a-van", "no-verb"],
 )
 def test_refused_where_no_road_user_or_no_behaviour_is_found(text, missing):
     with pytest.raises(NotUnderstood) as refused:

@@ -62,6 +62,7 @@ from vei_scenario.language.stated import (
     stated_lanes,
 )
 from vei_scenario.language.who import (
+    agent_noun,
     closed_compound,
     lamps_not_signals,
     own_vehicles,
@@ -1697,7 +1698,7 @@ def _read(text: str) -> Reading:
     ignored += unplaced
     if len(actors) > MAX_ACTORS:
         raise NotUnderstood([f"{len(actors)} road users (a scenario holds at most {MAX_ACTORS} besides the ego)"], text)
-    _refuse_if_nothing_to_place(text, actors, clauses, ignored)
+    _refuse_if_nothing_to_place(text, actors, clauses, ignored, scanned)
     if any(not _idle(a) for a in actors):  # people and vehicles only mentioned (passengers, a car in a
         idle = [a for a in actors if _idle(a)]  # story's aside) are no road users of the scenario
         actors = [a for a in actors if not _idle(a)]
@@ -1708,8 +1709,11 @@ def _read(text: str) -> Reading:
             a.kind = (
                 "pedestrian" if names & {"cross_in_front", "along_road"} and not names & VEHICLE_BEHAVIOURS else "car"
             )
-            if rider_noun(min(_lemmas(a.word or "").get("NOUN", (a.word or "",)))):
+            noun = min(_lemmas(a.word or "").get("NOUN", (a.word or "",)))
+            if rider_noun(noun):
                 a.kind = "e-scooter"  # ("a rider swung out": who rides, the two-wheeler this reader is about)
+            elif agent_noun(noun) and not names & VEHICLE_BEHAVIOURS:
+                a.kind = "pedestrian"  # ("a punter stumbled out": who does a verb is a person, on foot)
         if a.kind == "pedestrian" and a.word in L.GENERIC_PERSONS:  # "the guy in front slammed on": a driver
             names = {b[0] for b in a.behaviours}
             if (a.wrong_way or names & set(L.DRIVER_BEHAVIOURS)) and not names & {"cross_in_front", "along_road"}:
@@ -1720,7 +1724,7 @@ def _read(text: str) -> Reading:
         if said_by_noun and all(b[0] in ("keep_going", "cross_in_front") for b in a.behaviours):
             a.behaviours = [(said_by_noun, {}, None, "sequence")]  # ("a red-light runner from the left")
         if not a.behaviours and not a.stationary and a.unknown:  # only a verb the reader has no word for: it goes on
-            a.behaviours.append(("keep_going", {}, None, "sequence"))
+            a.behaviours.append((motion.default_behaviour(a.kind), {}, None, "sequence"))
     for a in actors:  # "turns out of the junction": it comes from a side road
         for k, (_name, cfg, c, lk) in enumerate(a.behaviours):
             if cfg.pop("from_side_road", None):
@@ -2026,7 +2030,9 @@ def _idle(a: _Actor) -> bool:
     )  # fmt: skip
 
 
-def _refuse_if_nothing_to_place(text: str, actors: list[_Actor], clauses, ignored: list[str]) -> None:
+def _refuse_if_nothing_to_place(
+    text: str, actors: list[_Actor], clauses, ignored: list[str], tokens: list[str]
+) -> None:
     """Refuse only what cannot become a scenario: no road user at all (not even the ego) and nothing
     else read, or road users of which nothing at all says what they do or where they are (the
     refusal names what is missing and the words not used). Anything else is read as far as it goes."""
@@ -2044,7 +2050,7 @@ def _refuse_if_nothing_to_place(text: str, actors: list[_Actor], clauses, ignore
         for a in actors
     )  # fmt: skip
     if not (verbs or described):
-        if any(m.slot == "intent" for m in mentions) or any(_inflected_verb(w) for w in unused):
+        if any(m.slot == "intent" for m in mentions) or _did_something(mentions, tokens, set(unused)):
             for a in actors:  # ("a van nicked my mirror", "was clipped by"): it did something; its kind's commonest
                 a.behaviours.append((motion.default_behaviour(a.kind), {}, None, "sequence"))
             return
@@ -2062,6 +2068,17 @@ _CARRIERS = frozenset(
     "am is are was were be been being have has had having do does did will would can could shall should may might"
     " must".split()
 )
+
+
+def _did_something(mentions, tokens: list[str], unused: set[str]) -> bool:
+    """Whether a verb the reader has no behaviour for follows the first road user named, as its
+    subject's deed ("a van nicked my mirror", "a kid legged it across"): an inflected verb, or a word in
+    -ed right after the road user. A participle before it ("a tired cyclist") describes, it does not act."""
+    first = next((m for m in mentions if m.slot == "actor" and m.value != "ego"), None)
+    if first is None:
+        return False
+    after = [(k, w) for k, w in enumerate(tokens) if k >= first.end and w in unused]
+    return any(_inflected_verb(w) or (k == first.end and w.endswith("ed") and len(w) > 4) for k, w in after)
 
 
 def _inflected_verb(word: str) -> bool:

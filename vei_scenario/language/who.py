@@ -334,6 +334,13 @@ def _verb_word(word: str) -> bool:
     return "VERB" in lemmas(word)
 
 
+def agent_noun(noun: str) -> bool:
+    """Whether ``noun`` (singular) names who does a verb ("punter": punt, "skater": skate), a person,
+    not a thing or a place ("corner", "border")."""
+    stems = (noun[:-1], noun[:-2], noun[:-2] + "e", noun[:-3] if noun[-3:-2] == noun[-4:-3] else "")
+    return noun.endswith(("er", "or")) and any(len(s) > 2 and s in lemmas(s).get("VERB", ()) for s in stems)
+
+
 def rider_noun(noun: str) -> bool:
     """Whether ``noun`` (singular) names who does a verb of riding ("rider")."""
     return noun.endswith("er") and any(s in _RIDING for s in (noun[:-1], noun[:-2], noun[:-2] + "e"))
