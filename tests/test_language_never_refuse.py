@@ -103,6 +103,21 @@ def test_the_subject_of_a_passive_is_a_road_user_with_a_behaviour(text, kind):
     assert reading.actors[0].behaviours
 
 
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("Sheep on the road, ego at 50 km/h.", "pedestrian"),
+        ("Case 7. A child in the road. The ego drives at 30 km/h.", "pedestrian"),
+        ("Stray horse on the motorway. Ego at 100 km/h.", "pedestrian"),
+    ],
+    ids=["sheep-on-the-road", "child-in-the-road", "horse-on-the-motorway"],
+)
+def test_a_road_user_said_to_be_on_the_road_with_no_verb_stands_there(text, kind):
+    reading = read(text)
+    assert [a.kind for a in reading.actors] == [kind]
+    assert reading.actors[0].behaviours
+
+
 # --- codes, capitals, bullets and tables round one road user ------------------------------------------
 @pytest.mark.parametrize(
     "text, kind",

@@ -2054,6 +2054,10 @@ def _refuse_if_nothing_to_place(
             for a in actors:  # ("a van nicked my mirror", "was clipped by"): it did something; its kind's commonest
                 a.behaviours.append((motion.default_behaviour(a.kind), {}, None, "sequence"))
             return
+        if _on_the_road(mentions):
+            for a in actors:  # ("Dog on the carriageway. Ego at 60 km/h."): it is there, in the ego's way
+                a.stationary = True
+            return
         kinds = ", ".join(dict.fromkeys("road user" if a.kind == UNKNOWN_KIND else a.kind for a in actors))
         raise NotUnderstood(unused[:12], text, missing="behaviour", of=kinds)
 
@@ -2068,6 +2072,15 @@ _CARRIERS = frozenset(
     "am is are was were be been being have has had having do does did will would can could shall should may might"
     " must".split()
 )
+
+
+def _on_the_road(mentions) -> bool:
+    """Whether a road user is said to be on or in the road with no verb ("dog on the carriageway",
+    "a sofa in the road"): the road named right after it, after "on" or "in"."""
+    return any(
+        m.slot == "actor" and m.value != "ego" and n.slot == "map" and n.prev in ("on", "in")
+        for m, n in zip(mentions, mentions[1:])
+    )
 
 
 def _did_something(mentions, tokens: list[str], unused: set[str]) -> bool:
