@@ -60,6 +60,32 @@ def test_a_noun_of_who_does_a_verb_that_drives_is_a_vehicle():
     assert _kinds("A camper pulled out of a side road.")[0] in ("car", "van")
 
 
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A Lime came hurtling down the pavement and out into the road.",
+        "A Bird went straight over the crossing as I pulled up.",
+        "Suddenly a Voi, ridden two-up, swerved off the cycle track in front of us.",
+    ],
+    ids=["a-lime", "a-bird", "a-voi"],
+)
+def test_a_shared_scooter_named_by_its_operator_is_an_e_scooter(text):
+    assert _kinds(text) == ["e-scooter"]
+
+
+@pytest.mark.parametrize(
+    "text, kinds",
+    [
+        ("A cyclist turned into Lime Street in front of us.", ["bicycle"]),
+        ("A bird flew across in front of the ego.", ["pedestrian"]),
+        ("A lime green hatchback pulled out of a side road.", ["car"]),
+    ],
+    ids=["street-name", "lower-case-animal", "colour"],
+)
+def test_an_operator_word_that_is_no_scooter_stays_what_it_is(text, kinds):
+    assert _kinds(text) == kinds
+
+
 # --- a behaviour said by a verb the reader has no entry for --------------------------------------------
 @pytest.mark.parametrize(
     "text, kind",

@@ -68,6 +68,7 @@ from vei_scenario.language.who import (
     own_vehicles,
     proper_names,
     rider_noun,
+    shared_scooters,
     unnamed_subject,
 )
 
@@ -543,7 +544,9 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
     tokens = ego.frame(tokens, _kind_at, _known, framed)  # (the ego named by a role, its driver, a witness)
     tokens = generic_ego.frame(tokens, _kind_at, _known, framed)  # (the ego as drivers in general)
     tokens = ego_speed.at_the_limit(tokens)  # ("doing the 20 limit": at 20)
-    tokens, dropped = discourse.resolve(tokens, _kind_at, _known, proper_names(text))  # (who is who; words out)
+    proper = proper_names(text)
+    tokens = shared_scooters(tokens, proper, lambda w: "VERB" in _pos(w))  # ("a Lime came past": an e-scooter)
+    tokens, dropped = discourse.resolve(tokens, _kind_at, _known, proper)  # (who is who; words out)
     dropped = framed + dropped
     ignored: list[str] = [w for w in dropped if w not in FUNCTION_WORDS and w.isalpha()]
     left_hand, ring = sides.drives_on_left(tokens, text), "roundabout" in tokens

@@ -10,7 +10,7 @@ import re
 from collections.abc import Callable
 
 from vei_scenario.language.lemmas import english, lemmas
-from vei_scenario.language.lexicon import ANIMALS, CAR_MAKES, TRUCK_MAKES
+from vei_scenario.language.lexicon import ANIMALS, CAR_MAKES, SCOOTER_OPERATORS, TRUCK_MAKES
 
 #: First-person possessives, a closed class: what they own is the writer's, hence the ego.
 FIRST_PERSON_POSSESSIVES = frozenset({"my", "our"})
@@ -389,3 +389,28 @@ def unnamed_subject(
             said = " ".join([*count, "people"]) if plural else "someone"
         return text[: m.start()] + said + text[words[head].end() :], noun
     return None
+
+
+#: What may stand before a shared e-scooter's operator name in a road user's place.
+_OPERATOR_BEFORE = frozenset(("a", "an", "the", "another", "one", "some", "his", "her", "their", "two", "three"))
+#: What may follow such a name, ending its noun phrase: punctuation or a word that opens what it does.
+_PHRASE_END = frozenset(".,;:!?") | frozenset(("and", "then", "which", "that", "who", "with", "from", "on", "at"))
+
+
+def shared_scooters(tokens: list[str], proper: frozenset[str], verb: Callable[[str], bool]) -> list[str]:
+    """ "a Lime came down the pavement", "some lad on a Tier", "a Voi shot the red": an operator of shared
+    e-scooters written with its capital (``proper``: :func:`proper_names`), after an article and ending
+    its noun phrase (a verb, punctuation or a preposition follows), is an e-scooter. Before "scooter" the
+    name only says whose it is, and goes. Lower case ("lime green", "a bird flew") or in a longer name
+    ("Lime Street") it stays the word it is."""
+    out: list[str] = []
+    for i, w in enumerate(tokens):
+        nxt = tokens[i + 1] if i + 1 < len(tokens) else "."
+        if w in SCOOTER_OPERATORS and w in proper and i and tokens[i - 1] in _OPERATOR_BEFORE:
+            if nxt in ("scooter", "scooters", "e-scooter", "e-scooters", "escooter"):
+                continue
+            if (nxt in _PHRASE_END or verb(nxt)) and nxt not in proper:
+                out.append("e-scooter")
+                continue
+        out.append(w)
+    return out
