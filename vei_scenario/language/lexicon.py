@@ -31,6 +31,10 @@ VAN_MODELS = (
     "silverado", "tacoma", "tundra", "hilux", "navara", "amarok", "f-150", "f150", "f-250", "triton",
 )  # fmt: skip
 TRUCK_MAKES = ("scania", "iveco", "daf", "transit bus")
+#: Operators of shared e-scooters, whose name people give the scooter ("a Lime", "one of those Voi
+#: things"). Most are everyday words ("lime", "bird", "bolt"), so they name an e-scooter only written
+#: with their capital in a road user's place (:func:`who.shared_scooters`).
+SCOOTER_OPERATORS = ("lime", "bird", "tier", "voi", "dott", "bolt", "spin", "beam", "neuron", "superpedestrian")
 
 #: Animals on the road, played as pedestrians (OpenSCENARIO's pedestrianCategory "animal" has no model of
 #: its own in vei or esmini: its size and way of crossing are a walker's). One led, walked or ridden by a

@@ -1451,3 +1451,17 @@ def passing_in_front(clauses: list, tokens: list[str]) -> list:
                 kept[k] = replace(m, value=("cross_in_front", {}))
         out.append((link, kept))
     return out
+
+
+#: What each kind of road user most often does where it meets the ego (the commonest behaviour of the
+#: kind in descriptions people write): a walker or an e-scooter crosses the ego's road, a cyclist rides
+#: along it; any other road user carries on at its speed.
+_COMMONEST = {"pedestrian": "cross_in_front", "e-scooter": "cross_in_front", "bicycle": "along_road"}
+
+
+def default_behaviour(kind: str) -> str:
+    """The behaviour a road user gets when the text says it moved or touched the ego in words no
+    behaviour is read from ("a van nicked my mirror", "a cyclist was clipped by the test car"): a
+    plausible scenario of that road user, with the words listed as not used, is more use than a
+    refusal; the commonest behaviour of its kind is the least surprising guess."""
+    return _COMMONEST.get(kind, "keep_going")

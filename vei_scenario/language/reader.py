@@ -70,7 +70,16 @@ from vei_scenario.language.stated import (
     stated_heavy_rain,
     stated_lanes,
 )
-from vei_scenario.language.who import closed_compound, lamps_not_signals, own_vehicles, proper_names
+from vei_scenario.language.who import (
+    agent_noun,
+    closed_compound,
+    lamps_not_signals,
+    own_vehicles,
+    proper_names,
+    rider_noun,
+    shared_scooters,
+    unnamed_subject,
+)
 
 _TOKEN = re.compile(r"\d+(?:\.\d+)?|km/h|m/s²|m/s2|m/s|[a-z][a-z\-]*(?:'[a-z]+)?|'s|[.;,!?:%]")
 _TOKEN_BRACKETS = re.compile(_TOKEN.pattern + "|[()]")  # (for discourse: a name said in brackets)
@@ -88,6 +97,8 @@ def forms(word: str) -> frozenset[str]:
     out = {word}
     for lemmas in _lemmas(word).values():
         out.update(lemmas)
+    if not _lemmas(word) and word.endswith("s") and not word.endswith("ss") and len(word) > 3:
+        out.add(word[:-1])  # ("escooters", "segways": a plural of a noun no dictionary has is its noun's)
     if "-" in word:  # "e-scooters", "pick-ups": the lemmas of the last part, joined again
         head, _, last = word.rpartition("-")
         out.update(f"{head}-{lemma}" for lemma in forms(last))
@@ -542,7 +553,9 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
     tokens = ego.frame(tokens, _kind_at, _known, framed)  # (the ego named by a role, its driver, a witness)
     tokens = generic_ego.frame(tokens, _kind_at, _known, framed)  # (the ego as drivers in general)
     tokens = ego_speed.at_the_limit(tokens)  # ("doing the 20 limit": at 20)
-    tokens, dropped = discourse.resolve(tokens, _kind_at, _known, proper_names(text))  # (who is who; words out)
+    proper = proper_names(text)
+    tokens = shared_scooters(tokens, proper, lambda w: "VERB" in _pos(w))  # ("a Lime came past": an e-scooter)
+    tokens, dropped = discourse.resolve(tokens, _kind_at, _known, proper)  # (who is who; words out)
     tokens = whose_act.the_rider(tokens, _kind_at)  # ("a cyclist ... the rider brakes": the cyclist)
     dropped = framed + dropped
     ignored: list[str] = [w for w in dropped if w not in FUNCTION_WORDS and w.isalpha()]
@@ -1156,7 +1169,35 @@ def _resolve_relation(a: _Actor, map_kind: str | None, left_hand: bool = False) 
 
 def read(text: str) -> Reading:
     """Parse ``text`` into a :class:`~vei_scenario.language.reading.Reading` (with ``ignored``
-    words); raise :class:`~vei_scenario.language.reading.NotUnderstood` naming what cannot be placed."""
+    words); raise :class:`~vei_scenario.language.reading.NotUnderstood` naming what cannot be placed.
+
+    Where no road user is found, a noun the lexicon lacks that is the subject of a verb ("the rider
+    shot off the kerb", "a figure in black walked out") is read as a road user of a general noun
+    (:func:`who.unnamed_subject`), if that gives it a behaviour; the noun is listed as not used."""
+    try:
+        reading, refused = _read(text), None
+    except NotUnderstood as e:
+        if e.missing != "road user":
+            raise
+        reading, refused = None, e
+    if reading is not None and reading.actors:
+        return reading
+    unnamed = unnamed_subject(text, lambda w: _best([w], 0) is not None, _actor_word)
+    if unnamed is not None:
+        try:
+            again = _read(unnamed[0])
+        except NotUnderstood:
+            again = None
+        if again is not None and again.actors and all(a.behaviours for a in again.actors):
+            again.ignored = list(dict.fromkeys([unnamed[1], *again.ignored]))
+            return again
+    if refused is not None:
+        raise refused
+    return reading
+
+
+def _read(text: str) -> Reading:
+    """One reading of ``text`` as it is written (see :func:`read`)."""
     text, aside = only_the_scene(text, lambda part: _actor_noun_in(part.lower()))  # (what is not the scene)
     clauses, ignored, read_as, scanned = scan(text)
     ignored[:0] = [w for w in aside if w not in FUNCTION_WORDS]
@@ -1720,7 +1761,7 @@ def read(text: str) -> Reading:
     ignored += unplaced
     if len(actors) > MAX_ACTORS:
         raise NotUnderstood([f"{len(actors)} road users (a scenario holds at most {MAX_ACTORS} besides the ego)"], text)
-    _refuse_if_nothing_to_place(text, actors, clauses, ignored)
+    _refuse_if_nothing_to_place(text, actors, clauses, ignored, scanned)
     if any(not _idle(a) for a in actors):  # people and vehicles only mentioned (passengers, a car in a
         idle = [a for a in actors if _idle(a)]  # story's aside) are no road users of the scenario
         actors = [a for a in actors if not _idle(a)]
@@ -1731,6 +1772,11 @@ def read(text: str) -> Reading:
             a.kind = (
                 "pedestrian" if names & {"cross_in_front", "along_road"} and not names & VEHICLE_BEHAVIOURS else "car"
             )
+            noun = min(_lemmas(a.word or "").get("NOUN", (a.word or "",)))
+            if rider_noun(noun):
+                a.kind = "e-scooter"  # ("a rider swung out": who rides, the two-wheeler this reader is about)
+            elif agent_noun(noun) and not names & VEHICLE_BEHAVIOURS:
+                a.kind = "pedestrian"  # ("a punter stumbled out": who does a verb is a person, on foot)
         if a.kind == "pedestrian" and a.word in L.GENERIC_PERSONS:  # "the guy in front slammed on": a driver
             names = {b[0] for b in a.behaviours}
             if (a.wrong_way or names & set(L.DRIVER_BEHAVIOURS)) and not names & {"cross_in_front", "along_road"}:
@@ -1741,7 +1787,7 @@ def read(text: str) -> Reading:
         if said_by_noun and all(b[0] in ("keep_going", "cross_in_front") for b in a.behaviours):
             a.behaviours = [(said_by_noun, {}, None, "sequence")]  # ("a red-light runner from the left")
         if not a.behaviours and not a.stationary and a.unknown:  # only a verb the reader has no word for: it goes on
-            a.behaviours.append(("keep_going", {}, None, "sequence"))
+            a.behaviours.append((motion.default_behaviour(a.kind), {}, None, "sequence"))
     for a in actors:  # "turns out of the junction": it comes from a side road
         for k, (_name, cfg, c, lk) in enumerate(a.behaviours):
             if cfg.pop("from_side_road", None):
@@ -2047,14 +2093,16 @@ def _idle(a: _Actor) -> bool:
     )  # fmt: skip
 
 
-def _refuse_if_nothing_to_place(text: str, actors: list[_Actor], clauses, ignored: list[str]) -> None:
+def _refuse_if_nothing_to_place(
+    text: str, actors: list[_Actor], clauses, ignored: list[str], tokens: list[str]
+) -> None:
     """Refuse only what cannot become a scenario: no road user at all (not even the ego) and nothing
     else read, or road users of which nothing at all says what they do or where they are (the
     refusal names what is missing and the words not used). Anything else is read as far as it goes."""
     unused = list(dict.fromkeys(ignored))
     mentions = [m for _, ms in clauses for m in ms]
-    if not actors:
-        said = any(m.slot not in ("punct", "link", "conj", "relative", "unknown_verb") for m in mentions)
+    if not actors:  # a scene with nobody in it ("It was raining on Tuesday.") names no road user, not even the ego
+        said = any((m.slot == "actor" and m.value == "ego") or m.slot in _EGO_SAID for m in mentions)
         if not said:
             raise NotUnderstood(unused[:12], text, missing="road user")
         return
@@ -2065,8 +2113,57 @@ def _refuse_if_nothing_to_place(text: str, actors: list[_Actor], clauses, ignore
         for a in actors
     )  # fmt: skip
     if not (verbs or described):
+        if any(m.slot == "intent" for m in mentions) or _did_something(mentions, tokens, set(unused)):
+            for a in actors:  # ("a van nicked my mirror", "was clipped by"): it did something; its kind's commonest
+                a.behaviours.append((motion.default_behaviour(a.kind), {}, None, "sequence"))
+            return
+        if _on_the_road(mentions):
+            for a in actors:  # ("Dog on the carriageway. Ego at 60 km/h."): it is there, in the ego's way
+                a.stationary = True
+            return
         kinds = ", ".join(dict.fromkeys("road user" if a.kind == UNKNOWN_KIND else a.kind for a in actors))
         raise NotUnderstood(unused[:12], text, missing="behaviour", of=kinds)
+
+
+#: What says something of the ego where it is not named: its speed, its verbs, a turn ("Driving at 50
+#: km/h in fog", "turning left at the lights").
+_EGO_SAID = frozenset(("ego_verb", "speed", "speed_word", "behaviour", "turn", "to_stop"))
+
+
+#: Verbs that only carry another ("was", "had", "did"): no deed of their own.
+_CARRIERS = frozenset(
+    "am is are was were be been being have has had having do does did will would can could shall should may might"
+    " must".split()
+)
+
+
+def _on_the_road(mentions) -> bool:
+    """Whether a road user is said to be on or in the road with no verb ("dog on the carriageway",
+    "a sofa in the road"): the road named right after it, after "on" or "in"."""
+    return any(
+        m.slot == "actor" and m.value != "ego" and n.slot == "map" and n.prev in ("on", "in")
+        for m, n in zip(mentions, mentions[1:])
+    )
+
+
+def _did_something(mentions, tokens: list[str], unused: set[str]) -> bool:
+    """Whether a verb the reader has no behaviour for follows the first road user named, as its
+    subject's deed ("a van nicked my mirror", "a kid legged it across"): an inflected verb, or a word in
+    -ed right after the road user. A participle before it ("a tired cyclist") describes, it does not act."""
+    first = next((m for m in mentions if m.slot == "actor" and m.value != "ego"), None)
+    if first is None:
+        return False
+    after = [(k, w) for k, w in enumerate(tokens) if k >= first.end and w in unused]
+    return any(_inflected_verb(w) or (k == first.end and w.endswith("ed") and len(w) > 4) for k, w in after)
+
+
+def _inflected_verb(word: str) -> bool:
+    """Whether ``word`` is a verb in an inflected form ("nicked", "tapping", "t-boned", "side-swiped":
+    the last part of a compound), not a carrier: a word that is a verb only in its plain form ("wet",
+    "mirror") is more likely a noun or an adjective."""
+    last = word.rpartition("-")[2]
+    verb = _lemmas(last).get("VERB", ())
+    return bool(verb) and word not in _CARRIERS and (last not in verb or last.endswith("ing"))
 
 
 #: Adversaries a scenario holds (the layers schema's limit).

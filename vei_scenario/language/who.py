@@ -10,7 +10,7 @@ import re
 from collections.abc import Callable
 
 from vei_scenario.language.lemmas import english, lemmas
-from vei_scenario.language.lexicon import ANIMALS, CAR_MAKES, TRUCK_MAKES
+from vei_scenario.language.lexicon import ANIMALS, CAR_MAKES, SCOOTER_OPERATORS, TRUCK_MAKES
 
 #: First-person possessives, a closed class: what they own is the writer's, hence the ego.
 FIRST_PERSON_POSSESSIVES = frozenset({"my", "our"})
@@ -316,3 +316,101 @@ def proper_names(text: str) -> frozenset[str]:
             if j >= 0 and text[j] not in _OPENERS:
                 capital.add(w.lower())
     return frozenset(capital - lower)
+
+
+#: What opens a noun phrase that names someone: an article, a quantifier or a count.
+_OPENING = frozenset("a an the some another one two three four five six seven eight nine ten several".split())
+#: Words that may stand between someone's noun and what they do, telling who they are ("a figure in
+#: black", "a man with a dog", "someone on wheels").
+_DESCRIBING = frozenset(("in", "on", "with", "wearing", "carrying", "dressed"))
+#: Verbs of riding: who does one is a rider ("rider", "scooterer").
+_RIDING = frozenset(("ride", "scoot"))
+#: Words that end one clause, after which the next may open with its subject.
+_CLAUSE_MARKS = frozenset(".;:,!?\n|*•-\u2014\u2013")
+
+
+def _verb_word(word: str) -> bool:
+    """Whether ``word`` can be a finite verb or a participle ("came", "rolled", "swings", "darting")."""
+    return "VERB" in lemmas(word)
+
+
+def agent_noun(noun: str) -> bool:
+    """Whether ``noun`` (singular) names who does a verb ("punter": punt, "skater": skate), a person,
+    not a thing or a place ("corner", "border")."""
+    stems = (noun[:-1], noun[:-2], noun[:-2] + "e", noun[:-3] if noun[-3:-2] == noun[-4:-3] else "")
+    return noun.endswith(("er", "or")) and any(len(s) > 2 and s in lemmas(s).get("VERB", ()) for s in stems)
+
+
+def rider_noun(noun: str) -> bool:
+    """Whether ``noun`` (singular) names who does a verb of riding ("rider")."""
+    return noun.endswith("er") and any(s in _RIDING for s in (noun[:-1], noun[:-2], noun[:-2] + "e"))
+
+
+def unnamed_subject(
+    text: str, known: Callable[[str], bool], road_user: Callable[[str], bool]
+) -> tuple[str, str] | None:
+    """``text`` with the first noun phrase the reader has no noun for, that opens a clause as the
+    subject of a verb ("The rider shot off the kerb", "Two riders rolled across", "A figure in dark
+    clothes walked out"), said by a general noun the reader has: a rider (someone who rides) as a
+    scooter rider (the two-wheeler this project is about), anyone else as someone (a walker, or the
+    driver a vehicle's behaviour then makes them), several as so many people; and that noun. None if
+    there is none.
+
+    Only for a description in which the reader found no road user at all, so that a noun missing from
+    its lexicon does not lose the one road user a text names. A noun after a road-user noun names a
+    thing of it ("a bike rack", "the scooter bay") and is left alone; ``known(word)`` is whether the
+    reader has a phrase for the word, ``road_user(word)`` whether it names a road user."""
+    words = list(_WORD.finditer(text))
+    lower = [m.group(0).lower() for m in words]
+    for n, m in enumerate(words):
+        opens = n == 0 or any(c in _CLAUSE_MARKS for c in text[words[n - 1].end() : m.start()])
+        if not opens:
+            continue
+        k = n + 1 if lower[n] in _OPENING else n  # (a bare noun opens a clause too: "Rider came out of ...")
+        head = None
+        for h in range(k, min(k + 3, len(words) - 1)):
+            if road_user(lower[h]) or known(lower[h]) or lower[h] in _OPENING or rider_noun(lower[h - 1]):
+                break  # (a road user's thing, "a bike rack", "the rider manual"; or a phrase the reader has)
+            if ("NOUN" in lemmas(lower[h]) or not english(lower[h])) and (
+                lower[h + 1] in _DESCRIBING or _verb_word(lower[h + 1])
+            ):
+                head = h
+                break
+        if head is None:
+            continue
+        noun = lower[head]
+        singular = min(lemmas(noun).get("NOUN", (noun,)))
+        plural = noun != singular
+        count = [lower[n]] if k == n + 1 and lower[n] not in ("a", "an", "the", "some", "another", "one") else []
+        if rider_noun(singular):
+            det = count or ([] if plural else ["the"] if lower[n] == "the" else ["a"])
+            said = " ".join([*det, "scooter", "riders" if plural else "rider"])
+        else:
+            said = " ".join([*count, "people"]) if plural else "someone"
+        return text[: m.start()] + said + text[words[head].end() :], noun
+    return None
+
+
+#: What may stand before a shared e-scooter's operator name in a road user's place.
+_OPERATOR_BEFORE = frozenset(("a", "an", "the", "another", "one", "some", "his", "her", "their", "two", "three"))
+#: What may follow such a name, ending its noun phrase: punctuation or a word that opens what it does.
+_PHRASE_END = frozenset(".,;:!?") | frozenset(("and", "then", "which", "that", "who", "with", "from", "on", "at"))
+
+
+def shared_scooters(tokens: list[str], proper: frozenset[str], verb: Callable[[str], bool]) -> list[str]:
+    """ "a Lime came down the pavement", "some lad on a Tier", "a Voi shot the red": an operator of shared
+    e-scooters written with its capital (``proper``: :func:`proper_names`), after an article and ending
+    its noun phrase (a verb, punctuation or a preposition follows), is an e-scooter. Before "scooter" the
+    name only says whose it is, and goes. Lower case ("lime green", "a bird flew") or in a longer name
+    ("Lime Street") it stays the word it is."""
+    out: list[str] = []
+    for i, w in enumerate(tokens):
+        nxt = tokens[i + 1] if i + 1 < len(tokens) else "."
+        if w in SCOOTER_OPERATORS and w in proper and i and tokens[i - 1] in _OPERATOR_BEFORE:
+            if nxt in ("scooter", "scooters", "e-scooter", "e-scooters", "escooter"):
+                continue
+            if (nxt in _PHRASE_END or verb(nxt)) and nxt not in proper:
+                out.append("e-scooter")
+                continue
+        out.append(w)
+    return out
