@@ -659,3 +659,57 @@ def test_a_subject_pronoun_after_a_walker_or_rider_may_be_them():
     ):
         framed = ego.frame(_tokens(text, brackets=True), _kind_at, _known, [])
         assert framed.count("ego") == 2  # (the driver and the object pronoun, not the rider's "he")
+
+
+# The vehicle a first-person narrator drives, rides or sits in ("I was driving a van", "I ride a moped
+# to college", "I'm in a hatchback"): the narrator's own, the ego, never one more road user.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("Last Tuesday I was driving a pickup at 35 mph when a deer jumped out from the right.",
+         ["pedestrian"], 56.3),
+        ("We drive a minibus for the school. On Monday we were doing 20 mph when a lorry pulled out from the left.",
+         ["truck"], 32.2),
+        ("I ride a moped to college. Yesterday I was doing 40 km/h when a pedestrian stepped out in front of me.",
+         ["pedestrian"], 40.0),
+        ("I was riding a hire bike at 20 km/h along the high street when a taxi pulled out from the left.",
+         ["car"], 20.0),
+        ("I'm in my camper doing about 50 km/h and a motorbike comes round the bend on my side.", ["car"], 50.0),
+        ("I usually drive a tipper truck; this time I was doing 30 mph when a cyclist cut across me from the left.",
+         ["bicycle"], 48.3),
+    ],
+)  # fmt: skip
+def test_the_vehicle_the_narrator_drives_or_is_in_is_the_ego(text, kinds, kph):
+    assert _kinds(text) == kinds
+    assert _ego_kph(text) == kph
+
+
+# A vehicle the narrator rents, hires, borrows or owns, told by a relative clause ("the e-scooter I
+# rented"): the narrator's.
+@pytest.mark.parametrize(
+    "text, kinds",
+    [
+        ("The car we hired broke down at the crossroads and a lorry came through from the left.", ["truck"]),
+        ("The scooter I'd borrowed was doing 15 km/h when a jogger stepped off the kerb on the right.",
+         ["pedestrian"]),
+        ("The van I own was parked up at the lights when a cyclist ran the red from the right.", ["bicycle"]),
+    ],
+)  # fmt: skip
+def test_the_vehicle_the_narrator_rents_or_owns_is_the_ego(text, kinds):
+    assert _kinds(text) == kinds
+
+
+# Near misses: a vehicle the narrator drives behind, towards or past, or one that someone else drives,
+# or one the narrator only sees, stays a road user.
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("I was driving behind a van at 30 mph when it braked hard.", "van"),
+        ("I was driving towards a parked lorry when a bus pulled out from behind it.", "truck"),
+        ("My neighbour drives a van and on Monday it pulled out in front of me at 20 mph.", "van"),
+        ("The van I saw was doing 40 mph when it cut in front of me.", "van"),
+        ("I was driving past a bus at the stop when a pedestrian stepped out in front of it.", "pedestrian"),
+    ],
+)  # fmt: skip
+def test_a_vehicle_the_narrator_only_meets_stays_a_road_user(text, kind):
+    assert kind in _kinds(text)

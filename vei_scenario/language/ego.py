@@ -515,11 +515,14 @@ def _role(tokens: list[str], kind_at: KindAt) -> list[str]:
 
 
 def _relative_own(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
-    """ "the bus I was driving", "the taxi we were in", "the van that I drive": a vehicle that a
-    first-person relative clause puts the narrator in or at the wheel of is the narrator's, the ego."""
+    """ "the bus I was driving", "the taxi we were in", "the van that I drive", "the e-scooter I
+    rented", "the car we'd borrowed": a vehicle that a first-person relative clause puts the narrator
+    in, at the wheel of, or in possession of is the narrator's, the ego ("the van I saw" is not)."""
     if not FIRST_PERSON & set(tokens):
         return tokens
-    for p in _vehicle_phrases(tokens, kind_at, known):
+    for p in _road_users(tokens, kind_at, known):
+        if p.kind not in RIDDEN:
+            continue
         k = p.end + (tokens[p.end : p.end + 1] in (["that"], ["which"]))
         if tokens[k : k + 1] not in (["i"], ["we"]):
             continue
@@ -527,7 +530,7 @@ def _relative_own(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
         while k < len(tokens) and tokens[k] in BETWEEN:
             k += 1
         verb = tokens[k] if k < len(tokens) else ""
-        if verb not in DRIVING | {"drive", "in", "riding", "aboard"}:
+        if verb not in DRIVING | {"in", "aboard"} and not _lemma_in(verb, AT_CONTROLS | POSSESSING):
             continue
         end = k + 1
         noun = tokens[p.end - 1]
@@ -854,16 +857,35 @@ def _fleet_member(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
 
 
 #: Words between "driving" and the vehicle driven ("driving her own car", "riding his works van").
-OWNING = DEFINITE | INDEFINITE | {"his", "her", "their", "its", "own"}
+OWNING = DEFINITE | INDEFINITE | {"his", "her", "their", "its", "own", "my", "our"}
+#: Verbs whose object is the vehicle their subject is at the wheel or on the saddle of (by lemma).
+AT_CONTROLS = frozenset({"drive", "ride"})
+#: Adverbs of habit between a narrator and the verb ("I usually drive a tipper", "we still ride").
+#: Verbs of having a vehicle to use (by lemma): what the narrator rents or owns is the narrator's.
+POSSESSING = frozenset({"rent", "hire", "borrow", "own", "lease", "buy", "have"})
+#: What can be driven or ridden: the object of such a verb is the vehicle, whatever its kind.
+RIDDEN = VEHICLES | {"bicycle", "e-scooter"}
+HABIT = frozenset({"usually", "normally", "always", "often", "mostly", "generally", "still", "now", "only"})
+
+
+def _narrator_subject(tokens: list[str], k: int) -> bool:
+    """Whether the verb at ``k`` has a first-person subject ("I was driving", "we usually ride")."""
+    f = k - 1
+    while f >= 0 and (tokens[f] in BETWEEN or tokens[f] in HABIT):
+        f -= 1
+    return f >= 0 and tokens[f] in FIRST_PERSON
 
 
 def _driving_ego(tokens: list[str], k: int) -> bool:
     """Whether the driving word at ``k`` is said of "the ego": right after it ("the ego was driving",
-    "the ego, driving") or inside brackets that follow it ("Insured (Mr Jones, driving his van)")."""
+    "the ego, driving") or inside brackets that follow it ("Insured (Mr Jones, driving his van)"), or
+    of a first-person narrator, its subject ("I was driving a pickup", "we usually drive a minibus")."""
     j = k - 1
     while j >= 0 and (tokens[j] in BETWEEN or tokens[j] == ","):
         j -= 1
     if j >= 1 and tokens[j - 1 : j + 1] == ["the", "ego"]:
+        return True
+    if _narrator_subject(tokens, k):
         return True
     opening = next((b for b in range(k - 1, max(k - 12, -1), -1) if tokens[b] in ("(", ")")), None)
     return opening is not None and tokens[opening] == "(" and tokens[opening - 2 : opening] == ["the", "ego"]
@@ -873,14 +895,18 @@ def _ego_drives(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[
     """ "The insured was driving a Ford Fiesta", "Claimant, driving her own Micra,", "Insured (Mr
     Jones, driving his works van)": the vehicle the ego drives or rides is its own, no road user; it
     goes (the verb stays, with the speed it may carry) and every later "the <noun>" is the ego."""
-    if "ego" not in tokens:
+    if "ego" not in tokens and not FIRST_PERSON & set(tokens):
         return tokens
     for k, w in enumerate(tokens):
-        if w not in DRIVING | {"riding", "rode", "ridden"} or not _driving_ego(tokens, k):
+        driving = w in DRIVING | {"riding", "rode", "ridden"} or _lemma_in(w, AT_CONTROLS)
+        if not driving or not _driving_ego(tokens, k):
             continue
-        p = next((q for q in _vehicle_phrases(tokens, kind_at, known) if k < q.start <= k + 4), None)
-        if p is None or any(not (x in OWNING or (x.isalpha() and not known(tokens, j))) for j, x in
-                            enumerate(tokens[k + 1 : p.start], k + 1)):  # fmt: skip
+        p = next((q for q in _road_users(tokens, kind_at, known) if k < q.start <= k + 4), None)
+        kinds = RIDDEN if _narrator_subject(tokens, k) else VEHICLES  # (a walker or rider is no one's vehicle)
+        if p is None or p.kind not in kinds:
+            continue
+        if any(not (x in OWNING or (x.isalpha() and not known(tokens, j))) for j, x in
+               enumerate(tokens[k + 1 : p.start], k + 1)):  # fmt: skip
             continue
         noun, end = tokens[p.end - 1], p.end
         model = next((j for j in range(p.end, min(p.end + 3, len(tokens))) if tokens[j] in PUNCT | {")"}), None)
@@ -889,8 +915,10 @@ def _ego_drives(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[
         ):
             end = model  # (its model's name, up to where the phrase ends: "her own Honda Jazz,")
         dropped.extend(x for x in tokens[k + 1 : end] if x.isalpha() and x not in OWNING)
-        out = [*tokens[: k + 1], *tokens[end:]]
-        return _driver_is_ego(_as_ego(out, kind_at, known, noun, dropped), kind_at, known, dropped)
+        out = _as_ego([*tokens[: k + 1], *tokens[end:]], kind_at, known, noun, dropped)
+        if "ego" not in tokens:  # (a narrator's story: "the driver" is someone else's)
+            return out
+        return _driver_is_ego(out, kind_at, known, dropped)
     return tokens
 
 
