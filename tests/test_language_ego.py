@@ -713,3 +713,38 @@ def test_the_vehicle_the_narrator_rents_or_owns_is_the_ego(text, kinds):
 )  # fmt: skip
 def test_a_vehicle_the_narrator_only_meets_stays_a_road_user(text, kind):
     assert kind in _kinds(text)
+
+
+# A person named by a name or a role (no road-user noun, no "a") with the vehicle they habitually
+# drive or ride, or are on ("Caller rides a moped", "member was on her motorbike", "Neighbour (retired,
+# drives a camper)"): that person and their vehicle are the ego, their pronouns too, never a road user.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("Listener rides a 50cc moped to the station. She says she was doing 25 km/h when a taxi pulled out "
+         "from a side road on her right.", ["car"], 25.0),
+        ("Subscriber drives a camper van. On the coast road he was going at 40 mph when a cyclist came the "
+         "other way on his side of the road.", ["bicycle"], 64.4),
+        ("Resident was on her motorbike at about 30 km/h when a dog ran out in front of her from the left.",
+         ["pedestrian"], 30.0),
+        ("Neighbour (retired, drives a camper) reports he was doing 20 mph when a jogger stepped out on his right.",
+         ["pedestrian"], 32.2),
+    ],
+)  # fmt: skip
+def test_a_person_with_the_vehicle_they_ride_or_drive_is_the_ego(text, kinds, kph):
+    assert _kinds(text) == kinds
+    assert _ego_kph(text) == kph
+
+
+# Near misses: a walker or rider named by a road-user noun who rides something is a road user; someone
+# introduced with "a" on a vehicle is someone met.
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("The boy riding his bike was struck by a car doing 30 mph.", "bicycle"),
+        ("A man on his scooter came off the pavement in front of me at 20 km/h.", "e-scooter"),
+        ("Caller reports a man riding a motorbike came the wrong way down the street straight at her car.", "car"),
+    ],
+)  # fmt: skip
+def test_a_rider_named_as_a_road_user_stays_a_road_user(text, kind):
+    assert kind in _kinds(text)

@@ -322,13 +322,16 @@ def _named_in(tokens: list[str], k: int, kind_at: KindAt, known: Known) -> bool:
 
 
 def _at_the_wheel(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
-    """ "a word from Dave, who's driving a bin lorry", "the pupil, driving the school's hatchback":
-    the person at the wheel and the vehicle are the ego (the vehicle named once, its person after)."""
+    """ "a word from Dave, who's driving a bin lorry", "the pupil, driving the school's hatchback",
+    "Caller rides a moped", "Resident was on her motorbike", "Neighbour (retired, drives a camper)":
+    the person at the wheel or on the saddle and the vehicle are the ego (the vehicle named once, its
+    person after). A person named by a road-user noun ("the boy riding his bike") rides as a road
+    user: only a name or a role may ride a bicycle or e-scooter that is the ego."""
     for k, w in enumerate(tokens):
-        inside = w == "in" and tokens[k + 1 : k + 2] in (["his"], ["her"], ["their"])
+        inside = w in ("in", "on") and tokens[k + 1 : k + 2] in (["his"], ["her"], ["their"])
         named_in = w == "in" and not inside and _named_in(tokens, k, kind_at, known)
         inside = inside or named_in
-        if w not in DRIVING and not inside:
+        if w not in DRIVING | RIDES and not inside:
             continue
         start = k  # the person, past ", who is"
         start -= start > 0 and tokens[start - 1] in BE | {"'s"}
@@ -339,15 +342,25 @@ def _at_the_wheel(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
         person = next(
             (s for s in range(max(start - 2, 0), start) if _person_end(tokens, s, kind_at, known) == end), None
         )
+        if person is None and not inside and (opening := _bracket_opening(tokens, k)) is not None:
+            start = end = k - (tokens[k - 1] == ",")  # ("Neighbour (retired, drives a camper)": the comma goes)
+            person = opening - 1 if _person_end(tokens, opening - 1, kind_at, known) == opening else None
+            relative = True
         if person is None or (named_in and kind_at(tokens, person) is not None):
             continue  # (a name, not a role, in "the" vehicle: "the boy in the car" is a passenger)
+        opens = not person or tokens[person - 1] in CLAUSE_OPENING | DEFINITE
+        if (w in RIDES or w == "on") and not opens:
+            continue  # (the subject of its clause only: "in the bus lane on his bicycle" is no person's)
         j = k + 1 + (k + 1 < len(tokens) and tokens[k + 1] in DEFINITE | INDEFINITE | {"his", "her", "their"})
         if tokens[k + 1 : k + 4] == ["one", "of", "the"]:
             j = k + 4  # ("in one of the Corollas")
         head = next((h for h in range(j, min(j + 3, len(tokens))) if kind_at(tokens, h) is not None), None)
         found = kind_at(tokens, head) if head is not None else None
-        if found is None or found[0] not in VEHICLES or any(known(tokens, h) for h in range(j, head)):
+        kinds = VEHICLES if kind_at(tokens, person) is not None else RIDDEN
+        if found is None or found[0] not in kinds or any(known(tokens, h) for h in range(j, head)):
             continue
+        if found[0] not in VEHICLES and _rider_noun(tokens[head]):
+            continue  # ("Dave was riding behind a cyclist")
         name = tokens[person:end]
         whole = next((q.end for q in _vehicle_phrases(tokens, kind_at, known) if q.start <= head < q.end), 0)
         cut = (end if relative else k + (not inside), max(head + found[1], whole))  # ("her own Nissan Micra")
@@ -365,8 +378,35 @@ def _at_the_wheel(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
             said.append(out[i])
             i += 1
         owner = tokens[k + 1] if k + 1 < len(tokens) and tokens[k + 1] in PRONOUNS_OF else None
+        owner = owner or _owner_by_pronouns(said)
         return _pronouns_as_ego(said, owner, kind_at, known) if owner else said
     return tokens
+
+
+#: Forms of "ride": a person who rides a vehicle is on it.
+RIDES = frozenset({"ride", "rides", "riding", "rode", "ridden"})
+
+
+def _rider_noun(word: str) -> bool:
+    """Whether ``word`` names the person on a bicycle or e-scooter ("cyclist", "rider"), not the
+    machine: a person can ride a bike, not a cyclist."""
+    return word.endswith(("ist", "ists", "rider", "riders"))
+
+
+def _bracket_opening(tokens: list[str], k: int) -> int | None:
+    """Where the brackets that hold the word at ``k`` open, when they open right after a word and hold
+    only a few words of detail before it ("Neighbour (retired, drives ..."): else None."""
+    b = next((b for b in range(k - 1, max(k - 6, 0), -1) if tokens[b] in ("(", ")")), None)
+    return b if b is not None and tokens[b] == "(" and b >= 1 else None
+
+
+def _owner_by_pronouns(tokens: list[str]) -> str | None:
+    """The possessive ("her", "his") of the one gender whose pronouns follow "the ego" in ``tokens``,
+    when only one gender's are said ("Caller rides a moped. She says she was doing ..."): the person
+    who was named with no pronoun of their own is then that pronoun's; None where both or neither are."""
+    first = next((i for i in range(len(tokens) - 1) if tokens[i : i + 2] == ["the", "ego"]), len(tokens))
+    said = {g for g, forms in PRONOUNS_OF.items() if any(w in forms or w == g for w in tokens[first:])}
+    return next(iter(said)) if len(said) == 1 else None
 
 
 #: The pronouns ("she", "her") that a possessive ("driving her car") gives its owner: subject,
