@@ -748,3 +748,19 @@ def test_a_person_with_the_vehicle_they_ride_or_drive_is_the_ego(text, kinds, kp
 )  # fmt: skip
 def test_a_rider_named_as_a_road_user_stays_a_road_user(text, kind):
     assert kind in _kinds(text)
+
+
+@pytest.mark.parametrize(
+    "text, kept",
+    [
+        ("Viewer rides a moped to work. She was doing 30 km/h when a boy ran out and she missed him by a foot.", "him"),
+        ("Reader drives a minibus. He says he was doing 20 mph when a woman stepped out; she waved at him.", "she"),
+    ],
+)  # fmt: skip
+def test_the_subject_pronoun_of_one_gender_after_a_person_with_a_vehicle_is_the_ego(text, kept):
+    from vei_scenario.language import ego
+    from vei_scenario.language.reader import _kind_at, _known, _tokens
+
+    framed = ego.frame(_tokens(text, brackets=True), _kind_at, _known, [])
+    subject = "she" if kept == "him" else "he"
+    assert subject not in framed and kept in framed

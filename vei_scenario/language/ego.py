@@ -401,12 +401,16 @@ def _bracket_opening(tokens: list[str], k: int) -> int | None:
 
 
 def _owner_by_pronouns(tokens: list[str]) -> str | None:
-    """The possessive ("her", "his") of the one gender whose pronouns follow "the ego" in ``tokens``,
-    when only one gender's are said ("Caller rides a moped. She says she was doing ..."): the person
-    who was named with no pronoun of their own is then that pronoun's; None where both or neither are."""
+    """The possessive ("her", "his") of the first subject pronoun after "the ego" in ``tokens``
+    ("Caller rides a moped. She says she was doing ... missed him"): the person named with no pronoun
+    of their own is the subject the story goes on with. None where no person of that gender could be
+    it but someone named before it ("a boy ran out and he ..."), or where none is said."""
     first = next((i for i in range(len(tokens) - 1) if tokens[i : i + 2] == ["the", "ego"]), len(tokens))
-    said = {g for g, forms in PRONOUNS_OF.items() if any(w in forms or w == g for w in tokens[first:])}
-    return next(iter(said)) if len(said) == 1 else None
+    for i in range(first, len(tokens)):
+        owner = next((g for g, forms in PRONOUNS_OF.items() if tokens[i] == forms[0]), None)
+        if owner is not None:
+            return None if any(w in GENDERED[owner] for w in tokens[first:i]) else owner
+    return None
 
 
 #: The pronouns ("she", "her") that a possessive ("driving her car") gives its owner: subject,
@@ -435,7 +439,13 @@ def _pronouns_as_ego(tokens: list[str], owner: str, kind_at: KindAt, known: Know
     for i in range(first + 2, len(tokens)):
         w, nxt = tokens[i], tokens[i + 1] if i + 1 < len(tokens) else ""
         last = next((q for q in reversed(users) if q.end <= i), None)
-        if w == subject and last is not None and last.kind not in VEHICLES | {"ego"}:
+        other = GENDERED["his" if owner == "her" else "her"]
+        if (
+            w == subject
+            and last is not None
+            and last.kind not in VEHICLES | {"ego"}
+            and not other & set(tokens[last.start : last.end])
+        ):
             out.append(w)  # (a walker or rider just named may be "he": "a cyclist pulled out; he fell")
         elif w == subject or (w == obj and w != owner):
             out += ["the", "ego"]
