@@ -764,3 +764,34 @@ def test_the_subject_pronoun_of_one_gender_after_a_person_with_a_vehicle_is_the_
     framed = ego.frame(_tokens(text, brackets=True), _kind_at, _known, [])
     subject = "she" if kept == "him" else "he"
     assert subject not in framed and kept in framed
+
+
+# The ego's vehicle said in brackets or in apposition right after an ego phrase ("The test vehicle (an
+# Iveco tipper)", "The vehicle under test, a 7.5 t lorry,"): what the ego is, no second road user; and
+# "the tipper" after it is the ego too.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("The test vehicle (an Iveco tipper) travels at 40 km/h when a cyclist pulls out from the left.",
+         ["bicycle"], 40.0),
+        ("Host vehicle (a minibus) at 30 km/h; a pedestrian steps out from the right kerb.", ["pedestrian"], 30.0),
+        ("The ego vehicle (a Transit van) drives at 80 km/h and a lorry ahead brakes hard; the van stops in time.",
+         ["truck"], 80.0),
+        ("The vehicle under test, a 7.5 t lorry, approaches at 30 km/h; a cyclist ahead swerves.", ["bicycle"], 30.0),
+    ],
+)  # fmt: skip
+def test_a_vehicle_in_brackets_or_apposition_after_an_ego_phrase_is_the_ego(text, kinds, kph):
+    assert _kinds(text) == kinds
+    assert _ego_kph(text) == kph
+
+
+# Near misses: brackets after the ego that name someone else or a place keep that road user.
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("The ego vehicle (following a van at 20 m) drives at 50 km/h; the van brakes hard.", "van"),
+        ("The ego (in lane 2) is doing 80 km/h when a lorry (in lane 1) moves across in front of it.", "truck"),
+    ],
+)  # fmt: skip
+def test_brackets_after_the_ego_that_name_someone_else_keep_them(text, kind):
+    assert kind in _kinds(text)

@@ -528,7 +528,8 @@ def _apposition_end(tokens: list[str], i: int, kind_at: KindAt, known: Known) ->
                 return None  # (", a cyclist, ...": someone else)
             return k if any(f is not None for f in found) or k > j + 1 else None
         nxt = tokens[k + 1] if k + 1 < len(tokens) else "."
-        year = tokens[k].isdigit() and nxt.isalpha() and nxt not in UNITS_AFTER  # ("a 2019 Honda")
+        number = tokens[k].replace(".", "", 1).isdigit()  # ("a 2019 Honda", "a 7.5 t lorry")
+        year = number and nxt.isalpha() and nxt not in UNITS_AFTER | SPEED_UNITS | {"kph", "kmh"}
         if year:
             continue
         modifier = tokens[k] in COLOURS and nxt not in PUNCT

@@ -160,6 +160,7 @@ def _marked(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]
     every later "the bus"."""
     if not any(p.kind == "ego" for p in _road_users(tokens, kind_at, known)):
         return tokens
+    tokens = _ego_bracketed(tokens, kind_at, known, dropped)
     for p in _vehicle_phrases(tokens, kind_at, known):
         noun = tokens[p.end - 1]
         label = tokens[p.end : p.end + 2]
@@ -196,6 +197,30 @@ def _marked(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]
         dropped.extend(w for w in tokens[j : p.end] if w.isalpha() and w not in ("a", "an"))
         out = tokens[:j] + tokens[end:]
         return _marked(_as_ego(out, kind_at, known, noun, dropped), kind_at, known, dropped)
+    return tokens
+
+
+def _ego_bracketed(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "The test vehicle (an Iveco tipper) ...", "Host vehicle (a minibus) ...": brackets right after
+    an ego phrase that hold only a vehicle (its article, its make or model, its modifiers) say what
+    the ego is; they go, and every later "the tipper" is the ego. Brackets that hold anything else
+    ("(following a van)", "(in lane 2)") stay."""
+    for p in _road_users(tokens, kind_at, known):
+        if p.kind != "ego" or tokens[p.end : p.end + 1] != ["("]:
+            continue
+        close = next((k for k in range(p.end + 1, min(p.end + 8, len(tokens))) if tokens[k] == ")"), None)
+        inside = [q for q in _road_users(tokens, kind_at, known) if close and p.end < q.start < close]
+        if close is None or len(inside) != 1 or inside[0].kind not in VEHICLES or inside[0].end != close:
+            continue
+        q = inside[0]
+        if any(
+            not (w in INDEFINITE or w.replace(".", "").isdigit() or (w.isalpha() and not known(tokens, j)))
+            for j, w in enumerate(tokens[p.end + 1 : q.head], p.end + 1)
+        ):
+            continue
+        dropped.extend(w for w in tokens[p.end + 1 : close] if w.isalpha() and w not in INDEFINITE)
+        out = [*tokens[: p.end], *tokens[close + 1 :]]
+        return _as_ego(out, kind_at, known, tokens[q.end - 1], dropped)
     return tokens
 
 
