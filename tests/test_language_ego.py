@@ -795,3 +795,24 @@ def test_a_vehicle_in_brackets_or_apposition_after_an_ego_phrase_is_the_ego(text
 )  # fmt: skip
 def test_brackets_after_the_ego_that_name_someone_else_keep_them(text, kind):
     assert kind in _kinds(text)
+
+
+# The vehicle a first-person narrator is in, said right after the subject ("I'm in a hatchback doing
+# 30 mph", "we were aboard a minibus"): the narrator's.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("I'm in an estate doing about 40 mph and a motorbike pulls out from a side road on my right.", ["car"], 64.4),
+        ("We were aboard a minibus at 20 km/h when a jogger stepped out from the left kerb.", ["pedestrian"], 20.0),
+        ("Yesterday I was in a borrowed pickup at 30 mph when a cyclist came out of a driveway on the left.",
+         ["bicycle"], 48.3),
+    ],
+)  # fmt: skip
+def test_the_vehicle_the_narrator_is_in_right_after_the_subject_is_the_ego(text, kinds, kph):
+    assert _kinds(text) == kinds
+    assert _ego_kph(text) == kph
+
+
+def test_a_narrator_in_front_of_or_in_the_lane_of_a_vehicle_keeps_it():
+    assert "van" in _kinds("I was in front of a van at 30 mph when it braked hard.")
+    assert "truck" in _kinds("I was in the lane next to a lorry at 50 mph when it drifted into my lane.")

@@ -555,9 +555,10 @@ def _own_vehicle(tokens: list[str], kind_at: KindAt, known: Known, dropped: list
         inside = first_person and p.det in ("a", "an", "my", "our") and p.start > 0 and out[p.start - 1] == "in"
         if inside:  # "in a hire car" said of the narrator being somewhere ("we were ... in a hire car")
             j = p.start - 2
+            narrator = j >= 0 and out[j] in ("i", "we")  # ("I'm in a hatchback": its "'m" read past)
             while j >= 0 and out[j] not in SENTENCE_END and out[j] not in BE:
                 j -= 1
-            inside = j >= 1 and out[j] in BE and out[j - 1] in ("i", "we")
+            inside = narrator or (j >= 1 and out[j] in BE and out[j - 1] in ("i", "we"))
         if full:
             k = p.end + 2
             while k < len(out) and out[k] not in PUNCT:
