@@ -816,3 +816,26 @@ def test_the_vehicle_the_narrator_is_in_right_after_the_subject_is_the_ego(text,
 def test_a_narrator_in_front_of_or_in_the_lane_of_a_vehicle_keeps_it():
     assert "van" in _kinds("I was in front of a van at 30 mph when it braked hard.")
     assert "truck" in _kinds("I was in the lane next to a lorry at 50 mph when it drifted into my lane.")
+
+
+# A named person at the wheel is the ego even where the writer speaks to the reader or of themself in
+# asides that name no road user ("Quick word before your shift", "Watch your mirrors"); a narrator in
+# the story itself keeps the story theirs.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("Quick word before your shift. On Monday Sanjay, in the minibus on the ring road doing 30 mph, had a "
+         "cyclist swerve out from the kerb on his left. Watch your mirrors, everyone.", ["bicycle"], 48.3),
+        ("I want to share this. Olga, who was driving the tipper at 20 mph, had a pedestrian step out from the "
+         "right in front of her. I think we can all learn from it.", ["pedestrian"], 32.2),
+    ],
+)  # fmt: skip
+def test_a_named_person_at_the_wheel_is_the_ego_beside_asides_of_the_writer(text, kinds, kph):
+    assert _kinds(text) == kinds
+    assert _ego_kph(text) == kph
+
+
+def test_a_named_person_in_a_vehicle_that_meets_the_narrator_stays_a_road_user():
+    text = "I was doing 30 mph on the ring road when Sanjay, in the minibus, pulled out in front of me."
+    assert len(_kinds(text)) == 1
+    assert _ego_kph(text) == 48.3

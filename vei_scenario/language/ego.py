@@ -454,8 +454,8 @@ def _pronouns_as_ego(tokens: list[str], owner: str, kind_at: KindAt, known: Know
     the van's), where no other person of that gender is named ("a girl ran out ... she stopped");
     "her" before a noun is the ego's ("her mirror")."""
     subject, obj = PRONOUNS_OF[owner]
-    if any(w in GENDERED[owner] for w in tokens):
-        return tokens
+    if any(w in GENDERED[owner] for w in _story(tokens, kind_at, known)):
+        return tokens  # (another person of that gender in the story; "Watch it, lads" is an aside)
     first = next((i for i in range(len(tokens) - 1) if tokens[i : i + 2] == ["the", "ego"]), None)
     if first is None:
         return tokens
@@ -1022,6 +1022,21 @@ def _narrator_in(tokens: list[str], kind_at: KindAt, known: Known, dropped: list
     return tokens
 
 
+def _story(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
+    """The sentences of ``tokens`` that tell the story: those that name a road user other than the ego
+    or give a speed. A writer who says "I" or "you" only in the others ("Quick word before your
+    shift", "Watch your mirrors") speaks in asides and is no road user of the story."""
+    users = [p for p in _road_users(tokens, kind_at, known) if p.kind != "ego"]
+    out: list[str] = []
+    k = 0
+    while k < len(tokens):
+        s, e = _sentence(tokens, k)
+        if any(s <= p.start < e for p in users) or any(w in SPEED_UNITS for w in tokens[s:e]):
+            out += tokens[s : e + 1]
+        k = e + 1
+    return out
+
+
 def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """``tokens`` with the road user the text is told from said "the ego" where the text names it by
     a role, by its driver or in the third person (see the module's docstring); the words that only
@@ -1041,7 +1056,9 @@ def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) 
     tokens = _fleet_member(tokens, kind_at, known, dropped)
     tokens = _ego_drives(tokens, kind_at, known, dropped)
     if names_ego(tokens, kind_at, known):
-        return tokens
+        if names_ego(_story(tokens, kind_at, known), kind_at, known):
+            return tokens
+        return _at_the_wheel(tokens, kind_at, known, dropped)  # (the writer only in asides)
     from vei_scenario.language.discourse import _labels
 
     if _labels(tokens, kind_at, known):
