@@ -839,3 +839,29 @@ def test_a_named_person_in_a_vehicle_that_meets_the_narrator_stays_a_road_user()
     text = "I was doing 30 mph on the ring road when Sanjay, in the minibus, pulled out in front of me."
     assert len(_kinds(text)) == 1
     assert _ego_kph(text) == 48.3
+
+
+# A vehicle the writer's organisation owns, said with "the" or "our" ("the pool car", "our works van",
+# "the company minibus"): the one the report is told from, the ego; "a company van" that meets the
+# narrator, or one placed ahead, is someone else.
+@pytest.mark.parametrize(
+    "text, kinds",
+    [
+        ("The lorry in front of the company car stopped dead at the lights, we were 15 m back.", ["truck"]),
+        ("The works van was waiting at the lights when a bus came through on red from the right.", ["truck"]),
+        ("A cyclist swerved out in front of our pool minibus on the high street.", ["bicycle"]),
+    ],
+)  # fmt: skip
+def test_the_writers_own_organisation_vehicle_is_the_ego(text, kinds):
+    assert _kinds(text) == kinds
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A company van pulled out in front of me at 20 mph.",
+        "The fleet van ahead of me braked hard at 30 mph.",
+    ],
+)
+def test_a_company_vehicle_met_or_placed_stays_a_road_user(text):
+    assert _kinds(text) == ["van"]

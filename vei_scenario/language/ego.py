@@ -1037,6 +1037,31 @@ def _story(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
     return out
 
 
+#: Words that make a vehicle the property of the writer's organisation ("the pool car", "our works
+#: van", "the company minibus"), a small closed class.
+ORGANISATION = frozenset({"fleet", "pool", "company", "works", "firm", "firm's", "company's"})
+
+
+def _organisation_vehicle(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "the bus in front of the fleet car", "The works van was waiting at the lights", "our pool
+    minibus": a vehicle the writer's organisation owns, said as known ("the", "our"), is the one a
+    report is told from, the ego (and so is every later "the van"), the vehicle of a "we" or "I"
+    telling it, where the text names no other ego. "A company van pulled out" (new) or "the fleet van
+    ahead of me" (placed) is someone else's."""
+    narrator = FIRST_PERSON | (NARRATOR_INVOLVED - {"ego"})
+    if any(p.kind == "ego" and tokens[p.head] not in narrator for p in _road_users(tokens, kind_at, known)):
+        return tokens
+    for p in _vehicle_phrases(tokens, kind_at, known):
+        owned = [w for w in tokens[max(p.start - 1, 0) : p.head] if w in ORGANISATION]
+        if not owned or p.det not in ("the", "our") or _placed(tokens, p):
+            continue
+        noun = tokens[p.end - 1]
+        dropped.extend(w for w in tokens[p.start : p.end] if w not in DEFINITE | {"our"})
+        out = [*tokens[: p.start], "the", "ego", *tokens[p.end :]]
+        return _as_ego(out, kind_at, known, noun, dropped)
+    return tokens
+
+
 def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """``tokens`` with the road user the text is told from said "the ego" where the text names it by
     a role, by its driver or in the third person (see the module's docstring); the words that only
@@ -1052,6 +1077,7 @@ def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) 
     tokens = _told_from(tokens, kind_at, known, dropped)
     tokens = _ego_aboard(tokens, kind_at, known, dropped)
     tokens = _narrator_in(tokens, kind_at, known, dropped)
+    tokens = _organisation_vehicle(tokens, kind_at, known, dropped)
     tokens = _reported(tokens, kind_at, known, dropped)
     tokens = _fleet_member(tokens, kind_at, known, dropped)
     tokens = _ego_drives(tokens, kind_at, known, dropped)
