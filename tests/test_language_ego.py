@@ -659,3 +659,209 @@ def test_a_subject_pronoun_after_a_walker_or_rider_may_be_them():
     ):
         framed = ego.frame(_tokens(text, brackets=True), _kind_at, _known, [])
         assert framed.count("ego") == 2  # (the driver and the object pronoun, not the rider's "he")
+
+
+# The vehicle a first-person narrator drives, rides or sits in ("I was driving a van", "I ride a moped
+# to college", "I'm in a hatchback"): the narrator's own, the ego, never one more road user.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("Last Tuesday I was driving a pickup at 35 mph when a deer jumped out from the right.",
+         ["pedestrian"], 56.3),
+        ("We drive a minibus for the school. On Monday we were doing 20 mph when a lorry pulled out from the left.",
+         ["truck"], 32.2),
+        ("I ride a moped to college. Yesterday I was doing 40 km/h when a pedestrian stepped out in front of me.",
+         ["pedestrian"], 40.0),
+        ("I was riding a hire bike at 20 km/h along the high street when a taxi pulled out from the left.",
+         ["car"], 20.0),
+        ("I'm in my camper doing about 50 km/h and a motorbike comes round the bend on my side.", ["car"], 50.0),
+        ("I usually drive a tipper truck; this time I was doing 30 mph when a cyclist cut across me from the left.",
+         ["bicycle"], 48.3),
+    ],
+)  # fmt: skip
+def test_the_vehicle_the_narrator_drives_or_is_in_is_the_ego(text, kinds, kph):
+    assert _kinds(text) == kinds
+    assert _ego_kph(text) == kph
+
+
+# A vehicle the narrator rents, hires, borrows or owns, told by a relative clause ("the e-scooter I
+# rented"): the narrator's.
+@pytest.mark.parametrize(
+    "text, kinds",
+    [
+        ("The car we hired broke down at the crossroads and a lorry came through from the left.", ["truck"]),
+        ("The scooter I'd borrowed was doing 15 km/h when a jogger stepped off the kerb on the right.",
+         ["pedestrian"]),
+        ("The van I own was parked up at the lights when a cyclist ran the red from the right.", ["bicycle"]),
+    ],
+)  # fmt: skip
+def test_the_vehicle_the_narrator_rents_or_owns_is_the_ego(text, kinds):
+    assert _kinds(text) == kinds
+
+
+# Near misses: a vehicle the narrator drives behind, towards or past, or one that someone else drives,
+# or one the narrator only sees, stays a road user.
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("I was driving behind a van at 30 mph when it braked hard.", "van"),
+        ("I was driving towards a parked lorry when a bus pulled out from behind it.", "truck"),
+        ("My neighbour drives a van and on Monday it pulled out in front of me at 20 mph.", "van"),
+        ("The van I saw was doing 40 mph when it cut in front of me.", "van"),
+        ("I was driving past a bus at the stop when a pedestrian stepped out in front of it.", "pedestrian"),
+    ],
+)  # fmt: skip
+def test_a_vehicle_the_narrator_only_meets_stays_a_road_user(text, kind):
+    assert kind in _kinds(text)
+
+
+# A person named by a name or a role (no road-user noun, no "a") with the vehicle they habitually
+# drive or ride, or are on ("Caller rides a moped", "member was on her motorbike", "Neighbour (retired,
+# drives a camper)"): that person and their vehicle are the ego, their pronouns too, never a road user.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("Listener rides a 50cc moped to the station. She says she was doing 25 km/h when a taxi pulled out "
+         "from a side road on her right.", ["car"], 25.0),
+        ("Subscriber drives a camper van. On the coast road he was going at 40 mph when a cyclist came the "
+         "other way on his side of the road.", ["bicycle"], 64.4),
+        ("Resident was on her motorbike at about 30 km/h when a dog ran out in front of her from the left.",
+         ["pedestrian"], 30.0),
+        ("Neighbour (retired, drives a camper) reports he was doing 20 mph when a jogger stepped out on his right.",
+         ["pedestrian"], 32.2),
+    ],
+)  # fmt: skip
+def test_a_person_with_the_vehicle_they_ride_or_drive_is_the_ego(text, kinds, kph):
+    assert _kinds(text) == kinds
+    assert _ego_kph(text) == kph
+
+
+# Near misses: a walker or rider named by a road-user noun who rides something is a road user; someone
+# introduced with "a" on a vehicle is someone met.
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("The boy riding his bike was struck by a car doing 30 mph.", "bicycle"),
+        ("A man on his scooter came off the pavement in front of me at 20 km/h.", "e-scooter"),
+        ("Caller reports a man riding a motorbike came the wrong way down the street straight at her car.", "car"),
+    ],
+)  # fmt: skip
+def test_a_rider_named_as_a_road_user_stays_a_road_user(text, kind):
+    assert kind in _kinds(text)
+
+
+@pytest.mark.parametrize(
+    "text, kept",
+    [
+        ("Viewer rides a moped to work. She was doing 30 km/h when a boy ran out and she missed him by a foot.", "him"),
+        ("Reader drives a minibus. He says he was doing 20 mph when a woman stepped out; she waved at him.", "she"),
+    ],
+)  # fmt: skip
+def test_the_subject_pronoun_of_one_gender_after_a_person_with_a_vehicle_is_the_ego(text, kept):
+    from vei_scenario.language import ego
+    from vei_scenario.language.reader import _kind_at, _known, _tokens
+
+    framed = ego.frame(_tokens(text, brackets=True), _kind_at, _known, [])
+    subject = "she" if kept == "him" else "he"
+    assert subject not in framed and kept in framed
+
+
+# The ego's vehicle said in brackets or in apposition right after an ego phrase ("The test vehicle (an
+# Iveco tipper)", "The vehicle under test, a 7.5 t lorry,"): what the ego is, no second road user; and
+# "the tipper" after it is the ego too.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("The test vehicle (an Iveco tipper) travels at 40 km/h when a cyclist pulls out from the left.",
+         ["bicycle"], 40.0),
+        ("Host vehicle (a minibus) at 30 km/h; a pedestrian steps out from the right kerb.", ["pedestrian"], 30.0),
+        ("The ego vehicle (a Transit van) drives at 80 km/h and a lorry ahead brakes hard; the van stops in time.",
+         ["truck"], 80.0),
+        ("The vehicle under test, a 7.5 t lorry, approaches at 30 km/h; a cyclist ahead swerves.", ["bicycle"], 30.0),
+    ],
+)  # fmt: skip
+def test_a_vehicle_in_brackets_or_apposition_after_an_ego_phrase_is_the_ego(text, kinds, kph):
+    assert _kinds(text) == kinds
+    assert _ego_kph(text) == kph
+
+
+# Near misses: brackets after the ego that name someone else or a place keep that road user.
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("The ego vehicle (following a van at 20 m) drives at 50 km/h; the van brakes hard.", "van"),
+        ("The ego (in lane 2) is doing 80 km/h when a lorry (in lane 1) moves across in front of it.", "truck"),
+    ],
+)  # fmt: skip
+def test_brackets_after_the_ego_that_name_someone_else_keep_them(text, kind):
+    assert kind in _kinds(text)
+
+
+# The vehicle a first-person narrator is in, said right after the subject ("I'm in a hatchback doing
+# 30 mph", "we were aboard a minibus"): the narrator's.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("I'm in an estate doing about 40 mph and a motorbike pulls out from a side road on my right.", ["car"], 64.4),
+        ("We were aboard a minibus at 20 km/h when a jogger stepped out from the left kerb.", ["pedestrian"], 20.0),
+        ("Yesterday I was in a borrowed pickup at 30 mph when a cyclist came out of a driveway on the left.",
+         ["bicycle"], 48.3),
+    ],
+)  # fmt: skip
+def test_the_vehicle_the_narrator_is_in_right_after_the_subject_is_the_ego(text, kinds, kph):
+    assert _kinds(text) == kinds
+    assert _ego_kph(text) == kph
+
+
+def test_a_narrator_in_front_of_or_in_the_lane_of_a_vehicle_keeps_it():
+    assert "van" in _kinds("I was in front of a van at 30 mph when it braked hard.")
+    assert "truck" in _kinds("I was in the lane next to a lorry at 50 mph when it drifted into my lane.")
+
+
+# A named person at the wheel is the ego even where the writer speaks to the reader or of themself in
+# asides that name no road user ("Quick word before your shift", "Watch your mirrors"); a narrator in
+# the story itself keeps the story theirs.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("Quick word before your shift. On Monday Sanjay, in the minibus on the ring road doing 30 mph, had a "
+         "cyclist swerve out from the kerb on his left. Watch your mirrors, everyone.", ["bicycle"], 48.3),
+        ("I want to share this. Olga, who was driving the tipper at 20 mph, had a pedestrian step out from the "
+         "right in front of her. I think we can all learn from it.", ["pedestrian"], 32.2),
+    ],
+)  # fmt: skip
+def test_a_named_person_at_the_wheel_is_the_ego_beside_asides_of_the_writer(text, kinds, kph):
+    assert _kinds(text) == kinds
+    assert _ego_kph(text) == kph
+
+
+def test_a_named_person_in_a_vehicle_that_meets_the_narrator_stays_a_road_user():
+    text = "I was doing 30 mph on the ring road when Sanjay, in the minibus, pulled out in front of me."
+    assert len(_kinds(text)) == 1
+    assert _ego_kph(text) == 48.3
+
+
+# A vehicle the writer's organisation owns, said with "the" or "our" ("the pool car", "our works van",
+# "the company minibus"): the one the report is told from, the ego; "a company van" that meets the
+# narrator, or one placed ahead, is someone else.
+@pytest.mark.parametrize(
+    "text, kinds",
+    [
+        ("The lorry in front of the company car stopped dead at the lights, we were 15 m back.", ["truck"]),
+        ("The works van was waiting at the lights when a bus came through on red from the right.", ["truck"]),
+        ("A cyclist swerved out in front of our pool minibus on the high street.", ["bicycle"]),
+    ],
+)  # fmt: skip
+def test_the_writers_own_organisation_vehicle_is_the_ego(text, kinds):
+    assert _kinds(text) == kinds
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A company van pulled out in front of me at 20 mph.",
+        "The fleet van ahead of me braked hard at 30 mph.",
+    ],
+)
+def test_a_company_vehicle_met_or_placed_stays_a_road_user(text):
+    assert _kinds(text) == ["van"]

@@ -529,7 +529,8 @@ def _apposition_end(tokens: list[str], i: int, kind_at: KindAt, known: Known) ->
                 return None  # (", a cyclist, ...": someone else)
             return k if any(f is not None for f in found) or k > j + 1 else None
         nxt = tokens[k + 1] if k + 1 < len(tokens) else "."
-        year = tokens[k].isdigit() and nxt.isalpha() and nxt not in UNITS_AFTER  # ("a 2019 Honda")
+        number = tokens[k].replace(".", "", 1).isdigit()  # ("a 2019 Honda", "a 7.5 t lorry")
+        year = number and nxt.isalpha() and nxt not in UNITS_AFTER | SPEED_UNITS | {"kph", "kmh"}
         if year:
             continue
         modifier = tokens[k] in COLOURS and nxt not in PUNCT
@@ -555,9 +556,10 @@ def _own_vehicle(tokens: list[str], kind_at: KindAt, known: Known, dropped: list
         inside = first_person and p.det in ("a", "an", "my", "our") and p.start > 0 and out[p.start - 1] == "in"
         if inside:  # "in a hire car" said of the narrator being somewhere ("we were ... in a hire car")
             j = p.start - 2
+            narrator = j >= 0 and out[j] in ("i", "we")  # ("I'm in a hatchback": its "'m" read past)
             while j >= 0 and out[j] not in SENTENCE_END and out[j] not in BE:
                 j -= 1
-            inside = j >= 1 and out[j] in BE and out[j - 1] in ("i", "we")
+            inside = narrator or (j >= 1 and out[j] in BE and out[j - 1] in ("i", "we"))
         if full:
             k = p.end + 2
             while k < len(out) and out[k] not in PUNCT:

@@ -160,6 +160,7 @@ def _marked(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]
     every later "the bus"."""
     if not any(p.kind == "ego" for p in _road_users(tokens, kind_at, known)):
         return tokens
+    tokens = _ego_bracketed(tokens, kind_at, known, dropped)
     for p in _vehicle_phrases(tokens, kind_at, known):
         noun = tokens[p.end - 1]
         label = tokens[p.end : p.end + 2]
@@ -196,6 +197,30 @@ def _marked(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]
         dropped.extend(w for w in tokens[j : p.end] if w.isalpha() and w not in ("a", "an"))
         out = tokens[:j] + tokens[end:]
         return _marked(_as_ego(out, kind_at, known, noun, dropped), kind_at, known, dropped)
+    return tokens
+
+
+def _ego_bracketed(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "The test vehicle (an Iveco tipper) ...", "Host vehicle (a minibus) ...": brackets right after
+    an ego phrase that hold only a vehicle (its article, its make or model, its modifiers) say what
+    the ego is; they go, and every later "the tipper" is the ego. Brackets that hold anything else
+    ("(following a van)", "(in lane 2)") stay."""
+    for p in _road_users(tokens, kind_at, known):
+        if p.kind != "ego" or tokens[p.end : p.end + 1] != ["("]:
+            continue
+        close = next((k for k in range(p.end + 1, min(p.end + 8, len(tokens))) if tokens[k] == ")"), None)
+        inside = [q for q in _road_users(tokens, kind_at, known) if close and p.end < q.start < close]
+        if close is None or len(inside) != 1 or inside[0].kind not in VEHICLES or inside[0].end != close:
+            continue
+        q = inside[0]
+        if any(
+            not (w in INDEFINITE or w.replace(".", "").isdigit() or (w.isalpha() and not known(tokens, j)))
+            for j, w in enumerate(tokens[p.end + 1 : q.head], p.end + 1)
+        ):
+            continue
+        dropped.extend(w for w in tokens[p.end + 1 : close] if w.isalpha() and w not in INDEFINITE)
+        out = [*tokens[: p.end], *tokens[close + 1 :]]
+        return _as_ego(out, kind_at, known, tokens[q.end - 1], dropped)
     return tokens
 
 
@@ -322,13 +347,16 @@ def _named_in(tokens: list[str], k: int, kind_at: KindAt, known: Known) -> bool:
 
 
 def _at_the_wheel(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
-    """ "a word from Dave, who's driving a bin lorry", "the pupil, driving the school's hatchback":
-    the person at the wheel and the vehicle are the ego (the vehicle named once, its person after)."""
+    """ "a word from Dave, who's driving a bin lorry", "the pupil, driving the school's hatchback",
+    "Caller rides a moped", "Resident was on her motorbike", "Neighbour (retired, drives a camper)":
+    the person at the wheel or on the saddle and the vehicle are the ego (the vehicle named once, its
+    person after). A person named by a road-user noun ("the boy riding his bike") rides as a road
+    user: only a name or a role may ride a bicycle or e-scooter that is the ego."""
     for k, w in enumerate(tokens):
-        inside = w == "in" and tokens[k + 1 : k + 2] in (["his"], ["her"], ["their"])
+        inside = w in ("in", "on") and tokens[k + 1 : k + 2] in (["his"], ["her"], ["their"])
         named_in = w == "in" and not inside and _named_in(tokens, k, kind_at, known)
         inside = inside or named_in
-        if w not in DRIVING and not inside:
+        if w not in DRIVING | RIDES and not inside:
             continue
         start = k  # the person, past ", who is"
         start -= start > 0 and tokens[start - 1] in BE | {"'s"}
@@ -339,15 +367,25 @@ def _at_the_wheel(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
         person = next(
             (s for s in range(max(start - 2, 0), start) if _person_end(tokens, s, kind_at, known) == end), None
         )
+        if person is None and not inside and (opening := _bracket_opening(tokens, k)) is not None:
+            start = end = k - (tokens[k - 1] == ",")  # ("Neighbour (retired, drives a camper)": the comma goes)
+            person = opening - 1 if _person_end(tokens, opening - 1, kind_at, known) == opening else None
+            relative = True
         if person is None or (named_in and kind_at(tokens, person) is not None):
             continue  # (a name, not a role, in "the" vehicle: "the boy in the car" is a passenger)
+        opens = not person or tokens[person - 1] in CLAUSE_OPENING | DEFINITE
+        if (w in RIDES or w == "on") and not opens:
+            continue  # (the subject of its clause only: "in the bus lane on his bicycle" is no person's)
         j = k + 1 + (k + 1 < len(tokens) and tokens[k + 1] in DEFINITE | INDEFINITE | {"his", "her", "their"})
         if tokens[k + 1 : k + 4] == ["one", "of", "the"]:
             j = k + 4  # ("in one of the Corollas")
         head = next((h for h in range(j, min(j + 3, len(tokens))) if kind_at(tokens, h) is not None), None)
         found = kind_at(tokens, head) if head is not None else None
-        if found is None or found[0] not in VEHICLES or any(known(tokens, h) for h in range(j, head)):
+        kinds = VEHICLES if kind_at(tokens, person) is not None else RIDDEN
+        if found is None or found[0] not in kinds or any(known(tokens, h) for h in range(j, head)):
             continue
+        if found[0] not in VEHICLES and _rider_noun(tokens[head]):
+            continue  # ("Dave was riding behind a cyclist")
         name = tokens[person:end]
         whole = next((q.end for q in _vehicle_phrases(tokens, kind_at, known) if q.start <= head < q.end), 0)
         cut = (end if relative else k + (not inside), max(head + found[1], whole))  # ("her own Nissan Micra")
@@ -365,8 +403,39 @@ def _at_the_wheel(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
             said.append(out[i])
             i += 1
         owner = tokens[k + 1] if k + 1 < len(tokens) and tokens[k + 1] in PRONOUNS_OF else None
+        owner = owner or _owner_by_pronouns(said)
         return _pronouns_as_ego(said, owner, kind_at, known) if owner else said
     return tokens
+
+
+#: Forms of "ride": a person who rides a vehicle is on it.
+RIDES = frozenset({"ride", "rides", "riding", "rode", "ridden"})
+
+
+def _rider_noun(word: str) -> bool:
+    """Whether ``word`` names the person on a bicycle or e-scooter ("cyclist", "rider"), not the
+    machine: a person can ride a bike, not a cyclist."""
+    return word.endswith(("ist", "ists", "rider", "riders"))
+
+
+def _bracket_opening(tokens: list[str], k: int) -> int | None:
+    """Where the brackets that hold the word at ``k`` open, when they open right after a word and hold
+    only a few words of detail before it ("Neighbour (retired, drives ..."): else None."""
+    b = next((b for b in range(k - 1, max(k - 6, 0), -1) if tokens[b] in ("(", ")")), None)
+    return b if b is not None and tokens[b] == "(" and b >= 1 else None
+
+
+def _owner_by_pronouns(tokens: list[str]) -> str | None:
+    """The possessive ("her", "his") of the first subject pronoun after "the ego" in ``tokens``
+    ("Caller rides a moped. She says she was doing ... missed him"): the person named with no pronoun
+    of their own is the subject the story goes on with. None where no person of that gender could be
+    it but someone named before it ("a boy ran out and he ..."), or where none is said."""
+    first = next((i for i in range(len(tokens) - 1) if tokens[i : i + 2] == ["the", "ego"]), len(tokens))
+    for i in range(first, len(tokens)):
+        owner = next((g for g, forms in PRONOUNS_OF.items() if tokens[i] == forms[0]), None)
+        if owner is not None:
+            return None if any(w in GENDERED[owner] for w in tokens[first:i]) else owner
+    return None
 
 
 #: The pronouns ("she", "her") that a possessive ("driving her car") gives its owner: subject,
@@ -385,8 +454,8 @@ def _pronouns_as_ego(tokens: list[str], owner: str, kind_at: KindAt, known: Know
     the van's), where no other person of that gender is named ("a girl ran out ... she stopped");
     "her" before a noun is the ego's ("her mirror")."""
     subject, obj = PRONOUNS_OF[owner]
-    if any(w in GENDERED[owner] for w in tokens):
-        return tokens
+    if any(w in GENDERED[owner] for w in _story(tokens, kind_at, known)):
+        return tokens  # (another person of that gender in the story; "Watch it, lads" is an aside)
     first = next((i for i in range(len(tokens) - 1) if tokens[i : i + 2] == ["the", "ego"]), None)
     if first is None:
         return tokens
@@ -395,7 +464,13 @@ def _pronouns_as_ego(tokens: list[str], owner: str, kind_at: KindAt, known: Know
     for i in range(first + 2, len(tokens)):
         w, nxt = tokens[i], tokens[i + 1] if i + 1 < len(tokens) else ""
         last = next((q for q in reversed(users) if q.end <= i), None)
-        if w == subject and last is not None and last.kind not in VEHICLES | {"ego"}:
+        other = GENDERED["his" if owner == "her" else "her"]
+        if (
+            w == subject
+            and last is not None
+            and last.kind not in VEHICLES | {"ego"}
+            and not other & set(tokens[last.start : last.end])
+        ):
             out.append(w)  # (a walker or rider just named may be "he": "a cyclist pulled out; he fell")
         elif w == subject or (w == obj and w != owner):
             out += ["the", "ego"]
@@ -515,11 +590,14 @@ def _role(tokens: list[str], kind_at: KindAt) -> list[str]:
 
 
 def _relative_own(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
-    """ "the bus I was driving", "the taxi we were in", "the van that I drive": a vehicle that a
-    first-person relative clause puts the narrator in or at the wheel of is the narrator's, the ego."""
+    """ "the bus I was driving", "the taxi we were in", "the van that I drive", "the e-scooter I
+    rented", "the car we'd borrowed": a vehicle that a first-person relative clause puts the narrator
+    in, at the wheel of, or in possession of is the narrator's, the ego ("the van I saw" is not)."""
     if not FIRST_PERSON & set(tokens):
         return tokens
-    for p in _vehicle_phrases(tokens, kind_at, known):
+    for p in _road_users(tokens, kind_at, known):
+        if p.kind not in RIDDEN:
+            continue
         k = p.end + (tokens[p.end : p.end + 1] in (["that"], ["which"]))
         if tokens[k : k + 1] not in (["i"], ["we"]):
             continue
@@ -527,7 +605,7 @@ def _relative_own(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
         while k < len(tokens) and tokens[k] in BETWEEN:
             k += 1
         verb = tokens[k] if k < len(tokens) else ""
-        if verb not in DRIVING | {"drive", "in", "riding", "aboard"}:
+        if verb not in DRIVING | {"in", "aboard"} and not _lemma_in(verb, AT_CONTROLS | POSSESSING):
             continue
         end = k + 1
         noun = tokens[p.end - 1]
@@ -854,16 +932,35 @@ def _fleet_member(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
 
 
 #: Words between "driving" and the vehicle driven ("driving her own car", "riding his works van").
-OWNING = DEFINITE | INDEFINITE | {"his", "her", "their", "its", "own"}
+OWNING = DEFINITE | INDEFINITE | {"his", "her", "their", "its", "own", "my", "our"}
+#: Verbs whose object is the vehicle their subject is at the wheel or on the saddle of (by lemma).
+AT_CONTROLS = frozenset({"drive", "ride"})
+#: Adverbs of habit between a narrator and the verb ("I usually drive a tipper", "we still ride").
+#: Verbs of having a vehicle to use (by lemma): what the narrator rents or owns is the narrator's.
+POSSESSING = frozenset({"rent", "hire", "borrow", "own", "lease", "buy", "have"})
+#: What can be driven or ridden: the object of such a verb is the vehicle, whatever its kind.
+RIDDEN = VEHICLES | {"bicycle", "e-scooter"}
+HABIT = frozenset({"usually", "normally", "always", "often", "mostly", "generally", "still", "now", "only"})
+
+
+def _narrator_subject(tokens: list[str], k: int) -> bool:
+    """Whether the verb at ``k`` has a first-person subject ("I was driving", "we usually ride")."""
+    f = k - 1
+    while f >= 0 and (tokens[f] in BETWEEN or tokens[f] in HABIT):
+        f -= 1
+    return f >= 0 and tokens[f] in FIRST_PERSON
 
 
 def _driving_ego(tokens: list[str], k: int) -> bool:
     """Whether the driving word at ``k`` is said of "the ego": right after it ("the ego was driving",
-    "the ego, driving") or inside brackets that follow it ("Insured (Mr Jones, driving his van)")."""
+    "the ego, driving") or inside brackets that follow it ("Insured (Mr Jones, driving his van)"), or
+    of a first-person narrator, its subject ("I was driving a pickup", "we usually drive a minibus")."""
     j = k - 1
     while j >= 0 and (tokens[j] in BETWEEN or tokens[j] == ","):
         j -= 1
     if j >= 1 and tokens[j - 1 : j + 1] == ["the", "ego"]:
+        return True
+    if _narrator_subject(tokens, k):
         return True
     opening = next((b for b in range(k - 1, max(k - 12, -1), -1) if tokens[b] in ("(", ")")), None)
     return opening is not None and tokens[opening] == "(" and tokens[opening - 2 : opening] == ["the", "ego"]
@@ -873,14 +970,18 @@ def _ego_drives(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[
     """ "The insured was driving a Ford Fiesta", "Claimant, driving her own Micra,", "Insured (Mr
     Jones, driving his works van)": the vehicle the ego drives or rides is its own, no road user; it
     goes (the verb stays, with the speed it may carry) and every later "the <noun>" is the ego."""
-    if "ego" not in tokens:
+    if "ego" not in tokens and not FIRST_PERSON & set(tokens):
         return tokens
     for k, w in enumerate(tokens):
-        if w not in DRIVING | {"riding", "rode", "ridden"} or not _driving_ego(tokens, k):
+        driving = w in DRIVING | {"riding", "rode", "ridden"} or _lemma_in(w, AT_CONTROLS)
+        if not driving or not _driving_ego(tokens, k):
             continue
-        p = next((q for q in _vehicle_phrases(tokens, kind_at, known) if k < q.start <= k + 4), None)
-        if p is None or any(not (x in OWNING or (x.isalpha() and not known(tokens, j))) for j, x in
-                            enumerate(tokens[k + 1 : p.start], k + 1)):  # fmt: skip
+        p = next((q for q in _road_users(tokens, kind_at, known) if k < q.start <= k + 4), None)
+        kinds = RIDDEN if _narrator_subject(tokens, k) else VEHICLES  # (a walker or rider is no one's vehicle)
+        if p is None or p.kind not in kinds:
+            continue
+        if any(not (x in OWNING or (x.isalpha() and not known(tokens, j))) for j, x in
+               enumerate(tokens[k + 1 : p.start], k + 1)):  # fmt: skip
             continue
         noun, end = tokens[p.end - 1], p.end
         model = next((j for j in range(p.end, min(p.end + 3, len(tokens))) if tokens[j] in PUNCT | {")"}), None)
@@ -889,8 +990,10 @@ def _ego_drives(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[
         ):
             end = model  # (its model's name, up to where the phrase ends: "her own Honda Jazz,")
         dropped.extend(x for x in tokens[k + 1 : end] if x.isalpha() and x not in OWNING)
-        out = [*tokens[: k + 1], *tokens[end:]]
-        return _driver_is_ego(_as_ego(out, kind_at, known, noun, dropped), kind_at, known, dropped)
+        out = _as_ego([*tokens[: k + 1], *tokens[end:]], kind_at, known, noun, dropped)
+        if "ego" not in tokens:  # (a narrator's story: "the driver" is someone else's)
+            return out
+        return _driver_is_ego(out, kind_at, known, dropped)
     return tokens
 
 
@@ -919,6 +1022,46 @@ def _narrator_in(tokens: list[str], kind_at: KindAt, known: Known, dropped: list
     return tokens
 
 
+def _story(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
+    """The sentences of ``tokens`` that tell the story: those that name a road user other than the ego
+    or give a speed. A writer who says "I" or "you" only in the others ("Quick word before your
+    shift", "Watch your mirrors") speaks in asides and is no road user of the story."""
+    users = [p for p in _road_users(tokens, kind_at, known) if p.kind != "ego"]
+    out: list[str] = []
+    k = 0
+    while k < len(tokens):
+        s, e = _sentence(tokens, k)
+        if any(s <= p.start < e for p in users) or any(w in SPEED_UNITS for w in tokens[s:e]):
+            out += tokens[s : e + 1]
+        k = e + 1
+    return out
+
+
+#: Words that make a vehicle the property of the writer's organisation ("the pool car", "our works
+#: van", "the company minibus"), a small closed class.
+ORGANISATION = frozenset({"fleet", "pool", "company", "works", "firm", "firm's", "company's"})
+
+
+def _organisation_vehicle(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "the bus in front of the fleet car", "The works van was waiting at the lights", "our pool
+    minibus": a vehicle the writer's organisation owns, said as known ("the", "our"), is the one a
+    report is told from, the ego (and so is every later "the van"), the vehicle of a "we" or "I"
+    telling it, where the text names no other ego. "A company van pulled out" (new) or "the fleet van
+    ahead of me" (placed) is someone else's."""
+    narrator = FIRST_PERSON | (NARRATOR_INVOLVED - {"ego"})
+    if any(p.kind == "ego" and tokens[p.head] not in narrator for p in _road_users(tokens, kind_at, known)):
+        return tokens
+    for p in _vehicle_phrases(tokens, kind_at, known):
+        owned = [w for w in tokens[max(p.start - 1, 0) : p.head] if w in ORGANISATION]
+        if not owned or p.det not in ("the", "our") or _placed(tokens, p):
+            continue
+        noun = tokens[p.end - 1]
+        dropped.extend(w for w in tokens[p.start : p.end] if w not in DEFINITE | {"our"})
+        out = [*tokens[: p.start], "the", "ego", *tokens[p.end :]]
+        return _as_ego(out, kind_at, known, noun, dropped)
+    return tokens
+
+
 def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """``tokens`` with the road user the text is told from said "the ego" where the text names it by
     a role, by its driver or in the third person (see the module's docstring); the words that only
@@ -934,11 +1077,14 @@ def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) 
     tokens = _told_from(tokens, kind_at, known, dropped)
     tokens = _ego_aboard(tokens, kind_at, known, dropped)
     tokens = _narrator_in(tokens, kind_at, known, dropped)
+    tokens = _organisation_vehicle(tokens, kind_at, known, dropped)
     tokens = _reported(tokens, kind_at, known, dropped)
     tokens = _fleet_member(tokens, kind_at, known, dropped)
     tokens = _ego_drives(tokens, kind_at, known, dropped)
     if names_ego(tokens, kind_at, known):
-        return tokens
+        if names_ego(_story(tokens, kind_at, known), kind_at, known):
+            return tokens
+        return _at_the_wheel(tokens, kind_at, known, dropped)  # (the writer only in asides)
     from vei_scenario.language.discourse import _labels
 
     if _labels(tokens, kind_at, known):
