@@ -54,7 +54,9 @@ _AFTER_TURN_NOUN = frozenset(("at", "into", "onto", "across", "from", "in", "on"
 #: Words between a verb of turning and its direction ("turns at right", "turn to the left", "off left").
 _BEFORE_DIRECTION = frozenset(("at", "to", "the", "off", "hard", "sharp", "sharply", "slightly", "then", "on"))
 #: Words between "take"/"make" and "left" ("take the next left", "make a quick right", "the first left").
-_BEFORE_TURN_NOUN = frozenset(("a", "an", "the", "next", "first", "second", "quick", "sharp", "hard", "late", "its", "my"))
+_BEFORE_TURN_NOUN = frozenset(
+    ("a", "an", "the", "next", "first", "second", "quick", "sharp", "hard", "late", "its", "my")
+)
 #: What ends a clause: punctuation and the conjunctions that open one.
 _BREAK_PUNCT = frozenset(".;!?:,—-()")
 _BREAK_WORDS = frozenset(
