@@ -28,7 +28,7 @@ import re
 from dataclasses import dataclass, field, replace
 from functools import lru_cache
 
-from vei_scenario.language import discourse, ego, ego_speed, generic_ego, motion, sides
+from vei_scenario.language import discourse, ego, ego_speed, generic_ego, junctions, motion, sides
 from vei_scenario.language import lexicon as L
 from vei_scenario.language import quantities as Q
 from vei_scenario.language import settings as S
@@ -1077,6 +1077,8 @@ def _resolve_relation(a: _Actor, map_kind: str | None, left_hand: bool = False) 
         # lets the ego pass (or is said not to): where their paths meet, in a side road or at the kerb
         where = "junction" if vehicle or (junction and not a.kerb) else "roadside"
         return f"{where}_{side if side in ('left', 'right') else near}"
+    if kerb := sides.off_the_kerb(vehicle, a.came_from, a.kerb or bool(a.kerb_side), side, near):
+        return kerb  # ("came off the pavement on my left at the exit": from that kerb, across the arm)
     if junction and a.arm and side in ("left", "right"):
         return f"junction_{side}"  # from the side road on the left: that arm, even if it approaches
     on_the_road = a.came_from and rides and not (a.kerb or a.kerb_side or a.lane_side)
@@ -1127,7 +1129,7 @@ def read(text: str) -> Reading:
     tokens = _tokens(text)
     said = " ".join(tokens)  # (the whole text as the reader reads it, for what is stated of it as a whole)
     clauses = out_to_overtake(participle_of_state(give_the_ego_the_way(into_the_ego_lane(clauses, scanned), scanned)))
-    clauses = chains(clauses, scanned)
+    clauses = junctions.crossings(chains(clauses, scanned), scanned)
     clauses, ego_follows = _ego_following(clauses)
     r = Reading()
     actors: list[_Actor] = []

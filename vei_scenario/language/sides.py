@@ -571,6 +571,16 @@ def arm_it_comes_from(junction: bool, came_from: bool, side: str | None, first: 
     return None if first in _ALONG_THE_EGOS_ROAD else f"junction_{side}"
 
 
+def off_the_kerb(vehicle: bool, came_from: bool, kerb: bool, side: str | None, near: str) -> str | None:
+    """Where a walker or rider said to come off or from a kerb, pavement or footway starts ("came off
+    the kerb on my left", "rode off the footpath at the exit"): at that roadside, at a junction or a
+    roundabout too. The arm said with it ("at the exit", "on the entry") is where it crosses, not a
+    road it comes out of; a side road said as its origin is read by the arm rules, not here."""
+    if vehicle or not (came_from and kerb):
+        return None
+    return f"roadside_{side if side in ('left', 'right') else near}"
+
+
 _TOWARDS = frozenset({"to", "towards", "toward"})
 
 

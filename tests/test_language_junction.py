@@ -1,0 +1,77 @@
+"""Junction and roundabout behaviours (:mod:`vei_scenario.language.junctions`): who crosses at a
+junction's mouth, who comes off a kerb, who has the way and who takes it. Each group is one
+construction, in wordings written for it (none taken from a corpus), with near misses that look alike
+and must not be read so."""
+
+from __future__ import annotations
+
+import pytest
+
+from vei_scenario.language.reader import read
+
+
+def _only(text: str):
+    (actor,) = read(text).actors
+    return actor, [b[0] for b in actor.behaviours]
+
+
+# a walker or rider moving off a kerb, pavement or footway goes across the road from that side, at a
+# junction too (where the arm said is where it crosses, not a road it comes out of)
+OFF_THE_KERB = [
+    ("At the crossroads a lad on a scooter rolled off the pavement on my right just as I pulled up.", "right"),
+    ("Going round the gyratory at 20 km/h, a jogger came off the footway on the left into the entry.", "left"),
+    ("A girl on a bike came flying off the kerb on our left at the slip road and I braked.", "left"),
+    ("As we left the roundabout a kid on a scooter rode straight off the curb on the right at the exit.", "right"),
+]
+
+
+@pytest.mark.parametrize("text, side", OFF_THE_KERB)
+def test_a_walker_or_rider_off_the_kerb_crosses_from_that_side(text, side):
+    actor, names = _only(text)
+    assert names[0] == "cross_in_front"
+    assert actor.relation == f"roadside_{side}"
+
+
+# the mouth of a junction crossed: "over the exit", "across the entry" is where it crosses
+ACROSS_AN_ARM = [
+    ("An e-scooter rider zipped over the exit in front of us from the pavement on the right.", "right"),
+    ("A pedestrian hurried across the entry from the left just as I reached the give-way line.", "left"),
+    ("A cyclist from the shared path on our left pedalled over the mouth of the side road.", "left"),
+]
+
+
+@pytest.mark.parametrize("text, side", ACROSS_AN_ARM)
+def test_a_walker_or_rider_across_a_junction_mouth_crosses(text, side):
+    actor, names = _only(text)
+    assert names == ["cross_in_front"]
+    assert actor.relation == f"roadside_{side}"
+
+
+# "across in front of" the ego or "across its path" after any verb of motion: a crossing
+ACROSS_THE_EGO = [
+    "At the crossroads a kid on a scooter shot straight across in front of me.",
+    "Going round the roundabout at 15 mph, a jogger nipped across my path.",
+    "At the lights a man on a bike whizzed across in front of us.",
+]
+
+
+@pytest.mark.parametrize("text", ACROSS_THE_EGO)
+def test_across_in_front_of_the_ego_is_a_crossing(text):
+    _, names = _only(text)
+    assert names == ["cross_in_front"]
+
+
+NOT_A_CROSSING = [
+    # along the pavement: beside the road, not across it
+    ("Going round the roundabout, a cyclist rode along the pavement on my left.", "along_road"),
+    # a vehicle pulled off the kerb (parked) moves into the lane
+    ("On the high street a taxi pulled off the kerb right in front of me.", "cut_in"),
+    # what already says a move of its own keeps it
+    ("A van overtook me on the bypass and then cut across in front of me.", "overtake"),
+]
+
+
+@pytest.mark.parametrize("text, first", NOT_A_CROSSING)
+def test_near_misses_are_not_read_as_a_crossing(text, first):
+    _, names = _only(text)
+    assert names[0] == first
