@@ -61,8 +61,10 @@ def _across_the_ego(tokens: list[str], j: int) -> bool:
         rest = after[3:]
         return bool(rest) and (rest[0] in _EGO_OBJECTS or rest[:2] == ["the", "ego"])
     owner = after[1:] if after[:1] == ["the"] else after
-    return len(owner) > 1 and owner[0] in ("my", "our", "ego", "ego's") and (
-        owner[1] in _EGO_WAYS or (owner[1] == "'s" and len(owner) > 2 and owner[2] in _EGO_WAYS)
+    return (
+        len(owner) > 1
+        and owner[0] in ("my", "our", "ego", "ego's")
+        and (owner[1] in _EGO_WAYS or (owner[1] == "'s" and len(owner) > 2 and owner[2] in _EGO_WAYS))
     )
 
 
