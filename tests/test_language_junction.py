@@ -75,3 +75,36 @@ NOT_A_CROSSING = [
 def test_near_misses_are_not_read_as_a_crossing(text, first):
     _, names = _only(text)
     assert names[0] == first
+
+
+# a road user that already has the way (already on the roundabout, circulating, on the main road)
+# goes on through: it does not run a red light or force its way in, even "without slowing"
+HAS_THE_WAY = [
+    ("At the roundabout the ego waits at the line; a taxi already circulating comes past from the right.", "right"),
+    ("At the mini-roundabout a moped already on the roundabout came round from the left and I braked.", "left"),
+    ("At the T-junction the ego pulls out at 10 km/h; a cyclist on the main road comes along from the right.", "right"),
+    ("I edged onto the roundabout and a lorry circulating from my right carried on without slowing.", "right"),
+    ("At the roundabout a van already going round came from the left and drove on right in front of us.", "left"),
+]
+
+
+@pytest.mark.parametrize("text, side", HAS_THE_WAY)
+def test_a_road_user_that_has_the_way_goes_on(text, side):
+    actor, names = _only(text)
+    assert names == ["keep_going"]
+    assert actor.relation == f"junction_{side}"
+
+
+TAKES_THE_WAY = [
+    # entering without slowing: it takes the way it does not have
+    ("Going round the roundabout at 20 km/h, a van entered from the left without slowing.", "left"),
+    # "already" said of the ego, not of the one that comes in
+    ("I was already on the roundabout when a car came in from the right without stopping.", "right"),
+]
+
+
+@pytest.mark.parametrize("text, side", TAKES_THE_WAY)
+def test_a_road_user_entering_without_giving_way_takes_it(text, side):
+    actor, names = _only(text)
+    assert names[0] in ("run_red_light", "turn_into")
+    assert actor.relation == f"junction_{side}"

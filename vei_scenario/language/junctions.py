@@ -68,6 +68,67 @@ def _across_the_ego(tokens: list[str], j: int) -> bool:
     )
 
 
+#: What says a road user is already on the junction's circulating or major road: it has the way.
+_CIRCULATING = frozenset(("circulating", "circling"))
+_ON_THE_RING = frozenset(("roundabout", "ring", "circle", "gyratory", "mini-roundabout", "junction"))
+_MAJOR = frozenset(("main", "major", "priority"))
+_ROADS = frozenset(("road", "rd", "carriageway", "route"))
+#: Where the phrase that describes a road user ends: the next clause, or the next road user.
+_PHRASE_ENDS = frozenset((".", ";", "!", "?", "and", "but", "when", "while", "as", "then", "so"))
+
+
+def _has_the_way(words: list[str]) -> bool:
+    """Whether ``words`` (what follows a road user's noun, up to its verb) put it where it has the way:
+    "already on the roundabout", "already circulating", "circulating from the right", "on the main
+    road", "on major rd"."""
+    for k, w in enumerate(words):
+        if w in _CIRCULATING:
+            return True
+        if w == "already" and k + 1 < len(words) and words[k + 1] in ("on", "in", "round", "around", "going"):
+            rest = words[k + 2 : k + 4]
+            if words[k + 1] == "going" or _ON_THE_RING & set(rest):
+                return True
+        if w in ("on", "along") and _MAJOR & set(words[k + 1 : k + 3]) and _ROADS & set(words[k + 2 : k + 4]):
+            return True
+    return False
+
+
+def priority(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a road user said to be already on the roundabout, circulating, or on the main
+    road marked as having the way ("_has_way") on the plain verb it goes on with: at a junction it goes
+    on through the ego's path as it may ("a cyclist already on the roundabout came round from the
+    right"), even "without slowing"; it does not run a red light or force its way in. Said of the ego
+    ("I was already on the roundabout when a car came in"), it says nothing of the other."""
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k, m in enumerate(mentions):
+            if m.slot != "actor" or m.value == "ego":
+                continue
+            verb = next((n for n in range(k + 1, len(mentions)) if mentions[n].slot in ("behaviour", "ego_verb")), None)
+            other = next((n for n in range(k + 1, len(mentions)) if mentions[n].slot in ("actor", "pronoun")), None)
+            v = mentions[verb] if verb is not None else None
+            if v is None or (other is not None and other < verb) or not _plain(v):
+                continue
+            if v.slot == "behaviour" and v.value[0] == "change_lane":
+                continue  # (a lane change on the ring is its own move)
+            end = mentions[verb].start
+            words = tokens[m.end : end]
+            if any(w in _PHRASE_ENDS for w in words) or not _has_the_way(words + tokens[end : end + 1]):
+                continue
+            cfg = v.value[1] if v.slot == "behaviour" else {}
+            kept[kept.index(v)] = replace(v, slot="behaviour", value=("keep_going", {**cfg, "_has_way": 1.0}))
+            places = mentions[k + 1 : verb]
+            if places and all(x.slot == "map" for x in places):
+                # ("a cyclist already on the roundabout coming ..."): the place is the scene's; said before
+                # the road user, its participle follows it and is its own
+                at = kept.index(m)
+                kept = [x for x in kept if all(x is not p for p in places)]
+                kept[at:at] = places
+        out.append((link, kept))
+    return out
+
+
 def crossings(clauses: list, tokens: list[str]) -> list:
     """``clauses`` (link, mentions) with a walker or rider's crossing read from its structure: a plain
     verb of motion going over or across the mouth of an arm, or a road user going "across" in front

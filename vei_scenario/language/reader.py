@@ -1082,7 +1082,8 @@ def _resolve_relation(a: _Actor, map_kind: str | None, left_hand: bool = False) 
     if junction and a.arm and side in ("left", "right"):
         return f"junction_{side}"  # from the side road on the left: that arm, even if it approaches
     on_the_road = a.came_from and rides and not (a.kerb or a.kerb_side or a.lane_side)
-    if arm := sides.arm_it_comes_from(junction, on_the_road, a.side, first, a.said):
+    said = a.said - {"ahead"} if a.has_way else a.said  # (with the way, "in front of us" is where it passes)
+    if arm := sides.arm_it_comes_from(junction, on_the_road, a.side, first, said):
         return arm  # ("at the T-junction a cyclist comes from the right")
     if a.relation == "oncoming" and junction:  # at a junction what comes towards the ego comes from the
         return f"junction_{side}" if side in ("left", "right") else "junction_opposite"  # arm said, else opposite
@@ -1129,7 +1130,7 @@ def read(text: str) -> Reading:
     tokens = _tokens(text)
     said = " ".join(tokens)  # (the whole text as the reader reads it, for what is stated of it as a whole)
     clauses = out_to_overtake(participle_of_state(give_the_ego_the_way(into_the_ego_lane(clauses, scanned), scanned)))
-    clauses = junctions.crossings(chains(clauses, scanned), scanned)
+    clauses = junctions.priority(junctions.crossings(chains(clauses, scanned), scanned), scanned)
     clauses, ego_follows = _ego_following(clauses)
     r = Reading()
     actors: list[_Actor] = []
@@ -2062,6 +2063,7 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool, left_hand: bool = Fa
         junction
         and a.kind != "pedestrian"
         and a.goes_on
+        and not a.has_way  # (already on the roundabout: going on without slowing is its right)
         and first in ("cut_in", "keep_going")
         and spec.relation in ("junction_left", "junction_right", "junction_opposite")
     ):  # does not give way or stop at the junction: straight through it, timed to meet the ego's path
