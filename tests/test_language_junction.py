@@ -108,3 +108,31 @@ def test_a_road_user_entering_without_giving_way_takes_it(text, side):
     actor, names = _only(text)
     assert names[0] in ("run_red_light", "turn_into")
     assert actor.relation == f"junction_{side}"
+
+
+# a road user from a side that enters the roundabout or junction comes out of that arm; "in front of
+# us" after it is where it goes, and not stopping or yielding makes it take the way
+ENTERS_FROM_A_SIDE = [
+    ("Ego circulating at 25 km/h; a hatchback from the right barges onto the roundabout in front of us.", "right"),
+    ("Going round at 20 mph, a pickup from my left drove into the roundabout in front of me without stopping.", "left"),
+    ("On the roundabout at 15 km/h. From the right comes a taxi fast, not stopping, it goes in front of us.", "right"),
+]
+
+
+@pytest.mark.parametrize("text, side", ENTERS_FROM_A_SIDE)
+def test_a_road_user_entering_from_a_side_comes_out_of_that_arm(text, side):
+    actor, names = _only(text)
+    assert names[0] in ("run_red_light", "turn_into")
+    assert actor.relation == f"junction_{side}"
+
+
+ENTERS_NOT_FROM_AN_ARM = [
+    # ahead of the ego, no side: it is in front, entering as the ego does
+    ("The van in front of me entered the roundabout and braked hard.", "ahead"),
+]
+
+
+@pytest.mark.parametrize("text, relation", ENTERS_NOT_FROM_AN_ARM)
+def test_entering_ahead_of_the_ego_is_not_an_arm(text, relation):
+    actor, _ = _only(text)
+    assert actor.relation == relation

@@ -1082,7 +1082,8 @@ def _resolve_relation(a: _Actor, map_kind: str | None, left_hand: bool = False) 
     if junction and a.arm and side in ("left", "right"):
         return f"junction_{side}"  # from the side road on the left: that arm, even if it approaches
     on_the_road = a.came_from and rides and not (a.kerb or a.kerb_side or a.lane_side)
-    said = a.said - {"ahead"} if a.has_way else a.said  # (with the way, "in front of us" is where it passes)
+    # with the way, or said to come from a side, "in front of us" is where it passes or goes, not where it starts
+    said = a.said - {"ahead"} if a.has_way or (a.came_from and a.side in ("left", "right")) else a.said
     if arm := sides.arm_it_comes_from(junction, on_the_road, a.side, first, said):
         return arm  # ("at the T-junction a cyclist comes from the right")
     if a.relation == "oncoming" and junction:  # at a junction what comes towards the ego comes from the
