@@ -136,3 +136,38 @@ ENTERS_NOT_FROM_AN_ARM = [
 def test_entering_ahead_of_the_ego_is_not_an_arm(text, relation):
     actor, _ = _only(text)
     assert actor.relation == relation
+
+
+# a compass point a road user comes from, read against the ego's heading: the arm or the footway on
+# the ego's right when the point lies 90 degrees clockwise of its heading, on its left at 270
+FROM_A_COMPASS_POINT = [
+    (
+        "The ego is heading south at 30 km/h through the crossroads; a van from the west arm runs the red.",
+        "junction_right",
+    ),
+    (
+        "The ego travels westbound at 40 km/h and meets a cyclist coming from the south at the junction.",
+        "junction_left",
+    ),
+    ("The ego drives north at 25 mph; a pedestrian steps out from the western pavement.", "roadside_left"),
+]
+
+
+@pytest.mark.parametrize("text, relation", FROM_A_COMPASS_POINT)
+def test_a_compass_origin_is_read_against_the_ego_heading(text, relation):
+    actor, _ = _only(text)
+    assert actor.relation == relation
+
+
+NOT_A_COMPASS_ORIGIN = [
+    # a street's name is no compass point: the side said is where it comes from
+    ("Heading north at 20 mph, a van came out of a side road from East Street on my left.", "junction_left"),
+    # without the ego's heading a compass point says nothing of the side
+    ("At the crossroads a taxi from the east runs the red light in front of me.", "junction_left"),
+]
+
+
+@pytest.mark.parametrize("text, relation", NOT_A_COMPASS_ORIGIN)
+def test_near_misses_of_a_compass_origin(text, relation):
+    actor, _ = _only(text)
+    assert actor.relation == relation

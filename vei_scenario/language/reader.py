@@ -585,6 +585,13 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             clauses[-1][1].append(_Mention("toward", side, side, side_at, tokens[side_at - 1], after, side_at + 2))
             i = side_at + 2
             continue
+        origin = sides.compass_origin_at(tokens, i)
+        if origin is not None:  # "from the east arm": where it lies from the ego once the ego's heading is read
+            clauses[-1][1].append(
+                _Mention("origin", origin[:2], " ".join(tokens[i : origin[2]]), i, prev, end=origin[2])
+            )
+            i = origin[2]
+            continue
         heading = sides.heading_at(tokens, i)
         if heading is not None:  # "eastbound", "heading north": related to the ego's heading once both are read
             clauses[-1][1].append(_Mention("heading", heading, tok, i, prev, end=i + 1))
