@@ -142,11 +142,11 @@ def test_entering_ahead_of_the_ego_is_not_an_arm(text, relation):
 # the ego's right when the point lies 90 degrees clockwise of its heading, on its left at 270
 FROM_A_COMPASS_POINT = [
     (
-        "The ego is heading south at 30 km/h through the crossroads; a van from the west arm runs the red.",
+        "The ego is heading south at 30 km/h; a van from the west arm runs the red at the crossroads.",
         "junction_right",
     ),
     (
-        "The ego travels westbound at 40 km/h and meets a cyclist coming from the south at the junction.",
+        "The ego travels westbound at 40 km/h and meets a cyclist coming from the south at a junction.",
         "junction_left",
     ),
     ("The ego drives north at 25 mph; a pedestrian steps out from the western pavement.", "roadside_left"),
