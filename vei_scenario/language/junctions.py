@@ -95,7 +95,7 @@ def _has_the_way(words: list[str]) -> bool:
 
 def priority(clauses: list, tokens: list[str]) -> list:
     """``clauses`` with a road user said to be already on the roundabout, circulating, or on the main
-    road marked as having the way ("_has_way") on the plain verb it goes on with: at a junction it goes
+    road marked as having the way ("_has_way", "_priority") on the plain verb it goes on with: at a junction it goes
     on through the ego's path as it may ("a cyclist already on the roundabout came round from the
     right"), even "without slowing"; it does not run a red light or force its way in. Said of the ego
     ("I was already on the roundabout when a car came in"), it says nothing of the other."""
@@ -117,7 +117,9 @@ def priority(clauses: list, tokens: list[str]) -> list:
             if any(w in _PHRASE_ENDS for w in words) or not _has_the_way(words + tokens[end : end + 1]):
                 continue
             cfg = v.value[1] if v.slot == "behaviour" else {}
-            kept[kept.index(v)] = replace(v, slot="behaviour", value=("keep_going", {**cfg, "_has_way": 1.0}))
+            kept[kept.index(v)] = replace(
+                v, slot="behaviour", value=("keep_going", {**cfg, "_has_way": 1.0, "_priority": 1.0})
+            )
             places = mentions[k + 1 : verb]
             if places and all(x.slot == "map" for x in places):
                 # ("a cyclist already on the roundabout coming ..."): the place is the scene's; said before

@@ -230,6 +230,7 @@ class _Actor:
     hides: bool = False  # named as what someone comes out from behind or between
     passed: bool = False  # what the ego passes ("the ego overtakes her"): going along ahead of it
     has_way: bool = False  # going on while the ego gives way ("we yield; the van carries on")
+    priority: bool = False  # already on the roundabout or the main road: going on is its right
 
 
 #: Euro NCAP's names of its test scenarios ("Car-to-Car Rear stationary", "Car-to-Pedestrian Nearside
@@ -1617,6 +1618,7 @@ def read(text: str) -> Reading:
             a.goes_on = a.goes_on or bool(cfg.pop("_denied", None))
             cfg.pop("_still", None)
             a.has_way = a.has_way or bool(cfg.pop("_has_way", None))
+            a.priority = a.priority or bool(cfg.pop("_priority", None))
             a.behaviours[i] = (name, cfg, crit_here or _verb_criticality(words), lk)
         if crit_here:
             if not named and isinstance(subject, _Actor) and subject.crit is None:
@@ -2071,7 +2073,7 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool, left_hand: bool = Fa
         junction
         and a.kind != "pedestrian"
         and a.goes_on
-        and not a.has_way  # (already on the roundabout: going on without slowing is its right)
+        and not a.priority  # (already on the roundabout: going on without slowing is its right)
         and first in ("cut_in", "keep_going")
         and spec.relation in ("junction_left", "junction_right", "junction_opposite")
     ):  # does not give way or stop at the junction: straight through it, timed to meet the ego's path
@@ -2461,6 +2463,7 @@ def _apply(m, who, r, link, added) -> None:
             if a.behaviours and a.behaviours[-1][0] == name and name != "change_speed":
                 a.goes_on = a.goes_on or bool(cfg.get("_denied"))  # ("enters and fails to yield": it goes)
                 a.has_way = a.has_way or bool(cfg.get("_has_way"))  # ("going round ... we yield; it goes on")
+                a.priority = a.priority or bool(cfg.get("_priority"))
                 continue  # ("brakes ... and stops": said twice over)
             said = m.words if not _adverb(m.next_) else f"{m.words} {m.next_}"  # ("brakes moderately")
             a.behaviours.append((name, dict(cfg, _words=said), None, link if not added else "sequence"))
