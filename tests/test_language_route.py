@@ -105,3 +105,35 @@ TURN_AT_A_JUNCTION = [
 @pytest.mark.parametrize("text", TURN_AT_A_JUNCTION)
 def test_the_ego_turning_turns_at_a_junction(text):
     assert read(text).map_kind == "crossroad"
+
+
+# the turn as the object of a verb of carrying out a manoeuvre, with adjectives before the direction;
+# an exit or turning taken or a roundabout left towards a side; "go/bear right at" a place is a turn
+MANOEUVRE_AND_EXIT = {
+    "left": [
+        "The ego shuttle is performing a protected left at the lights when a jogger steps off the kerb.",
+        "Ego attempts a slow left into the car park at 10 km/h; a cyclist comes up on the inside.",
+        "I took the second exit on the left at the gyratory and a moped came round behind me.",
+        "We came off the roundabout to the left at 15 mph as a walker stepped onto the zebra.",
+        "Ego exits the traffic circle left at 20 km/h and a scooter rider crosses the exit.",
+    ],
+    "right": [
+        "Our car begins a wide right across the junction at 12 mph while a van comes the other way.",
+        "I took the next turning on the right and a child ran out from behind a parked car.",
+        "The ego leaves the roundabout towards the right at 25 km/h; a cyclist follows it.",
+        "The ego slows to go right at the crossroads while a bus approaches from the other side.",
+        "I was bearing right at the junction at 10 mph when a jogger crossed in front of me.",
+    ],
+    None: [
+        "A van performing a quick left into the yard cut across in front of me.",
+        "I left the roundabout behind and a lorry on my right drifted into my lane.",
+        "The cyclist took the exit on the right and I carried on round.",
+        "A scooter went right at me at the junction.",
+        "A motorbike came right at us at the roundabout.",
+    ],
+}
+
+
+@pytest.mark.parametrize("text, route", _cases(MANOEUVRE_AND_EXIT))
+def test_a_manoeuvre_an_exit_or_a_way_off_the_roundabout_is_the_ego_turn(text, route):
+    assert ego_route(_tokens(text)) == route

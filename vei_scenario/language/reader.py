@@ -33,6 +33,7 @@ from vei_scenario.language import (
     ego,
     ego_speed,
     generic_ego,
+    junctions,
     motion,
     scenery,
     sides,
@@ -250,6 +251,7 @@ class _Actor:
     hides: bool = False  # named as what someone comes out from behind or between
     passed: bool = False  # what the ego passes ("the ego overtakes her"): going along ahead of it
     has_way: bool = False  # going on while the ego gives way ("we yield; the van carries on")
+    priority: bool = False  # already on the roundabout or the main road: going on is its right
 
 
 #: Euro NCAP's names of its test scenarios ("Car-to-Car Rear stationary", "Car-to-Pedestrian Nearside
@@ -607,6 +609,13 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             clauses[-1][1].append(_Mention("behaviour", ("change_lane", {}), words, i, prev, side, side_at, det))
             clauses[-1][1].append(_Mention("toward", side, side, side_at, tokens[side_at - 1], after, side_at + 2))
             i = side_at + 2
+            continue
+        origin = sides.compass_origin_at(tokens, i)
+        if origin is not None:  # "from the east arm": where it lies from the ego once the ego's heading is read
+            clauses[-1][1].append(
+                _Mention("origin", origin[:2], " ".join(tokens[i : origin[2]]), i, prev, end=origin[2])
+            )
+            i = origin[2]
             continue
         heading = sides.heading_at(tokens, i)
         if heading is not None:  # "eastbound", "heading north": related to the ego's heading once both are read
@@ -1128,10 +1137,14 @@ def _resolve_relation(a: _Actor, map_kind: str | None, left_hand: bool = False) 
         # lets the ego pass (or is said not to): where their paths meet, in a side road or at the kerb
         where = "junction" if vehicle or (junction and not a.kerb) else "roadside"
         return f"{where}_{side if side in ('left', 'right') else near}"
+    if kerb := sides.off_the_kerb(vehicle, a.came_from, a.kerb or bool(a.kerb_side), side, near):
+        return kerb  # ("came off the pavement on my left at the exit": from that kerb, across the arm)
     if junction and a.arm and side in ("left", "right"):
         return f"junction_{side}"  # from the side road on the left: that arm, even if it approaches
     on_the_road = a.came_from and rides and not (a.kerb or a.kerb_side or a.lane_side)
-    if arm := sides.arm_it_comes_from(junction, on_the_road, a.side, first, a.said):
+    # with the way, or said to come from a side, "in front of us" is where it passes or goes, not where it starts
+    said = a.said - {"ahead"} if a.has_way or (a.came_from and a.side in ("left", "right")) else a.said
+    if arm := sides.arm_it_comes_from(junction, on_the_road, a.side, first, said):
         return arm  # ("at the T-junction a cyclist comes from the right")
     if a.relation == "oncoming" and junction:  # at a junction what comes towards the ego comes from the
         return f"junction_{side}" if side in ("left", "right") else "junction_opposite"  # arm said, else opposite
@@ -1209,6 +1222,7 @@ def _read(text: str) -> Reading:
     said = " ".join(tokens)  # (the whole text as the reader reads it, for what is stated of it as a whole)
     clauses = out_to_overtake(participle_of_state(give_the_ego_the_way(into_the_ego_lane(clauses, scanned), scanned)))
     clauses = scenery.standing_there(chains(clauses, scanned), scanned)  # ("there's a car stopped dead")
+    clauses = junctions.priority(junctions.crossings(clauses, scanned), scanned)
     clauses, ego_follows = _ego_following(clauses)
     r = Reading()
     actors: list[_Actor] = []
@@ -1707,6 +1721,7 @@ def _read(text: str) -> Reading:
             a.goes_on = a.goes_on or bool(cfg.pop("_denied", None))
             cfg.pop("_still", None)
             a.has_way = a.has_way or bool(cfg.pop("_has_way", None))
+            a.priority = a.priority or bool(cfg.pop("_priority", None))
             a.behaviours[i] = (name, cfg, crit_here or _verb_criticality(words), lk)
         if crit_here:
             if not named and isinstance(subject, _Actor) and subject.crit is None:
@@ -2217,6 +2232,7 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool, left_hand: bool = Fa
         junction
         and a.kind != "pedestrian"
         and a.goes_on
+        and not a.priority  # (already on the roundabout: going on without slowing is its right)
         and first in ("cut_in", "keep_going")
         and spec.relation in ("junction_left", "junction_right", "junction_opposite")
     ):  # does not give way or stop at the junction: straight through it, timed to meet the ego's path
@@ -2606,6 +2622,7 @@ def _apply(m, who, r, link, added) -> None:
             if a.behaviours and a.behaviours[-1][0] == name and name != "change_speed":
                 a.goes_on = a.goes_on or bool(cfg.get("_denied"))  # ("enters and fails to yield": it goes)
                 a.has_way = a.has_way or bool(cfg.get("_has_way"))  # ("going round ... we yield; it goes on")
+                a.priority = a.priority or bool(cfg.get("_priority"))
                 continue  # ("brakes ... and stops": said twice over)
             said = m.words if not _adverb(m.next_) else f"{m.words} {m.next_}"  # ("brakes moderately")
             a.behaviours.append((name, dict(cfg, _words=said), None, link if not added else "sequence"))

@@ -30,6 +30,22 @@ _INTENSIFIED = frozenset(("in", "across", "through", "out", "up", "behind", "nex
                           "onto"))  # fmt: skip
 #: Verbs that take "a left" or "the next right" as a turn ("make a left", "hang a right", "take a left").
 _TAKING = frozenset(("make", "take", "hang", "do", "pull", "swing", "chuck", "throw"))
+#: Verbs of carrying out a manoeuvre, whose object may be the turn ("performs an unprotected left").
+_PERFORMING = frozenset(("execute", "perform", "complete", "attempt", "begin", "start", "initiate", "finish",
+                         "commence", "undertake"))  # fmt: skip
+#: Verbs of leaving a junction, whose direction is the turn ("leaves the roundabout to the right").
+_LEAVING = frozenset(("leave", "exit", "quit"))
+#: Verbs that leave a junction with "off" ("came off the roundabout to the left").
+_COMING = frozenset(("come", "get", "go", "turn", "pull", "drive", "ride"))
+#: What is left towards a side: the junction itself ("exits the traffic circle left").
+_JUNCTIONS = frozenset(("roundabout", "junction", "circle", "gyratory", "ring", "crossroads", "intersection",
+                        "mini-roundabout", "rotary"))  # fmt: skip
+#: The ways off a junction that are taken towards a side ("the second exit on the left").
+_WAYS_OFF = frozenset(("exit", "turning", "turn", "turn-off", "turnoff", "road", "street"))
+#: Places after "right at" that make "right" a direction, not an intensifier ("go right at the lights").
+_TURN_PLACES = frozenset(("junction", "roundabout", "lights", "light", "crossroads", "crossroad", "intersection",
+                          "exit", "corner", "t-junction", "signals", "fork", "end", "top", "bottom", "next",
+                          "first", "second", "third", "mini-roundabout", "gyratory", "church", "lights"))  # fmt: skip
 _DIRECTIONS = frozenset(("left", "right"))
 _INITIALS = {"l": "left", "r": "right"}
 #: What may follow "a left turn" when it is the turn itself (a preposition), not a modifier of a noun.
@@ -38,7 +54,9 @@ _AFTER_TURN_NOUN = frozenset(("at", "into", "onto", "across", "from", "in", "on"
 #: Words between a verb of turning and its direction ("turns at right", "turn to the left", "off left").
 _BEFORE_DIRECTION = frozenset(("at", "to", "the", "off", "hard", "sharp", "sharply", "slightly", "then", "on"))
 #: Words between "take"/"make" and "left" ("take the next left", "make a quick right", "the first left").
-_BEFORE_TURN_NOUN = frozenset(("a", "the", "next", "first", "second", "quick", "sharp", "hard", "late", "its", "my"))
+_BEFORE_TURN_NOUN = frozenset(
+    ("a", "an", "the", "next", "first", "second", "quick", "sharp", "hard", "late", "its", "my")
+)
 #: What ends a clause: punctuation and the conjunctions that open one.
 _BREAK_PUNCT = frozenset(".;!?:,—-()")
 _BREAK_WORDS = frozenset(
@@ -94,19 +112,54 @@ def _turn_at(words: list[str], i: int) -> str | None:
             if x in _DIRECTIONS:
                 nxt = after[k + 1] if k + 1 < len(after) else ""
                 if x == "right" and nxt in _INTENSIFIED and not _lemma_in(w, frozenset(("turn",))):
-                    return None
+                    if not (nxt == "at" and _place_after(after[k + 2 :])):
+                        return None  # ("went right at me"; not "go right at the lights")
                 return x  # ("turn left", "turns at right", "turning to the right")
             if x not in _BEFORE_DIRECTION:
                 break
+    off = 1 if after[:1] == ["off"] and _lemma_in(w, _COMING) else 0  # ("came off the roundabout left")
+    if (off or _lemma_in(w, _LEAVING)) and after[off : off + 1] in (["the"], ["a"]):
+        place = next((k for k in (off + 1, off + 2) if k < len(after) and after[k] in _JUNCTIONS), None)
+        if place is not None:
+            return _towards_side(words[i + 2 + place : i + 6 + place])  # ("leaves the roundabout to the right")
     if _lemma_in(w, _TAKING):
+        way = next((k for k, x in enumerate(after) if x not in _BEFORE_TURN_NOUN), None)
+        if way and after[way] in _WAYS_OFF:
+            return _towards_side(words[i + 2 + way : i + 6 + way])  # ("took the second exit on the left")
+    if _lemma_in(w, _TAKING | _PERFORMING):
         for k, x in enumerate(after):
             if x in _DIRECTIONS:
                 nxt = after[k + 1] if k + 1 < len(after) else ""
                 if (k > 0 or nxt == "turn") and nxt not in ("lane", "side", "hand", "of", "kerb", "arm", "pavement"):
                     return x  # ("make a left", "take the next right", "making a right turn")
                 break
-            if x not in _BEFORE_TURN_NOUN:
+            if x not in _BEFORE_TURN_NOUN and not (k > 0 and _adjective(x)):
                 break
+    return None
+
+
+def _adjective(word: str) -> bool:
+    """Whether ``word`` may be an adjective ("unprotected", "slow", "wide"), as may stand before "left"
+    in "an unprotected left": then "left" is the turn, the noun of the phrase."""
+    return word not in _DIRECTIONS and "ADJ" in lemmas(word)
+
+
+def _place_after(words: list[str]) -> bool:
+    """Whether ``words`` (after "right at") name a place of the road ("the lights", "the next
+    junction"), not a road user or a person ("me", "the car")."""
+    head = words[1:] if words[:1] and words[0] in ("the", "a", "an") else words
+    return bool(head) and head[0] in _TURN_PLACES
+
+
+def _towards_side(words: list[str]) -> str | None:
+    """The side ``words`` say a way off leads to: right after it ("exits left"), or after "to the", "on
+    the", "towards the" ("leaves the roundabout to the right", "the exit on the left"); else None."""
+    k = 0
+    while k < len(words) and words[k] in ("to", "on", "towards", "toward", "the", "its", "our", "my", "your"):
+        k += 1
+    if k < len(words) and words[k] in _DIRECTIONS and (k == 0 or words[k - 1] in ("the", "its", "our", "my", "your")):
+        nxt = words[k + 1] if k + 1 < len(words) else ""
+        return words[k] if nxt not in ("lane", "side", "hand", "kerb", "pavement", "of") else None
     return None
 
 

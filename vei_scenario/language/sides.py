@@ -571,6 +571,16 @@ def arm_it_comes_from(junction: bool, came_from: bool, side: str | None, first: 
     return None if first in _ALONG_THE_EGOS_ROAD else f"junction_{side}"
 
 
+def off_the_kerb(vehicle: bool, came_from: bool, kerb: bool, side: str | None, near: str) -> str | None:
+    """Where a walker or rider said to come off or from a kerb, pavement or footway starts ("came off
+    the kerb on my left", "rode off the footpath at the exit"): at that roadside, at a junction or a
+    roundabout too. The arm said with it ("at the exit", "on the entry") is where it crosses, not a
+    road it comes out of; a side road said as its origin is read by the arm rules, not here."""
+    if vehicle or not (came_from and kerb):
+        return None
+    return f"roadside_{side if side in ('left', 'right') else near}"
+
+
 _TOWARDS = frozenset({"to", "towards", "toward"})
 
 
@@ -648,6 +658,41 @@ def heading_at(tokens: list[str], i: int) -> str | None:
     return None
 
 
+_COMPASS_ADJECTIVES = {"northern": "north", "eastern": "east", "southern": "south", "western": "west"}
+#: What a compass origin names: a junction's arm (or road), or the footway along the ego's road.
+_ORIGIN_ARMS = frozenset({"arm", "road", "entry", "approach", "side", "street", "junction"})
+_ORIGIN_KERBS = frozenset({"footway", "footpath", "pavement", "sidewalk", "kerb", "curb", "verge"})
+
+
+def compass_origin_at(tokens: list[str], i: int) -> tuple[str, str, int] | None:
+    """The compass point a road user is said to come from at token ``i`` ("from the east arm", "from
+    the northern footway", "from the west"), what it names ("arm" or "kerb") and where the phrase ends;
+    None if no such phrase starts there. Where it lies from the ego depends on the ego's heading
+    (:func:`relate_headings`)."""
+    if tokens[i : i + 2] != ["from", "the"]:
+        return None  # (not "from East Street": a street's name, no compass point)
+    k = i + 2
+    word = tokens[k] if k < len(tokens) else ""
+    point = _COMPASS_ADJECTIVES.get(word) or (word if word in _COMPASS else None)
+    if point is None:
+        return None
+    noun = tokens[k + 1] if k + 1 < len(tokens) else ""
+    if noun in _ORIGIN_KERBS:
+        return point, "kerb", k + 2
+    return point, "arm", k + 2 if noun in _ORIGIN_ARMS else k + 1
+
+
+def _from_origin(point: int, ego_heading: int, kind: str) -> str | None:
+    """Where a road user coming from compass ``point`` starts for an ego heading ``ego_heading``: the
+    arm or kerb on the ego's right when the point lies 90 degrees clockwise of its heading (north and
+    east: the right, whichever side traffic keeps to), on its left at 270; ahead, the far arm."""
+    bearing = (point - ego_heading) % 360
+    where = {90: "right", 270: "left"}.get(bearing)
+    if where is not None:
+        return f"{'roadside' if kind == 'kerb' else 'junction'}_{where}"
+    return "junction_opposite" if bearing == 0 and kind == "arm" else None
+
+
 def relate_headings(clauses: list) -> list:
     """Clauses (link, mentions) with each road user's compass heading made its start relative to the
     ego's heading: the opposite heading is oncoming, a crossing one comes from the junction arm on the
@@ -662,13 +707,20 @@ def relate_headings(clauses: list) -> list:
             last = m
         elif m.slot == "pronoun":
             last = None  # (whom a pronoun names is the reader's to say)
-        elif m.slot == "heading" and last is not None:
+        elif m.slot in ("heading", "origin") and last is not None:
             owner[id(m)] = last
     ego = next((m.value for m in flat if m.slot == "heading" and id(m) in owner and owner[id(m)].value == "ego"), None)
     out = []
     for link, mentions in clauses:
         kept = []
         for m in mentions:
+            if m.slot == "origin":
+                who = owner.get(id(m))
+                point, kind = m.value
+                where = _from_origin(_COMPASS[point], _COMPASS[str(ego)], kind) if ego and who is not None else None
+                if where is not None and who.value != "ego":
+                    kept.append(type(m)(**{**m.__dict__, "slot": "relation", "value": where}))
+                continue
             if m.slot != "heading":
                 kept.append(m)
                 continue

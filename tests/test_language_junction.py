@@ -1,0 +1,173 @@
+"""Junction and roundabout behaviours (:mod:`vei_scenario.language.junctions`): who crosses at a
+junction's mouth, who comes off a kerb, who has the way and who takes it. Each group is one
+construction, in wordings written for it (none taken from a corpus), with near misses that look alike
+and must not be read so."""
+
+from __future__ import annotations
+
+import pytest
+
+from vei_scenario.language.reader import read
+
+
+def _only(text: str):
+    (actor,) = read(text).actors
+    return actor, [b[0] for b in actor.behaviours]
+
+
+# a walker or rider moving off a kerb, pavement or footway goes across the road from that side, at a
+# junction too (where the arm said is where it crosses, not a road it comes out of)
+OFF_THE_KERB = [
+    ("At the crossroads a lad on a scooter rolled off the pavement on my right just as I pulled up.", "right"),
+    ("Going round the gyratory at 20 km/h, a jogger came off the footway on the left into the entry.", "left"),
+    ("A girl on a bike came flying off the kerb on our left at the slip road and I braked.", "left"),
+    ("As we left the roundabout a kid on a scooter rode straight off the curb on the right at the exit.", "right"),
+]
+
+
+@pytest.mark.parametrize("text, side", OFF_THE_KERB)
+def test_a_walker_or_rider_off_the_kerb_crosses_from_that_side(text, side):
+    actor, names = _only(text)
+    assert names[0] == "cross_in_front"
+    assert actor.relation == f"roadside_{side}"
+
+
+# the mouth of a junction crossed: "over the exit", "across the entry" is where it crosses
+ACROSS_AN_ARM = [
+    ("An e-scooter rider zipped over the exit in front of us from the pavement on the right.", "right"),
+    ("A pedestrian hurried across the entry from the left just as I reached the give-way line.", "left"),
+    ("A cyclist from the shared path on our left pedalled over the mouth of the side road.", "left"),
+]
+
+
+@pytest.mark.parametrize("text, side", ACROSS_AN_ARM)
+def test_a_walker_or_rider_across_a_junction_mouth_crosses(text, side):
+    actor, names = _only(text)
+    assert names == ["cross_in_front"]
+    assert actor.relation == f"roadside_{side}"
+
+
+# "across in front of" the ego or "across its path" after any verb of motion: a crossing
+ACROSS_THE_EGO = [
+    "At the crossroads a kid on a scooter shot straight across in front of me.",
+    "Going round the roundabout at 15 mph, a jogger nipped across my path.",
+    "At the lights a man on a bike whizzed across in front of us.",
+]
+
+
+@pytest.mark.parametrize("text", ACROSS_THE_EGO)
+def test_across_in_front_of_the_ego_is_a_crossing(text):
+    _, names = _only(text)
+    assert names == ["cross_in_front"]
+
+
+NOT_A_CROSSING = [
+    # along the pavement: beside the road, not across it
+    ("Going round the roundabout, a cyclist rode along the pavement on my left.", "along_road"),
+    # a vehicle pulled off the kerb (parked) moves into the lane
+    ("On the high street a taxi pulled off the kerb right in front of me.", "cut_in"),
+    # what already says a move of its own keeps it
+    ("A van overtook me on the bypass and then cut across in front of me.", "overtake"),
+]
+
+
+@pytest.mark.parametrize("text, first", NOT_A_CROSSING)
+def test_near_misses_are_not_read_as_a_crossing(text, first):
+    _, names = _only(text)
+    assert names[0] == first
+
+
+# a road user that already has the way (already on the roundabout, circulating, on the main road)
+# goes on through: it does not run a red light or force its way in, even "without slowing"
+HAS_THE_WAY = [
+    ("At the roundabout the ego waits at the line; a taxi already circulating comes past from the right.", "right"),
+    ("At the mini-roundabout a moped already on the roundabout came round from the left and I braked.", "left"),
+    ("At the T-junction the ego pulls out at 10 km/h; a cyclist on the main road comes along from the right.", "right"),
+    ("I edged onto the roundabout and a lorry circulating from my right carried on without slowing.", "right"),
+    ("At the roundabout a van already going round came from the left and drove on right in front of us.", "left"),
+]
+
+
+@pytest.mark.parametrize("text, side", HAS_THE_WAY)
+def test_a_road_user_that_has_the_way_goes_on(text, side):
+    actor, names = _only(text)
+    assert names == ["keep_going"]
+    assert actor.relation == f"junction_{side}"
+
+
+TAKES_THE_WAY = [
+    # entering without slowing: it takes the way it does not have
+    ("Going round the roundabout at 20 km/h, a van entered from the left without slowing.", "left"),
+    # "already" said of the ego, not of the one that comes in
+    ("I was already on the roundabout when a car came in from the right without stopping.", "right"),
+]
+
+
+@pytest.mark.parametrize("text, side", TAKES_THE_WAY)
+def test_a_road_user_entering_without_giving_way_takes_it(text, side):
+    actor, names = _only(text)
+    assert names[0] in ("run_red_light", "turn_into")
+    assert actor.relation == f"junction_{side}"
+
+
+# a road user from a side that enters the roundabout or junction comes out of that arm; "in front of
+# us" after it is where it goes, and not stopping or yielding makes it take the way
+ENTERS_FROM_A_SIDE = [
+    ("Ego circulating at 25 km/h; a hatchback from the right barges onto the roundabout in front of us.", "right"),
+    ("Going round at 20 mph, a pickup from my left drove into the roundabout in front of me without stopping.", "left"),
+    ("On the roundabout at 15 km/h. From the right comes a taxi fast, not stopping, it goes in front of us.", "right"),
+]
+
+
+@pytest.mark.parametrize("text, side", ENTERS_FROM_A_SIDE)
+def test_a_road_user_entering_from_a_side_comes_out_of_that_arm(text, side):
+    actor, names = _only(text)
+    assert names[0] in ("run_red_light", "turn_into")
+    assert actor.relation == f"junction_{side}"
+
+
+ENTERS_NOT_FROM_AN_ARM = [
+    # ahead of the ego, no side: it is in front, entering as the ego does
+    ("The van in front of me entered the roundabout and braked hard.", "ahead"),
+]
+
+
+@pytest.mark.parametrize("text, relation", ENTERS_NOT_FROM_AN_ARM)
+def test_entering_ahead_of_the_ego_is_not_an_arm(text, relation):
+    actor, _ = _only(text)
+    assert actor.relation == relation
+
+
+# a compass point a road user comes from, read against the ego's heading: the arm or the footway on
+# the ego's right when the point lies 90 degrees clockwise of its heading, on its left at 270
+FROM_A_COMPASS_POINT = [
+    (
+        "The ego is heading south at 30 km/h; a van from the west arm runs the red at the crossroads.",
+        "junction_right",
+    ),
+    (
+        "The ego travels westbound at 40 km/h and meets a cyclist coming from the south at a junction.",
+        "junction_left",
+    ),
+    ("The ego drives north at 25 mph; a pedestrian steps out from the western pavement.", "roadside_left"),
+]
+
+
+@pytest.mark.parametrize("text, relation", FROM_A_COMPASS_POINT)
+def test_a_compass_origin_is_read_against_the_ego_heading(text, relation):
+    actor, _ = _only(text)
+    assert actor.relation == relation
+
+
+NOT_A_COMPASS_ORIGIN = [
+    # a street's name is no compass point: the side said is where it comes from
+    ("Heading north at 20 mph, a van came out of a side road from East Street on my left.", "junction_left"),
+    # without the ego's heading a compass point says nothing of the side
+    ("At the crossroads a taxi from the east runs the red light in front of me.", "junction_left"),
+]
+
+
+@pytest.mark.parametrize("text, relation", NOT_A_COMPASS_ORIGIN)
+def test_near_misses_of_a_compass_origin(text, relation):
+    actor, _ = _only(text)
+    assert actor.relation == relation

@@ -1,0 +1,178 @@
+"""Crossings at junctions and roundabouts: a walker or rider who goes across the mouth of an arm, or
+across in front of the ego, crosses the ego's road, whatever verb of motion the writer chose.
+
+Why: at a junction the reader takes a side said of a road user with a plain verb ("came", "rode",
+"zipped over") as the arm it comes out of, which makes a rider on the footway run a red light that
+is not there. What makes it a crossing is the structure, not the verb: "over / across" + the mouth of
+an arm ("over the exit", "across the entry", "over the mouth of the side road"), or "across" + the ego's
+path ("across in front of me", "across my path"). Both rewrite the clause's plain verb of motion (or
+add the crossing where the verb is one the lexicon lacks: "shot straight across in front of me").
+Only walkers and riders are read so: a vehicle across the ego's path is read by the junction rules.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+#: Road users that cross a road on foot or by bike or scooter.
+_CROSSERS = frozenset(("pedestrian", "bicycle", "e-scooter"))
+#: Verbs that say only that a road user moves (the lexicon's plain going on, or a lane change read
+#: from "zip over", "swing across"): what it does is then said by the words after them.
+_PLAIN = frozenset(("keep_going", "change_lane", "along_road"))
+#: Words of crossing, and what may stand between them and the arm crossed.
+_ACROSS = frozenset(("across", "over"))
+_BEFORE_ARM = frozenset(("the", "a", "an", "its", "mouth", "of", "straight", "right", "just", "directly"))
+#: Adverbs between a verb and "across" ("shot straight across").
+_MANNER = frozenset(("straight", "right", "just", "directly", "quickly", "suddenly"))
+#: How the ego is named after "in front of" ("in front of me", "in front of the ego", "of our car").
+_EGO_OBJECTS = frozenset(("me", "us", "ego", "my", "our"))
+#: The ego's ways crossed ("across my path", "across our nose").
+_EGO_WAYS = frozenset(("path", "way", "lane", "nose", "bonnet", "front", "bow"))
+
+
+def _plain(m) -> bool:
+    return (m.slot == "behaviour" and m.value[0] in _PLAIN) or (m.slot == "ego_verb" and not m.value)
+
+
+def _subject(mentions: list, k: int):
+    """The road user the clause is about before mention ``k``: the last actor named before it, or None
+    when that is the ego or a pronoun (whose kind the reader settles later)."""
+    for x in reversed(mentions[:k]):
+        if x.slot in ("actor", "pronoun"):
+            return x if x.slot == "actor" and x.value != "ego" else None
+    return None
+
+
+def _crossed_arm(mentions: list, k: int, tokens: list[str]) -> bool:
+    """Whether the plain verb at ``k`` goes "over / across" the mouth of an arm named next."""
+    m = mentions[k]
+    nxt = mentions[k + 1] if k + 1 < len(mentions) else None
+    if nxt is None or nxt.slot != "arm":
+        return False
+    between = tokens[m.end : nxt.start]
+    said = m.words.split()[-1:] + between
+    return bool(_ACROSS & set(said)) and all(w in _BEFORE_ARM | _ACROSS for w in between)
+
+
+def _across_the_ego(tokens: list[str], j: int) -> bool:
+    """Whether "across" at ``j`` goes on to the ego: "across in front of me", "across my path"."""
+    after = tokens[j + 1 : j + 6]
+    if after[:3] == ["in", "front", "of"]:
+        rest = after[3:]
+        return bool(rest) and (rest[0] in _EGO_OBJECTS or rest[:2] == ["the", "ego"])
+    owner = after[1:] if after[:1] == ["the"] else after
+    return (
+        len(owner) > 1
+        and owner[0] in ("my", "our", "ego", "ego's")
+        and (owner[1] in _EGO_WAYS or (owner[1] == "'s" and len(owner) > 2 and owner[2] in _EGO_WAYS))
+    )
+
+
+#: What says a road user is already on the junction's circulating or major road: it has the way.
+_CIRCULATING = frozenset(("circulating", "circling"))
+_ON_THE_RING = frozenset(("roundabout", "ring", "circle", "gyratory", "mini-roundabout", "junction"))
+_MAJOR = frozenset(("main", "major", "priority"))
+_ROADS = frozenset(("road", "rd", "carriageway", "route"))
+#: Where the phrase that describes a road user ends: the next clause, or the next road user.
+_PHRASE_ENDS = frozenset((".", ";", "!", "?", "and", "but", "when", "while", "as", "then", "so"))
+
+
+def _has_the_way(words: list[str]) -> bool:
+    """Whether ``words`` (what follows a road user's noun, up to its verb) put it where it has the way:
+    "already on the roundabout", "already circulating", "circulating from the right", "on the main
+    road", "on major rd"."""
+    for k, w in enumerate(words):
+        if w in _CIRCULATING:
+            return True
+        if w == "already" and k + 1 < len(words) and words[k + 1] in ("on", "in", "round", "around", "going"):
+            rest = words[k + 2 : k + 4]
+            if words[k + 1] == "going" or _ON_THE_RING & set(rest):
+                return True
+        if w in ("on", "along") and _MAJOR & set(words[k + 1 : k + 3]) and _ROADS & set(words[k + 2 : k + 4]):
+            return True
+    return False
+
+
+def priority(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a road user said to be already on the roundabout, circulating, or on the main
+    road marked as having the way ("_has_way", "_priority") on the plain verb it goes on with: at a junction it goes
+    on through the ego's path as it may ("a cyclist already on the roundabout came round from the
+    right"), even "without slowing"; it does not run a red light or force its way in. Said of the ego
+    ("I was already on the roundabout when a car came in"), it says nothing of the other."""
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k, m in enumerate(mentions):
+            if m.slot != "actor" or m.value == "ego":
+                continue
+            verb = next((n for n in range(k + 1, len(mentions)) if mentions[n].slot in ("behaviour", "ego_verb")), None)
+            other = next((n for n in range(k + 1, len(mentions)) if mentions[n].slot in ("actor", "pronoun")), None)
+            v = mentions[verb] if verb is not None else None
+            if v is None or (other is not None and other < verb) or not _plain(v):
+                continue
+            if v.slot == "behaviour" and v.value[0] == "change_lane":
+                continue  # (a lane change on the ring is its own move)
+            end = mentions[verb].start
+            words = tokens[m.end : end]
+            if any(w in _PHRASE_ENDS for w in words) or not _has_the_way(words + tokens[end : end + 1]):
+                continue
+            cfg = v.value[1] if v.slot == "behaviour" else {}
+            kept[kept.index(v)] = replace(
+                v, slot="behaviour", value=("keep_going", {**cfg, "_has_way": 1.0, "_priority": 1.0})
+            )
+            places = mentions[k + 1 : verb]
+            if places and all(x.slot == "map" for x in places):
+                # ("a cyclist already on the roundabout coming ..."): the place is the scene's; said before
+                # the road user, its participle follows it and is its own
+                at = kept.index(m)
+                kept = [x for x in kept if all(x is not p for p in places)]
+                kept[at:at] = places
+        out.append((link, kept))
+    return out
+
+
+def crossings(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` (link, mentions) with a walker or rider's crossing read from its structure: a plain
+    verb of motion going over or across the mouth of an arm, or a road user going "across" in front
+    of the ego or across its path (its plain verb made the crossing, or the crossing added where the
+    verb is not one the reader knows). A clause that says another move already keeps it."""
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k, m in enumerate(mentions):
+            if _plain(m) and _crossed_arm(mentions, k, tokens):
+                subject = _subject(mentions, k)
+                if subject is not None and subject.value in _CROSSERS:
+                    kept[kept.index(m)] = replace(m, slot="behaviour", value=("cross_in_front", {}))
+        kept = _across_in_front(kept, tokens)
+        out.append((link, kept))
+    return out
+
+
+def _across_in_front(mentions: list, tokens: list[str]) -> list:
+    if not mentions:
+        return mentions
+    first, last = mentions[0].start, max(x.end for x in mentions)
+    for j in range(first, min(last, len(tokens))):
+        if tokens[j] != "across" or not _across_the_ego(tokens, j):
+            continue
+        k = next((n for n, x in enumerate(mentions) if x.start >= j), len(mentions))
+        if any(x.start <= j < x.end for x in mentions):
+            continue  # ("cut across in front of me": a phrase the lexicon reads already)
+        subject = _subject(mentions, k)
+        if subject is None or subject.value not in _CROSSERS:
+            continue
+        since = [x for x in mentions[mentions.index(subject) + 1 : k]]
+        if any(x.slot in ("behaviour", "turn") and not _plain(x) for x in since):
+            continue  # (it already does something: "overtook me and cut across in front")
+        moves = [x for x in since if _plain(x)]
+        manner = [x for x in since if x.slot == "ego_verb" and x.value == "straight" and x.end == j]
+        crossing = replace(
+            moves[-1] if moves else subject, slot="behaviour", value=("cross_in_front", {}), words="across",
+            start=j, end=j + 1, prev=tokens[j - 1] if j else "", next_=tokens[j + 1] if j + 1 < len(tokens) else "",
+            det="", owners=(),
+        )  # fmt: skip
+        gone = set(map(id, moves + manner))
+        mentions = [x for x in mentions[:k] if id(x) not in gone] + [crossing] + mentions[k:]
+        break
+    return mentions
