@@ -1801,7 +1801,9 @@ def _read(text: str) -> Reading:
         said_by_noun = L.BEHAVIOUR_NOUNS.get(a.word)
         if said_by_noun and all(b[0] in ("keep_going", "cross_in_front") for b in a.behaviours):
             a.behaviours = [(said_by_noun, {}, None, "sequence")]  # ("a red-light runner from the left")
-        if not a.behaviours and not a.stationary and a.unknown:  # only a verb the reader has no word for: it goes on
+        if (
+            not a.behaviours and not a.stationary and not a.wrong_way and a.unknown
+        ):  # only a verb the reader has no word for: it goes on
             a.behaviours.append((motion.default_behaviour(a.kind), {}, None, "sequence"))
     for a in actors:  # "turns out of the junction": it comes from a side road
         for k, (_name, cfg, c, lk) in enumerate(a.behaviours):
