@@ -335,9 +335,10 @@ _DRIVERS_ACTS = frozenset(
 
 
 def drives(actor) -> bool:
-    """Whether ``actor`` (the reader's) is said to do what only a driver does: a speed no walker reaches
-    is then its own ("a madman overtook me doing 70 mph"), not the ego's, whatever its noun."""
-    return any(b[0] in _DRIVERS_ACTS for b in actor.behaviours)
+    """Whether ``actor`` (the reader's), named by a person noun (read as a walker), is said to do what
+    only a driver does: a speed no walker reaches is then its own ("a maniac overtook me doing 70 mph"),
+    not the ego's. (A rider stays a rider: "a cyclist drifts in, with the ego at 60 km/h".)"""
+    return actor.kind == "pedestrian" and any(b[0] in _DRIVERS_ACTS for b in actor.behaviours)
 
 
 #: Prepositions whose object is scenery a road user comes out of or past, not one that moves itself.
