@@ -620,3 +620,127 @@ def test_bare_subjects_and_modals_of_requirement(text, intent):
 )
 def test_indefinite_pronoun_subjects_are_people(text, intent):
     assert _intent(text) == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("I still can't work out how I stopped in time for the jogger.", "near_miss"),
+        ("No idea how I missed the scooter, honestly.", "near_miss"),
+        ("I do not know why she did not hit the van.", "near_miss"),
+        # near misses of the construction: the negation is the clause's own
+        ("The moped did not hit the kerb-side jogger.", "near_miss"),
+        ("I did not see the cyclist and hit him.", "collision"),
+    ],
+)
+def test_a_negation_stops_at_a_wh_complement(text, intent):
+    """ "don't know how I stopped in time": the negation is of knowing, not of what is known."""
+    assert _intent(text) == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("Rather than hitting the scooter, the bus driver swerved onto the verge.", "near_miss"),
+        ("I waited behind the cyclist instead of squeezing through.", "safe"),
+        ("Instead of nipping past the jogger, I held back until the road was clear.", "safe"),
+        # near misses: what is done, with the alternative set aside after it
+        ("Instead of waiting, the van squeezed past me.", "near_miss"),
+        ("The cyclist hit my door rather than the kerb.", "collision"),
+    ],
+)
+def test_what_is_done_instead_of_is_not_done(text, intent):
+    """ "instead of squeezing past", "rather than hitting him": the alternative set aside did not happen."""
+    assert _intent(text) == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("A moped cut across the tram tracks in front of us, nobody hurt.", "near_miss"),
+        ("The lorry cut across the roundabout in front of me. No one injured.", "near_miss"),
+        ("Van and cyclist at the lights, no-one hurt.", "near_miss"),
+        # near misses: harm stated, or a verb with its object
+        ("Two people hurt after the bus hit a car.", "collision"),
+    ],
+)
+def test_nobody_hurt_without_its_auxiliary_denies_harm(text, intent):
+    assert _intent(text) == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("We both pulled up with a metre or so between us.", "near_miss"),
+        ("The cyclist and I ended up 2 metres apart, both stopped.", "near_miss"),
+        ("The bus stopped with a metre in it.", "near_miss"),
+        # near misses: spacing of a formation, or a margin that is wide
+        ("Two scooters ride 2 metres apart along the kerb; the ego overtakes them.", None),
+        ("The buses stopped 20 metres apart.", None),
+    ],
+)
+def test_a_small_distance_between_the_two_after_a_stop_is_a_near_miss(text, intent):
+    assert _intent(text) == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("The kid darts out from behind a parked car and I pull up in good time.", "safe"),
+        ("A jogger steps off the kerb; the ego brakes and stops in plenty of time.", "safe"),
+        ("The cyclist swerves into my lane but I stop in time with plenty of room.", "safe"),
+        ("A pram rolls off the kerb and I stop in time with a comfortable margin.", "safe"),
+        # near misses: in time and no more
+        ("I only just stopped in time.", "near_miss"),
+        ("A child ran out and I stopped in time.", "near_miss"),
+    ],
+)
+def test_a_stop_in_good_time_or_with_a_wide_margin_is_safe(text, intent):
+    assert _intent(text) == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("At the zebra the ego gives priority to the scooter rider.", "safe"),
+        ("I gave the cyclist priority and she crossed.", "safe"),
+        ("The ego vehicle gives precedence to the tram.", "safe"),
+        # near misses: priority denied, or something else given
+        ("The van does not give priority and cuts across the ego.", None),
+        ("The ego gives a wave to the cyclist.", None),
+    ],
+)
+def test_giving_priority_is_giving_way(text, intent):
+    assert _intent(text) == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("A dog bolted across the lane in front of me, lucky I'd slowed down.", "near_miss"),
+        ("Thankfully I was going slowly when the kid on the scooter shot out of the alley.", "near_miss"),
+        ("Luckily the boy on the bike looked up just as I came round the corner.", "near_miss"),
+        # near misses: luck with a wide pass, a lucky thing, or luck over a contact
+        ("Luckily there was plenty of room and I passed the horse wide.", "safe"),
+        ("A cyclist with a lucky charm on his bars crosses in front of the ego.", None),
+        ("Fortunately the van clipped my mirror.", "collision"),
+    ],
+)
+def test_relief_at_luck_is_a_close_call(text, intent):
+    """ "so lucky I was only doing 20", "thankfully I'd slowed": relief says it was close."""
+    assert _intent(text) == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("The taxi and the moped came together at the lights.", "collision"),
+        ("A tram and a cyclist came together on the crossing; rider down.", "collision"),
+        ("They came together right at the mouth of the junction.", "collision"),
+        # near misses: hedged or denied
+        ("The van and the bus nearly came together at the exit.", "near_miss"),
+        ("The van and the scooter did not come together, but it was close.", "near_miss"),
+    ],
+)
+def test_two_road_users_coming_together_is_a_collision(text, intent):
+    assert _intent(text) == intent

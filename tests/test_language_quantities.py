@@ -504,3 +504,64 @@ def test_a_number_after_scenery_in_a_place_phrase_is_the_movers(text, kind, spee
 def test_a_number_after_a_road_user_outside_a_place_phrase_stays_its_own(text, kind, speed_mps):
     spec = next(s for s in read(text).actors if s.kind == kind)
     assert spec.speed_mps == pytest.approx(speed_mps)
+
+
+@pytest.mark.parametrize(
+    "text, speed",
+    [
+        ("The ego and the lead van will both drive at 60 km/h along the motorway.", 60),
+        ("Ego and target should both travel at 40 km/h in the same lane; the target brakes.", 40),
+        ("The test car and the lorry both cruise at 80 km/h, then the lorry slows.", 80),
+    ],
+    ids=["will-drive", "should-travel", "cruise"],
+)
+def test_both_with_a_modal_or_a_base_verb_of_going_gives_the_speed_to_both(text, speed):
+    """ "X and Y shall both travel at N": a modal and the verb's base form stand where "are doing" does."""
+    ego_mps, others = _speeds(text)
+    assert ego_mps == pytest.approx(speed * KPH) and others == [pytest.approx(speed * KPH)]
+
+
+@pytest.mark.parametrize(
+    "text, start, to",
+    [
+        ("The ego and the lead car both cruise at 80 km/h; the lead car then brakes at 3 m/s² to 40 km/h.", 80, 40),
+        ("Ego and van both drive at 70 km/h, then the van decelerates at 2 m/s² down to 30 km/h.", 70, 30),
+        ("A lorry ahead at 60 km/h slows at 1.5 m/s² to 20 km/h.", 60, 20),
+    ],
+    ids=["brakes-at-rate-to", "decelerates-down-to", "slows-at-rate"],
+)
+def test_a_speed_after_a_rate_and_to_is_the_speed_changed_to(text, start, to):
+    """ "decelerates at 2 m/s² to 20 km/h": the rate between the verb and "to" leaves the speed the one
+    it slows to, not the speed it goes at."""
+    r = read(text)
+    (a,) = r.actors
+    assert a.speed_mps == pytest.approx(start * KPH)
+    (delta,) = [b[1]["speed_delta_mps"] for b in a.behaviours if b[0] == "change_speed"]
+    assert delta == pytest.approx((to - start) * KPH)
+
+
+@pytest.mark.parametrize(
+    "text, other, ego",
+    [
+        ("A maniac behind me overtook on the bend doing at least 70 mph, and I was doing 50 mph.", 70, 50),
+        ("Some idiot overtook us on the bypass doing 90 mph while we were doing 60 mph.", 90, 60),
+        ("An idiot cut in front of me doing about 80 mph; I was at 55 mph.", 80, 55),
+    ],
+    ids=["overtook-doing", "while-we", "cut-in"],
+)
+def test_a_person_who_drives_keeps_a_drivers_speed(text, other, ego):
+    """A person noun that overtakes or cuts in is a driver: a speed no walker reaches is still its own,
+    not the ego's."""
+    ego_mps, others = _speeds(text)
+    assert ego_mps == pytest.approx(ego * MPH) and others == [pytest.approx(other * MPH)]
+
+
+@pytest.mark.parametrize(
+    "text, ego",
+    [
+        ("A man ran out in front of the car at 50 km/h.", 50),
+        ("A jogger crossed in front of us at 40 km/h.", 40),
+    ],
+)
+def test_a_speed_no_walker_reaches_is_still_the_egos(text, ego):
+    assert _speeds(text)[0] == pytest.approx(ego * KPH)

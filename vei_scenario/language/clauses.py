@@ -19,7 +19,7 @@ def split(tokens: Iterable[str], breaks: frozenset[str]) -> list[tuple[list[str]
     current: list[str] = []
     first = True
     for tok in tokens:
-        if tok in breaks:
+        if tok in breaks and not (tok == "so" and current[-1:] == ["or"]):  # ("a metre or so": no clause)
             if current:
                 out.append((current, first))
             first = tok in SENTENCE_END or (first and not current)

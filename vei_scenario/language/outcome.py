@@ -94,7 +94,10 @@ _SMALL_UNITS = frozenset(("inch", "inches", "cm", "centimetre", "centimetres", "
                           "width", "cigarette", "fag"))  # fmt: skip
 _LENGTH_UNITS = frozenset(("m", "metre", "metres", "meter", "meters", "foot", "feet", "yard", "yards"))
 #: Quantity words of a wide margin ("plenty of room", "loads of space").
-_WIDE = frozenset(("plenty", "lots", "loads", "heaps", "tons", "ample", "enough", "room", "space", "wide", "generous"))
+_WIDE = frozenset(
+    ("plenty", "lots", "loads", "heaps", "tons", "ample", "enough", "room", "space", "wide", "generous", "comfortable",
+     "healthy")
+)  # fmt: skip
 #: Nouns of trouble that, denied, state a safe pass ("no issues", "without incident", "no danger").
 _TROUBLE = frozenset(
     ("issue", "issues", "problem", "problems", "conflict", "conflicts", "danger", "drama", "incident", "incidents",
@@ -191,12 +194,29 @@ def _scoped(words: list[str], i: int, closed: frozenset[str], reach: int = 4) ->
 _FAILING = frozenset(("unable", "fail", "fails", "failed", "failing"))
 
 
+#: Words that open a clause embedded as the object of a verb of knowing or saying ("don't know how I
+#: stopped", "no idea why he missed us"): a negation before one is of the knowing, not of what is known.
+_WH_COMPLEMENT = frozenset(("how", "why", "whether", "what"))
+#: Two-word markers of an alternative set aside ("instead of squeezing past", "rather than hitting him").
+_FORGONE = (["instead", "of"], ["rather", "than"])
+
+
+def _forgone(words: list[str], i: int) -> bool:
+    """Whether the word at ``i`` is the alternative a clause sets aside ("waited instead of squeezing
+    past", "rather than hitting the scooter, he swerved"): what follows the marker was not done."""
+    return any(words[k : k + 2] in _FORGONE for k in range(max(0, i - 3), i - 1))
+
+
 def _denied_before(words: list[str], i: int) -> bool:
     """Whether what stands at ``i`` is denied in its clause: an odd count of negators and denying
     verbs before it ("no contact", "did not make contact", "managed to avoid hitting"); two cancel
-    ("was unable to avoid the collision", "could not avoid him": it happened)."""
-    count = sum(1 for w in words[:i] if w in _NEGATORS or w in _FAILING)
-    count += sum(1 for w in words[max(0, i - 4) : i] if _lemmas(w) & _DENYING_VERBS)  # (its object: "avoid a crash")
+    ("was unable to avoid the collision", "could not avoid him": it happened). A negation's scope ends
+    at a wh-complement ("I don't know how I stopped in time": the stop happened), and an alternative
+    set aside counts as denied ("instead of hitting him")."""
+    start = max((k + 1 for k in range(i) if words[k] in _WH_COMPLEMENT), default=0)
+    count = sum(1 for w in words[start:i] if w in _NEGATORS or w in _FAILING)
+    count += sum(1 for w in words[max(start, i - 4) : i] if _lemmas(w) & _DENYING_VERBS)  # ("avoid a crash")
+    count += _forgone(words, i)
     return count % 2 == 1
 
 
@@ -272,6 +292,8 @@ def _is_contact(words: list[str], i: int) -> bool:
         return _meets_road_user(words[i + 2 : i + 5]) and not (nxt == "down" and lem & {"run"} and "road" in words)
     if lem & {"make", "come"} and nxt == "contact":
         return True
+    if lem & {"come"} and nxt == "together" and _is_verb(w):
+        return True  # ("the taxi and the moped came together": two road users meeting, a collision)
     if (
         lem & {"meet"}
         and _is_verb(w)
@@ -520,7 +542,8 @@ def _near_noun(words: list[str], i: int) -> bool:
         nxt.startswith("mis") or nxt in _CONTACT_NOUNS or nxt.rstrip("s") in _CONTACT_NOUNS or nxt == "thing"
     ):
         return True
-    return (w in ("close", "narrow") and nxt in ("call", "shave", "escape", "one", "thing")) or w == "near-miss"
+    narrow = w in ("close", "narrow", "lucky") and nxt in ("call", "shave", "escape", "one", "thing")
+    return narrow or w == "near-miss"
 
 
 def _margin(words: list[str], i: int) -> str | None:
@@ -538,12 +561,13 @@ def _margin(words: list[str], i: int) -> str | None:
         return SAFE  # ("plenty of room", "an ample margin", "enough distance")
     if w == "clear" and i > 0 and words[i - 1] in ("well", "safely", "comfortably"):
         return SAFE
-    if (
-        w in ("time",)
-        and i > 0
-        and words[i - 1] == "in"
-        and any(_lemmas(x) & {"stop", "brake", "halt"} or x == "up" for x in words[max(0, i - 5) : i])
-    ):
+    stopping = any(_lemmas(x) & {"stop", "brake", "halt"} or x == "up" for x in words[max(0, i - 6) : i])
+    if w == "time" and stopping and words[max(0, i - 2) : i] in (["in", "good"], ["in", "ample"], ["plenty", "of"]):
+        return SAFE  # ("pulled up in good time", "stops in plenty of time": time to spare)
+    if w == "time" and i > 0 and words[i - 1] == "in" and stopping:
+        after = words[i + 1 : i + 6]
+        if after[:1] == ["with"] and set(after) & (_WIDE - {"enough"}):
+            return SAFE  # ("stopped in time with plenty of room", "... with a comfortable margin")
         return NEAR_MISS  # ("stopped just in time")
     if w in ("moment", "second", "minute", "instant") and i > 1 and words[i - 1] == "last":
         return NEAR_MISS  # ("swerved back at the last second")
@@ -563,10 +587,14 @@ def _margin(words: list[str], i: int) -> str | None:
         if words[k] == "or" and k + 2 < len(words):
             k += 2  # ("a metre or two from my bumper")
         front = _relative_to_other(words, k)  # ("2 m in front of us", "a metre ahead")
-        if front or (
-            words[k] in ("from", "off", "short", "before")
-            and k + 1 < len(words)
-            and (words[k + 1] in _POSSESSIVES | _PERSON_OBJECTS | {"the", "of"})
+        if (
+            front
+            or (
+                words[k] in ("from", "off", "short", "before")
+                and k + 1 < len(words)
+                and (words[k + 1] in _POSSESSIVES | _PERSON_OBJECTS | {"the", "of"})
+            )
+            or _apart_after_a_stop(words, i, k)
         ):
             value = _number(words[i - 1]) if i > 0 else None
             if value is None and i > 0 and words[i - 1] in _MERE and words[i].endswith(("s", "feet")):
@@ -596,6 +624,15 @@ def _margin(words: list[str], i: int) -> str | None:
         if any(_lemmas(x) & {"stop", "miss", "pass", "clear", "halt"} for x in before) or "by" in before:
             return NEAR_MISS
     return None
+
+
+def _apart_after_a_stop(words: list[str], i: int, k: int) -> bool:
+    """A distance at ``i`` said as what was left between the two once they stopped ("we both pulled up
+    with a metre between us", "ended up 2 metres apart", "stopped with a metre in it"), ``k`` the word
+    after its unit; not the spacing of road users riding along ("two scooters 2 m apart")."""
+    between = words[k] in ("apart", "between") or words[k : k + 2] == ["in", "it"]
+    stopped = any(_lemmas(x) & {"stop", "halt", "pull", "end", "finish"} for x in words[max(0, i - 8) : i])
+    return between and stopped
 
 
 #: Words that make a bare plural unit small ("only feet from", "mere inches").
@@ -733,8 +770,8 @@ def _ego_acts(words: list[str], i: int) -> str | None:
         return "brake" if lem & {"brake"} else "yield" if lem & {"stop"} else None
     if lem & _YIELD:
         after = words[i + 1 : i + 4]
-        if lem & {"give"} and "way" not in after:
-            return None
+        if lem & {"give"} and not {"way", "priority", "precedence"} & set(words[i + 1 : i + 5]):
+            return None  # (giving way, priority or precedence: "gives priority to the rider")
         if lem & {"let"} and not set(after) & _LET_GO and not (_lets_do(words, i) or _does_next(after)):
             return None  # (letting someone go, or do anything: "lets the ego complete the turn")
         if lem & {"hang", "hold"} and "back" not in after:
@@ -747,7 +784,7 @@ def _ego_acts(words: list[str], i: int) -> str | None:
 class Cue:
     """One statement of the outcome found in a clause: what it says (``contact``, ``hedged``,
     ``denied``, ``required``: a contact denied as what the test requires, ``near``, ``close``,
-    ``safe``, ``evade``, ``brake``, ``yield``) and the words it was
+    ``safe``, ``lucky``: relief at luck, ``evade``, ``brake``, ``yield``) and the words it was
     read from, so a reading can say why it chose its intent."""
 
     kind: str
@@ -808,6 +845,27 @@ def _person_subject(words: list[str], i: int) -> bool:
     )
 
 
+def _nobody_before(words: list[str], i: int) -> bool:
+    """Whether the harm participle at ``i`` has a negative pronoun right before it ("nobody hurt",
+    "no one injured", "no-one hurt"): no one was harmed, the auxiliary left out as reports do."""
+    return i > 0 and (words[i - 1] in ("nobody", "no-one", "noone") or words[i - 2 : i] == ["no", "one"])
+
+
+#: Words of relief at luck ("luckily", "so lucky I was only doing 20"): said of an event, a close call.
+_RELIEF = frozenset(("luckily", "thankfully", "fortunately"))
+
+
+def _relief(words: list[str], i: int) -> bool:
+    """Relief said at ``i``: an adverb of luck, or "lucky" as a verdict ("so lucky I ...", "lucky
+    that ...", "we were lucky"), not before its noun ("a lucky charm")."""
+    if words[i] in _RELIEF:
+        return True
+    if words[i] != "lucky":
+        return False
+    nxt = words[i + 1] if i + 1 < len(words) else ""
+    return not nxt or nxt in ("i", "we", "that", "it", "he", "she", "they") or "NOUN" not in _pos(nxt)
+
+
 def outcome_cues(said: str) -> list[Cue]:
     """The statements of the outcome in ``said`` (the reader's normalised, lowercased tokens joined by
     spaces, contractions as "did not"), in text order."""
@@ -859,6 +917,9 @@ def outcome_cues(said: str) -> list[Cue]:
             if _negated_by_prefix(w):
                 add("safe")  # ("a complete non-event", "a non-issue")
                 continue
+            if _lemmas(w) & _HARMED and not w.endswith("ing") and _nobody_before(words, i):
+                add("denied")  # ("..., nobody hurt", "No one injured."): a report's verdict without its verb
+                continue
             if (
                 _lemmas(w) & _HARMED
                 and not w.endswith("ing")
@@ -873,7 +934,16 @@ def outcome_cues(said: str) -> list[Cue]:
             if w in _UNHURT and _person_subject(words, i):
                 add("denied")  # ("the kid was fine": unhurt, however close it was)
                 continue
-            if _lemmas(w) & {"squeeze"} and _is_verb(w) and words[i + 1 : i + 2] and words[i + 1] in _SQUEEZE_BY:
+            if _relief(words, i):
+                add("lucky")
+                continue
+            if (
+                _lemmas(w) & {"squeeze"}
+                and _is_verb(w)
+                and words[i + 1 : i + 2]
+                and words[i + 1] in _SQUEEZE_BY
+                and not _forgone(words, i)
+            ):
                 add("close")  # ("squeezed past", "squeezed through between us": a pass with no room)
                 continue
             if words == ["just"] and ends_sentence and n > 0:
@@ -975,6 +1045,8 @@ def decide(cues: list[Cue]) -> str | None:
         return NEAR_MISS
     if "safe" in kinds:
         return SAFE
+    if "lucky" in kinds:
+        return NEAR_MISS  # (relief at luck, and no wide margin said: it was close)
     if "required" in kinds and not kinds & {"evade", "brake", "denied"}:
         return SAFE  # (no contact, as the test requires, and nothing forced)
     if "denied" in kinds or "required" in kinds:

@@ -59,8 +59,10 @@ _STOPS = frozenset({".", ";", "!", "?"})
 #: Verbs of going whose subject a speed after "at" is said of ("the ego drives at 40 km/h").
 _MOTION = frozenset(
     "doing going driving travelling traveling moving riding drives travels moves rides goes drove travelled "
-    "traveled moved rode went".split()
-)
+    "traveled moved rode went cruising cruises cruised drive travel move ride go cruise".split()
+)  # (the base forms after a modal or a plural subject: "shall both travel at 50 km/h")
+#: Modals between a coordinated subject and "both" ("the ego and the van will both drive at 60").
+_MODALS = frozenset({"will", "shall", "should", "must", "would", "can", "could", "may", "might"})
 _AUXILIARIES = frozenset({"is", "was", "are", "were", "am", "be", "been", "'s", "still", "also", "then", "just"})
 #: Words after which a noun opens a clause, as its subject ("; the bus at 15 km/h", "and the van at 60").
 _CLAUSE_OPENERS = frozenset({",", ";", ":", ".", "and", "but", "while", "whereas", "when", "then", "as"})
@@ -317,13 +319,26 @@ def owners(
         return (owner,) if owner is not None else ()
     if tokens[j] == "both":  # "the ego and a lead truck both at 70 km/h"
         k = j - 1
-        while k >= 0 and tokens[k] in ("are", "were", "is", "was"):
+        while k >= 0 and (tokens[k] in ("are", "were", "is", "was") or tokens[k] in _MODALS):
             k -= 1
         second = _mention_near(k, mention_ending_at)  # (past a word after it: "the van ahead")
         joint = next((a for a in range(second - 1, second - 4, -1) if a >= 1 and tokens[a] in ("and", "&")), None)
         first = None if joint is None else _mention_near(joint - 1, mention_ending_at)
         return (first, second) if first is not None and first >= 0 else ()
     return _key_of_line(tokens, i, mention_ending_at)
+
+
+#: What only someone at the wheel does: a person said to do one of these ("some lunatic overtook us") is a driver.
+_DRIVERS_ACTS = frozenset(
+    {"overtake", "cut_in", "run_red_light", "turn_across", "wrong_way", "forced_turn", "follow_vehicle", "change_lane"}
+)
+
+
+def drives(actor) -> bool:
+    """Whether ``actor`` (the reader's), named by a person noun (read as a walker), is said to do what
+    only a driver does: a speed no walker reaches is then its own ("a maniac overtook me doing 70 mph"),
+    not the ego's. (A rider stays a rider: "a cyclist drifts in, with the ego at 60 km/h".)"""
+    return actor.kind == "pedestrian" and any(b[0] in _DRIVERS_ACTS for b in actor.behaviours)
 
 
 #: Prepositions whose object is scenery a road user comes out of or past, not one that moves itself.

@@ -1666,16 +1666,17 @@ def _read(text: str) -> Reading:
                     who = clause_subject  # "..., and then overtakes it at 25 km/h": the one who overtakes
                 if who is None and m.slot in ("returns", "wrong_way") and isinstance(subject, _Actor):
                     who = subject  # "..., then cuts back": what it does, said without naming it again
+                change = mentions[k - 2] if prev is not None and prev.slot == "accel" and k >= 2 else prev
                 if (
                     m.slot == "speed"
                     and m.prev == "to"
-                    and prev is not None
-                    and prev.slot == "behaviour"
-                    and prev.value[0] in ("sudden_stop", "change_speed")
+                    and change is not None
+                    and change.slot == "behaviour"
+                    and change.value[0] in ("sudden_stop", "change_speed")
                     and isinstance(clause_subject, _Actor)
                     and clause_subject.behaviours
                     and clause_subject.speed_mps is not None
-                ):  # "the lorry at 56 mph ... brakes to 30 mph": the speed it slows to, not a stop
+                ):  # "the lorry at 56 mph ... brakes (at 3 m/s²) to 30 mph": the speed it slows to, not a stop
                     a = clause_subject
                     name, cfg, crit, lk = a.behaviours[-1]
                     a.behaviours[-1] = ("change_speed", {k2: v for k2, v in cfg.items() if k2 == "_words"}, crit, lk)
@@ -1687,6 +1688,7 @@ def _read(text: str) -> Reading:
                     prev = m
                     continue
                 too_fast = m.slot == "speed" and isinstance(who, _Actor) and m.value > FASTEST_MPS.get(who.kind, 1e9)
+                too_fast = too_fast and not Q.drives(who)  # ("some lunatic overtook doing 70": a driver)
                 ego_right_before = (
                     prev is not None and prev.slot == "actor" and prev.value == "ego" and prev.prev == "by"
                 )
