@@ -58,9 +58,10 @@ def test_a_speed_after_a_make_stays_a_speed():
         ("A kid on a kickboard comes off the pavement on the left and crosses in front of us.", "e-scooter"),
         ("A cow wanders across the road from the left in front of us; we were at 60 km/h.", "pedestrian"),
         ("A sheep runs across the road from the right; ego 50 km/h.", "pedestrian"),
+        ("A four-wheeler in the left lane cuts in ahead of us; ego at 80 km/h.", "car"),
     ],
     ids=["bakkie", "kombi", "matatu", "minibus", "jeepney", "tipper", "curtainsider", "box-truck", "boda-boda",
-         "okada", "kickboard", "cow", "sheep"],
+         "okada", "kickboard", "cow", "sheep", "four-wheeler"],
 )  # fmt: skip
 def test_vehicle_words_of_other_englishes_and_trades(text, kind):
     assert _kinds(text) == [kind]

@@ -236,6 +236,7 @@ CAR_NOUNS = (
     "sedan",
     "saloon",
     "hatchback",
+    "four-wheeler",  # (a car, as a trucker or an Indian English speaker says)
     "suv",
     "estate",
     "coupe",
