@@ -587,3 +587,51 @@ def test_place_after_degree_needs_a_degree_word_and_a_place():
     assert place_after_degree(words, 2, ("just", "in", "time"), _relation_length) is None
     words = "a car in the right lane".split()  # no degree word where the phrase starts
     assert place_after_degree(words, 4, ("right", "lane"), _relation_length) is None
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # something that happened, told in British road words with metric speeds: a keep-left country
+        (
+            "The rider said she was doing 30 km/h along Station Parade when a boy darted out from between two "
+            "parked vans on the nearside.",
+            "roadside_left",
+        ),
+        (
+            "Our minibus was travelling at 40 km/h when a woman stepped off the kerb and walked into our path.",
+            "roadside_left",
+        ),
+        (
+            "The driver stated that she was travelling at 25 km/h when a girl ran out from behind a parked lorry on "
+            "the nearside.",
+            "roadside_left",
+        ),
+        # no unit at all: the same British words in a told event
+        ("A jogger ran out from the nearside verge and the taxi driver braked hard.", "roadside_left"),
+    ],
+)
+def test_british_road_words_in_a_told_event_keep_left(text, expected):
+    assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # near misses: a test line in the present tense keeps Euro NCAP's convention (the nearside is the right)
+        ("Ego at 40 km/h; a child runs out from behind a parked van on the nearside.", "roadside_right"),
+        ("An adult walks out from the nearside kerb at 5 km/h while the VUT approaches at 40 km/h.", "roadside_right"),
+        # a told event with no British road word keeps the default
+        ("I was doing 40 km/h when a boy ran out from the sidewalk and crossed in front of me.", "roadside_right"),
+    ],
+)
+def test_a_test_line_or_american_words_keep_right(text, expected):
+    assert relation(text) == expected
+
+
+def test_told_in_the_past_counts_finite_verbs():
+    from vei_scenario.language.sides import told_in_the_past
+
+    assert told_in_the_past("she said a boy darted out and she braked".split())
+    assert not told_in_the_past("a truck parked on the nearside hides a child who steps out".split())
+    assert not told_in_the_past("a child runs out from behind two parked vans".split())

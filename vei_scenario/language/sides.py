@@ -11,8 +11,10 @@ fixed phrases missed most of the combinations; this reads the few closed word cl
 Conventions:
 
 - *nearside* is the kerb side, *offside* the centre-line side. A writer who gives speeds in miles per
-  hour drives on the left (UK), so there the nearside is the left; elsewhere the right (the project's
-  own convention, and Euro NCAP's, whose codes are rewritten before this reads them).
+  hour drives on the left (UK), so there the nearside is the left; so does one who tells something that
+  happened in British road words ("kerb", "nearside", "lorry"), whatever the unit (Ireland, Australia,
+  India give km/h); elsewhere the right (the project's own convention, and Euro NCAP's, whose test
+  lines say "nearside" in the present tense, and whose codes are rewritten before this reads them).
 - on a straight road the *inside* lane is the nearside one, the *outside* lane the offside one; on a
   roundabout *inner*/*inside* is towards the island, which is on the offside.
 - a side word restated right after ("the nearside (left) footway") wins: the writer said it plainly.
@@ -24,6 +26,8 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass, replace
+
+from lemminflect import getInflection
 
 from vei_scenario.language.lemmas import lemmas
 
@@ -152,7 +156,9 @@ class Said:
 #: Words of the road only writers who drive on the left use (British), and only writers who drive on
 #: the right and give miles per hour use (American): they say which side a writer's "inside lane" or
 #: "nearside" is on, with or without a unit.
-_LEFT_HAND_WORDS = frozenset({"lorry", "lorries", "carriageway", "kerb", "kerbs", "kerbside", "hgv", "hgvs"})
+_LEFT_HAND_WORDS = frozenset(
+    {"lorry", "lorries", "carriageway", "kerb", "kerbs", "kerbside", "hgv", "hgvs", "nearside", "offside"}
+)
 _RIGHT_HAND_WORDS = frozenset(
     {"freeway", "interstate", "sidewalk", "sidewalks", "curb", "curbs", "crosswalk", "stoplight", "semi"}
 )
@@ -232,9 +238,36 @@ def drives_on_left(tokens: list[str], text: str = "") -> bool:
     words = set(tokens)
     if "mph" in words:
         return not words & _RIGHT_HAND_WORDS
+    british = bool(words & _LEFT_HAND_WORDS)
     if words & _METRIC_SPEEDS:
-        return False
-    return _motorway_number(tokens) or bool(words & _LEFT_HAND_WORDS and words & _FIRST_PERSON)
+        return british and told_in_the_past(tokens)
+    return _motorway_number(tokens) or (british and (bool(words & _FIRST_PERSON) or told_in_the_past(tokens)))
+
+
+#: Forms of "be" and "have" that carry a clause's tense.
+_PRESENT_AUXILIARIES = frozenset({"is", "are", "am", "has", "'s", "'re", "'m"})
+
+
+def told_in_the_past(tokens: list[str]) -> bool:
+    """Whether ``tokens`` tell an event that happened (a statement, a report, a story) rather than
+    specify a test: more verbs in the past tense than in the present, and at least two. Why: a writer
+    who uses British road words ("kerb", "nearside", "lorry") and metric speeds about something that
+    happened drives where traffic keeps left and speeds are metric (Ireland, Australia, New Zealand,
+    South Africa, India); the same words in a present-tense test line are Euro NCAP's, whose nearside
+    is the right. A word after a determiner or a number is a noun ("the stops", "two parked buses")."""
+    past = present = 0
+    for k, word in enumerate(tokens):
+        verbs = lemmas(word).get("VERB", ())
+        if not verbs and word not in _PRESENT_AUXILIARIES:
+            continue
+        noun_place = k > 0 and (tokens[k - 1] in _DETERMINERS or tokens[k - 1][:1].isdigit())
+        if noun_place:
+            continue
+        if word in _PRESENT_AUXILIARIES or any(word in getInflection(v, "VBZ") for v in verbs):
+            present += 1
+        elif any(word != v and word in getInflection(v, "VBD") for v in verbs):
+            past += 1
+    return past >= 2 and past > present
 
 
 def near_and_far(left_hand: bool) -> tuple[str, str]:
