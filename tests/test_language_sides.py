@@ -635,3 +635,37 @@ def test_told_in_the_past_counts_finite_verbs():
     assert told_in_the_past("she said a boy darted out and she braked".split())
     assert not told_in_the_past("a truck parked on the nearside hides a child who steps out".split())
     assert not told_in_the_past("a child runs out from behind two parked vans".split())
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # lanes are numbered from the kerb: keeping left a higher number is further right ...
+        ("Doing 60 mph in lane one, I saw a tanker in lane two swing across into my lane.", "right"),
+        ("I was in lane 2 at 55 mph when a coach in lane 1 drifted into my lane.", "left"),
+        # ... keeping right, further left
+        ("The AV holds lane 3 at 100 km/h; a coupe in lane 2 merges into the AV's lane 20 m ahead.", "right"),
+        # the ego's lane is the one a road user moves into directly in front of it
+        (
+            "The insured was doing 50 mph when a motorbike moved from lane 3 into lane 2 directly in front of "
+            "the insured vehicle.",
+            "right",
+        ),
+        # a side said plainly after the lane's number wins
+        ("Ego in lane 2 at 90 km/h; a van in lane 1 (on the ego's left) cuts in ahead of it.", "left"),
+    ],
+)
+def test_numbered_lanes_are_compared_with_the_egos_number(text, expected):
+    assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # near misses: a lane number that is no lane of the road user, and a distance after "lane"
+        "In lane 2 at 90 km/h, the ego follows a van that brakes hard 30 m ahead.",
+        "The van stopped in my lane 2 m ahead of me while I was doing 20 mph.",
+    ],
+)
+def test_a_number_that_names_no_other_lane_gives_no_side(text):
+    assert relation(text) == "ahead"

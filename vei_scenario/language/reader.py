@@ -1123,6 +1123,7 @@ def read(text: str) -> Reading:
     clauses, ignored, read_as, scanned = scan(text)
     ignored[:0] = [w for w in aside if w not in FUNCTION_WORDS]
     clauses = sides.narrator_lane(sides.relate_headings(clauses))
+    clauses = sides.numbered_lanes(clauses, sides.drives_on_left(scanned, text))
     clauses = out_of_a_side_road(destinations_not_origins(outcome_not_behaviour(_drop_label(clauses))), scanned)
     tokens = _tokens(text)
     said = " ".join(tokens)  # (the whole text as the reader reads it, for what is stated of it as a whole)

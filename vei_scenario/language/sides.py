@@ -137,6 +137,8 @@ _OPENING = frozenset(
     {"in", "on", "from", "off", "out", "of", "along", "into", "onto", "at", "down", "up", "to", "towards", "toward"}
 )
 _INTO = frozenset({"into", "onto"})
+#: Prepositions of being in, leaving or taking a numbered lane ("in lane 2", "keeps to lane 1").
+_IN_A_LANE = frozenset({"in", "into", "from", "on", "to"})
 _LINKS = frozenset({"on", "to", "at"})
 _MODIFIERS = frozenset({"adjacent", "next", "neighbouring", "neighboring", "nearest"})
 _ORDER = {"left": 0, "middle": 1, "right": 2}
@@ -385,9 +387,13 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
             return Said(start, k + 1, prep, (("arm", None), ("side", side)))
         return None
     # "lane 1": numbered from the nearside
-    numbered = j + 1 < n and tokens[j + 1].isdigit() and 0 < int(tokens[j + 1]) < 7
-    if tokens[j] == "lane" and numbered and tokens[j + 2 : j + 3] != ["m"] and prep in ("in", "into", "from", "on"):
-        number = int(tokens[j + 1])
+    numbered = j + 1 < n and tokens[j + 1] in LANE_NUMBERS
+    held = prep == "" and j == i and i > 0 and "VERB" in lemmas(tokens[i - 1])  # ("holds lane 3", "using lane 1")
+    if tokens[j] == "lane" and numbered and tokens[j + 2 : j + 3] != ["m"] and (held or prep in _IN_A_LANE):
+        number = LANE_NUMBERS[tokens[j + 1]]
+        if tokens[j + 2 : j + 3] in (["on"], ["to"]) and _side_follows(tokens, j + 3):
+            m = _past_owner(tokens, j + 3)  # "lane 1 (on the ego's left)": the side said plainly wins
+            return Said(start, m + 1, prep, (("lane_side", tokens[m]),))
         side = _side("nearside", "", left_hand, ring) if number == 1 else "middle" if number == 2 else None
         if side is None:
             side = _side("offside", "", left_hand, ring)
@@ -653,6 +659,82 @@ def narrator_lane(clauses: list) -> list:
     lane = flat[first]
     ego = replace(lane, slot="actor", value="ego", words="ego", end=lane.start, next_=lane.words.split()[0])
     return [(link, [x for m in mentions for x in ((ego, m) if m is lane else (m,))]) for link, mentions in clauses]
+
+
+#: Numbers a lane is numbered by ("lane 2", "lane two").
+LANE_NUMBERS = {
+    **{str(k): k for k in range(1, 7)},
+    **{w: k for k, w in enumerate(("one", "two", "three", "four", "five", "six"), 1)},
+}
+
+
+def _lane_number(words: str) -> int | None:
+    """The number of a numbered lane mention's words ("lane 2"), None when it is not one or its side
+    was said plainly ("lane 1 on the ego's left")."""
+    parts = words.split()
+    if len(parts) != 2 or parts[0] != "lane":
+        return None
+    return LANE_NUMBERS.get(parts[1])
+
+
+def numbered_lanes(clauses: list, left_hand: bool) -> list:
+    """Clauses (link, mentions) with numbered lanes compared with the ego's own: lanes are numbered
+    from the kerb, so where traffic keeps left a higher number is further right, where it keeps right
+    further left ("in lane one ... a van in lane two": the van is on the ego's right in the UK). The
+    ego's lane is the one said of it, or the one a road user moves into directly in front of it ("moved
+    from lane 2 into lane 1 directly in front of IV"). Then the ego's lane reads as the middle, a road
+    user's as the side of it, and the ego's own lane says no side (moving into it is a cut-in).
+    Without the ego's number the lanes keep their reading from the kerb."""
+    flat = [m for _, mentions in clauses for m in mentions]
+    owner: dict[int, object] = {}
+    last = None
+    for m in flat:
+        if m.slot in ("actor", "pronoun"):
+            last = m
+        elif m.slot == "lane_side" and _lane_number(m.words) is not None:
+            owner[id(m)] = last
+    ego = next(
+        (
+            _lane_number(m.words)
+            for m in flat
+            if id(m) in owner and owner[id(m)] is not None and owner[id(m)].value == "ego" and m.prev not in _INTO
+        ),
+        None,
+    )
+    if ego is None:
+        ego = next((_lane_number(m.words) for m in flat if id(m) in owner and _in_front_after(flat, m)), None)
+    if ego is None:
+        return clauses
+    out = []
+    for link, mentions in clauses:
+        kept = []
+        for m in mentions:
+            number = _lane_number(m.words) if id(m) in owner else None
+            if number is None:
+                kept.append(m)
+                continue
+            who = owner[id(m)]
+            if who is not None and who.value == "ego":
+                kept.append(replace(m, value="middle"))
+            elif number != ego:
+                kept.append(replace(m, value="right" if (number > ego) == left_hand else "left"))
+            # (the ego's own lane: no side beside it, and moving into it is the cut-in's)
+        out.append((link, kept))
+    return out
+
+
+def _in_front_after(flat: list, m) -> bool:
+    """Whether the numbered lane ``m`` is one moved into directly in front of the ego: "into lane 1"
+    followed, before any other road user is named, by "in front (of ...)" or "ahead"."""
+    if m.prev not in _INTO:
+        return False
+    k = flat.index(m)
+    for x in flat[k + 1 : k + 4]:
+        if x.slot == "relation":
+            return x.value == "ahead"
+        if x.slot in ("actor", "pronoun") and x.value != "ego":
+            return False
+    return False
 
 
 #: Compass headings in degrees, and the words that say them ("eastbound"; "heading east").
