@@ -669,3 +669,41 @@ def test_numbered_lanes_are_compared_with_the_egos_number(text, expected):
 )
 def test_a_number_that_names_no_other_lane_gives_no_side(text):
     assert relation(text) == "ahead"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # the ego following a road user: that one is ahead of it, wherever the sentence starts
+        "Wet evening, ego following a school bus at 25 m. The bus pulls in and stops.",
+        "Night drive: ego following a moped at 15 m, the moped pulls in to the side and halts.",
+        "Rainy night: ego is following a minibus at 30 m when the minibus brakes hard.",
+        "Test: the ego tails a delivery van through town and the van stops suddenly.",
+    ],
+)
+def test_what_the_ego_follows_is_ahead(text):
+    assert relation(text) == "ahead"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # a kerb or crossing said "at" after what a road user ahead does is where it does it
+        "The ego follows a cyclist who stops at the pelican crossing.",
+        "Ahead of the ego a scooter rider slows and halts at the crosswalk.",
+    ],
+)
+def test_a_crossing_where_one_ahead_stops_is_a_landmark(text):
+    assert relation(text) == "ahead"
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # near misses: a road user following the ego is behind it; one waiting at a crossing is at the kerb
+        ("A hatchback is following the ego at 20 m and then overtakes.", "behind"),
+        ("A pedestrian waits at the zebra crossing and then crosses in front of the ego.", "roadside_right"),
+    ],
+)
+def test_following_the_ego_and_waiting_at_a_crossing_keep_their_places(text, expected):
+    assert relation(text) == expected

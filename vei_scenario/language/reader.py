@@ -1123,7 +1123,7 @@ def read(text: str) -> Reading:
     clauses, ignored, read_as, scanned = scan(text)
     ignored[:0] = [w for w in aside if w not in FUNCTION_WORDS]
     clauses = sides.narrator_lane(sides.relate_headings(clauses))
-    clauses = sides.numbered_lanes(clauses, sides.drives_on_left(scanned, text))
+    clauses = sides.ego_follows(sides.numbered_lanes(clauses, sides.drives_on_left(scanned, text)))
     clauses = out_of_a_side_road(destinations_not_origins(outcome_not_behaviour(_drop_label(clauses))), scanned)
     tokens = _tokens(text)
     said = " ".join(tokens)  # (the whole text as the reader reads it, for what is stated of it as a whole)
@@ -2505,6 +2505,12 @@ def _apply(m, who, r, link, added) -> None:
             a.toward = m.value
         elif m.slot == "lane_side":  # (the lane it starts in: the first said)
             a.lane_side = a.lane_side or m.value
+        elif (
+            m.slot in ("kerb", "kerb_side")
+            and m.prev == "at"
+            and sides.arm_is_where_it_acts("at", a.said, a.behaviours)
+        ):
+            pass  # ("the scooter ahead stops at the zebra crossing": where it stops, a landmark)
         elif m.slot == "kerb":
             a.kerb = True
             a.pavement = a.pavement or on_the_footway(m)

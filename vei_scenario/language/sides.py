@@ -587,8 +587,9 @@ def gap_where_it_ends(behaviours: list) -> str | None:
 
 
 def arm_is_where_it_acts(prep: str | None, said: set, behaviours: list) -> bool:
-    """Whether a junction arm said "at" after what a road user ahead of (or behind) the ego does is
-    where it does it ("the car in front slows at the entry", "the van behind me stops at the exit"),
+    """Whether a junction arm (or a kerb or crossing) said "at" after what a road user ahead of (or
+    behind) the ego does is where it does it ("the car in front slows at the entry", "the van behind me
+    stops at the exit", "the scooter ahead stops at the zebra crossing"),
     or said after it has passed the ego is where it goes, not an arm it comes out of: it drives in
     the ego's lane towards that arm."""
     if gap_where_it_ends(behaviours):
@@ -735,6 +736,42 @@ def _in_front_after(flat: list, m) -> bool:
         if x.slot in ("actor", "pronoun") and x.value != "ego":
             return False
     return False
+
+
+#: Lemmas of the verbs of keeping behind someone.
+_FOLLOW = frozenset({"follow", "tail", "trail"})
+
+
+def _follows(m) -> bool:
+    """Whether mention ``m`` is a verb of following: a follow behaviour, or "following" read as a place
+    behind someone ("a car following us")."""
+    if not (m.slot == "behaviour" and m.value[0] == "follow_vehicle") and not (
+        m.slot == "relation" and m.value == "behind"
+    ):
+        return False
+    return any(_FOLLOW & set(lemmas(w).get("VERB", ())) for w in m.words.split())
+
+
+def ego_follows(clauses: list) -> list:
+    """Clauses (link, mentions) with "the ego follows X" read as X ahead of the ego: the ego (named as
+    the subject) then a verb of following then a road user ("ego follow a e-scooter", "the EV follows
+    a lead vehicle", "ego following a city bus at 20 m"). Why: the verb of following says where the one
+    followed is, not what the ego does (the planner drives it); read as the ego's behaviour it was lost,
+    read as "following" of the next road user ("a car following us") it put the bus behind. The verb
+    becomes "ahead" said of the road user, right after it, as the reader reads "Following a truck"."""
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k in range(len(kept) - 2):
+            ego, verb, who = kept[k], kept[k + 1], kept[k + 2]
+            if ego.slot != "actor" or ego.value != "ego" or not _follows(verb):
+                continue
+            if who.slot != "actor" or who.value == "ego":
+                continue
+            ahead = replace(verb, slot="relation", value="ahead", words="following", start=who.end, prev=who.words)
+            kept[k + 1 : k + 3] = [who, ahead]
+        out.append((link, kept))
+    return out
 
 
 #: Compass headings in degrees, and the words that say them ("eastbound"; "heading east").
