@@ -707,3 +707,19 @@ def test_a_crossing_where_one_ahead_stops_is_a_landmark(text):
 )
 def test_following_the_ego_and_waiting_at_a_crossing_keep_their_places(text, expected):
     assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # a road user at a place beside the carriageway on a side starts at that roadside, not in a lane
+        ("A coach waiting in a lay-by on the right 50 m ahead pulls out into the ego's lane.", "roadside_right"),
+        ("A minibus sitting at the bus stop on the left pulls out 30 m ahead of the ego.", "roadside_left"),
+        ("Ego at 30 km/h; a taxi at the bus stop on the right moves off into the ego's lane.", "roadside_right"),
+        # near misses: a finite verb of arriving there says where it stops, a landmark
+        ("The bus in front of the ego pulls in at the stop on the left and stops.", "ahead"),
+        ("Ego at 40 km/h behind a bus; the bus stops at the stop on the right.", "ahead"),
+    ],
+)
+def test_a_place_beside_the_road_where_one_waits_is_its_roadside(text, expected):
+    assert relation(text) == expected

@@ -78,6 +78,24 @@ def _place_head(tokens: list[str], k: int) -> int | None:
     return None
 
 
+def _in_a_state(tokens: list[str], i: int) -> bool:
+    """Whether the word before the preposition at token ``i`` says where a road user is rather than
+    where it arrives: a participle of state or its own noun ("a bus standing at a stop", "a van
+    waiting in the lay-by", "a coach at the stop"), not a finite verb ("the bus stops at the stop on
+    the left": where it stops, a landmark)."""
+    if i == 0:
+        return False
+    word = tokens[i - 1]
+    return word.endswith("ing") or "VERB" not in lemmas(word)
+
+
+def waits_elsewhere(relation: object, prep: str, lane: str | None) -> bool:
+    """Whether a roadside place said "at" or "in" ("waiting at the stop on my left") is not where a
+    road user already said to be in a lane starts: the lane said first is where it is, and the place
+    is another's (the one it passes) or where it goes."""
+    return lane is not None and prep in ("at", "in") and str(relation).startswith("roadside_")
+
+
 def _reversing(tokens: list[str], i: int) -> bool:
     """Whether the verb right before the phrase at token ``i`` (and its particle) is reversing ("backed
     out of", "reverses from"): one that backs out of a place is read into the lane it backs across,
@@ -409,6 +427,8 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
         kind, k = "kerb", k + 1
     elif prep in _OUT_OF and (head := _place_head(tokens, k)) is not None:
         kind, k = "place", head
+    elif prep in ("at", "in") and _in_a_state(tokens, i) and (head := _place_head(tokens, k)) is not None:
+        kind, k = "waits", head  # ("a bus standing at a stop on the left": beside the road there)
     elif tokens[k] in _KERB_LANES and tokens[k + 1 : k + 2] == ["lane"]:
         kind, k = "kerb", k + 2
     elif tokens[k] == "lane":
@@ -434,6 +454,8 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
         return Said(start, end, prep, (("arm", None), ("side", side)))
     if kind == "kerb":
         return Said(start, end, prep, (("kerb", None), ("kerb_side", side)))
+    if kind == "waits":  # at a place beside the carriageway on that side: that roadside, no lane
+        return Said(start, end, prep, (("place", None), ("relation", f"roadside_{side}")))
     if kind == "place":  # beside the carriageway, where it comes onto the road from: that roadside
         if _reversing(tokens, i):  # (it backs across into the lane on that side: no pulling out ahead)
             return Said(start, end, prep, (("kerb", None), ("lane_side", side)))
