@@ -723,3 +723,19 @@ def test_following_the_ego_and_waiting_at_a_crossing_keep_their_places(text, exp
 )
 def test_a_place_beside_the_road_where_one_waits_is_its_roadside(text, expected):
     assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # the oncoming lane said of one already said to come from behind is where it overtakes
+        ("A van from behind overtakes the ego in the oncoming lane and pulls back in.", "behind"),
+        ("Ego at 80 km/h; a sports car comes up from behind and passes us in the opposite lane.", "behind"),
+        ("A motorbike behind me swung out into the oncoming lane to overtake.", "behind"),
+        # near misses: first said to be in that lane, it comes towards the ego
+        ("A bus in the oncoming lane comes towards the ego.", "oncoming"),
+        ("A lorry in the oncoming lane overtakes a tractor and comes at us in our lane.", "oncoming"),
+    ],
+)
+def test_the_oncoming_lane_of_one_from_behind_is_where_it_overtakes(text, expected):
+    assert relation(text) == expected

@@ -2485,6 +2485,8 @@ def _apply(m, who, r, link, added) -> None:
             a.end_gap = sides.gap_where_it_ends(a.behaviours)
         elif m.slot == "relation" and m.value in ("ahead", "behind") and m.next_ in ("it", "him", "her", "them"):
             a.said.add("near_other")  # "a car behind it swerves": behind another road user, not the ego
+        elif m.slot == "relation" and sides.lane_it_passes_in(m.value, m.words, m.next_, a.said):
+            a.said.add("passes_oncoming")  # ("a car from behind overtakes us in the oncoming lane")
         elif m.slot == "relation" and sides.waits_elsewhere(m.value, m.prev, a.lane_side):
             pass  # ("a lorry in the left lane overtook the bus waiting at the stop": the bus's place)
         elif m.slot == "relation" and sides.where_it_ends(m.value, a.behaviours):

@@ -89,6 +89,19 @@ def _in_a_state(tokens: list[str], i: int) -> bool:
     return word.endswith("ing") or "VERB" not in lemmas(word)
 
 
+#: Nouns "oncoming"/"opposite" name as the other direction's part of the road.
+_THE_OTHER_WAYS = frozenset({"lane", "lanes", "side", "carriageway"})
+
+
+def lane_it_passes_in(relation: object, words: str, after: str, said: set) -> bool:
+    """Whether "the oncoming lane" said of a road user already said to come from behind is the lane it
+    overtakes in, not a start facing the ego ("a car from behind overtakes us in the oncoming lane",
+    "a motorbike behind me swung out into the oncoming lane"): it starts behind. A road user first
+    said to be in that lane ("a bus in the oncoming lane") comes towards the ego."""
+    lane = after in _THE_OTHER_WAYS or words.split()[-1] in _THE_OTHER_WAYS  # ("oncoming lane", "in the opposite lane")
+    return relation == "oncoming" and lane and "behind" in said
+
+
 def waits_elsewhere(relation: object, prep: str, lane: str | None) -> bool:
     """Whether a roadside place said "at" or "in" ("waiting at the stop on my left") is not where a
     road user already said to be in a lane starts: the lane said first is where it is, and the place
