@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass, replace
+from functools import lru_cache
 
 from lemminflect import getInflection
 
@@ -296,11 +297,22 @@ def told_in_the_past(tokens: list[str]) -> bool:
         noun_place = k > 0 and (tokens[k - 1] in _DETERMINERS or tokens[k - 1][:1].isdigit())
         if noun_place:
             continue
-        if word in _PRESENT_AUXILIARIES or any(word in getInflection(v, "VBZ") for v in verbs):
-            present += 1
-        elif any(word != v and word in getInflection(v, "VBD") for v in verbs):
-            past += 1
+        tense = "present" if word in _PRESENT_AUXILIARIES else _tense(word)
+        present += tense == "present"
+        past += tense == "past"
     return past >= 2 and past > present
+
+
+@lru_cache(maxsize=16384)
+def _tense(word: str) -> str | None:
+    """The tense a verb form says: "present" for a third-person present one ("hides"), "past" for a
+    past-tense one ("emerged"), None for any other word; looked up once per word."""
+    verbs = lemmas(word).get("VERB", ())
+    if any(word in getInflection(v, "VBZ") for v in verbs):
+        return "present"
+    if any(word != v and word in getInflection(v, "VBD") for v in verbs):
+        return "past"
+    return None
 
 
 def near_and_far(left_hand: bool) -> tuple[str, str]:
