@@ -587,3 +587,155 @@ def test_place_after_degree_needs_a_degree_word_and_a_place():
     assert place_after_degree(words, 2, ("just", "in", "time"), _relation_length) is None
     words = "a car in the right lane".split()  # no degree word where the phrase starts
     assert place_after_degree(words, 4, ("right", "lane"), _relation_length) is None
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # something that happened, told in British road words with metric speeds: a keep-left country
+        (
+            "The rider said she was doing 30 km/h along Station Parade when a boy darted out from between two "
+            "parked vans on the nearside.",
+            "roadside_left",
+        ),
+        (
+            "Our minibus was travelling at 40 km/h when a woman stepped off the kerb and walked into our path.",
+            "roadside_left",
+        ),
+        (
+            "The driver stated that she was travelling at 25 km/h when a girl ran out from behind a parked lorry on "
+            "the nearside.",
+            "roadside_left",
+        ),
+        # no unit at all: the same British words in a told event
+        ("A jogger ran out from the nearside verge and the taxi driver braked hard.", "roadside_left"),
+    ],
+)
+def test_british_road_words_in_a_told_event_keep_left(text, expected):
+    assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # near misses: a test line in the present tense keeps Euro NCAP's convention (the nearside is the right)
+        ("Ego at 40 km/h; a child runs out from behind a parked van on the nearside.", "roadside_right"),
+        ("An adult walks out from the nearside kerb at 5 km/h while the VUT approaches at 40 km/h.", "roadside_right"),
+        # a told event with no British road word keeps the default
+        ("I was doing 40 km/h when a boy ran out from the sidewalk and crossed in front of me.", "roadside_right"),
+    ],
+)
+def test_a_test_line_or_american_words_keep_right(text, expected):
+    assert relation(text) == expected
+
+
+def test_told_in_the_past_counts_finite_verbs():
+    from vei_scenario.language.sides import told_in_the_past
+
+    assert told_in_the_past("she said a boy darted out and she braked".split())
+    assert not told_in_the_past("a truck parked on the nearside hides a child who steps out".split())
+    assert not told_in_the_past("a child runs out from behind two parked vans".split())
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # lanes are numbered from the kerb: keeping left a higher number is further right ...
+        ("Doing 60 mph in lane one, I saw a tanker in lane two swing across into my lane.", "right"),
+        ("I was in lane 2 at 55 mph when a coach in lane 1 drifted into my lane.", "left"),
+        # ... keeping right, further left
+        ("The AV holds lane 3 at 100 km/h; a coupe in lane 2 merges into the AV's lane 20 m ahead.", "right"),
+        # the ego's lane is the one a road user moves into directly in front of it
+        (
+            "The insured was doing 50 mph when a motorbike moved from lane 3 into lane 2 directly in front of "
+            "the insured vehicle.",
+            "right",
+        ),
+        # a side said plainly after the lane's number wins
+        ("Ego in lane 2 at 90 km/h; a van in lane 1 (on the ego's left) cuts in ahead of it.", "left"),
+    ],
+)
+def test_numbered_lanes_are_compared_with_the_egos_number(text, expected):
+    assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # near misses: a lane number that is no lane of the road user, and a distance after "lane"
+        "In lane 2 at 90 km/h, the ego follows a van that brakes hard 30 m ahead.",
+        "The van stopped in my lane 2 m ahead of me while I was doing 20 mph.",
+    ],
+)
+def test_a_number_that_names_no_other_lane_gives_no_side(text):
+    assert relation(text) == "ahead"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # the ego following a road user: that one is ahead of it, wherever the sentence starts
+        "Wet evening, ego following a school bus at 25 m. The bus pulls in and stops.",
+        "Night drive: ego following a moped at 15 m, the moped pulls in to the side and halts.",
+        "Rainy night: ego is following a minibus at 30 m when the minibus brakes hard.",
+        "Test: the ego tails a delivery van through town and the van stops suddenly.",
+    ],
+)
+def test_what_the_ego_follows_is_ahead(text):
+    assert relation(text) == "ahead"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # a kerb or crossing said "at" after what a road user ahead does is where it does it
+        "The ego follows a cyclist who stops at the pelican crossing.",
+        "Ahead of the ego a scooter rider slows and halts at the crosswalk.",
+    ],
+)
+def test_a_crossing_where_one_ahead_stops_is_a_landmark(text):
+    assert relation(text) == "ahead"
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # near misses: a road user following the ego is behind it; one waiting at a crossing is at the kerb
+        ("A hatchback is following the ego at 20 m and then overtakes.", "behind"),
+        ("A pedestrian waits at the zebra crossing and then crosses in front of the ego.", "roadside_right"),
+    ],
+)
+def test_following_the_ego_and_waiting_at_a_crossing_keep_their_places(text, expected):
+    assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # a road user at a place beside the carriageway on a side starts at that roadside, not in a lane
+        ("A coach waiting in a lay-by on the right 50 m ahead pulls out into the ego's lane.", "roadside_right"),
+        ("A minibus sitting at the bus stop on the left pulls out 30 m ahead of the ego.", "roadside_left"),
+        ("Ego at 30 km/h; a taxi at the bus stop on the right moves off into the ego's lane.", "roadside_right"),
+        # near misses: a finite verb of arriving there says where it stops, a landmark
+        ("The bus in front of the ego pulls in at the stop on the left and stops.", "ahead"),
+        ("Ego at 40 km/h behind a bus; the bus stops at the stop on the right.", "ahead"),
+    ],
+)
+def test_a_place_beside_the_road_where_one_waits_is_its_roadside(text, expected):
+    assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # the oncoming lane said of one already said to come from behind is where it overtakes
+        ("A van from behind overtakes the ego in the oncoming lane and pulls back in.", "behind"),
+        ("Ego at 80 km/h; a sports car comes up from behind and passes us in the opposite lane.", "behind"),
+        ("A motorbike behind me swung out into the oncoming lane to overtake.", "behind"),
+        # near misses: first said to be in that lane, it comes towards the ego
+        ("A bus in the oncoming lane comes towards the ego.", "oncoming"),
+        ("A lorry in the oncoming lane overtakes a tractor and comes at us in our lane.", "oncoming"),
+    ],
+)
+def test_the_oncoming_lane_of_one_from_behind_is_where_it_overtakes(text, expected):
+    assert relation(text) == expected

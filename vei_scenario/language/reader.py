@@ -1215,6 +1215,7 @@ def _read(text: str) -> Reading:
     clauses, ignored, read_as, scanned = scan(text)
     ignored[:0] = [w for w in aside if w not in FUNCTION_WORDS]
     clauses = sides.narrator_lane(sides.relate_headings(clauses))
+    clauses = sides.ego_follows(sides.numbered_lanes(clauses, sides.drives_on_left(scanned, text)))
     clauses = out_of_a_side_road(
         destinations_not_origins(outcome_not_behaviour(_drop_label(clauses), scanned)), scanned
     )
@@ -2662,6 +2663,10 @@ def _apply(m, who, r, link, added) -> None:
             a.end_gap = sides.gap_where_it_ends(a.behaviours)
         elif m.slot == "relation" and m.value in ("ahead", "behind") and m.next_ in ("it", "him", "her", "them"):
             a.said.add("near_other")  # "a car behind it swerves": behind another road user, not the ego
+        elif m.slot == "relation" and sides.lane_it_passes_in(m.value, m.words, m.next_, a.said):
+            a.said.add("passes_oncoming")  # ("a car from behind overtakes us in the oncoming lane")
+        elif m.slot == "relation" and sides.waits_elsewhere(m.value, m.prev, a.lane_side):
+            pass  # ("a lorry in the left lane overtook the bus waiting at the stop": the bus's place)
         elif m.slot == "relation" and sides.where_it_ends(m.value, a.behaviours):
             a.said.add("in_front")  # "cuts in 10 m ahead": where it cuts in, not where it starts
         elif m.slot == "relation":
@@ -2682,6 +2687,12 @@ def _apply(m, who, r, link, added) -> None:
             a.toward = m.value
         elif m.slot == "lane_side":  # (the lane it starts in: the first said)
             a.lane_side = a.lane_side or m.value
+        elif (
+            m.slot in ("kerb", "kerb_side")
+            and m.prev == "at"
+            and sides.arm_is_where_it_acts("at", a.said, a.behaviours)
+        ):
+            pass  # ("the scooter ahead stops at the zebra crossing": where it stops, a landmark)
         elif m.slot == "kerb":
             a.kerb = True
             a.pavement = a.pavement or on_the_footway(m)

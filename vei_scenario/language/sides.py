@@ -11,8 +11,10 @@ fixed phrases missed most of the combinations; this reads the few closed word cl
 Conventions:
 
 - *nearside* is the kerb side, *offside* the centre-line side. A writer who gives speeds in miles per
-  hour drives on the left (UK), so there the nearside is the left; elsewhere the right (the project's
-  own convention, and Euro NCAP's, whose codes are rewritten before this reads them).
+  hour drives on the left (UK), so there the nearside is the left; so does one who tells something that
+  happened in British road words ("kerb", "nearside", "lorry"), whatever the unit (Ireland, Australia,
+  India give km/h); elsewhere the right (the project's own convention, and Euro NCAP's, whose test
+  lines say "nearside" in the present tense, and whose codes are rewritten before this reads them).
 - on a straight road the *inside* lane is the nearside one, the *outside* lane the offside one; on a
   roundabout *inner*/*inside* is towards the island, which is on the offside.
 - a side word restated right after ("the nearside (left) footway") wins: the writer said it plainly.
@@ -24,6 +26,9 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass, replace
+from functools import lru_cache
+
+from lemminflect import getInflection
 
 from vei_scenario.language.lemmas import lemmas
 
@@ -72,6 +77,37 @@ def _place_head(tokens: list[str], k: int) -> int | None:
         if word in _NOT_A_MODIFIER or not word.isalpha():
             return None
     return None
+
+
+def _in_a_state(tokens: list[str], i: int) -> bool:
+    """Whether the word before the preposition at token ``i`` says where a road user is rather than
+    where it arrives: a participle of state or its own noun ("a bus standing at a stop", "a van
+    waiting in the lay-by", "a coach at the stop"), not a finite verb ("the bus stops at the stop on
+    the left": where it stops, a landmark)."""
+    if i == 0:
+        return False
+    word = tokens[i - 1]
+    return word.endswith("ing") or "VERB" not in lemmas(word)
+
+
+#: Nouns "oncoming"/"opposite" name as the other direction's part of the road.
+_THE_OTHER_WAYS = frozenset({"lane", "lanes", "side", "carriageway"})
+
+
+def lane_it_passes_in(relation: object, words: str, after: str, said: set) -> bool:
+    """Whether "the oncoming lane" said of a road user already said to come from behind is the lane it
+    overtakes in, not a start facing the ego ("a car from behind overtakes us in the oncoming lane",
+    "a motorbike behind me swung out into the oncoming lane"): it starts behind. A road user first
+    said to be in that lane ("a bus in the oncoming lane") comes towards the ego."""
+    lane = after in _THE_OTHER_WAYS or words.split()[-1] in _THE_OTHER_WAYS  # ("oncoming lane", "in the opposite lane")
+    return relation == "oncoming" and lane and "behind" in said
+
+
+def waits_elsewhere(relation: object, prep: str, lane: str | None) -> bool:
+    """Whether a roadside place said "at" or "in" ("waiting at the stop on my left") is not where a
+    road user already said to be in a lane starts: the lane said first is where it is, and the place
+    is another's (the one it passes) or where it goes."""
+    return lane is not None and prep in ("at", "in") and str(relation).startswith("roadside_")
 
 
 def _reversing(tokens: list[str], i: int) -> bool:
@@ -133,6 +169,8 @@ _OPENING = frozenset(
     {"in", "on", "from", "off", "out", "of", "along", "into", "onto", "at", "down", "up", "to", "towards", "toward"}
 )
 _INTO = frozenset({"into", "onto"})
+#: Prepositions of being in, leaving or taking a numbered lane ("in lane 2", "keeps to lane 1").
+_IN_A_LANE = frozenset({"in", "into", "from", "on", "to"})
 _LINKS = frozenset({"on", "to", "at"})
 _MODIFIERS = frozenset({"adjacent", "next", "neighbouring", "neighboring", "nearest"})
 _ORDER = {"left": 0, "middle": 1, "right": 2}
@@ -152,7 +190,9 @@ class Said:
 #: Words of the road only writers who drive on the left use (British), and only writers who drive on
 #: the right and give miles per hour use (American): they say which side a writer's "inside lane" or
 #: "nearside" is on, with or without a unit.
-_LEFT_HAND_WORDS = frozenset({"lorry", "lorries", "carriageway", "kerb", "kerbs", "kerbside", "hgv", "hgvs"})
+_LEFT_HAND_WORDS = frozenset(
+    {"lorry", "lorries", "carriageway", "kerb", "kerbs", "kerbside", "hgv", "hgvs", "nearside", "offside"}
+)
 _RIGHT_HAND_WORDS = frozenset(
     {"freeway", "interstate", "sidewalk", "sidewalks", "curb", "curbs", "crosswalk", "stoplight", "semi"}
 )
@@ -232,9 +272,47 @@ def drives_on_left(tokens: list[str], text: str = "") -> bool:
     words = set(tokens)
     if "mph" in words:
         return not words & _RIGHT_HAND_WORDS
+    british = bool(words & _LEFT_HAND_WORDS)
     if words & _METRIC_SPEEDS:
-        return False
-    return _motorway_number(tokens) or bool(words & _LEFT_HAND_WORDS and words & _FIRST_PERSON)
+        return british and told_in_the_past(tokens)
+    return _motorway_number(tokens) or (british and (bool(words & _FIRST_PERSON) or told_in_the_past(tokens)))
+
+
+#: Forms of "be" and "have" that carry a clause's tense.
+_PRESENT_AUXILIARIES = frozenset({"is", "are", "am", "has", "'s", "'re", "'m"})
+
+
+def told_in_the_past(tokens: list[str]) -> bool:
+    """Whether ``tokens`` tell an event that happened (a statement, a report, a story) rather than
+    specify a test: more verbs in the past tense than in the present, and at least two. Why: a writer
+    who uses British road words ("kerb", "nearside", "lorry") and metric speeds about something that
+    happened drives where traffic keeps left and speeds are metric (Ireland, Australia, New Zealand,
+    South Africa, India); the same words in a present-tense test line are Euro NCAP's, whose nearside
+    is the right. A word after a determiner or a number is a noun ("the stops", "two parked buses")."""
+    past = present = 0
+    for k, word in enumerate(tokens):
+        verbs = lemmas(word).get("VERB", ())
+        if not verbs and word not in _PRESENT_AUXILIARIES:
+            continue
+        noun_place = k > 0 and (tokens[k - 1] in _DETERMINERS or tokens[k - 1][:1].isdigit())
+        if noun_place:
+            continue
+        tense = "present" if word in _PRESENT_AUXILIARIES else _tense(word)
+        present += tense == "present"
+        past += tense == "past"
+    return past >= 2 and past > present
+
+
+@lru_cache(maxsize=16384)
+def _tense(word: str) -> str | None:
+    """The tense a verb form says: "present" for a third-person present one ("hides"), "past" for a
+    past-tense one ("emerged"), None for any other word; looked up once per word."""
+    verbs = lemmas(word).get("VERB", ())
+    if any(word in getInflection(v, "VBZ") for v in verbs):
+        return "present"
+    if any(word != v and word in getInflection(v, "VBD") for v in verbs):
+        return "past"
+    return None
 
 
 def near_and_far(left_hand: bool) -> tuple[str, str]:
@@ -352,9 +430,13 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
             return Said(start, k + 1, prep, (("arm", None), ("side", side)))
         return None
     # "lane 1": numbered from the nearside
-    numbered = j + 1 < n and tokens[j + 1].isdigit() and 0 < int(tokens[j + 1]) < 7
-    if tokens[j] == "lane" and numbered and tokens[j + 2 : j + 3] != ["m"] and prep in ("in", "into", "from", "on"):
-        number = int(tokens[j + 1])
+    numbered = j + 1 < n and tokens[j + 1] in LANE_NUMBERS
+    held = prep == "" and j == i and i > 0 and "VERB" in lemmas(tokens[i - 1])  # ("holds lane 3", "using lane 1")
+    if tokens[j] == "lane" and numbered and tokens[j + 2 : j + 3] != ["m"] and (held or prep in _IN_A_LANE):
+        number = LANE_NUMBERS[tokens[j + 1]]
+        if tokens[j + 2 : j + 3] in (["on"], ["to"]) and _side_follows(tokens, j + 3):
+            m = _past_owner(tokens, j + 3)  # "lane 1 (on the ego's left)": the side said plainly wins
+            return Said(start, m + 1, prep, (("lane_side", tokens[m]),))
         side = _side("nearside", "", left_hand, ring) if number == 1 else "middle" if number == 2 else None
         if side is None:
             side = _side("offside", "", left_hand, ring)
@@ -370,6 +452,8 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
         kind, k = "kerb", k + 1
     elif prep in _OUT_OF and (head := _place_head(tokens, k)) is not None:
         kind, k = "place", head
+    elif prep in ("at", "in") and _in_a_state(tokens, i) and (head := _place_head(tokens, k)) is not None:
+        kind, k = "waits", head  # ("a bus standing at a stop on the left": beside the road there)
     elif tokens[k] in _KERB_LANES and tokens[k + 1 : k + 2] == ["lane"]:
         kind, k = "kerb", k + 2
     elif tokens[k] == "lane":
@@ -395,6 +479,8 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
         return Said(start, end, prep, (("arm", None), ("side", side)))
     if kind == "kerb":
         return Said(start, end, prep, (("kerb", None), ("kerb_side", side)))
+    if kind == "waits":  # at a place beside the carriageway on that side: that roadside, no lane
+        return Said(start, end, prep, (("place", None), ("relation", f"roadside_{side}")))
     if kind == "place":  # beside the carriageway, where it comes onto the road from: that roadside
         if _reversing(tokens, i):  # (it backs across into the lane on that side: no pulling out ahead)
             return Said(start, end, prep, (("kerb", None), ("lane_side", side)))
@@ -548,8 +634,9 @@ def gap_where_it_ends(behaviours: list) -> str | None:
 
 
 def arm_is_where_it_acts(prep: str | None, said: set, behaviours: list) -> bool:
-    """Whether a junction arm said "at" after what a road user ahead of (or behind) the ego does is
-    where it does it ("the car in front slows at the entry", "the van behind me stops at the exit"),
+    """Whether a junction arm (or a kerb or crossing) said "at" after what a road user ahead of (or
+    behind) the ego does is where it does it ("the car in front slows at the entry", "the van behind me
+    stops at the exit", "the scooter ahead stops at the zebra crossing"),
     or said after it has passed the ego is where it goes, not an arm it comes out of: it drives in
     the ego's lane towards that arm."""
     if gap_where_it_ends(behaviours):
@@ -630,6 +717,118 @@ def narrator_lane(clauses: list) -> list:
     lane = flat[first]
     ego = replace(lane, slot="actor", value="ego", words="ego", end=lane.start, next_=lane.words.split()[0])
     return [(link, [x for m in mentions for x in ((ego, m) if m is lane else (m,))]) for link, mentions in clauses]
+
+
+#: Numbers a lane is numbered by ("lane 2", "lane two").
+LANE_NUMBERS = {
+    **{str(k): k for k in range(1, 7)},
+    **{w: k for k, w in enumerate(("one", "two", "three", "four", "five", "six"), 1)},
+}
+
+
+def _lane_number(words: str) -> int | None:
+    """The number of a numbered lane mention's words ("lane 2"), None when it is not one or its side
+    was said plainly ("lane 1 on the ego's left")."""
+    parts = words.split()
+    if len(parts) != 2 or parts[0] != "lane":
+        return None
+    return LANE_NUMBERS.get(parts[1])
+
+
+def numbered_lanes(clauses: list, left_hand: bool) -> list:
+    """Clauses (link, mentions) with numbered lanes compared with the ego's own: lanes are numbered
+    from the kerb, so where traffic keeps left a higher number is further right, where it keeps right
+    further left ("in lane one ... a van in lane two": the van is on the ego's right in the UK). The
+    ego's lane is the one said of it, or the one a road user moves into directly in front of it ("moved
+    from lane 2 into lane 1 directly in front of IV"). Then the ego's lane reads as the middle, a road
+    user's as the side of it, and the ego's own lane says no side (moving into it is a cut-in).
+    Without the ego's number the lanes keep their reading from the kerb."""
+    flat = [m for _, mentions in clauses for m in mentions]
+    owner: dict[int, object] = {}
+    last = None
+    for m in flat:
+        if m.slot in ("actor", "pronoun"):
+            last = m
+        elif m.slot == "lane_side" and _lane_number(m.words) is not None:
+            owner[id(m)] = last
+    ego = next(
+        (
+            _lane_number(m.words)
+            for m in flat
+            if id(m) in owner and owner[id(m)] is not None and owner[id(m)].value == "ego" and m.prev not in _INTO
+        ),
+        None,
+    )
+    if ego is None:
+        ego = next((_lane_number(m.words) for m in flat if id(m) in owner and _in_front_after(flat, m)), None)
+    if ego is None:
+        return clauses
+    out = []
+    for link, mentions in clauses:
+        kept = []
+        for m in mentions:
+            number = _lane_number(m.words) if id(m) in owner else None
+            if number is None:
+                kept.append(m)
+                continue
+            who = owner[id(m)]
+            if who is not None and who.value == "ego":
+                kept.append(replace(m, value="middle"))
+            elif number != ego:
+                kept.append(replace(m, value="right" if (number > ego) == left_hand else "left"))
+            # (the ego's own lane: no side beside it, and moving into it is the cut-in's)
+        out.append((link, kept))
+    return out
+
+
+def _in_front_after(flat: list, m) -> bool:
+    """Whether the numbered lane ``m`` is one moved into directly in front of the ego: "into lane 1"
+    followed, before any other road user is named, by "in front (of ...)" or "ahead"."""
+    if m.prev not in _INTO:
+        return False
+    k = flat.index(m)
+    for x in flat[k + 1 : k + 4]:
+        if x.slot == "relation":
+            return x.value == "ahead"
+        if x.slot in ("actor", "pronoun") and x.value != "ego":
+            return False
+    return False
+
+
+#: Lemmas of the verbs of keeping behind someone.
+_FOLLOW = frozenset({"follow", "tail", "trail"})
+
+
+def _follows(m) -> bool:
+    """Whether mention ``m`` is a verb of following: a follow behaviour, or "following" read as a place
+    behind someone ("a car following us")."""
+    if not (m.slot == "behaviour" and m.value[0] == "follow_vehicle") and not (
+        m.slot == "relation" and m.value == "behind"
+    ):
+        return False
+    return any(_FOLLOW & set(lemmas(w).get("VERB", ())) for w in m.words.split())
+
+
+def ego_follows(clauses: list) -> list:
+    """Clauses (link, mentions) with "the ego follows X" read as X ahead of the ego: the ego (named as
+    the subject) then a verb of following then a road user ("ego follow a e-scooter", "the EV follows
+    a lead vehicle", "ego following a city bus at 20 m"). Why: the verb of following says where the one
+    followed is, not what the ego does (the planner drives it); read as the ego's behaviour it was lost,
+    read as "following" of the next road user ("a car following us") it put the bus behind. The verb
+    becomes "ahead" said of the road user, right after it, as the reader reads "Following a truck"."""
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k in range(len(kept) - 2):
+            ego, verb, who = kept[k], kept[k + 1], kept[k + 2]
+            if ego.slot != "actor" or ego.value != "ego" or not _follows(verb):
+                continue
+            if who.slot != "actor" or who.value == "ego":
+                continue
+            ahead = replace(verb, slot="relation", value="ahead", words="following", start=who.end, prev=who.words)
+            kept[k + 1 : k + 3] = [who, ahead]
+        out.append((link, kept))
+    return out
 
 
 #: Compass headings in degrees, and the words that say them ("eastbound"; "heading east").
