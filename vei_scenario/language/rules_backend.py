@@ -232,6 +232,7 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
         retime_junction_runs(ego, adversaries, lanes, timed)
     if kind == "crossroad":
         stop_beyond_junction(ego, adversaries, stops_open)
+    hold_spawns_in_range(adversaries)
     layers = {
         "format": "vei-layers/1",
         "description": text,
@@ -559,12 +560,28 @@ def _default_speed(kind: str, relation: str, ego_speed: float) -> float:
     return 0.0 if relation.startswith("roadside") else 4.0
 
 
+def _within_range(lon: float) -> float:
+    return round(min(max(lon, -MIN_SPAWN_M), MAX_SPAWN_M), 3)
+
+
+def hold_spawns_in_range(adversaries: list[dict]) -> None:
+    """Every spawn within what the layers hold (-150 .. 250 m), once every step that places or moves
+    road users has run. Why here: parked cars that hide a crossing are set beside it and red-light
+    runners are timed again after :func:`place_adversary`'s own hold, so only a last pass over the
+    final spawns keeps all of them within the layers' range (a timing that asks for more starts as
+    far as they allow)."""
+    for adv in adversaries:
+        spawn = adv["spawn"]
+        if "longitudinal_m" in spawn:
+            spawn["longitudinal_m"] = _within_range(float(spawn["longitudinal_m"]))
+
+
 def place_adversary(*args, **kwargs) -> tuple[dict, float]:
     """:func:`_place_adversary`, its spawn held within what the layers can hold (-150 .. 250 m:
     a timing that asks for more, at a speed near the layers' limit, starts as far as they allow)."""
     spawn, speed = _place_adversary(*args, **kwargs)
     if "longitudinal_m" in spawn:
-        spawn["longitudinal_m"] = round(min(max(float(spawn["longitudinal_m"]), -MIN_SPAWN_M), MAX_SPAWN_M), 3)
+        spawn["longitudinal_m"] = _within_range(float(spawn["longitudinal_m"]))
     return spawn, speed
 
 
