@@ -228,6 +228,7 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
     start_m = ego.get("distance_m")
     _room_ahead_before_feature(ego, adversaries, kind)
     make_room_to_pull_out(ego, adversaries, lanes, kind == "roundabout")
+    make_room_to_roll_up(ego, adversaries)
     if ego.get("distance_m") != start_m:
         retime_junction_runs(ego, adversaries, lanes, timed)
     if kind == "crossroad":
@@ -437,6 +438,26 @@ def make_room_to_pull_out(ego: dict, adversaries: list[dict], lanes: int = 1, ri
             ego["distance_m"] = round(min(need, ARM_LENGTH_M - 20.0), 3)
 
 
+def make_room_to_roll_up(ego: dict, adversaries: list[dict]) -> None:
+    """The ego starts farther back by what it covers while a road user that turns across its path or
+    pulls out rolls up to its stop line (at its stated speed, braking at about 2 m/s²). Why: that
+    road user's setting off is timed from standing at its line; an ego that had come on meanwhile
+    would be past the distance at which it sets off, and their paths would not meet as said."""
+    if "distance_m" not in ego:
+        return
+    ego_speed = float(ego["speed_mps"])
+    rolling = [
+        float(a["speed_mps"])
+        for a in adversaries
+        if a["spawn"]["relation"].startswith("junction")
+        and float(a["speed_mps"]) > 0.5
+        and next(n for _, n in behaviour_nodes(a["behaviour"]))["behaviour"] in ("turn_across", "turn_into")
+    ]
+    if rolling:
+        brake_s = max(rolling) / 2.0 + 1.0  # (its braking, and a second to stand)
+        ego["distance_m"] = round(min(float(ego["distance_m"]) + ego_speed * brake_s, ARM_LENGTH_M - 20.0), 3)
+
+
 def stop_beyond_junction(ego: dict, adversaries: list[dict], names: set[str]) -> None:
     """A vehicle ahead of the ego that stops (``names``: when, the text leaves open), where someone
     meets the ego at its junction: it stops once through the junction, not on the ego's approach.
@@ -609,13 +630,14 @@ def _place_adversary(
 
         go_key = {"turn_across": "turn_speed_mps", "turn_into": "speed_mps", "give_way": "go_speed_mps"}[behaviour_name]
         length = TYPES[kind][0][0]
-        if speed is not None and speed > 0.5 and behaviour_name == "give_way":
-            # it rolls up to its stop line and brakes there at about 2 m/s²
+        if speed is not None and speed > 0.5 and behaviour_name != "give_way":
+            cfg.setdefault(go_key, round(speed, 3))  # its stated speed is the speed it goes at
+        if speed is not None and speed > 0.5:
+            # its stated speed is its speed: it rolls up to its stop line at it and brakes there at
+            # about 2 m/s² (what it does then is timed from standing)
             room = STOP_LINE_M + length / 2 + speed * speed / 4.0
             spawn["longitudinal_m"] = round(min(room, ARM_LENGTH_M - 5), 3)
             return spawn, round(speed, 3)
-        if speed is not None and speed > 0.5:
-            cfg.setdefault(go_key, round(speed, 3))  # its stated speed is the speed it goes at
         spawn["longitudinal_m"] = round(STOP_LINE_M + length / 2, 3)
         return spawn, 0.0
     if relation.startswith("roadside") and not vulnerable(kind) and behaviour_name == "cut_in":

@@ -13,6 +13,7 @@ classes' ranges are wider than that)."""
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 from vei_scenario.language.behaviours.base import (
     ActorContext,
@@ -89,4 +90,21 @@ def go_through(
     """Set off along the route that turns ``turn`` (seen by the actor) once the ego is within ``trigger_m``."""
     rate = min(accel, ctx.actor_max_accel_mps2 or accel)
     actions = [route_action(ctx, turn, own_view=True), speed_action(speed, rate=rate)]
-    return [Step(name, actions, conditions=[Condition("ego_near", round(trigger_m, 2))], delay_s=delay_s)]
+    steps = []
+    if rolls_up(ctx):  # rolling up to its stop line: it brakes to stand there first
+        to_line = max((ctx.junction_end_s_m or 0.0) - STOP_LINE_M - ctx.actor_s_m, 0.5)
+        v = ctx.actor_speed_mps
+        decel = max(ctx.max_decel(v * v / (2 * to_line)), 0.3)
+        steps.append(Step(f"{name}_brake", [speed_action(0.0, rate=decel)]))
+    steps.append(Step(name, actions, conditions=[Condition("ego_near", round(trigger_m, 2))], delay_s=delay_s))
+    return steps
+
+
+def rolls_up(ctx: ActorContext) -> bool:
+    """Whether the actor comes up to its stop line moving (its stated speed), not standing at it."""
+    return ctx.actor_speed_mps > 0.1 and ctx.junction_end_s_m is not None
+
+
+def from_standing(ctx: ActorContext) -> ActorContext:
+    """``ctx`` as the actor sets off: standing at its line (one that rolled up has braked there)."""
+    return replace(ctx, actor_speed_mps=0.0) if rolls_up(ctx) else ctx

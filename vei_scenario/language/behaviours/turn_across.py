@@ -6,7 +6,12 @@ point ``arrival_gap_s`` after it (negative: before it)."""
 from __future__ import annotations
 
 from vei_scenario.language.behaviours.base import ActorContext, Parameter, Step, value
-from vei_scenario.language.behaviours.junction_entry import ego_trigger_distance_m, go_through, lane_offset_m
+from vei_scenario.language.behaviours.junction_entry import (
+    ego_trigger_distance_m,
+    from_standing,
+    go_through,
+    lane_offset_m,
+)
 from vei_scenario.language.maps import JUNCTION_RADIUS_M
 
 NAME = "turn_across"
@@ -34,5 +39,5 @@ def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
     actor_path = 2.0 + r + lane_offset_m(ctx.ego_lane_id) + 5.0
     ego_path = r - lane_offset_m(1) - 2.0
     gap = value(cfg, PARAMETERS, "arrival_gap_s")
-    trigger = ego_trigger_distance_m(ctx, actor_path, ego_path, v, a, gap)
+    trigger = ego_trigger_distance_m(from_standing(ctx), actor_path, ego_path, v, a, gap)
     return go_through(ctx, "left", v, a, trigger, "turn_across")

@@ -10,6 +10,7 @@ from vei_scenario.language.behaviours.junction_entry import (
     RING_ARM_END_M,
     RING_QUARTER_M,
     ego_trigger_distance_m,
+    from_standing,
     go_through,
     lane_offset_m,
 )
@@ -39,11 +40,12 @@ def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
     actor_path, ego_path = paths_m(from_left, ctx.ego_lane_id, ring=ctx.map_kind == "roundabout")
     v = value(cfg, PARAMETERS, "speed_mps")
     a = value(cfg, PARAMETERS, "accel_mps2")
+    standing = from_standing(ctx)
     t_actor = time_to_join_s(
-        actor_path, cfg, ctx.actor_length_m, ctx.actor_max_speed_mps, ctx.actor_max_accel_mps2, ctx.actor_speed_mps
+        actor_path, cfg, ctx.actor_length_m, ctx.actor_max_speed_mps, ctx.actor_max_accel_mps2, standing.actor_speed_mps
     )
     gap = value(cfg, PARAMETERS, "arrival_gap_s")
-    trigger = ego_trigger_distance_m(ctx, actor_path, ego_path, min(v, JOIN_SPEED_CAP_MPS), a, gap, t_actor)
+    trigger = ego_trigger_distance_m(standing, actor_path, ego_path, min(v, JOIN_SPEED_CAP_MPS), a, gap, t_actor)
     return go_through(ctx, turn, v, a, trigger, "turn_into")
 
 
