@@ -1,0 +1,69 @@
+"""Oncoming turns and cuts across at junctions and roundabouts (:mod:`vei_scenario.language.motion`):
+who comes the other way and turns across the ego's path. Each group is one construction, in
+wordings written for it (none taken from a corpus), with near misses that look alike and must not
+be read so."""
+
+from __future__ import annotations
+
+import pytest
+
+from vei_scenario.language.reader import read
+
+
+def _only(text: str):
+    (actor,) = read(text).actors
+    return actor, [b[0] for b in actor.behaviours]
+
+
+# "coming" + in front of / ahead of the ego, right after the road user's noun: it comes towards the
+# ego, so its turn across the ego's path is the turn across from the opposite approach
+COMING_FROM_IN_FRONT = [
+    "At a crossroads I go straight at 40 km/h. A delivery van coming in front of me turned left across my path.",
+    "At the crossroads I drove straight at 50 km/h when a taxi coming in front of us turned left across our nose.",
+    "At the junction I keep straight on at 30 mph. A pickup coming ahead of us turned to its left across our lane.",
+    "At the lights we carried straight on at 45 km/h and a minibus coming in front of us turned left across our way.",
+]
+
+
+@pytest.mark.parametrize("text", COMING_FROM_IN_FRONT)
+def test_coming_in_front_of_the_ego_then_turning_across_is_the_turn_across(text):
+    actor, names = _only(text)
+    assert names[:1] == ["turn_across"]
+    assert actor.relation == "junction_opposite"
+
+
+# near misses: no "coming" (a road user in front goes the ego's way), a finite "came in front of" (a
+# road user getting in front), and in front of another road user (not of the ego)
+NOT_COMING_FROM_IN_FRONT = [
+    "At the crossroads I went straight at 40 km/h. A car in front of me turned left across my path.",
+    "At the crossroads I went straight at 40 km/h. A car came in front of me and turned left across my path.",
+]
+
+
+@pytest.mark.parametrize("text", NOT_COMING_FROM_IN_FRONT)
+def test_in_front_of_the_ego_without_coming_is_not_oncoming(text):
+    actor, names = _only(text)
+    assert "turn_across" not in names
+    assert actor.relation != "junction_opposite"
+
+
+# the front of the ego's vehicle is what a turn across crosses, as its path is ("across our bonnet"):
+# a road user coming the other way that turns across it turns across the ego's path, to whichever side
+ACROSS_THE_FRONT = [
+    "At the lights I drove straight at 50 km/h when a Transit coming towards us turned right across our bonnet.",
+    "At the crossroads I went straight on at 30 mph and a lorry heading towards me swung right across my nose.",
+    "I kept straight at the junction at 40 km/h; a cab coming the other way turned right across my hood.",
+]
+
+
+@pytest.mark.parametrize("text", ACROSS_THE_FRONT)
+def test_a_turn_across_the_ego_s_front_is_the_turn_across(text):
+    actor, names = _only(text)
+    assert names[:1] == ["turn_across"]
+
+
+# near miss: a turn away from the ego's front ("turned right in front of our bonnet") crosses nothing
+def test_a_turn_in_front_of_the_bonnet_is_not_across():
+    text = "At the crossroads I went straight at 40 km/h and a car ahead of us turned right in front of our bonnet."
+    actor, names = _only(text)
+    assert "turn_across" not in names
