@@ -67,3 +67,37 @@ def test_a_turn_in_front_of_the_bonnet_is_not_across():
     text = "At the crossroads I went straight at 40 km/h and a car ahead of us turned right in front of our bonnet."
     actor, names = _only(text)
     assert "turn_across" not in names
+
+
+# a verb the reader has no word for + "into" + the ego or a part of it ("banged into my car",
+# "slammed into my door") is a hit, not a move into a lane: a rider from the opposite approach that
+# goes straight on and hits the turning ego keeps going towards it
+HITS_INTO_THE_EGO = [
+    "At the crossroads I was turning right at 15 km/h. A scooter came from the opposite side and banged into my car.",
+    "At the crossroads I was turning right at 15 km/h. A cyclist from the other side went straight on and"
+    " slammed into my door.",
+    "At the crossroads I was turning right at 15 km/h. A scooter from the opposite side rode straight and"
+    " bumped into us.",
+]
+
+
+@pytest.mark.parametrize("text", HITS_INTO_THE_EGO)
+def test_an_unknown_verb_into_the_ego_is_a_hit_not_a_cut_in(text):
+    reading = read(text)
+    (actor,) = reading.actors
+    assert [b[0] for b in actor.behaviours] == ["keep_going"]
+    assert actor.relation == "junction_opposite"
+    assert reading.intent == "collision"
+
+
+# near misses: the same kind of verb + "into" + the ego's lane or path is a move into it
+INTO_THE_EGO_S_WAY = [
+    "On the dual carriageway at 80 km/h a lorry to my right barged into my lane.",
+    "On the dual carriageway at 80 km/h a lorry to my right nosed into my path.",
+]
+
+
+@pytest.mark.parametrize("text", INTO_THE_EGO_S_WAY)
+def test_an_unknown_verb_into_the_ego_s_lane_is_a_cut_in(text):
+    _, names = _only(text)
+    assert names == ["cut_in"]
