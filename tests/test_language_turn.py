@@ -101,3 +101,32 @@ INTO_THE_EGO_S_WAY = [
 def test_an_unknown_verb_into_the_ego_s_lane_is_a_cut_in(text):
     _, names = _only(text)
     assert names == ["cut_in"]
+
+
+# a move out made to pass ("swung out to overtake", "moved out to pass") by a road user ahead is the
+# start of its overtake, not a pull-out across the ego's way (nor running a light)
+OUT_TO_PASS = [
+    "On the country road at 60 km/h the van ahead of me swung out to overtake a tractor.",
+    "I was doing 40 mph behind a car which suddenly swung out to overtake a cyclist.",
+    "On the B-road at 70 km/h the lorry in front of us moved out to pass a horse rider.",
+]
+
+
+@pytest.mark.parametrize("text", OUT_TO_PASS)
+def test_a_move_out_to_pass_is_the_overtake(text):
+    actor = read(text).actors[0]
+    names = [b[0] for b in actor.behaviours]
+    assert "overtake" in names and "run_red_light" not in names and "cross_in_front" not in names
+
+
+# near misses: out of a side road, then a pass, is a pull-out first; out to turn is no pass
+NOT_OUT_TO_PASS = [
+    "A car swung out of a side road to my left and overtook a cyclist at 30 km/h.",
+    "At 40 km/h on the main road a van ahead of me swung out to turn right into a yard.",
+]
+
+
+@pytest.mark.parametrize("text", NOT_OUT_TO_PASS)
+def test_a_move_out_not_made_to_pass_is_no_overtake_alone(text):
+    names = [b[0] for b in read(text).actors[0].behaviours]
+    assert names != ["overtake"]

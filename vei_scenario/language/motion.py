@@ -1103,7 +1103,7 @@ def chains(clauses: list, tokens: list[str]) -> list:
     made abruptly as a sudden stop (:func:`hard_stops`); one coming along in the ego's lane as coming
     at it (:func:`coming_in_the_ego_lane`)."""
     clauses = hard_stops(weather_not_behaviour(room_to_act_not_behaviour(clauses, tokens)), tokens)
-    clauses = coming_from_in_front(a_left_or_a_right(clauses, tokens), tokens)
+    clauses = coming_from_in_front(moving_out_to_pass(a_left_or_a_right(clauses, tokens), tokens), tokens)
     clauses = across_to_turn(turning_to_a_side(clauses, tokens))
     clauses = there_is_a_new_one(parked_in_the_lane(state_before_its_noun(clauses, tokens), tokens), tokens)
     clauses = coming_in_the_ego_lane(passes_while_the_ego_yields(follows_the_ego(clauses, tokens)))
@@ -1313,6 +1313,25 @@ def coming_in_the_ego_lane(clauses: list) -> list:
 #: What of the ego a turn crosses, after "across" and its owner ("across my path", "across our bonnet"):
 #: its way, or the front of the vehicle that meets what turns over it.
 _ACROSS_WAYS = frozenset(("path", "way", "lane", "lanes", "side", "front", "nose", "bonnet", "hood"))
+
+
+def moving_out_to_pass(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a move out said to be made to pass ("swung out to overtake a tractor", "pulled
+    out to pass the bus") read as the pass alone: "to" + the pass says what the move out is for, so
+    it is the start of the overtake, not a pull-out across the ego's way from a side road."""
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k, m in enumerate(mentions[:-1]):
+            nxt = mentions[k + 1]
+            if m.slot != "behaviour" or m.value[0] != "cross_in_front" or m.words.split()[-1] != "out":
+                continue  # (a move out read as a cut-in, "out to overtake, right into our path", stays)
+            if tokens[m.end : m.end + 1] != ["to"]:
+                continue
+            if nxt.slot == "behaviour" and nxt.value[0] == "overtake" and nxt.start == m.end + 1:
+                kept.remove(m)
+        out.append((link, kept))
+    return out
 
 
 def coming_from_in_front(clauses: list, tokens: list[str]) -> list:
