@@ -1103,7 +1103,8 @@ def chains(clauses: list, tokens: list[str]) -> list:
     made abruptly as a sudden stop (:func:`hard_stops`); one coming along in the ego's lane as coming
     at it (:func:`coming_in_the_ego_lane`)."""
     clauses = hard_stops(weather_not_behaviour(room_to_act_not_behaviour(clauses, tokens)), tokens)
-    clauses = across_to_turn(turning_to_a_side(a_left_or_a_right(clauses, tokens), tokens))
+    clauses = coming_from_in_front(moving_out_to_pass(a_left_or_a_right(clauses, tokens), tokens), tokens)
+    clauses = across_to_turn(turning_to_a_side(clauses, tokens))
     clauses = there_is_a_new_one(parked_in_the_lane(state_before_its_noun(clauses, tokens), tokens), tokens)
     clauses = coming_in_the_ego_lane(passes_while_the_ego_yields(follows_the_ego(clauses, tokens)))
     clauses = passing_in_front(out_into_the_road(clauses, tokens), tokens)
@@ -1309,8 +1310,52 @@ def coming_in_the_ego_lane(clauses: list) -> list:
     return out
 
 
-#: Words that own a way as the ego's, before "path", "way" or "lane" ("across my path", "the ego's way").
-_ACROSS_WAYS = frozenset(("path", "way", "lane", "lanes", "side"))
+#: What of the ego a turn crosses, after "across" and its owner ("across my path", "across our bonnet"):
+#: its way, or the front of the vehicle that meets what turns over it.
+_ACROSS_WAYS = frozenset(("path", "way", "lane", "lanes", "side", "front", "nose", "bonnet", "hood"))
+
+
+def moving_out_to_pass(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a move out said to be made to pass ("swung out to overtake a tractor", "pulled
+    out to pass the bus") read as the pass alone: "to" + the pass says what the move out is for, so
+    it is the start of the overtake, not a pull-out across the ego's way from a side road."""
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k, m in enumerate(mentions[:-1]):
+            nxt = mentions[k + 1]
+            if m.slot != "behaviour" or m.value[0] != "cross_in_front" or m.words.split()[-1] != "out":
+                continue  # (a move out read as a cut-in, "out to overtake, right into our path", stays)
+            if tokens[m.end : m.end + 1] != ["to"]:
+                continue
+            if nxt.slot == "behaviour" and nxt.value[0] == "overtake" and nxt.start == m.end + 1:
+                kept.remove(m)
+        out.append((link, kept))
+    return out
+
+
+def coming_from_in_front(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a road user described by "coming" + in front of / ahead of the ego ("a van
+    coming in front of me", "a lorry coming ahead of us") read as coming towards the ego: "come" is
+    motion towards the one telling, and from in front of the ego that is from the other way. Only
+    the participle right after its noun counts: "a car came in front of me" (a finite verb) is one
+    getting in front, a cut-in, and a place said before "coming" is not where the motion comes from."""
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k, m in enumerate(mentions):
+            if m.slot != "actor" or m.value == "ego" or tokens[m.end : m.end + 1] != ["coming"]:
+                continue
+            place = next((x for x in mentions[k + 1 :] if x.start > m.end), None)
+            if place is None or place.slot != "relation" or place.value != "ahead" or place.start != m.end + 1:
+                continue
+            j = tokens.index("of", place.start) + 1 if "of" in tokens[place.start : place.start + 3] else -1
+            if j < 0 or j >= len(tokens) or tokens[j] not in _EGO_WORDS:
+                continue  # ("coming in front of the bus": ahead of another road user, not of the ego)
+            kept[kept.index(place)] = replace(place, value="oncoming")
+            break
+        out.append((link, kept))
+    return out
 
 
 def _across_the_ego(tokens: list[str], j: int) -> bool:

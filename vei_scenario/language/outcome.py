@@ -380,6 +380,13 @@ def _verbal(words: list[str], i: int) -> bool:
     return prev in _VERBAL_BEFORE or nxt in {"the", "a", "an", "into", "with"} | _POSSESSIVES | _PERSON_OBJECTS
 
 
+def into_road_user(words: list[str], j: int) -> bool:
+    """Whether "into" at ``j`` has a road user or thing met as object (see :func:`_into_road_user`):
+    a verb the reader lacks + such "into" ("banged into my car", "ploughed into us") is a collision,
+    not a move into a place."""
+    return _into_road_user(words, j)
+
+
 def _into_road_user(words: list[str], j: int) -> bool:
     """Whether "into" at ``j`` has a thing met as object ("into the side of it", "into him", "into the
     back of the van", "into the pallets"), not a place ("into my lane", "into the side road")."""

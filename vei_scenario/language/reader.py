@@ -62,7 +62,7 @@ from vei_scenario.language.motion import (
 )
 from vei_scenario.language.ncap import rewrite as ncap_rewrite
 from vei_scenario.language.normalise import NUMBER_WORDS, normalise
-from vei_scenario.language.outcome import decide, outcome_cues
+from vei_scenario.language.outcome import decide, into_road_user, outcome_cues
 from vei_scenario.language.reading import ActorSpec, NotUnderstood, Reading
 from vei_scenario.language.route import ego_route
 from vei_scenario.language.scene import only_the_scene
@@ -671,6 +671,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             and i + 1 < len(tokens)
             and not to_a_stop
             and _verb_before(tok, tokens[i + 1])
+            and not (tokens[i + 1] == "into" and into_road_user(tokens, i + 1))  # ("banged into my car": a hit)
         ):
             # a verb the lexicon lacks, with where it goes ("swung into my lane", "bolted across the road"):
             # read as the plain motion verb with the same words, when that is a behaviour
