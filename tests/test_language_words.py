@@ -60,3 +60,33 @@ def test_side_after_a_determiner_is_kept():
         "right",
         "junction_right",
     )
+
+
+@pytest.mark.parametrize(
+    "text, ego, each",
+    [
+        ("Two skateboarders were ahead of me on the hill. I was rolling at 30 km/h and they were at about 12.", 30, 12),
+        ("A pair of horses ahead of us on the lane; we were doing 25 mph, they were at barely 5 mph.", 25, 5),
+        ("Four joggers were ahead along the kerb. I was at 20 km/h and they were running at 10 km/h.", 20, 10),
+    ],
+)
+def test_they_after_the_narrators_speed_is_the_group(text, ego, each):
+    """ "they" beside the narrator's own speed names the group said before: each of it takes the speed."""
+    r = read(text)
+    unit = 0.44704 if "mph" in text else 1 / 3.6
+    assert r.ego_speed_mps == pytest.approx(ego * unit)
+    assert [a.speed_mps for a in r.actors] == pytest.approx([each * unit] * len(r.actors))
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # near misses: "we" is the narrator's party, "them" an object: neither gives the group a speed
+        "Two cyclists were ahead of us. We were doing 40 km/h and we passed them.",
+        "Two cyclists were ahead of me; I was at 40 km/h when I overtook them.",
+    ],
+)
+def test_the_narrators_speed_stays_the_narrators(text):
+    r = read(text)
+    assert r.ego_speed_mps == pytest.approx(40 / 3.6)
+    assert all(a.speed_mps is None for a in r.actors)
