@@ -1877,3 +1877,10 @@ def resolve(
     tokens = _relative_of_ego(tokens)
     tokens = _mentions_again(tokens, kind_at, known)
     return tokens, dropped
+
+
+def others_named(pronoun: str, narrator_subject: bool, group: list | None) -> bool:
+    """Whether "they" said where the narrator ("I", "we") is the clause's subject so far names the group
+    of road users said before ("two e-scooters ahead ... I'm going 40 km/h, they're doing around 20"):
+    a narrator's own party is "we", so "they" is the others; and a group was named to be them."""
+    return pronoun == "they" and narrator_subject and bool(group)

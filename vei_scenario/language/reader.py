@@ -628,6 +628,10 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             clauses[-1][1].append(_Mention("relation", "oncoming", words, i, prev, end=towards, det=det))
             i = towards
             continue
+        if tok in ("left", "right") and len(_best(tokens, i) or ()) <= 1 and sides.not_a_side(tokens, i):
+            ignored.append(tok)  # ("cut right across", "as we left the roundabout": no side)
+            i += 1
+            continue
         said = sides.phrase_at(tokens, i, left_hand, ring)
         if said is not None:  # a lane, kerb or arm and its side ("in the offside lane", "a side road on my left")
             words = " ".join(tokens[said.start : said.end])
@@ -648,6 +652,8 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
                 key = key[:1]
         adverb = toward_at = None  # (toward_at: where the side it moves to is said)
         just_right = tokens[i + 1 : i + 2] == ["right"] and tokens[i + 2 : i + 3] and tokens[i + 2] in _RIGHT_BEFORE
+        stressed = not just_right and i + 2 < len(tokens) and sides.not_a_side(tokens, i + 1)
+        just_right = just_right or stressed
         if (
             (key is None or len(key) == 1)
             and i + 2 < len(tokens)
@@ -658,6 +664,11 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             skipped = _best(tokens[: i + 1] + tokens[i + 2 :], i)
             if skipped is not None and len(skipped) > 1 and TABLE[skipped][0] == "behaviour":
                 key, toward_at = skipped, i + 1
+        if (key is None or len(key) == 1) and toward_at is None and stressed:
+            # "pulled right out": the verb's phrase around a stressing "right"
+            skipped = _best(tokens[: i + 1] + tokens[i + 2 :], i)
+            if skipped is not None and len(skipped) > 1 and TABLE[skipped][0] == "behaviour":
+                key, adverb = skipped, tokens[i + 1]
         if (key is None or len(key) == 1) and toward_at is None and i + 2 < len(tokens) and _adverb(tokens[i + 1]):
             # "walks slowly across": the phrase around an adverb, and the adverb on its own
             skipped = _best(tokens[: i + 1] + tokens[i + 2 :], i)
@@ -832,7 +843,8 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
         nxt = tokens[i + used] if i + used < len(tokens) else ""
         after = tokens[i + used + 1] if i + used + 1 < len(tokens) else ""
         if slot == "behaviour" and value[0] in _SIDEWAYS and toward_at is None and nxt in ("left", "right"):
-            if after not in _RIGHT_BEFORE:  # "merges right from the middle lane" (not "cuts in right in front")
+            if after not in _RIGHT_BEFORE and not sides.not_a_side(tokens, i + used):  # ("merges right from the
+                # middle lane", not "cuts in right in front")
                 toward_at = i + used
         if slot in ("sequence", "parallel") and (det or tokens[i + used : i + used + 1] == ["to"]):
             i += used  # "from the next entry", "next to me": a word of order before a noun or "to", no new clause
@@ -1348,6 +1360,8 @@ def _read(text: str) -> Reading:
                         and verb.slot in ("to_stop", "unknown_verb")
                     ):
                         who = actors[-1]  # ("We were following the bus when it pulled to a stop": not us)
+                    if discourse.others_named(m.words, who == "ego" and ego_is_a_person, group or last_group):
+                        who = (group or last_group)[-1]  # ("I was at 40, they were doing 20": the group, not us)
                     if m.words in ("he", "she"):  # a person's pronoun names the same one all through a story
                         if who == "ego" and ego_is_a_person and actors and m.words not in bound:
                             who = actors[-1]  # (the narrator is "I": "he" is someone else)

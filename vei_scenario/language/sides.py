@@ -976,3 +976,44 @@ def place_after_degree(tokens: list[str], i: int, key: tuple[str, ...], place_at
         return None
     used = place_at(tokens, i + 1)
     return i + 1 + used if used and 1 + used >= len(key) else None
+
+
+#: Particles and prepositions "right" can stress ("pulled right out", "came right up behind me"): before
+#: one of these, after a verb that does not say a heading, "right" means "just". ("right across", "right
+#: at" are read with the verb before them, by the reader's own list.)
+_STRESSED = frozenset(
+    {"out", "up", "into", "onto", "through", "over", "past", "under", "off", "down", "along",
+     "round", "around", "beside", "alongside", "away", "back", "behind", "toward", "towards", "in", "on"}
+)  # fmt: skip
+#: Verbs whose "left"/"right" is the way they head ("turned right into", "swerved right onto").
+_HEADING = frozenset({"turn", "veer", "swerve", "steer", "swing", "bear", "head", "move", "merge", "drift", "keep"})
+#: Words before a side that make it a place ("to the right", "on my right", "from right across").
+_SIDE_OPENERS = _DETERMINERS | _OPENING | {"'s", "hand", "far", "hard", "sharp", "slightly"}
+#: Subjects and perfect auxiliaries "left" the verb follows ("as we left", "she had just left").
+_LEAVERS = frozenset(
+    {"i", "we", "he", "she", "they", "you", "it", "had", "has", "have", "'d", "'ve", "just", "already", "then",
+     "finally", "recently", "who", "that"}
+)  # fmt: skip
+_LEFT_OBJECTS = _DETERMINERS | {"me", "us", "him", "them", "it", "home", "work", "town"}
+
+
+def not_a_side(tokens: list[str], i: int) -> bool:
+    """Whether "left" or "right" at token ``i`` is another word than a side. Why: both are common words
+    of other classes, and read as a side they place a road user on the wrong side or turn the ego:
+
+    - "right" stressing a particle or preposition ("pulled right out", "came right up behind me", "ran
+      right past my mirror"): unless a determiner or preposition says it is a place ("to the
+      right across the road") or the verb before says a heading ("turned right into the side road");
+    - "left" the past of "leave", after a subject or a perfect auxiliary and before what was left ("as we
+      left the roundabout", "she had just left the car park"), never after a determiner ("on the left
+      the van") or a heading verb ("turn left the moment ...")."""
+    word = tokens[i]
+    prev = tokens[i - 1] if i else ""
+    nxt = tokens[i + 1] if i + 1 < len(tokens) else ""
+    if word == "right":
+        if nxt not in _STRESSED or not prev or prev in _SIDE_OPENERS:
+            return False
+        return not (set(lemmas(prev).get("VERB", ())) & _HEADING)
+    if word == "left":
+        return prev in _LEAVERS and nxt in _LEFT_OBJECTS
+    return False
