@@ -865,3 +865,33 @@ def test_the_writers_own_organisation_vehicle_is_the_ego(text, kinds):
 )
 def test_a_company_vehicle_met_or_placed_stays_a_road_user(text):
     assert _kinds(text) == ["van"]
+
+
+# A vehicle set in apposition to an ego phrase of any form ("the host vehicle, a ...,"), its make,
+# model and modifiers of any length, is the ego, no second road user; its speed is the ego's.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("The host vehicle, a Dacia Sandero, approaches a junction at 30 km/h and a truck turns across "
+         "its path.", ["truck"], 30.0),
+        ("The vehicle under test, a dark blue Nissan Leaf hatchback, drove at 40 km/h when a cyclist "
+         "swerved in from the right.", ["bicycle"], 40.0),
+        ("The reporting vehicle, an elderly Volvo estate car, was doing 25 mph; a jogger stepped off the "
+         "kerb on the left.", ["pedestrian"], 40.2),
+    ],
+)  # fmt: skip
+def test_a_vehicle_in_apposition_to_any_ego_phrase_is_the_ego(text, kinds, kph):
+    assert _kinds(text) == kinds
+    assert _ego_kph(text) == kph
+
+
+# Near misses: after the comma a road user with its own verb, or a person, is someone else.
+@pytest.mark.parametrize(
+    "text, kinds",
+    [
+        ("The host vehicle waits at 0 km/h, a Dacia Sandero overtakes it on the right.", ["car"]),
+        ("Behind the test vehicle, a light grey minibus slows and then stops.", ["van"]),
+    ],
+)  # fmt: skip
+def test_a_road_user_after_an_ego_phrase_and_a_comma_stays_a_road_user(text, kinds):
+    assert sorted(_kinds(text)) == sorted(kinds)
