@@ -895,3 +895,41 @@ def test_a_vehicle_in_apposition_to_any_ego_phrase_is_the_ego(text, kinds, kph):
 )  # fmt: skip
 def test_a_road_user_after_an_ego_phrase_and_a_comma_stays_a_road_user(text, kinds):
     assert sorted(_kinds(text)) == sorted(kinds)
+
+
+# "The driver" in a report whose ego is named by a role and is the only driven vehicle so far is the
+# ego's driver (a walker or rider has no driver), not one more car.
+@pytest.mark.parametrize(
+    "text, kinds",
+    [
+        ("The test vehicle was moving at 30 km/h. A child ran out from behind a hedge on the left. The "
+         "driver swerved and stopped.", ["pedestrian"]),
+        ("The subject vehicle turned left at 12 km/h. A cyclist came up on its inside and the driver "
+         "braked.", ["bicycle"]),
+        ("Host vehicle at 45 km/h on a rural road. An e-scooter rider veered out from the right; the "
+         "driver steered away.", ["e-scooter"]),
+    ],
+)  # fmt: skip
+def test_the_driver_after_a_role_ego_and_riders_only_is_the_ego(text, kinds):
+    assert _kinds(text) == kinds
+
+
+# Near misses: a driven vehicle named before "the driver" owns it; "the driver of" names its vehicle.
+@pytest.mark.parametrize(
+    "text, kinds",
+    [
+        ("The test vehicle was moving at 30 km/h. A minibus pulled out from the left. The driver "
+         "had not looked.", ["van"]),
+        ("The subject vehicle turned left at 12 km/h; the driver of a parked lorry opened his door.",
+         ["truck"]),
+        ("A taxi overtook the test vehicle at 50 km/h. The driver then braked hard.", ["car"]),
+    ],
+)  # fmt: skip
+def test_the_driver_of_another_vehicle_stays_that_vehicle(text, kinds):
+    assert _kinds(text) == kinds
+
+
+def test_the_driver_after_an_ego_described_in_apposition_is_the_ego():
+    text = ("The host vehicle, a silver Toyota Prius taxi, was travelling at 40 km/h. A cyclist cut in "
+            "from the left and the driver braked.")  # fmt: skip
+    assert _kinds(text) == ["bicycle"]
