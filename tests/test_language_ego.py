@@ -865,3 +865,71 @@ def test_the_writers_own_organisation_vehicle_is_the_ego(text, kinds):
 )
 def test_a_company_vehicle_met_or_placed_stays_a_road_user(text):
     assert _kinds(text) == ["van"]
+
+
+# A vehicle set in apposition to an ego phrase of any form ("the host vehicle, a ...,"), its make,
+# model and modifiers of any length, is the ego, no second road user; its speed is the ego's.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("The host vehicle, a Dacia Sandero, approaches a junction at 30 km/h and a truck turns across "
+         "its path.", ["truck"], 30.0),
+        ("The vehicle under test, a dark blue Nissan Leaf hatchback, drove at 40 km/h when a cyclist "
+         "swerved in from the right.", ["bicycle"], 40.0),
+        ("The reporting vehicle, an elderly Volvo estate car, was doing 25 mph; a jogger stepped off the "
+         "kerb on the left.", ["pedestrian"], 40.2),
+    ],
+)  # fmt: skip
+def test_a_vehicle_in_apposition_to_any_ego_phrase_is_the_ego(text, kinds, kph):
+    assert _kinds(text) == kinds
+    assert _ego_kph(text) == kph
+
+
+# Near misses: after the comma a road user with its own verb, or a person, is someone else.
+@pytest.mark.parametrize(
+    "text, kinds",
+    [
+        ("The host vehicle waits at 0 km/h, a Dacia Sandero overtakes it on the right.", ["car"]),
+        ("Behind the test vehicle, a light grey minibus slows and then stops.", ["van"]),
+    ],
+)  # fmt: skip
+def test_a_road_user_after_an_ego_phrase_and_a_comma_stays_a_road_user(text, kinds):
+    assert sorted(_kinds(text)) == sorted(kinds)
+
+
+# "The driver" in a report whose ego is named by a role and is the only driven vehicle so far is the
+# ego's driver (a walker or rider has no driver), not one more car.
+@pytest.mark.parametrize(
+    "text, kinds",
+    [
+        ("The test vehicle was moving at 30 km/h. A child ran out from behind a hedge on the left. The "
+         "driver swerved and stopped.", ["pedestrian"]),
+        ("The subject vehicle turned left at 12 km/h. A cyclist came up on its inside and the driver "
+         "braked.", ["bicycle"]),
+        ("Host vehicle at 45 km/h on a rural road. An e-scooter rider veered out from the right; the "
+         "driver steered away.", ["e-scooter"]),
+    ],
+)  # fmt: skip
+def test_the_driver_after_a_role_ego_and_riders_only_is_the_ego(text, kinds):
+    assert _kinds(text) == kinds
+
+
+# Near misses: a driven vehicle named before "the driver" owns it; "the driver of" names its vehicle.
+@pytest.mark.parametrize(
+    "text, kinds",
+    [
+        ("The test vehicle was moving at 30 km/h. A minibus pulled out from the left. The driver "
+         "had not looked.", ["van"]),
+        ("The subject vehicle turned left at 12 km/h; the driver of a parked lorry opened his door.",
+         ["truck"]),
+        ("A taxi overtook the test vehicle at 50 km/h. The driver then braked hard.", ["car"]),
+    ],
+)  # fmt: skip
+def test_the_driver_of_another_vehicle_stays_that_vehicle(text, kinds):
+    assert _kinds(text) == kinds
+
+
+def test_the_driver_after_an_ego_described_in_apposition_is_the_ego():
+    text = ("The host vehicle, a silver Toyota Prius taxi, was travelling at 40 km/h. A cyclist cut in "
+            "from the left and the driver braked.")  # fmt: skip
+    assert _kinds(text) == ["bicycle"]

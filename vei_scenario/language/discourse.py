@@ -513,16 +513,19 @@ def _narrators_people(tokens: list[str], kind_at: KindAt, dropped: list[str]) ->
 COLOURS = frozenset(
     "white black grey gray silver red blue green yellow orange brown purple pink gold beige maroon navy".split()
 )
+#: Shades, a closed class: before a colour they are part of it ("a dark blue Leaf"), whatever the reader
+#: reads them as alone ("dark" evening, "light" traffic).
+SHADES = frozenset({"dark", "light", "pale", "bright", "deep"})
 
 
-def _apposition_end(tokens: list[str], i: int, kind_at: KindAt, known: Known) -> int | None:
+def _apposition_end(tokens: list[str], i: int, kind_at: KindAt, known: Known, most: int = 3) -> int | None:
     """Where an apposition starting at ``i`` ends (", a tiny Fiat," / "a battered old Ford"): an
-    indefinite article, up to three words that are vehicle nouns or words the reader has no phrase
+    indefinite article, up to ``most`` words that are vehicle nouns or words the reader has no phrase
     for, then a punctuation mark or the end."""
     j = i + 1 if i < len(tokens) and tokens[i] == "," else i
     if j >= len(tokens) or tokens[j] not in ("a", "an"):
         return None
-    for k in range(j + 1, min(j + 5, len(tokens) + 1)):
+    for k in range(j + 1, min(j + most + 2, len(tokens) + 1)):
         if k == len(tokens) or tokens[k] in PUNCT:
             found = [kind_at(tokens, h) for h in range(j + 1, k)]
             if any(f is not None and f[0] not in VEHICLES for f in found):
@@ -533,7 +536,7 @@ def _apposition_end(tokens: list[str], i: int, kind_at: KindAt, known: Known) ->
         year = number and nxt.isalpha() and nxt not in UNITS_AFTER | SPEED_UNITS | {"kph", "kmh"}
         if year:
             continue
-        modifier = tokens[k] in COLOURS and nxt not in PUNCT
+        modifier = (tokens[k] in COLOURS or (tokens[k] in SHADES and nxt in COLOURS)) and nxt not in PUNCT
         if not tokens[k].replace("-", "").isalpha() or (
             known(tokens, k) and kind_at(tokens, k) is None and not modifier
         ):
@@ -632,18 +635,27 @@ def _said_again_as_ego(tokens: list[str], start: int, noun: list[str], kind_at: 
 
 
 def _ego_apposition(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
-    """ "the ego, an estate car, travels ...", "Vehicle 1 (V1), a Ford Focus, ...": a vehicle said in
-    apposition to the ego is the ego, no second road user."""
+    """ "the ego, an estate car, travels ...", "Vehicle 1 (V1), a Ford Focus, ...", "the host vehicle,
+    a dark blue Nissan Leaf hatchback, ...": a vehicle said in apposition to the ego, by any of its
+    names but a pronoun, is the ego, no second road user. A report describes its own vehicle at length
+    (colour, make, model, body), so the apposition may run to five words; it must still close with a
+    punctuation mark and name nothing but a vehicle, so ", a car overtakes" stays a clause."""
     out = list(tokens)
     i = 0
     while i + 1 < len(out):
-        if out[i : i + 2] == ["the", "ego"] and i + 2 < len(out) and out[i + 2] == ",":
-            end = _apposition_end(out, i + 2, kind_at, known)
+        found = kind_at(out, i)
+        n = found[1] if found is not None and found[0] == "ego" and out[i] not in PRONOUNS_EGO else 0
+        if n and i + n < len(out) and out[i + n] == ",":
+            end = _apposition_end(out, i + n, kind_at, known, most=5)
             if end is not None:
-                dropped.extend(out[i + 3 : end])
-                del out[i + 2 : end]
-        i += 1
+                dropped.extend(out[i + n + 1 : end])
+                del out[i + n : end]
+        i += max(n, 1)
     return out
+
+
+#: The ego's pronouns, which take no apposition of a vehicle ("we, a family of four, ...").
+PRONOUNS_EGO = frozenset({"i", "we", "me", "us"})
 
 
 #: Words of a placement after a road user's noun ("the van behind me", "the lorry in the next lane").

@@ -1063,6 +1063,38 @@ def _organisation_vehicle(tokens: list[str], kind_at: KindAt, known: Known, drop
 
 
 def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """``tokens`` framed (see :func:`_frame`), then "the driver" of an ego named by a role said the
+    ego (see :func:`_role_driver`)."""
+    return _role_driver(_frame(tokens, kind_at, known, dropped), kind_at, known, dropped)
+
+
+def _role_driver(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "The test vehicle was moving ... A child ran out ... The driver swerved": where the ego is named
+    by a role (not a narrator's pronoun), "the driver" said after it is the ego's driver until another
+    motor vehicle is named, since walkers and riders have no driver (see :func:`_driver_is_ego`)."""
+    first = next((p for p in _road_users(tokens, kind_at, known) if p.kind == "ego"), None)
+    if first is None or any(w in FIRST_PERSON | NARRATOR_INVOLVED - {"ego"} for w in tokens):
+        return tokens
+    if any(p.kind in VEHICLES for p in _road_users(tokens[: first.start], kind_at, known)):
+        return tokens  # ("A lorry overtook the test vehicle. The driver ...": whose is unclear)
+    from vei_scenario.language.discourse import _apposition_end
+
+    said = _apposition_end(tokens, first.end, kind_at, known, most=5) or first.end  # (", a Skoda estate,")
+    out = list(tokens)
+    for p in reversed(_road_users(out, kind_at, known)):
+        if p.start < first.end or out[p.start : p.end] != ["the", "driver"] or out[p.end : p.end + 1] == ["of"]:
+            continue
+        if (p.start and out[p.start - 1] == "'s") or _placed(out, p):
+            continue
+        users = _road_users(out[: p.start], kind_at, known)
+        if any(q.kind in VEHICLES and q.start >= said and out[q.start : q.end] != ["the", "driver"] for q in users):
+            continue  # (a motor vehicle named before: the driver may be its)
+        dropped.append("driver")
+        out[p.start : p.end] = ["the", "ego"]
+    return out
+
+
+def _frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """``tokens`` with the road user the text is told from said "the ego" where the text names it by
     a role, by its driver or in the third person (see the module's docstring); the words that only
     named it are added to ``dropped``. The reader runs it before :func:`discourse.resolve` (which this
