@@ -47,6 +47,8 @@ FIRST = {
     "language_independent_q.json": ((45, 45, 17, 41), "sealed until the reader's last change"),
     "language_independent_r.json": ((50, 50, 8, 41), "measured when written"),
     "language_independent_s.json": ((50, 50, 22, 47), "measured when written"),
+    "language_independent_t.json": ((45, 44, 15, 40), "sealed until the reader's last change"),
+    "language_independent_u.json": ((45, 45, 21, 42), "sealed until the reader's last change"),
 }
 
 
