@@ -340,6 +340,20 @@ WAITING = ("turn_across", "turn_into", "give_way")
 AT_JUNCTION = ("run_red_light", "turn_across", "turn_into", "give_way", "forced_turn")
 
 
+def _first_node(adv: dict) -> dict:
+    """The first atomic behaviour of road user ``adv`` (its behaviour and configuration): the one
+    that sets where and when it starts."""
+    return next(n for _, n in behaviour_nodes(adv["behaviour"]))
+
+
+def _something_at_junction(ego: dict, adversaries: list[dict]) -> bool:
+    """Whether the ego has a junction ahead (its distance to it is set) where a road user's behaviour
+    waits for it or meets it there."""
+    return "distance_m" in ego and any(
+        n["behaviour"] in AT_JUNCTION for a in adversaries for _, n in behaviour_nodes(a["behaviour"])
+    )
+
+
 def _ring_s(adv: dict, kind: str) -> float:
     """The time a road user entering a roundabout without stopping takes half round its ring (s): its
     run lasts until then (what it does next comes once it is on the ego's way), so the run must too."""
@@ -351,9 +365,7 @@ def _ring_s(adv: dict, kind: str) -> float:
 def _approach_s(ego: dict, adversaries: list[dict]) -> float:
     """The ego's time to reach its junction, when something there waits for it (s): the run must
     last that long on top of the behaviours' own times."""
-    if "distance_m" not in ego or not any(
-        n["behaviour"] in AT_JUNCTION for a in adversaries for _, n in behaviour_nodes(a["behaviour"])
-    ):
+    if not _something_at_junction(ego, adversaries):
         return 0.0
     return float(ego["distance_m"]) / max(float(ego["speed_mps"]), 1.0)
 
@@ -426,7 +438,7 @@ def make_room_to_pull_out(ego: dict, adversaries: list[dict], lanes: int = 1, ri
     ego_speed = float(ego["speed_mps"])
     for adv in adversaries:
         relation = adv["spawn"]["relation"]
-        node = next(n for _, n in behaviour_nodes(adv["behaviour"]))
+        node = _first_node(adv)
         if node["behaviour"] != "turn_into" or relation not in ("junction_left", "junction_right"):
             continue
         cfg = node.get("config", {})
@@ -451,7 +463,7 @@ def make_room_to_roll_up(ego: dict, adversaries: list[dict]) -> None:
         for a in adversaries
         if a["spawn"]["relation"].startswith("junction")
         and float(a["speed_mps"]) > 0.5
-        and next(n for _, n in behaviour_nodes(a["behaviour"]))["behaviour"] in ("turn_across", "turn_into")
+        and _first_node(a)["behaviour"] in ("turn_across", "turn_into")
     ]
     if rolling:
         brake_s = max(rolling) / 2.0 + 1.0  # (its braking, and a second to stand)
@@ -465,15 +477,13 @@ def stop_beyond_junction(ego: dict, adversaries: list[dict], names: set[str]) ->
     ego there (a red-light runner, a road user pulling out) would pass where the ego never comes."""
     from vei_scenario.language.maps import JUNCTION_RADIUS_M
 
-    if "distance_m" not in ego or not any(
-        n["behaviour"] in AT_JUNCTION for a in adversaries for _, n in behaviour_nodes(a["behaviour"])
-    ):
+    if not _something_at_junction(ego, adversaries):
         return
     for adv in adversaries:
         speed = float(adv["speed_mps"])
         if adv["name"] not in names or adv["spawn"]["relation"] != "ahead" or speed < 1.0:
             continue
-        node = next(n for _, n in behaviour_nodes(adv["behaviour"]))
+        node = _first_node(adv)
         lon = float(adv["spawn"].get("longitudinal_m", 30.0))
         through = float(ego["distance_m"]) - lon + 2 * JUNCTION_RADIUS_M + TYPES[adv["type"]][0][0]
         if through > 0:
@@ -491,7 +501,7 @@ def retime_junction_runs(ego: dict, adversaries: list[dict], lanes: int, names: 
     user ahead of it needs the room (they had crossed long before the ego came)."""
     for adv in adversaries:
         if adv["name"] in names and adv["spawn"]["relation"] in ("junction_left", "junction_right"):
-            cfg = next(n for _, n in behaviour_nodes(adv["behaviour"]))["config"]
+            cfg = _first_node(adv)["config"]
             lon = _junction_spawn(
                 ego, lanes, adv["spawn"]["relation"], float(adv["speed_mps"]), float(ego["speed_mps"]), cfg
             )
