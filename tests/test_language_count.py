@@ -248,3 +248,74 @@ def test_a_person_in_a_bare_rideable_noun_rides_it(text, expected):
 def test_a_person_in_a_motor_vehicle_or_a_lane_is_not_riding_a_bike():
     assert "bicycle" not in kinds("A man in the bike lane waved as a van pulled out from the left in front of me.")
     assert kinds("A man in a hire van pulled out from the left in front of me.") == ["van"]
+
+
+# --- a hyphenated plural ("e-scooters", "pick-ups") is a plural, as any other noun's -------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        (
+            "E-scooters often cut across here from the left; simulate an e-scooter crossing from the left in "
+            "front of the ego.",
+            ["e-scooter"],
+        ),
+        (
+            "E-scooters regularly ride on the pavement on this street; please model an e-scooter rider coming off "
+            "the kerb on the right in front of the ego.",
+            ["e-scooter"],
+        ),
+        (
+            "Residents keep complaining about e-scooters on our street. Yesterday an e-scooter rider shot out "
+            "from the right in front of me.",
+            ["e-scooter"],
+        ),
+        (
+            "Pick-ups often pull out of the farm tracks here; simulate a pick-up turning out of a track on the "
+            "right ahead of the ego.",
+            ["van"],
+        ),
+    ],
+    ids=["cut-across", "ride-on-the-pavement", "complaining-about", "pick-ups"],
+)
+def test_a_hyphenated_plural_in_general_is_not_the_road_user_that_acts(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("Two e-scooters rode side by side along the kerb ahead of me.", ["e-scooter", "e-scooter"]),
+        ("Three e-bikes came towards me in my lane.", ["bicycle", "bicycle", "bicycle"]),
+    ],
+    ids=["two-e-scooters", "three-e-bikes"],
+)
+def test_counted_hyphenated_plurals_are_so_many_road_users(text, expected):
+    assert kinds(text) == expected
+
+
+# --- a number written in figures counts a plural as a number in words does ---------------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("2 joggers running along the left edge of the road ahead, I slow down and pass them.", ["pedestrian"] * 2),
+        ("ego 40 km/h, 3 cyclists in a line on the right kerb ahead, ego passes them", ["bicycle"] * 3),
+        ("At dusk 2 vans came towards me in my lane, one after the other.", ["van"] * 2),
+        ("2 e-scooter riders swerve out from the left kerb in front of the ego.", ["e-scooter"] * 2),
+    ],
+    ids=["2-joggers", "3-cyclists", "2-vans", "2-e-scooter-riders"],
+)
+def test_a_number_in_figures_before_a_plural_is_so_many_road_users(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("At 2 pm a jogger ran across from the left in front of me.", ["pedestrian"]),
+        ("A cyclist rode across from the right, about 3 car lengths in front of me.", ["bicycle"]),
+        ("Car 2 cuts in from the right lane 15 m ahead of car 1.", ["car"]),
+    ],
+    ids=["time-of-day", "car-lengths", "vehicle-labels"],
+)
+def test_a_number_before_a_vehicle_noun_that_is_no_count_stays_no_count(text, expected):
+    assert kinds(text) == expected

@@ -1545,6 +1545,10 @@ def _mentions_again(tokens: list[str], kind_at: KindAt, known: Known) -> list[st
 
 
 def _singular(word: str) -> bool:
+    """Whether ``word`` is no plural noun; a hyphenated word no dictionary has is as its last part is
+    ("e-scooters", "pick-ups" are plurals)."""
+    if not lemmas(word) and "-" in word:
+        word = word.rpartition("-")[2]
     nouns = lemmas(word).get("NOUN")
     return not nouns or word in nouns
 

@@ -74,6 +74,7 @@ from vei_scenario.language.stated import (
 from vei_scenario.language.who import (
     agent_noun,
     closed_compound,
+    counted_in_figures,
     lamps_not_signals,
     own_vehicles,
     proper_names,
@@ -509,6 +510,8 @@ def _number(tokens: list[str], i: int) -> tuple[str, float, int] | None:
         unit = tokens[i + 3]
         if unit in V.SPEED_UNITS:  # "from 50 to 20 km/h": the speed, then the one it goes to
             return "speed_range", (value * V.SPEED_UNITS[unit], float(tokens[i + 2]) * V.SPEED_UNITS[unit]), 4
+    if (count := counted_in_figures(tokens, i, _kind_at)) is not None:  # ("2 escooters riding side by side")
+        return "count", count, 1
     if nxt in ("lanes", "lane") or (nxt == "-" and i + 2 < len(tokens) and tokens[i + 2] in ("lane", "lanes")):
         if value == int(value) and 1 <= value <= 8:  # "3 lanes", "a 2-lane road": lanes a direction
             return "lanes", int(value), 2 if nxt != "-" else 3
@@ -1307,7 +1310,7 @@ def _read(text: str) -> Reading:
             if m.slot == "count":
                 if not _counts_actor(mentions, k):
                     continue  # ("the middle lane of three": a count of no road user)
-                count = L.COUNTS.get(m.words, 2)
+                count = L.COUNTS.get(m.words) or (int(m.value) if isinstance(m.value, int) else 2)
                 if m.words == "both" and not actors:  # "both cars at 50 km/h" before anyone: the ego and one
                     count, both_with_ego = 1, True
                 continue

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from functools import lru_cache
 
-from vei_scenario.language.lemmas import english
+from vei_scenario.language.lemmas import english, lemmas
 
 
 def _edits1(word: str) -> set[str]:
@@ -39,12 +39,20 @@ class Speller:
                 words.update(forms)
         self.words = frozenset(w for w in words if w.isalpha() or "-" in w)
 
+    def _inflected_compound(self, word: str) -> bool:
+        """Whether ``word`` is a hyphenated word whose last part is an inflected English word and that,
+        with that part's lemma, is a known word ("e-scooters", "pick-ups"): an inflection, no slip. Read
+        as the known word it would lose its number ("about e-scooters" is road users in general, "an
+        e-scooter" one)."""
+        head, _, last = word.rpartition("-")
+        return bool(head) and any(f"{head}-{lemma}" in self.words for found in lemmas(last).values() for lemma in found)
+
     @lru_cache(maxsize=8192)  # noqa: B019 (one speller per process, its words fixed)
     def correct(self, word: str) -> str:
         """``word``, or the one known word it is a slip of."""
         if len(word) < 3 or not word.replace("-", "").isalpha() or word in self.words:
             return word
-        if english(word):
+        if english(word) or self._inflected_compound(word):
             return word
         near = sorted(self.words & _edits1(word))
         if len(word) == 3:  # (three letters: only two neighbours swapped, "teh")

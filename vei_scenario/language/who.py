@@ -414,3 +414,22 @@ def shared_scooters(tokens: list[str], proper: frozenset[str], verb: Callable[[s
                 continue
         out.append(w)
     return out
+
+
+#: The most road users a count in figures makes: a count above it is traffic, not road users one by one.
+_MOST_COUNTED = 5
+
+
+def counted_in_figures(tokens: list[str], i: int, kind_at: KindAt) -> int | None:
+    """The number of road users a whole number in figures at ``i`` counts, when a plural road-user noun
+    follows it ("2 escooters riding side by side", "3 cyclists in a line"), as "two" and "three" count
+    one; else None. A singular after it is a label or a measure, no count ("car 2", "2 car lengths")."""
+    if not tokens[i].isdigit() or not 2 <= int(tokens[i]) <= _MOST_COUNTED or i + 1 >= len(tokens):
+        return None
+    found = kind_at(tokens, i + 1)
+    if found is None or found[0] == "ego":
+        return None
+    head = tokens[i + found[1]]
+    nouns = lemmas(head).get("NOUN", ())
+    plural = head not in nouns if nouns else head.endswith("s") and not head.endswith("ss")
+    return int(tokens[i]) if plural else None
