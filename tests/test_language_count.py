@@ -319,3 +319,29 @@ def test_a_number_in_figures_before_a_plural_is_so_many_road_users(text, expecte
 )
 def test_a_number_before_a_vehicle_noun_that_is_no_count_stays_no_count(text, expected):
     assert kinds(text) == expected
+
+
+# --- who rides, said in brackets after a rider's noun, is that rider: the vehicle's type stays ---------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("An e-scooter rider (adult) swerves out from the left kerb in front of the ego.", ["e-scooter"]),
+        ("ego 40 km/h; motorbike rider (teenager) pulls out of a side road on the right ahead", ["car"]),
+        ("The e-bike rider (elderly woman) crosses from the right at 12 km/h in front of the ego.", ["bicycle"]),
+    ],
+    ids=["e-scooter-rider-adult", "motorbike-rider-teenager", "e-bike-rider-elderly"],
+)
+def test_a_person_in_brackets_after_a_riders_noun_is_that_rider(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("An e-scooter rider and a child cross from the left in front of the ego.", ["e-scooter", "pedestrian"]),
+        ("The bus driver braked hard 30 m ahead of me.", ["truck"]),
+    ],
+    ids=["rider-and-child", "bus-driver"],
+)
+def test_a_riders_noun_beside_another_road_user_stays_as_it_was(text, expected):
+    assert kinds(text) == expected

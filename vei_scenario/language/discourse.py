@@ -1403,6 +1403,33 @@ def _type_gloss(out: list[str], inner: list[str], kind_at: KindAt) -> list[str] 
     return None
 
 
+#: The nouns of whoever is on or at a vehicle, said after its noun ("an e-scooter rider", "the van driver").
+_AT_A_VEHICLE = frozenset({"rider", "riders", "driver", "drivers"})
+
+
+def _who_rides(out: list[str], inner: list[str], kind_at: KindAt) -> bool:
+    """Whether a bracket after a vehicle's noun (or its rider's, "an e-scooter rider (adult)", "motorbike
+    rider (teenager)") says only who rides or drives it: a person's noun, words of no other road user,
+    no verb and no "and". It describes that road user's rider; it is no second road user."""
+    end = len(out) - (1 if out and out[-1] in _AT_A_VEHICLE else 0)
+    outer = next(
+        (
+            kind_at(out, b)
+            for b in range(end - 1, max(end - 3, -1), -1)
+            if kind_at(out, b) and b + kind_at(out, b)[1] == end
+        ),
+        None,
+    )
+    if outer is None or outer[0] in ("pedestrian", "ego") or out[end - 1] in _GENERAL_HEADS:
+        return False
+    kinds = [kind_at(inner, h) for h in range(len(inner))]
+    if not any(k is not None and k[0] == "pedestrian" for k in kinds):
+        return False
+    return all(k is None or k[0] == "pedestrian" for k in kinds) and not any(
+        w in ("and", "or", "with") or set(lemmas(w)) == {"VERB"} for w in inner
+    )
+
+
 def _brackets(tokens: list[str], kind_at: KindAt, known: Known, names: dict[str, str], dropped: list[str]) -> list[str]:
     """Brackets go; a name given a road user in them ("a passenger car (the challenger)") is kept as a
     name of that referent, and the bracket is not read as a second road user."""
@@ -1427,7 +1454,7 @@ def _brackets(tokens: list[str], kind_at: KindAt, known: Known, names: dict[str,
             at_wheel = (  # ("a car ... (driver asleep)": its driver, no one else)
                 close is not None and words[:1] in (["driver"], ["rider"]) and _last_vehicle_in_sentence(out, kind_at)
             )
-            if at_wheel:
+            if at_wheel or (close is not None and _who_rides(out, inner, kind_at)):  # (or who rides it)
                 dropped.extend(inner)
                 i = close + 1
                 continue
@@ -1653,7 +1680,8 @@ def _compounds(tokens: list[str], kind_at: KindAt) -> list[str]:
             out.extend(tokens[i : max(k, i + 1)])
             i = max(k, i + 1)
             continue
-        typed = [r for r in run if tokens[r[1] - 1] not in _GENERAL_HEADS] or run[:1]
+        # (a phrase of general nouns names no type; "e-scooter rider" names its vehicle's)
+        typed = [r for r in run if not set(tokens[r[0] : r[1]]) <= _GENERAL_HEADS] or run[:1]
         ridden = [r for r in typed if r[2] != "pedestrian"]
         chosen = ridden[-1] if ridden else typed[0]
         out.extend(tokens[chosen[0] : chosen[1]])
