@@ -345,3 +345,71 @@ def test_a_person_in_brackets_after_a_riders_noun_is_that_rider(text, expected):
 )
 def test_a_riders_noun_beside_another_road_user_stays_as_it_was(text, expected):
     assert kinds(text) == expected
+
+
+# --- "(one of those ...)" after a road user says what kind of road user it is: the same one ----------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A ute (one of those big pickups) pulled out of a farm track on the left in front of me.", ["van"]),
+        ("A tuk-tuk (one of those little three-wheeled taxis) cut in sharply from the right ahead of me.", ["car"]),
+        ("A minibus (one of those white 12-seater vans) pulled out from the right in front of me.", ["van"]),
+    ],
+    ids=["ute", "tuk-tuk", "minibus"],
+)
+def test_one_of_those_in_brackets_names_the_kind_of_the_same_road_user(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        (
+            "A van (and one of those big pickups behind it) pulled out of a track on the left in front of me.",
+            ["van", "van"],
+        ),
+        ("A cyclist (one of those couriers) swerved out from the left kerb in front of me.", ["bicycle"]),
+    ],
+    ids=["and-another", "a-person-gloss"],
+)
+def test_a_bracket_naming_someone_else_stays_someone_else(text, expected):
+    assert kinds(text) == expected
+
+
+# --- "the bike" after a motorbike or its rider is that motorbike, when no pedal cycle was named ----------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        (
+            "A motorcyclist pulled out of a side road on the left in front of me; I braked and the bike stopped.",
+            ["car"],
+        ),
+        ("Oncoming motorbike turns right across the ego's path; ego brakes and waits until bike has passed.", ["car"]),
+        ("A moped came up behind me and the bike then cut in sharply in front of me.", ["car"]),
+    ],
+    ids=["motorcyclist-the-bike", "bare-bike", "moped"],
+)
+def test_the_bike_after_a_motorbike_is_that_motorbike(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        (
+            "A motorcyclist overtook me, and then a bike came out of a side road on the left in front of me.",
+            ["bicycle", "car"],
+        ),
+        (
+            "A motorbike passed me; further on, a cyclist swerved out from the left kerb and the bike wobbled.",
+            ["bicycle", "car"],
+        ),
+    ],
+    ids=["a-bike-is-new", "a-cyclist-was-named"],
+)
+def test_a_bike_new_or_after_a_cyclist_is_a_pedal_cycle(text, expected):
+    assert kinds(text) == expected
+
+
+def test_a_seater_is_a_vehicles_size_and_no_skater():
+    assert kinds("A 7-seater pulled out of a drive on the left in front of me.") == ["car"]

@@ -45,7 +45,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from vei_scenario.language.lemmas import english, lemmas
-from vei_scenario.language.lexicon import ANIMALS, WALKER_PACED
+from vei_scenario.language.lexicon import ANIMALS, MOTOR_TWO_WHEELERS, WALKER_PACED
 from vei_scenario.language.scenery import vehicle_modifiers
 from vei_scenario.language.who import make_and_model, person_with_vehicle, travel_modes, vehicle_places
 
@@ -1384,6 +1384,8 @@ def _type_gloss(out: list[str], inner: list[str], kind_at: KindAt) -> list[str] 
     last = next((b for b in range(len(out) - 1, max(len(out) - 4, -1), -1) if kind_at(out, b)), None)
     outer = kind_at(out, last) if last is not None else None
     label = len(out) - 1 if out and (out[-1].isdigit() or len(out[-1]) == 1) else len(out)  # ("Vehicle B (...)")
+    kind_of = inner[:2] == ["one", "of"] and inner[2:3] in (["those"], ["these"], ["the"])
+    inner = inner[3:] if kind_of else inner  # ("(one of those 14-seater vans)": what kind it is)
     if outer is None or outer[0] == "ego" or last + outer[1] not in (label, len(out)) or not 1 <= len(inner) <= 4:
         return None
     if inner[0] in DEFINITE:  # ("(the obstacle)": a name, see _brackets)
@@ -1394,9 +1396,14 @@ def _type_gloss(out: list[str], inner: list[str], kind_at: KindAt) -> list[str] 
     if found is None or head + found[1] != len(words):
         return None  # (the bracket must end in its first road-user noun)
     kind = found[0]
-    if any(not w.replace("-", "").isalpha() or w in ("and", "or") or set(lemmas(w)) == {"VERB"} for w in words[:head]):
+    if any(
+        not (w.replace("-", "").isalpha() or (kind_of and w.isdigit()))
+        or w in ("and", "or")
+        or set(lemmas(w)) == {"VERB"}
+        for w in words[:head]
+    ):
         return None
-    if kind == outer[0] or (kind == "car" and outer[0] in VEHICLES):
+    if kind == outer[0] or (kind == "car" and outer[0] in VEHICLES) or (kind_of and kind in VEHICLES):
         return []
     if outer[0] == "car" and kind in VEHICLES:
         return [",", "a", *words, ","]
@@ -1437,7 +1444,7 @@ def _brackets(tokens: list[str], kind_at: KindAt, known: Known, names: dict[str,
     i = 0
     while i < len(tokens):
         if tokens[i] == "(":
-            close = next((k for k in range(i + 1, min(i + 6, len(tokens))) if tokens[k] == ")"), None)
+            close = next((k for k in range(i + 1, min(i + 9, len(tokens))) if tokens[k] == ")"), None)
             inner = tokens[i + 1 : close] if close is not None else []
             words = [w for w in inner if w not in DEFINITE]
             last = next((b for b in range(len(out) - 1, max(len(out) - 3, -1), -1) if kind_at(out, b)), None)
@@ -1542,8 +1549,14 @@ def _mentions_again(tokens: list[str], kind_at: KindAt, known: Known) -> list[st
             and last_end == p.start - 1
         )
         apart = any(w in OTHER for w in out[p.start : p.head])
+        motor = _motorbike_again(out, p, referents)
         if p.kind == "ego":
             pass
+        elif motor is not None and not apart:
+            said = ["the", *motor.noun.split()]
+            out[p.start : p.end] = said
+            last_end = i = p.start + len(said)
+            continue
         elif apposition and p.kind in VEHICLES and referents[-1].kind in VEHICLES:
             referents[-1].kind = p.kind if referents[-1].kind == "car" else referents[-1].kind
         elif p.det == "the" and not apart and referents:
@@ -1569,6 +1582,21 @@ def _mentions_again(tokens: list[str], kind_at: KindAt, known: Known) -> list[st
         last_end = p.end
         i = p.end
     return out
+
+
+#: The nouns of a pedal cycle that also name a motor two-wheeler.
+_BIKE = frozenset({"bike", "bikes"})
+
+
+def _motorbike_again(tokens: list[str], p: _Phrase, referents: list[Referent]) -> Referent | None:
+    """The motor two-wheeler a known "bike" names ("a motorcyclist ... the bike stopped", "until bike has
+    passed"): "bike" is as much a motorbike's word as a bicycle's, so said again with "the" or bare, where
+    no pedal cycle was named, it is the last motor two-wheeler named. A new one ("a bike") is new."""
+    if p.kind != "bicycle" or tokens[p.head : p.end] != ["bike"] or p.det not in ("the", ""):
+        return None
+    if p.head != p.start + bool(p.det) or any(r.kind == "bicycle" for r in referents):
+        return None
+    return next((r for r in reversed(referents) if r.noun in MOTOR_TWO_WHEELERS), None)
 
 
 def _singular(word: str) -> bool:

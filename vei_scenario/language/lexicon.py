@@ -293,6 +293,15 @@ CAR_NOUNS = (
     "light runner",
     *CAR_MAKES,
 )
+#: The car nouns of a motor two-wheeler: "bike" named again after one of them is that one, no pedal cycle
+#: ("a motorcyclist ... the bike stopped").
+MOTOR_TWO_WHEELERS = frozenset((
+    "motorcycle", "moped", "motor scooter", "motorbike", "motorcyclist", "powered two-wheeler", "two-wheeler",
+    "ptw", "motor bike", "dirt bike", "boda-boda", "boda boda", "boda", "okada", "emt",
+))  # fmt: skip
+#: Words of a vehicle's size that no dictionary has ("a 14-seater van"): words, not slips of another word
+#: ("skater" would be a road user of its own).
+VEHICLE_SIZE_WORDS = ("seater", "seaters")
 EGO_NOUNS = (
     "ego",
     "iv",  # (a claim's insured vehicle)

@@ -321,7 +321,9 @@ def _speller():
 
     # (and the outcome's words, read from the whole text)
     outcome = {"collision", "collide", "crash", "accident", "contact", "afternoon", "morning", "evening", "night"}
-    return Speller({w for key in TABLE for w in key} | FUNCTION_WORDS | outcome | NUMBER_WORDS)
+    return Speller(
+        {w for key in TABLE for w in key} | FUNCTION_WORDS | outcome | NUMBER_WORDS | set(L.VEHICLE_SIZE_WORDS)
+    )
 
 
 def _tokens(text: str, spell: bool = True, brackets: bool = False) -> list[str]:
