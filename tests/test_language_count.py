@@ -413,3 +413,44 @@ def test_a_bike_new_or_after_a_cyclist_is_a_pedal_cycle(text, expected):
 
 def test_a_seater_is_a_vehicles_size_and_no_skater():
     assert kinds("A 7-seater pulled out of a drive on the left in front of me.") == ["car"]
+
+
+# --- road users in general ("to pass cyclists") before a new one of their type ("a slow jogger") ------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        (
+            "It is easy to overtake cyclists safely here. Today I passed a woman on a racing bike with plenty of "
+            "room at 30 mph.",
+            ["bicycle"],
+        ),
+        (
+            "You can pass joggers safely on this lane. This morning I passed a slow jogger on the left at 20 mph.",
+            ["pedestrian"],
+        ),
+        (
+            "Learners find it hard to judge vans on this hill. Yesterday a white van pulled out of a drive on the "
+            "right in front of me.",
+            ["van"],
+        ),
+    ],
+    ids=["to-overtake-cyclists", "pass-joggers-a-slow-jogger", "to-spot-pedestrians"],
+)
+def test_road_users_in_general_before_a_new_one_are_not_that_one(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A child ran out from between parked cars in front of me.", ["pedestrian"]),
+        (
+            "Joggers were running across the road from the left in front of me, and a slow jogger came across "
+            "from the right.",
+            ["pedestrian"] * 2,
+        ),
+    ],
+    ids=["between-parked-cars", "told-in-the-past"],
+)
+def test_plurals_of_a_place_or_counted_are_no_road_users_in_general(text, expected):
+    assert sorted(k for k in kinds(text) if k != "car") == expected

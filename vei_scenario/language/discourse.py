@@ -212,6 +212,34 @@ def _ridden_kind(tokens: list[str], p: _Phrase, kind_at: KindAt) -> tuple[str, i
     return p.kind, p.end
 
 
+def _told_in_the_past(tokens: list[str], k: int) -> bool:
+    """Whether the verb at ``k``, right after a plural, tells what they did ("were running", "ran",
+    "swerved"): those are road users of the event; road users in general do things in the present
+    ("cyclists ride here") or may do them."""
+    w = tokens[k] if k < len(tokens) else ""
+    verbs = lemmas(w).get("VERB", ())
+    return w == "were" or (bool(verbs) and w not in verbs and not w.endswith(("s", "ing")) and "NOUN" not in lemmas(w))
+
+
+def _infinitive(tokens: list[str], j: int) -> bool:
+    """Whether "to" at ``j`` marks an infinitive ("to pass cyclists"), not a place ("to town")."""
+    nxt = tokens[j + 1] if j + 1 < len(tokens) else ""
+    return tokens[j] == "to" and nxt in lemmas(nxt).get("VERB", ())
+
+
+def _new_one(tokens: list[str], p: _Phrase) -> bool:
+    """Whether phrase ``p`` opens with "a" or "an", past up to two modifiers the reader has words for
+    ("a racing bike", "a slow jogger"), with no clause mark between."""
+    if p.det in ("a", "an"):
+        return True
+    for j in range(p.head - 1, max(p.head - 4, -1), -1):
+        if tokens[j] in ("a", "an"):
+            return True
+        if tokens[j] in PUNCT or tokens[j] in DETERMINERS or tokens[j] in _CLAUSE_ENDS or not tokens[j].isalpha():
+            return False
+    return False
+
+
 def _generic_plurals(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """ "We regularly see children stepping out ... Please simulate a child running out", "joggers often
     cross here; simulate a jogger crossing": a bare plural (no article, no count) says what road users
@@ -227,13 +255,18 @@ def _generic_plurals(tokens: list[str], kind_at: KindAt, known: Known, dropped: 
             continue  # (what a plural rides: "on e-bikes", inside the clause already left out)
         if p.det or p.kind == "ego" or _singular(tokens[p.end - 1]) or before in _COUNTED or before.isdigit():
             continue
-        if any(w in _A_PLACE or w in _PLACE_BEFORE for w in tokens[max(p.start - 2, 0) : p.start]):
-            continue  # ("out from between parked cars": where someone is, not who)
+        if any(
+            (w in _A_PLACE or w in _PLACE_BEFORE) and not _infinitive(tokens, j)
+            for j, w in enumerate(tokens[max(p.start - 2, 0) : p.start], max(p.start - 2, 0))
+        ):
+            continue  # ("out from between parked cars": where someone is, not who; "to pass cyclists": a verb's)
         kind, end = _ridden_kind(tokens, p, kind_at)
+        if _told_in_the_past(tokens, end):
+            continue  # ("joggers were running across in front of me": these ones, no road users in general)
         later = next(
             (q for q in phrases[n + 1 :] if q.start >= end and _ridden_kind(tokens, q, kind_at)[0] == kind), None
         )
-        if later is None or later.det not in ("a", "an") or not _singular(tokens[later.end - 1]):
+        if later is None or not _new_one(tokens, later) or not _singular(tokens[later.end - 1]):
             continue
         stop = end  # (to the clause's end, or a place: "stepping out between parked cars" keeps the cars)
         while stop < len(tokens) and not (
