@@ -454,3 +454,29 @@ def test_road_users_in_general_before_a_new_one_are_not_that_one(text, expected)
 )
 def test_plurals_of_a_place_or_counted_are_no_road_users_in_general(text, expected):
     assert sorted(k for k in kinds(text) if k != "car") == expected
+
+
+# --- a vehicle named again between commas or dashes, then what it does, is the same one -----------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A van, a white Transit, pulled out from the left in front of me.", ["van"]),
+        ("A taxi, a black cab, pulled out from the left in front of me.", ["car"]),
+        ("An Audi - an AUDI of all things - undertook me on the left and cut in front of me.", ["car"]),
+    ],
+    ids=["van-transit", "taxi-black-cab", "audi-dashes"],
+)
+def test_a_vehicle_named_again_in_apposition_before_its_verb_is_one(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A van, a car and a bus pulled out from the left in front of me.", ["car", "truck", "van"]),
+        ("I saw a van, then a car pulled out from the left in front of me.", ["car", "van"]),
+    ],
+    ids=["a-list", "then-another"],
+)
+def test_vehicles_in_a_list_or_one_after_another_stay_apart(text, expected):
+    assert kinds(text) == expected

@@ -421,6 +421,19 @@ def _does_next(tokens: list[str], i: int) -> bool:
     return key is not None and TABLE[key][0] in ("behaviour", "ego_verb", "turn")
 
 
+def _named_again_then_acts(mentions, k: int) -> bool:
+    """Whether mention ``k``, between commas right after a road user named with "a", is that road user
+    named again because a verb of what it does follows it ("a van, a white Transit, pulled out", "a
+    Micra - a MICRA - undertakes me"): a list goes on with another name or "and"."""
+    return (
+        k >= 2
+        and mentions[k - 2].slot == "actor"
+        and mentions[k - 2].det in ("a", "an")
+        and k + 2 < len(mentions)
+        and mentions[k + 2].slot == "behaviour"
+    )
+
+
 def _definite_before(mentions, k: int) -> bool:
     """Whether the road user named last before mention ``k`` was named definitely ("the car ahead, a
     taxi, ...": an apposition; "a van, a car, ...": a list)."""
@@ -1399,14 +1412,21 @@ def _read(text: str) -> Reading:
                     last = named[-1][0] if named and isinstance(named[-1][0], _Actor) else None
                     if (
                         last is not None
-                        and (m.det in ("a", "an") or (not m.det and _generic_vehicle(last)))
+                        and (
+                            m.det in ("a", "an")
+                            or (not m.det and (_generic_vehicle(last) or _named_again_then_acts(mentions, k)))
+                        )
                         and k > 0
                         and mentions[k - 1].slot == "punct"
                         and mentions[k - 1].value == ","
                         and nxt is not None
                         and nxt.slot == "punct"
                         and not (k + 2 < len(mentions) and mentions[k + 2].slot in ("conj", "actor", "count"))
-                        and (_definite_before(mentions, k) or _generic_vehicle(last))
+                        and (
+                            _definite_before(mentions, k)
+                            or _generic_vehicle(last)
+                            or _named_again_then_acts(mentions, k)
+                        )
                         and (last.kind == m.value or (last.kind in VEHICLES and m.value in VEHICLES))
                     ):  # "the car ahead, a taxi, stops": the same one, said again (its kind the more exact)
                         last.kind = str(m.value) if last.kind == "car" else last.kind
