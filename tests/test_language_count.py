@@ -480,3 +480,29 @@ def test_a_vehicle_named_again_in_apposition_before_its_verb_is_one(text, expect
 )
 def test_vehicles_in_a_list_or_one_after_another_stay_apart(text, expected):
     assert kinds(text) == expected
+
+
+# --- a rider's noun names what is ridden: "a cyclist on a racing bike" is one road user ------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A cyclist on a racing bike rode out from a side road on the right in front of me.", ["bicycle"]),
+        ("An e-scooter rider on a hire scooter came the wrong way towards me in my lane.", ["e-scooter"]),
+        ("A cyclist riding one of those cargo bikes crossed from the left in front of the ego.", ["bicycle"]),
+    ],
+    ids=["cyclist-racing-bike", "scooter-rider-hire-scooter", "cyclist-cargo-bike"],
+)
+def test_a_rider_on_a_vehicle_of_their_own_type_is_one_road_user(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A cyclist on the left and a bike on the right crossed in front of me.", ["bicycle", "bicycle"]),
+        ("A cyclist rode out from the right in front of me, and a van on the left braked hard.", ["bicycle", "van"]),
+    ],
+    ids=["on-the-left", "another-vehicle"],
+)
+def test_a_rider_beside_another_vehicle_stays_two(text, expected):
+    assert kinds(text) == expected

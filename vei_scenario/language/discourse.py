@@ -381,6 +381,36 @@ def _riders(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
     return out
 
 
+def _riders_own(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
+    """ "a cyclist on a racing bike", "an e-scooter rider on a hire scooter", "a motorcyclist on a big
+    bike": a rider's noun already names what is ridden, so the vehicle after "on" or "riding" is theirs,
+    one road user; its words go (they were read). Only a vehicle of the rider's own type, or "bike"
+    under a motor two-wheeler's rider, after an article and up to two modifiers."""
+    out = list(tokens)
+    for p in reversed(_phrases(tokens, kind_at, known)):
+        if p.kind in ("pedestrian", "ego") or p.end + 1 >= len(out) or out[p.end] not in ("on", "riding"):
+            continue
+        j = p.end + 1
+        if out[j : j + 3] in (["one", "of", "those"], ["one", "of", "these"]):
+            j += 3
+        elif out[j] in ("a", "an", "his", "her", "their"):
+            j += 1
+        else:
+            continue
+        head = next((h for h in range(j, min(j + 3, len(out))) if kind_at(out, h) is not None), None)
+        if head is None or any(not out[h].isalpha() or out[h] in _NOT_MODIFIERS for h in range(j, head)):
+            continue
+        ride, n = kind_at(out, head)
+        motor = " ".join(out[p.head : p.end]) in MOTOR_TWO_WHEELERS and out[head : head + n] == ["bike"]
+        if ride == p.kind or motor:
+            del out[p.end : head + n]
+    return out
+
+
+#: Words that end a vehicle's modifiers: a new clause or phrase, not a description.
+_NOT_MODIFIERS = frozenset({"and", "or", "but", "then", "with", "of", "in", "on", "to", "from"})
+
+
 def _two_wheeler_next(tokens: list[str], j: int, kind_at: KindAt, known: Known) -> bool:
     """Whether a bicycle's or an e-scooter's noun follows at ``j`` with no article, past up to two
     modifiers the reader has no phrase for: "a boy in bicycle", "one woman in electric scooter" (English
@@ -1958,7 +1988,7 @@ def resolve(
     tokens = _heading(tokens, kind_at, known, dropped)  # (after the labels: "Actor 1: e-scooter")
     tokens = _generic_plurals(tokens, kind_at, known, dropped)
     tokens = _followed_by(tokens, kind_at, known, dropped)
-    tokens = _riders(_placed_riders(tokens, kind_at), kind_at, known)
+    tokens = _riders_own(_riders(_placed_riders(tokens, kind_at), kind_at, known), kind_at, known)
     tokens = _pushed(tokens, kind_at, known, dropped)
     tokens = _drivers(tokens, kind_at, known)
     tokens = _driver_apposition(tokens, kind_at, dropped)
