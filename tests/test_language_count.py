@@ -506,3 +506,29 @@ def test_a_rider_on_a_vehicle_of_their_own_type_is_one_road_user(text, expected)
 )
 def test_a_rider_beside_another_vehicle_stays_two(text, expected):
     assert kinds(text) == expected
+
+
+# --- a name after a preposition is a place, even with "the" and a colour before the preposition ----------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A cyclist ran the red at Kingsway, right across in front of me.", ["bicycle"]),
+        ("A jogger crossed against the green at Eastgate, right in front of me.", ["pedestrian"]),
+        ("A scooter rider shot through the amber near Morrisons, right in front of me.", ["e-scooter"]),
+    ],
+    ids=["red-at", "green-at", "amber-near"],
+)
+def test_a_name_after_a_preposition_is_a_place_not_a_car(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A silver Mokka pulled out from the left in front of me.", ["car"]),
+        ("Then a red Zafira cut in sharply from the right lane ahead of me.", ["car"]),
+    ],
+    ids=["silver-mokka", "red-zafira"],
+)
+def test_a_name_after_an_article_and_a_colour_is_a_car(text, expected):
+    assert kinds(text) == expected

@@ -1730,6 +1730,8 @@ def _named_vehicles(tokens: list[str], kind_at: KindAt, known: Known, proper: fr
         while j >= max(i - 3, 0) and tokens[j] not in DETERMINERS and tokens[j] != "'s":
             if tokens[j] in proper or not (tokens[j] in COLOURS or (tokens[j].isalpha() and not known(tokens, j))):
                 break
+            if tokens[j] in _PLACE_BEFORE or tokens[j] in PREPOSITIONS:
+                break  # ("the red at Eglinton": the name is the preposition's object, a place)
             j -= 1
         if j < 0 or tokens[j] not in ("a", "an", "the", "his", "her", "their", "'s"):
             continue
