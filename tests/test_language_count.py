@@ -532,3 +532,22 @@ def test_a_name_after_a_preposition_is_a_place_not_a_car(text, expected):
 )
 def test_a_name_after_an_article_and_a_colour_is_a_car(text, expected):
     assert kinds(text) == expected
+
+
+# --- "done" is a word, no code of the ego ("D1", "V1", "vehicle one") --------------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "The jogger was done crossing from the left at 8 km/h before I arrived.",
+        "A child, almost done crossing from the left, ran in front of me.",
+        "The pedestrian is nearly done crossing from the right in front of the ego.",
+    ],
+    ids=["was-done", "almost-done", "nearly-done"],
+)
+def test_done_is_no_name_of_the_ego(text):
+    (walker,) = read(text).actors
+    assert walker.kind == "pedestrian" and [b[0] for b in walker.behaviours] == ["cross_in_front"]
+
+
+def test_a_code_of_the_ego_in_figures_still_names_it():
+    assert kinds("D1 was travelling at 30 mph when D2 pulled out from the left in front of D1.") == ["car"]

@@ -89,7 +89,8 @@ def _numbers_in_words(text: str) -> str:
 #: The narrator's own vehicle in police, insurance and witness statements.
 _EGO_ALIASES = [
     re.compile(
-        r"\b(?:the\s+)?(?:driver\s+of\s+)?(?:vehicle|veh\.?|unit|car|v|d)\s*-?\s*(?:1|one|#1)\b(?!\s*(?:m|km|mph|s)\b)"
+        r"\b(?:the\s+)?(?:driver\s+of\s+)?(?:(?:vehicle|veh\.?|unit|car)\s*-?\s*(?:1|one|#1)|(?:v|d)\s*-?\s*#?1)\b"
+        r"(?!\s*(?:m|km|mph|s)\b)"  # (a letter's code in figures: "done" is no "D one")
     ),
     re.compile(r"\b(?:the\s+)?(?:insured|my\s+client|our\s+client|the\s+claimant)(?:'s\s+(?:vehicle|car))?\b"),
     re.compile(r"\b(?:our|my)\s+(?:vehicle|own\s+car|own\s+vehicle)\b"),
