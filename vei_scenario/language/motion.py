@@ -129,9 +129,35 @@ def _touched_before(tokens: list[str], i: int) -> bool:
     return False
 
 
+#: Words between a verb of contact and the preposition of what it meets ("crashed head-on into").
+_HOW_IT_MEETS = frozenset(("head-on", "headlong", "straight", "right", "full", "square", "squarely", "directly"))
+
+
+#: Parts of a road user said as what was met ("into the side of my car").
+_MET_PARTS = frozenset(("side", "back", "rear", "front", "nose", "tail", "flank", "door", "wing", "bumper"))
+
+
+def _into_someone(tokens: list[str], j: int) -> bool:
+    """Whether "into" or "with" and a road user (or a part of one) follow a verb of contact ending at
+    token ``j`` ("crashed into a cyclist", "collided head-on with the bus", "smashed into the side of
+    my car"): it states whom it met, the contact itself, not a fall or a stop of its own ("crashed
+    into the barrier" is still how it stopped)."""
+    from vei_scenario.language.outcome import _names_road_user
+
+    while j < len(tokens) and tokens[j] in _HOW_IT_MEETS:
+        j += 1
+    if j >= len(tokens) or tokens[j] not in ("into", "with"):
+        return False
+    obj = tokens[j + 1 : j + 8]
+    k = next((k for k, w in enumerate(obj[:4]) if w in _MET_PARTS and obj[k + 1 : k + 2] == ["of"]), None)
+    obj = obj[k + 2 :] if k is not None else obj  # ("the side of my car": my car)
+    return _names_road_user(obj) or obj[:1] in (["me"], ["us"], ["ego"]) or obj[:2] == ["the", "ego"]
+
+
 def outcome_not_behaviour(clauses: list, tokens: list[str] | None = None) -> list:
     """``clauses`` (the reader's mentions, by clause) without the verbs that state the outcome rather
-    than what a road user does: a contact verb whose subject is both parties, "yield a/an ...", and a
+    than what a road user does: a contact verb whose subject is both parties or that says what it met
+    ("crashed into a van", "collided with the bus"), "yield a/an ...", and a
     fall said after a contact in its sentence ("clipped my mirror and fell off": what the contact did,
     not a stop the road user makes; ``tokens``: those the mentions index)."""
     out = []
@@ -147,6 +173,8 @@ def outcome_not_behaviour(clauses: list, tokens: list[str] | None = None) -> lis
                 plural = m.prev in _BOTH or (before is not None and before.slot == "pronoun" and before.words in _BOTH)
                 if first in _CONTACT and plural:
                     continue  # ("they are crashing": the collision, said of both)
+                if first in _CONTACT and tokens is not None and _into_someone(tokens, m.end):
+                    continue  # ("crashed head-on into a motorcyclist": the contact, the outcome)
                 if first in ("yield", "yields", "yielded", "yielding") and m.next_ in ("a", "an"):
                     continue  # ("designed to yield a collision")
             kept.append(m)
