@@ -315,3 +315,8 @@ def test_crashing_into_a_road_user_is_the_outcome(text, expected):
 
 def test_a_crash_with_nothing_hit_stays_a_fall():
     assert "sudden_stop" in _behaviours("The e-scooter rider ahead of the ego crashes on the wet road.")[0]
+
+
+def test_a_named_rider_said_in_apposition_keeps_its_verb():
+    text = "A cyclist, Hendrik, was riding ahead of the ego at 20 km/h. Hendrik braked hard."
+    assert _behaviours(text) == [["sudden_stop"]]

@@ -146,6 +146,10 @@ _NAMING_SLOTS = _NAMING
 _ACT_SLOTS = frozenset(("behaviour", "unknown_verb", "ego_verb", "to_stop", "stationary"))
 
 
+#: Marks after which a capital opens a sentence, a list item or a quote, and names nobody.
+_OPENING_MARKS = frozenset(".!?:;|\u2022*-\u2013\u2014\"'(\u201c\u2018>#")
+
+
 def _person_names(text: str) -> frozenset[str]:
     """The words of ``text`` that may be names of people (lower-cased): said capitalised inside a
     sentence somewhere ("a lesson with Jack", "Debrief, Marcus, 3pm")."""
@@ -153,7 +157,7 @@ def _person_names(text: str) -> frozenset[str]:
     for m in re.finditer(r"\b[A-Z][a-z]+\b", text):
         word = m.group().lower()
         before = text[: m.start()].rstrip()
-        opening = not before or not (before[-1].isalnum() or before[-1] == ",")  # (after ".", a bullet, a bar)
+        opening = not before or before[-1] in _OPENING_MARKS or text[m.start() - 1] == "\n"
         if not opening:
             out.add(word)
     return frozenset(out)
@@ -195,10 +199,8 @@ def named_persons_acts(clauses: list, tokens: list[str], text: str) -> dict[int,
         if not acts:
             continue
         if tok in riding or any(
-            t == tok and any(0 < r.start - j <= 3 or 0 < j - r.end + 1 <= 2 for r in road_users)
-            for j, t in enumerate(tokens)
-            if j != i
-        ):  # ("Sam in his Golf", "the cyclist, Sam")
+            t == tok and any(r.end <= j <= r.end + 1 for r in road_users) for j, t in enumerate(tokens) if j != i
+        ):  # ("Sam in his Golf", "the cyclist, Sam": a road user's driver or rider)
             continue
         for m in acts:
             persons[m.start] = _passes(m)
