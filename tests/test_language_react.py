@@ -320,3 +320,31 @@ def test_a_crash_with_nothing_hit_stays_a_fall():
 def test_a_named_rider_said_in_apposition_keeps_its_verb():
     text = "A cyclist, Hendrik, was riding ahead of the ego at 20 km/h. Hendrik braked hard."
     assert _behaviours(text) == [["sudden_stop"]]
+
+
+# --- a swerve round the ego is avoiding it and going on, not a lane change -----------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was turning left at 15 km/h when a cyclist coming the other way had to swerve round my bonnet.",
+        "We were reversing out of a drive at 5 km/h when a moped swerved round us and rode off.",
+        "The AV pulls out of the junction at 10 km/h and an e-scooter rider swerves around the front of the AV.",
+    ],
+    ids=["round-my-bonnet", "round-us", "around-the-front-of-the-av"],
+)
+def test_a_swerve_round_the_ego_goes_on(text):
+    assert _behaviours(text)[0] == ["keep_going"]
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # round something standing in its lane: the lead moves out and reveals it
+        ("On the motorway the car in front of me swerved round a broken-down van in our lane.", "cut_out"),
+        # round another road user named: not the ego
+        ("A cyclist swerved round the front of the bus and into my lane.", "change_lane"),
+    ],
+    ids=["round-a-broken-down-van", "round-the-bus"],
+)
+def test_a_swerve_round_something_else_is_no_going_on(text, expected):
+    assert _behaviours(text)[0][0] == expected
