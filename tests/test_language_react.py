@@ -348,3 +348,29 @@ def test_a_swerve_round_the_ego_goes_on(text):
 )
 def test_a_swerve_round_something_else_is_no_going_on(text, expected):
     assert _behaviours(text)[0][0] == expected
+
+
+# --- a clause of the narrator's own inside a sentence without its subject does not end the narrator's ---
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        (
+            "I was doing 50 km/h. A jogger was running along the left verge ahead. "
+            "Hung back until I could see the road was empty and went past him wide.",
+            [["along_road"]],
+        ),
+        (
+            "I was riding at 25 km/h. Two joggers were running along the verge ahead of me. "
+            "Slowed right down until we were past the bend and overtook them.",
+            [["along_road"], ["along_road"]],
+        ),
+        (
+            "I was cycling at 20 km/h. A man was walking along the kerb in front of me. "
+            "Waited until I was sure and overtook him.",
+            [["along_road"]],
+        ),
+    ],
+    ids=["hung-back-until-i", "slowed-until-we", "waited-until-i"],
+)
+def test_the_narrators_subordinate_clause_keeps_the_sentence_the_narrators(text, expected):
+    assert _behaviours(text) == expected

@@ -108,10 +108,26 @@ def narrators_acts(clauses: list, tokens: list[str], first_person: bool) -> dict
                 after[0] in _OBJECT_PRONOUNS
                 or (after[0] in _ROUND and after[1:2] != [] and after[1] in _OBJECT_PRONOUNS)
             )
-            to_the_ego = any(x.slot == "actor" and x.value == "ego" for x in mentions[k + 1 :])
+            to_the_ego = _towards_the_ego(mentions[k + 1 :])
             if objected or (m.value[0] in _REACTIONS and not to_the_ego):
                 out[m.start] = objected and m.value[0] == "overtake"
     return out
+
+
+#: The ego said as a subject: after it a clause of its own begins ("Waited till I could see").
+_EGO_SUBJECTS = frozenset(("i", "we"))
+
+
+def _towards_the_ego(after: list) -> bool:
+    """Whether the ego is named in ``after`` (the mentions after a verb) as what the verb goes
+    towards ("Cut in right in front of me."), not as the subject of a clause of its own ("Waited
+    till I could see it was clear": the narrator waited)."""
+    for x in after:
+        if x.slot == "actor" and x.value == "ego":
+            return x.words not in _EGO_SUBJECTS
+        if x.slot in ("conj", "link", "relative") or x.slot in _NAMING:
+            return False
+    return False
 
 
 #: Modals of having to: a reaction said with them and no subject is the protagonist's.
