@@ -191,3 +191,186 @@ def test_a_fall_after_contact_is_the_outcome(text, expected):
 
 def test_a_fall_with_no_contact_before_it_stays_a_behaviour():
     assert "sudden_stop" in _behaviours("The cyclist ahead of the ego falls off on the wet road.")[0]
+
+
+# --- a person named by a name, not a road user: the verb is that person's, not the road user's ----------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # a learner or a driver named by name, never said to be in another vehicle: the ego's driver
+        (
+            "Second lesson with Ottilie, 30 mph on the ring road. A courier van drifted into our lane "
+            "just ahead. Ottilie braked firmly and steered left, well done.",
+            [["cut_in"]],
+        ),
+        (
+            "Coaching ride with Bartek on the A-road at 45 mph. A pickup in the outside lane veered "
+            "across into his lane. Bartek slowed hard and moved over.",
+            [["cut_in"]],
+        ),
+        (
+            "Evening drive with Nkechi at 40 mph. A jogger was running along the left verge ahead. "
+            "Nkechi eased off and passed wide.",
+            [["along_road"]],
+        ),
+    ],
+    ids=["learner-braked-steered", "rider-slowed-moved-over", "learner-passed-wide"],
+)
+def test_a_named_person_who_is_no_road_user_does_not_lend_their_verb(text, expected):
+    assert _behaviours(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # a brand or a road user said with an article is no person's name
+        ("I was doing 50 km/h behind a Skoda. The Skoda braked hard.", [["sudden_stop"]]),
+    ],
+    ids=["the-brand"],
+)
+def test_a_name_bound_to_a_road_user_keeps_its_verb(text, expected):
+    assert _behaviours(text) == expected
+
+
+# --- a verb of causing with its object: the infinitive is the object's, not the subject's ---------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        (
+            "Our driver was doing 25 mph when a coach overtook on the hill and pulled in sharply, "
+            "forcing him to brake.",
+            [["overtake"]],
+        ),
+        ("A delivery van swung into the lane right in front of her, causing her to stamp on the brakes.", [["cut_in"]]),
+        ("At 30 km/h a pickup nosed into our lane ahead and made us stop dead.", [["cut_in"]]),
+    ],
+    ids=["forcing-him-to-brake", "causing-her-to-stamp", "made-us-stop"],
+)
+def test_what_a_road_user_makes_someone_do_is_not_its_own(text, expected):
+    assert _behaviours(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # the subject itself forced: the infinitive is its own
+        ("The van ahead of me was forced to stop by the lights.", [["stop"]]),
+        # forcing its way, then its own braking as a finite verb
+        ("A moped cut into my lane ahead, forcing its way in, then braked hard.", [["cut_in", "sudden_stop"]]),
+    ],
+    ids=["was-forced-to-stop", "forced-its-way-then-braked"],
+)
+def test_a_road_users_own_verb_after_forcing_stays_its_own(text, expected):
+    assert _behaviours(text) == expected
+
+
+# --- "had to" opening a sentence with no subject, in a story told of the ego's driver -------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Our member was riding at 40 mph when a lorry swept past him and cut in. Had to brake hard, no contact.",
+        "The driver was doing 30 mph when a taxi swung out of a side road on the left. Had to stamp on the brakes.",
+        "She was cycling at 15 mph when a van squeezed past her and pulled in. Needed to brake sharply.",
+    ],
+    ids=["member-had-to-brake", "driver-had-to-stamp", "she-needed-to-brake"],
+)
+def test_an_opening_modal_without_subject_is_the_protagonists(text):
+    assert "sudden_stop" not in _behaviours(text)[0]
+
+
+# --- "no" with a modifier before a behaviour noun denies it ---------------------------------------------
+@pytest.mark.parametrize(
+    "text, denied",
+    [
+        (
+            "A pedestrian crossed from the left in front of the car at 30 km/h. No pre-impact braking was seen.",
+            "sudden_stop",
+        ),
+        ("A cyclist rode out of a driveway ahead of the ego; no sudden swerving, no harsh braking.", "sudden_stop"),
+        ("The bus ahead moved off from the stop; there was no late braking.", "sudden_stop"),
+    ],
+    ids=["no-pre-impact-braking", "no-harsh-braking", "no-late-braking"],
+)
+def test_no_with_a_modifier_denies_the_behaviour_noun(text, denied):
+    assert all(denied not in b for b in _behaviours(text))
+
+
+def test_a_road_user_with_no_lights_braking_still_brakes():
+    assert "sudden_stop" in _behaviours("A cyclist with no lights braking suddenly in front of me.")[0]
+
+
+# --- crashing into someone is the contact, the outcome, not a behaviour ---------------------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A moped pulled out of a side road on the left and smashed into the side of my car.", [["turn_into"]]),
+        ("A motorbike came the wrong way round the bend and crashed head-on into my car.", [["wrong_way"]]),
+        ("A van cut into my lane ahead and collided with the front of the bus.", [["cut_in"]]),
+    ],
+    ids=["smashed-into-side", "crashed-head-on-into", "collided-with-front"],
+)
+def test_crashing_into_a_road_user_is_the_outcome(text, expected):
+    assert _behaviours(text) == expected
+
+
+def test_a_crash_with_nothing_hit_stays_a_fall():
+    assert "sudden_stop" in _behaviours("The e-scooter rider ahead of the ego crashes on the wet road.")[0]
+
+
+def test_a_named_rider_said_in_apposition_keeps_its_verb():
+    text = "A cyclist, Hendrik, was riding ahead of the ego at 20 km/h. Hendrik braked hard."
+    assert _behaviours(text) == [["sudden_stop"]]
+
+
+# --- a swerve round the ego is avoiding it and going on, not a lane change -----------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was turning left at 15 km/h when a cyclist coming the other way had to swerve round my bonnet.",
+        "We were reversing out of a drive at 5 km/h when a moped swerved round us and rode off.",
+        "The AV pulls out of the junction at 10 km/h and an e-scooter rider swerves around the front of the AV.",
+    ],
+    ids=["round-my-bonnet", "round-us", "around-the-front-of-the-av"],
+)
+def test_a_swerve_round_the_ego_goes_on(text):
+    assert _behaviours(text)[0] == ["keep_going"]
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # round something standing in its lane: the lead moves out and reveals it
+        ("On the motorway the car in front of me swerved round a broken-down van in our lane.", "cut_out"),
+        # round another road user named: not the ego
+        ("A cyclist swerved round the front of the bus and into my lane.", "change_lane"),
+    ],
+    ids=["round-a-broken-down-van", "round-the-bus"],
+)
+def test_a_swerve_round_something_else_is_no_going_on(text, expected):
+    assert _behaviours(text)[0][0] == expected
+
+
+# --- a clause of the narrator's own inside a sentence without its subject does not end the narrator's ---
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        (
+            "I was doing 50 km/h. A jogger was running along the left verge ahead. "
+            "Hung back until I could see the road was empty and went past him wide.",
+            [["along_road"]],
+        ),
+        (
+            "I was riding at 25 km/h. Two joggers were running along the verge ahead of me. "
+            "Slowed right down until we were past the bend and overtook them.",
+            [["along_road"], ["along_road"]],
+        ),
+        (
+            "I was cycling at 20 km/h. A man was walking along the kerb in front of me. "
+            "Waited until I was sure and overtook him.",
+            [["along_road"]],
+        ),
+    ],
+    ids=["hung-back-until-i", "slowed-until-we", "waited-until-i"],
+)
+def test_the_narrators_subordinate_clause_keeps_the_sentence_the_narrators(text, expected):
+    assert _behaviours(text) == expected

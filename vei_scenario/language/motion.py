@@ -129,9 +129,35 @@ def _touched_before(tokens: list[str], i: int) -> bool:
     return False
 
 
+#: Words between a verb of contact and the preposition of what it meets ("crashed head-on into").
+_HOW_IT_MEETS = frozenset(("head-on", "headlong", "straight", "right", "full", "square", "squarely", "directly"))
+
+
+#: Parts of a road user said as what was met ("into the side of my car").
+_MET_PARTS = frozenset(("side", "back", "rear", "front", "nose", "tail", "flank", "door", "wing", "bumper"))
+
+
+def _into_someone(tokens: list[str], j: int) -> bool:
+    """Whether "into" or "with" and a road user (or a part of one) follow a verb of contact ending at
+    token ``j`` ("crashed into a cyclist", "collided head-on with the bus", "smashed into the side of
+    my car"): it states whom it met, the contact itself, not a fall or a stop of its own ("crashed
+    into the barrier" is still how it stopped)."""
+    from vei_scenario.language.outcome import _names_road_user
+
+    while j < len(tokens) and tokens[j] in _HOW_IT_MEETS:
+        j += 1
+    if j >= len(tokens) or tokens[j] not in ("into", "with"):
+        return False
+    obj = tokens[j + 1 : j + 8]
+    k = next((k for k, w in enumerate(obj[:4]) if w in _MET_PARTS and obj[k + 1 : k + 2] == ["of"]), None)
+    obj = obj[k + 2 :] if k is not None else obj  # ("the side of my car": my car)
+    return _names_road_user(obj) or obj[:1] in (["me"], ["us"], ["ego"]) or obj[:2] == ["the", "ego"]
+
+
 def outcome_not_behaviour(clauses: list, tokens: list[str] | None = None) -> list:
     """``clauses`` (the reader's mentions, by clause) without the verbs that state the outcome rather
-    than what a road user does: a contact verb whose subject is both parties, "yield a/an ...", and a
+    than what a road user does: a contact verb whose subject is both parties or that says what it met
+    ("crashed into a van", "collided with the bus"), "yield a/an ...", and a
     fall said after a contact in its sentence ("clipped my mirror and fell off": what the contact did,
     not a stop the road user makes; ``tokens``: those the mentions index)."""
     out = []
@@ -147,6 +173,8 @@ def outcome_not_behaviour(clauses: list, tokens: list[str] | None = None) -> lis
                 plural = m.prev in _BOTH or (before is not None and before.slot == "pronoun" and before.words in _BOTH)
                 if first in _CONTACT and plural:
                     continue  # ("they are crashing": the collision, said of both)
+                if first in _CONTACT and tokens is not None and _into_someone(tokens, m.end):
+                    continue  # ("crashed head-on into a motorcyclist": the contact, the outcome)
                 if first in ("yield", "yields", "yielded", "yielding") and m.next_ in ("a", "an"):
                     continue  # ("designed to yield a collision")
             kept.append(m)
@@ -1101,14 +1129,53 @@ def chains(clauses: list, tokens: list[str]) -> list:
     (:func:`across_to_turn`); and who stands in the way, for a cut-out (:func:`parked_in_the_lane`,
     :func:`there_is_a_new_one`); "no room to stop" as nobody's stop (:func:`room_to_act_not_behaviour`); a stop
     made abruptly as a sudden stop (:func:`hard_stops`); one coming along in the ego's lane as coming
-    at it (:func:`coming_in_the_ego_lane`)."""
+    at it (:func:`coming_in_the_ego_lane`); a swerve round the ego as going on past it
+    (:func:`round_the_ego`)."""
     clauses = hard_stops(weather_not_behaviour(room_to_act_not_behaviour(clauses, tokens)), tokens)
     clauses = coming_from_in_front(moving_out_to_pass(a_left_or_a_right(clauses, tokens), tokens), tokens)
     clauses = across_to_turn(turning_to_a_side(clauses, tokens))
     clauses = there_is_a_new_one(parked_in_the_lane(state_before_its_noun(clauses, tokens), tokens), tokens)
     clauses = coming_in_the_ego_lane(passes_while_the_ego_yields(follows_the_ego(clauses, tokens)))
-    clauses = passing_in_front(out_into_the_road(clauses, tokens), tokens)
+    clauses = round_the_ego(passing_in_front(out_into_the_road(clauses, tokens), tokens), tokens)
     return slowing_into_a_stop(lets_the_ego_go(into_a_lane(clauses, tokens), tokens))
+
+
+#: Verbs (lemmas) of a sudden move aside.
+_SWERVES = frozenset(("swerve", "veer", "steer", "dodge", "jink", "weave", "jerk"))
+#: The front of something, said as what one swerves round ("round the front of my car").
+_FRONTS = frozenset(("front", "nose", "bonnet", "hood"))
+
+
+def round_the_ego(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a road user's swerve round the ego ("had to swerve round my bonnet", "veered
+    around the front of my car", "swerved round us") read as going on: it avoids the ego and keeps
+    its way; a move out of its lane is a swerve round something standing in it ("swerved round a
+    broken-down van": a cut-out stays one)."""
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k, m in enumerate(kept):
+            if m.slot != "behaviour" or not set(lemmas(m.words.split()[0]).get("VERB", ())) & _SWERVES:
+                continue
+            j = m.end if m.words.split()[-1] in ("round", "around", "past") else m.end + 1
+            if tokens[j - 1 : j] not in (["round"], ["around"], ["past"]):
+                continue
+            later = [x for x in kept[k + 1 :] if x.slot == "actor" and x.start < j + 6]
+            if _names_the_ego(tokens[j : j + 6], later):
+                kept[k] = replace(m, value=("keep_going", {}))
+        out.append((link, kept))
+    return out
+
+
+def _names_the_ego(obj: list[str], named: list) -> bool:
+    """Whether the object ``obj`` of "round" is the ego or its front: "me", "us", "my bonnet", "the
+    front of my car", "the front of" something that is no other road user named (``named``: the
+    road users named in it)."""
+    if named:
+        return named[0].value == "ego"
+    if obj[:1] and (obj[0] in _EGO_WORDS or obj[0] in ("my", "our")):
+        return True
+    return obj[:1] == ["the"] and obj[1:2] != [] and obj[1] in _FRONTS
 
 
 def _a_following(m) -> bool:

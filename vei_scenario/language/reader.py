@@ -1265,7 +1265,7 @@ def _read(text: str) -> Reading:
     both_with_ego = False  # ("CCRb: both cars at 50 km/h ...": the ego is one of them)
     ego_is_a_person = False  # (the ego named as "I" or "we": "it" is then never the ego)
     first_person = motion.told_in_the_first_person(text, tokens)  # (the narrator's)
-    narrators = whose_act.narrators_acts(clauses, scanned, first_person)  # ("Had to brake.": the narrator's verbs)
+    narrators = whose_act.acts_not_the_subjects(clauses, scanned, first_person, text)  # ("Had to brake.": not theirs)
     bound: dict[str, _Actor | str] = {}  # "he"/"she" → whom it first named
     resolved: dict[int, _Actor | str] = {}  # a road-user mention's start → whom it names
     owned = {o for _, ms in clauses for x in ms for o in x.owners}  # mentions a number is said of

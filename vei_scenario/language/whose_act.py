@@ -19,12 +19,29 @@ read as no one, its verb would go to whoever was the subject last (often the ego
 
 A behaviour said as a noun after "no" ("no braking", "no crossing intended", "no overtaking") or as
 what an intent or a sign is denied of ("no intention of crossing", "without any sign of stopping")
-does not happen: nothing is read of it. (A verb denied, "does not stop", is read by the reader as
-what the road user does instead.)
+does not happen: nothing is read of it, also with its modifiers between ("no pre-impact braking", "no
+harsh braking"). (A verb denied, "does not stop", is read by the reader as what the road user does
+instead.)
+
+Two more constructions give a verb a subject that is not the road user named last:
+
+* **a person named by a name** ("Marco braked hard and swerved", "Jack slowed and passed wide"): a
+  driving lesson, a debrief or a club report names the ego's driver by name. Such a name stands with
+  no article, capitalised, at the start of its clause; unless it was said with a road user ("my
+  brother Sam in his Golf"), the person is nobody the scenario places, and the verbs of that clause
+  are theirs: the ego's side of the story, not the road user's;
+* **a verb of causing with its object** ("forcing him to brake", "causing us to stop", "made me slam
+  on the brakes"): the verb after the object is the object's act; where the object is no road user
+  named (the ego, "him", "us"), it is not the subject's.
+
+A sentence with its subject left out that opens with a modal of having to ("Had to brake hard.",
+"Needed to stop.") is the protagonist's reaction in a story told of someone else too: a road user's
+own braking is said with its subject.
 """
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable
 
 from vei_scenario.language.lemmas import lemmas
@@ -58,10 +75,9 @@ def _plain_or_past(word: str) -> bool:
 def narrators_acts(clauses: list, tokens: list[str], first_person: bool) -> dict[int, bool]:
     """The verbs the narrator does in sentences whose subject is left out, by their mention's start,
     each with whether the narrator passes the road user it names as its object (``tokens``: those
-    the mentions index)."""
+    the mentions index). Told of someone else, only a sentence that opens with a modal of having to
+    ("Had to brake hard.") is read so, and only its reactions."""
     out: dict[int, bool] = {}
-    if not first_person:
-        return out
     bare = False  # (in a sentence with no subject so far, whose first verb is the narrator's form)
     lead_seen = False
     for _, mentions in clauses:
@@ -80,19 +96,200 @@ def narrators_acts(clauses: list, tokens: list[str], first_person: bool) -> dict
                 continue
             if not lead_seen:
                 lead_seen = True
-                if not _plain_or_past(m.words.split()[0]):
+                if not _plain_or_past(m.words.split()[0]) or not (first_person or _having_to(m)):
                     bare = False
                     break
             if m.slot != "behaviour":
+                continue
+            if not first_person and m.value[0] not in _REACTIONS:
                 continue
             after = tokens[m.end : m.end + 2]
             objected = bool(after) and (
                 after[0] in _OBJECT_PRONOUNS
                 or (after[0] in _ROUND and after[1:2] != [] and after[1] in _OBJECT_PRONOUNS)
             )
-            to_the_ego = any(x.slot == "actor" and x.value == "ego" for x in mentions[k + 1 :])
+            to_the_ego = _towards_the_ego(mentions[k + 1 :])
             if objected or (m.value[0] in _REACTIONS and not to_the_ego):
                 out[m.start] = objected and m.value[0] == "overtake"
+    return out
+
+
+#: The ego said as a subject: after it a clause of its own begins ("Waited till I could see").
+_EGO_SUBJECTS = frozenset(("i", "we"))
+
+
+def _towards_the_ego(after: list) -> bool:
+    """Whether the ego is named in ``after`` (the mentions after a verb) as what the verb goes
+    towards ("Cut in right in front of me."), not as the subject of a clause of its own ("Waited
+    till I could see it was clear": the narrator waited)."""
+    for x in after:
+        if x.slot == "actor" and x.value == "ego":
+            return x.words not in _EGO_SUBJECTS
+        if x.slot in ("conj", "link", "relative") or x.slot in _NAMING:
+            return False
+    return False
+
+
+#: Modals of having to: a reaction said with them and no subject is the protagonist's.
+_HAVING_TO = frozenset(("had", "needed", "have", "need"))
+
+
+def _having_to(m) -> bool:
+    """Whether mention ``m`` is a modal of having to ("had to", "needed to")."""
+    return m.slot == "modal" and m.words.split()[0] in _HAVING_TO
+
+
+def acts_not_the_subjects(clauses: list, tokens: list[str], first_person: bool, text: str) -> dict[int, bool]:
+    """Every verb whose subject is not the road user named last, by its mention's start, each with
+    whether its doer passes the road user named last: the narrator's (:func:`narrators_acts`), a
+    named person's (:func:`named_persons_acts`) and a caused one's (:func:`caused_acts`)."""
+    out = narrators_acts(clauses, tokens, first_person)
+    out.update(named_persons_acts(clauses, tokens, text))
+    out.update(caused_acts(clauses, tokens))
+    return out
+
+
+#: Words after which a clause's subject comes: a sentence's start, a conjunction.
+_CLAUSE_OPENERS = frozenset((".", "!", "?", ";", ":", ",", "and", "but", "then", "so", "when", "while", "as"))
+#: Words that end the stretch a subject governs: a sentence's end, a clause with a subject of its own.
+_CLAUSE_ENDS = frozenset(
+    (".", "!", "?", ";", "when", "while", "as", "because", "until", "till", "if", "before", "after")
+)
+#: Titles said before a surname ("Mr Hughes").
+_TITLES = frozenset(("mr", "mrs", "ms", "miss", "dr"))
+_NAMING_SLOTS = _NAMING
+#: Mentions that are a verb of a clause.
+_ACT_SLOTS = frozenset(("behaviour", "unknown_verb", "ego_verb", "to_stop", "stationary"))
+
+
+#: Marks after which a capital opens a sentence, a list item or a quote, and names nobody.
+_OPENING_MARKS = frozenset(".!?:;|\u2022*-\u2013\u2014\"'(\u201c\u2018>#")
+
+
+def _person_names(text: str) -> frozenset[str]:
+    """The words of ``text`` that may be names of people (lower-cased): said capitalised inside a
+    sentence somewhere ("a lesson with Jack", "Debrief, Marcus, 3pm")."""
+    out = set()
+    for m in re.finditer(r"\b[A-Z][a-z]+\b", text):
+        word = m.group().lower()
+        before = text[: m.start()].rstrip()
+        opening = not before or before[-1] in _OPENING_MARKS or text[m.start() - 1] == "\n"
+        if not opening:
+            out.add(word)
+    return frozenset(out)
+
+
+def _riding_names(text: str) -> frozenset[str]:
+    """The names ``text`` says with a vehicle of their own (lower-cased): "Sam in his Golf", "Priya on
+    her bike", "Sam's van": that person drives or rides a road user."""
+    found = re.finditer(r"\b([A-Z][a-z]+)(?:'s\b| (?:in|on) (?:his|her|their) \w)", text)
+    return frozenset(m.group(1).lower() for m in found)
+
+
+def named_persons_acts(clauses: list, tokens: list[str], text: str) -> dict[int, bool]:
+    """The verbs of a person named by a name at the start of a clause ("Marco braked hard and
+    swerved"), by their mention's start, each with whether it passes someone; not those of a name
+    said with a road user ("my brother Sam in his Golf ... Sam braked"), whose verbs are a road
+    user's. ``tokens``: those the mentions index."""
+    names, riding = _person_names(text), _riding_names(text)
+    flat = [m for _, ms in clauses for m in ms]
+    covered = {  # (words read as something: a road user, a place; "Jack" may be read as an unknown verb)
+        i for m in flat if m.slot != "unknown_verb" for i in range(m.start, max(m.end, m.start + 1))
+    }
+    road_users = [m for m in flat if m.slot == "actor" and m.value != "ego"]
+    persons: dict[int, bool] = {}
+    if not names:
+        return persons
+    for i, tok in enumerate(tokens):
+        if tok not in names or i in covered or (i and tokens[i - 1] in names):
+            continue
+        before = tokens[i - 1] if i else "."
+        if before in _TITLES:
+            before = tokens[i - 2] if i > 1 else "."
+        if before not in _CLAUSE_OPENERS:
+            continue
+        end = i + 1
+        while end < len(tokens) and tokens[end] in names and end not in covered:
+            end += 1
+        acts = _acts_after(flat, tokens, end)
+        if not acts:
+            continue
+        if tok in riding or any(
+            t == tok and any(r.end <= j <= r.end + 1 for r in road_users) for j, t in enumerate(tokens) if j != i
+        ):  # ("Sam in his Golf", "the cyclist, Sam": a road user's driver or rider)
+            continue
+        for m in acts:
+            persons[m.start] = _passes(m)
+    return persons
+
+
+def _acts_after(flat: list, tokens: list[str], end: int) -> list:
+    """The verbs said of a subject that ends at token ``end``: the first within two words after it,
+    and those joined to it after, up to a road user named or the end of the clause."""
+    out: list = []
+    for m in flat:
+        if m.start < end:
+            continue
+        if any(t in _CLAUSE_ENDS for t in tokens[end : m.start]):
+            break
+        if m.slot in _NAMING_SLOTS:
+            break
+        if not out and (m.start - end > 2 or not all(map(_word, tokens[end : m.start]))):
+            break  # (its own verb comes right after it: not "Manoeuvre: cut-in")
+        if m.slot in _ACT_SLOTS:
+            out.append(m)
+    return out
+
+
+def _word(token: str) -> bool:
+    """Whether ``token`` is a word, not punctuation or a number."""
+    return token.replace("-", "").replace("'", "").isalpha()
+
+
+def _passes(m) -> bool:
+    """Whether behaviour mention ``m`` is a pass ("passed wide", "went past")."""
+    return m.slot == "behaviour" and m.value[0] == "overtake"
+
+
+#: Verbs (lemmas) of making someone do something: the verb after their object is the object's.
+_CAUSING = frozenset(("force", "cause", "make", "compel", "oblige"))
+#: Of those, the one said with a bare infinitive ("made me brake").
+_CAUSING_BARE = frozenset(("make",))
+#: Objects said as a pronoun ("forcing him to brake").
+_PERSON_OBJECTS = frozenset(("me", "us", "him", "her", "them", "you"))
+#: Words that open an object said as a noun ("causing the driver to swerve").
+_DETERMINERS = frozenset(("the", "a", "an", "my", "our", "his", "her", "their"))
+
+
+def caused_acts(clauses: list, tokens: list[str]) -> dict[int, bool]:
+    """The verbs a road user makes someone else do ("forcing him to brake", "causing us to stop",
+    "made me slam on the brakes"), by their mention's start: the object's act, not the subject's,
+    where the object names no road user (the ego, "him", "the driver"). ``tokens``: those the mentions
+    index."""
+    out: dict[int, bool] = {}
+    flat = [m for _, ms in clauses for m in ms]
+    road_users = [m for m in flat if m.slot == "actor" and m.value != "ego"]
+    for m in flat:
+        if m.slot not in _ACT_SLOTS or m.start < 2:
+            continue
+        bare = tokens[m.start - 1] != "to"
+        end = m.start - (0 if bare else 1)  # (the object ends before the verb, or before its "to")
+        j = end - 1
+        if tokens[j] not in _PERSON_OBJECTS:
+            j = next(
+                (i for i in range(end - 1, max(end - 4, -1), -1) if not _word(tokens[i]) or tokens[i] in _DETERMINERS),
+                -1,
+            )
+            if j < 0 or tokens[j] not in _DETERMINERS or "way" in tokens[j:end]:
+                continue  # (the object "the driver", "the bus behind"; "made its way into my lane": no one made to)
+        j -= 1
+        verbs = set(lemmas(tokens[j]).get("VERB", ())) if j >= 0 else set()
+        if not verbs & (_CAUSING_BARE if bare else _CAUSING):
+            continue
+        if any(j < r.start < end for r in road_users):
+            continue  # ("forced the bus behind to brake": the bus's act, for the reader)
+        for act in _acts_after(flat, tokens, m.start):  # ("to stamp on the brakes", "to brake and swerve")
+            out[act.start] = False
     return out
 
 
@@ -118,6 +315,8 @@ def not_meant(tokens: list[str], i: int) -> bool:
     intention of crossing", "without any sign of stopping")."""
     if i >= 1 and tokens[i - 1] == "no":
         return True
+    if tokens[i].endswith("ing") and _modified_after_no(tokens, i):
+        return True
     j = i - 1
     if j >= 0 and tokens[j] in ("of", "to"):
         j -= 1
@@ -127,6 +326,21 @@ def not_meant(tokens: list[str], i: int) -> bool:
     while j >= 0 and tokens[j] in _BEFORE_INTENT:
         j -= 1
     return j >= 0 and tokens[j] in ("no", "without")
+
+
+def _modified_after_no(tokens: list[str], i: int) -> bool:
+    """Whether the noun in -ing at ``tokens[i]`` follows "no" past one or two modifiers ("no
+    pre-impact braking", "no sudden, harsh braking"): adjectives or hyphened words, never a noun of its
+    own ("no lights braking": the lights are what is denied)."""
+    j = i - 1
+    while j >= 0 and i - j <= 2 and _modifier(tokens[j]):
+        j -= 1
+    return j < i - 1 and j >= 0 and tokens[j] == "no"
+
+
+def _modifier(word: str) -> bool:
+    """Whether ``word`` can modify a noun: an adjective ("harsh", "heavy") or a hyphened word ("pre-impact")."""
+    return ("-" in word.strip("-") and word.isascii()) or "ADJ" in lemmas(word)
 
 
 #: Road-user types that are ridden: "the rider" is one of them.
