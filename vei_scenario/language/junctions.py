@@ -176,3 +176,17 @@ def _across_in_front(mentions: list, tokens: list[str]) -> list:
         mentions = [x for x in mentions[:k] if id(x) not in gone] + [crossing] + mentions[k:]
         break
     return mentions
+
+
+#: Road users that ride a road: out of a side road they come along its carriageway, not off a kerb.
+_RIDERS = frozenset(("bicycle", "e-scooter"))
+
+
+def rides_across_from_an_arm(junction: bool, kind: str, from_arm: bool, kerb: bool, side: str | None) -> bool:
+    """Whether a rider said to cross the ego's road at a junction comes out of a side road said with its
+    side ("a cyclist from the right side road crosses", "an e-scooter from the left side street rides
+    across our path"): it rides through the junction from that arm, across the ego's path, as a red-light
+    runner does (the arm, not the kerb, is where it starts). A walker crosses from the kerb of that side,
+    and a rider said on a kerb or footway ("off the pavement on the left") starts there; an arm it
+    crosses ("crossing the exit from the right") is where it crosses, not where it comes from."""
+    return junction and kind in _RIDERS and from_arm and not kerb and side in ("left", "right")
