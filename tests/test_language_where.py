@@ -140,3 +140,58 @@ def test_the_other_direction_in_other_words_is_oncoming(text):
 )
 def test_turning_the_other_direction_is_no_start(text, expected):
     assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # a walker crossing the mouth of the road the ego turns into is on the side it turns to
+        # (miles per hour: the near kerb is the left, so a right turn tells the kerb apart from it)
+        ("I turned right into Elm Street at 10 mph and a man was crossing the side road, so I waited.",
+         "roadside_right"),
+        ("The ego turns left into a side street; a woman with a pram is crossing the side street.", "roadside_left"),
+        ("Turning right at 10 mph, I had to stop for a jogger crossing the minor road I was turning into.",
+         "roadside_right"),
+    ],
+)  # fmt: skip
+def test_a_walker_crossing_the_arm_the_ego_turns_into_is_on_that_side(text, expected):
+    assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # near misses: a side said of the walker wins, and without a turn the near kerb stays
+        ("The ego turns left into a side street; a man crosses the side street from the right.", "roadside_right"),
+        ("At 30 km/h on a straight road, a child crosses from the left.", "roadside_left"),
+    ],
+)
+def test_a_side_said_of_the_walker_wins_over_the_turn(text, expected):
+    assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # a side word, a word that says which part, then a kerb noun: that kerb
+        ("Ego turning right at 15 km/h; a pedestrian steps off the right corner kerb and crosses.", "roadside_right"),
+        ("At 30 km/h a jogger runs out from the left grass verge in front of us.", "roadside_left"),
+        ("At 25 km/h a child steps off the left side pavement into the road.", "roadside_left"),
+    ],
+)
+def test_a_side_word_and_a_modifier_before_a_kerb_noun_is_that_kerb(text, expected):
+    assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # from a kerb with no side said into a lane of a side: the kerb beside that lane
+        ("Ego at 80 km/h; a cyclist comes off the hard shoulder into the left lane just ahead.", "roadside_left"),
+        ("At 60 km/h on a dual carriageway a pedestrian stepped off the verge into the right lane.", "roadside_right"),
+        ("Ego 70 km/h, two lanes each way; an e-scooter rider swerves off the shoulder into the right lane.",
+         "roadside_right"),
+    ],
+)  # fmt: skip
+def test_from_an_unsided_kerb_into_a_lane_of_a_side_is_that_kerb(text, expected):
+    assert relation(text) == expected

@@ -1901,6 +1901,8 @@ def _read(text: str) -> Reading:
                 origin = a.lane_side or a.side  # ("a truck in the right lane moves into the left lane": from there)
                 a.lane_side, a.side = None, a.toward
                 a.relation = sides.origin_lane(origin, a.relation) or a.relation
+            elif kerb := sides.kerb_beside_lane(a.kerb, a.kerb_side, a.came_from, a.toward):
+                a.kerb_side = kerb  # ("stepped off the verge into the right lane": that lane's kerb)
             elif not (a.lane_side or a.side or a.kerb_side):
                 a.side = "left" if a.toward == "right" else "right"
         if behaviours and behaviours[0][0] == "change_lane" and sides.starts_in_lane(a.lane_side, a.side, a.toward):
@@ -1965,6 +1967,12 @@ def _read(text: str) -> Reading:
             behaviours = behaviours[crossing_at:]  # ("... stops; then crosses from the left"): from the kerb
         a.behaviours = behaviours
         spec.relation = _resolve_relation(a, r.map_kind, sides.drives_on_left(scanned, text))
+        first_act = behaviours[0][0] if behaviours else None
+        own_side = a.side or a.kerb_side or a.lane_side
+        spec.relation = (
+            junctions.crosses_the_arm_turned_into(a.kind, first_act, a.arm, a.from_arm, own_side, r.ego_route)
+            or spec.relation
+        )  # ("I turned left into it; a man was crossing the side road": on the left)
         if (
             junction
             and spec.relation in ("junction_left", "junction_right")

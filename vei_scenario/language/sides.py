@@ -693,6 +693,15 @@ def approaches_from(tokens: list[str], i: int, key: tuple[str, ...]) -> bool:
     return len(key) == 1 and after == ["from"] and "approach" in lemmas(key[0]).get("VERB", ())
 
 
+def kerb_beside_lane(kerb: bool, kerb_side: str | None, came_from: bool, toward: str | None) -> str | None:
+    """The side of a kerb said without one that a road user comes off into a lane of a side ("stepped
+    off the verge into the right lane", "came out of the hard shoulder into the left lane"): a lane is
+    entered from the kerb beside it, so the kerb is on that lane's side. Why: read as a move across
+    from the other side, it started on the far kerb. None where a side is said or it did not come
+    from the kerb."""
+    return toward if kerb and kerb_side is None and came_from and toward in ("left", "right") else None
+
+
 def beside(lane: str | None, ego_lane: str | None) -> str | None:
     """The side of the ego a road user in ``lane`` is on, when the ego's own lane is said too (lanes
     as left, middle or right): the lane with the lower rank is to the left. Without the ego's lane the
