@@ -195,3 +195,21 @@ def test_a_side_word_and_a_modifier_before_a_kerb_noun_is_that_kerb(text, expect
 )  # fmt: skip
 def test_from_an_unsided_kerb_into_a_lane_of_a_side_is_that_kerb(text, expected):
     assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # one that passes the ego to turn across its path starts behind it, though the pass is read into the turn
+        "Doing 20 mph, a van overtook me and immediately turned left across my path into a side road.",
+        "At 30 km/h at the junction a taxi overtakes the ego and turns left across its bonnet.",
+        "I was cycling at 15 mph at the crossroads when a car overtook me and then turned left across my path.",
+    ],
+)
+def test_one_that_overtakes_the_ego_to_turn_across_it_starts_behind(text):
+    assert relation(text) == "behind"
+
+
+def test_an_overtaker_said_in_a_lane_starts_in_that_lane():
+    text = "At 30 km/h at the junction a taxi in the right lane overtakes the ego and turns left across its bonnet."
+    assert relation(text) == "right"

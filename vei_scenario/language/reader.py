@@ -2014,7 +2014,10 @@ def _read(text: str) -> Reading:
     apply_manner(stated_manner(tokens), r.actors)  # (the scales of closeness, margin and timing)
     for spec in r.actors:
         spec.behaviours = _one_act_once(spec)
+        before = spec.behaviours[0][0] if spec.behaviours else None
         spec.behaviours = one_path(spec, said, turn_across_side(text))
+        after = spec.behaviours[0][0] if spec.behaviours else None
+        spec.relation = sides.overtaker_start(before, after, spec.relation)  # ("overtook me and turned left")
     if r.map_kind is None and any(s.relation == "junction_opposite" for s in r.actors):
         r.map_kind = "crossroad"
     r.ego_speed_mps = ego_said if ego_said is not None else r.ego_speed_mps

@@ -702,6 +702,16 @@ def kerb_beside_lane(kerb: bool, kerb_side: str | None, came_from: bool, toward:
     return toward if kerb and kerb_side is None and came_from and toward in ("left", "right") else None
 
 
+def overtaker_start(before: str | None, after: str | None, relation: str | None) -> str | None:
+    """Where a road user starts whose first act, an overtake (``before``), was read as no more than how
+    it gets to its next act (``after``: "overtook me and turned left across my path" is the turn) when
+    nothing else places it: behind the ego, the overtake's own start. Why: otherwise the start of the
+    act left (a lane beside) is sampled, and it began beside the ego it had yet to pass. An overtake
+    still first keeps its start as read (the overtake's own, behind, when none is said)."""
+    dropped = before == "overtake" and after != "overtake"
+    return "behind" if dropped and relation is None else relation
+
+
 def beside(lane: str | None, ego_lane: str | None) -> str | None:
     """The side of the ego a road user in ``lane`` is on, when the ego's own lane is said too (lanes
     as left, middle or right): the lane with the lower rank is to the left. Without the ego's lane the
