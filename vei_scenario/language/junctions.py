@@ -176,3 +176,33 @@ def _across_in_front(mentions: list, tokens: list[str]) -> list:
         mentions = [x for x in mentions[:k] if id(x) not in gone] + [crossing] + mentions[k:]
         break
     return mentions
+
+
+#: Road users that ride a road: out of a side road they come along its carriageway, not off a kerb.
+_RIDERS = frozenset(("bicycle", "e-scooter"))
+
+
+def rides_across_from_an_arm(junction: bool, kind: str, from_arm: bool, kerb: bool, side: str | None) -> bool:
+    """Whether a rider said to cross the ego's road at a junction comes out of a side road said with its
+    side ("a cyclist from the right side road crosses", "an e-scooter from the left side street rides
+    across our path"): it rides through the junction from that arm, across the ego's path, as a red-light
+    runner does (the arm, not the kerb, is where it starts). A walker crosses from the kerb of that side,
+    and a rider said on a kerb or footway ("off the pavement on the left") starts there; an arm it
+    crosses ("crossing the exit from the right") is where it crosses, not where it comes from."""
+    return junction and kind in _RIDERS and from_arm and not kerb and side in ("left", "right")
+
+
+#: Road users who cross the mouth of a side road on foot or on wheels.
+_WALKERS_AND_RIDERS = frozenset(("pedestrian", "bicycle", "e-scooter"))
+
+
+def crosses_the_arm_turned_into(
+    kind: str, first: str | None, arm: bool, from_arm: bool, side: str | None, route: str | None
+) -> str | None:
+    """The kerb a walker or rider starts at who crosses the road the ego turns into, when no side is said
+    of them ("I turned left into it; a man was crossing the side road"): the side road lies on the side
+    the ego turns to, so whoever crosses its mouth starts on that side of the ego, whichever side traffic
+    keeps to. None where a side is said, no arm is crossed (one said to come out of it is not crossing
+    it), or the ego does not turn."""
+    crosses = kind in _WALKERS_AND_RIDERS and first == "cross_in_front" and arm and not from_arm
+    return f"roadside_{route}" if crosses and side is None and route in ("left", "right") else None

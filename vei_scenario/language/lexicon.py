@@ -811,6 +811,7 @@ KERB = (
     "edge of the road",
     "side of the road",
     "shoulder",
+    "hard shoulder",
     "bus stop",
     "driveway",
     "on my inside",

@@ -253,6 +253,7 @@ class _Actor:
     passed: bool = False  # what the ego passes ("the ego overtakes her"): going along ahead of it
     has_way: bool = False  # going on while the ego gives way ("we yield; the van carries on")
     priority: bool = False  # already on the roundabout or the main road: going on is its right
+    from_arm: bool = False  # said to come from or out of a junction arm ("from the side road on the left")
 
 
 #: Euro NCAP's names of its test scenarios ("Car-to-Car Rear stationary", "Car-to-Pedestrian Nearside
@@ -646,11 +647,17 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             clauses[-1][1].append(_Mention("relation", "oncoming", words, i, prev, end=towards, det=det))
             i = towards
             continue
+        against = sides.the_other_direction(tokens, i)
+        if against is not None:  # "in the contrary direction": it comes towards the ego
+            words = " ".join(tokens[i:against])
+            clauses[-1][1].append(_Mention("relation", "oncoming", words, i, prev, end=against, det=det))
+            i = against
+            continue
         if tok in ("left", "right") and len(_best(tokens, i) or ()) <= 1 and sides.not_a_side(tokens, i):
             ignored.append(tok)  # ("cut right across", "as we left the roundabout": no side)
             i += 1
             continue
-        said = sides.phrase_at(tokens, i, left_hand, ring)
+        said = sides.phrase_at(tokens, i, left_hand, ring) or sides.named_road_at(tokens, i, proper)
         if said is not None:  # a lane, kerb or arm and its side ("in the offside lane", "a side road on my left")
             words = " ".join(tokens[said.start : said.end])
             nxt = tokens[said.end] if said.end < len(tokens) else ""
@@ -755,6 +762,9 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             i += 1
             continue
         slot, value = TABLE[key]
+        if slot == "relation" and value == "oncoming" and sides.approaches_from(tokens, i, key):
+            i += len(key)  # ("approaching from behind": where it comes from is said next)
+            continue
         placed = sides.place_after_degree(tokens, i, key, _relation_length) if slot != "relation" else None
         if placed is not None:  # ("right in front of me": how exactly, and the place; "right ahead" too)
             if slot != "noise":
@@ -805,9 +815,9 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
         if slot == "actor" and i + len(key) < len(tokens) and tokens[i + len(key)] in _PARTS:
             i += len(key) + 1  # "50 % of the vehicle width", "a car door": a part of one, not a road user
             continue
-        if slot in ("side", "kerb_side", "lane_side") and i + len(key) < len(tokens) and tokens[i + len(key)] in _PARTS:
-            ignored.extend(tokens[i : i + len(key) + 1])  # "the nearside wing": a part of a vehicle, no side
-            i += len(key) + 1
+        if slot in ("side", "kerb_side", "lane_side") and (part := sides.part_after_side(tokens, i + len(key), _PARTS)):
+            ignored.extend(tokens[i:part])  # "the nearside wing", "its offside front corner": a part of a vehicle
+            i = part
             continue
         if slot == "actor" and value != "ego" and _predicate_of_ego(tokens, i):
             ignored.append(" ".join(tokens[i : i + len(key)]))  # "I was the designated driver": the ego
@@ -1155,6 +1165,8 @@ def _resolve_relation(a: _Actor, map_kind: str | None, left_hand: bool = False) 
     junction = map_kind in ("crossroad", "roundabout")
     vehicle = a.kind in VEHICLES
     side = a.kerb_side or a.lane_side or a.side or (a.relation if a.relation in ("left", "right") else None)
+    if first == "cross_in_front" and junctions.rides_across_from_an_arm(junction, a.kind, a.from_arm, a.kerb, side):
+        return f"junction_{side}"  # ("a cyclist from the side road on the right crosses": out of that arm)
     if first == "cross_in_front" and not vehicle:  # a crossing starts at a kerb (at a junction too)
         if side is None and a.relation and a.relation.startswith(("junction", "roadside")):
             side = a.relation.rsplit("_", 1)[1]
@@ -1914,6 +1926,8 @@ def _read(text: str) -> Reading:
                 origin = a.lane_side or a.side  # ("a truck in the right lane moves into the left lane": from there)
                 a.lane_side, a.side = None, a.toward
                 a.relation = sides.origin_lane(origin, a.relation) or a.relation
+            elif kerb := sides.kerb_beside_lane(a.kerb, a.kerb_side, a.came_from, a.toward):
+                a.kerb_side = kerb  # ("stepped off the verge into the right lane": that lane's kerb)
             elif not (a.lane_side or a.side or a.kerb_side):
                 a.side = "left" if a.toward == "right" else "right"
         if behaviours and behaviours[0][0] == "change_lane" and sides.starts_in_lane(a.lane_side, a.side, a.toward):
@@ -1978,11 +1992,20 @@ def _read(text: str) -> Reading:
             behaviours = behaviours[crossing_at:]  # ("... stops; then crosses from the left"): from the kerb
         a.behaviours = behaviours
         spec.relation = _resolve_relation(a, r.map_kind, sides.drives_on_left(scanned, text))
+        first_act = behaviours[0][0] if behaviours else None
+        own_side = a.side or a.kerb_side or a.lane_side
+        spec.relation = (
+            junctions.crosses_the_arm_turned_into(a.kind, first_act, a.arm, a.from_arm, own_side, r.ego_route)
+            or spec.relation
+        )  # ("I turned left into it; a man was crossing the side road": on the left)
         if (
             junction
             and spec.relation in ("junction_left", "junction_right")
             and behaviours[:1]
-            and (behaviours[0][0] == "keep_going" and not a.stationary and not a.has_way)
+            and (
+                (behaviours[0][0] == "keep_going" and not a.stationary and not a.has_way)
+                or (behaviours[0][0] == "cross_in_front" and a.kind in RIDERS)
+            )
         ):  # entering the junction from a side road: across the ego's path
             if a.kind == "pedestrian":  # (on foot, from the kerb of that side: a walker does not drive an arm)
                 spec.relation = "roadside_" + spec.relation.split("_")[1]
@@ -2016,7 +2039,10 @@ def _read(text: str) -> Reading:
     apply_manner(stated_manner(tokens), r.actors)  # (the scales of closeness, margin and timing)
     for spec in r.actors:
         spec.behaviours = _one_act_once(spec)
+        before = spec.behaviours[0][0] if spec.behaviours else None
         spec.behaviours = one_path(spec, said, turn_across_side(text))
+        after = spec.behaviours[0][0] if spec.behaviours else None
+        spec.relation = sides.overtaker_start(before, after, spec.relation)  # ("overtook me and turned left")
     if r.map_kind is None and any(s.relation == "junction_opposite" for s in r.actors):
         r.map_kind = "crossroad"
     r.ego_speed_mps = ego_said if ego_said is not None else r.ego_speed_mps
@@ -2750,6 +2776,7 @@ def _apply(m, who, r, link, added) -> None:
             and not sides.arm_is_where_it_acts(m.prev, a.said, a.behaviours)
         ):
             a.arm = True  # (not "on the crossing just after the exit": a landmark, not where it comes from)
+            a.from_arm = a.from_arm or m.prev in ("from", "out")  # (not "over the mouth of the side road")
         elif m.slot == "stationary":
             a.stationary = True
             a.parked = a.parked or m.words.split()[0] in ("parked", "park", "double-parked", "double")

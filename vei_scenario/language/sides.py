@@ -128,6 +128,43 @@ def _past_owner(tokens: list[str], m: int) -> int:
     return m + 1 if m < len(tokens) and tokens[m] in _DETERMINERS else m
 
 
+#: The last word of a road's name ("King St", "Elm Close", "Station Road"), abbreviated or not.
+_STREET_WORDS = frozenset(
+    {"road", "rd", "street", "st", "lane", "ln", "avenue", "ave", "close", "way", "drive", "dr", "crescent",
+     "terrace", "grove", "boulevard", "blvd", "parade", "gardens", "mews", "place", "court", "row", "hill"}
+)  # fmt: skip
+#: Verbs' particles a road user comes along a named road with ("coming down Station Road from the left").
+_ALONG_A_ROAD = frozenset({"down", "along", "up"})
+
+
+def named_road_at(tokens: list[str], i: int, proper: frozenset[str]) -> Said | None:
+    """A road named by its name that a road user comes out of or along, starting at token ``i`` (its
+    first name word, after "out of" or "from"; or after "down"/"along"/"up" when "from the left/right"
+    follows), as a junction arm, with its side when one is said after it ("shot out of Albert Street on
+    my left", "pulled out of Elm Close", "coming down Station Road from the left"); None otherwise.
+
+    Why: a road user cannot come out of the road the ego drives on, so a named road it comes out of is
+    a side road, an arm of a junction; read past as names, a rider out of one was taken to step off the
+    kerb. The name must be written with a capital where it is not a sentence's first word (``proper``,
+    lower-cased) and end in a word for a street: "out of Tesco", "out of nowhere", "from the bus lane"
+    are no roads."""
+    n = len(tokens)
+    before = tokens[max(0, i - 2) : i]
+    along = before[-1:] and before[-1] in _ALONG_A_ROAD
+    if not (before[-1:] == ["from"] or before == ["out", "of"] or along):
+        return None
+    k = i
+    while k < n and k < i + 3 and tokens[k] in proper and tokens[k] not in _STREET_WORDS:
+        k += 1
+    if k == i or k >= n or tokens[k] not in _STREET_WORDS:
+        return None
+    end = k + 1
+    if tokens[end : end + 1] and tokens[end] in _LINKS | {"from"} and _side_follows(tokens, end + 1):
+        m = _past_owner(tokens, end + 1)
+        return Said(i, m + 1, before[-1], (("arm", None), ("side", tokens[m])))
+    return None if along else Said(i, end, "from" if before[-1] == "from" else "out", (("arm", None),))
+
+
 def _side_follows(tokens: list[str], m: int) -> bool:
     """Whether a side ("left"/"right", after whose it is) follows at token ``m``."""
     m = _past_owner(tokens, m)
@@ -163,6 +200,28 @@ VEHICLE_PARTS = frozenset(
      "end", "tyre", "tire", "fender", "windscreen", "windshield", "window", "mirror", "offside", "nearside"}
 )  # fmt: skip
 _ENDS = frozenset({"rear", "front", "back"})
+#: Words after which a noun phrase has ended ("went under the nearside front and ...").
+_PHRASE_ENDS = frozenset({"and", "but", "then", "as", "while", "when", "so", "of", "with"})
+
+
+def part_after_side(tokens: list[str], k: int, parts: frozenset[str] | set[str] = VEHICLE_PARTS) -> int | None:
+    """Where a part of a vehicle named after a side word ends, the side word ending at token ``k``
+    ("the nearside | wing", "the offside | front corner", "the nearside | rear passenger door", "went
+    under the offside | front."), or None. Why: a side word before an end of a vehicle or a part says
+    where on the vehicle something touched, not where a road user came from; read as a kerb side it
+    put a rider who came off the left kerb on the right. An end word alone is a part only where its
+    noun phrase ends ("the nearside front" then a stop or "and"), not "the nearside in front of me"."""
+    n = len(tokens)
+    m = k + (k < n and tokens[k] in _ENDS)
+    if m < n and tokens[m] in parts:
+        return m + 1
+    if m + 1 < n and tokens[m + 1] in parts and tokens[m].isalpha() and tokens[m] not in _NOT_A_MODIFIER:
+        return m + 2  # ("rear passenger door", "front driver's wing" read as "front driver 's")
+    if m > k and (m >= n or not tokens[m].isalpha() or tokens[m] in _PHRASE_ENDS):
+        return m
+    return None
+
+
 #: Words of the far or near side of the road, before a plain side that restates them.
 _FAR_NEAR = frozenset({"far", "near", "opposite", "other"})
 _OPENING = frozenset(
@@ -386,6 +445,8 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
         part = tokens[j + 1 : j + 2] == ["of"] or tokens[j - 1] in _OWNERS or tokens[j - 1] == "'s"
         if part:  # "the offside of the HGV", "into our nearside": a side of a vehicle, no road user's place
             return Said(start, j + 1, prep, ())
+        if (end := part_after_side(tokens, j + 1)) is not None:  # ("the offside front corner")
+            return Said(start, end, prep, ())
         if tokens[j + 1 : j + 2] not in (["lane"], ["left"], ["right"], ["hand"]) and prep in ("on", "from", "off"):
             side = _side(tokens[j], "", left_hand, ring)  # "from the nearside": that kerb (a walker's),
             # or the lane on that side (a driver's, "a car on the offside drifted in"): the reader says whose
@@ -428,6 +489,9 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
             return Said(start, k + 1, prep, (("kerb", None), ("kerb_side", side)))
         if (noun in ARM_NOUNS or noun in ("road", "street")) and side != "middle" and tokens[j] in _PLAIN:
             return Said(start, k + 1, prep, (("arm", None), ("side", side)))
+        minor = noun in _MINOR and tokens[k + 1 : k + 2] and tokens[k + 1] in _ROAD_NOUNS
+        if minor and side != "middle" and tokens[j] in _PLAIN:  # ("from the left side street": that arm)
+            return Said(start, k + 2, prep, (("arm", None), ("side", side)))
         return None
     # "lane 1": numbered from the nearside
     numbered = j + 1 < n and tokens[j + 1] in LANE_NUMBERS
@@ -593,6 +657,59 @@ def towards_in_ego_lane(tokens: list[str], i: int) -> int | None:
     if "behind" in tokens[max(0, i - 3) : end + 3]:
         return None  # ("coming up behind us in our lane")
     return end
+
+
+#: Adjectives that say a direction is against the ego's, and the nouns of a direction.
+_AGAINST = frozenset({"opposite", "contrary", "other", "reverse", "opposing"})
+_DIRECTIONS = frozenset({"direction", "way"})
+#: Verbs whose direction is where they turn or look, not where a road user comes from.
+_TURNING = frozenset({"turn", "look", "face", "glance", "swerve", "steer", "veer", "point", "pull", "jerk"})
+
+
+def the_other_direction(tokens: list[str], i: int) -> int | None:
+    """Where a phrase that says a road user travels against the ego's direction ends, starting at token
+    ``i`` ("in the contrary direction", "in the reverse direction", "driving the other direction"),
+    or None. Why: an adjective of opposition and a noun of direction say it in many combinations, more
+    than a phrase list holds. Not after a verb of turning or looking ("turned the other direction",
+    "looked the other way"): where it turns or looks, no start."""
+    n = len(tokens)
+    j = i + (tokens[i] in ("in", "from"))
+    j += j < n and tokens[j] == "the"
+    if j == i or j + 1 >= n or tokens[j] not in _AGAINST or tokens[j + 1] not in _DIRECTIONS:
+        return None
+    verb = tokens[i - 1] if i else ""
+    if set(lemmas(verb).get("VERB", ())) & _TURNING:
+        return None
+    return j + 2
+
+
+def approaches_from(tokens: list[str], i: int, key: tuple[str, ...]) -> bool:
+    """Whether ``key`` at token ``i`` is a bare verb of approaching followed by where it approaches from
+    ("approaching from behind", "approaches from the left", "approached from the side road"): the
+    place after "from" says where it starts, and the verb alone says nothing of facing the ego. Why:
+    read as "oncoming" (as a bare "an approaching van" is), it put a rider overtaking from behind
+    head-on. "Approaching from the front" is the lexicon's own, longer phrase: oncoming."""
+    after = tokens[i + len(key) : i + len(key) + 1]
+    return len(key) == 1 and after == ["from"] and "approach" in lemmas(key[0]).get("VERB", ())
+
+
+def kerb_beside_lane(kerb: bool, kerb_side: str | None, came_from: bool, toward: str | None) -> str | None:
+    """The side of a kerb said without one that a road user comes off into a lane of a side ("stepped
+    off the verge into the right lane", "came out of the hard shoulder into the left lane"): a lane is
+    entered from the kerb beside it, so the kerb is on that lane's side. Why: read as a move across
+    from the other side, it started on the far kerb. None where a side is said or it did not come
+    from the kerb."""
+    return toward if kerb and kerb_side is None and came_from and toward in ("left", "right") else None
+
+
+def overtaker_start(before: str | None, after: str | None, relation: str | None) -> str | None:
+    """Where a road user starts whose first act, an overtake (``before``), was read as no more than how
+    it gets to its next act (``after``: "overtook me and turned left across my path" is the turn) when
+    nothing else places it: behind the ego, the overtake's own start. Why: otherwise the start of the
+    act left (a lane beside) is sampled, and it began beside the ego it had yet to pass. An overtake
+    still first keeps its start as read (the overtake's own, behind, when none is said)."""
+    dropped = before == "overtake" and after != "overtake"
+    return "behind" if dropped and relation is None else relation
 
 
 def beside(lane: str | None, ego_lane: str | None) -> str | None:

@@ -1,0 +1,215 @@
+"""Where a road user starts: classes of wording that place it, each in wordings of our own, with
+near misses that look alike and must not be read so."""
+
+import pytest
+
+from vei_scenario.language.reader import read
+
+
+def relation(text: str) -> str | None:
+    return read(text).actors[0].relation
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # a side word, then an end of a vehicle and its part: where it was hit, not where it came from
+        ("Doing 30 mph, a jogger stepped off the kerb on my left and bounced off the offside front corner.",
+         "roadside_left"),
+        ("At 20 mph a cyclist pulled out from the pavement on the right and hit the nearside rear door.",
+         "roadside_right"),
+        # an end closing the phrase ("the offside front"), and the part after a second word
+        ("At 25 mph a child ran out from the pavement on my left and went under the offside front.", "roadside_left"),
+        ("At 30 mph a scooter came out of a side road on my right and scraped the nearside rear passenger door.",
+         "junction_right"),
+    ],
+)  # fmt: skip
+def test_a_side_word_before_an_end_and_a_part_is_a_part_of_a_vehicle(text, expected):
+    assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # near misses: the side word names a kerb or a lane, and "front" is no part here
+        ("Doing 20 mph, a boy ran out from the nearside in front of me.", "roadside_left"),
+        ("At 40 mph a van in the offside lane moved over in front of me.", "right"),
+    ],
+)
+def test_a_side_word_of_a_kerb_or_lane_stays_a_place(text, expected):
+    assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # a side word before "side road" / "side street" / "minor road": the arm on that side
+        ("Ego at 40 km/h through the crossroads; a cyclist from the right side road crosses without stopping.",
+         "junction_right"),
+        ("At the junction, ego 30 km/h, a van pulls out of the left minor road in front of us.", "junction_left"),
+        ("Ego 35 km/h at the intersection; an e-scooter from the left side street rides across our path.",
+         "junction_left"),
+    ],
+)  # fmt: skip
+def test_a_side_word_before_a_side_road_is_that_arm(text, expected):
+    assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # near misses: "the left side of the road" is a kerb side, and "the right side" alone no road
+        ("At 30 km/h a pedestrian crosses from the left side of the road.", "roadside_left"),
+        ("At 30 km/h a pedestrian crosses from the right side.", "roadside_right"),
+    ],
+)
+def test_a_side_of_the_road_is_no_side_road(text, expected):
+    assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # a road named by its name, out of which a road user comes: a junction arm
+        ("Doing 25 mph down the high street when a cyclist shot out of Albert Street on my left.", "junction_left"),
+        ("A van pulled out of Elm Close on our right while we were doing 30 mph.", "junction_right"),
+        ("I was doing 20 mph when a scooter emerged from Mill Lane (the turning on my left) without stopping.",
+         "junction_left"),
+    ],
+)  # fmt: skip
+def test_a_named_road_a_road_user_comes_out_of_is_a_junction_arm(text, expected):
+    assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # near misses: a place named with a capital is not a road ("out of Tesco"), and a lane is a lane
+        ("At 20 mph a van pulled out of the Tesco car park on my left.", "roadside_left"),
+        ("At 60 mph a lorry in the left lane drifted into mine.", "left"),
+    ],
+)
+def test_a_named_place_is_no_road(text, expected):
+    assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # "approaching from X": where it approaches from, not that it comes towards the ego
+        ("At 40 km/h a motorbike approaching from behind swerves past and cuts in front of us.", "behind"),
+        ("I was doing 30 mph when a cyclist approaching from behind overtook me.", "behind"),
+        ("Ego at 50 km/h; a van approaches from behind and overtakes.", "behind"),
+    ],
+)
+def test_approaching_from_a_place_is_not_oncoming(text, expected):
+    assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # near misses: approaching with no origin, or from the front, is still oncoming
+        "On a narrow road at 40 km/h, an approaching van swings into our lane.",
+        "Ego at 50 km/h; a lorry approaching from the front drifts over the centre line.",
+    ],
+)
+def test_approaching_alone_is_still_oncoming(text):
+    assert relation(text) == "oncoming"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # the other way said with another adjective or noun: it comes towards the ego
+        "Ego at 60 km/h on a bend; a truck coming in the contrary direction drifts into our lane.",
+        "At 50 mph, a van travelling in the reverse direction crossed the centre line.",
+        "Ego 70 km/h, one lane each way; a car driving the other direction swerves into the ego lane.",
+    ],
+)
+def test_the_other_direction_in_other_words_is_oncoming(text):
+    assert relation(text) in ("oncoming",)
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # near misses: turning or looking "the other way" says where it turns or looks
+        ("At 30 km/h a cyclist ahead of us turns the other direction and stops.", "ahead"),
+    ],
+)
+def test_turning_the_other_direction_is_no_start(text, expected):
+    assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # a walker crossing the mouth of the road the ego turns into is on the side it turns to
+        # (miles per hour: the near kerb is the left, so a right turn tells the kerb apart from it)
+        ("I turned right into Elm Street at 10 mph and a man was crossing the side road, so I waited.",
+         "roadside_right"),
+        ("The ego turns left into a side street; a woman with a pram is crossing the side street.", "roadside_left"),
+        ("Turning right at 10 mph, I had to stop for a jogger crossing the minor road I was turning into.",
+         "roadside_right"),
+    ],
+)  # fmt: skip
+def test_a_walker_crossing_the_arm_the_ego_turns_into_is_on_that_side(text, expected):
+    assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # near misses: a side said of the walker wins, and without a turn the near kerb stays
+        ("The ego turns left into a side street; a man crosses the side street from the right.", "roadside_right"),
+        ("At 30 km/h on a straight road, a child crosses from the left.", "roadside_left"),
+    ],
+)
+def test_a_side_said_of_the_walker_wins_over_the_turn(text, expected):
+    assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # a side word, a word that says which part, then a kerb noun: that kerb
+        ("Ego turning right at 15 km/h; a pedestrian steps off the right corner kerb and crosses.", "roadside_right"),
+        ("At 30 km/h a jogger runs out from the left grass verge in front of us.", "roadside_left"),
+        ("At 25 km/h a child steps off the left side pavement into the road.", "roadside_left"),
+    ],
+)
+def test_a_side_word_and_a_modifier_before_a_kerb_noun_is_that_kerb(text, expected):
+    assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # from a kerb with no side said into a lane of a side: the kerb beside that lane
+        ("Ego at 80 km/h; a cyclist comes off the hard shoulder into the left lane just ahead.", "roadside_left"),
+        ("At 60 km/h on a dual carriageway a pedestrian stepped off the verge into the right lane.", "roadside_right"),
+        ("Ego 70 km/h, two lanes each way; an e-scooter rider swerves off the shoulder into the right lane.",
+         "roadside_right"),
+    ],
+)  # fmt: skip
+def test_from_an_unsided_kerb_into_a_lane_of_a_side_is_that_kerb(text, expected):
+    assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # one that passes the ego to turn across its path starts behind it, though the pass is read into the turn
+        "Doing 20 mph, a van overtook me and immediately turned left across my path into a side road.",
+        "At 30 km/h at the junction a taxi overtakes the ego and turns left across its bonnet.",
+        "I was cycling at 15 mph at the crossroads when a car overtook me and then turned left across my path.",
+    ],
+)
+def test_one_that_overtakes_the_ego_to_turn_across_it_starts_behind(text):
+    assert relation(text) == "behind"
+
+
+def test_an_overtaker_said_in_a_lane_starts_in_that_lane():
+    text = "At 30 km/h at the junction a taxi in the right lane overtakes the ego and turns left across its bonnet."
+    assert relation(text) == "right"
