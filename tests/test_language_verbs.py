@@ -1,0 +1,104 @@
+"""Which behaviour a road user's verb phrase means (:mod:`vei_scenario.language.motion`): the class of
+move is said by where it goes (the ego's lane, the roundabout) and where it comes from (the other way),
+not by the verb. Wordings written for each construction, none taken from a corpus; each class has
+near-miss wordings that must not be read so."""
+
+from __future__ import annotations
+
+import pytest
+
+from vei_scenario.language.reader import read
+
+
+def _behaviours(text: str) -> list[str]:
+    (actor,) = read(text).actors
+    return [b[0] for b in actor.behaviours]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A car in the left lane invaded my lane just ahead of me.",
+        "A pickup from the next lane encroached into our lane without signalling.",
+        "A motorbike coming up from behind entered suddenly in front of the ego, 8 m ahead.",
+        "A taxi in the right lane swung from its lane into mine.",
+        "A van in the outside lane moved across into ours and braked.",
+    ],
+)
+def test_entering_the_ego_lane_from_beside_is_a_cut_in(text):
+    assert _behaviours(text)[0] == "cut_in"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "An oncoming lorry invaded my lane on the bend.",
+        "A bus coming the other way encroached onto our side of the road at the corner.",
+        "A tractor travelling in the opposite direction entered the ego's lane at the curve.",
+        "A pickup is driving in contrary direction and invade our lane on the bend.",
+    ],
+)
+def test_entering_the_ego_lane_from_the_other_way_is_driving_the_wrong_way(text):
+    assert _behaviours(text) == ["wrong_way"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A car in the left lane entered the motorway well ahead of me.",
+        "An oncoming van stayed in its own lane as we passed.",
+        "A lorry in the right lane drove into the car park on the left.",
+    ],
+)
+def test_entering_somewhere_else_is_no_move_into_the_ego_lane(text):
+    names = _behaviours(text)
+    assert "cut_in" not in names and "wrong_way" not in names
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Two kids on scooters raced down the wrong side of the road straight at us.",
+        "A cyclist on the wrong side of the street pelted right at me.",
+        "A moped was coming directly at the ego on the wrong side of the road.",
+    ],
+)
+def test_going_straight_at_the_ego_the_wrong_way_is_head_on(text):
+    for actor in read(text).actors:
+        assert [b[0] for b in actor.behaviours] == ["wrong_way"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A pedestrian looked straight at me and then crossed the road.",
+        "The van driver shouted at us and drove on in the other lane.",
+    ],
+)
+def test_looking_or_shouting_at_the_ego_is_no_head_on_drive(text):
+    assert "wrong_way" not in _behaviours(text)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was on the roundabout at 20 km/h when a cyclist rode straight onto it in front of me.",
+        "Going round the roundabout at 15 mph, a moped shot onto the roundabout right in front of us.",
+        "The ego is circulating in the roundabout. A van enter the roundabout from the next entry and do not give way.",
+        "We were on the roundabout when a car drove onto it from the next arm without slowing.",
+    ],
+)
+def test_coming_onto_the_roundabout_the_ego_is_on_is_entering_it(text):
+    assert _behaviours(text)[0] in ("turn_into", "run_red_light")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was on the roundabout when a cyclist already circulating rode round in front of me.",
+        "At the roundabout a pedestrian walked onto the zebra crossing in front of me.",
+    ],
+)
+def test_going_round_or_crossing_at_the_roundabout_is_no_entry(text):
+    assert _behaviours(text)[0] not in ("turn_into", "run_red_light")
+
