@@ -102,3 +102,51 @@ def test_coming_onto_the_roundabout_the_ego_is_on_is_entering_it(text):
 def test_going_round_or_crossing_at_the_roundabout_is_no_entry(text):
     assert _behaviours(text)[0] not in ("turn_into", "run_red_light")
 
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "At the crossroads a moped came out of the side road on the left without stopping and into my lane just ahead.",
+        "A van shot out of a side street on the right without looking, straight into our lane in front of us.",
+        "At the junction a cyclist rolled out of the side road on my left without stopping, right into the ego's path.",
+    ],
+)
+def test_out_of_a_side_road_into_the_ego_lane_is_turning_into_its_road(text):
+    assert _behaviours(text)[0] == "turn_into"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "At the crossroads a van came out of the side road on the left without stopping and carried on across.",
+        "At the junction a car shot out of the side road on the right without stopping and went straight over.",
+    ],
+)
+def test_out_of_a_side_road_and_across_without_stopping_is_no_turn_into(text):
+    assert _behaviours(text)[0] != "turn_into"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A BMW was sitting two metres off my rear bumper for miles.",
+        "A white van hung on my tail all the way down the bypass.",
+        "Some lorry stayed right up my backside on the dual carriageway.",
+    ],
+)
+def test_sitting_on_the_ego_tail_is_following_it_from_behind(text):
+    (actor,) = read(text).actors
+    assert [b[0] for b in actor.behaviours] == ["follow_vehicle"] and actor.relation == "behind"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A car hit me on my rear bumper at the lights.",
+        "A cyclist clipped my back bumper as he went past.",
+        "A moped came flying across from the left, inches off my bumper.",
+    ],
+)
+def test_touching_the_ego_rear_is_no_following(text):
+    assert "follow_vehicle" not in _behaviours(text)
+

@@ -234,7 +234,27 @@ def out_of_a_side_road(clauses: list, tokens: list[str] | None = None) -> list:
                 # "pulled out of the stop", "out of a driveway": onto the road from beside it, no arm
                 cfg = {x: v for x, v in m.value[1].items() if x != "from_side_road"}
                 kept[k] = replace(m, value=(m.value[0], cfg))
-        out.append((link, kept))
+        out.append((link, _into_the_ego_road(kept, tokens) if tokens is not None else kept))
+    return out
+
+
+def _into_the_ego_road(mentions: list, tokens: list[str]) -> list:
+    """``mentions`` with a pull-out from a side road said to end in the ego's lane or path ("came out
+    of the side road without stopping and into my lane", "shot out of a side street, straight into
+    our lane in front of us") read as turning into the ego's road: where it ends says it turns into
+    that road, not across it, even when it did not stop first."""
+    out = list(mentions)
+    for k, m in enumerate(out):
+        if m.slot != "behaviour" or not m.value[1].get("from_side_road"):
+            continue
+        stop = next((x.start for x in out[k + 1 :] if x.slot in ("actor", "pronoun") and x.value != "ego"), None)
+        end = max(x.end for x in out) if stop is None else stop
+        for i in range(m.end, min(end, len(tokens))):
+            into = tokens[i] in ("into", "onto") and _the_ego_way_at(tokens, i + 1)
+            if into or _before_the_ego(tokens, i):
+                out[k] = replace(m, value=("turn_into", m.value[1]))
+                break
+        break
     return out
 
 
@@ -1107,7 +1127,9 @@ def chains(clauses: list, tokens: list[str]) -> list:
     clauses = coming_from_in_front(moving_out_to_pass(a_left_or_a_right(clauses, tokens), tokens), tokens)
     clauses = across_to_turn(turning_to_a_side(clauses, tokens))
     clauses = there_is_a_new_one(parked_in_the_lane(state_before_its_noun(clauses, tokens), tokens), tokens)
-    clauses = coming_in_the_ego_lane(passes_while_the_ego_yields(follows_the_ego(clauses, tokens)))
+    clauses = coming_in_the_ego_lane(
+        passes_while_the_ego_yields(follows_the_ego(on_the_ego_tail(clauses, tokens), tokens))
+    )
     clauses = passing_in_front(out_into_the_road(clauses, tokens), tokens)
     return slowing_into_a_stop(lets_the_ego_go(into_a_lane(clauses, tokens), tokens))
 
@@ -1679,5 +1701,75 @@ def right_at_the_ego(clauses: list, tokens: list[str]) -> list:
             if m.slot == "side" and m.words == "right" and at_ego:
                 continue
             kept.append(m)
+        out.append((link, kept))
+    return out
+
+
+#: The rear of the ego a road user behind it is said to sit on ("my back bumper", "our tail").
+_REAR = frozenset(("bumper", "tail", "backside", "rear", "boot", "trunk", "tailgate", "exhaust", "arse", "ass", "butt"))
+#: Words that say a part is the rear one ("back bumper", "rear bumper").
+_BACK = frozenset(("back", "rear"))
+#: Parts that are the rear only when said so (a bumper is also at the front).
+_EITHER_END = frozenset(("bumper",))
+
+
+def _the_ego_rear_at(tokens: list[str], j: int) -> int | None:
+    """Where "off / on / up" + the ego's rear ends when said from ``tokens[j]`` ("off my back bumper",
+    "on our tail", "right up my backside"), or None."""
+    if tokens[j] not in ("off", "on", "up"):
+        return None
+    k = j + 1
+    for owner in _EGO_OWNERS:
+        if tuple(tokens[k : k + len(owner)]) == owner:
+            k += len(owner)
+            break
+    else:
+        return None
+    back = k < len(tokens) and tokens[k] in _BACK
+    k += back
+    if k >= len(tokens) or tokens[k] not in _REAR:
+        return None
+    if tokens[k] in _EITHER_END and not back:
+        return None  # ("came through from the right, inches off my bumper": at its front as well)
+    return k + 1
+
+
+def on_the_ego_tail(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a road user said to be at the ego's rear ("sitting 5 metres off my back bumper",
+    "hung on my tail", "right up my backside") read as following the ego from behind: where it keeps
+    itself, close behind the ego, is what following is, whatever verb of staying says it. A verb of
+    contact before it ("hit me on my rear bumper") says where it touched, not where it follows."""
+    out = []
+    for link, mentions in clauses:
+        if not mentions:
+            out.append((link, mentions))
+            continue
+        kept = list(mentions)
+        first, last = mentions[0].start, max(x.end for x in mentions)
+        for j in range(first, min(last + 6, len(tokens))):
+            end = _the_ego_rear_at(tokens, j)
+            if end is None:
+                continue
+            before = [x for x in kept if x.start < j]
+            subject = _subject_before(before)
+            if subject is None or any(set(lemmas(t).get("VERB", ())) & _TOUCH for t in tokens[subject.end : j]):
+                continue
+            if any(
+                x.slot == "behaviour" and x.value[0] not in _SAYS_ONLY_THAT_IT_GOES
+                for x in before
+                if x.start > subject.start
+            ):
+                continue  # (a move of its own first: "overtook me and sat on my tail" keeps its overtake)
+            said = {"words": " ".join(tokens[j:end]), "start": j, "end": end, "prev": tokens[j - 1] if j else "",
+                    "next_": tokens[end] if end < len(tokens) else "", "det": "", "owners": ()}  # fmt: skip
+            follow = replace(subject, slot="behaviour", value=("follow_vehicle", {}), **said)
+            behind = replace(subject, slot="relation", value="behind", **said)
+            at = kept.index(before[-1]) + 1
+            kept = (
+                [x for x in kept[:at] if not (x.slot == "behaviour" and x.start > subject.start)]
+                + [follow, behind]
+                + [x for x in kept[at:] if x.start >= end]
+            )
+            break
         out.append((link, kept))
     return out
