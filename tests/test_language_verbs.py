@@ -150,3 +150,21 @@ def test_sitting_on_the_ego_tail_is_following_it_from_behind(text):
 def test_touching_the_ego_rear_is_no_following(text):
     assert "follow_vehicle" not in _behaviours(text)
 
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Two cyclists were riding in the bike lane; one of them swerved out into the road right in front of me.",
+        "Three kids on bikes in the cycle lane; one suddenly swerves out into the street in front of us.",
+        "A lad on a scooter was going along the kerb on my left, then lurched out into the road in front of me.",
+    ],
+)
+def test_one_of_those_at_the_side_swerving_out_in_front_of_the_ego_cuts_in(text):
+    moves = [b[0] for a in read(text).actors for b in a.behaviours]
+    assert "change_lane" not in moves and {"cut_in", "cross_in_front"} & set(moves)
+
+
+def test_one_of_two_cars_in_another_lane_moving_over_well_ahead_changes_lane():
+    text = "Two cars were in the left lane; one of them swerved out into the right lane well ahead of us."
+    moves = [b[0] for a in read(text).actors for b in a.behaviours]
+    assert "change_lane" in moves and "cut_in" not in moves

@@ -340,16 +340,18 @@ def into_the_ego_lane(clauses: list, tokens: list[str]) -> list:
     (:func:`_ends_in_front_of_the_ego`), or a swerve out from the side of the road (:func:`_from_the_side`)
     into the road or right in front of the ego."""
     out = []
+    earlier: list = []  # (the mentions of the clauses before, for a subject said there)
     for link, mentions in entering_the_ego_lane(clauses, tokens):
         kept = list(mentions)
         for k, m in enumerate(kept):
             if m.slot != "behaviour" or m.value[0] not in _INTO_EGO_LANE_FROM:
                 continue
             lane_change = m.value[0] == "change_lane" and _ends_in_front_of_the_ego(kept, k)
-            from_the_side = m.value[0] in _OUT_OF_A_LANE and _from_the_side(kept, k)
+            from_the_side = m.value[0] in _OUT_OF_A_LANE and _from_the_side(kept, k, earlier)
             out_in_front = from_the_side and (_ends_in_front_of_the_ego(kept, k) or _into_the_road(tokens, m.end))
             if _into_ego_lane(tokens, m.end) or lane_change or out_in_front:
                 kept[k] = replace(m, value=("cut_in", {x: v for x, v in m.value[1].items() if x != "direction"}))
+        earlier.extend(mentions)
         out.append((link, kept))
     return out
 
@@ -360,14 +362,17 @@ _OUT_OF_A_LANE = frozenset(("change_lane", "cut_out"))
 _THE_ROAD = frozenset(("road", "carriageway", "roadway", "street", "traffic"))
 
 
-def _from_the_side(mentions: list, k: int) -> bool:
+def _from_the_side(mentions: list, k: int, earlier: list = ()) -> bool:
     """Whether the road user whose move is ``mentions[k]`` was said to be at the side of the road (at
     the kerb, in a bike lane, on the pavement, at a stop) since it was named: a swerve out of there is
-    out into the road, not out of the ego's lane as a lead car's is."""
-    for x in reversed(mentions[:k]):
+    out into the road, not out of the ego's lane as a lead car's is. "One (of them)" is one of the
+    group named before, so where the group was said to be is where it was; a clause with no subject
+    of its own ("..., then swerved out") goes on about the road user of the clauses before
+    (``earlier``: their mentions, in order)."""
+    for x in reversed([*earlier, *mentions[:k]]):
         if x.slot == "kerb":
             return True
-        if x.slot in ("actor", "pronoun", "member") and x.value != "ego":
+        if x.slot in ("actor", "pronoun") and x.value != "ego":
             return False
     return False
 
