@@ -14,6 +14,8 @@ from __future__ import annotations
 
 from dataclasses import replace
 
+from vei_scenario.language.lemmas import lemmas
+
 #: Road users that cross a road on foot or by bike or scooter.
 _CROSSERS = frozenset(("pedestrian", "bicycle", "e-scooter"))
 #: Verbs that say only that a road user moves (the lexicon's plain going on, or a lane change read
@@ -137,7 +139,7 @@ def crossings(clauses: list, tokens: list[str]) -> list:
     of the ego or across its path (its plain verb made the crossing, or the crossing added where the
     verb is not one the reader knows). A clause that says another move already keeps it."""
     out = []
-    for link, mentions in clauses:
+    for link, mentions in entering_the_roundabout(clauses, tokens):
         kept = list(mentions)
         for k, m in enumerate(mentions):
             if _plain(m) and _crossed_arm(mentions, k, tokens):
@@ -206,3 +208,84 @@ def crosses_the_arm_turned_into(
     it), or the ego does not turn."""
     crosses = kind in _WALKERS_AND_RIDERS and first == "cross_in_front" and arm and not from_arm
     return f"roadside_{route}" if crosses and side is None and route in ("left", "right") else None
+
+
+#: Verbs (lemmas) of entering: with the roundabout as their object, a road user comes onto it.
+_ENTER = frozenset(("enter", "join"))
+#: What a roundabout is called (the map mention's words).
+_RING_WORDS = frozenset(("roundabout", "mini-roundabout", "gyratory", "circle", "rotary", "traffic circle"))
+#: Adverbs between a verb and where it goes ("rode straight onto it", "shot suddenly onto the roundabout").
+_BEFORE_ONTO = frozenset(("straight", "right", "just", "directly", "suddenly", "quickly", "out"))
+
+
+def _ring(m) -> bool:
+    return m.slot == "map" and m.value == "roundabout" and bool(set(m.words.split()) & _RING_WORDS)
+
+
+def _onto_the_ring(tokens: list[str], j: int, mentions: list, ring_said: bool):
+    """The mention of the roundabout (or "it" standing for it) the verb at ``tokens[j]`` enters, or
+    None: a verb of entering with it as its object, or any verb + "onto"/"into" it."""
+    said = lemmas(tokens[j])
+    verbs = set(said.get("VERB", ()))
+    if not verbs or verbs & {"be", "have", "do"}:
+        return None
+    if tokens[j] in verbs and set(said) - {"VERB"}:
+        return None  # (a bare form that is another word too: no verb here)
+    k = j + 1
+    while k < len(tokens) and tokens[k] in _BEFORE_ONTO:
+        k += 1
+    if k < len(tokens) and tokens[k] in ("onto", "into"):
+        k += 1
+    elif not verbs & _ENTER:
+        return None
+    while k < len(tokens) and tokens[k] in ("the", "a", "this", "that"):
+        k += 1
+    place = next((x for x in mentions if x.start == k), None)
+    if place is not None and _ring(place):
+        return place
+    if place is not None and place.slot == "pronoun" and place.words == "it" and ring_said:
+        return place
+    return None
+
+
+def entering_the_roundabout(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a road user that comes onto the roundabout ("rode straight onto it in front of
+    me", "shot onto the roundabout", "entered the roundabout") read as entering it from one of its
+    arms, whatever the verb: what it goes onto says the move. As the reader reads "enters the
+    roundabout from the next entry", it then comes in from an arm across the ego's way round (and
+    without giving way, runs it). "It" stands for the roundabout once one is said; a road user
+    already on it, going round, is no entry (no "onto"), nor is the ego's own entry."""
+    ring_said = False
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for j in range(mentions[0].start if mentions else 0, max((x.end for x in mentions), default=0)):
+            if j >= len(tokens):
+                break
+            at = next((x for x in kept if x.start <= j < max(x.end, x.start + 1)), None)
+            if at is not None and at.slot not in ("unknown_verb", "ego_verb", "behaviour"):
+                continue
+            if at is not None and at.slot == "behaviour" and at.value[0] not in _PLAIN:
+                continue
+            place = _onto_the_ring(tokens, j, kept, ring_said or any(_ring(x) for x in kept if x.start < j))
+            if place is None:
+                continue
+            subject = _subject(kept, next((n for n, x in enumerate(kept) if x.start >= j), len(kept)))
+            if subject is None:
+                continue
+            arm = replace(place, slot="arm", value=None, words="entry")
+            if place.slot == "pronoun":
+                kept[kept.index(place)] = arm
+            else:
+                kept.insert(kept.index(place) + 1, arm)
+            if at is not None and at.slot == "unknown_verb":  # ("a scooter enter the roundabout": a plain going on)
+                kept[kept.index(at)] = replace(at, slot="ego_verb", value=None)
+            elif at is None:
+                verb = replace(subject, slot="ego_verb", value=None, words=tokens[j], start=j, end=j + 1,
+                               prev=tokens[j - 1] if j else "", next_=tokens[j + 1] if j + 1 < len(tokens) else "",
+                               det="", owners=())  # fmt: skip
+                kept.insert(next((n for n, x in enumerate(kept) if x.start > j), len(kept)), verb)
+            break
+        ring_said = ring_said or any(_ring(x) for x in kept)
+        out.append((link, kept))
+    return out

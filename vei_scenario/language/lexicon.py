@@ -899,6 +899,7 @@ RELATIONS = {
         "opposite road",
         "opposite entrance",
         "opposite direction",
+        "contrary direction",
         "opposite lane",
         "the other way",
         "towards the ego",

@@ -262,7 +262,27 @@ def out_of_a_side_road(clauses: list, tokens: list[str] | None = None) -> list:
                 # "pulled out of the stop", "out of a driveway": onto the road from beside it, no arm
                 cfg = {x: v for x, v in m.value[1].items() if x != "from_side_road"}
                 kept[k] = replace(m, value=(m.value[0], cfg))
-        out.append((link, kept))
+        out.append((link, _into_the_ego_road(kept, tokens) if tokens is not None else kept))
+    return out
+
+
+def _into_the_ego_road(mentions: list, tokens: list[str]) -> list:
+    """``mentions`` with a pull-out from a side road said to end in the ego's lane or path ("came out
+    of the side road without stopping and into my lane", "shot out of a side street, straight into
+    our lane in front of us") read as turning into the ego's road: where it ends says it turns into
+    that road, not across it, even when it did not stop first."""
+    out = list(mentions)
+    for k, m in enumerate(out):
+        if m.slot != "behaviour" or not m.value[1].get("from_side_road"):
+            continue
+        stop = next((x.start for x in out[k + 1 :] if x.slot in ("actor", "pronoun") and x.value != "ego"), None)
+        end = max(x.end for x in out) if stop is None else stop
+        for i in range(m.end, min(end, len(tokens))):
+            into = tokens[i] in ("into", "onto") and _the_ego_way_at(tokens, i + 1)
+            if into or _before_the_ego(tokens, i):
+                out[k] = replace(m, value=("turn_into", m.value[1]))
+                break
+        break
     return out
 
 
@@ -348,16 +368,18 @@ def into_the_ego_lane(clauses: list, tokens: list[str]) -> list:
     (:func:`_ends_in_front_of_the_ego`), or a swerve out from the side of the road (:func:`_from_the_side`)
     into the road or right in front of the ego."""
     out = []
-    for link, mentions in clauses:
+    earlier: list = []  # (the mentions of the clauses before, for a subject said there)
+    for link, mentions in entering_the_ego_lane(clauses, tokens):
         kept = list(mentions)
         for k, m in enumerate(kept):
             if m.slot != "behaviour" or m.value[0] not in _INTO_EGO_LANE_FROM:
                 continue
             lane_change = m.value[0] == "change_lane" and _ends_in_front_of_the_ego(kept, k)
-            from_the_side = m.value[0] in _OUT_OF_A_LANE and _from_the_side(kept, k)
+            from_the_side = m.value[0] in _OUT_OF_A_LANE and _from_the_side(kept, k, earlier)
             out_in_front = from_the_side and (_ends_in_front_of_the_ego(kept, k) or _into_the_road(tokens, m.end))
             if _into_ego_lane(tokens, m.end) or lane_change or out_in_front:
                 kept[k] = replace(m, value=("cut_in", {x: v for x, v in m.value[1].items() if x != "direction"}))
+        earlier.extend(mentions)
         out.append((link, kept))
     return out
 
@@ -368,14 +390,17 @@ _OUT_OF_A_LANE = frozenset(("change_lane", "cut_out"))
 _THE_ROAD = frozenset(("road", "carriageway", "roadway", "street", "traffic"))
 
 
-def _from_the_side(mentions: list, k: int) -> bool:
+def _from_the_side(mentions: list, k: int, earlier: list = ()) -> bool:
     """Whether the road user whose move is ``mentions[k]`` was said to be at the side of the road (at
     the kerb, in a bike lane, on the pavement, at a stop) since it was named: a swerve out of there is
-    out into the road, not out of the ego's lane as a lead car's is."""
-    for x in reversed(mentions[:k]):
+    out into the road, not out of the ego's lane as a lead car's is. "One (of them)" is one of the
+    group named before, so where the group was said to be is where it was; a clause with no subject
+    of its own ("..., then swerved out") goes on about the road user of the clauses before
+    (``earlier``: their mentions, in order)."""
+    for x in reversed([*earlier, *mentions[:k]]):
         if x.slot == "kerb":
             return True
-        if x.slot in ("actor", "pronoun", "member") and x.value != "ego":
+        if x.slot in ("actor", "pronoun") and x.value != "ego":
             return False
     return False
 
@@ -1131,11 +1156,14 @@ def chains(clauses: list, tokens: list[str]) -> list:
     made abruptly as a sudden stop (:func:`hard_stops`); one coming along in the ego's lane as coming
     at it (:func:`coming_in_the_ego_lane`); a swerve round the ego as going on past it
     (:func:`round_the_ego`)."""
+    clauses = right_at_the_ego(the_wrong_side_of(clauses), tokens)
     clauses = hard_stops(weather_not_behaviour(room_to_act_not_behaviour(clauses, tokens)), tokens)
     clauses = coming_from_in_front(moving_out_to_pass(a_left_or_a_right(clauses, tokens), tokens), tokens)
     clauses = across_to_turn(turning_to_a_side(clauses, tokens))
     clauses = there_is_a_new_one(parked_in_the_lane(state_before_its_noun(clauses, tokens), tokens), tokens)
-    clauses = coming_in_the_ego_lane(passes_while_the_ego_yields(follows_the_ego(clauses, tokens)))
+    clauses = coming_in_the_ego_lane(
+        passes_while_the_ego_yields(follows_the_ego(on_the_ego_tail(clauses, tokens), tokens))
+    )
     clauses = round_the_ego(passing_in_front(out_into_the_road(clauses, tokens), tokens), tokens)
     return slowing_into_a_stop(lets_the_ego_go(into_a_lane(clauses, tokens), tokens))
 
@@ -1577,3 +1605,243 @@ def default_behaviour(kind: str) -> str:
     plausible scenario of that road user, with the words listed as not used, is more use than a
     refusal; the commonest behaviour of its kind is the least surprising guess."""
     return _COMMONEST.get(kind, "keep_going")
+
+
+#: Verbs (lemmas) of entering: with a place as their object they go into it ("invaded my lane",
+#: "entered the ego's lane", "encroached on our side").
+_ENTER = frozenset(("enter", "invade", "encroach", "intrude", "penetrate"))
+#: The ego's ways a road user may be said to enter: its lane, its path, its side or half of the road.
+_EGO_WAYS_ENTERED = frozenset(("lane", "path", "side", "half"))
+#: Possessive pronouns that stand for the ego's lane once a lane was said ("from the right lane into mine").
+_EGO_LANE_PRONOUNS = frozenset(("mine", "ours"))
+#: Adverbs and particles between a verb and where it goes ("came suddenly across into", "swung back over onto").
+_ON_THE_WAY_IN = frozenset(("suddenly", "quickly", "slowly", "straight", "right", "just", "directly", "fully",
+                            "partly", "partially", "across", "over", "back", "out", "then", "abruptly",
+                            "sharply"))  # fmt: skip
+#: Moves a verb may already be read as that say only that it goes, or goes sideways: where to says which.
+_SAYS_ONLY_THAT_IT_GOES = frozenset(("keep_going", "change_lane", "along_road", "cut_out"))
+
+
+def _the_ego_way_at(tokens: list[str], j: int) -> bool:
+    """Whether the ego's lane, path or side is named from ``tokens[j]`` ("my lane", "the ego's lane",
+    "our side of the road", "the ego lane")."""
+    for owner in _EGO_OWNERS + (("ego",),):
+        n = len(owner)
+        if tuple(tokens[j : j + n]) == owner and j + n < len(tokens) and tokens[j + n] in _EGO_WAYS_ENTERED:
+            return True
+    return False
+
+
+def _lane_said_before(tokens: list[str], start: int, j: int) -> bool:
+    """Whether a lane is named between ``tokens[start]`` and ``tokens[j]`` (what "mine" can stand for)."""
+    return any(t in ("lane", "lanes") for t in tokens[start:j])
+
+
+def _enters_the_ego_way(tokens: list[str], j: int, subject_start: int) -> int | None:
+    """Where the words end that say the verb at ``tokens[j]`` goes into the ego's lane, path or side,
+    or None: any verb + "into"/"onto" + the ego's way (or "mine"/"ours" for a lane said since the road
+    user was named); a verb of entering with the ego's way as its object, after "on", or "in front
+    of" the ego."""
+    said = lemmas(tokens[j])
+    verbs = set(said.get("VERB", ()))
+    if not verbs or verbs & {"be", "have", "do"} or tokens[j] in _ON_THE_WAY_IN:
+        return None
+    if tokens[j] in verbs and set(said) - {"VERB"}:
+        return None  # (a bare form that is another word too: "right into my path" is where, no verb)
+    k = j + 1
+    while k < len(tokens) and tokens[k] in _ON_THE_WAY_IN:
+        k += 1
+    if tokens[k : k + 1] == ["from"]:  # ("swung from the right lane into mine": where it leaves)
+        to = next((i for i in range(k + 1, min(k + 6, len(tokens))) if tokens[i] in ("into", "onto")), None)
+        if to is None or set(tokens[k + 1 : to]) & _STOPS:
+            return None
+        k = to
+    if k >= len(tokens):
+        return None
+    entering = bool(verbs & _ENTER)
+    lead = tokens[k]
+    if lead in ("into", "onto") or (entering and lead in ("on", "upon")):
+        if _the_ego_way_at(tokens, k + 1):
+            return k + 3
+        mine = tokens[k + 1 : k + 2] and tokens[k + 1] in _EGO_LANE_PRONOUNS
+        if mine and _lane_said_before(tokens, subject_start, j):
+            return k + 2
+        return None
+    if entering and _the_ego_way_at(tokens, k):
+        return k + 2
+    if entering and tokens[k : k + 3] == ["in", "front", "of"]:
+        rest = tokens[k + 3 : k + 5]
+        if rest[:1] and (rest[0] in _EGO_WORDS or rest == ["the", "ego"]):
+            return k + 3 + (2 if rest == ["the", "ego"] else 1)
+    return None
+
+
+#: Prepositions after which the ego is an object of place ("a car behind me", "the van in front of us").
+_OBJECT_OF = frozenset(("of", "behind", "to", "past", "at", "with", "from", "than", "beside", "near", "ahead", "by"))
+
+
+def _subject_before(before: list):
+    """The road user a verb after ``before`` (the clause's mentions before it) is said of: the last
+    one named, past the ego named as the object of a preposition ("a car in front of me"); None
+    where that is the ego itself."""
+    for x in reversed(before):
+        if x.slot not in ("actor", "pronoun"):
+            continue
+        if x.value == "ego" and x.prev in _OBJECT_OF:
+            continue
+        return None if x.value == "ego" else x
+    return None
+
+
+def entering_the_ego_lane(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a road user's verb whose destination is the ego's lane, path or side read as
+    a cut-in, whatever the verb ("invaded my lane", "swung from its lane into mine", "entered suddenly
+    in front of the ego", "strayed onto our side of the road"), where the reader read it as no more
+    than going on (or not at all). The destination says the class of the move; where the road user
+    comes from then says which: from beside or behind it cuts in, from the other way it comes head-on
+    (the reader's :func:`comes_head_on`). Only the road user the clause is about, named before the
+    verb and not the ego, is read so; a verb said of the ego ("I moved into my lane") is its own."""
+    out = []
+    for link, mentions in clauses:
+        if not mentions:
+            out.append((link, mentions))
+            continue
+        kept = list(mentions)
+        first, last = mentions[0].start, max(x.end for x in mentions)
+        for j in range(first, min(last, len(tokens))):
+            at = next((x for x in kept if x.start <= j < max(x.end, x.start + 1)), None)
+            if at is not None and at.slot not in ("unknown_verb", "ego_verb", "behaviour"):
+                continue
+            if at is not None and at.slot == "behaviour" and at.value[0] not in _SAYS_ONLY_THAT_IT_GOES:
+                continue  # (a move of its own: "cut into my lane" is read already)
+            if at is not None and at.slot == "behaviour" and at.words.split()[-1] in ("into", "onto"):
+                continue  # ("swerves into my lane": a lane change the reader places with where it starts)
+            before = [x for x in kept if x.start < j]
+            subject = _subject_before(before)
+            if subject is None:
+                continue
+            end = _enters_the_ego_way(tokens, j, subject.start)
+            if end is None:
+                continue
+            cut = ("cut_in", {})
+            used = [x for x in kept if j < x.start < end and x.slot == "unknown_verb"]  # ("mine")
+            if at is not None:
+                kept[kept.index(at)] = replace(at, slot="behaviour", value=cut)
+            else:
+                said = replace(subject, slot="behaviour", value=cut, words=tokens[j], start=j, end=j + 1,
+                               prev=tokens[j - 1] if j else "", next_=tokens[j + 1] if j + 1 < len(tokens) else "",
+                               det="", owners=())  # fmt: skip
+                kept.insert(kept.index(before[-1]) + 1, said)
+            kept = [x for x in kept if all(x is not u for u in used)]
+            break
+        out.append((link, kept))
+    return out
+
+
+def the_wrong_side_of(clauses: list) -> list:
+    """``clauses`` with "the wrong side of" + any road ("the wrong side of the street", "of Abbey St",
+    "of the dual carriageway") read as going the wrong way, as "the wrong side of the road" is: the
+    wrong side of a road is the side of its traffic the other way, whatever the road is called. The
+    reader otherwise takes "wrong side" alone as the far kerb; "of" is what makes it a side of a
+    road one travels on."""
+    out = []
+    for link, mentions in clauses:
+        kept = [
+            replace(m, slot="wrong_way", value=None)
+            if m.slot == "kerb_side" and m.words == "wrong side" and m.next_ == "of"
+            else m
+            for m in mentions
+        ]
+        out.append((link, kept))
+    return out
+
+
+def right_at_the_ego(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` without "right" read as a side where it only says how exactly a road user heads at
+    the ego ("pelted right at me", "came right at us"): "right" + "at" + the ego is a degree adverb,
+    as "straight at me" is; "turned right at the junction" (not the ego after "at") keeps its side."""
+    out = []
+    for link, mentions in clauses:
+        kept = []
+        for m in mentions:
+            j = m.end
+            at_ego = (
+                tokens[j : j + 1] == ["at"]
+                and j + 1 < len(tokens)
+                and (tokens[j + 1] in _EGO_WORDS or tokens[j + 1 : j + 3] == ["the", "ego"])
+            )
+            if m.slot == "side" and m.words == "right" and at_ego:
+                continue
+            kept.append(m)
+        out.append((link, kept))
+    return out
+
+
+#: The rear of the ego a road user behind it is said to sit on ("my back bumper", "our tail").
+_REAR = frozenset(("bumper", "tail", "backside", "rear", "boot", "trunk", "tailgate", "exhaust", "arse", "ass", "butt"))
+#: Words that say a part is the rear one ("back bumper", "rear bumper").
+_BACK = frozenset(("back", "rear"))
+#: Parts that are the rear only when said so (a bumper is also at the front).
+_EITHER_END = frozenset(("bumper",))
+
+
+def _the_ego_rear_at(tokens: list[str], j: int) -> int | None:
+    """Where "off / on / up" + the ego's rear ends when said from ``tokens[j]`` ("off my back bumper",
+    "on our tail", "right up my backside"), or None."""
+    if tokens[j] not in ("off", "on", "up"):
+        return None
+    k = j + 1
+    for owner in _EGO_OWNERS:
+        if tuple(tokens[k : k + len(owner)]) == owner:
+            k += len(owner)
+            break
+    else:
+        return None
+    back = k < len(tokens) and tokens[k] in _BACK
+    k += back
+    if k >= len(tokens) or tokens[k] not in _REAR:
+        return None
+    if tokens[k] in _EITHER_END and not back:
+        return None  # ("came through from the right, inches off my bumper": at its front as well)
+    return k + 1
+
+
+def on_the_ego_tail(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a road user said to be at the ego's rear ("sitting 5 metres off my back bumper",
+    "hung on my tail", "right up my backside") read as following the ego from behind: where it keeps
+    itself, close behind the ego, is what following is, whatever verb of staying says it. A verb of
+    contact before it ("hit me on my rear bumper") says where it touched, not where it follows."""
+    out = []
+    for link, mentions in clauses:
+        if not mentions:
+            out.append((link, mentions))
+            continue
+        kept = list(mentions)
+        first, last = mentions[0].start, max(x.end for x in mentions)
+        for j in range(first, min(last + 6, len(tokens))):
+            end = _the_ego_rear_at(tokens, j)
+            if end is None:
+                continue
+            before = [x for x in kept if x.start < j]
+            subject = _subject_before(before)
+            if subject is None or any(set(lemmas(t).get("VERB", ())) & _TOUCH for t in tokens[subject.end : j]):
+                continue
+            if any(
+                x.slot == "behaviour" and x.value[0] not in _SAYS_ONLY_THAT_IT_GOES
+                for x in before
+                if x.start > subject.start
+            ):
+                continue  # (a move of its own first: "overtook me and sat on my tail" keeps its overtake)
+            said = {"words": " ".join(tokens[j:end]), "start": j, "end": end, "prev": tokens[j - 1] if j else "",
+                    "next_": tokens[end] if end < len(tokens) else "", "det": "", "owners": ()}  # fmt: skip
+            follow = replace(subject, slot="behaviour", value=("follow_vehicle", {}), **said)
+            behind = replace(subject, slot="relation", value="behind", **said)
+            at = kept.index(before[-1]) + 1
+            kept = (
+                [x for x in kept[:at] if not (x.slot == "behaviour" and x.start > subject.start)]
+                + [follow, behind]
+                + [x for x in kept[at:] if x.start >= end]
+            )
+            break
+        out.append((link, kept))
+    return out

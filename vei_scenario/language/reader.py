@@ -2437,7 +2437,15 @@ def _verb_criticality(words: str) -> str | None:
 
 
 #: Behaviours only a vehicle shows: a "guy" who tailgates drives a car.
-VEHICLE_BEHAVIOURS = {"follow_vehicle", "overtake", "cut_in", "run_red_light", "forced_turn", "change_lane"}
+VEHICLE_BEHAVIOURS = {
+    "follow_vehicle",
+    "overtake",
+    "cut_in",
+    "run_red_light",
+    "forced_turn",
+    "change_lane",
+    "turn_into",
+}
 
 
 #: The parameter each behaviour takes "at N m/s²" as (its range: the behaviour's own, vei behaviours -v).
