@@ -63,6 +63,8 @@ _MOTION = frozenset(
 )  # (the base forms after a modal or a plural subject: "shall both travel at 50 km/h")
 #: Modals between a coordinated subject and "both" ("the ego and the van will both drive at 60").
 _MODALS = frozenset({"will", "shall", "should", "must", "would", "can", "could", "may", "might"})
+#: Forms of "be" whose subject a speed after "at" is said of ("we were at maybe 50 km/h").
+_BE = frozenset({"is", "was", "are", "were", "am", "be"})
 _AUXILIARIES = frozenset({"is", "was", "are", "were", "am", "be", "been", "'s", "still", "also", "then", "just"})
 #: Words after which a noun opens a clause, as its subject ("; the bus at 15 km/h", "and the van at 60").
 _CLAUSE_OPENERS = frozenset({",", ";", ":", ".", "and", "but", "while", "whereas", "when", "then", "as"})
@@ -292,6 +294,10 @@ def owners(
         if owner is None and j and noun(tokens[j - 1]) and tokens[j - 2 : j - 1] not in (["the"], ["a"], ["its"]):
             return (UNNAMED,)
         return (owner,) if owner is not None else ()
+    be = _be_at(tokens, i)
+    if be is not None:  # "we were at maybe 50 km/h", "I was at about 40": the subject of "be"
+        owner = mention_ending_at(be)
+        return (owner,) if owner is not None else ()
     owner = mention_ending_at(j)
     if owner is not None:
         k = owner - 1
@@ -303,7 +309,7 @@ def owners(
             return ()  # "steps out between parked cars 3 m/s": the cars say where; the clause says whose
         if j == i - 1 and (unit or after_ego(tokens, i)):  # "cyclist 15 km/h", "ego 50": of the noun before it
             return (owner,)
-        if unit and tokens[j + 1] == "at" and (k < 0 or tokens[k] in _CLAUSE_OPENERS):
+        if unit and tokens[j + 1] == "at" and (k < 0 or tokens[k] in _CLAUSE_OPENERS) and not compared(tokens, k):
             return (owner,)  # "the van at 60 km/h overtakes ...": said of the subject opening its clause
     subject = mention_ending_at(j - 1) if unit and j and tokens[j].endswith("ing") else None
     if subject is not None and subject and tokens[subject - 1] == "with":
@@ -339,6 +345,32 @@ def drives(actor) -> bool:
     only a driver does: a speed no walker reaches is then its own ("a maniac overtook me doing 70 mph"),
     not the ego's. (A rider stays a rider: "a cyclist drifts in, with the ego at 60 km/h".)"""
     return actor.kind == "pedestrian" and any(b[0] in _DRIVERS_ACTS for b in actor.behaviours)
+
+
+def _be_at(tokens: list[str], i: int) -> int | None:
+    """The last word of the subject of "<subject> <be> at <number>" for the number at ``i`` (past hedges:
+    "we were at maybe 50", "I'm at about 30"), else None. Why: "be at" a speed says whose speed it is as
+    plainly as a verb of going does, wherever the clause stands in a run-on sentence."""
+    k = i - 1
+    while k > 0 and tokens[k] in _LINKS and tokens[k] not in _BE and tokens[k] != "at":
+        k -= 1
+    if k < 2 or tokens[k] != "at":
+        return None
+    k -= 1
+    while k > 0 and tokens[k] in _AUXILIARIES - _BE:
+        k -= 1
+    if tokens[k] not in _BE:
+        return None
+    k -= 1
+    while k > 0 and tokens[k] in _AUXILIARIES - _BE:
+        k -= 1
+    return k
+
+
+def compared(tokens: list[str], k: int) -> bool:
+    """Whether ``tokens[k]`` is the "as" of a comparison ("in the same lane as the ego at 18 km/h"): the
+    noun after it is what the subject is compared with, not the subject of a clause of its own."""
+    return tokens[k] == "as" and "same" in tokens[max(k - 4, 0) : k]
 
 
 #: Prepositions whose object is scenery a road user comes out of or past, not one that moves itself.

@@ -703,7 +703,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             clauses[-1][1].append(_Mention("modal", tok, tok, i, prev, end=i + 1))  # "it has to brake"
             i += 1
             continue
-        if key is None and tok in L.CONJUNCTIONS:
+        if key is None and tok in L.CONJUNCTIONS and not Q.compared(tokens, i):  # ("the same lane as": no clause)
             clauses[-1][1].append(_Mention("conj", tok, tok, i, prev, end=i + 1))
             i += 1
             continue

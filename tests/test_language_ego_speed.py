@@ -1,0 +1,57 @@
+"""The ego's speed: which stated number is the ego's, and the unit of a number said bare.
+
+Every wording here is written for these tests (none is from a corpus). Each class of construction has
+at least three wordings that must read, and near misses that look alike but must not."""
+
+from __future__ import annotations
+
+import pytest
+
+from vei_scenario.language.reader import read
+
+MPH = 0.44704
+KPH = 1 / 3.6
+
+
+def _ego(text: str) -> float | None:
+    return read(text).ego_speed_mps
+
+
+# --- "<subject> <be> at <speed>": the subject's -----------------------------------------------------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("a lorry ahead slams on and then the van behind me nearly hits us we were at roughly 60 km/h", 60),
+        ("the bus in front stopped dead and a taxi behind almost rear-ended us I was at about 40 km/h", 40),
+        ("A cyclist swerves out and a moped behind clips us, we are at maybe 30 km/h at that point", 30),
+    ],
+    ids=["we-were", "i-was", "we-are"],
+)
+def test_a_speed_after_the_ego_and_a_form_of_be_is_the_egos(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH)
+
+
+def test_a_speed_after_another_subject_and_be_is_that_road_users():
+    r = read("The ego drives at 50 km/h. A van ahead brakes, the van was at about 45 km/h.")
+    assert r.ego_speed_mps == pytest.approx(50 * KPH) and r.actors[0].speed_mps == pytest.approx(45 * KPH)
+
+
+# --- "the same <noun> as <road user>": a comparison, not the subject of a clause ---------------------------
+@pytest.mark.parametrize(
+    "text, ego, other",
+    [
+        ("The cyclist rides in the same lane as the ego at 18 km/h. The ego comes up from behind at 40 km/h.", 40, 18),
+        ("A scooter moves the same way as the ego at 20 km/h; the ego closes in at a speed of 50 km/h.", 50, 20),
+        ("The target car keeps the same lane as the SUT at 30 km/h. The SUT follows at 60 km/h.", 60, 30),
+    ],
+    ids=["same-lane-as", "same-way-as", "same-lane-as-sut"],
+)
+def test_a_speed_after_the_same_x_as_the_ego_is_the_subjects(text, ego, other):
+    r = read(text)
+    assert r.ego_speed_mps == pytest.approx(ego * KPH)
+    assert [a.speed_mps for a in r.actors] == [pytest.approx(other * KPH)]
+
+
+def test_a_clause_opened_by_as_still_has_its_subject():
+    r = read("A pedestrian steps out as the ego at 40 km/h comes past.")
+    assert r.ego_speed_mps == pytest.approx(40 * KPH)
