@@ -55,3 +55,47 @@ def test_a_speed_after_the_same_x_as_the_ego_is_the_subjects(text, ego, other):
 def test_a_clause_opened_by_as_still_has_its_subject():
     r = read("A pedestrian steps out as the ego at 40 km/h comes past.")
     assert r.ego_speed_mps == pytest.approx(40 * KPH)
+
+
+# --- the unit of a bare speed: the writer's road signs ---------------------------------------------------
+@pytest.mark.parametrize(
+    "text, mph",
+    [
+        ("Doing 25 past the school, a boy ran out about ten feet ahead of my bumper.", 25),
+        ("I was going 40 on the way home when a pickup pulled out maybe 60 feet in front of me.", 40),
+        ("I was doing 30 when a kid on a bike shot out a few yards in front of me.", 30),
+    ],
+    ids=["feet", "feet-later", "yards"],
+)
+def test_a_bare_speed_in_a_text_that_measures_in_feet_or_yards_is_mph(text, mph):
+    assert _ego(text) == pytest.approx(mph * MPH)
+
+
+@pytest.mark.parametrize(
+    "text, mph",
+    [
+        ("Going 40 on a divided highway when a semi drifted into my lane.", 40),
+        ("Doing about 30 and a jogger stepped off the curb right in front of me.", 30),
+        ("I was going 25 by the gas station and a cyclist cut across from the sidewalk.", 25),
+        ("Rolling along at 20 through the parking lot, a kid ran out between two cars.", 20),
+    ],
+    ids=["divided-highway", "curb", "gas-station-sidewalk", "parking-lot"],
+)
+def test_a_bare_speed_on_an_american_road_is_mph(text, mph):
+    assert _ego(text) == pytest.approx(mph * MPH)
+
+
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("On the motorway doing 120, a van cut in front of me.", 120),
+        ("Heavy traffic on the motorway, I'm doing 60 and a courier van darts into my lane.", 60),
+        ("On the Autobahn A8 doing 70 in the jam, a truck pulled out in front of me.", 70),
+        ("Doing 40 on the B27, a cyclist swerved out 2 km before the Autobahn exit.", 40),
+        ("Doing 40, a man on foot crossed in front of me.", 40),
+        ("Doing 30, a cyclist put his feet down and wobbled into my lane.", 30),
+    ],
+    ids=["motorway-fast", "motorway-jam", "autobahn", "bundesstrasse-km", "on-foot", "body-feet"],
+)
+def test_a_bare_speed_stays_kmh_without_a_sign_of_miles(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH)

@@ -177,6 +177,13 @@ def ego_speed_mps(tokens: list[str]) -> float | None:
     return None
 
 
+#: Prepositions of where one goes, after "going 40" ("going 40 down the hill", "driving 30 past the
+#: school"): the number between a verb of going and its place is how fast it goes.
+WHERE_AFTER_SPEED = frozenset(
+    "on down along through past by in into up round around towards toward over across near".split()
+)
+
+
 def after_at(tokens: list[str], i: int) -> bool:
     """Whether a bare number at ``i`` follows "at" (or "doing") past an article and one modifier
     ("at a steady 50", "doing a brisk 30"): a speed, as "at 50" is."""
@@ -199,22 +206,61 @@ def after_ego(tokens: list[str], i: int) -> bool:
 Mentions = Callable[[int], "int | None"]
 
 
-def carried_unit(tokens: list[str], i: int) -> float:
+def carried_unit(tokens: list[str], i: int, imperial: bool = False) -> float:
     """The factor to m/s of a bare speed at ``i`` ("I'm at 50"): the unit of the last speed said with
     one before it, else of the first said after it, else mph on a road of a country that signs miles
-    (:func:`miles_country`), else km/h (the unit of a test engineer who gives none)."""
+    (:func:`miles_country`; ``imperial``: the text measured a length in feet or yards, see
+    :func:`imperial_lengths`), else km/h (the unit of a test engineer who gives none; a motorway says
+    neither: in heavy traffic 60 km/h is as likely there as 60 mph)."""
     for k in range(i - 1, 0, -1):
         if tokens[k] in V.SPEED_UNITS and tokens[k - 1].replace(".", "", 1).isdigit():
             return V.SPEED_UNITS[tokens[k]]
     for k in range(i + 1, len(tokens)):  # none before: the one said after it ("at 30 and ... 20 mph")
         if tokens[k] in V.SPEED_UNITS and tokens[k - 1].replace(".", "", 1).isdigit():
             return V.SPEED_UNITS[tokens[k]]
-    return V.SPEED_UNITS["mph"] if miles_country(tokens) else 1 / 3.6
+    if metric_country(tokens):
+        return 1 / 3.6
+    return V.SPEED_UNITS["mph"] if imperial or miles_country(tokens) else 1 / 3.6
+
+
+#: Roads only countries that sign km/h have, by their own names (the German Autobahn and Bundesstrasse,
+#: the French autoroute, the Italian autostrada, the Spanish autopista), and distances in kilometres: a
+#: text set on one reads a bare speed in km/h whatever else looks British or American ("the A8", "the B27").
+_METRIC_ROADS = frozenset(
+    {"autobahn", "autobahns", "bundesstrasse", "bundesstra", "autoroute", "autostrada", "autopista", "km", "kms"}
+)
+
+
+def metric_country(tokens: list[str]) -> bool:
+    """Whether the text is set where speeds are signed in km/h: a road of such a country by its own
+    name, or a distance said in kilometres."""
+    return any(t in _METRIC_ROADS for t in tokens)
+
+
+#: A length in feet or yards ("ten feet ahead", "by a foot", "a few yards"), as written (the reader's
+#: tokens hold it in metres); "on foot" and "his feet" measure nothing.
+_IMPERIAL_LENGTH = re.compile(
+    r"(?:\d|\b(?:a|an|few|of|several|one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|fifteen"
+    r"|twenty|thirty|forty|fifty|sixty|hundred))\s*(?:-\s*)?(?:feet|foot|ft|yards?|yds?)\b"
+)
+
+
+def imperial_lengths(text: str) -> bool:
+    """Whether ``text`` (lowercased) measures a length in feet or yards: a writer who does signs speeds
+    in miles per hour, so a bare speed of theirs is in mph."""
+    return _IMPERIAL_LENGTH.search(text) is not None
 
 
 #: Roads only countries that sign speeds in miles per hour have: the British "carriageway" and the
-#: American interstate, freeway and turnpike. ("Motorway" and "highway" are said where km/h is signed too.)
-_MILES_ROADS = frozenset({"carriageway", "carriageways", "interstate", "freeway", "freeways", "turnpike"})
+#: American interstate, freeway, turnpike, and the places beside an American road by their American
+#: names (curb, sidewalk, crosswalk, gas station, parking lot). ("Motorway" and "highway" are said where
+#: km/h is signed too.)
+_MILES_ROADS = frozenset(
+    {"carriageway", "carriageways", "interstate", "freeway", "freeways", "turnpike", "curb", "curbs", "sidewalk",
+     "sidewalks", "crosswalk", "crosswalks"}
+)  # fmt: skip
+#: Two-word American road names ("a divided highway", "the gas station", "a parking lot", "an 18-wheeler").
+_MILES_PAIRS = frozenset({("divided", "highway"), ("gas", "station"), ("parking", "lot"), ("18", "wheeler")})
 #: Distances in miles ("for a mile", "two miles back"): a writer who measures the road in miles reads
 #: its speeds in miles per hour.
 _MILES = frozenset({"mile", "miles"})
@@ -239,7 +285,7 @@ def miles_country(tokens: list[str]) -> bool:
     70") gives it in the unit of their road signs, and names the road far more often than the unit."""
     for k, tok in enumerate(tokens):
         nxt = tokens[k + 1] if k + 1 < len(tokens) else ""
-        if tok in _MILES_ROADS or tok in _MILES:
+        if tok in _MILES_ROADS or tok in _MILES or (tok, nxt) in _MILES_PAIRS:
             return True
         measured = tokens[k + 2 : k + 3] != [] and (tokens[k + 2] in _MEASURES or tokens[k + 2] in V.SPEED_UNITS)
         if tok in _ROAD_LETTERS and nxt.isdigit() and not measured and not (k and _is_number(tokens[k - 1])):

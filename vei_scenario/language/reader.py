@@ -485,8 +485,9 @@ def _adverb(word: str) -> bool:
     return word.endswith("ly") or word in ("hard", "fast", "straight", "just", "then")
 
 
-def _number(tokens: list[str], i: int) -> tuple[str, float, int] | None:
-    """(kind, value SI, tokens used) of a number at ``i``: a speed, a distance, or something to skip."""
+def _number(tokens: list[str], i: int, imperial: bool = False) -> tuple[str, float, int] | None:
+    """(kind, value SI, tokens used) of a number at ``i``: a speed, a distance, or something to skip
+    (``imperial``: the text measures lengths in feet or yards, so a bare speed is in mph)."""
     value = float(tokens[i])
     nxt = tokens[i + 1] if i + 1 < len(tokens) else ""
     if nxt in V.SPEED_UNITS:
@@ -518,11 +519,12 @@ def _number(tokens: list[str], i: int) -> tuple[str, float, int] | None:
     )  # ("speeds up to 80": the speed it reaches)
     if (prev in ("at", "doing", "about", "around", "of") or to_changed or Q.after_at(tokens, i)) and 3 <= value <= 250:
         # "at 120", "at a steady 50": in the unit said before
-        return "speed", value * Q.carried_unit(tokens, i), 1
+        return "speed", value * Q.carried_unit(tokens, i, imperial), 1
     ends = nxt in ("", ".", ",", ";", "!", "?", "and", "then", "when", "while", "but")
     hedged = prev != tokens[i - 1]  # ("going well over 60 passes me": a speed, however the clause goes on)
-    if (prev in _MOTION_BEFORE_SPEED or Q.after_ego(tokens, i)) and 3 <= value <= 250 and (ends or hedged):
-        return "speed", value * Q.carried_unit(tokens, i), 1
+    where = prev in _MOTION_BEFORE_SPEED and nxt in Q.WHERE_AFTER_SPEED  # ("going 40 down the high street")
+    if (prev in _MOTION_BEFORE_SPEED or Q.after_ego(tokens, i)) and 3 <= value <= 250 and (ends or hedged or where):
+        return "speed", value * Q.carried_unit(tokens, i, imperial), 1
     return "unknown", value, 1
 
 
@@ -562,6 +564,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
     dropped = framed + dropped
     ignored: list[str] = [w for w in dropped if w not in FUNCTION_WORDS and w.isalpha()]
     left_hand, ring = sides.drives_on_left(tokens, text), "roundabout" in tokens
+    imperial = Q.imperial_lengths(text.lower())  # ("ten feet ahead": a writer whose bare speeds are mph)
 
     def ending_at(k: int) -> int | None:  # the start of the road-user mention whose last word is token k
         return next(
@@ -587,7 +590,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             i += 1
             continue
         if re.fullmatch(r"\d+(?:\.\d+)?", tok) and not sides.lanes_away(tokens, i):  # (not "2 lanes to our left")
-            kind, value, used = _number(tokens, i)
+            kind, value, used = _number(tokens, i, imperial)
             words = " ".join(tokens[i : i + used])
             if kind in ("speed", "distance", "speed_range") and Q.lateral(tokens, i, used):
                 kind = "skip"  # ("a lateral velocity of 1 m/s", "1.5 m clearance"): across the road, no travel
