@@ -99,3 +99,39 @@ def test_a_bare_speed_on_an_american_road_is_mph(text, mph):
 )
 def test_a_bare_speed_stays_kmh_without_a_sign_of_miles(text, kph):
     assert _ego(text) == pytest.approx(kph * KPH)
+
+
+# --- a sentence opening with a participle of driving: its speed is the narrator's --------------------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("Rolling down Mill Lane at about 40 km/h, a delivery van reversed out of a drive into my path.", 40),
+        ("Heading into town at 50 km/h on Sunday morning, and a cyclist swung out from the kerb ahead.", 50),
+        ("Towing a caravan at 80 km/h on the coast road when a motorbike overtook and cut in.", 80),
+        ("Coming over the hill at roughly 30 mph, a tractor pulled out of a field gate ahead of her.", 48.28),
+    ],
+    ids=["rolling", "heading-and", "towing-when", "coming-her"],
+)
+def test_a_speed_in_an_opening_participle_of_driving_is_the_egos(text, kph):
+    r = read(text)
+    assert r.ego_speed_mps == pytest.approx(kph * KPH, rel=1e-3)
+    assert all(a.speed_mps is None for a in r.actors)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Crossing the road at 6 km/h, a jogger stepped in front of the ego.",
+        "Riding along the kerb at 18 km/h, a cyclist swerved into the ego's lane.",
+    ],
+    ids=["crossing", "riding"],
+)
+def test_a_speed_in_an_opening_participle_of_walking_or_riding_is_not_the_egos(text):
+    r = read(text)
+    assert r.ego_speed_mps is None and r.actors[0].speed_mps is not None
+
+
+def test_a_participle_the_lexicon_lacks_still_opens_the_narrators_drive():
+    assert _ego("Creeping through the roadworks at 15 km/h when a pedestrian walked out in front of me.") == (
+        pytest.approx(15 * KPH)
+    )

@@ -1256,6 +1256,7 @@ def _read(text: str) -> Reading:
     owned = {o for _, ms in clauses for x in ms for o in x.owners}  # mentions a number is said of
     ego_said: float | None = None  # the ego's speed as the grammar says it (no position rule overrides it)
     said_of: list[tuple[_Actor, str, float]] = []  # a road user's speed or gap as the grammar says it, likewise
+    opened = ego_speed.opening_participles(scanned)  # ("Heading home at 50 km/h, ...": speeds of opening phrases)
     for link, mentions in clauses:
         named: list[tuple[_Actor | str, str]] = []  # (actor, role) in order: subject, prep, verb, participle
         clause_subject: _Actor | str | None = None
@@ -1291,6 +1292,10 @@ def _read(text: str) -> Reading:
                 continue
             if m.slot in ("conj", "link"):
                 expect_subject = True
+                prev = m
+                continue
+            if m.slot == "speed" and opened.get(m.start) and r.ego_speed_mps is None:
+                r.ego_speed_mps = m.value  # ("Heading home at 50 km/h, a van ...": the narrator's drive)
                 prev = m
                 continue
             if m.slot == "behaviour" and _ego_participle(prev, m, nxt):
@@ -1716,7 +1721,9 @@ def _read(text: str) -> Reading:
                 elif too_fast and r.ego_speed_mps is None:
                     # "a dog ran out in front of the car at 50 km/h": no walker goes that fast; the ego does
                     r.ego_speed_mps = m.value
-                elif who is None and m.slot == "speed" and not actors and r.ego_speed_mps is None:
+                elif who is None and m.slot == "speed" and not actors and r.ego_speed_mps is None and opened.get(
+                    m.start, True
+                ):
                     r.ego_speed_mps = m.value  # "Motorway at 110 km/h, a lorry ...": before anyone, the ego's
                 elif who is None:
                     pending.append(m)
