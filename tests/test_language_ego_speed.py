@@ -135,3 +135,65 @@ def test_a_participle_the_lexicon_lacks_still_opens_the_narrators_drive():
     assert _ego("Creeping through the roadworks at 15 km/h when a pedestrian walked out in front of me.") == (
         pytest.approx(15 * KPH)
     )
+
+
+# --- the ego standing as the scene opens ---------------------------------------------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "We were stopped at the junction and a scooter ran into the back of us.",
+        "I am stopped at a zebra crossing; a moped clips my rear.",
+        "Pulled up to the lights early, I was stopped at the red light and a cyclist rode into my rear bumper.",
+    ],
+    ids=["were-stopped-at", "am-stopped-at", "after-own-move"],
+)
+def test_the_ego_said_to_be_stopped_somewhere_starts_at_rest(text):
+    assert _ego(text) == 0.0
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A child ran out ahead of me and I stopped at the crossing just in time.",
+        "A van cut in, so we stopped at the next lay-by to check the car.",
+    ],
+    ids=["stop-as-reaction", "stop-later"],
+)
+def test_a_stop_the_ego_makes_after_someone_acts_is_no_start_at_rest(text):
+    assert _ego(text) != 0.0
+
+
+# --- a speed at impact after the ego braked is no start speed -------------------------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist swerved in front of me, I braked hard and we hit her at about 10 mph.",
+        "The ego brakes hard but hits the dummy at 25 km/h.",
+        "A dog ran out; I was braking already and still struck it at an estimated 12 km/h.",
+    ],
+    ids=["we-hit", "but-hits", "still-struck"],
+)
+def test_the_speed_of_an_impact_after_braking_is_not_the_egos_start_speed(text):
+    assert _ego(text) is None
+
+
+def test_an_impact_speed_after_braking_leaves_the_start_speed_said_before():
+    assert _ego("Doing 50 km/h, I saw the boy late, braked, and clipped him at around 20 km/h.") == pytest.approx(
+        50 * KPH
+    )
+
+
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("I hit the cyclist at 30 km/h without braking.", 30),
+        ("We struck the barrier at 40 km/h and only then braked.", 40),
+    ],
+    ids=["no-braking", "braking-after"],
+)
+def test_an_impact_speed_with_no_braking_before_it_is_the_egos_speed(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH)
+
+
+def test_an_impact_speed_after_another_road_users_braking_is_the_egos_speed():
+    assert _ego("The car in front braked sharply and I hit it at 20 mph.") == pytest.approx(20 * MPH)

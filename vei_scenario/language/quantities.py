@@ -478,16 +478,22 @@ def ego_at_rest(clauses) -> bool:
     anything or as the background of what they do ("... while I was queuing"). Why: the one struck
     while waiting is a common report, and a stop the ego makes in reply ("... and I was stopped just
     in time") is no start at rest. ``clauses``: the reader's (link, mentions)."""
-    acted = False
+    acted = other = False
     for _, mentions in clauses:
         said = [
-            m for m in mentions if m.slot not in ("punct", "conj") and not (m.slot == "ego_verb" and m.value is None)
+            m
+            for m in mentions
+            if m.slot not in ("punct", "conj")
+            and not (m.slot == "ego_verb" and m.value is None)
+            and not (m.slot == "unknown_verb" and m.words in _BE)  # ("I am stopped at ...")
         ]
         for k, m in enumerate(said):
-            if m.slot == "behaviour":
+            other = other or (m.slot == "actor" and m.value != "ego")
+            if m.slot == "behaviour" and other:  # (what the ego did before it stood is no one acting on it)
                 acted = True
-            if m.words not in STILL_WORDS or m.slot not in ("stationary", "unknown_verb") or not k:
-                continue
+            stop = m.slot == "behaviour" and m.value[0] == "stop" and m.words.split()[0] in STILL_WORDS
+            if not k or not (stop or (m.words in STILL_WORDS and m.slot in ("stationary", "unknown_verb"))):
+                continue  # ("was stationary", "were stopped at the junction": a state)
             ego = said[k - 1]
             if ego.slot == "actor" and ego.value == "ego" and m.prev in _STATE_BEFORE:
                 if not acted or ego.prev in _BACKGROUND:

@@ -1280,6 +1280,10 @@ def _read(text: str) -> Reading:
                 continue
             if m.slot == "modal":
                 continue
+            if m.slot == "speed" and ego_speed.impact_after_braking(scanned, m.start):
+                ignored.append(m.words)  # ("I braked but hit him at 10 mph": what was left at impact)
+                prev = m
+                continue
             whose = [resolved.get(o) if o != Q.UNNAMED else (actors[-1] if actors else None) for o in m.owners]
             if whose and None not in whose and not (m.slot == "distance" and "ego" in whose):
                 for who in whose:  # ("van speed 60 km/h", "cyclist: 12 m ahead, 15 km/h"): whose its grammar says
