@@ -197,3 +197,24 @@ def test_an_impact_speed_with_no_braking_before_it_is_the_egos_speed(text, kph):
 
 def test_an_impact_speed_after_another_road_users_braking_is_the_egos_speed():
     assert _ego("The car in front braked sharply and I hit it at 20 mph.") == pytest.approx(20 * MPH)
+
+
+# --- "both at <speed>" after a line that names the ego and one other -----------------------------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("Ego: behind a bus, 20 m back, both at 40 km/h. The bus brakes hard.", 40),
+        ("The ego follows a van with a 25 m gap, both at 60 km/h; the van stops suddenly.", 60),
+        ("Ego in lane 1 behind a lorry, 30 m gap, both at 70 km/h; the lorry brakes.", 70),
+    ],
+    ids=["key-line", "follows", "behind"],
+)
+def test_both_at_a_speed_after_the_ego_and_another_is_the_speed_of_each(text, kph):
+    r = read(text)
+    assert r.ego_speed_mps == pytest.approx(kph * KPH)
+    assert r.actors[0].speed_mps == pytest.approx(kph * KPH)
+
+
+def test_both_of_a_pair_said_without_the_ego_is_not_the_egos_speed():
+    r = read("Two scooters ride ahead, both at 20 km/h, and one of them brakes.")
+    assert r.ego_speed_mps is None

@@ -376,7 +376,12 @@ def owners(
         second = _mention_near(k, mention_ending_at)  # (past a word after it: "the van ahead")
         joint = next((a for a in range(second - 1, second - 4, -1) if a >= 1 and tokens[a] in ("and", "&")), None)
         first = None if joint is None else _mention_near(joint - 1, mention_ending_at)
-        return (first, second) if first is not None and first >= 0 else ()
+        if joint is None:  # ("Ego: behind a bus, 20 m back, both at 40 km/h"): the last two its sentence names
+            named = _in_sentence(tokens, j, mention_ending_at)
+            egos = [s for s in named if _EGO_SUBJECTS & set(tokens[s : s + 2])]  # (the ego, where named, is one)
+            others = [s for s in named if s not in egos]
+            first, second = (egos[0], others[-1]) if egos and others else (None, -1)
+        return (first, second) if first is not None and first >= 0 and first != second else ()
     return _key_of_line(tokens, i, mention_ending_at)
 
 
@@ -435,6 +440,14 @@ def _in_a_place_phrase(tokens: list[str], start: int) -> bool:
     while k >= 0 and tokens[k] in _IN_THE_PHRASE:
         k -= 1
     return k >= 0 and tokens[k] in _PLACE_OF_COMING_OUT and k + 1 < start
+
+
+def _in_sentence(tokens: list[str], before: int, mention_ending_at: Mentions) -> list[int]:
+    """The starts of the road-user mentions of the sentence that holds token ``before``, before it."""
+    start = before
+    while start > 0 and tokens[start - 1] not in _STOPS:
+        start -= 1
+    return [s for k in range(start, before) if (s := mention_ending_at(k)) is not None and s >= start]
 
 
 def _mention_near(k: int, mention_ending_at: Mentions) -> int:
