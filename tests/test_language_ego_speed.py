@@ -94,8 +94,9 @@ def test_a_bare_speed_on_an_american_road_is_mph(text, mph):
         ("Doing 40 on the B27, a cyclist swerved out 2 km before the Autobahn exit.", 40),
         ("Doing 40, a man on foot crossed in front of me.", 40),
         ("Doing 30, a cyclist put his feet down and wobbled into my lane.", 30),
+        ("Out this aft doing 40 when a cyclist pulled out in front of me.", 40),
     ],
-    ids=["motorway-fast", "motorway-jam", "autobahn", "bundesstrasse-km", "on-foot", "body-feet"],
+    ids=["motorway-fast", "motorway-jam", "autobahn", "bundesstrasse-km", "on-foot", "body-feet", "aft-no-foot"],
 )
 def test_a_bare_speed_stays_kmh_without_a_sign_of_miles(text, kph):
     assert _ego(text) == pytest.approx(kph * KPH)

@@ -241,7 +241,7 @@ def metric_country(tokens: list[str]) -> bool:
 #: tokens hold it in metres); "on foot" and "his feet" measure nothing.
 _IMPERIAL_LENGTH = re.compile(
     r"(?:\d|\b(?:a|an|few|of|several|one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|fifteen"
-    r"|twenty|thirty|forty|fifty|sixty|hundred))\s*(?:-\s*)?(?:feet|foot|ft|yards?|yds?)\b"
+    r"|twenty|thirty|forty|fifty|sixty|hundred)\s)\s*(?:-\s*)?(?:feet|foot|ft|yards?|yds?)\b"
 )
 
 
