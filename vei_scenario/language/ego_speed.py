@@ -5,6 +5,11 @@ Two ways people give the ego's speed that no number grammar of one road user rea
 - by the limit it keeps to: "Drivers doing the 20 limit", "I was sitting at the 30 limit", "keeping
   to the 50 km/h limit": going at the limit is going at that speed (a limit said alone, "a 20 mph
   road", is only the road's, and the reader's settings read it);
+- in a sentence that opens with a participle of driving and names no subject ("Coming round the
+  roundabout at 15 mph, a van ...", "Towing a caravan at 80 km/h when ..."): whoever tells the story is
+  the one driving, even where the road user named next is the grammatical subject;
+- not by the speed it hits something at after it braked ("I braked but hit him at 10 mph", "struck it at
+  an estimated 12 mph"): that is what was left of its speed, not the speed it came at;
 - of traffic in general, in a text whose ego is someone in traffic in general ("Cars are usually
   doing around 20 mph on the roundabout", "Vehicles typically travel at 40 mph here"): the speed of
   the traffic is the ego's, as it is one of that traffic.
@@ -14,6 +19,7 @@ from __future__ import annotations
 
 from vei_scenario.language import vocabulary as V
 from vei_scenario.language.ego import SENTENCE_END
+from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.quantities import _is_number
 
 #: Words of going at a speed, before "the <number> limit" ("doing", "sitting at", "keeping to").
@@ -70,3 +76,82 @@ def of_traffic(tokens: list[str]) -> float | None:
         if j + 1 < len(tokens) and _is_number(tokens[j]) and tokens[j + 1] in V.SPEED_UNITS:
             return float(tokens[j]) * V.SPEED_UNITS[tokens[j + 1]]
     return None
+
+
+#: Verbs of going on foot or on a bike, or across: a sentence opening with one of their participles
+#: ("Crossing the road at 6 km/h, a jogger ...") is about the road user it names next, as its grammar
+#: says. Any other participle of going ("Heading home at 50 km/h, ...", "Crawling along at 10 mph when
+#: ...") opens the narrator's drive, the way people tell it, whoever the sentence names next.
+NOT_DRIVING = frozenset({"cross", "walk", "run", "jog", "ride", "cycle", "step", "scoot", "skate"})
+#: Words that end such an opening phrase: a comma, a conjunction, the sentence's end.
+_PHRASE_ENDS = frozenset({",", ";", ".", "!", "?", "and", "when", "while", "as", "but", "then"})
+_OPENERS = SENTENCE_END | {":"}
+
+
+def opening_participles(tokens: list[str]) -> dict[int, bool]:
+    """The numbers said in a phrase that opens its sentence with a participle and no subject, by their
+    index: True where the participle is of driving (the speed is the narrator's, the ego's), False
+    for one of walking, riding or crossing ("Crossing the road at 6 km/h, a jogger ...": the speed of
+    the one named next)."""
+    out: dict[int, bool] = {}
+    for k, w in enumerate(tokens):
+        if not w.endswith("ing") or len(w) < 5 or (k and tokens[k - 1] not in _OPENERS):
+            continue
+        verbs = lemmas(w).get("VERB", ()) if lemmas(w) else (w[:-3],)  # ("pootling": a verb lemminflect lacks)
+        if not verbs or "even" in verbs:  # ("Morning, ...", "Evening, ...": no participle)
+            continue
+        for j in range(k + 1, min(k + 14, len(tokens))):
+            if tokens[j] in _PHRASE_ENDS:
+                break
+            if _is_number(tokens[j]) and j + 1 < len(tokens) and tokens[j + 1] in V.SPEED_UNITS:
+                out[j] = not NOT_DRIVING & set(verbs)
+    return out
+
+
+#: Verbs of contact (lemmas): a speed said with one is the speed at impact.
+CONTACT = frozenset({"hit", "strike", "collide", "clip", "knock", "crash", "smash", "plough", "rear-end", "ram"})
+#: Who does the striking where it is the ego: the narrator, the ego, or no subject after a conjunction
+#: ("braked but hit him"), which keeps the subject before it.
+_EGO_STRIKER = frozenset({"i", "we", "ego", "and", "but", ",", "then"})
+_ADVERBS = frozenset({"still", "then", "just", "eventually", "nevertheless", "finally", "only", "unfortunately"})
+_AT_HEDGES = frozenset({"at", "about", "around", "roughly", "approximately", "an", "a", "estimated", "maybe", "some"})
+
+
+def impact_after_braking(tokens: list[str], i: int) -> bool:
+    """Whether the speed at ``i`` is one the ego hits something at ("we struck it at an estimated 12
+    mph"), said after a braking ("the brakes came on", "I braked"): the speed left at impact, which is
+    no speed the ego starts at."""
+    k = i - 1
+    while k > 0 and tokens[k] in _AT_HEDGES and tokens[k] != "at":
+        k -= 1
+    if tokens[k] != "at":
+        return False
+    verb = next(
+        (v for v in range(k - 1, max(k - 6, -1), -1) if CONTACT & set(lemmas(tokens[v]).get("VERB", (tokens[v],)))),
+        None,
+    )
+    if verb is None or any(t in SENTENCE_END or t == "," for t in tokens[verb + 1 : k]):
+        return False
+    s = verb - 1
+    while s > 0 and tokens[s] in _ADVERBS:
+        s -= 1
+    if s < 0 or tokens[s] not in _EGO_STRIKER:
+        return False
+    return any(_egos_braking(tokens, b) for b in range(verb))
+
+
+_EGO_WORDS = frozenset({"i", "we", "ego", "my", "our"})
+
+
+def _egos_braking(tokens: list[str], b: int) -> bool:
+    """Whether ``tokens[b]`` is a braking of the ego: a brake word with the ego said before it in its
+    sentence ("I braked", "we were braking", "my brakes"), or "The brakes" opening a sentence (the narrator's own;
+    "the car in front braked" is not)."""
+    if not tokens[b].startswith("brak") and "brake" not in lemmas(tokens[b]).get("VERB", ()):
+        return False
+    start = b
+    while start > 0 and tokens[start - 1] not in SENTENCE_END:
+        start -= 1
+    if _EGO_WORDS & set(tokens[start:b]):  # ("I saw him late, braked, ...": the subject of its sentence)
+        return True
+    return b >= 1 and tokens[b - 1] == "the" and (b == 1 or tokens[b - 2] in SENTENCE_END)

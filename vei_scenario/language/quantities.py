@@ -63,6 +63,8 @@ _MOTION = frozenset(
 )  # (the base forms after a modal or a plural subject: "shall both travel at 50 km/h")
 #: Modals between a coordinated subject and "both" ("the ego and the van will both drive at 60").
 _MODALS = frozenset({"will", "shall", "should", "must", "would", "can", "could", "may", "might"})
+#: Forms of "be" whose subject a speed after "at" is said of ("we were at maybe 50 km/h").
+_BE = frozenset({"is", "was", "are", "were", "am", "be"})
 _AUXILIARIES = frozenset({"is", "was", "are", "were", "am", "be", "been", "'s", "still", "also", "then", "just"})
 #: Words after which a noun opens a clause, as its subject ("; the bus at 15 km/h", "and the van at 60").
 _CLAUSE_OPENERS = frozenset({",", ";", ":", ".", "and", "but", "while", "whereas", "when", "then", "as"})
@@ -175,6 +177,13 @@ def ego_speed_mps(tokens: list[str]) -> float | None:
     return None
 
 
+#: Prepositions of where one goes, after "going 40" ("going 40 down the hill", "driving 30 past the
+#: school"): the number between a verb of going and its place is how fast it goes.
+WHERE_AFTER_SPEED = frozenset(
+    "on down along through past by in into up round around towards toward over across near".split()
+)
+
+
 def after_at(tokens: list[str], i: int) -> bool:
     """Whether a bare number at ``i`` follows "at" (or "doing") past an article and one modifier
     ("at a steady 50", "doing a brisk 30"): a speed, as "at 50" is."""
@@ -197,22 +206,61 @@ def after_ego(tokens: list[str], i: int) -> bool:
 Mentions = Callable[[int], "int | None"]
 
 
-def carried_unit(tokens: list[str], i: int) -> float:
+def carried_unit(tokens: list[str], i: int, imperial: bool = False) -> float:
     """The factor to m/s of a bare speed at ``i`` ("I'm at 50"): the unit of the last speed said with
     one before it, else of the first said after it, else mph on a road of a country that signs miles
-    (:func:`miles_country`), else km/h (the unit of a test engineer who gives none)."""
+    (:func:`miles_country`; ``imperial``: the text measured a length in feet or yards, see
+    :func:`imperial_lengths`), else km/h (the unit of a test engineer who gives none; a motorway says
+    neither: in heavy traffic 60 km/h is as likely there as 60 mph)."""
     for k in range(i - 1, 0, -1):
         if tokens[k] in V.SPEED_UNITS and tokens[k - 1].replace(".", "", 1).isdigit():
             return V.SPEED_UNITS[tokens[k]]
     for k in range(i + 1, len(tokens)):  # none before: the one said after it ("at 30 and ... 20 mph")
         if tokens[k] in V.SPEED_UNITS and tokens[k - 1].replace(".", "", 1).isdigit():
             return V.SPEED_UNITS[tokens[k]]
-    return V.SPEED_UNITS["mph"] if miles_country(tokens) else 1 / 3.6
+    if metric_country(tokens):
+        return 1 / 3.6
+    return V.SPEED_UNITS["mph"] if imperial or miles_country(tokens) else 1 / 3.6
+
+
+#: Roads only countries that sign km/h have, by their own names (the German Autobahn and Bundesstrasse,
+#: the French autoroute, the Italian autostrada, the Spanish autopista), and distances in kilometres: a
+#: text set on one reads a bare speed in km/h whatever else looks British or American ("the A8", "the B27").
+_METRIC_ROADS = frozenset(
+    {"autobahn", "autobahns", "bundesstrasse", "bundesstra", "autoroute", "autostrada", "autopista", "km", "kms"}
+)
+
+
+def metric_country(tokens: list[str]) -> bool:
+    """Whether the text is set where speeds are signed in km/h: a road of such a country by its own
+    name, or a distance said in kilometres."""
+    return any(t in _METRIC_ROADS for t in tokens)
+
+
+#: A length in feet or yards ("ten feet ahead", "by a foot", "a few yards"), as written (the reader's
+#: tokens hold it in metres); "on foot" and "his feet" measure nothing.
+_IMPERIAL_LENGTH = re.compile(
+    r"(?:\d|\b(?:a|an|few|of|several|one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|fifteen"
+    r"|twenty|thirty|forty|fifty|sixty|hundred)\s)\s*(?:-\s*)?(?:feet|foot|ft|yards?|yds?)\b"
+)
+
+
+def imperial_lengths(text: str) -> bool:
+    """Whether ``text`` (lowercased) measures a length in feet or yards: a writer who does signs speeds
+    in miles per hour, so a bare speed of theirs is in mph."""
+    return _IMPERIAL_LENGTH.search(text) is not None
 
 
 #: Roads only countries that sign speeds in miles per hour have: the British "carriageway" and the
-#: American interstate, freeway and turnpike. ("Motorway" and "highway" are said where km/h is signed too.)
-_MILES_ROADS = frozenset({"carriageway", "carriageways", "interstate", "freeway", "freeways", "turnpike"})
+#: American interstate, freeway, turnpike, and the places beside an American road by their American
+#: names (curb, sidewalk, crosswalk, gas station, parking lot). ("Motorway" and "highway" are said where
+#: km/h is signed too.)
+_MILES_ROADS = frozenset(
+    {"carriageway", "carriageways", "interstate", "freeway", "freeways", "turnpike", "curb", "curbs", "sidewalk",
+     "sidewalks", "crosswalk", "crosswalks"}
+)  # fmt: skip
+#: Two-word American road names ("a divided highway", "the gas station", "a parking lot", "an 18-wheeler").
+_MILES_PAIRS = frozenset({("divided", "highway"), ("gas", "station"), ("parking", "lot"), ("18", "wheeler")})
 #: Distances in miles ("for a mile", "two miles back"): a writer who measures the road in miles reads
 #: its speeds in miles per hour.
 _MILES = frozenset({"mile", "miles"})
@@ -237,7 +285,7 @@ def miles_country(tokens: list[str]) -> bool:
     70") gives it in the unit of their road signs, and names the road far more often than the unit."""
     for k, tok in enumerate(tokens):
         nxt = tokens[k + 1] if k + 1 < len(tokens) else ""
-        if tok in _MILES_ROADS or tok in _MILES:
+        if tok in _MILES_ROADS or tok in _MILES or (tok, nxt) in _MILES_PAIRS:
             return True
         measured = tokens[k + 2 : k + 3] != [] and (tokens[k + 2] in _MEASURES or tokens[k + 2] in V.SPEED_UNITS)
         if tok in _ROAD_LETTERS and nxt.isdigit() and not measured and not (k and _is_number(tokens[k - 1])):
@@ -292,6 +340,10 @@ def owners(
         if owner is None and j and noun(tokens[j - 1]) and tokens[j - 2 : j - 1] not in (["the"], ["a"], ["its"]):
             return (UNNAMED,)
         return (owner,) if owner is not None else ()
+    be = _be_at(tokens, i)
+    if be is not None:  # "we were at maybe 50 km/h", "I was at about 40": the subject of "be"
+        owner = mention_ending_at(be)
+        return (owner,) if owner is not None else ()
     owner = mention_ending_at(j)
     if owner is not None:
         k = owner - 1
@@ -303,7 +355,7 @@ def owners(
             return ()  # "steps out between parked cars 3 m/s": the cars say where; the clause says whose
         if j == i - 1 and (unit or after_ego(tokens, i)):  # "cyclist 15 km/h", "ego 50": of the noun before it
             return (owner,)
-        if unit and tokens[j + 1] == "at" and (k < 0 or tokens[k] in _CLAUSE_OPENERS):
+        if unit and tokens[j + 1] == "at" and (k < 0 or tokens[k] in _CLAUSE_OPENERS) and not compared(tokens, k):
             return (owner,)  # "the van at 60 km/h overtakes ...": said of the subject opening its clause
     subject = mention_ending_at(j - 1) if unit and j and tokens[j].endswith("ing") else None
     if subject is not None and subject and tokens[subject - 1] == "with":
@@ -324,7 +376,12 @@ def owners(
         second = _mention_near(k, mention_ending_at)  # (past a word after it: "the van ahead")
         joint = next((a for a in range(second - 1, second - 4, -1) if a >= 1 and tokens[a] in ("and", "&")), None)
         first = None if joint is None else _mention_near(joint - 1, mention_ending_at)
-        return (first, second) if first is not None and first >= 0 else ()
+        if joint is None:  # ("Ego: behind a bus, 20 m back, both at 40 km/h"): the last two its sentence names
+            named = _in_sentence(tokens, j, mention_ending_at)
+            egos = [s for s in named if _EGO_SUBJECTS & set(tokens[s : s + 2])]  # (the ego, where named, is one)
+            others = [s for s in named if s not in egos]
+            first, second = (egos[0], others[-1]) if egos and others else (None, -1)
+        return (first, second) if first is not None and first >= 0 and first != second else ()
     return _key_of_line(tokens, i, mention_ending_at)
 
 
@@ -339,6 +396,32 @@ def drives(actor) -> bool:
     only a driver does: a speed no walker reaches is then its own ("a maniac overtook me doing 70 mph"),
     not the ego's. (A rider stays a rider: "a cyclist drifts in, with the ego at 60 km/h".)"""
     return actor.kind == "pedestrian" and any(b[0] in _DRIVERS_ACTS for b in actor.behaviours)
+
+
+def _be_at(tokens: list[str], i: int) -> int | None:
+    """The last word of the subject of "<subject> <be> at <number>" for the number at ``i`` (past hedges:
+    "we were at maybe 50", "I'm at about 30"), else None. Why: "be at" a speed says whose speed it is as
+    plainly as a verb of going does, wherever the clause stands in a run-on sentence."""
+    k = i - 1
+    while k > 0 and tokens[k] in _LINKS and tokens[k] not in _BE and tokens[k] != "at":
+        k -= 1
+    if k < 2 or tokens[k] != "at":
+        return None
+    k -= 1
+    while k > 0 and tokens[k] in _AUXILIARIES - _BE:
+        k -= 1
+    if tokens[k] not in _BE:
+        return None
+    k -= 1
+    while k > 0 and tokens[k] in _AUXILIARIES - _BE:
+        k -= 1
+    return k
+
+
+def compared(tokens: list[str], k: int) -> bool:
+    """Whether ``tokens[k]`` is the "as" of a comparison ("in the same lane as the ego at 18 km/h"): the
+    noun after it is what the subject is compared with, not the subject of a clause of its own."""
+    return tokens[k] == "as" and "same" in tokens[max(k - 4, 0) : k]
 
 
 #: Prepositions whose object is scenery a road user comes out of or past, not one that moves itself.
@@ -357,6 +440,14 @@ def _in_a_place_phrase(tokens: list[str], start: int) -> bool:
     while k >= 0 and tokens[k] in _IN_THE_PHRASE:
         k -= 1
     return k >= 0 and tokens[k] in _PLACE_OF_COMING_OUT and k + 1 < start
+
+
+def _in_sentence(tokens: list[str], before: int, mention_ending_at: Mentions) -> list[int]:
+    """The starts of the road-user mentions of the sentence that holds token ``before``, before it."""
+    start = before
+    while start > 0 and tokens[start - 1] not in _STOPS:
+        start -= 1
+    return [s for k in range(start, before) if (s := mention_ending_at(k)) is not None and s >= start]
 
 
 def _mention_near(k: int, mention_ending_at: Mentions) -> int:
@@ -400,16 +491,22 @@ def ego_at_rest(clauses) -> bool:
     anything or as the background of what they do ("... while I was queuing"). Why: the one struck
     while waiting is a common report, and a stop the ego makes in reply ("... and I was stopped just
     in time") is no start at rest. ``clauses``: the reader's (link, mentions)."""
-    acted = False
+    acted = other = False
     for _, mentions in clauses:
         said = [
-            m for m in mentions if m.slot not in ("punct", "conj") and not (m.slot == "ego_verb" and m.value is None)
+            m
+            for m in mentions
+            if m.slot not in ("punct", "conj")
+            and not (m.slot == "ego_verb" and m.value is None)
+            and not (m.slot == "unknown_verb" and m.words in _BE)  # ("I am stopped at ...")
         ]
         for k, m in enumerate(said):
-            if m.slot == "behaviour":
+            other = other or (m.slot == "actor" and m.value != "ego")
+            if m.slot == "behaviour" and other:  # (what the ego did before it stood is no one acting on it)
                 acted = True
-            if m.words not in STILL_WORDS or m.slot not in ("stationary", "unknown_verb") or not k:
-                continue
+            stop = m.slot == "behaviour" and m.value[0] == "stop" and m.words.split()[0] in STILL_WORDS
+            if not k or not (stop or (m.words in STILL_WORDS and m.slot in ("stationary", "unknown_verb"))):
+                continue  # ("was stationary", "were stopped at the junction": a state)
             ego = said[k - 1]
             if ego.slot == "actor" and ego.value == "ego" and m.prev in _STATE_BEFORE:
                 if not acted or ego.prev in _BACKGROUND:

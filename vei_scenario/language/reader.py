@@ -502,8 +502,9 @@ def _adverb(word: str) -> bool:
     return word.endswith("ly") or word in ("hard", "fast", "straight", "just", "then")
 
 
-def _number(tokens: list[str], i: int) -> tuple[str, float, int] | None:
-    """(kind, value SI, tokens used) of a number at ``i``: a speed, a distance, or something to skip."""
+def _number(tokens: list[str], i: int, imperial: bool = False) -> tuple[str, float, int] | None:
+    """(kind, value SI, tokens used) of a number at ``i``: a speed, a distance, or something to skip
+    (``imperial``: the text measures lengths in feet or yards, so a bare speed is in mph)."""
     value = float(tokens[i])
     nxt = tokens[i + 1] if i + 1 < len(tokens) else ""
     if nxt in V.SPEED_UNITS:
@@ -537,11 +538,12 @@ def _number(tokens: list[str], i: int) -> tuple[str, float, int] | None:
     )  # ("speeds up to 80": the speed it reaches)
     if (prev in ("at", "doing", "about", "around", "of") or to_changed or Q.after_at(tokens, i)) and 3 <= value <= 250:
         # "at 120", "at a steady 50": in the unit said before
-        return "speed", value * Q.carried_unit(tokens, i), 1
+        return "speed", value * Q.carried_unit(tokens, i, imperial), 1
     ends = nxt in ("", ".", ",", ";", "!", "?", "and", "then", "when", "while", "but")
     hedged = prev != tokens[i - 1]  # ("going well over 60 passes me": a speed, however the clause goes on)
-    if (prev in _MOTION_BEFORE_SPEED or Q.after_ego(tokens, i)) and 3 <= value <= 250 and (ends or hedged):
-        return "speed", value * Q.carried_unit(tokens, i), 1
+    where = prev in _MOTION_BEFORE_SPEED and nxt in Q.WHERE_AFTER_SPEED  # ("going 40 down the high street")
+    if (prev in _MOTION_BEFORE_SPEED or Q.after_ego(tokens, i)) and 3 <= value <= 250 and (ends or hedged or where):
+        return "speed", value * Q.carried_unit(tokens, i, imperial), 1
     return "unknown", value, 1
 
 
@@ -581,6 +583,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
     dropped = framed + dropped
     ignored: list[str] = [w for w in dropped if w not in FUNCTION_WORDS and w.isalpha()]
     left_hand, ring = sides.drives_on_left(tokens, text), "roundabout" in tokens
+    imperial = Q.imperial_lengths(text.lower())  # ("ten feet ahead": a writer whose bare speeds are mph)
 
     def ending_at(k: int) -> int | None:  # the start of the road-user mention whose last word is token k
         return next(
@@ -606,7 +609,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             i += 1
             continue
         if re.fullmatch(r"\d+(?:\.\d+)?", tok) and not sides.lanes_away(tokens, i):  # (not "2 lanes to our left")
-            kind, value, used = _number(tokens, i)
+            kind, value, used = _number(tokens, i, imperial)
             words = " ".join(tokens[i : i + used])
             if kind in ("speed", "distance", "speed_range") and Q.lateral(tokens, i, used):
                 kind = "skip"  # ("a lateral velocity of 1 m/s", "1.5 m clearance"): across the road, no travel
@@ -728,7 +731,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             clauses[-1][1].append(_Mention("modal", tok, tok, i, prev, end=i + 1))  # "it has to brake"
             i += 1
             continue
-        if key is None and tok in L.CONJUNCTIONS:
+        if key is None and tok in L.CONJUNCTIONS and not Q.compared(tokens, i):  # ("the same lane as": no clause)
             clauses[-1][1].append(_Mention("conj", tok, tok, i, prev, end=i + 1))
             i += 1
             continue
@@ -1283,6 +1286,7 @@ def _read(text: str) -> Reading:
     owned = {o for _, ms in clauses for x in ms for o in x.owners}  # mentions a number is said of
     ego_said: float | None = None  # the ego's speed as the grammar says it (no position rule overrides it)
     said_of: list[tuple[_Actor, str, float]] = []  # a road user's speed or gap as the grammar says it, likewise
+    opened = ego_speed.opening_participles(scanned)  # ("Heading home at 50 km/h, ...": speeds of opening phrases)
     for link, mentions in clauses:
         named: list[tuple[_Actor | str, str]] = []  # (actor, role) in order: subject, prep, verb, participle
         clause_subject: _Actor | str | None = None
@@ -1306,6 +1310,10 @@ def _read(text: str) -> Reading:
                 continue
             if m.slot == "modal":
                 continue
+            if m.slot == "speed" and ego_speed.impact_after_braking(scanned, m.start):
+                ignored.append(m.words)  # ("I braked but hit him at 10 mph": what was left at impact)
+                prev = m
+                continue
             whose = [resolved.get(o) if o != Q.UNNAMED else (actors[-1] if actors else None) for o in m.owners]
             if whose and None not in whose and not (m.slot == "distance" and "ego" in whose):
                 for who in whose:  # ("van speed 60 km/h", "cyclist: 12 m ahead, 15 km/h"): whose its grammar says
@@ -1318,6 +1326,10 @@ def _read(text: str) -> Reading:
                 continue
             if m.slot in ("conj", "link"):
                 expect_subject = True
+                prev = m
+                continue
+            if m.slot == "speed" and opened.get(m.start) and r.ego_speed_mps is None:
+                r.ego_speed_mps = m.value  # ("Heading home at 50 km/h, a van ...": the narrator's drive)
                 prev = m
                 continue
             if m.slot == "behaviour" and _ego_participle(prev, m, nxt):
@@ -1750,7 +1762,9 @@ def _read(text: str) -> Reading:
                 elif too_fast and r.ego_speed_mps is None:
                     # "a dog ran out in front of the car at 50 km/h": no walker goes that fast; the ego does
                     r.ego_speed_mps = m.value
-                elif who is None and m.slot == "speed" and not actors and r.ego_speed_mps is None:
+                elif who is None and m.slot == "speed" and not actors and r.ego_speed_mps is None and opened.get(
+                    m.start, True
+                ):
                     r.ego_speed_mps = m.value  # "Motorway at 110 km/h, a lorry ...": before anyone, the ego's
                 elif who is None:
                     pending.append(m)

@@ -1,0 +1,221 @@
+"""The ego's speed: which stated number is the ego's, and the unit of a number said bare.
+
+Every wording here is written for these tests (none is from a corpus). Each class of construction has
+at least three wordings that must read, and near misses that look alike but must not."""
+
+from __future__ import annotations
+
+import pytest
+
+from vei_scenario.language.reader import read
+
+MPH = 0.44704
+KPH = 1 / 3.6
+
+
+def _ego(text: str) -> float | None:
+    return read(text).ego_speed_mps
+
+
+# --- "<subject> <be> at <speed>": the subject's -----------------------------------------------------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("a lorry ahead slams on and then the van behind me nearly hits us we were at roughly 60 km/h", 60),
+        ("the bus in front stopped dead and a taxi behind almost rear-ended us I was at about 40 km/h", 40),
+        ("A cyclist swerves out and a moped behind clips us, we are at maybe 30 km/h at that point", 30),
+    ],
+    ids=["we-were", "i-was", "we-are"],
+)
+def test_a_speed_after_the_ego_and_a_form_of_be_is_the_egos(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH)
+
+
+def test_a_speed_after_another_subject_and_be_is_that_road_users():
+    r = read("The ego drives at 50 km/h. A van ahead brakes, the van was at about 45 km/h.")
+    assert r.ego_speed_mps == pytest.approx(50 * KPH) and r.actors[0].speed_mps == pytest.approx(45 * KPH)
+
+
+# --- "the same <noun> as <road user>": a comparison, not the subject of a clause ---------------------------
+@pytest.mark.parametrize(
+    "text, ego, other",
+    [
+        ("The cyclist rides in the same lane as the ego at 18 km/h. The ego comes up from behind at 40 km/h.", 40, 18),
+        ("A scooter moves the same way as the ego at 20 km/h; the ego closes in at a speed of 50 km/h.", 50, 20),
+        ("The target car keeps the same lane as the SUT at 30 km/h. The SUT follows at 60 km/h.", 60, 30),
+    ],
+    ids=["same-lane-as", "same-way-as", "same-lane-as-sut"],
+)
+def test_a_speed_after_the_same_x_as_the_ego_is_the_subjects(text, ego, other):
+    r = read(text)
+    assert r.ego_speed_mps == pytest.approx(ego * KPH)
+    assert [a.speed_mps for a in r.actors] == [pytest.approx(other * KPH)]
+
+
+def test_a_clause_opened_by_as_still_has_its_subject():
+    r = read("A pedestrian steps out as the ego at 40 km/h comes past.")
+    assert r.ego_speed_mps == pytest.approx(40 * KPH)
+
+
+# --- the unit of a bare speed: the writer's road signs ---------------------------------------------------
+@pytest.mark.parametrize(
+    "text, mph",
+    [
+        ("Doing 25 past the school, a boy ran out about ten feet ahead of my bumper.", 25),
+        ("I was going 40 on the way home when a pickup pulled out maybe 60 feet in front of me.", 40),
+        ("I was doing 30 when a kid on a bike shot out a few yards in front of me.", 30),
+    ],
+    ids=["feet", "feet-later", "yards"],
+)
+def test_a_bare_speed_in_a_text_that_measures_in_feet_or_yards_is_mph(text, mph):
+    assert _ego(text) == pytest.approx(mph * MPH)
+
+
+@pytest.mark.parametrize(
+    "text, mph",
+    [
+        ("Going 40 on a divided highway when a semi drifted into my lane.", 40),
+        ("Doing about 30 and a jogger stepped off the curb right in front of me.", 30),
+        ("I was going 25 by the gas station and a cyclist cut across from the sidewalk.", 25),
+        ("Rolling along at 20 through the parking lot, a kid ran out between two cars.", 20),
+    ],
+    ids=["divided-highway", "curb", "gas-station-sidewalk", "parking-lot"],
+)
+def test_a_bare_speed_on_an_american_road_is_mph(text, mph):
+    assert _ego(text) == pytest.approx(mph * MPH)
+
+
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("On the motorway doing 120, a van cut in front of me.", 120),
+        ("Heavy traffic on the motorway, I'm doing 60 and a courier van darts into my lane.", 60),
+        ("On the Autobahn A8 doing 70 in the jam, a truck pulled out in front of me.", 70),
+        ("Doing 40 on the B27, a cyclist swerved out 2 km before the Autobahn exit.", 40),
+        ("Doing 40, a man on foot crossed in front of me.", 40),
+        ("Doing 30, a cyclist put his feet down and wobbled into my lane.", 30),
+        ("Out this aft doing 40 when a cyclist pulled out in front of me.", 40),
+    ],
+    ids=["motorway-fast", "motorway-jam", "autobahn", "bundesstrasse-km", "on-foot", "body-feet", "aft-no-foot"],
+)
+def test_a_bare_speed_stays_kmh_without_a_sign_of_miles(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH)
+
+
+# --- a sentence opening with a participle of driving: its speed is the narrator's --------------------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("Rolling down Mill Lane at about 40 km/h, a delivery van reversed out of a drive into my path.", 40),
+        ("Heading into town at 50 km/h on Sunday morning, and a cyclist swung out from the kerb ahead.", 50),
+        ("Towing a caravan at 80 km/h on the coast road when a motorbike overtook and cut in.", 80),
+        ("Coming over the hill at roughly 30 mph, a tractor pulled out of a field gate ahead of her.", 48.28),
+    ],
+    ids=["rolling", "heading-and", "towing-when", "coming-her"],
+)
+def test_a_speed_in_an_opening_participle_of_driving_is_the_egos(text, kph):
+    r = read(text)
+    assert r.ego_speed_mps == pytest.approx(kph * KPH, rel=1e-3)
+    assert all(a.speed_mps is None for a in r.actors)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Crossing the road at 6 km/h, a jogger stepped in front of the ego.",
+        "Riding along the kerb at 18 km/h, a cyclist swerved into the ego's lane.",
+    ],
+    ids=["crossing", "riding"],
+)
+def test_a_speed_in_an_opening_participle_of_walking_or_riding_is_not_the_egos(text):
+    r = read(text)
+    assert r.ego_speed_mps is None and r.actors[0].speed_mps is not None
+
+
+def test_a_participle_the_lexicon_lacks_still_opens_the_narrators_drive():
+    assert _ego("Creeping through the roadworks at 15 km/h when a pedestrian walked out in front of me.") == (
+        pytest.approx(15 * KPH)
+    )
+
+
+# --- the ego standing as the scene opens ---------------------------------------------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "We were stopped at the junction and a scooter ran into the back of us.",
+        "I am stopped at a zebra crossing; a moped clips my rear.",
+        "Pulled up to the lights early, I was stopped at the red light and a cyclist rode into my rear bumper.",
+    ],
+    ids=["were-stopped-at", "am-stopped-at", "after-own-move"],
+)
+def test_the_ego_said_to_be_stopped_somewhere_starts_at_rest(text):
+    assert _ego(text) == 0.0
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A child ran out ahead of me and I stopped at the crossing just in time.",
+        "A van cut in, so we stopped at the next lay-by to check the car.",
+    ],
+    ids=["stop-as-reaction", "stop-later"],
+)
+def test_a_stop_the_ego_makes_after_someone_acts_is_no_start_at_rest(text):
+    assert _ego(text) != 0.0
+
+
+# --- a speed at impact after the ego braked is no start speed -------------------------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist swerved in front of me, I braked hard and we hit her at about 10 mph.",
+        "The ego brakes hard but hits the dummy at 25 km/h.",
+        "A dog ran out; I was braking already and still struck it at an estimated 12 km/h.",
+    ],
+    ids=["we-hit", "but-hits", "still-struck"],
+)
+def test_the_speed_of_an_impact_after_braking_is_not_the_egos_start_speed(text):
+    assert _ego(text) is None
+
+
+def test_an_impact_speed_after_braking_leaves_the_start_speed_said_before():
+    assert _ego("Doing 50 km/h, I saw the boy late, braked, and clipped him at around 20 km/h.") == pytest.approx(
+        50 * KPH
+    )
+
+
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("I hit the cyclist at 30 km/h without braking.", 30),
+        ("We struck the barrier at 40 km/h and only then braked.", 40),
+    ],
+    ids=["no-braking", "braking-after"],
+)
+def test_an_impact_speed_with_no_braking_before_it_is_the_egos_speed(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH)
+
+
+def test_an_impact_speed_after_another_road_users_braking_is_the_egos_speed():
+    assert _ego("The car in front braked sharply and I hit it at 20 mph.") == pytest.approx(20 * MPH)
+
+
+# --- "both at <speed>" after a line that names the ego and one other -----------------------------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("Ego: behind a bus, 20 m back, both at 40 km/h. The bus brakes hard.", 40),
+        ("The ego follows a van with a 25 m gap, both at 60 km/h; the van stops suddenly.", 60),
+        ("Ego in lane 1 behind a lorry, 30 m gap, both at 70 km/h; the lorry brakes.", 70),
+    ],
+    ids=["key-line", "follows", "behind"],
+)
+def test_both_at_a_speed_after_the_ego_and_another_is_the_speed_of_each(text, kph):
+    r = read(text)
+    assert r.ego_speed_mps == pytest.approx(kph * KPH)
+    assert r.actors[0].speed_mps == pytest.approx(kph * KPH)
+
+
+def test_both_of_a_pair_said_without_the_ego_is_not_the_egos_speed():
+    r = read("Two scooters ride ahead, both at 20 km/h, and one of them brakes.")
+    assert r.ego_speed_mps is None
