@@ -575,3 +575,79 @@ def test_a_degree_of_traffic_with_words_of_which_traffic_between(text, density):
 def test_a_whole_hour_and_the_colloquial_parts_of_the_day(text, lo, hi):
     hour = int(read(text).time.split(":")[0])
     assert lo <= hour <= hi
+
+
+@pytest.mark.parametrize(
+    "text, lanes",
+    [
+        ("Eastbound on the bypass, 3 lanes, at 80 km/h. A coach shifted one lane to the left, next to us.", 3),
+        ("We were on a road with 4 lanes our way. A taxi on our right drifted over two lanes and stopped.", 4),
+        ("Northbound, 3 lanes in our direction. A lorry moved across one lane into the lane beside ours.", 3),
+        ("Two lanes each way. A van on my right changed one lane over, right in front of me.", 2),
+    ],
+    ids=["shifted-one-lane", "drifted-over-two", "moved-across-one", "changed-one-lane-over"],
+)
+def test_the_lanes_a_road_user_moves_across_are_not_the_roads_lanes(text, lanes):
+    assert read(text).lanes == lanes
+
+
+@pytest.mark.parametrize(
+    "text, lanes",
+    [
+        ("The street narrows to one lane and a van comes towards the ego.", 1),  # (the road's own lanes)
+        ("On a road with 3 lanes a van cuts in front of the ego.", 3),
+    ],
+    ids=["narrows-to-one", "road-with-three"],
+)
+def test_lanes_that_no_one_moves_across_are_the_roads_lanes(text, lanes):
+    assert read(text).lanes == lanes
+
+
+@pytest.mark.parametrize(
+    "text, lanes",
+    [
+        ("On a rural road with one traffic lane each way, a cyclist rides ahead of the ego.", 1),
+        ("The ego drives on an arterial, two running lanes per direction, when a van cuts in.", 2),
+        ("Three narrow lanes in each direction; a car from the left lane cuts in front of the ego.", 3),
+    ],
+    ids=["traffic-lane", "running-lanes", "narrow-lanes"],
+)
+def test_a_word_between_the_count_and_lane_keeps_the_count_per_direction(text, lanes):
+    assert read(text).lanes == lanes
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "The road has one cycle lane each side and a van cuts in front of the ego.",
+        "Two bus lanes each way, and a cyclist rides ahead of the ego.",
+    ],
+    ids=["cycle-lane", "bus-lanes"],
+)
+def test_lanes_beside_the_carriageway_are_not_its_traffic_lanes(text):
+    assert read(text).lanes is None
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist came the wrong way down the one-way street towards me.",
+        "On a one way road in town an e-scooter rides towards the ego against the flow.",
+        "Going along a one-way section of the high street, a jogger steps out ahead of the ego.",
+    ],
+    ids=["one-way-street", "one-way-road", "one-way-section"],
+)
+def test_a_one_way_street_with_no_lanes_counted_has_one_lane(text):
+    assert read(text).lanes == 1
+
+
+@pytest.mark.parametrize(
+    "text, lanes",
+    [
+        ("A one-way street with three lanes; a taxi cuts in front of the ego.", 3),
+        ("A cyclist rides one way and the ego drives the other on a road with two lanes.", 2),
+    ],
+    ids=["counted", "one-way-as-direction"],
+)
+def test_a_one_way_street_with_its_lanes_counted_or_one_way_as_a_direction(text, lanes):
+    assert read(text).lanes == lanes

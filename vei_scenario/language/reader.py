@@ -586,7 +586,8 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             clauses[-1][1].append(_Mention("punct", tok, tok, i, prev))
             i += 1
             continue
-        if re.fullmatch(r"\d+(?:\.\d+)?", tok) and not sides.lanes_away(tokens, i):  # (not "2 lanes to our left")
+        if re.fullmatch(r"\d+(?:\.\d+)?", tok) and not (sides.lanes_away(tokens, i) or S.lanes_moved(tokens, i)):
+            # (not "2 lanes to our left", "moved over 1 lane": a place or a move, not the road's lanes)
             kind, value, used = _number(tokens, i)
             words = " ".join(tokens[i : i + used])
             if kind in ("speed", "distance", "speed_range") and Q.lateral(tokens, i, used):
@@ -2008,6 +2009,7 @@ def _read(text: str) -> Reading:
     oncoming = any(s.relation == "oncoming" or any(b[0] == "wrong_way" for b in s.behaviours) for s in r.actors)
     r.lanes = S.lanes_of_two_way_road(said, oncoming) or S.lanes_counted(said) or r.lanes
     r.lanes = max(r.lanes or 0, S.lanes_at_least(said) or 0) or r.lanes  # ("in lane 3": three at least)
+    r.lanes = r.lanes or S.lanes_of_one_way_road(said)  # ("down the one-way street": one lane)
     said_as = [
         (m.slot, m.words, m.value)
         for _, ms in clauses

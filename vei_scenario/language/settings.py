@@ -16,6 +16,7 @@ import re
 from collections.abc import Callable
 
 from vei_scenario.language import lexicon as L
+from vei_scenario.language.lemmas import lemmas
 
 #: Time words that tell the light or the traffic, not the hour: a part of the day said with them wins.
 TIME_HINTS = frozenset(
@@ -402,6 +403,47 @@ def lanes_counted(said: str) -> int | None:
         return None
     n = int(word) if word.isdigit() else _WORD[word]
     return n if 1 <= n <= 6 else None
+
+
+#: Verbs of moving sideways, whose count of lanes is how far a road user moves ("shifted one lane").
+_SIDEWAYS = frozenset(("move", "shift", "drift", "change", "switch", "swerve", "veer", "slide", "step", "jump", "hop",
+                       "pull", "cut", "weave", "edge", "come", "go"))  # fmt: skip
+#: Words after "over" that end a place said as lanes away ("a van one lane over, braking").
+_AFTER_PLACE = frozenset((".", ",", ";", "!", "?", "to", "from", "on", "and", "but", "then", "when", "as", "in"))
+
+
+def lanes_moved(tokens: list[str], i: int) -> bool:
+    """Whether a count of lanes at token ``i`` ("one lane", "two lanes") is how far a road user moves
+    or how far over it is, not the lanes of the road: the object of a verb of moving sideways or of
+    "over"/"across"/"by" after one ("moved over one lane", "drifted across two lanes", "shifted one lane
+    to the left"), or a place "N lanes over". Why: the last count of lanes said sets the road's, and a
+    move of one lane would otherwise leave a three-lane road with one."""
+    if tokens[i + 1 : i + 2] not in (["lane"], ["lanes"]):
+        return False
+    after = tokens[i + 2 : i + 4]
+    if after[:1] == ["over"] and (len(after) < 2 or after[1] in _AFTER_PLACE):
+        return True  # ("a van one lane over", "changed one lane over, right in front")
+    j = i - 1
+    if j >= 0 and tokens[j] in ("over", "across", "by"):
+        j -= 1
+    if j < 0:
+        return False
+    found = lemmas(tokens[j])
+    return "VERB" in found and bool(set(found["VERB"]) & _SIDEWAYS)
+
+
+#: A road that traffic uses one way ("a one-way street", "the one-way bit of Castle Street"); not a
+#: one-way system, a city's ring of such roads, which often has several lanes.
+_ONE_WAY_ROAD = re.compile(
+    r"\bone[ -]way (?:[a-z]+ )?(?:street|road|lane|bit|section|stretch|part|side street|alley)\b"
+)
+
+
+def lanes_of_one_way_road(said: str) -> int | None:
+    """1 for a one-way road whose lanes the text does not count (the caller asks only then): the
+    whole width of such a street is mostly one lane, and a road user met there comes the wrong way
+    in the ego's lane, not in an oncoming lane beside it."""
+    return 1 if _ONE_WAY_ROAD.search(said) else None
 
 
 def lanes_of_two_way_road(said: str, oncoming: bool) -> int | None:
