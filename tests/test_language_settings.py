@@ -651,3 +651,57 @@ def test_a_one_way_street_with_no_lanes_counted_has_one_lane(text):
 )
 def test_a_one_way_street_with_its_lanes_counted_or_one_way_as_a_direction(text, lanes):
     assert read(text).lanes == lanes
+
+
+@pytest.mark.parametrize(
+    "text, lo, hi",
+    [
+        ("Report filed 17:45. At about 9 in the morning a cyclist pulled out in front of the ego.", 6, 11),
+        ("Logged at 23:10 by the desk: this afternoon a van cut in front of the ego.", 12, 17),
+        ("Ticket opened 08:02. The caller says a jogger stepped out in front of her car late at night.", 21, 29),
+        ("Statement written at 16:30. It was dawn when a deer ran out in front of the ego.", 5, 7),
+    ],
+    ids=["filed", "logged-at", "ticket-opened", "written-at"],
+)
+def test_the_time_a_record_was_made_is_not_the_events(text, lo, hi):
+    hour = int(read(text).time.split(":")[0])
+    assert lo <= hour <= hi or lo <= hour + 24 <= hi
+
+
+@pytest.mark.parametrize(
+    "text, clock",
+    [
+        ("Time: 08:05. A cyclist swerved in front of the ego.", "08:05"),
+        ("At 22:40 a van cut in front of the ego; the report was written the next day.", "22:40"),
+    ],
+    ids=["time-field", "event-clock"],
+)
+def test_the_events_own_clock_stays(text, clock):
+    assert read(text).time == clock
+
+
+@pytest.mark.parametrize(
+    "text, lo, hi",
+    [
+        ("Weds AM, light rain. A cyclist crosses in front of the ego.", 6, 11),
+        ("Friday pm: a van pulls out of a side road in front of the ego.", 12, 17),
+        ("Sat am, dry. The ego passes a jogger on the verge.", 6, 11),
+        ("Coming home this aft a moped cut in front of me.", 12, 17),
+    ],
+    ids=["weds-am", "friday-pm", "sat-am", "this-aft"],
+)
+def test_a_day_with_its_half_said_is_that_half_of_the_day(text, lo, hi):
+    hour = int(read(text).time.split(":")[0])
+    assert lo <= hour <= hi
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "On Monday I am driving at 30 mph when a cyclist crosses in front of me.",
+        "Today I am at the wheel and a van pulls out in front of me.",
+    ],
+    ids=["monday-i-am", "today-i-am"],
+)
+def test_am_as_a_verb_after_a_day_is_no_time(text):
+    assert read(text).time is None

@@ -2015,7 +2015,7 @@ def _read(text: str) -> Reading:
         for _, ms in clauses
         for m in ms
         if m.slot == "weather" or (m.slot == "time" and m.prev not in S.BOUNDS)  # (not "since midnight")
-    ]
+    ] + [("time", words, clock) for words, clock in S.day_halves(said)]  # ("Tues AM": the morning)
     clock = S.dotted_clock(S.without_bounds(said)) or stated_clock(S.without_bounds(said))
     clock = S.twelve_hour(clock, S.without_bounds(said), [v for k, w, v in said_as if k == "time"]) or S.clock_in_words(
         S.without_bounds(said), [v for k, w, v in said_as if k == "time"]

@@ -233,9 +233,33 @@ BOUNDS = frozenset({"since", "until", "till"})
 _BOUNDED_CLOCK = re.compile(r"\b(?:since|until|till) (?:about |around )?\d[\d.: ]*(?:am|pm|hrs|hours)?")
 
 
+#: A clock after a verb of making a record ("call logged 14:10", "report written at 17:45", "ticket
+#: opened 08:02"): when the record was made, not when what it tells of happened.
+_RECORDED_CLOCK = re.compile(
+    r"\b(?:logged|filed|recorded|received|written|submitted|entered|updated|printed|created|opened|closed|raised)"
+    r"(?: at| on)? (?:about |around |approx |approximately )?"
+    r"(?:\d{1,2} ?[:.] ?\d\d(?: ?(?:am|pm|hrs|hours|h)\b)?|\d{3,4} ?(?:hrs|hours|h)\b|\d{1,2} ?(?:am|pm)\b)"
+)
+
+
 def without_bounds(said: str) -> str:
-    """The normalised text without the clocks that bound something else ("since 5 am")."""
-    return _BOUNDED_CLOCK.sub(" ", said)
+    """The normalised text without the clocks that bound something else ("since 5 am") or that say
+    when a record of it was made ("call logged 14:10"): neither is the time the scenario happens."""
+    return _RECORDED_CLOCK.sub(" ", _BOUNDED_CLOCK.sub(" ", said))
+
+
+#: A day, or "this", with its half said as "am" or "pm" ("Tues AM", "Friday pm", "this am").
+_DAY_HALF = re.compile(
+    r"\b(?:(?:mon|tue|wed|thu|fri|sat|sun)[a-z]*\.?|today|yesterday|tomorrow|this) (am|pm)\b(?! [0-9])"
+)
+#: The clock each half of the day is read at, as the lexicon reads "morning" and "afternoon".
+_HALF_CLOCK = {"am": "08:30", "pm": "15:30"}
+
+
+def day_halves(said: str) -> list[tuple[str, str]]:
+    """(words, clock) of a day said with its half and no hour ("Weds AM": the morning, "Friday pm":
+    the afternoon), as time words the reader reads beside the others; "Monday I am driving" has none."""
+    return [(m.group(0), _HALF_CLOCK[m.group(1)]) for m in _DAY_HALF.finditer(said)]
 
 
 def sky_over_surface(said: list[tuple[str, str]]) -> str | None:
