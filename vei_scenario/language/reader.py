@@ -1847,7 +1847,8 @@ def _read(text: str) -> Reading:
             # a vehicle moving across from a lane: into the ego's (what it does next, if said)
             rest = [b for b in a.behaviours if b[0] != "cross_in_front"]
             a.behaviours = rest or [("cut_in", *a.behaviours[0][1:])]
-    r.ego_route = ego_route(tokens) or r.ego_route  # (a turn in a clause whose subject is the ego)
+    r.ego_route = ego_route(tokens) or ego_route(scanned) or r.ego_route  # (a turn whose subject is the ego,
+    # as written or as the ego is named once it is known: "Taxi (our driver) entering ... to go right")
     for a in actors:  # the ego turning towards the side a rider goes straight on: the rider goes its way
         if (
             r.ego_route in ("left", "right")
