@@ -598,3 +598,36 @@ def test_a_speed_noted_after_a_road_user_it_introduces_is_its(text, ego, other):
 def test_a_speed_noted_after_a_road_user_the_ego_acts_on_is_not_its():
     ego_mps, others = _speeds("I overtook a cyclist, 60 km/h at the time.")
     assert others == [None] or others[0] != pytest.approx(60 * KPH)
+
+
+def _gaps(text: str) -> list[float | None]:
+    return [a.distance_m for a in read(text).actors]
+
+
+@pytest.mark.parametrize(
+    "text, gap",
+    [
+        ("A moped moved into our lane 8 m ahead. The smallest lateral gap recorded was about 0.4 m.", 8),
+        ("A cyclist swerved in front of the ego 12 m ahead; the lateral distance between them was 0.7 m.", 12),
+        ("A van cut in 10 m ahead of the ego. Its sideways offset at the nearest point is 0.3 m.", 10),
+    ],
+    ids=["lateral-gap-recorded-was", "lateral-distance-between-was", "sideways-offset-is"],
+)
+def test_a_distance_said_of_a_lateral_measure_through_a_copula_is_no_gap(text, gap):
+    assert _gaps(text) == [pytest.approx(gap)]
+
+
+@pytest.mark.parametrize(
+    "text, gap",
+    [
+        ("A van ahead of the ego braked hard. The gap to it was 10 m when it braked.", 10),
+        ("A cyclist rides ahead of the ego; the distance between them is 15 m.", 15),
+    ],
+    ids=["gap-was", "distance-is"],
+)
+def test_a_distance_said_of_a_gap_through_a_copula_is_the_gap(text, gap):
+    assert _gaps(text) == [pytest.approx(gap)]
+
+
+def test_a_minimum_gap_through_a_copula_stays_the_gap():
+    assert _gaps("A van cut in ahead of the ego and braked. The minimum gap to it was 3 m.") == [pytest.approx(3)]

@@ -263,7 +263,33 @@ def lateral(tokens: list[str], i: int, used: int) -> bool:
         if tokens[k] in LATERAL_HEADS:
             return True
     after = tokens[i + used : i + used + 2]
-    return bool(after) and after[0] in LATERAL_HEADS
+    return (bool(after) and after[0] in LATERAL_HEADS) or _subject_is_lateral(tokens, i)
+
+
+_COPULAS = frozenset({"is", "was", "are", "were", "'s"})
+#: The words of the lateral heads that say "across" themselves (not "minimum" or "closest", which a
+#: gap ahead can be too: "the minimum gap to the van was 3 m").
+_ACROSS = frozenset({"lateral", "laterally", "sideways", "offset"})
+#: How far back a copula's subject may reach ("the minimum lateral separation measured from the
+#: footage is 0.5 m").
+_SUBJECT_REACH = 8
+
+
+def _subject_is_lateral(tokens: list[str], i: int) -> bool:
+    """Whether the number at ``i`` is the complement of a copula whose subject, within its clause, is a
+    lateral measure ("the smallest lateral gap recorded was about 0.4 m", "its sideways offset is 0.3
+    m"): said across the road however many words the subject runs to."""
+    k = i - 1
+    while k >= 0 and tokens[k] in _LINKS and tokens[k] not in _COPULAS:
+        k -= 1
+    if k < 0 or tokens[k] not in _COPULAS:
+        return False
+    for m in range(k - 1, max(k - 1 - _SUBJECT_REACH, -1), -1):
+        if tokens[m] in _STOPS or tokens[m] in (",", ";", ":"):
+            return False
+        if tokens[m] in _ACROSS:
+            return True
+    return False
 
 
 def _skip_back(tokens: list[str], j: int) -> int:
