@@ -705,3 +705,65 @@ def test_a_day_with_its_half_said_is_that_half_of_the_day(text, lo, hi):
 )
 def test_am_as_a_verb_after_a_day_is_no_time(text):
     assert read(text).time is None
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A van turning left from Mill Road into Church Street cut across a cyclist going straight on.",
+        "I was turning right out of the supermarket car park onto the main road when a moped came from the left.",
+        "The ego is turning left off Harbour Way into Quay Street as a jogger starts across.",
+    ],
+    ids=["from-road-into-road", "out-of-car-park-onto-main-road", "off-way-into-street"],
+)
+def test_a_turn_from_one_road_into_another_is_at_a_junction(text):
+    assert read(text).map_kind == "crossroad"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I waited on the corner, then pulled away turning left, and a cyclist came up on my inside.",
+        "At the corner we turned right and a pedestrian was crossing the road we turned into.",
+    ],
+    ids=["pulled-away-turning-left", "at-the-corner-turned-right"],
+)
+def test_the_ego_turning_at_a_corner_turns_at_a_junction(text):
+    assert read(text).map_kind == "crossroad"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist came round the corner towards me on my side of the road.",
+        "On the bend by the corner shop a van came towards the ego on the wrong side.",
+    ],
+    ids=["round-the-corner", "bend-by-the-corner-shop"],
+)
+def test_a_corner_no_one_turns_at_stays_a_bend(text):
+    assert read(text).map_kind == "curve"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "On a country road with lots of turns a tractor crawls ahead of the ego.",
+        "The lane is full of twists and a van comes towards the ego on its side.",
+        "Driving a road with many turns at night, the ego meets a cyclist without lights.",
+    ],
+    ids=["lots-of-turns", "full-of-twists", "many-turns"],
+)
+def test_a_road_of_many_turns_is_a_bend(text):
+    assert read(text).map_kind == "curve"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Many turns later, on a straight road, a van cuts in front of the ego.",
+        "The cyclist takes turns with his friend riding ahead of the ego on a straight road.",
+    ],
+    ids=["many-turns-later", "takes-turns"],
+)
+def test_turns_that_are_not_the_roads_keep_it_straight(text):
+    assert read(text).map_kind == "straight"

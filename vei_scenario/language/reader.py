@@ -1863,6 +1863,7 @@ def _read(text: str) -> Reading:
         (r.map_kind in (None, "straight") and r.ego_route in ("left", "right"))
         or (r.map_kind in (None, "straight") and (any(a.arm for a in actors) or vehicles_giving_way or at_junction))
         or (r.map_kind in (None, "straight", "curve") and S.turns_into_a_road(text, said))
+        or (r.map_kind == "curve" and r.ego_route in ("left", "right") and S.bend_only_a_corner(said))
     ):
         r.map_kind = "crossroad"  # the ego turns, or someone comes out of or waits in a side road: a junction
     junction = r.map_kind in ("crossroad", "roundabout")
@@ -2011,6 +2012,8 @@ def _read(text: str) -> Reading:
     r.lanes = S.lanes_of_two_way_road(said, oncoming) or S.lanes_counted(said) or r.lanes
     r.lanes = max(r.lanes or 0, S.lanes_at_least(said) or 0) or r.lanes  # ("in lane 3": three at least)
     r.lanes = r.lanes or S.lanes_of_one_way_road(said)  # ("down the one-way street": one lane)
+    if r.map_kind in (None, "straight"):
+        r.map_kind = S.many_turns(said) or r.map_kind  # ("a small road with a lot of turns": a bend)
     said_as = [
         (m.slot, m.words, m.value)
         for _, ms in clauses

@@ -470,6 +470,29 @@ def lanes_of_one_way_road(said: str) -> int | None:
     return 1 if _ONE_WAY_ROAD.search(said) else None
 
 
+#: A road said to have many turns ("a road with lots of turns", "the lane is full of twists").
+_MANY_TURNS = re.compile(
+    r"\b(?:road|lane|street|route|stretch|section|way)\b[^.;!?]{0,25}?"
+    r"\b(?:a lot of|lots of|loads of|many|full of|plenty of) (?:sharp |tight |blind )?"
+    r"(?:turns|twists|bends|curves|corners)\b(?! later)"
+)
+
+
+def many_turns(said: str) -> str | None:
+    """``curve`` for a road said to have many turns, twists or bends (the road's own, after a road's
+    noun; not "many turns later"), else None."""
+    return "curve" if _MANY_TURNS.search(said) else None
+
+
+def bend_only_a_corner(said: str) -> bool:
+    """Whether the only word of a bend the normalised text says is "corner": a corner is where two
+    roads meet as often as where one bends, so the ego turning left or right there turns at a junction
+    ("I waited on the corner, then pulled away turning left"), while "the bend" stays a bend."""
+    words = set(said.split())
+    bends = {w for w in L.MAPS["curve"] if " " not in w}
+    return bool(words & {"corner", "corners"}) and not words & (bends - {"corner"})
+
+
 def lanes_of_two_way_road(said: str, oncoming: bool) -> int | None:
     """1 for "a two-lane highway" that traffic uses both ways (someone comes towards the ego on it, or
     the text says so), where the text does not count its lanes per direction itself."""
