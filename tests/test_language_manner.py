@@ -130,3 +130,60 @@ def test_a_manner_said_of_another_road_user_is_not_the_encounters(text):
 )  # fmt: skip
 def test_an_act_ending_right_at_the_ego_is_dangerous(text, cls):
     assert stated_manner(_tokens(text)) == cls
+
+
+def _class(text: str) -> str | None:
+    return stated_manner(_tokens(text))
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "The lorry merged into my lane, forcing me to brake hard.",
+        "A hatchback overtook and came back in, forced us onto the verge.",
+        "The bus pulled out from the stop and forces the ego into the next lane.",
+    ],
+    ids=["forcing-me-to", "forced-us-onto", "forces-the-ego-into"],
+)
+def test_forcing_the_ego_into_a_reaction_is_dangerous(text):
+    assert _class(text) == "dangerous"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A taxi cut in ahead of us with about 3 metres to spare.",
+        "The pickup slotted in front of me with maybe 8 feet to spare.",
+        "A moped pulled across with just 2 m to spare.",
+    ],
+    ids=["3-metres-to-spare", "8-feet-to-spare", "2-m-to-spare"],
+)
+def test_a_few_metres_to_spare_is_dangerous(text):
+    assert _class(text) == "dangerous"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A van pulled out of a side road and I had to stamp on the brakes.",
+        "A cyclist swerved out in front of me and I swerved hard to miss him.",
+        "The car ahead cut in; we braked sharply.",
+    ],
+    ids=["stamp-on-the-brakes", "swerved-hard", "braked-sharply"],
+)
+def test_the_egos_hard_evasion_makes_the_act_dangerous(text):
+    assert _class(text) == "dangerous"
+
+
+@pytest.mark.parametrize(
+    "text, cls",
+    [
+        ("A cyclist crossed ahead of the ego with 40 metres to spare.", None),
+        ("A van pulled out well ahead and I braked gently.", "safe"),
+        ("Cross-traffic forced its way through but a truck stopped in its lane.", None),
+        ("The van cut in a bit close, I braked hard.", "moderate"),
+    ],
+    ids=["40-metres-to-spare", "braked-gently", "forced-its-way-not-the-ego", "mild-closeness-wins"],
+)
+def test_a_wide_margin_a_mild_reaction_or_a_stated_closeness_is_not_made_dangerous(text, cls):
+    assert _class(text) == cls

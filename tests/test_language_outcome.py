@@ -744,3 +744,37 @@ def test_relief_at_luck_is_a_close_call(text, intent):
 )
 def test_two_road_users_coming_together_is_a_collision(text, intent):
     assert _intent(text) == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        (
+            "Notes of the crash investigation unit: a cyclist swerved out ahead of the ego, which braked. "
+            "Near miss, no contact.",
+            "near_miss",
+        ),
+        ("Accident response crew, 40 mph. A van pulled out in front of us; we braked and missed it.", "near_miss"),
+        (
+            "Collision statistics for the junction are poor. Today a moped cut in front of the ego, which "
+            "swerved; no contact.",
+            "near_miss",
+        ),
+    ],
+    ids=["crash-investigation", "accident-response", "collision-statistics"],
+)
+def test_a_contact_noun_that_modifies_another_noun_states_no_contact(text, intent):
+    assert stated_intent(" ".join(_tokens(text))) == intent
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A crash yesterday on the A3: a car pulled out in front of me.",
+        "The collision happened when a van pulled out in front of the ego.",
+        "There was an accident, cyclist against car, as the cyclist crossed in front of the ego.",
+    ],
+    ids=["crash-yesterday", "collision-happened", "accident-comma"],
+)
+def test_a_contact_noun_said_as_the_event_is_a_collision(text):
+    assert stated_intent(" ".join(_tokens(text))) == "collision"

@@ -565,3 +565,69 @@ def test_a_person_who_drives_keeps_a_drivers_speed(text, other, ego):
 )
 def test_a_speed_no_walker_reaches_is_still_the_egos(text, ego):
     assert _speeds(text)[0] == pytest.approx(ego * KPH)
+
+
+@pytest.mark.parametrize(
+    "text, ego, other",
+    [
+        ("The ego drives at 50 km/h. A lorry went past us doing 70 km/h and cut in.", 50, 70),
+        ("I was at 40 km/h when a motorbike overtook me going 90 km/h.", 40, 90),
+        ("We drove at 30 km/h; a taxi passed us doing 50 km/h, then pulled in ahead.", 30, 50),
+    ],
+    ids=["went-past-us-doing", "overtook-me-going", "passed-us-doing"],
+)
+def test_a_speed_after_the_object_of_a_pass_is_the_passers(text, ego, other):
+    ego_mps, others = _speeds(text)
+    assert ego_mps == pytest.approx(ego * KPH) and len(others) == 1 and others[0] == pytest.approx(other * KPH)
+
+
+@pytest.mark.parametrize(
+    "text, ego, other",
+    [
+        ("The ego drives at 50 km/h. Ahead is a cyclist, 15 km/h.", 50, 15),
+        ("Ego at 60 km/h. In front of the ego there is a tractor without lights, same lane, 25 km/h.", 60, 25),
+        ("The ego travels at 40 km/h; there is a jogger on the verge, same direction, 9 km/h.", 40, 9),
+    ],
+    ids=["ahead-is-a-cyclist", "there-is-a-tractor", "a-jogger-same-direction"],
+)
+def test_a_speed_noted_after_a_road_user_it_introduces_is_its(text, ego, other):
+    ego_mps, others = _speeds(text)
+    assert ego_mps == pytest.approx(ego * KPH) and len(others) == 1 and others[0] == pytest.approx(other * KPH)
+
+
+def test_a_speed_noted_after_a_road_user_the_ego_acts_on_is_not_its():
+    ego_mps, others = _speeds("I overtook a cyclist, 60 km/h at the time.")
+    assert others == [None] or others[0] != pytest.approx(60 * KPH)
+
+
+def _gaps(text: str) -> list[float | None]:
+    return [a.distance_m for a in read(text).actors]
+
+
+@pytest.mark.parametrize(
+    "text, gap",
+    [
+        ("A moped moved into our lane 8 m ahead. The smallest lateral gap recorded was about 0.4 m.", 8),
+        ("A cyclist swerved in front of the ego 12 m ahead; the lateral distance between them was 0.7 m.", 12),
+        ("A van cut in 10 m ahead of the ego. Its sideways offset at the nearest point is 0.3 m.", 10),
+    ],
+    ids=["lateral-gap-recorded-was", "lateral-distance-between-was", "sideways-offset-is"],
+)
+def test_a_distance_said_of_a_lateral_measure_through_a_copula_is_no_gap(text, gap):
+    assert _gaps(text) == [pytest.approx(gap)]
+
+
+@pytest.mark.parametrize(
+    "text, gap",
+    [
+        ("A van ahead of the ego braked hard. The gap to it was 10 m when it braked.", 10),
+        ("A cyclist rides ahead of the ego; the distance between them is 15 m.", 15),
+    ],
+    ids=["gap-was", "distance-is"],
+)
+def test_a_distance_said_of_a_gap_through_a_copula_is_the_gap(text, gap):
+    assert _gaps(text) == [pytest.approx(gap)]
+
+
+def test_a_minimum_gap_through_a_copula_stays_the_gap():
+    assert _gaps("A van cut in ahead of the ego and braked. The minimum gap to it was 3 m.") == [pytest.approx(3)]

@@ -137,3 +137,61 @@ MANOEUVRE_AND_EXIT = {
 @pytest.mark.parametrize("text, route", _cases(MANOEUVRE_AND_EXIT))
 def test_a_manoeuvre_an_exit_or_a_way_off_the_roundabout_is_the_ego_turn(text, route):
     assert ego_route(_tokens(text)) == route
+
+
+@pytest.mark.parametrize(
+    "text, route",
+    [
+        ("Run 12 ego turning left at the crossroads, a cyclist comes the other way.", "left"),
+        ("Event 3051 AV executing an unprotected right at a signalised junction; an oncoming moped.", "right"),
+        ("Log 7 VUT turns right at the T-junction as a pedestrian crosses.", "right"),
+    ],
+    ids=["run-12-ego", "event-av", "log-vut"],
+)
+def test_a_label_number_before_the_egos_name_leaves_the_turn_the_egos(text, route):
+    assert read(text).ego_route == route
+
+
+@pytest.mark.parametrize(
+    "text, route",
+    [
+        ("Shuttle bus (reporting vehicle) turning right at the lights when a cyclist crossed in front of it.", "right"),
+        ("Delivery van (our driver) turning left into a side road as a jogger stepped off the kerb.", "left"),
+    ],
+    ids=["reporting-vehicle", "our-driver"],
+)
+def test_a_turn_of_the_vehicle_a_report_names_as_its_own_is_the_egos(text, route):
+    assert read(text).ego_route == route
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Lane 3 car turns left in front of the ego at the junction.",
+        "At 4 the bus turns right across the ego's path.",
+    ],
+    ids=["lane-3-car", "at-4-bus"],
+)
+def test_a_number_before_another_road_user_keeps_its_turn_its_own(text):
+    assert read(text).ego_route in (None, "straight")
+
+
+@pytest.mark.parametrize(
+    "text, route",
+    [
+        ("We went left at 20 km/h into the side road when a jogger stepped out.", "left"),
+        ("I go right at about 30 km/h at the junction and a cyclist comes the other way.", "right"),
+        (
+            "Taxi entering the roundabout to go right at 15 mph. A moped already going round came from the left "
+            "and our driver braked.",
+            "right",
+        ),
+    ],
+    ids=["went-left-at-20", "go-right-at-about-30", "taxi-our-driver"],
+)
+def test_going_left_or_right_at_a_speed_is_a_turn(text, route):
+    assert read(text).ego_route == route
+
+
+def test_going_right_at_someone_is_no_turn():
+    assert read("I was cycling along when a van went right at me.").ego_route in (None, "straight")

@@ -575,3 +575,195 @@ def test_a_degree_of_traffic_with_words_of_which_traffic_between(text, density):
 def test_a_whole_hour_and_the_colloquial_parts_of_the_day(text, lo, hi):
     hour = int(read(text).time.split(":")[0])
     assert lo <= hour <= hi
+
+
+@pytest.mark.parametrize(
+    "text, lanes",
+    [
+        ("Eastbound on the bypass, 3 lanes, at 80 km/h. A coach shifted one lane to the left, next to us.", 3),
+        ("We were on a road with 4 lanes our way. A taxi on our right drifted over two lanes and stopped.", 4),
+        ("Northbound, 3 lanes in our direction. A lorry moved across one lane into the lane beside ours.", 3),
+        ("Two lanes each way. A van on my right changed one lane over, right in front of me.", 2),
+    ],
+    ids=["shifted-one-lane", "drifted-over-two", "moved-across-one", "changed-one-lane-over"],
+)
+def test_the_lanes_a_road_user_moves_across_are_not_the_roads_lanes(text, lanes):
+    assert read(text).lanes == lanes
+
+
+@pytest.mark.parametrize(
+    "text, lanes",
+    [
+        ("The street narrows to one lane and a van comes towards the ego.", 1),  # (the road's own lanes)
+        ("On a road with 3 lanes a van cuts in front of the ego.", 3),
+    ],
+    ids=["narrows-to-one", "road-with-three"],
+)
+def test_lanes_that_no_one_moves_across_are_the_roads_lanes(text, lanes):
+    assert read(text).lanes == lanes
+
+
+@pytest.mark.parametrize(
+    "text, lanes",
+    [
+        ("On a rural road with one traffic lane each way, a cyclist rides ahead of the ego.", 1),
+        ("The ego drives on an arterial, two running lanes per direction, when a van cuts in.", 2),
+        ("Three narrow lanes in each direction; a car from the left lane cuts in front of the ego.", 3),
+    ],
+    ids=["traffic-lane", "running-lanes", "narrow-lanes"],
+)
+def test_a_word_between_the_count_and_lane_keeps_the_count_per_direction(text, lanes):
+    assert read(text).lanes == lanes
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "The road has one cycle lane each side and a van cuts in front of the ego.",
+        "Two bus lanes each way, and a cyclist rides ahead of the ego.",
+    ],
+    ids=["cycle-lane", "bus-lanes"],
+)
+def test_lanes_beside_the_carriageway_are_not_its_traffic_lanes(text):
+    assert read(text).lanes is None
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist came the wrong way down the one-way street towards me.",
+        "On a one way road in town an e-scooter rides towards the ego against the flow.",
+        "Going along a one-way section of the high street, a jogger steps out ahead of the ego.",
+    ],
+    ids=["one-way-street", "one-way-road", "one-way-section"],
+)
+def test_a_one_way_street_with_no_lanes_counted_has_one_lane(text):
+    assert read(text).lanes == 1
+
+
+@pytest.mark.parametrize(
+    "text, lanes",
+    [
+        ("A one-way street with three lanes; a taxi cuts in front of the ego.", 3),
+        ("A cyclist rides one way and the ego drives the other on a road with two lanes.", 2),
+    ],
+    ids=["counted", "one-way-as-direction"],
+)
+def test_a_one_way_street_with_its_lanes_counted_or_one_way_as_a_direction(text, lanes):
+    assert read(text).lanes == lanes
+
+
+@pytest.mark.parametrize(
+    "text, lo, hi",
+    [
+        ("Report filed 17:45. At about 9 in the morning a cyclist pulled out in front of the ego.", 6, 11),
+        ("Logged at 23:10 by the desk: this afternoon a van cut in front of the ego.", 12, 17),
+        ("Ticket opened 08:02. The caller says a jogger stepped out in front of her car late at night.", 21, 29),
+        ("Statement written at 16:30. It was dawn when a deer ran out in front of the ego.", 5, 7),
+    ],
+    ids=["filed", "logged-at", "ticket-opened", "written-at"],
+)
+def test_the_time_a_record_was_made_is_not_the_events(text, lo, hi):
+    hour = int(read(text).time.split(":")[0])
+    assert lo <= hour <= hi or lo <= hour + 24 <= hi
+
+
+@pytest.mark.parametrize(
+    "text, clock",
+    [
+        ("Time: 08:05. A cyclist swerved in front of the ego.", "08:05"),
+        ("At 22:40 a van cut in front of the ego; the report was written the next day.", "22:40"),
+    ],
+    ids=["time-field", "event-clock"],
+)
+def test_the_events_own_clock_stays(text, clock):
+    assert read(text).time == clock
+
+
+@pytest.mark.parametrize(
+    "text, lo, hi",
+    [
+        ("Weds AM, light rain. A cyclist crosses in front of the ego.", 6, 11),
+        ("Friday pm: a van pulls out of a side road in front of the ego.", 12, 17),
+        ("Sat am, dry. The ego passes a jogger on the verge.", 6, 11),
+        ("Coming home this aft a moped cut in front of me.", 12, 17),
+    ],
+    ids=["weds-am", "friday-pm", "sat-am", "this-aft"],
+)
+def test_a_day_with_its_half_said_is_that_half_of_the_day(text, lo, hi):
+    hour = int(read(text).time.split(":")[0])
+    assert lo <= hour <= hi
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "On Monday I am driving at 30 mph when a cyclist crosses in front of me.",
+        "Today I am at the wheel and a van pulls out in front of me.",
+    ],
+    ids=["monday-i-am", "today-i-am"],
+)
+def test_am_as_a_verb_after_a_day_is_no_time(text):
+    assert read(text).time is None
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A van turning left from Mill Road into Church Street cut across a cyclist going straight on.",
+        "I was turning right out of the supermarket car park onto the main road when a moped came from the left.",
+        "The ego is turning left off Harbour Way into Quay Street as a jogger starts across.",
+    ],
+    ids=["from-road-into-road", "out-of-car-park-onto-main-road", "off-way-into-street"],
+)
+def test_a_turn_from_one_road_into_another_is_at_a_junction(text):
+    assert read(text).map_kind == "crossroad"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I waited on the corner, then pulled away turning left, and a cyclist came up on my inside.",
+        "At the corner we turned right and a pedestrian was crossing the road we turned into.",
+    ],
+    ids=["pulled-away-turning-left", "at-the-corner-turned-right"],
+)
+def test_the_ego_turning_at_a_corner_turns_at_a_junction(text):
+    assert read(text).map_kind == "crossroad"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist came round the corner towards me on my side of the road.",
+        "On the bend by the corner shop a van came towards the ego on the wrong side.",
+    ],
+    ids=["round-the-corner", "bend-by-the-corner-shop"],
+)
+def test_a_corner_no_one_turns_at_stays_a_bend(text):
+    assert read(text).map_kind == "curve"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "On a country road with lots of turns a tractor crawls ahead of the ego.",
+        "The lane is full of twists and a van comes towards the ego on its side.",
+        "Driving a road with many turns at night, the ego meets a cyclist without lights.",
+    ],
+    ids=["lots-of-turns", "full-of-twists", "many-turns"],
+)
+def test_a_road_of_many_turns_is_a_bend(text):
+    assert read(text).map_kind == "curve"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Many turns later, on a straight road, a van cuts in front of the ego.",
+        "The cyclist takes turns with his friend riding ahead of the ego on a straight road.",
+    ],
+    ids=["many-turns-later", "takes-turns"],
+)
+def test_turns_that_are_not_the_roads_keep_it_straight(text):
+    assert read(text).map_kind == "straight"

@@ -1225,7 +1225,7 @@ TIMES = {
     "08:30": ("morning",),
     "12:00": ("noon", "midday", "lunchtime"),
     "13:00": ("daylight", "daytime", "broad daylight", "during the day", "by day"),
-    "15:30": ("afternoon", "after lunch", "arvo"),  # ("this arvo": the afternoon, in Australian English)
+    "15:30": ("afternoon", "after lunch", "arvo", "this aft"),  # ("this arvo": the afternoon, in Australian English)
     "19:30": (
         "dusk",
         "sunset",

@@ -140,6 +140,42 @@ def _noun_only(word: str) -> bool:
     return bool(found) and "VERB" not in found and word not in ("out", "in", "back", "over", "off", "round")
 
 
+#: Verbs of forcing: a road user that forces the ego into a reaction leaves it no choice.
+_FORCING = frozenset(("force", "forces", "forced", "forcing"))
+#: What a forced ego is forced into: a verb ("forcing me to brake") or a place ("forced us onto the verge").
+_FORCED_INTO = frozenset(("to", "into", "onto", "off", "out", "across", "over", "up"))
+#: Metre units (the reader gives feet and car lengths in metres) and the most left to spare that is a
+#: dangerous margin: under a car's length and a half at any speed worth telling.
+_METRES = frozenset(("m", "metre", "metres", "meter", "meters"))
+_SMALL_SPARE_M = 5.0
+
+
+def _forced_ego(words: list[str], i: int) -> bool:
+    """ "forcing me to brake", "forced us onto the verge", "forces the ego into the next lane": the
+    ego, as the object of a verb of forcing, made to react; not "forced its way through"."""
+    if words[i] not in _FORCING:
+        return False
+    obj = words[i + 1 : i + 4]
+    if obj[:1] and obj[0] in _EGO:
+        return obj[1:2] != [] and obj[1] in _FORCED_INTO
+    return obj[:2] == ["the", "ego"] and obj[2:3] != [] and obj[2] in _FORCED_INTO
+
+
+def _small_spare(words: list[str], i: int) -> bool:
+    """ "with about 3 metres to spare", "with 2 m to spare": a distance left to spare of a few metres
+    (the number at ``i``); "with 40 metres to spare" is a wide margin."""
+    try:
+        value = float(words[i])
+    except ValueError:
+        return False
+    return (
+        words[i + 1 : i + 2] != []
+        and words[i + 1] in _METRES
+        and words[i + 2 : i + 4] == ["to", "spare"]
+        and (value <= _SMALL_SPARE_M)
+    )
+
+
 def _labelled(tokens: list[str]) -> str | None:
     """A level under a label: "Crit: high", "criticality low", "severity: medium"."""
     for i, w in enumerate(tokens):
@@ -172,6 +208,9 @@ def manner_cues(tokens: list[str]) -> list[str]:
             if _at_the_ego(words, i):
                 cues.append(DANGEROUS)  # ("cut straight in front of us", "across our bonnet")
                 continue
+            if _forced_ego(words, i) or _small_spare(words, i):
+                cues.append(DANGEROUS)  # ("forcing me to brake", "with 2 m to spare")
+                continue
             margin = _margin(words, i)
             if margin is not None:
                 cues.append(margin)
@@ -188,6 +227,8 @@ def stated_manner(tokens: list[str]) -> str | None:
     if label is not None:
         return label
     cues = [c for c in manner_cues(tokens) if c != "position"]
+    if not cues and _ego_evaded(tokens):
+        return DANGEROUS  # (nothing said on the scales, but the ego had to brake hard or swerve)
     kinds = set(cues)
     if "denied" in kinds:
         rest = kinds - {"denied"}
@@ -197,6 +238,15 @@ def stated_manner(tokens: list[str]) -> str | None:
             return MODERATE
         return None
     return kinds.pop() if len(kinds) == 1 else None
+
+
+def _ego_evaded(tokens: list[str]) -> bool:
+    """Whether the text says the ego evaded ("I had to stamp on the brakes", "we braked sharply", "I
+    swerved hard"), as the outcome reader reads it: an act that leaves the ego only an emergency
+    reaction is a dangerous one, where no scale says how close it came."""
+    from vei_scenario.language.outcome import outcome_cues
+
+    return any(c.kind == "evade" for c in outcome_cues(" ".join(tokens)))
 
 
 def apply_manner(cls: str | None, specs: list) -> None:

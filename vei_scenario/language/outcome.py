@@ -238,6 +238,15 @@ def _meets_road_user(after: list[str]) -> bool:
     return True
 
 
+def _modifies_a_noun(nxt: str) -> bool:
+    """Whether a contact noun before ``nxt`` is the first noun of a compound ("response" in "RTC
+    response", "statistics", "investigation"): ``nxt`` is only ever a noun, and not a road user's, so
+    the compound names a job, a record or a kind of thing, not a contact that happened ("a crash
+    yesterday", "a collision happened", "collision cyclist vs car" stay contacts)."""
+    found = _pos(nxt)
+    return set(found) == {"NOUN"} and not _road_user_word(nxt) and nxt not in _PERSON_OBJECTS
+
+
 def _is_contact(words: list[str], i: int) -> bool:
     """Whether the word at ``i`` states a contact between road users."""
     w = words[i]
@@ -246,6 +255,8 @@ def _is_contact(words: list[str], i: int) -> bool:
     if w in _CONTACT_NOUNS or (w.endswith("s") and w[:-1] in _CONTACT_NOUNS):
         if nxt in _COMPOUND_HEADS or prev in ("time-to", "eye") or w.startswith("time-to"):
             return False
+        if _modifies_a_noun(nxt):
+            return False  # ("an RTC response", "the crash investigation unit": a kind of job, not the event)
         if prev == "to" and i > 1 and words[i - 2] == "time":
             return False
         if prev in ("near", "near-"):

@@ -311,7 +311,33 @@ def lateral(tokens: list[str], i: int, used: int) -> bool:
         if tokens[k] in LATERAL_HEADS:
             return True
     after = tokens[i + used : i + used + 2]
-    return bool(after) and after[0] in LATERAL_HEADS
+    return (bool(after) and after[0] in LATERAL_HEADS) or _subject_is_lateral(tokens, i)
+
+
+_COPULAS = frozenset({"is", "was", "are", "were", "'s"})
+#: The words of the lateral heads that say "across" themselves (not "minimum" or "closest", which a
+#: gap ahead can be too: "the minimum gap to the van was 3 m").
+_ACROSS = frozenset({"lateral", "laterally", "sideways", "offset"})
+#: How far back a copula's subject may reach ("the minimum lateral separation measured from the
+#: footage is 0.5 m").
+_SUBJECT_REACH = 8
+
+
+def _subject_is_lateral(tokens: list[str], i: int) -> bool:
+    """Whether the number at ``i`` is the complement of a copula whose subject, within its clause, is a
+    lateral measure ("the smallest lateral gap recorded was about 0.4 m", "its sideways offset is 0.3
+    m"): said across the road however many words the subject runs to."""
+    k = i - 1
+    while k >= 0 and tokens[k] in _LINKS and tokens[k] not in _COPULAS:
+        k -= 1
+    if k < 0 or tokens[k] not in _COPULAS:
+        return False
+    for m in range(k - 1, max(k - 1 - _SUBJECT_REACH, -1), -1):
+        if tokens[m] in _STOPS or tokens[m] in (",", ";", ":"):
+            return False
+        if tokens[m] in _ACROSS:
+            return True
+    return False
 
 
 def _skip_back(tokens: list[str], j: int) -> int:
@@ -362,6 +388,9 @@ def owners(
         return (subject,)  # "with us coming at 80 km/h": the subject of a participle after "with"
     if tokens[j] in _MOTION and j and tokens[j - 1] == "both":  # "... are both doing 50 km/h"
         j -= 1
+    elif tokens[j] in _MOTION and unit and tokens[j - 1] in _OBJECT_PRONOUNS:
+        passer = _subject_before(tokens, j - 2, mention_ending_at)  # ("a lorry went past us doing 70 km/h")
+        return (passer,) if passer is not None else ()
     elif tokens[j] in _MOTION and unit and tokens[j - 1] not in _OBJECT_PRONOUNS:
         # "the ego drives at 40 km/h", "a tractor doing 15 mph": its subject's ("overtakes me doing 18 mph": not mine)
         k = j - 1
@@ -382,7 +411,46 @@ def owners(
             others = [s for s in named if s not in egos]
             first, second = (egos[0], others[-1]) if egos and others else (None, -1)
         return (first, second) if first is not None and first >= 0 and first != second else ()
+    if unit and tokens[j] == "," and (noted := _noted_after(tokens, j, mention_ending_at)) is not None:
+        return (noted,)
     return _key_of_line(tokens, i, mention_ending_at)
+
+
+def _subject_before(tokens: list[str], k: int, mention_ending_at: Mentions) -> int | None:
+    """The start of the nearest mention ending at or before ``k`` within its clause: the subject of a
+    verb that has an object pronoun ("a motorbike overtook me going 90": the motorbike; a participle
+    after an object says what its clause's subject does, as "while I was doing 50" would say the
+    narrator's)."""
+    while k >= 0 and tokens[k] not in _CLAUSE_OPENERS:
+        start = mention_ending_at(k)
+        if start is not None:
+            return start
+        k -= 1
+    return None
+
+
+#: Words before a road user that introduce it as the subject or the thing that is there ("ahead is a
+#: cyclist", "there is a tractor", "; a jogger").
+_INTRODUCING = frozenset({"is", "are", "was", "were", ",", ";", ":", ".", "and"})
+#: How many words a note may run between the road user it follows and its speed.
+_NOTE_REACH = 8
+
+
+def _noted_after(tokens: list[str], comma: int, mention_ending_at: Mentions) -> int | None:
+    """The road user a speed noted after a comma is said of ("Ahead is a cyclist, same direction, 15
+    km/h"): the one road user named before it in its sentence, within a few words of notes, when that
+    road user is introduced (after "is", "there is", a clause break), not the object of someone's verb
+    ("I overtook a cyclist, 60 km/h at the time": the narrator's speed)."""
+    k = comma - 1
+    while k >= 0 and comma - k <= _NOTE_REACH and tokens[k] not in _STOPS and tokens[k] not in (";", ":"):
+        start = mention_ending_at(k)
+        if start is not None:
+            b = start - 1
+            while b >= 0 and (tokens[b] in _DETERMINERS or tokens[b] == "one"):
+                b -= 1
+            return start if b < 0 or tokens[b] in _INTRODUCING else None
+        k -= 1
+    return None
 
 
 #: What only someone at the wheel does: a person said to do one of these ("some lunatic overtook us") is a driver.

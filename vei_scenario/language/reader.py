@@ -608,7 +608,8 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             clauses[-1][1].append(_Mention("punct", tok, tok, i, prev))
             i += 1
             continue
-        if re.fullmatch(r"\d+(?:\.\d+)?", tok) and not sides.lanes_away(tokens, i):  # (not "2 lanes to our left")
+        if re.fullmatch(r"\d+(?:\.\d+)?", tok) and not (sides.lanes_away(tokens, i) or S.lanes_moved(tokens, i)):
+            # (not "2 lanes to our left", "moved over 1 lane": a place or a move, not the road's lanes)
             kind, value, used = _number(tokens, i, imperial)
             words = " ".join(tokens[i : i + used])
             if kind in ("speed", "distance", "speed_range") and Q.lateral(tokens, i, used):
@@ -1762,8 +1763,12 @@ def _read(text: str) -> Reading:
                 elif too_fast and r.ego_speed_mps is None:
                     # "a dog ran out in front of the car at 50 km/h": no walker goes that fast; the ego does
                     r.ego_speed_mps = m.value
-                elif who is None and m.slot == "speed" and not actors and r.ego_speed_mps is None and opened.get(
-                    m.start, True
+                elif (
+                    who is None
+                    and m.slot == "speed"
+                    and not actors
+                    and r.ego_speed_mps is None
+                    and opened.get(m.start, True)
                 ):
                     r.ego_speed_mps = m.value  # "Motorway at 110 km/h, a lorry ...": before anyone, the ego's
                 elif who is None:
@@ -1897,7 +1902,8 @@ def _read(text: str) -> Reading:
             # a vehicle moving across from a lane: into the ego's (what it does next, if said)
             rest = [b for b in a.behaviours if b[0] != "cross_in_front"]
             a.behaviours = rest or [("cut_in", *a.behaviours[0][1:])]
-    r.ego_route = ego_route(tokens) or r.ego_route  # (a turn in a clause whose subject is the ego)
+    r.ego_route = ego_route(tokens) or ego_route(scanned) or r.ego_route  # (a turn whose subject is the ego,
+    # as written or as the ego is named once it is known: "Taxi (our driver) entering ... to go right")
     for a in actors:  # the ego turning towards the side a rider goes straight on: the rider goes its way
         if (
             r.ego_route in ("left", "right")
@@ -1912,6 +1918,7 @@ def _read(text: str) -> Reading:
         (r.map_kind in (None, "straight") and r.ego_route in ("left", "right"))
         or (r.map_kind in (None, "straight") and (any(a.arm for a in actors) or vehicles_giving_way or at_junction))
         or (r.map_kind in (None, "straight", "curve") and S.turns_into_a_road(text, said))
+        or (r.map_kind == "curve" and r.ego_route in ("left", "right") and S.bend_only_a_corner(said))
     ):
         r.map_kind = "crossroad"  # the ego turns, or someone comes out of or waits in a side road: a junction
     junction = r.map_kind in ("crossroad", "roundabout")
@@ -2073,12 +2080,15 @@ def _read(text: str) -> Reading:
     oncoming = any(s.relation == "oncoming" or any(b[0] == "wrong_way" for b in s.behaviours) for s in r.actors)
     r.lanes = S.lanes_of_two_way_road(said, oncoming) or S.lanes_counted(said) or r.lanes
     r.lanes = max(r.lanes or 0, S.lanes_at_least(said) or 0) or r.lanes  # ("in lane 3": three at least)
+    r.lanes = r.lanes or S.lanes_of_one_way_road(said)  # ("down the one-way street": one lane)
+    if r.map_kind in (None, "straight"):
+        r.map_kind = S.many_turns(said) or r.map_kind  # ("a small road with a lot of turns": a bend)
     said_as = [
         (m.slot, m.words, m.value)
         for _, ms in clauses
         for m in ms
         if m.slot == "weather" or (m.slot == "time" and m.prev not in S.BOUNDS)  # (not "since midnight")
-    ]
+    ] + [("time", words, clock) for words, clock in S.day_halves(said)]  # ("Tues AM": the morning)
     clock = S.dotted_clock(S.without_bounds(said)) or stated_clock(S.without_bounds(said))
     clock = S.twelve_hour(clock, S.without_bounds(said), [v for k, w, v in said_as if k == "time"]) or S.clock_in_words(
         S.without_bounds(said), [v for k, w, v in said_as if k == "time"]

@@ -146,8 +146,10 @@ def _adjective(word: str) -> bool:
 
 def _place_after(words: list[str]) -> bool:
     """Whether ``words`` (after "right at") name a place of the road ("the lights", "the next
-    junction"), not a road user or a person ("me", "the car")."""
-    head = words[1:] if words[:1] and words[0] in ("the", "a", "an") else words
+    junction") or a number (a speed, a time), not a road user or a person ("me", "the car")."""
+    head = words[1:] if words[:1] and words[0] in ("the", "a", "an", "about", "around", "roughly") else words
+    if head[:1] and head[0].replace(".", "", 1).isdigit():
+        return True  # ("go right at 15 mph", "went right at about 30": a speed or a time, no one aimed at)
     return bool(head) and head[0] in _TURN_PLACES
 
 
@@ -197,8 +199,8 @@ def _names_ego(phrase: list[str]) -> bool:
         return False
     if phrase[-1] in ("i", "we"):
         return True
-    if phrase[-1] in _EGO_HEADS:
-        return len(phrase) == 1 or phrase[-2] in ("the", "our", "my", "and")
+    if phrase[-1] in _EGO_HEADS:  # (after a report's label and number: "Disengagement #4471 - AV executing")
+        return len(phrase) == 1 or phrase[-2] in ("the", "our", "my", "and") or phrase[-2].isdigit()
     if any(tuple(phrase[-len(p) :]) == p for p in _EGO_PHRASES):
         return True
     return _opens_with_ego(phrase) and not _PREPOSITIONS & set(phrase)

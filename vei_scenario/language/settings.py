@@ -16,6 +16,7 @@ import re
 from collections.abc import Callable
 
 from vei_scenario.language import lexicon as L
+from vei_scenario.language.lemmas import lemmas
 
 #: Time words that tell the light or the traffic, not the hour: a part of the day said with them wins.
 TIME_HINTS = frozenset(
@@ -232,9 +233,33 @@ BOUNDS = frozenset({"since", "until", "till"})
 _BOUNDED_CLOCK = re.compile(r"\b(?:since|until|till) (?:about |around )?\d[\d.: ]*(?:am|pm|hrs|hours)?")
 
 
+#: A clock after a verb of making a record ("call logged 14:10", "report written at 17:45", "ticket
+#: opened 08:02"): when the record was made, not when what it tells of happened.
+_RECORDED_CLOCK = re.compile(
+    r"\b(?:logged|filed|recorded|received|written|submitted|entered|updated|printed|created|opened|closed|raised)"
+    r"(?: at| on)? (?:about |around |approx |approximately )?"
+    r"(?:\d{1,2} ?[:.] ?\d\d(?: ?(?:am|pm|hrs|hours|h)\b)?|\d{3,4} ?(?:hrs|hours|h)\b|\d{1,2} ?(?:am|pm)\b)"
+)
+
+
 def without_bounds(said: str) -> str:
-    """The normalised text without the clocks that bound something else ("since 5 am")."""
-    return _BOUNDED_CLOCK.sub(" ", said)
+    """The normalised text without the clocks that bound something else ("since 5 am") or that say
+    when a record of it was made ("call logged 14:10"): neither is the time the scenario happens."""
+    return _RECORDED_CLOCK.sub(" ", _BOUNDED_CLOCK.sub(" ", said))
+
+
+#: A day, or "this", with its half said as "am" or "pm" ("Tues AM", "Friday pm", "this am").
+_DAY_HALF = re.compile(
+    r"\b(?:(?:mon|tue|wed|thu|fri|sat|sun)[a-z]*\.?|today|yesterday|tomorrow|this) (am|pm)\b(?! [0-9])"
+)
+#: The clock each half of the day is read at, as the lexicon reads "morning" and "afternoon".
+_HALF_CLOCK = {"am": "08:30", "pm": "15:30"}
+
+
+def day_halves(said: str) -> list[tuple[str, str]]:
+    """(words, clock) of a day said with its half and no hour ("Weds AM": the morning, "Friday pm":
+    the afternoon), as time words the reader reads beside the others; "Monday I am driving" has none."""
+    return [(m.group(0), _HALF_CLOCK[m.group(1)]) for m in _DAY_HALF.finditer(said)]
 
 
 def sky_over_surface(said: list[tuple[str, str]]) -> str | None:
@@ -402,6 +427,70 @@ def lanes_counted(said: str) -> int | None:
         return None
     n = int(word) if word.isdigit() else _WORD[word]
     return n if 1 <= n <= 6 else None
+
+
+#: Verbs of moving sideways, whose count of lanes is how far a road user moves ("shifted one lane").
+_SIDEWAYS = frozenset(("move", "shift", "drift", "change", "switch", "swerve", "veer", "slide", "step", "jump", "hop",
+                       "pull", "cut", "weave", "edge", "come", "go"))  # fmt: skip
+#: Words after "over" that end a place said as lanes away ("a van one lane over, braking").
+_AFTER_PLACE = frozenset((".", ",", ";", "!", "?", "to", "from", "on", "and", "but", "then", "when", "as", "in"))
+
+
+def lanes_moved(tokens: list[str], i: int) -> bool:
+    """Whether a count of lanes at token ``i`` ("one lane", "two lanes") is how far a road user moves
+    or how far over it is, not the lanes of the road: the object of a verb of moving sideways or of
+    "over"/"across"/"by" after one ("moved over one lane", "drifted across two lanes", "shifted one lane
+    to the left"), or a place "N lanes over". Why: the last count of lanes said sets the road's, and a
+    move of one lane would otherwise leave a three-lane road with one."""
+    if tokens[i + 1 : i + 2] not in (["lane"], ["lanes"]):
+        return False
+    after = tokens[i + 2 : i + 4]
+    if after[:1] == ["over"] and (len(after) < 2 or after[1] in _AFTER_PLACE):
+        return True  # ("a van one lane over", "changed one lane over, right in front")
+    j = i - 1
+    if j >= 0 and tokens[j] in ("over", "across", "by"):
+        j -= 1
+    if j < 0:
+        return False
+    found = lemmas(tokens[j])
+    return "VERB" in found and bool(set(found["VERB"]) & _SIDEWAYS)
+
+
+#: A road that traffic uses one way ("a one-way street", "the one-way bit of Castle Street"); not a
+#: one-way system, a city's ring of such roads, which often has several lanes.
+_ONE_WAY_ROAD = re.compile(
+    r"\bone[ -]way (?:[a-z]+ )?(?:street|road|lane|bit|section|stretch|part|side street|alley)\b"
+)
+
+
+def lanes_of_one_way_road(said: str) -> int | None:
+    """1 for a one-way road whose lanes the text does not count (the caller asks only then): the
+    whole width of such a street is mostly one lane, and a road user met there comes the wrong way
+    in the ego's lane, not in an oncoming lane beside it."""
+    return 1 if _ONE_WAY_ROAD.search(said) else None
+
+
+#: A road said to have many turns ("a road with lots of turns", "the lane is full of twists").
+_MANY_TURNS = re.compile(
+    r"\b(?:road|lane|street|route|stretch|section|way)\b[^.;!?]{0,25}?"
+    r"\b(?:a lot of|lots of|loads of|many|full of|plenty of) (?:sharp |tight |blind )?"
+    r"(?:turns|twists|bends|curves|corners)\b(?! later)"
+)
+
+
+def many_turns(said: str) -> str | None:
+    """``curve`` for a road said to have many turns, twists or bends (the road's own, after a road's
+    noun; not "many turns later"), else None."""
+    return "curve" if _MANY_TURNS.search(said) else None
+
+
+def bend_only_a_corner(said: str) -> bool:
+    """Whether the only word of a bend the normalised text says is "corner": a corner is where two
+    roads meet as often as where one bends, so the ego turning left or right there turns at a junction
+    ("I waited on the corner, then pulled away turning left"), while "the bend" stays a bend."""
+    words = set(said.split())
+    bends = {w for w in L.MAPS["curve"] if " " not in w}
+    return bool(words & {"corner", "corners"}) and not words & (bends - {"corner"})
 
 
 def lanes_of_two_way_road(said: str, oncoming: bool) -> int | None:

@@ -14,8 +14,12 @@ __all__ = ["stated_outcome", "stated_lanes", "stated_clock", "stated_heavy_rain"
 
 _WORD_NUMBERS = {"one": 1, "two": 2, "three": 3, "four": 4, "1": 1, "2": 2, "3": 3, "4": 4}
 _N = r"(one|two|three|four|[1-4])"
+#: One word may stand between a count and its lanes ("one traffic lane each way", "two narrow lanes per
+#: direction"), unless it makes them lanes beside the carriageway (a cycle lane, a bus lane, parking).
+_LANE_MODIFIER = r"(?: (?!cycle |bike |bus |parking |tram )[a-z]+(?= lanes?\b))?"
 _EACH_WAY = re.compile(
-    _N + r"(?:[ -]lanes?)? (?:each way|in each direction|per direction|each direction|in both directions|for each side|"
+    rf"{_N}(?:{_LANE_MODIFIER}[ -]lanes?)? "
+    r"(?:each way|in each direction|per direction|each direction|in both directions|for each side|"
     r"on each side|each side|per side|a side|either way|in either direction|for each direction|in every direction)"
 )
 _OF_N = re.compile(
