@@ -1133,4 +1133,9 @@ def _frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str])
     tokens = _role(tokens, kind_at)
     if names_ego(tokens, kind_at, known):
         return _ego_drives(tokens, kind_at, known, dropped)
-    return _struck(tokens, kind_at, known, dropped)
+    tokens = _struck(tokens, kind_at, known, dropped)
+    if names_ego(tokens, kind_at, known):
+        return tokens
+    from vei_scenario.language import protagonist
+
+    return protagonist.frame(tokens, kind_at, known, dropped)  # (the vehicle a report is about)
