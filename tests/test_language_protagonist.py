@@ -66,6 +66,7 @@ def test_the_vehicle_a_third_person_report_is_about_is_the_ego(text, kinds, kph)
         "A van and a car collided at the junction.",  # (neither is told about)
         "The car in front pulls out round a broken-down lorry, 60 km/h.",  # (placed; the speed is the ego's)
         "Two buses doing 30 mph met a cyclist who braked.",  # (many, not one)
+        "The tram halts at its platform and a boy runs out in front of it.",  # (its own stop, no reaction)
     ],
 )
 def test_a_vehicle_no_report_is_about_stays_a_road_user(text):
@@ -80,3 +81,39 @@ def test_a_parked_vehicle_is_never_the_ego():
     )
     assert _ego_kph(text) == 48.3
     assert "truck" not in _kinds(text)
+
+
+@pytest.mark.parametrize(
+    ("text", "kinds", "kph"),
+    [
+        (
+            "The caller, who was the back-seat passenger in the silver minibus, states that the minibus was doing "
+            "40 mph when a cyclist swerved into its path. The minibus driver braked.",
+            ["bicycle"],
+            64.4,
+        ),
+        (
+            "Sam, driving a blue tipper lorry, says the lorry was at 25 mph when a jogger stepped out. The "
+            "lorry driver stopped.",
+            ["pedestrian"],
+            40.2,
+        ),
+        (
+            "The witness, who was the rear passenger in the black cab, states that the cab was going at 20 mph "
+            "when a man on a moped pulled out in front of the cab driver.",
+            ["car"],
+            32.2,
+        ),
+    ],
+)
+def test_the_vehicle_a_person_is_in_stays_the_ego_when_said_again(text, kinds, kph):
+    assert _kinds(text) == kinds
+    assert _ego_kph(text) == kph
+
+
+def test_another_vehicle_and_its_driver_stay_a_road_user():
+    text = (
+        "The caller, who was the back-seat passenger in the silver minibus, states that a lorry overtook the "
+        "minibus at 50 mph. The lorry driver waved."
+    )
+    assert _kinds(text) == ["truck"]

@@ -402,6 +402,12 @@ def _at_the_wheel(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
                 continue
             said.append(out[i])
             i += 1
+        if found[0] in VEHICLES:  # ("passenger in the blue Transit van ... the van (driver) braked")
+            noun = tokens[cut[1] - 1]
+            said = _as_ego(said, kind_at, known, noun, dropped)
+            for i in range(len(said) - 3, -1, -1):
+                if said[i : i + 3] == ["the", noun, "driver"]:
+                    said[i : i + 3] = ["the", "ego"]
         owner = tokens[k + 1] if k + 1 < len(tokens) and tokens[k + 1] in PRONOUNS_OF else None
         owner = owner or _owner_by_pronouns(said)
         return _pronouns_as_ego(said, owner, kind_at, known) if owner else said

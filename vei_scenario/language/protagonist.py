@@ -101,28 +101,32 @@ def _has_speed(tokens: list[str], p, nxt: int) -> bool:
     )
 
 
-def _reacts(tokens: list[str], p, first: bool = False) -> bool:
+def _reacts(tokens: list[str], p, others: list[int], first: bool = False) -> bool:
     """The mention is the subject of a verb of reacting, past auxiliaries, adverbs and an aside; or,
     ``first`` in its sentence, of one its sentence joins on with "and"/"but" ("a bus entering the
-    roundabout failed to see a cyclist and braked hard")."""
+    roundabout failed to see a cyclist and braked hard"). A reaction is to someone: another road
+    user (starting at one of ``others``) is named before the verb ("The bus stops at a stop and a
+    pedestrian walks out" is the bus's own stop, no reaction)."""
+    at = []
     if first:
         end = _sentence_end(tokens, p.end)
-        if any(tokens[k] in ("and", "but") and _verb_of_reacting(tokens, k + 1) for k in range(p.end, end)):
-            return True
-    return _verb_of_reacting(tokens, _past_aside(tokens, p.end))
+        at = [v for k in range(p.end, end) if tokens[k] in ("and", "but") and (v := _verb_of_reacting(tokens, k + 1))]
+    if v := _verb_of_reacting(tokens, _past_aside(tokens, p.end)):
+        at.append(v)
+    return any(o < v for v in at for o in others)
 
 
-def _verb_of_reacting(tokens: list[str], k: int) -> bool:
-    """Whether a verb of reacting stands at ``k``, past auxiliaries and adverbs."""
+def _verb_of_reacting(tokens: list[str], k: int) -> int:
+    """Where a verb of reacting stands at ``k``, past auxiliaries and adverbs, else 0."""
     for _ in range(4):
         if k >= len(tokens):
-            return False
+            return 0
         w = tokens[k]
         if w in BEFORE_VERB or (w.endswith("ly") and "ADV" in lemmas(w)):
             k += 1
             continue
-        return "VERB" in lemmas(w) and any(x in REACTING for x in lemmas(w)["VERB"])
-    return False
+        return k if "VERB" in lemmas(w) and any(x in REACTING for x in lemmas(w)["VERB"]) else 0
+    return 0
 
 
 def _placed_by(tokens: list[str], p) -> bool:
@@ -184,7 +188,10 @@ def _referents(tokens: list[str], users, vehicles: frozenset[str]) -> tuple[list
     return out, driver
 
 
-def _evidence(tokens: list[str], users, r: _Referent) -> None:
+def _evidence(tokens: list[str], users, r: _Referent, referents: list[_Referent]) -> None:
+    """What the text says of ``r``: its speed, its reaction to another of ``referents``, whether
+    another road user is placed by it."""
+    others = [q.start for o in referents if o is not r for q in o.mentions]
     for p in r.mentions:
         nxt = next((q.start for q in users if q.start >= p.end), len(tokens))
         of = p.start >= 2 and tokens[p.start - 1] == "of" and tokens[p.start - 2] == "driver"
@@ -192,7 +199,7 @@ def _evidence(tokens: list[str], users, r: _Referent) -> None:
         s = p.start
         while s > 0 and tokens[s - 1] not in (".", ";", "!", "?"):
             s -= 1
-        r.reacts |= _reacts(tokens, p, first=not any(s <= q.start < p.start for q in users))
+        r.reacts |= _reacts(tokens, p, others, first=not any(s <= q.start < p.start for q in users))
         r.placed_by |= not of and _placed_by(tokens, p)
 
 
@@ -207,7 +214,7 @@ def frame(tokens: list[str], kind_at, known, dropped: list[str]) -> list[str]:
     users = [p for p in _road_users(tokens, kind_at, known) if p.kind != "ego"]
     referents, driver = _referents(tokens, users, VEHICLES)
     for r in [*referents, *([driver] if driver else [])]:
-        _evidence(tokens, users, r)
+        _evidence(tokens, users, r, referents)
     motor = [
         r
         for r in referents
