@@ -16,14 +16,14 @@ ego's speed.
 - another road user is placed by it: its path, front or side ("into the path of the Toyota", "across
   the front of the cab", "from the Civic's right", "into the van's lane", "towards the car").
 
-The motor vehicle with the most of these is the ego when no other motor vehicle has as many and no
-walker or rider has more, or as many and is named first (a rider with a speed of their own,
-overtaken by a car that has none, is the one the text is told from, not the car). A report's bare
-"driver" ("Driver braked hard", "The driver stopped") is the driver of the vehicle introduced as
-known (a field value, "the") or of the only motor vehicle named; with no such vehicle it is the ego
-on its own. A parked or placed vehicle ("a parked van", "the car ahead") is never the ego. The word
-classes here are small and closed (verbs of reacting, nouns of a vehicle's sides); which words name
-road users comes from the reader's lexicon.
+The motor vehicle with the most of these, one of them a speed or a reaction, is the ego when no
+other motor vehicle has as many and no walker or rider has more, or as many and is named first (a
+rider with a speed of their own, overtaken by a car that has none, is the one the text is told from,
+not the car). A report's bare "driver" ("Driver braked hard", "The driver stopped") is the driver of
+the vehicle introduced as known (a field value, "the") or of the only motor vehicle named; with no
+such vehicle it is the ego on its own. A parked or placed vehicle ("a parked van", "the car ahead")
+is never the ego. The word classes here are small and closed (verbs of reacting, nouns of a
+vehicle's sides); which words name road users comes from the reader's lexicon.
 """
 
 from __future__ import annotations
@@ -245,8 +245,8 @@ def frame(tokens: list[str], kind_at, known, dropped: list[str]) -> list[str]:
     first = min(p.start for p in best.mentions)
     if any((r.score, first) > (best.score, r.mentions[0].start) for r in referents if r.kind not in VEHICLES):
         return tokens  # (a walker or rider told about as much, and named first, is the one told from)
-    if best is driver and not (driver.speed or driver.reacts):
-        return tokens  # (only placed by: "on the driver's left" is drivers in general, see generic_ego)
+    if not (best.speed or best.reacts):
+        return tokens  # (only placed by: "in front of a car" is said of any road user the ego meets)
     if not any(r is not best for r in referents):
         return tokens  # (no one else to meet: "The lead car brakes" is met by an ego the text leaves unsaid)
     targets = list(best.mentions)
