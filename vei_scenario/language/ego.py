@@ -402,6 +402,12 @@ def _at_the_wheel(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
                 continue
             said.append(out[i])
             i += 1
+        if found[0] in VEHICLES:  # ("passenger in the blue Transit van ... the van (driver) braked")
+            noun = tokens[cut[1] - 1]
+            said = _as_ego(said, kind_at, known, noun, dropped)
+            for i in range(len(said) - 3, -1, -1):
+                if said[i : i + 3] == ["the", noun, "driver"]:
+                    said[i : i + 3] = ["the", "ego"]
         owner = tokens[k + 1] if k + 1 < len(tokens) and tokens[k + 1] in PRONOUNS_OF else None
         owner = owner or _owner_by_pronouns(said)
         return _pronouns_as_ego(said, owner, kind_at, known) if owner else said
@@ -1133,4 +1139,9 @@ def _frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str])
     tokens = _role(tokens, kind_at)
     if names_ego(tokens, kind_at, known):
         return _ego_drives(tokens, kind_at, known, dropped)
-    return _struck(tokens, kind_at, known, dropped)
+    tokens = _struck(tokens, kind_at, known, dropped)
+    if names_ego(tokens, kind_at, known):
+        return tokens
+    from vei_scenario.language import protagonist
+
+    return protagonist.frame(tokens, kind_at, known, dropped)  # (the vehicle a report is about)

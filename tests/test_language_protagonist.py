@@ -1,0 +1,119 @@
+"""The vehicle a third-person report is about is the ego (news, witness statements, logs, minutes,
+exam questions), found by what the text says of it: a speed of its own, a reaction, another road user
+placed by its path or side; never a parked vehicle, nor one met by an ego the text leaves unsaid."""
+
+from __future__ import annotations
+
+import pytest
+
+from vei_scenario.language import protagonist
+from vei_scenario.language.reader import _kind_at, _known, _tokens, read
+
+
+def _kinds(text: str) -> list[str]:
+    return sorted(a.kind for a in read(text).actors)
+
+
+def _ego_kph(text: str) -> float | None:
+    mps = read(text).ego_speed_mps
+    return None if mps is None else round(mps * 3.6, 1)
+
+
+@pytest.mark.parametrize(
+    ("text", "kinds", "kph"),
+    [
+        (  # a witness statement: its speed, a rider into its path, its reaction
+            "The witness says she saw a red Skoda Fabia heading south at about 30 mph. A boy on a bicycle "
+            "rode out of a driveway into the path of the Skoda, and the Skoda braked hard.",
+            ["bicycle"],
+            48.3,
+        ),
+        (  # an exam question: the one vehicle with a speed of its own
+            "A lorry moves along a level road at 15 m/s. A jogger runs into the road 30 m ahead.",
+            ["pedestrian"],
+            54.0,
+        ),
+        (  # a fleet log: a heading names the vehicle, its bare driver has the speed and reacts
+            "Log 14/2, school minibus. Driver was leaving the depot at 10 mph when a jogger ran across the front of "
+            "the minibus. Driver stopped.",
+            ["pedestrian"],
+            16.1,
+        ),
+        (  # minutes: the one vehicle whose driver reacts, with a speed in a relative aside
+            "Members heard about a council gritter, which was doing 20 mph, on Mill Hill. A teenager on an "
+            "e-scooter came towards the gritter on the wrong side. The driver stopped.",
+            ["e-scooter"],
+            32.2,
+        ),
+        (  # a news item: the vehicle named by its driver, past an apposition, reacts
+            "A dog ran into the road in front of a Fiat on Tuesday. The driver of the Fiat, a retired "
+            "teacher, swerved and nobody was hurt.",
+            ["pedestrian"],
+            None,
+        ),
+    ],
+)
+def test_the_vehicle_a_third_person_report_is_about_is_the_ego(text, kinds, kph):
+    assert _kinds(text) == kinds
+    assert _ego_kph(text) == kph
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "The lead van slows gently and stops.",  # (no one else: an unsaid ego meets it)
+        "A cyclist riding at 25 km/h is overtaken by a bus.",  # (the cyclist's story, not the bus's)
+        "A van and a car collided at the junction.",  # (neither is told about)
+        "The car in front pulls out round a broken-down lorry, 60 km/h.",  # (placed; the speed is the ego's)
+        "Two buses doing 30 mph met a cyclist who braked.",  # (many, not one)
+        "The tram halts at its platform and a boy runs out in front of it.",  # (its own stop, no reaction)
+    ],
+)
+def test_a_vehicle_no_report_is_about_stays_a_road_user(text):
+    tokens = _tokens(text, brackets=True)
+    assert protagonist.frame(list(tokens), _kind_at, _known, []) == tokens
+
+
+def test_a_parked_vehicle_is_never_the_ego():
+    text = (
+        "A witness sitting in a parked car saw a pedestrian step out in front of a lorry that was doing "
+        "30 mph. The lorry braked."
+    )
+    assert _ego_kph(text) == 48.3
+    assert "truck" not in _kinds(text)
+
+
+@pytest.mark.parametrize(
+    ("text", "kinds", "kph"),
+    [
+        (
+            "The caller, who was the back-seat passenger in the silver minibus, states that the minibus was doing "
+            "40 mph when a cyclist swerved into its path. The minibus driver braked.",
+            ["bicycle"],
+            64.4,
+        ),
+        (
+            "Sam, driving a blue tipper lorry, says the lorry was at 25 mph when a jogger stepped out. The "
+            "lorry driver stopped.",
+            ["pedestrian"],
+            40.2,
+        ),
+        (
+            "The witness, who was the rear passenger in the black cab, states that the cab was going at 20 mph "
+            "when a man on a moped pulled out in front of the cab driver.",
+            ["car"],
+            32.2,
+        ),
+    ],
+)
+def test_the_vehicle_a_person_is_in_stays_the_ego_when_said_again(text, kinds, kph):
+    assert _kinds(text) == kinds
+    assert _ego_kph(text) == kph
+
+
+def test_another_vehicle_and_its_driver_stay_a_road_user():
+    text = (
+        "The caller, who was the back-seat passenger in the silver minibus, states that a lorry overtook the "
+        "minibus at 50 mph. The lorry driver waved."
+    )
+    assert _kinds(text) == ["truck"]

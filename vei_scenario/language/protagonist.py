@@ -1,0 +1,262 @@
+"""The vehicle a third-person report is about, when nothing else in it names the ego.
+
+A news item, a witness statement, an incident log, council minutes or an exam question is told about
+one vehicle without calling it the ego: "the Toyota braked but struck the scooter", "a bus entering
+from the next arm pulled out across the front of the cab. Driver braked hard", "A car travels along a
+straight road at 20 m/s. A pedestrian steps off the kerb 40 m ahead". That vehicle is the ego, and
+listing it as another road user as well would give the scenario a road user too many and lose the
+ego's speed.
+
+:func:`frame` finds it by what the text says of each road user it names, grouped into referents (a
+"the" mention is the earlier one it repeats a word of: "a silver Toyota Corolla ... the Toyota"):
+
+- it has a speed of its own ("travelling north at about 40 mph", ", which was doing about 20 mph,");
+- it reacts: it is the subject of a verb of braking, stopping or swerving ("the Corsa swerved",
+  "Driver braked hard", "the driver stopped");
+- another road user is placed by it: its path, front or side ("into the path of the Toyota", "across
+  the front of the cab", "from the Civic's right", "into the van's lane", "towards the car").
+
+The motor vehicle with the most of these, one of them a speed or a reaction, is the ego when no
+other motor vehicle has as many and no walker or rider has more, or as many and is named first (a
+rider with a speed of their own, overtaken by a car that has none, is the one the text is told from,
+not the car). A report's bare "driver" ("Driver braked hard", "The driver stopped") is the driver of
+the vehicle introduced as known (a field value, "the") or of the only motor vehicle named; with no
+such vehicle it is the ego on its own. A parked or placed vehicle ("a parked van", "the car ahead")
+is never the ego. The word classes here are small and closed (verbs of reacting, nouns of a
+vehicle's sides); which words name road users comes from the reader's lexicon.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from vei_scenario.language.lemmas import lemmas
+
+#: Verbs of the reaction a report gives the vehicle it is about (lemmas), a closed class.
+REACTING = frozenset({"brake", "stop", "swerve", "slow", "steer", "halt", "decelerate", "skid", "stamp"})
+#: Words that may stand between a road user and its reaction ("braked hard", "had to stop", "was
+#: forced to swerve", "then braked"): auxiliaries, "to" and adverbs.
+BEFORE_VERB = frozenset(
+    {"had", "has", "have", "was", "were", "is", "to", "then", "just", "only", "forced", "able", "managed", "also"}
+)
+#: Nouns of a road user's own space that another is placed by ("the path of the van", "the front of
+#: the cab", "the rear of the car").
+OWN_SPACE = frozenset({"path", "front", "rear", "back", "side", "nose", "way", "lane"})
+#: Prepositions that place another road user by this one ("came towards the car").
+TOWARDS = frozenset({"towards", "toward"})
+#: Words that say the vehicle is only scenery or set beside someone else.
+PARKED = frozenset({"parked", "stationary", "abandoned", "stopped", "stalled", "broken-down", "double-parked"})
+
+
+@dataclass
+class _Referent:
+    """One road user as the text repeats it: its mentions and the evidence it is the one told about."""
+
+    kind: str
+    mentions: list = field(default_factory=list)
+    words: set[str] = field(default_factory=set)
+    speed: bool = False
+    reacts: bool = False
+    placed_by: bool = False
+    known: bool = False  # introduced as known: bare ("Cab 22") or with "the"
+
+    @property
+    def score(self) -> int:
+        return self.speed + self.reacts + self.placed_by
+
+
+def _sentence_end(tokens: list[str], i: int) -> int:
+    from vei_scenario.language.ego import SENTENCE_END
+
+    while i < len(tokens) and tokens[i] not in SENTENCE_END:
+        i += 1
+    return i
+
+
+def _past_aside(tokens: list[str], k: int, relative_only: bool = False) -> int:
+    """Past a relative aside after a mention (", which she estimated to be doing 20 mph,"): where the
+    clause resumes, else ``k``."""
+    if tokens[k : k + 1] == [","] and tokens[k + 1 : k + 2]:
+        end = _sentence_end(tokens, k)
+        close = next((c for c in range(k + 2, end) if tokens[c] == ","), None)
+        relative = tokens[k + 1] in ("which", "who", "that")
+        if close is not None and (relative or (close - k <= 7 and not relative_only)):  # (", a 54-year-old woman,")
+            return close + 1
+    return k
+
+
+def _has_speed(tokens: list[str], p, nxt: int) -> bool:
+    """A speed follows the mention in its sentence before anyone else is named, not one it changes to
+    ("slows to 20 km/h")."""
+    from vei_scenario.language.ego import SPEED_UNITS
+
+    end = min(_sentence_end(tokens, p.end), nxt)
+    aside = _past_aside(tokens, p.end, relative_only=True)
+    if aside == p.end and tokens[p.end : p.end + 1] == [","]:
+        return False  # (not its own: "a stopped truck, 80 km/h" in a terse line is the ego's speed)
+    if aside != p.end:
+        end = max(end, aside)
+    return any(
+        w in SPEED_UNITS and "to" not in tokens[max(p.end, k - 3) : k] for k, w in enumerate(tokens[:end]) if k >= p.end
+    )
+
+
+def _reacts(tokens: list[str], p, others: list[int], first: bool = False) -> bool:
+    """The mention is the subject of a verb of reacting, past auxiliaries, adverbs and an aside; or,
+    ``first`` in its sentence, of one its sentence joins on with "and"/"but" ("a bus entering the
+    roundabout failed to see a cyclist and braked hard"). A reaction is to someone: another road
+    user (starting at one of ``others``) is named before the verb ("The bus stops at a stop and a
+    pedestrian walks out" is the bus's own stop, no reaction)."""
+    at = []
+    if first:
+        end = _sentence_end(tokens, p.end)
+        at = [v for k in range(p.end, end) if tokens[k] in ("and", "but") and (v := _verb_of_reacting(tokens, k + 1))]
+    if v := _verb_of_reacting(tokens, _past_aside(tokens, p.end)):
+        at.append(v)
+    return any(o < v for v in at for o in others)
+
+
+def _verb_of_reacting(tokens: list[str], k: int) -> int:
+    """Where a verb of reacting stands at ``k``, past auxiliaries and adverbs, else 0."""
+    for _ in range(4):
+        if k >= len(tokens):
+            return 0
+        w = tokens[k]
+        if w in BEFORE_VERB or (w.endswith("ly") and "ADV" in lemmas(w)):
+            k += 1
+            continue
+        return k if "VERB" in lemmas(w) and any(x in REACTING for x in lemmas(w)["VERB"]) else 0
+    return 0
+
+
+def _placed_by(tokens: list[str], p) -> bool:
+    """Another road user is placed by this one: its path, front, lane ("into the path of the Toyota",
+    "the van's lane", "from the Civic's right") or "towards" it."""
+    before = tokens[p.start - 1] if p.start else ""
+    if before in TOWARDS:
+        return True
+    if before == "of" and p.start >= 2 and tokens[p.start - 2] in OWN_SPACE:
+        return True
+    return tokens[p.end : p.end + 1] == ["'s"]
+
+
+def _placed_by_unsaid(tokens: list[str], p, nxt: int) -> bool:
+    """The mention is placed by someone the text leaves unsaid: a word of place in it ("a lead van")
+    or in its clause with no one after it ("brakes hard 20 m ahead", "is coming up behind")."""
+    from vei_scenario.language.ego import PLACED
+
+    if any(w in PLACED for w in tokens[p.start : p.end]):
+        return True
+    end = min(_sentence_end(tokens, p.end), nxt)
+    return any(
+        tokens[k] in ("ahead", "behind") and tokens[k + 1 : k + 2] not in (["of"], ["it"], ["him"], ["her"], ["them"])
+        for k in range(p.end, end)
+    )
+
+
+def _referents(tokens: list[str], users, vehicles: frozenset[str]) -> tuple[list[_Referent], _Referent | None]:
+    """The road users of ``users`` grouped by the referent they repeat, and the bare report's
+    driver ("Driver braked", "the driver stopped") as its own referent (None when not said)."""
+    from vei_scenario.language.ego import AT_WHEEL, DEFINITE, INDEFINITE, _compound
+
+    out: list[_Referent] = []
+    driver: _Referent | None = None
+    for p in users:
+        if tokens[p.end : p.end + 1] == [":"] or (tokens[p.end - 1] in AT_WHEEL and _compound(tokens, p)):
+            continue  # (a field's name, "Vehicle: Cab 22", or a modifier, "driver statement")
+        words = [w for w in tokens[p.head : p.end] if w.isalpha()]
+        last = tokens[p.end - 1]
+        if last in AT_WHEEL and p.end - p.head == 1 and p.det in ("", "the") and p.kind in vehicles:
+            if tokens[p.end : p.end + 1] == ["of"]:
+                continue  # ("the driver of the Yaris": the Yaris, read at its own mention)
+            driver = driver or _Referent("driver", known=True)
+            driver.mentions.append(p)
+            continue
+        if last in AT_WHEEL:
+            continue
+        same = None
+        if p.det not in INDEFINITE:
+            same = next((r for r in reversed(out) if r.kind == p.kind and last in r.words), None)
+            if same is None:
+                kin = [r for r in out if r.kind == p.kind]
+                same = kin[0] if len(kin) == 1 and p.det in DEFINITE and p.end - p.head == 1 else None
+        if same is None:
+            same = _Referent(p.kind, known=p.det not in INDEFINITE)
+            out.append(same)
+        same.mentions.append(p)
+        same.words.update(words)
+    return out, driver
+
+
+def _evidence(tokens: list[str], users, r: _Referent, referents: list[_Referent]) -> None:
+    """What the text says of ``r``: its speed, its reaction to another of ``referents``, whether
+    another road user is placed by it."""
+    others = [q.start for o in referents if o is not r for q in o.mentions]
+    for p in r.mentions:
+        nxt = next((q.start for q in users if q.start >= p.end), len(tokens))
+        of = p.start >= 2 and tokens[p.start - 1] == "of" and tokens[p.start - 2] == "driver"
+        r.speed |= _has_speed(tokens, p, nxt)
+        s = p.start
+        while s > 0 and tokens[s - 1] not in (".", ";", "!", "?"):
+            s -= 1
+        r.reacts |= _reacts(tokens, p, others, first=not any(s <= q.start < p.start for q in users))
+        r.placed_by |= not of and _placed_by(tokens, p)
+
+
+def frame(tokens: list[str], kind_at, known, dropped: list[str]) -> list[str]:
+    """``tokens`` with the vehicle a third-person report is about said "the ego" (see the module's
+    docstring), and its bare driver too; unchanged where no vehicle stands out."""
+    from vei_scenario.language.discourse import _singular
+    from vei_scenario.language.ego import VEHICLES, _placed, _road_users, names_ego
+
+    if names_ego(tokens, kind_at, known):
+        return tokens
+    users = [p for p in _road_users(tokens, kind_at, known) if p.kind != "ego"]
+    referents, driver = _referents(tokens, users, VEHICLES)
+    for r in [*referents, *([driver] if driver else [])]:
+        _evidence(tokens, users, r, referents)
+    motor = [
+        r
+        for r in referents
+        if r.kind in VEHICLES
+        and any(_singular(tokens[p.end - 1]) for p in r.mentions)
+        and not any(
+            _placed(tokens, p)
+            or _placed_by_unsaid(tokens, p, next((q.start for q in users if q.start >= p.end), len(tokens)))
+            or PARKED & set(tokens[max(p.start - 2, 0) : p.end + 2])
+            for p in r.mentions
+        )
+    ]
+    owner = None
+    if driver is not None:
+        home = [r for r in motor if r.known] or (motor if len(motor) == 1 else [])
+        if len(home) == 1:  # (the driver of the report's own vehicle)
+            owner = home[0]
+            home[0].speed |= driver.speed
+            home[0].reacts |= driver.reacts
+            home[0].placed_by |= driver.placed_by
+        else:
+            motor.append(driver)
+    if not motor:
+        return tokens
+    best = max(motor, key=lambda r: r.score)
+    if best.score < 1 or sum(r.score == best.score for r in motor) > 1:
+        return tokens
+    first = min(p.start for p in best.mentions)
+    if any((r.score, first) > (best.score, r.mentions[0].start) for r in referents if r.kind not in VEHICLES):
+        return tokens  # (a walker or rider told about as much, and named first, is the one told from)
+    if not (best.speed or best.reacts):
+        return tokens  # (only placed by: "in front of a car" is said of any road user the ego meets)
+    if not any(r is not best for r in referents):
+        return tokens  # (no one else to meet: "The lead car brakes" is met by an ego the text leaves unsaid)
+    targets = list(best.mentions)
+    if driver is not None and owner is best:
+        targets += driver.mentions  # (its driver, merged into it above)
+    out = list(tokens)
+    for p in sorted(targets, key=lambda p: p.start, reverse=True):
+        start = p.start
+        if start >= 3 and out[start - 1] == "of" and out[start - 2] == "driver" and out[start - 3] == "the":
+            start -= 3  # ("the driver of the Yaris": the Yaris)
+        dropped.extend(w for w in out[start : p.end] if w.isalpha() and w not in ("the", "a", "an"))
+        out[start : p.end] = ["the", "ego"]
+    return out
