@@ -38,6 +38,8 @@ SENTENCE_END = frozenset({".", ";", "!", "?"})
 PUNCT = SENTENCE_END | {",", ":"}
 #: First-person subjects: a narrator who is in the scenario is the ego, one who only watches is not.
 FIRST_PERSON = frozenset({"i", "we"})
+#: The reader put in the scene ("Picture yourself driving a van"): at a wheel, as a narrator is.
+YOU = frozenset({"you", "yourself"})
 #: First-person words that put the narrator in the scene as someone met or moved ("came at me", "my lane").
 NARRATOR_INVOLVED = frozenset({"me", "us", "my", "our", "ego"})
 #: Auxiliaries and adverbs between a subject and its verb ("I had just seen", "we were all waiting").
@@ -948,7 +950,7 @@ def _narrator_subject(tokens: list[str], k: int) -> bool:
     f = k - 1
     while f >= 0 and (tokens[f] in BETWEEN or tokens[f] in HABIT):
         f -= 1
-    return f >= 0 and tokens[f] in FIRST_PERSON
+    return f >= 0 and tokens[f] in FIRST_PERSON | YOU
 
 
 def _driving_ego(tokens: list[str], k: int) -> bool:
@@ -970,7 +972,7 @@ def _ego_drives(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[
     """ "The insured was driving a Ford Fiesta", "Claimant, driving her own Micra,", "Insured (Mr
     Jones, driving his works van)": the vehicle the ego drives or rides is its own, no road user; it
     goes (the verb stays, with the speed it may carry) and every later "the <noun>" is the ego."""
-    if "ego" not in tokens and not FIRST_PERSON & set(tokens):
+    if "ego" not in tokens and not (FIRST_PERSON | YOU) & set(tokens):
         return tokens
     for k, w in enumerate(tokens):
         driving = w in DRIVING | {"riding", "rode", "ridden"} or _lemma_in(w, AT_CONTROLS)
@@ -998,7 +1000,7 @@ def _ego_drives(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[
 
 
 def _narrator_in(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
-    """ "Doing 30 mph in the van down Corporation St ...", "Heading home in the minibus ...", "let me
+    """ "Doing 30 mph in the van down Corporation St ...", "Was heading home in the minibus ...", "let me
     through in the van": in a text told in the first person, "in the/my <vehicle>" (not placed: "in
     the van ahead") after a clause that opens with a participle and no subject, or right after "me",
     is the vehicle the narrator is in, the ego (so is every later "the van")."""
@@ -1009,6 +1011,8 @@ def _narrator_in(tokens: list[str], kind_at: KindAt, known: Known, dropped: list
         if p.start < 2 or tokens[p.start - 1] != "in" or p.det not in ("the", "my", "our") or _placed(tokens, p):
             continue
         s, _ = _sentence(tokens, p.start)
+        while s < p.start - 2 and tokens[s] in BETWEEN:
+            s += 1  # (its subject left out, its auxiliary said: "Was heading home in the ute")
         opening = tokens[s].endswith("ing") and "VERB" in lemmas(tokens[s]) and s < p.start - 1
         opening = opening and not any(s <= q.start < p.start for q in users)
         opening = opening and not any(t in PUNCT or t in FIRST_PERSON for t in tokens[s : p.start])
@@ -1113,6 +1117,9 @@ def _frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str])
     tokens = _reported(tokens, kind_at, known, dropped)
     tokens = _fleet_member(tokens, kind_at, known, dropped)
     tokens = _ego_drives(tokens, kind_at, known, dropped)
+    from vei_scenario.language import narrator_vehicle
+
+    tokens = narrator_vehicle.frame(tokens, kind_at, known, dropped)  # (the writer in it or testing it)
     if names_ego(tokens, kind_at, known):
         if names_ego(_story(tokens, kind_at, known), kind_at, known):
             return tokens
