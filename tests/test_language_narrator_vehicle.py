@@ -46,11 +46,62 @@ def _ego_kph(text: str) -> float | None:
             ["car"],
             80.5,
         ),
+        (
+            "Night call-out, we were running at 40 mph when a pedestrian walked out from the left right in "
+            "front of the fire engine.",
+            ["pedestrian"],
+            64.4,
+        ),
+        (
+            "Our crew were doing 30 mph on the bypass when a cyclist swung out ahead of the minibus.",
+            ["bicycle"],
+            48.3,
+        ),
+        (
+            "I'd hired a van for the move. I was driving it at 30 mph down the high street when a cyclist "
+            "pulled out from a side road on the left.",
+            ["bicycle"],
+            48.3,
+        ),
+        (
+            "Got a scooter from the rack by the station and was riding it at 15 km/h when a pedestrian "
+            "stepped out from the right.",
+            ["pedestrian"],
+            15.0,
+        ),
     ],
 )
 def test_a_first_person_texts_own_unintroduced_vehicle_is_the_ego(text, kinds, kph):
     assert _kinds(text) == kinds
     assert _ego_kph(text) == kph
+
+
+# A crew's vehicle ("we") that someone crosses in front of is the crew's, and so is its driver.
+@pytest.mark.parametrize(
+    "text, kinds",
+    [
+        (
+            "We were heading back at 40 km/h when a pedestrian stepped out right in front of the tanker. "
+            "Driver stopped hard.",
+            ["pedestrian"],
+        ),
+        (
+            "Returning to base at 30 mph, we had a cyclist cut across the path of the minibus. The driver braked.",
+            ["bicycle"],
+        ),
+        (
+            "Report, ambulance 3. We were returning at 30 mph when a cyclist swerved in front of the ambulance. "
+            "Driver braked.",
+            ["bicycle"],
+        ),
+        (
+            "We were towing at 20 mph when a jogger ran out ahead of the recovery truck, and the driver swerved.",
+            ["pedestrian"],
+        ),
+    ],
+)
+def test_a_crews_vehicle_and_its_driver_are_the_ego(text, kinds):
+    assert _kinds(text) == kinds
 
 
 # Near misses: a vehicle introduced with "a", placed, followed, a test's target, or one that meets
@@ -64,6 +115,8 @@ def test_a_first_person_texts_own_unintroduced_vehicle_is_the_ego(text, kinds, k
         ("We were following the bus at 30 km/h when it stopped suddenly.", ["truck"]),
         ("We drove at 50 km/h towards the target car, which braked hard ahead of us.", ["car"]),
         ("I was doing 30 mph and the lorry pulled out of a side road on my left.", ["truck"]),
+        ("I was walking at 5 km/h when a cyclist swerved in front of the bus ahead.", ["bicycle", "truck"]),
+        ("A van was parked on the left. I watched it at 20 mph as a cyclist came past it.", ["van", "bicycle"]),
     ],
 )
 def test_a_vehicle_met_by_the_narrator_stays_a_road_user(text, kinds):
@@ -171,3 +224,7 @@ def test_a_subjectless_story_in_a_vehicle_is_the_narrators(text, kinds, kph):
 )
 def test_yourself_at_the_wheel_is_the_ego(text, kinds):
     assert _kinds(text) == kinds
+
+
+def test_a_vehicle_someone_else_rides_stays_theirs():
+    assert "e-scooter" in _kinds("A teenager took an e-scooter and was riding it at 20 km/h when he hit my car.")

@@ -18,6 +18,7 @@ the person-at-a-wheel nouns ("driver", "rider").
 from __future__ import annotations
 
 from vei_scenario.language.ego import (
+    AT_CONTROLS,
     AT_WHEEL,
     BE,
     BETWEEN,
@@ -32,7 +33,9 @@ from vei_scenario.language.ego import (
     Known,
     _as_ego,
     _compound,
+    _driver_is_ego,
     _lemma_in,
+    _narrator_subject,
     _placed,
     _road_users,
     _sentence,
@@ -117,6 +120,11 @@ def _narrator_speed(tokens: list[str], users) -> bool:
     return False
 
 
+def _label(tokens: list[str], q) -> bool:
+    """Whether ``q`` is a bare noun with a number, a call sign ("appliance 2", "unit 7"): no one new."""
+    return not q.det and tokens[q.end : q.end + 1] != [] and tokens[q.end].isdigit()
+
+
 def _unintroduced(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """A vehicle a first-person text says with "the" and never introduces is the narrator's own
     when the text shows it is ("We pointed the car at a dummy", "the van approaching at 40 km/h,
@@ -139,18 +147,20 @@ def _unintroduced(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
         said = tokens[p.start : p.end + 1]
         if any(w in TEST_OBJECTS or w.isdigit() or w in ("number", "other") for w in said):
             continue
-        if tokens[p.end : p.end + 1] == ["'s"] or any(q.kind == p.kind for q in users[:n]):
+        if tokens[p.end : p.end + 1] == ["'s"] or any(q.kind == p.kind and not _label(tokens, q) for q in users[:n]):
             continue  # (an owner's, or one of a kind named before: "a hatchback ... the car")
         b, e = _clause(tokens, p.start)
         steered = _steered(tokens, p)  # (what the narrator steers may well go at "our lane")
         subject = _clause_start(tokens, p.start) and _own_speed(tokens, p, users)
         subject = subject and not MEETS_NARRATOR & set(tokens[b:e]) and not _narrator_speed(tokens[: p.start], users)
-        if not (steered or subject):
+        landmark = tokens[max(p.start - 2, 0) : p.start] in (["front", "of"], ["ahead", "of"], ["path", "of"])
+        if not (steered or subject or landmark):  # (what someone crosses in front of is where the writer is)
             continue
         noun = tokens[p.end - 1]
         dropped.extend(w for w in tokens[p.start : p.end] if w not in DEFINITE)
         out = _as_ego([*tokens[: p.start], "the", "ego", *tokens[p.end :]], kind_at, known, noun, dropped)
-        return _kind_again(out, p.kind, kind_at, known, dropped)
+        out = _kind_again(out, p.kind, kind_at, known, dropped)
+        return _driver_is_ego(out, kind_at, known, dropped) if {"we", "us", "our"} & words else out
     return tokens
 
 
@@ -248,9 +258,36 @@ def _riders_as_ego(tokens: list[str], rider: str) -> list[str]:
     return out
 
 
+def _driven_it(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "Got a scooter from the rack and was riding it at 15 km/h", "I'd hired a van. I was driving
+    it ...": what "it" stands for after a verb of driving or riding said by the narrator is the last
+    vehicle named before it (not placed relative to someone): the narrator's, the ego; so is every
+    later "the <noun>" of it."""
+    users = _road_users(tokens, kind_at, known)
+    for k in range(1, len(tokens)):
+        if tokens[k] != "it" or not _lemma_in(tokens[k - 1], AT_CONTROLS) or "VERB" not in lemmas(tokens[k - 1]):
+            continue
+        verb = k - 1
+        p = next((q for q in reversed(users) if q.end <= verb), None)
+        s = _sentence(tokens, verb)[0]  # (or a diary's sentence with no subject: "Got a scooter and was riding it")
+        opens = tokens[s].isalpha() and "VERB" in lemmas(tokens[s]) and not {"NOUN", "PROPN"} & set(lemmas(tokens[s]))
+        subjectless = opens and not any(s <= q.start < verb and q is not p for q in users)
+        told = _narrator_subject(tokens, verb) or subjectless
+        if not told or p is None or p.kind not in VEHICLES | RIDERS or _placed(tokens, p):
+            continue
+        if _sentence(tokens, p.start)[0] < _sentence(tokens, _sentence(tokens, verb)[0] - 1)[0]:
+            continue  # (named two sentences before or more: "it" may be anything since)
+        noun = tokens[p.end - 1]
+        dropped.extend(w for w in tokens[p.start : p.end] if w not in DEFINITE | INDEFINITE)
+        out = [*tokens[: p.start], "the", "ego", *tokens[p.end : k], *tokens[k + 1 :]]
+        return _riders_as_ego(out, noun)
+    return tokens
+
+
 def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """``tokens`` with the writer's own vehicle said "the ego" where the writer is in it or tests it
     (see the module's docstring); the words that only named it are added to ``dropped``."""
     tokens = _ego_rider(tokens, kind_at, known, dropped)
+    tokens = _driven_it(tokens, kind_at, known, dropped)
     tokens = _heading(tokens, kind_at, known, dropped)
     return _unintroduced(tokens, kind_at, known, dropped)
