@@ -228,3 +228,27 @@ def test_yourself_at_the_wheel_is_the_ego(text, kinds):
 
 def test_a_vehicle_someone_else_rides_stays_theirs():
     assert "e-scooter" in _kinds("A teenager took an e-scooter and was riding it at 20 km/h when he hit my car.")
+
+
+# A spec's ego field whose value is a vehicle named by its place in a line ("Ego: following
+# truck"): that vehicle is the ego; the one it follows ("the lead truck") stays a road user.
+@pytest.mark.parametrize(
+    "text, kinds",
+    [
+        (
+            "Ego: following van, 1 s behind the lead van, both at 60 km/h. A car cuts in between them from the left.",
+            ["van", "car"],
+        ),
+        (
+            "SUT: trailing bus at 40 km/h, 25 m behind the leading bus; a cyclist pulls out from the left.",
+            ["truck", "bicycle"],
+        ),
+        ("Subject vehicle: lead truck at 80 km/h; a car ahead of it brakes hard.", ["car"]),
+    ],
+)
+def test_an_ego_field_naming_a_vehicle_by_its_place_in_a_line(text, kinds):
+    assert _kinds(text) == kinds
+
+
+def test_an_ego_field_that_places_the_ego_names_no_vehicle():
+    assert _kinds("Ego: following a truck at 80 km/h; the truck brakes hard.") == ["truck"]

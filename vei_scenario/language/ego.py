@@ -68,6 +68,10 @@ def _lemma_in(word: str, wanted: frozenset[str]) -> bool:
     return word in wanted or any(x in wanted for forms in lemmas(word).values() for x in forms)
 
 
+#: Words that name a vehicle by its place in a line of them, right before its noun ("following truck").
+IN_LINE = frozenset({"following", "lead", "leading", "trailing", "rear", "front"})
+
+
 def _ego_at(tokens: list[str], i: int, kind_at: KindAt) -> int:
     """The length of an ego phrase at ``i`` ("the ego", "reporting vehicle", "sut"), else 0."""
     found = kind_at(tokens, i)
@@ -148,6 +152,8 @@ def _as_ego(
         back = next((b for b in range(start - 1, max(start - 3, -1), -1) if out[b] in DEFINITE | INDEFINITE), None)
         if not p.det and back is not None and all(out[b].isalpha() for b in range(back, start)):
             start = back  # ("a grey estate car": its article before a word the reader reads otherwise)
+        if out[start] in DEFINITE and any(w in IN_LINE - {"front", "rear"} for w in out[start : p.head]):
+            continue  # ("the lead truck" when the ego is a truck too: the one in its line it is not)
         if start >= 3 and out[start - 1] == "of" and out[start - 2] in AT_WHEEL and out[start - 3] in DEFINITE:
             start -= 3  # ("the driver of the corsa": the corsa)
         dropped.extend(w for w in out[start : p.end] if w not in DEFINITE)
@@ -182,6 +188,7 @@ def _marked(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]
                 return _marked(_as_ego(out, kind_at, known, noun, dropped), kind_at, known, dropped)
         # "<ego phrase> : / is a <modifiers> <vehicle>": where its value starts, past its article
         j = p.head
+        j -= j > 0 and tokens[j - 1] in IN_LINE  # ("Ego: following truck": its place in a line of vehicles)
         while j > 0 and (
             tokens[j - 1].replace(".", "").isdigit() or (tokens[j - 1].isalpha() and not known(tokens, j - 1))
         ):
