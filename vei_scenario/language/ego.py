@@ -1124,9 +1124,6 @@ def _frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str])
     tokens = _reported(tokens, kind_at, known, dropped)
     tokens = _fleet_member(tokens, kind_at, known, dropped)
     tokens = _ego_drives(tokens, kind_at, known, dropped)
-    from vei_scenario.language import narrator_vehicle
-
-    tokens = narrator_vehicle.frame(tokens, kind_at, known, dropped)  # (the writer in it or testing it)
     if names_ego(tokens, kind_at, known):
         if names_ego(_story(tokens, kind_at, known), kind_at, known):
             return tokens

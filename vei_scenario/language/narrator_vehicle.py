@@ -6,7 +6,8 @@ that introduces the writer ("Coach driver here.", "Bin lorry driver, early shift
 a test rider the text makes the ego or calls ours ("Ego is a cyclist riding at 20 km/h", "our rider
 on a hire bike"). Read as one more road user, that vehicle becomes an extra adversary that is
 really the ego. :func:`frame` says it "the ego" (and every later "the <noun>" of it), the way
-:func:`vei_scenario.language.ego.frame` does for an ego named by a role.
+:func:`vei_scenario.language.ego.frame` does for an ego named by a role; the reader runs it
+right after that (where the text names no ego otherwise, its rules find nothing to read).
 
 It reads structure, not sentences: articles (a vehicle said with "the" and never introduced is
 known to the writer), who is the subject or object of a clause, placement ("the van ahead" is
