@@ -38,6 +38,8 @@ SENTENCE_END = frozenset({".", ";", "!", "?"})
 PUNCT = SENTENCE_END | {",", ":"}
 #: First-person subjects: a narrator who is in the scenario is the ego, one who only watches is not.
 FIRST_PERSON = frozenset({"i", "we"})
+#: The reader put in the scene ("Picture yourself driving a van"): at a wheel, as a narrator is.
+YOU = frozenset({"you", "yourself"})
 #: First-person words that put the narrator in the scene as someone met or moved ("came at me", "my lane").
 NARRATOR_INVOLVED = frozenset({"me", "us", "my", "our", "ego"})
 #: Auxiliaries and adverbs between a subject and its verb ("I had just seen", "we were all waiting").
@@ -64,6 +66,10 @@ PLACED = frozenset(
 
 def _lemma_in(word: str, wanted: frozenset[str]) -> bool:
     return word in wanted or any(x in wanted for forms in lemmas(word).values() for x in forms)
+
+
+#: Words that name a vehicle by its place in a line of them, right before its noun ("following truck").
+IN_LINE = frozenset({"following", "lead", "leading", "trailing", "rear", "front"})
 
 
 def _ego_at(tokens: list[str], i: int, kind_at: KindAt) -> int:
@@ -146,6 +152,8 @@ def _as_ego(
         back = next((b for b in range(start - 1, max(start - 3, -1), -1) if out[b] in DEFINITE | INDEFINITE), None)
         if not p.det and back is not None and all(out[b].isalpha() for b in range(back, start)):
             start = back  # ("a grey estate car": its article before a word the reader reads otherwise)
+        if out[start] in DEFINITE and any(w in IN_LINE - {"front", "rear"} for w in out[start : p.head]):
+            continue  # ("the lead truck" when the ego is a truck too: the one in its line it is not)
         if start >= 3 and out[start - 1] == "of" and out[start - 2] in AT_WHEEL and out[start - 3] in DEFINITE:
             start -= 3  # ("the driver of the corsa": the corsa)
         dropped.extend(w for w in out[start : p.end] if w not in DEFINITE)
@@ -180,6 +188,7 @@ def _marked(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]
                 return _marked(_as_ego(out, kind_at, known, noun, dropped), kind_at, known, dropped)
         # "<ego phrase> : / is a <modifiers> <vehicle>": where its value starts, past its article
         j = p.head
+        j -= j > 0 and tokens[j - 1] in IN_LINE  # ("Ego: following truck": its place in a line of vehicles)
         while j > 0 and (
             tokens[j - 1].replace(".", "").isdigit() or (tokens[j - 1].isalpha() and not known(tokens, j - 1))
         ):
@@ -954,7 +963,7 @@ def _narrator_subject(tokens: list[str], k: int) -> bool:
     f = k - 1
     while f >= 0 and (tokens[f] in BETWEEN or tokens[f] in HABIT):
         f -= 1
-    return f >= 0 and tokens[f] in FIRST_PERSON
+    return f >= 0 and tokens[f] in FIRST_PERSON | YOU
 
 
 def _driving_ego(tokens: list[str], k: int) -> bool:
@@ -976,7 +985,7 @@ def _ego_drives(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[
     """ "The insured was driving a Ford Fiesta", "Claimant, driving her own Micra,", "Insured (Mr
     Jones, driving his works van)": the vehicle the ego drives or rides is its own, no road user; it
     goes (the verb stays, with the speed it may carry) and every later "the <noun>" is the ego."""
-    if "ego" not in tokens and not FIRST_PERSON & set(tokens):
+    if "ego" not in tokens and not (FIRST_PERSON | YOU) & set(tokens):
         return tokens
     for k, w in enumerate(tokens):
         driving = w in DRIVING | {"riding", "rode", "ridden"} or _lemma_in(w, AT_CONTROLS)
@@ -1004,7 +1013,7 @@ def _ego_drives(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[
 
 
 def _narrator_in(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
-    """ "Doing 30 mph in the van down Corporation St ...", "Heading home in the minibus ...", "let me
+    """ "Doing 30 mph in the van down Corporation St ...", "Was heading home in the minibus ...", "let me
     through in the van": in a text told in the first person, "in the/my <vehicle>" (not placed: "in
     the van ahead") after a clause that opens with a participle and no subject, or right after "me",
     is the vehicle the narrator is in, the ego (so is every later "the van")."""
@@ -1015,6 +1024,8 @@ def _narrator_in(tokens: list[str], kind_at: KindAt, known: Known, dropped: list
         if p.start < 2 or tokens[p.start - 1] != "in" or p.det not in ("the", "my", "our") or _placed(tokens, p):
             continue
         s, _ = _sentence(tokens, p.start)
+        while s < p.start - 2 and tokens[s] in BETWEEN:
+            s += 1  # (its subject left out, its auxiliary said: "Was heading home in the ute")
         opening = tokens[s].endswith("ing") and "VERB" in lemmas(tokens[s]) and s < p.start - 1
         opening = opening and not any(s <= q.start < p.start for q in users)
         opening = opening and not any(t in PUNCT or t in FIRST_PERSON for t in tokens[s : p.start])

@@ -185,6 +185,8 @@ ACTOR_NOUNS = {
         "double-decker",
         "double decker",
         "fire engine",
+        "fire appliance",
+        "appliance",  # (what fire crews call their engine)
         "road train",  # (a tractor unit with two or more trailers)
         "b-double",
         "b-train",

@@ -35,6 +35,7 @@ from vei_scenario.language import (
     generic_ego,
     junctions,
     motion,
+    narrator_vehicle,
     scenery,
     sides,
     whose_act,
@@ -574,6 +575,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
     ]
     framed: list[str] = []
     tokens = ego.frame(tokens, _kind_at, _known, framed)  # (the ego named by a role, its driver, a witness)
+    tokens = narrator_vehicle.frame(tokens, _kind_at, _known, framed)  # (the writer in it or testing it)
     tokens = generic_ego.frame(tokens, _kind_at, _known, framed)  # (the ego as drivers in general)
     tokens = ego_speed.at_the_limit(tokens)  # ("doing the 20 limit": at 20)
     proper = proper_names(text)

@@ -1,0 +1,294 @@
+"""Which vehicle is the writer's own when the writer is in it or tests it.
+
+A first-person writer names the vehicle they sit in as something both sides already know: "we
+pointed the car at the dummy", "the van approaching at 40 km/h, and we stopped short", a heading
+that introduces the writer ("Coach driver here.", "Bin lorry driver, early shift. I'm doing ..."),
+a test rider the text makes the ego or calls ours ("Ego is a cyclist riding at 20 km/h", "our rider
+on a hire bike"). Read as one more road user, that vehicle becomes an extra adversary that is
+really the ego. :func:`frame` says it "the ego" (and every later "the <noun>" of it), the way
+:func:`vei_scenario.language.ego.frame` does for an ego named by a role; the reader runs it
+right after that (where the text names no ego otherwise, its rules find nothing to read).
+
+It reads structure, not sentences: articles (a vehicle said with "the" and never introduced is
+known to the writer), who is the subject or object of a clause, placement ("the van ahead" is
+someone else's), whether a clause meets the narrator ("in front of me": someone else), and the
+position of a heading. Its only word classes are small and closed: verbs of steering a vehicle and
+the person-at-a-wheel nouns ("driver", "rider").
+"""
+
+from __future__ import annotations
+
+from vei_scenario.language.ego import (
+    AT_CONTROLS,
+    AT_WHEEL,
+    BE,
+    BETWEEN,
+    DEFINITE,
+    FIRST_PERSON,
+    INDEFINITE,
+    PUNCT,
+    SENTENCE_END,
+    SPEED_UNITS,
+    VEHICLES,
+    KindAt,
+    Known,
+    _as_ego,
+    _compound,
+    _driver_is_ego,
+    _lemma_in,
+    _narrator_subject,
+    _placed,
+    _road_users,
+    _sentence,
+)
+from vei_scenario.language.lemmas import lemmas
+
+#: First-person words that say someone meets the narrator ("in front of me", "my lane"): a vehicle
+#: in such a clause is someone else's.
+MEETS_NARRATOR = frozenset({"me", "us", "my", "our", "myself", "ourselves"})
+#: Verbs whose object is the vehicle their subject steers (by lemma): what the narrator or the
+#: narrator's system aims, points or stops is the narrator's vehicle.
+STEERING = frozenset({"aim", "point", "steer", "drive", "park", "stop", "bring", "take", "put", "reverse", "pull"})
+#: Words that end a clause before its subject.
+CLAUSE_START = PUNCT | {"and", "but", "then", "while", "whilst", "when", "as", "-"}
+#: Words of the narrator on foot or on a saddle: a vehicle the narrator has not named is then
+#: someone else's ("I was cycling home when the van ...").
+ON_FOOT = frozenset({"walk", "cycle", "jog", "run", "ride", "cross", "scoot", "push"})
+#: Kinds of road user a person rides: a rider of one the text calls the ego or ours is the ego.
+RIDERS = frozenset({"bicycle", "e-scooter"})
+#: What a test puts in the ego's way: never the ego.
+TEST_OBJECTS = frozenset({"target", "dummy", "gvt", "soft", "balloon"})
+
+
+def _narrator_on_foot(tokens: list[str], kind_at: KindAt) -> bool:
+    """Whether the narrator walks or rides ("I was cycling", "we walked", "on my bike")."""
+    for k, w in enumerate(tokens):
+        if w in ("my", "our") and k + 1 < len(tokens):
+            found = kind_at(tokens, k + 1)
+            if found is not None and found[0] not in VEHICLES | {"ego"}:
+                return True  # ("on my bike", "my scooter")
+        if w not in FIRST_PERSON:
+            continue
+        j = k + 1
+        while j < len(tokens) and tokens[j] in BETWEEN:
+            j += 1
+        if j < len(tokens) and _lemma_in(tokens[j], ON_FOOT):
+            return True
+    return False
+
+
+def _clause_start(tokens: list[str], i: int) -> bool:
+    """Whether the phrase at ``i`` opens its clause (the subject of what follows)."""
+    return i == 0 or tokens[i - 1] in CLAUSE_START | SENTENCE_END
+
+
+def _clause(tokens: list[str], i: int) -> tuple[int, int]:
+    """The clause around ``i``: from the last clause boundary before it to the end of its sentence
+    (what the clause's subject does, and to whom, runs to there)."""
+    s, e = _sentence(tokens, i)
+    b = next((k + 1 for k in range(i - 1, s - 1, -1) if tokens[k] in CLAUSE_START), s)
+    return b, e
+
+
+def _steered(tokens: list[str], p) -> bool:
+    """Whether ``p`` is the object of a verb of steering said by the narrator or with no subject
+    ("we aimed the car at", "pointed the van at", "the system stopped the car dead")."""
+    if not p.start:
+        return False
+    verb = tokens[p.start - 1]
+    return verb.isalpha() and "VERB" in lemmas(verb) and _lemma_in(verb, STEERING)
+
+
+def _own_speed(tokens: list[str], p, users) -> bool:
+    """Whether a speed follows ``p`` in its clause before anyone else is named ("the van approaching
+    at 40 km/h")."""
+    _, e = _sentence(tokens, p.end)
+    e = next((k for k in range(p.end, e) if tokens[k] in PUNCT or tokens[k] in ("and", "but")), e)
+    nxt = min((q.start for q in users if q.start >= p.end), default=e)
+    return any(w in SPEED_UNITS for w in tokens[p.end : min(e, nxt)])
+
+
+def _narrator_speed(tokens: list[str], users) -> bool:
+    """Whether the narrator has a speed of their own in ``tokens`` ("we were doing 40 km/h", "us at
+    15 km/h"): said before a vehicle, it makes that vehicle someone else ("I was at 30 when the van
+    doing 50 ...")."""
+    for k, w in enumerate(tokens):
+        if w in FIRST_PERSON | {"us"}:
+            s, e = _sentence(tokens, k)
+            e = next((q.start for q in users if k < q.start < e), e)
+            if any(u in SPEED_UNITS for u in tokens[k:e]):
+                return True
+    return False
+
+
+def _label(tokens: list[str], q) -> bool:
+    """Whether ``q`` is a bare noun with a number, a call sign ("appliance 2", "unit 7"): no one new."""
+    return not q.det and tokens[q.end : q.end + 1] != [] and tokens[q.end].isdigit()
+
+
+def _unintroduced(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """A vehicle a first-person text says with "the" and never introduces is the narrator's own
+    when the text shows it is ("We pointed the car at a dummy", "the van approaching at 40 km/h,
+    and we stopped"): the object of a verb of steering, or the subject of its clause with a speed
+    of its own where the narrator has none. One placed relative to someone ("the van ahead"), of a
+    kind introduced before ("a hatchback ... the car"), a test's target, a numbered bus, or one in a
+    clause that meets the narrator ("the van pulled out in front of me") is someone else; so is
+    every vehicle where the narrator walks or rides."""
+    words = set(tokens)
+    if not FIRST_PERSON & words and not {"us", "our"} & words or "ego" in words:
+        return tokens
+    if _narrator_on_foot(tokens, kind_at):
+        return tokens
+    users = _road_users(tokens, kind_at, known)
+    if any(p.det in ("my", "our") and p.kind in VEHICLES for p in users):
+        return tokens  # (the narrator's vehicle is named as theirs)
+    for n, p in enumerate(users):
+        if p.kind not in VEHICLES or p.det != "the" or _placed(tokens, p) or _compound(tokens, p):
+            continue
+        said = tokens[p.start : p.end + 1]
+        if any(w in TEST_OBJECTS or w.isdigit() or w in ("number", "other") for w in said):
+            continue
+        if tokens[p.end : p.end + 1] == ["'s"] or any(q.kind == p.kind and not _label(tokens, q) for q in users[:n]):
+            continue  # (an owner's, or one of a kind named before: "a hatchback ... the car")
+        b, e = _clause(tokens, p.start)
+        steered = _steered(tokens, p)  # (what the narrator steers may well go at "our lane")
+        subject = _clause_start(tokens, p.start) and _own_speed(tokens, p, users)
+        subject = subject and not MEETS_NARRATOR & set(tokens[b:e]) and not _narrator_speed(tokens[: p.start], users)
+        landmark = tokens[max(p.start - 2, 0) : p.start] in (["front", "of"], ["ahead", "of"], ["path", "of"])
+        if not (steered or subject or landmark):  # (what someone crosses in front of is where the writer is)
+            continue
+        noun = tokens[p.end - 1]
+        dropped.extend(w for w in tokens[p.start : p.end] if w not in DEFINITE)
+        out = _as_ego([*tokens[: p.start], "the", "ego", *tokens[p.end :]], kind_at, known, noun, dropped)
+        out = _kind_again(out, p.kind, kind_at, known, dropped)
+        return _driver_is_ego(out, kind_at, known, dropped) if {"we", "us", "our"} & words else out
+    return tokens
+
+
+def _kind_again(tokens: list[str], kind: str, kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "We brought the saloon up to 50 km/h and pointed the car at ...": once the narrator's vehicle
+    is the ego, a later "the <noun>" of its kind is it again, until a vehicle of that kind is
+    introduced ("a car")."""
+    for q in _road_users(tokens, kind_at, known):
+        if q.kind == kind and q.det in INDEFINITE:
+            return tokens
+        if q.kind == kind and q.det == "the" and not _placed(tokens, q) and not _compound(tokens, q):
+            out = _as_ego(tokens, kind_at, known, tokens[q.end - 1], dropped)
+            return tokens if out == tokens else _kind_again(out, kind, kind_at, known, dropped)
+    return tokens
+
+
+def _heading(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "Coach driver here. Cruising at 60 mph ...", "Courier van, dual carriageway, I'm in the left
+    lane ...": a text that opens with a bare vehicle (or its driver) standing alone, as a heading
+    ("here", or a comma or full stop with no verb of its own after it), and tells its story in the
+    first person, introduces the writer by it: that vehicle is the ego, and so is every later
+    "the <noun>". "Van, no lights, came straight at me" (a verb follows) is a road user."""
+    if not (FIRST_PERSON | MEETS_NARRATOR) & set(tokens) or "ego" in tokens:
+        return tokens
+    chain = []  # (the nouns of the heading back to back: "courier van", "tanker driver")
+    for q in _road_users(tokens, kind_at, known):
+        if q.start != (chain[-1].end if chain else 0) or q.det:
+            break
+        chain.append(q)
+    vehicles = [q for q in chain if q.kind in VEHICLES]
+    if not vehicles or any(q.kind not in VEHICLES | {"pedestrian"} for q in chain):
+        return tokens
+    end, noun = chain[-1].end, tokens[vehicles[-1].end - 1]
+    here = tokens[end : end + 1] == ["here"]
+    if not here and tokens[end : end + 1] not in ([","], ["."], [":"], ["-"]):
+        return tokens
+    if not here:  # (no verb of its own before the narrator speaks: "Van, no lights, came at me")
+        _, e = _sentence(tokens, end)
+        stop = next((k for k in range(end, e) if tokens[k] in FIRST_PERSON), e)
+        for k in range(end + 1, stop):
+            pos = set(lemmas(tokens[k]))
+            if tokens[k].isalpha() and ("VERB" in pos and not pos & {"NOUN", "ADJ"} or tokens[k] in BE):
+                return tokens
+    cut = end + here
+    dropped.extend(w for w in tokens[:cut] if w.isalpha())
+    out = tokens[cut:]
+    while out and out[0] in PUNCT:
+        out = out[1:]
+    return _as_ego(out, kind_at, known, noun, dropped)
+
+
+def _ego_rider(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "Ego is a cyclist riding at 20 km/h", "the ego is a shared e-scooter rider", "Our rider on a
+    hire bike", "rider on our Gen-3 scooter": a rider the text says is the ego or calls ours is the
+    ego, not a bicycle or e-scooter besides it; so is every later "the rider" ("the cyclist").
+    "The ego is a car length behind a cyclist" says where the ego is, not what."""
+    users = _road_users(tokens, kind_at, known)
+    for k in range(len(tokens) - 2):
+        found = kind_at(tokens, k)
+        cut = None  # (start, end, what is said instead, the noun it is said again by)
+        if found is not None and found[0] == "ego" and tokens[k] not in ("i", "we", "me", "us"):
+            j = k + found[1]
+            q = next((q for q in users if j + 2 <= q.head <= j + 5), None)
+            if tokens[j : j + 1] and tokens[j] in BE and tokens[j + 1] in ("a", "an") and q is not None:
+                if q.kind in RIDERS and q.start <= j + 2 and not _placed(tokens, q):
+                    cut = (j, q.end, [], tokens[q.end - 1])
+        elif tokens[k] in ("our", "my") and tokens[k + 1] in AT_WHEEL and tokens[k + 2] == "on":
+            q = next((q for q in users if q.start == k + 3), None)
+            if q is not None and q.kind in RIDERS:
+                cut = (k, q.end, ["the", "ego"], tokens[k + 1])  # ("our rider on a hire bike")
+        elif tokens[k] in AT_WHEEL and tokens[k + 1] == "on" and tokens[k + 2] in ("our", "my"):
+            q = next((q for q in users if k + 2 <= q.start <= k + 5 and not PUNCT & set(tokens[k : q.start])), None)
+            if q is not None and q.kind in RIDERS:
+                start = k - (k > 0 and tokens[k - 1] in DEFINITE | INDEFINITE)
+                cut = (start, q.end, ["the", "ego"], tokens[k])  # ("rider on our prototype e-scooter")
+        if cut is None:
+            continue
+        a, b, said, rider = cut
+        dropped.extend(w for w in tokens[a:b] if w.isalpha() and w not in INDEFINITE | DEFINITE | {"our", "my"})
+        return _riders_as_ego([*tokens[:a], *said, *tokens[b:]], rider)
+    return tokens
+
+
+def _riders_as_ego(tokens: list[str], rider: str) -> list[str]:
+    """``tokens`` with every "the <rider>" said "the ego" (and a bare one opening a clause)."""
+    out: list[str] = []
+    for i, w in enumerate(tokens):
+        if w == rider and out and out[-1] == "the":
+            out[-1:] = ["the", "ego"]
+            continue
+        if w == rider and (not i or tokens[i - 1] in CLAUSE_START | SENTENCE_END):
+            out += ["the", "ego"]
+            continue
+        out.append(w)
+    return out
+
+
+def _driven_it(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "Got a scooter from the rack and was riding it at 15 km/h", "I'd hired a van. I was driving
+    it ...": what "it" stands for after a verb of driving or riding said by the narrator is the last
+    vehicle named before it (not placed relative to someone): the narrator's, the ego; so is every
+    later "the <noun>" of it."""
+    users = _road_users(tokens, kind_at, known)
+    for k in range(1, len(tokens)):
+        if tokens[k] != "it" or not _lemma_in(tokens[k - 1], AT_CONTROLS) or "VERB" not in lemmas(tokens[k - 1]):
+            continue
+        verb = k - 1
+        p = next((q for q in reversed(users) if q.end <= verb), None)
+        s = _sentence(tokens, verb)[0]  # (or a diary's sentence with no subject: "Got a scooter and was riding it")
+        opens = tokens[s].isalpha() and "VERB" in lemmas(tokens[s]) and not {"NOUN", "PROPN"} & set(lemmas(tokens[s]))
+        subjectless = opens and not any(s <= q.start < verb and q is not p for q in users)
+        told = _narrator_subject(tokens, verb) or subjectless
+        if not told or p is None or p.kind not in VEHICLES | RIDERS or _placed(tokens, p):
+            continue
+        if _sentence(tokens, p.start)[0] < _sentence(tokens, _sentence(tokens, verb)[0] - 1)[0]:
+            continue  # (named two sentences before or more: "it" may be anything since)
+        noun = tokens[p.end - 1]
+        dropped.extend(w for w in tokens[p.start : p.end] if w not in DEFINITE | INDEFINITE)
+        out = [*tokens[: p.start], "the", "ego", *tokens[p.end : k], *tokens[k + 1 :]]
+        return _riders_as_ego(out, noun)
+    return tokens
+
+
+def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """``tokens`` with the writer's own vehicle said "the ego" where the writer is in it or tests it
+    (see the module's docstring); the words that only named it are added to ``dropped``."""
+    tokens = _ego_rider(tokens, kind_at, known, dropped)
+    tokens = _driven_it(tokens, kind_at, known, dropped)
+    tokens = _heading(tokens, kind_at, known, dropped)
+    return _unintroduced(tokens, kind_at, known, dropped)
