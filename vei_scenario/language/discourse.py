@@ -1836,6 +1836,34 @@ def _people_in_general(tokens: list[str], kind_at: KindAt, known: Known, dropped
     return out
 
 
+def _others_in_general(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "he and other drivers had to pull out", "so other cars had to brake too": "other" before a bare
+    plural (no article, no count) sets the road users of the event against everyone else on the road:
+    people in general, none of the scene; "other" and the plural are left out (listed as not used).
+    A counted or definite group ("two other cyclists", "the other joggers") is so many road users, and
+    the plural stays when it is the only road user the text names."""
+    phrases = _phrases(tokens, kind_at, known)
+    cut: list[tuple[int, int]] = []
+    for p in phrases:
+        o = next((j for j in range(p.head, max(p.head - 3, -1), -1) if tokens[j] == "other"), None)
+        if o is None or p.kind == "ego" or _singular(tokens[p.end - 1]) or not tokens[p.end - 1].isalpha():
+            continue
+        before = tokens[o - 1] if o else ""
+        if before in _COUNTED or before.isdigit() or before in DEFINITE or before in POSSESSIVE:
+            continue
+        if any(not tokens[j].isalpha() for j in range(o + 1, p.head)):
+            continue
+        if not any(q.kind != "ego" for q in phrases if q.head != p.head):
+            continue  # (the only road user named: it is the scene's)
+        cut.append((o, p.end))
+    out = list(tokens)
+    for start, stop in cut:
+        dropped.extend(tokens[start:stop])
+    for start, stop in reversed(cut):
+        del out[start:stop]
+    return out
+
+
 #: Marks that end a heading: the end of its line or sentence (a colon goes on with a label's value).
 _HEADING_ENDS = frozenset({".", "!", "?"})
 
@@ -2002,6 +2030,7 @@ def resolve(
     tokens = _passengers(tokens, kind_at, known, dropped)
     tokens = _witnesses(tokens, kind_at, known, dropped)
     tokens = _people_in_general(tokens, kind_at, known, dropped)
+    tokens = _others_in_general(tokens, kind_at, known, dropped)
     tokens = _narrator_on_foot(tokens, kind_at, known, dropped)
     tokens = _ego_apposition(tokens, kind_at, known, dropped)
     tokens = _ego_predicate(tokens, kind_at, known, dropped)
