@@ -29,6 +29,8 @@ from vei_scenario.language.lemmas import lemmas
 
 KindAt = Callable[[list[str], int], "tuple[str, int] | None"]
 Known = Callable[[list[str], int], bool]
+#: A rule that says "the ego" in ``tokens`` (same arguments as :func:`frame`).
+Framer = Callable[[list[str], KindAt, Known, list[str]], list[str]]
 
 VEHICLES = frozenset({"car", "van", "truck"})
 DEFINITE = frozenset({"the", "that", "this"})
@@ -1079,10 +1081,14 @@ def _organisation_vehicle(tokens: list[str], kind_at: KindAt, known: Known, drop
     return tokens
 
 
-def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+def frame(
+    tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str], about: Framer | None = None
+) -> list[str]:
     """``tokens`` framed (see :func:`_frame`), then "the driver" of an ego named by a role said the
-    ego (see :func:`_role_driver`)."""
-    return _role_driver(_frame(tokens, kind_at, known, dropped), kind_at, known, dropped)
+    ego (see :func:`_role_driver`). ``about`` is the last resort for a report that names no ego
+    (:func:`vei_scenario.language.protagonist.frame`, the vehicle the report is about); the caller
+    passes it because that module builds on this one's phrases."""
+    return _role_driver(_frame(tokens, kind_at, known, dropped, about), kind_at, known, dropped)
 
 
 def _role_driver(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
@@ -1111,7 +1117,9 @@ def _role_driver(tokens: list[str], kind_at: KindAt, known: Known, dropped: list
     return out
 
 
-def _frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+def _frame(
+    tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str], about: Framer | None = None
+) -> list[str]:
     """``tokens`` with the road user the text is told from said "the ego" where the text names it by
     a role, by its driver or in the third person (see the module's docstring); the words that only
     named it are added to ``dropped``. The reader runs it before :func:`discourse.resolve` (which this
@@ -1153,6 +1161,4 @@ def _frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str])
     tokens = _struck(tokens, kind_at, known, dropped)
     if names_ego(tokens, kind_at, known):
         return tokens
-    from vei_scenario.language import protagonist
-
-    return protagonist.frame(tokens, kind_at, known, dropped)  # (the vehicle a report is about)
+    return tokens if about is None else about(tokens, kind_at, known, dropped)  # (the vehicle a report is about)

@@ -41,6 +41,7 @@ from vei_scenario.language.ego import (
     _road_users,
     _sentence,
 )
+from vei_scenario.language.ego_speed import impact_after_braking
 from vei_scenario.language.lemmas import lemmas
 
 #: First-person words that say someone meets the narrator ("in front of me", "my lane"): a vehicle
@@ -110,14 +111,14 @@ def _own_speed(tokens: list[str], p, users) -> bool:
 
 def _narrator_speed(tokens: list[str], users) -> bool:
     """Whether the narrator has a speed of their own in ``tokens`` ("we were doing 40 km/h", "us at
-    15 km/h"): said before a vehicle, it makes that vehicle someone else ("I was at 30 when the van
-    doing 50 ...")."""
+    15 km/h"): a vehicle with a speed of its own beside it is someone else ("I was at 30 when the van
+    doing 50 ...", "the coach was doing 40 when it pulled in; we were at 70")."""
     for k, w in enumerate(tokens):
         if w in FIRST_PERSON | {"us"}:
             s, e = _sentence(tokens, k)
             e = next((q.start for q in users if k < q.start < e), e)
-            if any(u in SPEED_UNITS for u in tokens[k:e]):
-                return True
+            if any(tokens[u] in SPEED_UNITS and not impact_after_braking(tokens, u - 1) for u in range(k, e)):
+                return True  # (not the speed the narrator hits something at: "we struck it at 12 mph")
     return False
 
 
@@ -153,7 +154,7 @@ def _unintroduced(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
         b, e = _clause(tokens, p.start)
         steered = _steered(tokens, p)  # (what the narrator steers may well go at "our lane")
         subject = _clause_start(tokens, p.start) and _own_speed(tokens, p, users)
-        subject = subject and not MEETS_NARRATOR & set(tokens[b:e]) and not _narrator_speed(tokens[: p.start], users)
+        subject = subject and not MEETS_NARRATOR & set(tokens[b:e]) and not _narrator_speed(tokens, users)
         landmark = tokens[max(p.start - 2, 0) : p.start] in (["front", "of"], ["ahead", "of"], ["path", "of"])
         if not (steered or subject or landmark):  # (what someone crosses in front of is where the writer is)
             continue

@@ -36,6 +36,7 @@ from vei_scenario.language import (
     junctions,
     motion,
     narrator_vehicle,
+    protagonist,
     scenery,
     sides,
     whose_act,
@@ -574,7 +575,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
         (typed, read) for typed, read in zip(_tokens(text, spell=False, brackets=True), tokens) if typed != read
     ]
     framed: list[str] = []
-    tokens = ego.frame(tokens, _kind_at, _known, framed)  # (the ego named by a role, its driver, a witness)
+    tokens = ego.frame(tokens, _kind_at, _known, framed, protagonist.frame)  # (by a role, its driver, a witness)
     tokens = narrator_vehicle.frame(tokens, _kind_at, _known, framed)  # (the writer in it or testing it)
     tokens = generic_ego.frame(tokens, _kind_at, _known, framed)  # (the ego as drivers in general)
     tokens = ego_speed.at_the_limit(tokens)  # ("doing the 20 limit": at 20)
