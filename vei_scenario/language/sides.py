@@ -1134,3 +1134,46 @@ def not_a_side(tokens: list[str], i: int) -> bool:
     if word == "left":
         return prev in _LEAVERS and nxt in _LEFT_OBJECTS
     return False
+
+
+#: The ends of a vehicle a road user can go into from behind ("into the rear of my car", "the back of us").
+_REAR = frozenset({"rear", "back"})
+
+
+def into_the_ego_rear(clauses: list) -> list:
+    """Clauses (link, mentions) with "into the rear/back of" the ego said of a road user moved right
+    after that road user, so it is the first place said of it. Why: going into the ego's rear says
+    where it started (behind), even when it was first said to travel "in the same direction" (read as
+    ahead) or the start is said only in this later phrase; the rear of another road user ("went into
+    the back of it", "the rear of the van") says nothing of where that one starts."""
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k in range(1, len(kept) - 1):
+            rear, owner = kept[k], kept[k + 1]
+            if rear.slot != "relation" or rear.value != "behind" or rear.words not in _REAR:
+                continue
+            if rear.prev != "into" or rear.next_ != "of" or owner.slot != "actor" or owner.value != "ego":
+                continue
+            who = _mover_before(kept, k)
+            if who is None:
+                continue
+            del kept[k]
+            kept.insert(who + 1, rear)
+        out.append((link, kept))
+    return out
+
+
+def _mover_before(mentions: list, k: int) -> int | None:
+    """The index of the road user that goes into the ego's rear at ``k``: the nearest before it, past
+    the ego named as an object ("going the same way as us"); None when the ego is the one that acts
+    ("we went into the back of ...")."""
+    for j in range(k - 1, -1, -1):
+        m = mentions[j]
+        if m.slot != "actor":
+            continue
+        if m.value != "ego":
+            return j
+        if mentions[j + 1].slot in ("behaviour", "intent", "ego_verb"):
+            return None
+    return None
