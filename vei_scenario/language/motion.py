@@ -154,6 +154,21 @@ def _into_someone(tokens: list[str], j: int) -> bool:
     return _names_road_user(obj) or obj[:1] in (["me"], ["us"], ["ego"]) or obj[:2] == ["the", "ego"]
 
 
+#: Words before a verb of contact that say the contact did not happen ("nearly hit", "didn't clip").
+_NO_CONTACT = frozenset(("nearly", "almost", "narrowly", "not", "never", "without", "didn't", "didnt", "avoid",
+                         "avoided", "avoiding", "to"))  # fmt: skip
+
+
+def _struck_earlier(tokens: list[str], i: int) -> bool:
+    """Whether a verb of contact that happened stands anywhere before token ``i`` ("hit me. It then
+    carried on before stopping"): a stop after it is how the incident ended, whatever sentence it is
+    in; a contact that was missed ("nearly hit", "without hitting") ended nothing."""
+    return any(
+        set(lemmas(tok).get("VERB", ())) & _TOUCH and (j == 0 or tokens[j - 1] not in _NO_CONTACT)
+        for j, tok in enumerate(tokens[:i])
+    )
+
+
 def outcome_not_behaviour(clauses: list, tokens: list[str] | None = None) -> list:
     """``clauses`` (the reader's mentions, by clause) without the verbs that state the outcome rather
     than what a road user does: a contact verb whose subject is both parties or that says what it met
@@ -169,6 +184,8 @@ def outcome_not_behaviour(clauses: list, tokens: list[str] | None = None) -> lis
                 fall = tokens is not None and "fall" in lemmas(first).get("VERB", ())
                 if fall and _touched_before(tokens, m.start):
                     continue  # ("..., struck the ego's mirror, falling into the road": the outcome)
+                if m.value[0] == "stop" and tokens is not None and _struck_earlier(tokens, m.start):
+                    continue  # ("struck my bumper and carried on before stopping": the aftermath)
                 before = next((x for x in reversed(mentions[:k]) if x.slot not in ("modal", "ego_verb")), None)
                 plural = m.prev in _BOTH or (before is not None and before.slot == "pronoun" and before.words in _BOTH)
                 if first in _CONTACT and plural:
