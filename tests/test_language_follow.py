@@ -61,3 +61,32 @@ def test_a_lead_that_stops_dead_in_front_stops():
 def test_a_follower_that_slowed_then_overtook_overtakes():
     got = behaviours("I was driving at 40 km/h. A lorry behind me slowed and then overtook me.")
     assert got and "overtake" in got[0]
+
+
+# --- a road user's act that repeats the ego's ("every time I slowed he slowed") is following ------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was doing 40 mph when a van behind me sat on my bumper. Every time I slowed he slowed.",
+        "At 60 km/h a hatchback tailgated me for miles, braking whenever I braked.",
+        "I was on the bypass at 50 mph with a lorry tailgating me; each time we slowed down it slowed down too.",
+    ],
+    ids=["every-time", "whenever", "each-time-we"],
+)
+def test_copying_the_ego_is_following(text):
+    assert behaviours(text) == [["follow_vehicle"]]
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # the ego answers the road user: the road user's braking is its own
+        ("I was doing 40 mph behind a van and I braked when the van braked hard.", "sudden_stop"),
+        # a different act from the ego's
+        ("I was doing 40 mph. When I slowed, the cyclist ahead of me stopped dead.", "sudden_stop"),
+    ],
+    ids=["ego-answers", "different-act"],
+)
+def test_an_act_not_copying_the_ego_stays(text, expected):
+    got = behaviours(text)
+    assert any(expected in bs for bs in got), got
