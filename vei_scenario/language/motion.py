@@ -154,6 +154,43 @@ def _into_someone(tokens: list[str], j: int) -> bool:
     return _names_road_user(obj) or obj[:1] in (["me"], ["us"], ["ego"]) or obj[:2] == ["the", "ego"]
 
 
+#: Words before a verb of contact that say the contact did not happen ("nearly hit", "didn't clip").
+_NO_CONTACT = frozenset(("nearly", "almost", "narrowly", "not", "never", "without", "didn't", "didnt", "avoid",
+                         "avoided", "avoiding", "to"))  # fmt: skip
+
+
+def _struck_earlier(tokens: list[str], i: int) -> bool:
+    """Whether a verb of contact that happened stands anywhere before token ``i`` ("hit me. It then
+    carried on before stopping"): a stop after it is how the incident ended, whatever sentence it is
+    in; a contact that was missed ("nearly hit", "without hitting") ended nothing."""
+    return any(
+        set(lemmas(tok).get("VERB", ())) & _TOUCH and (j == 0 or tokens[j - 1] not in _NO_CONTACT)
+        for j, tok in enumerate(tokens[:i])
+    )
+
+
+#: Words that open a clause of the ego's act a road user's same act answers ("every time I slowed").
+_EACH_TIME = frozenset(("when", "whenever", "time", "as", "if"))
+
+
+def _mirrors_the_ego(tokens: list[str], i: int) -> bool:
+    """Whether the verb at token ``i`` repeats a verb said of the ego in a clause of "when I ...",
+    "every time we ..." of its sentence ("every time I slowed he slowed", "braking when I braked"):
+    the road user copies the ego, which is following it, not a speed change of its own. The ego
+    answering a road user ("I braked when the van braked") is not this: there the ego's clause is
+    the main one. The verb of the ego's clause itself is the ego's, not the road user's."""
+    if i >= 2 and tokens[i - 1] in ("i", "we") and tokens[i - 2] in _EACH_TIME:
+        return True  # (the ego's own act in that clause, never the road user's)
+    own = set(lemmas(tokens[i]).get("VERB", ()))
+    start = max((j + 1 for j in range(i) if tokens[j] in (".", "!", "?", ";")), default=0)
+    end = next((j for j in range(i, len(tokens)) if tokens[j] in (".", "!", "?", ";")), len(tokens))
+    return any(
+        tokens[j] in _EACH_TIME and tokens[j + 1] in ("i", "we") and own & set(lemmas(tokens[j + 2]).get("VERB", ()))
+        for j in range(start, min(end, len(tokens)) - 2)
+        if j + 2 != i
+    )
+
+
 def outcome_not_behaviour(clauses: list, tokens: list[str] | None = None) -> list:
     """``clauses`` (the reader's mentions, by clause) without the verbs that state the outcome rather
     than what a road user does: a contact verb whose subject is both parties or that says what it met
@@ -169,6 +206,11 @@ def outcome_not_behaviour(clauses: list, tokens: list[str] | None = None) -> lis
                 fall = tokens is not None and "fall" in lemmas(first).get("VERB", ())
                 if fall and _touched_before(tokens, m.start):
                     continue  # ("..., struck the ego's mirror, falling into the road": the outcome)
+                if m.value[0] == "stop" and tokens is not None and _struck_earlier(tokens, m.start):
+                    continue  # ("struck my bumper and carried on before stopping": the aftermath)
+                slows = m.value[0] in ("change_speed", "sudden_stop", "stop")
+                if slows and tokens is not None and _mirrors_the_ego(tokens, m.start):
+                    continue  # ("every time I slowed he slowed": following, not its own slowing)
                 before = next((x for x in reversed(mentions[:k]) if x.slot not in ("modal", "ego_verb")), None)
                 plural = m.prev in _BOTH or (before is not None and before.slot == "pronoun" and before.words in _BOTH)
                 if first in _CONTACT and plural:
