@@ -30,6 +30,19 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from vei_scenario.language.ego import (
+    AT_WHEEL,
+    DEFINITE,
+    INDEFINITE,
+    PLACED,
+    SPEED_UNITS,
+    VEHICLES,
+    _compound,
+    _placed,
+    _road_users,
+    _sentence,
+    names_ego,
+)
 from vei_scenario.language.lemmas import lemmas
 
 #: Verbs of the reaction a report gives the vehicle it is about (lemmas), a closed class.
@@ -65,19 +78,11 @@ class _Referent:
         return self.speed + self.reacts + self.placed_by
 
 
-def _sentence_end(tokens: list[str], i: int) -> int:
-    from vei_scenario.language.ego import SENTENCE_END
-
-    while i < len(tokens) and tokens[i] not in SENTENCE_END:
-        i += 1
-    return i
-
-
 def _past_aside(tokens: list[str], k: int, relative_only: bool = False) -> int:
     """Past a relative aside after a mention (", which she estimated to be doing 20 mph,"): where the
     clause resumes, else ``k``."""
     if tokens[k : k + 1] == [","] and tokens[k + 1 : k + 2]:
-        end = _sentence_end(tokens, k)
+        end = _sentence(tokens, k)[1]
         close = next((c for c in range(k + 2, end) if tokens[c] == ","), None)
         relative = tokens[k + 1] in ("which", "who", "that")
         if close is not None and (relative or (close - k <= 7 and not relative_only)):  # (", a 54-year-old woman,")
@@ -88,9 +93,7 @@ def _past_aside(tokens: list[str], k: int, relative_only: bool = False) -> int:
 def _has_speed(tokens: list[str], p, nxt: int) -> bool:
     """A speed follows the mention in its sentence before anyone else is named, not one it changes to
     ("slows to 20 km/h")."""
-    from vei_scenario.language.ego import SPEED_UNITS
-
-    end = min(_sentence_end(tokens, p.end), nxt)
+    end = min(_sentence(tokens, p.end)[1], nxt)
     aside = _past_aside(tokens, p.end, relative_only=True)
     if aside == p.end and tokens[p.end : p.end + 1] == [","]:
         return False  # (not its own: "a stopped truck, 80 km/h" in a terse line is the ego's speed)
@@ -109,7 +112,7 @@ def _reacts(tokens: list[str], p, others: list[int], first: bool = False) -> boo
     pedestrian walks out" is the bus's own stop, no reaction)."""
     at = []
     if first:
-        end = _sentence_end(tokens, p.end)
+        end = _sentence(tokens, p.end)[1]
         at = [v for k in range(p.end, end) if tokens[k] in ("and", "but") and (v := _verb_of_reacting(tokens, k + 1))]
     if v := _verb_of_reacting(tokens, _past_aside(tokens, p.end)):
         at.append(v)
@@ -143,11 +146,9 @@ def _placed_by(tokens: list[str], p) -> bool:
 def _placed_by_unsaid(tokens: list[str], p, nxt: int) -> bool:
     """The mention is placed by someone the text leaves unsaid: a word of place in it ("a lead van")
     or in its clause with no one after it ("brakes hard 20 m ahead", "is coming up behind")."""
-    from vei_scenario.language.ego import PLACED
-
     if any(w in PLACED for w in tokens[p.start : p.end]):
         return True
-    end = min(_sentence_end(tokens, p.end), nxt)
+    end = min(_sentence(tokens, p.end)[1], nxt)
     return any(
         tokens[k] in ("ahead", "behind") and tokens[k + 1 : k + 2] not in (["of"], ["it"], ["him"], ["her"], ["them"])
         for k in range(p.end, end)
@@ -157,8 +158,6 @@ def _placed_by_unsaid(tokens: list[str], p, nxt: int) -> bool:
 def _referents(tokens: list[str], users, vehicles: frozenset[str]) -> tuple[list[_Referent], _Referent | None]:
     """The road users of ``users`` grouped by the referent they repeat, and the bare report's
     driver ("Driver braked", "the driver stopped") as its own referent (None when not said)."""
-    from vei_scenario.language.ego import AT_WHEEL, DEFINITE, INDEFINITE, _compound
-
     out: list[_Referent] = []
     driver: _Referent | None = None
     for p in users:
@@ -207,7 +206,6 @@ def frame(tokens: list[str], kind_at, known, dropped: list[str]) -> list[str]:
     """``tokens`` with the vehicle a third-person report is about said "the ego" (see the module's
     docstring), and its bare driver too; unchanged where no vehicle stands out."""
     from vei_scenario.language.discourse import _singular
-    from vei_scenario.language.ego import VEHICLES, _placed, _road_users, names_ego
 
     if names_ego(tokens, kind_at, known):
         return tokens
