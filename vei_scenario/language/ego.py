@@ -577,6 +577,51 @@ def _news_driver(tokens: list[str], kind_at: KindAt, known: Known, dropped: list
     return tokens
 
 
+#: Possessives a news report gives the driver it opens on ("his cab", "her van"), with the gender
+#: of the pronouns that go on with that driver.
+POSSESSIVES = frozenset(PRONOUNS_OF)
+
+
+def _followed_driver(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "A taxi driver has been cleared after a rider shot into the path of his cab. He was travelling
+    at 20 mph", "A delivery driver ... after her van struck a woman": a report that opens on a driver
+    (the first road user it names, the subject of its clause) and goes on with "his"/"her" vehicle
+    follows that driver: the driver, that vehicle and the driver's pronouns are the ego, so a speed
+    said of "he"/"she" is the ego's (where no one else of that gender is named). Where another motor
+    vehicle is named before the possessive, or the driver is not the first road user named ("A
+    cyclist was hurt when a van driver opened his door"), whose vehicle it is stays open and nothing
+    is read."""
+    users = _road_users(tokens, kind_at, known)
+    if not users or tokens[users[0].end - 1] not in ("driver", "motorist"):
+        return tokens
+    p = users[0]
+    if p.start and tokens[p.start - 1] not in CLAUSE_OPENING | {"that"}:
+        return tokens
+    end = p.end
+    if tokens[end : end + 1] == ["of"] and len(users) > 1 and users[1].start == end + 1:
+        if users[1].kind not in VEHICLES or _placed(tokens, users[1]):
+            return tokens
+        end = users[1].end  # ("the driver of a bin lorry")
+    owned = next(
+        (q for q in users if q.start >= end and q.det in POSSESSIVES and q.kind in VEHICLES and not _placed(tokens, q)),
+        None,
+    )
+    if owned is None:
+        return tokens
+    owner = owned.det
+    if any(q.kind in VEHICLES for q in users if end <= q.start < owned.start):
+        return tokens  # (another motor vehicle named before "his van": whose van is open)
+    dropped.extend(w for w in tokens[p.start : end] if w.isalpha() and w not in DEFINITE | INDEFINITE)
+    out = list(tokens)
+    for q in reversed(users):
+        if q.start >= end and q.det == owner and q.kind in VEHICLES and not _placed(tokens, q):
+            dropped.extend(w for w in out[q.start + 1 : q.end] if w.isalpha())
+            out[q.start : q.end] = ["the", "ego"]
+    out[p.start : end] = ["the", "ego"]
+    out = _as_ego(out, kind_at, known, tokens[owned.end - 1], dropped)
+    return _pronouns_as_ego(out, owner, kind_at, known)
+
+
 def _role(tokens: list[str], kind_at: KindAt) -> list[str]:
     """A person named by the role a driving lesson or a claim gives them ("Pupil approached the
     roundabout at 20 mph", "the policyholder was travelling"): a learner in a sentence that gives a
@@ -1153,6 +1198,9 @@ def _frame(
     if names_ego(tokens, kind_at, known):
         return tokens
     tokens = _news_driver(tokens, kind_at, known, dropped)
+    if names_ego(tokens, kind_at, known):
+        return tokens
+    tokens = _followed_driver(tokens, kind_at, known, dropped)
     if names_ego(tokens, kind_at, known):
         return tokens
     tokens = _role(tokens, kind_at)
