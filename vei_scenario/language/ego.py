@@ -622,6 +622,106 @@ def _followed_driver(tokens: list[str], kind_at: KindAt, known: Known, dropped: 
     return _pronouns_as_ego(out, owner, kind_at, known)
 
 
+def _person_driving(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "A pensioner was driving his estate at 30 mph when ...", "A Leeds woman who struck a cyclist
+    while driving at 45 mph ...", "A farmer, 60, was driving along the lane": a person named by a
+    noun of a person, the subject opening its clause, whose own verb (or relative clause) is one of
+    driving, is at a wheel: that person is the ego, no walker, and so are the vehicle driven and the
+    person's pronouns. "A woman was hit by a man driving a van" (no subject) or "a man walking his
+    dog" (no driving) reads nothing."""
+    for p in _road_users(tokens, kind_at, known):
+        start = next((b for b in (p.start - 1, p.start - 2) if b >= 0 and tokens[b] in ("a", "an", "the")), p.start)
+        if p.det or not all(w.isalpha() for w in tokens[start : p.start]):
+            start = p.start  # (its article and a word of where it is from: "a Leeds woman")
+        if p.kind != "pedestrian" or (start and tokens[start - 1] not in CLAUSE_OPENING | {"that"}):
+            continue
+        k = _past_apposition(tokens, p.end)
+        if tokens[k : k + 1] == ["who"]:  # (its relative clause, up to where it closes)
+            k += 1
+            _, e = _sentence(tokens, k)
+            e = next((c for c in range(k, e) if tokens[c] == ","), e)
+            at = next(  # (its own driving: "who was driving", "who hit ... while driving", not "a van driving")
+                (j for j in range(k, e) if tokens[j] in DRIVING and tokens[j - 1] in SUBORDINATORS | BE | {"who"}),
+                None,
+            )
+        else:
+            while k < len(tokens) and tokens[k] in BETWEEN:
+                k += 1
+            at = k if tokens[k : k + 1] and tokens[k] in DRIVING else None
+        if at is None:
+            continue
+        noun = tokens[p.end - 1]
+        owner = next((g for g, nouns in GENDERED.items() if noun in nouns), None)
+        driven = next((q for q in _road_users(tokens, kind_at, known) if at < q.start <= at + 4), None)
+        out = list(tokens)
+        if driven is not None and driven.kind in VEHICLES and out[at + 1] in OWNING | {"a", "an"}:
+            owner = owner or (out[at + 1] if out[at + 1] in PRONOUNS_OF else None)
+            dropped.extend(w for w in out[driven.start : driven.end] if w.isalpha() and w not in OWNING)
+            out[driven.start : driven.end] = []
+            out = _as_ego(out, kind_at, known, tokens[driven.end - 1], dropped)
+        dropped.extend(w for w in out[start : p.end] if w.isalpha() and w not in DEFINITE | INDEFINITE)
+        out[start : p.end] = ["the", "ego"]
+        return _pronouns_as_ego(out, owner, kind_at, known) if owner else out
+    return tokens
+
+
+def _past_apposition(tokens: list[str], k: int) -> int:
+    """Past an age or a short aside after a name (", 52,", ", a retired teacher,"): where its clause
+    goes on, else ``k``."""
+    if tokens[k : k + 1] != [","]:
+        return k
+    close = next((c for c in range(k + 1, min(k + 6, len(tokens))) if tokens[c] == ","), None)
+    return close + 1 if close is not None else k
+
+
+def _operator_fleet(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
+    """ "when two of our scooters came on from the next arm", "a van pulled out in front of our rider":
+    where the only first-person word is "our" and each stands right before a walker or rider (a hire
+    scheme's scooters, its riders), the writer is the operator, not in the scene: "our" is said
+    "the", so the report is read in the third person. "our van", "our driver" (a vehicle or its
+    driver) or any "I", "we", "me", "my" keeps the writer in the scene."""
+    first = [k for k, w in enumerate(tokens) if w in FIRST_PERSON | NARRATOR_INVOLVED - {"ego"}]
+    if not first or any(tokens[k] != "our" for k in first):
+        return tokens
+    users = {p.start: p for p in _road_users(tokens, kind_at, known)}
+    starts = {p.head: p for p in users.values()}
+    for k in first:
+        p = users.get(k) or users.get(k + 1) or starts.get(k + 1)
+        if p is None or p.kind in VEHICLES | {"ego"} or tokens[p.end - 1] in AT_WHEEL:
+            return tokens
+    return ["the" if k in first else w for k, w in enumerate(tokens)]
+
+
+def _labelled_driver(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "Unit 7. Driver was doing 40 mph ...", "Vehicle: Cab 22 ... Driver braked hard": a log that names
+    one vehicle by its label and then speaks of a bare "Driver" (no article, opening its clause, not
+    "Driver of ...") speaks of that vehicle's own driver: the label, that driver and every later "the
+    <noun>" of it are the ego, so the driver's speed is the ego's. With two labels ("Car 1 ... Car 2"),
+    whose driver it is stays open; "a bus driver" or "the driver" is someone named otherwise."""
+    from vei_scenario.language.discourse import _label_noun_again, _labels
+
+    labels = _labels(tokens, kind_at, known)
+    if len({(n, m) for _, n, m in labels}) != 1:
+        return tokens
+    first, noun, mark = labels[0]
+    bare = [
+        k
+        for k, w in enumerate(tokens)
+        if w == "driver"
+        and k > first + 1
+        and tokens[k - 1] in CLAUSE_OPENING
+        and tokens[k + 1 : k + 2] not in (["of"], [":"])
+    ]
+    if not bare:
+        return tokens
+    out = list(tokens)
+    for k in reversed(bare):
+        out[k : k + 1] = ["the", "ego"]
+    dropped.extend(["driver"] * len(bare) + [noun, mark])
+    out = _label_noun_again(_label_as_ego(out, [noun, mark]), (noun, mark), [(noun, mark)])  # ("unit speed 54 mph")
+    return _as_ego(out, kind_at, known, noun, dropped)
+
+
 def _role(tokens: list[str], kind_at: KindAt) -> list[str]:
     """A person named by the role a driving lesson or a claim gives them ("Pupil approached the
     roundabout at 20 mph", "the policyholder was travelling"): a learner in a sentence that gives a
@@ -1183,12 +1283,16 @@ def _frame(
     tokens = _reported(tokens, kind_at, known, dropped)
     tokens = _fleet_member(tokens, kind_at, known, dropped)
     tokens = _ego_drives(tokens, kind_at, known, dropped)
+    tokens = _operator_fleet(tokens, kind_at, known)
     if names_ego(tokens, kind_at, known):
         if names_ego(_story(tokens, kind_at, known), kind_at, known):
             return tokens
         return _at_the_wheel(tokens, kind_at, known, dropped)  # (the writer only in asides)
     from vei_scenario.language.discourse import _labels
 
+    tokens = _labelled_driver(tokens, kind_at, known, dropped)
+    if names_ego(tokens, kind_at, known):
+        return tokens
     if _labels(tokens, kind_at, known):
         return tokens  # (a report's labels say who the ego is)
     tokens = _at_the_wheel(tokens, kind_at, known, dropped)
@@ -1201,6 +1305,9 @@ def _frame(
     if names_ego(tokens, kind_at, known):
         return tokens
     tokens = _followed_driver(tokens, kind_at, known, dropped)
+    if names_ego(tokens, kind_at, known):
+        return tokens
+    tokens = _person_driving(tokens, kind_at, known, dropped)
     if names_ego(tokens, kind_at, known):
         return tokens
     tokens = _role(tokens, kind_at)

@@ -419,8 +419,9 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     text = re.sub(r"^\s*(?:[-*\u2022\u00b7\u2013]|\d{1,2}[.)])\s+", "", text)
     text = re.sub(r"\s*\n\s*(?:(?:[-*\u2022\u00b7\u2013]|\d{1,2}[.)])\s+)?", ". ", text)
     text = re.sub(r"\s*\|\s*|\s+/\s+", ". ", text)  # fields between bars or spaced slashes: one a sentence
-    # a spaced dash between words ("light rain - delivery truck ..."): a break in the sentence, as a comma is
-    text = re.sub(r"(?<=[^\W\d_])\s+[-\u2013\u2014]\s+(?=[^\W\d_])", ", ", text)
+    # a spaced dash before a word ("light rain - delivery truck ...", "triggered 22:16 - lead vehicle"): a
+    # break in the sentence, as a comma is (between numbers, "30 - 40 km/h", it is a range)
+    text = re.sub(r"(?<=[^\W_])\s+[-\u2013\u2014]\s+(?=[^\W\d_])", ", ", text)
     # "@ 3 m/s", "car@30kph": the shorthand for "at" before a number, so the number keeps the grammar of
     # "at 3 m/s" (said of the one that acts), not of a bare number after a noun
     text = re.sub(r"\s*@\s*(?=[~\d])", " at ", text)
