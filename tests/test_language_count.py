@@ -551,3 +551,117 @@ def test_done_is_no_name_of_the_ego(text):
 
 def test_a_code_of_the_ego_in_figures_still_names_it():
     assert kinds("D1 was travelling at 30 mph when D2 pulled out from the left in front of D1.") == ["car"]
+
+
+# --- a number of people the lexicon has no word for, on vehicles, is so many riders ---------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("Two youths on bikes swung out from the left kerb in front of me.", ["bicycle", "bicycle"]),
+        ("Three lads on e-scooters rode towards me on the wrong side of the road.", ["e-scooter"] * 3),
+        ("2 suspects on stolen e-scooters crossed in front of the patrol car from the right.", ["e-scooter"] * 2),
+        ("Two couriers riding bikes came out of the side street on my left.", ["bicycle", "bicycle"]),
+    ],
+    ids=["youths-bikes", "lads-scooters", "figure-suspects", "couriers-riding"],
+)
+def test_a_count_of_unknown_people_on_vehicles_is_so_many_riders(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("After two hours on bikes we rode home and a van pulled out in front of us from the right.", ["van"]),
+        ("Two weeks on e-scooters has taught me nothing; a rider cut across in front of me.", ["e-scooter"]),
+    ],
+    ids=["hours-on-bikes", "weeks-on-scooters"],
+)
+def test_a_count_that_is_no_group_of_riders_stays_as_it_was(text, expected):
+    assert kinds(text) == expected
+
+
+# --- "two of them": a number picked out of a plural said before (no count of its own) ------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        (
+            "The delivery cyclists were out in numbers tonight. Two of them shot across the junction in front of "
+            "me on red.",
+            ["bicycle", "bicycle"],
+        ),
+        ("Joggers use this lane at dawn. Three of them ran across in front of me from the right.", ["pedestrian"] * 3),
+        (
+            "Hire scooters everywhere after the match, and one of them rode straight out in front of me from the left.",
+            ["e-scooter"],
+        ),
+    ],
+    ids=["two-of-them", "three-of-them", "one-of-them"],
+)
+def test_a_number_of_them_after_an_uncounted_plural_is_so_many_road_users(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("Two cyclists rode ahead of me; one of them braked hard.", ["bicycle", "bicycle"]),
+        ("One of the three lorries pulled out in front of me from the left.", ["truck"]),
+        ("Two cyclists rode side by side ahead of me in the lane.", ["bicycle", "bicycle"]),
+    ],
+    ids=["counted-antecedent", "one-of-the-lorries", "side-by-side"],
+)
+def test_a_number_of_a_counted_group_keeps_the_group(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        (
+            "Pupils ride scooters along Mill Road after school, and one of them shot out in front of me on Monday.",
+            ["e-scooter"],
+        ),
+        (
+            "Couriers have started riding e-bikes through the park; two of them cut across in front of me.",
+            ["bicycle", "bicycle"],
+        ),
+    ],
+    ids=["pupils-ride-one", "couriers-riding-two"],
+)
+def test_a_number_of_them_after_people_said_to_ride_is_so_many_riders(text, expected):
+    assert kinds(text) == expected
+
+
+# --- a plural in the present says what road users are like in general; a new one after it is the one ---
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        (
+            "Lorries are wide and slow on this lane. Picture a lorry pulling out from the left in front of you.",
+            ["truck"],
+        ),
+        (
+            "Cyclists are hard to see at dusk. Imagine a cyclist crossing from the right in front of the ego.",
+            ["bicycle"],
+        ),
+        (
+            "Allow riders plenty of room. Say you come up behind someone on a scooter at 30 mph and pass wide.",
+            ["e-scooter"],
+        ),
+        ("A van was behind me and somebody on a bike rode out from the left in front of me.", ["bicycle", "van"]),
+    ],
+    ids=["lorries-are", "cyclists-are", "someone-on-a-scooter", "somebody-on-a-bike"],
+)
+def test_road_users_in_general_in_the_present_are_not_the_one_that_acts(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("Cyclists were riding two abreast ahead of me when a van overtook us all.", ["bicycle", "van"]),
+    ],
+    ids=["were-riding"],
+)
+def test_a_plural_told_in_the_past_is_road_users_of_the_event(text, expected):
+    assert len(kinds(text)) >= 2 and set(kinds(text)) == set(expected)

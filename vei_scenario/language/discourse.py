@@ -141,6 +141,39 @@ def _unknown_person(tokens: list[str], i: int, known: Known) -> int | None:
     return None
 
 
+#: Indefinite pronouns of one person, new to the story ("someone on a bike").
+SOMEONE = frozenset({"someone", "somebody"})
+#: Counts that open a noun phrase of several people ("two lads", "3 suspects"); one is no group.
+_PEOPLE_COUNTS = frozenset("two three four five six seven eight nine ten several both".split())
+#: Verbs that only help another verb ("has taught", "were seen"): no act of their own.
+_HELPING = frozenset("be am is are was were been being have has had do does did will would can could may might "
+                     "must shall should".split())  # fmt: skip
+
+
+def _counted_people(tokens: list[str], i: int, known: Known) -> int | None:
+    """Where "<count> [modifier] <plural noun>" ending at ``i`` begins, when the noun is a plural the
+    reader has no phrase for ("two lads", "3 suspects", "two young couriers"), else None. Whether they
+    are people is left to what follows: a vehicle they are on and a verb of theirs (:func:`_acts_next`)."""
+    word = tokens[i]
+    nouns = lemmas(word).get("NOUN", ())
+    if not word.isalpha() or not nouns or word in nouns:
+        return None  # (no plural noun)
+    for j in range(i - 1, max(i - 3, -1), -1):
+        w = tokens[j]
+        if w in _PEOPLE_COUNTS or (w.isdigit() and int(w) > 1):
+            return j
+        if not w.isalpha() or known(tokens, j) or w in DETERMINERS:
+            return None
+    return None
+
+
+def _acts_next(tokens: list[str], k: int) -> bool:
+    """Whether the word at ``k`` is a verb of its own, not one that only helps another ("came", "rode",
+    "riding"; not "has", "were"): the noun phrase before it is the subject that acts."""
+    w = tokens[k] if k < len(tokens) else ""
+    return w not in _HELPING and "VERB" in lemmas(w)
+
+
 #: Where a person is, said between the person and the vehicle they ride or drive ("the guy behind me in
 #: a pickup"): a closed class of place words, each with the words that may follow it before its object.
 _PLACE_WORDS = {"ahead": ("of",), "behind": (), "alongside": (), "beside": (), "next": ("to",), "in": ("front", "of")}
@@ -216,9 +249,12 @@ def _told_in_the_past(tokens: list[str], k: int) -> bool:
     """Whether the verb at ``k``, right after a plural, tells what they did ("were running", "ran",
     "swerved"): those are road users of the event; road users in general do things in the present
     ("cyclists ride here") or may do them."""
+    from lemminflect import getAllInflections
+
     w = tokens[k] if k < len(tokens) else ""
     verbs = lemmas(w).get("VERB", ())
-    return w == "were" or (bool(verbs) and w not in verbs and not w.endswith(("s", "ing")) and "NOUN" not in lemmas(w))
+    past = any(w in getAllInflections(v).get("VBD", ()) or w in getAllInflections(v).get("VBN", ()) for v in verbs)
+    return w == "were" or (past and not w.endswith(("s", "ing")) and "NOUN" not in lemmas(w))
 
 
 def _infinitive(tokens: list[str], j: int) -> bool:
@@ -230,7 +266,7 @@ def _infinitive(tokens: list[str], j: int) -> bool:
 def _new_one(tokens: list[str], p: _Phrase) -> bool:
     """Whether phrase ``p`` opens with "a" or "an", past up to two modifiers the reader has words for
     ("a racing bike", "a slow jogger"), with no clause mark between."""
-    if p.det in ("a", "an"):
+    if p.det in ("a", "an") or tokens[p.head] in SOMEONE:
         return True
     for j in range(p.head - 1, max(p.head - 4, -1), -1):
         if tokens[j] in ("a", "an"):
@@ -341,9 +377,16 @@ def _riders(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
                     break
         if person_start is None and not known(out, k):
             person_start = _unknown_person(out, k, known)
+        counted = False
+        if person_start is None and not known(out, k):
+            person_start = _counted_people(out, k, known)
+            counted = person_start is not None
+        if person_start is None and out[k] in SOMEONE:
+            person_start, counted = k, False  # ("behind someone on a bike": a rider, new)
         if person_start is None:
             person_start = _bare_person(out, kind_at)
-        if person_start is None or (out[person_start] not in DETERMINERS and person_start != len(out) - 1):
+        opener = out[person_start] in DETERMINERS | SOMEONE or counted if person_start is not None else False
+        if person_start is None or (not opener and person_start != len(out) - 1):
             out.append(tokens[i])
             i += 1
             continue
@@ -373,6 +416,14 @@ def _riders(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
         ):
             out.append(tokens[i])
             i += 1
+            continue
+        if counted and not _acts_next(tokens, head + ride[1]):
+            out.append(tokens[i])  # ("two weeks on e-scooters has taught me": no riders, a time)
+            i += 1
+            continue
+        if counted:  # ("two lads on e-scooters came ...": so many riders, counted as the vehicles)
+            out[person_start:] = [out[person_start]]
+            i = j
             continue
         det = out[person_start] if out[person_start] in DETERMINERS else "a"  # ("guy on a moped": a rider)
         det = "a" if det in INDEFINITE | POSSESSIVE else det  # ("my mate on his bike": a rider)
@@ -1801,6 +1852,84 @@ def partitives(tokens: list[str], kind_at: KindAt) -> list[str]:
             continue
         out[i : i + 3] = ["two" if out[i] == "both" else out[i]]
         i += 1
+    return _one_of_many(out, kind_at)
+
+
+def _one_of_many(tokens: list[str], kind_at: KindAt) -> list[str]:
+    """ "one of the three lorries", "one of two vans": one picked out of a counted plural is the one
+    road user that acts; the others are where it came from, said as one of that noun ("one lorry")."""
+    out = list(tokens)
+    i = 0
+    while i + 4 < len(out):
+        j = i + 2 + (out[i + 2] in DEFINITE)
+        counted = j < len(out) and (out[j] in _COUNTED or (out[j].isdigit() and int(out[j]) > 1))
+        if out[i] != "one" or out[i + 1] != "of" or not counted:
+            i += 1
+            continue
+        found = kind_at(out, j + 1)
+        nouns = lemmas(out[j + found[1]]).get("NOUN", ()) if found is not None else ()
+        if found is None or found[0] in ("ego", "pedestrian") or found[1] != 1 or not nouns:
+            i += 1
+            continue
+        out[i : j + 2] = ["one", nouns[0]]
+        i += 1
+    return out
+
+
+#: Pronouns a count picks road users out of ("two of them", "one of those").
+_PICKED_FROM = frozenset({"them", "those", "these"})
+
+
+def _antecedent_plural(tokens: list[str], i: int, kind_at: KindAt, known: Known) -> tuple[str, int, int] | None:
+    """(type, start, end) of the last road-user plural before ``i`` that no count or number goes with
+    ("the hire scooters", "students riding e-scooters"), or None (also when the last one is counted:
+    "two cyclists ... one of them" picks out of a group the reader already holds)."""
+    phrases = [p for p in _phrases(tokens[:i], kind_at, known) if p.kind != "ego"]
+    if not phrases or _singular(tokens[phrases[-1].end - 1]):
+        return None
+    last = phrases[-1]
+    kind, end = _ridden_kind(tokens, last, kind_at)
+    riders = phrases[-2] if len(phrases) > 1 else None
+    if riders is not None and riders.kind == "pedestrian" and _ride_between(tokens, riders.end, last.start):
+        last = riders  # ("students have taken to riding e-scooters": the riders, of the vehicles' type)
+    before = tokens[last.start - 1] if last.start else ""
+    if before in _COUNTED or before.isdigit() or last.det in ("my", "our", "your"):
+        return None
+    return kind, last.start, end
+
+
+def _ride_between(tokens: list[str], start: int, end: int) -> bool:
+    """Whether a verb of riding stands between ``start`` and ``end``, in one clause ("students have taken
+    to riding e-scooters"): the people before it ride what follows."""
+    words = tokens[start:end]
+    return not PUNCT & set(words) and any(RIDE_VERBS & set(lemmas(w).get("VERB", ())) for w in words)
+
+
+def picked_out(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "The hire scooters were out in force. Two of them went through the red": a count of "them" (or
+    "those", "these") after a plural that no count goes with picks the road users out of a set of no
+    stated size; those picked are the ones that act, said as so many of the plural's type ("two
+    e-scooters", "one e-scooter"), and the set goes (listed as not used). A set with a count of its own
+    ("two cyclists ... one of them") is the group the reader already holds, and stays."""
+    out = list(tokens)
+    i = len(out) - 3
+    while i >= 0:
+        w = out[i]
+        count = w in _COUNTED - {"couple", "pair"} or w == "one" or (w.isdigit() and int(w) > 1)
+        follows = out[i + 3] if i + 3 < len(out) else ""
+        if not (count and out[i + 1] == "of" and out[i + 2] in _PICKED_FROM) or kind_at(out, i + 3) is not None:
+            i -= 1  # (not "two of those vans": :func:`partitives` counts a plural said there)
+            continue
+        found = _antecedent_plural(out, i, kind_at, known)
+        if found is None or follows in ("'s",):
+            i -= 1
+            continue
+        kind, start, end = found
+        noun = NOUN[kind] if w == "one" else NOUN[kind] + "s"
+        out[i : i + 3] = ["two" if w == "both" else w, noun]
+        dropped.extend(out[start:end])
+        del out[start:end]
+        i = start - 1
     return out
 
 
@@ -2011,6 +2140,7 @@ def resolve(
     tokens = _compounds(tokens, kind_at)
     tokens = vehicle_modifiers(tokens, kind_at, dropped)
     tokens = partitives(tokens, kind_at)
+    tokens = picked_out(tokens, kind_at, known, dropped)
     tokens = _participial_apposition(tokens, kind_at, known)
     tokens = _vehicle_labels(tokens, kind_at, known)
     tokens = _letter_labels(tokens, kind_at, known, dropped)
