@@ -665,3 +665,33 @@ def test_road_users_in_general_in_the_present_are_not_the_one_that_acts(text, ex
 )
 def test_a_plural_told_in_the_past_is_road_users_of_the_event(text, expected):
     assert len(kinds(text)) >= 2 and set(kinds(text)) == set(expected)
+
+
+# --- "before someone is hurt": someone said of what may happen is nobody of the scene -------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        (
+            "A cyclist swerved out from the left in front of me. Fix this junction before somebody is hurt.",
+            ["bicycle"],
+        ),
+        ("A van ran the red light from the right in front of me; somebody will be hurt there one day.", ["van"]),
+        ("A jogger crossed from the right in front of me. Someone could easily have been injured.", ["pedestrian"]),
+        ("A lorry cut in on me at 50 mph. Something has to change before someone is seriously hurt.", ["truck"]),
+    ],
+    ids=["is-hurt", "will-be-hurt", "could-have-been", "seriously-hurt"],
+)
+def test_someone_of_what_may_happen_is_no_road_user(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A van was parked on my left and someone stepped out from behind it in front of me.", ["pedestrian", "van"]),
+        ("Someone is crossing from the right in front of the ego at 5 km/h.", ["pedestrian"]),
+    ],
+    ids=["someone-stepped-out", "someone-is-crossing"],
+)
+def test_someone_who_acts_in_the_scene_is_a_road_user(text, expected):
+    assert kinds(text) == expected

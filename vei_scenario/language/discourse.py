@@ -1933,6 +1933,39 @@ def picked_out(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[s
     return out
 
 
+#: Modal verbs: what follows may happen, it is not told as what did.
+_MODALS = frozenset("will would could might may must can should shall".split())
+#: Forms of "be" and "get" that make a present or future passive ("is hurt", "gets killed").
+_NOT_PAST_PASSIVE = frozenset({"is", "gets", "get", "be", "'s"})
+
+
+def _participle_next(tokens: list[str], k: int) -> bool:
+    """Whether a past participle follows at ``k``, past adverbs ("seriously hurt", "killed")."""
+    from lemminflect import getAllInflections
+
+    while k < len(tokens) and tokens[k].endswith("ly") and "ADV" in lemmas(tokens[k]):
+        k += 1
+    w = tokens[k] if k < len(tokens) else ""
+    forms = [getAllInflections(v, upos="VERB") for v in lemmas(w).get("VERB", ())]
+    return any(w in f.get("VBN", f.get("VBD", ())) for f in forms)  # (lemminflect gives a VBN only where it differs)
+
+
+def what_may_happen(tokens: list[str], dropped: list[str]) -> list[str]:
+    """``tokens`` without "someone" or "somebody" said of what may happen to them ("before someone is
+    killed", "someone will get hurt", "somebody could have been injured"): a modal, or a passive in the
+    present, tells no event, so they are nobody of the scene (listed as not used). Told in the past
+    ("someone was hit", "someone stepped out") or acting ("someone is crossing"), they are."""
+    out: list[str] = []
+    for i, w in enumerate(tokens):
+        nxt = tokens[i + 1] if i + 1 < len(tokens) else ""
+        passive = nxt in _NOT_PAST_PASSIVE and _participle_next(tokens, i + 2)
+        if w in SOMEONE and (nxt in _MODALS or passive):
+            dropped.append(w)
+            continue
+        out.append(w)
+    return out
+
+
 def _people_in_general(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """ "Police are urging drivers to slow down", "campaigners want cyclists to wear lights": a bare plural
     (no article, no count) followed by "to" and a verb is whom someone asks, warns or wants to do
@@ -2159,7 +2192,7 @@ def resolve(
     tokens = _narrators_people(tokens, kind_at, dropped)
     tokens = _passengers(tokens, kind_at, known, dropped)
     tokens = _witnesses(tokens, kind_at, known, dropped)
-    tokens = _people_in_general(tokens, kind_at, known, dropped)
+    tokens = _people_in_general(what_may_happen(tokens, dropped), kind_at, known, dropped)
     tokens = _others_in_general(tokens, kind_at, known, dropped)
     tokens = _narrator_on_foot(tokens, kind_at, known, dropped)
     tokens = _ego_apposition(tokens, kind_at, known, dropped)
