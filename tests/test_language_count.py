@@ -695,3 +695,64 @@ def test_someone_of_what_may_happen_is_no_road_user(text, expected):
 )
 def test_someone_who_acts_in_the_scene_is_a_road_user(text, expected):
     assert kinds(text) == expected
+
+
+# --- everyday words for a person, an animal on the road and a rideable name the road users they are ----
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A lad ran out from between the bins on the right in front of me.", ["pedestrian"]),
+        ("An old gent stepped off the kerb on my left without looking.", ["pedestrian"]),
+        ("A youngster dashed across the road from the left in front of the ego.", ["pedestrian"]),
+        ("A teen walked out from the right in front of me at 20 mph.", ["pedestrian"]),
+        ("A roo bounded across from the left right in front of my ute.", ["pedestrian"]),
+        ("A pigeon strutted across the road in front of me.", ["pedestrian"]),
+        ("An e-step rider on the cycle path crossed the exit in front of the ego.", ["e-scooter"]),
+    ],
+    ids=["lad", "gent", "youngster", "teen", "roo", "pigeon", "e-step"],
+)
+def test_everyday_names_of_road_users_are_read(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("On a gentle bend a cyclist swerved out from the left in front of me.", ["bicycle"]),
+        ("A van pulled out from the left in front of me; I had to step on the brakes.", ["van"]),
+    ],
+    ids=["gentle", "step-on-brakes"],
+)
+def test_words_that_only_look_like_those_names_are_none(text, expected):
+    assert kinds(text) == expected
+
+
+# --- the narrator's companion set in apposition ("my passenger, an old lady,") is nobody of the scene ---
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("My passenger, an elderly man, shouted as a van cut in sharply in front of me.", ["van"]),
+        ("My passenger, an elderly man heading back from the match, shouted as a van cut in front of me.", ["van"]),
+        ("Our lodger, a student going to her lectures, yelled when a lorry pulled out from the right.", ["truck"]),
+        (
+            "Our neighbour, a retired nurse sitting in the back, gasped when a cyclist swerved out in front of us.",
+            ["bicycle"],
+        ),
+        ("My son, a boy of nine, was in the back when a lorry ran the red light from the left.", ["truck"]),
+    ],
+    ids=["passenger-man", "passenger-heading-back", "lodger-going", "neighbour-nurse", "son-boy"],
+)
+def test_a_person_in_apposition_to_the_narrators_companion_is_no_road_user(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("On my left, a man stepped out from behind a parked van in front of me.", ["pedestrian", "van"]),
+        ("My passenger screamed as a woman ran out in front of us from the right.", ["pedestrian"]),
+    ],
+    ids=["on-my-left", "no-apposition"],
+)
+def test_a_person_after_the_narrators_words_but_not_their_companion_stays(text, expected):
+    assert kinds(text) == expected

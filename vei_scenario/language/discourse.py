@@ -604,12 +604,42 @@ def _companions(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[
     return out
 
 
+#: At most this many words in an apposition set off by commas ("my passenger, an old lady going home
+#: from the theatre,").
+_APPOSITION_WORDS = 10
+
+
+def _companion_apposition(tokens: list[str], i: int, kind_at: KindAt) -> int | None:
+    """Where the apposition after the narrator's "my/our <noun>" at ``i`` ends ("my passenger, an
+    elderly lady going home from the theatre, ..."), when it is a new person set off by a comma: that
+    person is the narrator's companion said again, no road user. The noun owned must be a person's or
+    one the reader has no phrase for (not "on my left, a man ...": a side, and the man is new)."""
+    if i + 3 >= len(tokens) or tokens[i + 2] != "," or tokens[i + 3] not in ("a", "an"):
+        return None
+    owned = kind_at(tokens, i + 1)
+    if not (owned == ("pedestrian", 1) or (owned is None and "NOUN" in lemmas(tokens[i + 1]))):
+        return None
+    if tokens[i + 1] in ("left", "right", "side", "lane", "way"):
+        return None
+    person = next((h for h in range(i + 4, min(i + 7, len(tokens))) if kind_at(tokens, h) is not None), None)
+    if person is None or kind_at(tokens, person)[0] != "pedestrian":
+        return None
+    close = next((k for k in range(person, min(person + _APPOSITION_WORDS, len(tokens))) if tokens[k] in PUNCT), None)
+    return close if close is not None and tokens[close] == "," else None
+
+
 def _narrators_people(tokens: list[str], kind_at: KindAt, dropped: list[str]) -> list[str]:
     """People and animals the narrator calls theirs ("drove my kid to school", "our dog in the back")
-    travel with the ego or stay at home: no road users of the scenario."""
+    travel with the ego or stay at home: no road users of the scenario; nor is a person set in
+    apposition to one of them ("my passenger, an old lady going home,": :func:`_companion_apposition`)."""
     out: list[str] = []
     i = 0
     while i < len(tokens):
+        if tokens[i] in ("my", "our") and (close := _companion_apposition(tokens, i, kind_at)) is not None:
+            out.extend(tokens[i : i + 2])
+            dropped.extend(tokens[i + 3 : close])
+            i = close
+            continue
         if tokens[i] in ("my", "our") and i + 1 < len(tokens):
             found = kind_at(tokens, i + 1)
             owner = found is not None and tokens[i + 1 + found[1] : i + 2 + found[1]] == ["'s"]  # ("my mate's car")
@@ -1890,12 +1920,16 @@ def _antecedent_plural(tokens: list[str], i: int, kind_at: KindAt, known: Known)
     last = phrases[-1]
     kind, end = _ridden_kind(tokens, last, kind_at)
     riders = phrases[-2] if len(phrases) > 1 else None
-    if riders is not None and riders.kind == "pedestrian" and _ride_between(tokens, riders.end, last.start):
-        last = riders  # ("students have taken to riding e-scooters": the riders, of the vehicles' type)
-    before = tokens[last.start - 1] if last.start else ""
+    if (
+        riders is not None
+        and riders.kind == "pedestrian"
+        and (_ridden_kind(tokens, riders, kind_at)[1] == last.end or _ride_between(tokens, riders.end, last.start))
+    ):  # ("people on e-scooters", "students have taken to riding e-scooters": the riders, of the vehicles' type)
+        last = riders
+    before = tokens[last.head - 1] if last.head else ""
     if before in _COUNTED or before.isdigit() or last.det in ("my", "our", "your"):
         return None
-    return kind, last.start, end
+    return kind, last.head, end
 
 
 def _ride_between(tokens: list[str], start: int, end: int) -> bool:
@@ -1909,8 +1943,10 @@ def picked_out(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[s
     """ "The hire scooters were out in force. Two of them went through the red": a count of "them" (or
     "those", "these") after a plural that no count goes with picks the road users out of a set of no
     stated size; those picked are the ones that act, said as so many of the plural's type ("two
-    e-scooters", "one e-scooter"), and the set goes (listed as not used). A set with a count of its own
-    ("two cyclists ... one of them") is the group the reader already holds, and stays."""
+    e-scooters"), and the set goes (listed as not used). One picked out is one road user, the one the
+    set's own words told of too ("People on scooters run the red here; one of them hit me": one
+    e-scooter that runs the red). A set with a count of its own ("two cyclists ... one of them") is the
+    group the reader already holds, and stays."""
     out = list(tokens)
     i = len(out) - 3
     while i >= 0:
@@ -1925,10 +1961,13 @@ def picked_out(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[s
             i -= 1
             continue
         kind, start, end = found
-        noun = NOUN[kind] if w == "one" else NOUN[kind] + "s"
-        out[i : i + 3] = ["two" if w == "both" else w, noun]
-        dropped.extend(out[start:end])
-        del out[start:end]
+        if w == "one":  # the one picked is the one the set's words told of: the same road user
+            out[i : i + 3] = ["the", NOUN[kind]]
+            out[start:end] = ["a", NOUN[kind]]
+        else:
+            out[i : i + 3] = ["two" if w == "both" else w, NOUN[kind] + "s"]
+            dropped.extend(out[start:end])
+            del out[start:end]
         i = start - 1
     return out
 
@@ -1952,14 +1991,16 @@ def _participle_next(tokens: list[str], k: int) -> bool:
 
 def what_may_happen(tokens: list[str], dropped: list[str]) -> list[str]:
     """``tokens`` without "someone" or "somebody" said of what may happen to them ("before someone is
-    killed", "someone will get hurt", "somebody could have been injured"): a modal, or a passive in the
-    present, tells no event, so they are nobody of the scene (listed as not used). Told in the past
-    ("someone was hit", "someone stepped out") or acting ("someone is crossing"), they are."""
+    killed", "someone will get hurt", "somebody could have been injured", "somebody is going to be
+    hurt"): a modal, a future, or a passive in the present, tells no event, so they are nobody of the
+    scene (listed as not used). Told in the past ("someone was hit", "someone stepped out") or acting
+    ("someone is crossing"), they are."""
     out: list[str] = []
     for i, w in enumerate(tokens):
         nxt = tokens[i + 1] if i + 1 < len(tokens) else ""
         passive = nxt in _NOT_PAST_PASSIVE and _participle_next(tokens, i + 2)
-        if w in SOMEONE and (nxt in _MODALS or passive):
+        future = nxt in ("is", "'s") and tokens[i + 2 : i + 4] == ["going", "to"]  # ("is going to be killed")
+        if w in SOMEONE and (nxt in _MODALS or passive or future):
             dropped.append(w)
             continue
         out.append(w)
