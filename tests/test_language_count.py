@@ -756,3 +756,32 @@ def test_a_person_in_apposition_to_the_narrators_companion_is_no_road_user(text,
 )
 def test_a_person_after_the_narrators_words_but_not_their_companion_stays(text, expected):
     assert kinds(text) == expected
+
+
+# --- a vehicle said to be on its way, called or attending comes after the event: no road user --------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A cyclist swerved into my lane from the left and I clipped him. The ambulance is on its way.", ["bicycle"]),
+        ("A pedestrian ran out in front of me from the right; a police car was called.", ["pedestrian"]),
+        (
+            "A scooter rider crossed from the left and went under my wheels. Two fire engines are en route.",
+            ["e-scooter"],
+        ),
+    ],
+    ids=["on-its-way", "was-called", "en-route"],
+)
+def test_a_vehicle_on_its_way_after_the_event_is_no_road_user(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("An ambulance on a blue light came through the red from the left in front of me.", ["van"]),
+        ("A van was on my left and pulled out in front of me.", ["van"]),
+    ],
+    ids=["ambulance-acts", "van-on-my-left"],
+)
+def test_a_vehicle_that_acts_in_the_event_stays(text, expected):
+    assert kinds(text) == expected
