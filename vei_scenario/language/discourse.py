@@ -1997,10 +1997,13 @@ def what_may_happen(tokens: list[str], dropped: list[str]) -> list[str]:
     ("someone is crossing"), they are."""
     out: list[str] = []
     for i, w in enumerate(tokens):
+        if w not in SOMEONE:
+            out.append(w)
+            continue
         nxt = tokens[i + 1] if i + 1 < len(tokens) else ""
         passive = nxt in _NOT_PAST_PASSIVE and _participle_next(tokens, i + 2)
         future = nxt in ("is", "'s") and tokens[i + 2 : i + 4] == ["going", "to"]  # ("is going to be killed")
-        if w in SOMEONE and (nxt in _MODALS or passive or future):
+        if nxt in _MODALS or passive or future:
             dropped.append(w)
             continue
         out.append(w)
