@@ -785,3 +785,33 @@ def test_a_vehicle_on_its_way_after_the_event_is_no_road_user(text, expected):
 )
 def test_a_vehicle_that_acts_in_the_event_stays(text, expected):
     assert kinds(text) == expected
+
+
+# --- several people on one vehicle ride it together: one road user ("two-up") ------------------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("Two kids on one e-scooter shot out from the left in front of me.", ["e-scooter"]),
+        ("Three lads on a single bike wobbled across from the right in front of the ego.", ["bicycle"]),
+        (
+            "Two girls on the same scooter, and their friend on another, came at me on the wrong side.",
+            ["e-scooter", "e-scooter"],
+        ),
+        ("A boy on a bike, and his brother on another, rode out from the left in front of me.", ["bicycle", "bicycle"]),
+    ],
+    ids=["two-on-one", "three-on-a-single", "plus-another", "brother-on-another"],
+)
+def test_people_on_one_vehicle_are_one_road_user(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("Two kids on e-scooters shot out from the left in front of me.", ["e-scooter", "e-scooter"]),
+        ("Two cyclists riding side by side came towards me on the wrong side.", ["bicycle", "bicycle"]),
+    ],
+    ids=["two-on-scooters", "two-cyclists"],
+)
+def test_people_on_vehicles_of_their_own_stay_so_many(text, expected):
+    assert kinds(text) == expected

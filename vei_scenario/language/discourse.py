@@ -432,6 +432,64 @@ def _riders(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
     return out
 
 
+#: Words that make the vehicle after "on" one vehicle for all who ride it ("on one", "on a single").
+_ONE_VEHICLE = (["one"], ["a", "single"], ["the", "same"], ["a"], ["an"])
+#: Types of vehicle several people can ride at once, two-up.
+_RIDDEN = frozenset({"bicycle", "e-scooter", "car"})
+
+
+def _people_phrase_end(tokens: list[str], i: int, kind_at: KindAt, known: Known) -> int | None:
+    """Where "<count> [modifier] <plural noun of people>" starting at ``i`` ends ("two kids", "three
+    young lads"), or None: a person's plural, or a plural noun the reader has no phrase for."""
+    w = tokens[i]
+    if not (w in _PEOPLE_COUNTS or (w.isdigit() and int(w) > 1)):
+        return None
+    for h in range(i + 1, min(i + 4, len(tokens))):
+        word = tokens[h]
+        nouns = lemmas(word).get("NOUN", ())
+        plural = word.isalpha() and bool(nouns) and word not in nouns
+        found = kind_at(tokens, h)
+        if plural and (found == ("pedestrian", 1) or (found is None and not known(tokens, h))):
+            return h + 1
+        if not word.isalpha() or found is not None or word in DETERMINERS or word in PUNCT:
+            return None
+    return None
+
+
+def _last_ridden(tokens: list[str], i: int, kind_at: KindAt) -> str | None:
+    """The singular noun of the last vehicle people ride named before ``i`` in its sentence, or None."""
+    for h in range(i - 2, -1, -1):
+        if tokens[h] in SENTENCE_END:
+            return None
+        found = kind_at(tokens, h)
+        if found is not None and found[1] == 1 and found[0] in _RIDDEN and _singular(tokens[h]):
+            return tokens[h]
+    return None
+
+
+def shared_vehicles(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
+    """ "two kids on one e-scooter", "three lads on a single bike", "two girls on the same scooter":
+    several people on one vehicle ride it together (two-up), one road user, said as that vehicle ("a
+    e-scooter"). And "his mate on another" with no noun after it is on another of the vehicle just
+    named ("on another bike"). Several people on vehicles ("two kids on e-scooters") stay so many."""
+    out = list(tokens)
+    i = 0
+    while i < len(out):
+        end = _people_phrase_end(out, i, kind_at, known)
+        if end is not None and end < len(out) and out[end] in ("on", "riding"):
+            one = next((o for o in _ONE_VEHICLE if out[end + 1 : end + 1 + len(o)] == o), None)
+            at = end + 1 + len(one) if one is not None else len(out)
+            found = kind_at(out, at) if at < len(out) else None
+            if found is not None and found[0] in _RIDDEN and _singular(out[at + found[1] - 1]):
+                out[i:at] = ["a"]
+        if out[i] == "another" and i and out[i - 1] in ("on", "riding") and kind_at(out, i + 1) is None:
+            ridden = _last_ridden(out, i, kind_at)
+            if ridden is not None:
+                out.insert(i + 1, ridden)  # ("on another": another of the vehicle said before)
+        i += 1
+    return out
+
+
 def _riders_own(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
     """ "a cyclist on a racing bike", "an e-scooter rider on a hire scooter", "a motorcyclist on a big
     bike": a rider's noun already names what is ridden, so the vehicle after "on" or "riding" is theirs,
@@ -2225,6 +2283,7 @@ def resolve(
     tokens = _heading(tokens, kind_at, known, dropped)  # (after the labels: "Actor 1: e-scooter")
     tokens = _generic_plurals(tokens, kind_at, known, dropped)
     tokens = _followed_by(tokens, kind_at, known, dropped)
+    tokens = shared_vehicles(tokens, kind_at, known)
     tokens = _riders_own(_riders(_placed_riders(tokens, kind_at), kind_at, known), kind_at, known)
     tokens = _pushed(tokens, kind_at, known, dropped)
     tokens = _drivers(tokens, kind_at, known)
