@@ -551,3 +551,267 @@ def test_done_is_no_name_of_the_ego(text):
 
 def test_a_code_of_the_ego_in_figures_still_names_it():
     assert kinds("D1 was travelling at 30 mph when D2 pulled out from the left in front of D1.") == ["car"]
+
+
+# --- a number of people the lexicon has no word for, on vehicles, is so many riders ---------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("Two youths on bikes swung out from the left kerb in front of me.", ["bicycle", "bicycle"]),
+        ("Three lads on e-scooters rode towards me on the wrong side of the road.", ["e-scooter"] * 3),
+        ("2 suspects on stolen e-scooters crossed in front of the patrol car from the right.", ["e-scooter"] * 2),
+        ("Two couriers riding bikes came out of the side street on my left.", ["bicycle", "bicycle"]),
+    ],
+    ids=["youths-bikes", "lads-scooters", "figure-suspects", "couriers-riding"],
+)
+def test_a_count_of_unknown_people_on_vehicles_is_so_many_riders(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("After two hours on bikes we rode home and a van pulled out in front of us from the right.", ["van"]),
+        ("Two weeks on e-scooters has taught me nothing; a rider cut across in front of me.", ["e-scooter"]),
+    ],
+    ids=["hours-on-bikes", "weeks-on-scooters"],
+)
+def test_a_count_that_is_no_group_of_riders_stays_as_it_was(text, expected):
+    assert kinds(text) == expected
+
+
+# --- "two of them": a number picked out of a plural said before (no count of its own) ------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        (
+            "The delivery cyclists were out in numbers tonight. Two of them shot across the junction in front of "
+            "me on red.",
+            ["bicycle", "bicycle"],
+        ),
+        ("Joggers use this lane at dawn. Three of them ran across in front of me from the right.", ["pedestrian"] * 3),
+        (
+            "Hire scooters everywhere after the match, and one of them rode straight out in front of me from the left.",
+            ["e-scooter"],
+        ),
+    ],
+    ids=["two-of-them", "three-of-them", "one-of-them"],
+)
+def test_a_number_of_them_after_an_uncounted_plural_is_so_many_road_users(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("Two cyclists rode ahead of me; one of them braked hard.", ["bicycle", "bicycle"]),
+        ("One of the three lorries pulled out in front of me from the left.", ["truck"]),
+        ("Two cyclists rode side by side ahead of me in the lane.", ["bicycle", "bicycle"]),
+    ],
+    ids=["counted-antecedent", "one-of-the-lorries", "side-by-side"],
+)
+def test_a_number_of_a_counted_group_keeps_the_group(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        (
+            "Pupils ride scooters along Mill Road after school, and one of them shot out in front of me on Monday.",
+            ["e-scooter"],
+        ),
+        (
+            "Couriers have started riding e-bikes through the park; two of them cut across in front of me.",
+            ["bicycle", "bicycle"],
+        ),
+    ],
+    ids=["pupils-ride-one", "couriers-riding-two"],
+)
+def test_a_number_of_them_after_people_said_to_ride_is_so_many_riders(text, expected):
+    assert kinds(text) == expected
+
+
+# --- a plural in the present says what road users are like in general; a new one after it is the one ---
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        (
+            "Lorries are wide and slow on this lane. Picture a lorry pulling out from the left in front of you.",
+            ["truck"],
+        ),
+        (
+            "Cyclists are hard to see at dusk. Imagine a cyclist crossing from the right in front of the ego.",
+            ["bicycle"],
+        ),
+        (
+            "Allow riders plenty of room. Say you come up behind someone on a scooter at 30 mph and pass wide.",
+            ["e-scooter"],
+        ),
+        ("A van was behind me and somebody on a bike rode out from the left in front of me.", ["bicycle", "van"]),
+    ],
+    ids=["lorries-are", "cyclists-are", "someone-on-a-scooter", "somebody-on-a-bike"],
+)
+def test_road_users_in_general_in_the_present_are_not_the_one_that_acts(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("Cyclists were riding two abreast ahead of me when a van overtook us all.", ["bicycle", "van"]),
+    ],
+    ids=["were-riding"],
+)
+def test_a_plural_told_in_the_past_is_road_users_of_the_event(text, expected):
+    assert len(kinds(text)) >= 2 and set(kinds(text)) == set(expected)
+
+
+# --- "before someone is hurt": someone said of what may happen is nobody of the scene -------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        (
+            "A cyclist swerved out from the left in front of me. Fix this junction before somebody is hurt.",
+            ["bicycle"],
+        ),
+        ("A van ran the red light from the right in front of me; somebody will be hurt there one day.", ["van"]),
+        ("A jogger crossed from the right in front of me. Someone could easily have been injured.", ["pedestrian"]),
+        ("A lorry cut in on me at 50 mph. Something has to change before someone is seriously hurt.", ["truck"]),
+    ],
+    ids=["is-hurt", "will-be-hurt", "could-have-been", "seriously-hurt"],
+)
+def test_someone_of_what_may_happen_is_no_road_user(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A van was parked on my left and someone stepped out from behind it in front of me.", ["pedestrian", "van"]),
+        ("Someone is crossing from the right in front of the ego at 5 km/h.", ["pedestrian"]),
+    ],
+    ids=["someone-stepped-out", "someone-is-crossing"],
+)
+def test_someone_who_acts_in_the_scene_is_a_road_user(text, expected):
+    assert kinds(text) == expected
+
+
+# --- everyday words for a person, an animal on the road and a rideable name the road users they are ----
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A lad ran out from between the bins on the right in front of me.", ["pedestrian"]),
+        ("An old gent stepped off the kerb on my left without looking.", ["pedestrian"]),
+        ("A youngster dashed across the road from the left in front of the ego.", ["pedestrian"]),
+        ("A teen walked out from the right in front of me at 20 mph.", ["pedestrian"]),
+        ("A roo bounded across from the left right in front of my ute.", ["pedestrian"]),
+        ("A pigeon strutted across the road in front of me.", ["pedestrian"]),
+        ("An e-step rider on the cycle path crossed the exit in front of the ego.", ["e-scooter"]),
+    ],
+    ids=["lad", "gent", "youngster", "teen", "roo", "pigeon", "e-step"],
+)
+def test_everyday_names_of_road_users_are_read(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("On a gentle bend a cyclist swerved out from the left in front of me.", ["bicycle"]),
+        ("A van pulled out from the left in front of me; I had to step on the brakes.", ["van"]),
+    ],
+    ids=["gentle", "step-on-brakes"],
+)
+def test_words_that_only_look_like_those_names_are_none(text, expected):
+    assert kinds(text) == expected
+
+
+# --- the narrator's companion set in apposition ("my passenger, an old lady,") is nobody of the scene ---
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("My passenger, an elderly man, shouted as a van cut in sharply in front of me.", ["van"]),
+        ("My passenger, an elderly man heading back from the match, shouted as a van cut in front of me.", ["van"]),
+        ("Our lodger, a student going to her lectures, yelled when a lorry pulled out from the right.", ["truck"]),
+        (
+            "Our neighbour, a retired nurse sitting in the back, gasped when a cyclist swerved out in front of us.",
+            ["bicycle"],
+        ),
+        ("My son, a boy of nine, was in the back when a lorry ran the red light from the left.", ["truck"]),
+    ],
+    ids=["passenger-man", "passenger-heading-back", "lodger-going", "neighbour-nurse", "son-boy"],
+)
+def test_a_person_in_apposition_to_the_narrators_companion_is_no_road_user(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("On my left, a man stepped out from behind a parked van in front of me.", ["pedestrian", "van"]),
+        ("My passenger screamed as a woman ran out in front of us from the right.", ["pedestrian"]),
+    ],
+    ids=["on-my-left", "no-apposition"],
+)
+def test_a_person_after_the_narrators_words_but_not_their_companion_stays(text, expected):
+    assert kinds(text) == expected
+
+
+# --- a vehicle said to be on its way, called or attending comes after the event: no road user --------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A cyclist swerved into my lane from the left and I clipped him. The ambulance is on its way.", ["bicycle"]),
+        ("A pedestrian ran out in front of me from the right; a police car was called.", ["pedestrian"]),
+        (
+            "A scooter rider crossed from the left and went under my wheels. Two fire engines are en route.",
+            ["e-scooter"],
+        ),
+    ],
+    ids=["on-its-way", "was-called", "en-route"],
+)
+def test_a_vehicle_on_its_way_after_the_event_is_no_road_user(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("An ambulance on a blue light came through the red from the left in front of me.", ["van"]),
+        ("A van was on my left and pulled out in front of me.", ["van"]),
+    ],
+    ids=["ambulance-acts", "van-on-my-left"],
+)
+def test_a_vehicle_that_acts_in_the_event_stays(text, expected):
+    assert kinds(text) == expected
+
+
+# --- several people on one vehicle ride it together: one road user ("two-up") ------------------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("Two kids on one e-scooter shot out from the left in front of me.", ["e-scooter"]),
+        ("Three lads on a single bike wobbled across from the right in front of the ego.", ["bicycle"]),
+        (
+            "Two girls on the same scooter, and their friend on another, came at me on the wrong side.",
+            ["e-scooter", "e-scooter"],
+        ),
+        ("A boy on a bike, and his brother on another, rode out from the left in front of me.", ["bicycle", "bicycle"]),
+    ],
+    ids=["two-on-one", "three-on-a-single", "plus-another", "brother-on-another"],
+)
+def test_people_on_one_vehicle_are_one_road_user(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("Two kids on e-scooters shot out from the left in front of me.", ["e-scooter", "e-scooter"]),
+        ("Two cyclists riding side by side came towards me on the wrong side.", ["bicycle", "bicycle"]),
+    ],
+    ids=["two-on-scooters", "two-cyclists"],
+)
+def test_people_on_vehicles_of_their_own_stay_so_many(text, expected):
+    assert kinds(text) == expected

@@ -141,6 +141,39 @@ def _unknown_person(tokens: list[str], i: int, known: Known) -> int | None:
     return None
 
 
+#: Indefinite pronouns of one person, new to the story ("someone on a bike").
+SOMEONE = frozenset({"someone", "somebody"})
+#: Counts that open a noun phrase of several people ("two lads", "3 suspects"); one is no group.
+_PEOPLE_COUNTS = frozenset("two three four five six seven eight nine ten several both".split())
+#: Verbs that only help another verb ("has taught", "were seen"): no act of their own.
+_HELPING = frozenset("be am is are was were been being have has had do does did will would can could may might "
+                     "must shall should".split())  # fmt: skip
+
+
+def _counted_people(tokens: list[str], i: int, known: Known) -> int | None:
+    """Where "<count> [modifier] <plural noun>" ending at ``i`` begins, when the noun is a plural the
+    reader has no phrase for ("two lads", "3 suspects", "two young couriers"), else None. Whether they
+    are people is left to what follows: a vehicle they are on and a verb of theirs (:func:`_acts_next`)."""
+    word = tokens[i]
+    nouns = lemmas(word).get("NOUN", ())
+    if not word.isalpha() or not nouns or word in nouns:
+        return None  # (no plural noun)
+    for j in range(i - 1, max(i - 3, -1), -1):
+        w = tokens[j]
+        if w in _PEOPLE_COUNTS or (w.isdigit() and int(w) > 1):
+            return j
+        if not w.isalpha() or known(tokens, j) or w in DETERMINERS:
+            return None
+    return None
+
+
+def _acts_next(tokens: list[str], k: int) -> bool:
+    """Whether the word at ``k`` is a verb of its own, not one that only helps another ("came", "rode",
+    "riding"; not "has", "were"): the noun phrase before it is the subject that acts."""
+    w = tokens[k] if k < len(tokens) else ""
+    return w not in _HELPING and "VERB" in lemmas(w)
+
+
 #: Where a person is, said between the person and the vehicle they ride or drive ("the guy behind me in
 #: a pickup"): a closed class of place words, each with the words that may follow it before its object.
 _PLACE_WORDS = {"ahead": ("of",), "behind": (), "alongside": (), "beside": (), "next": ("to",), "in": ("front", "of")}
@@ -216,9 +249,12 @@ def _told_in_the_past(tokens: list[str], k: int) -> bool:
     """Whether the verb at ``k``, right after a plural, tells what they did ("were running", "ran",
     "swerved"): those are road users of the event; road users in general do things in the present
     ("cyclists ride here") or may do them."""
+    from lemminflect import getAllInflections
+
     w = tokens[k] if k < len(tokens) else ""
     verbs = lemmas(w).get("VERB", ())
-    return w == "were" or (bool(verbs) and w not in verbs and not w.endswith(("s", "ing")) and "NOUN" not in lemmas(w))
+    past = any(w in getAllInflections(v).get("VBD", ()) or w in getAllInflections(v).get("VBN", ()) for v in verbs)
+    return w == "were" or (past and not w.endswith(("s", "ing")) and "NOUN" not in lemmas(w))
 
 
 def _infinitive(tokens: list[str], j: int) -> bool:
@@ -230,7 +266,7 @@ def _infinitive(tokens: list[str], j: int) -> bool:
 def _new_one(tokens: list[str], p: _Phrase) -> bool:
     """Whether phrase ``p`` opens with "a" or "an", past up to two modifiers the reader has words for
     ("a racing bike", "a slow jogger"), with no clause mark between."""
-    if p.det in ("a", "an"):
+    if p.det in ("a", "an") or tokens[p.head] in SOMEONE:
         return True
     for j in range(p.head - 1, max(p.head - 4, -1), -1):
         if tokens[j] in ("a", "an"):
@@ -341,9 +377,16 @@ def _riders(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
                     break
         if person_start is None and not known(out, k):
             person_start = _unknown_person(out, k, known)
+        counted = False
+        if person_start is None and not known(out, k):
+            person_start = _counted_people(out, k, known)
+            counted = person_start is not None
+        if person_start is None and out[k] in SOMEONE:
+            person_start, counted = k, False  # ("behind someone on a bike": a rider, new)
         if person_start is None:
             person_start = _bare_person(out, kind_at)
-        if person_start is None or (out[person_start] not in DETERMINERS and person_start != len(out) - 1):
+        opener = out[person_start] in DETERMINERS | SOMEONE or counted if person_start is not None else False
+        if person_start is None or (not opener and person_start != len(out) - 1):
             out.append(tokens[i])
             i += 1
             continue
@@ -374,10 +417,76 @@ def _riders(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
             out.append(tokens[i])
             i += 1
             continue
+        if counted and not _acts_next(tokens, head + ride[1]):
+            out.append(tokens[i])  # ("two weeks on e-scooters has taught me": no riders, a time)
+            i += 1
+            continue
+        if counted:  # ("two lads on e-scooters came ...": so many riders, counted as the vehicles)
+            out[person_start:] = [out[person_start]]
+            i = j
+            continue
         det = out[person_start] if out[person_start] in DETERMINERS else "a"  # ("guy on a moped": a rider)
         det = "a" if det in INDEFINITE | POSSESSIVE else det  # ("my mate on his bike": a rider)
         out[person_start:] = [det]
         i = j
+    return out
+
+
+#: Words that make the vehicle after "on" one vehicle for all who ride it ("on one", "on a single").
+_ONE_VEHICLE = (["one"], ["a", "single"], ["the", "same"], ["a"], ["an"])
+#: Types of vehicle several people can ride at once, two-up.
+_RIDDEN = frozenset({"bicycle", "e-scooter", "car"})
+
+
+def _people_phrase_end(tokens: list[str], i: int, kind_at: KindAt, known: Known) -> int | None:
+    """Where "<count> [modifier] <plural noun of people>" starting at ``i`` ends ("two kids", "three
+    young lads"), or None: a person's plural, or a plural noun the reader has no phrase for."""
+    w = tokens[i]
+    if not (w in _PEOPLE_COUNTS or (w.isdigit() and int(w) > 1)):
+        return None
+    for h in range(i + 1, min(i + 4, len(tokens))):
+        word = tokens[h]
+        nouns = lemmas(word).get("NOUN", ())
+        plural = word.isalpha() and bool(nouns) and word not in nouns
+        found = kind_at(tokens, h)
+        if plural and (found == ("pedestrian", 1) or (found is None and not known(tokens, h))):
+            return h + 1
+        if not word.isalpha() or found is not None or word in DETERMINERS or word in PUNCT:
+            return None
+    return None
+
+
+def _last_ridden(tokens: list[str], i: int, kind_at: KindAt) -> str | None:
+    """The singular noun of the last vehicle people ride named before ``i`` in its sentence, or None."""
+    for h in range(i - 2, -1, -1):
+        if tokens[h] in SENTENCE_END:
+            return None
+        found = kind_at(tokens, h)
+        if found is not None and found[1] == 1 and found[0] in _RIDDEN and _singular(tokens[h]):
+            return tokens[h]
+    return None
+
+
+def shared_vehicles(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
+    """ "two kids on one e-scooter", "three lads on a single bike", "two girls on the same scooter":
+    several people on one vehicle ride it together (two-up), one road user, said as that vehicle ("a
+    e-scooter"). And "his mate on another" with no noun after it is on another of the vehicle just
+    named ("on another bike"). Several people on vehicles ("two kids on e-scooters") stay so many."""
+    out = list(tokens)
+    i = 0
+    while i < len(out):
+        end = _people_phrase_end(out, i, kind_at, known)
+        if end is not None and end < len(out) and out[end] in ("on", "riding"):
+            one = next((o for o in _ONE_VEHICLE if out[end + 1 : end + 1 + len(o)] == o), None)
+            at = end + 1 + len(one) if one is not None else len(out)
+            found = kind_at(out, at) if at < len(out) else None
+            if found is not None and found[0] in _RIDDEN and _singular(out[at + found[1] - 1]):
+                out[i:at] = ["a"]
+        if out[i] == "another" and i and out[i - 1] in ("on", "riding") and kind_at(out, i + 1) is None:
+            ridden = _last_ridden(out, i, kind_at)
+            if ridden is not None:
+                out.insert(i + 1, ridden)  # ("on another": another of the vehicle said before)
+        i += 1
     return out
 
 
@@ -553,12 +662,42 @@ def _companions(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[
     return out
 
 
+#: At most this many words in an apposition set off by commas ("my passenger, an old lady going home
+#: from the theatre,").
+_APPOSITION_WORDS = 10
+
+
+def _companion_apposition(tokens: list[str], i: int, kind_at: KindAt) -> int | None:
+    """Where the apposition after the narrator's "my/our <noun>" at ``i`` ends ("my passenger, an
+    elderly lady going home from the theatre, ..."), when it is a new person set off by a comma: that
+    person is the narrator's companion said again, no road user. The noun owned must be a person's or
+    one the reader has no phrase for (not "on my left, a man ...": a side, and the man is new)."""
+    if i + 3 >= len(tokens) or tokens[i + 2] != "," or tokens[i + 3] not in ("a", "an"):
+        return None
+    owned = kind_at(tokens, i + 1)
+    if not (owned == ("pedestrian", 1) or (owned is None and "NOUN" in lemmas(tokens[i + 1]))):
+        return None
+    if tokens[i + 1] in ("left", "right", "side", "lane", "way"):
+        return None
+    person = next((h for h in range(i + 4, min(i + 7, len(tokens))) if kind_at(tokens, h) is not None), None)
+    if person is None or kind_at(tokens, person)[0] != "pedestrian":
+        return None
+    close = next((k for k in range(person, min(person + _APPOSITION_WORDS, len(tokens))) if tokens[k] in PUNCT), None)
+    return close if close is not None and tokens[close] == "," else None
+
+
 def _narrators_people(tokens: list[str], kind_at: KindAt, dropped: list[str]) -> list[str]:
     """People and animals the narrator calls theirs ("drove my kid to school", "our dog in the back")
-    travel with the ego or stay at home: no road users of the scenario."""
+    travel with the ego or stay at home: no road users of the scenario; nor is a person set in
+    apposition to one of them ("my passenger, an old lady going home,": :func:`_companion_apposition`)."""
     out: list[str] = []
     i = 0
     while i < len(tokens):
+        if tokens[i] in ("my", "our") and (close := _companion_apposition(tokens, i, kind_at)) is not None:
+            out.extend(tokens[i : i + 2])
+            dropped.extend(tokens[i + 3 : close])
+            i = close
+            continue
         if tokens[i] in ("my", "our") and i + 1 < len(tokens):
             found = kind_at(tokens, i + 1)
             owner = found is not None and tokens[i + 1 + found[1] : i + 2 + found[1]] == ["'s"]  # ("my mate's car")
@@ -1801,6 +1940,131 @@ def partitives(tokens: list[str], kind_at: KindAt) -> list[str]:
             continue
         out[i : i + 3] = ["two" if out[i] == "both" else out[i]]
         i += 1
+    return _one_of_many(out, kind_at)
+
+
+def _one_of_many(tokens: list[str], kind_at: KindAt) -> list[str]:
+    """ "one of the three lorries", "one of two vans": one picked out of a counted plural is the one
+    road user that acts; the others are where it came from, said as one of that noun ("one lorry")."""
+    out = list(tokens)
+    i = 0
+    while i + 4 < len(out):
+        j = i + 2 + (out[i + 2] in DEFINITE)
+        counted = j < len(out) and (out[j] in _COUNTED or (out[j].isdigit() and int(out[j]) > 1))
+        if out[i] != "one" or out[i + 1] != "of" or not counted:
+            i += 1
+            continue
+        found = kind_at(out, j + 1)
+        nouns = lemmas(out[j + found[1]]).get("NOUN", ()) if found is not None else ()
+        if found is None or found[0] in ("ego", "pedestrian") or found[1] != 1 or not nouns:
+            i += 1
+            continue
+        out[i : j + 2] = ["one", nouns[0]]
+        i += 1
+    return out
+
+
+#: Pronouns a count picks road users out of ("two of them", "one of those").
+_PICKED_FROM = frozenset({"them", "those", "these"})
+
+
+def _antecedent_plural(tokens: list[str], i: int, kind_at: KindAt, known: Known) -> tuple[str, int, int] | None:
+    """(type, start, end) of the last road-user plural before ``i`` that no count or number goes with
+    ("the hire scooters", "students riding e-scooters"), or None (also when the last one is counted:
+    "two cyclists ... one of them" picks out of a group the reader already holds)."""
+    phrases = [p for p in _phrases(tokens[:i], kind_at, known) if p.kind != "ego"]
+    if not phrases or _singular(tokens[phrases[-1].end - 1]):
+        return None
+    last = phrases[-1]
+    kind, end = _ridden_kind(tokens, last, kind_at)
+    riders = phrases[-2] if len(phrases) > 1 else None
+    if (
+        riders is not None
+        and riders.kind == "pedestrian"
+        and (_ridden_kind(tokens, riders, kind_at)[1] == last.end or _ride_between(tokens, riders.end, last.start))
+    ):  # ("people on e-scooters", "students have taken to riding e-scooters": the riders, of the vehicles' type)
+        last = riders
+    before = tokens[last.head - 1] if last.head else ""
+    if before in _COUNTED or before.isdigit() or last.det in ("my", "our", "your"):
+        return None
+    return kind, last.head, end
+
+
+def _ride_between(tokens: list[str], start: int, end: int) -> bool:
+    """Whether a verb of riding stands between ``start`` and ``end``, in one clause ("students have taken
+    to riding e-scooters"): the people before it ride what follows."""
+    words = tokens[start:end]
+    return not PUNCT & set(words) and any(RIDE_VERBS & set(lemmas(w).get("VERB", ())) for w in words)
+
+
+def picked_out(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "The hire scooters were out in force. Two of them went through the red": a count of "them" (or
+    "those", "these") after a plural that no count goes with picks the road users out of a set of no
+    stated size; those picked are the ones that act, said as so many of the plural's type ("two
+    e-scooters"), and the set goes (listed as not used). One picked out is one road user, the one the
+    set's own words told of too ("People on scooters run the red here; one of them hit me": one
+    e-scooter that runs the red). A set with a count of its own ("two cyclists ... one of them") is the
+    group the reader already holds, and stays."""
+    out = list(tokens)
+    i = len(out) - 3
+    while i >= 0:
+        w = out[i]
+        count = w in _COUNTED - {"couple", "pair"} or w == "one" or (w.isdigit() and int(w) > 1)
+        follows = out[i + 3] if i + 3 < len(out) else ""
+        if not (count and out[i + 1] == "of" and out[i + 2] in _PICKED_FROM) or kind_at(out, i + 3) is not None:
+            i -= 1  # (not "two of those vans": :func:`partitives` counts a plural said there)
+            continue
+        found = _antecedent_plural(out, i, kind_at, known)
+        if found is None or follows in ("'s",):
+            i -= 1
+            continue
+        kind, start, end = found
+        if w == "one":  # the one picked is the one the set's words told of: the same road user
+            out[i : i + 3] = ["the", NOUN[kind]]
+            out[start:end] = ["a", NOUN[kind]]
+        else:
+            out[i : i + 3] = ["two" if w == "both" else w, NOUN[kind] + "s"]
+            dropped.extend(out[start:end])
+            del out[start:end]
+        i = start - 1
+    return out
+
+
+#: Modal verbs: what follows may happen, it is not told as what did.
+_MODALS = frozenset("will would could might may must can should shall".split())
+#: Forms of "be" and "get" that make a present or future passive ("is hurt", "gets killed").
+_NOT_PAST_PASSIVE = frozenset({"is", "gets", "get", "be", "'s"})
+
+
+def _participle_next(tokens: list[str], k: int) -> bool:
+    """Whether a past participle follows at ``k``, past adverbs ("seriously hurt", "killed")."""
+    from lemminflect import getAllInflections
+
+    while k < len(tokens) and tokens[k].endswith("ly") and "ADV" in lemmas(tokens[k]):
+        k += 1
+    w = tokens[k] if k < len(tokens) else ""
+    forms = [getAllInflections(v, upos="VERB") for v in lemmas(w).get("VERB", ())]
+    return any(w in f.get("VBN", f.get("VBD", ())) for f in forms)  # (lemminflect gives a VBN only where it differs)
+
+
+def what_may_happen(tokens: list[str], dropped: list[str]) -> list[str]:
+    """``tokens`` without "someone" or "somebody" said of what may happen to them ("before someone is
+    killed", "someone will get hurt", "somebody could have been injured", "somebody is going to be
+    hurt"): a modal, a future, or a passive in the present, tells no event, so they are nobody of the
+    scene (listed as not used). Told in the past ("someone was hit", "someone stepped out") or acting
+    ("someone is crossing"), they are."""
+    out: list[str] = []
+    for i, w in enumerate(tokens):
+        if w not in SOMEONE:
+            out.append(w)
+            continue
+        nxt = tokens[i + 1] if i + 1 < len(tokens) else ""
+        passive = nxt in _NOT_PAST_PASSIVE and _participle_next(tokens, i + 2)
+        future = nxt in ("is", "'s") and tokens[i + 2 : i + 4] == ["going", "to"]  # ("is going to be killed")
+        if nxt in _MODALS or passive or future:
+            dropped.append(w)
+            continue
+        out.append(w)
     return out
 
 
@@ -2011,6 +2275,7 @@ def resolve(
     tokens = _compounds(tokens, kind_at)
     tokens = vehicle_modifiers(tokens, kind_at, dropped)
     tokens = partitives(tokens, kind_at)
+    tokens = picked_out(tokens, kind_at, known, dropped)
     tokens = _participial_apposition(tokens, kind_at, known)
     tokens = _vehicle_labels(tokens, kind_at, known)
     tokens = _letter_labels(tokens, kind_at, known, dropped)
@@ -2018,6 +2283,7 @@ def resolve(
     tokens = _heading(tokens, kind_at, known, dropped)  # (after the labels: "Actor 1: e-scooter")
     tokens = _generic_plurals(tokens, kind_at, known, dropped)
     tokens = _followed_by(tokens, kind_at, known, dropped)
+    tokens = shared_vehicles(tokens, kind_at, known)
     tokens = _riders_own(_riders(_placed_riders(tokens, kind_at), kind_at, known), kind_at, known)
     tokens = _pushed(tokens, kind_at, known, dropped)
     tokens = _drivers(tokens, kind_at, known)
@@ -2029,7 +2295,7 @@ def resolve(
     tokens = _narrators_people(tokens, kind_at, dropped)
     tokens = _passengers(tokens, kind_at, known, dropped)
     tokens = _witnesses(tokens, kind_at, known, dropped)
-    tokens = _people_in_general(tokens, kind_at, known, dropped)
+    tokens = _people_in_general(what_may_happen(tokens, dropped), kind_at, known, dropped)
     tokens = _others_in_general(tokens, kind_at, known, dropped)
     tokens = _narrator_on_foot(tokens, kind_at, known, dropped)
     tokens = _ego_apposition(tokens, kind_at, known, dropped)

@@ -153,6 +153,8 @@ ACTOR_NOUNS = {
         "kickboard",  # (a kick scooter, as it is called in Korea and Japan; an electric one is an e-scooter)
         "electric kickboard",
         "stand-up scooter",
+        "e-step",  # (Dutch for an e-scooter, used in Dutch English)
+        "e-step rider",
     ),
     "truck": (
         "truck",

@@ -420,16 +420,27 @@ def shared_scooters(tokens: list[str], proper: frozenset[str], verb: Callable[[s
 _MOST_COUNTED = 5
 
 
+def _modifier(word: str) -> bool:
+    """Whether ``word`` may describe a noun after a number: a plain word, no plural noun of its own
+    ("stolen", "rental"; not "hours", "lanes")."""
+    nouns = lemmas(word).get("NOUN", ())
+    return word.isalpha() and not (nouns and word not in nouns)
+
+
 def counted_in_figures(tokens: list[str], i: int, kind_at: KindAt) -> int | None:
     """The number of road users a whole number in figures at ``i`` counts, when a plural road-user noun
     follows it ("2 escooters riding side by side", "3 cyclists in a line"), as "two" and "three" count
     one; else None. A singular after it is a label or a measure, no count ("car 2", "2 car lengths")."""
     if not tokens[i].isdigit() or not 2 <= int(tokens[i]) <= _MOST_COUNTED or i + 1 >= len(tokens):
         return None
-    found = kind_at(tokens, i + 1)
+    at = i + 1
+    found = kind_at(tokens, at)
+    if found is None and at + 1 < len(tokens) and _modifier(tokens[at]):
+        at += 1  # ("3 rental e-scooters", "2 stolen bikes": a word that describes them between)
+        found = kind_at(tokens, at)
     if found is None or found[0] == "ego":
         return None
-    head = tokens[i + found[1]]
+    head = tokens[at + found[1] - 1]
     nouns = lemmas(head).get("NOUN", ())
     plural = head not in nouns if nouns else head.endswith("s") and not head.endswith("ss")
     return int(tokens[i]) if plural else None
