@@ -576,10 +576,22 @@ def ego_at_rest(clauses) -> bool:
             if not k or not (stop or (m.words in STILL_WORDS and m.slot in ("stationary", "unknown_verb"))):
                 continue  # ("was stationary", "were stopped at the junction": a state)
             ego = said[k - 1]
-            if ego.slot == "actor" and ego.value == "ego" and m.prev in _STATE_BEFORE:
+            if ego.slot == "actor" and ego.value == "ego" and (m.prev in _STATE_BEFORE or _verbless_state(ego, m)):
                 if not acted or ego.prev in _BACKGROUND:
                     return True
     return False
+
+
+#: What may stand before the ego in a note that opens with it ("Ego stationary at the lights.", "With
+#: my car parked at the kerb, ..."): the start of a sentence or clause, its article, or "with".
+_NOTE_OPENERS = frozenset({"", ".", ";", ":", ",", "!", "?", "-", "(", "the", "with"})
+
+
+def _verbless_state(ego, state) -> bool:
+    """Whether a state of standing follows the ego right after its name with no verb, in a note that
+    opens with the ego ("Ego stationary at the red light.", "Us parked up at the kerb, ..."): a note
+    drops "is", and says the state all the same. (A stop, a verb, is not read so: "I stopped" is an act.)"""
+    return state.slot == "stationary" and ego.end == state.start and ego.prev in _NOTE_OPENERS
 
 
 def struck_at_rest(actors, ego_speed_mps: float | None, intent: str | None) -> None:

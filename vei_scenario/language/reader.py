@@ -1319,6 +1319,12 @@ def _read(text: str) -> Reading:
                 ignored.append(m.words)  # ("I braked but hit him at 10 mph": what was left at impact)
                 prev = m
                 continue
+            with_ego = m.slot == "speed" and ego_speed.said_with_the_ego(scanned, m.start, m.end)
+            if with_ego and r.ego_speed_mps is None:
+                r.ego_speed_mps = m.value  # ("cuts in front of my car, 20mph, ...": the narrator's speed)
+                if with_ego == "note":
+                    prev = m
+                    continue
             whose = [resolved.get(o) if o != Q.UNNAMED else (actors[-1] if actors else None) for o in m.owners]
             if whose and None not in whose and not (m.slot == "distance" and "ego" in whose):
                 for who in whose:  # ("van speed 60 km/h", "cyclist: 12 m ahead, 15 km/h"): whose its grammar says
