@@ -302,3 +302,84 @@ def test_the_ego_with_a_state_of_standing_and_no_verb_starts_at_rest(text):
 )
 def test_a_state_of_standing_of_another_road_user_is_not_the_egos(text, kph):
     assert _ego(text) == pytest.approx(kph * KPH)
+
+
+# --- a road user that follows the ego keeps the ego's pace: its speed is the ego's too -----------------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("A van tailgated me for miles on the bypass at 60 mph.", 60 / 0.621371),
+        ("A black SUV sat right on my rear bumper at 70 km/h for ages.", 70),
+        ("A lorry followed us closely at 80 km/h, about 10 m back.", 80),
+    ],
+    ids=["tailgated-me", "sat-on-bumper", "followed-us"],
+)
+def test_the_speed_of_a_road_user_following_the_ego_is_the_egos(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH, rel=1e-3)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A taxi followed a cyclist at 20 km/h in the bus lane.",  # (it follows someone else)
+        "A lorry overtook me on the bypass, doing 20 km/h more than me.",  # (it overtakes: faster than the ego)
+        "A moped tails the ego for a while and then overtakes it on the left at 20 km/h.",  # (then overtakes)
+    ],
+    ids=["follows-another", "overtakes", "follows-then-overtakes"],
+)
+def test_the_speed_of_a_road_user_following_another_is_not_the_egos(text):
+    assert _ego(text) != pytest.approx(20 * KPH)
+
+
+# --- a number hedged or given as a choice before its unit: about that number, the middle of the two ----------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("I was driving at 30 or so mph when a cyclist pulled out in front of me.", 30 / 0.621371),
+        ("We were doing 40-something mph when a van cut in ahead of us.", 45 / 0.621371),
+        ("I was going 50 or 60 km/h when a child ran out from the left.", 55),
+        ("The ego travels at 40 to 50 km/h when a scooter ahead brakes.", 45),
+        ("I was cruising at about 70 or 80 km/h when a lorry cut in front of me.", 75),
+    ],
+    ids=["or-so", "something", "or", "at-to", "about-or"],
+)
+def test_a_speed_hedged_or_given_as_a_choice_before_its_unit(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH, rel=1e-3)
+
+
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("The ego slows from 50 to 20 km/h as a cyclist crosses ahead.", 50),  # (a change, not a choice)
+        ("I went from 60 to 30 km/h when the van in front braked.", 60),
+    ],
+    ids=["slows-from-to", "went-from-to"],
+)
+def test_a_speed_from_one_number_to_another_is_a_change_not_a_choice(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH)
+
+
+# --- a speed set right after the ego where it is the object of a verb ("lets the ego (50 km/h) pass") -------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("A cyclist waits at the kerb and lets the ego (40 km/h) go by, then crosses behind it.", 40),
+        ("A scooter rider stops at the give-way line, letting the ego (50 km/h on the main road) pass.", 50),
+        ("A pedestrian on the island waits for the ego (30 km/h) to go past, then steps out.", 30),
+    ],
+    ids=["lets-the-ego", "letting-the-ego", "waits-for-the-ego"],
+)
+def test_a_speed_right_after_the_ego_as_an_object_is_the_egos(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A van (30 km/h) pulls out of a driveway in front of the ego.",
+        "A pedestrian waits for the ego to pass, then crosses at 6 km/h.",
+    ],
+    ids=["after-the-van", "later-in-the-clause"],
+)
+def test_a_speed_not_right_after_the_ego_object_is_not_the_egos(text):
+    assert all(_ego(text) != pytest.approx(v * KPH) for v in (6, 30))

@@ -241,3 +241,31 @@ def _goes_in_its_sentence(tokens: list[str], k: int) -> bool:
             return True
         j -= 1
     return False
+
+
+def kept_by_a_follower(actors) -> float | None:
+    """The speed (m/s) of a road user that follows the ego ("a van tailgated me at 60 mph", "a lorry
+    followed us closely at 80 km/h"): one that keeps behind the ego keeps its pace, so the speed said of
+    it is the ego's too. None where no such follower has a speed, or where another road user is ahead
+    (the follower may follow that one), or where it does more than follow ("follows the ego, then
+    overtakes it at 25 km/h": the speed it overtakes at, faster). ``actors``: the reader's, with
+    ``relation``, ``behaviours`` and ``speed_mps``."""
+    if any(a.relation == "ahead" for a in actors):
+        return None
+    for a in actors:
+        only_follows = bool(a.behaviours) and all(b[0] == "follow_vehicle" for b in a.behaviours)
+        if a.relation == "behind" and only_follows and a.speed_mps:
+            return a.speed_mps
+    return None
+
+
+def right_after_the_ego(clauses) -> float | None:
+    """The speed (m/s) said right after the ego's name with nothing between ("lets the ego (50 km/h)
+    pass", "waits for the ego (30 km/h) to go past": the scanner reads brackets past), as the scanner
+    found it: an aside that says how fast the ego goes, which a reading of what the ego is let do may
+    read past. None where no speed follows the ego so. ``clauses``: the scanner's (link, mentions)."""
+    for _, mentions in clauses:
+        for before, m in zip(mentions, mentions[1:]):
+            if before.slot == "actor" and before.value == "ego" and m.slot == "speed" and m.start == before.end:
+                return m.value
+    return None
