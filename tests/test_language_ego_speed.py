@@ -219,3 +219,167 @@ def test_both_at_a_speed_after_the_ego_and_another_is_the_speed_of_each(text, kp
 def test_both_of_a_pair_said_without_the_ego_is_not_the_egos_speed():
     r = read("Two scooters ride ahead, both at 20 km/h, and one of them brakes.")
     assert r.ego_speed_mps is None
+
+
+# --- a speed note with no verb, set off right after the ego is named: the ego's ------------------------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("a scooter darts across my bonnet, 25 mph, just missed it", 25 / 0.621371),
+        ("bus pulls out right in front of us, about 30 km/h, had to brake hard", 30),
+        ("motorbike undertakes and cuts in ahead of me, 50 km/h, close call", 50),
+        ("the courier van swung into my lane - roughly 40 km/h - and I braked", 40),
+    ],
+    ids=["bonnet-mph", "us-about", "me-kmh", "dashes"],
+)
+def test_a_verbless_speed_note_right_after_the_ego_is_the_egos(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH, rel=1e-3)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "a cyclist, 20 km/h, crosses in front of the ego",  # (the note follows the cyclist)
+        "a van cuts in front of me, the cyclist at 20 km/h behind it",  # (a speed with its own subject)
+        "a van cut in front of my car, 30 km/h limit there",  # (a limit, not a speed)
+        "A jogger was running in the road in front of me, about 10 km/h, so I slowed.",  # (how the jogger goes)
+        "A cyclist rode along the gutter ahead of my car, roughly 30 km/h.",
+    ],
+    ids=["after-other", "own-subject", "limit", "jogger-running", "cyclist-rode"],
+)
+def test_a_speed_note_not_right_after_the_ego_is_not_the_egos(text):
+    assert all(_ego(text) != pytest.approx(v * KPH) for v in (10, 20, 30))
+
+
+# --- "<verb> into/across/in front of the ego <place> at <speed>": of the ego as well ------------------------
+@pytest.mark.parametrize(
+    "text, mph",
+    [
+        ("LORRY SWERVES INTO MY LANE ON THE M1 AT 60MPH", 60),
+        ("A van cut across me on the ring road at 40 mph.", 40),
+        ("Truck merged into us on the interstate at 70 mph, no signal.", 70),
+    ],
+    ids=["headline", "across-me", "into-us"],
+)
+def test_a_speed_after_the_ego_and_its_place_is_the_egos_too(text, mph):
+    assert _ego(text) == pytest.approx(mph * MPH)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist overtook me on the bridge at 25 mph.",  # (the ego is the object of overtaking: slower)
+        "A van cut across the cyclist on the ring road at 25 mph.",  # (not the ego)
+    ],
+    ids=["overtook-me", "other-object"],
+)
+def test_a_speed_after_a_place_not_of_the_ego_named_after_a_preposition_is_not_the_egos(text):
+    assert _ego(text) != pytest.approx(25 * MPH)
+
+
+# --- the ego said to stand, in a note with no verb ("Ego stationary at the lights") -------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Ego stationary at the red light; a cyclist rides into its rear.",
+        "With my car stationary in the queue, a scooter rider ran into the back of it.",
+        "Ego vehicle stationary in lane 1. A truck approaches from behind and fails to stop.",
+        "Us parked up at the kerb, hazards on, when a moped clipped the back of the van.",
+    ],
+    ids=["ego-stationary", "with-my-car", "ego-vehicle", "us-parked"],
+)
+def test_the_ego_with_a_state_of_standing_and_no_verb_starts_at_rest(text):
+    assert _ego(text) == 0.0
+
+
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("Ego at 40 km/h passes a stationary bus; a child steps out from behind it.", 40),
+        ("The van ahead stationary in lane 1, the ego approaches at 50 km/h.", 50),
+    ],
+    ids=["passes-stationary", "other-stationary"],
+)
+def test_a_state_of_standing_of_another_road_user_is_not_the_egos(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH)
+
+
+# --- a road user that follows the ego keeps the ego's pace: its speed is the ego's too -----------------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("A van tailgated me for miles on the bypass at 60 mph.", 60 / 0.621371),
+        ("A black SUV sat right on my rear bumper at 70 km/h for ages.", 70),
+        ("A lorry followed us closely at 80 km/h, about 10 m back.", 80),
+    ],
+    ids=["tailgated-me", "sat-on-bumper", "followed-us"],
+)
+def test_the_speed_of_a_road_user_following_the_ego_is_the_egos(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH, rel=1e-3)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A taxi followed a cyclist at 20 km/h in the bus lane.",  # (it follows someone else)
+        "A lorry overtook me on the bypass, doing 20 km/h more than me.",  # (it overtakes: faster than the ego)
+        "A moped tails the ego for a while and then overtakes it on the left at 20 km/h.",  # (then overtakes)
+    ],
+    ids=["follows-another", "overtakes", "follows-then-overtakes"],
+)
+def test_the_speed_of_a_road_user_following_another_is_not_the_egos(text):
+    assert _ego(text) != pytest.approx(20 * KPH)
+
+
+# --- a number hedged or given as a choice before its unit: about that number, the middle of the two ----------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("I was driving at 30 or so mph when a cyclist pulled out in front of me.", 30 / 0.621371),
+        ("We were doing 40-something mph when a van cut in ahead of us.", 45 / 0.621371),
+        ("I was going 50 or 60 km/h when a child ran out from the left.", 55),
+        ("The ego travels at 40 to 50 km/h when a scooter ahead brakes.", 45),
+        ("I was cruising at about 70 or 80 km/h when a lorry cut in front of me.", 75),
+    ],
+    ids=["or-so", "something", "or", "at-to", "about-or"],
+)
+def test_a_speed_hedged_or_given_as_a_choice_before_its_unit(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH, rel=1e-3)
+
+
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("The ego slows from 50 to 20 km/h as a cyclist crosses ahead.", 50),  # (a change, not a choice)
+        ("I went from 60 to 30 km/h when the van in front braked.", 60),
+    ],
+    ids=["slows-from-to", "went-from-to"],
+)
+def test_a_speed_from_one_number_to_another_is_a_change_not_a_choice(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH)
+
+
+# --- a speed set right after the ego where it is the object of a verb ("lets the ego (50 km/h) pass") -------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("A cyclist waits at the kerb and lets the ego (40 km/h) go by, then crosses behind it.", 40),
+        ("A scooter rider stops at the give-way line, letting the ego (50 km/h on the main road) pass.", 50),
+        ("A pedestrian on the island waits for the ego (30 km/h) to go past, then steps out.", 30),
+    ],
+    ids=["lets-the-ego", "letting-the-ego", "waits-for-the-ego"],
+)
+def test_a_speed_right_after_the_ego_as_an_object_is_the_egos(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A van (30 km/h) pulls out of a driveway in front of the ego.",
+        "A pedestrian waits for the ego to pass, then crosses at 6 km/h.",
+    ],
+    ids=["after-the-van", "later-in-the-clause"],
+)
+def test_a_speed_not_right_after_the_ego_object_is_not_the_egos(text):
+    assert all(_ego(text) != pytest.approx(v * KPH) for v in (6, 30))

@@ -155,3 +155,117 @@ def _egos_braking(tokens: list[str], b: int) -> bool:
     if _EGO_WORDS & set(tokens[start:b]):  # ("I saw him late, braked, ...": the subject of its sentence)
         return True
     return b >= 1 and tokens[b - 1] == "the" and (b == 1 or tokens[b - 2] in SENTENCE_END)
+
+
+#: Words that name the ego as the object of a preposition ("in front of me", "into us", "ahead of the
+#: ego"); "my"/"our" open a noun of the ego's ("my lane", "our front bumper").
+_EGO_OBJECTS = frozenset({"me", "us", "ego"})
+_EGO_OWNERS = frozenset({"my", "our"})
+#: Prepositions whose object is where another road user goes relative to the ego ("into me", "across
+#: my bonnet", "in front of us", "ahead of the ego"): a speed said with such a phrase is shared, the
+#: two are in one place at it. (Not verbs: "overtook me at 25" is the overtaker's, faster than the ego.)
+_TOWARDS = frozenset({"into", "across", "of", "onto", "at", "towards", "toward", "alongside", "beside"})
+#: Prepositions that open a place phrase said between the ego and "at <speed>" ("into me on the M1 at 60").
+_PLACE = frozenset({"on", "along", "in", "down", "up", "through", "near", "past", "over"})
+#: Hedges before a bare speed ("about 30 km/h", "~40 mph").
+_NOTE_HEDGES = frozenset({"about", "around", "roughly", "approx", "approximately", "maybe", "nearly", "~", "c", "ca"})
+#: Marks that end a note ("..., 25 mph, ...", "... - 40 km/h - ...").
+_NOTE_MARKS = frozenset({",", "-", "–", "—", ";", ".", "!", "?", "(", ")"})
+
+
+def _ego_object_ending_at(tokens: list[str], k: int) -> bool:
+    """Whether an ego reference that is the object of a preposition ends at token ``k``: "into me",
+    "of us", "ahead of the ego (vehicle)", "across my bonnet", "into our front bumper"."""
+    start = None
+    if tokens[k] in _EGO_OBJECTS:
+        start = k - (k >= 1 and tokens[k - 1] == "the")
+    elif tokens[k] == "vehicle" and k >= 1 and tokens[k - 1] == "ego":
+        start = k - 1 - (k >= 2 and tokens[k - 2] == "the")
+    else:
+        for j in range(k, max(k - 3, -1), -1):  # ("my lane", "my front bumper": up to two words after it)
+            if tokens[j] in _EGO_OWNERS:
+                start = j
+                break
+            if tokens[j] in _NOTE_MARKS or _is_number(tokens[j]):
+                return False
+    return start is not None and start >= 1 and tokens[start - 1] in _TOWARDS
+
+
+def said_with_the_ego(tokens: list[str], start: int, end: int) -> str | None:
+    """Whether the speed of tokens ``start:end`` is said of the ego named just before it, as the
+    object of a preposition of where another road user goes: "note" where it stands alone in a note
+    with no verb right after the ego ("cuts in front of my car, 20mph, nearly hit him": how fast the
+    narrator was going; the road user's own speed would follow its name, "a cyclist, 20 km/h, ..."),
+    "place" where "at <speed>" follows the ego and the place it is on ("SWERVES INTO MY LANE ON THE M1 AT
+    60MPH": the two are in one lane at it, so it is the ego's as well as the road user's); else None."""
+    k = start - 1
+    while k >= 0 and tokens[k] in _NOTE_HEDGES:
+        k -= 1
+    if k < 1:
+        return None
+    if tokens[k] in (",", "-", "–", "—"):
+        ends = end >= len(tokens) or tokens[end] in _NOTE_MARKS
+        if not ends or not _ego_object_ending_at(tokens, k - 1):
+            return None
+        return None if _goes_in_its_sentence(tokens, k) else "note"
+    if tokens[k] != "at":
+        return None
+    for p in range(k - 1, max(k - 6, 0), -1):  # back over a place phrase ("on the M1", "on the ring road")
+        if tokens[p] in _NOTE_MARKS:
+            return None
+        if tokens[p] in _PLACE and p + 1 < k:
+            return "place" if _ego_object_ending_at(tokens, p - 1) else None
+    return None
+
+
+#: Verbs of going (lemmas): a clause that says how its subject goes ("a scooter was going slowly in front
+#: of me, around 15 kmph") gives that subject's speed in a note after it, where a clause of an event
+#: ("a bus pulls out in front of us, about 30 km/h") leaves the note to the narrator.
+_GOING_LEMMAS = frozenset(
+    {"go", "ride", "travel", "move", "drive", "cycle", "walk", "run", "jog", "scoot", "cruise", "roll", "trundle",
+     "pootle", "crawl", "potter", "amble", "wobble", "head"}
+)  # fmt: skip
+
+
+#: Words after a verb of going that make it an event of entering ("moves into my lane", "rolls out").
+_ENTERING = frozenset({"into", "across", "onto", "out", "off"})
+
+
+def _goes_in_its_sentence(tokens: list[str], k: int) -> bool:
+    """Whether a verb of going is said in the sentence before token ``k``, other than one of entering
+    ("moves into my lane", "drives out in front of us": an event, as "cuts in" is)."""
+    j = k - 1
+    while j >= 0 and tokens[j] not in SENTENCE_END:
+        entering = tokens[j + 1] in _ENTERING
+        if not entering and _GOING_LEMMAS & set(lemmas(tokens[j]).get("VERB", ())):
+            return True
+        j -= 1
+    return False
+
+
+def kept_by_a_follower(actors) -> float | None:
+    """The speed (m/s) of a road user that follows the ego ("a van tailgated me at 60 mph", "a lorry
+    followed us closely at 80 km/h"): one that keeps behind the ego keeps its pace, so the speed said of
+    it is the ego's too. None where no such follower has a speed, or where another road user is ahead
+    (the follower may follow that one), or where it does more than follow ("follows the ego, then
+    overtakes it at 25 km/h": the speed it overtakes at, faster). ``actors``: the reader's, with
+    ``relation``, ``behaviours`` and ``speed_mps``."""
+    if any(a.relation == "ahead" for a in actors):
+        return None
+    for a in actors:
+        only_follows = bool(a.behaviours) and all(b[0] == "follow_vehicle" for b in a.behaviours)
+        if a.relation == "behind" and only_follows and a.speed_mps:
+            return a.speed_mps
+    return None
+
+
+def right_after_the_ego(clauses) -> float | None:
+    """The speed (m/s) said right after the ego's name with nothing between ("lets the ego (50 km/h)
+    pass", "waits for the ego (30 km/h) to go past": the scanner reads brackets past), as the scanner
+    found it: an aside that says how fast the ego goes, which a reading of what the ego is let do may
+    read past. None where no speed follows the ego so. ``clauses``: the scanner's (link, mentions)."""
+    for _, mentions in clauses:
+        for before, m in zip(mentions, mentions[1:]):
+            if before.slot == "actor" and before.value == "ego" and m.slot == "speed" and m.start == before.end:
+                return m.value
+    return None

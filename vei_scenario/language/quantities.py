@@ -78,14 +78,22 @@ _ARTICLES = frozenset({"a", "an"})
 
 #: "20-30 mph", "70–90 km/h", "between 8 and 12 metres": a range with its unit.
 _RANGE = re.compile(
-    r"\b(?:between\s+)?(\d+(?:\.\d+)?)\s*(?:-|\u2013|\u2014|(?<=\d) and)\s*(\d+(?:\.\d+)?)\s*"
+    r"\b(?:between\s+)?(\d+(?:\.\d+)?)\s*(?:-|\u2013|\u2014|(?<=\d) and|(?<=\d) or)\s*(\d+(?:\.\d+)?)\s*"
     r"(?=(?:km/h|mph|m/s|m|metres|meters|metre|meter|car lengths?)\b)"
 )
 
 
 _UNITS_AHEAD = r"(?=\s*(?:km/h|kph|kmh|mph|m/s|m|metres|meters)\b)"
 #: "40ish mph", "70-odd mph", "30 plus km/h": a hedge between a number and its unit.
-_HEDGED_AFTER = re.compile(r"\b(\d+(?:\.\d+)?)\s*-?\s*(?:ish|odd|plus)\b" + _UNITS_AHEAD)
+_HEDGED_AFTER = re.compile(r"\b(\d+(?:\.\d+)?)\s*-?\s*(?:ish|odd|plus|or so)\b" + _UNITS_AHEAD)
+#: "40-something mph": a number in the decade of a round one, about its middle.
+_SOMETHING = re.compile(r"\b([1-9])0\s*-?\s*something\b" + _UNITS_AHEAD)
+#: "at 40 to 50 km/h", "doing about 30 to 40 mph": a choice of two after a word of a speed held, its
+#: middle ("from 50 to 20 km/h" is a change, and has no such word before it).
+_CHOICE_TO = re.compile(
+    r"\b(at|about|around|roughly|approximately|approx|doing|going|travelling|traveling|of)\s+"
+    r"(\d+(?:\.\d+)?)\s+to\s+(\d+(?:\.\d+)?)" + _UNITS_AHEAD
+)
 #: "30 mph-ish": a hedge on the unit.
 _UNIT_ISH = re.compile(r"\b(km/h|kph|kmh|mph|m/s)-?ish\b")
 #: "the high 60s mph", "doing the mid-40s": a speed said by its decade (an age is not: "in his mid-40s").
@@ -116,10 +124,12 @@ def citations(text: str) -> str:
 def ranges(text: str) -> str:
     """Each range of a quantity in the normalised ``text`` as its middle, approximately ("20-30 mph":
     "about 25 mph"): a writer giving a range means a value within it, and the middle is the one that
-    errs least. "From 50 to 20 km/h" is a change of speed, not a range, and stays. A number hedged
-    after it ("40ish mph", "30 mph-ish") or said by its decade ("the high 60s mph") is about that
-    number."""
+    errs least; so is a choice of two ("50 or 60 km/h", "at 40 to 50 km/h"). "From 50 to 20 km/h" is
+    a change of speed, not a range, and stays. A number hedged after it ("40ish mph", "30 or so mph",
+    "30 mph-ish") or said by its decade ("the high 60s mph", "40-something mph") is about that number."""
     text = _UNIT_ISH.sub(r"\1", _HEDGED_AFTER.sub(r"about \1", text))
+    text = _SOMETHING.sub(lambda m: f"about {m.group(1)}5", text)
+    text = _CHOICE_TO.sub(lambda m: f"{m.group(1)} about {(float(m.group(2)) + float(m.group(3))) / 2:g}", text)
     text = _DECADE.sub(_decade, text)
 
     def middle(m: re.Match) -> str:
@@ -576,10 +586,22 @@ def ego_at_rest(clauses) -> bool:
             if not k or not (stop or (m.words in STILL_WORDS and m.slot in ("stationary", "unknown_verb"))):
                 continue  # ("was stationary", "were stopped at the junction": a state)
             ego = said[k - 1]
-            if ego.slot == "actor" and ego.value == "ego" and m.prev in _STATE_BEFORE:
+            if ego.slot == "actor" and ego.value == "ego" and (m.prev in _STATE_BEFORE or _verbless_state(ego, m)):
                 if not acted or ego.prev in _BACKGROUND:
                     return True
     return False
+
+
+#: What may stand before the ego in a note that opens with it ("Ego stationary at the lights.", "With
+#: my car parked at the kerb, ..."): the start of a sentence or clause, its article, or "with".
+_NOTE_OPENERS = frozenset({"", ".", ";", ":", ",", "!", "?", "-", "(", "the", "with"})
+
+
+def _verbless_state(ego, state) -> bool:
+    """Whether a state of standing follows the ego right after its name with no verb, in a note that
+    opens with the ego ("Ego stationary at the red light.", "Us parked up at the kerb, ..."): a note
+    drops "is", and says the state all the same. (A stop, a verb, is not read so: "I stopped" is an act.)"""
+    return state.slot == "stationary" and ego.end == state.start and ego.prev in _NOTE_OPENERS
 
 
 def struck_at_rest(actors, ego_speed_mps: float | None, intent: str | None) -> None:

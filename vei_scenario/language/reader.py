@@ -1264,6 +1264,7 @@ def _read(text: str) -> Reading:
     text, aside = only_the_scene(text, lambda part: _actor_noun_in(part.lower()))  # (what is not the scene)
     clauses, ignored, read_as, scanned = scan(text)
     ignored[:0] = [w for w in aside if w not in FUNCTION_WORDS]
+    set_by_the_ego = ego_speed.right_after_the_ego(clauses)  # ("lets the ego (50 km/h) pass"), as scanned
     clauses = sides.narrator_lane(sides.relate_headings(clauses))
     clauses = sides.ego_follows(sides.numbered_lanes(clauses, sides.drives_on_left(scanned, text)))
     clauses = sides.into_the_ego_rear(clauses)
@@ -1319,6 +1320,12 @@ def _read(text: str) -> Reading:
                 ignored.append(m.words)  # ("I braked but hit him at 10 mph": what was left at impact)
                 prev = m
                 continue
+            with_ego = m.slot == "speed" and ego_speed.said_with_the_ego(scanned, m.start, m.end)
+            if with_ego and r.ego_speed_mps is None:
+                r.ego_speed_mps = m.value  # ("cuts in front of my car, 20mph, ...": the narrator's speed)
+                if with_ego == "note":
+                    prev = m
+                    continue
             whose = [resolved.get(o) if o != Q.UNNAMED else (actors[-1] if actors else None) for o in m.owners]
             if whose and None not in whose and not (m.slot == "distance" and "ego" in whose):
                 for who in whose:  # ("van speed 60 km/h", "cyclist: 12 m ahead, 15 km/h"): whose its grammar says
@@ -1847,6 +1854,10 @@ def _read(text: str) -> Reading:
         a.lane_side = sides.beside(a.lane_side, r.ego_relation)
     if both_with_ego and r.ego_speed_mps is None and actors and actors[0].speed_mps is not None:
         r.ego_speed_mps = actors[0].speed_mps  # (the speed said of both)
+    if r.ego_speed_mps is None:
+        r.ego_speed_mps = ego_speed.kept_by_a_follower(actors)  # ("a van tailgated me at 60 mph")
+    if r.ego_speed_mps is None:
+        r.ego_speed_mps = set_by_the_ego  # (read past with what the ego is let do)
     if r.ego_speed_mps is None and Q.ego_at_rest(clauses):
         r.ego_speed_mps = 0.0  # ("I was sat at the lights when ..."): the ego stands still
     if r.ego_speed_mps is None:
