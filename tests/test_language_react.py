@@ -374,3 +374,47 @@ def test_a_swerve_round_something_else_is_no_going_on(text, expected):
 )
 def test_the_narrators_subordinate_clause_keeps_the_sentence_the_narrators(text, expected):
     assert _behaviours(text) == expected
+
+
+# --- a stop after a verb of touching is the aftermath only when a road user was touched ----------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # the verb of contact has something else as its object: the stop after it is the road user's
+        ("I hit the brakes and the taxi in front of me stopped at the lights.", [["stop"]]),
+        ("I tapped my horn, and then the minibus ahead of me pulled up at the kerb.", [["stop"]]),
+        ("We touched 60 km/h before the tractor in front of us stopped at the gate.", [["stop"]]),
+        # the contact is denied or only nearly happened: nothing ended in it
+        ("The car in front of me did not hit anyone; it stopped at the zebra crossing.", [["stop"]]),
+    ],
+    ids=["hit-the-brakes", "tapped-the-horn", "touched-a-speed", "did-not-hit"],
+)
+def test_a_stop_after_a_touch_of_no_road_user_is_the_road_users(text, expected):
+    assert _behaviours(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A courier van clipped my wing mirror and stopped about twenty metres further on.",
+        "The moped tapped my rear bumper, then stopped a little way up the road.",
+        "A taxi bumped into the back of my car. It stopped a few metres later.",
+    ],
+    ids=["clipped-mirror", "tapped-bumper", "bumped-into"],
+)
+def test_a_stop_after_touching_a_road_user_is_the_aftermath(text):
+    assert all("stop" not in b for b in _behaviours(text))
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # a stop said as what came first is the contact's cause, the road user's own act
+        ("I rear-ended the taxi ahead when it stopped at the lights.", [["stop"]]),
+        ("We shunted a hatchback at the junction; it had stopped very suddenly right ahead of us.", [["sudden_stop"]]),
+        ("I rear-ended the taxi ahead when it stopped sharply at the lights.", [["sudden_stop"]]),
+    ],
+    ids=["when-it-stopped", "had-stopped", "stopped-sharply"],
+)
+def test_a_stop_said_as_the_contacts_cause_stays_the_road_users(text, expected):
+    assert _behaviours(text) == expected
