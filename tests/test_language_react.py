@@ -418,3 +418,33 @@ def test_a_stop_after_touching_a_road_user_is_the_aftermath(text):
 )
 def test_a_stop_said_as_the_contacts_cause_stays_the_road_users(text, expected):
     assert _behaviours(text) == expected
+
+
+# --- a subject the reader reads as no road user: its reaction is not the road user's ------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A jogger stepped off the right kerb in front of the shuttle. Controller braked hard.", [["cross_in_front"]]),
+        ("A moped cut in ahead of the test car at 40 km/h. The autopilot slowed sharply.", [["cut_in"]]),
+        ("A child ran out into the road ahead of us. Trainee stopped dead, 3 m short.", [["cross_in_front"]]),
+        ("A cyclist swung out into our lane ahead. Our software then braked to a standstill.", [["cut_in"]]),
+    ],
+    ids=["controller", "the-autopilot", "trainee-stopped", "our-software"],
+)
+def test_a_reaction_of_a_subject_that_is_no_road_user_is_not_the_road_users(text, expected):
+    assert _behaviours(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # the subject is a road user, or none is said: the road user's own
+        ("A jogger stepped off the right kerb in front of the shuttle. Jogger stopped dead.", [["cross_in_front", "sudden_stop"]]),
+        ("A moped cut in ahead of the test car. Then braked sharply.", [["cut_in", "sudden_stop"]]),
+        # a noun that is not a subject: a time said before the road user's own verb
+        ("A van pulled out of a side road ahead of us. Seconds later the van braked hard.", [["turn_into", "sudden_stop"]]),
+    ],
+    ids=["jogger-stopped", "then-braked", "seconds-later"],
+)
+def test_a_reaction_of_the_road_user_or_of_no_subject_stays_its_own(text, expected):
+    assert _behaviours(text) == expected

@@ -146,6 +146,7 @@ def acts_not_the_subjects(clauses: list, tokens: list[str], first_person: bool, 
     out = narrators_acts(clauses, tokens, first_person)
     out.update(named_persons_acts(clauses, tokens, text))
     out.update(caused_acts(clauses, tokens))
+    out.update(unread_subjects_reactions(clauses, tokens))
     return out
 
 
@@ -367,3 +368,49 @@ def the_rider(tokens: list[str], kind_at: Callable[[list[str], int], tuple[str, 
         if word is not None:
             out[i] = word
     return out
+
+
+#: What opens a sentence: a subject standing first after one of these is its clause's own.
+_SENTENCE_ENDS = frozenset((".", "!", "?", ";", ":"))
+#: Determiners and possessives a subject's noun phrase may open with ("the planner", "our software").
+_SUBJECT_OPENERS = frozenset(("the", "a", "an", "our", "my", "its", "their", "his", "her"))
+#: Adverbs that may stand between a subject and its verb ("the autopilot then braked").
+_BETWEEN_SUBJECT_AND_VERB = frozenset(("then", "also", "immediately", "instantly", "just", "quickly", "finally"))
+
+
+def unread_subjects_reactions(clauses: list, tokens: list[str]) -> dict[int, bool]:
+    """The reactions (braking, stopping, slowing, swerving) whose subject is a common noun the reader
+    reads as no road user, opening its sentence ("Planner braked to a full stop.", "The autopilot
+    slowed sharply.", "Trainee stopped dead."), by their mention's start, with the verbs joined to
+    them: a report names the ego's side by its role or its system (a planner, a candidate, a
+    controller), and the reaction is theirs, not the road user named before. A subject read as a road
+    user ("Jogger stopped dead.") keeps its verb, and so does a sentence with no subject ("Then braked
+    sharply.") or one whose noun is no subject ("Seconds later the van braked")."""
+    out: dict[int, bool] = {}
+    flat = [m for _, ms in clauses for m in ms]
+    read = {i for m in flat if m.slot != "unknown_verb" for i in range(m.start, max(m.end, m.start + 1))}
+    by_start = {m.start: m for m in flat if m.slot in _ACT_SLOTS}
+    for s, tok in enumerate(tokens):
+        if s and tokens[s - 1] not in _SENTENCE_ENDS:
+            continue
+        i = s + (tok in _SUBJECT_OPENERS)
+        j = i
+        while j < len(tokens) and j - i < 3 and j not in read and _common_noun(tokens[j]):
+            j += 1
+        if j == i:
+            continue
+        while j < len(tokens) and tokens[j] in _BETWEEN_SUBJECT_AND_VERB:
+            j += 1
+        verb = by_start.get(j)
+        if verb is None or verb.slot != "behaviour" or verb.value[0] not in _REACTIONS:
+            continue
+        for m in [verb, *_acts_after(flat, tokens, verb.end)]:
+            out[m.start] = False
+    return out
+
+
+def _common_noun(word: str) -> bool:
+    """Whether ``word`` is a common noun and nothing else a subject could be (not a verb's form
+    only, not a pronoun or an adverb): "planner", "candidate", "autopilot"."""
+    found = lemmas(word)
+    return "NOUN" in found and "ADV" not in found and "PRON" not in found and word.isalpha()
