@@ -448,3 +448,17 @@ def test_a_reaction_of_a_subject_that_is_no_road_user_is_not_the_road_users(text
 )
 def test_a_reaction_of_the_road_user_or_of_no_subject_stays_its_own(text, expected):
     assert _behaviours(text) == expected
+
+
+# --- a title and a word name a person, whatever the word reads as alone --------------------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A lad on a scooter shot out of a driveway in front of the coach. Mr Jones braked hard.", [["cross_in_front"]]),
+        ("A cyclist swerved out in front of the minibus. Mrs Ones stopped dead.", [["change_lane"]]),
+        ("A jogger stepped out in front of the school bus. Dr Way slowed sharply and stopped.", [["cross_in_front"]]),
+    ],
+    ids=["mr-jones", "mrs-ones", "dr-way"],
+)
+def test_a_titled_name_is_a_person_not_the_road_user(text, expected):
+    assert _behaviours(text) == expected

@@ -189,7 +189,7 @@ def _riding_names(text: str) -> frozenset[str]:
 
 def named_persons_acts(clauses: list, tokens: list[str], text: str) -> dict[int, bool]:
     """The verbs of a person named by a name at the start of a clause ("Marco braked hard and
-    swerved"), by their mention's start, each with whether it passes someone; not those of a name
+    swerved", "Mr Jones braked"), by their mention's start, each with whether it passes someone; not those of a name
     said with a road user ("my brother Sam in his Golf ... Sam braked"), whose verbs are a road
     user's. ``tokens``: those the mentions index."""
     names, riding = _person_names(text), _riding_names(text)
@@ -199,11 +199,13 @@ def named_persons_acts(clauses: list, tokens: list[str], text: str) -> dict[int,
     }
     road_users = [m for m in flat if m.slot == "actor" and m.value != "ego"]
     persons: dict[int, bool] = {}
-    if not names:
+    if not names and not _TITLES & set(tokens):
         return persons
+    actors_at = {i for m in flat if m.slot == "actor" for i in range(m.start, m.end)}
     for i, tok in enumerate(tokens):
-        if tok not in names or i in covered or (i and tokens[i - 1] in names):
-            continue
+        titled = i > 0 and tokens[i - 1] in _TITLES and _word(tok) and i not in actors_at
+        if not titled and (tok not in names or i in covered or (i and tokens[i - 1] in names)):
+            continue  # (a title makes the word after it a name, whatever it reads as alone: "Mr Jones")
         before = tokens[i - 1] if i else "."
         if before in _TITLES:
             before = tokens[i - 2] if i > 1 else "."
