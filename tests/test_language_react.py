@@ -462,3 +462,21 @@ def test_a_reaction_of_the_road_user_or_of_no_subject_stays_its_own(text, expect
 )
 def test_a_titled_name_is_a_person_not_the_road_user(text, expected):
     assert _behaviours(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A kid on a bike veers out across the road ahead of the test car. The examiner's braking decides it.", [["cross_in_front"]]),
+        ("A moped cuts in ahead of the shuttle at 30 km/h; the controller's hard braking is what we test.", [["cut_in"]]),
+        ("A jogger steps off the kerb in front of the ego. Leave the planner's emergency stop to the sim.", [["cross_in_front"]]),
+    ],
+    ids=["drivers-braking", "controllers-braking", "planners-stop"],
+)
+def test_a_reaction_owned_by_a_subject_that_is_no_road_user_is_not_the_road_users(text, expected):
+    assert _behaviours(text) == expected
+
+
+def test_a_reaction_owned_by_the_road_user_stays_its_own():
+    text = "A moped cuts in ahead of the shuttle at 30 km/h and the moped's hard braking ends it."
+    assert _behaviours(text) == [["cut_in", "sudden_stop"]]

@@ -387,7 +387,8 @@ def unread_subjects_reactions(clauses: list, tokens: list[str]) -> dict[int, boo
     them: a report names the ego's side by its role or its system (a planner, a candidate, a
     controller), and the reaction is theirs, not the road user named before. A subject read as a road
     user ("Jogger stopped dead.") keeps its verb, and so does a sentence with no subject ("Then braked
-    sharply.") or one whose noun is no subject ("Seconds later the van braked")."""
+    sharply.") or one whose noun is no subject ("Seconds later the van braked"). A reaction said as a
+    noun such a subject owns ("let the player's braking decide") is theirs as well."""
     out: dict[int, bool] = {}
     flat = [m for _, ms in clauses for m in ms]
     read = {i for m in flat if m.slot != "unknown_verb" for i in range(m.start, max(m.end, m.start + 1))}
@@ -408,6 +409,17 @@ def unread_subjects_reactions(clauses: list, tokens: list[str]) -> dict[int, boo
             continue
         for m in [verb, *_acts_after(flat, tokens, verb.end)]:
             out[m.start] = False
+    for p, tok in enumerate(tokens):  # ("let the player's braking decide": the player's, said as a noun)
+        if tok != "'s":
+            continue
+        i = p
+        while i > 0 and p - i < 3 and i - 1 not in read and _common_noun(tokens[i - 1]):
+            i -= 1
+        if i == p or not (i == 0 or tokens[i - 1] in _SUBJECT_OPENERS or tokens[i - 1] in _SENTENCE_ENDS):
+            continue
+        noun = next((by_start[k] for k in range(p + 1, p + 3) if k in by_start), None)
+        if noun is not None and noun.slot == "behaviour" and noun.value[0] in _REACTIONS:
+            out[noun.start] = False
     return out
 
 
