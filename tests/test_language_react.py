@@ -480,3 +480,30 @@ def test_a_reaction_owned_by_a_subject_that_is_no_road_user_is_not_the_road_user
 def test_a_reaction_owned_by_the_road_user_stays_its_own():
     text = "A moped cuts in ahead of the shuttle at 30 km/h and the moped's hard braking ends it."
     assert _behaviours(text) == [["cut_in", "sudden_stop"]]
+
+
+# --- "it stopped" in a story told by "I": "it" is the road user, never the narrator ----------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("I was behind a van, it stopped for no reason.", [["stop"]]),
+        ("We followed a tractor for a mile and then it stopped in the lane.", [["stop"]]),
+        ("I was queuing behind a bus when it stopped at the shelter.", [["stop"]]),
+    ],
+    ids=["behind-a-van", "followed-a-tractor", "queuing-behind-a-bus"],
+)
+def test_it_stopped_in_a_first_person_story_is_the_road_users_stop(text, expected):
+    assert _behaviours(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A cyclist came up on my left at the lights. I stopped and he went past.", [["keep_going"]]),
+        ("I stopped at the junction and a cyclist went past; it was raining.", [["keep_going"]]),
+        ("The scooter braked and stopped at the line.", [["stop"]]),
+    ],
+    ids=["i-stopped-he-went-past", "it-was-raining", "scooter-braked-and-stopped"],
+)
+def test_the_narrators_stop_is_not_the_road_users(text, expected):
+    assert _behaviours(text) == expected
