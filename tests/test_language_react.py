@@ -507,3 +507,22 @@ def test_it_stopped_in_a_first_person_story_is_the_road_users_stop(text, expecte
 )
 def test_the_narrators_stop_is_not_the_road_users(text, expected):
     assert _behaviours(text) == expected
+
+
+# --- a verb with an object and "to": the infinitive is the object's act ---------------------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A pedestrian steps off the left kerb 30 m ahead of the ego at 5 km/h. We expect the ego to stop.", [["cross_in_front"]]),
+        ("A cyclist cuts in ahead of the AV. The test wants the AV to brake hard.", [["cut_in"]]),
+        ("A van cuts in front of the ego car. It requires the ego to slow down to 20 km/h.", [["cut_in"]]),
+    ],
+    ids=["expect-the-ego-to-stop", "wants-the-av-to-brake", "requires-the-ego-to-slow"],
+)
+def test_the_infinitive_after_the_ego_as_object_is_the_egos(text, expected):
+    assert _behaviours(text) == expected
+
+
+def test_the_infinitive_after_a_road_user_as_object_is_its_own():
+    text = "The ego drives at 40 km/h behind a cyclist. The test wants the cyclist to brake hard."
+    assert _behaviours(text) == [["sudden_stop"]]

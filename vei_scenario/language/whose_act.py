@@ -254,8 +254,11 @@ def _passes(m) -> bool:
     return m.slot == "behaviour" and m.value[0] == "overtake"
 
 
-#: Verbs (lemmas) of making someone do something: the verb after their object is the object's.
-_CAUSING = frozenset(("force", "cause", "make", "compel", "oblige"))
+#: Verbs (lemmas) of making, wanting or letting someone do something, said with an object and "to":
+#: the verb after their object is the object's ("forced him to brake", "expects the ego to stop").
+_CAUSING = frozenset(
+    ("force", "cause", "make", "compel", "oblige", "expect", "want", "require", "need", "ask", "tell", "allow")
+)
 #: Of those, the one said with a bare infinitive ("made me brake").
 _CAUSING_BARE = frozenset(("make",))
 #: Objects said as a pronoun ("forcing him to brake").
