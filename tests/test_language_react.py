@@ -526,3 +526,7 @@ def test_the_infinitive_after_the_ego_as_object_is_the_egos(text, expected):
 def test_the_infinitive_after_a_road_user_as_object_is_its_own():
     text = "The ego drives at 40 km/h behind a cyclist. The test wants the cyclist to brake hard."
     assert _behaviours(text) == [["sudden_stop"]]
+
+
+def test_a_vehicle_owned_by_a_person_keeps_its_verb():
+    assert "cut_in" in _behaviours("The plumber's van cut in right in front of us at 30 mph.")[0]

@@ -421,8 +421,12 @@ def unread_subjects_reactions(clauses: list, tokens: list[str]) -> dict[int, boo
         if i == p or not (i == 0 or tokens[i - 1] in _SUBJECT_OPENERS or tokens[i - 1] in _SENTENCE_ENDS):
             continue
         noun = next((by_start[k] for k in range(p + 1, p + 3) if k in by_start), None)
-        if noun is not None and noun.slot == "behaviour" and noun.value[0] in _REACTIONS:
-            out[noun.start] = False
+        if noun is None or noun.slot != "behaviour" or noun.value[0] not in _REACTIONS:
+            continue
+        head = noun.words.split()[0]
+        if any(k in read for k in range(p + 1, noun.start)) or not ("NOUN" in lemmas(head) or head.endswith("ing")):
+            continue  # (its noun is a vehicle, whose verb follows: "the neighbour's van pulled out")
+        out[noun.start] = False
     return out
 
 
