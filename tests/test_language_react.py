@@ -439,10 +439,16 @@ def test_a_reaction_of_a_subject_that_is_no_road_user_is_not_the_road_users(text
     "text, expected",
     [
         # the subject is a road user, or none is said: the road user's own
-        ("A jogger stepped off the right kerb in front of the shuttle. Jogger stopped dead.", [["cross_in_front", "sudden_stop"]]),
+        (
+            "A jogger stepped off the right kerb in front of the shuttle. Jogger stopped dead.",
+            [["cross_in_front", "sudden_stop"]],
+        ),
         ("A moped cut in ahead of the test car. Then braked sharply.", [["cut_in", "sudden_stop"]]),
         # a noun that is not a subject: a time said before the road user's own verb
-        ("A van pulled out of a side road ahead of us. Seconds later the van braked hard.", [["turn_into", "sudden_stop"]]),
+        (
+            "A van pulled out of a side road ahead of us. Seconds later the van braked hard.",
+            [["turn_into", "sudden_stop"]],
+        ),
     ],
     ids=["jogger-stopped", "then-braked", "seconds-later"],
 )
@@ -454,7 +460,10 @@ def test_a_reaction_of_the_road_user_or_of_no_subject_stays_its_own(text, expect
 @pytest.mark.parametrize(
     "text, expected",
     [
-        ("A lad on a scooter shot out of a driveway in front of the coach. Mr Jones braked hard.", [["cross_in_front"]]),
+        (
+            "A lad on a scooter shot out of a driveway in front of the coach. Mr Jones braked hard.",
+            [["cross_in_front"]],
+        ),
         ("A cyclist swerved out in front of the minibus. Mrs Ones stopped dead.", [["change_lane"]]),
         ("A jogger stepped out in front of the school bus. Dr Way slowed sharply and stopped.", [["cross_in_front"]]),
     ],
@@ -467,9 +476,18 @@ def test_a_titled_name_is_a_person_not_the_road_user(text, expected):
 @pytest.mark.parametrize(
     "text, expected",
     [
-        ("A kid on a bike veers out across the road ahead of the test car. The examiner's braking decides it.", [["cross_in_front"]]),
-        ("A moped cuts in ahead of the shuttle at 30 km/h; the controller's hard braking is what we test.", [["cut_in"]]),
-        ("A jogger steps off the kerb in front of the ego. Leave the planner's emergency stop to the sim.", [["cross_in_front"]]),
+        (
+            "A kid on a bike veers out across the road ahead of the test car. The examiner's braking decides it.",
+            [["cross_in_front"]],
+        ),
+        (
+            "A moped cuts in ahead of the shuttle at 30 km/h; the controller's hard braking is what we test.",
+            [["cut_in"]],
+        ),
+        (
+            "A jogger steps off the kerb in front of the ego. Leave the planner's emergency stop to the sim.",
+            [["cross_in_front"]],
+        ),
     ],
     ids=["drivers-braking", "controllers-braking", "planners-stop"],
 )
@@ -513,7 +531,10 @@ def test_the_narrators_stop_is_not_the_road_users(text, expected):
 @pytest.mark.parametrize(
     "text, expected",
     [
-        ("A pedestrian steps off the left kerb 30 m ahead of the ego at 5 km/h. We expect the ego to stop.", [["cross_in_front"]]),
+        (
+            "A pedestrian steps off the left kerb 30 m ahead of the ego at 5 km/h. We expect the ego to stop.",
+            [["cross_in_front"]],
+        ),
         ("A cyclist cuts in ahead of the AV. The test wants the AV to brake hard.", [["cut_in"]]),
         ("A van cuts in front of the ego car. It requires the ego to slow down to 20 km/h.", [["cut_in"]]),
     ],
