@@ -374,3 +374,180 @@ def test_a_swerve_round_something_else_is_no_going_on(text, expected):
 )
 def test_the_narrators_subordinate_clause_keeps_the_sentence_the_narrators(text, expected):
     assert _behaviours(text) == expected
+
+
+# --- a stop after a verb of touching is the aftermath only when a road user was touched ----------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # the verb of contact has something else as its object: the stop after it is the road user's
+        ("I hit the brakes and the taxi in front of me stopped at the lights.", [["stop"]]),
+        ("I tapped my horn, and then the minibus ahead of me pulled up at the kerb.", [["stop"]]),
+        ("We touched 60 km/h before the tractor in front of us stopped at the gate.", [["stop"]]),
+        # the contact is denied or only nearly happened: nothing ended in it
+        ("The car in front of me did not hit anyone; it stopped at the zebra crossing.", [["stop"]]),
+    ],
+    ids=["hit-the-brakes", "tapped-the-horn", "touched-a-speed", "did-not-hit"],
+)
+def test_a_stop_after_a_touch_of_no_road_user_is_the_road_users(text, expected):
+    assert _behaviours(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A courier van clipped my wing mirror and stopped about twenty metres further on.",
+        "The moped tapped my rear bumper, then stopped a little way up the road.",
+        "A taxi bumped into the back of my car. It stopped a few metres later.",
+    ],
+    ids=["clipped-mirror", "tapped-bumper", "bumped-into"],
+)
+def test_a_stop_after_touching_a_road_user_is_the_aftermath(text):
+    assert all("stop" not in b for b in _behaviours(text))
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # a stop said as what came first is the contact's cause, the road user's own act
+        ("I rear-ended the taxi ahead when it stopped at the lights.", [["stop"]]),
+        ("We shunted a hatchback at the junction; it had stopped very suddenly right ahead of us.", [["sudden_stop"]]),
+        ("I rear-ended the taxi ahead when it stopped sharply at the lights.", [["sudden_stop"]]),
+    ],
+    ids=["when-it-stopped", "had-stopped", "stopped-sharply"],
+)
+def test_a_stop_said_as_the_contacts_cause_stays_the_road_users(text, expected):
+    assert _behaviours(text) == expected
+
+
+# --- a subject the reader reads as no road user: its reaction is not the road user's ------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A jogger stepped off the right kerb in front of the shuttle. Controller braked hard.", [["cross_in_front"]]),
+        ("A moped cut in ahead of the test car at 40 km/h. The autopilot slowed sharply.", [["cut_in"]]),
+        ("A child ran out into the road ahead of us. Trainee stopped dead, 3 m short.", [["cross_in_front"]]),
+        ("A cyclist swung out into our lane ahead. Our software then braked to a standstill.", [["cut_in"]]),
+    ],
+    ids=["controller", "the-autopilot", "trainee-stopped", "our-software"],
+)
+def test_a_reaction_of_a_subject_that_is_no_road_user_is_not_the_road_users(text, expected):
+    assert _behaviours(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # the subject is a road user, or none is said: the road user's own
+        (
+            "A jogger stepped off the right kerb in front of the shuttle. Jogger stopped dead.",
+            [["cross_in_front", "sudden_stop"]],
+        ),
+        ("A moped cut in ahead of the test car. Then braked sharply.", [["cut_in", "sudden_stop"]]),
+        # a noun that is not a subject: a time said before the road user's own verb
+        (
+            "A van pulled out of a side road ahead of us. Seconds later the van braked hard.",
+            [["turn_into", "sudden_stop"]],
+        ),
+    ],
+    ids=["jogger-stopped", "then-braked", "seconds-later"],
+)
+def test_a_reaction_of_the_road_user_or_of_no_subject_stays_its_own(text, expected):
+    assert _behaviours(text) == expected
+
+
+# --- a title and a word name a person, whatever the word reads as alone --------------------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        (
+            "A lad on a scooter shot out of a driveway in front of the coach. Mr Jones braked hard.",
+            [["cross_in_front"]],
+        ),
+        ("A cyclist swerved out in front of the minibus. Mrs Ones stopped dead.", [["change_lane"]]),
+        ("A jogger stepped out in front of the school bus. Dr Way slowed sharply and stopped.", [["cross_in_front"]]),
+    ],
+    ids=["mr-jones", "mrs-ones", "dr-way"],
+)
+def test_a_titled_name_is_a_person_not_the_road_user(text, expected):
+    assert _behaviours(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        (
+            "A kid on a bike veers out across the road ahead of the test car. The examiner's braking decides it.",
+            [["cross_in_front"]],
+        ),
+        (
+            "A moped cuts in ahead of the shuttle at 30 km/h; the controller's hard braking is what we test.",
+            [["cut_in"]],
+        ),
+        (
+            "A jogger steps off the kerb in front of the ego. Leave the planner's emergency stop to the sim.",
+            [["cross_in_front"]],
+        ),
+    ],
+    ids=["drivers-braking", "controllers-braking", "planners-stop"],
+)
+def test_a_reaction_owned_by_a_subject_that_is_no_road_user_is_not_the_road_users(text, expected):
+    assert _behaviours(text) == expected
+
+
+def test_a_reaction_owned_by_the_road_user_stays_its_own():
+    text = "A moped cuts in ahead of the shuttle at 30 km/h and the moped's hard braking ends it."
+    assert _behaviours(text) == [["cut_in", "sudden_stop"]]
+
+
+# --- "it stopped" in a story told by "I": "it" is the road user, never the narrator ----------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("I was behind a van, it stopped for no reason.", [["stop"]]),
+        ("We followed a tractor for a mile and then it stopped in the lane.", [["stop"]]),
+        ("I was queuing behind a bus when it stopped at the shelter.", [["stop"]]),
+    ],
+    ids=["behind-a-van", "followed-a-tractor", "queuing-behind-a-bus"],
+)
+def test_it_stopped_in_a_first_person_story_is_the_road_users_stop(text, expected):
+    assert _behaviours(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A cyclist came up on my left at the lights. I stopped and he went past.", [["keep_going"]]),
+        ("I stopped at the junction and a cyclist went past; it was raining.", [["keep_going"]]),
+        ("The scooter braked and stopped at the line.", [["stop"]]),
+    ],
+    ids=["i-stopped-he-went-past", "it-was-raining", "scooter-braked-and-stopped"],
+)
+def test_the_narrators_stop_is_not_the_road_users(text, expected):
+    assert _behaviours(text) == expected
+
+
+# --- a verb with an object and "to": the infinitive is the object's act ---------------------------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        (
+            "A pedestrian steps off the left kerb 30 m ahead of the ego at 5 km/h. We expect the ego to stop.",
+            [["cross_in_front"]],
+        ),
+        ("A cyclist cuts in ahead of the AV. The test wants the AV to brake hard.", [["cut_in"]]),
+        ("A van cuts in front of the ego car. It requires the ego to slow down to 20 km/h.", [["cut_in"]]),
+    ],
+    ids=["expect-the-ego-to-stop", "wants-the-av-to-brake", "requires-the-ego-to-slow"],
+)
+def test_the_infinitive_after_the_ego_as_object_is_the_egos(text, expected):
+    assert _behaviours(text) == expected
+
+
+def test_the_infinitive_after_a_road_user_as_object_is_its_own():
+    text = "The ego drives at 40 km/h behind a cyclist. The test wants the cyclist to brake hard."
+    assert _behaviours(text) == [["sudden_stop"]]
+
+
+def test_a_vehicle_owned_by_a_person_keeps_its_verb():
+    assert "cut_in" in _behaviours("The plumber's van cut in right in front of us at 30 mph.")[0]

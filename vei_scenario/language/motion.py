@@ -154,19 +154,29 @@ def _into_someone(tokens: list[str], j: int) -> bool:
     return _names_road_user(obj) or obj[:1] in (["me"], ["us"], ["ego"]) or obj[:2] == ["the", "ego"]
 
 
-#: Words before a verb of contact that say the contact did not happen ("nearly hit", "didn't clip").
-_NO_CONTACT = frozenset(("nearly", "almost", "narrowly", "not", "never", "without", "didn't", "didnt", "avoid",
-                         "avoided", "avoiding", "to"))  # fmt: skip
+#: Subordinators that make a clause after a contact its circumstance or its cause ("hit the taxi when it
+#: stopped", "because it braked", "after it had stopped"): what they open came first.
+_CIRCUMSTANCE = frozenset(("when", "as", "while", "whilst", "because", "since", "after", "cos", "coz"))
 
 
-def _struck_earlier(tokens: list[str], i: int) -> bool:
-    """Whether a verb of contact that happened stands anywhere before token ``i`` ("hit me. It then
-    carried on before stopping"): a stop after it is how the incident ended, whatever sentence it is
-    in; a contact that was missed ("nearly hit", "without hitting") ended nothing."""
-    return any(
-        set(lemmas(tok).get("VERB", ())) & _TOUCH and (j == 0 or tokens[j - 1] not in _NO_CONTACT)
-        for j, tok in enumerate(tokens[:i])
-    )
+def _struck_earlier(tokens: list[str], m) -> bool:
+    """Whether the stop of mention ``m`` is the aftermath of a contact with a road user stated before
+    it ("hit me. It then carried on before stopping", "clipped my mirror and stopped further on"):
+    how the incident ended, whatever sentence it is in. The outcome reader decides what a contact
+    is (:func:`outcome.contacts_made`): one that was missed ("nearly hit", "without hitting") or met
+    no road user ("hit the brakes", "tapped the horn") ended nothing. A stop said as what came first
+    is the contact's cause, not its aftermath: in a clause of time or cause after the contact ("hit
+    the taxi when it stopped"), in the past perfect ("it had stopped"), or in a hard manner ("he
+    stopped sharp in front of me")."""
+    from vei_scenario.language.outcome import contacts_made
+
+    i = m.start
+    before = [j for j in contacts_made(tokens) if j < i]
+    if not before or _said_hard(tokens, m) or tokens[i - 1 : i] == ["had"]:
+        return False
+    between = tokens[before[-1] + 1 : i]
+    ends = [k for k, t in enumerate(between) if t in (".", "!", "?", ";")]
+    return not _CIRCUMSTANCE & set(between[ends[-1] + 1 if ends else 0 :])
 
 
 #: Words that open a clause of the ego's act a road user's same act answers ("every time I slowed").
@@ -196,7 +206,8 @@ def outcome_not_behaviour(clauses: list, tokens: list[str] | None = None) -> lis
     than what a road user does: a contact verb whose subject is both parties or that says what it met
     ("crashed into a van", "collided with the bus"), "yield a/an ...", and a
     fall said after a contact in its sentence ("clipped my mirror and fell off": what the contact did,
-    not a stop the road user makes; ``tokens``: those the mentions index)."""
+    not a stop the road user makes), and a stop said after a contact with a road user ("clipped my
+    mirror and stopped further on": the aftermath; ``tokens``: those the mentions index)."""
     out = []
     for link, mentions in clauses:
         kept = []
@@ -206,7 +217,7 @@ def outcome_not_behaviour(clauses: list, tokens: list[str] | None = None) -> lis
                 fall = tokens is not None and "fall" in lemmas(first).get("VERB", ())
                 if fall and _touched_before(tokens, m.start):
                     continue  # ("..., struck the ego's mirror, falling into the road": the outcome)
-                if m.value[0] == "stop" and tokens is not None and _struck_earlier(tokens, m.start):
+                if m.value[0] == "stop" and tokens is not None and _struck_earlier(tokens, m):
                     continue  # ("struck my bumper and carried on before stopping": the aftermath)
                 slows = m.value[0] in ("change_speed", "sudden_stop", "stop")
                 if slows and tokens is not None and _mirrors_the_ego(tokens, m.start):
@@ -219,9 +230,26 @@ def outcome_not_behaviour(clauses: list, tokens: list[str] | None = None) -> lis
                     continue  # ("crashed head-on into a motorcyclist": the contact, the outcome)
                 if first in ("yield", "yields", "yielded", "yielding") and m.next_ in ("a", "an"):
                     continue  # ("designed to yield a collision")
+            elif m.slot == "stationary" and tokens is not None and _stop_said_as_a_verb(mentions, k):
+                if _struck_earlier(tokens, m):
+                    continue  # ("clipped my mirror and stopped further on"; not "he stopped sharp": the cause)
             kept.append(m)
         out.append((link, kept))
     return out
+
+
+#: Mentions after which a word is the verb of its clause, not a participle of a noun ("a car stopped in
+#: the lane"): a conjunction, a link, a pronoun as its subject.
+_BEFORE_A_VERB = frozenset(("conj", "link", "pronoun"))
+
+
+def _stop_said_as_a_verb(mentions: list, k: int) -> bool:
+    """Whether the stationary mention ``mentions[k]`` is a verb of stopping said of a subject known
+    before ("... and stopped", "then stopped", "It stopped"), not a standing road user's state."""
+    m = mentions[k]
+    if not _STOP_VERBS & set(lemmas(m.words.split()[0]).get("VERB", ())):
+        return False
+    return k == 0 or mentions[k - 1].slot in _BEFORE_A_VERB
 
 
 _TOWARDS = frozenset(("into", "onto"))
@@ -1388,6 +1416,16 @@ def _stopping(m) -> bool:
     return m.slot == "stationary" and verb.endswith(("ed", "s")) and stops
 
 
+def _said_hard(tokens: list[str], m) -> bool:
+    """Whether the verb of mention ``m`` is said in a hard manner: an adverb of one right before it or
+    right after it, past an intensifier ("abruptly stopped", "stopped very sharply")."""
+    j = m.end
+    while j < len(tokens) and tokens[j] in _INTENSIFIERS:
+        j += 1
+    after = j < len(tokens) and _hard_manner(tokens[j])
+    return after or (m.start > 0 and _hard_manner(tokens[m.start - 1]) and tokens[m.start - 1] != "dead")
+
+
 def hard_stops(clauses: list, tokens: list[str]) -> list:
     """``clauses`` with a stop said in a hard or sudden manner ("stopped abruptly", "abruptly stopped",
     "stopped very sudden") read as the sudden stop it is: the adverb right before the verb, or right
@@ -1399,12 +1437,7 @@ def hard_stops(clauses: list, tokens: list[str]) -> list:
         for k, m in enumerate(kept):
             if not _stopping(m):
                 continue
-            j = m.end
-            while j < len(tokens) and tokens[j] in _INTENSIFIERS:
-                j += 1
-            after = j < len(tokens) and _hard_manner(tokens[j])
-            before = m.start > 0 and _hard_manner(tokens[m.start - 1]) and tokens[m.start - 1] != "dead"
-            if after or before:
+            if _said_hard(tokens, m):
                 kept[k] = replace(m, slot="behaviour", value=("sudden_stop", {}))
         out.append((link, kept))
     return out

@@ -884,6 +884,44 @@ def _relief(words: list[str], i: int) -> bool:
     return not nxt or nxt in ("i", "we", "that", "it", "he", "she", "they") or "NOUN" not in _pos(nxt)
 
 
+def _contact_kind(words: list[str], i: int, clause: _Clause, before: list[str]) -> str:
+    """What the contact stated at ``words[i]`` (a word :func:`_is_contact` accepts) says happened:
+    "contact", "hedged" ("nearly hit", "would have hit"), "denied" ("did not hit", "no contact") or
+    "required" (a contact a test says must not happen); ``before``: its sentence's words before it."""
+    passive = _denied_after(words, i)  # ("collision narrowly avoided", "a crash was averted")
+    hedged = _scoped(words, i, _HEDGES | {"only", "within"}, 5) or passive == "hedged"
+    counterfactual = "have" in words[:i] and (_scoped(words, i, _HYPOTHETICAL, 3) or clause.after_if)
+    if hedged or counterfactual:
+        return "hedged"
+    if _denied_before(words, i) or _scoped(words, i, _HYPOTHETICAL, 2) or passive == "denied":
+        # ("must overtake him and not touch him": the outcome the test wants, no contact)
+        return "required" if _required(before) else "denied"
+    return "contact"
+
+
+def contacts_made(tokens: list[str]) -> list[int]:
+    """The indices of the words of ``tokens`` (the reader's lowercased tokens) that state a contact
+    between road users that happened: a verb or noun of contact whose object is a road user (not "hit
+    the brakes", "tapped the horn", "touched 50"), neither denied ("did not hit", "without touching")
+    nor hedged ("nearly clipped", "would have hit"). The one test of contact that the outcome and the
+    readers of what follows a contact (a stop that is its aftermath) share."""
+    out: list[int] = []
+    cursor = 0
+    sentence: list[str] = []
+    for clause in _clauses(tokens):
+        words = clause.words
+        at = next((k for k in range(cursor, len(tokens)) if tokens[k : k + len(words)] == words), cursor)
+        cursor = at + len(words)
+        sentence = words if clause.first_of_sentence else sentence + words
+        for i in range(len(words)):
+            if (
+                _is_contact(words, i)
+                and _contact_kind(words, i, clause, sentence[: len(sentence) - len(words) + i]) == "contact"
+            ):
+                out.append(at + i)
+    return out
+
+
 def outcome_cues(said: str) -> list[Cue]:
     """The statements of the outcome in ``said`` (the reader's normalised, lowercased tokens joined by
     spaces, contractions as "did not"), in text order."""
@@ -914,16 +952,7 @@ def outcome_cues(said: str) -> list[Cue]:
 
         for i, w in enumerate(words):
             if _is_contact(words, i):
-                passive = _denied_after(words, i)  # ("collision narrowly avoided", "a crash was averted")
-                hedged = _scoped(words, i, _HEDGES | {"only", "within"}, 5) or passive == "hedged"
-                counterfactual = "have" in words[:i] and (_scoped(words, i, _HYPOTHETICAL, 3) or clause.after_if)
-                if hedged or counterfactual:
-                    add("hedged")
-                elif _denied_before(words, i) or _scoped(words, i, _HYPOTHETICAL, 2) or passive == "denied":
-                    # ("must overtake him and not touch him": the outcome the test wants, no contact)
-                    add("required" if _required(sentence[: len(sentence) - len(words) + i]) else "denied")
-                else:
-                    add("contact")
+                add(_contact_kind(words, i, clause, sentence[: len(sentence) - len(words) + i]))
                 continue
             if _near_noun(words, i):
                 own = _after_contact_noun(words, i)  # ("no collision (near miss)": "no" is not said of it)

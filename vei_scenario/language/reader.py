@@ -1411,9 +1411,9 @@ def _read(text: str) -> Reading:
                         and m.words == "it"
                         and ego_is_a_person
                         and verb is not None
-                        and verb.slot in ("to_stop", "unknown_verb")
+                        and verb.slot in ("to_stop", "unknown_verb", "stationary")
                     ):
-                        who = actors[-1]  # ("We were following the bus when it pulled to a stop": not us)
+                        who = actors[-1]  # ("We were following the bus when it pulled to a stop", "it stopped": not us)
                     if discourse.others_named(m.words, who == "ego" and ego_is_a_person, group or last_group):
                         who = (group or last_group)[-1]  # ("I was at 40, they were doing 20": the group, not us)
                     if m.words in ("he", "she"):  # a person's pronoun names the same one all through a story

@@ -146,6 +146,7 @@ def acts_not_the_subjects(clauses: list, tokens: list[str], first_person: bool, 
     out = narrators_acts(clauses, tokens, first_person)
     out.update(named_persons_acts(clauses, tokens, text))
     out.update(caused_acts(clauses, tokens))
+    out.update(unread_subjects_reactions(clauses, tokens))
     return out
 
 
@@ -188,7 +189,7 @@ def _riding_names(text: str) -> frozenset[str]:
 
 def named_persons_acts(clauses: list, tokens: list[str], text: str) -> dict[int, bool]:
     """The verbs of a person named by a name at the start of a clause ("Marco braked hard and
-    swerved"), by their mention's start, each with whether it passes someone; not those of a name
+    swerved", "Mr Jones braked"), by their mention's start, each with whether it passes someone; not those of a name
     said with a road user ("my brother Sam in his Golf ... Sam braked"), whose verbs are a road
     user's. ``tokens``: those the mentions index."""
     names, riding = _person_names(text), _riding_names(text)
@@ -198,11 +199,13 @@ def named_persons_acts(clauses: list, tokens: list[str], text: str) -> dict[int,
     }
     road_users = [m for m in flat if m.slot == "actor" and m.value != "ego"]
     persons: dict[int, bool] = {}
-    if not names:
+    if not names and not _TITLES & set(tokens):
         return persons
+    actors_at = {i for m in flat if m.slot == "actor" for i in range(m.start, m.end)}
     for i, tok in enumerate(tokens):
-        if tok not in names or i in covered or (i and tokens[i - 1] in names):
-            continue
+        titled = i > 0 and tokens[i - 1] in _TITLES and _word(tok) and i not in actors_at
+        if not titled and (tok not in names or i in covered or (i and tokens[i - 1] in names)):
+            continue  # (a title makes the word after it a name, whatever it reads as alone: "Mr Jones")
         before = tokens[i - 1] if i else "."
         if before in _TITLES:
             before = tokens[i - 2] if i > 1 else "."
@@ -251,8 +254,11 @@ def _passes(m) -> bool:
     return m.slot == "behaviour" and m.value[0] == "overtake"
 
 
-#: Verbs (lemmas) of making someone do something: the verb after their object is the object's.
-_CAUSING = frozenset(("force", "cause", "make", "compel", "oblige"))
+#: Verbs (lemmas) of making, wanting or letting someone do something, said with an object and "to":
+#: the verb after their object is the object's ("forced him to brake", "expects the ego to stop").
+_CAUSING = frozenset(
+    ("force", "cause", "make", "compel", "oblige", "expect", "want", "require", "need", "ask", "tell", "allow")
+)
 #: Of those, the one said with a bare infinitive ("made me brake").
 _CAUSING_BARE = frozenset(("make",))
 #: Objects said as a pronoun ("forcing him to brake").
@@ -367,3 +373,65 @@ def the_rider(tokens: list[str], kind_at: Callable[[list[str], int], tuple[str, 
         if word is not None:
             out[i] = word
     return out
+
+
+#: What opens a sentence: a subject standing first after one of these is its clause's own.
+_SENTENCE_ENDS = frozenset((".", "!", "?", ";", ":"))
+#: Determiners and possessives a subject's noun phrase may open with ("the planner", "our software").
+_SUBJECT_OPENERS = frozenset(("the", "a", "an", "our", "my", "its", "their", "his", "her"))
+#: Adverbs that may stand between a subject and its verb ("the autopilot then braked").
+_BETWEEN_SUBJECT_AND_VERB = frozenset(("then", "also", "immediately", "instantly", "just", "quickly", "finally"))
+
+
+def unread_subjects_reactions(clauses: list, tokens: list[str]) -> dict[int, bool]:
+    """The reactions (braking, stopping, slowing, swerving) whose subject is a common noun the reader
+    reads as no road user, opening its sentence ("Planner braked to a full stop.", "The autopilot
+    slowed sharply.", "Trainee stopped dead."), by their mention's start, with the verbs joined to
+    them: a report names the ego's side by its role or its system (a planner, a candidate, a
+    controller), and the reaction is theirs, not the road user named before. A subject read as a road
+    user ("Jogger stopped dead.") keeps its verb, and so does a sentence with no subject ("Then braked
+    sharply.") or one whose noun is no subject ("Seconds later the van braked"). A reaction said as a
+    noun such a subject owns ("let the player's braking decide") is theirs as well."""
+    out: dict[int, bool] = {}
+    flat = [m for _, ms in clauses for m in ms]
+    read = {i for m in flat if m.slot != "unknown_verb" for i in range(m.start, max(m.end, m.start + 1))}
+    by_start = {m.start: m for m in flat if m.slot in _ACT_SLOTS}
+    for s, tok in enumerate(tokens):
+        if s and tokens[s - 1] not in _SENTENCE_ENDS:
+            continue
+        i = s + (tok in _SUBJECT_OPENERS)
+        j = i
+        while j < len(tokens) and j - i < 3 and j not in read and _common_noun(tokens[j]):
+            j += 1
+        if j == i:
+            continue
+        while j < len(tokens) and tokens[j] in _BETWEEN_SUBJECT_AND_VERB:
+            j += 1
+        verb = by_start.get(j)
+        if verb is None or verb.slot != "behaviour" or verb.value[0] not in _REACTIONS:
+            continue
+        for m in [verb, *_acts_after(flat, tokens, verb.end)]:
+            out[m.start] = False
+    for p, tok in enumerate(tokens):  # ("let the player's braking decide": the player's, said as a noun)
+        if tok != "'s":
+            continue
+        i = p
+        while i > 0 and p - i < 3 and i - 1 not in read and _common_noun(tokens[i - 1]):
+            i -= 1
+        if i == p or not (i == 0 or tokens[i - 1] in _SUBJECT_OPENERS or tokens[i - 1] in _SENTENCE_ENDS):
+            continue
+        noun = next((by_start[k] for k in range(p + 1, p + 3) if k in by_start), None)
+        if noun is None or noun.slot != "behaviour" or noun.value[0] not in _REACTIONS:
+            continue
+        head = noun.words.split()[0]
+        if any(k in read for k in range(p + 1, noun.start)) or not ("NOUN" in lemmas(head) or head.endswith("ing")):
+            continue  # (its noun is a vehicle, whose verb follows: "the neighbour's van pulled out")
+        out[noun.start] = False
+    return out
+
+
+def _common_noun(word: str) -> bool:
+    """Whether ``word`` is a common noun and nothing else a subject could be (not a verb's form
+    only, not a pronoun or an adverb): "planner", "candidate", "autopilot"."""
+    found = lemmas(word)
+    return "NOUN" in found and "ADV" not in found and "PRON" not in found and word.isalpha()
