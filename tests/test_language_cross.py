@@ -75,3 +75,67 @@ def test_having_a_road_user_with_no_verb_after_it_is_no_act_of_its():
     reading = read("I had a cyclist ahead of me at 20 km/h and I overtook him at 40 km/h.")
     (actor,) = reading.actors
     assert actor.behaviours[0][0] in ("along_road", "keep_going", "keep_lane")
+
+
+# "... and (straight) out across / into the road": a verbless conjunct goes on with its subject's move.
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A boy on a scooter came racing along the pavement on the right and straight out across the road ahead of me.",
+        "A woman hurried down the footpath on the left and out into the street in front of us at 20 mph.",
+        "A kid on a bike pelted along the sidewalk on the left then straight out across the road ahead of my car.",
+    ],
+)
+def test_out_across_the_road_after_going_along_the_footway_is_a_crossing(text):
+    assert _names(text)[0] == "cross_in_front"
+
+
+def test_going_along_the_footway_without_coming_out_is_no_crossing():
+    names = _names("A boy on a scooter came racing along the pavement on the right as I drove past at 20 mph.")
+    assert "cross_in_front" not in names
+
+
+# "came out of a driveway / gate / bus stop and crossed": one crossing from that side, not a cut-in first.
+@pytest.mark.parametrize(
+    ("text", "side"),
+    [
+        ("A girl on a scooter rolled out of a garden gate on the left and crossed in front of us at 20 mph.", "left"),
+        ("A man walked out from the bus stop on my right and crossed just ahead of the car.", "right"),
+        ("An old man on a bicycle came out of a farm track on the left and rode across the lane ahead of us.", "left"),
+    ],
+)
+def test_out_of_a_roadside_place_then_across_is_one_crossing(text, side):
+    actor = _one(text)
+    assert [b[0] for b in actor.behaviours] == ["cross_in_front"]
+    assert actor.relation == f"roadside_{side}"
+
+
+def test_a_vehicle_out_of_a_driveway_then_across_is_not_a_walkers_crossing():
+    names = _names("A van reversed out of a driveway on the left and crossed into my lane at 10 mph.")
+    assert names[0] != "cross_in_front"
+
+
+# "out of the junction / intersection": the junction as what one comes out of is one of its arms.
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was doing 25 mph when a lad on a scooter shot out of the junction without stopping and I hit him.",
+        "A cyclist came flying out of the intersection just in front of me while I was at 30 km/h.",
+        "At 20 mph a girl on an e-scooter rode out from the crossroads straight into my path.",
+    ],
+)
+def test_a_rider_out_of_the_junction_comes_from_an_arm(text):
+    actor = _one(text)
+    assert actor.relation.startswith("junction_")
+    assert actor.behaviours[0][0] in ("run_red_light", "turn_into", "cross_in_front")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I came out of the junction at 20 mph and a cyclist was riding along ahead of me.",
+        "At the junction a woman stepped off the kerb on my left in front of me as I drove at 20 mph.",
+    ],
+)
+def test_the_ego_out_of_the_junction_or_a_kerb_at_it_is_no_arm_of_the_road_user(text):
+    assert not _one(text).relation.startswith("junction_")
