@@ -139,3 +139,30 @@ def test_a_rider_out_of_the_junction_comes_from_an_arm(text):
 )
 def test_the_ego_out_of_the_junction_or_a_kerb_at_it_is_no_arm_of_the_road_user(text):
     assert not _one(text).relation.startswith("junction_")
+
+
+# A walker or rider in or on a foot crossing (crosswalk, zebra, pelican) is crossing the road on it.
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was turning left on green at 15 mph and hit a pedestrian in the crosswalk.",
+        "Turning right at the lights, I nearly hit a man on the zebra crossing.",
+        "At 20 mph I clipped a kid on a bike on the pelican crossing.",
+    ],
+)
+def test_a_walker_on_a_foot_crossing_crosses(text):
+    actor = _one(text)
+    assert actor.behaviours[0][0] == "cross_in_front"
+    assert actor.relation.startswith("roadside_")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A pedestrian waiting at the crosswalk stepped back as I passed at 20 mph.",
+        "A cyclist rode past the zebra crossing ahead of me at 15 km/h while I followed at 20 km/h.",
+        "A woman by the zebra crossing waited for me to pass at 20 mph.",
+    ],
+)
+def test_a_walker_beside_a_foot_crossing_does_not_cross(text):
+    assert _one(text).behaviours[0][0] != "cross_in_front"

@@ -1236,7 +1236,7 @@ def chains(clauses: list, tokens: list[str]) -> list:
         passes_while_the_ego_yields(follows_the_ego(on_the_ego_tail(clauses, tokens), tokens))
     )
     clauses = round_the_ego(passing_in_front(out_into_the_road(clauses, tokens), tokens), tokens)
-    clauses = out_of_a_place_then_across(out_across_the_road(clauses, tokens))
+    clauses = on_a_foot_crossing(out_of_a_place_then_across(out_across_the_road(clauses, tokens)), tokens)
     return slowing_into_a_stop(lets_the_ego_go(into_a_lane(clauses, tokens), tokens))
 
 
@@ -1679,6 +1679,48 @@ def out_across_the_road(clauses: list, tokens: list[str]) -> list:
             kept.insert(next((n for n, x in enumerate(kept) if x.start > j), len(kept)), move)
         named = [x for x in mentions if x.slot == "actor" and x.value != "ego"]
         subject = named[-1] if named else subject
+        out.append((link, kept))
+    return out
+
+
+#: Words that make a place a crossing for people on foot ("the crosswalk", "a zebra crossing").
+_FOOT_CROSSING = frozenset(("crosswalk", "crosswalks", "zebra", "pelican", "puffin", "toucan"))
+#: Prepositions that put a road user in the crossing itself, out on the road (not "at" or "by" it).
+_IN_IT = frozenset(("in", "on", "onto", "into", "across"))
+
+
+def _preposition_before(tokens: list[str], start: int) -> str:
+    """The word before the noun phrase starting at ``start``, past its article ("on [the] zebra")."""
+    i = start - 1
+    while i >= 0 and tokens[i] in _DETERMINERS:
+        i -= 1
+    return tokens[i] if i >= 0 else ""
+
+
+def on_a_foot_crossing(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a walker or rider said to be in or on a foot crossing ("hit a pedestrian in the
+    crosswalk", "a man on the zebra crossing", "a kid on a bike on the pelican") and no move of its own
+    read as crossing the road on it: out on a crossing made for going across, that is what it does.
+    Waiting at the crossing, or a move said of it ("walked along the crossing"), keeps what is said."""
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k, m in enumerate(mentions):
+            if m.slot != "kerb" or not set(m.words.split()) & _FOOT_CROSSING:
+                continue
+            if _preposition_before(tokens, m.start) not in _IN_IT:
+                continue
+            at = next((n for n in range(k - 1, -1, -1) if mentions[n].slot in ("actor", "pronoun")), None)
+            if at is None or mentions[at].slot != "actor" or mentions[at].value not in _CROSSERS:
+                continue
+            end = next((n for n in range(k + 1, len(mentions)) if mentions[n].slot in ("actor", "pronoun")), None)
+            own = mentions[at + 1 : end]
+            if any(x.slot in ("behaviour", "stationary", "unknown_verb", "ego_verb", "turn") for x in own):
+                continue  # (it does something said: that stands)
+            # said as its participle right after it ("a man crossing on the zebra"), so the crossing is
+            # the walker's even where the walker is the object of the narrator's verb ("I hit a man ...")
+            crossing = replace(m, slot="behaviour", value=("cross_in_front", {}), words="crossing", det="", owners=())
+            kept.insert(kept.index(mentions[at]) + 1, crossing)
         out.append((link, kept))
     return out
 
