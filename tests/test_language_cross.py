@@ -166,3 +166,22 @@ def test_a_walker_on_a_foot_crossing_crosses(text):
 )
 def test_a_walker_beside_a_foot_crossing_does_not_cross(text):
     assert _one(text).behaviours[0][0] != "cross_in_front"
+
+
+# "out of" a place beside the road is where the road user comes from, as "from" and "off" are: into a
+# lane of a side, it came out of the kerb beside that lane.
+@pytest.mark.parametrize(
+    ("text", "side"),
+    [
+        ("A cyclist came out of the hard shoulder into the left lane just ahead of us at 60 km/h.", "left"),
+        ("A boy on a scooter rolled out of the verge into the right lane in front of my car.", "right"),
+        ("A jogger ran out of the gravel shoulder into the left lane ahead of me as I drove at 40 km/h.", "left"),
+    ],
+)
+def test_out_of_the_side_into_a_lane_starts_beside_that_lane(text, side):
+    assert _one(text).relation == f"roadside_{side}"
+
+
+def test_riding_along_the_shoulder_is_no_coming_out_of_it():
+    actor = _one("A cyclist rode along the hard shoulder on the left as I passed at 60 km/h.")
+    assert [b[0] for b in actor.behaviours] == ["along_road"]

@@ -316,7 +316,26 @@ def out_of_a_side_road(clauses: list, tokens: list[str] | None = None) -> list:
                 # "pulled out of the stop", "out of a driveway": onto the road from beside it, no arm
                 cfg = {x: v for x, v in m.value[1].items() if x != "from_side_road"}
                 kept[k] = replace(m, value=(m.value[0], cfg))
+        if tokens is not None:
+            kept = _out_of_the_side_is_from(kept, tokens)
         out.append((link, _into_the_ego_road(kept, tokens) if tokens is not None else kept))
+    return out
+
+
+def _out_of_the_side_is_from(mentions: list, tokens: list[str]) -> list:
+    """``mentions`` with a place beside the road said right after "out of" ("came out of the hard
+    shoulder", "rolled out of the verge") marked as where its road user comes from, as "from the
+    verge" and "off the kerb" are: the place it leaves for the road is its start, whichever lane it
+    then goes into."""
+    out = list(mentions)
+    for k, m in enumerate(out):
+        if m.slot not in ("kerb", "kerb_side") or m.prev in ("from", "off"):
+            continue
+        i = m.start - 1
+        while i >= 0 and m.start - i <= 3 and tokens[i] != "of" and tokens[i] not in _STOPS:
+            i -= 1  # (past its article and adjectives: "out of the gravel shoulder")
+        if i >= 1 and tokens[i - 1 : i + 1] == ["out", "of"]:
+            out[k] = replace(m, prev="from")
     return out
 
 
