@@ -185,3 +185,25 @@ def test_out_of_the_side_into_a_lane_starts_beside_that_lane(text, side):
 def test_riding_along_the_shoulder_is_no_coming_out_of_it():
     actor = _one("A cyclist rode along the hard shoulder on the left as I passed at 60 km/h.")
     assert [b[0] for b in actor.behaviours] == ["along_road"]
+
+
+# "It" stands for the roundabout once one is said, in the plural too ("roundabouts today ... onto it").
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Roundabouts scare me. Yesterday I was going round one at 20 mph and a cyclist rode straight onto it in "
+        "front of me.",
+        "Practised roundabouts with my instructor. Halfway round the big one at 15 mph, a van shot onto it right "
+        "in front of us.",
+        "Mini-roundabouts are the worst: I was halfway round one at 10 mph when a scooter rolled onto it ahead of me.",
+    ],
+)
+def test_onto_it_after_roundabouts_is_entering_from_an_arm(text):
+    actor = _one(text)
+    assert actor.relation.startswith("junction_")
+    assert actor.behaviours[0][0] in ("run_red_light", "turn_into", "cross_in_front")
+
+
+def test_roundabouts_said_with_no_entry_is_no_entry():
+    actor = _one("Roundabouts are fine. A cyclist rode along the road ahead of me at 15 km/h while I followed at 20.")
+    assert actor.behaviours[0][0] == "along_road"

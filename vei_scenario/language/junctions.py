@@ -287,7 +287,13 @@ _BEFORE_ONTO = frozenset(("straight", "right", "just", "directly", "suddenly", "
 
 
 def _ring(m) -> bool:
-    return m.slot == "map" and m.value == "roundabout" and bool(set(m.words.split()) & _RING_WORDS)
+    """Whether ``m`` names a roundabout, in the singular or the plural ("roundabouts today": once said,
+    "it" may stand for the one the story is at)."""
+    if m.slot != "map" or m.value != "roundabout":
+        return False
+    words = set(m.words.split())
+    singular = {n for w in words for n in lemmas(w).get("NOUN", ())}
+    return bool((words | singular) & _RING_WORDS)
 
 
 def _onto_the_ring(tokens: list[str], j: int, mentions: list, ring_said: bool):
