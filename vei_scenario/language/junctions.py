@@ -133,13 +133,81 @@ def priority(clauses: list, tokens: list[str]) -> list:
     return out
 
 
+#: Words of a traffic signal that may follow "the red" ("ran the red light").
+_SIGNAL = frozenset(("light", "lights", "signal", "signals", "man", "arrow"))
+#: Verbs (lemmas) that take the red as their object without going through it ("saw the red", "waited
+#: for ... the red", "approached the red"): perceiving it, coming up to it, keeping to it.
+_NOT_THROUGH = frozenset(
+    ("see", "spot", "notice", "watch", "approach", "reach", "face", "obey", "respect", "wait", "stop", "get", "have")
+)
+#: Articles before "red" when it names the signal ("blew the red", "jumped a red").
+_RED_ARTICLES = frozenset(("the", "a"))
+
+
+def _runs_the_red_at(tokens: list[str], i: int) -> bool:
+    """Whether token ``i`` is a verb whose object is the red signal ("shot the red", "blasted the red
+    light at Eglinton"): verb + "the"/"a" + "red" (+ a word of the signal), with no other noun after
+    "red" ("overtook the red car" is a colour), and the verb not one of seeing or coming up to it."""
+    said = lemmas(tokens[i]).get("VERB", ())
+    if not said or any(v in _NOT_THROUGH for v in said) or tokens[i + 1 : i + 3] not in (["the", "red"], ["a", "red"]):
+        return False
+    after = tokens[i + 3] if i + 3 < len(tokens) else ""
+    if after in _SIGNAL:
+        return True
+    forms = lemmas(after)
+    return not (forms.get("NOUN") and not forms.get("VERB") and not forms.get("ADP"))
+
+
+def verb_the_red(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a road user's verb that takes the red signal as its object read as running
+    it, whatever the verb (:func:`_runs_the_red_at`): "blew the red", "shot the red", "barrelled the
+    red light" say how it went through; that it went through against the red is the object. Only a
+    verb after a road user other than the ego, with no move of its own read between, counts; a
+    "red light" the reader read as the junction's signal stays that, and the run is added at the verb."""
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k, m in enumerate(mentions):
+            if m.slot != "actor" or m.value == "ego":
+                continue
+            stop = next((x.start for x in mentions[k + 1 :] if x.slot in ("actor", "pronoun", "conj", "link")), None)
+            end = min(stop if stop is not None else len(tokens), len(tokens) - 2)
+            moves = [x for x in mentions[k + 1 :] if x.slot in ("behaviour", "turn") and x.start < end]
+            for i in range(m.end, end):
+                if tokens[i] in (".", ";", "!", "?"):
+                    break
+                if not _runs_the_red_at(tokens, i) or any(x.start < i and not _plain(x) for x in moves):
+                    continue
+                verb = next((x for x in kept if x.start == i and x.slot in ("behaviour", "unknown_verb")), None)
+                ran = replace(
+                    m,
+                    slot="behaviour",
+                    value=("run_red_light", {}),
+                    words=tokens[i],
+                    start=i,
+                    end=i + 1,
+                    det="",
+                    prev=tokens[i - 1],
+                    next_=tokens[i + 1],
+                    owners=(),
+                )
+                if verb is not None:
+                    kept[kept.index(verb)] = ran
+                else:
+                    at = next((n for n, x in enumerate(kept) if x.start > i), len(kept))
+                    kept.insert(at, ran)
+                break
+        out.append((link, kept))
+    return out
+
+
 def crossings(clauses: list, tokens: list[str]) -> list:
     """``clauses`` (link, mentions) with a walker or rider's crossing read from its structure: a plain
     verb of motion going over or across the mouth of an arm, or a road user going "across" in front
     of the ego or across its path (its plain verb made the crossing, or the crossing added where the
     verb is not one the reader knows). A clause that says another move already keeps it."""
     out = []
-    for link, mentions in entering_the_roundabout(clauses, tokens):
+    for link, mentions in entering_the_roundabout(verb_the_red(clauses, tokens), tokens):
         kept = list(mentions)
         for k, m in enumerate(mentions):
             if _plain(m) and _crossed_arm(mentions, k, tokens):
@@ -219,7 +287,13 @@ _BEFORE_ONTO = frozenset(("straight", "right", "just", "directly", "suddenly", "
 
 
 def _ring(m) -> bool:
-    return m.slot == "map" and m.value == "roundabout" and bool(set(m.words.split()) & _RING_WORDS)
+    """Whether ``m`` names a roundabout, in the singular or the plural ("roundabouts today": once said,
+    "it" may stand for the one the story is at)."""
+    if m.slot != "map" or m.value != "roundabout":
+        return False
+    words = set(m.words.split())
+    singular = {n for w in words for n in lemmas(w).get("NOUN", ())}
+    return bool((words | singular) & _RING_WORDS)
 
 
 def _onto_the_ring(tokens: list[str], j: int, mentions: list, ring_said: bool):

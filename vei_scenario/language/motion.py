@@ -325,6 +325,18 @@ def out_of_a_side_road(clauses: list, tokens: list[str] | None = None) -> list:
             particle = m.words.endswith((" out", " out of", " out from")) and (
                 m.next_ in ("of", "from") or m.words.endswith(("of", "from"))
             )
+            after = tokens[m.end : m.end + 2] if tokens is not None else []
+            out_after = (
+                m.slot == "behaviour" and m.value[0] in _PLAIN_MOVES and after in (["out", "of"], ["out", "from"])
+            )
+            if out_after and _the_junction_left(nxt, kept):  # ("rode out from the crossroads")
+                particle = True
+            between = tokens[m.end : nxt.start] if tokens is not None else ["?"] * (nxt.start - m.end)
+            right_after = all(t in ("out", "of", "from", "the", "a") for t in between)
+            if m.slot == "behaviour" and particle and right_after and _the_junction_left(nxt, kept):
+                # "shot out of the junction": the junction one comes out of is one of its arms
+                kept.insert(kept.index(nxt) + 1, replace(nxt, slot="arm", value=None, prev="from"))
+                nxt = kept[kept.index(nxt) + 1]
             if m.slot == "behaviour" and particle and nxt.slot == "arm" and nxt.prev in ("of", "from"):
                 if not m.value[1].get("from_side_road"):
                     kept[k] = replace(m, value=("cut_in", {**m.value[1], "from_side_road": 1.0}))
@@ -332,8 +344,44 @@ def out_of_a_side_road(clauses: list, tokens: list[str] | None = None) -> list:
                 # "pulled out of the stop", "out of a driveway": onto the road from beside it, no arm
                 cfg = {x: v for x, v in m.value[1].items() if x != "from_side_road"}
                 kept[k] = replace(m, value=(m.value[0], cfg))
+        if tokens is not None:
+            kept = _out_of_the_side_is_from(kept, tokens)
         out.append((link, _into_the_ego_road(kept, tokens) if tokens is not None else kept))
     return out
+
+
+def _out_of_the_side_is_from(mentions: list, tokens: list[str]) -> list:
+    """``mentions`` with a place beside the road said right after "out of" ("came out of the hard
+    shoulder", "rolled out of the verge") marked as where its road user comes from, as "from the
+    verge" and "off the kerb" are: the place it leaves for the road is its start, whichever lane it
+    then goes into."""
+    out = list(mentions)
+    for k, m in enumerate(out):
+        if m.slot not in ("kerb", "kerb_side") or m.prev in ("from", "off"):
+            continue
+        i = m.start - 1
+        while i >= 0 and m.start - i <= 3 and tokens[i] != "of" and tokens[i] not in _STOPS:
+            i -= 1  # (past its article and adjectives: "out of the gravel shoulder")
+        if i >= 1 and tokens[i - 1 : i + 1] == ["out", "of"]:
+            out[k] = replace(m, prev="from")
+    return out
+
+
+#: Words of a junction as a whole (the map mention's words) that one can come out of.
+_JUNCTION_WORDS = frozenset(("junction", "intersection", "crossroads", "crossroad", "t-junction", "crossing"))
+
+
+def _the_junction_left(m, mentions: list) -> bool:
+    """Whether map mention ``m`` is a junction as a whole said right after "out of"/"out from" ("out of
+    the junction", "out from the intersection"), with no arm of it said next: the road user comes
+    out of one of its arms. Only a road user's move out counts (the caller's verb): the ego coming
+    out of a junction is its route, read elsewhere."""
+    if m.slot != "map" or m.value != "crossroad" or m.prev not in ("of", "from", "the", "a"):
+        return False
+    if not set(m.words.split()) & _JUNCTION_WORDS:
+        return False
+    after = mentions[mentions.index(m) + 1 :]
+    return not (after and after[0].slot == "arm" and after[0].start <= m.end + 1)
 
 
 def _into_the_ego_road(mentions: list, tokens: list[str]) -> list:
@@ -1235,6 +1283,7 @@ def chains(clauses: list, tokens: list[str]) -> list:
         passes_while_the_ego_yields(follows_the_ego(on_the_ego_tail(clauses, tokens), tokens))
     )
     clauses = round_the_ego(passing_in_front(out_into_the_road(clauses, tokens), tokens), tokens)
+    clauses = on_a_foot_crossing(out_of_a_place_then_across(out_across_the_road(clauses, tokens)), tokens)
     return slowing_into_a_stop(lets_the_ego_go(into_a_lane(clauses, tokens), tokens))
 
 
@@ -1591,14 +1640,19 @@ _CROSSERS = frozenset(("pedestrian", "bicycle", "e-scooter"))
 
 
 def _out_into_the_road(tokens: list[str], j: int) -> int | None:
-    """Where "out into the road" / "out from between ..." / "out from behind ..." said from
+    """Where "out into the road" / "out across the road" / "out from between ..." / "out from behind ..." said from
     ``tokens[j]`` ends (past "out" and its preposition), or None."""
     while j < len(tokens) and tokens[j] in _BEFORE_OUT:
         j += 1
     if tokens[j : j + 1] != ["out"]:
         return None
     nxt = tokens[j + 1 : j + 4]
-    if nxt[:1] in (["into"], ["onto"]) and len(nxt) > 2 and nxt[1] in _DETERMINERS and nxt[2] in _CARRIAGEWAY:
+    if (
+        nxt[:1] in (["into"], ["onto"], ["across"])
+        and len(nxt) > 2
+        and nxt[1] in _DETERMINERS
+        and nxt[2] in _CARRIAGEWAY
+    ):
         return j + 2
     if nxt[:1] == ["from"] and len(nxt) > 1 and nxt[1] in _FROM_HIDING:
         return j + 2
@@ -1623,6 +1677,133 @@ def out_into_the_road(clauses: list, tokens: list[str]) -> list:
                 continue
             name = "cross_in_front" if subject.value in _CROSSERS else "cut_in"
             kept[k] = replace(m, slot="behaviour", value=(name, {}))
+        out.append((link, kept))
+    return out
+
+
+#: Words that join a verbless second half to the first ("ran along the pavement and out into the road").
+_JOINS = frozenset(("and", "then", ","))
+
+
+def _verbless_out(tokens: list[str], j: int) -> bool:
+    """Whether "out" at token ``j`` opens a second half with no verb of its own: only a join ("and",
+    "then", a comma) and adverbs ("straight", "suddenly") stand before it."""
+    i = j - 1
+    while i >= 0 and tokens[i] in _BEFORE_OUT and tokens[i] not in _JOINS:
+        i -= 1
+    return i >= 0 and tokens[i] in _JOINS
+
+
+def out_across_the_road(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a verbless "and (straight) out into / across the road" after a road user's move
+    ("came racing along the pavement and straight out across the road", "hurried down the footpath,
+    then out into the street") read as that road user coming out onto the road: the second half
+    shares the first half's subject and verb, and where it goes is out of its place beside the road
+    into the carriageway. A walker or rider crosses it, a vehicle pulls out into it. The adverb read
+    as the ego's route ("straight") is the manner of this move, not the ego's."""
+    out: list = []
+    subject = None  # the last road user named, through the clauses ("..., then straight out ...")
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for j in range(min((x.start for x in mentions), default=0), max((x.end for x in mentions), default=0)):
+            if tokens[j] != "out" or not _verbless_out(tokens, j) or _out_into_the_road(tokens, j) is None:
+                continue
+            if any(x.slot == "behaviour" and x.start <= j < x.end for x in kept):
+                continue  # (read as a move already)
+            before = [x for x in mentions if x.start < j and x.slot in ("actor", "pronoun")]
+            who = before[-1] if before else subject
+            if who is None or who.slot != "actor" or who.value == "ego":
+                continue
+            name = "cross_in_front" if who.value in _CROSSERS else "cut_in"
+            kept = [x for x in kept if not (x.slot == "ego_verb" and j - 3 <= x.start < j)]
+            move = replace(
+                who,
+                slot="behaviour",
+                value=(name, {}),
+                words="out",
+                start=j,
+                end=j + 1,
+                det="",
+                prev=tokens[j - 1],
+                next_=tokens[j + 1],
+                owners=(),
+            )
+            kept.insert(next((n for n, x in enumerate(kept) if x.start > j), len(kept)), move)
+        named = [x for x in mentions if x.slot == "actor" and x.value != "ego"]
+        subject = named[-1] if named else subject
+        out.append((link, kept))
+    return out
+
+
+#: Words that make a place a crossing for people on foot ("the crosswalk", "a zebra crossing").
+_FOOT_CROSSING = frozenset(("crosswalk", "crosswalks", "zebra", "pelican", "puffin", "toucan"))
+#: Prepositions that put a road user in the crossing itself, out on the road (not "at" or "by" it).
+_IN_IT = frozenset(("in", "on", "onto", "into", "across"))
+
+
+def _preposition_before(tokens: list[str], start: int) -> str:
+    """The word before the noun phrase starting at ``start``, past its article ("on [the] zebra")."""
+    i = start - 1
+    while i >= 0 and tokens[i] in _DETERMINERS:
+        i -= 1
+    return tokens[i] if i >= 0 else ""
+
+
+def on_a_foot_crossing(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a walker or rider said to be in or on a foot crossing ("hit a pedestrian in the
+    crosswalk", "a man on the zebra crossing", "a kid on a bike on the pelican") and no move of its own
+    read as crossing the road on it: out on a crossing made for going across, that is what it does.
+    Waiting at the crossing, or a move said of it ("walked along the crossing"), keeps what is said."""
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k, m in enumerate(mentions):
+            if m.slot != "kerb" or not set(m.words.split()) & _FOOT_CROSSING:
+                continue
+            if _preposition_before(tokens, m.start) not in _IN_IT:
+                continue
+            at = next((n for n in range(k - 1, -1, -1) if mentions[n].slot in ("actor", "pronoun")), None)
+            if at is None or mentions[at].slot != "actor" or mentions[at].value not in _CROSSERS:
+                continue
+            end = next((n for n in range(k + 1, len(mentions)) if mentions[n].slot in ("actor", "pronoun")), None)
+            own = mentions[at + 1 : end]
+            if any(x.slot in ("behaviour", "stationary", "unknown_verb", "ego_verb", "turn") for x in own):
+                continue  # (it does something said: that stands)
+            # said as its participle right after it ("a man crossing on the zebra"), so the crossing is
+            # the walker's even where the walker is the object of the narrator's verb ("I hit a man ...")
+            crossing = replace(m, slot="behaviour", value=("cross_in_front", {}), words="crossing", det="", owners=())
+            kept.insert(kept.index(mentions[at]) + 1, crossing)
+        out.append((link, kept))
+    return out
+
+
+#: Moves out of a place beside the road that a crossing said next goes on with: the way out of it.
+_WAYS_OUT = frozenset(("cut_in", "keep_going", "along_road"))
+
+
+def out_of_a_place_then_across(clauses: list) -> list:
+    """``clauses`` with a walker's or rider's move out of a place beside the road (a driveway, a gate,
+    a bus stop, the pavement: :func:`_out_of_a_place`) followed in the same clause by its crossing
+    ("came out of a driveway on the right and crossed", "stepped out from the bus stop and walked
+    across") read as the crossing alone, from that side: coming out of there is how the crossing
+    starts, not a cut-in into the ego's lane first. A vehicle coming out of a driveway joins the
+    traffic, so its move is kept; so is a move out with no crossing after it."""
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k, m in enumerate(mentions[:-1]):
+            if m.slot != "behaviour" or m.value[0] not in _WAYS_OUT or not _out_of_a_place(mentions[k + 1]):
+                continue
+            subject = next((x for x in reversed(mentions[:k]) if x.slot in ("actor", "pronoun")), None)
+            if subject is None or subject.slot != "actor" or subject.value not in _CROSSERS:
+                continue
+            for x in mentions[k + 1 :]:
+                if x.slot in ("actor", "pronoun") and x.value != "ego":
+                    break  # (someone else's move follows)
+                if x.slot == "behaviour":
+                    if x.value[0] == "cross_in_front":
+                        kept.remove(m)
+                    break
         out.append((link, kept))
     return out
 

@@ -32,6 +32,7 @@ from vei_scenario.language import (
     discourse,
     ego,
     ego_speed,
+    experiencer,
     generic_ego,
     junctions,
     motion,
@@ -1267,7 +1268,7 @@ def _read(text: str) -> Reading:
     set_by_the_ego = ego_speed.right_after_the_ego(clauses)  # ("lets the ego (50 km/h) pass"), as scanned
     clauses = sides.narrator_lane(sides.relate_headings(clauses))
     clauses = sides.ego_follows(sides.numbered_lanes(clauses, sides.drives_on_left(scanned, text)))
-    clauses = sides.into_the_ego_rear(clauses)
+    clauses = sides.into_the_ego_rear(experiencer.road_user_had_acting(clauses, scanned))
     clauses = out_of_a_side_road(
         destinations_not_origins(outcome_not_behaviour(_drop_label(clauses), scanned)), scanned
     )

@@ -1,0 +1,209 @@
+"""A road user coming into the road from its side and across or into the ego's path: the class of
+its move and where it starts. Wordings written for each construction, none taken from a corpus; each
+group has near misses that look alike and must not be read so."""
+
+from __future__ import annotations
+
+import pytest
+
+from vei_scenario.language.reader import read
+
+
+def _one(text: str):
+    (actor,) = read(text).actors
+    return actor
+
+
+def _names(text: str) -> list[str]:
+    return [b[0] for b in _one(text).behaviours]
+
+
+# "VERB the red (light)": any verb with the red as its object runs it (the verb says only how).
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Doing 30 mph through town when a courier on a scooter shot the red at the crossroads in front of me.",
+        "We were at 40 km/h and a taxi blasted the red light at the next junction, right across our bows.",
+        "At the lights on Park Lane a cyclist barrelled the red as I drove through at 25 mph and I nearly hit him.",
+    ],
+)
+def test_a_verb_with_the_red_as_its_object_runs_it(text):
+    actor = _one(text)
+    assert actor.behaviours[0][0] == "run_red_light"
+    assert actor.relation.startswith("junction_")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was doing 30 mph when a van overtook the red car ahead of me and cut in.",
+        "A cyclist waited at the red while I drove through at 25 mph.",
+    ],
+)
+def test_the_red_as_a_colour_or_a_place_to_wait_is_no_run(text):
+    assert "run_red_light" not in [b[0] for a in read(text).actors for b in a.behaviours]
+
+
+# "have/get + a road user + a bare verb": the road user does the verb, not the one who "had" it.
+@pytest.mark.parametrize(
+    ("text", "expected", "relation"),
+    [
+        (
+            "We had a van pull out of a side street on the left right in front of us at the crossroads.",
+            "turn_into",
+            "junction_left",
+        ),
+        (
+            "I had a lad on a bike roll off the kerb on the right into my path at 20 mph.",
+            "cross_in_front",
+            "roadside_right",
+        ),
+        (
+            "At 15 mph I had a cyclist come out of a driveway on the left just in front of me.",
+            "cut_in",
+            "roadside_left",
+        ),
+    ],
+)
+def test_a_road_user_had_doing_something_does_it(text, expected, relation):
+    actor = _one(text)
+    assert actor.behaviours[0][0] == expected
+    assert actor.relation == relation
+
+
+def test_having_a_road_user_with_no_verb_after_it_is_no_act_of_its():
+    reading = read("I had a cyclist ahead of me at 20 km/h and I overtook him at 40 km/h.")
+    (actor,) = reading.actors
+    assert actor.behaviours[0][0] in ("along_road", "keep_going", "keep_lane")
+
+
+# "... and (straight) out across / into the road": a verbless conjunct goes on with its subject's move.
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A boy on a scooter came racing along the pavement on the right and straight out across the road ahead of me.",
+        "A woman hurried down the footpath on the left and out into the street in front of us at 20 mph.",
+        "A kid on a bike pelted along the sidewalk on the left then straight out across the road ahead of my car.",
+    ],
+)
+def test_out_across_the_road_after_going_along_the_footway_is_a_crossing(text):
+    assert _names(text)[0] == "cross_in_front"
+
+
+def test_going_along_the_footway_without_coming_out_is_no_crossing():
+    names = _names("A boy on a scooter came racing along the pavement on the right as I drove past at 20 mph.")
+    assert "cross_in_front" not in names
+
+
+# "came out of a driveway / gate / bus stop and crossed": one crossing from that side, not a cut-in first.
+@pytest.mark.parametrize(
+    ("text", "side"),
+    [
+        ("A girl on a scooter rolled out of a garden gate on the left and crossed in front of us at 20 mph.", "left"),
+        ("A man walked out from the bus stop on my right and crossed just ahead of the car.", "right"),
+        ("An old man on a bicycle came out of a farm track on the left and rode across the lane ahead of us.", "left"),
+    ],
+)
+def test_out_of_a_roadside_place_then_across_is_one_crossing(text, side):
+    actor = _one(text)
+    assert [b[0] for b in actor.behaviours] == ["cross_in_front"]
+    assert actor.relation == f"roadside_{side}"
+
+
+def test_a_vehicle_out_of_a_driveway_then_across_is_not_a_walkers_crossing():
+    names = _names("A van reversed out of a driveway on the left and crossed into my lane at 10 mph.")
+    assert names[0] != "cross_in_front"
+
+
+# "out of the junction / intersection": the junction as what one comes out of is one of its arms.
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was doing 25 mph when a lad on a scooter shot out of the junction without stopping and I hit him.",
+        "A cyclist came flying out of the intersection just in front of me while I was at 30 km/h.",
+        "At 20 mph a girl on an e-scooter rode out from the crossroads straight into my path.",
+    ],
+)
+def test_a_rider_out_of_the_junction_comes_from_an_arm(text):
+    actor = _one(text)
+    assert actor.relation.startswith("junction_")
+    assert actor.behaviours[0][0] in ("run_red_light", "turn_into", "cross_in_front")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I came out of the junction at 20 mph and a cyclist was riding along ahead of me.",
+        "At the junction a woman stepped off the kerb on my left in front of me as I drove at 20 mph.",
+    ],
+)
+def test_the_ego_out_of_the_junction_or_a_kerb_at_it_is_no_arm_of_the_road_user(text):
+    assert not _one(text).relation.startswith("junction_")
+
+
+# A walker or rider in or on a foot crossing (crosswalk, zebra, pelican) is crossing the road on it.
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was turning left on green at 15 mph and hit a pedestrian in the crosswalk.",
+        "Turning right at the lights, I nearly hit a man on the zebra crossing.",
+        "At 20 mph I clipped a kid on a bike on the pelican crossing.",
+    ],
+)
+def test_a_walker_on_a_foot_crossing_crosses(text):
+    actor = _one(text)
+    assert actor.behaviours[0][0] == "cross_in_front"
+    assert actor.relation.startswith("roadside_")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A pedestrian waiting at the crosswalk stepped back as I passed at 20 mph.",
+        "A cyclist rode past the zebra crossing ahead of me at 15 km/h while I followed at 20 km/h.",
+        "A woman by the zebra crossing waited for me to pass at 20 mph.",
+    ],
+)
+def test_a_walker_beside_a_foot_crossing_does_not_cross(text):
+    assert _one(text).behaviours[0][0] != "cross_in_front"
+
+
+# "out of" a place beside the road is where the road user comes from, as "from" and "off" are: into a
+# lane of a side, it came out of the kerb beside that lane.
+@pytest.mark.parametrize(
+    ("text", "side"),
+    [
+        ("A cyclist came out of the hard shoulder into the left lane just ahead of us at 60 km/h.", "left"),
+        ("A boy on a scooter rolled out of the verge into the right lane in front of my car.", "right"),
+        ("A jogger ran out of the gravel shoulder into the left lane ahead of me as I drove at 40 km/h.", "left"),
+    ],
+)
+def test_out_of_the_side_into_a_lane_starts_beside_that_lane(text, side):
+    assert _one(text).relation == f"roadside_{side}"
+
+
+def test_riding_along_the_shoulder_is_no_coming_out_of_it():
+    actor = _one("A cyclist rode along the hard shoulder on the left as I passed at 60 km/h.")
+    assert [b[0] for b in actor.behaviours] == ["along_road"]
+
+
+# "It" stands for the roundabout once one is said, in the plural too ("roundabouts today ... onto it").
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Roundabouts scare me. Yesterday I was going round one at 20 mph and a cyclist rode straight onto it in "
+        "front of me.",
+        "Practised roundabouts with my instructor. Halfway round the big one at 15 mph, a van shot onto it right "
+        "in front of us.",
+        "Mini-roundabouts are the worst: I was halfway round one at 10 mph when a scooter rolled onto it ahead of me.",
+    ],
+)
+def test_onto_it_after_roundabouts_is_entering_from_an_arm(text):
+    actor = _one(text)
+    assert actor.relation.startswith("junction_")
+    assert actor.behaviours[0][0] in ("run_red_light", "turn_into", "cross_in_front")
+
+
+def test_roundabouts_said_with_no_entry_is_no_entry():
+    actor = _one("Roundabouts are fine. A cyclist rode along the road ahead of me at 15 km/h while I followed at 20.")
+    assert actor.behaviours[0][0] == "along_road"
