@@ -296,7 +296,10 @@ def test_the_vehicle_the_narrator_is_in_is_the_ego(text, kinds):
             ["car", "bicycle"],
         ),
         # placed: the car in front is someone else's
-        ("Sat at the lights, the car in front of me rolled back and a cyclist ran the red from my right.", ["car", "bicycle"]),
+        (
+            "Sat at the lights, the car in front of me rolled back and a cyclist ran the red from my right.",
+            ["car", "bicycle"],
+        ),
         # the narrator on foot: the moped is the lad's
         ("I was walking to work and a lad on the moped mounted the kerb ahead of me.", ["car"]),
     ],

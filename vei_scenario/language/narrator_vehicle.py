@@ -40,6 +40,7 @@ from vei_scenario.language.ego import (
     _placed,
     _road_users,
     _sentence,
+    kind_said_again,
 )
 from vei_scenario.language.ego_speed import impact_after_braking
 from vei_scenario.language.lemmas import lemmas
@@ -326,7 +327,7 @@ def _narrator_aboard(tokens: list[str], kind_at: KindAt, known: Known, dropped: 
         noun = tokens[p.end - 1]
         dropped.extend(w for w in tokens[p.start - 1 : p.end] if w not in DEFINITE)
         out = [*tokens[: p.start - 1], *tokens[p.end :]]
-        return _as_ego(out, kind_at, known, noun, dropped)
+        return kind_said_again(_as_ego(out, kind_at, known, noun, dropped), p.kind, kind_at, known, dropped)
     return tokens
 
 
