@@ -314,3 +314,48 @@ def test_a_relative_clause_after_the_narrators_vehicle_is_no_compound():
         "deer jumped out from the left ahead of me."
     )
     assert _kinds(text) == ["pedestrian"]
+
+
+# A user story names the writer by a role ("As a van driver doing 40 mph ..., I want ..."): the role
+# is the narrator, the ego, and the vehicle it names (or "the car" of a driver) is the ego's; "as"
+# that opens a clause with a verb of its own ("As a van pulled out ...") is "while", someone else.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        (
+            "As a van driver doing 40 mph on a dual carriageway, I want the van to slow down when a car cuts "
+            "in from the left lane.",
+            ["car"],
+            64.4,
+        ),
+        (
+            "As a bus driver pulling away from a stop at 15 km/h, I want a warning when a cyclist overtakes "
+            "the bus on the right.",
+            ["bicycle"],
+            15.0,
+        ),
+        (
+            "As a commuter driving at 30 mph, I want the car to brake for a child who runs out from the left.",
+            ["pedestrian"],
+            48.3,
+        ),
+        (
+            "As a driver doing 20 mph, we need the system to stop the car when a cyclist swerves into our lane.",
+            ["bicycle"],
+            32.2,
+        ),
+    ],
+)
+def test_a_user_storys_role_is_the_ego(text, kinds, kph):
+    assert (_kinds(text), _ego_kph(text)) == (kinds, kph)
+
+
+@pytest.mark.parametrize(
+    "text, kinds",
+    [
+        ("As a cyclist passed me at 20 mph, I braked.", ["bicycle"]),
+        ("As a van pulled out in front of me at 20 mph, I braked hard.", ["van"]),
+    ],
+)
+def test_as_with_a_verb_of_its_own_is_someone_else(text, kinds):
+    assert _kinds(text) == kinds

@@ -829,9 +829,11 @@ def kind_said_again(tokens: list[str], kind: str, kind_at: KindAt, known: Known,
             continue
         if not q.start or out[q.start - 1] in CLAUSE_OPENING | SENTENCE_END | SUBORDINATORS | {"but", "then"}:
             continue  # (the subject of its own clause: "when the van pulled out" may be someone new)
-        s, e = _sentence(out, q.start)
+        bounds = CLAUSE_OPENING | SENTENCE_END | SUBORDINATORS | {"but", "then", "so"}
+        s = next((j + 1 for j in range(q.start - 1, -1, -1) if out[j] in bounds), 0)
+        e = next((j for j in range(q.end, len(out)) if out[j] in bounds), len(out))
         if {"me", "us", "my", "our"} & set(out[s:e]):
-            continue  # (it meets the narrator: "the van came at us")
+            continue  # (it meets the narrator in its clause: "the van came at us")
         dropped.extend(w for w in out[q.start : q.end] if w not in DEFINITE)
         out[q.start : q.end] = ["the", "ego"]
     return out

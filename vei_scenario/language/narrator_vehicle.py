@@ -331,10 +331,45 @@ def _narrator_aboard(tokens: list[str], kind_at: KindAt, known: Known, dropped: 
     return tokens
 
 
+def _user_story(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "As a driver travelling at 50 km/h, I want ...", "As a bus driver pulling away from a stop,
+    we need ...": a clause that opens with "as a <road user>" and no verb of its own (a participle or
+    a comma follows), before a main clause whose subject is "I" or "we", names the narrator by a role:
+    that road user is the ego, its speed the ego's, and the vehicle the role names (a driver's car)
+    is the ego again later ("I want the van to slow down"). "As a van pulled out, I braked" ("as" is
+    "while": the van has a verb of its own) is someone else."""
+    users = _road_users(tokens, kind_at, known)
+    for p in users:
+        k = p.start - 1
+        if k < 0 or tokens[k] != "as" or p.det not in ("a", "an") or (k and tokens[k - 1] not in CLAUSE_START):
+            continue
+        nxt = tokens[p.end] if p.end < len(tokens) else ""
+        participle = nxt.endswith("ing") and "VERB" in lemmas(nxt)
+        if not (participle or nxt in PUNCT or nxt in ("who", "on", "in", "at", "with")):
+            continue
+        _, e = _sentence(tokens, p.start)
+        comma = next((j for j in range(p.end, e) if tokens[j] == ","), None)
+        if comma is None or tokens[comma + 1 : comma + 2] not in (["i"], ["we"]):
+            continue
+        if any(q.start < comma and q is not p and q.start >= p.end and q.kind != "ego" for q in users):
+            continue  # (someone else named in the role's clause: "As a driver behind a bus, ...")
+        kind = next(
+            (kind_at(tokens, j)[0] for j in range(p.start, p.end) if (kind_at(tokens, j) or ("",))[0] in VEHICLES),
+            None,
+        )
+        if kind is None or tokens[p.head : p.end] == ["driver"]:
+            kind = "car" if p.kind in VEHICLES or (participle and _lemma_in(nxt, frozenset({"drive"}))) else kind
+        dropped.extend(w for w in tokens[k : p.end] if w not in INDEFINITE)
+        out = [*tokens[:k], "the", "ego", *tokens[p.end :]]
+        return out if kind is None else kind_said_again(out, kind, kind_at, known, dropped)
+    return tokens
+
+
 def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """``tokens`` with the writer's own vehicle said "the ego" where the writer is in it or tests it
     (see the module's docstring); the words that only named it are added to ``dropped``."""
     tokens = _ego_rider(tokens, kind_at, known, dropped)
+    tokens = _user_story(tokens, kind_at, known, dropped)
     tokens = _driven_it(tokens, kind_at, known, dropped)
     tokens = _heading(tokens, kind_at, known, dropped)
     tokens = _narrator_aboard(tokens, kind_at, known, dropped)
