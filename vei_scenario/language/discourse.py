@@ -217,6 +217,9 @@ def _told_in_the_past(tokens: list[str], k: int) -> bool:
     "swerved"): those are road users of the event; road users in general do things in the present
     ("cyclists ride here") or may do them."""
     w = tokens[k] if k < len(tokens) else ""
+    if w in ("are", "am", "'re"):  # (present: "motorbikes are easy to miss"; "are riding" is these ones now)
+        nxt = tokens[k + 1] if k + 1 < len(tokens) else ""
+        return nxt.endswith("ing") and "VERB" in lemmas(nxt)
     verbs = lemmas(w).get("VERB", ())
     return w == "were" or (bool(verbs) and w not in verbs and not w.endswith(("s", "ing")) and "NOUN" not in lemmas(w))
 
