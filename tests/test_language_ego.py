@@ -933,3 +933,74 @@ def test_the_driver_after_an_ego_described_in_apposition_is_the_ego():
     text = ("The host vehicle, a silver Toyota Prius taxi, was travelling at 40 km/h. A cyclist cut in "
             "from the left and the driver braked.")  # fmt: skip
     assert _kinds(text) == ["bicycle"]
+
+
+# The ego's subject ("our driver", "I") followed by its verb is the subject of its clause whatever
+# heading comes before it (a date or a reference number with no punctuation after it): the vehicle
+# it is in is the ego's.
+@pytest.mark.parametrize(
+    "text, kinds",
+    [
+        (
+            "Ref 2231 our driver was leaving the depot in the Sprinter at 10 mph when a cyclist rode out from "
+            "the right across the road in front of the vehicle. Driver braked.",
+            ["bicycle"],
+        ),
+        (
+            "Log 07/11 our driver was turning left in the pool car at about 15 km/h when a jogger ran out "
+            "from the left in front of the vehicle.",
+            ["pedestrian"],
+        ),
+    ],
+)
+def test_the_subject_after_a_heading_is_in_its_vehicle(text, kinds):
+    assert _kinds(text) == kinds
+
+
+# A vehicle named by its make or model and made the ego is said again by the noun of its kind
+# ("the Transit ... the van", "the Hilux ... the ute") while no other vehicle of that kind is
+# introduced; one placed relative to it or introduced with "a" is someone else.
+@pytest.mark.parametrize(
+    "text, kinds",
+    [
+        (
+            "Our driver was pulling out of the yard in the Transit at 10 mph when a cyclist rode across "
+            "from the right in front of the van. Driver braked.",
+            ["bicycle"],
+        ),
+        (
+            "I was reversing in the Hilux at walking pace when a boy ran out from the left behind the pickup.",
+            ["pedestrian"],
+        ),
+    ],
+)
+def test_a_model_is_said_again_by_its_kind(text, kinds):
+    assert _kinds(text) == kinds
+
+
+@pytest.mark.parametrize(
+    "text, kinds",
+    [
+        (
+            "I was in the Transit at 20 mph when a van pulled out from the left in front of me.",
+            ["van"],
+        ),
+        (
+            "Our driver was in the Sprinter at 30 mph when the van ahead braked hard.",
+            ["van"],
+        ),
+    ],
+)
+def test_another_vehicle_of_the_egos_kind_stays_a_road_user(text, kinds):
+    assert _kinds(text) == kinds
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Our driver was in the Sprinter at 30 mph when the van pulled out from the right across our path.",
+        "We were in the Sprinter at 30 mph; the van came out of a side road at us.",
+    ],
+)
+def test_a_vehicle_of_the_egos_kind_that_acts_on_it_is_new(text):
+    assert _kinds(text) == ["van"]

@@ -263,3 +263,37 @@ def test_a_narrator_who_has_a_driver_do_something_is_the_ego():
     assert frame(tokens, _kind_at, _known, []) == tokens
     tokens = _tokens("We get complaints about drivers speeding past a cyclist.", brackets=True)
     assert frame(tokens, _kind_at, _known, []) != tokens
+
+
+# Advice told to "you" often opens with what road users of a kind are like ("Motorbikes are quick and
+# easy to miss"): a bare plural with a present "are" and no verb of its own after it is the kind in
+# general, not one more road user, when the scene then introduces one of that kind ("a motorbike").
+# "Cyclists are riding two abreast ahead of me" (a verb of its own) is those cyclists.
+@pytest.mark.parametrize(
+    "text, kinds",
+    [
+        (
+            "Motorbikes are quick and easy to miss. Say you are waiting to turn right out of a side road and "
+            "a motorbike comes from your left at 40 mph.",
+            ["car"],
+        ),
+        (
+            "Buses are long and slow to stop. Imagine you are doing 30 mph and a bus pulls out from a stop "
+            "on your left.",
+            ["truck"],
+        ),
+    ],
+)
+def test_a_kind_said_in_general_before_one_of_it_is_no_road_user(text, kinds):
+    assert [a.kind for a in read(text).actors] == kinds
+
+
+@pytest.mark.parametrize(
+    "text, kinds",
+    [
+        ("Cyclists are riding two abreast ahead of me and a cyclist on the right swerves out.", 2),
+        ("Motorbikes are coming towards me in the other lane and a motorbike pulls out to overtake.", 2),
+    ],
+)
+def test_a_plural_doing_something_now_is_road_users(text, kinds):
+    assert len(read(text).actors) == kinds

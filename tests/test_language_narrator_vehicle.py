@@ -252,3 +252,110 @@ def test_an_ego_field_naming_a_vehicle_by_its_place_in_a_line(text, kinds):
 
 def test_an_ego_field_that_places_the_ego_names_no_vehicle():
     assert _kinds("Ego: following a truck at 80 km/h; the truck brakes hard.") == ["truck"]
+
+
+# "In/on the <vehicle>" with no one but the narrator before it in its sentence (a subjectless
+# fragment, an adverb, or the narrator as subject past the narrator's own people) puts the narrator
+# in it: the vehicle is the narrator's, the ego, never one more actor ("on" only for a two-wheeler).
+@pytest.mark.parametrize(
+    "text, kinds",
+    [
+        (
+            "Back at work in the van on Monday, misty. A lad on a bike rode out from the left in front of me. "
+            "I was doing 20 mph and stopped.",
+            ["bicycle"],
+        ),
+        (
+            "I take my kids to school most days, normally in the hatchback, and today a dog ran across from "
+            "the right just ahead of us at 25 km/h.",
+            ["pedestrian"],
+        ),
+        (
+            "Commuting is hair-raising on the motorbike. Yesterday a taxi pulled out from a side road on my "
+            "left and I had to swerve.",
+            ["car"],
+        ),
+        (
+            "Out early on the moped, a jogger stepped off the kerb on the right in front of me and I braked.",
+            ["pedestrian"],
+        ),
+    ],
+)
+def test_the_vehicle_the_narrator_is_in_is_the_ego(text, kinds):
+    assert _kinds(text) == kinds
+
+
+@pytest.mark.parametrize(
+    "text, kinds",
+    [
+        # someone else is in it: a road user right before the preposition
+        ("I was waiting to turn when a woman in the van pulled out from the right in front of me.", ["van"]),
+        # introduced before with "a": someone else's
+        (
+            "A taxi stopped ahead of me. I was doing 20 mph and a cyclist swerved out from behind the taxi.",
+            ["car", "bicycle"],
+        ),
+        # placed: the car in front is someone else's
+        (
+            "Sat at the lights, the car in front of me rolled back and a cyclist ran the red from my right.",
+            ["car", "bicycle"],
+        ),
+        # the narrator on foot: the moped is the lad's
+        ("I was walking to work and a lad on the moped mounted the kerb ahead of me.", ["car"]),
+    ],
+)
+def test_a_vehicle_someone_else_is_in_stays_theirs(text, kinds):
+    assert sorted(_kinds(text)) == sorted(kinds)
+
+
+def test_a_relative_clause_after_the_narrators_vehicle_is_no_compound():
+    text = (
+        "Most evenings I drive home on the A30, usually in the old Volvo which still runs fine. Last night a "
+        "deer jumped out from the left ahead of me."
+    )
+    assert _kinds(text) == ["pedestrian"]
+
+
+# A user story names the writer by a role ("As a van driver doing 40 mph ..., I want ..."): the role
+# is the narrator, the ego, and the vehicle it names (or "the car" of a driver) is the ego's; "as"
+# that opens a clause with a verb of its own ("As a van pulled out ...") is "while", someone else.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        (
+            "As a van driver doing 40 mph on a dual carriageway, I want the van to slow down when a car cuts "
+            "in from the left lane.",
+            ["car"],
+            64.4,
+        ),
+        (
+            "As a bus driver pulling away from a stop at 15 km/h, I want a warning when a cyclist overtakes "
+            "the bus on the right.",
+            ["bicycle"],
+            15.0,
+        ),
+        (
+            "As a commuter driving at 30 mph, I want the car to brake for a child who runs out from the left.",
+            ["pedestrian"],
+            48.3,
+        ),
+        (
+            "As a driver doing 20 mph, we need the system to stop the car when a cyclist swerves into our lane.",
+            ["bicycle"],
+            32.2,
+        ),
+    ],
+)
+def test_a_user_storys_role_is_the_ego(text, kinds, kph):
+    assert (_kinds(text), _ego_kph(text)) == (kinds, kph)
+
+
+@pytest.mark.parametrize(
+    "text, kinds",
+    [
+        ("As a cyclist passed me at 20 mph, I braked.", ["bicycle"]),
+        ("As a van pulled out in front of me at 20 mph, I braked hard.", ["van"]),
+    ],
+)
+def test_as_with_a_verb_of_its_own_is_someone_else(text, kinds):
+    assert _kinds(text) == kinds

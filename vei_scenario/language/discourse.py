@@ -252,6 +252,9 @@ def _told_in_the_past(tokens: list[str], k: int) -> bool:
     from lemminflect import getAllInflections
 
     w = tokens[k] if k < len(tokens) else ""
+    if w in ("are", "am", "'re"):  # (present: "motorbikes are easy to miss"; "are riding" is these ones now)
+        nxt = tokens[k + 1] if k + 1 < len(tokens) else ""
+        return nxt.endswith("ing") and "VERB" in lemmas(nxt)
     verbs = lemmas(w).get("VERB", ())
     past = any(w in getAllInflections(v).get("VBD", ()) or w in getAllInflections(v).get("VBN", ()) for v in verbs)
     return w == "were" or (past and not w.endswith(("s", "ing")) and "NOUN" not in lemmas(w))

@@ -934,7 +934,8 @@ def _ego_aboard(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[
     users = _road_users(tokens, kind_at, known)
     for k, w in enumerate(tokens):
         at = k - 1 if k and tokens[k - 1] == "the" else k  # (the subject's first word: "the ego")
-        if w not in ("ego", "i", "we") or (at and tokens[at - 1] not in CLAUSE_OPENING):
+        said = k + 1 < len(tokens) and tokens[k + 1] in BE  # (its verb follows: "Ref 2231 our driver was ...")
+        if w not in ("ego", "i", "we") or (at and tokens[at - 1] not in CLAUSE_OPENING and not said):
             continue  # (not the subject: "a man alongside the ego in a lorry" is the man's lorry)
         _, e = _sentence(tokens, k)
         nxt = next((q for q in users if q.start > k), None)
@@ -950,8 +951,37 @@ def _ego_aboard(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[
         end = _apposition_end(tokens, nxt.end, kind_at, known) or nxt.end  # ("in the van, an old Ford,")
         dropped.extend(x for x in tokens[nxt.start - 1 : end] if x.isalpha())
         out = [*tokens[: nxt.start - 1], *tokens[end:]]
-        return _driver_is_ego(_as_ego(out, kind_at, known, noun, dropped), kind_at, known, dropped)
+        out = kind_said_again(_as_ego(out, kind_at, known, noun, dropped), nxt.kind, kind_at, known, dropped)
+        return _driver_is_ego(out, kind_at, known, dropped)
     return tokens
+
+
+def kind_said_again(tokens: list[str], kind: str, kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "in the Transit ... in front of the van", "in the Hilux ... behind the pickup": once a vehicle
+    named by its make, model or any noun is the ego, a later "the <noun>" of the same kind (another
+    noun) is it again, where the text introduces no vehicle of that kind ("a van") and that one is
+    not placed relative to someone ("the van ahead") nor a modifier ("the van driver"). One that opens
+    its clause or meets the narrator there ("when the van pulled out at us") may be someone new."""
+    users = _road_users(tokens, kind_at, known)
+    if any(q.kind == kind and q.det in INDEFINITE for q in users):
+        return tokens
+    first = next((q.start for q in users if q.kind == "ego"), None)
+    out = list(tokens)
+    for q in reversed(users):
+        if first is None or q.start < first or q.kind != kind or q.det != "the":
+            continue
+        if _placed(out, q) or _compound(out, q) or out[q.end : q.end + 1] in (["'s"], ["of"]) or _at_wheel(out, q):
+            continue
+        if not q.start or out[q.start - 1] in CLAUSE_OPENING | SENTENCE_END | SUBORDINATORS | {"but", "then"}:
+            continue  # (the subject of its own clause: "when the van pulled out" may be someone new)
+        bounds = CLAUSE_OPENING | SENTENCE_END | SUBORDINATORS | {"but", "then", "so"}
+        s = next((j + 1 for j in range(q.start - 1, -1, -1) if out[j] in bounds), 0)
+        e = next((j for j in range(q.end, len(out)) if out[j] in bounds), len(out))
+        if {"me", "us", "my", "our"} & set(out[s:e]):
+            continue  # (it meets the narrator in its clause: "the van came at us")
+        dropped.extend(w for w in out[q.start : q.end] if w not in DEFINITE)
+        out[q.start : q.end] = ["the", "ego"]
+    return out
 
 
 #: Nouns that name the ego again once it is the vehicle a report is told from, while no other motor

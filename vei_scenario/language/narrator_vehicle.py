@@ -40,9 +40,11 @@ from vei_scenario.language.ego import (
     _placed,
     _road_users,
     _sentence,
+    kind_said_again,
 )
 from vei_scenario.language.ego_speed import impact_after_braking
 from vei_scenario.language.lemmas import lemmas
+from vei_scenario.language.lexicon import MOTOR_TWO_WHEELERS
 
 #: First-person words that say someone meets the narrator ("in front of me", "my lane"): a vehicle
 #: in such a clause is someone else's.
@@ -57,6 +59,10 @@ CLAUSE_START = PUNCT | {"and", "but", "then", "while", "whilst", "when", "as", "
 ON_FOOT = frozenset({"walk", "cycle", "jog", "run", "ride", "cross", "scoot", "push"})
 #: Kinds of road user a person rides: a rider of one the text calls the ego or ours is the ego.
 RIDERS = frozenset({"bicycle", "e-scooter"})
+#: Prepositions that put someone inside a vehicle ("in the van", "aboard the bus").
+INSIDE = frozenset({"in", "inside", "aboard"})
+#: Third-person pronouns: someone else named before "in the <vehicle>" ("I saw him in the car").
+OTHERS = frozenset({"he", "she", "they", "him", "her", "them", "someone", "somebody", "anyone"})
 #: What a test puts in the ego's way: never the ego.
 TEST_OBJECTS = frozenset({"target", "dummy", "gvt", "soft", "balloon"})
 
@@ -66,8 +72,8 @@ def _narrator_on_foot(tokens: list[str], kind_at: KindAt) -> bool:
     for k, w in enumerate(tokens):
         if w in ("my", "our") and k + 1 < len(tokens):
             found = kind_at(tokens, k + 1)
-            if found is not None and found[0] not in VEHICLES | {"ego"}:
-                return True  # ("on my bike", "my scooter")
+            if found is not None and found[0] in RIDERS:
+                return True  # ("on my bike", "my scooter"; not "my kids")
         if w not in FIRST_PERSON:
             continue
         j = k + 1
@@ -286,10 +292,85 @@ def _driven_it(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[s
     return tokens
 
 
+def _aboard(tokens: list[str], p) -> bool:
+    """Whether the preposition before ``p`` puts someone in or on it: "in"/"inside"/"aboard" any
+    vehicle, "on" only a motor two-wheeler ("on the moped"; "on the car" is on its roof)."""
+    prep = tokens[p.start - 1] if p.start else ""
+    named = " ".join(tokens[p.head : p.end])
+    return prep in INSIDE or (prep == "on" and (named in MOTOR_TWO_WHEELERS or tokens[p.end - 1] in MOTOR_TWO_WHEELERS))
+
+
+def _narrator_aboard(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "On shift in the car at 7am, a jogger ran out", "I do the run most weekends, usually in the old
+    estate", "Commuting is scary on the moped": in a first-person text, a vehicle said with "the" (never
+    introduced with "a" before) that a preposition puts someone in, where no one but the narrator is
+    named before it in its sentence (past the narrator's own people: "my kids"), is the vehicle the
+    narrator is in, the ego; so is every later "the <noun>". "A woman in the van", "I saw him in the
+    car", "the car in front", "the van's mirror" and a narrator on foot are someone else's."""
+    if not (FIRST_PERSON | MEETS_NARRATOR) & set(tokens) or "ego" in tokens or _narrator_on_foot(tokens, kind_at):
+        return tokens
+    users = _road_users(tokens, kind_at, known)
+    for n, p in enumerate(users):
+        if p.kind not in VEHICLES or p.det != "the" or not _aboard(tokens, p) or _placed(tokens, p):
+            continue
+        relative = tokens[p.end : p.end + 1] in (["which"], ["that"], ["where"])  # (no compound: "the camry which")
+        if _compound(tokens, p) and not relative or tokens[p.end : p.end + 1] == ["'s"]:
+            continue  # ("in the car park", "in the van's mirror")
+        if any(q.kind == p.kind and q.det in INDEFINITE for q in users[:n]):
+            continue  # (introduced before: "a taxi stopped ... in the taxi")
+        s, _ = _sentence(tokens, p.start)
+        before = [q for q in users[:n] if q.start >= s]
+        if any(q.kind != "ego" and not (tokens[q.start] in ("my", "our") and q.kind not in VEHICLES) for q in before):
+            continue  # (someone else is in it: "a woman in the van")
+        if OTHERS & set(tokens[s : p.start]):
+            continue
+        noun = tokens[p.end - 1]
+        dropped.extend(w for w in tokens[p.start - 1 : p.end] if w not in DEFINITE)
+        out = [*tokens[: p.start - 1], *tokens[p.end :]]
+        return kind_said_again(_as_ego(out, kind_at, known, noun, dropped), p.kind, kind_at, known, dropped)
+    return tokens
+
+
+def _user_story(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "As a driver travelling at 50 km/h, I want ...", "As a bus driver pulling away from a stop,
+    we need ...": a clause that opens with "as a <road user>" and no verb of its own (a participle or
+    a comma follows), before a main clause whose subject is "I" or "we", names the narrator by a role:
+    that road user is the ego, its speed the ego's, and the vehicle the role names (a driver's car)
+    is the ego again later ("I want the van to slow down"). "As a van pulled out, I braked" ("as" is
+    "while": the van has a verb of its own) is someone else."""
+    users = _road_users(tokens, kind_at, known)
+    for p in users:
+        k = p.start - 1
+        if k < 0 or tokens[k] != "as" or p.det not in ("a", "an") or (k and tokens[k - 1] not in CLAUSE_START):
+            continue
+        nxt = tokens[p.end] if p.end < len(tokens) else ""
+        participle = nxt.endswith("ing") and "VERB" in lemmas(nxt)
+        if not (participle or nxt in PUNCT or nxt in ("who", "on", "in", "at", "with")):
+            continue
+        _, e = _sentence(tokens, p.start)
+        comma = next((j for j in range(p.end, e) if tokens[j] == ","), None)
+        if comma is None or tokens[comma + 1 : comma + 2] not in (["i"], ["we"]):
+            continue
+        if any(q.start < comma and q is not p and q.start >= p.end and q.kind != "ego" for q in users):
+            continue  # (someone else named in the role's clause: "As a driver behind a bus, ...")
+        kind = next(
+            (kind_at(tokens, j)[0] for j in range(p.start, p.end) if (kind_at(tokens, j) or ("",))[0] in VEHICLES),
+            None,
+        )
+        if kind is None or tokens[p.head : p.end] == ["driver"]:
+            kind = "car" if p.kind in VEHICLES or (participle and _lemma_in(nxt, frozenset({"drive"}))) else kind
+        dropped.extend(w for w in tokens[k : p.end] if w not in INDEFINITE)
+        out = [*tokens[:k], "the", "ego", *tokens[p.end :]]
+        return out if kind is None else kind_said_again(out, kind, kind_at, known, dropped)
+    return tokens
+
+
 def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """``tokens`` with the writer's own vehicle said "the ego" where the writer is in it or tests it
     (see the module's docstring); the words that only named it are added to ``dropped``."""
     tokens = _ego_rider(tokens, kind_at, known, dropped)
+    tokens = _user_story(tokens, kind_at, known, dropped)
     tokens = _driven_it(tokens, kind_at, known, dropped)
     tokens = _heading(tokens, kind_at, known, dropped)
+    tokens = _narrator_aboard(tokens, kind_at, known, dropped)
     return _unintroduced(tokens, kind_at, known, dropped)
