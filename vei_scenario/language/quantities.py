@@ -601,7 +601,17 @@ def _verbless_state(ego, state) -> bool:
     """Whether a state of standing follows the ego right after its name with no verb, in a note that
     opens with the ego ("Ego stationary at the red light.", "Us parked up at the kerb, ..."): a note
     drops "is", and says the state all the same. (A stop, a verb, is not read so: "I stopped" is an act.)"""
-    return state.slot == "stationary" and ego.end == state.start and ego.prev in _NOTE_OPENERS
+    return (
+        state.slot == "stationary"
+        and state.words not in _STOPS_MADE
+        and ego.end == state.start
+        and ego.prev in _NOTE_OPENERS
+    )
+
+
+#: Still words that are also the simple past of a stop someone makes: right after the subject they are
+#: that act ("A bus driver stopped in time"), so they do not say a verbless note's state.
+_STOPS_MADE = frozenset({"stopped", "halted"})
 
 
 def struck_at_rest(actors, ego_speed_mps: float | None, intent: str | None) -> None:
