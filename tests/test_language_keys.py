@@ -1,0 +1,144 @@
+"""The smaller keys a description states (intent, time of day, traffic, road, the ego's route), each
+read from a construction, not from a sentence. Every group is one construction in wordings written for
+it (none taken from a corpus), with near-misses that look alike and must not be read so."""
+
+from __future__ import annotations
+
+import pytest
+
+from vei_scenario.language.outcome import stated_intent
+from vei_scenario.language.reader import _tokens
+
+
+def _intent(text: str) -> str | None:
+    return stated_intent(" ".join(_tokens(text)))
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("A cyclist wobbled past and her pedal scraped my rear door.", "collision"),
+        ("The courier's mirror clipped my elbow as he went by.", "collision"),
+        ("As the moped squeezed through, its footrest scratched the wing.", "collision"),
+        # near misses: a part that misses, or a thing that is no part of a road user
+        ("The courier's mirror nearly clipped my elbow.", "near_miss"),
+        ("The booking app crashed twice this morning.", None),
+    ],
+)
+def test_a_part_of_a_road_user_as_the_subject_of_a_contact_is_a_collision(text, intent):
+    """ "his handlebar scraped the door": what a road user touches with is the road user touching."""
+    assert _intent(text) == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("A jogger ran out, I swerved and mounted the kerb; I never touched her.", "near_miss"),
+        ("I yanked the wheel to avoid the moped and struck a bollard.", "near_miss"),
+        ("I dodged the cyclist and hit a lamppost instead.", "near_miss"),
+        # near misses: a road user hit stays a collision, whatever else was hit
+        ("I swerved round the cyclist and hit a parked car.", "collision"),
+        ("The scooter rider bounced off the kerb and hit my door.", "collision"),
+    ],
+)
+def test_hitting_street_furniture_is_no_contact_with_a_road_user(text, intent):
+    """A kerb, a bollard, a lamppost are not road users: escaping one road user into them is a near
+    miss with that road user, not a collision."""
+    assert _intent(text) == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("At 40 mph that delay would certainly have meant striking the child.", "near_miss"),
+        ("Someone is going to get hit on this bend.", None),
+        ("One day a pedestrian is going to be killed at this crossing.", None),
+        # near misses: the future said of a plan, not of a harm
+        ("The lorry is going to hit the cyclist in this test.", "collision"),
+        ("The van hit the rider; he was going to be late anyway.", "collision"),
+    ],
+)
+def test_a_contact_under_would_have_or_going_to_did_not_happen(text, intent):
+    """ "would still have meant hitting her", "somebody is going to be killed": a hypothetical or a
+    prediction is no contact that happened (a test's "is going to hit" is what the scenario plays)."""
+    assert _intent(text) == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("The ego overtakes the horse rider with adequate lateral clearance.", "safe"),
+        ("The van passes the jogger at a sufficient distance.", "safe"),
+        ("The shuttle keeps a safe distance behind the scooter.", "safe"),
+        # near misses: sufficiency denied, or a small margin
+        ("The van passes the jogger without sufficient clearance.", None),
+        ("The van passes the jogger with 30 cm clearance.", "near_miss"),
+    ],
+)
+def test_a_sufficient_margin_is_a_safe_pass(text, intent):
+    assert _intent(text) == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("Pass the cyclist with three metres or more to spare.", "safe"),
+        ("I went round the runner with 2 m to spare.", "safe"),
+        ("The bus slid past the moped with 20 cm to spare.", "near_miss"),
+        # near misses: no quantity (a near miss), or a time to spare
+        ("The bus slid past the moped with not much to spare.", "near_miss"),
+        ("The truck stopped with half a metre to spare.", "near_miss"),
+        ("The overtaking coach got back in with 40 m to spare before the tractor.", "near_miss"),
+    ],
+)
+def test_a_margin_to_spare_is_as_wide_as_its_quantity(text, intent):
+    assert _intent(text) == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("The quad bike crossed our path 2 m in front of the bumper.", "near_miss"),
+        ("The horse stopped a metre ahead of my front wheel.", "near_miss"),
+        ("The deer cleared the road a couple of metres ahead of our bonnet.", "near_miss"),
+        # near misses: far ahead, or ahead of a place
+        ("The quad bike crossed 40 m in front of the bumper.", None),
+        ("The lorry stopped 2 m in front of the stop line.", None),
+    ],
+)
+def test_a_small_distance_ahead_of_a_part_of_the_ego_is_a_near_miss(text, intent):
+    assert _intent(text) == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("Clipped it with my elbow as the bus pulled over.", "collision"),
+        ("I caught him with my mirror as I went past.", "collision"),
+        ("The lorry nicked me with its trailer.", "collision"),
+        # near misses: caught sight, caught up with
+        ("I caught him with my eyes just in time and braked.", None),
+        ("I caught up with the cyclist at the lights.", None),
+    ],
+)
+def test_touching_someone_with_a_part_is_a_collision(text, intent):
+    """ "caught it with my knee": a verb of touching whose instrument is a part of a body or vehicle."""
+    assert _intent(text) == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("The minibus struck a 9-year-old boy at the gates.", "collision"),
+        ("A van hit an 80-year-old pensioner on the zebra.", "collision"),
+        ("CYCLIST STRUCK 5TH/ELM, AMBULANCE EN ROUTE.", "collision"),
+        ("Jogger clipped at the crossing, minor injuries.", "collision"),
+        # near misses: a speed or a number after the verb
+        ("The motorbike hit 90 on the straight.", None),
+        ("The van hit 50 mph before the bend.", None),
+    ],
+)
+def test_an_age_or_a_place_after_a_contact_verb_keeps_the_contact(text, intent):
+    """ "struck a 72-year-old woman" (an age in the object), "PED STRUCK 4TH/MARKET" (a report's
+    passive without its auxiliary, then where): both are contacts; "hit 90" is a speed."""
+    assert _intent(text) == intent
