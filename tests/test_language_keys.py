@@ -7,7 +7,7 @@ from __future__ import annotations
 import pytest
 
 from vei_scenario.language.outcome import stated_intent
-from vei_scenario.language.reader import _tokens
+from vei_scenario.language.reader import _tokens, read
 
 
 def _intent(text: str) -> str | None:
@@ -142,3 +142,53 @@ def test_an_age_or_a_place_after_a_contact_verb_keeps_the_contact(text, intent):
     """ "struck a 72-year-old woman" (an age in the object), "PED STRUCK 4TH/MARKET" (a report's
     passive without its auxiliary, then where): both are contacts; "hit 90" is a speed."""
     assert _intent(text) == intent
+
+
+def _time(text: str) -> str | None:
+    return read(text).time
+
+
+@pytest.mark.parametrize(
+    "text, clock",
+    [
+        ("2140 RP reports a cyclist riding without lights in the bus lane, RP passed at 25 mph.", "21:40"),
+        ("0510 Unit 3 adv moped ran the red at Elm/3rd, unit braked at 30 mph.", "05:10"),
+        ("Log:\n1415 Caller says a jogger stepped out in front of her car at 20 mph.", "14:15"),
+        # near misses: a number inside a line, a quantity, a model year, a reference
+        ("Event 2140: a cyclist crosses in front of the ego at 20 km/h.", None),
+        ("2019 Honda Civic, doing 30 mph, when a jogger ran out in front of me.", None),
+        ("1200 m ahead a cyclist crosses the road in front of the ego.", None),
+    ],
+)
+def test_a_four_digit_clock_opening_a_log_line_is_the_time(text, clock):
+    assert _time(text) == clock
+
+
+@pytest.mark.parametrize(
+    "text, time",
+    [
+        ("Afternoon drive, a cyclist swerved out in front of me at 30 mph. Jump to 0:55 for the moment.", "15:30"),
+        ("Evening, a moped cut in front of me at 40 km/h. It happens at 1:12 in the video.", "20:00"),
+        ("A cyclist pulled out in front of me at 20 mph; skip to 2:05.", None),
+        # near misses: clocks of the day stay
+        ("At 0:30 am a cyclist pulled out in front of me at 20 mph.", "00:30"),
+        ("At 9:15 a moped cut in front of me at 40 km/h.", "09:15"),
+    ],
+)
+def test_a_point_in_a_recording_is_no_time_of_day(text, time):
+    assert _time(text) == time
+
+
+@pytest.mark.parametrize(
+    "text, time",
+    [
+        ("Good morning. Last night a cyclist with no lights pulled out in front of me at 30 mph.", "23:00"),
+        ("Good evening all, this afternoon a jogger ran out in front of my car at 20 mph.", "15:30"),
+        ("Good afternoon. A cyclist pulled out in front of me at 30 mph.", None),
+        # near misses: the part of the day said of the event
+        ("It was a good morning for a drive until a jogger ran out in front of me at 20 mph.", "08:30"),
+        ("This morning a cyclist pulled out in front of me at 30 mph.", "08:30"),
+    ],
+)
+def test_a_greeting_is_no_time_of_day(text, time):
+    assert _time(text) == time

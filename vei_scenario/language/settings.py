@@ -242,10 +242,57 @@ _RECORDED_CLOCK = re.compile(
 )
 
 
+#: A point in a recording, not a time of day: a clock after "skip to" or "at ... in the video", or one
+#: whose hour is a lone 0 ("0:42", in the reader's tokens "0 : 42"), which no clock of the day is
+#: written as (midnight's hour is "00").
+_TIMESTAMP = re.compile(
+    r"\b(?:skip|skipping|jump|jumping|fast forward|forward|scroll|scrolling) (?:to |at )?"
+    r"(?:about |around )?\d{1,2} : [0-5]\d\b"
+    r"|\b\d{1,2} : [0-5]\d (?:in|into|of) the (?:video|clip|footage|recording)\b"
+    r"|(?<![\d:] )(?<!\d)\b0 : [0-5]\d\b(?! (?:am|pm)\b)"
+)
+
+
 def without_bounds(said: str) -> str:
-    """The normalised text without the clocks that bound something else ("since 5 am") or that say
-    when a record of it was made ("call logged 14:10"): neither is the time the scenario happens."""
-    return _RECORDED_CLOCK.sub(" ", _BOUNDED_CLOCK.sub(" ", said))
+    """The normalised text without the clocks that bound something else ("since 5 am"), that say
+    when a record of it was made ("call logged 14:10"), or that point into a recording ("skip to
+    0:42"): none is the time the scenario happens."""
+    return _TIMESTAMP.sub(" ", _RECORDED_CLOCK.sub(" ", _BOUNDED_CLOCK.sub(" ", said)))
+
+
+#: A four-digit 24-hour clock opening a line of a log ("1632 CALLER ADV ...", "0203 Unit 14 adv near
+#: miss"): a dispatch or radio log stamps each entry so. A number inside a line is a reference ("Event
+#: 0417"), one before a unit a quantity, and a year before a vehicle's make its model year.
+_LOG_CLOCK = re.compile(r"(?m)^[ \t]*([01]\d|2[0-3])([0-5]\d)[ \t]+([A-Za-z][\w/-]*)")
+_NOT_AFTER_A_CLOCK = frozenset(
+    ("m", "km", "kph", "mph", "metres", "meters", "feet", "ft", "cc", "model", "reg", "plate", "ref", "st", "nd",
+     "rd", "th", "hrs", "hours", "h")
+)  # fmt: skip
+
+
+def log_clock(text: str, is_vehicle: Callable[[str], bool]) -> str | None:
+    """The clock of a four-digit time opening a line of the original ``text`` ("1632 CALLER ...":
+    "16:32"), else None; not before a unit or a vehicle's name (``is_vehicle``: "2019 Honda Civic")."""
+    for m in _LOG_CLOCK.finditer(text):
+        after = m.group(3).lower()
+        if after not in _NOT_AFTER_A_CLOCK and not is_vehicle(after):
+            return f"{m.group(1)}:{m.group(2)}"
+    return None
+
+
+#: A greeting with a part of the day ("Good afternoon.", "good evening all"): when a message is written,
+#: not when what it tells of happened. It stands alone, or before whom it greets.
+_GREETED = frozenset(("good",))
+_AFTER_A_GREETING = frozenset(
+    ("", ".", ",", "!", ";", ":", "-", "all", "everyone", "everybody", "sir", "madam", "team", "folks", "guys")
+)
+
+
+def greeting(prev: str, words: str, next_: str) -> bool:
+    """Whether the time words ``words`` between the tokens ``prev`` and ``next_`` are a greeting ("Good
+    morning.", "good evening all"); not "a good morning for a drive"."""
+    parts = ("morning", "afternoon", "evening", "night", "day")
+    return prev in _GREETED and words in parts and next_ in _AFTER_A_GREETING
 
 
 #: A day, or "this", with its half said as "am" or "pm" ("Tues AM", "Friday pm", "this am").
