@@ -192,3 +192,38 @@ def test_a_point_in_a_recording_is_no_time_of_day(text, time):
 )
 def test_a_greeting_is_no_time_of_day(text, time):
     assert _time(text) == time
+
+
+def _density(text: str) -> str | None:
+    return read(text).density
+
+
+@pytest.mark.parametrize(
+    "text, density",
+    [
+        ("A cyclist crosses in front of the ego at 20 km/h. Do not add any background traffic.", "none"),
+        ("A jogger steps out in front of the ego at 30 km/h; don't include other vehicles.", "none"),
+        ("A deer runs out in front of the ego at 60 km/h. Nothing else on the road.", "none"),
+        # near misses: other traffic asked for, or a thing added
+        ("A cyclist crosses in front of the ego at 20 km/h. Add some background traffic.", None),
+        ("A cyclist crosses in front of the ego at 20 km/h. Do not add rain.", None),
+    ],
+)
+def test_traffic_left_out_by_the_request_is_none(text, density):
+    assert _density(text) == density
+
+
+@pytest.mark.parametrize(
+    "text, density",
+    [
+        ("Crawling through stationary traffic at 10 mph when a moped squeezes in front of me.", "heavy"),
+        ("Traffic flow was light. A van pulls out in front of the ego at 40 km/h.", "light"),
+        ("Moderate volumes on the bypass; a lorry cuts in front of the ego at 80 km/h.", "moderate"),
+        ("The circulation was really dense and a van cut in front of me at 30 km/h.", "heavy"),
+        # near misses: a degree of something else
+        ("Light rain. A van pulls out in front of the ego at 40 km/h.", None),
+        ("A heavy lorry pulls out in front of the ego at 40 km/h.", None),
+    ],
+)
+def test_a_degree_of_the_traffic_by_any_of_its_nouns(text, density):
+    assert _density(text) == density

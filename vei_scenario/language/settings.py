@@ -341,9 +341,19 @@ _NOT_TRAFFIC = re.compile(
 )
 
 
+#: A request that leaves other traffic out ("do not add any background traffic", "don't include other
+#: vehicles", "nothing else on the road"): a scene with no one but those named.
+_LEFT_OUT = re.compile(
+    r"\b(?:do not|never|no need to|without) (?:add|adding|include|including|put|putting|spawn|spawning|place|have)"
+    r" (?:any )?(?:other |background |more |extra |additional |ambient )*(?:traffic|cars|vehicles|road users)\b"
+    r"|\bnothing (?:else|more) (?:in the (?:scene|scenario|picture)|on the road|around|about|in sight)\b"
+)
+
+
 def no_other_traffic(said: str) -> bool:
-    """Whether the normalised text says there is no other road user about (no background traffic)."""
-    return _NO_OTHERS.search(said) is not None
+    """Whether the normalised text says there is no other road user about (no background traffic), or
+    asks for none."""
+    return _NO_OTHERS.search(said) is not None or _LEFT_OUT.search(said) is not None
 
 
 #: "barely any traffic", "not much traffic", "only a handful of cars": a small quantity of other traffic.
@@ -371,7 +381,7 @@ _TRAFFIC_NOTE = re.compile(
 )
 #: Traffic said of the road ("the motorway was heavy", "traffic was moderate").
 _SAID_OF_ROAD = re.compile(
-    r"\b(?:traffic(?: volumes?| levels?| flows?)?|motorway|road|roads|street|streets|highway)"
+    r"\b(?:traffic(?: volumes?| levels?| flows?)?|motorway|road|roads|street|streets|highway|circulation)"
     r" (?:is|was|were|are|being|looked|seemed) (?:very |quite |fairly |pretty |"
     r"really )?(light|moderate|heavy|busy|quiet|dense|sparse|empty)\b"
 )
@@ -383,11 +393,16 @@ _DEGREE_OF_TRAFFIC = re.compile(
     r"((?: (?!(?:and|or|but|with|of|in|on|the|a|rain|snow|fog|drizzle|mist|wind)\b)[a-z-]+){0,2}) traffic\b"
     r"(?! (?:lights?|signals?|islands?|cones?|calming|control|police|wardens?|lanes?|cameras?)\b)"
 )
+#: A degree of the traffic said by a noun of its amount ("light volumes", "moderate density"), not of a
+#: vehicle ("a heavy lorry") or the weather ("light rain").
+_DEGREE_OF_VOLUME = re.compile(
+    r"\b(light|moderate|heavy|dense|sparse|low) (?:traffic )?(?:volumes?|density|densities|flows?)\b"
+)
 #: What each word of the patterns above says of the traffic; a queue is heavy traffic.
 _DENSITY_WORDS = {"light": "light", "sparse": "light", "quiet": "light", "moderate": "moderate", "heavy": "heavy",
                   "busy": "heavy", "dense": "heavy", "empty": "none", "none": "none", "zero": "none",
                   "slow": "heavy", "queuing": "heavy", "queueing": "heavy", "crawling": "heavy",
-                  "stationary": "heavy"}  # fmt: skip
+                  "stationary": "heavy", "low": "light"}  # fmt: skip
 
 
 def density(said: str, read: str | None = None) -> str | None:
@@ -410,7 +425,10 @@ def density(said: str, read: str | None = None) -> str | None:
     if m is not None:
         return _DENSITY_WORDS[m.group(1)]
     m = _DEGREE_OF_TRAFFIC.search(said_of_traffic)
-    if m is not None and m.group(2):  # (a degree directly before "traffic" is the lexicon's to read)
+    if m is not None and (m.group(2) or read is None):  # (a degree right before "traffic": the lexicon's first)
+        return _DENSITY_WORDS[m.group(1)]
+    m = _DEGREE_OF_VOLUME.search(said_of_traffic)
+    if m is not None and read is None:
         return _DENSITY_WORDS[m.group(1)]
     if read == "none" and _NOT_TRAFFIC.search(said) and not _NONE_WORDS.search(said_of_traffic):
         return None
