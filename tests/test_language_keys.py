@@ -227,3 +227,27 @@ def test_traffic_left_out_by_the_request_is_none(text, density):
 )
 def test_a_degree_of_the_traffic_by_any_of_its_nouns(text, density):
     assert _density(text) == density
+
+
+def _map(text: str) -> str | None:
+    return read(text).map_kind
+
+
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("A cyclist blew the red at Kingsway, right across in front of me at 30 km/h.", "crossroad"),
+        ("CYCLIST STRUCK AT PARK/9TH, driver doing 25 mph.", "crossroad"),
+        ("At the Harbour Rd lights a cyclist pulled out in front of me at 20 mph.", "crossroad"),
+        ("A moped jumped the red near Oak St and cut in front of me at 30 mph.", "crossroad"),
+        ("Doing 20 mph by the King/Queen St junction when a jogger ran out in front of me.", "crossroad"),
+        # near misses: a red at a foot crossing, units and shorthand with a slash, a red thing
+        ("At the pelican crossing a jogger ran the red in front of me at 20 mph.", None),
+        ("A cyclist crossed in front of me at 30 km/h and 8 m/s.", None),
+        ("A van with a red roof cut in front of me at 30 mph.", None),
+    ],
+)
+def test_a_signalled_or_named_intersection_is_a_crossroad(text, kind):
+    """Running a red light, lights named by their street ("the Harbour Rd lights") and two streets
+    written with a slash ("Queen/Albert", "4TH/MARKET"): the road has a junction there."""
+    assert _map(text) == kind

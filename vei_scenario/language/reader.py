@@ -2087,6 +2087,8 @@ def _read(text: str) -> Reading:
     r.lanes = r.lanes or S.lanes_of_one_way_road(said)  # ("down the one-way street": one lane)
     if r.map_kind in (None, "straight"):
         r.map_kind = S.many_turns(said) or r.map_kind  # ("a small road with a lot of turns": a bend)
+    if r.map_kind in (None, "straight") and S.signalled_junction(text, said):
+        r.map_kind = "crossroad"  # ("ran the red", "at the Harbour Rd lights", "at Queen/Albert")
     said_as = [
         (m.slot, m.words, m.value)
         for _, ms in clauses

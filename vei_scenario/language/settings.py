@@ -630,3 +630,29 @@ def lanes_at_least(said: str) -> int | None:
     numbers = [int(w) if w.isdigit() else _WORD[w] for w in _LANE_NUMBER.findall(said)]
     fewest = max([n for n in numbers if 1 <= n <= 6] + [3 if _MIDDLE_LANE.search(said) else 0])
     return fewest or None
+
+
+#: Running a red light ("ran the red", "blew a red light", "jumped the lights"): signals stand at a
+#: junction, unless a crossing for people on foot is named, whose lights they are.
+_RED_RUN = re.compile(
+    r"\b(?:ran|runs|run|running|blew|blows|blown|blowing|jumped|jumps|jumping|went through|goes through|going through"
+    r"|shot through|shoots through|sailed through|ignored|ignores) (?:the|a|its|his|her|their) "
+    r"(?:red|red light|red lights|lights|light)\b"
+)
+#: Lights named by their street ("at the Harbour Rd lights"), in the original text.
+_NAMED_LIGHTS = re.compile(r"\b(?i:at|by|near) the (?:[A-Z0-9][\w'.]* ){1,3}(?:lights|signals)\b")
+#: Two streets written with a slash ("Queen/Albert", "4TH/MARKET", "Elm St / High St"), in the original text:
+#: where they cross. Both sides start with a capital or a street number; units ("km/h") and shorthand
+#: ("w/", "m/c") are lower case.
+_SLASHED_STREETS = re.compile(
+    r"(?<![\w/])(?:[A-Z][A-Za-z]+|\d+(?:st|nd|rd|th|ST|ND|RD|TH))(?: (?:St|Rd|Ave|Street|Road|Avenue))?"
+    r" ?/ ?(?:[A-Z][A-Za-z]+|\d+(?:st|nd|rd|th|ST|ND|RD|TH))\b"
+)
+
+
+def signalled_junction(text: str, said: str) -> bool:
+    """Whether the text puts the scene at a junction by its signals or its streets: a red light run
+    (no foot crossing named), lights named by their street, or two streets written with a slash."""
+    if _RED_RUN.search(said) and not set(said.split()) & (_FOOT_CROSSINGS | {"crossing"}):
+        return True
+    return _NAMED_LIGHTS.search(text) is not None or _SLASHED_STREETS.search(text) is not None
