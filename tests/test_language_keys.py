@@ -251,3 +251,27 @@ def test_a_signalled_or_named_intersection_is_a_crossroad(text, kind):
     """Running a red light, lights named by their street ("the Harbour Rd lights") and two streets
     written with a slash ("Queen/Albert", "4TH/MARKET"): the road has a junction there."""
     assert _map(text) == kind
+
+
+def _route(text: str) -> str | None:
+    from vei_scenario.language.route import ego_route
+
+    return ego_route(_tokens(text))
+
+
+@pytest.mark.parametrize(
+    "text, route",
+    [
+        ("I was making right on the green arrow when a cyclist came through.", "right"),
+        ("We made left onto Pine St and a jogger stepped out.", "left"),
+        ("Caller is driver of vehicle 1, was making left at the signal, pedestrian in crosswalk.", "left"),
+        ("Witness is the ego vehicle, was making right at the signal.", "right"),
+        # near misses: another's turn, a lane, a choice
+        ("The van was making left on green when it hit the cyclist.", None),
+        ("I was making right decisions all day until a cyclist cut across me.", None),
+        ("I took the left lane and a van cut in front of me.", None),
+    ],
+)
+def test_a_bare_direction_after_make_is_the_turn(text, route):
+    """ "making left on green": the American shorthand of "making a left", its article left out."""
+    assert _route(text) == route
