@@ -39,6 +39,7 @@ def test_a_part_of_a_road_user_as_the_subject_of_a_contact_is_a_collision(text, 
         # near misses: a road user hit stays a collision, whatever else was hit
         ("I swerved round the cyclist and hit a parked car.", "collision"),
         ("The scooter rider bounced off the kerb and hit my door.", "collision"),
+        ("The lorry lost grip, hit the wall and overturned.", "collision"),
     ],
 )
 def test_hitting_street_furniture_is_no_contact_with_a_road_user(text, intent):

@@ -251,7 +251,8 @@ def _object_of(words: list[str], i: int) -> list[str]:
 
 
 #: Street furniture and the road's edges: what a road user hits when it escapes another is not a road
-#: user ("swerved and hit the kerb", "struck a bollard"), so hitting one is no contact between the two.
+#: user ("swerved and hit the kerb", "struck a bollard"), so hitting one then is no contact between the
+#: two (a pickup that "hit the kerb and rolled", escaping no one, crashed).
 _FURNITURE = frozenset(
     ("kerb", "curb", "kerbs", "bollard", "bollards", "lamppost", "lamp-post", "lamp", "post", "pole", "wall", "fence",
      "barrier", "railing", "railings", "tree", "hedge", "sign", "signpost", "verge", "ditch", "bin", "bench",
@@ -259,6 +260,14 @@ _FURNITURE = frozenset(
 )  # fmt: skip
 #: Ordinal suffixes the tokeniser splits from a street's number ("5th" -> "5 th").
 _ORDINALS = frozenset(("st", "nd", "rd", "th"))
+
+
+def _escaping_into_furniture(words: list[str], i: int, sentence: list[str]) -> bool:
+    """Whether the contact verb at ``i`` hits street furniture (its object's head) while its sentence
+    so far tells of escaping someone ("I swerved to miss him and hit the kerb")."""
+    head = next((w for w in words[i + 1 : i + 5] if w not in _DETERMINERS and w not in _POSSESSIVES), "")
+    escaping = any(_lemmas(x) & (_EVADE | {"avoid", "miss", "dodge"}) for x in sentence)
+    return head in _FURNITURE and escaping
 
 
 def _meets_road_user(after: list[str]) -> bool:
@@ -272,7 +281,7 @@ def _meets_road_user(after: list[str]) -> bool:
         nxt = after[k + 1] if k + 1 < len(after) else ""
         if _number(w) is not None and (nxt.startswith("year") or nxt in _ORDINALS):
             return True
-        if w in _NOT_ROAD_USERS or w in _FURNITURE or _number(w) is not None:
+        if w in _NOT_ROAD_USERS or _number(w) is not None:
             return False
         if w in ("the", "a", "an", "on", "off", "down", "over", "into", "with") or w in _POSSESSIVES:
             continue
@@ -1004,6 +1013,8 @@ def outcome_cues(said: str) -> list[Cue]:
 
         for i, w in enumerate(words):
             if _is_contact(words, i):
+                if _escaping_into_furniture(words, i, sentence):
+                    continue  # ("swerved to miss him and hit the kerb": no contact with him)
                 passive = _denied_after(words, i)  # ("collision narrowly avoided", "a crash was averted")
                 hedged = _scoped(words, i, _HEDGES | {"only", "within"}, 5) or passive == "hedged"
                 counterfactual = "have" in words[:i] and (
