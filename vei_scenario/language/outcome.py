@@ -207,6 +207,31 @@ def _forgone(words: list[str], i: int) -> bool:
     return any(words[k : k + 2] in _FORGONE for k in range(max(0, i - 3), i - 1))
 
 
+#: Modals of a counterfactual perfect ("would have", "could easily have", "might well have").
+_MODALS = frozenset(("would", "could", "might", "should"))
+
+
+def _modal_perfect(words: list[str], i: int) -> bool:
+    """Whether the word at ``i`` stands after a modal and "have" in its clause, adverbs between ("would
+    certainly have meant hitting her", "could easily have killed him"): what did not happen."""
+    return any(w in _MODALS and "have" in words[k + 1 : min(k + 4, i)] for k, w in enumerate(words[:i]))
+
+
+#: Subjects of a prediction about anyone at all ("someone is going to be killed"), and markers of a
+#: time to come ("one day", "sooner or later").
+_INDEFINITE = frozenset(("someone", "somebody", "anyone", "anybody", "people", "eventually", "sooner"))
+
+
+def _predicted(words: list[str], i: int) -> bool:
+    """Whether the word at ``i`` is under a future ("is going to", "will") said of anyone at all or
+    of a time to come ("someone is going to get hit", "one day a child will be killed"): a warning,
+    not what happened. A test's "the lorry is going to hit the cyclist" names who, and plays."""
+    before = words[max(0, i - 8) : i]
+    future = any(before[k : k + 2] == ["going", "to"] for k in range(len(before) - 1)) or "will" in before[-4:]
+    one_day = any(words[k : k + 2] == ["one", "day"] for k in range(i))
+    return future and (bool(set(words[:i]) & _INDEFINITE) or one_day)
+
+
 def _denied_before(words: list[str], i: int) -> bool:
     """Whether what stands at ``i`` is denied in its clause: an odd count of negators and denying
     verbs before it ("no contact", "did not make contact", "managed to avoid hitting"); two cancel
@@ -225,11 +250,37 @@ def _object_of(words: list[str], i: int) -> list[str]:
     return words[i + 1 : i + 4]
 
 
+#: Street furniture and the road's edges: what a road user hits when it escapes another is not a road
+#: user ("swerved and hit the kerb", "struck a bollard"), so hitting one then is no contact between the
+#: two (a pickup that "hit the kerb and rolled", escaping no one, crashed).
+_FURNITURE = frozenset(
+    ("kerb", "curb", "kerbs", "bollard", "bollards", "lamppost", "lamp-post", "lamp", "post", "pole", "wall", "fence",
+     "barrier", "railing", "railings", "tree", "hedge", "sign", "signpost", "verge", "ditch", "bin", "bench",
+     "guardrail", "gatepost", "pillar", "kerbstone")
+)  # fmt: skip
+#: Ordinal suffixes the tokeniser splits from a street's number ("5th" -> "5 th").
+_ORDINALS = frozenset(("st", "nd", "rd", "th"))
+
+
+def _escaping_into_furniture(words: list[str], i: int, sentence: list[str]) -> bool:
+    """Whether the contact verb at ``i`` hits street furniture (its object's head) while its sentence
+    so far tells of escaping someone ("I swerved to miss him and hit the kerb")."""
+    head = next((w for w in words[i + 1 : i + 5] if w not in _DETERMINERS and w not in _POSSESSIVES), "")
+    escaping = any(_lemmas(x) & (_EVADE | {"avoid", "miss", "dodge"}) for x in sentence)
+    return head in _FURNITURE and escaping
+
+
 def _meets_road_user(after: list[str]) -> bool:
-    """Whether the object after a contact verb is a road user, not a brake pedal or a speed."""
+    """Whether the object after a contact verb is a road user, not a brake pedal, a speed or street
+    furniture. A number is an age when "year-old" follows it ("struck a 72 year-old woman"), and a
+    street's number before its ordinal suffix is where, not what, was hit ("PED STRUCK 4TH/MARKET":
+    a report's passive without its auxiliary)."""
     if not after:
         return True  # ("... and it crashed", "they collided")
-    for w in after:
+    for k, w in enumerate(after):
+        nxt = after[k + 1] if k + 1 < len(after) else ""
+        if _number(w) is not None and (nxt.startswith("year") or nxt in _ORDINALS):
+            return True
         if w in _NOT_ROAD_USERS or _number(w) is not None:
             return False
         if w in ("the", "a", "an", "on", "off", "down", "over", "into", "with") or w in _POSSESSIVES:
@@ -299,6 +350,8 @@ def _is_contact(words: list[str], i: int) -> bool:
         return True  # ("took out a jogger", "knocked the child over")
     if lem & _TOUCHING and _is_verb(w) and _vehicle_part(words[i + 1 : i + 6]):
         return True  # ("caught my front bumper", "nicked the wing mirror of the taxi")
+    if lem & _TOUCHING and _is_verb(w) and _touched_with_a_part(words, i):
+        return True  # ("caught it with my knee", "nicked me with its trailer")
     if lem & {"run", "knock", "mow"} and nxt in ("over", "down"):
         return _meets_road_user(words[i + 2 : i + 5]) and not (nxt == "down" and lem & {"run"} and "road" in words)
     if lem & {"make", "come"} and nxt == "contact":
@@ -362,9 +415,10 @@ def _thing_subject(words: list[str], i: int) -> bool:
     user ("the booking website", "my phone app"): software or a market crashes, not a road user."""
     for k in range(i - 1, max(-1, i - 5), -1):
         if words[k] in _DETERMINERS or words[k] in _POSSESSIVES:
-            phrase = words[k + 1 : i]
+            phrase = words[k + 1 : i]  # (a road user's part is the road user: "his handlebar scraped the door")
             return bool(phrase) and not any(
-                _road_user_word(x) or x in _EGO_HEADS or x in _PERSON_OBJECTS for x in phrase
+                _road_user_word(x) or x in _EGO_HEADS or x in _PERSON_OBJECTS or x.rstrip("s") in _VEHICLE_PARTS
+                for x in phrase
             )
         if words[k] in _BREAK_WORDS or words[k] in _PHRASE_ENDS or words[k] in _VERBAL_BEFORE:
             return False
@@ -499,6 +553,26 @@ def _vehicle_part(after: list[str]) -> bool:
     return False
 
 
+#: The parts of a body one touches another road user with ("caught it with my knee").
+_BODY_PARTS = frozenset(("knee", "elbow", "shoulder", "arm", "hand", "leg", "foot", "hip", "head", "boot", "helmet"))
+
+
+def _touched_with_a_part(words: list[str], i: int) -> bool:
+    """A verb of touching at ``i`` with someone as its object and a part of a body or vehicle as its
+    instrument ("caught it with my knee", "nicked me with its trailer"); not "caught up with him",
+    "caught him with my eyes"."""
+    after = words[i + 1 : i + 8]
+    if not after or not (after[0] in _PERSON_OBJECTS - {"each", "one"} or _names_road_user(after[:3])):
+        return False
+    k = next((k for k, x in enumerate(after[:4]) if x == "with"), None)
+    if k is None:
+        return False
+    part = after[k + 1 : k + 5]
+    return _vehicle_part(part) or (
+        part[:1] != [] and part[0] in _POSSESSIVES and any(x in _BODY_PARTS for x in part[1:3])
+    )
+
+
 def _begun(words: list[str], i: int) -> bool:
     """Whether the verb at ``i`` follows a verb of beginning in its clause ("started edging into me")."""
     return any(_lemmas(x) & _BEGIN for x in words[max(0, i - 3) : i])
@@ -572,11 +646,18 @@ def _margin(words: list[str], i: int) -> str | None:
         said = words[max(0, i - 6) : i - 1]
         if set(said) & _WIDE:
             return SAFE
+        metres = _length_said(said)
+        stopped = any(_lemmas(x) & {"stop", "halt", "pull", "brake"} for x in words[max(0, i - 10) : i])
+        if metres is not None and not stopped:
+            # (a pass's clearance sideways; a longer one is a gap ahead, which the text tells as close)
+            return SAFE if 1.5 <= metres <= 5.0 else NEAR_MISS if metres <= 1.0 or metres > 5.0 else None
         return NEAR_MISS if said else None
-    if w in ("clearance", "separation", "margin", "room", "space", "distance") and set(
-        words[max(0, i - 3) : i]
-    ) & _WIDE - {"room", "space"}:
-        return SAFE  # ("plenty of room", "an ample margin", "enough distance")
+    if w in ("clearance", "separation", "margin", "room", "space", "distance") and set(words[max(0, i - 3) : i]) & (
+        _WIDE | _SUFFICIENT
+    ) - {"room", "space"}:
+        if set(words[max(0, i - 4) : i]) & {"without", "not", "no", "never"}:
+            return None  # ("without sufficient clearance": how close is not said)
+        return SAFE  # ("plenty of room", "an ample margin", "enough distance", "adequate clearance")
     if w == "clear" and i > 0 and words[i - 1] in ("well", "safely", "comfortably"):
         return SAFE
     stopping = any(_lemmas(x) & {"stop", "brake", "halt"} or x == "up" for x in words[max(0, i - 6) : i])
@@ -593,13 +674,8 @@ def _margin(words: list[str], i: int) -> str | None:
     if w in ("clearance", "separation", "margin") and (
         w == "clearance" or context & {"minimum", "lateral", "with", "passing"}
     ):
-        near = words[max(0, i - 4) : i + 6]
-        for k, x in enumerate(near):
-            value = _number(x)
-            if value is not None and k + 1 < len(near) and near[k + 1] in _LENGTH_UNITS:
-                metres = value * (0.3048 if near[k + 1] in ("foot", "feet") else 1.0)
-                return NEAR_MISS if metres <= 1.0 else SAFE if metres >= 1.5 else None
-        return None
+        metres = _length_said(words[max(0, i - 4) : i + 6])
+        return None if metres is None else NEAR_MISS if metres <= 1.0 else SAFE if metres >= 1.5 else None
     if w in _LENGTH_UNITS | _SMALL_UNITS and i + 1 < len(words):
         k = i + 1
         if words[k] == "or" and k + 2 < len(words):
@@ -625,7 +701,7 @@ def _margin(words: list[str], i: int) -> str | None:
                 metres = value * (
                     0.3048 if words[i] in ("foot", "feet") else 0.0254 if words[i].startswith("inch") else 1.0
                 )
-                if metres <= (2.0 if front else 3.0):
+                if metres <= 3.0:
                     return NEAR_MISS  # ("stopped two metres off his door", "a foot from him")
     if w == "short" and i > 0:
         if any(_lemmas(x) & {"stop", "pull", "come", "halt"} for x in words[max(0, i - 7) : i]):
@@ -641,6 +717,29 @@ def _margin(words: list[str], i: int) -> str | None:
         before = words[max(0, i - 6) : i]
         if any(_lemmas(x) & {"stop", "miss", "pass", "clear", "halt"} for x in before) or "by" in before:
             return NEAR_MISS
+    return None
+
+
+#: Adjectives that call a margin enough ("adequate clearance", "a sufficient distance").
+_SUFFICIENT = frozenset(("sufficient", "adequate", "safe", "decent", "reasonable", "good", "big", "large"))
+#: Metres in one of each unit of length a margin is said in.
+_UNIT_METRES = {"m": 1.0, "metre": 1.0, "metres": 1.0, "meter": 1.0, "meters": 1.0, "foot": 0.3048, "feet": 0.3048,
+                "yard": 0.9144, "yards": 0.9144, "cm": 0.01, "centimetre": 0.01, "centimetres": 0.01,
+                "centimeter": 0.01, "centimeters": 0.01, "inch": 0.0254, "inches": 0.0254}  # fmt: skip
+
+
+def _length_said(words: list[str]) -> float | None:
+    """The first length in ``words`` in metres: a number, or "a"/"half a", before a unit ("3 metres or
+    more", "30 cm", "half a metre"), else None."""
+    for k in range(1, len(words)):
+        unit = _UNIT_METRES.get(words[k])
+        if unit is None:
+            continue
+        value = _number(words[k - 1])
+        if value is None and words[k - 1] in ("a", "an"):
+            value = 0.5 if words[k - 2 : k - 1] == ["half"] else 1.0
+        if value is not None:
+            return value * unit
     return None
 
 
@@ -668,8 +767,8 @@ def _relative_to_other(words: list[str], k: int) -> bool:
     after = words[k + 1 : k + 5]
     if not after or after[0] != "of":
         return not after or after[0] in _BREAK_WORDS or after[0] in _PHRASE_ENDS - {"of"}
-    obj = after[1:]
-    return bool(obj) and (obj[0] in _PERSON_OBJECTS | _EGO_HEADS or _names_road_user(obj))
+    obj = after[1:]  # (or a part of one: "3 m ahead of the front bumper", "in front of my bonnet")
+    return bool(obj) and (obj[0] in _PERSON_OBJECTS | _EGO_HEADS or _names_road_user(obj) or _vehicle_part(obj))
 
 
 def _passed_close(before: list[str], after: list[str]) -> bool:
@@ -884,13 +983,20 @@ def _relief(words: list[str], i: int) -> bool:
     return not nxt or nxt in ("i", "we", "that", "it", "he", "she", "they") or "NOUN" not in _pos(nxt)
 
 
-def _contact_kind(words: list[str], i: int, clause: _Clause, before: list[str]) -> str:
+def _contact_kind(words: list[str], i: int, clause: _Clause, sentence: list[str]) -> str | None:
     """What the contact stated at ``words[i]`` (a word :func:`_is_contact` accepts) says happened:
     "contact", "hedged" ("nearly hit", "would have hit"), "denied" ("did not hit", "no contact") or
-    "required" (a contact a test says must not happen); ``before``: its sentence's words before it."""
+    "required" (a contact a test says must not happen); None where it says nothing of the road users
+    (a warning of what may happen to anyone, hitting the kerb while escaping someone). ``sentence``:
+    its sentence's words up to the end of its clause."""
+    if _escaping_into_furniture(words, i, sentence) or _predicted(words, i):
+        return None  # ("swerved to miss him and hit the kerb", "someone is going to get hit here")
+    before = sentence[: len(sentence) - len(words) + i]
     passive = _denied_after(words, i)  # ("collision narrowly avoided", "a crash was averted")
     hedged = _scoped(words, i, _HEDGES | {"only", "within"}, 5) or passive == "hedged"
-    counterfactual = "have" in words[:i] and (_scoped(words, i, _HYPOTHETICAL, 3) or clause.after_if)
+    counterfactual = "have" in words[:i] and (
+        _scoped(words, i, _HYPOTHETICAL, 3) or clause.after_if or _modal_perfect(words, i)
+    )
     if hedged or counterfactual:
         return "hedged"
     if _denied_before(words, i) or _scoped(words, i, _HYPOTHETICAL, 2) or passive == "denied":
@@ -914,10 +1020,7 @@ def contacts_made(tokens: list[str]) -> list[int]:
         cursor = at + len(words)
         sentence = words if clause.first_of_sentence else sentence + words
         for i in range(len(words)):
-            if (
-                _is_contact(words, i)
-                and _contact_kind(words, i, clause, sentence[: len(sentence) - len(words) + i]) == "contact"
-            ):
+            if _is_contact(words, i) and _contact_kind(words, i, clause, sentence) == "contact":
                 out.append(at + i)
     return out
 
@@ -952,7 +1055,9 @@ def outcome_cues(said: str) -> list[Cue]:
 
         for i, w in enumerate(words):
             if _is_contact(words, i):
-                add(_contact_kind(words, i, clause, sentence[: len(sentence) - len(words) + i]))
+                kind = _contact_kind(words, i, clause, sentence)
+                if kind is not None:
+                    add(kind)
                 continue
             if _near_noun(words, i):
                 own = _after_contact_noun(words, i)  # ("no collision (near miss)": "no" is not said of it)
@@ -972,6 +1077,7 @@ def outcome_cues(said: str) -> list[Cue]:
                 and not w.endswith("ing")
                 and _person_subject(words, i)
                 and not (_scoped(words, i, _HYPOTHETICAL, 4) or clause.after_if)  # ("before someone gets killed")
+                and not _predicted(words, i)  # ("somebody is going to be killed there")
             ):
                 add("denied" if _denied_before(words, i) else "contact")  # ("a cyclist was seriously injured")
                 continue

@@ -2099,13 +2099,22 @@ def _read(text: str) -> Reading:
     r.lanes = r.lanes or S.lanes_of_one_way_road(said)  # ("down the one-way street": one lane)
     if r.map_kind in (None, "straight"):
         r.map_kind = S.many_turns(said) or r.map_kind  # ("a small road with a lot of turns": a bend)
+    if r.map_kind in (None, "straight") and S.signalled_junction(text, said):
+        r.map_kind = "crossroad"  # ("ran the red", "at the Harbour Rd lights", "at Queen/Albert")
     said_as = [
         (m.slot, m.words, m.value)
         for _, ms in clauses
         for m in ms
-        if m.slot == "weather" or (m.slot == "time" and m.prev not in S.BOUNDS)  # (not "since midnight")
+        if m.slot == "weather"
+        or (
+            m.slot == "time" and m.prev not in S.BOUNDS and not S.greeting(m.prev, m.words, m.next_)
+        )  # ("since midnight")
     ] + [("time", words, clock) for words, clock in S.day_halves(said)]  # ("Tues AM": the morning)
-    clock = S.dotted_clock(S.without_bounds(said)) or stated_clock(S.without_bounds(said))
+    clock = (
+        S.dotted_clock(S.without_bounds(said))
+        or stated_clock(S.without_bounds(said))
+        or S.log_clock(text, _vehicle_word)
+    )
     clock = S.twelve_hour(clock, S.without_bounds(said), [v for k, w, v in said_as if k == "time"]) or S.clock_in_words(
         S.without_bounds(said), [v for k, w, v in said_as if k == "time"]
     )
@@ -2115,6 +2124,11 @@ def _read(text: str) -> Reading:
     if r.weather in (None, "rain") and stated_heavy_rain(said):
         r.weather = "heavy_rain"
     return r
+
+
+def _vehicle_word(word: str) -> bool:
+    """Whether ``word`` names a vehicle or its make ("honda", "van"): a year before it is a model year."""
+    return word in L.CAR_MAKES or word in L.TRUCK_MAKES or word in L.CAR_NOUNS or word in ("model", "year")
 
 
 def _one_act_once(spec: ActorSpec) -> list:
@@ -2706,7 +2720,9 @@ def _global(r, m) -> None:
     elif m.slot == "weather":  # the most severe said, of equals the first ("grey, drizzly": rain)
         if r.weather is None or WEATHER_SEVERITY.get(str(m.value), 0) > WEATHER_SEVERITY.get(r.weather, 0):
             r.weather = m.value
-    elif m.slot == "time":  # (the first said: "at dusk ... in dark clothing" is at dusk)
+    elif m.slot == "time" and not S.greeting(
+        m.prev, m.words, m.next_
+    ):  # (the first said: "at dusk ... in dark clothing")
         r.time = r.time or m.value
     elif m.slot == "density":  # (the first said: a later "stop-and-go" in an aside does not override)
         r.density = r.density or m.value

@@ -132,10 +132,16 @@ def _turn_at(words: list[str], i: int) -> str | None:
                 nxt = after[k + 1] if k + 1 < len(after) else ""
                 if (k > 0 or nxt == "turn") and nxt not in ("lane", "side", "hand", "of", "kerb", "arm", "pavement"):
                     return x  # ("make a left", "take the next right", "making a right turn")
+                if k == 0 and _lemma_in(w, frozenset(("make",))) and (nxt in _AFTER_BARE_TURN or not nxt):
+                    return x  # ("was making left on green", "made right onto Main": the article left out)
                 break
             if x not in _BEFORE_TURN_NOUN and not (k > 0 and _adjective(x)):
                 break
     return None
+
+
+#: What follows a bare "make left" when it is a turn: where or when it is made ("on green", "onto Main").
+_AFTER_BARE_TURN = frozenset(("on", "at", "onto", "into", "across", "from", "in", "off", "out", "through"))
 
 
 def _adjective(word: str) -> bool:
@@ -230,6 +236,8 @@ def _own_subject(words: list[str]) -> str | None:
     if words and words[0] in _EGO_HEADS:
         return "ego"
     for k, w in enumerate(words):
+        if w in _COPULA and k > 0 and _opens_with_ego(words[k + 1 :]):
+            return "ego"  # ("caller is the ego": whoever the subject is, it is the ego)
         if k > 0 and w not in _BETWEEN and "VERB" in lemmas(w) and words[k - 1] not in _DETERMINERS:
             return _whose(_subject_before(words, k))
     return "ego" if _opens_with_ego(words) else None  # (a noun phrase alone: "Ego 30 mph, T-junction, ...")

@@ -242,10 +242,57 @@ _RECORDED_CLOCK = re.compile(
 )
 
 
+#: A point in a recording, not a time of day: a clock after "skip to" or "at ... in the video", or one
+#: whose hour is a lone 0 ("0:42", in the reader's tokens "0 : 42"), which no clock of the day is
+#: written as (midnight's hour is "00").
+_TIMESTAMP = re.compile(
+    r"\b(?:skip|skipping|jump|jumping|fast forward|forward|scroll|scrolling) (?:to |at )?"
+    r"(?:about |around )?\d{1,2} : [0-5]\d\b"
+    r"|\b\d{1,2} : [0-5]\d (?:in|into|of) the (?:video|clip|footage|recording)\b"
+    r"|(?<![\d:] )(?<!\d)\b0 : [0-5]\d\b(?! (?:am|pm)\b)"
+)
+
+
 def without_bounds(said: str) -> str:
-    """The normalised text without the clocks that bound something else ("since 5 am") or that say
-    when a record of it was made ("call logged 14:10"): neither is the time the scenario happens."""
-    return _RECORDED_CLOCK.sub(" ", _BOUNDED_CLOCK.sub(" ", said))
+    """The normalised text without the clocks that bound something else ("since 5 am"), that say
+    when a record of it was made ("call logged 14:10"), or that point into a recording ("skip to
+    0:42"): none is the time the scenario happens."""
+    return _TIMESTAMP.sub(" ", _RECORDED_CLOCK.sub(" ", _BOUNDED_CLOCK.sub(" ", said)))
+
+
+#: A four-digit 24-hour clock opening a line of a log ("1632 CALLER ADV ...", "0203 Unit 14 adv near
+#: miss"): a dispatch or radio log stamps each entry so. A number inside a line is a reference ("Event
+#: 0417"), one before a unit a quantity, and a year before a vehicle's make its model year.
+_LOG_CLOCK = re.compile(r"(?m)^[ \t]*([01]\d|2[0-3])([0-5]\d)[ \t]+([A-Za-z][\w/-]*)")
+_NOT_AFTER_A_CLOCK = frozenset(
+    ("m", "km", "kph", "mph", "metres", "meters", "feet", "ft", "cc", "model", "reg", "plate", "ref", "st", "nd",
+     "rd", "th", "hrs", "hours", "h")
+)  # fmt: skip
+
+
+def log_clock(text: str, is_vehicle: Callable[[str], bool]) -> str | None:
+    """The clock of a four-digit time opening a line of the original ``text`` ("1632 CALLER ...":
+    "16:32"), else None; not before a unit or a vehicle's name (``is_vehicle``: "2019 Honda Civic")."""
+    for m in _LOG_CLOCK.finditer(text):
+        after = m.group(3).lower()
+        if after not in _NOT_AFTER_A_CLOCK and not is_vehicle(after):
+            return f"{m.group(1)}:{m.group(2)}"
+    return None
+
+
+#: A greeting with a part of the day ("Good afternoon.", "good evening all"): when a message is written,
+#: not when what it tells of happened. It stands alone, or before whom it greets.
+_GREETED = frozenset(("good",))
+_AFTER_A_GREETING = frozenset(
+    ("", ".", ",", "!", ";", ":", "-", "all", "everyone", "everybody", "sir", "madam", "team", "folks", "guys")
+)
+
+
+def greeting(prev: str, words: str, next_: str) -> bool:
+    """Whether the time words ``words`` between the tokens ``prev`` and ``next_`` are a greeting ("Good
+    morning.", "good evening all"); not "a good morning for a drive"."""
+    parts = ("morning", "afternoon", "evening", "night", "day")
+    return prev in _GREETED and words in parts and next_ in _AFTER_A_GREETING
 
 
 #: A day, or "this", with its half said as "am" or "pm" ("Tues AM", "Friday pm", "this am").
@@ -294,9 +341,19 @@ _NOT_TRAFFIC = re.compile(
 )
 
 
+#: A request that leaves other traffic out ("do not add any background traffic", "don't include other
+#: vehicles", "nothing else on the road"): a scene with no one but those named.
+_LEFT_OUT = re.compile(
+    r"\b(?:do not|never|no need to|without) (?:add|adding|include|including|put|putting|spawn|spawning|place|have)"
+    r" (?:any )?(?:other |background |more |extra |additional |ambient )*(?:traffic|cars|vehicles|road users)\b"
+    r"|\bnothing (?:else|more) (?:in the (?:scene|scenario|picture)|on the road|around|about|in sight)\b"
+)
+
+
 def no_other_traffic(said: str) -> bool:
-    """Whether the normalised text says there is no other road user about (no background traffic)."""
-    return _NO_OTHERS.search(said) is not None
+    """Whether the normalised text says there is no other road user about (no background traffic), or
+    asks for none."""
+    return _NO_OTHERS.search(said) is not None or _LEFT_OUT.search(said) is not None
 
 
 #: "barely any traffic", "not much traffic", "only a handful of cars": a small quantity of other traffic.
@@ -324,7 +381,7 @@ _TRAFFIC_NOTE = re.compile(
 )
 #: Traffic said of the road ("the motorway was heavy", "traffic was moderate").
 _SAID_OF_ROAD = re.compile(
-    r"\b(?:traffic(?: volumes?| levels?| flows?)?|motorway|road|roads|street|streets|highway)"
+    r"\b(?:traffic(?: volumes?| levels?| flows?)?|motorway|road|roads|street|streets|highway|circulation)"
     r" (?:is|was|were|are|being|looked|seemed) (?:very |quite |fairly |pretty |"
     r"really )?(light|moderate|heavy|busy|quiet|dense|sparse|empty)\b"
 )
@@ -336,11 +393,16 @@ _DEGREE_OF_TRAFFIC = re.compile(
     r"((?: (?!(?:and|or|but|with|of|in|on|the|a|rain|snow|fog|drizzle|mist|wind)\b)[a-z-]+){0,2}) traffic\b"
     r"(?! (?:lights?|signals?|islands?|cones?|calming|control|police|wardens?|lanes?|cameras?)\b)"
 )
+#: A degree of the traffic said by a noun of its amount ("light volumes", "moderate density"), not of a
+#: vehicle ("a heavy lorry") or the weather ("light rain").
+_DEGREE_OF_VOLUME = re.compile(
+    r"\b(light|moderate|heavy|dense|sparse|low) (?:traffic )?(?:volumes?|density|densities|flows?)\b"
+)
 #: What each word of the patterns above says of the traffic; a queue is heavy traffic.
 _DENSITY_WORDS = {"light": "light", "sparse": "light", "quiet": "light", "moderate": "moderate", "heavy": "heavy",
                   "busy": "heavy", "dense": "heavy", "empty": "none", "none": "none", "zero": "none",
                   "slow": "heavy", "queuing": "heavy", "queueing": "heavy", "crawling": "heavy",
-                  "stationary": "heavy"}  # fmt: skip
+                  "stationary": "heavy", "low": "light"}  # fmt: skip
 
 
 def density(said: str, read: str | None = None) -> str | None:
@@ -363,7 +425,10 @@ def density(said: str, read: str | None = None) -> str | None:
     if m is not None:
         return _DENSITY_WORDS[m.group(1)]
     m = _DEGREE_OF_TRAFFIC.search(said_of_traffic)
-    if m is not None and m.group(2):  # (a degree directly before "traffic" is the lexicon's to read)
+    if m is not None and (m.group(2) or read is None):  # (a degree right before "traffic": the lexicon's first)
+        return _DENSITY_WORDS[m.group(1)]
+    m = _DEGREE_OF_VOLUME.search(said_of_traffic)
+    if m is not None and read is None:
         return _DENSITY_WORDS[m.group(1)]
     if read == "none" and _NOT_TRAFFIC.search(said) and not _NONE_WORDS.search(said_of_traffic):
         return None
@@ -565,3 +630,29 @@ def lanes_at_least(said: str) -> int | None:
     numbers = [int(w) if w.isdigit() else _WORD[w] for w in _LANE_NUMBER.findall(said)]
     fewest = max([n for n in numbers if 1 <= n <= 6] + [3 if _MIDDLE_LANE.search(said) else 0])
     return fewest or None
+
+
+#: Running a red light ("ran the red", "blew a red light", "jumped the lights"): signals stand at a
+#: junction, unless a crossing for people on foot is named, whose lights they are.
+_RED_RUN = re.compile(
+    r"\b(?:ran|runs|run|running|blew|blows|blown|blowing|jumped|jumps|jumping|went through|goes through|going through"
+    r"|shot through|shoots through|sailed through|ignored|ignores) (?:the|a|its|his|her|their) "
+    r"(?:red|red light|red lights|lights|light)\b"
+)
+#: Lights named by their street ("at the Harbour Rd lights"), in the original text.
+_NAMED_LIGHTS = re.compile(r"\b(?i:at|by|near) the (?:[A-Z0-9][\w'.]* ){1,3}(?:lights|signals)\b")
+#: Two streets written with a slash ("Queen/Albert", "4TH/MARKET", "Elm St / High St"), in the original text:
+#: where they cross. Both sides start with a capital or a street number; units ("km/h") and shorthand
+#: ("w/", "m/c") are lower case.
+_SLASHED_STREETS = re.compile(
+    r"(?<![\w/])(?:[A-Z][A-Za-z]+|\d+(?:st|nd|rd|th|ST|ND|RD|TH))(?: (?:St|Rd|Ave|Street|Road|Avenue))?"
+    r" ?/ ?(?:[A-Z][A-Za-z]+|\d+(?:st|nd|rd|th|ST|ND|RD|TH))\b"
+)
+
+
+def signalled_junction(text: str, said: str) -> bool:
+    """Whether the text puts the scene at a junction by its signals or its streets: a red light run
+    (no foot crossing named), lights named by their street, or two streets written with a slash."""
+    if _RED_RUN.search(said) and not set(said.split()) & (_FOOT_CROSSINGS | {"crossing"}):
+        return True
+    return _NAMED_LIGHTS.search(text) is not None or _SLASHED_STREETS.search(text) is not None
