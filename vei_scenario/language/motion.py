@@ -419,7 +419,10 @@ def into_the_ego_lane(clauses: list, tokens: list[str]) -> list:
             lane_change = m.value[0] == "change_lane" and _ends_in_front_of_the_ego(kept, k)
             from_the_side = m.value[0] in _OUT_OF_A_LANE and _from_the_side(kept, k, earlier)
             out_in_front = from_the_side and (_ends_in_front_of_the_ego(kept, k) or _into_the_road(tokens, m.end))
-            if _into_ego_lane(tokens, m.end) or lane_change or out_in_front:
+            phrase_end = m.end
+            if m.words.split()[-1] in ("into", "onto") and not _from_the_side(kept, k, earlier):
+                phrase_end -= 1  # ("swerves into my lane": a cut-in; from the kerb, the lane change from there)
+            if _into_ego_lane(tokens, phrase_end) or lane_change or out_in_front:
                 kept[k] = replace(m, value=("cut_in", {x: v for x, v in m.value[1].items() if x != "direction"}))
         earlier.extend(mentions)
         out.append((link, kept))
@@ -938,6 +941,93 @@ def into_a_lane(clauses: list, tokens: list[str]) -> list:
     return out
 
 
+def out_of_the_ego_lane(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a road user said to be in front of the ego ("the car ahead of me", "the van in
+    front of us") that moves into another lane ("dives into the next lane", "moves into the outside
+    lane") read as changing lanes out of the ego's lane: it is in the ego's lane, so the lane it goes
+    into is another, and only a move into the ego's lane (or ending in front of it) is a cut-in. A
+    road user said in a lane of its own ("a van in the left lane moves into the next lane") keeps its
+    reading: from beside the ego the next lane may be the ego's."""
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k, m in enumerate(kept):
+            if m.slot != "behaviour" or m.value[0] not in ("cut_in", "cross_in_front"):
+                continue
+            j = m.end - (m.words.split()[-1] in ("into", "onto"))
+            while j < len(tokens) and tokens[j] in _ON_THE_WAY:
+                j += 1  # ("scoots across into the next lane")
+            if tokens[j : j + 1] not in (["into"], ["onto"]) or _ends_in_front_of_the_ego(kept, k):
+                continue
+            lane = _lane_after(tokens, j + 1)
+            if lane is None or lane[1] or _before_the_ego(tokens, lane[0]):
+                continue  # (no lane, or the ego's: "into my lane", "into the next lane in front of me")
+            subject = _subject_before(kept[:k])
+            if subject is None or subject.value == "pedestrian":
+                continue  # (a walker has no lane to change: its move across is a crossing)
+            at = kept.index(subject)
+            placed = [x for x in kept[at + 1 : k] if x.slot in ("relation", "lane_side", "side", "kerb")]
+            if placed and all(x.slot == "relation" and x.value == "ahead" for x in placed):
+                kept[k] = replace(m, value=("change_lane", {}))
+        out.append((link, kept))
+    return out
+
+
+def _verb_into_a_lane(tokens: list[str], j: int, ego_lanes: set[str]) -> tuple[int, bool] | None:
+    """Where the words end that say the verb at ``tokens[j]`` moves into a lane ("jinks out into lane
+    2", "nips over into the next lane"), and whether that lane is the ego's; None if they do not. The
+    verb is any inflected verb: the lane it goes into says the move."""
+    said = lemmas(tokens[j])
+    verbs = set(said.get("VERB", ()))
+    unknown = not said and tokens[j].isalpha() and tokens[j].endswith(("s", "ed"))  # ("jinks": a verb by its place)
+    if not (verbs or unknown) or verbs & {"be", "have", "do"} or tokens[j] in verbs or tokens[j].endswith("ing"):
+        return None  # (no verb; a bare form or a participle: "lane" after them is where, not where to)
+    k = j + 1
+    while k < len(tokens) and tokens[k] in _ON_THE_WAY:
+        k += 1
+    if k >= len(tokens) or tokens[k] not in ("into", "onto"):
+        return None
+    lane = _lane_after(tokens, k + 1)
+    if lane is None:
+        return None
+    end, own, number = lane
+    return end, bool(own or (number and number in ego_lanes) or _before_the_ego(tokens, end))
+
+
+def into_another_lane(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a verb the reader holds as no behaviour whose destination is a lane ("he jinks
+    out into lane 2", "the lorry nips over into the next lane") read as the move into that lane: a
+    cut-in into the ego's lane, else a lane change. Only the road user the clause is about, named
+    before the verb and not the ego, is read so."""
+    ego_lanes = _ego_lanes(clauses, tokens)
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        if not kept:
+            out.append((link, kept))
+            continue
+        for j in range(kept[0].start, min(max(x.end for x in kept), len(tokens))):
+            at = next((x for x in kept if x.start <= j < max(x.end, x.start + 1)), None)
+            if at is not None:
+                continue
+            before = [x for x in kept if x.start < j]
+            subject = _subject_before(before)
+            if subject is None or any(x.slot == "behaviour" and x.start > subject.start for x in before):
+                continue  # (no road user, or one whose verb is read already)
+            said = _verb_into_a_lane(tokens, j, ego_lanes)
+            if said is None:
+                continue
+            end, ours = said
+            move = ("cut_in" if ours else "change_lane", {})
+            new = replace(subject, slot="behaviour", value=move, words=tokens[j], start=j, end=j + 1,
+                          prev=tokens[j - 1] if j else "", next_=tokens[j + 1] if j + 1 < len(tokens) else "",
+                          det="", owners=())  # fmt: skip
+            kept.insert(kept.index(before[-1]) + 1, new)
+            break
+        out.append((link, kept))
+    return out
+
+
 #: Mentions that may stand between a slowing and the stop it ends in ("slows, and stops", "eases off
 #: gently and pulls up").
 _BETWEEN_SLOWING_AND_STOP = frozenset(("conj", "punct", "criticality", "speed_word"))
@@ -1194,7 +1284,9 @@ def chains(clauses: list, tokens: list[str]) -> list:
     what the weather does as no one's behaviour (:func:`weather_not_behaviour`), "makes a left" as
     turning left (:func:`a_left_or_a_right`), a move across made to turn as the turn
     (:func:`across_to_turn`); and who stands in the way, for a cut-out (:func:`parked_in_the_lane`,
-    :func:`there_is_a_new_one`); "no room to stop" as nobody's stop (:func:`room_to_act_not_behaviour`); a stop
+    :func:`there_is_a_new_one`), a lead's move into another lane as a lane change
+    (:func:`out_of_the_ego_lane`), any verb into a lane as that move (:func:`into_another_lane`);
+    "no room to stop" as nobody's stop (:func:`room_to_act_not_behaviour`); a stop
     made abruptly as a sudden stop (:func:`hard_stops`); one coming along in the ego's lane as coming
     at it (:func:`coming_in_the_ego_lane`); a swerve round the ego as going on past it
     (:func:`round_the_ego`)."""
@@ -1207,7 +1299,8 @@ def chains(clauses: list, tokens: list[str]) -> list:
         passes_while_the_ego_yields(follows_the_ego(on_the_ego_tail(clauses, tokens), tokens))
     )
     clauses = round_the_ego(passing_in_front(out_into_the_road(clauses, tokens), tokens), tokens)
-    return slowing_into_a_stop(lets_the_ego_go(into_a_lane(clauses, tokens), tokens))
+    clauses = out_of_the_ego_lane(into_a_lane(into_another_lane(clauses, tokens), tokens), tokens)
+    return slowing_into_a_stop(lets_the_ego_go(clauses, tokens))
 
 
 #: Verbs (lemmas) of a sudden move aside.
@@ -1887,3 +1980,33 @@ def on_the_ego_tail(clauses: list, tokens: list[str]) -> list:
             break
         out.append((link, kept))
     return out
+
+
+#: What a road user that stops in the lane does: its first behaviour, before anything else.
+_STOPS_THERE = frozenset(("stop", "sudden_stop"))
+#: Where a road user in the ego's lane (or not placed beside it) is said to be.
+_IN_THE_LANE = (None, "ahead", "behind")
+
+
+def stops_in_the_lane(spec: ActorSpec, specs: list[ActorSpec]) -> bool:
+    """Whether ``spec`` stands in the lane a lead may swerve out of, revealing it (one of ``specs``,
+    the reading's road users): it stands there (no speed), or its first act is to stop there ("a
+    lorry that has braked to a halt", "a coach ahead of it has stopped dead"). What comes to a stop
+    in the lane is as much in the way of the ego, once the lead swerves round it, as what was parked
+    there; only one other road user of the reading can swerve round it."""
+    if spec.relation not in _IN_THE_LANE:
+        return False
+    if spec.speed_mps == 0.0:
+        return True
+    first = spec.behaviours[0][0] if spec.behaviours else None
+    return first in _STOPS_THERE and spec.speed_mps is None and len(specs) > 1
+
+
+def standing_still(spec: ActorSpec) -> list:
+    """The behaviours of the road user a lead swerves round: it stands where it stopped, so a plain
+    going on (no verb of its own said) or its stop is a stop there (the generator puts it at rest)."""
+    if all(b[0] in ("keep_going", *_STOPS_THERE) for b in spec.behaviours):
+        crit = next((b[2] for b in spec.behaviours if b[2]), None)
+        link = spec.behaviours[0][3] if spec.behaviours else "sequence"
+        return [("stop", {}, crit, link)]
+    return spec.behaviours

@@ -2438,8 +2438,9 @@ def _parked(actors: list[_Actor], specs: list[ActorSpec]) -> None:
 def _cut_outs(specs: list[ActorSpec]) -> None:
     """A vehicle ahead that swerves out of the lane while something stands in it (or "swerves round"
     it) reveals that to the ego: a cut-out, with the standing actor as its obstacle. Without
-    anything standing, a swerve out is a lane change."""
-    standing = [k for k, s in enumerate(specs) if s.speed_mps == 0.0 and s.relation in (None, "ahead", "behind")]
+    anything standing, a swerve out is a lane change. A road user in the lane that stops (brakes to
+    a standstill) stands there as well (:func:`motion.stops_in_the_lane`)."""
+    standing = [k for k, s in enumerate(specs) if motion.stops_in_the_lane(s, specs)]
     for k, s in enumerate(specs):
         if not standing or not s.behaviours or s.kind not in VEHICLES or k in standing:
             continue
@@ -2451,6 +2452,7 @@ def _cut_outs(specs: list[ActorSpec]) -> None:
             s.behaviours = [("cut_out", direction, crit, link)] + s.behaviours[1:]
             s.relation, s.obstacle = "ahead", standing[0]
             specs[standing[0]].relation = "ahead"
+            specs[standing[0]].behaviours = motion.standing_still(specs[standing[0]])
     for s in specs:  # a swerve with nothing to swerve round is a lane change
         if s.obstacle is None:
             s.behaviours = [("change_lane", *b[1:]) if b[0] == "cut_out" else b for b in s.behaviours]
