@@ -97,3 +97,99 @@ def test_a_participle_before_a_lane_is_where_it_goes_not_a_move():
 )
 def test_a_swerve_into_the_ego_lane_is_a_cut_in(text):
     assert [names for _, _, names in _actors(text)] == [["cut_in"]]
+
+
+# The doer of a passive verb is the noun phrase after "by", whatever modifies its noun.
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was overtaken by a white van.",
+        "We got overtaken by some big old lorry at 70 mph.",
+        "Yesterday I was passed by a silver hatchback on the bypass.",
+    ],
+)
+def test_the_doer_of_a_passive_overtake_is_the_noun_phrase_after_by(text):
+    ((_, relation, names),) = _actors(text)
+    assert names == ["overtake"] and relation in (None, "behind")
+
+
+def test_a_noun_after_by_a_verb_is_no_doer_of_a_passive():
+    assert all(names != ["overtake"] for _, _, names in _actors("I was overtaken by the ego near a white van."))
+
+
+# A verb + "in" that ends in front of the ego is a cut-in: "in" is into the lane, in front of the ego
+# its lane.
+@pytest.mark.parametrize(
+    "text",
+    [
+        "The van swings in about 5 metres in front of me.",
+        "A car tucks in right in front of us.",
+        "The estate car nips back in just ahead of me.",
+    ],
+)
+def test_a_verb_in_ending_in_front_of_the_ego_is_a_cut_in(text):
+    ((_, _, names),) = _actors(text)
+    assert names == ["cut_in"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "The van swings in behind me.",
+        "The van pulled in at the bus stop in front of me.",
+    ],
+)
+def test_a_verb_in_ending_elsewhere_is_no_cut_in(text):
+    assert all("cut_in" not in names for _, _, names in _actors(text))
+
+
+# Going past on the wrong side of the road is how an overtake is made, not driving the wrong way.
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A car overtook us on the wrong side of the road.",
+        "A van comes past on the wrong side of the road and swings in about 5 metres in front of me.",
+        "On the hill a lorry passed me on the wrong side of the road.",
+    ],
+)
+def test_passing_on_the_wrong_side_of_the_road_is_an_overtake(text):
+    ((_, relation, names),) = _actors(text)
+    assert names[0] == "overtake" and "wrong_way" not in names and relation in (None, "behind")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A car came round the bend on the wrong side of the road.",
+        "A scooter rider on the wrong side of the road rides straight at me.",
+    ],
+)
+def test_going_along_on_the_wrong_side_of_the_road_stays_the_wrong_way(text):
+    ((_, _, names),) = _actors(text)
+    assert names == ["wrong_way"]
+
+
+# The lane the ego is said to be in, by its name, is the ego's lane: a move into it is a cut-in.
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was in the left lane at 30 mph when a lorry in the right lane moved into the left lane.",
+        "We were in the right lane when a coach in the left lane swerved into the right lane.",
+        "I'm in the nearside lane doing 40; a tipper in the offside lane shifts into the nearside lane.",
+    ],
+)
+def test_a_move_into_the_lane_the_ego_is_said_to_be_in_is_a_cut_in(text):
+    ((_, relation, names),) = _actors(text)
+    assert names == ["cut_in"] and relation in ("left", "right")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was in the left lane at 30 mph when a lorry moved into the right lane.",
+        "I'm in the left lane at 70 km/h. Further ahead a lorry in the right lane moves over to the left lane.",
+    ],
+)
+def test_a_move_into_another_lane_or_far_ahead_is_a_lane_change(text):
+    ((_, _, names),) = _actors(text)
+    assert names == ["change_lane"]

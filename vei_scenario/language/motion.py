@@ -1285,12 +1285,16 @@ def chains(clauses: list, tokens: list[str]) -> list:
     turning left (:func:`a_left_or_a_right`), a move across made to turn as the turn
     (:func:`across_to_turn`); and who stands in the way, for a cut-out (:func:`parked_in_the_lane`,
     :func:`there_is_a_new_one`), a lead's move into another lane as a lane change
-    (:func:`out_of_the_ego_lane`), any verb into a lane as that move (:func:`into_another_lane`);
+    (:func:`out_of_the_ego_lane`), a verb + "in" ending in front of the ego as a cut-in
+    (:func:`in_in_front_of_the_ego`), passing on the wrong side as an overtake
+    (:func:`overtakes_on_the_wrong_side`), a move into the lane the ego is said to be in as a cut-in
+    (:func:`into_the_lane_the_ego_is_in`), any verb into a lane as that move (:func:`into_another_lane`);
     "no room to stop" as nobody's stop (:func:`room_to_act_not_behaviour`); a stop
     made abruptly as a sudden stop (:func:`hard_stops`); one coming along in the ego's lane as coming
     at it (:func:`coming_in_the_ego_lane`); a swerve round the ego as going on past it
     (:func:`round_the_ego`)."""
-    clauses = right_at_the_ego(the_wrong_side_of(clauses), tokens)
+    clauses = right_at_the_ego(overtakes_on_the_wrong_side(the_wrong_side_of(clauses)), tokens)
+    clauses = in_in_front_of_the_ego(clauses, tokens)
     clauses = hard_stops(weather_not_behaviour(room_to_act_not_behaviour(clauses, tokens)), tokens)
     clauses = coming_from_in_front(moving_out_to_pass(a_left_or_a_right(clauses, tokens), tokens), tokens)
     clauses = across_to_turn(turning_to_a_side(clauses, tokens))
@@ -1300,6 +1304,7 @@ def chains(clauses: list, tokens: list[str]) -> list:
     )
     clauses = round_the_ego(passing_in_front(out_into_the_road(clauses, tokens), tokens), tokens)
     clauses = out_of_the_ego_lane(into_a_lane(into_another_lane(clauses, tokens), tokens), tokens)
+    clauses = into_the_lane_the_ego_is_in(clauses, tokens)
     return slowing_into_a_stop(lets_the_ego_go(clauses, tokens))
 
 
@@ -2004,9 +2009,141 @@ def stops_in_the_lane(spec: ActorSpec, specs: list[ActorSpec]) -> bool:
 
 def standing_still(spec: ActorSpec) -> list:
     """The behaviours of the road user a lead swerves round: it stands where it stopped, so a plain
-    going on (no verb of its own said) or its stop is a stop there (the generator puts it at rest)."""
-    if all(b[0] in ("keep_going", *_STOPS_THERE) for b in spec.behaviours):
+    going on (no verb of its own said) is a stop there (the generator puts it at rest); a stop said
+    as sudden stays so."""
+    if spec.behaviours and all(b[0] == "keep_going" for b in spec.behaviours):
         crit = next((b[2] for b in spec.behaviours if b[2]), None)
         link = spec.behaviours[0][3] if spec.behaviours else "sequence"
         return [("stop", {}, crit, link)]
     return spec.behaviours
+
+
+#: Words that end a noun phrase's left edge: what stands before them is no modifier of the noun.
+_PHRASE_EDGE = frozenset((".", ",", ";", ":", "!", "?", "and", "or", "but", "then"))
+
+
+def after_by(tokens: list[str], i: int) -> bool:
+    """Whether the noun at ``tokens[i]`` heads a noun phrase led by "by" ("by a van", "by a white
+    van", "by some big old lorry"): the doer of a passive verb said before it ("I was overtaken by a
+    white van" is the van's overtake). The words between are its determiner and modifiers: words the
+    lemma table holds as adjectives, or holds not at all (a make, a colour it lacks)."""
+    j = i - 1
+    while j >= 0 and i - j <= 4 and tokens[j] not in _PHRASE_EDGE and tokens[j] != "by":
+        said = lemmas(tokens[j])
+        if tokens[j] not in _DETERMINERS | {"some", "this", "that"} and said and "ADJ" not in said:
+            return False
+        j -= 1
+    return j >= 0 and tokens[j] == "by"
+
+
+#: Words that may stand between "in" and "in front of" the ego: how far, how exactly ("swings in
+#: about 5 metres in front of me", "tucks in right in front of us").
+_HOW_FAR_IN = frozenset(("about", "around", "roughly", "some", "only", "barely", "maybe", "approx", "approximately",
+                         "m", "metres", "meters", "metre", "meter", "feet", "foot", "ft", "yards", "a", "few",
+                         "couple", "of", "car", "lengths", "length"))  # fmt: skip
+
+
+def _in_before_the_ego(tokens: list[str], j: int) -> bool:
+    """Whether "in" (or "back in") at ``tokens[j]`` is followed, past how far, by "in front of" /
+    "ahead of" the ego: the particle says into the lane, the rest where in it."""
+    if tokens[j : j + 2] == ["back", "in"]:
+        j += 1
+    if tokens[j : j + 1] != ["in"]:
+        return False
+    k = j + 1
+    while k < len(tokens) and k - j <= 6 and (tokens[k] in _HOW_FAR_IN or tokens[k].replace(".", "").isdigit()):
+        k += 1
+    return _before_the_ego(tokens, k)
+
+
+def in_in_front_of_the_ego(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a verb + "in" said to end in front of the ego ("swings in about 5 metres in
+    front of me", "tucks in right in front of us", "nips back in just ahead of me") read as a cut-in,
+    whatever the verb: "in" is into the lane, and in front of the ego it is the ego's lane. Only a
+    verb of the road user the clause is about, not the ego's, is read so."""
+
+    def rule(k: int, m, mentions: list):
+        plain = m.slot == "unknown_verb" or (m.slot == "behaviour" and m.value[0] in _PLAIN_MOVES)
+        if not plain or not _in_before_the_ego(tokens, m.end):
+            return None
+        if _subject_before(mentions[:k]) is None:
+            return None
+        return replace(m, slot="behaviour", value=("cut_in", {}))
+
+    return _rewrite(clauses, rule)
+
+
+def overtakes_on_the_wrong_side(clauses: list) -> list:
+    """``clauses`` without "on the wrong side of the road" said right after an overtake ("came past
+    on the wrong side of the road", "overtook us on the wrong side of the road"): going past on the
+    other side of the road is how an overtake is made, not a road user driving the wrong way."""
+    out = []
+    for link, mentions in clauses:
+        kept = []
+        for m in mentions:
+            before = next((x for x in reversed(kept) if not (x.slot == "actor" and x.value == "ego")), None)
+            if m.slot == "wrong_way" and (m.prev == "on" or m.words.startswith("on ")) and passes(before):
+                continue
+            kept.append(m)
+        out.append((link, kept))
+    return out
+
+
+#: Moves that, into the lane the ego is said to be in, are a cut-in.
+_INTO_THE_EGO_NAMED_LANE = frozenset(("change_lane", "keep_going", "cut_in"))
+
+
+def _the_ego_named_lanes(clauses: list) -> set:
+    """The sides of the lanes the ego is said to be in ("I was in the left lane", "the claimant, in the
+    nearside lane, ..."): a lane said right after the ego is named, before any other road user."""
+    out: set = set()
+    for _, mentions in clauses:
+        owner = None
+        for m in mentions:
+            if m.slot in ("actor", "pronoun"):
+                owner = m.value
+            elif m.slot == "lane_side" and owner == "ego" and m.value in ("left", "right", "middle"):
+                out.add(m.value)
+    return out
+
+
+#: Words that put a road user far in front of the ego ("further ahead", "well ahead", "far ahead").
+_FAR = frozenset(("further", "farther", "well", "far", "way"))
+
+
+def _well_clear(mentions: list) -> bool:
+    """Whether the clause says its move is made far from the ego: its road user well ahead ("further
+    ahead", "far ahead") or the move well clear (a safe manner said of it). A cut-in is a move in
+    close in front of the ego; into its lane far off it is only a lane change."""
+    far = any(m.slot == "relation" and m.value == "ahead" and set(m.words.split()) & _FAR for m in mentions)
+    return far or any(m.slot == "criticality" and m.value == "safe" for m in mentions)
+
+
+def into_the_lane_the_ego_is_in(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a road user's move into the lane the ego was said to be in, by that lane's
+    name ("I was in the left lane ... a lorry in the right lane moved into the left lane"), read as a
+    cut-in; into any other lane it named, as a lane change ("... a lorry moved into the right lane").
+    The ego's lane said by name is the ego's lane as much as "my lane" is."""
+    ego_lanes = _the_ego_named_lanes(clauses)
+    if len(ego_lanes) != 1:
+        return clauses  # (no lane said of the ego, or two: nothing to compare with)
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k, m in enumerate(kept[:-1]):
+            nxt = kept[k + 1]
+            if m.slot != "behaviour" or m.value[0] not in _INTO_THE_EGO_NAMED_LANE or nxt.slot != "toward":
+                continue
+            lane = "lane" in tokens[nxt.start : nxt.end] or "lanes" in tokens[nxt.start : nxt.end]
+            into = m.words.split()[-1] in ("into", "onto", "the") or tokens[m.end : m.end + 1] in (["into"], ["onto"])
+            if not (lane and into) or _subject_before(kept[:k]) is None:
+                continue
+            ours = nxt.value in ego_lanes
+            if ours and _well_clear(kept):
+                continue  # ("further ahead a lorry moves over to my lane, well clear": a lane change far off)
+            if ours and m.value[0] != "cut_in":
+                kept[k] = replace(m, value=("cut_in", {}))
+            elif not ours and m.value[0] == "cut_in":
+                kept[k] = replace(m, value=("change_lane", {}))
+        out.append((link, kept))
+    return out

@@ -1531,7 +1531,7 @@ def _read(text: str) -> Reading:
                     for x in pair:
                         x.group = pair
                     joined.extend(pair)
-                if m.prev == "by" and passive and isinstance(who, _Actor):
+                if passive and isinstance(who, _Actor) and motion.after_by(scanned, m.start):
                     for pm in passive:  # "the AV is tailgated by a sports car": the car tailgates
                         _apply(pm, who, r, link, added)
                     passive = []
