@@ -193,3 +193,21 @@ def test_a_move_into_the_lane_the_ego_is_said_to_be_in_is_a_cut_in(text):
 def test_a_move_into_another_lane_or_far_ahead_is_a_lane_change(text):
     ((_, _, names),) = _actors(text)
     assert names == ["change_lane"]
+
+
+# A road user coming head-on in the ego's lane that then goes past the ego meets it: no overtake.
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A scooter rider came towards me in my lane and squeezed past me.",
+        "A cyclist riding the wrong way in my lane passed me with a foot to spare.",
+        "A moped came at us head-on in our lane and shot past us.",
+    ],
+)
+def test_going_past_the_ego_after_coming_head_on_is_still_the_wrong_way(text):
+    ((_, _, names),) = _actors(text)
+    assert names == ["wrong_way"]
+
+
+def test_an_overtake_behind_the_ego_in_its_lane_stays_an_overtake():
+    assert _actors("A car behind me in my lane overtook me.") == [("car", "behind", ["overtake"])]

@@ -81,15 +81,19 @@ def in_the_ego_lane(words: str) -> bool:
 _HEAD_ON_MOVES = frozenset(("keep_going", "along_road", "cut_in", "change_lane", "wrong_way", "keep_lane"))
 
 
-def comes_head_on(names: list[str], wrong_way: bool, said: set) -> bool:
+def comes_head_on(names: list[str], wrong_way: bool, said: set, passes_another: bool = True) -> bool:
     """Whether a road user with behaviours ``names``, said to go the wrong way (``wrong_way``) and
     said the relations ``said``, is driving or riding head-on in the ego's lane: against the traffic
     (the wrong way, or coming towards the ego) and in the ego's lane (``"in_ego_lane"``), or the wrong
     way and towards the ego. Its path is the wrong-way one whatever plain verb says it goes, and
-    wherever the ego is (a roundabout, a junction); a turn or an overtake is a path of its own."""
+    wherever the ego is (a roundabout, a junction); a turn is a path of its own, and so is an
+    overtake of another road user (``passes_another``). Going past the ego, or "passing each other",
+    is how a road user coming head-on meets it ("squeezed past me", "passed 1 m off our left side"):
+    no overtake, as it never drove the ego's way."""
     against = wrong_way or "oncoming" in said
     placed = "in_ego_lane" in said or (wrong_way and "oncoming" in said)
-    return against and placed and bool(names) and set(names) <= _HEAD_ON_MOVES
+    moves = _HEAD_ON_MOVES if passes_another else _HEAD_ON_MOVES | {"overtake"}
+    return against and placed and bool(names) and set(names) <= moves
 
 
 def manner_compound(tokens: list[str], i: int, behaviour_at) -> list[str] | None:

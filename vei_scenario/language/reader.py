@@ -2048,7 +2048,8 @@ def _read(text: str) -> Reading:
             a.speed_mps = -V.SPEED_WORDS["fast"]
         spec.distance_m = a.distance_m
         spec.speed_mps = 0.0 if a.stationary and a.speed_mps is None else a.speed_mps
-        _specialise(a, spec, junction, sides.drives_on_left(scanned, text), turn_across_side(text))
+        passes_another = any(x.object_of is a for x in actors)  # ("pulled out to pass a truck": its own overtake)
+        _specialise(a, spec, junction, sides.drives_on_left(scanned, text), turn_across_side(text), passes_another)
         r.actors.append(spec)
     for a, spec in zip(actors, r.actors):  # what an oncoming car overtakes comes towards the ego too
         k = next((k for k, x in enumerate(actors) if x is a.object_of), None)
@@ -2298,7 +2299,14 @@ RIDERS = ("bicycle", "e-scooter")
 PASSIVE_AUXILIARIES = {"is", "are", "was", "were", "be", "been", "being", "get", "gets", "got", "getting"}
 
 
-def _specialise(a: _Actor, spec: ActorSpec, junction: bool, left_hand: bool = False, across: str = "left") -> None:
+def _specialise(
+    a: _Actor,
+    spec: ActorSpec,
+    junction: bool,
+    left_hand: bool = False,
+    across: str = "left",
+    passes_another: bool = True,
+) -> None:
     """The behaviours that what was said around the verbs makes specific: a left turn by someone
     coming the other way is a turn across the ego's path; pulling out of a side road is turning into
     the ego's road; a vehicle driving at the ego in its lane is a wrong-way driver; a walker or rider
@@ -2321,7 +2329,7 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool, left_hand: bool = Fa
         same = ("cut_in", "cross_in_front", "run_red_light", "keep_going")  # ("... and crossed into our path")
         spec.behaviours = [("turn_across", {}, crit, link)] + [b for b in spec.behaviours[1:] if b[0] not in same]
         return
-    if a.kind != "pedestrian" and motion.comes_head_on(names, a.wrong_way, a.said):
+    if a.kind != "pedestrian" and motion.comes_head_on(names, a.wrong_way, a.said, passes_another):
         # (a vehicle seen coming from the other way drifts over into the ego's lane; a rider rides in it)
         in_lane = a.kind in RIDERS or sides.starts_in_ego_lane(a.said)
         spec.behaviours = [("wrong_way", {}, crit, link)]
