@@ -211,3 +211,8 @@ def test_going_past_the_ego_after_coming_head_on_is_still_the_wrong_way(text):
 
 def test_an_overtake_behind_the_ego_in_its_lane_stays_an_overtake():
     assert _actors("A car behind me in my lane overtook me.") == [("car", "behind", ["overtake"])]
+
+
+def test_overtaking_others_on_the_wrong_side_of_the_road_stays_the_wrong_way():
+    text = "A moped rider overtook the queue on the wrong side of the road and crashed head-on into a van."
+    assert "wrong_way" in _actors(text)[0][2]

@@ -2078,16 +2078,20 @@ def in_in_front_of_the_ego(clauses: list, tokens: list[str]) -> list:
 
 
 def overtakes_on_the_wrong_side(clauses: list) -> list:
-    """``clauses`` without "on the wrong side of the road" said right after an overtake ("came past
-    on the wrong side of the road", "overtook us on the wrong side of the road"): going past on the
-    other side of the road is how an overtake is made, not a road user driving the wrong way."""
+    """``clauses`` without "on the wrong side of the road" said right after an overtake of the ego or
+    of no one said ("came past on the wrong side of the road", "overtook us on the wrong side of the
+    road"): going past the ego on the other side of the road is how an overtake is made, not a road
+    user driving the wrong way. Overtaking others there ("overtook the queue on the wrong side")
+    puts it head-on to the ego, and stays so."""
     out = []
     for link, mentions in clauses:
         kept = []
         for m in mentions:
             before = next((x for x in reversed(kept) if not (x.slot == "actor" and x.value == "ego")), None)
             if m.slot == "wrong_way" and (m.prev == "on" or m.words.startswith("on ")) and passes(before):
-                continue
+                ego = [x for x in kept if x.slot == "actor" and x.value == "ego" and x.start >= before.end]
+                if m.start - before.end <= sum(x.end - x.start for x in ego):
+                    continue  # (it passes the ego or no one said: "overtook a queue on the wrong side" stays)
             kept.append(m)
         out.append((link, kept))
     return out
