@@ -81,15 +81,19 @@ def in_the_ego_lane(words: str) -> bool:
 _HEAD_ON_MOVES = frozenset(("keep_going", "along_road", "cut_in", "change_lane", "wrong_way", "keep_lane"))
 
 
-def comes_head_on(names: list[str], wrong_way: bool, said: set) -> bool:
+def comes_head_on(names: list[str], wrong_way: bool, said: set, passes_another: bool = True) -> bool:
     """Whether a road user with behaviours ``names``, said to go the wrong way (``wrong_way``) and
     said the relations ``said``, is driving or riding head-on in the ego's lane: against the traffic
     (the wrong way, or coming towards the ego) and in the ego's lane (``"in_ego_lane"``), or the wrong
     way and towards the ego. Its path is the wrong-way one whatever plain verb says it goes, and
-    wherever the ego is (a roundabout, a junction); a turn or an overtake is a path of its own."""
+    wherever the ego is (a roundabout, a junction); a turn is a path of its own, and so is an
+    overtake of another road user (``passes_another``). Going past the ego, or "passing each other",
+    is how a road user coming head-on meets it ("squeezed past me", "passed 1 m off our left side"):
+    no overtake, as it never drove the ego's way."""
     against = wrong_way or "oncoming" in said
     placed = "in_ego_lane" in said or (wrong_way and "oncoming" in said)
-    return against and placed and bool(names) and set(names) <= _HEAD_ON_MOVES
+    moves = _HEAD_ON_MOVES if passes_another else _HEAD_ON_MOVES | {"overtake"}
+    return against and placed and bool(names) and set(names) <= moves
 
 
 def manner_compound(tokens: list[str], i: int, behaviour_at) -> list[str] | None:
@@ -495,7 +499,10 @@ def into_the_ego_lane(clauses: list, tokens: list[str]) -> list:
             lane_change = m.value[0] == "change_lane" and _ends_in_front_of_the_ego(kept, k)
             from_the_side = m.value[0] in _OUT_OF_A_LANE and _from_the_side(kept, k, earlier)
             out_in_front = from_the_side and (_ends_in_front_of_the_ego(kept, k) or _into_the_road(tokens, m.end))
-            if _into_ego_lane(tokens, m.end) or lane_change or out_in_front:
+            phrase_end = m.end
+            if m.words.split()[-1] in ("into", "onto") and not _from_the_side(kept, k, earlier):
+                phrase_end -= 1  # ("swerves into my lane": a cut-in; from the kerb, the lane change from there)
+            if _into_ego_lane(tokens, phrase_end) or lane_change or out_in_front:
                 kept[k] = replace(m, value=("cut_in", {x: v for x, v in m.value[1].items() if x != "direction"}))
         earlier.extend(mentions)
         out.append((link, kept))
@@ -1014,6 +1021,93 @@ def into_a_lane(clauses: list, tokens: list[str]) -> list:
     return out
 
 
+def out_of_the_ego_lane(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a road user said to be in front of the ego ("the car ahead of me", "the van in
+    front of us") that moves into another lane ("dives into the next lane", "moves into the outside
+    lane") read as changing lanes out of the ego's lane: it is in the ego's lane, so the lane it goes
+    into is another, and only a move into the ego's lane (or ending in front of it) is a cut-in. A
+    road user said in a lane of its own ("a van in the left lane moves into the next lane") keeps its
+    reading: from beside the ego the next lane may be the ego's."""
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k, m in enumerate(kept):
+            if m.slot != "behaviour" or m.value[0] not in ("cut_in", "cross_in_front"):
+                continue
+            j = m.end - (m.words.split()[-1] in ("into", "onto"))
+            while j < len(tokens) and tokens[j] in _ON_THE_WAY:
+                j += 1  # ("scoots across into the next lane")
+            if tokens[j : j + 1] not in (["into"], ["onto"]) or _ends_in_front_of_the_ego(kept, k):
+                continue
+            lane = _lane_after(tokens, j + 1)
+            if lane is None or lane[1] or _before_the_ego(tokens, lane[0]):
+                continue  # (no lane, or the ego's: "into my lane", "into the next lane in front of me")
+            subject = _subject_before(kept[:k])
+            if subject is None or subject.value == "pedestrian":
+                continue  # (a walker has no lane to change: its move across is a crossing)
+            at = kept.index(subject)
+            placed = [x for x in kept[at + 1 : k] if x.slot in ("relation", "lane_side", "side", "kerb")]
+            if placed and all(x.slot == "relation" and x.value == "ahead" for x in placed):
+                kept[k] = replace(m, value=("change_lane", {}))
+        out.append((link, kept))
+    return out
+
+
+def _verb_into_a_lane(tokens: list[str], j: int, ego_lanes: set[str]) -> tuple[int, bool] | None:
+    """Where the words end that say the verb at ``tokens[j]`` moves into a lane ("jinks out into lane
+    2", "nips over into the next lane"), and whether that lane is the ego's; None if they do not. The
+    verb is any inflected verb: the lane it goes into says the move."""
+    said = lemmas(tokens[j])
+    verbs = set(said.get("VERB", ()))
+    unknown = not said and tokens[j].isalpha() and tokens[j].endswith(("s", "ed"))  # ("jinks": a verb by its place)
+    if not (verbs or unknown) or verbs & {"be", "have", "do"} or tokens[j] in verbs or tokens[j].endswith("ing"):
+        return None  # (no verb; a bare form or a participle: "lane" after them is where, not where to)
+    k = j + 1
+    while k < len(tokens) and tokens[k] in _ON_THE_WAY:
+        k += 1
+    if k >= len(tokens) or tokens[k] not in ("into", "onto"):
+        return None
+    lane = _lane_after(tokens, k + 1)
+    if lane is None:
+        return None
+    end, own, number = lane
+    return end, bool(own or (number and number in ego_lanes) or _before_the_ego(tokens, end))
+
+
+def into_another_lane(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a verb the reader holds as no behaviour whose destination is a lane ("he jinks
+    out into lane 2", "the lorry nips over into the next lane") read as the move into that lane: a
+    cut-in into the ego's lane, else a lane change. Only the road user the clause is about, named
+    before the verb and not the ego, is read so."""
+    ego_lanes = _ego_lanes(clauses, tokens)
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        if not kept:
+            out.append((link, kept))
+            continue
+        for j in range(kept[0].start, min(max(x.end for x in kept), len(tokens))):
+            at = next((x for x in kept if x.start <= j < max(x.end, x.start + 1)), None)
+            if at is not None:
+                continue
+            before = [x for x in kept if x.start < j]
+            subject = _subject_before(before)
+            if subject is None or any(x.slot == "behaviour" and x.start > subject.start for x in before):
+                continue  # (no road user, or one whose verb is read already)
+            said = _verb_into_a_lane(tokens, j, ego_lanes)
+            if said is None:
+                continue
+            end, ours = said
+            move = ("cut_in" if ours else "change_lane", {})
+            new = replace(subject, slot="behaviour", value=move, words=tokens[j], start=j, end=j + 1,
+                          prev=tokens[j - 1] if j else "", next_=tokens[j + 1] if j + 1 < len(tokens) else "",
+                          det="", owners=())  # fmt: skip
+            kept.insert(kept.index(before[-1]) + 1, new)
+            break
+        out.append((link, kept))
+    return out
+
+
 #: Mentions that may stand between a slowing and the stop it ends in ("slows, and stops", "eases off
 #: gently and pulls up").
 _BETWEEN_SLOWING_AND_STOP = frozenset(("conj", "punct", "criticality", "speed_word"))
@@ -1270,11 +1364,17 @@ def chains(clauses: list, tokens: list[str]) -> list:
     what the weather does as no one's behaviour (:func:`weather_not_behaviour`), "makes a left" as
     turning left (:func:`a_left_or_a_right`), a move across made to turn as the turn
     (:func:`across_to_turn`); and who stands in the way, for a cut-out (:func:`parked_in_the_lane`,
-    :func:`there_is_a_new_one`); "no room to stop" as nobody's stop (:func:`room_to_act_not_behaviour`); a stop
+    :func:`there_is_a_new_one`), a lead's move into another lane as a lane change
+    (:func:`out_of_the_ego_lane`), a verb + "in" ending in front of the ego as a cut-in
+    (:func:`in_in_front_of_the_ego`), passing on the wrong side as an overtake
+    (:func:`overtakes_on_the_wrong_side`), a move into the lane the ego is said to be in as a cut-in
+    (:func:`into_the_lane_the_ego_is_in`), any verb into a lane as that move (:func:`into_another_lane`);
+    "no room to stop" as nobody's stop (:func:`room_to_act_not_behaviour`); a stop
     made abruptly as a sudden stop (:func:`hard_stops`); one coming along in the ego's lane as coming
     at it (:func:`coming_in_the_ego_lane`); a swerve round the ego as going on past it
     (:func:`round_the_ego`)."""
-    clauses = right_at_the_ego(the_wrong_side_of(clauses), tokens)
+    clauses = right_at_the_ego(overtakes_on_the_wrong_side(the_wrong_side_of(clauses)), tokens)
+    clauses = in_in_front_of_the_ego(clauses, tokens)
     clauses = hard_stops(weather_not_behaviour(room_to_act_not_behaviour(clauses, tokens)), tokens)
     clauses = coming_from_in_front(moving_out_to_pass(a_left_or_a_right(clauses, tokens), tokens), tokens)
     clauses = across_to_turn(turning_to_a_side(clauses, tokens))
@@ -1284,7 +1384,9 @@ def chains(clauses: list, tokens: list[str]) -> list:
     )
     clauses = round_the_ego(passing_in_front(out_into_the_road(clauses, tokens), tokens), tokens)
     clauses = on_a_foot_crossing(out_of_a_place_then_across(out_across_the_road(clauses, tokens)), tokens)
-    return slowing_into_a_stop(lets_the_ego_go(into_a_lane(clauses, tokens), tokens))
+    clauses = out_of_the_ego_lane(into_a_lane(into_another_lane(clauses, tokens), tokens), tokens)
+    clauses = into_the_lane_the_ego_is_in(clauses, tokens)
+    return slowing_into_a_stop(lets_the_ego_go(clauses, tokens))
 
 
 #: Verbs (lemmas) of a sudden move aside.
@@ -2099,5 +2201,171 @@ def on_the_ego_tail(clauses: list, tokens: list[str]) -> list:
                 + [x for x in kept[at:] if x.start >= end]
             )
             break
+        out.append((link, kept))
+    return out
+
+
+#: What a road user that stops in the lane does: its first behaviour, before anything else.
+_STOPS_THERE = frozenset(("stop", "sudden_stop"))
+#: Where a road user in the ego's lane (or not placed beside it) is said to be.
+_IN_THE_LANE = (None, "ahead", "behind")
+
+
+def stops_in_the_lane(spec: ActorSpec, specs: list[ActorSpec]) -> bool:
+    """Whether ``spec`` stands in the lane a lead may swerve out of, revealing it (one of ``specs``,
+    the reading's road users): it stands there (no speed), or its first act is to stop there ("a
+    lorry that has braked to a halt", "a coach ahead of it has stopped dead"). What comes to a stop
+    in the lane is as much in the way of the ego, once the lead swerves round it, as what was parked
+    there; only one other road user of the reading can swerve round it."""
+    if spec.relation not in _IN_THE_LANE:
+        return False
+    if spec.speed_mps == 0.0:
+        return True
+    first = spec.behaviours[0][0] if spec.behaviours else None
+    return first in _STOPS_THERE and spec.speed_mps is None and len(specs) > 1
+
+
+def standing_still(spec: ActorSpec) -> list:
+    """The behaviours of the road user a lead swerves round: it stands where it stopped, so a plain
+    going on (no verb of its own said) is a stop there (the generator puts it at rest); a stop said
+    as sudden stays so."""
+    if spec.behaviours and all(b[0] == "keep_going" for b in spec.behaviours):
+        crit = next((b[2] for b in spec.behaviours if b[2]), None)
+        link = spec.behaviours[0][3] if spec.behaviours else "sequence"
+        return [("stop", {}, crit, link)]
+    return spec.behaviours
+
+
+#: Words that end a noun phrase's left edge: what stands before them is no modifier of the noun.
+_PHRASE_EDGE = frozenset((".", ",", ";", ":", "!", "?", "and", "or", "but", "then"))
+
+
+def after_by(tokens: list[str], i: int) -> bool:
+    """Whether the noun at ``tokens[i]`` heads a noun phrase led by "by" ("by a van", "by a white
+    van", "by some big old lorry"): the doer of a passive verb said before it ("I was overtaken by a
+    white van" is the van's overtake). The words between are its determiner and modifiers: words the
+    lemma table holds as adjectives, or holds not at all (a make, a colour it lacks)."""
+    j = i - 1
+    while j >= 0 and i - j <= 4 and tokens[j] not in _PHRASE_EDGE and tokens[j] != "by":
+        said = lemmas(tokens[j])
+        if tokens[j] not in _DETERMINERS | {"some", "this", "that"} and said and "ADJ" not in said:
+            return False
+        j -= 1
+    return j >= 0 and tokens[j] == "by"
+
+
+#: Words that may stand between "in" and "in front of" the ego: how far, how exactly ("swings in
+#: about 5 metres in front of me", "tucks in right in front of us").
+_HOW_FAR_IN = frozenset(("about", "around", "roughly", "some", "only", "barely", "maybe", "approx", "approximately",
+                         "m", "metres", "meters", "metre", "meter", "feet", "foot", "ft", "yards", "a", "few",
+                         "couple", "of", "car", "lengths", "length"))  # fmt: skip
+
+
+def _in_before_the_ego(tokens: list[str], j: int) -> bool:
+    """Whether "in" (or "back in") at ``tokens[j]`` is followed, past how far, by "in front of" /
+    "ahead of" the ego: the particle says into the lane, the rest where in it."""
+    if tokens[j : j + 2] == ["back", "in"]:
+        j += 1
+    if tokens[j : j + 1] != ["in"]:
+        return False
+    k = j + 1
+    while k < len(tokens) and k - j <= 6 and (tokens[k] in _HOW_FAR_IN or tokens[k].replace(".", "").isdigit()):
+        k += 1
+    return _before_the_ego(tokens, k)
+
+
+def in_in_front_of_the_ego(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a verb + "in" said to end in front of the ego ("swings in about 5 metres in
+    front of me", "tucks in right in front of us", "nips back in just ahead of me") read as a cut-in,
+    whatever the verb: "in" is into the lane, and in front of the ego it is the ego's lane. Only a
+    verb of the road user the clause is about, not the ego's, is read so."""
+
+    def rule(k: int, m, mentions: list):
+        plain = m.slot == "unknown_verb" or (m.slot == "behaviour" and m.value[0] in _PLAIN_MOVES)
+        if not plain or not _in_before_the_ego(tokens, m.end):
+            return None
+        if _subject_before(mentions[:k]) is None:
+            return None
+        return replace(m, slot="behaviour", value=("cut_in", {}))
+
+    return _rewrite(clauses, rule)
+
+
+def overtakes_on_the_wrong_side(clauses: list) -> list:
+    """``clauses`` without "on the wrong side of the road" said right after an overtake of the ego or
+    of no one said ("came past on the wrong side of the road", "overtook us on the wrong side of the
+    road"): going past the ego on the other side of the road is how an overtake is made, not a road
+    user driving the wrong way. Overtaking others there ("overtook the queue on the wrong side")
+    puts it head-on to the ego, and stays so."""
+    out = []
+    for link, mentions in clauses:
+        kept = []
+        for m in mentions:
+            before = next((x for x in reversed(kept) if not (x.slot == "actor" and x.value == "ego")), None)
+            if m.slot == "wrong_way" and (m.prev == "on" or m.words.startswith("on ")) and passes(before):
+                ego = [x for x in kept if x.slot == "actor" and x.value == "ego" and x.start >= before.end]
+                if m.start - before.end <= sum(x.end - x.start for x in ego):
+                    continue  # (it passes the ego or no one said: "overtook a queue on the wrong side" stays)
+            kept.append(m)
+        out.append((link, kept))
+    return out
+
+
+#: Moves that, into the lane the ego is said to be in, are a cut-in.
+_INTO_THE_EGO_NAMED_LANE = frozenset(("change_lane", "keep_going", "cut_in"))
+
+
+def _the_ego_named_lanes(clauses: list) -> set:
+    """The sides of the lanes the ego is said to be in ("I was in the left lane", "the claimant, in the
+    nearside lane, ..."): a lane said right after the ego is named, before any other road user."""
+    out: set = set()
+    for _, mentions in clauses:
+        owner = None
+        for m in mentions:
+            if m.slot in ("actor", "pronoun"):
+                owner = m.value
+            elif m.slot == "lane_side" and owner == "ego" and m.value in ("left", "right", "middle"):
+                out.add(m.value)
+    return out
+
+
+#: Words that put a road user far in front of the ego ("further ahead", "well ahead", "far ahead").
+_FAR = frozenset(("further", "farther", "well", "far", "way"))
+
+
+def _well_clear(mentions: list) -> bool:
+    """Whether the clause says its move is made far from the ego: its road user well ahead ("further
+    ahead", "far ahead") or the move well clear (a safe manner said of it). A cut-in is a move in
+    close in front of the ego; into its lane far off it is only a lane change."""
+    far = any(m.slot == "relation" and m.value == "ahead" and set(m.words.split()) & _FAR for m in mentions)
+    return far or any(m.slot == "criticality" and m.value == "safe" for m in mentions)
+
+
+def into_the_lane_the_ego_is_in(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a road user's move into the lane the ego was said to be in, by that lane's
+    name ("I was in the left lane ... a lorry in the right lane moved into the left lane"), read as a
+    cut-in; into any other lane it named, as a lane change ("... a lorry moved into the right lane").
+    The ego's lane said by name is the ego's lane as much as "my lane" is."""
+    ego_lanes = _the_ego_named_lanes(clauses)
+    if len(ego_lanes) != 1:
+        return clauses  # (no lane said of the ego, or two: nothing to compare with)
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k, m in enumerate(kept[:-1]):
+            nxt = kept[k + 1]
+            if m.slot != "behaviour" or m.value[0] not in _INTO_THE_EGO_NAMED_LANE or nxt.slot != "toward":
+                continue
+            lane = "lane" in tokens[nxt.start : nxt.end] or "lanes" in tokens[nxt.start : nxt.end]
+            into = m.words.split()[-1] in ("into", "onto", "the") or tokens[m.end : m.end + 1] in (["into"], ["onto"])
+            if not (lane and into) or _subject_before(kept[:k]) is None:
+                continue
+            ours = nxt.value in ego_lanes
+            if ours and _well_clear(kept):
+                continue  # ("further ahead a lorry moves over to my lane, well clear": a lane change far off)
+            if ours and m.value[0] != "cut_in":
+                kept[k] = replace(m, value=("cut_in", {}))
+            elif not ours and m.value[0] == "cut_in":
+                kept[k] = replace(m, value=("change_lane", {}))
         out.append((link, kept))
     return out

@@ -1539,7 +1539,7 @@ def _read(text: str) -> Reading:
                     for x in pair:
                         x.group = pair
                     joined.extend(pair)
-                if m.prev == "by" and passive and isinstance(who, _Actor):
+                if passive and isinstance(who, _Actor) and motion.after_by(scanned, m.start):
                     for pm in passive:  # "the AV is tailgated by a sports car": the car tailgates
                         _apply(pm, who, r, link, added)
                     passive = []
@@ -2060,7 +2060,8 @@ def _read(text: str) -> Reading:
             a.speed_mps = -V.SPEED_WORDS["fast"]
         spec.distance_m = a.distance_m
         spec.speed_mps = 0.0 if a.stationary and a.speed_mps is None else a.speed_mps
-        _specialise(a, spec, junction, sides.drives_on_left(scanned, text), turn_across_side(text))
+        passes_another = any(x.object_of is a for x in actors)  # ("pulled out to pass a truck": its own overtake)
+        _specialise(a, spec, junction, sides.drives_on_left(scanned, text), turn_across_side(text), passes_another)
         r.actors.append(spec)
     for a, spec in zip(actors, r.actors):  # what an oncoming car overtakes comes towards the ego too
         k = next((k for k, x in enumerate(actors) if x is a.object_of), None)
@@ -2324,7 +2325,14 @@ RIDERS = ("bicycle", "e-scooter")
 PASSIVE_AUXILIARIES = {"is", "are", "was", "were", "be", "been", "being", "get", "gets", "got", "getting"}
 
 
-def _specialise(a: _Actor, spec: ActorSpec, junction: bool, left_hand: bool = False, across: str = "left") -> None:
+def _specialise(
+    a: _Actor,
+    spec: ActorSpec,
+    junction: bool,
+    left_hand: bool = False,
+    across: str = "left",
+    passes_another: bool = True,
+) -> None:
     """The behaviours that what was said around the verbs makes specific: a left turn by someone
     coming the other way is a turn across the ego's path; pulling out of a side road is turning into
     the ego's road; a vehicle driving at the ego in its lane is a wrong-way driver; a walker or rider
@@ -2347,7 +2355,7 @@ def _specialise(a: _Actor, spec: ActorSpec, junction: bool, left_hand: bool = Fa
         same = ("cut_in", "cross_in_front", "run_red_light", "keep_going")  # ("... and crossed into our path")
         spec.behaviours = [("turn_across", {}, crit, link)] + [b for b in spec.behaviours[1:] if b[0] not in same]
         return
-    if a.kind != "pedestrian" and motion.comes_head_on(names, a.wrong_way, a.said):
+    if a.kind != "pedestrian" and motion.comes_head_on(names, a.wrong_way, a.said, passes_another):
         # (a vehicle seen coming from the other way drifts over into the ego's lane; a rider rides in it)
         in_lane = a.kind in RIDERS or sides.starts_in_ego_lane(a.said)
         spec.behaviours = [("wrong_way", {}, crit, link)]
@@ -2464,8 +2472,9 @@ def _parked(actors: list[_Actor], specs: list[ActorSpec]) -> None:
 def _cut_outs(specs: list[ActorSpec]) -> None:
     """A vehicle ahead that swerves out of the lane while something stands in it (or "swerves round"
     it) reveals that to the ego: a cut-out, with the standing actor as its obstacle. Without
-    anything standing, a swerve out is a lane change."""
-    standing = [k for k, s in enumerate(specs) if s.speed_mps == 0.0 and s.relation in (None, "ahead", "behind")]
+    anything standing, a swerve out is a lane change. A road user in the lane that stops (brakes to
+    a standstill) stands there as well (:func:`motion.stops_in_the_lane`)."""
+    standing = [k for k, s in enumerate(specs) if motion.stops_in_the_lane(s, specs)]
     for k, s in enumerate(specs):
         if not standing or not s.behaviours or s.kind not in VEHICLES or k in standing:
             continue
@@ -2477,6 +2486,7 @@ def _cut_outs(specs: list[ActorSpec]) -> None:
             s.behaviours = [("cut_out", direction, crit, link)] + s.behaviours[1:]
             s.relation, s.obstacle = "ahead", standing[0]
             specs[standing[0]].relation = "ahead"
+            specs[standing[0]].behaviours = motion.standing_still(specs[standing[0]])
     for s in specs:  # a swerve with nothing to swerve round is a lane change
         if s.obstacle is None:
             s.behaviours = [("change_lane", *b[1:]) if b[0] == "cut_out" else b for b in s.behaviours]
