@@ -49,6 +49,8 @@ FIRST = {
     "language_independent_s.json": ((50, 50, 22, 47), "measured when written"),
     "language_independent_t.json": ((45, 44, 15, 40), "sealed until the reader's last change"),
     "language_independent_u.json": ((45, 45, 21, 42), "sealed until the reader's last change"),
+    "language_independent_v.json": ((50, 50, 13, 47), "sealed for two rounds of reader work"),
+    "language_independent_w.json": ((50, 49, 19, 48), "sealed for two rounds of reader work"),
     "language_independent_x.json": ((50, 49, 15, 45), "sealed for two rounds of reader work"),
     "language_independent_y.json": ((50, 50, 18, 47), "sealed for two rounds of reader work"),
 }
