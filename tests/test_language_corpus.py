@@ -65,7 +65,7 @@ INDEPENDENT = {
     ROOT / "tests" / "data" / "language_independent_t.json": (45, 29),
     ROOT / "tests" / "data" / "language_independent_u.json": (45, 31),
     ROOT / "tests" / "data" / "language_independent_v.json": (50, 17),
-    ROOT / "tests" / "data" / "language_independent_w.json": (49, 21),
+    ROOT / "tests" / "data" / "language_independent_w.json": (50, 21),
     ROOT / "tests" / "data" / "language_independent_x.json": (50, 27),
     ROOT / "tests" / "data" / "language_independent_y.json": (50, 30),
 }

@@ -105,6 +105,24 @@ def test_an_unknown_verb_of_contact_gives_a_default_behaviour_not_a_refusal(text
     assert reading.actors[0].behaviours
 
 
+# A verb the reader has no behaviour for, taking the road user as its object: something was done to it,
+# so it was there, in the ego's way.
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("Nearly flattened a jogger on the school run.", "pedestrian"),
+        ("I nudged a cyclist at the lights this morning.", "bicycle"),
+        ("We almost mowed down a scooter rider outside the station.", "e-scooter"),
+        ("Ego very nearly skittled a delivery van on the bend.", "van"),
+    ],
+    ids=["flattened", "nudged", "mowed-down", "skittled"],
+)
+def test_a_road_user_an_unknown_verb_is_done_to_gets_a_default_behaviour(text, kind):
+    reading = read(text)
+    assert [a.kind for a in reading.actors] == [kind]
+    assert reading.actors[0].behaviours
+
+
 @pytest.mark.parametrize(
     "text",
     ["A child hotfooted it across the road.", "A pensioner legged it over the zebra.", "A kid legged it."],
@@ -170,8 +188,20 @@ def test_formatting_and_codes_round_a_road_user_are_read_past(text, kind):
         ("A tired cyclist.", "behaviour"),
         ("A battered van.", "behaviour"),
         ("A van on a wet Tuesday.", "behaviour"),
+        ("A flattened cyclist.", "behaviour"),
+        ("Photographed: a van.", "behaviour"),
     ],
-    ids=["weather-only", "bike-rack", "nonsense", "only-there", "participle-before", "participle-of-a-van", "no-verb"],
+    ids=[
+        "weather-only",
+        "bike-rack",
+        "nonsense",
+        "only-there",
+        "participle-before",
+        "participle-of-a-van",
+        "no-verb",
+        "participle-after-the-article",
+        "no-article-after-the-verb",
+    ],
 )
 def test_refused_where_no_road_user_or_no_behaviour_is_found(text, missing):
     with pytest.raises(NotUnderstood) as refused:

@@ -2295,7 +2295,29 @@ def _did_something(mentions, tokens: list[str], unused: set[str]) -> bool:
     if first is None:
         return False
     after = [(k, w) for k, w in enumerate(tokens) if k >= first.end and w in unused]
-    return any(_inflected_verb(w) or (k == first.end and w.endswith("ed") and len(w) > 4) for k, w in after)
+    if any(_inflected_verb(w) or (k == first.end and w.endswith("ed") and len(w) > 4) for k, w in after):
+        return True
+    return _done_to(first, tokens, unused)
+
+
+#: Articles that open an object noun phrase, and particles that may stand between a verb and it.
+_OBJECT_ARTICLES = frozenset({"a", "an", "the", "this", "that", "some"})
+_PARTICLES = frozenset({"down", "over", "out", "into", "up", "off"})
+
+
+def _done_to(first, tokens: list[str], unused: set[str]) -> bool:
+    """Whether a verb the reader has no behaviour for takes the first road user named as its object
+    ("almost flattened an e-scooter rider", "nudged a cyclist at the lights", "mowed down a walker"):
+    something was done to it, so it was there, in the ego's way, and a scenario can be made of it. The
+    verb must stand before the road user's article, a particle between at most: a participle after the
+    article ("a flattened cyclist") describes it."""
+    k = first.start - 1
+    if k < 0 or tokens[k] not in _OBJECT_ARTICLES:
+        return False
+    k -= 1
+    while k >= 0 and tokens[k] in _PARTICLES:
+        k -= 1
+    return k >= 0 and tokens[k] in unused and _inflected_verb(tokens[k])
 
 
 def _inflected_verb(word: str) -> bool:
