@@ -1325,21 +1325,10 @@ def _frame(
         return tokens
     if _labels(tokens, kind_at, known):
         return tokens  # (a report's labels say who the ego is)
-    tokens = _at_the_wheel(tokens, kind_at, known, dropped)
-    if names_ego(tokens, kind_at, known):
-        return tokens
-    tokens = _driving_subject(tokens, kind_at, known, dropped)
-    if names_ego(tokens, kind_at, known):
-        return tokens
-    tokens = _news_driver(tokens, kind_at, known, dropped)
-    if names_ego(tokens, kind_at, known):
-        return tokens
-    tokens = _followed_driver(tokens, kind_at, known, dropped)
-    if names_ego(tokens, kind_at, known):
-        return tokens
-    tokens = _person_driving(tokens, kind_at, known, dropped)
-    if names_ego(tokens, kind_at, known):
-        return tokens
+    for third_person in (_at_the_wheel, _driving_subject, _news_driver, _followed_driver, _person_driving):
+        tokens = third_person(tokens, kind_at, known, dropped)  # (the first that names the ego decides)
+        if names_ego(tokens, kind_at, known):
+            return tokens
     tokens = _role(tokens, kind_at)
     if names_ego(tokens, kind_at, known):
         return _ego_drives(tokens, kind_at, known, dropped)

@@ -15,6 +15,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 from vei_scenario.language.lemmas import lemmas
+from vei_scenario.language.word_mention import word_mention
 
 #: Road users that cross a road on foot or by bike or scooter.
 _CROSSERS = frozenset(("pedestrian", "bicycle", "e-scooter"))
@@ -179,18 +180,7 @@ def verb_the_red(clauses: list, tokens: list[str]) -> list:
                 if not _runs_the_red_at(tokens, i) or any(x.start < i and not _plain(x) for x in moves):
                     continue
                 verb = next((x for x in kept if x.start == i and x.slot in ("behaviour", "unknown_verb")), None)
-                ran = replace(
-                    m,
-                    slot="behaviour",
-                    value=("run_red_light", {}),
-                    words=tokens[i],
-                    start=i,
-                    end=i + 1,
-                    det="",
-                    prev=tokens[i - 1],
-                    next_=tokens[i + 1],
-                    owners=(),
-                )
+                ran = word_mention(m, tokens, i, "behaviour", ("run_red_light", {}))
                 if verb is not None:
                     kept[kept.index(verb)] = ran
                 else:
@@ -237,11 +227,9 @@ def _across_in_front(mentions: list, tokens: list[str]) -> list:
             continue  # (it already does something: "overtook me and cut across in front")
         moves = [x for x in since if _plain(x)]
         manner = [x for x in since if x.slot == "ego_verb" and x.value == "straight" and x.end == j]
-        crossing = replace(
-            moves[-1] if moves else subject, slot="behaviour", value=("cross_in_front", {}), words="across",
-            start=j, end=j + 1, prev=tokens[j - 1] if j else "", next_=tokens[j + 1] if j + 1 < len(tokens) else "",
-            det="", owners=(),
-        )  # fmt: skip
+        crossing = word_mention(
+            moves[-1] if moves else subject, tokens, j, "behaviour", ("cross_in_front", {}), "across"
+        )
         gone = set(map(id, moves + manner))
         mentions = [x for x in mentions[:k] if id(x) not in gone] + [crossing] + mentions[k:]
         break
@@ -355,9 +343,7 @@ def entering_the_roundabout(clauses: list, tokens: list[str]) -> list:
             if at is not None and at.slot == "unknown_verb":  # ("a scooter enter the roundabout": a plain going on)
                 kept[kept.index(at)] = replace(at, slot="ego_verb", value=None)
             elif at is None:
-                verb = replace(subject, slot="ego_verb", value=None, words=tokens[j], start=j, end=j + 1,
-                               prev=tokens[j - 1] if j else "", next_=tokens[j + 1] if j + 1 < len(tokens) else "",
-                               det="", owners=())  # fmt: skip
+                verb = word_mention(subject, tokens, j, "ego_verb", None)
                 kept.insert(next((n for n, x in enumerate(kept) if x.start > j), len(kept)), verb)
             break
         ring_said = ring_said or any(_ring(x) for x in kept)

@@ -47,6 +47,7 @@ from dataclasses import replace
 from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.reading import ActorSpec
 from vei_scenario.language.sides import OFF_ROAD_PLACES, stated_side
+from vei_scenario.language.word_mention import word_mention
 
 #: Behaviours that, said with running the red, are the manner of that run.
 _MANNER_OF_A_RUN = frozenset(("overtake", "turn_into"))
@@ -1099,9 +1100,7 @@ def into_another_lane(clauses: list, tokens: list[str]) -> list:
                 continue
             end, ours = said
             move = ("cut_in" if ours else "change_lane", {})
-            new = replace(subject, slot="behaviour", value=move, words=tokens[j], start=j, end=j + 1,
-                          prev=tokens[j - 1] if j else "", next_=tokens[j + 1] if j + 1 < len(tokens) else "",
-                          det="", owners=())  # fmt: skip
+            new = word_mention(subject, tokens, j, "behaviour", move)
             kept.insert(kept.index(before[-1]) + 1, new)
             break
         out.append((link, kept))
@@ -1818,18 +1817,7 @@ def out_across_the_road(clauses: list, tokens: list[str]) -> list:
                 continue
             name = "cross_in_front" if who.value in _CROSSERS else "cut_in"
             kept = [x for x in kept if not (x.slot == "ego_verb" and j - 3 <= x.start < j)]
-            move = replace(
-                who,
-                slot="behaviour",
-                value=(name, {}),
-                words="out",
-                start=j,
-                end=j + 1,
-                det="",
-                prev=tokens[j - 1],
-                next_=tokens[j + 1],
-                owners=(),
-            )
+            move = word_mention(who, tokens, j, "behaviour", (name, {}), "out")
             kept.insert(next((n for n, x in enumerate(kept) if x.start > j), len(kept)), move)
         named = [x for x in mentions if x.slot == "actor" and x.value != "ego"]
         subject = named[-1] if named else subject
@@ -2086,9 +2074,7 @@ def entering_the_ego_lane(clauses: list, tokens: list[str]) -> list:
             if at is not None:
                 kept[kept.index(at)] = replace(at, slot="behaviour", value=cut)
             else:
-                said = replace(subject, slot="behaviour", value=cut, words=tokens[j], start=j, end=j + 1,
-                               prev=tokens[j - 1] if j else "", next_=tokens[j + 1] if j + 1 < len(tokens) else "",
-                               det="", owners=())  # fmt: skip
+                said = word_mention(subject, tokens, j, "behaviour", cut)
                 kept.insert(kept.index(before[-1]) + 1, said)
             kept = [x for x in kept if all(x is not u for u in used)]
             break
