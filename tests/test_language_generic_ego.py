@@ -6,6 +6,8 @@ named as generally, who is then the ego."""
 from __future__ import annotations
 
 import pytest
+from reading_of import ego_kph as _ego_kph
+from reading_of import kinds
 
 from vei_scenario.language.ego_speed import at_the_limit, of_traffic
 from vei_scenario.language.generic_ego import frame
@@ -13,12 +15,7 @@ from vei_scenario.language.reader import _kind_at, _known, _tokens, read
 
 
 def _kinds(text: str) -> list[str]:
-    return sorted(a.kind for a in read(text).actors)
-
-
-def _ego_kph(text: str) -> float | None:
-    mps = read(text).ego_speed_mps
-    return None if mps is None else round(mps * 3.6, 1)
+    return sorted(kinds(text))
 
 
 # A driver said in general ("a driver", "drivers", "motorists") who does the scenario's driving is the

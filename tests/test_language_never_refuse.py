@@ -7,16 +7,13 @@ what is missing."""
 from __future__ import annotations
 
 import pytest
+from reading_of import kinds as _kinds
 
 from vei_scenario.cli import main
 from vei_scenario.language.reader import read
 from vei_scenario.language.reading import NotUnderstood
 
 RIDERS = ("bicycle", "e-scooter")
-
-
-def _kinds(text: str) -> list[str]:
-    return [a.kind for a in read(text).actors]
 
 
 def _behaviours(text: str) -> list[list[str]]:

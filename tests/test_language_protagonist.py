@@ -5,18 +5,15 @@ placed by its path or side; never a parked vehicle, nor one met by an ego the te
 from __future__ import annotations
 
 import pytest
+from reading_of import ego_kph as _ego_kph
+from reading_of import kinds
 
 from vei_scenario.language import protagonist
-from vei_scenario.language.reader import _kind_at, _known, _tokens, read
+from vei_scenario.language.reader import _kind_at, _known, _tokens
 
 
 def _kinds(text: str) -> list[str]:
-    return sorted(a.kind for a in read(text).actors)
-
-
-def _ego_kph(text: str) -> float | None:
-    mps = read(text).ego_speed_mps
-    return None if mps is None else round(mps * 3.6, 1)
+    return sorted(kinds(text))
 
 
 @pytest.mark.parametrize(

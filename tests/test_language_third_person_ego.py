@@ -4,17 +4,10 @@ text follows is the ego, never also listed as another road user, and its speed i
 from __future__ import annotations
 
 import pytest
+from reading_of import ego_kph as _ego_kph
+from reading_of import kinds as _kinds
 
 from vei_scenario.language.reader import read
-
-
-def _kinds(text: str) -> list[str]:
-    return [a.kind for a in read(text).actors]
-
-
-def _ego_kph(text: str) -> float | None:
-    mps = read(text).ego_speed_mps
-    return None if mps is None else round(mps * 3.6, 1)
 
 
 # A news report that opens on a driver and goes on with "his"/"her" vehicle and "he"/"she": that

@@ -6,12 +6,9 @@ car"), which is no road user. Near misses name a place or a mode, not a road use
 from __future__ import annotations
 
 import pytest
+from reading_of import kinds as _kinds
 
 from vei_scenario.language.reader import read
-
-
-def _kinds(text: str) -> list[str]:
-    return [a.kind for a in read(text).actors]
 
 
 # --- a make followed by a model code is that make's vehicle ---------------------------------------------

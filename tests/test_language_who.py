@@ -5,13 +5,10 @@ lighting (not traffic lights)."""
 from __future__ import annotations
 
 import pytest
+from reading_of import kinds as _kinds
 
 from vei_scenario.language.reader import _tokens as _TOKENS
 from vei_scenario.language.reader import read
-
-
-def _kinds(text: str) -> list[str]:
-    return [a.kind for a in read(text).actors]
 
 
 # --- a hyphenated compound is the road user its head noun names ---------------------------------------

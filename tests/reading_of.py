@@ -1,0 +1,17 @@
+"""What the rules reader makes of a description, in the two facts most reader tests check: the kinds
+of the road users it names and the ego's speed, for the tests of who is who and of the ego."""
+
+from __future__ import annotations
+
+from vei_scenario.language.reader import read
+
+
+def kinds(text: str) -> list[str]:
+    """The kinds of the road users read from ``text``, in the order the reader lists them."""
+    return [a.kind for a in read(text).actors]
+
+
+def ego_kph(text: str) -> float | None:
+    """The ego's speed read from ``text`` in km/h to one decimal, or None where none is said."""
+    mps = read(text).ego_speed_mps
+    return None if mps is None else round(mps * 3.6, 1)
