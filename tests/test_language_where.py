@@ -213,3 +213,98 @@ def test_one_that_overtakes_the_ego_to_turn_across_it_starts_behind(text):
 def test_an_overtaker_said_in_a_lane_starts_in_that_lane():
     text = "At 30 km/h at the junction a taxi in the right lane overtakes the ego and turns left across its bonnet."
     assert relation(text) == "right"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # the ego named as a label, then a colon or a comma, then its verb of following: the one followed leads
+        "Ego: following a lorry at 70 km/h on a motorway. The lorry brakes hard.",
+        "Host vehicle: tailing a minibus at 40 km/h. The minibus stops suddenly.",
+        "The ego, following a tanker at 60 km/h, has to brake when the tanker stops.",
+    ],
+)
+def test_the_ego_following_after_a_colon_or_comma_has_it_ahead(text):
+    assert relation(text) == "ahead"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # what the ego follows or sits behind, said in a lane, is in the ego's own lane: ahead
+        "I was following a minibus in the right lane at 40 mph when it braked sharply.",
+        "We were stuck behind a tractor in the left-hand lane, doing 15 mph, when it stopped dead.",
+        "Doing 45 mph I came up behind a horse rider in the nearside lane.",
+        "The ego follows a pickup in the left lane at 70 km/h; the pickup brakes to a stop.",
+    ],
+)
+def test_what_the_ego_follows_in_a_lane_is_ahead(text):
+    assert relation(text) == "ahead"
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # near misses: the ego's own lane said apart, or someone merely ahead in a lane, keep the side
+        ("I was in the right lane following traffic at 50 mph when a minibus in the left lane braked.", "left"),
+        ("A car ahead in the left lane brakes hard; the ego drives at 60 km/h in the right lane.", "left"),
+        ("I was doing 40 mph when a minibus in the right lane braked hard.", "right"),
+    ],
+)  # fmt: skip
+def test_a_lane_of_someone_not_followed_keeps_its_side(text, expected):
+    assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # a verb of coming, where it comes along, then "towards", "at" or "for" the ego: it comes at the ego
+        "Doing 40 mph on a country lane, a tractor came round the corner towards me.",
+        "At 50 km/h a motorbike came flying down the hill straight at me.",
+        "At 30 mph a delivery van came barrelling round the bend right at us.",
+        "At 60 km/h on the A-road a tractor was heading right for us.",
+        "Doing 25 mph, a scooter rider rode down the middle of the lane towards my car.",
+    ],
+)
+def test_coming_at_the_ego_past_where_it_comes_is_oncoming(text):
+    actor = read(text).actors[0]  # (a rider going on comes along the ego's lane, ahead and facing it)
+    assert actor.relation == "oncoming" or (actor.relation, actor.facing) == ("ahead", "against")
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # near misses: a move sideways towards the ego, or coming out of or off a place towards it
+        ("At 20 mph a cyclist swerved towards me.", None),
+        ("At 20 mph a van came out of the side road on my left towards me.", "junction_left"),
+        ("At 20 mph a cyclist came off the pavement on my left towards me.", "roadside_left"),
+        ("At 30 mph a cyclist came up behind me and rode past towards the lights.", "behind"),
+    ],
+)  # fmt: skip
+def test_moving_sideways_or_out_towards_the_ego_is_not_oncoming(text, expected):
+    assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # one overtaking another, then coming at the ego: the overtaker comes, past what it overtakes
+        "Doing 50 mph on the A-road, a lorry was overtaking a tractor and came towards us on our side.",
+        "At 80 km/h a bus overtook a lorry and came head-on at us.",
+        "At 70 km/h a car was passing a van, right on our side of the road, head-on towards us.",
+    ],
+)
+def test_an_overtaker_coming_at_the_ego_is_oncoming(text):
+    assert relation(text) == "oncoming"
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # near misses: a new subject after "and", or the ego overtaken
+        ("At 50 mph a van overtook a cyclist and a car came towards us.", None),
+        ("At 50 mph a van overtook me and cut in; a car was coming the other way.", None),
+    ],
+)  # fmt: skip
+def test_another_coming_at_the_ego_leaves_the_overtaker(text, expected):
+    assert relation(text) == expected

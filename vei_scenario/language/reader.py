@@ -655,6 +655,12 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             clauses[-1][1].append(_Mention("relation", "oncoming", words, i, prev, end=towards, det=det))
             i = towards
             continue
+        at_ego = sides.coming_at_the_ego(tokens, i)
+        if at_ego is not None:  # "came round the corner towards me": past where it comes, at the ego
+            words = " ".join(tokens[i:at_ego])
+            clauses[-1][1].append(_Mention("relation", "oncoming", words, i, prev, end=at_ego, det=det))
+            i = at_ego
+            continue
         against = sides.the_other_direction(tokens, i)
         if against is not None:  # "in the contrary direction": it comes towards the ego
             words = " ".join(tokens[i:against])
@@ -1740,6 +1746,10 @@ def _read(text: str) -> Reading:
                     continue
                 if who == "ego" and m.slot == "distance" and actors:
                     who = actors[-1]  # a gap said of the ego is the gap to the road user named last
+                if isinstance(clause_subject, _Actor) and (
+                    _verb_after_and(prev, m) or _overtaken_coming(who, clause_subject, m)
+                ):
+                    who = clause_subject  # ("a lorry overtook a tractor and came towards us": the lorry)
                 if who is None and m.slot in ("speed", "distance") and isinstance(clause_subject, _Actor):
                     who = clause_subject  # "..., and then overtakes it at 25 km/h": the one who overtakes
                 if who is None and m.slot in ("returns", "wrong_way") and isinstance(subject, _Actor):
@@ -1853,6 +1863,7 @@ def _read(text: str) -> Reading:
         raise NotUnderstood(list(dict.fromkeys(ignored))[:12], text, missing="road user")
     for a in actors:  # a lane said of both: the road user's side is where its lane is from the ego's
         a.lane_side = sides.beside(a.lane_side, r.ego_relation)
+        a.lane_side = sides.lane_of_the_followed(a.lane_side, "ego_behind" in a.said and not a.toward, r.ego_relation)
     if both_with_ego and r.ego_speed_mps is None and actors and actors[0].speed_mps is not None:
         r.ego_speed_mps = actors[0].speed_mps  # (the speed said of both)
     if r.ego_speed_mps is None:
@@ -2631,6 +2642,24 @@ def _after_copula(tokens: list[str], i: int) -> bool:
 _SEEN_FROM_OBJECT = {"behind": "ahead", "ahead": "behind"}
 
 
+def _verb_after_and(prev, m) -> bool:
+    """Whether relation ``m`` opens with a verb of coming at the ego right after "and" ("... and came
+    towards us", "... and came head-on at us"): a second verb of the clause's subject, whose object
+    (named last: "was overtaking a tractor and came ...") is not the one that comes."""
+    if m.slot != "relation" or m.value != "oncoming" or prev is None or prev.slot != "conj":
+        return False
+    return prev.words == "and" and _inflected_verb(m.words.split()[0])
+
+
+def _overtaken_coming(who, subject: _Actor, m) -> bool:
+    """Whether relation ``m``, coming at the ego, is said right after what the clause's subject overtakes
+    ("a truck was overtaking another truck, head-on towards us"): the overtaker is the one that comes
+    on the ego's side (what it overtakes comes the same way, and is read so from it)."""
+    if m.slot != "relation" or m.value != "oncoming" or not isinstance(who, _Actor) or who.object_of is not subject:
+        return False
+    return any(b[0] == "overtake" for b in subject.behaviours)
+
+
 def _stop_before(prev) -> bool:
     """Whether mention ``prev`` is a stop ("stopped", "pulled up", "braked to a stop"): a distance right
     after the ego's stop says where it stopped, short of someone, not where that someone was."""
@@ -2836,6 +2865,8 @@ def _apply(m, who, r, link, added) -> None:
             if m.value == "ahead" and motion.in_the_ego_lane(m.words):
                 a.said.add("in_ego_lane")  # ("in my lane": not only in front, in the ego's own lane)
             a.followed = a.followed or (m.value == "ahead" and m.words in ("following", "tailing"))
+            if m.value == "ahead" and m.words in ("following", "tailing", "behind"):
+                a.said.add("ego_behind")  # ("following a van", "we were behind a van": in the ego's lane)
             if a.relation is None or m.value == "oncoming":
                 a.relation = m.value
         elif m.slot == "wrong_way":

@@ -659,6 +659,48 @@ def towards_in_ego_lane(tokens: list[str], i: int) -> int | None:
     return end
 
 
+#: Lemmas of the verbs that say a road user travels somewhere (not sideways: "swerve", "veer").
+_TRAVEL = frozenset(
+    {"come", "head", "drive", "ride", "travel", "speed", "race", "hurtle", "barrel", "fly", "zoom", "charge", "career"}
+)
+#: Words that end the stretch between such a verb and where it goes: a clause's end, or a place it
+#: comes out of, off or across ("came out of the side road towards me": it turns out, no oncoming).
+_NOT_ALONG = frozenset(
+    {",", ".", ";", ":", "!", "?", "and", "but", "when", "then", "while", "as", "out", "off", "from", "across",
+     "into", "onto", "behind", "past", "alongside", "after", "overtake", "overtaking", "pass", "passing"}
+)  # fmt: skip
+#: The ego said after "towards", "at" or "for".
+_EGO_AFTER = frozenset({"me", "us", "ego"})
+
+
+def coming_at_the_ego(tokens: list[str], i: int) -> int | None:
+    """Where a phrase ends that says a road user travels at the ego, starting at "towards", "toward",
+    "at" or "for" (token ``i``) with the ego after it ("towards me", "straight at us", "for my car"),
+    when a verb of travelling comes before it with no more than where it travels between ("came round
+    the corner towards me", "came flying down the hill straight at me", "heading right for us"), or
+    None. Why: the lexicon's "come towards" and "come at" hold only with nothing between, and writers
+    say the road or bend it comes along first. Not a move sideways ("swerved towards me": no verb of
+    travelling), nor coming out of, off or across a place ("came off the pavement towards me")."""
+    if tokens[i] not in ("towards", "toward", "at", "for") or i + 1 >= len(tokens):
+        return None
+    after = tokens[i + 1]
+    if after in _EGO_AFTER:
+        end = i + 2
+    elif after in ("my", "our") and i + 2 < len(tokens) and tokens[i + 2] not in ("left", "right"):
+        end = i + 3  # ("towards my car", "at our van")
+    elif tokens[i + 1 : i + 3] == ["the", "ego"]:
+        end = i + 3
+    else:
+        return None
+    for k in range(i - 1, max(-1, i - 8), -1):
+        if tokens[k] in _NOT_ALONG:
+            return None
+        verbs = set(lemmas(tokens[k]).get("VERB", ()))
+        if verbs & _TRAVEL and (tokens[i] != "for" or "head" in verbs):
+            return end if k < i - 1 else None  # (right after the verb the lexicon's phrase reads it)
+    return None
+
+
 #: Adjectives that say a direction is against the ego's, and the nouns of a direction.
 _AGAINST = frozenset({"opposite", "contrary", "other", "reverse", "opposing"})
 _DIRECTIONS = frozenset({"direction", "way"})
@@ -724,6 +766,15 @@ def beside(lane: str | None, ego_lane: str | None) -> str | None:
     if _ORDER[lane] == _ORDER[ego_lane]:
         return None
     return "left" if _ORDER[lane] < _ORDER[ego_lane] else "right"
+
+
+def lane_of_the_followed(lane: str | None, ego_behind: bool, ego_lane: str | None) -> str | None:
+    """The side of the lane of a road user the ego follows or is behind ("following a van in the right
+    lane", "stuck behind a tractor in the nearside lane"), when the ego's own lane is not said: none,
+    since the ego is in that lane too and the road user is ahead in it. Why: read as a lane beside the
+    ego's, the lead started level with the ego in the next lane. A lane the ego's own is said apart
+    from is compared with it (:func:`beside`) and kept."""
+    return None if ego_behind and ego_lane is None and lane in _ORDER else lane
 
 
 def starts_in_lane(lane: str | None, side: str | None, toward: str | None) -> bool:
@@ -932,20 +983,31 @@ def ego_follows(clauses: list) -> list:
     a lead vehicle", "ego following a city bus at 20 m"). Why: the verb of following says where the one
     followed is, not what the ego does (the planner drives it); read as the ego's behaviour it was lost,
     read as "following" of the next road user ("a car following us") it put the bus behind. The verb
-    becomes "ahead" said of the road user, right after it, as the reader reads "Following a truck"."""
+    becomes "ahead" said of the road user, right after it, as the reader reads "Following a truck".
+    The ego may be set off from its verb by a colon or a comma, as a label or an apposition ("Ego:
+    following a truck", "Driver statement: following a box van", "the ego, following a tanker,")."""
     out = []
     for link, mentions in clauses:
         kept = list(mentions)
         for k in range(len(kept) - 2):
-            ego, verb, who = kept[k], kept[k + 1], kept[k + 2]
-            if ego.slot != "actor" or ego.value != "ego" or not _follows(verb):
+            ego = kept[k]
+            if ego.slot != "actor" or ego.value != "ego":
                 continue
+            v = k + 1 + _set_off(kept[k + 1])
+            if v + 1 >= len(kept) or not _follows(kept[v]):
+                continue
+            verb, who = kept[v], kept[v + 1]
             if who.slot != "actor" or who.value == "ego":
                 continue
             ahead = replace(verb, slot="relation", value="ahead", words="following", start=who.end, prev=who.words)
-            kept[k + 1 : k + 3] = [who, ahead]
+            kept[v : v + 2] = [who, ahead]
         out.append((link, kept))
     return out
+
+
+def _set_off(m) -> bool:
+    """Whether mention ``m`` is a colon or a comma: what sets a label or an apposition off from its verb."""
+    return m.slot == "punct" and m.value in (":", ",")
 
 
 #: Compass headings in degrees, and the words that say them ("eastbound"; "heading east").
