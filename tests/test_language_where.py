@@ -308,3 +308,47 @@ def test_an_overtaker_coming_at_the_ego_is_oncoming(text):
 )  # fmt: skip
 def test_another_coming_at_the_ego_leaves_the_overtaker(text, expected):
     assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # a rider at the kerb or in a cycle lane, no side said, overtaking the ego: from behind it
+        "A kid on an e-scooter in the cycle lane overtook me at 40 km/h; I was doing 30 km/h.",
+        "Doing 15 mph, a courier on a bicycle came along the kerb and overtook me.",
+        "At 20 km/h in traffic, a cyclist riding in the bike lane shot past me.",
+    ],
+)
+def test_a_rider_at_the_kerb_overtaking_the_ego_starts_behind(text):
+    assert relation(text) == "behind"
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # near misses: a side said keeps it, and one swerving out of the cycle lane starts there
+        ("Doing 15 mph, a cyclist in the cycle lane on my left overtook me.", "left"),
+        ("Doing 30 km/h, a cyclist in the bike lane swerved into my lane.", "roadside_right"),
+    ],
+)  # fmt: skip
+def test_a_rider_at_the_kerb_not_overtaking_keeps_the_kerb(text, expected):
+    assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # travelling "on the wrong side" is going the wrong way, and "in my own lane" is the ego's lane
+        "At 20 mph I saw a cyclist on the wrong side, riding towards me.",
+        "At 20 mph a moped was on the wrong side, heading for me.",
+        "At 30 mph a lad on a scooter was on the wrong side, in my own lane, and I had to mount the kerb.",
+    ],
+)
+def test_on_the_wrong_side_or_in_my_own_lane_comes_at_the_ego(text):
+    actor = read(text).actors[0]
+    assert actor.relation == "oncoming" or (actor.relation, actor.facing) == ("ahead", "against")
+
+
+def test_from_the_far_side_is_still_a_kerb():
+    # near miss: coming from the far side of the road is a kerb, not the wrong way
+    assert relation("At 30 mph a pedestrian stepped out from the far side.") == "roadside_right"

@@ -870,6 +870,7 @@ RELATIONS = {
         "in its direction",
         "longitudinally",
         "in our own lane",
+        "in my own lane",
         "down our lane",
         "in the ego lane",
         "in the av's lane",

@@ -73,7 +73,7 @@ def in_the_ego_lane(words: str) -> bool:
     """Whether a relation said as ``words`` puts its road user in the ego's own lane, path or side of
     the road ("in my lane", "on our side of the road", "down the ego's lane"), not merely in front
     ("ahead", "in front of us") nor in its own lane ("in its lane")."""
-    said = words.replace(" 's", "'s").split()
+    said = [w for w in words.replace(" 's", "'s").split() if w != "own"]  # ("in my own lane")
     return any(a in _EGO_OWNER_WORDS and b in _WAYS for a, b in zip(said, said[1:]))
 
 
@@ -2082,17 +2082,23 @@ def entering_the_ego_lane(clauses: list, tokens: list[str]) -> list:
     return out
 
 
+def _on_it(m) -> bool:
+    """Whether side mention ``m`` is said with "on" ("riding down the lane on the wrong side"): where a
+    road user travels, not a kerb it comes from ("from the wrong side")."""
+    return m.prev == "on" or m.words.startswith("on ")
+
+
 def the_wrong_side_of(clauses: list) -> list:
     """``clauses`` with "the wrong side of" + any road ("the wrong side of the street", "of Abbey St",
     "of the dual carriageway") read as going the wrong way, as "the wrong side of the road" is: the
     wrong side of a road is the side of its traffic the other way, whatever the road is called. The
     reader otherwise takes "wrong side" alone as the far kerb; "of" is what makes it a side of a
-    road one travels on."""
+    road one travels on, and so is "on" ("riding down Mill Lane on the wrong side")."""
     out = []
     for link, mentions in clauses:
         kept = [
             replace(m, slot="wrong_way", value=None)
-            if m.slot == "kerb_side" and m.words == "wrong side" and m.next_ == "of"
+            if m.slot == "kerb_side" and m.words == "wrong side" and (m.next_ == "of" or _on_it(m))
             else m
             for m in mentions
         ]

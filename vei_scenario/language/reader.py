@@ -1746,10 +1746,11 @@ def _read(text: str) -> Reading:
                     continue
                 if who == "ego" and m.slot == "distance" and actors:
                     who = actors[-1]  # a gap said of the ego is the gap to the road user named last
-                if isinstance(clause_subject, _Actor) and (
-                    _verb_after_and(prev, m) or _overtaken_coming(who, clause_subject, m)
-                ):
+                if isinstance(clause_subject, _Actor) and _overtaken_coming(who, clause_subject, m):
+                    _apply(m, who, r, link, added)  # (what it overtakes goes its way: towards the ego too)
                     who = clause_subject  # ("a lorry overtook a tractor and came towards us": the lorry)
+                elif isinstance(clause_subject, _Actor) and _verb_after_and(prev, m):
+                    who = clause_subject  # ("a lorry hit the barrier and came towards us": the lorry)
                 if who is None and m.slot in ("speed", "distance") and isinstance(clause_subject, _Actor):
                     who = clause_subject  # "..., and then overtakes it at 25 km/h": the one who overtakes
                 if who is None and m.slot in ("returns", "wrong_way") and isinstance(subject, _Actor):
@@ -2040,6 +2041,9 @@ def _read(text: str) -> Reading:
             behaviours = behaviours[crossing_at:]  # ("... stops; then crosses from the left"): from the kerb
         a.behaviours = behaviours
         spec.relation = _resolve_relation(a, r.map_kind, sides.drives_on_left(scanned, text))
+        spec.relation = sides.kerb_overtaker(
+            spec.relation, behaviours, bool(a.side or a.kerb_side or a.lane_side), any(x.object_of is a for x in actors)
+        )  # ("a kid in the bike lane overtook me": from behind)
         first_act = behaviours[0][0] if behaviours else None
         own_side = a.side or a.kerb_side or a.lane_side
         spec.relation = (

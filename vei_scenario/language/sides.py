@@ -768,6 +768,17 @@ def beside(lane: str | None, ego_lane: str | None) -> str | None:
     return "left" if _ORDER[lane] < _ORDER[ego_lane] else "right"
 
 
+def kerb_overtaker(relation: str | None, behaviours: list, side_said: bool, passes_another: bool) -> str | None:
+    """Where a road user read at the kerb with no side said starts when its first act is overtaking the
+    ego ("a kid in the bike lane overtook me", "came along the kerb and overtook me"): behind the ego,
+    the overtake's own start. Why: read as the kerb, it started level with the ego at the roadside
+    and had nothing to pass. A side said ("in the cycle lane on my left") or someone else overtaken
+    ("overtook a parked van") keeps the reading."""
+    first = behaviours[0][0] if behaviours else None
+    at_kerb = relation in ("roadside_left", "roadside_right")
+    return "behind" if first == "overtake" and at_kerb and not side_said and not passes_another else relation
+
+
 def lane_of_the_followed(lane: str | None, ego_behind: bool, ego_lane: str | None) -> str | None:
     """The side of the lane of a road user the ego follows or is behind ("following a van in the right
     lane", "stuck behind a tractor in the nearside lane"), when the ego's own lane is not said: none,
