@@ -352,3 +352,33 @@ def test_on_the_wrong_side_or_in_my_own_lane_comes_at_the_ego(text):
 def test_from_the_far_side_is_still_a_kerb():
     # near miss: coming from the far side of the road is a kerb, not the wrong way
     assert relation("At 30 mph a pedestrian stepped out from the far side.") == "roadside_right"
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # the passenger side is the nearside and the driver's side the offside, by the writer's convention
+        ("At 20 mph a car pulled out of a side road on the driver's side.", "junction_right"),
+        ("At 20 mph a man stepped out from the passenger side.", "roadside_left"),
+        ("At 30 km/h a child ran out from the driver's side.", "roadside_left"),
+        ("At 30 km/h a dog ran out from the passenger's side.", "roadside_right"),
+        # and the ego's own nearside or offside, said as where someone is, is that side of the ego
+        ("At 20 mph a car came out of a side road on my offside.", "junction_right"),
+        ("Doing 30 mph, a cyclist was riding along on my nearside and swerved into me.", "roadside_left"),
+    ],
+)  # fmt: skip
+def test_passenger_and_driver_sides_follow_the_convention(text, expected):
+    assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # near misses: a part of a vehicle named by the side, where it was hit, is no place
+        ("At 20 mph a child ran out from the pavement on my right and hit the passenger side door.", "roadside_right"),
+        ("At 20 mph a cyclist came off the kerb on my right and scraped the driver's side mirror.", "roadside_right"),
+        ("At 30 mph a van pulled out of a side road on the left and hit our offside.", "junction_left"),
+    ],
+)  # fmt: skip
+def test_a_vehicle_side_hit_says_no_start(text, expected):
+    assert relation(text) == expected

@@ -413,6 +413,29 @@ def _is_side_word(word: str) -> bool:
     return word in _PLAIN or word in _RELATIVE or word in _RING
 
 
+#: Prepositions that say where someone is or comes from beside a vehicle's side ("on my nearside"),
+#: not where it was struck ("into our nearside", "clipped my offside").
+_WHERE_BESIDE = frozenset({"on", "from", "off", "along", "up", "down"})
+#: The seats whose side of a car names a side of the road: the passenger's is the kerb side (nearside),
+#: the driver's the centre side (offside), whichever side of the road the writer drives on.
+_SEATS = {"passenger": "nearside", "passengers": "nearside", "driver": "offside", "drivers": "offside"}
+
+
+def _seat_side(tokens: list[str], j: int) -> tuple[str, int] | None:
+    """The side word a seat's side at token ``j`` stands for ("the passenger side", "the driver's side":
+    nearside and offside) and where the seat's side ends, or None. Why: a writer says the side of the
+    road by the car's seats as often as by near and off, and the seats follow the convention as those
+    do (a British passenger sits on the left, an American on the right)."""
+    framed = tokens[j] == "ego" and tokens[j - 1 : j] == ["the"]  # (the driver's seat read as the ego's)
+    seat = "offside" if framed else _SEATS.get(tokens[j])
+    if seat is None:
+        return None
+    k = j + 1 + (tokens[j + 1 : j + 2] == ["'s"])
+    if framed and tokens[k + 1 : k + 2] == ["of"]:
+        return None  # ("on the ego's side of the road": the ego's half of the road, no seat)
+    return (seat, k + 1) if tokens[k : k + 1] == ["side"] else None
+
+
 def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | None:
     """The side phrase starting at token ``i`` (at its preposition, determiner or first content word),
     or None. Two orders are read:
@@ -441,8 +464,14 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
     start = j
     if i != start and tokens[i] not in _OPENING and tokens[i] not in _DETERMINERS:
         return None
+    if (seat := _seat_side(tokens, j)) is not None:  # ("the passenger side": the nearside)
+        tokens, j = [*tokens[:j], seat[0], *tokens[seat[1] :]], j  # (read as the side word it stands for)
+        shift = seat[1] - j - 1
+        said = phrase_at(tokens, i, left_hand, ring)
+        return None if said is None else replace(said, end=said.end + shift * (said.end > j))
     if tokens[j] in _KERB_SIDES:
-        part = tokens[j + 1 : j + 2] == ["of"] or tokens[j - 1] in _OWNERS or tokens[j - 1] == "'s"
+        owned = tokens[j - 1] in _OWNERS and prep in _WHERE_BESIDE  # ("on my nearside": beside the ego)
+        part = tokens[j + 1 : j + 2] == ["of"] or (tokens[j - 1] in _OWNERS and not owned) or tokens[j - 1] == "'s"
         if part:  # "the offside of the HGV", "into our nearside": a side of a vehicle, no road user's place
             return Said(start, j + 1, prep, ())
         if (end := part_after_side(tokens, j + 1)) is not None:  # ("the offside front corner")
