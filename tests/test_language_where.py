@@ -382,3 +382,20 @@ def test_passenger_and_driver_sides_follow_the_convention(text, expected):
 )  # fmt: skip
 def test_a_vehicle_side_hit_says_no_start(text, expected):
     assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # a question of how far behind someone the one asked was: the ego was behind, so it is ahead
+        "How far behind the bus were you? About 10 m. It stopped dead and I hit it at 20 mph.",
+        "Q: How close behind the lorry were you at the time? A: Maybe 15 metres, doing 50 mph. It braked.",
+    ],
+)
+def test_how_far_behind_someone_the_ego_was_has_it_ahead(text):
+    assert relation(text) == "ahead"
+
+
+def test_a_question_of_how_far_behind_the_ego_someone_was_keeps_it_behind():
+    # near miss: the road user is the one asked about, behind the ego
+    assert relation("How far behind you was the van? About 5 m, at 40 mph. It hit us.") == "behind"

@@ -1725,7 +1725,11 @@ def _read(text: str) -> Reading:
             )
             if m.slot in _POSITIONAL and before_actor and not (nxt.slot == "actor" and nxt.value == "ego"):
                 pending.append(m)  # an adjective before its actor ("an oncoming car")
-            elif clause_subject == "ego" and m.value in _SEEN_FROM_OBJECT and _object_follows(mentions, k):
+            elif (
+                (clause_subject == "ego" or _asked_how_far(scanned, m))
+                and m.value in _SEEN_FROM_OBJECT
+                and _object_follows(mentions, k)
+            ):
                 # "we drive behind a truck": where the truck is, seen from the ego, is the other way round
                 pending.append(replace(m, value=_SEEN_FROM_OBJECT[m.value]))
             else:
@@ -2662,6 +2666,19 @@ def _overtaken_coming(who, subject: _Actor, m) -> bool:
     if m.slot != "relation" or m.value != "oncoming" or not isinstance(who, _Actor) or who.object_of is not subject:
         return False
     return any(b[0] == "overtake" for b in subject.behaviours)
+
+
+#: Words asking how near: "how far", "how close".
+_HOW_NEAR = frozenset({"far", "close", "near", "long"})
+
+
+def _asked_how_far(tokens: list[str], m) -> bool:
+    """Whether relation ``m`` is asked of someone named after it ("How far behind the bus were you?"):
+    "how far" or "how close" right before it. The one asked, after the verb, is where the relation
+    says, and the road user named as its object is the other way round from it, as in "I was behind
+    the bus"."""
+    k = m.start
+    return k >= 2 and tokens[k - 1] in _HOW_NEAR and tokens[k - 2] == "how"
 
 
 def _stop_before(prev) -> bool:
