@@ -399,3 +399,27 @@ def test_how_far_behind_someone_the_ego_was_has_it_ahead(text):
 def test_a_question_of_how_far_behind_the_ego_someone_was_keeps_it_behind():
     # near miss: the road user is the one asked about, behind the ego
     assert relation("How far behind you was the van? About 5 m, at 40 mph. It hit us.") == "behind"
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # on a roundabout, one said to be on the ego's side ("on my left") goes round beside it, not from an arm
+        ("Going round the roundabout at 15 mph, a cyclist on my left carried straight on past my exit.", "left"),
+        ("Circulating on the roundabout at 20 km/h, a scooter on our right kept going round.", "right"),
+    ],
+)  # fmt: skip
+def test_on_a_roundabout_one_on_the_ego_side_goes_round_beside_it(text, expected):
+    assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # near misses: coming from a side, or beside the ego at a crossroads, is an arm
+        ("At the roundabout a car from my left came on without stopping; I was doing 20 mph.", "junction_left"),
+        ("At the crossroads a cyclist on my left carried straight on; I was doing 20 mph.", "junction_left"),
+    ],
+)  # fmt: skip
+def test_coming_from_a_side_at_a_roundabout_is_an_arm(text, expected):
+    assert relation(text) == expected

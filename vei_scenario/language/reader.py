@@ -257,6 +257,7 @@ class _Actor:
     has_way: bool = False  # going on while the ego gives way ("we yield; the van carries on")
     priority: bool = False  # already on the roundabout or the main road: going on is its right
     from_arm: bool = False  # said to come from or out of a junction arm ("from the side road on the left")
+    beside: bool = False  # said to be on a side of the ego ("a cyclist on my left"), not to come from one
 
 
 #: Euro NCAP's names of its test scenarios ("Car-to-Car Rear stationary", "Car-to-Pedestrian Nearside
@@ -1222,6 +1223,8 @@ def _resolve_relation(a: _Actor, map_kind: str | None, left_hand: bool = False) 
     if first == "cross_in_front" and junction:
         return f"junction_{side or 'left'}"
     same_way = "ahead" in a.said and a.relation != "oncoming"  # ("in the same direction on the right": beside)
+    if map_kind == "roundabout" and a.beside and not a.came_from and side and first in (None, "keep_going"):
+        return side  # ("on the roundabout, a cyclist on my left carried on": going round beside the ego)
     if (
         first == "run_red_light"
         or (a.arm and junction)
@@ -2897,6 +2900,7 @@ def _apply(m, who, r, link, added) -> None:
         elif m.slot == "side":
             a.side = a.side or sides.crossing_from(m.value, m.words, m.prev, m.next_, a.behaviours)
             a.came_from = a.came_from or _from(m)
+            a.beside = a.beside or sides.on_the_ego_side(m.words)
         elif m.slot == "toward":
             a.toward = m.value
         elif m.slot == "lane_side":  # (the lane it starts in: the first said)

@@ -797,6 +797,13 @@ def beside(lane: str | None, ego_lane: str | None) -> str | None:
     return "left" if _ORDER[lane] < _ORDER[ego_lane] else "right"
 
 
+def on_the_ego_side(words: str) -> bool:
+    """Whether a side said as ``words`` puts its road user on that side of the ego ("on my left", "on
+    our right"), not on a side of the road it comes from ("from the left", "on the left")."""
+    said = words.split()
+    return said[:1] == ["on"] and said[1:2] in (["my"], ["our"])
+
+
 def kerb_overtaker(relation: str | None, behaviours: list, side_said: bool, passes_another: bool) -> str | None:
     """Where a road user read at the kerb with no side said starts when its first act is overtaking the
     ego ("a kid in the bike lane overtook me", "came along the kerb and overtook me"): behind the ego,
