@@ -423,3 +423,20 @@ def test_on_a_roundabout_one_on_the_ego_side_goes_round_beside_it(text, expected
 )  # fmt: skip
 def test_coming_from_a_side_at_a_roundabout_is_an_arm(text, expected):
     assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # a sentence, or a statement after a label's colon, opening on "following": the narrator follows
+        "It was raining. Following a bus on the ring road at 30 mph, it stopped dead.",
+        "Incident report. Statement: following a tipper lorry at about 40 mph, the lorry braked sharply.",
+    ],
+)
+def test_an_opening_following_later_in_the_text_has_it_ahead(text):
+    assert relation(text) == "ahead"
+
+
+def test_following_said_of_a_road_user_keeps_it_behind():
+    # near miss: "following" after the road user it is said of
+    assert relation("It was raining. A car following us flashed its lights; I was doing 30 mph.") == "behind"

@@ -1158,17 +1158,40 @@ _CLAUSE_OPENERS = ("because", "and", "but", "then", "so", "when", "while", "as",
 
 def _ego_following(clauses):
     """A description that opens with "Following a truck ..." (nobody named before it) is the ego's
-    view: the ego follows, so what it follows is ahead of it. Returns the clauses with that
-    "following" read as "ahead", and whether it was so."""
+    view: the ego follows, so what it follows is ahead of it. So is a sentence or a statement after a
+    label's colon that opens so ("Driver statement: following a box van ...", "... . Following a bus
+    on the ring road, ..."): an opening participle with no subject is the narrator's. Returns the
+    clauses with that "following" read as "ahead", and whether it was so."""
     if not clauses:
         return clauses, False
     link, mentions = clauses[0]
     first = next((k for k, m in enumerate(mentions) if m.slot not in ("punct", "link")), None)
     if first is None or mentions[first].start != 0 or mentions[first].words not in ("following", "tailing"):
-        return clauses, False
+        return _opening_following(clauses)
     m = mentions[first]
     ahead = _Mention("relation", "ahead", m.words, m.start, m.prev, m.next_, m.end, m.det)
     return [(link, mentions[:first] + [ahead] + mentions[first + 1 :])] + clauses[1:], True
+
+
+#: Tokens after which a participle opens a sentence or a statement.
+_OPENS = frozenset({".", ":", "!", "?", ";"})
+
+
+def _opening_following(clauses):
+    """The clauses with "following" (or "tailing") read as "ahead" where it opens a sentence or follows
+    a colon and a road user is named right after it ("Driver statement: following a box van"), and
+    whether any was."""
+    out, found = [], False
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k, m in enumerate(kept[:-1]):
+            who = kept[k + 1]
+            opens = m.prev in _OPENS and m.words in ("following", "tailing") and m.slot == "relation"
+            if opens and who.slot == "actor" and who.value != "ego" and who.start <= m.end + 3:
+                kept[k] = replace(m, value="ahead")
+                found = True
+        out.append((link, kept))
+    return out, found
 
 
 def _resolve_relation(a: _Actor, map_kind: str | None, left_hand: bool = False) -> str | None:
