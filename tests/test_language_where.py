@@ -440,3 +440,9 @@ def test_an_opening_following_later_in_the_text_has_it_ahead(text):
 def test_following_said_of_a_road_user_keeps_it_behind():
     # near miss: "following" after the road user it is said of
     assert relation("It was raining. A car following us flashed its lights; I was doing 30 mph.") == "behind"
+
+
+def test_a_rider_coming_at_the_ego_along_the_kerb_rides_along_facing_it():
+    # near miss of coming head-on: a rider kept to the kerb against the traffic rides along its edge
+    actor = read("At 20 mph a cyclist rode along the kerb toward me against the traffic, staying tight in.").actors[0]
+    assert ([b[0] for b in actor.behaviours], actor.relation, actor.facing) == (["along_road"], "ahead", "against")
