@@ -698,6 +698,9 @@ _NOT_ALONG = frozenset(
     {",", ".", ";", ":", "!", "?", "and", "but", "when", "then", "while", "as", "out", "off", "from", "across",
      "into", "onto", "behind", "past", "alongside", "after", "overtake", "overtaking", "pass", "passing"}
 )  # fmt: skip
+#: How many words back from "towards" the verb of travelling may be ("came the wrong way down the bus
+#: lane straight at me": nine).
+_REACH = 10
 #: The ego said after "towards", "at" or "for".
 _EGO_AFTER = frozenset({"me", "us", "ego"})
 
@@ -721,7 +724,7 @@ def coming_at_the_ego(tokens: list[str], i: int) -> int | None:
         end = i + 3
     else:
         return None
-    for k in range(i - 1, max(-1, i - 8), -1):
+    for k in range(i - 1, max(-1, i - _REACH - 1), -1):
         if tokens[k] in _NOT_ALONG:
             return None
         verbs = set(lemmas(tokens[k]).get("VERB", ()))
