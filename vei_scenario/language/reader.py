@@ -1186,7 +1186,7 @@ def _opening_following(clauses):
         kept = list(mentions)
         for k, m in enumerate(kept[:-1]):
             who = kept[k + 1]
-            opens = m.prev in _OPENS and m.words in ("following", "tailing") and m.slot == "relation"
+            opens = m.prev in _OPENS and not m.det and m.words in ("following", "tailing") and m.slot == "relation"
             if opens and who.slot == "actor" and who.value != "ego" and who.start <= m.end + 3:
                 kept[k] = replace(m, value="ahead")
                 found = True
@@ -2422,8 +2422,7 @@ def _specialise(
         same = ("cut_in", "cross_in_front", "run_red_light", "keep_going")  # ("... and crossed into our path")
         spec.behaviours = [("turn_across", {}, crit, link)] + [b for b in spec.behaviours[1:] if b[0] not in same]
         return
-    at_the_edge = a.kind in RIDERS and a.kerb and "in_ego_lane" not in a.said  # ("toward me, tight to the curb")
-    if a.kind != "pedestrian" and not at_the_edge and motion.comes_head_on(names, a.wrong_way, a.said, passes_another):
+    if a.kind != "pedestrian" and motion.comes_head_on(names, a.wrong_way, a.said, passes_another):
         # (a vehicle seen coming from the other way drifts over into the ego's lane; a rider rides in it)
         in_lane = a.kind in RIDERS or sides.starts_in_ego_lane(a.said)
         spec.behaviours = [("wrong_way", {}, crit, link)]

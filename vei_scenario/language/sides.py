@@ -701,6 +701,8 @@ _NOT_ALONG = frozenset(
 #: How many words back from "towards" the verb of travelling may be ("came the wrong way down the bus
 #: lane straight at me": nine).
 _REACH = 10
+#: The edge of the road: one travelling along it towards the ego keeps to it, as its kerb says.
+_EDGE = KERB_NOUNS | {"side", "gutter"}
 #: The ego said after "towards", "at" or "for".
 _EGO_AFTER = frozenset({"me", "us", "ego"})
 
@@ -712,7 +714,8 @@ def coming_at_the_ego(tokens: list[str], i: int) -> int | None:
     the corner towards me", "came flying down the hill straight at me", "heading right for us"), or
     None. Why: the lexicon's "come towards" and "come at" hold only with nothing between, and writers
     say the road or bend it comes along first. Not a move sideways ("swerved towards me": no verb of
-    travelling), nor coming out of, off or across a place ("came off the pavement towards me")."""
+    travelling), nor coming out of, off or across a place ("came off the pavement towards me"), nor
+    along the edge of the road ("riding down the side of the road toward me": it keeps to that edge)."""
     if tokens[i] not in ("towards", "toward", "at", "for") or i + 1 >= len(tokens):
         return None
     after = tokens[i + 1]
@@ -725,8 +728,8 @@ def coming_at_the_ego(tokens: list[str], i: int) -> int | None:
     else:
         return None
     for k in range(i - 1, max(-1, i - _REACH - 1), -1):
-        if tokens[k] in _NOT_ALONG:
-            return None
+        if tokens[k] in _NOT_ALONG or tokens[k] in _EDGE:
+            return None  # (not "riding down the side of the road toward me": along the edge, its kerb's)
         verbs = set(lemmas(tokens[k]).get("VERB", ()))
         if verbs & _TRAVEL and (tokens[i] != "for" or "head" in verbs):
             return end if k < i - 1 else None  # (right after the verb the lexicon's phrase reads it)
