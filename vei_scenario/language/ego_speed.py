@@ -108,6 +108,59 @@ def opening_participles(tokens: list[str]) -> dict[int, bool]:
     return out
 
 
+#: Words that open a clause of its own inside a sentence ("Waited till a bus had gone", "... when a van
+#: pulled out"): its speeds are its subject's, not those of the sentence's left-out subject.
+_SUBORDINATORS = frozenset({"till", "until", "when", "while", "whilst", "as", "before", "after", "because", "since"})
+#: Words that join one more verb to a sentence ("... and passed them", "..., then overtook it").
+_JOINS = frozenset({",", "and", "but"})
+#: Words after a comma that go on with the same verb's phrase ("on the M6, at 60", "..., doing 60").
+_GOES_ON = frozenset({"at", "doing", "going", "travelling", "traveling", "about", "around", "still"})
+#: Determiners after "by" that name an agent ("hit by a van", "overtaken by the bus"): a passive.
+_AGENT_OPENERS = frozenset({"a", "an", "the", "some", "one", "this", "another"})
+
+
+def _past_verb(word: str) -> bool:
+    """Whether ``word`` is only a verb in the past tense ("approached", "came", "waited"): not its
+    plain form ("brake"), the third person ("brakes"), a participle of going on ("braking"), nor a word
+    that is also a noun or an adjective ("left", "hit", "stuck": a sentence may open with those as such)."""
+    found = lemmas(word)
+    verbs = found.get("VERB", ())
+    return bool(verbs) and word not in verbs and not word.endswith(("s", "ing")) and not {"NOUN", "ADJ"} & set(found)
+
+
+def subjectless_sentences(tokens: list[str], speeds: set[int]) -> dict[int, bool]:
+    """The speeds (by their index in ``speeds``) said in a sentence that opens with a verb in the past
+    tense and no subject, and in the verbs joined to it ("Came round the bend at 40 km/h, ...", "Waited
+    till it was clear and passed them wide doing about 60."): True, the speed of the one the sentence
+    leaves out, who tells the story or whom the notes are about, as a participle that opens a sentence
+    is (:func:`opening_participles`); False in a passive ("Overtaken at 90 km/h by a motorbike", "Hit
+    from behind by a van doing 30"): the speed of the agent named after "by". A clause of its own inside
+    the sentence ("till a bus pulled out at 30") keeps its speeds to its subject."""
+    out: dict[int, bool] = {}
+    for k, w in enumerate(tokens):
+        if (k and tokens[k - 1] not in _OPENERS) or not _past_verb(w):
+            continue
+        found: list[int] = []
+        passive, own = False, True
+        for j in range(k + 1, min(k + 40, len(tokens))):
+            t = tokens[j]
+            if t in SENTENCE_END:
+                break
+            if t in _SUBORDINATORS:
+                own = False
+            elif t in _JOINS:
+                after = tokens[j + 1] if j + 1 < len(tokens) else ""
+                after = tokens[j + 2] if after == "then" and j + 2 < len(tokens) else after
+                own = _past_verb(after) or (own and t == "," and after in _GOES_ON)
+            elif own and t == "by" and j + 1 < len(tokens) and tokens[j + 1] in _AGENT_OPENERS:
+                passive = True
+            elif own and j in speeds:
+                found.append(j)
+        for j in found:
+            out[j] = not passive
+    return out
+
+
 #: Verbs of contact (lemmas): a speed said with one is the speed at impact.
 CONTACT = frozenset({"hit", "strike", "collide", "clip", "knock", "crash", "smash", "plough", "rear-end", "ram"})
 #: Who does the striking where it is the ego: the narrator, the ego, or no subject after a conjunction
@@ -243,17 +296,23 @@ def _goes_in_its_sentence(tokens: list[str], k: int) -> bool:
     return False
 
 
+#: What a follower does that keeps it behind the ego: following, and going on ("never overtook").
+_FOLLOWING = frozenset({"follow_vehicle", "keep_going"})
+
+
 def kept_by_a_follower(actors) -> float | None:
     """The speed (m/s) of a road user that follows the ego ("a van tailgated me at 60 mph", "a lorry
     followed us closely at 80 km/h"): one that keeps behind the ego keeps its pace, so the speed said of
     it is the ego's too. None where no such follower has a speed, or where another road user is ahead
     (the follower may follow that one), or where it does more than follow ("follows the ego, then
-    overtakes it at 25 km/h": the speed it overtakes at, faster). ``actors``: the reader's, with
-    ``relation``, ``behaviours`` and ``speed_mps``."""
+    overtakes it at 25 km/h": the speed it overtakes at, faster). One that "never overtook" follows all
+    the same: an overtake denied is read as going on. ``actors``: the reader's, with ``relation``,
+    ``behaviours`` and ``speed_mps``."""
     if any(a.relation == "ahead" for a in actors):
         return None
     for a in actors:
-        only_follows = bool(a.behaviours) and all(b[0] == "follow_vehicle" for b in a.behaviours)
+        said = {b[0] for b in a.behaviours}
+        only_follows = "follow_vehicle" in said and said <= _FOLLOWING
         if a.relation == "behind" and only_follows and a.speed_mps:
             return a.speed_mps
     return None

@@ -23,6 +23,7 @@ import re
 from collections.abc import Callable
 
 from vei_scenario.language import vocabulary as V
+from vei_scenario.language.lemmas import lemmas
 
 #: Heads that make a number no speed of travel nor a starting gap: a measure across the road ("a lateral
 #: velocity of 1 m/s", "1.5 m clearance"), how far one sees ("visibility reduced to 150 m"), or the
@@ -198,6 +199,21 @@ def after_at(tokens: list[str], i: int) -> bool:
     """Whether a bare number at ``i`` follows "at" (or "doing") past an article and one modifier
     ("at a steady 50", "doing a brisk 30"): a speed, as "at 50" is."""
     return i >= 3 and tokens[i - 2] in _ARTICLES and tokens[i - 3] in ("at", "doing") and tokens[i - 1].isalpha()
+
+
+#: Verbs of keeping a speed "on" a number (lemmas): "sitting on 110", "sat on 70", "cruising on 100".
+_HELD_ON = frozenset({"sit", "cruise", "hold", "stay", "keep"})
+
+
+def held_on(tokens: list[str], i: int) -> bool:
+    """Whether the bare number at ``i`` is one a driver sits on ("sitting on 110 in the left lane",
+    "we sat on 90 the whole way"): a speed held, as the speedometer shows it. Only where the number ends
+    its phrase or a place follows ("sitting on 3 points", "sat on bus 100" are no speeds)."""
+    if i < 2 or tokens[i - 1] != "on":
+        return False
+    nxt = tokens[i + 1] if i + 1 < len(tokens) else ""
+    verbs = set(lemmas(tokens[i - 2]).get("VERB", ()))
+    return bool(_HELD_ON & verbs) and (nxt in _NOTE_ENDS or nxt in WHERE_AFTER_SPEED or nxt in ("the", "all"))
 
 
 #: Words after which a number ends its note ("ego 50, ...", "ego 50 and a van ...").
@@ -570,6 +586,7 @@ def ego_at_rest(clauses) -> bool:
     while waiting is a common report, and a stop the ego makes in reply ("... and I was stopped just
     in time") is no start at rest. ``clauses``: the reader's (link, mentions)."""
     acted = other = False
+    subject = None  # (the road user named last as a subject: whom "it" says again)
     for _, mentions in clauses:
         said = [
             m
@@ -580,16 +597,40 @@ def ego_at_rest(clauses) -> bool:
         ]
         for k, m in enumerate(said):
             other = other or (m.slot == "actor" and m.value != "ego")
+            if m.slot == "actor" and m.prev in _SUBJECT_BEFORE:
+                subject = m
             if m.slot == "behaviour" and other:  # (what the ego did before it stood is no one acting on it)
                 acted = True
             stop = m.slot == "behaviour" and m.value[0] == "stop" and m.words.split()[0] in STILL_WORDS
             if not k or not (stop or (m.words in STILL_WORDS and m.slot in ("stationary", "unknown_verb"))):
                 continue  # ("was stationary", "were stopped at the junction": a state)
             ego = said[k - 1]
+            if _it_the_egos_vehicle(ego, subject):
+                ego = subject  # ("My car got hit while it was parked": the car, said again)
             if ego.slot == "actor" and ego.value == "ego" and (m.prev in _STATE_BEFORE or _verbless_state(ego, m)):
                 if not acted or ego.prev in _BACKGROUND:
                     return True
     return False
+
+
+#: Words before a road user named as the subject of its clause ("My car ...", "..., while the van ...");
+#: after a preposition it is an object ("hit by a cyclist", "behind the bus").
+_SUBJECT_BEFORE = frozenset({"", ".", ";", ":", ",", "!", "?", "and", "but", "then", "while", "whilst", "when", "as"})
+#: The ego said as the person who tells the story: "it" never says them again.
+_EGO_AS_PERSON = frozenset({"i", "we", "me", "us"})
+
+
+def _it_the_egos_vehicle(pronoun, subject) -> bool:
+    """Whether the mention ``pronoun`` is "it" said of the ego's vehicle: the subject named last is the
+    ego, named as a vehicle ("My car got damaged while it was stopped", "Our van was hit while it was
+    parked"), not as a person ("I ..."), and no road user was a subject since."""
+    return (
+        pronoun.slot == "pronoun"
+        and pronoun.words == "it"
+        and subject is not None
+        and subject.value == "ego"
+        and subject.words not in _EGO_AS_PERSON
+    )
 
 
 #: What may stand before the ego in a note that opens with it ("Ego stationary at the lights.", "With

@@ -539,7 +539,8 @@ def _number(tokens: list[str], i: int, imperial: bool = False) -> tuple[str, flo
     to_changed = tokens[i - 1] == "to" and _changes_speed_before(
         tokens, i - 1
     )  # ("speeds up to 80": the speed it reaches)
-    if (prev in ("at", "doing", "about", "around", "of") or to_changed or Q.after_at(tokens, i)) and 3 <= value <= 250:
+    at = prev in ("at", "doing", "about", "around", "of") or to_changed or Q.after_at(tokens, i) or Q.held_on(tokens, i)
+    if at and 3 <= value <= 250:
         # "at 120", "at a steady 50": in the unit said before
         return "speed", value * Q.carried_unit(tokens, i, imperial), 1
     ends = nxt in ("", ".", ",", ";", "!", "?", "and", "then", "when", "while", "but")
@@ -1293,7 +1294,8 @@ def _read(text: str) -> Reading:
     owned = {o for _, ms in clauses for x in ms for o in x.owners}  # mentions a number is said of
     ego_said: float | None = None  # the ego's speed as the grammar says it (no position rule overrides it)
     said_of: list[tuple[_Actor, str, float]] = []  # a road user's speed or gap as the grammar says it, likewise
-    opened = ego_speed.opening_participles(scanned)  # ("Heading home at 50 km/h, ...": speeds of opening phrases)
+    opened = ego_speed.subjectless_sentences(scanned, {m.start for _, ms in clauses for m in ms if m.slot == "speed"})
+    opened.update(ego_speed.opening_participles(scanned))  # ("Heading home at 50 km/h, ...": speeds of opening phrases)
     for link, mentions in clauses:
         named: list[tuple[_Actor | str, str]] = []  # (actor, role) in order: subject, prep, verb, participle
         clause_subject: _Actor | str | None = None

@@ -1,0 +1,135 @@
+"""The ego's speed said in ways a subject-and-verb grammar misses: a sentence that leaves its subject
+out, a speed "sat on", a follower that never overtakes, the ego's vehicle said again as "it", and a
+mileage that is no speed.
+
+Every wording here is written for these tests (none is from a corpus); each reading has near misses
+that look alike but must not read so."""
+
+from __future__ import annotations
+
+import pytest
+
+from tests.reading_of import ego_kph
+from vei_scenario.language.reader import read
+
+
+# --- a sentence with its subject left out: the narrator's (or the one the notes are about) -----------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("Came round the bend at 40 km/h, a deer standing in the middle of the road.", 40),
+        ("Rolled up to the crossing at about 15 mph, a boy on a bike already halfway over.", 24.1),
+        ("A van was parked on the left. Pulled out past it at 30 km/h and a cyclist came the other way.", 30),
+        ("Was doing 70 km/h in lane two when a lorry drifted across into my lane.", 70),
+    ],
+    ids=["came-round", "rolled-up", "pulled-out", "was-doing"],
+)
+def test_a_speed_in_a_sentence_opening_with_a_past_verb_is_the_egos(text, kph):
+    assert ego_kph(text) == pytest.approx(kph, abs=0.2)
+
+
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("Two horses were being ridden ahead of me. Waited for a gap and went by them slowly at about 25 km/h.", 25),
+        ("A tractor ahead of me. Held back until it was clear, then overtook it doing 80 km/h.", 80),
+    ],
+    ids=["and-went-by", "then-overtook"],
+)
+def test_a_verb_joined_to_a_sentence_without_subject_shares_it(text, kph):
+    assert ego_kph(text) == pytest.approx(kph, abs=0.2)
+
+
+@pytest.mark.parametrize(
+    "text, other_kph",
+    [
+        ("I was waiting at the lights. Hit from behind by a van doing 30 km/h.", 30),
+        ("I was parked up. Overtaken at 90 km/h by a motorbike that then braked in front of me.", 90),
+        ("I slowed down. A cyclist crossed in front of me at 20 km/h.", 20),
+    ],
+    ids=["passive-hit-by", "passive-overtaken", "subject-named"],
+)
+def test_a_passive_or_a_named_subject_keeps_the_speed_off_the_ego(text, other_kph):
+    assert ego_kph(text) != pytest.approx(other_kph, abs=0.2)
+
+
+# --- "sitting on 110": a bare number sat on is the speed held ----------------------------------------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("I was sitting on 100 in the left lane when a truck came up behind and overtook me.", 100),
+        ("We sat on 90 the whole way, then a ute pulled out in front of us.", 90),
+        ("I'm cruising on 80 along the highway and a truck overtakes me.", 80),
+    ],
+    ids=["sitting-on", "sat-on", "cruising-on"],
+)
+def test_a_bare_number_sat_on_is_the_egos_speed(text, kph):
+    assert ego_kph(text) == pytest.approx(kph, abs=0.2)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was sitting on 3 points on my licence when a truck came up behind and overtook me.",
+        "I was sitting on bus 100 when a truck came up behind and overtook us.",
+    ],
+    ids=["points", "bus-number"],
+)
+def test_a_number_sat_on_that_is_no_speed_is_not_read_as_one(text):
+    assert ego_kph(text) not in (3.0, 100.0)
+
+
+# --- a follower that never overtakes still keeps the ego's pace --------------------------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A van tailgated me for miles at 60 mph. It never overtook.",
+        "An SUV followed me closely at 60 mph for ten minutes and never passed.",
+    ],
+    ids=["never-overtook", "never-passed"],
+)
+def test_a_follower_that_never_overtakes_keeps_the_egos_speed(text):
+    assert ego_kph(text) == pytest.approx(96.6, abs=0.2)
+
+
+def test_one_behind_that_only_goes_on_is_no_follower():
+    assert ego_kph("A van behind me kept going at 60 mph and never overtook.") is None
+
+
+# --- the ego's vehicle said again as "it", standing ---------------------------------------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "My car got hit by a scooter while it was parked outside the shop.",
+        "Our van was hit by a cyclist while it was stationary at the lights.",
+    ],
+    ids=["my-car-it-parked", "our-van-it-stationary"],
+)
+def test_the_egos_vehicle_said_again_as_it_at_rest_stands_still(text):
+    assert ego_kph(text) == 0.0
+
+
+def test_it_after_another_road_user_is_that_one_not_the_ego():
+    assert ego_kph("I was driving along when a scooter came past; it was stopped a moment later.") != 0.0
+
+
+# --- a mileage is no speed ----------------------------------------------------------------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I drive an old Corolla with 300k on the clock. A truck overtook me and cut in.",
+        "My ute has about 250k on it. A truck overtook me and cut in.",
+    ],
+    ids=["with-on-the-clock", "has-on-it"],
+)
+def test_a_number_of_k_had_by_a_vehicle_is_its_mileage_not_a_speed(text):
+    assert ego_kph(text) not in (250.0, 300.0)
+
+
+def test_a_number_of_k_driven_at_stays_a_speed():
+    assert ego_kph("I was doing 100k on the highway when a truck overtook me and cut in.") == 100.0
+
+
+def test_the_passive_stays_the_other_road_users():
+    r = read("I was waiting at the lights. Hit from behind by a van doing 30 km/h.")
+    assert r.actors and r.actors[0].kind == "van"
