@@ -133,3 +133,56 @@ def test_a_number_of_k_driven_at_stays_a_speed():
 def test_the_passive_stays_the_other_road_users():
     r = read("I was waiting at the lights. Hit from behind by a van doing 30 km/h.")
     assert r.actors and r.actors[0].kind == "van"
+
+
+# --- one of the narrator's party at the wheel: "Dad was driving at 80" -------------------------------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("A truck came onto our side head-on towards us. Dad was driving at around 80 km/h and swerved.", 80),
+        ("A lorry pulled out of a side road in front of us. Mum was going about 30 mph and braked hard.", 48.3),
+        ("A bus overtook another bus and came at us. My husband was doing about 70 km/h, he braked.", 70),
+        ("A van cut across in front of us. Grandad drove at 40 km/h the whole way and had to brake.", 40),
+    ],
+    ids=["dad-driving", "mum-going", "my-husband-doing", "grandad-drove"],
+)
+def test_a_speed_of_the_narrators_party_at_the_wheel_is_the_egos(text, kph):
+    assert ego_kph(text) == pytest.approx(kph, abs=0.2)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "We were driving home. The truck in the other lane was doing about 80 km/h and came onto our side.",
+        "We were driving home. There was a truck doing 80 km/h that came onto our side.",
+    ],
+    ids=["road-user-subject", "there-was"],
+)
+def test_a_subject_that_is_no_person_of_the_narrators_keeps_its_speed(text):
+    assert read(text).actors[0].speed_mps == pytest.approx(80 / 3.6)
+
+
+# --- the ego at rest said by a stop made before: "had pulled up", "were stood still" -------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "We were stood still in traffic when a van ran into the back of us.",
+        "I had pulled up at the lights when a lorry ran into the back of me.",
+        "We had come to a stop at the junction when a bus ran into the back of us.",
+    ],
+    ids=["were-stood-still", "had-pulled-up", "had-come-to-a-stop"],
+)
+def test_a_stop_made_before_anyone_acts_leaves_the_ego_at_rest(text):
+    assert ego_kph(text) == 0.0
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "We were stopping at the lights when a van ran into the back of us.",
+        "A van cut in front of me and I had pulled up hard, but it still hit me.",
+    ],
+    ids=["stopping-progressive", "stop-after-another-acts"],
+)
+def test_a_stop_under_way_or_in_reply_is_no_start_at_rest(text):
+    assert ego_kph(text) != 0.0

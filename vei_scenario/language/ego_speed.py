@@ -161,6 +161,58 @@ def subjectless_sentences(tokens: list[str], speeds: set[int]) -> dict[int, bool
     return out
 
 
+#: The people of a narrator's own party, by what the narrator calls them ("Dad", "my husband", "Mum"): a
+#: closed class. One of them at the wheel, in a story told from inside the car, drives the ego.
+PARTY = frozenset(
+    {"dad", "daddy", "papa", "pa", "father", "mum", "mummy", "mom", "mommy", "mama", "mam", "mother", "grandad",
+     "granddad", "grandpa", "grandma", "granny", "gran", "nan", "nana", "husband", "hubby", "wife", "partner",
+     "brother", "sister", "son", "daughter", "uncle", "aunt", "auntie", "aunty", "cousin", "boyfriend",
+     "girlfriend", "fiance", "fiancee", "friend", "mate", "bhaiya", "didi", "chacha", "mamu"}
+)  # fmt: skip
+#: First-person words: a story told by someone in it.
+_NARRATOR = frozenset({"i", "we", "me", "us", "my", "our"})
+#: Words between a subject and its verb of going ("was", "had been", "was still").
+_AUX = frozenset({"was", "were", "is", "are", "had", "has", "been", "still", "just"})
+
+
+def _party_member(tokens: list[str], k: int, covered: set[int]) -> int:
+    """The index after a person of the narrator's party named at ``k`` ("Dad", "my husband", "Emeka":
+    a name no dictionary knows), 0 where none is named there or the reader reads the words as anything."""
+    j = k + (tokens[k] in ("my", "our"))
+    if j >= len(tokens) or j in covered or not tokens[j].isalpha():
+        return 0
+    if tokens[j] in PARTY or (j == k and not lemmas(tokens[j])):
+        return j + 1
+    return 0
+
+
+def party_at_the_wheel(tokens: list[str], speeds: set[int], covered: set[int]) -> dict[int, bool]:
+    """The speeds (by their index in ``speeds``) said of one of the narrator's party who opens a
+    sentence with a verb of going ("Dad was driving at around 80 km/h", "My husband was doing about 70",
+    "Mum was going about 30 mph"), in a story told in the first person: that person drives the car the
+    narrator is in, the ego, so the speed is the ego's, not that of the road user named before. Words the
+    reader reads as a road user or anything else (``covered``) name no such person."""
+    out: dict[int, bool] = {}
+    if not _NARRATOR & set(tokens):
+        return out
+    for k in range(len(tokens)):
+        if k and tokens[k - 1] not in _OPENERS:
+            continue
+        j = _party_member(tokens, k, covered)
+        if not j:
+            continue
+        while j < len(tokens) and tokens[j] in _AUX:
+            j += 1
+        if j >= len(tokens) or not (_GOING_LEMMAS | {"do"}) & set(lemmas(tokens[j]).get("VERB", ())):
+            continue
+        for n in range(j + 1, min(j + 12, len(tokens))):
+            if tokens[n] in _PHRASE_ENDS:
+                break
+            if n in speeds:
+                out[n] = True
+    return out
+
+
 #: Verbs of contact (lemmas): a speed said with one is the speed at impact.
 CONTACT = frozenset({"hit", "strike", "collide", "clip", "knock", "crash", "smash", "plough", "rear-end", "ram"})
 #: Who does the striking where it is the ego: the narrator, the ego, or no subject after a conjunction

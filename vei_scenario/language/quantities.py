@@ -579,6 +579,20 @@ _STATE_BEFORE = _AUXILIARIES | {"had", "have", "has", "already", "patiently"}
 _BACKGROUND = frozenset({"while", "whilst", "as", "when"})
 
 
+#: Words of standing, as British says them ("we were stood still", "I was standing at the lights").
+_STANDING = frozenset({"stood", "standing"})
+#: The perfect: a stop it makes before the scene opens is done ("I had pulled up", "we'd come to a stop").
+_PERFECT = frozenset({"had", "has", "have"})
+
+
+def _stop_as_state(m) -> bool:
+    """Whether the stop ``m`` says a state the scene opens in, not a stop under way: a still word
+    ("stopped at", "halted"), standing ("stood still"), or a stop done before, in the perfect ("had pulled
+    up", "had come to a stop")."""
+    first = m.words.split()[0]
+    return first in STILL_WORDS or first in _STANDING or (m.prev in _PERFECT and not first.endswith("ing"))
+
+
 def ego_at_rest(clauses) -> bool:
     """Whether the ego is said to stand still as the scene opens: the ego, then a state of standing
     ("was stationary", "were waiting at the lights", "had stopped in a queue"), said before anyone does
@@ -601,7 +615,7 @@ def ego_at_rest(clauses) -> bool:
                 subject = m
             if m.slot == "behaviour" and other:  # (what the ego did before it stood is no one acting on it)
                 acted = True
-            stop = m.slot == "behaviour" and m.value[0] == "stop" and m.words.split()[0] in STILL_WORDS
+            stop = m.slot == "behaviour" and m.value[0] == "stop" and _stop_as_state(m)
             if not k or not (stop or (m.words in STILL_WORDS and m.slot in ("stationary", "unknown_verb"))):
                 continue  # ("was stationary", "were stopped at the junction": a state)
             ego = said[k - 1]

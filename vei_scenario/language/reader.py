@@ -1294,7 +1294,10 @@ def _read(text: str) -> Reading:
     owned = {o for _, ms in clauses for x in ms for o in x.owners}  # mentions a number is said of
     ego_said: float | None = None  # the ego's speed as the grammar says it (no position rule overrides it)
     said_of: list[tuple[_Actor, str, float]] = []  # a road user's speed or gap as the grammar says it, likewise
-    opened = ego_speed.subjectless_sentences(scanned, {m.start for _, ms in clauses for m in ms if m.slot == "speed"})
+    speeds = {m.start for _, ms in clauses for m in ms if m.slot == "speed"}
+    opened = ego_speed.subjectless_sentences(scanned, speeds)  # ("Came round the bend at 40, ...": the narrator's)
+    read_words = {i for _, ms in clauses for m in ms if m.slot != "unknown_verb" for i in range(m.start, m.end)}
+    opened.update(ego_speed.party_at_the_wheel(scanned, speeds, read_words))  # ("Dad was driving at 80 km/h")
     opened.update(ego_speed.opening_participles(scanned))  # ("Heading home at 50 km/h, ...": speeds of opening phrases)
     for link, mentions in clauses:
         named: list[tuple[_Actor | str, str]] = []  # (actor, role) in order: subject, prep, verb, participle
