@@ -186,3 +186,30 @@ def test_a_stop_made_before_anyone_acts_leaves_the_ego_at_rest(text):
 )
 def test_a_stop_under_way_or_in_reply_is_no_start_at_rest(text):
     assert ego_kph(text) != 0.0
+
+
+# --- the speed of a group the ego drives in: "Platoon speed 80 km/h" ---------------------------------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("Ego drives second in a truck platoon behind the lead truck. Platoon speed 80 km/h. A car cuts in.", 80),
+        ("The ego is the last van of a convoy behind a lead van. Convoy speed: 60 km/h. A motorbike cuts in.", 60),
+        ("We ride as a group behind a lead cyclist, group speed about 25 km/h, when a car pulls out in front.", 25),
+        ("The ego follows a lead truck in a platoon; the speed of the platoon is 85 km/h. A van cuts in.", 85),
+    ],
+    ids=["platoon-speed", "convoy-speed", "group-speed", "speed-of-the-platoon"],
+)
+def test_the_speed_of_a_group_the_ego_is_in_is_the_egos(text, kph):
+    assert ego_kph(text) == pytest.approx(kph, abs=0.2)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A truck platoon drives ahead, platoon speed 80 km/h. The ego approaches the platoon from behind.",
+        "Convoy speed 60 km/h. The ego overtakes the convoy on the left.",
+    ],
+    ids=["approaches-the-platoon", "overtakes-the-convoy"],
+)
+def test_the_speed_of_a_group_the_ego_meets_from_outside_is_not_the_egos(text):
+    assert ego_kph(text) is None or ego_kph(text) not in (60.0, 80.0)

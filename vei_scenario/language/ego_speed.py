@@ -213,6 +213,48 @@ def party_at_the_wheel(tokens: list[str], speeds: set[int], covered: set[int]) -
     return out
 
 
+#: Nouns of a formation that goes at one speed, the ego in it ("platoon speed 80 km/h", "group speed 25").
+GROUPS = frozenset({"platoon", "convoy", "group", "peloton", "column", "formation"})
+#: Words between "<group> speed" and its number ("is", ":", "of about").
+_SPEED_LINKS = frozenset({"is", "was", "of", ":", "=", "at", "about", "around", "roughly", "approximately", "~"})
+#: Verbs (lemmas) and prepositions by which the ego meets a formation from outside ("overtakes the
+#: convoy", "approaches the platoon", "behind the group"): its speed is then not the ego's.
+_MEETING = frozenset({"overtake", "pass", "approach", "catch", "reach", "follow", "meet", "join", "pull"})
+_OUTSIDE = frozenset({"behind", "towards", "toward", "past", "alongside", "into"})
+
+
+def _met_from_outside(tokens: list[str], k: int) -> bool:
+    """Whether the formation named at ``k`` is something met from outside ("overtakes the convoy",
+    "approaches the platoon from behind", "behind the group")."""
+    j = k - 1
+    while j >= 0 and tokens[j] in ("the", "a", "this", "that", "truck", "lorry", "car", "bike", "cycling"):
+        j -= 1
+    return j >= 0 and (tokens[j] in _OUTSIDE or bool(_MEETING & set(lemmas(tokens[j]).get("VERB", ()))))
+
+
+def group_speeds(tokens: list[str], speeds: set[int]) -> dict[int, bool]:
+    """The speeds (by their index in ``speeds``) said of a formation the ego goes in ("Platoon speed 80
+    km/h", "group speed about 25 km/h", "the speed of the platoon is 85 km/h"): True, one formation
+    goes at one speed, the ego's; none where the text has the ego meet the formation from outside
+    ("The ego overtakes the convoy"), whose speed is then the others'."""
+    out: dict[int, bool] = {}
+    groups = [k for k, w in enumerate(tokens) if w in GROUPS]
+    if not groups or any(_met_from_outside(tokens, k) for k in groups):
+        return out
+    for k in groups:
+        if k + 1 < len(tokens) and tokens[k + 1] == "speed":
+            j = k + 2
+        elif k >= 3 and tokens[k - 3 : k - 1] == ["speed", "of"]:
+            j = k + 1
+        else:
+            continue
+        while j < len(tokens) and tokens[j] in _SPEED_LINKS:
+            j += 1
+        if j in speeds:
+            out[j] = True
+    return out
+
+
 #: Verbs of contact (lemmas): a speed said with one is the speed at impact.
 CONTACT = frozenset({"hit", "strike", "collide", "clip", "knock", "crash", "smash", "plough", "rear-end", "ram"})
 #: Who does the striking where it is the ego: the narrator, the ego, or no subject after a conjunction

@@ -1298,6 +1298,7 @@ def _read(text: str) -> Reading:
     opened = ego_speed.subjectless_sentences(scanned, speeds)  # ("Came round the bend at 40, ...": the narrator's)
     read_words = {i for _, ms in clauses for m in ms if m.slot != "unknown_verb" for i in range(m.start, m.end)}
     opened.update(ego_speed.party_at_the_wheel(scanned, speeds, read_words))  # ("Dad was driving at 80 km/h")
+    formation = ego_speed.group_speeds(scanned, speeds)  # ("Platoon speed 80 km/h": the ego's formation)
     opened.update(ego_speed.opening_participles(scanned))  # ("Heading home at 50 km/h, ...": speeds of opening phrases)
     for link, mentions in clauses:
         named: list[tuple[_Actor | str, str]] = []  # (actor, role) in order: subject, prep, verb, participle
@@ -1332,6 +1333,10 @@ def _read(text: str) -> Reading:
                 if with_ego == "note":
                     prev = m
                     continue
+            if m.slot == "speed" and formation.get(m.start) and r.ego_speed_mps is None:
+                r.ego_speed_mps = m.value  # ("Platoon speed 80 km/h": not the road user named last)
+                prev = m
+                continue
             whose = [resolved.get(o) if o != Q.UNNAMED else (actors[-1] if actors else None) for o in m.owners]
             if whose and None not in whose and not (m.slot == "distance" and "ego" in whose):
                 for who in whose:  # ("van speed 60 km/h", "cyclist: 12 m ahead, 15 km/h"): whose its grammar says
