@@ -213,3 +213,25 @@ def test_the_speed_of_a_group_the_ego_is_in_is_the_egos(text, kph):
 )
 def test_the_speed_of_a_group_the_ego_meets_from_outside_is_not_the_egos(text):
     assert ego_kph(text) is None or ego_kph(text) not in (60.0, 80.0)
+
+
+# --- the speedometer's reading: "the speedo said 45" ---------------------------------------------------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("The speedo said 45 km/h when a kid ran out in front of me.", 45),
+        ("I had 60 on the speedo when a van pulled out of a side road on my left.", 60),
+        ("My speedometer was showing about 50 km/h as a cyclist swerved into my lane.", 50),
+        ("The kid ran out in front of me, the speedo read 30 km/h at the time.", 30),
+    ],
+    ids=["speedo-said", "on-the-speedo", "speedometer-showing", "speedo-read-after"],
+)
+def test_the_speedometers_reading_is_the_egos_speed(text, kph):
+    assert ego_kph(text) == pytest.approx(kph, abs=0.2)
+
+
+def test_a_speed_said_near_a_speedometer_of_another_road_user_stays_its():
+    r = read("A van overtook me doing 70 km/h, my speedo said 50 km/h.")
+    assert r.actors[0].speed_mps == pytest.approx(70 / 3.6) and ego_kph(
+        "A van overtook me doing 70 km/h, my speedo said 50 km/h."
+    ) == pytest.approx(50)

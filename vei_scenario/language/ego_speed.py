@@ -255,6 +255,30 @@ def group_speeds(tokens: list[str], speeds: set[int]) -> dict[int, bool]:
     return out
 
 
+#: The ego's own dial: what it reads is the ego's speed ("the speedo said 45", "60 on the speedo").
+SPEEDOMETERS = frozenset({"speedo", "speedometer", "speedometre", "dial", "clock"})
+#: Verbs (lemmas) of a dial's reading ("said", "showed", "was reading", "registered").
+_READING = frozenset({"say", "show", "read", "register", "display", "hit", "sit"})
+
+
+def speedometer_reading(tokens: list[str], i: int) -> bool:
+    """Whether the number at ``i`` is what the ego's speedometer reads: "(the|my) speedo said (about)
+    45", "the speedometer was showing 50", or "60 on the speedo" / "on the clock" (a bare number so
+    said is a speed, as "at 60" is; a mileage is thousands and no speed)."""
+    after = tokens[i + 1 : i + 4]
+    if after[:1] == ["on"] and len(after) == 3 and after[1] in ("the", "my", "our") and after[2] in SPEEDOMETERS:
+        return True
+    j = i - 1
+    while j >= 0 and tokens[j] in _NOTE_HEDGES | {"at", "just", "over", "under", "nearly"}:
+        j -= 1
+    k = j
+    while k >= 0 and k > j - 3 and not _READING & set(lemmas(tokens[k]).get("VERB", ())):
+        k -= 1  # (back over "was", "still": "was reading", "was still showing")
+    if k < 0 or k <= j - 3:
+        return False
+    return any(tokens[n] in {"speedo", "speedometer", "speedometre"} for n in range(max(k - 3, 0), k))
+
+
 #: Verbs of contact (lemmas): a speed said with one is the speed at impact.
 CONTACT = frozenset({"hit", "strike", "collide", "clip", "knock", "crash", "smash", "plough", "rear-end", "ram"})
 #: Who does the striking where it is the ego: the narrator, the ego, or no subject after a conjunction

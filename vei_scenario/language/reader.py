@@ -540,6 +540,7 @@ def _number(tokens: list[str], i: int, imperial: bool = False) -> tuple[str, flo
         tokens, i - 1
     )  # ("speeds up to 80": the speed it reaches)
     at = prev in ("at", "doing", "about", "around", "of") or to_changed or Q.after_at(tokens, i) or Q.held_on(tokens, i)
+    at = at or ego_speed.speedometer_reading(tokens, i)  # ("60 on the speedo", "the speedo said 45")
     if at and 3 <= value <= 250:
         # "at 120", "at a steady 50": in the unit said before
         return "speed", value * Q.carried_unit(tokens, i, imperial), 1
@@ -1298,7 +1299,8 @@ def _read(text: str) -> Reading:
     opened = ego_speed.subjectless_sentences(scanned, speeds)  # ("Came round the bend at 40, ...": the narrator's)
     read_words = {i for _, ms in clauses for m in ms if m.slot != "unknown_verb" for i in range(m.start, m.end)}
     opened.update(ego_speed.party_at_the_wheel(scanned, speeds, read_words))  # ("Dad was driving at 80 km/h")
-    formation = ego_speed.group_speeds(scanned, speeds)  # ("Platoon speed 80 km/h": the ego's formation)
+    egos_own = ego_speed.group_speeds(scanned, speeds)  # ("Platoon speed 80 km/h": the ego's formation)
+    egos_own.update({i: True for i in speeds if ego_speed.speedometer_reading(scanned, i)})  # ("speedo said 45")
     opened.update(ego_speed.opening_participles(scanned))  # ("Heading home at 50 km/h, ...": speeds of opening phrases)
     for link, mentions in clauses:
         named: list[tuple[_Actor | str, str]] = []  # (actor, role) in order: subject, prep, verb, participle
@@ -1333,8 +1335,8 @@ def _read(text: str) -> Reading:
                 if with_ego == "note":
                     prev = m
                     continue
-            if m.slot == "speed" and formation.get(m.start) and r.ego_speed_mps is None:
-                r.ego_speed_mps = m.value  # ("Platoon speed 80 km/h": not the road user named last)
+            if m.slot == "speed" and egos_own.get(m.start) and r.ego_speed_mps is None:
+                r.ego_speed_mps = m.value  # ("Platoon speed 80 km/h", "the speedo said 45": not the one named last)
                 prev = m
                 continue
             whose = [resolved.get(o) if o != Q.UNNAMED else (actors[-1] if actors else None) for o in m.owners]
