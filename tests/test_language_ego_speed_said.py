@@ -235,3 +235,8 @@ def test_a_speed_said_near_a_speedometer_of_another_road_user_stays_its():
     assert r.actors[0].speed_mps == pytest.approx(70 / 3.6) and ego_kph(
         "A van overtook me doing 70 km/h, my speedo said 50 km/h."
     ) == pytest.approx(50)
+
+
+def test_a_participle_before_a_road_user_is_its_modifier_not_the_narrators_verb():
+    r = read("Parked car pulls out at 20 km/h in front of the ego.")
+    assert r.actors[0].speed_mps == pytest.approx(20 / 3.6) and r.ego_speed_mps is None

@@ -128,17 +128,19 @@ def _past_verb(word: str) -> bool:
     return bool(verbs) and word not in verbs and not word.endswith(("s", "ing")) and not {"NOUN", "ADJ"} & set(found)
 
 
-def subjectless_sentences(tokens: list[str], speeds: set[int]) -> dict[int, bool]:
+def subjectless_sentences(tokens: list[str], speeds: set[int], road_users: set[int]) -> dict[int, bool]:
     """The speeds (by their index in ``speeds``) said in a sentence that opens with a verb in the past
     tense and no subject, and in the verbs joined to it ("Came round the bend at 40 km/h, ...", "Waited
     till it was clear and passed them wide doing about 60."): True, the speed of the one the sentence
     leaves out, who tells the story or whom the notes are about, as a participle that opens a sentence
     is (:func:`opening_participles`); False in a passive ("Overtaken at 90 km/h by a motorbike", "Hit
     from behind by a van doing 30"): the speed of the agent named after "by". A clause of its own inside
-    the sentence ("till a bus pulled out at 30") keeps its speeds to its subject."""
+    the sentence ("till a bus pulled out at 30") keeps its speeds to its subject, and a participle right
+    before a road user (``road_users``: the indices of the words that name one) is its modifier, not a
+    verb ("Parked car pulls out at 20 km/h": the car's)."""
     out: dict[int, bool] = {}
     for k, w in enumerate(tokens):
-        if (k and tokens[k - 1] not in _OPENERS) or not _past_verb(w):
+        if (k and tokens[k - 1] not in _OPENERS) or k + 1 in road_users or not _past_verb(w):
             continue
         found: list[int] = []
         passive, own = False, True

@@ -1296,7 +1296,8 @@ def _read(text: str) -> Reading:
     ego_said: float | None = None  # the ego's speed as the grammar says it (no position rule overrides it)
     said_of: list[tuple[_Actor, str, float]] = []  # a road user's speed or gap as the grammar says it, likewise
     speeds = {m.start for _, ms in clauses for m in ms if m.slot == "speed"}
-    opened = ego_speed.subjectless_sentences(scanned, speeds)  # ("Came round the bend at 40, ...": the narrator's)
+    road_users = {i for _, ms in clauses for m in ms if m.slot == "actor" for i in range(m.start, m.end)}
+    opened = ego_speed.subjectless_sentences(scanned, speeds, road_users)  # ("Came round the bend at 40, ...")
     read_words = {i for _, ms in clauses for m in ms if m.slot != "unknown_verb" for i in range(m.start, m.end)}
     opened.update(ego_speed.party_at_the_wheel(scanned, speeds, read_words))  # ("Dad was driving at 80 km/h")
     egos_own = ego_speed.group_speeds(scanned, speeds)  # ("Platoon speed 80 km/h": the ego's formation)
