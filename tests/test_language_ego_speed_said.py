@@ -240,3 +240,31 @@ def test_a_speed_said_near_a_speedometer_of_another_road_user_stays_its():
 def test_a_participle_before_a_road_user_is_its_modifier_not_the_narrators_verb():
     r = read("Parked car pulls out at 20 km/h in front of the ego.")
     assert r.actors[0].speed_mps == pytest.approx(20 / 3.6) and r.ego_speed_mps is None
+
+
+# --- a range said bare or with a slash: its middle ----------------------------------------------------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("I was doing somewhere around 30-35 when a kid ran out in front of me.", 32.5),
+        ("I was going between 40 and 50 when a dog ran out in front of me.", 45),
+        ("We were travelling 60 to 70 on the main road when a deer jumped out in front of us.", 65),
+        ("I was doing 30/40 km/h when a kid ran out in front of me.", 35),
+    ],
+    ids=["around-dash", "between-and", "travelling-to", "slash-with-unit"],
+)
+def test_a_range_of_the_egos_speed_is_its_middle(text, kph):
+    assert ego_kph(text) == pytest.approx(kph, abs=0.2)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "It happened on 16/03 when a kid ran out in front of me.",
+        "I was driving home at 5 and 10 m ahead of me a kid ran out.",
+        "I was riding at 2 to 300 metres from the junction when a kid ran out in front of me.",
+    ],
+    ids=["date", "and-without-between", "to-a-measure"],
+)
+def test_a_range_of_no_speed_is_not_read_as_one(text):
+    assert ego_kph(text) not in (7.5, 151.0, 17.5)
