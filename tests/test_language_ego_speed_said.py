@@ -268,3 +268,8 @@ def test_a_range_of_the_egos_speed_is_its_middle(text, kph):
 )
 def test_a_range_of_no_speed_is_not_read_as_one(text):
     assert ego_kph(text) not in (7.5, 151.0, 17.5)
+
+
+def test_a_sentence_without_subject_of_following_keeps_the_speed_to_the_one_followed():
+    r = read("Followed a bus at 30 mph for a mile, then a cyclist pulled out in front of me.")
+    assert r.actors[0].speed_mps == pytest.approx(30 * 0.44704)

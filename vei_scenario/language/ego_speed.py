@@ -119,6 +119,11 @@ _GOES_ON = frozenset({"at", "doing", "going", "travelling", "traveling", "about"
 _AGENT_OPENERS = frozenset({"a", "an", "the", "some", "one", "this", "another"})
 
 
+#: Verbs (lemmas) of following: the speed said with one is the followed road user's, and the ego's only
+#: through it, as the reader's reading of following has it.
+_FOLLOWING_VERBS = frozenset({"follow", "tail", "tailgate", "trail"})
+
+
 def _past_verb(word: str) -> bool:
     """Whether ``word`` is only a verb in the past tense ("approached", "came", "waited"): not its
     plain form ("brake"), the third person ("brakes"), a participle of going on ("braking"), nor a word
@@ -142,6 +147,8 @@ def subjectless_sentences(tokens: list[str], speeds: set[int], road_users: set[i
     for k, w in enumerate(tokens):
         if (k and tokens[k - 1] not in _OPENERS) or k + 1 in road_users or not _past_verb(w):
             continue
+        if _FOLLOWING_VERBS & set(lemmas(w).get("VERB", ())):
+            continue  # ("Followed a bus at 30 mph": the bus's speed, which the one following keeps)
         found: list[int] = []
         passive, own = False, True
         for j in range(k + 1, min(k + 40, len(tokens))):
