@@ -104,8 +104,6 @@ _BARE_RANGE = re.compile(
     r"(?!\s*(?:[:.]\d|am\b|pm\b|a\.m|p\.m|hours?\b|hrs\b|o'clock|%|years?\b|yrs\b|mins?\b|minutes\b|seconds?\b"
     r"|s\b|m\b|metres\b|meters\b|feet\b|ft\b|yards?\b|car\b|km\b|miles?\b))"
 )
-#: "30/40 mph": two speeds said with a slash, a range.
-_SLASHED = re.compile(r"\b(\d+(?:\.\d+)?)\s*/\s*(\d+(?:\.\d+)?)\s*(?=(?:km/h|kph|kmh|mph)\b)")
 
 
 def _bare_range(m: re.Match) -> str:
@@ -148,14 +146,14 @@ def ranges(text: str) -> str:
     """Each range of a quantity in the normalised ``text`` as its middle, approximately ("20-30 mph":
     "about 25 mph"): a writer giving a range means a value within it, and the middle is the one that
     errs least; so is a choice of two ("50 or 60 km/h", "at 40 to 50 km/h"). "From 50 to 20 km/h" is
-    a change of speed, not a range, and stays; a range said bare after a verb of going ("doing 30-35") or
-    with a slash ("30/40 mph") is one too. A number hedged after it ("40ish mph", "30 or so mph",
+    a change of speed, not a range, and stays; a range said bare after a verb of going ("doing 30-35") is
+    one too ("50/20 km/h" is no range: a test's two speeds, the ego's and the target's). A number hedged
+    after it ("40ish mph", "30 or so mph",
     "30 mph-ish") or said by its decade ("the high 60s mph", "40-something mph") is about that number."""
     text = _UNIT_ISH.sub(r"\1", _HEDGED_AFTER.sub(r"about \1", text))
     text = _SOMETHING.sub(lambda m: f"about {m.group(1)}5", text)
     text = _CHOICE_TO.sub(lambda m: f"{m.group(1)} about {(float(m.group(2)) + float(m.group(3))) / 2:g}", text)
     text = _BARE_RANGE.sub(_bare_range, text)
-    text = _SLASHED.sub(lambda m: f"about {(float(m.group(1)) + float(m.group(2))) / 2:g} ", text)
     text = _DECADE.sub(_decade, text)
 
     def middle(m: re.Match) -> str:
