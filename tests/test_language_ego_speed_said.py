@@ -46,8 +46,10 @@ def test_a_verb_joined_to_a_sentence_without_subject_shares_it(text, kph):
         ("I was waiting at the lights. Hit from behind by a van doing 30 km/h.", 30),
         ("I was parked up. Overtaken at 90 km/h by a motorbike that then braked in front of me.", 90),
         ("I slowed down. A cyclist crossed in front of me at 20 km/h.", 20),
+        ("Would you set up a cyclist riding by the kerb at 15 km/h while I pass it at 40 km/h?", 15),
+        ("Could you make one where a scooter going at 20 km/h is overtaken by me at 45 km/h?", 20),
     ],
-    ids=["passive-hit-by", "passive-overtaken", "subject-named"],
+    ids=["passive-hit-by", "passive-overtaken", "subject-named", "request-would", "request-could"],
 )
 def test_a_passive_or_a_named_subject_keeps_the_speed_off_the_ego(text, other_kph):
     assert ego_kph(text) != pytest.approx(other_kph, abs=0.2)

@@ -126,11 +126,17 @@ _FOLLOWING_VERBS = frozenset({"follow", "tail", "tailgate", "trail"})
 
 def _past_verb(word: str) -> bool:
     """Whether ``word`` is only a verb in the past tense ("approached", "came", "waited"): not its
-    plain form ("brake"), the third person ("brakes"), a participle of going on ("braking"), nor a word
-    that is also a noun or an adjective ("left", "hit", "stuck": a sentence may open with those as such)."""
+    plain form ("brake"), the third person ("brakes"), a participle of going on ("braking"), a word
+    that is also a noun or an adjective ("left", "hit", "stuck": a sentence may open with those as such),
+    nor an auxiliary ("Could you make one where ...", "Did a van ...": a question or a request)."""
     found = lemmas(word)
     verbs = found.get("VERB", ())
-    return bool(verbs) and word not in verbs and not word.endswith(("s", "ing")) and not {"NOUN", "ADJ"} & set(found)
+    return (
+        bool(verbs)
+        and word not in verbs
+        and not word.endswith(("s", "ing"))
+        and not {"NOUN", "ADJ", "AUX"} & set(found)
+    )
 
 
 def subjectless_sentences(tokens: list[str], speeds: set[int], road_users: set[int]) -> dict[int, bool]:
