@@ -108,6 +108,192 @@ def opening_participles(tokens: list[str]) -> dict[int, bool]:
     return out
 
 
+#: Words that open a clause of its own inside a sentence ("Waited till a bus had gone", "... when a van
+#: pulled out"): its speeds are its subject's, not those of the sentence's left-out subject.
+_SUBORDINATORS = frozenset({"till", "until", "when", "while", "whilst", "as", "before", "after", "because", "since"})
+#: Words that join one more verb to a sentence ("... and passed them", "..., then overtook it").
+_JOINS = frozenset({",", "and", "but"})
+#: Words after a comma that go on with the same verb's phrase ("on the M6, at 60", "..., doing 60").
+_GOES_ON = frozenset({"at", "doing", "going", "travelling", "traveling", "about", "around", "still"})
+#: Determiners after "by" that name an agent ("hit by a van", "overtaken by the bus"): a passive.
+_AGENT_OPENERS = frozenset({"a", "an", "the", "some", "one", "this", "another"})
+
+
+#: Verbs (lemmas) of following: the speed said with one is the followed road user's, and the ego's only
+#: through it, as the reader's reading of following has it.
+_FOLLOWING_VERBS = frozenset({"follow", "tail", "tailgate", "trail"})
+
+
+def _past_verb(word: str) -> bool:
+    """Whether ``word`` is only a verb in the past tense ("approached", "came", "waited"): not its
+    plain form ("brake"), the third person ("brakes"), a participle of going on ("braking"), a word
+    that is also a noun or an adjective ("left", "hit", "stuck": a sentence may open with those as such),
+    nor an auxiliary ("Could you make one where ...", "Did a van ...": a question or a request)."""
+    found = lemmas(word)
+    verbs = found.get("VERB", ())
+    return (
+        bool(verbs)
+        and word not in verbs
+        and not word.endswith(("s", "ing"))
+        and not {"NOUN", "ADJ", "AUX"} & set(found)
+    )
+
+
+def subjectless_sentences(tokens: list[str], speeds: set[int], road_users: set[int]) -> dict[int, bool]:
+    """The speeds (by their index in ``speeds``) said in a sentence that opens with a verb in the past
+    tense and no subject, and in the verbs joined to it ("Came round the bend at 40 km/h, ...", "Waited
+    till it was clear and passed them wide doing about 60."): True, the speed of the one the sentence
+    leaves out, who tells the story or whom the notes are about, as a participle that opens a sentence
+    is (:func:`opening_participles`); False in a passive ("Overtaken at 90 km/h by a motorbike", "Hit
+    from behind by a van doing 30"): the speed of the agent named after "by". A clause of its own inside
+    the sentence ("till a bus pulled out at 30") keeps its speeds to its subject, and a participle right
+    before a road user (``road_users``: the indices of the words that name one) is its modifier, not a
+    verb ("Parked car pulls out at 20 km/h": the car's)."""
+    out: dict[int, bool] = {}
+    for k, w in enumerate(tokens):
+        if (k and tokens[k - 1] not in _OPENERS) or k + 1 in road_users or not _past_verb(w):
+            continue
+        if _FOLLOWING_VERBS & set(lemmas(w).get("VERB", ())):
+            continue  # ("Followed a bus at 30 mph": the bus's speed, which the one following keeps)
+        found: list[int] = []
+        passive, own = False, True
+        for j in range(k + 1, min(k + 40, len(tokens))):
+            t = tokens[j]
+            if t in SENTENCE_END:
+                break
+            if t in _SUBORDINATORS:
+                own = False
+            elif t in _JOINS:
+                after = tokens[j + 1] if j + 1 < len(tokens) else ""
+                after = tokens[j + 2] if after == "then" and j + 2 < len(tokens) else after
+                own = _past_verb(after) or (own and t == "," and after in _GOES_ON)
+            elif own and t == "by" and j + 1 < len(tokens) and tokens[j + 1] in _AGENT_OPENERS:
+                passive = True
+            elif own and j in speeds:
+                found.append(j)
+        for j in found:
+            out[j] = not passive
+    return out
+
+
+#: The people of a narrator's own party, by what the narrator calls them ("Dad", "my husband", "Mum"): a
+#: closed class. One of them at the wheel, in a story told from inside the car, drives the ego.
+PARTY = frozenset(
+    {"dad", "daddy", "papa", "pa", "father", "mum", "mummy", "mom", "mommy", "mama", "mam", "mother", "grandad",
+     "granddad", "grandpa", "grandma", "granny", "gran", "nan", "nana", "husband", "hubby", "wife", "partner",
+     "brother", "sister", "son", "daughter", "uncle", "aunt", "auntie", "aunty", "cousin", "boyfriend",
+     "girlfriend", "fiance", "fiancee", "friend", "mate", "bhaiya", "didi", "chacha", "mamu"}
+)  # fmt: skip
+#: First-person words: a story told by someone in it.
+_NARRATOR = frozenset({"i", "we", "me", "us", "my", "our"})
+#: Words between a subject and its verb of going ("was", "had been", "was still").
+_AUX = frozenset({"was", "were", "is", "are", "had", "has", "been", "still", "just"})
+
+
+def _party_member(tokens: list[str], k: int, covered: set[int]) -> int:
+    """The index after a person of the narrator's party named at ``k`` ("Dad", "my husband", "Emeka":
+    a name no dictionary knows), 0 where none is named there or the reader reads the words as anything."""
+    j = k + (tokens[k] in ("my", "our"))
+    if j >= len(tokens) or j in covered or not tokens[j].isalpha():
+        return 0
+    if tokens[j] in PARTY or (j == k and not lemmas(tokens[j])):
+        return j + 1
+    return 0
+
+
+def party_at_the_wheel(tokens: list[str], speeds: set[int], covered: set[int]) -> dict[int, bool]:
+    """The speeds (by their index in ``speeds``) said of one of the narrator's party who opens a
+    sentence with a verb of going ("Dad was driving at around 80 km/h", "My husband was doing about 70",
+    "Mum was going about 30 mph"), in a story told in the first person: that person drives the car the
+    narrator is in, the ego, so the speed is the ego's, not that of the road user named before. Words the
+    reader reads as a road user or anything else (``covered``) name no such person."""
+    out: dict[int, bool] = {}
+    if not _NARRATOR & set(tokens):
+        return out
+    for k in range(len(tokens)):
+        if k and tokens[k - 1] not in _OPENERS:
+            continue
+        j = _party_member(tokens, k, covered)
+        if not j:
+            continue
+        while j < len(tokens) and tokens[j] in _AUX:
+            j += 1
+        if j >= len(tokens) or not (_GOING_LEMMAS | {"do"}) & set(lemmas(tokens[j]).get("VERB", ())):
+            continue
+        for n in range(j + 1, min(j + 12, len(tokens))):
+            if tokens[n] in _PHRASE_ENDS:
+                break
+            if n in speeds:
+                out[n] = True
+    return out
+
+
+#: Nouns of a formation that goes at one speed, the ego in it ("platoon speed 80 km/h", "group speed 25").
+GROUPS = frozenset({"platoon", "convoy", "group", "peloton", "column", "formation"})
+#: Words between "<group> speed" and its number ("is", ":", "of about").
+_SPEED_LINKS = frozenset({"is", "was", "of", ":", "=", "at", "about", "around", "roughly", "approximately", "~"})
+#: Verbs (lemmas) and prepositions by which the ego meets a formation from outside ("overtakes the
+#: convoy", "approaches the platoon", "behind the group"): its speed is then not the ego's.
+_MEETING = frozenset({"overtake", "pass", "approach", "catch", "reach", "follow", "meet", "join", "pull"})
+_OUTSIDE = frozenset({"behind", "towards", "toward", "past", "alongside", "into"})
+
+
+def _met_from_outside(tokens: list[str], k: int) -> bool:
+    """Whether the formation named at ``k`` is something met from outside ("overtakes the convoy",
+    "approaches the platoon from behind", "behind the group")."""
+    j = k - 1
+    while j >= 0 and tokens[j] in ("the", "a", "this", "that", "truck", "lorry", "car", "bike", "cycling"):
+        j -= 1
+    return j >= 0 and (tokens[j] in _OUTSIDE or bool(_MEETING & set(lemmas(tokens[j]).get("VERB", ()))))
+
+
+def group_speeds(tokens: list[str], speeds: set[int]) -> dict[int, bool]:
+    """The speeds (by their index in ``speeds``) said of a formation the ego goes in ("Platoon speed 80
+    km/h", "group speed about 25 km/h", "the speed of the platoon is 85 km/h"): True, one formation
+    goes at one speed, the ego's; none where the text has the ego meet the formation from outside
+    ("The ego overtakes the convoy"), whose speed is then the others'."""
+    out: dict[int, bool] = {}
+    groups = [k for k, w in enumerate(tokens) if w in GROUPS]
+    if not groups or any(_met_from_outside(tokens, k) for k in groups):
+        return out
+    for k in groups:
+        if k + 1 < len(tokens) and tokens[k + 1] == "speed":
+            j = k + 2
+        elif k >= 3 and tokens[k - 3 : k - 1] == ["speed", "of"]:
+            j = k + 1
+        else:
+            continue
+        while j < len(tokens) and tokens[j] in _SPEED_LINKS:
+            j += 1
+        if j in speeds:
+            out[j] = True
+    return out
+
+
+#: The ego's own dial: what it reads is the ego's speed ("the speedo said 45", "60 on the speedo").
+SPEEDOMETERS = frozenset({"speedo", "speedometer", "speedometre", "dial", "clock"})
+#: Verbs (lemmas) of a dial's reading ("said", "showed", "was reading", "registered").
+_READING = frozenset({"say", "show", "read", "register", "display", "hit", "sit"})
+
+
+def speedometer_reading(tokens: list[str], i: int) -> bool:
+    """Whether the number at ``i`` is what the ego's speedometer reads: "(the|my) speedo said (about)
+    45", "the speedometer was showing 50", or "60 on the speedo" / "on the clock" (a bare number so
+    said is a speed, as "at 60" is; a mileage is thousands and no speed)."""
+    after = tokens[i + 1 : i + 4]
+    if after[:1] == ["on"] and len(after) == 3 and after[1] in ("the", "my", "our") and after[2] in SPEEDOMETERS:
+        return True
+    j = i - 1
+    while j >= 0 and tokens[j] in _NOTE_HEDGES | {"at", "just", "over", "under", "nearly"}:
+        j -= 1
+    k = j
+    while k >= 0 and k > j - 3 and not _READING & set(lemmas(tokens[k]).get("VERB", ())):
+        k -= 1  # (back over "was", "still": "was reading", "was still showing")
+    if k < 0 or k <= j - 3:
+        return False
+    return any(tokens[n] in {"speedo", "speedometer", "speedometre"} for n in range(max(k - 3, 0), k))
+
+
 #: Verbs of contact (lemmas): a speed said with one is the speed at impact.
 CONTACT = frozenset({"hit", "strike", "collide", "clip", "knock", "crash", "smash", "plough", "rear-end", "ram"})
 #: Who does the striking where it is the ego: the narrator, the ego, or no subject after a conjunction
@@ -243,17 +429,23 @@ def _goes_in_its_sentence(tokens: list[str], k: int) -> bool:
     return False
 
 
+#: What a follower does that keeps it behind the ego: following, and going on ("never overtook").
+_FOLLOWING = frozenset({"follow_vehicle", "keep_going"})
+
+
 def kept_by_a_follower(actors) -> float | None:
     """The speed (m/s) of a road user that follows the ego ("a van tailgated me at 60 mph", "a lorry
     followed us closely at 80 km/h"): one that keeps behind the ego keeps its pace, so the speed said of
     it is the ego's too. None where no such follower has a speed, or where another road user is ahead
     (the follower may follow that one), or where it does more than follow ("follows the ego, then
-    overtakes it at 25 km/h": the speed it overtakes at, faster). ``actors``: the reader's, with
-    ``relation``, ``behaviours`` and ``speed_mps``."""
+    overtakes it at 25 km/h": the speed it overtakes at, faster). One that "never overtook" follows all
+    the same: an overtake denied is read as going on. ``actors``: the reader's, with ``relation``,
+    ``behaviours`` and ``speed_mps``."""
     if any(a.relation == "ahead" for a in actors):
         return None
     for a in actors:
-        only_follows = bool(a.behaviours) and all(b[0] == "follow_vehicle" for b in a.behaviours)
+        said = {b[0] for b in a.behaviours}
+        only_follows = "follow_vehicle" in said and said <= _FOLLOWING
         if a.relation == "behind" and only_follows and a.speed_mps:
             return a.speed_mps
     return None

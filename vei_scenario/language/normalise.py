@@ -40,11 +40,17 @@ _UNIT_AFTER = re.compile(
 #: a bare number after "at", "doing", "about" as km/h.
 _SPEED_BEFORE = re.compile(r"\b(at|doing|about|like|going|around|roughly|approximately)\s+$")
 
+#: Thousands a vehicle has done ("has about 380k on it", "with 200k on the clock"): a mileage, which "k"
+#: after a number of a verb of having says, and no speed ("doing 100k" is one).
+_MILEAGE = re.compile(
+    r"\b((?:has|have|had|having|with|got)(?:\s+(?:about|around|over|nearly|almost|just|only|well))*\s+)(\d+)\s*k\b(?![/'])"
+)
 #: Spelt-out or unusual speed units, as the reader's symbols.
 _UNITS = [
     (re.compile(r"\bmiles?\s+(?:an|per|a)\s+hour\b|\bmi/h\b|\bm\.p\.h\.?"), "mph"),
     (re.compile(r"\b(?:kilomet(?:er|re)s?|km)\s+(?:an|per|a)\s+hour\b|\bkm/hr?\b|\bkmph\b|\bkm/std\b"), "km/h"),
     (re.compile(r"\bmet(?:er|re)s?\s+(?:per|a)\s+second\b|\bmps\b"), "m/s"),
+    (_MILEAGE, r"\1\g<2>000"),  # ("has about 380k on it": thousands had, no speed)
     (re.compile(r"(\d)\s*(?:kph|kmh|k's|ks|k)(?![\w'])"), r"\1 km/h"),  # ("50 k's": spoken km/h)
     (re.compile(r"m/s\s*\^\s*2|m/s/s|m/sec\^?2"), "m/s²"),  # ("decel 6 m/s^2": an acceleration)
     (re.compile(r"(\d)(km/h|mph|m/s|m)\b"), r"\1 \2"),

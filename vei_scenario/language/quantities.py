@@ -23,6 +23,7 @@ import re
 from collections.abc import Callable
 
 from vei_scenario.language import vocabulary as V
+from vei_scenario.language.lemmas import lemmas
 
 #: Heads that make a number no speed of travel nor a starting gap: a measure across the road ("a lateral
 #: velocity of 1 m/s", "1.5 m clearance"), how far one sees ("visibility reduced to 150 m"), or the
@@ -94,6 +95,26 @@ _CHOICE_TO = re.compile(
     r"\b(at|about|around|roughly|approximately|approx|doing|going|travelling|traveling|of)\s+"
     r"(\d+(?:\.\d+)?)\s+to\s+(\d+(?:\.\d+)?)" + _UNITS_AHEAD
 )
+#: "doing 30-35", "going between 40 and 50", "travelling 60 to 70": a range said bare after a verb of
+#: going (or "at"), its unit the text's, with no clock, age or measure after it ("at 3-4 pm").
+_BARE_RANGE = re.compile(
+    r"\b(doing|going|travelling|traveling|driving|riding|cruising|at)"
+    r"((?:\s+(?:somewhere|about|around|roughly|approximately|approx|maybe|like|between))*)\s+"
+    r"(\d+(?:\.\d+)?)\s*(-|\u2013|\u2014|/|to|and)\s*(\d+(?:\.\d+)?)\b"
+    r"(?!\s*(?:[:.]\d|am\b|pm\b|a\.m|p\.m|hours?\b|hrs\b|o'clock|%|years?\b|yrs\b|mins?\b|minutes\b|seconds?\b"
+    r"|s\b|m\b|metres\b|meters\b|feet\b|ft\b|yards?\b|car\b|km\b|miles?\b))"
+)
+
+
+def _bare_range(m: re.Match) -> str:
+    """ "doing about 32.5" for "doing 30-35": the middle of a range of speeds said bare; as written
+    where it is none ("at 5 and 10 m later": "and" makes a range only after "between"; "2 to 300")."""
+    low, high = float(m.group(3)), float(m.group(5))
+    if (m.group(4) == "and" and "between" not in m.group(2)) or not 3 <= low < high <= 250 or high > 2 * low + 10:
+        return m.group(0)
+    return f"{m.group(1)} about {(low + high) / 2:g}"
+
+
 #: "30 mph-ish": a hedge on the unit.
 _UNIT_ISH = re.compile(r"\b(km/h|kph|kmh|mph|m/s)-?ish\b")
 #: "the high 60s mph", "doing the mid-40s": a speed said by its decade (an age is not: "in his mid-40s").
@@ -125,11 +146,14 @@ def ranges(text: str) -> str:
     """Each range of a quantity in the normalised ``text`` as its middle, approximately ("20-30 mph":
     "about 25 mph"): a writer giving a range means a value within it, and the middle is the one that
     errs least; so is a choice of two ("50 or 60 km/h", "at 40 to 50 km/h"). "From 50 to 20 km/h" is
-    a change of speed, not a range, and stays. A number hedged after it ("40ish mph", "30 or so mph",
+    a change of speed, not a range, and stays; a range said bare after a verb of going ("doing 30-35") is
+    one too ("50/20 km/h" is no range: a test's two speeds, the ego's and the target's). A number hedged
+    after it ("40ish mph", "30 or so mph",
     "30 mph-ish") or said by its decade ("the high 60s mph", "40-something mph") is about that number."""
     text = _UNIT_ISH.sub(r"\1", _HEDGED_AFTER.sub(r"about \1", text))
     text = _SOMETHING.sub(lambda m: f"about {m.group(1)}5", text)
     text = _CHOICE_TO.sub(lambda m: f"{m.group(1)} about {(float(m.group(2)) + float(m.group(3))) / 2:g}", text)
+    text = _BARE_RANGE.sub(_bare_range, text)
     text = _DECADE.sub(_decade, text)
 
     def middle(m: re.Match) -> str:
@@ -198,6 +222,21 @@ def after_at(tokens: list[str], i: int) -> bool:
     """Whether a bare number at ``i`` follows "at" (or "doing") past an article and one modifier
     ("at a steady 50", "doing a brisk 30"): a speed, as "at 50" is."""
     return i >= 3 and tokens[i - 2] in _ARTICLES and tokens[i - 3] in ("at", "doing") and tokens[i - 1].isalpha()
+
+
+#: Verbs of keeping a speed "on" a number (lemmas): "sitting on 110", "sat on 70", "cruising on 100".
+_HELD_ON = frozenset({"sit", "cruise", "hold", "stay", "keep"})
+
+
+def held_on(tokens: list[str], i: int) -> bool:
+    """Whether the bare number at ``i`` is one a driver sits on ("sitting on 110 in the left lane",
+    "we sat on 90 the whole way"): a speed held, as the speedometer shows it. Only where the number ends
+    its phrase or a place follows ("sitting on 3 points", "sat on bus 100" are no speeds)."""
+    if i < 2 or tokens[i - 1] != "on":
+        return False
+    nxt = tokens[i + 1] if i + 1 < len(tokens) else ""
+    verbs = set(lemmas(tokens[i - 2]).get("VERB", ()))
+    return bool(_HELD_ON & verbs) and (nxt in _NOTE_ENDS or nxt in WHERE_AFTER_SPEED or nxt in ("the", "all"))
 
 
 #: Words after which a number ends its note ("ego 50, ...", "ego 50 and a van ...").
@@ -563,6 +602,20 @@ _STATE_BEFORE = _AUXILIARIES | {"had", "have", "has", "already", "patiently"}
 _BACKGROUND = frozenset({"while", "whilst", "as", "when"})
 
 
+#: Words of standing, as British says them ("we were stood still", "I was standing at the lights").
+_STANDING = frozenset({"stood", "standing"})
+#: The perfect: a stop it makes before the scene opens is done ("I had pulled up", "we'd come to a stop").
+_PERFECT = frozenset({"had", "has", "have"})
+
+
+def _stop_as_state(m) -> bool:
+    """Whether the stop ``m`` says a state the scene opens in, not a stop under way: a still word
+    ("stopped at", "halted"), standing ("stood still"), or a stop done before, in the perfect ("had pulled
+    up", "had come to a stop")."""
+    first = m.words.split()[0]
+    return first in STILL_WORDS or first in _STANDING or (m.prev in _PERFECT and not first.endswith("ing"))
+
+
 def ego_at_rest(clauses) -> bool:
     """Whether the ego is said to stand still as the scene opens: the ego, then a state of standing
     ("was stationary", "were waiting at the lights", "had stopped in a queue"), said before anyone does
@@ -570,6 +623,7 @@ def ego_at_rest(clauses) -> bool:
     while waiting is a common report, and a stop the ego makes in reply ("... and I was stopped just
     in time") is no start at rest. ``clauses``: the reader's (link, mentions)."""
     acted = other = False
+    subject = None  # (the road user named last as a subject: whom "it" says again)
     for _, mentions in clauses:
         said = [
             m
@@ -580,16 +634,40 @@ def ego_at_rest(clauses) -> bool:
         ]
         for k, m in enumerate(said):
             other = other or (m.slot == "actor" and m.value != "ego")
+            if m.slot == "actor" and m.prev in _SUBJECT_BEFORE:
+                subject = m
             if m.slot == "behaviour" and other:  # (what the ego did before it stood is no one acting on it)
                 acted = True
-            stop = m.slot == "behaviour" and m.value[0] == "stop" and m.words.split()[0] in STILL_WORDS
+            stop = m.slot == "behaviour" and m.value[0] == "stop" and _stop_as_state(m)
             if not k or not (stop or (m.words in STILL_WORDS and m.slot in ("stationary", "unknown_verb"))):
                 continue  # ("was stationary", "were stopped at the junction": a state)
             ego = said[k - 1]
+            if _it_the_egos_vehicle(ego, subject):
+                ego = subject  # ("My car got hit while it was parked": the car, said again)
             if ego.slot == "actor" and ego.value == "ego" and (m.prev in _STATE_BEFORE or _verbless_state(ego, m)):
                 if not acted or ego.prev in _BACKGROUND:
                     return True
     return False
+
+
+#: Words before a road user named as the subject of its clause ("My car ...", "..., while the van ...");
+#: after a preposition it is an object ("hit by a cyclist", "behind the bus").
+_SUBJECT_BEFORE = frozenset({"", ".", ";", ":", ",", "!", "?", "and", "but", "then", "while", "whilst", "when", "as"})
+#: The ego said as the person who tells the story: "it" never says them again.
+_EGO_AS_PERSON = frozenset({"i", "we", "me", "us"})
+
+
+def _it_the_egos_vehicle(pronoun, subject) -> bool:
+    """Whether the mention ``pronoun`` is "it" said of the ego's vehicle: the subject named last is the
+    ego, named as a vehicle ("My car got damaged while it was stopped", "Our van was hit while it was
+    parked"), not as a person ("I ..."), and no road user was a subject since."""
+    return (
+        pronoun.slot == "pronoun"
+        and pronoun.words == "it"
+        and subject is not None
+        and subject.value == "ego"
+        and subject.words not in _EGO_AS_PERSON
+    )
 
 
 #: What may stand before the ego in a note that opens with it ("Ego stationary at the lights.", "With

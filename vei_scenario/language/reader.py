@@ -540,7 +540,9 @@ def _number(tokens: list[str], i: int, imperial: bool = False) -> tuple[str, flo
     to_changed = tokens[i - 1] == "to" and _changes_speed_before(
         tokens, i - 1
     )  # ("speeds up to 80": the speed it reaches)
-    if (prev in ("at", "doing", "about", "around", "of") or to_changed or Q.after_at(tokens, i)) and 3 <= value <= 250:
+    at = prev in ("at", "doing", "about", "around", "of") or to_changed or Q.after_at(tokens, i) or Q.held_on(tokens, i)
+    at = at or ego_speed.speedometer_reading(tokens, i)  # ("60 on the speedo", "the speedo said 45")
+    if at and 3 <= value <= 250:
         # "at 120", "at a steady 50": in the unit said before
         return "speed", value * Q.carried_unit(tokens, i, imperial), 1
     ends = nxt in ("", ".", ",", ";", "!", "?", "and", "then", "when", "while", "but")
@@ -1325,7 +1327,14 @@ def _read(text: str) -> Reading:
     owned = {o for _, ms in clauses for x in ms for o in x.owners}  # mentions a number is said of
     ego_said: float | None = None  # the ego's speed as the grammar says it (no position rule overrides it)
     said_of: list[tuple[_Actor, str, float]] = []  # a road user's speed or gap as the grammar says it, likewise
-    opened = ego_speed.opening_participles(scanned)  # ("Heading home at 50 km/h, ...": speeds of opening phrases)
+    speeds = {m.start for _, ms in clauses for m in ms if m.slot == "speed"}
+    road_users = {i for _, ms in clauses for m in ms if m.slot == "actor" for i in range(m.start, m.end)}
+    opened = ego_speed.subjectless_sentences(scanned, speeds, road_users)  # ("Came round the bend at 40, ...")
+    read_words = {i for _, ms in clauses for m in ms if m.slot != "unknown_verb" for i in range(m.start, m.end)}
+    opened.update(ego_speed.party_at_the_wheel(scanned, speeds, read_words))  # ("Dad was driving at 80 km/h")
+    egos_own = ego_speed.group_speeds(scanned, speeds)  # ("Platoon speed 80 km/h": the ego's formation)
+    egos_own.update({i: True for i in speeds if ego_speed.speedometer_reading(scanned, i)})  # ("speedo said 45")
+    opened.update(ego_speed.opening_participles(scanned))  # ("Heading home at 50 km/h, ...": speeds of opening phrases)
     for link, mentions in clauses:
         named: list[tuple[_Actor | str, str]] = []  # (actor, role) in order: subject, prep, verb, participle
         clause_subject: _Actor | str | None = None
@@ -1359,6 +1368,10 @@ def _read(text: str) -> Reading:
                 if with_ego == "note":
                     prev = m
                     continue
+            if m.slot == "speed" and egos_own.get(m.start) and r.ego_speed_mps is None:
+                r.ego_speed_mps = m.value  # ("Platoon speed 80 km/h", "the speedo said 45": not the one named last)
+                prev = m
+                continue
             whose = [resolved.get(o) if o != Q.UNNAMED else (actors[-1] if actors else None) for o in m.owners]
             if whose and None not in whose and not (m.slot == "distance" and "ego" in whose):
                 for who in whose:  # ("van speed 60 km/h", "cyclist: 12 m ahead, 15 km/h"): whose its grammar says
