@@ -680,7 +680,9 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             last = tokens[i + len(key) - 1]  # "the bus stops": the bus, then its verb ("at a bus stop": a place)
             verb = last != key[-1] and last == key[-1] + "s"  # "the bus stops"
             opens = prev in _OPENERS or (prev in _DETERMINERS and i == 1)  # (its sentence's subject)
-            participle = last.endswith("ing") and opens  # "A pedestrian crossing from the right ..."
+            # "A pedestrian crossing from the right ...", "also a pedestrian crossing the road" (its object)
+            takes_object = tokens[i + len(key) : i + len(key) + 1] in (["the"], ["a"], ["an"], ["my"], ["our"])
+            participle = last.endswith("ing") and (opens or takes_object)
             if prev not in _PLACE_PREPOSITIONS and (verb or participle):
                 key = key[:1]
         adverb = toward_at = None  # (toward_at: where the side it moves to is said)
@@ -1002,13 +1004,35 @@ def _new_unknown_subject(tokens: list[str], i: int) -> bool:
     past at most two words the reader has no entry for ("when a black BMW ..."), and a clause
     opening before that."""
     j = i - 1
-    while j >= 0 and i - j <= 3 and tokens[j] not in ("a", "an", "another", "some") and _best(tokens, j) is None:
+    while j >= 0 and i - j <= 3 and tokens[j] not in _NEW_ONE and _best(tokens, j) is None:
         if tokens[j] in FUNCTION_WORDS or not tokens[j].isalpha():
             return False
         j -= 1
-    if j < 0 or tokens[j] not in ("a", "an", "another", "some"):
+    if j < 0 or tokens[j] not in _NEW_ONE:
         return False
-    return (tokens[j - 1] if j else "") in _OPENERS
+    return _clause_opens_before(tokens, j)
+
+
+#: Determiners that introduce someone new ("this", which may also point back, "this lad", "this
+#: layout", is left out).
+_NEW_ONE = frozenset({"a", "an", "another", "some"})
+#: Adverbs of time or sequence a clause may open with before its subject ("Yesterday a ...", "Then a ...").
+_TIME_ADVERBS = frozenset({"yesterday", "today", "tonight", "then", "suddenly", "also", "now", "later", "once"})
+#: Words that make a time adverbial of the noun after them ("last week", "one evening", "this morning").
+_TIME_OPENERS = frozenset({"last", "one", "this", "that", "next"})
+
+
+def _clause_opens_before(tokens: list[str], j: int) -> bool:
+    """Whether a clause opens right before ``j``: after a mark or a conjunction, or past an adverbial of
+    time it opens with ("Yesterday a ...", "Last week a ...", "One evening a ...")."""
+    prev = tokens[j - 1] if j else ""
+    if prev in _OPENERS:
+        return True
+    if prev in _TIME_ADVERBS:
+        return (tokens[j - 2] if j > 1 else "") in _OPENERS
+    if j > 1 and tokens[j - 2] in _TIME_OPENERS and "NOUN" in _pos(prev):
+        return (tokens[j - 3] if j > 2 else "") in _OPENERS
+    return False
 
 
 def _names_a_thing(tokens: list[str], j: int) -> bool:
