@@ -576,6 +576,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
         (typed, read) for typed, read in zip(_tokens(text, spell=False, brackets=True), tokens) if typed != read
     ]
     framed: list[str] = []
+    tokens = whose_act.unnamed_rider(tokens, _kind_at)  # ("car clipped rider": an e-scooter's rider)
     tokens = ego.frame(tokens, _kind_at, _known, framed, protagonist.frame)  # (by a role, its driver, a witness)
     tokens = narrator_vehicle.frame(tokens, _kind_at, _known, framed)  # (the writer in it or testing it)
     tokens = generic_ego.frame(tokens, _kind_at, _known, framed)  # (the ego as drivers in general)
@@ -2334,10 +2335,14 @@ def _done_to(first, tokens: list[str], unused: set[str]) -> bool:
     ("almost flattened an e-scooter rider", "nudged a cyclist at the lights", "mowed down a walker"):
     something was done to it, so it was there, in the ego's way, and a scenario can be made of it. The
     verb must stand before the road user's article, a particle between at most: a participle after the
-    article ("a flattened cyclist") describes it."""
+    article ("a flattened cyclist") describes it. A terse note leaves the article out where the verb's
+    subject stands right before it ("ego clipped e-scooter at roundabout")."""
     k = first.start - 1
-    if k < 0 or tokens[k] not in _OBJECT_ARTICLES:
+    if k < 1:
         return False
+    if tokens[k] not in _OBJECT_ARTICLES:
+        subject = tokens[k - 1] == "ego" or _actor_word(tokens[k - 1])
+        return subject and tokens[k] in unused and _inflected_verb(tokens[k])
     k -= 1
     while k >= 0 and tokens[k] in _PARTICLES:
         k -= 1
