@@ -908,3 +908,20 @@ def test_a_pedestrian_crossing_with_an_object_is_a_walker():
 
 def test_a_pedestrian_crossing_as_a_place_is_no_walker():
     assert kinds("Ego at 30 km/h; a cyclist ahead of us stops at a pedestrian crossing.") == ["bicycle"]
+
+
+# --- of the nouns no word names, the road user is the one that does what road users do in its clause ----
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("The council told me the junction is safe. Three lads ran out from the left in front of my car.", 3),
+        ("My satnav took me down a back street. Two youths strolled out in front of my car.", 2),
+    ],
+    ids=["council-told", "satnav-took"],
+)
+def test_the_unnamed_subject_that_acts_is_the_road_user(text, expected):
+    assert kinds(text) == ["pedestrian"] * expected
+
+
+def test_the_first_unnamed_subject_still_counts_when_none_acts_plainly():
+    assert kinds("The rider shot off the kerb in front of me.") == ["e-scooter"]

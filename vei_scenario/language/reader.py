@@ -75,6 +75,7 @@ from vei_scenario.language.stated import (
     stated_lanes,
 )
 from vei_scenario.language.who import (
+    DESCRIBING,
     agent_noun,
     closed_compound,
     counted_in_figures,
@@ -458,6 +459,15 @@ def _does_soon(tokens: list[str], i: int) -> bool:
         if k + 1 < len(tokens) and tokens[k + 1] in _MOTION_PARTICLES and _verb_before(tokens[k], tokens[k + 1]):
             return True  # (a verb the reader reads through a plain one: "swings across")
     return False
+
+
+def _acts_at(tokens: list[str], i: int) -> bool:
+    """Whether what someone does starts at ``i``, right after their noun: a behaviour, a verb the reader
+    lacks and then one ("shot off the kerb"), or a phrase saying who they are and then one ("in black
+    walked out"). A verb of saying or sending ("says unit 22 came off", "sent me down") is no deed."""
+    if i >= len(tokens):
+        return False
+    return _does_next(tokens, i) or _does_next(tokens, i + 1) or (tokens[i] in DESCRIBING and _does_soon(tokens, i))
 
 
 def _actor_at(tokens: list[str], i: int) -> bool:
@@ -1271,7 +1281,7 @@ def read(text: str) -> Reading:
         reading, refused = None, e
     if reading is not None and reading.actors:
         return reading
-    unnamed = unnamed_subject(text, lambda w: _best([w], 0) is not None, _actor_word)
+    unnamed = unnamed_subject(text, lambda w: _best([w], 0) is not None, _actor_word, _acts_at)
     if unnamed is not None:
         try:
             again = _read(unnamed[0])
