@@ -815,3 +815,113 @@ def test_people_on_one_vehicle_are_one_road_user(text, expected):
 )
 def test_people_on_vehicles_of_their_own_stay_so_many(text, expected):
     assert kinds(text) == expected
+
+
+# --- a road user named new in a warning of what may come ("before a kid is hurt") is nobody of the scene ---
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A taxi swung out from the right in front of me. Fix the lights before a kid is killed.", ["car"]),
+        ("A bus pulled out from the stop on my left at 30 mph. Act now or a cyclist will be knocked down.", ["truck"]),
+        ("A van cut in on me at 40 mph. The council will wait until a walker gets seriously injured.", ["van"]),
+    ],
+    ids=["before-a-kid", "or-will-be-knocked", "until-gets-injured"],
+)
+def test_a_road_user_of_a_warning_is_no_road_user(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("I was at 30 mph. A van pulled out from the left, and a cyclist could be seen crossing.", ["bicycle", "van"]),
+        ("A pedestrian will cross from the right at 5 km/h in front of the ego.", ["pedestrian"]),
+        ("The ego brakes before a jogger crosses from the left in front of it.", ["pedestrian"]),
+    ],
+    ids=["could-be-seen", "will-cross", "before-crosses"],
+)
+def test_a_road_user_of_an_event_stays(text, expected):
+    assert set(kinds(text)) == set(expected)
+
+
+# --- "such people", "such riders": one of a kind, people in general, no road user of the scene -----------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A boy on an e-scooter came at me on the wrong side. Police must deal with such people.", ["e-scooter"]),
+        ("A taxi cut in front of me at 30 mph. We need more cameras to catch such cyclists.", ["car"]),
+    ],
+    ids=["such-people", "such-cyclists"],
+)
+def test_such_plurals_are_people_in_general(text, expected):
+    assert kinds(text) == expected
+
+
+def test_such_plural_that_is_the_only_road_user_stays():
+    assert kinds("Such cyclists crossed in front of me at 30 km/h.") == ["bicycle"]
+
+
+# --- an age that stands for a person ("a six-year-old") is that person; before a noun it describes it ---
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("I was doing 20 mph when a seven-year-old darted into the road from the right.", ["pedestrian"]),
+        ("At 25 km/h, a 9 year old on a bike came out of a driveway on my left and I braked.", ["bicycle"]),
+        ("I braked hard at 30 mph as a 70-year-old, who never looked, stepped off the kerb.", ["pedestrian"]),
+    ],
+    ids=["seven-year-old", "nine-on-a-bike", "seventy-who"],
+)
+def test_an_age_as_a_noun_is_the_person(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A 17-year-old e-scooter rider swerved in front of me from the left.", ["e-scooter"]),
+        ("A 40-year-old van driver pulled out from the right in front of me.", ["van"]),
+    ],
+    ids=["age-of-rider", "age-of-driver"],
+)
+def test_an_age_before_a_noun_only_describes_it(text, expected):
+    assert kinds(text) == expected
+
+
+# --- someone new no word names, after a clause's time adverbial ("Yesterday a heron ..."), is a road user ---
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("Yesterday a pheasant walked across the road in front of me and I stopped.", ["pedestrian"]),
+        ("Last night a big wombat waddled out from the left in front of me at 40 mph.", ["pedestrian"]),
+    ],
+    ids=["yesterday-a", "last-night-a"],
+)
+def test_someone_new_after_a_time_adverbial_is_a_road_user(text, expected):
+    assert kinds(text) == expected
+
+
+# --- "a pedestrian crossing the road": a walker crossing, not a zebra crossing ---------------------------
+def test_a_pedestrian_crossing_with_an_object_is_a_walker():
+    text = "Ego at 30 km/h behind a cyclist on the left. Also a pedestrian crossing the road far ahead."
+    assert kinds(text) == ["bicycle", "pedestrian"]
+
+
+def test_a_pedestrian_crossing_as_a_place_is_no_walker():
+    assert kinds("Ego at 30 km/h; a cyclist ahead of us stops at a pedestrian crossing.") == ["bicycle"]
+
+
+# --- of the nouns no word names, the road user is the one that does what road users do in its clause ----
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("The council told me the junction is safe. Three lads ran out from the left in front of my car.", 3),
+        ("My satnav took me down a back street. Two youths strolled out in front of my car.", 2),
+    ],
+    ids=["council-told", "satnav-took"],
+)
+def test_the_unnamed_subject_that_acts_is_the_road_user(text, expected):
+    assert kinds(text) == ["pedestrian"] * expected
+
+
+def test_the_first_unnamed_subject_still_counts_when_none_acts_plainly():
+    assert kinds("The rider shot off the kerb in front of me.") == ["e-scooter"]

@@ -227,3 +227,29 @@ def test_other_ways_of_getting_about(text, kind):
 )
 def test_a_person_on_what_goes_at_a_walkers_pace_is_one_walker(text):
     assert _kinds(text) == ["pedestrian"]
+
+
+# --- a bare "rider" in a terse note, with nothing said of what they ride, rides an e-scooter --------------
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("Van struck rider at the crossing.", "e-scooter"),
+        ("Taxi driver says rider came straight at him on the wrong side of the road.", "e-scooter"),
+    ],
+    ids=["struck-rider", "says-rider"],
+)
+def test_a_bare_rider_of_a_terse_note_is_an_e_scooter_rider(text, kind):
+    assert _kinds(text) == [kind]
+
+
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("Van struck rider on a moped at the crossing.", "car"),
+        ("A motorbike came out of the side road on my left; I clipped rider and bike.", "car"),
+        ("Oncoming cyclist carried straight on across the junction in front of me. Rider fell.", "bicycle"),
+    ],
+    ids=["on-a-moped", "motorbike-named", "cyclist-named"],
+)
+def test_a_rider_whose_vehicle_is_said_keeps_it(text, kind):
+    assert _kinds(text) == [kind]

@@ -2050,6 +2050,53 @@ def _participle_next(tokens: list[str], k: int) -> bool:
     return any(w in f.get("VBN", f.get("VBD", ())) for f in forms)  # (lemminflect gives a VBN only where it differs)
 
 
+#: Words that open a clause of what has not happened yet ("before a child is hurt", "until a rider gets killed").
+_NOT_YET = frozenset({"before", "until", "till", "or"})
+
+
+#: Verbs of harm done to someone, as lemmas ("hurt", "killed", "knocked down").
+_HARM = CONTACT | frozenset({"injure", "hurt", "kill", "wound", "maim", "harm", "mow"})
+
+
+def _harmed_at(tokens: list[str], k: int) -> bool:
+    """Whether a participle of harm follows at ``k``, past adverbs ("seriously hurt", "killed")."""
+    while k < len(tokens) and tokens[k].endswith("ly") and "ADV" in lemmas(tokens[k]):
+        k += 1
+    return k < len(tokens) and _participle_next(tokens, k) and _lemma_in(tokens[k], _HARM)
+
+
+def _harm_may_come(tokens: list[str], k: int, not_yet: bool) -> bool:
+    """Whether the words from ``k`` say harm that may come to whoever is named before them: a modal
+    and a passive of harm ("will be killed", "could get hurt"), or, in a clause of what has not
+    happened yet, such a passive in the present ("before a child is hurt"). Other passives ("could be
+    seen crossing") tell what is so."""
+    nxt = tokens[k] if k < len(tokens) else ""
+    if nxt in _MODALS:
+        return tokens[k + 1 : k + 2] in (["be"], ["get"]) and _harmed_at(tokens, k + 2)
+    return not_yet and nxt in _NOT_PAST_PASSIVE and _harmed_at(tokens, k + 1)
+
+
+def _road_users_of_what_may_happen(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """``tokens`` without a road user named new, with "a", in a warning of what may come to pass ("before a
+    child is hurt", "a kid will get killed here one day"): a road user of no event, nobody of the scene
+    (listed as not used). Said with "the" ("before the cyclist is overtaken") or told as an event ("a
+    child was hurt", "a pedestrian will cross at 5 km/h"), it stays."""
+    out = list(tokens)
+    i = 0
+    while i < len(out):
+        p = _phrase_at(out, i, kind_at, known)
+        if p is None or p.det not in ("a", "an") or p.kind == "ego":
+            i += 1
+            continue
+        not_yet = p.start > 0 and out[p.start - 1] in _NOT_YET
+        if _harm_may_come(out, p.end, not_yet):
+            dropped.extend(out[p.start : p.end])
+            del out[p.start : p.end]
+            continue
+        i = p.end
+    return out
+
+
 def what_may_happen(tokens: list[str], dropped: list[str]) -> list[str]:
     """``tokens`` without "someone" or "somebody" said of what may happen to them ("before someone is
     killed", "someone will get hurt", "somebody could have been injured", "somebody is going to be
@@ -2071,10 +2118,20 @@ def what_may_happen(tokens: list[str], dropped: list[str]) -> list[str]:
     return out
 
 
+#: Nouns of several people that are no plural form ("people", "folk").
+_PEOPLE = frozenset({"people", "folk", "folks"})
+
+
+def _others_named(tokens: list[str], p: _Phrase, kind_at: KindAt, known: Known) -> bool:
+    """Whether a road user other than the ego is named outside the phrase ``p``."""
+    return any(q.kind != "ego" and q.head != p.head for q in _phrases(tokens, kind_at, known))
+
+
 def _people_in_general(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """ "Police are urging drivers to slow down", "campaigners want cyclists to wear lights": a bare plural
     (no article, no count) followed by "to" and a verb is whom someone asks, warns or wants to do
-    something: road users in general, none of the scene; the plural is left out (listed as not used).
+    something: road users in general, none of the scene; so is one of a kind ("catch such people",
+    "action on such riders"); the plural is left out (listed as not used).
     A counted or definite plural ("two cyclists tried to pass", "the drivers tried to stop") and a
     place ("a cyclist to my left") stay."""
     out = list(tokens)
@@ -2086,14 +2143,21 @@ def _people_in_general(tokens: list[str], kind_at: KindAt, known: Known, dropped
             continue
         before = out[p.start - 1] if p.start else ""
         nxt = out[p.end + 1] if p.end + 1 < len(out) else ""
-        general = (
-            not p.det
-            and p.kind != "ego"
-            and not _singular(out[p.end - 1])
-            and before not in _COUNTED
-            and not before.isdigit()
-            and out[p.end : p.end + 1] == ["to"]
-            and nxt in lemmas(nxt).get("VERB", ())
+        bare = not p.det and p.kind != "ego"
+        plural = not _singular(out[p.end - 1])
+        general = bare and (
+            (
+                plural
+                and before not in _COUNTED
+                and not before.isdigit()
+                and out[p.end : p.end + 1] == ["to"]
+                and nxt in lemmas(nxt).get("VERB", ())
+            )
+            or (
+                (plural or out[p.end - 1] in _PEOPLE)
+                and "such" in out[max(p.start - 3, 0) : p.start]
+                and _others_named(out, p, kind_at, known)
+            )
         )
         if general:
             dropped.extend(out[p.start : p.end])
@@ -2298,7 +2362,8 @@ def resolve(
     tokens = _narrators_people(tokens, kind_at, dropped)
     tokens = _passengers(tokens, kind_at, known, dropped)
     tokens = _witnesses(tokens, kind_at, known, dropped)
-    tokens = _people_in_general(what_may_happen(tokens, dropped), kind_at, known, dropped)
+    tokens = _road_users_of_what_may_happen(what_may_happen(tokens, dropped), kind_at, known, dropped)
+    tokens = _people_in_general(tokens, kind_at, known, dropped)
     tokens = _others_in_general(tokens, kind_at, known, dropped)
     tokens = _narrator_on_foot(tokens, kind_at, known, dropped)
     tokens = _ego_apposition(tokens, kind_at, known, dropped)

@@ -417,6 +417,39 @@ def _with_article(m: re.Match, known_noun) -> str:
     return f"{start}a {participle} {noun}"
 
 
+#: A person's age said as a noun: "a six-year-old", "the 8 year old", "two ten-year-olds" (its number in
+#: digits or words, "year" or "yr", hyphens or spaces), and the word after it.
+_AGE = re.compile(
+    rf"\b(\d{{1,3}}|(?:{_NUMBER_WORD})(?:-(?:{_NUMBER_WORD}))?)[\s-]+(?:year|yr)s?[\s-]+old(s?)\b(?=\s*([a-z][a-z-]*)?)"
+)
+#: Relative pronouns, which lemminflect also has as nouns ("WHO"): after an age, its person goes on.
+_RELATIVES = frozenset({"who", "that", "which", "whose"})
+#: Below this age a person is a child.
+_CHILD_UNDER = 13
+
+
+def _ages(text: str, known_noun) -> str:
+    """``text`` with an age that stands for the person ("a six-year-old chased a ball", "the 8 year old on
+    a bike") said as the person it names ("a child", "the person"), so the reader reads the walker (or,
+    on a vehicle, its rider) the text is about. An age before a noun only describes it ("a 6-year-old
+    boy", "a 24-year-old e-scooter rider", "a 30-year-old driver"): it is left as it is."""
+
+    def sub(m: re.Match) -> str:
+        nxt = m.group(3) or ""
+        pos = lemmas(nxt) if nxt else {}
+        if nxt not in _RELATIVES and (known_noun(nxt) or ("NOUN" in pos and "VERB" not in pos)):
+            return m.group(0)  # (the age of the noun after it)
+        age = int(m.group(1)) if m.group(1).isdigit() else _number_value(m.group(1))
+        if age is None:
+            return m.group(0)
+        child = age < _CHILD_UNDER
+        if m.group(2):
+            return "children" if child else "people"
+        return "child" if child else "person"
+
+    return _AGE.sub(sub, text)
+
+
 def normalise(text: str, known_noun=lambda phrase: None) -> str:
     """``text`` (lowercased) with numbers in words, units, and the parties of a statement said the
     way the reader reads them. ``known_noun(phrase)`` returns the road-user noun a phrase ends in,
@@ -462,6 +495,7 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     )  # fmt: skip
     for pattern, repl in _UNITS:
         text = pattern.sub(repl, text)
+    text = _ages(text, known_noun)  # (before numbers in words become digits)
     text = _numbers_in_words(text)
     for pattern, repl in _UNITS:  # ("10 meter per second" once its number is digits)
         text = pattern.sub(repl, text)

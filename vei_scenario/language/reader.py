@@ -75,6 +75,7 @@ from vei_scenario.language.stated import (
     stated_lanes,
 )
 from vei_scenario.language.who import (
+    DESCRIBING,
     agent_noun,
     closed_compound,
     counted_in_figures,
@@ -461,6 +462,15 @@ def _does_soon(tokens: list[str], i: int) -> bool:
     return False
 
 
+def _acts_at(tokens: list[str], i: int) -> bool:
+    """Whether what someone does starts at ``i``, right after their noun: a behaviour, a verb the reader
+    lacks and then one ("shot off the kerb"), or a phrase saying who they are and then one ("in black
+    walked out"). A verb of saying or sending ("says unit 22 came off", "sent me down") is no deed."""
+    if i >= len(tokens):
+        return False
+    return _does_next(tokens, i) or _does_next(tokens, i + 1) or (tokens[i] in DESCRIBING and _does_soon(tokens, i))
+
+
 def _actor_at(tokens: list[str], i: int) -> bool:
     """Whether an actor's name starts at ``i`` (of any length: "bus" in "bus stops" too)."""
     return i < len(tokens) and any(
@@ -579,6 +589,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
         (typed, read) for typed, read in zip(_tokens(text, spell=False, brackets=True), tokens) if typed != read
     ]
     framed: list[str] = []
+    tokens = whose_act.unnamed_rider(tokens, _kind_at)  # ("car clipped rider": an e-scooter's rider)
     tokens = ego.frame(tokens, _kind_at, _known, framed, protagonist.frame)  # (by a role, its driver, a witness)
     tokens = narrator_vehicle.frame(tokens, _kind_at, _known, framed)  # (the writer in it or testing it)
     tokens = generic_ego.frame(tokens, _kind_at, _known, framed)  # (the ego as drivers in general)
@@ -689,7 +700,9 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             last = tokens[i + len(key) - 1]  # "the bus stops": the bus, then its verb ("at a bus stop": a place)
             verb = last != key[-1] and last == key[-1] + "s"  # "the bus stops"
             opens = prev in _OPENERS or (prev in _DETERMINERS and i == 1)  # (its sentence's subject)
-            participle = last.endswith("ing") and opens  # "A pedestrian crossing from the right ..."
+            # "A pedestrian crossing from the right ...", "also a pedestrian crossing the road" (its object)
+            takes_object = tokens[i + len(key) : i + len(key) + 1] in (["the"], ["a"], ["an"], ["my"], ["our"])
+            participle = last.endswith("ing") and (opens or takes_object)
             if prev not in _PLACE_PREPOSITIONS and (verb or participle):
                 key = key[:1]
         adverb = toward_at = None  # (toward_at: where the side it moves to is said)
@@ -1011,13 +1024,35 @@ def _new_unknown_subject(tokens: list[str], i: int) -> bool:
     past at most two words the reader has no entry for ("when a black BMW ..."), and a clause
     opening before that."""
     j = i - 1
-    while j >= 0 and i - j <= 3 and tokens[j] not in ("a", "an", "another", "some") and _best(tokens, j) is None:
+    while j >= 0 and i - j <= 3 and tokens[j] not in _NEW_ONE and _best(tokens, j) is None:
         if tokens[j] in FUNCTION_WORDS or not tokens[j].isalpha():
             return False
         j -= 1
-    if j < 0 or tokens[j] not in ("a", "an", "another", "some"):
+    if j < 0 or tokens[j] not in _NEW_ONE:
         return False
-    return (tokens[j - 1] if j else "") in _OPENERS
+    return _clause_opens_before(tokens, j)
+
+
+#: Determiners that introduce someone new ("this", which may also point back, "this lad", "this
+#: layout", is left out).
+_NEW_ONE = frozenset({"a", "an", "another", "some"})
+#: Adverbs of time or sequence a clause may open with before its subject ("Yesterday a ...", "Then a ...").
+_TIME_ADVERBS = frozenset({"yesterday", "today", "tonight", "then", "suddenly", "also", "now", "later", "once"})
+#: Words that make a time adverbial of the noun after them ("last week", "one evening", "this morning").
+_TIME_OPENERS = frozenset({"last", "one", "this", "that", "next"})
+
+
+def _clause_opens_before(tokens: list[str], j: int) -> bool:
+    """Whether a clause opens right before ``j``: after a mark or a conjunction, or past an adverbial of
+    time it opens with ("Yesterday a ...", "Last week a ...", "One evening a ...")."""
+    prev = tokens[j - 1] if j else ""
+    if prev in _OPENERS:
+        return True
+    if prev in _TIME_ADVERBS:
+        return (tokens[j - 2] if j > 1 else "") in _OPENERS
+    if j > 1 and tokens[j - 2] in _TIME_OPENERS and "NOUN" in _pos(prev):
+        return (tokens[j - 3] if j > 2 else "") in _OPENERS
+    return False
 
 
 def _names_a_thing(tokens: list[str], j: int) -> bool:
@@ -1280,7 +1315,7 @@ def read(text: str) -> Reading:
         reading, refused = None, e
     if reading is not None and reading.actors:
         return reading
-    unnamed = unnamed_subject(text, lambda w: _best([w], 0) is not None, _actor_word)
+    unnamed = unnamed_subject(text, lambda w: _best([w], 0) is not None, _actor_word, _acts_at)
     if unnamed is not None:
         try:
             again = _read(unnamed[0])
@@ -2368,10 +2403,14 @@ def _done_to(first, tokens: list[str], unused: set[str]) -> bool:
     ("almost flattened an e-scooter rider", "nudged a cyclist at the lights", "mowed down a walker"):
     something was done to it, so it was there, in the ego's way, and a scenario can be made of it. The
     verb must stand before the road user's article, a particle between at most: a participle after the
-    article ("a flattened cyclist") describes it."""
+    article ("a flattened cyclist") describes it. A terse note leaves the article out where the verb's
+    subject stands right before it ("ego clipped e-scooter at roundabout")."""
     k = first.start - 1
-    if k < 0 or tokens[k] not in _OBJECT_ARTICLES:
+    if k < 1:
         return False
+    if tokens[k] not in _OBJECT_ARTICLES:
+        subject = tokens[k - 1] == "ego" or _actor_word(tokens[k - 1])
+        return subject and tokens[k] in unused and _inflected_verb(tokens[k])
     k -= 1
     while k >= 0 and tokens[k] in _PARTICLES:
         k -= 1

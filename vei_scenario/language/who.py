@@ -322,7 +322,7 @@ def proper_names(text: str) -> frozenset[str]:
 _OPENING = frozenset("a an the some another one two three four five six seven eight nine ten several".split())
 #: Words that may stand between someone's noun and what they do, telling who they are ("a figure in
 #: black", "a man with a dog", "someone on wheels").
-_DESCRIBING = frozenset(("in", "on", "with", "wearing", "carrying", "dressed"))
+DESCRIBING = frozenset(("in", "on", "with", "wearing", "carrying", "dressed"))
 #: Verbs of riding: who does one is a rider ("rider", "scooterer").
 _RIDING = frozenset(("ride", "scoot"))
 #: Words that end one clause, after which the next may open with its subject.
@@ -347,7 +347,10 @@ def rider_noun(noun: str) -> bool:
 
 
 def unnamed_subject(
-    text: str, known: Callable[[str], bool], road_user: Callable[[str], bool]
+    text: str,
+    known: Callable[[str], bool],
+    road_user: Callable[[str], bool],
+    acts: Callable[[list[str], int], bool] = lambda words, i: True,
 ) -> tuple[str, str] | None:
     """``text`` with the first noun phrase the reader has no noun for, that opens a clause as the
     subject of a verb ("The rider shot off the kerb", "Two riders rolled across", "A figure in dark
@@ -359,9 +362,32 @@ def unnamed_subject(
     Only for a description in which the reader found no road user at all, so that a noun missing from
     its lexicon does not lose the one road user a text names. A noun after a road-user noun names a
     thing of it ("a bike rack", "the scooter bay") and is left alone; ``known(word)`` is whether the
-    reader has a phrase for the word, ``road_user(word)`` whether it names a road user."""
+    reader has a phrase for the word, ``road_user(word)`` whether it names a road user. Of several such
+    subjects, the first that does what a road user does in its clause (``acts(words, i)``: a behaviour
+    from word ``i`` before the clause ends) is taken: "The app sent me down the high street. Two lads
+    walked out in front of me" is about the lads, not the app."""
     words = list(_WORD.finditer(text))
     lower = [m.group(0).lower() for m in words]
+    found = _unnamed_subjects(text, words, lower, known, road_user)
+    acting = [c for c in found if acts(lower[: _clause_end(text, words, c[2])], c[2] + 1)]
+    chosen = acting or found
+    return chosen[0][:2] if chosen else None
+
+
+def _clause_end(text: str, words: list[re.Match], k: int) -> int:
+    """The index of the first word after word ``k`` that opens a new clause (or the number of words)."""
+    for n in range(k + 1, len(words)):
+        if any(c in _CLAUSE_MARKS for c in text[words[n - 1].end() : words[n].start()]):
+            return n
+    return len(words)
+
+
+def _unnamed_subjects(
+    text: str, words: list[re.Match], lower: list[str], known: Callable[[str], bool], road_user: Callable[[str], bool]
+) -> list[tuple[str, str, int]]:
+    """Each candidate of :func:`unnamed_subject`, in order: the text said with it, its noun, and the
+    index of its noun among the words."""
+    out: list[tuple[str, str, int]] = []
     for n, m in enumerate(words):
         opens = n == 0 or any(c in _CLAUSE_MARKS for c in text[words[n - 1].end() : m.start()])
         if not opens:
@@ -372,7 +398,7 @@ def unnamed_subject(
             if road_user(lower[h]) or known(lower[h]) or lower[h] in _OPENING or rider_noun(lower[h - 1]):
                 break  # (a road user's thing, "a bike rack", "the rider manual"; or a phrase the reader has)
             if ("NOUN" in lemmas(lower[h]) or not english(lower[h])) and (
-                lower[h + 1] in _DESCRIBING or _verb_word(lower[h + 1])
+                lower[h + 1] in DESCRIBING or _verb_word(lower[h + 1])
             ):
                 head = h
                 break
@@ -387,8 +413,8 @@ def unnamed_subject(
             said = " ".join([*det, "scooter", "riders" if plural else "rider"])
         else:
             said = " ".join([*count, "people"]) if plural else "someone"
-        return text[: m.start()] + said + text[words[head].end() :], noun
-    return None
+        out.append((text[: m.start()] + said + text[words[head].end() :], noun, head))
+    return out
 
 
 #: What may stand before a shared e-scooter's operator name in a road user's place.

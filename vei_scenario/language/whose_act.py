@@ -45,6 +45,7 @@ import re
 from collections.abc import Callable
 
 from vei_scenario.language.lemmas import lemmas
+from vei_scenario.language.lexicon import MOTOR_TWO_WHEELERS
 
 #: What a narrator does to keep clear: braking, stopping, slowing, moving aside.
 _REACTIONS = frozenset(("sudden_stop", "stop", "change_speed", "cut_in", "change_lane", "cut_out", "give_way"))
@@ -373,6 +374,53 @@ def the_rider(tokens: list[str], kind_at: Callable[[list[str], int], tuple[str, 
         if word is not None:
             out[i] = word
     return out
+
+
+def unnamed_rider(tokens: list[str], kind_at: Callable[[list[str], int], tuple[str, int] | None]) -> list[str]:
+    """``tokens`` with a bare "rider" after a verb that no ridden road user named before stands for, and whose
+    vehicle the text never says ("car clipped rider at roundabout", "Driver states rider was coming
+    the wrong way"), said as "e-scooter": who rides, the two-wheeler this reader is about. Read
+    before who is who, so that a report's one vehicle set against it is the ego. A rider said with
+    what they ride ("rider on a moped"), a rider of a motorbike or moped named in the text, and "the
+    rider" (said back, :func:`the_rider`) are left as they are."""
+    out = list(tokens)
+    ridden = False
+    i = 0
+    while i < len(out):
+        found = kind_at(out, i)
+        if found is not None:
+            ridden = ridden or found[0] in _RIDDEN
+            i += found[1]
+            continue
+        if out[i] == "rider" and not ridden and _after_a_verb(out, i) and _rides_nothing_said(out, i):
+            out[i] = "e-scooter"
+        i += 1
+    return out
+
+
+def _after_a_verb(tokens: list[str], i: int) -> bool:
+    """Whether "rider" at ``i`` is said with no article right after a verb, as a terse note says the
+    object or a reported subject ("car clipped rider", "driver states rider was coming"), not after a
+    word that describes it ("young rider", "TP rider"). (After a mark, "Rider fell.", it is often the
+    outcome's, or the ego of a test: "one: rider doing 15 km/h".)"""
+    prev = tokens[i - 1] if i else ""
+    pos = lemmas(prev) if prev.isalpha() else {}
+    return ("VERB" in pos and not pos.keys() & {"ADJ", "NOUN"}) or prev in _SAYS
+
+
+#: Verbs of telling, which are nouns as well ("states", "reports", "says").
+_SAYS = frozenset(("states", "stated", "says", "said", "reports", "reported", "claims", "claimed"))
+
+
+def _rides_nothing_said(tokens: list[str], i: int) -> bool:
+    """Whether the text says nothing of what a bare "rider" at ``i`` rides: no vehicle with it ("rider
+    on a moped") and no motorbike or moped named anywhere (then "rider" is its rider)."""
+    nxt = tokens[i + 1] if i + 1 < len(tokens) else ""
+    if nxt in ("on", "of", "riding", "in", "aboard", "astride"):
+        return False
+    text = " ".join(tokens)
+    singulars = {t[:-1] if t.endswith("s") else t for t in tokens}
+    return not any(w in text for w in MOTOR_TWO_WHEELERS if " " in w) and not singulars & MOTOR_TWO_WHEELERS
 
 
 #: What opens a sentence: a subject standing first after one of these is its clause's own.
