@@ -46,7 +46,7 @@ from dataclasses import dataclass
 
 from vei_scenario.language.lemmas import english, lemmas
 from vei_scenario.language.lexicon import ANIMALS, MOTOR_TWO_WHEELERS, WALKER_PACED
-from vei_scenario.language.scenery import vehicle_modifiers
+from vei_scenario.language.scenery import absent, vehicle_modifiers
 from vei_scenario.language.who import make_and_model, person_with_vehicle, travel_modes, vehicle_places
 
 #: ``kind_at(tokens, i)``: the road-user type named by a phrase starting at ``i`` ("ego" for the ego)
@@ -1764,6 +1764,10 @@ def _mentions_again(tokens: list[str], kind_at: KindAt, known: Known) -> list[st
             continue
         elif apposition and p.kind in VEHICLES and referents[-1].kind in VEHICLES:
             referents[-1].kind = p.kind if referents[-1].kind == "car" else referents[-1].kind
+        elif p.det == "the" and not apart and (same := _target_again(out, p, referents)) is not None:
+            out[p.start : p.end] = ["the", NOUN[same.kind]]
+            last_end = i = p.start + 2
+            continue
         elif p.det == "the" and not apart and referents:
             if general:
                 same = next((r for r in reversed(referents) if r.kind in VEHICLES), None)
@@ -1787,6 +1791,17 @@ def _mentions_again(tokens: list[str], kind_at: KindAt, known: Known) -> list[st
         last_end = p.end
         i = p.end
     return out
+
+
+def _target_again(tokens: list[str], p: _Phrase, referents: list[Referent]) -> Referent | None:
+    """The road user a bare "the target" names again: in a test the targets are the road users, so
+    it is the last one named as a target ("an e-scooter target ... the target"), else the last one
+    named at all. "Target" names no type (the lexicon reads it as a car), so without this it would
+    be a new car."""
+    if tokens[p.start : p.end] != ["the", "target"] or not referents:
+        return None
+    named = [r for r in referents if r.kind in NOUN]
+    return next((r for r in reversed(named) if r.noun.endswith("target")), named[-1] if named else None)
 
 
 #: The nouns of a pedal cycle that also name a motor two-wheeler.
@@ -2276,7 +2291,7 @@ def resolve(
     tokens = _named_vehicles(tokens, kind_at, known, proper)
     tokens = _brackets(tokens, kind_at, known, names, dropped)
     tokens = _compounds(tokens, kind_at)
-    tokens = vehicle_modifiers(tokens, kind_at, dropped)
+    tokens = absent(vehicle_modifiers(tokens, kind_at, dropped), kind_at, dropped)
     tokens = partitives(tokens, kind_at)
     tokens = picked_out(tokens, kind_at, known, dropped)
     tokens = _participial_apposition(tokens, kind_at, known)
