@@ -65,3 +65,28 @@ def test_a_car_length_after_a_negation_is_still_a_distance() -> None:
 def test_a_car_that_does_not_stop_is_a_road_user() -> None:
     text = "I was crossing at the lights when a car did not stop and another car swerved round me."
     assert kinds(text) == ["car", "car"]
+
+
+def test_a_name_after_on_the_is_a_road_not_a_car() -> None:
+    text = "I was heading north on the Westlink at 80 km/h when a van from the left lane cut in front of me."
+    assert kinds(text) == ["van"]
+
+
+def test_a_name_after_a_is_still_a_car() -> None:
+    text = "I was heading north at 80 km/h when a silver Qashqai from the left lane cut in front of me."
+    assert kinds(text) == ["car"]
+
+
+def test_a_trailing_vehicle_opening_a_field_is_a_second_vehicle() -> None:
+    text = "Ego 100 km/h | lead vehicle brakes hard, gap 25 m | trailing vehicle following at 1.5 s"
+    assert kinds(text) == ["car", "car"]
+
+
+def test_the_ego_following_a_vehicle_named_before_is_that_vehicle() -> None:
+    text = "A vehicle ahead brakes hard 25 m in front of the ego; ego following vehicle at 1.5 s brakes too."
+    assert kinds(text) == ["car"]
+
+
+def test_the_lead_vehicle_said_again_as_lead_car_is_the_same() -> None:
+    text = "Ego: 90 km/h, behind lead vehicle at 2 s\nLead car: brakes hard to a stop"
+    assert kinds(text) == ["car"]

@@ -44,6 +44,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass
 
+from vei_scenario.language.ego import IN_LINE
 from vei_scenario.language.lemmas import english, lemmas
 from vei_scenario.language.lexicon import ANIMALS, MOTOR_TWO_WHEELERS, WALKER_PACED
 from vei_scenario.language.scenery import absent, vehicle_modifiers
@@ -1828,6 +1829,17 @@ def _singular(word: str) -> bool:
     return not nouns or word in nouns
 
 
+def _new_in_line(tokens: list[str], start: int) -> bool:
+    """Whether the bare noun at ``start`` opens its sentence or field with a word of a place in a line
+    of vehicles the text has not said before ("Lead vehicle brakes. Trailing vehicle at 1.2 s"): a
+    road user told apart from the one named before. "Following" is left out: opening a phrase it is
+    as often the ego's verb (", following lead car at 2 s"); a place said before ("lead vehicle ...
+    Lead car:") names that one again."""
+    word = tokens[start - 1] if start else ""
+    opens = start < 2 or tokens[start - 2] in SENTENCE_END
+    return word in IN_LINE - {"following"} and opens and word not in tokens[: start - 1]
+
+
 def _bare_again(tokens: list[str], p: _Phrase, referents: list[Referent], kind_at: KindAt) -> bool:
     """Whether a bare singular noun inside a clause ("behind cyclist", "passes walker") names again the
     one of its type named before (a bare noun opening a clause the reader takes so already)."""
@@ -1837,6 +1849,8 @@ def _bare_again(tokens: list[str], p: _Phrase, referents: list[Referent], kind_a
         return p.kind != "ego" and any(r.kind == p.kind for r in referents)
     if p.head != p.start or before in PUNCT or before == "" or before.isdigit() or before in OTHER:
         return False
+    if _new_in_line(tokens, p.start):
+        return False  # ("| trailing vehicle following at 1.2 s": told apart by a place in the line new here)
     for j in range(p.start - 1, max(p.start - 4, -1), -1):  # ("a stationary car": its article before
         if tokens[j] in DETERMINERS:  # a word the reader knows; "the ego passes walker": another's)
             return False
@@ -1874,8 +1888,8 @@ def _named_vehicles(tokens: list[str], kind_at: KindAt, known: Known, proper: fr
     pulled out", "a kid in a red Mini", "a black Focus in the next lane"), is a car: said with "car"
     after it, as the reader reads "a silver Mokka car". Its place: after an article (and up to two
     colours or words the reader lacks), not after a preposition of place ("past the Odeon", "near the
-    Crown"), and ending the noun phrase: a verb, a preposition, a punctuation mark or the end follow,
-    not another name ("the Red Lion")."""
+    Crown") nor "on the", which names a road ("on the Westlink"), and ending the noun phrase: a verb, a
+    preposition, a punctuation mark or the end follow, not another name ("the Red Lion")."""
     if not proper:
         return tokens
     out: list[str] = []
@@ -1894,6 +1908,8 @@ def _named_vehicles(tokens: list[str], kind_at: KindAt, known: Known, proper: fr
             continue
         if j > 0 and (tokens[j - 1] in _PLACE_BEFORE or tokens[j - 1] in BE):  # (or said of something: "was a")
             continue
+        if j > 0 and tokens[j - 1] == "on" and tokens[j] == "the":
+            continue  # (a road: "on the Hume", "on the Westlink"; a ridden one is "on a Vespa", "on his")
         if tokens[j] == "'s" and _owner_placed(tokens, j, proper):  # ("outside St Mary's Infants": a place)
             continue
         nxt = tokens[i + 1] if i + 1 < len(tokens) else "."
