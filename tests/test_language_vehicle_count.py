@@ -4,7 +4,7 @@ car for miles") is none, and an "estate" that is a place ("the industrial estate
 
 from __future__ import annotations
 
-from tests.reading_of import kinds
+from tests.reading_of import ego_kph, kinds
 
 
 def test_the_target_said_again_is_the_target_named_before() -> None:
@@ -90,3 +90,27 @@ def test_the_ego_following_a_vehicle_named_before_is_that_vehicle() -> None:
 def test_the_lead_vehicle_said_again_as_lead_car_is_the_same() -> None:
     text = "Ego: 90 km/h, behind lead vehicle at 2 s\nLead car: brakes hard to a stop"
     assert kinds(text) == ["car"]
+
+
+def test_the_vehicle_of_a_pair_label_is_the_narrators() -> None:
+    text = (
+        "VAN vs CYCLIST, helmet cam. Going about 30 km/h through the lights when the cyclist swerves out "
+        "into my lane and clips my mirror."
+    )
+    assert kinds(text) == ["bicycle"]
+
+
+def test_a_car_to_scooter_test_label_is_the_test_car() -> None:
+    text = "Car-to-e-scooter run: the scooter target rides ahead of us at 15 km/h and we close in at 40."
+    assert kinds(text) == ["e-scooter"]
+
+
+def test_a_pair_label_where_the_narrator_rides_leaves_the_car_a_road_user() -> None:
+    text = "Car vs bike on my commute. I was cycling at 20 km/h when the car pulled out of a side road into me."
+    assert kinds(text)[0] == "car"  # (the car stays someone else's; the label's bike is the rider's own)
+
+
+def test_a_4k_dashcam_is_no_speed() -> None:
+    text = "VAN vs SCOOTER, 4K dashcam. Doing about 40 km/h when the scooter swerves into my lane."
+    assert ego_kph(text) == 40.0
+    assert kinds(text) == ["e-scooter"]
