@@ -114,3 +114,18 @@ def test_a_4k_dashcam_is_no_speed() -> None:
     text = "VAN vs SCOOTER, 4K dashcam. Doing about 40 km/h when the scooter swerves into my lane."
     assert ego_kph(text) == 40.0
     assert kinds(text) == ["e-scooter"]
+
+
+def test_vehicles_labelled_in_the_plural_are_as_many_as_their_labels() -> None:
+    text = "A van 30 m ahead of the ego brakes hard. Cars 2 and 3 follow the ego at 1 s."
+    assert kinds(text) == ["van", "car", "car"]
+
+
+def test_three_labelled_trucks_in_the_plural() -> None:
+    text = "The ego leads the convoy at 80 km/h. Trucks 2, 3 and 4 follow the ego at 1.5 s; a car cuts in ahead."
+    assert sorted(kinds(text)) == ["car", "truck", "truck", "truck"]
+
+
+def test_a_single_label_is_one_vehicle() -> None:
+    text = "Car 2 follows the ego at 1 s while a cyclist crosses 30 m ahead."
+    assert kinds(text) == ["car", "bicycle"]

@@ -1451,6 +1451,11 @@ def _vehicle_labels(tokens: list[str], kind_at: KindAt, known: Known) -> list[st
                 continue
             kind = kind_at(tokens, i)
             noun = NOUN.get(kind[0], "car") if kind is not None else "car"
+            listed = _listed_marks(tokens, i)
+            if listed:  # ("Trucks 2 and 3 follow": as many as their labels)
+                out += [_COUNT_WORDS[min(listed, len(_COUNT_WORDS) - 1)], tokens[i]]
+                i = _past_marks(tokens, i + 2)
+                continue
             out += ["the" if label in seen else ("an" if noun[0] in "aeiou" else "a"), noun]
             seen.add(label)
             i += 2
@@ -1458,6 +1463,33 @@ def _vehicle_labels(tokens: list[str], kind_at: KindAt, known: Known) -> list[st
         out.append(tokens[i])
         i += 1
     return _label_noun_again(out, ego, names)
+
+
+#: Counts in words, by value, as the reader reads a number of road users ("two trucks").
+_COUNT_WORDS = ("", "one", "two", "three", "four", "five", "six")
+#: Words that join the labels of a list ("2 and 3", "2, 3 and 4", "2-4", "B & C").
+_MARK_JOINS = frozenset({"and", ",", "&", "to", "-"})
+
+
+def _past_marks(tokens: list[str], k: int) -> int:
+    """Where the list of labels going on at ``k`` (after the first: "and 3", ", 3 and 4") ends."""
+    while k + 1 < len(tokens) and tokens[k] in _MARK_JOINS and (tokens[k + 1].isdigit() or len(tokens[k + 1]) == 1):
+        k += 2
+    return k
+
+
+def _listed_marks(tokens: list[str], i: int) -> int:
+    """How many vehicles a plural noun with a list of labels at ``i`` names ("trucks 2 and 3": two,
+    "cars 2, 3 and 4": three, "vehicles 2-4": three), or 0 for a singular noun or a single label."""
+    if _singular(tokens[i]):
+        return 0
+    end = _past_marks(tokens, i + 2)
+    marks = [t for t in tokens[i + 1 : end] if t not in _MARK_JOINS]
+    if len(marks) < 2:
+        return 0
+    if tokens[i + 2] in ("to", "-") and all(m.isdigit() for m in marks[:2]):
+        return max(int(marks[1]) - int(marks[0]) + 1, 2)  # ("vehicles 2-4": a range)
+    return len(marks)
 
 
 def _label_noun_again(tokens: list[str], ego: tuple[str, str] | None, names: list[tuple[str, str]]) -> list[str]:
