@@ -1,6 +1,7 @@
 """How many vehicles a description names as road users: a test target said again as "the target" is
-the one named before, a road named after "on the" is no car, a vehicle said to be absent ("not another
-car for miles") is none, and an "estate" that is a place ("the industrial estate") is no car."""
+the one named before; a road named after "on the" is no car; a vehicle said to be absent ("not another
+car for miles") is none; a trailing vehicle opening a line is a second one; the vehicle of a pair label
+in a first-person story is the narrator's; vehicles labelled in the plural are as many as their labels."""
 
 from __future__ import annotations
 
