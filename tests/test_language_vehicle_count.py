@@ -130,3 +130,13 @@ def test_three_labelled_trucks_in_the_plural() -> None:
 def test_a_single_label_is_one_vehicle() -> None:
     text = "Car 2 follows the ego at 1 s while a cyclist crosses 30 m ahead."
     assert kinds(text) == ["car", "bicycle"]
+
+
+def test_a_proper_name_one_slip_from_a_vehicle_word_stays_a_name() -> None:
+    text = "I was going round the Hanley Rd roundabout at 15 mph when a cyclist came across from the right."
+    assert kinds(text) == ["bicycle"]
+
+
+def test_a_misspelt_word_in_lower_case_is_still_corrected() -> None:
+    text = "I was going round the roundabout at 15 mph when a cyclsit came across from the right."
+    assert kinds(text) == ["bicycle"]
