@@ -44,9 +44,10 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass
 
+from vei_scenario.language.ego import IN_LINE
 from vei_scenario.language.lemmas import english, lemmas
 from vei_scenario.language.lexicon import ANIMALS, MOTOR_TWO_WHEELERS, WALKER_PACED
-from vei_scenario.language.scenery import vehicle_modifiers
+from vei_scenario.language.scenery import absent, vehicle_modifiers
 from vei_scenario.language.who import make_and_model, person_with_vehicle, travel_modes, vehicle_places
 
 #: ``kind_at(tokens, i)``: the road-user type named by a phrase starting at ``i`` ("ego" for the ego)
@@ -1450,6 +1451,11 @@ def _vehicle_labels(tokens: list[str], kind_at: KindAt, known: Known) -> list[st
                 continue
             kind = kind_at(tokens, i)
             noun = NOUN.get(kind[0], "car") if kind is not None else "car"
+            listed = _listed_marks(tokens, i)
+            if listed:  # ("Trucks 2 and 3 follow": as many as their labels)
+                out += [_COUNT_WORDS[min(listed, len(_COUNT_WORDS) - 1)], tokens[i]]
+                i = _past_marks(tokens, i + 2)
+                continue
             out += ["the" if label in seen else ("an" if noun[0] in "aeiou" else "a"), noun]
             seen.add(label)
             i += 2
@@ -1457,6 +1463,33 @@ def _vehicle_labels(tokens: list[str], kind_at: KindAt, known: Known) -> list[st
         out.append(tokens[i])
         i += 1
     return _label_noun_again(out, ego, names)
+
+
+#: Counts in words, by value, as the reader reads a number of road users ("two trucks").
+_COUNT_WORDS = ("", "one", "two", "three", "four", "five", "six")
+#: Words that join the labels of a list ("2 and 3", "2, 3 and 4", "2-4", "B & C").
+_MARK_JOINS = frozenset({"and", ",", "&", "to", "-"})
+
+
+def _past_marks(tokens: list[str], k: int) -> int:
+    """Where the list of labels going on at ``k`` (after the first: "and 3", ", 3 and 4") ends."""
+    while k + 1 < len(tokens) and tokens[k] in _MARK_JOINS and (tokens[k + 1].isdigit() or len(tokens[k + 1]) == 1):
+        k += 2
+    return k
+
+
+def _listed_marks(tokens: list[str], i: int) -> int:
+    """How many vehicles a plural noun with a list of labels at ``i`` names ("trucks 2 and 3": two,
+    "cars 2, 3 and 4": three, "vehicles 2-4": three), or 0 for a singular noun or a single label."""
+    if _singular(tokens[i]):
+        return 0
+    end = _past_marks(tokens, i + 2)
+    marks = [t for t in tokens[i + 1 : end] if t not in _MARK_JOINS]
+    if len(marks) < 2:
+        return 0
+    if tokens[i + 2] in ("to", "-") and all(m.isdigit() for m in marks[:2]):
+        return max(int(marks[1]) - int(marks[0]) + 1, 2)  # ("vehicles 2-4": a range)
+    return len(marks)
 
 
 def _label_noun_again(tokens: list[str], ego: tuple[str, str] | None, names: list[tuple[str, str]]) -> list[str]:
@@ -1764,6 +1797,10 @@ def _mentions_again(tokens: list[str], kind_at: KindAt, known: Known) -> list[st
             continue
         elif apposition and p.kind in VEHICLES and referents[-1].kind in VEHICLES:
             referents[-1].kind = p.kind if referents[-1].kind == "car" else referents[-1].kind
+        elif p.det == "the" and not apart and (same := _target_again(out, p, referents)) is not None:
+            out[p.start : p.end] = ["the", NOUN[same.kind]]
+            last_end = i = p.start + 2
+            continue
         elif p.det == "the" and not apart and referents:
             if general:
                 same = next((r for r in reversed(referents) if r.kind in VEHICLES), None)
@@ -1787,6 +1824,17 @@ def _mentions_again(tokens: list[str], kind_at: KindAt, known: Known) -> list[st
         last_end = p.end
         i = p.end
     return out
+
+
+def _target_again(tokens: list[str], p: _Phrase, referents: list[Referent]) -> Referent | None:
+    """The road user a bare "the target" names again: in a test the targets are the road users, so
+    it is the last one named as a target ("an e-scooter target ... the target"), else the last one
+    named at all. "Target" names no type (the lexicon reads it as a car), so without this it would
+    be a new car."""
+    if tokens[p.start : p.end] != ["the", "target"] or not referents:
+        return None
+    named = [r for r in referents if r.kind in NOUN]
+    return next((r for r in reversed(named) if r.noun.endswith("target")), named[-1] if named else None)
 
 
 #: The nouns of a pedal cycle that also name a motor two-wheeler.
@@ -1813,6 +1861,17 @@ def _singular(word: str) -> bool:
     return not nouns or word in nouns
 
 
+def _new_in_line(tokens: list[str], start: int) -> bool:
+    """Whether the bare noun at ``start`` opens its sentence or field with a word of a place in a line
+    of vehicles the text has not said before ("Lead vehicle brakes. Trailing vehicle at 1.2 s"): a
+    road user told apart from the one named before. "Following" is left out: opening a phrase it is
+    as often the ego's verb (", following lead car at 2 s"); a place said before ("lead vehicle ...
+    Lead car:") names that one again."""
+    word = tokens[start - 1] if start else ""
+    opens = start < 2 or tokens[start - 2] in SENTENCE_END
+    return word in IN_LINE - {"following"} and opens and word not in tokens[: start - 1]
+
+
 def _bare_again(tokens: list[str], p: _Phrase, referents: list[Referent], kind_at: KindAt) -> bool:
     """Whether a bare singular noun inside a clause ("behind cyclist", "passes walker") names again the
     one of its type named before (a bare noun opening a clause the reader takes so already)."""
@@ -1822,6 +1881,8 @@ def _bare_again(tokens: list[str], p: _Phrase, referents: list[Referent], kind_a
         return p.kind != "ego" and any(r.kind == p.kind for r in referents)
     if p.head != p.start or before in PUNCT or before == "" or before.isdigit() or before in OTHER:
         return False
+    if _new_in_line(tokens, p.start):
+        return False  # ("| trailing vehicle following at 1.2 s": told apart by a place in the line new here)
     for j in range(p.start - 1, max(p.start - 4, -1), -1):  # ("a stationary car": its article before
         if tokens[j] in DETERMINERS:  # a word the reader knows; "the ego passes walker": another's)
             return False
@@ -1859,8 +1920,8 @@ def _named_vehicles(tokens: list[str], kind_at: KindAt, known: Known, proper: fr
     pulled out", "a kid in a red Mini", "a black Focus in the next lane"), is a car: said with "car"
     after it, as the reader reads "a silver Mokka car". Its place: after an article (and up to two
     colours or words the reader lacks), not after a preposition of place ("past the Odeon", "near the
-    Crown"), and ending the noun phrase: a verb, a preposition, a punctuation mark or the end follow,
-    not another name ("the Red Lion")."""
+    Crown") nor "on the", which names a road ("on the Westlink"), and ending the noun phrase: a verb, a
+    preposition, a punctuation mark or the end follow, not another name ("the Red Lion")."""
     if not proper:
         return tokens
     out: list[str] = []
@@ -1879,6 +1940,8 @@ def _named_vehicles(tokens: list[str], kind_at: KindAt, known: Known, proper: fr
             continue
         if j > 0 and (tokens[j - 1] in _PLACE_BEFORE or tokens[j - 1] in BE):  # (or said of something: "was a")
             continue
+        if j > 0 and tokens[j - 1] == "on" and tokens[j] == "the":
+            continue  # (a road: "on the Hume", "on the Westlink"; a ridden one is "on a Vespa", "on his")
         if tokens[j] == "'s" and _owner_placed(tokens, j, proper):  # ("outside St Mary's Infants": a place)
             continue
         nxt = tokens[i + 1] if i + 1 < len(tokens) else "."
@@ -2340,7 +2403,7 @@ def resolve(
     tokens = _named_vehicles(tokens, kind_at, known, proper)
     tokens = _brackets(tokens, kind_at, known, names, dropped)
     tokens = _compounds(tokens, kind_at)
-    tokens = vehicle_modifiers(tokens, kind_at, dropped)
+    tokens = absent(vehicle_modifiers(tokens, kind_at, dropped), kind_at, dropped)
     tokens = partitives(tokens, kind_at)
     tokens = picked_out(tokens, kind_at, known, dropped)
     tokens = _participial_apposition(tokens, kind_at, known)

@@ -220,6 +220,35 @@ def _heading(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str
     return _as_ego(out, kind_at, known, noun, dropped)
 
 
+#: Words that join the two parties of a pair label ("car vs scooter", "car-to-pedestrian").
+PAIRED = frozenset({"vs", "versus", "v", "to"})
+
+
+def _pair_label(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "CAR vs SCOOTER, dashcam. Doing 35 km/h when the scooter drifts into my lane", "Van v cyclist
+    (helmet cam): ...": a first sentence that opens with a pair label, two bare road users joined by
+    "vs" or "to", names the two parties; where the story is told from a seat in the first of them (a
+    motor vehicle, first-person words, the narrator not on foot or on a saddle) that vehicle is the
+    writer's own, the ego, and so is every later "the <noun>" of it. A label whose vehicle the text
+    then introduces ("a car hit a boy") or whose two parties are of one kind is left as it is."""
+    if not (FIRST_PERSON | MEETS_NARRATOR) & set(tokens) or "ego" in tokens or _narrator_on_foot(tokens, kind_at):
+        return tokens
+    users = _road_users(tokens, kind_at, known)
+    if len(users) < 2:
+        return tokens
+    p, q = users[0], users[1]
+    label = p.start == 0 and not p.det and not q.det and tokens[p.end : q.start] in [[w] for w in PAIRED]
+    _, e = _sentence(tokens, 0)
+    if not label or p.kind not in VEHICLES or q.kind == p.kind or q.end > e:
+        return tokens
+    if any(r.kind == p.kind and r.det in INDEFINITE for r in users[2:]):
+        return tokens
+    noun = tokens[p.end - 1]
+    dropped.extend(tokens[p.start : p.end])
+    out = [*tokens[: p.start], "the", "ego", *tokens[p.end :]]
+    return kind_said_again(_as_ego(out, kind_at, known, noun, dropped), p.kind, kind_at, known, dropped)
+
+
 def _ego_rider(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """ "Ego is a cyclist riding at 20 km/h", "the ego is a shared e-scooter rider", "Our rider on a
     hire bike", "rider on our Gen-3 scooter": a rider the text says is the ego or calls ours is the
@@ -371,6 +400,6 @@ def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) 
     tokens = _ego_rider(tokens, kind_at, known, dropped)
     tokens = _user_story(tokens, kind_at, known, dropped)
     tokens = _driven_it(tokens, kind_at, known, dropped)
-    tokens = _heading(tokens, kind_at, known, dropped)
+    tokens = _heading(_pair_label(tokens, kind_at, known, dropped), kind_at, known, dropped)
     tokens = _narrator_aboard(tokens, kind_at, known, dropped)
     return _unintroduced(tokens, kind_at, known, dropped)

@@ -51,7 +51,8 @@ _UNITS = [
     (re.compile(r"\b(?:kilomet(?:er|re)s?|km)\s+(?:an|per|a)\s+hour\b|\bkm/hr?\b|\bkmph\b|\bkm/std\b"), "km/h"),
     (re.compile(r"\bmet(?:er|re)s?\s+(?:per|a)\s+second\b|\bmps\b"), "m/s"),
     (_MILEAGE, r"\1\g<2>000"),  # ("has about 380k on it": thousands had, no speed)
-    (re.compile(r"(\d)\s*(?:kph|kmh|k's|ks|k)(?![\w'])"), r"\1 km/h"),  # ("50 k's": spoken km/h)
+    # ("50 k's": spoken km/h; not a video's resolution: "4K dashcam")
+    (re.compile(r"(\d)\s*(?:kph|kmh|k's|ks|k)(?![\w'])(?!\s*(?:dash|video|footage|cam|hdr|uhd))"), r"\1 km/h"),
     (re.compile(r"m/s\s*\^\s*2|m/s/s|m/sec\^?2"), "m/s²"),  # ("decel 6 m/s^2": an acceleration)
     (re.compile(r"(\d)(km/h|mph|m/s|m)\b"), r"\1 \2"),
 ]

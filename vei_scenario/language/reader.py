@@ -334,7 +334,9 @@ def _speller():
 
 def _tokens(text: str, spell: bool = True, brackets: bool = False) -> list[str]:
     """The words of ``text`` as the reader reads them (normalised; a misspelt word as the word it is
-    one slip from, unless ``spell`` is false; brackets kept as words if ``brackets``)."""
+    one slip from, unless ``spell`` is false or the text writes the word only with its own capital,
+    a name: "Hanley Rd" is no "Harley"; brackets kept as words if ``brackets``)."""
+    names = proper_names(text) if spell else frozenset()
     text = text.lower().replace("\u2019", "'").replace("’", "'")
     text = Q.ranges(normalise(Q.citations(text), _actor_noun_in))
     text = ncap_rewrite(text, _actor_word)
@@ -354,7 +356,7 @@ def _tokens(text: str, spell: bool = True, brackets: bool = False) -> list[str]:
             for word in S.compound_words(tok, _slot_of):
                 out.extend([word] if (word,) in TABLE else closed_compound(word, _single_kind))
     if spell:
-        out = [_speller().correct(tok) for tok in out]
+        out = [tok if tok in names else _speller().correct(tok) for tok in out]
     out = lamps_not_signals(out, lambda w: w.isalpha() and w not in FUNCTION_WORDS)
     return own_vehicles(out, _kind_at, lambda w: w.isalpha() and w not in FUNCTION_WORDS and not _known([w], 0))
 

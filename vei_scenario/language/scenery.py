@@ -10,6 +10,9 @@ and the reader asks them here:
   may come a few plain modifiers later (colours, makes, materials the reader has no word for). Only
   words that are neither function words nor verbs may stand between, so "stopped, and a car ..."
   or "parked to let a car by" keep the state away from the noun.
+- **A negated quantifier says there is none.** "not another car for miles", "barely another vehicle
+  about", "no other cars", "hardly a van on the road": the phrase names no one; it tells how quiet the
+  road was (the settings read it as no traffic).
 - **The object of "between" / "among" is a place, however it is counted.** "out from between two
   vans", "between three lorries", "between two of the cars": a count or a partitive does not make
   the vehicles road users; the one who comes out is the road user, the vehicles are where it was.
@@ -100,6 +103,52 @@ def vehicle_modifiers(tokens: list[str], kind_at: Callable[[list[str], int], tup
         singular = "NOUN" in lemmas(noun) and noun in lemmas(noun)["NOUN"] or not noun.endswith("s")
         measure = head in _MEASURES
         if singular and head and not measure and kind_at(tokens, end) is None and _plural_noun(head, counted):
+            dropped.extend(tokens[i:end])
+        else:
+            out.extend(tokens[i:end])
+        i = end
+    return out
+
+
+#: Words that deny or all but deny what the noun phrase after them names ("no", "not another",
+#: "barely a", "hardly any", "without another").
+_NEGATING = frozenset(("no", "not", "barely", "hardly", "scarcely", "without", "nary"))
+#: Determiners and quantifiers between such a word and the noun ("not a single other", "hardly any").
+_NEGATED_QUANTIFIER = frozenset(("a", "an", "another", "other", "one", "single", "any", "more"))
+#: Road users a negated quantifier can deny: vehicles and riders ("not a single cyclist").
+_DENIED_KINDS = frozenset(("car", "van", "truck", "bicycle"))
+
+
+def _denied(tokens: list[str], i: int) -> bool:
+    """Whether the noun phrase starting at ``i`` is denied by a quantifier before it: a negating word
+    and only determiners or quantifiers between. "Not" and "without" need one ("not another car";
+    "not the car but the van", "did not stop" are no such phrase), "no" and the near-negations need
+    none ("no cars", "barely another vehicle", "hardly a van")."""
+    j = i - 1
+    while j >= 0 and tokens[j] in _NEGATED_QUANTIFIER and i - j <= 3:
+        j -= 1
+    if j < 0 or tokens[j] not in _NEGATING:
+        return False
+    return j < i - 1 or tokens[j] not in ("not", "without")
+
+
+def absent(tokens: list[str], kind_at: Callable[[list[str], int], tuple[str, int] | None],
+           dropped: list[str]) -> list[str]:  # fmt: skip
+    """``tokens`` without a vehicle or rider named only to say there was none ("not another car for
+    miles", "barely another vehicle about", "no other cars around"): no road user, however the rest
+    of the sentence goes. A measure of length ("not a car length ahead") is kept; the words left out
+    are listed as not used."""
+    out: list[str] = []
+    i = 0
+    while i < len(tokens):
+        found = kind_at(tokens, i)
+        end = i + found[1] if found is not None else i
+        after = tokens[end] if end < len(tokens) else ""
+        if found is None or found[0] not in _DENIED_KINDS or after in _MEASURES or after.startswith("length"):
+            out.append(tokens[i])
+            i += 1
+            continue
+        if _denied(tokens, i):
             dropped.extend(tokens[i:end])
         else:
             out.extend(tokens[i:end])
