@@ -207,3 +207,31 @@ def test_onto_it_after_roundabouts_is_entering_from_an_arm(text):
 def test_roundabouts_said_with_no_entry_is_no_entry():
     actor = _one("Roundabouts are fine. A cyclist rode along the road ahead of me at 15 km/h while I followed at 20.")
     assert actor.behaviours[0][0] == "along_road"
+
+
+# "let / see / watch + a road user + a bare verb", "allow / wait for + a road user + to + verb": the road
+# user does the verb (it is the object of the first verb but the subject of the second).
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("Doing 20 mph, I pulled up at the zebra to let an old man with a stick cross.", "cross_in_front"),
+        ("We were at 30 km/h and braked to allow a cyclist to cross ahead of us.", "cross_in_front"),
+        ("I slowed right down and waited for a woman with a buggy to cross the road.", "cross_in_front"),
+        ("At 25 mph I watched a lad on a scooter dart out from behind a bus.", "cross_in_front"),
+        ("I saw a lorry pull out of the side road on the left right in front of me.", "turn_into"),
+    ],
+)
+def test_a_road_user_let_or_seen_doing_something_does_it(text, expected):
+    assert _names(text)[0] == expected
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I saw a cyclist ahead of me at 20 km/h and overtook him.",
+        "I let a taxi out of the rank and followed it at 30 km/h.",
+        "We waited for a bus behind the stop line, then went at 20 km/h.",
+    ],
+)
+def test_a_road_user_let_or_seen_with_no_verb_of_its_own_is_no_act_of_its(text):
+    assert "cross_in_front" not in [b[0] for a in read(text).actors for b in a.behaviours]

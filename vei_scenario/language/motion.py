@@ -1338,6 +1338,10 @@ _QUANTITY = frozenset(("no", "enough", "insufficient", "sufficient", "little", "
                        "some", "the", "a", "plenty", "not"))  # fmt: skip
 
 
+#: Words before "a" + a noun that say what someone has with them ("with a pram"), not how much room.
+_HAS_WITH = frozenset(("with", "pushing", "carrying", "holding"))
+
+
 def room_to_act_not_behaviour(clauses: list, tokens: list[str]) -> list:
     """``clauses`` without a verb said as what a quantity of something allows ("leaving no room to
     stop", "with too little space to brake", "not enough time to swerve"): the infinitive completes
@@ -1348,6 +1352,9 @@ def room_to_act_not_behaviour(clauses: list, tokens: list[str]) -> list:
         for m in mentions:
             i = m.start
             if m.slot == "behaviour" and i >= 3 and tokens[i - 1] == "to" and tokens[i - 3] in _QUANTITY:
+                if tokens[i - 3] in ("a", "an") and i >= 4 and tokens[i - 4] in _HAS_WITH:
+                    kept.append(m)  # ("a woman with a pram to cross": what she has, not a quantity)
+                    continue
                 named = any(x.start <= i - 2 < max(x.end, x.start + 1) and x.slot != "unknown_verb" for x in mentions)
                 if "NOUN" in lemmas(tokens[i - 2]) and not named:  # (not "tells the van to stop": a road user)
                     continue
