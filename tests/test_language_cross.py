@@ -235,3 +235,32 @@ def test_a_road_user_let_or_seen_doing_something_does_it(text, expected):
 )
 def test_a_road_user_let_or_seen_with_no_verb_of_its_own_is_no_act_of_its(text):
     assert "cross_in_front" not in [b[0] for a in read(text).actors for b in a.behaviours]
+
+
+# What the narrator does after a road user comes out is not the road user's: "... in front of me had to
+# brake" said on without a stop, "had a rider come out ... and had to stop" (the one who had it), and a
+# fall after the contact ("I hit him. He fell.") is how it ended.
+@pytest.mark.parametrize(
+    "text",
+    [
+        "doing about 40 k's and a lad on a bike whizzed off the pavement on the left in front of me had to stop dead",
+        "At 20 mph Tom, in the minibus, had a girl on a scooter roll off the kerb in front of him and had to "
+        "brake hard.",
+        "I was doing 25 mph when a boy on a bike came off the kerb on my left into the road. I could not avoid "
+        "hitting his back wheel. The boy fell but was fine.",
+    ],
+)
+def test_the_narrators_reaction_and_a_fall_after_contact_leave_the_crossing(text):
+    assert _names(text) == ["cross_in_front"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "doing 40 k's and a cyclist ahead of me had to slam the brakes",
+        "doing 40 k's and a cyclist on the left in front of me had to stop dead",
+        "At 30 mph we had a van pull out of a side road on the left and it had to stop sharply.",
+    ],
+)
+def test_a_road_users_own_having_to_brake_stays_its(text):
+    assert _names(text)[-1] == "sudden_stop"

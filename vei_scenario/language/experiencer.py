@@ -3,10 +3,11 @@ had a van pull out", "I stopped to let a girl cross").
 
 English tells what happened to the one telling with "have"/"get" + a noun phrase + a bare verb ("I
 had a kid run out in front of me", "we got a taxi swing across us"), and what the one telling let
-happen or saw happen the same way: "let"/"see"/"watch"/"notice"/"spot"/"help" + a noun phrase + a bare
-verb ("let a girl cross", "watched a lad dart out"; a participle after a verb of seeing too, "saw a
-van pulling out"), "allow"/"wait for"/"stop for" + a noun phrase + "to" + a verb ("allowed a cyclist
-to cross", "waited for a woman with a pram to cross"). The noun phrase is the object of the first
+happen or saw happen the same way: "let"/"see"/"watch"/"notice"/"spot"/"help" + a noun phrase + a
+bare verb ("let a girl cross", "watched a lad dart out"; not a participle: "spotted a rider coming
+off the kerb" keeps the one who spotted as the subject of what follows), "allow"/"wait for"/"stop
+for" + a noun phrase + "to" + a verb ("allowed a cyclist to cross", "waited for a woman with a pram
+to cross"). The noun phrase is the object of the first
 verb but the subject of the second; read left to right it looks like the ego's object, and the verb
 after it would be taken as the ego's. Starting a clause at the road user makes it the subject of its
 verb, as it is in "a kid ran out in front of me".
@@ -17,11 +18,12 @@ from __future__ import annotations
 from dataclasses import replace
 
 from vei_scenario.language.lemmas import lemmas
+from vei_scenario.language.word_mention import word_mention
 
 #: Verbs (lemmas) of the narrator's experience that take a road user and a bare verb.
 _EXPERIENCE = frozenset(("have", "get"))
-#: Verbs (lemmas) of letting and of seeing that take a road user and a bare verb ("let a girl cross");
-#: those of seeing also a participle ("saw a van pulling out").
+#: Verbs (lemmas) of letting and of seeing that take a road user and a bare verb ("let a girl cross",
+#: "saw a van pull out").
 _LETTING = frozenset(("let", "help"))
 _SEEING = frozenset(("see", "watch", "notice", "spot"))
 #: Verbs (lemmas) that take a road user and "to" + a verb ("allowed a cyclist to cross").
@@ -50,7 +52,7 @@ def _bare_verb(word: str) -> bool:
 def _experienced_at(tokens: list[str], start: int) -> str | None:
     """How the road user whose mention starts at ``start`` is said to act, by the verb before its noun
     phrase (only articles, quantifiers and adjectives, no verb, between): "bare" after "have", "get",
-    "let" ("had a van pull out"), "seen" after a verb of seeing (a bare verb or a participle), "to"
+    "let" ("had a van pull out"), "seen" after a verb of seeing, "to"
     after "allow" or after "for" said after a verb of waiting ("waited for a kid to cross"), else None."""
     i = start - 1
     while i >= 0 and start - i <= 5:
@@ -73,13 +75,13 @@ def _experienced_at(tokens: list[str], start: int) -> str | None:
 
 def _verb_fits(how: str, word: str, between: list[str]) -> bool:
     """Whether ``word`` (the first word of the verb after the road user, ``between`` the words between)
-    is the road user's verb as ``how`` (:func:`_experienced_at`) wants it: a bare verb, a participle
-    too after a verb of seeing, and "to" before it after "allow" or "wait for"."""
+    is the road user's verb as ``how`` (:func:`_experienced_at`) wants it: a bare verb, with "to"
+    before it after "allow" or "wait for"."""
     if how == "to":
         return between[-1:] == ["to"] and _bare_verb(word)
     if between[-1:] == ["to"]:
         return False
-    return _bare_verb(word) or (how == "seen" and word.endswith("ing") and bool(lemmas(word).get("VERB")))
+    return _bare_verb(word)
 
 
 def _between_ok(between: list[str]) -> bool:
@@ -92,6 +94,29 @@ def _between_ok(between: list[str]) -> bool:
     return len(rest) <= 1
 
 
+#: Modals of having to: "and had to stop" after the road user's act is the experiencer's reaction.
+_HAVING_TO = frozenset(("had", "have", "needed", "need"))
+
+
+def _own_reaction_after(mentions: list, first: int, j: int, tokens: list[str]) -> set[int]:
+    """Make "and had to ..." after what the road user at ``mentions[first]`` was had doing (its verb at
+    ``j``) the experiencer's ("Darren had a rider come off the kerb and had to stop dead": Darren
+    stopped): the "and" becomes the experiencer named again, in place, so the reaction starts a clause
+    of its own (its index is returned). Only the ego as the experiencer is named so; anyone named
+    between ends the search."""
+    had = next((x for x in reversed(mentions[:first]) if x.slot in ("actor", "pronoun")), None)
+    if had is None or had.slot != "actor" or had.value != "ego":
+        return set()
+    for q in range(j + 1, len(mentions) - 1):
+        x, nxt = mentions[q], mentions[q + 1]
+        if x.slot in ("actor", "pronoun", "member") and x.value != "ego":
+            return set()
+        if x.slot == "conj" and x.words == "and" and nxt.slot == "modal" and nxt.words.split()[0] in _HAVING_TO:
+            mentions[q] = word_mention(had, tokens, x.start, "actor", "ego", words=had.words)
+            return {q}
+    return set()
+
+
 def road_user_had_acting(clauses: list, tokens: list[str]) -> list:
     """``clauses`` with each road user said after "had"/"got" and before a bare verb of its own
     (:func:`_bare_verb`) starting a clause of its own, so the verb is its act ("we had a van pull out
@@ -101,7 +126,12 @@ def road_user_had_acting(clauses: list, tokens: list[str]) -> list:
     for link, mentions in clauses:
         mentions = list(mentions)
         start = 0
+        again: set[int] = set()  # (where the experiencer is named again)
         for k, m in enumerate(mentions):
+            if k in again:
+                out.append((link, mentions[start:k]))  # (the experiencer's own reaction: see below)
+                link, start = "sequence", k
+                continue
             if k == 0 or m.slot != "actor" or m.value == "ego":
                 continue
             j = k + 1
@@ -121,5 +151,7 @@ def road_user_had_acting(clauses: list, tokens: list[str]) -> list:
                 mentions[k] = replace(m, prev="")
             out.append((link, mentions[start:first]))
             link, start = "sequence", first
+            if how == "bare":
+                again |= _own_reaction_after(mentions, start, j, tokens)
         out.append((link, mentions[start:]))
     return [(link, ms) for link, ms in out if ms]

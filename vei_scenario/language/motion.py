@@ -209,10 +209,11 @@ def _mirrors_the_ego(tokens: list[str], i: int) -> bool:
 def outcome_not_behaviour(clauses: list, tokens: list[str] | None = None) -> list:
     """``clauses`` (the reader's mentions, by clause) without the verbs that state the outcome rather
     than what a road user does: a contact verb whose subject is both parties or that says what it met
-    ("crashed into a van", "collided with the bus"), "yield a/an ...", and a
-    fall said after a contact in its sentence ("clipped my mirror and fell off": what the contact did,
-    not a stop the road user makes), and a stop said after a contact with a road user ("clipped my
-    mirror and stopped further on": the aftermath; ``tokens``: those the mentions index)."""
+    ("crashed into a van", "collided with the bus"), "yield a/an ...", a fall said after a contact
+    in its sentence or before it ("clipped my mirror and fell off", "I could not avoid hitting him.
+    The rider fell": what the contact did, not a stop the road user makes), and a stop said after a
+    contact with a road user ("clipped my mirror and stopped further on": the aftermath; ``tokens``:
+    those the mentions index)."""
     out = []
     for link, mentions in clauses:
         kept = []
@@ -220,8 +221,8 @@ def outcome_not_behaviour(clauses: list, tokens: list[str] | None = None) -> lis
             if m.slot == "behaviour":
                 first = m.words.split()[0]
                 fall = tokens is not None and "fall" in lemmas(first).get("VERB", ())
-                if fall and _touched_before(tokens, m.start):
-                    continue  # ("..., struck the ego's mirror, falling into the road": the outcome)
+                if fall and (_touched_before(tokens, m.start) or _struck_earlier(tokens, m)):
+                    continue  # ("..., struck the ego's mirror, falling into the road"; "I hit him. He fell.")
                 if m.value[0] == "stop" and tokens is not None and _struck_earlier(tokens, m):
                     continue  # ("struck my bumper and carried on before stopping": the aftermath)
                 slows = m.value[0] in ("change_speed", "sudden_stop", "stop")
