@@ -247,7 +247,7 @@ def test_a_road_user_let_or_seen_with_no_verb_of_its_own_is_no_act_of_its(text):
         "At 20 mph Tom, in the minibus, had a girl on a scooter roll off the kerb in front of him and had to "
         "brake hard.",
         "I was doing 25 mph when a boy on a bike came off the kerb on my left into the road. I could not avoid "
-        "hitting his back wheel. The boy fell but was fine.",
+        "hitting him. He fell off.",
     ],
 )
 def test_the_narrators_reaction_and_a_fall_after_contact_leave_the_crossing(text):
@@ -264,3 +264,21 @@ def test_the_narrators_reaction_and_a_fall_after_contact_leave_the_crossing(text
 )
 def test_a_road_users_own_having_to_brake_stays_its(text):
     assert _names(text)[-1] == "sudden_stop"
+
+
+# Pulling out from the side said with a date before it, or with where it ends said after a comma: one
+# move into the ego's way.
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I drive a taxi. On 12 March a minibus pulled out of the stop on the left into my path as I was doing 30 mph.",
+        "I was doing 50 mph when a tractor pulled out of a farm gate on my left, straight into my lane.",
+        "Doing 40 mph, Sam in the tipper had a quad bike pull out of a lay-by on his left, straight into his lane.",
+    ],
+)
+def test_a_pull_out_from_the_roadside_is_one_cut_in(text):
+    assert _names(text) == ["cut_in"]
+
+
+def test_a_move_out_of_the_ego_lane_said_with_straight_is_a_lane_change():
+    assert _names("At 40 mph a van in front of me moved straight into the next lane.") == ["change_lane"]

@@ -976,6 +976,16 @@ def _before_the_ego(tokens: list[str], j: int) -> bool:
 _BE = frozenset(("is", "was", "are", "were", "'s", "be", "been"))
 
 
+#: Moves that bring a road user into the ego's way from the side: a verbless "straight into ... lane"
+#: after one says where it ends.
+_COMING_IN = frozenset(("cut_in", "turn_into", "cross_in_front", "run_red_light"))
+
+
+def _coming_in(m) -> bool:
+    """Whether mention ``m`` is a move into the ego's way from the side (:data:`_COMING_IN`)."""
+    return m.slot == "behaviour" and m.value[0] in _COMING_IN
+
+
 def into_a_lane(clauses: list, tokens: list[str]) -> list:
     """``clauses`` with a plain verb of motion whose destination is a lane ("goes over to the next
     lane", "moved from lane 1 into lane 2", "heads into another lane") read as the move it is: into
@@ -996,6 +1006,8 @@ def into_a_lane(clauses: list, tokens: list[str]) -> list:
             progressive = m.start > 0 and tokens[m.start - 1] in _BE  # ("is moving to my lane": a move under way)
             if not (plain or across) or (m.words.split()[0].endswith("ing") and not progressive):
                 continue  # ("travelling in lane 2": where it goes along, not a move)
+            if m.slot == "ego_verb" and any(_coming_in(x) for x in kept[:k]):
+                continue  # ("pulled out of a lay-by, straight into his lane": where that move ends)
             j = m.end
             while j < len(tokens) and tokens[j] in _ON_THE_WAY:
                 j += 1

@@ -758,6 +758,8 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
                 verb = "VERB" in pos and not pos & {"ADJ", "ADV"} and not tok.endswith(("ing", "ed"))
                 if _after_article(tokens, i) or _counted_plural(tokens, i) or _before_auxiliary(tokens, i):
                     verb = False  # (in a noun phrase: "the petrol station" names a place, no verb)
+                if _month_of_a_date(tokens, i):
+                    verb = False  # ("On 3 March a bus pulled out": a date, not the verb "march")
                 if i + 1 < len(tokens) and _modifies_actor(tokens, i + 1):
                     verb = False  # a word naming what kind before an actor ("a police car", "a Ford Transit van")
                 elif _new_unknown_subject(tokens, i) and "VERB" not in pos and _does_soon(tokens, i + 1):
@@ -943,6 +945,22 @@ def _predicate_of_ego(tokens: list[str], i: int) -> bool:
             return False
         j -= 1
     return j >= 1 and tokens[j] in _COPULAS and tokens[j - 1] in ("i", "we") and tokens[j + 1] in _DETERMINERS
+
+
+#: Months whose name is also a verb.
+_MONTH_VERBS = frozenset(("march",))
+#: Day numbers written as ordinals ("3rd", "the 14th").
+_ORDINAL = re.compile(r"^\d{1,2}(st|nd|rd|th)?$")
+
+
+def _month_of_a_date(tokens: list[str], i: int) -> bool:
+    """Whether ``tokens[i]`` is a month said with its day ("3 March", "March 3rd", "on the 3rd of
+    March"): a date, no verb of anyone."""
+    if tokens[i] not in _MONTH_VERBS:
+        return False
+    before = tokens[i - 2] if i >= 2 and tokens[i - 1] == "of" else (tokens[i - 1] if i else "")
+    after = tokens[i + 1] if i + 1 < len(tokens) else ""
+    return bool(_ORDINAL.match(before) or _ORDINAL.match(after))
 
 
 def _after_article(tokens: list[str], i: int) -> bool:
