@@ -282,3 +282,44 @@ def test_a_pull_out_from_the_roadside_is_one_cut_in(text):
 
 def test_a_move_out_of_the_ego_lane_said_with_straight_is_a_lane_change():
     assert _names("At 40 mph a van in front of me moved straight into the next lane.") == ["change_lane"]
+
+
+# A turn "across us" or across the way right in front of the ego, by one coming the other way, is the
+# turn across the ego's path.
+@pytest.mark.parametrize(
+    "text",
+    [
+        "We were doing 40 km/h when an oncoming taxi turned right across us into a side street.",
+        "I was driving the bus north at 30 km/h when a van heading south turned right across the road in front of me.",
+    ],
+)
+def test_a_turn_across_the_ego_by_one_coming_the_other_way_turns_across(text):
+    assert _names(text) == ["turn_across"]
+
+
+def test_a_pull_out_of_a_side_road_made_to_turn_and_across_the_ego_is_one_turn_into_its_road():
+    text = "I was doing 30 mph when a van came out of a side road on the left to turn right and pulled across my path."
+    assert _names(text) == ["turn_into"]
+
+
+def test_a_side_road_pull_out_then_a_red_light_run_stays_a_run():
+    text = "I was doing 30 mph at the lights when a van came out of a side road on the left and ran the red."
+    assert _names(text) == ["run_red_light"]
+
+
+# A vehicle said ahead of the ego that swings out moves out of the ego's lane; one that swings out
+# across the road in front of the ego crosses it.
+@pytest.mark.parametrize(
+    "text",
+    [
+        "We were at 20 mph. A lorry was double-parked and the taxi ahead of us veered out round it.",
+        "We were at 20 mph. A lorry was double-parked and the taxi in front swung out round it.",
+    ],
+)
+def test_a_vehicle_ahead_that_swings_out_leaves_the_lane(text):
+    (_, car) = read(text).actors
+    assert car.behaviours[0][0] in ("change_lane", "cut_out")
+
+
+def test_a_vehicle_that_swings_out_across_the_road_in_front_crosses_it():
+    assert _names("We were at 20 mph when a taxi swung out across the road in front of us.") == ["run_red_light"]

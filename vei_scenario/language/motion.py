@@ -51,6 +51,8 @@ from vei_scenario.language.word_mention import word_mention
 
 #: Behaviours that, said with running the red, are the manner of that run.
 _MANNER_OF_A_RUN = frozenset(("overtake", "turn_into"))
+#: Words that say a light or signal is there to be run.
+_RED_SAID = re.compile(r"\b(red|amber|lights?|signals?|signalised|signalized)\b")
 _ARMS = frozenset(("junction_left", "junction_right", "junction_opposite"))
 
 
@@ -778,6 +780,10 @@ def one_path(spec: ActorSpec, said: str = "", across: str = "left") -> list:
         _, cfg, crit, link = spec.behaviours[0]
         spec.relation, spec.facing = "ahead", "against"
         return [("wrong_way", {}, crit, link)]
+    if names[:1] == ["turn_into"] and "run_red_light" in names and not _RED_SAID.search(said):
+        # ("came out of a side road to turn right and pulled across my path": with no red light said,
+        # the move across the ego's path is how it turns out of the side road, not a second one)
+        return [b for b in spec.behaviours if b[0] != "run_red_light"]
     if "run_red_light" in names:
         return [b for b in spec.behaviours if b[0] not in _MANNER_OF_A_RUN]
     if names[:2] == ["overtake", "forced_turn"]:
@@ -1249,17 +1255,24 @@ _LATERAL = frozenset(("cut_in", "change_lane", "cross_in_front"))
 def across_to_turn(clauses: list) -> list:
     """``clauses`` without a move across lanes made to turn ("swings across my lane to make a right",
     "cuts over in front of me to turn left"): the turn said as its purpose (after "to") is the
-    behaviour, the move across how it begins."""
+    behaviour, the move across how it begins. A pull-out of a side road made to turn ("emerged from a
+    side road on my left, intending to turn right") is turning into the ego's road: the turn is where
+    it goes once out, and the pull-out stays, read as that turn."""
     out = []
     for link, mentions in clauses:
+        mentions = list(mentions)
         drop: set[int] = set()
         for k, m in enumerate(mentions):
             if not (m.slot == "behaviour" and m.value[0] in _LATERAL):
                 continue
-            for x in mentions[k + 1 :]:
+            for q, x in enumerate(mentions[k + 1 :], k + 1):
                 if x.slot in ("actor", "pronoun") and x.value != "ego" or x.slot == "link":
                     break
                 turning = x.slot == "turn" or (x.slot == "behaviour" and x.value[0] == "forced_turn")
+                if turning and x.prev == "to" and m.value[1].get("from_side_road"):
+                    mentions[k] = replace(m, value=("turn_into", m.value[1]))
+                    drop.add(q)
+                    break
                 if turning and x.prev == "to":
                     drop.add(k)
                     break
@@ -1700,16 +1713,29 @@ def coming_from_in_front(clauses: list, tokens: list[str]) -> list:
 
 def _across_the_ego(tokens: list[str], j: int) -> bool:
     """Whether "across" + the ego's path, way or lane is said from ``tokens[j]`` ("across my path",
-    "straight across our way", "across the ego's lane")."""
+    "straight across our way", "across the ego's lane"), or the ego itself ("across us", "across the
+    ego"), or what is crossed right in front of it ("across the tracks in front of me")."""
     while j < len(tokens) and tokens[j] in ("straight", "right", "directly", "just"):
         j += 1
     if j >= len(tokens) or tokens[j] != "across":
         return False
+    if tokens[j + 1 : j + 2] in (["me"], ["us"], ["ego"]) or tokens[j + 1 : j + 3] == ["the", "ego"]:
+        return True
+    if tokens[j + 1 : j + 2] == ["the"] and _in_front_of_the_ego(tokens, j + 3):
+        return True  # ("across the tracks in front of me": the one thing crossed, where the ego is)
     said = " ".join(tokens[j + 1 : j + 5]).replace(" 's", "'s").split()
     for n, owner in enumerate(said[:3]):
         if owner in _EGO_OWNER_WORDS and n + 1 < len(said) and said[n + 1] in _ACROSS_WAYS:
             return n == 0 or said[:n] == ["the"]
     return False
+
+
+def _in_front_of_the_ego(tokens: list[str], j: int) -> bool:
+    """Whether "in front of" the ego is said at ``tokens[j]`` ("in front of me", "in front of the ego")."""
+    if tokens[j : j + 3] != ["in", "front", "of"]:
+        return False
+    rest = tokens[j + 3 : j + 5]
+    return rest[:1] in (["me"], ["us"], ["ego"]) or rest == ["the", "ego"]
 
 
 def turning_to_a_side(clauses: list, tokens: list[str]) -> list:

@@ -257,6 +257,7 @@ class _Actor:
     has_way: bool = False  # going on while the ego gives way ("we yield; the van carries on")
     priority: bool = False  # already on the roundabout or the main road: going on is its right
     from_arm: bool = False  # said to come from or out of a junction arm ("from the side road on the left")
+    moves_out: bool = False  # its crossing is said with "out" ("swung out", "pulled out")
 
 
 #: Euro NCAP's names of its test scenarios ("Car-to-Car Rear stationary", "Car-to-Pedestrian Nearside
@@ -1820,6 +1821,7 @@ def _read(text: str) -> Reading:
         for a, i in added:
             name, cfg, _, lk = a.behaviours[i]
             words = cfg.pop("_words", "")
+            a.moves_out = a.moves_out or (name == "cross_in_front" and "out" in words.split())
             if name == "sudden_stop" and len(words.split()) == 1 and "brake" in forms(words):
                 cfg["_plain_brake"] = 1.0  # ("brakes": how hard, a stop said after it tells)
             a.goes_on = a.goes_on or bool(cfg.pop("_denied", None))
@@ -1929,6 +1931,10 @@ def _read(text: str) -> Reading:
         if a.kind == "pedestrian" and "run_red_light" in names:  # a walker against red crosses the road
             a.behaviours = [("cross_in_front", *b[1:]) if b[0] == "run_red_light" else b for b in a.behaviours]
             a.behaviours = [b for k, b in enumerate(a.behaviours) if k == 0 or b[0] != a.behaviours[k - 1][0]]
+        elif a.kind in VEHICLES and "cross_in_front" in names and a.moves_out and _ahead_first(a):
+            # a vehicle said ahead of the ego that swings out is in the ego's road already: it moves out
+            # of the ego's lane ("the car ahead of us swung out round it"), no crossing traffic
+            a.behaviours = [("change_lane", *b[1:]) if b[0] == "cross_in_front" else b for b in a.behaviours]
         elif a.kind in VEHICLES and "cross_in_front" in names and not (a.kerb or a.kerb_side or a.lane_side):
             # a vehicle crossing the ego's road goes through a junction across its path
             a.behaviours = [("run_red_light", *b[1:]) if b[0] == "cross_in_front" else b for b in a.behaviours]
@@ -2143,6 +2149,12 @@ def _read(text: str) -> Reading:
     if r.weather in (None, "rain") and stated_heavy_rain(said):
         r.weather = "heavy_rain"
     return r
+
+
+def _ahead_first(a: _Actor) -> bool:
+    """Whether road user ``a`` is said to be ahead of the ego before it moves ("the car ahead of us
+    swung out"; not "swung out in front of us", where it ends)."""
+    return a.relation == "ahead" and "ahead_first" in a.said
 
 
 def _vehicle_word(word: str) -> bool:
@@ -2851,6 +2863,8 @@ def _apply(m, who, r, link, added) -> None:
             a.said.add("in_front")  # "cuts in 10 m ahead": where it cuts in, not where it starts
         elif m.slot == "relation":
             a.said.add(m.value)
+            if m.value == "ahead" and not a.behaviours:
+                a.said.add("ahead_first")  # ("the car ahead of us swung out": where it is before it moves)
             if m.value == "ahead" and motion.in_the_ego_lane(m.words):
                 a.said.add("in_ego_lane")  # ("in my lane": not only in front, in the ego's own lane)
             a.followed = a.followed or (m.value == "ahead" and m.words in ("following", "tailing"))
