@@ -323,3 +323,35 @@ def test_a_vehicle_ahead_that_swings_out_leaves_the_lane(text):
 
 def test_a_vehicle_that_swings_out_across_the_road_in_front_crosses_it():
     assert _names("We were at 20 mph when a taxi swung out across the road in front of us.") == ["run_red_light"]
+
+
+# "VERB out in front of me": a walker or rider comes out across the road, a vehicle pulls out; "was
+# riding out in front of me" is where it rides.
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Heading home at 30 mph and a deer just strolled out in front of me.",
+        "At 30 mph an old man ambled out right in front of us.",
+        "At 30 mph a woman on a bike came out in front of us.",
+        "At 30 mph a dog went out in front of me.",
+    ],
+)
+def test_out_in_front_of_the_ego_is_a_crossing(text):
+    assert _names(text) == ["cross_in_front"]
+
+
+def test_riding_out_in_front_of_the_ego_is_going_along():
+    assert _names("At 30 mph a cyclist was riding out in front of me.") == ["along_road"]
+
+
+# A vehicle's sudden move sideways that ends in front of the ego ("dives / swoops / nips in front of me")
+# is a cut-in; in front of someone else it is not the ego's.
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Doing 60 on the motorway when a hatchback from the slip road dived in front of me.",
+        "At 50 mph a BMW from the next lane swooped in front of us.",
+    ],
+)
+def test_a_sudden_move_in_front_of_the_ego_is_a_cut_in(text):
+    assert _names(text) == ["cut_in"]

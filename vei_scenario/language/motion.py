@@ -1787,8 +1787,8 @@ _CROSSERS = frozenset(("pedestrian", "bicycle", "e-scooter"))
 
 
 def _out_into_the_road(tokens: list[str], j: int) -> int | None:
-    """Where "out into the road" / "out across the road" / "out from between ..." / "out from behind ..." said from
-    ``tokens[j]`` ends (past "out" and its preposition), or None."""
+    """Where "out into the road" / "out across the road" / "out from between ..." / "out from behind ..." /
+    "out in front of" the ego said from ``tokens[j]`` ends (past "out" and its preposition), or None."""
     while j < len(tokens) and tokens[j] in _BEFORE_OUT:
         j += 1
     if tokens[j : j + 1] != ["out"]:
@@ -1803,22 +1803,25 @@ def _out_into_the_road(tokens: list[str], j: int) -> int | None:
         return j + 2
     if nxt[:1] == ["from"] and len(nxt) > 1 and nxt[1] in _FROM_HIDING:
         return j + 2
+    if _before_the_ego(tokens, j + 1):  # ("strolls out in front of me", "stepped out right in front of us")
+        return j + 1
     return None
 
 
 def out_into_the_road(clauses: list, tokens: list[str]) -> list:
-    """``clauses`` with a plain verb of motion + "out into the road" or "out from between / behind"
-    (parked vehicles) read as coming out onto the road in front of the ego, whatever the verb ("rode
-    out from between two vans", "came straight out into the street", "went out into the road"): a
-    walker or rider crosses it, a vehicle pulls out into it. "Out in the road" is where one rides,
-    not a move out."""
+    """``clauses`` with a plain verb of motion + "out into the road", "out from between / behind"
+    (parked vehicles) or "out in front of" the ego read as coming out onto the road in front of the
+    ego, whatever the verb ("rode out from between two vans", "came straight out into the street",
+    "strolled out in front of me"): a walker or rider crosses it, a vehicle pulls out into it. "Out
+    in the road" is where one rides, not a move out, and so is "was riding out in front of me"."""
     out = []
     for link, mentions in clauses:
         kept = list(mentions)
         for k, m in enumerate(kept):
             plain = m.slot == "ego_verb" or (m.slot == "behaviour" and m.value[0] in _PLAIN_MOVES | {"along_road"})
-            if not plain or _out_into_the_road(tokens, m.end) is None:
-                continue
+            end = _out_into_the_road(tokens, m.end) if plain else None
+            if end is None or (tokens[end : end + 1] == ["in"] and m.words.split()[0].endswith("ing")):
+                continue  # ("was riding out in front of me": where it rides, ahead)
             subject = next((x for x in reversed(kept[:k]) if x.slot == "actor"), None)
             if subject is None or subject.value == "ego":
                 continue
