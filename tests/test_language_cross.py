@@ -355,3 +355,20 @@ def test_riding_out_in_front_of_the_ego_is_going_along():
 )
 def test_a_sudden_move_in_front_of_the_ego_is_a_cut_in(text):
     assert _names(text) == ["cut_in"]
+
+
+# An exit a road user wants ("wanted my exit", "needed the same exit") is where it goes, not the arm it
+# comes from: beside the ego on the roundabout, cutting across is a cut-in from that side.
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Going round the roundabout at 15 mph in the right lane, a taxi on my left wanted the same exit and cut "
+        "across in front of me.",
+        "I was in the outside lane of the roundabout at 20 mph and a lorry on my left needed my exit too and cut "
+        "straight across in front of me.",
+    ],
+)
+def test_an_exit_wanted_is_where_the_road_user_goes(text):
+    actor = _one(text)
+    assert actor.behaviours[0][0] == "cut_in"
+    assert actor.relation == "left"

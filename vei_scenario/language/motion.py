@@ -266,10 +266,11 @@ _MAKING_FOR = frozenset(("for", "towards", "toward"))
 _POSSESSIVE = frozenset(("its", "his", "her", "their"))
 
 
-def destinations_not_origins(clauses: list) -> list:
+def destinations_not_origins(clauses: list, tokens: list[str] | None = None) -> list:
     """``clauses`` without the side roads and exits said as where a road user goes ("into a side
     street", "into one of the side roads on the right", "to get to its exit"), and the side said of
-    them; where a road user comes from or is stays ("out of the side road", "up to the entry"). A
+    them, and an exit wanted ("wanted my exit", "needed the same exit": ``tokens``, those the mentions
+    index, say so); where a road user comes from or is stays ("out of the side road", "up to the entry"). A
     road user of that clause moving across the ego's way towards a side ("cuts left across me to
     turn into a side street") is turning off across it: a turn that way, read as the reader reads
     "swings left across"."""
@@ -281,7 +282,8 @@ def destinations_not_origins(clauses: list) -> list:
         dropped = False
         for k, m in enumerate(mentions):
             before = mentions[k - 1] if k > 0 else None
-            if m.slot == "arm" and _led_towards(m, before, mentions[k - 2] if k > 1 else None):
+            wanted = tokens is not None and _wanted(tokens, m.start)
+            if m.slot == "arm" and (wanted or _led_towards(m, before, mentions[k - 2] if k > 1 else None)):
                 drop_side = dropped = True
                 if kept and kept[-1] is before and before.slot in ("pronoun", "member"):
                     kept.pop()
@@ -671,6 +673,19 @@ def lets_the_ego_go(clauses: list, tokens: list[str]) -> list:
         return None
 
     return _rewrite(clauses, rule)
+
+
+#: Verbs (lemmas) of wanting or choosing a way: a side road or exit as their object is where one goes.
+_WANTING = frozenset(("want", "need", "choose", "pick", "fancy"))
+
+
+def _wanted(tokens: list[str], start: int) -> bool:
+    """Whether the arm mention starting at ``start`` is the object of a verb of wanting ("wanted my
+    exit", "needed the same exit as me"), past its determiner and an adjective or two."""
+    i = start - 1
+    while i >= 0 and start - i <= 3 and not lemmas(tokens[i]).get("VERB"):
+        i -= 1
+    return i >= 0 and start - i <= 3 and bool(set(lemmas(tokens[i]).get("VERB", ())) & _WANTING)
 
 
 def _led_towards(m, before, earlier=None) -> bool:

@@ -1289,7 +1289,7 @@ def _read(text: str) -> Reading:
     clauses = sides.ego_follows(sides.numbered_lanes(clauses, sides.drives_on_left(scanned, text)))
     clauses = sides.into_the_ego_rear(experiencer.road_user_had_acting(clauses, scanned))
     clauses = out_of_a_side_road(
-        destinations_not_origins(outcome_not_behaviour(_drop_label(clauses), scanned)), scanned
+        destinations_not_origins(outcome_not_behaviour(_drop_label(clauses), scanned), scanned), scanned
     )
     tokens = _tokens(text)
     said = " ".join(tokens)  # (the whole text as the reader reads it, for what is stated of it as a whole)
