@@ -372,3 +372,16 @@ def test_an_exit_wanted_is_where_the_road_user_goes(text):
     actor = _one(text)
     assert actor.behaviours[0][0] == "cut_in"
     assert actor.relation == "left"
+
+
+# Where someone or something is carried is no move of a road user's ("taken out of service", "towed
+# away", "brought over to the kerb").
+@pytest.mark.parametrize(
+    "text",
+    [
+        "At 25 km/h a rider stopped abruptly in front of me. Scooter damaged, taken out of service.",
+        "At 25 km/h a rider stopped abruptly in front of me. Scooter dragged into the road, later collected.",
+    ],
+)
+def test_being_carried_somewhere_is_no_move(text):
+    assert _names(text) == ["sudden_stop"]

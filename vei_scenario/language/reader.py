@@ -717,6 +717,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             and not to_a_stop
             and _verb_before(tok, tokens[i + 1])
             and not (tokens[i + 1] == "into" and into_road_user(tokens, i + 1))  # ("banged into my car": a hit)
+            and not set(_lemmas(tok).get("VERB", ())) & _CARRYING  # ("taken to A&E", "towed away")
         ):
             # a verb the lexicon lacks, with where it goes ("swung into my lane", "bolted across the road"):
             # read as the plain motion verb with the same words, when that is a behaviour
@@ -1059,6 +1060,11 @@ PLAIN_MOTION_VERBS = ("move", "go", "walk")
 _MOTION_PARTICLES = frozenset(
     "into to across out over in onto off through past away back towards toward round around from between".split()
 )
+
+
+#: Verbs (lemmas) of carrying someone or something: where they go is where it was carried ("rider
+#: taken to A&E", "scooter taken out of service", "the car was towed away"), no move of a road user's.
+_CARRYING = frozenset(("take", "bring", "carry", "send", "tow", "ferry", "airlift", "drag"))
 
 
 def _verb_before(word: str, after: str) -> bool:
