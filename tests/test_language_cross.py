@@ -385,3 +385,13 @@ def test_an_exit_wanted_is_where_the_road_user_goes(text):
 )
 def test_being_carried_somewhere_is_no_move(text):
     assert _names(text) == ["sudden_stop"]
+
+
+# One already on the roundabout has the way also when where it comes from is said of the ego's side
+# before its verb ("approaching from the ego's left"): it goes on, no red-light run.
+def test_already_on_the_roundabout_from_the_ego_side_goes_on():
+    text = (
+        "The ego enters the roundabout at 20 km/h. A bus already on the roundabout, approaching from the ego's "
+        "left, continues past the entry."
+    )
+    assert _names(text) == ["keep_going"]
