@@ -395,3 +395,14 @@ def test_already_on_the_roundabout_from_the_ego_side_goes_on():
         "left, continues past the entry."
     )
     assert _names(text) == ["keep_going"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "At the lights a cyclist ran the red in front of us at 20 km/h. Cyclist fine, checked over on scene.",
+        "At the lights a cyclist ran the red in front of us at 20 km/h. Rider fine, looked over by a medic.",
+    ],
+)
+def test_looking_or_being_looked_over_is_no_move(text):
+    assert _names(text) == ["run_red_light"]

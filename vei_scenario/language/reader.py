@@ -1063,8 +1063,13 @@ _MOTION_PARTICLES = frozenset(
 
 
 #: Verbs (lemmas) of carrying someone or something: where they go is where it was carried ("rider
-#: taken to A&E", "scooter taken out of service", "the car was towed away"), no move of a road user's.
-_CARRYING = frozenset(("take", "bring", "carry", "send", "tow", "ferry", "airlift", "drag"))
+#: taken to A&E", "scooter taken out of service", "the car was towed away"), and verbs of looking or
+#: signalling: where they go is where one looks or calls ("looked across at me", "checked over on
+#: scene", "waved over"): no move of a road user's.
+_CARRYING = frozenset((
+    "take", "bring", "carry", "send", "tow", "ferry", "airlift", "drag",
+    "look", "glance", "check", "peer", "stare", "gaze", "wave", "call", "shout", "gesture", "signal",
+))  # fmt: skip
 
 
 def _verb_before(word: str, after: str) -> bool:
