@@ -406,3 +406,10 @@ def test_already_on_the_roundabout_from_the_ego_side_goes_on():
 )
 def test_looking_or_being_looked_over_is_no_move(text):
     assert _names(text) == ["run_red_light"]
+
+
+def test_the_lane_count_after_the_ego_lane_is_no_speed_of_the_one_cutting_in():
+    reading = read("Doing 56 in lane 1 of 3 when a hatchback from the slip road dived in front of me.")
+    (actor,) = reading.actors
+    assert actor.behaviours[0][0] == "cut_in"
+    assert actor.speed_mps is None or actor.speed_mps > 5

@@ -58,6 +58,8 @@ def _experienced_at(tokens: list[str], start: int) -> str | None:
     while i >= 0 and start - i <= 5:
         word = tokens[i]
         said = set(lemmas(word).get("VERB", ()))
+        if said & _LETTING and _stood_before(tokens, i):
+            return None  # ("I had stopped to let a girl cross when ...": the scene opens on the ego standing)
         if said & (_EXPERIENCE | _LETTING):
             return "bare"  # ("had", "has", "got", "have", "let")
         if said & _SEEING:
@@ -71,6 +73,16 @@ def _experienced_at(tokens: list[str], start: int) -> str | None:
             continue
         return None
     return None
+
+
+def _stood_before(tokens: list[str], i: int) -> bool:
+    """Whether "to let" at ``tokens[i]`` follows a stop in the past perfect ("had stopped to let", "had
+    pulled up to let"): the ego already stands as the scene opens (the reader starts it at 0 km/h), and
+    whom it had stopped for is what came before the scene, not a road user that meets it."""
+    if tokens[i - 1 : i] != ["to"]:
+        return False
+    before = tokens[max(0, i - 5) : i - 1]
+    return "had" in before and any(set(lemmas(w).get("VERB", ())) & _WAITING for w in before)
 
 
 def _verb_fits(how: str, word: str, between: list[str]) -> bool:

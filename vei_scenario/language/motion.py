@@ -1823,6 +1823,10 @@ def _out_into_the_road(tokens: list[str], j: int) -> int | None:
     return None
 
 
+#: Mentions that give the verb after them a subject other than the road user named before.
+_NEW_SUBJECT = frozenset(("count", "pronoun", "member", "conj", "link"))
+
+
 def out_into_the_road(clauses: list, tokens: list[str]) -> list:
     """``clauses`` with a plain verb of motion + "out into the road", "out from between / behind"
     (parked vehicles) or "out in front of" the ego read as coming out onto the road in front of the
@@ -1840,6 +1844,9 @@ def out_into_the_road(clauses: list, tokens: list[str]) -> list:
             subject = next((x for x in reversed(kept[:k]) if x.slot == "actor"), None)
             if subject is None or subject.value == "ego":
                 continue
+            own = all(x.slot not in _NEW_SUBJECT for x in kept[kept.index(subject) + 1 : k])
+            if tokens[end : end + 1] == ["in"] and not own:
+                continue  # ("..., so both come out in front of me": a subject of its own, not the one named)
             name = "cross_in_front" if subject.value in _CROSSERS else "cut_in"
             kept[k] = replace(m, slot="behaviour", value=(name, {}))
         out.append((link, kept))

@@ -536,6 +536,8 @@ def _number(tokens: list[str], i: int, imperial: bool = False) -> tuple[str, flo
     if nxt in ("lanes", "lane") or (nxt == "-" and i + 2 < len(tokens) and tokens[i + 2] in ("lane", "lanes")):
         if value == int(value) and 1 <= value <= 8:  # "3 lanes", "a 2-lane road": lanes a direction
             return "lanes", int(value), 2 if nxt != "-" else 3
+    if i >= 3 and tokens[i - 1] == "of" and tokens[i - 3] in ("lane", "lanes"):
+        return "skip", value, 1  # ("in lane 1 of 3": how many lanes, no speed)
     prev = Q.before_hedge(tokens, i) if i > 0 else ""  # ("doing at least 70", "going well over 60")
     to_changed = tokens[i - 1] == "to" and _changes_speed_before(
         tokens, i - 1
