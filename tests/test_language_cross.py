@@ -207,3 +207,209 @@ def test_onto_it_after_roundabouts_is_entering_from_an_arm(text):
 def test_roundabouts_said_with_no_entry_is_no_entry():
     actor = _one("Roundabouts are fine. A cyclist rode along the road ahead of me at 15 km/h while I followed at 20.")
     assert actor.behaviours[0][0] == "along_road"
+
+
+# "let / see / watch + a road user + a bare verb", "allow / wait for + a road user + to + verb": the road
+# user does the verb (it is the object of the first verb but the subject of the second).
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("Doing 20 mph, I pulled up at the zebra to let an old man with a stick cross.", "cross_in_front"),
+        ("We were at 30 km/h and braked to allow a cyclist to cross ahead of us.", "cross_in_front"),
+        ("I slowed right down and waited for a woman with a buggy to cross the road.", "cross_in_front"),
+        ("At 25 mph I watched a lad on a scooter dart out from behind a bus.", "cross_in_front"),
+        ("I saw a lorry pull out of the side road on the left right in front of me.", "turn_into"),
+    ],
+)
+def test_a_road_user_let_or_seen_doing_something_does_it(text, expected):
+    assert _names(text)[0] == expected
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I saw a cyclist ahead of me at 20 km/h and overtook him.",
+        "I let a taxi out of the rank and followed it at 30 km/h.",
+        "We waited for a bus behind the stop line, then went at 20 km/h.",
+    ],
+)
+def test_a_road_user_let_or_seen_with_no_verb_of_its_own_is_no_act_of_its(text):
+    assert "cross_in_front" not in [b[0] for a in read(text).actors for b in a.behaviours]
+
+
+# What the narrator does after a road user comes out is not the road user's: "... in front of me had to
+# brake" said on without a stop, "had a rider come out ... and had to stop" (the one who had it), and a
+# fall after the contact ("I hit him. He fell.") is how it ended.
+@pytest.mark.parametrize(
+    "text",
+    [
+        "doing about 40 k's and a lad on a bike whizzed off the pavement on the left in front of me had to stop dead",
+        "At 20 mph Tom, in the minibus, had a girl on a scooter roll off the kerb in front of him and had to "
+        "brake hard.",
+        "I was doing 25 mph when a boy on a bike came off the kerb on my left into the road. I could not avoid "
+        "hitting him. He fell off.",
+    ],
+)
+def test_the_narrators_reaction_and_a_fall_after_contact_leave_the_crossing(text):
+    assert _names(text) == ["cross_in_front"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "doing 40 k's and a cyclist ahead of me had to slam the brakes",
+        "doing 40 k's and a cyclist on the left in front of me had to stop dead",
+        "At 30 mph we had a van pull out of a side road on the left and it had to stop sharply.",
+    ],
+)
+def test_a_road_users_own_having_to_brake_stays_its(text):
+    assert _names(text)[-1] == "sudden_stop"
+
+
+# Pulling out from the side said with a date before it, or with where it ends said after a comma: one
+# move into the ego's way.
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I drive a taxi. On 12 March a minibus pulled out of the stop on the left into my path as I was doing 30 mph.",
+        "I was doing 50 mph when a tractor pulled out of a farm gate on my left, straight into my lane.",
+        "Doing 40 mph, Sam in the tipper had a quad bike pull out of a lay-by on his left, straight into his lane.",
+    ],
+)
+def test_a_pull_out_from_the_roadside_is_one_cut_in(text):
+    assert _names(text) == ["cut_in"]
+
+
+def test_a_move_out_of_the_ego_lane_said_with_straight_is_a_lane_change():
+    assert _names("At 40 mph a van in front of me moved straight into the next lane.") == ["change_lane"]
+
+
+# A turn "across us" or across the way right in front of the ego, by one coming the other way, is the
+# turn across the ego's path.
+@pytest.mark.parametrize(
+    "text",
+    [
+        "We were doing 40 km/h when an oncoming taxi turned right across us into a side street.",
+        "I was driving the bus north at 30 km/h when a van heading south turned right across the road in front of me.",
+    ],
+)
+def test_a_turn_across_the_ego_by_one_coming_the_other_way_turns_across(text):
+    assert _names(text) == ["turn_across"]
+
+
+def test_a_pull_out_of_a_side_road_made_to_turn_and_across_the_ego_is_one_turn_into_its_road():
+    text = "I was doing 30 mph when a van came out of a side road on the left to turn right and pulled across my path."
+    assert _names(text) == ["turn_into"]
+
+
+def test_a_side_road_pull_out_then_a_red_light_run_stays_a_run():
+    text = "I was doing 30 mph at the lights when a van came out of a side road on the left and ran the red."
+    assert _names(text) == ["run_red_light"]
+
+
+# A vehicle said ahead of the ego that swings out moves out of the ego's lane; one that swings out
+# across the road in front of the ego crosses it.
+@pytest.mark.parametrize(
+    "text",
+    [
+        "We were at 20 mph. A lorry was double-parked and the taxi ahead of us veered out round it.",
+        "We were at 20 mph. A lorry was double-parked and the taxi in front swung out round it.",
+    ],
+)
+def test_a_vehicle_ahead_that_swings_out_leaves_the_lane(text):
+    (_, car) = read(text).actors
+    assert car.behaviours[0][0] in ("change_lane", "cut_out")
+
+
+def test_a_vehicle_that_swings_out_across_the_road_in_front_crosses_it():
+    assert _names("We were at 20 mph when a taxi swung out across the road in front of us.") == ["run_red_light"]
+
+
+# "VERB out in front of me": a walker or rider comes out across the road, a vehicle pulls out; "was
+# riding out in front of me" is where it rides.
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Heading home at 30 mph and a deer just strolled out in front of me.",
+        "At 30 mph an old man ambled out right in front of us.",
+        "At 30 mph a woman on a bike came out in front of us.",
+        "At 30 mph a dog went out in front of me.",
+    ],
+)
+def test_out_in_front_of_the_ego_is_a_crossing(text):
+    assert _names(text) == ["cross_in_front"]
+
+
+def test_riding_out_in_front_of_the_ego_is_going_along():
+    assert _names("At 30 mph a cyclist was riding out in front of me.") == ["along_road"]
+
+
+# A vehicle's sudden move sideways that ends in front of the ego ("dives / swoops / nips in front of me")
+# is a cut-in; in front of someone else it is not the ego's.
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Doing 60 on the motorway when a hatchback from the slip road dived in front of me.",
+        "At 50 mph a BMW from the next lane swooped in front of us.",
+    ],
+)
+def test_a_sudden_move_in_front_of_the_ego_is_a_cut_in(text):
+    assert _names(text) == ["cut_in"]
+
+
+# An exit a road user wants ("wanted my exit", "needed the same exit") is where it goes, not the arm it
+# comes from: beside the ego on the roundabout, cutting across is a cut-in from that side.
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Going round the roundabout at 15 mph in the right lane, a taxi on my left wanted the same exit and cut "
+        "across in front of me.",
+        "I was in the outside lane of the roundabout at 20 mph and a lorry on my left needed my exit too and cut "
+        "straight across in front of me.",
+    ],
+)
+def test_an_exit_wanted_is_where_the_road_user_goes(text):
+    actor = _one(text)
+    assert actor.behaviours[0][0] == "cut_in"
+    assert actor.relation == "left"
+
+
+# Where someone or something is carried is no move of a road user's ("taken out of service", "towed
+# away", "brought over to the kerb").
+@pytest.mark.parametrize(
+    "text",
+    [
+        "At 25 km/h a rider stopped abruptly in front of me. Scooter damaged, taken out of service.",
+        "At 25 km/h a rider stopped abruptly in front of me. Scooter dragged into the road, later collected.",
+    ],
+)
+def test_being_carried_somewhere_is_no_move(text):
+    assert _names(text) == ["sudden_stop"]
+
+
+# One already on the roundabout has the way also when where it comes from is said of the ego's side
+# before its verb ("approaching from the ego's left"): it goes on, no red-light run.
+def test_already_on_the_roundabout_from_the_ego_side_goes_on():
+    text = (
+        "The ego enters the roundabout at 20 km/h. A bus already on the roundabout, approaching from the ego's "
+        "left, continues past the entry."
+    )
+    assert _names(text) == ["keep_going"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "At the lights a cyclist ran the red in front of us at 20 km/h. Cyclist fine, checked over on scene.",
+        "At the lights a cyclist ran the red in front of us at 20 km/h. Rider fine, looked over by a medic.",
+    ],
+)
+def test_looking_or_being_looked_over_is_no_move(text):
+    assert _names(text) == ["run_red_light"]
+
+
+def test_the_lane_count_after_the_ego_lane_is_no_speed_of_the_one_cutting_in():
+    reading = read("Doing 56 in lane 1 of 3 when a hatchback from the slip road dived in front of me.")
+    (actor,) = reading.actors
+    assert actor.behaviours[0][0] == "cut_in"
+    assert actor.speed_mps is None or actor.speed_mps > 5

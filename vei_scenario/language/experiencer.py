@@ -1,18 +1,39 @@
-"""A road user the narrator *had* (or *got*) doing something does it ("we had a van pull out").
+"""A road user the narrator *had* (or *got*, *let*, *saw*, *waited for*) doing something does it ("we
+had a van pull out", "I stopped to let a girl cross").
 
 English tells what happened to the one telling with "have"/"get" + a noun phrase + a bare verb ("I
-had a kid run out in front of me", "we got a taxi swing across us"). The noun phrase is the object of
-"have" but the subject of the bare verb; read left to right it looks like the ego's object, and the
-verb after it would be taken as the ego's. Starting a clause at the road user makes it the subject of
-its verb, as it is in "a kid ran out in front of me".
+had a kid run out in front of me", "we got a taxi swing across us"), and what the one telling let
+happen or saw happen the same way: "let"/"see"/"watch"/"notice"/"spot"/"help" + a noun phrase + a
+bare verb ("let a girl cross", "watched a lad dart out"; not a participle: "spotted a rider coming
+off the kerb" keeps the one who spotted as the subject of what follows), "allow"/"wait for"/"stop
+for" + a noun phrase + "to" + a verb ("allowed a cyclist to cross", "waited for a woman with a pram
+to cross"). The noun phrase is the object of the first
+verb but the subject of the second; read left to right it looks like the ego's object, and the verb
+after it would be taken as the ego's. Starting a clause at the road user makes it the subject of its
+verb, as it is in "a kid ran out in front of me".
 """
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 from vei_scenario.language.lemmas import lemmas
+from vei_scenario.language.word_mention import word_mention
 
 #: Verbs (lemmas) of the narrator's experience that take a road user and a bare verb.
 _EXPERIENCE = frozenset(("have", "get"))
+#: Verbs (lemmas) of letting and of seeing that take a road user and a bare verb ("let a girl cross",
+#: "saw a van pull out").
+_LETTING = frozenset(("let", "help"))
+_SEEING = frozenset(("see", "watch", "notice", "spot"))
+#: Verbs (lemmas) that take a road user and "to" + a verb ("allowed a cyclist to cross").
+_ALLOWING = frozenset(("allow", "permit", "enable"))
+#: Verbs (lemmas) that take "for" + a road user + "to" + a verb ("waited for a woman to cross", "stopped
+#: for a kid to get across").
+_WAITING = frozenset(("wait", "stop", "slow", "brake", "pause", "hold", "pull"))
+#: Words of a phrase that says what a person has with them, between the road user and its verb ("a
+#: woman with a pram", "an old man with a stick"): skipped when no mention stands in it.
+_WITH_PHRASE = frozenset(("with", "pushing", "carrying", "holding", "walking"))
 #: Mentions that may be the bare verb after the road user.
 _VERB_SLOTS = frozenset(("behaviour", "unknown_verb", "ego_verb"))
 #: Words that put a vehicle with the person named before it ("a lad on a bike", "a bloke in a van").
@@ -28,20 +49,84 @@ def _bare_verb(word: str) -> bool:
     return word in lemmas(word).get("VERB", ()) and not word.endswith(("ed", "ing"))
 
 
-def _experienced_at(tokens: list[str], start: int) -> bool:
-    """Whether "have"/"get" stands before the noun phrase starting the road user mention at ``start``,
-    with only articles, quantifiers and adjectives (no verb) between."""
+def _experienced_at(tokens: list[str], start: int) -> str | None:
+    """How the road user whose mention starts at ``start`` is said to act, by the verb before its noun
+    phrase (only articles, quantifiers and adjectives, no verb, between): "bare" after "have", "get",
+    "let" ("had a van pull out"), "seen" after a verb of seeing, "to"
+    after "allow" or after "for" said after a verb of waiting ("waited for a kid to cross"), else None."""
     i = start - 1
     while i >= 0 and start - i <= 5:
         word = tokens[i]
-        said = lemmas(word).get("VERB", ())
-        if any(v in _EXPERIENCE for v in said):
-            return True  # ("had", "has", "got", "have")
+        said = set(lemmas(word).get("VERB", ()))
+        if said & _LETTING and _stood_before(tokens, i):
+            return None  # ("I had stopped to let a girl cross when ...": the scene opens on the ego standing)
+        if said & (_EXPERIENCE | _LETTING):
+            return "bare"  # ("had", "has", "got", "have", "let")
+        if said & _SEEING:
+            return "seen"
+        if said & _ALLOWING:
+            return "to"
+        if word == "for" and i and set(lemmas(tokens[i - 1]).get("VERB", ())) & _WAITING:
+            return "to"
         if word in _BEFORE_NOUN or (lemmas(word) and not said):
             i -= 1
             continue
+        return None
+    return None
+
+
+def _stood_before(tokens: list[str], i: int) -> bool:
+    """Whether "to let" at ``tokens[i]`` follows a stop in the past perfect ("had stopped to let", "had
+    pulled up to let"): the ego already stands as the scene opens (the reader starts it at 0 km/h), and
+    whom it had stopped for is what came before the scene, not a road user that meets it."""
+    if tokens[i - 1 : i] != ["to"]:
         return False
-    return False
+    before = tokens[max(0, i - 5) : i - 1]
+    return "had" in before and any(set(lemmas(w).get("VERB", ())) & _WAITING for w in before)
+
+
+def _verb_fits(how: str, word: str, between: list[str]) -> bool:
+    """Whether ``word`` (the first word of the verb after the road user, ``between`` the words between)
+    is the road user's verb as ``how`` (:func:`_experienced_at`) wants it: a bare verb, with "to"
+    before it after "allow" or "wait for"."""
+    if how == "to":
+        return between[-1:] == ["to"] and _bare_verb(word)
+    if between[-1:] == ["to"]:
+        return False
+    return _bare_verb(word)
+
+
+def _between_ok(between: list[str]) -> bool:
+    """Whether the words between the road user and its verb leave them one clause: nothing, one adverb
+    ("had a lad just step out"), "to", or a phrase of what the person has with them ("a woman with a
+    pram")."""
+    rest = between[:-1] if between[-1:] == ["to"] else between
+    if rest and rest[0] in _WITH_PHRASE:
+        return len(rest) <= 4 and all(w.isalpha() for w in rest)
+    return len(rest) <= 1
+
+
+#: Modals of having to: "and had to stop" after the road user's act is the experiencer's reaction.
+_HAVING_TO = frozenset(("had", "have", "needed", "need"))
+
+
+def _own_reaction_after(mentions: list, first: int, j: int, tokens: list[str]) -> set[int]:
+    """Make "and had to ..." after what the road user at ``mentions[first]`` was had doing (its verb at
+    ``j``) the experiencer's ("Darren had a rider come off the kerb and had to stop dead": Darren
+    stopped): the "and" becomes the experiencer named again, in place, so the reaction starts a clause
+    of its own (its index is returned). Only the ego as the experiencer is named so; anyone named
+    between ends the search."""
+    had = next((x for x in reversed(mentions[:first]) if x.slot in ("actor", "pronoun")), None)
+    if had is None or had.slot != "actor" or had.value != "ego":
+        return set()
+    for q in range(j + 1, len(mentions) - 1):
+        x, nxt = mentions[q], mentions[q + 1]
+        if x.slot in ("actor", "pronoun", "member") and x.value != "ego":
+            return set()
+        if x.slot == "conj" and x.words == "and" and nxt.slot == "modal" and nxt.words.split()[0] in _HAVING_TO:
+            mentions[q] = word_mention(had, tokens, x.start, "actor", "ego", words=had.words)
+            return {q}
+    return set()
 
 
 def road_user_had_acting(clauses: list, tokens: list[str]) -> list:
@@ -51,19 +136,34 @@ def road_user_had_acting(clauses: list, tokens: list[str]) -> list:
     it is."""
     out = []
     for link, mentions in clauses:
+        mentions = list(mentions)
         start = 0
+        again: set[int] = set()  # (where the experiencer is named again)
         for k, m in enumerate(mentions):
+            if k in again:
+                out.append((link, mentions[start:k]))  # (the experiencer's own reaction: see below)
+                link, start = "sequence", k
+                continue
             if k == 0 or m.slot != "actor" or m.value == "ego":
                 continue
             j = k + 1
             while j < len(mentions) and mentions[j].slot == "actor" and mentions[j].prev in _WITH:
                 j += 1  # ("had a lad on a bike roll off the kerb": the rider and what he rides)
             nxt = mentions[j] if j < len(mentions) else None
-            if nxt is None or nxt.slot not in _VERB_SLOTS or nxt.start - mentions[j - 1].end > 1:
-                continue  # (one adverb may stand between: "had a lad just step out")
-            if not _bare_verb(nxt.words.split()[0]) or not _experienced_at(tokens, m.start):
+            if nxt is None or nxt.slot not in _VERB_SLOTS:
                 continue
-            out.append((link, mentions[start:k]))
-            link, start = "sequence", k
+            between = tokens[mentions[j - 1].end : nxt.start]
+            how = _experienced_at(tokens, m.start) if _between_ok(between) else None
+            if how is None or not _verb_fits(how, nxt.words.split()[0], between):
+                continue
+            first = k
+            while first - 1 > start and mentions[first - 1].slot == "count":
+                first -= 1  # ("let two of our pupils cross": the count is the road user's)
+            if m.prev == "for":  # ("waited for a woman to cross": the subject of "cross", no object of "for")
+                mentions[k] = replace(m, prev="")
+            out.append((link, mentions[start:first]))
+            link, start = "sequence", first
+            if how == "bare":
+                again |= _own_reaction_after(mentions, start, j, tokens)
         out.append((link, mentions[start:]))
     return [(link, ms) for link, ms in out if ms]

@@ -96,6 +96,12 @@ def _has_the_way(words: list[str]) -> bool:
     return False
 
 
+def _owns(m) -> bool:
+    """Whether road-user mention ``m`` is the ego said as an owner ("the ego's left", "my left"): part
+    of a place, not a road user of the clause."""
+    return m.value == "ego" and (m.next_ == "'s" or m.words in ("my", "our"))
+
+
 def priority(clauses: list, tokens: list[str]) -> list:
     """``clauses`` with a road user said to be already on the roundabout, circulating, or on the main
     road marked as having the way ("_has_way", "_priority") on the plain verb it goes on with: at a junction it goes
@@ -109,7 +115,14 @@ def priority(clauses: list, tokens: list[str]) -> list:
             if m.slot != "actor" or m.value == "ego":
                 continue
             verb = next((n for n in range(k + 1, len(mentions)) if mentions[n].slot in ("behaviour", "ego_verb")), None)
-            other = next((n for n in range(k + 1, len(mentions)) if mentions[n].slot in ("actor", "pronoun")), None)
+            other = next(
+                (
+                    n
+                    for n in range(k + 1, len(mentions))
+                    if mentions[n].slot in ("actor", "pronoun") and not _owns(mentions[n])
+                ),
+                None,
+            )  # (not the ego owning a side or a place said of the road user: "from the ego's left")
             v = mentions[verb] if verb is not None else None
             if v is None or (other is not None and other < verb) or not _plain(v):
                 continue

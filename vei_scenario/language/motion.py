@@ -51,6 +51,8 @@ from vei_scenario.language.word_mention import word_mention
 
 #: Behaviours that, said with running the red, are the manner of that run.
 _MANNER_OF_A_RUN = frozenset(("overtake", "turn_into"))
+#: Words that say a light or signal is there to be run.
+_RED_SAID = re.compile(r"\b(red|amber|lights?|signals?|signalised|signalized)\b")
 _ARMS = frozenset(("junction_left", "junction_right", "junction_opposite"))
 
 
@@ -209,10 +211,11 @@ def _mirrors_the_ego(tokens: list[str], i: int) -> bool:
 def outcome_not_behaviour(clauses: list, tokens: list[str] | None = None) -> list:
     """``clauses`` (the reader's mentions, by clause) without the verbs that state the outcome rather
     than what a road user does: a contact verb whose subject is both parties or that says what it met
-    ("crashed into a van", "collided with the bus"), "yield a/an ...", and a
-    fall said after a contact in its sentence ("clipped my mirror and fell off": what the contact did,
-    not a stop the road user makes), and a stop said after a contact with a road user ("clipped my
-    mirror and stopped further on": the aftermath; ``tokens``: those the mentions index)."""
+    ("crashed into a van", "collided with the bus"), "yield a/an ...", a fall said after a contact
+    in its sentence or before it ("clipped my mirror and fell off", "I could not avoid hitting him.
+    The rider fell": what the contact did, not a stop the road user makes), and a stop said after a
+    contact with a road user ("clipped my mirror and stopped further on": the aftermath; ``tokens``:
+    those the mentions index)."""
     out = []
     for link, mentions in clauses:
         kept = []
@@ -220,8 +223,8 @@ def outcome_not_behaviour(clauses: list, tokens: list[str] | None = None) -> lis
             if m.slot == "behaviour":
                 first = m.words.split()[0]
                 fall = tokens is not None and "fall" in lemmas(first).get("VERB", ())
-                if fall and _touched_before(tokens, m.start):
-                    continue  # ("..., struck the ego's mirror, falling into the road": the outcome)
+                if fall and (_touched_before(tokens, m.start) or _struck_earlier(tokens, m)):
+                    continue  # ("..., struck the ego's mirror, falling into the road"; "I hit him. He fell.")
                 if m.value[0] == "stop" and tokens is not None and _struck_earlier(tokens, m):
                     continue  # ("struck my bumper and carried on before stopping": the aftermath)
                 slows = m.value[0] in ("change_speed", "sudden_stop", "stop")
@@ -263,10 +266,11 @@ _MAKING_FOR = frozenset(("for", "towards", "toward"))
 _POSSESSIVE = frozenset(("its", "his", "her", "their"))
 
 
-def destinations_not_origins(clauses: list) -> list:
+def destinations_not_origins(clauses: list, tokens: list[str] | None = None) -> list:
     """``clauses`` without the side roads and exits said as where a road user goes ("into a side
     street", "into one of the side roads on the right", "to get to its exit"), and the side said of
-    them; where a road user comes from or is stays ("out of the side road", "up to the entry"). A
+    them, and an exit wanted ("wanted my exit", "needed the same exit": ``tokens``, those the mentions
+    index, say so); where a road user comes from or is stays ("out of the side road", "up to the entry"). A
     road user of that clause moving across the ego's way towards a side ("cuts left across me to
     turn into a side street") is turning off across it: a turn that way, read as the reader reads
     "swings left across"."""
@@ -278,7 +282,8 @@ def destinations_not_origins(clauses: list) -> list:
         dropped = False
         for k, m in enumerate(mentions):
             before = mentions[k - 1] if k > 0 else None
-            if m.slot == "arm" and _led_towards(m, before, mentions[k - 2] if k > 1 else None):
+            wanted = tokens is not None and _wanted(tokens, m.start)
+            if m.slot == "arm" and (wanted or _led_towards(m, before, mentions[k - 2] if k > 1 else None)):
                 drop_side = dropped = True
                 if kept and kept[-1] is before and before.slot in ("pronoun", "member"):
                     kept.pop()
@@ -670,6 +675,19 @@ def lets_the_ego_go(clauses: list, tokens: list[str]) -> list:
     return _rewrite(clauses, rule)
 
 
+#: Verbs (lemmas) of wanting or choosing a way: a side road or exit as their object is where one goes.
+_WANTING = frozenset(("want", "need", "choose", "pick", "fancy"))
+
+
+def _wanted(tokens: list[str], start: int) -> bool:
+    """Whether the arm mention starting at ``start`` is the object of a verb of wanting ("wanted my
+    exit", "needed the same exit as me"), past its determiner and an adjective or two."""
+    i = start - 1
+    while i >= 0 and start - i <= 3 and not lemmas(tokens[i]).get("VERB"):
+        i -= 1
+    return i >= 0 and start - i <= 3 and bool(set(lemmas(tokens[i]).get("VERB", ())) & _WANTING)
+
+
 def _led_towards(m, before, earlier=None) -> bool:
     """Whether a side road or exit mention ``m`` is led by "into"/"onto" or "for"/"towards" (a
     destination: "heading for the exit"), or is the object of an infinitive of purpose ("to take the
@@ -777,6 +795,10 @@ def one_path(spec: ActorSpec, said: str = "", across: str = "left") -> list:
         _, cfg, crit, link = spec.behaviours[0]
         spec.relation, spec.facing = "ahead", "against"
         return [("wrong_way", {}, crit, link)]
+    if names[:1] == ["turn_into"] and "run_red_light" in names and not _RED_SAID.search(said):
+        # ("came out of a side road to turn right and pulled across my path": with no red light said,
+        # the move across the ego's path is how it turns out of the side road, not a second one)
+        return [b for b in spec.behaviours if b[0] != "run_red_light"]
     if "run_red_light" in names:
         return [b for b in spec.behaviours if b[0] not in _MANNER_OF_A_RUN]
     if names[:2] == ["overtake", "forced_turn"]:
@@ -975,6 +997,16 @@ def _before_the_ego(tokens: list[str], j: int) -> bool:
 _BE = frozenset(("is", "was", "are", "were", "'s", "be", "been"))
 
 
+#: Moves that bring a road user into the ego's way from the side: a verbless "straight into ... lane"
+#: after one says where it ends.
+_COMING_IN = frozenset(("cut_in", "turn_into", "cross_in_front", "run_red_light"))
+
+
+def _coming_in(m) -> bool:
+    """Whether mention ``m`` is a move into the ego's way from the side (:data:`_COMING_IN`)."""
+    return m.slot == "behaviour" and m.value[0] in _COMING_IN
+
+
 def into_a_lane(clauses: list, tokens: list[str]) -> list:
     """``clauses`` with a plain verb of motion whose destination is a lane ("goes over to the next
     lane", "moved from lane 1 into lane 2", "heads into another lane") read as the move it is: into
@@ -995,6 +1027,8 @@ def into_a_lane(clauses: list, tokens: list[str]) -> list:
             progressive = m.start > 0 and tokens[m.start - 1] in _BE  # ("is moving to my lane": a move under way)
             if not (plain or across) or (m.words.split()[0].endswith("ing") and not progressive):
                 continue  # ("travelling in lane 2": where it goes along, not a move)
+            if m.slot == "ego_verb" and any(_coming_in(x) for x in kept[:k]):
+                continue  # ("pulled out of a lay-by, straight into his lane": where that move ends)
             j = m.end
             while j < len(tokens) and tokens[j] in _ON_THE_WAY:
                 j += 1
@@ -1236,17 +1270,24 @@ _LATERAL = frozenset(("cut_in", "change_lane", "cross_in_front"))
 def across_to_turn(clauses: list) -> list:
     """``clauses`` without a move across lanes made to turn ("swings across my lane to make a right",
     "cuts over in front of me to turn left"): the turn said as its purpose (after "to") is the
-    behaviour, the move across how it begins."""
+    behaviour, the move across how it begins. A pull-out of a side road made to turn ("emerged from a
+    side road on my left, intending to turn right") is turning into the ego's road: the turn is where
+    it goes once out, and the pull-out stays, read as that turn."""
     out = []
     for link, mentions in clauses:
+        mentions = list(mentions)
         drop: set[int] = set()
         for k, m in enumerate(mentions):
             if not (m.slot == "behaviour" and m.value[0] in _LATERAL):
                 continue
-            for x in mentions[k + 1 :]:
+            for q, x in enumerate(mentions[k + 1 :], k + 1):
                 if x.slot in ("actor", "pronoun") and x.value != "ego" or x.slot == "link":
                     break
                 turning = x.slot == "turn" or (x.slot == "behaviour" and x.value[0] == "forced_turn")
+                if turning and x.prev == "to" and m.value[1].get("from_side_road"):
+                    mentions[k] = replace(m, value=("turn_into", m.value[1]))
+                    drop.add(q)
+                    break
                 if turning and x.prev == "to":
                     drop.add(k)
                     break
@@ -1338,6 +1379,10 @@ _QUANTITY = frozenset(("no", "enough", "insufficient", "sufficient", "little", "
                        "some", "the", "a", "plenty", "not"))  # fmt: skip
 
 
+#: Words before "a" + a noun that say what someone has with them ("with a pram"), not how much room.
+_HAS_WITH = frozenset(("with", "pushing", "carrying", "holding"))
+
+
 def room_to_act_not_behaviour(clauses: list, tokens: list[str]) -> list:
     """``clauses`` without a verb said as what a quantity of something allows ("leaving no room to
     stop", "with too little space to brake", "not enough time to swerve"): the infinitive completes
@@ -1348,6 +1393,9 @@ def room_to_act_not_behaviour(clauses: list, tokens: list[str]) -> list:
         for m in mentions:
             i = m.start
             if m.slot == "behaviour" and i >= 3 and tokens[i - 1] == "to" and tokens[i - 3] in _QUANTITY:
+                if tokens[i - 3] in ("a", "an") and i >= 4 and tokens[i - 4] in _HAS_WITH:
+                    kept.append(m)  # ("a woman with a pram to cross": what she has, not a quantity)
+                    continue
                 named = any(x.start <= i - 2 < max(x.end, x.start + 1) and x.slot != "unknown_verb" for x in mentions)
                 if "NOUN" in lemmas(tokens[i - 2]) and not named:  # (not "tells the van to stop": a road user)
                     continue
@@ -1680,16 +1728,29 @@ def coming_from_in_front(clauses: list, tokens: list[str]) -> list:
 
 def _across_the_ego(tokens: list[str], j: int) -> bool:
     """Whether "across" + the ego's path, way or lane is said from ``tokens[j]`` ("across my path",
-    "straight across our way", "across the ego's lane")."""
+    "straight across our way", "across the ego's lane"), or the ego itself ("across us", "across the
+    ego"), or what is crossed right in front of it ("across the tracks in front of me")."""
     while j < len(tokens) and tokens[j] in ("straight", "right", "directly", "just"):
         j += 1
     if j >= len(tokens) or tokens[j] != "across":
         return False
+    if tokens[j + 1 : j + 2] in (["me"], ["us"], ["ego"]) or tokens[j + 1 : j + 3] == ["the", "ego"]:
+        return True
+    if tokens[j + 1 : j + 2] == ["the"] and _in_front_of_the_ego(tokens, j + 3):
+        return True  # ("across the tracks in front of me": the one thing crossed, where the ego is)
     said = " ".join(tokens[j + 1 : j + 5]).replace(" 's", "'s").split()
     for n, owner in enumerate(said[:3]):
         if owner in _EGO_OWNER_WORDS and n + 1 < len(said) and said[n + 1] in _ACROSS_WAYS:
             return n == 0 or said[:n] == ["the"]
     return False
+
+
+def _in_front_of_the_ego(tokens: list[str], j: int) -> bool:
+    """Whether "in front of" the ego is said at ``tokens[j]`` ("in front of me", "in front of the ego")."""
+    if tokens[j : j + 3] != ["in", "front", "of"]:
+        return False
+    rest = tokens[j + 3 : j + 5]
+    return rest[:1] in (["me"], ["us"], ["ego"]) or rest == ["the", "ego"]
 
 
 def turning_to_a_side(clauses: list, tokens: list[str]) -> list:
@@ -1741,8 +1802,8 @@ _CROSSERS = frozenset(("pedestrian", "bicycle", "e-scooter"))
 
 
 def _out_into_the_road(tokens: list[str], j: int) -> int | None:
-    """Where "out into the road" / "out across the road" / "out from between ..." / "out from behind ..." said from
-    ``tokens[j]`` ends (past "out" and its preposition), or None."""
+    """Where "out into the road" / "out across the road" / "out from between ..." / "out from behind ..." /
+    "out in front of" the ego said from ``tokens[j]`` ends (past "out" and its preposition), or None."""
     while j < len(tokens) and tokens[j] in _BEFORE_OUT:
         j += 1
     if tokens[j : j + 1] != ["out"]:
@@ -1757,25 +1818,35 @@ def _out_into_the_road(tokens: list[str], j: int) -> int | None:
         return j + 2
     if nxt[:1] == ["from"] and len(nxt) > 1 and nxt[1] in _FROM_HIDING:
         return j + 2
+    if _before_the_ego(tokens, j + 1):  # ("strolls out in front of me", "stepped out right in front of us")
+        return j + 1
     return None
 
 
+#: Mentions that give the verb after them a subject other than the road user named before.
+_NEW_SUBJECT = frozenset(("count", "pronoun", "member", "conj", "link"))
+
+
 def out_into_the_road(clauses: list, tokens: list[str]) -> list:
-    """``clauses`` with a plain verb of motion + "out into the road" or "out from between / behind"
-    (parked vehicles) read as coming out onto the road in front of the ego, whatever the verb ("rode
-    out from between two vans", "came straight out into the street", "went out into the road"): a
-    walker or rider crosses it, a vehicle pulls out into it. "Out in the road" is where one rides,
-    not a move out."""
+    """``clauses`` with a plain verb of motion + "out into the road", "out from between / behind"
+    (parked vehicles) or "out in front of" the ego read as coming out onto the road in front of the
+    ego, whatever the verb ("rode out from between two vans", "came straight out into the street",
+    "strolled out in front of me"): a walker or rider crosses it, a vehicle pulls out into it. "Out
+    in the road" is where one rides, not a move out, and so is "was riding out in front of me"."""
     out = []
     for link, mentions in clauses:
         kept = list(mentions)
         for k, m in enumerate(kept):
             plain = m.slot == "ego_verb" or (m.slot == "behaviour" and m.value[0] in _PLAIN_MOVES | {"along_road"})
-            if not plain or _out_into_the_road(tokens, m.end) is None:
-                continue
+            end = _out_into_the_road(tokens, m.end) if plain else None
+            if end is None or (tokens[end : end + 1] == ["in"] and m.words.split()[0].endswith("ing")):
+                continue  # ("was riding out in front of me": where it rides, ahead)
             subject = next((x for x in reversed(kept[:k]) if x.slot == "actor"), None)
             if subject is None or subject.value == "ego":
                 continue
+            own = all(x.slot not in _NEW_SUBJECT for x in kept[kept.index(subject) + 1 : k])
+            if tokens[end : end + 1] == ["in"] and not own:
+                continue  # ("..., so both come out in front of me": a subject of its own, not the one named)
             name = "cross_in_front" if subject.value in _CROSSERS else "cut_in"
             kept[k] = replace(m, slot="behaviour", value=(name, {}))
         out.append((link, kept))

@@ -259,6 +259,7 @@ class _Actor:
     priority: bool = False  # already on the roundabout or the main road: going on is its right
     from_arm: bool = False  # said to come from or out of a junction arm ("from the side road on the left")
     beside: bool = False  # said to be on a side of the ego ("a cyclist on my left"), not to come from one
+    moves_out: bool = False  # its crossing is said with "out" ("swung out", "pulled out")
 
 
 #: Euro NCAP's names of its test scenarios ("Car-to-Car Rear stationary", "Car-to-Pedestrian Nearside
@@ -548,6 +549,8 @@ def _number(tokens: list[str], i: int, imperial: bool = False) -> tuple[str, flo
     if nxt in ("lanes", "lane") or (nxt == "-" and i + 2 < len(tokens) and tokens[i + 2] in ("lane", "lanes")):
         if value == int(value) and 1 <= value <= 8:  # "3 lanes", "a 2-lane road": lanes a direction
             return "lanes", int(value), 2 if nxt != "-" else 3
+    if i >= 3 and tokens[i - 1] == "of" and tokens[i - 3] in ("lane", "lanes"):
+        return "skip", value, 1  # ("in lane 1 of 3": how many lanes, no speed)
     prev = Q.before_hedge(tokens, i) if i > 0 else ""  # ("doing at least 70", "going well over 60")
     to_changed = tokens[i - 1] == "to" and _changes_speed_before(
         tokens, i - 1
@@ -740,6 +743,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             and not to_a_stop
             and _verb_before(tok, tokens[i + 1])
             and not (tokens[i + 1] == "into" and into_road_user(tokens, i + 1))  # ("banged into my car": a hit)
+            and not set(_lemmas(tok).get("VERB", ())) & _CARRYING  # ("taken to A&E", "towed away")
         ):
             # a verb the lexicon lacks, with where it goes ("swung into my lane", "bolted across the road"):
             # read as the plain motion verb with the same words, when that is a behaviour
@@ -782,6 +786,8 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
                 verb = "VERB" in pos and not pos & {"ADJ", "ADV"} and not tok.endswith(("ing", "ed"))
                 if _after_article(tokens, i) or _counted_plural(tokens, i) or _before_auxiliary(tokens, i):
                     verb = False  # (in a noun phrase: "the petrol station" names a place, no verb)
+                if _month_of_a_date(tokens, i):
+                    verb = False  # ("On 3 March a bus pulled out": a date, not the verb "march")
                 if i + 1 < len(tokens) and _modifies_actor(tokens, i + 1):
                     verb = False  # a word naming what kind before an actor ("a police car", "a Ford Transit van")
                 elif _new_unknown_subject(tokens, i) and "VERB" not in pos and _does_soon(tokens, i + 1):
@@ -969,6 +975,22 @@ def _predicate_of_ego(tokens: list[str], i: int) -> bool:
     return j >= 1 and tokens[j] in _COPULAS and tokens[j - 1] in ("i", "we") and tokens[j + 1] in _DETERMINERS
 
 
+#: Months whose name is also a verb.
+_MONTH_VERBS = frozenset(("march",))
+#: Day numbers written as ordinals ("3rd", "the 14th").
+_ORDINAL = re.compile(r"^\d{1,2}(st|nd|rd|th)?$")
+
+
+def _month_of_a_date(tokens: list[str], i: int) -> bool:
+    """Whether ``tokens[i]`` is a month said with its day ("3 March", "March 3rd", "on the 3rd of
+    March"): a date, no verb of anyone."""
+    if tokens[i] not in _MONTH_VERBS:
+        return False
+    before = tokens[i - 2] if i >= 2 and tokens[i - 1] == "of" else (tokens[i - 1] if i else "")
+    after = tokens[i + 1] if i + 1 < len(tokens) else ""
+    return bool(_ORDINAL.match(before) or _ORDINAL.match(after))
+
+
 def _after_article(tokens: list[str], i: int) -> bool:
     """Whether the word at ``i`` follows an article, past at most two words the reader has no entry
     for ("the petrol station", "a Ford Transit"): a name, not a verb."""
@@ -1086,6 +1108,16 @@ PLAIN_MOTION_VERBS = ("move", "go", "walk")
 _MOTION_PARTICLES = frozenset(
     "into to across out over in onto off through past away back towards toward round around from between".split()
 )
+
+
+#: Verbs (lemmas) of carrying someone or something: where they go is where it was carried ("rider
+#: taken to A&E", "scooter taken out of service", "the car was towed away"), and verbs of looking or
+#: signalling: where they go is where one looks or calls ("looked across at me", "checked over on
+#: scene", "waved over"): no move of a road user's.
+_CARRYING = frozenset((
+    "take", "bring", "carry", "send", "tow", "ferry", "airlift", "drag",
+    "look", "glance", "check", "peer", "stare", "gaze", "wave", "call", "shout", "gesture", "signal",
+))  # fmt: skip
 
 
 def _verb_before(word: str, after: str) -> bool:
@@ -1341,7 +1373,7 @@ def _read(text: str) -> Reading:
     clauses = sides.ego_follows(sides.numbered_lanes(clauses, sides.drives_on_left(scanned, text)))
     clauses = sides.into_the_ego_rear(experiencer.road_user_had_acting(clauses, scanned))
     clauses = out_of_a_side_road(
-        destinations_not_origins(outcome_not_behaviour(_drop_label(clauses), scanned)), scanned
+        destinations_not_origins(outcome_not_behaviour(_drop_label(clauses), scanned), scanned), scanned
     )
     tokens = _tokens(text)
     said = " ".join(tokens)  # (the whole text as the reader reads it, for what is stated of it as a whole)
@@ -1893,6 +1925,7 @@ def _read(text: str) -> Reading:
         for a, i in added:
             name, cfg, _, lk = a.behaviours[i]
             words = cfg.pop("_words", "")
+            a.moves_out = a.moves_out or (name == "cross_in_front" and "out" in words.split())
             if name == "sudden_stop" and len(words.split()) == 1 and "brake" in forms(words):
                 cfg["_plain_brake"] = 1.0  # ("brakes": how hard, a stop said after it tells)
             a.goes_on = a.goes_on or bool(cfg.pop("_denied", None))
@@ -2003,6 +2036,10 @@ def _read(text: str) -> Reading:
         if a.kind == "pedestrian" and "run_red_light" in names:  # a walker against red crosses the road
             a.behaviours = [("cross_in_front", *b[1:]) if b[0] == "run_red_light" else b for b in a.behaviours]
             a.behaviours = [b for k, b in enumerate(a.behaviours) if k == 0 or b[0] != a.behaviours[k - 1][0]]
+        elif a.kind in VEHICLES and "cross_in_front" in names and a.moves_out and _ahead_first(a):
+            # a vehicle said ahead of the ego that swings out is in the ego's road already: it moves out
+            # of the ego's lane ("the car ahead of us swung out round it"), no crossing traffic
+            a.behaviours = [("change_lane", *b[1:]) if b[0] == "cross_in_front" else b for b in a.behaviours]
         elif a.kind in VEHICLES and "cross_in_front" in names and not (a.kerb or a.kerb_side or a.lane_side):
             # a vehicle crossing the ego's road goes through a junction across its path
             a.behaviours = [("run_red_light", *b[1:]) if b[0] == "cross_in_front" else b for b in a.behaviours]
@@ -2220,6 +2257,12 @@ def _read(text: str) -> Reading:
     if r.weather in (None, "rain") and stated_heavy_rain(said):
         r.weather = "heavy_rain"
     return r
+
+
+def _ahead_first(a: _Actor) -> bool:
+    """Whether road user ``a`` is said to be ahead of the ego before it moves ("the car ahead of us
+    swung out"; not "swung out in front of us", where it ends)."""
+    return a.relation == "ahead" and "ahead_first" in a.said
 
 
 def _vehicle_word(word: str) -> bool:
@@ -2963,6 +3006,8 @@ def _apply(m, who, r, link, added) -> None:
             a.said.add("in_front")  # "cuts in 10 m ahead": where it cuts in, not where it starts
         elif m.slot == "relation":
             a.said.add(m.value)
+            if m.value == "ahead" and not a.behaviours:
+                a.said.add("ahead_first")  # ("the car ahead of us swung out": where it is before it moves)
             if m.value == "ahead" and motion.in_the_ego_lane(m.words):
                 a.said.add("in_ego_lane")  # ("in my lane": not only in front, in the ego's own lane)
             a.followed = a.followed or (m.value == "ahead" and m.words in ("following", "tailing"))

@@ -9,7 +9,8 @@ hard stop, an overtake of the ego). The grammar says whose it is:
   verb (or the modal before it: "had to", "needed to") is in the past tense or the plain form; the
   third person ("Brakes hard.") stays the road user's; a modal said after a clause's verb with
   nothing joining it ("pulled out right in front of me had to brake", "..., had to stamp on the
-  brakes") opens such a sentence, as said aloud without a full stop;
+  brakes") or right after the ego as an object ("shot off the kerb in front of me had to brake")
+  opens such a sentence, as said aloud without a full stop;
 * in such a sentence, a reaction (braking, stopping, slowing, swerving) is the narrator's, and so is
   a verb whose object is a road user said before as "him", "her", "them" or "it": whoever does it to
   that road user is not that road user ("passed them wide": the narrator passes, the riders go on).
@@ -86,7 +87,7 @@ def narrators_acts(clauses: list, tokens: list[str], first_person: bool) -> dict
             bare, lead_seen = True, False
         acted = False  # (a verb said in this clause so far)
         for k, m in enumerate(mentions):
-            if m.slot == "modal" and acted and _run_on(mentions, k):
+            if m.slot == "modal" and (acted or _after_an_object_pronoun(mentions, k, tokens)) and _run_on(mentions, k):
                 bare, lead_seen = True, False  # ("... right in front of me had to brake": a new one)
             if m.slot in _NAMING:
                 bare = False
@@ -298,6 +299,30 @@ def caused_acts(clauses: list, tokens: list[str]) -> dict[int, bool]:
         for act in _acts_after(flat, tokens, m.start):  # ("to stamp on the brakes", "to brake and swerve")
             out[act.start] = False
     return out
+
+
+def _after_an_object_pronoun(mentions: list, k: int, tokens: list[str]) -> bool:
+    """Whether the modal at ``mentions[k]`` follows the ego said as an object after a verb the lexicon
+    lacks ("... shot off the footpath right in front of me had to brake"): an object cannot be the
+    modal's subject, so a clause of its own starts there. With no verb between the one named before
+    and the ego ("a cyclist ahead of me had to brake") the modal is that one's."""
+    before = mentions[k - 1] if k else None
+    if before is None or before.slot != "actor" or before.value != "ego" or before.words not in ("me", "us"):
+        return False
+    named = next((x for x in reversed(mentions[: k - 1]) if x.slot in _NAMING), None)
+    if named is None or named.value == "ego":
+        return False
+    span = range(named.end, before.start)
+    return any(_a_past_verb(tokens[j]) and tokens[j - 1] not in _BEFORE_A_NOUN for j in span)
+
+
+#: Words after which a past form is a noun or a side ("on the left", "to my left").
+_BEFORE_A_NOUN = frozenset(("the", "a", "an", "my", "our", "his", "her", "their", "its", "your", "to"))
+
+
+def _a_past_verb(word: str) -> bool:
+    """Whether ``word`` is a verb in the past tense ("shot", "came"), not its plain form."""
+    return _plain_or_past(word) and word not in lemmas(word).get("VERB", ())
 
 
 def _run_on(mentions: list, k: int) -> bool:
