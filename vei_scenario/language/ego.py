@@ -26,6 +26,7 @@ from collections.abc import Callable
 from functools import lru_cache
 
 from vei_scenario.language.lemmas import lemmas
+from vei_scenario.language.vocabulary import IN_LINE
 
 KindAt = Callable[[list[str], int], "tuple[str, int] | None"]
 Known = Callable[[list[str], int], bool]
@@ -68,10 +69,6 @@ PLACED = frozenset(
 
 def _lemma_in(word: str, wanted: frozenset[str]) -> bool:
     return word in wanted or any(x in wanted for forms in lemmas(word).values() for x in forms)
-
-
-#: Words that name a vehicle by its place in a line of them, right before its noun ("following truck").
-IN_LINE = frozenset({"following", "lead", "leading", "trailing", "rear", "front"})
 
 
 def _ego_at(tokens: list[str], i: int, kind_at: KindAt) -> int:

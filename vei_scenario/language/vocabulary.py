@@ -7,6 +7,9 @@ case, words separated by single spaces; ``#`` stands for a number.
 
 from __future__ import annotations
 
+#: Words that name a vehicle by its place in a line of them, right before its noun ("following truck").
+IN_LINE = frozenset({"following", "lead", "leading", "trailing", "rear", "front"})
+
 ACTORS = {
     "ego": ("ego", None),
     "ego vehicle": ("ego", None),
