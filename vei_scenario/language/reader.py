@@ -2087,7 +2087,7 @@ def _read(text: str) -> Reading:
     r.ignored = list(dict.fromkeys(ignored))
     r.read_as = read_as
     cues = outcome_cues(said)
-    r.intent = decide(cues) or r.intent  # (the whole text's stated outcome first)
+    r.intent = decide(cues)  # (the outcome reader alone decides contact: not "hit the horn", "hit the brakes")
     told = {w for cue in cues for w in cue.words.split()}  # (words the outcome was read from)
     r.ignored = [w for w in r.ignored if w not in told]
     if r.intent is None and not r.actors:
@@ -2760,8 +2760,7 @@ def _global(r, m) -> None:
         r.density = r.density or m.value
     elif m.slot == "lanes":
         r.lanes = int(m.value)
-    elif m.slot == "intent":
-        r.intent = m.value if r.intent in (None, "safe") or m.value != "safe" else r.intent
+    # (an "intent" mention is read, so not an unused word, but the outcome reader decides the intent)
 
 
 def _apply(m, who, r, link, added) -> None:
