@@ -478,6 +478,35 @@ def test_a_pedestrian_crossing_alone_is_no_junction(text, kind):
     assert read(text).map_kind == kind
 
 
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("A jogger ran out at the crossing on the hairpin and I braked.", "curve"),
+        ("On the bend by the school a child dashed over the crossing; I stopped short.", "curve"),
+        ("Round the bend near the crossing a van overtook me and cut in.", "curve"),
+        ("A kid ran across at the crossing by the school and I braked hard.", "crossroad"),
+        ("At the crossing on the corner a jogger stepped out in front of me.", "crossroad"),
+    ],
+    ids=["hairpin", "bend-child", "bend-van", "no-bend", "corner-not-a-bend"],
+)
+def test_a_crossing_on_a_bend_is_that_bend(text, kind):
+    assert read(text).map_kind == kind
+
+
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("Coming round the bend at dusk I met a cyclist with no lights riding along the edge.", "curve"),
+        ("On a twisty lane a jogger without lights stepped out; get some lights, people.", "curve"),
+        ("The moped on the bend had its lights off and wobbled out in front of me.", "curve"),
+        ("Past the bend, at the lights, a van pulled out in front of me.", "crossroad"),
+    ],
+    ids=["no-lights", "without-some", "its-lights", "ran-the-lights"],
+)
+def test_a_road_users_lights_are_no_signals(text, kind):
+    assert read(text).map_kind == kind
+
+
 # --- a turn said without "turn into" ---------------------------------------------------------------------------
 @pytest.mark.parametrize(
     "text",

@@ -859,8 +859,9 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
         if key == ("stop",) and det:  # "the stop", "a stop": a bus stop, a place
             slot, value = "kerb", None
         elif tok == "crossing" and len(key) == 1 and det:  # "at the crossing": a junction, not someone crossing
-            # (unless a zebra or pelican crossing was named: then it is that one, beside the road)
-            slot, value = ("kerb", None) if S.foot_crossing_named_before(tokens, i) else ("map", "crossroad")
+            # (unless a zebra or pelican crossing was named, or a bend: then it is one beside the road)
+            beside = S.foot_crossing_named_before(tokens, i) or S.bend_named(tokens)
+            slot, value = ("kerb", None) if beside else ("map", "crossroad")
         elif slot in ("behaviour", "speed_word") and (said := " ".join(tokens[i : i + len(key)])) in V.SPEED_WORDS:
             if det and _actor_at(tokens, i + len(key)):  # "a slow truck": how fast it goes, not a slowing
                 slot, value = "speed_adjective", V.SPEED_WORDS[said]  # (nor the subject's speed)

@@ -617,6 +617,16 @@ def foot_crossing_named_before(tokens: list[str], i: int) -> bool:
     return any(t in _FOOT_CROSSINGS for t in tokens[:i])
 
 
+#: Words of a bend in the road; not "corner", which a junction has too.
+_BEND_WORDS = frozenset(w for w in L.MAPS["curve"] if " " not in w and w != "corner")
+
+
+def bend_named(tokens: list[str]) -> bool:
+    """Whether the text names a bend ("on the bend", "a bendy lane", "a hairpin"): then "the crossing"
+    is a crossing for people on foot on that bend, not a junction."""
+    return any(t in _BEND_WORDS for t in tokens)
+
+
 #: "lane 3", "lane two" (not "lane 2 of 3", which counts the lanes itself): a lane numbered from the kerb.
 _LANE_NUMBER = re.compile(r"\blane " + _N + r"\b(?! of)")
 #: "the middle lane", "the centre lane": a lane with one on each side.
