@@ -826,3 +826,30 @@ def test_contact_said_tersely_or_hedged_after_its_verb(text, intent):
 )
 def test_near_miss_negatives_of_terse_contact(text, intent):
     assert read(text).intent == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("almost flattened a lad on a moped this morning", "near_miss"),
+        ("We very nearly killed a pedestrian at the lights.", "near_miss"),
+        ("The bus almost overtook a cyclist but stayed behind.", None),
+        ("I almost followed the cyclist into the junction.", None),
+    ],
+)
+def test_a_hedged_blow_to_a_road_user_is_a_near_miss(text, intent):
+    assert read(text).intent == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("A boy on a bike suddenly darted out between parked cars and I just stopped.", "near_miss"),
+        ("Out of nowhere a moped shot out of a driveway; I braked.", "near_miss"),
+        ("A woman walked slowly across ahead of me and I stopped.", "safe"),
+        ("A boy on a bike suddenly darted out and I waited for him to cross.", "safe"),
+    ],
+    ids=["darted-stopped", "shot-out-braked", "slow-walk-stopped", "darted-waited"],
+)
+def test_a_plain_stop_after_a_sudden_act_is_a_near_miss(text, intent):
+    assert read(text).intent == intent

@@ -891,7 +891,8 @@ def _off_the_road(words: list[str], i: int) -> bool:
 
 def _ego_acts(words: list[str], i: int) -> str | None:
     """What the ego's verb at ``i`` says of the outcome: "evade" (swerve, brake hard), "brake" (a
-    plain brake), "yield" (waits, gives way, stops gently, lets the other go) or None."""
+    plain brake), "stop" (a plain stop), "yield" (waits, gives way, stops gently, lets the other go)
+    or None."""
     lem = _lemmas(words[i])
     if not _is_verb(words[i]):
         return None
@@ -909,7 +910,7 @@ def _ego_acts(words: list[str], i: int) -> str | None:
             return "yield"
         if set(window) & _HARD:
             return "evade"
-        return "brake" if lem & {"brake"} else "yield" if lem & {"stop"} else None
+        return "brake" if lem & {"brake"} else "stop" if lem & {"stop"} else None
     if lem & _YIELD:
         after = words[i + 1 : i + 4]
         if lem & {"give"} and not {"way", "priority", "precedence"} & set(words[i + 1 : i + 5]):
@@ -1212,11 +1213,17 @@ def _hindsight(words: list[str], i: int) -> bool:
     return "have" in before and bool(set(before) & {"could", "would", "might", "should", "ought"})
 
 
-def decide(cues: list[Cue]) -> str | None:
+def decide(cues: list[Cue], sudden: bool = False) -> str | None:
     """The intent the cues state. A contact anywhere is a collision; a hedge, a miss, a small margin
     or a close call a near miss; then a stated safe pass; a denied contact is a near miss unless the
-    ego only gave way; the ego's evasion alone a near miss, its giving way alone a safe pass."""
+    ego only gave way; the ego's evasion alone a near miss, its giving way alone a safe pass.
+    ``sudden``: a road user's act is said to be sudden ("shot out", "suddenly swerved"); then the
+    ego's plain stop or brake, with nothing else said, is what it was forced to do: a near miss."""
     kinds = {c.kind for c in cues}
+    if sudden and kinds & {"stop", "brake"} and not kinds & {"contact", "safe", "yield", "required", "near"}:
+        kinds.add("evade")  # ("a kid shot out in front of me and I just stopped")
+    if "stop" in kinds:
+        kinds = (kinds - {"stop"}) | {"yield"}  # (otherwise a plain stop gives way)
     if "contact" in kinds:
         return COLLISION
     if kinds & {"hedged", "near", "close"}:
@@ -1289,10 +1296,23 @@ def _hedge_after_escape(words: list[str], i: int) -> bool:
 
 def _hedged_act(words: list[str], i: int) -> bool:
     """A hedge before a verb that acts on someone ("nearly took my bumper off", "almost wiped us
-    out"), or before a stop ("only just stopped", "barely stopped in time")."""
+    out", "almost flattened a jogger"), or before a stop ("only just stopped", "barely stopped in
+    time")."""
     after = words[i + 1 : i + 5]
     if not after or not _is_verb(after[0]) or after[0].endswith("ing"):
         return False  # ("barely crawling": how fast, not what happened)
     if _lemmas(after[0]) & {"stop", "avoid", "manage", "make", "get"}:
         return True
-    return bool(set(after[1:]) & (_PERSON_OBJECTS - {"one", "each"} | _POSSESSIVES))
+    if set(after[1:]) & (_PERSON_OBJECTS - {"one", "each"} | _POSSESSIVES):
+        return True
+    moving = _lemmas(after[0]) & _motion_verbs() - _CONTACT_VERBS - _PHRASAL_CONTACT - {"run"}
+    obj = words[i + 2 : i + 8]
+    rider = obj[obj.index("on") + 1 :] if "on" in obj[:3] else []  # ("a lad on a moped": the moped's rider)
+    return not moving and (_names_road_user(obj) or _names_road_user(rider))  # (not "almost overtook him")
+
+
+@lru_cache(maxsize=1)
+def _motion_verbs() -> frozenset[str]:
+    """The first words of the lexicon's behaviours ("overtake", "pass", "follow"): a road user as the
+    object of one of these, hedged, is a move nearly made ("almost overtook a cyclist"), not a blow."""
+    return frozenset(p.split()[0] for ps in L.BEHAVIOUR_VERBS.values() for p in ps)

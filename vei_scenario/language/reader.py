@@ -2088,7 +2088,8 @@ def _read(text: str) -> Reading:
     r.ignored = list(dict.fromkeys(ignored))
     r.read_as = read_as
     cues = outcome_cues(said)
-    r.intent = decide(cues)  # (the outcome reader alone decides contact: not "hit the horn", "hit the brakes")
+    sudden = any(b[2] == "dangerous" for a in r.actors for b in a.behaviours)  # ("shot out", "suddenly")
+    r.intent = decide(cues, sudden)  # (the outcome reader alone decides contact: not "hit the horn", "hit the brakes")
     told = {w for cue in cues for w in cue.words.split()}  # (words the outcome was read from)
     r.ignored = [w for w in r.ignored if w not in told]
     if r.intent is None and not r.actors:
