@@ -796,3 +796,27 @@ def test_a_road_of_many_turns_is_a_bend(text):
 )
 def test_turns_that_are_not_the_roads_keep_it_straight(text):
     assert read(text).map_kind == "straight"
+
+
+@pytest.mark.parametrize(
+    "text, lo, hi",
+    [
+        ("saw it on my dashcam last night moped rider ran the red in front of me", 21, 23),
+        ("this morning van pulled out of a side road in front of me", 6, 11),
+        ("Friday evening lorry cut across my lane at the lights.", 18, 22),
+    ],
+)
+def test_a_part_of_the_day_after_last_or_this_is_when(text, lo, hi):
+    hour = int(read(text).time.split(":")[0])
+    assert lo <= hour <= hi
+
+
+def test_a_part_of_the_day_before_a_noun_still_modifies_it():
+    assert read("I took the night bus home and a cyclist cut in front of it.").time is None
+
+
+@pytest.mark.parametrize("text", ["Tonight a cyclist with no lamps swerved out in front of me.",
+                                  "Out delivering tonight, a moped cut across my lane."])  # fmt: skip
+def test_tonight_is_an_hour_of_both_evening_and_night(text):
+    hour = int(read(text).time.split(":")[0])
+    assert 21 <= hour <= 22

@@ -807,6 +807,8 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             ignored.extend(key)
             i += len(key)
             continue
+        if slot == "time" and before in S.DEICTIC_DAYS:
+            attributive = False  # ("last night cyclist blew the red": when, a time said without a full stop)
         if slot in ("weather", "time", "density", "map") and attributive and _modifies_actor(tokens, i + len(key)):
             # "a parked ice cream van", "a night bus": a word of the setting naming what kind of road user
             j = next(k for k in range(i + len(key), len(tokens)) if _actor_at(tokens, k))

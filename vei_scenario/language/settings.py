@@ -617,6 +617,14 @@ def foot_crossing_named_before(tokens: list[str], i: int) -> bool:
     return any(t in _FOOT_CROSSINGS for t in tokens[:i])
 
 
+#: Words before a part of the day that make it a time said of the story ("last night", "this morning",
+#: "Friday evening"), never a modifier of a noun after it ("a night bus").
+DEICTIC_DAYS = frozenset(
+    ("last", "this", "yesterday", "tomorrow", "that", "one", "every", "each", "monday", "tuesday", "wednesday",
+     "thursday", "friday", "saturday", "sunday")
+)  # fmt: skip
+
+
 #: Words of a bend in the road; not "corner", which a junction has too.
 _BEND_WORDS = frozenset(w for w in L.MAPS["curve"] if " " not in w and w != "corner")
 
