@@ -820,3 +820,19 @@ def test_a_part_of_the_day_before_a_noun_still_modifies_it():
 def test_tonight_is_an_hour_of_both_evening_and_night(text):
     hour = int(read(text).time.split(":")[0])
     assert 21 <= hour <= 22
+
+
+@pytest.mark.parametrize(
+    "text, weather",
+    [
+        ("On misty winter evenings joggers step out from behind parked vans; I braked for one.", "fog"),
+        ("A winter morning, and a cyclist wobbled out in front of me.", "snow"),
+        ("Road still wet after rain, grey sky; a moped cut in front of the ego.", "cloudy"),
+        ("Greasy surface since the snow, sky bright; a van pulled out on me.", "clear"),
+        ("In the wet a van pulled out in front of me; not my finest hour.", "rain"),
+        ("It was the clearest of mornings and a van pulled out in front of me.", None),
+    ],
+    ids=["season-fog", "season-alone", "after-rain", "since-snow", "finest", "clearest"],
+)
+def test_a_season_a_past_weather_and_a_superlative_give_way(text, weather):
+    assert read(text).weather == weather

@@ -791,6 +791,10 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
         ):
             i += len(key) - 1  # ("coming at 40 km/h": a speed, not at the ego)
             continue
+        if slot == "weather" and S.superlative(tokens[i], key):
+            ignored.append(tok)  # ("not the driver's finest moment", "the clearest view"): a comparison
+            i += len(key)
+            continue
         if slot in ("weather", "time", "density") and (
             S.negated(tokens, i) or (slot == "weather" and S.ended(tokens, i, len(key)))
         ):
@@ -2124,7 +2128,11 @@ def _read(text: str) -> Reading:
         S.without_bounds(said), [v for k, w, v in said_as if k == "time"]
     )
     r.time = S.time_of_day([(w, v) for k, w, v in said_as if k == "time"], clock) or r.time
-    r.weather = S.sky_over_surface([(w, v) for k, w, v in said_as if k == "weather"]) or r.weather or S.sunny(said)
+    plain = [(w, v) for k, w, v in said_as if k == "weather"]
+    weather = S.weather_said([(m.words, m.value, m.prev) for _, ms in clauses for m in ms if m.slot == "weather"])
+    if weather != plain:  # (a season or a past weather set aside: "foggy winter mornings", "wet after rain")
+        r.weather = S.most_severe(weather)
+    r.weather = S.sky_over_surface(weather) or r.weather or S.sunny(said)
     r.density = S.density(said, r.density)
     if r.weather in (None, "rain") and stated_heavy_rain(said):
         r.weather = "heavy_rain"

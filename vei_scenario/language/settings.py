@@ -309,10 +309,34 @@ def day_halves(said: str) -> list[tuple[str, str]]:
     return [(m.group(0), _HALF_CLOCK[m.group(1)]) for m in _DAY_HALF.finditer(said)]
 
 
+#: Seasons among the weather words: the weather they bring only where no other is said ("a winter
+#: morning": snow; "foggy winter mornings": fog).
+SEASON_WORDS = frozenset({"winter"})
+#: Words before a weather word that put it before the scene ("surface wet after rain", "since the
+#: snow"): it left the road wet or white, it is not the sky now.
+PAST_WEATHER = frozenset({"after", "since"})
+_SEVERITY = {"clear": 0, "cloudy": 1, "rain": 2, "fog": 2, "snow": 3, "heavy_rain": 3}
+
+
+def weather_said(mentions: list[tuple[str, str, str]]) -> list[tuple[str, str]]:
+    """The weather words of ``mentions`` (words, value, word before) as (words, value): one said of a
+    time before the scene ("after rain") counts as what it left on the road, a surface word; a season
+    only where no other weather word is said."""
+    said = [("wet" if prev in PAST_WEATHER else words, value) for words, value, prev in mentions]
+    other = [(w, v) for w, v in said if w not in SEASON_WORDS]
+    return other or said
+
+
+def most_severe(said: list[tuple[str, str]]) -> str | None:
+    """The most severe weather of ``said`` (words, value), of equals the first."""
+    values = [v for _, v in said]
+    return max(values, key=lambda v: (_SEVERITY.get(v, 0), -values.index(v))) if values else None
+
+
 def sky_over_surface(said: list[tuple[str, str]]) -> str | None:
     """The weather of the sky words among the weather words ``said`` as (words, value), when surface
     words ("wet track") are said with them (the most severe sky word, of equals the first); else None."""
-    severity = {"clear": 0, "cloudy": 1, "rain": 2, "fog": 2, "snow": 3, "heavy_rain": 3}
+    severity = _SEVERITY
     sky = [value for words, value in said if words not in SURFACE_WORDS]
     if not sky or len(sky) == len(said):
         return None
@@ -623,6 +647,12 @@ DEICTIC_DAYS = frozenset(
     ("last", "this", "yesterday", "tomorrow", "that", "one", "every", "each", "monday", "tuesday", "wednesday",
      "thursday", "friday", "saturday", "sunday")
 )  # fmt: skip
+
+
+def superlative(token: str, key: tuple[str, ...]) -> bool:
+    """Whether ``token`` is the superlative of the one-word weather entry ``key`` ("finest" for
+    "fine", "clearest" for "clear"): it ranks something ("his finest moment"), it reports no weather."""
+    return len(key) == 1 and token != key[0] and token.endswith("est")
 
 
 #: Words of a bend in the road; not "corner", which a junction has too.
