@@ -836,3 +836,18 @@ def test_tonight_is_an_hour_of_both_evening_and_night(text):
 )
 def test_a_season_a_past_weather_and_a_superlative_give_way(text, weather):
     assert read(text).weather == weather
+
+
+@pytest.mark.parametrize(
+    "text, density",
+    [
+        ("Traffic was too much today, and a moped cut in front of me.", "heavy"),
+        ("The traffic was horrendous; a van pulled out of a side road on me.", "heavy"),
+        ("In the sim the traffic's set to heavy and a cyclist swerves out ahead of the ego.", "heavy"),
+        ("The road was bad with potholes and a van pulled out in front of me.", None),
+        ("The traffic was light and a moped cut in front of me.", "light"),
+    ],
+    ids=["too-much", "horrendous", "set-to-heavy", "bad-road", "light"],
+)
+def test_traffic_said_to_be_bad_is_heavy(text, density):
+    assert read(text).density == density

@@ -403,11 +403,15 @@ _TRAFFIC_NOTE = re.compile(
     r"\btraffic(?: (moderate|heavy|busy|dense|sparse|quiet)"
     r"| ?[:=] ?(light|moderate|heavy|busy|dense|sparse|quiet|none))\b"
 )
-#: Traffic said of the road ("the motorway was heavy", "traffic was moderate").
+#: Traffic said of the road ("the motorway was heavy", "traffic was moderate", "traffic's on heavy"), or
+#: the traffic said to be bad ("traffic was too much", "the traffic was mad"): congestion, heavy.
 _SAID_OF_ROAD = re.compile(
     r"\b(?:traffic(?: volumes?| levels?| flows?)?|motorway|road|roads|street|streets|highway|circulation)"
-    r" (?:is|was|were|are|being|looked|seemed) (?:very |quite |fairly |pretty |"
-    r"really )?(light|moderate|heavy|busy|quiet|dense|sparse|empty)\b"
+    r" (?:is|was|were|are|being|looked|seemed|'s)(?: on| set to| at)? (?:very |quite |fairly |pretty |so |"
+    r"really |absolutely |just )?(light|moderate|heavy|busy|quiet|dense|sparse|empty)\b"
+    r"|\btraffic (?:is|was|were|are|being|looked|seemed|'s) (?:very |so |really |absolutely |just )?"
+    r"(too much|bad|terrible|horrendous|awful|mad|crazy|insane|manic|chaos|chaotic|gridlocked|jammed|rammed|"
+    r"murder|nuts)\b"
 )
 #: A degree of traffic before up to two words saying which traffic ("heavy morning traffic", "moderate bg
 #: traffic", "zero ambient traffic", "slow queuing traffic"): the degree is said of the traffic all the
@@ -426,7 +430,10 @@ _DEGREE_OF_VOLUME = re.compile(
 _DENSITY_WORDS = {"light": "light", "sparse": "light", "quiet": "light", "moderate": "moderate", "heavy": "heavy",
                   "busy": "heavy", "dense": "heavy", "empty": "none", "none": "none", "zero": "none",
                   "slow": "heavy", "queuing": "heavy", "queueing": "heavy", "crawling": "heavy",
-                  "stationary": "heavy", "low": "light"}  # fmt: skip
+                  "stationary": "heavy", "low": "light", "too much": "heavy", "bad": "heavy", "terrible": "heavy",
+                  "horrendous": "heavy", "awful": "heavy", "mad": "heavy", "crazy": "heavy", "insane": "heavy",
+                  "manic": "heavy", "chaos": "heavy", "chaotic": "heavy", "gridlocked": "heavy", "jammed": "heavy",
+                  "rammed": "heavy", "murder": "heavy", "nuts": "heavy"}  # fmt: skip
 
 
 def density(said: str, read: str | None = None) -> str | None:
@@ -447,7 +454,7 @@ def density(said: str, read: str | None = None) -> str | None:
         return _DENSITY_WORDS[note.group(1) or note.group(2)]
     m = _SAID_OF_ROAD.search(said_of_traffic)
     if m is not None:
-        return _DENSITY_WORDS[m.group(1)]
+        return _DENSITY_WORDS[m.group(1) or m.group(2)]  # (of the road; or of the traffic, as congestion)
     m = _DEGREE_OF_TRAFFIC.search(said_of_traffic)
     if m is not None and (m.group(2) or read is None):  # (a degree right before "traffic": the lexicon's first)
         return _DENSITY_WORDS[m.group(1)]
