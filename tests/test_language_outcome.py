@@ -853,3 +853,14 @@ def test_a_hedged_blow_to_a_road_user_is_a_near_miss(text, intent):
 )
 def test_a_plain_stop_after_a_sudden_act_is_a_near_miss(text, intent):
     assert read(text).intent == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("I spotted the jogger just in time and braked.", None),
+        ("The lorry drifted over and I got out of its way just in time.", "near_miss"),
+    ],
+)
+def test_seen_just_in_time_is_no_escape(text, intent):
+    assert _intent(text) == intent

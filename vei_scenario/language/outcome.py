@@ -684,6 +684,7 @@ def _margin(words: list[str], i: int) -> str | None:
     if w == "time" and stopping and words[max(0, i - 2) : i] in (["in", "good"], ["in", "ample"], ["plenty", "of"]):
         return SAFE  # ("pulled up in good time", "stops in plenty of time": time to spare)
     arriving = words[i + 1 : i + 2] in (["to"], ["for"])  # ("got there just in time for the start")
+    arriving = arriving or any(_lemmas(x) & _PERCEIVING for x in words[:i])  # ("spotted him just in time")
     if w == "time" and words[i - 1 : i] == ["in"] and set(words[max(0, i - 3) : i - 1]) & (_HEDGES | {"just"}):
         return None if arriving else NEAR_MISS  # ("pulled back just in time", "swerved barely in time")
     if w == "time" and words[max(0, i - 3) : i] == ["the", "nick", "of"]:
@@ -751,6 +752,11 @@ _SUFFICIENT = frozenset(("sufficient", "adequate", "safe", "decent", "reasonable
 _UNIT_METRES = {"m": 1.0, "metre": 1.0, "metres": 1.0, "meter": 1.0, "meters": 1.0, "foot": 0.3048, "feet": 0.3048,
                 "yard": 0.9144, "yards": 0.9144, "cm": 0.01, "centimetre": 0.01, "centimetres": 0.01,
                 "centimeter": 0.01, "centimeters": 0.01, "inch": 0.0254, "inches": 0.0254}  # fmt: skip
+
+
+#: Verbs of perceiving: what is seen "just in time" is seen, not escaped ("caught him with my eyes just
+#: in time", "spotted her just in time and braked"); the act that follows says the outcome.
+_PERCEIVING = frozenset(("see", "spot", "notice", "catch", "look", "hear", "glimpse", "sight", "clock"))
 
 
 def _length_said(words: list[str]) -> float | None:
