@@ -48,7 +48,7 @@ from vei_scenario.language import settings as S
 from vei_scenario.language import vocabulary as V
 from vei_scenario.language.behaviours import BEHAVIOURS
 from vei_scenario.language.lemmas import lemmas as _lemmas
-from vei_scenario.language.manner import apply_manner, stated_manner
+from vei_scenario.language.manner import apply_manner, stated_manner, tight_cut_ins
 from vei_scenario.language.motion import (
     chains,
     destinations_not_origins,
@@ -2091,6 +2091,7 @@ def _read(text: str) -> Reading:
     if r.map_kind is None and any(s.relation == "junction_opposite" for s in r.actors):
         r.map_kind = "crossroad"
     r.ego_speed_mps = ego_said if ego_said is not None else r.ego_speed_mps
+    tight_cut_ins(r.actors, r.ego_speed_mps)  # ("cut in 5 m in front of me at 60 mph": dangerous by its numbers)
     r.ignored = list(dict.fromkeys(ignored))
     r.read_as = read_as
     cues = outcome_cues(said)
