@@ -265,13 +265,16 @@ def apply_manner(cls: str | None, specs: list) -> None:
 TIGHT_HEADWAY_S = 1.0
 
 
-def tight_cut_ins(specs: list, ego_speed_mps: float | None) -> None:
+def tight_cut_ins(specs: list, ego_speed_mps: float | None, intent: str | None) -> None:
     """Make dangerous a cut-in whose stated gap in front of the ego ("forces its way in about 20 feet
     in front of me") is under :data:`TIGHT_HEADWAY_S` at the ego's stated speed, where nothing else
-    set its class: its numbers say how close it came."""
-    if not ego_speed_mps or ego_speed_mps <= 0.0:
+    set its class: its numbers say how close it came. Not where the outcome is said to be safe, nor
+    for a road user said to be faster than the ego (the gap it leaves opens)."""
+    if not ego_speed_mps or ego_speed_mps <= 0.0 or intent == SAFE:
         return
     for spec in specs:
+        if spec.speed_mps is not None and spec.speed_mps > ego_speed_mps:
+            continue
         spec.behaviours = [
             (name, cfg, DANGEROUS, link)
             if name == "cut_in"

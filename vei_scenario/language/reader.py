@@ -2091,7 +2091,6 @@ def _read(text: str) -> Reading:
     if r.map_kind is None and any(s.relation == "junction_opposite" for s in r.actors):
         r.map_kind = "crossroad"
     r.ego_speed_mps = ego_said if ego_said is not None else r.ego_speed_mps
-    tight_cut_ins(r.actors, r.ego_speed_mps)  # ("cut in 5 m in front of me at 60 mph": dangerous by its numbers)
     r.ignored = list(dict.fromkeys(ignored))
     r.read_as = read_as
     cues = outcome_cues(said)
@@ -2101,6 +2100,7 @@ def _read(text: str) -> Reading:
     r.ignored = [w for w in r.ignored if w not in told]
     if r.intent is None and not r.actors:
         r.intent = "safe"  # (nobody but the ego: nothing it could meet)
+    tight_cut_ins(r.actors, r.ego_speed_mps, r.intent)  # ("cut in 5 m in front of me at 60 mph": dangerous)
     Q.struck_at_rest(r.actors, r.ego_speed_mps, r.intent)  # ("I was waiting at the lights when a van hit me")
     r.lanes = stated_lanes(said) or r.lanes
     oncoming = any(s.relation == "oncoming" or any(b[0] == "wrong_way" for b in s.behaviours) for s in r.actors)
