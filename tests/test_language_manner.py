@@ -187,3 +187,31 @@ def test_the_egos_hard_evasion_makes_the_act_dangerous(text):
 )
 def test_a_wide_margin_a_mild_reaction_or_a_stated_closeness_is_not_made_dangerous(text, cls):
     assert _class(text) == cls
+
+
+@pytest.mark.parametrize(
+    "text, crit",
+    [
+        ("Doing 60 mph on the motorway when a coach barged into my lane about 15 feet ahead of me.", "dangerous"),
+        ("Ego at 90 km/h; a hatchback cuts in 12 m in front of it.", "dangerous"),
+        ("Ego at 30 km/h; a hatchback cuts in 25 m in front of it.", None),
+        ("Ego at 90 km/h; a hatchback cuts in gently, 12 m in front of it, leaving plenty of room.", "safe"),
+    ],
+    ids=["coach-15-feet", "spec-12-m", "slow-ego", "said-safe"],
+)
+def test_a_cut_in_under_a_second_ahead_is_dangerous(text, crit):
+    cut_in = [b for a in read(text).actors for b in a.behaviours if b[0] == "cut_in"]
+    assert cut_in and cut_in[0][2] == crit
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Ego at 90 km/h; a hatchback cuts in 12 m in front of it. The outcome should be safe.",
+        "Ego at 90 km/h; a motorbike at 120 km/h cuts in 12 m in front of it.",
+    ],
+    ids=["said-safe-outcome", "faster-cutter"],
+)
+def test_a_tight_cut_in_said_safe_or_pulling_away_is_not_made_dangerous(text):
+    cut_in = [b for a in read(text).actors for b in a.behaviours if b[0] == "cut_in"]
+    assert cut_in and cut_in[0][2] != "dangerous"

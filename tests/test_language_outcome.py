@@ -778,3 +778,89 @@ def test_a_contact_noun_that_modifies_another_noun_states_no_contact(text, inten
 )
 def test_a_contact_noun_said_as_the_event_is_a_collision(text):
     assert stated_intent(" ".join(_tokens(text))) == "collision"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist came out of a side road on my left and I hit the horn.",
+        "The taxi stopped dead and the moped rider behind hit his horn.",
+        "A dog ran across in front of the bus and the driver hit the brakes.",
+        "Gran took me out for a lesson and a jogger stepped out ahead; I braked and stopped.",
+        "My instructor took us out driving, and a van cut in front of us, so I braked.",
+    ],
+    ids=["hit-horn", "hit-his-horn", "hit-brakes", "took-out-for", "took-out-driving"],
+)
+def test_the_outcome_reader_alone_decides_contact(text):
+    assert read(text).intent != "collision"
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("The delivery van started edging over and I leaned on the horn; it swerved back just in time.", "near_miss"),
+        ("A bus pulled out and we got past in the nick of time.", "near_miss"),
+        ("The test requires the ego to avoid the jogger narrowly.", "near_miss"),
+        ("I missed the skateboarder only just.", "near_miss"),
+        ("I was very nearly hit by a reversing taxi.", "near_miss"),
+        ("Lorry drifted across, no hit.", "near_miss"),
+        ("Courier bike hit rear door of the taxi.", "collision"),
+        ("Van hit cyclist at the lights.", "collision"),
+        ("A moped ran the red and the two collided.", "collision"),
+        ("A moped ran the red and both collided.", "collision"),
+        ("A lorry took the cyclist out at the lights.", "collision"),
+    ],
+)
+def test_contact_said_tersely_or_hedged_after_its_verb(text, intent):
+    assert _intent(text) == intent
+    assert read(text).intent == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("We got to the lights just in time to see a van cut in front of a cyclist, who braked gently.", None),
+        ("A bus strike meant the roads were quiet, and a cyclist passed me wide.", "safe"),
+        ("It was a hit, the music was loud, and a cyclist passed me wide.", "safe"),
+    ],
+)
+def test_near_miss_negatives_of_terse_contact(text, intent):
+    assert read(text).intent == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("almost flattened a lad on a moped this morning", "near_miss"),
+        ("We very nearly killed a pedestrian at the lights.", "near_miss"),
+        ("The bus almost overtook a cyclist but stayed behind.", None),
+        ("I almost followed the cyclist into the junction.", None),
+    ],
+)
+def test_a_hedged_blow_to_a_road_user_is_a_near_miss(text, intent):
+    assert read(text).intent == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("A boy on a bike suddenly darted out between parked cars and I just stopped.", "near_miss"),
+        ("Out of nowhere a moped shot out of a driveway; I braked.", "near_miss"),
+        ("A woman walked slowly across ahead of me and I stopped.", "safe"),
+        ("A boy on a bike suddenly darted out and I waited for him to cross.", "safe"),
+    ],
+    ids=["darted-stopped", "shot-out-braked", "slow-walk-stopped", "darted-waited"],
+)
+def test_a_plain_stop_after_a_sudden_act_is_a_near_miss(text, intent):
+    assert read(text).intent == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("I spotted the jogger just in time and braked.", None),
+        ("The lorry drifted over and I got out of its way just in time.", "near_miss"),
+    ],
+)
+def test_seen_just_in_time_is_no_escape(text, intent):
+    assert _intent(text) == intent

@@ -78,6 +78,20 @@ def test_a_lateral_quantity_is_not_a_speed_or_gap_of_travel(text):
 
 
 @pytest.mark.parametrize(
+    "text, gap",
+    [
+        ("Ego at 50 km/h behind a cyclist 25 m ahead; the cyclist brakes hard. Pass if remaining distance > 2 m.", 25),
+        ("A moped riding the wrong way comes at us from 30 m ahead and passes about 1 m off our right side.", 30),
+        ("A jogger 20 m ahead veers out and goes by half a metre off my wing mirror.", 20),
+        ("A van 35 m ahead pulls out 10 m off my bumper.", 10),
+    ],
+    ids=["remaining-distance", "off-our-side", "off-my-mirror", "off-bumper-is-a-gap"],
+)
+def test_a_margin_off_a_vehicles_side_or_left_at_the_end_is_no_starting_gap(text, gap):
+    assert [a.distance_m for a in read(text).actors] == [gap]
+
+
+@pytest.mark.parametrize(
     "text, speed",
     [
         ("The ego and a lead truck both at 70 km/h, 30 m apart; the truck brakes hard.", 70),

@@ -478,6 +478,35 @@ def test_a_pedestrian_crossing_alone_is_no_junction(text, kind):
     assert read(text).map_kind == kind
 
 
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("A jogger ran out at the crossing on the hairpin and I braked.", "curve"),
+        ("On the bend by the school a child dashed over the crossing; I stopped short.", "curve"),
+        ("Round the bend near the crossing a van overtook me and cut in.", "curve"),
+        ("A kid ran across at the crossing by the school and I braked hard.", "crossroad"),
+        ("At the crossing on the corner a jogger stepped out in front of me.", "crossroad"),
+    ],
+    ids=["hairpin", "bend-child", "bend-van", "no-bend", "corner-not-a-bend"],
+)
+def test_a_crossing_on_a_bend_is_that_bend(text, kind):
+    assert read(text).map_kind == kind
+
+
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("Coming round the bend at dusk I met a cyclist with no lights riding along the edge.", "curve"),
+        ("On a twisty lane a jogger without lights stepped out; get some lights, people.", "curve"),
+        ("The moped on the bend had its lights off and wobbled out in front of me.", "curve"),
+        ("Past the bend, at the lights, a van pulled out in front of me.", "crossroad"),
+    ],
+    ids=["no-lights", "without-some", "its-lights", "ran-the-lights"],
+)
+def test_a_road_users_lights_are_no_signals(text, kind):
+    assert read(text).map_kind == kind
+
+
 # --- a turn said without "turn into" ---------------------------------------------------------------------------
 @pytest.mark.parametrize(
     "text",
@@ -767,3 +796,58 @@ def test_a_road_of_many_turns_is_a_bend(text):
 )
 def test_turns_that_are_not_the_roads_keep_it_straight(text):
     assert read(text).map_kind == "straight"
+
+
+@pytest.mark.parametrize(
+    "text, lo, hi",
+    [
+        ("saw it on my dashcam last night moped rider ran the red in front of me", 21, 23),
+        ("this morning van pulled out of a side road in front of me", 6, 11),
+        ("Friday evening lorry cut across my lane at the lights.", 18, 22),
+    ],
+)
+def test_a_part_of_the_day_after_last_or_this_is_when(text, lo, hi):
+    hour = int(read(text).time.split(":")[0])
+    assert lo <= hour <= hi
+
+
+def test_a_part_of_the_day_before_a_noun_still_modifies_it():
+    assert read("I took the night bus home and a cyclist cut in front of it.").time is None
+
+
+@pytest.mark.parametrize("text", ["Tonight a cyclist with no lamps swerved out in front of me.",
+                                  "Out delivering tonight, a moped cut across my lane."])  # fmt: skip
+def test_tonight_is_an_hour_of_both_evening_and_night(text):
+    hour = int(read(text).time.split(":")[0])
+    assert 21 <= hour <= 22
+
+
+@pytest.mark.parametrize(
+    "text, weather",
+    [
+        ("On misty winter evenings joggers step out from behind parked vans; I braked for one.", "fog"),
+        ("A winter morning, and a cyclist wobbled out in front of me.", "snow"),
+        ("Road still wet after rain, grey sky; a moped cut in front of the ego.", "cloudy"),
+        ("Greasy surface since the snow, sky bright; a van pulled out on me.", "clear"),
+        ("In the wet a van pulled out in front of me; not my finest hour.", "rain"),
+        ("It was the clearest of mornings and a van pulled out in front of me.", None),
+    ],
+    ids=["season-fog", "season-alone", "after-rain", "since-snow", "finest", "clearest"],
+)
+def test_a_season_a_past_weather_and_a_superlative_give_way(text, weather):
+    assert read(text).weather == weather
+
+
+@pytest.mark.parametrize(
+    "text, density",
+    [
+        ("Traffic was too much today, and a moped cut in front of me.", "heavy"),
+        ("The traffic was horrendous; a van pulled out of a side road on me.", "heavy"),
+        ("In the sim the traffic's set to heavy and a cyclist swerves out ahead of the ego.", "heavy"),
+        ("The road was bad with potholes and a van pulled out in front of me.", None),
+        ("The traffic was light and a moped cut in front of me.", "light"),
+    ],
+    ids=["too-much", "horrendous", "set-to-heavy", "bad-road", "light"],
+)
+def test_traffic_said_to_be_bad_is_heavy(text, density):
+    assert read(text).density == density

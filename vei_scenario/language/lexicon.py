@@ -1252,7 +1252,8 @@ TIMES = {
         "dusky",
         "civil twilight",
     ),
-    "20:00": ("evening", "tonight"),
+    "20:00": ("evening",),
+    "21:30": ("tonight",),  # (this evening or tonight: an hour of both)
     "17:30": ("rush hour", "commute"),
 }
 DENSITY = {

@@ -258,3 +258,28 @@ def apply_manner(cls: str | None, specs: list) -> None:
     if len(acting) != 1:
         return
     acting[0].behaviours = [(name, cfg, cls, link) for name, cfg, _, link in acting[0].behaviours]
+
+
+#: Below this time gap (s) a road user that cuts in leaves the ego no more than a reaction time: a
+#: dangerous cut-in, whatever words say it.
+TIGHT_HEADWAY_S = 1.0
+
+
+def tight_cut_ins(specs: list, ego_speed_mps: float | None, intent: str | None) -> None:
+    """Make dangerous a cut-in whose stated gap in front of the ego ("forces its way in about 20 feet
+    in front of me") is under :data:`TIGHT_HEADWAY_S` at the ego's stated speed, where nothing else
+    set its class: its numbers say how close it came. Not where the outcome is said to be safe, nor
+    for a road user said to be faster than the ego (the gap it leaves opens)."""
+    if not ego_speed_mps or ego_speed_mps <= 0.0 or intent == SAFE:
+        return
+    for spec in specs:
+        if spec.speed_mps is not None and spec.speed_mps > ego_speed_mps:
+            continue
+        spec.behaviours = [
+            (name, cfg, DANGEROUS, link)
+            if name == "cut_in"
+            and crit is None
+            and 0.0 < float(cfg.get("gap_m", 1e9)) / ego_speed_mps < TIGHT_HEADWAY_S
+            else (name, cfg, crit, link)
+            for name, cfg, crit, link in spec.behaviours
+        ]

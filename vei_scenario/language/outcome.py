@@ -416,6 +416,8 @@ def _thing_subject(words: list[str], i: int) -> bool:
     for k in range(i - 1, max(-1, i - 5), -1):
         if words[k] in _DETERMINERS or words[k] in _POSSESSIVES:
             phrase = words[k + 1 : i]  # (a road user's part is the road user: "his handlebar scraped the door")
+            if phrase and all(_number(x) is not None or x == "both" for x in phrase):
+                return False  # ("the two collided": a count of the road users named before)
             return bool(phrase) and not any(
                 _road_user_word(x) or x in _EGO_HEADS or x in _PERSON_OBJECTS or x.rstrip("s") in _VEHICLE_PARTS
                 for x in phrase
@@ -424,12 +426,17 @@ def _thing_subject(words: list[str], i: int) -> bool:
             return False
     phrase = words[max(0, i - 4) : i]  # (a bare noun opening its clause: "app crashed twice")
     return 0 < i <= 2 and all(
-        not (_road_user_word(x) or x in _EGO_HEADS | _PERSON_OBJECTS | _NEGATORS or any(c.isdigit() for c in x))
+        not (_road_user_word(x) or x in _EGO_HEADS | _PERSON_OBJECTS | _NEGATORS | {"both"})
+        and not (_number(x) is not None or any(c.isdigit() for c in x))
         and not x.endswith(("body", "one"))  # ("nobody hits anybody", "someone crashed")
         and "VERB" not in _pos(x)
         and "ADV" not in _pos(x)
         for x in phrase
     )
+
+
+#: Adverbs of degree that stand between an auxiliary and its verb ("was very nearly hit").
+_INTENSIFIERS = frozenset(("very", "so", "too", "just", "only", "really"))
 
 
 def _verbal(words: list[str], i: int) -> bool:
@@ -438,11 +445,18 @@ def _verbal(words: list[str], i: int) -> bool:
     w = words[i]
     if "NOUN" not in _pos(w) or w not in _pos(w).get("VERB", ()):
         return True  # (no noun, or inflected: "struck", "tagged", "hits")
-    prev = words[i - 1] if i > 0 else ""
+    k = i - 1
+    while k > 0 and (words[k] in _HEDGES | _INTENSIFIERS or (words[k].endswith("ly") and "ADV" in _pos(words[k]))):
+        k -= 1  # ("was nearly hit", "had only narrowly struck": the word before its adverbs)
+    prev = words[k] if k >= 0 else ""
     nxt = words[i + 1] if i + 1 < len(words) else ""
     if prev in ("a", "an", "the", "this", "that") or prev in _POSSESSIVES:
         return False
-    return prev in _VERBAL_BEFORE or nxt in {"the", "a", "an", "into", "with"} | _POSSESSIVES | _PERSON_OBJECTS
+    if prev in _NEGATORS:
+        return True  # ("no hit": denied, as a noun or a verb alike)
+    if _vehicle_part(["the", *words[i + 1 : i + 4]]) or _road_user_word(nxt):
+        return True  # ("scooter hit rear wheel", "van hit cyclist": a report's object without its article)
+    return prev in _VERBAL_BEFORE or nxt in {"the", "a", "an", "into", "with", "by"} | _POSSESSIVES | _PERSON_OBJECTS
 
 
 def into_road_user(words: list[str], j: int) -> bool:
@@ -521,8 +535,14 @@ def _phrasal_object(words: list[str], i: int) -> bool:
         k = next((k for k, x in enumerate(after) if x in _PARTICLES), None)
         if k is None:
             return False
+        if after[k] == "out" and after[k + 1 : k + 2] and (after[k + 1] in _OUTING or after[k + 1].endswith("ing")):
+            return False  # ("took me out for a drive", "took us out driving": an outing, not a blow)
         obj = after[:k]
     return _names_road_user(obj)
+
+
+#: Words after "took someone out" that make it an outing ("out for practice", "out to the coast").
+_OUTING = frozenset(("for", "to", "again"))
 
 
 def _names_road_user(obj: list[str]) -> bool:
@@ -663,6 +683,12 @@ def _margin(words: list[str], i: int) -> str | None:
     stopping = any(_lemmas(x) & {"stop", "brake", "halt"} or x == "up" for x in words[max(0, i - 6) : i])
     if w == "time" and stopping and words[max(0, i - 2) : i] in (["in", "good"], ["in", "ample"], ["plenty", "of"]):
         return SAFE  # ("pulled up in good time", "stops in plenty of time": time to spare)
+    arriving = words[i + 1 : i + 2] in (["to"], ["for"])  # ("got there just in time for the start")
+    arriving = arriving or any(_lemmas(x) & _PERCEIVING for x in words[:i])  # ("spotted him just in time")
+    if w == "time" and words[i - 1 : i] == ["in"] and set(words[max(0, i - 3) : i - 1]) & (_HEDGES | {"just"}):
+        return None if arriving else NEAR_MISS  # ("pulled back just in time", "swerved barely in time")
+    if w == "time" and words[max(0, i - 3) : i] == ["the", "nick", "of"]:
+        return NEAR_MISS  # ("in the nick of time")
     if w == "time" and i > 0 and words[i - 1] == "in" and stopping:
         after = words[i + 1 : i + 6]
         if after[:1] == ["with"] and set(after) & (_WIDE - {"enough"}):
@@ -726,6 +752,11 @@ _SUFFICIENT = frozenset(("sufficient", "adequate", "safe", "decent", "reasonable
 _UNIT_METRES = {"m": 1.0, "metre": 1.0, "metres": 1.0, "meter": 1.0, "meters": 1.0, "foot": 0.3048, "feet": 0.3048,
                 "yard": 0.9144, "yards": 0.9144, "cm": 0.01, "centimetre": 0.01, "centimetres": 0.01,
                 "centimeter": 0.01, "centimeters": 0.01, "inch": 0.0254, "inches": 0.0254}  # fmt: skip
+
+
+#: Verbs of perceiving: what is seen "just in time" is seen, not escaped ("caught him with my eyes just
+#: in time", "spotted her just in time and braked"); the act that follows says the outcome.
+_PERCEIVING = frozenset(("see", "spot", "notice", "catch", "look", "hear", "glimpse", "sight", "clock"))
 
 
 def _length_said(words: list[str]) -> float | None:
@@ -866,7 +897,8 @@ def _off_the_road(words: list[str], i: int) -> bool:
 
 def _ego_acts(words: list[str], i: int) -> str | None:
     """What the ego's verb at ``i`` says of the outcome: "evade" (swerve, brake hard), "brake" (a
-    plain brake), "yield" (waits, gives way, stops gently, lets the other go) or None."""
+    plain brake), "stop" (a plain stop), "yield" (waits, gives way, stops gently, lets the other go)
+    or None."""
     lem = _lemmas(words[i])
     if not _is_verb(words[i]):
         return None
@@ -884,7 +916,7 @@ def _ego_acts(words: list[str], i: int) -> str | None:
             return "yield"
         if set(window) & _HARD:
             return "evade"
-        return "brake" if lem & {"brake"} else "yield" if lem & {"stop"} else None
+        return "brake" if lem & {"brake"} else "stop" if lem & {"stop"} else None
     if lem & _YIELD:
         after = words[i + 1 : i + 4]
         if lem & {"give"} and not {"way", "priority", "precedence"} & set(words[i + 1 : i + 5]):
@@ -1119,7 +1151,7 @@ def outcome_cues(said: str) -> list[Cue]:
             elif margin is not None:
                 add("near" if margin == NEAR_MISS else "safe")
             hedge = w in _HEDGES or (w == "just" and i > 0 and words[i - 1] == "only")
-            if hedge and _hedged_act(words, i):
+            if hedge and (_hedged_act(words, i) or _hedge_after_escape(words, i)):
                 add("hedged")
             if w in _TROUBLE and (_denied_before(words, i) or _scoped(words, i, ("without",), 3)):
                 add("safe")
@@ -1187,11 +1219,17 @@ def _hindsight(words: list[str], i: int) -> bool:
     return "have" in before and bool(set(before) & {"could", "would", "might", "should", "ought"})
 
 
-def decide(cues: list[Cue]) -> str | None:
+def decide(cues: list[Cue], sudden: bool = False) -> str | None:
     """The intent the cues state. A contact anywhere is a collision; a hedge, a miss, a small margin
     or a close call a near miss; then a stated safe pass; a denied contact is a near miss unless the
-    ego only gave way; the ego's evasion alone a near miss, its giving way alone a safe pass."""
+    ego only gave way; the ego's evasion alone a near miss, its giving way alone a safe pass.
+    ``sudden``: a road user's act is said to be sudden ("shot out", "suddenly swerved"); then the
+    ego's plain stop or brake, with nothing else said, is what it was forced to do: a near miss."""
     kinds = {c.kind for c in cues}
+    if sudden and kinds & {"stop", "brake"} and not kinds & {"contact", "safe", "yield", "required", "near"}:
+        kinds.add("evade")  # ("a kid shot out in front of me and I just stopped")
+    if "stop" in kinds:
+        kinds = (kinds - {"stop"}) | {"yield"}  # (otherwise a plain stop gives way)
     if "contact" in kinds:
         return COLLISION
     if kinds & {"hedged", "near", "close"}:
@@ -1252,12 +1290,35 @@ def _predicate(words: list[str], i: int) -> bool:
     return j >= 0 and words[j] in _COPULA
 
 
+#: Verbs (lemmas) of getting out of someone's way, which a hedge after them narrows ("avoided it narrowly").
+_ESCAPES = frozenset(("avoid", "miss", "escape", "dodge", "evade", "clear", "pass", "stop"))
+
+
+def _hedge_after_escape(words: list[str], i: int) -> bool:
+    """A hedge at ``i`` after a verb of escaping in its clause ("avoiding it narrowly", "missed the
+    cyclist only just", "stopped barely"): the escape was only just made, a near miss."""
+    return any(_is_verb(x) and _lemmas(x) & _ESCAPES for x in words[max(0, i - 4) : i])
+
+
 def _hedged_act(words: list[str], i: int) -> bool:
     """A hedge before a verb that acts on someone ("nearly took my bumper off", "almost wiped us
-    out"), or before a stop ("only just stopped", "barely stopped in time")."""
+    out", "almost flattened a jogger"), or before a stop ("only just stopped", "barely stopped in
+    time")."""
     after = words[i + 1 : i + 5]
     if not after or not _is_verb(after[0]) or after[0].endswith("ing"):
         return False  # ("barely crawling": how fast, not what happened)
     if _lemmas(after[0]) & {"stop", "avoid", "manage", "make", "get"}:
         return True
-    return bool(set(after[1:]) & (_PERSON_OBJECTS - {"one", "each"} | _POSSESSIVES))
+    if set(after[1:]) & (_PERSON_OBJECTS - {"one", "each"} | _POSSESSIVES):
+        return True
+    moving = _lemmas(after[0]) & _motion_verbs() - _CONTACT_VERBS - _PHRASAL_CONTACT - {"run"}
+    obj = words[i + 2 : i + 8]
+    rider = obj[obj.index("on") + 1 :] if "on" in obj[:3] else []  # ("a lad on a moped": the moped's rider)
+    return not moving and (_names_road_user(obj) or _names_road_user(rider))  # (not "almost overtook him")
+
+
+@lru_cache(maxsize=1)
+def _motion_verbs() -> frozenset[str]:
+    """The first words of the lexicon's behaviours ("overtake", "pass", "follow"): a road user as the
+    object of one of these, hedged, is a move nearly made ("almost overtook a cyclist"), not a blow."""
+    return frozenset(p.split()[0] for ps in L.BEHAVIOUR_VERBS.values() for p in ps)

@@ -29,8 +29,10 @@ from vei_scenario.language.lemmas import lemmas
 #: velocity of 1 m/s", "1.5 m clearance"), how far one sees ("visibility reduced to 150 m"), or the
 #: closest approach, an outcome ("a minimum separation of 0.5 m"); a plain "separation of 120 m" is a gap.
 LATERAL_HEADS = frozenset(
-    {"lateral", "laterally", "sideways", "clearance", "visibility", "offset", "minimum", "closest"}
+    {"lateral", "laterally", "sideways", "clearance", "visibility", "offset", "minimum", "closest", "remaining"}
 )
+#: The sides of a vehicle a passing margin is measured off ("passed 1 m off our left side").
+_FLANKS = frozenset({"side", "flank", "wing", "mirror", "door", "doors", "nearside", "offside"})
 #: Nouns a test engineer calls the other road user by, whatever it is ("target speed: 15 km/h"): heading a
 #: number after a road user is named, they name that one.
 ROLE_NOUNS = frozenset({"target", "other vehicle"})
@@ -360,7 +362,15 @@ def lateral(tokens: list[str], i: int, used: int) -> bool:
         if tokens[k] in LATERAL_HEADS:
             return True
     after = tokens[i + used : i + used + 2]
-    return (bool(after) and after[0] in LATERAL_HEADS) or _subject_is_lateral(tokens, i)
+    return (
+        (bool(after) and after[0] in LATERAL_HEADS) or _subject_is_lateral(tokens, i) or _off_a_flank(tokens, i + used)
+    )
+
+
+def _off_a_flank(tokens: list[str], k: int) -> bool:
+    """Whether the words from ``k`` (after a length) say it off a vehicle's side ("1 m off the left side
+    of the van", "a foot off my wing mirror"): a passing margin across the road, not a gap ahead."""
+    return tokens[k : k + 1] == ["off"] and bool(_FLANKS & set(tokens[k + 1 : k + 5]))
 
 
 _COPULAS = frozenset({"is", "was", "are", "were", "'s"})

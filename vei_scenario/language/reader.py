@@ -48,7 +48,7 @@ from vei_scenario.language import settings as S
 from vei_scenario.language import vocabulary as V
 from vei_scenario.language.behaviours import BEHAVIOURS
 from vei_scenario.language.lemmas import lemmas as _lemmas
-from vei_scenario.language.manner import apply_manner, stated_manner
+from vei_scenario.language.manner import apply_manner, stated_manner, tight_cut_ins
 from vei_scenario.language.motion import (
     chains,
     destinations_not_origins,
@@ -821,6 +821,10 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
         ):
             i += len(key) - 1  # ("coming at 40 km/h": a speed, not at the ego)
             continue
+        if slot == "weather" and S.superlative(tokens[i], key):
+            ignored.append(tok)  # ("not the driver's finest moment", "the clearest view"): a comparison
+            i += len(key)
+            continue
         if slot in ("weather", "time", "density") and (
             S.negated(tokens, i) or (slot == "weather" and S.ended(tokens, i, len(key)))
         ):
@@ -837,6 +841,8 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             ignored.extend(key)
             i += len(key)
             continue
+        if slot == "time" and before in S.DEICTIC_DAYS:
+            attributive = False  # ("last night cyclist blew the red": when, a time said without a full stop)
         if slot in ("weather", "time", "density", "map") and attributive and _modifies_actor(tokens, i + len(key)):
             # "a parked ice cream van", "a night bus": a word of the setting naming what kind of road user
             j = next(k for k in range(i + len(key), len(tokens)) if _actor_at(tokens, k))
@@ -889,8 +895,9 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
         if key == ("stop",) and det:  # "the stop", "a stop": a bus stop, a place
             slot, value = "kerb", None
         elif tok == "crossing" and len(key) == 1 and det:  # "at the crossing": a junction, not someone crossing
-            # (unless a zebra or pelican crossing was named: then it is that one, beside the road)
-            slot, value = ("kerb", None) if S.foot_crossing_named_before(tokens, i) else ("map", "crossroad")
+            # (unless a zebra or pelican crossing was named, or a bend: then it is one beside the road)
+            beside = S.foot_crossing_named_before(tokens, i) or S.bend_named(tokens)
+            slot, value = ("kerb", None) if beside else ("map", "crossroad")
         elif slot in ("behaviour", "speed_word") and (said := " ".join(tokens[i : i + len(key)])) in V.SPEED_WORDS:
             if det and _actor_at(tokens, i + len(key)):  # "a slow truck": how fast it goes, not a slowing
                 slot, value = "speed_adjective", V.SPEED_WORDS[said]  # (nor the subject's speed)
@@ -2219,11 +2226,13 @@ def _read(text: str) -> Reading:
     r.ignored = list(dict.fromkeys(ignored))
     r.read_as = read_as
     cues = outcome_cues(said)
-    r.intent = decide(cues) or r.intent  # (the whole text's stated outcome first)
+    sudden = any(b[2] == "dangerous" for a in r.actors for b in a.behaviours)  # ("shot out", "suddenly")
+    r.intent = decide(cues, sudden)  # (the outcome reader alone decides contact: not "hit the horn", "hit the brakes")
     told = {w for cue in cues for w in cue.words.split()}  # (words the outcome was read from)
     r.ignored = [w for w in r.ignored if w not in told]
     if r.intent is None and not r.actors:
         r.intent = "safe"  # (nobody but the ego: nothing it could meet)
+    tight_cut_ins(r.actors, r.ego_speed_mps, r.intent)  # ("cut in 5 m in front of me at 60 mph": dangerous)
     Q.struck_at_rest(r.actors, r.ego_speed_mps, r.intent)  # ("I was waiting at the lights when a van hit me")
     r.lanes = stated_lanes(said) or r.lanes
     oncoming = any(s.relation == "oncoming" or any(b[0] == "wrong_way" for b in s.behaviours) for s in r.actors)
@@ -2252,7 +2261,11 @@ def _read(text: str) -> Reading:
         S.without_bounds(said), [v for k, w, v in said_as if k == "time"]
     )
     r.time = S.time_of_day([(w, v) for k, w, v in said_as if k == "time"], clock) or r.time
-    r.weather = S.sky_over_surface([(w, v) for k, w, v in said_as if k == "weather"]) or r.weather or S.sunny(said)
+    plain = [(w, v) for k, w, v in said_as if k == "weather"]
+    weather = S.weather_said([(m.words, m.value, m.prev) for _, ms in clauses for m in ms if m.slot == "weather"])
+    if weather != plain:  # (a season or a past weather set aside: "foggy winter mornings", "wet after rain")
+        r.weather = S.most_severe(weather)
+    r.weather = S.sky_over_surface(weather) or r.weather or S.sunny(said)
     r.density = S.density(said, r.density)
     if r.weather in (None, "rain") and stated_heavy_rain(said):
         r.weather = "heavy_rain"
@@ -2933,8 +2946,7 @@ def _global(r, m) -> None:
         r.density = r.density or m.value
     elif m.slot == "lanes":
         r.lanes = int(m.value)
-    elif m.slot == "intent":
-        r.intent = m.value if r.intent in (None, "safe") or m.value != "safe" else r.intent
+    # (an "intent" mention is read, so not an unused word, but the outcome reader decides the intent)
 
 
 def _apply(m, who, r, link, added) -> None:

@@ -309,10 +309,34 @@ def day_halves(said: str) -> list[tuple[str, str]]:
     return [(m.group(0), _HALF_CLOCK[m.group(1)]) for m in _DAY_HALF.finditer(said)]
 
 
+#: Seasons among the weather words: the weather they bring only where no other is said ("a winter
+#: morning": snow; "foggy winter mornings": fog).
+SEASON_WORDS = frozenset({"winter"})
+#: Words before a weather word that put it before the scene ("surface wet after rain", "since the
+#: snow"): it left the road wet or white, it is not the sky now.
+PAST_WEATHER = frozenset({"after", "since"})
+_SEVERITY = {"clear": 0, "cloudy": 1, "rain": 2, "fog": 2, "snow": 3, "heavy_rain": 3}
+
+
+def weather_said(mentions: list[tuple[str, str, str]]) -> list[tuple[str, str]]:
+    """The weather words of ``mentions`` (words, value, word before) as (words, value): one said of a
+    time before the scene ("after rain") counts as what it left on the road, a surface word; a season
+    only where no other weather word is said."""
+    said = [("wet" if prev in PAST_WEATHER else words, value) for words, value, prev in mentions]
+    other = [(w, v) for w, v in said if w not in SEASON_WORDS]
+    return other or said
+
+
+def most_severe(said: list[tuple[str, str]]) -> str | None:
+    """The most severe weather of ``said`` (words, value), of equals the first."""
+    values = [v for _, v in said]
+    return max(values, key=lambda v: (_SEVERITY.get(v, 0), -values.index(v))) if values else None
+
+
 def sky_over_surface(said: list[tuple[str, str]]) -> str | None:
     """The weather of the sky words among the weather words ``said`` as (words, value), when surface
     words ("wet track") are said with them (the most severe sky word, of equals the first); else None."""
-    severity = {"clear": 0, "cloudy": 1, "rain": 2, "fog": 2, "snow": 3, "heavy_rain": 3}
+    severity = _SEVERITY
     sky = [value for words, value in said if words not in SURFACE_WORDS]
     if not sky or len(sky) == len(said):
         return None
@@ -379,11 +403,15 @@ _TRAFFIC_NOTE = re.compile(
     r"\btraffic(?: (moderate|heavy|busy|dense|sparse|quiet)"
     r"| ?[:=] ?(light|moderate|heavy|busy|dense|sparse|quiet|none))\b"
 )
-#: Traffic said of the road ("the motorway was heavy", "traffic was moderate").
+#: Traffic said of the road ("the motorway was heavy", "traffic was moderate", "traffic's on heavy"), or
+#: the traffic said to be bad ("traffic was too much", "the traffic was mad"): congestion, heavy.
 _SAID_OF_ROAD = re.compile(
     r"\b(?:traffic(?: volumes?| levels?| flows?)?|motorway|road|roads|street|streets|highway|circulation)"
-    r" (?:is|was|were|are|being|looked|seemed) (?:very |quite |fairly |pretty |"
-    r"really )?(light|moderate|heavy|busy|quiet|dense|sparse|empty)\b"
+    r" (?:is|was|were|are|being|looked|seemed|'s)(?: on| set to| at)? (?:very |quite |fairly |pretty |so |"
+    r"really |absolutely |just )?(light|moderate|heavy|busy|quiet|dense|sparse|empty)\b"
+    r"|\btraffic (?:is|was|were|are|being|looked|seemed|'s) (?:very |so |really |absolutely |just )?"
+    r"(too much|bad|terrible|horrendous|awful|mad|crazy|insane|manic|chaos|chaotic|gridlocked|jammed|rammed|"
+    r"murder|nuts)\b"
 )
 #: A degree of traffic before up to two words saying which traffic ("heavy morning traffic", "moderate bg
 #: traffic", "zero ambient traffic", "slow queuing traffic"): the degree is said of the traffic all the
@@ -402,7 +430,10 @@ _DEGREE_OF_VOLUME = re.compile(
 _DENSITY_WORDS = {"light": "light", "sparse": "light", "quiet": "light", "moderate": "moderate", "heavy": "heavy",
                   "busy": "heavy", "dense": "heavy", "empty": "none", "none": "none", "zero": "none",
                   "slow": "heavy", "queuing": "heavy", "queueing": "heavy", "crawling": "heavy",
-                  "stationary": "heavy", "low": "light"}  # fmt: skip
+                  "stationary": "heavy", "low": "light", "too much": "heavy", "bad": "heavy", "terrible": "heavy",
+                  "horrendous": "heavy", "awful": "heavy", "mad": "heavy", "crazy": "heavy", "insane": "heavy",
+                  "manic": "heavy", "chaos": "heavy", "chaotic": "heavy", "gridlocked": "heavy", "jammed": "heavy",
+                  "rammed": "heavy", "murder": "heavy", "nuts": "heavy"}  # fmt: skip
 
 
 def density(said: str, read: str | None = None) -> str | None:
@@ -423,7 +454,7 @@ def density(said: str, read: str | None = None) -> str | None:
         return _DENSITY_WORDS[note.group(1) or note.group(2)]
     m = _SAID_OF_ROAD.search(said_of_traffic)
     if m is not None:
-        return _DENSITY_WORDS[m.group(1)]
+        return _DENSITY_WORDS[m.group(1) or m.group(2)]  # (of the road; or of the traffic, as congestion)
     m = _DEGREE_OF_TRAFFIC.search(said_of_traffic)
     if m is not None and (m.group(2) or read is None):  # (a degree right before "traffic": the lexicon's first)
         return _DENSITY_WORDS[m.group(1)]
@@ -615,6 +646,30 @@ def foot_crossing_named_before(tokens: list[str], i: int) -> bool:
     """Whether a crossing for people on foot is named before token ``i``: then "the crossing" at ``i``
     is that one, a known mention (the article says so), and not a junction."""
     return any(t in _FOOT_CROSSINGS for t in tokens[:i])
+
+
+#: Words before a part of the day that make it a time said of the story ("last night", "this morning",
+#: "Friday evening"), never a modifier of a noun after it ("a night bus").
+DEICTIC_DAYS = frozenset(
+    ("last", "this", "yesterday", "tomorrow", "that", "one", "every", "each", "monday", "tuesday", "wednesday",
+     "thursday", "friday", "saturday", "sunday")
+)  # fmt: skip
+
+
+def superlative(token: str, key: tuple[str, ...]) -> bool:
+    """Whether ``token`` is the superlative of the one-word weather entry ``key`` ("finest" for
+    "fine", "clearest" for "clear"): it ranks something ("his finest moment"), it reports no weather."""
+    return len(key) == 1 and token != key[0] and token.endswith("est")
+
+
+#: Words of a bend in the road; not "corner", which a junction has too.
+_BEND_WORDS = frozenset(w for w in L.MAPS["curve"] if " " not in w and w != "corner")
+
+
+def bend_named(tokens: list[str]) -> bool:
+    """Whether the text names a bend ("on the bend", "a bendy lane", "a hairpin"): then "the crossing"
+    is a crossing for people on foot on that bend, not a junction."""
+    return any(t in _BEND_WORDS for t in tokens)
 
 
 #: "lane 3", "lane two" (not "lane 2 of 3", which counts the lanes itself): a lane numbered from the kerb.

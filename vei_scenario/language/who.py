@@ -216,15 +216,23 @@ SIGNAL_MODIFIERS = frozenset(
 )
 
 
+#: Determiners that make "lights" a road user's lamps, which one has or lacks ("a cyclist with no
+#: lights", "get some lights", "his lights were off"); a junction's are "the lights", "at lights".
+LAMP_DETERMINERS = frozenset({"no", "without", "some", "any", "his", "her", "its", "their", "your"})
+
+
 def lamps_not_signals(tokens: list[str], content_word: Callable[[str], bool]) -> list[str]:
-    """``tokens`` with "lights" after a content word other than a signal's modifier as "lamps" (a word
-    that names no junction). ``content_word(word)`` whether a word is no function word."""
-    return [
-        "lamps"
-        if tok == "lights" and i > 0 and tokens[i - 1] not in SIGNAL_MODIFIERS and content_word(tokens[i - 1])
-        else tok
-        for i, tok in enumerate(tokens)
-    ]
+    """``tokens`` with "lights" after a content word other than a signal's modifier, or after a
+    determiner of a road user's lamps, as "lamps" (a word that names no junction). ``content_word(word)``
+    whether a word is no function word."""
+    return ["lamps" if tok == "lights" and i > 0 and _lamps_after(tokens[i - 1], content_word) else tok
+            for i, tok in enumerate(tokens)]  # fmt: skip
+
+
+def _lamps_after(prev: str, content_word: Callable[[str], bool]) -> bool:
+    """Whether "lights" after ``prev`` are lamps: after a determiner of a road user's lamps, or a
+    content word that is not a signal's modifier ("flashing lights", "tail lights")."""
+    return prev in LAMP_DETERMINERS or (prev not in SIGNAL_MODIFIERS and content_word(prev))
 
 
 #: Makes: a word after one of them is its model or the vehicle's noun ("Ford Transit", "Vauxhall Astra").
