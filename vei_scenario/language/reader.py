@@ -35,6 +35,7 @@ from vei_scenario.language import (
     experiencer,
     generic_ego,
     junctions,
+    lane_moves,
     motion,
     narrator_vehicle,
     protagonist,
@@ -864,7 +865,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
         elif slot in ("behaviour", "speed_word") and (said := " ".join(tokens[i : i + len(key)])) in V.SPEED_WORDS:
             if det and _actor_at(tokens, i + len(key)):  # "a slow truck": how fast it goes, not a slowing
                 slot, value = "speed_adjective", V.SPEED_WORDS[said]  # (nor the subject's speed)
-            elif slot == "behaviour" and _after_copula(tokens, i):
+            elif slot == "behaviour" and (_after_copula(tokens, i) or lane_moves.slow_as_a_pace(tokens, i)):
                 slot, value = "speed_word", V.SPEED_WORDS[said]  # "the truck is slow"
         if slot == "behaviour" and whose_act.not_meant(tokens, i):
             ignored.append(" ".join(tokens[i : i + len(key)]))  # ("no intention of crossing": no act)
@@ -1276,6 +1277,7 @@ def _read(text: str) -> Reading:
     said = " ".join(tokens)  # (the whole text as the reader reads it, for what is stated of it as a whole)
     clauses = out_to_overtake(participle_of_state(give_the_ego_the_way(into_the_ego_lane(clauses, scanned), scanned)))
     clauses = scenery.standing_there(chains(clauses, scanned), scanned)  # ("there's a car stopped dead")
+    clauses = lane_moves.braking_after_a_cut_in(clauses, scanned)  # ("cut in and braked": how it settles)
     clauses = junctions.priority(junctions.crossings(clauses, scanned), scanned)
     clauses, ego_follows = _ego_following(clauses)
     r = Reading()
@@ -1754,6 +1756,7 @@ def _read(text: str) -> Reading:
                     and isinstance(clause_subject, _Actor)
                     and clause_subject.behaviours
                     and clause_subject.speed_mps is not None
+                    and clause_subject.speed_mps >= 0  # (a speed said in figures; "going slow" is only a pace)
                 ):  # "the lorry at 56 mph ... brakes (at 3 m/s²) to 30 mph": the speed it slows to, not a stop
                     a = clause_subject
                     name, cfg, crit, lk = a.behaviours[-1]
