@@ -66,3 +66,61 @@ def test_slow_said_as_a_pace_is_no_slowing(text):
 )
 def test_slow_as_a_verb_is_a_slowing(text):
     assert _behaviours(text) == [["change_speed"]]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A boy on a bike rode the wrong way up the street and squeezed past my car.",
+        "Two girls on scooters came the wrong way round the roundabout and went past either side of us.",
+        "A moped came the wrong way down the one-way street and passed me with inches to spare.",
+    ],
+)
+def test_the_wrong_way_then_past_the_ego_is_coming_head_on(text):
+    assert all(b == ["wrong_way"] for b in _behaviours(text))
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A moped came up behind me and squeezed past on the wrong side.",
+        "A moped overtook me on the wrong side of the road.",
+    ],
+)
+def test_passing_the_ego_from_behind_stays_an_overtake(text):
+    assert _behaviours(text) == [["overtake"]]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A lorry was overtaking a tractor and came onto our side, head-on towards us.",
+        "A minibus overtook the cyclist and came straight at me.",
+        "A bus passed a parked lorry and was coming straight at us.",
+    ],
+)
+def test_a_place_after_a_second_verb_is_the_subjects_not_the_objects(text):
+    reading = read(text)
+    assert reading.actors[0].relation == "oncoming"
+    assert [b[0] for b in reading.actors[0].behaviours] == ["wrong_way"]
+
+
+def test_what_an_oncoming_road_user_overtakes_comes_towards_the_ego_too():
+    reading = read("An oncoming van overtook a jogger.")
+    assert [(a.relation, a.facing) for a in reading.actors] == [("oncoming", None), ("ahead", "against")]
+
+
+def test_a_place_said_with_a_new_subject_after_and_is_that_ones():
+    reading = read("I overtook a cyclist and a car came towards me.")
+    assert [(a.kind, a.relation) for a in reading.actors] == [("bicycle", "ahead"), ("car", "oncoming")]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Ego 90 km/h, lead truck 30 m ahead does a lane chg to the left around a stopped car in the lane.",
+        "ego 80 km/h; lead van 25 m ahead -> lane chng L round a broken-down car in lane",
+    ],
+)
+def test_lane_chg_shorthand_is_a_lane_change(text):
+    assert _behaviours(text)[0] == ["cut_out"]

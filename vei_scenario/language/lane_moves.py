@@ -102,3 +102,40 @@ def slow_as_a_pace(tokens: list[str], i: int) -> bool:
     if intensified:
         return True
     return j >= 0 and tokens[j] != "to" and bool(set(lemmas(tokens[j]).get("VERB", ())) & _GOING)
+
+
+#: Mentions that may stand between a verb and the place said after it ("came fully on our side, head-on").
+_AFTER_A_VERB = frozenset(("relation", "punct", "criticality", "toward", "map", "speed"))
+#: Mentions that may stand between a verb's object and the "and" that joins a second verb to it.
+_JOINING = frozenset(("and", "then", "and then"))
+_VERB_SLOTS = frozenset(("behaviour", "unknown_verb", "ego_verb", "turn"))
+#: Words said of a verb's object before its noun ("a parked lorry", "two slow tractors").
+_BEFORE_ITS_NOUN = frozenset(("stationary", "count", "member", "speed_adjective", "speed_word"))
+
+
+def _a_verb_of_its_own(m) -> bool:
+    """Whether place mention ``m`` opens with its verb ("came straight at me", "heading for us")."""
+    first = m.words.split()[0]
+    return m.slot == "relation" and "VERB" in lemmas(first) and first.endswith(("ed", "ing", "s", "came", "ran"))
+
+
+def after_a_second_verb(mentions: list, k: int) -> bool:
+    """Whether the place ``mentions[k]`` is said after a second verb joined by "and" or "then" to a
+    first verb with an object ("was overtaking a truck and came onto our side, head-on towards us"):
+    the second verb has the first one's subject, so the place is the subject's, not the object's."""
+    j = k if _a_verb_of_its_own(mentions[k]) else k - 1
+    while j >= 0 and mentions[j].slot in _AFTER_A_VERB and j < k:
+        j -= 1
+    if j < 1 or not (mentions[j].slot in _VERB_SLOTS or _a_verb_of_its_own(mentions[j])):
+        return False
+    j -= 1
+    joined = False
+    while j >= 0 and mentions[j].slot in ("conj", "link", "punct"):
+        joined = joined or mentions[j].words in _JOINING
+        j -= 1
+    if not joined or j < 1 or mentions[j].slot != "actor" or mentions[j].value == "ego":
+        return False
+    j -= 1
+    while j > 0 and mentions[j].slot in _BEFORE_ITS_NOUN:
+        j -= 1
+    return mentions[j].slot in _VERB_SLOTS  # (that one the first verb's object)

@@ -1726,6 +1726,12 @@ def _read(text: str) -> Reading:
                 pending.append(replace(m, value=_SEEN_FROM_OBJECT[m.value]))
             else:
                 who = _nearest(named, m)
+                if (
+                    m.slot == "relation"
+                    and isinstance(clause_subject, _Actor)
+                    and lane_moves.after_a_second_verb(mentions, k)
+                ):
+                    who = clause_subject  # ("overtook a truck and came head-on at us": the overtaker's)
                 gap_to = _gap_to(mentions, k) if who == "ego" and m.slot == "distance" else None
                 if who == "ego" and m.slot == "distance" and clause_subject == "ego" and _stop_before(prev):
                     ignored.append(m.words)  # ("I stopped 2 m short of it": how the ego's stop went, no gap)
@@ -2068,9 +2074,12 @@ def _read(text: str) -> Reading:
         r.actors.append(spec)
     for a, spec in zip(actors, r.actors):  # what an oncoming car overtakes comes towards the ego too
         k = next((k for k, x in enumerate(actors) if x is a.object_of), None)
-        if spec.relation is None and k is not None:
+        if (spec.relation is None or (a.relation is None and not a.said)) and k is not None:
             other = r.actors[k]
-            if other.relation in ("oncoming", "junction_opposite"):
+            along = [b[0] for b in spec.behaviours[:1]] == ["along_road"]
+            if other.relation in ("oncoming", "junction_opposite") and along:
+                spec.facing = "against"  # (a walker or rider along the road, ahead: coming the other way)
+            elif other.relation in ("oncoming", "junction_opposite"):
                 spec.relation = other.relation
     if ego_follows and actors and r.ego_speed_mps is None and actors[0].speed_mps:
         r.ego_speed_mps = actors[0].speed_mps  # "Following a truck at 60 km/h": both at that speed
