@@ -124,3 +124,19 @@ def test_a_place_said_with_a_new_subject_after_and_is_that_ones():
 )
 def test_lane_chg_shorthand_is_a_lane_change(text):
     assert _behaviours(text)[0] == ["cut_out"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A pickup behind me tried to squeeze past on the narrow bridge.",
+        "The van behind me decided to nip past at the lights.",
+    ],
+)
+def test_an_act_tried_in_the_infinitive_is_that_act(text):
+    assert _behaviours(text) == [["overtake"]]
+
+
+def test_an_infinitive_of_purpose_is_not_a_second_act():
+    text = "A moped in the cycle lane on my right swerves left across my lane to turn into a side road on the left."
+    assert _behaviours(text) == [["forced_turn"]]

@@ -715,7 +715,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             and tok not in FUNCTION_WORDS
             and i + 1 < len(tokens)
             and not to_a_stop
-            and _verb_before(tok, tokens[i + 1])
+            and _verb_before(tok, tokens[i + 1], tuple(tokens[max(i - 2, 0) : i]))
             and not (tokens[i + 1] == "into" and into_road_user(tokens, i + 1))  # ("banged into my car": a hit)
         ):
             # a verb the lexicon lacks, with where it goes ("swung into my lane", "bolted across the road"):
@@ -1043,13 +1043,21 @@ _MOTION_PARTICLES = frozenset(
 )
 
 
-def _verb_before(word: str, after: str) -> bool:
+#: Verbs (lemmas) whose "to" + infinitive is the act itself, tried or meant ("tried to squeeze past").
+_CATENATIVES = frozenset(("try", "attempt", "want", "decide", "manage", "start", "begin", "mean", "choose"))
+
+
+def _verb_before(word: str, after: str, before: tuple[str, ...] = ()) -> bool:
     """Whether ``word`` reads as a verb of motion here: a verb (by lemminflect) that is not also a noun
-    or adjective, or one that is but is followed by where it goes ("changing to our lane")."""
+    or adjective, or one that is but is followed by where it goes ("changing to our lane"), inflected
+    or in the infinitive of an act tried or meant (``before``, the two words before it: "tried to
+    squeeze past"; not one of purpose: "swings across to turn into a side street")."""
     pos = _pos(word)
     if "VERB" not in pos:
         return False
     moved = word.endswith(("ing", "ed", "s")) or _past(word)  # ("shot into the road": an irregular past)
+    tried = len(before) == 2 and before[1] == "to" and bool(set(_lemmas(before[0]).get("VERB", ())) & _CATENATIVES)
+    moved = moved or (tried and word in _lemmas(word).get("VERB", ()))
     return not pos & {"NOUN", "ADJ", "PROPN"} or (after in _MOTION_PARTICLES and moved)
 
 
