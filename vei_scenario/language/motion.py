@@ -92,9 +92,11 @@ def comes_head_on(names: list[str], wrong_way: bool, said: set, passes_another: 
     wherever the ego is (a roundabout, a junction); a turn is a path of its own, and so is an
     overtake of another road user (``passes_another``). Going past the ego, or "passing each other",
     is how a road user coming head-on meets it ("squeezed past me", "passed 1 m off our left side"):
-    no overtake, as it never drove the ego's way."""
+    no overtake, as it never drove the ego's way; so one said to come the wrong way that only goes
+    past the ego ("came the wrong way down the lane and squeezed past me") is coming head-on too."""
     against = wrong_way or "oncoming" in said
-    placed = "in_ego_lane" in said or (wrong_way and "oncoming" in said)
+    meets = wrong_way and not passes_another and "overtake" in names  # (the wrong way, then past the ego)
+    placed = "in_ego_lane" in said or (wrong_way and "oncoming" in said) or meets
     moves = _HEAD_ON_MOVES if passes_another else _HEAD_ON_MOVES | {"overtake"}
     return against and placed and bool(names) and set(names) <= moves
 

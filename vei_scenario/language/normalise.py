@@ -233,6 +233,7 @@ _SHORTHAND = [
     (re.compile(r"\bvehs\b\.?"), "vehicles"),
     (re.compile(r"\bveh\b\.?"), "vehicle"),
     (re.compile(r"\btrk\b\.?"), "truck"),
+    (re.compile(r"\b(?:chg|chng|chnge)\b\.?"), "change"),  # ("lane chg L", "spd chg")
     # a fleet call sign written as a code ("VAN-112", "TRK-22"): the noun and its number, as "Van 07" is
     (re.compile(r"\b(van|bus|truck|trk|car|coach|unit|cab|taxi)-(\d{1,4})\b(?!\s*(?:m|km|mph|s)\b)"), r"\1 \2"),
     (re.compile(r"\bpeds?\b"), "pedestrian"),

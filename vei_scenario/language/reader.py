@@ -35,6 +35,7 @@ from vei_scenario.language import (
     experiencer,
     generic_ego,
     junctions,
+    lane_moves,
     motion,
     narrator_vehicle,
     protagonist,
@@ -741,7 +742,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             and tok not in FUNCTION_WORDS
             and i + 1 < len(tokens)
             and not to_a_stop
-            and _verb_before(tok, tokens[i + 1])
+            and _verb_before(tok, tokens[i + 1], tuple(tokens[max(i - 2, 0) : i]))
             and not (tokens[i + 1] == "into" and into_road_user(tokens, i + 1))  # ("banged into my car": a hit)
             and not set(_lemmas(tok).get("VERB", ())) & _CARRYING  # ("taken to A&E", "towed away")
         ):
@@ -901,7 +902,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
         elif slot in ("behaviour", "speed_word") and (said := " ".join(tokens[i : i + len(key)])) in V.SPEED_WORDS:
             if det and _actor_at(tokens, i + len(key)):  # "a slow truck": how fast it goes, not a slowing
                 slot, value = "speed_adjective", V.SPEED_WORDS[said]  # (nor the subject's speed)
-            elif slot == "behaviour" and _after_copula(tokens, i):
+            elif slot == "behaviour" and (_after_copula(tokens, i) or lane_moves.slow_as_a_pace(tokens, i)):
                 slot, value = "speed_word", V.SPEED_WORDS[said]  # "the truck is slow"
         if slot == "behaviour" and whose_act.not_meant(tokens, i):
             ignored.append(" ".join(tokens[i : i + len(key)]))  # ("no intention of crossing": no act)
@@ -1127,13 +1128,21 @@ _CARRYING = frozenset((
 ))  # fmt: skip
 
 
-def _verb_before(word: str, after: str) -> bool:
+#: Verbs (lemmas) whose "to" + infinitive is the act itself, tried or meant ("tried to squeeze past").
+_CATENATIVES = frozenset(("try", "attempt", "want", "decide", "manage", "start", "begin", "mean", "choose"))
+
+
+def _verb_before(word: str, after: str, before: tuple[str, ...] = ()) -> bool:
     """Whether ``word`` reads as a verb of motion here: a verb (by lemminflect) that is not also a noun
-    or adjective, or one that is but is followed by where it goes ("changing to our lane")."""
+    or adjective, or one that is but is followed by where it goes ("changing to our lane"), inflected
+    or in the infinitive of an act tried or meant (``before``, the two words before it: "tried to
+    squeeze past"; not one of purpose: "swings across to turn into a side street")."""
     pos = _pos(word)
     if "VERB" not in pos:
         return False
     moved = word.endswith(("ing", "ed", "s")) or _past(word)  # ("shot into the road": an irregular past)
+    tried = len(before) == 2 and before[1] == "to" and bool(set(_lemmas(before[0]).get("VERB", ())) & _CATENATIVES)
+    moved = moved or (tried and word in _lemmas(word).get("VERB", ()))
     return not pos & {"NOUN", "ADJ", "PROPN"} or (after in _MOTION_PARTICLES and moved)
 
 
@@ -1386,6 +1395,7 @@ def _read(text: str) -> Reading:
     said = " ".join(tokens)  # (the whole text as the reader reads it, for what is stated of it as a whole)
     clauses = out_to_overtake(participle_of_state(give_the_ego_the_way(into_the_ego_lane(clauses, scanned), scanned)))
     clauses = scenery.standing_there(chains(clauses, scanned), scanned)  # ("there's a car stopped dead")
+    clauses = lane_moves.braking_after_a_cut_in(clauses, scanned)  # ("cut in and braked": how it settles)
     clauses = junctions.priority(junctions.crossings(clauses, scanned), scanned)
     clauses, ego_follows = _ego_following(clauses)
     r = Reading()
@@ -1849,6 +1859,12 @@ def _read(text: str) -> Reading:
                 pending.append(replace(m, value=_SEEN_FROM_OBJECT[m.value]))
             else:
                 who = _nearest(named, m)
+                if (
+                    m.slot == "relation"
+                    and isinstance(clause_subject, _Actor)
+                    and lane_moves.after_a_second_verb(mentions, k)
+                ):
+                    who = clause_subject  # ("overtook a truck and came head-on at us": the overtaker's)
                 gap_to = _gap_to(mentions, k) if who == "ego" and m.slot == "distance" else None
                 if who == "ego" and m.slot == "distance" and clause_subject == "ego" and _stop_before(prev):
                     ignored.append(m.words)  # ("I stopped 2 m short of it": how the ego's stop went, no gap)
@@ -1884,6 +1900,7 @@ def _read(text: str) -> Reading:
                     and isinstance(clause_subject, _Actor)
                     and clause_subject.behaviours
                     and clause_subject.speed_mps is not None
+                    and clause_subject.speed_mps >= 0  # (a speed said in figures; "going slow" is only a pace)
                 ):  # "the lorry at 56 mph ... brakes (at 3 m/s²) to 30 mph": the speed it slows to, not a stop
                     a = clause_subject
                     name, cfg, crit, lk = a.behaviours[-1]
@@ -2204,9 +2221,12 @@ def _read(text: str) -> Reading:
         r.actors.append(spec)
     for a, spec in zip(actors, r.actors):  # what an oncoming car overtakes comes towards the ego too
         k = next((k for k, x in enumerate(actors) if x is a.object_of), None)
-        if spec.relation is None and k is not None:
+        if (spec.relation is None or (a.relation is None and not a.said)) and k is not None:
             other = r.actors[k]
-            if other.relation in ("oncoming", "junction_opposite"):
+            along = [b[0] for b in spec.behaviours[:1]] == ["along_road"]
+            if other.relation in ("oncoming", "junction_opposite") and along:
+                spec.facing = "against"  # (a walker or rider along the road, ahead: coming the other way)
+            elif other.relation in ("oncoming", "junction_opposite"):
                 spec.relation = other.relation
     if ego_follows and actors and r.ego_speed_mps is None and actors[0].speed_mps:
         r.ego_speed_mps = actors[0].speed_mps  # "Following a truck at 60 km/h": both at that speed

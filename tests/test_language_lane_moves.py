@@ -1,0 +1,142 @@
+"""Road users on the ego's road (:mod:`vei_scenario.language.lane_moves`): a plain braking after a
+cut-in is how the cut-in settles, a hard one a sudden stop; "slow" said as a pace is no slowing.
+Wordings written for each construction, none taken from a corpus."""
+
+from __future__ import annotations
+
+import pytest
+
+from vei_scenario.language.reader import read
+
+
+def _behaviours(text: str) -> list[list[str]]:
+    return [[b[0] for b in a.behaviours] for a in read(text).actors]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A taxi cut in front of me and braked.",
+        "At 70 km/h on the motorway, a hatchback from the outside lane dived into the space ahead of us and braked.",
+        "A pickup cut in with barely 5 m to spare, then braked.",
+        "Ego at 90 km/h in lane 1; a coupe from lane 2 cuts in aggressively and brakes.",
+    ],
+)
+def test_a_plain_braking_after_a_cut_in_is_how_it_settles(text):
+    assert _behaviours(text) == [["cut_in"]]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A taxi cut in front of me and braked sharply.",
+        "A taxi cut in front of me and then braked hard.",
+        "A taxi cut in front of me and slammed on the brakes.",
+        "A taxi cut in front of me and braked to a stop.",
+        "A taxi cut in front of me, then braked suddenly.",
+    ],
+)
+def test_a_hard_braking_after_a_cut_in_is_a_sudden_stop(text):
+    assert _behaviours(text) == [["cut_in", "sudden_stop"]]
+
+
+def test_braking_by_someone_else_after_a_cut_in_is_not_the_cut_in():
+    assert _behaviours("A taxi cut in. The bus ahead of me braked.")[1] == ["sudden_stop"]
+    assert _behaviours("The lorry in front of me braked.") == [["sudden_stop"]]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I came up behind a tractor ahead of me going very slow.",
+        "There was a moped ahead of me in my lane, really slow.",
+        "The bus in front of me was driving slow.",
+    ],
+)
+def test_slow_said_as_a_pace_is_no_slowing(text):
+    assert "change_speed" not in _behaviours(text)[0]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "The van ahead of me began to slow.",
+        "The van ahead of me had to slow for a dog.",
+    ],
+)
+def test_slow_as_a_verb_is_a_slowing(text):
+    assert _behaviours(text) == [["change_speed"]]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A boy on a bike rode the wrong way up the street and squeezed past my car.",
+        "Two girls on scooters came the wrong way round the roundabout and went past either side of us.",
+        "A moped came the wrong way down the one-way street and passed me with inches to spare.",
+    ],
+)
+def test_the_wrong_way_then_past_the_ego_is_coming_head_on(text):
+    assert all(b == ["wrong_way"] for b in _behaviours(text))
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A moped came up behind me and squeezed past on the wrong side.",
+        "A moped overtook me on the wrong side of the road.",
+    ],
+)
+def test_passing_the_ego_from_behind_stays_an_overtake(text):
+    assert _behaviours(text) == [["overtake"]]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A lorry was overtaking a tractor and came onto our side, head-on towards us.",
+        "A minibus overtook the cyclist and came straight at me.",
+        "A bus passed a parked lorry and was coming straight at us.",
+    ],
+)
+def test_a_place_after_a_second_verb_is_the_subjects_not_the_objects(text):
+    reading = read(text)
+    assert reading.actors[0].relation == "oncoming"
+    assert [b[0] for b in reading.actors[0].behaviours] == ["wrong_way"]
+
+
+def test_what_an_oncoming_road_user_overtakes_comes_towards_the_ego_too():
+    reading = read("An oncoming van overtook a jogger.")
+    assert [(a.relation, a.facing) for a in reading.actors] == [("oncoming", None), ("ahead", "against")]
+
+
+def test_a_place_said_with_a_new_subject_after_and_is_that_ones():
+    reading = read("I overtook a cyclist and a car came towards me.")
+    assert [(a.kind, a.relation) for a in reading.actors] == [("bicycle", "ahead"), ("car", "oncoming")]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Ego 90 km/h, lead truck 30 m ahead does a lane chg to the left around a stopped car in the lane.",
+        "ego 80 km/h; lead van 25 m ahead -> lane chng L round a broken-down car in lane",
+    ],
+)
+def test_lane_chg_shorthand_is_a_lane_change(text):
+    assert _behaviours(text)[0] == ["cut_out"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A pickup behind me tried to squeeze past on the narrow bridge.",
+        "The van behind me decided to nip past at the lights.",
+    ],
+)
+def test_an_act_tried_in_the_infinitive_is_that_act(text):
+    assert _behaviours(text) == [["overtake"]]
+
+
+def test_an_infinitive_of_purpose_is_not_a_second_act():
+    text = "A moped in the cycle lane on my right swerves left across my lane to turn into a side road on the left."
+    assert _behaviours(text) == [["forced_turn"]]

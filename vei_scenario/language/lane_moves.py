@@ -1,0 +1,141 @@
+"""What a road user on the ego's road does after a move into its lane, read as a test engineer means it.
+
+A cut-in is a move into the ego's lane that ends close in front of it, slower than the ego: the road
+user that "cut in and braked" (or "cut in, then braked") is settling in front, and the braking is how
+its cut-in ends, not a second manoeuvre. Only a braking said in a hard or sudden manner ("braked
+sharply", "hard brakes", "slammed on", "braked to a stop") is the sudden stop that follows a cut-in
+in the brake-check scenario; the plain verb is not.
+
+"Slow" said as how a road user goes ("a truck ahead going very slow", "a cyclist in my lane, really
+slow", "riding slow") is its pace, as "the truck is slow" is: it keeps its lane at a low speed, no
+change of speed. Only the verb ("slows", "began to slow", "slow down") is a slowing.
+"""
+
+from __future__ import annotations
+
+from vei_scenario.language.lemmas import lemmas
+from vei_scenario.language.motion import _said_hard
+
+#: The bare verb of braking, in each form (no manner, no object: "braked", "brakes").
+_PLAIN_BRAKE = frozenset(("brake", "brakes", "braked", "braking"))
+#: Mentions that may stand between a cut-in and the braking said with it by the same road user
+#: ("cut in front of me and then braked", "cut into the gap with 8 m to spare, then braked").
+_BETWEEN = frozenset(
+    ("conj", "punct", "link", "relation", "distance", "gap", "criticality", "relative", "unknown_verb")
+)
+#: Links that carry on the road user of the clause before ("..., then braked").
+_GOING_ON = frozenset(("then", "and", "and then"))
+
+
+def _plain_braking(m, tokens: list[str], nxt) -> bool:
+    """Whether mention ``m`` is the bare verb of braking, said in no hard manner and not to a stop
+    (``nxt``: the mention after it)."""
+    if m.slot != "behaviour" or m.value[0] != "sudden_stop" or m.words not in _PLAIN_BRAKE:
+        return False
+    to_a_stop = nxt is not None and nxt.slot == "to_stop"
+    return not to_a_stop and not _said_hard(tokens, m) and tokens[m.end : m.end + 1] != ["to"]
+
+
+def _cut_in_before(mentions: list, k: int) -> bool:
+    """Whether the verb before ``mentions[k]`` in its clause is a cut-in by the same road user: only
+    places, gaps, links and the ego named as its object stand between (no new subject, no other
+    verb)."""
+    for j in range(k - 1, -1, -1):
+        m = mentions[j]
+        if m.slot == "behaviour":
+            return m.value[0] == "cut_in"
+        if m.slot in ("actor", "pronoun"):
+            if m.value != "ego" or j == 0 or mentions[j - 1].slot not in ("relation", "behaviour"):
+                return False  # (a new subject: "cut in, and I braked"; the ego as object only right after)
+            continue
+        if m.slot not in _BETWEEN:
+            return False
+    return False
+
+
+def _carries_on(mentions: list, k: int) -> bool:
+    """Whether ``mentions[k]`` opens its clause with no subject of its own, after "then" or "and"
+    that carry on the road user of the clause before ("..., then braked")."""
+    opening = mentions[:k]
+    return (
+        bool(opening)
+        and all(m.slot in ("link", "conj", "punct") for m in opening)
+        and any(m.words in _GOING_ON for m in opening)
+    )
+
+
+def braking_after_a_cut_in(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` without a plain braking said right after a cut-in by the same road user, in its
+    clause or opening the next with "then" ("cut in and braked", "cut in front of us, then braked"):
+    the braking is how the cut-in settles in front of the ego. A hard one stays a sudden stop."""
+    out: list = []
+    last_cut_in = False  # (the clause before ended on a cut-in)
+    for link, mentions in clauses:
+        kept: list = []
+        for k, m in enumerate(mentions):
+            nxt = mentions[k + 1] if k + 1 < len(mentions) else None
+            if _plain_braking(m, tokens, nxt):
+                if _cut_in_before(mentions, k) or (last_cut_in and _carries_on(mentions, k)):
+                    continue
+            kept.append(m)
+        behaviours = [m for m in kept if m.slot == "behaviour"]
+        last_cut_in = bool(behaviours) and behaviours[-1].value[0] == "cut_in"
+        out.append((link, kept))
+    return out
+
+
+#: Words that only make the adjective after them stronger ("very slow", "dead slow").
+_INTENSIFIERS = frozenset(("very", "quite", "rather", "really", "extremely", "so", "too", "pretty", "super", "dead"))
+#: Verbs (lemmas) of going along, after which "slow" says how ("going slow", "drove slow").
+_GOING = frozenset(("go", "drive", "ride", "move", "travel", "cycle", "run", "come", "crawl", "trundle", "roll"))
+
+
+def slow_as_a_pace(tokens: list[str], i: int) -> bool:
+    """Whether the speed word at ``tokens[i]`` ("slow") is said as a pace, an adjective or adverb:
+    after an intensifier ("very slow", "really slow"), or after a verb of going, past intensifiers
+    ("going slow", "riding really slow"); not the verb ("began to slow", "they slow")."""
+    j = i - 1
+    intensified = False
+    while j >= 0 and tokens[j] in _INTENSIFIERS:
+        intensified = True
+        j -= 1
+    if intensified:
+        return True
+    return j >= 0 and tokens[j] != "to" and bool(set(lemmas(tokens[j]).get("VERB", ())) & _GOING)
+
+
+#: Mentions that may stand between a verb and the place said after it ("came fully on our side, head-on").
+_AFTER_A_VERB = frozenset(("relation", "punct", "criticality", "toward", "map", "speed"))
+#: Mentions that may stand between a verb's object and the "and" that joins a second verb to it.
+_JOINING = frozenset(("and", "then", "and then"))
+_VERB_SLOTS = frozenset(("behaviour", "unknown_verb", "ego_verb", "turn"))
+#: Words said of a verb's object before its noun ("a parked lorry", "two slow tractors").
+_BEFORE_ITS_NOUN = frozenset(("stationary", "count", "member", "speed_adjective", "speed_word"))
+
+
+def _a_verb_of_its_own(m) -> bool:
+    """Whether place mention ``m`` opens with its verb ("came straight at me", "heading for us")."""
+    first = m.words.split()[0]
+    return m.slot == "relation" and "VERB" in lemmas(first) and first.endswith(("ed", "ing", "s", "came", "ran"))
+
+
+def after_a_second_verb(mentions: list, k: int) -> bool:
+    """Whether the place ``mentions[k]`` is said after a second verb joined by "and" or "then" to a
+    first verb with an object ("was overtaking a truck and came onto our side, head-on towards us"):
+    the second verb has the first one's subject, so the place is the subject's, not the object's."""
+    j = k if _a_verb_of_its_own(mentions[k]) else k - 1
+    while j >= 0 and mentions[j].slot in _AFTER_A_VERB and j < k:
+        j -= 1
+    if j < 1 or not (mentions[j].slot in _VERB_SLOTS or _a_verb_of_its_own(mentions[j])):
+        return False
+    j -= 1
+    joined = False
+    while j >= 0 and mentions[j].slot in ("conj", "link", "punct"):
+        joined = joined or mentions[j].words in _JOINING
+        j -= 1
+    if not joined or j < 1 or mentions[j].slot != "actor" or mentions[j].value == "ego":
+        return False
+    j -= 1
+    while j > 0 and mentions[j].slot in _BEFORE_ITS_NOUN:
+        j -= 1
+    return mentions[j].slot in _VERB_SLOTS  # (that one the first verb's object)
