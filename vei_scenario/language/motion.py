@@ -2369,7 +2369,8 @@ def overtakes_on_the_wrong_side(clauses: list) -> list:
             before = next((x for x in reversed(kept) if not (x.slot == "actor" and x.value == "ego")), None)
             if m.slot == "wrong_way" and (m.prev == "on" or m.words.startswith("on ")) and passes(before):
                 ego = [x for x in kept if x.slot == "actor" and x.value == "ego" and x.start >= before.end]
-                if m.start - before.end <= sum(x.end - x.start for x in ego):
+                said_on = 0 if m.words.startswith("on ") else 1 + bool(m.det)  # ("past on the wrong side")
+                if m.start - before.end <= sum(x.end - x.start for x in ego) + said_on:
                     continue  # (it passes the ego or no one said: "overtook a queue on the wrong side" stays)
             kept.append(m)
         out.append((link, kept))
