@@ -413,3 +413,31 @@ def test_the_lane_count_after_the_ego_lane_is_no_speed_of_the_one_cutting_in():
     (actor,) = reading.actors
     assert actor.behaviours[0][0] == "cut_in"
     assert actor.speed_mps is None or actor.speed_mps > 5
+
+
+# Going out into the road with or after a thing ("chased a ball out", "pushed a pram out"): the road
+# user goes out with it and crosses; "out" may be left unsaid after "ran after ...".
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Doing 25 mph past the school when a little girl chased her ball out from behind a parked van.",
+        "At 20 mph on our street a boy ran after a football into the road ahead of me.",
+        "A mum pushed a buggy straight out in front of me while I was doing 30 mph.",
+        "I was at 15 mph when a man pulled his trolley out into the street.",
+    ],
+)
+def test_going_out_with_or_after_a_thing_is_crossing(text):
+    assert read(text).actors[0].behaviours[0][0] == "cross_in_front"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was driving at 20 mph when a boy kicked a ball out into the road.",
+        "I was driving at 20 mph when a car followed the bus out into the road.",
+        "I was doing 20 mph when I followed a lorry out into the road.",
+        "A man walked his dog along the pavement while I drove past at 30 mph.",
+    ],
+)
+def test_a_thing_sent_out_or_the_egos_own_move_is_no_crossing(text):
+    assert "cross_in_front" not in [b[0] for a in read(text).actors for b in a.behaviours]

@@ -1432,7 +1432,8 @@ def chains(clauses: list, tokens: list[str]) -> list:
         passes_while_the_ego_yields(follows_the_ego(on_the_ego_tail(clauses, tokens), tokens))
     )
     clauses = round_the_ego(passing_in_front(out_into_the_road(clauses, tokens), tokens), tokens)
-    clauses = on_a_foot_crossing(out_of_a_place_then_across(out_across_the_road(clauses, tokens)), tokens)
+    clauses = with_a_thing_out_into_the_road(out_across_the_road(clauses, tokens), tokens)
+    clauses = on_a_foot_crossing(out_of_a_place_then_across(clauses), tokens)
     clauses = out_of_the_ego_lane(into_a_lane(into_another_lane(clauses, tokens), tokens), tokens)
     clauses = into_the_lane_the_ego_is_in(clauses, tokens)
     return slowing_into_a_stop(lets_the_ego_go(clauses, tokens))
@@ -1894,6 +1895,75 @@ def out_across_the_road(clauses: list, tokens: list[str]) -> list:
             kept.insert(next((n for n, x in enumerate(kept) if x.start > j), len(kept)), move)
         named = [x for x in mentions if x.slot == "actor" and x.value != "ego"]
         subject = named[-1] if named else subject
+        out.append((link, kept))
+    return out
+
+
+#: Verbs (lemmas) that send a thing off while the one who does it stays ("kicked a ball out into the road").
+_SENDS_OFF = frozenset(("kick", "throw", "toss", "fling", "chuck", "hit", "knock", "drop", "roll", "blow", "lose"))
+#: Moves a verb with a thing after it may have been read as before it is seen going out with it.
+_WITH_A_THING = frozenset(("keep_going", "along_road", "follow_vehicle"))
+
+
+def _a_thing_before(tokens: list[str], j: int) -> int | None:
+    """Where the verb stands whose object, a thing said with at most an article or possessive and an
+    adjective, ends just before ``tokens[j]`` ("chased [a ball]", "ran after [his ball]"), or None."""
+    i = j - 1
+    if i < 1 or "NOUN" not in lemmas(tokens[i]):
+        return None
+    i -= 1
+    if i > 0 and "ADJ" in lemmas(tokens[i]) and tokens[i] not in _DETERMINERS:
+        i -= 1  # ("chased a red ball out")
+    if tokens[i] not in _DETERMINERS:
+        return None
+    i -= 1
+    if i > 0 and tokens[i] == "after":
+        i -= 1  # ("ran after her ball into the road")
+    return i if i >= 0 and "VERB" in lemmas(tokens[i]) else None
+
+
+def _into_the_road_from(tokens: list[str], j: int) -> int | None:
+    """Where "(out) into / onto / across the road" or one of :func:`_out_into_the_road`'s ways out
+    said from ``tokens[j]`` ends, or None: after a thing gone after, "out" may be left unsaid."""
+    if tokens[j : j + 1] in (["into"], ["onto"], ["across"]) and j + 2 < len(tokens):
+        if tokens[j + 1] in _DETERMINERS and tokens[j + 2] in _CARRIAGEWAY:
+            return j + 1
+    return _out_into_the_road(tokens, j)
+
+
+def with_a_thing_out_into_the_road(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a road user going out into the road with or after a thing ("a child chased a
+    ball out from between two parked vans", "a woman pushed a pram out in front of me", "a boy ran
+    after his ball into the road") read as that road user coming out onto the road: the verb with
+    its object says what it goes with, "out into the road" where it goes. A walker or rider crosses
+    it, a vehicle pulls out into it. A verb that sends the thing off ("kicked a ball out into the
+    road") moves the thing, not the one who does it; a road user as the object ("followed a van
+    out") is no thing, and a verb after "I" is the ego's."""
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for j in range(min((x.start for x in mentions), default=0), max((x.end for x in mentions), default=0)):
+            i = j
+            while i < len(tokens) and tokens[i] in _BEFORE_OUT:
+                i += 1
+            verb = _a_thing_before(tokens, i) if _into_the_road_from(tokens, i) is not None else None
+            if verb is None or set(lemmas(tokens[verb]).get("VERB", ())) & _SENDS_OFF:
+                continue
+            if any(x.start < i and x.end > verb + 1 and x.slot not in ("pronoun", "conj") for x in kept):
+                continue  # (a mention in the object: a road user, a place, not a thing)
+            at = next((n for n, x in enumerate(kept) if x.start <= verb < x.end), None)
+            if at is not None and not (kept[at].slot == "behaviour" and kept[at].value[0] in _WITH_A_THING):
+                continue
+            before = [x for x in kept if x.end <= verb]
+            who = before[-1] if before else None
+            if who is None or who.slot != "actor" or who.value == "ego":
+                continue  # (the word before the verb is its subject: none said, or the ego's verb)
+            name = "cross_in_front" if who.value in _CROSSERS else "cut_in"
+            move = word_mention(who, tokens, verb, "behaviour", (name, {}), tokens[verb])
+            if at is not None:
+                kept[at] = move
+            else:
+                kept.insert(kept.index(who) + 1, move)
         out.append((link, kept))
     return out
 
