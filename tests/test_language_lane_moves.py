@@ -140,3 +140,30 @@ def test_an_act_tried_in_the_infinitive_is_that_act(text):
 def test_an_infinitive_of_purpose_is_not_a_second_act():
     text = "A moped in the cycle lane on my right swerves left across my lane to turn into a side road on the left."
     assert _behaviours(text) == [["forced_turn"]]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Coming round a bend at 40 mph, a lorry came towards me half over the centre line.",
+        "An oncoming van was well over the white line.",
+        "A car coming the other way was straddling the centerline.",
+        "Doing 50 on a country lane when a tractor came at us across the dividing line.",
+        "A quad bike heading towards me was over the double yellow line.",
+    ],
+)
+def test_one_coming_towards_the_ego_over_the_centre_line_comes_head_on(text):
+    assert _behaviours(text) == [["wrong_way"]]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A BMW overtook me, swinging over the centre line.",
+        "A cyclist ahead of me was riding over the white line at the edge.",
+        "I went over the centre line to pass a slow cyclist.",
+        "A van ahead of me in my lane drifted over the centre line.",
+    ],
+)
+def test_over_the_centre_line_going_the_ego_way_is_no_head_on(text):
+    assert "wrong_way" not in _behaviours(text)[0]

@@ -1450,6 +1450,15 @@ WRONG_WAY = (
     "the wrong direction",
     "in the wrong direction",
 )
+#: Over the line that parts the two directions ("half over the centre line", "straddling the white
+#: line"): partly in the other direction's lane, so in the ego's for one coming towards it. ("middle
+#: line" is not here: it is read as a lane.)
+_DIVIDING_LINES = ("centre line", "center line", "centreline", "centerline", "white line",
+                   "white lines", "dividing line", "double yellow", "double yellows", "double yellow line",
+                   "double yellow lines", "double white line", "double white lines")  # fmt: skip
+OVER_THE_LINE = tuple(
+    f"{over} the {line}" for over in ("over", "across", "straddling", "straddle", "astride") for line in _DIVIDING_LINES
+)
 #: Nouns that are a wrong-way driver.
 WRONG_WAY_NOUNS = ("ghost driver", "wrong-way driver")
 #: Road-user nouns that say what it does ("a red-light runner", "a jaywalker"): its behaviour when no

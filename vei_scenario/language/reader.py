@@ -156,6 +156,7 @@ def _entries() -> dict[tuple[str, ...], tuple[str, object]]:
         ("behaviour", [(("cut_in", {"from_side_road": 1.0}), L.SIDE_ROAD_EXITS)]),
         ("to_stop", [(None, L.TO_A_STOP)]),  # ("decelerates to a standstill": its change ends standing)
         ("wrong_way", [(None, L.WRONG_WAY)]),
+        ("over_line", [(None, L.OVER_THE_LINE)]),
         ("returns", [(None, L.RETURNS)]),
         ("turn", L.TURNS),
     ]
@@ -1168,7 +1169,7 @@ VERB_CRITICALITY = {
 }
 _POSITIONAL = (
     "relation", "side", "lane_side", "kerb", "kerb_side", "arm", "stationary", "wrong_way", "returns",
-    "speed_adjective", "toward", "place", "far_side",
+    "over_line", "speed_adjective", "toward", "place", "far_side",
 )  # fmt: skip
 _VERBS = ("behaviour", "turn", "unknown_verb", "ego_verb", "speed_word")
 
@@ -3049,6 +3050,8 @@ def _apply(m, who, r, link, added) -> None:
                 a.relation = m.value
         elif m.slot == "wrong_way":
             a.wrong_way = True
+        elif m.slot == "over_line":
+            a.said.add("in_ego_lane")  # (partly in the other way's lane: the ego's, for one coming at it)
         elif m.slot == "returns":
             a.returns = True
         elif m.slot == "side":
