@@ -167,3 +167,28 @@ def test_one_coming_towards_the_ego_over_the_centre_line_comes_head_on(text):
 )
 def test_over_the_centre_line_going_the_ego_way_is_no_head_on(text):
     assert "wrong_way" not in _behaviours(text)[0]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A moped came towards me in the rain. I kept left, and they passed each other safely.",
+        "A delivery van was coming the other way on the narrow lane. They went past each other slowly.",
+        "A horse rider came towards us on the bridge; they passed one another at walking pace.",
+        "An e-scooter came towards me on the bend. They passed each other safely.",
+    ],
+)
+def test_passing_each_other_is_meeting_not_overtaking(text):
+    assert not {"overtake", "wrong_way"} & set(_behaviours(text)[0])
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A motorbike came up behind me and passed each car in the queue.",
+        "A van came up behind me and passed one car after another.",
+        "A cyclist came up behind me and passed me.",
+    ],
+)
+def test_passing_each_or_one_of_several_is_still_an_overtake(text):
+    assert "overtake" in _behaviours(text)[0]

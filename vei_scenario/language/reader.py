@@ -1397,6 +1397,7 @@ def _read(text: str) -> Reading:
     clauses = out_to_overtake(participle_of_state(give_the_ego_the_way(into_the_ego_lane(clauses, scanned), scanned)))
     clauses = scenery.standing_there(chains(clauses, scanned), scanned)  # ("there's a car stopped dead")
     clauses = lane_moves.braking_after_a_cut_in(clauses, scanned)  # ("cut in and braked": how it settles)
+    clauses = lane_moves.passing_each_other(clauses, scanned)  # (a meeting: no one overtakes)
     clauses = junctions.priority(junctions.crossings(clauses, scanned), scanned)
     clauses, ego_follows = _ego_following(clauses)
     r = Reading()
