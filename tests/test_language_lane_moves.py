@@ -192,3 +192,28 @@ def test_passing_each_other_is_meeting_not_overtaking(text):
 )
 def test_passing_each_or_one_of_several_is_still_an_overtake(text):
     assert "overtake" in _behaviours(text)[0]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Doing 60 on the motorway, a coach in the middle lane suddenly wanted my lane.",
+        "Two lanes each way at 40 mph; a van in the right lane decided it wanted our lane, no signal.",
+        "At 50 mph a taxi in the outside lane just took my lane without looking.",
+        "Cruising at 70, a pickup in lane 2 went for my lane with no indicator.",
+    ],
+)
+def test_a_road_user_beside_wanting_or_taking_the_ego_lane_cuts_in(text):
+    assert _behaviours(text) == [["cut_in"]]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Doing 60 on the motorway, a coach in the middle lane stayed in its lane.",
+        "A van behind me in my lane kept a steady gap.",
+        "A cyclist ahead of me wanted to turn left, so I waited.",
+    ],
+)
+def test_a_road_user_keeping_to_a_lane_does_not_cut_in(text):
+    assert "cut_in" not in _behaviours(text)[0]

@@ -353,6 +353,9 @@ EGO_NOUNS = (
     "student driver",
 )
 
+#: Verbs of wanting or taking the ego's lane ("decides he wants my lane", "went for our lane"): a
+#: road user beside the ego moving into its lane, as "joins our lane" is.
+_WANTING = ("want", "take", "go for", "claim", "make for", "aim for")
 #: Behaviours by their verbs (lemmas). Longer phrases win.
 BEHAVIOUR_VERBS = {
     "cross_in_front": (
@@ -477,6 +480,7 @@ BEHAVIOUR_VERBS = {
         "cut us off",
         "cut the ego off",
         "join our lane",
+        *(f"{verb} {owner} lane" for verb in _WANTING for owner in ("my", "our", "the ego's")),
         "drift",
         "drift over",
         "drift across",
