@@ -140,3 +140,80 @@ def test_an_act_tried_in_the_infinitive_is_that_act(text):
 def test_an_infinitive_of_purpose_is_not_a_second_act():
     text = "A moped in the cycle lane on my right swerves left across my lane to turn into a side road on the left."
     assert _behaviours(text) == [["forced_turn"]]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Coming round a bend at 40 mph, a lorry came towards me half over the centre line.",
+        "An oncoming van was well over the white line.",
+        "A car coming the other way was straddling the centerline.",
+        "Doing 50 on a country lane when a tractor came at us across the dividing line.",
+        "A quad bike heading towards me was over the double yellow line.",
+    ],
+)
+def test_one_coming_towards_the_ego_over_the_centre_line_comes_head_on(text):
+    assert _behaviours(text) == [["wrong_way"]]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A BMW overtook me, swinging over the centre line.",
+        "A cyclist ahead of me was riding over the white line at the edge.",
+        "I went over the centre line to pass a slow cyclist.",
+        "A van ahead of me in my lane drifted over the centre line.",
+    ],
+)
+def test_over_the_centre_line_going_the_ego_way_is_no_head_on(text):
+    assert "wrong_way" not in _behaviours(text)[0]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A moped came towards me in the rain. I kept left, and they passed each other safely.",
+        "A delivery van was coming the other way on the narrow lane. They went past each other slowly.",
+        "A horse rider came towards us on the bridge; they passed one another at walking pace.",
+        "An e-scooter came towards me on the bend. They passed each other safely.",
+    ],
+)
+def test_passing_each_other_is_meeting_not_overtaking(text):
+    assert not {"overtake", "wrong_way"} & set(_behaviours(text)[0])
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A motorbike came up behind me and passed each car in the queue.",
+        "A van came up behind me and passed one car after another.",
+        "A cyclist came up behind me and passed me.",
+    ],
+)
+def test_passing_each_or_one_of_several_is_still_an_overtake(text):
+    assert "overtake" in _behaviours(text)[0]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Doing 60 on the motorway, a coach in the middle lane suddenly wanted my lane.",
+        "Two lanes each way at 40 mph; a van in the right lane decided it wanted our lane, no signal.",
+        "At 50 mph a taxi in the outside lane just took my lane without looking.",
+        "Cruising at 70, a pickup in lane 2 went for my lane with no indicator.",
+    ],
+)
+def test_a_road_user_beside_wanting_or_taking_the_ego_lane_cuts_in(text):
+    assert _behaviours(text) == [["cut_in"]]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Doing 60 on the motorway, a coach in the middle lane stayed in its lane.",
+        "A van behind me in my lane kept a steady gap.",
+        "A cyclist ahead of me wanted to turn left, so I waited.",
+    ],
+)
+def test_a_road_user_keeping_to_a_lane_does_not_cut_in(text):
+    assert "cut_in" not in _behaviours(text)[0]

@@ -9,12 +9,15 @@ in the brake-check scenario; the plain verb is not.
 "Slow" said as how a road user goes ("a truck ahead going very slow", "a cyclist in my lane, really
 slow", "riding slow") is its pace, as "the truck is slow" is: it keeps its lane at a low speed, no
 change of speed. Only the verb ("slows", "began to slow", "slow down") is a slowing.
+
+Passing "each other" or "one another" is two road users meeting, each going its own way: no one
+overtakes anyone, so the verb of passing is no overtake of the road user it is said of.
 """
 
 from __future__ import annotations
 
 from vei_scenario.language.lemmas import lemmas
-from vei_scenario.language.motion import _said_hard
+from vei_scenario.language.motion import _said_hard, passes
 
 #: The bare verb of braking, in each form (no manner, no object: "braked", "brakes").
 _PLAIN_BRAKE = frozenset(("brake", "brakes", "braked", "braking"))
@@ -82,6 +85,20 @@ def braking_after_a_cut_in(clauses: list, tokens: list[str]) -> list:
         last_cut_in = bool(behaviours) and behaviours[-1].value[0] == "cut_in"
         out.append((link, kept))
     return out
+
+
+#: What a verb of passing is said of when two pass in opposite ways ("passed each other").
+_RECIPROCAL = (["each", "other"], ["one", "another"])
+
+
+def passing_each_other(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` without a verb of passing whose object is "each other" or "one another" ("they
+    passed each other safely", "went past one another"): two meeting from opposite ways, an overtake
+    by neither. ("passed each car" or "one car after another" still overtake.)"""
+    return [
+        (link, [m for m in mentions if not (passes(m) and tokens[m.end : m.end + 2] in _RECIPROCAL)])
+        for link, mentions in clauses
+    ]
 
 
 #: Words that only make the adjective after them stronger ("very slow", "dead slow").

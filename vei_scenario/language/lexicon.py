@@ -353,6 +353,9 @@ EGO_NOUNS = (
     "student driver",
 )
 
+#: Verbs of wanting or taking the ego's lane ("decides he wants my lane", "went for our lane"): a
+#: road user beside the ego moving into its lane, as "joins our lane" is.
+_WANTING = ("want", "take", "go for", "claim", "make for", "aim for")
 #: Behaviours by their verbs (lemmas). Longer phrases win.
 BEHAVIOUR_VERBS = {
     "cross_in_front": (
@@ -477,6 +480,7 @@ BEHAVIOUR_VERBS = {
         "cut us off",
         "cut the ego off",
         "join our lane",
+        *(f"{verb} {owner} lane" for verb in _WANTING for owner in ("my", "our", "the ego's")),
         "drift",
         "drift over",
         "drift across",
@@ -1449,6 +1453,15 @@ WRONG_WAY = (
     "wrong direction",
     "the wrong direction",
     "in the wrong direction",
+)
+#: Over the line that parts the two directions ("half over the centre line", "straddling the white
+#: line"): partly in the other direction's lane, so in the ego's for one coming towards it. ("middle
+#: line" is not here: it is read as a lane.)
+_DIVIDING_LINES = ("centre line", "center line", "centreline", "centerline", "white line",
+                   "white lines", "dividing line", "double yellow", "double yellows", "double yellow line",
+                   "double yellow lines", "double white line", "double white lines")  # fmt: skip
+OVER_THE_LINE = tuple(
+    f"{over} the {line}" for over in ("over", "across", "straddling", "straddle", "astride") for line in _DIVIDING_LINES
 )
 #: Nouns that are a wrong-way driver.
 WRONG_WAY_NOUNS = ("ghost driver", "wrong-way driver")

@@ -157,6 +157,7 @@ def _entries() -> dict[tuple[str, ...], tuple[str, object]]:
         ("behaviour", [(("cut_in", {"from_side_road": 1.0}), L.SIDE_ROAD_EXITS)]),
         ("to_stop", [(None, L.TO_A_STOP)]),  # ("decelerates to a standstill": its change ends standing)
         ("wrong_way", [(None, L.WRONG_WAY)]),
+        ("over_line", [(None, L.OVER_THE_LINE)]),
         ("returns", [(None, L.RETURNS)]),
         ("turn", L.TURNS),
     ]
@@ -1170,7 +1171,7 @@ VERB_CRITICALITY = {
 }
 _POSITIONAL = (
     "relation", "side", "lane_side", "kerb", "kerb_side", "arm", "stationary", "wrong_way", "returns",
-    "speed_adjective", "toward", "place", "far_side",
+    "over_line", "speed_adjective", "toward", "place", "far_side",
 )  # fmt: skip
 _VERBS = ("behaviour", "turn", "unknown_verb", "ego_verb", "speed_word")
 
@@ -1398,6 +1399,7 @@ def _read(text: str) -> Reading:
     clauses = out_to_overtake(participle_of_state(give_the_ego_the_way(into_the_ego_lane(clauses, scanned), scanned)))
     clauses = scenery.standing_there(chains(clauses, scanned), scanned)  # ("there's a car stopped dead")
     clauses = lane_moves.braking_after_a_cut_in(clauses, scanned)  # ("cut in and braked": how it settles)
+    clauses = lane_moves.passing_each_other(clauses, scanned)  # (a meeting: no one overtakes)
     clauses = junctions.priority(junctions.crossings(clauses, scanned), scanned)
     clauses, ego_follows = _ego_following(clauses)
     r = Reading()
@@ -3051,6 +3053,8 @@ def _apply(m, who, r, link, added) -> None:
                 a.relation = m.value
         elif m.slot == "wrong_way":
             a.wrong_way = True
+        elif m.slot == "over_line":
+            a.said.add("in_ego_lane")  # (partly in the other way's lane: the ego's, for one coming at it)
         elif m.slot == "returns":
             a.returns = True
         elif m.slot == "side":
