@@ -303,3 +303,28 @@ def test_a_slowing_to_a_speed_starts_at_the_ego_s_where_none_of_its_own_is_said(
     if end is not None:
         delta = [c["speed_delta_mps"] for n, c, *_ in actor.behaviours if n == "change_speed"]
         assert delta and round(start + delta[0] * 3.6, 1) == end
+
+
+@pytest.mark.parametrize(
+    "text, kind, speed",
+    [
+        ("A tractor came out of a farm gate ahead of me and then crawled along at 12 mph.", "truck", 19.3),
+        ("The bin lorry in front was crawling along at about 10 km/h.", "truck", 10),
+        ("The van ahead of us crept along at 15 mph the whole way.", "van", 24.1),
+        ("There was a cyclist dawdling along in front of me at 8 mph.", "bicycle", 12.9),
+        # near misses: traffic that crawls is no road user, and the ego's own crawl is the ego's
+        ("Traffic was crawling along at 10 mph when a cyclist cut in front of me.", "bicycle", None),
+    ],
+)
+def test_a_verb_of_going_slowly_gives_its_subject_s_speed(text, kind, speed):
+    """ "crawled along at 15 mph", "crept along": a road user going slowly still goes, at the speed
+    said after it, as after "trundled along"."""
+    actor = read(text).actors[0]
+    assert (actor.kind, _kph(actor.speed_mps)) == (kind, speed)
+
+
+def test_crawling_traffic_is_no_road_user_and_gives_the_ego_its_speed():
+    """ "traffic was crawling along at 10 mph": the traffic's pace, the ego's in it; no road user."""
+    reading = read("Traffic was crawling along at 10 mph when a cyclist cut in front of me.")
+    assert [a.kind for a in reading.actors] == ["bicycle"]
+    assert _kph(reading.ego_speed_mps) == 16.1

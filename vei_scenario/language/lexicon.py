@@ -612,6 +612,10 @@ BEHAVIOUR_VERBS = {
         "jog along",
         "pedal along",
         "trundle along",
+        "crawl",
+        "crawl along",
+        "creep along",
+        "dawdle along",
         "close in",
     ),
     "keep_lane": (
