@@ -276,3 +276,55 @@ def _route(text: str) -> str | None:
 def test_a_bare_direction_after_make_is_the_turn(text, route):
     """ "making left on green": the American shorthand of "making a left", its article left out."""
     assert _route(text) == route
+
+
+def _kph(mps: float | None) -> float | None:
+    return None if mps is None else round(mps * 3.6, 1)
+
+
+@pytest.mark.parametrize(
+    "text, start, end",
+    [
+        ("I'm following a lorry at 80 km/h on the dual carriageway and the lorry brakes to 50 km/h.", 80, 50),
+        ("Ego follows a bus at 40 mph; the bus then slows down to 20 mph for a stop.", 64.4, 32.2),
+        ("We are following a car at 60 km/h when the car decelerates to 30 km/h.", 60, 30),
+        # near misses: its own speed said, one the ego does not follow, or an ego no faster
+        ("I'm following a truck doing 70 km/h at 80 km/h, and it slows to 50 km/h.", 70, 50),
+        ("I am at 100 km/h when a car cuts in ahead of me and then slows to 60 km/h.", 60, None),
+        ("I was doing 20 km/h following a van, and the van slowed to 30 km/h.", 30, None),
+    ],
+)
+def test_a_slowing_to_a_speed_starts_at_the_ego_s_where_none_of_its_own_is_said(text, start, end):
+    """ "follows a van at 100, the van slows to 60": the speed after "slows to" is where the slowing
+    ends, never the speed it goes at; with none of its own said, a vehicle the ego keeps pace with
+    goes at the ego's speed before it slows."""
+    actor = read(text).actors[0]
+    assert _kph(actor.speed_mps) == start
+    if end is not None:
+        delta = [c["speed_delta_mps"] for n, c, *_ in actor.behaviours if n == "change_speed"]
+        assert delta and round(start + delta[0] * 3.6, 1) == end
+
+
+@pytest.mark.parametrize(
+    "text, kind, speed",
+    [
+        ("A tractor came out of a farm gate ahead of me and then crawled along at 12 mph.", "truck", 19.3),
+        ("The bin lorry in front was crawling along at about 10 km/h.", "truck", 10),
+        ("The van ahead of us crept along at 15 mph the whole way.", "van", 24.1),
+        ("There was a cyclist dawdling along in front of me at 8 mph.", "bicycle", 12.9),
+        # near misses: traffic that crawls is no road user, and the ego's own crawl is the ego's
+        ("Traffic was crawling along at 10 mph when a cyclist cut in front of me.", "bicycle", None),
+    ],
+)
+def test_a_verb_of_going_slowly_gives_its_subject_s_speed(text, kind, speed):
+    """ "crawled along at 15 mph", "crept along": a road user going slowly still goes, at the speed
+    said after it, as after "trundled along"."""
+    actor = read(text).actors[0]
+    assert (actor.kind, _kph(actor.speed_mps)) == (kind, speed)
+
+
+def test_crawling_traffic_is_no_road_user_and_gives_the_ego_its_speed():
+    """ "traffic was crawling along at 10 mph": the traffic's pace, the ego's in it; no road user."""
+    reading = read("Traffic was crawling along at 10 mph when a cyclist cut in front of me.")
+    assert [a.kind for a in reading.actors] == ["bicycle"]
+    assert _kph(reading.ego_speed_mps) == 16.1

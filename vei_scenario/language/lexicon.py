@@ -616,6 +616,10 @@ BEHAVIOUR_VERBS = {
         "jog along",
         "pedal along",
         "trundle along",
+        "crawl",
+        "crawl along",
+        "creep along",
+        "dawdle along",
         "close in",
     ),
     "keep_lane": (

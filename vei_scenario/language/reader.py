@@ -1217,6 +1217,18 @@ def _comes_out_from(prev, m) -> bool:
 _SETTINGS = ("map", "weather", "time", "density", "lanes")
 
 
+def _slows_from(a: _Actor, ego_mps: float | None, to_mps: float) -> float | None:
+    """The speed the road user ``a`` goes at before it slows to ``to_mps``: its own said in figures
+    ("the lorry at 56 mph ... brakes to 30 mph"), else the ego's where the ego is said to go faster
+    than that and ``a`` is a vehicle the ego is said to follow ("ego follows a van at 100 km/h, the van
+    slows to 60": what the ego follows goes its speed); None otherwise (the speed after "to" is then
+    all that is said of its pace: "cuts in, then decelerates to 45 mph")."""
+    if a.speed_mps is not None:
+        return a.speed_mps if a.speed_mps >= 0 else None  # (a pace in words, "going slow", is no figure)
+    paced = a.followed and ego_mps is not None and ego_mps <= FASTEST_MPS.get(a.kind, 1e9)
+    return ego_mps if paced and ego_mps > to_mps else None
+
+
 def _among_settings(mentions, k: int) -> bool:
     """Whether the speed ``mentions[k]`` stands alone between commas next to a setting, as terse notes
     give the test's speed ("car ahead swerves to reveal a stopped truck, 80 km/h, heavy rain")."""
@@ -1903,10 +1915,10 @@ def _read(text: str) -> Reading:
                     and change.value[0] in ("sudden_stop", "change_speed")
                     and isinstance(clause_subject, _Actor)
                     and clause_subject.behaviours
-                    and clause_subject.speed_mps is not None
-                    and clause_subject.speed_mps >= 0  # (a speed said in figures; "going slow" is only a pace)
+                    and _slows_from(clause_subject, r.ego_speed_mps, m.value) is not None
                 ):  # "the lorry at 56 mph ... brakes (at 3 m/s²) to 30 mph": the speed it slows to, not a stop
                     a = clause_subject
+                    a.speed_mps = _slows_from(a, r.ego_speed_mps, m.value)
                     name, cfg, crit, lk = a.behaviours[-1]
                     a.behaviours[-1] = ("change_speed", {k2: v for k2, v in cfg.items() if k2 == "_words"}, crit, lk)
                     a.speed_to_mps = m.value
