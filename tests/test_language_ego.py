@@ -997,3 +997,44 @@ def test_another_vehicle_of_the_egos_kind_stays_a_road_user(text, kinds):
 )
 def test_a_vehicle_of_the_egos_kind_that_acts_on_it_is_new(text):
     assert _kinds(text) == ["van"]
+
+
+# The role of the person a third-person report is taken from ("Cust", "customer", "caller", "RP"),
+# said as a subject: that person is the ego, never one more actor; a text with a narrator of its own,
+# a role said with "a" or as a noun's modifier is not.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        (
+            "Cust (Mrs Khan) says she was doing about 40 mph on the bypass when a lorry drifted into her lane "
+            "from the left. Lorry did not stop.",
+            ["truck"],
+            64.4,
+        ),
+        (
+            "Caller travelling at 50 mph on the A40 when a van pulled out of a side road in front of caller.",
+            ["van"],
+            80.5,
+        ),
+        ("RP was stopped at the lights on Main St when a pickup rolled into the back of RP's car.", ["van"], 0.0),
+        (
+            "Customer states a cyclist came off the footway into the road ahead of him while he was driving at 20 mph.",
+            ["bicycle"],
+            32.2,
+        ),
+    ],
+)
+def test_a_reporters_role_is_the_ego(text: str, kinds: list[str], kph: float) -> None:
+    assert _kinds(text) == kinds
+    assert _ego_kph(text) == kph
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Customer service was useless. I was doing 30 mph when a van pulled out of a side road in front of me.",
+        "A caller said a van pulled out of a side road in front of a car doing 30 mph.",
+    ],
+)
+def test_a_reporters_role_that_is_no_subject_of_the_report_is_not_the_ego(text: str) -> None:
+    assert "van" in _kinds(text)

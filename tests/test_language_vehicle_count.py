@@ -5,6 +5,8 @@ in a first-person story is the narrator's; vehicles labelled in the plural are a
 
 from __future__ import annotations
 
+import pytest
+
 from tests.reading_of import ego_kph, kinds
 
 
@@ -71,6 +73,22 @@ def test_a_car_that_does_not_stop_is_a_road_user() -> None:
 def test_a_name_after_on_the_is_a_road_not_a_car() -> None:
     text = "I was heading north on the Westlink at 80 km/h when a van from the left lane cut in front of me."
     assert kinds(text) == ["van"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A man walked out in front of a bus on Mill Road and it stopped for him, the driver told the Gazette.",
+        "A man walked out in front of a bus on Mill Road and it stopped for him, the driver said to the Gazette.",
+    ],
+)
+def test_a_name_told_something_is_a_listener_not_a_car(text: str) -> None:
+    assert kinds(text) == ["pedestrian"]
+
+
+def test_a_name_a_road_user_is_told_of_is_still_a_car() -> None:
+    text = "A man walked out in front of a bus on Mill Road and a silver Qashqai stopped behind it."
+    assert kinds(text) == ["pedestrian", "car"]
 
 
 def test_a_name_after_a_is_still_a_car() -> None:

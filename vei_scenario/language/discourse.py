@@ -1915,6 +1915,22 @@ def _owner_placed(tokens: list[str], s: int, proper: frozenset[str]) -> bool:
     return named and j >= 0 and tokens[j] in _PLACE_BEFORE
 
 
+#: Verbs of telling, whose object listens ("told the Echo"), and of speaking, whose listener follows "to"
+#: ("speaking to the Post", "said to the Herald").
+_TELLING = frozenset({"told", "tell", "tells", "telling", "informed", "inform", "informs"})
+_SPEAKING = frozenset(
+    {"spoke", "speak", "speaks", "speaking", "said", "says", "say", "talked", "talk", "talking", "wrote", "writing"}
+)
+
+
+def _told(tokens: list[str], j: int) -> bool:
+    """Whether the determiner at ``j`` opens the one a verb of telling or speaking is addressed to ("she told
+    the Echo", "speaking to the Post"): someone listening, a person or a paper, no vehicle."""
+    if j > 0 and tokens[j - 1] in _TELLING:
+        return True
+    return j > 1 and tokens[j - 1] == "to" and tokens[j - 2] in _SPEAKING
+
+
 def _named_vehicles(tokens: list[str], kind_at: KindAt, known: Known, proper: frozenset[str]) -> list[str]:
     """A name written with its own capital that no lexicon has, in a vehicle's place ("a silver Mokka
     pulled out", "a kid in a red Mini", "a black Focus in the next lane"), is a car: said with "car"
@@ -1944,6 +1960,8 @@ def _named_vehicles(tokens: list[str], kind_at: KindAt, known: Known, proper: fr
             continue  # (a road: "on the Hume", "on the Westlink"; a ridden one is "on a Vespa", "on his")
         if tokens[j] == "'s" and _owner_placed(tokens, j, proper):  # ("outside St Mary's Infants": a place)
             continue
+        if _told(tokens, j):
+            continue  # (one listening: "she told the Echo", "speaking to the Post")
         nxt = tokens[i + 1] if i + 1 < len(tokens) else "."
         ends = nxt in PUNCT or nxt in PREPOSITIONS or (nxt not in proper and _verb_of(nxt))
         if ends and not (i and tokens[i - 1] in proper):

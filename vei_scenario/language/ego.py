@@ -57,6 +57,9 @@ DRIVING = frozenset({"driving", "drives", "drove", "driven"})
 LEARNER = frozenset({"pupil", "learner", "trainee", "candidate", "student"})
 #: Roles of the party a claim is made for: always the one the statement is told for.
 PARTY = frozenset({"client", "claimant", "insured", "policyholder", "complainant"})
+#: Roles of the person a report is taken from ("Cust states ...", "RP traveling 65 mph", "Caller was
+#: ..."): in a report told in the third person, the one the report is told for, as a party to a claim.
+REPORTER = frozenset({"customer", "cust", "caller", "rp"})
 #: The person at the wheel of a vehicle, in "the driver of the car" (that vehicle's mention).
 AT_WHEEL = frozenset({"driver", "rider", "motorist"})
 PRONOUNS = frozenset({"he", "she", "it", "they", "him", "her", "them", "who", "you", "one", "someone"})
@@ -724,7 +727,7 @@ def _role(tokens: list[str], kind_at: KindAt) -> list[str]:
     roundabout at 20 mph", "the policyholder was travelling"): a learner in a sentence that gives a
     road speed, or a party to a claim, is the ego (each mention not introduced with "a")."""
     out = list(tokens)
-    roles = set()
+    roles = _reporters(tokens)
     for i, w in enumerate(tokens):
         if w not in LEARNER | PARTY or (i and tokens[i - 1] in INDEFINITE):
             continue
@@ -746,6 +749,26 @@ def _role(tokens: list[str], kind_at: KindAt) -> list[str]:
             continue
         said.append(w)
     return said
+
+
+def _reporters(tokens: list[str]) -> set[str]:
+    """The roles of the person a third-person report is taken from ("Cust (Mr Patel) states he was
+    driving", "RP following at approx 10 mph", "Caller was on the bypass"), each said at least once as
+    a subject, right before a verb, an aggregate or a bracket. A text with a narrator of its own
+    ("Customer service sent me a voucher") is told by that narrator; a role said with "a" or as a
+    noun's modifier ("a caller", "customer service") is no subject."""
+    if (FIRST_PERSON | NARRATOR_INVOLVED) & set(tokens):
+        return set()
+    found = set()
+    for i, w in enumerate(tokens[:-1]):
+        if w not in REPORTER or (i and tokens[i - 1] in INDEFINITE):
+            continue
+        nxt = tokens[i + 1]
+        if nxt in ("(", ",") or {"VERB", "AUX"} & set(lemmas(nxt)) and "NOUN" not in lemmas(nxt):
+            found.add(w)
+        elif nxt.endswith("s") and "VERB" in lemmas(nxt) and i + 2 < len(tokens) and tokens[i + 2] not in PUNCT:
+            found.add(w)  # ("RP states 3 subjects ...": a verb's third person, not a plural noun at a stop)
+    return found
 
 
 def _relative_own(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:

@@ -70,7 +70,7 @@ from vei_scenario.language.normalise import NUMBER_WORDS, normalise
 from vei_scenario.language.outcome import decide, into_road_user, outcome_cues
 from vei_scenario.language.reading import ActorSpec, NotUnderstood, Reading
 from vei_scenario.language.route import ego_route
-from vei_scenario.language.scene import only_the_scene
+from vei_scenario.language.scene import only_the_scene, quoted_speakers
 from vei_scenario.language.stated import (
     stated_clock,
     stated_heavy_rain,
@@ -1396,6 +1396,7 @@ def read(text: str) -> Reading:
 
 def _read(text: str) -> Reading:
     """One reading of ``text`` as it is written (see :func:`read`)."""
+    text = quoted_speakers(text)  # ("'I stopped in time,' she said": she stopped, no narrator of its own)
     text, aside = only_the_scene(text, lambda part: _actor_noun_in(part.lower()))  # (what is not the scene)
     clauses, ignored, read_as, scanned = scan(text)
     ignored[:0] = [w for w in aside if w not in FUNCTION_WORDS]

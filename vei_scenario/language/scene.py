@@ -59,6 +59,65 @@ _CLOSE = re.compile(
 _SHOULD_HAVE = re.compile(r"\bshould\s*(?:'ve|’ve|\s+have)\b", re.IGNORECASE)
 
 
+#: A quotation: an opening mark not after a letter, then words (an apostrophe inside a word, "don't",
+#: is no mark), then a closing mark not before a letter.
+_QUOTE = re.compile(
+    r"(?<![\w])['\"\u2018\u201c]((?:[^'\"\u2018\u2019\u201c\u201d]|(?<=\w)['\u2019](?=\w))+?)['\"\u2019\u201d](?![\w])"
+)
+#: A verb of saying, after the speaker ("she told the Echo", "he said") or before them ("said the driver").
+_SAYING = (
+    r"(?:said|says|say|told|tells|added|adds|recalled|recalls|explained|explains|admitted|admits|insisted"
+    r"|claimed|stated|states|wrote|writes)"
+)
+#: The speaker named right after a quotation (", she told", "he said", "said Emeka") or right before it
+#: ("She said: '...'", "The driver told us: '...'").
+_SPEAKER_AFTER = re.compile(
+    rf"\s*,?\s*(?:(he|she|they)\s+{_SAYING}\b|(?:[A-Za-z]+\s+){{0,3}}{_SAYING}\b)", re.IGNORECASE
+)
+_SPEAKER_BEFORE = re.compile(rf"(?:\b(he|she|they)|\b[A-Za-z]+)\s+{_SAYING}(?:\s+\w+)?\s*[:,]?\s*$", re.IGNORECASE)
+#: The first person, and what it is in the third person of a speaker said as "he", "she" or "they" (the
+#: plural's, whoever speaks).
+_FIRST_PERSON = re.compile(r"\b(i|me|my|mine|myself|we|us|our|ours)\b", re.IGNORECASE)
+_PLURAL = {"we": "they", "us": "them", "our": "their", "ours": "theirs"}
+_THIRD = {
+    "he": {"i": "he", "me": "him", "my": "his", "mine": "his", "myself": "himself", **_PLURAL},
+    "she": {"i": "she", "me": "her", "my": "her", "mine": "hers", "myself": "herself", **_PLURAL},
+    "they": {"i": "they", "me": "them", "my": "their", "mine": "theirs", "myself": "themselves", **_PLURAL},
+}
+
+
+def _speaker(text: str, quote: re.Match) -> str | None:
+    """The pronoun of the speaker said right before or after ``quote`` ("they" for a speaker named by a
+    noun), or None where no verb of saying frames it (a sign's words, a name in quotes)."""
+    after = _SPEAKER_AFTER.match(text, quote.end())
+    if after is not None:
+        return (after.group(1) or "they").lower()
+    before = _SPEAKER_BEFORE.search(text, max(0, quote.start() - 40), quote.start())
+    if before is not None:
+        return (before.group(1) or "they").lower()
+    return None
+
+
+def quoted_speakers(text: str) -> str:
+    """``text`` with the first person of a quotation said in the third person of its speaker ("'I don't
+    know how I stopped in time,' she told the Echo": she stopped), where the text around its quotations
+    is told in the third person: a news report or a letter quoting someone is not told by that someone,
+    so the quoted "I" is the one the report names (the driver of the van), not a narrator of its own."""
+    quotes = list(_QUOTE.finditer(text))
+    if not quotes or _FIRST_PERSON.search(_QUOTE.sub(" ", text)):
+        return text
+    out, last = [], 0
+    for m in quotes:
+        speaker = _speaker(text, m)
+        if speaker is None:
+            continue
+        third = _THIRD[speaker]
+        out += [text[last : m.start(1)], _FIRST_PERSON.sub(lambda w, t=third: t[w.group(1).lower()], m.group(1))]
+        last = m.end(1)
+    out.append(text[last:])
+    return "".join(out)
+
+
 def only_the_scene(text: str, names_road_user: Callable[[str], object]) -> tuple[str, list[str]]:
     """(the parts of ``text`` that may describe the scene, the words of the parts set aside).
 
