@@ -280,3 +280,12 @@ def test_a_person_placed_then_in_a_vehicle_is_that_vehicle(text, kind):
 )
 def test_a_person_placed_then_in_a_place_stays_a_walker(text):
     assert _kinds(text) == ["pedestrian"]
+
+
+# --- an adverb after the vehicle a person is in ends its phrase ("a man in a van just pulled out") ---------
+def test_a_person_in_a_vehicle_then_an_adverb_is_one_road_user():
+    assert _kinds("Doing 25 mph when a woman in a blue van just pulled out of a side road.") == ["van"]
+
+
+def test_a_noun_after_the_vehicle_still_names_a_thing_of_it():
+    assert _kinds("Doing 25 mph; a baby in a car seat was crying as a bus pulled out in front of me.") == ["truck"]

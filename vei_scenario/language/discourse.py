@@ -576,8 +576,12 @@ def _bare_person(out: list[str], kind_at: KindAt) -> int | None:
 
 def _goes_on(tokens: list[str], k: int, known: Known) -> bool:
     """Whether the noun phrase goes on past ``k`` with a noun the reader has no phrase for ("a baby in a
-    car seat": the seat, not the car)."""
-    return k < len(tokens) and tokens[k].isalpha() and not known(tokens, k) and tokens[k] not in PREPOSITIONS
+    car seat": the seat, not the car). An adverb is no noun ("a man in a van just pulled out": the van's
+    phrase ends there)."""
+    if k >= len(tokens) or not tokens[k].isalpha() or known(tokens, k) or tokens[k] in PREPOSITIONS:
+        return False
+    pos = lemmas(tokens[k])
+    return not ("ADV" in pos and "NOUN" not in pos)
 
 
 #: Animals: one led, walked or ridden by a person ("a man leading a horse", "a girl riding a pony") is
