@@ -925,3 +925,61 @@ def test_the_unnamed_subject_that_acts_is_the_road_user(text, expected):
 
 def test_the_first_unnamed_subject_still_counts_when_none_acts_plainly():
     assert kinds("The rider shot off the kerb in front of me.") == ["e-scooter"]
+
+
+# --- "one <noun>" the reader has no word for opens someone new, as "a <noun>" does ("one aunty was ...") ---
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A taxi cut across me at the signal, and one granny was crossing the road in front.", ["car", "pedestrian"]),
+        ("A van overtook me at 30 mph, and one uncle was walking across the road ahead.", ["pedestrian", "van"]),
+        ("A van overtook me at 40 km/h, same time one auntie stepped off the kerb on the left.", ["pedestrian", "van"]),
+    ],
+    ids=["one-granny", "one-uncle", "same-time-one"],
+)
+def test_one_unknown_person_is_someone_new(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A taxi cut across me at the signal, and one lane was closed for works.", ["car"]),
+        ("A taxi cut across me at the signal; one wing mirror was folded in.", ["car"]),
+        ("A taxi cut across me at the signal, one of those days.", ["car"]),
+        ("One morning a stoat ran out in front of me at 30 mph.", ["pedestrian"]),
+    ],
+    ids=["one-lane", "one-mirror", "one-of-those", "one-morning-a"],
+)
+def test_one_thing_is_no_road_user(text, expected):
+    assert kinds(text) == expected
+
+
+# --- "the deceased", "the injured": an adjective standing for a person, subject of a verb, is that person ---
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("The accused drove his tractor at 30 mph in the dark. The deceased was walking on the verge.", ["pedestrian"]),
+        ("My lorry was doing 40 mph. The injured stepped out from behind a hedge.", ["pedestrian"]),
+    ],
+    ids=["deceased-walking", "injured-stepped"],
+)
+def test_an_adjective_standing_for_a_person_is_a_road_user(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["I drove home at 30 mph. The same happened again at the junction.", "I drove at 30 mph. The tired often nap."],
+    ids=["the-same", "the-tired-in-general"],
+)
+def test_an_adjective_that_names_no_one_is_no_road_user(text):
+    assert kinds(text) == []
+
+
+def test_one_picked_out_of_many_who_reports_is_no_new_road_user():
+    text = (
+        "Reports of a cyclist riding the wrong way on the bypass at dawn. "
+        "One motorist heading east says she only just missed him."
+    )
+    assert kinds(text) == ["bicycle"]

@@ -253,3 +253,39 @@ def test_a_bare_rider_of_a_terse_note_is_an_e_scooter_rider(text, kind):
 )
 def test_a_rider_whose_vehicle_is_said_keeps_it(text, kind):
     assert _kinds(text) == [kind]
+
+
+# --- a person, where they are, then the vehicle they are in ("the guy in front in a red van"): that vehicle ---
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("I was at 80 kph and the guy in front in a red van slams on.", "van"),
+        ("I was at 80 kph and the woman ahead in a white lorry braked hard.", "truck"),
+        ("Doing 30 mph, a man behind me in a pickup flashed and overtook me.", "van"),
+    ],
+    ids=["in-front-in-a-van", "ahead-in-a-lorry", "behind-me-in-a-pickup"],
+)
+def test_a_person_placed_then_in_a_vehicle_is_that_vehicle(text, kind):
+    assert _kinds(text) == [kind]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Doing 30 mph, a man ahead in the road waved at me to stop.",
+        "Doing 30 mph, the girl in front on the pavement stepped out into the road.",
+        "Doing 30 mph, a lad in front in dark clothes stepped out into the road.",
+    ],
+    ids=["in-the-road", "on-the-pavement", "in-dark-clothes"],
+)
+def test_a_person_placed_then_in_a_place_stays_a_walker(text):
+    assert _kinds(text) == ["pedestrian"]
+
+
+# --- an adverb after the vehicle a person is in ends its phrase ("a man in a van just pulled out") ---------
+def test_a_person_in_a_vehicle_then_an_adverb_is_one_road_user():
+    assert _kinds("Doing 25 mph when a woman in a blue van just pulled out of a side road.") == ["van"]
+
+
+def test_a_noun_after_the_vehicle_still_names_a_thing_of_it():
+    assert _kinds("Doing 25 mph; a baby in a car seat was crying as a bus pulled out in front of me.") == ["truck"]

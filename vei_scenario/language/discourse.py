@@ -369,28 +369,15 @@ def _riders(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
             out.append(tokens[i])
             i += 1
             continue
-        # the person: a walker's noun (or a word the reader lacks) right before the preposition
-        k = len(out) - 1
-        person_start = None
-        for back in range(k, max(k - 3, -1), -1):
-            found = kind_at(out, back)
-            if found is not None and found[0] == "pedestrian" and back + found[1] == k + 1:
-                p = _phrase_at(out, back, kind_at, known)
-                person_start = p.start if p is not None and p.det else None
-                if person_start is not None:  # (else a longer noun may end here: "an old man")
-                    break
-        if person_start is None and not known(out, k):
-            person_start = _unknown_person(out, k, known)
-        counted = False
-        if person_start is None and not known(out, k):
-            person_start = _counted_people(out, k, known)
-            counted = person_start is not None
-        if person_start is None and out[k] in SOMEONE:
-            person_start, counted = k, False  # ("behind someone on a bike": a rider, new)
-        if person_start is None:
-            person_start = _bare_person(out, kind_at)
+        person_start, counted = _person_before(out, kind_at, known)
+        place: list[str] = []  # ("the guy in front in a red van": where the person is, said of the vehicle)
+        n = _place_words(out)
+        if person_start is None and n and len(out) > n:
+            person_start, counted = _person_before(out[:-n], kind_at, known)
+            place = out[-n:] if person_start is not None and not counted else []
+            person_start = person_start if place else None
         opener = out[person_start] in DETERMINERS | SOMEONE or counted if person_start is not None else False
-        if person_start is None or (not opener and person_start != len(out) - 1):
+        if person_start is None or (not opener and person_start != len(out) - len(place) - 1):
             out.append(tokens[i])
             i += 1
             continue
@@ -432,8 +419,49 @@ def _riders(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
         det = out[person_start] if out[person_start] in DETERMINERS else "a"  # ("guy on a moped": a rider)
         det = "a" if det in INDEFINITE | POSSESSIVE else det  # ("my mate on his bike": a rider)
         out[person_start:] = [det]
+        if place:
+            out.extend([*tokens[j : head + ride[1]], *place])
+            j = head + ride[1]
         i = j
     return out
+
+
+#: Where someone is, said right after their noun ("the guy in front", "a lad next to me").
+_PLACE_PHRASES = (
+    ("in", "front", "of", "me"), ("in", "front", "of", "us"), ("next", "to", "me"), ("next", "to", "us"),
+    ("ahead", "of", "me"), ("ahead", "of", "us"), ("behind", "me"), ("behind", "us"), ("beside", "me"),
+    ("beside", "us"), ("in", "front"), ("ahead",), ("behind",), ("alongside",), ("opposite",),
+)  # fmt: skip
+
+
+def _place_words(out: list[str]) -> int:
+    """How many words at the end of ``out`` say where someone is ("in front", "behind me"), else 0."""
+    return next((len(p) for p in _PLACE_PHRASES if tuple(out[-len(p) :]) == p), 0)
+
+
+def _person_before(out: list[str], kind_at: KindAt, known: Known) -> tuple[int | None, bool]:
+    """Where the person whose noun ends ``out`` begins (a walker's noun, a word the reader lacks after
+    a determiner, a count of people, "someone", or a bare person's noun opening a clause), and
+    whether it is a count of people; (None, False) if no person ends it."""
+    k = len(out) - 1
+    for back in range(k, max(k - 3, -1), -1):
+        found = kind_at(out, back)
+        if found is not None and found[0] == "pedestrian" and back + found[1] == k + 1:
+            p = _phrase_at(out, back, kind_at, known)
+            if p is not None and p.det:  # (else a longer noun may end here: "an old man")
+                return p.start, False
+    person_start = None
+    if not known(out, k):
+        person_start = _unknown_person(out, k, known)
+    if person_start is None and not known(out, k):
+        person_start = _counted_people(out, k, known)
+        if person_start is not None:
+            return person_start, True
+    if person_start is None and out[k] in SOMEONE:
+        return k, False  # ("behind someone on a bike": a rider, new)
+    if person_start is None:
+        person_start = _bare_person(out, kind_at)
+    return person_start, False
 
 
 #: Words that make the vehicle after "on" one vehicle for all who ride it ("on one", "on a single").
@@ -548,8 +576,12 @@ def _bare_person(out: list[str], kind_at: KindAt) -> int | None:
 
 def _goes_on(tokens: list[str], k: int, known: Known) -> bool:
     """Whether the noun phrase goes on past ``k`` with a noun the reader has no phrase for ("a baby in a
-    car seat": the seat, not the car)."""
-    return k < len(tokens) and tokens[k].isalpha() and not known(tokens, k) and tokens[k] not in PREPOSITIONS
+    car seat": the seat, not the car). An adverb is no noun ("a man in a van just pulled out": the van's
+    phrase ends there)."""
+    if k >= len(tokens) or not tokens[k].isalpha() or known(tokens, k) or tokens[k] in PREPOSITIONS:
+        return False
+    pos = lemmas(tokens[k])
+    return not ("ADV" in pos and "NOUN" not in pos)
 
 
 #: Animals: one led, walked or ridden by a person ("a man leading a horse", "a girl riding a pony") is

@@ -86,7 +86,7 @@ from vei_scenario.language.who import (
     proper_names,
     rider_noun,
     shared_scooters,
-    unnamed_subject,
+    unnamed_subjects,
 )
 
 _TOKEN = re.compile(r"\d+(?:\.\d+)?|km/h|m/s²|m/s2|m/s|[a-z][a-z\-]*(?:'[a-z]+)?|'s|[.;,!?:%]")
@@ -1055,9 +1055,12 @@ def _counts_actor(mentions, k: int) -> bool:
 
 
 def _new_unknown_subject(tokens: list[str], i: int) -> bool:
-    """Whether the word at ``i`` names someone new at the start of a clause: "a" or "an" before it,
-    past at most two words the reader has no entry for ("when a black BMW ..."), and a clause
-    opening before that."""
+    """Whether the word at ``i`` names someone new at the start of a clause: "a", "an" or "one" before
+    it ("one aunty was crossing", as people say "one" for "a"), past at most two words the reader has
+    no entry for ("when a black BMW ..."), and a clause opening before that. A noun with an article
+    right after it is no subject ("One day a heron ...": the day is when)."""
+    if tokens[i + 1 : i + 2] and tokens[i + 1] in _DETERMINERS:
+        return False
     j = i - 1
     while j >= 0 and i - j <= 3 and tokens[j] not in _NEW_ONE and _best(tokens, j) is None:
         if tokens[j] in FUNCTION_WORDS or not tokens[j].isalpha():
@@ -1065,16 +1068,26 @@ def _new_unknown_subject(tokens: list[str], i: int) -> bool:
         j -= 1
     if j < 0 or tokens[j] not in _NEW_ONE:
         return False
+    if tokens[j] == "one" and not _finite_next(tokens, i + 1):
+        return False  # ("One motorist heading east tells us ...": one picked out of many, who reports)
     return _clause_opens_before(tokens, j)
+
+
+def _finite_next(tokens: list[str], k: int) -> bool:
+    """Whether the word at ``k`` is a finite verb, not a participle: "was", "is", or a verb read as a
+    behaviour that does not end in -ing ("one aunty was crossing", "one granny stepped off")."""
+    if k >= len(tokens):
+        return False
+    return tokens[k] in ("was", "is", "were", "are") or (_does_next(tokens, k) and not tokens[k].endswith("ing"))
 
 
 #: Determiners that introduce someone new ("this", which may also point back, "this lad", "this
 #: layout", is left out).
-_NEW_ONE = frozenset({"a", "an", "another", "some"})
+_NEW_ONE = frozenset({"a", "an", "another", "some", "one"})
 #: Adverbs of time or sequence a clause may open with before its subject ("Yesterday a ...", "Then a ...").
 _TIME_ADVERBS = frozenset({"yesterday", "today", "tonight", "then", "suddenly", "also", "now", "later", "once"})
-#: Words that make a time adverbial of the noun after them ("last week", "one evening", "this morning").
-_TIME_OPENERS = frozenset({"last", "one", "this", "that", "next"})
+#: Words that make a time adverbial of the noun after them ("last week", "one evening", "same time").
+_TIME_OPENERS = frozenset({"last", "one", "this", "that", "next", "same"})
 
 
 def _clause_opens_before(tokens: list[str], j: int) -> bool:
@@ -1365,13 +1378,18 @@ def _resolve_relation(a: _Actor, map_kind: str | None, left_hand: bool = False) 
     return a.relation or side or ("ahead" if a.followed else None)  # (the lead car: ahead in the ego's lane)
 
 
+#: At most this many nouns the reader lacks are tried as the road user of a text that names none.
+_UNNAMED_TRIES = 3
+
+
 def read(text: str) -> Reading:
     """Parse ``text`` into a :class:`~vei_scenario.language.reading.Reading` (with ``ignored``
     words); raise :class:`~vei_scenario.language.reading.NotUnderstood` naming what cannot be placed.
 
     Where no road user is found, a noun the lexicon lacks that is the subject of a verb ("the rider
     shot off the kerb", "a figure in black walked out") is read as a road user of a general noun
-    (:func:`who.unnamed_subject`), if that gives it a behaviour; the noun is listed as not used."""
+    (:func:`who.unnamed_subjects`: of the first few, the first that gives its road users a behaviour);
+    the noun is listed as not used."""
     try:
         reading, refused = _read(text), None
     except NotUnderstood as e:
@@ -1380,8 +1398,8 @@ def read(text: str) -> Reading:
         reading, refused = None, e
     if reading is not None and reading.actors:
         return reading
-    unnamed = unnamed_subject(text, lambda w: _best([w], 0) is not None, _actor_word, _acts_at)
-    if unnamed is not None:
+    candidates = unnamed_subjects(text, lambda w: _best([w], 0) is not None, _actor_word, _acts_at)
+    for unnamed in candidates[:_UNNAMED_TRIES]:
         try:
             again = _read(unnamed[0])
         except NotUnderstood:

@@ -374,12 +374,25 @@ def unnamed_subject(
     subjects, the first that does what a road user does in its clause (``acts(words, i)``: a behaviour
     from word ``i`` before the clause ends) is taken: "The app sent me down the high street. Two lads
     walked out in front of me" is about the lads, not the app."""
+    chosen = unnamed_subjects(text, known, road_user, acts)
+    return chosen[0] if chosen else None
+
+
+def unnamed_subjects(
+    text: str,
+    known: Callable[[str], bool],
+    road_user: Callable[[str], bool],
+    acts: Callable[[list[str], int], bool] = lambda words, i: True,
+) -> list[tuple[str, str]]:
+    """Each reading :func:`unnamed_subject` may take, best first (those that act, else all), so that a
+    caller may pass over one whose deed names no road user of its own ("The accused was driving a
+    lorry. The deceased was walking ...": the one driving is the lorry's driver; the one walking is the
+    road user)."""
     words = list(_WORD.finditer(text))
     lower = [m.group(0).lower() for m in words]
     found = _unnamed_subjects(text, words, lower, known, road_user)
     acting = [c for c in found if acts(lower[: _clause_end(text, words, c[2])], c[2] + 1)]
-    chosen = acting or found
-    return chosen[0][:2] if chosen else None
+    return [c[:2] for c in acting or found]
 
 
 def _clause_end(text: str, words: list[re.Match], k: int) -> int:
@@ -388,6 +401,14 @@ def _clause_end(text: str, words: list[re.Match], k: int) -> int:
         if any(c in _CLAUSE_MARKS for c in text[words[n - 1].end() : words[n].start()]):
             return n
     return len(words)
+
+
+def _adjective_as_noun(lower: list[str], n: int, h: int) -> bool:
+    """Whether the word at ``h`` is a participle adjective standing for a person right after "the" at
+    ``n`` ("the deceased was walking", "the injured stepped out"): a report's way of naming someone by
+    their state ("the same happened" is no one)."""
+    pos = lemmas(lower[h])
+    return h == n + 1 and lower[n] == "the" and lower[h].endswith("ed") and "ADJ" in pos and "VERB" in pos
 
 
 def _unnamed_subjects(
@@ -405,7 +426,7 @@ def _unnamed_subjects(
         for h in range(k, min(k + 3, len(words) - 1)):
             if road_user(lower[h]) or known(lower[h]) or lower[h] in _OPENING or rider_noun(lower[h - 1]):
                 break  # (a road user's thing, "a bike rack", "the rider manual"; or a phrase the reader has)
-            if ("NOUN" in lemmas(lower[h]) or not english(lower[h])) and (
+            if ("NOUN" in lemmas(lower[h]) or not english(lower[h]) or _adjective_as_noun(lower, n, h)) and (
                 lower[h + 1] in DESCRIBING or _verb_word(lower[h + 1])
             ):
                 head = h
