@@ -736,6 +736,41 @@ def coming_at_the_ego(tokens: list[str], i: int) -> int | None:
     return None
 
 
+#: Verbs of going fast or slipping through that take "up" a side of the ego ("shot up the inside").
+_CATCHING_UP = _TRAVEL | frozenset(
+    {"go", "shoot", "tear", "nip", "creep", "sneak", "squeeze", "filter", "whizz", "bomb", "blast", "roar", "belt"}
+)
+#: Side words of the ego's flanks ("up the inside", "up my nearside", "up the left-hand side").
+_FLANKS = frozenset(
+    {"inside", "outside", "nearside", "offside", "near-side", "off-side", "left", "right", "left-hand", "right-hand"}
+)
+
+
+def up_a_side_of_the_ego(tokens: list[str], i: int) -> int | None:
+    """Where a phrase ends that says a road user comes up one side of the ego, starting at "up" (token
+    ``i``) after a verb of going, past a participle of manner ("shot up the inside", "came tearing up
+    my nearside", "raced up the left-hand side"), or None. Why: coming up a side is catching the ego
+    up from behind, an overtake or undertake; read as the side word alone it put the road user beside
+    the ego. Not up the side of something else ("up the inside of the queue"; "of me" names the side),
+    not the ego's own move ("I crept up the inside"), nor up a lane ("went up the right lane") or a hill
+    (no side of the ego)."""
+    if tokens[i] != "up" or i + 2 >= len(tokens) or tokens[i + 1] not in _DETERMINERS:
+        return None
+    if tokens[i + 2] not in _FLANKS:
+        return None
+    end = i + 3
+    if tokens[end : end + 1] in (["lane"], ["lanes"], ["hand"]):
+        return None  # ("went up the right lane": along a lane, no catching up said)
+    if tokens[end : end + 1] == ["side"]:
+        end += 1
+    if tokens[end : end + 1] == ["of"]:
+        return None  # ("up the inside of the queue": of something else; "of me" says the side outright)
+    for k in (i - 1, i - 2):
+        if k >= 0 and set(lemmas(tokens[k]).get("VERB", ())) & _CATCHING_UP:
+            return None if k and tokens[k - 1] in ("i", "we") else end
+    return None
+
+
 #: Adjectives that say a direction is against the ego's, and the nouns of a direction.
 _AGAINST = frozenset({"opposite", "contrary", "other", "reverse", "opposing"})
 _DIRECTIONS = frozenset({"direction", "way"})
@@ -1214,7 +1249,7 @@ def place_after_degree(tokens: list[str], i: int, key: tuple[str, ...], place_at
 #: one of these, after a verb that does not say a heading, "right" means "just". ("right across", "right
 #: at" are read with the verb before them, by the reader's own list.)
 _STRESSED = frozenset(
-    {"out", "up", "into", "onto", "through", "over", "past", "under", "off", "down", "along",
+    {"out", "up", "into", "onto", "through", "over", "past", "under", "off", "down", "along", "across",
      "round", "around", "beside", "alongside", "away", "back", "behind", "toward", "towards", "in", "on"}
 )  # fmt: skip
 #: Verbs whose "left"/"right" is the way they head ("turned right into", "swerved right onto").
@@ -1234,8 +1269,9 @@ def not_a_side(tokens: list[str], i: int) -> bool:
     of other classes, and read as a side they place a road user on the wrong side or turn the ego:
 
     - "right" stressing a particle or preposition ("pulled right out", "came right up behind me", "ran
-      right past my mirror"): unless a determiner or preposition says it is a place ("to the
-      right across the road") or the verb before says a heading ("turned right into the side road");
+      right past my mirror", "cut right across my front wheel"): unless a determiner or preposition
+      says it is a place ("to the right across the road") or the verb before says a heading ("turned
+      right into the side road");
     - "left" the past of "leave", after a subject or a perfect auxiliary and before what was left ("as we
       left the roundabout", "she had just left the car park"), never after a determiner ("on the left
       the van") or a heading verb ("turn left the moment ...")."""
