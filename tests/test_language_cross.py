@@ -413,3 +413,27 @@ def test_the_lane_count_after_the_ego_lane_is_no_speed_of_the_one_cutting_in():
     (actor,) = reading.actors
     assert actor.behaviours[0][0] == "cut_in"
     assert actor.speed_mps is None or actor.speed_mps > 5
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # a crossing named by a place noun before it, as a heading, is a place, nobody crossing
+        "Riverside towpath crossing. A cyclist and a dog walker come off the path on my left and cross the road.",
+        "Mill Lane crossing. A jogger and a boy on a scooter step off the kerb on the left and cross in front of me.",
+    ],
+)
+def test_a_crossing_named_as_a_heading_is_no_crossing_act(text):
+    assert [a.relation for a in read(text).actors] == ["roadside_left", "roadside_left"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # near misses: a road user before the word crosses
+        "Two kids crossing.",
+        "Cyclist crossing from the left at 15 km/h.",
+    ],
+)
+def test_a_road_user_crossing_as_a_heading_still_crosses(text):
+    assert all(b[0] == "cross_in_front" for a in read(text).actors for b in a.behaviours[:1])
