@@ -739,28 +739,3 @@ def test_a_place_beside_the_road_where_one_waits_is_its_roadside(text, expected)
 )
 def test_the_oncoming_lane_of_one_from_behind_is_where_it_overtakes(text, expected):
     assert relation(text) == expected
-
-
-@pytest.mark.parametrize(
-    "text, expected",
-    [
-        # coming up one side of the ego ("up the inside", "up my nearside") is catching it up from behind
-        (
-            "Middle lane at 70 mph and a sports bike came tearing up the inside and tucked in just ahead of me.",
-            "behind",
-        ),
-        ("A taxi shot up the outside and cut in right in front of us at 40 km/h.", "behind"),
-        ("We were queuing at 10 mph when a moped nipped up my nearside and pulled in ahead.", "behind"),
-        ("A courier van raced up the left-hand side and swung in front of the ego.", "behind"),
-        # near misses: up the inside of something else, up a road, or the ego doing it
-        ("A cyclist ahead of me was riding up the inside of the queue.", "ahead"),
-        ("A tractor came up the hill towards us in our lane.", "oncoming"),
-        ("A van went up the right lane and parked.", "roadside_right"),  # (as "drove in the right lane")
-    ],
-)
-def test_coming_up_a_side_of_the_ego_starts_behind(text, expected):
-    assert relation(text) == expected
-
-
-def test_the_ego_coming_up_the_inside_places_no_one_behind():
-    assert relation("I crept up the inside of a lorry and a van on my left pulled across.") != "behind"

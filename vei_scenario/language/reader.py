@@ -697,12 +697,6 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             clauses[-1][1].append(_Mention("relation", "oncoming", words, i, prev, end=at_ego, det=det))
             i = at_ego
             continue
-        catching = sides.up_a_side_of_the_ego(tokens, i)
-        if catching is not None:  # "shot up the inside": it catches the ego up from behind
-            words = " ".join(tokens[i:catching])
-            clauses[-1][1].append(_Mention("relation", "behind", words, i, prev, end=catching, det=det))
-            i = catching
-            continue
         against = sides.the_other_direction(tokens, i)
         if against is not None:  # "in the contrary direction": it comes towards the ego
             words = " ".join(tokens[i:against])

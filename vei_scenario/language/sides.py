@@ -736,41 +736,6 @@ def coming_at_the_ego(tokens: list[str], i: int) -> int | None:
     return None
 
 
-#: Verbs of going fast or slipping through that take "up" a side of the ego ("shot up the inside").
-_CATCHING_UP = _TRAVEL | frozenset(
-    {"go", "shoot", "tear", "nip", "creep", "sneak", "squeeze", "filter", "whizz", "bomb", "blast", "roar", "belt"}
-)
-#: Side words of the ego's flanks ("up the inside", "up my nearside", "up the left-hand side").
-_FLANKS = frozenset(
-    {"inside", "outside", "nearside", "offside", "near-side", "off-side", "left", "right", "left-hand", "right-hand"}
-)
-
-
-def up_a_side_of_the_ego(tokens: list[str], i: int) -> int | None:
-    """Where a phrase ends that says a road user comes up one side of the ego, starting at "up" (token
-    ``i``) after a verb of going, past a participle of manner ("shot up the inside", "came tearing up
-    my nearside", "raced up the left-hand side"), or None. Why: coming up a side is catching the ego
-    up from behind, an overtake or undertake; read as the side word alone it put the road user beside
-    the ego. Not up the side of something else ("up the inside of the queue"; "of me" names the side),
-    not the ego's own move ("I crept up the inside"), nor up a lane ("went up the right lane") or a hill
-    (no side of the ego)."""
-    if tokens[i] != "up" or i + 2 >= len(tokens) or tokens[i + 1] not in _DETERMINERS:
-        return None
-    if tokens[i + 2] not in _FLANKS:
-        return None
-    end = i + 3
-    if tokens[end : end + 1] in (["lane"], ["lanes"], ["hand"]):
-        return None  # ("went up the right lane": along a lane, no catching up said)
-    if tokens[end : end + 1] == ["side"]:
-        end += 1
-    if tokens[end : end + 1] == ["of"]:
-        return None  # ("up the inside of the queue": of something else; "of me" says the side outright)
-    for k in (i - 1, i - 2):
-        if k >= 0 and set(lemmas(tokens[k]).get("VERB", ())) & _CATCHING_UP:
-            return None if k and tokens[k - 1] in ("i", "we") else end
-    return None
-
-
 #: Adjectives that say a direction is against the ego's, and the nouns of a direction.
 _AGAINST = frozenset({"opposite", "contrary", "other", "reverse", "opposing"})
 _DIRECTIONS = frozenset({"direction", "way"})
