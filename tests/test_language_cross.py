@@ -441,3 +441,27 @@ def test_going_out_with_or_after_a_thing_is_crossing(text):
 )
 def test_a_thing_sent_out_or_the_egos_own_move_is_no_crossing(text):
     assert "cross_in_front" not in [b[0] for a in read(text).actors for b in a.behaviours]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # a crossing named by a place noun before it, as a heading, is a place, nobody crossing
+        "Riverside towpath crossing. A cyclist and a dog walker come off the path on my left and cross the road.",
+        "Mill Lane crossing. A jogger and a boy on a scooter step off the kerb on the left and cross in front of me.",
+    ],
+)
+def test_a_crossing_named_as_a_heading_is_no_crossing_act(text):
+    assert [a.relation for a in read(text).actors] == ["roadside_left", "roadside_left"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # near misses: a road user before the word crosses
+        "Two kids crossing.",
+        "Cyclist crossing from the left at 15 km/h.",
+    ],
+)
+def test_a_road_user_crossing_as_a_heading_still_crosses(text):
+    assert all(b[0] == "cross_in_front" for a in read(text).actors for b in a.behaviours[:1])

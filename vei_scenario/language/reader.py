@@ -477,6 +477,22 @@ def _acts_at(tokens: list[str], i: int) -> bool:
     return _does_next(tokens, i) or _does_next(tokens, i + 1) or (tokens[i] in DESCRIBING and _does_soon(tokens, i))
 
 
+#: What may end a heading that names a crossing ("Mill Lane crossing.", "Station Road crossing, 8am:").
+_HEADING_ENDS = frozenset((".", ",", ":", ";", "!", "?", "-", "—"))
+
+
+def _crossing_named_as_a_place(tokens: list[str], i: int) -> bool:
+    """Whether "crossing" at ``i`` is the head of a place's name said on its own ("Canal Street towpath
+    crossing.", "School crossing, 8am:"): a noun that names no road user right before it, and the
+    heading's end right after. Why: read as the verb it made a road user named later cross twice, from
+    no side, and put it on the other kerb. Not after a road user ("Two kids crossing.": they cross)."""
+    if tokens[i] != "crossing" or not i or (i + 1 < len(tokens) and tokens[i + 1] not in _HEADING_ENDS):
+        return False
+    before, pos = tokens[i - 1], _pos(tokens[i - 1])
+    named = "NOUN" in pos or (not pos and before.isalpha())  # (a name the lexicon lacks: "towpath")
+    return named and before not in FUNCTION_WORDS and not _actor_at(tokens, i - 1)
+
+
 def _actor_at(tokens: list[str], i: int) -> bool:
     """Whether an actor's name starts at ``i`` (of any length: "bus" in "bus stops" too)."""
     return i < len(tokens) and any(
@@ -890,6 +906,10 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             continue
         if slot == "behaviour" and _bare_noun(tokens, i, key):
             ignored.append(tok)  # "head-on crash.", ", crash", "Full brake.": what happened, said as a noun
+            i += 1
+            continue
+        if slot == "behaviour" and len(key) == 1 and _crossing_named_as_a_place(tokens, i):
+            ignored.append(tok)  # ("Canal Street towpath crossing." as a heading: where, not who crosses)
             i += 1
             continue
         if slot == "behaviour" and len(key) == 1 and (tokens[i - 1 : i] in _POSSESSIVES or noun_here) and not braking:
