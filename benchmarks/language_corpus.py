@@ -53,6 +53,8 @@ FIRST = {
     "language_independent_w.json": ((50, 49, 19, 48), "sealed for two rounds of reader work"),
     "language_independent_x.json": ((50, 49, 15, 45), "sealed for two rounds of reader work"),
     "language_independent_y.json": ((50, 50, 18, 47), "sealed for two rounds of reader work"),
+    "language_independent_z3.json": ((50, 50, 8, 46), "sealed for two rounds of reader work"),
+    "language_independent_z4.json": ((50, 50, 5, 50), "sealed for two rounds of reader work"),
 }
 
 
