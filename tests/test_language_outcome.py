@@ -864,3 +864,30 @@ def test_a_plain_stop_after_a_sudden_act_is_a_near_miss(text, intent):
 )
 def test_seen_just_in_time_is_no_escape(text, intent):
     assert _intent(text) == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("A lad on a scooter shot out of a car park, I slammed the anchors on. He's fine.", "near_miss"),
+        ("Some kid darted out from behind a van and I had to swerve. Nothing happened in the end.", "near_miss"),
+        ("Out of nowhere a taxi cut across my bonnet, I braked hard, we're all fine.", "near_miss"),
+        ("A cyclist rode along beside me for a mile. Nothing happened.", "safe"),
+        ("The van just carried on alongside me the whole way, nothing happened, a dull trip.", "safe"),
+        ("A woman crossed at the zebra, I waited for her, she's fine.", "safe"),
+        ("A boy ran out, I braked, and he hit my wing. He's fine though.", "collision"),
+    ],
+    ids=[
+        "shot-out-fine",
+        "darted-nothing",
+        "cut-across-fine",
+        "along-nothing",
+        "alongside-fine",
+        "waited-fine",
+        "hit-fine",
+    ],
+)
+def test_fine_after_a_forced_escape_is_a_near_miss(text, intent):
+    """That everyone was fine, or nothing happened, says how it ended: after a sudden act or the ego's
+    hard braking or swerve it was a near miss avoided; with nothing forced, a safe pass."""
+    assert read(text).intent == intent

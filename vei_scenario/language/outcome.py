@@ -1159,7 +1159,7 @@ def outcome_cues(said: str) -> list[Cue]:
             if (w in _SAFE_WORDS or went) and not _denied_before(words, i):
                 # ("fine rain", "on a fine, dry evening": a word of the weather before its noun)
                 if not (w == "fine" and (i + 1 < len(words) or words[i - 1 : i] in (["a"], ["an"], ["the"]))):
-                    add("safe")
+                    add("unharmed" if w == "fine" else "safe")  # ("she's fine": how it left them)
             then = (
                 words[i + 2]
                 if i + 2 < len(words) and words[i + 1] == "else"
@@ -1172,7 +1172,7 @@ def outcome_cues(said: str) -> list[Cue]:
                 and words[i - 1 : i] not in (["like"], ["if"])
                 and ("ADJ" in _pos(then) or _lemmas(then) & {"happen", "occur"})
             ):
-                add("safe")  # ("nothing happened", "Nothing dramatic": nothing of note)
+                add("unharmed")  # ("nothing happened", "Nothing dramatic": nothing of note)
             if w in _CLOSE and _predicate(words, i):
                 add("safe" if _denied_before(words, i) else "close")  # ("nobody close"; "it was close")
             before = whole[: at + i]  # (its sentence up to this word, with its conjunctions)
@@ -1224,8 +1224,15 @@ def decide(cues: list[Cue], sudden: bool = False) -> str | None:
     or a close call a near miss; then a stated safe pass; a denied contact is a near miss unless the
     ego only gave way; the ego's evasion alone a near miss, its giving way alone a safe pass.
     ``sudden``: a road user's act is said to be sudden ("shot out", "suddenly swerved"); then the
-    ego's plain stop or brake, with nothing else said, is what it was forced to do: a near miss."""
+    ego's plain stop or brake, with nothing else said, is what it was forced to do: a near miss. That
+    everyone was fine or nothing happened says how it ended: after a sudden act or the ego's braking
+    or evasion it was a near miss avoided ("he shot out, I stood on the brakes, he's fine"); alone, a
+    safe pass."""
     kinds = {c.kind for c in cues}
+    if "unharmed" in kinds:  # (nobody hurt, nothing happened: how it ended, not how close it was)
+        kinds.discard("unharmed")
+        forced = sudden or kinds & {"evade", "brake"}
+        kinds.add("evade" if forced and not kinds & {"safe", "yield"} else "safe")
     if sudden and kinds & {"stop", "brake"} and not kinds & {"contact", "safe", "yield", "required", "near"}:
         kinds.add("evade")  # ("a kid shot out in front of me and I just stopped")
     if "stop" in kinds:

@@ -2301,7 +2301,9 @@ def _read(text: str) -> Reading:
     r.ignored = list(dict.fromkeys(ignored))
     r.read_as = read_as
     cues = outcome_cues(said)
-    sudden = any(b[2] == "dangerous" for a in r.actors for b in a.behaviours)  # ("shot out", "suddenly")
+    sudden = any(  # ("shot out", "suddenly"; not going on as it was: "just carried on alongside")
+        b[2] == "dangerous" and b[0] not in _GOING_ON for a in r.actors for b in a.behaviours
+    )
     r.intent = decide(cues, sudden)  # (the outcome reader alone decides contact: not "hit the horn", "hit the brakes")
     told = {w for cue in cues for w in cue.words.split()}  # (words the outcome was read from)
     r.ignored = [w for w in r.ignored if w not in told]
@@ -2401,6 +2403,8 @@ def _criticality_said_apart(clauses, specs: list[ActorSpec]) -> None:
 
 #: What someone does when a road user comes into its path: braking, slowing, stopping.
 _REACTIONS = ("sudden_stop", "stop", "change_speed")
+#: Behaviours of a road user going on as it was: none is an act that can be sudden.
+_GOING_ON = frozenset(("keep_going", "keep_lane", "along_road", "follow_vehicle"))
 #: What someone does to get out of the way: swerving, dodging.
 _EVASIONS = ("cut_in", "change_lane", "cut_out")
 #: Behaviours only a vehicle does: said with no road user, a car does them.
