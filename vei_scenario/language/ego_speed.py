@@ -18,6 +18,7 @@ Two ways people give the ego's speed that no number grammar of one road user rea
 from __future__ import annotations
 
 from vei_scenario.language import vocabulary as V
+from vei_scenario.language.discourse import FIRST_PERSON
 from vei_scenario.language.ego import SENTENCE_END
 from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.quantities import _is_number
@@ -184,8 +185,6 @@ PARTY = frozenset(
      "brother", "sister", "son", "daughter", "uncle", "aunt", "auntie", "aunty", "cousin", "boyfriend",
      "girlfriend", "fiance", "fiancee", "friend", "mate", "bhaiya", "didi", "chacha", "mamu"}
 )  # fmt: skip
-#: First-person words: a story told by someone in it.
-_NARRATOR = frozenset({"i", "we", "me", "us", "my", "our"})
 #: Words between a subject and its verb of going ("was", "had been", "was still").
 _AUX = frozenset({"was", "were", "is", "are", "had", "has", "been", "still", "just"})
 
@@ -208,7 +207,7 @@ def party_at_the_wheel(tokens: list[str], speeds: set[int], covered: set[int]) -
     narrator is in, the ego, so the speed is the ego's, not that of the road user named before. Words the
     reader reads as a road user or anything else (``covered``) name no such person."""
     out: dict[int, bool] = {}
-    if not _NARRATOR & set(tokens):
+    if not FIRST_PERSON & set(tokens):
         return out
     for k in range(len(tokens)):
         if k and tokens[k - 1] not in _OPENERS:
