@@ -101,3 +101,50 @@ def test_what_a_named_road_user_is_near_miss() -> None:
 def test_a_list_of_road_users_is_not_an_apposition() -> None:
     text = "Three road users came through the crossing: a van, woman in a red coat, and a cyclist, all at 10 mph."
     assert len(kinds(text)) == 3
+
+
+# ---- a vehicle steered in a log with no subject ------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        (
+            "Departing the depot at 20 km/h when a cyclist swerved in front. Braked hard and brought the bus "
+            "to a halt.",
+            ["bicycle"],
+        ),
+        (
+            "Pulling away from the stop at 10 mph. A pedestrian stepped off the kerb 5 m ahead. Sounded the horn "
+            "and stopped the bus just short.",
+            ["pedestrian"],
+        ),
+        (
+            "Doing 30 in a 30. A lad on a bike came out of a side road. Steered the van left and missed him.",
+            ["bicycle"],
+        ),
+        (
+            "Shift start. Left the depot at 15 km/h; a jogger ran across the track ahead. Rang the bell and "
+            "brought the tram to a stop.",
+            ["pedestrian"],
+        ),
+        ("Slowed to 20 km/h as a kid chased a ball into the road, pulled the lorry over and waited.", ["pedestrian"]),
+    ],
+)
+def test_a_vehicle_steered_in_a_log_with_no_subject_is_the_writers(text: str, expected: list[str]) -> None:
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        # near misses: the steering verb has a subject of its own, or the vehicle is where the writer stops
+        ("Doing 20 km/h. A bus driver pulled out from the stop and stopped the bus across my lane.", ["truck"]),
+        ("Waiting at the lights. A taxi driver pulled up beside me and parked the cab on the zigzags.", ["car"]),
+        ("Doing 20 km/h. Saw a lorry driver ahead of me stop the lorry across the road.", ["truck"]),
+        ("Doing 30 mph. Stopped behind the van at the lights, and a cyclist came up the inside.", None),
+    ],
+)
+def test_a_vehicle_steered_in_a_log_near_misses(text: str, expected: list[str] | None) -> None:
+    got = kinds(text)
+    assert got == expected if expected is not None else len(got) == 2
