@@ -148,3 +148,15 @@ def test_a_vehicle_steered_in_a_log_with_no_subject_is_the_writers(text: str, ex
 def test_a_vehicle_steered_in_a_log_near_misses(text: str, expected: list[str] | None) -> None:
     got = kinds(text)
     assert got == expected if expected is not None else len(got) == 2
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Doing 35 mph past the estate entrance when a cyclist pulled out in front of me.",
+        "I was at 20 km/h on the forecourt of the car dealership when a cyclist cut across in front of me.",
+        "Turning into the car entrance at 10 mph, a cyclist came up on my left.",
+    ],
+)
+def test_a_place_named_after_a_vehicle_is_no_road_user(text: str) -> None:
+    assert kinds(text) == ["bicycle"]
