@@ -160,3 +160,33 @@ def test_a_vehicle_steered_in_a_log_near_misses(text: str, expected: list[str] |
 )
 def test_a_place_named_after_a_vehicle_is_no_road_user(text: str) -> None:
     assert kinds(text) == ["bicycle"]
+
+
+# ---- the writer's vehicle shaken by what passes it ---------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("A lorry came past me at speed on the motorway, I was doing 60, and the whole car shook.", ["truck"]),
+        ("I was doing 50 mph when a coach overtook me and the van rocked in its wake.", ["truck"]),
+        ("We were sitting at 40 mph when a bus passed us and the whole car wobbled.", ["truck"]),
+        ("I'm at 70 in lane one, an artic flies by on the right and the car shudders.", ["truck"]),
+        ("I was at 30 mph when a tanker went past, the hatchback swayed a bit but I held my line.", ["truck"]),
+    ],
+)
+def test_the_writers_vehicle_shaken_by_what_passes_is_the_ego(text: str, expected: list[str]) -> None:
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        # near misses: a vehicle placed apart from the writer, or introduced before, shakes on its own
+        ("I was doing 30 mph when the car ahead of me shook and swerved into the kerb.", ["car"]),
+        ("I was at 40 mph behind a car when a lorry passed us and the car swayed towards the verge.", None),
+    ],
+)
+def test_the_writers_vehicle_shaken_near_misses(text: str, expected: list[str] | None) -> None:
+    got = kinds(text)
+    assert got == expected if expected is not None else len(got) == 2

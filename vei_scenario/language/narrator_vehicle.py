@@ -166,7 +166,8 @@ def _unintroduced(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
         subject = _clause_start(tokens, p.start) and _own_speed(tokens, p, users)
         subject = subject and not MEETS_NARRATOR & set(tokens[b:e]) and not _narrator_speed(tokens, users)
         landmark = tokens[max(p.start - 2, 0) : p.start] in (["front", "of"], ["ahead", "of"], ["path", "of"])
-        if not (steered or subject or landmark):  # (what someone crosses in front of is where the writer is)
+        # (what someone crosses in front of is where the writer is; what shakes is what the writer feels)
+        if not (steered or subject or landmark or _shaken(tokens, p)):
             continue
         noun = tokens[p.end - 1]
         dropped.extend(w for w in tokens[p.start : p.end] if w not in DEFINITE)
@@ -174,6 +175,25 @@ def _unintroduced(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
         out = _kind_again(out, p.kind, kind_at, known, dropped)
         return _driver_is_ego(out, kind_at, known, dropped) if {"we", "us", "our"} & words else out
     return tokens
+
+
+#: Verbs (by lemma) of a vehicle shaken by what passes it or by the wind: what the writer feels of the
+#: vehicle they sit in ("the whole car shook", "the van rocked in its wake").
+SHAKEN = frozenset({"shake", "wobble", "rock", "shudder", "sway", "judder", "lurch", "buffet", "vibrate", "jolt",
+                    "tremble", "rattle", "bounce"})  # fmt: skip
+#: Hedges and adverbs between such a vehicle and its verb ("the car sort of wobbled", "the van really shook").
+_HEDGES = frozenset({"sort", "kind", "of", "just", "really", "actually", "literally", "a", "bit", "little"})
+
+
+def _shaken(tokens: list[str], p) -> bool:
+    """Whether ``p`` opens its clause and its verb, past hedges, is one of being shaken (:data:`SHAKEN`):
+    "and the whole car sort of wobbled", "the van rocked in its wake"."""
+    if not _clause_start(tokens, p.start):
+        return False
+    k = p.end
+    while k < min(p.end + 3, len(tokens)) and (tokens[k] in _HEDGES or tokens[k].endswith("ly")):
+        k += 1
+    return k < len(tokens) and "VERB" in lemmas(tokens[k]) and _lemma_in(tokens[k], SHAKEN)
 
 
 def _subjectless(tokens: list[str], s: int) -> bool:
