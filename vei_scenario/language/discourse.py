@@ -577,11 +577,22 @@ def _bare_person(out: list[str], kind_at: KindAt) -> int | None:
 def _goes_on(tokens: list[str], k: int, known: Known) -> bool:
     """Whether the noun phrase goes on past ``k`` with a noun the reader has no phrase for ("a baby in a
     car seat": the seat, not the car). An adverb is no noun ("a man in a van just pulled out": the van's
-    phrase ends there)."""
+    phrase ends there). Nor is a verb inflected for its subject with a particle or preposition after it
+    ("a guy in a Charger blows past me", "a lad in a Corsa tears off": the person's verb, though
+    "blows" and "tears" are nouns too)."""
     if k >= len(tokens) or not tokens[k].isalpha() or known(tokens, k) or tokens[k] in PREPOSITIONS:
         return False
     pos = lemmas(tokens[k])
-    return not ("ADV" in pos and "NOUN" not in pos)
+    return not ("ADV" in pos and "NOUN" not in pos) and not _verb_with_particle(tokens, k)
+
+
+def _verb_with_particle(tokens: list[str], k: int) -> bool:
+    """Whether the word at ``k`` is a verb inflected away from its stem ("blows", "whipped") with a
+    particle or preposition right after it ("past", "across", "off"): a verb, even where the word
+    can also be a plural noun."""
+    stems = lemmas(tokens[k]).get("VERB", ())
+    inflected = bool(stems) and tokens[k] not in stems and tokens[k].endswith(("s", "ed"))
+    return inflected and k + 1 < len(tokens) and tokens[k + 1] in PREPOSITIONS | _PARTICLES
 
 
 #: Animals: one led, walked or ridden by a person ("a man leading a horse", "a girl riding a pony") is
@@ -848,6 +859,40 @@ def _ego_predicate(tokens: list[str], kind_at: KindAt, known: Known, dropped: li
             dropped.extend(out[i + 2 : q.end])
             del out[i + 2 : q.end]  # ("the ego is turning left ...": what it does stays its)
             return _said_again_as_ego(out, i + 2, noun, kind_at, known, dropped)
+    return out
+
+
+#: Pronouns that speak of every or no person at all: what they "are" is a kind of person in general.
+EVERYONE = frozenset({"everyone", "everybody", "anyone", "anybody", "nobody", "noone", "none"})
+#: Modal and negating words between such a pronoun and "be" ("anyone can be", "nobody is ever").
+_MODALS = frozenset({"can", "could", "will", "would", "may", "might", "should", "must", "not", "ever", "always"})
+
+
+def _what_everyone_is(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "Not everyone is bad driver", "nobody is a perfect driver", "anyone can be a careless cyclist",
+    "no one is the perfect motorist": a road user's noun said with "be" of a pronoun of every or no
+    person is what people in general are, no road user of the scene; the noun and its modifiers are
+    left out (listed as not used). A road user said of someone in the scene ("there is a van", "he was
+    a cyclist") stays (the pronouns are a closed class)."""
+    out = list(tokens)
+    i = 0
+    while i < len(out):
+        if out[i] not in EVERYONE and out[i : i + 2] != ["no", "one"]:
+            i += 1
+            continue
+        j = i + (2 if out[i] == "no" else 1)
+        while j < len(out) and out[j] in _MODALS:
+            j += 1
+        if j >= len(out) or out[j] not in BE:
+            i = j
+            continue
+        first = j + 1 + (j + 1 < len(out) and out[j + 1] in DETERMINERS)
+        head = next((h for h in range(first, min(first + 3, len(out))) if kind_at(out, h)), None)
+        q = _phrase_at(out, head, kind_at, known) if head is not None else None
+        if q is not None and q.kind != "ego" and all(_plain_modifier(out, h, known) for h in range(first, head)):
+            dropped.extend(out[j + 1 : q.end])
+            del out[j + 1 : q.end]
+        i = j + 1
     return out
 
 
@@ -1341,6 +1386,8 @@ PREPOSITIONS = frozenset(
     "at on in through along down up with when and but for from to into past by near around as while behind "
     "ahead across over of then so because".split()
 )
+#: Adverb particles of phrasal verbs that PREPOSITIONS leaves out ("tears off", "pulls out").
+_PARTICLES = frozenset({"off", "out", "round", "away", "back", "in", "onto", "under"})
 #: Verbs whose object is a road user ("following a Corsa", "tailing a Qashqai", "overtook a Prius").
 FOLLOWING = frozenset({"follow", "tail", "overtake", "trail"})
 
@@ -2435,6 +2482,72 @@ def _driver_apposition(tokens: list[str], kind_at: KindAt, dropped: list[str]) -
     return out
 
 
+#: Words that may describe a person set in apposition to a road user by what they wear, hold or look
+#: like ("bloke in a hi-vis", "young guy with headphones", "woman wearing a long coat", "lad of about
+#: 16, no helmet"); a word of placement ("behind", "next to") says where someone else is instead.
+_DESCRIBING = frozenset(
+    {"in", "with", "on", "without", "of", "no", "about", "wearing", "carrying", "holding", "dressed"}
+)
+#: Where a person set off by commas is instead someone placed apart from the road user.
+_PLACING = frozenset({"behind", "beside", "near", "next", "ahead", "across", "from", "at", "by", "towards", "between"})
+
+
+def _describes(tokens: list[str], start: int, end: int, kind_at: KindAt) -> bool:
+    """Whether ``tokens[start:end]`` only describe a person (clothes, what they carry, their age):
+    no road user, no placement, no verb of their own but the closed verbs of wearing and holding."""
+    for w in tokens[start:end]:
+        if w in _DESCRIBING or w in DETERMINERS or not w.replace("-", "").isalpha():
+            continue
+        if w in _PLACING or w in _PLACEMENT_WORDS or w in ("and", "or") or w in BE:
+            return False
+        if _verb_of(w) and (_only_a_verb(w) or w.endswith(("ing", "ed"))):
+            return False
+    return not any(kind_at(tokens, k) is not None for k in range(start, end))
+
+
+def _person_apposition(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "There's an e-scooter in front, bloke in a hi-vis, about 15 m ahead", "a moped came off the kerb,
+    young guy with headphones, right in front of me": a person said bare (no article, the way a note or
+    a spoken story drops it) between commas after a rider's or driver's road user in the same sentence,
+    described by what they wear or look like, is who rides or drives it, no road user of their own; the
+    apposition is left out (listed as not used). A person with a verb or a placement of their own ("a
+    bus stopped, man got off", "a car parked, child behind it") or one item of a list ("a van, woman
+    in a coat, and a cyclist") stays."""
+    out = list(tokens)
+    i = 1
+    while i + 2 < len(out):
+        if out[i] != "," or out[i + 1] in DETERMINERS:
+            i += 1
+            continue
+        head = next((h for h in range(i + 1, min(i + 4, len(out))) if kind_at(out, h) is not None), None)
+        found = kind_at(out, head) if head is not None else None
+        close = next((k for k in range(i + 1, min(i + 10, len(out))) if out[k] in PUNCT), len(out))
+        ridden = None
+        for b in range(i - 1, -1, -1):  # the road user said last before the comma, in the same sentence
+            if out[b] in SENTENCE_END:
+                break
+            if (f := kind_at(out, b)) is not None and f[0] != "ego" and out[b] not in PRONOUNS:
+                ridden = f[0]
+                break
+        after = out[close + 1] if close + 1 < len(out) else "."
+        fits = (
+            found is not None
+            and found[0] == "pedestrian"
+            and ridden is not None
+            and ridden != "pedestrian"
+            and head + found[1] <= close
+            and all(w.isalpha() and not known(out, k) for k, w in enumerate(out[i + 1 : head], i + 1))
+            and _describes(out, head + found[1], close, kind_at)
+            and after not in ("and", "or")
+            and kind_at(out, close + 1 + (after in DETERMINERS)) is None
+        )
+        if fits:
+            dropped.extend(out[i + 1 : close])
+            del out[i:close]
+        i += 1
+    return out
+
+
 def resolve(
     tokens: list[str], kind_at: KindAt, known: Known, proper: frozenset[str] = frozenset()
 ) -> tuple[list[str], list[str]]:
@@ -2468,6 +2581,7 @@ def resolve(
     tokens = _pushed(tokens, kind_at, known, dropped)
     tokens = _drivers(tokens, kind_at, known)
     tokens = _driver_apposition(tokens, kind_at, dropped)
+    tokens = _person_apposition(tokens, kind_at, known, dropped)
     tokens = _companions(tokens, kind_at, known, dropped)
     tokens = _occupants(tokens, kind_at, dropped)
     tokens = _followed_names(tokens, kind_at, known)
@@ -2481,6 +2595,7 @@ def resolve(
     tokens = _narrator_on_foot(tokens, kind_at, known, dropped)
     tokens = _ego_apposition(tokens, kind_at, known, dropped)
     tokens = _ego_predicate(tokens, kind_at, known, dropped)
+    tokens = _what_everyone_is(tokens, kind_at, known, dropped)
     tokens = _placed_apposition(tokens, kind_at, known, dropped)
     tokens = _egos_vehicle(tokens, kind_at, known, dropped)
     tokens = _aftermath(tokens, kind_at, known, dropped)

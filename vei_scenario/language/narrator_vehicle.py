@@ -142,7 +142,8 @@ def _unintroduced(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
     clause that meets the narrator ("the van pulled out in front of me") is someone else; so is
     every vehicle where the narrator walks or rides."""
     words = set(tokens)
-    if not FIRST_PERSON & words and not {"us", "our"} & words or "ego" in words:
+    first_person = bool(FIRST_PERSON & words or {"us", "our"} & words)
+    if not (first_person or _log(tokens)) or "ego" in words:
         return tokens
     if _narrator_on_foot(tokens, kind_at):
         return tokens
@@ -159,10 +160,14 @@ def _unintroduced(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
             continue  # (an owner's, or one of a kind named before: "a hatchback ... the car")
         b, e = _clause(tokens, p.start)
         steered = _steered(tokens, p)  # (what the narrator steers may well go at "our lane")
+        if not first_person:  # (a log's "brought the tram to a stop": the writer's, where no one else steers)
+            if not (steered and _steered_unsaid(tokens, p, users)):
+                continue
         subject = _clause_start(tokens, p.start) and _own_speed(tokens, p, users)
         subject = subject and not MEETS_NARRATOR & set(tokens[b:e]) and not _narrator_speed(tokens, users)
         landmark = tokens[max(p.start - 2, 0) : p.start] in (["front", "of"], ["ahead", "of"], ["path", "of"])
-        if not (steered or subject or landmark):  # (what someone crosses in front of is where the writer is)
+        # (what someone crosses in front of is where the writer is; what shakes is what the writer feels)
+        if not (steered or subject or landmark or _shaken(tokens, p)):
             continue
         noun = tokens[p.end - 1]
         dropped.extend(w for w in tokens[p.start : p.end] if w not in DEFINITE)
@@ -170,6 +175,51 @@ def _unintroduced(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
         out = _kind_again(out, p.kind, kind_at, known, dropped)
         return _driver_is_ego(out, kind_at, known, dropped) if {"we", "us", "our"} & words else out
     return tokens
+
+
+#: Verbs (by lemma) of a vehicle shaken by what passes it or by the wind: what the writer feels of the
+#: vehicle they sit in ("the whole car shook", "the van rocked in its wake").
+SHAKEN = frozenset({"shake", "wobble", "rock", "shudder", "sway", "judder", "lurch", "buffet", "vibrate", "jolt",
+                    "tremble", "rattle", "bounce"})  # fmt: skip
+#: Hedges and adverbs between such a vehicle and its verb ("the car sort of wobbled", "the van really shook").
+_HEDGES = frozenset({"sort", "kind", "of", "just", "really", "actually", "literally", "a", "bit", "little"})
+
+
+def _shaken(tokens: list[str], p) -> bool:
+    """Whether ``p`` opens its clause and its verb, past hedges, is one of being shaken (:data:`SHAKEN`):
+    "and the whole car sort of wobbled", "the van rocked in its wake"."""
+    if not _clause_start(tokens, p.start):
+        return False
+    k = p.end
+    while k < min(p.end + 3, len(tokens)) and (tokens[k] in _HEDGES or tokens[k].endswith("ly")):
+        k += 1
+    return k < len(tokens) and "VERB" in lemmas(tokens[k]) and _lemma_in(tokens[k], SHAKEN)
+
+
+def _subjectless(tokens: list[str], s: int) -> bool:
+    """Whether the sentence starting at ``s`` opens with a verb, its subject left unsaid as a log, a
+    diary or a spoken note leaves out "I" ("Braked hard and ...", "Departing the stop at 15 km/h")."""
+    w = tokens[s] if s < len(tokens) else ""
+    pos = lemmas(w)
+    return w.isalpha() and "VERB" in pos and not {"NOUN", "PROPN", "ADJ", "ADV"} & set(pos)
+
+
+def _log(tokens: list[str]) -> bool:
+    """Whether some sentence of ``tokens`` leaves its subject unsaid (:func:`_subjectless`): a writer
+    who never says "I" but writes as the one at the wheel."""
+    return any(_subjectless(tokens, k) for k in range(len(tokens)) if k == 0 or tokens[k - 1] in SENTENCE_END)
+
+
+def _steered_unsaid(tokens: list[str], p, users) -> bool:
+    """Whether the verb of steering before ``p`` is said with no subject: its sentence opens with a
+    verb and no one who could be at a wheel (a vehicle, its driver) is named between ("Sounded the
+    horn and stopped the bus", "Slowed as a kid ran out, pulled the lorry over"; not "a bus pulled
+    out and its driver stopped the bus")."""
+    s, _ = _sentence(tokens, p.start)
+    if not _subjectless(tokens, s):
+        return False
+    between = [q for q in users if s <= q.start < p.start - 1]
+    return not any(q.kind in VEHICLES or tokens[q.end - 1] in AT_WHEEL for q in between)
 
 
 def _kind_again(tokens: list[str], kind: str, kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:

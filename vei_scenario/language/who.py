@@ -144,12 +144,14 @@ def person_with_vehicle(tokens: list[str], kind_at: KindAt) -> list[str]:
 
 
 #: Places and things named after the vehicles they are for ("the scooter lane", "a bike rack", "the taxi
-#: rank", "a bus shelter", "bike gear", "a bicycle helmet"): a closed class of nouns that are never a
-#: verb, after which the vehicle's noun is a modifier, no road user ("stop" and "park", verbs too, are
-#: left to the phrases that have them).
+#: rank", "a bus shelter", "bike gear", "a bicycle helmet"), or after a place that shares a vehicle's noun
+#: ("the estate entrance"): a closed class of nouns that are never a verb, after which the vehicle's
+#: noun is a modifier, no road user ("stop" and "park", verbs too, are left to the phrases that have
+#: them).
 THINGS_FOR_VEHICLES = frozenset({"lane", "rank", "rack", "bay", "shelter", "depot", "station", "garage", "route",
                                  "lot", "showroom", "wash", "yard", "dealership", "helmet", "helmets", "gear",
-                                 "shop", "lock", "seat", "clothing", "shorts", "jersey"})  # fmt: skip
+                                 "shop", "lock", "seat", "clothing", "shorts", "jersey", "entrance", "forecourt",
+                                 "entrances"})  # fmt: skip
 
 
 def vehicle_places(tokens: list[str], kind_at: KindAt) -> list[str]:

@@ -1,0 +1,192 @@
+"""Road users the reader must not make twice or out of talk: a person in a vehicle whose verb can
+also be a noun ("a guy in a Charger blows past") is one road user; a person said in apposition right
+after the road user they ride or drive ("an e-scooter, bloke in a hi-vis") is that road user; a
+road-user noun that says what everybody or nobody is ("not everyone is a bad driver") is no road user."""
+
+from __future__ import annotations
+
+import pytest
+
+from tests.reading_of import kinds
+
+# ---- a person in a vehicle, then a verb that can also be a noun -------------------------------------
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I'm doing 65 on the interstate and a guy in a Mustang blows past me on the left.",
+        "Doing 70 in lane two when some bloke in a BMW shoots past me on the inside.",
+        "I was at 50 km/h and a woman in a silver hatchback whips across in front of me.",
+        "Driving at 60 km/h, a lad in a Corsa tears past me on the right and cuts in.",
+        "We were at 40 mph when a man in a pickup flies past us on the outside.",
+        "Cruising at 90 km/h, a fellow in a white van darts out in front of me from the left.",
+    ],
+)
+def test_a_person_in_a_vehicle_with_a_verb_that_is_also_a_noun_is_one_road_user(text: str) -> None:
+    assert len(kinds(text)) == 1
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        # near misses: the word after the vehicle is a noun of the phrase, not the person's verb
+        ("A baby in a car seat was in the back of the van that pulled out in front of me at 30 mph.", ["van"]),
+        ("I was at 30 mph when a guy in a hatchback pulled out in front of me.", ["car"]),
+    ],
+)
+def test_a_person_in_a_vehicle_near_misses(text: str, expected: list[str]) -> None:
+    assert kinds(text) == expected
+
+
+# ---- a person in apposition to the road user just named ---------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Doing 30 mph. There's a cyclist ahead, lad in a hoodie, about 20 m in front, and he just stops dead.",
+        "I was at 25 mph when an e-scooter came off the kerb, young guy with headphones, right in front of me.",
+        "At 40 km/h a moped pulled out of the side road, bloke in a yellow jacket, and I braked hard.",
+        "I was doing 20 when a bike cut across, teenage boy with no helmet, and I had to stop.",
+        "Doing 30 mph on the high street, a scooter ahead of me, woman in a long coat, suddenly braked.",
+    ],
+)
+def test_a_person_in_apposition_is_the_road_user_named_before(text: str) -> None:
+    assert len(kinds(text)) == 1
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        # near misses: a second person with a verb of their own, after "and" or as a new clause
+        (
+            "I was doing 30 when a cyclist pulled out in front of me, and a man on foot stepped out behind him.",
+            ["bicycle", "pedestrian"],
+        ),
+        ("I was at 25 mph when a cyclist came past. A pedestrian then stepped out in front of me.", None),
+        ("I was doing 30 mph. A car was parked on the left, child behind it, and he ran out in front of me.", None),
+        ("I was doing 30 mph when a van pulled up ahead, old man crossing behind it, and I braked.", None),
+    ],
+)
+def test_a_person_in_apposition_near_misses(text: str, expected: list[str] | None) -> None:
+    got = kinds(text)
+    assert len(got) == 2
+    if expected is not None:
+        assert got == expected
+
+
+# ---- a road-user noun that says what everyone or nobody is ------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I passed a cyclist at 30 km/h with plenty of room. Not everyone is bad driver!",
+        "I passed a cyclist at 30 km/h with plenty of room. Nobody is a perfect driver.",
+        "I passed a cyclist at 30 km/h with plenty of room. Everybody is a learner driver once.",
+        "I passed a cyclist at 30 km/h with plenty of room. Anyone can be a careless driver.",
+        "I passed a cyclist at 30 km/h with plenty of room. No one is the perfect motorist.",
+    ],
+)
+def test_what_everyone_or_nobody_is_is_no_road_user(text: str) -> None:
+    assert kinds(text) == ["bicycle"]
+
+
+def test_what_a_named_road_user_is_near_miss() -> None:
+    """A road user introduced with "there is" stays one (the copula's subject is no quantifier)."""
+    assert kinds("I was doing 30 mph. There is a van stopped ahead of me and I braked.") == ["van"]
+
+
+def test_a_list_of_road_users_is_not_an_apposition() -> None:
+    text = "Three road users came through the crossing: a van, woman in a red coat, and a cyclist, all at 10 mph."
+    assert len(kinds(text)) == 3
+
+
+# ---- a vehicle steered in a log with no subject ------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        (
+            "Departing the depot at 20 km/h when a cyclist swerved in front. Braked hard and brought the bus "
+            "to a halt.",
+            ["bicycle"],
+        ),
+        (
+            "Pulling away from the stop at 10 mph. A pedestrian stepped off the kerb 5 m ahead. Sounded the horn "
+            "and stopped the bus just short.",
+            ["pedestrian"],
+        ),
+        (
+            "Doing 30 in a 30. A lad on a bike came out of a side road. Steered the van left and missed him.",
+            ["bicycle"],
+        ),
+        (
+            "Shift start. Left the depot at 15 km/h; a jogger ran across the track ahead. Rang the bell and "
+            "brought the tram to a stop.",
+            ["pedestrian"],
+        ),
+        ("Slowed to 20 km/h as a kid chased a ball into the road, pulled the lorry over and waited.", ["pedestrian"]),
+    ],
+)
+def test_a_vehicle_steered_in_a_log_with_no_subject_is_the_writers(text: str, expected: list[str]) -> None:
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        # near misses: the steering verb has a subject of its own, or the vehicle is where the writer stops
+        ("Doing 20 km/h. A bus driver pulled out from the stop and stopped the bus across my lane.", ["truck"]),
+        ("Waiting at the lights. A taxi driver pulled up beside me and parked the cab on the zigzags.", ["car"]),
+        ("Doing 20 km/h. Saw a lorry driver ahead of me stop the lorry across the road.", ["truck"]),
+        ("Doing 30 mph. Stopped behind the van at the lights, and a cyclist came up the inside.", None),
+    ],
+)
+def test_a_vehicle_steered_in_a_log_near_misses(text: str, expected: list[str] | None) -> None:
+    got = kinds(text)
+    assert got == expected if expected is not None else len(got) == 2
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Doing 35 mph past the estate entrance when a cyclist pulled out in front of me.",
+        "I was at 20 km/h on the forecourt of the car dealership when a cyclist cut across in front of me.",
+        "Turning into the car entrance at 10 mph, a cyclist came up on my left.",
+    ],
+)
+def test_a_place_named_after_a_vehicle_is_no_road_user(text: str) -> None:
+    assert kinds(text) == ["bicycle"]
+
+
+# ---- the writer's vehicle shaken by what passes it ---------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("A lorry came past me at speed on the motorway, I was doing 60, and the whole car shook.", ["truck"]),
+        ("I was doing 50 mph when a coach overtook me and the van rocked in its wake.", ["truck"]),
+        ("We were sitting at 40 mph when a bus passed us and the whole car wobbled.", ["truck"]),
+        ("I'm at 70 in lane one, an artic flies by on the right and the car shudders.", ["truck"]),
+        ("I was at 30 mph when a tanker went past, the hatchback swayed a bit but I held my line.", ["truck"]),
+    ],
+)
+def test_the_writers_vehicle_shaken_by_what_passes_is_the_ego(text: str, expected: list[str]) -> None:
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        # near misses: a vehicle placed apart from the writer, or introduced before, shakes on its own
+        ("I was doing 30 mph when the car ahead of me shook and swerved into the kerb.", ["car"]),
+        ("I was at 40 mph behind a car when a lorry passed us and the car swayed towards the verge.", None),
+    ],
+)
+def test_the_writers_vehicle_shaken_near_misses(text: str, expected: list[str] | None) -> None:
+    got = kinds(text)
+    assert got == expected if expected is not None else len(got) == 2
