@@ -48,7 +48,14 @@ from vei_scenario.language.lemmas import english, lemmas
 from vei_scenario.language.lexicon import ANIMALS, MOTOR_TWO_WHEELERS, WALKER_PACED
 from vei_scenario.language.scenery import absent, vehicle_modifiers
 from vei_scenario.language.vocabulary import IN_LINE
-from vei_scenario.language.who import make_and_model, person_with_vehicle, travel_modes, vehicle_places
+from vei_scenario.language.who import (
+    make_and_model,
+    person_with_vehicle,
+    towed,
+    travel_modes,
+    vehicle_places,
+    walker_places,
+)
 
 #: ``kind_at(tokens, i)``: the road-user type named by a phrase starting at ``i`` ("ego" for the ego)
 #: and the phrase's length, or None when no road-user phrase starts there.
@@ -2449,7 +2456,7 @@ def resolve(
     dropped: list[str] = []
     names: dict[str, str] = {}
     tokens = person_with_vehicle(make_and_model(tokens, kind_at, known), kind_at)
-    tokens = vehicle_places(travel_modes(tokens, kind_at), kind_at)
+    tokens = towed(walker_places(vehicle_places(travel_modes(tokens, kind_at), kind_at), kind_at), kind_at)
     tokens = _named_vehicles(tokens, kind_at, known, proper)
     tokens = _brackets(tokens, kind_at, known, names, dropped)
     tokens = _compounds(tokens, kind_at)

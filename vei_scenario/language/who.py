@@ -10,7 +10,7 @@ import re
 from collections.abc import Callable
 
 from vei_scenario.language.lemmas import english, lemmas
-from vei_scenario.language.lexicon import ANIMALS, CAR_MAKES, SCOOTER_OPERATORS, TRUCK_MAKES
+from vei_scenario.language.lexicon import ANIMALS, CAR_MAKES, SCOOTER_OPERATORS, THINGS_FOR_ANIMALS, TRUCK_MAKES
 
 #: First-person possessives, a closed class: what they own is the writer's, hence the ego.
 FIRST_PERSON_POSSESSIVES = frozenset({"my", "our"})
@@ -163,6 +163,69 @@ def vehicle_places(tokens: list[str], kind_at: KindAt) -> list[str]:
             end = i + found[1]
             if end < len(tokens) and tokens[end] in THINGS_FOR_VEHICLES:
                 i = end
+                continue
+        out.append(tokens[i])
+        i += 1
+    return out
+
+
+#: Places and things named after the people on foot they are for ("the pedestrian signal", "a pedestrian
+#: island", "the pedestrian phase"): after "pedestrian" one of these closed-class nouns makes it a modifier.
+THINGS_FOR_WALKERS = frozenset({"signal", "light", "lights", "phase", "island", "refuge", "barrier", "barriers",
+                                "railing", "railings", "guardrail", "bridge", "footbridge", "subway", "underpass",
+                                "overpass", "zone", "area", "precinct", "button", "walkway", "path", "street",
+                                "mall", "plaza", "gate", "countdown", "access", "entrance", "route", "tunnel",
+                                "detection", "sign", "signs", "green", "cycle", "flow", "traffic", "volume",
+                                "volumes", "count", "counts"})  # fmt: skip
+
+
+def walker_places(tokens: list[str], kind_at: KindAt) -> list[str]:
+    """``tokens`` without a walker's noun that names the place or thing after it: an animal's before a
+    thing for or against animals ("fitted with a roo bar", "over the cattle grid", "past a dog park"), and
+    "pedestrian" before one for people on foot ("against the pedestrian signal", "on the pedestrian
+    island"). The place or thing stays; nobody on foot is named. Other people's nouns keep their reading
+    ("a man park his car" is a man, in English written as a second language)."""
+    out: list[str] = []
+    i = 0
+    while i < len(tokens):
+        found = kind_at(tokens, i)
+        if found is not None and found[0] == "pedestrian":
+            end = i + found[1]
+            noun = " ".join(tokens[i:end])
+            things = THINGS_FOR_ANIMALS if noun in ANIMALS else THINGS_FOR_WALKERS if noun == "pedestrian" else ()
+            if end < len(tokens) and tokens[end] in things:
+                i = end
+                continue
+        out.append(tokens[i])
+        i += 1
+    return out
+
+
+#: What a vehicle tows, which goes where it goes: one road user with it ("a 4x4 towing a horsebox").
+TOWED = frozenset({"trailer", "semi-trailer", "semitrailer", "horsebox", "caravan", "boat"})
+#: Words by which a vehicle has something in tow ("towing", "pulling", "with" right after its noun).
+_TOWING = frozenset({"towing", "tows", "towed", "pulling", "hauling", "dragging", "with"})
+_TOWED_BEFORE = frozenset({"a", "an", "the", "its", "his", "her", "their", "big", "small", "horse", "boat", "box",
+                           "flatbed", "empty", "loaded", "heavy", "long", "twin"})  # fmt: skip
+
+
+def towed(tokens: list[str], kind_at: KindAt) -> list[str]:
+    """``tokens`` without the trailer a vehicle tows ("a car towing a trailer", "a ute with a horse
+    trailer", "a 4x4 pulling a caravan"): it is part of that road user, no second one. "With" counts
+    only right after a vehicle's noun ("collided with a trailer" names a trailer that is one)."""
+    out: list[str] = []
+    i = 0
+    while i < len(tokens):
+        if tokens[i] in _TOWING and out:
+            after_vehicle = any(
+                (k := kind_at(out, j)) is not None and k[0] not in ("pedestrian", "ego") and j + k[1] == len(out)
+                for j in range(max(len(out) - 3, 0), len(out))
+            )
+            j = i + 1
+            while j < len(tokens) and j < i + 4 and tokens[j] in _TOWED_BEFORE:
+                j += 1
+            if j < len(tokens) and tokens[j] in TOWED and (tokens[i] != "with" or after_vehicle):
+                i = j + 1
                 continue
         out.append(tokens[i])
         i += 1
