@@ -775,6 +775,34 @@ def test_a_vehicle_on_its_way_after_the_event_is_no_road_user(text, expected):
     assert kinds(text) == expected
 
 
+# (with no article, and where no collision is said: it is the call that says it comes after)
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A bus and a scooter rider came together at the exit ahead of me. Ambulance is on its way.", "van"),
+        ("A lad on a bike shot out of a side road on my left, I was doing 20 mph; police car en route now.", "car"),
+        ("A pedestrian stepped out from the left in front of me; an ambulance was called but she was fine.", "van"),
+        ("Cyclist swerved out from the kerb in front of us at 15 mph. Paramedic car on the way, all ok.", "car"),
+        ("A woman ran across in front of me from the right. Two police vans were summoned to the scene.", "van"),
+    ],
+    ids=["bare-on-its-way", "police-car-en-route", "was-called-no-contact", "on-the-way", "were-summoned"],
+)
+def test_a_vehicle_called_to_the_scene_is_no_road_user_whatever_the_outcome(text, expected):
+    assert expected not in kinds(text)
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A van was on its way out of the junction when it pulled into my path from the left.", ["van"]),
+        ("A lorry was on its way to the depot when it pulled out in front of me from the left.", ["truck"]),
+    ],
+    ids=["on-its-way-out", "on-its-way-to"],
+)
+def test_a_vehicle_on_its_way_somewhere_in_the_event_stays(text, expected):
+    assert kinds(text) == expected
+
+
 @pytest.mark.parametrize(
     "text, expected",
     [
