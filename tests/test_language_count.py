@@ -934,6 +934,34 @@ def test_a_pedestrian_crossing_with_an_object_is_a_walker():
     assert kinds(text) == ["bicycle", "pedestrian"]
 
 
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Ego 25 kph on a narrow street behind a cyclist. Also one pedestrian crossing far ahead.",
+        "Ego 40 km/h, a van pulls out from the left; and one pedestrian crossing from the right behind it.",
+        "Ego 30 km/h behind a bus; also a pedestrian crossing ahead, from the left.",
+        "Ego at 50 km/h behind a lorry, plus one pedestrian crossing slowly in the distance.",
+        "Scene: ego 20 mph, a cyclist ahead in the lane, then a pedestrian crossing well ahead of both.",
+    ],
+    ids=["also-one", "and-one", "also-a", "plus-one", "then-a"],
+)
+def test_one_pedestrian_crossing_at_a_clauses_start_is_a_walker(text):
+    assert "pedestrian" in kinds(text)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Ego 30 km/h behind a cyclist; there is one pedestrian crossing on this road.",
+        "Ego 30 km/h; the cyclist ahead of us slows for a pedestrian crossing.",
+        "Ego at 40 km/h behind a van that stops at one pedestrian crossing after another.",
+    ],
+    ids=["there-is-one", "slows-for-a", "at-one"],
+)
+def test_a_pedestrian_crossing_counted_after_a_verb_stays_a_place(text):
+    assert "pedestrian" not in kinds(text)
+
+
 def test_a_pedestrian_crossing_as_a_place_is_no_walker():
     assert kinds("Ego at 30 km/h; a cyclist ahead of us stops at a pedestrian crossing.") == ["bicycle"]
 

@@ -725,6 +725,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             last = tokens[i + len(key) - 1]  # "the bus stops": the bus, then its verb ("at a bus stop": a place)
             verb = last != key[-1] and last == key[-1] + "s"  # "the bus stops"
             opens = prev in _OPENERS or (prev in _DETERMINERS and i == 1)  # (its sentence's subject)
+            opens = opens or _someone_new_opens(tokens, i)  # ("Also one pedestrian crossing far ahead")
             # "A pedestrian crossing from the right ...", "also a pedestrian crossing the road" (its object)
             takes_object = tokens[i + len(key) : i + len(key) + 1] in (["the"], ["a"], ["an"], ["my"], ["our"])
             participle = last.endswith("ing") and (opens or takes_object)
@@ -1091,6 +1092,23 @@ def _new_unknown_subject(tokens: list[str], i: int) -> bool:
     if tokens[j] == "one" and not _finite_next(tokens, i + 1):
         return False  # ("One motorist heading east tells us ...": one picked out of many, who reports)
     return _clause_opens_before(tokens, j)
+
+
+#: Words a clause opens with before a new road user that is its subject ("Also a ...", "Plus one ...").
+_ADDING = frozenset({"also", "plus", "and", "then", "next"})
+
+
+def _someone_new_opens(tokens: list[str], i: int) -> bool:
+    """Whether the road-user noun at ``i`` opens its clause as someone new: "one" before it after a
+    clause opens ("Also one pedestrian crossing far ahead", "; one cyclist crossing ..."), as people
+    count the road users of a scene, or "a" right after a word that adds one more ("Also a pedestrian
+    crossing ahead"). A place is named with "a" after a verb or a preposition ("there is a pedestrian
+    crossing", "near a pedestrian crossing") and hardly ever counted as "one" at a clause's start."""
+    det = tokens[i - 1] if i else ""
+    before = tokens[i - 2] if i > 1 else ""
+    if det == "one":
+        return before in _OPENERS or before in _ADDING
+    return det in ("a", "an") and before in _ADDING
 
 
 def _finite_next(tokens: list[str], k: int) -> bool:
