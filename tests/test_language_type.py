@@ -384,3 +384,33 @@ def test_what_a_vehicle_tows_is_part_of_it(text, kinds):
         assert "truck" in got
     else:
         assert got == kinds
+
+
+# --- "bike" at a motorbike's pace is a motorbike (Indian English and others say "bike" for one) -----------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was going at 50 kmph on the flyover and one bike guy came from behind on my left and cut in front of me.",
+        "Doing 60 on the A-road when a bike came past me on the right at a silly speed and cut in.",
+        "I'm at 45 mph on the interstate, a bike blows past me on the left and swerves in front.",
+        "I was doing 60 km/h on the expressway when one bike came from behind and overtook me on the right.",
+        "Ego 70 km/h on the expressway; a biker overtakes on the right at 90 km/h.",
+    ],
+    ids=["indian-bike-guy", "british-a-road", "american-interstate", "nigerian-expressway", "biker-at-90"],
+)
+def test_a_bike_that_comes_past_a_fast_ego_is_a_motorbike(text):
+    assert _kinds(text) == ["car"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was doing 20 mph when a bike came up behind me and overtook me on the right.",
+        "Ego at 50 km/h; a bike in the bike lane on the right swerves into our lane 10 m ahead.",
+        "A cyclist came from behind and overtook me on the right while I was doing 40 km/h.",
+        "I was doing 40 mph and a bike ahead of me braked suddenly.",
+    ],
+    ids=["slow-ego", "from-the-bike-lane", "cyclist-word", "bike-ahead"],
+)
+def test_a_bike_at_a_cyclists_pace_stays_a_bicycle(text):
+    assert _kinds(text) == ["bicycle"]

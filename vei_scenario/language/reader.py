@@ -1111,6 +1111,27 @@ def _someone_new_opens(tokens: list[str], i: int) -> bool:
     return det in ("a", "an") and before in _ADDING
 
 
+#: The words that name a motorbike as often as a pedal cycle ("bike" in Indian, and much other, English).
+_EITHER_BIKE = frozenset({"bike", "bikes", "biker", "bikers"})
+#: Faster than a pedal cyclist goes (m/s): 45 km/h; and the ego's speed above which a pedal cyclist does
+#: not come past it (m/s): 35 km/h.
+_CYCLIST_TOP_MPS = 12.5
+_CYCLIST_PASSES_MPS = 9.7
+
+
+def _at_a_motorbikes_pace(a: _Actor, ego_mps: float | None) -> bool:
+    """Whether road user ``a``, named only "bike" or "biker", goes at a motorbike's pace, not a pedal
+    cycle's: faster than a cyclist rides, or coming past the ego ("overtook me", "came from behind and
+    cut in") while the ego drives faster than a cyclist can keep up with."""
+    if a.word not in _EITHER_BIKE:
+        return False
+    if a.speed_mps is not None and a.speed_mps > _CYCLIST_TOP_MPS:
+        return True
+    names = {b[0] for b in a.behaviours}
+    passes = "overtake" in names or ("cut_in" in names and ("behind" in a.said or a.relation == "behind"))
+    return passes and ego_mps is not None and ego_mps > _CYCLIST_PASSES_MPS
+
+
 def _finite_next(tokens: list[str], k: int) -> bool:
     """Whether the word at ``k`` is a finite verb, not a participle: "was", "is", or a verb read as a
     behaviour that does not end in -ing ("one aunty was crossing", "one granny stepped off")."""
@@ -2108,6 +2129,8 @@ def _read(text: str) -> Reading:
             names = {b[0] for b in a.behaviours}
             if (a.wrong_way or names & set(L.DRIVER_BEHAVIOURS)) and not names & {"cross_in_front", "along_road"}:
                 a.kind = "car"
+        if a.kind == "bicycle" and _at_a_motorbikes_pace(a, r.ego_speed_mps):
+            a.kind = "car"  # ("one bike fellow came from behind and cut in" at 40 kmph: a motorbike)
         if a.hides and a.kind in VEHICLES and not a.behaviours and a.speed_mps is None:
             a.stationary = a.parked = True  # (what someone steps out from behind stands there)
         said_by_noun = L.BEHAVIOUR_NOUNS.get(a.word)
