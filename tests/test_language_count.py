@@ -1039,3 +1039,31 @@ def test_one_picked_out_of_many_who_reports_is_no_new_road_user():
         "One motorist heading east says she only just missed him."
     )
     assert kinds(text) == ["bicycle"]
+
+
+# --- a vehicle's noun before a word for a thing with no name ("these scooter contraptions") is that vehicle ---
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("I was doing 20 mph when one of these electric scooter contraptions shot past and cut in.", ["e-scooter"]),
+        ("Doing 30, and one of those scooter gadgets comes flying off the kerb on my left.", ["e-scooter"]),
+        ("Ego 40 km/h; two bike thingies swerve out from the left kerb in front of it.", ["bicycle", "bicycle"]),
+        ("One of these e-scooter deathtraps came at me the wrong way down the high street at 15 mph.", ["e-scooter"]),
+        ("I was on 25 mph and one of those hoverboard toys rolled out from the right in front of me.", ["e-scooter"]),
+    ],
+    ids=["contraptions", "gadgets", "thingies", "deathtraps", "toys"],
+)
+def test_a_vehicle_said_by_a_word_for_a_thing_is_that_vehicle(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("We looked at two car crashes; in the first a van pulled out from the left at 30 mph.", ["van"]),
+        ("Doing 30 mph past the scooter bays when a cyclist pulled out from the left.", ["bicycle"]),
+    ],
+    ids=["car-crashes", "scooter-bays"],
+)
+def test_a_vehicle_before_a_plural_that_names_something_else_stays_a_modifier(text, expected):
+    assert kinds(text) == expected
