@@ -375,8 +375,27 @@ def test_things_named_after_walkers_and_the_narrators_people_are_no_road_users(t
         ("A 4x4 pulling a caravan overtook me and cut in sharply; I was at 50 mph.", ["car"]),
         ("A trailer ahead of us brakes hard and a car pulling a caravan overtakes us; ego 60 km/h.", ["truck", "car"]),
         ("A lorry crashed into a trailer parked ahead of me; I was at 30 km/h.", None),
+        (
+            "Prime mover and trailer turning left at 15 km/h; a cyclist came up the inside and passed the trailer "
+            "wheels.",
+            ["bicycle"],
+        ),
+        ("Trucker here. Hauling a 48 ft trailer at 60 mph and a pickup cuts in front of me.", ["van"]),
+        (
+            "A van and a trailer were parked ahead; a cyclist pulled out from the left in front of me at 20 mph.",
+            ["van", "truck", "bicycle"],
+        ),
     ],
-    ids=["towing-a-trailer", "with-a-horse-trailer", "pulling-a-caravan", "a-trailer-and-a-tow", "crashed-into"],
+    ids=[
+        "towing-a-trailer",
+        "with-a-horse-trailer",
+        "pulling-a-caravan",
+        "a-trailer-and-a-tow",
+        "crashed-into",
+        "prime-mover-and-trailer",
+        "hauling-a-trailer",
+        "a-van-and-a-trailer",
+    ],
 )
 def test_what_a_vehicle_tows_is_part_of_it(text, kinds):
     got = _kinds(text)

@@ -51,7 +51,6 @@ from vei_scenario.language.vocabulary import IN_LINE
 from vei_scenario.language.who import (
     make_and_model,
     person_with_vehicle,
-    towed,
     travel_modes,
     vehicle_places,
     walker_places,
@@ -2499,7 +2498,7 @@ def resolve(
     dropped: list[str] = []
     names: dict[str, str] = {}
     tokens = person_with_vehicle(make_and_model(tokens, kind_at, known), kind_at)
-    tokens = towed(walker_places(vehicle_places(travel_modes(tokens, kind_at), kind_at), kind_at), kind_at)
+    tokens = walker_places(vehicle_places(travel_modes(tokens, kind_at), kind_at), kind_at)
     tokens = _named_vehicles(tokens, kind_at, known, proper)
     tokens = _brackets(tokens, kind_at, known, names, dropped)
     tokens = _compounds(tokens, kind_at)

@@ -202,29 +202,44 @@ def walker_places(tokens: list[str], kind_at: KindAt) -> list[str]:
 
 
 #: What a vehicle tows, which goes where it goes: one road user with it ("a 4x4 towing a horsebox").
-TOWED = frozenset({"trailer", "semi-trailer", "semitrailer", "horsebox", "caravan", "boat"})
-#: Words by which a vehicle has something in tow ("towing", "pulling", "with" right after its noun).
-_TOWING = frozenset({"towing", "tows", "towed", "pulling", "hauling", "dragging", "with"})
-_TOWED_BEFORE = frozenset({"a", "an", "the", "its", "his", "her", "their", "big", "small", "horse", "boat", "box",
-                           "flatbed", "empty", "loaded", "heavy", "long", "twin"})  # fmt: skip
+TOWED = frozenset({"trailer", "trailers", "semi-trailer", "semitrailer", "horsebox", "caravan", "boat"})
+#: Words by which a vehicle has something in tow ("towing", "pulling", "with" or "and" right after its noun:
+#: "a prime mover and trailer").
+_TOWING = frozenset({"towing", "tows", "towed", "pulling", "hauling", "dragging", "with", "and"})
+#: Parts of a trailer, after which "trailer" says whose part it is ("past the trailer wheels"): the part of
+#: a vehicle named already, no new road user.
+_TRAILER_PARTS = frozenset({"wheel", "wheels", "tyre", "tyres", "tire", "tires", "axle", "axles", "door", "doors",
+                            "end", "side", "corner", "hitch", "coupling", "lights", "brakes"})  # fmt: skip
+#: Marks that end the phrase of what is towed before its noun ("towing a 53' trailer" goes on past "'").
+_TOWED_STOPS = frozenset({".", ",", ";", ":", "!", "?", "and", "or", "but", "then"})
 
 
 def towed(tokens: list[str], kind_at: KindAt) -> list[str]:
     """``tokens`` without the trailer a vehicle tows ("a car towing a trailer", "a ute with a horse
-    trailer", "a 4x4 pulling a caravan"): it is part of that road user, no second one. "With" counts
-    only right after a vehicle's noun ("collided with a trailer" names a trailer that is one)."""
+    trailer", "a prime mover and trailer", "pulling a 53' trailer"): it is part of that road user, no
+    second one; nor is a trailer that only says whose part it is ("the trailer wheels"). "With" and "and"
+    count only right after a vehicle's noun ("collided with a trailer", "a van and a trailer" name a
+    trailer that is one)."""
     out: list[str] = []
     i = 0
     while i < len(tokens):
-        if tokens[i] in _TOWING and out:
+        if tokens[i] in TOWED and tokens[i + 1 : i + 2] and tokens[i + 1] in _TRAILER_PARTS:
+            i += 1  # ("squeezed past the trailer wheels": the wheels of the trailer named before)
+            continue
+        if tokens[i] in _TOWING:
             after_vehicle = any(
                 (k := kind_at(out, j)) is not None and k[0] not in ("pedestrian", "ego") and j + k[1] == len(out)
                 for j in range(max(len(out) - 3, 0), len(out))
             )
             j = i + 1
-            while j < len(tokens) and j < i + 4 and tokens[j] in _TOWED_BEFORE:
+            while j < len(tokens) and j < i + 5 and tokens[j] not in TOWED and tokens[j] not in _TOWED_STOPS:
+                if (named := kind_at(tokens, j)) is not None:
+                    j += named[1] - 1 if tokens[j + named[1] - 1] in TOWED else 0  # ("a horse trailer")
+                    break
                 j += 1
-            if j < len(tokens) and tokens[j] in TOWED and (tokens[i] != "with" or after_vehicle):
+            by_its_noun = tokens[i] in ("with", "and")
+            bare = tokens[i] != "and" or j == i + 1 or tokens[i + 1] in ("its", "his", "her", "their")
+            if j < len(tokens) and tokens[j] in TOWED and bare and (not by_its_noun or after_vehicle):
                 i = j + 1
                 continue
         out.append(tokens[i])
