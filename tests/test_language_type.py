@@ -385,6 +385,8 @@ def test_things_named_after_walkers_and_the_narrators_people_are_no_road_users(t
             "A van and a trailer were parked ahead; a cyclist pulled out from the left in front of me at 20 mph.",
             ["van", "truck", "bicycle"],
         ),
+        ("Doing 50 mph in the inside lane with the reefer trailer when a BMW dived in front of me.", ["car"]),
+        ("A trailer was parked ahead. A car pulled out and collided with the trailer; I was at 30 km/h.", None),
     ],
     ids=[
         "towing-a-trailer",
@@ -395,6 +397,8 @@ def test_things_named_after_walkers_and_the_narrators_people_are_no_road_users(t
         "prime-mover-and-trailer",
         "hauling-a-trailer",
         "a-van-and-a-trailer",
+        "with-the-fridge-trailer",
+        "collided-with-the-trailer",
     ],
 )
 def test_what_a_vehicle_tows_is_part_of_it(text, kinds):

@@ -214,6 +214,16 @@ _TRAILER_PARTS = frozenset({"wheel", "wheels", "tyre", "tyres", "tire", "tires",
 _TOWED_STOPS = frozenset({".", ",", ";", ":", "!", "?", "and", "or", "but", "then"})
 
 
+_TOWED_DEFINITE = (["the"], ["my"], ["our"], ["his"], ["her"], ["its"], ["their"])
+#: Verbs (lemmas) by which one meets what comes after "with" ("collided with the trailer").
+_MEETING = frozenset({"collide", "crash", "clash", "tangle", "connect", "clip", "meet", "side-swipe"})
+
+
+def _meets(before: list[str]) -> bool:
+    """Whether the word before "with" is a verb of meeting what follows ("collided with", "tangled with")."""
+    return bool(before) and bool(set(lemmas(before[-1]).get("VERB", ())) & _MEETING)
+
+
 def towed(tokens: list[str], kind_at: KindAt) -> list[str]:
     """``tokens`` without the trailer a vehicle tows ("a car towing a trailer", "a ute with a horse
     trailer", "a prime mover and trailer", "pulling a 53' trailer"): it is part of that road user, no
@@ -237,7 +247,10 @@ def towed(tokens: list[str], kind_at: KindAt) -> list[str]:
                     j += named[1] - 1 if tokens[j + named[1] - 1] in TOWED else 0  # ("a horse trailer")
                     break
                 j += 1
-            by_its_noun = tokens[i] in ("with", "and")
+            # (a definite or possessive trailer one is "with" is in tow, "in lane 1 with the fridge trailer",
+            # unless one meets it: "collided with the trailer")
+            in_tow = tokens[i] == "with" and tokens[i + 1 : i + 2] in _TOWED_DEFINITE and not _meets(out)
+            by_its_noun = tokens[i] in ("with", "and") and not in_tow
             bare = tokens[i] != "and" or j == i + 1 or tokens[i + 1] in ("its", "his", "her", "their")
             if j < len(tokens) and tokens[j] in TOWED and bare and (not by_its_noun or after_vehicle):
                 i = j + 1
