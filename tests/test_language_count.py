@@ -1067,3 +1067,35 @@ def test_a_vehicle_said_by_a_word_for_a_thing_is_that_vehicle(text, expected):
 )
 def test_a_vehicle_before_a_plural_that_names_something_else_stays_a_modifier(text, expected):
     assert kinds(text) == expected
+
+
+# --- a walker someone stops, waits or gives way for at a walkers' crossing is crossing there --------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I stopped at the zebra for a pedestrian at 20 mph.",
+        "I was doing 20 mph and stopped at the crossing for an old man.",
+        "I stopped for a pedestrian at the zebra crossing; the van behind overtook me.",
+        "I gave way to an elderly lady at the crosswalk, doing 15 mph.",
+        "Ego slows to a stop at the pelican crossing for a jogger, 30 km/h before.",
+    ],
+    ids=["zebra", "crossing-old-man", "van-behind", "gave-way-crosswalk", "pelican-jogger"],
+)
+def test_a_walker_waited_for_at_a_crossing_crosses(text):
+    reading = read(text)
+    walkers = [a for a in reading.actors if a.kind == "pedestrian"]
+    assert len(walkers) == 1 and walkers[0].behaviours[0][0] == "cross_in_front"
+
+
+@pytest.mark.parametrize(
+    "text, behaviour",
+    [
+        ("A pedestrian was walking along the pavement near the zebra crossing; I was at 20 mph.", "along_road"),
+        ("I passed a pedestrian standing by the zebra crossing at 20 mph.", "stop"),
+        ("I waited behind a jogger on the road at 20 mph.", "along_road"),
+    ],
+    ids=["walking-along", "standing-by", "no-crossing-named"],
+)
+def test_a_walker_at_a_crossing_who_does_something_else_keeps_it(text, behaviour):
+    walkers = [a for a in read(text).actors if a.kind == "pedestrian"]
+    assert walkers and walkers[0].behaviours[0][0] == behaviour

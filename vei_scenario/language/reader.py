@@ -2315,7 +2315,11 @@ def _read(text: str) -> Reading:
         spec.distance_m = a.distance_m
         spec.speed_mps = 0.0 if a.stationary and a.speed_mps is None else a.speed_mps
         passes_another = any(x.object_of is a for x in actors)  # ("pulled out to pass a truck": its own overtake)
+        only_there = [b[0] for b in spec.behaviours] in ([], ["keep_going"])  # (nothing it does is said)
         _specialise(a, spec, junction, sides.drives_on_left(scanned, text), turn_across_side(text), passes_another)
+        if only_there and _waits_at_a_crossing(a, spec, said):
+            spec.behaviours = [("cross_in_front", {}, *spec.behaviours[0][2:])]  # ("stopped at the zebra for a mum")
+            spec.relation = spec.relation if spec.relation in ("roadside_left", "roadside_right") else "roadside_right"
         r.actors.append(spec)
     for a, spec in zip(actors, r.actors):  # what an oncoming car overtakes comes towards the ego too
         k = next((k for k, x in enumerate(actors) if x is a.object_of), None)
@@ -2622,6 +2626,29 @@ VEHICLES = ("car", "van", "truck")
 RIDERS = ("bicycle", "e-scooter")
 #: Words before a verb that make it passive ("is tailgated", "gets cut off").
 PASSIVE_AUXILIARIES = {"is", "are", "was", "were", "be", "been", "being", "get", "gets", "got", "getting"}
+
+
+#: Places where people on foot cross the road, by the words that name them ("the zebra", "a crosswalk").
+_WALKERS_CROSSINGS = (
+    "pedestrian crossing", "zebra crossing", "zebra", "pelican crossing", "puffin crossing", "toucan crossing",
+    "crosswalk", "crossing", "school crossing",
+)  # fmt: skip
+
+
+def _waits_at_a_crossing(a: _Actor, spec: ActorSpec, said: str) -> bool:
+    """Whether walker ``a``, of whom nothing is said but that someone stops, waits or gives way for them
+    (the caller has seen no verb of theirs: "stopped at the zebra for a mum with a pushchair", "waited at
+    the crosswalk for an old man", "gave way to a pedestrian at the crossing"), is someone crossing at
+    the walkers' crossing the text names: that is what they are waited for. Not one placed behind or
+    beside the ego, passed, or said to stand still."""
+    if a.kind != "pedestrian" or a.stationary or a.passed or a.wrong_way:
+        return False
+    if [b[0] for b in spec.behaviours] not in (["keep_going"], ["along_road"]) or spec.speed_mps == 0.0:
+        return False
+    if spec.relation not in (None, "ahead", "roadside_left", "roadside_right") or a.said - {"ahead"}:
+        return False
+    waited_for = re.search(rf"\b(?:for|way to) (?:\S+ ){{0,3}}{re.escape(a.word)}\b", said) if a.word else None
+    return waited_for is not None and any(f" {w} " in f" {said} " for w in _WALKERS_CROSSINGS)
 
 
 def _specialise(
