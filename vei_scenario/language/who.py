@@ -214,6 +214,7 @@ _TRAILER_PARTS = frozenset({"wheel", "wheels", "tyre", "tyres", "tire", "tires",
 _TOWED_STOPS = frozenset({".", ",", ";", ":", "!", "?", "and", "or", "but", "then"})
 
 
+#: Determiners of a trailer someone already has ("with the fridge trailer", "with his trailer").
 _TOWED_DEFINITE = (["the"], ["my"], ["our"], ["his"], ["her"], ["its"], ["their"])
 #: Verbs (lemmas) by which one meets what comes after "with" ("collided with the trailer").
 _MEETING = frozenset({"collide", "crash", "clash", "tangle", "connect", "clip", "meet", "side-swipe"})
