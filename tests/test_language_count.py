@@ -775,6 +775,34 @@ def test_a_vehicle_on_its_way_after_the_event_is_no_road_user(text, expected):
     assert kinds(text) == expected
 
 
+# (with no article, and where no collision is said: it is the call that says it comes after)
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A bus and a scooter rider came together at the exit ahead of me. Ambulance is on its way.", "van"),
+        ("A lad on a bike shot out of a side road on my left, I was doing 20 mph; police car en route now.", "car"),
+        ("A pedestrian stepped out from the left in front of me; an ambulance was called but she was fine.", "van"),
+        ("Cyclist swerved out from the kerb in front of us at 15 mph. Paramedic car on the way, all ok.", "car"),
+        ("A woman ran across in front of me from the right. Two police vans were summoned to the scene.", "van"),
+    ],
+    ids=["bare-on-its-way", "police-car-en-route", "was-called-no-contact", "on-the-way", "were-summoned"],
+)
+def test_a_vehicle_called_to_the_scene_is_no_road_user_whatever_the_outcome(text, expected):
+    assert expected not in kinds(text)
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A van was on its way out of the junction when it pulled into my path from the left.", ["van"]),
+        ("A lorry was on its way to the depot when it pulled out in front of me from the left.", ["truck"]),
+    ],
+    ids=["on-its-way-out", "on-its-way-to"],
+)
+def test_a_vehicle_on_its_way_somewhere_in_the_event_stays(text, expected):
+    assert kinds(text) == expected
+
+
 @pytest.mark.parametrize(
     "text, expected",
     [
@@ -906,6 +934,34 @@ def test_a_pedestrian_crossing_with_an_object_is_a_walker():
     assert kinds(text) == ["bicycle", "pedestrian"]
 
 
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Ego 25 kph on a narrow street behind a cyclist. Also one pedestrian crossing far ahead.",
+        "Ego 40 km/h, a van pulls out from the left; and one pedestrian crossing from the right behind it.",
+        "Ego 30 km/h behind a bus; also a pedestrian crossing ahead, from the left.",
+        "Ego at 50 km/h behind a lorry, plus one pedestrian crossing slowly in the distance.",
+        "Scene: ego 20 mph, a cyclist ahead in the lane, then a pedestrian crossing well ahead of both.",
+    ],
+    ids=["also-one", "and-one", "also-a", "plus-one", "then-a"],
+)
+def test_one_pedestrian_crossing_at_a_clauses_start_is_a_walker(text):
+    assert "pedestrian" in kinds(text)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Ego 30 km/h behind a cyclist; there is one pedestrian crossing on this road.",
+        "Ego 30 km/h; the cyclist ahead of us slows for a pedestrian crossing.",
+        "Ego at 40 km/h behind a van that stops at one pedestrian crossing after another.",
+    ],
+    ids=["there-is-one", "slows-for-a", "at-one"],
+)
+def test_a_pedestrian_crossing_counted_after_a_verb_stays_a_place(text):
+    assert "pedestrian" not in kinds(text)
+
+
 def test_a_pedestrian_crossing_as_a_place_is_no_walker():
     assert kinds("Ego at 30 km/h; a cyclist ahead of us stops at a pedestrian crossing.") == ["bicycle"]
 
@@ -983,3 +1039,63 @@ def test_one_picked_out_of_many_who_reports_is_no_new_road_user():
         "One motorist heading east says she only just missed him."
     )
     assert kinds(text) == ["bicycle"]
+
+
+# --- a vehicle's noun before a word for a thing with no name ("these scooter contraptions") is that vehicle ---
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("I was doing 20 mph when one of these electric scooter contraptions shot past and cut in.", ["e-scooter"]),
+        ("Doing 30, and one of those scooter gadgets comes flying off the kerb on my left.", ["e-scooter"]),
+        ("Ego 40 km/h; two bike thingies swerve out from the left kerb in front of it.", ["bicycle", "bicycle"]),
+        ("One of these e-scooter deathtraps came at me the wrong way down the high street at 15 mph.", ["e-scooter"]),
+        ("I was on 25 mph and one of those hoverboard toys rolled out from the right in front of me.", ["e-scooter"]),
+    ],
+    ids=["contraptions", "gadgets", "thingies", "deathtraps", "toys"],
+)
+def test_a_vehicle_said_by_a_word_for_a_thing_is_that_vehicle(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("We looked at two car crashes; in the first a van pulled out from the left at 30 mph.", ["van"]),
+        ("Doing 30 mph past the scooter bays when a cyclist pulled out from the left.", ["bicycle"]),
+    ],
+    ids=["car-crashes", "scooter-bays"],
+)
+def test_a_vehicle_before_a_plural_that_names_something_else_stays_a_modifier(text, expected):
+    assert kinds(text) == expected
+
+
+# --- a walker someone stops, waits or gives way for at a walkers' crossing is crossing there --------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I stopped at the zebra for a pedestrian at 20 mph.",
+        "I was doing 20 mph and stopped at the crossing for an old man.",
+        "I stopped for a pedestrian at the zebra crossing; the van behind overtook me.",
+        "I gave way to an elderly lady at the crosswalk, doing 15 mph.",
+        "Ego slows to a stop at the pelican crossing for a jogger, 30 km/h before.",
+    ],
+    ids=["zebra", "crossing-old-man", "van-behind", "gave-way-crosswalk", "pelican-jogger"],
+)
+def test_a_walker_waited_for_at_a_crossing_crosses(text):
+    reading = read(text)
+    walkers = [a for a in reading.actors if a.kind == "pedestrian"]
+    assert len(walkers) == 1 and walkers[0].behaviours[0][0] == "cross_in_front"
+
+
+@pytest.mark.parametrize(
+    "text, behaviour",
+    [
+        ("A pedestrian was walking along the pavement near the zebra crossing; I was at 20 mph.", "along_road"),
+        ("I passed a pedestrian standing by the zebra crossing at 20 mph.", "stop"),
+        ("I waited behind a jogger on the road at 20 mph.", "along_road"),
+    ],
+    ids=["walking-along", "standing-by", "no-crossing-named"],
+)
+def test_a_walker_at_a_crossing_who_does_something_else_keeps_it(text, behaviour):
+    walkers = [a for a in read(text).actors if a.kind == "pedestrian"]
+    assert walkers and walkers[0].behaviours[0][0] == behaviour

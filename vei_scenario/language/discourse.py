@@ -48,7 +48,13 @@ from vei_scenario.language.lemmas import english, lemmas
 from vei_scenario.language.lexicon import ANIMALS, MOTOR_TWO_WHEELERS, WALKER_PACED
 from vei_scenario.language.scenery import absent, vehicle_modifiers
 from vei_scenario.language.vocabulary import IN_LINE
-from vei_scenario.language.who import make_and_model, person_with_vehicle, travel_modes, vehicle_places
+from vei_scenario.language.who import (
+    make_and_model,
+    person_with_vehicle,
+    travel_modes,
+    vehicle_places,
+    walker_places,
+)
 
 #: ``kind_at(tokens, i)``: the road-user type named by a phrase starting at ``i`` ("ego" for the ego)
 #: and the phrase's length, or None when no road-user phrase starts there.
@@ -1295,6 +1301,49 @@ def _aftermath(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[s
         if p is None or p.kind in before or p.kind == "ego" or p.det not in ("the", "") or placed:
             out.append(tokens[i])
             i += 1
+            continue
+        if p.start < i:  # (its article and modifiers were copied already)
+            del out[len(out) - (i - p.start) :]
+        dropped.extend(tokens[p.start : p.end])
+        i = p.end
+    return out
+
+
+#: What is said of those who answer a call after the event, right after their noun and a form of "be"
+#: or with none ("Ambulance is on its way", "police cars were called", "fire crews en route").
+_ON_THE_WAY = (("on", "its", "way"), ("on", "their", "way"), ("on", "the", "way"), ("en", "route"))
+#: ... or called for, after a form of "be" ("was called", "were summoned").
+_CALLED = (("called",), ("summoned",), ("sent", "for"), ("dispatched",))
+_RESPONDING_BE = frozenset({"is", "are", "was", "were", "has", "have", "had", "been", "being", "now", "already"})
+#: What may follow "on its way" that ends what is said of the one answering the call ("... on its way, and
+#: ..."; not "on its way out of the junction when it pulled out").
+_RESPONSE_ENDS = PUNCT | {"now", "and", "but", "soon", "too", "also"}
+
+
+def _responders(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """A vehicle said to be on its way, called or sent for ("Ambulance is on its way.", "an ambulance was
+    called", "two fire engines en route") answers a call after what happened: no road user of the
+    scene, with or without an article and whatever the outcome said. The rest of the sentence stays; a
+    vehicle that does something on the road ("an ambulance on a blue light came through the red") is
+    untouched."""
+    out: list[str] = []
+    i = 0
+    while i < len(tokens):
+        p = _phrase_at(tokens, i, kind_at, known)
+        if p is None or p.kind in ("ego", "pedestrian"):
+            out.append(tokens[i])
+            i += 1
+            continue
+        j = p.end
+        while j < len(tokens) and tokens[j] in _RESPONDING_BE:
+            j += 1
+        be = j > p.end
+        way = next((len(r) for r in _ON_THE_WAY if tuple(tokens[j : j + len(r)]) == r), 0)
+        way = way if j + way >= len(tokens) or tokens[j + way] in _RESPONSE_ENDS else 0
+        called = be and any(tuple(tokens[j : j + len(r)]) == r for r in _CALLED)
+        if not (way or called):
+            out.extend(tokens[i : p.end])
+            i = p.end
             continue
         if p.start < i:  # (its article and modifiers were copied already)
             del out[len(out) - (i - p.start) :]
@@ -2562,7 +2611,7 @@ def resolve(
     dropped: list[str] = []
     names: dict[str, str] = {}
     tokens = person_with_vehicle(make_and_model(tokens, kind_at, known), kind_at)
-    tokens = vehicle_places(travel_modes(tokens, kind_at), kind_at)
+    tokens = walker_places(vehicle_places(travel_modes(tokens, kind_at), kind_at), kind_at)
     tokens = _named_vehicles(tokens, kind_at, known, proper)
     tokens = _brackets(tokens, kind_at, known, names, dropped)
     tokens = _compounds(tokens, kind_at)
@@ -2598,7 +2647,7 @@ def resolve(
     tokens = _what_everyone_is(tokens, kind_at, known, dropped)
     tokens = _placed_apposition(tokens, kind_at, known, dropped)
     tokens = _egos_vehicle(tokens, kind_at, known, dropped)
-    tokens = _aftermath(tokens, kind_at, known, dropped)
+    tokens = _responders(_aftermath(tokens, kind_at, known, dropped), kind_at, known, dropped)
     tokens = _ego_unnamed(tokens, kind_at, known)
     tokens = _named_speeds(tokens, kind_at, known, names)
     tokens = _speed_of_both(tokens, kind_at, known)

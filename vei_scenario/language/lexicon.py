@@ -42,7 +42,21 @@ SCOOTER_OPERATORS = ("lime", "bird", "tier", "voi", "dott", "bolt", "spin", "bea
 ANIMALS = (
     "dog", "deer", "animal", "cat", "fox", "horse", "pony", "cow", "cattle", "sheep", "goat", "kangaroo",
     "wallaby", "moose", "elk", "boar", "badger", "donkey", "camel",
+    # the rest of the class: farm, wild and bush animals met on roads the world over, and their short names
+    # ("a roo"); some are verbs too ("bull", "wolf"), which no guess at an unknown subject reads
+    # (not those that are mostly food, a body part, a city or a verb of people: "the chicken one", "my calf",
+    # "Buffalo", "bear in mind", "ducked", "hared off", "a road hog", "a stag do")
+    "roo", "emu", "wombat", "koala", "possum", "opossum", "echidna", "cassowary", "ostrich", "bull", "bullock",
+    "ox", "oxen", "heifer", "bison", "mule", "llama", "alpaca", "goose", "geese", "rooster", "cockerel",
+    "peacock", "pheasant", "monkey", "baboon", "elephant", "giraffe", "pig", "warthog", "hedgehog", "squirrel",
+    "raccoon", "skunk", "coyote", "wolf", "reindeer", "caribou", "puppy", "kitten", "foal",
 )  # fmt: skip
+#: Things named after the animals they are for or against ("the bull bar", "a roo bar", "the cattle grid",
+#: "a deer fence", "a horse box"): a closed class of nouns after which an animal's noun is a modifier, no
+#: road user (:func:`who.walker_places`).
+THINGS_FOR_ANIMALS = frozenset({"bar", "bars", "grid", "grids", "grate", "fence", "fencing", "box", "trailer",
+                                "catcher", "guard", "whistle", "whistles", "farm", "field", "fields", "pen",
+                                "shed", "pond", "park", "shop", "sign", "signs", "food", "hair", "lead"})  # fmt: skip
 
 #: What a person rides or sits in at a walker's pace, on the pavement or the road's edge: the person and it
 #: are one walker ("a man on a mobility scooter", "a woman in a wheelchair", "a girl on a pony").
@@ -119,6 +133,20 @@ ACTOR_NOUNS = {
         "moron",
         "nutter",
         "muppet",
+        # people at work on or by the road, and others on foot, by everyday names ("a hawker", "a flagman")
+        "senior citizen",
+        "beggar",
+        "hawker",
+        "street vendor",
+        "security guard",
+        "flagman",
+        "flagger",
+        "banksman",
+        "cop",
+        "traffic cop",
+        "labourer",
+        "laborer",
+        "construction worker",
         "epta",  # (Euro NCAP's pedestrian targets: adult, child, and either)
         "eptc",
         "ept",
@@ -134,6 +162,19 @@ ACTOR_NOUNS = {
         "cargo bike",
         "unicycle",
         "unicyclist",
+        "pedal cycle",
+        "push cycle",
+        "pedelec",
+        "pab",  # (a power-assisted bicycle, Singapore usage)
+        "power-assisted bicycle",
+        "bmx",
+        "bmxer",
+        "fixie",
+        "roadie",  # (a road cyclist, British and Australian usage)
+        "pedicab",
+        "trishaw",
+        "cycle rickshaw",
+        "becak",
         "ebta",
         "ebt",  # (Euro NCAP's bicyclist target)
     ),  # fmt: skip
@@ -155,6 +196,12 @@ ACTOR_NOUNS = {
         "stand-up scooter",
         "e-step",  # (Dutch for an e-scooter, used in Dutch English)
         "e-step rider",
+        "pmd",  # (a personal mobility device, Singapore and Malaysian usage: an e-scooter as a rule)
+        "pmd rider",
+        "personal mobility device",
+        "electric skateboard",
+        "e-skateboard",
+        "solowheel",
     ),
     "truck": (
         "truck",
@@ -204,6 +251,25 @@ ACTOR_NOUNS = {
         "cement mixer",
         "concrete mixer",
         "dustcart",
+        "trailer",  # (an articulated lorry, as West African and Indian English say; one towed is its vehicle's)
+        "semi-trailer",
+        "semitrailer",
+        "semi trailer",
+        "juggernaut",
+        "molue",  # (a large bus, Lagos)
+        "horsebox",
+        "horse box",
+        "horse trailer",
+        "combine harvester",
+        "harvester",
+        "digger",
+        "excavator",
+        "snowplough",
+        "snowplow",
+        "road sweeper",
+        "street sweeper",
+        "road roller",
+        "steamroller",
         *TRUCK_MAKES,
     ),
     "van": (
@@ -232,6 +298,23 @@ ACTOR_NOUNS = {
         "dala dala",
         "dala-dala",
         "jeepney",  # (a shared minibus, the Philippines)
+        "danfo",  # (a shared minibus, Lagos)
+        "trotro",  # (a shared minibus, Ghana)
+        "tro-tro",
+        "tro tro",
+        "combi",
+        "chapa",  # (a shared minibus, Mozambique)
+        "marshrutka",  # (a shared minibus, the former Soviet Union)
+        "songthaew",  # (a shared pickup taxi, Thailand and Laos)
+        "angkot",  # (a shared minibus, Indonesia)
+        "bemo",
+        "mini bus",
+        "mini-bus",
+        "people mover",
+        "campervan",
+        "camper van",
+        "light commercial vehicle",
+        "lcv",
         *VAN_MODELS,
     ),
 }
@@ -270,6 +353,27 @@ CAR_NOUNS = (
     "boda boda",
     "boda",
     "okada",
+    "motorbike taxi",  # (the motorcycle taxis of Africa and Asia: ojek, habal-habal, moto)
+    "motorcycle taxi",
+    "moto-taxi",
+    "mototaxi",
+    "moto taxi",
+    "bike taxi",
+    "ojek",
+    "habal-habal",
+    "scooty",  # (a motor scooter, Indian English)
+    "superbike",
+    "sportsbike",
+    "sports bike",
+    "trail bike",
+    "pit bike",
+    "keke",  # (a motor tricycle taxi, Nigeria; "keke napep")
+    "keke napep",
+    "bajaj",  # (a motor tricycle taxi, East Africa)
+    "bajaji",
+    "e-rickshaw",
+    "erickshaw",
+    "rickshaw",
     "tuk-tuk",  # (a motor three-wheeler is read as a car, as a motor two-wheeler is)
     "tuktuk",
     "auto-rickshaw",
@@ -301,7 +405,9 @@ CAR_NOUNS = (
 #: ("a motorcyclist ... the bike stopped").
 MOTOR_TWO_WHEELERS = frozenset((
     "motorcycle", "moped", "motor scooter", "motorbike", "motorcyclist", "powered two-wheeler", "two-wheeler",
-    "ptw", "motor bike", "dirt bike", "boda-boda", "boda boda", "boda", "okada", "emt",
+    "ptw", "motor bike", "dirt bike", "boda-boda", "boda boda", "boda", "okada", "emt", "motorbike taxi",
+    "motorcycle taxi", "moto-taxi", "mototaxi", "moto taxi", "bike taxi", "ojek", "habal-habal", "scooty",
+    "superbike", "sportsbike", "sports bike", "trail bike", "pit bike",
 ))  # fmt: skip
 #: Words of a vehicle's size that no dictionary has ("a 14-seater van"): words, not slips of another word
 #: ("skater" would be a road user of its own).

@@ -86,6 +86,7 @@ from vei_scenario.language.who import (
     proper_names,
     rider_noun,
     shared_scooters,
+    towed,
     unnamed_subjects,
 )
 
@@ -615,6 +616,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
     framed: list[str] = []
     tokens = run_on.break_after_a_speed(tokens, _actor_at, FUNCTION_WORDS)  # ("20 mph a van pulled out")
     tokens = whose_act.unnamed_rider(tokens, _kind_at)  # ("car clipped rider": an e-scooter's rider)
+    tokens = towed(tokens, _kind_at)  # ("a prime mover and trailer": one road user, before who is who)
     tokens = ego.frame(tokens, _kind_at, _known, framed, protagonist.frame)  # (by a role, its driver, a witness)
     tokens = narrator_vehicle.frame(tokens, _kind_at, _known, framed)  # (the writer in it or testing it)
     tokens = generic_ego.frame(tokens, _kind_at, _known, framed)  # (the ego as drivers in general)
@@ -725,6 +727,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             last = tokens[i + len(key) - 1]  # "the bus stops": the bus, then its verb ("at a bus stop": a place)
             verb = last != key[-1] and last == key[-1] + "s"  # "the bus stops"
             opens = prev in _OPENERS or (prev in _DETERMINERS and i == 1)  # (its sentence's subject)
+            opens = opens or _someone_new_opens(tokens, i)  # ("Also one pedestrian crossing far ahead")
             # "A pedestrian crossing from the right ...", "also a pedestrian crossing the road" (its object)
             takes_object = tokens[i + len(key) : i + len(key) + 1] in (["the"], ["a"], ["an"], ["my"], ["our"])
             participle = last.endswith("ing") and (opens or takes_object)
@@ -1091,6 +1094,44 @@ def _new_unknown_subject(tokens: list[str], i: int) -> bool:
     if tokens[j] == "one" and not _finite_next(tokens, i + 1):
         return False  # ("One motorist heading east tells us ...": one picked out of many, who reports)
     return _clause_opens_before(tokens, j)
+
+
+#: Words a clause opens with before a new road user that is its subject ("Also a ...", "Plus one ...").
+_ADDING = frozenset({"also", "plus", "and", "then", "next"})
+
+
+def _someone_new_opens(tokens: list[str], i: int) -> bool:
+    """Whether the road-user noun at ``i`` opens its clause as someone new: "one" before it after a
+    clause opens ("Also one pedestrian crossing far ahead", "; one cyclist crossing ..."), as people
+    count the road users of a scene, or "a" right after a word that adds one more ("Also a pedestrian
+    crossing ahead"). A place is named with "a" after a verb or a preposition ("there is a pedestrian
+    crossing", "near a pedestrian crossing") and hardly ever counted as "one" at a clause's start."""
+    det = tokens[i - 1] if i else ""
+    before = tokens[i - 2] if i > 1 else ""
+    if det == "one":
+        return before in _OPENERS or before in _ADDING
+    return det in ("a", "an") and before in _ADDING
+
+
+#: The words that name a motorbike as often as a pedal cycle ("bike" in Indian, and much other, English).
+_EITHER_BIKE = frozenset({"bike", "bikes", "biker", "bikers"})
+#: Faster than a pedal cyclist goes (m/s): 45 km/h; and the ego's speed above which a pedal cyclist does
+#: not come past it (m/s): 35 km/h.
+_CYCLIST_TOP_MPS = 12.5
+_CYCLIST_PASSES_MPS = 9.7
+
+
+def _at_a_motorbikes_pace(a: _Actor, ego_mps: float | None) -> bool:
+    """Whether road user ``a``, named only "bike" or "biker", goes at a motorbike's pace, not a pedal
+    cycle's: faster than a cyclist rides, or coming past the ego ("overtook me", "came from behind and
+    cut in") while the ego drives faster than a cyclist can keep up with."""
+    if a.word not in _EITHER_BIKE:
+        return False
+    if a.speed_mps is not None and a.speed_mps > _CYCLIST_TOP_MPS:
+        return True
+    names = {b[0] for b in a.behaviours}
+    passes = "overtake" in names or ("cut_in" in names and ("behind" in a.said or a.relation == "behind"))
+    return passes and ego_mps is not None and ego_mps > _CYCLIST_PASSES_MPS
 
 
 def _finite_next(tokens: list[str], k: int) -> bool:
@@ -2090,6 +2131,8 @@ def _read(text: str) -> Reading:
             names = {b[0] for b in a.behaviours}
             if (a.wrong_way or names & set(L.DRIVER_BEHAVIOURS)) and not names & {"cross_in_front", "along_road"}:
                 a.kind = "car"
+        if a.kind == "bicycle" and _at_a_motorbikes_pace(a, r.ego_speed_mps):
+            a.kind = "car"  # ("one bike fellow came from behind and cut in" at 40 kmph: a motorbike)
         if a.hides and a.kind in VEHICLES and not a.behaviours and a.speed_mps is None:
             a.stationary = a.parked = True  # (what someone steps out from behind stands there)
         said_by_noun = L.BEHAVIOUR_NOUNS.get(a.word)
@@ -2272,7 +2315,11 @@ def _read(text: str) -> Reading:
         spec.distance_m = a.distance_m
         spec.speed_mps = 0.0 if a.stationary and a.speed_mps is None else a.speed_mps
         passes_another = any(x.object_of is a for x in actors)  # ("pulled out to pass a truck": its own overtake)
+        only_there = [b[0] for b in spec.behaviours] in ([], ["keep_going"])  # (nothing it does is said)
         _specialise(a, spec, junction, sides.drives_on_left(scanned, text), turn_across_side(text), passes_another)
+        if only_there and _waits_at_a_crossing(a, spec, said):
+            spec.behaviours = [("cross_in_front", {}, *spec.behaviours[0][2:])]  # ("stopped at the zebra for a mum")
+            spec.relation = spec.relation if spec.relation in ("roadside_left", "roadside_right") else "roadside_right"
         r.actors.append(spec)
     for a, spec in zip(actors, r.actors):  # what an oncoming car overtakes comes towards the ego too
         k = next((k for k, x in enumerate(actors) if x is a.object_of), None)
@@ -2579,6 +2626,29 @@ VEHICLES = ("car", "van", "truck")
 RIDERS = ("bicycle", "e-scooter")
 #: Words before a verb that make it passive ("is tailgated", "gets cut off").
 PASSIVE_AUXILIARIES = {"is", "are", "was", "were", "be", "been", "being", "get", "gets", "got", "getting"}
+
+
+#: Places where people on foot cross the road, by the words that name them ("the zebra", "a crosswalk").
+_WALKERS_CROSSINGS = (
+    "pedestrian crossing", "zebra crossing", "zebra", "pelican crossing", "puffin crossing", "toucan crossing",
+    "crosswalk", "crossing", "school crossing",
+)  # fmt: skip
+
+
+def _waits_at_a_crossing(a: _Actor, spec: ActorSpec, said: str) -> bool:
+    """Whether walker ``a``, of whom nothing is said but that someone stops, waits or gives way for them
+    (the caller has seen no verb of theirs: "stopped at the zebra for a mum with a pushchair", "waited at
+    the crosswalk for an old man", "gave way to a pedestrian at the crossing"), is someone crossing at
+    the walkers' crossing the text names: that is what they are waited for. Not one placed behind or
+    beside the ego, passed, or said to stand still."""
+    if a.kind != "pedestrian" or a.stationary or a.passed or a.wrong_way:
+        return False
+    if [b[0] for b in spec.behaviours] not in (["keep_going"], ["along_road"]) or spec.speed_mps == 0.0:
+        return False
+    if spec.relation not in (None, "ahead", "roadside_left", "roadside_right") or a.said - {"ahead"}:
+        return False
+    waited_for = re.search(rf"\b(?:for|way to) (?:\S+ ){{0,3}}{re.escape(a.word)}\b", said) if a.word else None
+    return waited_for is not None and any(f" {w} " in f" {said} " for w in _WALKERS_CROSSINGS)
 
 
 def _specialise(

@@ -82,6 +82,23 @@ def _plural_noun(word: str, counted: bool) -> bool:
     return bool(nouns) and word not in nouns and ("VERB" not in pos or counted)
 
 
+#: Plurals of the words people use for a thing they have no name for, or scorn ("these scooter
+#: contraptions", "those bike gadgets", "e-scooter thingies"): after a vehicle's noun they are that
+#: vehicle, said with a shrug, not something of it (a closed class).
+_STAND_INS = frozenset((
+    "contraptions", "gadgets", "devices", "things", "thingies", "thingys", "machines", "toys", "deathtraps",
+    "death-traps", "menaces", "monstrosities", "contrivances", "doohickeys",
+))  # fmt: skip
+
+
+def _plural(noun: str) -> str:
+    """The plural of vehicle noun ``noun`` ("scooter" -> "scooters", "bus" -> "buses")."""
+    from lemminflect import getInflection
+
+    forms = getInflection(noun, "NNS")
+    return forms[0] if forms else noun + "s"
+
+
 def vehicle_modifiers(tokens: list[str], kind_at: Callable[[list[str], int], tuple[str, int] | None],
                       dropped: list[str]) -> list[str]:  # fmt: skip
     """``tokens`` without a singular vehicle noun that modifies the plural noun right after it ("three
@@ -102,6 +119,11 @@ def vehicle_modifiers(tokens: list[str], kind_at: Callable[[list[str], int], tup
         counted = i > 0 and tokens[i - 1] in _MANY  # (not a figure: "16:06 cyclist crosses" is a clock)
         singular = "NOUN" in lemmas(noun) and noun in lemmas(noun)["NOUN"] or not noun.endswith("s")
         measure = head in _MEASURES
+        if singular and head in _STAND_INS:  # ("these scooter contraptions": the scooters themselves)
+            out.extend([*tokens[i : end - 1], _plural(noun)])
+            dropped.append(head)
+            i = end + 1
+            continue
         if singular and head and not measure and kind_at(tokens, end) is None and _plural_noun(head, counted):
             dropped.extend(tokens[i:end])
         else:

@@ -10,7 +10,7 @@ import re
 from collections.abc import Callable
 
 from vei_scenario.language.lemmas import english, lemmas
-from vei_scenario.language.lexicon import ANIMALS, CAR_MAKES, SCOOTER_OPERATORS, TRUCK_MAKES
+from vei_scenario.language.lexicon import ANIMALS, CAR_MAKES, SCOOTER_OPERATORS, THINGS_FOR_ANIMALS, TRUCK_MAKES
 
 #: First-person possessives, a closed class: what they own is the writer's, hence the ego.
 FIRST_PERSON_POSSESSIVES = frozenset({"my", "our"})
@@ -165,6 +165,98 @@ def vehicle_places(tokens: list[str], kind_at: KindAt) -> list[str]:
             end = i + found[1]
             if end < len(tokens) and tokens[end] in THINGS_FOR_VEHICLES:
                 i = end
+                continue
+        out.append(tokens[i])
+        i += 1
+    return out
+
+
+#: Places and things named after the people on foot they are for ("the pedestrian signal", "a pedestrian
+#: island", "the pedestrian phase"): after "pedestrian" one of these closed-class nouns makes it a modifier.
+THINGS_FOR_WALKERS = frozenset({"signal", "light", "lights", "phase", "island", "refuge", "barrier", "barriers",
+                                "railing", "railings", "guardrail", "bridge", "footbridge", "subway", "underpass",
+                                "overpass", "zone", "area", "precinct", "button", "walkway", "path", "street",
+                                "mall", "plaza", "gate", "countdown", "access", "entrance", "route", "tunnel",
+                                "detection", "sign", "signs", "green", "cycle", "flow", "traffic", "volume",
+                                "volumes", "count", "counts"})  # fmt: skip
+
+
+def walker_places(tokens: list[str], kind_at: KindAt) -> list[str]:
+    """``tokens`` without a walker's noun that names the place or thing after it: an animal's before a
+    thing for or against animals ("fitted with a roo bar", "over the cattle grid", "past a dog park"), and
+    "pedestrian" before one for people on foot ("against the pedestrian signal", "on the pedestrian
+    island"). The place or thing stays; nobody on foot is named. Other people's nouns keep their reading
+    ("a man park his car" is a man, in English written as a second language)."""
+    out: list[str] = []
+    i = 0
+    while i < len(tokens):
+        found = kind_at(tokens, i)
+        if found is not None and found[0] == "pedestrian":
+            end = i + found[1]
+            noun = " ".join(tokens[i:end])
+            things = THINGS_FOR_ANIMALS if noun in ANIMALS else THINGS_FOR_WALKERS if noun == "pedestrian" else ()
+            if end < len(tokens) and tokens[end] in things:
+                i = end
+                continue
+        out.append(tokens[i])
+        i += 1
+    return out
+
+
+#: What a vehicle tows, which goes where it goes: one road user with it ("a 4x4 towing a horsebox").
+TOWED = frozenset({"trailer", "trailers", "semi-trailer", "semitrailer", "horsebox", "caravan", "boat"})
+#: Words by which a vehicle has something in tow ("towing", "pulling", "with" or "and" right after its noun:
+#: "a prime mover and trailer").
+_TOWING = frozenset({"towing", "tows", "towed", "pulling", "hauling", "dragging", "with", "and"})
+#: Parts of a trailer, after which "trailer" says whose part it is ("past the trailer wheels"): the part of
+#: a vehicle named already, no new road user.
+_TRAILER_PARTS = frozenset({"wheel", "wheels", "tyre", "tyres", "tire", "tires", "axle", "axles", "door", "doors",
+                            "end", "side", "corner", "hitch", "coupling", "lights", "brakes"})  # fmt: skip
+#: Marks that end the phrase of what is towed before its noun ("towing a 53' trailer" goes on past "'").
+_TOWED_STOPS = frozenset({".", ",", ";", ":", "!", "?", "and", "or", "but", "then"})
+
+
+#: Determiners of a trailer someone already has ("with the fridge trailer", "with his trailer").
+_TOWED_DEFINITE = (["the"], ["my"], ["our"], ["his"], ["her"], ["its"], ["their"])
+#: Verbs (lemmas) by which one meets what comes after "with" ("collided with the trailer").
+_MEETING = frozenset({"collide", "crash", "clash", "tangle", "connect", "clip", "meet", "side-swipe"})
+
+
+def _meets(before: list[str]) -> bool:
+    """Whether the word before "with" is a verb of meeting what follows ("collided with", "tangled with")."""
+    return bool(before) and bool(set(lemmas(before[-1]).get("VERB", ())) & _MEETING)
+
+
+def towed(tokens: list[str], kind_at: KindAt) -> list[str]:
+    """``tokens`` without the trailer a vehicle tows ("a car towing a trailer", "a ute with a horse
+    trailer", "a prime mover and trailer", "pulling a 53' trailer"): it is part of that road user, no
+    second one; nor is a trailer that only says whose part it is ("the trailer wheels"). "With" and "and"
+    count only right after a vehicle's noun ("collided with a trailer", "a van and a trailer" name a
+    trailer that is one)."""
+    out: list[str] = []
+    i = 0
+    while i < len(tokens):
+        if tokens[i] in TOWED and tokens[i + 1 : i + 2] and tokens[i + 1] in _TRAILER_PARTS:
+            i += 1  # ("squeezed past the trailer wheels": the wheels of the trailer named before)
+            continue
+        if tokens[i] in _TOWING:
+            after_vehicle = any(
+                (k := kind_at(out, j)) is not None and k[0] not in ("pedestrian", "ego") and j + k[1] == len(out)
+                for j in range(max(len(out) - 3, 0), len(out))
+            )
+            j = i + 1
+            while j < len(tokens) and j < i + 5 and tokens[j] not in TOWED and tokens[j] not in _TOWED_STOPS:
+                if (named := kind_at(tokens, j)) is not None:
+                    j += named[1] - 1 if tokens[j + named[1] - 1] in TOWED else 0  # ("a horse trailer")
+                    break
+                j += 1
+            # (a definite or possessive trailer one is "with" is in tow, "in lane 1 with the fridge trailer",
+            # unless one meets it: "collided with the trailer")
+            in_tow = tokens[i] == "with" and tokens[i + 1 : i + 2] in _TOWED_DEFINITE and not _meets(out)
+            by_its_noun = tokens[i] in ("with", "and") and not in_tow
+            bare = tokens[i] != "and" or j == i + 1 or tokens[i + 1] in ("its", "his", "her", "their")
+            if j < len(tokens) and tokens[j] in TOWED and bare and (not by_its_noun or after_vehicle):
+                i = j + 1
                 continue
         out.append(tokens[i])
         i += 1
