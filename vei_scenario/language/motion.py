@@ -517,6 +517,19 @@ def into_the_ego_lane(clauses: list, tokens: list[str]) -> list:
     return out
 
 
+#: Verbs (lemmas) of going on foot, which no vehicle does ("stepped", "wandered", "staggered").
+_FOOT_VERBS = frozenset(
+    ("step", "walk", "wander", "stroll", "stagger", "stumble", "amble", "hobble", "limp", "toddle", "jog", "sprint",
+     "saunter", "trot", "shuffle", "tiptoe", "march", "totter")
+)  # fmt: skip
+
+
+def _on_foot(m) -> bool:
+    """Whether mention ``m`` is said with a verb of going on foot ("stepped off the kerb", "walked out",
+    "wandered"): its road user walks."""
+    return bool(set(lemmas(m.words.split()[0]).get("VERB", ())) & _FOOT_VERBS)
+
+
 #: Moves out of a lane: from the side of the road, out into the ego's path.
 _OUT_OF_A_LANE = frozenset(("change_lane", "cut_out"))
 #: Where a move out from the side of the road ends: on the road, in the traffic.
@@ -1436,7 +1449,22 @@ def chains(clauses: list, tokens: list[str]) -> list:
     clauses = on_a_foot_crossing(out_of_a_place_then_across(clauses), tokens)
     clauses = out_of_the_ego_lane(into_a_lane(into_another_lane(clauses, tokens), tokens), tokens)
     clauses = into_the_lane_the_ego_is_in(clauses, tokens)
-    return slowing_into_a_stop(lets_the_ego_go(clauses, tokens))
+    return walkers_cross(slowing_into_a_stop(lets_the_ego_go(clauses, tokens)))
+
+
+def walkers_cross(clauses: list) -> list:
+    """``clauses`` with a cut-in said with a verb of going on foot ("stepped off the kerb into my path",
+    "walked out into my lane") read as the crossing it is: into the ego's lane or path a vehicle cuts
+    in, but one who steps or walks there crosses in front of the ego, whoever the noun names ("a
+    guy", "a woman", whom a cut-in would make a driver)."""
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k, m in enumerate(kept):
+            if m.slot == "behaviour" and m.value[0] == "cut_in" and _on_foot(m):
+                kept[k] = replace(m, value=("cross_in_front", {}))
+        out.append((link, kept))
+    return out
 
 
 #: Verbs (lemmas) of a sudden move aside.
@@ -2182,6 +2210,10 @@ def _subject_before(before: list):
     return None
 
 
+#: Slots of a mention that may be a road user's verb.
+_VERB_SLOTS = ("behaviour", "unknown_verb")
+
+
 def entering_the_ego_lane(clauses: list, tokens: list[str]) -> list:
     """``clauses`` with a road user's verb whose destination is the ego's lane, path or side read as
     a cut-in, whatever the verb ("invaded my lane", "swung from its lane into mine", "entered suddenly
@@ -2189,7 +2221,8 @@ def entering_the_ego_lane(clauses: list, tokens: list[str]) -> list:
     than going on (or not at all). The destination says the class of the move; where the road user
     comes from then says which: from beside or behind it cuts in, from the other way it comes head-on
     (the reader's :func:`comes_head_on`). Only the road user the clause is about, named before the
-    verb and not the ego, is read so; a verb said of the ego ("I moved into my lane") is its own."""
+    verb and not the ego, is read so; a verb said of the ego ("I moved into my lane") is its own. A
+    verb of going on foot into the ego's path ("stepped out into my lane") is a crossing of it."""
     out = []
     for link, mentions in clauses:
         if not mentions:
@@ -2213,6 +2246,11 @@ def entering_the_ego_lane(clauses: list, tokens: list[str]) -> list:
             if end is None:
                 continue
             cut = ("cut_in", {})
+            verb = at or next((x for x in reversed(before) if x.start > subject.start and x.slot in _VERB_SLOTS), None)
+            if verb is not None and _on_foot(verb):  # ("stepped out into my lane": on foot, it crosses)
+                if verb.slot == "behaviour" and verb.value[0] == "cross_in_front":
+                    break
+                cut = ("cross_in_front", {})
             used = [x for x in kept if j < x.start < end and x.slot == "unknown_verb"]  # ("mine")
             if at is not None:
                 kept[kept.index(at)] = replace(at, slot="behaviour", value=cut)
