@@ -496,3 +496,23 @@ def test_a_person_on_foot_into_the_ego_path_crosses_it(text, side):
 )
 def test_a_move_into_the_ego_lane_not_on_foot_stays_a_cut_in(text, move):
     assert _names(text)[0] == move
+
+
+# "ran into" the ego's path or lane is where one goes, not what one hits ("ran into me" is contact).
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was doing 30 and a kid ran into my path from between two parked vans.",
+        "Ego at 25 km/h; a child runs into the ego's path from behind a parked car on the right.",
+        "doing about 20 when a little girl ran into my lane from between the parked cars, I stopped just in time",
+        "We were at 30 km/h when a boy ran straight into our path from the left.",
+    ],
+)
+def test_running_into_the_ego_path_is_a_crossing(text):
+    walkers = [a for a in read(text).actors if a.kind == "pedestrian"]
+    assert [[b[0] for b in a.behaviours] for a in walkers] == [["cross_in_front"]]
+
+
+def test_running_into_the_ego_is_still_contact():
+    r = read("I was doing 30 when a kid on a bike ran into me from the left.")
+    assert r.intent == "collision"

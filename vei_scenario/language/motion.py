@@ -217,7 +217,8 @@ def outcome_not_behaviour(clauses: list, tokens: list[str] | None = None) -> lis
     in its sentence or before it ("clipped my mirror and fell off", "I could not avoid hitting him.
     The rider fell": what the contact did, not a stop the road user makes), and a stop said after a
     contact with a road user ("clipped my mirror and stopped further on": the aftermath; ``tokens``:
-    those the mentions index)."""
+    those the mentions index). And a verb of contact "into" the ego's path or lane is a move there
+    (:func:`_into_the_ego_way`)."""
     out = []
     for link, mentions in clauses:
         kept = []
@@ -243,9 +244,19 @@ def outcome_not_behaviour(clauses: list, tokens: list[str] | None = None) -> lis
             elif m.slot == "stationary" and tokens is not None and _stop_said_as_a_verb(mentions, k):
                 if _struck_earlier(tokens, m):
                     continue  # ("clipped my mirror and stopped further on"; not "he stopped sharp": the cause)
+            elif m.slot == "intent" and tokens is not None and _into_the_ego_way(m, tokens):
+                m = replace(m, slot="behaviour", value=("keep_going", {}))  # ("ran into my path": it went there)
             kept.append(m)
         out.append((link, kept))
     return out
+
+
+def _into_the_ego_way(m, tokens: list[str]) -> bool:
+    """Whether intent mention ``m`` is a verb of contact with "into" ("ran into", "crashed into") whose
+    object is the ego's path, lane or side ("ran into my path", "runs into the ego's lane"): that is
+    where its road user goes, a place, not what it met; into the ego itself ("ran into me") it is
+    the contact."""
+    return m.words.split()[-1] == "into" and _the_ego_way_at(tokens, m.end)
 
 
 #: Mentions after which a word is the verb of its clause, not a participle of a noun ("a car stopped in
