@@ -171,3 +171,33 @@ NOT_A_COMPASS_ORIGIN = [
 def test_near_misses_of_a_compass_origin(text, relation):
     actor, _ = _only(text)
     assert actor.relation == relation
+
+
+# a walker said to go along a kerb or verge towards the ego at a junction walks along it, facing the
+# ego; the junction does not make it one that comes out of an arm and crosses
+@pytest.mark.parametrize(
+    "text",
+    [
+        "At the T-junction, ego goes straight on at 40 km/h. A pedestrian walks along the right verge towards the ego.",
+        "Crossroads, ego 30 km/h straight over. Man walking towards us along the pavement on the right.",
+        "I was going through the junction at about 25 mph, a woman was walking along the kerb on my left towards me.",
+        "Ego 40 km/h on the main road past a side road. Pedestrian walking along the right-hand verge towards ego.",
+        "At the crossroads we were doing 30; a jogger was running along the footpath on the left coming towards us.",
+    ],
+)
+def test_a_walker_along_the_kerb_towards_the_ego_at_a_junction_walks_along(text):
+    (walker,) = read(text).actors
+    assert [b[0] for b in walker.behaviours] == ["along_road"]
+
+
+# near misses: a walker from the kerb or across at a junction still crosses
+@pytest.mark.parametrize(
+    "text",
+    [
+        "At the T-junction, ego goes straight on at 40 km/h. A pedestrian steps off the right kerb towards the ego.",
+        "At the crossroads a man walked towards us across the side road on the left; we were doing 20 mph.",
+    ],
+)
+def test_a_walker_off_the_kerb_at_a_junction_still_crosses(text):
+    (walker,) = read(text).actors
+    assert [b[0] for b in walker.behaviours] == ["cross_in_front"]

@@ -1362,8 +1362,10 @@ def _resolve_relation(a: _Actor, map_kind: str | None, left_hand: bool = False) 
     said = a.said - {"ahead"} if a.has_way or (a.came_from and a.side in ("left", "right")) else a.said
     if arm := sides.arm_it_comes_from(junction, on_the_road, a.side, first, said):
         return arm  # ("at the T-junction a cyclist comes from the right")
-    if a.relation == "oncoming" and junction:  # at a junction what comes towards the ego comes from the
-        return f"junction_{side}" if side in ("left", "right") else "junction_opposite"  # arm said, else opposite
+    # at a junction what comes towards the ego comes from the arm said, else the opposite one (not one
+    # walking or riding along its kerb towards the ego)
+    if a.relation == "oncoming" and junction and not sides.along_its_kerb(a.kind in VULNERABLE, a.kerb, a.came_from):
+        return f"junction_{side}" if side in ("left", "right") else "junction_opposite"
     if a.followed and first == "cut_in":
         return "ahead"  # the ego follows it in its lane: it pulls out of it, to the side said
     if a.relation == "oncoming" or (a.relation == "behind" and not ((a.lane_side or a.side) and first == "cut_in")):
