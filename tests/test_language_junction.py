@@ -201,3 +201,28 @@ def test_a_walker_along_the_kerb_towards_the_ego_at_a_junction_walks_along(text)
 def test_a_walker_off_the_kerb_at_a_junction_still_crosses(text):
     (walker,) = read(text).actors
     assert [b[0] for b in walker.behaviours] == ["cross_in_front"]
+
+
+# "a four-way / all-way / 3-way stop" names a junction controlled by stop signs, as "a stop sign" does:
+# its "stop" is no road user's stop, and what crosses there without stopping runs it
+@pytest.mark.parametrize(
+    "text",
+    [
+        "At an all-way stop a car shot across from the left without stopping while I was going through at 15 mph.",
+        "I was going through the 4-way stop at 15 mph when a pickup from the right blew through without stopping.",
+        "We were crossing the four way stop at about 10 mph and a car from the left rolled right through it.",
+        "Three-way stop on Elm St, I'm doing 12 mph through it, SUV from the right doesn't stop.",
+        "At the all way stop, ego at 20 km/h; a car from the left goes through without stopping.",
+    ],
+)
+def test_a_four_way_stop_is_a_junction_not_a_stop(text):
+    r = read(text)
+    (car,) = r.actors
+    assert r.map_kind == "crossroad"
+    assert [b[0] for b in car.behaviours] == ["run_red_light"]
+    assert car.relation in ("junction_left", "junction_right")
+
+
+def test_a_stop_said_as_a_verb_at_a_four_way_junction_stays_a_stop():
+    (car,) = read("At the four-way junction the car ahead of me came to a stop; I was doing 20 mph.").actors
+    assert [b[0] for b in car.behaviours][-1] in ("stop", "sudden_stop")

@@ -896,6 +896,11 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             clauses[-1][1].append(_Mention("map", "crossroad", " ".join(tokens[i : i + len(key) + 1]), i, prev))
             i += len(key) + 1
             continue
+        if slot == "behaviour" and key[0] == "stop" and junctions.ways_stop_at(tokens, i):
+            # "an all-way stop", "the 4-way stop": a junction with stop signs on its arms, no behaviour
+            clauses[-1][1].append(_Mention("map", "crossroad", " ".join(tokens[i - 1 : i + 1]), i - 1, prev, end=i + 1))
+            i += 1
+            continue
         if (
             slot == "behaviour"
             and value[0] == "run_red_light"
