@@ -69,7 +69,7 @@ from vei_scenario.language.ncap import rewrite as ncap_rewrite
 from vei_scenario.language.normalise import NUMBER_WORDS, normalise
 from vei_scenario.language.outcome import decide, into_road_user, outcome_cues
 from vei_scenario.language.reading import ActorSpec, NotUnderstood, Reading
-from vei_scenario.language.route import ego_route
+from vei_scenario.language.route import ego_route, turn_taken_at
 from vei_scenario.language.scene import only_the_scene, quoted_speakers
 from vei_scenario.language.stated import (
     stated_clock,
@@ -721,6 +721,8 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             i = said.end
             continue
         key = _best(tokens, i)
+        if key and len(key) > 1 and turn_taken_at(tokens, i):
+            key = (tok,)  # ("hung a right in front of me": the turn, then where)
         if key and len(key) > 1 and TABLE[key][0] != "actor" and TABLE.get(key[:1], ("",))[0] == "actor":
             last = tokens[i + len(key) - 1]  # "the bus stops": the bus, then its verb ("at a bus stop": a place)
             verb = last != key[-1] and last == key[-1] + "s"  # "the bus stops"
