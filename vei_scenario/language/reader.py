@@ -1370,8 +1370,8 @@ def _resolve_relation(a: _Actor, map_kind: str | None, left_hand: bool = False) 
     if arm := sides.arm_it_comes_from(junction, on_the_road, a.side, first, said):
         return arm  # ("at the T-junction a cyclist comes from the right")
     # at a junction what comes towards the ego comes from the arm said, else the opposite one (not one
-    # walking or riding along its kerb towards the ego)
-    if a.relation == "oncoming" and junction and not sides.along_its_kerb(a.kind in VULNERABLE, a.kerb, a.came_from):
+    # walking along its kerb towards the ego)
+    if a.relation == "oncoming" and junction and not sides.along_its_kerb(a.kind == "pedestrian", a.kerb, a.came_from):
         return f"junction_{side}" if side in ("left", "right") else "junction_opposite"
     if a.followed and first == "cut_in":
         return "ahead"  # the ego follows it in its lane: it pulls out of it, to the side said
