@@ -465,3 +465,54 @@ def test_a_crossing_named_as_a_heading_is_no_crossing_act(text):
 )
 def test_a_road_user_crossing_as_a_heading_still_crosses(text):
     assert all(b[0] == "cross_in_front" for a in read(text).actors for b in a.behaviours[:1])
+
+
+# A person who steps, walks or wanders into the ego's path is on foot and crosses it: the destination
+# (the ego's path or lane) makes a vehicle's move a cut-in, never a walker's, whoever the noun names.
+@pytest.mark.parametrize(
+    ("text", "side"),
+    [
+        ("I was driving at 30 km/h and a woman stepped off the footpath on the left into my path.", "left"),
+        ("Was doing 20 mph when this man walked out into my path from the right, head down in his phone.", "right"),
+        ("I was going about 25 when some guy stepped out into my lane from the pavement on my left", "left"),
+        ("Ego at 40 km/h. An elderly lady wanders off the right kerb into the ego's path.", "right"),
+        ("we were doing 30 and a bloke staggered out of the pub on the left straight into our path", "left"),
+    ],
+)
+def test_a_person_on_foot_into_the_ego_path_crosses_it(text, side):
+    actor = _one(text)
+    assert actor.kind == "pedestrian"
+    assert [b[0] for b in actor.behaviours] == ["cross_in_front"]
+    assert actor.relation == f"roadside_{side}"
+
+
+@pytest.mark.parametrize(
+    ("text", "move"),
+    [
+        # a vehicle's move into the ego's lane stays a cut-in; so does a driver's, whatever the noun
+        ("I was doing 30 mph and a van pulled into my lane from the left.", "cut_in"),
+        ("I was doing 50 on the motorway and some guy swerved into my lane right in front of me.", "cut_in"),
+    ],
+)
+def test_a_move_into_the_ego_lane_not_on_foot_stays_a_cut_in(text, move):
+    assert _names(text)[0] == move
+
+
+# "ran into" the ego's path or lane is where one goes, not what one hits ("ran into me" is contact).
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was doing 30 and a kid ran into my path from between two parked vans.",
+        "Ego at 25 km/h; a child runs into the ego's path from behind a parked car on the right.",
+        "doing about 20 when a little girl ran into my lane from between the parked cars, I stopped just in time",
+        "We were at 30 km/h when a boy ran straight into our path from the left.",
+    ],
+)
+def test_running_into_the_ego_path_is_a_crossing(text):
+    walkers = [a for a in read(text).actors if a.kind == "pedestrian"]
+    assert [[b[0] for b in a.behaviours] for a in walkers] == [["cross_in_front"]]
+
+
+def test_running_into_the_ego_is_still_contact():
+    r = read("I was doing 30 when a kid on a bike ran into me from the left.")
+    assert r.intent == "collision"

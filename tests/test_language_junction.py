@@ -171,3 +171,58 @@ NOT_A_COMPASS_ORIGIN = [
 def test_near_misses_of_a_compass_origin(text, relation):
     actor, _ = _only(text)
     assert actor.relation == relation
+
+
+# a walker said to go along a kerb or verge towards the ego at a junction walks along it, facing the
+# ego; the junction does not make it one that comes out of an arm and crosses
+@pytest.mark.parametrize(
+    "text",
+    [
+        "At the T-junction, ego goes straight on at 40 km/h. A pedestrian walks along the right verge towards the ego.",
+        "Crossroads, ego 30 km/h straight over. Man walking towards us along the pavement on the right.",
+        "I was going through the junction at about 25 mph, a woman was walking along the kerb on my left towards me.",
+        "Ego 40 km/h on the main road past a side road. Pedestrian walking along the right-hand verge towards ego.",
+        "At the crossroads we were doing 30; a jogger was running along the footpath on the left coming towards us.",
+    ],
+)
+def test_a_walker_along_the_kerb_towards_the_ego_at_a_junction_walks_along(text):
+    (walker,) = read(text).actors
+    assert [b[0] for b in walker.behaviours] == ["along_road"]
+
+
+# near misses: a walker from the kerb or across at a junction still crosses
+@pytest.mark.parametrize(
+    "text",
+    [
+        "At the T-junction, ego goes straight on at 40 km/h. A pedestrian steps off the right kerb towards the ego.",
+        "At the crossroads a man walked towards us across the side road on the left; we were doing 20 mph.",
+    ],
+)
+def test_a_walker_off_the_kerb_at_a_junction_still_crosses(text):
+    (walker,) = read(text).actors
+    assert [b[0] for b in walker.behaviours] == ["cross_in_front"]
+
+
+# "a four-way / all-way / 3-way stop" names a junction controlled by stop signs, as "a stop sign" does:
+# its "stop" is no road user's stop, and what crosses there without stopping runs it
+@pytest.mark.parametrize(
+    "text",
+    [
+        "At an all-way stop a car shot across from the left without stopping while I was going through at 15 mph.",
+        "I was going through the 4-way stop at 15 mph when a pickup from the right blew through without stopping.",
+        "We were crossing the four way stop at about 10 mph and a car from the left rolled right through it.",
+        "Three-way stop on Elm St, I'm doing 12 mph through it, SUV from the right doesn't stop.",
+        "At the all way stop, ego at 20 km/h; a car from the left goes through without stopping.",
+    ],
+)
+def test_a_four_way_stop_is_a_junction_not_a_stop(text):
+    r = read(text)
+    (car,) = r.actors
+    assert r.map_kind == "crossroad"
+    assert [b[0] for b in car.behaviours] == ["run_red_light"]
+    assert car.relation in ("junction_left", "junction_right")
+
+
+def test_a_stop_said_as_a_verb_at_a_four_way_junction_stays_a_stop():
+    (car,) = read("At the four-way junction the car ahead of me came to a stop; I was doing 20 mph.").actors
+    assert [b[0] for b in car.behaviours][-1] in ("stop", "sudden_stop")

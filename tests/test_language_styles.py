@@ -662,3 +662,24 @@ def test_the_target_of_a_test_code_said_again_is_that_target(text, kind):
 def test_an_acceleration_with_a_caret_is_no_speed():
     (car,) = _reading("CCRb, VUT 50 km/h, GVT 50 km/h, headway 20 m, GVT decel 4 m/s^2 to standstill.").actors
     assert car.speed_mps == pytest.approx(50 / 3.6)
+
+
+# "heads up" as a notice opening a message ("Heads up:", "heads up for tomorrow's run") is no verb of the
+# road user named after it; "heads up the hill" still is one
+@pytest.mark.parametrize(
+    "text",
+    [
+        "heads up for tomorrow's track run: oncoming Transit turns right across us at the junction, we're at 50kph.",
+        "Heads up: oncoming van turns right across us at the junction, we're at 50kph.",
+        "Heads-up - at the junction an oncoming car turns right across our path, ego 50 km/h.",
+        "quick heads up on Thursday's test: oncoming car turns right across us at the junction, we're doing 50.",
+    ],
+)
+def test_a_heads_up_is_a_notice_not_a_move(text):
+    (car,) = read(text).actors
+    assert [b[0] for b in car.behaviours] == ["turn_across"]
+
+
+def test_heading_up_the_road_is_still_a_move():
+    (rider,) = read("A cyclist heads up the hill towards us; we're at 30 km/h.").actors
+    assert [b[0] for b in rider.behaviours] != []

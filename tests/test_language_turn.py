@@ -130,3 +130,19 @@ NOT_OUT_TO_PASS = [
 def test_a_move_out_not_made_to_pass_is_no_overtake_alone(text):
     names = [b[0] for b in read(text).actors[0].behaviours]
     assert names != ["overtake"]
+
+
+# "hung a right in front of me": after "make / take / hang a", "right" is the turn, not the stress
+# of the "in front of me" that follows it
+@pytest.mark.parametrize(
+    ("text", "turn"),
+    [
+        ("I was in the right lane doing 25 mph and a van in the left lane hung a right in front of me.", "right"),
+        ("Doing 30 mph in the left lane when a cab in the right lane made a left right in front of me.", "left"),
+        ("we were at 40 km/h in the left lane and the truck in the right lane took a right in front of us", "right"),
+    ],
+)
+def test_a_right_taken_in_front_of_the_ego_is_the_turn(text, turn):
+    (actor,) = read(text).actors
+    first = actor.behaviours[0]
+    assert first[0] == "forced_turn" and first[1].get("turn") == turn

@@ -362,3 +362,18 @@ def entering_the_roundabout(clauses: list, tokens: list[str]) -> list:
         ring_said = ring_said or any(_ring(x) for x in kept)
         out.append((link, kept))
     return out
+
+
+#: Words that count the ways of a junction with stop signs ("a four-way stop", "the all-way stop").
+_WAYS = frozenset(("all", "two", "three", "four", "five", "2", "3", "4", "5", "multi", "multiway"))
+
+
+def ways_stop_at(tokens: list[str], i: int) -> bool:
+    """Whether "stop" at token ``i`` ends the name of a junction whose arms all have stop signs ("an
+    all-way stop", "a 4-way stop", "the three way stop"; American "AWSC", said in words): a place,
+    like "a stop sign", not a road user stopping."""
+    if tokens[i] != "stop" or i < 1:
+        return False
+    if tokens[i - 1].endswith("-way"):
+        return tokens[i - 1].removesuffix("-way") in _WAYS
+    return tokens[i - 1] == "way" and i >= 2 and tokens[i - 2] in _WAYS

@@ -217,7 +217,8 @@ def outcome_not_behaviour(clauses: list, tokens: list[str] | None = None) -> lis
     in its sentence or before it ("clipped my mirror and fell off", "I could not avoid hitting him.
     The rider fell": what the contact did, not a stop the road user makes), and a stop said after a
     contact with a road user ("clipped my mirror and stopped further on": the aftermath; ``tokens``:
-    those the mentions index)."""
+    those the mentions index). And a verb of contact "into" the ego's path or lane is a move there
+    (:func:`_into_the_ego_way`)."""
     out = []
     for link, mentions in clauses:
         kept = []
@@ -243,9 +244,19 @@ def outcome_not_behaviour(clauses: list, tokens: list[str] | None = None) -> lis
             elif m.slot == "stationary" and tokens is not None and _stop_said_as_a_verb(mentions, k):
                 if _struck_earlier(tokens, m):
                     continue  # ("clipped my mirror and stopped further on"; not "he stopped sharp": the cause)
+            elif m.slot == "intent" and tokens is not None and _into_the_ego_way(m, tokens):
+                m = replace(m, slot="behaviour", value=("keep_going", {}))  # ("ran into my path": it went there)
             kept.append(m)
         out.append((link, kept))
     return out
+
+
+def _into_the_ego_way(m, tokens: list[str]) -> bool:
+    """Whether intent mention ``m`` is a verb of contact with "into" ("ran into", "crashed into") whose
+    object is the ego's path, lane or side ("ran into my path", "runs into the ego's lane"): that is
+    where its road user goes, a place, not what it met; into the ego itself ("ran into me") it is
+    the contact."""
+    return m.words.split()[-1] == "into" and _the_ego_way_at(tokens, m.end)
 
 
 #: Mentions after which a word is the verb of its clause, not a participle of a noun ("a car stopped in
@@ -515,6 +526,19 @@ def into_the_ego_lane(clauses: list, tokens: list[str]) -> list:
         earlier.extend(mentions)
         out.append((link, kept))
     return out
+
+
+#: Verbs (lemmas) of going on foot, which no vehicle does ("stepped", "wandered", "staggered").
+_FOOT_VERBS = frozenset(
+    ("step", "walk", "wander", "stroll", "stagger", "stumble", "amble", "hobble", "limp", "toddle", "jog", "sprint",
+     "saunter", "trot", "shuffle", "tiptoe", "march", "totter")
+)  # fmt: skip
+
+
+def _on_foot(m) -> bool:
+    """Whether mention ``m`` is said with a verb of going on foot ("stepped off the kerb", "walked out",
+    "wandered"): its road user walks."""
+    return bool(set(lemmas(m.words.split()[0]).get("VERB", ())) & _FOOT_VERBS)
 
 
 #: Moves out of a lane: from the side of the road, out into the ego's path.
@@ -1436,7 +1460,22 @@ def chains(clauses: list, tokens: list[str]) -> list:
     clauses = on_a_foot_crossing(out_of_a_place_then_across(clauses), tokens)
     clauses = out_of_the_ego_lane(into_a_lane(into_another_lane(clauses, tokens), tokens), tokens)
     clauses = into_the_lane_the_ego_is_in(clauses, tokens)
-    return slowing_into_a_stop(lets_the_ego_go(clauses, tokens))
+    return walkers_cross(slowing_into_a_stop(lets_the_ego_go(clauses, tokens)))
+
+
+def walkers_cross(clauses: list) -> list:
+    """``clauses`` with a cut-in said with a verb of going on foot ("stepped off the kerb into my path",
+    "walked out into my lane") read as the crossing it is: into the ego's lane or path a vehicle cuts
+    in, but one who steps or walks there crosses in front of the ego, whoever the noun names ("a
+    guy", "a woman", whom a cut-in would make a driver)."""
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k, m in enumerate(kept):
+            if m.slot == "behaviour" and m.value[0] == "cut_in" and _on_foot(m):
+                kept[k] = replace(m, value=("cross_in_front", {}))
+        out.append((link, kept))
+    return out
 
 
 #: Verbs (lemmas) of a sudden move aside.
@@ -2182,6 +2221,10 @@ def _subject_before(before: list):
     return None
 
 
+#: Slots of a mention that may be a road user's verb.
+_VERB_SLOTS = ("behaviour", "unknown_verb")
+
+
 def entering_the_ego_lane(clauses: list, tokens: list[str]) -> list:
     """``clauses`` with a road user's verb whose destination is the ego's lane, path or side read as
     a cut-in, whatever the verb ("invaded my lane", "swung from its lane into mine", "entered suddenly
@@ -2189,7 +2232,8 @@ def entering_the_ego_lane(clauses: list, tokens: list[str]) -> list:
     than going on (or not at all). The destination says the class of the move; where the road user
     comes from then says which: from beside or behind it cuts in, from the other way it comes head-on
     (the reader's :func:`comes_head_on`). Only the road user the clause is about, named before the
-    verb and not the ego, is read so; a verb said of the ego ("I moved into my lane") is its own."""
+    verb and not the ego, is read so; a verb said of the ego ("I moved into my lane") is its own. A
+    verb of going on foot into the ego's path ("stepped out into my lane") is a crossing of it."""
     out = []
     for link, mentions in clauses:
         if not mentions:
@@ -2213,6 +2257,11 @@ def entering_the_ego_lane(clauses: list, tokens: list[str]) -> list:
             if end is None:
                 continue
             cut = ("cut_in", {})
+            verb = at or next((x for x in reversed(before) if x.start > subject.start and x.slot in _VERB_SLOTS), None)
+            if verb is not None and _on_foot(verb):  # ("stepped out into my lane": on foot, it crosses)
+                if verb.slot == "behaviour" and verb.value[0] == "cross_in_front":
+                    break
+                cut = ("cross_in_front", {})
             used = [x for x in kept if j < x.start < end and x.slot == "unknown_verb"]  # ("mine")
             if at is not None:
                 kept[kept.index(at)] = replace(at, slot="behaviour", value=cut)

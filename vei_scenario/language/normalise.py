@@ -223,6 +223,13 @@ def _headings(text: str) -> str:
 _SIDE = {"l": "left", "r": "right"}
 #: Shorthand of radio reports, notes and chat, said in full ("M/bike from L arm", "ego veh NB",
 #: "lt traffic", "dual c/way", "doesnt", "nite"): the same words every writer's shorthand stands for.
+#: "Heads up" as a notice ("Heads up:", "a heads-up for tomorrow's run", "quick heads up on ..."), said
+#: before what the notice is about or a stop: no verb of the road user named after it ("heads up the
+#: hill" is one, and stays).
+_HEADS_UP = re.compile(
+    r"\b(?:(?:just |quick |friendly )?an? )?(?:quick |friendly )?heads[- ]up"
+    r"(?=\s*(?:[:,;!.\-\u2013\u2014]|(?:for|on|about|re|that|guys|everyone|all)\b|$))"
+)
 _SHORTHAND = [
     (re.compile(r"\bm/(?:bike|cycle)s?\b|\bm/c\b"), "motorbike"),
     (re.compile(r"\bp/cycle\b|\bpedal cycle\b"), "bicycle"),
@@ -478,6 +485,7 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
         text,
     )
     text = _acronyms_defined(text, known_noun)
+    text = _HEADS_UP.sub("note", text)
     text = _PARTICIPLE_OPENING.sub(lambda m: _with_article(m, known_noun), text)
     for pattern, repl in _SHORTHAND:
         text = pattern.sub(repl, text)

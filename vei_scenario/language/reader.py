@@ -69,7 +69,7 @@ from vei_scenario.language.ncap import rewrite as ncap_rewrite
 from vei_scenario.language.normalise import NUMBER_WORDS, normalise
 from vei_scenario.language.outcome import decide, into_road_user, outcome_cues
 from vei_scenario.language.reading import ActorSpec, NotUnderstood, Reading
-from vei_scenario.language.route import ego_route
+from vei_scenario.language.route import ego_route, turn_taken_at
 from vei_scenario.language.scene import only_the_scene, quoted_speakers
 from vei_scenario.language.stated import (
     stated_clock,
@@ -723,6 +723,8 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             i = said.end
             continue
         key = _best(tokens, i)
+        if key and len(key) > 1 and turn_taken_at(tokens, i):
+            key = (tok,)  # ("hung a right in front of me": the turn, then where)
         if key and len(key) > 1 and TABLE[key][0] != "actor" and TABLE.get(key[:1], ("",))[0] == "actor":
             last = tokens[i + len(key) - 1]  # "the bus stops": the bus, then its verb ("at a bus stop": a place)
             verb = last != key[-1] and last == key[-1] + "s"  # "the bus stops"
@@ -898,6 +900,11 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             # "at the give way line", "a stop sign": a junction's, no behaviour
             clauses[-1][1].append(_Mention("map", "crossroad", " ".join(tokens[i : i + len(key) + 1]), i, prev))
             i += len(key) + 1
+            continue
+        if slot == "behaviour" and key[0] == "stop" and junctions.ways_stop_at(tokens, i):
+            # "an all-way stop", "the 4-way stop": a junction with stop signs on its arms, no behaviour
+            clauses[-1][1].append(_Mention("map", "crossroad", " ".join(tokens[i - 1 : i + 1]), i - 1, prev, end=i + 1))
+            i += 1
             continue
         if (
             slot == "behaviour"
@@ -1403,8 +1410,10 @@ def _resolve_relation(a: _Actor, map_kind: str | None, left_hand: bool = False) 
     said = a.said - {"ahead"} if a.has_way or (a.came_from and a.side in ("left", "right")) else a.said
     if arm := sides.arm_it_comes_from(junction, on_the_road, a.side, first, said):
         return arm  # ("at the T-junction a cyclist comes from the right")
-    if a.relation == "oncoming" and junction:  # at a junction what comes towards the ego comes from the
-        return f"junction_{side}" if side in ("left", "right") else "junction_opposite"  # arm said, else opposite
+    # at a junction what comes towards the ego comes from the arm said, else the opposite one (not one
+    # walking along its kerb towards the ego)
+    if a.relation == "oncoming" and junction and not sides.along_its_kerb(a.kind == "pedestrian", a.kerb, a.came_from):
+        return f"junction_{side}" if side in ("left", "right") else "junction_opposite"
     if a.followed and first == "cut_in":
         return "ahead"  # the ego follows it in its lane: it pulls out of it, to the side said
     if a.relation == "oncoming" or (a.relation == "behind" and not ((a.lane_side or a.side) and first == "cut_in")):

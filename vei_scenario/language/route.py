@@ -272,3 +272,12 @@ def ego_route(tokens: list[str]) -> str | None:
         own = _own_subject(words)
         previous = own or previous
     return None
+
+
+def turn_taken_at(tokens: list[str], i: int) -> bool:
+    """Whether "left" or "right" at token ``i`` is a turn said as the object of a light verb ("hung a
+    right", "made a left", "took the right"): the turn itself, so a place phrase after it ("... a right
+    in front of me") is where the turn is made, and "right" does not stress that phrase."""
+    if tokens[i] not in ("left", "right") or i < 2 or tokens[i - 1] not in ("a", "the"):
+        return False
+    return bool(set(lemmas(tokens[i - 2]).get("VERB", ())) & _TAKING)

@@ -4,17 +4,22 @@ Why: a spoken or hurried text ("I was doing 20 mph a van pulled out in front of 
 road about 20 mph wee guy on a scooter shoots out") runs the narrator's speed straight into the next
 road user's sentence. Read as one clause, that road user's verb goes to the narrator and the road
 user is left doing nothing. A speed said with its unit ends what the narrator says of itself, so a
-road user named right after it opens a clause of its own: the reader puts the comma back there.
+road user named right after it opens a clause of its own: the reader puts the comma back there. So
+does a bare number ("while I was at 30 a car pulled out") with a determiner right after it: a number
+and "a", "the" or "this" never make one noun phrase, so the determiner opens the next one.
 """
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable
 
 #: Units that end a speed said as a number ("20 mph", "40 km/h").
 _SPEED_UNITS = frozenset(("mph", "km/h", "kph", "kmh", "kmph", "m/s"))
 #: Words that may open a road user's noun phrase ("a van", "the cyclist", "this guy").
 _OPENS_A_NAME = frozenset(("a", "an", "the", "this", "some", "one"))
+#: A number said without its unit ("at 30", "doing 12.5").
+_BARE_NUMBER = re.compile(r"\d+(\.\d+)?")
 #: Object pronouns: what stands right after one is no part of its noun phrase.
 _OBJECTS = frozenset(("me", "us", "him", "her", "them"))
 #: The narrator as a subject: never an object, so after an object pronoun it opens a clause.
@@ -46,6 +51,10 @@ def break_after_a_speed(tokens: list[str], actor_at: Callable[[list[str], int], 
         if tok in _NARRATOR and i and tokens[i - 1] in _OBJECTS:
             out.append(",")  # ("shot out in front of me I braked": the narrator's clause)
         out.append(tok)
+        if _bare_number_then_a_name(tokens, i):
+            if _names_a_road_user(tokens, i + 1, actor_at, idle):
+                out.append(",")  # ("while I was at 30 a car pulled out")
+            continue
         if tok not in _SPEED_UNITS or not i or not tokens[i - 1][:1].isdigit():
             continue
         if i > 1 and tokens[i - 2] in _OPENS_A_NAME:
@@ -53,3 +62,12 @@ def break_after_a_speed(tokens: list[str], actor_at: Callable[[list[str], int], 
         if _names_a_road_user(tokens, i + 1, actor_at, idle):
             out.append(",")
     return out
+
+
+def _bare_number_then_a_name(tokens: list[str], i: int) -> bool:
+    """Whether ``tokens[i]`` is a number with no unit right before a determiner ("at 30 a car", "doing
+    40 the bus"): the two are never one noun phrase, so the number ends its clause. A number that is
+    itself part of a name ("a 30 zone", "the 42 bus") has its own determiner before it."""
+    if not _BARE_NUMBER.fullmatch(tokens[i]) or tokens[i + 1 : i + 2] == [] or tokens[i + 1] not in _OPENS_A_NAME:
+        return False
+    return not (i and tokens[i - 1] in _OPENS_A_NAME)

@@ -1183,6 +1183,14 @@ def comes_onto_the_road(out_of_place: bool, relation: str | None) -> bool:
     return out_of_place and (relation or "").startswith("roadside")
 
 
+def along_its_kerb(on_foot: bool, kerb: bool, came_from: bool) -> bool:
+    """Whether a walker coming towards the ego at a junction is said on a kerb, verge or pavement and
+    not to come from it ("walking along the right verge towards us", "towards me along the pavement"):
+    it goes along that kerb, facing the ego, not out of an arm of the junction. (A rider in a bike lane
+    towards the ego rides through the junction from the opposite arm.)"""
+    return on_foot and kerb and not came_from
+
+
 def opposite_approach(junction: bool, kind: str, far_side: bool, first: str | None) -> bool:
     """Whether a rider said to come from the other side at a junction ("a cyclist came from the opposite
     side going straight", "a scooter from the other side carried straight on") rides towards the ego
