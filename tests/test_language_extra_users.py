@@ -190,3 +190,14 @@ def test_the_writers_vehicle_shaken_by_what_passes_is_the_ego(text: str, expecte
 def test_the_writers_vehicle_shaken_near_misses(text: str, expected: list[str] | None) -> None:
     got = kinds(text)
     assert got == expected if expected is not None else len(got) == 2
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was doing 30 with an e-scooter ahead, bloke in a hi-vis, a",
+        "I was doing 30 with an e-scooter ahead, bloke in a hi-vis,",
+    ],
+)
+def test_a_person_in_apposition_at_the_very_end_is_read_without_error(text: str) -> None:
+    assert kinds(text) == ["e-scooter"]

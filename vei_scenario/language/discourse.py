@@ -2541,6 +2541,12 @@ _DESCRIBING = frozenset(
 _PLACING = frozenset({"behind", "beside", "near", "next", "ahead", "across", "from", "at", "by", "towards", "between"})
 
 
+def _kind_follows(tokens: list[str], k: int, kind_at: KindAt) -> bool:
+    """Whether a road user is named at ``k``; nothing is named past the end of the text (a rider
+    described at the very end: "..., bloke in a hi-vis")."""
+    return k < len(tokens) and kind_at(tokens, k) is not None
+
+
 def _describes(tokens: list[str], start: int, end: int, kind_at: KindAt) -> bool:
     """Whether ``tokens[start:end]`` only describe a person (clothes, what they carry, their age):
     no road user, no placement, no verb of their own but the closed verbs of wearing and holding."""
@@ -2588,7 +2594,7 @@ def _person_apposition(tokens: list[str], kind_at: KindAt, known: Known, dropped
             and all(w.isalpha() and not known(out, k) for k, w in enumerate(out[i + 1 : head], i + 1))
             and _describes(out, head + found[1], close, kind_at)
             and after not in ("and", "or")
-            and kind_at(out, close + 1 + (after in DETERMINERS)) is None
+            and not _kind_follows(out, close + 1 + (after in DETERMINERS), kind_at)
         )
         if fits:
             dropped.extend(out[i + 1 : close])
