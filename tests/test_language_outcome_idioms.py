@@ -213,3 +213,115 @@ def test_near_misses_denied_are_a_safe_pass(text):
 )
 def test_going_once_the_road_was_clear_is_a_safe_pass(text):
     assert _intent(text) == "safe"
+
+
+#: a contact someone believed or expected would happen at the time: it did not, a near miss
+BELIEVED = [
+    "A kid ran out and I thought I was going to hit him.",
+    "A van pulled out and I was sure I'd hit it.",
+    "The cyclist swerved in front of me, I honestly thought I'd hit her.",
+    "I fully expected to hit the scooter but he swerved.",
+    "We braced for impact but the bus stopped.",
+    "I was convinced the lorry would hit me.",
+]
+#: a spec's expected outcome, a belief of now about what happened, or a contact said after the belief
+BELIEVED_NOT = [
+    ("Expected outcome collision with the e-scooter.", "collision"),
+    ("Expected: collision.", "collision"),
+    ("I think I hit his mirror as I went past.", "collision"),
+    ("I thought I'd missed him but then I hit his back wheel.", "collision"),
+]
+
+
+@pytest.mark.parametrize("text", BELIEVED)
+def test_a_contact_believed_at_the_time_is_a_near_miss(text):
+    assert _intent(text) == "near_miss"
+
+
+@pytest.mark.parametrize("text, intent", BELIEVED_NOT)
+def test_an_expected_outcome_or_a_later_contact_stays(text, intent):
+    assert _intent(text) == intent
+
+
+#: idioms of a fright the narrator was given: how close it came, a near miss
+FRIGHT = [
+    "A van pulled out, heart in my mouth.",
+    "A bus pulled out on me, nearly had a heart attack.",
+    "The lorry came over into my lane, scared the life out of me.",
+    "A scooter shot out of the alley and frightened the hell out of us.",
+    "A taxi pulled out on me, my life flashed before my eyes.",
+    "Kid on a bike came out of nowhere, proper brown trouser moment.",
+    "A motorbike flew past my mirror. I was terrified.",
+]
+#: a fright given to someone else, or said of how someone looked: nothing about the outcome
+FRIGHT_NOT = [
+    "The van's horn scared the cyclist ahead of me.",
+    "The cyclist looked scared of the traffic on the bypass.",
+]
+
+
+@pytest.mark.parametrize("text", FRIGHT)
+def test_a_fright_given_to_the_narrator_is_a_near_miss(text):
+    assert _intent(text) == "near_miss"
+
+
+@pytest.mark.parametrize("text", FRIGHT_NOT)
+def test_a_fright_given_to_others_is_no_outcome(text):
+    assert _intent(text) is None
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("I went round the cyclist, no bother.", "safe"),
+        ("The overtake of the tractor was done without any fuss.", "safe"),
+        ("Passed the horse riders, no hassle at all.", "safe"),
+        ("The van didn't bother to indicate and pulled out.", None),
+        ("The cyclist didn't bother looking before he crossed.", None),
+    ],
+)
+def test_a_fuss_denied_is_a_safe_pass(text, intent):
+    assert _intent(text) == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("Nearly ran over a lad on a bike!! Still shaking", "near_miss"),
+        ("The lorry ran over a fox on the bypass.", "collision"),
+        ("A kid ran down the slope towards the cyclist.", None),
+        ("The scooter ran over the kerb and onto the road.", None),
+    ],
+)
+def test_running_over_someone_not_somewhere(text, intent):
+    assert _intent(text) == intent
+
+
+#: contact said in other Englishes and trades: a collision
+WORLD_CONTACT = [
+    "An auto dashed my car from behind at the signal.",
+    "An okada jammed my car at the junction.",
+    "The danfo jammed the okada man at the bus stop.",
+    "A bus banged my car at the junction.",
+    "It was only a fender bender with the taxi.",
+    "We had a minor shunt with the van at the lights.",
+    "The taxi and I had a coming-together at the roundabout.",
+    "It was only a light bump on the cyclist's back wheel.",
+]
+#: the same verbs with a place, a pedal or a horn: no contact
+WORLD_CONTACT_NOT = [
+    ("A kid dashed across the road in front of me.", None),
+    ("I jammed the brakes on as a van pulled out.", "near_miss"),
+    ("A bus banged its horn at the cyclist.", None),
+    ("The boy dashed out between the parked cars.", None),
+]
+
+
+@pytest.mark.parametrize("text", WORLD_CONTACT)
+def test_contact_in_other_englishes(text):
+    assert _intent(text) == "collision"
+
+
+@pytest.mark.parametrize("text, intent", WORLD_CONTACT_NOT)
+def test_those_verbs_without_a_road_user_are_no_contact(text, intent):
+    assert _intent(text) == intent

@@ -607,6 +607,23 @@ def test_a_whole_hour_and_the_colloquial_parts_of_the_day(text, lo, hi):
 
 
 @pytest.mark.parametrize(
+    "text, lo, hi",
+    [
+        ("At daybreak a cyclist was riding ahead of me on the lane.", 5, 7),
+        ("Just after sun-up a van cut in front of us.", 5, 7),
+        ("In the forenoon a bus pulled out ahead of the ego.", 6, 11),
+        ("A van cut in at lunch time on the ring road.", 11, 13),
+        ("Outside the primary at home time, a kid ran out between the cars.", 12, 17),
+        ("Straight after school a lad on a bike came off the pavement in front of me.", 12, 17),
+        ("In the half-light a jogger stepped out in front of the ego.", 18, 21),
+    ],
+)
+def test_the_everyday_names_of_the_parts_of_the_day(text, lo, hi):
+    hour = int(read(text).time.split(":")[0])
+    assert lo <= hour <= hi
+
+
+@pytest.mark.parametrize(
     "text, lanes",
     [
         ("Eastbound on the bypass, 3 lanes, at 80 km/h. A coach shifted one lane to the left, next to us.", 3),

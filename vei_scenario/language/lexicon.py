@@ -1242,11 +1242,21 @@ TIMES = {
         "after dark",
     ),
     "02:00": ("small hours", "early hours", "wee hours"),
-    "06:00": ("dawn", "sunrise", "early morning"),
-    "08:30": ("morning",),
-    "12:00": ("noon", "midday", "lunchtime"),
+    "06:00": ("dawn", "sunrise", "early morning", "daybreak", "crack of dawn", "sun-up", "sunup", "break of day"),
+    "08:30": ("morning", "forenoon", "breakfast time", "breakfast-time"),  # ("forenoon": Indian English)
+    "12:00": ("noon", "midday", "lunchtime", "lunch time", "lunch-time", "lunch hour", "noontime"),
     "13:00": ("daylight", "daytime", "broad daylight", "during the day", "by day"),
-    "15:30": ("afternoon", "after lunch", "arvo", "this aft"),  # ("this arvo": the afternoon, in Australian English)
+    "15:30": (
+        "afternoon",
+        "after lunch",
+        "arvo",
+        "this aft",
+        "home time",
+        "hometime",
+        "school pick-up",
+        "school pickup",
+        "after school",
+    ),  # ("this arvo": the afternoon, in Australian English; "home time": when schools let out)
     "19:30": (
         "dusk",
         "sunset",
@@ -1259,6 +1269,9 @@ TIMES = {
         "after sunset",
         "dusky",
         "civil twilight",
+        "half-light",
+        "gloaming",
+        "lighting-up time",
     ),
     "20:00": ("evening",),
     "21:30": ("tonight",),  # (this evening or tonight: an hour of both)

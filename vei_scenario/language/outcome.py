@@ -59,7 +59,10 @@ _CONTACT_VERBS = frozenset(
 #: Forms of verbs of a knock that the lemmatiser does not know ("dinged the door", "biffed my bumper").
 _SLANG_CONTACT = frozenset(("dinged", "dings", "dinging", "biffed"))
 #: Nouns of a contact; "rtc" and "rta" are the road traffic collision (accident) of a report.
-_CONTACT_NOUNS = frozenset(("collision", "crash", "impact", "contact", "accident", "smash", "prang", "rtc", "rta"))
+_CONTACT_NOUNS = frozenset(
+    ("collision", "crash", "impact", "contact", "accident", "smash", "prang", "rtc", "rta", "shunt", "pile-up",
+     "pileup", "smash-up", "fender-bender", "coming-together")
+)  # fmt: skip
 #: The sounds of an impact, said as what happened ("there was a horrible thump").
 _IMPACT_SOUNDS = frozenset(("thump", "thud", "bang", "smack", "crunch", "bump"))
 #: A contact noun before one of these is a modifier of something else ("collision warning").
@@ -106,8 +109,13 @@ _TROUBLE = frozenset(
     ("issue", "issues", "problem", "problems", "conflict", "conflicts", "danger", "drama", "incident", "incidents",
      "trouble", "harm", "risk", "worry", "worries", "dramas", "interaction", "interactions")
 )  # fmt: skip
+#: Nouns of a fuss that, denied right before them, state a safe pass ("no bother", "without any fuss");
+#: also verbs ("didn't bother to indicate"), so only as the noun of "no", "any" or "without".
+_FUSS = frozenset(("fuss", "bother", "hassle", "hassles", "bovver", "biggie", "palaver"))
 #: Words of a close call said of the situation ("it was close", "dangerous", "scary").
-_CLOSE = frozenset(("close", "tight", "dangerous", "scary", "scared", "frightening", "hairy"))
+_CLOSE = frozenset(
+    ("close", "tight", "dangerous", "scary", "scared", "frightening", "hairy", "terrified", "terrifying", "petrified")
+)
 #: Auxiliaries, modals and adverbs between a subject and its verb ("the ego has to quickly brake").
 _BETWEEN = frozenset(
     ("has", "have", "had", "to", "must", "also", "just", "then", "is", "was", "were", "are", "be", "been", "will",
@@ -357,6 +365,10 @@ def _is_contact(words: list[str], i: int) -> bool:
         return True  # ("caught my front bumper", "nicked the wing mirror of the taxi")
     if lem & _TOUCHING and _is_verb(w) and _touched_with_a_part(words, i):
         return True  # ("caught it with my knee", "nicked me with its trailer")
+    if w == "bender" and prev == "fender":
+        return True  # ("a fender bender")
+    if lem & _STRIKING and _is_verb(w) and _struck_object(words[i + 1 : i + 6]):
+        return True  # ("an auto dashed my car", "the okada jammed the taxi", "a bus banged my door")
     if w in _SLANG_CONTACT and (_vehicle_part(words[i + 1 : i + 6]) or _names_road_user(words[i + 1 : i + 4])):
         return True  # ("dinged the van's door", "biffed my bumper")
     if lem & {"run"} and _is_verb(w) and _run_over(words, i):
@@ -602,13 +614,32 @@ def _touched_with_a_part(words: list[str], i: int) -> bool:
     )
 
 
+#: Verbs that are a blow only with a road user or a vehicle's part as their direct object: "dash" and
+#: "jam" as Indian and Nigerian English say a collision ("a bus dashed my car", "the okada jammed
+#: him"), "bang" ("banged my door"); "dashed across", "jammed the brakes on" are something else.
+_STRIKING = frozenset(("dash", "jam", "bang"))
+
+
+def _struck_object(after: list[str]) -> bool:
+    """Whether ``after`` (the words after a verb) opens with its direct object, and that object is a
+    road user or a vehicle's part ("my car", "the okada man", "him", "her front wheel")."""
+    if not after:
+        return False
+    if after[0] in _PERSON_OBJECTS - {"it", "one", "each"} or after[0] in _EGO_HEADS:
+        return True  # (or the ego: "dashed my car", read as "dashed ego")
+    if after[0] not in _POSSESSIVES | {"the", "a", "an", "this", "that"}:
+        return False
+    return _vehicle_part(after) or _names_road_user(after[:4])
+
+
 def _run_over(words: list[str], i: int) -> bool:
-    """ "run" at ``i`` with "over" or "down" and a road user as its object, before the particle or
-    after it ("ran over the cyclist", "ran him over", "ran it down"); "ran down the hill", "ran over
-    the plan" name no road user."""
+    """ "run" at ``i`` with "over" or "down" and something met as its object: right after the particle
+    anything but a place ("ran over the cyclist", "ran over a fox"; not "ran down the hill", "ran over
+    the kerb"), before it a road user ("ran him over", "ran it down"; not "ran the route over")."""
     after = words[i + 1 : i + 6]
     if after[:1] and after[0] in ("over", "down"):
-        return _names_road_user(after[1:])
+        place = set(after[1:4]) & (_PLACES | _FURNITURE | {"hill", "slope", "steps", "stairs", "bank", "alley"})
+        return _meets_road_user(after[1:4]) and not place
     k = next((k for k, x in enumerate(after[:4]) if x in ("over", "down")), None)
     if not k:
         return False
@@ -1066,6 +1097,63 @@ def _near_to(words: list[str], i: int) -> bool:
     return bool(set(words[max(0, k - 4) : k]) & _NEARNESS)
 
 
+#: Verbs of a belief or an expectation held at the time ("I thought I'd hit him", "we braced for impact").
+_BELIEVING = frozenset(("thought", "expected", "feared", "braced", "reckoned", "assumed"))
+#: Adjectives of a belief, after a past copula ("I was sure I'd hit it", "was convinced he'd hit me").
+_SURE = frozenset(("sure", "certain", "convinced", "positive"))
+_PRONOUNS = frozenset(("i", "we", "he", "she", "they", "ego"))
+
+
+def _believed(words: list[str], i: int) -> bool:
+    """Whether the contact at ``i`` is what someone believed or expected would happen ("I thought I
+    was going to hit him", "I honestly thought I'd hit her", "I was sure I'd hit it", "we braced for
+    impact"): it did not happen as said (a contact that did is said again: "... and I did"). Only a
+    belief of a person said as such (a pronoun before it), not a spec's "Expected: collision"."""
+    for k in range(max(0, i - 7), i):
+        w = words[k]
+        if w in _BELIEVING or (w in _SURE and words[k - 1 : k] in (["was"], ["were"])):
+            j = k - 1 if w in _BELIEVING else k - 2
+            while j >= 0 and (words[j].endswith("ly") or words[j] in ("really", "fully", "half", "genuinely")):
+                j -= 1
+            if j >= 0 and words[j] in _PRONOUNS:
+                return True
+    return False
+
+
+#: Verbs (lemmas) of a fright someone was given ("scared the life out of me", "it terrified us").
+_FRIGHTENING = frozenset(("scare", "frighten", "terrify", "petrify", "startle", "spook"))
+
+
+def _fright(words: list[str], i: int) -> bool:
+    """An idiom of a fright at ``i``, which says how close it came: a verb of scaring with the narrator
+    as its object ("scared the life out of me", "frightened us half to death"), "heart in my mouth",
+    "(nearly) had a heart attack", "my life flashed before my eyes", "a brown-trouser moment"."""
+    w = words[i]
+    after = words[i + 1 : i + 7]
+    if _is_verb(w) and _lemmas(w) & _FRIGHTENING and not w.endswith("ing"):
+        out_of = any(after[k : k + 3] in (["out", "of", "me"], ["out", "of", "us"]) for k in range(len(after)))
+        return out_of or after[:1] in (["me"], ["us"]) or _names_ego(after[:2])  # (not "scared the cyclist")
+    if w == "heart" and (words[i + 1 : i + 3] == ["in", "my"] or words[i + 1 : i + 3] == ["in", "our"]):
+        return True
+    if (
+        w == "heart"
+        and words[i + 1 : i + 2] == ["attack"]
+        and bool(set(words[max(0, i - 4) : i]) & (_HEDGES | {"had"}))
+    ):
+        return True
+    if w == "life" and words[i + 1 : i + 2] == ["flashed"]:
+        return True
+    return (
+        w.startswith("brown")
+        and words[i + 1 : i + 2] in (["trouser"], ["trousers"])
+        or w
+        in (
+            "brown-trouser",
+            "brown-trousers",
+        )
+    )
+
+
 #: Words of how bad something would have been ("could have been nasty", "would have been a disaster").
 _BAD = frozenset(
     ("bad", "worse", "nasty", "ugly", "serious", "fatal", "disaster", "disastrous", "tragic", "tragedy", "messy",
@@ -1169,6 +1257,16 @@ def _need_denied(words: list[str], i: int) -> bool:
     return k >= 0 and before[k] in ("not", "never", "no", "without", "nobody", "no-one", "noone")
 
 
+def _only_just(words: list[str], i: int) -> bool:
+    """Whether "only" up to five words before the contact at ``i`` hedges it ("only just clipped him",
+    "only narrowly missed", "the van only didn't hit me because ..."), not a contact made light of
+    ("it was only a fender bender", "only a scratch on the bumper", "only a light tap")."""
+    for k in range(max(0, i - 5), i):
+        if words[k] == "only" and not (words[k + 1 : k + 2] and words[k + 1] in ("a", "an", "the", "some")):
+            return True
+    return False
+
+
 def _contact_kind(words: list[str], i: int, clause: _Clause, sentence: list[str]) -> str | None:
     """What the contact stated at ``words[i]`` (a word :func:`_is_contact` accepts) says happened:
     "contact", "hedged" ("nearly hit", "would have hit"), "denied" ("did not hit", "no contact") or
@@ -1179,7 +1277,9 @@ def _contact_kind(words: list[str], i: int, clause: _Clause, sentence: list[str]
         return None  # ("swerved to miss him and hit the kerb", "someone is going to get hit here")
     before = sentence[: len(sentence) - len(words) + i]
     passive = _denied_after(words, i)  # ("collision narrowly avoided", "a crash was averted")
-    hedged = _scoped(words, i, _HEDGES | {"only", "within"}, 5) or passive == "hedged" or _near_to(words, i)
+    hedged = _scoped(words, i, _HEDGES | {"within"}, 5) or passive == "hedged" or _near_to(words, i)
+    hedged = hedged or _only_just(words, i)
+    hedged = hedged or _believed(words, i)
     counterfactual = "have" in words[:i] and (
         _scoped(words, i, _HYPOTHETICAL, 3) or clause.after_if or _modal_perfect(words, i)
     )
@@ -1244,7 +1344,7 @@ def outcome_cues(said: str) -> list[Cue]:
             if _is_verb(w) and _lemmas(w) & _ESCAPING and _need_denied(words, i):
                 add("unforced")  # ("didn't even have to brake", "no need to swerve": nothing forced)
                 continue
-            if _close_idiom(words, i, whole, at):
+            if _close_idiom(words, i, whole, at) or _fright(words, i):
                 add("close")  # ("too close for comfort", "touch and go")
                 continue
             if (
@@ -1333,6 +1433,8 @@ def outcome_cues(said: str) -> list[Cue]:
                 add("hedged")
             if w in _TROUBLE and (_denied_before(words, i) or _scoped(words, i, ("without",), 3)):
                 add("safe")
+            elif w in _FUSS and words[i - 1 : i] in (["no"], ["any"], ["without"]) and _denied_before(words, i):
+                add("safe")  # ("no fuss", "without any bother", "no hassle"; not "didn't bother to look")
             went = w == "smoothly" and i > 0 and _lemmas(words[i - 1]) & {"go", "pass", "run"}  # ("it went smoothly")
             if (w in _SAFE_WORDS or went) and not _denied_before(words, i):
                 # ("fine rain", "on a fine, dry evening": a word of the weather before its noun)
