@@ -868,3 +868,55 @@ def test_a_season_a_past_weather_and_a_superlative_give_way(text, weather):
 )
 def test_traffic_said_to_be_bad_is_heavy(text, density):
     assert read(text).density == density
+
+
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("RBT, ego enters and takes the 2nd exit; a scooter is circulating ahead.", "roundabout"),
+        ("At the mini-rbt a van cut across me.", "roundabout"),
+        ("Coming round the gyratory a taxi cut across my bonnet.", "roundabout"),
+        ("At the roundy by the shops a van cut across me.", "roundabout"),
+        ("On the dogleg past the farm a van came at me on my side.", "curve"),
+        ("Through the chicane a car cut in front of me.", "curve"),
+        ("At the all-way stop a pickup pulled out on me.", "crossroad"),
+        ("At the chowk a motorbike came across in front of us.", "crossroad"),
+        ("At the robots a taxi pulled out in front of me.", "crossroad"),
+        ("A delivery robot crossed in front of me on the high street.", "straight"),
+    ],
+)
+def test_the_worlds_words_for_a_roundabout_a_junction_and_a_bend(text, kind):
+    assert (read(text).map_kind or "straight") == kind
+
+
+@pytest.mark.parametrize(
+    "text, weather",
+    [
+        ("In the smog a van cut in front of me.", "fog"),
+        ("Thick murk on the moor, a tractor pulled out ahead.", "fog"),
+        ("It was raining cats and dogs and a bus pulled out.", "heavy_rain"),
+        ("In a thunderstorm a van cut in ahead of the ego.", "heavy_rain"),
+        ("Monsoon evening, a bike cut across in front of our car.", "heavy_rain"),
+        ("Blue skies, a van cut in front of us.", "clear"),
+        ("It was a scorcher and a cyclist rode out ahead of me.", "clear"),
+    ],
+)
+def test_the_worlds_words_for_the_weather(text, weather):
+    assert read(text).weather == weather
+
+
+@pytest.mark.parametrize(
+    "text, density",
+    [
+        ("Nose to tail on the ring road, a van cut in front of me.", "heavy"),
+        ("The high street was chock-a-block and a moped cut in.", "heavy"),
+        ("Gridlock on the bypass, a motorbike filtered past me.", "heavy"),
+        ("Sat in a tailback when a bike came up my inside.", "heavy"),
+        ("The traffic was stop-start and a scooter filtered past me.", "heavy"),
+        ("Steady traffic on the bypass, a van cut in ahead of me.", "moderate"),
+        ("Not a soul about, and a van pulled out of a farm gate.", "none"),
+        ("The van ahead came to a standstill and I stopped behind it.", None),
+    ],
+)
+def test_the_worlds_words_for_the_traffic(text, density):
+    assert read(text).density == density

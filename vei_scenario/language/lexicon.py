@@ -1130,8 +1130,12 @@ MAPS = {
         "give-way sign",
         "yield sign",
         "priority road",
+        "all-way stop",
+        "three-way junction",
+        "chowk",  # (a junction, in Indian English)
+        "robots",  # (traffic lights, in South African English)
     ),
-    "roundabout": ("roundabout", "traffic circle", "rotary"),
+    "roundabout": ("roundabout", "traffic circle", "rotary", "rbt", "mini-rbt", "gyratory", "roundy"),
     "curve": (
         "bend",
         "curve",
@@ -1148,6 +1152,10 @@ MAPS = {
         "bendy",
         "twisty",
         "curved",
+        "dogleg",
+        "chicane",
+        "switchback",
+        "switchbacks",
     ),
     "straight": (
         "motorway",
@@ -1206,8 +1214,27 @@ WEATHER = {
         "coming down in sheets",
         "coming down in buckets",
         "heavens opened",
+        "cats and dogs",
+        "thunderstorm",
+        "thunderstorms",
+        "thundery",
+        "monsoon",
+        "hailstorm",
     ),
-    "fog": ("fog", "foggy", "mist", "misty", "haze", "hazy", "murky", "pea-souper", "pea souper"),
+    "fog": (
+        "fog",
+        "foggy",
+        "mist",
+        "misty",
+        "haze",
+        "hazy",
+        "murky",
+        "murk",
+        "smog",
+        "smoggy",
+        "pea-souper",
+        "pea souper",
+    ),
     "snow": (
         "snow",
         "snowy",
@@ -1225,7 +1252,7 @@ WEATHER = {
         "whiteout",
     ),
     "cloudy": ("cloudy", "overcast", "grey", "gray", "dull"),
-    "clear": ("clear", "sunny", "dry", "fine", "bright"),
+    "clear": ("clear", "sunny", "dry", "fine", "bright", "sunshine", "heatwave", "scorcher", "blue skies", "blue sky"),
 }
 TIMES = {
     "23:00": (
@@ -1290,6 +1317,8 @@ DENSITY = {
         "nothing else about",
         "no one else about",
         "nobody else about",
+        "not a soul",
+        "not another car",
     ),
     "light": (
         "light traffic",
@@ -1300,7 +1329,17 @@ DENSITY = {
         "low traffic volume",
         "quiet",  # (a quiet road has a little traffic; an empty or dead quiet one none)
     ),
-    "moderate": ("moderate traffic", "some traffic", "moderately busy", "medium traffic", "fairly busy"),
+    "moderate": (
+        "moderate traffic",
+        "some traffic",
+        "moderately busy",
+        "medium traffic",
+        "fairly busy",
+        "steady traffic",
+        "normal traffic",
+        "average traffic",
+        "free-flowing traffic",
+    ),
     "heavy": (
         "heavy traffic",
         "dense traffic",
@@ -1316,6 +1355,20 @@ DENSITY = {
         "bumper to bumper",
         "bumper-to-bumper",
         "high traffic",
+        "nose to tail",
+        "nose-to-tail",
+        "chock-a-block",
+        "gridlock",
+        "gridlocked",
+        "tailback",
+        "stop-start",
+        "stop-go",
+        "stop and go",
+        "standstill traffic",
+        "slow-moving traffic",
+        "slow moving traffic",
+        "crawling traffic",
+        "traffic crawling",
     ),
 }
 LANES = {
