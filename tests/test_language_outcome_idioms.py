@@ -325,3 +325,29 @@ def test_contact_in_other_englishes(text):
 @pytest.mark.parametrize("text, intent", WORLD_CONTACT_NOT)
 def test_those_verbs_without_a_road_user_are_no_contact(text, intent):
     assert _intent(text) == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("A jogger steps out from the right, the ego cannot stop in time.", "collision"),
+        ("A child runs out; the ego cannot avoid her.", "collision"),
+        ("A jogger steps out; the ego should brake and stop with at least 2 m margin.", "safe"),
+    ],
+)
+def test_cannot_denies_and_a_margin_at_least_said(text, intent):
+    assert _intent(text) == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("A cyclist was coming up my inside. Didn't see him at all until my instructor shouted.", "near_miss"),
+        ("I never noticed the scooter till it was right beside my door.", "near_miss"),
+        ("We did not spot the jogger until the last moment and stopped.", "near_miss"),
+        ("I didn't see any cyclists on the way home.", None),
+        ("A van pulled out; I waited until it had gone.", "safe"),
+    ],
+)
+def test_seen_too_late(text, intent):
+    assert _intent(text) == intent

@@ -41,7 +41,7 @@ _BREAK_WORDS = frozenset(
     ("but", "and", "then", "so", "because", "when", "while", "whilst", "until", "till", "although", "though")
 )
 #: Negators: they deny what follows them in their clause.
-_NEGATORS = frozenset(("no", "not", "never", "without", "nobody", "nothing", "neither", "nor", "none"))
+_NEGATORS = frozenset(("no", "not", "never", "without", "nobody", "nothing", "neither", "nor", "none", "cannot"))
 #: Verbs (lemmas) whose object is denied: "avoided contact", "prevents a collision".
 _DENYING_VERBS = frozenset(("avoid", "prevent", "escape", "evade", "avert"))
 #: Hedges: what follows them almost happened ("nearly hit", "barely missed", "almost a crash").
@@ -750,7 +750,7 @@ def _margin(words: list[str], i: int) -> str | None:
         return NEAR_MISS  # ("stopped just in time")
     if w in ("moment", "second", "minute", "instant") and i > 1 and words[i - 1] == "last":
         return NEAR_MISS  # ("swerved back at the last second")
-    context = set(words[max(0, i - 4) : i + 2])
+    context = set(words[max(0, i - 6) : i + 2])  # ("with at least 2 m margin")
     if w in ("clearance", "separation", "margin") and (
         w == "clearance" or context & {"minimum", "lateral", "with", "passing"}
     ):
@@ -1224,6 +1224,15 @@ def _close_idiom(words: list[str], i: int, whole: list[str], at: int) -> bool:
     )
 
 
+def _seen_late(words: list[str], i: int, whole: list[str], at: int) -> bool:
+    """A verb of seeing at ``i``, denied, "until" something late ("didn't see him until Dad shouted",
+    "never noticed the scooter till it was right there"; read in ``whole``, its sentence, as "until"
+    ends a clause; ``at`` where the clause starts in it): the other was seen too late to be far off."""
+    if not (_is_verb(words[i]) and _lemmas(words[i]) & {"see", "spot", "notice"} and _denied_before(words, i)):
+        return False
+    return bool({"until", "till", "til"} & set(whole[at + i + 1 : at + i + 6]))
+
+
 #: An escape said as a noun phrase ("took evasive action", "did an emergency stop", "had to emergency brake").
 _ESCAPE_HEADS = frozenset(("action", "stop", "stops", "brake", "braking", "manoeuvre", "maneuver", "swerve"))
 
@@ -1344,7 +1353,7 @@ def outcome_cues(said: str) -> list[Cue]:
             if _is_verb(w) and _lemmas(w) & _ESCAPING and _need_denied(words, i):
                 add("unforced")  # ("didn't even have to brake", "no need to swerve": nothing forced)
                 continue
-            if _close_idiom(words, i, whole, at) or _fright(words, i):
+            if _close_idiom(words, i, whole, at) or _fright(words, i) or _seen_late(words, i, whole, at):
                 add("close")  # ("too close for comfort", "touch and go")
                 continue
             if (
