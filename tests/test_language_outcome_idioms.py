@@ -351,3 +351,8 @@ def test_cannot_denies_and_a_margin_at_least_said(text, intent):
 )
 def test_seen_too_late(text, intent):
     assert _intent(text) == intent
+
+
+def test_seen_late_then_passed_wide_is_a_safe_pass():
+    text = "I didn't see the cyclist until he was 10 m ahead, then gave him a wide berth, no problem."
+    assert _intent(text) == "safe"

@@ -883,6 +883,8 @@ def test_traffic_said_to_be_bad_is_heavy(text, density):
         ("At the chowk a motorbike came across in front of us.", "crossroad"),
         ("At the robots a taxi pulled out in front of me.", "crossroad"),
         ("A delivery robot crossed in front of me on the high street.", "straight"),
+        ("Ego is a BRT bus in the BRT lane at 50 km/h; a car comes at it head-on.", "straight"),
+        ("An RBT unit was parked on the verge and a ute cut in front of me.", "straight"),
     ],
 )
 def test_the_worlds_words_for_a_roundabout_a_junction_and_a_bend(text, kind):

@@ -1135,7 +1135,7 @@ MAPS = {
         "chowk",  # (a junction, in Indian English)
         "robots",  # (traffic lights, in South African English)
     ),
-    "roundabout": ("roundabout", "traffic circle", "rotary", "rbt", "mini-rbt", "gyratory", "roundy"),
+    "roundabout": ("roundabout", "traffic circle", "rotary", "gyratory", "roundy"),
     "curve": (
         "bend",
         "curve",
@@ -1362,7 +1362,6 @@ DENSITY = {
         "gridlocked",
         "tailback",
         "stop-start",
-        "stop-go",
         "stop and go",
         "standstill traffic",
         "slow-moving traffic",

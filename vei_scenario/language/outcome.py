@@ -991,7 +991,8 @@ def _ego_acts(words: list[str], i: int) -> str | None:
 class Cue:
     """One statement of the outcome found in a clause: what it says (``contact``, ``hedged``,
     ``denied``, ``required``: a contact denied as what the test requires, ``near``, ``close``,
-    ``safe``, ``lucky``: relief at luck, ``evade``, ``brake``, ``yield``) and the words it was
+    ``safe``, ``lucky``: relief at luck, ``late``: the other seen late, ``unforced``: an escape not
+    needed, ``evade``, ``brake``, ``yield``) and the words it was
     read from, so a reading can say why it chose its intent."""
 
     kind: str
@@ -1353,7 +1354,10 @@ def outcome_cues(said: str) -> list[Cue]:
             if _is_verb(w) and _lemmas(w) & _ESCAPING and _need_denied(words, i):
                 add("unforced")  # ("didn't even have to brake", "no need to swerve": nothing forced)
                 continue
-            if _close_idiom(words, i, whole, at) or _fright(words, i) or _seen_late(words, i, whole, at):
+            if _seen_late(words, i, whole, at):
+                add("late")  # ("didn't see him until Dad shouted": a near miss unless a safe pass is said)
+                continue
+            if _close_idiom(words, i, whole, at) or _fright(words, i):
                 add("close")  # ("too close for comfort", "touch and go")
                 continue
             if (
@@ -1536,8 +1540,8 @@ def decide(cues: list[Cue], sudden: bool = False) -> str | None:
         return NEAR_MISS
     if "safe" in kinds or ("unforced" in kinds and not kinds & {"evade", "brake", "lucky"}):
         return SAFE  # (or no escape needed: "didn't even have to brake")
-    if "lucky" in kinds:
-        return NEAR_MISS  # (relief at luck, and no wide margin said: it was close)
+    if kinds & {"lucky", "late"}:
+        return NEAR_MISS  # (relief at luck, or the other seen late, and no wide margin said: it was close)
     if "required" in kinds and not kinds & {"evade", "brake", "denied"}:
         return SAFE  # (no contact, as the test requires, and nothing forced)
     if "denied" in kinds or "required" in kinds:
