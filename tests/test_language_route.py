@@ -246,6 +246,8 @@ SIGNALLING = {
 SIGNALLING_NOT = [
     "I indicated right to overtake the tractor and a motorbike was already alongside.",
     "I signalled left and pulled over to let the ambulance through.",
+    "I indicated left to pull in at the bus stop.",
+    "I signalled left and tucked in behind the lorry.",
     "The van indicated left but then went straight on in front of me.",
     "I was indicating right to change lanes when a car came up fast behind.",
 ]

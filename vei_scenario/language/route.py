@@ -252,7 +252,9 @@ _SIGNALLING = frozenset(("indicate", "signal", "blink"))
 #: A vehicle's signal, after a possessive and a side ("my left indicator", "our right blinker").
 _SIGNALS = frozenset(("indicator", "indicators", "blinker", "blinkers", "signal", "indicator-light"))
 #: What a signal is for when it is not a turn: a lane change, an overtake, pulling over or in.
-_NOT_A_TURN = frozenset(("overtake", "pass", "lane", "lanes", "merge", "over", "undertake"))
+_NOT_A_TURN = frozenset(("overtake", "pass", "lane", "lanes", "merge", "undertake", "lay-by", "layby"))
+#: Verbs (lemmas) that with "in", "over" or "up" pull to the side ("pulled in", "pull over", "move over").
+_PULLING = frozenset(("pull", "move", "tuck", "draw"))
 
 
 def _turn_lane_at(words: list[str], i: int) -> str | None:
@@ -288,7 +290,11 @@ def _signal_at(words: list[str], i: int) -> str | None:
 def _signals_a_turn(rest: list[str]) -> bool:
     """Whether a signal whose sentence goes on with ``rest`` is for a turn, not for a lane change, an
     overtake or pulling over ("indicated right to overtake", "signalled left and pulled over")."""
-    return not any(w in _NOT_A_TURN or _lemma_in(w, frozenset(("overtake", "pass", "merge"))) for w in rest)
+    if any(w in _NOT_A_TURN or _lemma_in(w, frozenset(("overtake", "pass", "merge"))) for w in rest):
+        return False
+    return not any(
+        _lemma_in(w, _PULLING) and rest[k + 1 : k + 2] in (["in"], ["over"], ["up"]) for k, w in enumerate(rest)
+    )
 
 
 def _held_at(words: list[str], i: int) -> tuple[str, int] | None:
