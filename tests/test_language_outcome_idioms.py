@@ -356,3 +356,15 @@ def test_seen_too_late(text, intent):
 def test_seen_late_then_passed_wide_is_a_safe_pass():
     text = "I didn't see the cyclist until he was 10 m ahead, then gave him a wide berth, no problem."
     assert _intent(text) == "safe"
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("A lorry swung across both lanes, it was nearly a disaster.", "near_miss"),
+        ("The bus jumped the red: almost a tragedy at the crossing.", "near_miss"),
+        ("The council calls the junction a disaster waiting to happen.", None),
+    ],
+)
+def test_a_disaster_nearly_had(text, intent):
+    assert _intent(text) == intent

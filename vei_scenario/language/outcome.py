@@ -1158,9 +1158,11 @@ def _fright(words: list[str], i: int) -> bool:
 #: Words of how bad something would have been ("could have been nasty", "would have been a disaster").
 _BAD = frozenset(
     ("bad", "worse", "nasty", "ugly", "serious", "fatal", "disaster", "disastrous", "tragic", "tragedy", "messy",
-     "horrible", "horrific", "terrible", "awful", "catastrophic", "carnage", "deadly", "grim", "dire", "curtains",
-     "badly", "tears", "story", "game")
+     "horrible", "horrific", "terrible", "awful", "catastrophic", "catastrophe", "carnage", "deadly", "grim", "dire",
+     "curtains", "badly", "tears", "story", "game")
 )  # fmt: skip
+#: Nouns of a disaster, which a hedge makes one that nearly happened ("nearly a disaster").
+_DISASTERS = frozenset(("disaster", "tragedy", "catastrophe", "carnage"))
 #: Verbs of how something turns out, after a modal perfect ("could have ended badly", "might have gone").
 _TURNING_OUT = frozenset(("been", "ended", "gone", "turned", "finished", "got"))
 
@@ -1386,7 +1388,9 @@ def outcome_cues(said: str) -> list[Cue]:
             if w == "within" and _within(words, i):
                 add("near")  # ("came within a foot of my door")
                 continue
-            if (w in _BAD or _lemmas(w) & _HARMED) and _could_have_been_bad(words, i):
+            if (w in _BAD or _lemmas(w) & _HARMED) and (
+                _could_have_been_bad(words, i) or (w in _DISASTERS and _scoped(words, i, _HEDGES, 3))
+            ):
                 add("hedged")  # ("could have been nasty", "she could have been killed": it was not)
                 continue
             if _escape_noun(words, i) and (doer == "ego" or "had" in words[max(0, i - 5) : i]):
