@@ -195,3 +195,69 @@ def test_going_left_or_right_at_a_speed_is_a_turn(text, route):
 
 def test_going_right_at_someone_is_no_turn():
     assert read("I was cycling along when a van went right at me.").ego_route in (None, "straight")
+
+
+# the ego waiting in a lane kept for a turn: that turn is its route
+TURN_LANE = {
+    "right": [
+        "I was in the right-turn lane at the lights when a moped came through on red.",
+        "We were sat in the right filter lane and a bus overshot the stop line.",
+        "Ego queues in the right turning lane; an oncoming van jumps the amber.",
+        "I was on the right filter when a cyclist came the wrong way.",
+    ],
+    "left": [
+        "I was queuing in the left-turn lane when a scooter squeezed up my inside.",
+        "Stopped in the left-turn-only lane, I saw a jogger step onto the crossing.",
+        "The host vehicle waits in the left turn pocket while a cyclist rides past.",
+    ],
+}
+# a lane named by its side, or someone else's turn lane: no route of the ego
+TURN_LANE_NOT = [
+    "I was in the right lane on the dual carriageway when a van undertook me.",
+    "A van in the right-turn lane pulled out in front of me.",
+    "The right-turn lane was closed, so I carried on and a cyclist came past.",
+]
+
+
+@pytest.mark.parametrize("route, text", [(r, t) for r, texts in TURN_LANE.items() for t in texts])
+def test_the_ego_in_a_turn_lane_turns_that_way(route, text):
+    assert ego_route(_tokens(text)) == route
+
+
+@pytest.mark.parametrize("text", TURN_LANE_NOT)
+def test_a_side_lane_or_anothers_turn_lane_is_no_route(text):
+    assert ego_route(_tokens(text)) is None
+
+
+# the ego signalling a turn: that turn is its route
+SIGNALLING = {
+    "left": [
+        "I indicated left and started to turn when a cyclist appeared on my inside.",
+        "I had my left indicator on at the junction and a scooter came up the pavement.",
+        "Ego signals left at the T-junction as a pedestrian steps off the kerb.",
+    ],
+    "right": [
+        "I was signalling right at the crossroads and a van overtook me.",
+        "Sat at the lights with my right blinker on, a motorbike came through.",
+        "We were indicating right into the garage forecourt when the bus behind us pulled out.",
+    ],
+}
+# a signal for a lane change or for pulling over, or someone else's: no route of the ego
+SIGNALLING_NOT = [
+    "I indicated right to overtake the tractor and a motorbike was already alongside.",
+    "I signalled left and pulled over to let the ambulance through.",
+    "I indicated left to pull in at the bus stop.",
+    "I signalled left and tucked in behind the lorry.",
+    "The van indicated left but then went straight on in front of me.",
+    "I was indicating right to change lanes when a car came up fast behind.",
+]
+
+
+@pytest.mark.parametrize("route, text", [(r, t) for r, texts in SIGNALLING.items() for t in texts])
+def test_the_ego_signalling_a_turn_turns_that_way(route, text):
+    assert ego_route(_tokens(text)) == route
+
+
+@pytest.mark.parametrize("text", SIGNALLING_NOT)
+def test_a_signal_to_change_lanes_or_anothers_is_no_route(text):
+    assert ego_route(_tokens(text)) is None

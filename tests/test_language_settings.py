@@ -607,6 +607,23 @@ def test_a_whole_hour_and_the_colloquial_parts_of_the_day(text, lo, hi):
 
 
 @pytest.mark.parametrize(
+    "text, lo, hi",
+    [
+        ("At daybreak a cyclist was riding ahead of me on the lane.", 5, 7),
+        ("Just after sun-up a van cut in front of us.", 5, 7),
+        ("In the forenoon a bus pulled out ahead of the ego.", 6, 11),
+        ("A van cut in at lunch time on the ring road.", 11, 13),
+        ("Outside the primary at home time, a kid ran out between the cars.", 12, 17),
+        ("Straight after school a lad on a bike came off the pavement in front of me.", 12, 17),
+        ("In the half-light a jogger stepped out in front of the ego.", 18, 21),
+    ],
+)
+def test_the_everyday_names_of_the_parts_of_the_day(text, lo, hi):
+    hour = int(read(text).time.split(":")[0])
+    assert lo <= hour <= hi
+
+
+@pytest.mark.parametrize(
     "text, lanes",
     [
         ("Eastbound on the bypass, 3 lanes, at 80 km/h. A coach shifted one lane to the left, next to us.", 3),
@@ -850,4 +867,58 @@ def test_a_season_a_past_weather_and_a_superlative_give_way(text, weather):
     ids=["too-much", "horrendous", "set-to-heavy", "bad-road", "light"],
 )
 def test_traffic_said_to_be_bad_is_heavy(text, density):
+    assert read(text).density == density
+
+
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("RBT, ego enters and takes the 2nd exit; a scooter is circulating ahead.", "roundabout"),
+        ("At the mini-rbt a van cut across me.", "roundabout"),
+        ("Coming round the gyratory a taxi cut across my bonnet.", "roundabout"),
+        ("At the roundy by the shops a van cut across me.", "roundabout"),
+        ("On the dogleg past the farm a van came at me on my side.", "curve"),
+        ("Through the chicane a car cut in front of me.", "curve"),
+        ("At the all-way stop a pickup pulled out on me.", "crossroad"),
+        ("At the chowk a motorbike came across in front of us.", "crossroad"),
+        ("At the robots a taxi pulled out in front of me.", "crossroad"),
+        ("A delivery robot crossed in front of me on the high street.", "straight"),
+        ("Ego is a BRT bus in the BRT lane at 50 km/h; a car comes at it head-on.", "straight"),
+        ("An RBT unit was parked on the verge and a ute cut in front of me.", "straight"),
+    ],
+)
+def test_the_worlds_words_for_a_roundabout_a_junction_and_a_bend(text, kind):
+    assert (read(text).map_kind or "straight") == kind
+
+
+@pytest.mark.parametrize(
+    "text, weather",
+    [
+        ("In the smog a van cut in front of me.", "fog"),
+        ("Thick murk on the moor, a tractor pulled out ahead.", "fog"),
+        ("It was raining cats and dogs and a bus pulled out.", "heavy_rain"),
+        ("In a thunderstorm a van cut in ahead of the ego.", "heavy_rain"),
+        ("Monsoon evening, a bike cut across in front of our car.", "heavy_rain"),
+        ("Blue skies, a van cut in front of us.", "clear"),
+        ("It was a scorcher and a cyclist rode out ahead of me.", "clear"),
+    ],
+)
+def test_the_worlds_words_for_the_weather(text, weather):
+    assert read(text).weather == weather
+
+
+@pytest.mark.parametrize(
+    "text, density",
+    [
+        ("Nose to tail on the ring road, a van cut in front of me.", "heavy"),
+        ("The high street was chock-a-block and a moped cut in.", "heavy"),
+        ("Gridlock on the bypass, a motorbike filtered past me.", "heavy"),
+        ("Sat in a tailback when a bike came up my inside.", "heavy"),
+        ("The traffic was stop-start and a scooter filtered past me.", "heavy"),
+        ("Steady traffic on the bypass, a van cut in ahead of me.", "moderate"),
+        ("Not a soul about, and a van pulled out of a farm gate.", "none"),
+        ("The van ahead came to a standstill and I stopped behind it.", None),
+    ],
+)
+def test_the_worlds_words_for_the_traffic(text, density):
     assert read(text).density == density

@@ -1236,8 +1236,12 @@ MAPS = {
         "give-way sign",
         "yield sign",
         "priority road",
+        "all-way stop",
+        "three-way junction",
+        "chowk",  # (a junction, in Indian English)
+        "robots",  # (traffic lights, in South African English)
     ),
-    "roundabout": ("roundabout", "traffic circle", "rotary"),
+    "roundabout": ("roundabout", "traffic circle", "rotary", "gyratory", "roundy"),
     "curve": (
         "bend",
         "curve",
@@ -1254,6 +1258,10 @@ MAPS = {
         "bendy",
         "twisty",
         "curved",
+        "dogleg",
+        "chicane",
+        "switchback",
+        "switchbacks",
     ),
     "straight": (
         "motorway",
@@ -1312,8 +1320,27 @@ WEATHER = {
         "coming down in sheets",
         "coming down in buckets",
         "heavens opened",
+        "cats and dogs",
+        "thunderstorm",
+        "thunderstorms",
+        "thundery",
+        "monsoon",
+        "hailstorm",
     ),
-    "fog": ("fog", "foggy", "mist", "misty", "haze", "hazy", "murky", "pea-souper", "pea souper"),
+    "fog": (
+        "fog",
+        "foggy",
+        "mist",
+        "misty",
+        "haze",
+        "hazy",
+        "murky",
+        "murk",
+        "smog",
+        "smoggy",
+        "pea-souper",
+        "pea souper",
+    ),
     "snow": (
         "snow",
         "snowy",
@@ -1331,7 +1358,7 @@ WEATHER = {
         "whiteout",
     ),
     "cloudy": ("cloudy", "overcast", "grey", "gray", "dull"),
-    "clear": ("clear", "sunny", "dry", "fine", "bright"),
+    "clear": ("clear", "sunny", "dry", "fine", "bright", "sunshine", "heatwave", "scorcher", "blue skies", "blue sky"),
 }
 TIMES = {
     "23:00": (
@@ -1348,11 +1375,21 @@ TIMES = {
         "after dark",
     ),
     "02:00": ("small hours", "early hours", "wee hours"),
-    "06:00": ("dawn", "sunrise", "early morning"),
-    "08:30": ("morning",),
-    "12:00": ("noon", "midday", "lunchtime"),
+    "06:00": ("dawn", "sunrise", "early morning", "daybreak", "crack of dawn", "sun-up", "sunup", "break of day"),
+    "08:30": ("morning", "forenoon", "breakfast time", "breakfast-time"),  # ("forenoon": Indian English)
+    "12:00": ("noon", "midday", "lunchtime", "lunch time", "lunch-time", "lunch hour", "noontime"),
     "13:00": ("daylight", "daytime", "broad daylight", "during the day", "by day"),
-    "15:30": ("afternoon", "after lunch", "arvo", "this aft"),  # ("this arvo": the afternoon, in Australian English)
+    "15:30": (
+        "afternoon",
+        "after lunch",
+        "arvo",
+        "this aft",
+        "home time",
+        "hometime",
+        "school pick-up",
+        "school pickup",
+        "after school",
+    ),  # ("this arvo": the afternoon, in Australian English; "home time": when schools let out)
     "19:30": (
         "dusk",
         "sunset",
@@ -1365,6 +1402,9 @@ TIMES = {
         "after sunset",
         "dusky",
         "civil twilight",
+        "half-light",
+        "gloaming",
+        "lighting-up time",
     ),
     "20:00": ("evening",),
     "21:30": ("tonight",),  # (this evening or tonight: an hour of both)
@@ -1383,6 +1423,8 @@ DENSITY = {
         "nothing else about",
         "no one else about",
         "nobody else about",
+        "not a soul",
+        "not another car",
     ),
     "light": (
         "light traffic",
@@ -1393,7 +1435,17 @@ DENSITY = {
         "low traffic volume",
         "quiet",  # (a quiet road has a little traffic; an empty or dead quiet one none)
     ),
-    "moderate": ("moderate traffic", "some traffic", "moderately busy", "medium traffic", "fairly busy"),
+    "moderate": (
+        "moderate traffic",
+        "some traffic",
+        "moderately busy",
+        "medium traffic",
+        "fairly busy",
+        "steady traffic",
+        "normal traffic",
+        "average traffic",
+        "free-flowing traffic",
+    ),
     "heavy": (
         "heavy traffic",
         "dense traffic",
@@ -1409,6 +1461,19 @@ DENSITY = {
         "bumper to bumper",
         "bumper-to-bumper",
         "high traffic",
+        "nose to tail",
+        "nose-to-tail",
+        "chock-a-block",
+        "gridlock",
+        "gridlocked",
+        "tailback",
+        "stop-start",
+        "stop and go",
+        "standstill traffic",
+        "slow-moving traffic",
+        "slow moving traffic",
+        "crawling traffic",
+        "traffic crawling",
     ),
 }
 LANES = {

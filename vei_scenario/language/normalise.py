@@ -236,6 +236,13 @@ _SHORTHAND = [
     (re.compile(r"\b4\s?x\s?4s?\b"), "four-by-four"),
     (re.compile(r"\bc/way\b"), "carriageway"),
     (re.compile(r"\brd\b"), "road"),
+    # a roundabout's shorthand ("RBT", "mini-rbt", "r'bout"); not Australia's random breath test ("RBT unit")
+    (
+        re.compile(
+            r"\b(mini-)?(?:rbt|rndbt|rndabt|r'bout)\b(?!\s+(?:unit|units|test|tests|testing|station|site|checkpoint|operation))"
+        ),
+        r"\1roundabout",
+    ),
     (re.compile(r"\b(?:jct|jcn|junc)\b\.?"), "junction"),
     (re.compile(r"\bvehs\b\.?"), "vehicles"),
     (re.compile(r"\bveh\b\.?"), "vehicle"),

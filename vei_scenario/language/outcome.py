@@ -41,7 +41,7 @@ _BREAK_WORDS = frozenset(
     ("but", "and", "then", "so", "because", "when", "while", "whilst", "until", "till", "although", "though")
 )
 #: Negators: they deny what follows them in their clause.
-_NEGATORS = frozenset(("no", "not", "never", "without", "nobody", "nothing", "neither", "nor", "none"))
+_NEGATORS = frozenset(("no", "not", "never", "without", "nobody", "nothing", "neither", "nor", "none", "cannot"))
 #: Verbs (lemmas) whose object is denied: "avoided contact", "prevents a collision".
 _DENYING_VERBS = frozenset(("avoid", "prevent", "escape", "evade", "avert"))
 #: Hedges: what follows them almost happened ("nearly hit", "barely missed", "almost a crash").
@@ -53,10 +53,16 @@ _HYPOTHETICAL = frozenset(("would", "could", "might", "if", "before"))
 #: what they take as object.
 _CONTACT_VERBS = frozenset(
     ("hit", "strike", "collide", "crash", "clip", "tag", "scrape", "touch", "bump", "smash", "ram", "sideswipe",
-     "rear-end", "t-bone", "graze", "wallop", "thump", "knock", "tap", "mow", "swipe", "shunt")
+     "rear-end", "t-bone", "graze", "wallop", "thump", "knock", "tap", "mow", "swipe", "shunt", "total", "whack",
+     "clout", "bash", "smack", "clobber")
 )  # fmt: skip
+#: Forms of verbs of a knock that the lemmatiser does not know ("dinged the door", "biffed my bumper").
+_SLANG_CONTACT = frozenset(("dinged", "dings", "dinging", "biffed"))
 #: Nouns of a contact; "rtc" and "rta" are the road traffic collision (accident) of a report.
-_CONTACT_NOUNS = frozenset(("collision", "crash", "impact", "contact", "accident", "smash", "prang", "rtc", "rta"))
+_CONTACT_NOUNS = frozenset(
+    ("collision", "crash", "impact", "contact", "accident", "smash", "prang", "rtc", "rta", "shunt", "pile-up",
+     "pileup", "smash-up", "fender-bender", "coming-together")
+)  # fmt: skip
 #: The sounds of an impact, said as what happened ("there was a horrible thump").
 _IMPACT_SOUNDS = frozenset(("thump", "thud", "bang", "smack", "crunch", "bump"))
 #: A contact noun before one of these is a modifier of something else ("collision warning").
@@ -103,8 +109,13 @@ _TROUBLE = frozenset(
     ("issue", "issues", "problem", "problems", "conflict", "conflicts", "danger", "drama", "incident", "incidents",
      "trouble", "harm", "risk", "worry", "worries", "dramas", "interaction", "interactions")
 )  # fmt: skip
+#: Nouns of a fuss that, denied right before them, state a safe pass ("no bother", "without any fuss");
+#: also verbs ("didn't bother to indicate"), so only as the noun of "no", "any" or "without".
+_FUSS = frozenset(("fuss", "bother", "hassle", "hassles", "bovver", "biggie", "palaver"))
 #: Words of a close call said of the situation ("it was close", "dangerous", "scary").
-_CLOSE = frozenset(("close", "tight", "dangerous", "scary", "scared", "frightening", "hairy"))
+_CLOSE = frozenset(
+    ("close", "tight", "dangerous", "scary", "scared", "frightening", "hairy", "terrified", "terrifying", "petrified")
+)
 #: Auxiliaries, modals and adverbs between a subject and its verb ("the ego has to quickly brake").
 _BETWEEN = frozenset(
     ("has", "have", "had", "to", "must", "also", "just", "then", "is", "was", "were", "are", "be", "been", "will",
@@ -116,10 +127,12 @@ _EGO_HEADS = frozenset(("i", "we", "ego", "sv", "vut", "av", "im"))
 _EGO_PHRASES = ("ego vehicle", "ego car", "subject vehicle", "test vehicle", "vehicle under test", "our car",
                 "my car", "host vehicle")  # fmt: skip
 #: What the ego does when it has to act: evasion, and its manner.
-_EVADE = frozenset(("swerve", "dodge", "veer", "slam", "stamp", "jump", "stand", "yank", "jerk"))
+_EVADE = frozenset(("swerve", "dodge", "veer", "slam", "stamp", "jump", "stand", "yank", "jerk", "jam", "anchor"))
 _HARD = frozenset(("hard", "dead", "sharply", "heavily", "suddenly", "firmly", "harshly", "violently", "emergency",
                    "full", "strongly", "abruptly"))  # fmt: skip
 _BRAKE = frozenset(("brake", "stop"))
+#: What one brakes "like" when one brakes as hard as one can ("like mad", "like hell").
+_FURY = frozenset(("mad", "hell", "crazy", "anything", "fury", "billy-o"))
 _MILD = frozenset(("gently", "softly", "lightly", "slightly", "normally", "smoothly", "gradually", "calmly"))
 #: What a road user that gives way does (lemmas).
 _YIELD = frozenset(("wait", "yield", "give", "let", "hang", "hold", "pause"))
@@ -352,8 +365,16 @@ def _is_contact(words: list[str], i: int) -> bool:
         return True  # ("caught my front bumper", "nicked the wing mirror of the taxi")
     if lem & _TOUCHING and _is_verb(w) and _touched_with_a_part(words, i):
         return True  # ("caught it with my knee", "nicked me with its trailer")
-    if lem & {"run", "knock", "mow"} and nxt in ("over", "down"):
-        return _meets_road_user(words[i + 2 : i + 5]) and not (nxt == "down" and lem & {"run"} and "road" in words)
+    if w == "bender" and prev == "fender":
+        return True  # ("a fender bender")
+    if lem & _STRIKING and _is_verb(w) and _struck_object(words[i + 1 : i + 6]):
+        return True  # ("an auto dashed my car", "the okada jammed the taxi", "a bus banged my door")
+    if w in _SLANG_CONTACT and (_vehicle_part(words[i + 1 : i + 6]) or _names_road_user(words[i + 1 : i + 4])):
+        return True  # ("dinged the van's door", "biffed my bumper")
+    if lem & {"run"} and _is_verb(w) and _run_over(words, i):
+        return True  # ("ran over a jogger", "ran him over"; not "ran down the hill")
+    if lem & {"knock", "mow"} and nxt in ("over", "down"):
+        return _meets_road_user(words[i + 2 : i + 5])
     if lem & {"make", "come"} and nxt == "contact":
         return True
     if lem & {"come"} and nxt == "together" and _is_verb(w):
@@ -499,7 +520,7 @@ _PARTICLES = frozenset(("out", "over", "down"))
 _THROWN_RESULTS = frozenset(("flying", "sprawling", "spinning", "tumbling"))
 #: Verbs of touching that are a contact only when their object is a part of a vehicle ("caught my
 #: bumper"; not "caught sight of", "caught up with").
-_TOUCHING = frozenset(("catch", "nick", "kiss", "brush", "touch", "clip", "scratch", "dent", "take"))
+_TOUCHING = frozenset(("catch", "nick", "kiss", "brush", "touch", "clip", "scratch", "dent", "take", "nudge"))
 #: The parts of a vehicle (and of a bicycle) that a contact is said to touch.
 _VEHICLE_PARTS = _STRUCK_PARTS | _PARTS | frozenset(
     ("wheel", "pedal", "handlebar", "handlebars", "arch", "panel", "quarter", "corner", "headlight", "taillight",
@@ -593,6 +614,39 @@ def _touched_with_a_part(words: list[str], i: int) -> bool:
     )
 
 
+#: Verbs that are a blow only with a road user or a vehicle's part as their direct object: "dash" and
+#: "jam" as Indian and Nigerian English say a collision ("a bus dashed my car", "the okada jammed
+#: him"), "bang" ("banged my door"); "dashed across", "jammed the brakes on" are something else.
+_STRIKING = frozenset(("dash", "jam", "bang"))
+
+
+def _struck_object(after: list[str]) -> bool:
+    """Whether ``after`` (the words after a verb) opens with its direct object, and that object is a
+    road user or a vehicle's part ("my car", "the okada man", "him", "her front wheel")."""
+    if not after:
+        return False
+    if after[0] in _PERSON_OBJECTS - {"it", "one", "each"} or after[0] in _EGO_HEADS:
+        return True  # (or the ego: "dashed my car", read as "dashed ego")
+    if after[0] not in _POSSESSIVES | {"the", "a", "an", "this", "that"}:
+        return False
+    return _vehicle_part(after) or _names_road_user(after[:4])
+
+
+def _run_over(words: list[str], i: int) -> bool:
+    """ "run" at ``i`` with "over" or "down" and something met as its object: right after the particle
+    anything but a place ("ran over the cyclist", "ran over a fox"; not "ran down the hill", "ran over
+    the kerb"), before it a road user ("ran him over", "ran it down"; not "ran the route over")."""
+    after = words[i + 1 : i + 6]
+    if after[:1] and after[0] in ("over", "down"):
+        place = set(after[1:4]) & (_PLACES | _FURNITURE | {"hill", "slope", "steps", "stairs", "bank", "alley"})
+        return _meets_road_user(after[1:4]) and not place
+    k = next((k for k, x in enumerate(after[:4]) if x in ("over", "down")), None)
+    if not k:
+        return False
+    obj = after[:k]
+    return _names_road_user(obj) or obj in (["it"], ["them"])
+
+
 def _begun(words: list[str], i: int) -> bool:
     """Whether the verb at ``i`` follows a verb of beginning in its clause ("started edging into me")."""
     return any(_lemmas(x) & _BEGIN for x in words[max(0, i - 3) : i])
@@ -634,8 +688,8 @@ def _denied_after(words: list[str], i: int) -> str | None:
 
 def _miss(words: list[str], i: int) -> bool:
     """A verb of missing whose object is someone ("missed him", "missed each other", "miss the cyclist")."""
-    if "miss" not in _lemmas(words[i]) or words[i] in ("miss", "mis") and i > 0 and words[i - 1] == "near":
-        return False
+    if "miss" not in _lemmas(words[i]) or i > 0 and words[i - 1] == "near":
+        return False  # ("no near misses": the noun, read by _near_noun)
     after = words[i + 1 : i + 3]
     if not after:
         return True  # ("he swerved and just missed")
@@ -696,7 +750,7 @@ def _margin(words: list[str], i: int) -> str | None:
         return NEAR_MISS  # ("stopped just in time")
     if w in ("moment", "second", "minute", "instant") and i > 1 and words[i - 1] == "last":
         return NEAR_MISS  # ("swerved back at the last second")
-    context = set(words[max(0, i - 4) : i + 2])
+    context = set(words[max(0, i - 6) : i + 2])  # ("with at least 2 m margin")
     if w in ("clearance", "separation", "margin") and (
         w == "clearance" or context & {"minimum", "lateral", "with", "passing"}
     ):
@@ -908,9 +962,13 @@ def _ego_acts(words: list[str], i: int) -> str | None:
     if _off_the_road(words, i):
         return "evade"
     if lem & _EVADE:
-        if lem & {"slam", "stamp", "jump", "stand"} and not {"on", "brake", "brakes"} & set(window):
+        if lem & {"slam", "stamp", "jump", "stand", "jam"} and not {"on", "brake", "brakes"} & set(window):
             return None
         return "evade"
+    if lem & {"lock"} and set(words[i + 1 : i + 4]) & {"up", "wheels", "brakes", "tyres", "tires"}:
+        return "evade"  # ("I locked up", "locked the wheels": braking as hard as it goes)
+    if lem & {"brake"} and words[i + 1 : i + 2] == ["like"] and set(words[i + 2 : i + 3]) & _FURY:
+        return "evade"  # ("braked like mad")
     if lem & _BRAKE or words[i] == "braking":
         if set(window) & _MILD or "behind" in words[i + 1 : i + 3]:
             return "yield"
@@ -933,7 +991,8 @@ def _ego_acts(words: list[str], i: int) -> str | None:
 class Cue:
     """One statement of the outcome found in a clause: what it says (``contact``, ``hedged``,
     ``denied``, ``required``: a contact denied as what the test requires, ``near``, ``close``,
-    ``safe``, ``lucky``: relief at luck, ``evade``, ``brake``, ``yield``) and the words it was
+    ``safe``, ``lucky``: relief at luck, ``late``: the other seen late, ``unforced``: an escape not
+    needed, ``evade``, ``brake``, ``yield``) and the words it was
     read from, so a reading can say why it chose its intent."""
 
     kind: str
@@ -1015,6 +1074,211 @@ def _relief(words: list[str], i: int) -> bool:
     return not nxt or nxt in ("i", "we", "that", "it", "he", "she", "they") or "NOUN" not in _pos(nxt)
 
 
+#: Words of nearness before "from"/"to" a contact ("inches from hitting", "so close to a crash", "a
+#: split second away from"): the units of a small margin, and of a short time.
+_NEARNESS = _SMALL_UNITS | frozenset(
+    ("close", "closer", "near", "nearer", "away", "short", "millimetres", "millimeters", "second", "seconds",
+     "moment", "moments", "metre", "metres", "meter", "meters", "yards")
+)  # fmt: skip
+
+
+def _near_to(words: list[str], i: int) -> bool:
+    """Whether the contact at ``i`` (a verb's gerund or a noun) is what someone came near to ("I was
+    millimetres from hitting him", "came so close to running him over", "seconds from a collision"):
+    a measure of nearness, then "from", "to" or "of", then the contact: it was not made."""
+    k = i - 1
+    while k >= 0 and words[k] in ("a", "an", "the"):
+        k -= 1
+    if k < 1 or words[k] not in ("from", "to", "of"):
+        return False
+    if words[k] == "to" and words[k - 1] not in ("close", "closer", "near", "nearer"):
+        return False  # ("I had to hit the brakes", "went to clip him": not a nearness)
+    if words[k] == "of" and words[k - 1] != "short":
+        return False  # ("just short of hitting him"; not "the moment of impact")
+    return bool(set(words[max(0, k - 4) : k]) & _NEARNESS)
+
+
+#: Verbs of a belief or an expectation held at the time ("I thought I'd hit him", "we braced for impact").
+_BELIEVING = frozenset(("thought", "expected", "feared", "braced", "reckoned", "assumed"))
+#: Adjectives of a belief, after a past copula ("I was sure I'd hit it", "was convinced he'd hit me").
+_SURE = frozenset(("sure", "certain", "convinced", "positive"))
+_PRONOUNS = frozenset(("i", "we", "he", "she", "they", "ego"))
+
+
+def _believed(words: list[str], i: int) -> bool:
+    """Whether the contact at ``i`` is what someone believed or expected would happen ("I thought I
+    was going to hit him", "I honestly thought I'd hit her", "I was sure I'd hit it", "we braced for
+    impact"): it did not happen as said (a contact that did is said again: "... and I did"). Only a
+    belief of a person said as such (a pronoun before it), not a spec's "Expected: collision"."""
+    for k in range(max(0, i - 7), i):
+        w = words[k]
+        if w in _BELIEVING or (w in _SURE and words[k - 1 : k] in (["was"], ["were"])):
+            j = k - 1 if w in _BELIEVING else k - 2
+            while j >= 0 and (words[j].endswith("ly") or words[j] in ("really", "fully", "half", "genuinely")):
+                j -= 1
+            if j >= 0 and words[j] in _PRONOUNS:
+                return True
+    return False
+
+
+#: Verbs (lemmas) of a fright someone was given ("scared the life out of me", "it terrified us").
+_FRIGHTENING = frozenset(("scare", "frighten", "terrify", "petrify", "startle", "spook"))
+
+
+def _fright(words: list[str], i: int) -> bool:
+    """An idiom of a fright at ``i``, which says how close it came: a verb of scaring with the narrator
+    as its object ("scared the life out of me", "frightened us half to death"), "heart in my mouth",
+    "(nearly) had a heart attack", "my life flashed before my eyes", "a brown-trouser moment"."""
+    w = words[i]
+    after = words[i + 1 : i + 7]
+    if _is_verb(w) and _lemmas(w) & _FRIGHTENING and not w.endswith("ing"):
+        out_of = any(after[k : k + 3] in (["out", "of", "me"], ["out", "of", "us"]) for k in range(len(after)))
+        return out_of or after[:1] in (["me"], ["us"]) or _names_ego(after[:2])  # (not "scared the cyclist")
+    if w == "heart" and (words[i + 1 : i + 3] == ["in", "my"] or words[i + 1 : i + 3] == ["in", "our"]):
+        return True
+    if (
+        w == "heart"
+        and words[i + 1 : i + 2] == ["attack"]
+        and bool(set(words[max(0, i - 4) : i]) & (_HEDGES | {"had"}))
+    ):
+        return True
+    if w == "life" and words[i + 1 : i + 2] == ["flashed"]:
+        return True
+    return (
+        w.startswith("brown")
+        and words[i + 1 : i + 2] in (["trouser"], ["trousers"])
+        or w
+        in (
+            "brown-trouser",
+            "brown-trousers",
+        )
+    )
+
+
+#: Words of how bad something would have been ("could have been nasty", "would have been a disaster").
+_BAD = frozenset(
+    ("bad", "worse", "nasty", "ugly", "serious", "fatal", "disaster", "disastrous", "tragic", "tragedy", "messy",
+     "horrible", "horrific", "terrible", "awful", "catastrophic", "catastrophe", "carnage", "deadly", "grim", "dire",
+     "curtains", "badly", "tears", "story", "game")
+)  # fmt: skip
+#: Nouns of a disaster, which a hedge makes one that nearly happened ("nearly a disaster").
+_DISASTERS = frozenset(("disaster", "tragedy", "catastrophe", "carnage"))
+#: Verbs of how something turns out, after a modal perfect ("could have ended badly", "might have gone").
+_TURNING_OUT = frozenset(("been", "ended", "gone", "turned", "finished", "got"))
+
+
+def _could_have_been_bad(words: list[str], i: int) -> bool:
+    """A word of badness at ``i`` under "would/could/might have been" (or "ended", "gone") in its
+    clause: what the event could have been ("could have been nasty", "it'd have been a different
+    story", "could have ended in tears", "would have been game over"); it was not, a near miss. Not
+    "should have" (what was due) nor "would have been better" (a judgement of another choice)."""
+    if words[i] == "story" and words[i - 1 : i] != ["different"]:
+        return False  # (only "a different story")
+    if words[i] == "game" and words[i + 1 : i + 2] != ["over"]:
+        return False  # (only "game over")
+    for k in range(max(0, i - 7), i):
+        if words[k] not in ("would", "could", "might"):
+            continue
+        if "have" in words[k + 1 : k + 4]:
+            h = words.index("have", k + 1)
+            return bool(set(words[h + 1 : i]) & _TURNING_OUT) or words[h + 1 : h + 2] == [words[i]]
+        if words[k + 1 : k + 2] and words[k + 1] in _TURNING_OUT - {"got"}:
+            return True  # ("could've been bad" with its "'ve" dropped: "could been bad")
+    return False
+
+
+def _within(words: list[str], i: int) -> bool:
+    """ "within" at ``i`` with a small margin "of" someone ("came within a foot of my door", "within
+    inches of her handlebars", "within a couple of feet of us", "within a hair's breadth of my
+    mirror"): the two came that near, a near miss; not "within 2 m of the kerb"."""
+    after = words[i + 1 : i + 9]
+    unit = next((k for k, x in enumerate(after[:6]) if x in _SMALL_UNITS | _LENGTH_UNITS), None)
+    if unit is None or after[unit + 1 : unit + 2] != ["of"]:
+        return False
+    said = after[: unit + 1]
+    if after[unit] in _LENGTH_UNITS - _SMALL_UNITS or after[unit] in ("foot", "feet"):
+        metres = _length_said([x for x in said if x not in ("couple", "of")])
+        if metres is None and "couple" in said:
+            metres = 2.0 * _UNIT_METRES.get(after[unit], 1.0)
+        if metres is None or metres > 3.0:
+            return False
+    obj = after[unit + 2 : unit + 6]
+    return bool(obj) and (
+        obj[0] in _PERSON_OBJECTS | _POSSESSIVES | _EGO_HEADS
+        or _names_road_user(obj)
+        or _vehicle_part(obj)
+        or obj[0].endswith("ing")
+    )
+
+
+def _close_idiom(words: list[str], i: int, whole: list[str], at: int) -> bool:
+    """An idiom of a close call at ``i``: "too close for comfort", "touch and go" (read in ``whole``,
+    its sentence, as "and" ends a clause; ``at`` where the clause starts in it), "closer than I'd
+    like"."""
+    w = words[i]
+    if w == "close" and words[i + 1 : i + 3] == ["for", "comfort"]:
+        return True
+    if w == "touch" and whole[at + i : at + i + 3] == ["touch", "and", "go"]:
+        return True
+    return (
+        w == "closer"
+        and words[i + 1 : i + 2] == ["than"]
+        and bool(set(words[i + 2 : i + 6]) & {"like", "liked", "comfortable", "wanted", "expected", "usual", "normal"})
+    )
+
+
+def _seen_late(words: list[str], i: int, whole: list[str], at: int) -> bool:
+    """A verb of seeing at ``i``, denied, "until" something late ("didn't see him until Dad shouted",
+    "never noticed the scooter till it was right there"; read in ``whole``, its sentence, as "until"
+    ends a clause; ``at`` where the clause starts in it): the other was seen too late to be far off."""
+    if not (_is_verb(words[i]) and _lemmas(words[i]) & {"see", "spot", "notice"} and _denied_before(words, i)):
+        return False
+    return bool({"until", "till", "til"} & set(whole[at + i + 1 : at + i + 6]))
+
+
+#: An escape said as a noun phrase ("took evasive action", "did an emergency stop", "had to emergency brake").
+_ESCAPE_HEADS = frozenset(("action", "stop", "stops", "brake", "braking", "manoeuvre", "maneuver", "swerve"))
+
+
+def _escape_noun(words: list[str], i: int) -> bool:
+    """ "evasive" or "avoiding" before "action", or "emergency" before a stop, a brake or a manoeuvre,
+    at ``i``: the one it is said of had to escape."""
+    nxt = words[i + 1 : i + 2]
+    if words[i] in ("evasive", "avoiding"):
+        return nxt == ["action"]
+    return words[i] == "emergency" and bool(nxt) and nxt[0] in _ESCAPE_HEADS
+
+
+#: Verbs (lemmas) of an escape whose need, denied, leaves nothing forced ("didn't need to brake").
+_ESCAPING = _EVADE | _BRAKE | frozenset(("slow", "react", "steer", "flinch", "avoid"))
+
+
+def _need_denied(words: list[str], i: int) -> bool:
+    """Whether the verb of escape at ``i`` is said as not needed ("didn't even have to brake", "I
+    didn't need to slow", "never had to swerve", "no need to brake or swerve", "without having to
+    brake", "nobody had to flinch"): a need before it, denied."""
+    before = words[max(0, i - 6) : i]
+    need = next(
+        (k for k, x in enumerate(before) if x in ("need", "needs", "needed", "have", "has", "had", "having")), None
+    )
+    if need is None or "to" not in before[need + 1 :]:
+        return False
+    k = need - 1
+    while k >= 0 and before[k] in ("even", "ever", "really", "actually", "once"):
+        k -= 1
+    return k >= 0 and before[k] in ("not", "never", "no", "without", "nobody", "no-one", "noone")
+
+
+def _only_just(words: list[str], i: int) -> bool:
+    """Whether "only" up to five words before the contact at ``i`` hedges it ("only just clipped him",
+    "only narrowly missed", "the van only didn't hit me because ..."), not a contact made light of
+    ("it was only a fender bender", "only a scratch on the bumper", "only a light tap")."""
+    for k in range(max(0, i - 5), i):
+        if words[k] == "only" and not (words[k + 1 : k + 2] and words[k + 1] in ("a", "an", "the", "some")):
+            return True
+    return False
+
+
 def _contact_kind(words: list[str], i: int, clause: _Clause, sentence: list[str]) -> str | None:
     """What the contact stated at ``words[i]`` (a word :func:`_is_contact` accepts) says happened:
     "contact", "hedged" ("nearly hit", "would have hit"), "denied" ("did not hit", "no contact") or
@@ -1025,7 +1289,9 @@ def _contact_kind(words: list[str], i: int, clause: _Clause, sentence: list[str]
         return None  # ("swerved to miss him and hit the kerb", "someone is going to get hit here")
     before = sentence[: len(sentence) - len(words) + i]
     passive = _denied_after(words, i)  # ("collision narrowly avoided", "a crash was averted")
-    hedged = _scoped(words, i, _HEDGES | {"only", "within"}, 5) or passive == "hedged"
+    hedged = _scoped(words, i, _HEDGES | {"within"}, 5) or passive == "hedged" or _near_to(words, i)
+    hedged = hedged or _only_just(words, i)
+    hedged = hedged or _believed(words, i)
     counterfactual = "have" in words[:i] and (
         _scoped(words, i, _HYPOTHETICAL, 3) or clause.after_if or _modal_perfect(words, i)
     )
@@ -1080,12 +1346,30 @@ def outcome_cues(said: str) -> list[Cue]:
         own = _subject(words)
         clause.inherited = None if clause.first_of_sentence else previous
         previous = own or clause.inherited or ("ego" if story and clause.first_of_sentence else None)
+        doer = previous  # (whose the clause's acts are: the ego's, someone else's, or not known)
         text = " ".join(words)
 
         def add(kind: str) -> None:
             cues.append(Cue(kind, text))  # noqa: B023 (the clause being read)
 
         for i, w in enumerate(words):
+            if _is_verb(w) and _lemmas(w) & _ESCAPING and _need_denied(words, i):
+                add("unforced")  # ("didn't even have to brake", "no need to swerve": nothing forced)
+                continue
+            if _seen_late(words, i, whole, at):
+                add("late")  # ("didn't see him until Dad shouted": a near miss unless a safe pass is said)
+                continue
+            if _close_idiom(words, i, whole, at) or _fright(words, i):
+                add("close")  # ("too close for comfort", "touch and go")
+                continue
+            if (
+                w.endswith("ing")
+                and words[i + 1 : i + 2] == ["into"]
+                and _near_to(words, i)
+                and _into_road_user(words, i + 1)
+            ):
+                add("hedged")  # ("a split second from ploughing into the back of her")
+                continue
             if _is_contact(words, i):
                 kind = _contact_kind(words, i, clause, sentence)
                 if kind is not None:
@@ -1100,6 +1384,17 @@ def outcome_cues(said: str) -> list[Cue]:
                 continue
             if _negated_by_prefix(w):
                 add("safe")  # ("a complete non-event", "a non-issue")
+                continue
+            if w == "within" and _within(words, i):
+                add("near")  # ("came within a foot of my door")
+                continue
+            if (w in _BAD or _lemmas(w) & _HARMED) and (
+                _could_have_been_bad(words, i) or (w in _DISASTERS and _scoped(words, i, _HEDGES, 3))
+            ):
+                add("hedged")  # ("could have been nasty", "she could have been killed": it was not)
+                continue
+            if _escape_noun(words, i) and (doer == "ego" or "had" in words[max(0, i - 5) : i]):
+                add("evade")  # ("had to take evasive action", "I did an emergency stop")
                 continue
             if _lemmas(w) & _HARMED and not w.endswith("ing") and _nobody_before(words, i):
                 add("denied")  # ("..., nobody hurt", "No one injured."): a report's verdict without its verb
@@ -1155,6 +1450,8 @@ def outcome_cues(said: str) -> list[Cue]:
                 add("hedged")
             if w in _TROUBLE and (_denied_before(words, i) or _scoped(words, i, ("without",), 3)):
                 add("safe")
+            elif w in _FUSS and words[i - 1 : i] in (["no"], ["any"], ["without"]) and _denied_before(words, i):
+                add("safe")  # ("no fuss", "without any bother", "no hassle"; not "didn't bother to look")
             went = w == "smoothly" and i > 0 and _lemmas(words[i - 1]) & {"go", "pass", "run"}  # ("it went smoothly")
             if (w in _SAFE_WORDS or went) and not _denied_before(words, i):
                 # ("fine rain", "on a fine, dry evening": a word of the weather before its noun)
@@ -1176,7 +1473,7 @@ def outcome_cues(said: str) -> list[Cue]:
             if w in _CLOSE and _predicate(words, i):
                 add("safe" if _denied_before(words, i) else "close")  # ("nobody close"; "it was close")
             before = whole[: at + i]  # (its sentence up to this word, with its conjunctions)
-            if w == "clear" and i > 0 and words[i - 1] in _COPULA and set(before[-8:]) & {"once", "until", "till"}:
+            if w == "clear" and i > 0 and words[i - 1] in _COPULA and set(before[-8:]) & _ONCE:
                 add("safe")  # ("pulled out once the road was clear", "held back until it was clear")
                 continue
             if w in ("close", "closely") and _passed_close(before, words[i + 1 : i + 3]):
@@ -1202,9 +1499,13 @@ def outcome_cues(said: str) -> list[Cue]:
             ):  # (and a purpose: "... to avoid it")
                 if not _denied_before(words, i):
                     add("evade")  # ("dived into the outside lane to avoid him")
+                elif not (_modal_perfect(words, i) or clause.after_if):
+                    add("contact")  # ("couldn't avoid him", "was unable to avoid her": two denials)
     return cues
 
 
+#: Conjunctions of a time reached ("went once it was clear", "passed when the road was clear").
+_ONCE = frozenset(("once", "until", "till", "when", "after"))
 #: The particles of squeezing by someone ("squeezed past", "squeezed through").
 _SQUEEZE_BY = frozenset(("past", "by", "through", "between", "round", "around"))
 
@@ -1241,10 +1542,10 @@ def decide(cues: list[Cue], sudden: bool = False) -> str | None:
         return COLLISION
     if kinds & {"hedged", "near", "close"}:
         return NEAR_MISS
-    if "safe" in kinds:
-        return SAFE
-    if "lucky" in kinds:
-        return NEAR_MISS  # (relief at luck, and no wide margin said: it was close)
+    if "safe" in kinds or ("unforced" in kinds and not kinds & {"evade", "brake", "lucky"}):
+        return SAFE  # (or no escape needed: "didn't even have to brake")
+    if kinds & {"lucky", "late"}:
+        return NEAR_MISS  # (relief at luck, or the other seen late, and no wide margin said: it was close)
     if "required" in kinds and not kinds & {"evade", "brake", "denied"}:
         return SAFE  # (no contact, as the test requires, and nothing forced)
     if "denied" in kinds or "required" in kinds:

@@ -206,6 +206,8 @@ def _names_ego(phrase: list[str]) -> bool:
     if phrase[-1] in ("i", "we"):
         return True
     if phrase[-1] in _EGO_HEADS:  # (after a report's label and number: "Disengagement #4471 - AV executing")
+        if len(phrase) > 2 and phrase[-2] == "the" and phrase[-3] in _PREPOSITIONS:
+            return False  # ("the van ahead of the ego": the ego inside another's noun phrase)
         return len(phrase) == 1 or phrase[-2] in ("the", "our", "my", "and") or phrase[-2].isdigit()
     if any(tuple(phrase[-len(p) :]) == p for p in _EGO_PHRASES):
         return True
@@ -243,6 +245,70 @@ def _own_subject(words: list[str]) -> str | None:
     return "ego" if _opens_with_ego(words) else None  # (a noun phrase alone: "Ego 30 mph, T-junction, ...")
 
 
+#: The words of a lane kept for a turn, after its side ("the right turn lane", "the left filter").
+_TURN_LANE_WORDS = frozenset(("turn", "turning", "filter", "turn-only", "turning-only"))
+#: Verbs (lemmas) of signalling a turn ("indicated left", "signalling right").
+_SIGNALLING = frozenset(("indicate", "signal", "blink"))
+#: A vehicle's signal, after a possessive and a side ("my left indicator", "our right blinker").
+_SIGNALS = frozenset(("indicator", "indicators", "blinker", "blinkers", "signal", "indicator-light"))
+#: What a signal is for when it is not a turn: a lane change, an overtake, pulling over or in.
+_NOT_A_TURN = frozenset(("overtake", "pass", "lane", "lanes", "merge", "undertake", "lay-by", "layby"))
+#: Verbs (lemmas) that with "in", "over" or "up" pull to the side ("pulled in", "pull over", "move over").
+_PULLING = frozenset(("pull", "move", "tuck", "draw"))
+
+
+def _turn_lane_at(words: list[str], i: int) -> str | None:
+    """The side of a lane kept for a turn that the preposition at ``i`` places someone in ("in the
+    right-turn lane", "on the left filter", "into the right turning lane", "in the left-turn-only
+    lane"), else None; "in the right lane" is a lane by its side, no turn."""
+    if words[i] not in ("in", "on", "into"):
+        return None
+    k = i + 1
+    while k < len(words) and words[k] in ("the", "a", "my", "our", "its"):
+        k += 1
+    head = words[k] if k < len(words) else ""
+    side = next((d for d in _DIRECTIONS if head.startswith(d + "-turn")), None)
+    if side is not None:
+        return side  # ("the right-turn lane", "the left-turn-only lane")
+    nxt = words[k + 1] if k + 1 < len(words) else ""
+    return head if head in _DIRECTIONS and nxt in _TURN_LANE_WORDS else None
+
+
+def _signal_at(words: list[str], i: int) -> str | None:
+    """The side the verb of signalling at ``i`` signals ("indicated left", "signalling to the right"),
+    or the side of the possessed signal at ``i`` ("my left indicator"), else None."""
+    if _lemma_in(words[i], _SIGNALLING):
+        k = i + 1
+        while k < len(words) and words[k] in ("to", "the"):
+            k += 1
+        return words[k] if k < len(words) and words[k] in _DIRECTIONS else None
+    if words[i] in _DIRECTIONS and words[i + 1 : i + 2] and words[i + 1] in _SIGNALS and i > 0:
+        return words[i] if words[i - 1] in ("my", "our") else None
+    return None
+
+
+def _signals_a_turn(rest: list[str]) -> bool:
+    """Whether a signal whose sentence goes on with ``rest`` is for a turn, not for a lane change, an
+    overtake or pulling over ("indicated right to overtake", "signalled left and pulled over")."""
+    if any(w in _NOT_A_TURN or _lemma_in(w, frozenset(("overtake", "pass", "merge"))) for w in rest):
+        return False
+    return not any(
+        _lemma_in(w, _PULLING) and rest[k + 1 : k + 2] in (["in"], ["over"], ["up"]) for k, w in enumerate(rest)
+    )
+
+
+def _held_at(words: list[str], i: int) -> tuple[str, int] | None:
+    """A route said by where the ego waits or what it signals, at ``i``: (the side, where the verb
+    whose subject is its owner stands), else None ("I was in the right-turn lane", "we sat in the
+    left filter lane", "I indicated left")."""
+    side = _turn_lane_at(words, i)
+    if side is not None:
+        verb = i - 1 if i > 0 and words[i - 1] not in _BETWEEN and "VERB" in lemmas(words[i - 1]) else i
+        return side, verb
+    side = _signal_at(words, i)
+    return (side, i) if side is not None else None
+
+
 def ego_route(tokens: list[str]) -> str | None:
     """``left`` or ``right`` when a clause whose subject is the ego turns, else None; from the reader's
     normalised, lowercased tokens."""
@@ -257,6 +323,12 @@ def ego_route(tokens: list[str]) -> str | None:
             if direction is None:
                 verb = _turn_noun_at(words, i)
                 direction = words[i] if verb is not None else None
+            if direction is None and (held := _held_at(words, i)) is not None:
+                direction, verb = held
+                if _signal_at(words, i) and not _signals_a_turn(_rest_of_sentence(clauses, n, words, i)):
+                    continue
+                if words[i - 1 : i] in (["my"], ["our"]):
+                    return direction  # ("with my right blinker on")
             if direction is None or verb is None:
                 continue
             who = _whose(_subject_before(words, verb))
@@ -281,3 +353,15 @@ def turn_taken_at(tokens: list[str], i: int) -> bool:
     if tokens[i] not in ("left", "right") or i < 2 or tokens[i - 1] not in ("a", "the"):
         return False
     return bool(set(lemmas(tokens[i - 2]).get("VERB", ())) & _TAKING)
+
+
+def _rest_of_sentence(clauses: list[tuple[list[str], bool]], n: int, words: list[str], i: int) -> list[str]:
+    """The words after ``words[i]`` (in clause ``n``) that go on with the same subject: the rest of
+    its clause and the clauses after it in its sentence up to one with a subject of its own ("I
+    indicated left and pulled over"; not "... and a van overtook me")."""
+    rest = list(words[i + 1 :])
+    for following, first in clauses[n + 1 :]:
+        if first or (_own_subject(following) not in (None, "ego") and not _is_verb(following[0])):
+            break  # (a clause opening on its verb goes on with the same subject)
+        rest += following
+    return rest
