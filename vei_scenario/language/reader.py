@@ -250,6 +250,8 @@ class _Actor:
     speed_to_mps: float | None = None  # the speed it changes to ("slows from 80 to 30 km/h": 30)
     accel_mps2: float | None = None  # how hard it changes speed ("brakes at 6 m/s²")
     toward: str | None = None  # the side it moves to ("merges right", "swerves left into our lane")
+    goes_to: str | None = None  # the side or kerb said as where it goes ("ran off to the left", "to the left kerb")
+    edge: str | None = None  # the side of the road's edge it is said at ("along the right-hand kerb"), no lane
     came_from: bool = False  # a kerb or side said as where it comes from ("walks from the far side")
     end_gap: str | None = None  # the behaviour its distance is the end gap of ("overtakes, 3 m to spare")
     word: str = ""  # the words it was first named by
@@ -1341,6 +1343,7 @@ def _resolve_relation(a: _Actor, map_kind: str | None, left_hand: bool = False) 
     if first == "cross_in_front" and junctions.rides_across_from_an_arm(junction, a.kind, a.from_arm, a.kerb, side):
         return f"junction_{side}"  # ("a cyclist from the side road on the right crosses": out of that arm)
     if first == "cross_in_front" and not vehicle:  # a crossing starts at a kerb (at a junction too)
+        side = sides.across_from(side, a.goes_to, a.kerb_side or a.lane_side)
         if side is None and a.relation and a.relation.startswith(("junction", "roadside")):
             side = a.relation.rsplit("_", 1)[1]
         return f"roadside_{side if side in ('left', 'right') else near}"
@@ -1390,8 +1393,12 @@ def _resolve_relation(a: _Actor, map_kind: str | None, left_hand: bool = False) 
     ):
         return f"junction_{side or 'left'}"
     lateral = first in ("cut_in", "overtake", "forced_turn", "follow_vehicle")
-    if a.kerb and not vehicle and (not (lateral and first != "forced_turn") or side is None):
-        # (a rider cutting in from the kerb or cycle lane of a side said: from that lane)
+    if (
+        a.kerb
+        and not vehicle
+        and (not (lateral and first != "forced_turn") or side is None or sides.at_the_edge(a.edge, a.lane_side, first))
+    ):
+        # (a rider cutting in from the cycle lane of a side said: from that lane; from a kerb: from its edge)
         return f"roadside_{side or near}"
     if side and (lateral or a.relation is None or a.lane_side):
         return side
@@ -3028,6 +3035,17 @@ def _global(r, m) -> None:
     # (an "intent" mention is read, so not an unused word, but the outcome reader decides the intent)
 
 
+#: Verbs (lemmas) of keeping to a place: "to" after them says where one stays, not where one goes.
+_KEEP_TO = frozenset(("keep", "stick", "hold", "stay", "cling", "hug"))
+
+
+def _verb_with_to(a: _Actor) -> bool:
+    """Whether the last verb read of ``a`` is one of keeping to a place ("keeping to", "sticking
+    to"): the side or kerb after it is where it keeps, not where it goes."""
+    words = str(a.behaviours[-1][1].get("_words") or "").split() if a.behaviours else []
+    return bool(words) and bool(set(_lemmas(words[0]).get("VERB", ())) & _KEEP_TO)
+
+
 def _apply(m, who, r, link, added) -> None:
     """Put mention ``m`` on ``who`` (the ego, or an actor and the actors named with it)."""
     targets = who.group if isinstance(who, _Actor) and who.group else [who]
@@ -3113,6 +3131,9 @@ def _apply(m, who, r, link, added) -> None:
         elif m.slot == "returns":
             a.returns = True
         elif m.slot == "side":
+            a.goes_to = a.goes_to or (
+                None if _verb_with_to(a) else sides.where_it_goes(m.value, m.words, m.prev, m.next_)
+            )
             a.side = a.side or sides.crossing_from(m.value, m.words, m.prev, m.next_, a.behaviours)
             a.came_from = a.came_from or _from(m)
             a.beside = a.beside or sides.on_the_ego_side(m.words)
@@ -3134,8 +3155,11 @@ def _apply(m, who, r, link, added) -> None:
             a.out_of_place = True
         elif m.slot == "far_side":
             a.far_side = True
+        elif m.slot == "kerb_side" and sides.where_it_goes(m.value, m.words, m.prev, m.next_) and not _verb_with_to(a):
+            a.goes_to = a.goes_to or m.value  # ("ran across towards the left kerb": where it ends, not starts)
         elif m.slot == "kerb_side":
             a.kerb, a.kerb_side = True, m.value
+            a.edge = a.edge or (None if "lane" in m.words.split() else m.value)  # (a cycle lane is a lane)
             a.came_from = a.came_from or _from(m)
         elif (
             m.slot == "arm"

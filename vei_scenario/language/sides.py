@@ -810,6 +810,14 @@ def on_the_ego_side(words: str) -> bool:
     return said[:1] == ["on"] and said[1:2] in (["my"], ["our"])
 
 
+def at_the_edge(edge: str | None, lane_side: str | None, first: str | None) -> bool:
+    """Whether a rider said at the edge of a side of the road (``edge``: "riding along the
+    right-hand kerb", "hugging the left edge"; not a cycle lane) and in no lane of its own, whose
+    first act is a move across ("pulls out", "swerves into my lane"), starts at that edge, beside
+    the ego's lane: not in a lane beside it, which a kerb is not."""
+    return edge in ("left", "right") and lane_side is None and first == "cut_in"
+
+
 def kerb_overtaker(relation: str | None, behaviours: list, side_said: bool, passes_another: bool) -> str | None:
     """Where a road user read at the kerb with no side said starts when its first act is overtaking the
     ego ("a kid in the bike lane overtook me", "came along the kerb and overtook me"): behind the ego,
@@ -899,6 +907,28 @@ def crossing_from(side: object, words: str, prev: str, after: str, behaviours: l
     towards = (prev in _TOWARDS or words.split()[0] in _TOWARDS) and after != "of"
     if towards and side in ("left", "right") and behaviours and behaviours[-1][0] == "cross_in_front":
         return "right" if side == "left" else "left"
+    return side
+
+
+def where_it_goes(side: object, words: str, prev: str, after: str) -> str | None:
+    """The side a road user is said to go to ("ran off to the left", "dashed across towards the right
+    kerb", "over to the left-hand pavement"), or None: a side after "to" or "towards" is a
+    destination, save a place beside another ("to the left of the bus") or the ego ("a kid to my
+    left": where it is)."""
+    towards = (prev in _TOWARDS or words.split()[0] in _TOWARDS) and after != "of"
+    owned = bool(_OWNERS & set(words.split()))
+    return side if towards and not owned and side in ("left", "right") else None
+
+
+def across_from(side: str | None, goes_to: str | None, kerb_side: str | None) -> str | None:
+    """The side a crossing starts from: the kerb or lane said as where it is, else the side opposite
+    the one it is said to go to ("the dog ran off to the left, across in front of me": from the
+    right), read once all is said, as the verb of crossing may come after the side ("ran off to the
+    left straight across")."""
+    if kerb_side in ("left", "right") or goes_to not in ("left", "right"):
+        return side
+    if side in (None, goes_to):
+        return "right" if goes_to == "left" else "left"
     return side
 
 
