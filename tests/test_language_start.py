@@ -102,3 +102,30 @@ def test_a_rider_at_a_kerb_moving_out_starts_at_that_edge(text, expected):
 
 def test_a_rider_in_a_cycle_lane_moving_out_starts_in_that_lane():
     assert relation("A cyclist in the cycle lane on the right pulled out into my lane. I was at 40 km/h.") == "right"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was at 40 km/h. A biker came from wrong side, straight towards my car.",
+        "Driving at 40 kmph, one auto rickshaw coming from wrong side nearly hit me.",
+        "I was at 40 km/h. A biker was coming wrong side straight at me.",
+        "I was doing 30 km/h and a scooty fellow came from the wrong side and brushed my mirror.",
+        "Ego 40 km/h; motorcyclist riding wrong side towards ego.",
+    ],
+)
+def test_a_rider_or_driver_from_the_wrong_side_comes_head_on(text):
+    a = read(text).actors[0]
+    assert a.relation in ("ahead", "oncoming")
+    assert [b[0] for b in a.behaviours] == ["wrong_way"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was at 40 km/h. A pedestrian stepped out from the wrong side of the bus.",
+        "I was at 40 km/h. A pedestrian walked out from the wrong side into my path.",
+    ],
+)
+def test_a_walker_from_the_wrong_side_crosses(text):
+    assert [b[0] for b in read(text).actors[0].behaviours] == ["cross_in_front"]

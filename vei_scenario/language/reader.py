@@ -3155,6 +3155,8 @@ def _apply(m, who, r, link, added) -> None:
             a.out_of_place = True
         elif m.slot == "far_side":
             a.far_side = True
+        elif m.slot == "kerb_side" and sides.travels_on_the_wrong_side(a.kind, m.words, m.next_):
+            a.wrong_way = True  # ("a biker came from wrong side, straight towards my car")
         elif m.slot == "kerb_side" and sides.where_it_goes(m.value, m.words, m.prev, m.next_) and not _verb_with_to(a):
             a.goes_to = a.goes_to or m.value  # ("ran across towards the left kerb": where it ends, not starts)
         elif m.slot == "kerb_side":

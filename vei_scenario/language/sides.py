@@ -910,6 +910,14 @@ def crossing_from(side: object, words: str, prev: str, after: str, behaviours: l
     return side
 
 
+def travels_on_the_wrong_side(kind: str, words: str, after: str) -> bool:
+    """Whether a road user that rides or drives (``kind``, not on foot) is said to come on or from "the
+    wrong side" (``words``) with no place after it ("came from wrong side", "coming wrong side at
+    me"): against the traffic, as Indian and other Englishes say the wrong way. A walker "from the
+    wrong side", or the wrong side of a place ("the wrong side of the bus"), is the far side."""
+    return kind != "pedestrian" and words.split()[-2:] == ["wrong", "side"] and after != "of"
+
+
 def where_it_goes(side: object, words: str, prev: str, after: str) -> str | None:
     """The side a road user is said to go to ("ran off to the left", "dashed across towards the right
     kerb", "over to the left-hand pavement"), or None: a side after "to" or "towards" is a
