@@ -129,3 +129,30 @@ def test_a_rider_or_driver_from_the_wrong_side_comes_head_on(text):
 )
 def test_a_walker_from_the_wrong_side_crosses(text):
     assert [b[0] for b in read(text).actors[0].behaviours] == ["cross_in_front"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Going round the roundabout at 20 mph behind a bus, the bus braked hard.",
+        "Crawling behind a tractor at 15 mph, it suddenly stopped.",
+        "Stuck behind a lorry at 30 mph on the A road; it braked hard.",
+        "Driving behind a van at 40 km/h when the van braked.",
+        "Approaching the lights behind a cyclist at 20 mph, the cyclist wobbled and fell.",
+        "Sat behind a bus doing 20, it pulled in sharply and stopped.",
+    ],
+)
+def test_a_road_user_the_narrators_opening_phrase_is_behind_is_ahead(text):
+    assert relation(text) == "ahead"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # the phrase is the walker's (crossing), or the road user named first is the one behind
+        "Crossing behind a bus, a kid ran out in front of me. I was at 30 km/h.",
+        "Heading home at 50 km/h. A van behind me flashed and overtook.",
+    ],
+)
+def test_behind_said_of_someone_else_keeps_its_place(text):
+    assert relation(text) == "behind"

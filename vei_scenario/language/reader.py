@@ -1913,7 +1913,7 @@ def _read(text: str) -> Reading:
             if m.slot in _POSITIONAL and before_actor and not (nxt.slot == "actor" and nxt.value == "ego"):
                 pending.append(m)  # an adjective before its actor ("an oncoming car")
             elif (
-                (clause_subject == "ego" or _asked_how_far(scanned, m))
+                (clause_subject == "ego" or _asked_how_far(scanned, m) or _narrators_opening(scanned, mentions, k))
                 and m.value in _SEEN_FROM_OBJECT
                 and _object_follows(mentions, k)
             ):
@@ -2892,6 +2892,16 @@ def _overtaken_coming(who, subject: _Actor, m) -> bool:
 
 #: Words asking how near: "how far", "how close".
 _HOW_NEAR = frozenset({"far", "close", "near", "long"})
+
+
+def _narrators_opening(tokens: list[str], mentions, k: int) -> bool:
+    """Whether relation ``mentions[k]`` is said in a sentence that opens with the narrator's
+    participle and names no one before it ("Crawling behind a tractor ...", "Stuck behind a bus"):
+    said of the ego, so the road user named after it is the other way round ("behind a tractor":
+    the tractor is ahead)."""
+    if mentions[k].slot != "relation" or any(x.slot in ("actor", "member", "count") for x in mentions[:k]):
+        return False
+    return ego_speed.narrators_opening(tokens, mentions[k].start)
 
 
 def _asked_how_far(tokens: list[str], m) -> bool:
