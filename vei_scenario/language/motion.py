@@ -1453,8 +1453,9 @@ def round_the_ego(clauses: list, tokens: list[str]) -> list:
     out = []
     for link, mentions in clauses:
         kept = list(mentions)
+        behind = False  # (the road user named last is said behind the ego: "came up behind me")
         for k, m in enumerate(kept):
-            behind = _said_behind_the_ego(kept, k)
+            behind = _behind_after_the_last_named(kept, k, behind)
             swerve = bool(set(lemmas(m.words.split()[0]).get("VERB", ())) & _SWERVES)
             if m.slot != "behaviour" or not (swerve or (behind and m.words.split()[-1] in _OUT_ROUND)):
                 continue
@@ -1468,13 +1469,21 @@ def round_the_ego(clauses: list, tokens: list[str]) -> list:
     return out
 
 
-def _said_behind_the_ego(mentions: list, k: int) -> bool:
-    """Whether the road user that does ``mentions[k]`` is said behind the ego before it: "behind"
-    after the last road user named before ``k`` (not the ego's own "I was behind a van")."""
-    start = max((i for i in range(k) if mentions[i].slot == "actor" and mentions[i].value != "ego"), default=None)
-    if start is None:
+def _behind_after_the_last_named(mentions: list, k: int, so_far: bool) -> bool:
+    """Whether the road user that does ``mentions[k]`` is said behind the ego before it, given
+    ``so_far`` for ``mentions[:k - 1]``: "behind" said after the last road user named (not the ego's
+    own "I was behind a van"), looking at one mention more each call."""
+    if k == 0:
         return False
-    return any(_from_behind_the_ego(mentions[i], mentions[i + 1]) for i in range(start + 1, k))
+    m = mentions[k - 1]
+    if m.slot == "actor" and m.value != "ego":
+        return False  # (a road user named anew: what was said before is another's)
+    return so_far or (_from_behind_the_ego(m, mentions[k]) and _named_before(mentions, k - 1))
+
+
+def _named_before(mentions: list, k: int) -> bool:
+    """Whether a road user other than the ego is named before ``mentions[k]``."""
+    return any(x.slot == "actor" and x.value != "ego" for x in mentions[:k])
 
 
 #: The last word of a move out of a lane or round something ("swung out", "pulled round").
