@@ -156,3 +156,33 @@ def test_a_road_user_the_narrators_opening_phrase_is_behind_is_ahead(text):
 )
 def test_behind_said_of_someone_else_keeps_its_place(text):
     assert relation(text) == "behind"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was doing 50 mph when a van came over the crest in the middle of the road.",
+        "A tractor came round the corner. I was at 40 mph.",
+        "A lorry had just come round the blind bend on my side. Ego 50 km/h.",
+        "a car coming around the sharp bend hit me, i was doin 40",
+        "Ego 70 km/h on a rural road; a motorcyclist comes over the brow of the hill.",
+    ],
+)
+def test_one_coming_over_a_crest_or_round_a_bend_comes_towards_the_ego(text):
+    a = read(text).actors[0]
+    assert a.relation == "oncoming" or (a.relation == "ahead" and a.facing == "against")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # the narrator comes round the bend: the road user found there does not come towards it
+        "As I came over the crest, a tractor was stopped in the road. I was at 50 mph.",
+        "Doing 60 km/h, came round the bend and a deer was standing there.",
+        # from a side road, or behind the ego
+        "A cyclist came round the corner from the side road. I was at 30 km/h.",
+        "A motorbike came round the bend behind me and overtook. I was at 50 km/h.",
+    ],
+)
+def test_coming_round_a_bend_said_otherwise_is_not_oncoming(text):
+    assert relation(text) != "oncoming"

@@ -702,6 +702,11 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             clauses[-1][1].append(_Mention("relation", "oncoming", words, i, prev, end=at_ego, det=det))
             i = at_ego
             continue
+        blind = sides.over_a_blind_place(tokens, i)
+        if blind is not None:  # "came over the crest": into sight towards the ego (the place is read on)
+            clauses[-1][1].append(_Mention("relation", "oncoming", tok, i, prev, end=blind, det=det))
+            i = blind
+            continue
         against = sides.the_other_direction(tokens, i)
         if against is not None:  # "in the contrary direction": it comes towards the ego
             words = " ".join(tokens[i:against])
@@ -1405,6 +1410,11 @@ def _resolve_relation(a: _Actor, map_kind: str | None, left_hand: bool = False) 
     return a.relation or side or ("ahead" if a.followed else None)  # (the lead car: ahead in the ego's lane)
 
 
+#: The words of coming into sight over or round a place ("came over the crest"): oncoming, the place
+#: after it the road's shape (:func:`sides.over_a_blind_place`).
+_INTO_SIGHT = frozenset(("round", "around", "over"))
+
+
 #: At most this many nouns the reader lacks are tried as the road user of a text that names none.
 _UNNAMED_TRIES = 3
 
@@ -1549,7 +1559,13 @@ def _read(text: str) -> Reading:
                     r.ego_speed_mps = m.value
                 prev = m
                 continue
-            if m.slot == "relation" and m.value == "oncoming" and nxt is not None and nxt.slot == "map":
+            if (
+                m.slot == "relation"
+                and m.value == "oncoming"
+                and nxt is not None
+                and nxt.slot == "map"
+                and m.words not in _INTO_SIGHT
+            ):
                 prev = m  # "approaching the traffic lights": the ego's approach to a place, no one oncoming
                 continue
             if m.slot == "count":

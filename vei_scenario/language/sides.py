@@ -736,6 +736,57 @@ def coming_at_the_ego(tokens: list[str], i: int) -> int | None:
     return None
 
 
+#: Places on the road that hide what comes the other way: coming round or over one, a road user
+#: comes into sight towards the ego.
+_BLIND_PLACES = frozenset(
+    {"bend", "corner", "crest", "brow", "hill", "rise", "summit", "hump", "hillcrest", "blind", "curve", "kink"}
+)
+#: Words between "round"/"over" and such a place ("over the blind crest", "round a sharp bend").
+_BEFORE_A_PLACE = frozenset({"the", "a", "that", "this", "blind", "sharp", "tight", "left-hand", "right-hand", "next"})
+#: Words after the place that say where it comes from or is, not towards the ego.
+_NOT_TOWARDS = frozenset({"from", "behind", "after", "out", "into", "onto", "ahead", "in front"})
+
+
+#: Words between a subject and its verb ("a van had just come", "the lorry then came").
+_BETWEEN_SUBJECT_AND_VERB = frozenset({"just", "then", "suddenly", "had", "has", "have", "was", "were", "is", "'d"})
+#: Words before a verb that leave its subject out or make it the narrator's.
+_NO_NAMED_SUBJECT = _FIRST_PERSON | {"and", "but", "as", "when", "while", "so", "then", "just", "the", "a", "an"}
+
+
+def _named_subject_before(tokens: list[str], k: int) -> bool:
+    """Whether the verb at token ``k`` has a subject named right before it that is not the narrator
+    ("a van came", "the lorry had just come"): not "I came", "we came", nor a verb with no subject
+    ("Doing 60, came round the bend and ...": the narrator's)."""
+    j = k - 1
+    while j >= 0 and tokens[j] in _BETWEEN_SUBJECT_AND_VERB:
+        j -= 1
+    return j >= 0 and tokens[j].isalpha() and tokens[j] not in _NO_NAMED_SUBJECT
+
+
+def over_a_blind_place(tokens: list[str], i: int) -> int | None:
+    """The end of "round" or "over" at token ``i`` when a verb of coming stands right before it (or
+    before a participle of manner: "came flying over") and a place that hides the road beyond
+    follows ("came over the crest", "comes round the bend", "coming around a blind corner"): one
+    that comes into sight there comes towards the ego, oncoming. None otherwise, and where the words
+    after the place say it comes from elsewhere or is behind ("came round the corner from the side
+    road", "... behind me"). Only "round"/"over" is read: the place is read on as the road's shape."""
+    if tokens[i] not in ("round", "around", "over") or i < 1:
+        return None
+    k = i - 1
+    if tokens[k].endswith("ing") and k > 0 and "come" not in lemmas(tokens[k]).get("VERB", ()):
+        k -= 1  # ("came flying over the crest")
+    if "come" not in lemmas(tokens[k]).get("VERB", ()) or not _named_subject_before(tokens, k):
+        return None
+    j = i + 1
+    while j < len(tokens) and j < i + 4 and tokens[j] in _BEFORE_A_PLACE:
+        j += 1
+    if j >= len(tokens) or tokens[j] not in _BLIND_PLACES or j == i + 1 and tokens[j] == "blind":
+        return None
+    if tokens[j + 1 : j + 2] and tokens[j + 1] in _NOT_TOWARDS:
+        return None
+    return i + 1
+
+
 #: Adjectives that say a direction is against the ego's, and the nouns of a direction.
 _AGAINST = frozenset({"opposite", "contrary", "other", "reverse", "opposing"})
 _DIRECTIONS = frozenset({"direction", "way"})
