@@ -109,6 +109,29 @@ def opening_participles(tokens: list[str]) -> dict[int, bool]:
     return out
 
 
+#: Past participles of being held in traffic that open a narrator's sentence ("Stuck behind a bus").
+_HELD = frozenset({"stuck", "sat", "sitting", "queued", "queueing", "queuing", "caught", "trapped", "boxed"})
+
+
+def narrators_opening(tokens: list[str], i: int) -> bool:
+    """Whether token ``i`` stands in a sentence that opens with a participle of driving or of being
+    held in traffic and no subject ("Crawling behind a tractor at 15 mph, ...", "Stuck behind a lorry
+    on the A30; ...", "Going round the roundabout behind a bus, ..."): the left-out subject is the
+    narrator, the ego, as in :func:`opening_participles`. Not one of walking, riding or crossing
+    ("Crossing behind a bus, a kid ...": the one named next)."""
+    k = i
+    while k > 0 and tokens[k - 1] not in _OPENERS:
+        k -= 1
+    if k >= i:
+        return False
+    w = tokens[k]
+    if w in _HELD:
+        return True
+    verbs = set(lemmas(w).get("VERB", ()))
+    participle = w.endswith("ing") and len(w) >= 5 and bool(verbs)
+    return (participle or _past_verb(w)) and not (NOT_DRIVING | _FOLLOWING_VERBS) & verbs
+
+
 #: Words that open a clause of its own inside a sentence ("Waited till a bus had gone", "... when a van
 #: pulled out"): its speeds are its subject's, not those of the sentence's left-out subject.
 _SUBORDINATORS = frozenset({"till", "until", "when", "while", "whilst", "as", "before", "after", "because", "since"})

@@ -1492,17 +1492,61 @@ def round_the_ego(clauses: list, tokens: list[str]) -> list:
     out = []
     for link, mentions in clauses:
         kept = list(mentions)
+        behind = False  # (the road user named last is said behind the ego: "came up behind me")
         for k, m in enumerate(kept):
-            if m.slot != "behaviour" or not set(lemmas(m.words.split()[0]).get("VERB", ())) & _SWERVES:
+            behind = _behind_after_the_last_named(kept, k, behind)
+            swerve = bool(set(lemmas(m.words.split()[0]).get("VERB", ())) & _SWERVES)
+            if m.slot != "behaviour" or not (swerve or (behind and m.words.split()[-1] in _OUT_ROUND)):
                 continue
             j = m.end if m.words.split()[-1] in ("round", "around", "past") else m.end + 1
             if tokens[j - 1 : j] not in (["round"], ["around"], ["past"]):
                 continue
             later = [x for x in kept[k + 1 :] if x.slot == "actor" and x.start < j + 6]
             if _names_the_ego(tokens[j : j + 6], later):
-                kept[k] = replace(m, value=("keep_going", {}))
+                kept[k] = replace(m, value=("overtake", {}) if behind else ("keep_going", {}))
         out.append((link, kept))
     return out
+
+
+def _behind_after_the_last_named(mentions: list, k: int, so_far: bool) -> bool:
+    """Whether the road user that does ``mentions[k]`` is said behind the ego before it, given
+    ``so_far`` for ``mentions[:k - 1]``: "behind" said after the last road user named (not the ego's
+    own "I was behind a van"), looking at one mention more each call."""
+    if k == 0:
+        return False
+    m = mentions[k - 1]
+    if m.slot == "actor" and m.value != "ego":
+        return False  # (a road user named anew: what was said before is another's)
+    return so_far or (_from_behind_the_ego(m, mentions[k]) and _named_before(mentions, k - 1))
+
+
+def _named_before(mentions: list, k: int) -> bool:
+    """Whether a road user other than the ego is named before ``mentions[k]``."""
+    return any(x.slot == "actor" and x.value != "ego" for x in mentions[:k])
+
+
+#: The last word of a move out of a lane or round something ("swung out", "pulled round").
+_OUT_ROUND = frozenset(("out", "round", "around", "past", "wide"))
+
+
+def _from_behind_the_ego(m, after) -> bool:
+    """Whether ``m`` (``after``: the mention after it) says its road user is behind the ego before it
+    moves ("came up behind me", "from behind", "a cyclist behind us", "tailing me"): not behind
+    another road user ("behind the van", "behind it"). A move out and round the ego after it is an overtake of the ego,
+    not a swerve of one coming at it."""
+    words = m.words.split()
+    if m.slot == "behaviour" and m.value[0] == "follow_vehicle":  # ("a cyclist following me")
+        return after is not None and _the_ego(after) and after.start <= m.end + 1
+    if not (m.slot == "relation" and m.value == "behind"):
+        return False
+    if words[-1] in _EGO_WORDS or (after is not None and _the_ego(after) and after.start == m.end):
+        return True  # ("behind me", "following us", "tailing the ego")
+    other = after is not None and after.start == m.end and after.slot == "actor"
+    return words[-1] == "behind" and not other and m.next_ not in _BEHIND_WHAT
+
+
+#: Words after "behind" that name what else it is behind ("behind the bus", "behind it").
+_BEHIND_WHAT = frozenset(("the", "a", "an", "that", "this", "his", "her", "their", "its", "it", "him", "them"))
 
 
 def _names_the_ego(obj: list[str], named: list) -> bool:

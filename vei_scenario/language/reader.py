@@ -251,6 +251,8 @@ class _Actor:
     speed_to_mps: float | None = None  # the speed it changes to ("slows from 80 to 30 km/h": 30)
     accel_mps2: float | None = None  # how hard it changes speed ("brakes at 6 m/s²")
     toward: str | None = None  # the side it moves to ("merges right", "swerves left into our lane")
+    goes_to: str | None = None  # the side or kerb said as where it goes ("ran off to the left", "to the left kerb")
+    edge: str | None = None  # the side of the road's edge it is said at ("along the right-hand kerb"), no lane
     came_from: bool = False  # a kerb or side said as where it comes from ("walks from the far side")
     end_gap: str | None = None  # the behaviour its distance is the end gap of ("overtakes, 3 m to spare")
     word: str = ""  # the words it was first named by
@@ -701,6 +703,11 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             words = " ".join(tokens[i:at_ego])
             clauses[-1][1].append(_Mention("relation", "oncoming", words, i, prev, end=at_ego, det=det))
             i = at_ego
+            continue
+        blind = sides.over_a_blind_place(tokens, i)
+        if blind is not None:  # "came over the crest": into sight towards the ego (the place is read on)
+            clauses[-1][1].append(_Mention("relation", "oncoming", tok, i, prev, end=blind, det=det))
+            i = blind
             continue
         against = sides.the_other_direction(tokens, i)
         if against is not None:  # "in the contrary direction": it comes towards the ego
@@ -1389,6 +1396,7 @@ def _resolve_relation(a: _Actor, map_kind: str | None, left_hand: bool = False) 
     if first == "cross_in_front" and junctions.rides_across_from_an_arm(junction, a.kind, a.from_arm, a.kerb, side):
         return f"junction_{side}"  # ("a cyclist from the side road on the right crosses": out of that arm)
     if first == "cross_in_front" and not vehicle:  # a crossing starts at a kerb (at a junction too)
+        side = sides.across_from(side, a.goes_to, a.kerb_side or a.lane_side)
         if side is None and a.relation and a.relation.startswith(("junction", "roadside")):
             side = a.relation.rsplit("_", 1)[1]
         return f"roadside_{side if side in ('left', 'right') else near}"
@@ -1440,12 +1448,21 @@ def _resolve_relation(a: _Actor, map_kind: str | None, left_hand: bool = False) 
     ):
         return f"junction_{side or 'left'}"
     lateral = first in ("cut_in", "overtake", "forced_turn", "follow_vehicle")
-    if a.kerb and not vehicle and (not (lateral and first != "forced_turn") or side is None):
-        # (a rider cutting in from the kerb or cycle lane of a side said: from that lane)
+    if (
+        a.kerb
+        and not vehicle
+        and (not (lateral and first != "forced_turn") or side is None or sides.at_the_edge(a.edge, a.lane_side, first))
+    ):
+        # (a rider cutting in from the cycle lane of a side said: from that lane; from a kerb: from its edge)
         return f"roadside_{side or near}"
     if side and (lateral or a.relation is None or a.lane_side):
         return side
     return a.relation or side or ("ahead" if a.followed else None)  # (the lead car: ahead in the ego's lane)
+
+
+#: The words of coming into sight over or round a place ("came over the crest"): oncoming, the place
+#: after it the road's shape (:func:`sides.over_a_blind_place`).
+_INTO_SIGHT = frozenset(("round", "around", "over"))
 
 
 #: At most this many nouns the reader lacks are tried as the road user of a text that names none.
@@ -1592,7 +1609,13 @@ def _read(text: str) -> Reading:
                     r.ego_speed_mps = m.value
                 prev = m
                 continue
-            if m.slot == "relation" and m.value == "oncoming" and nxt is not None and nxt.slot == "map":
+            if (
+                m.slot == "relation"
+                and m.value == "oncoming"
+                and nxt is not None
+                and nxt.slot == "map"
+                and m.words not in _INTO_SIGHT
+            ):
                 prev = m  # "approaching the traffic lights": the ego's approach to a place, no one oncoming
                 continue
             if m.slot == "count":
@@ -1956,7 +1979,7 @@ def _read(text: str) -> Reading:
             if m.slot in _POSITIONAL and before_actor and not (nxt.slot == "actor" and nxt.value == "ego"):
                 pending.append(m)  # an adjective before its actor ("an oncoming car")
             elif (
-                (clause_subject == "ego" or _asked_how_far(scanned, m))
+                (clause_subject == "ego" or _asked_how_far(scanned, m) or _narrators_opening(scanned, mentions, k))
                 and m.value in _SEEN_FROM_OBJECT
                 and _object_follows(mentions, k)
             ):
@@ -2966,6 +2989,16 @@ def _overtaken_coming(who, subject: _Actor, m) -> bool:
 _HOW_NEAR = frozenset({"far", "close", "near", "long"})
 
 
+def _narrators_opening(tokens: list[str], mentions, k: int) -> bool:
+    """Whether relation ``mentions[k]`` is said in a sentence that opens with the narrator's
+    participle and names no one before it ("Crawling behind a tractor ...", "Stuck behind a bus"):
+    said of the ego, so the road user named after it is the other way round ("behind a tractor":
+    the tractor is ahead)."""
+    if mentions[k].slot != "relation" or any(x.slot in ("actor", "member", "count") for x in mentions[:k]):
+        return False
+    return ego_speed.narrators_opening(tokens, mentions[k].start)
+
+
 def _asked_how_far(tokens: list[str], m) -> bool:
     """Whether relation ``m`` is asked of someone named after it ("How far behind the bus were you?"):
     "how far" or "how close" right before it. The one asked, after the verb, is where the relation
@@ -3107,6 +3140,17 @@ def _global(r, m) -> None:
     # (an "intent" mention is read, so not an unused word, but the outcome reader decides the intent)
 
 
+#: Verbs (lemmas) of keeping to a place: "to" after them says where one stays, not where one goes.
+_KEEP_TO = frozenset(("keep", "stick", "hold", "stay", "cling", "hug"))
+
+
+def _verb_with_to(a: _Actor) -> bool:
+    """Whether the last verb read of ``a`` is one of keeping to a place ("keeping to", "sticking
+    to"): the side or kerb after it is where it keeps, not where it goes."""
+    words = str(a.behaviours[-1][1].get("_words") or "").split() if a.behaviours else []
+    return bool(words) and bool(set(_lemmas(words[0]).get("VERB", ())) & _KEEP_TO)
+
+
 def _apply(m, who, r, link, added) -> None:
     """Put mention ``m`` on ``who`` (the ego, or an actor and the actors named with it)."""
     targets = who.group if isinstance(who, _Actor) and who.group else [who]
@@ -3192,6 +3236,9 @@ def _apply(m, who, r, link, added) -> None:
         elif m.slot == "returns":
             a.returns = True
         elif m.slot == "side":
+            a.goes_to = a.goes_to or (
+                None if _verb_with_to(a) else sides.where_it_goes(m.value, m.words, m.prev, m.next_)
+            )
             a.side = a.side or sides.crossing_from(m.value, m.words, m.prev, m.next_, a.behaviours)
             a.came_from = a.came_from or _from(m)
             a.beside = a.beside or sides.on_the_ego_side(m.words)
@@ -3213,8 +3260,13 @@ def _apply(m, who, r, link, added) -> None:
             a.out_of_place = True
         elif m.slot == "far_side":
             a.far_side = True
+        elif m.slot == "kerb_side" and sides.travels_on_the_wrong_side(a.kind, m.words, m.next_):
+            a.wrong_way = True  # ("a biker came from wrong side, straight towards my car")
+        elif m.slot == "kerb_side" and sides.where_it_goes(m.value, m.words, m.prev, m.next_) and not _verb_with_to(a):
+            a.goes_to = a.goes_to or m.value  # ("ran across towards the left kerb": where it ends, not starts)
         elif m.slot == "kerb_side":
             a.kerb, a.kerb_side = True, m.value
+            a.edge = a.edge or (None if "lane" in m.words.split() else m.value)  # (a cycle lane is a lane)
             a.came_from = a.came_from or _from(m)
         elif (
             m.slot == "arm"

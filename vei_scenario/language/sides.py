@@ -736,6 +736,57 @@ def coming_at_the_ego(tokens: list[str], i: int) -> int | None:
     return None
 
 
+#: Places on the road that hide what comes the other way: coming round or over one, a road user
+#: comes into sight towards the ego.
+_BLIND_PLACES = frozenset(
+    {"bend", "corner", "crest", "brow", "hill", "rise", "summit", "hump", "hillcrest", "blind", "curve", "kink"}
+)
+#: Words between "round"/"over" and such a place ("over the blind crest", "round a sharp bend").
+_BEFORE_A_PLACE = frozenset({"the", "a", "that", "this", "blind", "sharp", "tight", "left-hand", "right-hand", "next"})
+#: Words after the place that say where it comes from or is, not towards the ego.
+_NOT_TOWARDS = frozenset({"from", "behind", "after", "out", "into", "onto", "ahead", "in front"})
+
+
+#: Words between a subject and its verb ("a van had just come", "the lorry then came").
+_BETWEEN_SUBJECT_AND_VERB = frozenset({"just", "then", "suddenly", "had", "has", "have", "was", "were", "is", "'d"})
+#: Words before a verb that leave its subject out or make it the narrator's.
+_NO_NAMED_SUBJECT = _FIRST_PERSON | {"and", "but", "as", "when", "while", "so", "then", "just", "the", "a", "an"}
+
+
+def _named_subject_before(tokens: list[str], k: int) -> bool:
+    """Whether the verb at token ``k`` has a subject named right before it that is not the narrator
+    ("a van came", "the lorry had just come"): not "I came", "we came", nor a verb with no subject
+    ("Doing 60, came round the bend and ...": the narrator's)."""
+    j = k - 1
+    while j >= 0 and tokens[j] in _BETWEEN_SUBJECT_AND_VERB:
+        j -= 1
+    return j >= 0 and tokens[j].isalpha() and tokens[j] not in _NO_NAMED_SUBJECT
+
+
+def over_a_blind_place(tokens: list[str], i: int) -> int | None:
+    """The end of "round" or "over" at token ``i`` when a verb of coming stands right before it (or
+    before a participle of manner: "came flying over") and a place that hides the road beyond
+    follows ("came over the crest", "comes round the bend", "coming around a blind corner"): one
+    that comes into sight there comes towards the ego, oncoming. None otherwise, and where the words
+    after the place say it comes from elsewhere or is behind ("came round the corner from the side
+    road", "... behind me"). Only "round"/"over" is read: the place is read on as the road's shape."""
+    if tokens[i] not in ("round", "around", "over") or i < 1:
+        return None
+    k = i - 1
+    if tokens[k].endswith("ing") and k > 0 and "come" not in lemmas(tokens[k]).get("VERB", ()):
+        k -= 1  # ("came flying over the crest")
+    if "come" not in lemmas(tokens[k]).get("VERB", ()) or not _named_subject_before(tokens, k):
+        return None
+    j = i + 1
+    while j < len(tokens) and j < i + 4 and tokens[j] in _BEFORE_A_PLACE:
+        j += 1
+    if j >= len(tokens) or tokens[j] not in _BLIND_PLACES or j == i + 1 and tokens[j] == "blind":
+        return None
+    if tokens[j + 1 : j + 2] and tokens[j + 1] in _NOT_TOWARDS:
+        return None
+    return i + 1
+
+
 #: Adjectives that say a direction is against the ego's, and the nouns of a direction.
 _AGAINST = frozenset({"opposite", "contrary", "other", "reverse", "opposing"})
 _DIRECTIONS = frozenset({"direction", "way"})
@@ -808,6 +859,14 @@ def on_the_ego_side(words: str) -> bool:
     our right"), not on a side of the road it comes from ("from the left", "on the left")."""
     said = words.split()
     return said[:1] == ["on"] and said[1:2] in (["my"], ["our"])
+
+
+def at_the_edge(edge: str | None, lane_side: str | None, first: str | None) -> bool:
+    """Whether a rider said at the edge of a side of the road (``edge``: "riding along the
+    right-hand kerb", "hugging the left edge"; not a cycle lane) and in no lane of its own, whose
+    first act is a move across ("pulls out", "swerves into my lane"), starts at that edge, beside
+    the ego's lane: not in a lane beside it, which a kerb is not."""
+    return edge in ("left", "right") and lane_side is None and first == "cut_in"
 
 
 def kerb_overtaker(relation: str | None, behaviours: list, side_said: bool, passes_another: bool) -> str | None:
@@ -899,6 +958,36 @@ def crossing_from(side: object, words: str, prev: str, after: str, behaviours: l
     towards = (prev in _TOWARDS or words.split()[0] in _TOWARDS) and after != "of"
     if towards and side in ("left", "right") and behaviours and behaviours[-1][0] == "cross_in_front":
         return "right" if side == "left" else "left"
+    return side
+
+
+def travels_on_the_wrong_side(kind: str, words: str, after: str) -> bool:
+    """Whether a road user that rides or drives (``kind``, not on foot) is said to come on or from "the
+    wrong side" (``words``) with no place after it ("came from wrong side", "coming wrong side at
+    me"): against the traffic, as Indian and other Englishes say the wrong way. A walker "from the
+    wrong side", or the wrong side of a place ("the wrong side of the bus"), is the far side."""
+    return kind != "pedestrian" and words.split()[-2:] == ["wrong", "side"] and after != "of"
+
+
+def where_it_goes(side: object, words: str, prev: str, after: str) -> str | None:
+    """The side a road user is said to go to ("ran off to the left", "dashed across towards the right
+    kerb", "over to the left-hand pavement"), or None: a side after "to" or "towards" is a
+    destination, save a place beside another ("to the left of the bus") or the ego ("a kid to my
+    left": where it is)."""
+    towards = (prev in _TOWARDS or words.split()[0] in _TOWARDS) and after != "of"
+    owned = bool(_OWNERS & set(words.split()))
+    return side if towards and not owned and side in ("left", "right") else None
+
+
+def across_from(side: str | None, goes_to: str | None, kerb_side: str | None) -> str | None:
+    """The side a crossing starts from: the kerb or lane said as where it is, else the side opposite
+    the one it is said to go to ("the dog ran off to the left, across in front of me": from the
+    right), read once all is said, as the verb of crossing may come after the side ("ran off to the
+    left straight across")."""
+    if kerb_side in ("left", "right") or goes_to not in ("left", "right"):
+        return side
+    if side in (None, goes_to):
+        return "right" if goes_to == "left" else "left"
     return side
 
 
