@@ -1451,6 +1451,7 @@ def _read(text: str) -> Reading:
     clauses = scenery.standing_there(chains(clauses, scanned), scanned)  # ("there's a car stopped dead")
     clauses = lane_moves.braking_after_a_cut_in(clauses, scanned)  # ("cut in and braked": how it settles)
     clauses = lane_moves.passing_each_other(clauses, scanned)  # (a meeting: no one overtakes)
+    clauses = lane_moves.pulling_in_to_stop(clauses, scanned)  # ("the bus pulls in and stops": at the kerb)
     clauses = junctions.priority(junctions.crossings(clauses, scanned), scanned)
     clauses, ego_follows = _ego_following(clauses)
     r = Reading()
