@@ -136,7 +136,7 @@ def test_pulling_in_before_the_ego_stays_a_cut_in(text):
 @pytest.mark.parametrize(
     "text",
     [
-        "scenario: bike_follow_overtake_07\nego speed 40 km/h\ncyclist 25 m ahead in ego lane at 15 km/h, same direction",
+        "scenario: bike_follow_overtake_07\nego speed 40 km/h\ncyclist 25 m ahead in ego lane at 15 km/h",
         "Test ID cyclist_cutin_hardbrake_2. A cyclist rides 20 m ahead of the ego at 15 km/h; ego at 30 km/h.",
         "run: ped_follow_pass_11 | the ego at 20 km/h | a cyclist riding ahead along the kerb at 12 km/h",
     ],
@@ -147,3 +147,58 @@ def test_the_words_of_a_scenario_identifier_are_no_behaviour(text):
 
 def test_a_numbered_road_user_keeps_its_noun():
     assert [a.kind for a in read("Ego at 50 km/h. car_1 cuts in from the left lane 15 m ahead.").actors] == ["car"]
+
+
+def _oncoming(text: str) -> list[str]:
+    """The behaviours of the road user ``text`` says comes the other way."""
+    (actor,) = [a for a in read(text).actors if a.relation == "oncoming"]
+    return [b[0] for b in actor.behaviours]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Ego at 60 km/h behind a tractor. Once the oncoming bus had passed, ego overtook the tractor.",
+        "I was doing 50 on a country lane; a car coming the other way passed, then I overtook the horse rider.",
+        "A van approaches in the opposite lane at 80 km/h. The ego passes the cyclist after the van has passed.",
+        "at 40 mph behind a tractor, waited for an oncoming lorry which went past, then overtook",
+        "Ego 70 km/h behind a cyclist. An oncoming truck passes by, then the ego overtakes the cyclist.",
+    ],
+)
+def test_an_oncoming_road_user_that_passes_no_one_goes_by(text):
+    assert _oncoming(text) == ["keep_lane"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was doing 60 on a country road when an oncoming car pulled out to overtake and came at me in my lane.",
+        "I was doing 60 on a country road when a car coming the other way overtook and ended up in my lane.",
+    ],
+)
+def test_an_oncoming_overtaker_still_comes_into_the_egos_lane(text):
+    assert _oncoming(text) == ["wrong_way"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "ego on ACC following lead veh (grey SUV) at 2 s, both 80 km/h; lead hard brakes to 0",
+        "ego following a car at 50 km/h, 15 m gap; then the lead suddenly stops.",
+        "Ego behind a bus at 30 km/h. Lead brakes hard.",
+        "AEB run: ego 60 km/h, lead car 30 m ahead at 60 km/h; leader slams on the brakes.",
+    ],
+)
+def test_lead_said_alone_as_the_subject_is_the_lead_vehicle(text):
+    assert _behaviours(text) == ["sudden_stop"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Ego at 50 km/h following a van. Braking late could lead to a crash.",
+        "ego 60 km/h, lead 40 m ahead at 60 km/h, constant speed.",
+    ],
+)
+def test_lead_as_a_verb_or_a_place_is_no_new_subject(text):
+    assert "sudden_stop" not in _behaviours(text)

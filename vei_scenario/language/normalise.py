@@ -497,6 +497,24 @@ def _identifier_named(m: re.Match, known_noun) -> str:
     return " ".join(w for w in words if known_noun(w) == w)
 
 
+#: "Lead" opening a clause before the word after it ("; lead hard brakes to 0", "then the lead slows").
+_LEAD_SUBJECT = re.compile(r"(?:^|(?<=[.;:,!?])|(?<=\band\b)|(?<=\bthen\b)|(?<=\bwhen\b))(\s*(?:the )?)(lead|leader)"
+                           r" ([a-z]+)")  # fmt: skip
+
+
+def _lead_as_a_noun(m: re.Match, known_noun) -> str:
+    """The lead vehicle, where "lead" is said alone as a clause's subject before its verb or an adverb
+    ("lead hard brakes", "the lead slows", "leader suddenly stops"), as a test spec shortens it; not
+    "lead car" (already its noun) nor "lead to" (the verb)."""
+    after = m.group(3)
+    found = lemmas(after)
+    verb_like = ("VERB" in found and after.endswith(("s", "ed"))) or "ADV" in found
+    if known_noun(after) or after in ("to", "vehicle", "vehicles", "veh") or not verb_like:
+        return m.group()
+    opening = m.group(1) if "the" in m.group(1) else f"{m.group(1)}the "  # (the one named before)
+    return f"{opening}lead vehicle {after}"
+
+
 def normalise(text: str, known_noun=lambda phrase: None) -> str:
     """``text`` (lowercased) with numbers in words, units, and the parties of a statement said the
     way the reader reads them. ``known_noun(phrase)`` returns the road-user noun a phrase ends in,
@@ -523,6 +541,7 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
         text,
     )
     text = _IDENTIFIER.sub(lambda m: _identifier_named(m, known_noun), text)
+    text = _LEAD_SUBJECT.sub(lambda m: _lead_as_a_noun(m, known_noun), text)
     text = _acronyms_defined(text, known_noun)
     text = _PARTICIPLE_OPENING.sub(lambda m: _with_article(m, known_noun), text)
     for pattern, repl in _SHORTHAND:

@@ -263,6 +263,7 @@ class _Actor:
     from_arm: bool = False  # said to come from or out of a junction arm ("from the side road on the left")
     beside: bool = False  # said to be on a side of the ego ("a cyclist on my left"), not to come from one
     moves_out: bool = False  # its crossing is said with "out" ("swung out", "pulled out")
+    went_by: bool = False  # its verb of passing has no object ("the van has passed", "a lorry went by")
 
 
 #: Euro NCAP's names of its test scenarios ("Car-to-Car Rear stationary", "Car-to-Pedestrian Nearside
@@ -2006,6 +2007,7 @@ def _read(text: str) -> Reading:
             name, cfg, _, lk = a.behaviours[i]
             words = cfg.pop("_words", "")
             a.moves_out = a.moves_out or (name == "cross_in_front" and "out" in words.split())
+            a.went_by = a.went_by or (name == "overtake" and _going_by(words))  # ("the van had passed")
             if name == "sudden_stop" and len(words.split()) == 1 and "brake" in forms(words):
                 cfg["_plain_brake"] = 1.0  # ("brakes": how hard, a stop said after it tells)
             a.goes_on = a.goes_on or bool(cfg.pop("_denied", None))
@@ -2582,6 +2584,20 @@ RIDERS = ("bicycle", "e-scooter")
 PASSIVE_AUXILIARIES = {"is", "are", "was", "were", "be", "been", "being", "get", "gets", "got", "getting"}
 
 
+#: Verbs (lemmas) that with no object say a road user going by ("the van passed", "a lorry went past").
+_GOING_BY = frozenset(("pass", "go", "come", "drive", "ride"))
+
+
+def _going_by(words: str) -> bool:
+    """Whether a verb of passing said as ``words`` has nothing after it but "by" or "past" ("the van
+    has passed", "a lorry passes by", "the bus went past"): said of a road user coming the other way
+    that passes no one named, it goes by in its own lane, no overtake into the ego's lane ("pulled out
+    to overtake" stays one)."""
+    said = words.split()
+    verbs = set(_lemmas(said[0]).get("VERB", ())) if said else set()
+    return ("pass" in verbs and said[1:] == []) or bool(verbs & _GOING_BY and said[1:] in (["by"], ["past"]))
+
+
 def _specialise(
     a: _Actor,
     spec: ActorSpec,
@@ -2594,6 +2610,9 @@ def _specialise(
     coming the other way is a turn across the ego's path; pulling out of a side road is turning into
     the ego's road; a vehicle driving at the ego in its lane is a wrong-way driver; a walker or rider
     who just goes on, goes along the road."""
+    if spec.relation == "oncoming" and a.went_by and not passes_another and not a.wrong_way:
+        by = [("keep_lane", *b[1:]) if b[0] == "overtake" else b for b in spec.behaviours]
+        spec.behaviours = [b for k, b in enumerate(by) if not (k and b[0] == by[k - 1][0] == "keep_lane")]
     names = [b[0] for b in spec.behaviours]
     first = names[0] if names else None
     vehicle = a.kind in VEHICLES

@@ -530,7 +530,7 @@ def agentless_reactions(clauses: list, tokens: list[str]) -> dict[int, bool]:
         if m.slot != "behaviour" or m.value[0] not in _REACTIONS:
             continue
         s = m.start
-        while s > 0 and m.start - s < 2 and s - 1 not in read and _modifier(tokens[s - 1]):
+        while s > 0 and m.start - s < 2 and s - 1 not in read and _before_a_noun(tokens[s - 1]):
             s -= 1  # ("Evasive braking performed", "Full emergency braking applied": its modifiers)
         s -= s > 0 and tokens[s - 1] in _SUBJECT_OPENERS
         if s and tokens[s - 1] not in _SENTENCE_ENDS:
@@ -543,8 +543,8 @@ def agentless_reactions(clauses: list, tokens: list[str]) -> dict[int, bool]:
     return out
 
 
-def _modifier(word: str) -> bool:
-    """Whether ``word`` may modify a noun before it ("evasive", "emergency", "full"): an adjective or a
-    noun, a word and no number."""
+def _before_a_noun(word: str) -> bool:
+    """Whether ``word`` may stand before a noun of a reaction ("evasive", "emergency", "full"): an
+    adjective, a noun or a hyphened word, no number."""
     found = lemmas(word)
-    return word.isalpha() and ("ADJ" in found or "NOUN" in found)
+    return _modifier(word) or (word.isalpha() and "NOUN" in found)
