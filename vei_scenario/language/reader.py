@@ -2610,7 +2610,8 @@ def _specialise(
     coming the other way is a turn across the ego's path; pulling out of a side road is turning into
     the ego's road; a vehicle driving at the ego in its lane is a wrong-way driver; a walker or rider
     who just goes on, goes along the road."""
-    if spec.relation == "oncoming" and a.went_by and not passes_another and not a.wrong_way:
+    in_its_path = a.wrong_way or bool({"ahead", "in_ego_lane"} & a.said)  # ("approaching head-on in my lane")
+    if spec.relation == "oncoming" and a.went_by and not passes_another and not in_its_path:
         by = [("keep_lane", *b[1:]) if b[0] == "overtake" else b for b in spec.behaviours]
         spec.behaviours = [b for k, b in enumerate(by) if not (k and b[0] == by[k - 1][0] == "keep_lane")]
     names = [b[0] for b in spec.behaviours]
