@@ -204,18 +204,6 @@ def test_lead_as_a_verb_or_a_place_is_no_new_subject(text):
     assert "sudden_stop" not in _behaviours(text)
 
 
-@pytest.mark.parametrize(
-    "text",
-    [
-        "Rider at 20 km/h on a straight road. A cyclist ahead in the same lane at 12 km/h; our rider overtakes it.",
-        "Our rider is at 25 km/h; a jogger runs along the kerb ahead and my rider passes him wide.",
-        "Trial run at 18 km/h: a cyclist rides 15 m ahead in the lane and our rider goes past her.",
-    ],
-)
-def test_our_rider_is_the_ego_so_what_it_passes_goes_along(text):
-    assert "overtake" not in _behaviours(text)
-
-
 def test_a_road_user_coming_head_on_in_the_egos_lane_that_passes_is_still_the_wrong_way_driver():
     text = (
         "I was heading north at 40 mph in lane 1 when a lorry came southbound towards me, head-on in my lane. "

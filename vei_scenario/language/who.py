@@ -32,15 +32,9 @@ def _fleet(tokens: list[str], i: int, end: int) -> bool:
     return bool(nouns and head not in nouns) or picked
 
 
-#: The one at the wheel or the handlebars said as the writer's ("our rider", "my driver"): the ego.
-_OWN_PEOPLE = frozenset(("rider", "driver"))
-
-
 def _own_vehicle_end(tokens: list[str], i: int, kind_at: KindAt, modifier: Callable[[str], bool]) -> int | None:
     """Where the phrase "my/our [modifiers] <vehicle noun>" starting at ``i`` ends, or None (also for a
     fleet: see :func:`_fleet`)."""
-    if tokens[i + 1 : i + 2] and tokens[i + 1] in _OWN_PEOPLE:
-        return i + 2  # ("our rider overtakes it": the one whose ride the scenario is, the ego)
     for j in range(i + 1, min(i + 2 + _MODIFIERS, len(tokens))):
         found = kind_at(tokens, j)
         if found is not None:
