@@ -210,3 +210,8 @@ def test_a_road_user_coming_head_on_in_the_egos_lane_that_passes_is_still_the_wr
         "I moved over to lane 2 and the lorry passed without touching me."
     )
     assert "keep_lane" not in [b[0] for a in read(text).actors for b in a.behaviours]
+
+
+def test_an_oncoming_road_user_that_passes_something_named_is_no_one_going_by():
+    reading = read("A bus passed a parked lorry and was coming straight at us.")
+    assert [b[0] for b in reading.actors[0].behaviours] == ["wrong_way"]

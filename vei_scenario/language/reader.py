@@ -2007,7 +2007,6 @@ def _read(text: str) -> Reading:
             name, cfg, _, lk = a.behaviours[i]
             words = cfg.pop("_words", "")
             a.moves_out = a.moves_out or (name == "cross_in_front" and "out" in words.split())
-            a.went_by = a.went_by or (name == "overtake" and _going_by(words))  # ("the van had passed")
             if name == "sudden_stop" and len(words.split()) == 1 and "brake" in forms(words):
                 cfg["_plain_brake"] = 1.0  # ("brakes": how hard, a stop said after it tells)
             a.goes_on = a.goes_on or bool(cfg.pop("_denied", None))
@@ -2584,6 +2583,9 @@ RIDERS = ("bicycle", "e-scooter")
 PASSIVE_AUXILIARIES = {"is", "are", "was", "were", "be", "been", "being", "get", "gets", "got", "getting"}
 
 
+#: Words after a verb of passing that say it has no object ("the van passed, then ...", "passed safely").
+_NO_OBJECT = frozenset(("", ".", ",", ";", ":", "!", "?", "and", "then", "but", "so", "when", "while", "as", "after",
+                        "before", "without", "safely", "slowly", "at", "with", "in", "on", "by"))  # fmt: skip
 #: Verbs (lemmas) that with no object say a road user going by ("the van passed", "a lorry went past").
 _GOING_BY = frozenset(("pass", "go", "come", "drive", "ride"))
 
@@ -3077,6 +3079,7 @@ def _apply(m, who, r, link, added) -> None:
                 a.priority = a.priority or bool(cfg.get("_priority"))
                 continue  # ("brakes ... and stops": said twice over)
             said = m.words if not _adverb(m.next_) else f"{m.words} {m.next_}"  # ("brakes moderately")
+            a.went_by = a.went_by or (name == "overtake" and _going_by(m.words) and m.next_ in _NO_OBJECT)
             a.behaviours.append((name, dict(cfg, _words=said), None, link if not added else "sequence"))
             added.append((a, len(a.behaviours) - 1))
         elif m.slot == "turn":
