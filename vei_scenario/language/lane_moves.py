@@ -16,6 +16,8 @@ overtakes anyone, so the verb of passing is no overtake of the road user it is s
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.motion import _said_hard, passes
 
@@ -85,6 +87,52 @@ def braking_after_a_cut_in(clauses: list, tokens: list[str]) -> list:
         last_cut_in = bool(behaviours) and behaviours[-1].value[0] == "cut_in"
         out.append((link, kept))
     return out
+
+
+#: Verbs (lemmas) that with "in" or "over" say a move to the side of the road ("pulls in", "drew over").
+_TO_THE_SIDE = frozenset(("pull", "draw"))
+#: Mentions that may stand between pulling in and the stop said with it ("pulls in, and then stops").
+_BEFORE_THE_STOP = frozenset(("conj", "punct", "link", "criticality", "speed_word"))
+
+
+def _pulls_in(m, tokens: list[str]) -> bool:
+    """Whether cut-in mention ``m`` is only "pull in" or "draw in" said with no place of the ego after
+    it ("the bus pulls in and stops"; not "pulled in front of me", "pulled in ahead of us")."""
+    words = m.words.split()
+    if len(words) != 2 or words[1] != "in" or not _TO_THE_SIDE & set(lemmas(words[0]).get("VERB", ())):
+        return False
+    after = tokens[m.end : m.end + 3]
+    return not (after[:1] and after[0] in ("front", "ahead", "before", "to", "into", "right", "just"))
+
+
+def pulling_in_to_stop(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` without a "pull in" said right before the same road user stops ("the bus pulls in
+    and stops at its stop", "it drew in, then halted", "the taxi ahead pulled in and stopped to drop
+    someone off"): it pulls in to the side to stop there, a stop at the kerb, not a cut-in. Pulling
+    in said with the ego's place ("pulled in right in front of me and stopped") stays a cut-in, and so
+    does one that then brakes ("pulled in and braked")."""
+    out: list = []
+    gone: set[int] = set()  # (the stops said as the pull-in's end, by their start: read with it)
+    for c, (link, mentions) in enumerate(clauses):
+        kept: list = []
+        for k, m in enumerate(mentions):
+            if m.start in gone:
+                continue
+            if m.slot == "behaviour" and m.value[0] == "cut_in" and _pulls_in(m, tokens):
+                rest = [x for x in mentions[k + 1 :] if x.slot not in _BEFORE_THE_STOP]
+                if not rest and c + 1 < len(clauses):  # ("pulls in, then stops": the next clause)
+                    rest = [x for x in clauses[c + 1][1] if x.slot not in _BEFORE_THE_STOP]
+                if rest and _a_stop(rest[0]):
+                    gone.add(rest[0].start)  # (one stop, said where the pull-in is: its subject's)
+                    m = replace(m, value=("stop", {}))
+            kept.append(m)
+        out.append((link, kept))
+    return out
+
+
+def _a_stop(m) -> bool:
+    """Whether mention ``m`` is a plain stop ("stops", "halted", "pulled up"), not a hard one."""
+    return (m.slot == "behaviour" and m.value[0] == "stop") or m.slot == "stationary"
 
 
 #: What a verb of passing is said of when two pass in opposite ways ("passed each other").

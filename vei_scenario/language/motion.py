@@ -163,6 +163,21 @@ def _into_someone(tokens: list[str], j: int) -> bool:
     return _names_road_user(obj) or obj[:1] in (["me"], ["us"], ["ego"]) or obj[:2] == ["the", "ego"]
 
 
+#: Modals of what would have happened ("could have crashed"): the contact did not happen.
+_COUNTERFACTUAL = frozenset(("would", "could", "might", "nearly", "almost"))
+
+
+def _nearly(tokens: list[str], i: int) -> bool:
+    """Whether the verb of contact at token ``i`` is hedged ("nearly crash", "very nearly collided",
+    "almost crashing") or counterfactual ("could have crashed"): the contact was only nearly had, so
+    the verb states a near miss (the outcome), not a fall or a stop the road user makes."""
+    from vei_scenario.language.outcome import _HEDGES
+
+    if i >= 1 and tokens[i - 1] in _HEDGES:
+        return True
+    return i >= 2 and tokens[i - 1] == "have" and tokens[i - 2] in _COUNTERFACTUAL
+
+
 #: Subordinators that make a clause after a contact its circumstance or its cause ("hit the taxi when it
 #: stopped", "because it braked", "after it had stopped"): what they open came first.
 _CIRCUMSTANCE = frozenset(("when", "as", "while", "whilst", "because", "since", "after", "cos", "coz"))
@@ -239,6 +254,8 @@ def outcome_not_behaviour(clauses: list, tokens: list[str] | None = None) -> lis
                     continue  # ("they are crashing": the collision, said of both)
                 if first in _CONTACT and tokens is not None and _into_someone(tokens, m.end):
                     continue  # ("crashed head-on into a motorcyclist": the contact, the outcome)
+                if first in _CONTACT and tokens is not None and _nearly(tokens, m.start):
+                    continue  # ("nearly crash", "we almost collided": a near miss, the outcome)
                 if first in ("yield", "yields", "yielded", "yielding") and m.next_ in ("a", "an"):
                     continue  # ("designed to yield a collision")
             elif m.slot == "stationary" and tokens is not None and _stop_said_as_a_verb(mentions, k):

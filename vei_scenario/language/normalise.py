@@ -343,18 +343,48 @@ _NOMINAL_VERBS = {
     "emergency stop": "brakes hard to a stop",
     "emergency brake": "brakes hard to a stop",
     "hard stop": "brakes hard to a stop",
+    # (braking said as the noun of a hard stop: "makes an emergency braking", "performs heavy braking")
+    "emergency braking": "brakes hard",
+    "hard braking": "brakes hard",
+    "heavy braking": "brakes hard",
+    "harsh braking": "brakes hard",
+    "full braking": "brakes hard",
     "overtaking manoeuvre": "overtakes",
     "overtaking maneuver": "overtakes",
     "overtake": "overtakes",
     "u-turn": "turns around",
 }
 _NOMINAL = re.compile(
-    r"\b(?:performs?|performed|performing|initiates?|initiated|initiating|executes?|executed|executing|"
-    r"carries out|carried out|makes|made|making|does|did) (?:an? |the )?(?:sudden |late |aggressive |abrupt |"
+    r"\b(performs?|performed|performing|initiates?|initiated|initiating|executes?|executed|executing|"
+    r"carries out|carried out|makes|made|making|does|did|perform|make|do) "
+    r"(?:an? |the )?(?:full |sudden |late |aggressive |abrupt |"
     r"(?:moderately |very )?(?:moderate|gentle|sharp) )?("
     + "|".join(sorted(_NOMINAL_VERBS, key=len, reverse=True))
     + r")\b"
 )
+#: The verbs :data:`_NOMINAL_VERBS` say, in the plain form and the past tense.
+_PLAIN_AND_PAST = {
+    "changes": ("change", "changed"),
+    "crosses": ("cross", "crossed"),
+    "cuts": ("cut", "cut"),
+    "brakes": ("brake", "braked"),
+    "overtakes": ("overtake", "overtook"),
+    "turns": ("turn", "turned"),
+}
+_PAST_LIGHT_VERBS = frozenset(("performed", "initiated", "executed", "carried out", "made", "did"))
+_PLAIN_LIGHT_VERBS = frozenset(("perform", "initiate", "execute", "make", "do"))
+
+
+def _as_its_verb(m: re.Match) -> str:
+    """A behaviour said as a noun a road user performs (``m``: the light verb, then the noun) said as
+    its own verb in the light verb's tense ("did an emergency stop": "braked hard to a stop"; "make a
+    lane change": "change lane"): the tense is how a story with its subject left out is told by
+    its narrator ("Did an emergency stop."), so it stays."""
+    verb, _, rest = _NOMINAL_VERBS[m.group(2)].partition(" ")
+    plain, past = _PLAIN_AND_PAST[verb]
+    light = m.group(1)
+    verb = past if light in _PAST_LIGHT_VERBS else plain if light in _PLAIN_LIGHT_VERBS else verb
+    return f"{verb} {rest}".strip()
 
 
 def _initials(words: list[str]) -> str:
@@ -466,6 +496,39 @@ def _ages(text: str, known_noun) -> str:
     return _AGE.sub(sub, text)
 
 
+#: A name joined by underscores with a number in it ("scooter_follow_pass_03", "fcw_stopngo_12", "car_1"):
+#: the identifier a test spec or a log gives a scenario or a road user.
+_IDENTIFIER = re.compile(r"\b(?=[a-z0-9_-]*\d)(?=[0-9_-]*[a-z])[a-z0-9-]+(?:_[a-z0-9-]+)+\b")
+
+
+def _identifier_named(m: re.Match, known_noun) -> str:
+    """The road users an identifier names (``m``; "car_1": "car", "ped_2": "ped"), and nothing of the rest: the
+    words of a scenario's name ("scooter_follow_pass_03", "cutin_hard_brake_2") label the test, they
+    are not what its road users do (that is said in its text)."""
+    words = [part for part in m.group().split("_") if part.isalpha()]
+    if len(words) == 1:
+        return words[0]  # ("ped_2", "veh_01": the road user numbered)
+    return " ".join(w for w in words if known_noun(w) == w)
+
+
+#: "Lead" opening a clause before the word after it ("; lead hard brakes to 0", "then the lead slows").
+_LEAD_SUBJECT = re.compile(r"(?:^|(?<=[.;:,!?])|(?<=\band\b)|(?<=\bthen\b)|(?<=\bwhen\b))(\s*(?:the )?)(lead|leader)"
+                           r" ([a-z]+)")  # fmt: skip
+
+
+def _lead_as_a_noun(m: re.Match, known_noun) -> str:
+    """The lead vehicle, where "lead" is said alone as a clause's subject before its verb or an adverb
+    ("lead hard brakes", "the lead slows", "leader suddenly stops"), as a test spec shortens it; not
+    "lead car" (already its noun) nor "lead to" (the verb)."""
+    after = m.group(3)
+    found = lemmas(after)
+    verb_like = ("VERB" in found and after.endswith(("s", "ed"))) or "ADV" in found
+    if known_noun(after) or after in ("to", "vehicle", "vehicles", "veh") or not verb_like:
+        return m.group()
+    opening = m.group(1) if "the" in m.group(1) else f"{m.group(1)}the "  # (the one named before)
+    return f"{opening}lead vehicle {after}"
+
+
 def normalise(text: str, known_noun=lambda phrase: None) -> str:
     """``text`` (lowercased) with numbers in words, units, and the parties of a statement said the
     way the reader reads them. ``known_noun(phrase)`` returns the road-user noun a phrase ends in,
@@ -491,6 +554,8 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
         "i",
         text,
     )
+    text = _IDENTIFIER.sub(lambda m: _identifier_named(m, known_noun), text)
+    text = _LEAD_SUBJECT.sub(lambda m: _lead_as_a_noun(m, known_noun), text)
     text = _acronyms_defined(text, known_noun)
     text = _HEADS_UP.sub("note", text)
     text = _PARTICIPLE_OPENING.sub(lambda m: _with_article(m, known_noun), text)
@@ -591,7 +656,7 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     )
     # a behaviour said as a noun a road user performs ("performs a lane change", "initiates a crossing
     # manoeuvre", "makes an emergency stop"): said as its verb
-    text = _NOMINAL.sub(lambda m: _NOMINAL_VERBS[m.group(1)], text)
+    text = _NOMINAL.sub(_as_its_verb, text)
     # "struck the ego on its nearside", "hit me in the rear door": where on the ego's body, not a side of the road
     text = re.sub(
         r"\b((?:struck|strikes|hit|hits|impacted|clipped|collided with|made contact with) (?:the ego|me|us|my car)) "

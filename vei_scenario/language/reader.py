@@ -266,6 +266,7 @@ class _Actor:
     from_arm: bool = False  # said to come from or out of a junction arm ("from the side road on the left")
     beside: bool = False  # said to be on a side of the ego ("a cyclist on my left"), not to come from one
     moves_out: bool = False  # its crossing is said with "out" ("swung out", "pulled out")
+    went_by: bool = False  # its verb of passing has no object ("the van has passed", "a lorry went by")
 
 
 #: Euro NCAP's names of its test scenarios ("Car-to-Car Rear stationary", "Car-to-Pedestrian Nearside
@@ -1518,6 +1519,7 @@ def _read(text: str) -> Reading:
     clauses = scenery.standing_there(chains(clauses, scanned), scanned)  # ("there's a car stopped dead")
     clauses = lane_moves.braking_after_a_cut_in(clauses, scanned)  # ("cut in and braked": how it settles)
     clauses = lane_moves.passing_each_other(clauses, scanned)  # (a meeting: no one overtakes)
+    clauses = lane_moves.pulling_in_to_stop(clauses, scanned)  # ("the bus pulls in and stops": at the kerb)
     clauses = junctions.priority(junctions.crossings(clauses, scanned), scanned)
     clauses, ego_follows = _ego_following(clauses)
     r = Reading()
@@ -2683,6 +2685,23 @@ def _waits_at_a_crossing(a: _Actor, spec: ActorSpec, said: str) -> bool:
     return waited_for is not None and any(f" {w} " in f" {said} " for w in _WALKERS_CROSSINGS)
 
 
+#: Words after a verb of passing that say it has no object ("the van passed, then ...", "passed safely").
+_NO_OBJECT = frozenset(("", ".", ",", ";", ":", "!", "?", "and", "then", "but", "so", "when", "while", "as", "after",
+                        "before", "without", "safely", "slowly", "at", "with", "in", "on", "by"))  # fmt: skip
+#: Verbs (lemmas) that with no object say a road user going by ("the van passed", "a lorry went past").
+_GOING_BY = frozenset(("pass", "go", "come", "drive", "ride"))
+
+
+def _going_by(words: str) -> bool:
+    """Whether a verb of passing said as ``words`` has nothing after it but "by" or "past" ("the van
+    has passed", "a lorry passes by", "the bus went past"): said of a road user coming the other way
+    that passes no one named, it goes by in its own lane, no overtake into the ego's lane ("pulled out
+    to overtake" stays one)."""
+    said = words.split()
+    verbs = set(_lemmas(said[0]).get("VERB", ())) if said else set()
+    return ("pass" in verbs and said[1:] == []) or bool(verbs & _GOING_BY and said[1:] in (["by"], ["past"]))
+
+
 def _specialise(
     a: _Actor,
     spec: ActorSpec,
@@ -2695,6 +2714,10 @@ def _specialise(
     coming the other way is a turn across the ego's path; pulling out of a side road is turning into
     the ego's road; a vehicle driving at the ego in its lane is a wrong-way driver; a walker or rider
     who just goes on, goes along the road."""
+    in_its_path = a.wrong_way or bool({"ahead", "in_ego_lane"} & a.said)  # ("approaching head-on in my lane")
+    if spec.relation == "oncoming" and a.went_by and not passes_another and not in_its_path:
+        by = [("keep_lane", *b[1:]) if b[0] == "overtake" else b for b in spec.behaviours]
+        spec.behaviours = [b for k, b in enumerate(by) if not (k and b[0] == by[k - 1][0] == "keep_lane")]
     names = [b[0] for b in spec.behaviours]
     first = names[0] if names else None
     vehicle = a.kind in VEHICLES
@@ -3179,6 +3202,7 @@ def _apply(m, who, r, link, added) -> None:
                 a.priority = a.priority or bool(cfg.get("_priority"))
                 continue  # ("brakes ... and stops": said twice over)
             said = m.words if not _adverb(m.next_) else f"{m.words} {m.next_}"  # ("brakes moderately")
+            a.went_by = a.went_by or (name == "overtake" and _going_by(m.words) and m.next_ in _NO_OBJECT)
             a.behaviours.append((name, dict(cfg, _words=said), None, link if not added else "sequence"))
             added.append((a, len(a.behaviours) - 1))
         elif m.slot == "turn":

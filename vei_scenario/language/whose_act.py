@@ -149,6 +149,7 @@ def acts_not_the_subjects(clauses: list, tokens: list[str], first_person: bool, 
     out.update(named_persons_acts(clauses, tokens, text))
     out.update(caused_acts(clauses, tokens))
     out.update(unread_subjects_reactions(clauses, tokens))
+    out.update(agentless_reactions(clauses, tokens))
     return out
 
 
@@ -508,3 +509,42 @@ def _common_noun(word: str) -> bool:
     only, not a pronoun or an adverb): "planner", "candidate", "autopilot"."""
     found = lemmas(word)
     return "NOUN" in found and "ADV" not in found and "PRON" not in found and word.isalpha()
+
+
+#: Participles of carrying out a reaction said as a noun ("brakes applied", "emergency stop performed").
+_CARRIED_OUT = frozenset(("applied", "activated", "engaged", "initiated", "performed", "executed", "deployed",
+                          "triggered", "actuated", "commanded", "taken", "made", "done", "used"))  # fmt: skip
+#: Auxiliaries of a passive between the noun and its participle ("the brakes were applied").
+_PASSIVE_BE = frozenset(("was", "were", "is", "are", "been", "being", "had", "has", "have", "then", "immediately"))
+
+
+def agentless_reactions(clauses: list, tokens: list[str]) -> dict[int, bool]:
+    """The reactions said as a noun opening a sentence in the passive with no agent ("Emergency brake
+    applied.", "Brakes were applied hard", "Emergency braking initiated, no contact"), by their
+    mention's start: a report's way of saying what its own driver did, so none of the road user named
+    before. One whose agent is said ("... initiated by the lorry") is that agent's and stays."""
+    out: dict[int, bool] = {}
+    flat = [m for _, ms in clauses for m in ms]
+    read = {i for m in flat if m.slot != "unknown_verb" for i in range(m.start, max(m.end, m.start + 1))}
+    for m in flat:
+        if m.slot != "behaviour" or m.value[0] not in _REACTIONS:
+            continue
+        s = m.start
+        while s > 0 and m.start - s < 2 and s - 1 not in read and _before_a_noun(tokens[s - 1]):
+            s -= 1  # ("Evasive braking performed", "Full emergency braking applied": its modifiers)
+        s -= s > 0 and tokens[s - 1] in _SUBJECT_OPENERS
+        if s and tokens[s - 1] not in _SENTENCE_ENDS:
+            continue
+        j = m.end
+        while j < len(tokens) and tokens[j] in _PASSIVE_BE:
+            j += 1
+        if j < len(tokens) and tokens[j] in _CARRIED_OUT and tokens[j + 1 : j + 2] != ["by"]:
+            out[m.start] = False
+    return out
+
+
+def _before_a_noun(word: str) -> bool:
+    """Whether ``word`` may stand before a noun of a reaction ("evasive", "emergency", "full"): an
+    adjective, a noun or a hyphened word, no number."""
+    found = lemmas(word)
+    return _modifier(word) or (word.isalpha() and "NOUN" in found)
