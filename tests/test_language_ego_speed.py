@@ -383,3 +383,80 @@ def test_a_speed_right_after_the_ego_as_an_object_is_the_egos(text, kph):
 )
 def test_a_speed_not_right_after_the_ego_object_is_not_the_egos(text):
     assert all(_ego(text) != pytest.approx(v * KPH) for v in (6, 30))
+
+
+# --- the writer's country by the words only one side of the mph / km/h divide uses for road things ----------
+@pytest.mark.parametrize(
+    "text, mph",
+    [
+        ("Doing 60 in lane one when a van shot off the slip road right in front of me.", 60),
+        ("I was doing about 50 when a lorry pulled out of a lay-by just ahead of me.", 50),
+        ("Was doing 70 when a car parked on the hard shoulder pulled straight out in front of me.", 70),
+        ("Coming down the sliproad doing 40, a van in the inside lane swerved across into me.", 40),
+        ("going 30 through the stoplight when a kid on a bike came across from the right", 30),
+        ("Doing maybe 45 and a state trooper's cruiser pulled out of the median in front of me.", 45),
+    ],
+    ids=["slip-road", "lay-by", "hard-shoulder", "sliproad", "stoplight", "trooper"],
+)
+def test_a_bare_speed_by_a_british_or_american_road_word_is_mph(text, mph):
+    assert _ego(text) == pytest.approx(mph * MPH)
+
+
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("Doing 60 on the freeway in the ute when a semi drifted into my lane.", 60),
+        ("I was doing 40 near the curb when an okada cut right in front of me.", 40),
+        ("Going about 30 past the crosswalk when a tuk-tuk pulled out from the left.", 30),
+        ("A danfo swerved into my lane on the expressway; I was doing 70 on the wet carriageway.", 70),
+        ("doing 50 on the freeway and a matatu overtook me then cut in sharp", 50),
+        ("Doing 60 down the slip road when a bakkie pulled out in front of me.", 60),
+    ],
+    ids=["ute-freeway", "okada-curb", "tuk-tuk-crosswalk", "danfo-carriageway", "matatu-freeway", "bakkie-slip"],
+)
+def test_a_bare_speed_beside_a_road_user_only_km_h_countries_have_stays_kmh(text, kph):
+    """A minibus taxi, a motorbike taxi, a three-wheeler or a pickup by a name only countries that sign km/h
+    use sets the text there, whatever road word it shares with Britain or America."""
+    assert _ego(text) == pytest.approx(kph * KPH)
+
+
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("Doing about 80 klicks on the freeway when a semi came across the centre line.", 80),
+        ("I was at 40 klicks near the curb when a cyclist swerved out.", 40),
+        ("maybe 50 clicks, then a car pulled out of the gas station in front of me", 50),
+    ],
+    ids=["klicks-freeway", "klicks-curb", "clicks"],
+)
+def test_klicks_are_kilometres_an_hour(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH)
+
+
+@pytest.mark.parametrize(
+    "text, mph",
+    [
+        ("Doing 40 on the slip road, a van cut in about 10 metres ahead of me.", 40),  # (metres: British too)
+        ("Doing 50 past the lay-by when a pickup truck pulled out on the left.", 50),  # (a pickup: said anywhere)
+        ("I was doing 30 on the high street when an auto parts van pulled out.", 30),  # (no auto-rickshaw)
+    ],
+    ids=["slip-metres", "lay-by-pickup", "auto-parts"],
+)
+def test_words_said_on_both_sides_change_no_unit(text, mph):
+    assert _ego(text) == pytest.approx(mph * MPH)
+
+
+# --- a label numbered before a dash is no range -------------------------------------------------------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("Run 3 - 60 km/h, a car cuts in from the left lane 15 m ahead.", 60),
+        ("Test 2 – 40 km/h, pedestrian crossing from the right.", 40),
+        ("Case 1 - 50 km/h: cyclist ahead brakes hard.", 50),
+        ("I was doing 30-40 km/h when a bus pulled out.", 35),  # (a range still)
+        ("I was doing 20 - 25 mph when a dog ran out.", 22.5 / 0.621371),  # (a range still)
+    ],
+    ids=["run-dash", "test-en-dash", "case-dash", "range", "range-spaced"],
+)
+def test_a_small_number_before_a_dash_and_a_speed_is_a_label_not_a_range(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH, rel=1e-3)

@@ -34,7 +34,7 @@ _NUMBER = re.compile(
 #: Units after which a number in words is a quantity (its unit words as the reader reads them).
 _UNIT_AFTER = re.compile(
     r"\s*(?:-\s*)?(km/h|kph|kmh|mph|m/s|miles?\b|kilomet(?:er|re)s?\b|km\b|met(?:er|re)s?\b|m\b|seconds?\b|s\b"
-    r"|second\b|lanes?\b|car lengths?\b|k(?:'s|s)?\b|feet\b|ft\b|yards?\b|yds?\b|foot\b)"
+    r"|second\b|lanes?\b|car lengths?\b|k(?:'s|s)?\b|klicks?\b|clicks\b|feet\b|ft\b|yards?\b|yds?\b|foot\b)"
 )
 #: Words after which a bare number is a speed ("doing like thirty", "Ego at forty"): the reader reads
 #: a bare number after "at", "doing", "about" as km/h.
@@ -53,6 +53,7 @@ _UNITS = [
     (_MILEAGE, r"\1\g<2>000"),  # ("has about 380k on it": thousands had, no speed)
     # ("50 k's": spoken km/h; not a video's resolution: "4K dashcam")
     (re.compile(r"(\d)\s*(?:kph|kmh|k's|ks|k)(?![\w'])(?!\s*(?:dash|video|footage|cam|hdr|uhd))"), r"\1 km/h"),
+    (re.compile(r"(\d)\s*(?:klicks?|clicks)\b"), r"\1 km/h"),  # ("80 klicks": kilometres, the Canadian's km/h)
     (re.compile(r"m/s\s*\^\s*2|m/s/s|m/sec\^?2"), "m/s²"),  # ("decel 6 m/s^2": an acceleration)
     (re.compile(r"(\d)(km/h|mph|m/s|m)\b"), r"\1 \2"),
 ]

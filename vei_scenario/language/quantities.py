@@ -144,6 +144,17 @@ def citations(text: str) -> str:
     return _CITATION.sub(" ", text)
 
 
+_SPEED_AFTER = re.compile(r"\s*(?:km/h|kph|kmh|mph|m/s)\b")
+
+
+def _a_label_before_a_speed(m: re.Match) -> bool:
+    """Whether a range ``m`` of :data:`_RANGE` is a numbered label, a dash, then a speed ("Run 3 - 60 km/h",
+    "Test 2 – 40 km/h"): no range of speeds spans more than twice its low end and ten, as a bare one
+    may not either (:func:`_bare_range`)."""
+    low, high = float(m.group(1)), float(m.group(2))
+    return _SPEED_AFTER.match(m.string, m.end()) is not None and high > 2 * low + 10
+
+
 def ranges(text: str) -> str:
     """Each range of a quantity in the normalised ``text`` as its middle, approximately ("20-30 mph":
     "about 25 mph"): a writer giving a range means a value within it, and the middle is the one that
@@ -161,6 +172,8 @@ def ranges(text: str) -> str:
     def middle(m: re.Match) -> str:
         if not m.group(0).startswith("between") and " and" in m.group(0):
             return m.group(0)  # ("slows to 30 and 20 m later": a list, not a range)
+        if _a_label_before_a_speed(m):
+            return m.group(0)
         value = (float(m.group(1)) + float(m.group(2))) / 2
         return f"about {value:g} "
 
@@ -257,19 +270,21 @@ def after_ego(tokens: list[str], i: int) -> bool:
 Mentions = Callable[[int], "int | None"]
 
 
-def carried_unit(tokens: list[str], i: int, imperial: bool = False) -> float:
+def carried_unit(tokens: list[str], i: int, imperial: bool = False, metric: bool = False) -> float:
     """The factor to m/s of a bare speed at ``i`` ("I'm at 50"): the unit of the last speed said with
     one before it, else of the first said after it, else mph on a road of a country that signs miles
     (:func:`miles_country`; ``imperial``: the text measured a length in feet or yards, see
     :func:`imperial_lengths`), else km/h (the unit of a test engineer who gives none; a motorway says
-    neither: in heavy traffic 60 km/h is as likely there as 60 mph)."""
+    neither: in heavy traffic 60 km/h is as likely there as 60 mph). ``metric``: the text as written was
+    set where km/h is signed (:func:`metric_country` of its tokens before the reader named the ego's
+    own vehicle "the ego": "in the ute")."""
     for k in range(i - 1, 0, -1):
         if tokens[k] in V.SPEED_UNITS and tokens[k - 1].replace(".", "", 1).isdigit():
             return V.SPEED_UNITS[tokens[k]]
     for k in range(i + 1, len(tokens)):  # none before: the one said after it ("at 30 and ... 20 mph")
         if tokens[k] in V.SPEED_UNITS and tokens[k - 1].replace(".", "", 1).isdigit():
             return V.SPEED_UNITS[tokens[k]]
-    if metric_country(tokens):
+    if metric or metric_country(tokens):
         return 1 / 3.6
     return V.SPEED_UNITS["mph"] if imperial or miles_country(tokens) else 1 / 3.6
 
@@ -282,10 +297,22 @@ _METRIC_ROADS = frozenset(
 )
 
 
+#: Road users by names said only where speeds are signed in km/h: the pickup of Australia and South
+#: Africa, the minibus taxis of Africa and the Philippines, the motorbike taxis of Africa, the
+#: three-wheelers of South and South-East Asia. Who names one tells of the traffic there, whatever road
+#: word the text shares with Britain or America ("the freeway", "the curb", "the carriageway").
+_METRIC_ROAD_USERS = frozenset(
+    {"ute", "utes", "bakkie", "bakkies", "kombi", "kombis", "matatu", "matatus", "dala-dala", "jeepney", "jeepneys",
+     "trotro", "tro-tro", "danfo", "danfos", "molue", "okada", "okadas", "keke", "boda", "boda-boda", "bodaboda",
+     "tuk-tuk", "tuk-tuks", "tuktuk", "tuktuks", "auto-rickshaw", "auto-rickshaws", "autorickshaw", "bajaj",
+     "bajaji", "songthaew", "angkot", "bemo", "habal-habal"}
+)  # fmt: skip
+
+
 def metric_country(tokens: list[str]) -> bool:
     """Whether the text is set where speeds are signed in km/h: a road of such a country by its own
-    name, or a distance said in kilometres."""
-    return any(t in _METRIC_ROADS for t in tokens)
+    name, a distance said in kilometres, or a road user by a name only such countries use."""
+    return any(t in _METRIC_ROADS or t in _METRIC_ROAD_USERS for t in tokens)
 
 
 #: A length in feet or yards ("ten feet ahead", "by a foot", "a few yards"), as written (the reader's
@@ -308,10 +335,16 @@ def imperial_lengths(text: str) -> bool:
 #: km/h is signed too.)
 _MILES_ROADS = frozenset(
     {"carriageway", "carriageways", "interstate", "freeway", "freeways", "turnpike", "curb", "curbs", "sidewalk",
-     "sidewalks", "crosswalk", "crosswalks"}
+     "sidewalks", "crosswalk", "crosswalks", "sliproad", "sliproads", "lay-by", "lay-bys", "laybys", "stoplight",
+     "stoplights"}
 )  # fmt: skip
-#: Two-word American road names ("a divided highway", "the gas station", "a parking lot", "an 18-wheeler").
-_MILES_PAIRS = frozenset({("divided", "highway"), ("gas", "station"), ("parking", "lot"), ("18", "wheeler")})
+#: Two-word road names of Britain ("the slip road", "the hard shoulder": the motorway's, said in Britain,
+#: where Australians say on-ramp and emergency lane) and of America ("a divided highway", "the gas
+#: station", "a parking lot", "an 18-wheeler", "a state trooper", "the highway patrol").
+_MILES_PAIRS = frozenset(
+    {("divided", "highway"), ("gas", "station"), ("parking", "lot"), ("18", "wheeler"), ("slip", "road"),
+     ("slip", "roads"), ("hard", "shoulder"), ("state", "trooper"), ("state", "troopers"), ("highway", "patrol")}
+)  # fmt: skip
 #: Distances in miles ("for a mile", "two miles back"): a writer who measures the road in miles reads
 #: its speeds in miles per hour.
 _MILES = frozenset({"mile", "miles"})

@@ -538,9 +538,10 @@ def _adverb(word: str) -> bool:
     return word.endswith("ly") or word in ("hard", "fast", "straight", "just", "then")
 
 
-def _number(tokens: list[str], i: int, imperial: bool = False) -> tuple[str, float, int] | None:
+def _number(tokens: list[str], i: int, imperial: bool = False, metric: bool = False) -> tuple[str, float, int] | None:
     """(kind, value SI, tokens used) of a number at ``i``: a speed, a distance, or something to skip
-    (``imperial``: the text measures lengths in feet or yards, so a bare speed is in mph)."""
+    (``imperial``: the text measures lengths in feet or yards, so a bare speed is in mph; ``metric``: it
+    is set where km/h is signed, so a bare speed is in km/h)."""
     value = float(tokens[i])
     nxt = tokens[i + 1] if i + 1 < len(tokens) else ""
     if nxt in V.SPEED_UNITS:
@@ -578,12 +579,12 @@ def _number(tokens: list[str], i: int, imperial: bool = False) -> tuple[str, flo
     at = at or ego_speed.speedometer_reading(tokens, i)  # ("60 on the speedo", "the speedo said 45")
     if at and 3 <= value <= 250:
         # "at 120", "at a steady 50": in the unit said before
-        return "speed", value * Q.carried_unit(tokens, i, imperial), 1
+        return "speed", value * Q.carried_unit(tokens, i, imperial, metric), 1
     ends = nxt in ("", ".", ",", ";", "!", "?", "and", "then", "when", "while", "but")
     hedged = prev != tokens[i - 1]  # ("going well over 60 passes me": a speed, however the clause goes on)
     where = prev in _MOTION_BEFORE_SPEED and nxt in Q.WHERE_AFTER_SPEED  # ("going 40 down the high street")
     if (prev in _MOTION_BEFORE_SPEED or Q.after_ego(tokens, i)) and 3 <= value <= 250 and (ends or hedged or where):
-        return "speed", value * Q.carried_unit(tokens, i, imperial), 1
+        return "speed", value * Q.carried_unit(tokens, i, imperial, metric), 1
     return "unknown", value, 1
 
 
@@ -608,6 +609,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
     index) of ``text``; a word that is only a verb and unknown stays in its clause as an
     ``unknown_verb`` mention."""
     tokens = _tokens(text, brackets=True)
+    metric = Q.metric_country(tokens)  # ("in the ute": the ego's own, which framing names "the ego")
     clauses: list[tuple[str, list[_Mention]]] = [("sequence", [])]
     read_as: list[tuple[str, str]] = [
         (typed, read) for typed, read in zip(_tokens(text, spell=False, brackets=True), tokens) if typed != read
@@ -653,7 +655,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             continue
         if re.fullmatch(r"\d+(?:\.\d+)?", tok) and not (sides.lanes_away(tokens, i) or S.lanes_moved(tokens, i)):
             # (not "2 lanes to our left", "moved over 1 lane": a place or a move, not the road's lanes)
-            kind, value, used = _number(tokens, i, imperial)
+            kind, value, used = _number(tokens, i, imperial, metric)
             words = " ".join(tokens[i : i + used])
             if kind in ("speed", "distance", "speed_range") and Q.lateral(tokens, i, used):
                 kind = "skip"  # ("a lateral velocity of 1 m/s", "1.5 m clearance"): across the road, no travel
