@@ -460,3 +460,54 @@ def test_words_said_on_both_sides_change_no_unit(text, mph):
 )
 def test_a_small_number_before_a_dash_and_a_speed_is_a_label_not_a_range(text, kph):
     assert _ego(text) == pytest.approx(kph * KPH, rel=1e-3)
+
+
+# --- a speed the ego owns ("my 70") or is said with ("with me doing 50") ---------------------------------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("A motorbike flew past, much faster than my 70, and cut in front of me.", 70),
+        ("A car overtook me going well over my 80 km/h and cut in.", 80),
+        ("Some idiot came past at double our 50 and swerved in ahead of us.", 50),
+        ("The truck kept pace with my 90 km/h for a while, then drifted into my lane.", 90),
+        ("A van pulled out from the left with me doing about 50 km/h.", 50),
+        ("A kid ran out between parked cars, with us going maybe 30, and I braked hard.", 30),
+    ],
+    ids=["than-my", "over-my-unit", "double-our", "pace-with-my", "with-me-doing", "with-us-going"],
+)
+def test_a_speed_the_ego_owns_or_is_said_with_is_the_egos(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH)
+
+
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("I was pulling away when my 4 kids shouted and a cyclist hit the door.", 4),  # (a count)
+        ("A van overtook me doing 50 km/h and cut in.", 50),  # (the van's: it overtakes)
+        ("A cyclist rode beside me at my window at 20 km/h.", 20),  # (no number after "my": the cyclist's)
+        ("My 2 year old screamed as a cyclist swerved out at 15 km/h.", 2),  # (an age)
+    ],
+    ids=["my-count", "overtook-me-doing", "my-window", "my-age"],
+)
+def test_a_number_near_my_or_me_is_not_the_egos_speed(text, kph):
+    assert _ego(text) != pytest.approx(kph * KPH)
+
+
+# --- a speed limit said with a unit is the road's, not the ego's speed said beside it -------------------------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("I was doing 50 in a 60 km/h zone when a van pulled out.", 50),
+        ("I was only doing 25 mph in a 40 mph limit when a van pulled out.", 25 / 0.621371),
+        ("Doing about 40 km/h on a 60 km/h road, a cyclist swerved out in front of me.", 40),
+        ("In a 30 mph zone, I was doing 20 mph when a kid ran out.", 20 / 0.621371),
+        ("I was doing 30 mph, well under the 40 mph speed limit, when a dog ran out.", 30 / 0.621371),
+    ],
+    ids=["zone-bare", "limit", "road", "zone-first", "speed-limit"],
+)
+def test_a_limit_is_not_the_speed_said_beside_it(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH)
+
+
+def test_a_limit_said_alone_still_gives_the_egos_speed():
+    assert _ego("In a 30 mph zone a kid ran out between parked cars in front of me.") == pytest.approx(30 * MPH)

@@ -577,6 +577,7 @@ def _number(tokens: list[str], i: int, imperial: bool = False, metric: bool = Fa
     )  # ("speeds up to 80": the speed it reaches)
     at = prev in ("at", "doing", "about", "around", "of") or to_changed or Q.after_at(tokens, i) or Q.held_on(tokens, i)
     at = at or ego_speed.speedometer_reading(tokens, i)  # ("60 on the speedo", "the speedo said 45")
+    at = at or ego_speed.bare_owned(tokens, i)  # ("much faster than my 70")
     if at and 3 <= value <= 250:
         # "at 120", "at a steady 50": in the unit said before
         return "speed", value * Q.carried_unit(tokens, i, imperial, metric), 1
@@ -1477,6 +1478,8 @@ def _read(text: str) -> Reading:
     opened.update(ego_speed.party_at_the_wheel(scanned, speeds, read_words))  # ("Dad was driving at 80 km/h")
     egos_own = ego_speed.group_speeds(scanned, speeds)  # ("Platoon speed 80 km/h": the ego's formation)
     egos_own.update({i: True for i in speeds if ego_speed.speedometer_reading(scanned, i)})  # ("speedo said 45")
+    egos_own.update({i: True for i in speeds if ego_speed.owned(scanned, i)})  # ("much faster than my 70")
+    limits = ego_speed.limits(scanned, speeds)  # ("doing 50 in a 60 km/h zone": the road's, no one's speed)
     opened.update(ego_speed.opening_participles(scanned))  # ("Heading home at 50 km/h, ...": speeds of opening phrases)
     for link, mentions in clauses:
         named: list[tuple[_Actor | str, str]] = []  # (actor, role) in order: subject, prep, verb, participle
@@ -1500,6 +1503,9 @@ def _read(text: str) -> Reading:
                 prev = prev if m.value == "'s" else m
                 continue
             if m.slot == "modal":
+                continue
+            if m.slot == "speed" and m.start in limits:
+                prev = m
                 continue
             if m.slot == "speed" and ego_speed.impact_after_braking(scanned, m.start):
                 ignored.append(m.words)  # ("I braked but hit him at 10 mph": what was left at impact)
