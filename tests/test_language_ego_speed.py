@@ -511,3 +511,35 @@ def test_a_limit_is_not_the_speed_said_beside_it(text, kph):
 
 def test_a_limit_said_alone_still_gives_the_egos_speed():
     assert _ego("In a 30 mph zone a kid ran out between parked cars in front of me.") == pytest.approx(30 * MPH)
+
+
+# --- a motorway's free-flowing speed under 80 said bare: mph, where km/h signs a motorway at 100 or more ----------
+@pytest.mark.parametrize(
+    "text, mph",
+    [
+        ("On the motorway doing 70, a hatchback undertook me and cut across my front.", 70),
+        ("I was doing about 60 in lane two of the motorway when a lorry drifted over into me.", 60),
+        ("Motorway, clear run, sat at 70 in the middle lane when a van cut straight across.", 70),
+        ("Coming off the motorway at 65 when a car on the slip lane swerved in front of me.", 65),
+        ("doing 56 on the motorway in the artic and some idiot dives in front of me", 56),
+    ],
+    ids=["undertook", "lane-two", "clear-run", "coming-off", "artic"],
+)
+def test_a_bare_free_motorway_speed_under_80_is_mph(text, mph):
+    assert _ego(text) == pytest.approx(mph * MPH)
+
+
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("Heavy traffic on the motorway, I'm doing 60 and a courier van darts into my lane.", 60),
+        ("Motorway was jammed, we were crawling along at 50 when a truck pushed into our lane.", 50),
+        ("On the motorway doing 100, a van cut in front of me.", 100),
+        ("Doing 70 on the motorway in the ute when a truck drifted into my lane.", 70),
+        ("Rush hour on the motorway, doing 60 when a car cut in.", 60),
+        ("Doing 70 through the roadworks on the motorway when a van merged in front of me.", 70),
+    ],
+    ids=["heavy", "jammed", "hundred", "ute", "rush-hour", "roadworks"],
+)
+def test_a_bare_motorway_speed_in_slow_traffic_or_at_100_stays_kmh(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH)

@@ -286,7 +286,31 @@ def carried_unit(tokens: list[str], i: int, imperial: bool = False, metric: bool
             return V.SPEED_UNITS[tokens[k]]
     if metric or metric_country(tokens):
         return 1 / 3.6
-    return V.SPEED_UNITS["mph"] if imperial or miles_country(tokens) else 1 / 3.6
+    miles = imperial or miles_country(tokens) or free_motorway_speed(tokens, i)
+    return V.SPEED_UNITS["mph"] if miles else 1 / 3.6
+
+
+#: Words of slow traffic ("heavy traffic", "jammed", "rush hour", "roadworks"): at them a motorway's
+#: speed is anyone's, in either unit.
+_SLOW_TRAFFIC = frozenset(
+    {"heavy", "queue", "queues", "queuing", "queueing", "jam", "jammed", "congestion", "congested", "rush", "peak",
+     "crawling", "crawl", "stop-start", "roadworks", "works", "slow", "slow-moving", "busy", "gridlock", "tailback",
+     "tailbacks", "traffic-jam", "standstill"}
+)  # fmt: skip
+#: The lowest speed (km/h) a motorway is signed at where km/h is signed: a free-flowing motorway
+#: speed said bare below it is one in mph ("on the motorway doing 70": 70 mph, the British limit).
+_METRIC_MOTORWAY_KPH = 80
+
+
+def free_motorway_speed(tokens: list[str], i: int) -> bool:
+    """Whether the bare speed at ``i`` is one of free-flowing traffic on a motorway that only mph makes
+    a motorway speed: 50 to 79 on a "motorway" where no slow traffic is said. Why: where km/h is signed a
+    motorway runs at 100 or more, so a driver there who gives 70 is in a queue and says so; one who
+    gives 70 bare on a clear motorway drives in Britain."""
+    value = float(tokens[i])
+    if not 50 <= value < _METRIC_MOTORWAY_KPH or not any(t in ("motorway", "motorways") for t in tokens):
+        return False
+    return not any(t in _SLOW_TRAFFIC for t in tokens)
 
 
 #: Roads only countries that sign km/h have, by their own names (the German Autobahn and Bundesstrasse,
