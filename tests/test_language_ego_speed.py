@@ -543,3 +543,46 @@ def test_a_bare_free_motorway_speed_under_80_is_mph(text, mph):
 )
 def test_a_bare_motorway_speed_in_slow_traffic_or_at_100_stays_kmh(text, kph):
     assert _ego(text) == pytest.approx(kph * KPH)
+
+
+# --- a bare number after a speed's head, and a bound said with "than" ------------------------------------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("Ego initial speed: 50. A cyclist ahead brakes hard.", 50),
+        ("ego spd 60, lead car brakes hard in front.", 60),
+        ("Ego velocity = 40; a pedestrian steps out from the right.", 40),
+        ("Our speed was 30 when a pedestrian stepped out from the right.", 30),
+        ("Test vehicle speed of approx 70, a car cuts in from the left lane.", 70),
+    ],
+    ids=["initial-speed-colon", "spd", "velocity-equals", "our-speed-was", "speed-of-approx"],
+)
+def test_a_bare_number_after_a_speed_head_is_a_speed(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH)
+
+
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("I was doing no more than 50 when a pedestrian stepped out from the right.", 50),
+        ("I was going less than 30 when a dog ran out in front of me.", 30),
+        ("I was doing a bit over 40 when a van pulled out of a side road on the left.", 40),
+        ("We were going not more than 20 when a cyclist swerved out in front of us.", 20),
+        ("I was doing a little under 60 when a car cut in front of me.", 60),
+    ],
+    ids=["no-more-than", "less-than", "a-bit-over", "not-more-than", "a-little-under"],
+)
+def test_a_speed_bounded_with_than_or_a_bit_is_that_speed(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH)
+
+
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("Speed camera 3 flashed as a van pulled out in front of me at 40 km/h.", 3),  # (a camera's number)
+        ("More than 20 people saw a van pull out in front of me.", 20),  # (a count)
+    ],
+    ids=["speed-camera", "more-than-people"],
+)
+def test_a_number_after_a_speed_word_or_than_that_is_no_speed(text, kph):
+    assert _ego(text) != pytest.approx(kph * KPH)

@@ -49,13 +49,36 @@ APPROXIMATORS = frozenset(
 )
 
 
+#: Words that bound a number by a comparison ("no more than 50", "less than 30", "a bit over 40", "a
+#: little under 60"): the number is still the speed the words before them say.
+BOUNDS = frozenset({"than", "more", "less", "no", "not", "bit", "little", "fraction", "touch", "tad"})
+
+
 def before_hedge(tokens: list[str], i: int) -> str:
-    """The word before the number at ``i`` past its hedge ("doing at least 70": "at"; "going well
-    over 60": "going"), the plain word before it where there is none."""
+    """The word before the number at ``i`` past its hedge or bound ("doing at least 70": "at"; "going well
+    over 60": "going"; "doing no more than 50", "doing a bit over 40": "doing"), the plain word before it
+    where there is none."""
     k = i - 1
-    while k > 0 and tokens[k] in APPROXIMATORS:
+    while k > 0 and (
+        tokens[k] in APPROXIMATORS or tokens[k] in BOUNDS or (tokens[k] == "a" and tokens[k + 1] in BOUNDS)
+    ):
         k -= 1
     return tokens[k] if k >= 0 else ""
+
+
+#: Words between a speed's head and its number ("speed: 50", "velocity = 40", "speed was 30", "speed of
+#: approx 70"); "spd" is how a note shortens "speed".
+_HEAD_LINKS = frozenset({":", "=", "is", "was", "of", "at", "about", "around", "approx", "approximately", "~"})
+
+
+def after_speed_head(tokens: list[str], i: int) -> bool:
+    """Whether the bare number at ``i`` follows a speed's head ("Ego initial speed: 50", "ego spd 60", "our
+    speed was 30"): a speed, in the unit the text carries, as "at 50" is. Not a number that names a
+    thing the head names ("speed camera 3": the head is "camera")."""
+    k = i - 1
+    while k > 0 and k >= i - 3 and tokens[k] in _HEAD_LINKS:
+        k -= 1
+    return k >= 0 and tokens[k] in SPEED_HEADS | {"spd"}
 
 
 _STOPS = frozenset({".", ";", "!", "?"})

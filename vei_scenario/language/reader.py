@@ -577,7 +577,7 @@ def _number(tokens: list[str], i: int, imperial: bool = False, metric: bool = Fa
     )  # ("speeds up to 80": the speed it reaches)
     at = prev in ("at", "doing", "about", "around", "of") or to_changed or Q.after_at(tokens, i) or Q.held_on(tokens, i)
     at = at or ego_speed.speedometer_reading(tokens, i)  # ("60 on the speedo", "the speedo said 45")
-    at = at or ego_speed.bare_owned(tokens, i)  # ("much faster than my 70")
+    at = at or ego_speed.bare_owned(tokens, i) or Q.after_speed_head(tokens, i)  # ("than my 70", "speed: 50")
     if at and 3 <= value <= 250:
         # "at 120", "at a steady 50": in the unit said before
         return "speed", value * Q.carried_unit(tokens, i, imperial, metric), 1
