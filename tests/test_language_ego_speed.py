@@ -586,3 +586,34 @@ def test_a_speed_bounded_with_than_or_a_bit_is_that_speed(text, kph):
 )
 def test_a_number_after_a_speed_word_or_than_that_is_no_speed(text, kph):
     assert _ego(text) != pytest.approx(kph * KPH)
+
+
+# --- a note that opens with a state of standing and no subject: the narrator stands still ----------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Stationary at the lights when a scooter rider went into my door.",
+        "Sat at the red light when a cyclist rode into the back of me.",
+        "Waiting at the junction to turn right when a motorbike hit my front.",
+        "Queuing at the roundabout, a van rolled into the back of me.",
+        "Parked up outside the shop with the engine running when a van reversed into me.",
+        "Idling at the give way line when a bus clipped my wing.",
+    ],
+    ids=["stationary", "sat", "waiting", "queuing", "parked-up", "idling"],
+)
+def test_a_note_opening_with_a_state_of_standing_starts_the_ego_at_rest(text):
+    assert _ego(text) == 0.0
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Stationary traffic ahead on the motorway, a lorry behind me did not stop.",  # (the traffic's)
+        "Parked car on the left, a child runs out from behind it.",  # (the car's)
+        "Waiting pedestrians at the kerb; one steps out in front of the ego.",  # (theirs)
+        "Stopped just short of a cyclist who swerved out in front of me.",  # (a stop made)
+    ],
+    ids=["stationary-traffic", "parked-car", "waiting-pedestrians", "stopped-short"],
+)
+def test_a_state_of_something_named_or_a_stop_made_is_no_start_at_rest(text):
+    assert _ego(text) != 0.0

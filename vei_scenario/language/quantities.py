@@ -723,6 +723,8 @@ def ego_at_rest(clauses) -> bool:
             and not (m.slot == "unknown_verb" and m.words in _BE)  # ("I am stopped at ...")
         ]
         for k, m in enumerate(said):
+            if not k and not other and _subjectless_state(m, said[1:2]):
+                return True  # ("Stationary at the lights when ...", "Waiting at the junction to turn right, ...")
             other = other or (m.slot == "actor" and m.value != "ego")
             if m.slot == "actor" and m.prev in _SUBJECT_BEFORE:
                 subject = m
@@ -763,6 +765,23 @@ def _it_the_egos_vehicle(pronoun, subject) -> bool:
 #: What may stand before the ego in a note that opens with it ("Ego stationary at the lights.", "With
 #: my car parked at the kerb, ..."): the start of a sentence or clause, its article, or "with".
 _NOTE_OPENERS = frozenset({"", ".", ";", ":", ",", "!", "?", "-", "(", "the", "with"})
+
+
+#: Words a note's first sentence opens after: nothing, or the end of a heading.
+_TEXT_OPENERS = frozenset({"", ":"})
+
+
+def _subjectless_state(m, after) -> bool:
+    """Whether ``m`` opens the text, before anyone is named, with a state of standing and no subject
+    ("Stationary at the lights when a scooter hit my door", "Waiting at the junction to turn right when
+    ...", "Sat in the queue, a van ..."): the one left out is who tells it, the ego, as a participle
+    that opens a sentence is. Not a still word right before a word it modifies ("Parked car on the
+    left", "Stationary traffic ahead": said of that), nor one that is also a stop made ("Stopped just
+    short": an act). ``after``: the mention after it, if any."""
+    still = m.slot == "stationary" or (m.slot == "unknown_verb" and m.words in STILL_WORDS)  # ("Sat at ...")
+    if m.prev not in _TEXT_OPENERS or not still or m.words in _STOPS_MADE:
+        return False
+    return not (after and after[0].start == m.end)  # ("Stationary traffic ahead": said of what it names)
 
 
 def _verbless_state(ego, state) -> bool:
