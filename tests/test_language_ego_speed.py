@@ -612,8 +612,9 @@ def test_a_note_opening_with_a_state_of_standing_starts_the_ego_at_rest(text):
         "Parked car on the left, a child runs out from behind it.",  # (the car's)
         "Waiting pedestrians at the kerb; one steps out in front of the ego.",  # (theirs)
         "Stopped just short of a cyclist who swerved out in front of me.",  # (a stop made)
+        "Sat at the lights, green goes, I pull off and a van runs the red from my right.",  # (then sets off)
     ],
-    ids=["stationary-traffic", "parked-car", "waiting-pedestrians", "stopped-short"],
+    ids=["stationary-traffic", "parked-car", "waiting-pedestrians", "stopped-short", "then-pulls-off"],
 )
 def test_a_state_of_something_named_or_a_stop_made_is_no_start_at_rest(text):
     assert _ego(text) != 0.0

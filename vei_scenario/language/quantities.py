@@ -723,7 +723,7 @@ def ego_at_rest(clauses) -> bool:
             and not (m.slot == "unknown_verb" and m.words in _BE)  # ("I am stopped at ...")
         ]
         for k, m in enumerate(said):
-            if not k and not other and _subjectless_state(m, said[1:2]):
+            if not k and not other and _subjectless_state(m, said[1:]):
                 return True  # ("Stationary at the lights when ...", "Waiting at the junction to turn right, ...")
             other = other or (m.slot == "actor" and m.value != "ego")
             if m.slot == "actor" and m.prev in _SUBJECT_BEFORE:
@@ -777,11 +777,15 @@ def _subjectless_state(m, after) -> bool:
     ...", "Sat in the queue, a van ..."): the one left out is who tells it, the ego, as a participle
     that opens a sentence is. Not a still word right before a word it modifies ("Parked car on the
     left", "Stationary traffic ahead": said of that), nor one that is also a stop made ("Stopped just
-    short": an act). ``after``: the mention after it, if any."""
+    short": an act), nor where the narrator is named next, going on from it ("Sat at the lights, green goes,
+    I pull off, and ..."). ``after``: the mentions after it in its clause."""
     still = m.slot == "stationary" or (m.slot == "unknown_verb" and m.words in STILL_WORDS)  # ("Sat at ...")
     if m.prev not in _TEXT_OPENERS or not still or m.words in _STOPS_MADE:
         return False
-    return not (after and after[0].start == m.end)  # ("Stationary traffic ahead": said of what it names)
+    if after and after[0].start == m.end:  # ("Stationary traffic ahead": said of what it names)
+        return False
+    named = next((x for x in after if x.slot in ("actor", "pronoun")), None)
+    return not (named is not None and named.value == "ego")
 
 
 def _verbless_state(ego, state) -> bool:
