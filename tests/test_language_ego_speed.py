@@ -618,3 +618,30 @@ def test_a_note_opening_with_a_state_of_standing_starts_the_ego_at_rest(text):
 )
 def test_a_state_of_something_named_or_a_stop_made_is_no_start_at_rest(text):
     assert _ego(text) != 0.0
+
+
+# --- a choice of two bare speeds, in figures or in words: its middle ----------------------------------------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("I was doing 50 or 60 when a van pulled out from the left.", 55),
+        ("Going 40 or 50 past the school, a kid ran out in front of me.", 45),
+        ("I was doing about fifty or sixty when a van pulled out from the left.", 55),
+        ("We were going at thirty to forty when a dog ran out in front of us.", 35),
+    ],
+    ids=["or-figures", "going-or", "or-words", "to-words"],
+)
+def test_a_choice_of_two_bare_speeds_is_their_middle(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH)
+
+
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("At 2 or 3 in the afternoon I was doing 50 when a van pulled out.", 50),  # (a time)
+        ("I was doing 50, and 2 or 3 cyclists rode out in front of me.", 50),  # (a count after)
+    ],
+    ids=["clock", "count"],
+)
+def test_two_numbers_joined_by_or_that_are_no_speeds_stay(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH)

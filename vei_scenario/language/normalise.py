@@ -39,6 +39,9 @@ _UNIT_AFTER = re.compile(
 #: Words after which a bare number is a speed ("doing like thirty", "Ego at forty"): the reader reads
 #: a bare number after "at", "doing", "about" as km/h.
 _SPEED_BEFORE = re.compile(r"\b(at|doing|about|like|going|around|roughly|approximately)\s+$")
+#: The same words, then a number and "or"/"to" ("doing fifty or sixty", "at thirty to forty"): the
+#: second number of a choice of speeds is a speed as the first is.
+_CHOICE_BEFORE = re.compile(r"\b(?:at|doing|about|like|going|around|roughly|approximately)\s+[a-z\d-]+\s+(?:or|to)\s+$")
 
 #: Thousands a vehicle has done ("has about 380k on it", "with 200k on the clock"): a mileage, which "k"
 #: after a number of a verb of having says, and no speed ("doing 100k" is one).
@@ -82,7 +85,9 @@ def _numbers_in_words(text: str) -> str:
 
     def sub(m: re.Match) -> str:
         after = _UNIT_AFTER.match(text, m.end())
-        if after is None and _SPEED_BEFORE.search(text, max(0, m.start() - 8), m.start()):
+        before = _SPEED_BEFORE.search(text, max(0, m.start() - 8), m.start())
+        before = before or _CHOICE_BEFORE.search(text, max(0, m.start() - 40), m.start())
+        if after is None and before:
             value = _number_value(m.group(1))  # ("at forty": a speed, said without its unit)
             return str(value) if value is not None and value >= 15 else m.group(0)
         joined = "-" in text[m.end() : after.start(1)] if after is not None else False

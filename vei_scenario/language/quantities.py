@@ -120,12 +120,13 @@ _CHOICE_TO = re.compile(
     r"\b(at|about|around|roughly|approximately|approx|doing|going|travelling|traveling|of)\s+"
     r"(\d+(?:\.\d+)?)\s+to\s+(\d+(?:\.\d+)?)" + _UNITS_AHEAD
 )
-#: "doing 30-35", "going between 40 and 50", "travelling 60 to 70": a range said bare after a verb of
-#: going (or "at"), its unit the text's, with no clock, age or measure after it ("at 3-4 pm").
+#: "doing 30-35", "going between 40 and 50", "travelling 60 to 70", "doing 50 or 60": a range or a choice
+#: said bare after a verb of going (or "at"), its unit the text's, with no clock, age or measure after it
+#: ("at 3-4 pm").
 _BARE_RANGE = re.compile(
     r"\b(doing|going|travelling|traveling|driving|riding|cruising|at)"
     r"((?:\s+(?:somewhere|about|around|roughly|approximately|approx|maybe|like|between))*)\s+"
-    r"(\d+(?:\.\d+)?)\s*(-|\u2013|\u2014|/|to|and)\s*(\d+(?:\.\d+)?)\b"
+    r"(\d+(?:\.\d+)?)\s*(-|\u2013|\u2014|/|to|and|or)\s*(\d+(?:\.\d+)?)\b"
     r"(?!\s*(?:[:.]\d|am\b|pm\b|a\.m|p\.m|hours?\b|hrs\b|o'clock|%|years?\b|yrs\b|mins?\b|minutes\b|seconds?\b"
     r"|s\b|m\b|metres\b|meters\b|feet\b|ft\b|yards?\b|car\b|km\b|miles?\b))"
 )
