@@ -645,3 +645,32 @@ def test_a_choice_of_two_bare_speeds_is_their_middle(text, kph):
 )
 def test_two_numbers_joined_by_or_that_are_no_speeds_stay(text, kph):
     assert _ego(text) == pytest.approx(kph * KPH)
+
+
+# --- the cruise control's setting, and a number sat on said in words: the ego's speed ---------------------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("Cruise set to 100, a truck drifted into my lane from the left.", 100),
+        ("I had the cruise on 90 when a car cut in front of me.", 90),
+        ("Cruise control at 80 km/h and a lorry pulled out to overtake right in front of me.", 80),
+        ("Had cruise control set at 110 when a ute swerved into my lane.", 110),
+        ("Sat on a hundred in the left lane when a truck drifted into my lane.", 100),
+        ("We were sitting on seventy in lane two when a van cut across.", 70),
+    ],
+    ids=["cruise-set-to", "cruise-on", "cruise-control-at-unit", "cruise-control-set-at", "sat-on-words", "sitting-on"],
+)
+def test_the_cruise_setting_or_a_number_sat_on_is_the_egos_speed(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A van on cruise control at 90 km/h came up behind me and rear-ended me.",  # (the van's)
+        "We sat on the bus for 20 minutes when a car hit it.",  # (a time)
+    ],
+    ids=["vans-cruise", "sat-on-bus"],
+)
+def test_a_cruise_setting_of_another_or_a_time_is_not_the_egos_speed(text):
+    assert _ego(text) not in (pytest.approx(90 / 3.6), pytest.approx(20 / 3.6))

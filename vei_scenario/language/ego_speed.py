@@ -511,3 +511,19 @@ def limits(tokens: list[str], speeds: set[int]) -> set[int]:
         if any(start <= j < stop for j in speeds - named):
             out.add(i)
     return out
+
+
+#: Words between "cruise" and the speed it is set to ("cruise control set to 100", "cruise was on 90").
+_CRUISE_LINKS = frozenset({"control", "set", "to", "at", "on", "was", "is", "about", "around", "just"})
+
+
+def cruise_setting(tokens: list[str], i: int) -> bool:
+    """Whether the number at ``i`` is what the ego's cruise control is set to ("Cruise set to 100", "had the
+    cruise on 90", "cruise control at 80 km/h"): the speed the ego keeps. Not another road user's ("a van
+    on cruise control at 90": one named before "on")."""
+    k = i - 1
+    while k > 0 and k >= i - 4 and tokens[k] in _CRUISE_LINKS:
+        k -= 1
+    if k < 0 or k == i - 1 or tokens[k] != "cruise":
+        return False
+    return not (k >= 1 and tokens[k - 1] == "on")

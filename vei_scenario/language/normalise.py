@@ -36,9 +36,10 @@ _UNIT_AFTER = re.compile(
     r"\s*(?:-\s*)?(km/h|kph|kmh|mph|m/s|miles?\b|kilomet(?:er|re)s?\b|km\b|met(?:er|re)s?\b|m\b|seconds?\b|s\b"
     r"|second\b|lanes?\b|car lengths?\b|k(?:'s|s)?\b|klicks?\b|clicks\b|feet\b|ft\b|yards?\b|yds?\b|foot\b)"
 )
-#: Words after which a bare number is a speed ("doing like thirty", "Ego at forty"): the reader reads
-#: a bare number after "at", "doing", "about" as km/h.
-_SPEED_BEFORE = re.compile(r"\b(at|doing|about|like|going|around|roughly|approximately)\s+$")
+#: Words after which a bare number is a speed ("doing like thirty", "Ego at forty", "sat on seventy"): the
+#: reader reads a bare number after "at", "doing", "about" as km/h, and one after "on" where a verb of
+#: keeping a speed says so.
+_SPEED_BEFORE = re.compile(r"\b(at|doing|about|like|going|around|roughly|approximately|on)\s+$")
 #: The same words, then a number and "or"/"to" ("doing fifty or sixty", "at thirty to forty"): the
 #: second number of a choice of speeds is a speed as the first is.
 _CHOICE_BEFORE = re.compile(r"\b(?:at|doing|about|like|going|around|roughly|approximately)\s+[a-z\d-]+\s+(?:or|to)\s+$")

@@ -578,6 +578,7 @@ def _number(tokens: list[str], i: int, imperial: bool = False, metric: bool = Fa
     at = prev in ("at", "doing", "about", "around", "of") or to_changed or Q.after_at(tokens, i) or Q.held_on(tokens, i)
     at = at or ego_speed.speedometer_reading(tokens, i)  # ("60 on the speedo", "the speedo said 45")
     at = at or ego_speed.bare_owned(tokens, i) or Q.after_speed_head(tokens, i)  # ("than my 70", "speed: 50")
+    at = at or ego_speed.cruise_setting(tokens, i)  # ("Cruise set to 100")
     if at and 3 <= value <= 250:
         # "at 120", "at a steady 50": in the unit said before
         return "speed", value * Q.carried_unit(tokens, i, imperial, metric), 1
@@ -1479,6 +1480,7 @@ def _read(text: str) -> Reading:
     egos_own = ego_speed.group_speeds(scanned, speeds)  # ("Platoon speed 80 km/h": the ego's formation)
     egos_own.update({i: True for i in speeds if ego_speed.speedometer_reading(scanned, i)})  # ("speedo said 45")
     egos_own.update({i: True for i in speeds if ego_speed.owned(scanned, i)})  # ("much faster than my 70")
+    egos_own.update({i: True for i in speeds if ego_speed.cruise_setting(scanned, i)})  # ("cruise set to 100")
     limits = ego_speed.limits(scanned, speeds)  # ("doing 50 in a 60 km/h zone": the road's, no one's speed)
     opened.update(ego_speed.opening_participles(scanned))  # ("Heading home at 50 km/h, ...": speeds of opening phrases)
     for link, mentions in clauses:
