@@ -383,3 +383,294 @@ def test_a_speed_right_after_the_ego_as_an_object_is_the_egos(text, kph):
 )
 def test_a_speed_not_right_after_the_ego_object_is_not_the_egos(text):
     assert all(_ego(text) != pytest.approx(v * KPH) for v in (6, 30))
+
+
+# --- the writer's country by the words only one side of the mph / km/h divide uses for road things ----------
+@pytest.mark.parametrize(
+    "text, mph",
+    [
+        ("Doing 60 in lane one when a van shot off the slip road right in front of me.", 60),
+        ("I was doing about 50 when a lorry pulled out of a lay-by just ahead of me.", 50),
+        ("Was doing 70 when a car parked on the hard shoulder pulled straight out in front of me.", 70),
+        ("Coming down the sliproad doing 40, a van in the inside lane swerved across into me.", 40),
+        ("going 30 through the stoplight when a kid on a bike came across from the right", 30),
+        ("Doing maybe 45 and a state trooper's cruiser pulled out of the median in front of me.", 45),
+    ],
+    ids=["slip-road", "lay-by", "hard-shoulder", "sliproad", "stoplight", "trooper"],
+)
+def test_a_bare_speed_by_a_british_or_american_road_word_is_mph(text, mph):
+    assert _ego(text) == pytest.approx(mph * MPH)
+
+
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("Doing 60 on the freeway in the ute when a semi drifted into my lane.", 60),
+        ("I was doing 40 near the curb when an okada cut right in front of me.", 40),
+        ("Going about 30 past the crosswalk when a tuk-tuk pulled out from the left.", 30),
+        ("A danfo swerved into my lane on the expressway; I was doing 70 on the wet carriageway.", 70),
+        ("doing 50 on the freeway and a matatu overtook me then cut in sharp", 50),
+        ("Doing 60 down the slip road when a bakkie pulled out in front of me.", 60),
+    ],
+    ids=["ute-freeway", "okada-curb", "tuk-tuk-crosswalk", "danfo-carriageway", "matatu-freeway", "bakkie-slip"],
+)
+def test_a_bare_speed_beside_a_road_user_only_km_h_countries_have_stays_kmh(text, kph):
+    """A minibus taxi, a motorbike taxi, a three-wheeler or a pickup by a name only countries that sign km/h
+    use sets the text there, whatever road word it shares with Britain or America."""
+    assert _ego(text) == pytest.approx(kph * KPH)
+
+
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("Doing about 80 klicks on the freeway when a semi came across the centre line.", 80),
+        ("I was at 40 klicks near the curb when a cyclist swerved out.", 40),
+        ("maybe 50 clicks, then a car pulled out of the gas station in front of me", 50),
+    ],
+    ids=["klicks-freeway", "klicks-curb", "clicks"],
+)
+def test_klicks_are_kilometres_an_hour(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH)
+
+
+@pytest.mark.parametrize(
+    "text, mph",
+    [
+        ("Doing 40 on the slip road, a van cut in about 10 metres ahead of me.", 40),  # (metres: British too)
+        ("Doing 50 past the lay-by when a pickup truck pulled out on the left.", 50),  # (a pickup: said anywhere)
+        ("I was doing 30 on the high street when an auto parts van pulled out.", 30),  # (no auto-rickshaw)
+    ],
+    ids=["slip-metres", "lay-by-pickup", "auto-parts"],
+)
+def test_words_said_on_both_sides_change_no_unit(text, mph):
+    assert _ego(text) == pytest.approx(mph * MPH)
+
+
+# --- a label numbered before a dash is no range -------------------------------------------------------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("Run 3 - 60 km/h, a car cuts in from the left lane 15 m ahead.", 60),
+        ("Test 2 – 40 km/h, pedestrian crossing from the right.", 40),
+        ("Case 1 - 50 km/h: cyclist ahead brakes hard.", 50),
+        ("I was doing 30-40 km/h when a bus pulled out.", 35),  # (a range still)
+        ("I was doing 20 - 25 mph when a dog ran out.", 22.5 / 0.621371),  # (a range still)
+    ],
+    ids=["run-dash", "test-en-dash", "case-dash", "range", "range-spaced"],
+)
+def test_a_small_number_before_a_dash_and_a_speed_is_a_label_not_a_range(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH, rel=1e-3)
+
+
+# --- a speed the ego owns ("my 70") or is said with ("with me doing 50") ---------------------------------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("A motorbike flew past, much faster than my 70, and cut in front of me.", 70),
+        ("A car overtook me going well over my 80 km/h and cut in.", 80),
+        ("Some idiot came past at double our 50 and swerved in ahead of us.", 50),
+        ("The truck kept pace with my 90 km/h for a while, then drifted into my lane.", 90),
+        ("A van pulled out from the left with me doing about 50 km/h.", 50),
+        ("A kid ran out between parked cars, with us going maybe 30, and I braked hard.", 30),
+    ],
+    ids=["than-my", "over-my-unit", "double-our", "pace-with-my", "with-me-doing", "with-us-going"],
+)
+def test_a_speed_the_ego_owns_or_is_said_with_is_the_egos(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH)
+
+
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("I was pulling away when my 4 kids shouted and a cyclist hit the door.", 4),  # (a count)
+        ("A van overtook me doing 50 km/h and cut in.", 50),  # (the van's: it overtakes)
+        ("A cyclist rode beside me at my window at 20 km/h.", 20),  # (no number after "my": the cyclist's)
+        ("My 2 year old screamed as a cyclist swerved out at 15 km/h.", 2),  # (an age)
+    ],
+    ids=["my-count", "overtook-me-doing", "my-window", "my-age"],
+)
+def test_a_number_near_my_or_me_is_not_the_egos_speed(text, kph):
+    assert _ego(text) != pytest.approx(kph * KPH)
+
+
+# --- a speed limit said with a unit is the road's, not the ego's speed said beside it -------------------------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("I was doing 50 in a 60 km/h zone when a van pulled out.", 50),
+        ("I was only doing 25 mph in a 40 mph limit when a van pulled out.", 25 / 0.621371),
+        ("Doing about 40 km/h on a 60 km/h road, a cyclist swerved out in front of me.", 40),
+        ("In a 30 mph zone, I was doing 20 mph when a kid ran out.", 20 / 0.621371),
+        ("I was doing 30 mph, well under the 40 mph speed limit, when a dog ran out.", 30 / 0.621371),
+    ],
+    ids=["zone-bare", "limit", "road", "zone-first", "speed-limit"],
+)
+def test_a_limit_is_not_the_speed_said_beside_it(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH)
+
+
+def test_a_limit_said_alone_still_gives_the_egos_speed():
+    assert _ego("In a 30 mph zone a kid ran out between parked cars in front of me.") == pytest.approx(30 * MPH)
+
+
+# --- a motorway's free-flowing speed under 80 said bare: mph, where km/h signs a motorway at 100 or more ----------
+@pytest.mark.parametrize(
+    "text, mph",
+    [
+        ("On the motorway doing 70, a hatchback undertook me and cut across my front.", 70),
+        ("I was doing about 60 in lane two of the motorway when a lorry drifted over into me.", 60),
+        ("Motorway, clear run, sat at 70 in the middle lane when a van cut straight across.", 70),
+        ("Coming off the motorway at 65 when a car on the slip lane swerved in front of me.", 65),
+        ("doing 56 on the motorway in the artic and some idiot dives in front of me", 56),
+    ],
+    ids=["undertook", "lane-two", "clear-run", "coming-off", "artic"],
+)
+def test_a_bare_free_motorway_speed_under_80_is_mph(text, mph):
+    assert _ego(text) == pytest.approx(mph * MPH)
+
+
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("Heavy traffic on the motorway, I'm doing 60 and a courier van darts into my lane.", 60),
+        ("Motorway was jammed, we were crawling along at 50 when a truck pushed into our lane.", 50),
+        ("On the motorway doing 100, a van cut in front of me.", 100),
+        ("Doing 70 on the motorway in the ute when a truck drifted into my lane.", 70),
+        ("Rush hour on the motorway, doing 60 when a car cut in.", 60),
+        ("Doing 70 through the roadworks on the motorway when a van merged in front of me.", 70),
+    ],
+    ids=["heavy", "jammed", "hundred", "ute", "rush-hour", "roadworks"],
+)
+def test_a_bare_motorway_speed_in_slow_traffic_or_at_100_stays_kmh(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH)
+
+
+# --- a bare number after a speed's head, and a bound said with "than" ------------------------------------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("Ego initial speed: 50. A cyclist ahead brakes hard.", 50),
+        ("ego spd 60, lead car brakes hard in front.", 60),
+        ("Ego velocity = 40; a pedestrian steps out from the right.", 40),
+        ("Our speed was 30 when a pedestrian stepped out from the right.", 30),
+        ("Test vehicle speed of approx 70, a car cuts in from the left lane.", 70),
+    ],
+    ids=["initial-speed-colon", "spd", "velocity-equals", "our-speed-was", "speed-of-approx"],
+)
+def test_a_bare_number_after_a_speed_head_is_a_speed(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH)
+
+
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("I was doing no more than 50 when a pedestrian stepped out from the right.", 50),
+        ("I was going less than 30 when a dog ran out in front of me.", 30),
+        ("I was doing a bit over 40 when a van pulled out of a side road on the left.", 40),
+        ("We were going not more than 20 when a cyclist swerved out in front of us.", 20),
+        ("I was doing a little under 60 when a car cut in front of me.", 60),
+    ],
+    ids=["no-more-than", "less-than", "a-bit-over", "not-more-than", "a-little-under"],
+)
+def test_a_speed_bounded_with_than_or_a_bit_is_that_speed(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH)
+
+
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("Speed camera 3 flashed as a van pulled out in front of me at 40 km/h.", 3),  # (a camera's number)
+        ("More than 20 people saw a van pull out in front of me.", 20),  # (a count)
+    ],
+    ids=["speed-camera", "more-than-people"],
+)
+def test_a_number_after_a_speed_word_or_than_that_is_no_speed(text, kph):
+    assert _ego(text) != pytest.approx(kph * KPH)
+
+
+# --- a note that opens with a state of standing and no subject: the narrator stands still ----------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Stationary at the lights when a scooter rider went into my door.",
+        "Sat at the red light when a cyclist rode into the back of me.",
+        "Waiting at the junction to turn right when a motorbike hit my front.",
+        "Queuing at the roundabout, a van rolled into the back of me.",
+        "Parked up outside the shop with the engine running when a van reversed into me.",
+        "Idling at the give way line when a bus clipped my wing.",
+    ],
+    ids=["stationary", "sat", "waiting", "queuing", "parked-up", "idling"],
+)
+def test_a_note_opening_with_a_state_of_standing_starts_the_ego_at_rest(text):
+    assert _ego(text) == 0.0
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Stationary traffic ahead on the motorway, a lorry behind me did not stop.",  # (the traffic's)
+        "Parked car on the left, a child runs out from behind it.",  # (the car's)
+        "Waiting pedestrians at the kerb; one steps out in front of the ego.",  # (theirs)
+        "Stopped just short of a cyclist who swerved out in front of me.",  # (a stop made)
+        "Sat at the lights, green goes, I pull off and a van runs the red from my right.",  # (then sets off)
+    ],
+    ids=["stationary-traffic", "parked-car", "waiting-pedestrians", "stopped-short", "then-pulls-off"],
+)
+def test_a_state_of_something_named_or_a_stop_made_is_no_start_at_rest(text):
+    assert _ego(text) != 0.0
+
+
+# --- a choice of two bare speeds, in figures or in words: its middle ----------------------------------------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("I was doing 50 or 60 when a van pulled out from the left.", 55),
+        ("Going 40 or 50 past the school, a kid ran out in front of me.", 45),
+        ("I was doing about fifty or sixty when a van pulled out from the left.", 55),
+        ("We were going at thirty to forty when a dog ran out in front of us.", 35),
+    ],
+    ids=["or-figures", "going-or", "or-words", "to-words"],
+)
+def test_a_choice_of_two_bare_speeds_is_their_middle(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH)
+
+
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("At 2 or 3 in the afternoon I was doing 50 when a van pulled out.", 50),  # (a time)
+        ("I was doing 50, and 2 or 3 cyclists rode out in front of me.", 50),  # (a count after)
+    ],
+    ids=["clock", "count"],
+)
+def test_two_numbers_joined_by_or_that_are_no_speeds_stay(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH)
+
+
+# --- the cruise control's setting, and a number sat on said in words: the ego's speed ---------------------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("Cruise set to 100, a truck drifted into my lane from the left.", 100),
+        ("I had the cruise on 90 when a car cut in front of me.", 90),
+        ("Cruise control at 80 km/h and a lorry pulled out to overtake right in front of me.", 80),
+        ("Had cruise control set at 110 when a ute swerved into my lane.", 110),
+        ("Sat on a hundred in the left lane when a truck drifted into my lane.", 100),
+        ("We were sitting on seventy in lane two when a van cut across.", 70),
+    ],
+    ids=["cruise-set-to", "cruise-on", "cruise-control-at-unit", "cruise-control-set-at", "sat-on-words", "sitting-on"],
+)
+def test_the_cruise_setting_or_a_number_sat_on_is_the_egos_speed(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A van on cruise control at 90 km/h came up behind me and rear-ended me.",  # (the van's)
+        "We sat on the bus for 20 minutes when a car hit it.",  # (a time)
+    ],
+    ids=["vans-cruise", "sat-on-bus"],
+)
+def test_a_cruise_setting_of_another_or_a_time_is_not_the_egos_speed(text):
+    assert _ego(text) not in (pytest.approx(90 / 3.6), pytest.approx(20 / 3.6))

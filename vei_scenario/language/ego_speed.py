@@ -483,3 +483,70 @@ def right_after_the_ego(clauses) -> float | None:
             if before.slot == "actor" and before.value == "ego" and m.slot == "speed" and m.start == before.end:
                 return m.value
     return None
+
+
+#: Words before "my"/"our" and a bare number that make the number a speed compared with or kept to ("faster
+#: than my 70", "at my 50", "double our 50", "kept pace with my 90").
+_BEFORE_OWNED = frozenset(
+    {"than", "at", "over", "under", "above", "below", "past", "beyond", "twice", "double", "with"}
+)
+_OWNERS = frozenset({"my", "our"})
+#: Words after which a bare number ends its phrase ("than my 70, and ...", "our 50.").
+_OWNED_ENDS = frozenset({"", ".", ",", ";", "!", "?", "and", "then", "when", "while", "but", "for", ")"})
+
+
+def owned(tokens: list[str], i: int) -> bool:
+    """Whether the speed at ``i`` is said as the ego's own, "my"/"our" right before it ("much faster than my 70",
+    "well over my 80 km/h", "at double our 50"): the narrator's speed, however the sentence goes on about
+    another road user. (A count or an age has no speed's unit nor a comparison before it: "my 2 kids".)"""
+    return i >= 1 and tokens[i - 1] in _OWNERS
+
+
+def bare_owned(tokens: list[str], i: int) -> bool:
+    """Whether the bare number at ``i`` is a speed by the way the ego owns it: "my"/"our" before it, a
+    comparison or "at" before that, and its phrase ending there ("faster than my 70, ...", "at our 50.")."""
+    nxt = tokens[i + 1] if i + 1 < len(tokens) else ""
+    return i >= 2 and owned(tokens, i) and tokens[i - 2] in _BEFORE_OWNED and nxt in _OWNED_ENDS
+
+
+#: Nouns a speed with its unit names a limit of, after an article ("a 60 km/h zone", "the 40 mph limit").
+_LIMITED = frozenset({"zone", "limit", "limits", "area", "road", "street", "stretch", "section", "sign"})
+
+
+def limits(tokens: list[str], speeds: set[int]) -> set[int]:
+    """The speeds (by their index in ``speeds``) that name a road's limit ("in a 60 km/h zone", "on a 40 mph
+    road", "the 30 mph speed limit") in a sentence that says another speed: the one the other speed is
+    said beside, a speed someone goes at, not a speed of its own ("I was doing 50 in a 60 km/h zone": 50).
+    A limit said alone stays a speed (the reader reads it as the speed traffic keeps there)."""
+    named = set()
+    for i in speeds:
+        end = i + 1 + (i + 1 < len(tokens) and tokens[i + 1] in V.SPEED_UNITS)
+        end += end < len(tokens) and tokens[end] == "speed"
+        if i and tokens[i - 1] in ("a", "an", "the") and end < len(tokens) and tokens[end] in _LIMITED:
+            named.add(i)
+    out = set()
+    for i in named:
+        start, stop = i, i
+        while start > 0 and tokens[start - 1] not in SENTENCE_END:
+            start -= 1
+        while stop < len(tokens) and tokens[stop] not in SENTENCE_END:
+            stop += 1
+        if any(start <= j < stop for j in speeds - named):
+            out.add(i)
+    return out
+
+
+#: Words between "cruise" and the speed it is set to ("cruise control set to 100", "cruise was on 90").
+_CRUISE_LINKS = frozenset({"control", "set", "to", "at", "on", "was", "is", "about", "around", "just"})
+
+
+def cruise_setting(tokens: list[str], i: int) -> bool:
+    """Whether the number at ``i`` is what the ego's cruise control is set to ("Cruise set to 100", "had the
+    cruise on 90", "cruise control at 80 km/h"): the speed the ego keeps. Not another road user's ("a van
+    on cruise control at 90": one named before "on")."""
+    k = i - 1
+    while k > 0 and k >= i - 4 and tokens[k] in _CRUISE_LINKS:
+        k -= 1
+    if k < 0 or k == i - 1 or tokens[k] != "cruise":
+        return False
+    return not (k >= 1 and tokens[k - 1] == "on")

@@ -34,11 +34,15 @@ _NUMBER = re.compile(
 #: Units after which a number in words is a quantity (its unit words as the reader reads them).
 _UNIT_AFTER = re.compile(
     r"\s*(?:-\s*)?(km/h|kph|kmh|mph|m/s|miles?\b|kilomet(?:er|re)s?\b|km\b|met(?:er|re)s?\b|m\b|seconds?\b|s\b"
-    r"|second\b|lanes?\b|car lengths?\b|k(?:'s|s)?\b|feet\b|ft\b|yards?\b|yds?\b|foot\b)"
+    r"|second\b|lanes?\b|car lengths?\b|k(?:'s|s)?\b|klicks?\b|clicks\b|feet\b|ft\b|yards?\b|yds?\b|foot\b)"
 )
-#: Words after which a bare number is a speed ("doing like thirty", "Ego at forty"): the reader reads
-#: a bare number after "at", "doing", "about" as km/h.
-_SPEED_BEFORE = re.compile(r"\b(at|doing|about|like|going|around|roughly|approximately)\s+$")
+#: Words after which a bare number is a speed ("doing like thirty", "Ego at forty", "sat on seventy"): the
+#: reader reads a bare number after "at", "doing", "about" as km/h, and one after "on" where a verb of
+#: keeping a speed says so.
+_SPEED_BEFORE = re.compile(r"\b(at|doing|about|like|going|around|roughly|approximately|on)\s+$")
+#: The same words, then a number and "or"/"to" ("doing fifty or sixty", "at thirty to forty"): the
+#: second number of a choice of speeds is a speed as the first is.
+_CHOICE_BEFORE = re.compile(r"\b(?:at|doing|about|like|going|around|roughly|approximately)\s+[a-z\d-]+\s+(?:or|to)\s+$")
 
 #: Thousands a vehicle has done ("has about 380k on it", "with 200k on the clock"): a mileage, which "k"
 #: after a number of a verb of having says, and no speed ("doing 100k" is one).
@@ -53,6 +57,7 @@ _UNITS = [
     (_MILEAGE, r"\1\g<2>000"),  # ("has about 380k on it": thousands had, no speed)
     # ("50 k's": spoken km/h; not a video's resolution: "4K dashcam")
     (re.compile(r"(\d)\s*(?:kph|kmh|k's|ks|k)(?![\w'])(?!\s*(?:dash|video|footage|cam|hdr|uhd))"), r"\1 km/h"),
+    (re.compile(r"(\d)\s*(?:klicks?|clicks)\b"), r"\1 km/h"),  # ("80 klicks": kilometres, the Canadian's km/h)
     (re.compile(r"m/s\s*\^\s*2|m/s/s|m/sec\^?2"), "m/s²"),  # ("decel 6 m/s^2": an acceleration)
     (re.compile(r"(\d)(km/h|mph|m/s|m)\b"), r"\1 \2"),
 ]
@@ -81,7 +86,9 @@ def _numbers_in_words(text: str) -> str:
 
     def sub(m: re.Match) -> str:
         after = _UNIT_AFTER.match(text, m.end())
-        if after is None and _SPEED_BEFORE.search(text, max(0, m.start() - 8), m.start()):
+        before = _SPEED_BEFORE.search(text, max(0, m.start() - 8), m.start())
+        before = before or _CHOICE_BEFORE.search(text, max(0, m.start() - 40), m.start())
+        if after is None and before:
             value = _number_value(m.group(1))  # ("at forty": a speed, said without its unit)
             return str(value) if value is not None and value >= 15 else m.group(0)
         joined = "-" in text[m.end() : after.start(1)] if after is not None else False

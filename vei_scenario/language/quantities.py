@@ -49,13 +49,36 @@ APPROXIMATORS = frozenset(
 )
 
 
+#: Words that bound a number by a comparison ("no more than 50", "less than 30", "a bit over 40", "a
+#: little under 60"): the number is still the speed the words before them say.
+BOUNDS = frozenset({"than", "more", "less", "no", "not", "bit", "little", "fraction", "touch", "tad"})
+
+
 def before_hedge(tokens: list[str], i: int) -> str:
-    """The word before the number at ``i`` past its hedge ("doing at least 70": "at"; "going well
-    over 60": "going"), the plain word before it where there is none."""
+    """The word before the number at ``i`` past its hedge or bound ("doing at least 70": "at"; "going well
+    over 60": "going"; "doing no more than 50", "doing a bit over 40": "doing"), the plain word before it
+    where there is none."""
     k = i - 1
-    while k > 0 and tokens[k] in APPROXIMATORS:
+    while k > 0 and (
+        tokens[k] in APPROXIMATORS or tokens[k] in BOUNDS or (tokens[k] == "a" and tokens[k + 1] in BOUNDS)
+    ):
         k -= 1
     return tokens[k] if k >= 0 else ""
+
+
+#: Words between a speed's head and its number ("speed: 50", "velocity = 40", "speed was 30", "speed of
+#: approx 70"); "spd" is how a note shortens "speed".
+_HEAD_LINKS = frozenset({":", "=", "is", "was", "of", "at", "about", "around", "approx", "approximately", "~"})
+
+
+def after_speed_head(tokens: list[str], i: int) -> bool:
+    """Whether the bare number at ``i`` follows a speed's head ("Ego initial speed: 50", "ego spd 60", "our
+    speed was 30"): a speed, in the unit the text carries, as "at 50" is. Not a number that names a
+    thing the head names ("speed camera 3": the head is "camera")."""
+    k = i - 1
+    while k > 0 and k >= i - 3 and tokens[k] in _HEAD_LINKS:
+        k -= 1
+    return k >= 0 and tokens[k] in SPEED_HEADS | {"spd"}
 
 
 _STOPS = frozenset({".", ";", "!", "?"})
@@ -97,12 +120,13 @@ _CHOICE_TO = re.compile(
     r"\b(at|about|around|roughly|approximately|approx|doing|going|travelling|traveling|of)\s+"
     r"(\d+(?:\.\d+)?)\s+to\s+(\d+(?:\.\d+)?)" + _UNITS_AHEAD
 )
-#: "doing 30-35", "going between 40 and 50", "travelling 60 to 70": a range said bare after a verb of
-#: going (or "at"), its unit the text's, with no clock, age or measure after it ("at 3-4 pm").
+#: "doing 30-35", "going between 40 and 50", "travelling 60 to 70", "doing 50 or 60": a range or a choice
+#: said bare after a verb of going (or "at"), its unit the text's, with no clock, age or measure after it
+#: ("at 3-4 pm").
 _BARE_RANGE = re.compile(
     r"\b(doing|going|travelling|traveling|driving|riding|cruising|at)"
     r"((?:\s+(?:somewhere|about|around|roughly|approximately|approx|maybe|like|between))*)\s+"
-    r"(\d+(?:\.\d+)?)\s*(-|\u2013|\u2014|/|to|and)\s*(\d+(?:\.\d+)?)\b"
+    r"(\d+(?:\.\d+)?)\s*(-|\u2013|\u2014|/|to|and|or)\s*(\d+(?:\.\d+)?)\b"
     r"(?!\s*(?:[:.]\d|am\b|pm\b|a\.m|p\.m|hours?\b|hrs\b|o'clock|%|years?\b|yrs\b|mins?\b|minutes\b|seconds?\b"
     r"|s\b|m\b|metres\b|meters\b|feet\b|ft\b|yards?\b|car\b|km\b|miles?\b))"
 )
@@ -144,6 +168,17 @@ def citations(text: str) -> str:
     return _CITATION.sub(" ", text)
 
 
+_SPEED_AFTER = re.compile(r"\s*(?:km/h|kph|kmh|mph|m/s)\b")
+
+
+def _a_label_before_a_speed(m: re.Match) -> bool:
+    """Whether a range ``m`` of :data:`_RANGE` is a numbered label, a dash, then a speed ("Run 3 - 60 km/h",
+    "Test 2 – 40 km/h"): no range of speeds spans more than twice its low end and ten, as a bare one
+    may not either (:func:`_bare_range`)."""
+    low, high = float(m.group(1)), float(m.group(2))
+    return _SPEED_AFTER.match(m.string, m.end()) is not None and high > 2 * low + 10
+
+
 def ranges(text: str) -> str:
     """Each range of a quantity in the normalised ``text`` as its middle, approximately ("20-30 mph":
     "about 25 mph"): a writer giving a range means a value within it, and the middle is the one that
@@ -161,6 +196,8 @@ def ranges(text: str) -> str:
     def middle(m: re.Match) -> str:
         if not m.group(0).startswith("between") and " and" in m.group(0):
             return m.group(0)  # ("slows to 30 and 20 m later": a list, not a range)
+        if _a_label_before_a_speed(m):
+            return m.group(0)
         value = (float(m.group(1)) + float(m.group(2))) / 2
         return f"about {value:g} "
 
@@ -257,21 +294,47 @@ def after_ego(tokens: list[str], i: int) -> bool:
 Mentions = Callable[[int], "int | None"]
 
 
-def carried_unit(tokens: list[str], i: int, imperial: bool = False) -> float:
+def carried_unit(tokens: list[str], i: int, imperial: bool = False, metric: bool = False) -> float:
     """The factor to m/s of a bare speed at ``i`` ("I'm at 50"): the unit of the last speed said with
     one before it, else of the first said after it, else mph on a road of a country that signs miles
     (:func:`miles_country`; ``imperial``: the text measured a length in feet or yards, see
     :func:`imperial_lengths`), else km/h (the unit of a test engineer who gives none; a motorway says
-    neither: in heavy traffic 60 km/h is as likely there as 60 mph)."""
+    neither: in heavy traffic 60 km/h is as likely there as 60 mph). ``metric``: the text as written was
+    set where km/h is signed (:func:`metric_country` of its tokens before the reader named the ego's
+    own vehicle "the ego": "in the ute")."""
     for k in range(i - 1, 0, -1):
         if tokens[k] in V.SPEED_UNITS and tokens[k - 1].replace(".", "", 1).isdigit():
             return V.SPEED_UNITS[tokens[k]]
     for k in range(i + 1, len(tokens)):  # none before: the one said after it ("at 30 and ... 20 mph")
         if tokens[k] in V.SPEED_UNITS and tokens[k - 1].replace(".", "", 1).isdigit():
             return V.SPEED_UNITS[tokens[k]]
-    if metric_country(tokens):
+    if metric or metric_country(tokens):
         return 1 / 3.6
-    return V.SPEED_UNITS["mph"] if imperial or miles_country(tokens) else 1 / 3.6
+    miles = imperial or miles_country(tokens) or free_motorway_speed(tokens, i)
+    return V.SPEED_UNITS["mph"] if miles else 1 / 3.6
+
+
+#: Words of slow traffic ("heavy traffic", "jammed", "rush hour", "roadworks"): at them a motorway's
+#: speed is anyone's, in either unit.
+_SLOW_TRAFFIC = frozenset(
+    {"heavy", "queue", "queues", "queuing", "queueing", "jam", "jammed", "congestion", "congested", "rush", "peak",
+     "crawling", "crawl", "stop-start", "roadworks", "works", "slow", "slow-moving", "busy", "gridlock", "tailback",
+     "tailbacks", "traffic-jam", "standstill"}
+)  # fmt: skip
+#: The lowest speed (km/h) a motorway is signed at where km/h is signed: a free-flowing motorway
+#: speed said bare below it is one in mph ("on the motorway doing 70": 70 mph, the British limit).
+_METRIC_MOTORWAY_KPH = 80
+
+
+def free_motorway_speed(tokens: list[str], i: int) -> bool:
+    """Whether the bare speed at ``i`` is one of free-flowing traffic on a motorway that only mph makes
+    a motorway speed: 50 to 79 on a "motorway" where no slow traffic is said. Why: where km/h is signed a
+    motorway runs at 100 or more, so a driver there who gives 70 is in a queue and says so; one who
+    gives 70 bare on a clear motorway drives in Britain."""
+    value = float(tokens[i])
+    if not 50 <= value < _METRIC_MOTORWAY_KPH or not any(t in ("motorway", "motorways") for t in tokens):
+        return False
+    return not any(t in _SLOW_TRAFFIC for t in tokens)
 
 
 #: Roads only countries that sign km/h have, by their own names (the German Autobahn and Bundesstrasse,
@@ -282,10 +345,22 @@ _METRIC_ROADS = frozenset(
 )
 
 
+#: Road users by names said only where speeds are signed in km/h: the pickup of Australia and South
+#: Africa, the minibus taxis of Africa and the Philippines, the motorbike taxis of Africa, the
+#: three-wheelers of South and South-East Asia. Who names one tells of the traffic there, whatever road
+#: word the text shares with Britain or America ("the freeway", "the curb", "the carriageway").
+_METRIC_ROAD_USERS = frozenset(
+    {"ute", "utes", "bakkie", "bakkies", "kombi", "kombis", "matatu", "matatus", "dala-dala", "jeepney", "jeepneys",
+     "trotro", "tro-tro", "danfo", "danfos", "molue", "okada", "okadas", "keke", "boda", "boda-boda", "bodaboda",
+     "tuk-tuk", "tuk-tuks", "tuktuk", "tuktuks", "auto-rickshaw", "auto-rickshaws", "autorickshaw", "bajaj",
+     "bajaji", "songthaew", "angkot", "bemo", "habal-habal"}
+)  # fmt: skip
+
+
 def metric_country(tokens: list[str]) -> bool:
     """Whether the text is set where speeds are signed in km/h: a road of such a country by its own
-    name, or a distance said in kilometres."""
-    return any(t in _METRIC_ROADS for t in tokens)
+    name, a distance said in kilometres, or a road user by a name only such countries use."""
+    return any(t in _METRIC_ROADS or t in _METRIC_ROAD_USERS for t in tokens)
 
 
 #: A length in feet or yards ("ten feet ahead", "by a foot", "a few yards"), as written (the reader's
@@ -308,10 +383,16 @@ def imperial_lengths(text: str) -> bool:
 #: km/h is signed too.)
 _MILES_ROADS = frozenset(
     {"carriageway", "carriageways", "interstate", "freeway", "freeways", "turnpike", "curb", "curbs", "sidewalk",
-     "sidewalks", "crosswalk", "crosswalks"}
+     "sidewalks", "crosswalk", "crosswalks", "sliproad", "sliproads", "lay-by", "lay-bys", "laybys", "stoplight",
+     "stoplights"}
 )  # fmt: skip
-#: Two-word American road names ("a divided highway", "the gas station", "a parking lot", "an 18-wheeler").
-_MILES_PAIRS = frozenset({("divided", "highway"), ("gas", "station"), ("parking", "lot"), ("18", "wheeler")})
+#: Two-word road names of Britain ("the slip road", "the hard shoulder": the motorway's, said in Britain,
+#: where Australians say on-ramp and emergency lane) and of America ("a divided highway", "the gas
+#: station", "a parking lot", "an 18-wheeler", "a state trooper", "the highway patrol").
+_MILES_PAIRS = frozenset(
+    {("divided", "highway"), ("gas", "station"), ("parking", "lot"), ("18", "wheeler"), ("slip", "road"),
+     ("slip", "roads"), ("hard", "shoulder"), ("state", "trooper"), ("state", "troopers"), ("highway", "patrol")}
+)  # fmt: skip
 #: Distances in miles ("for a mile", "two miles back"): a writer who measures the road in miles reads
 #: its speeds in miles per hour.
 _MILES = frozenset({"mile", "miles"})
@@ -643,6 +724,8 @@ def ego_at_rest(clauses) -> bool:
             and not (m.slot == "unknown_verb" and m.words in _BE)  # ("I am stopped at ...")
         ]
         for k, m in enumerate(said):
+            if not k and not other and _subjectless_state(m, said[1:]):
+                return True  # ("Stationary at the lights when ...", "Waiting at the junction to turn right, ...")
             other = other or (m.slot == "actor" and m.value != "ego")
             if m.slot == "actor" and m.prev in _SUBJECT_BEFORE:
                 subject = m
@@ -683,6 +766,27 @@ def _it_the_egos_vehicle(pronoun, subject) -> bool:
 #: What may stand before the ego in a note that opens with it ("Ego stationary at the lights.", "With
 #: my car parked at the kerb, ..."): the start of a sentence or clause, its article, or "with".
 _NOTE_OPENERS = frozenset({"", ".", ";", ":", ",", "!", "?", "-", "(", "the", "with"})
+
+
+#: Words a note's first sentence opens after: nothing, or the end of a heading.
+_TEXT_OPENERS = frozenset({"", ":"})
+
+
+def _subjectless_state(m, after) -> bool:
+    """Whether ``m`` opens the text, before anyone is named, with a state of standing and no subject
+    ("Stationary at the lights when a scooter hit my door", "Waiting at the junction to turn right when
+    ...", "Sat in the queue, a van ..."): the one left out is who tells it, the ego, as a participle
+    that opens a sentence is. Not a still word right before a word it modifies ("Parked car on the
+    left", "Stationary traffic ahead": said of that), nor one that is also a stop made ("Stopped just
+    short": an act), nor where the narrator is named next, going on from it ("Sat at the lights, green goes,
+    I pull off, and ..."). ``after``: the mentions after it in its clause."""
+    still = m.slot == "stationary" or (m.slot == "unknown_verb" and m.words in STILL_WORDS)  # ("Sat at ...")
+    if m.prev not in _TEXT_OPENERS or not still or m.words in _STOPS_MADE:
+        return False
+    if after and after[0].start == m.end:  # ("Stationary traffic ahead": said of what it names)
+        return False
+    named = next((x for x in after if x.slot in ("actor", "pronoun")), None)
+    return not (named is not None and named.value == "ego")
 
 
 def _verbless_state(ego, state) -> bool:

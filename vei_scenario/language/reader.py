@@ -542,9 +542,10 @@ def _adverb(word: str) -> bool:
     return word.endswith("ly") or word in ("hard", "fast", "straight", "just", "then")
 
 
-def _number(tokens: list[str], i: int, imperial: bool = False) -> tuple[str, float, int] | None:
+def _number(tokens: list[str], i: int, imperial: bool = False, metric: bool = False) -> tuple[str, float, int] | None:
     """(kind, value SI, tokens used) of a number at ``i``: a speed, a distance, or something to skip
-    (``imperial``: the text measures lengths in feet or yards, so a bare speed is in mph)."""
+    (``imperial``: the text measures lengths in feet or yards, so a bare speed is in mph; ``metric``: it
+    is set where km/h is signed, so a bare speed is in km/h)."""
     value = float(tokens[i])
     nxt = tokens[i + 1] if i + 1 < len(tokens) else ""
     if nxt in V.SPEED_UNITS:
@@ -580,14 +581,16 @@ def _number(tokens: list[str], i: int, imperial: bool = False) -> tuple[str, flo
     )  # ("speeds up to 80": the speed it reaches)
     at = prev in ("at", "doing", "about", "around", "of") or to_changed or Q.after_at(tokens, i) or Q.held_on(tokens, i)
     at = at or ego_speed.speedometer_reading(tokens, i)  # ("60 on the speedo", "the speedo said 45")
+    at = at or ego_speed.bare_owned(tokens, i) or Q.after_speed_head(tokens, i)  # ("than my 70", "speed: 50")
+    at = at or ego_speed.cruise_setting(tokens, i)  # ("Cruise set to 100")
     if at and 3 <= value <= 250:
         # "at 120", "at a steady 50": in the unit said before
-        return "speed", value * Q.carried_unit(tokens, i, imperial), 1
+        return "speed", value * Q.carried_unit(tokens, i, imperial, metric), 1
     ends = nxt in ("", ".", ",", ";", "!", "?", "and", "then", "when", "while", "but")
     hedged = prev != tokens[i - 1]  # ("going well over 60 passes me": a speed, however the clause goes on)
     where = prev in _MOTION_BEFORE_SPEED and nxt in Q.WHERE_AFTER_SPEED  # ("going 40 down the high street")
     if (prev in _MOTION_BEFORE_SPEED or Q.after_ego(tokens, i)) and 3 <= value <= 250 and (ends or hedged or where):
-        return "speed", value * Q.carried_unit(tokens, i, imperial), 1
+        return "speed", value * Q.carried_unit(tokens, i, imperial, metric), 1
     return "unknown", value, 1
 
 
@@ -612,6 +615,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
     index) of ``text``; a word that is only a verb and unknown stays in its clause as an
     ``unknown_verb`` mention."""
     tokens = _tokens(text, brackets=True)
+    metric = Q.metric_country(tokens)  # ("in the ute": the ego's own, which framing names "the ego")
     clauses: list[tuple[str, list[_Mention]]] = [("sequence", [])]
     read_as: list[tuple[str, str]] = [
         (typed, read) for typed, read in zip(_tokens(text, spell=False, brackets=True), tokens) if typed != read
@@ -658,7 +662,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             continue
         if re.fullmatch(r"\d+(?:\.\d+)?", tok) and not (sides.lanes_away(tokens, i) or S.lanes_moved(tokens, i)):
             # (not "2 lanes to our left", "moved over 1 lane": a place or a move, not the road's lanes)
-            kind, value, used = _number(tokens, i, imperial)
+            kind, value, used = _number(tokens, i, imperial, metric)
             words = " ".join(tokens[i : i + used])
             if kind in ("speed", "distance", "speed_range") and Q.lateral(tokens, i, used):
                 kind = "skip"  # ("a lateral velocity of 1 m/s", "1.5 m clearance"): across the road, no travel
@@ -1544,6 +1548,9 @@ def _read(text: str) -> Reading:
     opened.update(ego_speed.party_at_the_wheel(scanned, speeds, read_words))  # ("Dad was driving at 80 km/h")
     egos_own = ego_speed.group_speeds(scanned, speeds)  # ("Platoon speed 80 km/h": the ego's formation)
     egos_own.update({i: True for i in speeds if ego_speed.speedometer_reading(scanned, i)})  # ("speedo said 45")
+    egos_own.update({i: True for i in speeds if ego_speed.owned(scanned, i)})  # ("much faster than my 70")
+    egos_own.update({i: True for i in speeds if ego_speed.cruise_setting(scanned, i)})  # ("cruise set to 100")
+    limits = ego_speed.limits(scanned, speeds)  # ("doing 50 in a 60 km/h zone": the road's, no one's speed)
     opened.update(ego_speed.opening_participles(scanned))  # ("Heading home at 50 km/h, ...": speeds of opening phrases)
     for link, mentions in clauses:
         named: list[tuple[_Actor | str, str]] = []  # (actor, role) in order: subject, prep, verb, participle
@@ -1567,6 +1574,9 @@ def _read(text: str) -> Reading:
                 prev = prev if m.value == "'s" else m
                 continue
             if m.slot == "modal":
+                continue
+            if m.slot == "speed" and m.start in limits:
+                prev = m
                 continue
             if m.slot == "speed" and ego_speed.impact_after_braking(scanned, m.start):
                 ignored.append(m.words)  # ("I braked but hit him at 10 mph": what was left at impact)
