@@ -1468,7 +1468,8 @@ DENSITY = {
         "gridlocked",
         "tailback",
         "stop-start",
-        "stop and go",
+        "stop-and-go",
+        "stop and go traffic",  # (not "stop and go" alone: "without stopping and went straight over" lemmatises to it)
         "standstill traffic",
         "slow-moving traffic",
         "slow moving traffic",
