@@ -55,6 +55,8 @@ FIRST = {
     "language_independent_y.json": ((50, 50, 18, 47), "sealed for two rounds of reader work"),
     "language_independent_z3.json": ((50, 50, 8, 46), "sealed for two rounds of reader work"),
     "language_independent_z4.json": ((50, 50, 5, 50), "sealed for two rounds of reader work"),
+    "language_independent_z5.json": ((50, 50, 9, 45), "sealed for a round of reader work"),
+    "language_independent_z6.json": ((50, 50, 11, 46), "sealed for a round of reader work"),
 }
 
 
