@@ -167,7 +167,7 @@ def _unintroduced(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
         subject = subject and not MEETS_NARRATOR & set(tokens[b:e]) and not _narrator_speed(tokens, users)
         landmark = tokens[max(p.start - 2, 0) : p.start] in (["front", "of"], ["ahead", "of"], ["path", "of"])
         # (what someone crosses in front of is where the writer is; what shakes is what the writer feels)
-        if not (steered or subject or landmark or _shaken(tokens, p)):
+        if not (steered or subject or landmark or _shaken(tokens, p) or _acts_by_itself(tokens, p, users[n:])):
             continue
         noun = tokens[p.end - 1]
         dropped.extend(w for w in tokens[p.start : p.end] if w not in DEFINITE)
@@ -175,6 +175,30 @@ def _unintroduced(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
         out = _kind_again(out, p.kind, kind_at, known, dropped)
         return _driver_is_ego(out, kind_at, known, dropped) if {"we", "us", "our"} & words else out
     return tokens
+
+
+#: Words that end a clause a vehicle acts "by itself" in ("the car braked by itself and ...").
+_CLAUSE_END = PUNCT | {"and", "but", "then", "when", "while", "so"}
+#: Phrases that say a vehicle did something with no one doing it ("braked by itself", "stopped on its
+#: own", "steered automatically"): its own automation, which only the writer of its own car tells.
+BY_ITSELF = (("by", "itself"), ("on", "its", "own"), ("of", "its", "own", "accord"), ("automatically",))
+
+
+def _acts_by_itself(tokens: list[str], p, later) -> bool:
+    """Whether the vehicle ``p``, or a later "the" mention of its kind (the make first, then "the
+    car"), opens its clause and does something by itself there ("the car just braked by itself",
+    "the van stopped on its own", "the Tesla steered automatically"): a first-person writer tells
+    that of the car they sit in. One of a kind introduced anywhere ("a car") is someone else's."""
+    if any(q.kind == p.kind and q.det in INDEFINITE for q in later):
+        return False
+    for q in later:
+        if q.kind != p.kind or q.det != "the" or _placed(tokens, q) or not _clause_start(tokens, q.start):
+            continue
+        e = next((k for k in range(q.end, len(tokens)) if tokens[k] in _CLAUSE_END), len(tokens))
+        clause = tokens[q.end : e]
+        if any(tuple(clause[k : k + len(b)]) == b for b in BY_ITSELF for k in range(len(clause))):
+            return True
+    return False
 
 
 #: Verbs (by lemma) of a vehicle shaken by what passes it or by the wind: what the writer feels of the

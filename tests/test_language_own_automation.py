@@ -1,0 +1,50 @@
+"""The writer's own car acting by itself: a first-person writer who says "the car braked by itself" tells
+of the car they sit in (its automation), never introduced with "a": that car, and its make said
+before ("the Tesla"), is the ego, no road user. Said by many kinds of writer, with near misses where
+the car acting by itself is someone else's (placed, or introduced as new)."""
+
+from __future__ import annotations
+
+import pytest
+
+from tests.reading_of import kinds
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # (an American text message, the make first)
+        (
+            "so the tesla did a weird thing on the interstate. going 70, a pickup merged into our lane "
+            "and the car just slammed the brakes by itself.",
+            ["van"],
+        ),
+        # (a British driver)
+        ("We were at 30 mph when a lad ran out between the shops and the car stopped on its own.", ["pedestrian"]),
+        # (an Australian voice note)
+        ("Doin' about 80 on the highway, a road train moved over on us and the ute braked by itself.", ["truck"]),
+        # (an Indian message)
+        ("Going 60 kmph on the expressway, one bike cut in from left and the car applied brake automatically.",
+         ["bicycle"]),
+        # (a review of a new car)
+        ("At 40 mph in town a cyclist swerved out in front of us and the Volvo braked of its own accord.",
+         ["bicycle"]),
+    ],
+)  # fmt: skip
+def test_the_writers_car_acting_by_itself_is_the_ego(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # (placed: the car ahead is someone else's)
+        ("I was doing 30 when a kid on a bike came out in front of me and the car in front braked by itself.",
+         ["bicycle", "car"]),
+        # (a car introduced with "a" is someone new, and "the car" is that one again)
+        ("I was doing 30 when a car pulled out of a side road in front of me; the car then stopped on its own.",
+         ["car"]),
+    ],
+)  # fmt: skip
+def test_a_placed_or_introduced_car_acting_by_itself_stays_a_road_user(text, expected):
+    assert kinds(text) == expected
