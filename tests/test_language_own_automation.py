@@ -48,3 +48,38 @@ def test_the_writers_car_acting_by_itself_is_the_ego(text, expected):
 )  # fmt: skip
 def test_a_placed_or_introduced_car_acting_by_itself_stays_a_road_user(text, expected):
     assert kinds(text) == expected
+
+
+# --- a writer who leaves out the article: "I stop car", what the writer steers is the writer's ------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # (a Singaporean text)
+        ("The scooter fella ride against traffic on my side, I stop car let him go past lor.", ["e-scooter"]),
+        # (an Indian email)
+        ("One cyclist came suddenly from the left side, I stopped vehicle immediately, no contact.", ["bicycle"]),
+        # (a Nigerian message)
+        ("One boy on bicycle just cross in front of me for Wuse, I park car quick quick, nothing happen.",
+         ["bicycle"]),
+        # (a text message)
+        ("kid on a bike shot out, i slowed van right down, he was fine", ["bicycle"]),
+        # (a spoken note)
+        ("Jogger ran out at the lights, we stopped car dead, no harm done.", ["pedestrian"]),
+    ],
+)  # fmt: skip
+def test_the_bare_vehicle_a_writer_steers_is_the_ego(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # (someone else steers it)
+        ("A cyclist came out of the side road; the lorry driver stopped lorry right on the crossing.",
+         ["bicycle", "truck"]),
+        # (a new one is someone's: "stopped a car")
+        ("I was cycling at 15 km/h when the police stopped a car in front of me.", ["car"]),
+    ],
+)  # fmt: skip
+def test_a_vehicle_steered_by_someone_else_stays_a_road_user(text, expected):
+    assert kinds(text) == expected

@@ -395,6 +395,34 @@ def _driven_it(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[s
     return tokens
 
 
+#: Verbs (by lemma) a writer says of the vehicle they steer, its article left out ("I stop car", "we
+#: slowed van right down"): the verbs of steering and slowing.
+STEERED_BARE = STEERING | {"slow", "halt"}
+
+
+def _steered_bare(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "I stop car let him go past", "I stopped vehicle immediately", "we slowed van right down": a
+    writer who leaves out articles (as many Englishes do) says the vehicle they steer bare, right
+    after their verb; that vehicle is theirs, the ego. It goes (the verb stays, the narrator's), and
+    so does every later "the <noun>" of it. Said of someone else ("the man stopped car") or with an
+    article ("I stopped a car") it is no business of this rule."""
+    for k, w in enumerate(tokens[:-1]):
+        if not w.isalpha() or "VERB" not in lemmas(w) or not _lemma_in(w, STEERED_BARE):
+            continue
+        if not _narrator_subject(tokens, k):
+            continue
+        found = kind_at(tokens, k + 1)
+        noun = tokens[k + 1]
+        if found is None or found[0] not in VEHICLES or found[1] != 1 or noun not in lemmas(noun).get("NOUN", ()):
+            continue  # (one noun, in the singular: "I stopped cars" is no vehicle of the writer's)
+        nxt = tokens[k + 2] if k + 2 < len(tokens) else ""
+        if nxt.isalpha() and set(lemmas(nxt)) == {"NOUN"}:
+            continue  # (a modifier: "I stopped car park traffic")
+        dropped.append(noun)
+        return _as_ego([*tokens[: k + 1], *tokens[k + 2 :]], kind_at, known, noun, dropped)
+    return tokens
+
+
 def _aboard(tokens: list[str], p) -> bool:
     """Whether the preposition before ``p`` puts someone in or on it: "in"/"inside"/"aboard" any
     vehicle, "on" only a motor two-wheeler ("on the moped"; "on the car" is on its roof)."""
@@ -474,6 +502,7 @@ def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) 
     tokens = _ego_rider(tokens, kind_at, known, dropped)
     tokens = _user_story(tokens, kind_at, known, dropped)
     tokens = _driven_it(tokens, kind_at, known, dropped)
+    tokens = _steered_bare(tokens, kind_at, known, dropped)
     tokens = _heading(_pair_label(tokens, kind_at, known, dropped), kind_at, known, dropped)
     tokens = _narrator_aboard(tokens, kind_at, known, dropped)
     return _unintroduced(tokens, kind_at, known, dropped)
