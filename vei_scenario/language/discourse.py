@@ -2404,6 +2404,56 @@ def _others_in_general(tokens: list[str], kind_at: KindAt, known: Known, dropped
     return out
 
 
+#: Words before a plural that say it comes the other way ("oncoming cars", "opposing traffic").
+_ONCOMING_BEFORE = frozenset({"oncoming", "opposing", "approaching"})
+#: Words after a plural, in its clause, that say it comes the other way ("coming the other way",
+#: "approach in the opposite direction", "coming towards us").
+_ONCOMING_AFTER = frozenset({"other", "opposite", "towards", "toward"})
+
+
+def _oncoming_plural(tokens: list[str], p: _Phrase) -> bool:
+    """Whether the plural ``p`` is said to come the other way: "oncoming" before it, or, within its
+    clause's next few words, "the other way", "the opposite direction", "towards"."""
+    if p.start and tokens[p.start - 1] in _ONCOMING_BEFORE or tokens[p.start] in _ONCOMING_BEFORE:
+        return True
+    for w in tokens[p.end : p.end + 6]:
+        if w in PUNCT or w in _CLAUSE_ENDS:
+            return False
+        if w in _ONCOMING_AFTER:
+            return True
+    return False
+
+
+def _oncoming_traffic(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "couldn't get past cos there's cars coming the other way", "could not overtake because of
+    oncoming cars": a bare plural of vehicles (no article, no count) that comes the other way is the
+    stream of traffic that holds the ego back, scenery of the road, where the text names another road
+    user it is about; the plural and the rest of its clause are left out (listed as not used). A
+    counted or definite plural ("two cars coming the other way") or a single vehicle is a road user,
+    and the plural stays when it is the only road user the text names."""
+    phrases = _phrases(tokens, kind_at, known)
+    cut: list[tuple[int, int]] = []
+    for p in phrases:
+        before = tokens[p.start - 1] if p.start else ""
+        if p.det or p.kind in ("ego", "pedestrian") or _singular(tokens[p.end - 1]) or not tokens[p.end - 1].isalpha():
+            continue
+        if before in _COUNTED or before.isdigit() or before in POSSESSIVE or not _oncoming_plural(tokens, p):
+            continue
+        if not any(q.kind not in ("ego", p.kind) for q in phrases if q.head != p.head):
+            continue  # (no other road user named: the plural is the scene's)
+        start = p.start - (before in _ONCOMING_BEFORE)
+        stop = p.end
+        while stop < len(tokens) and not (tokens[stop] in PUNCT or tokens[stop] in _CLAUSE_ENDS):
+            stop += 1
+        cut.append((start, stop))
+    out = list(tokens)
+    for start, stop in cut:
+        dropped.extend(tokens[start:stop])
+    for start, stop in reversed(cut):
+        del out[start:stop]
+    return out
+
+
 #: Marks that end a heading: the end of its line or sentence (a colon goes on with a label's value).
 _HEADING_ENDS = frozenset({".", "!", "?"})
 
@@ -2647,6 +2697,7 @@ def resolve(
     tokens = _road_users_of_what_may_happen(what_may_happen(tokens, dropped), kind_at, known, dropped)
     tokens = _people_in_general(tokens, kind_at, known, dropped)
     tokens = _others_in_general(tokens, kind_at, known, dropped)
+    tokens = _oncoming_traffic(tokens, kind_at, known, dropped)
     tokens = _narrator_on_foot(tokens, kind_at, known, dropped)
     tokens = _ego_apposition(tokens, kind_at, known, dropped)
     tokens = _ego_predicate(tokens, kind_at, known, dropped)

@@ -167,7 +167,7 @@ def _unintroduced(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
         subject = subject and not MEETS_NARRATOR & set(tokens[b:e]) and not _narrator_speed(tokens, users)
         landmark = tokens[max(p.start - 2, 0) : p.start] in (["front", "of"], ["ahead", "of"], ["path", "of"])
         # (what someone crosses in front of is where the writer is; what shakes is what the writer feels)
-        if not (steered or subject or landmark or _shaken(tokens, p)):
+        if not (steered or subject or landmark or _shaken(tokens, p) or _acts_by_itself(tokens, p, users[n:])):
             continue
         noun = tokens[p.end - 1]
         dropped.extend(w for w in tokens[p.start : p.end] if w not in DEFINITE)
@@ -175,6 +175,30 @@ def _unintroduced(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
         out = _kind_again(out, p.kind, kind_at, known, dropped)
         return _driver_is_ego(out, kind_at, known, dropped) if {"we", "us", "our"} & words else out
     return tokens
+
+
+#: Words that end a clause a vehicle acts "by itself" in ("the car braked by itself and ...").
+_CLAUSE_END = PUNCT | {"and", "but", "then", "when", "while", "so"}
+#: Phrases that say a vehicle did something with no one doing it ("braked by itself", "stopped on its
+#: own", "steered automatically"): its own automation, which only the writer of its own car tells.
+BY_ITSELF = (("by", "itself"), ("on", "its", "own"), ("of", "its", "own", "accord"), ("automatically",))
+
+
+def _acts_by_itself(tokens: list[str], p, later) -> bool:
+    """Whether the vehicle ``p``, or a later "the" mention of its kind (the make first, then "the
+    car"), opens its clause and does something by itself there ("the car just braked by itself",
+    "the van stopped on its own", "the Tesla steered automatically"): a first-person writer tells
+    that of the car they sit in. One of a kind introduced anywhere ("a car") is someone else's."""
+    if any(q.kind == p.kind and q.det in INDEFINITE for q in later):
+        return False
+    for q in later:
+        if q.kind != p.kind or q.det != "the" or _placed(tokens, q) or not _clause_start(tokens, q.start):
+            continue
+        e = next((k for k in range(q.end, len(tokens)) if tokens[k] in _CLAUSE_END), len(tokens))
+        clause = tokens[q.end : e]
+        if any(tuple(clause[k : k + len(b)]) == b for b in BY_ITSELF for k in range(len(clause))):
+            return True
+    return False
 
 
 #: Verbs (by lemma) of a vehicle shaken by what passes it or by the wind: what the writer feels of the
@@ -371,6 +395,34 @@ def _driven_it(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[s
     return tokens
 
 
+#: Verbs (by lemma) a writer says of the vehicle they steer, its article left out ("I stop car", "we
+#: slowed van right down"): the verbs of steering and slowing.
+STEERED_BARE = STEERING | {"slow", "halt"}
+
+
+def _steered_bare(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "I stop car let him go past", "I stopped vehicle immediately", "we slowed van right down": a
+    writer who leaves out articles (as many Englishes do) says the vehicle they steer bare, right
+    after their verb; that vehicle is theirs, the ego. It goes (the verb stays, the narrator's), and
+    so does every later "the <noun>" of it. Said of someone else ("the man stopped car") or with an
+    article ("I stopped a car") it is no business of this rule."""
+    for k, w in enumerate(tokens[:-1]):
+        if not w.isalpha() or "VERB" not in lemmas(w) or not _lemma_in(w, STEERED_BARE):
+            continue
+        if not _narrator_subject(tokens, k):
+            continue
+        found = kind_at(tokens, k + 1)
+        noun = tokens[k + 1]
+        if found is None or found[0] not in VEHICLES or found[1] != 1 or noun not in lemmas(noun).get("NOUN", ()):
+            continue  # (one noun, in the singular: "I stopped cars" is no vehicle of the writer's)
+        nxt = tokens[k + 2] if k + 2 < len(tokens) else ""
+        if nxt.isalpha() and set(lemmas(nxt)) == {"NOUN"}:
+            continue  # (a modifier: "I stopped car park traffic")
+        dropped.append(noun)
+        return _as_ego([*tokens[: k + 1], *tokens[k + 2 :]], kind_at, known, noun, dropped)
+    return tokens
+
+
 def _aboard(tokens: list[str], p) -> bool:
     """Whether the preposition before ``p`` puts someone in or on it: "in"/"inside"/"aboard" any
     vehicle, "on" only a motor two-wheeler ("on the moped"; "on the car" is on its roof)."""
@@ -450,6 +502,7 @@ def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) 
     tokens = _ego_rider(tokens, kind_at, known, dropped)
     tokens = _user_story(tokens, kind_at, known, dropped)
     tokens = _driven_it(tokens, kind_at, known, dropped)
+    tokens = _steered_bare(tokens, kind_at, known, dropped)
     tokens = _heading(_pair_label(tokens, kind_at, known, dropped), kind_at, known, dropped)
     tokens = _narrator_aboard(tokens, kind_at, known, dropped)
     return _unintroduced(tokens, kind_at, known, dropped)
