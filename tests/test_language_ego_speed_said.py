@@ -164,6 +164,43 @@ def test_a_subject_that_is_no_person_of_the_narrators_keeps_its_speed(text):
     assert read(text).actors[0].speed_mps == pytest.approx(80 / 3.6)
 
 
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("A lorry pulled out right in front of our car. Dad was going about 40 km/h and braked.", 40),
+        ("A bus swerved into our van's lane. Kemi was doing around 60 km/h, she swerved.", 60),
+        ("An auto cut across our cab from the left. Suresh was driving at 35 kmph and braked.", 35),
+        ("a ute came onto our side of the road. my missus was doing 80 km/h and swerved", 80),
+        ("The tractor pulled out ahead of my car. My son was doing about 50 km/h and he braked.", 50),
+        ("Pickup ran the red in front of our SUV. Hubby was driving at 45 km/h and stopped in time.", 45),
+    ],
+    ids=[
+        "dad-our-car",
+        "first-name-our-van",
+        "first-name-our-cab",
+        "missus-our-side",
+        "my-son-my-car",
+        "hubby-our-suv",
+    ],
+)
+def test_the_party_drives_the_narrators_vehicle_named_as_ours(text, kph):
+    """ "our car", "my cab" are read as the ego before the speed is read: the story stays the narrator's,
+    and the one of their party at its wheel drives it."""
+    assert ego_kph(text) == pytest.approx(kph, abs=0.2)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Our car was parked outside the shop. A van hit it; the van was doing 60 km/h.",
+        "Vehicle 1 was hit by Vehicle 2. Smith was driving Vehicle 2 at 60 km/h.",
+    ],
+    ids=["road-user-subject", "report-third-person"],
+)
+def test_a_speed_said_of_no_person_of_the_party_is_not_the_egos(text):
+    assert ego_kph(text) != pytest.approx(60)
+
+
 # --- the ego at rest said by a stop made before: "had pulled up", "were stood still" -------------------
 @pytest.mark.parametrize(
     "text",

@@ -1256,6 +1256,58 @@ def _story(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
 ORGANISATION = frozenset({"fleet", "pool", "company", "works", "firm", "firm's", "company's"})
 
 
+#: Verbs (lemmas) by which one of the narrator's party has a vehicle out ("Dad took the Volvo").
+HAVING_OUT = frozenset({"take", "drive", "borrow", "have", "bring", "use"})
+#: Possessives by which a narrator names one of their own party ("my dad", "your grandad", "our son").
+PARTY_OWNERS = frozenset({"my", "our", "your"})
+#: The party's words of each gender beyond :data:`GENDERED` ("my husband ... he braked").
+PARTY_GENDERED = {
+    "her": frozenset("wife missus mom mommy mummy mama mam grandma granny nan nana sister aunt auntie".split()),
+    "his": frozenset("husband hubby daddy papa granddad grandpa brother uncle boyfriend grandson nephew".split()),
+}
+
+
+def _party_took(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "My dad took the car into town. He was turning right ...", "your grandad had the Volvo out",
+    "our son was driving my car": one of the narrator's party (a family word or a friend), opening its
+    clause as the subject of a verb of having a vehicle out whose object is a vehicle named as known
+    ("the", a possessive), has that vehicle as the ego: the story is told about it although the
+    narrator's "my" keeps the text in the first person. "My dad took a taxi" (someone else's, new),
+    "my mum had a bus pull out on her" or "my dad saw the car" read nothing."""
+    from vei_scenario.language.ego_speed import PARTY as FAMILY
+
+    for k, w in enumerate(tokens):
+        if w not in FAMILY:
+            continue
+        s = k - (k > 0 and tokens[k - 1] in PARTY_OWNERS)
+        if s and tokens[s - 1] not in CLAUSE_OPENING:
+            continue
+        j = k + 1
+        while j < len(tokens) and tokens[j] in BETWEEN and tokens[j] not in ("had", "has", "have"):
+            j += 1  # (an auxiliary, not "had" as the verb itself: "Mum had the car")
+        if j >= len(tokens) or not HAVING_OUT & set(lemmas(tokens[j]).get("VERB", ())):
+            continue
+        if (
+            tokens[j] in ("had", "has", "have")
+            and j + 1 < len(tokens)
+            and HAVING_OUT & set(lemmas(tokens[j + 1]).get("VERB", ()))
+        ):
+            j += 1  # ("had taken the car", "has borrowed my van")
+        p = next((q for q in _vehicle_phrases(tokens, kind_at, known) if j < q.start <= j + 2), None)
+        if p is None or p.kind not in VEHICLES or tokens[p.start] in INDEFINITE or _placed(tokens, p):
+            continue
+        dropped.extend(x for x in tokens[p.start : p.end] if x.isalpha() and x not in OWNING)
+        out = tokens[:s] + ["the", "ego"] + tokens[k + 1 : p.start] + tokens[p.end :]
+        out = _as_ego(out, kind_at, known, tokens[p.end - 1], dropped)
+        at = s + 2 + (p.start - k - 1)
+        for i in range(len(out) - 1, at - 1, -1):  # (the person named again: "Grandad's more shaken")
+            if out[i] == w and out[i - 1] not in INDEFINITE:
+                out[i - (out[i - 1] in PARTY_OWNERS | DEFINITE) : i + 1] = ["the", "ego"]
+        owner = next((g for g in GENDERED if w in GENDERED[g] | PARTY_GENDERED[g]), None)
+        return _pronouns_as_ego(out, owner, kind_at, known) if owner else out
+    return tokens
+
+
 def _organisation_vehicle(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """ "the bus in front of the fleet car", "The works van was waiting at the lights", "our pool
     minibus": a vehicle the writer's organisation owns, said as known ("the", "our"), is the one a
@@ -1333,6 +1385,7 @@ def _frame(
     tokens = _reported(tokens, kind_at, known, dropped)
     tokens = _fleet_member(tokens, kind_at, known, dropped)
     tokens = _ego_drives(tokens, kind_at, known, dropped)
+    tokens = _party_took(tokens, kind_at, known, dropped)
     tokens = _operator_fleet(tokens, kind_at, known)
     if names_ego(tokens, kind_at, known):
         if names_ego(_story(tokens, kind_at, known), kind_at, known):

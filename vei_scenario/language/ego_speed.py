@@ -206,7 +206,8 @@ PARTY = frozenset(
     {"dad", "daddy", "papa", "pa", "father", "mum", "mummy", "mom", "mommy", "mama", "mam", "mother", "grandad",
      "granddad", "grandpa", "grandma", "granny", "gran", "nan", "nana", "husband", "hubby", "wife", "partner",
      "brother", "sister", "son", "daughter", "uncle", "aunt", "auntie", "aunty", "cousin", "boyfriend",
-     "girlfriend", "fiance", "fiancee", "friend", "mate", "bhaiya", "didi", "chacha", "mamu"}
+     "girlfriend", "fiance", "fiancee", "friend", "mate", "bhaiya", "didi", "chacha", "mamu", "missus", "missis",
+     "grandson", "granddaughter", "nephew", "niece", "stepdad", "stepmum", "stepmom", "appa", "amma", "abba"}
 )  # fmt: skip
 #: Words between a subject and its verb of going ("was", "had been", "was still").
 _AUX = frozenset({"was", "were", "is", "are", "had", "has", "been", "still", "just"})
@@ -223,14 +224,18 @@ def _party_member(tokens: list[str], k: int, covered: set[int]) -> int:
     return 0
 
 
-def party_at_the_wheel(tokens: list[str], speeds: set[int], covered: set[int]) -> dict[int, bool]:
+def party_at_the_wheel(
+    tokens: list[str], speeds: set[int], covered: set[int], told_first: bool = False
+) -> dict[int, bool]:
     """The speeds (by their index in ``speeds``) said of one of the narrator's party who opens a
     sentence with a verb of going ("Dad was driving at around 80 km/h", "My husband was doing about 70",
     "Mum was going about 30 mph"), in a story told in the first person: that person drives the car the
     narrator is in, the ego, so the speed is the ego's, not that of the road user named before. Words the
-    reader reads as a road user or anything else (``covered``) name no such person."""
+    reader reads as a road user or anything else (``covered``) name no such person. The first person
+    as written counts too (``told_first``): "a truck crossed in front of our car. Rohit was driving at
+    50" has none left in ``tokens`` once "our car" is read as the ego."""
     out: dict[int, bool] = {}
-    if not FIRST_PERSON & set(tokens):
+    if not told_first and not FIRST_PERSON & set(tokens):
         return out
     for k in range(len(tokens)):
         if k and tokens[k - 1] not in _OPENERS:

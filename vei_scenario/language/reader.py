@@ -1545,7 +1545,9 @@ def _read(text: str) -> Reading:
     road_users = {i for _, ms in clauses for m in ms if m.slot == "actor" for i in range(m.start, m.end)}
     opened = ego_speed.subjectless_sentences(scanned, speeds, road_users)  # ("Came round the bend at 40, ...")
     read_words = {i for _, ms in clauses for m in ms if m.slot != "unknown_verb" for i in range(m.start, m.end)}
-    opened.update(ego_speed.party_at_the_wheel(scanned, speeds, read_words))  # ("Dad was driving at 80 km/h")
+    opened.update(
+        ego_speed.party_at_the_wheel(scanned, speeds, read_words, motion.told_in_the_first_person(text, tokens))
+    )  # ("Dad was driving at 80 km/h")
     egos_own = ego_speed.group_speeds(scanned, speeds)  # ("Platoon speed 80 km/h": the ego's formation)
     egos_own.update({i: True for i in speeds if ego_speed.speedometer_reading(scanned, i)})  # ("speedo said 45")
     egos_own.update({i: True for i in speeds if ego_speed.owned(scanned, i)})  # ("much faster than my 70")
