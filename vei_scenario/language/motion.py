@@ -373,7 +373,8 @@ _OUT_OF = (["out", "of"], ["out", "from"], ["outta"])
 
 def _leaves_the_arm(tokens: list[str], arm) -> int | None:
     """Where the verb stands that says a road user comes out of side road mention ``arm``: a verb +
-    "out of" / "out from" before it ("came out from a side road", "rode out of the side street"), or
+    "out of" / "out from" before it ("came out from a side road", "rode out of the side street", or
+    "out" and an article, "came out the side road", as said aloud), or
     a verb of leaving with it as its object ("exits a side road", "is leaving the side street"); None
     if neither. The verb is whatever it is: the particle or the verb's class says it leaves."""
     j = arm.start - 1
@@ -383,6 +384,8 @@ def _leaves_the_arm(tokens: list[str], arm) -> int | None:
         n = len(particle)
         if j - n + 1 >= 1 and tokens[j - n + 1 : j + 1] == particle:
             return j - n  # (the verb before the particle)
+    if j >= 1 and tokens[j] == "out" and j < arm.start - 1:
+        return j - 1  # ("came out the side road": "out" and the road's article, "of" left out as said aloud)
     verb = tokens[j] if j >= 0 else ""
     inflected = verb.endswith(("s", "ed", "ing")) and j > 0 and tokens[j - 1] not in _DETERMINERS
     if inflected and set(lemmas(verb).get("VERB", ())) & _LEAVE:
