@@ -226,3 +226,36 @@ def test_a_four_way_stop_is_a_junction_not_a_stop(text):
 def test_a_stop_said_as_a_verb_at_a_four_way_junction_stays_a_stop():
     (car,) = read("At the four-way junction the car ahead of me came to a stop; I was doing 20 mph.").actors
     assert [b[0] for b in car.behaviours][-1] in ("stop", "sudden_stop")
+
+
+# --- "out the side road": "out" and the road's article, "of" left out as said aloud ---------------------
+def _kinds_of_act(text: str) -> list[list[str]]:
+    """The behaviours of each road user read from ``text``."""
+    return [[b[0] for b in a.behaviours] for a in read(text).actors]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was driving at 30 mph, a woman on a bike came out the side road on the left without looking.",
+        "At 40 km/h a motorbike shot out a side street on the left.",
+        "Scooter kid zoomed out the side street on my left at 30 km/h.",
+        "Doing 25 mph when a van pulled out the junction on my right.",
+        "I was doing 30 mph when a car nosed out the T-junction on my right.",
+    ],
+    ids=["came-out-the-side-road", "shot-out-a-side-street", "zoomed-out", "pulled-out-the-junction", "nosed-out"],
+)
+def test_out_the_side_road_is_coming_out_of_it(text):
+    assert _kinds_of_act(text) == [["turn_into"]]
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A cyclist flew out the driveway on my left at 20 mph.", [["cross_in_front"]]),  # (no junction arm)
+        ("I was doing 30 and a van pulled out the way of a bus.", [["cut_in"]]),  # (a way, no road)
+    ],
+    ids=["out-the-driveway", "out-the-way"],
+)
+def test_out_the_and_no_side_road_is_no_emergence(text, expected):
+    assert _kinds_of_act(text) == expected

@@ -193,6 +193,35 @@ def test_a_fall_with_no_contact_before_it_stays_a_behaviour():
     assert "sudden_stop" in _behaviours("The cyclist ahead of the ego falls off on the wet road.")[0]
 
 
+# --- a fall after the road user's own move across or in front is how that move ended ----------------
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A moped rider overtook us and moved back in front, then lost control and fell.", [["overtake"]]),
+        ("Scooter kid swerved into my lane right in front of me; his wheel slipped and he fell.", [["cut_in"]]),
+        ("An e-scooter rider shot across the road in front of me and fell off on the far side.", [["cross_in_front"]]),
+        ("A cyclist pulled out in front of my car, wobbled and came down, no contact.", [["cut_in"]]),
+        ("Bike fella cut in front of me from the left side. He fall down after, no injury.", [["cut_in"]]),
+    ],
+    ids=["overtook-then-fell", "swerved-in-he-fell", "crossed-fell-off", "pulled-out-came-down", "cut-in-fall-down"],
+)
+def test_a_fall_after_a_move_in_front_is_how_it_ended(text, expected):
+    assert _behaviours(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist riding ahead of me in my lane wobbled and fell off.",  # (no move before it)
+        "A van cut in ahead of me. Further on, a cyclist ahead of the van fell off.",  # (someone else's fall)
+        "A lorry overtook the cyclist and the cyclist fell off.",  # (the one overtaken falls)
+    ],
+    ids=["riding-ahead-fell", "another-road-user-falls", "the-overtaken-falls"],
+)
+def test_a_fall_with_no_move_of_its_own_before_it_stays(text):
+    assert any("sudden_stop" in b for b in _behaviours(text))
+
+
 # --- a person named by a name, not a road user: the verb is that person's, not the road user's ----------
 @pytest.mark.parametrize(
     "text, expected",
@@ -217,6 +246,47 @@ def test_a_fall_with_no_contact_before_it_stays_a_behaviour():
     ids=["learner-braked-steered", "rider-slowed-moved-over", "learner-passed-wide"],
 )
 def test_a_named_person_who_is_no_road_user_does_not_lend_their_verb(text, expected):
+    assert _behaviours(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # a name said only where sentences start: a word no dictionary knows, said again as a subject
+        (
+            "Paul was driving at 20 mph when a child ran out from the right. Paul braked at once and stopped.",
+            [["cross_in_front"]],
+        ),
+        (
+            "Aisha was doing 30 km/h when a van pulled out of a side road on her left. Aisha braked hard.",
+            [["turn_into"]],
+        ),
+        ("Chinedu was driving home at 40 km/h. An okada cut in front of him. Chinedu stopped dead.", [["cut_in"]]),
+        ("Wei Ling was at 50 km/h on the expressway. A lorry cut in ahead of her. Wei Ling braked hard.", [["cut_in"]]),
+        (
+            "Siobhan, 19, on a test drive at 30 mph. A cyclist crossed in front. Siobhan stopped sharply.",
+            [["cross_in_front"]],
+        ),
+    ],
+    ids=["paul-braked", "aisha-braked-hard", "chinedu-stopped-dead", "two-word-name", "name-with-age"],
+)
+def test_a_name_said_at_sentence_starts_is_a_person_too(text, expected):
+    assert _behaviours(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # a road user's own word at a sentence's start keeps its verb, however tersely said
+        (
+            "We were doing 30. A van pulled out of a side road on the left. Van braked hard.",
+            [["turn_into", "sudden_stop"]],
+        ),
+        ("I was doing 40 km/h. Lorry ahead of me braked hard.", [["sudden_stop"]]),
+    ],
+    ids=["van-braked", "lorry-braked"],
+)
+def test_a_road_users_word_at_a_sentence_start_keeps_its_verb(text, expected):
     assert _behaviours(text) == expected
 
 

@@ -235,14 +235,21 @@ def outcome_not_behaviour(clauses: list, tokens: list[str] | None = None) -> lis
     those the mentions index). And a verb of contact "into" the ego's path or lane is a move there
     (:func:`_into_the_ego_way`)."""
     out = []
+    moved_at: int | None = None  # (where the last road user named made its last move in front, if it did)
     for link, mentions in clauses:
         kept = []
         for k, m in enumerate(mentions):
+            if m.slot == "actor" and m.value != "ego" and tokens is not None and _opens_a_clause(tokens, m.start):
+                moved_at = None  # (another road user as a subject: a fall after this is its own)
             if m.slot == "behaviour":
                 first = m.words.split()[0]
                 fall = tokens is not None and "fall" in lemmas(first).get("VERB", ())
                 if fall and (_touched_before(tokens, m.start) or _struck_earlier(tokens, m)):
                     continue  # ("..., struck the ego's mirror, falling into the road"; "I hit him. He fell.")
+                if tokens is not None and _fall_ends_the_move(tokens, m, moved_at):
+                    continue  # ("moved back in front of the bus, then lost control and fell")
+                if m.value[0] in _MOVES_IN_FRONT:
+                    moved_at = m.end
                 if m.value[0] == "stop" and tokens is not None and _struck_earlier(tokens, m):
                     continue  # ("struck my bumper and carried on before stopping": the aftermath)
                 slows = m.value[0] in ("change_speed", "sudden_stop", "stop")
@@ -266,6 +273,38 @@ def outcome_not_behaviour(clauses: list, tokens: list[str] | None = None) -> lis
             kept.append(m)
         out.append((link, kept))
     return out
+
+
+#: A road user's moves across or in front of someone: a fall right after one is how it ended.
+_MOVES_IN_FRONT = frozenset(("cut_in", "overtake", "cross_in_front", "change_lane", "cut_out"))
+
+
+#: Words after which a road user named is a clause's subject ("... . A cyclist", "and the van").
+_SUBJECT_COMES = frozenset((".", "!", "?", ";", ",", "and", "but", "then", "when", "while", "as", "so"))
+#: Words that open a noun phrase before its road user's word.
+_DETERMINERS = frozenset(("a", "an", "the", "this", "that", "another", "one", "some", "our", "my"))
+
+
+def _opens_a_clause(tokens: list[str], i: int) -> bool:
+    """Whether the road user named at token ``i`` stands where a clause's subject does (first, after a
+    mark or a conjunction), not as an object or a place ("in front of the tram")."""
+    while i > 0 and tokens[i - 1] in _DETERMINERS:
+        i -= 1
+    return i == 0 or tokens[i - 1] in _SUBJECT_COMES
+
+
+def _fall_ends_the_move(tokens: list[str], m, moved_at: int | None) -> bool:
+    """Whether behaviour mention ``m`` is a fall or a loss of control ("fell", "fell off", "lost
+    control") said of a road user after its own move in front (ending at token ``moved_at``), in
+    that sentence or the next ("overtook and cut back in, then lost control and fell", "swerved into
+    my lane; he fell"): the move was the hazard and the fall how it ended, not a second act. A fall
+    with no move of its own before it ("a cyclist ahead wobbled and fell") stays a stop."""
+    if moved_at is None or m.value[0] != "sudden_stop":
+        return False
+    words = m.words.split()
+    if "fall" not in lemmas(words[0]).get("VERB", ()) and "control" not in words:
+        return False
+    return sum(t in (".", "!", "?") for t in tokens[moved_at : m.start]) <= 1
 
 
 def _into_the_ego_way(m, tokens: list[str]) -> bool:
@@ -334,7 +373,8 @@ _OUT_OF = (["out", "of"], ["out", "from"], ["outta"])
 
 def _leaves_the_arm(tokens: list[str], arm) -> int | None:
     """Where the verb stands that says a road user comes out of side road mention ``arm``: a verb +
-    "out of" / "out from" before it ("came out from a side road", "rode out of the side street"), or
+    "out of" / "out from" before it ("came out from a side road", "rode out of the side street", or
+    "out" and an article, "came out the side road", as said aloud), or
     a verb of leaving with it as its object ("exits a side road", "is leaving the side street"); None
     if neither. The verb is whatever it is: the particle or the verb's class says it leaves."""
     j = arm.start - 1
@@ -344,6 +384,8 @@ def _leaves_the_arm(tokens: list[str], arm) -> int | None:
         n = len(particle)
         if j - n + 1 >= 1 and tokens[j - n + 1 : j + 1] == particle:
             return j - n  # (the verb before the particle)
+    if j >= 1 and tokens[j] == "out" and j < arm.start - 1:
+        return j - 1  # ("came out the side road": "out" and the road's article, "of" left out as said aloud)
     verb = tokens[j] if j >= 0 else ""
     inflected = verb.endswith(("s", "ed", "ing")) and j > 0 and tokens[j - 1] not in _DETERMINERS
     if inflected and set(lemmas(verb).get("VERB", ())) & _LEAVE:

@@ -172,14 +172,20 @@ _OPENING_MARKS = frozenset(".!?:;|\u2022*-\u2013\u2014\"'(\u201c\u2018>#")
 
 def _person_names(text: str) -> frozenset[str]:
     """The words of ``text`` that may be names of people (lower-cased): said capitalised inside a
-    sentence somewhere ("a lesson with Jack", "Debrief, Marcus, 3pm")."""
+    sentence somewhere ("a lesson with Jack", "Debrief, Marcus, 3pm"), or said capitalised more than
+    once only where sentences start and known to the dictionary as no word at all ("Paul was driving
+    ... Paul braked": a news item or a leaflet opens its sentences with its driver's name)."""
     out = set()
+    openers: dict[str, int] = {}
     for m in re.finditer(r"\b[A-Z][a-z]+\b", text):
         word = m.group().lower()
         before = text[: m.start()].rstrip()
         opening = not before or before[-1] in _OPENING_MARKS or text[m.start() - 1] == "\n"
         if not opening:
             out.add(word)
+        else:
+            openers[word] = openers.get(word, 0) + 1
+    out.update(w for w, n in openers.items() if n > 1 and len(w) > 2 and not lemmas(w))
     return frozenset(out)
 
 
