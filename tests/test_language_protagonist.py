@@ -173,3 +173,21 @@ def test_a_writer_in_the_traffic_stays_the_ego(text):
     from vei_scenario.language import protagonist
 
     assert protagonist.without_witness(_tokens(text), []) == _tokens(text)
+
+
+@pytest.mark.parametrize(
+    ("text", "kinds"),
+    [
+        ("A jogger darted across the road. The taxi driver stopped just in time.", ["pedestrian"]),
+        ("A kid on a bike shot out of a driveway, the van stopped a metre from him.", ["bicycle"]),
+        ("A woman stepped off the kerb without looking and the lorry stopped inches from her.", ["pedestrian"]),
+    ],
+)
+def test_a_vehicle_that_stopped_for_someone_is_the_ego(text, kinds):
+    """ "The van stopped" is its reaction, not a stopped (standing) van."""
+    assert _kinds(text) == kinds
+
+
+def test_a_vehicle_said_stopped_still_stands():
+    text = "The bus was stopped at the stop when a cyclist rode into the back of it."
+    assert len(_kinds(text)) == 2

@@ -216,6 +216,15 @@ def _evidence(tokens: list[str], users, r: _Referent, referents: list[_Referent]
         r.placed_by |= not of and _placed_by(tokens, p)
 
 
+def _parked(tokens: list[str], p) -> bool:
+    """A word of standing still by the mention ("a parked van", "the bus, stationary,", "the cab was
+    stopped"), not its verb of reacting ("the taxi stopped just in time", "the van driver stopped")."""
+    near = tokens[max(p.start - 2, 0) : p.end + 2]
+    if tokens[p.end : p.end + 1] == ["stopped"]:
+        near = tokens[max(p.start - 2, 0) : p.end] + tokens[p.end + 1 : p.end + 2]
+    return bool(PARKED & set(near))
+
+
 def _narrator_only_watches(tokens: list[str]) -> bool:
     """The writer is in the text only as one who saw it ("just saw a lad on a scooter ...", "I watched
     a van clip a cyclist", "we'd just seen ...", "I was outside the shop"): every "I"/"we" is the
@@ -270,7 +279,7 @@ def frame(tokens: list[str], kind_at, known, dropped: list[str]) -> list[str]:
         and not any(
             _placed(tokens, p)
             or _placed_by_unsaid(tokens, p, next((q.start for q in users if q.start >= p.end), len(tokens)))
-            or PARKED & set(tokens[max(p.start - 2, 0) : p.end + 2])
+            or _parked(tokens, p)
             for p in r.mentions
         )
     ]
