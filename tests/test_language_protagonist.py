@@ -114,3 +114,80 @@ def test_another_vehicle_and_its_driver_stay_a_road_user():
         "minibus at 50 mph. The lorry driver waved."
     )
     assert _kinds(text) == ["truck"]
+
+
+@pytest.mark.parametrize(
+    ("text", "kinds"),
+    [
+        (
+            "Just seen a girl on a hire scooter go through a red, the bus driver had to brake really hard.",
+            ["e-scooter"],
+        ),
+        ("A man on a push bike jumped the lights on Market St and the van driver had to swerve.", ["bicycle"]),
+        ("Witnessed a jogger dart across the road. The taxi driver braked just in time.", ["pedestrian"]),
+        ("kid on a bmx came flying off the kerb, lorry driver braked, no contact", ["bicycle"]),
+        ("A cyclist swung out into the road and the coach driver had to brake sharply.", ["bicycle"]),
+        ("An elderly man stepped off the pavement without looking and the minibus driver swerved.", ["pedestrian"]),
+    ],
+)
+def test_a_vehicle_driver_who_reacts_is_the_ego_vehicle(text, kinds):
+    """ "The bus driver had to brake" is the bus reacting: a witness's report is about that vehicle."""
+    assert _kinds(text) == kinds
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A lorry overtook a cyclist on the bend and the lorry driver waved.",
+        "The bus driver was parked at the stand when a man on a scooter rode into the shelter.",
+    ],
+)
+def test_a_vehicle_driver_who_does_not_react_stays_a_road_user(text):
+    assert len(_kinds(text)) == 2
+
+
+@pytest.mark.parametrize(
+    ("text", "kinds"),
+    [
+        ("I saw a lad on a bike go straight through the red and the taxi driver had to brake hard.", ["bicycle"]),
+        ("I've just seen a woman on a hire scooter shoot off the kerb, the bus had to brake sharply.", ["e-scooter"]),
+        ("We watched a jogger run out into the road and the delivery van swerved.", ["pedestrian"]),
+        ("I was outside the chemist and saw a boy on a scooter jump the lights, the cab driver braked.", ["e-scooter"]),
+        ("I noticed a cyclist pull out of the side road and the minibus had to stop sharply.", ["bicycle"]),
+    ],
+)
+def test_a_writer_who_only_watched_is_a_witness(text, kinds):
+    """A writer who is only the one who saw it is no road user: the vehicle that reacts is the ego."""
+    assert _kinds(text) == kinds
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I saw a kid on a scooter run out and I braked hard, the bus behind me stopped too.",
+        "I saw a cyclist jump the lights in front of my car and the van driver braked.",
+        "I saw the van in front brake hard for a cyclist.",
+    ],
+)
+def test_a_writer_in_the_traffic_stays_the_ego(text):
+    from vei_scenario.language import protagonist
+
+    assert protagonist.without_witness(_tokens(text), []) == _tokens(text)
+
+
+@pytest.mark.parametrize(
+    ("text", "kinds"),
+    [
+        ("A jogger darted across the road. The taxi driver stopped just in time.", ["pedestrian"]),
+        ("A kid on a bike shot out of a driveway, the van stopped a metre from him.", ["bicycle"]),
+        ("A woman stepped off the kerb without looking and the lorry stopped inches from her.", ["pedestrian"]),
+    ],
+)
+def test_a_vehicle_that_stopped_for_someone_is_the_ego(text, kinds):
+    """ "The van stopped" is its reaction, not a stopped (standing) van."""
+    assert _kinds(text) == kinds
+
+
+def test_a_vehicle_said_stopped_still_stands():
+    text = "The bus was stopped at the stop when a cyclist rode into the back of it."
+    assert len(_kinds(text)) == 2

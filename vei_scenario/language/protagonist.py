@@ -32,12 +32,16 @@ from dataclasses import dataclass, field
 
 from vei_scenario.language.ego import (
     AT_WHEEL,
+    BETWEEN,
     DEFINITE,
+    FIRST_PERSON,
     INDEFINITE,
+    NARRATOR_INVOLVED,
     PLACED,
     SPEED_UNITS,
     VEHICLES,
     _compound,
+    _lemma_in,
     _placed,
     _road_users,
     _sentence,
@@ -172,7 +176,10 @@ def _referents(tokens: list[str], users, vehicles: frozenset[str]) -> tuple[list
             driver.mentions.append(p)
             continue
         if last in AT_WHEEL:
-            continue
+            if not _drives_vehicle(tokens, p, vehicles):
+                continue
+            words = words[:-1]
+            last = words[-1]
         same = None
         if p.det not in INDEFINITE:
             same = next((r for r in reversed(out) if r.kind == p.kind and last in r.words), None)
@@ -185,6 +192,13 @@ def _referents(tokens: list[str], users, vehicles: frozenset[str]) -> tuple[list
         same.mentions.append(p)
         same.words.update(words)
     return out, driver
+
+
+def _drives_vehicle(tokens: list[str], p, vehicles: frozenset[str]) -> bool:
+    """The mention is a vehicle's driver named by the vehicle ("the bus driver", "our van driver"):
+    what that driver does (braking, a speed) is the vehicle's, as "the bus braked" would say."""
+    words = [w for w in tokens[p.head : p.end] if w.isalpha()]
+    return p.kind in vehicles and tokens[p.end - 1] == "driver" and len(words) >= 2 and words[-2] not in AT_WHEEL
 
 
 def _evidence(tokens: list[str], users, r: _Referent, referents: list[_Referent]) -> None:
@@ -200,6 +214,50 @@ def _evidence(tokens: list[str], users, r: _Referent, referents: list[_Referent]
             s -= 1
         r.reacts |= _reacts(tokens, p, others, first=not any(s <= q.start < p.start for q in users))
         r.placed_by |= not of and _placed_by(tokens, p)
+
+
+def _parked(tokens: list[str], p) -> bool:
+    """A word of standing still by the mention ("a parked van", "the bus, stationary,", "the cab was
+    stopped"), not its verb of reacting ("the taxi stopped just in time", "the van driver stopped")."""
+    near = tokens[max(p.start - 2, 0) : p.end + 2]
+    if tokens[p.end : p.end + 1] == ["stopped"]:
+        near = tokens[max(p.start - 2, 0) : p.end] + tokens[p.end + 1 : p.end + 2]
+    return bool(PARKED & set(near))
+
+
+def _narrator_only_watches(tokens: list[str]) -> bool:
+    """The writer is in the text only as one who saw it ("just saw a lad on a scooter ...", "I watched
+    a van clip a cyclist", "we'd just seen ...", "I was outside the shop"): every "I"/"we" is the
+    subject of a verb of perceiving, or is outside, and nothing puts the writer in the traffic ("me",
+    "my", "us", "our"). Such a writer is a witness, and the report is about a vehicle in it."""
+    from vei_scenario.language.discourse import PERCEIVE
+
+    said = [k for k, w in enumerate(tokens) if w in FIRST_PERSON]
+    if not said or NARRATOR_INVOLVED & set(tokens):
+        return False
+    if any(
+        w in ("ahead", "behind", "front") and tokens[k + 1 : k + 2] not in (["of"], ["it"], ["him"], ["her"], ["them"])
+        for k, w in enumerate(tokens)
+    ):
+        return False  # (someone placed by the writer, "the car in front": the writer is in the traffic)
+    for k in said:
+        j = k + 1
+        while j < len(tokens) and (tokens[j] in BETWEEN or tokens[j] in ("'ve", "'m", "'re")):
+            j += 1
+        w = tokens[j] if j < len(tokens) else ""
+        if not (w == "outside" or (w.isalpha() and "VERB" in lemmas(w) and _lemma_in(w, PERCEIVE))):
+            return False
+    return True
+
+
+def without_witness(tokens: list[str], dropped: list[str]) -> list[str]:
+    """``tokens`` without the writer's "I"/"we" where the writer only watched (see
+    :func:`_narrator_only_watches`): "I saw a lad run the red and the bus driver braked" is told as
+    "saw a lad ...", a report about the bus, not a story of the writer's own driving."""
+    if not _narrator_only_watches(tokens):
+        return tokens
+    dropped.extend(w for w in tokens if w in FIRST_PERSON)
+    return [w for w in tokens if w not in FIRST_PERSON]
 
 
 def frame(tokens: list[str], kind_at, known, dropped: list[str]) -> list[str]:
@@ -221,7 +279,7 @@ def frame(tokens: list[str], kind_at, known, dropped: list[str]) -> list[str]:
         and not any(
             _placed(tokens, p)
             or _placed_by_unsaid(tokens, p, next((q.start for q in users if q.start >= p.end), len(tokens)))
-            or PARKED & set(tokens[max(p.start - 2, 0) : p.end + 2])
+            or _parked(tokens, p)
             for p in r.mentions
         )
     ]
