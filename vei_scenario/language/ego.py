@@ -27,6 +27,7 @@ from functools import lru_cache
 
 from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.vocabulary import IN_LINE
+from vei_scenario.language.vocabulary import PARTY as FAMILY
 
 KindAt = Callable[[list[str], int], "tuple[str, int] | None"]
 Known = Callable[[list[str], int], bool]
@@ -1274,8 +1275,6 @@ def _party_took(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[
     ("the", a possessive), has that vehicle as the ego: the story is told about it although the
     narrator's "my" keeps the text in the first person. "My dad took a taxi" (someone else's, new),
     "my mum had a bus pull out on her" or "my dad saw the car" read nothing."""
-    from vei_scenario.language.ego_speed import PARTY as FAMILY
-
     for k, w in enumerate(tokens):
         if w not in FAMILY:
             continue

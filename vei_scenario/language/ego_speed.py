@@ -200,15 +200,6 @@ def subjectless_sentences(tokens: list[str], speeds: set[int], road_users: set[i
     return out
 
 
-#: The people of a narrator's own party, by what the narrator calls them ("Dad", "my husband", "Mum"): a
-#: closed class. One of them at the wheel, in a story told from inside the car, drives the ego.
-PARTY = frozenset(
-    {"dad", "daddy", "papa", "pa", "father", "mum", "mummy", "mom", "mommy", "mama", "mam", "mother", "grandad",
-     "granddad", "grandpa", "grandma", "granny", "gran", "nan", "nana", "husband", "hubby", "wife", "partner",
-     "brother", "sister", "son", "daughter", "uncle", "aunt", "auntie", "aunty", "cousin", "boyfriend",
-     "girlfriend", "fiance", "fiancee", "friend", "mate", "bhaiya", "didi", "chacha", "mamu", "missus", "missis",
-     "grandson", "granddaughter", "nephew", "niece", "stepdad", "stepmum", "stepmom", "appa", "amma", "abba"}
-)  # fmt: skip
 #: Words between a subject and its verb of going ("was", "had been", "was still").
 _AUX = frozenset({"was", "were", "is", "are", "had", "has", "been", "still", "just"})
 
@@ -219,7 +210,7 @@ def _party_member(tokens: list[str], k: int, covered: set[int]) -> int:
     j = k + (tokens[k] in ("my", "our"))
     if j >= len(tokens) or j in covered or not tokens[j].isalpha():
         return 0
-    if tokens[j] in PARTY or (j == k and not lemmas(tokens[j])):
+    if tokens[j] in V.PARTY or (j == k and not lemmas(tokens[j])):
         return j + 1
     return 0
 

@@ -331,3 +331,13 @@ SPEED_WORDS = {
     "at high speed": 1.35,
     "at low speed": 0.65,
 }
+
+#: The people of a narrator's own party, by what the narrator calls them ("Dad", "my husband", "Mum"): a
+#: closed class. One of them at the wheel, in a story told from inside the car, drives the ego.
+PARTY = frozenset(
+    {"dad", "daddy", "papa", "pa", "father", "mum", "mummy", "mom", "mommy", "mama", "mam", "mother", "grandad",
+     "granddad", "grandpa", "grandma", "granny", "gran", "nan", "nana", "husband", "hubby", "wife", "partner",
+     "brother", "sister", "son", "daughter", "uncle", "aunt", "auntie", "aunty", "cousin", "boyfriend",
+     "girlfriend", "fiance", "fiancee", "friend", "mate", "bhaiya", "didi", "chacha", "mamu", "missus", "missis",
+     "grandson", "granddaughter", "nephew", "niece", "stepdad", "stepmum", "stepmom", "appa", "amma", "abba"}
+)  # fmt: skip
