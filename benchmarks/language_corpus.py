@@ -57,6 +57,8 @@ FIRST = {
     "language_independent_z4.json": ((50, 50, 5, 50), "sealed for two rounds of reader work"),
     "language_independent_z5.json": ((50, 50, 9, 45), "sealed for a round of reader work"),
     "language_independent_z6.json": ((50, 50, 11, 46), "sealed for a round of reader work"),
+    "language_independent_z7.json": ((50, 50, 10, 46), "sealed for a round of reader work"),
+    "language_independent_z8.json": ((50, 50, 7, 46), "sealed for a round of reader work"),
 }
 
 
