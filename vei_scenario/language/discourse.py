@@ -1302,11 +1302,18 @@ def _aftermath(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[s
             out.append(tokens[i])
             i += 1
             continue
-        if p.start < i:  # (its article and modifiers were copied already)
-            del out[len(out) - (i - p.start) :]
-        dropped.extend(tokens[p.start : p.end])
-        i = p.end
+        i = _drop_phrase(out, tokens, p, i, dropped)
     return out
+
+
+def _drop_phrase(out: list[str], tokens: list[str], p: _Phrase, i: int, dropped: list[str]) -> int:
+    """Take the road-user phrase ``p`` out of ``out``, where a pass that copies the text word by word
+    may have copied its article and modifiers already (``p.start < i``), and keep its words among those
+    not used; the index after it."""
+    if p.start < i:
+        del out[len(out) - (i - p.start) :]
+    dropped.extend(tokens[p.start : p.end])
+    return p.end
 
 
 #: What is said of those who answer a call after the event, right after their noun and a form of "be"
@@ -1345,10 +1352,7 @@ def _responders(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[
             out.extend(tokens[i : p.end])
             i = p.end
             continue
-        if p.start < i:  # (its article and modifiers were copied already)
-            del out[len(out) - (i - p.start) :]
-        dropped.extend(tokens[p.start : p.end])
-        i = p.end
+        i = _drop_phrase(out, tokens, p, i, dropped)
     return out
 
 
