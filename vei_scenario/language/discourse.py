@@ -286,6 +286,17 @@ def _new_one(tokens: list[str], p: _Phrase) -> bool:
     return False
 
 
+def _without_spans(tokens: list[str], spans: list[tuple[int, int]], dropped: list[str]) -> list[str]:
+    """``tokens`` without the ``spans`` (start, stop), in text order and not overlapping, whose words
+    are kept among those not used: a pass that decides what to leave out first, then leaves it out."""
+    out = list(tokens)
+    for start, stop in spans:
+        dropped.extend(tokens[start:stop])
+    for start, stop in reversed(spans):
+        del out[start:stop]
+    return out
+
+
 def _generic_plurals(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """ "We regularly see children stepping out ... Please simulate a child running out", "joggers often
     cross here; simulate a jogger crossing": a bare plural (no article, no count) says what road users
@@ -293,7 +304,6 @@ def _generic_plurals(tokens: list[str], kind_at: KindAt, known: Known, dropped: 
     child"), that one is the scenario's, and the plural's clause is left out (listed as not used). A
     plural with nothing after it, or said again first as known ("the van"), is the road user itself."""
     phrases = _phrases(tokens, kind_at, known)
-    out = list(tokens)
     cut: list[tuple[int, int]] = []
     for n, p in enumerate(phrases):
         before = tokens[p.start - 1] if p.start else ""
@@ -324,11 +334,7 @@ def _generic_plurals(tokens: list[str], kind_at: KindAt, known: Known, dropped: 
         ):
             stop += 1
         cut.append((p.start, stop))
-    for start, stop in cut:
-        dropped.extend(tokens[start:stop])
-    for start, stop in reversed(cut):
-        del out[start:stop]
-    return out
+    return _without_spans(tokens, cut, dropped)
 
 
 #: Verbs of coming after someone: "X, followed by Y, ..." names two road users going one after the other.
@@ -2400,12 +2406,7 @@ def _others_in_general(tokens: list[str], kind_at: KindAt, known: Known, dropped
         if not any(q.kind != "ego" for q in phrases if q.head != p.head):
             continue  # (the only road user named: it is the scene's)
         cut.append((o, p.end))
-    out = list(tokens)
-    for start, stop in cut:
-        dropped.extend(tokens[start:stop])
-    for start, stop in reversed(cut):
-        del out[start:stop]
-    return out
+    return _without_spans(tokens, cut, dropped)
 
 
 #: Words before a plural that say it comes the other way ("oncoming cars", "opposing traffic").
@@ -2450,12 +2451,7 @@ def _oncoming_traffic(tokens: list[str], kind_at: KindAt, known: Known, dropped:
         while stop < len(tokens) and not (tokens[stop] in PUNCT or tokens[stop] in _CLAUSE_ENDS):
             stop += 1
         cut.append((start, stop))
-    out = list(tokens)
-    for start, stop in cut:
-        dropped.extend(tokens[start:stop])
-    for start, stop in reversed(cut):
-        del out[start:stop]
-    return out
+    return _without_spans(tokens, cut, dropped)
 
 
 #: Marks that end a heading: the end of its line or sentence (a colon goes on with a label's value).
