@@ -11,7 +11,11 @@ from __future__ import annotations
 
 import ctypes
 import math
+import os
+import re
 import shutil
+import subprocess
+import sys
 import zipfile
 from pathlib import Path
 
@@ -261,9 +265,6 @@ def test_a_sweep_hosts_the_participant_in_every_variant(scenario, tmp_path, caps
 
 def test_the_partners_own_host_agrees(tmp_path):
     """The partners' own minimal host (host_alone.py) passes its analytic checks on this machine."""
-    import subprocess
-    import sys
-
     shutil.copytree(DATA, tmp_path / "p")
     for fmu in GOOD.glob("*.fmu"):  # (its host finds every partner beside it)
         shutil.copy(fmu, tmp_path / "p")
@@ -515,3 +516,32 @@ def test_the_trace_of_a_run_with_hosted_participants_reads_back_as_trajectories_
         worst_m = max(worst_m, math.hypot(x - float(row["x_m"]), y - float(row["y_m"])))
         worst_rad = max(worst_rad, abs(math.remainder(yaw - float(row["heading_rad"]), math.tau)))
     assert worst_m <= 1e-6 and worst_rad <= 1e-6, (worst_m, worst_rad)
+
+
+def _ld_files(tmp_path, name, *argv) -> tuple[subprocess.CompletedProcess, str]:
+    """``python -m vei_scenario ARGV`` with the dynamic loader's file log (glibc's LD_DEBUG=files)."""
+    log = tmp_path / f"{name}.ld"
+    env = dict(os.environ, LD_DEBUG="files", LD_DEBUG_OUTPUT=str(log))
+    done = subprocess.run([sys.executable, "-m", "vei_scenario", *map(str, argv)], env=env, capture_output=True,
+                          text=True, timeout=300)  # fmt: skip
+    text = "".join(p.read_text(errors="replace") for p in tmp_path.glob(f"{name}.ld*"))
+    return done, text
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="glibc's loader log (LD_DEBUG) is Linux-only")
+def test_a_command_that_hosted_a_pythonfmu_partner_ends_without_its_finaliser(scenario, tmp_path):
+    """StraightLine.fmu (built with PythonFMU) reads freed memory in its library finaliser when run at the
+    exit of a Python host; the command's success must not hang on it, so the process ends after Python's
+    own exit work (the extracted FMU removed) without calling the library's fini."""
+    plain, plain_log = _ld_files(tmp_path, "plain", "validate", scenario)
+    if "calling fini" not in plain_log:
+        pytest.skip("this loader does not log its finalisers")
+    assert plain.returncode == 0 and "calling fini" in plain_log  # (no FMU: an ordinary exit)
+    done, log = _ld_files(tmp_path, "hosted", "run", scenario, "--controller", f"Ego={GOOD}/StraightLine.fmu",
+                          "--controller-param", "speed_mps=6", "-o", tmp_path / "run", "--no-plots")  # fmt: skip
+    assert done.returncode == 0, done.stderr[-2000:]
+    assert (tmp_path / "run" / "metrics.json").is_file()
+    loaded = re.findall(r"file=(\S*StraightLine\.so)", log)
+    assert loaded, "the loader log shows the partner's library loaded"
+    assert not re.search(r"calling fini: \S*StraightLine\.so", log)
+    assert not Path(loaded[0]).exists()  # (the atexit handler removed the extracted FMU)

@@ -1,7 +1,5 @@
 """``python -m vei_scenario``: the same command line as ``vei``."""
 
-import sys
+from vei_scenario.cli import console
 
-from vei_scenario.cli import main
-
-sys.exit(main())
+console()

@@ -1246,5 +1246,13 @@ def main(argv: list[str] | None = None) -> int:
         return 130
 
 
+def console() -> None:
+    """The ``vei`` command: :func:`main`, then the process ends (:func:`~vei_scenario.process_end.end_process`:
+    without the finalisers of any FMU library the command loaded)."""
+    from vei_scenario.process_end import end_process
+
+    end_process(main())
+
+
 if __name__ == "__main__":
-    sys.exit(main())
+    console()

@@ -18,6 +18,7 @@ import numpy as np
 from vei_scenario.errors import VeiInputError
 from vei_scenario.fmu.system import ClosedLoop, model_of
 from vei_scenario.fmu.variables import SPECS
+from vei_scenario.process_end import note_native_library
 
 RECORDED = {"ego": ("x", "y", "yaw", "speed", "accel"), "sfm": ("x", "y", "yaw", "speed", "accel"), "cap": ("a_cmd",)}
 
@@ -48,6 +49,7 @@ class FmuInstance:
             self.fmu = FMU3Slave(
                 guid=md.guid, unzipDirectory=unzip, modelIdentifier=md.coSimulation.modelIdentifier, instanceName=comp
             )
+            note_native_library(str(fmu))  # (loaded: this process ends without its finalisers)
             self.fmu.instantiate()
             self.fmu.enterInitializationMode(startTime=0.0)
         else:
@@ -56,6 +58,7 @@ class FmuInstance:
             self.fmu = FMU2Slave(
                 guid=md.guid, unzipDirectory=unzip, modelIdentifier=md.coSimulation.modelIdentifier, instanceName=comp
             )
+            note_native_library(str(fmu))  # (loaded: this process ends without its finalisers)
             self.fmu.instantiate()
             self.fmu.setupExperiment(startTime=0.0)
             self.fmu.enterInitializationMode()

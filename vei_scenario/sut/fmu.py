@@ -24,6 +24,7 @@ import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
+from vei_scenario.process_end import note_native_library
 from vei_scenario.sut.contract import ControllerFault, Observation
 
 #: Input name -> (which state, which field); ``time`` is the step's start time.
@@ -187,6 +188,7 @@ class FmuController:
 
                 self.fmu = FMU3Slave(guid=ports.guid, unzipDirectory=unzip, modelIdentifier=ports.identifier,
                                      instanceName="sut")  # fmt: skip
+                note_native_library(str(ports.path))  # (loaded: this process ends without its finalisers)
                 self.fmu.instantiate()
                 self.fmu.enterInitializationMode(startTime=0.0)
             else:
@@ -194,6 +196,7 @@ class FmuController:
 
                 self.fmu = FMU2Slave(guid=ports.guid, unzipDirectory=unzip, modelIdentifier=ports.identifier,
                                      instanceName="sut")  # fmt: skip
+                note_native_library(str(ports.path))  # (loaded: this process ends without its finalisers)
                 self.fmu.instantiate()
                 self.fmu.setupExperiment(startTime=0.0)
                 self.fmu.enterInitializationMode()

@@ -29,6 +29,7 @@ import zipfile
 from dataclasses import dataclass
 from pathlib import Path
 
+from vei_scenario.process_end import note_native_library
 from vei_scenario.sut.contract import ControllerFault
 
 OSMP_TOOL = "net.pmsf.osmp"
@@ -266,6 +267,7 @@ class OsmpParticipant:
         try:
             self.fmu = FMU2Slave(guid=ports.guid, unzipDirectory=_unzipped(ports.path),
                                  modelIdentifier=ports.identifier, instanceName="osmp")  # fmt: skip
+            note_native_library(str(ports.path))  # (loaded: this process ends without its finalisers)
             self.fmu.instantiate()
             self.fmu.setupExperiment(startTime=0.0)
             self.fmu.enterInitializationMode()
