@@ -341,6 +341,21 @@ def test_a_rider_along_the_road_at_the_edge_of_the_lane_starts_on_that_kerb_side
     assert layers_problems(_layers([rider]), {"actors": [dict(want, relation=["roadside_right"])]}) != []
 
 
+def test_a_miss_lists_all_it_gets_wrong_past_a_wrong_count_or_type():
+    """A wrong count or type is one miss among several: the actors still paired are checked too."""
+    car = {"type": "car", "spawn": {"relation": "ahead"}, "speed_mps": 8.0, "behaviour": {"behaviour": "cut_in"}}
+    extra = {"type": "van", "spawn": {"relation": "ahead"}, "speed_mps": 9.0, "behaviour": {"behaviour": "keep_lane"}}
+    want = {"type": "car", "behaviours": ["cut_out"], "relation": ["ahead"]}
+    problems = layers_problems(_layers([extra, car]), {"actors": [want]})  # (the car pairs best: one miss)
+    assert problems == [
+        "2 adversaries ['van', 'car'] (expected 1: ['car'])",
+        "behaviours ['cut_in'] (expected among ['cut_out'])",
+    ]
+    alone = layers_problems(_layers([car]), {"actors": [dict(want, type="bicycle", relation=["left"])]})
+    assert [p.split(" ")[0] for p in alone] == ["type", "behaviours", "relation"]
+    assert layers_problems(_layers([]), {"actors": [want]}) == ["0 adversaries [] (expected 1: ['car'])"]
+
+
 # --- text by writers who never saw the reader: slips, shorthand, narratives, lists --------------------
 def _reading(text: str):
     return read(text)

@@ -47,8 +47,8 @@ def _near(value: float, expected: float, tol: float) -> bool:
 def _actor_problems(adv: dict, want: dict) -> list[str]:
     """Why adversary ``adv`` (layers) does not fit expectation ``want`` (empty: it fits)."""
     out = []
-    if adv["type"] != want["type"]:
-        return [f"type {adv['type']} (expected {want['type']})"]
+    if adv["type"] != want["type"]:  # (its other keys are still worth saying: a wrong type is one miss of several)
+        out.append(f"type {adv['type']} (expected {want['type']})")
     nodes = [node for _, node in behaviour_nodes(adv["behaviour"])]
     names = [n["behaviour"] for n in nodes]
     allowed = want.get("behaviours")  # left out where the text does not settle what it does
@@ -135,15 +135,31 @@ def layers_problems(layers: dict, case: dict) -> list[str]:
     if len(advs) != len(wants):
         kinds = [a["type"] for a in advs]
         out.append(f"{len(advs)} adversaries {kinds} (expected {len(wants)}: {[w['type'] for w in wants]})")
-        return out
+    return out + _best_pairing(advs, wants)
+
+
+def _best_pairing(advs: list[dict], wants: list[dict]) -> list[str]:
+    """The problems of the pairing of adversaries with expected actors that has the fewest; where the
+    counts differ, the unpaired ones are the count's miss, said already, and the paired ones are still
+    checked, so that a miss lists all it gets wrong."""
+    if not advs or not wants:
+        return []
     best: list[str] | None = None
-    for order in itertools.permutations(range(len(advs))):  # (a corpus case names a few actors at most)
-        found = [p for w, k in zip(wants, order) for p in _actor_problems(advs[k], w)]
+    if len(advs) >= len(wants):  # (a corpus case names a few actors at most; a reading rarely invents many)
+        pairings = (
+            (zip(wants, (advs[k] for k in order))) for order in itertools.permutations(range(len(advs)), len(wants))
+        )
+    else:
+        pairings = (
+            (zip((wants[k] for k in order), advs)) for order in itertools.permutations(range(len(wants)), len(advs))
+        )
+    for pairs in itertools.islice(pairings, 50_000):
+        found = [p for w, a in pairs for p in _actor_problems(a, w)]
         if best is None or len(found) < len(best):
             best = found
         if not found:
             break
-    return out + (best or [])
+    return best or []
 
 
 def check_case(case: dict, make_layers, seeds=(0, 1, 2)) -> CaseResult:
