@@ -217,3 +217,49 @@ def test_a_road_user_beside_wanting_or_taking_the_ego_lane_cuts_in(text):
 )
 def test_a_road_user_keeping_to_a_lane_does_not_cut_in(text):
     assert "cut_in" not in _behaviours(text)[0]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was doing 40 when one of the buses pulled out into my lane.",
+        "One of the lorries in the left lane moved into my lane.",
+        "Doing 60 when one of your drivers changed into my lane right in front of me.",
+        "one of them vans swerved into our lane just ahead of us",
+        "Ego at 50 km/h; one of the parked taxis pulls into the ego's lane.",
+    ],
+)
+def test_one_of_several_named_first_is_the_subject(text):
+    assert _behaviours(text)[0] == ["cut_in"]
+
+
+def test_one_of_several_after_a_verb_stays_its_object():
+    assert _behaviours("A van overtook one of the buses.")[0] == ["overtake"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A taxi cut in front of me and slammed brakes.",
+        "A taxi cut in front of me and stamped on the brakes.",
+        "A taxi cut in front of me and mashed the brakes.",
+        "A taxi cut in front of me and hit the anchors.",
+        "A taxi cut in front of me and braked heavily.",
+        "A taxi cut in front of me and brake-checked me.",
+    ],
+)
+def test_a_braking_said_with_force_after_a_cut_in_is_a_sudden_stop(text):
+    assert _behaviours(text) == [["cut_in", "sudden_stop"]]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A taxi cut in front of me and I slammed brakes.",
+        "A taxi cut in front of me and I hit the anchors.",
+        "A taxi cut in front of me, so I stamped on the brakes.",
+        "A taxi cut in front of me and hit the kerb.",
+    ],
+)
+def test_the_ego_pressing_the_brakes_after_a_cut_in_is_no_stop_of_the_cut_in(text):
+    assert _behaviours(text) == [["cut_in"]]

@@ -32,13 +32,30 @@ _BETWEEN = frozenset(
 _GOING_ON = frozenset(("then", "and", "and then"))
 
 
+#: Verbs (lemmas) of pressing with force whose object is the brakes ("slammed brakes", "stamped on the
+#: brakes", "mashed the brakes"): a hard braking, whatever the manner said.
+_FORCE = frozenset(("slam", "jam", "stamp", "stomp", "stand", "hit", "mash", "smash", "floor", "slap", "throw"))
+#: Words that may stand between such a verb and the brakes ("on", "the", "his").
+_TO_THE_BRAKES = frozenset(("on", "the", "a", "its", "his", "her", "their", "my", "our", "your", "both"))
+
+
+def _pressed_with_force(tokens: list[str], i: int) -> bool:
+    """Whether the brakes named at ``tokens[i]`` are the object of a verb of force before them, past
+    "on" and a determiner ("slammed brakes", "stamped on his brakes", "mashed the brakes")."""
+    j = i - 1
+    while j >= 0 and i - j <= 3 and tokens[j] in _TO_THE_BRAKES:
+        j -= 1
+    return j >= 0 and bool(set(lemmas(tokens[j]).get("VERB", ())) & _FORCE)
+
+
 def _plain_braking(m, tokens: list[str], nxt) -> bool:
-    """Whether mention ``m`` is the bare verb of braking, said in no hard manner and not to a stop
-    (``nxt``: the mention after it)."""
+    """Whether mention ``m`` is the bare verb of braking, said in no hard manner, not to a stop and
+    not pressed with force (``nxt``: the mention after it)."""
     if m.slot != "behaviour" or m.value[0] != "sudden_stop" or m.words not in _PLAIN_BRAKE:
         return False
     to_a_stop = nxt is not None and nxt.slot == "to_stop"
-    return not to_a_stop and not _said_hard(tokens, m) and tokens[m.end : m.end + 1] != ["to"]
+    forced = _pressed_with_force(tokens, m.start)
+    return not to_a_stop and not forced and not _said_hard(tokens, m) and tokens[m.end : m.end + 1] != ["to"]
 
 
 def _cut_in_before(mentions: list, k: int) -> bool:

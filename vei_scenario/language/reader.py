@@ -1567,6 +1567,7 @@ def _read(text: str) -> Reading:
         expect_subject = True
         prev: _Mention | None = None
         ego_speed_said: _Mention | None = None  # a speed read as the ego's ahead of its turn
+        one_of: int | None = None  # the start of the road user "one of" names ("one of the buses pulled out")
         reacting = False  # in a stretch of the narrator's reaction ("..., stopped 2 m short,")
         for k, m in enumerate(mentions):
             nxt = mentions[k + 1] if k + 1 < len(mentions) else None
@@ -1660,7 +1661,7 @@ def _read(text: str) -> Reading:
                     prev = m
                     continue  # "adult pedestrian", "bicycle courier", "target pedestrian (adult)": one actor
                 after_verb = prev is not None and prev.slot in _VERBS
-                if m.prev in L.OBJECT_PREPOSITIONS or m.next_ == "'s":
+                if (m.prev in L.OBJECT_PREPOSITIONS and m.start != one_of) or m.next_ == "'s":
                     role = "prep"  # "in front of the ego", "the ego's lane"
                 elif expect_subject or clause_subject is None:
                     role = "subject"
@@ -1699,6 +1700,7 @@ def _read(text: str) -> Reading:
                 elif m.slot == "member":
                     pool = group or last_group or []
                     if not pool:
+                        one_of = _one_of(m, nxt)
                         continue
                     free = [a for a in pool if not a.behaviours and not a.member_named]
                     unnamed = [a for a in pool if not a.member_named]
@@ -2884,6 +2886,15 @@ def _cut_outs(specs: list[ActorSpec]) -> None:
     for s in specs:  # a swerve with nothing to swerve round is a lane change
         if s.obstacle is None:
             s.behaviours = [("change_lane", *b[1:]) if b[0] == "cut_out" else b for b in s.behaviours]
+
+
+def _one_of(m, nxt) -> int | None:
+    """The start of the road user a member word with no group before it picks out ("one of the buses
+    pulled out", "one of your drivers braked", "one of them scooters cut in"): that road user is the
+    clause's subject, not an object of "of"; None when no road user follows "of"."""
+    if m.next_ != "of" or nxt is None or nxt.slot != "actor" or nxt.value == "ego" or nxt.prev != "of":
+        return None
+    return nxt.start if nxt.start - m.end <= 3 else None
 
 
 def _verb_criticality(words: str) -> str | None:
