@@ -263,3 +263,21 @@ def test_a_braking_said_with_force_after_a_cut_in_is_a_sudden_stop(text):
 )
 def test_the_ego_pressing_the_brakes_after_a_cut_in_is_no_stop_of_the_cut_in(text):
     assert _behaviours(text) == [["cut_in"]]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A van was double-parked on the left. The car ahead of me swerved round it.",
+        "The car ahead of me swerved out because a van was double parked.",
+        "A lorry was double-parked outside the shop and the taxi ahead of me pulled out round it at the last minute.",
+        "Delivery van double-parked, the hatchback ahead of us swung out round it late.",
+    ],
+)
+def test_a_lead_swerving_round_a_double_parked_vehicle_cuts_out(text):
+    assert ["cut_out"] in _behaviours(text)
+
+
+def test_a_double_parked_vehicle_nobody_swerves_round_stays_at_the_side():
+    reading = read("A child stepped out from behind a double-parked van.")
+    assert [a.relation for a in reading.actors] == ["roadside_right", "roadside_right"]

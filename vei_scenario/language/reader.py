@@ -243,6 +243,7 @@ class _Actor:
     returns: bool = False  # it goes back (a wrong-way driver to its own side)
     crit: str | None = None  # the criticality its clause's wording gives, verbs or not
     parked: bool = False  # said to be parked (at the side of the road, unless put in a lane)
+    double_parked: bool = False  # parked beside the parked ones: in the outer traffic lane
     out_of_place: bool = False  # said to come out of a place beside the road (a driveway, a stop, a gate)
     far_side: bool = False  # said to come from the other side ("from the opposite side")
     followed: bool = False  # the ego follows it ("Following a truck, ...")
@@ -2382,7 +2383,7 @@ def _read(text: str) -> Reading:
     if ego_follows and actors and r.ego_speed_mps is None and actors[0].speed_mps:
         r.ego_speed_mps = actors[0].speed_mps  # "Following a truck at 60 km/h": both at that speed
     _parked(actors, r.actors)
-    _cut_outs(r.actors)
+    _cut_outs(r.actors, {k for k, a in enumerate(actors) if a.double_parked and a.kind in VEHICLES})
     _criticality_said_apart(clauses, r.actors)
     apply_manner(stated_manner(tokens), r.actors)  # (the scales of closeness, margin and timing)
     for spec in r.actors:
@@ -2865,12 +2866,18 @@ def _parked(actors: list[_Actor], specs: list[ActorSpec]) -> None:
             spec.relation = f"roadside_{parked_sides[0]}"
 
 
-def _cut_outs(specs: list[ActorSpec]) -> None:
+def _cut_outs(specs: list[ActorSpec], double_parked: set[int] = frozenset()) -> None:
     """A vehicle ahead that swerves out of the lane while something stands in it (or "swerves round"
     it) reveals that to the ego: a cut-out, with the standing actor as its obstacle. Without
     anything standing, a swerve out is a lane change. A road user in the lane that stops (brakes to
-    a standstill) stands there as well (:func:`motion.stops_in_the_lane`)."""
-    standing = [k for k, s in enumerate(specs) if motion.stops_in_the_lane(s, specs)]
+    a standstill) stands there as well (:func:`motion.stops_in_the_lane`), and so does a vehicle
+    ``double_parked`` (by index): parked beside the parked cars, it stands in the traffic lane, whatever
+    side of the road it is on."""
+    standing = [
+        k
+        for k, s in enumerate(specs)
+        if motion.stops_in_the_lane(s, specs) or (k in double_parked and s.speed_mps == 0.0 and len(specs) > 1)
+    ]
     for k, s in enumerate(specs):
         if not standing or not s.behaviours or s.kind not in VEHICLES or k in standing:
             continue
@@ -3326,3 +3333,4 @@ def _apply(m, who, r, link, added) -> None:
         elif m.slot == "stationary":
             a.stationary = True
             a.parked = a.parked or m.words.split()[0] in ("parked", "park", "double-parked", "double")
+            a.double_parked = a.double_parked or m.words.split()[0] in ("double-parked", "double")
