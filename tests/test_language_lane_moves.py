@@ -281,3 +281,25 @@ def test_a_lead_swerving_round_a_double_parked_vehicle_cuts_out(text):
 def test_a_double_parked_vehicle_nobody_swerves_round_stays_at_the_side():
     reading = read("A child stepped out from behind a double-parked van.")
     assert [a.relation for a in reading.actors] == ["roadside_right", "roadside_right"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "The bus before ego car is stopping at the bus stop slowly.",
+        "The truck before us braked hard.",
+        "The van before the ego car slows down.",
+        "car before me change lane very late because a broken car is standing in the lane",
+        "The lorry before my car stopped suddenly.",
+    ],
+)
+def test_before_the_ego_after_a_road_user_is_in_front_of_it(text):
+    assert read(text).actors[0].relation == "ahead"
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["The car braked before I could react.", "A lorry stopped before me.", "The car before the last one stopped."],
+)
+def test_before_as_a_conjunction_or_after_a_verb_puts_no_one_ahead(text):
+    assert read(text).actors[0].relation is None

@@ -221,3 +221,29 @@ def after_a_second_verb(mentions: list, k: int) -> bool:
     while j > 0 and mentions[j].slot in _BEFORE_ITS_NOUN:
         j -= 1
     return mentions[j].slot in _VERB_SLOTS  # (that one the first verb's object)
+
+
+#: Words between "before" and the ego it is said of ("before the ego", "before my car").
+_BEFORE_THE_EGO = frozenset(("the", "my", "our"))
+
+
+def before_as_a_place(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with "before" said right after a road user's noun and right before the ego ("the
+    bus before ego car is stopping", "car before me change lane") read as the place it is, in front of
+    the ego, as "the bus in front of me": a subject whose verb is still to come takes no clause of
+    time there, and "before me" has an object, not a clause. "Before" after a verb or a comma stays a
+    conjunction ("it braked before I could react", "the car, before we got there, stopped")."""
+    out: list = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k in range(1, len(kept) - 1):
+            m, last, nxt = kept[k], kept[k - 1], kept[k + 1]
+            if m.slot != "conj" or m.words != "before" or last.slot != "actor" or last.value == "ego":
+                continue
+            between = tokens[m.end : nxt.start]
+            if last.end == m.start and nxt.slot == "actor" and nxt.value == "ego" and set(between) <= _BEFORE_THE_EGO:
+                if nxt.words in ("i", "we"):
+                    continue  # ("the car before I ...": a clause)
+                kept[k] = replace(m, slot="relation", value="ahead")
+        out.append((link, kept))
+    return out

@@ -1513,6 +1513,7 @@ def _read(text: str) -> Reading:
     clauses, ignored, read_as, scanned = scan(text)
     ignored[:0] = [w for w in aside if w not in FUNCTION_WORDS]
     set_by_the_ego = ego_speed.right_after_the_ego(clauses)  # ("lets the ego (50 km/h) pass"), as scanned
+    clauses = lane_moves.before_as_a_place(clauses, scanned)  # ("the bus before ego car": in front of it)
     clauses = sides.narrator_lane(sides.relate_headings(clauses))
     clauses = sides.ego_follows(sides.numbered_lanes(clauses, sides.drives_on_left(scanned, text)))
     clauses = sides.into_the_ego_rear(experiencer.road_user_had_acting(clauses, scanned))
