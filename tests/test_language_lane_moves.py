@@ -7,6 +7,7 @@ from __future__ import annotations
 import pytest
 
 from vei_scenario.language.reader import read
+from vei_scenario.language.sides import not_a_side
 
 
 def _behaviours(text: str) -> list[list[str]]:
@@ -303,3 +304,45 @@ def test_before_the_ego_after_a_road_user_is_in_front_of_it(text):
 )
 def test_before_as_a_conjunction_or_after_a_verb_puts_no_one_ahead(text):
     assert read(text).actors[0].relation is None
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "E-scooter cut me up at the lights",
+        "A cyclist cut us up at the roundabout.",
+        "Some lad on a bike cut me right up at the junction.",
+        "At the lights a courier on an e-bike cut the ego up.",
+        "kid on a scooter cut me up at the crossroads, nearly had him",
+    ],
+)
+def test_a_rider_cutting_the_ego_up_at_a_junction_cuts_in(text):
+    assert _behaviours(text)[0] == ["cut_in"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["A cyclist cut across in front of me at the junction.", "At the lights a cyclist cut across my path."],
+)
+def test_a_rider_cutting_across_at_a_junction_still_crosses(text):
+    assert _behaviours(text)[0] == ["cross_in_front"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "a scooter cut right across the front of my cab",
+        "a cyclist shot right across in front of my car",
+        "a motorbike flew right by me and cut in",
+        "the kid ran right across the road",
+    ],
+)
+def test_right_stressing_across_or_by_is_no_side(text):
+    tokens = text.split()
+    assert not_a_side(tokens, tokens.index("right"))
+
+
+@pytest.mark.parametrize("text", ["a taxi turned right across my path", "the van swung right across two lanes"])
+def test_right_after_a_verb_of_heading_stays_a_side(text):
+    tokens = text.split()
+    assert not not_a_side(tokens, tokens.index("right"))

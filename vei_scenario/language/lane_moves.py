@@ -247,3 +247,30 @@ def before_as_a_place(clauses: list, tokens: list[str]) -> list:
                 kept[k] = replace(m, slot="relation", value="ahead")
         out.append((link, kept))
     return out
+
+
+#: The ego as the object of a verb ("cut me up", "cut the ego up").
+_EGO_OBJECTS = frozenset(("me", "us", "ego"))
+
+
+def cut_up(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a cut-in said as "cut" the ego "up" ("cut me up", "cut us up at the lights",
+    "cut the ego up", "cut me right up") marked as going the ego's way: to cut someone up is to move into their lane
+    close in front of them, never to cross their road, even at a junction."""
+    out: list = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k, m in enumerate(kept):
+            if (
+                m.slot != "behaviour"
+                or m.value[0] != "cut_in"
+                or "cut" not in lemmas(m.words.split()[-1]).get("VERB", ())
+            ):
+                continue
+            after = tokens[m.end : m.end + 4]
+            if after[:1] == ["the"]:
+                after = after[1:]
+            if after[:1] and after[0] in _EGO_OBJECTS and "up" in after[1:3] and after[1] in ("up", "right"):
+                kept[k] = replace(m, value=(m.value[0], {**m.value[1], "_same_way": 1.0}))
+        out.append((link, kept))
+    return out

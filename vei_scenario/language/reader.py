@@ -249,6 +249,7 @@ class _Actor:
     followed: bool = False  # the ego follows it ("Following a truck, ...")
     object_of: _Actor | None = None  # whose verb it is the object of ("overtakes a bus": the bus)
     goes_on: bool = False  # said not to give way, stop or slow ("does not yield", "fails to stop")
+    same_way: bool = False  # its move said as one made going the ego's way ("cut me up")
     speed_to_mps: float | None = None  # the speed it changes to ("slows from 80 to 30 km/h": 30)
     accel_mps2: float | None = None  # how hard it changes speed ("brakes at 6 m/s²")
     toward: str | None = None  # the side it moves to ("merges right", "swerves left into our lane")
@@ -1524,6 +1525,7 @@ def _read(text: str) -> Reading:
     said = " ".join(tokens)  # (the whole text as the reader reads it, for what is stated of it as a whole)
     clauses = out_to_overtake(participle_of_state(give_the_ego_the_way(into_the_ego_lane(clauses, scanned), scanned)))
     clauses = scenery.standing_there(chains(clauses, scanned), scanned)  # ("there's a car stopped dead")
+    clauses = lane_moves.cut_up(clauses, scanned)  # ("cut me up": into the lane in front, not across)
     clauses = lane_moves.braking_after_a_cut_in(clauses, scanned)  # ("cut in and braked": how it settles)
     clauses = lane_moves.passing_each_other(clauses, scanned)  # (a meeting: no one overtakes)
     clauses = lane_moves.pulling_in_to_stop(clauses, scanned)  # ("the bus pulls in and stops": at the kerb)
@@ -2100,6 +2102,7 @@ def _read(text: str) -> Reading:
             if name == "sudden_stop" and len(words.split()) == 1 and "brake" in forms(words):
                 cfg["_plain_brake"] = 1.0  # ("brakes": how hard, a stop said after it tells)
             a.goes_on = a.goes_on or bool(cfg.pop("_denied", None))
+            a.same_way = a.same_way or bool(cfg.pop("_same_way", None))
             cfg.pop("_still", None)
             a.has_way = a.has_way or bool(cfg.pop("_has_way", None))
             a.priority = a.priority or bool(cfg.pop("_priority", None))
@@ -2310,7 +2313,7 @@ def _read(text: str) -> Reading:
             crit = next((b[2] for b in behaviours if b[2]), a.crit)
             behaviours = [("cross_in_front", {}, crit, "sequence")]
         if a.kind in RIDERS and junction and behaviours[:1] and behaviours[0][0] == "cut_in":
-            if not (a.lane_side or a.followed or a.toward or "ahead" in a.said or a.goes_on or a.arm):
+            if not (a.lane_side or a.followed or a.toward or "ahead" in a.said or a.goes_on or a.arm or a.same_way):
                 # "an e-scooter cuts across at a junction": a rider crossing the ego's road
                 behaviours = [("cross_in_front", {}, *behaviours[0][2:])] + behaviours[1:]
         overtaking = any(b[0] == "overtake" for b in behaviours)  # (it rides along, and out to pass)
