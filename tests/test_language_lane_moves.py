@@ -7,6 +7,7 @@ from __future__ import annotations
 import pytest
 
 from vei_scenario.language.reader import read
+from vei_scenario.language.sides import not_a_side
 
 
 def _behaviours(text: str) -> list[list[str]]:
@@ -217,3 +218,131 @@ def test_a_road_user_beside_wanting_or_taking_the_ego_lane_cuts_in(text):
 )
 def test_a_road_user_keeping_to_a_lane_does_not_cut_in(text):
     assert "cut_in" not in _behaviours(text)[0]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was doing 40 when one of the buses pulled out into my lane.",
+        "One of the lorries in the left lane moved into my lane.",
+        "Doing 60 when one of your drivers changed into my lane right in front of me.",
+        "one of them vans swerved into our lane just ahead of us",
+        "Ego at 50 km/h; one of the parked taxis pulls into the ego's lane.",
+    ],
+)
+def test_one_of_several_named_first_is_the_subject(text):
+    assert _behaviours(text)[0] == ["cut_in"]
+
+
+def test_one_of_several_after_a_verb_stays_its_object():
+    assert _behaviours("A van overtook one of the buses.")[0] == ["overtake"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A taxi cut in front of me and slammed brakes.",
+        "A taxi cut in front of me and stamped on the brakes.",
+        "A taxi cut in front of me and mashed the brakes.",
+        "A taxi cut in front of me and hit the anchors.",
+        "A taxi cut in front of me and braked heavily.",
+        "A taxi cut in front of me and brake-checked me.",
+    ],
+)
+def test_a_braking_said_with_force_after_a_cut_in_is_a_sudden_stop(text):
+    assert _behaviours(text) == [["cut_in", "sudden_stop"]]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A taxi cut in front of me and I slammed brakes.",
+        "A taxi cut in front of me and I hit the anchors.",
+        "A taxi cut in front of me, so I stamped on the brakes.",
+        "A taxi cut in front of me and hit the kerb.",
+    ],
+)
+def test_the_ego_pressing_the_brakes_after_a_cut_in_is_no_stop_of_the_cut_in(text):
+    assert _behaviours(text) == [["cut_in"]]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A van was double-parked on the left. The car ahead of me swerved round it.",
+        "The car ahead of me swerved out because a van was double parked.",
+        "A lorry was double-parked outside the shop and the taxi ahead of me pulled out round it at the last minute.",
+        "Delivery van double-parked, the hatchback ahead of us swung out round it late.",
+    ],
+)
+def test_a_lead_swerving_round_a_double_parked_vehicle_cuts_out(text):
+    assert ["cut_out"] in _behaviours(text)
+
+
+def test_a_double_parked_vehicle_nobody_swerves_round_stays_at_the_side():
+    reading = read("A child stepped out from behind a double-parked van.")
+    assert [a.relation for a in reading.actors] == ["roadside_right", "roadside_right"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "The bus before ego car is stopping at the bus stop slowly.",
+        "The truck before us braked hard.",
+        "The van before the ego car slows down.",
+        "car before me change lane very late because a broken car is standing in the lane",
+        "The lorry before my car stopped suddenly.",
+    ],
+)
+def test_before_the_ego_after_a_road_user_is_in_front_of_it(text):
+    assert read(text).actors[0].relation == "ahead"
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["The car braked before I could react.", "A lorry stopped before me.", "The car before the last one stopped."],
+)
+def test_before_as_a_conjunction_or_after_a_verb_puts_no_one_ahead(text):
+    assert read(text).actors[0].relation is None
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "E-scooter cut me up at the lights",
+        "A cyclist cut us up at the roundabout.",
+        "Some lad on a bike cut me right up at the junction.",
+        "At the lights a courier on an e-bike cut the ego up.",
+        "kid on a scooter cut me up at the crossroads, nearly had him",
+    ],
+)
+def test_a_rider_cutting_the_ego_up_at_a_junction_cuts_in(text):
+    assert _behaviours(text)[0] == ["cut_in"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["A cyclist cut across in front of me at the junction.", "At the lights a cyclist cut across my path."],
+)
+def test_a_rider_cutting_across_at_a_junction_still_crosses(text):
+    assert _behaviours(text)[0] == ["cross_in_front"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "a scooter cut right across the front of my cab",
+        "a cyclist shot right across in front of my car",
+        "a motorbike flew right by me and cut in",
+        "the kid ran right across the road",
+    ],
+)
+def test_right_stressing_across_or_by_is_no_side(text):
+    tokens = text.split()
+    assert not_a_side(tokens, tokens.index("right"))
+
+
+@pytest.mark.parametrize("text", ["a taxi turned right across my path", "the van swung right across two lanes"])
+def test_right_after_a_verb_of_heading_stays_a_side(text):
+    tokens = text.split()
+    assert not not_a_side(tokens, tokens.index("right"))

@@ -32,13 +32,30 @@ _BETWEEN = frozenset(
 _GOING_ON = frozenset(("then", "and", "and then"))
 
 
+#: Verbs (lemmas) of pressing with force whose object is the brakes ("slammed brakes", "stamped on the
+#: brakes", "mashed the brakes"): a hard braking, whatever the manner said.
+_FORCE = frozenset(("slam", "jam", "stamp", "stomp", "stand", "hit", "mash", "smash", "floor", "slap", "throw"))
+#: Words that may stand between such a verb and the brakes ("on", "the", "his").
+_TO_THE_BRAKES = frozenset(("on", "the", "a", "its", "his", "her", "their", "my", "our", "your", "both"))
+
+
+def _pressed_with_force(tokens: list[str], i: int) -> bool:
+    """Whether the brakes named at ``tokens[i]`` are the object of a verb of force before them, past
+    "on" and a determiner ("slammed brakes", "stamped on his brakes", "mashed the brakes")."""
+    j = i - 1
+    while j >= 0 and i - j <= 3 and tokens[j] in _TO_THE_BRAKES:
+        j -= 1
+    return j >= 0 and bool(set(lemmas(tokens[j]).get("VERB", ())) & _FORCE)
+
+
 def _plain_braking(m, tokens: list[str], nxt) -> bool:
-    """Whether mention ``m`` is the bare verb of braking, said in no hard manner and not to a stop
-    (``nxt``: the mention after it)."""
+    """Whether mention ``m`` is the bare verb of braking, said in no hard manner, not to a stop and
+    not pressed with force (``nxt``: the mention after it)."""
     if m.slot != "behaviour" or m.value[0] != "sudden_stop" or m.words not in _PLAIN_BRAKE:
         return False
     to_a_stop = nxt is not None and nxt.slot == "to_stop"
-    return not to_a_stop and not _said_hard(tokens, m) and tokens[m.end : m.end + 1] != ["to"]
+    forced = _pressed_with_force(tokens, m.start)
+    return not to_a_stop and not forced and not _said_hard(tokens, m) and tokens[m.end : m.end + 1] != ["to"]
 
 
 def _cut_in_before(mentions: list, k: int) -> bool:
@@ -204,3 +221,56 @@ def after_a_second_verb(mentions: list, k: int) -> bool:
     while j > 0 and mentions[j].slot in _BEFORE_ITS_NOUN:
         j -= 1
     return mentions[j].slot in _VERB_SLOTS  # (that one the first verb's object)
+
+
+#: Words between "before" and the ego it is said of ("before the ego", "before my car").
+_BEFORE_THE_EGO = frozenset(("the", "my", "our"))
+
+
+def before_as_a_place(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with "before" said right after a road user's noun and right before the ego ("the
+    bus before ego car is stopping", "car before me change lane") read as the place it is, in front of
+    the ego, as "the bus in front of me": a subject whose verb is still to come takes no clause of
+    time there, and "before me" has an object, not a clause. "Before" after a verb or a comma stays a
+    conjunction ("it braked before I could react", "the car, before we got there, stopped")."""
+    out: list = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k in range(1, len(kept) - 1):
+            m, last, nxt = kept[k], kept[k - 1], kept[k + 1]
+            if m.slot != "conj" or m.words != "before" or last.slot != "actor" or last.value == "ego":
+                continue
+            between = tokens[m.end : nxt.start]
+            if last.end == m.start and nxt.slot == "actor" and nxt.value == "ego" and set(between) <= _BEFORE_THE_EGO:
+                if nxt.words in ("i", "we"):
+                    continue  # ("the car before I ...": a clause)
+                kept[k] = replace(m, slot="relation", value="ahead")
+        out.append((link, kept))
+    return out
+
+
+#: The ego as the object of a verb ("cut me up", "cut the ego up").
+_EGO_OBJECTS = frozenset(("me", "us", "ego"))
+
+
+def cut_up(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a cut-in said as "cut" the ego "up" ("cut me up", "cut us up at the lights",
+    "cut the ego up", "cut me right up") marked as going the ego's way: to cut someone up is to move into their lane
+    close in front of them, never to cross their road, even at a junction."""
+    out: list = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k, m in enumerate(kept):
+            if (
+                m.slot != "behaviour"
+                or m.value[0] != "cut_in"
+                or "cut" not in lemmas(m.words.split()[-1]).get("VERB", ())
+            ):
+                continue
+            after = tokens[m.end : m.end + 4]
+            if after[:1] == ["the"]:
+                after = after[1:]
+            if after[:1] and after[0] in _EGO_OBJECTS and "up" in after[1:3] and after[1] in ("up", "right"):
+                kept[k] = replace(m, value=(m.value[0], {**m.value[1], "_same_way": 1.0}))
+        out.append((link, kept))
+    return out

@@ -1738,7 +1738,9 @@ def passes_while_the_ego_yields(clauses: list) -> list:
 
 #: Adverbs of a hard or sudden manner ("abruptly", "sharply"); their adjective said as an adverb
 #: ("stopped very sudden", "braked strong"), as second-language writers often do, says the same.
-_HARD_MANNER = frozenset(("abruptly", "suddenly", "sharply", "harshly", "violently", "strongly", "hard", "dead"))
+_HARD_MANNER = frozenset(
+    ("abruptly", "suddenly", "sharply", "harshly", "violently", "strongly", "hard", "dead", "heavily")
+)
 #: Words that only make the adverb after them stronger ("very abruptly").
 _INTENSIFIERS = frozenset(("very", "really", "so", "quite", "extremely", "too", "rather"))
 #: Verbs of stopping (lemmas) a stationary mention may be said with ("stopped", not "parked").

@@ -243,11 +243,13 @@ class _Actor:
     returns: bool = False  # it goes back (a wrong-way driver to its own side)
     crit: str | None = None  # the criticality its clause's wording gives, verbs or not
     parked: bool = False  # said to be parked (at the side of the road, unless put in a lane)
+    double_parked: bool = False  # parked beside the parked ones: in the outer traffic lane
     out_of_place: bool = False  # said to come out of a place beside the road (a driveway, a stop, a gate)
     far_side: bool = False  # said to come from the other side ("from the opposite side")
     followed: bool = False  # the ego follows it ("Following a truck, ...")
     object_of: _Actor | None = None  # whose verb it is the object of ("overtakes a bus": the bus)
     goes_on: bool = False  # said not to give way, stop or slow ("does not yield", "fails to stop")
+    same_way: bool = False  # its move said as one made going the ego's way ("cut me up")
     speed_to_mps: float | None = None  # the speed it changes to ("slows from 80 to 30 km/h": 30)
     accel_mps2: float | None = None  # how hard it changes speed ("brakes at 6 m/s²")
     toward: str | None = None  # the side it moves to ("merges right", "swerves left into our lane")
@@ -1512,6 +1514,7 @@ def _read(text: str) -> Reading:
     clauses, ignored, read_as, scanned = scan(text)
     ignored[:0] = [w for w in aside if w not in FUNCTION_WORDS]
     set_by_the_ego = ego_speed.right_after_the_ego(clauses)  # ("lets the ego (50 km/h) pass"), as scanned
+    clauses = lane_moves.before_as_a_place(clauses, scanned)  # ("the bus before ego car": in front of it)
     clauses = sides.narrator_lane(sides.relate_headings(clauses))
     clauses = sides.ego_follows(sides.numbered_lanes(clauses, sides.drives_on_left(scanned, text)))
     clauses = sides.into_the_ego_rear(experiencer.road_user_had_acting(clauses, scanned))
@@ -1522,6 +1525,7 @@ def _read(text: str) -> Reading:
     said = " ".join(tokens)  # (the whole text as the reader reads it, for what is stated of it as a whole)
     clauses = out_to_overtake(participle_of_state(give_the_ego_the_way(into_the_ego_lane(clauses, scanned), scanned)))
     clauses = scenery.standing_there(chains(clauses, scanned), scanned)  # ("there's a car stopped dead")
+    clauses = lane_moves.cut_up(clauses, scanned)  # ("cut me up": into the lane in front, not across)
     clauses = lane_moves.braking_after_a_cut_in(clauses, scanned)  # ("cut in and braked": how it settles)
     clauses = lane_moves.passing_each_other(clauses, scanned)  # (a meeting: no one overtakes)
     clauses = lane_moves.pulling_in_to_stop(clauses, scanned)  # ("the bus pulls in and stops": at the kerb)
@@ -1567,6 +1571,7 @@ def _read(text: str) -> Reading:
         expect_subject = True
         prev: _Mention | None = None
         ego_speed_said: _Mention | None = None  # a speed read as the ego's ahead of its turn
+        one_of: int | None = None  # the start of the road user "one of" names ("one of the buses pulled out")
         reacting = False  # in a stretch of the narrator's reaction ("..., stopped 2 m short,")
         for k, m in enumerate(mentions):
             nxt = mentions[k + 1] if k + 1 < len(mentions) else None
@@ -1660,7 +1665,7 @@ def _read(text: str) -> Reading:
                     prev = m
                     continue  # "adult pedestrian", "bicycle courier", "target pedestrian (adult)": one actor
                 after_verb = prev is not None and prev.slot in _VERBS
-                if m.prev in L.OBJECT_PREPOSITIONS or m.next_ == "'s":
+                if (m.prev in L.OBJECT_PREPOSITIONS and m.start != one_of) or m.next_ == "'s":
                     role = "prep"  # "in front of the ego", "the ego's lane"
                 elif expect_subject or clause_subject is None:
                     role = "subject"
@@ -1699,6 +1704,7 @@ def _read(text: str) -> Reading:
                 elif m.slot == "member":
                     pool = group or last_group or []
                     if not pool:
+                        one_of = _one_of(m, nxt)
                         continue
                     free = [a for a in pool if not a.behaviours and not a.member_named]
                     unnamed = [a for a in pool if not a.member_named]
@@ -2096,6 +2102,7 @@ def _read(text: str) -> Reading:
             if name == "sudden_stop" and len(words.split()) == 1 and "brake" in forms(words):
                 cfg["_plain_brake"] = 1.0  # ("brakes": how hard, a stop said after it tells)
             a.goes_on = a.goes_on or bool(cfg.pop("_denied", None))
+            a.same_way = a.same_way or bool(cfg.pop("_same_way", None))
             cfg.pop("_still", None)
             a.has_way = a.has_way or bool(cfg.pop("_has_way", None))
             a.priority = a.priority or bool(cfg.pop("_priority", None))
@@ -2306,7 +2313,7 @@ def _read(text: str) -> Reading:
             crit = next((b[2] for b in behaviours if b[2]), a.crit)
             behaviours = [("cross_in_front", {}, crit, "sequence")]
         if a.kind in RIDERS and junction and behaviours[:1] and behaviours[0][0] == "cut_in":
-            if not (a.lane_side or a.followed or a.toward or "ahead" in a.said or a.goes_on or a.arm):
+            if not (a.lane_side or a.followed or a.toward or "ahead" in a.said or a.goes_on or a.arm or a.same_way):
                 # "an e-scooter cuts across at a junction": a rider crossing the ego's road
                 behaviours = [("cross_in_front", {}, *behaviours[0][2:])] + behaviours[1:]
         overtaking = any(b[0] == "overtake" for b in behaviours)  # (it rides along, and out to pass)
@@ -2380,7 +2387,7 @@ def _read(text: str) -> Reading:
     if ego_follows and actors and r.ego_speed_mps is None and actors[0].speed_mps:
         r.ego_speed_mps = actors[0].speed_mps  # "Following a truck at 60 km/h": both at that speed
     _parked(actors, r.actors)
-    _cut_outs(r.actors)
+    _cut_outs(r.actors, {k for k, a in enumerate(actors) if a.double_parked and a.kind in VEHICLES})
     _criticality_said_apart(clauses, r.actors)
     apply_manner(stated_manner(tokens), r.actors)  # (the scales of closeness, margin and timing)
     for spec in r.actors:
@@ -2863,12 +2870,18 @@ def _parked(actors: list[_Actor], specs: list[ActorSpec]) -> None:
             spec.relation = f"roadside_{parked_sides[0]}"
 
 
-def _cut_outs(specs: list[ActorSpec]) -> None:
+def _cut_outs(specs: list[ActorSpec], double_parked: set[int] = frozenset()) -> None:
     """A vehicle ahead that swerves out of the lane while something stands in it (or "swerves round"
     it) reveals that to the ego: a cut-out, with the standing actor as its obstacle. Without
     anything standing, a swerve out is a lane change. A road user in the lane that stops (brakes to
-    a standstill) stands there as well (:func:`motion.stops_in_the_lane`)."""
-    standing = [k for k, s in enumerate(specs) if motion.stops_in_the_lane(s, specs)]
+    a standstill) stands there as well (:func:`motion.stops_in_the_lane`), and so does a vehicle
+    ``double_parked`` (by index): parked beside the parked cars, it stands in the traffic lane, whatever
+    side of the road it is on."""
+    standing = [
+        k
+        for k, s in enumerate(specs)
+        if motion.stops_in_the_lane(s, specs) or (k in double_parked and s.speed_mps == 0.0 and len(specs) > 1)
+    ]
     for k, s in enumerate(specs):
         if not standing or not s.behaviours or s.kind not in VEHICLES or k in standing:
             continue
@@ -2884,6 +2897,15 @@ def _cut_outs(specs: list[ActorSpec]) -> None:
     for s in specs:  # a swerve with nothing to swerve round is a lane change
         if s.obstacle is None:
             s.behaviours = [("change_lane", *b[1:]) if b[0] == "cut_out" else b for b in s.behaviours]
+
+
+def _one_of(m, nxt) -> int | None:
+    """The start of the road user a member word with no group before it picks out ("one of the buses
+    pulled out", "one of your drivers braked", "one of them scooters cut in"): that road user is the
+    clause's subject, not an object of "of"; None when no road user follows "of"."""
+    if m.next_ != "of" or nxt is None or nxt.slot != "actor" or nxt.value == "ego" or nxt.prev != "of":
+        return None
+    return nxt.start if nxt.start - m.end <= 3 else None
 
 
 def _verb_criticality(words: str) -> str | None:
@@ -3315,3 +3337,4 @@ def _apply(m, who, r, link, added) -> None:
         elif m.slot == "stationary":
             a.stationary = True
             a.parked = a.parked or m.words.split()[0] in ("parked", "park", "double-parked", "double")
+            a.double_parked = a.double_parked or m.words.split()[0] in ("double-parked", "double")
