@@ -1179,6 +1179,12 @@ def _driving_ego(tokens: list[str], k: int) -> bool:
     return opening is not None and tokens[opening] == "(" and tokens[opening - 2 : opening] == ["the", "ego"]
 
 
+def _owner_word(tokens: list[str], j: int) -> bool:
+    """Whether token ``j`` names the owner of the vehicle after it ("my dad 's Corolla", "the
+    company 's van"): a possessive "'s" or the word it follows. The vehicle is still the one driven."""
+    return tokens[j] == "'s" or (tokens[j].isalpha() and tokens[j + 1 : j + 2] == ["'s"])
+
+
 def _ego_drives(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """ "The insured was driving a Ford Fiesta", "Claimant, driving her own Micra,", "Insured (Mr
     Jones, driving his works van)": the vehicle the ego drives or rides is its own, no road user; it
@@ -1193,7 +1199,7 @@ def _ego_drives(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[
         kinds = RIDDEN if _narrator_subject(tokens, k) else VEHICLES  # (a walker or rider is no one's vehicle)
         if p is None or p.kind not in kinds:
             continue
-        if any(not (x in OWNING or (x.isalpha() and not known(tokens, j))) for j, x in
+        if any(not (x in OWNING or _owner_word(tokens, j) or (x.isalpha() and not known(tokens, j))) for j, x in
                enumerate(tokens[k + 1 : p.start], k + 1)):  # fmt: skip
             continue
         noun, end = tokens[p.end - 1], p.end

@@ -1,0 +1,40 @@
+"""A vehicle named by its owner is the ego when the story is told about it: the narrator who drives
+someone else's vehicle ("I was driving my dad's Corolla"), or the vehicle of one of the narrator's
+party or of a named person that the story happens to ("Our daughter's hatchback was clipped by a
+cyclist", "Mrs Okafor's car was hit by a lorry"). Read as one more road user, it would be an extra
+adversary that is really the ego."""
+
+from __future__ import annotations
+
+import pytest
+
+from tests.reading_of import kinds
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("I was driving my dad's Corolla at 30 mph when a cyclist swerved in front of me.", ["bicycle"]),
+        ("We were in my sister's Polo, I was driving it, when a lorry pulled out on us.", ["truck"]),
+        ("I drive my mum's Corsa sometimes. A lad on a scooter shot out from the left in front of me.", ["e-scooter"]),
+        ("I was driving my mate's ute doing 60 km/h and a cyclist swerved out ahead of me", ["bicycle"]),
+        ("I was driving the company's van at about 20 mph when a kid ran out in front of me.", ["pedestrian"]),
+        ("i drove my uncle's car home and a bus pulled out of the stop right in front of me", ["truck"]),
+    ],
+    ids=["dads-corolla", "sisters-polo", "mums-corsa", "mates-ute", "companys-van", "uncles-car"],
+)
+def test_the_narrator_driving_someone_elses_vehicle_drives_the_ego(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("I was driving my dad's car behind a lorry when the lorry braked hard.", ["truck"]),
+        ("I was cycling home when my neighbour's van reversed out of a drive in front of me.", ["van"]),
+        ("I was driving along when my neighbour's van pulled out in front of me.", ["van"]),
+    ],
+    ids=["followed-lorry", "narrator-cycling", "neighbours-van-meets-me"],
+)
+def test_someone_elses_vehicle_that_meets_the_narrator_stays_a_road_user(text, expected):
+    assert kinds(text) == expected
