@@ -38,3 +38,40 @@ def test_the_narrator_driving_someone_elses_vehicle_drives_the_ego(text, expecte
 )
 def test_someone_elses_vehicle_that_meets_the_narrator_stays_a_road_user(text, expected):
     assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("Our daughter's hatchback was hit by a cyclist who ran the red light at the crossroads.", ["bicycle"]),
+        ("My husband's car was hit by a bus pulling out of the depot. He was doing about 20 mph.", ["truck"]),
+        ("Mrs Okafor's car was struck on the roundabout by a lorry that never looked.", ["truck"]),
+        ("our trainee's van was trundling along at 30 km/h behind a man on a scooter in the bike lane", ["e-scooter"]),
+        ("Yesterday Mr Tan's taxi was hit by a moped that jumped the red light.", ["car"]),
+        ("My son's Fiesta got rear-ended by a tipper truck at the lights, he's fine.", ["truck"]),
+    ],
+    ids=["daughters-hatchback", "husbands-car", "mrs-car", "trainees-van", "mr-taxi", "sons-fiesta"],
+)
+def test_the_vehicle_of_the_person_the_story_is_about_is_the_ego(text, expected):
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("I was behind my neighbour's car when a cyclist cut in front of it.", ["car", "bicycle"]),
+        ("I was overtaking Mr Tan's taxi when it swerved into my lane.", ["car"]),
+        ("My son was riding his bike when a van pulled out of a side road and hit him.", ["van"]),
+    ],
+    ids=["narrator-behind-it", "narrator-overtaking-it", "son-on-a-bike"],
+)
+def test_an_owned_vehicle_the_narrator_meets_or_no_vehicle_stays_as_read(text, expected):
+    assert kinds(text) == expected
+
+
+def test_the_driver_of_the_owned_vehicle_is_the_egos_driver():
+    text = (
+        "Our instructor's car was crawling along at 20 km/h behind a man on a bike. "
+        "The driver held back until the road was clear and then overtook him wide."
+    )
+    assert kinds(text) == ["bicycle"]
