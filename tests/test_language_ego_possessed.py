@@ -75,3 +75,8 @@ def test_the_driver_of_the_owned_vehicle_is_the_egos_driver():
         "The driver held back until the road was clear and then overtook him wide."
     )
     assert kinds(text) == ["bicycle"]
+
+
+def test_an_owned_vehicle_standing_is_read_as_without_its_owner():
+    owned = "My neighbour's car was parked outside when a lorry reversed into it."
+    assert kinds(owned) == kinds("The car was parked outside when a lorry reversed into it.")

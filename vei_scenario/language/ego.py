@@ -1343,15 +1343,19 @@ def _owned_vehicle(tokens: list[str], kind_at: KindAt, known: Known, dropped: li
     "our" only) and no ego is named, the first vehicle named by the person who owns it (see
     :func:`_owner_phrase`) is the vehicle the story happens to, the ego, and so are every later "the
     <noun>", its driver, the owner named again and their pronouns ("Our son was doing 25 mph", "she
-    was pulling out"). A vehicle placed relative to someone ("my neighbour's parked car") stays as read, and so
-    does every owned vehicle where the narrator is in the story ("I was behind Mr Tan's taxi")."""
+    was pulling out"). A vehicle placed relative to someone or standing ("my neighbour's parked car",
+    "Mr Tan's van was parked") stays as read, and so does every owned vehicle where the narrator is in
+    the story ("I was behind Mr Tan's taxi")."""
     if NARRATOR_PERSON & set(tokens):
         return tokens
     users = _road_users(tokens, kind_at, known)
     if any(p.kind == "ego" for p in users) or len(users) < 2:
         return tokens
+    from vei_scenario.language.protagonist import _parked
+
     for p in users:
-        found = None if p.kind not in VEHICLES or _placed(tokens, p) else _owner_phrase(tokens, p, kind_at)
+        standing = p.kind not in VEHICLES or _placed(tokens, p) or _parked(tokens, p)
+        found = None if standing else _owner_phrase(tokens, p, kind_at)
         if found is None:
             continue
         start, gender = found
