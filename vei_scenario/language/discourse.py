@@ -942,11 +942,39 @@ def _ego_apposition(tokens: list[str], kind_at: KindAt, known: Known, dropped: l
         n = found[1] if found is not None and found[0] == "ego" and out[i] not in PRONOUNS_EGO else 0
         if n and i + n < len(out) and out[i + n] == ",":
             end = _apposition_end(out, i + n, kind_at, known, most=5)
+            end = _definite_apposition_end(out, i + n, kind_at, known) if end is None else end
             if end is not None:
                 dropped.extend(out[i + n + 1 : end])
                 del out[i + n : end]
         i += max(n, 1)
     return out
+
+
+#: What a report says after the noun of the vehicle it examines ("the Transit under examination",
+#: "the van in question", "the car involved"): closed endings that add no road user of their own.
+SUBJECT_ENDINGS = (("under",), ("in", "question"), ("involved",), ("concerned",))
+
+
+def _definite_apposition_end(tokens: list[str], i: int, kind_at: KindAt, known: Known) -> int | None:
+    """Where an apposition with "the" after the ego's name ends (", the blue Ford Focus," / ", the
+    Ford Transit under examination,"), as :func:`_apposition_end` reads one with "a": it may end with
+    a report's closed ending for the vehicle examined (:data:`SUBJECT_ENDINGS`), and a list ("the ego,
+    the van, and a cyclist") is none."""
+    if tokens[i : i + 2] != [",", "the"]:
+        return None
+    close = next((k for k in range(i + 2, min(i + 10, len(tokens))) if tokens[k] in PUNCT), None)
+    if close is None or tokens[close] != "," or tokens[close + 1 : close + 2] in (["and"], ["or"]):
+        return None
+    words = tokens[i + 1 : close]
+    for ending in SUBJECT_ENDINGS:
+        at = next((k for k in range(2, len(words)) if tuple(words[k : k + len(ending)]) == ending), None)
+        if at is not None and len(words) - at == len(ending) + (ending == ("under",)):
+            words = words[:at]  # ("under examination": the one word after "under" too)
+            break
+    tail = [*words[1:], ","]
+    swapped = [",", "a", *tail]
+    end = _apposition_end(swapped, 0, kind_at, known, most=5)
+    return close if end == len(swapped) - 1 else None
 
 
 #: The ego's pronouns, which take no apposition of a vehicle ("we, a family of four, ...").

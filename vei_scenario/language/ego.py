@@ -1179,6 +1179,12 @@ def _driving_ego(tokens: list[str], k: int) -> bool:
     return opening is not None and tokens[opening] == "(" and tokens[opening - 2 : opening] == ["the", "ego"]
 
 
+def _owner_word(tokens: list[str], j: int) -> bool:
+    """Whether token ``j`` names the owner of the vehicle after it ("my dad 's Corolla", "the
+    company 's van"): a possessive "'s" or the word it follows. The vehicle is still the one driven."""
+    return tokens[j] == "'s" or (tokens[j].isalpha() and tokens[j + 1 : j + 2] == ["'s"])
+
+
 def _ego_drives(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """ "The insured was driving a Ford Fiesta", "Claimant, driving her own Micra,", "Insured (Mr
     Jones, driving his works van)": the vehicle the ego drives or rides is its own, no road user; it
@@ -1193,7 +1199,7 @@ def _ego_drives(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[
         kinds = RIDDEN if _narrator_subject(tokens, k) else VEHICLES  # (a walker or rider is no one's vehicle)
         if p is None or p.kind not in kinds:
             continue
-        if any(not (x in OWNING or (x.isalpha() and not known(tokens, j))) for j, x in
+        if any(not (x in OWNING or _owner_word(tokens, j) or (x.isalpha() and not known(tokens, j))) for j, x in
                enumerate(tokens[k + 1 : p.start], k + 1)):  # fmt: skip
             continue
         noun, end = tokens[p.end - 1], p.end
@@ -1307,6 +1313,66 @@ def _party_took(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[
     return tokens
 
 
+#: Titles before a person's name ("Mrs Okafor's car", "Encik Azlan's taxi"): the name is a person's.
+TITLES = frozenset({"mr", "mrs", "ms", "miss", "mx", "dr", "sir", "dame", "encik", "puan", "cik", "mdm", "madam"})
+#: The narrator as a road user of the story ("I", "me"), not only an owner ("my", "our").
+NARRATOR_PERSON = frozenset({"i", "we", "me", "us", "myself", "ourselves"})
+
+
+def _owner_phrase(tokens: list[str], p, kind_at: KindAt) -> tuple[int, str] | None:
+    """(Where its owner's words start, the owner's pronoun possessive or "") for a vehicle named by a
+    person who owns it: one of the narrator's party ("our son 's car", "my trainee 's van") or a name
+    after a title ("Mrs Jean Hollis 's car"); None for any other vehicle ("the cyclist 's bike")."""
+    if p.start < 2 or tokens[p.start - 1] != "'s" or p.det:
+        return None
+    o = p.start - 2
+    if not tokens[o].isalpha() or kind_at(tokens, o) is not None:
+        return None
+    if o and tokens[o - 1] in PARTY_OWNERS:
+        gender = next((g for g in GENDERED if tokens[o] in GENDERED[g] | PARTY_GENDERED[g]), "")
+        return o - 1, gender
+    title = next((t for t in range(o - 1, max(o - 3, -1), -1) if tokens[t] in TITLES), None)
+    if title is None or not all(w.isalpha() for w in tokens[title:o]):
+        return None
+    return title, "his" if tokens[title] in ("mr", "sir", "encik") else "her" if tokens[title] != "dr" else ""
+
+
+def _owned_vehicle(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+    """ "Our daughter's hatchback was clipped by a cyclist", "Mrs Okafor's car was struck by a lorry":
+    where the narrator is no road user of the story (no "I", "we", "me", "us"; an owner's "my" or
+    "our" only) and no ego is named, the first vehicle named by the person who owns it (see
+    :func:`_owner_phrase`) is the vehicle the story happens to, the ego, and so are every later "the
+    <noun>", its driver, the owner named again and their pronouns ("Our son was doing 25 mph", "she
+    was pulling out"). A vehicle placed relative to someone or standing ("my neighbour's parked car",
+    "Mr Tan's van was parked") stays as read, and so does every owned vehicle where the narrator is in
+    the story ("I was behind Mr Tan's taxi")."""
+    if NARRATOR_PERSON & set(tokens):
+        return tokens
+    users = _road_users(tokens, kind_at, known)
+    if any(p.kind == "ego" for p in users) or len(users) < 2:
+        return tokens
+    from vei_scenario.language.protagonist import _parked
+
+    for p in users:
+        standing = p.kind not in VEHICLES or _placed(tokens, p) or _parked(tokens, p)
+        found = None if standing else _owner_phrase(tokens, p, kind_at)
+        if found is None:
+            continue
+        start, gender = found
+        owner = tokens[start : p.start - 1]
+        noun = tokens[p.end - 1]
+        dropped.extend(w for w in tokens[start : p.end] if w.isalpha() and w not in PARTY_OWNERS)
+        out = _as_ego([*tokens[:start], "the", "ego", *tokens[p.end :]], kind_at, known, noun, dropped)
+        i = start + 2
+        while i < len(out):  # (the owner named again: "Our son was going straight on")
+            if out[i : i + len(owner)] == owner:
+                out[i : i + len(owner)] = ["the", "ego"]
+            i += 1
+        out = _driver_is_ego(out, kind_at, known, dropped)  # ("the driver waited": its driver)
+        return _pronouns_as_ego(out, gender, kind_at, known) if gender else out
+    return tokens
+
+
 def _organisation_vehicle(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """ "the bus in front of the fleet car", "The works van was waiting at the lights", "our pool
     minibus": a vehicle the writer's organisation owns, said as known ("the", "our"), is the one a
@@ -1385,6 +1451,7 @@ def _frame(
     tokens = _fleet_member(tokens, kind_at, known, dropped)
     tokens = _ego_drives(tokens, kind_at, known, dropped)
     tokens = _party_took(tokens, kind_at, known, dropped)
+    tokens = _owned_vehicle(tokens, kind_at, known, dropped)
     tokens = _operator_fleet(tokens, kind_at, known)
     if names_ego(tokens, kind_at, known):
         if names_ego(_story(tokens, kind_at, known), kind_at, known):

@@ -82,6 +82,7 @@ from vei_scenario.language.who import (
     closed_compound,
     counted_in_figures,
     lamps_not_signals,
+    model_said_again,
     own_vehicles,
     proper_names,
     rider_noun,
@@ -626,6 +627,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
     tokens = run_on.break_after_a_speed(tokens, _actor_at, FUNCTION_WORDS)  # ("20 mph a van pulled out")
     tokens = whose_act.unnamed_rider(tokens, _kind_at)  # ("car clipped rider": an e-scooter's rider)
     tokens = towed(tokens, _kind_at)  # ("a prime mover and trailer": one road user, before who is who)
+    tokens = model_said_again(tokens, _kind_at, _known)  # ("a Honda Civic ... the Civic": the Honda)
     tokens = protagonist.without_witness(tokens, framed)  # ("I saw a lad run the red": a witness)
     tokens = ego.frame(tokens, _kind_at, _known, framed, protagonist.frame)  # (by a role, its driver, a witness)
     tokens = narrator_vehicle.frame(tokens, _kind_at, _known, framed)  # (the writer in it or testing it)

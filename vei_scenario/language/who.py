@@ -396,6 +396,23 @@ def make_and_model(tokens: list[str], kind_at: KindAt, known: Callable[[list[str
     return out
 
 
+def model_said_again(tokens: list[str], kind_at: KindAt, known: Callable[[list[str], int], bool]) -> list[str]:
+    """A model the lexicon lacks, said after its make ("a grey Honda Civic") and then again on its own
+    after "the" ("the Civic's right", "struck the Civic"), is that make's vehicle: the later mention
+    says the make ("the Honda"), which the reader reads as the same vehicle. A model word said without
+    "the" ("the focus of ...", "a Civic") and one said before its make stay."""
+    models: dict[str, str] = {}
+    out = list(tokens)
+    for i, w in enumerate(out):
+        nxt = out[i + 1] if i + 1 < len(out) else ""
+        if w in MAKES and nxt.isalpha() and nxt not in MAKES and kind_at(out, i + 1) is None:
+            if not english(nxt) or not {"VERB", "ADV"} & set(lemmas(nxt)):  # ("Civic", "Focus"; not "came")
+                models.setdefault(nxt, w)
+        elif w in models and i and out[i - 1] in ("the", "that", "this") and models[w] != w:
+            out[i] = models[w]
+    return out
+
+
 _WORD = re.compile(r"[A-Za-z][A-Za-z-]*")
 #: Marks that open a sentence, a line or a field, after which any word is capitalised.
 _OPENERS = frozenset(".!?:;\n|-(\"'\u2014\u2013*#>")
