@@ -258,6 +258,36 @@ def test_a_lane_of_someone_not_followed_keeps_its_side(text, expected):
 @pytest.mark.parametrize(
     "text",
     [
+        # a road user said in a lane and in front of the ego, whose own lane is not said: the ego is in
+        # that lane too, behind it (a text, a forum post, a voice note, a police line, a test line)
+        "A cyclist was pedalling along in the right lane in front of me at 12 mph, two lanes each way.",
+        "there was this bus in the left lane right in front of us doing like 20 km/h, so slow",
+        "Two lanes per direction. A horse and rider in the nearside lane ahead of me at 10 mph.",
+        "Vehicle 2 was travelling in lane 2 directly in front of my vehicle at 30 mph.",
+        "Ego at 50 km/h. A tractor in the right lane in front of the ego travels at 25 km/h.",
+        "On the dual carriageway at 40 mph, a learner car in the inside lane in front of me was crawling along.",
+    ],
+)
+def test_a_lane_said_of_what_is_in_front_of_the_ego_is_the_egos_own(text):
+    assert relation(text) == "ahead"
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # near misses: the ego's own lane said apart, or in front of someone else, keep the side
+        ("I was in the left lane at 40 mph; a van in the right lane in front of me braked.", "right"),
+        ("A van in the right lane in front of a lorry braked hard. I was doing 40 mph.", "right"),
+        ("At 50 km/h, a van in the left lane cut in front of me.", "left"),
+    ],
+)  # fmt: skip
+def test_a_lane_in_front_of_someone_else_keeps_its_side(text, expected):
+    assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
         # a verb of coming, where it comes along, then "towards", "at" or "for" the ego: it comes at the ego
         "Doing 40 mph on a country lane, a tractor came round the corner towards me.",
         "At 50 km/h a motorbike came flying down the hill straight at me.",
