@@ -310,6 +310,36 @@ def test_the_writers_driving_side_from_their_words(text, expected):
     assert relation(text) == expected
 
 
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # American road and car words beside miles per hour: a right-hand writer, so the passenger side
+        # and the nearside are the right (a claim letter, a forum post, a 911 call, a text, a witness)
+        (
+            "My insured was crossing the intersection on a green at 25 mph when a sedan ran the red light and "
+            "struck the passenger side of his car.",
+            "junction_right",
+        ),
+        ("At 20 mph on a downtown street a kid darted out from the nearside in front of my windshield.",
+         "roadside_right"),
+        ("Doing 30 mph into the intersection, a minivan blew the red and hit my passenger side.", "junction_right"),
+        ("I was at 15 mph when a jogger stepped off the nearside onto the road in front of me, no blinker from me.",
+         "roadside_right"),
+        ("Off the on-ramp at 40 mph, a pickup ran the light at the intersection and slammed into the passenger side "
+         "of my truck.", "junction_right"),
+        # the driver's side is the offside, the left for a right-hand writer
+        ("Going through the intersection at 20 mph, a cab ran the red and plowed into my driver's side.",
+         "junction_left"),
+        # near misses: the same with British words, or no American one, keep the left
+        ("I was crossing the junction on a green at 25 mph when a lorry ran the red light and hit my passenger side.",
+         "junction_left"),
+        ("At 20 mph a kid darted out from the nearside in front of me.", "roadside_left"),
+    ],
+)  # fmt: skip
+def test_american_road_words_with_miles_per_hour_keep_right(text, expected):
+    assert relation(text) == expected
+
+
 def test_driving_side_words():
     assert drives_on_left("a lorry in the inside lane drifted into me".split())
     assert not drives_on_left("a lorry in the nearside lane cuts in ahead of the av".split())  # (a test line)

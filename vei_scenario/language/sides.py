@@ -252,9 +252,16 @@ class Said:
 _LEFT_HAND_WORDS = frozenset(
     {"lorry", "lorries", "carriageway", "kerb", "kerbs", "kerbside", "hgv", "hgvs", "nearside", "offside"}
 )
+#: American road and car words (where a British writer says junction, saloon, people carrier, indicator,
+#: town centre, windscreen, slip road, wing): with miles per hour they tell a right-hand writer.
 _RIGHT_HAND_WORDS = frozenset(
-    {"freeway", "interstate", "sidewalk", "sidewalks", "curb", "curbs", "crosswalk", "stoplight", "semi"}
-)
+    {
+        "freeway", "freeways", "interstate", "sidewalk", "sidewalks", "curb", "curbs", "crosswalk", "crosswalks",
+        "stoplight", "stoplights", "semi", "intersection", "intersections", "sedan", "sedans", "minivan",
+        "minivans", "blinker", "blinkers", "downtown", "windshield", "on-ramp", "off-ramp", "fender", "jaywalker",
+        "jaywalking", "jaywalked",
+    }
+)  # fmt: skip
 
 
 #: Speed units of a writer who follows the metric convention (Euro NCAP's: the nearside is the right).
@@ -436,6 +443,23 @@ def _seat_side(tokens: list[str], j: int) -> tuple[str, int] | None:
     return (seat, k + 1) if tokens[k : k + 1] == ["side"] else None
 
 
+#: Who owns a vehicle the ego is in, said before its side or after "of" ("my passenger side", "the
+#: driver's side of his car": a third-person ego's, as a claim letter tells it).
+_EGO_VEHICLE_OWNERS = frozenset({"my", "our", "his", "her", "their"})
+
+
+def _of_the_egos_vehicle(tokens: list[str], j: int, end: int) -> bool:
+    """Whether the seat side at ``tokens[j:end]`` is a side of the ego's own vehicle ("struck my
+    passenger side", "the driver's side of our car", "the passenger side of my client's vehicle").
+    Why: struck there, the road user came from that side, as one said to hit "the right side of my
+    car"; a seat side of nobody's ("from the passenger side") is a side of the road instead."""
+    if j > 0 and tokens[j - 1] in ("my", "our"):
+        return True
+    after = tokens[end : end + 3]
+    owner = after[1:2] and after[1] in _EGO_VEHICLE_OWNERS | {"ego"}  # ("of my truck", read as the ego's)
+    return after[:1] == ["of"] and bool(owner or after[1:3] == ["the", "ego"])
+
+
 def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | None:
     """The side phrase starting at token ``i`` (at its preposition, determiner or first content word),
     or None. Two orders are read:
@@ -464,7 +488,10 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
     start = j
     if i != start and tokens[i] not in _OPENING and tokens[i] not in _DETERMINERS:
         return None
-    if (seat := _seat_side(tokens, j)) is not None:  # ("the passenger side": the nearside)
+    if (seat := _seat_side(tokens, j)) is not None and _of_the_egos_vehicle(tokens, j, seat[1]):
+        # ("hit my passenger side", "the driver's side of our car"): as "the right side of my car"
+        return Said(start, seat[1], prep, (("side", _side(seat[0], "", left_hand, False)),))
+    if seat is not None:  # ("the passenger side": the nearside)
         tokens, j = [*tokens[:j], seat[0], *tokens[seat[1] :]], j  # (read as the side word it stands for)
         shift = seat[1] - j - 1
         said = phrase_at(tokens, i, left_hand, ring)
