@@ -266,6 +266,7 @@ def test_a_lane_of_someone_not_followed_keeps_its_side(text, expected):
         "Vehicle 2 was travelling in lane 2 directly in front of my vehicle at 30 mph.",
         "Ego at 50 km/h. A tractor in the right lane in front of the ego travels at 25 km/h.",
         "On the dual carriageway at 40 mph, a learner car in the inside lane in front of me was crawling along.",
+        "Doing 60 mph, there was a tractor ahead of me in the left lane doing maybe 15 mph.",
     ],
 )
 def test_a_lane_said_of_what_is_in_front_of_the_ego_is_the_egos_own(text):
@@ -279,6 +280,7 @@ def test_a_lane_said_of_what_is_in_front_of_the_ego_is_the_egos_own(text):
         ("I was in the left lane at 40 mph; a van in the right lane in front of me braked.", "right"),
         ("A van in the right lane in front of a lorry braked hard. I was doing 40 mph.", "right"),
         ("At 50 km/h, a van in the left lane cut in front of me.", "left"),
+        ("At 40 mph a pickup in the lane to my left suddenly swings across in front of me to turn right.", "left"),
     ],
 )  # fmt: skip
 def test_a_lane_in_front_of_someone_else_keeps_its_side(text, expected):

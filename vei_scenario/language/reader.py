@@ -2086,7 +2086,7 @@ def _read(text: str) -> Reading:
                         r.ego_speed_mps = m.value  # (its own said already: "... ahead of the ego at 50" is the ego's)
                     else:
                         _apply(m, who, r, link, added)
-                    if isinstance(who, _Actor) and _in_front_of_the_ego(m, nxt, who.behaviours):
+                    if isinstance(who, _Actor) and _in_front_of_the_ego(m, nxt, who.behaviours, mentions):
                         who.said.add("ego_behind")  # ("a bus in the left lane in front of us": the ego's lane)
                     if of_both:
                         r.ego_speed_mps = m.value
@@ -3107,23 +3107,28 @@ def _ego_named(prev) -> bool:
     return prev.slot == "relation" and any(" ".join(words[-k:]) in L.EGO_NOUNS for k in (1, 2, 3))
 
 
-#: What a road user may have done and still be where it started ("was riding ... in front of me").
-_GOING_ALONG = frozenset(("keep_going", "along_road", "keep_lane"))
 #: How the ego ends a relation phrase said of it ("in front of us", "ahead of the ego").
 _OF_THE_EGO = ("of me", "of us", "of the ego", "of ego")
 
 
-def _in_front_of_the_ego(m, nxt, behaviours: list) -> bool:
+def _in_front_of_the_ego(m, nxt, behaviours: list, mentions: list) -> bool:
     """Whether relation mention ``m`` puts its road user in front of the ego itself ("in front of
-    me", "ahead of us", "ahead" then the ego named right after "of"), before it has
-    done more than go along (where a move ends: "pulled in to the stop just ahead of me"). Why: said
-    with a lane of its own and no lane of the ego's ("a bus in the left lane in front of us"), the ego
-    is in that lane too, behind it, as when the ego follows it (:func:`sides.lane_of_the_followed`)."""
-    if m.slot != "relation" or m.value != "ahead" or any(b[0] not in _GOING_ALONG for b in behaviours):
+    me", "ahead of us", "ahead" then the ego named right after "of") said together with its lane,
+    next to it either side ("in the left lane right in front of us", "ahead of me in lane 1"), and
+    not where a cut-in or overtake ends (:func:`sides.where_it_ends`). Why: one place said twice, the
+    ego is in that lane too, behind it, as when the ego follows it (:func:`sides.lane_of_the_followed`);
+    a lane said apart from it ("the car in the lane to my right suddenly cuts across in front of
+    me") is where it was before it moved."""
+    if m.slot != "relation" or m.value != "ahead" or sides.where_it_ends(m.value, behaviours):
         return False
     if m.words.endswith(_OF_THE_EGO):
-        return True
-    return m.next_ == "of" and nxt is not None and nxt.slot == "actor" and nxt.value == "ego" and nxt.start == m.end + 1
+        ego_end = m.end
+    elif m.next_ == "of" and nxt is not None and nxt.slot == "actor" and nxt.value == "ego" and nxt.start == m.end + 1:
+        ego_end = nxt.end
+    else:
+        return False
+    lanes = (x for x in mentions if x.slot == "lane_side")
+    return any(x.end <= m.start <= x.end + 1 or ego_end <= x.start <= ego_end + 2 for x in lanes)  # ("me in the")
 
 
 def _next_to_ego(prev, m) -> bool:
