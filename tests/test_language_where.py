@@ -478,3 +478,31 @@ def test_a_rider_coming_at_the_ego_along_the_kerb_rides_along_facing_it():
     # near miss of coming head-on: a rider kept to the kerb against the traffic rides along its edge
     actor = read("At 20 mph a cyclist rode along the kerb toward me against the traffic, staying tight in.").actors[0]
     assert ([b[0] for b in actor.behaviours], actor.relation, actor.facing) == (["along_road"], "ahead", "against")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # an exit said with its order ("at the first exit") where a road user ahead leaves is where it
+        # acts, not an arm it comes out of (a diary, a forum post, a report, a text, a test line)
+        "On the roundabout at 15 mph, a cyclist ahead of me was very slow, and she came off at the first exit.",
+        "Going round at 20 mph, the bus in front of us slowed right down at the second exit.",
+        "Roundabout, ego 25 km/h; the lead car ahead stops at the next exit.",
+        "I was at 10 mph on the roundabout behind a hatchback that braked at the third exit.",
+        "On the roundabout doing 15 mph, the van ahead of me slowed at the last exit.",
+    ],
+)
+def test_an_exit_with_its_order_where_one_ahead_leaves_is_no_arm(text):
+    assert relation(text) == "ahead"
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # near misses: out of an arm with its order, it comes from that arm
+        ("At 30 mph a car came out of the first turning on the left.", "junction_left"),
+        ("Doing 25 mph, a van shot out of the next side road on my right.", "junction_right"),
+    ],
+)
+def test_an_arm_with_its_order_come_out_of_is_where_it_starts(text, expected):
+    assert relation(text) == expected

@@ -940,6 +940,23 @@ def gap_where_it_ends(behaviours: list) -> str | None:
     return "overtake" if any(b[0] == "overtake" for b in behaviours) else None
 
 
+#: Words of order before a junction arm ("the first exit", "the next turning on the left").
+_ORDER_WORDS = frozenset(
+    {"first", "second", "third", "fourth", "fifth", "next", "last", "1st", "2nd", "3rd", "4th", "5th", "final"}
+)
+
+
+def before_the_order(tokens: list[str], i: int) -> str | None:
+    """The word before an arm's determiner and word of order ("came off at the first exit": "at"), or
+    None where no word of order comes right before the arm at token ``i``. Why: the preposition says
+    whether the arm is where a road user comes from or where it acts (:func:`arm_is_where_it_acts`),
+    and the word of order stood in its place."""
+    if i < 2 or tokens[i - 1] not in _ORDER_WORDS:
+        return None
+    j = i - 2 if tokens[i - 2] in ("the", "a", "its", "his", "her", "their", "my", "our") else i - 1
+    return tokens[j - 1] if j >= 1 else None
+
+
 def arm_is_where_it_acts(prep: str | None, said: set, behaviours: list) -> bool:
     """Whether a junction arm (or a kerb or crossing) said "at" after what a road user ahead of (or
     behind) the ego does is where it does it ("the car in front slows at the entry", "the van behind me
