@@ -769,3 +769,25 @@ def test_a_place_beside_the_road_where_one_waits_is_its_roadside(text, expected)
 )
 def test_the_oncoming_lane_of_one_from_behind_is_where_it_overtakes(text, expected):
     assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # a side said and at once taken back (a phone-in, a voice note, a 911 call, a text, a statement):
+        # the side it is put right to
+        ("At 20 mph a van came out of a side road on the right, no, sorry, on the left, and I braked.",
+         "junction_left"),
+        ("Doing 30 mph and a kid ran out from the left - wait, no, from the right - straight in front of me.",
+         "roadside_right"),
+        ("I was at 40 km/h when a cyclist on my right, I mean my left, swerved into my lane.", "left"),
+        ("At 25 mph a jogger stepped out from the right, sorry, left, in front of me.", "roadside_left"),
+        ("Ego 30 km/h. A scooter comes out of a driveway on the left... correction, on the right.", "roadside_right"),
+        # near misses: no side taken back
+        ("At 20 mph a van came out of a side road on the right, no indicator, and I braked.", "junction_right"),
+        ("Doing 30 mph a kid ran out from the left, no warning, right in front of me.", "roadside_left"),
+        ("At 20 mph a van came out of the side road on the left, no right turn there, and I braked.", "junction_left"),
+    ],
+)  # fmt: skip
+def test_a_side_taken_back_is_the_side_put_right(text, expected):
+    assert relation(text) == expected
