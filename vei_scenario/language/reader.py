@@ -86,6 +86,7 @@ from vei_scenario.language.who import (
     proper_names,
     rider_noun,
     shared_scooters,
+    standing_names_a_kind,
     towed,
     unnamed_subjects,
 )
@@ -950,6 +951,9 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
                 slot, value = "speed_adjective", V.SPEED_WORDS[said]  # (nor the subject's speed)
             elif slot == "behaviour" and (_after_copula(tokens, i) or lane_moves.slow_as_a_pace(tokens, i)):
                 slot, value = "speed_word", V.SPEED_WORDS[said]  # "the truck is slow"
+        if slot == "stationary" and tok == "standing" and standing_names_a_kind(tokens, i):
+            i += 1  # ("a standing e-scooter", "the standing kind": a scooter's kind, no state)
+            continue
         if slot == "behaviour" and whose_act.not_meant(tokens, i):
             ignored.append(" ".join(tokens[i : i + len(key)]))  # ("no intention of crossing": no act)
             i += len(key)
