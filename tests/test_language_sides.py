@@ -310,6 +310,36 @@ def test_the_writers_driving_side_from_their_words(text, expected):
     assert relation(text) == expected
 
 
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # American road and car words beside miles per hour: a right-hand writer, so the passenger side
+        # and the nearside are the right (a claim letter, a forum post, a 911 call, a text, a witness)
+        (
+            "My insured was crossing the intersection on a green at 25 mph when a sedan ran the red light and "
+            "struck the passenger side of his car.",
+            "junction_right",
+        ),
+        ("At 20 mph on a downtown street a kid darted out from the nearside in front of my windshield.",
+         "roadside_right"),
+        ("Doing 30 mph into the intersection, a minivan blew the red and hit my passenger side.", "junction_right"),
+        ("I was at 15 mph when a jogger stepped off the nearside onto the road in front of me, no blinker from me.",
+         "roadside_right"),
+        ("Off the on-ramp at 40 mph, a pickup ran the light at the intersection and slammed into the passenger side "
+         "of my truck.", "junction_right"),
+        # the driver's side is the offside, the left for a right-hand writer
+        ("Going through the intersection at 20 mph, a cab ran the red and plowed into my driver's side.",
+         "junction_left"),
+        # near misses: the same with British words, or no American one, keep the left
+        ("I was crossing the junction on a green at 25 mph when a lorry ran the red light and hit my passenger side.",
+         "junction_left"),
+        ("At 20 mph a kid darted out from the nearside in front of me.", "roadside_left"),
+    ],
+)  # fmt: skip
+def test_american_road_words_with_miles_per_hour_keep_right(text, expected):
+    assert relation(text) == expected
+
+
 def test_driving_side_words():
     assert drives_on_left("a lorry in the inside lane drifted into me".split())
     assert not drives_on_left("a lorry in the nearside lane cuts in ahead of the av".split())  # (a test line)
@@ -738,4 +768,26 @@ def test_a_place_beside_the_road_where_one_waits_is_its_roadside(text, expected)
     ],
 )
 def test_the_oncoming_lane_of_one_from_behind_is_where_it_overtakes(text, expected):
+    assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # a side said and at once taken back (a phone-in, a voice note, a 911 call, a text, a statement):
+        # the side it is put right to
+        ("At 20 mph a van came out of a side road on the right, no, sorry, on the left, and I braked.",
+         "junction_left"),
+        ("Doing 30 mph and a kid ran out from the left - wait, no, from the right - straight in front of me.",
+         "roadside_right"),
+        ("I was at 40 km/h when a cyclist on my right, I mean my left, swerved into my lane.", "left"),
+        ("At 25 mph a jogger stepped out from the right, sorry, left, in front of me.", "roadside_left"),
+        ("Ego 30 km/h. A scooter comes out of a driveway on the left... correction, on the right.", "roadside_right"),
+        # near misses: no side taken back
+        ("At 20 mph a van came out of a side road on the right, no indicator, and I braked.", "junction_right"),
+        ("Doing 30 mph a kid ran out from the left, no warning, right in front of me.", "roadside_left"),
+        ("At 20 mph a van came out of the side road on the left, no right turn there, and I braked.", "junction_left"),
+    ],
+)  # fmt: skip
+def test_a_side_taken_back_is_the_side_put_right(text, expected):
     assert relation(text) == expected

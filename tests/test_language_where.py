@@ -258,6 +258,38 @@ def test_a_lane_of_someone_not_followed_keeps_its_side(text, expected):
 @pytest.mark.parametrize(
     "text",
     [
+        # a road user said in a lane and in front of the ego, whose own lane is not said: the ego is in
+        # that lane too, behind it (a text, a forum post, a voice note, a police line, a test line)
+        "A cyclist was pedalling along in the right lane in front of me at 12 mph, two lanes each way.",
+        "there was this bus in the left lane right in front of us doing like 20 km/h, so slow",
+        "Two lanes per direction. A horse and rider in the nearside lane ahead of me at 10 mph.",
+        "Vehicle 2 was travelling in lane 2 directly in front of my vehicle at 30 mph.",
+        "Ego at 50 km/h. A tractor in the right lane in front of the ego travels at 25 km/h.",
+        "On the dual carriageway at 40 mph, a learner car in the inside lane in front of me was crawling along.",
+        "Doing 60 mph, there was a tractor ahead of me in the left lane doing maybe 15 mph.",
+    ],
+)
+def test_a_lane_said_of_what_is_in_front_of_the_ego_is_the_egos_own(text):
+    assert relation(text) == "ahead"
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # near misses: the ego's own lane said apart, or in front of someone else, keep the side
+        ("I was in the left lane at 40 mph; a van in the right lane in front of me braked.", "right"),
+        ("A van in the right lane in front of a lorry braked hard. I was doing 40 mph.", "right"),
+        ("At 50 km/h, a van in the left lane cut in front of me.", "left"),
+        ("At 40 mph a pickup in the lane to my left suddenly swings across in front of me to turn right.", "left"),
+    ],
+)  # fmt: skip
+def test_a_lane_in_front_of_someone_else_keeps_its_side(text, expected):
+    assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
         # a verb of coming, where it comes along, then "towards", "at" or "for" the ego: it comes at the ego
         "Doing 40 mph on a country lane, a tractor came round the corner towards me.",
         "At 50 km/h a motorbike came flying down the hill straight at me.",
@@ -446,3 +478,31 @@ def test_a_rider_coming_at_the_ego_along_the_kerb_rides_along_facing_it():
     # near miss of coming head-on: a rider kept to the kerb against the traffic rides along its edge
     actor = read("At 20 mph a cyclist rode along the kerb toward me against the traffic, staying tight in.").actors[0]
     assert ([b[0] for b in actor.behaviours], actor.relation, actor.facing) == (["along_road"], "ahead", "against")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # an exit said with its order ("at the first exit") where a road user ahead leaves is where it
+        # acts, not an arm it comes out of (a diary, a forum post, a report, a text, a test line)
+        "On the roundabout at 15 mph, a cyclist ahead of me was very slow, and she came off at the first exit.",
+        "Going round at 20 mph, the bus in front of us slowed right down at the second exit.",
+        "Roundabout, ego 25 km/h; the lead car ahead stops at the next exit.",
+        "I was at 10 mph on the roundabout behind a hatchback that braked at the third exit.",
+        "On the roundabout doing 15 mph, the van ahead of me slowed at the last exit.",
+    ],
+)
+def test_an_exit_with_its_order_where_one_ahead_leaves_is_no_arm(text):
+    assert relation(text) == "ahead"
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        # near misses: out of an arm with its order, it comes from that arm
+        ("At 30 mph a car came out of the first turning on the left.", "junction_left"),
+        ("Doing 25 mph, a van shot out of the next side road on my right.", "junction_right"),
+    ],
+)
+def test_an_arm_with_its_order_come_out_of_is_where_it_starts(text, expected):
+    assert relation(text) == expected

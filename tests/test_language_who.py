@@ -172,3 +172,31 @@ def test_heavy_light_and_three_wheeled_vehicles_by_their_trade_words(text, kind)
 
 def test_a_pickup_model_after_a_person_in_it_is_a_van():
     assert _kinds("Some guy in a Tacoma runs the red light from the left, ego 40 km/h.") == ["van"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # "standing" naming the stand-up kind of scooter (Indian, British, American, a test spec, a text)
+        "One fellow on those standing type electric scooters came from wrong side towards my car at 40 kmph.",
+        "At 20 mph a lad on a standing e-scooter shot across the road in front of me from the left.",
+        "A boy on a rental e-scooter, the standing kind, swerved in front of me from the left. I was at 15 kmph.",
+        "Target: adult dummy on a standing electric scooter crossing from the left at 15 km/h; VUT 40 km/h.",
+        "some dude on one of those standing scooters cut across in front of me from the left, i was doing 25 mph",
+    ],
+)
+def test_standing_before_a_scooter_names_its_kind_not_a_state(text):
+    actor = read(text).actors[0]
+    assert actor.kind == "e-scooter" and actor.behaviours[0][0] not in ("stop", "keep_going")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # near misses: someone standing, or a scooter standing, is still
+        "At 30 mph there was a scooter rider standing still in my lane and I had to stop.",
+        "There was an e-scooter standing in my lane, no rider, and I stopped at 20 km/h.",
+    ],
+)
+def test_standing_said_of_a_road_user_is_its_state(text):
+    assert read(text).actors[0].behaviours[0][0] == "stop"

@@ -536,6 +536,25 @@ def _lead_as_a_noun(m: re.Match, known_noun) -> str:
     return f"{opening}lead vehicle {after}"
 
 
+#: A side said and at once taken back ("from the right, no, sorry, from the left", "on my right, I mean
+#: my left", "the left... correction, the right"): its preposition and owner, the words of taking it
+#: back, then the side put right with or without its own.
+_SIDE_TAKEN_BACK = re.compile(
+    r"\b((?:from|on|to|off|towards?)\s+)?((?:the|my|our|his|her|its)\s+)?(?:left|right)\b[\s,.;:\u2013\u2014-]*"
+    r"(?:(?:no|sorry|wait|oops|correction|rather|i mean|i meant|or rather|i should say|my bad)[\s,.;:\u2013\u2014-]+)+"
+    r"((?:from|on|to|off|towards?)\s+)?((?:the|my|our|his|her|its)\s+)?(left|right)\b"
+    r"(?![\s-]*(?:turns?\b|on red|of way))"  # (not "no right turn", "no right of way": a sign, a rule)
+)
+
+
+def _side_put_right(m: re.Match) -> str:
+    """The side a speaker put right, with the preposition and owner said first where the repair
+    leaves them out ("from the right, sorry, left": "from the left"). Why: read as said, both sides
+    were phrases of the road user and the first one won."""
+    prep, owner = m.group(3) or m.group(1) or "", m.group(4) or m.group(2) or ""
+    return f"{prep}{owner}{m.group(5)}"
+
+
 def normalise(text: str, known_noun=lambda phrase: None) -> str:
     """``text`` (lowercased) with numbers in words, units, and the parties of a statement said the
     way the reader reads them. ``known_noun(phrase)`` returns the road-user noun a phrase ends in,
@@ -547,6 +566,7 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     # a spaced dash before a word ("light rain - delivery truck ...", "triggered 22:16 - lead vehicle"): a
     # break in the sentence, as a comma is (between numbers, "30 - 40 km/h", it is a range)
     text = re.sub(r"(?<=[^\W_])\s+[-\u2013\u2014]\s+(?=[^\W\d_])", ", ", text)
+    text = _SIDE_TAKEN_BACK.sub(_side_put_right, text)
     # "@ 3 m/s", "car@30kph": the shorthand for "at" before a number, so the number keeps the grammar of
     # "at 3 m/s" (said of the one that acts), not of a bare number after a noun
     text = re.sub(r"\s*@\s*(?=[~\d])", " at ", text)

@@ -87,6 +87,7 @@ from vei_scenario.language.who import (
     proper_names,
     rider_noun,
     shared_scooters,
+    standing_names_a_kind,
     towed,
     unnamed_subjects,
 )
@@ -954,6 +955,9 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
                 slot, value = "speed_adjective", V.SPEED_WORDS[said]  # (nor the subject's speed)
             elif slot == "behaviour" and (_after_copula(tokens, i) or lane_moves.slow_as_a_pace(tokens, i)):
                 slot, value = "speed_word", V.SPEED_WORDS[said]  # "the truck is slow"
+        if slot == "stationary" and tok == "standing" and standing_names_a_kind(tokens, i):
+            i += 1  # ("a standing e-scooter", "the standing kind": a scooter's kind, no state)
+            continue
         if slot == "behaviour" and whose_act.not_meant(tokens, i):
             ignored.append(" ".join(tokens[i : i + len(key)]))  # ("no intention of crossing": no act)
             i += len(key)
@@ -975,6 +979,9 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             continue
         if slot in ("sequence", "parallel"):
             clauses.append((slot, [_Mention("link", slot, words, i, prev, end=i + used)]))
+        elif slot == "arm":  # ("came off at the first exit": "at", past the words of order)
+            clauses[-1][1].append(_Mention(slot, value, words, i, sides.before_the_order(tokens, i) or prev, nxt,
+                                           i + used, det))  # fmt: skip
         elif slot != "noise":
             clauses[-1][1].append(_Mention(slot, value, words, i, prev, nxt, i + used, det))
         if adverb is not None and (adverb,) in TABLE and TABLE[(adverb,)][0] in ("criticality", "speed_word"):
@@ -2094,6 +2101,8 @@ def _read(text: str) -> Reading:
                         r.ego_speed_mps = m.value  # (its own said already: "... ahead of the ego at 50" is the ego's)
                     else:
                         _apply(m, who, r, link, added)
+                    if isinstance(who, _Actor) and _in_front_of_the_ego(m, nxt, who.behaviours, mentions):
+                        who.said.add("ego_behind")  # ("a bus in the left lane in front of us": the ego's lane)
                     if of_both:
                         r.ego_speed_mps = m.value
             prev = m
@@ -3127,6 +3136,30 @@ def _ego_named(prev) -> bool:
         return prev.value == "ego"
     words = prev.words.split()
     return prev.slot == "relation" and any(" ".join(words[-k:]) in L.EGO_NOUNS for k in (1, 2, 3))
+
+
+#: How the ego ends a relation phrase said of it ("in front of us", "ahead of the ego").
+_OF_THE_EGO = ("of me", "of us", "of the ego", "of ego")
+
+
+def _in_front_of_the_ego(m, nxt, behaviours: list, mentions: list) -> bool:
+    """Whether relation mention ``m`` puts its road user in front of the ego itself ("in front of
+    me", "ahead of us", "ahead" then the ego named right after "of") said together with its lane,
+    next to it either side ("in the left lane right in front of us", "ahead of me in lane 1"), and
+    not where a cut-in or overtake ends (:func:`sides.where_it_ends`). Why: one place said twice, the
+    ego is in that lane too, behind it, as when the ego follows it (:func:`sides.lane_of_the_followed`);
+    a lane said apart from it ("the car in the lane to my right suddenly cuts across in front of
+    me") is where it was before it moved."""
+    if m.slot != "relation" or m.value != "ahead" or sides.where_it_ends(m.value, behaviours):
+        return False
+    if m.words.endswith(_OF_THE_EGO):
+        ego_end = m.end
+    elif m.next_ == "of" and nxt is not None and nxt.slot == "actor" and nxt.value == "ego" and nxt.start == m.end + 1:
+        ego_end = nxt.end
+    else:
+        return False
+    lanes = (x for x in mentions if x.slot == "lane_side")
+    return any(x.end <= m.start <= x.end + 1 or ego_end <= x.start <= ego_end + 2 for x in lanes)  # ("me in the")
 
 
 def _next_to_ego(prev, m) -> bool:

@@ -252,9 +252,16 @@ class Said:
 _LEFT_HAND_WORDS = frozenset(
     {"lorry", "lorries", "carriageway", "kerb", "kerbs", "kerbside", "hgv", "hgvs", "nearside", "offside"}
 )
+#: American road and car words (where a British writer says junction, saloon, people carrier, indicator,
+#: town centre, windscreen, slip road, wing): with miles per hour they tell a right-hand writer.
 _RIGHT_HAND_WORDS = frozenset(
-    {"freeway", "interstate", "sidewalk", "sidewalks", "curb", "curbs", "crosswalk", "stoplight", "semi"}
-)
+    {
+        "freeway", "freeways", "interstate", "sidewalk", "sidewalks", "curb", "curbs", "crosswalk", "crosswalks",
+        "stoplight", "stoplights", "semi", "intersection", "intersections", "sedan", "sedans", "minivan",
+        "minivans", "blinker", "blinkers", "downtown", "windshield", "on-ramp", "off-ramp", "fender", "jaywalker",
+        "jaywalking", "jaywalked",
+    }
+)  # fmt: skip
 
 
 #: Speed units of a writer who follows the metric convention (Euro NCAP's: the nearside is the right).
@@ -436,6 +443,23 @@ def _seat_side(tokens: list[str], j: int) -> tuple[str, int] | None:
     return (seat, k + 1) if tokens[k : k + 1] == ["side"] else None
 
 
+#: Who owns a vehicle the ego is in, said before its side or after "of" ("my passenger side", "the
+#: driver's side of his car": a third-person ego's, as a claim letter tells it).
+_EGO_VEHICLE_OWNERS = frozenset({"my", "our", "his", "her", "their"})
+
+
+def _of_the_egos_vehicle(tokens: list[str], j: int, end: int) -> bool:
+    """Whether the seat side at ``tokens[j:end]`` is a side of the ego's own vehicle ("struck my
+    passenger side", "the driver's side of our car", "the passenger side of my client's vehicle").
+    Why: struck there, the road user came from that side, as one said to hit "the right side of my
+    car"; a seat side of nobody's ("from the passenger side") is a side of the road instead."""
+    if j > 0 and tokens[j - 1] in ("my", "our"):
+        return True
+    after = tokens[end : end + 3]
+    owner = after[1:2] and after[1] in _EGO_VEHICLE_OWNERS | {"ego"}  # ("of my truck", read as the ego's)
+    return after[:1] == ["of"] and bool(owner or after[1:3] == ["the", "ego"])
+
+
 def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | None:
     """The side phrase starting at token ``i`` (at its preposition, determiner or first content word),
     or None. Two orders are read:
@@ -464,7 +488,10 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
     start = j
     if i != start and tokens[i] not in _OPENING and tokens[i] not in _DETERMINERS:
         return None
-    if (seat := _seat_side(tokens, j)) is not None:  # ("the passenger side": the nearside)
+    if (seat := _seat_side(tokens, j)) is not None and _of_the_egos_vehicle(tokens, j, seat[1]):
+        # ("hit my passenger side", "the driver's side of our car"): as "the right side of my car"
+        return Said(start, seat[1], prep, (("side", _side(seat[0], "", left_hand, False)),))
+    if seat is not None:  # ("the passenger side": the nearside)
         tokens, j = [*tokens[:j], seat[0], *tokens[seat[1] :]], j  # (read as the side word it stands for)
         shift = seat[1] - j - 1
         said = phrase_at(tokens, i, left_hand, ring)
@@ -911,6 +938,23 @@ def gap_where_it_ends(behaviours: list) -> str | None:
     user has overtaken the ego ("overtakes me and pulls back in 3 m ahead", "whips back in front of me
     with 20 feet to spare"): the overtake's gap where it cuts back in, not where it starts."""
     return "overtake" if any(b[0] == "overtake" for b in behaviours) else None
+
+
+#: Words of order before a junction arm ("the first exit", "the next turning on the left").
+_ORDER_WORDS = frozenset(
+    {"first", "second", "third", "fourth", "fifth", "next", "last", "1st", "2nd", "3rd", "4th", "5th", "final"}
+)
+
+
+def before_the_order(tokens: list[str], i: int) -> str | None:
+    """The word before an arm's determiner and word of order ("came off at the first exit": "at"), or
+    None where no word of order comes right before the arm at token ``i``. Why: the preposition says
+    whether the arm is where a road user comes from or where it acts (:func:`arm_is_where_it_acts`),
+    and the word of order stood in its place."""
+    if i < 2 or tokens[i - 1] not in _ORDER_WORDS:
+        return None
+    j = i - 2 if tokens[i - 2] in ("the", "a", "its", "his", "her", "their", "my", "our") else i - 1
+    return tokens[j - 1] if j >= 1 else None
 
 
 def arm_is_where_it_acts(prep: str | None, said: set, behaviours: list) -> bool:

@@ -610,3 +610,23 @@ def counted_in_figures(tokens: list[str], i: int, kind_at: KindAt) -> int | None
     nouns = lemmas(head).get("NOUN", ())
     plural = head not in nouns if nouns else head.endswith("s") and not head.endswith("ss")
     return int(tokens[i]) if plural else None
+
+
+#: Words between "standing" and the scooter it names the kind of ("standing type electric scooters").
+_KIND_FILLERS = frozenset({"type", "kind", "style", "sort", "electric", "motorised", "motorized", "rental", "shared"})
+#: Nouns a standing rider rides: scooters, whose stand-up kind people tell apart from the seated one.
+_STOOD_ON = frozenset({"scooter", "scooters", "e-scooter", "e-scooters", "escooter", "escooters", "kick"})
+#: Nouns that stand for a kind after "the standing" ("the standing kind", "the standing type").
+_KIND_NOUNS = frozenset({"kind", "type", "sort", "one", "ones", "variety", "model"})
+
+
+def standing_names_a_kind(tokens: list[str], i: int) -> bool:
+    """Whether "standing" at token ``i`` names the kind of a scooter ("a standing e-scooter", "those
+    standing type electric scooters", "a rental e-scooter, the standing kind"), not a road user
+    that stands still. Why: read as a state, the rider was parked and did nothing it was said to."""
+    j = i + 1
+    while j < len(tokens) and j <= i + 3 and tokens[j] in _KIND_FILLERS:
+        j += 1
+    if j < len(tokens) and tokens[j] in _STOOD_ON:
+        return True
+    return i > 0 and tokens[i - 1] == "the" and tokens[i + 1 : i + 2] != [] and tokens[i + 1] in _KIND_NOUNS
