@@ -922,3 +922,49 @@ def test_the_worlds_words_for_the_weather(text, weather):
 )
 def test_the_worlds_words_for_the_traffic(text, density):
     assert read(text).density == density
+
+
+# "I am" is a verb, not the morning: a clock in words keeps the half of the day the part of the day says
+@pytest.mark.parametrize(
+    "text, lo, hi",
+    [
+        ("Last night 11 o'clock, I am on my way home and a biker comes at me on my side.", 21, 23),
+        ("Friday night around ten o'clock I am driving home when a cyclist swerves out.", 21, 23),
+        ("Yesterday evening at eight o'clock I am waiting at the lights and a taxi cuts in.", 18, 21),
+        ("At 7 o'clock in the morning I am on the bypass and a van cuts in.", 6, 8),
+        ("At nine o'clock am I was on the ring road and a van cut in front of me.", 8, 10),
+    ],
+    ids=["night-eleven", "night-ten", "evening-eight", "morning-said", "am-said"],
+)
+def test_i_am_is_not_the_morning(text, lo, hi):
+    assert lo <= int(read(text).time.split(":")[0]) <= hi
+
+
+# a statement asked back for confirmation ("It was dark, correct?", "You were doing 30, right?") states
+# the scene as any statement does; a real question to the reader does not
+@pytest.mark.parametrize(
+    "text, lo, hi",
+    [
+        ("It was raining that evening, correct? A van pulled out on me.", 18, 21),
+        ("It was dark by then, right? A van pulled out on me.", 21, 23),
+        ("This was in the morning, yeah? A van pulled out on me.", 6, 11),
+        ("You were driving home that night, weren't you? A van pulled out on you.", 21, 23),
+        ("That was late in the afternoon, is that right? A van pulled out on me.", 12, 17),
+    ],
+    ids=["correct", "right", "yeah", "werent-you", "is-that-right"],
+)
+def test_a_tag_question_states_the_scene(text, lo, hi):
+    assert lo <= int(read(text).time.split(":")[0]) <= hi
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A van pulled out on me. Was it dark at the time, though?",
+        "A van pulled out on me. Does this happen at night a lot, anyone?",
+        "A van pulled out on me. Would it be worse at night, do you think?",
+    ],
+    ids=["was-it", "does-this", "would-it"],
+)
+def test_a_question_to_the_reader_still_states_no_setting(text):
+    assert read(text).time is None

@@ -180,7 +180,8 @@ _CLOCK_IN_WORDS = re.compile(
 _OCLOCK = re.compile(rf"\b{_HOUR_WORD} o'?clock\b")
 #: Said beside a clock in words, the half of the day it is in.
 _AFTERNOON_SAID = re.compile(r"\b(?:in the (?:afternoon|evening)|at night|tonight|pm|p m)\b")
-_MORNING_SAID = re.compile(r"\b(?:in the morning|am|a m)\b")
+#: (Not "am" after "i": "11 o'clock, I am on duty" is the verb, no half of the day.)
+_MORNING_SAID = re.compile(r"\b(?:in the morning|(?<!\bi )am|a m)\b")
 
 
 def clock_in_words(said: str, parts: list[str]) -> str | None:
