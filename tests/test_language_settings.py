@@ -968,3 +968,33 @@ def test_a_tag_question_states_the_scene(text, lo, hi):
 )
 def test_a_question_to_the_reader_still_states_no_setting(text):
     assert read(text).time is None
+
+
+# a part of the day written as a name, before a street's word or joined to another street ("Sunset
+# Boulevard", "at Sunset & 3rd", "Midnight Lane"), is where, not when
+@pytest.mark.parametrize(
+    "text, lo, hi",
+    [
+        ("A van cut across me on Sunset Boulevard this afternoon.", 12, 17),
+        ("Heading along Sunset Blvd at noon, a cyclist swerved into my lane.", 11, 13),
+        ("At Sunset & 3rd this morning a taxi ran the red in front of me.", 6, 11),
+        ("Coming down Evening Road at lunchtime, a kid ran out in front of me.", 11, 14),
+        ("Turning from Dawn Avenue onto Morning Street at 3 pm, a bus pulled out on me.", 14, 16),
+    ],
+    ids=["sunset-boulevard", "sunset-blvd", "sunset-and", "evening-road", "dawn-avenue"],
+)
+def test_a_part_of_the_day_in_a_streets_name_is_no_time(text, lo, hi):
+    assert lo <= int(read(text).time.split(":")[0]) <= hi
+
+
+@pytest.mark.parametrize(
+    "text, lo, hi",
+    [
+        ("Cycling home at sunset, a van cut in front of me.", 18, 21),
+        ("On a wet Friday Evening a van cut in front of me.", 18, 22),
+        ("Late at night on the High Street, a van cut in front of me.", 21, 23),
+    ],
+    ids=["at-sunset", "friday-evening", "night-high-street"],
+)
+def test_a_part_of_the_day_not_in_a_name_is_still_the_time(text, lo, hi):
+    assert lo <= int(read(text).time.split(":")[0]) <= hi

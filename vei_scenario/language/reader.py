@@ -879,6 +879,10 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             ignored.extend(key)
             i += len(key)
             continue
+        if slot == "time" and S.time_in_a_name(tokens, i, len(key), proper):
+            ignored.extend(key)  # ("along Sunset Blvd", "at Sunset & 3rd": a street's name, not the time)
+            i += len(key)
+            continue
         if slot == "time" and before in S.DEICTIC_DAYS:
             attributive = False  # ("last night cyclist blew the red": when, a time said without a full stop)
         if slot in ("weather", "time", "density", "map") and attributive and _modifies_actor(tokens, i + len(key)):

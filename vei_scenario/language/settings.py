@@ -310,6 +310,32 @@ def day_halves(said: str) -> list[tuple[str, str]]:
     return [(m.group(0), _HALF_CLOCK[m.group(1)]) for m in _DAY_HALF.finditer(said)]
 
 
+#: Words for a street after its name ("Sunset Boulevard", "Evening Rd").
+STREET_WORDS = frozenset(
+    ("road", "rd", "street", "st", "lane", "ln", "avenue", "ave", "close", "way", "drive", "dr", "crescent", "terrace",
+     "grove", "boulevard", "blvd", "parade", "gardens", "mews", "place", "court", "row", "hill", "highway", "hwy",
+     "strip", "square", "circle")
+)  # fmt: skip
+_ORDINAL_ENDS = frozenset(("st", "nd", "rd", "th"))
+
+
+def time_in_a_name(tokens: list[str], i: int, n: int, proper: frozenset[str]) -> bool:
+    """Whether the time words ``tokens[i:i+n]`` are written as a name (each only with its own capital,
+    ``proper``) of a street: a street's word after them ("Sunset Boulevard", "Evening Road") or another
+    street joined to them, by a name or a numbered street ("Sunset & 3rd", "Sunset/Vine"; the tokens
+    keep no "&" or "/"). Why: a street named for a time of day is where, not when ("Heading along Sunset
+    Blvd at noon"), while "at sunset" and "on a Friday Evening" stay the time."""
+    if not all(t in proper for t in tokens[i : i + n]):
+        return False
+    after = tokens[i + n : i + n + 3]
+    if after[:1] and after[0] in STREET_WORDS:
+        return True
+    if after[:1] == ["and"]:
+        after = after[1:]
+    numbered = len(after) >= 2 and after[0].isdigit() and after[1] in _ORDINAL_ENDS
+    return numbered or (bool(after) and after[0] in proper)
+
+
 #: Seasons among the weather words: the weather they bring only where no other is said ("a winter
 #: morning": snow; "foggy winter mornings": fog).
 SEASON_WORDS = frozenset({"winter"})
