@@ -998,3 +998,65 @@ def test_a_part_of_the_day_in_a_streets_name_is_no_time(text, lo, hi):
 )
 def test_a_part_of_the_day_not_in_a_name_is_still_the_time(text, lo, hi):
     assert lo <= int(read(text).time.split(":")[0]) <= hi
+
+
+# where two named streets meet ("the corner of Main and Elm", "cnr King St & Queen Rd"), or someone comes
+# out of a side road, the road has a junction there, whatever "corner" alone would say
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A taxi smashed into my car at the corner of Main and 11th.",
+        "On the corner of King Street and Albert Road a van cut across me.",
+        "Crash cnr Beach Rd & Marine Pde, a ute hit a cyclist.",
+        "At the corner of Elm/Oak a cab pulled out in front of me.",
+        "Near the Jalan Ampang corner with Jalan Tun Razak, a car pulled out in front of me.",
+        "I was pulling out of a side road at walking pace when a scooter came round the corner into my bumper.",
+        "Coming out of a side street, I met a cyclist who came round the corner fast.",
+    ],
+    ids=["corner-of-and-ordinal", "corner-of-streets", "cnr-amp", "corner-slash", "corner-with", "out-of-side-road",
+         "out-of-side-street"],
+)  # fmt: skip
+def test_where_streets_meet_is_a_junction(text):
+    assert read(text).map_kind == "crossroad"
+
+
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("I came round the corner of the building and a cyclist was right there.", "curve"),
+        ("Round the corner and up the hill, a cyclist swerved out in front of me.", "curve"),
+    ],
+    ids=["corner-of-building", "round-the-corner"],
+)
+def test_a_corner_of_no_streets_stays_a_bend(text, kind):
+    assert read(text).map_kind == kind
+
+
+# a traffic signal said by its colour ("the light was green for me", "signal became green", "the robot
+# turned red") stands at a junction
+@pytest.mark.parametrize(
+    "text",
+    [
+        "The light was green for me and a kid on a scooter went across in front of me.",
+        "Signal became green, I started, and a man crossed from the right in front of me.",
+        "The robot turned red just as a minibus came through in front of me.",
+        "Lights went green, I pulled off, and a cyclist cut across my front.",
+        "At the Silk Board signal a biker crossed in front of me.",
+    ],
+    ids=["light-was-green", "signal-became", "robot-turned", "lights-went", "at-named-signal"],
+)
+def test_a_signal_by_its_colour_stands_at_a_junction(text):
+    assert read(text).map_kind == "crossroad"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "The pedestrian light was green and a man crossed at the zebra crossing in front of me.",
+        "Traffic was light and a man crossed in front of me.",
+        "A cyclist in a green jacket crossed in front of me; the light was fading.",
+    ],
+    ids=["pedestrian-light", "traffic-light", "light-fading"],
+)
+def test_other_lights_are_no_junction(text):
+    assert read(text).map_kind != "crossroad"

@@ -2235,7 +2235,10 @@ def _read(text: str) -> Reading:
     if (
         (r.map_kind in (None, "straight") and r.ego_route in ("left", "right"))
         or (r.map_kind in (None, "straight") and (any(a.arm for a in actors) or vehicles_giving_way or at_junction))
-        or (r.map_kind in (None, "straight", "curve") and S.turns_into_a_road(text, said))
+        or (
+            r.map_kind in (None, "straight", "curve")
+            and (S.turns_into_a_road(text, said) or S.streets_meet(text, said))
+        )
         or (r.map_kind == "curve" and r.ego_route in ("left", "right") and S.bend_only_a_corner(said))
     ):
         r.map_kind = "crossroad"  # the ego turns, or someone comes out of or waits in a side road: a junction

@@ -665,6 +665,24 @@ def turns_into_a_road(text: str, said: str) -> bool:
     )
 
 
+#: Two streets said to meet at a corner, in the original text: "the corner of Main and 11th", "cnr Beach Rd
+#: & Marine Pde", "corner of Elm/Oak", "the Jalan Ampang corner with Jalan Tun Razak". Both streets start
+#: with a capital or a number; "the corner of the building" names no street.
+_STREETS_MEET = re.compile(
+    r"\b(?i:corner|cnr|crnr)\.?\s+(?:(?i:of)\s+)?(?:[A-Z0-9][\w'.]*\s*){1,4}(?:and|&|/)\s*[A-Z0-9]"
+    r"|\b(?i:corner)\s+(?i:with)\s+[A-Z0-9]"
+)
+#: Coming out of a side road ("pulling out of a side road", "from a side street").
+_OUT_OF_SIDE_ROAD = re.compile(r"\b(?:out of|from) (?:a|the|one of the) side[ -]?(?:roads?|streets?|turnings?)\b")
+
+
+def streets_meet(text: str, said: str) -> bool:
+    """Whether the original ``text`` puts the scene where two named streets meet at a corner, or the
+    normalised ``said`` has someone come out of a side road: the road has a junction there, whatever
+    "corner" alone would make of it (a bend)."""
+    return _STREETS_MEET.search(text) is not None or _OUT_OF_SIDE_ROAD.search(said) is not None
+
+
 #: Words that make a crossing one for people on foot ("a zebra crossing", "the pelican", "a crosswalk").
 _FOOT_CROSSINGS = frozenset({"zebra", "pelican", "puffin", "toucan", "pedestrian", "crosswalk", "crosswalks"})
 
@@ -721,8 +739,15 @@ _RED_RUN = re.compile(
     r"|shot through|shoots through|sailed through|ignored|ignores) (?:the|a|its|his|her|their) "
     r"(?:red|red light|red lights|lights|light)\b"
 )
-#: Lights named by their street ("at the Harbour Rd lights"), in the original text.
-_NAMED_LIGHTS = re.compile(r"\b(?i:at|by|near) the (?:[A-Z0-9][\w'.]* ){1,3}(?:lights|signals)\b")
+#: Lights named by their street ("at the Harbour Rd lights", "at Silk Board signal"), in the original text.
+_NAMED_LIGHTS = re.compile(r"\b(?i:at|by|near) (?:the )?(?:[A-Z0-9][\w'.]* ){1,3}(?:lights|signals?)\b")
+#: A traffic signal said by its colour ("the light was green for me", "signal became green", "the robot
+#: turned red", "lights had changed to amber"): a robot is a traffic light in southern Africa.
+_SIGNAL_COLOUR = re.compile(
+    r"\b(?:light|lights|signal|signals|robot|robots) "
+    r"(?:(?:was|were|is|are) (?:just |still |already )?|(?:had |has |just )?(?:turned|turns|went|goes|became|becomes"
+    r"|changed|changes|switched|switches) (?:to )?)(?:green|red|amber|yellow|orange)\b"
+)
 #: Two streets written with a slash ("Queen/Albert", "4TH/MARKET", "Elm St / High St"), in the original text:
 #: where they cross. Both sides start with a capital or a street number; units ("km/h") and shorthand
 #: ("w/", "m/c") are lower case.
@@ -733,8 +758,11 @@ _SLASHED_STREETS = re.compile(
 
 
 def signalled_junction(text: str, said: str) -> bool:
-    """Whether the text puts the scene at a junction by its signals or its streets: a red light run
-    (no foot crossing named), lights named by their street, or two streets written with a slash."""
-    if _RED_RUN.search(said) and not set(said.split()) & (_FOOT_CROSSINGS | {"crossing"}):
+    """Whether the text puts the scene at a junction by its signals or its streets: a red light run or
+    a signal said by its colour (no foot crossing named), lights named by their street, or two streets
+    written with a slash."""
+    if (_RED_RUN.search(said) or _SIGNAL_COLOUR.search(said)) and not set(said.split()) & (
+        _FOOT_CROSSINGS | {"crossing"}
+    ):
         return True
     return _NAMED_LIGHTS.search(text) is not None or _SLASHED_STREETS.search(text) is not None
