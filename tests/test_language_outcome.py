@@ -891,3 +891,59 @@ def test_fine_after_a_forced_escape_is_a_near_miss(text, intent):
     """That everyone was fine, or nothing happened, says how it ended: after a sudden act or the ego's
     hard braking or swerve it was a near miss avoided; with nothing forced, a safe pass."""
     assert read(text).intent == intent
+
+
+# a contact verb whose object is the ego's own vehicle ("hit my car", read as the ego): a collision
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("A taxi went through on red and hit my car.", "collision"),
+        ("Some idiot in a ute hit my car at the lights.", "collision"),
+        ("A bakkie jumped the robot and struck our car broadside.", "collision"),
+        ("Then the tipper truck hit my van from behind.", "collision"),
+        ("An okada came from nowhere and hit my vehicle.", "collision"),
+        ("The lorry nearly hit my car.", "near_miss"),
+        ("The bus did not hit my car, it stopped in time.", "near_miss"),
+        ("I hit the brakes and my car stopped short of the bike.", "near_miss"),
+    ],
+    ids=["taxi", "ute", "bakkie", "tipper", "okada", "nearly", "did-not", "hit-the-brakes"],
+)
+def test_a_contact_with_the_egos_vehicle_is_a_collision(text, intent):
+    assert _intent(text) == intent
+
+
+# "how close he came to going under", "came close to ending up under": what someone came near to did
+# not happen, a near miss, however many words stand between the nearness and the contact
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("He has no idea how close he came to going under my wheels.", "near_miss"),
+        ("The kid came close to ending up under the bus.", "near_miss"),
+        ("She came so near to going into the side of the lorry.", "near_miss"),
+        ("We got very close to crashing into the van.", "near_miss"),
+        ("He came close to hitting the scooter.", "near_miss"),
+        ("He went under the wheels of the lorry.", "collision"),
+        ("The cyclist came close and then went into the side of the van.", "collision"),
+    ],
+    ids=["how-close-came", "came-close-ending-up", "came-near", "got-close", "plain", "went-under", "came-close-then"],
+)
+def test_a_contact_someone_came_close_to_is_a_near_miss(text, intent):
+    assert _intent(text) == intent
+
+
+# "no harm done", "no harm came of it" says how it ended: after a forced stop or swerve a near miss, alone
+# a safe pass
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("A lad shot out on a scooter and I had to brake hard. No harm done.", "near_miss"),
+        ("I had to swerve round the rider, but no harm done.", "near_miss"),
+        ("The driver had to stop sharply for the kid. No harm came of it, thankfully.", "near_miss"),
+        ("I slammed on the brakes; no harm done though.", "near_miss"),
+        ("I waited for the pedestrian to cross. No harm done.", "safe"),
+        ("The bus crept past the cyclist, no harm done.", "safe"),
+    ],
+    ids=["brake-hard", "swerve", "stop-sharply", "slammed", "waited", "crept"],
+)
+def test_no_harm_done_says_how_it_ended(text, intent):
+    assert read(text).intent == intent

@@ -922,3 +922,141 @@ def test_the_worlds_words_for_the_weather(text, weather):
 )
 def test_the_worlds_words_for_the_traffic(text, density):
     assert read(text).density == density
+
+
+# "I am" is a verb, not the morning: a clock in words keeps the half of the day the part of the day says
+@pytest.mark.parametrize(
+    "text, lo, hi",
+    [
+        ("Last night 11 o'clock, I am on my way home and a biker comes at me on my side.", 21, 23),
+        ("Friday night around ten o'clock I am driving home when a cyclist swerves out.", 21, 23),
+        ("Yesterday evening at eight o'clock I am waiting at the lights and a taxi cuts in.", 18, 21),
+        ("At 7 o'clock in the morning I am on the bypass and a van cuts in.", 6, 8),
+        ("At nine o'clock am I was on the ring road and a van cut in front of me.", 8, 10),
+    ],
+    ids=["night-eleven", "night-ten", "evening-eight", "morning-said", "am-said"],
+)
+def test_i_am_is_not_the_morning(text, lo, hi):
+    assert lo <= int(read(text).time.split(":")[0]) <= hi
+
+
+# a statement asked back for confirmation ("It was dark, correct?", "You were doing 30, right?") states
+# the scene as any statement does; a real question to the reader does not
+@pytest.mark.parametrize(
+    "text, lo, hi",
+    [
+        ("It was raining that evening, correct? A van pulled out on me.", 18, 21),
+        ("It was dark by then, right? A van pulled out on me.", 21, 23),
+        ("This was in the morning, yeah? A van pulled out on me.", 6, 11),
+        ("You were driving home that night, weren't you? A van pulled out on you.", 21, 23),
+        ("That was late in the afternoon, is that right? A van pulled out on me.", 12, 17),
+    ],
+    ids=["correct", "right", "yeah", "werent-you", "is-that-right"],
+)
+def test_a_tag_question_states_the_scene(text, lo, hi):
+    assert lo <= int(read(text).time.split(":")[0]) <= hi
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A van pulled out on me. Was it dark at the time, though?",
+        "A van pulled out on me. Does this happen at night a lot, anyone?",
+        "A van pulled out on me. Would it be worse at night, do you think?",
+    ],
+    ids=["was-it", "does-this", "would-it"],
+)
+def test_a_question_to_the_reader_still_states_no_setting(text):
+    assert read(text).time is None
+
+
+# a part of the day written as a name, before a street's word or joined to another street ("Sunset
+# Boulevard", "at Sunset & 3rd", "Midnight Lane"), is where, not when
+@pytest.mark.parametrize(
+    "text, lo, hi",
+    [
+        ("A van cut across me on Sunset Boulevard this afternoon.", 12, 17),
+        ("Heading along Sunset Blvd at noon, a cyclist swerved into my lane.", 11, 13),
+        ("At Sunset & 3rd this morning a taxi ran the red in front of me.", 6, 11),
+        ("Coming down Evening Road at lunchtime, a kid ran out in front of me.", 11, 14),
+        ("Turning from Dawn Avenue onto Morning Street at 3 pm, a bus pulled out on me.", 14, 16),
+    ],
+    ids=["sunset-boulevard", "sunset-blvd", "sunset-and", "evening-road", "dawn-avenue"],
+)
+def test_a_part_of_the_day_in_a_streets_name_is_no_time(text, lo, hi):
+    assert lo <= int(read(text).time.split(":")[0]) <= hi
+
+
+@pytest.mark.parametrize(
+    "text, lo, hi",
+    [
+        ("Cycling home at sunset, a van cut in front of me.", 18, 21),
+        ("On a wet Friday Evening a van cut in front of me.", 18, 22),
+        ("Late at night on the High Street, a van cut in front of me.", 21, 23),
+    ],
+    ids=["at-sunset", "friday-evening", "night-high-street"],
+)
+def test_a_part_of_the_day_not_in_a_name_is_still_the_time(text, lo, hi):
+    assert lo <= int(read(text).time.split(":")[0]) <= hi
+
+
+# where two named streets meet ("the corner of Main and Elm", "cnr King St & Queen Rd"), or someone comes
+# out of a side road, the road has a junction there, whatever "corner" alone would say
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A taxi smashed into my car at the corner of Main and 11th.",
+        "On the corner of King Street and Albert Road a van cut across me.",
+        "Crash cnr Beach Rd & Marine Pde, a ute hit a cyclist.",
+        "At the corner of Elm/Oak a cab pulled out in front of me.",
+        "Near the Jalan Ampang corner with Jalan Tun Razak, a car pulled out in front of me.",
+        "I was pulling out of a side road at walking pace when a scooter came round the corner into my bumper.",
+        "Coming out of a side street, I met a cyclist who came round the corner fast.",
+    ],
+    ids=["corner-of-and-ordinal", "corner-of-streets", "cnr-amp", "corner-slash", "corner-with", "out-of-side-road",
+         "out-of-side-street"],
+)  # fmt: skip
+def test_where_streets_meet_is_a_junction(text):
+    assert read(text).map_kind == "crossroad"
+
+
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("I came round the corner of the building and a cyclist was right there.", "curve"),
+        ("Round the corner and up the hill, a cyclist swerved out in front of me.", "curve"),
+    ],
+    ids=["corner-of-building", "round-the-corner"],
+)
+def test_a_corner_of_no_streets_stays_a_bend(text, kind):
+    assert read(text).map_kind == kind
+
+
+# a traffic signal said by its colour ("the light was green for me", "signal became green", "the robot
+# turned red") stands at a junction
+@pytest.mark.parametrize(
+    "text",
+    [
+        "The light was green for me and a kid on a scooter went across in front of me.",
+        "Signal became green, I started, and a man crossed from the right in front of me.",
+        "The robot turned red just as a minibus came through in front of me.",
+        "Lights went green, I pulled off, and a cyclist cut across my front.",
+        "At the Silk Board signal a biker crossed in front of me.",
+    ],
+    ids=["light-was-green", "signal-became", "robot-turned", "lights-went", "at-named-signal"],
+)
+def test_a_signal_by_its_colour_stands_at_a_junction(text):
+    assert read(text).map_kind == "crossroad"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "The pedestrian light was green and a man crossed at the zebra crossing in front of me.",
+        "Traffic was light and a man crossed in front of me.",
+        "A cyclist in a green jacket crossed in front of me; the light was fading.",
+    ],
+    ids=["pedestrian-light", "traffic-light", "light-fading"],
+)
+def test_other_lights_are_no_junction(text):
+    assert read(text).map_kind != "crossroad"

@@ -477,6 +477,8 @@ def _verbal(words: list[str], i: int) -> bool:
         return True  # ("no hit": denied, as a noun or a verb alike)
     if _vehicle_part(["the", *words[i + 1 : i + 4]]) or _road_user_word(nxt):
         return True  # ("scooter hit rear wheel", "van hit cyclist": a report's object without its article)
+    if nxt == "ego":
+        return True  # ("a taxi hit my car", read as "hit ego": the ego's vehicle is the object)
     return prev in _VERBAL_BEFORE or nxt in {"the", "a", "an", "into", "with", "by"} | _POSSESSIVES | _PERSON_OBJECTS
 
 
@@ -1089,13 +1091,28 @@ def _near_to(words: list[str], i: int) -> bool:
     k = i - 1
     while k >= 0 and words[k] in ("a", "an", "the"):
         k -= 1
+    if k >= 1 and words[k].endswith("ing") and words[k - 1] in ("from", "to", "of"):
+        k -= 1  # ("close to going under the wheels", "seconds from ending up in the side of it")
+    if k >= 2 and words[k] == "up" and words[k - 1].endswith("ing"):
+        k -= 2  # ("came close to ending up under the bus")
     if k < 1 or words[k] not in ("from", "to", "of"):
         return False
-    if words[k] == "to" and words[k - 1] not in ("close", "closer", "near", "nearer"):
+    if words[k] == "to" and not _came_near(words, k):
         return False  # ("I had to hit the brakes", "went to clip him": not a nearness)
     if words[k] == "of" and words[k - 1] != "short":
         return False  # ("just short of hitting him"; not "the moment of impact")
     return bool(set(words[max(0, k - 4) : k]) & _NEARNESS)
+
+
+def _came_near(words: list[str], k: int) -> bool:
+    """Whether "to" at ``k`` follows a nearness: right after it ("close to hitting him") or after a
+    verb of coming or getting that follows it ("how close he came to going under", "so near we got
+    to hitting it"); not "had to", "went to"."""
+    if words[k - 1] in ("close", "closer", "near", "nearer"):
+        return True
+    if not _lemmas(words[k - 1]) & {"come", "get"}:
+        return False
+    return bool(set(words[max(0, k - 4) : k - 1]) & {"close", "closer", "near", "nearer"})
 
 
 #: Verbs of a belief or an expectation held at the time ("I thought I'd hit him", "we braced for impact").
@@ -1448,7 +1465,9 @@ def outcome_cues(said: str) -> list[Cue]:
             hedge = w in _HEDGES or (w == "just" and i > 0 and words[i - 1] == "only")
             if hedge and (_hedged_act(words, i) or _hedge_after_escape(words, i)):
                 add("hedged")
-            if w in _TROUBLE and (_denied_before(words, i) or _scoped(words, i, ("without",), 3)):
+            if w == "harm" and _denied_before(words, i):
+                add("unharmed")  # ("no harm done": how it ended, not how close it was)
+            elif w in _TROUBLE and (_denied_before(words, i) or _scoped(words, i, ("without",), 3)):
                 add("safe")
             elif w in _FUSS and words[i - 1 : i] in (["no"], ["any"], ["without"]) and _denied_before(words, i):
                 add("safe")  # ("no fuss", "without any bother", "no hassle"; not "didn't bother to look")

@@ -884,6 +884,10 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             ignored.extend(key)
             i += len(key)
             continue
+        if slot == "time" and S.time_in_a_name(tokens, i, len(key), proper):
+            ignored.extend(key)  # ("along Sunset Blvd", "at Sunset & 3rd": a street's name, not the time)
+            i += len(key)
+            continue
         if slot == "time" and before in S.DEICTIC_DAYS:
             attributive = False  # ("last night cyclist blew the red": when, a time said without a full stop)
         if slot in ("weather", "time", "density", "map") and attributive and _modifies_actor(tokens, i + len(key)):
@@ -2249,7 +2253,10 @@ def _read(text: str) -> Reading:
     if (
         (r.map_kind in (None, "straight") and r.ego_route in ("left", "right"))
         or (r.map_kind in (None, "straight") and (any(a.arm for a in actors) or vehicles_giving_way or at_junction))
-        or (r.map_kind in (None, "straight", "curve") and S.turns_into_a_road(text, said))
+        or (
+            r.map_kind in (None, "straight", "curve")
+            and (S.turns_into_a_road(text, said) or S.streets_meet(text, said))
+        )
         or (r.map_kind == "curve" and r.ego_route in ("left", "right") and S.bend_only_a_corner(said))
     ):
         r.map_kind = "crossroad"  # the ego turns, or someone comes out of or waits in a side road: a junction

@@ -162,13 +162,43 @@ def _not_the_scene(sentence: str, names_road_user: Callable[[str], object]) -> b
     """A question to the reader, a reported question, a counterfactual, or what someone says should
     have been done: none of them is what happened."""
     said = sentence.strip()
-    if said.endswith("?") and not (names_road_user(said) or _OF_THE_SCENE.search(said)):
+    if said.endswith("?") and not (names_road_user(said) or _OF_THE_SCENE.search(said) or tag_question(said)):
         return True  # ("Is this allowed?", "Was it your fault?", "Thoughts?")
     if _ASKED.search(said):
         return True  # ("She asked whether hire scooters could be geofenced off pavements.")
     if _RECORD.match(said):
         return True  # (a meeting's roll or decisions, a letter's salutation)
     return bool(_COUNTERFACTUAL.match(said) or _SHOULD_HAVE.search(said))
+
+
+#: Wh-words and the openers of a question to the reader: a tag question's tag never opens with one.
+_WH = frozenset(("what", "why", "how", "who", "whom", "whose", "when", "where", "which", "any", "anyone", "anybody",
+                 "thoughts"))  # fmt: skip
+#: Words that open a question proper: an auxiliary or modal put before its subject, or one of :data:`_WH`.
+_ASKING = _WH | frozenset(
+    ("is", "was", "were", "are", "am", "do", "does", "did", "can", "could", "would", "will", "should", "shall", "may",
+     "might", "must", "have", "has", "had")
+)  # fmt: skip
+#: Words that open a sentence before its clause ("so", "and", "well", "ok"): the clause follows them.
+_OPENERS = frozenset(("so", "and", "but", "well", "ok", "okay", "now", "then", "right"))
+#: The longest tag a statement asked back takes ("correct", "isn't it", "is that right").
+TAG_WORDS = 3
+
+
+def tag_question(said: str) -> bool:
+    """Whether ``said``, ending with a question mark, is a statement asked back for confirmation ("It was
+    raining that evening, correct?", "You were doing 30, weren't you?"): a clause of three words or more
+    that opens with its subject, not an auxiliary or a wh-word, then after its last comma a short tag
+    that opens with no wh-word. Why: a cross-examination, an interview or a voice note states the scene
+    this way; only a question proper leaves it open."""
+    body, comma, tag = said.rstrip("?").rpartition(",")
+    words = [w.lower() for w in re.findall(r"[A-Za-z][A-Za-z'-]*", body)]
+    while words and words[0] in _OPENERS:
+        words = words[1:]
+    tag_words = re.findall(r"[A-Za-z][A-Za-z'-]*", tag.lower())
+    if not comma or len(words) < 3 or not 0 < len(tag_words) <= TAG_WORDS:
+        return False
+    return words[0] not in _ASKING and tag_words[0] not in _WH
 
 
 def _words(part: str) -> list[str]:

@@ -180,7 +180,8 @@ _CLOCK_IN_WORDS = re.compile(
 _OCLOCK = re.compile(rf"\b{_HOUR_WORD} o'?clock\b")
 #: Said beside a clock in words, the half of the day it is in.
 _AFTERNOON_SAID = re.compile(r"\b(?:in the (?:afternoon|evening)|at night|tonight|pm|p m)\b")
-_MORNING_SAID = re.compile(r"\b(?:in the morning|am|a m)\b")
+#: (Not "am" after "i": "11 o'clock, I am on duty" is the verb, no half of the day.)
+_MORNING_SAID = re.compile(r"\b(?:in the morning|(?<!\bi )am|a m)\b")
 
 
 def clock_in_words(said: str, parts: list[str]) -> str | None:
@@ -307,6 +308,32 @@ def day_halves(said: str) -> list[tuple[str, str]]:
     """(words, clock) of a day said with its half and no hour ("Weds AM": the morning, "Friday pm":
     the afternoon), as time words the reader reads beside the others; "Monday I am driving" has none."""
     return [(m.group(0), _HALF_CLOCK[m.group(1)]) for m in _DAY_HALF.finditer(said)]
+
+
+#: Words for a street after its name ("Sunset Boulevard", "Evening Rd").
+STREET_WORDS = frozenset(
+    ("road", "rd", "street", "st", "lane", "ln", "avenue", "ave", "close", "way", "drive", "dr", "crescent", "terrace",
+     "grove", "boulevard", "blvd", "parade", "gardens", "mews", "place", "court", "row", "hill", "highway", "hwy",
+     "strip", "square", "circle")
+)  # fmt: skip
+_ORDINAL_ENDS = frozenset(("st", "nd", "rd", "th"))
+
+
+def time_in_a_name(tokens: list[str], i: int, n: int, proper: frozenset[str]) -> bool:
+    """Whether the time words ``tokens[i:i+n]`` are written as a name (each only with its own capital,
+    ``proper``) of a street: a street's word after them ("Sunset Boulevard", "Evening Road") or another
+    street joined to them, by a name or a numbered street ("Sunset & 3rd", "Sunset/Vine"; the tokens
+    keep no "&" or "/"). Why: a street named for a time of day is where, not when ("Heading along Sunset
+    Blvd at noon"), while "at sunset" and "on a Friday Evening" stay the time."""
+    if not all(t in proper for t in tokens[i : i + n]):
+        return False
+    after = tokens[i + n : i + n + 3]
+    if after[:1] and after[0] in STREET_WORDS:
+        return True
+    if after[:1] == ["and"]:
+        after = after[1:]
+    numbered = len(after) >= 2 and after[0].isdigit() and after[1] in _ORDINAL_ENDS
+    return numbered or (bool(after) and after[0] in proper)
 
 
 #: Seasons among the weather words: the weather they bring only where no other is said ("a winter
@@ -638,6 +665,24 @@ def turns_into_a_road(text: str, said: str) -> bool:
     )
 
 
+#: Two streets said to meet at a corner, in the original text: "the corner of Main and 11th", "cnr Beach Rd
+#: & Marine Pde", "corner of Elm/Oak", "the Jalan Ampang corner with Jalan Tun Razak". Both streets start
+#: with a capital or a number; "the corner of the building" names no street.
+_STREETS_MEET = re.compile(
+    r"\b(?i:corner|cnr|crnr)\.?\s+(?:(?i:of)\s+)?(?:[A-Z0-9][\w'.]*\s*){1,4}(?:and|&|/)\s*[A-Z0-9]"
+    r"|\b(?i:corner)\s+(?i:with)\s+[A-Z0-9]"
+)
+#: Coming out of a side road ("pulling out of a side road", "from a side street").
+_OUT_OF_SIDE_ROAD = re.compile(r"\b(?:out of|from) (?:a|the|one of the) side[ -]?(?:roads?|streets?|turnings?)\b")
+
+
+def streets_meet(text: str, said: str) -> bool:
+    """Whether the original ``text`` puts the scene where two named streets meet at a corner, or the
+    normalised ``said`` has someone come out of a side road: the road has a junction there, whatever
+    "corner" alone would make of it (a bend)."""
+    return _STREETS_MEET.search(text) is not None or _OUT_OF_SIDE_ROAD.search(said) is not None
+
+
 #: Words that make a crossing one for people on foot ("a zebra crossing", "the pelican", "a crosswalk").
 _FOOT_CROSSINGS = frozenset({"zebra", "pelican", "puffin", "toucan", "pedestrian", "crosswalk", "crosswalks"})
 
@@ -694,8 +739,15 @@ _RED_RUN = re.compile(
     r"|shot through|shoots through|sailed through|ignored|ignores) (?:the|a|its|his|her|their) "
     r"(?:red|red light|red lights|lights|light)\b"
 )
-#: Lights named by their street ("at the Harbour Rd lights"), in the original text.
-_NAMED_LIGHTS = re.compile(r"\b(?i:at|by|near) the (?:[A-Z0-9][\w'.]* ){1,3}(?:lights|signals)\b")
+#: Lights named by their street ("at the Harbour Rd lights", "at Silk Board signal"), in the original text.
+_NAMED_LIGHTS = re.compile(r"\b(?i:at|by|near) (?:the )?(?:[A-Z0-9][\w'.]* ){1,3}(?:lights|signals?)\b")
+#: A traffic signal said by its colour ("the light was green for me", "signal became green", "the robot
+#: turned red", "lights had changed to amber"): a robot is a traffic light in southern Africa.
+_SIGNAL_COLOUR = re.compile(
+    r"\b(?:light|lights|signal|signals|robot|robots) "
+    r"(?:(?:was|were|is|are) (?:just |still |already )?|(?:had |has |just )?(?:turned|turns|went|goes|became|becomes"
+    r"|changed|changes|switched|switches) (?:to )?)(?:green|red|amber|yellow|orange)\b"
+)
 #: Two streets written with a slash ("Queen/Albert", "4TH/MARKET", "Elm St / High St"), in the original text:
 #: where they cross. Both sides start with a capital or a street number; units ("km/h") and shorthand
 #: ("w/", "m/c") are lower case.
@@ -706,8 +758,11 @@ _SLASHED_STREETS = re.compile(
 
 
 def signalled_junction(text: str, said: str) -> bool:
-    """Whether the text puts the scene at a junction by its signals or its streets: a red light run
-    (no foot crossing named), lights named by their street, or two streets written with a slash."""
-    if _RED_RUN.search(said) and not set(said.split()) & (_FOOT_CROSSINGS | {"crossing"}):
+    """Whether the text puts the scene at a junction by its signals or its streets: a red light run or
+    a signal said by its colour (no foot crossing named), lights named by their street, or two streets
+    written with a slash."""
+    if (_RED_RUN.search(said) or _SIGNAL_COLOUR.search(said)) and not set(said.split()) & (
+        _FOOT_CROSSINGS | {"crossing"}
+    ):
         return True
     return _NAMED_LIGHTS.search(text) is not None or _SLASHED_STREETS.search(text) is not None
