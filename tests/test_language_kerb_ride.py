@@ -38,10 +38,10 @@ def test_going_along_the_edge_then_into_the_lane_is_along_then_cut_in(text):
 @pytest.mark.parametrize(
     "text",
     [
-        "A man walking along the roadside in the same direction as us suddenly turned and crossed the road. At 30.",
+        "A man was walking along the roadside on the left, same direction as us. Then he crossed the road. 30 mph.",
         "Ego 35 km/h. An e-scooter rides along the left kerb ahead, then swerves right across the ego's lane.",
-        "Cyclist riding along the edge of the road ahead of me then cut across to the other side. Doing 40 km/h.",
-        "The pedestrian was walking along the kerb same direction as the vehicle, then he crossed the road. 30 mph.",
+        "Cyclist riding along the left edge of the road ahead of me then cut across to the other side. 40 km/h.",
+        "The pedestrian was walking along the left kerb same direction as the vehicle, then he crossed. 30 mph.",
         "One boy cycling along the left edge in front of my car, then he cut across to the right to enter a shop.",
     ],
 )
@@ -80,3 +80,10 @@ def test_along_the_road_then_a_stop_is_no_move_out():
 )
 def test_from_a_lane_of_its_own_or_out_to_overtake_is_not_along_first(text):
     assert read(text).actors[-1].behaviours[0][0] != "along_road"
+
+
+def test_along_the_right_edge_then_across_crosses_from_that_kerb():
+    """From the right edge the layers cannot yet cross the ego's lane to its left: a crossing from
+    the kerb, as before."""
+    names = _names("A jogger runs along the road in the ego's direction and then crosses to the left side.")
+    assert names == ["cross_in_front"]

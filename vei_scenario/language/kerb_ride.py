@@ -39,7 +39,7 @@ def same_heading(words: str) -> bool:
     return "same" in said and ("direction" in said or "way" in said)
 
 
-def along_then_out(behaviours: list, across: bool) -> list | None:
+def along_then_out(behaviours: list, across: bool, side: str | None = None) -> list | None:
     """``behaviours`` (name, cfg, criticality, link) read as going along the road, then moving out,
     where they start with a going-along and the next other act is a move out of it with nothing (a
     stop, a wait) between; None where they do not. A move out said with "across" (``across``: "cut
@@ -52,6 +52,8 @@ def along_then_out(behaviours: list, across: bool) -> list | None:
         return None
     name, cfg, crit, link = behaviours[k]
     out = "cross_in_front" if name == "cross_in_front" or across else "cut_in"
+    if out == "cross_in_front" and side != "left":
+        return None  # (from the right edge of the ego's lane the layers cross to its right: from the kerb)
     _, _, first_crit, first_link = behaviours[0]
     move = (out, cfg if out == name else {}, crit, link or "sequence")
     return [("along_road", {}, first_crit, first_link), move, *behaviours[k + 1 :]]

@@ -2251,7 +2251,8 @@ def _read(text: str) -> Reading:
             and a.along
             and not (a.came_from or a.pavement or a.stationary or a.lane_side or a.own_lane)
         ):
-            a.behaviours = kerb_ride.along_then_out(a.behaviours, a.across) or a.behaviours
+            side = a.kerb_side or a.side
+            a.behaviours = kerb_ride.along_then_out(a.behaviours, a.across, side) or a.behaviours
         behaviours = _tidy(a)
         if a.kind == "pedestrian" and a.goes_on:  # a walker who does not give way or wait: crosses
             behaviours = [
