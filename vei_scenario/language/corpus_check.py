@@ -44,6 +44,25 @@ def _near(value: float, expected: float, tol: float) -> bool:
     return abs(value - expected) <= tol
 
 
+#: Moves out of going along the road: along_road before one is judged only until it starts.
+_OUT_OF_ALONG = frozenset(("cut_in", "cross_in_front", "change_lane"))
+#: Sideways drift (m) from where it started that marks a road user going along as moving out.
+_MOVED_OUT_M = 0.3
+#: How far (m) a road user going along before it moves out must go along first.
+_ALONG_FIRST_M = 1.0
+
+
+def _before_moving_out(lat, turned):
+    """The samples before a road user going along the road moves out: before its lateral offset
+    ``lat`` first strays :data:`_MOVED_OUT_M` from its start or it first turns off the road's way
+    (``turned``, per sample)."""
+    import numpy as np
+
+    out = (np.abs(lat - lat[0]) > _MOVED_OUT_M) | turned
+    first = int(np.argmax(out)) if out.any() else len(lat)
+    return np.arange(len(lat)) < first
+
+
 def _actor_problems(adv: dict, want: dict) -> list[str]:
     """Why adversary ``adv`` (layers) does not fit expectation ``want`` (empty: it fits)."""
     out = []
@@ -258,7 +277,12 @@ def played_problems(result, layers: dict) -> list[str]:
             if "route" in layers["ego"] and "distance_m" in layers["ego"] and facing == "with":
                 travelled = np.concatenate([[0.0], np.cumsum(np.hypot(np.diff(tr.x), np.diff(tr.y)))])
                 on_road &= travelled < float(layers["ego"]["distance_m"]) - float(lon[0])
+            if names[1:2] and names[1] in _OUT_OF_ALONG:  # (judged as it goes along, before it moves out)
+                on_road &= _before_moving_out(lat, np.abs(heading - want) > 0.35)
             moving = (np.abs(tr.speed) > 0.3) & on_road
+            if names[1:2] and names[1] in _OUT_OF_ALONG:  # (and it goes along some way before it does)
+                steps = np.hypot(np.diff(tr.x), np.diff(tr.y))[moving[1:]]
+                moving &= bool(steps.sum() >= _ALONG_FIRST_M)
             ahead = (lon > 0) & on_road
             if (
                 not moving.any()

@@ -35,6 +35,7 @@ from vei_scenario.language import (
     experiencer,
     generic_ego,
     junctions,
+    kerb_ride,
     lane_moves,
     motion,
     narrator_vehicle,
@@ -271,6 +272,9 @@ class _Actor:
     beside: bool = False  # said to be on a side of the ego ("a cyclist on my left"), not to come from one
     moves_out: bool = False  # its crossing is said with "out" ("swung out", "pulled out")
     went_by: bool = False  # its verb of passing has no object ("the van has passed", "a lorry went by")
+    along: bool = False  # said to go along the road or its edge ("rides along the kerb", "same direction")
+    across: bool = False  # its move into a lane is said with "across" ("cut across to the right")
+    own_lane: bool = False  # in a lane of its own beside the ego's ("in the cycle lane on our right")
 
 
 #: Euro NCAP's names of its test scenarios ("Car-to-Car Rear stationary", "Car-to-Pedestrian Nearside
@@ -2114,6 +2118,8 @@ def _read(text: str) -> Reading:
             name, cfg, _, lk = a.behaviours[i]
             words = cfg.pop("_words", "")
             a.moves_out = a.moves_out or (name == "cross_in_front" and "out" in words.split())
+            a.along = a.along or (name == "keep_going" and kerb_ride.goes_along(words))
+            a.across = a.across or kerb_ride.said_across(name, words, scanned[cfg.pop("_end", len(scanned)) :][:2])
             if name == "sudden_stop" and len(words.split()) == 1 and "brake" in forms(words):
                 cfg["_plain_brake"] = 1.0  # ("brakes": how hard, a stop said after it tells)
             a.goes_on = a.goes_on or bool(cfg.pop("_denied", None))
@@ -2265,6 +2271,13 @@ def _read(text: str) -> Reading:
         a.speed_mps, a.distance_m = (value, a.distance_m) if slot == "speed" else (a.speed_mps, value)
     for a in actors:
         spec = ActorSpec(a.kind)
+        if (
+            a.kind in VULNERABLE
+            and a.along
+            and not (a.came_from or a.pavement or a.stationary or a.lane_side or a.own_lane)
+        ):
+            side = a.kerb_side or a.side
+            a.behaviours = kerb_ride.along_then_out(a.behaviours, a.across, side) or a.behaviours
         behaviours = _tidy(a)
         if a.kind == "pedestrian" and a.goes_on:  # a walker who does not give way or wait: crosses
             behaviours = [
@@ -2348,7 +2361,13 @@ def _read(text: str) -> Reading:
             behaviours = [("cross_in_front", {}, *behaviours[0][2:])] + behaviours[1:]
         crossing_at = next((k for k, b in enumerate(behaviours) if b[0] == "cross_in_front"), None)
         before = {b[0] for b in behaviours[:crossing_at]} if crossing_at else set()
-        if a.kind in VULNERABLE and crossing_at and before <= {"keep_going", "stop", "along_road", "keep_lane"}:
+        along_first = a.along and behaviours[:1] == [b for b in behaviours[:1] if b[0] == "along_road"]
+        if (
+            a.kind in VULNERABLE
+            and crossing_at
+            and before <= {"keep_going", "stop", "along_road", "keep_lane"}
+            and not along_first  # (going along the edge, then across: both, see kerb_ride)
+        ):
             behaviours = behaviours[crossing_at:]  # ("... stops; then crosses from the left"): from the kerb
         a.behaviours = behaviours
         spec.relation = _resolve_relation(a, r.map_kind, sides.drives_on_left(scanned, text))
@@ -2389,6 +2408,8 @@ def _read(text: str) -> Reading:
         passes_another = any(x.object_of is a for x in actors)  # ("pulled out to pass a truck": its own overtake)
         only_there = [b[0] for b in spec.behaviours] in ([], ["keep_going"])  # (nothing it does is said)
         _specialise(a, spec, junction, sides.drives_on_left(scanned, text), turn_across_side(text), passes_another)
+        if along_first and len(spec.behaviours) > 1 and spec.behaviours[0][0] == "along_road":
+            kerb_ride.at_the_edge(spec, a.kerb_side or a.side or a.lane_side)
         if only_there and _waits_at_a_crossing(a, spec, said):
             spec.behaviours = [("cross_in_front", {}, *spec.behaviours[0][2:])]  # ("stopped at the zebra for a mum")
             spec.relation = spec.relation if spec.relation in ("roadside_left", "roadside_right") else "roadside_right"
@@ -3280,7 +3301,7 @@ def _apply(m, who, r, link, added) -> None:
                 continue  # ("brakes ... and stops": said twice over)
             said = m.words if not _adverb(m.next_) else f"{m.words} {m.next_}"  # ("brakes moderately")
             a.went_by = a.went_by or (name == "overtake" and _going_by(m.words) and m.next_ in _NO_OBJECT)
-            a.behaviours.append((name, dict(cfg, _words=said), None, link if not added else "sequence"))
+            a.behaviours.append((name, dict(cfg, _words=said, _end=m.end), None, link if not added else "sequence"))
             added.append((a, len(a.behaviours) - 1))
         elif m.slot == "turn":
             a.behaviours.append(("forced_turn", {"turn": m.value, "_words": m.words}, None, link))
@@ -3321,6 +3342,7 @@ def _apply(m, who, r, link, added) -> None:
             a.said.add("in_front")  # "cuts in 10 m ahead": where it cuts in, not where it starts
         elif m.slot == "relation":
             a.said.add(m.value)
+            a.along = a.along or (m.value == "ahead" and kerb_ride.same_heading(m.words))
             if m.value == "ahead" and not a.behaviours:
                 a.said.add("ahead_first")  # ("the car ahead of us swung out": where it is before it moves)
             if m.value == "ahead" and motion.in_the_ego_lane(m.words):
@@ -3355,6 +3377,8 @@ def _apply(m, who, r, link, added) -> None:
             pass  # ("the scooter ahead stops at the zebra crossing": where it stops, a landmark)
         elif m.slot == "kerb":
             a.kerb = True
+            a.along = a.along or kerb_ride.along_the_edge(m.prev)
+            a.own_lane = a.own_lane or "lane" in m.words.split()
             a.pavement = a.pavement or on_the_footway(m)
             a.came_from = a.came_from or _from(m)
         elif m.slot == "place":
@@ -3367,6 +3391,8 @@ def _apply(m, who, r, link, added) -> None:
             a.goes_to = a.goes_to or m.value  # ("ran across towards the left kerb": where it ends, not starts)
         elif m.slot == "kerb_side":
             a.kerb, a.kerb_side = True, m.value
+            a.along = a.along or kerb_ride.along_the_edge(m.prev)
+            a.own_lane = a.own_lane or "lane" in m.words.split()
             a.edge = a.edge or (None if "lane" in m.words.split() else m.value)  # (a cycle lane is a lane)
             a.came_from = a.came_from or _from(m)
         elif (
