@@ -1,0 +1,115 @@
+"""A bare speed said with a guess between its verb and its number: the way people talk ("I was doing,
+I don't know, 40", "he was going I reckon 60", "we were at probably 30") and write notes ("doing max
+40", "going close to 50"). The guess leaves the number a speed, in the unit the text carries.
+
+Every wording here is written for these tests (none is from a corpus); each reading has near misses
+that look alike but must not read so."""
+
+from __future__ import annotations
+
+import pytest
+
+from tests.reading_of import ego_kph
+from vei_scenario.language.reader import read
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A bus pulled out in front of me, I was doing I think 40.",  # (a voice note)
+        "A bus pulled out in front of me, I was going, I don't know, 40.",  # (talk radio)
+        "A bus pulled out in front of me, I was doing, I'd say, 40.",  # (a witness)
+        "A bus pulled out in front of me, I was doing I reckon 40.",  # (Australian)
+        "A bus pulled out in front of me, I was doing probably 40.",  # (a text message)
+        "A bus pulled out in front of me, I was travelling at perhaps 40 when it stopped.",  # (British letter)
+        "A bus pulled out in front of me, I was driving at possibly 40.",  # (an insurance form)
+        "A bus pulled out in front of me, I was doing, uh, 40.",  # (a transcript)
+        "A bus pulled out in front of me, I was going close to 40.",  # (American)
+        "A bus pulled out in front of me, I was doing max 40.",  # (Indian English)
+        "A bus pulled out in front of me, I was doing barely 40.",  # (a forum post)
+        "A bus pulled out in front of me, I was doing I guess 40.",
+        "A bus pulled out in front of me, I was doing, what, 40?",
+    ],
+)
+def test_a_guess_between_the_verb_and_a_bare_number_keeps_it_a_speed(text):
+    assert ego_kph(text) == pytest.approx(40, abs=0.2)
+
+
+def test_a_guessed_speed_of_a_road_user_is_its_own():
+    text = "A car ran the red light from my right, he was going, I don't know, 60, and I braked hard."
+    speeds = [a.speed_mps for a in read(text).actors]
+    assert speeds and speeds[0] == pytest.approx(60 / 3.6, abs=0.1)
+
+
+def test_the_guessed_number_takes_the_unit_the_text_carries():
+    text = "A cyclist was riding at 12 mph ahead of me and I was doing I reckon 25 when I passed him."
+    assert ego_kph(text) == pytest.approx(40.2, abs=0.2)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A bus pulled out in front of me. I think 40 people were on it.",  # (a count, no verb of going)
+        "A bus pulled out in front of me, I was going to say 40 times sorry.",  # ("going to say": no going)
+        "A bus pulled out in front of me while I was driving, I think 40 cars were queued behind.",
+        "A bus pulled out in front of me, I was doing, what, 3 tasks at once.",  # (a count after the guess)
+    ],
+)
+def test_a_guess_before_a_number_that_is_no_speed_reads_none(text):
+    assert ego_kph(text) is None
+
+
+# --- a number said with "speed" after it: how South Asian English gives a speed ----------------------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("I was going 40 speed only and one auto rickshaw cut in front.", 40),
+        ("Sir I was coming 50 speed, bike came from left side and hit me.", 50),
+        ("I was going with 60 speed on the flyover and a bus braked in front of me.", 60),
+        ("I was driving in 30 speed near the school when a boy ran across.", 30),
+        ("I was moving at 45 speed when the truck in front braked suddenly.", 45),
+    ],
+)
+def test_a_number_with_speed_after_it_is_a_speed(text, kph):
+    assert ego_kph(text) == pytest.approx(kph, abs=0.2)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "It is a 40 speed limit road and a van pulled out in front of me.",  # (the road's limit)
+        "My 5 speed gearbox jammed and a van pulled out in front of me.",  # (gears)
+        "I was riding my 21 speed bike when a van pulled out in front of me.",
+        "There are 3 speed bumps before the school and a van pulled out in front of me.",
+    ],
+)
+def test_a_number_naming_a_thing_of_speed_is_no_speed(text):
+    assert ego_kph(text) is None
+
+
+# --- an hour of the day said bare beside a part of the day: a time, no speed --------------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Today morning, around 7, a cyclist came in front of me from the left side.",  # (Indian English)
+        "At about 6 this evening a cyclist came out in front of me from the left.",
+        "A cyclist came out in front of me at 9 last night with no lights.",
+        "A cyclist came out in front of me yesterday at 8 in the morning.",
+        "Tonight around 10 a cyclist came out in front of me with no lights.",
+    ],
+)
+def test_a_bare_hour_beside_a_part_of_the_day_is_no_speed(text):
+    r = read(text)
+    assert r.ego_speed_mps is None and all(a.speed_mps is None for a in r.actors)
+
+
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("This morning I was doing around 30 when a cyclist came out in front of me.", 30),
+        ("Last night I was going at 50 and a cyclist came out in front of me with no lights.", 50),
+        ("A cyclist came out in front of me this evening, I was at 20.", 20),
+    ],
+)
+def test_a_speed_said_near_a_part_of_the_day_stays_a_speed(text, kph):
+    assert ego_kph(text) == pytest.approx(kph, abs=0.2)
