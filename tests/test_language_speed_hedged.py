@@ -113,3 +113,31 @@ def test_a_bare_hour_beside_a_part_of_the_day_is_no_speed(text):
 )
 def test_a_speed_said_near_a_part_of_the_day_stays_a_speed(text, kph):
     assert ego_kph(text) == pytest.approx(kph, abs=0.2)
+
+
+# --- a bare speed after the object of a passing verb: the passer's, as with a unit -----------------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("A motorbike overtook us doing 100 and cut straight in.", 100),
+        ("A BMW flew past me doing 90 on the inside and swerved in front.", 90),
+        ("I was at 50 mph when a lorry came past me doing 60 odd and pulled in too early.", 96.6),
+        ("The coach passed me going 40, then stopped suddenly in front of me.", 40),
+        ("A van undertook us doing 70 and cut in.", 70),
+    ],
+)
+def test_a_bare_speed_after_the_one_passed_is_the_passers(text, kph):
+    (passer,) = read(text).actors
+    assert passer.speed_mps * 3.6 == pytest.approx(kph, abs=0.2)
+
+
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("I was doing 60 when a van overtook me and cut in.", 60),
+        ("A van overtook me and cut in, I was doing 60.", 60),
+        ("Going past the school doing 30, a boy ran out in front of me.", 30),
+    ],
+)
+def test_the_egos_bare_speed_beside_a_passing_stays_the_egos(text, kph):
+    assert ego_kph(text) == pytest.approx(kph, abs=0.2)

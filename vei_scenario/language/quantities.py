@@ -653,7 +653,7 @@ def owners(
         return (subject,)  # "with us coming at 80 km/h": the subject of a participle after "with"
     if tokens[j] in _MOTION and j and tokens[j - 1] == "both":  # "... are both doing 50 km/h"
         j -= 1
-    elif tokens[j] in _MOTION and unit and tokens[j - 1] in _OBJECT_PRONOUNS:
+    elif tokens[j] in _MOTION and tokens[j - 1] in _OBJECT_PRONOUNS:  # (with a unit or bare: "doing 70")
         passer = _subject_before(tokens, j - 2, mention_ending_at)  # ("a lorry went past us doing 70 km/h")
         return (passer,) if passer is not None else ()
     elif tokens[j] in _MOTION and unit and tokens[j - 1] not in _OBJECT_PRONOUNS:
