@@ -141,3 +141,42 @@ def test_a_bare_speed_after_the_one_passed_is_the_passers(text, kph):
 )
 def test_the_egos_bare_speed_beside_a_passing_stays_the_egos(text, kph):
     assert ego_kph(text) == pytest.approx(kph, abs=0.2)
+
+
+# --- the limit said, then its number: the speed kept to --------------------------------------------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("I was doing the limit, seventy, when a ute pulled out of a driveway.", 70),  # (Australian, on air)
+        ("I was doing the speed limit (60) when a truck pulled out of a driveway.", 60),  # (a claim form)
+        ("We were sticking to the limit - 50 - when a truck pulled out of a driveway.", 50),
+        ("I was driving at the limit, 100 km/h, when a truck pulled out of a driveway.", 100),
+        ("Was going the limit, eighty, and a truck pulled out of a driveway.", 80),
+    ],
+)
+def test_the_limit_kept_to_then_its_number_is_the_egos_speed(text, kph):
+    assert ego_kph(text) == pytest.approx(kph, abs=0.2)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was doing the limit when a truck pulled out of a driveway 30 m ahead.",
+        "I was doing the limit, 3 cars behind a truck, when it braked hard.",
+    ],
+)
+def test_the_limit_with_no_number_of_its_own_reads_no_speed(text):
+    assert ego_kph(text) is None
+
+
+# --- numbers in words in a guess and before "speed" ----------------------------------------------------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("A bus pulled out in front of me, I was doing, I don't know, forty.", 40),
+        ("A bus pulled out in front of me, I was going probably forty.", 40),
+        ("I was going on the ring road, sixty speed, and a bus braked in front of me.", 60),
+    ],
+)
+def test_a_number_in_words_after_a_guess_or_before_speed_is_a_speed(text, kph):
+    assert ego_kph(text) == pytest.approx(kph, abs=0.2)

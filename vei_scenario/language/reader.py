@@ -633,6 +633,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
     tokens = narrator_vehicle.frame(tokens, _kind_at, _known, framed)  # (the writer in it or testing it)
     tokens = generic_ego.frame(tokens, _kind_at, _known, framed)  # (the ego as drivers in general)
     tokens = ego_speed.at_the_limit(tokens)  # ("doing the 20 limit": at 20)
+    tokens = ego_speed.the_limit_then_its_number(tokens)  # ("doing the limit, seventy, when": doing 70)
     tokens = Q.without_guesses(tokens, _MOTION_BEFORE_SPEED)  # ("going, I don't know, 40": going 40)
     proper = proper_names(text)
     tokens = shared_scooters(tokens, proper, lambda w: "VERB" in _pos(w))  # ("a Lime came past": an e-scooter)
