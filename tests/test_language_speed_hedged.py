@@ -180,3 +180,32 @@ def test_the_limit_with_no_number_of_its_own_reads_no_speed(text):
 )
 def test_a_number_in_words_after_a_guess_or_before_speed_is_a_speed(text, kph):
     assert ego_kph(text) == pytest.approx(kph, abs=0.2)
+
+
+# --- a number with a measure of something else after it: no speed ------------------------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist squeezed past me with about 50 cm to spare.",
+        "A cyclist squeezed past me with about 6 inches to spare.",
+        "About 20 minutes later a cyclist squeezed past me.",
+        "A man of about 60 years stepped out in front of me.",
+        "A lorry of about 40 tonnes pulled out in front of me.",
+        "A cyclist squeezed past me at around 10 past 5.",
+        "A cyclist squeezed past me, I had been driving for about 45 mins.",
+    ],
+)
+def test_a_number_measuring_something_else_is_no_speed(text):
+    r = read(text)
+    assert r.ego_speed_mps is None and all(a.speed_mps is None for a in r.actors)
+
+
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("I was doing about 30 past the school when a cyclist squeezed past me.", 30),
+        ("I was doing about 30 in the rain when a cyclist squeezed past me.", 30),
+    ],
+)
+def test_a_speed_before_a_place_is_still_a_speed(text, kph):
+    assert ego_kph(text) == pytest.approx(kph, abs=0.2)

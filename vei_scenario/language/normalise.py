@@ -68,6 +68,8 @@ _UNITS = [
     (re.compile(r"(\d)\s*(?:klicks?|clicks)\b"), r"\1 km/h"),  # ("80 klicks": kilometres, the Canadian's km/h)
     (re.compile(r"m/s\s*\^\s*2|m/s/s|m/sec\^?2"), "m/s²"),  # ("decel 6 m/s^2": an acceleration)
     (re.compile(r"(\d)(km/h|mph|m/s|m)\b"), r"\1 \2"),
+    (re.compile(r"(\d)\s*mins?\b"), r"\1 minutes"),  # ("45 mins": minutes, before the speller reads "minis")
+    (re.compile(r"(\d)\s*yrs?\b"), r"\1 years"),
 ]
 
 

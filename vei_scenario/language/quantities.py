@@ -330,6 +330,29 @@ def ego_speed_mps(tokens: list[str]) -> float | None:
     return None
 
 
+#: Measures of things other than speed or distance along the road, after a number ("50 cm to spare",
+#: "20 minutes later", "a man of 60 years", "40 tonnes", "6 inches", "150 hp"): the number is no speed.
+OTHER_MEASURES = frozenset(
+    {"cm", "cms", "centimetre", "centimetres", "centimeter", "centimeters", "mm", "millimetre", "millimetres",
+     "millimeter", "millimeters", "inch", "inches", "min", "mins", "minute", "minutes", "hr", "hour", "day", "days",
+     "week", "weeks", "month", "months", "year", "years", "yr", "yrs", "yo", "tonne", "tonnes", "ton", "tons",
+     "kgs", "kilo", "kilos", "lb", "lbs", "pound", "pounds", "litre", "litres", "liter", "liters", "cc", "hp",
+     "bhp", "kw", "rpm", "percent", "times", "quid", "euros", "dollars", "rupees", "rand", "pence"}
+)  # fmt: skip
+
+
+def other_measure(tokens: list[str], i: int) -> bool:
+    """Whether the number at ``i`` measures something other than a speed (:data:`OTHER_MEASURES` after
+    it), or is the minutes of a clock said in words ("10 past 5", "20 to 6")."""
+    nxt = tokens[i + 1] if i + 1 < len(tokens) else ""
+    clock = nxt in ("past", "to") and i + 2 < len(tokens) and tokens[i + 2].isdigit() and int(tokens[i + 2]) <= 12
+    return nxt in OTHER_MEASURES or (clock and not (i + 3 < len(tokens) and tokens[i + 3] in SPEED_UNITS_WORDS))
+
+
+#: Speed units as the reader's tokens hold them ("from 10 to 5 km/h" is a range, no clock).
+SPEED_UNITS_WORDS = frozenset(V.SPEED_UNITS)
+
+
 #: Words after "<number> speed" that end its phrase ("going 40 speed only", "coming 50 speed, ...", "with
 #: 60 speed on the flyover"): the number is then a speed, not a thing of speeds ("a 40 speed limit", "a 5
 #: speed gearbox", "3 speed bumps").

@@ -560,6 +560,8 @@ def _number(tokens: list[str], i: int, imperial: bool = False, metric: bool = Fa
         return "distance", gap, 2
     if nxt in ("s", "sec", "seconds", "second", "g", "%", "deg", "degrees", "kg", "km"):
         return "skip", value, 2
+    if Q.other_measure(tokens, i):  # ("50 cm to spare", "20 minutes later", "at 10 past 5"): no speed
+        return "skip", value, 2
     if nxt in (":", "am", "pm", "hrs", "hours", "o'clock", "oclock"):  # ("about 6 pm", "at 07:50"): a time of day
         if nxt == ":" and i + 2 < len(tokens) and tokens[i + 2].isdigit():  # ("07:50", "07:50 hrs"; not what follows)
             return "skip", value, 4 if tokens[i + 3 : i + 4] in (["hrs"], ["hours"], ["am"], ["pm"]) else 3
