@@ -209,3 +209,27 @@ def test_a_number_measuring_something_else_is_no_speed(text):
 )
 def test_a_speed_before_a_place_is_still_a_speed(text, kph):
     assert ego_kph(text) == pytest.approx(kph, abs=0.2)
+
+
+# --- telegraphic notes: "<who> at <number>" opening a clause is that one's speed, with a unit or bare ---------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("Lead car at 50, me at 60, 2 second gap, and it brakes hard.", 60),
+        ("Truck ahead at 80, us at 100, it pulls out to pass a caravan.", 100),
+        ("Him at 30, me at 50, he turned right across my lane.", 50),
+        ("Bus in front at 40. Me at 45. It stopped without warning.", 45),
+        ("Ego at 70, target at 40, cut-in at 20 m.", 70),
+    ],
+)
+def test_a_bare_speed_after_the_ego_opening_a_note_is_the_egos(text, kph):
+    assert ego_kph(text) == pytest.approx(kph, abs=0.2)
+
+
+def test_a_bare_speed_after_a_road_user_opening_a_clause_is_its_own():
+    (van,) = read("The van at 60 overtakes me and cuts in.").actors
+    assert van.speed_mps * 3.6 == pytest.approx(60, abs=0.2)
+
+
+def test_a_bare_speed_after_the_ego_as_an_object_is_not_said_of_it():
+    assert ego_kph("A bus pulled out at 20 and stopped in front of me at 9 metres.") is None

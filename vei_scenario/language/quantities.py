@@ -669,7 +669,7 @@ def owners(
             return ()  # "steps out between parked cars 3 m/s": the cars say where; the clause says whose
         if j == i - 1 and (unit or after_ego(tokens, i)):  # "cyclist 15 km/h", "ego 50": of the noun before it
             return (owner,)
-        if unit and tokens[j + 1] == "at" and (k < 0 or tokens[k] in _CLAUSE_OPENERS) and not compared(tokens, k):
+        if tokens[j + 1] == "at" and (k < 0 or tokens[k] in _CLAUSE_OPENERS) and not compared(tokens, k):
             return (owner,)  # "the van at 60 km/h overtakes ...": said of the subject opening its clause
     subject = mention_ending_at(j - 1) if unit and j and tokens[j].endswith("ing") else None
     if subject is not None and subject and tokens[subject - 1] == "with":
