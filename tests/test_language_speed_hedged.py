@@ -233,3 +233,31 @@ def test_a_bare_speed_after_a_road_user_opening_a_clause_is_its_own():
 
 def test_a_bare_speed_after_the_ego_as_an_object_is_not_said_of_it():
     assert ego_kph("A bus pulled out at 20 and stopped in front of me at 9 metres.") is None
+
+
+# --- the ego at rest said by standing or by a motion denied: speed 0 --------------------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "We were standing in the queue when a lorry ran into the back of us.",  # (British)
+        "I was stood at the lights when a scooter clipped my mirror.",  # (Northern English)
+        "I wasn't moving at all when the bus reversed into me.",
+        "We weren't moving when a van hit us from behind.",
+        "I was not moving, waiting to turn right, when a cyclist hit my door.",  # (a statement)
+        "Honestly I was not moving, just sitting in traffic, when a van hit me.",
+    ],
+)
+def test_the_ego_standing_or_not_moving_as_the_scene_opens_is_at_rest(text):
+    assert ego_kph(text) == 0
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "The van wasn't moving when I hit it.",  # (the van stands, not the ego)
+        "I wasn't going to stop, so I swerved round the van.",  # (an intention, no state)
+        "A man was standing in the road and I swerved round him.",  # (the man stands)
+    ],
+)
+def test_someone_else_standing_or_a_denied_intention_is_not_the_ego_at_rest(text):
+    assert ego_kph(text) != 0

@@ -847,6 +847,21 @@ _STANDING = frozenset({"stood", "standing"})
 _PERFECT = frozenset({"had", "has", "have"})
 
 
+#: Verbs of going that, denied, say one stands ("we weren't moving", "I was not driving", "never rolled").
+_MOVING = frozenset({"moving", "going", "driving", "rolling", "travelling", "traveling", "moved", "rolled"})
+
+
+def _motion_denied(m, after) -> bool:
+    """Whether the mention ``m`` is a verb of going said with "not" or "never" before it ("we weren't
+    moving", "I was not driving"): the subject stands. Not "not going to ...", an intention (``after``:
+    the mention after ``m``, which "to" then stands before)."""
+    if m.slot not in ("behaviour", "ego_verb", "unknown_verb") or m.prev not in ("not", "never"):
+        return False
+    if m.words.split()[0] not in _MOVING:
+        return False
+    return not (after and after[0].prev == "to" and after[0].start == m.end + 1)
+
+
 def _stop_as_state(m) -> bool:
     """Whether the stop ``m`` says a state the scene opens in, not a stop under way: a still word
     ("stopped at", "halted"), standing ("stood still"), or a stop done before, in the perfect ("had pulled
@@ -880,12 +895,18 @@ def ego_at_rest(clauses) -> bool:
             if m.slot == "behaviour" and other:  # (what the ego did before it stood is no one acting on it)
                 acted = True
             stop = m.slot == "behaviour" and m.value[0] == "stop" and _stop_as_state(m)
-            if not k or not (stop or (m.words in STILL_WORDS and m.slot in ("stationary", "unknown_verb"))):
+            still = m.words in STILL_WORDS or m.words in _STANDING  # ("was stationary", "were stood at the lights")
+            denied = _motion_denied(m, said[k + 1 : k + 2])  # ("we weren't moving", "I was not driving")
+            if not k or not (stop or denied or (still and m.slot in ("stationary", "unknown_verb"))):
                 continue  # ("was stationary", "were stopped at the junction": a state)
             ego = said[k - 1]
             if _it_the_egos_vehicle(ego, subject):
                 ego = subject  # ("My car got hit while it was parked": the car, said again)
-            if ego.slot == "actor" and ego.value == "ego" and (m.prev in _STATE_BEFORE or _verbless_state(ego, m)):
+            if (
+                ego.slot == "actor"
+                and ego.value == "ego"
+                and (m.prev in _STATE_BEFORE or denied or _verbless_state(ego, m))
+            ):
                 if not acted or ego.prev in _BACKGROUND:
                     return True
     return False
