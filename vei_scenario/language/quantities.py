@@ -895,7 +895,7 @@ def ego_at_rest(clauses) -> bool:
             if m.slot == "behaviour" and other:  # (what the ego did before it stood is no one acting on it)
                 acted = True
             stop = m.slot == "behaviour" and m.value[0] == "stop" and _stop_as_state(m)
-            still = m.words in STILL_WORDS or m.words in _STANDING  # ("was stationary", "were stood at the lights")
+            still = m.words in STILL_WORDS  # ("was stationary", "were waiting at the lights")
             denied = _motion_denied(m, said[k + 1 : k + 2])  # ("we weren't moving", "I was not driving")
             if not k or not (stop or denied or (still and m.slot in ("stationary", "unknown_verb"))):
                 continue  # ("was stationary", "were stopped at the junction": a state)
