@@ -59,6 +59,43 @@ def at_the_limit(tokens: list[str]) -> list[str]:
     return out
 
 
+#: Words between "the limit" and its number, or after the number ("the limit, 70,", "the limit (60)").
+_ASIDE = frozenset({",", "(", ")", "-", ":"})
+#: Words that end the phrase after the limit's number ("..., seventy, when", "(60) and").
+_LIMIT_PHRASE_ENDS = frozenset({",", ")", ".", ";", "!", "?", "-", "when", "and", "but", "as", "while", "then", ""})
+
+
+def the_limit_then_its_number(tokens: list[str]) -> list[str]:
+    """``tokens`` with "<going> (at|to) the (speed) limit, <number> (<unit>)," said as "<going> at <number>
+    (<unit>)": the limit the ego keeps to named, then its number in an aside ("I was doing the limit,
+    seventy, when ...", "doing the speed limit (60) when ..."). Only where the number ends its aside: "the
+    limit, 3 cars behind a truck" gives no number of the limit's."""
+    out = list(tokens)
+    k = len(out) - 1
+    while k >= 2:
+        if out[k] != "limit":
+            k -= 1
+            continue
+        n = k + 1
+        while n < len(out) and n <= k + 2 and out[n] in _ASIDE:
+            n += 1
+        unit = n + 1 < len(out) and out[n + 1] in V.SPEED_UNITS
+        after = out[n + 1 + unit] if n + 1 + unit < len(out) else ""
+        the = k - 1 - (out[k - 1] == "speed")
+        verb = the - 1 - (out[the - 1] in ("at", "to"))
+        if (
+            n < len(out)
+            and _is_number(out[n])
+            and after in _LIMIT_PHRASE_ENDS
+            and out[the] == "the"
+            and verb >= 0
+            and out[verb] in GOING
+        ):
+            out[verb + 1 : n] = ["at"]  # ("sticking at 50": as any speed "at" says)
+        k = verb if verb < k else k - 1
+    return out
+
+
 def of_traffic(tokens: list[str]) -> float | None:
     """The speed (m/s) said of traffic in general: a bare plural ("Cars", "Vehicles", "traffic") that
     opens its sentence or clause, its verb of going, then a number with its unit. None where none is

@@ -40,6 +40,14 @@ _UNIT_AFTER = re.compile(
 #: reader reads a bare number after "at", "doing", "about" as km/h, and one after "on" where a verb of
 #: keeping a speed says so.
 _SPEED_BEFORE = re.compile(r"\b(at|doing|about|like|going|around|roughly|approximately|on)\s+$")
+#: A guess between a verb of going and a number in words ("doing, I don't know, forty", "going probably
+#: sixty"), or the limit said before its number ("doing the limit, seventy"): the number is a speed.
+_GUESS_BEFORE = re.compile(
+    r"\b(?:(?:at|doing|going|driving|travell?ing|moving)[\s,]+(?:i\s+(?:think|reckon|guess|'?d\s+say|would\s+say"
+    r"|do(?:n'?t|\s+not)\s+know|dunno)|probably|maybe|perhaps|possibly|say|what|uh|um|er)|limit)[\s,(-]+$"
+)
+#: "<number> speed" said as a speed ("sixty speed only"), not a thing of speeds ("a forty speed limit").
+_SPEED_AFTER = re.compile(r"\s+speed\b(?!\s*(?:limit|bump|hump|camera|zone|sign|trap|gun|breaker|-))")
 #: The same words, then a number and "or"/"to" ("doing fifty or sixty", "at thirty to forty"): the
 #: second number of a choice of speeds is a speed as the first is.
 _CHOICE_BEFORE = re.compile(r"\b(?:at|doing|about|like|going|around|roughly|approximately)\s+[a-z\d-]+\s+(?:or|to)\s+$")
@@ -60,6 +68,8 @@ _UNITS = [
     (re.compile(r"(\d)\s*(?:klicks?|clicks)\b"), r"\1 km/h"),  # ("80 klicks": kilometres, the Canadian's km/h)
     (re.compile(r"m/s\s*\^\s*2|m/s/s|m/sec\^?2"), "m/s²"),  # ("decel 6 m/s^2": an acceleration)
     (re.compile(r"(\d)(km/h|mph|m/s|m)\b"), r"\1 \2"),
+    (re.compile(r"(\d)\s*mins?\b"), r"\1 minutes"),  # ("45 mins": minutes, before the speller reads "minis")
+    (re.compile(r"(\d)\s*yrs?\b"), r"\1 years"),
 ]
 
 
@@ -88,6 +98,8 @@ def _numbers_in_words(text: str) -> str:
         after = _UNIT_AFTER.match(text, m.end())
         before = _SPEED_BEFORE.search(text, max(0, m.start() - 8), m.start())
         before = before or _CHOICE_BEFORE.search(text, max(0, m.start() - 40), m.start())
+        before = before or _GUESS_BEFORE.search(text, max(0, m.start() - 40), m.start())
+        before = before or _SPEED_AFTER.match(text, m.end())  # ("sixty speed only")
         if after is None and before:
             value = _number_value(m.group(1))  # ("at forty": a speed, said without its unit)
             return str(value) if value is not None and value >= 15 else m.group(0)

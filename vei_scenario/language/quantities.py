@@ -54,6 +54,47 @@ APPROXIMATORS = frozenset(
 BOUNDS = frozenset({"than", "more", "less", "no", "not", "bit", "little", "fraction", "touch", "tad"})
 
 
+#: Words of a guess said before a number ("doing probably 40", "going close to 50", "doing max 40", "doing,
+#: uh, 40", "going, what, 40?"): the number is still the speed the words before them say.
+GUESSES = frozenset(
+    {"probably", "possibly", "perhaps", "prob", "maybe", "say", "what", "max", "maximum", "barely", "hardly",
+     "close", "near", "uh", "um", "er", "erm", "uhh", "umm", "dunno", "like"}
+)  # fmt: skip
+#: Verbs of an opinion a speaker puts between a verb and its number ("I think", "I reckon", "I'd say",
+#: "I don't know", "I would guess", "I believe", "I'd estimate", "I suppose", "you know").
+OPINION_VERBS = frozenset(
+    {"think", "reckon", "guess", "say", "believe", "estimate", "suppose", "know", "reckoned", "thought",
+     "guessed", "figure", "imagine", "bet", "expect", "recall", "remember", "mean"}
+)  # fmt: skip
+#: Words between the speaker and the verb of opinion ("I would say", "I do not know", "I 'd guess").
+_OPINION_AUXILIARIES = frozenset({"would", "do", "did", "not", "'d", "should", "must", "'m"})
+_SPEAKERS = frozenset({"i", "you", "we", "ego"})
+
+
+def _guess_before(tokens: list[str], k: int) -> int:
+    """The index before the guess that ends at token ``k`` ("I think", ", I don't know,", "probably",
+    "close to", ", uh,"), or ``k`` where none ends there. A comma is part of the guess only next to one
+    of its words (", I'd say, 40"); "to" only after "close"/"near" ("close to 50")."""
+    j = k
+    while j > 0:
+        w, s = tokens[j], j - 1
+        while w in OPINION_VERBS and s > 0 and tokens[s] in _OPINION_AUXILIARIES:
+            s -= 1
+        if w in OPINION_VERBS and tokens[s] in _SPEAKERS:  # ("I think", "I would say", "I do not know")
+            j = s - 1
+        elif w in GUESSES:
+            j -= 1
+        elif w == "to" and tokens[j - 1] in ("close", "near"):
+            j -= 2
+        elif w == "," and j < k:  # (the comma that opens the guess: ", I think, 40")
+            j -= 1
+        elif w == "," and j == k and j > 1 and (tokens[j - 1] in GUESSES or tokens[j - 1] in OPINION_VERBS):
+            j -= 1  # (the comma that closes it: ", I don't know, 40")
+        else:
+            break
+    return j
+
+
 def before_hedge(tokens: list[str], i: int) -> str:
     """The word before the number at ``i`` past its hedge or bound ("doing at least 70": "at"; "going well
     over 60": "going"; "doing no more than 50", "doing a bit over 40": "doing"), the plain word before it
@@ -64,6 +105,45 @@ def before_hedge(tokens: list[str], i: int) -> str:
     ):
         k -= 1
     return tokens[k] if k >= 0 else ""
+
+
+def _start_of_guess(tokens: list[str], i: int) -> int:
+    """The index of the word before the guess (and any hedge in it) that ends right before the number
+    at ``i`` ("doing I reckon 40", "going, I don't know, 40", "at probably 40", "doing close to 50":
+    the index of "doing", "going", "at"), or ``i`` where no guess stands there."""
+    k, guessed = i - 1, False
+    while k > 0:
+        if tokens[k] in APPROXIMATORS or tokens[k] in BOUNDS or (tokens[k] == "a" and tokens[k + 1] in BOUNDS):
+            k -= 1
+        elif (j := _guess_before(tokens, k)) < k:
+            k, guessed = j, True
+        else:
+            break
+    return k if guessed else i
+
+
+#: Words after a number that end the phrase it says a speed in ("going, I think, 40, and ...").
+_SPEED_PHRASE_ENDS = frozenset({"", ".", ",", ";", "!", "?", "and", "then", "when", "while", "but", ")", "or"})
+
+
+def without_guesses(tokens: list[str], going: frozenset[str]) -> list[str]:
+    """``tokens`` with the guess between a verb of going (``going``, or "doing", "at") and its number
+    left out ("he was going, I don't know, 40, and ...": "he was going 40, and ..."; "doing I reckon 60
+    mph": "doing 60 mph"), hedges kept ("doing probably about 40": "doing about 40"). Why: a speaker
+    who is unsure says so there, and the number is still the speed the verb says; the "I" of "I think"
+    is no one in the scene. Only where the number is a speed (a unit, the phrase's end or a place
+    follows): "doing, what, 3 tasks at once" stays as said."""
+    out = list(tokens)
+    i = len(out) - 1
+    while i > 0:
+        nxt = out[i + 1] if i + 1 < len(out) else ""
+        if _is_number(out[i]) and (nxt in V.SPEED_UNITS or nxt in _SPEED_PHRASE_ENDS or nxt in WHERE_AFTER_SPEED):
+            j = _start_of_guess(out, i)
+            if j < i and out[j] in going | {"doing", "at"}:
+                out[j + 1 : i] = [w for w in out[j + 1 : i] if w in APPROXIMATORS or w in BOUNDS or w == "a"]
+                i = j
+        i -= 1
+    return out
 
 
 #: Words between a speed's head and its number ("speed: 50", "velocity = 40", "speed was 30", "speed of
@@ -248,6 +328,74 @@ def ego_speed_mps(tokens: list[str]) -> float | None:
             if tokens[j] in _EGO_SUBJECTS:
                 return float(tokens[k - 1]) * V.SPEED_UNITS[word]
     return None
+
+
+#: Measures of things other than speed or distance along the road, after a number ("50 cm to spare",
+#: "20 minutes later", "a man of 60 years", "40 tonnes", "6 inches", "150 hp"): the number is no speed.
+OTHER_MEASURES = frozenset(
+    {"cm", "cms", "centimetre", "centimetres", "centimeter", "centimeters", "mm", "millimetre", "millimetres",
+     "millimeter", "millimeters", "inch", "inches", "min", "mins", "minute", "minutes", "hr", "hour", "day", "days",
+     "week", "weeks", "month", "months", "year", "years", "yr", "yrs", "yo", "tonne", "tonnes", "ton", "tons",
+     "kgs", "kilo", "kilos", "lb", "lbs", "pound", "pounds", "litre", "litres", "liter", "liters", "cc", "hp",
+     "bhp", "kw", "rpm", "percent", "times", "quid", "euros", "dollars", "rupees", "rand", "pence"}
+)  # fmt: skip
+
+
+def other_measure(tokens: list[str], i: int) -> bool:
+    """Whether the number at ``i`` measures something other than a speed (:data:`OTHER_MEASURES` after
+    it), or is the minutes of a clock said in words ("10 past 5", "20 to 6")."""
+    nxt = tokens[i + 1] if i + 1 < len(tokens) else ""
+    clock = nxt in ("past", "to") and i + 2 < len(tokens) and tokens[i + 2].isdigit() and int(tokens[i + 2]) <= 12
+    return nxt in OTHER_MEASURES or (clock and not (i + 3 < len(tokens) and tokens[i + 3] in SPEED_UNITS_WORDS))
+
+
+#: Speed units as the reader's tokens hold them ("from 10 to 5 km/h" is a range, no clock).
+SPEED_UNITS_WORDS = frozenset(V.SPEED_UNITS)
+
+
+#: Words after "<number> speed" that end its phrase ("going 40 speed only", "coming 50 speed, ...", "with
+#: 60 speed on the flyover"): the number is then a speed, not a thing of speeds ("a 40 speed limit", "a 5
+#: speed gearbox", "3 speed bumps").
+_AFTER_NUMBER_SPEED = frozenset({"only", "so", "also", "as", "at", "in", "exactly", "approx", "approximately"})
+
+
+def number_speed(tokens: list[str], i: int) -> bool:
+    """Whether the number at ``i`` is a speed said "<number> speed" ("I was going 40 speed only", "at 60
+    speed on the flyover", "sixty speed, ..."), as South Asian English says it: "speed" ends the phrase
+    or a place or a clause follows it. Not where a noun follows it, which the number and "speed" then
+    describe ("a 40 speed limit", "a 21 speed bike", "3 speed bumps")."""
+    if i + 1 >= len(tokens) or tokens[i + 1] not in SPEED_HEADS:
+        return False
+    after = tokens[i + 2] if i + 2 < len(tokens) else ""
+    return after in _SPEED_PHRASE_ENDS or after in WHERE_AFTER_SPEED or after in _AFTER_NUMBER_SPEED
+
+
+#: Parts of the day, and words of the day said of the story, beside which a bare hour is a time ("around
+#: 7 this morning", "at 9 last night", "Today morning, around 7", "tonight around 10").
+_PARTS_OF_DAY = frozenset(
+    {"morning", "mornings", "afternoon", "evening", "evenings", "night", "tonight", "today", "yesterday", "dawn",
+     "dusk", "midnight", "noon", "midday", "am", "pm", "a.m.", "p.m.", "forenoon", "daybreak", "sunrise", "sunset"}
+)  # fmt: skip
+#: Words that say a time before an hour ("at 7", "around 7", "by 8", "after 9", "till 10").
+_BEFORE_HOUR = frozenset({"at", "around", "about", "approx", "approximately", "by", "after", "before", "till",
+                          "until", "roughly", "circa", "~", "like", ",", "just"})  # fmt: skip
+#: Words between an hour and the part of the day after it ("7 this morning", "9 last night", "8 in the morning").
+_HOUR_LINKS = frozenset({"this", "last", "in", "the", "on", "that", "yesterday", "tomorrow", "o'clock", ","})
+
+
+def clock_hour(tokens: list[str], i: int) -> bool:
+    """Whether the bare whole number at ``i`` is an hour of the day: 1 to 12 after a word of time ("at",
+    "around", "by") with a part of the day right after it ("around 7 this morning", "at 9 last night")
+    or within the three words before it ("Today morning, around 7", "tonight around 10"). Why: an hour
+    said so reads like "at 7" of a speed, and one of a few km/h is the pace of no car."""
+    if not tokens[i].isdigit() or not 1 <= int(tokens[i]) <= 12 or i == 0 or tokens[i - 1] not in _BEFORE_HOUR:
+        return False
+    k = i + 1
+    while k < len(tokens) and k <= i + 3 and tokens[k] in _HOUR_LINKS:
+        k += 1
+    if k < len(tokens) and tokens[k] in _PARTS_OF_DAY:
+        return True
+    return any(tokens[k] in _PARTS_OF_DAY for k in range(max(i - 4, 0), i - 1))
 
 
 #: Prepositions of where one goes, after "going 40" ("going 40 down the hill", "driving 30 past the
@@ -521,14 +669,14 @@ def owners(
             return ()  # "steps out between parked cars 3 m/s": the cars say where; the clause says whose
         if j == i - 1 and (unit or after_ego(tokens, i)):  # "cyclist 15 km/h", "ego 50": of the noun before it
             return (owner,)
-        if unit and tokens[j + 1] == "at" and (k < 0 or tokens[k] in _CLAUSE_OPENERS) and not compared(tokens, k):
+        if tokens[j + 1] == "at" and (k < 0 or tokens[k] in _CLAUSE_OPENERS) and not compared(tokens, k):
             return (owner,)  # "the van at 60 km/h overtakes ...": said of the subject opening its clause
     subject = mention_ending_at(j - 1) if unit and j and tokens[j].endswith("ing") else None
     if subject is not None and subject and tokens[subject - 1] == "with":
         return (subject,)  # "with us coming at 80 km/h": the subject of a participle after "with"
     if tokens[j] in _MOTION and j and tokens[j - 1] == "both":  # "... are both doing 50 km/h"
         j -= 1
-    elif tokens[j] in _MOTION and unit and tokens[j - 1] in _OBJECT_PRONOUNS:
+    elif tokens[j] in _MOTION and tokens[j - 1] in _OBJECT_PRONOUNS:  # (with a unit or bare: "doing 70")
         passer = _subject_before(tokens, j - 2, mention_ending_at)  # ("a lorry went past us doing 70 km/h")
         return (passer,) if passer is not None else ()
     elif tokens[j] in _MOTION and unit and tokens[j - 1] not in _OBJECT_PRONOUNS:
@@ -699,6 +847,21 @@ _STANDING = frozenset({"stood", "standing"})
 _PERFECT = frozenset({"had", "has", "have"})
 
 
+#: Verbs of going that, denied, say one stands ("we weren't moving", "I was not driving", "never rolled").
+_MOVING = frozenset({"moving", "going", "driving", "rolling", "travelling", "traveling", "moved", "rolled"})
+
+
+def _motion_denied(m, after) -> bool:
+    """Whether the mention ``m`` is a verb of going said with "not" or "never" before it ("we weren't
+    moving", "I was not driving"): the subject stands. Not "not going to ...", an intention (``after``:
+    the mention after ``m``, which "to" then stands before)."""
+    if m.slot not in ("behaviour", "ego_verb", "unknown_verb") or m.prev not in ("not", "never"):
+        return False
+    if m.words.split()[0] not in _MOVING:
+        return False
+    return not (after and after[0].prev == "to" and after[0].start == m.end + 1)
+
+
 def _stop_as_state(m) -> bool:
     """Whether the stop ``m`` says a state the scene opens in, not a stop under way: a still word
     ("stopped at", "halted"), standing ("stood still"), or a stop done before, in the perfect ("had pulled
@@ -732,12 +895,18 @@ def ego_at_rest(clauses) -> bool:
             if m.slot == "behaviour" and other:  # (what the ego did before it stood is no one acting on it)
                 acted = True
             stop = m.slot == "behaviour" and m.value[0] == "stop" and _stop_as_state(m)
-            if not k or not (stop or (m.words in STILL_WORDS and m.slot in ("stationary", "unknown_verb"))):
+            still = m.words in STILL_WORDS  # ("was stationary", "were waiting at the lights")
+            denied = _motion_denied(m, said[k + 1 : k + 2])  # ("we weren't moving", "I was not driving")
+            if not k or not (stop or denied or (still and m.slot in ("stationary", "unknown_verb"))):
                 continue  # ("was stationary", "were stopped at the junction": a state)
             ego = said[k - 1]
             if _it_the_egos_vehicle(ego, subject):
                 ego = subject  # ("My car got hit while it was parked": the car, said again)
-            if ego.slot == "actor" and ego.value == "ego" and (m.prev in _STATE_BEFORE or _verbless_state(ego, m)):
+            if (
+                ego.slot == "actor"
+                and ego.value == "ego"
+                and (m.prev in _STATE_BEFORE or denied or _verbless_state(ego, m))
+            ):
                 if not acted or ego.prev in _BACKGROUND:
                     return True
     return False

@@ -568,6 +568,8 @@ def _number(tokens: list[str], i: int, imperial: bool = False, metric: bool = Fa
         return "distance", gap, 2
     if nxt in ("s", "sec", "seconds", "second", "g", "%", "deg", "degrees", "kg", "km"):
         return "skip", value, 2
+    if Q.other_measure(tokens, i):  # ("50 cm to spare", "20 minutes later", "at 10 past 5"): no speed
+        return "skip", value, 2
     if nxt in (":", "am", "pm", "hrs", "hours", "o'clock", "oclock"):  # ("about 6 pm", "at 07:50"): a time of day
         if nxt == ":" and i + 2 < len(tokens) and tokens[i + 2].isdigit():  # ("07:50", "07:50 hrs"; not what follows)
             return "skip", value, 4 if tokens[i + 3 : i + 4] in (["hrs"], ["hours"], ["am"], ["pm"]) else 3
@@ -576,6 +578,10 @@ def _number(tokens: list[str], i: int, imperial: bool = False, metric: bool = Fa
         unit = tokens[i + 3]
         if unit in V.SPEED_UNITS:  # "from 50 to 20 km/h": the speed, then the one it goes to
             return "speed_range", (value * V.SPEED_UNITS[unit], float(tokens[i + 2]) * V.SPEED_UNITS[unit]), 4
+    if Q.number_speed(tokens, i):  # ("I was going 40 speed only", "at 60 speed on the flyover")
+        return "speed", value * Q.carried_unit(tokens, i, imperial, metric), 2
+    if Q.clock_hour(tokens, i):  # ("Today morning, around 7, ...", "at 9 last night"): an hour, no speed
+        return "skip", value, 1
     if (count := counted_in_figures(tokens, i, _kind_at)) is not None:  # ("2 escooters riding side by side")
         return "count", count, 1
     if nxt in ("lanes", "lane") or (nxt == "-" and i + 2 < len(tokens) and tokens[i + 2] in ("lane", "lanes")):
@@ -638,6 +644,8 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
     tokens = narrator_vehicle.frame(tokens, _kind_at, _known, framed)  # (the writer in it or testing it)
     tokens = generic_ego.frame(tokens, _kind_at, _known, framed)  # (the ego as drivers in general)
     tokens = ego_speed.at_the_limit(tokens)  # ("doing the 20 limit": at 20)
+    tokens = ego_speed.the_limit_then_its_number(tokens)  # ("doing the limit, seventy, when": doing 70)
+    tokens = Q.without_guesses(tokens, _MOTION_BEFORE_SPEED)  # ("going, I don't know, 40": going 40)
     proper = proper_names(text)
     tokens = shared_scooters(tokens, proper, lambda w: "VERB" in _pos(w))  # ("a Lime came past": an e-scooter)
     tokens, dropped = discourse.resolve(tokens, _kind_at, _known, proper)  # (who is who; words out)
