@@ -259,3 +259,39 @@ def test_out_the_side_road_is_coming_out_of_it(text):
 )
 def test_out_the_and_no_side_road_is_no_emergence(text, expected):
     assert _kinds_of_act(text) == expected
+
+
+# a road user coming from the junction's opposite arm that only goes on, or goes past the ego, goes
+# straight through on its own side while the ego turns across it: it has the way (no red is run), and
+# it meets the ego head on (it overtakes no one)
+THROUGH_FROM_OPPOSITE = [
+    "I was turning left at the intersection when an oncoming SUV kept coming without stopping and I slammed on.",
+    "Making a right turn at the crossroads, we drive on the left, and an oncoming motorbike didn't slow at all.",
+    "Ego turns left at the junction; an oncoming van goes straight on and does not stop. Near miss.",
+    "i was turning left at the crossroads n the oncoming ute just kept going straight thru, nearly hit it",
+    "The AV turns left across an oncoming cyclist at the crossroads; the cyclist went past a metre off our bumper.",
+    "We turned left at the junction and the oncoming bus flew past a few metres in front of us.",
+]
+
+
+@pytest.mark.parametrize("text", THROUGH_FROM_OPPOSITE)
+def test_an_oncoming_road_user_going_on_through_the_junction_keeps_going(text):
+    r = read(text)
+    opposite = [a for a in r.actors if a.relation == "junction_opposite"]
+    assert opposite, [(a.kind, a.relation) for a in r.actors]
+    assert [b[0] for b in opposite[0].behaviours][:1] == ["keep_going"]
+
+
+# near misses: a red said is run; one that turns across the ego turns; one out of a side road is no
+# oncoming road user
+NOT_THROUGH_FROM_OPPOSITE = [
+    ("I was turning left at the crossroads when an oncoming car ran the red light and nearly hit me.", "run_red_light"),
+    ("At the junction an oncoming van jumped the lights straight through as I turned left.", "run_red_light"),
+    ("Going straight through the crossroads, an oncoming car turned left across my path.", "turn_across"),
+]
+
+
+@pytest.mark.parametrize("text, expected", NOT_THROUGH_FROM_OPPOSITE)
+def test_a_red_or_a_turn_from_the_opposite_arm_stays_so(text, expected):
+    actor, names = _only(text)
+    assert names[:1] == [expected], (actor.relation, names)
