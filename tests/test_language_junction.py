@@ -295,3 +295,36 @@ NOT_THROUGH_FROM_OPPOSITE = [
 def test_a_red_or_a_turn_from_the_opposite_arm_stays_so(text, expected):
     actor, names = _only(text)
     assert names[:1] == [expected], (actor.relation, names)
+
+
+# where a road user struck the ego's flank ("into my rear passenger door") is a part of the ego, not
+# where the road user was: it comes from the arm said, not from behind
+FLANK_STRUCK = [
+    "Going round the roundabout at 20 km/h a taxi came on from the next entry without stopping and went into my rear "
+    "passenger door.",
+    "I was circulating on the roundabout when a ute entered from the right without giving way and smashed into our "
+    "back left door.",
+    "At the crossroads a van shot out of the side road on my left and hit the rear nearside wheel of my car.",
+    "on the roundabout, car pulled on from the entry on the right without looking and clipped my rear driver's door",
+    "Ego circulates at 25 km/h; a bus enters from the next arm without yielding and strikes the ego's rear offside "
+    "quarter panel.",
+]
+
+
+@pytest.mark.parametrize("text", FLANK_STRUCK)
+def test_a_flank_part_struck_is_no_place_behind(text):
+    actor, names = _only(text)
+    assert actor.relation in ("junction_left", "junction_right"), (actor.relation, names)
+
+
+# near misses: the end of the ego struck says the road user was at that end
+REAR_STRUCK = [
+    "Waiting at the lights when a van went into my rear.",
+    "Queuing at 5 mph when a van came up from behind and went into my rear passenger door.",
+]
+
+
+@pytest.mark.parametrize("text", REAR_STRUCK)
+def test_the_rear_struck_stays_behind(text):
+    actor, _ = _only(text)
+    assert actor.relation == "behind"

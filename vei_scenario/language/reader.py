@@ -897,6 +897,10 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
         if slot == "actor" and i + len(key) < len(tokens) and tokens[i + len(key)] in _PARTS:
             i += len(key) + 1  # "50 % of the vehicle width", "a car door": a part of one, not a road user
             continue
+        if slot == "relation" and len(key) == 1 and (part := sides.end_of_a_flank_part(tokens, i)):
+            ignored.extend(tokens[i:part])  # "into my rear passenger door": a part of the ego's flank, no place
+            i = part
+            continue
         if slot in ("side", "kerb_side", "lane_side") and (part := sides.part_after_side(tokens, i + len(key), _PARTS)):
             ignored.extend(tokens[i:part])  # "the nearside wing", "its offside front corner": a part of a vehicle
             i = part
