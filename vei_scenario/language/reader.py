@@ -2037,6 +2037,13 @@ def _read(text: str) -> Reading:
                     who = clause_subject  # "..., and then overtakes it at 25 km/h": the one who overtakes
                 if who is None and m.slot in ("returns", "wrong_way") and isinstance(subject, _Actor):
                     who = subject  # "..., then cuts back": what it does, said without naming it again
+                if (
+                    who is None
+                    and m.slot == "relation"
+                    and isinstance(subject, _Actor)
+                    and any(x is subject for x, _ in added)
+                ):  # "..., then overtook and cut in in front of me because a van ...": where it went, its own
+                    who = subject
                 change = mentions[k - 2] if prev is not None and prev.slot == "accel" and k >= 2 else prev
                 if (
                     m.slot == "speed"
