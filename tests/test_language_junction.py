@@ -328,3 +328,35 @@ REAR_STRUCK = [
 def test_the_rear_struck_stays_behind(text):
     actor, _ = _only(text)
     assert actor.relation == "behind"
+
+
+# a turn said with its subject left out, joined by "and" / "but" to a clause that opens with the first
+# road user, is the narrator's: that road user is the next clause's subject, not the turn's
+NARRATORS_TURN_THEN_A_ROAD_USER = [
+    ("Hung a left onto Main St around 9 and a cyclist going the wrong way in my lane came straight at me.", "left"),
+    ("Turned right into the estate and a kid on a scooter was riding towards me on my side of the road.", "right"),
+    ("Made a left at the lights and a guy on a moped came the wrong way down the street at me.", "left"),
+    ("Took the right turn off the high road but an okada was coming against traffic in my lane.", "right"),
+    ("turned left at the junction and this bike came at me the wrong way in my lane", "left"),
+]
+
+
+@pytest.mark.parametrize("text, route", NARRATORS_TURN_THEN_A_ROAD_USER)
+def test_a_turn_with_its_subject_left_out_before_and_is_the_narrators(text, route):
+    r = read(text)
+    (actor,) = r.actors
+    assert r.ego_route == route
+    assert not {"forced_turn", "turn_across"} & {b[0] for b in actor.behaviours}
+
+
+# near misses: a turn said with its road user keeps it
+ROAD_USERS_TURN_THEN_ANOTHER = [
+    "A van turned left in front of me and a cyclist behind it swerved.",
+    "The truck turned right and a cyclist came up its inside.",
+]
+
+
+@pytest.mark.parametrize("text", ROAD_USERS_TURN_THEN_ANOTHER)
+def test_a_turn_said_with_its_road_user_stays_its_own(text):
+    first = read(text).actors[0]
+    assert [b[0] for b in first.behaviours][:1] == ["forced_turn"]

@@ -1837,6 +1837,8 @@ def _read(text: str) -> Reading:
                 named.append((who, role))
                 resolved[m.start] = who
                 if role == "subject":
+                    if subject is None and isinstance(who, _Actor):
+                        pending = _left_out_subjects_acts(pending, prev, r, link, added)
                     subject = clause_subject = who
                     seen = [a for a in actors if not a.stationary] or actors
                     for p in pending:
@@ -2453,6 +2455,30 @@ def _read(text: str) -> Reading:
     if r.weather in (None, "rain") and stated_heavy_rain(said):
         r.weather = "heavy_rain"
     return r
+
+
+#: Conjunctions that join two clauses each with a subject of its own ("turned left and a cyclist ...").
+_JOINING = frozenset(("and", "but", "when", "then", "so"))
+
+
+def _left_out_subjects_acts(pending: list, prev, r: Reading, link: str, added: list) -> list:
+    """``pending`` with the finite verbs said before a joining conjunction that the first road user of
+    the text follows put on the ego ("Hung a left onto Broadway and an e-scooter rider came at me",
+    "Turned right at the lights but a van ..."): the clause before "and" had its own subject, left out,
+    which cannot be the road user the clause after it opens with; before anyone is named it is the
+    narrator. A participle ("Turning left, a cyclist ...") may be the road user's and stays pending."""
+    if prev is None or prev.slot != "conj" or prev.value not in _JOINING:
+        return pending
+    mine = [
+        p
+        for p in pending
+        if p.slot in ("turn", "behaviour", "ego_verb")
+        and p.end <= prev.start
+        and not p.words.split()[0].endswith("ing")
+    ]
+    for p in mine:
+        _apply(p, "ego", r, link, added)
+    return [p for p in pending if all(p is not x for x in mine)]
 
 
 def _ahead_first(a: _Actor) -> bool:
