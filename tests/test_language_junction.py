@@ -360,3 +360,16 @@ ROAD_USERS_TURN_THEN_ANOTHER = [
 def test_a_turn_said_with_its_road_user_stays_its_own(text):
     first = read(text).actors[0]
     assert [b[0] for b in first.behaviours][:1] == ["forced_turn"]
+
+
+# near misses: one said not to give way takes a way it does not have, and runs through
+TAKES_THE_WAY_FROM_OPPOSITE = [
+    "I was turning left at the junction when an oncoming car failed to give way and drove through.",
+    "Ego turns left at the crossroads; an oncoming scooter does not yield.",
+]
+
+
+@pytest.mark.parametrize("text", TAKES_THE_WAY_FROM_OPPOSITE)
+def test_an_oncoming_road_user_said_not_to_give_way_runs_through(text):
+    actor, names = _only(text)
+    assert names[:1] == ["run_red_light"], (actor.relation, names)

@@ -2376,8 +2376,11 @@ def _read(text: str) -> Reading:
         spec.speed_mps = 0.0 if a.stationary and a.speed_mps is None else a.speed_mps
         passes_another = any(x.object_of is a for x in actors)  # ("pulled out to pass a truck": its own overtake)
         only_there = [b[0] for b in spec.behaviours] in ([], ["keep_going"])  # (nothing it does is said)
+        going_on = [b[0] for b in spec.behaviours[:1]] != ["cut_in"]  # (not "doesn't yield": it takes the way)
         _specialise(a, spec, junction, sides.drives_on_left(scanned, text), turn_across_side(text), passes_another)
-        spec.behaviours = junctions.through_from_opposite(spec.relation, spec.behaviours, said, passes_another)
+        spec.behaviours = junctions.through_from_opposite(
+            spec.relation, spec.behaviours, said, passes_another, going_on
+        )
         if only_there and _waits_at_a_crossing(a, spec, said):
             spec.behaviours = [("cross_in_front", {}, *spec.behaviours[0][2:])]  # ("stopped at the zebra for a mum")
             spec.relation = spec.relation if spec.relation in ("roadside_left", "roadside_right") else "roadside_right"
