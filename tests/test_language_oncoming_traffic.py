@@ -98,22 +98,3 @@ def test_an_oncoming_vehicle_into_the_ego_lane_after_a_tailgater_comes_the_wrong
 
     names = [[b[0] for b in a.behaviours] for a in read(text).actors]
     assert any("wrong_way" in n for n in names), names
-
-
-# "im" and "ive" in a text message are the narrator ("I'm", "I've"): what follows is the narrator's,
-# not the road user's named before (its swerve or brake would otherwise make a wrong-way rider swerve)
-TEXT_SPEAK_NARRATOR = [
-    "scooter comes the wrong way round the corner in my lane, im doing 30, swerve and just miss him",
-    "bike coming the wrong way on my side of the road, im at 20 mph, brake hard, missed him",
-    "moped coming at me the wrong way in my lane, ive slammed on and stopped",
-    "cyclist riding the wrong way in my lane towards me, im going 25, swerve onto the verge",
-    "e-bike came the wrong way up my lane straight at me, im doing 20, had to swerve, close one",
-]
-
-
-@pytest.mark.parametrize("text", TEXT_SPEAK_NARRATOR)
-def test_im_and_ive_are_the_narrator(text):
-    from vei_scenario.language.reader import read
-
-    (actor,) = read(text).actors
-    assert [b[0] for b in actor.behaviours] == ["wrong_way"], (actor.relation, actor.behaviours)

@@ -287,9 +287,6 @@ _SHORTHAND = [
     # "doesnt", "dosnt", "didnt", "wasnt": the verb, then "not" (as "doesn't" is read)
     (re.compile(r"\b(does|dos|doe|do|did|is|was|were|are|could|would|should|has|have|had)nt\b"), r"\1 not"),
     (re.compile(r"\bcant\b"), "can not"),
-    # "im doing 20", "ive just seen": the narrator, as "I'm", "I've" (no English word is spelt so)
-    (re.compile(r"\bim\b"), "i am"),
-    (re.compile(r"\bive\b"), "i have"),
     (re.compile(r"\bwont\b"), "will not"),
     (re.compile(r"\bdos\b(?= not\b)"), "does"),
     (re.compile(r"\b(?:nite|nyt)\b"), "night"),
