@@ -259,3 +259,117 @@ def test_out_the_side_road_is_coming_out_of_it(text):
 )
 def test_out_the_and_no_side_road_is_no_emergence(text, expected):
     assert _kinds_of_act(text) == expected
+
+
+# a road user coming from the junction's opposite arm that only goes on, or goes past the ego, goes
+# straight through on its own side while the ego turns across it: it has the way (no red is run), and
+# it meets the ego head on (it overtakes no one)
+THROUGH_FROM_OPPOSITE = [
+    "I was turning left at the intersection when an oncoming SUV kept coming without stopping and I slammed on.",
+    "Making a right turn at the crossroads, we drive on the left, and an oncoming motorbike didn't slow at all.",
+    "Ego turns left at the junction; an oncoming van goes straight on and does not stop. Near miss.",
+    "i was turning left at the crossroads n the oncoming ute just kept going straight thru, nearly hit it",
+    "The AV turns left across an oncoming cyclist at the crossroads; the cyclist went past a metre off our bumper.",
+    "We turned left at the junction and the oncoming bus flew past a few metres in front of us.",
+]
+
+
+@pytest.mark.parametrize("text", THROUGH_FROM_OPPOSITE)
+def test_an_oncoming_road_user_going_on_through_the_junction_keeps_going(text):
+    r = read(text)
+    opposite = [a for a in r.actors if a.relation == "junction_opposite"]
+    assert opposite, [(a.kind, a.relation) for a in r.actors]
+    assert [b[0] for b in opposite[0].behaviours][:1] == ["keep_going"]
+
+
+# near misses: a red said is run; one that turns across the ego turns; one out of a side road is no
+# oncoming road user
+NOT_THROUGH_FROM_OPPOSITE = [
+    ("I was turning left at the crossroads when an oncoming car ran the red light and nearly hit me.", "run_red_light"),
+    ("At the junction an oncoming van jumped the lights straight through as I turned left.", "run_red_light"),
+    ("Going straight through the crossroads, an oncoming car turned left across my path.", "turn_across"),
+]
+
+
+@pytest.mark.parametrize("text, expected", NOT_THROUGH_FROM_OPPOSITE)
+def test_a_red_or_a_turn_from_the_opposite_arm_stays_so(text, expected):
+    actor, names = _only(text)
+    assert names[:1] == [expected], (actor.relation, names)
+
+
+# where a road user struck the ego's flank ("into my rear passenger door") is a part of the ego, not
+# where the road user was: it comes from the arm said, not from behind
+FLANK_STRUCK = [
+    "Going round the roundabout at 20 km/h a taxi came on from the next entry without stopping and went into my rear "
+    "passenger door.",
+    "I was circulating on the roundabout when a ute entered from the right without giving way and smashed into our "
+    "back left door.",
+    "At the crossroads a van shot out of the side road on my left and hit the rear nearside wheel of my car.",
+    "on the roundabout, car pulled on from the entry on the right without looking and clipped my rear driver's door",
+    "Ego circulates at 25 km/h; a bus enters from the next arm without yielding and strikes the ego's rear offside "
+    "quarter panel.",
+]
+
+
+@pytest.mark.parametrize("text", FLANK_STRUCK)
+def test_a_flank_part_struck_is_no_place_behind(text):
+    actor, names = _only(text)
+    assert actor.relation in ("junction_left", "junction_right"), (actor.relation, names)
+
+
+# near misses: the end of the ego struck says the road user was at that end
+REAR_STRUCK = [
+    "Waiting at the lights when a van went into my rear.",
+    "Queuing at 5 mph when a van came up from behind and went into my rear passenger door.",
+]
+
+
+@pytest.mark.parametrize("text", REAR_STRUCK)
+def test_the_rear_struck_stays_behind(text):
+    actor, _ = _only(text)
+    assert actor.relation == "behind"
+
+
+# a turn said with its subject left out, joined by "and" / "but" to a clause that opens with the first
+# road user, is the narrator's: that road user is the next clause's subject, not the turn's
+NARRATORS_TURN_THEN_A_ROAD_USER = [
+    ("Hung a left onto Main St around 9 and a cyclist going the wrong way in my lane came straight at me.", "left"),
+    ("Turned right into the estate and a kid on a scooter was riding towards me on my side of the road.", "right"),
+    ("Made a left at the lights and a guy on a moped came the wrong way down the street at me.", "left"),
+    ("Took the right turn off the high road but an okada was coming against traffic in my lane.", "right"),
+    ("turned left at the junction and this bike came at me the wrong way in my lane", "left"),
+]
+
+
+@pytest.mark.parametrize("text, route", NARRATORS_TURN_THEN_A_ROAD_USER)
+def test_a_turn_with_its_subject_left_out_before_and_is_the_narrators(text, route):
+    r = read(text)
+    (actor,) = r.actors
+    assert r.ego_route == route
+    assert not {"forced_turn", "turn_across"} & {b[0] for b in actor.behaviours}
+
+
+# near misses: a turn said with its road user keeps it
+ROAD_USERS_TURN_THEN_ANOTHER = [
+    "A van turned left in front of me and a cyclist behind it swerved.",
+    "The truck turned right and a cyclist came up its inside.",
+]
+
+
+@pytest.mark.parametrize("text", ROAD_USERS_TURN_THEN_ANOTHER)
+def test_a_turn_said_with_its_road_user_stays_its_own(text):
+    first = read(text).actors[0]
+    assert [b[0] for b in first.behaviours][:1] == ["forced_turn"]
+
+
+# near misses: one said not to give way takes a way it does not have, and runs through
+TAKES_THE_WAY_FROM_OPPOSITE = [
+    "I was turning left at the junction when an oncoming car failed to give way and drove through.",
+    "Ego turns left at the crossroads; an oncoming scooter does not yield.",
+]
+
+
+@pytest.mark.parametrize("text", TAKES_THE_WAY_FROM_OPPOSITE)
+def test_an_oncoming_road_user_said_not_to_give_way_runs_through(text):
+    actor, names = _only(text)
+    assert names[:1] == ["run_red_light"], (actor.relation, names)

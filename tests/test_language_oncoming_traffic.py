@@ -56,3 +56,45 @@ def test_bare_plural_traffic_coming_the_other_way_is_no_road_user(text, expected
 )
 def test_counted_single_or_only_oncoming_vehicles_stay_road_users(text, expected):
     assert kinds(text) == expected
+
+
+# a place said after a road user's second verb, in a clause that names it no more ("..., then overtook and
+# cut in in front of me because a lorry ..."), is where that road user went: the one named after the
+# "because" or "as" only comes the other way (no wrong-way driver of it)
+CUT_IN_BEFORE_ONCOMING = [
+    "A BMW tailgated me for miles, then overtook and cut in ahead of me because a van was coming the other way.",
+    "Some idiot in a Golf was right up my backside, then overtook and swerved back in in front of me as a lorry "
+    "was coming towards us.",
+    "A bakkie tailgated us for ages, then passed and cut in ahead of us because a taxi was approaching.",
+    "Danfo was tailgating us for long, then overtake and enter in front of us because trailer was coming from "
+    "the other side.",
+    "SUV tailgating ego for 2 km, then overtakes and pulls in ahead of ego since a truck is coming the other way.",
+    "A Merc rode my bumper for two miles, then overtook me and cut in ahead of me because a bus was coming the "
+    "other way.",
+]
+
+
+@pytest.mark.parametrize("text", CUT_IN_BEFORE_ONCOMING)
+def test_the_oncoming_vehicle_an_overtaker_cuts_in_for_goes_its_way(text):
+    from vei_scenario.language.reader import read
+
+    r = read(text)
+    oncoming = [a for a in r.actors if a.relation == "oncoming"]
+    assert oncoming, [(a.kind, a.relation, [b[0] for b in a.behaviours]) for a in r.actors]
+    assert all("wrong_way" not in [b[0] for b in a.behaviours] for a in oncoming)
+    assert any("overtake" in [b[0] for b in a.behaviours] for a in r.actors if a not in oncoming)
+
+
+# near misses: one that comes the other way into the ego's lane is still a wrong-way driver
+WRONG_WAY_AFTER_A_TAILGATER = [
+    "A BMW tailgated me for miles, then a van coming the other way drifted into my lane.",
+    "A van was right up my backside, then an oncoming lorry came into my lane head-on.",
+]
+
+
+@pytest.mark.parametrize("text", WRONG_WAY_AFTER_A_TAILGATER)
+def test_an_oncoming_vehicle_into_the_ego_lane_after_a_tailgater_comes_the_wrong_way(text):
+    from vei_scenario.language.reader import read
+
+    names = [[b[0] for b in a.behaviours] for a in read(text).actors]
+    assert any("wrong_way" in n for n in names), names

@@ -12,6 +12,7 @@ Only walkers and riders are read so: a vehicle across the ego's path is read by 
 
 from __future__ import annotations
 
+import re
 from dataclasses import replace
 
 from vei_scenario.language.lemmas import lemmas
@@ -247,6 +248,30 @@ def _across_in_front(mentions: list, tokens: list[str]) -> list:
         mentions = [x for x in mentions[:k] if id(x) not in gone] + [crossing] + mentions[k:]
         break
     return mentions
+
+
+#: Words that say a signal the road user could run ("ran the red", "jumped the lights", "on amber").
+_SIGNAL_SAID = re.compile(r"\b(red|amber|lights?|signals?)\b")
+
+
+def through_from_opposite(
+    relation: str | None, behaviours: list, said: str, passes_another: bool, going_on: bool = True
+) -> list:
+    """``behaviours`` of a road user coming from the junction's opposite arm, with its going on read as
+    going straight through on its own side (``keep_going``): said to go on "without stopping" or
+    "straight through" (read as running the red) where no signal is said, or to go "past" the ego
+    (read as an overtake) when it passes no one else ("sailed past", "went by our bumper"). Coming the
+    other way it has the way over an ego that turns across it, and meets the ego head on rather than
+    overtaking it. A red, amber or lights said keeps the run ("an oncoming car jumped the lights"), and
+    so does a way said to be taken (``going_on`` false: "doesn't yield", "fails to give way"); an
+    overtake of another road user stays its own ("pulled out to pass a bus")."""
+    if relation != "junction_opposite" or not behaviours:
+        return behaviours
+    name, _, crit, link = behaviours[0]
+    through = (name == "run_red_light" and going_on and not _SIGNAL_SAID.search(said)) or (
+        name == "overtake" and not passes_another
+    )
+    return [("keep_going", {}, crit, link)] + behaviours[1:] if through else behaviours
 
 
 #: Road users that ride a road: out of a side road they come along its carriageway, not off a kerb.

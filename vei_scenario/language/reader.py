@@ -918,6 +918,10 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
         if slot == "actor" and i + len(key) < len(tokens) and tokens[i + len(key)] in _PARTS:
             i += len(key) + 1  # "50 % of the vehicle width", "a car door": a part of one, not a road user
             continue
+        if slot == "relation" and len(key) == 1 and (part := sides.end_of_a_flank_part(tokens, i)):
+            ignored.extend(tokens[i:part])  # "into my rear passenger door": a part of the ego's flank, no place
+            i = part
+            continue
         if slot in ("side", "kerb_side", "lane_side") and (part := sides.part_after_side(tokens, i + len(key), _PARTS)):
             ignored.extend(tokens[i:part])  # "the nearside wing", "its offside front corner": a part of a vehicle
             i = part
@@ -1864,6 +1868,8 @@ def _read(text: str) -> Reading:
                 named.append((who, role))
                 resolved[m.start] = who
                 if role == "subject":
+                    if subject is None and isinstance(who, _Actor):
+                        pending = _left_out_subjects_acts(pending, prev, r, link, added)
                     subject = clause_subject = who
                     seen = [a for a in actors if not a.stationary] or actors
                     for p in pending:
@@ -2064,6 +2070,13 @@ def _read(text: str) -> Reading:
                     who = clause_subject  # "..., and then overtakes it at 25 km/h": the one who overtakes
                 if who is None and m.slot in ("returns", "wrong_way") and isinstance(subject, _Actor):
                     who = subject  # "..., then cuts back": what it does, said without naming it again
+                if (
+                    who is None
+                    and m.slot == "relation"
+                    and isinstance(subject, _Actor)
+                    and any(x is subject for x, _ in added)
+                ):  # "..., then overtook and cut in in front of me because a van ...": where it went, its own
+                    who = subject
                 change = mentions[k - 2] if prev is not None and prev.slot == "accel" and k >= 2 else prev
                 if (
                     m.slot == "speed"
@@ -2415,7 +2428,11 @@ def _read(text: str) -> Reading:
         spec.speed_mps = 0.0 if a.stationary and a.speed_mps is None else a.speed_mps
         passes_another = any(x.object_of is a for x in actors)  # ("pulled out to pass a truck": its own overtake)
         only_there = [b[0] for b in spec.behaviours] in ([], ["keep_going"])  # (nothing it does is said)
+        going_on = [b[0] for b in spec.behaviours[:1]] != ["cut_in"]  # (not "doesn't yield": it takes the way)
         _specialise(a, spec, junction, sides.drives_on_left(scanned, text), turn_across_side(text), passes_another)
+        spec.behaviours = junctions.through_from_opposite(
+            spec.relation, spec.behaviours, said, passes_another, going_on
+        )
         if along_first and len(spec.behaviours) > 1 and spec.behaviours[0][0] == "along_road":
             kerb_ride.at_the_edge(spec, a.kerb_side or a.side or a.lane_side)
         if only_there and _waits_at_a_crossing(a, spec, said):
@@ -2495,6 +2512,30 @@ def _read(text: str) -> Reading:
     if r.weather in (None, "rain") and stated_heavy_rain(said):
         r.weather = "heavy_rain"
     return r
+
+
+#: Conjunctions that join two clauses each with a subject of its own ("turned left and a cyclist ...").
+_JOINING = frozenset(("and", "but", "when", "then", "so"))
+
+
+def _left_out_subjects_acts(pending: list, prev, r: Reading, link: str, added: list) -> list:
+    """``pending`` with the finite verbs said before a joining conjunction that the first road user of
+    the text follows put on the ego ("Hung a left onto Broadway and an e-scooter rider came at me",
+    "Turned right at the lights but a van ..."): the clause before "and" had its own subject, left out,
+    which cannot be the road user the clause after it opens with; before anyone is named it is the
+    narrator. A participle ("Turning left, a cyclist ...") may be the road user's and stays pending."""
+    if prev is None or prev.slot != "conj" or prev.value not in _JOINING:
+        return pending
+    mine = [
+        p
+        for p in pending
+        if p.slot in ("turn", "behaviour", "ego_verb")
+        and p.end <= prev.start
+        and not p.words.split()[0].endswith("ing")
+    ]
+    for p in mine:
+        _apply(p, "ego", r, link, added)
+    return [p for p in pending if all(p is not x for x in mine)]
 
 
 def _ahead_first(a: _Actor) -> bool:

@@ -222,6 +222,33 @@ def part_after_side(tokens: list[str], k: int, parts: frozenset[str] | set[str] 
     return None
 
 
+#: The parts on a vehicle's flank ("the rear passenger door", "its back wheel"): an end word before one
+#: says which door or wheel, not that the road user is at that end (the bumper or boot would).
+FLANK_PARTS = frozenset(
+    {"door", "doors", "wheel", "wheels", "wing", "quarter", "panel", "tyre", "tire", "window", "windows", "arch",
+     "seat", "seats", "pillar", "sill"}
+)  # fmt: skip
+#: Words that may name which flank part it is between the end word and the part.
+_FLANK_MODIFIERS = frozenset(
+    {"passenger", "passenger's", "driver", "driver's", "drivers", "'s", "side", "nearside", "offside", "near-side",
+     "off-side", "left", "right", "lh", "rh", "wheel", "quarter"}
+)  # fmt: skip
+
+
+def end_of_a_flank_part(tokens: list[str], k: int) -> int | None:
+    """Where a flank part named after the end word at token ``k`` ends ("rear | passenger door", "back |
+    left wheel", "rear | driver 's door"), or None. Why: a road user that went "into my rear passenger
+    door" struck the ego's side, coming from wherever it was said to come from (an entry, a side road);
+    read as "rear" it was put behind the ego. An end part ("my rear bumper", "the back of us") keeps
+    the end it names."""
+    if k >= len(tokens) or tokens[k] not in _ENDS:
+        return None
+    j = k + 1
+    while j < min(len(tokens), k + 4) and tokens[j] in _FLANK_MODIFIERS and tokens[j] not in FLANK_PARTS:
+        j += 1
+    return j + 1 if j < len(tokens) and tokens[j] in FLANK_PARTS else None
+
+
 #: Words of the far or near side of the road, before a plain side that restates them.
 _FAR_NEAR = frozenset({"far", "near", "opposite", "other"})
 _OPENING = frozenset(
