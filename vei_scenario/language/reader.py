@@ -440,14 +440,20 @@ def _does_next(tokens: list[str], i: int) -> bool:
 def _named_again_then_acts(mentions, k: int) -> bool:
     """Whether mention ``k``, between commas right after a road user named with "a", is that road user
     named again because a verb of what it does follows it ("a van, a white Transit, pulled out", "a
-    Micra - a MICRA - undertakes me"): a list goes on with another name or "and"."""
+    Micra - a MICRA - undertakes me"), or a participle or place of its own does ("a scooter, an electric
+    scooter, riding toward me", "a car, a silver hatchback, coming at me"): a list goes on with another
+    name or "and"."""
     return (
         k >= 2
         and mentions[k - 2].slot == "actor"
         and mentions[k - 2].det in ("a", "an")
         and k + 2 < len(mentions)
-        and mentions[k + 2].slot == "behaviour"
+        and mentions[k + 2].slot in _WHAT_ONE_DOES
     )
+
+
+#: Mentions that say what a road user does or where it goes (a verb, a turn, a way, a place).
+_WHAT_ONE_DOES = frozenset({"behaviour", "turn", "wrong_way", "relation", "ego_verb"})
 
 
 def _definite_before(mentions, k: int) -> bool:
