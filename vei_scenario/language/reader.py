@@ -437,16 +437,17 @@ def _does_next(tokens: list[str], i: int) -> bool:
     return key is not None and TABLE[key][0] in ("behaviour", "ego_verb", "turn")
 
 
-def _named_again_then_acts(mentions, k: int) -> bool:
+def _named_again_then_acts(mentions, k: int, tokens: list[str]) -> bool:
     """Whether mention ``k``, between commas right after a road user named with "a", is that road user
     named again because a verb of what it does follows it ("a van, a white Transit, pulled out", "a
     Micra - a MICRA - undertakes me"), or a participle or place of its own does ("a scooter, an electric
-    scooter, riding toward me", "a car, a silver hatchback, coming at me"): a list goes on with another
-    name or "and"."""
+    scooter, riding toward me", "a car, a silver hatchback, coming at me"), said with an article right
+    after the comma: a list goes on with another name, "and" or "plus"."""
     return (
         k >= 2
         and mentions[k - 2].slot == "actor"
         and mentions[k - 2].det in ("a", "an")
+        and tokens[mentions[k - 1].start + 1 : mentions[k - 1].start + 2] in (["a"], ["an"])
         and k + 2 < len(mentions)
         and mentions[k + 2].slot in _WHAT_ONE_DOES
     )
@@ -1731,7 +1732,7 @@ def _read(text: str) -> Reading:
                         last is not None
                         and (
                             m.det in ("a", "an")
-                            or (not m.det and (_generic_vehicle(last) or _named_again_then_acts(mentions, k)))
+                            or (not m.det and (_generic_vehicle(last) or _named_again_then_acts(mentions, k, scanned)))
                         )
                         and k > 0
                         and mentions[k - 1].slot == "punct"
@@ -1742,7 +1743,7 @@ def _read(text: str) -> Reading:
                         and (
                             _definite_before(mentions, k)
                             or _generic_vehicle(last)
-                            or _named_again_then_acts(mentions, k)
+                            or _named_again_then_acts(mentions, k, scanned)
                         )
                         and (last.kind == m.value or (last.kind in VEHICLES and m.value in VEHICLES))
                     ):  # "the car ahead, a taxi, stops": the same one, said again (its kind the more exact)
@@ -2166,8 +2167,8 @@ def _read(text: str) -> Reading:
         raise NotUnderstood([f"{len(actors)} road users (a scenario holds at most {MAX_ACTORS} besides the ego)"], text)
     _refuse_if_nothing_to_place(text, actors, clauses, ignored, scanned)
     if any(not _idle(a) for a in actors):  # people and vehicles only mentioned (passengers, a car in a
-        idle = [a for a in actors if _idle(a)]  # story's aside) are no road users of the scenario
-        actors = [a for a in actors if not _idle(a)]
+        idle = [a for a in actors if _idle(a) and not _waited_for_at_a_crossing(a, said)]  # story's aside) are
+        actors = [a for a in actors if all(a is not b for b in idle)]  # no road users (one waited for is)
         ignored += [a.word or a.kind for a in idle]
     for a in actors:
         if a.kind == UNKNOWN_KIND:  # a road user the reader has no word for: its kind from what it does
@@ -2700,7 +2701,17 @@ def _waits_at_a_crossing(a: _Actor, spec: ActorSpec, said: str) -> bool:
         return False
     if spec.relation not in (None, "ahead", "roadside_left", "roadside_right") or a.said - {"ahead"}:
         return False
-    waited_for = re.search(rf"\b(?:for|way to) (?:\S+ ){{0,3}}{re.escape(a.word)}\b", said) if a.word else None
+    return _waited_for_at_a_crossing(a, said)
+
+
+def _waited_for_at_a_crossing(a: _Actor, said: str) -> bool:
+    """Whether walker ``a`` is one someone stops, waits or gives way for ("for a mum", "way to an old
+    man") where the text names a walkers' crossing: someone crossing there, a road user even when
+    nothing else is said of them and others act ("I stopped at the zebra for a mum, and a car behind
+    overtook me")."""
+    if a.kind != "pedestrian" or not a.word:
+        return False
+    waited_for = re.search(rf"\b(?:for|way to) (?:\S+ ){{0,3}}{re.escape(a.word)}\b", said)
     return waited_for is not None and any(f" {w} " in f" {said} " for w in _WALKERS_CROSSINGS)
 
 
