@@ -342,3 +342,82 @@ def test_a_walker_waited_for_at_a_crossing_stays_when_others_act(text: str, expe
 )
 def test_a_walker_waited_for_near_misses(text: str, expected: list[str]) -> None:
     assert kinds(text) == expected
+
+
+# ---- people inside the ego's vehicle, by where they are in it, are no road users -----------------------
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Doing 25 mph in the bus when a car pulled out from the left; I braked hard and a lady went over on the "
+        "lower deck.",
+        "I drive the 73. A car pulled out of a side road on my left at 20 mph, I stopped hard, and a man on the top "
+        "deck fell.",
+        "I was driving the coach at 40 km/h when a van cut in from the right; I braked and a woman in the aisle fell.",
+        "On the ferry shuttle at 30 km/h a car pulled out from the left and a child in the cabin got thrown about.",
+        "At 15 mph a taxi pulled out from the right in front of my bus; an old man standing in the gangway fell.",
+    ],
+    ids=["lower-deck", "top-deck", "aisle", "cabin", "gangway"],
+)
+def test_people_inside_the_egos_vehicle_are_no_road_users(text: str) -> None:
+    assert kinds(text) in (["car"], ["van"])
+
+
+# ---- a proper name that ends in a person's or animal's noun is a place -------------------------------
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "We set off from the Green Man at 20 mph and a cyclist pulled out from the left in front of me.",
+        "Passing the Black Horse at 30 mph, a cyclist pulled out from the left in front of me.",
+        "I was doing 25 mph by the Old Man Inn when a cyclist pulled out from the left in front of me.",
+        "Outside the Jolly Farmer I was at 30 mph and a cyclist came out from the left in front of me.",
+        "Heading past the Dog and Duck, I was at 30 mph, a cyclist came out from the left in front of me.",
+    ],
+    ids=["green-man", "black-horse", "old-man-inn", "jolly-farmer", "dog-and-duck"],
+)
+def test_a_proper_name_ending_in_a_person_or_animal_is_no_road_user(text: str) -> None:
+    assert kinds(text) == ["bicycle"]
+
+
+def test_a_capital_person_noun_alone_is_still_a_road_user() -> None:
+    assert kinds("I was doing 30 mph when a Man stepped out from the left in front of me.") == ["pedestrian"]
+
+
+# ---- a person said back by who they are ("the lad", "the idiot") is the road user named last ---------
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("At 20 mph a cyclist came out of a driveway on the left, and the boy rode off without stopping.", ["bicycle"]),
+        ("A scooter rider shot out from the right at 30 km/h; the teenager never even looked at me.", ["e-scooter"]),
+        ("I was at 40 mph when a van cut in from the right, and then the idiot slammed on his brakes.", ["van"]),
+        ("Doing 25 mph, an e-scooter pulled out from the left in front of me and the guy just laughed.", ["e-scooter"]),
+        ("A motorbike overtook me on the right at 60 mph, then the lunatic cut straight back in.", ["car"]),
+    ],
+    ids=["the-boy", "the-teenager", "the-idiot", "the-guy", "the-lunatic"],
+)
+def test_a_person_said_back_by_who_they_are_is_the_road_user_named_last(text: str, expected: list[str]) -> None:
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        # someone placed or described where named, or after a walker was named: someone else
+        (
+            "A cyclist came past me on the right, then the man on the crossing stepped out from the left.",
+            ["bicycle", "pedestrian"],
+        ),
+        (
+            "A woman crossed from the left at 20 mph and a cyclist came round her, and the woman waved.",
+            ["pedestrian", "bicycle"],
+        ),
+    ],
+    ids=["placed", "walker-before"],
+)
+def test_a_person_said_back_near_misses(text: str, expected: list[str]) -> None:
+    assert kinds(text) == expected

@@ -1142,7 +1142,8 @@ def _egos_vehicle(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
 
 #: The places inside a vehicle where passengers and pets ride ("in the back", "on the back seat",
 #: "in the boot", "in a carrier"): someone there travels with the ego, no road user.
-INTERIOR = frozenset({"back", "boot", "trunk", "seat", "seats", "carrier", "footwell", "cage", "crate"})
+INTERIOR = frozenset({"back", "boot", "trunk", "seat", "seats", "backseat", "carrier", "footwell", "cage", "crate",
+                      "deck", "decks", "aisle", "cabin", "gangway", "compartment"})  # fmt: skip
 
 
 def _passengers(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
@@ -2163,6 +2164,28 @@ def _told(tokens: list[str], j: int) -> bool:
     return j > 1 and tokens[j - 1] == "to" and tokens[j - 2] in _SPEAKING
 
 
+def names_ending_in_a_walker(
+    tokens: list[str], kind_at: KindAt, proper: frozenset[str], dropped: list[str]
+) -> list[str]:
+    """``tokens`` without a proper name whose last word is a person's or an animal's noun ("set off from
+    the Green Man", "outside the Red Lion", "past the Black Horse"): words the text writes only with
+    their own capital, two or more, name a pub, a street or a place, no one on foot. A capital person's
+    noun on its own ("a Man ran out", shouting) is left as it is."""
+    out: list[str] = []
+    for i, w in enumerate(tokens):
+        found = kind_at(tokens, i)
+        named = found is not None and found == ("pedestrian", 1) and w in proper
+        run = 0
+        while named and run < len(out) and out[-1 - run] in proper and kind_at(out, len(out) - 1 - run) is None:
+            run += 1
+        if run:
+            dropped.extend([*out[-run:], w])
+            del out[-run:]
+            continue
+        out.append(w)
+    return out
+
+
 def _named_vehicles(tokens: list[str], kind_at: KindAt, known: Known, proper: frozenset[str]) -> list[str]:
     """A name written with its own capital that no lexicon has, in a vehicle's place ("a silver Mokka
     pulled out", "a kid in a red Mini", "a black Focus in the next lane"), is a car: said with "car"
@@ -2762,7 +2785,7 @@ def resolve(
     names: dict[str, str] = {}
     tokens = person_with_vehicle(make_and_model(tokens, kind_at, known), kind_at)
     tokens = walker_places(vehicle_places(travel_modes(tokens, kind_at), kind_at), kind_at)
-    tokens = _named_vehicles(tokens, kind_at, known, proper)
+    tokens = _named_vehicles(names_ending_in_a_walker(tokens, kind_at, proper, dropped), kind_at, known, proper)
     tokens = _brackets(tokens, kind_at, known, names, dropped)
     tokens = _compounds(tokens, kind_at)
     tokens = absent(vehicle_modifiers(tokens, kind_at, dropped), kind_at, dropped)

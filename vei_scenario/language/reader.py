@@ -640,6 +640,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
     tokens = shared_scooters(tokens, proper, lambda w: "VERB" in _pos(w))  # ("a Lime came past": an e-scooter)
     tokens, dropped = discourse.resolve(tokens, _kind_at, _known, proper)  # (who is who; words out)
     tokens = whose_act.the_rider(tokens, _kind_at)  # ("a cyclist ... the rider brakes": the cyclist)
+    tokens = whose_act.the_person_said_back(tokens, _kind_at)  # ("a cyclist ... the boy rode off": the cyclist)
     dropped = framed + dropped
     ignored: list[str] = [w for w in dropped if w not in FUNCTION_WORDS and w.isalpha()]
     left_hand, ring = sides.drives_on_left(tokens, text), "roundabout" in tokens
