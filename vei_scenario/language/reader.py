@@ -2168,8 +2168,9 @@ def _read(text: str) -> Reading:
         raise NotUnderstood([f"{len(actors)} road users (a scenario holds at most {MAX_ACTORS} besides the ego)"], text)
     _refuse_if_nothing_to_place(text, actors, clauses, ignored, scanned)
     if any(not _idle(a) for a in actors):  # people and vehicles only mentioned (passengers, a car in a
-        idle = [a for a in actors if _idle(a) and not _waited_for_at_a_crossing(a, said)]  # story's aside) are
-        actors = [a for a in actors if all(a is not b for b in idle)]  # no road users (one waited for is)
+        walking = any(a.kind == "pedestrian" and not _idle(a) for a in actors)  # story's aside) are no road
+        idle = [a for a in actors if _idle(a) and (walking or not _waited_for_at_a_crossing(a, said))]  # users
+        actors = [a for a in actors if all(a is not b for b in idle)]  # (one waited for at a crossing is)
         ignored += [a.word or a.kind for a in idle]
     for a in actors:
         if a.kind == UNKNOWN_KIND:  # a road user the reader has no word for: its kind from what it does
@@ -2710,8 +2711,8 @@ def _waited_for_at_a_crossing(a: _Actor, said: str) -> bool:
     man") where the text names a walkers' crossing: someone crossing there, a road user even when
     nothing else is said of them and others act ("I stopped at the zebra for a mum, and a car behind
     overtook me")."""
-    if a.kind != "pedestrian" or not a.word:
-        return False
+    if a.kind != "pedestrian" or not a.word or a.word not in _lemmas(a.word).get("NOUN", (a.word,)):
+        return False  # (one someone waits for, not people in general: "the green light for pedestrians")
     waited_for = re.search(rf"\b(?:for|way to) (?:\S+ ){{0,3}}{re.escape(a.word)}\b", said)
     return waited_for is not None and any(f" {w} " in f" {said} " for w in _WALKERS_CROSSINGS)
 
