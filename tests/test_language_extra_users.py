@@ -310,40 +310,6 @@ def test_the_people_addressed_near_misses(text: str, expected: list[str]) -> Non
     assert kinds(text)[: len(expected)] == expected and set(kinds(text)) == {"pedestrian"}
 
 
-# ---- a walker someone stops or waits for at a crossing is a road user, though others act too ----------
-
-
-@pytest.mark.parametrize(
-    ("text", "expected"),
-    [
-        ("I stopped at the zebra for an old man, and a cyclist came up my inside and went across.", ["bicycle"]),
-        (
-            "We waited at the crosswalk for a lady with a stroller when the truck behind us pulled out and passed us.",
-            ["truck"],
-        ),
-        ("Pulled up at the pedestrian crossing for a schoolboy, then a moped overtook me on the right.", ["car"]),
-        ("I gave way to a woman at the zebra crossing and a van behind me swung out and overtook me.", ["van"]),
-        ("At the crossing I braked for a jogger; a taxi behind me went round me and through the crossing.", ["car"]),
-    ],
-    ids=["stopped-for", "waited-for", "pulled-up-for", "gave-way-to", "braked-for"],
-)
-def test_a_walker_waited_for_at_a_crossing_stays_when_others_act(text: str, expected: list[str]) -> None:
-    assert sorted(kinds(text)) == sorted(["pedestrian", *expected])
-
-
-@pytest.mark.parametrize(
-    ("text", "expected"),
-    [
-        # no crossing named, or the person is no one waited for: only mentioned, no road user
-        ("I stopped at the shop for my mum, and a cyclist came up my inside and went across.", ["bicycle"]),
-        ("Near the zebra a man in a hi-vis was watching when a van behind me swung out and overtook me.", ["van"]),
-    ],
-    ids=["no-crossing", "not-waited-for"],
-)
-def test_a_walker_waited_for_near_misses(text: str, expected: list[str]) -> None:
-    assert kinds(text) == expected
-
-
 # ---- people inside the ego's vehicle, by where they are in it, are no road users -----------------------
 
 

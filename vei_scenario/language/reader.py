@@ -2168,9 +2168,8 @@ def _read(text: str) -> Reading:
         raise NotUnderstood([f"{len(actors)} road users (a scenario holds at most {MAX_ACTORS} besides the ego)"], text)
     _refuse_if_nothing_to_place(text, actors, clauses, ignored, scanned)
     if any(not _idle(a) for a in actors):  # people and vehicles only mentioned (passengers, a car in a
-        walking = any(a.kind == "pedestrian" and not _idle(a) for a in actors)  # story's aside) are no road
-        idle = [a for a in actors if _idle(a) and (walking or not _waited_for_at_a_crossing(a, said))]  # users
-        actors = [a for a in actors if all(a is not b for b in idle)]  # (one waited for at a crossing is)
+        idle = [a for a in actors if _idle(a)]  # story's aside) are no road users of the scenario
+        actors = [a for a in actors if not _idle(a)]
         ignored += [a.word or a.kind for a in idle]
     for a in actors:
         if a.kind == UNKNOWN_KIND:  # a road user the reader has no word for: its kind from what it does
@@ -2703,17 +2702,7 @@ def _waits_at_a_crossing(a: _Actor, spec: ActorSpec, said: str) -> bool:
         return False
     if spec.relation not in (None, "ahead", "roadside_left", "roadside_right") or a.said - {"ahead"}:
         return False
-    return _waited_for_at_a_crossing(a, said)
-
-
-def _waited_for_at_a_crossing(a: _Actor, said: str) -> bool:
-    """Whether walker ``a`` is one someone stops, waits or gives way for ("for a mum", "way to an old
-    man") where the text names a walkers' crossing: someone crossing there, a road user even when
-    nothing else is said of them and others act ("I stopped at the zebra for a mum, and a car behind
-    overtook me")."""
-    if a.kind != "pedestrian" or not a.word or a.word not in _lemmas(a.word).get("NOUN", (a.word,)):
-        return False  # (one someone waits for, not people in general: "the green light for pedestrians")
-    waited_for = re.search(rf"\b(?:for|way to) (?:\S+ ){{0,3}}{re.escape(a.word)}\b", said)
+    waited_for = re.search(rf"\b(?:for|way to) (?:\S+ ){{0,3}}{re.escape(a.word)}\b", said) if a.word else None
     return waited_for is not None and any(f" {w} " in f" {said} " for w in _WALKERS_CROSSINGS)
 
 
