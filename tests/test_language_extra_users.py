@@ -201,3 +201,189 @@ def test_the_writers_vehicle_shaken_near_misses(text: str, expected: list[str] |
 )
 def test_a_person_in_apposition_at_the_very_end_is_read_without_error(text: str) -> None:
     assert kinds(text) == ["e-scooter"]
+
+
+# ---- a person named by a relative clause of riding or driving is the vehicle -------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("Do you know the lad who rides the red e-scooter? He shot out in front of my car at 30 mph.", ["e-scooter"]),
+        (
+            "I was doing 40 km/h when a woman that was riding a bicycle pulled out from the left in front of me.",
+            ["bicycle"],
+        ),
+        (
+            "A girl who was on an electric scooter came off the footpath on the left and crossed in front of me.",
+            ["e-scooter"],
+        ),
+        ("At 25 mph a bloke who drives a white van for the council pulled out of a side road on my left.", ["van"]),
+        (
+            "The boy that always rides his bike down our street came out of a driveway on the right, I was at 20 mph.",
+            ["bicycle"],
+        ),
+    ],
+    ids=["who-rides", "that-was-riding", "who-was-on", "who-drives", "that-always-rides"],
+)
+def test_a_person_who_rides_a_vehicle_is_that_vehicle(text: str, expected: list[str]) -> None:
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        # no vehicle after the verb: the person's clause says how they move, and they stay a person
+        ("A woman who was walking home crossed in front of me from the right at 30 km/h.", ["pedestrian"]),
+        ("A kid who was on the pavement stepped out in front of me from the left, I was at 20 mph.", ["pedestrian"]),
+    ],
+    ids=["walking", "on-the-pavement"],
+)
+def test_a_person_who_rides_near_misses(text: str, expected: list[str]) -> None:
+    assert kinds(text) == expected
+
+
+# ---- a road user named again in apposition, then a participle or place of its own, is one --------------
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("There was a woman on a scooter, an e-scooter, riding toward me in my lane.", ["e-scooter"]),
+        ("Then a bike, a racing bike, coming the wrong way in my lane at me, I was doing 25 mph.", ["bicycle"]),
+        ("I was at 40 mph and there's a car, a silver hatchback, coming straight at me in my lane.", ["car"]),
+        ("Doing 30 km/h, and a lorry, a big tipper, turning left across me at the junction.", ["truck"]),
+        ("At 50 km/h a scooter, an e-scooter, riding the wrong way toward me.", ["e-scooter"]),
+    ],
+    ids=["escooter-riding", "bike-coming", "car-coming", "lorry-turning", "scooter-riding"],
+)
+def test_a_road_user_named_again_in_apposition_then_a_participle_is_one(text: str, expected: list[str]) -> None:
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        # a list: "and" goes on with another road user
+        ("I was at 30 mph, a car, a van and a bus coming toward me in the other lane.", ["car", "truck", "van"]),
+        # a second one added by a word before its article ("plus", "then")
+        ("Doing 20 mph, a bike, plus a bike, coming the wrong way toward me.", ["bicycle", "bicycle"]),
+    ],
+    ids=["a-list", "plus-another"],
+)
+def test_a_road_user_in_apposition_near_misses(text: str, expected: list[str]) -> None:
+    assert sorted(kinds(text)) == expected
+
+
+# ---- the people a writer or speaker addresses are no road users ---------------------------------------
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Morning guys! So I'm doing 30 mph and a cyclist pulls out from the left in front of me.",
+        "And on the right, ladies and gentlemen, the old mill - sorry folks - a cyclist just cut across in front "
+        "of the bus from the left, I was at 20 mph.",
+        "Hi everyone, hi folks. At 40 km/h a cyclist swerved out from the left in front of me. Scary, you guys.",
+        "Evening all. Thanks guys for the views. Doing 25 mph when a cyclist came out of a side road on my left.",
+        "Listen people, I was at 20 mph and a cyclist pulled out from the left in front of me.",
+    ],
+    ids=["morning-guys", "ladies-and-gentlemen", "you-guys", "thanks-guys", "listen-people"],
+)
+def test_the_people_a_speaker_addresses_are_no_road_users(text: str) -> None:
+    assert kinds(text) == ["bicycle"]
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        # people who do something, or with a determiner or count, stay road users
+        ("At 20 mph, kids ran out from the left in front of me.", ["pedestrian"]),
+        (
+            "I was doing 20 mph. Two pedestrians, a man and a woman, crossed in front of me from the right.",
+            ["pedestrian", "pedestrian"],
+        ),
+    ],
+    ids=["kids-ran", "counted"],
+)
+def test_the_people_addressed_near_misses(text: str, expected: list[str]) -> None:
+    assert kinds(text)[: len(expected)] == expected and set(kinds(text)) == {"pedestrian"}
+
+
+# ---- people inside the ego's vehicle, by where they are in it, are no road users -----------------------
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Doing 25 mph in the bus when a car pulled out from the left; I braked hard and a lady went over on the "
+        "lower deck.",
+        "I drive the 73. A car pulled out of a side road on my left at 20 mph, I stopped hard, and a man on the top "
+        "deck fell.",
+        "I was driving the coach at 40 km/h when a van cut in from the right; I braked and a woman in the aisle fell.",
+        "On the ferry shuttle at 30 km/h a car pulled out from the left and a child in the cabin got thrown about.",
+        "At 15 mph a taxi pulled out from the right in front of my bus; an old man standing in the gangway fell.",
+    ],
+    ids=["lower-deck", "top-deck", "aisle", "cabin", "gangway"],
+)
+def test_people_inside_the_egos_vehicle_are_no_road_users(text: str) -> None:
+    assert kinds(text) in (["car"], ["van"])
+
+
+# ---- a proper name that ends in a person's or animal's noun is a place -------------------------------
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "We set off from the Green Man at 20 mph and a cyclist pulled out from the left in front of me.",
+        "Passing the Black Horse at 30 mph, a cyclist pulled out from the left in front of me.",
+        "I was doing 25 mph by the Old Man Inn when a cyclist pulled out from the left in front of me.",
+        "Outside the Jolly Farmer I was at 30 mph and a cyclist came out from the left in front of me.",
+        "Heading past the Dog and Duck, I was at 30 mph, a cyclist came out from the left in front of me.",
+    ],
+    ids=["green-man", "black-horse", "old-man-inn", "jolly-farmer", "dog-and-duck"],
+)
+def test_a_proper_name_ending_in_a_person_or_animal_is_no_road_user(text: str) -> None:
+    assert kinds(text) == ["bicycle"]
+
+
+def test_a_capital_person_noun_alone_is_still_a_road_user() -> None:
+    assert kinds("I was doing 30 mph when a Man stepped out from the left in front of me.") == ["pedestrian"]
+
+
+# ---- a person said back by who they are ("the lad", "the idiot") is the road user named last ---------
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("At 20 mph a cyclist came out of a driveway on the left, and the boy rode off without stopping.", ["bicycle"]),
+        ("A scooter rider shot out from the right at 30 km/h; the teenager never even looked at me.", ["e-scooter"]),
+        ("I was at 40 mph when a van cut in from the right, and then the idiot slammed on his brakes.", ["van"]),
+        ("Doing 25 mph, an e-scooter pulled out from the left in front of me and the guy just laughed.", ["e-scooter"]),
+        ("A motorbike overtook me on the right at 60 mph, then the lunatic cut straight back in.", ["car"]),
+    ],
+    ids=["the-boy", "the-teenager", "the-idiot", "the-guy", "the-lunatic"],
+)
+def test_a_person_said_back_by_who_they_are_is_the_road_user_named_last(text: str, expected: list[str]) -> None:
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        # someone placed or described where named, or after a walker was named: someone else
+        (
+            "A cyclist came past me on the right, then the man on the crossing stepped out from the left.",
+            ["bicycle", "pedestrian"],
+        ),
+        (
+            "A woman crossed from the left at 20 mph and a cyclist came round her, and the woman waved.",
+            ["pedestrian", "bicycle"],
+        ),
+    ],
+    ids=["placed", "walker-before"],
+)
+def test_a_person_said_back_near_misses(text: str, expected: list[str]) -> None:
+    assert kinds(text) == expected

@@ -438,6 +438,100 @@ def _riders(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
     return out
 
 
+#: Words between a relative pronoun and its verb of riding: forms of "be" and "have", and adverbs of
+#: habit ("who was riding", "that has been driving", "who always rides").
+_RELATIVE_FILLERS = BE | frozenset({"has", "have", "had", "always", "usually", "often", "normally", "just", "still"})
+
+
+def _rides_at(tokens: list[str], k: int) -> bool:
+    """Whether ``tokens[k]`` is a form of a verb of riding ("rides", "rode", "driving", "drove") or
+    "on", "aboard" (being on a vehicle)."""
+    word = tokens[k]
+    return word in ("on", "aboard") or (word.isalpha() and bool(set(lemmas(word).get("VERB", ())) & RIDE_VERBS))
+
+
+def _vehicle_soon(tokens: list[str], k: int, kind_at: KindAt) -> bool:
+    """Whether a vehicle's noun starts within four words after ``k``, before any mark."""
+    for h in range(k, min(k + 4, len(tokens))):
+        if tokens[h] in PUNCT:
+            return False
+        found = kind_at(tokens, h)
+        if found is not None:
+            return found[0] not in ("pedestrian", "ego")
+    return False
+
+
+def relative_riders(tokens: list[str], kind_at: KindAt) -> list[str]:
+    """ "the boy who rides the blue scooter", "a woman that was driving a van", "the lad who was on the
+    e-scooter": a relative clause of riding says the same as the participle ("the boy riding the blue
+    scooter"), so the person and the vehicle are one road user, read by :func:`_riders`. Only "who" or
+    "that" right after a word, then forms of "be"/"have" or adverbs of habit, then the verb; what
+    follows the verb is left to :func:`_riders` (a vehicle must follow: "a man who was driving behind
+    me" names none, and stays as it is)."""
+    out: list[str] = []
+    i = 0
+    while i < len(tokens):
+        if tokens[i] in ("who", "that") and out and out[-1].isalpha() and out[-1] not in PUNCT:
+            k = i + 1
+            while k < len(tokens) and k < i + 4 and tokens[k] in _RELATIVE_FILLERS:
+                k += 1
+            if k < len(tokens) and _rides_at(tokens, k) and _vehicle_soon(tokens, k + 1, kind_at):
+                out.append("on" if tokens[k] in ("on", "aboard") else "riding")
+                i = k + 1
+                continue
+        out.append(tokens[i])
+        i += 1
+    return out
+
+
+#: Words right before the people one speaks to ("morning guys", "sorry folks", "thanks everyone", "you
+#: guys"): greetings, apologies, thanks and calls for attention, a closed class.
+_ADDRESSING = frozenset({"hi", "hello", "hey", "hiya", "morning", "afternoon", "evening", "sorry", "thanks",
+                         "cheers", "okay", "ok", "alright", "look", "listen", "oh", "you", "dear"})  # fmt: skip
+
+
+def _plural_noun(word: str) -> bool:
+    """Whether ``word`` is a noun's plural ("guys", "gentlemen"), not its stem."""
+    nouns = lemmas(word).get("NOUN", ()) if word.isalpha() else ()
+    return bool(nouns) and word not in nouns
+
+
+def _in_a_list(tokens: list[str], i: int, end: int, kind_at: KindAt) -> bool:
+    """Whether the phrase ``tokens[i:end]`` is an item of a list of road users set off by commas ("a car,
+    cyclists, a bus"): a road user's noun right before the comma before it or right after the one after."""
+    before = i >= 2 and tokens[i - 1] == "," and kind_at(tokens, i - 2) is not None
+    after = end + 1 < len(tokens) and tokens[end] == "," and kind_at(tokens, end + 1) is not None
+    return before or after
+
+
+def vocatives(tokens: list[str], kind_at: KindAt, dropped: list[str]) -> list[str]:
+    """``tokens`` without the people a writer or speaker addresses ("Morning guys!", "sorry folks,",
+    "..., ladies and gentlemen, ...", "five feet, you guys."): a bare plural of people (and one joined
+    to it by "and") set off by marks, after a mark, the start, or a word of greeting, thanks or apology,
+    is the audience, no road user. Not an item of a list of road users ("a car, cyclists, a bus"), nor
+    people with a determiner, a count, or a verb right after them ("kids ran out")."""
+    out: list[str] = []
+    i = 0
+    while i < len(tokens):
+        found = kind_at(tokens, i)
+        if found is None or found[0] != "pedestrian" or not _plural_noun(tokens[i + found[1] - 1]):
+            out.append(tokens[i])
+            i += 1
+            continue
+        end = i + found[1]
+        if tokens[end : end + 1] == ["and"] and end + 1 < len(tokens) and _plural_noun(tokens[end + 1]):
+            end += 2  # ("ladies and gentlemen")
+        before = tokens[i - 1] if i else "."
+        after = tokens[end] if end < len(tokens) else "."
+        if before in PUNCT | _ADDRESSING and after in PUNCT and not _in_a_list(tokens, i, end, kind_at):
+            dropped.extend(tokens[i:end])
+            i = end
+            continue
+        out.append(tokens[i])
+        i += 1
+    return out
+
+
 #: Where someone is, said right after their noun ("the guy in front", "a lad next to me").
 _PLACE_PHRASES = (
     ("in", "front", "of", "me"), ("in", "front", "of", "us"), ("next", "to", "me"), ("next", "to", "us"),
@@ -1076,7 +1170,8 @@ def _egos_vehicle(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
 
 #: The places inside a vehicle where passengers and pets ride ("in the back", "on the back seat",
 #: "in the boot", "in a carrier"): someone there travels with the ego, no road user.
-INTERIOR = frozenset({"back", "boot", "trunk", "seat", "seats", "carrier", "footwell", "cage", "crate"})
+INTERIOR = frozenset({"back", "boot", "trunk", "seat", "seats", "backseat", "carrier", "footwell", "cage", "crate",
+                      "deck", "decks", "aisle", "cabin", "gangway", "compartment"})  # fmt: skip
 
 
 def _passengers(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
@@ -2097,6 +2192,28 @@ def _told(tokens: list[str], j: int) -> bool:
     return j > 1 and tokens[j - 1] == "to" and tokens[j - 2] in _SPEAKING
 
 
+def names_ending_in_a_walker(
+    tokens: list[str], kind_at: KindAt, proper: frozenset[str], dropped: list[str]
+) -> list[str]:
+    """``tokens`` without a proper name whose last word is a person's or an animal's noun ("set off from
+    the Green Man", "outside the Red Lion", "past the Black Horse"): words the text writes only with
+    their own capital, two or more, name a pub, a street or a place, no one on foot. A capital person's
+    noun on its own ("a Man ran out", shouting) is left as it is."""
+    out: list[str] = []
+    for i, w in enumerate(tokens):
+        found = kind_at(tokens, i)
+        named = found is not None and found == ("pedestrian", 1) and w in proper
+        run = 0
+        while named and run < len(out) and out[-1 - run] in proper and kind_at(out, len(out) - 1 - run) is None:
+            run += 1
+        if run:
+            dropped.extend([*out[-run:], w])
+            del out[-run:]
+            continue
+        out.append(w)
+    return out
+
+
 def _named_vehicles(tokens: list[str], kind_at: KindAt, known: Known, proper: frozenset[str]) -> list[str]:
     """A name written with its own capital that no lexicon has, in a vehicle's place ("a silver Mokka
     pulled out", "a kid in a red Mini", "a black Focus in the next lane"), is a car: said with "car"
@@ -2696,7 +2813,7 @@ def resolve(
     names: dict[str, str] = {}
     tokens = person_with_vehicle(make_and_model(tokens, kind_at, known), kind_at)
     tokens = walker_places(vehicle_places(travel_modes(tokens, kind_at), kind_at), kind_at)
-    tokens = _named_vehicles(tokens, kind_at, known, proper)
+    tokens = _named_vehicles(names_ending_in_a_walker(tokens, kind_at, proper, dropped), kind_at, known, proper)
     tokens = _brackets(tokens, kind_at, known, names, dropped)
     tokens = _compounds(tokens, kind_at)
     tokens = absent(vehicle_modifiers(tokens, kind_at, dropped), kind_at, dropped)
@@ -2707,10 +2824,12 @@ def resolve(
     tokens = _letter_labels(tokens, kind_at, known, dropped)
     tokens = _field_names(tokens, kind_at, known)
     tokens = _heading(tokens, kind_at, known, dropped)  # (after the labels: "Actor 1: e-scooter")
+    tokens = vocatives(tokens, kind_at, dropped)
     tokens = _generic_plurals(tokens, kind_at, known, dropped)
     tokens = _followed_by(tokens, kind_at, known, dropped)
     tokens = shared_vehicles(tokens, kind_at, known)
-    tokens = _riders_own(_riders(_placed_riders(tokens, kind_at), kind_at, known), kind_at, known)
+    tokens = _placed_riders(relative_riders(tokens, kind_at), kind_at)
+    tokens = _riders_own(_riders(tokens, kind_at, known), kind_at, known)
     tokens = _pushed(tokens, kind_at, known, dropped)
     tokens = _drivers(tokens, kind_at, known)
     tokens = _driver_apposition(tokens, kind_at, dropped)

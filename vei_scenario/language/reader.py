@@ -445,17 +445,24 @@ def _does_next(tokens: list[str], i: int) -> bool:
     return key is not None and TABLE[key][0] in ("behaviour", "ego_verb", "turn")
 
 
-def _named_again_then_acts(mentions, k: int) -> bool:
+def _named_again_then_acts(mentions, k: int, tokens: list[str]) -> bool:
     """Whether mention ``k``, between commas right after a road user named with "a", is that road user
     named again because a verb of what it does follows it ("a van, a white Transit, pulled out", "a
-    Micra - a MICRA - undertakes me"): a list goes on with another name or "and"."""
+    Micra - a MICRA - undertakes me"), or a participle or place of its own does ("a scooter, an electric
+    scooter, riding toward me", "a car, a silver hatchback, coming at me"), said with an article right
+    after the comma: a list goes on with another name, "and" or "plus"."""
     return (
         k >= 2
         and mentions[k - 2].slot == "actor"
         and mentions[k - 2].det in ("a", "an")
+        and tokens[mentions[k - 1].start + 1 : mentions[k - 1].start + 2] in (["a"], ["an"])
         and k + 2 < len(mentions)
-        and mentions[k + 2].slot == "behaviour"
+        and mentions[k + 2].slot in _WHAT_ONE_DOES
     )
+
+
+#: Mentions that say what a road user does or where it goes (a verb, a turn, a way, a place).
+_WHAT_ONE_DOES = frozenset({"behaviour", "turn", "wrong_way", "relation", "ego_verb"})
 
 
 def _definite_before(mentions, k: int) -> bool:
@@ -650,6 +657,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
     tokens = shared_scooters(tokens, proper, lambda w: "VERB" in _pos(w))  # ("a Lime came past": an e-scooter)
     tokens, dropped = discourse.resolve(tokens, _kind_at, _known, proper)  # (who is who; words out)
     tokens = whose_act.the_rider(tokens, _kind_at)  # ("a cyclist ... the rider brakes": the cyclist)
+    tokens = whose_act.the_person_said_back(tokens, _kind_at)  # ("a cyclist ... the boy rode off": the cyclist)
     dropped = framed + dropped
     ignored: list[str] = [w for w in dropped if w not in FUNCTION_WORDS and w.isalpha()]
     left_hand, ring = sides.drives_on_left(tokens, text), "roundabout" in tokens
@@ -1760,7 +1768,7 @@ def _read(text: str) -> Reading:
                         last is not None
                         and (
                             m.det in ("a", "an")
-                            or (not m.det and (_generic_vehicle(last) or _named_again_then_acts(mentions, k)))
+                            or (not m.det and (_generic_vehicle(last) or _named_again_then_acts(mentions, k, scanned)))
                         )
                         and k > 0
                         and mentions[k - 1].slot == "punct"
@@ -1771,7 +1779,7 @@ def _read(text: str) -> Reading:
                         and (
                             _definite_before(mentions, k)
                             or _generic_vehicle(last)
-                            or _named_again_then_acts(mentions, k)
+                            or _named_again_then_acts(mentions, k, scanned)
                         )
                         and (last.kind == m.value or (last.kind in VEHICLES and m.value in VEHICLES))
                     ):  # "the car ahead, a taxi, stops": the same one, said again (its kind the more exact)

@@ -408,6 +408,48 @@ def the_rider(tokens: list[str], kind_at: Callable[[list[str], int], tuple[str, 
     return out
 
 
+#: Nouns that say only who a person is (age, sex, a term of abuse), not what they do on the road: said
+#: back with "the" where no one on foot was named, they name whoever rides or drives the road user named
+#: last ("a lad on an e-scooter ... the lad", "a cyclist ... the boy rode off", "a van ... the idiot").
+WHO_SOMEONE_IS = frozenset({"kid", "child", "boy", "girl", "lad", "lass", "man", "woman", "guy", "bloke", "fella",
+                            "fellow", "chap", "teenager", "teen", "youth", "youngster", "lady", "gentleman", "dude",
+                            "gent", "idiot", "lunatic", "maniac", "moron", "nutter", "muppet", "clown",
+                            "fool"})  # fmt: skip
+#: Words after such a noun that open a phrase placing or describing the person, who is then someone
+#: else ("the man on the crossing", "the woman with the pram", "the lad who ...").
+_DESCRIBED_BY = frozenset({"on", "in", "at", "with", "from", "by", "near", "outside", "beside", "behind", "who",
+                           "that", "walking", "pushing", "crossing", "standing", "waiting", "'s"})  # fmt: skip
+
+
+def the_person_said_back(tokens: list[str], kind_at: Callable[[list[str], int], tuple[str, int] | None]) -> list[str]:
+    """``tokens`` with "the lad", "the kid", "the idiot" (:data:`WHO_SOMEONE_IS`, after "the", "this" or
+    "that") said as the word of the road user named last before it, where no one on foot was named
+    before and the person is not placed or described there ("the man on the crossing" is someone):
+    the person at its handlebars or wheel, no second road user."""
+    out = list(tokens)
+    last: str | None = None
+    walker = False
+    i = 0
+    while i < len(out):
+        tok = out[i]
+        found = kind_at(out, i)
+        if tok in WHO_SOMEONE_IS and i and out[i - 1] in _BACK and last is not None and not walker:
+            nxt = out[i + 1] if i + 1 < len(out) else ""
+            if nxt not in _DESCRIBED_BY:
+                out[i] = last
+                i += 1
+                continue
+        if found is not None:
+            if found[0] == "pedestrian":
+                walker = True
+            elif found[0] != "ego" and found[1] == 1:
+                last = out[i]
+            i += found[1]
+            continue
+        i += 1
+    return out
+
+
 def unnamed_rider(tokens: list[str], kind_at: Callable[[list[str], int], tuple[str, int] | None]) -> list[str]:
     """``tokens`` with a bare "rider" after a verb that no ridden road user named before stands for, and whose
     vehicle the text never says ("car clipped rider at roundabout", "Driver states rider was coming
