@@ -111,6 +111,19 @@ def _vehicle_phrases(tokens: list[str], kind_at: KindAt, known: Known) -> list:
     return [p for p in _road_users(tokens, kind_at, known) if p.kind in VEHICLES]
 
 
+#: Words that say the vehicle is only scenery or set beside someone else.
+PARKED = frozenset({"parked", "stationary", "abandoned", "stopped", "stalled", "broken-down", "double-parked"})
+
+
+def _parked(tokens: list[str], p) -> bool:
+    """A word of standing still by the mention ("a parked van", "the bus, stationary,", "the cab was
+    stopped"), not its verb of reacting ("the taxi stopped just in time", "the van driver stopped")."""
+    near = tokens[max(p.start - 2, 0) : p.end + 2]
+    if tokens[p.end : p.end + 1] == ["stopped"]:
+        near = tokens[max(p.start - 2, 0) : p.end] + tokens[p.end + 1 : p.end + 2]
+    return bool(PARKED & set(near))
+
+
 def _placed(tokens: list[str], p) -> bool:
     after = tokens[p.end : p.end + 2]
     before = tokens[p.start - 1] if p.start else ""
@@ -1351,7 +1364,6 @@ def _owned_vehicle(tokens: list[str], kind_at: KindAt, known: Known, dropped: li
     users = _road_users(tokens, kind_at, known)
     if any(p.kind == "ego" for p in users) or len(users) < 2:
         return tokens
-    from vei_scenario.language.protagonist import _parked
 
     for p in users:
         standing = p.kind not in VEHICLES or _placed(tokens, p) or _parked(tokens, p)

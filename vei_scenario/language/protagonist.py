@@ -42,6 +42,7 @@ from vei_scenario.language.ego import (
     VEHICLES,
     _compound,
     _lemma_in,
+    _parked,
     _placed,
     _road_users,
     _sentence,
@@ -61,8 +62,6 @@ BEFORE_VERB = frozenset(
 OWN_SPACE = frozenset({"path", "front", "rear", "back", "side", "nose", "way", "lane"})
 #: Prepositions that place another road user by this one ("came towards the car").
 TOWARDS = frozenset({"towards", "toward"})
-#: Words that say the vehicle is only scenery or set beside someone else.
-PARKED = frozenset({"parked", "stationary", "abandoned", "stopped", "stalled", "broken-down", "double-parked"})
 
 
 @dataclass
@@ -214,15 +213,6 @@ def _evidence(tokens: list[str], users, r: _Referent, referents: list[_Referent]
             s -= 1
         r.reacts |= _reacts(tokens, p, others, first=not any(s <= q.start < p.start for q in users))
         r.placed_by |= not of and _placed_by(tokens, p)
-
-
-def _parked(tokens: list[str], p) -> bool:
-    """A word of standing still by the mention ("a parked van", "the bus, stationary,", "the cab was
-    stopped"), not its verb of reacting ("the taxi stopped just in time", "the van driver stopped")."""
-    near = tokens[max(p.start - 2, 0) : p.end + 2]
-    if tokens[p.end : p.end + 1] == ["stopped"]:
-        near = tokens[max(p.start - 2, 0) : p.end] + tokens[p.end + 1 : p.end + 2]
-    return bool(PARKED & set(near))
 
 
 def _narrator_only_watches(tokens: list[str]) -> bool:
