@@ -330,14 +330,10 @@ def test_a_rider_cutting_across_at_a_junction_still_crosses(text):
 
 @pytest.mark.parametrize(
     "text",
-    [
-        "a scooter cut right across the front of my cab",
-        "a cyclist shot right across in front of my car",
-        "a motorbike flew right by me and cut in",
-        "the kid ran right across the road",
-    ],
+    ["a motorbike flew right by me and cut in", "a van went right by my mirror", "she squeezed right by us"],
 )
-def test_right_stressing_across_or_by_is_no_side(text):
+def test_right_stressing_by_is_no_side(text):
+    """("right across" stays a side: "cut right across my lane to turn into a side street" turns right.)"""
     tokens = text.split()
     assert not_a_side(tokens, tokens.index("right"))
 

@@ -1383,8 +1383,7 @@ def place_after_degree(tokens: list[str], i: int, key: tuple[str, ...], place_at
 #: at" are read with the verb before them, by the reader's own list.)
 _STRESSED = frozenset(
     {"out", "up", "into", "onto", "through", "over", "past", "under", "off", "down", "along",
-     "round", "around", "beside", "alongside", "away", "back", "behind", "toward", "towards", "in", "on", "across",
-     "by"}
+     "round", "around", "beside", "alongside", "away", "back", "behind", "toward", "towards", "in", "on", "by"}
 )  # fmt: skip
 #: Verbs whose "left"/"right" is the way they head ("turned right into", "swerved right onto").
 _HEADING = frozenset({"turn", "veer", "swerve", "steer", "swing", "bear", "head", "move", "merge", "drift", "keep"})
