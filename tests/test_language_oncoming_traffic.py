@@ -98,3 +98,23 @@ def test_an_oncoming_vehicle_into_the_ego_lane_after_a_tailgater_comes_the_wrong
 
     names = [[b[0] for b in a.behaviours] for a in read(text).actors]
     assert any("wrong_way" in n for n in names), names
+
+
+# near misses: "oncoming" said of the traffic after the second verb describes that traffic, not where the
+# road user went ("cut in ... to avoid oncoming traffic"): the overtaker keeps its overtake
+OVERTAKER_AVOIDS_ONCOMING_TRAFFIC = [
+    "A hatchback came up behind, overtook me and then cut in sharply in front of me to avoid oncoming traffic.",
+    "Cars often pass the bus and then dive back in ahead of it because of oncoming cars.",
+    "The van overtook us and swung back in right in front of us to dodge oncoming vehicles.",
+    "A taxi overtook us and then cut in ahead of us to avoid the oncoming lorries.",
+    "Some lads in a Corsa overtook and pulled in tight ahead of me, what with all the oncoming cars.",
+]
+
+
+@pytest.mark.parametrize("text", OVERTAKER_AVOIDS_ONCOMING_TRAFFIC)
+def test_oncoming_said_of_the_traffic_is_not_where_the_overtaker_went(text):
+    from vei_scenario.language.reader import read
+
+    first = read(text).actors[0]
+    names = [b[0] for b in first.behaviours]
+    assert first.relation != "oncoming" and "wrong_way" not in names, (first.relation, names)

@@ -548,6 +548,13 @@ def _kind_at(tokens: list[str], i: int) -> tuple[str, int] | None:
     return (str(TABLE[key][1]), len(key)) if key is not None and TABLE[key][0] == "actor" else None
 
 
+def _said_of_others(tokens: list[str], i: int) -> bool:
+    """Whether the words at ``i`` name other road users or traffic, so that a place word right before
+    them is their attribute ("oncoming traffic", "oncoming cars", "the oncoming lorry"), not a place of
+    the road user the clause is about."""
+    return i < len(tokens) and (tokens[i] in ego_speed.TRAFFIC or _kind_at(tokens, i) is not None)
+
+
 def _known(tokens: list[str], i: int) -> bool:
     """Whether the reader has a phrase starting at ``i`` (for :mod:`discourse`)."""
     return _best(tokens, i) is not None
@@ -2083,6 +2090,7 @@ def _read(text: str) -> Reading:
                     and m.slot == "relation"
                     and isinstance(subject, _Actor)
                     and any(x is subject for x, _ in added)
+                    and not _said_of_others(scanned, m.end)  # (not "to avoid oncoming traffic": the traffic's)
                 ):  # "..., then overtook and cut in in front of me because a van ...": where it went, its own
                     who = subject
                 change = mentions[k - 2] if prev is not None and prev.slot == "accel" and k >= 2 else prev
