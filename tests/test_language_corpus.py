@@ -40,14 +40,14 @@ def test_at_least_nine_in_ten_descriptions_are_understood_and_faithful(corpus):
 #: insurance and radio narratives, long stories, lists, learners' English, typos). The figures first
 #: measured on each, before the reader was changed for it, are in benchmarks/language_corpus.py (FIRST;
 #: ``--all`` prints them beside today's); G, J, K, N, O, P, Q, T, U, V, W, X, Y and Z3
-#: to Z8 were kept sealed until the reader's last change and measured after it. The floors are the figures
+#: to Z10 were kept sealed until the reader's last change and measured after it. The floors are the figures
 #: measured last:
 #: (understood, faithful).
 INDEPENDENT = {
-    ROOT / "tests" / "data" / "language_independent_a.json": (59, 58),
+    ROOT / "tests" / "data" / "language_independent_a.json": (59, 59),
     ROOT / "tests" / "data" / "language_independent_b.json": (63, 62),
-    ROOT / "tests" / "data" / "language_independent_c.json": (65, 60),
-    ROOT / "tests" / "data" / "language_independent_d.json": (56, 52),
+    ROOT / "tests" / "data" / "language_independent_c.json": (65, 61),
+    ROOT / "tests" / "data" / "language_independent_d.json": (56, 55),
     ROOT / "tests" / "data" / "language_independent_e.json": (70, 67),
     ROOT / "tests" / "data" / "language_independent_f.json": (60, 56),
     ROOT / "tests" / "data" / "language_independent_g.json": (60, 56),
@@ -55,26 +55,28 @@ INDEPENDENT = {
     ROOT / "tests" / "data" / "language_independent_i.json": (50, 44),
     ROOT / "tests" / "data" / "language_independent_j.json": (45, 44),
     ROOT / "tests" / "data" / "language_independent_k.json": (45, 41),
-    ROOT / "tests" / "data" / "language_independent_l.json": (50, 45),
-    ROOT / "tests" / "data" / "language_independent_m.json": (50, 41),
-    ROOT / "tests" / "data" / "language_independent_n.json": (45, 31),
+    ROOT / "tests" / "data" / "language_independent_l.json": (50, 46),
+    ROOT / "tests" / "data" / "language_independent_m.json": (50, 42),
+    ROOT / "tests" / "data" / "language_independent_n.json": (45, 32),
     ROOT / "tests" / "data" / "language_independent_o.json": (45, 26),
     ROOT / "tests" / "data" / "language_independent_p.json": (45, 34),
     ROOT / "tests" / "data" / "language_independent_q.json": (45, 36),
-    ROOT / "tests" / "data" / "language_independent_r.json": (50, 43),
+    ROOT / "tests" / "data" / "language_independent_r.json": (50, 44),
     ROOT / "tests" / "data" / "language_independent_s.json": (50, 39),
-    ROOT / "tests" / "data" / "language_independent_t.json": (45, 33),
-    ROOT / "tests" / "data" / "language_independent_u.json": (45, 36),
-    ROOT / "tests" / "data" / "language_independent_v.json": (50, 30),
+    ROOT / "tests" / "data" / "language_independent_t.json": (45, 34),
+    ROOT / "tests" / "data" / "language_independent_u.json": (45, 37),
+    ROOT / "tests" / "data" / "language_independent_v.json": (50, 36),
     ROOT / "tests" / "data" / "language_independent_w.json": (50, 28),
     ROOT / "tests" / "data" / "language_independent_x.json": (50, 36),
     ROOT / "tests" / "data" / "language_independent_y.json": (50, 34),
-    ROOT / "tests" / "data" / "language_independent_z3.json": (50, 9),
+    ROOT / "tests" / "data" / "language_independent_z3.json": (50, 10),
     ROOT / "tests" / "data" / "language_independent_z4.json": (50, 10),
-    ROOT / "tests" / "data" / "language_independent_z5.json": (50, 10),
-    ROOT / "tests" / "data" / "language_independent_z6.json": (50, 12),
+    ROOT / "tests" / "data" / "language_independent_z5.json": (50, 14),
+    ROOT / "tests" / "data" / "language_independent_z6.json": (50, 18),
     ROOT / "tests" / "data" / "language_independent_z7.json": (50, 10),
-    ROOT / "tests" / "data" / "language_independent_z8.json": (50, 7),
+    ROOT / "tests" / "data" / "language_independent_z8.json": (50, 8),
+    ROOT / "tests" / "data" / "language_independent_z9.json": (50, 23),
+    ROOT / "tests" / "data" / "language_independent_z10.json": (50, 8),
 }
 
 
