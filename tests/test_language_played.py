@@ -264,3 +264,32 @@ def test_a_road_user_joining_a_roundabout_in_front_of_the_ego_sets_off_and_meets
         assert layers["environment"]["map"]["kind"] == "roundabout"
         assert adv["behaviour"]["behaviour"] == "turn_into"
         assert played_problems(play_layers(layers, tmp_path), layers) == [], seed
+
+
+STANDING_AT_THE_LIGHTS = [
+    ("I was stopped at the lights at a crossroads when a car from the left ran the red right in front of me.", "left"),
+    ("Waiting at a red light at the junction, first in the queue, a van came through from the right on red.", "right"),
+    ("Ego stationary at the stop line of a signalised crossroad; a truck from the left runs the red light.", "left"),
+    ("We were sat at the lights at the crossroads and a taxi from the right jumped the red.", "right"),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("text", "side"), STANDING_AT_THE_LIGHTS)
+def test_a_red_light_runner_crosses_in_front_of_an_ego_standing_at_its_line(text, side, tmp_path):
+    """An ego said to stand at the lights stands at its line, and one running the red from a side
+    crosses the junction in front of it within the run: its way is timed from the start, not from
+    an ego that would have to arrive."""
+    import numpy as np
+
+    layers = layers_from_text(text, 0)
+    [adv] = layers["adversaries"]
+    assert layers["ego"]["speed_mps"] == 0.0 and adv["spawn"]["relation"] == f"junction_{side}"
+    assert layers["ego"]["distance_m"] < 10.0  # (at its line, not far up its arm)
+    result = play_layers(layers, tmp_path)
+    ego, tr = result.traces[result.ego], result.traces["Adversary1"]
+    dx, dy = tr.x - ego.x[0], tr.y - ego.y[0]
+    lon = dx * math.cos(ego.yaw[0]) + dy * math.sin(ego.yaw[0])
+    lat = -dx * math.sin(ego.yaw[0]) + dy * math.cos(ego.yaw[0])
+    ahead = (lon > 0) & (lon < 30.0)
+    assert (np.sign(lat[ahead]) != np.sign(lat[ahead][0])).any()  # (across the ego's way ahead of it)
+    assert played_problems(result, layers) == []

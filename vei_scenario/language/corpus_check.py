@@ -14,6 +14,7 @@ from __future__ import annotations
 import itertools
 from dataclasses import dataclass, field
 from pathlib import Path
+from types import SimpleNamespace
 
 from vei_scenario.language.layers import behaviour_nodes
 
@@ -212,15 +213,16 @@ def _ego_frame(result, name: str):
 def played_problems(result, layers: dict) -> list[str]:
     """Did each adversary do what its layers say, in the played run? Checked from the trajectories:
     a stop ends standing, an overtake ends ahead of the ego, a cut-in ends ahead in the ego's lane,
-    a crossing passes the ego's path (or is hit in it), a red-light run or a turn across comes within 3 m of the
-    ego's path, a road user giving way stands and is not hit, one going along the road keeps to
-    the ego's lane in its direction (while both are on the ego's road), a wrong-way driver is head-on
-    on the ego's path, an oncoming one faces the ego when they meet; and no background vehicle
-    collides."""
+    a crossing passes the ego's path (or is hit in it), a red-light run or a turn across comes within
+    3 m of the ego's path (for an ego that stands, the way it stands to go), a road user giving way
+    stands and is not hit, one going along the road keeps to the ego's lane in its direction (while
+    both are on the ego's road), a wrong-way driver is head-on on the ego's path, an oncoming one faces
+    the ego when they meet; and no background vehicle collides."""
     import numpy as np
 
     out = []
     ego = result.traces[result.ego]
+    way = _ego_way(ego, layers)
     on_own_road = np.ones(len(ego.x), dtype=bool)
     if "route" in layers["ego"] and "distance_m" in layers["ego"]:
         # through a junction or roundabout: the ego is on its own road until it has driven the
@@ -252,7 +254,7 @@ def played_problems(result, layers: dict) -> list[str]:
         if "cross_in_front" in names and not hit_ego and not (np.sign(where) != np.sign(lat[0])).any():
             out.append(f"{name}: cross_in_front but never across the ego's path")
         to_path = (
-            _nearest_on_path(tr, ego)
+            _nearest_on_path(tr, way)
             if {"run_red_light", "turn_across", "turn_into", "wrong_way"} & set(names)
             else None
         )
@@ -293,7 +295,7 @@ def played_problems(result, layers: dict) -> list[str]:
         if "wrong_way" in names:
             # on the ego's path (within 1.5 m of where the ego drives, at any time) and facing against it
             d, k = to_path
-            against = np.abs((tr.yaw - ego.yaw[k] + np.pi) % (2 * np.pi) - np.pi) > 2.6
+            against = np.abs((tr.yaw - way.yaw[k] + np.pi) % (2 * np.pi) - np.pi) > 2.6
             if not ((d < 1.5) & against & (np.abs(tr.speed) > 0.5)).any():
                 out.append(f"{name}: wrong_way but never head-on in the ego's lane")
         if "cut_out" in names and not (np.abs(lat) > 2.5).any():
@@ -302,6 +304,29 @@ def played_problems(result, layers: dict) -> list[str]:
         if adv["spawn"].get("relation") == "oncoming" and float(adv["speed_mps"]) > 0.5 and heading[closest] < 2.6:
             out.append(f"{name}: oncoming but driving the ego's way")
     return out
+
+
+#: An ego that moves less than this (m) in the run is standing: its path is then the way it stands to go.
+_STANDING_M = 1.0
+#: How far ahead (m) the way of a standing ego is taken, beyond the distance to its junction.
+_STANDING_WAY_M = 30.0
+
+
+def _ego_way(ego, layers: dict):
+    """The ego's path for the checks of who comes onto it: the points it passes through, or, for an
+    ego that stands (waiting at the lights), the way it stands to go, straight on from where it stands
+    through its junction. Why: a road user running the red in front of a standing ego crosses where
+    the ego would drive, never the one point the ego stood on."""
+    import numpy as np
+
+    if float(np.hypot(ego.x[-1] - ego.x[0], ego.y[-1] - ego.y[0])) >= _STANDING_M:
+        return ego
+    reach = float(layers["ego"].get("distance_m", 0.0)) + _STANDING_WAY_M
+    ahead = np.arange(0.0, reach, 0.25)
+    yaw = float(ego.yaw[0])
+    return SimpleNamespace(
+        x=ego.x[0] + ahead * np.cos(yaw), y=ego.y[0] + ahead * np.sin(yaw), yaw=np.full(len(ahead), yaw)
+    )
 
 
 def _nearest_on_path(tr, ego, rows: int = 512):

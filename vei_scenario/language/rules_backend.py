@@ -120,6 +120,8 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
     ego = {"placement": placement, "lane": ego_lane, "speed_mps": round(ego_speed, 3), "agent": "cap"}
     if kind in ("crossroad", "roundabout", "curve"):
         ego["distance_m"] = ego_distance
+    if kind == "crossroad" and ego_speed == 0.0 and not any(a.relation == "ahead" for a in reading.actors):
+        ego["distance_m"] = AT_THE_LINE_M  # (standing at the lights with no one ahead: first at its line)
     if kind in ("crossroad", "roundabout"):
         ego["route"] = reading.ego_route if reading.ego_route in ("straight", "left", "right") else "straight"
     intent = reading.intent or "unspecified"
@@ -925,12 +927,23 @@ def _crossing_lon_m(kind: str, relation: str, cfg: dict, ego: dict, lanes: int) 
     return trigger + 15.0 + (TYPES["car"][0][0] + TYPES[kind][0][0]) / 2
 
 
+#: Where an ego standing at the lights stands: this far (m) before its junction's entry, its front at the line.
+AT_THE_LINE_M = 5.0
+#: Below this speed (m/s) the ego is standing, and never reaches a conflict point by itself.
+STANDING_MPS = 0.5
+#: When a red-light runner reaches the path of an ego standing at its line (s after the start).
+RUN_PAST_A_STANDING_EGO_S = 4.0
+
+
 def _junction_spawn(ego: dict, lanes: int, relation: str, speed: float, ego_speed: float, cfg: dict) -> float:
     """Distance before its junction entry that brings the actor to the ego's path ``arrival_gap_s``
     after the ego (both at constant speed)."""
     info = layout({"kind": "crossroad", "lanes_per_direction": lanes})
     ego_to, actor_to = junction_conflict_m(info, lane_id(lanes, ego["lane"]), relation, -lanes)
-    t_ego = (float(ego.get("distance_m", DEFAULT_FEATURE_DISTANCE_M)) + ego_to) / max(ego_speed, 0.5)
+    if ego_speed < STANDING_MPS:  # (an ego standing never arrives: the runner comes through soon after the start)
+        t_ego = RUN_PAST_A_STANDING_EGO_S
+    else:
+        t_ego = (float(ego.get("distance_m", DEFAULT_FEATURE_DISTANCE_M)) + ego_to) / ego_speed
     d = speed * (t_ego + float(cfg.get("arrival_gap_s", 0.5))) - actor_to
     return min(max(d, 5.0), ARM_LENGTH_M - 5.0)
 
