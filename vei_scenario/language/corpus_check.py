@@ -279,10 +279,11 @@ def played_problems(result, layers: dict) -> list[str]:
             if "route" in layers["ego"] and "distance_m" in layers["ego"] and facing == "with":
                 travelled = np.concatenate([[0.0], np.cumsum(np.hypot(np.diff(tr.x), np.diff(tr.y)))])
                 on_road &= travelled < float(layers["ego"]["distance_m"]) - float(lon[0])
-            if names[1:2] and names[1] in _OUT_OF_ALONG:  # (judged as it goes along, before it moves out)
+            moves_out = names[1:2] and names[1] in _OUT_OF_ALONG
+            if moves_out:  # (judged as it goes along, before it moves out)
                 on_road &= _before_moving_out(lat, np.abs(heading - want) > 0.35)
             moving = (np.abs(tr.speed) > 0.3) & on_road
-            if names[1:2] and names[1] in _OUT_OF_ALONG:  # (and it goes along some way before it does)
+            if moves_out:  # (and it goes along some way before it does)
                 steps = np.hypot(np.diff(tr.x), np.diff(tr.y))[moving[1:]]
                 moving &= bool(steps.sum() >= _ALONG_FIRST_M)
             ahead = (lon > 0) & on_road

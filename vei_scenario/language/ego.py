@@ -1287,6 +1287,12 @@ PARTY_GENDERED = {
 }
 
 
+def _party_gender(word: str) -> str:
+    """The possessive ("her", "his") of one of the narrator's party by what the narrator calls them
+    ("my wife", "our son"), or "" where the word says no gender ("my partner", "our friend")."""
+    return next((g for g in GENDERED if word in GENDERED[g] | PARTY_GENDERED[g]), "")
+
+
 def _party_took(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """ "My dad took the car into town. He was turning right ...", "your grandad had the Volvo out",
     "our son was driving my car": one of the narrator's party (a family word or a friend), opening its
@@ -1321,7 +1327,7 @@ def _party_took(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[
         for i in range(len(out) - 1, at - 1, -1):  # (the person named again: "Grandad's more shaken")
             if out[i] == w and out[i - 1] not in INDEFINITE:
                 out[i - (out[i - 1] in PARTY_OWNERS | DEFINITE) : i + 1] = ["the", "ego"]
-        owner = next((g for g in GENDERED if w in GENDERED[g] | PARTY_GENDERED[g]), None)
+        owner = _party_gender(w)
         return _pronouns_as_ego(out, owner, kind_at, known) if owner else out
     return tokens
 
@@ -1342,7 +1348,7 @@ def _owner_phrase(tokens: list[str], p, kind_at: KindAt) -> tuple[int, str] | No
     if not tokens[o].isalpha() or kind_at(tokens, o) is not None:
         return None
     if o and tokens[o - 1] in PARTY_OWNERS:
-        gender = next((g for g in GENDERED if tokens[o] in GENDERED[g] | PARTY_GENDERED[g]), "")
+        gender = _party_gender(tokens[o])
         return o - 1, gender
     title = next((t for t in range(o - 1, max(o - 3, -1), -1) if tokens[t] in TITLES), None)
     if title is None or not all(w.isalpha() for w in tokens[title:o]):

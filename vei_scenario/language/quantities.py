@@ -346,11 +346,7 @@ def other_measure(tokens: list[str], i: int) -> bool:
     it), or is the minutes of a clock said in words ("10 past 5", "20 to 6")."""
     nxt = tokens[i + 1] if i + 1 < len(tokens) else ""
     clock = nxt in ("past", "to") and i + 2 < len(tokens) and tokens[i + 2].isdigit() and int(tokens[i + 2]) <= 12
-    return nxt in OTHER_MEASURES or (clock and not (i + 3 < len(tokens) and tokens[i + 3] in SPEED_UNITS_WORDS))
-
-
-#: Speed units as the reader's tokens hold them ("from 10 to 5 km/h" is a range, no clock).
-SPEED_UNITS_WORDS = frozenset(V.SPEED_UNITS)
+    return nxt in OTHER_MEASURES or (clock and not (i + 3 < len(tokens) and tokens[i + 3] in V.SPEED_UNITS))
 
 
 #: Words after "<number> speed" that end its phrase ("going 40 speed only", "coming 50 speed, ...", "with

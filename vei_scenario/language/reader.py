@@ -2398,7 +2398,7 @@ def _read(text: str) -> Reading:
             behaviours = [("cross_in_front", {}, *behaviours[0][2:])] + behaviours[1:]
         crossing_at = next((k for k, b in enumerate(behaviours) if b[0] == "cross_in_front"), None)
         before = {b[0] for b in behaviours[:crossing_at]} if crossing_at else set()
-        along_first = a.along and behaviours[:1] == [b for b in behaviours[:1] if b[0] == "along_road"]
+        along_first = a.along and all(b[0] == "along_road" for b in behaviours[:1])
         if (
             a.kind in VULNERABLE
             and crossing_at

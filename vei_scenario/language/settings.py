@@ -17,6 +17,7 @@ from collections.abc import Callable
 
 from vei_scenario.language import lexicon as L
 from vei_scenario.language.lemmas import lemmas
+from vei_scenario.language.vocabulary import STREET_WORDS as ROAD_NAME_ENDS
 
 #: Time words that tell the light or the traffic, not the hour: a part of the day said with them wins.
 TIME_HINTS = frozenset(
@@ -310,12 +311,9 @@ def day_halves(said: str) -> list[tuple[str, str]]:
     return [(m.group(0), _HALF_CLOCK[m.group(1)]) for m in _DAY_HALF.finditer(said)]
 
 
-#: Words for a street after its name ("Sunset Boulevard", "Evening Rd").
-STREET_WORDS = frozenset(
-    ("road", "rd", "street", "st", "lane", "ln", "avenue", "ave", "close", "way", "drive", "dr", "crescent", "terrace",
-     "grove", "boulevard", "blvd", "parade", "gardens", "mews", "place", "court", "row", "hill", "highway", "hwy",
-     "strip", "square", "circle")
-)  # fmt: skip
+#: Words for a street after its name ("Sunset Boulevard", "Evening Rd"), and those a street named for a
+#: time of day may also end in ("Sunset Strip", "Dawn Circle").
+STREET_WORDS = ROAD_NAME_ENDS | frozenset(("highway", "hwy", "strip", "square", "circle"))
 _ORDINAL_ENDS = frozenset(("st", "nd", "rd", "th"))
 
 

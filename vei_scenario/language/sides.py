@@ -31,6 +31,7 @@ from functools import lru_cache
 from lemminflect import getInflection
 
 from vei_scenario.language.lemmas import lemmas
+from vei_scenario.language.vocabulary import STREET_WORDS as _STREET_WORDS
 
 #: Side words that name a side outright.
 _PLAIN = {"left": "left", "right": "right", "left-hand": "left", "right-hand": "right"}
@@ -128,11 +129,6 @@ def _past_owner(tokens: list[str], m: int) -> int:
     return m + 1 if m < len(tokens) and tokens[m] in _DETERMINERS else m
 
 
-#: The last word of a road's name ("King St", "Elm Close", "Station Road"), abbreviated or not.
-_STREET_WORDS = frozenset(
-    {"road", "rd", "street", "st", "lane", "ln", "avenue", "ave", "close", "way", "drive", "dr", "crescent",
-     "terrace", "grove", "boulevard", "blvd", "parade", "gardens", "mews", "place", "court", "row", "hill"}
-)  # fmt: skip
 #: Verbs' particles a road user comes along a named road with ("coming down Station Road from the left").
 _ALONG_A_ROAD = frozenset({"down", "along", "up"})
 

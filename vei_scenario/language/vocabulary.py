@@ -341,3 +341,10 @@ PARTY = frozenset(
      "girlfriend", "fiance", "fiancee", "friend", "mate", "bhaiya", "didi", "chacha", "mamu", "missus", "missis",
      "grandson", "granddaughter", "nephew", "niece", "stepdad", "stepmum", "stepmom", "appa", "amma", "abba"}
 )  # fmt: skip
+
+
+#: The last word of a road's name ("King St", "Elm Close", "Station Road"), abbreviated or not.
+STREET_WORDS = frozenset(
+    {"road", "rd", "street", "st", "lane", "ln", "avenue", "ave", "close", "way", "drive", "dr", "crescent",
+     "terrace", "grove", "boulevard", "blvd", "parade", "gardens", "mews", "place", "court", "row", "hill"}
+)  # fmt: skip
