@@ -19,17 +19,12 @@ import os
 import sys
 import threading
 
-_LOADED: list[str] = []
+_LOADED: set[str] = set()  # (one entry per library, however many instances a sweep makes)
 
 
 def note_native_library(path: str) -> None:
     """Record that this process has loaded the native library of an FMU (``path``, for the record)."""
-    _LOADED.append(str(path))
-
-
-def native_libraries() -> tuple[str, ...]:
-    """The FMU libraries this process has loaded, in order."""
-    return tuple(_LOADED)
+    _LOADED.add(str(path))
 
 
 def end_process(code: int) -> None:
