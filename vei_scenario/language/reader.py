@@ -31,6 +31,7 @@ from functools import lru_cache
 from vei_scenario.language import (
     discourse,
     ego,
+    ego_double,
     ego_speed,
     experiencer,
     generic_ego,
@@ -261,6 +262,8 @@ class _Actor:
     came_from: bool = False  # a kerb or side said as where it comes from ("walks from the far side")
     end_gap: str | None = None  # the behaviour its distance is the end gap of ("overtakes, 3 m to spare")
     word: str = ""  # the words it was first named by
+    det: str = ""  # the determiner it was first named with ("a", "the", "our"; none: "Bus was doing 45")
+    seen: bool = False  # first named as what someone sees ("saw the car hit a cyclist"): watched, from outside
     acted_on: bool = False  # the object of someone's verb ("overtakes a truck")
     pavement: bool = False  # said to be on a pavement (off the road), not in a cycle lane
     member_named: bool = False  # told apart from its group ("the first one", "the other")
@@ -1836,7 +1839,14 @@ def _read(text: str) -> Reading:
                     else:
                         lead = m.prev in _LEADING or m.words.split()[0] in _LEADING  # ("the lead car": followed)
                         made = [
-                            _Actor(str(m.value), wrong_way=m.words in L.WRONG_WAY_NOUNS, followed=lead, word=m.words)
+                            _Actor(
+                                str(m.value),
+                                wrong_way=m.words in L.WRONG_WAY_NOUNS,
+                                followed=lead,
+                                word=m.words,
+                                det=m.det,
+                                seen=ego_double.perceived(m.prev),
+                            )
                             for _ in range(count)
                         ]
                         for a in made:
@@ -2486,6 +2496,8 @@ def _read(text: str) -> Reading:
         b[2] == "dangerous" and b[0] not in _GOING_ON for a in r.actors for b in a.behaviours
     )
     r.intent = decide(cues, sudden)  # (the outcome reader alone decides contact: not "hit the horn", "hit the brakes")
+    if not ego_double.names_the_ego(text):
+        actors = ego_double.merge_into_ego(actors, r)  # ("Bus was doing around 45": the ego, named as a bus)
     told = {w for cue in cues for w in cue.words.split()}  # (words the outcome was read from)
     r.ignored = [w for w in r.ignored if w not in told]
     if r.intent is None and not r.actors:

@@ -1,0 +1,113 @@
+"""The ego's own vehicle named as if it were one more road user: a vehicle that nothing places and that
+only goes on or brakes, beside road users that act, is the ego. Wordings written for the class in
+several registers (a fleet memo, a parish note, a passenger's text, a news line, a radio log), none
+taken from a corpus; near misses that look alike keep their road users."""
+
+from __future__ import annotations
+
+import pytest
+
+from vei_scenario.language import ego_double
+from vei_scenario.language.reader import read
+
+
+@pytest.mark.parametrize(
+    ("text", "kind", "ego_kph"),
+    [
+        ("Bus was doing around 45 when a cyclist swerved in front of it from the left lane.", "bicycle", 45),
+        (
+            "The school minibus was doing about thirty when a lorry pulled out of a farm gate on the left"
+            " into its path.",
+            "truck",
+            30,
+        ),
+        (
+            "RE: incident. The pool car was moving at about 60km/hr when a danfo bus cut in from the right"
+            " lane and stopped abruptly. Driver could not avoid hitting it.",
+            "truck",
+            60,
+        ),
+        (
+            "Our Uber was going about 50 kph along the seafront when a guy on a scooter came off the pavement"
+            " on the left right in front of us. The driver braked hard.",
+            "e-scooter",
+            50,
+        ),
+        (
+            "Police said the Corsa was travelling at around 30 mph when a pedestrian stepped out from the"
+            " right into the road just ahead of it.",
+            "pedestrian",
+            48.3,
+        ),
+        (
+            "0215 hrs. Patrol van proceeding north at 20 mph. Cyclist riding towards us on the wrong"
+            " side of the road, swerved back at the last moment.",
+            "bicycle",
+            32.2,
+        ),
+    ],
+)
+def test_the_vehicle_the_story_is_told_from_is_the_ego(text, kind, ego_kph):
+    reading = read(text)
+    assert [a.kind for a in reading.actors] == [kind]
+    assert reading.ego_speed_mps is not None and abs(reading.ego_speed_mps * 3.6 - ego_kph) < 1.0
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Bus was doing around 45 when a cyclist swerved in front of it from the left lane.",
+        "The school minibus was doing about thirty when a lorry pulled out of a farm gate on the left into its path.",
+    ],
+)
+def test_without_the_rule_the_ego_would_be_a_road_user_of_its_own(text, monkeypatch):
+    """The wordings above need this module: the rest of the reader reads the ego's vehicle apart."""
+    monkeypatch.setattr(ego_double, "merge_into_ego", lambda actors, reading: actors)
+    reading = read(text)
+    assert len(reading.actors) == 2 and reading.ego_speed_mps is None
+
+
+@pytest.mark.parametrize(
+    ("text", "kinds"),
+    [
+        # another road user's object: the overtaken bus is there, ahead of the overtaker
+        ("A lorry overtook a slow-moving bus and pulled in right in front of me.", ["truck", "truck"]),
+        # named in a group: two cars ahead, a cyclist between them
+        ("Two cars were ahead of me and a cyclist cut in between them.", ["car", "car", "bicycle"]),
+        # standing: what someone steps out from behind is parked scenery, not the ego
+        ("A child ran out from behind a parked van on the left right in front of me.", ["pedestrian", "van"]),
+        # new to the story: the ego, whose story it is, is never brought in with "a"
+        ("A car was going at 40 km/h and an e-scooter crossed in front of me.", ["car", "e-scooter"]),
+        # seen: what someone watches is watched from outside
+        ("My dad saw the car hit a cyclist.", ["car", "bicycle"]),
+        # only stopping: it may be standing there
+        ("The bus was stopped at the stop when a cyclist rode into the back of it.", ["truck", "bicycle"]),
+        # the text calls the ego by that name
+        (
+            "The car in the next lane brakes hard while a pedestrian crosses 20 m ahead of the ego.",
+            ["car", "pedestrian"],
+        ),
+        # placed: a car said to be behind the ego is not the ego
+        ("A car behind me was doing 50 when a cyclist crossed in front of us.", ["car", "bicycle"]),
+    ],
+)
+def test_a_vehicle_the_words_set_somewhere_stays_a_road_user(text, kinds):
+    assert sorted(a.kind for a in read(text).actors) == sorted(kinds)
+
+
+def test_two_vehicles_read_alike_cannot_be_told_apart_and_both_stay():
+    text = "A taxi was going at 30 and a van was going at 40 when a pedestrian stepped out from the right."
+    assert sorted(a.kind for a in read(text).actors) == ["car", "pedestrian", "van"]
+
+
+def test_only_one_that_does_nothing_of_its_own_is_not_taken_for_the_ego():
+    """With nobody else acting there is no one for the scenario to be with: it stays what it is."""
+    reading = read("A van was doing 40 mph down the high street.")
+    assert [a.kind for a in reading.actors] == ["van"]
+
+
+def test_a_gap_said_of_the_ego_s_vehicle_is_the_gap_to_the_one_it_meets():
+    reading = read("Bus was doing 40 only 3 m from a cyclist when the cyclist swerved into the lane.")
+    (cyclist,) = reading.actors
+    assert cyclist.kind == "bicycle" and cyclist.distance_m == 3.0
+    assert abs(reading.ego_speed_mps * 3.6 - 40) < 1e-6

@@ -1,0 +1,115 @@
+"""The ego's own vehicle, named in the story as if it were one more road user.
+
+"Bus was doing around 45", "the above pool car ... was moving at about 50km/hr", "Husband was only
+doing about 20, slammed on the brakes", "the Corolla clipped him at around 50 km/h. The Corolla was
+me": where the words that name the ego are ones the reader does not take for it, the ego's vehicle
+is read as a road user of its own. Such a double is told apart by what is said of it, not by its
+name: nothing places it (no start, no side, no lane, no kerb), and all it does is what the ego does
+in the story it is told from: it goes on, slows, or brakes, to a stop if need be. Everyone else in
+the story acts on the ego's road, and the scenario is theirs with the ego.
+
+Where exactly one road user is read like that, beside road users that do something of their own or
+start somewhere said, it is the ego: it leaves the road users, its speed is the ego's where the ego
+has none, and a gap said of it is the gap to the one road user it meets. Two such cannot be told
+apart by this, and both stay. So does one that the words set apart from the ego: one brought into the
+story as new ("a car was going at 40": the ego, whose story it is, is never new to it), one someone is
+said to see ("my dad saw the car hit a cyclist"), one said only to stop ("the bus was stopped at the
+stop": it may stand there), one slower or faster than the traffic ("overtook a slow-moving bus"), one
+that does something to another road user, one the ego follows or passes, one named in a group or
+picked out of one, parked, standing or hiding someone. A text that calls the ego "the ego" has said
+which one it is, and no vehicle is taken for it.
+"""
+
+from __future__ import annotations
+
+import re
+from typing import Protocol
+
+from vei_scenario.language.discourse import PERCEIVE
+from vei_scenario.language.lemmas import lemmas
+from vei_scenario.language.reading import ActorSpec, Reading
+
+#: What the ego itself does in a story told from it: goes on, slows, brakes (to a stop).
+_EGO_LIKE = frozenset(("keep_going", "sudden_stop", "stop", "change_speed"))
+#: Determiners that bring a road user new into the story: the ego, whose story it is, is never new.
+_NEW = frozenset(("a", "an", "another", "some", "one"))
+#: The kinds the ego may be (it drives or rides: never on foot).
+_EGO_KINDS = frozenset(("car", "van", "truck", "bicycle", "e-scooter"))
+
+
+class _Said(Protocol):
+    """What the reader gathered of a road user, as far as this module reads it."""
+
+    passed: bool
+    followed: bool
+    hides: bool
+    parked: bool
+    stationary: bool
+    group: list | None
+    member_named: bool
+    det: str
+    seen: bool
+    object_of: object
+
+
+def perceived(verb: str) -> bool:
+    """Whether ``verb``, said right before a road user is first named, is one of seeing ("saw the car
+    hit a cyclist", "watched the van"): that road user is watched, from outside."""
+    return verb in PERCEIVE or any(x in PERCEIVE for forms in lemmas(verb).values() for x in forms)
+
+
+def names_the_ego(text: str) -> bool:
+    """Whether ``text`` calls the ego by that name ("... 20 m ahead of the ego"): it has said which one
+    the ego is, and no other vehicle is taken for it."""
+    return re.search(r"\bego\b", text, re.IGNORECASE) is not None
+
+
+def _placed(a: _Said) -> bool:
+    """Whether the words set ``a`` somewhere by what is said about it: followed or passed by the ego,
+    named in a group or picked out of one, parked or standing, or what someone comes out from behind."""
+    return bool(a.passed or a.followed or a.hides or a.parked or a.stationary or a.group or a.member_named)
+
+
+def _double(a: _Said, spec: ActorSpec, others: list) -> bool:
+    """Whether road user ``spec`` (gathered as ``a``) is read as the ego would be: a kind the ego may
+    be, nowhere said, moving at a speed of its own or none said (not standing, not "slow-moving"),
+    doing only what the ego does, and nothing to another road user (none is its verb's object)."""
+    names = {b[0] for b in spec.behaviours}
+    return (
+        spec.kind in _EGO_KINDS
+        and spec.relation is None
+        and spec.lateral_m is None
+        and (spec.speed_mps is None or spec.speed_mps > 0.0)
+        and names <= _EGO_LIKE
+        and names != {"stop"}
+        and not _placed(a)
+        and a.det not in _NEW
+        and not a.seen
+        and not any(x.object_of is a for x in others)
+    )
+
+
+def merge_into_ego(actors: list, reading: Reading) -> list:
+    """Take the one road user of ``reading`` that is the ego said again (see the module) out of its
+    road users; ``actors`` are what the reader gathered of them, in the same order. Its speed becomes
+    the ego's where the ego has none, and a gap said of it is the gap to the one road user it meets
+    (where there is one, with no gap of its own). Returns ``actors`` without it."""
+    specs = reading.actors
+    doubles = [k for k, (a, s) in enumerate(zip(actors, specs)) if _double(a, s, actors)]
+    deeds = [s for s in specs if not {b[0] for b in s.behaviours} <= _EGO_LIKE or s.relation is not None]
+    if len(doubles) != 1 or not deeds or len(specs) < 2:
+        return actors
+    k = doubles[0]
+    if any(s.obstacle == k for s in specs):
+        return actors  # (what another swerves round is in the road, not the ego)
+    double = specs[k]
+    if reading.ego_speed_mps is None and double.speed_mps is not None and double.speed_mps > 0:
+        reading.ego_speed_mps = double.speed_mps
+    rest = [s for j, s in enumerate(specs) if j != k]
+    if double.distance_m is not None and len(rest) == 1 and rest[0].distance_m is None:
+        rest[0].distance_m = double.distance_m  # ("Bus was doing 40 only 3 m from a cyclist")
+    for s in rest:
+        if s.obstacle is not None and s.obstacle > k:
+            s.obstacle -= 1
+    reading.actors = rest
+    return [a for j, a in enumerate(actors) if j != k]
