@@ -78,6 +78,7 @@ def test_without_the_rule_the_ego_would_be_a_road_user_of_its_own(text, monkeypa
         ("A child ran out from behind a parked van on the left right in front of me.", ["pedestrian", "van"]),
         # new to the story: the ego, whose story it is, is never brought in with "a"
         ("A car was going at 40 km/h and an e-scooter crossed in front of me.", ["car", "e-scooter"]),
+        ("A big white van was going at 40 km/h and an e-scooter crossed in front of me.", ["van", "e-scooter"]),
         # seen: what someone watches is watched from outside
         ("My dad saw the car hit a cyclist.", ["car", "bicycle"]),
         # only stopping: it may be standing there

@@ -536,6 +536,19 @@ def _best(tokens: list[str], i: int) -> tuple[str, ...] | None:
 _DETERMINERS = {"the", "a", "an", "its", "our", "my", "their", "his", "her", "this", "that", "another", "some"}
 
 
+def _phrase_det(tokens: list[str], i: int) -> str:
+    """The determiner of the noun phrase whose noun starts at token ``i``, past the words that describe
+    it ("a little girl", "the big white van", "my 2 kids": "a", "the", "my"); "" where there is none."""
+    for j in range(i - 1, max(i - 4, -1), -1):
+        word = tokens[j]
+        if word in _DETERMINERS:
+            return word
+        pos = _pos(word)
+        if not (word.isdigit() or "ADJ" in pos or pos == {"NOUN"}):
+            return ""
+    return ""
+
+
 def _relation_length(tokens: list[str], k: int) -> int:
     """The length of the relation phrase the table lists at token ``k`` ("in front of us"), or 0."""
     key = _best(tokens, k) if k < len(tokens) else None
@@ -1844,7 +1857,7 @@ def _read(text: str) -> Reading:
                                 wrong_way=m.words in L.WRONG_WAY_NOUNS,
                                 followed=lead,
                                 word=m.words,
-                                det=m.det,
+                                det=_phrase_det(scanned, m.start),
                                 seen=ego_double.perceived(m.prev),
                             )
                             for _ in range(count)
