@@ -111,3 +111,73 @@ def test_a_gap_said_of_the_ego_s_vehicle_is_the_gap_to_the_one_it_meets():
     (cyclist,) = reading.actors
     assert cyclist.kind == "bicycle" and cyclist.distance_m == 3.0
     assert abs(reading.ego_speed_mps * 3.6 - 40) < 1e-6
+
+
+#: A passenger's story of the ride, told in several Englishes and registers (none from a corpus): the
+#: driver named with no vehicle of their own is the ego's driver; (wording, the road users it has).
+PASSENGERS = [
+    # a Nigerian passenger's review: the driver's overtake is the ego's
+    (
+        "The driver no patience at all. On the road to Ikeja one cyclist riding slowly by the left side, our car"
+        " follow behind him, then driver overtake very close.",
+        ["bicycle"],
+    ),
+    # a British hotel review: the driver's hard braking is the ego's, not a car ahead braking
+    (
+        "Booked the resort's shuttle. Driver very polite but on the motorway a lorry from the next lane swerved"
+        " into our lane just in front of us. Driver braked hard.",
+        ["truck"],
+    ),
+    # an American rideshare review
+    (
+        "My uber driver was going way too fast on the freeway and a pickup merged into our lane right in front"
+        " of us. Driver slammed the brakes.",
+        ["van"],
+    ),
+    # a Singaporean text message
+    (
+        "Grabcar today. Driver cut into the next lane and a motorcycle behind us had to brake hard. Driver never"
+        " even signal.",
+        ["car"],
+    ),
+    # an Indian traveller's note, the chauffeur
+    (
+        "Transfer to the hotel in Pune. The chauffeur overtook a tractor near the flyover and a bus came head on"
+        " towards us in our lane.",
+        ["truck", "truck"],
+    ),
+]
+
+
+@pytest.mark.parametrize(("text", "kinds"), PASSENGERS)
+def test_the_driver_of_a_passenger_s_story_is_the_ego(text, kinds):
+    assert sorted(a.kind for a in read(text).actors) == sorted(kinds)
+
+
+def test_without_the_rule_the_ego_s_driver_would_be_a_road_user(monkeypatch):
+    """The first wordings above need this rule: the rest of the reader reads the driver apart."""
+    monkeypatch.setattr(ego_double, "merge_ego_driver", lambda actors, reading: actors)
+    assert [len(read(text).actors) for text, _ in PASSENGERS[:3]] == [2, 2, 2]
+
+
+@pytest.mark.parametrize(
+    ("text", "kinds"),
+    [
+        # new to the story: "a driver" is someone the story brings in
+        ("A driver ran the red light on the right and hit a cyclist crossing in front of me.", ["car", "bicycle"]),
+        # someone else: "the other driver"
+        (
+            "A cyclist swerved round me and the other driver pulled out of the side road on the left.",
+            [
+                "bicycle",
+                "car",
+            ],
+        ),
+        # placed: the driver behind me is behind the ego
+        ("I was doing 30 when the driver behind me pulled out and overtook me.", ["car"]),
+        # placed: the driver of an oncoming car
+        ("We were turning right when an oncoming driver flashed us and a cyclist came through.", ["car", "bicycle"]),
+    ],
+)
+def test_a_driver_the_words_set_apart_stays_a_road_user(text, kinds):
+    assert sorted(a.kind for a in read(text).actors) == sorted(kinds)

@@ -18,6 +18,14 @@ stop": it may stand there), one slower or faster than the traffic ("overtook a s
 that does something to another road user, one the ego follows or passes, one named in a group or
 picked out of one, parked, standing or hiding someone. A text that calls the ego "the ego" has said
 which one it is, and no vehicle is taken for it.
+
+A passenger's story names the ego by its driver: "Driver braked hard and our cases slid everywhere",
+"then driver overtake very close", "When driver turning right at the junction, one e-scooter come from
+opposite direction". A road user named only by a noun for whoever is at a wheel ("driver", "the
+driver", "our driver"), with no vehicle of its own, that nothing places (no start, side, lane or
+kerb), that no one sees from outside and that is not brought in as new ("a driver ran the red") or
+as someone else ("the other driver"), is the driver of the vehicle the story is told from: the ego.
+What it does is the ego's (its speed the ego's where none was read, its turn the ego's route).
 """
 
 from __future__ import annotations
@@ -35,6 +43,10 @@ _EGO_LIKE = frozenset(("keep_going", "sudden_stop", "stop", "change_speed"))
 _NEW = frozenset(("a", "an", "another", "some", "one"))
 #: The kinds the ego may be (it drives or rides: never on foot).
 _EGO_KINDS = frozenset(("car", "van", "truck", "bicycle", "e-scooter"))
+#: The nouns for whoever is at a wheel, said of a person and no vehicle (a closed class).
+_AT_A_WHEEL = frozenset(("driver", "chauffeur", "cabbie", "cabby", "motorist"))
+#: Words before a person that say it is someone else than one already there ("the other driver").
+_SOMEONE_ELSE = frozenset(("other", "another", "second", "third", "oncoming", "opposing"))
 
 
 class _Said(Protocol):
@@ -50,6 +62,16 @@ class _Said(Protocol):
     det: str
     seen: bool
     object_of: object
+    word: str
+    named_after: str
+    relation: str | None
+    side: str | None
+    lane_side: str | None
+    kerb: bool
+    kerb_side: str | None
+    from_arm: bool
+    beside: bool
+    said: set
 
 
 def perceived(verb: str) -> bool:
@@ -112,4 +134,46 @@ def merge_into_ego(actors: list, reading: Reading) -> list:
         if s.obstacle is not None and s.obstacle > k:
             s.obstacle -= 1
     reading.actors = rest
+    return [a for j, a in enumerate(actors) if j != k]
+
+
+def _ego_driver(a: _Said, spec: ActorSpec) -> bool:
+    """Whether road user ``spec`` (gathered as ``a``) is the ego's driver in a passenger's story: a
+    person at a wheel named with no vehicle, nowhere said (no start, side, lane, kerb, side road), not
+    new to the story, not someone else, not watched from outside."""
+    return (
+        spec.kind == "car"
+        and a.word in _AT_A_WHEEL
+        and a.det not in _NEW
+        and a.named_after not in _SOMEONE_ELSE
+        and a.relation is None
+        and not (a.side or a.lane_side or a.kerb or a.kerb_side or a.from_arm or a.beside)
+        and not ({"ahead", "behind", "oncoming"} & a.said)
+        and not _placed(a)
+        and not a.seen
+    )
+
+
+def merge_ego_driver(actors: list, reading: Reading) -> list:
+    """Take the one road user of ``reading`` that is the ego's driver in a passenger's story (see the
+    module) out of its road users; ``actors`` are what the reader gathered of them, in the same order.
+    Its speed becomes the ego's where the ego has none, and its turn the ego's route where none was
+    read. Returns ``actors`` without it."""
+    specs = reading.actors
+    drivers = [k for k, (a, s) in enumerate(zip(actors, specs)) if _ego_driver(a, s)]
+    if len(drivers) != 1 or len(specs) < 2:
+        return actors
+    k = drivers[0]
+    if any(s.obstacle == k for s in specs):
+        return actors  # (what another swerves round is in the road, not the ego)
+    driver = specs[k]
+    if reading.ego_speed_mps is None and driver.speed_mps is not None and driver.speed_mps > 0:
+        reading.ego_speed_mps = driver.speed_mps
+    turns = [b[1].get("turn") for b in driver.behaviours if b[0] == "forced_turn"]
+    if reading.ego_route is None and turns[:1] in (["left"], ["right"]):
+        reading.ego_route = turns[0]  # ("When driver turning right at the junction, ...")
+    for s in specs:
+        if s.obstacle is not None and s.obstacle > k:
+            s.obstacle -= 1
+    reading.actors = [s for j, s in enumerate(specs) if j != k]
     return [a for j, a in enumerate(actors) if j != k]
