@@ -62,7 +62,7 @@ def test_the_vehicle_the_story_is_told_from_is_the_ego(text, kind, ego_kph):
 )
 def test_without_the_rule_the_ego_would_be_a_road_user_of_its_own(text, monkeypatch):
     """The wordings above need this module: the rest of the reader reads the ego's vehicle apart."""
-    monkeypatch.setattr(ego_double, "merge_into_ego", lambda actors, reading: actors)
+    monkeypatch.setattr(ego_double, "merge_into_ego", lambda actors, reading, unnamed=False: actors)
     reading = read(text)
     assert len(reading.actors) == 2 and reading.ego_speed_mps is None
 
@@ -181,3 +181,75 @@ def test_without_the_rule_the_ego_s_driver_would_be_a_road_user(monkeypatch):
 )
 def test_a_driver_the_words_set_apart_stays_a_road_user(text, kinds):
     assert sorted(a.kind for a in read(text).actors) == sorted(kinds)
+
+
+#: Third-person reports that name no ego at all bring the vehicle they are about in as new ("a ..."):
+#: a council bulletin, a police appeal, a parliamentary question, an insurer's note, a news brief.
+#: (wording, the road users it has, the ego's speed in km/h).
+REPORTS = [
+    (
+        "Last month a resident driving home at 30 mph was hit when an oncoming car turned right across her.",
+        ["car"],
+        48.3,
+    ),
+    (
+        "A pensioner's car, travelling at about 30 mph on a green light, was struck by a lorry that ran the red.",
+        ["truck"],
+        48.3,
+    ),
+    ("A car in self-driving mode failed to slow for a lorry that braked sharply ahead of it.", ["truck"], None),
+    (
+        "Police are appealing for witnesses after a taxi doing about 40 km/h was hit by a van that ran the red"
+        " light on the left.",
+        ["van"],
+        40,
+    ),
+    (
+        "Breaking: a minibus travelling at 50 km/h on the N1 was struck by a truck that pulled out of a side road"
+        " on the right.",
+        ["truck"],
+        50,
+    ),
+]
+
+
+@pytest.mark.parametrize(("text", "kinds", "ego_kph"), REPORTS)
+def test_a_report_that_names_no_ego_brings_its_vehicle_in_as_new(text, kinds, ego_kph):
+    reading = read(text)
+    assert sorted(a.kind for a in reading.actors) == sorted(kinds)
+    if ego_kph is not None:
+        assert reading.ego_speed_mps is not None and abs(reading.ego_speed_mps * 3.6 - ego_kph) < 1.0
+
+
+@pytest.mark.parametrize(
+    ("text", "kinds"),
+    [
+        # the ego named by a phrase: a new vehicle is another road user
+        (
+            "The VUT drives at 50 km/h. A car travelling at 60 km/h and a cyclist crossing from the left.",
+            [
+                "car",
+                "bicycle",
+            ],
+        ),
+        (
+            "Host vehicle at 50 km/h. A truck travelling at 60 km/h and a pedestrian stepping out from the right.",
+            [
+                "truck",
+                "pedestrian",
+            ],
+        ),
+        # two alike: neither can be told for the ego
+        ("A bus and a car were both doing 30 when a cyclist swerved out.", ["truck", "car", "bicycle"]),
+    ],
+)
+def test_a_new_vehicle_stays_a_road_user_where_the_ego_is_named(text, kinds):
+    assert sorted(a.kind for a in read(text).actors) == sorted(kinds)
+
+
+def test_without_the_unnamed_ego_a_report_keeps_its_vehicle(monkeypatch):
+    """The first and third reports need the reading of a text that names no ego ("a ..." would set the
+    vehicle apart); the others the reader frames as the ego before (a speed of its own, struck by).
+    """
+    monkeypatch.setattr(ego_double, "ego_unnamed", lambda tokens, clauses: False)
+    assert [len(read(text).actors) for text, _, _ in REPORTS] == [2, 1, 2, 1, 1]

@@ -41,6 +41,8 @@ from vei_scenario.language.reading import ActorSpec, Reading
 _EGO_LIKE = frozenset(("keep_going", "sudden_stop", "stop", "change_speed"))
 #: Determiners that bring a road user new into the story: the ego, whose story it is, is never new.
 _NEW = frozenset(("a", "an", "another", "some", "one"))
+#: Words that name the ego in the reader's tokens: the narrator, the reader addressed, the ego framed.
+_NAMING_THE_EGO = frozenset(("i", "we", "me", "us", "my", "our", "you", "your", "yourself", "ego"))
 #: The kinds the ego may be (it drives or rides: never on foot).
 _EGO_KINDS = frozenset(("car", "van", "truck", "bicycle", "e-scooter"))
 #: The nouns for whoever is at a wheel, said of a person and no vehicle (a closed class).
@@ -74,6 +76,15 @@ class _Said(Protocol):
     said: set
 
 
+def ego_unnamed(tokens: list[str], clauses: list) -> bool:
+    """Whether the reader's ``tokens`` and ``clauses`` name no ego at all: no narrator in the scene, no
+    "you", no ego phrase ("the host vehicle", "the VUT") and none framed as "the ego". A third-person
+    report then brings its own vehicle in as new ("a resident driving home at 30 mph was hit when
+    ..."), and "new" no longer sets a vehicle apart from the ego."""
+    said = any(m.slot == "actor" and m.value == "ego" for _, mentions in clauses for m in mentions)
+    return not said and not (_NAMING_THE_EGO & set(tokens))
+
+
 def perceived(verb: str) -> bool:
     """Whether ``verb``, said right before a road user is first named, is one of seeing ("saw the car
     hit a cyclist", "watched the van"): that road user is watched, from outside."""
@@ -92,7 +103,7 @@ def _placed(a: _Said) -> bool:
     return bool(a.passed or a.followed or a.hides or a.parked or a.stationary or a.group or a.member_named)
 
 
-def _double(a: _Said, spec: ActorSpec, others: list) -> bool:
+def _double(a: _Said, spec: ActorSpec, others: list, unnamed: bool = False) -> bool:
     """Whether road user ``spec`` (gathered as ``a``) is read as the ego would be: a kind the ego may
     be, nowhere said, moving at a speed of its own or none said (not standing, not "slow-moving"),
     doing only what the ego does, and nothing to another road user (none is its verb's object)."""
@@ -105,19 +116,21 @@ def _double(a: _Said, spec: ActorSpec, others: list) -> bool:
         and names <= _EGO_LIKE
         and names != {"stop"}
         and not _placed(a)
-        and a.det not in _NEW
+        and (a.det not in _NEW or unnamed)
         and not a.seen
         and not any(x.object_of is a for x in others)
     )
 
 
-def merge_into_ego(actors: list, reading: Reading) -> list:
+def merge_into_ego(actors: list, reading: Reading, unnamed: bool = False) -> list:
     """Take the one road user of ``reading`` that is the ego said again (see the module) out of its
     road users; ``actors`` are what the reader gathered of them, in the same order. Its speed becomes
     the ego's where the ego has none, and a gap said of it is the gap to the one road user it meets
-    (where there is one, with no gap of its own). Returns ``actors`` without it."""
+    (where there is one, with no gap of its own). ``unnamed``: nothing in the text names the ego (no
+    narrator, no "you", no vehicle framed as the ego), so one brought in as new may be it too.
+    Returns ``actors`` without it."""
     specs = reading.actors
-    doubles = [k for k, (a, s) in enumerate(zip(actors, specs)) if _double(a, s, actors)]
+    doubles = [k for k, (a, s) in enumerate(zip(actors, specs)) if _double(a, s, actors, unnamed)]
     deeds = [s for s in specs if not {b[0] for b in s.behaviours} <= _EGO_LIKE or s.relation is not None]
     if len(doubles) != 1 or not deeds or len(specs) < 2:
         return actors
