@@ -253,3 +253,50 @@ def test_without_the_unnamed_ego_a_report_keeps_its_vehicle(monkeypatch):
     """
     monkeypatch.setattr(ego_double, "ego_unnamed", lambda tokens, clauses: False)
     assert [len(read(text).actors) for text, _, _ in REPORTS] == [2, 1, 2, 1, 1]
+
+
+#: "Both" after someone acted names the ego and that one together: an insurer's note, a text message,
+#: a forum post, a witness statement, a radio caller (wording, the road users it has).
+BOTH = [
+    (
+        "Insured was doing 40 mph on a bend when a van coming the other way cut the corner onto his side. Both"
+        " drivers braked hard and the vehicles stopped a few feet apart.",
+        ["van"],
+    ),
+    ("A lorry pulled out of a farm gate on the left in front of me and both drivers slammed on.", ["truck"]),
+    (
+        "I was going about 30 when a ute came round the bend on my side of the road. Both drivers braked and"
+        " stopped just in time.",
+        ["van"],
+    ),
+    ("Taxi cut across from the right lane right in front of me, both cars braked hard, no contact.", ["car"]),
+    ("Bus pulled out from the stop on my left just ahead of me. Both drivers had to stop dead.", ["truck"]),
+]
+
+
+@pytest.mark.parametrize(("text", "kinds"), BOTH)
+def test_both_after_someone_acted_is_the_ego_and_that_one(text, kinds):
+    assert sorted(a.kind for a in read(text).actors) == sorted(kinds)
+
+
+@pytest.mark.parametrize(
+    ("text", "kinds"),
+    [
+        # both do something to another: two more road users
+        ("A cyclist was riding in the lane and both cars overtook him at speed.", ["bicycle", "car", "car"]),
+        # placed: both lorries behind me are two more
+        (
+            "A van pulled out of a side road in front of me. Both lorries behind me braked hard.",
+            ["van", "truck", "truck"],
+        ),
+        # "two", not "both": new to the story
+        ("A van cut the corner onto my side and two cars behind it braked hard.", ["van", "car", "car"]),
+    ],
+)
+def test_both_that_the_words_set_apart_stays_two_road_users(text, kinds):
+    assert sorted(a.kind for a in read(text).actors) == sorted(kinds)
+
+
+def test_without_the_rule_both_would_be_two_more(monkeypatch):
+    monkeypatch.setattr(ego_double, "drop_both_said_again", lambda actors, reading: actors)
+    assert [len(read(text).actors) for text, _ in BOTH] == [3, 3, 3, 3, 3]

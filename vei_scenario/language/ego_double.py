@@ -17,7 +17,11 @@ said to see ("my dad saw the car hit a cyclist"), one said only to stop ("the bu
 stop": it may stand there), one slower or faster than the traffic ("overtook a slow-moving bus"), one
 that does something to another road user, one the ego follows or passes, one named in a group or
 picked out of one, parked, standing or hiding someone. A text that calls the ego "the ego" has said
-which one it is, and no vehicle is taken for it.
+which one it is, and no vehicle is taken for it. A third-person report that names no ego at all (no
+narrator in the scene, no "you", no ego phrase) brings the vehicle it is about in as new like any
+other ("a resident driving home at 30 mph was hit when ..."): there, "a" sets no vehicle apart.
+"Both" after someone acted ("a van cut the corner onto my side. Both drivers braked hard") names the
+ego and that one together: two such road users that only go on or brake, nowhere said, are no one new.
 
 A passenger's story names the ego by its driver: "Driver braked hard and our cases slid everywhere",
 "then driver overtake very close", "When driver turning right at the junction, one e-scooter come from
@@ -190,3 +194,40 @@ def merge_ego_driver(actors: list, reading: Reading) -> list:
             s.obstacle -= 1
     reading.actors = [s for j, s in enumerate(specs) if j != k]
     return [a for j, a in enumerate(actors) if j != k]
+
+
+def _said_again_as_both(group: list, spec_of: dict, others: list) -> bool:
+    """Whether road users ``group`` (two, first named after "both") are the ego and the one already
+    in the story said together: "both" names two the story has (it brings no one new in), of kinds
+    the ego may be, nowhere said, doing only what the ego does and nothing to anyone else."""
+    return (
+        len(group) == 2
+        and all(a.named_after == "both" for a in group)
+        and all(
+            spec_of[id(a)].kind in _EGO_KINDS
+            and {b[0] for b in spec_of[id(a)].behaviours} <= _EGO_LIKE
+            and a.relation is None
+            and not (a.side or a.lane_side or a.kerb or a.kerb_side or a.from_arm or a.beside or a.seen)
+            and not any(x.object_of is a for x in others)
+            for a in group
+        )
+    )
+
+
+def drop_both_said_again(actors: list, reading: Reading) -> list:
+    """Take out of ``reading`` the two road users named with "both" after someone acted ("a van cut
+    the corner onto my side. Both drivers braked hard", "both cars stopped inches apart"): they are the
+    ego and the one already there, said together, not two more. ``actors`` are what the reader gathered
+    of its road users, in the same order. Returns ``actors`` without them."""
+    specs = reading.actors
+    spec_of = {id(a): s for a, s in zip(actors, specs)}
+    for a in actors:
+        group = a.group or []
+        rest = [x for x in actors if all(x is not g for g in group)]
+        if group and group[0] is a and rest and _said_again_as_both(group, spec_of, actors):
+            if any(s.obstacle is not None for s in specs):
+                return actors  # (what another swerves round is in the road)
+            kept = [k for k, x in enumerate(actors) if all(x is not g for g in group)]
+            reading.actors = [specs[k] for k in kept]
+            return [actors[k] for k in kept]
+    return actors

@@ -2502,6 +2502,7 @@ def _read(text: str) -> Reading:
     r.intent = decide(cues, sudden)  # (the outcome reader alone decides contact: not "hit the horn", "hit the brakes")
     if not ego_double.names_the_ego(text):
         actors = ego_double.merge_into_ego(actors, r, ego_double.ego_unnamed(scanned, clauses))  # ("Bus was doing 45")
+    actors = ego_double.drop_both_said_again(actors, r)  # ("a van cut the corner. Both drivers braked hard")
     told = {w for cue in cues for w in cue.words.split()}  # (words the outcome was read from)
     r.ignored = [w for w in r.ignored if w not in told]
     if r.intent is None and not r.actors:
