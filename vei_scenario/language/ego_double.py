@@ -202,7 +202,7 @@ def _said_again_as_both(group: list, spec_of: dict, others: list) -> bool:
     the ego may be, nowhere said, doing only what the ego does and nothing to anyone else."""
     return (
         len(group) == 2
-        and all(a.named_after == "both" for a in group)
+        and all(id(a) in spec_of and a.named_after == "both" for a in group)
         and all(
             spec_of[id(a)].kind in _EGO_KINDS
             and {b[0] for b in spec_of[id(a)].behaviours} <= _EGO_LIKE
