@@ -134,7 +134,9 @@ def merge_into_ego(actors: list, reading: Reading, unnamed: bool = False) -> lis
     narrator, no "you", no vehicle framed as the ego), so one brought in as new may be it too.
     Returns ``actors`` without it."""
     specs = reading.actors
-    doubles = [k for k, (a, s) in enumerate(zip(actors, specs)) if _double(a, s, actors, unnamed)]
+    doubles = [k for k, (a, s) in enumerate(zip(actors, specs)) if _double(a, s, actors)]
+    if not doubles and unnamed:  # (one not new is the ego before any brought in as new)
+        doubles = [k for k, (a, s) in enumerate(zip(actors, specs)) if _double(a, s, actors, unnamed)]
     deeds = [s for s in specs if not {b[0] for b in s.behaviours} <= _EGO_LIKE or s.relation is not None]
     if len(doubles) != 1 or not deeds or len(specs) < 2:
         return actors
