@@ -19,7 +19,8 @@ that does something to another road user, one the ego follows or passes, one nam
 picked out of one, parked, standing or hiding someone. A text that calls the ego "the ego" has said
 which one it is, and no vehicle is taken for it. A third-person report that names no ego at all (no
 narrator in the scene, no "you", no ego phrase) brings the vehicle it is about in as new like any
-other ("a resident driving home at 30 mph was hit when ..."): there, "a" sets no vehicle apart.
+other, with the speed it was doing ("a resident driving home at 30 mph was hit when ..."): there, "a"
+does not set apart one with a speed of its own.
 "Both" after someone acted ("a van cut the corner onto my side. Both drivers braked hard") names the
 ego and that one together: two such road users that only go on or brake, nowhere said, are no one new.
 
@@ -120,7 +121,7 @@ def _double(a: _Said, spec: ActorSpec, others: list, unnamed: bool = False) -> b
         and names <= _EGO_LIKE
         and names != {"stop"}
         and not _placed(a)
-        and (a.det not in _NEW or unnamed)
+        and (a.det not in _NEW or (unnamed and spec.speed_mps is not None))
         and not a.seen
         and not any(x.object_of is a for x in others)
     )
