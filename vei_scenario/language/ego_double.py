@@ -17,7 +17,20 @@ said to see ("my dad saw the car hit a cyclist"), one said only to stop ("the bu
 stop": it may stand there), one slower or faster than the traffic ("overtook a slow-moving bus"), one
 that does something to another road user, one the ego follows or passes, one named in a group or
 picked out of one, parked, standing or hiding someone. A text that calls the ego "the ego" has said
-which one it is, and no vehicle is taken for it.
+which one it is, and no vehicle is taken for it. A third-person report that names no ego at all (no
+narrator in the scene, no "you", no ego phrase) brings the vehicle it is about in as new like any
+other, with the speed it was doing ("a resident driving home at 30 mph was hit when ..."): there, "a"
+does not set apart one with a speed of its own.
+"Both" after someone acted ("a van cut the corner onto my side. Both drivers braked hard") names the
+ego and that one together: two such road users that only go on or brake, nowhere said, are no one new.
+
+A passenger's story names the ego by its driver: "Driver braked hard and our cases slid everywhere",
+"then driver overtake very close", "When driver turning right at the junction, one e-scooter come from
+opposite direction". A road user named only by a noun for whoever is at a wheel ("driver", "the
+driver", "our driver"), with no vehicle of its own, that nothing places (no start, side, lane or
+kerb), that no one sees from outside and that is not brought in as new ("a driver ran the red") or
+as someone else ("the other driver"), is the driver of the vehicle the story is told from: the ego.
+What it does is the ego's (its speed the ego's where none was read, its turn the ego's route).
 """
 
 from __future__ import annotations
@@ -33,8 +46,14 @@ from vei_scenario.language.reading import ActorSpec, Reading
 _EGO_LIKE = frozenset(("keep_going", "sudden_stop", "stop", "change_speed"))
 #: Determiners that bring a road user new into the story: the ego, whose story it is, is never new.
 _NEW = frozenset(("a", "an", "another", "some", "one"))
+#: Words that name the ego in the reader's tokens: the narrator, the reader addressed, the ego framed.
+_NAMING_THE_EGO = frozenset(("i", "we", "me", "us", "my", "our", "you", "your", "yourself", "ego"))
 #: The kinds the ego may be (it drives or rides: never on foot).
 _EGO_KINDS = frozenset(("car", "van", "truck", "bicycle", "e-scooter"))
+#: The nouns for whoever is at a wheel, said of a person and no vehicle (a closed class).
+_AT_A_WHEEL = frozenset(("driver", "chauffeur", "cabbie", "cabby", "motorist"))
+#: Words before a person that say it is someone else than one already there ("the other driver").
+_SOMEONE_ELSE = frozenset(("other", "another", "second", "third", "oncoming", "opposing"))
 
 
 class _Said(Protocol):
@@ -50,6 +69,25 @@ class _Said(Protocol):
     det: str
     seen: bool
     object_of: object
+    word: str
+    named_after: str
+    relation: str | None
+    side: str | None
+    lane_side: str | None
+    kerb: bool
+    kerb_side: str | None
+    from_arm: bool
+    beside: bool
+    said: set
+
+
+def ego_unnamed(tokens: list[str], clauses: list) -> bool:
+    """Whether the reader's ``tokens`` and ``clauses`` name no ego at all: no narrator in the scene, no
+    "you", no ego phrase ("the host vehicle", "the VUT") and none framed as "the ego". A third-person
+    report then brings its own vehicle in as new ("a resident driving home at 30 mph was hit when
+    ..."), and "new" no longer sets a vehicle apart from the ego."""
+    said = any(m.slot == "actor" and m.value == "ego" for _, mentions in clauses for m in mentions)
+    return not said and not (_NAMING_THE_EGO & set(tokens))
 
 
 def perceived(verb: str) -> bool:
@@ -70,7 +108,7 @@ def _placed(a: _Said) -> bool:
     return bool(a.passed or a.followed or a.hides or a.parked or a.stationary or a.group or a.member_named)
 
 
-def _double(a: _Said, spec: ActorSpec, others: list) -> bool:
+def _double(a: _Said, spec: ActorSpec, others: list, unnamed: bool = False) -> bool:
     """Whether road user ``spec`` (gathered as ``a``) is read as the ego would be: a kind the ego may
     be, nowhere said, moving at a speed of its own or none said (not standing, not "slow-moving"),
     doing only what the ego does, and nothing to another road user (none is its verb's object)."""
@@ -83,19 +121,23 @@ def _double(a: _Said, spec: ActorSpec, others: list) -> bool:
         and names <= _EGO_LIKE
         and names != {"stop"}
         and not _placed(a)
-        and a.det not in _NEW
+        and (a.det not in _NEW or (unnamed and spec.speed_mps is not None))
         and not a.seen
         and not any(x.object_of is a for x in others)
     )
 
 
-def merge_into_ego(actors: list, reading: Reading) -> list:
+def merge_into_ego(actors: list, reading: Reading, unnamed: bool = False) -> list:
     """Take the one road user of ``reading`` that is the ego said again (see the module) out of its
     road users; ``actors`` are what the reader gathered of them, in the same order. Its speed becomes
     the ego's where the ego has none, and a gap said of it is the gap to the one road user it meets
-    (where there is one, with no gap of its own). Returns ``actors`` without it."""
+    (where there is one, with no gap of its own). ``unnamed``: nothing in the text names the ego (no
+    narrator, no "you", no vehicle framed as the ego), so one brought in as new may be it too.
+    Returns ``actors`` without it."""
     specs = reading.actors
     doubles = [k for k, (a, s) in enumerate(zip(actors, specs)) if _double(a, s, actors)]
+    if not doubles and unnamed:  # (one not new is the ego before any brought in as new)
+        doubles = [k for k, (a, s) in enumerate(zip(actors, specs)) if _double(a, s, actors, unnamed)]
     deeds = [s for s in specs if not {b[0] for b in s.behaviours} <= _EGO_LIKE or s.relation is not None]
     if len(doubles) != 1 or not deeds or len(specs) < 2:
         return actors
@@ -113,3 +155,82 @@ def merge_into_ego(actors: list, reading: Reading) -> list:
             s.obstacle -= 1
     reading.actors = rest
     return [a for j, a in enumerate(actors) if j != k]
+
+
+def _ego_driver(a: _Said, spec: ActorSpec) -> bool:
+    """Whether road user ``spec`` (gathered as ``a``) is the ego's driver in a passenger's story: a
+    person at a wheel named with no vehicle, nowhere said (no start, side, lane, kerb, side road), not
+    new to the story, not someone else, not watched from outside."""
+    return (
+        spec.kind == "car"
+        and a.word in _AT_A_WHEEL
+        and a.det not in _NEW
+        and a.named_after not in _SOMEONE_ELSE
+        and a.relation is None
+        and not (a.side or a.lane_side or a.kerb or a.kerb_side or a.from_arm or a.beside)
+        and not ({"ahead", "behind", "oncoming"} & a.said)
+        and not _placed(a)
+        and not a.seen
+    )
+
+
+def merge_ego_driver(actors: list, reading: Reading) -> list:
+    """Take the one road user of ``reading`` that is the ego's driver in a passenger's story (see the
+    module) out of its road users; ``actors`` are what the reader gathered of them, in the same order.
+    Its speed becomes the ego's where the ego has none, and its turn the ego's route where none was
+    read. Returns ``actors`` without it."""
+    specs = reading.actors
+    drivers = [k for k, (a, s) in enumerate(zip(actors, specs)) if _ego_driver(a, s)]
+    if len(drivers) != 1 or len(specs) < 2:
+        return actors
+    k = drivers[0]
+    if any(s.obstacle == k for s in specs):
+        return actors  # (what another swerves round is in the road, not the ego)
+    driver = specs[k]
+    if reading.ego_speed_mps is None and driver.speed_mps is not None and driver.speed_mps > 0:
+        reading.ego_speed_mps = driver.speed_mps
+    turns = [b[1].get("turn") for b in driver.behaviours if b[0] == "forced_turn"]
+    if reading.ego_route is None and turns[:1] in (["left"], ["right"]):
+        reading.ego_route = turns[0]  # ("When driver turning right at the junction, ...")
+    for s in specs:
+        if s.obstacle is not None and s.obstacle > k:
+            s.obstacle -= 1
+    reading.actors = [s for j, s in enumerate(specs) if j != k]
+    return [a for j, a in enumerate(actors) if j != k]
+
+
+def _said_again_as_both(group: list, spec_of: dict, others: list) -> bool:
+    """Whether road users ``group`` (two, first named after "both") are the ego and the one already
+    in the story said together: "both" names two the story has (it brings no one new in), of kinds
+    the ego may be, nowhere said, doing only what the ego does and nothing to anyone else."""
+    return (
+        len(group) == 2
+        and all(id(a) in spec_of and a.named_after == "both" for a in group)
+        and all(
+            spec_of[id(a)].kind in _EGO_KINDS
+            and {b[0] for b in spec_of[id(a)].behaviours} <= _EGO_LIKE
+            and a.relation is None
+            and not (a.side or a.lane_side or a.kerb or a.kerb_side or a.from_arm or a.beside or a.seen)
+            and not any(x.object_of is a for x in others)
+            for a in group
+        )
+    )
+
+
+def drop_both_said_again(actors: list, reading: Reading) -> list:
+    """Take out of ``reading`` the two road users named with "both" after someone acted ("a van cut
+    the corner onto my side. Both drivers braked hard", "both cars stopped inches apart"): they are the
+    ego and the one already there, said together, not two more. ``actors`` are what the reader gathered
+    of its road users, in the same order. Returns ``actors`` without them."""
+    specs = reading.actors
+    spec_of = {id(a): s for a, s in zip(actors, specs)}
+    for a in actors:
+        group = a.group or []
+        rest = [x for x in actors if all(x is not g for g in group)]
+        if group and group[0] is a and rest and _said_again_as_both(group, spec_of, actors):
+            if any(s.obstacle is not None for s in specs):
+                return actors  # (what another swerves round is in the road)
+            kept = [k for k, x in enumerate(actors) if all(x is not g for g in group)]
+            reading.actors = [specs[k] for k in kept]
+            return [actors[k] for k in kept]
+    return actors

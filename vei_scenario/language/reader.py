@@ -263,6 +263,7 @@ class _Actor:
     end_gap: str | None = None  # the behaviour its distance is the end gap of ("overtakes, 3 m to spare")
     word: str = ""  # the words it was first named by
     det: str = ""  # the determiner it was first named with ("a", "the", "our"; none: "Bus was doing 45")
+    named_after: str = ""  # the word right before its first name ("other" in "the other driver")
     seen: bool = False  # first named as what someone sees ("saw the car hit a cyclist"): watched, from outside
     acted_on: bool = False  # the object of someone's verb ("overtakes a truck")
     pavement: bool = False  # said to be on a pavement (off the road), not in a cycle lane
@@ -1858,6 +1859,7 @@ def _read(text: str) -> Reading:
                                 followed=lead,
                                 word=m.words,
                                 det=_phrase_det(scanned, m.start),
+                                named_after=m.prev,
                                 seen=ego_double.perceived(m.prev),
                             )
                             for _ in range(count)
@@ -2489,6 +2491,8 @@ def _read(text: str) -> Reading:
                 spec.relation = other.relation
     if ego_follows and actors and r.ego_speed_mps is None and actors[0].speed_mps:
         r.ego_speed_mps = actors[0].speed_mps  # "Following a truck at 60 km/h": both at that speed
+    if not ego_double.names_the_ego(text):  # (before a braking driver is taken for one to swerve round)
+        actors = ego_double.merge_ego_driver(actors, r)  # ("Driver braked hard and our cases slid everywhere")
     _parked(actors, r.actors)
     _cut_outs(r.actors, {k for k, a in enumerate(actors) if a.double_parked and a.kind in VEHICLES})
     _criticality_said_apart(clauses, r.actors)
@@ -2510,7 +2514,8 @@ def _read(text: str) -> Reading:
     )
     r.intent = decide(cues, sudden)  # (the outcome reader alone decides contact: not "hit the horn", "hit the brakes")
     if not ego_double.names_the_ego(text):
-        actors = ego_double.merge_into_ego(actors, r)  # ("Bus was doing around 45": the ego, named as a bus)
+        actors = ego_double.merge_into_ego(actors, r, ego_double.ego_unnamed(scanned, clauses))  # ("Bus was doing 45")
+    actors = ego_double.drop_both_said_again(actors, r)  # ("a van cut the corner. Both drivers braked hard")
     told = {w for cue in cues for w in cue.words.split()}  # (words the outcome was read from)
     r.ignored = [w for w in r.ignored if w not in told]
     if r.intent is None and not r.actors:
