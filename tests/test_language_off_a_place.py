@@ -129,3 +129,19 @@ def test_rh_kerb_crossing() -> None:
 )
 def test_a_rider_out_of_a_place_crosses_unless_it_rides_on(text: str, first: str) -> None:
     assert _crosser(text).behaviours[0][0] == first
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Ego at 30 km/h. An e-scooter rider enters the crosswalk from the west curb against the signal.",
+        "I was doing 20 mph when a jogger entered the zebra crossing from the right just ahead of me.",
+        "A pedestrian entered the pelican crossing as I approached at 40 km/h.",
+    ],
+)
+def test_entering_a_foot_crossing_is_crossing_on_it(text: str) -> None:
+    assert [b[0] for b in _crosser(text).behaviours] == ["cross_in_front"]
+
+
+def test_waiting_at_a_foot_crossing_is_no_entering() -> None:
+    assert "cross_in_front" not in [b[0] for b in _crosser("A cyclist was waiting at the crosswalk.").behaviours]

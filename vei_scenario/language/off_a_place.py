@@ -31,7 +31,7 @@ from vei_scenario.language.lemmas import lemmas
 _WALKERS_AND_RIDERS = frozenset(("pedestrian", "bicycle", "e-scooter", "unknown"))
 #: Mentions that stand for a road user named before (whose kind the reader settles later).
 _STAND_INS = frozenset(("pronoun", "member"))
-#: Words that say "the one just named" or "someone" and may be a place's determiner, as articles and possessives.
+#: Articles, demonstratives and possessives: a place beside the road is named with one ("the promenade").
 _DETERMINERS = frozenset(
     ("the", "a", "an", "this", "that", "these", "those", "his", "her", "their", "its", "our", "my", "your", "some")
 )

@@ -2416,7 +2416,8 @@ def _read(text: str) -> Reading:
             and behaviours[0][0] in ("cut_in", "forced_turn")
         ):
             # "riding on the sidewalk, then turning into the road before our car": it crosses into the path;
-            # so does one coming out of a place beside the road ("out of a driveway", "out of a farm track")
+            # so does one coming out of a place beside the road ("out of a driveway", "out of a farm track and
+            # across"), unless it then rides on along the road
             behaviours = [("cross_in_front", {}, *behaviours[0][2:])] + behaviours[1:]
         crossing_at = next((k for k, b in enumerate(behaviours) if b[0] == "cross_in_front"), None)
         before = {b[0] for b in behaviours[:crossing_at]} if crossing_at else set()
