@@ -60,7 +60,7 @@ def test_the_red_as_a_colour_or_a_place_to_wait_is_no_run(text):
         ),
         (
             "At 15 mph I had a cyclist come out of a driveway on the left just in front of me.",
-            "cut_in",
+            "cross_in_front",  # (a rider out of a place beside the road crosses: test_language_off_a_place)
             "roadside_left",
         ),
     ],

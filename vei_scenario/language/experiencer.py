@@ -45,8 +45,10 @@ _BEFORE_NOUN = frozenset(("a", "an", "the", "this", "that", "some", "one", "of",
 
 def _bare_verb(word: str) -> bool:
     """Whether ``word`` is a verb in its bare form ("pull", "come", "dash"), not a past, a participle or
-    a third person ("pulled", "coming", "pulls"): only a bare verb makes "had X VERB" this construction."""
-    return word in lemmas(word).get("VERB", ()) and not word.endswith(("ed", "ing"))
+    a third person ("pulled", "coming", "pulls"): only a bare verb makes "had X VERB" this construction.
+    A verb whose bare form ends so ("swing", "bring", "speed") is its own only lemma."""
+    verbs = lemmas(word).get("VERB", ())
+    return word in verbs and (not word.endswith(("ed", "ing")) or verbs == (word,))
 
 
 def _experienced_at(tokens: list[str], start: int) -> str | None:
@@ -73,6 +75,16 @@ def _experienced_at(tokens: list[str], start: int) -> str | None:
             continue
         return None
     return None
+
+
+def had_doing(tokens: list[str], j: int, verb: int) -> bool:
+    """Whether the noun phrase that the article at ``tokens[j]`` opens follows a verb of having, letting
+    or seeing and is followed by a bare verb at ``tokens[verb]`` ("had a Voi rider swing off", "saw a
+    figure dart out"): a noun the reader has no word for there is the subject of that verb, as a road
+    user's noun is. Without the bare verb it is what was had or seen ("had a fright today", "got a
+    passenger")."""
+    bare = verb < len(tokens) and _bare_verb(tokens[verb])
+    return bare and _experienced_at(tokens, j + 1) in ("bare", "seen")
 
 
 def _stood_before(tokens: list[str], i: int) -> bool:

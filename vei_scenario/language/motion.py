@@ -2137,13 +2137,15 @@ def on_a_foot_crossing(clauses: list, tokens: list[str]) -> list:
         for k, m in enumerate(mentions):
             if m.slot != "kerb" or not set(m.words.split()) & _FOOT_CROSSING:
                 continue
-            if _preposition_before(tokens, m.start) not in _IN_IT:
-                continue
+            before = _preposition_before(tokens, m.start)
+            entering = bool(set(lemmas(before).get("VERB", ())) & _ENTER)
+            if before not in _IN_IT and not entering:
+                continue  # (in it, or "entered the crosswalk": going into a crossing is going across on it)
             at = next((n for n in range(k - 1, -1, -1) if mentions[n].slot in ("actor", "pronoun")), None)
             if at is None or mentions[at].slot != "actor" or mentions[at].value not in _CROSSERS:
                 continue
             end = next((n for n in range(k + 1, len(mentions)) if mentions[n].slot in ("actor", "pronoun")), None)
-            own = mentions[at + 1 : end]
+            own = [x for x in mentions[at + 1 : end] if not (entering and x.words == before)]  # (not "enters")
             if any(x.slot in ("behaviour", "stationary", "unknown_verb", "ego_verb", "turn") for x in own):
                 continue  # (it does something said: that stands)
             # said as its participle right after it ("a man crossing on the zebra"), so the crossing is

@@ -240,6 +240,11 @@ def _headings(text: str) -> str:
 
 
 _SIDE = {"l": "left", "r": "right"}
+#: What a hand or side is said of: a place beside the road, a lane, a side, a turn or an arm.
+_SIDED = (
+    r"arm|lane|lanes|side|kerb|curb|edge|pavement|footway|footpath|sidewalk|verge|shoulder|turn|bend|junction|exit|"
+    r"side road|side street|carriageway"
+)
 #: Shorthand of radio reports, notes and chat, said in full ("M/bike from L arm", "ego veh NB",
 #: "lt traffic", "dual c/way", "doesnt", "nite"): the same words every writer's shorthand stands for.
 #: "Heads up" as a notice ("Heads up:", "a heads-up for tomorrow's run", "quick heads up on ..."), said
@@ -284,6 +289,12 @@ _SHORTHAND = [
             m.group(0) if m.group(1)[0] == m.group(2)[0] else f"from {_SIDE[m.group(1)[0]]} to {_SIDE[m.group(2)[0]]}"
         ),
     ),
+    # a hand or side said short before what it is of ("RH kerb", "L/H lane", "the LHS", "N/S footway", "O/S
+    # lane"): left-hand, right-hand, nearside, offside ("RH 88 %", relative humidity, names no place)
+    (re.compile(r"\b(l|r)(?:/h|h)\.?(?= (?:" + _SIDED + r")\b)"), lambda m: f"{_SIDE[m.group(1)]}-hand"),
+    (re.compile(r"\b(on|to|from|at) the (l|r)hs\b"), lambda m: f"{m.group(1)} the {_SIDE[m.group(2)]}-hand side"),
+    (re.compile(r"\bn/s\.?(?= (?:" + _SIDED + r")\b)"), "nearside"),
+    (re.compile(r"\bo/s\.?(?= (?:" + _SIDED + r")\b)"), "offside"),
     # a single L or R where a side is said: "from L arm", "lane to the R", "on the L", "R turn"
     (re.compile(r"\b(from|to|on|at|in|the|turning|turns|turn)( the)? l\b(?!')"), r"\1\2 left"),
     (re.compile(r"\b(from|to|on|at|in|the|turning|turns|turn)( the)? r\b(?!')"), r"\1\2 right"),

@@ -40,6 +40,7 @@ from vei_scenario.language import (
     lane_moves,
     motion,
     narrator_vehicle,
+    off_a_place,
     protagonist,
     run_on,
     scenery,
@@ -88,6 +89,7 @@ from vei_scenario.language.who import (
     own_vehicles,
     proper_names,
     rider_noun,
+    rides_next,
     shared_scooters,
     standing_names_a_kind,
     towed,
@@ -877,7 +879,12 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
                     verb = False  # ("On 3 March a bus pulled out": a date, not the verb "march")
                 if i + 1 < len(tokens) and _modifies_actor(tokens, i + 1):
                     verb = False  # a word naming what kind before an actor ("a police car", "a Ford Transit van")
-                elif _new_unknown_subject(tokens, i) and "VERB" not in pos and _does_soon(tokens, i + 1):
+                elif (
+                    _new_unknown_subject(tokens, i)
+                    and "VERB" not in pos
+                    and _does_soon(tokens, i + 1)
+                    and not rides_next(tokens, i + 1)  # ("a Voi rider": what is ridden, the rider the subject)
+                ):
                     # "a unicorn runs out": someone the reader has no word for does something: a road
                     # user of its own (its kind read from what it does), not whoever was named last
                     clauses[-1][1].append(_Mention("actor", UNKNOWN_KIND, tok, i, prev, end=i + 1, det=det))
@@ -1164,7 +1171,9 @@ def _new_unknown_subject(tokens: list[str], i: int) -> bool:
     """Whether the word at ``i`` names someone new at the start of a clause: "a", "an" or "one" before
     it ("one aunty was crossing", as people say "one" for "a"), past at most two words the reader has
     no entry for ("when a black BMW ..."), and a clause opening before that. A noun with an article
-    right after it is no subject ("One day a heron ...": the day is when)."""
+    right after it is no subject ("One day a heron ...": the day is when). After "had", "got", "let"
+    or a verb of seeing ("she had a Voi rider swing off the path") it is the subject of the bare verb
+    that follows, as a road user named there is (:mod:`experiencer`)."""
     if tokens[i + 1 : i + 2] and tokens[i + 1] in _DETERMINERS:
         return False
     j = i - 1
@@ -1176,7 +1185,7 @@ def _new_unknown_subject(tokens: list[str], i: int) -> bool:
         return False
     if tokens[j] == "one" and not _finite_next(tokens, i + 1):
         return False  # ("One motorist heading east tells us ...": one picked out of many, who reports)
-    return _clause_opens_before(tokens, j)
+    return _clause_opens_before(tokens, j) or experiencer.had_doing(tokens, j, i + 1)
 
 
 #: Words a clause opens with before a new road user that is its subject ("Also a ...", "Plus one ...").
@@ -1574,6 +1583,7 @@ def _read(text: str) -> Reading:
     text, aside = only_the_scene(text, lambda part: _actor_noun_in(part.lower()))  # (what is not the scene)
     clauses, ignored, read_as, scanned = scan(text)
     ignored[:0] = [w for w in aside if w not in FUNCTION_WORDS]
+    clauses = off_a_place.onto_the_road_off_a_place(clauses, scanned, FUNCTION_WORDS)  # ("shot off the promenade")
     set_by_the_ego = ego_speed.right_after_the_ego(clauses)  # ("lets the ego (50 km/h) pass"), as scanned
     clauses = lane_moves.before_as_a_place(clauses, scanned)  # ("the bus before ego car": in front of it)
     clauses = sides.narrator_lane(sides.relate_headings(clauses))
@@ -2412,14 +2422,17 @@ def _read(text: str) -> Reading:
         overtaking = any(b[0] == "overtake" for b in behaviours)  # (it rides along, and out to pass)
         if a.kind in RIDERS and overtaking:
             behaviours = [b for b in behaviours if b[0] != "cross_in_front"] or behaviours  # ("... right into my path")
+        joins = a.along or any(b[0] in _GOING_ON for b in behaviours[1:])  # (and rides on along the road)
         if (
             a.kind in RIDERS
-            and a.pavement
+            and (a.pavement or (a.out_of_place and not joins))
             and not overtaking
             and behaviours
             and behaviours[0][0] in ("cut_in", "forced_turn")
         ):
-            # "riding on the sidewalk, then turning into the road before our car": it crosses into the path
+            # "riding on the sidewalk, then turning into the road before our car": it crosses into the path;
+            # so does one coming out of a place beside the road ("out of a driveway", "out of a farm track and
+            # across"), unless it then rides on along the road
             behaviours = [("cross_in_front", {}, *behaviours[0][2:])] + behaviours[1:]
         crossing_at = next((k for k, b in enumerate(behaviours) if b[0] == "cross_in_front"), None)
         before = {b[0] for b in behaviours[:crossing_at]} if crossing_at else set()

@@ -465,6 +465,16 @@ def rider_noun(noun: str) -> bool:
     return noun.endswith("er") and any(s in _RIDING for s in (noun[:-1], noun[:-2], noun[:-2] + "e"))
 
 
+def rides_next(tokens: list[str], i: int) -> bool:
+    """Whether ``tokens[i]`` names a rider ("rider", "riders"), so that a word the reader has no entry
+    for right before it says what or whose the ride is ("a Voi rider", "a delivery rider", "a Brompton
+    rider"), not who: the rider is the road user."""
+    if i >= len(tokens):
+        return False
+    noun = tokens[i]
+    return rider_noun(min(lemmas(noun).get("NOUN", (noun,))))
+
+
 def unnamed_subject(
     text: str,
     known: Callable[[str], bool],
