@@ -42,6 +42,7 @@ from vei_scenario.language import (
     narrator_vehicle,
     protagonist,
     run_on,
+    said_again,
     scenery,
     sides,
     whose_act,
@@ -72,6 +73,7 @@ from vei_scenario.language.normalise import NUMBER_WORDS, normalise
 from vei_scenario.language.outcome import decide, into_road_user, outcome_cues
 from vei_scenario.language.reading import ActorSpec, NotUnderstood, Reading
 from vei_scenario.language.route import ego_route, turn_taken_at
+from vei_scenario.language.said_again import plural
 from vei_scenario.language.scene import only_the_scene, quoted_speakers
 from vei_scenario.language.stated import (
     stated_clock,
@@ -534,6 +536,45 @@ def _best(tokens: list[str], i: int) -> tuple[str, ...] | None:
 
 
 _DETERMINERS = {"the", "a", "an", "its", "our", "my", "their", "his", "her", "this", "that", "another", "some"}
+
+
+#: How many plain modifiers may stand between a road user's noun and the determiner of its phrase.
+_MODIFIERS_BEFORE = 2
+
+
+def _plain_modifier(word: str) -> bool:
+    """Whether ``word`` may stand inside a noun phrase between its determiner and its noun: an
+    adjective, a participle or a noun used as one ("silver", "opposing", "rental", "parked"), or a
+    name no dictionary has ("Altima"); not a function word, a number, punctuation or a road user's
+    noun (that one heads a phrase of its own)."""
+    if word in FUNCTION_WORDS or not word[:1].isalpha() or _actor_word(word):
+        return False
+    pos = _pos(word)
+    return not pos or bool(pos & {"ADJ", "NOUN"}) or word.endswith(("ing", "ed"))
+
+
+#: Determiners that point back to one named before, read past a phrase's modifiers.
+_POINTING_BACK = frozenset(("the", "this", "that", "its", "our", "my", "their", "his", "her"))
+
+
+def _phrase_determiner(tokens: list[str], i: int) -> str:
+    """The determiner that points back from the start of the noun phrase of the road-user noun at
+    ``i``, past a few plain modifiers ("the opposing vehicle", "the parked lorry", "this grey Golf"):
+    whether it is said again is the phrase's, not only the word's right before it. Empty where none
+    opens it. One that brings a road user in new ("a silver hatchback") is left to the word right
+    before the noun, as the rules that tell a new road user from the ego's own vehicle read it ("A
+    silver hatchback doing 40 braked when ...": the story's own vehicle)."""
+    opener = _phrase_opener(tokens, i)
+    return opener if opener in _POINTING_BACK else ""
+
+
+def _phrase_opener(tokens: list[str], i: int) -> str:
+    """The word before the noun phrase of the noun at ``i``, past up to :data:`_MODIFIERS_BEFORE`
+    plain modifiers ("a skip lorry": "a"); empty at the start of the text."""
+    j = i - 1
+    while j >= 0 and i - j <= _MODIFIERS_BEFORE and _plain_modifier(tokens[j]):
+        j -= 1
+    return tokens[j] if j >= 0 else ""
 
 
 def _relation_length(tokens: list[str], k: int) -> int:
@@ -1021,6 +1062,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             clauses[-1][1].append(_Mention(slot, value, words, i, sides.before_the_order(tokens, i) or prev, nxt,
                                            i + used, det))  # fmt: skip
         elif slot != "noise":
+            det = det or (_phrase_determiner(tokens, i) if slot == "actor" else "")  # ("the opposing vehicle")
             clauses[-1][1].append(_Mention(slot, value, words, i, prev, nxt, i + used, det))
         if adverb is not None and (adverb,) in TABLE and TABLE[(adverb,)][0] in ("criticality", "speed_word"):
             a_slot, a_value = TABLE[(adverb,)]
@@ -1395,6 +1437,26 @@ def _bare(m) -> bool:
     """Whether an actor is named as a test engineer's notes name it again: the singular noun alone,
     opening its sentence or clause, no article ("Cyclist turns left", "... because bus go slow")."""
     return m.start == 0 or m.prev in ("", ".", ";", ":", ",") + _CLAUSE_OPENERS
+
+
+#: Words before a noun that tell one road user from another or count them: never a road user said again.
+_TELLING_APART = frozenset(
+    "one two three four five six seven eight nine ten other second third next last each every any no "
+    "more several many few both all".split()
+)
+
+
+def _said_again_bare(tokens: list[str], m, nxt) -> bool:
+    """Whether road-user mention ``m``, with no determiner, is a singular noun as notes and reports
+    write one they have named before, without its article ("oncoming HGV ... into path of HGV",
+    "collided with cyclist"): notes drop "the", and a singular count noun without any determiner is
+    never new in them. Not one counted or told apart ("one car", "other car", "2nd van"), nor one
+    placed right after its noun ("car from the right"), which may be another of its kind."""
+    before = tokens[m.start - 1] if m.start else ""
+    opener = _phrase_opener(tokens, m.start)  # ("round a skip lorry": a determiner past a modifier, new)
+    placed = nxt is not None and nxt.start == m.end and nxt.slot in ("relation", "side", "lane")
+    told_apart = before in _TELLING_APART or before[:1].isdigit() or opener in _DETERMINERS | _TELLING_APART
+    return not plural(m.words.split()[-1]) and not told_apart and not placed
 
 
 #: Words that open a clause, after which a noun without its article is the clause's subject.
@@ -1812,6 +1874,7 @@ def _read(text: str) -> Reading:
                         and (
                             m.det in ("the", "this", "that", "its", "our", "my")
                             or (not m.det and (_bare(m) or m.start in owned))  # ("speed of scooter 20 km/h")
+                            or (not m.det and _said_again_bare(scanned, m, nxt))  # ("into path of HGV")
                         )
                     ):
                         who = same[-1]  # ("Target: cyclist, 30 m ahead. Cyclist turns left.": the same one)
@@ -2496,6 +2559,7 @@ def _read(text: str) -> Reading:
         b[2] == "dangerous" and b[0] not in _GOING_ON for a in r.actors for b in a.behaviours
     )
     r.intent = decide(cues, sudden)  # (the outcome reader alone decides contact: not "hit the horn", "hit the brakes")
+    actors = said_again.merge_said_again(actors, r)  # ("a car ran the red. This guy in a red SUV ...": one)
     if not ego_double.names_the_ego(text):
         actors = ego_double.merge_into_ego(actors, r)  # ("Bus was doing around 45": the ego, named as a bus)
     told = {w for cue in cues for w in cue.words.split()}  # (words the outcome was read from)
@@ -3480,6 +3544,7 @@ def _apply(m, who, r, link, added) -> None:
             a.arm = True  # (not "on the crossing just after the exit": a landmark, not where it comes from)
             a.from_arm = a.from_arm or m.prev in ("from", "out")  # (not "over the mouth of the side road")
         elif m.slot == "stationary":
-            a.stationary = True
-            a.parked = a.parked or m.words.split()[0] in ("parked", "park", "double-parked", "double")
+            parked = m.words.split()[0] in ("parked", "park", "double-parked", "double")
+            a.parked = a.parked or (parked and not a.stationary)  # (where it stands was said first: "a lorry
+            a.stationary = True  # parked in the lane ... the parked lorry" stays in the lane)
             a.double_parked = a.double_parked or m.words.split()[0] in ("double-parked", "double")
