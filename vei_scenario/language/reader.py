@@ -542,13 +542,15 @@ _DETERMINERS = {"the", "a", "an", "its", "our", "my", "their", "his", "her", "th
 _MODIFIERS_BEFORE = 2
 
 
-def _plain_modifier(word: str) -> bool:
+def _plain_modifier(word: str, read_words: bool = False) -> bool:
     """Whether ``word`` may stand inside a noun phrase between its determiner and its noun: an
-    adjective, a participle or a noun used as one ("silver", "opposing", "rental", "parked"), or a
-    name no dictionary has ("Altima"); not a function word, a number, punctuation or a road user's
-    noun (that one heads a phrase of its own)."""
-    if word in FUNCTION_WORDS or not word[:1].isalpha() or _actor_word(word):
-        return False
+    adjective, a participle or a noun used as one ("silver", "grey", "rental", "injured"), or a name
+    no dictionary has ("Altima"); not a function word, a number, punctuation or a road user's noun
+    (that one heads a phrase of its own), nor a word the reader reads as a place or a state
+    ("oncoming", "lead", "parked"): in "the oncoming lorry" the place may pick the road user out
+    as well as the mention before, and those words are left to the rules that read them."""
+    if word in FUNCTION_WORDS or not word[:1].isalpha() or _actor_word(word) or (word,) in TABLE and not read_words:
+        return False  # (a place or state the reader reads picks its road user out: "the oncoming lorry")
     pos = _pos(word)
     return not pos or bool(pos & {"ADJ", "NOUN"}) or word.endswith(("ing", "ed"))
 
@@ -559,7 +561,7 @@ _POINTING_BACK = frozenset(("the", "this", "that", "its", "our", "my", "their", 
 
 def _phrase_determiner(tokens: list[str], i: int) -> str:
     """The determiner that points back from the start of the noun phrase of the road-user noun at
-    ``i``, past a few plain modifiers ("the opposing vehicle", "the parked lorry", "this grey Golf"):
+    ``i``, past a few plain modifiers ("the white van", "the injured cyclist", "this grey Golf"):
     whether it is said again is the phrase's, not only the word's right before it. Empty where none
     opens it. One that brings a road user in new ("a silver hatchback") is left to the word right
     before the noun, as the rules that tell a new road user from the ego's own vehicle read it ("A
@@ -568,11 +570,12 @@ def _phrase_determiner(tokens: list[str], i: int) -> str:
     return opener if opener in _POINTING_BACK else ""
 
 
-def _phrase_opener(tokens: list[str], i: int) -> str:
+def _phrase_opener(tokens: list[str], i: int, read_words: bool = False) -> str:
     """The word before the noun phrase of the noun at ``i``, past up to :data:`_MODIFIERS_BEFORE`
-    plain modifiers ("a skip lorry": "a"); empty at the start of the text."""
+    plain modifiers ("a skip lorry": "a"), and with ``read_words`` past the modifiers the reader reads
+    as a place or a state too ("the oncoming lorry": "the"); empty at the start of the text."""
     j = i - 1
-    while j >= 0 and i - j <= _MODIFIERS_BEFORE and _plain_modifier(tokens[j]):
+    while j >= 0 and i - j <= _MODIFIERS_BEFORE and _plain_modifier(tokens[j], read_words):
         j -= 1
     return tokens[j] if j >= 0 else ""
 
@@ -1062,7 +1065,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             clauses[-1][1].append(_Mention(slot, value, words, i, sides.before_the_order(tokens, i) or prev, nxt,
                                            i + used, det))  # fmt: skip
         elif slot != "noise":
-            det = det or (_phrase_determiner(tokens, i) if slot == "actor" else "")  # ("the opposing vehicle")
+            det = det or (_phrase_determiner(tokens, i) if slot == "actor" else "")  # ("the injured cyclist")
             clauses[-1][1].append(_Mention(slot, value, words, i, prev, nxt, i + used, det))
         if adverb is not None and (adverb,) in TABLE and TABLE[(adverb,)][0] in ("criticality", "speed_word"):
             a_slot, a_value = TABLE[(adverb,)]
@@ -1453,7 +1456,7 @@ def _said_again_bare(tokens: list[str], m, nxt) -> bool:
     never new in them. Not one counted or told apart ("one car", "other car", "2nd van"), nor one
     placed right after its noun ("car from the right"), which may be another of its kind."""
     before = tokens[m.start - 1] if m.start else ""
-    opener = _phrase_opener(tokens, m.start)  # ("round a skip lorry": a determiner past a modifier, new)
+    opener = _phrase_opener(tokens, m.start, True)  # ("round a skip lorry", "the oncoming car": not bare)
     placed = nxt is not None and nxt.start == m.end and nxt.slot in ("relation", "side", "lane")
     told_apart = before in _TELLING_APART or before[:1].isdigit() or opener in _DETERMINERS | _TELLING_APART
     return not plural(m.words.split()[-1]) and not told_apart and not placed
@@ -3544,7 +3547,6 @@ def _apply(m, who, r, link, added) -> None:
             a.arm = True  # (not "on the crossing just after the exit": a landmark, not where it comes from)
             a.from_arm = a.from_arm or m.prev in ("from", "out")  # (not "over the mouth of the side road")
         elif m.slot == "stationary":
-            parked = m.words.split()[0] in ("parked", "park", "double-parked", "double")
-            a.parked = a.parked or (parked and not a.stationary)  # (where it stands was said first: "a lorry
-            a.stationary = True  # parked in the lane ... the parked lorry" stays in the lane)
+            a.stationary = True
+            a.parked = a.parked or m.words.split()[0] in ("parked", "park", "double-parked", "double")
             a.double_parked = a.double_parked or m.words.split()[0] in ("double-parked", "double")
