@@ -43,6 +43,7 @@ from vei_scenario.language import (
     off_a_place,
     protagonist,
     run_on,
+    said_again,
     scenery,
     sides,
     whose_act,
@@ -73,6 +74,7 @@ from vei_scenario.language.normalise import NUMBER_WORDS, normalise
 from vei_scenario.language.outcome import decide, into_road_user, outcome_cues
 from vei_scenario.language.reading import ActorSpec, NotUnderstood, Reading
 from vei_scenario.language.route import ego_route, turn_taken_at
+from vei_scenario.language.said_again import plural
 from vei_scenario.language.scene import only_the_scene, quoted_speakers
 from vei_scenario.language.stated import (
     stated_clock,
@@ -539,9 +541,53 @@ def _best(tokens: list[str], i: int) -> tuple[str, ...] | None:
 _DETERMINERS = {"the", "a", "an", "its", "our", "my", "their", "his", "her", "this", "that", "another", "some"}
 
 
+#: How many plain modifiers may stand between a road user's noun and the determiner of its phrase.
+_MODIFIERS_BEFORE = 2
+
+
+def _plain_modifier(word: str, read_words: bool = False) -> bool:
+    """Whether ``word`` may stand inside a noun phrase between its determiner and its noun: an
+    adjective, a participle or a noun used as one ("silver", "grey", "rental", "injured"), or a name
+    no dictionary has ("Altima"); not a function word, a number, punctuation or a road user's noun
+    (that one heads a phrase of its own), nor a word the reader reads as a place or a state
+    ("oncoming", "lead", "parked"): in "the oncoming lorry" the place may pick the road user out
+    as well as the mention before, and those words are left to the rules that read them."""
+    if word in FUNCTION_WORDS or not word[:1].isalpha() or _actor_word(word) or (word,) in TABLE and not read_words:
+        return False  # (a place or state the reader reads picks its road user out: "the oncoming lorry")
+    pos = _pos(word)
+    return not pos or bool(pos & {"ADJ", "NOUN"}) or word.endswith(("ing", "ed"))
+
+
+#: Determiners that point back to one named before, read past a phrase's modifiers.
+_POINTING_BACK = frozenset(("the", "this", "that", "its", "our", "my", "their", "his", "her"))
+
+
+def _phrase_determiner(tokens: list[str], i: int) -> str:
+    """The determiner that points back from the start of the noun phrase of the road-user noun at
+    ``i``, past a few plain modifiers ("the white van", "the injured cyclist", "this grey Golf"):
+    whether it is said again is the phrase's, not only the word's right before it. Empty where none
+    opens it. One that brings a road user in new ("a silver hatchback") is left to the word right
+    before the noun, as the rules that tell a new road user from the ego's own vehicle read it ("A
+    silver hatchback doing 40 braked when ...": the story's own vehicle)."""
+    opener = _phrase_opener(tokens, i)
+    return opener if opener in _POINTING_BACK else ""
+
+
+def _phrase_opener(tokens: list[str], i: int, read_words: bool = False) -> str:
+    """The word before the noun phrase of the noun at ``i``, past up to :data:`_MODIFIERS_BEFORE`
+    plain modifiers ("a skip lorry": "a"), and with ``read_words`` past the modifiers the reader reads
+    as a place or a state too ("the oncoming lorry": "the"); empty at the start of the text."""
+    j = i - 1
+    while j >= 0 and i - j <= _MODIFIERS_BEFORE and _plain_modifier(tokens[j], read_words):
+        j -= 1
+    return tokens[j] if j >= 0 else ""
+
+
 def _phrase_det(tokens: list[str], i: int) -> str:
-    """The determiner of the noun phrase whose noun starts at token ``i``, past the words that describe
-    it ("a little girl", "the big white van", "my 2 kids": "a", "the", "my"); "" where there is none."""
+    """The determiner of the noun phrase whose noun starts at token ``i``, past the words that only
+    describe it ("a little girl", "the big white van", "my 2 kids": "a", "the", "my"); "" where there is
+    none. Stricter than :func:`_phrase_opener`: it stops at a word that may be a verb ("drives the
+    school van"), since a rewritten phrase must not lend a road user a determiner not its own."""
     for j in range(i - 1, max(i - 4, -1), -1):
         word = tokens[j]
         if word in _DETERMINERS:
@@ -1042,6 +1088,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             clauses[-1][1].append(_Mention(slot, value, words, i, sides.before_the_order(tokens, i) or prev, nxt,
                                            i + used, det))  # fmt: skip
         elif slot != "noise":
+            det = det or (_phrase_determiner(tokens, i) if slot == "actor" else "")  # ("the injured cyclist")
             clauses[-1][1].append(_Mention(slot, value, words, i, prev, nxt, i + used, det))
         if adverb is not None and (adverb,) in TABLE and TABLE[(adverb,)][0] in ("criticality", "speed_word"):
             a_slot, a_value = TABLE[(adverb,)]
@@ -1418,6 +1465,26 @@ def _bare(m) -> bool:
     """Whether an actor is named as a test engineer's notes name it again: the singular noun alone,
     opening its sentence or clause, no article ("Cyclist turns left", "... because bus go slow")."""
     return m.start == 0 or m.prev in ("", ".", ";", ":", ",") + _CLAUSE_OPENERS
+
+
+#: Words before a noun that tell one road user from another or count them: never a road user said again.
+_TELLING_APART = frozenset(
+    "one two three four five six seven eight nine ten other second third next last each every any no "
+    "more several many few both all".split()
+)
+
+
+def _said_again_bare(tokens: list[str], m, nxt) -> bool:
+    """Whether road-user mention ``m``, with no determiner, is a singular noun as notes and reports
+    write one they have named before, without its article ("oncoming HGV ... into path of HGV",
+    "collided with cyclist"): notes drop "the", and a singular count noun without any determiner is
+    never new in them. Not one counted or told apart ("one car", "other car", "2nd van"), nor one
+    placed right after its noun ("car from the right"), which may be another of its kind."""
+    before = tokens[m.start - 1] if m.start else ""
+    opener = _phrase_opener(tokens, m.start, True)  # ("round a skip lorry", "the oncoming car": not bare)
+    placed = nxt is not None and nxt.start == m.end and nxt.slot in ("relation", "side", "lane")
+    told_apart = before in _TELLING_APART or before[:1].isdigit() or opener in _DETERMINERS | _TELLING_APART
+    return not plural(m.words.split()[-1]) and not told_apart and not placed
 
 
 #: Words that open a clause, after which a noun without its article is the clause's subject.
@@ -1836,6 +1903,7 @@ def _read(text: str) -> Reading:
                         and (
                             m.det in ("the", "this", "that", "its", "our", "my")
                             or (not m.det and (_bare(m) or m.start in owned))  # ("speed of scooter 20 km/h")
+                            or (not m.det and _said_again_bare(scanned, m, nxt))  # ("into path of HGV")
                         )
                     ):
                         who = same[-1]  # ("Target: cyclist, 30 m ahead. Cyclist turns left.": the same one)
@@ -2526,6 +2594,7 @@ def _read(text: str) -> Reading:
         b[2] == "dangerous" and b[0] not in _GOING_ON for a in r.actors for b in a.behaviours
     )
     r.intent = decide(cues, sudden)  # (the outcome reader alone decides contact: not "hit the horn", "hit the brakes")
+    actors = said_again.merge_said_again(actors, r)  # ("a car ran the red. This guy in a red SUV ...": one)
     if not ego_double.names_the_ego(text):
         actors = ego_double.merge_into_ego(actors, r, ego_double.ego_unnamed(scanned, clauses))  # ("Bus was doing 45")
     actors = ego_double.drop_both_said_again(actors, r)  # ("a van cut the corner. Both drivers braked hard")
