@@ -145,3 +145,17 @@ def test_entering_a_foot_crossing_is_crossing_on_it(text: str) -> None:
 
 def test_waiting_at_a_foot_crossing_is_no_entering() -> None:
     assert "cross_in_front" not in [b[0] for b in _crosser("A cyclist was waiting at the crosswalk.").behaviours]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist rode out of the village on the road ahead of us.",
+        "A cyclist rode out of the quarry on the road ahead of us.",
+        "A man on an e-scooter came off the towpath along the road ahead of us.",
+    ],
+)
+def test_going_on_along_the_road_after_leaving_a_place_is_no_crossing(text):
+    """Said to go on along the road first, the road user is already on it: "ahead of us" is where it
+    rides, not a move across in front."""
+    assert all(b[0] != "cross_in_front" for a in read(text).actors for b in a.behaviours)

@@ -82,6 +82,8 @@ _ROAD_PARTS = frozenset(
 _THE_WAY = frozenset(("road", "street", "carriageway", "roadway", "traffic", "path", "way", "lane", "lanes"))
 #: Mentions that name a place or a road user: a noun phrase that runs on into one is that one's.
 _NAMING = frozenset(("kerb", "kerb_side", "place", "map", "actor", "arm", "stationary", "lane_side", "waits"))
+#: Prepositions of going on along a road ("on the road", "down the street"): already on it.
+_ALONG_IT = frozenset(("on", "along", "down", "up"))
 #: The words of a move onto the road in front of someone.
 _IN_FRONT = (("in", "front"), ("ahead", "of"))
 
@@ -140,8 +142,11 @@ def _place_after(tokens: list[str], k: int, read: dict[int, str], function_words
 def _onto_the_road(tokens: list[str], i: int, end: int) -> bool:
     """Whether the words from ``tokens[i]`` to ``tokens[end]`` say a move onto the road: across it,
     into it or into someone's way on it, or in front of someone ("and across the road", "straight
-    into my path", "into the path of the car", "right in front of us")."""
+    into my path", "into the path of the car", "right in front of us"). Going on along the road said
+    first ("rode out of the village on the road ahead of us") is riding on it, no move onto it."""
     for j in range(i, min(end, len(tokens))):
+        if tokens[j] in _ALONG_IT and any(w in _THE_WAY for w in tokens[j + 1 : j + 3]):
+            return False
         if tokens[j] == "across":
             return True
         if tuple(tokens[j : j + 2]) in _IN_FRONT:
