@@ -150,10 +150,16 @@ def merge_into_ego(actors: list, reading: Reading, unnamed: bool = False) -> lis
     rest = [s for j, s in enumerate(specs) if j != k]
     if double.distance_m is not None and len(rest) == 1 and rest[0].distance_m is None:
         rest[0].distance_m = double.distance_m  # ("Bus was doing 40 only 3 m from a cyclist")
-    for s in rest:
+    return _without(actors, reading, k)
+
+
+def _without(actors: list, reading: Reading, k: int) -> list:
+    """``actors`` and ``reading``'s road users without the ``k``-th, the ego said again: the others'
+    obstacles (what they swerve round) keep pointing at the same road users."""
+    for s in reading.actors:
         if s.obstacle is not None and s.obstacle > k:
             s.obstacle -= 1
-    reading.actors = rest
+    reading.actors = [s for j, s in enumerate(reading.actors) if j != k]
     return [a for j, a in enumerate(actors) if j != k]
 
 
@@ -192,11 +198,7 @@ def merge_ego_driver(actors: list, reading: Reading) -> list:
     turns = [b[1].get("turn") for b in driver.behaviours if b[0] == "forced_turn"]
     if reading.ego_route is None and turns[:1] in (["left"], ["right"]):
         reading.ego_route = turns[0]  # ("When driver turning right at the junction, ...")
-    for s in specs:
-        if s.obstacle is not None and s.obstacle > k:
-            s.obstacle -= 1
-    reading.actors = [s for j, s in enumerate(specs) if j != k]
-    return [a for j, a in enumerate(actors) if j != k]
+    return _without(actors, reading, k)
 
 
 def _said_again_as_both(group: list, spec_of: dict, others: list) -> bool:
