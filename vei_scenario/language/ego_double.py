@@ -142,15 +142,25 @@ def merge_into_ego(actors: list, reading: Reading, unnamed: bool = False) -> lis
     if len(doubles) != 1 or not deeds or len(specs) < 2:
         return actors
     k = doubles[0]
-    if any(s.obstacle == k for s in specs):
-        return actors  # (what another swerves round is in the road, not the ego)
+    if not _as_ego(reading, k):
+        return actors
     double = specs[k]
-    if reading.ego_speed_mps is None and double.speed_mps is not None and double.speed_mps > 0:
-        reading.ego_speed_mps = double.speed_mps
     rest = [s for j, s in enumerate(specs) if j != k]
     if double.distance_m is not None and len(rest) == 1 and rest[0].distance_m is None:
         rest[0].distance_m = double.distance_m  # ("Bus was doing 40 only 3 m from a cyclist")
     return _without(actors, reading, k)
+
+
+def _as_ego(reading: Reading, k: int) -> bool:
+    """Whether ``reading``'s ``k``-th road user can be taken for the ego (no other swerves round it:
+    what one swerves round is in the road, not the ego); if so, its speed becomes the ego's where the
+    ego has none."""
+    if any(s.obstacle == k for s in reading.actors):
+        return False
+    taken = reading.actors[k]
+    if reading.ego_speed_mps is None and taken.speed_mps is not None and taken.speed_mps > 0:
+        reading.ego_speed_mps = taken.speed_mps
+    return True
 
 
 def _without(actors: list, reading: Reading, k: int) -> list:
@@ -190,11 +200,9 @@ def merge_ego_driver(actors: list, reading: Reading) -> list:
     if len(drivers) != 1 or len(specs) < 2:
         return actors
     k = drivers[0]
-    if any(s.obstacle == k for s in specs):
-        return actors  # (what another swerves round is in the road, not the ego)
+    if not _as_ego(reading, k):
+        return actors
     driver = specs[k]
-    if reading.ego_speed_mps is None and driver.speed_mps is not None and driver.speed_mps > 0:
-        reading.ego_speed_mps = driver.speed_mps
     turns = [b[1].get("turn") for b in driver.behaviours if b[0] == "forced_turn"]
     if reading.ego_route is None and turns[:1] in (["left"], ["right"]):
         reading.ego_route = turns[0]  # ("When driver turning right at the junction, ...")

@@ -573,14 +573,29 @@ def _phrase_determiner(tokens: list[str], i: int) -> str:
     return opener if opener in _POINTING_BACK else ""
 
 
-def _phrase_opener(tokens: list[str], i: int, read_words: bool = False) -> str:
-    """The word before the noun phrase of the noun at ``i``, past up to :data:`_MODIFIERS_BEFORE`
-    plain modifiers ("a skip lorry": "a"), and with ``read_words`` past the modifiers the reader reads
-    as a place or a state too ("the oncoming lorry": "the"); empty at the start of the text."""
+def _word_before_phrase(tokens: list[str], i: int, describes) -> str:
+    """The word before the noun phrase of the noun at ``i``, past up to :data:`_MODIFIERS_BEFORE` words
+    for which ``describes`` holds; empty at the start of the text."""
     j = i - 1
-    while j >= 0 and i - j <= _MODIFIERS_BEFORE and _plain_modifier(tokens[j], read_words):
+    while j >= 0 and i - j <= _MODIFIERS_BEFORE and describes(tokens[j]):
         j -= 1
     return tokens[j] if j >= 0 else ""
+
+
+def _phrase_opener(tokens: list[str], i: int, read_words: bool = False) -> str:
+    """The word before the noun phrase of the noun at ``i``, past plain modifiers ("a skip lorry": "a"),
+    and with ``read_words`` past the modifiers the reader reads as a place or a state too ("the oncoming
+    lorry": "the")."""
+    return _word_before_phrase(tokens, i, lambda word: _plain_modifier(word, read_words))
+
+
+def _only_describes(word: str) -> bool:
+    """Whether ``word`` can only describe a noun (an adjective, a noun used as one, a number), never
+    be a verb or a determiner ("little", "white", "2"; not "drives", not "the")."""
+    if word in _DETERMINERS:
+        return False
+    pos = _pos(word)
+    return word.isdigit() or "ADJ" in pos or pos == {"NOUN"}
 
 
 def _phrase_det(tokens: list[str], i: int) -> str:
@@ -588,14 +603,8 @@ def _phrase_det(tokens: list[str], i: int) -> str:
     describe it ("a little girl", "the big white van", "my 2 kids": "a", "the", "my"); "" where there is
     none. Stricter than :func:`_phrase_opener`: it stops at a word that may be a verb ("drives the
     school van"), since a rewritten phrase must not lend a road user a determiner not its own."""
-    for j in range(i - 1, max(i - 4, -1), -1):
-        word = tokens[j]
-        if word in _DETERMINERS:
-            return word
-        pos = _pos(word)
-        if not (word.isdigit() or "ADJ" in pos or pos == {"NOUN"}):
-            return ""
-    return ""
+    opener = _word_before_phrase(tokens, i, _only_describes)
+    return opener if opener in _DETERMINERS else ""
 
 
 def _relation_length(tokens: list[str], k: int) -> int:
@@ -2572,7 +2581,8 @@ def _read(text: str) -> Reading:
                 spec.relation = other.relation
     if ego_follows and actors and r.ego_speed_mps is None and actors[0].speed_mps:
         r.ego_speed_mps = actors[0].speed_mps  # "Following a truck at 60 km/h": both at that speed
-    if not ego_double.names_the_ego(text):  # (before a braking driver is taken for one to swerve round)
+    ego_named = ego_double.names_the_ego(text)  # ("... ahead of the ego": no other vehicle is taken for it)
+    if not ego_named:  # (before a braking driver is taken for one to swerve round)
         actors = ego_double.merge_ego_driver(actors, r)  # ("Driver braked hard and our cases slid everywhere")
     _parked(actors, r.actors)
     _cut_outs(r.actors, {k for k, a in enumerate(actors) if a.double_parked and a.kind in VEHICLES})
@@ -2595,7 +2605,7 @@ def _read(text: str) -> Reading:
     )
     r.intent = decide(cues, sudden)  # (the outcome reader alone decides contact: not "hit the horn", "hit the brakes")
     actors = said_again.merge_said_again(actors, r)  # ("a car ran the red. This guy in a red SUV ...": one)
-    if not ego_double.names_the_ego(text):
+    if not ego_named:
         actors = ego_double.merge_into_ego(actors, r, ego_double.ego_unnamed(scanned, clauses))  # ("Bus was doing 45")
     actors = ego_double.drop_both_said_again(actors, r)  # ("a van cut the corner. Both drivers braked hard")
     told = {w for cue in cues for w in cue.words.split()}  # (words the outcome was read from)
