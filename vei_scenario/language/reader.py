@@ -33,6 +33,7 @@ from vei_scenario.language import (
     ego,
     ego_double,
     ego_speed,
+    ego_turner,
     experiencer,
     generic_ego,
     junctions,
@@ -2606,7 +2607,10 @@ def _read(text: str) -> Reading:
     r.intent = decide(cues, sudden)  # (the outcome reader alone decides contact: not "hit the horn", "hit the brakes")
     actors = said_again.merge_said_again(actors, r)  # ("a car ran the red. This guy in a red SUV ...": one)
     if not ego_named:
-        actors = ego_double.merge_into_ego(actors, r, ego_double.ego_unnamed(scanned, clauses))  # ("Bus was doing 45")
+        unnamed = ego_double.ego_unnamed(scanned, clauses)  # (no narrator, no "you", no ego phrase)
+        actors = ego_double.merge_into_ego(actors, r, unnamed)  # ("Bus was doing 45")
+        actors = ego_turner.merge_turner_into_ego(actors, r, unnamed)  # ("the test car turns right; a rider ...")
+        actors = ego_turner.merge_overtaken_into_ego(actors, r, scanned)  # ("a cyclist overtaking the bus")
     actors = ego_double.drop_both_said_again(actors, r)  # ("a van cut the corner. Both drivers braked hard")
     told = {w for cue in cues for w in cue.words.split()}  # (words the outcome was read from)
     r.ignored = [w for w in r.ignored if w not in told]
