@@ -72,3 +72,43 @@ KEPT = [
 @pytest.mark.parametrize(("text", "expected"), KEPT)
 def test_a_turning_vehicle_placed_or_beside_a_narrator_stays_a_road_user(text: str, expected: list[str]) -> None:
     assert kinds(text) == expected
+
+
+#: The vehicle a walker or rider overtakes while it pulls away or goes on, said by different writers:
+#: a court report, a bus company's incident note, a driver's training note.
+OVERTAKEN = [
+    (
+        "Bus pulling out from stop. E-scooter rider overtaking the bus on its offside made contact with the front "
+        "corner.",
+        ["e-scooter"],
+    ),
+    ("Cyclists will often overtake a bus as it pulls away from a stop and then cut in.", ["bicycle"]),
+    (
+        "A double-decker was pulling away from the stop when a cyclist overtaking the bus on the right clipped its "
+        "mirror.",
+        ["bicycle"],
+    ),
+]
+
+
+@pytest.mark.parametrize(("text", "expected"), OVERTAKEN)
+def test_the_vehicle_a_rider_overtakes_as_it_pulls_away_is_the_ego(text: str, expected: list[str]) -> None:
+    assert kinds(text) == expected
+
+
+#: Near misses: the overtaken vehicle is someone else's.
+OVERTAKEN_KEPT = [
+    # the narrator is met: the narrator is the ego
+    ("A cyclist overtook a bus pulling away from the stop and cut in front of me.", ["bicycle", "truck"]),
+    # parked: it stands at the side
+    ("A cyclist overtook a parked bus and swerved.", ["bicycle", "truck"]),
+    # placed ahead of the narrator
+    ("A cyclist overtook the bus ahead of us.", ["bicycle", "truck"]),
+    # slower than the traffic
+    ("A cyclist overtook a slow-moving bus and then braked.", ["bicycle", "truck"]),
+]
+
+
+@pytest.mark.parametrize(("text", "expected"), OVERTAKEN_KEPT)
+def test_an_overtaken_vehicle_placed_or_beside_a_narrator_stays_a_road_user(text: str, expected: list[str]) -> None:
+    assert kinds(text) == expected
