@@ -1,11 +1,11 @@
-"""The ego's own vehicle, told as the one that turns across a walker or rider.
+"""The ego's own vehicle, told as the one that turns across a walker or rider, or that one overtakes.
 
-"A car turning right into Park Avenue hit a rider who came off the pavement", "a lorry driver was
-turning left when a cyclist carried straight on beside him", "the instrumented vehicle turns right
-while an e-scooter rider comes up from behind", "a Tesla came up beside me and turned right across
-me": a report, a case study or a rider's own account is about a motor vehicle that turns across a
-walker or a rider. The scenario is that vehicle's turn with that walker or rider in its way: the
-turning vehicle is the ego, and its turn is the ego's route.
+"A lorry turning left at a crossroads struck a cyclist who had ridden up the inside of its cab", "a
+delivery van was turning right into a side road when it hit a pedestrian", "the instrumented vehicle
+turns right at a T-junction. The driver stops abruptly when an e-scooter rider ... appears": a
+report, a case study or a test log is about a motor vehicle that turns across a walker or a rider.
+The scenario is that vehicle's turn with that walker or rider in its way: the turning vehicle is the
+ego, and its turn is the ego's route.
 
 It is told apart by what the reading holds, not by its words: the one motor vehicle read, whose
 first act is a turn to a side, that nothing places (no start, side, lane, kerb or arm of its own: a
@@ -18,6 +18,12 @@ watches, beside road users that are all walkers or riders. Guards, each with its
 - it is no one's object ("overtook a turning van"): what the story's subject passes is in its road;
 - one brought in as new ("a car turned left across a cyclist") is someone else where the text names
   an ego (a narrator, "you", an ego phrase): the ego, whose story it is, is never new to it.
+
+The same holds for the one motor vehicle a walker or rider overtakes while it only pulls away or goes
+on ("collided with a cyclist who was overtaking the bus on its offside", "Bus pulling out from stop.
+E-scooter rider overtaking the bus ..."): the story is told from it. Not where anyone meets a narrator
+("... and cut in front of me": the narrator is the ego), nor one parked, standing, placed ahead or
+behind, or slower than the traffic.
 """
 
 from __future__ import annotations
