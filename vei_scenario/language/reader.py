@@ -90,6 +90,7 @@ from vei_scenario.language.who import (
     model_said_again,
     own_vehicles,
     proper_names,
+    ridden_past_a_hedge,
     rider_noun,
     rides_next,
     shared_scooters,
@@ -737,6 +738,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
     proper = proper_names(text)
     tokens = shared_scooters(tokens, proper, lambda w: "VERB" in _pos(w))  # ("a Lime came past": an e-scooter)
     tokens, dropped = discourse.resolve(tokens, _kind_at, _known, proper)  # (who is who; words out)
+    tokens = whose_act.ridden_one(tokens, _kind_at)  # ("E-scooters are everywhere. A kid on one shot out")
     tokens = whose_act.the_rider(tokens, _kind_at)  # ("a cyclist ... the rider brakes": the cyclist)
     tokens = whose_act.the_person_said_back(tokens, _kind_at)  # ("a cyclist ... the boy rode off": the cyclist)
     dropped = framed + dropped
@@ -1925,7 +1927,15 @@ def _read(text: str) -> Reading:
                         who = "ego"
                     elif (
                         (
-                            (m.value in ("bicycle", "e-scooter") and m.prev in ("on", "riding", "with"))
+                            (
+                                m.value in ("bicycle", "e-scooter")
+                                and (
+                                    m.prev in ("on", "riding", "with")
+                                    or ridden_past_a_hedge(  # ("a man on what looked like a rented e-scooter")
+                                        scanned, m.start, lambda w: _only_describes(w) or _plain_modifier(w)
+                                    )
+                                )
+                            )
                             or (m.value in VEHICLES and m.prev in ("in", "driving"))  # ("some idiot in a BMW")
                         )
                         and named
