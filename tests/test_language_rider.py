@@ -48,7 +48,7 @@ def test_a_person_on_one_of_the_vehicles_named_rides_one(text: str, kind: str) -
 
 
 def test_riding_one_said_of_no_one_is_no_road_user() -> None:
-    """"It's mad riding one of those in the snow": riding in general, no one on it."""
+    """Riding in general ("it's mad riding one of those in the snow") names no one on it."""
     text = "I followed an e-scooter for a while at 10 mph. It's mad riding one of those in the snow."
     assert kinds(text) == ["e-scooter"]
 
@@ -96,3 +96,23 @@ def test_a_walker_named_before_keeps_the_person_said_back() -> None:
     """With someone on foot named before, "the young man" may be either: nothing is folded."""
     text = "A pedestrian crossed in front of me, then a cyclist came past. The young man waved."
     assert sorted(kinds(text)) == ["bicycle", "pedestrian"]
+
+
+#: One road user named again by its make or operator between commas, after a phrase with words of its
+#: own ("a rental scooter, a Bird,", "a silver car, a Toyota,"): one road user, as after a bare noun.
+NAMED_AGAIN_BY_ITS_MAKE = [
+    ("I was doing 40 when a man on a rental scooter, a Bird, came towards me in my lane.", ["e-scooter"]),
+    ("I was doing 40 when a silver car, a Toyota, pulled out in front of me.", ["car"]),
+    ("I was doing 40 when a big white van, a Transit, pulled out in front of me.", ["van"]),
+    ("I was doing 40 when a car, a Toyota, pulled out in front of me.", ["car"]),
+]
+
+
+@pytest.mark.parametrize("text,expected", NAMED_AGAIN_BY_ITS_MAKE)
+def test_a_make_between_commas_names_the_one_before(text: str, expected: list[str]) -> None:
+    assert kinds(text) == expected
+
+
+def test_a_list_of_two_stays_two() -> None:
+    """A list ("a silver car, a van and a bus") names each one of its own."""
+    assert len(kinds("I was doing 40 when a silver car, a white van and a bus pulled out in front of me.")) >= 2

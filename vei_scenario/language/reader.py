@@ -459,11 +459,13 @@ def _named_again_then_acts(mentions, k: int, tokens: list[str]) -> bool:
     named again because a verb of what it does follows it ("a van, a white Transit, pulled out", "a
     Micra - a MICRA - undertakes me"), or a participle or place of its own does ("a scooter, an electric
     scooter, riding toward me", "a car, a silver hatchback, coming at me"), said with an article right
-    after the comma: a list goes on with another name, "and" or "plus"."""
+    after the comma: a list goes on with another name, "and" or "plus". The one before may have words
+    of its own between its article and its noun ("a rental scooter, a Bird, was riding", "a silver car,
+    a Toyota, pulled out")."""
     return (
         k >= 2
         and mentions[k - 2].slot == "actor"
-        and mentions[k - 2].det in ("a", "an")
+        and (mentions[k - 2].det in ("a", "an") or _phrase_det(tokens, mentions[k - 2].start) in ("a", "an"))
         and tokens[mentions[k - 1].start + 1 : mentions[k - 1].start + 2] in (["a"], ["an"])
         and k + 2 < len(mentions)
         and mentions[k + 2].slot in _WHAT_ONE_DOES
