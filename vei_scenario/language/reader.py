@@ -91,6 +91,7 @@ from vei_scenario.language.who import (
     model_said_again,
     own_vehicles,
     proper_names,
+    ridden_past_a_hedge,
     rider_noun,
     rides_next,
     shared_scooters,
@@ -459,11 +460,13 @@ def _named_again_then_acts(mentions, k: int, tokens: list[str]) -> bool:
     named again because a verb of what it does follows it ("a van, a white Transit, pulled out", "a
     Micra - a MICRA - undertakes me"), or a participle or place of its own does ("a scooter, an electric
     scooter, riding toward me", "a car, a silver hatchback, coming at me"), said with an article right
-    after the comma: a list goes on with another name, "and" or "plus"."""
+    after the comma: a list goes on with another name, "and" or "plus". The one before may have words
+    of its own between its article and its noun ("a rental scooter, a Bird, was riding", "a silver car,
+    a Toyota, pulled out")."""
     return (
         k >= 2
         and mentions[k - 2].slot == "actor"
-        and mentions[k - 2].det in ("a", "an")
+        and (mentions[k - 2].det in ("a", "an") or _phrase_det(tokens, mentions[k - 2].start) in ("a", "an"))
         and tokens[mentions[k - 1].start + 1 : mentions[k - 1].start + 2] in (["a"], ["an"])
         and k + 2 < len(mentions)
         and mentions[k + 2].slot in _WHAT_ONE_DOES
@@ -738,6 +741,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
     proper = proper_names(text)
     tokens = shared_scooters(tokens, proper, lambda w: "VERB" in _pos(w))  # ("a Lime came past": an e-scooter)
     tokens, dropped = discourse.resolve(tokens, _kind_at, _known, proper)  # (who is who; words out)
+    tokens = whose_act.ridden_one(tokens, _kind_at)  # ("E-scooters are everywhere. A kid on one shot out")
     tokens = whose_act.the_rider(tokens, _kind_at)  # ("a cyclist ... the rider brakes": the cyclist)
     tokens = whose_act.the_person_said_back(tokens, _kind_at)  # ("a cyclist ... the boy rode off": the cyclist)
     dropped = framed + dropped
@@ -1926,7 +1930,15 @@ def _read(text: str) -> Reading:
                         who = "ego"
                     elif (
                         (
-                            (m.value in ("bicycle", "e-scooter") and m.prev in ("on", "riding", "with"))
+                            (
+                                m.value in ("bicycle", "e-scooter")
+                                and (
+                                    m.prev in ("on", "riding", "with")
+                                    or ridden_past_a_hedge(  # ("a man on what looked like a rented e-scooter")
+                                        scanned, m.start, lambda w: _only_describes(w) or _plain_modifier(w)
+                                    )
+                                )
+                            )
                             or (m.value in VEHICLES and m.prev in ("in", "driving"))  # ("some idiot in a BMW")
                         )
                         and named

@@ -465,6 +465,36 @@ def rider_noun(noun: str) -> bool:
     return noun.endswith("er") and any(s in _RIDING for s in (noun[:-1], noun[:-2], noun[:-2] + "e"))
 
 
+#: Words that put a person on what they ride ("on", "riding", "astride", "aboard").
+_ON_IT = frozenset({"on", "riding", "astride", "aboard", "atop"})
+#: Words of a hedge or of a part that may stand between riding and the vehicle's phrase: "one of those
+#: (hire bikes)", "what looked like (a rented e-scooter)", "what appeared to be", "some sort of", "one of
+#: them", with the determiners and possessives they take. A closed class of function words.
+_HEDGE_OR_PART = frozenset({"one", "of", "them", "those", "these", "the", "a", "an", "what", "looked", "looks",
+                            "look", "like", "seemed", "seems", "appeared", "appears", "to", "be", "sort", "kind",
+                            "type", "some", "his", "her", "their", "your", "its"})  # fmt: skip
+#: How far back from the vehicle's noun the word that puts the person on it may stand.
+_HEDGE_SPAN = 8
+#: At most this many words of the vehicle's own phrase before its noun ("a bright pink kick scooter").
+_HEDGE_MODIFIERS = 3
+
+
+def ridden_past_a_hedge(tokens: list[str], i: int, describes: Callable[[str], bool]) -> bool:
+    """Whether the vehicle's noun at ``i`` is said as what someone rides, past its phrase's own words and
+    a hedge or a part ("on what looked like a rented e-scooter", "on one of those hire bikes", "riding
+    some sort of electric scooter", "on a bright pink kick scooter"): past at most
+    :data:`_HEDGE_MODIFIERS` words right before the noun for which ``describes`` holds (the phrase's
+    own modifiers), only hedge words and determiners lead back to the word that puts the person on it.
+    Nothing else may stand in the hedge ("a woman on the phone to one of the cyclists" is not on a
+    bike)."""
+    j = i - 1
+    while j >= 0 and i - j <= _HEDGE_MODIFIERS and tokens[j] not in _HEDGE_OR_PART and describes(tokens[j]):
+        j -= 1
+    while j >= 0 and i - j <= _HEDGE_SPAN and tokens[j] in _HEDGE_OR_PART:
+        j -= 1
+    return j >= 0 and tokens[j] in _ON_IT
+
+
 def rides_next(tokens: list[str], i: int) -> bool:
     """Whether ``tokens[i]`` names a rider ("rider", "riders"), so that a word the reader has no entry
     for right before it says what or whose the ride is ("a Voi rider", "a delivery rider", "a Brompton

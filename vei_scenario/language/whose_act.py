@@ -388,6 +388,57 @@ _RIDDEN = frozenset(("bicycle", "e-scooter"))
 _BACK = frozenset(("the", "this", "that"))
 
 
+#: Words that put someone on what they ride, before "one" that stands for it ("a kid on one").
+_ON_ONE = frozenset(("on", "riding", "astride"))
+#: Pronouns after "one of" that point back to the vehicles named ("on one of them", "riding one of those").
+_OF_THEM = frozenset(("them", "those", "these"))
+
+
+def _names_something(word: str) -> bool:
+    """Whether ``word`` after "one" makes it a count of a noun ("on one side", "on one occasion", "on one
+    of the crossings"), not the pronoun: a noun that is no inflected verb ("shot", "swerved" are verbs)."""
+    pos = lemmas(word) if word.isalpha() else {}
+    return word == "of" or ("NOUN" in pos and word in pos.get("VERB", (word,)))
+
+
+def ridden_one(tokens: list[str], kind_at: Callable[[list[str], int], tuple[str, int] | None]) -> list[str]:
+    """``tokens`` with "one" (or "one of them", "one of those") that stands for a ridden vehicle named
+    before, said after "on" or "riding" ("E-scooters are everywhere. A teenager on one came flying out",
+    "a lad riding one of them cut across"), said as one of that vehicle's kind ("an e-scooter": one,
+    not the vehicles in general said again): the person rides it, one road user. Only right after a
+    person's noun: with no one said on it, "riding one of those in the snow" names no road user. "One"
+    that counts a noun after it ("on one side", "on one of the lanes") is left."""
+    out: list[str] = []
+    ridden: str | None = None
+    person_end = -1  # (where the last person's noun ended in ``out``: the one on it comes right before)
+    i = 0
+    while i < len(tokens):
+        found = kind_at(tokens, i)
+        if found is not None:
+            ridden = found[0] if found[0] in _RIDDEN else ridden
+            out.extend(tokens[i : i + found[1]])
+            person_end = len(out) if found[0] == "pedestrian" else person_end
+            i += found[1]
+            continue
+        length = 3 if tokens[i + 1 : i + 3] in (["of", w] for w in _OF_THEM) else 1
+        after = tokens[i + length] if i + length < len(tokens) else ""
+        if (
+            tokens[i] == "one"
+            and ridden is not None
+            and out[-1:]
+            and out[-1] in _ON_ONE
+            and person_end == len(out) - 1
+            and kind_at(tokens, i + length) is None
+            and not _names_something(after)
+        ):
+            out.extend(("an" if ridden[0] in "aeiou" else "a", ridden))  # ("a kid on one": on an e-scooter, a new one)
+            i += length
+            continue
+        out.append(tokens[i])
+        i += 1
+    return out
+
+
 def the_rider(tokens: list[str], kind_at: Callable[[list[str], int], tuple[str, int] | None]) -> list[str]:
     """``tokens`` with "the rider" (or "this rider") said as the word of
     the last ridden road user named before it ("a cyclist ... the rider": "the cyclist"), where
@@ -414,36 +465,66 @@ def the_rider(tokens: list[str], kind_at: Callable[[list[str], int], tuple[str, 
 WHO_SOMEONE_IS = frozenset({"kid", "child", "boy", "girl", "lad", "lass", "man", "woman", "guy", "bloke", "fella",
                             "fellow", "chap", "teenager", "teen", "youth", "youngster", "lady", "gentleman", "dude",
                             "gent", "idiot", "lunatic", "maniac", "moron", "nutter", "muppet", "clown",
-                            "fool"})  # fmt: skip
+                            "fool", "person", "individual", "male", "female", "adult", "juvenile", "student",
+                            "pupil", "schoolboy", "schoolgirl", "schoolkid", "kiddo", "victim",
+                            "casualty"})  # fmt: skip
+#: Words that, between "the" and such a noun, tell the person apart from one named before ("the other
+#: lad", "the second man"): someone else, not the rider said again.
+_TOLD_APART = frozenset({"other", "second", "third", "another", "different", "new", "next", "first"})
+#: At most this many words that describe the person between "the" and the noun ("the poor young lad").
+_DESCRIBING = 2
 #: Words after such a noun that open a phrase placing or describing the person, who is then someone
 #: else ("the man on the crossing", "the woman with the pram", "the lad who ...").
 _DESCRIBED_BY = frozenset({"on", "in", "at", "with", "from", "by", "near", "outside", "beside", "behind", "who",
                            "that", "walking", "pushing", "crossing", "standing", "waiting", "'s"})  # fmt: skip
 
 
+def _one_word_for(phrase: list[str], kind: str, kind_at: Callable[[list[str], int], tuple[str, int] | None]) -> str:
+    """The one word of ``phrase`` that names a road user of ``kind`` alone ("e-scooter rider": "rider"
+    or "e-scooter"), the last first, or "" where none does: what a person said back is rewritten to."""
+    for word in reversed(phrase):
+        found = kind_at([word], 0)
+        if found is not None and found[0] == kind:
+            return word
+    return ""
+
+
+def _said_back(tokens: list[str], i: int) -> bool:
+    """Whether the person's phrase starting at ``i`` opens with "the", "this" or "that", past up to
+    :data:`_DESCRIBING` words that only describe the person ("the young man", "the poor kid"), none of
+    which tells them apart from one named before ("the other lad")."""
+    j = i - 1
+    while j > 0 and i - j <= _DESCRIBING and tokens[j] not in _BACK and _modifier(tokens[j]):
+        if tokens[j] in _TOLD_APART:
+            return False
+        j -= 1
+    return j >= 0 and tokens[j] in _BACK
+
+
 def the_person_said_back(tokens: list[str], kind_at: Callable[[list[str], int], tuple[str, int] | None]) -> list[str]:
     """``tokens`` with "the lad", "the kid", "the idiot" (:data:`WHO_SOMEONE_IS`, after "the", "this" or
-    "that") said as the word of the road user named last before it, where no one on foot was named
-    before and the person is not placed or described there ("the man on the crossing" is someone):
-    the person at its handlebars or wheel, no second road user."""
+    "that", also past a word or two that describe them: "the young man") said as the word of the road
+    user named last before it, where no one on foot was named before and the person is not placed or
+    described there ("the man on the crossing" is someone), nor a word that describes a road user's
+    noun after it ("the female driver"): the person at its handlebars or wheel, no second road user."""
     out = list(tokens)
     last: str | None = None
     walker = False
     i = 0
     while i < len(out):
-        tok = out[i]
         found = kind_at(out, i)
-        if tok in WHO_SOMEONE_IS and i and out[i - 1] in _BACK and last is not None and not walker:
-            nxt = out[i + 1] if i + 1 < len(out) else ""
-            if nxt not in _DESCRIBED_BY:
-                out[i] = last
-                i += 1
+        head = i + found[1] - 1 if found is not None and found[0] == "pedestrian" else i  # ("the old man")
+        if out[head] in WHO_SOMEONE_IS and _said_back(out, i) and last is not None and not walker:
+            nxt = out[head + 1] if head + 1 < len(out) else ""
+            if nxt not in _DESCRIBED_BY and kind_at(out, head + 1) is None:
+                out[head] = last
+                i = head + 1
                 continue
         if found is not None:
             if found[0] == "pedestrian":
                 walker = True
-            elif found[0] != "ego" and found[1] == 1:
-                last = out[i]
+            elif found[0] != "ego":
+                last = _one_word_for(out[i : i + found[1]], found[0], kind_at) or last  # ("e-scooter rider")
             i += found[1]
             continue
         i += 1
