@@ -415,3 +415,47 @@ PULLS_OUT_AND_RUNS = [
 def test_a_pull_out_with_a_light_or_a_crossing_said_still_runs_through(text):
     actor, names = _only(text)
     assert names[:1] == ["run_red_light"], (actor.relation, names)
+
+
+# a vehicle pulling out of a place off the carriageway (a car park, a driveway, a gate, a yard, a
+# forecourt) turns onto the road from there, as out of a side road on that side
+OUT_OF_A_PLACE_ONTO_THE_ROAD = [
+    ("Doing 30 mph past the supermarket when a hatchback pulled out of the car park on my left.", "left"),
+    ("A tractor came out of a field gate on the right just ahead of us at 50 km/h.", "right"),
+    ("at 25mph a pickup backed- no, pulled out of a driveway on my right in front of me", "right"),
+    ("Ego 40 km/h; a lorry emerges from the builders' yard on the left into our lane.", "left"),
+    ("We were doing about 35 when a taxi pulled out of the parking lot on our right.", "right"),
+]
+
+
+@pytest.mark.parametrize("text, side", OUT_OF_A_PLACE_ONTO_THE_ROAD)
+def test_a_vehicle_out_of_a_place_off_the_road_turns_onto_it(text, side):
+    actor, names = _only(text)
+    assert set(names) == {"turn_into"}, (actor.relation, names)
+    assert actor.relation == f"junction_{side}"
+
+
+# near misses: a stop, lay-by or parking space is the road's own edge (the vehicle moves over into the
+# lane); a rider out of a driveway is no vehicle turning; a bend said keeps the road a bend
+AT_THE_EDGE_OR_NO_VEHICLE = [
+    "At 30 mph the bus pulled out of the stop on my left right in front of me.",
+    "A van pulled out of a parking space on the left in front of me at 20 mph.",
+    "Doing 40 mph when a lorry pulled out of the lay-by on my left into my lane.",
+]
+
+
+@pytest.mark.parametrize("text", AT_THE_EDGE_OR_NO_VEHICLE)
+def test_a_vehicle_out_of_a_place_at_the_road_edge_moves_into_the_lane(text):
+    actor, names = _only(text)
+    assert names[:1] == ["cut_in"], (actor.relation, names)
+    assert actor.relation.startswith("roadside_")
+
+
+def test_a_rider_out_of_a_driveway_is_no_turn_onto_the_road():
+    actor, names = _only("At 20 mph a kid on a bike shot out of a driveway on the right in front of me.")
+    assert not actor.relation.startswith("junction_")
+
+
+def test_a_vehicle_out_of_a_gate_on_a_bend_keeps_the_bend():
+    r = read("Coming round the bend at 60 km/h, a jeep pulled out of a field gate on the left in front of me.")
+    assert r.map_kind == "curve"
