@@ -253,7 +253,6 @@ class _Actor:
     parked: bool = False  # said to be parked (at the side of the road, unless put in a lane)
     double_parked: bool = False  # parked beside the parked ones: in the outer traffic lane
     out_of_place: bool = False  # said to come out of a place beside the road (a driveway, a stop, a gate)
-    off_road: bool = False  # that place lies off the carriageway (a car park, a gate), not at its edge (a stop)
     far_side: bool = False  # said to come from the other side ("from the opposite side")
     followed: bool = False  # the ego follows it ("Following a truck, ...")
     object_of: _Actor | None = None  # whose verb it is the object of ("overtakes a bus": the bus)
@@ -1541,18 +1540,6 @@ def _opening_following(clauses):
     return out, found
 
 
-def _pulls_onto_the_road(a: _Actor) -> bool:
-    """Whether vehicle ``a`` pulls out of a place off the carriageway on one side ("pulled out of the car
-    park on my left", "a jeep came out of a field gate on the right"): it turns onto the road from there,
-    as out of a side road. A stop, lay-by or parking space is the road's own edge (a bus pulling out of
-    its stop moves into the lane), a rider or walker out of a driveway crosses or rides, and a move
-    across said after the pull-out keeps its crossing."""
-    names = [b[0] for b in a.behaviours]
-    if a.kind not in VEHICLES or not (a.out_of_place and a.off_road) or a.lane_side not in ("left", "right"):
-        return False
-    return names[:1] == ["cut_in"] and not {"cross_in_front", "run_red_light"} & set(names[1:])
-
-
 def _resolve_relation(a: _Actor, map_kind: str | None, left_hand: bool = False) -> str | None:
     """The spawn relation of an actor from what was said about where it is and what it does first.
     A kerb with no side said is the writer's near one (the left where traffic keeps left), and a
@@ -2418,10 +2405,6 @@ def _read(text: str) -> Reading:
             and [b[0] for b in a.behaviours] in ([], ["keep_going"])
         ):
             a.said.add("ahead")
-    for a in actors:
-        if r.map_kind in (None, "straight", "crossroad") and _pulls_onto_the_road(a):
-            a.arm = a.pulled_out = True  # (its gate or car park is a way onto the road, as a side road is)
-            a.relation = f"junction_{a.lane_side}"
     vehicles_giving_way = any(a.kind in VEHICLES and any(b[0] == "give_way" for b in a.behaviours) for a in actors)
     at_junction = any(b[0] in JUNCTION_BEHAVIOURS for a in actors for b in a.behaviours)
     if (
@@ -3600,7 +3583,6 @@ def _apply(m, who, r, link, added) -> None:
             a.came_from = a.came_from or _from(m)
         elif m.slot == "place":
             a.out_of_place = True
-            a.off_road = a.off_road or sides.off_the_carriageway(m.words)
         elif m.slot == "far_side":
             a.far_side = True
         elif m.slot == "kerb_side" and sides.travels_on_the_wrong_side(a.kind, m.words, m.next_):

@@ -80,21 +80,6 @@ def _place_head(tokens: list[str], k: int) -> int | None:
     return None
 
 
-#: Heads of places at the carriageway's edge, where a vehicle stands on the road already ("the bus stop",
-#: "a lay-by", "a parking space"): pulling out of one moves it over into the lane.
-_AT_THE_EDGE = frozenset({"stop", "lay-by", "layby", "bay", "space", "spot", "place"})
-
-
-def off_the_carriageway(words: str) -> bool:
-    """Whether the place said by ``words`` ("field gate on the left", "the car park on my left") lies off
-    the carriageway (a car park, a driveway, a gate, a yard, a forecourt), so that a vehicle coming out
-    of it turns onto the road, as out of a side road; a stop, a lay-by or a parking space is the road's
-    own edge, and one pulling out of it moves over into the lane."""
-    said = words.split()
-    end = _place_head(said, 0)
-    return end is not None and said[end - 1] not in _AT_THE_EDGE
-
-
 def _in_a_state(tokens: list[str], i: int) -> bool:
     """Whether the word before the preposition at token ``i`` says where a road user is rather than
     where it arrives: a participle of state or its own noun ("a bus standing at a stop", "a van
