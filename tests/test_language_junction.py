@@ -373,3 +373,45 @@ TAKES_THE_WAY_FROM_OPPOSITE = [
 def test_an_oncoming_road_user_said_not_to_give_way_runs_through(text):
     actor, names = _only(text)
     assert names[:1] == ["run_red_light"], (actor.relation, names)
+
+
+# a road user said to pull out of a side road on the ego's left or right, where no light or signal is
+# said, joins the ego's road: not stopping or not giving way is how it pulls out, not a red light run.
+# The same thing as a British report, an American text, an Australian post, an Indian or Nigerian
+# voice note, a test spec.
+PULLS_OUT_WITHOUT_STOPPING = [
+    ("Doing 40 mph on the main road when a van came out of a side road on my left without stopping.", "left"),
+    ("Vehicle 2 emerged from the minor road on Vehicle 1's right and failed to give way; the two collided.", "right"),
+    ("ute pulled out of a side street on the right without giving way, I was on 60 k", "right"),
+    ("One motorbike came out from the side road on my left, not stopping at all, I was doing 40 kmph.", "left"),
+    ("Ego 50 km/h on the priority road; a car emerges from the side road on the left without yielding.", "left"),
+    ("Omo, this bus just pulled out of the side road on my right without stopping o, I was doing 30.", "right"),
+    ("The SUV emerged from a side road on our left, intending to turn right, and did not give way.", "left"),
+    ("I was cycling along at 15 mph and a taxi nosed out of the side street on my right without looking.", "right"),
+    # "red" as a colour is no light said
+    ("A red van came out of a side road on my left without stopping and I went into it at 30 mph.", "left"),
+]
+
+
+@pytest.mark.parametrize("text, side", PULLS_OUT_WITHOUT_STOPPING)
+def test_pulling_out_of_a_side_road_without_stopping_turns_into_the_ego_road(text, side):
+    actor, names = _only(text)
+    assert set(names) == {"turn_into"}, (actor.relation, names)
+    assert actor.relation == f"junction_{side}"
+
+
+# near misses: a light said, or a move straight over said after the pull-out, or a road user only said
+# to come from an arm (no pull-out), keeps the run through the junction
+PULLS_OUT_AND_RUNS = [
+    "A car came out of the side road on my right against the red light and I hit it.",
+    "At the traffic lights a van pulled out of the side road on my left without stopping.",
+    "At the crossroads a van came out of the side road on the left without stopping and carried on across.",
+    "A car emerged from the side road on the right without stopping and went straight over the junction.",
+    "At the crossroads a car from the right arm did not give way while I was doing 30 mph.",
+]
+
+
+@pytest.mark.parametrize("text", PULLS_OUT_AND_RUNS)
+def test_a_pull_out_with_a_light_or_a_crossing_said_still_runs_through(text):
+    actor, names = _only(text)
+    assert names[:1] == ["run_red_light"], (actor.relation, names)

@@ -274,6 +274,50 @@ def through_from_opposite(
     return [("keep_going", {}, crit, link)] + behaviours[1:] if through else behaviours
 
 
+#: Words of a signal or sign that controls a junction: where one is said, not stopping runs it.
+_CONTROL_SAID = re.compile(
+    r"\b(?:red|amber|lights?|signals?|signalised|signalized|signalled|signal-controlled|robots?)\b|\bstop signs?\b"
+)
+#: Words after a plain verb of motion that take it on over or through the junction ("carried on across").
+_OVER = frozenset(("across", "over", "through"))
+
+
+def signal_said(said: str) -> bool:
+    """Whether the description says a light, signal or stop sign (``said``: its text as the reader
+    reads it) that a road user could run: "red" only as the signal, not as the colour of a noun ("a red
+    van"), and lamps are not signals (the reader has made those "lamps")."""
+    for m in _CONTROL_SAID.finditer(said):
+        if m.group(0) != "red":
+            return True
+        after = said[m.end() :].split()[:1]
+        nxt = after[0] if after else ""
+        forms = lemmas(nxt)
+        if nxt in _SIGNAL or not (forms.get("NOUN") and not forms.get("VERB") and not forms.get("ADP")):
+            return True
+    return False
+
+
+def goes_on_over(name: str, words: str, after: list[str]) -> bool:
+    """Whether a plain move (``name``, said by ``words``, followed by the tokens ``after``) goes on over
+    or through the junction ("carried on across", "went straight over", "kept going through"): a road
+    user that does so after pulling out crosses the ego's road rather than joining it."""
+    return name in _PLAIN and bool(_OVER & {*words.split(), *after})
+
+
+def pulls_out_to_join(pulled_out: bool, goes_over: bool, names: list[str], relation: str | None, signal: bool) -> bool:
+    """Whether a road user said to pull out of a side road on the ego's left or right ("came out of a side
+    street without stopping", "emerged from the minor road and failed to give way") joins the ego's road
+    rather than running through the junction: with no light, signal or stop sign said (``signal``), not
+    stopping or giving way is how it pulls out, and leaving a side road ends in the road it meets. A
+    light said keeps the run ("came out of Station Road against the red"), and so does a move over or
+    across said after the pull-out (``goes_over``, or a crossing among ``names``: "... and carried on
+    across"); one only said to come from an arm ("a car from the right arm did not yield") pulls out of
+    nothing and goes through."""
+    if not pulled_out or goes_over or signal or relation not in ("junction_left", "junction_right"):
+        return False
+    return names[:1] == ["cut_in"] and not {"run_red_light", "cross_in_front"} & set(names[1:])
+
+
 #: Road users that ride a road: out of a side road they come along its carriageway, not off a kerb.
 _RIDERS = frozenset(("bicycle", "e-scooter"))
 

@@ -281,6 +281,8 @@ class _Actor:
     from_arm: bool = False  # said to come from or out of a junction arm ("from the side road on the left")
     beside: bool = False  # said to be on a side of the ego ("a cyclist on my left"), not to come from one
     moves_out: bool = False  # its crossing is said with "out" ("swung out", "pulled out")
+    pulled_out: bool = False  # its move is a pull-out of a side road ("came out of", "emerged from")
+    goes_over: bool = False  # said to go on over or through ("carried on across", "went straight over")
     went_by: bool = False  # its verb of passing has no object ("the van has passed", "a lorry went by")
     along: bool = False  # said to go along the road or its edge ("rides along the kerb", "same direction")
     across: bool = False  # its move into a lane is said with "across" ("cut across to the right")
@@ -2387,7 +2389,7 @@ def _read(text: str) -> Reading:
                     # is said) crosses
                     a.behaviours[k] = ("cross_in_front", cfg, c, lk)
                 else:
-                    a.arm = True
+                    a.arm = a.pulled_out = True
         if a.kind == "pedestrian":  # ("comes out of a side street and crosses": one crossing)
             a.behaviours = [b for k, b in enumerate(a.behaviours) if k == 0 or b[0] != a.behaviours[k - 1][0]]
     for a in actors:
@@ -2573,7 +2575,15 @@ def _read(text: str) -> Reading:
         passes_another = any(x.object_of is a for x in actors)  # ("pulled out to pass a truck": its own overtake)
         only_there = [b[0] for b in spec.behaviours] in ([], ["keep_going"])  # (nothing it does is said)
         going_on = [b[0] for b in spec.behaviours[:1]] != ["cut_in"]  # (not "doesn't yield": it takes the way)
-        _specialise(a, spec, junction, sides.drives_on_left(scanned, text), turn_across_side(text), passes_another)
+        _specialise(
+            a,
+            spec,
+            junction,
+            sides.drives_on_left(scanned, text),
+            turn_across_side(text),
+            passes_another,
+            junctions.signal_said(said),
+        )
         spec.behaviours = junctions.through_from_opposite(
             spec.relation, spec.behaviours, said, passes_another, going_on
         )
@@ -2971,6 +2981,7 @@ def _specialise(
     left_hand: bool = False,
     across: str = "left",
     passes_another: bool = True,
+    signal_said: bool = False,
 ) -> None:
     """The behaviours that what was said around the verbs makes specific: a left turn by someone
     coming the other way is a turn across the ego's path; pulling out of a side road is turning into
@@ -3011,6 +3022,7 @@ def _specialise(
         and not a.priority  # (already on the roundabout: going on without slowing is its right)
         and first in ("cut_in", "keep_going")
         and spec.relation in ("junction_left", "junction_right", "junction_opposite")
+        and not junctions.pulls_out_to_join(a.pulled_out, a.goes_over, names, spec.relation, signal_said)
     ):  # does not give way or stop at the junction: straight through it, timed to meet the ego's path
         spec.behaviours = [("run_red_light", {}, crit or "dangerous", link)] + spec.behaviours[1:]
         return
@@ -3497,6 +3509,7 @@ def _apply(m, who, r, link, added) -> None:
             name, cfg = m.value
             if any(w in _NEGATORS for w in m.words.split()):
                 a.goes_on = True  # ("fails to yield", "does not give way": one phrase, and it goes on)
+            a.goes_over = a.goes_over or junctions.goes_on_over(name, m.words, [m.next_])  # (said twice too)
             if a.behaviours and a.behaviours[-1][0] == name and name != "change_speed":
                 a.goes_on = a.goes_on or bool(cfg.get("_denied"))  # ("enters and fails to yield": it goes)
                 a.has_way = a.has_way or bool(cfg.get("_has_way"))  # ("going round ... we yield; it goes on")
