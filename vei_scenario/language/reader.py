@@ -34,6 +34,7 @@ from vei_scenario.language import (
     ego_double,
     ego_speed,
     experiencer,
+    from_cover,
     generic_ego,
     junctions,
     kerb_ride,
@@ -283,6 +284,7 @@ class _Actor:
     along: bool = False  # said to go along the road or its edge ("rides along the kerb", "same direction")
     across: bool = False  # its move into a lane is said with "across" ("cut across to the right")
     own_lane: bool = False  # in a lane of its own beside the ego's ("in the cycle lane on our right")
+    from_cover: bool = False  # said to come out from behind or between something ("from behind a bus")
 
 
 #: Euro NCAP's names of its test scenarios ("Car-to-Car Rear stationary", "Car-to-Pedestrian Nearside
@@ -1986,6 +1988,8 @@ def _read(text: str) -> Reading:
                 ):
                     for hider in who.group or [who]:  # ("from between two vans": both of them)
                         hider.hides = True  # ("darts out from behind an ice-cream van": what it comes out from)
+                    if isinstance(clause_subject, _Actor) and from_cover.out_of_cover(scanned, m.start, FUNCTION_WORDS):
+                        clause_subject.from_cover = True  # ("a man stepped from behind a bus": he comes out)
                 if role == "verb" and isinstance(who, _Actor) and after_verb:
                     who.acted_on = True  # ("the ego is overtaking a truck": the truck is in the scene)
                 if role == "verb" and isinstance(who, _Actor) and clause_subject == "ego" and motion.passes(prev):
@@ -2015,6 +2019,14 @@ def _read(text: str) -> Reading:
                 expect_subject = False
                 prev = m
                 continue
+            if (
+                m.slot == "relation"
+                and m.value == "behind"
+                and isinstance(clause_subject, _Actor)
+                and from_cover.leaves_cover(scanned, m.start, m.end)
+                and not (nxt is not None and nxt.value == "ego" and nxt.start <= m.end + 2)
+            ):  # ("a jogger came from behind a hedge": out of cover; "from behind me" is the ego's rear)
+                clause_subject.from_cover = True
             if m.slot in ("map", "weather", "time", "density", "lanes", "intent"):
                 _global(r, m)
                 prev = m
@@ -2335,6 +2347,8 @@ def _read(text: str) -> Reading:
     ignored += unplaced
     if len(actors) > MAX_ACTORS:
         raise NotUnderstood([f"{len(actors)} road users (a scenario holds at most {MAX_ACTORS} besides the ego)"], text)
+    for a in actors:
+        _out_from_cover(a)
     _refuse_if_nothing_to_place(text, actors, clauses, ignored, scanned)
     if any(not _idle(a) for a in actors):  # people and vehicles only mentioned (passengers, a car in a
         idle = [a for a in actors if _idle(a)]  # story's aside) are no road users of the scenario
@@ -2505,11 +2519,15 @@ def _read(text: str) -> Reading:
             and (a.pavement or (a.out_of_place and not joins))
             and not overtaking
             and behaviours
-            and behaviours[0][0] in ("cut_in", "forced_turn")
+            and (
+                behaviours[0][0] in ("cut_in", "forced_turn")
+                or (a.pavement and not joins and behaviours[0][0] in ("cut_out", "change_lane"))
+            )
         ):
             # "riding on the sidewalk, then turning into the road before our car": it crosses into the path;
             # so does one coming out of a place beside the road ("out of a driveway", "out of a farm track and
-            # across"), unless it then rides on along the road
+            # across"), unless it then rides on along the road; a swerve on a pavement leaves no lane of
+            # the road but the pavement ("swerved round a woman on the footpath and into the road")
             behaviours = [("cross_in_front", {}, *behaviours[0][2:])] + behaviours[1:]
         crossing_at = next((k for k, b in enumerate(behaviours) if b[0] == "cross_in_front"), None)
         before = {b[0] for b in behaviours[:crossing_at]} if crossing_at else set()
@@ -2780,6 +2798,20 @@ def _ego_reaction(mentions, k: int, a: _Actor, first_person: bool = False) -> bo
         return False
     came_in = a.came_from and a.kind in VULNERABLE  # (a walker or rider coming off the kerb)
     return came_in or any(b[0] in _CONFLICTS for b in a.behaviours)
+
+
+def _out_from_cover(a: _Actor) -> None:
+    """A walker or rider said to come out from behind or between something, of whom nothing says more
+    than that it goes, crosses from the kerb (:mod:`from_cover`); "behind" said there is where it hid,
+    not a place behind the ego ("stepped from behind a bus")."""
+    quiet = not (a.along or a.stationary or a.passed or a.wrong_way or a.followed or a.own_lane)
+    if not a.from_cover or not from_cover.crosses_from_cover(a.kind, a.behaviours, quiet):
+        return
+    link = a.behaviours[0][3] if a.behaviours else "sequence"
+    a.behaviours = [("cross_in_front", {}, None, link)]
+    a.said.discard("behind")
+    if a.relation == "behind":
+        a.relation = None
 
 
 def _idle(a: _Actor) -> bool:
