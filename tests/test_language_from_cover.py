@@ -92,3 +92,30 @@ def test_out_of_cover(tokens: list[str], start: int, out: bool) -> None:
 def test_part_of_the_way_across_crosses(text: str) -> None:
     """Someone said to be halfway (midway, part way) across is crossing the road."""
     assert any(k == "pedestrian" and n[:1] == ["cross_in_front"] for k, n, _ in _acts(text))
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "My son stepped out between parked cars to cross the road and was hit by a car.",
+        "Her grandson crossed the road in front of me, I was doing 20.",
+        "Our nan stepped off the kerb in front of a bus on Tuesday.",
+        "my daughter ran across the road to her friend's house and a car nearly hit her",
+        "His daughter darted out into the street right in front of the van.",
+    ],
+)
+def test_ones_own_people_crossing_are_walkers(text: str) -> None:
+    """One of someone's own people ("my son", "her grandson") who crosses on foot is a walker."""
+    assert any(k == "pedestrian" and n[:1] == ["cross_in_front"] for k, n, _ in _acts(text))
+
+
+@pytest.mark.parametrize(
+    ("text", "kinds"),
+    [
+        ("My husband was driving at 30 mph when a cyclist cut in.", ["bicycle"]),  # (he drives the ego)
+        ("My daughter was in the back when a van hit us.", ["van"]),  # (a passenger)
+        ("My wife braked hard when a kid ran out.", ["pedestrian"]),
+    ],
+)
+def test_ones_own_people_who_do_not_cross_are_no_walkers(text: str, kinds: list[str]) -> None:
+    assert [k for k, _, _ in _acts(text)] == kinds

@@ -130,3 +130,9 @@ def test_a_swerve_on_the_pavement_leaves_it_across_the_road(text):
 )
 def test_near_misses_of_a_swerve_keep_their_reading(text, first):
     assert _names(text)[0] == first
+
+
+def test_a_swerve_into_the_lane_from_the_kerb_stays_a_move_into_it():
+    """A rider on the kerb who swerves into the ego's lane names the lane it ends in: no crossing."""
+    text = "Then the e-scooter on the left kerb swerves into my lane to get past a bin. About 20 mph."
+    assert "cross_in_front" not in _names(text)

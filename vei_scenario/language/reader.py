@@ -936,6 +936,11 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
                     verb = False  # ("On 3 March a bus pulled out": a date, not the verb "march")
                 if i + 1 < len(tokens) and _modifies_actor(tokens, i + 1):
                     verb = False  # a word naming what kind before an actor ("a police car", "a Ford Transit van")
+                elif _party_crossing(tokens, i):  # ("my son stepped out to cross": on foot, a walker)
+                    if clauses[-1][1] and clauses[-1][1][-1].slot == "pronoun" and clauses[-1][1][-1].end == i:
+                        clauses[-1][1].pop()  # ("her grandson": whose he is, no one acting)
+                    clauses[-1][1].append(_Mention("actor", "pedestrian", tok, i, prev, end=i + 1, det=det))
+                    ignored.pop()
                 elif (
                     _new_unknown_subject(tokens, i)
                     and "VERB" not in pos
@@ -1248,6 +1253,28 @@ def _new_unknown_subject(tokens: list[str], i: int) -> bool:
 
 #: Words a clause opens with before a new road user that is its subject ("Also a ...", "Plus one ...").
 _ADDING = frozenset({"also", "plus", "and", "then", "next"})
+
+
+#: Possessives that name one of someone's own people ("my son", "her grandson", "their daughter").
+_OWNERS = frozenset(("my", "our", "his", "her", "their", "your"))
+
+
+def _party_crossing(tokens: list[str], i: int) -> bool:
+    """Whether the word at ``i`` is one of someone's own people (:data:`vocabulary.PARTY`: "my son",
+    "her grandson", "our nan") who is the subject of a crossing on foot said next ("my son stepped
+    out between parked cars", "her grandson was crossing with his cane"): a walker of the scene. Such
+    a person who drives, rides along or does anything else is left to the readings of the narrator's
+    party (the ego's driver, a passenger)."""
+    if tokens[i] not in V.PARTY or not i or tokens[i - 1] not in _OWNERS:
+        return False
+    for k in range(i + 1, min(i + 8, len(tokens))):
+        if tokens[k] in ".;!?:" or _actor_at(tokens, k):
+            return False
+        key = _best(tokens, k)
+        if key is not None and TABLE[key][0] == "behaviour":
+            value = TABLE[key][1]
+            return (value[0] if isinstance(value, tuple) else value) == "cross_in_front"
+    return False
 
 
 def _someone_new_opens(tokens: list[str], i: int) -> bool:
@@ -2521,7 +2548,7 @@ def _read(text: str) -> Reading:
             and behaviours
             and (
                 behaviours[0][0] in ("cut_in", "forced_turn")
-                or (a.pavement and not joins and behaviours[0][0] in ("cut_out", "change_lane"))
+                or (a.pavement and not joins and behaviours[0][0] == "cut_out")
             )
         ):
             # "riding on the sidewalk, then turning into the road before our car": it crosses into the path;
