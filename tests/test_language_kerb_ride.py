@@ -87,3 +87,52 @@ def test_along_the_right_edge_then_across_crosses_from_that_kerb():
     the kerb, as before."""
     names = _names("A jogger runs along the road in the ego's direction and then crosses to the left side.")
     assert names == ["cross_in_front"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Ego 30 km/h. An e-scooter rides along the left kerb ahead, then swerves out across the road.",
+        "kid on a bike going along the left edge in front of us suddenly swung out across the road, 20mph",
+        "A cyclist travelling along the nearside kerb on the left veered out across both lanes ahead of me.",
+    ],
+)
+def test_swerving_out_across_the_road_from_the_edge_crosses(text):
+    """A move out of the edge said with "across" ("swerves out across the road") crosses the road."""
+    assert _names(text)[-1] == "cross_in_front"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist on the pavement swerved round a woman and into the road in front of me.",
+        "An e-scooter rider on the footpath veered round a bin and off the kerb just ahead of us. 20 mph.",
+        "A rider on the sidewalk swerved around a family and into the street in front of my car.",
+        "A kid riding a scooter on the pavement swerved to miss a pram and came off the kerb into my path.",
+        "Cyclist on the pavement swerved out around pedestrians right in front of the ego at 30 km/h.",
+    ],
+)
+def test_a_swerve_on_the_pavement_leaves_it_across_the_road(text):
+    """A rider on the pavement has no lane of the road to leave: a swerve there ends off the pavement,
+    across the ego's path."""
+    rider = next(a for a in read(text).actors if a.kind in ("bicycle", "e-scooter"))
+    assert [b[0] for b in rider.behaviours][:1] == ["cross_in_front"]
+
+
+@pytest.mark.parametrize(
+    ("text", "first"),
+    [
+        ("A cyclist riding in the bike lane on my left swerved out across my lane.", "change_lane"),  # (own lane)
+        ("A cyclist was riding along the left kerb ahead of me. Suddenly he swerved into my lane.", "along_road"),
+        ("A cyclist is riding along the kerb ahead of me. I am at 40 km/h.", "along_road"),
+        ("A kid on a scooter on the pavement swerved round a bin and rode on along the pavement.", "change_lane"),
+    ],
+)
+def test_near_misses_of_a_swerve_keep_their_reading(text, first):
+    assert _names(text)[0] == first
+
+
+def test_a_swerve_into_the_lane_from_the_kerb_stays_a_move_into_it():
+    """A rider on the kerb who swerves into the ego's lane names the lane it ends in: no crossing."""
+    text = "Then the e-scooter on the left kerb swerves into my lane to get past a bin. About 20 mph."
+    assert "cross_in_front" not in _names(text)

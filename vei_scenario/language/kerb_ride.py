@@ -19,7 +19,7 @@ _ALONG_THE_EDGE = frozenset(("along", "hugging", "hugs", "hug", "hugged"))
 #: What a road user going along the road may first be said to do.
 _GOING = frozenset(("keep_going", "along_road", "keep_lane"))
 #: Moves out of that course: into the ego's lane, or across the road.
-_OUT = frozenset(("cut_in", "change_lane", "cross_in_front"))
+_OUT = frozenset(("cut_in", "change_lane", "cut_out", "cross_in_front"))
 
 
 def goes_along(words: str) -> bool:
@@ -73,7 +73,7 @@ def at_the_edge(spec, side: str | None) -> None:
 
 
 def said_across(name: str, words: str, after: list[str]) -> bool:
-    """Whether a move into a lane (``name``, said by ``words``, followed by the tokens ``after``) is
-    said with "across" ("cut across to the right", "swerved right across my lane"): it crosses the
-    lane rather than ending in it."""
-    return name in ("cut_in", "change_lane") and "across" in (*words.split(), *after)
+    """Whether a move into or out of a lane (``name``, said by ``words``, followed by the tokens
+    ``after``) is said with "across" ("cut across to the right", "swerved right across my lane",
+    "swerved out across the road"): it crosses the lane rather than ending in it."""
+    return name in ("cut_in", "change_lane", "cut_out") and "across" in (*words.split(), *after)

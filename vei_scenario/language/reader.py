@@ -29,12 +29,14 @@ from dataclasses import dataclass, field, replace
 from functools import lru_cache
 
 from vei_scenario.language import (
+    addressee,
     discourse,
     ego,
     ego_double,
     ego_speed,
     ego_turner,
     experiencer,
+    from_cover,
     generic_ego,
     junctions,
     kerb_ride,
@@ -287,6 +289,7 @@ class _Actor:
     along: bool = False  # said to go along the road or its edge ("rides along the kerb", "same direction")
     across: bool = False  # its move into a lane is said with "across" ("cut across to the right")
     own_lane: bool = False  # in a lane of its own beside the ego's ("in the cycle lane on our right")
+    from_cover: bool = False  # said to come out from behind or between something ("from behind a bus")
 
 
 #: Euro NCAP's names of its test scenarios ("Car-to-Car Rear stationary", "Car-to-Pedestrian Nearside
@@ -729,6 +732,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
         (typed, read) for typed, read in zip(_tokens(text, spell=False, brackets=True), tokens) if typed != read
     ]
     framed: list[str] = []
+    tokens = addressee.spoken_to(tokens, _kind_at)  # ("To the jogger on Elm St - you ran across": the jogger)
     tokens = run_on.break_after_a_speed(tokens, _actor_at, FUNCTION_WORDS)  # ("20 mph a van pulled out")
     tokens = whose_act.unnamed_rider(tokens, _kind_at)  # ("car clipped rider": an e-scooter's rider)
     tokens = towed(tokens, _kind_at)  # ("a prime mover and trailer": one road user, before who is who)
@@ -941,6 +945,11 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
                     verb = False  # ("On 3 March a bus pulled out": a date, not the verb "march")
                 if i + 1 < len(tokens) and _modifies_actor(tokens, i + 1):
                     verb = False  # a word naming what kind before an actor ("a police car", "a Ford Transit van")
+                elif _party_crossing(tokens, i):  # ("my son stepped out to cross": on foot, a walker)
+                    if clauses[-1][1] and clauses[-1][1][-1].slot == "pronoun" and clauses[-1][1][-1].end == i:
+                        clauses[-1][1].pop()  # ("her grandson": whose he is, no one acting)
+                    clauses[-1][1].append(_Mention("actor", "pedestrian", tok, i, prev, end=i + 1, det=det))
+                    ignored.pop()
                 elif (
                     _new_unknown_subject(tokens, i)
                     and "VERB" not in pos
@@ -1253,6 +1262,28 @@ def _new_unknown_subject(tokens: list[str], i: int) -> bool:
 
 #: Words a clause opens with before a new road user that is its subject ("Also a ...", "Plus one ...").
 _ADDING = frozenset({"also", "plus", "and", "then", "next"})
+
+
+#: Possessives that name one of someone's own people ("my son", "her grandson", "their daughter").
+_OWNERS = frozenset(("my", "our", "his", "her", "their", "your"))
+
+
+def _party_crossing(tokens: list[str], i: int) -> bool:
+    """Whether the word at ``i`` is one of someone's own people (:data:`vocabulary.PARTY`: "my son",
+    "her grandson", "our nan") who is the subject of a crossing on foot said next ("my son stepped
+    out between parked cars", "her grandson was crossing with his cane"): a walker of the scene. Such
+    a person who drives, rides along or does anything else is left to the readings of the narrator's
+    party (the ego's driver, a passenger)."""
+    if tokens[i] not in V.PARTY or not i or tokens[i - 1] not in _OWNERS:
+        return False
+    for k in range(i + 1, min(i + 8, len(tokens))):
+        if tokens[k] in ".;!?:" or _actor_at(tokens, k):
+            return False
+        key = _best(tokens, k)
+        if key is not None and TABLE[key][0] == "behaviour":
+            value = TABLE[key][1]
+            return (value[0] if isinstance(value, tuple) else value) == "cross_in_front"
+    return False
 
 
 def _someone_new_opens(tokens: list[str], i: int) -> bool:
@@ -2001,6 +2032,8 @@ def _read(text: str) -> Reading:
                 ):
                     for hider in who.group or [who]:  # ("from between two vans": both of them)
                         hider.hides = True  # ("darts out from behind an ice-cream van": what it comes out from)
+                    if isinstance(clause_subject, _Actor) and from_cover.out_of_cover(scanned, m.start, FUNCTION_WORDS):
+                        clause_subject.from_cover = True  # ("a man stepped from behind a bus": he comes out)
                 if role == "verb" and isinstance(who, _Actor) and after_verb:
                     who.acted_on = True  # ("the ego is overtaking a truck": the truck is in the scene)
                 if role == "verb" and isinstance(who, _Actor) and clause_subject == "ego" and motion.passes(prev):
@@ -2030,6 +2063,14 @@ def _read(text: str) -> Reading:
                 expect_subject = False
                 prev = m
                 continue
+            if (
+                m.slot == "relation"
+                and m.value == "behind"
+                and isinstance(clause_subject, _Actor)
+                and from_cover.leaves_cover(scanned, m.start, m.end)
+                and not (nxt is not None and nxt.value == "ego" and nxt.start <= m.end + 2)
+            ):  # ("a jogger came from behind a hedge": out of cover; "from behind me" is the ego's rear)
+                clause_subject.from_cover = True
             if m.slot in ("map", "weather", "time", "density", "lanes", "intent"):
                 _global(r, m)
                 prev = m
@@ -2350,6 +2391,8 @@ def _read(text: str) -> Reading:
     ignored += unplaced
     if len(actors) > MAX_ACTORS:
         raise NotUnderstood([f"{len(actors)} road users (a scenario holds at most {MAX_ACTORS} besides the ego)"], text)
+    for a in actors:
+        _out_from_cover(a)
     _refuse_if_nothing_to_place(text, actors, clauses, ignored, scanned)
     if any(not _idle(a) for a in actors):  # people and vehicles only mentioned (passengers, a car in a
         idle = [a for a in actors if _idle(a)]  # story's aside) are no road users of the scenario
@@ -2520,11 +2563,15 @@ def _read(text: str) -> Reading:
             and (a.pavement or (a.out_of_place and not joins))
             and not overtaking
             and behaviours
-            and behaviours[0][0] in ("cut_in", "forced_turn")
+            and (
+                behaviours[0][0] in ("cut_in", "forced_turn")
+                or (a.pavement and not joins and behaviours[0][0] == "cut_out")
+            )
         ):
             # "riding on the sidewalk, then turning into the road before our car": it crosses into the path;
             # so does one coming out of a place beside the road ("out of a driveway", "out of a farm track and
-            # across"), unless it then rides on along the road
+            # across"), unless it then rides on along the road; a swerve on a pavement leaves no lane of
+            # the road but the pavement ("swerved round a woman on the footpath and into the road")
             behaviours = [("cross_in_front", {}, *behaviours[0][2:])] + behaviours[1:]
         crossing_at = next((k for k, b in enumerate(behaviours) if b[0] == "cross_in_front"), None)
         before = {b[0] for b in behaviours[:crossing_at]} if crossing_at else set()
@@ -2806,6 +2853,20 @@ def _ego_reaction(mentions, k: int, a: _Actor, first_person: bool = False) -> bo
         return False
     came_in = a.came_from and a.kind in VULNERABLE  # (a walker or rider coming off the kerb)
     return came_in or any(b[0] in _CONFLICTS for b in a.behaviours)
+
+
+def _out_from_cover(a: _Actor) -> None:
+    """A walker or rider said to come out from behind or between something, of whom nothing says more
+    than that it goes, crosses from the kerb (:mod:`from_cover`); "behind" said there is where it hid,
+    not a place behind the ego ("stepped from behind a bus")."""
+    quiet = not (a.along or a.stationary or a.passed or a.wrong_way or a.followed or a.own_lane)
+    if not a.from_cover or not from_cover.crosses_from_cover(a.kind, a.behaviours, quiet):
+        return
+    link = a.behaviours[0][3] if a.behaviours else "sequence"
+    a.behaviours = [("cross_in_front", {}, None, link)]
+    a.said.discard("behind")
+    if a.relation == "behind":
+        a.relation = None
 
 
 def _idle(a: _Actor) -> bool:
