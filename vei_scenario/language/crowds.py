@@ -7,8 +7,8 @@ along, acts on no one. Read as a road user, it gives the scenario a walker too m
 the ego's speed or a crossing from the sentence around it.
 
 A crowd is told by noun-phrase grammar, not by words: a plural person noun with no number or
-determiner that picks it out ("two kids", "these kids", "the first one" are counted or told apart,
-and stay road users). It leaves the road users only when it does nothing towards the ego (it
+determiner that picks it out ("two kids", "the other joggers", "the first one" are counted or told
+apart, and stay road users). It leaves the road users only when it does nothing towards the ego (it
 goes along, goes on or stands: nothing of its own crosses, cuts in or comes out) and another road
 user, not a crowd, acts beside it; a crowd alone ("kids walking along the road in the dark") is what
 the description is about, and stays.
@@ -25,7 +25,9 @@ from vei_scenario.language.said_again import plural
 #: Plurals the dictionary gives as their own lemma ("people" is the plural of "person").
 _PLURAL_AS_LEMMA = frozenset(("people", "folk", "folks", "children", "persons"))
 #: Determiners that count or pick out: the people named with one are told apart, not a crowd.
-_COUNTING = frozenset(("a", "an", "one", "two", "three", "four", "five", "both", "these", "those", "this", "that"))
+_COUNTING = frozenset(
+    ("a", "an", "the", "one", "two", "three", "four", "five", "both", "these", "those", "this", "that")
+)
 #: What a road user does when it acts on no one: is there, goes on, goes along, stands.
 _ONLY_THERE = frozenset(("along_road", "keep_going", "keep_lane", "stop"))
 
