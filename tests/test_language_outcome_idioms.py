@@ -117,6 +117,10 @@ ESCAPE_NOUNS = [
     "A car pulled out and I had to anchor up.",
     "A jogger stepped off the kerb and I had to jam the brakes on.",
     "A cyclist veered out and I had to brake like mad.",
+    # a narrator's sentence that is the noun phrase alone: no verb, so no one else's act
+    "I was doing 30 when a pedestrian stepped out from behind a parked van. Emergency stop.",
+    "Came round the corner at 20 and a kid on a scooter was in the road. Emergency braking, nobody hurt.",
+    "I was on 40 when the cyclist swung out round a pothole. Emergency stop, coffee everywhere.",
 ]
 
 

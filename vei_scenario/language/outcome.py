@@ -922,6 +922,8 @@ def _subject(words: list[str]) -> str | None:
         return "ego"
     for k, w in enumerate(words):
         if _is_verb(w) and w not in _BETWEEN and k > 0 and w not in ("ego", "car", "rider", "lane"):
+            if _escape_noun(words, k - 1):
+                continue  # ("Emergency stop.": the head of a noun phrase, no verb with a subject)
             return "ego" if _names_ego(words[:k]) else "other"
     return None
 

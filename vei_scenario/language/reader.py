@@ -25,11 +25,13 @@ whose only verb is unknown (that verb is named). A number with no unit it can re
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass, field, replace
+from copy import copy
+from dataclasses import dataclass, field, fields, replace
 from functools import lru_cache
 
 from vei_scenario.language import (
     addressee,
+    crowds,
     discourse,
     ego,
     ego_double,
@@ -2394,6 +2396,7 @@ def _read(text: str) -> Reading:
     for a in actors:
         _out_from_cover(a)
     _refuse_if_nothing_to_place(text, actors, clauses, ignored, scanned)
+    _group_acts_as_one(actors)  # ("to find two joggers in the road running towards me": both run)
     if any(not _idle(a) for a in actors):  # people and vehicles only mentioned (passengers, a car in a
         idle = [a for a in actors if _idle(a)]  # story's aside) are no road users of the scenario
         actors = [a for a in actors if not _idle(a)]
@@ -2681,6 +2684,7 @@ def _read(text: str) -> Reading:
         actors = ego_turner.merge_turner_into_ego(actors, r, unnamed)  # ("the test car turns right; a rider ...")
         actors = ego_turner.merge_overtaken_into_ego(actors, r, scanned)  # ("a cyclist overtaking the bus")
     actors = ego_double.drop_both_said_again(actors, r)  # ("a van cut the corner. Both drivers braked hard")
+    actors = crowds.drop_crowds(actors, r)  # ("there were kids everywhere, and a cyclist pulled out")
     told = {w for cue in cues for w in cue.words.split()}  # (words the outcome was read from)
     r.ignored = [w for w in r.ignored if w not in told]
     if r.intent is None and not r.actors:
@@ -2867,6 +2871,21 @@ def _out_from_cover(a: _Actor) -> None:
     a.said.discard("behind")
     if a.relation == "behind":
         a.relation = None
+
+
+def _group_acts_as_one(actors: list[_Actor]) -> None:
+    """Give each member of a group of whom nothing is said what is said of a member that acts. Why: a
+    group is named in one phrase ("two joggers", "a couple of kids"), and what the phrase's verb or
+    place says is said of all of them; a clause that hands it to the first member alone must not leave
+    the others idle, to be dropped as only mentioned."""
+    for a in actors:
+        acting = next((m for m in a.group or [] if m is not a and not _idle(m)), None)
+        if acting is None or not _idle(a):
+            continue
+        for f in fields(_Actor):
+            if f.name not in ("group", "word", "det", "named_after", "member_named"):
+                value = getattr(acting, f.name)
+                setattr(a, f.name, copy(value) if isinstance(value, (list, set, dict)) else value)
 
 
 def _idle(a: _Actor) -> bool:
