@@ -17,6 +17,7 @@ Two ways people give the ego's speed that no number grammar of one road user rea
 
 from __future__ import annotations
 
+from vei_scenario.language import lexicon as L
 from vei_scenario.language import vocabulary as V
 from vei_scenario.language.discourse import FIRST_PERSON
 from vei_scenario.language.ego import SENTENCE_END
@@ -237,8 +238,19 @@ def subjectless_sentences(tokens: list[str], speeds: set[int], road_users: set[i
     return out
 
 
-#: Words between a subject and its verb of going ("was", "had been", "was still").
-_AUX = frozenset({"was", "were", "is", "are", "had", "has", "been", "still", "just"})
+#: Words between a subject and its verb of going ("was", "had been", "was still", "was only", "was probably").
+_AUX = frozenset(
+    {"was", "were", "is", "are", "had", "has", "been", "still", "just", "only", "probably", "maybe", "already",
+     "possibly", "likely", "definitely", "barely", "hardly", "easily"}
+)  # fmt: skip
+#: Words right before "my"/"our" that make the party member named after them an object, not the subject
+#: of the verb that follows ("in front of my husband was ...", "behind our dad"): prepositions.
+_OBJECT_OF = frozenset(L.OBJECT_PREPOSITIONS) | {
+    "in", "on", "like", "about", "over", "under", "through", "across", "along", "up", "down", "off", "against",
+    "after", "before", "beside", "besides", "unlike", "'s",
+}  # fmt: skip
+#: Verbs (lemmas) of following: the one of the party following another goes at the speed said with it.
+_PARTY_GOING = frozenset({"follow", "tail", "trail"})
 
 
 def _party_member(tokens: list[str], k: int, covered: set[int]) -> int:
@@ -252,12 +264,50 @@ def _party_member(tokens: list[str], k: int, covered: set[int]) -> int:
     return 0
 
 
+def _party_subject(tokens: list[str], k: int, covered: set[int]) -> tuple[int, bool]:
+    """(the index after a person of the narrator's party who is the subject of what follows, named at
+    ``k``; whether they open their clause): one opening a sentence ("Dad was ...", "Jen, driving ..."),
+    or "my"/"our" and the person anywhere but after a preposition ("Last night my son was driving",
+    "On Friday our daughter was going": a time before the subject leaves it the subject; "in front of my
+    husband was a van": the object). (0, False) where none is."""
+    opens = not k or tokens[k - 1] in _OPENERS
+    if not opens and (tokens[k] not in _OWNERS or tokens[k - 1] in _OBJECT_OF):
+        return 0, False
+    return _party_member(tokens, k, covered), opens
+
+
+def _going_verb(word: str) -> bool:
+    """Whether ``word`` is a verb of going at a speed, of doing one ("doing 40"), or of following."""
+    return bool((_GOING_LEMMAS | _PARTY_GOING | {"do"}) & set(lemmas(word).get("VERB", ())))
+
+
+def _phrase_speeds(tokens: list[str], j: int, speeds: set[int]) -> list[int]:
+    """The speeds (indices in ``speeds``) in the phrase of the verb at ``j``: up to its end, and a note
+    set off by a comma right after it ("driving home, maybe 25 km/h, when ...")."""
+    out = []
+    for n in range(j + 1, min(j + 12, len(tokens))):
+        if tokens[n] == ",":
+            note = n + 1
+            while note < len(tokens) and tokens[note] in _NOTE_HEDGES | {"like", "at", "doing"}:
+                note += 1
+            if note in speeds:
+                out.append(note)
+            break
+        if tokens[n] in _PHRASE_ENDS:
+            break
+        if n in speeds:
+            out.append(n)
+    return out
+
+
 def party_at_the_wheel(
     tokens: list[str], speeds: set[int], covered: set[int], told_first: bool = False
 ) -> dict[int, bool]:
-    """The speeds (by their index in ``speeds``) said of one of the narrator's party who opens a
-    sentence with a verb of going ("Dad was driving at around 80 km/h", "My husband was doing about 70",
-    "Mum was going about 30 mph"), in a story told in the first person: that person drives the car the
+    """The speeds (by their index in ``speeds``) said of one of the narrator's party who is the subject
+    of a verb of going ("Dad was driving at around 80 km/h", "My husband was doing about 70", "Last night
+    my son was driving home, maybe 25 km/h, ...", "Mum was probably going 30 mph", "My wife was following
+    a lorry at 90 km/h"), or who opens a sentence with such a verb in an aside ("Jen, driving to work at
+    30 km/h, had to brake"), in a story told in the first person: that person drives the car the
     narrator is in, the ego, so the speed is the ego's, not that of the road user named before. Words the
     reader reads as a road user or anything else (``covered``) name no such person. The first person
     as written counts too (``told_first``): "a truck crossed in front of our car. Rohit was driving at
@@ -266,20 +316,19 @@ def party_at_the_wheel(
     if not told_first and not FIRST_PERSON & set(tokens):
         return out
     for k in range(len(tokens)):
-        if k and tokens[k - 1] not in _OPENERS:
-            continue
-        j = _party_member(tokens, k, covered)
+        j, opens = _party_subject(tokens, k, covered)
         if not j:
             continue
+        if opens and tokens[j : j + 1] == [","]:
+            j += 1  # ("Jen, driving to work at 30 km/h, ...": an aside of the subject's going)
+            if j >= len(tokens) or not tokens[j].endswith("ing"):
+                continue
         while j < len(tokens) and tokens[j] in _AUX:
             j += 1
-        if j >= len(tokens) or not (_GOING_LEMMAS | {"do"}) & set(lemmas(tokens[j]).get("VERB", ())):
+        if j >= len(tokens) or not _going_verb(tokens[j]):
             continue
-        for n in range(j + 1, min(j + 12, len(tokens))):
-            if tokens[n] in _PHRASE_ENDS:
-                break
-            if n in speeds:
-                out[n] = True
+        for n in _phrase_speeds(tokens, j, speeds):
+            out[n] = True
     return out
 
 

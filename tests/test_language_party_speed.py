@@ -1,0 +1,87 @@
+"""The speed of one of the narrator's party at the wheel, said where a story's sentence does not open
+on them: after a time ("Last night my son was driving home, maybe 25 km/h"), with an adverb before the
+verb ("Hubby was only doing 40 km/h"), in an aside after their name ("Jen, driving to work at 30
+km/h, ..."), in a note after the verb ("my dad was going home, about 50 km/h, when ..."), or following
+another vehicle ("My wife was following a lorry at 90 km/h"). The one of the party who drives drives
+the narrator's vehicle, the ego, so the speed is the ego's.
+
+Every wording here is written for these tests (none is from a corpus); each reading has near misses
+that look alike but must not read so: the party member as an object or after a preposition, a road
+user as the subject, no story told by the narrator."""
+
+from __future__ import annotations
+
+import pytest
+
+from tests.reading_of import ego_kph
+
+
+# --- after a time that opens the sentence, a road user named before -----------------------------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("A scooter rider keeps racing up our street at night. Last night my son was driving home, maybe 25 km/h,"
+         " and it came round the bend at him.", 25),
+        ("A lorry was parked half on the pavement. On Friday my wife was doing about 50 km/h past it when a cyclist"
+         " pulled out in front of her.", 50),
+        ("There is a boda boda that rides on the wrong side here. This morning our daughter was going around 40 km/h"
+         " and it came straight at her.", 40),
+        ("Kids on bikes use our road as a racetrack. Yesterday evening my dad was driving at 30 mph down it when one"
+         " shot out.", 48.3),
+    ],
+    ids=["last-night-note", "on-friday", "this-morning", "yesterday-evening"],
+)  # fmt: skip
+def test_the_partys_speed_after_a_time_is_the_egos(text, kph):
+    assert ego_kph(text) == pytest.approx(kph, abs=0.2)
+
+
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("A bus pulled out right in front of us. My mum was probably going 30 km/h at most.", 30),
+        ("A van reversed out of a drive into our path. Our dad was maybe doing 20 km/h.", 20),
+    ],
+    ids=["probably", "maybe"],
+)
+def test_an_adverb_before_the_partys_verb_keeps_it_theirs(text, kph):
+    assert ego_kph(text) == pytest.approx(kph, abs=0.2)
+
+
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("An e-scooter rider on the shared path went straight across the road. Jen, driving us to work at 30 km/h,"
+         " had to brake hard.", 30),
+        ("A kid on a bike came off the pavement. Grandma, going maybe 20 mph past the school, stopped our car just in"
+         " time.", 32.2),
+    ],
+    ids=["first-name", "grandma"],
+)  # fmt: skip
+def test_the_partys_speed_in_an_aside_after_their_name_is_the_egos(text, kph):
+    assert ego_kph(text) == pytest.approx(kph, abs=0.2)
+
+
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("My wife was following a lorry at about 90 km/h when it pulled out and there was a tyre in our lane.", 90),
+        ("Dad followed the bus at 30 km/h, then it stopped dead in front of us.", 30),
+    ],
+    ids=["was-following", "followed"],
+)
+def test_the_party_following_another_goes_at_the_speed_said(text, kph):
+    """The one followed keeps that speed too, as the reader's following has it; the ego is at it."""
+    assert ego_kph(text) == pytest.approx(kph, abs=0.2)
+
+
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("A scooter rider keeps racing up our street. Last night a van overtook my son, doing maybe 70 km/h.", 70),
+        ("A cyclist was on the kerb. The car in front of my husband was doing 60 km/h when it braked hard.", 60),
+        ("A lorry was parked on the corner. Last week a van hit my dad, going 60 km/h, near our house.", 60),
+    ],
+    ids=["object-of-a-verb", "after-a-preposition", "object-then-aside"],
+)  # fmt: skip
+def test_a_speed_not_said_of_the_party_at_the_wheel_is_not_the_egos(text, kph):
+    assert ego_kph(text) != pytest.approx(kph, abs=0.2)
