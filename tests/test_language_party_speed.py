@@ -85,3 +85,36 @@ def test_the_party_following_another_goes_at_the_speed_said(text, kph):
 )  # fmt: skip
 def test_a_speed_not_said_of_the_party_at_the_wheel_is_not_the_egos(text, kph):
     assert ego_kph(text) != pytest.approx(kph, abs=0.2)
+
+
+# --- a sentence with no subject and no verb, only where and how fast, before what happened ----------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("A bus was stopped at the kerb. Already on the roundabout at about 30 km/h when a taxi came in from the"
+         " left.", 30),
+        ("Van cut me up today. On the M6 at 70 mph when a white van swerved across from lane two.", 112.7),
+        ("Kids on bikes everywhere. Just past the school, maybe 30 km/h, when one of them rode out from the left.",
+         30),
+        ("A lorry was parked on the bridge. Halfway over it at 50 km/h as a cyclist pulled out from behind it.", 50),
+        ("Proper scare tonight. Down the hill at 40 km/h while a kid on a scooter came straight out of a"
+         " driveway.", 40),
+    ],
+    ids=["already-on-the-roundabout", "on-the-motorway", "just-past-a-place", "halfway-over-it", "down-the-hill"],
+)  # fmt: skip
+def test_a_subjectless_setting_before_what_happened_is_the_narrators(text, kph):
+    assert ego_kph(text) == pytest.approx(kph, abs=0.2)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A bus pulled out. At 40 km/h the van behind it pulled out too.",
+        "A car at 40 mph when the lights changed went straight through.",
+        "I saw a van at 40 mph when the lights changed.",
+        "A bus was ahead. It was at 40 km/h when the lights changed.",
+    ],
+    ids=["no-clause-after", "a-road-user-before", "seen-road-user", "it-opens"],
+)
+def test_a_speed_with_a_subject_of_its_own_is_not_the_narrators(text):
+    assert ego_kph(text) != pytest.approx(40 * (1.609 if "mph" in text else 1), abs=0.2)

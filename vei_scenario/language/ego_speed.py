@@ -238,6 +238,58 @@ def subjectless_sentences(tokens: list[str], speeds: set[int], road_users: set[i
     return out
 
 
+#: Words that open the clause of what happened while the ego went at a speed ("... at 30 km/h when a
+#: taxi came in", "... at 50 as a cyclist pulled out").
+_INTERRUPTED = frozenset({"when", "as", "while", "whilst", "till", "until"})
+#: Forms of "be" and "have": a sentence with one before its speed has a subject and a verb of its own.
+_FINITE = frozenset({"was", "were", "is", "are", "am", "'m", "'s", "'re", "be", "been", "had", "has", "have"})
+#: How far into a sentence with no subject its speed may stand ("Already on the roundabout at about 20").
+_SETTING_REACH = 10
+
+
+def _no_subject_before(tokens: list[str], start: int, i: int, road_users: set[int]) -> bool:
+    """Whether tokens ``start:i`` name no one and hold no verb: only a place, a time, an adverb ("Already
+    on the roundabout", "On the M6", "Just past the school,"), no road user, pronoun nor verb of a subject."""
+    for j in range(start, i):
+        w = tokens[j]
+        if j in road_users or w in _FINITE or w in _SUBJECT_PRONOUNS or _past_verb(w):
+            return False
+        if j == start and w in _OPENING_SUBJECTS:
+            return False  # ("It was at 40 when ...": its subject; "over it at 50" is an object)
+        if w.endswith("ing") and "VERB" in lemmas(w):
+            return False  # (a participle opening the sentence: :func:`opening_participles` reads it)
+    return True
+
+
+#: Pronouns that are a sentence's subject: one said before its speed makes the speed theirs.
+_SUBJECT_PRONOUNS = frozenset({"i", "we", "he", "she", "they", "you"})
+#: Words that are a sentence's subject where they open it ("It was at 40 ...", "There was a bus at 30").
+_OPENING_SUBJECTS = frozenset({"it", "there", "this", "that", "one"})
+
+
+def before_what_happened(tokens: list[str], speeds: set[int], road_users: set[int]) -> dict[int, bool]:
+    """The speeds (by their index in ``speeds``) said in a sentence that opens with no subject and no
+    verb, only where and how fast, before "when"/"as"/"while" and what happened ("Already on the
+    roundabout at about 20 mph when an SUV comes in from the left", "On the M6 at 70 when a van swerved
+    across", "Just past the school, maybe 30 km/h, when a kid rode out"): True, the speed of the one the
+    sentence leaves out, the narrator, as a subjectless opening phrase is (:func:`opening_participles`);
+    the one named after "when" is who interrupts it. Not where a road user or a verb comes before the
+    speed ("A car at 40 mph when ...": the car's), nor without a clause after it ("At 40 km/h the van
+    pulled out": the van's)."""
+    out: dict[int, bool] = {}
+    for i in sorted(speeds):
+        start = i
+        while start > 0 and tokens[start - 1] not in _OPENERS:
+            start -= 1
+        if i - start > _SETTING_REACH or not _no_subject_before(tokens, start, i, road_users):
+            continue
+        k = i + 1 + (i + 1 < len(tokens) and tokens[i + 1] in V.SPEED_UNITS)
+        k += k < len(tokens) and tokens[k] == ","
+        if k < len(tokens) and tokens[k] in _INTERRUPTED:
+            out[i] = True
+    return out
+
+
 #: Words between a subject and its verb of going ("was", "had been", "was still", "was only", "was probably").
 _AUX = frozenset(
     {"was", "were", "is", "are", "had", "has", "been", "still", "just", "only", "probably", "maybe", "already",
