@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import pytest
 
-from tests.reading_of import ego_kph
+from tests.reading_of import ego_kph, kinds
 
 
 # --- after a time that opens the sentence, a road user named before -----------------------------------
@@ -118,3 +118,40 @@ def test_a_subjectless_setting_before_what_happened_is_the_narrators(text, kph):
 )
 def test_a_speed_with_a_subject_of_its_own_is_not_the_narrators(text):
     assert ego_kph(text) != pytest.approx(40 * (1.609 if "mph" in text else 1), abs=0.2)
+
+
+# --- the reader addressed before a modal: "You'll be driving at around 80 km/h" -----------------------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("You will follow the red car in front of you. You'll be driving at around 80 km/h on a country road.", 80),
+        ("A red car is ahead of you. You will be travelling at about 80 km/h on a country road.", 80),
+        ("A cyclist is on the left. You should be doing around 50 km/h. The cyclist will swerve.", 50),
+        ("Your task: a van is parked on the right. You must keep to 40 km/h. A child will run out from behind it.", 40),
+        ("A bus is stopped ahead. You'd be going about 30 mph when a kid runs out from behind it.", 48.3),
+    ],
+    ids=["youll-be-driving", "you-will-be-travelling", "you-should-be-doing", "you-must-keep-to", "youd-be-going"],
+)
+def test_the_reader_addressed_before_a_modal_is_the_ego(text, kph):
+    assert ego_kph(text) == pytest.approx(kph, abs=0.2)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A truck ahead of you will brake at 60 km/h. You will see it stop.",
+        "A bus is ahead. Thank you. It will brake at 60 km/h.",
+    ],
+    ids=["you-as-object", "thank-you"],
+)
+def test_a_speed_of_the_road_user_stays_its_own_beside_you(text):
+    assert ego_kph(text) != pytest.approx(60)
+
+
+def test_you_dismissed_is_no_narrator_in_the_scene():
+    """ "then you can go": permission, said to listeners, who are not in the story."""
+    text = (
+        "Right, listen up, then you can go. Sunday one of our vans was turning left out of the yard at 10 km/h"
+        " and an e-scooter came along the cycle lane from the left and went under the front."
+    )
+    assert kinds(text) == ["e-scooter"]
