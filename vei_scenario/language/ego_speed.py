@@ -301,8 +301,6 @@ _OBJECT_OF = frozenset(L.OBJECT_PREPOSITIONS) | {
     "in", "on", "like", "about", "over", "under", "through", "across", "along", "up", "down", "off", "against",
     "after", "before", "beside", "besides", "unlike", "'s",
 }  # fmt: skip
-#: Verbs (lemmas) of following: the one of the party following another goes at the speed said with it.
-_PARTY_GOING = frozenset({"follow", "tail", "trail"})
 
 
 def _party_member(tokens: list[str], k: int, covered: set[int]) -> int:
@@ -329,8 +327,10 @@ def _party_subject(tokens: list[str], k: int, covered: set[int]) -> tuple[int, b
 
 
 def _going_verb(word: str) -> bool:
-    """Whether ``word`` is a verb of going at a speed, of doing one ("doing 40"), or of following."""
-    return bool((_GOING_LEMMAS | _PARTY_GOING | {"do"}) & set(lemmas(word).get("VERB", ())))
+    """Whether ``word`` is a verb of going at a speed or of doing one ("doing 40"). Not one of following
+    ("My wife was following a lorry at 90 km/h"): that speed is the followed one's as well, which this
+    reading, giving it to the ego alone, would take from it."""
+    return bool((_GOING_LEMMAS | {"do"}) & set(lemmas(word).get("VERB", ())))
 
 
 def _phrase_speeds(tokens: list[str], j: int, speeds: set[int]) -> list[int]:
@@ -357,13 +357,13 @@ def party_at_the_wheel(
 ) -> dict[int, bool]:
     """The speeds (by their index in ``speeds``) said of one of the narrator's party who is the subject
     of a verb of going ("Dad was driving at around 80 km/h", "My husband was doing about 70", "Last night
-    my son was driving home, maybe 25 km/h, ...", "Mum was probably going 30 mph", "My wife was following
-    a lorry at 90 km/h"), or who opens a sentence with such a verb in an aside ("Jen, driving to work at
-    30 km/h, had to brake"), in a story told in the first person: that person drives the car the
-    narrator is in, the ego, so the speed is the ego's, not that of the road user named before. Words the
-    reader reads as a road user or anything else (``covered``) name no such person. The first person
-    as written counts too (``told_first``): "a truck crossed in front of our car. Rohit was driving at
-    50" has none left in ``tokens`` once "our car" is read as the ego."""
+    my son was driving home, maybe 25 km/h, ...", "Mum was probably going 30 mph"), or who opens a
+    sentence with such a verb in an aside ("Jen, driving to work at 30 km/h, had to brake"), in a story
+    told in the first person: that person drives the car the narrator is in, the ego, so the speed is
+    the ego's, not that of the road user named before. Words the reader reads as a road user or anything
+    else (``covered``) name no such person. The first person as written counts too (``told_first``): "a
+    truck crossed in front of our car. Rohit was driving at 50" has none left in ``tokens`` once "our
+    car" is read as the ego."""
     out: dict[int, bool] = {}
     if not told_first and not FIRST_PERSON & set(tokens):
         return out
