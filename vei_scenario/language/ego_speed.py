@@ -17,6 +17,7 @@ Two ways people give the ego's speed that no number grammar of one road user rea
 
 from __future__ import annotations
 
+from vei_scenario.language import lexicon as L
 from vei_scenario.language import vocabulary as V
 from vei_scenario.language.discourse import FIRST_PERSON
 from vei_scenario.language.ego import SENTENCE_END
@@ -237,8 +238,69 @@ def subjectless_sentences(tokens: list[str], speeds: set[int], road_users: set[i
     return out
 
 
-#: Words between a subject and its verb of going ("was", "had been", "was still").
-_AUX = frozenset({"was", "were", "is", "are", "had", "has", "been", "still", "just"})
+#: Words that open the clause of what happened while the ego went at a speed ("... at 30 km/h when a
+#: taxi came in", "... at 50 as a cyclist pulled out").
+_INTERRUPTED = frozenset({"when", "as", "while", "whilst", "till", "until"})
+#: Forms of "be" and "have": a sentence with one before its speed has a subject and a verb of its own.
+_FINITE = frozenset({"was", "were", "is", "are", "am", "'m", "'s", "'re", "be", "been", "had", "has", "have"})
+#: How far into a sentence with no subject its speed may stand ("Already on the roundabout at about 20").
+_SETTING_REACH = 10
+
+
+def _no_subject_before(tokens: list[str], start: int, i: int, road_users: set[int]) -> bool:
+    """Whether tokens ``start:i`` name no one and hold no verb: only a place, a time, an adverb ("Already
+    on the roundabout", "On the M6", "Just past the school,"), no road user, pronoun nor verb of a subject."""
+    for j in range(start, i):
+        w = tokens[j]
+        if j in road_users or w in _FINITE or w in _SUBJECT_PRONOUNS or _past_verb(w):
+            return False
+        if j == start and w in _OPENING_SUBJECTS:
+            return False  # ("It was at 40 when ...": its subject; "over it at 50" is an object)
+        if w.endswith("ing") and "VERB" in lemmas(w):
+            return False  # (a participle opening the sentence: :func:`opening_participles` reads it)
+    return True
+
+
+#: Pronouns that are a sentence's subject: one said before its speed makes the speed theirs.
+_SUBJECT_PRONOUNS = frozenset({"i", "we", "he", "she", "they", "you"})
+#: Words that are a sentence's subject where they open it ("It was at 40 ...", "There was a bus at 30").
+_OPENING_SUBJECTS = frozenset({"it", "there", "this", "that", "one"})
+
+
+def before_what_happened(tokens: list[str], speeds: set[int], road_users: set[int]) -> dict[int, bool]:
+    """The speeds (by their index in ``speeds``) said in a sentence that opens with no subject and no
+    verb, only where and how fast, before "when"/"as"/"while" and what happened ("Already on the
+    roundabout at about 20 mph when an SUV comes in from the left", "On the M6 at 70 when a van swerved
+    across", "Just past the school, maybe 30 km/h, when a kid rode out"): True, the speed of the one the
+    sentence leaves out, the narrator, as a subjectless opening phrase is (:func:`opening_participles`);
+    the one named after "when" is who interrupts it. Not where a road user or a verb comes before the
+    speed ("A car at 40 mph when ...": the car's), nor without a clause after it ("At 40 km/h the van
+    pulled out": the van's)."""
+    out: dict[int, bool] = {}
+    for i in sorted(speeds):
+        start = i
+        while start > 0 and tokens[start - 1] not in _OPENERS:
+            start -= 1
+        if i - start > _SETTING_REACH or not _no_subject_before(tokens, start, i, road_users):
+            continue
+        k = i + 1 + (i + 1 < len(tokens) and tokens[i + 1] in V.SPEED_UNITS)
+        k += k < len(tokens) and tokens[k] == ","
+        if k < len(tokens) and tokens[k] in _INTERRUPTED:
+            out[i] = True
+    return out
+
+
+#: Words between a subject and its verb of going ("was", "had been", "was still", "was only", "was probably").
+_AUX = frozenset(
+    {"was", "were", "is", "are", "had", "has", "been", "still", "just", "only", "probably", "maybe", "already",
+     "possibly", "likely", "definitely", "barely", "hardly", "easily"}
+)  # fmt: skip
+#: Words right before "my"/"our" that make the party member named after them an object, not the subject
+#: of the verb that follows ("in front of my husband was ...", "behind our dad"): prepositions.
+_OBJECT_OF = frozenset(L.OBJECT_PREPOSITIONS) | {
+    "in", "on", "like", "about", "over", "under", "through", "across", "along", "up", "down", "off", "against",
+    "after", "before", "beside", "besides", "unlike", "'s",
+}  # fmt: skip
 
 
 def _party_member(tokens: list[str], k: int, covered: set[int]) -> int:
@@ -252,34 +314,73 @@ def _party_member(tokens: list[str], k: int, covered: set[int]) -> int:
     return 0
 
 
+def _party_subject(tokens: list[str], k: int, covered: set[int]) -> tuple[int, bool]:
+    """(the index after a person of the narrator's party who is the subject of what follows, named at
+    ``k``; whether they open their clause): one opening a sentence ("Dad was ...", "Jen, driving ..."),
+    or "my"/"our" and the person anywhere but after a preposition ("Last night my son was driving",
+    "On Friday our daughter was going": a time before the subject leaves it the subject; "in front of my
+    husband was a van": the object). (0, False) where none is."""
+    opens = not k or tokens[k - 1] in _OPENERS
+    if not opens and (tokens[k] not in _OWNERS or tokens[k - 1] in _OBJECT_OF):
+        return 0, False
+    return _party_member(tokens, k, covered), opens
+
+
+def _going_verb(word: str) -> bool:
+    """Whether ``word`` is a verb of going at a speed or of doing one ("doing 40"). Not one of following
+    ("My wife was following a lorry at 90 km/h"): that speed is the followed one's as well, which this
+    reading, giving it to the ego alone, would take from it."""
+    return bool((_GOING_LEMMAS | {"do"}) & set(lemmas(word).get("VERB", ())))
+
+
+def _phrase_speeds(tokens: list[str], j: int, speeds: set[int]) -> list[int]:
+    """The speeds (indices in ``speeds``) in the phrase of the verb at ``j``: up to its end, and a note
+    set off by a comma right after it ("driving home, maybe 25 km/h, when ...")."""
+    out = []
+    for n in range(j + 1, min(j + 12, len(tokens))):
+        if tokens[n] == ",":
+            note = n + 1
+            while note < len(tokens) and tokens[note] in _NOTE_HEDGES | {"like", "at", "doing"}:
+                note += 1
+            if note in speeds:
+                out.append(note)
+            break
+        if tokens[n] in _PHRASE_ENDS:
+            break
+        if n in speeds:
+            out.append(n)
+    return out
+
+
 def party_at_the_wheel(
     tokens: list[str], speeds: set[int], covered: set[int], told_first: bool = False
 ) -> dict[int, bool]:
-    """The speeds (by their index in ``speeds``) said of one of the narrator's party who opens a
-    sentence with a verb of going ("Dad was driving at around 80 km/h", "My husband was doing about 70",
-    "Mum was going about 30 mph"), in a story told in the first person: that person drives the car the
-    narrator is in, the ego, so the speed is the ego's, not that of the road user named before. Words the
-    reader reads as a road user or anything else (``covered``) name no such person. The first person
-    as written counts too (``told_first``): "a truck crossed in front of our car. Rohit was driving at
-    50" has none left in ``tokens`` once "our car" is read as the ego."""
+    """The speeds (by their index in ``speeds``) said of one of the narrator's party who is the subject
+    of a verb of going ("Dad was driving at around 80 km/h", "My husband was doing about 70", "Last night
+    my son was driving home, maybe 25 km/h, ...", "Mum was probably going 30 mph"), or who opens a
+    sentence with such a verb in an aside ("Jen, driving to work at 30 km/h, had to brake"), in a story
+    told in the first person: that person drives the car the narrator is in, the ego, so the speed is
+    the ego's, not that of the road user named before. Words the reader reads as a road user or anything
+    else (``covered``) name no such person. The first person as written counts too (``told_first``): "a
+    truck crossed in front of our car. Rohit was driving at 50" has none left in ``tokens`` once "our
+    car" is read as the ego."""
     out: dict[int, bool] = {}
     if not told_first and not FIRST_PERSON & set(tokens):
         return out
     for k in range(len(tokens)):
-        if k and tokens[k - 1] not in _OPENERS:
-            continue
-        j = _party_member(tokens, k, covered)
+        j, opens = _party_subject(tokens, k, covered)
         if not j:
             continue
+        if opens and tokens[j : j + 1] == [","]:
+            j += 1  # ("Jen, driving to work at 30 km/h, ...": an aside of the subject's going)
+            if j >= len(tokens) or not tokens[j].endswith("ing"):
+                continue
         while j < len(tokens) and tokens[j] in _AUX:
             j += 1
-        if j >= len(tokens) or not (_GOING_LEMMAS | {"do"}) & set(lemmas(tokens[j]).get("VERB", ())):
+        if j >= len(tokens) or not _going_verb(tokens[j]):
             continue
-        for n in range(j + 1, min(j + 12, len(tokens))):
-            if tokens[n] in _PHRASE_ENDS:
-                break
-            if n in speeds:
-                out[n] = True
+        for n in _phrase_speeds(tokens, j, speeds):
+            out[n] = True
     return out
 
 

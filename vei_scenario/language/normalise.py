@@ -604,6 +604,16 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
         "i",
         text,
     )
+    # the reader addressed before a modal of what will or must be done and a verb of driving ("you'll be
+    # driving at 80 km/h", "you will follow", "you should be doing 50", "you must keep to 40"): the ego's, as
+    # what they do is (not one of permission or chance: "then you can go", "you may see")
+    text = re.sub(
+        r"\byou(?=(?:'ll|'d| will| would| should| must| shall)(?: not| then| also| just| now| first)?(?: be)? "
+        r"(?:brak|stop|pass|slow|swerv|driv|turn|overtak|follow|approach|go|com|keep|travel|rid|mov|cruis|head|"
+        r"do|at|enter|reach|leav|merg|chang|join|exit|pull)\w*)",
+        "i",
+        text,
+    )
     text = _IDENTIFIER.sub(lambda m: _identifier_named(m, known_noun), text)
     text = _LEAD_SUBJECT.sub(lambda m: _lead_as_a_noun(m, known_noun), text)
     text = _acronyms_defined(text, known_noun)

@@ -1746,6 +1746,7 @@ def _read(text: str) -> Reading:
     egos_own.update({i: True for i in speeds if ego_speed.cruise_setting(scanned, i)})  # ("cruise set to 100")
     limits = ego_speed.limits(scanned, speeds)  # ("doing 50 in a 60 km/h zone": the road's, no one's speed)
     opened.update(ego_speed.opening_participles(scanned))  # ("Heading home at 50 km/h, ...": speeds of opening phrases)
+    opened.update(ego_speed.before_what_happened(scanned, speeds, road_users))  # ("On the M6 at 70 when ...")
     for link, mentions in clauses:
         named: list[tuple[_Actor | str, str]] = []  # (actor, role) in order: subject, prep, verb, participle
         clause_subject: _Actor | str | None = None
