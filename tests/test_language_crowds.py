@@ -67,6 +67,11 @@ def test_a_crowd_that_only_is_there_is_no_road_user(text, expected):
             "There were people crossing in front of me at the lights when a scooter ran the red from the left.",
             ["pedestrian", "e-scooter"],
         ),
+        # beside a vehicle that only stands there (parked), the crowd is all that acts
+        (
+            "Kids were walking along the road towards me past a parked van.",
+            ["pedestrian", "van"],
+        ),
         # one walker, not a crowd
         (
             "A jogger was running along the road when a van pulled out of a side road on my left.",

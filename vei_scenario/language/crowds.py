@@ -18,8 +18,9 @@ from __future__ import annotations
 
 from typing import Protocol
 
+from vei_scenario.language.ego_double import without_road_user
 from vei_scenario.language.lemmas import lemmas
-from vei_scenario.language.reading import ActorSpec, Reading
+from vei_scenario.language.reading import ActorSpec, Reading, stands_there
 from vei_scenario.language.said_again import plural
 
 #: Plurals the dictionary gives as their own lemma ("people" is the plural of "person").
@@ -56,13 +57,13 @@ def _crowd(a: _Named, spec: ActorSpec) -> bool:
 
 def drop_crowds(actors: list, reading: Reading) -> list:
     """``actors`` and ``reading``'s road users without the crowds that only are there, when a road user
-    that is no such crowd is left beside them (see the module); ``actors`` are what the reader gathered
-    of them, in the same order. Obstacles keep pointing at the same road users."""
+    that is no such crowd and does not only stand there acts beside them (see the module); ``actors``
+    are what the reader gathered of them, in the same order. Obstacles keep pointing at the same road
+    users."""
     crowds = [k for k, (a, s) in enumerate(zip(actors, reading.actors)) if _crowd(a, s)]
-    if not crowds or len(crowds) == len(actors) or any(s.obstacle in crowds for s in reading.actors):
+    acting = [s for k, s in enumerate(reading.actors) if k not in crowds and not stands_there(s)]
+    if not crowds or not acting or any(s.obstacle in crowds for s in reading.actors):
         return actors
-    for s in reading.actors:
-        if s.obstacle is not None:
-            s.obstacle -= sum(1 for k in crowds if k < s.obstacle)
-    reading.actors = [s for k, s in enumerate(reading.actors) if k not in crowds]
-    return [a for k, a in enumerate(actors) if k not in crowds]
+    for k in reversed(crowds):  # (from the last, so that the others' places hold)
+        actors = without_road_user(actors, reading, k)
+    return actors

@@ -45,7 +45,7 @@ from vei_scenario.language.reading import ActorSpec, Reading
 #: What the ego itself does in a story told from it: goes on, slows, brakes (to a stop).
 _EGO_LIKE = frozenset(("keep_going", "sudden_stop", "stop", "change_speed"))
 #: Determiners that bring a road user new into the story: the ego, whose story it is, is never new.
-_NEW = frozenset(("a", "an", "another", "some", "one"))
+NEW = frozenset(("a", "an", "another", "some", "one"))
 #: Words that name the ego in the reader's tokens: the narrator, the reader addressed, the ego framed.
 _NAMING_THE_EGO = frozenset(("i", "we", "me", "us", "my", "our", "you", "your", "yourself", "ego"))
 #: The kinds the ego may be (it drives or rides: never on foot).
@@ -121,7 +121,7 @@ def _double(a: _Said, spec: ActorSpec, others: list, unnamed: bool = False) -> b
         and names <= _EGO_LIKE
         and names != {"stop"}
         and not _placed(a)
-        and (a.det not in _NEW or (unnamed and spec.speed_mps is not None))
+        and (a.det not in NEW or (unnamed and spec.speed_mps is not None))
         and not a.seen
         and not any(x.object_of is a for x in others)
     )
@@ -142,16 +142,16 @@ def merge_into_ego(actors: list, reading: Reading, unnamed: bool = False) -> lis
     if len(doubles) != 1 or not deeds or len(specs) < 2:
         return actors
     k = doubles[0]
-    if not _as_ego(reading, k):
+    if not take_as_ego(reading, k):
         return actors
     double = specs[k]
     rest = [s for j, s in enumerate(specs) if j != k]
     if double.distance_m is not None and len(rest) == 1 and rest[0].distance_m is None:
         rest[0].distance_m = double.distance_m  # ("Bus was doing 40 only 3 m from a cyclist")
-    return _without(actors, reading, k)
+    return without_road_user(actors, reading, k)
 
 
-def _as_ego(reading: Reading, k: int) -> bool:
+def take_as_ego(reading: Reading, k: int) -> bool:
     """Whether ``reading``'s ``k``-th road user can be taken for the ego (no other swerves round it:
     what one swerves round is in the road, not the ego); if so, its speed becomes the ego's where the
     ego has none."""
@@ -163,9 +163,9 @@ def _as_ego(reading: Reading, k: int) -> bool:
     return True
 
 
-def _without(actors: list, reading: Reading, k: int) -> list:
-    """``actors`` and ``reading``'s road users without the ``k``-th, the ego said again: the others'
-    obstacles (what they swerve round) keep pointing at the same road users."""
+def without_road_user(actors: list, reading: Reading, k: int) -> list:
+    """``actors`` and ``reading``'s road users without the ``k``-th (the ego said again, a crowd): the
+    others' obstacles (what they swerve round) keep pointing at the same road users."""
     for s in reading.actors:
         if s.obstacle is not None and s.obstacle > k:
             s.obstacle -= 1
@@ -180,7 +180,7 @@ def _ego_driver(a: _Said, spec: ActorSpec) -> bool:
     return (
         spec.kind == "car"
         and a.word in _AT_A_WHEEL
-        and a.det not in _NEW
+        and a.det not in NEW
         and a.named_after not in _SOMEONE_ELSE
         and a.relation is None
         and not (a.side or a.lane_side or a.kerb or a.kerb_side or a.from_arm or a.beside)
@@ -200,13 +200,13 @@ def merge_ego_driver(actors: list, reading: Reading) -> list:
     if len(drivers) != 1 or len(specs) < 2:
         return actors
     k = drivers[0]
-    if not _as_ego(reading, k):
+    if not take_as_ego(reading, k):
         return actors
     driver = specs[k]
     turns = [b[1].get("turn") for b in driver.behaviours if b[0] == "forced_turn"]
     if reading.ego_route is None and turns[:1] in (["left"], ["right"]):
         reading.ego_route = turns[0]  # ("When driver turning right at the junction, ...")
-    return _without(actors, reading, k)
+    return without_road_user(actors, reading, k)
 
 
 def _said_again_as_both(group: list, spec_of: dict, others: list) -> bool:

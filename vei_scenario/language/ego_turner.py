@@ -29,8 +29,8 @@ behind, or slower than the traffic.
 from __future__ import annotations
 
 from vei_scenario.language.discourse import VEHICLES, VULNERABLE
-from vei_scenario.language.ego_double import _NEW, _as_ego, _without
-from vei_scenario.language.reading import ActorSpec, Reading
+from vei_scenario.language.ego_double import NEW, take_as_ego, without_road_user
+from vei_scenario.language.reading import ActorSpec, Reading, stands_there
 
 #: First-person words of a narrator someone meets ("in front of me", "our lane"): the narrator is the ego.
 _MEETS_NARRATOR = frozenset(("me", "us", "my", "our"))
@@ -46,12 +46,6 @@ def _turn_of(spec: ActorSpec) -> str | None:
         return None
     side = first[1].get("turn")
     return side if side in _SIDES else None
-
-
-def _scenery(spec: ActorSpec) -> bool:
-    """Whether ``spec`` only stands there (parked at the kerb: no road user the story is about)."""
-    names = {b[0] for b in spec.behaviours}
-    return spec.speed_mps == 0.0 and names <= {"keep_going", "stop", "keep_lane"}
 
 
 def _unplaced(a, spec: ActorSpec) -> bool:
@@ -74,7 +68,7 @@ def merge_turner_into_ego(actors: list, reading: Reading, unnamed: bool = False)
     if reading.ego_route is not None or len(reading.actors) < 2:
         return actors
     specs = reading.actors
-    movers = [k for k, s in enumerate(specs) if s.kind in VEHICLES and not _scenery(s)]
+    movers = [k for k, s in enumerate(specs) if s.kind in VEHICLES and not stands_there(s)]
     if len(movers) != 1:
         return actors
     k = movers[0]
@@ -82,15 +76,15 @@ def merge_turner_into_ego(actors: list, reading: Reading, unnamed: bool = False)
     side = _turn_of(turner)
     if side is None or not _unplaced(a, turner) or a.stationary or turner.speed_mps == 0.0:
         return actors
-    if a.det in _NEW and not unnamed:
+    if a.det in NEW and not unnamed:
         return actors
-    rest = [s for j, s in enumerate(specs) if j != k and not _scenery(s)]
+    rest = [s for j, s in enumerate(specs) if j != k and not stands_there(s)]
     if not rest or any(s.kind not in VULNERABLE for s in rest):
         return actors
-    if not _as_ego(reading, k):
+    if not take_as_ego(reading, k):
         return actors
     reading.ego_route = side
-    return _without(actors, reading, k)
+    return without_road_user(actors, reading, k)
 
 
 #: What the ego's vehicle does while another passes it: pulls away or out, goes on, changes speed.
@@ -126,10 +120,10 @@ def merge_overtaken_into_ego(actors: list, reading: Reading, tokens: list[str]) 
     ``actors`` are what the reader gathered of its road users, in the same order. Returns ``actors``
     without it."""
     specs = reading.actors
-    acting = [s for s in specs if not _scenery(s)]
+    acting = [s for s in specs if not stands_there(s)]
     if len(acting) != 2 or _MEETS_NARRATOR & set(tokens):
         return actors
     taken = [k for k, (a, s) in enumerate(zip(actors, specs)) if _overtaken(a, s, actors, specs)]
-    if len(taken) != 1 or not _as_ego(reading, taken[0]):
+    if len(taken) != 1 or not take_as_ego(reading, taken[0]):
         return actors
-    return _without(actors, reading, taken[0])
+    return without_road_user(actors, reading, taken[0])

@@ -61,6 +61,16 @@ class Reading:
     read_as: list[tuple[str, str]] = field(default_factory=list)
 
 
+#: What a road user does while it only stands there: nothing that moves it.
+_STANDING = frozenset(("keep_going", "stop", "keep_lane"))
+
+
+def stands_there(spec: ActorSpec) -> bool:
+    """Whether road user ``spec`` only stands there (a car parked at the kerb): scenery the scenario may
+    hold, no road user that acts on anyone."""
+    return spec.speed_mps == 0.0 and {b[0] for b in spec.behaviours} <= _STANDING
+
+
 def _kph(mps: float | None) -> str | None:
     return None if mps is None else f"{mps * 3.6:.3g} km/h"
 
