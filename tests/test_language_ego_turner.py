@@ -12,6 +12,7 @@ from vei_scenario.language.reader import read
 #: The same thing said by different writers: a news item, a campaign's case study, a police note, a
 #: study's log, a witness, a fleet report. Each: the text, the ego's route, the road users left.
 TURNERS = [
+    ("The truck turned right and a cyclist came up its inside.", "right", ["bicycle"]),
     (
         "A lorry turning left at a crossroads struck a cyclist who had ridden up the inside of its cab.",
         "left",

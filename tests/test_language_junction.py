@@ -352,7 +352,7 @@ def test_a_turn_with_its_subject_left_out_before_and_is_the_narrators(text, rout
 # near misses: a turn said with its road user keeps it
 ROAD_USERS_TURN_THEN_ANOTHER = [
     "A van turned left in front of me and a cyclist behind it swerved.",
-    "The truck turned right and a cyclist came up its inside.",
+    "The truck ahead turned right and a cyclist came up its inside.",
 ]
 
 
