@@ -160,6 +160,35 @@ def test_a_clock_with_a_dot_and_its_half_of_the_day_is_a_clock(text, clock):
 
 
 @pytest.mark.parametrize(
+    "text, clock",
+    [
+        ("At 23.10 on the ring road I was doing 50 mph when a van cut in.", "23:10"),
+        ("Around 7.30 this morning a cyclist pulled out of a side road in front of me.", "07:30"),
+        ("School run yesterday afternoon, approx 3.15, a van drove over the zebra while a girl was crossing.", "15:15"),
+        ("Incident at about 17.45 - a scooter rider came off the pavement on my left.", "17:45"),
+        ("Dashcam at approximately 21.40, a cyclist with no lights pulled out of a side road on my left.", "21:40"),
+    ],
+    ids=["night", "morning", "afternoon", "evening", "approximately"],
+)
+def test_a_clock_with_a_dot_after_a_word_of_time_is_a_clock_and_no_speed(text, clock):
+    r = read(text)
+    assert r.time == clock
+    assert all(a.speed_mps is None for a in r.actors)
+    assert r.ego_speed_mps in (None, 50 * 0.44704)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "The e-scooter was going at about 4.5 m/s across the road in front of me.",
+        "A van cut in about 2.50 m in front of me at 40 km/h.",
+    ],
+)
+def test_a_number_with_a_dot_and_a_unit_is_no_clock(text):
+    assert read(text).time is None
+
+
+@pytest.mark.parametrize(
     "text",
     [
         "In the small hours a fox runs out in front of the ego.",

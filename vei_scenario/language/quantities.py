@@ -379,12 +379,22 @@ _BEFORE_HOUR = frozenset({"at", "around", "about", "approx", "approximately", "b
 _HOUR_LINKS = frozenset({"this", "last", "in", "the", "on", "that", "yesterday", "tomorrow", "o'clock", ","})
 
 
+#: A clock written with a dot and no half of the day ("3.15", "7.30", "23.10"): an hour and its minutes.
+_DOTTED_TIME = re.compile(r"([01]?\d|2[0-3])\.([0-5]\d)")
+
+
 def clock_hour(tokens: list[str], i: int) -> bool:
-    """Whether the bare whole number at ``i`` is an hour of the day: 1 to 12 after a word of time ("at",
-    "around", "by") with a part of the day right after it ("around 7 this morning", "at 9 last night")
-    or within the three words before it ("Today morning, around 7", "tonight around 10"). Why: an hour
-    said so reads like "at 7" of a speed, and one of a few km/h is the pace of no car."""
-    if not tokens[i].isdigit() or not 1 <= int(tokens[i]) <= 12 or i == 0 or tokens[i - 1] not in _BEFORE_HOUR:
+    """Whether the bare number at ``i`` is a time of day: a clock with a dot after a word of time ("at
+    approx 3.15", "around 7.30"), or a whole hour, 1 to 12, after a word of time ("at", "around", "by")
+    with a part of the day right after it ("around 7 this morning", "at 9 last night") or within the
+    three words before it ("Today morning, around 7", "tonight around 10"). Why: an hour said so reads
+    like "at 7" of a speed, and one of a few km/h is the pace of no car; a speed is never written with
+    minutes."""
+    if i == 0 or tokens[i - 1] not in _BEFORE_HOUR:
+        return False
+    if _DOTTED_TIME.fullmatch(tokens[i]):
+        return True
+    if not tokens[i].isdigit() or not 1 <= int(tokens[i]) <= 12:
         return False
     k = i + 1
     while k < len(tokens) and k <= i + 3 and tokens[k] in _HOUR_LINKS:

@@ -146,7 +146,7 @@ def time_of_day(said: list[tuple[str, str]], clock: str | None) -> str | None:
 
 #: A clock with a one-digit hour of the afternoon's first hours and no half of the day said ("at 3:15",
 #: in the reader's tokens "3 : 15"): a twelve-hour clock, as people write one.
-_TWELVE_HOUR = re.compile(r"(?<![\d:] )(?<!\d)\b([1-6]) : [0-5]\d\b(?! (?:am|pm|hrs|hours|h)\b)")
+_TWELVE_HOUR = re.compile(r"(?<![\d:] )(?<!\d)\b([1-6])(?: : |\.)[0-5]\d\b(?! (?:am|pm|hrs|hours|h)\b)")
 
 
 def twelve_hour(clock: str | None, said: str, parts: list[str]) -> str | None:
@@ -512,13 +512,23 @@ def sunny(said: str) -> str | None:
 _DOTTED_CLOCK = re.compile(r"\b(1[0-2]|0?[1-9])\.([0-5]\d) (am|pm)\b")
 
 
+#: A clock written with a dot after a word of time and no unit ("at 23.10", "approx 3.15,"): the hour
+#: as written, which a part of the day said beside it may put in the afternoon (:func:`twelve_hour`).
+_DOTTED_AT = re.compile(
+    r"\b(?:at|around|about|approx|approximately|circa|by|~) ([01]?\d|2[0-3])\.([0-5]\d)\b"
+    r"(?! ?(?:m|metres?|meters?|km|km/h|kph|mph|m/s|s|seconds?|miles?|feet|ft|%)\b)"
+)
+
+
 def dotted_clock(said: str) -> str | None:
-    """A clock written with a dot and its half of the day ("6.45 pm": "18:45"), else None."""
+    """A clock written with a dot: with its half of the day ("6.45 pm": "18:45"), or after a word of
+    time ("at 23.10": "23:10"; "approx 3.15" in the afternoon: "15:15"), else None."""
     m = _DOTTED_CLOCK.search(said)
-    if m is None:
-        return None
-    hour = int(m.group(1)) % 12 + (12 if m.group(3) == "pm" else 0)
-    return f"{hour:02d}:{m.group(2)}"
+    if m is not None:
+        hour = int(m.group(1)) % 12 + (12 if m.group(3) == "pm" else 0)
+        return f"{hour:02d}:{m.group(2)}"
+    m = _DOTTED_AT.search(said)
+    return None if m is None else f"{int(m.group(1)):02d}:{m.group(2)}"
 
 
 _TWO_LANE_HIGHWAY = re.compile(r"\b(?:two|2)[ -]lane (?:highway|freeway|expressway|road)\b")
