@@ -70,3 +70,24 @@ def test_what_someone_is_on_in_lower_case_is_a_shared_scooter(text: str) -> None
 def test_a_lower_case_operator_word_that_goes_on_a_noun_stays_a_word(text: str, kind: str) -> None:
     """ "lime green", "a bird table", "a lime tree": the word describes the next noun, no scooter."""
     assert kinds(text) == [kind]
+
+
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("Ego goes straight at 40 mph.\nNPC car: oncoming, turns left across ego path late.", "car"),
+        ("Bot car: oncoming, turns left across the ego's path.", "car"),
+        ("Sim car: oncoming, turns right across the ego's path at the junction.", "car"),
+        ("Ego at 50 km/h.\nNPC truck: oncoming, turns left across ego path.", "truck"),
+        ("Ego at 30 km/h.\nSim cyclist: oncoming, turns right across ego path.", "bicycle"),
+    ],
+)
+def test_a_field_named_by_a_road_user_with_a_word_before_it(text: str, kind: str) -> None:
+    """ "NPC car: oncoming, turns left": a line's field named by a road user's noun with one word before
+    it is that road user, doing what the field says."""
+    assert kinds(text) == [kind]
+
+
+def test_a_field_named_with_an_article_is_no_such_field() -> None:
+    """ "The car: it turned left": an article before the noun is a sentence's, read as it is."""
+    assert kinds("The car: it turned left across my path at the junction.") == ["car"]
