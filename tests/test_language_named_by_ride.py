@@ -91,3 +91,8 @@ def test_a_field_named_by_a_road_user_with_a_word_before_it(text: str, kind: str
 def test_a_field_named_with_an_article_is_no_such_field() -> None:
     """ "The car: it turned left": an article before the noun is a sentence's, read as it is."""
     assert kinds("The car: it turned left across my path at the junction.") == ["car"]
+
+
+def test_an_operator_word_one_is_otherwise_on_stays_a_word() -> None:
+    """ "went on a spin, then a cyclist ...": "spin", "beam", "bolt" and "tier" are things one is on."""
+    assert kinds("We went on a spin, and a cyclist pulled out in front of me.") == ["bicycle"]

@@ -648,6 +648,9 @@ _PHRASE_END = frozenset(".,;:!?") | frozenset(("and", "then", "which", "that", "
 
 #: Words that put a person on what follows them ("a lad on a lime", "two guys doubled up on one bird").
 _ON = frozenset(("on", "riding", "rode", "rides", "ride", "onto"))
+#: The operators whose name is no thing a person is otherwise on ("on a spin", "on the beam", "on a bolt",
+#: "on one tier" are): only these are read in lower case.
+_ON_IN_LOWER_CASE = frozenset(("lime", "bird", "voi", "dott", "neuron", "superpedestrian"))
 
 
 def _ridden(tokens: list[str], i: int) -> bool:
@@ -655,6 +658,8 @@ def _ridden(tokens: list[str], i: int) -> bool:
     there a writer who types in lower case names the scooter, not the fruit or the animal. Only where
     its phrase ends at it: punctuation or an inflected verb follows ("on a lime came out", "on one
     bird, swerved"), not a word that may go on the noun ("on a lime green bike", "on a bird table")."""
+    if tokens[i] not in _ON_IN_LOWER_CASE:
+        return False
     if i < 2 or tokens[i - 2] not in _ON or i + 1 >= len(tokens):
         return i >= 2 and tokens[i - 2] in _ON
     nxt = tokens[i + 1]
