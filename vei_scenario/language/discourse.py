@@ -1500,6 +1500,10 @@ def _field_names(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
     while i < len(tokens):
         opens = not out or out[-1] in SENTENCE_END
         found = kind_at(tokens, i)
+        modifier = found is not None and not opens and _field_modifier(out, tokens, i, kind_at)
+        if modifier:  # ("NPC car: oncoming, turns left": its one word before the noun goes with it)
+            out.pop()
+            opens = True
         if found is not None and not opens:
             seen.add(found[0])
             found = None
@@ -1511,15 +1515,27 @@ def _field_names(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
             )
             if said:
                 named = found[0] in seen or (tokens[i + found[1] - 1] in _ANY_ROAD_USER and seen - {"ego"})
-                out += ["the" if named else "a", *tokens[i : i + found[1]]]
+                out += ["the" if named else "a", *tokens[i - modifier : i + found[1]]]
                 seen.add(found[0])
                 i = j
                 continue
+        if modifier:
+            out.append(tokens[i - 1])
         if found is not None:
             seen.add(found[0])
         out.append(tokens[i])
         i += 1
     return out
+
+
+def _field_modifier(out: list[str], tokens: list[str], i: int, kind_at: KindAt) -> bool:
+    """Whether the road user's noun at ``i`` names a field with one word before it that opens its line
+    ("NPC car:", "Lead vehicle:", "Oncoming truck:", "Sim cyclist:"): a plain word that names no road
+    user and is no article ("The car:", "A van:" are no field's name written so)."""
+    if i < 1 or out[-1:] != [tokens[i - 1]] or not (len(out) == 1 or out[-2] in SENTENCE_END):
+        return False
+    word = tokens[i - 1]
+    return word.isalpha() and word not in DETERMINERS and kind_at(tokens, i - 1) is None
 
 
 def _letter_labels(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:

@@ -102,6 +102,7 @@ from vei_scenario.language.who import (
     standing_names_a_kind,
     towed,
     unnamed_subjects,
+    wala_riders,
 )
 
 _TOKEN = re.compile(r"\d+(?:\.\d+)?|km/h|m/s²|m/s2|m/s|[a-z][a-z\-]*(?:'[a-z]+)?|'s|[.;,!?:%]")
@@ -734,6 +735,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
         (typed, read) for typed, read in zip(_tokens(text, spell=False, brackets=True), tokens) if typed != read
     ]
     framed: list[str] = []
+    tokens = wala_riders(tokens)  # ("one bike wala came wrong side": a motorcyclist)
     tokens = addressee.spoken_to(tokens, _kind_at)  # ("To the jogger on Elm St - you ran across": the jogger)
     tokens = run_on.break_after_a_speed(tokens, _actor_at, FUNCTION_WORDS)  # ("20 mph a van pulled out")
     tokens = whose_act.unnamed_rider(tokens, _kind_at)  # ("car clipped rider": an e-scooter's rider)

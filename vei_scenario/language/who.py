@@ -597,22 +597,87 @@ def _unnamed_subjects(
     return out
 
 
+#: South Asian English names a road user by what they ride or drive and the agent suffix "wala" ("one
+#: bike wala came wrong side", "a cycle-wallah", "the autowala"): the suffix's spellings.
+_WALA = ("wala", "walla", "wallah", "waala", "vala", "valla", "wale", "waale", "wali", "waali")
+#: The vehicle each stem names in that English ("bike" and "scooter" there are a motor two-wheeler,
+#: "cycle" a pedal cycle, "auto" an auto-rickshaw, "tempo" a light goods van), by the word the reader
+#: types it by. A stem that names no vehicle ("chai wallah", "sabzi wala") stays as it is.
+_WALA_STEMS = {
+    "bike": "motorbike", "motorbike": "motorbike", "motorcycle": "motorbike", "scooter": "motorbike",
+    "scooty": "motorbike", "cycle": "cyclist", "bicycle": "cyclist", "auto": "auto-rickshaw",
+    "rickshaw": "rickshaw", "tuk-tuk": "tuk-tuk", "car": "car", "cab": "cab", "taxi": "taxi", "truck": "truck",
+    "lorry": "lorry", "tanker": "tanker", "bus": "bus", "tempo": "van", "van": "van", "jeep": "jeep",
+    "tractor": "tractor",
+}  # fmt: skip
+
+
+def _wala_stem(word: str) -> str | None:
+    """The vehicle stem of a fused "bikewala" or "cycle-wallah", else None."""
+    for suffix in _WALA:
+        if word.endswith(suffix) and len(word) > len(suffix):
+            stem = word[: -len(suffix)].rstrip("-")
+            if stem in _WALA_STEMS:
+                return stem
+    return None
+
+
+def wala_riders(tokens: list[str]) -> list[str]:
+    """ "one bike wala came on the wrong side", "a cycle wala, milk delivery", "the autowala cut in": a
+    vehicle's word with the agent suffix "wala" is the person on or in it, one road user of that
+    vehicle's type, typed as that English means it ("bike" is a motorbike there, "cycle" a bicycle).
+    Only a vehicle's stem is read: "the chai wallah" and "a sabzi wala" stay what they are."""
+    out: list[str] = []
+    for w in tokens:
+        if w in _WALA and out and out[-1] in _WALA_STEMS:
+            out[-1] = _WALA_STEMS[out[-1]]
+            continue
+        if out and w in _WALA and out[-1] == "-" and len(out) > 1 and out[-2] in _WALA_STEMS:
+            out[-2:] = [_WALA_STEMS[out[-2]]]
+            continue
+        stem = _wala_stem(w)
+        out.append(_WALA_STEMS[stem] if stem else w)
+    return out
+
+
 #: What may stand before a shared e-scooter's operator name in a road user's place.
 _OPERATOR_BEFORE = frozenset(("a", "an", "the", "another", "one", "some", "his", "her", "their", "two", "three"))
 #: What may follow such a name, ending its noun phrase: punctuation or a word that opens what it does.
 _PHRASE_END = frozenset(".,;:!?") | frozenset(("and", "then", "which", "that", "who", "with", "from", "on", "at"))
 
 
+#: Words that put a person on what follows them ("a lad on a lime", "two guys doubled up on one bird").
+_ON = frozenset(("on", "riding", "rode", "rides", "ride", "onto"))
+#: The operators whose name is no thing a person is otherwise on ("on a spin", "on the beam", "on a bolt",
+#: "on one tier" are): only these are read in lower case.
+_ON_IN_LOWER_CASE = frozenset(("lime", "bird", "voi", "dott", "neuron", "superpedestrian"))
+
+
+def _ridden(tokens: list[str], i: int) -> bool:
+    """Whether the operator name at ``i`` is what a person is on ("a kid on a lime", "riding a bird"):
+    there a writer who types in lower case names the scooter, not the fruit or the animal. Only where
+    its phrase ends at it: punctuation or an inflected verb follows ("on a lime came out", "on one
+    bird, swerved"), not a word that may go on the noun ("on a lime green bike", "on a bird table")."""
+    if tokens[i] not in _ON_IN_LOWER_CASE:
+        return False
+    if i < 2 or tokens[i - 2] not in _ON or i + 1 >= len(tokens):
+        return i >= 2 and tokens[i - 2] in _ON
+    nxt = tokens[i + 1]
+    verbs = lemmas(nxt).get("VERB", ())
+    return nxt in _PHRASE_END or (bool(verbs) and nxt not in verbs)
+
+
 def shared_scooters(tokens: list[str], proper: frozenset[str], verb: Callable[[str], bool]) -> list[str]:
     """ "a Lime came down the pavement", "some lad on a Tier", "a Voi shot the red": an operator of shared
     e-scooters written with its capital (``proper``: :func:`proper_names`), after an article and ending
     its noun phrase (a verb, punctuation or a preposition follows), is an e-scooter. Before "scooter" the
-    name only says whose it is, and goes. Lower case ("lime green", "a bird flew") or in a longer name
-    ("Lime Street") it stays the word it is."""
+    name only says whose it is, and goes. In lower case only what someone is on or rides is one ("a lad
+    on a lime came out"); else ("lime green", "a bird flew") or in a longer name ("Lime Street") it stays
+    the word it is."""
     out: list[str] = []
     for i, w in enumerate(tokens):
         nxt = tokens[i + 1] if i + 1 < len(tokens) else "."
-        if w in SCOOTER_OPERATORS and w in proper and i and tokens[i - 1] in _OPERATOR_BEFORE:
+        if w in SCOOTER_OPERATORS and (w in proper or _ridden(tokens, i)) and i and tokens[i - 1] in _OPERATOR_BEFORE:
             if nxt in ("scooter", "scooters", "e-scooter", "e-scooters", "escooter"):
                 continue
             if (nxt in _PHRASE_END or verb(nxt)) and nxt not in proper:
