@@ -45,6 +45,7 @@ from vei_scenario.language import (
     lane_moves,
     motion,
     narrator_vehicle,
+    no_lane_beside,
     off_a_place,
     protagonist,
     run_on,
@@ -2227,6 +2228,8 @@ def _read(text: str) -> Reading:
                 pending.append(replace(m, value=_SEEN_FROM_OBJECT[m.value]))
             else:
                 who = _nearest(named, m)
+                if sides.owners_side(m, prev) and isinstance(clause_subject, _Actor) and who is not clause_subject:
+                    who = clause_subject  # ("a van came from the Civic's right": the van's side, not the Civic's)
                 if (
                     m.slot == "relation"
                     and isinstance(clause_subject, _Actor)
@@ -2699,6 +2702,7 @@ def _read(text: str) -> Reading:
     r.lanes = S.lanes_of_two_way_road(said, oncoming) or S.lanes_counted(said) or r.lanes
     r.lanes = max(r.lanes or 0, S.lanes_at_least(said) or 0) or r.lanes  # ("in lane 3": three at least)
     r.lanes = r.lanes or S.lanes_of_one_way_road(said)  # ("down the one-way street": one lane)
+    no_lane_beside.to_the_edge(r)  # ("a cyclist on my left, one lane each way": at the kerb)
     if r.map_kind in (None, "straight"):
         r.map_kind = S.many_turns(said) or r.map_kind  # ("a small road with a lot of turns": a bend)
     if r.map_kind in (None, "straight") and S.signalled_junction(text, said):

@@ -1456,3 +1456,19 @@ def _mover_before(mentions: list, k: int) -> int | None:
         if mentions[j + 1].slot in ("behaviour", "intent", "ego_verb"):
             return None
     return None
+
+
+def owners_side(m, owner) -> bool:
+    """Whether side mention ``m`` says where the clause's road user comes from, seen from a road user
+    named as its owner just before it ("from the Civic's right", "from V1's left"): the side of the frame
+    that road user gives, not the owner's own place. (On a side, "on the lorry's left", is a place
+    beside the owner, and may be where the owner is too: that keeps its reading.)"""
+    return (
+        m.slot == "side"
+        and m.prev == "'s"
+        and owner is not None
+        and owner.slot == "actor"
+        and owner.prev == "from"
+        and owner.value != "ego"
+        and owner.end == m.start - 1
+    )
