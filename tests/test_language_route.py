@@ -331,3 +331,21 @@ def test_a_narrators_turn_said_as_a_noun_is_the_route(route, text):
 @pytest.mark.parametrize("text", TURN_NOUN_NOT)
 def test_a_turn_lane_or_a_reports_turn_noun_is_no_route(text):
     assert ego_route(_tokens(text)) is None
+
+
+# an exit or turning taken by its number, any of the ordinals a roundabout or a road has
+@pytest.mark.parametrize(
+    "text, route",
+    [
+        ("I took the third exit on the right and a cyclist was already on the roundabout.", "right"),
+        ("We take the 4th exit to the right while a moped circulates.", "right"),
+        ("I took the last turning on the left and a jogger stepped out.", "left"),
+        ("I took the 3rd road on the left when a van came the other way.", "left"),
+    ],
+)
+def test_an_exit_taken_by_its_number_is_a_turn(text, route):
+    assert ego_route(_tokens(text)) == route
+
+
+def test_another_taking_a_numbered_exit_is_no_route():
+    assert ego_route(_tokens("A van took the third exit on the left across my path.")) is None

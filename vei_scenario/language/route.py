@@ -57,9 +57,12 @@ _AFTER_TURN_NOUN = frozenset(("at", "into", "onto", "across", "from", "in", "on"
                               "out", "through", "and", "with", "when", "while"))  # fmt: skip
 #: Words between a verb of turning and its direction ("turns at right", "turn to the left", "off left").
 _BEFORE_DIRECTION = frozenset(("at", "to", "the", "off", "hard", "sharp", "sharply", "slightly", "then", "on"))
-#: Words between "take"/"make" and "left" ("take the next left", "make a quick right", "the first left").
+#: Words between "take"/"make" and "left" ("take the next left", "make a quick right", "the first left"),
+#: with every ordinal of an exit (in figures tokenised as its number and suffix: "the 4th exit", "4 th").
 _BEFORE_TURN_NOUN = frozenset(
-    ("a", "an", "the", "next", "first", "second", "quick", "sharp", "hard", "late", "its", "my")
+    ("a", "an", "the", "next", "quick", "sharp", "hard", "late", "its", "my", "our", "last", "final")
+) | frozenset(
+    ("first", "second", "third", "fourth", "fifth", "sixth", "1", "2", "3", "4", "5", "6", "st", "nd", "rd", "th")
 )
 #: What ends a clause: punctuation and the conjunctions that open one.
 _BREAK_PUNCT = frozenset(".;!?:,—-()")
