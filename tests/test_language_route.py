@@ -261,3 +261,91 @@ def test_the_ego_signalling_a_turn_turns_that_way(route, text):
 @pytest.mark.parametrize("text", SIGNALLING_NOT)
 def test_a_signal_to_change_lanes_or_anothers_is_no_route(text):
     assert ego_route(_tokens(text)) is None
+
+
+# an instruction to the reader (a test spec, a study's briefing, a driving lesson): the ego's turn,
+# whoever is named after it, with "please", after a place it is done at, or opening its sentence
+INSTRUCTION = {
+    "left": [
+        "Please turn left when your signal shows green. A cyclist will come towards you from the far side.",
+        "At the second junction, kindly turn left once the way is clear; a jogger crosses the side road.",
+        "At the roundabout take the second exit on the left. A moped is already circulating.",
+        "Participants: pls turn left when you feel it is safe. An e-scooter rider approaches from ahead.",
+        "At the lights turn left, and watch for the cyclist coming the other way.",
+    ],
+    "right": [
+        "At the T-junction, please turn right when the arrow lights up. A pedestrian steps off the kerb.",
+        "Bear right at the fork, then a lorry comes round the bend towards you.",
+        "Now make a right into the car park while a child runs out from between the cars.",
+        "On reaching the crossroads, please turn right after your light goes green; an oncoming biker runs the red.",
+        "Go right at the lights when your phase is green. A van coming the other way does not stop.",
+    ],
+}
+# a turn that is someone else's, or a participle whose subject comes after it: no instruction
+INSTRUCTION_NOT = [
+    "Turning left at the lights, the lorry clipped a cyclist on its inside.",
+    "A lorry turned left across a cyclist at the lights.",
+    "The van stopped and then turned left into the yard, and a jogger stepped out.",
+    "At the junction the bus turns left across a cyclist.",
+    "Please note that a van turned right across the cyclist.",
+]
+
+
+@pytest.mark.parametrize("route, text", [(r, t) for r, texts in INSTRUCTION.items() for t in texts])
+def test_an_instruction_to_turn_is_the_egos_route(route, text):
+    assert read(text).ego_route == route
+
+
+@pytest.mark.parametrize("route, text", [(r, t) for r, texts in INSTRUCTION.items() for t in texts[:2]])
+def test_an_instructions_turn_is_no_one_elses(route, text):
+    assert not any(b[0] in ("forced_turn", "turn_across") for a in read(text).actors for b in a.behaviours)
+
+
+@pytest.mark.parametrize("text", INSTRUCTION_NOT)
+def test_another_road_users_turn_is_no_instruction(text):
+    assert ego_route(_tokens(text)) is None
+
+
+# a turn said as a noun opening a sentence of a narrator's story: the narrator's turn
+TURN_NOUN = {
+    "left": [
+        "Left turn at the lights, green arrow, all good, and then a car from the other way ran the red on me.",
+        "Left turn into the shopping centre. I'd just started to go when a kid on a bike shot across.",
+    ],
+    "right": [
+        "Right turn onto Main Street, I had the filter and a cyclist came straight through.",
+        "Right turn here. We had the green and a bus came the wrong way.",
+    ],
+}
+TURN_NOUN_NOT = [
+    "Left turn lane was backed up so I stayed straight on, and a van cut across me.",
+    "Right turn across a cyclist by a lorry at the junction; nobody hurt.",
+]
+
+
+@pytest.mark.parametrize("route, text", [(r, t) for r, texts in TURN_NOUN.items() for t in texts])
+def test_a_narrators_turn_said_as_a_noun_is_the_route(route, text):
+    assert ego_route(_tokens(text)) == route
+
+
+@pytest.mark.parametrize("text", TURN_NOUN_NOT)
+def test_a_turn_lane_or_a_reports_turn_noun_is_no_route(text):
+    assert ego_route(_tokens(text)) is None
+
+
+# an exit or turning taken by its number, any of the ordinals a roundabout or a road has
+@pytest.mark.parametrize(
+    "text, route",
+    [
+        ("I took the third exit on the right and a cyclist was already on the roundabout.", "right"),
+        ("We take the 4th exit to the right while a moped circulates.", "right"),
+        ("I took the last turning on the left and a jogger stepped out.", "left"),
+        ("I took the 3rd road on the left when a van came the other way.", "left"),
+    ],
+)
+def test_an_exit_taken_by_its_number_is_a_turn(text, route):
+    assert ego_route(_tokens(text)) == route
+
+
+def test_another_taking_a_numbered_exit_is_no_route():
+    assert ego_route(_tokens("A van took the third exit on the left across my path.")) is None

@@ -79,7 +79,7 @@ from vei_scenario.language.ncap import rewrite as ncap_rewrite
 from vei_scenario.language.normalise import NUMBER_WORDS, normalise
 from vei_scenario.language.outcome import decide, into_road_user, outcome_cues
 from vei_scenario.language.reading import ActorSpec, NotUnderstood, Reading
-from vei_scenario.language.route import ego_route, turn_taken_at
+from vei_scenario.language.route import ego_route, instruction_at, turn_taken_at
 from vei_scenario.language.said_again import plural
 from vei_scenario.language.scene import only_the_scene, quoted_speakers
 from vei_scenario.language.stated import (
@@ -2114,6 +2114,10 @@ def _read(text: str) -> Reading:
                 if narrators[m.start]:
                     actors[-1].passed = True
                 reacting = not narrators[m.start]
+                prev = m
+                continue
+            if m.slot == "turn" and instruction_at(scanned, m.start):
+                _apply(m, "ego", r, link, added)  # ("please turn left when your light is green": the reader's)
                 prev = m
                 continue
             if m.slot in _VERBS:

@@ -10,7 +10,11 @@ at right", "turning to the right", "bear left", "make a left", "hang a right", "
   turning right": the truck is the ego);
 * no subject of its own (a participle or a verb after "and"): the subject of the clause before it in
   its sentence ("I was going round, turning left at the first exit"), or, at the start of a sentence of
-  a narrator's story, the narrator ("Turning right at the lights, ...").
+  a narrator's story, the narrator ("Turning right at the lights, ...");
+* an instruction (a bare verb with no subject, or after "please", opening its sentence or after a
+  place it is done at): the reader told what to do, the ego ("At the lights, please turn left",
+  "Bear right at the fork");
+* a turn said as a noun opening a sentence of a narrator's story ("Left turn here at the light, ...").
 
 Any other subject ("a guy on a scooter made a left across my lane") makes the turn someone else's.
 The closed classes below are grammatical (auxiliaries, determiners, clause breaks) or the handful of
@@ -19,7 +23,7 @@ English verbs that take a direction as a turn.
 
 from __future__ import annotations
 
-from vei_scenario.language.clauses import split
+from vei_scenario.language.clauses import SENTENCE_END, split
 from vei_scenario.language.lemmas import lemmas
 
 #: Verbs that take a direction as a turn ("turn left", "bear right", "swing left", "went left").
@@ -53,9 +57,12 @@ _AFTER_TURN_NOUN = frozenset(("at", "into", "onto", "across", "from", "in", "on"
                               "out", "through", "and", "with", "when", "while"))  # fmt: skip
 #: Words between a verb of turning and its direction ("turns at right", "turn to the left", "off left").
 _BEFORE_DIRECTION = frozenset(("at", "to", "the", "off", "hard", "sharp", "sharply", "slightly", "then", "on"))
-#: Words between "take"/"make" and "left" ("take the next left", "make a quick right", "the first left").
+#: Words between "take"/"make" and "left" ("take the next left", "make a quick right", "the first left"),
+#: with every ordinal of an exit (in figures tokenised as its number and suffix: "the 4th exit", "4 th").
 _BEFORE_TURN_NOUN = frozenset(
-    ("a", "an", "the", "next", "first", "second", "quick", "sharp", "hard", "late", "its", "my")
+    ("a", "an", "the", "next", "quick", "sharp", "hard", "late", "its", "my", "our", "last", "final")
+) | frozenset(
+    ("first", "second", "third", "fourth", "fifth", "sixth", "1", "2", "3", "4", "5", "6", "st", "nd", "rd", "th")
 )
 #: What ends a clause: punctuation and the conjunctions that open one.
 _BREAK_PUNCT = frozenset(".;!?:,—-()")
@@ -309,6 +316,62 @@ def _held_at(words: list[str], i: int) -> tuple[str, int] | None:
     return (side, i) if side is not None else None
 
 
+#: Words that may stand before an instruction's verb and are no subject ("please turn left").
+_BEFORE_INSTRUCTION = frozenset(("please", "pls", "plz", "kindly", "now", "then", "simply", "just", "next"))
+
+
+def _instruction(words: list[str], verb: int, opens: bool) -> bool:
+    """Whether the verb at ``verb`` is an instruction to the reader, the ego: in its bare form, with
+    nothing before it but "please", "now" and the like, and either after "please" or opening its
+    sentence (``opens``: nothing before it in the sentence but a place it is done at). Not a
+    participle ("Turning left, the lorry ..."), a past ("turned left") or one after a subject."""
+    before = words[:verb]
+    if before and before[0] in _PREPOSITIONS and before[-1] in _TURN_PLACES | _JUNCTIONS:
+        before = []  # ("at the roundabout take the third exit on the right": where it is done, no subject)
+    if any(w not in _BEFORE_INSTRUCTION for w in before):
+        return False
+    word = words[verb]
+    if word.endswith(("ing", "ed", "s")) or word not in lemmas(word).get("VERB", ()):
+        return False
+    return opens or bool({"please", "pls", "plz", "kindly"} & set(before))
+
+
+def _turn_said_as_noun(words: list[str]) -> str | None:
+    """The side of a turn said as a noun that opens a clause ("left turn here at the light", "right
+    turn onto Main"): the side, then "turn", then a place, "here" or nothing; not "left turn lane"."""
+    if len(words) < 2 or words[0] not in _DIRECTIONS or words[1] != "turn":
+        return None
+    after = words[2:3]
+    return words[0] if not after or after[0] in _AFTER_TURN_NOUN or after[0] in ("here", "now") else None
+
+
+def _opens_after_place(clauses: list[tuple[list[str], bool]], n: int) -> bool:
+    """Whether clause ``n`` opens its sentence or only places before it in the sentence say where it
+    is done ("At the second set of lights, turn left")."""
+    k = n
+    while k > 0 and not clauses[k][1]:
+        k -= 1
+        if clauses[k][0][0] not in _PREPOSITIONS:
+            return False
+    return True
+
+
+def instruction_at(tokens: list[str], i: int) -> bool:
+    """Whether the verb at token ``i`` is a turn said as an instruction to the reader (see
+    :func:`_instruction`): "At the lights, please turn left when your light is green" is the ego's turn,
+    whoever is named after it. Looks back only to the start of its sentence."""
+    if i >= len(tokens) or _turn_at(tokens, i) is None:
+        return False
+    start = i
+    while start > 0 and tokens[start - 1] not in SENTENCE_END:
+        start -= 1
+    clauses = split(tokens[start : i + 1], _BREAK_PUNCT | _BREAK_WORDS)
+    if not clauses:
+        return False
+    words, _ = clauses[-1]
+    return _instruction(words, len(words) - 1, _opens_after_place(clauses, len(clauses) - 1))
+
+
 def ego_route(tokens: list[str]) -> str | None:
     """``left`` or ``right`` when a clause whose subject is the ego turns, else None; from the reader's
     normalised, lowercased tokens."""
@@ -332,6 +395,8 @@ def ego_route(tokens: list[str]) -> str | None:
             if direction is None or verb is None:
                 continue
             who = _whose(_subject_before(words, verb))
+            if _instruction(words, verb, _opens_after_place(clauses, n)):
+                return direction  # ("please turn left when your light is green", "bear right at the fork")
             if who is None and previous is not None:
                 who = previous
             elif who is None and first:
@@ -341,6 +406,8 @@ def ego_route(tokens: list[str]) -> str | None:
                 who = "ego" if story else _own_subject(following[0]) if following else None
             if who == "ego":
                 return direction
+        if first and story and (side := _turn_said_as_noun(words)) is not None:
+            return side  # ("Left turn here at the light, it's a green arrow")
         own = _own_subject(words)
         previous = own or previous
     return None
