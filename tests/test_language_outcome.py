@@ -947,3 +947,41 @@ def test_a_contact_someone_came_close_to_is_a_near_miss(text, intent):
 )
 def test_no_harm_done_says_how_it_ended(text, intent):
     assert read(text).intent == intent
+
+
+# an evasive act someone was made to do, whoever it is ("needed to swerve", "made me brake hard",
+# "was forced to"), is a near miss; a plain stop or brake that was needed is not, and a need under a
+# condition, a counterfactual or a future was never met
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("The bus pulled out and the cyclist needed to swerve.", "near_miss"),
+        ("Lorry jammed its brakes, driver need to swerve to the next lane.", "near_miss"),
+        ("The moped rider was forced to brake hard when the taxi turned.", "near_miss"),
+        ("Some idiot pulled out of the side road and made me swerve.", "near_miss"),
+        ("The van cut across, forcing me to brake sharply.", "near_miss"),
+        ("The scooter came straight at us, the rider had to slam on the brakes.", "near_miss"),
+        ("The pickup swung out and made the cyclist brake hard.", "near_miss"),
+        ("The e-bike was obliged to veer onto the pavement.", "near_miss"),
+    ],
+    ids=["needed-to", "need-to", "forced-to", "made-me", "forcing-me-to", "had-to-slam", "made-the-cyclist", "obliged"],
+)
+def test_an_evasion_someone_was_made_to_do_is_a_near_miss(text, intent):
+    assert _intent(text) == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("The lights changed and the cyclist needed to brake.", None),
+        ("The courier had to stop for the red light.", None),
+        ("A rider might need to brake hard on this bend.", None),
+        ("Where the lane narrows, riders may have to swerve round the potholes.", None),
+        ("The noise of the lorry made me brake.", None),
+        ("The van driver made a U-turn and braked hard.", None),
+        ("The bus pulled out, forcing me to brake hard, and hit the cyclist.", "collision"),
+    ],
+    ids=["plain-brake", "plain-stop", "might-need", "may-have-to", "made-plain-brake", "made-a-turn", "contact"],
+)
+def test_a_need_that_was_no_evasion_is_not_a_near_miss(text, intent):
+    assert _intent(text) == intent

@@ -1288,6 +1288,45 @@ def _need_denied(words: list[str], i: int) -> bool:
     return k >= 0 and before[k] in ("not", "never", "no", "without", "nobody", "no-one", "noone")
 
 
+#: Verbs (lemmas) of a need or a compulsion whose complement is an act forced on its doer ("had to
+#: swerve", "needed to brake hard", "was forced to", "obliged to").
+_NEEDING = frozenset(("have", "need", "force", "oblige", "compel"))
+#: Verbs (lemmas) that force an act on their object ("made me swerve", "forcing him to brake hard").
+_CAUSING = frozenset(("make", "force", "cause", "oblige", "compel"))
+#: Words of a condition, a counterfactual or a time to come: a need under one was not met ("would
+#: need to brake", "might have to swerve", "if you have to stop", "will need to").
+_UNREAL = _HYPOTHETICAL | frozenset(("will", "may", "shall", "unless", "in", "case"))
+
+
+def _maker(words: list[str], i: int) -> int | None:
+    """Where "make" stands before the bare verb at ``i`` with only its object between ("made me
+    swerve", "made the poor cyclist brake hard"): the object was made to act; None if it does not."""
+    for k in range(i - 2, max(-1, i - 5), -1):
+        between = words[k + 1 : i]
+        person = between[-1] in _PERSON_OBJECTS - {"one", "each", "it"} or _road_user_word(between[-1])
+        if _lemmas(words[k]) & {"make"} and person and all(not _is_verb(x) or x in _PERSON_OBJECTS for x in between):
+            return k
+    return None
+
+
+def _compelled(words: list[str], i: int) -> bool:
+    """Whether the verb at ``i`` is an act its doer was made to do: the complement of a need ("had
+    to", "needed to", "need to", "was forced to") or the object's act after a verb that causes it
+    ("made me swerve", "forcing him to brake hard"), said of anyone, ego or not. Not when the need is
+    under a condition, a counterfactual or a future ("would have had to", "might need to", "will
+    need to"): nothing was forced yet."""
+    k = None
+    if words[i - 1 : i] == ["to"] and i >= 2 and _lemmas(words[i - 2]) & _NEEDING:
+        k = i - 2  # ("had to swerve", "needed to brake hard", "was forced to")
+    elif words[i - 1 : i] == ["to"] and i >= 3 and _lemmas(words[i - 3]) & _CAUSING:
+        k = i - 3  # ("forcing me to brake", "forced the bus to swerve")
+    else:
+        k = _maker(words, i)  # ("made me swerve", "made the cyclist brake hard")
+    if k is None or not _is_verb(words[k]):
+        return False
+    return not _scoped(words, k, _UNREAL, 4)
+
+
 def _only_just(words: list[str], i: int) -> bool:
     """Whether "only" up to five words before the contact at ``i`` hedges it ("only just clipped him",
     "only narrowly missed", "the van only didn't hit me because ..."), not a contact made light of
@@ -1504,8 +1543,8 @@ def outcome_cues(said: str) -> list[Cue]:
                 add("safe" if w in ("clean", "clear") else "close")  # (a one-word verdict: "Clean.", "but close")
             if _is_verb(w) and _hindsight(words, i):
                 pass  # ("I should have waited": what was not done)
-            elif _is_verb(w) and words[max(0, i - 2) : i] == ["had", "to"] and _ego_acts(words, i) == "evade":
-                add("evade")  # (anyone forced to swerve: "he had to swerve round my bonnet")
+            elif _is_verb(w) and _compelled(words, i) and _ego_acts(words, i) == "evade":
+                add("evade")  # (anyone forced to swerve: "he had to swerve round my bonnet", "made me brake hard")
             elif _is_verb(w) and _subject_is_ego(words, i, clause, story):
                 act = _ego_acts(words, i)
                 if act is not None:
