@@ -985,3 +985,44 @@ def test_an_evasion_someone_was_made_to_do_is_a_near_miss(text, intent):
 )
 def test_a_need_that_was_no_evasion_is_not_a_near_miss(text, intent):
     assert _intent(text) == intent
+
+
+# a margin said as the width of a car, a van, a lorry or a whole lane, or a wide gap, is a pass with room
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("Then the coach overtook the cyclist leaving a full car's width.", "safe"),
+        ("Gave the lad on the bike a good car's width as I went by.", "safe"),
+        ("The minibus went round her with a whole lane to herself, a lorry width to spare.", "safe"),
+        ("The taxi driver gave the rider a whole lane.", "safe"),
+        ("I overtook the jogger with a car width between us.", "safe"),
+        ("Eventually went past him with a really wide gap.", "safe"),
+        ("The van passed with a generous gap to the scooter.", "safe"),
+    ],
+    ids=[
+        "leaving-car-width",
+        "gave-car-width",
+        "lorry-width-to-spare",
+        "whole-lane",
+        "car-width-between",
+        "wide-gap",
+        "generous-gap",
+    ],  # fmt: skip
+)
+def test_a_margin_as_wide_as_a_vehicle_is_a_safe_pass(text, intent):
+    assert _intent(text) == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("The van passed me with less than a car's width.", None),
+        ("He overtook leaving barely a car's width.", None),
+        ("The lane width is 3.5 m and a cyclist rides along the kerb.", None),
+        ("I pulled into a wide gap in the traffic.", None),
+        ("The truck missed me by a bike's width.", "near_miss"),
+    ],
+    ids=["less-than", "barely", "lane-width-of-the-road", "gap-in-traffic", "bike-width"],
+)
+def test_a_width_cut_short_or_of_the_road_is_no_safe_margin(text, intent):
+    assert _intent(text) == intent

@@ -720,17 +720,20 @@ def _margin(words: list[str], i: int) -> str | None:
     w = words[i]
     if w == "spare" and i > 0 and words[i - 1] == "to":
         said = words[max(0, i - 6) : i - 1]
-        if set(said) & _WIDE:
-            return SAFE
+        if set(said) & _WIDE or any(_vehicle_width(said, k) for k in range(len(said))):
+            return SAFE  # ("plenty to spare", "with a full car width to spare")
         metres = _length_said(said)
         stopped = any(_lemmas(x) & {"stop", "halt", "pull", "brake"} for x in words[max(0, i - 10) : i])
         if metres is not None and not stopped:
             # (a pass's clearance sideways; a longer one is a gap ahead, which the text tells as close)
             return SAFE if 1.5 <= metres <= 5.0 else NEAR_MISS if metres <= 1.0 or metres > 5.0 else None
         return NEAR_MISS if said else None
-    if w in ("clearance", "separation", "margin", "room", "space", "distance") and set(words[max(0, i - 3) : i]) & (
-        _WIDE | _SUFFICIENT
-    ) - {"room", "space"}:
+    if _vehicle_width(words, i) and set(words[max(0, i - 10) : i]) & _LEAVING:
+        return SAFE  # ("leaving a full car's width", "gave him a car width", "with a whole lane's width")
+    gap = w in ("gap", "berth") and words[i + 1 : i + 2] not in (["in"], ["between"], ["for"])  # (not a place)
+    if (w in ("clearance", "separation", "margin", "room", "space", "distance") or gap) and set(
+        words[max(0, i - 3) : i]
+    ) & (_WIDE | _SUFFICIENT) - {"room", "space"}:
         if set(words[max(0, i - 4) : i]) & {"without", "not", "no", "never"}:
             return None  # ("without sufficient clearance": how close is not said)
         return SAFE  # ("plenty of room", "an ample margin", "enough distance", "adequate clearance")
@@ -800,6 +803,38 @@ def _margin(words: list[str], i: int) -> str | None:
         if any(_lemmas(x) & {"stop", "miss", "pass", "clear", "halt"} for x in before) or "by" in before:
             return NEAR_MISS
     return None
+
+
+#: Words that give a margin to the one passed ("leaving a car's width", "gave her a lane", "with").
+_LEAVING = frozenset(("leaving", "leave", "left", "gave", "give", "giving", "gives", "with", "allowing", "allowed"))
+#: The kinds of road user as wide as a lane's share: a margin of one of their widths is a wide one.
+_WIDE_KINDS = ("car", "van", "truck")
+#: Words that make the width that follows less than said ("less than a car's width", "not even").
+_SHORT_OF = frozenset(("less", "under", "not", "never", "barely", "hardly", "scarcely", "only", "half", "no"))
+
+
+@lru_cache(maxsize=1)
+def _wide_heads() -> frozenset[str]:
+    """The last words of the nouns of a car, a van or a truck, and "lane": the widths of a margin that
+    is a wide one ("a car's width", "a full lane")."""
+    phrases = [p for kind in _WIDE_KINDS for p in L.ACTOR_NOUNS[kind]] + list(L.CAR_NOUNS)
+    return frozenset(p.split()[-1] for p in phrases) | {"lane", "vehicle"}
+
+
+def _vehicle_width(words: list[str], i: int) -> bool:
+    """Whether ``words[i]`` is "width" said of a car, a van, a lorry or a lane ("a full car's width", "a
+    car width", "a whole lane's width"), or a lane given whole ("a whole lane", "a full lane"): a
+    margin as wide as a vehicle, so a pass with room. Not a width cut short ("less than a car's
+    width", "not even half a car width") and not the width of the road ("the lane width is 3 m")."""
+    k = i - 2 if words[i - 1 : i] == ["'s"] else i - 1  # ("a car 's width", as the tokens split it)
+    if words[i] == "width" and k >= 0 and words[k].removesuffix("'s").removesuffix("s'") in _wide_heads():
+        pass
+    elif words[i] == "lane" and i > 1 and words[i - 1] in ("full", "whole", "entire"):
+        k = i  # ("gave him a whole lane")
+    else:
+        return False
+    article = next((j for j in range(k - 1, max(-1, k - 4), -1) if words[j] in ("a", "an", "one")), None)
+    return article is not None and not set(words[max(0, article - 3) : article]) & _SHORT_OF
 
 
 #: Adjectives that call a margin enough ("adequate clearance", "a sufficient distance").
