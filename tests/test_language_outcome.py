@@ -1026,3 +1026,47 @@ def test_a_margin_as_wide_as_a_vehicle_is_a_safe_pass(text, intent):
 )
 def test_a_width_cut_short_or_of_the_road_is_no_safe_margin(text, intent):
     assert _intent(text) == intent
+
+
+# braking said with the brake as a verb's object ("hit the brakes", "applied the brake", "used his
+# brakes") is the ego's brake; hard, an evasion; tapped or gentle, a give-way
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("The lorry swung out and I hit the brakes hard.", "near_miss"),
+        ("I applied the brakes firmly when the jogger stepped out.", "near_miss"),
+        ("I tapped the brakes to let the minibus in.", "safe"),
+        ("I hit the brakes. Thankfully he was fine.", "near_miss"),
+        ("I put the brakes on hard as the kid ran out.", "near_miss"),
+        ("The van pushed the car with its brakes off.", None),
+    ],
+    ids=["hit-hard", "applied-firmly", "tapped", "hit-fine", "put-on-hard", "brakes-off"],
+)
+def test_braking_said_with_the_brake_as_object(text, intent):
+    assert _intent(text) == intent
+
+
+# the ego's brake beside a road user read cutting in or pulling out into its way was forced on it
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("A hatchback cut in right in front of me on the motorway and I hit the brakes.", "near_miss"),
+        ("A delivery van pulled out of a side street into my path, so I braked.", "near_miss"),
+        ("The SUV moved into my lane without looking. I applied the brake.", "near_miss"),
+        ("A car merged into my lane and I braked gently to let it in.", "safe"),
+        ("A car pulled out of the junction ahead and I stopped to let it go.", "safe"),
+        ("A van cut in ahead of me and I braked, then he hit the cyclist.", "collision"),
+        ("I braked for the red light.", "safe"),
+    ],
+    ids=[
+        "cut-in-hit-brakes",
+        "pulled-out-braked",
+        "into-my-lane",
+        "gently-let-in",
+        "stopped-let-go",
+        "contact",
+        "red-light",
+    ],  # fmt: skip
+)
+def test_a_brake_beside_a_road_user_cutting_in_is_forced(text, intent):
+    assert read(text).intent == intent

@@ -988,6 +988,21 @@ def _off_the_road(words: list[str], i: int) -> bool:
     return bool(set(before) & _FORCED or _lemmas(words[i]) & {"force", "mount"})
 
 
+#: Verbs (lemmas) that work a brake said as their object ("hit the brakes", "applied the brake",
+#: "used his brakes", "put the brakes on", "pressed the brake pedal", "tapped the brakes").
+_WORKING = frozenset(("hit", "apply", "use", "press", "push", "put", "step", "get", "tap", "dab", "feather", "pump"))
+
+
+def _brakes_worked(words: list[str], i: int) -> bool:
+    """Whether the verb at ``i`` takes the brake as its object, up to a determiner and "on" between
+    ("hit the brakes", "got on the brake", "used his brake"): a brake said with its noun. Not the
+    brake as what something else does ("pushed the car with the brakes off")."""
+    k = i + 1
+    while k < len(words) and k <= i + 3 and (words[k] in _DETERMINERS | _POSSESSIVES or words[k] in ("on", "onto")):
+        k += 1
+    return k < len(words) and words[k] in ("brake", "brakes", "anchors")
+
+
 def _ego_acts(words: list[str], i: int) -> str | None:
     """What the ego's verb at ``i`` says of the outcome: "evade" (swerve, brake hard), "brake" (a
     plain brake), "stop" (a plain stop), "yield" (waits, gives way, stops gently, lets the other go)
@@ -1004,6 +1019,10 @@ def _ego_acts(words: list[str], i: int) -> str | None:
         if lem & {"slam", "stamp", "jump", "stand", "jam"} and not {"on", "brake", "brakes"} & set(window):
             return None
         return "evade"
+    if lem & _WORKING and not words[i].endswith("ing") and _brakes_worked(words, i):
+        if set(window) & _MILD or lem & {"tap", "dab", "feather"}:
+            return "yield"  # ("tapped the brakes", "gently applied the brake")
+        return "evade" if set(words[i + 1 : i + 7]) & _HARD else "brake"  # ("hit the brakes", "used his brake")
     if lem & {"lock"} and set(words[i + 1 : i + 4]) & {"up", "wheels", "brakes", "tyres", "tires"}:
         return "evade"  # ("I locked up", "locked the wheels": braking as hard as it goes)
     if lem & {"brake"} and words[i + 1 : i + 2] == ["like"] and set(words[i + 2 : i + 3]) & _FURY:
@@ -1615,7 +1634,7 @@ def _hindsight(words: list[str], i: int) -> bool:
     return "have" in before and bool(set(before) & {"could", "would", "might", "should", "ought"})
 
 
-def decide(cues: list[Cue], sudden: bool = False) -> str | None:
+def decide(cues: list[Cue], sudden: bool = False, intruded: bool = False) -> str | None:
     """The intent the cues state. A contact anywhere is a collision; a hedge, a miss, a small margin
     or a close call a near miss; then a stated safe pass; a denied contact is a near miss unless the
     ego only gave way; the ego's evasion alone a near miss, its giving way alone a safe pass.
@@ -1623,7 +1642,9 @@ def decide(cues: list[Cue], sudden: bool = False) -> str | None:
     ego's plain stop or brake, with nothing else said, is what it was forced to do: a near miss. That
     everyone was fine or nothing happened says how it ended: after a sudden act or the ego's braking
     or evasion it was a near miss avoided ("he shot out, I stood on the brakes, he's fine"); alone, a
-    safe pass."""
+    safe pass. ``intruded``: a road user is read cutting into the ego's lane or turning into its way;
+    then the ego's brake (not a stop, which may be a wait), with nothing else said, is what that forced
+    on it ("he cut across in front of me. I braked, he went"): a near miss."""
     kinds = {c.kind for c in cues}
     if "unharmed" in kinds:  # (nobody hurt, nothing happened: how it ended, not how close it was)
         kinds.discard("unharmed")
@@ -1631,6 +1652,8 @@ def decide(cues: list[Cue], sudden: bool = False) -> str | None:
         kinds.add("evade" if forced and not kinds & {"safe", "yield"} else "safe")
     if sudden and kinds & {"stop", "brake"} and not kinds & {"contact", "safe", "yield", "required", "near"}:
         kinds.add("evade")  # ("a kid shot out in front of me and I just stopped")
+    if intruded and "brake" in kinds and not kinds & {"contact", "safe", "yield", "required", "near", "stop"}:
+        kinds.add("evade")  # ("a van cut in ahead of me and I hit the brakes")
     if "stop" in kinds:
         kinds = (kinds - {"stop"}) | {"yield"}  # (otherwise a plain stop gives way)
     if "contact" in kinds:
