@@ -947,3 +947,126 @@ def test_a_contact_someone_came_close_to_is_a_near_miss(text, intent):
 )
 def test_no_harm_done_says_how_it_ended(text, intent):
     assert read(text).intent == intent
+
+
+# an evasive act someone was made to do, whoever it is ("needed to swerve", "made me brake hard",
+# "was forced to"), is a near miss; a plain stop or brake that was needed is not, and a need under a
+# condition, a counterfactual or a future was never met
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("The bus pulled out and the cyclist needed to swerve.", "near_miss"),
+        ("Lorry jammed its brakes, driver need to swerve to the next lane.", "near_miss"),
+        ("The moped rider was forced to brake hard when the taxi turned.", "near_miss"),
+        ("Some idiot pulled out of the side road and made me swerve.", "near_miss"),
+        ("The van cut across, forcing me to brake sharply.", "near_miss"),
+        ("The scooter came straight at us, the rider had to slam on the brakes.", "near_miss"),
+        ("The pickup swung out and made the cyclist brake hard.", "near_miss"),
+        ("The e-bike was obliged to veer onto the pavement.", "near_miss"),
+    ],
+    ids=["needed-to", "need-to", "forced-to", "made-me", "forcing-me-to", "had-to-slam", "made-the-cyclist", "obliged"],
+)
+def test_an_evasion_someone_was_made_to_do_is_a_near_miss(text, intent):
+    assert _intent(text) == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("The lights changed and the cyclist needed to brake.", None),
+        ("The courier had to stop for the red light.", None),
+        ("A rider might need to brake hard on this bend.", None),
+        ("Where the lane narrows, riders may have to swerve round the potholes.", None),
+        ("The noise of the lorry made me brake.", None),
+        ("The van driver made a U-turn and braked hard.", None),
+        ("The bus pulled out, forcing me to brake hard, and hit the cyclist.", "collision"),
+    ],
+    ids=["plain-brake", "plain-stop", "might-need", "may-have-to", "made-plain-brake", "made-a-turn", "contact"],
+)
+def test_a_need_that_was_no_evasion_is_not_a_near_miss(text, intent):
+    assert _intent(text) == intent
+
+
+# a margin said as the width of a car, a van, a lorry or a whole lane, or a wide gap, is a pass with room
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("Then the coach overtook the cyclist leaving a full car's width.", "safe"),
+        ("Gave the lad on the bike a good car's width as I went by.", "safe"),
+        ("The minibus went round her with a whole lane to herself, a lorry width to spare.", "safe"),
+        ("The taxi driver gave the rider a whole lane.", "safe"),
+        ("I overtook the jogger with a car width between us.", "safe"),
+        ("Eventually went past him with a really wide gap.", "safe"),
+        ("The van passed with a generous gap to the scooter.", "safe"),
+    ],
+    ids=[
+        "leaving-car-width",
+        "gave-car-width",
+        "lorry-width-to-spare",
+        "whole-lane",
+        "car-width-between",
+        "wide-gap",
+        "generous-gap",
+    ],  # fmt: skip
+)
+def test_a_margin_as_wide_as_a_vehicle_is_a_safe_pass(text, intent):
+    assert _intent(text) == intent
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("The van passed me with less than a car's width.", None),
+        ("He overtook leaving barely a car's width.", None),
+        ("The lane width is 3.5 m and a cyclist rides along the kerb.", None),
+        ("I pulled into a wide gap in the traffic.", None),
+        ("The truck missed me by a bike's width.", "near_miss"),
+    ],
+    ids=["less-than", "barely", "lane-width-of-the-road", "gap-in-traffic", "bike-width"],
+)
+def test_a_width_cut_short_or_of_the_road_is_no_safe_margin(text, intent):
+    assert _intent(text) == intent
+
+
+# braking said with the brake as a verb's object ("hit the brakes", "applied the brake", "used his
+# brakes") is the ego's brake; hard, an evasion; tapped or gentle, a give-way
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("The lorry swung out and I hit the brakes hard.", "near_miss"),
+        ("I applied the brakes firmly when the jogger stepped out.", "near_miss"),
+        ("I tapped the brakes to let the minibus in.", "safe"),
+        ("I hit the brakes. Thankfully he was fine.", "near_miss"),
+        ("I put the brakes on hard as the kid ran out.", "near_miss"),
+        ("The van pushed the car with its brakes off.", None),
+    ],
+    ids=["hit-hard", "applied-firmly", "tapped", "hit-fine", "put-on-hard", "brakes-off"],
+)
+def test_braking_said_with_the_brake_as_object(text, intent):
+    assert _intent(text) == intent
+
+
+# the ego's brake beside a road user read cutting in or pulling out into its way was forced on it
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("A hatchback cut in right in front of me on the motorway and I hit the brakes.", "near_miss"),
+        ("A delivery van pulled out of a side street into my path, so I braked.", "near_miss"),
+        ("The SUV moved into my lane without looking. I applied the brake.", "near_miss"),
+        ("A car merged into my lane and I braked gently to let it in.", "safe"),
+        ("A car pulled out of the junction ahead and I stopped to let it go.", "safe"),
+        ("A van cut in ahead of me and I braked, then he hit the cyclist.", "collision"),
+        ("I braked for the red light.", "safe"),
+    ],
+    ids=[
+        "cut-in-hit-brakes",
+        "pulled-out-braked",
+        "into-my-lane",
+        "gently-let-in",
+        "stopped-let-go",
+        "contact",
+        "red-light",
+    ],  # fmt: skip
+)
+def test_a_brake_beside_a_road_user_cutting_in_is_forced(text, intent):
+    assert read(text).intent == intent

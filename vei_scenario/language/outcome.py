@@ -720,17 +720,20 @@ def _margin(words: list[str], i: int) -> str | None:
     w = words[i]
     if w == "spare" and i > 0 and words[i - 1] == "to":
         said = words[max(0, i - 6) : i - 1]
-        if set(said) & _WIDE:
-            return SAFE
+        if set(said) & _WIDE or any(_vehicle_width(said, k) for k in range(len(said))):
+            return SAFE  # ("plenty to spare", "with a full car width to spare")
         metres = _length_said(said)
         stopped = any(_lemmas(x) & {"stop", "halt", "pull", "brake"} for x in words[max(0, i - 10) : i])
         if metres is not None and not stopped:
             # (a pass's clearance sideways; a longer one is a gap ahead, which the text tells as close)
             return SAFE if 1.5 <= metres <= 5.0 else NEAR_MISS if metres <= 1.0 or metres > 5.0 else None
         return NEAR_MISS if said else None
-    if w in ("clearance", "separation", "margin", "room", "space", "distance") and set(words[max(0, i - 3) : i]) & (
-        _WIDE | _SUFFICIENT
-    ) - {"room", "space"}:
+    if _vehicle_width(words, i) and set(words[max(0, i - 10) : i]) & _LEAVING:
+        return SAFE  # ("leaving a full car's width", "gave him a car width", "with a whole lane's width")
+    gap = w in ("gap", "berth") and words[i + 1 : i + 2] not in (["in"], ["between"], ["for"])  # (not a place)
+    if (w in ("clearance", "separation", "margin", "room", "space", "distance") or gap) and set(
+        words[max(0, i - 3) : i]
+    ) & (_WIDE | _SUFFICIENT) - {"room", "space"}:
         if set(words[max(0, i - 4) : i]) & {"without", "not", "no", "never"}:
             return None  # ("without sufficient clearance": how close is not said)
         return SAFE  # ("plenty of room", "an ample margin", "enough distance", "adequate clearance")
@@ -800,6 +803,38 @@ def _margin(words: list[str], i: int) -> str | None:
         if any(_lemmas(x) & {"stop", "miss", "pass", "clear", "halt"} for x in before) or "by" in before:
             return NEAR_MISS
     return None
+
+
+#: Words that give a margin to the one passed ("leaving a car's width", "gave her a lane", "with").
+_LEAVING = frozenset(("leaving", "leave", "left", "gave", "give", "giving", "gives", "with", "allowing", "allowed"))
+#: The kinds of road user as wide as a lane's share: a margin of one of their widths is a wide one.
+_WIDE_KINDS = ("car", "van", "truck")
+#: Words that make the width that follows less than said ("less than a car's width", "not even").
+_SHORT_OF = frozenset(("less", "under", "not", "never", "barely", "hardly", "scarcely", "only", "half", "no"))
+
+
+@lru_cache(maxsize=1)
+def _wide_heads() -> frozenset[str]:
+    """The last words of the nouns of a car, a van or a truck, and "lane": the widths of a margin that
+    is a wide one ("a car's width", "a full lane")."""
+    phrases = [p for kind in _WIDE_KINDS for p in L.ACTOR_NOUNS[kind]] + list(L.CAR_NOUNS)
+    return frozenset(p.split()[-1] for p in phrases) | {"lane", "vehicle"}
+
+
+def _vehicle_width(words: list[str], i: int) -> bool:
+    """Whether ``words[i]`` is "width" said of a car, a van, a lorry or a lane ("a full car's width", "a
+    car width", "a whole lane's width"), or a lane given whole ("a whole lane", "a full lane"): a
+    margin as wide as a vehicle, so a pass with room. Not a width cut short ("less than a car's
+    width", "not even half a car width") and not the width of the road ("the lane width is 3 m")."""
+    k = i - 2 if words[i - 1 : i] == ["'s"] else i - 1  # ("a car 's width", as the tokens split it)
+    if words[i] == "width" and k >= 0 and words[k].removesuffix("'s").removesuffix("s'") in _wide_heads():
+        pass
+    elif words[i] == "lane" and i > 1 and words[i - 1] in ("full", "whole", "entire"):
+        k = i  # ("gave him a whole lane")
+    else:
+        return False
+    article = next((j for j in range(k - 1, max(-1, k - 4), -1) if words[j] in ("a", "an", "one")), None)
+    return article is not None and not set(words[max(0, article - 3) : article]) & _SHORT_OF
 
 
 #: Adjectives that call a margin enough ("adequate clearance", "a sufficient distance").
@@ -953,6 +988,21 @@ def _off_the_road(words: list[str], i: int) -> bool:
     return bool(set(before) & _FORCED or _lemmas(words[i]) & {"force", "mount"})
 
 
+#: Verbs (lemmas) that work a brake said as their object ("hit the brakes", "applied the brake",
+#: "used his brakes", "put the brakes on", "pressed the brake pedal", "tapped the brakes").
+_WORKING = frozenset(("hit", "apply", "use", "press", "push", "put", "step", "get", "tap", "dab", "feather", "pump"))
+
+
+def _brakes_worked(words: list[str], i: int) -> bool:
+    """Whether the verb at ``i`` takes the brake as its object, up to a determiner and "on" between
+    ("hit the brakes", "got on the brake", "used his brake"): a brake said with its noun. Not the
+    brake as what something else does ("pushed the car with the brakes off")."""
+    k = i + 1
+    while k < len(words) and k <= i + 3 and (words[k] in _DETERMINERS | _POSSESSIVES or words[k] in ("on", "onto")):
+        k += 1
+    return k < len(words) and words[k] in ("brake", "brakes", "anchors")
+
+
 def _ego_acts(words: list[str], i: int) -> str | None:
     """What the ego's verb at ``i`` says of the outcome: "evade" (swerve, brake hard), "brake" (a
     plain brake), "stop" (a plain stop), "yield" (waits, gives way, stops gently, lets the other go)
@@ -969,6 +1019,10 @@ def _ego_acts(words: list[str], i: int) -> str | None:
         if lem & {"slam", "stamp", "jump", "stand", "jam"} and not {"on", "brake", "brakes"} & set(window):
             return None
         return "evade"
+    if lem & _WORKING and not words[i].endswith("ing") and _brakes_worked(words, i):
+        if set(window) & _MILD or lem & {"tap", "dab", "feather"}:
+            return "yield"  # ("tapped the brakes", "gently applied the brake")
+        return "evade" if set(words[i + 1 : i + 7]) & _HARD else "brake"  # ("hit the brakes", "used his brake")
     if lem & {"lock"} and set(words[i + 1 : i + 4]) & {"up", "wheels", "brakes", "tyres", "tires"}:
         return "evade"  # ("I locked up", "locked the wheels": braking as hard as it goes)
     if lem & {"brake"} and words[i + 1 : i + 2] == ["like"] and set(words[i + 2 : i + 3]) & _FURY:
@@ -1288,6 +1342,45 @@ def _need_denied(words: list[str], i: int) -> bool:
     return k >= 0 and before[k] in ("not", "never", "no", "without", "nobody", "no-one", "noone")
 
 
+#: Verbs (lemmas) of a need or a compulsion whose complement is an act forced on its doer ("had to
+#: swerve", "needed to brake hard", "was forced to", "obliged to").
+_NEEDING = frozenset(("have", "need", "force", "oblige", "compel"))
+#: Verbs (lemmas) that force an act on their object ("made me swerve", "forcing him to brake hard").
+_CAUSING = frozenset(("make", "force", "cause", "oblige", "compel"))
+#: Words of a condition, a counterfactual or a time to come: a need under one was not met ("would
+#: need to brake", "might have to swerve", "if you have to stop", "will need to").
+_UNREAL = _HYPOTHETICAL | frozenset(("will", "may", "shall", "unless", "in", "case"))
+
+
+def _maker(words: list[str], i: int) -> int | None:
+    """Where "make" stands before the bare verb at ``i`` with only its object between ("made me
+    swerve", "made the poor cyclist brake hard"): the object was made to act; None if it does not."""
+    for k in range(i - 2, max(-1, i - 5), -1):
+        between = words[k + 1 : i]
+        person = between[-1] in _PERSON_OBJECTS - {"one", "each", "it"} or _road_user_word(between[-1])
+        if _lemmas(words[k]) & {"make"} and person and all(not _is_verb(x) or x in _PERSON_OBJECTS for x in between):
+            return k
+    return None
+
+
+def _compelled(words: list[str], i: int) -> bool:
+    """Whether the verb at ``i`` is an act its doer was made to do: the complement of a need ("had
+    to", "needed to", "need to", "was forced to") or the object's act after a verb that causes it
+    ("made me swerve", "forcing him to brake hard"), said of anyone, ego or not. Not when the need is
+    under a condition, a counterfactual or a future ("would have had to", "might need to", "will
+    need to"): nothing was forced yet."""
+    k = None
+    if words[i - 1 : i] == ["to"] and i >= 2 and _lemmas(words[i - 2]) & _NEEDING:
+        k = i - 2  # ("had to swerve", "needed to brake hard", "was forced to")
+    elif words[i - 1 : i] == ["to"] and i >= 3 and _lemmas(words[i - 3]) & _CAUSING:
+        k = i - 3  # ("forcing me to brake", "forced the bus to swerve")
+    else:
+        k = _maker(words, i)  # ("made me swerve", "made the cyclist brake hard")
+    if k is None or not _is_verb(words[k]):
+        return False
+    return not _scoped(words, k, _UNREAL, 4)
+
+
 def _only_just(words: list[str], i: int) -> bool:
     """Whether "only" up to five words before the contact at ``i`` hedges it ("only just clipped him",
     "only narrowly missed", "the van only didn't hit me because ..."), not a contact made light of
@@ -1504,8 +1597,8 @@ def outcome_cues(said: str) -> list[Cue]:
                 add("safe" if w in ("clean", "clear") else "close")  # (a one-word verdict: "Clean.", "but close")
             if _is_verb(w) and _hindsight(words, i):
                 pass  # ("I should have waited": what was not done)
-            elif _is_verb(w) and words[max(0, i - 2) : i] == ["had", "to"] and _ego_acts(words, i) == "evade":
-                add("evade")  # (anyone forced to swerve: "he had to swerve round my bonnet")
+            elif _is_verb(w) and _compelled(words, i) and _ego_acts(words, i) == "evade":
+                add("evade")  # (anyone forced to swerve: "he had to swerve round my bonnet", "made me brake hard")
             elif _is_verb(w) and _subject_is_ego(words, i, clause, story):
                 act = _ego_acts(words, i)
                 if act is not None:
@@ -1541,7 +1634,7 @@ def _hindsight(words: list[str], i: int) -> bool:
     return "have" in before and bool(set(before) & {"could", "would", "might", "should", "ought"})
 
 
-def decide(cues: list[Cue], sudden: bool = False) -> str | None:
+def decide(cues: list[Cue], sudden: bool = False, intruded: bool = False) -> str | None:
     """The intent the cues state. A contact anywhere is a collision; a hedge, a miss, a small margin
     or a close call a near miss; then a stated safe pass; a denied contact is a near miss unless the
     ego only gave way; the ego's evasion alone a near miss, its giving way alone a safe pass.
@@ -1549,7 +1642,9 @@ def decide(cues: list[Cue], sudden: bool = False) -> str | None:
     ego's plain stop or brake, with nothing else said, is what it was forced to do: a near miss. That
     everyone was fine or nothing happened says how it ended: after a sudden act or the ego's braking
     or evasion it was a near miss avoided ("he shot out, I stood on the brakes, he's fine"); alone, a
-    safe pass."""
+    safe pass. ``intruded``: a road user is read cutting into the ego's lane or turning into its way;
+    then the ego's brake (not a stop, which may be a wait), with nothing else said, is what that forced
+    on it ("he cut across in front of me. I braked, he went"): a near miss."""
     kinds = {c.kind for c in cues}
     if "unharmed" in kinds:  # (nobody hurt, nothing happened: how it ended, not how close it was)
         kinds.discard("unharmed")
@@ -1557,6 +1652,8 @@ def decide(cues: list[Cue], sudden: bool = False) -> str | None:
         kinds.add("evade" if forced and not kinds & {"safe", "yield"} else "safe")
     if sudden and kinds & {"stop", "brake"} and not kinds & {"contact", "safe", "yield", "required", "near"}:
         kinds.add("evade")  # ("a kid shot out in front of me and I just stopped")
+    if intruded and "brake" in kinds and not kinds & {"contact", "safe", "yield", "required", "near", "stop"}:
+        kinds.add("evade")  # ("a van cut in ahead of me and I hit the brakes")
     if "stop" in kinds:
         kinds = (kinds - {"stop"}) | {"yield"}  # (otherwise a plain stop gives way)
     if "contact" in kinds:

@@ -2686,7 +2686,8 @@ def _read(text: str) -> Reading:
     sudden = any(  # ("shot out", "suddenly"; not going on as it was: "just carried on alongside")
         b[2] == "dangerous" and b[0] not in _GOING_ON for a in r.actors for b in a.behaviours
     )
-    r.intent = decide(cues, sudden)  # (the outcome reader alone decides contact: not "hit the horn", "hit the brakes")
+    intruded = any(b[0] in _INTRUSIONS for a in r.actors for b in a.behaviours)  # ("cut in", "pulled out")
+    r.intent = decide(cues, sudden, intruded)  # (the outcome reader alone decides contact: not "hit the horn")
     actors = said_again.merge_said_again(actors, r)  # ("a car ran the red. This guy in a red SUV ...": one)
     if not ego_named:
         unnamed = ego_double.ego_unnamed(scanned, clauses)  # (no narrator, no "you", no ego phrase)
@@ -2820,6 +2821,9 @@ def _criticality_said_apart(clauses, specs: list[ActorSpec]) -> None:
 _REACTIONS = ("sudden_stop", "stop", "change_speed")
 #: Behaviours of a road user going on as it was: none is an act that can be sudden.
 _GOING_ON = frozenset(("keep_going", "keep_lane", "along_road", "follow_vehicle"))
+#: Acts that put a road user into the ego's lane or way from beside it or from another road: a brake
+#: the ego makes beside one was forced on it.
+_INTRUSIONS = frozenset(("cut_in", "turn_into", "forced_turn"))
 #: What someone does to get out of the way: swerving, dodging.
 _EVASIONS = ("cut_in", "change_lane", "cut_out")
 #: Behaviours only a vehicle does: said with no road user, a car does them.
