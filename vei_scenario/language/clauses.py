@@ -11,6 +11,14 @@ from collections.abc import Iterable
 SENTENCE_END = frozenset(".;!?:")
 
 
+def sentence_start(tokens: list[str], i: int, ends: frozenset[str] = SENTENCE_END) -> int:
+    """The index of the first token of the sentence that holds token ``i`` (after the last of ``ends``
+    before it, or 0)."""
+    while i > 0 and tokens[i - 1] not in ends:
+        i -= 1
+    return i
+
+
 def split(tokens: Iterable[str], breaks: frozenset[str]) -> list[tuple[list[str], bool]]:
     """The non-empty clauses of ``tokens`` cut at each of ``breaks`` (punctuation or conjunctions, left
     out of the clauses), each with whether it opens its sentence (nothing but breaks before it since

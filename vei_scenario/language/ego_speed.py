@@ -19,6 +19,7 @@ from __future__ import annotations
 
 from vei_scenario.language import lexicon as L
 from vei_scenario.language import vocabulary as V
+from vei_scenario.language.clauses import sentence_start
 from vei_scenario.language.discourse import FIRST_PERSON
 from vei_scenario.language.ego import SENTENCE_END
 from vei_scenario.language.lemmas import lemmas
@@ -491,9 +492,7 @@ def _egos_braking(tokens: list[str], b: int) -> bool:
     "the car in front braked" is not)."""
     if not tokens[b].startswith("brak") and "brake" not in lemmas(tokens[b]).get("VERB", ()):
         return False
-    start = b
-    while start > 0 and tokens[start - 1] not in SENTENCE_END:
-        start -= 1
+    start = sentence_start(tokens, b, SENTENCE_END)
     if _EGO_WORDS & set(tokens[start:b]):  # ("I saw him late, braked, ...": the subject of its sentence)
         return True
     return b >= 1 and tokens[b - 1] == "the" and (b == 1 or tokens[b - 2] in SENTENCE_END)
@@ -660,9 +659,7 @@ def limits(tokens: list[str], speeds: set[int]) -> set[int]:
             named.add(i)
     out = set()
     for i in named:
-        start, stop = i, i
-        while start > 0 and tokens[start - 1] not in SENTENCE_END:
-            start -= 1
+        start, stop = sentence_start(tokens, i, SENTENCE_END), i
         while stop < len(tokens) and tokens[stop] not in SENTENCE_END:
             stop += 1
         if any(start <= j < stop for j in speeds - named):

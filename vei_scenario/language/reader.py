@@ -2487,6 +2487,8 @@ def _read(text: str) -> Reading:
     ):
         r.map_kind = "crossroad"  # the ego turns, or someone comes out of or waits in a side road: a junction
     junction = r.map_kind in ("crossroad", "roundabout")
+    # (what the whole text says, read once for every road user's behaviours below)
+    left_hand, across, signal = sides.drives_on_left(scanned, text), turn_across_side(text), junctions.signal_said(said)
     for a, slot, value in said_of:
         a.speed_mps, a.distance_m = (value, a.distance_m) if slot == "speed" else (a.speed_mps, value)
     for a in actors:
@@ -2597,7 +2599,7 @@ def _read(text: str) -> Reading:
         ):
             behaviours = behaviours[crossing_at:]  # ("... stops; then crosses from the left"): from the kerb
         a.behaviours = behaviours
-        spec.relation = _resolve_relation(a, r.map_kind, sides.drives_on_left(scanned, text))
+        spec.relation = _resolve_relation(a, r.map_kind, left_hand)
         spec.relation = sides.kerb_overtaker(
             spec.relation, behaviours, bool(a.side or a.kerb_side or a.lane_side), any(x.object_of is a for x in actors)
         )  # ("a kid in the bike lane overtook me": from behind)
@@ -2635,15 +2637,7 @@ def _read(text: str) -> Reading:
         passes_another = any(x.object_of is a for x in actors)  # ("pulled out to pass a truck": its own overtake)
         only_there = [b[0] for b in spec.behaviours] in ([], ["keep_going"])  # (nothing it does is said)
         going_on = [b[0] for b in spec.behaviours[:1]] != ["cut_in"]  # (not "doesn't yield": it takes the way)
-        _specialise(
-            a,
-            spec,
-            junction,
-            sides.drives_on_left(scanned, text),
-            turn_across_side(text),
-            passes_another,
-            junctions.signal_said(said),
-        )
+        _specialise(a, spec, junction, left_hand, across, passes_another, signal)
         spec.behaviours = junctions.through_from_opposite(
             spec.relation, spec.behaviours, said, passes_another, going_on
         )
@@ -2674,7 +2668,7 @@ def _read(text: str) -> Reading:
     for spec in r.actors:
         spec.behaviours = _one_act_once(spec)
         before = spec.behaviours[0][0] if spec.behaviours else None
-        spec.behaviours = one_path(spec, said, turn_across_side(text))
+        spec.behaviours = one_path(spec, said, across)
         after = spec.behaviours[0][0] if spec.behaviours else None
         spec.relation = sides.overtaker_start(before, after, spec.relation)  # ("overtook me and turned left")
     if r.map_kind is None and any(s.relation == "junction_opposite" for s in r.actors):

@@ -23,7 +23,7 @@ English verbs that take a direction as a turn.
 
 from __future__ import annotations
 
-from vei_scenario.language.clauses import SENTENCE_END, split
+from vei_scenario.language.clauses import sentence_start, split
 from vei_scenario.language.lemmas import lemmas
 
 #: Verbs that take a direction as a turn ("turn left", "bear right", "swing left", "went left").
@@ -362,9 +362,7 @@ def instruction_at(tokens: list[str], i: int) -> bool:
     whoever is named after it. Looks back only to the start of its sentence."""
     if i >= len(tokens) or _turn_at(tokens, i) is None:
         return False
-    start = i
-    while start > 0 and tokens[start - 1] not in SENTENCE_END:
-        start -= 1
+    start = sentence_start(tokens, i)
     clauses = split(tokens[start : i + 1], _BREAK_PUNCT | _BREAK_WORDS)
     if not clauses:
         return False
