@@ -2662,7 +2662,11 @@ def _read(text: str) -> Reading:
     if not ego_named:  # (before a braking driver is taken for one to swerve round)
         actors = ego_double.merge_ego_driver(actors, r)  # ("Driver braked hard and our cases slid everywhere")
     _parked(actors, r.actors)
-    _cut_outs(r.actors, {k for k, a in enumerate(actors) if a.double_parked and a.kind in VEHICLES})
+    _cut_outs(
+        r.actors,
+        {k for k, a in enumerate(actors) if a.double_parked and a.kind in VEHICLES},
+        {k for k, a in enumerate(actors) if a.followed},
+    )
     _criticality_said_apart(clauses, r.actors)
     apply_manner(stated_manner(tokens), r.actors)  # (the scales of closeness, margin and timing)
     for spec in r.actors:
@@ -3213,33 +3217,85 @@ def _parked(actors: list[_Actor], specs: list[ActorSpec]) -> None:
             spec.relation = f"roadside_{parked_sides[0]}"
 
 
-def _cut_outs(specs: list[ActorSpec], double_parked: set[int] = frozenset()) -> None:
+def _cut_outs(specs: list[ActorSpec], double_parked: set[int] = frozenset(), followed: set[int] = frozenset()) -> None:
     """A vehicle ahead that swerves out of the lane while something stands in it (or "swerves round"
     it) reveals that to the ego: a cut-out, with the standing actor as its obstacle. Without
     anything standing, a swerve out is a lane change. A road user in the lane that stops (brakes to
     a standstill) stands there as well (:func:`motion.stops_in_the_lane`), and so does a vehicle
     ``double_parked`` (by index): parked beside the parked cars, it stands in the traffic lane, whatever
-    side of the road it is on."""
+    side of the road it is on. What swerves is no standing thing (:func:`_swerve_at`), and a vehicle
+    the ego follows (``followed``, by index) swerves out of the ego's lane, ahead, whatever side the
+    lane it moves into gave it."""
     standing = [
         k
         for k, s in enumerate(specs)
-        if motion.stops_in_the_lane(s, specs) or (k in double_parked and s.speed_mps == 0.0 and len(specs) > 1)
+        if (motion.stops_in_the_lane(s, specs) or (k in double_parked and s.speed_mps == 0.0 and len(specs) > 1))
+        and _swerve_at(s) is None
+    ]
+    beside = [  # standing in a lane said by its side ("stood there in lane 1"): the ego's, if the lead left it
+        k
+        for k, s in enumerate(specs)
+        if s.relation in ("left", "right")
+        and motion.stops_in_the_lane(replace(s, relation=None), specs)
+        and _swerve_at(s) is None
     ]
     for k, s in enumerate(specs):
-        if not standing or not s.behaviours or s.kind not in VEHICLES or k in standing:
+        if not (standing or beside) or not s.behaviours or s.kind not in VEHICLES or k in standing:
             continue
-        name, cfg, crit, link = s.behaviours[0]
+        at = _swerve_at(s)
+        if at is None:
+            continue
+        name, cfg, crit, link = s.behaviours[at]
         passes = name in ("cut_in", "overtake") and s.relation in (None, "ahead")  # ("pulls out to pass a parked van")
-        swerves = name in ("cut_out", "change_lane") or passes
-        if swerves and s.relation in (None, "ahead", "behind"):
+        swerves = name in ("cut_out", "change_lane") or passes or (name == "cut_in" and k in followed)
+        obstacle = standing[0] if standing else _left_behind(cfg, [j for j in beside if j != k], specs, k in followed)
+        if swerves and obstacle is not None and (s.relation in (None, "ahead", "behind") or k in followed):
             direction = {key: v for key, v in cfg.items() if key == "direction"}
-            s.behaviours = [("cut_out", direction, crit, link)] + s.behaviours[1:]
-            s.relation, s.obstacle = "ahead", standing[0]
-            specs[standing[0]].relation = "ahead"
-            specs[standing[0]].behaviours = motion.standing_still(specs[standing[0]])
+            s.behaviours = [("cut_out", direction, crit, link)] + _after_the_swerve(s.behaviours[at + 1 :])
+            s.relation, s.obstacle = "ahead", obstacle
+            s.speed_mps = None if s.speed_mps == 0.0 else s.speed_mps  # (the standstill said is the obstacle's)
+            specs[obstacle].relation = "ahead"
+            specs[obstacle].behaviours = motion.standing_still(specs[obstacle])
     for s in specs:  # a swerve with nothing to swerve round is a lane change
         if s.obstacle is None:
             s.behaviours = [("change_lane", *b[1:]) if b[0] == "cut_out" else b for b in s.behaviours]
+
+
+#: What a lead does before it swerves that is only going along in front of the ego ("the ego follows
+#: a lead vehicle at 60 km/h ...; the lead vehicle changes lanes").
+_GOING_ALONG = frozenset(("follow_vehicle", "keep_going", "keep_lane"))
+#: A lead's moves out of the ego's lane: a lane change, a swerve round, a pull-out (one it passes with,
+#: or one out of the lane the ego follows it in).
+_MOVES_OUT = frozenset(("change_lane", "cut_out", "cut_in", "overtake"))
+
+
+def _swerve_at(spec: ActorSpec) -> int | None:
+    """The index of the behaviour with which ``spec`` moves out of the lane: its first act, or its
+    first after acts of only going along (a lead followed, then swerving, still swerves); None when it
+    does not move out. A road user that moves out is moving, so it is never what stands in the lane."""
+    for i, b in enumerate(spec.behaviours):
+        if b[0] in _MOVES_OUT:
+            return i
+        if b[0] not in _GOING_ALONG:
+            return None
+    return None
+
+
+def _left_behind(cfg: dict, beside: list[int], specs: list[ActorSpec], followed: bool) -> int | None:
+    """Of the road users ``beside`` (indices) that stand in a lane said by its side, the one in the lane
+    a followed lead swerves out of (``cfg``: its move's config): the ego follows the lead, so that lane
+    is the ego's. One on the side the lead moves to stands in the lane it moves into, not in its way;
+    a lead the ego does not follow may leave a lane that is not the ego's."""
+    if not followed:
+        return None
+    to = {1.0: "left", -1.0: "right"}.get(float(cfg.get("direction", 0.0)))
+    return next((j for j in beside if specs[j].relation != to), None)
+
+
+def _after_the_swerve(rest: list) -> list:
+    """What a lead does after its cut-out, less a stop: once it is out of the lane, the stop said for
+    the revealed obstacle ("had about 20 metres to stop", "braked hard") is the ego's, which faces it."""
+    return [b for b in rest if b[0] not in ("stop", "sudden_stop")]
 
 
 def _one_of(m, nxt) -> int | None:
