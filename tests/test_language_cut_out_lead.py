@@ -45,6 +45,13 @@ def test_a_lead_that_moves_out_round_what_stands_is_a_cut_out(text):
     assert [r for r in read_as if r[2] == ["stop"] and r[1] == "ahead"], read_as
 
 
+def test_what_alone_stands_is_the_obstacle_whatever_else_it_is_read_to_do():
+    """Only a road user that stands beside another that stands is set aside for moving out."""
+    reading = read("Lorry in front changed lane late because a stalled car stands in the lane, I see it 30 m before.")
+    assert [a.behaviours[0][0] for a in reading.actors][:1] == ["cut_out"]
+    assert reading.actors[0].obstacle == 1
+
+
 def test_the_lead_keeps_no_standstill_of_what_it_reveals():
     reading = read(
         "Lead vehicle swerves into the adjacent lane at TTC 2 s to a stationary object in ego lane. Ego at 110 km/h."

@@ -3223,15 +3223,16 @@ def _cut_outs(specs: list[ActorSpec], double_parked: set[int] = frozenset(), fol
     anything standing, a swerve out is a lane change. A road user in the lane that stops (brakes to
     a standstill) stands there as well (:func:`motion.stops_in_the_lane`), and so does a vehicle
     ``double_parked`` (by index): parked beside the parked cars, it stands in the traffic lane, whatever
-    side of the road it is on. What swerves is no standing thing (:func:`_swerve_at`), and a vehicle
+    side of the road it is on. Of two standing, the one that swerves (:func:`_swerve_at`) moves, and a vehicle
     the ego follows (``followed``, by index) swerves out of the ego's lane, ahead, whatever side the
     lane it moves into gave it."""
     standing = [
         k
         for k, s in enumerate(specs)
-        if (motion.stops_in_the_lane(s, specs) or (k in double_parked and s.speed_mps == 0.0 and len(specs) > 1))
-        and _swerve_at(s) is None
+        if motion.stops_in_the_lane(s, specs) or (k in double_parked and s.speed_mps == 0.0 and len(specs) > 1)
     ]
+    still = [k for k in standing if _swerve_at(specs[k]) is None]  # (of two standing, the one that swerves moves)
+    standing = still or standing
     beside = [  # standing in a lane said by its side ("stood there in lane 1"): the ego's, if the lead left it
         k
         for k, s in enumerate(specs)
