@@ -29,10 +29,10 @@ def _behaviours(text: str) -> list[tuple[str, str | None, list[str]]]:
         "Lead vehicle swerves into the adjacent lane at TTC 2 s to a stationary object in ego lane (a dropped"
         " pallet). Ego at 110 km/h.",
         # what stands placed by the side of its lane: the lane the followed lead leaves
-        "Following a Prius at 50mph in lane 1, he suddenly swerves out into lane 2 and there's a broken-down"
-        " car in lane 1. Had about 20 metres to stop.",
-        "I was following a minibus in lane one doing 70 mph, it darted out into lane two and a cyclist had stopped"
-        " in lane one with a puncture.",
+        "Following a Prius at 50mph in the left lane, he suddenly swerves out into the right lane and there's"
+        " a broken-down car in the left lane. Had about 20 metres to stop.",
+        "I was following a minibus in the right lane doing 70 mph, it darted out into the left lane and a"
+        " cyclist had stopped in the right lane with a puncture.",
         "Following a van in lane 2, the van moved into lane 1, and a car was broken down in lane 2.",
     ],
 )
@@ -69,6 +69,9 @@ def test_the_lead_keeps_no_standstill_of_what_it_reveals():
         # what stands is in the lane the lead moves into, not in the ego's
         "Following a lorry at 50 mph, it moved into the left lane; a car had stopped in the left lane.",
         "I was following a bus when it pulled into the right lane, where a taxi was stopped in the right lane.",
+        # into a lane said by number: which side it leaves is not read, so what stands may be in the new one
+        "Following a van at 50 mph, it moved over into lane 1, and a car had stopped in lane 1.",
+        "Following a van in lane 2, it moved into lane 1, where a car was broken down in lane 1.",
         # a vehicle beside the ego that is not followed may leave a lane that is not the ego's
         "A car in the left lane was stopped. The car ahead of me changed lanes.",
     ],

@@ -3285,11 +3285,12 @@ def _swerve_at(spec: ActorSpec) -> int | None:
 def _left_behind(cfg: dict, beside: list[int], specs: list[ActorSpec], followed: bool) -> int | None:
     """Of the road users ``beside`` (indices) that stand in a lane said by its side, the one in the lane
     a followed lead swerves out of (``cfg``: its move's config): the ego follows the lead, so that lane
-    is the ego's. One on the side the lead moves to stands in the lane it moves into, not in its way;
-    a lead the ego does not follow may leave a lane that is not the ego's."""
-    if not followed:
-        return None
+    is the ego's. One on the side the lead moves to stands in the lane it moves into, not in its way,
+    so the side it moves to must be read; a lead the ego does not follow may leave a lane that is not
+    the ego's."""
     to = {1.0: "left", -1.0: "right"}.get(float(cfg.get("direction", 0.0)))
+    if not followed or to is None:
+        return None  # (moved "into lane 2": which side it leaves is not read)
     return next((j for j in beside if specs[j].relation != to), None)
 
 
