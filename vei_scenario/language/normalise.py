@@ -586,6 +586,7 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     text = re.sub(r"^\s*(?:[-*\u2022\u00b7\u2013]|\d{1,2}[.)])\s+", "", text)
     text = re.sub(r"\s*\n\s*(?:(?:[-*\u2022\u00b7\u2013]|\d{1,2}[.)])\s+)?", ". ", text)
     text = re.sub(r"\s*\|\s*|\s+/\s+", ". ", text)  # fields between bars or spaced slashes: one a sentence
+    text = re.sub(r"[ ]*\t\s*", ". ", text.strip("\t"))  # (the cells of a row pasted from a sheet, as bars)
     # a spaced dash before a word ("light rain - delivery truck ...", "triggered 22:16 - lead vehicle"): a
     # break in the sentence, as a comma is (between numbers, "30 - 40 km/h", it is a range)
     text = re.sub(r"(?<=[^\W_])\s+[-\u2013\u2014]\s+(?=[^\W\d_])", ", ", text)
