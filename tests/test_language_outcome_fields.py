@@ -88,3 +88,49 @@ def test_a_denied_field_is_no_contact_made():
 )  # fmt: skip
 def test_a_scenario_rated_critical_states_critical(text, intent):
     assert _intent(text) == intent
+
+
+# an arrow in a note says what follows from what ("no braking -> impact"): a break, as a comma is, so
+# a negation before it does not reach past it
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("Van pulls out, sensor blind, no braking -> side impact with the van.", "collision"),
+        ("Pedestrian steps out => no reaction => collision", "collision"),
+        ("Cyclist cuts in \u2192 no AEB \u2192 crash", "collision"),
+        ("Scooter crosses -> ego brakes hard -> no contact", "near_miss"),
+        ("Car cuts in --> ego yields, no conflict", "safe"),
+    ],
+    ids=["arrow", "double-arrow", "unicode-arrow", "arrow-no-contact", "long-arrow"],
+)
+def test_an_arrow_ends_a_negation(text, intent):
+    assert _intent(text) == intent
+
+
+# a text message: an emoji ends its clause as punctuation would ("braked 😱 nobody hit")
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("bus pulled out right in front of me, slammed the brakes \U0001f631 nobody hit \U0001f64f", "near_miss"),
+        ("lorry cut across me \U0001f621 no contact tho", "near_miss"),
+        ("kid on a bike shot out \U0001f6b2 hit him \U0001f622 ambulance came", "collision"),
+        ("cyclist waited for me \U0001f44d no drama", "safe"),
+    ],
+    ids=["brakes-nobody-hit", "no-contact", "hit-him", "no-drama"],
+)
+def test_an_emoji_ends_its_clause(text, intent):
+    assert read(text).intent == intent
+
+
+# nobody harmed, said with its auxiliary ("no one got hurt", "no-one was injured"): no injury
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("A cyclist swerved across the road and no one got hurt.", "near_miss"),
+        ("The van swerved round a jogger; no-one was injured.", "near_miss"),
+        ("A moped ran the light and someone got hurt.", "collision"),
+    ],
+    ids=["no-one-got-hurt", "no-one-was-injured", "someone-got-hurt"],
+)
+def test_nobody_harmed_with_its_auxiliary(text, intent):
+    assert _intent(text) == intent

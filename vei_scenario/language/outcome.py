@@ -1105,7 +1105,27 @@ def _person_subject(words: list[str], i: int) -> bool:
         return False
     subject = words[max(0, k - 4) : k]
     return bool(subject) and any(
-        x in ("he", "she", "they", "everyone", "everybody", "nobody", "kid", "boy", "girl", "baby", "rider")
+        x
+        in (
+            "he",
+            "she",
+            "they",
+            "everyone",
+            "everybody",
+            "nobody",
+            "kid",
+            "boy",
+            "girl",
+            "baby",
+            "rider",
+            "one",
+            "no-one",
+            "noone",
+            "someone",
+            "somebody",
+            "anyone",
+            "anybody",
+        )
         or _road_user_word(x)
         for x in subject
     )
@@ -1114,6 +1134,8 @@ def _person_subject(words: list[str], i: int) -> bool:
 def _nobody_before(words: list[str], i: int) -> bool:
     """Whether the harm participle at ``i`` has a negative pronoun right before it ("nobody hurt",
     "no one injured", "no-one hurt"): no one was harmed, the auxiliary left out as reports do."""
+    if i > 1 and words[i - 1] in _PASSIVE_AUX:
+        i -= 1  # ("no-one was injured", "nobody got hurt": the auxiliary said)
     return i > 0 and (words[i - 1] in ("nobody", "no-one", "noone") or words[i - 2 : i] == ["no", "one"])
 
 
