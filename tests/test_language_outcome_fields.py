@@ -134,3 +134,35 @@ def test_an_emoji_ends_its_clause(text, intent):
 )
 def test_nobody_harmed_with_its_auxiliary(text, intent):
     assert _intent(text) == intent
+
+
+# a compound verb of contact written as two words ("rear ended", "T boned"), as a note or a message
+# writes it: the verb it is; "the rear end of the van" stays a noun
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("a taxi rear ended me at the lights", "collision"),
+        ("lorry stopped dead, rear ended it at 20mph", "collision"),
+        ("we got T boned by a car at the junction", "collision"),
+        ("I was rear ended by a van on the ring road", "collision"),
+        ("I nearly rear ended the bus", "near_miss"),
+        ("the van's rear end was sticking out into my lane when a cyclist passed", None),
+        ("a cyclist came past the rear ends of the cars in a queue", None),
+    ],
+    ids=["rear-ended-me", "rear-ended-it", "t-boned", "passive", "nearly", "rear-end-noun", "rear-ends-noun"],
+)
+def test_a_compound_contact_verb_in_two_words(text, intent):
+    assert _intent(text) == intent
+
+
+@pytest.mark.parametrize(
+    "text, kept",
+    [
+        ("scooter crossing L->R at 15 km/h", "from the left at"),
+        ("pedestrian walks left -> right", "walks from the left"),
+        ("lead car slows 50 -> 30 km/h", "50 30 km/h"),
+    ],
+    ids=["l-r", "left-right", "numbers"],
+)
+def test_an_arrow_of_a_direction_or_a_change_of_value_is_no_break(text, kept):
+    assert kept in " ".join(_tokens(text))

@@ -584,10 +584,15 @@ _ARROW = re.compile(r"\s*(?:-+>|=+>|[\u2190-\u21ff\u27f6\u27f9])+\s*")
 
 def _arrow_break(m: re.Match) -> str:
     """An arrow as a clause break (", "), except between two numbers ("slows 50 -> 30 km/h": a change
-    of value, kept as it was written)."""
+    of value) or two letters or sides ("crossing L->R", "left -> right": a direction, read as such below):
+    kept as written."""
     text, start, end = m.string, m.start(), m.end()
-    between_numbers = start > 0 and text[start - 1].isdigit() and end < len(text) and text[end].isdigit()
-    return m.group(0) if between_numbers else ", "
+    before = re.search(r"(\w+)\W*$", text[:start])
+    after = re.match(r"\W*(\w+)", text[end:])
+    short = (before is not None and len(before.group(1)) == 1) or (after is not None and len(after.group(1)) == 1)
+    numbers = before is not None and after is not None and before.group(1).isdigit() and after.group(1).isdigit()
+    sides = before is not None and after is not None and {before.group(1), after.group(1)} <= {"left", "right"}
+    return m.group(0) if short or numbers or sides else ", "
 
 
 def normalise(text: str, known_noun=lambda phrase: None) -> str:

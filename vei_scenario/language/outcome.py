@@ -365,6 +365,8 @@ def _is_contact(words: list[str], i: int) -> bool:
         return True  # ("caught my front bumper", "nicked the wing mirror of the taxi")
     if lem & _TOUCHING and _is_verb(w) and _touched_with_a_part(words, i):
         return True  # ("caught it with my knee", "nicked me with its trailer")
+    if prev in _COMPOUND_FIRST and _COMPOUND_FIRST[prev] in _lemmas(w) and _compound_verb(words, i):
+        return _meets_road_user(_object_of(words, i))  # ("rear ended me", "got T boned by a van")
     if w == "bender" and prev == "fender":
         return True  # ("a fender bender")
     if lem & _STRIKING and _is_verb(w) and _struck_object(words[i + 1 : i + 6]):
@@ -404,6 +406,21 @@ def _is_contact(words: list[str], i: int) -> bool:
         if lem & {"throw", "fling", "launch", "toss"} and j < len(words) and words[j] in ("onto", "over"):
             return True  # ("was thrown onto the bonnet": it was hit)
     return False
+
+
+#: Verbs of contact compounded of a noun and a verb, by their first word, when written as two words
+#: ("rear ended", "T boned"); the closed class of English's compound verbs of a collision.
+_COMPOUND_FIRST = {"rear": "end", "t": "bone", "side": "swipe"}
+
+
+def _compound_verb(words: list[str], i: int) -> bool:
+    """Whether the second word of a two-word compound at ``i`` is a verb: inflected ("rear ended",
+    "T boned") or before its object ("rear end the bus"); "the rear end of the van" and "the rear ends
+    of the cars" are nouns."""
+    nxt = words[i + 1] if i + 1 < len(words) else ""
+    if words[i].endswith("ed"):
+        return True
+    return nxt in _PERSON_OBJECTS | _DETERMINERS | _POSSESSIVES and (i < 2 or words[i - 2] not in _DETERMINERS)
 
 
 #: Words before a verb that make a noun-verb homograph a verb ("I hit", "to strike", "did not tap").
