@@ -166,3 +166,19 @@ def test_a_compound_contact_verb_in_two_words(text, intent):
 )
 def test_an_arrow_of_a_direction_or_a_change_of_value_is_no_break(text, kept):
     assert kept in " ".join(_tokens(text))
+
+
+@pytest.mark.parametrize(
+    "text, broken",
+    [
+        ("slammed the brakes \U0001f631 nobody hit", True),
+        ("cut right in front \U0001f633\U0001f6f4 then braked", True),
+        ("a lady with a pram \U0001f6bc crossed from the left", False),
+        ("the bus \U0001f68c pulled out", False),
+    ],
+    ids=["face", "face-and-thing", "thing", "vehicle"],
+)
+def test_only_an_emoji_of_a_feeling_ends_a_clause(text, broken):
+    from vei_scenario.language.scene import only_the_scene
+
+    assert ("," in only_the_scene(text, lambda part: True)[0]) is broken
