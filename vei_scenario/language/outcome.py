@@ -1,4 +1,5 @@
-"""The outcome a description states (its intent: ``collision``, ``near_miss`` or ``safe``), read from
+"""The outcome a description states (its intent: ``collision``, ``near_miss`` or ``safe``; ``critical``
+where a test rates its scenario so), read from
 the structure of its clauses rather than from a list of phrases.
 
 People state an outcome in three ways, and each is a construction, not a set of words:
@@ -1067,7 +1068,7 @@ class Cue:
     """One statement of the outcome found in a clause: what it says (``contact``, ``hedged``,
     ``denied``, ``required``: a contact denied as what the test requires, ``near``, ``close``,
     ``safe``, ``lucky``: relief at luck, ``late``: the other seen late, ``unforced``: an escape not
-    needed, ``evade``, ``brake``, ``yield``) and the words it was
+    needed, ``evade``, ``brake``, ``yield``, ``critical``: the scenario rated so) and the words it was
     read from, so a reading can say why it chose its intent."""
 
     kind: str
@@ -1752,7 +1753,8 @@ def _hindsight(words: list[str], i: int) -> bool:
 
 
 def decide(cues: list[Cue], sudden: bool = False, intruded: bool = False) -> str | None:
-    """The intent the cues state. A contact anywhere is a collision; a hedge, a miss, a small margin
+    """The intent the cues state. A scenario a test rates critical is ``critical``, whatever else
+    is said; otherwise a contact anywhere is a collision; a hedge, a miss, a small margin
     or a close call a near miss; then a stated safe pass; a denied contact is a near miss unless the
     ego only gave way; the ego's evasion alone a near miss, its giving way alone a safe pass.
     ``sudden``: a road user's act is said to be sudden ("shot out", "suddenly swerved"); then the
