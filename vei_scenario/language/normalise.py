@@ -578,6 +578,23 @@ def _side_put_right(m: re.Match) -> str:
     return f"{prep}{owner}{m.group(5)}"
 
 
+#: Arrows ("->", "=>", "-->", "\u2192"), with the spaces around them: a note's "what follows from it".
+_ARROW = re.compile(r"\s*(?:-+>|=+>|[\u2190-\u21ff\u27f6\u27f9])+\s*")
+
+
+def _arrow_break(m: re.Match) -> str:
+    """An arrow as a clause break (", "), except between two numbers ("slows 50 -> 30 km/h": a change
+    of value) or two letters or sides ("crossing L->R", "left -> right": a direction, read as such below):
+    kept as written."""
+    text, start, end = m.string, m.start(), m.end()
+    before = re.search(r"(\w+)\W*$", text[:start])
+    after = re.match(r"\W*(\w+)", text[end:])
+    short = (before is not None and len(before.group(1)) == 1) or (after is not None and len(after.group(1)) == 1)
+    numbers = before is not None and after is not None and before.group(1).isdigit() and after.group(1).isdigit()
+    sides = before is not None and after is not None and {before.group(1), after.group(1)} <= {"left", "right"}
+    return m.group(0) if short or numbers or sides else ", "
+
+
 def normalise(text: str, known_noun=lambda phrase: None) -> str:
     """``text`` (lowercased) with numbers in words, units, and the parties of a statement said the
     way the reader reads them. ``known_noun(phrase)`` returns the road-user noun a phrase ends in,
@@ -586,6 +603,10 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     text = re.sub(r"^\s*(?:[-*\u2022\u00b7\u2013]|\d{1,2}[.)])\s+", "", text)
     text = re.sub(r"\s*\n\s*(?:(?:[-*\u2022\u00b7\u2013]|\d{1,2}[.)])\s+)?", ". ", text)
     text = re.sub(r"\s*\|\s*|\s+/\s+", ". ", text)  # fields between bars or spaced slashes: one a sentence
+    text = re.sub(r"[ ]*\t\s*", ". ", text.strip("\t"))  # (the cells of a row pasted from a sheet, as bars)
+    # an arrow of a note ("no braking -> impact") ends a clause as a comma does: what stands before it
+    # does not govern what follows
+    text = _ARROW.sub(_arrow_break, text)
     # a spaced dash before a word ("light rain - delivery truck ...", "triggered 22:16 - lead vehicle"): a
     # break in the sentence, as a comma is (between numbers, "30 - 40 km/h", it is a range)
     text = re.sub(r"(?<=[^\W_])\s+[-\u2013\u2014]\s+(?=[^\W\d_])", ", ", text)

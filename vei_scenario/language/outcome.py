@@ -1,4 +1,5 @@
-"""The outcome a description states (its intent: ``collision``, ``near_miss`` or ``safe``), read from
+"""The outcome a description states (its intent: ``collision``, ``near_miss`` or ``safe``; ``critical``
+where a test rates its scenario so), read from
 the structure of its clauses rather than from a list of phrases.
 
 People state an outcome in three ways, and each is a construction, not a set of words:
@@ -33,7 +34,7 @@ from vei_scenario.language import vocabulary as V
 from vei_scenario.language.clauses import split
 from vei_scenario.language.lemmas import lemmas
 
-COLLISION, NEAR_MISS, SAFE = "collision", "near_miss", "safe"
+COLLISION, NEAR_MISS, SAFE, CRITICAL = "collision", "near_miss", "safe", "critical"
 
 #: What ends a clause, and with it the scope of a negation or a hedge.
 _BREAK_PUNCT = frozenset(".;!?:,")
@@ -365,6 +366,8 @@ def _is_contact(words: list[str], i: int) -> bool:
         return True  # ("caught my front bumper", "nicked the wing mirror of the taxi")
     if lem & _TOUCHING and _is_verb(w) and _touched_with_a_part(words, i):
         return True  # ("caught it with my knee", "nicked me with its trailer")
+    if prev in _COMPOUND_FIRST and _COMPOUND_FIRST[prev] in _lemmas(w) and _compound_verb(words, i):
+        return _meets_road_user(_object_of(words, i))  # ("rear ended me", "got T boned by a van")
     if w == "bender" and prev == "fender":
         return True  # ("a fender bender")
     if lem & _STRIKING and _is_verb(w) and _struck_object(words[i + 1 : i + 6]):
@@ -404,6 +407,21 @@ def _is_contact(words: list[str], i: int) -> bool:
         if lem & {"throw", "fling", "launch", "toss"} and j < len(words) and words[j] in ("onto", "over"):
             return True  # ("was thrown onto the bonnet": it was hit)
     return False
+
+
+#: Verbs of contact compounded of a noun and a verb, by their first word, when written as two words
+#: ("rear ended", "T boned"); the closed class of English's compound verbs of a collision.
+_COMPOUND_FIRST = {"rear": "end", "t": "bone", "side": "swipe"}
+
+
+def _compound_verb(words: list[str], i: int) -> bool:
+    """Whether the second word of a two-word compound at ``i`` is a verb: inflected ("rear ended",
+    "T boned") or before its object ("rear end the bus"); "the rear end of the van" and "the rear ends
+    of the cars" are nouns."""
+    nxt = words[i + 1] if i + 1 < len(words) else ""
+    if words[i].endswith("ed"):
+        return True
+    return nxt in _PERSON_OBJECTS | _DETERMINERS | _POSSESSIVES and (i < 2 or words[i - 2] not in _DETERMINERS)
 
 
 #: Words before a verb that make a noun-verb homograph a verb ("I hit", "to strike", "did not tap").
@@ -1050,7 +1068,7 @@ class Cue:
     """One statement of the outcome found in a clause: what it says (``contact``, ``hedged``,
     ``denied``, ``required``: a contact denied as what the test requires, ``near``, ``close``,
     ``safe``, ``lucky``: relief at luck, ``late``: the other seen late, ``unforced``: an escape not
-    needed, ``evade``, ``brake``, ``yield``) and the words it was
+    needed, ``evade``, ``brake``, ``yield``, ``critical``: the scenario rated so) and the words it was
     read from, so a reading can say why it chose its intent."""
 
     kind: str
@@ -1105,7 +1123,27 @@ def _person_subject(words: list[str], i: int) -> bool:
         return False
     subject = words[max(0, k - 4) : k]
     return bool(subject) and any(
-        x in ("he", "she", "they", "everyone", "everybody", "nobody", "kid", "boy", "girl", "baby", "rider")
+        x
+        in (
+            "he",
+            "she",
+            "they",
+            "everyone",
+            "everybody",
+            "nobody",
+            "kid",
+            "boy",
+            "girl",
+            "baby",
+            "rider",
+            "one",
+            "no-one",
+            "noone",
+            "someone",
+            "somebody",
+            "anyone",
+            "anybody",
+        )
         or _road_user_word(x)
         for x in subject
     )
@@ -1114,6 +1152,8 @@ def _person_subject(words: list[str], i: int) -> bool:
 def _nobody_before(words: list[str], i: int) -> bool:
     """Whether the harm participle at ``i`` has a negative pronoun right before it ("nobody hurt",
     "no one injured", "no-one hurt"): no one was harmed, the auxiliary left out as reports do."""
+    if i > 1 and words[i - 1] in _PASSIVE_AUX:
+        i -= 1  # ("no-one was injured", "nobody got hurt": the auxiliary said)
     return i > 0 and (words[i - 1] in ("nobody", "no-one", "noone") or words[i - 2 : i] == ["no", "one"])
 
 
@@ -1415,6 +1455,81 @@ def _contact_kind(words: list[str], i: int, clause: _Clause, sentence: list[str]
     return "contact"
 
 
+#: The answers of a form's field that deny what its label names ("Contact: none", "Collision: N").
+_NO_VALUES = frozenset(("no", "none", "nil", "n", "0", "false", "zero", "nope", "negative", "nothing"))
+#: Quantity words that, right before a noun of contact, count none of it ("zero contact", "0 collisions").
+_NONE_OF = frozenset(("zero", "0", "nil"))
+#: What ends a field's value: the end of its sentence or of its field.
+_FIELD_ENDS = frozenset(".;!?,")
+
+
+def _field_noun(w: str) -> bool:
+    """Whether ``w`` is a noun of contact or of harm, the label of a form's field of the outcome
+    ("Collision", "Contacts", "Injuries")."""
+    return w in _CONTACT_NOUNS | _HARM_NOUNS or (w.endswith("s") and w[:-1] in _CONTACT_NOUNS)
+
+
+def _fields_answered(tokens: list[str]) -> list[str]:
+    """``tokens`` with a field that denies its contact said as a negation, word for word in place:
+    "contact : none ." as "no contact . .", "0 collisions" as "no collisions". A form answers its
+    field with a bare value after the colon, which the clauses would otherwise read apart (and "contact"
+    alone as a contact). Only a value that ends its field is an answer ("collision : n a" is not
+    applicable); a label that is a compound's first noun stays what it was ("collision warning : none")."""
+    out = list(tokens)
+    for k, w in enumerate(tokens):
+        if not _field_noun(w):
+            continue
+        end = tokens[k + 3] if k + 3 < len(tokens) else "."
+        if (
+            tokens[k + 1 : k + 2] == [":"]
+            and k + 2 < len(tokens)
+            and tokens[k + 2] in _NO_VALUES
+            and end in _FIELD_ENDS
+        ):
+            out[k : k + 3] = ["no", w, "."]  # ("Contact: none.", "collision: no")
+        elif k > 0 and tokens[k - 1] in _NONE_OF:
+            out[k - 1] = "no"  # ("zero contact", "0 collisions in 20 runs")
+    return out
+
+
+#: The labels of a field that rates the scenario as a whole ("Result: critical", "Criticality: high").
+_VERDICT_LABELS = frozenset(
+    ("result", "outcome", "expected", "expectation", "verdict", "intent", "class", "classification", "category",
+     "criticality", "rating", "assessment", "rated")
+)  # fmt: skip
+#: What a test rates: "the scenario is critical", "this case is highly critical".
+_RATED = frozenset(("scenario", "case", "test", "run", "manoeuvre", "maneuver", "event"))
+#: Degree adverbs between a copula and "critical" ("is highly critical", "deemed safety-critical").
+_CRITICAL_DEGREE = frozenset(("highly", "very", "really", "so", "quite", "extremely", "considered", "deemed", "rated",
+                              "classed"))  # fmt: skip
+
+
+def _rated_critical(tokens: list[str]) -> bool:
+    """Whether the text rates its scenario critical, the class a test row or a requirement states: a
+    cell or a sentence of its own ("| Critical |", "Critical."), the value of a verdict's field
+    ("Result: critical"), the predicate of the scenario or the case ("the scenario is critical by
+    construction"), or the label of one ("Critical scenario: ..."). Not "critical" said of something
+    else ("in critical condition", "the critical moment", "it is critical that"), denied ("not
+    critical") or a field's label answered ("Critical: no")."""
+    for k, w in enumerate(tokens):
+        if w != "critical":
+            continue
+        prev = tokens[k - 1] if k > 0 else "."
+        nxt = tokens[k + 1] if k + 1 < len(tokens) else "."
+        if nxt in _FIELD_ENDS and (
+            prev in _FIELD_ENDS or (prev == ":" and tokens[k - 2 : k - 1] and tokens[k - 2] in _VERDICT_LABELS)
+        ):
+            return True  # ("| Critical |", "Result: critical.")
+        if nxt in ("scenario", "case") and tokens[k + 2 : k + 3] in ([":"], ["."], [","], []):
+            return True  # ("Critical scenario: ...", "This is a critical case.")
+        j = k - 1
+        while j >= 0 and tokens[j] in _CRITICAL_DEGREE:
+            j -= 1
+        if j >= 1 and tokens[j] in _COPULA and tokens[j - 1] in _RATED and nxt not in ("that", "to", "for"):
+            return True  # ("the scenario is critical by construction")
+    return False
+
+
 def contacts_made(tokens: list[str]) -> list[int]:
     """The indices of the words of ``tokens`` (the reader's lowercased tokens) that state a contact
     between road users that happened: a verb or noun of contact whose object is a road user (not "hit
@@ -1424,6 +1539,7 @@ def contacts_made(tokens: list[str]) -> list[int]:
     out: list[int] = []
     cursor = 0
     sentence: list[str] = []
+    tokens = _fields_answered(tokens)
     for clause in _clauses(tokens):
         words = clause.words
         at = next((k for k in range(cursor, len(tokens)) if tokens[k : k + len(words)] == words), cursor)
@@ -1438,7 +1554,7 @@ def contacts_made(tokens: list[str]) -> list[int]:
 def outcome_cues(said: str) -> list[Cue]:
     """The statements of the outcome in ``said`` (the reader's normalised, lowercased tokens joined by
     spaces, contractions as "did not"), in text order."""
-    tokens = said.split()
+    tokens = _fields_answered(said.split())
     story = bool({"i", "we", "me", "my", "us", "our"} & set(tokens))
     cues: list[Cue] = []
     previous: str | None = None
@@ -1615,6 +1731,8 @@ def outcome_cues(said: str) -> list[Cue]:
                     add("evade")  # ("dived into the outside lane to avoid him")
                 elif not (_modal_perfect(words, i) or clause.after_if):
                     add("contact")  # ("couldn't avoid him", "was unable to avoid her": two denials)
+    if _rated_critical(tokens):
+        cues.append(Cue("critical", "critical"))  # (the class a test states for its scenario)
     return cues
 
 
@@ -1635,7 +1753,8 @@ def _hindsight(words: list[str], i: int) -> bool:
 
 
 def decide(cues: list[Cue], sudden: bool = False, intruded: bool = False) -> str | None:
-    """The intent the cues state. A contact anywhere is a collision; a hedge, a miss, a small margin
+    """The intent the cues state. A scenario a test rates critical is ``critical``, whatever else
+    is said; otherwise a contact anywhere is a collision; a hedge, a miss, a small margin
     or a close call a near miss; then a stated safe pass; a denied contact is a near miss unless the
     ego only gave way; the ego's evasion alone a near miss, its giving way alone a safe pass.
     ``sudden``: a road user's act is said to be sudden ("shot out", "suddenly swerved"); then the
@@ -1646,6 +1765,8 @@ def decide(cues: list[Cue], sudden: bool = False, intruded: bool = False) -> str
     then the ego's brake (not a stop, which may be a wait), with nothing else said, is what that forced
     on it ("he cut across in front of me. I braked, he went"): a near miss."""
     kinds = {c.kind for c in cues}
+    if "critical" in kinds:
+        return CRITICAL  # (a test's own rating of its scenario, over what its wording suggests)
     if "unharmed" in kinds:  # (nobody hurt, nothing happened: how it ended, not how close it was)
         kinds.discard("unharmed")
         forced = sudden or kinds & {"evade", "brake"}

@@ -134,7 +134,7 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
         nodes = []
         first_cfg: dict = {}
         for idx, (bname, given, crit, link) in enumerate(behaviours):
-            if crit is None and intent in ("near_miss", "collision"):
+            if crit is None and intent in ("near_miss", "collision", "critical"):
                 crit = "dangerous"
             elif crit is None and intent == "safe":
                 crit = "safe"

@@ -29,6 +29,20 @@ _SECOND = re.compile(_OPTION.format("[Bb2]"))
 _THREAD = re.compile(r"(?m)^\s*\d{1,2}/(?=\s)")
 _HASHTAG = re.compile(r"#[A-Za-z]\w*")
 _PICTOGRAPH = re.compile("[\u2600-\u27bf\U0001f000-\U0001faff\ufe0f\u200d]")
+#: The emoji of a feeling or a gesture (faces, hands): a writer's comment on what they follow, as "lol" is.
+_FEELING = "[\U0001f600-\U0001f64f\U0001f910-\U0001f92f\U0001f970-\U0001f97f\U0001f44a-\U0001f450\u2639\u263a]"
+#: A run of pictographs with a feeling's between two words of a message: the comment ends the clause
+#: before it, as a comma does. A pictograph of a thing alone ("a lady with a stroller \U0001f6bc crossed")
+#: stands for the word it follows and ends nothing.
+_PICTOGRAPH_BETWEEN = re.compile(
+    r"(?<=\w)[ \t]*(?:"
+    + _PICTOGRAPH.pattern
+    + r"[ \t]*)*"
+    + _FEELING
+    + r"(?:[ \t]*"
+    + _PICTOGRAPH.pattern
+    + r")*[ \t]*(?=\w)"
+)
 #: What only the scene has: a number (a speed, a gap, a clock time) or the ego named as such. A question
 #: with one asks for the scene ("Can the ego be doing 50 km/h?").
 _OF_THE_SCENE = re.compile(r"\d|\bego\b", re.IGNORECASE)
@@ -124,6 +138,7 @@ def only_the_scene(text: str, names_road_user: Callable[[str], object]) -> tuple
     ``names_road_user(phrase)`` is truthy when the phrase names a road user; a question or an option
     list that names none is not the scene, and the scene must keep at least one if the text has one."""
     aside: list[str] = []
+    text = _PICTOGRAPH_BETWEEN.sub(", ", text)  # (a feeling between words ends a clause: "braked 😱 nobody hit")
     text = _PICTOGRAPH.sub(" ", text)
     text = _THREAD.sub(" ", text)
     for tag in _HASHTAG.findall(text):
