@@ -82,9 +82,11 @@ def test_a_denied_field_is_no_contact_made():
         ("The scenario is not critical: a cyclist rides along the kerb.", None),
         ("Truck overtakes. Severity: critical. Contact: yes.", "collision"),
         ("The critical moment came when the bus pulled out in front of me.", None),
+        # a contact is what happened: it outranks a rating of how close it came
+        ("Ped steps out from behind a bus | ego 40 km/h | Critical | impact at 25 km/h", "collision"),
     ],
     ids=["tab-cell", "bar-cell", "result", "criticality", "scenario-is", "case-is", "label", "critical-no",
-         "condition", "critical-that", "not-critical", "severity", "moment"],
+         "condition", "critical-that", "not-critical", "severity", "moment", "rated-but-hit"],
 )  # fmt: skip
 def test_a_scenario_rated_critical_states_critical(text, intent):
     assert _intent(text) == intent

@@ -1754,7 +1754,8 @@ def _hindsight(words: list[str], i: int) -> bool:
 
 def decide(cues: list[Cue], sudden: bool = False, intruded: bool = False) -> str | None:
     """The intent the cues state. A scenario a test rates critical is ``critical``, whatever else
-    is said; otherwise a contact anywhere is a collision; a hedge, a miss, a small margin
+    is said but a contact (a contact is what happened, a rating only how close it came); otherwise a
+    contact anywhere is a collision; a hedge, a miss, a small margin
     or a close call a near miss; then a stated safe pass; a denied contact is a near miss unless the
     ego only gave way; the ego's evasion alone a near miss, its giving way alone a safe pass.
     ``sudden``: a road user's act is said to be sudden ("shot out", "suddenly swerved"); then the
@@ -1765,7 +1766,7 @@ def decide(cues: list[Cue], sudden: bool = False, intruded: bool = False) -> str
     then the ego's brake (not a stop, which may be a wait), with nothing else said, is what that forced
     on it ("he cut across in front of me. I braked, he went"): a near miss."""
     kinds = {c.kind for c in cues}
-    if "critical" in kinds:
+    if "critical" in kinds and "contact" not in kinds:
         return CRITICAL  # (a test's own rating of its scenario, over what its wording suggests)
     if "unharmed" in kinds:  # (nobody hurt, nothing happened: how it ended, not how close it was)
         kinds.discard("unharmed")
