@@ -315,3 +315,41 @@ def test_two_speeds_with_a_slash_are_the_egos_and_the_targets_not_a_range():
 def test_a_sentence_without_subject_of_following_keeps_the_speed_to_the_one_followed():
     r = read("Followed a bus at 30 mph for a mile, then a cyclist pulled out in front of me.")
     assert r.actors[0].speed_mps == pytest.approx(30 * 0.44704)
+
+
+# --- "..., hit him at 20 mph": a road user as the object of the verb its speed is said with -----------------
+# A road user is not the object of its own verb ("hit him", "rear-ended it": "himself" would be), so where the
+# verb's subject is left out after the road user's own clause, the one who hits is the narrator, and the
+# speed said with the verb is theirs, not that of the road user named last.
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("kid on a bike shot out of a driveway on my left, hit him at 25 km/h, he is ok", 25),
+        ("lorry stopped dead in front of me and rear-ended it at about 30 mph", 48.3),
+        ("A pedestrian stepped off the kerb right in front of us, clipped her at roughly 20 km/h.", 20),
+        ("e-scooter came out of a side street in front of me, t-boned him doing 40 km/h", 40),
+        ("Cyclist wobbled into my lane then struck him at around 15 mph", 24.1),
+        ("motorbike cut across in front of the ego; ego hit it at 35 km/h.", 35),
+    ],
+    ids=["text-message", "rear-ended", "report-clipped", "t-boned-doing", "voice-note", "test-spec"],
+)
+def test_a_speed_said_with_a_road_users_own_object_pronoun_is_the_egos(text, kph):
+    assert ego_kph(text) == pytest.approx(kph, abs=0.2)
+
+
+@pytest.mark.parametrize(
+    "text, other_kph",
+    [
+        ("A cyclist flew past me, saw him doing 35 km/h down the hill.", 35),
+        ("A van sped through the village and the police clocked it at 50 mph.", 80.5),
+        ("A van came up behind a cyclist and hit him at 30 km/h while I watched.", 30),
+        ("A van swerved round a pedestrian in front of me and hit him at 30 km/h.", 30),
+        ("A lorry overtook me, then I followed it at 60 km/h for a while.", None),
+    ],
+    ids=["saw-him-doing", "clocked-it", "another-subject", "another-object", "followed-it"],
+)
+def test_a_speed_after_an_object_pronoun_stays_off_the_ego_where_it_is_the_road_users(text, other_kph):
+    if other_kph is None:  # (following: the speed of both, as the reader's reading of following has it)
+        assert ego_kph(text) == pytest.approx(60, abs=0.2)
+    else:
+        assert ego_kph(text) != pytest.approx(other_kph, abs=0.2)
