@@ -353,3 +353,33 @@ def test_a_speed_after_an_object_pronoun_stays_off_the_ego_where_it_is_the_road_
         assert ego_kph(text) == pytest.approx(60, abs=0.2)
     else:
         assert ego_kph(text) != pytest.approx(other_kph, abs=0.2)
+
+
+# --- the ego said to stand: British "was stood", and "he"/"she" of a story told in the third person -------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "We were stood at the lights and a cyclist came past us on the inside and cut across in front.",
+        "I was stood at the bus stop, a scooter came by on the offside and swung across the front of the bus.",
+        "She had stopped for the zebra, and a scooter came past her on the right and shot across.",
+        "He was stopped at the red and a lorry just rolled into the back of him.",
+        "He was stood at the junction when a scooter came past him on the left.",
+        "She was waiting at the give way line when an e-bike cut the corner in front of her.",
+    ],
+    ids=["we-were-stood", "i-was-stood", "she-had-stopped", "he-was-stopped", "he-was-stood", "she-was-waiting"],
+)
+def test_the_ego_said_to_stand_is_at_rest(text):
+    assert ego_kph(text) == 0
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I stood on the brakes as a cyclist came past me and cut in.",
+        "She was stopped at the lights when I came round the corner and a van hit her.",
+        "A cyclist came past. He was stopped at the lights.",
+    ],
+    ids=["stood-on-the-brakes", "she-is-another-with-a-narrator", "he-is-the-cyclist"],
+)
+def test_standing_said_as_an_act_or_of_another_is_not_the_ego_at_rest(text):
+    assert ego_kph(text) != 0
