@@ -383,3 +383,30 @@ def test_the_ego_said_to_stand_is_at_rest(text):
 )
 def test_standing_said_as_an_act_or_of_another_is_not_the_ego_at_rest(text):
     assert ego_kph(text) != 0
+
+
+# --- a British numbered road written as one word: a bare speed there is in mph -----------------------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("A46 towards Newark, the dual bit. I'm in lane one at about 60 when a van cuts in.", 96.6),
+        ("a38 northbound, me doing 50, lorry pulls out into lane two in front of me", 80.5),
+        ("Going through the lights (A3/Station Rd) at 30 when a scooter ran the red.", 48.3),
+        ("Driving on A14 at about 50 and a car from the right lane cut in and braked.", 80.5),
+    ],
+    ids=["a-road-opens", "a-road-lowercase", "a-road-in-brackets", "no-article"],
+)
+def test_a_bare_speed_on_a_numbered_british_road_is_in_mph(text, kph):
+    assert ego_kph(text) == pytest.approx(kph, abs=0.2)
+
+
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("My Audi A4 was doing about 60 when a van cut in front of me.", 60),
+        ("I was doing about 40 in a 40 zone when a cyclist swerved out in front of me.", 40),
+    ],
+    ids=["audi-a4", "article-a-40"],
+)
+def test_a_car_model_is_no_numbered_road(text, kph):
+    assert ego_kph(text) == pytest.approx(kph, abs=0.2)

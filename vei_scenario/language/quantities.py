@@ -526,6 +526,18 @@ _IMPERIAL_LENGTH = re.compile(
 )
 
 
+#: A numbered road of Britain written as one word ("A46", "m6", "B4521"): never the article "a" before a
+#: number ("a 40", "a 30 zone"), which has a space. Not a model after its make ("Audi A4", "BMW M3").
+_ROAD_NUMBER = re.compile(r"(?:^|(?<=[\s(/,;:]))(?P<make>(?:audi|bmw|mercedes|merc|benz|amg)\s+)?[amb]\d{1,4}\b")
+
+
+def road_number_written_whole(text: str) -> bool:
+    """Whether ``text`` (lowercased) names a numbered road of Britain written as one word ("A46 towards
+    Lincoln", "on m6 southbound"): a road of a country that signs miles per hour, where the tokens lose
+    the "a" of "A46" as an article at the start of a sentence or with no "the" before it."""
+    return any(not m.group("make") for m in _ROAD_NUMBER.finditer(text))
+
+
 def imperial_lengths(text: str) -> bool:
     """Whether ``text`` (lowercased) measures a length in feet or yards: a writer who does signs speeds
     in miles per hour, so a bare speed of theirs is in mph."""
