@@ -681,3 +681,31 @@ def cruise_setting(tokens: list[str], i: int) -> bool:
     if k < 0 or k == i - 1 or tokens[k] != "cruise":
         return False
     return not (k >= 1 and tokens[k - 1] == "on")
+
+
+#: Object pronouns: one right after a verb is what the verb acts on ("hit him", "rear-ended it").
+_OBJECT_PRONOUNS = frozenset({"him", "her", "it", "them"})
+#: Verbs (lemmas) whose object does what the words after it say: of seeing, of measuring, of letting
+#: ("saw him doing 35", "clocked it at 50 mph", "let her go at 20"): the speed is the object's own.
+_OBJECT_ACTS = frozenset(
+    {"see", "watch", "notice", "spot", "clock", "catch", "time", "measure", "film", "record", "hear", "find",
+     "get", "have", "let", "make", "keep", "leave", "want", "need", "help", "follow", "tail", "trail", "tailgate"}
+)  # fmt: skip
+#: Words between an object and the speed said of its verb's subject ("at an estimated", "doing about").
+_BEFORE_SPEED = _AT_HEDGES | _NOTE_HEDGES | {"doing", "going", "travelling", "traveling", "only", "just"}
+
+
+def after_a_verbs_object(tokens: list[str], i: int) -> bool:
+    """Whether the speed at ``i`` is said right after a verb and its object pronoun ("hit him at 20 mph",
+    "rear-ended it at about 30 mph", "t-boned him doing 40"): how fast the verb's subject went, not the
+    object. Not after a verb whose object does what follows ("saw him doing 35", "clocked it at 50",
+    "followed it at 60": the object's own speed, or both)."""
+    k = i - 1
+    while k >= 0 and tokens[k] in _BEFORE_SPEED:
+        k -= 1
+    if k < 1 or k == i - 1 or tokens[k] not in _OBJECT_PRONOUNS:
+        return False
+    verb = tokens[k - 1]
+    found = lemmas(verb)
+    verbs = set(found.get("VERB", ())) if found else ({verb[:-2]} if verb.endswith("ed") else set())
+    return bool(verbs) and not verbs & _OBJECT_ACTS

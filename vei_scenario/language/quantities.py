@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable
+from dataclasses import replace
 
 from vei_scenario.language import vocabulary as V
 from vei_scenario.language.lemmas import lemmas
@@ -525,6 +526,18 @@ _IMPERIAL_LENGTH = re.compile(
 )
 
 
+#: A numbered road of Britain written as one word ("A46", "m6", "B4521"): never the article "a" before a
+#: number ("a 40", "a 30 zone"), which has a space. Not a model after its make ("Audi A4", "BMW M3").
+_ROAD_NUMBER = re.compile(r"(?:^|(?<=[\s(/,;:]))(?P<make>(?:audi|bmw|mercedes|merc|benz|amg)\s+)?[amb]\d{1,4}\b")
+
+
+def road_number_written_whole(text: str) -> bool:
+    """Whether ``text`` (lowercased) names a numbered road of Britain written as one word ("A46 towards
+    Lincoln", "on m6 southbound"): a road of a country that signs miles per hour, where the tokens lose
+    the "a" of "A46" as an article at the start of a sentence or with no "the" before it."""
+    return any(not m.group("make") for m in _ROAD_NUMBER.finditer(text))
+
+
 def imperial_lengths(text: str) -> bool:
     """Whether ``text`` (lowercased) measures a length in feet or yards: a writer who does signs speeds
     in miles per hour, so a bare speed of theirs is in mph."""
@@ -901,13 +914,15 @@ def ego_at_rest(clauses) -> bool:
             if m.slot == "behaviour" and other:  # (what the ego did before it stood is no one acting on it)
                 acted = True
             stop = m.slot == "behaviour" and m.value[0] == "stop" and _stop_as_state(m)
-            still = m.words in STILL_WORDS  # ("was stationary", "were waiting at the lights")
+            still = m.words in STILL_WORDS or m.words in _STANDING  # ("was stationary", "we were stood at the lights")
             denied = _motion_denied(m, said[k + 1 : k + 2])  # ("we weren't moving", "I was not driving")
             if not k or not (stop or denied or (still and m.slot in ("stationary", "unknown_verb"))):
                 continue  # ("was stationary", "were stopped at the junction": a state)
             ego = said[k - 1]
             if _it_the_egos_vehicle(ego, subject):
                 ego = subject  # ("My car got hit while it was parked": the car, said again)
+            if not other and _protagonist(ego, clauses):
+                ego = replace(ego, slot="actor", value="ego")  # ("She had stopped for the zebra when ...")
             if (
                 ego.slot == "actor"
                 and ego.value == "ego"
@@ -923,6 +938,20 @@ def ego_at_rest(clauses) -> bool:
 _SUBJECT_BEFORE = frozenset({"", ".", ";", ":", ",", "!", "?", "and", "but", "then", "while", "whilst", "when", "as"})
 #: The ego said as the person who tells the story: "it" never says them again.
 _EGO_AS_PERSON = frozenset({"i", "we", "me", "us"})
+
+
+#: Pronouns of one person: "he" or "she" said before any road user is the one a story is about.
+_PERSON = frozenset({"he", "she"})
+
+
+def _protagonist(pronoun, clauses) -> bool:
+    """Whether the mention ``pronoun`` is "he" or "she" said of the one a story told in the third person is
+    about ("She had stopped for the zebra when a scooter ...", "He was stood at the lights and ..."): the
+    caller asks only before any road user is named, and the text names no ego (no "I", "we", "you", no
+    ego phrase), so the person is the one driving, the ego."""
+    if pronoun.slot != "pronoun" or pronoun.words not in _PERSON:
+        return False
+    return not any(m.slot == "actor" and m.value == "ego" for _, mentions in clauses for m in mentions)
 
 
 def _it_the_egos_vehicle(pronoun, subject) -> bool:

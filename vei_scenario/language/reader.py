@@ -759,6 +759,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
     ignored: list[str] = [w for w in dropped if w not in FUNCTION_WORDS and w.isalpha()]
     left_hand, ring = sides.drives_on_left(tokens, text), "roundabout" in tokens
     imperial = Q.imperial_lengths(text.lower())  # ("ten feet ahead": a writer whose bare speeds are mph)
+    imperial = imperial or Q.road_number_written_whole(text.lower())  # ("A46 towards Lincoln": a British road)
 
     def ending_at(k: int) -> int | None:  # the start of the road-user mention whose last word is token k
         return next(
@@ -2324,6 +2325,10 @@ def _read(text: str) -> Reading:
                     own = m.slot == "speed" and any(x is who and k == "speed" for x, k, _ in said_of)
                     if own and r.ego_speed_mps is None and _next_to_ego(prev, m):
                         r.ego_speed_mps = m.value  # (its own said already: "... ahead of the ego at 50" is the ego's)
+                    elif r.ego_speed_mps is None and _its_own_object(
+                        m, who, clause_subject, named, scanned, first_person
+                    ):
+                        r.ego_speed_mps = m.value  # ("a kid shot out in front of me, hit him at 25": the narrator hit)
                     else:
                         _apply(m, who, r, link, added)
                     if isinstance(who, _Actor) and _in_front_of_the_ego(m, nxt, who.behaviours, mentions):
@@ -3550,6 +3555,24 @@ def _in_front_of_the_ego(m, nxt, behaviours: list, mentions: list) -> bool:
         return False
     lanes = (x for x in mentions if x.slot == "lane_side")
     return any(x.end <= m.start <= x.end + 1 or ego_end <= x.start <= ego_end + 2 for x in lanes)  # ("me in the")
+
+
+def _its_own_object(m, who, clause_subject, named, tokens: list[str], first_person: bool) -> bool:
+    """Whether speed ``m``, which the reading would give to ``who``, the subject of its clause and the
+    road user named last, is said after a verb and an object pronoun, which can then only be ``who`` ("a
+    scooter pulled out in front of me, hit him at 20 mph", "bus braked in front of me, rear-ended it at 15
+    mph"): no road user is the object of its own verb ("himself" would say so), so the verb's left-out
+    subject is the narrator, in a story told from the ego's side, and the speed theirs. Not where another
+    road user was named after ``who`` (``named``: who the clause has named, with their roles; the ego aside): the
+    pronoun may be that one ("a van swerved round a walker and hit him at 30": the van hit)."""
+    return (
+        m.slot == "speed"
+        and isinstance(who, _Actor)
+        and who is clause_subject
+        and next((x for x, _ in reversed(named) if isinstance(x, _Actor)), who) is who
+        and first_person
+        and ego_speed.after_a_verbs_object(tokens, m.start)
+    )
 
 
 def _next_to_ego(prev, m) -> bool:
