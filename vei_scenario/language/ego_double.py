@@ -14,8 +14,8 @@ has none, and a gap said of it is the gap to the one road user it meets. Two suc
 apart by this, and both stay. So does one that the words set apart from the ego: one brought into the
 story as new ("a car was going at 40": the ego, whose story it is, is never new to it), one someone is
 said to see ("my dad saw the car hit a cyclist"), one said only to stop while no one gets into its path
-("the bus was stopped at the stop": it may stand there; "the vehicle shall stop when a child runs out"
-is the ego stopping for the child), one slower or faster than the traffic ("overtook a slow-moving bus"), one
+("the bus was stopped at the stop": it may stand there; "a cyclist cut across and the vehicle came to
+a halt" is the ego stopping for the cyclist), one slower or faster than the traffic ("overtook a slow-moving bus"), one
 that does something to another road user, one the ego follows or passes, one named in a group or
 picked out of one, parked, standing or hiding someone. A text that calls the ego "the ego" has said
 which one it is, and no vehicle is taken for it. A third-person report that names no ego at all (no
@@ -126,12 +126,15 @@ def _placed(a: _Said) -> bool:
 
 
 def stops_for_someone(spec: ActorSpec, specs: list) -> bool:
-    """Whether road user ``spec``, said only to stop, stops for another of ``specs`` that gets into its
-    path ("the vehicle shall stop when a child runs out", "a cyclist cut across and the shuttle came to
-    a halt"): that is what the ego does in the story told from it. One that only stops while the others
-    go along or past it ("the bus was stopped when a cyclist rode into the back of it", "the lorry
-    stopped and a cyclist went up its inside") may be standing there, a road user of its own."""
-    return any(b[0] in _IN_THE_PATH for s in specs if s is not spec for b in s.behaviours)
+    """Whether road user ``spec``, said only to stop, stops for another of ``specs`` named before it
+    that gets into its path ("a cyclist cut across in front of it and the vehicle came to a halt"):
+    that is what the ego does in the story told from it, in the order it happens. One that only stops
+    while the others go along or past it ("the bus was stopped when a cyclist rode into the back of
+    it", "the lorry stopped and a cyclist went up its inside"), or that stops before anyone gets in
+    its way ("the bus stops at a bus stop and a pedestrian walks out in front of it": it stopped for
+    its own reason, and stands there) may be standing there, a road user of its own."""
+    earlier = specs[: next(k for k, s in enumerate(specs) if s is spec)]
+    return any(b[0] in _IN_THE_PATH for s in earlier for b in s.behaviours)
 
 
 def _double(a: _Said, spec: ActorSpec, others: list, unnamed: bool = False, specs: list = ()) -> bool:
