@@ -353,3 +353,25 @@ def test_the_vehicle_that_stops_for_someone_in_its_path_is_the_ego(text, kinds):
 )
 def test_a_vehicle_that_only_stops_with_nothing_in_its_path_stays_a_road_user(text, kinds):
     assert sorted(a.kind for a in read(text).actors) == sorted(kinds)
+
+
+@pytest.mark.parametrize(
+    ("text", "named"),
+    [
+        ("A pedestrian crosses 20 m ahead of the ego.", True),
+        ("The ego vehicle brakes for a cyclist.", True),
+        ("Ego at 50 km/h; a van cuts in.", True),
+        ("The ego's speed is 40 km/h and a child runs out.", True),
+        # "ego" as a modifier of what the ego has (its speed, its lane) names no road user apart from others
+        ("The vehicle shall stop when a child runs out, at an ego speed of 30 km/h.", False),
+        ("Ego velocity 40 km/h. The car brakes when a cyclist cuts in.", False),
+        ("The bus must stop for a man who crosses from the left; ego-speed 25 km/h.", False),
+    ],
+)
+def test_ego_as_the_name_of_a_road_user_not_of_its_speed(text, named):
+    assert ego_double.names_the_ego(text) is named
+
+
+def test_a_spec_that_gives_only_the_ego_s_speed_takes_the_stopping_vehicle_for_the_ego():
+    text = "A girl steps out from the left and the vehicle shall stop in time, at an ego speed of 20 km/h."
+    assert [a.kind for a in read(text).actors] == ["pedestrian"]

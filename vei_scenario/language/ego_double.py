@@ -113,10 +113,18 @@ def perceived(verb: str) -> bool:
     return verb in PERCEIVE or any(x in PERCEIVE for forms in lemmas(verb).values() for x in forms)
 
 
+#: What the ego has, said with "ego" as its modifier ("an ego speed of 30 km/h", "ego lane"): a closed
+#: class of the quantities and places a test spec gives the ego.
+_OF_THE_EGO = "speed|velocity|lane|route|path|heading|acceleration|deceleration|position|trajectory"
+#: "ego" naming the ego as one of the scene, not as the modifier of something it has.
+_EGO_NAMED = re.compile(rf"\bego\b(?![\s-]+(?:{_OF_THE_EGO})s?\b)", re.IGNORECASE)
+
+
 def names_the_ego(text: str) -> bool:
-    """Whether ``text`` calls the ego by that name ("... 20 m ahead of the ego"): it has said which one
-    the ego is, and no other vehicle is taken for it."""
-    return re.search(r"\bego\b", text, re.IGNORECASE) is not None
+    """Whether ``text`` calls the ego by that name ("... 20 m ahead of the ego", "the ego vehicle"): it
+    has said which one the ego is, and no other vehicle is taken for it. "ego" as the modifier of what
+    the ego has ("at an ego speed of 30 km/h", "ego lane") names no road user apart from the others."""
+    return _EGO_NAMED.search(text) is not None
 
 
 def _placed(a: _Said) -> bool:
