@@ -304,3 +304,74 @@ def test_both_that_the_words_set_apart_stays_two_road_users(text, kinds):
 def test_without_the_rule_both_would_be_two_more(monkeypatch):
     monkeypatch.setattr(ego_double, "drop_both_said_again", lambda actors, reading: actors)
     assert [len(read(text).actors) for text, _ in BOTH] == [3, 3, 3, 3, 3]
+
+
+#: The ego's vehicle said again as the one that stops for someone who gets into its path, in several
+#: registers (a test spec, a fleet note, a parent's post, a radio log, a trial report), none from a
+#: corpus: (wording, the road users it has).
+STOPS_FOR_SOMEONE = [
+    # a test specification: the vehicle under test stops for the child
+    ("A child runs out from the right and the vehicle shall stop without contact.", ["pedestrian"]),
+    # a Singaporean driver's text: the lorry said again stops for the uncle crossing
+    ("Lorry doing 40 lah then one uncle cross in front suddenly, the lorry stop just in time.", ["pedestrian"]),
+    # an operator's post: the shuttle said again as "the vehicle"
+    (
+        "Our shuttle was doing 18 km/h when a cyclist cut across in front of it and the vehicle came to a"
+        " halt well short.",
+        ["bicycle"],
+    ),
+    # a fleet note in Indian English: the truck brakes for a bike coming the wrong way
+    ("Our truck was going at 40 when one biker came wrong side and the truck stops in time.", ["bicycle"]),
+    # a trial report: the pod stops for a jaywalker
+    ("We were at 25 km/h when a man stepped off the kerb on the left and the pod stopped smoothly.", ["pedestrian"]),
+    # a dashcam log: the car stops when the van ahead brakes hard
+    ("Doing 50. The van in front slammed its brakes on and the car stops with room to spare.", ["van"]),
+]
+
+
+@pytest.mark.parametrize(("text", "kinds"), STOPS_FOR_SOMEONE)
+def test_the_vehicle_that_stops_for_someone_in_its_path_is_the_ego(text, kinds):
+    assert sorted(a.kind for a in read(text).actors) == sorted(kinds)
+
+
+@pytest.mark.parametrize(
+    ("text", "kinds"),
+    [
+        # the one stopping is hit from behind: it stands in the road, it does not answer anyone
+        ("The bus was stopped at the stop when a cyclist rode into the back of it.", ["truck", "bicycle"]),
+        # someone goes past it or along it: nothing got into its path
+        ("The lorry stopped and a cyclist went up its inside.", ["truck", "bicycle"]),
+        ("The taxi stopped and an e-scooter rider overtook it on the right.", ["car", "e-scooter"]),
+        # it stops before anyone gets in its way: for its own reason, standing there
+        ("The bus stops at a bus stop and a pedestrian walks out in front of it.", ["truck", "pedestrian"]),
+        ("The minibus pulled up at the kerb and a boy ran out from in front of it.", ["van", "pedestrian"]),
+        # brought in as new: never the ego
+        ("A van stopped suddenly when a child ran out in front of me.", ["van", "pedestrian"]),
+        # the text calls the ego by name
+        ("The car in the next lane stops while a pedestrian crosses 20 m ahead of the ego.", ["car", "pedestrian"]),
+    ],
+)
+def test_a_vehicle_that_only_stops_with_nothing_in_its_path_stays_a_road_user(text, kinds):
+    assert sorted(a.kind for a in read(text).actors) == sorted(kinds)
+
+
+@pytest.mark.parametrize(
+    ("text", "named"),
+    [
+        ("A pedestrian crosses 20 m ahead of the ego.", True),
+        ("The ego vehicle brakes for a cyclist.", True),
+        ("Ego at 50 km/h; a van cuts in.", True),
+        ("The ego's speed is 40 km/h and a child runs out.", True),
+        # "ego" as a modifier of what the ego has (its speed, its lane) names no road user apart from others
+        ("The vehicle shall stop when a child runs out, at an ego speed of 30 km/h.", False),
+        ("Ego velocity 40 km/h. The car brakes when a cyclist cuts in.", False),
+        ("The bus must stop for a man who crosses from the left; ego-speed 25 km/h.", False),
+    ],
+)
+def test_ego_as_the_name_of_a_road_user_not_of_its_speed(text, named):
+    assert ego_double.names_the_ego(text) is named
+
+
+def test_a_spec_that_gives_only_the_ego_s_speed_takes_the_stopping_vehicle_for_the_ego():
+    text = "A girl steps out from the left and the vehicle shall stop in time, at an ego speed of 20 km/h."
+    assert [a.kind for a in read(text).actors] == ["pedestrian"]

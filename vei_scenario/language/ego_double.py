@@ -13,8 +13,9 @@ start somewhere said, it is the ego: it leaves the road users, its speed is the 
 has none, and a gap said of it is the gap to the one road user it meets. Two such cannot be told
 apart by this, and both stay. So does one that the words set apart from the ego: one brought into the
 story as new ("a car was going at 40": the ego, whose story it is, is never new to it), one someone is
-said to see ("my dad saw the car hit a cyclist"), one said only to stop ("the bus was stopped at the
-stop": it may stand there), one slower or faster than the traffic ("overtook a slow-moving bus"), one
+said to see ("my dad saw the car hit a cyclist"), one said only to stop while no one gets into its path
+("the bus was stopped at the stop": it may stand there; "a cyclist cut across and the vehicle came to
+a halt" is the ego stopping for the cyclist), one slower or faster than the traffic ("overtook a slow-moving bus"), one
 that does something to another road user, one the ego follows or passes, one named in a group or
 picked out of one, parked, standing or hiding someone. A text that calls the ego "the ego" has said
 which one it is, and no vehicle is taken for it. A third-person report that names no ego at all (no
@@ -44,6 +45,22 @@ from vei_scenario.language.reading import ActorSpec, Reading
 
 #: What the ego itself does in a story told from it: goes on, slows, brakes (to a stop).
 _EGO_LIKE = frozenset(("keep_going", "sudden_stop", "stop", "change_speed"))
+#: What a road user does that puts it in the ego's path, for the ego to stop for: crossing, cutting in,
+#: turning or pulling out across it, coming the wrong way, braking hard ahead of it.
+_IN_THE_PATH = frozenset(
+    (
+        "cross_in_front",
+        "cut_in",
+        "turn_into",
+        "turn_across",
+        "forced_turn",
+        "run_red_light",
+        "junction_entry",
+        "wrong_way",
+        "sudden_stop",
+        "cut_out",
+    )
+)
 #: Determiners that bring a road user new into the story: the ego, whose story it is, is never new.
 NEW = frozenset(("a", "an", "another", "some", "one"))
 #: Words that name the ego in the reader's tokens: the narrator, the reader addressed, the ego framed.
@@ -96,10 +113,18 @@ def perceived(verb: str) -> bool:
     return verb in PERCEIVE or any(x in PERCEIVE for forms in lemmas(verb).values() for x in forms)
 
 
+#: What the ego has, said with "ego" as its modifier ("an ego speed of 30 km/h", "ego lane"): a closed
+#: class of the quantities and places a test spec gives the ego.
+_OF_THE_EGO = "speed|velocity|lane|route|path|heading|acceleration|deceleration|position|trajectory"
+#: "ego" naming the ego as one of the scene, not as the modifier of something it has.
+_EGO_NAMED = re.compile(rf"\bego\b(?![\s-]+(?:{_OF_THE_EGO})s?\b)", re.IGNORECASE)
+
+
 def names_the_ego(text: str) -> bool:
-    """Whether ``text`` calls the ego by that name ("... 20 m ahead of the ego"): it has said which one
-    the ego is, and no other vehicle is taken for it."""
-    return re.search(r"\bego\b", text, re.IGNORECASE) is not None
+    """Whether ``text`` calls the ego by that name ("... 20 m ahead of the ego", "the ego vehicle"): it
+    has said which one the ego is, and no other vehicle is taken for it. "ego" as the modifier of what
+    the ego has ("at an ego speed of 30 km/h", "ego lane") names no road user apart from the others."""
+    return _EGO_NAMED.search(text) is not None
 
 
 def _placed(a: _Said) -> bool:
@@ -108,10 +133,23 @@ def _placed(a: _Said) -> bool:
     return bool(a.passed or a.followed or a.hides or a.parked or a.stationary or a.group or a.member_named)
 
 
-def _double(a: _Said, spec: ActorSpec, others: list, unnamed: bool = False) -> bool:
+def stops_for_someone(spec: ActorSpec, specs: list) -> bool:
+    """Whether road user ``spec``, said only to stop, stops for another of ``specs`` named before it
+    that gets into its path ("a cyclist cut across in front of it and the vehicle came to a halt"):
+    that is what the ego does in the story told from it, in the order it happens. One that only stops
+    while the others go along or past it ("the bus was stopped when a cyclist rode into the back of
+    it", "the lorry stopped and a cyclist went up its inside"), or that stops before anyone gets in
+    its way ("the bus stops at a bus stop and a pedestrian walks out in front of it": it stopped for
+    its own reason, and stands there) may be standing there, a road user of its own."""
+    earlier = specs[: next(k for k, s in enumerate(specs) if s is spec)]
+    return any(b[0] in _IN_THE_PATH for s in earlier for b in s.behaviours)
+
+
+def _double(a: _Said, spec: ActorSpec, others: list, unnamed: bool = False, specs: list = ()) -> bool:
     """Whether road user ``spec`` (gathered as ``a``) is read as the ego would be: a kind the ego may
     be, nowhere said, moving at a speed of its own or none said (not standing, not "slow-moving"),
-    doing only what the ego does, and nothing to another road user (none is its verb's object)."""
+    doing only what the ego does (only stopping where another of ``specs`` gets into its path), and
+    nothing to another road user (none is its verb's object)."""
     names = {b[0] for b in spec.behaviours}
     return (
         spec.kind in _EGO_KINDS
@@ -119,7 +157,7 @@ def _double(a: _Said, spec: ActorSpec, others: list, unnamed: bool = False) -> b
         and spec.lateral_m is None
         and (spec.speed_mps is None or spec.speed_mps > 0.0)
         and names <= _EGO_LIKE
-        and names != {"stop"}
+        and (names != {"stop"} or (spec.speed_mps is None and not a.stationary and stops_for_someone(spec, specs)))
         and not _placed(a)
         and (a.det not in NEW or (unnamed and spec.speed_mps is not None))
         and not a.seen
@@ -135,9 +173,9 @@ def merge_into_ego(actors: list, reading: Reading, unnamed: bool = False) -> lis
     narrator, no "you", no vehicle framed as the ego), so one brought in as new may be it too.
     Returns ``actors`` without it."""
     specs = reading.actors
-    doubles = [k for k, (a, s) in enumerate(zip(actors, specs)) if _double(a, s, actors)]
+    doubles = [k for k, (a, s) in enumerate(zip(actors, specs)) if _double(a, s, actors, specs=specs)]
     if not doubles and unnamed:  # (one not new is the ego before any brought in as new)
-        doubles = [k for k, (a, s) in enumerate(zip(actors, specs)) if _double(a, s, actors, unnamed)]
+        doubles = [k for k, (a, s) in enumerate(zip(actors, specs)) if _double(a, s, actors, unnamed, specs)]
     deeds = [s for s in specs if not {b[0] for b in s.behaviours} <= _EGO_LIKE or s.relation is not None]
     if len(doubles) != 1 or not deeds or len(specs) < 2:
         return actors
