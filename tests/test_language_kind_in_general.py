@@ -64,6 +64,21 @@ def test_a_kind_named_in_general_beside_one_of_it_is_no_road_user(text, expected
             " in front of me at 30 km/h.",
             ["bicycle", "pedestrian"],
         ),
+        # told as doing something then or now: those ones are there
+        (
+            "Kids on scooters were racing down the hill towards me, and a kid on a scooter swerved out in"
+            " front of me at 20 mph.",
+            ["e-scooter", "e-scooter"],
+        ),
+        (
+            "Cyclists are riding two abreast in the lane ahead of me and a cyclist on the left pulls out.",
+            ["bicycle", "bicycle"],
+        ),
+        # set apart: the other ones are others there
+        (
+            "A cyclist cut across in front of me from the left while the other cyclists waited at the lights.",
+            ["bicycle", "bicycle"],
+        ),
         # alone, the plural is what the description is about
         (
             "E-scooter riders came off the path on my left and across in front of me as I drove at 20 mph.",

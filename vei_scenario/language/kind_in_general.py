@@ -20,7 +20,9 @@ from __future__ import annotations
 from typing import Protocol
 
 from vei_scenario.language.crowds import many
+from vei_scenario.language.discourse import told_in_the_past
 from vei_scenario.language.ego_double import without_road_user
+from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.normalise import NUMBER_WORDS
 from vei_scenario.language.reading import Reading
 from vei_scenario.language.said_again import plural
@@ -29,6 +31,8 @@ from vei_scenario.language.said_again import plural
 WALKERS_AND_RIDERS = frozenset(("pedestrian", "bicycle", "e-scooter", "motorcycle"))
 #: Determiners that count or bring in one new: a plural named with one (or a number) is counted.
 _COUNTING = frozenset(("a", "an", "another", "several", "both", "each", "every", "couple", "pair"))
+#: Words that set a plural apart from the one in the scene: "the other joggers" are others there.
+_APART = frozenset(("other", "others", "rest"))
 
 
 class _Named(Protocol):
@@ -38,6 +42,7 @@ class _Named(Protocol):
     group: list | None
     member_named: bool
     counted: bool
+    named_end: int
 
 
 def _counted(word: str) -> bool:
@@ -52,12 +57,25 @@ def _many(a: _Named) -> bool:
     return bool(last) and (many(last) or plural(last))
 
 
-def _in_general(a: _Named) -> bool:
-    """Whether road user ``a`` is named as its kind in general: a plural noun that nothing counts."""
+def _told_then_or_now(tokens: list[str], k: int) -> bool:
+    """Whether the verb at ``k``, right after a plural, tells what those ones did or are doing ("were
+    running", "ran", "are riding"); a past that is also the verb's plain form ("riders come off the
+    path", "cyclists cut across here") may be said of them in general, and is not taken as told."""
+    w = tokens[k] if k < len(tokens) else ""
+    plain = w in lemmas(w).get("VERB", ()) and w not in ("are", "am", "'re", "were", "was")
+    return told_in_the_past(tokens, k) and not plain
+
+
+def _in_general(a: _Named, tokens: list[str]) -> bool:
+    """Whether road user ``a`` is named as its kind in general: a plural noun that nothing counts or
+    sets apart, and not told as doing something then or now ("joggers were running across", "cyclists
+    are riding two abreast": those ones, road users of the event)."""
     return (
         _many(a)
         and not _counted(a.det)
         and not _counted(a.named_after)
+        and a.named_after not in _APART
+        and not (0 <= a.named_end and _told_then_or_now(tokens, a.named_end))
         and not a.group
         and not a.member_named
         and not a.counted
@@ -69,16 +87,16 @@ def _one_in_the_scene(a: _Named) -> bool:
     return bool(a.word) and (not _many(a) or bool(a.group) or a.member_named or a.counted)
 
 
-def drop_kinds_in_general(actors: list, reading: Reading) -> list:
+def drop_kinds_in_general(actors: list, reading: Reading, tokens: list[str]) -> list:
     """``actors`` and ``reading``'s road users without the walkers and riders named as their kind in
     general beside one of that kind in the scene (see the module); ``actors`` are what the reader
-    gathered of them, in the same order. Obstacles keep pointing at the same road users."""
+    gathered of them, in the same order, named in ``tokens``. Obstacles keep pointing at the same road users."""
     specs = reading.actors
     general = [
         k
         for k, (a, s) in enumerate(zip(actors, specs))
         if s.kind in WALKERS_AND_RIDERS
-        and _in_general(a)
+        and _in_general(a, tokens)
         and any(j != k and t.kind == s.kind and _one_in_the_scene(b) for j, (b, t) in enumerate(zip(actors, specs)))
     ]
     if any(s.obstacle in general for s in specs):
