@@ -40,14 +40,18 @@ class _Named(Protocol):
     member_named: bool
 
 
+def many(word: str) -> bool:
+    """Whether ``word`` is a plural noun ("kids", "riders", "people"), not a word no dictionary has."""
+    return word in _PLURAL_AS_LEMMA or (plural(word) and bool(lemmas(word).get("NOUN")))
+
+
 def _crowd(a: _Named, spec: ActorSpec) -> bool:
     """Whether road user ``spec`` (gathered as ``a``) is a crowd that only is there: walkers named by a
     plural noun that nothing counts or picks out, doing nothing towards the ego."""
     last = a.word.split()[-1] if a.word else ""
-    many = last in _PLURAL_AS_LEMMA or (plural(last) and bool(lemmas(last).get("NOUN")))
     return (
         spec.kind == "pedestrian"
-        and many
+        and many(last)
         and a.det not in _COUNTING
         and not a.group
         and not a.member_named

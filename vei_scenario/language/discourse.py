@@ -252,7 +252,7 @@ def _ridden_kind(tokens: list[str], p: _Phrase, kind_at: KindAt) -> tuple[str, i
     return p.kind, p.end
 
 
-def _told_in_the_past(tokens: list[str], k: int) -> bool:
+def told_in_the_past(tokens: list[str], k: int) -> bool:
     """Whether the verb at ``k``, right after a plural, tells what they did ("were running", "ran",
     "swerved"): those are road users of the event; road users in general do things in the present
     ("cyclists ride here") or may do them."""
@@ -317,7 +317,7 @@ def _generic_plurals(tokens: list[str], kind_at: KindAt, known: Known, dropped: 
         ):
             continue  # ("out from between parked cars": where someone is, not who; "to pass cyclists": a verb's)
         kind, end = _ridden_kind(tokens, p, kind_at)
-        if _told_in_the_past(tokens, end):
+        if told_in_the_past(tokens, end):
             continue  # ("joggers were running across in front of me": these ones, no road users in general)
         later = next(
             (q for q in phrases[n + 1 :] if q.start >= end and _ridden_kind(tokens, q, kind_at)[0] == kind), None

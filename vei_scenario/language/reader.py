@@ -42,6 +42,7 @@ from vei_scenario.language import (
     generic_ego,
     junctions,
     kerb_ride,
+    kind_in_general,
     lane_moves,
     motion,
     narrator_vehicle,
@@ -280,6 +281,8 @@ class _Actor:
     acted_on: bool = False  # the object of someone's verb ("overtakes a truck")
     pavement: bool = False  # said to be on a pavement (off the road), not in a cycle lane
     member_named: bool = False  # told apart from its group ("the first one", "the other")
+    counted: bool = False  # named in a group a number counts ("two lads on scooters"), told apart or not
+    named_end: int = -1  # where its first name ends in the scanned words (-1: not named there)
     hides: bool = False  # named as what someone comes out from behind or between
     passed: bool = False  # what the ego passes ("the ego overtakes her"): going along ahead of it
     has_way: bool = False  # going on while the ego gives way ("we yield; the van carries on")
@@ -2001,11 +2004,13 @@ def _read(text: str) -> Reading:
                                 det=_phrase_det(scanned, m.start),
                                 named_after=m.prev,
                                 seen=ego_double.perceived(m.prev),
+                                named_end=m.end,
                             )
                             for _ in range(count)
                         ]
                         for a in made:
                             a.group = made if count > 1 else None
+                            a.counted = count > 1
                             a.crit = "dangerous" if m.words in L.INSULTS else None  # ("some idiot ...")
                         actors.extend(made)
                         who = made[0]
@@ -2699,6 +2704,7 @@ def _read(text: str) -> Reading:
         actors = ego_turner.merge_overtaken_into_ego(actors, r, scanned)  # ("a cyclist overtaking the bus")
     actors = ego_double.drop_both_said_again(actors, r)  # ("a van cut the corner. Both drivers braked hard")
     actors = crowds.drop_crowds(actors, r)  # ("there were kids everywhere, and a cyclist pulled out")
+    actors = kind_in_general.drop_kinds_in_general(actors, r, scanned)  # ("e-scooters are a menace. A rider shot out")
     told = {w for cue in cues for w in cue.words.split()}  # (words the outcome was read from)
     r.ignored = [w for w in r.ignored if w not in told]
     if r.intent is None and not r.actors:
