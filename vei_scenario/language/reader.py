@@ -48,6 +48,7 @@ from vei_scenario.language import (
     no_lane_beside,
     off_a_place,
     protagonist,
+    report_vehicle,
     run_on,
     said_again,
     scenery,
@@ -2688,6 +2689,7 @@ def _read(text: str) -> Reading:
         actors = ego_double.merge_into_ego(actors, r, unnamed)  # ("Bus was doing 45")
         actors = ego_turner.merge_turner_into_ego(actors, r, unnamed)  # ("the test car turns right; a rider ...")
         actors = ego_turner.merge_overtaken_into_ego(actors, r, scanned)  # ("a cyclist overtaking the bus")
+        actors = report_vehicle.merge_report_vehicle(actors, r, text)  # ("a Fiesta driven by Ms K ... she braked")
     actors = ego_double.drop_both_said_again(actors, r)  # ("a van cut the corner. Both drivers braked hard")
     actors = crowds.drop_crowds(actors, r)  # ("there were kids everywhere, and a cyclist pulled out")
     told = {w for cue in cues for w in cue.words.split()}  # (words the outcome was read from)
