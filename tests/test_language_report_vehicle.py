@@ -82,3 +82,10 @@ def test_a_vehicle_ahead_that_brakes_for_a_walker_stays() -> None:
         " who had run into the road."
     )
     assert "car" in got and "pedestrian" in got
+
+
+def test_a_new_vehicle_beside_an_ego_phrase_stays() -> None:
+    got = kinds(
+        "The subject vehicle drives at 40 km/h. A van travelling at 50 km/h and a pedestrian crossing from the left."
+    )
+    assert "van" in got

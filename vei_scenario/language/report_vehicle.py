@@ -15,6 +15,7 @@ it (it goes on, slows, brakes). Guards, each with its reason:
 
 - no narrator speaks ("I", "we", "my"): a narrator may be the walker or rider, or in a vehicle of
   their own; "you" and an ego phrase ("the test car") name the ego, which the one vehicle then is;
+- where a phrase names the ego ("the VUT"), one brought in as new ("a car") is someone else;
 - it is the only motor vehicle that moves: with two, either may be the one the report is about;
 - one read ahead that brakes is the vehicle in front braking ("V1 was behind V2 when V2 braked");
 - it is not parked, standing or said only to stop, and hides no one: one at the kerb is scenery;
@@ -28,7 +29,7 @@ from __future__ import annotations
 import re
 
 from vei_scenario.language.discourse import VEHICLES, VULNERABLE
-from vei_scenario.language.ego_double import take_as_ego, without_road_user
+from vei_scenario.language.ego_double import NEW, take_as_ego, without_road_user
 from vei_scenario.language.reading import ActorSpec, Reading, stands_there
 
 #: What the ego does in a report told from it: goes on, slows, brakes (to a stop).
@@ -60,12 +61,13 @@ def _reported(a, spec: ActorSpec) -> bool:
     )
 
 
-def merge_report_vehicle(actors: list, reading: Reading, text: str) -> list:
+def merge_report_vehicle(actors: list, reading: Reading, text: str, ego_phrase: bool = False) -> list:
     """Take out of ``reading`` the one motor vehicle of a report with no narrator (``text`` has no word
     of the first person: the reader's own words read "you" as one) whose other road users are all
     walkers or riders (see the module): it is the ego, its speed the ego's where none was read.
-    ``actors`` are what the reader gathered of its road users, in the same order. Returns ``actors``
-    without it."""
+    ``actors`` are what the reader gathered of its road users, in the same order; ``ego_phrase``: a
+    phrase names the ego ("the VUT"), and one brought in as new ("a car") is someone else. Returns
+    ``actors`` without it."""
     specs = reading.actors
     if _NARRATOR & set(re.findall(r"[a-z]+", text.lower())) or len(specs) < 2:
         return actors
@@ -76,6 +78,8 @@ def merge_report_vehicle(actors: list, reading: Reading, text: str) -> list:
     rest = [s for j, s in enumerate(specs) if j != k and not stands_there(s)]
     if not rest or any(s.kind not in VULNERABLE for s in rest):
         return actors
+    if ego_phrase and actors[k].det in NEW:
+        return actors  # ("The VUT drives at 50 km/h. A car travelling at 60 km/h ...": someone else)
     if not _reported(actors[k], specs[k]) or not take_as_ego(reading, k):
         return actors
     return without_road_user(actors, reading, k)
