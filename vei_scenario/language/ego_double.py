@@ -103,8 +103,13 @@ def ego_unnamed(tokens: list[str], clauses: list) -> bool:
     "you", no ego phrase ("the host vehicle", "the VUT") and none framed as "the ego". A third-person
     report then brings its own vehicle in as new ("a resident driving home at 30 mph was hit when
     ..."), and "new" no longer sets a vehicle apart from the ego."""
-    said = any(m.slot == "actor" and m.value == "ego" for _, mentions in clauses for m in mentions)
-    return not said and not (_NAMING_THE_EGO & set(tokens))
+    return not ego_phrase(clauses) and not (_NAMING_THE_EGO & set(tokens))
+
+
+def ego_phrase(clauses: list) -> bool:
+    """Whether the reader's ``clauses`` name the ego by a phrase ("the host vehicle", "the VUT"): a
+    vehicle brought in as new beside it is someone else."""
+    return any(m.slot == "actor" and m.value == "ego" for _, mentions in clauses for m in mentions)
 
 
 def perceived(verb: str) -> bool:

@@ -1,0 +1,85 @@
+"""The one motor vehicle of a third-person report about a walker or rider: the ego.
+
+"A Ford Fiesta driven by Ms Kaur was leaving the car park at about 30 mph; the scooter came from her
+right. She braked but could not avoid a collision", "Mr Shah was crossing the junction in his Prius at
+20 mph. The cyclist entered from his left", "silver Golf ~30mph hit e-scooter rider who came off
+pavement", "A bus is moving at 10 m/s when the driver spots a cyclist 20 m ahead ... Give your
+answer": an inquest, a judgment, a news item, a log or an exam question with no narrator is told
+about the vehicle whose driver it is about, and the walker or rider that vehicle meets (where it says
+"you" to its reader, or names the ego by a phrase the reader did not tie to this vehicle, still).
+The scenario is that vehicle's: it is the ego, not one more road user.
+
+It is told apart by what the reading holds, not by its words: the one motor vehicle read that moves,
+beside road users that are all walkers or riders, doing only what the ego does in the story told from
+it (it goes on, slows, brakes). Guards, each with its reason:
+
+- no narrator speaks ("I", "we", "my"): a narrator may be the walker or rider, or in a vehicle of
+  their own; "you" and an ego phrase ("the test car") name the ego, which the one vehicle then is;
+- where a phrase names the ego ("the VUT"), one brought in as new ("a car") is someone else;
+- it is the only motor vehicle that moves: with two, either may be the one the report is about;
+- one read ahead that brakes is the vehicle in front braking ("V1 was behind V2 when V2 braked");
+- it is not parked, standing or said only to stop, and hides no one: one at the kerb is scenery;
+- no one watches it ("saw a car hit a cyclist"): a vehicle watched is seen from outside;
+- it is not followed, passed, grouped or picked out of a group: those are placed by someone else;
+- no road user swerves round it: what one swerves round stands in the road.
+"""
+
+from __future__ import annotations
+
+import re
+
+from vei_scenario.language.discourse import VEHICLES, VULNERABLE
+from vei_scenario.language.ego_double import NEW, take_as_ego, without_road_user
+from vei_scenario.language.reading import ActorSpec, Reading, stands_there
+
+#: What the ego does in a report told from it: goes on, slows, brakes (to a stop).
+_EGO_LIKE = frozenset(("keep_going", "sudden_stop", "stop", "change_speed"))
+#: Braking: one ahead that brakes is the lead vehicle braking in front of the ego, a scenario of its own.
+_BRAKING = frozenset(("sudden_stop", "stop", "change_speed"))
+#: A narrator's words: one who may be in the scene, on foot or riding, with a vehicle of their own.
+_NARRATOR = frozenset(("i", "me", "my", "mine", "we", "us", "our", "ours"))
+#: Where a report's vehicle may be read to start while it is the ego: nowhere, or on the ego's own
+#: road ("travelling straight ahead", "hit from behind"); an arm, a side or the other way is another's.
+_ON_ITS_ROAD = (None, "ahead", "behind")
+
+
+def _reported(a, spec: ActorSpec) -> bool:
+    """Whether motor vehicle ``spec`` (gathered as ``a``) reads as the vehicle a report is about: it
+    moves, does only what the ego does, starts nowhere off its own road, and nothing sets it apart
+    (parked, standing, hiding someone, watched, followed, passed, in a group)."""
+    names = {b[0] for b in spec.behaviours}
+    return (
+        spec.kind in VEHICLES
+        and names <= _EGO_LIKE
+        and names != {"stop"}
+        and spec.relation in _ON_ITS_ROAD
+        and not (spec.relation == "ahead" and names & _BRAKING)
+        and spec.lateral_m is None
+        and (spec.speed_mps is None or spec.speed_mps > 0.0)
+        and not (a.parked or a.stationary or a.hides or a.seen or a.followed or a.passed)
+        and not (a.group or a.member_named or a.side or a.lane_side or a.kerb_side or a.from_arm or a.beside)
+    )
+
+
+def merge_report_vehicle(actors: list, reading: Reading, text: str, ego_phrase: bool = False) -> list:
+    """Take out of ``reading`` the one motor vehicle of a report with no narrator (``text`` has no word
+    of the first person: the reader's own words read "you" as one) whose other road users are all
+    walkers or riders (see the module): it is the ego, its speed the ego's where none was read.
+    ``actors`` are what the reader gathered of its road users, in the same order; ``ego_phrase``: a
+    phrase names the ego ("the VUT"), and one brought in as new ("a car") is someone else. Returns
+    ``actors`` without it."""
+    specs = reading.actors
+    if _NARRATOR & set(re.findall(r"[a-z]+", text.lower())) or len(specs) < 2:
+        return actors
+    movers = [k for k, s in enumerate(specs) if s.kind in VEHICLES and not stands_there(s)]
+    if len(movers) != 1:
+        return actors
+    k = movers[0]
+    rest = [s for j, s in enumerate(specs) if j != k and not stands_there(s)]
+    if not rest or any(s.kind not in VULNERABLE for s in rest):
+        return actors
+    if ego_phrase and actors[k].det in NEW:
+        return actors  # ("The VUT drives at 50 km/h. A car travelling at 60 km/h ...": someone else)
+    if not _reported(actors[k], specs[k]) or not take_as_ego(reading, k):
+        return actors
+    return without_road_user(actors, reading, k)
