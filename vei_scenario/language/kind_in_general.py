@@ -10,10 +10,11 @@ walker too many, often taking the singular one's crossing or the ego's speed.
 The kind in general is told by noun-phrase grammar, as :mod:`crowds` tells a crowd: a plural noun
 that nothing counts, picks out or sets apart (no number, "both", "a", "another", "the other"; not
 named in a group or picked out of one), and that is not told doing something then or now ("kids were
-racing down the hill", "cyclists are riding two abreast": those ones were there). It leaves the road users only when another road user of the same kind, named in the
-singular or counted, is in the reading: a plural alone ("e-scooter riders came off the path") is what
-the description is about and stays; a walker named beside riders in general is a road user of another
-kind, and stays too (a rider and a walker are two).
+racing down the hill", "cyclists are riding two abreast": those ones were there). It leaves the road
+users only when another road user of the same kind, named in the singular or counted, is in the
+reading: a plural alone ("e-scooter riders came off the path") is what the description is about and
+stays; a walker named beside riders in general is a road user of another kind, and stays too (a rider
+and a walker are two).
 """
 
 from __future__ import annotations
