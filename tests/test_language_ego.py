@@ -93,7 +93,7 @@ def test_the_one_vehicle_that_strikes_a_walker_or_rider_in_a_report_is_the_ego(t
     "text",
     [
         "A car overtakes a cyclist on a straight road.",
-        "A cyclist brakes hard in front of a car and the car hits the brakes.",
+        "A cyclist rides along the kerb and a car cuts in close in front of him.",
     ],
 )
 def test_a_vehicle_that_strikes_no_one_stays_a_road_user(text):

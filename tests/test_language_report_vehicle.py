@@ -48,6 +48,11 @@ REPORTS = [
         " e-scooter came in from his right. He braked but collided with it.",
         ["e-scooter"],
     ),
+    (
+        # (only braking for the one who brakes ahead of it: the vehicle the scenario is told from)
+        "A cyclist brakes hard in front of a car and the car hits the brakes.",
+        ["bicycle"],
+    ),
 ]
 
 
