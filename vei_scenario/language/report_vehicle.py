@@ -21,7 +21,10 @@ it (it goes on, slows, brakes). Guards, each with its reason:
 - it is not parked, standing or said only to stop, and hides no one: one at the kerb is scenery;
 - no one watches it ("saw a car hit a cyclist"): a vehicle watched is seen from outside;
 - it is not followed, passed, grouped or picked out of a group: those are placed by someone else;
-- no road user swerves round it: what one swerves round stands in the road.
+- no road user swerves round it: what one swerves round stands in the road;
+- the walkers or riders do not all only go on as it does: road users listed going on together
+  ("three road users came through: a van, a woman and a cyclist") are told as alike, none the one
+  met (one that brakes for another braking ahead of it does meet it).
 """
 
 from __future__ import annotations
@@ -36,6 +39,8 @@ from vei_scenario.language.reading import ActorSpec, Reading, stands_there
 _EGO_LIKE = frozenset(("keep_going", "sudden_stop", "stop", "change_speed"))
 #: Braking: one ahead that brakes is the lead vehicle braking in front of the ego, a scenario of its own.
 _BRAKING = frozenset(("sudden_stop", "stop", "change_speed"))
+#: Only going on: what road users listed together do where none of them meets another.
+_GOING_ON = frozenset(("keep_going", "change_speed"))
 #: A narrator's words: one who may be in the scene, on foot or riding, with a vehicle of their own.
 _NARRATOR = frozenset(("i", "me", "my", "mine", "we", "us", "our", "ours"))
 #: Where a report's vehicle may be read to start while it is the ego: nowhere, or on the ego's own
@@ -61,6 +66,11 @@ def _reported(a, spec: ActorSpec) -> bool:
     )
 
 
+def _names(spec: ActorSpec) -> frozenset[str]:
+    """The behaviours ``spec`` is read doing, by name."""
+    return frozenset(b[0] for b in spec.behaviours)
+
+
 def merge_report_vehicle(actors: list, reading: Reading, text: str, ego_phrase: bool = False) -> list:
     """Take out of ``reading`` the one motor vehicle of a report with no narrator (``text`` has no word
     of the first person: the reader's own words read "you" as one) whose other road users are all
@@ -78,6 +88,8 @@ def merge_report_vehicle(actors: list, reading: Reading, text: str, ego_phrase: 
     rest = [s for j, s in enumerate(specs) if j != k and not stands_there(s)]
     if not rest or any(s.kind not in VULNERABLE for s in rest):
         return actors
+    if _names(specs[k]) <= _GOING_ON and all(_names(s) == _names(specs[k]) for s in rest):
+        return actors  # (listed going on together: none of them is the one the others meet)
     if ego_phrase and actors[k].det in NEW:
         return actors  # ("The VUT drives at 50 km/h. A car travelling at 60 km/h ...": someone else)
     if not _reported(actors[k], specs[k]) or not take_as_ego(reading, k):
