@@ -386,3 +386,23 @@ TERSE = {
 @pytest.mark.parametrize("text, route", _cases(TERSE))
 def test_a_spec_or_a_terse_note_says_the_ego_turn(text, route):
     assert ego_route(_tokens(text)) == route
+
+
+@pytest.mark.parametrize(
+    "text, route",
+    [
+        ("The ADS shall not initiate a right turn across an oncoming cyclist approaching at 20 km/h.", "right"),
+        ("ADS-equipped vehicle turning left at a signalised crossroads; a cyclist alongside on the nearside.", "left"),
+        ("The automated driving system must not begin a right turn across an oncoming moped.", "right"),
+    ],
+    ids=["ads", "ads-equipped", "automated-driving-system"],
+)
+def test_a_specs_automated_driving_system_is_the_ego_and_its_turn_the_egos(text, route):
+    reading = read(text)
+    assert reading.ego_route == route
+    assert all(b[0] != "forced_turn" for a in reading.actors for b in a.behaviours)
+
+
+def test_ads_as_a_word_of_a_vehicle_is_no_ego():
+    reading = read("A bus covered in ads turned left across a cyclist.")
+    assert reading.ego_route is None and len(reading.actors) == 2
