@@ -349,3 +349,60 @@ def test_an_exit_taken_by_its_number_is_a_turn(text, route):
 
 def test_another_taking_a_numbered_exit_is_no_route():
     assert ego_route(_tokens("A van took the third exit on the left across my path.")) is None
+
+
+# a test spec's or a terse note's wording of the ego's turn: the side of an exit in brackets, "me" as
+# the subject of a note that leaves out "I", and any of the ego's names the reader knows (a spec's
+# "vehicle under test", "automated vehicle", "robotaxi"); near misses: another road user's exit or turn
+TERSE = {
+    "left": [
+        "Ego: takes 1st exit (left) @ 25 kph. Target: cyclist on ego's left, going round.",
+        "Roundabout, one lane. Host vehicle takes exit 1 (left); a pedestrian waits at the exit.",
+        "SUT: leaves at the first exit (L) at 15 km/h, e-scooter on its nearside.",
+        "me going left at the mini roundabout, cyclist came round from the right, braked",
+        "Me turning left into the car park, lad on a scooter on the pavement rolled out",
+        "The robotaxi begins a left turn into Quay Street while a jogger steps off the kerb.",
+        "Automated vehicle shall not start a left turn while a cyclist is alongside on the nearside.",
+    ],
+    "right": [
+        "Ego vehicle takes the 3rd exit (right) at 30 km/h; a pedestrian crosses the exit.",
+        "Ego: exit 3 (R) at 20 km/h, moped circulating on its left.",
+        "T-junction. me going right, van coming from the left, gave way",
+        "xroads by the church. me turning R, oncoming bike going str8 on, i waited for it",
+        "The vehicle under test shall not commence a right turn across an oncoming motorcycle at 40 km/h.",
+    ],
+    None: [
+        "Ego goes round at 20 km/h; a cyclist takes the 1st exit (left) in front of it.",
+        "A van took exit 2 (right) and I carried on round at 15 km/h.",
+        "the car behind me turning left, i went straight on, a jogger crossed",
+        "He saw me and a scooter turning right cut across the junction.",
+        "A van behind the test vehicle turns right at the junction as a cyclist passes.",
+        "I was going round the roundabout, the exit on the right was shut, a cyclist cut across.",
+        "Target: moped takes exit 2 (R) at 30 km/h. Ego: goes round at 20 km/h.",
+    ],
+}
+
+
+@pytest.mark.parametrize("text, route", _cases(TERSE))
+def test_a_spec_or_a_terse_note_says_the_ego_turn(text, route):
+    assert ego_route(_tokens(text)) == route
+
+
+@pytest.mark.parametrize(
+    "text, route",
+    [
+        ("The ADS shall not initiate a right turn across an oncoming cyclist approaching at 20 km/h.", "right"),
+        ("ADS-equipped vehicle turning left at a signalised crossroads; a cyclist alongside on the nearside.", "left"),
+        ("The automated driving system must not begin a right turn across an oncoming moped.", "right"),
+    ],
+    ids=["ads", "ads-equipped", "automated-driving-system"],
+)
+def test_a_specs_automated_driving_system_is_the_ego_and_its_turn_the_egos(text, route):
+    reading = read(text)
+    assert reading.ego_route == route
+    assert all(b[0] != "forced_turn" for a in reading.actors for b in a.behaviours)
+
+
+def test_ads_as_a_word_of_a_vehicle_is_no_ego():
+    reading = read("A bus covered in ads turned left across a cyclist.")
+    assert reading.ego_route is None and len(reading.actors) == 2

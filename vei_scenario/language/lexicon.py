@@ -457,6 +457,12 @@ EGO_NOUNS = (
     "test driver",
     "learner driver",
     "student driver",
+    "ads",  # (a spec's automated driving system: "The ADS shall not initiate a right turn")
+    "automated driving system",
+    "autonomous driving system",
+    "ads vehicle",
+    "ads-equipped vehicle",
+    "ads-dv",
 )
 
 #: Verbs of wanting or taking the ego's lane ("decides he wants my lane", "went for our lane"): a

@@ -25,6 +25,7 @@ from __future__ import annotations
 
 from vei_scenario.language.clauses import sentence_start, split
 from vei_scenario.language.lemmas import lemmas
+from vei_scenario.language.lexicon import EGO_NOUNS
 
 #: Verbs that take a direction as a turn ("turn left", "bear right", "swing left", "went left").
 _TURNING = frozenset(("turn", "bear", "swing", "go", "head"))
@@ -83,6 +84,9 @@ _EGO_PHRASES = (
     ("host", "vehicle"), ("subject", "vehicle"), ("test", "vehicle"), ("our", "car"), ("my", "car"),
     ("our", "vehicle"), ("my", "vehicle"), ("under", "test"), ("ego", "vehicle"), ("ego", "car"),
 )  # fmt: skip
+#: Every name the reader knows the ego by, as word tuples ("vehicle under test", "robotaxi"), but the
+#: object pronouns, which name the ego only as a subject of their own (see :func:`_names_ego`).
+_EGO_NAMES = frozenset(tuple(n.split()) for n in EGO_NOUNS if n not in ("me", "us"))
 _FIRST_PERSON = frozenset(("i", "we", "me", "my", "us", "our"))
 _PREPOSITIONS = frozenset(("of", "behind", "to", "with", "for", "at", "from", "past", "by", "than", "before", "after",
                            "towards", "toward", "ahead", "beside", "near", "like", "into", "in", "on"))  # fmt: skip
@@ -129,10 +133,11 @@ def _turn_at(words: list[str], i: int) -> str | None:
         place = next((k for k in (off + 1, off + 2) if k < len(after) and after[k] in _JUNCTIONS), None)
         if place is not None:
             return _towards_side(words[i + 2 + place : i + 6 + place])  # ("leaves the roundabout to the right")
-    if _lemma_in(w, _TAKING):
-        way = next((k for k, x in enumerate(after) if x not in _BEFORE_TURN_NOUN), None)
-        if way and after[way] in _WAYS_OFF:
-            return _towards_side(words[i + 2 + way : i + 6 + way])  # ("took the second exit on the left")
+    if _lemma_in(w, _TAKING | _LEAVING):
+        by = 1 if after[:1] and after[0] in _BY_WAY and _lemma_in(w, _LEAVING) else 0  # ("leaves by the 2nd exit")
+        way = next((k for k, x in enumerate(after) if k >= by and x not in _BEFORE_TURN_NOUN), None)
+        if way is not None and after[way] in _WAYS_OFF and (way > 0 or _lemma_in(w, _TAKING)):
+            return side_of_way(words[i + 2 + way : i + 7 + way])  # ("took the second exit on the left")
     if _lemma_in(w, _TAKING | _PERFORMING):
         for k, x in enumerate(after):
             if x in _DIRECTIONS:
@@ -164,6 +169,57 @@ def _place_after(words: list[str]) -> bool:
     if head[:1] and head[0].replace(".", "", 1).isdigit():
         return True  # ("go right at 15 mph", "went right at about 30": a speed or a time, no one aimed at)
     return bool(head) and head[0] in _TURN_PLACES
+
+
+#: Words between a verb of leaving and the way it leaves by ("exits at the first exit", "via exit 2").
+_BY_WAY = frozenset(("at", "by", "via", "through", "on"))
+
+
+def side_of_way(words: list[str]) -> str | None:
+    """The side ``words`` (after a way off: "exit", "turning") say it leads to: with the way's number
+    left out ("exit 2 (right)": a spec's number, then its side in brackets, which the reader drops),
+    a side or its initial right after it ("1st exit (L)"), or as :func:`_towards_side` reads it."""
+    if words[:1] and words[0].isdigit():
+        words = words[1:]
+    if words[:1] and words[0] in _INITIALS:
+        return _INITIALS[words[0]]
+    return _towards_side(words)
+
+
+def _way_said_alone(words: list[str]) -> str | None:
+    """The side of a way off that opens a clause with no verb ("1st exit (left)", "exit 3 (R)", "the
+    second exit on the right"): a spec's or a note's route after the name of whose it is."""
+    k = 0
+    while k < len(words) and words[k] in _BEFORE_TURN_NOUN:
+        k += 1
+    if k >= len(words) or words[k] not in ("exit", "turning", "turn-off", "turnoff"):
+        return None
+    if any(w in _COPULA or _is_verb(w) for w in words[k + 1 :]):
+        return None  # (a clause about the way: "the exit on the right was shut")
+    return side_of_way(words[k + 1 : k + 6])
+
+
+def _ego_name_length(words: list[str]) -> int:
+    """How many words of ``words`` open them with a name of the ego ("the ego", "host vehicle",
+    "SUT"), or 0."""
+    head = 1 if words[:1] and words[0] in ("the", "our", "my") else 0
+    if words[head : head + 1] and words[head] in _EGO_HEADS:
+        return head + 1
+    found = [len(p) for p in (*_EGO_PHRASES, *_EGO_NAMES) if tuple(words[head : head + len(p)]) == p]
+    return head + max(found) if found else 0
+
+
+def _ego_label(words: list[str]) -> bool:
+    """Whether the clause ``words`` is the ego's name alone, a spec's label ("Ego:", "SUT -"): what
+    the sentence after it says with no subject of its own is the ego's."""
+    return bool(words) and _ego_name_length(words) == len(words)
+
+
+def _way_after_ego(words: list[str]) -> str | None:
+    """The side of a way off said right after the ego's name with no verb ("Ego - 2nd exit (right)",
+    "SUT 1st exit left"), else None."""
+    k = _ego_name_length(words)
+    return _way_said_alone(words[k:]) if k else None
 
 
 def _towards_side(words: list[str]) -> str | None:
@@ -210,21 +266,25 @@ def _names_ego(phrase: list[str]) -> bool:
     Octavia": the ego and its make)."""
     if not phrase:
         return False
-    if phrase[-1] in ("i", "we"):
-        return True
+    if phrase[-1] in ("i", "we") or phrase == ["me"]:
+        return True  # ("me turning R": a terse note's subject, with nothing before it)
     if phrase[-1] in _EGO_HEADS:  # (after a report's label and number: "Disengagement #4471 - AV executing")
         if len(phrase) > 2 and phrase[-2] == "the" and phrase[-3] in _PREPOSITIONS:
             return False  # ("the van ahead of the ego": the ego inside another's noun phrase)
         return len(phrase) == 1 or phrase[-2] in ("the", "our", "my", "and") or phrase[-2].isdigit()
     if any(tuple(phrase[-len(p) :]) == p for p in _EGO_PHRASES):
         return True
+    if any(tuple(phrase[-len(p) :]) == p and not _PREPOSITIONS & set(phrase[: -len(p)]) for p in _EGO_NAMES):
+        return True  # ("the robotaxi", "the vehicle under test"; not "the van behind the test vehicle")
     return _opens_with_ego(phrase) and not _PREPOSITIONS & set(phrase)
 
 
 def _opens_with_ego(words: list[str]) -> bool:
     """Whether ``words`` open with a name of the ego ("the ego 30 mph", "host vehicle is ...")."""
     head = words[1:] if words and words[0] in ("the", "our", "my") else words
-    return bool(head) and (head[0] in _EGO_HEADS or any(tuple(head[: len(p)]) == p for p in _EGO_PHRASES))
+    return bool(head) and (
+        head[0] in _EGO_HEADS or any(tuple(head[: len(p)]) == p for p in (*_EGO_PHRASES, *_EGO_NAMES))
+    )
 
 
 def _whose(subject: list[str]) -> str | None:
@@ -376,9 +436,13 @@ def ego_route(tokens: list[str]) -> str | None:
     story = bool(_FIRST_PERSON & set(tokens))
     previous: str | None = None
     clauses = split(tokens, _BREAK_PUNCT | _BREAK_WORDS)
+    label = False
     for n, (words, first) in enumerate(clauses):
         if first:
-            previous = None
+            previous = "ego" if label else None  # ("Ego: takes 1st exit (left)": said of the label)
+        label = _ego_label(words)
+        if (previous == "ego" and (side := _way_said_alone(words))) or (side := _way_after_ego(words)):
+            return side  # ("Ego: exit 3 (R)", "Ego - 2nd exit (right), 25 km/h")
         for i in range(len(words)):
             direction, verb = _turn_at(words, i), i
             if direction is None:
