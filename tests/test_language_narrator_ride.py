@@ -37,6 +37,8 @@ SOMEONE_ELSES = [
     "I saw a cyclist on a hire bike run the red light in front of me.",
     "I was driving at 30 mph when a kid on a scooter shot out in front of me.",
     "On a scooter, a teenager rode out of the alley in front of me.",
+    "I nearly took a cyclist out at the roundabout when he undertook me.",
+    "I was on my way home when a boy on a bike rode out of a driveway in front of me.",
 ]
 
 

@@ -19,7 +19,7 @@ with its reason:
 
 from __future__ import annotations
 
-from vei_scenario.language.ego import BETWEEN, FIRST_PERSON, HABIT, SENTENCE_END, KindAt, _lemma_in
+from vei_scenario.language.ego import BETWEEN, FIRST_PERSON, HABIT, SENTENCE_END, KindAt, _lemma_in, _rider_noun
 from vei_scenario.language.ego_double import take_as_ego, without_road_user
 from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.reading import Reading
@@ -66,14 +66,16 @@ def _before(tokens: list[str], start: int) -> int:
     return j
 
 
-def _mentions(tokens: list[str], a, alone: bool, kind_at: KindAt) -> list[int]:
-    """Where road user ``a`` is named: its first mention and, where it is the only road user of its
-    kind (``alone``), every phrase of its kind ("Scooter died mid-junction. I was on one of your
-    e-scooters": the same scooter)."""
-    starts = [a.named_end - len(a.word.split())]
-    if alone:
-        starts += [i for i in range(len(tokens)) if (kind_at(tokens, i) or ("",))[0] == a.kind]
-    return starts
+def _mentions(tokens: list[str], a, alone: bool, kind_at: KindAt) -> list[tuple[int, int]]:
+    """Where road user ``a`` is named (start, end): its first mention and, where it is the only road
+    user of its kind (``alone``), every phrase of its kind ("Scooter died mid-junction. I was on one
+    of your e-scooters": the same scooter)."""
+    spans = [(a.named_end - len(a.word.split()), a.named_end)]
+    for i in range(len(tokens)) if alone else ():
+        found = kind_at(tokens, i)
+        if found is not None and found[0] == a.kind:
+            spans.append((i, i + found[1]))
+    return spans
 
 
 def _ridden_it(tokens: list[str], a, others: list) -> bool:
@@ -104,8 +106,9 @@ def _narrators_ride(tokens: list[str], a, others: list, kind_at: KindAt) -> bool
     if a.named_end < 0:
         return False
     alone = not any(o.kind == a.kind for o in others)
-    if any(_rides_here(tokens, i) for i in _mentions(tokens, a, alone, kind_at)):
-        return True
+    for start, end in _mentions(tokens, a, alone, kind_at):
+        if not _rider_noun(tokens[end - 1]) and _rides_here(tokens, start):
+            return True  # (the machine, not its rider: "I nearly took a cyclist out")
     return _ridden_it(tokens, a, others)
 
 
