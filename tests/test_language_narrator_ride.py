@@ -18,6 +18,9 @@ RIDDEN = [
     "Writing about the bike I had yesterday. I was riding it at 10 mph when a lady walked out in front of me.",
     "I was on a hire bike doing 20 km/h when a boy stepped off the kerb on my right.",
     "I was on an electric scooter doing 20 km/h and a man stepped out in front of me.",
+    "I was cycling to college when a girl walked out in front of me. I came off the bike and cut my knee.",
+    "On my moped at 30 mph a man stepped out in front of me. Scratched the bike and my leg.",
+    "We were riding home at dusk and a jogger ran across in front of us; I dropped the scooter.",
 ]
 
 
@@ -39,6 +42,8 @@ SOMEONE_ELSES = [
     "On a scooter, a teenager rode out of the alley in front of me.",
     "I nearly took a cyclist out at the roundabout when he undertook me.",
     "I was on my way home when a boy on a bike rode out of a driveway in front of me.",
+    "I was walking home when the bike hit me from behind.",
+    "I was cycling behind a lad when he came off the bike in front of me.",
 ]
 
 

@@ -100,6 +100,32 @@ def _rides_here(tokens: list[str], start: int) -> bool:
     return verb.isalpha() and "VERB" in lemmas(verb) and _lemma_in(verb, _TAKING) and _narrators(tokens, j)
 
 
+#: Verbs (by lemma) of the narrator riding with no object said: the ride is the narrator's own.
+_RIDING = frozenset({"ride", "cycle", "scoot", "pedal", "bike"})
+#: Prepositions between a verb and the ride it is done to ("came off the bike", "fell from the scooter").
+_OFF = frozenset({"off", "from", "over", "onto", "on"})
+
+
+def _narrator_rides(tokens: list[str]) -> bool:
+    """Whether the narrator rides in ``tokens`` ("I was cycling home", "riding down the hill", a ride
+    the reader has already made the ego: "on my moped", said "on ego")."""
+    if any(tokens[k : k + 2] == ["on", "ego"] for k in range(len(tokens) - 1)):
+        return True
+    return any(_lemma_in(w, _RIDING) and "VERB" in lemmas(w) and _narrators(tokens, k) for k, w in enumerate(tokens))
+
+
+def _the_ride(tokens: list[str], a) -> bool:
+    """Whether road user ``a``, first said with "the" and never introduced, is what the narrator does
+    something to ("Scratched the bike", "I came off the bike"): a writer who rides names their own
+    ride as known; someone else's would be introduced ("a lad on a bike") or be the subject."""
+    j = _before(tokens, a.named_end - len(a.word.split()))
+    if a.det != "the" or j < 0 or tokens[j] in _CLAUSE_OPEN:
+        return False
+    j -= j > 0 and tokens[j] in _OFF
+    verb = tokens[j]
+    return verb.isalpha() and "VERB" in lemmas(verb) and _narrators(tokens, j) and _narrator_rides(tokens)
+
+
 def _narrators_ride(tokens: list[str], a, others: list, kind_at: KindAt) -> bool:
     """Whether road user ``a`` is the narrator's ride: named where the narrator is on it or takes it,
     or ridden as "it" right after its first mention (``others``: the other road users)."""
@@ -109,6 +135,8 @@ def _narrators_ride(tokens: list[str], a, others: list, kind_at: KindAt) -> bool
     for start, end in _mentions(tokens, a, alone, kind_at):
         if not _rider_noun(tokens[end - 1]) and _rides_here(tokens, start):
             return True  # (the machine, not its rider: "I nearly took a cyclist out")
+    if alone and not _rider_noun(a.word.split()[-1]) and _the_ride(tokens, a):
+        return True
     return _ridden_it(tokens, a, others)
 
 
