@@ -45,6 +45,7 @@ from vei_scenario.language import (
     kind_in_general,
     lane_moves,
     motion,
+    narrator_ride,
     narrator_vehicle,
     no_lane_beside,
     off_a_place,
@@ -2708,6 +2709,7 @@ def _read(text: str) -> Reading:
     actors = ego_double.drop_both_said_again(actors, r)  # ("a van cut the corner. Both drivers braked hard")
     actors = crowds.drop_crowds(actors, r)  # ("there were kids everywhere, and a cyclist pulled out")
     actors = kind_in_general.drop_kinds_in_general(actors, r, scanned)  # ("e-scooters are a menace. A rider shot out")
+    actors = narrator_ride.drop_narrators_ride(actors, r, scanned, _kind_at)  # ("I was on one of your e-scooters")
     told = {w for cue in cues for w in cue.words.split()}  # (words the outcome was read from)
     r.ignored = [w for w in r.ignored if w not in told]
     if r.intent is None and not r.actors:
