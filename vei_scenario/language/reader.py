@@ -3116,10 +3116,10 @@ def _specialise(
         same = ("cut_in", "cross_in_front", "run_red_light", "keep_going")  # ("... and crossed into our path")
         spec.behaviours = [("turn_across", {}, crit, link)] + [b for b in spec.behaviours[1:] if b[0] not in same]
         return
-    if a.kind != "pedestrian" and motion.comes_head_on(names, a.wrong_way, a.said, passes_another):
+    if a.kind != "pedestrian" and motion.comes_head_on(names, a.wrong_way, a.said, passes_another, a.returns):
         # (a vehicle seen coming from the other way drifts over into the ego's lane; a rider rides in it)
         in_lane = a.kind in RIDERS or sides.starts_in_ego_lane(a.said)
-        spec.behaviours = [("wrong_way", {}, crit, link)]
+        spec.behaviours = [("wrong_way", {"returns": 1.0} if a.returns else {}, crit, link)]
         spec.relation, spec.facing = ("ahead", "against") if in_lane else ("oncoming", None)
         return
     if (
@@ -3147,7 +3147,12 @@ def _specialise(
     if (
         (
             vehicle
-            or (a.kind in RIDERS and towards and first in ("cut_in", "change_lane"))  # (an oncoming rider swerving in)
+            # (an oncoming rider swerving in; one riding the wrong way, not on a path or lane of its own)
+            or (
+                a.kind in RIDERS
+                and (towards or a.wrong_way and not (a.pavement or a.own_lane))
+                and first in ("cut_in", "change_lane")
+            )
         )
         and not junction
         and (
