@@ -46,6 +46,12 @@ def test_coming_at_the_ego_and_going_back_to_its_side_is_the_wrong_way(text):
     [
         # coming the other way, no going back: it keeps to its own side
         ("I was doing 30 mph and a cyclist came towards me in the other lane.", "wrong_way"),
+        # getting back up or on after a fall is no going back to its side
+        (
+            "I was doing 20 mph, a cyclist coming towards me hit a pothole, fell off and got straight back up.",
+            "wrong_way",
+        ),
+        ("Doing 30 mph; an oncoming moped rider skidded, fell and got back on his bike.", "wrong_way"),
         # a walker stepping back is no ride against the traffic
         ("I was doing 30 mph when a man walked out, saw me and stepped back onto the kerb.", "wrong_way"),
     ],

@@ -3206,6 +3206,12 @@ def _specialise(
         spec.behaviours = head_on(spec, a.kind in RIDERS and a.wrong_way)
 
 
+def _gets_up(m) -> bool:
+    """Whether return ``m`` is getting back up or on ("fell off and got back up", "got back on his
+    bike"): standing up or remounting, not going back to its side of the road."""
+    return m.words.split()[0] in ("get", "got", "gets", "getting") and m.next_ in ("up", "on")
+
+
 def _from(m) -> bool:
     """Whether place mention ``m`` says where its road user comes from ("from the far side", "came off
     the sidewalk")."""
@@ -3756,7 +3762,7 @@ def _apply(m, who, r, link, added) -> None:
             a.wrong_way = True
         elif m.slot == "over_line":
             a.said.add("in_ego_lane")  # (partly in the other way's lane: the ego's, for one coming at it)
-        elif m.slot == "returns":
+        elif m.slot == "returns" and not _gets_up(m):
             a.returns = True
         elif m.slot == "side":
             a.goes_to = a.goes_to or (
