@@ -2266,7 +2266,9 @@ def _read(text: str) -> Reading:
                 if isinstance(clause_subject, _Actor) and _overtaken_coming(who, clause_subject, m):
                     _apply(m, who, r, link, added)  # (what it overtakes goes its way: towards the ego too)
                     who = clause_subject  # ("a lorry overtook a tractor and came towards us": the lorry)
-                elif isinstance(clause_subject, _Actor) and _verb_after_and(prev, m):
+                elif isinstance(clause_subject, _Actor) and (
+                    _verb_after_and(prev, m) or _overtakers_return(prev, m, clause_subject)
+                ):
                     who = clause_subject  # ("a lorry hit the barrier and came towards us": the lorry)
                 if who is None and m.slot in ("speed", "distance") and isinstance(clause_subject, _Actor):
                     who = clause_subject  # "..., and then overtakes it at 25 km/h": the one who overtakes
@@ -3458,6 +3460,15 @@ def _verb_after_and(prev, m) -> bool:
     if m.slot != "relation" or m.value != "oncoming" or prev is None or prev.slot != "conj":
         return False
     return prev.words == "and" and _inflected_verb(m.words.split()[0])
+
+
+def _overtakers_return(prev, m, subject: _Actor) -> bool:
+    """Whether return ``m`` is said right after "and" in a clause whose subject overtakes ("tried to
+    squeeze past, met an oncoming van and had to cut back in"): going back to its lane is the
+    overtaker's second verb, not what the road user it meets (named last) does."""
+    if m.slot != "returns" or prev is None or prev.slot != "conj" or prev.words != "and":
+        return False
+    return any(b[0] == "overtake" for b in subject.behaviours)
 
 
 def _overtaken_coming(who, subject: _Actor, m) -> bool:
