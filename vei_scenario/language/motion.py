@@ -79,12 +79,15 @@ def in_the_ego_lane(words: str) -> bool:
     return any(a in _EGO_OWNER_WORDS and b in _WAYS for a, b in zip(said, said[1:]))
 
 
-#: What a road user coming at the ego in its lane may be said to do besides: go on, or move about in
-#: that lane (a swerve said with no subject is often the narrator's).
-_HEAD_ON_MOVES = frozenset(("keep_going", "along_road", "cut_in", "change_lane", "wrong_way", "keep_lane"))
+#: What a road user coming at the ego in its lane may be said to do besides: go on, move about in
+#: that lane (a swerve said with no subject is often the narrator's), or swerve out of it at the last
+#: moment ("came head-on and swerved out"), as one going back to its side does.
+_HEAD_ON_MOVES = frozenset(("keep_going", "along_road", "cut_in", "change_lane", "cut_out", "wrong_way", "keep_lane"))
 
 
-def comes_head_on(names: list[str], wrong_way: bool, said: set, passes_another: bool = True) -> bool:
+def comes_head_on(
+    names: list[str], wrong_way: bool, said: set, passes_another: bool = True, returns: bool = False
+) -> bool:
     """Whether a road user with behaviours ``names``, said to go the wrong way (``wrong_way``) and
     said the relations ``said``, is driving or riding head-on in the ego's lane: against the traffic
     (the wrong way, or coming towards the ego) and in the ego's lane (``"in_ego_lane"``), or the wrong
@@ -93,10 +96,12 @@ def comes_head_on(names: list[str], wrong_way: bool, said: set, passes_another: 
     overtake of another road user (``passes_another``). Going past the ego, or "passing each other",
     is how a road user coming head-on meets it ("squeezed past me", "passed 1 m off our left side"):
     no overtake, as it never drove the ego's way; so one said to come the wrong way that only goes
-    past the ego ("came the wrong way down the lane and squeezed past me") is coming head-on too."""
+    past the ego ("came the wrong way down the lane and squeezed past me") is coming head-on too. One
+    coming towards the ego that goes back to its own side or lane (``returns``: "swerved back over at
+    the last second") was out of it, on the ego's side: head-on too, however its coming was said."""
     against = wrong_way or "oncoming" in said
     meets = wrong_way and not passes_another and "overtake" in names  # (the wrong way, then past the ego)
-    placed = "in_ego_lane" in said or (wrong_way and "oncoming" in said) or meets
+    placed = "in_ego_lane" in said or (wrong_way and "oncoming" in said) or meets or returns
     moves = _HEAD_ON_MOVES if passes_another else _HEAD_ON_MOVES | {"overtake"}
     return against and placed and bool(names) and set(names) <= moves
 

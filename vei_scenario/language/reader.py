@@ -2267,7 +2267,9 @@ def _read(text: str) -> Reading:
                 if isinstance(clause_subject, _Actor) and _overtaken_coming(who, clause_subject, m):
                     _apply(m, who, r, link, added)  # (what it overtakes goes its way: towards the ego too)
                     who = clause_subject  # ("a lorry overtook a tractor and came towards us": the lorry)
-                elif isinstance(clause_subject, _Actor) and _verb_after_and(prev, m):
+                elif isinstance(clause_subject, _Actor) and (
+                    _verb_after_and(prev, m) or _overtakers_return(prev, m, clause_subject)
+                ):
                     who = clause_subject  # ("a lorry hit the barrier and came towards us": the lorry)
                 if who is None and m.slot in ("speed", "distance") and isinstance(clause_subject, _Actor):
                     who = clause_subject  # "..., and then overtakes it at 25 km/h": the one who overtakes
@@ -3118,10 +3120,10 @@ def _specialise(
         same = ("cut_in", "cross_in_front", "run_red_light", "keep_going")  # ("... and crossed into our path")
         spec.behaviours = [("turn_across", {}, crit, link)] + [b for b in spec.behaviours[1:] if b[0] not in same]
         return
-    if a.kind != "pedestrian" and motion.comes_head_on(names, a.wrong_way, a.said, passes_another):
+    if a.kind != "pedestrian" and motion.comes_head_on(names, a.wrong_way, a.said, passes_another, a.returns):
         # (a vehicle seen coming from the other way drifts over into the ego's lane; a rider rides in it)
         in_lane = a.kind in RIDERS or sides.starts_in_ego_lane(a.said)
-        spec.behaviours = [("wrong_way", {}, crit, link)]
+        spec.behaviours = [("wrong_way", {"returns": 1.0} if a.returns else {}, crit, link)]
         spec.relation, spec.facing = ("ahead", "against") if in_lane else ("oncoming", None)
         return
     if (
@@ -3149,7 +3151,12 @@ def _specialise(
     if (
         (
             vehicle
-            or (a.kind in RIDERS and towards and first in ("cut_in", "change_lane"))  # (an oncoming rider swerving in)
+            # (an oncoming rider swerving in; one riding the wrong way, not on a path or lane of its own)
+            or (
+                a.kind in RIDERS
+                and (towards or a.wrong_way and not (a.pavement or a.own_lane))
+                and first in ("cut_in", "change_lane")
+            )
         )
         and not junction
         and (
@@ -3201,6 +3208,12 @@ def _specialise(
             spec.lateral_m = 1.2 if left else -1.2
         spec.relation = "ahead" if spec.relation != "behind" else "behind"
         spec.behaviours = head_on(spec, a.kind in RIDERS and a.wrong_way)
+
+
+def _gets_up(m) -> bool:
+    """Whether return ``m`` is getting back up or on ("fell off and got back up", "got back on his
+    bike"): standing up or remounting, not going back to its side of the road."""
+    return m.words.split()[0] in ("get", "got", "gets", "getting") and m.next_ in ("up", "on")
 
 
 def _from(m) -> bool:
@@ -3449,6 +3462,15 @@ def _verb_after_and(prev, m) -> bool:
     if m.slot != "relation" or m.value != "oncoming" or prev is None or prev.slot != "conj":
         return False
     return prev.words == "and" and _inflected_verb(m.words.split()[0])
+
+
+def _overtakers_return(prev, m, subject: _Actor) -> bool:
+    """Whether return ``m`` is said right after "and" in a clause whose subject overtakes ("tried to
+    squeeze past, met an oncoming van and had to cut back in"): going back to its lane is the
+    overtaker's second verb, not what the road user it meets (named last) does."""
+    if m.slot != "returns" or prev is None or prev.slot != "conj" or prev.words != "and":
+        return False
+    return any(b[0] == "overtake" for b in subject.behaviours)
 
 
 def _overtaken_coming(who, subject: _Actor, m) -> bool:
@@ -3753,7 +3775,7 @@ def _apply(m, who, r, link, added) -> None:
             a.wrong_way = True
         elif m.slot == "over_line":
             a.said.add("in_ego_lane")  # (partly in the other way's lane: the ego's, for one coming at it)
-        elif m.slot == "returns":
+        elif m.slot == "returns" and not _gets_up(m):
             a.returns = True
         elif m.slot == "side":
             a.goes_to = a.goes_to or (
