@@ -18,12 +18,15 @@ OUTSIDE = [
     "Our son, 12, ran out from behind a hedge and was hit by a van doing 25.",
     "We the undersigned note that a child crossing to the park was hit by a car travelling at 35 mph.",
     "I have been informed that a cyclist came off the kerb and a car doing around 30 mph clipped him.",
+    "From the bus stop we saw a van doing about 30 hit a kid who ran out from behind a hedge.",
+    "Sat on my balcony and watched a ute knock a cyclist off his bike at the roundabout.",
     "my lad was on his scooter on the high st and a car going like 40 hit him, hes ok",
 ]
 #: The writer is at a wheel of their own: the other vehicle stays a road user.
 AT_A_WHEEL = [
     "I was driving at 30 mph when a cyclist swerved out and a car doing 40 mph hit him.",
     "We were doing 50 when a walker stepped out and a van doing 40 mph struck him.",
+    "A cyclist swerved out in front of me and a taxi doing 40 mph clipped him.",
     "My car was stopped at the lights when a cyclist was hit by a van travelling at 30 mph.",
 ]
 
