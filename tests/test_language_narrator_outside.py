@@ -18,8 +18,6 @@ OUTSIDE = [
     "Our son, 12, ran out from behind a hedge and was hit by a van doing 25.",
     "We the undersigned note that a child crossing to the park was hit by a car travelling at 35 mph.",
     "I have been informed that a cyclist came off the kerb and a car doing around 30 mph clipped him.",
-    "From the bus stop we saw a van doing about 30 hit a kid who ran out from behind a hedge.",
-    "Sat on my balcony and watched a ute knock a cyclist off his bike at the roundabout.",
     "my lad was on his scooter on the high st and a car going like 40 hit him, hes ok",
 ]
 #: The writer is at a wheel of their own: the other vehicle stays a road user.

@@ -1,28 +1,26 @@
 """A first-person writer who is not in a motor vehicle of their own in the scene.
 
-"We watched a lady step out from behind a coach and a car had to brake hard", "my son was hit by a
-car doing 30", "sat in the café window: a silver Audi went straight over the crossing while a man
-was halfway across", "I cycle this road daily; a bus overtook me far too close": the writer only
-watches, reports, signs, is the parent of the one hit, or is the walker or rider themselves. The
-one motor vehicle of such a story is still the one the scenario is told from (the ego), as in a
+"We are told a taxi doing 40 mph struck a boy who ran into the road", "my son ran out and was hit
+by a van doing 25", "we the undersigned note that a child crossing was hit by a car": the writer
+only reports, signs, is told, or is the parent of the one hit. The one motor vehicle of such a story is still the one the scenario is told from (the ego), as in a
 report with no narrator at all; only a writer who may be at a wheel of their own keeps it a road
 user of its own.
 
 It is read from the narrator's part in the scanned words, not from the story's wording: the writer
-may be at a wheel when
+may be at a wheel, or on foot beside the one it happened to, when
 
 - a motor vehicle is theirs ("my car", "our van"; not "my husband's car", whose owner is someone
   else, nor "my bike", a rider's);
 - they are the subject of a verb of steering a vehicle ("I was driving", "we braked", "I pulled
   over"), or have a speed of their own ("I was doing 30", "we were at 40 km/h");
-- an act meets them ("in front of me", "came at us", "behind me") and they neither walk nor ride:
-  a vehicle then meets the writer's own.
+- an act meets them ("in front of me", "came at us", "behind me"): they are in the scene, at a wheel
+  or on foot beside the one it happened to.
 """
 
 from __future__ import annotations
 
 from vei_scenario.language.ego import FIRST_PERSON, VEHICLES, KindAt, Known, _lemma_in, _narrator_subject, _road_users
-from vei_scenario.language.narrator_vehicle import _narrator_on_foot, _narrator_speed
+from vei_scenario.language.narrator_vehicle import _narrator_speed
 
 #: Verbs of steering or handling a vehicle (by lemma): a writer who does one is at a wheel.
 AT_THE_WHEEL = frozenset(
@@ -84,14 +82,12 @@ def _steers(tokens: list[str]) -> bool:
 
 def outside(tokens: list[str], kind_at: KindAt, known: Known) -> bool:
     """Whether ``tokens`` (as scanned) have a first-person writer who is in no motor vehicle of their
-    own: they only watch, report or know the one it happened to, or walk or ride (see the module)."""
+    own: they only report, are told or know the one it happened to (see the module)."""
     words = set(tokens)
     if not (words & (FIRST_PERSON | MET | OWN)):
         return False  # (no writer: the reader's passes for reports with no narrator apply as they are)
     if _owns_a_vehicle(tokens, kind_at):
         return False
-    if _narrator_on_foot(tokens, kind_at):
-        return True  # (the walker or rider: the vehicle that meets them is the ego)
     if _steers(tokens) or _narrator_speed(tokens, _road_users(tokens, kind_at, known)):
         return False
     return not (words & MET)

@@ -43,12 +43,10 @@ _NARRATOR = frozenset(("i", "me", "my", "mine", "we", "us", "our", "ours"))
 _ON_ITS_ROAD = (None, "ahead", "behind")
 
 
-def _reported(a, spec: ActorSpec, writer_outside: bool = False) -> bool:
+def _reported(a, spec: ActorSpec) -> bool:
     """Whether motor vehicle ``spec`` (gathered as ``a``) reads as the vehicle a report is about: it
     moves, does only what the ego does, starts nowhere off its own road, and nothing sets it apart
-    (parked, standing, hiding someone, watched, followed, passed, in a group). A writer in no vehicle
-    of their own who watches it ("from the bus stop we saw a van hit a kid") watches the ego."""
-    watched = a.seen and not writer_outside
+    (parked, standing, hiding someone, watched, followed, passed, in a group)."""
     names = {b[0] for b in spec.behaviours}
     return (
         spec.kind in VEHICLES
@@ -58,7 +56,7 @@ def _reported(a, spec: ActorSpec, writer_outside: bool = False) -> bool:
         and not (spec.relation == "ahead" and names & _BRAKING)
         and spec.lateral_m is None
         and (spec.speed_mps is None or spec.speed_mps > 0.0)
-        and not (a.parked or a.stationary or a.hides or watched or a.followed or a.passed)
+        and not (a.parked or a.stationary or a.hides or a.seen or a.followed or a.passed)
         and not (a.group or a.member_named or a.side or a.lane_side or a.kerb_side or a.from_arm or a.beside)
     )
 
@@ -86,6 +84,6 @@ def merge_report_vehicle(
         return actors
     if ego_phrase and actors[k].det in NEW:
         return actors  # ("The VUT drives at 50 km/h. A car travelling at 60 km/h ...": someone else)
-    if not _reported(actors[k], specs[k], writer_outside) or not take_as_ego(reading, k):
+    if not _reported(actors[k], specs[k]) or not take_as_ego(reading, k):
         return actors
     return without_road_user(actors, reading, k)
