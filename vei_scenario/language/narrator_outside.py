@@ -2,9 +2,9 @@
 
 "We are told a taxi doing 40 mph struck a boy who ran into the road", "my son ran out and was hit
 by a van doing 25", "we the undersigned note that a child crossing was hit by a car": the writer
-only reports, signs, is told, or is the parent of the one hit. The one motor vehicle of such a story is still the one the scenario is told from (the ego), as in a
-report with no narrator at all; only a writer who may be at a wheel of their own keeps it a road
-user of its own.
+only reports, signs, is told, or is the parent of the one hit. The one motor vehicle of such a
+story is still the one the scenario is told from (the ego), as in a report with no narrator at all;
+only a writer who may be at a wheel of their own keeps it a road user of its own.
 
 It is read from the narrator's part in the scanned words, not from the story's wording: the writer
 may be at a wheel, or on foot beside the one it happened to, when
