@@ -45,6 +45,7 @@ from vei_scenario.language import (
     kind_in_general,
     lane_moves,
     motion,
+    narrator_outside,
     narrator_ride,
     narrator_vehicle,
     no_lane_beside,
@@ -2707,7 +2708,9 @@ def _read(text: str) -> Reading:
         actors = ego_turner.merge_turner_into_ego(actors, r, unnamed)  # ("the test car turns right; a rider ...")
         actors = ego_turner.merge_overtaken_into_ego(actors, r, scanned)  # ("a cyclist overtaking the bus")
         phrase = ego_double.ego_phrase(clauses)  # ("the VUT": one brought in as new is someone else)
-        actors = report_vehicle.merge_report_vehicle(actors, r, text, phrase)  # ("a Fiesta driven by ... braked")
+        outside = narrator_outside.outside(scanned, _kind_at, _known)  # ("we watched ...", "my son was hit by ...")
+        phrase = phrase and not outside  # ("we are told ...": the writer, not an ego phrase)
+        actors = report_vehicle.merge_report_vehicle(actors, r, text, phrase, outside)  # ("a Fiesta driven by")
     actors = ego_double.drop_both_said_again(actors, r)  # ("a van cut the corner. Both drivers braked hard")
     actors = crowds.drop_crowds(actors, r)  # ("there were kids everywhere, and a cyclist pulled out")
     actors = kind_in_general.drop_kinds_in_general(actors, r, scanned)  # ("e-scooters are a menace. A rider shot out")

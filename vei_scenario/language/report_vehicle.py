@@ -71,15 +71,19 @@ def _names(spec: ActorSpec) -> frozenset[str]:
     return frozenset(b[0] for b in spec.behaviours)
 
 
-def merge_report_vehicle(actors: list, reading: Reading, text: str, ego_phrase: bool = False) -> list:
+def merge_report_vehicle(
+    actors: list, reading: Reading, text: str, ego_phrase: bool = False, writer_outside: bool = False
+) -> list:
     """Take out of ``reading`` the one motor vehicle of a report with no narrator (``text`` has no word
     of the first person: the reader's own words read "you" as one) whose other road users are all
     walkers or riders (see the module): it is the ego, its speed the ego's where none was read.
     ``actors`` are what the reader gathered of its road users, in the same order; ``ego_phrase``: a
     phrase names the ego ("the VUT"), and one brought in as new ("a car") is someone else. Returns
-    ``actors`` without it."""
+    ``actors`` without it. ``writer_outside``: the text's writer is in no motor vehicle of their own
+    (:mod:`vei_scenario.language.narrator_outside`), and the text is told as if it had no narrator."""
     specs = reading.actors
-    if _NARRATOR & set(re.findall(r"[a-z]+", text.lower())) or len(specs) < 2:
+    narrated = not writer_outside and _NARRATOR & set(re.findall(r"[a-z]+", text.lower()))
+    if narrated or len(specs) < 2:
         return actors
     movers = [k for k, s in enumerate(specs) if s.kind in VEHICLES and not stands_there(s)]
     if len(movers) != 1:
