@@ -52,6 +52,7 @@ from vei_scenario.language import (
     report_vehicle,
     run_on,
     said_again,
+    scene_pace,
     scenery,
     sides,
     whose_act,
@@ -2714,6 +2715,7 @@ def _read(text: str) -> Reading:
         r.intent = "safe"  # (nobody but the ego: nothing it could meet)
     tight_cut_ins(r.actors, r.ego_speed_mps, r.intent)  # ("cut in 5 m in front of me at 60 mph": dangerous)
     Q.struck_at_rest(r.actors, r.ego_speed_mps, r.intent)  # ("I was waiting at the lights when a van hit me")
+    scene_pace.ego_at_the_scene_pace(r, any(a.passed for a in actors))  # ("he hit the scooter doing 30")
     r.lanes = stated_lanes(said) or r.lanes
     oncoming = any(s.relation == "oncoming" or any(b[0] == "wrong_way" for b in s.behaviours) for s in r.actors)
     r.lanes = S.lanes_of_two_way_road(said, oncoming) or S.lanes_counted(said) or r.lanes
