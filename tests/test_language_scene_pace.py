@@ -40,3 +40,30 @@ def test_no_speed_of_the_scene_where_the_ego_does_not_share_it(text: str) -> Non
 
 def test_the_egos_own_speed_wins() -> None:
     assert ego_kph("I was doing 50 km/h when a scooter at 20 km/h pulled out ahead.") == pytest.approx(50)
+
+
+#: A text opening with a verb's base form and a number names a numbered part of it (a heading), no speed.
+HEADINGS = [
+    "Drive 3 - please read carefully. A cyclist will pull out of a side road on your left.",
+    "Run 2: an e-scooter rider crosses the road in front of you from the right kerb.",
+    "Go 4 - a pedestrian steps out between parked cars on your left.",
+    "Ride 1. A car pulls out of a driveway on your right in front of you.",
+    "Drive 12 — at the crossroads a van turns across your path.",
+]
+
+
+@pytest.mark.parametrize("text", HEADINGS)
+def test_a_heading_number_is_no_speed(text: str) -> None:
+    assert ego_kph(text) is None
+
+
+#: Near misses: the verb said as the narrator's own going, with its speed.
+OPENED_WITH_A_SPEED = [
+    ("Driving 30, a kid on a scooter shot out in front of me.", 30),
+    ("Going 40 when a van pulled out of a side road on my left.", 40),
+]
+
+
+@pytest.mark.parametrize(("text", "kph"), OPENED_WITH_A_SPEED)
+def test_a_speed_opening_a_text_is_still_the_egos(text: str, kph: float) -> None:
+    assert ego_kph(text) == pytest.approx(kph, abs=0.2)
