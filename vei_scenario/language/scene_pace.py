@@ -32,11 +32,11 @@ def ego_at_the_scene_pace(r: Reading, ego_passes: bool) -> None:
     docstring for why and for the guards). ``ego_passes``: the reading has the ego pass a road user."""
     if r.ego_speed_mps is not None or ego_passes:
         return
-    speeds = {round(a.speed_mps, 3) for a in r.actors if a.speed_mps is not None and a.speed_mps > 0}
-    if len(speeds) != 1:
+    speeds = [a.speed_mps for a in r.actors if a.speed_mps is not None and a.speed_mps > 0]
+    if not speeds or max(speeds) - min(speeds) > 0.01:  # (one speed, said of one road user or of several)
         return
     if any(b[0] in PASSING for a in r.actors for b in a.behaviours):
         return
-    (speed,) = speeds
+    speed = speeds[0]
     if speed > WALKING_PACE_MPS:
         r.ego_speed_mps = speed
