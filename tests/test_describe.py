@@ -319,11 +319,10 @@ def test_both_cars_before_anyone_are_the_ego_and_one_more():
         ("A truck 30 m in front of us at 60 km/h stops.", 60, "truck", "ahead", 60, ["stop"]),
         ("The ego drives at 80 km/h; a car ahead of the ego at 30 km/h brakes.", 80, "car", "ahead", 30,
          ["sudden_stop"]),
-        # (the one speed of the scene, the ego's none said: the ego goes at it too, scene_pace)
-        ("A cyclist ahead of the ego at 20 km/h falls.", 20, "bicycle", "ahead", 20, ["sudden_stop"]),
+        ("A cyclist ahead of the ego at 20 km/h falls.", None, "bicycle", "ahead", 20, ["sudden_stop"]),
         # "slow" before a road user is how fast it goes (before: a slowing), not the ego's speed
         ("A slow truck ahead.", None, "truck", "ahead", -0.7, ["keep_going"]),  # (said where, not what: it goes on)
-        ("A slow truck ahead of us at 30 km/h brakes.", 30, "truck", "ahead", 30, ["sudden_stop"]),
+        ("A slow truck ahead of us at 30 km/h brakes.", None, "truck", "ahead", 30, ["sudden_stop"]),
         ("A slow-moving tractor in front brakes.", None, "truck", "ahead", -0.6, ["sudden_stop"]),
         ("The truck in front is very slow and then stops.", None, "truck", "ahead", -0.7, ["stop"]),
         # the ego said to be behind someone: that one is ahead (before: no place), and the other way round

@@ -5,6 +5,14 @@ from __future__ import annotations
 import pytest
 
 from tests.reading_of import ego_kph
+from vei_scenario.language.reader import read
+from vei_scenario.language.rules_backend import layers_from_text
+
+
+def layers_ego_kph(text: str) -> float:
+    """The ego's speed in the layers of ``text`` (seed 0), km/h."""
+    return float(layers_from_text(text, 0)["ego"]["speed_mps"]) * 3.6
+
 
 #: The ego's speed said where no grammar of the reader places it: the only speed of the scene.
 SAID_OF_THE_SCENE = [
@@ -18,7 +26,7 @@ SAID_OF_THE_SCENE = [
 
 @pytest.mark.parametrize(("text", "kph"), SAID_OF_THE_SCENE)
 def test_the_one_speed_of_the_scene_is_the_egos_when_none_is_read(text: str, kph: float) -> None:
-    assert ego_kph(text) == pytest.approx(kph, abs=0.2)
+    assert layers_ego_kph(text) == pytest.approx(kph, abs=0.2)
 
 
 #: Near misses: a speed the ego does not share, or one the ego's own already stands beside.
@@ -35,11 +43,18 @@ NOT_THE_EGOS = [
 
 @pytest.mark.parametrize("text", NOT_THE_EGOS)
 def test_no_speed_of_the_scene_where_the_ego_does_not_share_it(text: str) -> None:
-    assert ego_kph(text) is None
+    r = read(text)
+    assert r.ego_speed_mps is None and r.scene_pace_mps is None
 
 
 def test_the_egos_own_speed_wins() -> None:
-    assert ego_kph("I was doing 50 km/h when a scooter at 20 km/h pulled out ahead.") == pytest.approx(50)
+    assert layers_ego_kph("I was doing 50 km/h when a scooter at 20 km/h pulled out ahead.") == pytest.approx(50, abs=0.2)
+
+
+def test_the_reading_keeps_the_egos_speed_unsaid() -> None:
+    """The scene's pace is the layers' default, not a speed the text says of the ego."""
+    r = read("Test: no AEB response to a cyclist pulling out from the left kerb @ 40 kph, dry, daylight.")
+    assert r.ego_speed_mps is None and r.scene_pace_mps == pytest.approx(40 / 3.6)
 
 
 #: A text opening with a verb's base form and a number names a numbered part of it (a heading), no speed.

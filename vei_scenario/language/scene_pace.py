@@ -5,7 +5,9 @@ e-scooter crossing @ 30 kph", "he T-boned the scooter doing roughly 30kph", "She
 "(ego straight, 50 km/h)") leave the reading with a speed on the road user named nearest and none on
 the ego, which then gets a default that nothing in the text says. The one speed said of the scene is
 better evidence of the ego's pace than none: the ego drives in the same traffic as the road user it
-meets, and a writer whose ego went at a very different pace says so. The road user keeps its speed.
+meets, and a writer whose ego went at a very different pace says so. The road user keeps its speed,
+and the reading's ego speed stays unsaid: the scene's pace is only the default the layers give the ego
+in place of one drawn at random.
 
 Guards, each with its reason:
 
@@ -28,8 +30,9 @@ PASSING = frozenset({"overtake"})
 
 
 def ego_at_the_scene_pace(r: Reading, ego_passes: bool) -> None:
-    """Give ``r``'s ego the one speed said of a road user when none is read for the ego (see the module
-    docstring for why and for the guards). ``ego_passes``: the reading has the ego pass a road user."""
+    """Set ``r``'s scene pace, the ego's default speed in the layers, to the one speed said of a road user
+    when none is read for the ego (see the module docstring for why and for the guards); the reading's
+    own ego speed stays unsaid. ``ego_passes``: the reading has the ego pass a road user."""
     if r.ego_speed_mps is not None or ego_passes:
         return
     speeds = [a.speed_mps for a in r.actors if a.speed_mps is not None and a.speed_mps > 0]
@@ -39,4 +42,4 @@ def ego_at_the_scene_pace(r: Reading, ego_passes: bool) -> None:
         return
     speed = speeds[0]
     if speed > WALKING_PACE_MPS:
-        r.ego_speed_mps = speed
+        r.scene_pace_mps = speed
