@@ -48,7 +48,9 @@ def test_no_speed_of_the_scene_where_the_ego_does_not_share_it(text: str) -> Non
 
 
 def test_the_egos_own_speed_wins() -> None:
-    assert layers_ego_kph("I was doing 50 km/h when a scooter at 20 km/h pulled out ahead.") == pytest.approx(50, abs=0.2)
+    assert layers_ego_kph("I was doing 50 km/h when a scooter at 20 km/h pulled out ahead.") == pytest.approx(
+        50, abs=0.2
+    )
 
 
 def test_the_reading_keeps_the_egos_speed_unsaid() -> None:
