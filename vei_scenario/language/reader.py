@@ -54,6 +54,7 @@ from vei_scenario.language import (
     report_vehicle,
     run_on,
     said_again,
+    scene_pace,
     scenery,
     sides,
     whose_act,
@@ -710,6 +711,8 @@ def _number(tokens: list[str], i: int, imperial: bool = False, metric: bool = Fa
     ends = nxt in ("", ".", ",", ";", "!", "?", "and", "then", "when", "while", "but")
     hedged = prev != tokens[i - 1]  # ("going well over 60 passes me": a speed, however the clause goes on)
     where = prev in _MOTION_BEFORE_SPEED and nxt in Q.WHERE_AFTER_SPEED  # ("going 40 down the high street")
+    if i == 1 and tokens[0] in _HEADING_VERBS:
+        return "skip", value, 1  # ("Drive 3 - please read": the heading's number, no speed)
     if (prev in _MOTION_BEFORE_SPEED or Q.after_ego(tokens, i)) and 3 <= value <= 250 and (ends or hedged or where):
         return "speed", value * Q.carried_unit(tokens, i, imperial, metric), 1
     return "unknown", value, 1
@@ -725,6 +728,10 @@ def _changes_speed_before(tokens: list[str], k: int) -> bool:
     return False
 
 
+#: Verbs of going in the base form, which opening a text before a bare number name a numbered part of
+#: it, a heading ("Drive 3 - please read", "Run 2:"), not a speed: a writer opening with their speed says
+#: the verb's -ing or past form ("Driving 30, a kid ...", "Drove 40 down ...") or a unit.
+_HEADING_VERBS = frozenset({"drive", "go", "travel", "run", "ride"})
 #: Verbs of going after which a bare number is a speed ("the ego goes 50, ...", "driving 30 when").
 _MOTION_BEFORE_SPEED = frozenset(
     "go goes going went drive drives driving drove travel travels travelling traveling travelled traveled".split()
@@ -2721,6 +2728,7 @@ def _read(text: str) -> Reading:
         r.intent = "safe"  # (nobody but the ego: nothing it could meet)
     tight_cut_ins(r.actors, r.ego_speed_mps, r.intent)  # ("cut in 5 m in front of me at 60 mph": dangerous)
     Q.struck_at_rest(r.actors, r.ego_speed_mps, r.intent)  # ("I was waiting at the lights when a van hit me")
+    scene_pace.ego_at_the_scene_pace(r, any(a.passed for a in actors))  # ("he hit the scooter doing 30")
     r.lanes = stated_lanes(said) or r.lanes
     oncoming = any(s.relation == "oncoming" or any(b[0] == "wrong_way" for b in s.behaviours) for s in r.actors)
     r.lanes = S.lanes_of_two_way_road(said, oncoming) or S.lanes_counted(said) or r.lanes

@@ -54,6 +54,9 @@ class Reading:
     intent: str | None = None
     ego_route: str | None = None
     ego_speed_mps: float | None = None
+    #: The one speed said of the scene, on a road user, where the ego's own is not said: the ego's
+    #: default speed in the layers (scene_pace), in place of one drawn at random.
+    scene_pace_mps: float | None = None
     ego_relation: str | None = None
     actors: list[ActorSpec] = field(default_factory=list)
     ignored: list[str] = field(default_factory=list)  # words read past: nothing in the layers holds them
