@@ -74,7 +74,7 @@ INDEPENDENT = {
     ROOT / "tests" / "data" / "language_independent_z5.json": (50, 19),
     ROOT / "tests" / "data" / "language_independent_z6.json": (50, 23),
     ROOT / "tests" / "data" / "language_independent_z7.json": (50, 11),
-    ROOT / "tests" / "data" / "language_independent_z8.json": (50, 14),
+    ROOT / "tests" / "data" / "language_independent_z8.json": (50, 13),
     ROOT / "tests" / "data" / "language_independent_z9.json": (50, 32),
     ROOT / "tests" / "data" / "language_independent_z10.json": (50, 16),
     ROOT / "tests" / "data" / "language_independent_z11.json": (50, 17),

@@ -84,3 +84,27 @@ OPENED_WITH_A_SPEED = [
 @pytest.mark.parametrize(("text", "kph"), OPENED_WITH_A_SPEED)
 def test_a_speed_opening_a_text_is_still_the_egos(text: str, kph: float) -> None:
     assert ego_kph(text) == pytest.approx(kph, abs=0.2)
+
+
+def test_a_stated_ego_speed_draws_nothing_so_every_later_draw_stays_as_it_was(monkeypatch) -> None:
+    """The ego's speed is drawn only where none is read (from the text or the scene's pace): a stated
+    one takes no draw, so the scenarios of a text that states it keep the details they always had."""
+    from vei_scenario.language import rules_backend
+
+    calls: list[tuple[float, float]] = []
+    real = rules_backend._u
+
+    def counting(rng, lo: float, hi: float) -> float:
+        calls.append((lo, hi))
+        return real(rng, lo, hi)
+
+    monkeypatch.setattr(rules_backend, "_u", counting)
+    text = "A car overtakes me and cuts back in on a straight road."
+    unsaid = read(text)
+    rules_backend.sample_layers(unsaid, text, 0)
+    drawn_unsaid = len(calls)
+    calls.clear()
+    said = read("I am doing 80 km/h. " + text)
+    assert said.ego_speed_mps is not None and unsaid.ego_speed_mps is None
+    rules_backend.sample_layers(said, text, 0)
+    assert len(calls) == drawn_unsaid - 1

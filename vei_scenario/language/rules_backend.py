@@ -109,9 +109,10 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
         "roundabout": "before_roundabout",
     }[kind]
     lo, hi = {"straight": (13.0, 17.0), "curve": (11.0, 15.0)}.get(kind, (10.0, 13.0))
-    drawn = _u(rng, lo, hi)  # (drawn always: what is drawn after it stays as it was)
-    default = reading.scene_pace_mps if reading.scene_pace_mps is not None else drawn  # (the scene's one speed)
-    ego_speed = reading.ego_speed_mps if reading.ego_speed_mps is not None else default
+    ego_speed = reading.ego_speed_mps
+    if ego_speed is None:  # (drawn only here, as it always was: what is drawn after it stays as it was)
+        drawn = _u(rng, lo, hi)
+        ego_speed = reading.scene_pace_mps if reading.scene_pace_mps is not None else drawn  # (the scene's one)
     if reading.ego_speed_mps is None:
         ego_speed = min([ego_speed] + [_passable_mps(a.kind) for a in reading.actors if _passes_ego(a)])
     ego_speed = min(max(ego_speed, 0.0), MAX_SPEED_MPS)
