@@ -112,3 +112,13 @@ def test_a_rider_going_the_wrong_way_that_swerves_comes_head_on(text):
 def test_a_rider_the_wrong_way_off_a_path_of_its_own_is_no_head_on_ride(text):
     _, names, _ = _first(text)
     assert names[0] != "wrong_way"
+
+
+def test_a_standstill_said_beside_a_wrong_way_road_user_is_not_its_speed() -> None:
+    """One that comes at the ego moves: a stop said near it ("He stopped", the driver it met) is not
+    its speed, which would leave it standing where it should come head-on."""
+    [spec] = read(
+        "A van came at me on my side of the road, overtaking a queue. He stopped; the van pulled back in."
+    ).actors
+    assert spec.behaviours[0][0] == "wrong_way"
+    assert spec.speed_mps != 0.0

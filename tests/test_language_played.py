@@ -106,6 +106,24 @@ def test_a_rider_along_the_ego_s_road_keeps_to_it_when_the_ego_turns_off(text, t
 @pytest.mark.parametrize(
     "text",
     [
+        "I was stopped at the lights when an e-scooter rider crossed in front of me from the right.",
+        "Our bus was stationary at the stop and a lad ran across the road in front of it from the left.",
+        "The ego stands still at 0 km/h; a cyclist rides across in front of it from the right.",
+    ],
+)
+def test_a_crossing_in_front_of_an_ego_that_stands_gets_across(text, tmp_path):
+    """A crossing is timed to meet the ego as it comes; an ego that stands never comes closer, so the
+    road user crosses in front of it at once rather than waiting at the kerb for ever."""
+    layers = layers_from_text(text, 0)
+    assert layers["ego"]["speed_mps"] == 0.0
+    [adv] = layers["adversaries"]
+    assert adv["behaviour"]["behaviour"] == "cross_in_front"
+    assert played_problems(play_layers(layers, tmp_path), layers) == []
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
         "On a twisty road at 90 km/h a fox darts across from the right in front of the ego.",
         "The ego rounds a long bend at 70 km/h when a man steps out from the left verge and walks across.",
         "Driving 75 km/h through a sweeping curve, the ego meets a boy running over the road from the left.",

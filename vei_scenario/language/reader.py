@@ -3136,6 +3136,8 @@ def _specialise(
         in_lane = a.kind in RIDERS or sides.starts_in_ego_lane(a.said)
         spec.behaviours = [("wrong_way", {"returns": 1.0} if a.returns else {}, crit, link)]
         spec.relation, spec.facing = ("ahead", "against") if in_lane else ("oncoming", None)
+        if spec.speed_mps == 0.0:  # (it comes at the ego: a standstill read on it is someone else's)
+            spec.speed_mps = None  # ("the van came at him on his side. He stopped; the van pulled back in")
         return
     if (
         junction

@@ -48,6 +48,15 @@ def trigger_distance_m(ctx: ActorContext, cfg: dict) -> float:
     return trigger_distance(ctx.ego_speed_mps, ctx.crossing_distance_m or 0.0, v, ctx.actor_max_accel_mps2, gap)
 
 
+#: Below this speed (m/s) the ego stands: a crossing timed to meet it would wait for it for ever.
+EGO_AT_REST_MPS = 0.5
+
+
+def _ego_at_rest(ctx: ActorContext) -> bool:
+    """Whether the ego stands still ("I was stopped at the lights when a rider crossed in front")."""
+    return ctx.ego_speed_mps < EGO_AT_REST_MPS
+
+
 #: Lane width the writer's maps use (m): a crossing from a lane measures its way across in lanes.
 LANE_WIDTH_M = 3.5
 
@@ -77,6 +86,8 @@ def across_from_lane(ctx: ActorContext, cfg: dict) -> list[Step]:
     gap = value(cfg, PARAMETERS, "arrival_gap_s")
     trigger = Condition("ego_within", round(max(1.0, ctx.ego_speed_mps * (duration / 2 + max(gap, 0.0))), 2))
     actions = [change] + ([speed_action(v, rate=v / START_RAMP_S)] if ctx.actor_speed_mps < 0.5 else [])
+    if _ego_at_rest(ctx):  # (nothing to time against: it crosses in front of the standing ego at once)
+        return [Step("cross", actions, fallback_s=2.0)]
     return [Step("cross", actions, conditions=[trigger], fallback_s=2.0)]
 
 
@@ -99,7 +110,9 @@ def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
         actions.append(xosc.ActivateControllerAction(lateral=True, longitudinal=True))
     # what follows a crossing ("... and stops in the middle of the lane") starts in the ego's lane
     in_lane_s = round((ctx.crossing_distance_m or 0.0) / v + ramp / 2, 3)
-    if cfg.get("immediately"):  # (after giving way: it goes as soon as the ego has passed)
+    if cfg.get("immediately") or _ego_at_rest(ctx):
+        # (after giving way it goes as soon as the ego has passed; in front of an ego that stands
+        # there is nothing to time against, and an ego that never comes closer would never set it off)
         return [Step("cross", actions, hold_s=in_lane_s)]
     trigger = Condition("ego_within", round(trigger_distance_m(ctx, cfg), 2))
     return [Step("cross", actions, conditions=[trigger], hold_s=in_lane_s)]
