@@ -14,7 +14,9 @@ may be at a wheel, or on foot beside the one it happened to, when
 - they are the subject of a verb of steering a vehicle ("I was driving", "we braked", "I pulled
   over"), or have a speed of their own ("I was doing 30", "we were at 40 km/h");
 - an act meets them ("in front of me", "came at us", "behind me"): they are in the scene, at a wheel
-  or on foot beside the one it happened to.
+  or on foot beside the one it happened to;
+- they are placed on the road, behind, beside or ahead of someone or in its traffic ("I was behind my
+  neighbour's car", "we were stuck in traffic behind a bus").
 """
 
 from __future__ import annotations
@@ -50,6 +52,11 @@ AT_THE_WHEEL = frozenset(
 AT_A_SPEED = frozenset({"do", "go", "travel", "cruise"})
 #: First-person words of one an act meets ("in front of me", "towards us").
 MET = frozenset({"me", "us", "myself", "ourselves"})
+#: Words that place their subject on the road beside a road user or in its traffic ("I was behind my
+#: neighbour's car", "we were stuck in traffic behind a bus", "we sat in the queue").
+ON_THE_ROAD = frozenset({"behind", "beside", "alongside", "ahead", "next", "traffic", "queue", "queueing", "queuing"})
+#: What ends the clause a writer is the subject of, for the words that place them.
+_CLAUSE_END = frozenset({".", ",", ";", ":", "!", "?", "when", "while", "and", "but", "as", "until"})
 #: Possessives of the writer.
 OWN = frozenset({"my", "our"})
 
@@ -80,6 +87,20 @@ def _steers(tokens: list[str]) -> bool:
     )
 
 
+def _placed_on_the_road(tokens: list[str]) -> bool:
+    """Whether the writer, as the subject of a clause, is placed on the road: behind, beside or ahead
+    of someone, or in its traffic or queue ("I was behind a car when ...", "we were stuck in traffic")."""
+    for f, w in enumerate(tokens):
+        if w not in ("i", "we"):
+            continue
+        for nxt in tokens[f + 1 : f + 7]:
+            if nxt in _CLAUSE_END:
+                break
+            if nxt in ON_THE_ROAD:
+                return True
+    return False
+
+
 def outside(tokens: list[str], kind_at: KindAt, known: Known) -> bool:
     """Whether ``tokens`` (as scanned) have a first-person writer who is in no motor vehicle of their
     own: they only report, are told or know the one it happened to (see the module)."""
@@ -90,4 +111,6 @@ def outside(tokens: list[str], kind_at: KindAt, known: Known) -> bool:
         return False
     if _steers(tokens) or _narrator_speed(tokens, _road_users(tokens, kind_at, known)):
         return False
+    if _placed_on_the_road(tokens):
+        return False  # ("we were stuck in traffic behind a bus when ...": the writer is on the road)
     return not (words & MET)
