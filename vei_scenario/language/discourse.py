@@ -99,7 +99,7 @@ class Referent:
 
 
 @dataclass
-class _Phrase:
+class Phrase:
     start: int  # its determiner, or its first word
     head: int  # the road-user phrase
     end: int  # after it
@@ -107,7 +107,7 @@ class _Phrase:
     kind: str
 
 
-def _phrase_at(tokens: list[str], i: int, kind_at: KindAt, known: Known, reach: int = 3) -> _Phrase | None:
+def _phrase_at(tokens: list[str], i: int, kind_at: KindAt, known: Known, reach: int = 3) -> Phrase | None:
     """The noun phrase whose road-user noun starts at ``i``: its determiner (within ``reach`` words
     before, past modifiers the reader has no phrase for) and its type."""
     found = kind_at(tokens, i)
@@ -122,10 +122,10 @@ def _phrase_at(tokens: list[str], i: int, kind_at: KindAt, known: Known, reach: 
             break
         if w in PUNCT or not w.replace("-", "").isalpha() or (known(tokens, j) and w not in COLOURS):
             break
-    return _Phrase(start, i, i + n, det, kind)
+    return Phrase(start, i, i + n, det, kind)
 
 
-def _phrases(tokens: list[str], kind_at: KindAt, known: Known) -> list[_Phrase]:
+def road_user_phrases(tokens: list[str], kind_at: KindAt, known: Known) -> list[Phrase]:
     out, i = [], 0
     while i < len(tokens):
         p = _phrase_at(tokens, i, kind_at, known)
@@ -239,7 +239,7 @@ _A_PLACE = frozenset({"between", "behind", "among", "amongst", "in", "beyond", "
 _CLAUSE_ENDS = frozenset({"and", "but", "so", "which", "who", "while", "when", "whereas", "because"})
 
 
-def _ridden_kind(tokens: list[str], p: _Phrase, kind_at: KindAt) -> tuple[str, int]:
+def _ridden_kind(tokens: list[str], p: Phrase, kind_at: KindAt) -> tuple[str, int]:
     """The type a person's phrase names and where it ends, counting what they ride ("teenagers on
     e-bikes", "a teenager on an e-bike": a bicycle's)."""
     k = p.end
@@ -273,7 +273,7 @@ def _infinitive(tokens: list[str], j: int) -> bool:
     return tokens[j] == "to" and nxt in lemmas(nxt).get("VERB", ())
 
 
-def _new_one(tokens: list[str], p: _Phrase) -> bool:
+def _new_one(tokens: list[str], p: Phrase) -> bool:
     """Whether phrase ``p`` opens with "a" or "an", past up to two modifiers the reader has words for
     ("a racing bike", "a slow jogger"), with no clause mark between."""
     if p.det in ("a", "an") or tokens[p.head] in SOMEONE:
@@ -303,13 +303,13 @@ def _generic_plurals(tokens: list[str], kind_at: KindAt, known: Known, dropped: 
     of a type do in general; when the first road user of that type named after it is a new one ("a
     child"), that one is the scenario's, and the plural's clause is left out (listed as not used). A
     plural with nothing after it, or said again first as known ("the van"), is the road user itself."""
-    phrases = _phrases(tokens, kind_at, known)
+    phrases = road_user_phrases(tokens, kind_at, known)
     cut: list[tuple[int, int]] = []
     for n, p in enumerate(phrases):
         before = tokens[p.start - 1] if p.start else ""
         if cut and p.start < cut[-1][1]:
             continue  # (what a plural rides: "on e-bikes", inside the clause already left out)
-        if p.det or p.kind == "ego" or _singular(tokens[p.end - 1]) or before in _COUNTED or before.isdigit():
+        if p.det or p.kind == "ego" or is_singular(tokens[p.end - 1]) or before in _COUNTED or before.isdigit():
             continue
         if any(
             (w in _A_PLACE or w in _PLACE_BEFORE) and not _infinitive(tokens, j)
@@ -322,7 +322,7 @@ def _generic_plurals(tokens: list[str], kind_at: KindAt, known: Known, dropped: 
         later = next(
             (q for q in phrases[n + 1 :] if q.start >= end and _ridden_kind(tokens, q, kind_at)[0] == kind), None
         )
-        if later is None or not _new_one(tokens, later) or not _singular(tokens[later.end - 1]):
+        if later is None or not _new_one(tokens, later) or not is_singular(tokens[later.end - 1]):
             continue
         stop = end  # (to the clause's end, or a place: "stepping out between parked cars" keeps the cars)
         while stop < len(tokens) and not (
@@ -600,7 +600,7 @@ def _last_ridden(tokens: list[str], i: int, kind_at: KindAt) -> str | None:
         if tokens[h] in SENTENCE_END:
             return None
         found = kind_at(tokens, h)
-        if found is not None and found[1] == 1 and found[0] in _RIDDEN and _singular(tokens[h]):
+        if found is not None and found[1] == 1 and found[0] in _RIDDEN and is_singular(tokens[h]):
             return tokens[h]
     return None
 
@@ -618,7 +618,7 @@ def shared_vehicles(tokens: list[str], kind_at: KindAt, known: Known) -> list[st
             one = next((o for o in _ONE_VEHICLE if out[end + 1 : end + 1 + len(o)] == o), None)
             at = end + 1 + len(one) if one is not None else len(out)
             found = kind_at(out, at) if at < len(out) else None
-            if found is not None and found[0] in _RIDDEN and _singular(out[at + found[1] - 1]):
+            if found is not None and found[0] in _RIDDEN and is_singular(out[at + found[1] - 1]):
                 out[i:at] = ["a"]
         if out[i] == "another" and i and out[i - 1] in ("on", "riding") and kind_at(out, i + 1) is None:
             ridden = _last_ridden(out, i, kind_at)
@@ -634,7 +634,7 @@ def _riders_own(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
     one road user; its words go (they were read). Only a vehicle of the rider's own type, or "bike"
     under a motor two-wheeler's rider, after an article and up to two modifiers."""
     out = list(tokens)
-    for p in reversed(_phrases(tokens, kind_at, known)):
+    for p in reversed(road_user_phrases(tokens, kind_at, known)):
         if p.kind in ("pedestrian", "ego") or p.end + 1 >= len(out) or out[p.end] not in ("on", "riding"):
             continue
         j = p.end + 1
@@ -873,7 +873,7 @@ COLOURS = frozenset(
 SHADES = frozenset({"dark", "light", "pale", "bright", "deep"})
 
 
-def _apposition_end(tokens: list[str], i: int, kind_at: KindAt, known: Known, most: int = 3) -> int | None:
+def apposition_end(tokens: list[str], i: int, kind_at: KindAt, known: Known, most: int = 3) -> int | None:
     """Where an apposition starting at ``i`` ends (", a tiny Fiat," / "a battered old Ford"): an
     indefinite article, up to ``most`` words that are vehicle nouns or words the reader has no phrase
     for, then a punctuation mark or the end."""
@@ -928,7 +928,7 @@ def _own_vehicle(tokens: list[str], kind_at: KindAt, known: Known, dropped: list
             dropped.extend(out[p.start : p.end])
             out[p.start : p.end] = ["the", "ego"]
             after = p.start + 2
-            end = _apposition_end(out, after, kind_at, known)
+            end = apposition_end(out, after, kind_at, known)
             if end is not None:
                 dropped.extend(w for w in out[after:end] if w != ",")
                 del out[after:end]
@@ -1035,7 +1035,7 @@ def _ego_apposition(tokens: list[str], kind_at: KindAt, known: Known, dropped: l
         found = kind_at(out, i)
         n = found[1] if found is not None and found[0] == "ego" and out[i] not in PRONOUNS_EGO else 0
         if n and i + n < len(out) and out[i + n] == ",":
-            end = _apposition_end(out, i + n, kind_at, known, most=5)
+            end = apposition_end(out, i + n, kind_at, known, most=5)
             end = _definite_apposition_end(out, i + n, kind_at, known) if end is None else end
             if end is not None:
                 dropped.extend(out[i + n + 1 : end])
@@ -1051,7 +1051,7 @@ SUBJECT_ENDINGS = (("under",), ("in", "question"), ("involved",), ("concerned",)
 
 def _definite_apposition_end(tokens: list[str], i: int, kind_at: KindAt, known: Known) -> int | None:
     """Where an apposition with "the" after the ego's name ends (", the blue Ford Focus," / ", the
-    Ford Transit under examination,"), as :func:`_apposition_end` reads one with "a": it may end with
+    Ford Transit under examination,"), as :func:`apposition_end` reads one with "a": it may end with
     a report's closed ending for the vehicle examined (:data:`SUBJECT_ENDINGS`), and a list ("the ego,
     the van, and a cyclist") is none."""
     if tokens[i : i + 2] != [",", "the"]:
@@ -1067,7 +1067,7 @@ def _definite_apposition_end(tokens: list[str], i: int, kind_at: KindAt, known: 
             break
     tail = [*words[1:], ","]
     swapped = [",", "a", *tail]
-    end = _apposition_end(swapped, 0, kind_at, known, most=5)
+    end = apposition_end(swapped, 0, kind_at, known, most=5)
     return close if end == len(swapped) - 1 else None
 
 
@@ -1103,11 +1103,11 @@ def _placed_apposition(tokens: list[str], kind_at: KindAt, known: Known, dropped
             i += 1
             continue
         comma = next((k for k in range(p.end, min(p.end + 6, len(out))) if out[k] in PUNCT), None)
-        end = _apposition_end(out, comma, kind_at, known) if comma is not None and out[comma] == "," else None
+        end = apposition_end(out, comma, kind_at, known) if comma is not None and out[comma] == "," else None
         if end is None or not _placement(out[p.end : comma]) or end >= len(out) or out[end] != ",":
             i = p.end
             continue
-        q = next((x for x in _phrases(out[comma + 1 : end], kind_at, known)), None)
+        q = next((x for x in road_user_phrases(out[comma + 1 : end], kind_at, known)), None)
         said = out[comma + 1 + q.head : comma + 1 + q.end] if q is not None else []
         dropped.extend(w for w in out[comma + 1 : end] if w != ",")
         del out[comma:end]
@@ -1328,7 +1328,7 @@ def _narrator_on_foot(tokens: list[str], kind_at: KindAt, known: Known, dropped:
     frame = _narrator_frame(tokens, kind_at)
     if frame is None:
         return tokens
-    phrases = [p for p in _phrases(tokens, kind_at, known) if p.start > frame[1]]
+    phrases = [p for p in road_user_phrases(tokens, kind_at, known) if p.start > frame[1]]
     motor = [p for p in phrases if p.kind in VEHICLES and p.det in ("a", "an", "the", "")]
     if not motor or not any(p.kind not in VEHICLES and p.kind != "ego" for p in phrases):
         return tokens
@@ -1388,7 +1388,7 @@ def _lemma_in(word: str, wanted: frozenset[str]) -> bool:
 PRONOUNS = frozenset({"him", "her", "it", "them", "us", "me", "he", "she", "they", "we", "i"})
 
 
-def _hits_someone(tokens: list[str], k: int, kind_at: KindAt) -> bool:
+def hits_someone(tokens: list[str], k: int, kind_at: KindAt) -> bool:
     """Whether the contact verb at ``k`` says a collision: a road user, a pronoun or a possessive after
     it ("we hit him", "struck the cyclist", "clipped his back wheel"), or a verb that needs none ("we
     collided"); not "hit the brakes"."""
@@ -1412,14 +1412,14 @@ def _aftermath(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[s
     if stated_outcome(" ".join(tokens)) != "collision":
         return tokens  # ("a van nearly hit me. Then the cyclist behind it ...": no aftermath)
     contact = next(
-        (k for k, w in enumerate(tokens) if _lemma_in(w, CONTACT) and _hits_someone(tokens, k, kind_at)), None
+        (k for k, w in enumerate(tokens) if _lemma_in(w, CONTACT) and hits_someone(tokens, k, kind_at)), None
     )
     if contact is None:
         return tokens
     end = next((k for k in range(contact, len(tokens)) if tokens[k] in (".", ";", "!", "?")), None)
     if end is None:
         return tokens
-    before = {p.kind for p in _phrases(tokens[:end], kind_at, known)}
+    before = {p.kind for p in road_user_phrases(tokens[:end], kind_at, known)}
     if not before - {"ego"}:
         return tokens  # ("We collided. The van had pulled out ...": the one hit, told after)
     out = tokens[: end + 1]
@@ -1435,7 +1435,7 @@ def _aftermath(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[s
     return out
 
 
-def _drop_phrase(out: list[str], tokens: list[str], p: _Phrase, i: int, dropped: list[str]) -> int:
+def _drop_phrase(out: list[str], tokens: list[str], p: Phrase, i: int, dropped: list[str]) -> int:
     """Take the road-user phrase ``p`` out of ``out``, where a pass that copies the text word by word
     may have copied its article and modifiers already (``p.start < i``), and keep its words among those
     not used; the index after it."""
@@ -1550,7 +1550,7 @@ def _letter_labels(tokens: list[str], kind_at: KindAt, known: Known, dropped: li
         is_label = (len(letter) == 1 and letter.isalpha()) or letter.isdigit()
         if opens and is_label and tokens[s + 2] == ":" and w.isalpha() and w != "ego":
             end = next((k for k in range(s + 3, len(tokens)) if tokens[k] in SENTENCE_END), len(tokens))
-            first = next((p for p in _phrases(tokens[s + 3 : end], kind_at, known) if p.kind != "ego"), None)
+            first = next((p for p in road_user_phrases(tokens[s + 3 : end], kind_at, known) if p.kind != "ego"), None)
             if first is not None:
                 defined[(w, letter)] = (s, NOUN.get(first.kind, first.kind))
     if not defined:
@@ -1564,7 +1564,7 @@ def _letter_labels(tokens: list[str], kind_at: KindAt, known: Known, dropped: li
             if i == where:  # the definition: the road user it names is a new one ("an oncoming car")
                 i += 3
                 end = next((k for k in range(i, len(tokens)) if tokens[k] in SENTENCE_END), len(tokens))
-                first = next((p for p in _phrases(tokens[i:end], kind_at, known) if p.kind != "ego"), None)
+                first = next((p for p in road_user_phrases(tokens[i:end], kind_at, known) if p.kind != "ego"), None)
                 if first is not None and not first.det and first.start <= 2:  # (past "oncoming", "parked")
                     out.append("an" if tokens[i][0] in "aeiou" else "a")
                 continue
@@ -1633,7 +1633,7 @@ def _speed_of_both(tokens: list[str], kind_at: KindAt, known: Known) -> list[str
     j = b - 1
     while j >= 0 and tokens[j] in BE:
         j -= 1
-    phrases = [p for p in _phrases(tokens[: j + 1], kind_at, known) if p.end > j + 1 - 6]
+    phrases = [p for p in road_user_phrases(tokens[: j + 1], kind_at, known) if p.end > j + 1 - 6]
     if len(phrases) < 2 or phrases[-1].end != j + 1:
         return tokens
     first, second = phrases[-2], phrases[-1]
@@ -1656,7 +1656,7 @@ AFTER_LABEL = frozenset({"and", "then", "had", "has", "which", "who", "to", "cal
 UNITS_AFTER = frozenset({"m", "km/h", "mph", "m/s", "s", "%", "metres", "meters", "lanes", "lane", ":", "pm", "am"})
 
 
-def _labels(tokens: list[str], kind_at: KindAt, known: Known) -> list[tuple[int, str, str]]:
+def vehicle_labels(tokens: list[str], kind_at: KindAt, known: Known) -> list[tuple[int, str, str]]:
     """Every vehicle label in ``tokens`` as (where, its noun, its letter or number): a vehicle noun or
     "unit" with no determiner, then a number no unit follows, or a letter ("Car A", "Vehicle B") when
     what follows cannot go on a noun phrase and another letter labels a vehicle too."""
@@ -1701,7 +1701,7 @@ def _vehicle_labels(tokens: list[str], kind_at: KindAt, known: Known) -> list[st
     one marked as the ego ("Car B (ego)"), else, where the text names no ego otherwise, number one or
     A, else the first label, is the ego; each other label is a road user of its noun's type, "a van"
     where first named and "the van" after."""
-    labels = _labels(tokens, kind_at, known)
+    labels = vehicle_labels(tokens, kind_at, known)
     if not labels:
         return tokens
     names = [(noun, mark) for _, noun, mark in labels]
@@ -1739,7 +1739,7 @@ def _vehicle_labels(tokens: list[str], kind_at: KindAt, known: Known) -> list[st
             continue
         out.append(tokens[i])
         i += 1
-    return _label_noun_again(out, ego, names)
+    return label_noun_again(out, ego, names)
 
 
 #: Counts in words, by value, as the reader reads a number of road users ("two trucks").
@@ -1758,7 +1758,7 @@ def _past_marks(tokens: list[str], k: int) -> int:
 def _listed_marks(tokens: list[str], i: int) -> int:
     """How many vehicles a plural noun with a list of labels at ``i`` names ("trucks 2 and 3": two,
     "cars 2, 3 and 4": three, "vehicles 2-4": three), or 0 for a singular noun or a single label."""
-    if _singular(tokens[i]):
+    if is_singular(tokens[i]):
         return 0
     end = _past_marks(tokens, i + 2)
     marks = [t for t in tokens[i + 1 : end] if t not in _MARK_JOINS]
@@ -1769,7 +1769,7 @@ def _listed_marks(tokens: list[str], i: int) -> int:
     return len(marks)
 
 
-def _label_noun_again(tokens: list[str], ego: tuple[str, str] | None, names: list[tuple[str, str]]) -> list[str]:
+def label_noun_again(tokens: list[str], ego: tuple[str, str] | None, names: list[tuple[str, str]]) -> list[str]:
     """A log opened by its own vehicle's call sign ("Van 07 | ... van turning left", "Unit 14 ... unit
     speed 54 mph"): the noun of the ego's label said again bare or with "the" is the ego, where no other
     label has that noun and nothing introduces another of it ("a van")."""
@@ -1798,7 +1798,7 @@ def _ego_unnamed(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
     relative to something ("the car ahead", "parked cars") or named with "a" is another road user."""
     if any(t == "ego" or t in FIRST_PERSON for t in tokens):
         return tokens
-    phrases = _phrases(tokens, kind_at, known)
+    phrases = road_user_phrases(tokens, kind_at, known)
     if not any(p.kind in VULNERABLE for p in phrases):
         return tokens
     motor = [p for p in phrases if p.kind in VEHICLES]
@@ -2103,7 +2103,7 @@ def _mentions_again(tokens: list[str], kind_at: KindAt, known: Known) -> list[st
     return out
 
 
-def _target_again(tokens: list[str], p: _Phrase, referents: list[Referent]) -> Referent | None:
+def _target_again(tokens: list[str], p: Phrase, referents: list[Referent]) -> Referent | None:
     """The road user a bare "the target" names again: in a test the targets are the road users, so
     it is the last one named as a target ("an e-scooter target ... the target"), else the last one
     named at all. "Target" names no type (the lexicon reads it as a car), so without this it would
@@ -2118,7 +2118,7 @@ def _target_again(tokens: list[str], p: _Phrase, referents: list[Referent]) -> R
 _BIKE = frozenset({"bike", "bikes"})
 
 
-def _motorbike_again(tokens: list[str], p: _Phrase, referents: list[Referent]) -> Referent | None:
+def _motorbike_again(tokens: list[str], p: Phrase, referents: list[Referent]) -> Referent | None:
     """The motor two-wheeler a known "bike" names ("a motorcyclist ... the bike stopped", "until bike has
     passed"): "bike" is as much a motorbike's word as a bicycle's, so said again with "the" or bare, where
     no pedal cycle was named, it is the last motor two-wheeler named. A new one ("a bike") is new."""
@@ -2129,7 +2129,7 @@ def _motorbike_again(tokens: list[str], p: _Phrase, referents: list[Referent]) -
     return next((r for r in reversed(referents) if r.noun in MOTOR_TWO_WHEELERS), None)
 
 
-def _singular(word: str) -> bool:
+def is_singular(word: str) -> bool:
     """Whether ``word`` is no plural noun; a hyphenated word no dictionary has is as its last part is
     ("e-scooters", "pick-ups" are plurals)."""
     if not lemmas(word) and "-" in word:
@@ -2149,7 +2149,7 @@ def _new_in_line(tokens: list[str], start: int) -> bool:
     return word in IN_LINE - {"following"} and opens and word not in tokens[: start - 1]
 
 
-def _bare_again(tokens: list[str], p: _Phrase, referents: list[Referent], kind_at: KindAt) -> bool:
+def _bare_again(tokens: list[str], p: Phrase, referents: list[Referent], kind_at: KindAt) -> bool:
     """Whether a bare singular noun inside a clause ("behind cyclist", "passes walker") names again the
     one of its type named before (a bare noun opening a clause the reader takes so already)."""
     before = tokens[p.start - 1] if p.start else ""
@@ -2165,7 +2165,7 @@ def _bare_again(tokens: list[str], p: _Phrase, referents: list[Referent], kind_a
             return False
         if tokens[j] in PUNCT or kind_at(tokens, j) is not None:
             break
-    if before in ("and", "or", "versus", "vs", "v", "of") or not _singular(tokens[p.end - 1]):
+    if before in ("and", "or", "versus", "vs", "v", "of") or not is_singular(tokens[p.end - 1]):
         return False  # ("a cyclist and pedestrian", "car versus cyclist": a list; "groups of cyclists")
     return p.kind != "ego" and any(r.kind == p.kind for r in referents)
 
@@ -2355,8 +2355,8 @@ def _antecedent_plural(tokens: list[str], i: int, kind_at: KindAt, known: Known)
     """(type, start, end) of the last road-user plural before ``i`` that no count or number goes with
     ("the hire scooters", "students riding e-scooters"), or None (also when the last one is counted:
     "two cyclists ... one of them" picks out of a group the reader already holds)."""
-    phrases = [p for p in _phrases(tokens[:i], kind_at, known) if p.kind != "ego"]
-    if not phrases or _singular(tokens[phrases[-1].end - 1]):
+    phrases = [p for p in road_user_phrases(tokens[:i], kind_at, known) if p.kind != "ego"]
+    if not phrases or is_singular(tokens[phrases[-1].end - 1]):
         return None
     last = phrases[-1]
     kind, end = _ridden_kind(tokens, last, kind_at)
@@ -2502,9 +2502,9 @@ def what_may_happen(tokens: list[str], dropped: list[str]) -> list[str]:
 _PEOPLE = frozenset({"people", "folk", "folks"})
 
 
-def _others_named(tokens: list[str], p: _Phrase, kind_at: KindAt, known: Known) -> bool:
+def _others_named(tokens: list[str], p: Phrase, kind_at: KindAt, known: Known) -> bool:
     """Whether a road user other than the ego is named outside the phrase ``p``."""
-    return any(q.kind != "ego" and q.head != p.head for q in _phrases(tokens, kind_at, known))
+    return any(q.kind != "ego" and q.head != p.head for q in road_user_phrases(tokens, kind_at, known))
 
 
 def _people_in_general(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
@@ -2524,7 +2524,7 @@ def _people_in_general(tokens: list[str], kind_at: KindAt, known: Known, dropped
         before = out[p.start - 1] if p.start else ""
         nxt = out[p.end + 1] if p.end + 1 < len(out) else ""
         bare = not p.det and p.kind != "ego"
-        plural = not _singular(out[p.end - 1])
+        plural = not is_singular(out[p.end - 1])
         general = bare and (
             (
                 plural
@@ -2553,11 +2553,11 @@ def _others_in_general(tokens: list[str], kind_at: KindAt, known: Known, dropped
     people in general, none of the scene; "other" and the plural are left out (listed as not used).
     A counted or definite group ("two other cyclists", "the other joggers") is so many road users, and
     the plural stays when it is the only road user the text names."""
-    phrases = _phrases(tokens, kind_at, known)
+    phrases = road_user_phrases(tokens, kind_at, known)
     cut: list[tuple[int, int]] = []
     for p in phrases:
         o = next((j for j in range(p.head, max(p.head - 3, -1), -1) if tokens[j] == "other"), None)
-        if o is None or p.kind == "ego" or _singular(tokens[p.end - 1]) or not tokens[p.end - 1].isalpha():
+        if o is None or p.kind == "ego" or is_singular(tokens[p.end - 1]) or not tokens[p.end - 1].isalpha():
             continue
         before = tokens[o - 1] if o else ""
         if before in _COUNTED or before.isdigit() or before in DEFINITE or before in POSSESSIVE:
@@ -2577,7 +2577,7 @@ _ONCOMING_BEFORE = frozenset({"oncoming", "opposing", "approaching"})
 _ONCOMING_AFTER = frozenset({"other", "opposite", "towards", "toward"})
 
 
-def _oncoming_plural(tokens: list[str], p: _Phrase) -> bool:
+def _oncoming_plural(tokens: list[str], p: Phrase) -> bool:
     """Whether the plural ``p`` is said to come the other way: "oncoming" before it, or, within its
     clause's next few words, "the other way", "the opposite direction", "towards"."""
     if p.start and tokens[p.start - 1] in _ONCOMING_BEFORE or tokens[p.start] in _ONCOMING_BEFORE:
@@ -2597,11 +2597,16 @@ def _oncoming_traffic(tokens: list[str], kind_at: KindAt, known: Known, dropped:
     user it is about; the plural and the rest of its clause are left out (listed as not used). A
     counted or definite plural ("two cars coming the other way") or a single vehicle is a road user,
     and the plural stays when it is the only road user the text names."""
-    phrases = _phrases(tokens, kind_at, known)
+    phrases = road_user_phrases(tokens, kind_at, known)
     cut: list[tuple[int, int]] = []
     for p in phrases:
         before = tokens[p.start - 1] if p.start else ""
-        if p.det or p.kind in ("ego", "pedestrian") or _singular(tokens[p.end - 1]) or not tokens[p.end - 1].isalpha():
+        if (
+            p.det
+            or p.kind in ("ego", "pedestrian")
+            or is_singular(tokens[p.end - 1])
+            or not tokens[p.end - 1].isalpha()
+        ):
             continue
         if before in _COUNTED or before.isdigit() or before in POSSESSIVE or not _oncoming_plural(tokens, p):
             continue
@@ -2638,9 +2643,9 @@ def _heading(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str
     head = tokens[:end]
     if any(w in DETERMINERS or w in PRONOUNS or w in FIRST_PERSON or w in BE or _finite(w) for w in head):
         return tokens
-    later = [p for p in _phrases(tokens[end:], kind_at, known) if p.det in ("a", "an")]
+    later = [p for p in road_user_phrases(tokens[end:], kind_at, known) if p.det in ("a", "an")]
     out = list(tokens)
-    for p in reversed(_phrases(head, kind_at, known)):
+    for p in reversed(road_user_phrases(head, kind_at, known)):
         if p.kind != "ego" and not p.det and any(q.kind == p.kind for q in later):
             dropped.extend(out[p.head : p.end])
             del out[p.head : p.end]

@@ -71,7 +71,7 @@ PLACED = frozenset(
 )
 
 
-def _lemma_in(word: str, wanted: frozenset[str]) -> bool:
+def lemma_in(word: str, wanted: frozenset[str]) -> bool:
     return word in wanted or any(x in wanted for forms in lemmas(word).values() for x in forms)
 
 
@@ -84,11 +84,11 @@ def _ego_at(tokens: list[str], i: int, kind_at: KindAt) -> int:
 def names_ego(tokens: list[str], kind_at: KindAt, known: Known) -> bool:
     """Whether the text names its ego itself: an ego phrase, or a first-person word."""
     return bool((FIRST_PERSON | NARRATOR_INVOLVED) & set(tokens)) or any(
-        p.kind == "ego" for p in _road_users(tokens, kind_at, known)
+        p.kind == "ego" for p in road_users(tokens, kind_at, known)
     )
 
 
-def _road_users(tokens: list[str], kind_at: KindAt, known: Known) -> list:
+def road_users(tokens: list[str], kind_at: KindAt, known: Known) -> list:
     """The road-user phrases of ``tokens``, two vehicle nouns in a row as one ("an estate car")."""
     return _road_users_of(tuple(tokens), kind_at, known)
 
@@ -96,26 +96,26 @@ def _road_users(tokens: list[str], kind_at: KindAt, known: Known) -> list:
 @lru_cache(maxsize=16)
 def _road_users_of(tokens: tuple[str, ...], kind_at: KindAt, known: Known) -> tuple:
     """(Cached: the rules ask for the phrases of the same words several times.)"""
-    from vei_scenario.language.discourse import _Phrase, _phrases
+    from vei_scenario.language.discourse import Phrase, road_user_phrases
 
     out: list = []
-    for p in _phrases(list(tokens), kind_at, known):
+    for p in road_user_phrases(list(tokens), kind_at, known):
         if out and out[-1].end == p.start and out[-1].kind in VEHICLES and p.kind in VEHICLES:
             q = out.pop()
-            p = _Phrase(q.start, q.head, p.end, q.det, p.kind)
+            p = Phrase(q.start, q.head, p.end, q.det, p.kind)
         out.append(p)
     return tuple(out)
 
 
 def _vehicle_phrases(tokens: list[str], kind_at: KindAt, known: Known) -> list:
-    return [p for p in _road_users(tokens, kind_at, known) if p.kind in VEHICLES]
+    return [p for p in road_users(tokens, kind_at, known) if p.kind in VEHICLES]
 
 
 #: Words that say the vehicle is only scenery or set beside someone else.
 PARKED = frozenset({"parked", "stationary", "abandoned", "stopped", "stalled", "broken-down", "double-parked"})
 
 
-def _parked(tokens: list[str], p) -> bool:
+def stands_parked(tokens: list[str], p) -> bool:
     """A word of standing still by the mention ("a parked van", "the bus, stationary,", "the cab was
     stopped"), not its verb of reacting ("the taxi stopped just in time", "the van driver stopped")."""
     near = tokens[max(p.start - 2, 0) : p.end + 2]
@@ -124,7 +124,7 @@ def _parked(tokens: list[str], p) -> bool:
     return bool(PARKED & set(near))
 
 
-def _placed(tokens: list[str], p) -> bool:
+def placed_by_word(tokens: list[str], p) -> bool:
     after = tokens[p.end : p.end + 2]
     before = tokens[p.start - 1] if p.start else ""
     return (
@@ -152,7 +152,7 @@ def _referents(tokens: list[str], phrases) -> dict[str, list]:
     return out
 
 
-def _as_ego(
+def as_ego(
     tokens: list[str], kind_at: KindAt, known: Known, noun: str, dropped: list[str], only: bool = False
 ) -> list[str]:
     """``tokens`` with every definite or bare mention of the vehicle named by ``noun`` (its head) said
@@ -182,7 +182,7 @@ def _marked(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]
     driver)", "the white van (ego)"), or as the value of an ego phrase's field or copula ("Reporting
     vehicle: city shuttle bus", "Host vehicle is a 40 t truck"): that vehicle is the ego, and so is
     every later "the bus"."""
-    if not any(p.kind == "ego" for p in _road_users(tokens, kind_at, known)):
+    if not any(p.kind == "ego" for p in road_users(tokens, kind_at, known)):
         return tokens
     tokens = _ego_bracketed(tokens, kind_at, known, dropped)
     for p in _vehicle_phrases(tokens, kind_at, known):
@@ -201,7 +201,7 @@ def _marked(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]
             if inner and _ego_at(inner, 0, kind_at) == len(inner):
                 dropped.extend(w for w in tokens[p.start : close + 1] if w.isalpha() and w not in DEFINITE)
                 out = [*tokens[: p.start], "the", "ego", *tokens[close + 1 :]]
-                return _marked(_as_ego(out, kind_at, known, noun, dropped), kind_at, known, dropped)
+                return _marked(as_ego(out, kind_at, known, noun, dropped), kind_at, known, dropped)
         # "<ego phrase> : / is a <modifiers> <vehicle>": where its value starts, past its article
         j = p.head
         j -= j > 0 and tokens[j - 1] in IN_LINE  # ("Ego: following truck": its place in a line of vehicles)
@@ -221,7 +221,7 @@ def _marked(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]
         end = p.end + (tokens[marker] == ":" and tokens[p.end : p.end + 1] == [","])
         dropped.extend(w for w in tokens[j : p.end] if w.isalpha() and w not in ("a", "an"))
         out = tokens[:j] + tokens[end:]
-        return _marked(_as_ego(out, kind_at, known, noun, dropped), kind_at, known, dropped)
+        return _marked(as_ego(out, kind_at, known, noun, dropped), kind_at, known, dropped)
     return tokens
 
 
@@ -230,11 +230,11 @@ def _ego_bracketed(tokens: list[str], kind_at: KindAt, known: Known, dropped: li
     an ego phrase that hold only a vehicle (its article, its make or model, its modifiers) say what
     the ego is; they go, and every later "the tipper" is the ego. Brackets that hold anything else
     ("(following a van)", "(in lane 2)") stay."""
-    for p in _road_users(tokens, kind_at, known):
+    for p in road_users(tokens, kind_at, known):
         if p.kind != "ego" or tokens[p.end : p.end + 1] != ["("]:
             continue
         close = next((k for k in range(p.end + 1, min(p.end + 8, len(tokens))) if tokens[k] == ")"), None)
-        inside = [q for q in _road_users(tokens, kind_at, known) if close and p.end < q.start < close]
+        inside = [q for q in road_users(tokens, kind_at, known) if close and p.end < q.start < close]
         if close is None or len(inside) != 1 or inside[0].kind not in VEHICLES or inside[0].end != close:
             continue
         q = inside[0]
@@ -245,7 +245,7 @@ def _ego_bracketed(tokens: list[str], kind_at: KindAt, known: Known, dropped: li
             continue
         dropped.extend(w for w in tokens[p.end + 1 : close] if w.isalpha() and w not in INDEFINITE)
         out = [*tokens[: p.end], *tokens[close + 1 :]]
-        return _as_ego(out, kind_at, known, tokens[q.end - 1], dropped)
+        return as_ego(out, kind_at, known, tokens[q.end - 1], dropped)
     return tokens
 
 
@@ -299,8 +299,8 @@ def _designated(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[
         if start >= 2 and tokens[start - 1] == "'s" and tokens[start - 2].isalpha():
             owner, start = [tokens[start - 2]], start - 2
             start -= start > 0 and tokens[start - 1] in DEFINITE | {"our", "my"}
-        s, e = _sentence(tokens, k)
-        others = [q for q in _road_users(tokens, kind_at, known) if s <= q.start < e and q.start != p.start]
+        s, e = sentence_span(tokens, k)
+        others = [q for q in road_users(tokens, kind_at, known) if s <= q.start < e and q.start != p.start]
         cut = (s, e + (e < len(tokens))) if not others else (start, k + n)
         dropped.extend(w for w in tokens[cut[0] : cut[1]] if w.isalpha() and w not in DEFINITE | {"ego"})
         out = [*tokens[: cut[0]], *([] if not others else ["the", "ego"]), *tokens[cut[1] :]]
@@ -314,8 +314,8 @@ def _designated(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[
                     continue
                 said.append(w)
             out = said
-        out = _as_ego(out, kind_at, known, noun, dropped)
-        return _driver_is_ego(out, kind_at, known, dropped)
+        out = as_ego(out, kind_at, known, noun, dropped)
+        return driver_is_ego(out, kind_at, known, dropped)
     return tokens
 
 
@@ -324,7 +324,7 @@ def _met_by_narrator(tokens: list[str], kind_at: KindAt, known: Known) -> list[s
     the text ("a"/"an") that meets the narrator in its sentence is another road user, a car (the
     narrator is the ego); "the robotaxi" after it is that car."""
     out = list(tokens)
-    for p in reversed(_road_users(tokens, kind_at, known)):
+    for p in reversed(road_users(tokens, kind_at, known)):
         if p.kind != "ego" or p.det not in ("a", "an") or tokens[p.head] in FIRST_PERSON | NARRATOR_INVOLVED:
             continue
         e = p.end
@@ -365,7 +365,7 @@ def _named_in(tokens: list[str], k: int, kind_at: KindAt, known: Known) -> bool:
     if tokens[j : j + 1] != ["the"]:
         return False
     p = next((q for q in _vehicle_phrases(tokens, kind_at, known) if q.start in (j, j + 1)), None)
-    if p is None or _placed(tokens, p):
+    if p is None or placed_by_word(tokens, p):
         return False
     after = tokens[p.end] if p.end < len(tokens) else ""
     return not (after.isalpha() and after in lemmas(after).get("NOUN", ()))  # ("in the car park")
@@ -409,7 +409,7 @@ def _at_the_wheel(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
         kinds = VEHICLES if kind_at(tokens, person) is not None else RIDDEN
         if found is None or found[0] not in kinds or any(known(tokens, h) for h in range(j, head)):
             continue
-        if found[0] not in VEHICLES and _rider_noun(tokens[head]):
+        if found[0] not in VEHICLES and rider_noun(tokens[head]):
             continue  # ("Dave was riding behind a cyclist")
         name = tokens[person:end]
         whole = next((q.end for q in _vehicle_phrases(tokens, kind_at, known) if q.start <= head < q.end), 0)
@@ -429,7 +429,7 @@ def _at_the_wheel(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
             i += 1
         if found[0] in VEHICLES:  # ("passenger in the blue Transit van ... the van (driver) braked")
             noun = tokens[cut[1] - 1]
-            said = _as_ego(said, kind_at, known, noun, dropped)
+            said = as_ego(said, kind_at, known, noun, dropped)
             for i in range(len(said) - 3, -1, -1):
                 if said[i : i + 3] == ["the", noun, "driver"]:
                     said[i : i + 3] = ["the", "ego"]
@@ -443,7 +443,7 @@ def _at_the_wheel(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
 RIDES = frozenset({"ride", "rides", "riding", "rode", "ridden"})
 
 
-def _rider_noun(word: str) -> bool:
+def rider_noun(word: str) -> bool:
     """Whether ``word`` names the person on a bicycle or e-scooter ("cyclist", "rider"), not the
     machine: a person can ride a bike, not a cyclist."""
     return word.endswith(("ist", "ists", "rider", "riders"))
@@ -490,7 +490,7 @@ def _pronouns_as_ego(tokens: list[str], owner: str, kind_at: KindAt, known: Know
     first = next((i for i in range(len(tokens) - 1) if tokens[i : i + 2] == ["the", "ego"]), None)
     if first is None:
         return tokens
-    users = _road_users(tokens, kind_at, known)
+    users = road_users(tokens, kind_at, known)
     out = tokens[: first + 2]
     for i in range(first + 2, len(tokens)):
         w, nxt = tokens[i], tokens[i + 1] if i + 1 < len(tokens) else ""
@@ -529,10 +529,10 @@ def _driving_subject(tokens: list[str], kind_at: KindAt, known: Known, dropped: 
         if before not in SUBORDINATORS and k and before not in CLAUSE_OPENING | {"that"}:
             continue
         p = next((q for q in _vehicle_phrases(tokens, kind_at, known) if k + 1 < q.end <= k + 5), None)
-        if p is None or _placed(tokens, p) or any(x not in OWNING and known(tokens, j) for j, x in
+        if p is None or placed_by_word(tokens, p) or any(x not in OWNING and known(tokens, j) for j, x in
                                                   enumerate(tokens[k + 1 : p.start], k + 1)):  # fmt: skip
             continue
-        _, e = _sentence(tokens, k)
+        _, e = sentence_span(tokens, k)
         comma = next((c for c in range(p.end, e) if tokens[c] == ","), None)
         owner = tokens[k + 1]
         if comma is None or tokens[comma + 1 : comma + 2] != [PRONOUNS_OF[owner][0]]:
@@ -550,7 +550,7 @@ def _news_driver(tokens: list[str], kind_at: KindAt, known: Known, dropped: list
     after the driver, before anyone else is named: ", who was doing 20 mph"; or at a later "the
     <noun>": "the lorry, travelling at 50 mph"). That vehicle is the ego, and so is every later
     "the" mention of it and of the same kind of vehicle no "a" introduces ("the HGV")."""
-    users = _road_users(tokens, kind_at, known)
+    users = road_users(tokens, kind_at, known)
     for n, p in enumerate(users):
         if tokens[p.end - 1] != "driver" or (p.start and tokens[p.start - 1] not in CLAUSE_OPENING):
             continue
@@ -558,7 +558,7 @@ def _news_driver(tokens: list[str], kind_at: KindAt, known: Known, dropped: list
             vehicle, end = tokens[p.end - 2], p.end  # ("a lorry driver")
         elif tokens[p.end : p.end + 1] == ["of"] and n + 1 < len(users) and users[n + 1].start == p.end + 1:
             q = users[n + 1]  # ("the driver of a delivery van")
-            if q.kind not in VEHICLES or _placed(tokens, q):
+            if q.kind not in VEHICLES or placed_by_word(tokens, q):
                 return tokens
             vehicle, end = tokens[q.end - 1], q.end
         else:
@@ -574,11 +574,11 @@ def _news_driver(tokens: list[str], kind_at: KindAt, known: Known, dropped: list
             for q in later
             if q.det == "the" and q.kind == kind and tokens[q.end - 1] not in new and tokens[q.end : q.end + 1] == [","]
         ]
-        if not any(any(w in SPEED_UNITS for w in tokens[a : min(b, _sentence(tokens, a)[1])]) for a, b in spans):
+        if not any(any(w in SPEED_UNITS for w in tokens[a : min(b, sentence_span(tokens, a)[1])]) for a, b in spans):
             return tokens
         dropped.extend(w for w in tokens[p.start : end] if w.isalpha() and w not in DEFINITE | INDEFINITE)
         out = [*tokens[: p.start], "the", "ego", *tokens[end:]]
-        out = _as_ego(out, kind_at, known, vehicle, dropped)
+        out = as_ego(out, kind_at, known, vehicle, dropped)
         same = {
             out[q.end - 1]
             for q in _vehicle_phrases(out, kind_at, known)
@@ -586,7 +586,7 @@ def _news_driver(tokens: list[str], kind_at: KindAt, known: Known, dropped: list
         }
         for noun in sorted(same):
             if not any(q.det in INDEFINITE and out[q.end - 1] == noun for q in _vehicle_phrases(out, kind_at, known)):
-                out = _as_ego(out, kind_at, known, noun, dropped)
+                out = as_ego(out, kind_at, known, noun, dropped)
         return out
     return tokens
 
@@ -605,7 +605,7 @@ def _followed_driver(tokens: list[str], kind_at: KindAt, known: Known, dropped: 
     vehicle is named before the possessive, or the driver is not the first road user named ("A
     cyclist was hurt when a van driver opened his door"), whose vehicle it is stays open and nothing
     is read."""
-    users = _road_users(tokens, kind_at, known)
+    users = road_users(tokens, kind_at, known)
     if not users or tokens[users[0].end - 1] not in ("driver", "motorist"):
         return tokens
     p = users[0]
@@ -613,11 +613,15 @@ def _followed_driver(tokens: list[str], kind_at: KindAt, known: Known, dropped: 
         return tokens
     end = p.end
     if tokens[end : end + 1] == ["of"] and len(users) > 1 and users[1].start == end + 1:
-        if users[1].kind not in VEHICLES or _placed(tokens, users[1]):
+        if users[1].kind not in VEHICLES or placed_by_word(tokens, users[1]):
             return tokens
         end = users[1].end  # ("the driver of a bin lorry")
     owned = next(
-        (q for q in users if q.start >= end and q.det in POSSESSIVES and q.kind in VEHICLES and not _placed(tokens, q)),
+        (
+            q
+            for q in users
+            if q.start >= end and q.det in POSSESSIVES and q.kind in VEHICLES and not placed_by_word(tokens, q)
+        ),
         None,
     )
     if owned is None:
@@ -628,11 +632,11 @@ def _followed_driver(tokens: list[str], kind_at: KindAt, known: Known, dropped: 
     dropped.extend(w for w in tokens[p.start : end] if w.isalpha() and w not in DEFINITE | INDEFINITE)
     out = list(tokens)
     for q in reversed(users):
-        if q.start >= end and q.det == owner and q.kind in VEHICLES and not _placed(tokens, q):
+        if q.start >= end and q.det == owner and q.kind in VEHICLES and not placed_by_word(tokens, q):
             dropped.extend(w for w in out[q.start + 1 : q.end] if w.isalpha())
             out[q.start : q.end] = ["the", "ego"]
     out[p.start : end] = ["the", "ego"]
-    out = _as_ego(out, kind_at, known, tokens[owned.end - 1], dropped)
+    out = as_ego(out, kind_at, known, tokens[owned.end - 1], dropped)
     return _pronouns_as_ego(out, owner, kind_at, known)
 
 
@@ -643,7 +647,7 @@ def _person_driving(tokens: list[str], kind_at: KindAt, known: Known, dropped: l
     driving, is at a wheel: that person is the ego, no walker, and so are the vehicle driven and the
     person's pronouns. "A woman was hit by a man driving a van" (no subject) or "a man walking his
     dog" (no driving) reads nothing."""
-    for p in _road_users(tokens, kind_at, known):
+    for p in road_users(tokens, kind_at, known):
         start = next((b for b in (p.start - 1, p.start - 2) if b >= 0 and tokens[b] in ("a", "an", "the")), p.start)
         if p.det or not all(w.isalpha() for w in tokens[start : p.start]):
             start = p.start  # (its article and a word of where it is from: "a Leeds woman")
@@ -652,7 +656,7 @@ def _person_driving(tokens: list[str], kind_at: KindAt, known: Known, dropped: l
         k = _past_apposition(tokens, p.end)
         if tokens[k : k + 1] == ["who"]:  # (its relative clause, up to where it closes)
             k += 1
-            _, e = _sentence(tokens, k)
+            _, e = sentence_span(tokens, k)
             e = next((c for c in range(k, e) if tokens[c] == ","), e)
             at = next(  # (its own driving: "who was driving", "who hit ... while driving", not "a van driving")
                 (j for j in range(k, e) if tokens[j] in DRIVING and tokens[j - 1] in SUBORDINATORS | BE | {"who"}),
@@ -666,13 +670,13 @@ def _person_driving(tokens: list[str], kind_at: KindAt, known: Known, dropped: l
             continue
         noun = tokens[p.end - 1]
         owner = next((g for g, nouns in GENDERED.items() if noun in nouns), None)
-        driven = next((q for q in _road_users(tokens, kind_at, known) if at < q.start <= at + 4), None)
+        driven = next((q for q in road_users(tokens, kind_at, known) if at < q.start <= at + 4), None)
         out = list(tokens)
         if driven is not None and driven.kind in VEHICLES and out[at + 1] in OWNING | {"a", "an"}:
             owner = owner or (out[at + 1] if out[at + 1] in PRONOUNS_OF else None)
             dropped.extend(w for w in out[driven.start : driven.end] if w.isalpha() and w not in OWNING)
             out[driven.start : driven.end] = []
-            out = _as_ego(out, kind_at, known, tokens[driven.end - 1], dropped)
+            out = as_ego(out, kind_at, known, tokens[driven.end - 1], dropped)
         dropped.extend(w for w in out[start : p.end] if w.isalpha() and w not in DEFINITE | INDEFINITE)
         out[start : p.end] = ["the", "ego"]
         return _pronouns_as_ego(out, owner, kind_at, known) if owner else out
@@ -697,7 +701,7 @@ def _operator_fleet(tokens: list[str], kind_at: KindAt, known: Known) -> list[st
     first = [k for k, w in enumerate(tokens) if w in FIRST_PERSON | NARRATOR_INVOLVED - {"ego"}]
     if not first or any(tokens[k] != "our" for k in first):
         return tokens
-    users = {p.start: p for p in _road_users(tokens, kind_at, known)}
+    users = {p.start: p for p in road_users(tokens, kind_at, known)}
     starts = {p.head: p for p in users.values()}
     for k in first:
         p = users.get(k) or users.get(k + 1) or starts.get(k + 1)
@@ -712,9 +716,9 @@ def _labelled_driver(tokens: list[str], kind_at: KindAt, known: Known, dropped: 
     "Driver of ...") speaks of that vehicle's own driver: the label, that driver and every later "the
     <noun>" of it are the ego, so the driver's speed is the ego's. With two labels ("Car 1 ... Car 2"),
     whose driver it is stays open; "a bus driver" or "the driver" is someone named otherwise."""
-    from vei_scenario.language.discourse import _label_noun_again, _labels
+    from vei_scenario.language.discourse import label_noun_again, vehicle_labels
 
-    labels = _labels(tokens, kind_at, known)
+    labels = vehicle_labels(tokens, kind_at, known)
     if len({(n, m) for _, n, m in labels}) != 1:
         return tokens
     first, noun, mark = labels[0]
@@ -732,8 +736,8 @@ def _labelled_driver(tokens: list[str], kind_at: KindAt, known: Known, dropped: 
     for k in reversed(bare):
         out[k : k + 1] = ["the", "ego"]
     dropped.extend(["driver"] * len(bare) + [noun, mark])
-    out = _label_noun_again(_label_as_ego(out, [noun, mark]), (noun, mark), [(noun, mark)])  # ("unit speed 54 mph")
-    return _as_ego(out, kind_at, known, noun, dropped)
+    out = label_noun_again(_label_as_ego(out, [noun, mark]), (noun, mark), [(noun, mark)])  # ("unit speed 54 mph")
+    return as_ego(out, kind_at, known, noun, dropped)
 
 
 def _role(tokens: list[str], kind_at: KindAt) -> list[str]:
@@ -791,7 +795,7 @@ def _relative_own(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
     in, at the wheel of, or in possession of is the narrator's, the ego ("the van I saw" is not)."""
     if not FIRST_PERSON & set(tokens):
         return tokens
-    for p in _road_users(tokens, kind_at, known):
+    for p in road_users(tokens, kind_at, known):
         if p.kind not in RIDDEN:
             continue
         k = p.end + (tokens[p.end : p.end + 1] in (["that"], ["which"]))
@@ -801,13 +805,13 @@ def _relative_own(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
         while k < len(tokens) and tokens[k] in BETWEEN:
             k += 1
         verb = tokens[k] if k < len(tokens) else ""
-        if verb not in DRIVING | {"in", "aboard"} and not _lemma_in(verb, AT_CONTROLS | POSSESSING):
+        if verb not in DRIVING | {"in", "aboard"} and not lemma_in(verb, AT_CONTROLS | POSSESSING):
             continue
         end = k + 1
         noun = tokens[p.end - 1]
         dropped.extend(tokens[p.start : end])
         out = [*tokens[: p.start], "the", "ego", *tokens[end:]]
-        return _as_ego(out, kind_at, known, noun, dropped)
+        return as_ego(out, kind_at, known, noun, dropped)
     return tokens
 
 
@@ -817,7 +821,7 @@ def _boarded(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str
     if not (FIRST_PERSON | NARRATOR_INVOLVED) & set(tokens):
         return tokens
     for k, w in enumerate(tokens):
-        if not _lemma_in(w, BOARDING) or w in BE:
+        if not lemma_in(w, BOARDING) or w in BE:
             continue
         s = k - 1
         while s >= 0 and tokens[s] in BETWEEN:
@@ -828,24 +832,24 @@ def _boarded(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str
         if tokens[j : j + 1] not in (["in"], ["into"]):
             continue
         p = next((q for q in _vehicle_phrases(tokens, kind_at, known) if q.start == j + 1), None)
-        if p is None or _placed(tokens, p) or p.det not in DEFINITE | INDEFINITE | {""}:
+        if p is None or placed_by_word(tokens, p) or p.det not in DEFINITE | INDEFINITE | {""}:
             continue
         noun = tokens[p.end - 1]
         dropped.extend(tokens[p.start : p.end])
         out = [*tokens[: p.start], "the", "ego", *tokens[p.end :]]
-        return _as_ego(out, kind_at, known, noun, dropped)
+        return as_ego(out, kind_at, known, noun, dropped)
     return tokens
 
 
 def _one_vehicle(tokens: list[str], kind_at: KindAt, known: Known) -> tuple[str, list] | None:
     """The one vehicle a text names (its head noun and mentions), when it names one and another road
     user: not placed relative to someone ("the car ahead", "parked vans")."""
-    phrases = [p for p in _road_users(tokens, kind_at, known) if not _at_wheel(tokens, p) and p.kind != "ego"]
+    phrases = [p for p in road_users(tokens, kind_at, known) if not _at_wheel(tokens, p) and p.kind != "ego"]
     vehicles = [p for p in phrases if p.kind in VEHICLES]
     if not vehicles or len(vehicles) == len(phrases):
         return None
     groups = _referents(tokens, vehicles)
-    if len(groups) != 1 or None in groups.values() or any(_placed(tokens, p) for p in vehicles):
+    if len(groups) != 1 or None in groups.values() or any(placed_by_word(tokens, p) for p in vehicles):
         return None
     return next(iter(groups.items()))
 
@@ -854,19 +858,19 @@ def _struck(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]
     """A report in the third person of one vehicle that strikes a walker or rider ("a woman riding an
     e-scooter was struck by a car"; "the car hit the scooter"): that vehicle is the one the report
     is told from, the ego."""
-    if not any(_lemma_in(w, CONTACT) for w in tokens):
+    if not any(lemma_in(w, CONTACT) for w in tokens):
         return tokens
     one = _one_vehicle(tokens, kind_at, known)
     if one is None:
         return tokens
-    from vei_scenario.language.discourse import _hits_someone
+    from vei_scenario.language.discourse import hits_someone
 
     noun, mentions = one
     for k, w in enumerate(tokens):
-        if not _lemma_in(w, CONTACT):
+        if not lemma_in(w, CONTACT):
             continue
         j = k + 1 + (tokens[k + 1 : k + 2] in (["down"], ["over"], ["off"]))
-        if tokens[j : j + 1] != ["by"] and not _hits_someone(tokens, k, kind_at):
+        if tokens[j : j + 1] != ["by"] and not hits_someone(tokens, k, kind_at):
             continue  # ("hit the brakes")
         s, e = k, k
         while s > 0 and tokens[s - 1] not in SENTENCE_END:
@@ -874,7 +878,7 @@ def _struck(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]
         while e < len(tokens) and tokens[e] not in SENTENCE_END:
             e += 1
         if any(s <= p.start < e for p in mentions):  # ("struck by a car", "the van ... hit the man")
-            return _as_ego(tokens, kind_at, known, noun, dropped, only=True)
+            return as_ego(tokens, kind_at, known, noun, dropped, only=True)
     return tokens
 
 
@@ -883,7 +887,7 @@ def _struck(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]
 CLAUSE_OPENING = PUNCT | {"-", "and"}
 
 
-def _sentence(tokens: list[str], i: int) -> tuple[int, int]:
+def sentence_span(tokens: list[str], i: int) -> tuple[int, int]:
     s, e = i, i
     while s > 0 and tokens[s - 1] not in SENTENCE_END:
         s -= 1
@@ -906,7 +910,7 @@ def _own_speed(tokens: list[str], p, users) -> bool:
                 start -= 1
     if start and tokens[start - 1] not in CLAUSE_OPENING:
         return False
-    _, e = _sentence(tokens, p.end)
+    _, e = sentence_span(tokens, p.end)
     e = next((k for k in range(p.end, e) if tokens[k] == ","), e)  # (its clause: "Lead van brakes, 70 km/h")
     nxt = min((q.start for q in users if q.start >= p.end), default=e)
     return any(w in SPEED_UNITS for w in tokens[p.end : min(e, nxt)])
@@ -920,29 +924,29 @@ def _told_from(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[s
     narrator in it, is the ego, and so is every later "the <noun>". A vehicle that meets the narrator
     in its sentence ("Bus pulled out in front of us") or any vehicle where the narrator or the ego
     has a speed of its own, is someone else."""
-    from vei_scenario.language.discourse import _labels, _singular
+    from vei_scenario.language.discourse import is_singular, vehicle_labels
 
-    if _labels(tokens, kind_at, known):
+    if vehicle_labels(tokens, kind_at, known):
         return tokens  # (a report's labels say who the ego is: "Vehicle A was travelling ...")
-    users = _road_users(tokens, kind_at, known)
+    users = road_users(tokens, kind_at, known)
     first = next((p for p in users if p.kind in VEHICLES | {"ego"} and not _at_wheel(tokens, p)), None)
-    if first is None or first.kind == "ego" or first.det not in ("", "the") or _placed(tokens, first):
+    if first is None or first.kind == "ego" or first.det not in ("", "the") or placed_by_word(tokens, first):
         return tokens
     owner = first.start >= 2 and tokens[first.start - 1] == "'s" and kind_at(tokens, first.start - 2) is None
     narrator = FIRST_PERSON | NARRATOR_INVOLVED
     for k, w in enumerate(tokens):  # (a narrator or an ego with a speed of its own is the ego)
         if w in narrator or w in {"ego", "host"}:
-            s, e = _sentence(tokens, k)
+            s, e = sentence_span(tokens, k)
             if any(u in SPEED_UNITS for u in tokens[k:e]) and not any(k < q.start < e for q in users):
                 return tokens
     noun = tokens[first.end - 1]
     mentions = _referents(tokens, [p for p in users if p.kind in VEHICLES]).get(noun)
     if not mentions or not any(p.det in ("", "the") and _own_speed(tokens, p, users) for p in mentions):
         return tokens
-    if not _singular(noun) or (first.start and tokens[first.start - 1] in ("both", "two", "all")):
+    if not is_singular(noun) or (first.start and tokens[first.start - 1] in ("both", "two", "all")):
         return tokens
     for p in mentions:  # (one that meets the narrator or the ego in its sentence is someone else)
-        s, e = _sentence(tokens, p.start)
+        s, e = sentence_span(tokens, p.start)
         if narrator & set(tokens[s:e]) or any(q.kind == "ego" and s <= q.start < e for q in users):
             return tokens
     out = list(tokens)
@@ -950,11 +954,11 @@ def _told_from(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[s
         start = first.start - 2 - (first.start > 2 and tokens[first.start - 3] in DEFINITE)
         dropped.extend(w for w in tokens[start : first.start] if w.isalpha() and w not in DEFINITE)
         out[start : first.start] = []
-    out = _as_ego(out, kind_at, known, noun, dropped)
-    return _driver_is_ego(out, kind_at, known, dropped)
+    out = as_ego(out, kind_at, known, noun, dropped)
+    return driver_is_ego(out, kind_at, known, dropped)
 
 
-def _compound(tokens: list[str], p) -> bool:
+def is_modifier_noun(tokens: list[str], p) -> bool:
     """Whether the noun after ``p`` makes it a modifier ("car park", "bus lane"), no vehicle."""
     w = tokens[p.end] if p.end < len(tokens) else ""
     return w.isalpha() and set(lemmas(w)) == {"NOUN"}
@@ -965,28 +969,34 @@ def _ego_aboard(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[
     through in the minibus": a vehicle the ego's subject is in, in its own clause, is the ego's
     vehicle, the ego; so is every later "the <noun>", and "the driver" (no other motor vehicle named
     before it)."""
-    users = _road_users(tokens, kind_at, known)
+    users = road_users(tokens, kind_at, known)
     for k, w in enumerate(tokens):
         at = k - 1 if k and tokens[k - 1] == "the" else k  # (the subject's first word: "the ego")
         said = k + 1 < len(tokens) and tokens[k + 1] in BE  # (its verb follows: "Ref 2231 our driver was ...")
         if w not in ("ego", "i", "we") or (at and tokens[at - 1] not in CLAUSE_OPENING and not said):
             continue  # (not the subject: "a man alongside the ego in a lorry" is the man's lorry)
-        _, e = _sentence(tokens, k)
+        _, e = sentence_span(tokens, k)
         nxt = next((q for q in users if q.start > k), None)
-        if nxt is None or nxt.start >= e or nxt.kind not in VEHICLES or _placed(tokens, nxt) or _compound(tokens, nxt):
+        if (
+            nxt is None
+            or nxt.start >= e
+            or nxt.kind not in VEHICLES
+            or placed_by_word(tokens, nxt)
+            or is_modifier_noun(tokens, nxt)
+        ):
             continue
         if tokens[nxt.start - 1] not in ("in", "inside", "aboard") or nxt.det not in {"", "a", "an"} | DEFINITE:
             continue
         if any(t in PUNCT for t in tokens[k : nxt.start]) or (w != "ego" and nxt.det in INDEFINITE):
             continue  # ("we were in a hire car, a Fiat": discourse reads the narrator's vehicle and its name)
-        from vei_scenario.language.discourse import _apposition_end
+        from vei_scenario.language.discourse import apposition_end
 
         noun = tokens[nxt.end - 1]
-        end = _apposition_end(tokens, nxt.end, kind_at, known) or nxt.end  # ("in the van, an old Ford,")
+        end = apposition_end(tokens, nxt.end, kind_at, known) or nxt.end  # ("in the van, an old Ford,")
         dropped.extend(x for x in tokens[nxt.start - 1 : end] if x.isalpha())
         out = [*tokens[: nxt.start - 1], *tokens[end:]]
-        out = kind_said_again(_as_ego(out, kind_at, known, noun, dropped), nxt.kind, kind_at, known, dropped)
-        return _driver_is_ego(out, kind_at, known, dropped)
+        out = kind_said_again(as_ego(out, kind_at, known, noun, dropped), nxt.kind, kind_at, known, dropped)
+        return driver_is_ego(out, kind_at, known, dropped)
     return tokens
 
 
@@ -996,7 +1006,7 @@ def kind_said_again(tokens: list[str], kind: str, kind_at: KindAt, known: Known,
     noun) is it again, where the text introduces no vehicle of that kind ("a van") and that one is
     not placed relative to someone ("the van ahead") nor a modifier ("the van driver"). One that opens
     its clause or meets the narrator there ("when the van pulled out at us") may be someone new."""
-    users = _road_users(tokens, kind_at, known)
+    users = road_users(tokens, kind_at, known)
     if any(q.kind == kind and q.det in INDEFINITE for q in users):
         return tokens
     first = next((q.start for q in users if q.kind == "ego"), None)
@@ -1004,7 +1014,12 @@ def kind_said_again(tokens: list[str], kind: str, kind_at: KindAt, known: Known,
     for q in reversed(users):
         if first is None or q.start < first or q.kind != kind or q.det != "the":
             continue
-        if _placed(out, q) or _compound(out, q) or out[q.end : q.end + 1] in (["'s"], ["of"]) or _at_wheel(out, q):
+        if (
+            placed_by_word(out, q)
+            or is_modifier_noun(out, q)
+            or out[q.end : q.end + 1] in (["'s"], ["of"])
+            or _at_wheel(out, q)
+        ):
             continue
         if not q.start or out[q.start - 1] in CLAUSE_OPENING | SENTENCE_END | SUBORDINATORS | {"but", "then"}:
             continue  # (the subject of its own clause: "when the van pulled out" may be someone new)
@@ -1024,20 +1039,20 @@ def kind_said_again(tokens: list[str], kind: str, kind_at: KindAt, known: Known,
 SAID_AGAIN = {"driver": ("", "the"), "vehicle": ("the",), "car": ("the",)}
 
 
-def _driver_is_ego(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
+def driver_is_ego(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """Once the ego is the vehicle a report is told from, "the driver" (or "driver") is its driver
     and "the vehicle" is it, until another motor vehicle is named: a walker or rider has no driver."""
     out = list(tokens)
-    for p in reversed(_road_users(out, kind_at, known)):
+    for p in reversed(road_users(out, kind_at, known)):
         noun = out[p.end - 1]
         if p.det not in SAID_AGAIN.get(noun, ()) or p.end - p.head != 1 or out[p.end : p.end + 1] == ["of"]:
             continue
-        if (p.start and out[p.start - 1] == "'s") or _placed(out, p):
+        if (p.start and out[p.start - 1] == "'s") or placed_by_word(out, p):
             continue
         before = [
             q
-            for q in _road_users(out[: p.start], kind_at, known)
-            if q.kind in VEHICLES and q.det not in SAID_AGAIN.get(out[q.end - 1], ()) and not _placed(out, q)
+            for q in road_users(out[: p.start], kind_at, known)
+            if q.kind in VEHICLES and q.det not in SAID_AGAIN.get(out[q.end - 1], ()) and not placed_by_word(out, q)
         ]
         if before:
             continue
@@ -1085,14 +1100,14 @@ def _reported(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[st
     where the account's other road user acts on them: "in front of them"), every later bare or
     "the" mention of that person ("Driver braked") and their vehicle ("the car"). A text told by
     an "I" is that narrator's, whatever another driver says."""
-    named = [p for p in _road_users(tokens, kind_at, known) if p.kind == "ego" and tokens[p.start] not in ("us", "we")]
+    named = [p for p in road_users(tokens, kind_at, known) if p.kind == "ego" and tokens[p.start] not in ("us", "we")]
     if NARRATOR & set(tokens) or named:  # ("tells us": an operator's "we" only hears the account)
         return tokens
     at = next(
         (
             (k, found)
             for k, w in enumerate(tokens)
-            if _lemma_in(w, REPORTS) and (found := _reporter_at(tokens, k, kind_at))
+            if lemma_in(w, REPORTS) and (found := _reporter_at(tokens, k, kind_at))
         ),
         None,
     )
@@ -1112,23 +1127,23 @@ def _reported(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[st
         said.append(w)
     out = said
     for i in range(len(out) - 1, -1, -1):  # (the account's pronouns, in each sentence the ego tells)
-        s, e = _sentence(out, i)
+        s, e = sentence_span(out, i)
         if out[i] not in ACCOUNT_SUBJECT | ACCOUNT_OBJECT | ACCOUNT_POSSESSIVE | {"her"} or out[s : s + 2] != [
             "the",
             "ego",
         ]:
             continue
-        if not any(_lemma_in(w, REPORTS) for w in out[s:i]):
+        if not any(lemma_in(w, REPORTS) for w in out[s:i]):
             continue
         before = out[i - 1] if out[i - 1] != "that" else out[i - 2]
         nxt = out[i + 1] if i + 1 < len(out) else ""
         possessive = out[i] in ACCOUNT_POSSESSIVE or (out[i] == "her" and nxt.isalpha() and "NOUN" in lemmas(nxt))
-        if out[i] in ACCOUNT_SUBJECT and not _lemma_in(before, REPORTS):
+        if out[i] in ACCOUNT_SUBJECT and not lemma_in(before, REPORTS):
             continue  # (a "he" of its own: the account's other road user)
         out[i : i + 1] = ["the", "ego", "'s"] if possessive else ["the", "ego"]
     if vehicle is not None:
-        out = _as_ego(out, kind_at, known, vehicle, dropped)
-    return _driver_is_ego(out, kind_at, known, dropped)
+        out = as_ego(out, kind_at, known, vehicle, dropped)
+    return driver_is_ego(out, kind_at, known, dropped)
 
 
 def _fleet_member(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
@@ -1136,7 +1151,7 @@ def _fleet_member(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
     vehicle of the writer's fleet, the subject of its clause, is the one the story follows, the ego
     (so are its later "the van" and "the driver"); said inside someone's account ("a cyclist says one
     of our vans pulled out") it is another road user, as a fleet said in the plural always is."""
-    if NARRATOR & set(tokens) or any(p.kind == "ego" for p in _road_users(tokens, kind_at, known)):
+    if NARRATOR & set(tokens) or any(p.kind == "ego" for p in road_users(tokens, kind_at, known)):
         return tokens
     for k in range(len(tokens) - 3):
         if tokens[k : k + 3] != ["one", "of", "our"]:
@@ -1146,14 +1161,14 @@ def _fleet_member(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
             p = None  # (past its modifiers only: "one of our 7.5-tonners")
         if p is None or p.end >= len(tokens) or not (tokens[p.end] in BE or "VERB" in lemmas(tokens[p.end])):
             continue
-        s, _ = _sentence(tokens, k)
-        if any(_lemma_in(w, REPORTS) for w in tokens[s:k]):
+        s, _ = sentence_span(tokens, k)
+        if any(lemma_in(w, REPORTS) for w in tokens[s:k]):
             continue  # (someone's account of our vehicle)
         plural = tokens[p.end - 1]
         noun = next(iter(lemmas(plural).get("NOUN", (plural,))))
         dropped.extend(w for w in tokens[k : p.end] if w.isalpha())
         out = [*tokens[:k], "the", "ego", *tokens[p.end :]]
-        return _driver_is_ego(_as_ego(out, kind_at, known, noun, dropped), kind_at, known, dropped)
+        return driver_is_ego(as_ego(out, kind_at, known, noun, dropped), kind_at, known, dropped)
     return tokens
 
 
@@ -1169,7 +1184,7 @@ RIDDEN = VEHICLES | {"bicycle", "e-scooter"}
 HABIT = frozenset({"usually", "normally", "always", "often", "mostly", "generally", "still", "now", "only"})
 
 
-def _narrator_subject(tokens: list[str], k: int) -> bool:
+def narrator_subject(tokens: list[str], k: int) -> bool:
     """Whether the verb at ``k`` has a first-person subject ("I was driving", "we usually ride")."""
     f = k - 1
     while f >= 0 and (tokens[f] in BETWEEN or tokens[f] in HABIT):
@@ -1186,7 +1201,7 @@ def _driving_ego(tokens: list[str], k: int) -> bool:
         j -= 1
     if j >= 1 and tokens[j - 1 : j + 1] == ["the", "ego"]:
         return True
-    if _narrator_subject(tokens, k):
+    if narrator_subject(tokens, k):
         return True
     opening = next((b for b in range(k - 1, max(k - 12, -1), -1) if tokens[b] in ("(", ")")), None)
     return opening is not None and tokens[opening] == "(" and tokens[opening - 2 : opening] == ["the", "ego"]
@@ -1205,11 +1220,11 @@ def _ego_drives(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[
     if "ego" not in tokens and not (FIRST_PERSON | YOU) & set(tokens):
         return tokens
     for k, w in enumerate(tokens):
-        driving = w in DRIVING | {"riding", "rode", "ridden"} or _lemma_in(w, AT_CONTROLS)
+        driving = w in DRIVING | {"riding", "rode", "ridden"} or lemma_in(w, AT_CONTROLS)
         if not driving or not _driving_ego(tokens, k):
             continue
-        p = next((q for q in _road_users(tokens, kind_at, known) if k < q.start <= k + 4), None)
-        kinds = RIDDEN if _narrator_subject(tokens, k) else VEHICLES  # (a walker or rider is no one's vehicle)
+        p = next((q for q in road_users(tokens, kind_at, known) if k < q.start <= k + 4), None)
+        kinds = RIDDEN if narrator_subject(tokens, k) else VEHICLES  # (a walker or rider is no one's vehicle)
         if p is None or p.kind not in kinds:
             continue
         if any(not (x in OWNING or _owner_word(tokens, j) or (x.isalpha() and not known(tokens, j))) for j, x in
@@ -1222,10 +1237,10 @@ def _ego_drives(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[
         ):
             end = model  # (its model's name, up to where the phrase ends: "her own Honda Jazz,")
         dropped.extend(x for x in tokens[k + 1 : end] if x.isalpha() and x not in OWNING)
-        out = _as_ego([*tokens[: k + 1], *tokens[end:]], kind_at, known, noun, dropped)
+        out = as_ego([*tokens[: k + 1], *tokens[end:]], kind_at, known, noun, dropped)
         if "ego" not in tokens:  # (a narrator's story: "the driver" is someone else's)
             return out
-        return _driver_is_ego(out, kind_at, known, dropped)
+        return driver_is_ego(out, kind_at, known, dropped)
     return tokens
 
 
@@ -1236,11 +1251,11 @@ def _narrator_in(tokens: list[str], kind_at: KindAt, known: Known, dropped: list
     is the vehicle the narrator is in, the ego (so is every later "the van")."""
     if not (FIRST_PERSON | NARRATOR_INVOLVED) & set(tokens):
         return tokens
-    users = _road_users(tokens, kind_at, known)
+    users = road_users(tokens, kind_at, known)
     for p in _vehicle_phrases(tokens, kind_at, known):
-        if p.start < 2 or tokens[p.start - 1] != "in" or p.det not in ("the", "my", "our") or _placed(tokens, p):
+        if p.start < 2 or tokens[p.start - 1] != "in" or p.det not in ("the", "my", "our") or placed_by_word(tokens, p):
             continue
-        s, _ = _sentence(tokens, p.start)
+        s, _ = sentence_span(tokens, p.start)
         while s < p.start - 2 and tokens[s] in BETWEEN:
             s += 1  # (its subject left out, its auxiliary said: "Was heading home in the ute")
         opening = tokens[s].endswith("ing") and "VERB" in lemmas(tokens[s]) and s < p.start - 1
@@ -1252,7 +1267,7 @@ def _narrator_in(tokens: list[str], kind_at: KindAt, known: Known, dropped: list
         noun = tokens[p.end - 1]
         dropped.extend(w for w in tokens[p.start - 1 : p.end] if w not in DEFINITE)
         out = [*tokens[: p.start - 1], *tokens[p.end :]]
-        return _as_ego(out, kind_at, known, noun, dropped)
+        return as_ego(out, kind_at, known, noun, dropped)
     return tokens
 
 
@@ -1260,11 +1275,11 @@ def _story(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
     """The sentences of ``tokens`` that tell the story: those that name a road user other than the ego
     or give a speed. A writer who says "I" or "you" only in the others ("Quick word before your
     shift", "Watch your mirrors") speaks in asides and is no road user of the story."""
-    users = [p for p in _road_users(tokens, kind_at, known) if p.kind != "ego"]
+    users = [p for p in road_users(tokens, kind_at, known) if p.kind != "ego"]
     out: list[str] = []
     k = 0
     while k < len(tokens):
-        s, e = _sentence(tokens, k)
+        s, e = sentence_span(tokens, k)
         if any(s <= p.start < e for p in users) or any(w in SPEED_UNITS for w in tokens[s:e]):
             out += tokens[s : e + 1]
         k = e + 1
@@ -1318,11 +1333,11 @@ def _party_took(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[
         ):
             j += 1  # ("had taken the car", "has borrowed my van")
         p = next((q for q in _vehicle_phrases(tokens, kind_at, known) if j < q.start <= j + 2), None)
-        if p is None or p.kind not in VEHICLES or tokens[p.start] in INDEFINITE or _placed(tokens, p):
+        if p is None or p.kind not in VEHICLES or tokens[p.start] in INDEFINITE or placed_by_word(tokens, p):
             continue
         dropped.extend(x for x in tokens[p.start : p.end] if x.isalpha() and x not in OWNING)
         out = tokens[:s] + ["the", "ego"] + tokens[k + 1 : p.start] + tokens[p.end :]
-        out = _as_ego(out, kind_at, known, tokens[p.end - 1], dropped)
+        out = as_ego(out, kind_at, known, tokens[p.end - 1], dropped)
         at = s + 2 + (p.start - k - 1)
         for i in range(len(out) - 1, at - 1, -1):  # (the person named again: "Grandad's more shaken")
             if out[i] == w and out[i - 1] not in INDEFINITE:
@@ -1367,12 +1382,12 @@ def _owned_vehicle(tokens: list[str], kind_at: KindAt, known: Known, dropped: li
     the story ("I was behind Mr Tan's taxi")."""
     if NARRATOR_PERSON & set(tokens):
         return tokens
-    users = _road_users(tokens, kind_at, known)
+    users = road_users(tokens, kind_at, known)
     if any(p.kind == "ego" for p in users) or len(users) < 2:
         return tokens
 
     for p in users:
-        standing = p.kind not in VEHICLES or _placed(tokens, p) or _parked(tokens, p)
+        standing = p.kind not in VEHICLES or placed_by_word(tokens, p) or stands_parked(tokens, p)
         found = None if standing else _owner_phrase(tokens, p, kind_at)
         if found is None:
             continue
@@ -1380,13 +1395,13 @@ def _owned_vehicle(tokens: list[str], kind_at: KindAt, known: Known, dropped: li
         owner = tokens[start : p.start - 1]
         noun = tokens[p.end - 1]
         dropped.extend(w for w in tokens[start : p.end] if w.isalpha() and w not in PARTY_OWNERS)
-        out = _as_ego([*tokens[:start], "the", "ego", *tokens[p.end :]], kind_at, known, noun, dropped)
+        out = as_ego([*tokens[:start], "the", "ego", *tokens[p.end :]], kind_at, known, noun, dropped)
         i = start + 2
         while i < len(out):  # (the owner named again: "Our son was going straight on")
             if out[i : i + len(owner)] == owner:
                 out[i : i + len(owner)] = ["the", "ego"]
             i += 1
-        out = _driver_is_ego(out, kind_at, known, dropped)  # ("the driver waited": its driver)
+        out = driver_is_ego(out, kind_at, known, dropped)  # ("the driver waited": its driver)
         return _pronouns_as_ego(out, gender, kind_at, known) if gender else out
     return tokens
 
@@ -1398,16 +1413,16 @@ def _organisation_vehicle(tokens: list[str], kind_at: KindAt, known: Known, drop
     telling it, where the text names no other ego. "A company van pulled out" (new) or "the fleet van
     ahead of me" (placed) is someone else's."""
     narrator = FIRST_PERSON | (NARRATOR_INVOLVED - {"ego"})
-    if any(p.kind == "ego" and tokens[p.head] not in narrator for p in _road_users(tokens, kind_at, known)):
+    if any(p.kind == "ego" and tokens[p.head] not in narrator for p in road_users(tokens, kind_at, known)):
         return tokens
     for p in _vehicle_phrases(tokens, kind_at, known):
         owned = [w for w in tokens[max(p.start - 1, 0) : p.head] if w in ORGANISATION]
-        if not owned or p.det not in ("the", "our") or _placed(tokens, p):
+        if not owned or p.det not in ("the", "our") or placed_by_word(tokens, p):
             continue
         noun = tokens[p.end - 1]
         dropped.extend(w for w in tokens[p.start : p.end] if w not in DEFINITE | {"our"})
         out = [*tokens[: p.start], "the", "ego", *tokens[p.end :]]
-        return _as_ego(out, kind_at, known, noun, dropped)
+        return as_ego(out, kind_at, known, noun, dropped)
     return tokens
 
 
@@ -1424,22 +1439,22 @@ def frame(
 def _role_driver(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """ "The test vehicle was moving ... A child ran out ... The driver swerved": where the ego is named
     by a role (not a narrator's pronoun), "the driver" said after it is the ego's driver until another
-    motor vehicle is named, since walkers and riders have no driver (see :func:`_driver_is_ego`)."""
-    first = next((p for p in _road_users(tokens, kind_at, known) if p.kind == "ego"), None)
+    motor vehicle is named, since walkers and riders have no driver (see :func:`driver_is_ego`)."""
+    first = next((p for p in road_users(tokens, kind_at, known) if p.kind == "ego"), None)
     if first is None or any(w in FIRST_PERSON | NARRATOR_INVOLVED - {"ego"} for w in tokens):
         return tokens
-    if any(p.kind in VEHICLES for p in _road_users(tokens[: first.start], kind_at, known)):
+    if any(p.kind in VEHICLES for p in road_users(tokens[: first.start], kind_at, known)):
         return tokens  # ("A lorry overtook the test vehicle. The driver ...": whose is unclear)
-    from vei_scenario.language.discourse import _apposition_end
+    from vei_scenario.language.discourse import apposition_end
 
-    said = _apposition_end(tokens, first.end, kind_at, known, most=5) or first.end  # (", a Skoda estate,")
+    said = apposition_end(tokens, first.end, kind_at, known, most=5) or first.end  # (", a Skoda estate,")
     out = list(tokens)
-    for p in reversed(_road_users(out, kind_at, known)):
+    for p in reversed(road_users(out, kind_at, known)):
         if p.start < first.end or out[p.start : p.end] != ["the", "driver"] or out[p.end : p.end + 1] == ["of"]:
             continue
-        if (p.start and out[p.start - 1] == "'s") or _placed(out, p):
+        if (p.start and out[p.start - 1] == "'s") or placed_by_word(out, p):
             continue
-        users = _road_users(out[: p.start], kind_at, known)
+        users = road_users(out[: p.start], kind_at, known)
         if any(q.kind in VEHICLES and q.start >= said and out[q.start : q.end] != ["the", "driver"] for q in users):
             continue  # (a motor vehicle named before: the driver may be its)
         dropped.append("driver")
@@ -1475,12 +1490,12 @@ def _frame(
         if names_ego(_story(tokens, kind_at, known), kind_at, known):
             return tokens
         return _at_the_wheel(tokens, kind_at, known, dropped)  # (the writer only in asides)
-    from vei_scenario.language.discourse import _labels
+    from vei_scenario.language.discourse import vehicle_labels
 
     tokens = _labelled_driver(tokens, kind_at, known, dropped)
     if names_ego(tokens, kind_at, known):
         return tokens
-    if _labels(tokens, kind_at, known):
+    if vehicle_labels(tokens, kind_at, known):
         return tokens  # (a report's labels say who the ego is)
     for third_person in (_at_the_wheel, _driving_subject, _news_driver, _followed_driver, _person_driving):
         tokens = third_person(tokens, kind_at, known, dropped)  # (the first that names the ego decides)

@@ -44,7 +44,7 @@ from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.reading import ActorSpec, Reading
 
 #: What the ego itself does in a story told from it: goes on, slows, brakes (to a stop).
-_EGO_LIKE = frozenset(("keep_going", "sudden_stop", "stop", "change_speed"))
+EGO_LIKE = frozenset(("keep_going", "sudden_stop", "stop", "change_speed"))
 #: What a road user does that puts it in the ego's path, for the ego to stop for: crossing, cutting in,
 #: turning or pulling out across it, coming the wrong way, braking hard ahead of it.
 _IN_THE_PATH = frozenset(
@@ -161,7 +161,7 @@ def _double(a: _Said, spec: ActorSpec, others: list, unnamed: bool = False, spec
         and spec.relation is None
         and spec.lateral_m is None
         and (spec.speed_mps is None or spec.speed_mps > 0.0)
-        and names <= _EGO_LIKE
+        and names <= EGO_LIKE
         and (names != {"stop"} or (spec.speed_mps is None and not a.stationary and stops_for_someone(spec, specs)))
         and not _placed(a)
         and (a.det not in NEW or (unnamed and spec.speed_mps is not None))
@@ -181,7 +181,7 @@ def merge_into_ego(actors: list, reading: Reading, unnamed: bool = False) -> lis
     doubles = [k for k, (a, s) in enumerate(zip(actors, specs)) if _double(a, s, actors, specs=specs)]
     if not doubles and unnamed:  # (one not new is the ego before any brought in as new)
         doubles = [k for k, (a, s) in enumerate(zip(actors, specs)) if _double(a, s, actors, unnamed, specs)]
-    deeds = [s for s in specs if not {b[0] for b in s.behaviours} <= _EGO_LIKE or s.relation is not None]
+    deeds = [s for s in specs if not {b[0] for b in s.behaviours} <= EGO_LIKE or s.relation is not None]
     if len(doubles) != 1 or not deeds or len(specs) < 2:
         return actors
     k = doubles[0]
@@ -261,7 +261,7 @@ def _said_again_as_both(group: list, spec_of: dict, others: list) -> bool:
         and all(id(a) in spec_of and a.named_after == "both" for a in group)
         and all(
             spec_of[id(a)].kind in _EGO_KINDS
-            and {b[0] for b in spec_of[id(a)].behaviours} <= _EGO_LIKE
+            and {b[0] for b in spec_of[id(a)].behaviours} <= EGO_LIKE
             and a.relation is None
             and not (a.side or a.lane_side or a.kerb or a.kerb_side or a.from_arm or a.beside or a.seen)
             and not any(x.object_of is a for x in others)

@@ -23,7 +23,7 @@ from vei_scenario.language.clauses import sentence_start
 from vei_scenario.language.discourse import FIRST_PERSON
 from vei_scenario.language.ego import SENTENCE_END
 from vei_scenario.language.lemmas import lemmas
-from vei_scenario.language.quantities import _is_number
+from vei_scenario.language.quantities import is_number
 
 #: Words of going at a speed, before "the <number> limit" ("doing", "sitting at", "keeping to").
 GOING = frozenset(
@@ -51,7 +51,7 @@ def at_the_limit(tokens: list[str]) -> list[str]:
         j = k - (out[k - 1] == "speed")
         unit = j >= 1 and out[j - 1] in V.SPEED_UNITS
         n = j - 1 - unit
-        if n >= 2 and _is_number(out[n]) and out[n - 1] == "the":
+        if n >= 2 and is_number(out[n]) and out[n - 1] == "the":
             verb = n - 2 - (out[n - 2] in ("at", "to"))
             if verb >= 0 and out[verb] in GOING:
                 out[n - 1 : end] = out[n : n + 1 + unit]
@@ -87,7 +87,7 @@ def the_limit_then_its_number(tokens: list[str]) -> list[str]:
         verb = the - 1 - (out[the - 1] in ("at", "to"))
         if (
             n < len(out)
-            and _is_number(out[n])
+            and is_number(out[n])
             and after in _LIMIT_PHRASE_ENDS
             and out[the] == "the"
             and verb >= 0
@@ -113,7 +113,7 @@ def of_traffic(tokens: list[str]) -> float | None:
         j += 1
         while j < len(tokens) and tokens[j] in _HEDGES:
             j += 1
-        if j + 1 < len(tokens) and _is_number(tokens[j]) and tokens[j + 1] in V.SPEED_UNITS:
+        if j + 1 < len(tokens) and is_number(tokens[j]) and tokens[j + 1] in V.SPEED_UNITS:
             return float(tokens[j]) * V.SPEED_UNITS[tokens[j + 1]]
     return None
 
@@ -143,7 +143,7 @@ def opening_participles(tokens: list[str]) -> dict[int, bool]:
         for j in range(k + 1, min(k + 14, len(tokens))):
             if tokens[j] in _PHRASE_ENDS:
                 break
-            if _is_number(tokens[j]) and j + 1 < len(tokens) and tokens[j + 1] in V.SPEED_UNITS:
+            if is_number(tokens[j]) and j + 1 < len(tokens) and tokens[j + 1] in V.SPEED_UNITS:
                 out[j] = not NOT_DRIVING & set(verbs)
     return out
 
@@ -527,7 +527,7 @@ def _ego_object_ending_at(tokens: list[str], k: int) -> bool:
             if tokens[j] in _EGO_OWNERS:
                 start = j
                 break
-            if tokens[j] in _NOTE_MARKS or _is_number(tokens[j]):
+            if tokens[j] in _NOTE_MARKS or is_number(tokens[j]):
                 return False
     return start is not None and start >= 1 and tokens[start - 1] in _TOWARDS
 

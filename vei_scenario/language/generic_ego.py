@@ -16,7 +16,7 @@ general, and the words for anyone in traffic.
 
 from __future__ import annotations
 
-from vei_scenario.language.discourse import _Phrase
+from vei_scenario.language.discourse import Phrase
 from vei_scenario.language.ego import (
     BE,
     DEFINITE,
@@ -25,11 +25,11 @@ from vei_scenario.language.ego import (
     VEHICLES,
     KindAt,
     Known,
-    _lemma_in,
-    _placed,
-    _road_users,
-    _sentence,
+    lemma_in,
     names_ego,
+    placed_by_word,
+    road_users,
+    sentence_span,
 )
 from vei_scenario.language.lemmas import lemmas
 
@@ -92,7 +92,7 @@ def _generic_drivers(tokens: list[str], kind_at: KindAt, known: Known) -> list:
     driver", "drivers"), not a vehicle's driver ("the bus driver", "the driver of the van") nor
     someone besides ("other drivers")."""
     out = []
-    for p in _road_users(tokens, kind_at, known):
+    for p in road_users(tokens, kind_at, known):
         if p.end - p.head != 1 or tokens[p.end : p.end + 1] == ["of"]:
             continue
         if tokens[p.head] not in DRIVERS and not _traffic_subject(tokens, p.head):
@@ -104,7 +104,7 @@ def _generic_drivers(tokens: list[str], kind_at: KindAt, known: Known) -> list:
         start = p.head - bool(det)
         if start and (tokens[start - 1] in MET or _opening_participle(tokens, start - 1)):
             continue  # ("Following a driver who brakes": the driver met)
-        out.append(_Phrase(start, p.head, p.end, det, p.kind))  # (its own article only)
+        out.append(Phrase(start, p.head, p.end, det, p.kind))  # (its own article only)
     return out
 
 
@@ -139,10 +139,8 @@ def _only_reports(tokens: list[str]) -> bool:
     said = [k for k, w in enumerate(tokens) if w in ("i", "we")]
     for k in said:
         after = tokens[k + 1 : k + 4]
-        account = any(_lemma_in(w, HAVING) for w in after) and any(
-            _lemma_in(w, ACCOUNTS) for w in tokens[k + 1 : k + 6]
-        )
-        if "to" in after[:3] or not (account or any(_lemma_in(w, REPORTING) for w in after)):
+        account = any(lemma_in(w, HAVING) for w in after) and any(lemma_in(w, ACCOUNTS) for w in tokens[k + 1 : k + 6])
+        if "to" in after[:3] or not (account or any(lemma_in(w, REPORTING) for w in after)):
             return False
     return bool(said)
 
@@ -154,8 +152,11 @@ def _own_vehicles(tokens: list[str], kind_at: KindAt, known: Known, drivers: lis
     heads = {p.head for p in drivers}
     return [
         p
-        for p in _road_users(tokens, kind_at, known)
-        if p.kind in VEHICLES and p.head not in heads and tokens[p.end - 1] not in DRIVERS and not _placed(tokens, p)
+        for p in road_users(tokens, kind_at, known)
+        if p.kind in VEHICLES
+        and p.head not in heads
+        and tokens[p.end - 1] not in DRIVERS
+        and not placed_by_word(tokens, p)
     ]
 
 
@@ -197,15 +198,15 @@ def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) 
     tokens = _follower_of_lead(tokens, dropped)
     if (names_ego(tokens, kind_at, known) and not _only_reports(tokens)) or SECOND_PERSON & set(tokens):
         return tokens
-    from vei_scenario.language.discourse import _labels
+    from vei_scenario.language.discourse import vehicle_labels
 
     drivers = _generic_drivers(tokens, kind_at, known)
     lone = not _own_vehicles(tokens, kind_at, known, drivers)
     first = next((p for p in drivers if lone or p.det not in DEFINITE), None)
-    if first is None or _labels(tokens, kind_at, known):
+    if first is None or vehicle_labels(tokens, kind_at, known):
         return tokens  # ("a van pulls out and the driver brakes": that van's driver)
     drivers = [p for p in drivers if lone or p.start >= first.start]
-    met = _anyone_met(tokens, first.end, _sentence(tokens, first.end)[1])
+    met = _anyone_met(tokens, first.end, sentence_span(tokens, first.end)[1])
     if met is not None:
         dropped.extend(w for w in tokens[met[0] : met[1]] if w not in INDEFINITE)
         return [*tokens[: met[0]], "the", "ego", *tokens[met[1] :]]

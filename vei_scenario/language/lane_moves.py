@@ -19,7 +19,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 from vei_scenario.language.lemmas import lemmas
-from vei_scenario.language.motion import _said_hard, passes
+from vei_scenario.language.motion import passes, said_hard
 
 #: The bare verb of braking, in each form (no manner, no object: "braked", "brakes").
 _PLAIN_BRAKE = frozenset(("brake", "brakes", "braked", "braking"))
@@ -55,7 +55,7 @@ def _plain_braking(m, tokens: list[str], nxt) -> bool:
         return False
     to_a_stop = nxt is not None and nxt.slot == "to_stop"
     forced = _pressed_with_force(tokens, m.start)
-    return not to_a_stop and not forced and not _said_hard(tokens, m) and tokens[m.end : m.end + 1] != ["to"]
+    return not to_a_stop and not forced and not said_hard(tokens, m) and tokens[m.end : m.end + 1] != ["to"]
 
 
 def _cut_in_before(mentions: list, k: int) -> bool:

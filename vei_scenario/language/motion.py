@@ -156,7 +156,7 @@ def _into_someone(tokens: list[str], j: int) -> bool:
     token ``j`` ("crashed into a cyclist", "collided head-on with the bus", "smashed into the side of
     my car"): it states whom it met, the contact itself, not a fall or a stop of its own ("crashed
     into the barrier" is still how it stopped)."""
-    from vei_scenario.language.outcome import _names_road_user
+    from vei_scenario.language.outcome import names_road_user
 
     while j < len(tokens) and tokens[j] in _HOW_IT_MEETS:
         j += 1
@@ -165,7 +165,7 @@ def _into_someone(tokens: list[str], j: int) -> bool:
     obj = tokens[j + 1 : j + 8]
     k = next((k for k, w in enumerate(obj[:4]) if w in _MET_PARTS and obj[k + 1 : k + 2] == ["of"]), None)
     obj = obj[k + 2 :] if k is not None else obj  # ("the side of my car": my car)
-    return _names_road_user(obj) or obj[:1] in (["me"], ["us"], ["ego"]) or obj[:2] == ["the", "ego"]
+    return names_road_user(obj) or obj[:1] in (["me"], ["us"], ["ego"]) or obj[:2] == ["the", "ego"]
 
 
 #: Modals of what would have happened ("could have crashed"): the contact did not happen.
@@ -176,9 +176,9 @@ def _nearly(tokens: list[str], i: int) -> bool:
     """Whether the verb of contact at token ``i`` is hedged ("nearly crash", "very nearly collided",
     "almost crashing") or counterfactual ("could have crashed"): the contact was only nearly had, so
     the verb states a near miss (the outcome), not a fall or a stop the road user makes."""
-    from vei_scenario.language.outcome import _HEDGES
+    from vei_scenario.language.outcome import HEDGES
 
-    if i >= 1 and tokens[i - 1] in _HEDGES:
+    if i >= 1 and tokens[i - 1] in HEDGES:
         return True
     return i >= 2 and tokens[i - 1] == "have" and tokens[i - 2] in _COUNTERFACTUAL
 
@@ -201,7 +201,7 @@ def _struck_earlier(tokens: list[str], m) -> bool:
 
     i = m.start
     before = [j for j in contacts_made(tokens) if j < i]
-    if not before or _said_hard(tokens, m) or tokens[i - 1 : i] == ["had"]:
+    if not before or said_hard(tokens, m) or tokens[i - 1 : i] == ["had"]:
         return False
     between = tokens[before[-1] + 1 : i]
     ends = [k for k, t in enumerate(between) if t in (".", "!", "?", ";")]
@@ -1766,7 +1766,7 @@ def _stopping(m) -> bool:
     return m.slot == "stationary" and verb.endswith(("ed", "s")) and stops
 
 
-def _said_hard(tokens: list[str], m) -> bool:
+def said_hard(tokens: list[str], m) -> bool:
     """Whether the verb of mention ``m`` is said in a hard manner: an adverb of one right before it or
     right after it, past an intensifier ("abruptly stopped", "stopped very sharply")."""
     j = m.end
@@ -1787,7 +1787,7 @@ def hard_stops(clauses: list, tokens: list[str]) -> list:
         for k, m in enumerate(kept):
             if not _stopping(m):
                 continue
-            if _said_hard(tokens, m):
+            if said_hard(tokens, m):
                 kept[k] = replace(m, slot="behaviour", value=("sudden_stop", {}))
         out.append((link, kept))
     return out

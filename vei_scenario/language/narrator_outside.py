@@ -21,8 +21,8 @@ may be at a wheel, or on foot beside the one it happened to, when
 
 from __future__ import annotations
 
-from vei_scenario.language.ego import FIRST_PERSON, VEHICLES, KindAt, Known, _lemma_in, _narrator_subject, _road_users
-from vei_scenario.language.narrator_vehicle import _narrator_speed
+from vei_scenario.language.ego import FIRST_PERSON, VEHICLES, KindAt, Known, lemma_in, narrator_subject, road_users
+from vei_scenario.language.narrator_vehicle import narrator_speed
 
 #: Verbs of steering or handling a vehicle (by lemma): a writer who does one is at a wheel.
 AT_THE_WHEEL = frozenset(
@@ -74,14 +74,14 @@ def _owns_a_vehicle(tokens: list[str], kind_at: KindAt) -> bool:
 def _at_a_speed(tokens: list[str], k: int) -> bool:
     """Whether the verb at ``k`` gives its subject a speed ("doing 50", "going about 40")."""
     after = [w for w in tokens[k + 1 : k + 4] if w not in ("about", "around", "roughly", "maybe", "at", "like")]
-    return _lemma_in(tokens[k], AT_A_SPEED) and bool(after) and after[0].isdigit()
+    return lemma_in(tokens[k], AT_A_SPEED) and bool(after) and after[0].isdigit()
 
 
 def _steers(tokens: list[str]) -> bool:
     """Whether the writer is the subject of a verb of steering or of one with a speed ("I was driving",
     "we braked hard", "we were doing 50")."""
     return any(
-        (_lemma_in(w, AT_THE_WHEEL) or _at_a_speed(tokens, k)) and _narrator_subject(tokens, k)
+        (lemma_in(w, AT_THE_WHEEL) or _at_a_speed(tokens, k)) and narrator_subject(tokens, k)
         for k, w in enumerate(tokens)
         if k
     )
@@ -109,7 +109,7 @@ def outside(tokens: list[str], kind_at: KindAt, known: Known) -> bool:
         return False  # (no writer: the reader's passes for reports with no narrator apply as they are)
     if _owns_a_vehicle(tokens, kind_at):
         return False
-    if _steers(tokens) or _narrator_speed(tokens, _road_users(tokens, kind_at, known)):
+    if _steers(tokens) or narrator_speed(tokens, road_users(tokens, kind_at, known)):
         return False
     if _placed_on_the_road(tokens):
         return False  # ("we were stuck in traffic behind a bus when ...": the writer is on the road)

@@ -19,7 +19,7 @@ with its reason:
 
 from __future__ import annotations
 
-from vei_scenario.language.ego import BETWEEN, FIRST_PERSON, HABIT, SENTENCE_END, KindAt, _lemma_in, _rider_noun
+from vei_scenario.language.ego import BETWEEN, FIRST_PERSON, HABIT, SENTENCE_END, KindAt, lemma_in, rider_noun
 from vei_scenario.language.ego_double import take_as_ego, without_road_user
 from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.reading import Reading
@@ -84,7 +84,7 @@ def _ridden_it(tokens: list[str], a, others: list) -> bool:
     end = next((k for k in range(a.named_end, len(tokens)) if tokens[k] in SENTENCE_END), len(tokens))
     end = next((k for k in range(end + 1, len(tokens)) if tokens[k] in SENTENCE_END), len(tokens))
     for k in range(a.named_end + 1, end):
-        if tokens[k] != "it" or not _lemma_in(tokens[k - 1], frozenset({"ride"})) or not _narrators(tokens, k - 1):
+        if tokens[k] != "it" or not lemma_in(tokens[k - 1], frozenset({"ride"})) or not _narrators(tokens, k - 1):
             continue
         return not any(a.named_end < o.named_end <= k for o in others)
     return False
@@ -97,7 +97,7 @@ def _rides_here(tokens: list[str], start: int) -> bool:
     if j >= 1 and tokens[j] == "on" and tokens[j - 1] not in _CLAUSE_OPEN:
         return _narrators(tokens, j)  # (not an opening "On a scooter, a lad ...": someone else on it)
     verb = tokens[j] if j >= 0 else ""
-    return verb.isalpha() and "VERB" in lemmas(verb) and _lemma_in(verb, _TAKING) and _narrators(tokens, j)
+    return verb.isalpha() and "VERB" in lemmas(verb) and lemma_in(verb, _TAKING) and _narrators(tokens, j)
 
 
 #: Verbs (by lemma) of the narrator riding with no object said: the ride is the narrator's own.
@@ -111,7 +111,7 @@ def _narrator_rides(tokens: list[str]) -> bool:
     the reader has already made the ego: "on my moped", said "on ego")."""
     if any(tokens[k : k + 2] == ["on", "ego"] for k in range(len(tokens) - 1)):
         return True
-    return any(_lemma_in(w, _RIDING) and "VERB" in lemmas(w) and _narrators(tokens, k) for k, w in enumerate(tokens))
+    return any(lemma_in(w, _RIDING) and "VERB" in lemmas(w) and _narrators(tokens, k) for k, w in enumerate(tokens))
 
 
 def _the_ride(tokens: list[str], a) -> bool:
@@ -133,9 +133,9 @@ def _narrators_ride(tokens: list[str], a, others: list, kind_at: KindAt) -> bool
         return False
     alone = not any(o.kind == a.kind for o in others)
     for start, end in _mentions(tokens, a, alone, kind_at):
-        if not _rider_noun(tokens[end - 1]) and _rides_here(tokens, start):
+        if not rider_noun(tokens[end - 1]) and _rides_here(tokens, start):
             return True  # (the machine, not its rider: "I nearly took a cyclist out")
-    if alone and not _rider_noun(a.word.split()[-1]) and _the_ride(tokens, a):
+    if alone and not rider_noun(a.word.split()[-1]) and _the_ride(tokens, a):
         return True
     return _ridden_it(tokens, a, others)
 

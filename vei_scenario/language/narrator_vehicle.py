@@ -32,15 +32,15 @@ from vei_scenario.language.ego import (
     VEHICLES,
     KindAt,
     Known,
-    _as_ego,
-    _compound,
-    _driver_is_ego,
-    _lemma_in,
-    _narrator_subject,
-    _placed,
-    _road_users,
-    _sentence,
+    as_ego,
+    driver_is_ego,
+    is_modifier_noun,
     kind_said_again,
+    lemma_in,
+    narrator_subject,
+    placed_by_word,
+    road_users,
+    sentence_span,
 )
 from vei_scenario.language.ego_speed import impact_after_braking
 from vei_scenario.language.lemmas import lemmas
@@ -79,7 +79,7 @@ def _narrator_on_foot(tokens: list[str], kind_at: KindAt) -> bool:
         j = k + 1
         while j < len(tokens) and tokens[j] in BETWEEN:
             j += 1
-        if j < len(tokens) and _lemma_in(tokens[j], ON_FOOT):
+        if j < len(tokens) and lemma_in(tokens[j], ON_FOOT):
             return True
     return False
 
@@ -92,7 +92,7 @@ def _clause_start(tokens: list[str], i: int) -> bool:
 def _clause(tokens: list[str], i: int) -> tuple[int, int]:
     """The clause around ``i``: from the last clause boundary before it to the end of its sentence
     (what the clause's subject does, and to whom, runs to there)."""
-    s, e = _sentence(tokens, i)
+    s, e = sentence_span(tokens, i)
     b = next((k + 1 for k in range(i - 1, s - 1, -1) if tokens[k] in CLAUSE_START), s)
     return b, e
 
@@ -103,25 +103,25 @@ def _steered(tokens: list[str], p) -> bool:
     if not p.start:
         return False
     verb = tokens[p.start - 1]
-    return verb.isalpha() and "VERB" in lemmas(verb) and _lemma_in(verb, STEERING)
+    return verb.isalpha() and "VERB" in lemmas(verb) and lemma_in(verb, STEERING)
 
 
 def _own_speed(tokens: list[str], p, users) -> bool:
     """Whether a speed follows ``p`` in its clause before anyone else is named ("the van approaching
     at 40 km/h")."""
-    _, e = _sentence(tokens, p.end)
+    _, e = sentence_span(tokens, p.end)
     e = next((k for k in range(p.end, e) if tokens[k] in PUNCT or tokens[k] in ("and", "but")), e)
     nxt = min((q.start for q in users if q.start >= p.end), default=e)
     return any(w in SPEED_UNITS for w in tokens[p.end : min(e, nxt)])
 
 
-def _narrator_speed(tokens: list[str], users) -> bool:
+def narrator_speed(tokens: list[str], users) -> bool:
     """Whether the narrator has a speed of their own in ``tokens`` ("we were doing 40 km/h", "us at
     15 km/h"): a vehicle with a speed of its own beside it is someone else ("I was at 30 when the van
     doing 50 ...", "the coach was doing 40 when it pulled in; we were at 70")."""
     for k, w in enumerate(tokens):
         if w in FIRST_PERSON | {"us"}:
-            s, e = _sentence(tokens, k)
+            s, e = sentence_span(tokens, k)
             e = next((q.start for q in users if k < q.start < e), e)
             if any(tokens[u] in SPEED_UNITS and not impact_after_braking(tokens, u - 1) for u in range(k, e)):
                 return True  # (not the speed the narrator hits something at: "we struck it at 12 mph")
@@ -147,11 +147,11 @@ def _unintroduced(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
         return tokens
     if _narrator_on_foot(tokens, kind_at):
         return tokens
-    users = _road_users(tokens, kind_at, known)
+    users = road_users(tokens, kind_at, known)
     if any(p.det in ("my", "our") and p.kind in VEHICLES for p in users):
         return tokens  # (the narrator's vehicle is named as theirs)
     for n, p in enumerate(users):
-        if p.kind not in VEHICLES or p.det != "the" or _placed(tokens, p) or _compound(tokens, p):
+        if p.kind not in VEHICLES or p.det != "the" or placed_by_word(tokens, p) or is_modifier_noun(tokens, p):
             continue
         said = tokens[p.start : p.end + 1]
         if any(w in TEST_OBJECTS or w.isdigit() or w in ("number", "other") for w in said):
@@ -164,16 +164,16 @@ def _unintroduced(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
             if not (steered and _steered_unsaid(tokens, p, users)):
                 continue
         subject = _clause_start(tokens, p.start) and _own_speed(tokens, p, users)
-        subject = subject and not MEETS_NARRATOR & set(tokens[b:e]) and not _narrator_speed(tokens, users)
+        subject = subject and not MEETS_NARRATOR & set(tokens[b:e]) and not narrator_speed(tokens, users)
         landmark = tokens[max(p.start - 2, 0) : p.start] in (["front", "of"], ["ahead", "of"], ["path", "of"])
         # (what someone crosses in front of is where the writer is; what shakes is what the writer feels)
         if not (steered or subject or landmark or _shaken(tokens, p) or _acts_by_itself(tokens, p, users[n:])):
             continue
         noun = tokens[p.end - 1]
         dropped.extend(w for w in tokens[p.start : p.end] if w not in DEFINITE)
-        out = _as_ego([*tokens[: p.start], "the", "ego", *tokens[p.end :]], kind_at, known, noun, dropped)
+        out = as_ego([*tokens[: p.start], "the", "ego", *tokens[p.end :]], kind_at, known, noun, dropped)
         out = _kind_again(out, p.kind, kind_at, known, dropped)
-        return _driver_is_ego(out, kind_at, known, dropped) if {"we", "us", "our"} & words else out
+        return driver_is_ego(out, kind_at, known, dropped) if {"we", "us", "our"} & words else out
     return tokens
 
 
@@ -192,7 +192,7 @@ def _acts_by_itself(tokens: list[str], p, later) -> bool:
     if any(q.kind == p.kind and q.det in INDEFINITE for q in later):
         return False
     for q in later:
-        if q.kind != p.kind or q.det != "the" or _placed(tokens, q) or not _clause_start(tokens, q.start):
+        if q.kind != p.kind or q.det != "the" or placed_by_word(tokens, q) or not _clause_start(tokens, q.start):
             continue
         e = next((k for k in range(q.end, len(tokens)) if tokens[k] in _CLAUSE_END), len(tokens))
         clause = tokens[q.end : e]
@@ -217,7 +217,7 @@ def _shaken(tokens: list[str], p) -> bool:
     k = p.end
     while k < min(p.end + 3, len(tokens)) and (tokens[k] in _HEDGES or tokens[k].endswith("ly")):
         k += 1
-    return k < len(tokens) and "VERB" in lemmas(tokens[k]) and _lemma_in(tokens[k], SHAKEN)
+    return k < len(tokens) and "VERB" in lemmas(tokens[k]) and lemma_in(tokens[k], SHAKEN)
 
 
 def _subjectless(tokens: list[str], s: int) -> bool:
@@ -239,7 +239,7 @@ def _steered_unsaid(tokens: list[str], p, users) -> bool:
     verb and no one who could be at a wheel (a vehicle, its driver) is named between ("Sounded the
     horn and stopped the bus", "Slowed as a kid ran out, pulled the lorry over"; not "a bus pulled
     out and its driver stopped the bus")."""
-    s, _ = _sentence(tokens, p.start)
+    s, _ = sentence_span(tokens, p.start)
     if not _subjectless(tokens, s):
         return False
     between = [q for q in users if s <= q.start < p.start - 1]
@@ -250,11 +250,11 @@ def _kind_again(tokens: list[str], kind: str, kind_at: KindAt, known: Known, dro
     """ "We brought the saloon up to 50 km/h and pointed the car at ...": once the narrator's vehicle
     is the ego, a later "the <noun>" of its kind is it again, until a vehicle of that kind is
     introduced ("a car")."""
-    for q in _road_users(tokens, kind_at, known):
+    for q in road_users(tokens, kind_at, known):
         if q.kind == kind and q.det in INDEFINITE:
             return tokens
-        if q.kind == kind and q.det == "the" and not _placed(tokens, q) and not _compound(tokens, q):
-            out = _as_ego(tokens, kind_at, known, tokens[q.end - 1], dropped)
+        if q.kind == kind and q.det == "the" and not placed_by_word(tokens, q) and not is_modifier_noun(tokens, q):
+            out = as_ego(tokens, kind_at, known, tokens[q.end - 1], dropped)
             return tokens if out == tokens else _kind_again(out, kind, kind_at, known, dropped)
     return tokens
 
@@ -268,7 +268,7 @@ def _heading(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str
     if not (FIRST_PERSON | MEETS_NARRATOR) & set(tokens) or "ego" in tokens:
         return tokens
     chain = []  # (the nouns of the heading back to back: "courier van", "tanker driver")
-    for q in _road_users(tokens, kind_at, known):
+    for q in road_users(tokens, kind_at, known):
         if q.start != (chain[-1].end if chain else 0) or q.det:
             break
         chain.append(q)
@@ -280,7 +280,7 @@ def _heading(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str
     if not here and tokens[end : end + 1] not in ([","], ["."], [":"], ["-"]):
         return tokens
     if not here:  # (no verb of its own before the narrator speaks: "Van, no lights, came at me")
-        _, e = _sentence(tokens, end)
+        _, e = sentence_span(tokens, end)
         stop = next((k for k in range(end, e) if tokens[k] in FIRST_PERSON), e)
         for k in range(end + 1, stop):
             pos = set(lemmas(tokens[k]))
@@ -291,7 +291,7 @@ def _heading(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str
     out = tokens[cut:]
     while out and out[0] in PUNCT:
         out = out[1:]
-    return _as_ego(out, kind_at, known, noun, dropped)
+    return as_ego(out, kind_at, known, noun, dropped)
 
 
 #: Words that join the two parties of a pair label ("car vs scooter", "car-to-pedestrian").
@@ -307,12 +307,12 @@ def _pair_label(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[
     then introduces ("a car hit a boy") or whose two parties are of one kind is left as it is."""
     if not (FIRST_PERSON | MEETS_NARRATOR) & set(tokens) or "ego" in tokens or _narrator_on_foot(tokens, kind_at):
         return tokens
-    users = _road_users(tokens, kind_at, known)
+    users = road_users(tokens, kind_at, known)
     if len(users) < 2:
         return tokens
     p, q = users[0], users[1]
     label = p.start == 0 and not p.det and not q.det and tokens[p.end : q.start] in [[w] for w in PAIRED]
-    _, e = _sentence(tokens, 0)
+    _, e = sentence_span(tokens, 0)
     if not label or p.kind not in VEHICLES or q.kind == p.kind or q.end > e:
         return tokens
     if any(r.kind == p.kind and r.det in INDEFINITE for r in users[2:]):
@@ -320,7 +320,7 @@ def _pair_label(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[
     noun = tokens[p.end - 1]
     dropped.extend(tokens[p.start : p.end])
     out = [*tokens[: p.start], "the", "ego", *tokens[p.end :]]
-    return kind_said_again(_as_ego(out, kind_at, known, noun, dropped), p.kind, kind_at, known, dropped)
+    return kind_said_again(as_ego(out, kind_at, known, noun, dropped), p.kind, kind_at, known, dropped)
 
 
 def _ego_rider(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
@@ -328,7 +328,7 @@ def _ego_rider(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[s
     hire bike", "rider on our Gen-3 scooter": a rider the text says is the ego or calls ours is the
     ego, not a bicycle or e-scooter besides it; so is every later "the rider" ("the cyclist").
     "The ego is a car length behind a cyclist" says where the ego is, not what."""
-    users = _road_users(tokens, kind_at, known)
+    users = road_users(tokens, kind_at, known)
     for k in range(len(tokens) - 2):
         found = kind_at(tokens, k)
         cut = None  # (start, end, what is said instead, the noun it is said again by)
@@ -336,7 +336,7 @@ def _ego_rider(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[s
             j = k + found[1]
             q = next((q for q in users if j + 2 <= q.head <= j + 5), None)
             if tokens[j : j + 1] and tokens[j] in BE and tokens[j + 1] in ("a", "an") and q is not None:
-                if q.kind in RIDERS and q.start <= j + 2 and not _placed(tokens, q):
+                if q.kind in RIDERS and q.start <= j + 2 and not placed_by_word(tokens, q):
                     cut = (j, q.end, [], tokens[q.end - 1])
         elif tokens[k] in ("our", "my") and tokens[k + 1] in AT_WHEEL and tokens[k + 2] == "on":
             q = next((q for q in users if q.start == k + 3), None)
@@ -374,19 +374,19 @@ def _driven_it(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[s
     it ...": what "it" stands for after a verb of driving or riding said by the narrator is the last
     vehicle named before it (not placed relative to someone): the narrator's, the ego; so is every
     later "the <noun>" of it."""
-    users = _road_users(tokens, kind_at, known)
+    users = road_users(tokens, kind_at, known)
     for k in range(1, len(tokens)):
-        if tokens[k] != "it" or not _lemma_in(tokens[k - 1], AT_CONTROLS) or "VERB" not in lemmas(tokens[k - 1]):
+        if tokens[k] != "it" or not lemma_in(tokens[k - 1], AT_CONTROLS) or "VERB" not in lemmas(tokens[k - 1]):
             continue
         verb = k - 1
         p = next((q for q in reversed(users) if q.end <= verb), None)
-        s = _sentence(tokens, verb)[0]  # (or a diary's sentence with no subject: "Got a scooter and was riding it")
+        s = sentence_span(tokens, verb)[0]  # (or a diary's sentence with no subject: "Got a scooter and was riding it")
         opens = tokens[s].isalpha() and "VERB" in lemmas(tokens[s]) and not {"NOUN", "PROPN"} & set(lemmas(tokens[s]))
         subjectless = opens and not any(s <= q.start < verb and q is not p for q in users)
-        told = _narrator_subject(tokens, verb) or subjectless
-        if not told or p is None or p.kind not in VEHICLES | RIDERS or _placed(tokens, p):
+        told = narrator_subject(tokens, verb) or subjectless
+        if not told or p is None or p.kind not in VEHICLES | RIDERS or placed_by_word(tokens, p):
             continue
-        if _sentence(tokens, p.start)[0] < _sentence(tokens, _sentence(tokens, verb)[0] - 1)[0]:
+        if sentence_span(tokens, p.start)[0] < sentence_span(tokens, sentence_span(tokens, verb)[0] - 1)[0]:
             continue  # (named two sentences before or more: "it" may be anything since)
         noun = tokens[p.end - 1]
         dropped.extend(w for w in tokens[p.start : p.end] if w not in DEFINITE | INDEFINITE)
@@ -407,9 +407,9 @@ def _steered_bare(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
     so does every later "the <noun>" of it. Said of someone else ("the man stopped car") or with an
     article ("I stopped a car") it is no business of this rule."""
     for k, w in enumerate(tokens[:-1]):
-        if not w.isalpha() or "VERB" not in lemmas(w) or not _lemma_in(w, STEERED_BARE):
+        if not w.isalpha() or "VERB" not in lemmas(w) or not lemma_in(w, STEERED_BARE):
             continue
-        if not _narrator_subject(tokens, k):
+        if not narrator_subject(tokens, k):
             continue
         found = kind_at(tokens, k + 1)
         noun = tokens[k + 1]
@@ -419,7 +419,7 @@ def _steered_bare(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
         if nxt.isalpha() and set(lemmas(nxt)) == {"NOUN"}:
             continue  # (a modifier: "I stopped car park traffic")
         dropped.append(noun)
-        return _as_ego([*tokens[: k + 1], *tokens[k + 2 :]], kind_at, known, noun, dropped)
+        return as_ego([*tokens[: k + 1], *tokens[k + 2 :]], kind_at, known, noun, dropped)
     return tokens
 
 
@@ -440,16 +440,16 @@ def _narrator_aboard(tokens: list[str], kind_at: KindAt, known: Known, dropped: 
     car", "the car in front", "the van's mirror" and a narrator on foot are someone else's."""
     if not (FIRST_PERSON | MEETS_NARRATOR) & set(tokens) or "ego" in tokens or _narrator_on_foot(tokens, kind_at):
         return tokens
-    users = _road_users(tokens, kind_at, known)
+    users = road_users(tokens, kind_at, known)
     for n, p in enumerate(users):
-        if p.kind not in VEHICLES or p.det != "the" or not _aboard(tokens, p) or _placed(tokens, p):
+        if p.kind not in VEHICLES or p.det != "the" or not _aboard(tokens, p) or placed_by_word(tokens, p):
             continue
         relative = tokens[p.end : p.end + 1] in (["which"], ["that"], ["where"])  # (no compound: "the camry which")
-        if _compound(tokens, p) and not relative or tokens[p.end : p.end + 1] == ["'s"]:
+        if is_modifier_noun(tokens, p) and not relative or tokens[p.end : p.end + 1] == ["'s"]:
             continue  # ("in the car park", "in the van's mirror")
         if any(q.kind == p.kind and q.det in INDEFINITE for q in users[:n]):
             continue  # (introduced before: "a taxi stopped ... in the taxi")
-        s, _ = _sentence(tokens, p.start)
+        s, _ = sentence_span(tokens, p.start)
         before = [q for q in users[:n] if q.start >= s]
         if any(q.kind != "ego" and not (tokens[q.start] in ("my", "our") and q.kind not in VEHICLES) for q in before):
             continue  # (someone else is in it: "a woman in the van")
@@ -458,7 +458,7 @@ def _narrator_aboard(tokens: list[str], kind_at: KindAt, known: Known, dropped: 
         noun = tokens[p.end - 1]
         dropped.extend(w for w in tokens[p.start - 1 : p.end] if w not in DEFINITE)
         out = [*tokens[: p.start - 1], *tokens[p.end :]]
-        return kind_said_again(_as_ego(out, kind_at, known, noun, dropped), p.kind, kind_at, known, dropped)
+        return kind_said_again(as_ego(out, kind_at, known, noun, dropped), p.kind, kind_at, known, dropped)
     return tokens
 
 
@@ -469,7 +469,7 @@ def _user_story(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[
     that road user is the ego, its speed the ego's, and the vehicle the role names (a driver's car)
     is the ego again later ("I want the van to slow down"). "As a van pulled out, I braked" ("as" is
     "while": the van has a verb of its own) is someone else."""
-    users = _road_users(tokens, kind_at, known)
+    users = road_users(tokens, kind_at, known)
     for p in users:
         k = p.start - 1
         if k < 0 or tokens[k] != "as" or p.det not in ("a", "an") or (k and tokens[k - 1] not in CLAUSE_START):
@@ -478,7 +478,7 @@ def _user_story(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[
         participle = nxt.endswith("ing") and "VERB" in lemmas(nxt)
         if not (participle or nxt in PUNCT or nxt in ("who", "on", "in", "at", "with")):
             continue
-        _, e = _sentence(tokens, p.start)
+        _, e = sentence_span(tokens, p.start)
         comma = next((j for j in range(p.end, e) if tokens[j] == ","), None)
         if comma is None or tokens[comma + 1 : comma + 2] not in (["i"], ["we"]):
             continue
@@ -489,7 +489,7 @@ def _user_story(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[
             None,
         )
         if kind is None or tokens[p.head : p.end] == ["driver"]:
-            kind = "car" if p.kind in VEHICLES or (participle and _lemma_in(nxt, frozenset({"drive"}))) else kind
+            kind = "car" if p.kind in VEHICLES or (participle and lemma_in(nxt, frozenset({"drive"}))) else kind
         dropped.extend(w for w in tokens[k : p.end] if w not in INDEFINITE)
         out = [*tokens[:k], "the", "ego", *tokens[p.end :]]
         return out if kind is None else kind_said_again(out, kind, kind_at, known, dropped)

@@ -46,7 +46,7 @@ _NEGATORS = frozenset(("no", "not", "never", "without", "nobody", "nothing", "ne
 #: Verbs (lemmas) whose object is denied: "avoided contact", "prevents a collision".
 _DENYING_VERBS = frozenset(("avoid", "prevent", "escape", "evade", "avert"))
 #: Hedges: what follows them almost happened ("nearly hit", "barely missed", "almost a crash").
-_HEDGES = frozenset(("nearly", "almost", "narrowly", "barely", "virtually", "practically"))
+HEDGES = frozenset(("nearly", "almost", "narrowly", "barely", "virtually", "practically"))
 #: Words of a condition or a counterfactual: what follows did not happen ("would have hit", "if it hits").
 _HYPOTHETICAL = frozenset(("would", "could", "might", "if", "before"))
 
@@ -341,7 +341,7 @@ def _is_contact(words: list[str], i: int) -> bool:
             return True  # ("landed on my bonnet", "ended up on the windscreen")
     if w in _THROWN_RESULTS and i > 1 and any(_lemmas(x) & {"send", "knock"} for x in words[max(0, i - 5) : i - 1]):
         k = next(k for k in range(max(0, i - 5), i) if _lemmas(words[k]) & {"send", "knock"})
-        return _names_road_user(words[k + 1 : i])  # ("sent the jogger flying", "knocked him sprawling")
+        return names_road_user(words[k + 1 : i])  # ("sent the jogger flying", "knocked him sprawling")
     if w == _INTO and all(x in _ONSET for x in words[:i]) and _into_road_user(words, i):
         return True  # (a clause of its own: ", straight into my door", "Right into the back of the van.")
     if w == "under" and (i == 0 or _is_verb(prev) or all(x in _ONSET for x in words[:i])):
@@ -359,7 +359,7 @@ def _is_contact(words: list[str], i: int) -> bool:
     lem = _lemmas(w)
     if "wipe" in lem and "out" in words[i + 1 : i + 4]:
         k = words.index("out", i + 1)  # ("wiped out the cyclist", "wiped him out"; "wiped out on the ice": fell)
-        return _names_road_user(words[i + 1 : k] or words[k + 1 : k + 4])
+        return names_road_user(words[i + 1 : k] or words[k + 1 : k + 4])
     if lem & _PHRASAL_CONTACT and _is_verb(w) and _phrasal_object(words, i):
         return True  # ("took out a jogger", "knocked the child over")
     if lem & _TOUCHING and _is_verb(w) and _vehicle_part(words[i + 1 : i + 6]):
@@ -372,7 +372,7 @@ def _is_contact(words: list[str], i: int) -> bool:
         return True  # ("a fender bender")
     if lem & _STRIKING and _is_verb(w) and _struck_object(words[i + 1 : i + 6]):
         return True  # ("an auto dashed my car", "the okada jammed the taxi", "a bus banged my door")
-    if w in _SLANG_CONTACT and (_vehicle_part(words[i + 1 : i + 6]) or _names_road_user(words[i + 1 : i + 4])):
+    if w in _SLANG_CONTACT and (_vehicle_part(words[i + 1 : i + 6]) or names_road_user(words[i + 1 : i + 4])):
         return True  # ("dinged the van's door", "biffed my bumper")
     if lem & {"run"} and _is_verb(w) and _run_over(words, i):
         return True  # ("ran over a jogger", "ran him over"; not "ran down the hill")
@@ -391,7 +391,7 @@ def _is_contact(words: list[str], i: int) -> bool:
     if lem & _CONTACT_VERBS and _is_verb(w) and _verbal(words, i):
         if w.startswith("crash") and nxt in _COMPOUND_HEADS:
             return False
-        if _thing_subject(words, i) and not _names_road_user(_object_of(words, i)):
+        if _thing_subject(words, i) and not names_road_user(_object_of(words, i)):
             return False  # ("the booking website crashed", "my phone app crashed twice")
         return _meets_road_user(_object_of(words, i))
     if _is_verb(w) and not lem & {"turn", "look", "get", "change", "switch", "fall", "slow"}:
@@ -485,7 +485,7 @@ def _verbal(words: list[str], i: int) -> bool:
     if "NOUN" not in _pos(w) or w not in _pos(w).get("VERB", ()):
         return True  # (no noun, or inflected: "struck", "tagged", "hits")
     k = i - 1
-    while k > 0 and (words[k] in _HEDGES | _INTENSIFIERS or (words[k].endswith("ly") and "ADV" in _pos(words[k]))):
+    while k > 0 and (words[k] in HEDGES | _INTENSIFIERS or (words[k].endswith("ly") and "ADV" in _pos(words[k]))):
         k -= 1  # ("was nearly hit", "had only narrowly struck": the word before its adverbs)
     prev = words[k] if k >= 0 else ""
     nxt = words[i + 1] if i + 1 < len(words) else ""
@@ -579,14 +579,14 @@ def _phrasal_object(words: list[str], i: int) -> bool:
         if after[k] == "out" and after[k + 1 : k + 2] and (after[k + 1] in _OUTING or after[k + 1].endswith("ing")):
             return False  # ("took me out for a drive", "took us out driving": an outing, not a blow)
         obj = after[:k]
-    return _names_road_user(obj)
+    return names_road_user(obj)
 
 
 #: Words after "took someone out" that make it an outing ("out for practice", "out to the coast").
 _OUTING = frozenset(("for", "to", "again"))
 
 
-def _names_road_user(obj: list[str]) -> bool:
+def names_road_user(obj: list[str]) -> bool:
     """Whether the object ``obj`` is a road user: a person pronoun, or a noun phrase whose noun names
     one ("a jogger", "its rider", "the scooter rider")."""
     for w in obj:
@@ -623,7 +623,7 @@ def _touched_with_a_part(words: list[str], i: int) -> bool:
     instrument ("caught it with my knee", "nicked me with its trailer"); not "caught up with him",
     "caught him with my eyes"."""
     after = words[i + 1 : i + 8]
-    if not after or not (after[0] in _PERSON_OBJECTS - {"each", "one"} or _names_road_user(after[:3])):
+    if not after or not (after[0] in _PERSON_OBJECTS - {"each", "one"} or names_road_user(after[:3])):
         return False
     k = next((k for k, x in enumerate(after[:4]) if x == "with"), None)
     if k is None:
@@ -649,7 +649,7 @@ def _struck_object(after: list[str]) -> bool:
         return True  # (or the ego: "dashed my car", read as "dashed ego")
     if after[0] not in _POSSESSIVES | {"the", "a", "an", "this", "that"}:
         return False
-    return _vehicle_part(after) or _names_road_user(after[:4])
+    return _vehicle_part(after) or names_road_user(after[:4])
 
 
 def _run_over(words: list[str], i: int) -> bool:
@@ -664,7 +664,7 @@ def _run_over(words: list[str], i: int) -> bool:
     if not k:
         return False
     obj = after[:k]
-    return _names_road_user(obj) or obj in (["it"], ["them"])
+    return names_road_user(obj) or obj in (["it"], ["them"])
 
 
 def _begun(words: list[str], i: int) -> bool:
@@ -700,8 +700,8 @@ def _denied_after(words: list[str], i: int) -> str | None:
     after = words[i + 1 : i + 5]
     for k, x in enumerate(after):
         if x.endswith("ed") and _lemmas(x) & _DENYING_VERBS:
-            return "hedged" if set(after[:k]) & (_HEDGES | {"just"}) else "denied"
-        if x not in ("was", "is", "were", "been", "being", "be", "has", "had", "only", "just") and x not in _HEDGES:
+            return "hedged" if set(after[:k]) & (HEDGES | {"just"}) else "denied"
+        if x not in ("was", "is", "were", "been", "being", "be", "has", "had", "only", "just") and x not in HEDGES:
             return None
     return None
 
@@ -762,7 +762,7 @@ def _margin(words: list[str], i: int) -> str | None:
         return SAFE  # ("pulled up in good time", "stops in plenty of time": time to spare)
     arriving = words[i + 1 : i + 2] in (["to"], ["for"])  # ("got there just in time for the start")
     arriving = arriving or any(_lemmas(x) & _PERCEIVING for x in words[:i])  # ("spotted him just in time")
-    if w == "time" and words[i - 1 : i] == ["in"] and set(words[max(0, i - 3) : i - 1]) & (_HEDGES | {"just"}):
+    if w == "time" and words[i - 1 : i] == ["in"] and set(words[max(0, i - 3) : i - 1]) & (HEDGES | {"just"}):
         return None if arriving else NEAR_MISS  # ("pulled back just in time", "swerved barely in time")
     if w == "time" and words[max(0, i - 3) : i] == ["the", "nick", "of"]:
         return NEAR_MISS  # ("in the nick of time")
@@ -908,7 +908,7 @@ def _relative_to_other(words: list[str], k: int) -> bool:
     if not after or after[0] != "of":
         return not after or after[0] in _BREAK_WORDS or after[0] in _PHRASE_ENDS - {"of"}
     obj = after[1:]  # (or a part of one: "3 m ahead of the front bumper", "in front of my bonnet")
-    return bool(obj) and (obj[0] in _PERSON_OBJECTS | _EGO_HEADS or _names_road_user(obj) or _vehicle_part(obj))
+    return bool(obj) and (obj[0] in _PERSON_OBJECTS | _EGO_HEADS or names_road_user(obj) or _vehicle_part(obj))
 
 
 def _passed_close(before: list[str], after: list[str]) -> bool:
@@ -1249,11 +1249,7 @@ def _fright(words: list[str], i: int) -> bool:
         return out_of or after[:1] in (["me"], ["us"]) or _names_ego(after[:2])  # (not "scared the cyclist")
     if w == "heart" and (words[i + 1 : i + 3] == ["in", "my"] or words[i + 1 : i + 3] == ["in", "our"]):
         return True
-    if (
-        w == "heart"
-        and words[i + 1 : i + 2] == ["attack"]
-        and bool(set(words[max(0, i - 4) : i]) & (_HEDGES | {"had"}))
-    ):
+    if w == "heart" and words[i + 1 : i + 2] == ["attack"] and bool(set(words[max(0, i - 4) : i]) & (HEDGES | {"had"})):
         return True
     if w == "life" and words[i + 1 : i + 2] == ["flashed"]:
         return True
@@ -1318,7 +1314,7 @@ def _within(words: list[str], i: int) -> bool:
     obj = after[unit + 2 : unit + 6]
     return bool(obj) and (
         obj[0] in _PERSON_OBJECTS | _POSSESSIVES | _EGO_HEADS
-        or _names_road_user(obj)
+        or names_road_user(obj)
         or _vehicle_part(obj)
         or obj[0].endswith("ing")
     )
@@ -1441,7 +1437,7 @@ def _contact_kind(words: list[str], i: int, clause: _Clause, sentence: list[str]
         return None  # ("swerved to miss him and hit the kerb", "someone is going to get hit here")
     before = sentence[: len(sentence) - len(words) + i]
     passive = _denied_after(words, i)  # ("collision narrowly avoided", "a crash was averted")
-    hedged = _scoped(words, i, _HEDGES | {"within"}, 5) or passive == "hedged" or _near_to(words, i)
+    hedged = _scoped(words, i, HEDGES | {"within"}, 5) or passive == "hedged" or _near_to(words, i)
     hedged = hedged or _only_just(words, i)
     hedged = hedged or _believed(words, i)
     counterfactual = "have" in words[:i] and (
@@ -1617,7 +1613,7 @@ def outcome_cues(said: str) -> list[Cue]:
                 add("near")  # ("came within a foot of my door")
                 continue
             if (w in _BAD or _lemmas(w) & _HARMED) and (
-                _could_have_been_bad(words, i) or (w in _DISASTERS and _scoped(words, i, _HEDGES, 3))
+                _could_have_been_bad(words, i) or (w in _DISASTERS and _scoped(words, i, HEDGES, 3))
             ):
                 add("hedged")  # ("could have been nasty", "she could have been killed": it was not)
                 continue
@@ -1673,7 +1669,7 @@ def outcome_cues(said: str) -> list[Cue]:
                 add("contact")  # ("could not stop in time", "failed to pull up in time": it was not avoided)
             elif margin is not None:
                 add("near" if margin == NEAR_MISS else "safe")
-            hedge = w in _HEDGES or (w == "just" and i > 0 and words[i - 1] == "only")
+            hedge = w in HEDGES or (w == "just" and i > 0 and words[i - 1] == "only")
             if hedge and (_hedged_act(words, i) or _hedge_after_escape(words, i)):
                 add("hedged")
             if w == "harm" and _denied_before(words, i):
@@ -1862,7 +1858,7 @@ def _hedged_act(words: list[str], i: int) -> bool:
     moving = _lemmas(after[0]) & _motion_verbs() - _CONTACT_VERBS - _PHRASAL_CONTACT - {"run"}
     obj = words[i + 2 : i + 8]
     rider = obj[obj.index("on") + 1 :] if "on" in obj[:3] else []  # ("a lad on a moped": the moped's rider)
-    return not moving and (_names_road_user(obj) or _names_road_user(rider))  # (not "almost overtook him")
+    return not moving and (names_road_user(obj) or names_road_user(rider))  # (not "almost overtook him")
 
 
 @lru_cache(maxsize=1)

@@ -40,13 +40,13 @@ from vei_scenario.language.ego import (
     PLACED,
     SPEED_UNITS,
     VEHICLES,
-    _compound,
-    _lemma_in,
-    _parked,
-    _placed,
-    _road_users,
-    _sentence,
+    is_modifier_noun,
+    lemma_in,
     names_ego,
+    placed_by_word,
+    road_users,
+    sentence_span,
+    stands_parked,
 )
 from vei_scenario.language.lemmas import lemmas
 
@@ -85,7 +85,7 @@ def _past_aside(tokens: list[str], k: int, relative_only: bool = False) -> int:
     """Past a relative aside after a mention (", which she estimated to be doing 20 mph,"): where the
     clause resumes, else ``k``."""
     if tokens[k : k + 1] == [","] and tokens[k + 1 : k + 2]:
-        end = _sentence(tokens, k)[1]
+        end = sentence_span(tokens, k)[1]
         close = next((c for c in range(k + 2, end) if tokens[c] == ","), None)
         relative = tokens[k + 1] in ("which", "who", "that")
         if close is not None and (relative or (close - k <= 7 and not relative_only)):  # (", a 54-year-old woman,")
@@ -96,7 +96,7 @@ def _past_aside(tokens: list[str], k: int, relative_only: bool = False) -> int:
 def _has_speed(tokens: list[str], p, nxt: int) -> bool:
     """A speed follows the mention in its sentence before anyone else is named, not one it changes to
     ("slows to 20 km/h")."""
-    end = min(_sentence(tokens, p.end)[1], nxt)
+    end = min(sentence_span(tokens, p.end)[1], nxt)
     aside = _past_aside(tokens, p.end, relative_only=True)
     if aside == p.end and tokens[p.end : p.end + 1] == [","]:
         return False  # (not its own: "a stopped truck, 80 km/h" in a terse line is the ego's speed)
@@ -115,7 +115,7 @@ def _reacts(tokens: list[str], p, others: list[int], first: bool = False) -> boo
     pedestrian walks out" is the bus's own stop, no reaction)."""
     at = []
     if first:
-        end = _sentence(tokens, p.end)[1]
+        end = sentence_span(tokens, p.end)[1]
         at = [v for k in range(p.end, end) if tokens[k] in ("and", "but") and (v := _verb_of_reacting(tokens, k + 1))]
     if v := _verb_of_reacting(tokens, _past_aside(tokens, p.end)):
         at.append(v)
@@ -151,7 +151,7 @@ def _placed_by_unsaid(tokens: list[str], p, nxt: int) -> bool:
     or in its clause with no one after it ("brakes hard 20 m ahead", "is coming up behind")."""
     if any(w in PLACED for w in tokens[p.start : p.end]):
         return True
-    end = min(_sentence(tokens, p.end)[1], nxt)
+    end = min(sentence_span(tokens, p.end)[1], nxt)
     return any(
         tokens[k] in ("ahead", "behind") and tokens[k + 1 : k + 2] not in (["of"], ["it"], ["him"], ["her"], ["them"])
         for k in range(p.end, end)
@@ -164,7 +164,7 @@ def _referents(tokens: list[str], users, vehicles: frozenset[str]) -> tuple[list
     out: list[_Referent] = []
     driver: _Referent | None = None
     for p in users:
-        if tokens[p.end : p.end + 1] == [":"] or (tokens[p.end - 1] in AT_WHEEL and _compound(tokens, p)):
+        if tokens[p.end : p.end + 1] == [":"] or (tokens[p.end - 1] in AT_WHEEL and is_modifier_noun(tokens, p)):
             continue  # (a field's name, "Vehicle: Cab 22", or a modifier, "driver statement")
         words = [w for w in tokens[p.head : p.end] if w.isalpha()]
         last = tokens[p.end - 1]
@@ -235,7 +235,7 @@ def _narrator_only_watches(tokens: list[str]) -> bool:
         while j < len(tokens) and (tokens[j] in BETWEEN or tokens[j] in ("'ve", "'m", "'re")):
             j += 1
         w = tokens[j] if j < len(tokens) else ""
-        if not (w == "outside" or (w.isalpha() and "VERB" in lemmas(w) and _lemma_in(w, PERCEIVE))):
+        if not (w == "outside" or (w.isalpha() and "VERB" in lemmas(w) and lemma_in(w, PERCEIVE))):
             return False
     return True
 
@@ -253,11 +253,11 @@ def without_witness(tokens: list[str], dropped: list[str]) -> list[str]:
 def frame(tokens: list[str], kind_at, known, dropped: list[str]) -> list[str]:
     """``tokens`` with the vehicle a third-person report is about said "the ego" (see the module's
     docstring), and its bare driver too; unchanged where no vehicle stands out."""
-    from vei_scenario.language.discourse import _singular
+    from vei_scenario.language.discourse import is_singular
 
     if names_ego(tokens, kind_at, known):
         return tokens
-    users = [p for p in _road_users(tokens, kind_at, known) if p.kind != "ego"]
+    users = [p for p in road_users(tokens, kind_at, known) if p.kind != "ego"]
     referents, driver = _referents(tokens, users, VEHICLES)
     for r in [*referents, *([driver] if driver else [])]:
         _evidence(tokens, users, r, referents)
@@ -265,11 +265,11 @@ def frame(tokens: list[str], kind_at, known, dropped: list[str]) -> list[str]:
         r
         for r in referents
         if r.kind in VEHICLES
-        and any(_singular(tokens[p.end - 1]) for p in r.mentions)
+        and any(is_singular(tokens[p.end - 1]) for p in r.mentions)
         and not any(
-            _placed(tokens, p)
+            placed_by_word(tokens, p)
             or _placed_by_unsaid(tokens, p, next((q.start for q in users if q.start >= p.end), len(tokens)))
-            or _parked(tokens, p)
+            or stands_parked(tokens, p)
             for p in r.mentions
         )
     ]

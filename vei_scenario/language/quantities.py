@@ -138,7 +138,7 @@ def without_guesses(tokens: list[str], going: frozenset[str]) -> list[str]:
     i = len(out) - 1
     while i > 0:
         nxt = out[i + 1] if i + 1 < len(out) else ""
-        if _is_number(out[i]) and (nxt in V.SPEED_UNITS or nxt in _SPEED_PHRASE_ENDS or nxt in WHERE_AFTER_SPEED):
+        if is_number(out[i]) and (nxt in V.SPEED_UNITS or nxt in _SPEED_PHRASE_ENDS or nxt in WHERE_AFTER_SPEED):
             j = _start_of_guess(out, i)
             if j < i and out[j] in going | {"doing", "at"}:
                 out[j + 1 : i] = [w for w in out[j + 1 : i] if w in APPROXIMATORS or w in BOUNDS or w == "a"]
@@ -573,7 +573,7 @@ _MILES_LIMITS = frozenset({15, 25, 35, 45, 55, 65, 75})
 _MEASURES = frozenset({"m", "metres", "meters", "metre", "meter", "km", "s", "sec", "secs", "seconds", "%"})
 
 
-def _is_number(word: str) -> bool:
+def is_number(word: str) -> bool:
     return word.replace(".", "", 1).isdigit()
 
 
@@ -587,7 +587,7 @@ def miles_country(tokens: list[str]) -> bool:
         if tok in _MILES_ROADS or tok in _MILES or (tok, nxt) in _MILES_PAIRS:
             return True
         measured = tokens[k + 2 : k + 3] != [] and (tokens[k + 2] in _MEASURES or tokens[k + 2] in V.SPEED_UNITS)
-        if tok in _ROAD_LETTERS and nxt.isdigit() and not measured and not (k and _is_number(tokens[k - 1])):
+        if tok in _ROAD_LETTERS and nxt.isdigit() and not measured and not (k and is_number(tokens[k - 1])):
             # "the M25", "I-95" (not "5 m 20": metres; not "a 40": an article unless "the" stands before it;
             # not "car B 20 m ahead": a label, then a measure)
             if tok in ("m", "i-") or (tok == "b" and len(nxt) >= 2) or (k and tokens[k - 1] == "the"):

@@ -32,11 +32,9 @@ from __future__ import annotations
 import re
 
 from vei_scenario.language.discourse import VEHICLES, VULNERABLE
-from vei_scenario.language.ego_double import NEW, take_as_ego, without_road_user
+from vei_scenario.language.ego_double import EGO_LIKE, NEW, take_as_ego, without_road_user
 from vei_scenario.language.reading import ActorSpec, Reading, stands_there
 
-#: What the ego does in a report told from it: goes on, slows, brakes (to a stop).
-_EGO_LIKE = frozenset(("keep_going", "sudden_stop", "stop", "change_speed"))
 #: Braking: one ahead that brakes is the lead vehicle braking in front of the ego, a scenario of its own.
 _BRAKING = frozenset(("sudden_stop", "stop", "change_speed"))
 #: Only going on: what road users listed together do where none of them meets another.
@@ -55,7 +53,7 @@ def _reported(a, spec: ActorSpec) -> bool:
     names = {b[0] for b in spec.behaviours}
     return (
         spec.kind in VEHICLES
-        and names <= _EGO_LIKE
+        and names <= EGO_LIKE
         and names != {"stop"}
         and spec.relation in _ON_ITS_ROAD
         and not (spec.relation == "ahead" and names & _BRAKING)
