@@ -31,6 +31,7 @@ from functools import lru_cache
 
 from vei_scenario.language import (
     addressee,
+    crossing_reaction,
     crowds,
     discourse,
     ego,
@@ -2358,7 +2359,13 @@ def _read(text: str) -> Reading:
             words = cfg.pop("_words", "")
             a.moves_out = a.moves_out or (name == "cross_in_front" and "out" in words.split())
             a.along = a.along or (name == "keep_going" and kerb_ride.goes_along(words))
-            a.across = a.across or kerb_ride.said_across(name, words, scanned[cfg.pop("_end", len(scanned)) :][:2])
+            end, start = cfg.pop("_end", len(scanned)), cfg.pop("_start", None)
+            a.across = a.across or kerb_ride.said_across(name, words, scanned[end:][:2])
+            if start is not None and crossing_reaction.said_free(
+                name, cfg, scanned[max(0, start - 6) : start], scanned[max(0, end - 1) :],
+                lambda w, kind=a.kind: _single_kind(w) == kind,
+            ):  # fmt: skip
+                cfg[crossing_reaction.MARK] = 1.0  # (dropped after a crossing, once its name is final)
             if name == "sudden_stop" and len(words.split()) == 1 and "brake" in forms(words):
                 cfg["_plain_brake"] = 1.0  # ("brakes": how hard, a stop said after it tells)
             a.goes_on = a.goes_on or bool(cfg.pop("_denied", None))
@@ -2669,6 +2676,8 @@ def _read(text: str) -> Reading:
             spec.behaviours = [("cross_in_front", {}, *spec.behaviours[0][2:])]  # ("stopped at the zebra for a mum")
             spec.relation = spec.relation if spec.relation in ("roadside_left", "roadside_right") else "roadside_right"
         r.actors.append(spec)
+    for spec in r.actors:  # ("pulled out in front of me. Braked": the ego's brake, not the road user's)
+        spec.behaviours = crossing_reaction.drop_egos_reactions(spec.behaviours)
     for a, spec in zip(actors, r.actors):  # what an oncoming car overtakes comes towards the ego too
         k = next((k for k, x in enumerate(actors) if x is a.object_of), None)
         if (spec.relation is None or (a.relation is None and not a.said)) and k is not None:
@@ -3733,7 +3742,9 @@ def _apply(m, who, r, link, added) -> None:
                 continue  # ("brakes ... and stops": said twice over)
             said = m.words if not _adverb(m.next_) else f"{m.words} {m.next_}"  # ("brakes moderately")
             a.went_by = a.went_by or (name == "overtake" and _going_by(m.words) and m.next_ in _NO_OBJECT)
-            a.behaviours.append((name, dict(cfg, _words=said, _end=m.end), None, link if not added else "sequence"))
+            a.behaviours.append(
+                (name, dict(cfg, _words=said, _end=m.end, _start=m.start), None, link if not added else "sequence")
+            )
             added.append((a, len(a.behaviours) - 1))
         elif m.slot == "turn":
             a.behaviours.append(("forced_turn", {"turn": m.value, "_words": m.words}, None, link))

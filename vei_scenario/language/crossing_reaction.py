@@ -1,0 +1,89 @@
+"""A brake or a stop said after a road user crossed the ego's way is the ego's reaction, not its own.
+
+When a road user comes across the ego's path (steps out, pulls out of a side road, turns across,
+runs the red, comes the wrong way), what the story says next of braking or stopping is nearly always
+the one it came in front of: "... shoots out in front of me, I've stopped dead", "pulled out right in
+front of her. She braked and missed it", "turns across him. OP brakes", "sees the rider late and
+stops", "the brakes stopped me dead". The reader gives such a verb to the road user named last, and
+the crossing gains a second behaviour, a hard stop the scenario then plays.
+
+Told of the road user, its own stop says where it stands or follows its move as the next step:
+
+* **placed in the road**: "stops dead in our lane", "stops in the middle of the road", "stopped
+  neatly at the kerb", "slammed on in front of me": it stays there, a stop the scenario must play;
+* **joined by "then"**: "pulls out then stops", "ran out and then froze": its own next act;
+* **said with its own noun**: "a lad on a bike crossed ... the cyclist stopped": named again, it is
+  the subject.
+
+A road user that moves along the ego's lane (cuts in, overtakes, changes lane) and then brakes is
+not read here: braking in front of the ego after a cut-in is a move of its own (a brake check).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+#: Moves that bring a road user across the ego's path rather than along its lane.
+CROSSING = frozenset(("cross_in_front", "turn_into", "turn_across", "run_red_light", "wrong_way"))
+#: Behaviours of slowing or stopping.
+_SLOWING = frozenset(("sudden_stop", "stop", "change_speed"))
+#: Behaviours of going on as before: no move that brings a road user anywhere.
+_GOING_ON = frozenset(("keep_going", "keep_lane", "along_road", "follow_vehicle"))
+#: Words that place a stop in the road: where the road user stands once stopped.
+_IN_THE_ROAD = frozenset(
+    ("middle", "lane", "road", "carriageway", "street", "kerb", "curb", "front", "centre", "center", "junction",
+     "intersection", "island", "median", "roadway")
+)  # fmt: skip
+#: Prepositions of where something stands ("in", "at", "on", "across").
+_AT = frozenset(("in", "at", "on", "across", "inside"))
+#: Tokens that end a sentence.
+_SENTENCE_ENDS = frozenset((".", "!", "?", ";"))
+#: How many words after the verb may say where it stops ("stops dead in the middle of our lane").
+_WINDOW = 4
+
+
+def placed_in_road(after: list[str]) -> bool:
+    """Whether the words right after a stop (from its verb's last word) say where the road user
+    stands ("dead in our lane", "in the middle of the road", "at the kerb"): a preposition of place,
+    then a noun of the road."""
+    window = after[:_WINDOW]
+    return any(w in _AT and any(x in _IN_THE_ROAD for x in window[k + 1 :]) for k, w in enumerate(window))
+
+
+#: The mark a slowing behaviour carries from its words to the pass over the finished reading.
+MARK = "_said_free"
+
+
+def said_free(name: str, cfg: dict, before: list[str], after: list[str], own_noun: Callable[[str], bool]) -> bool:
+    """Whether slowing behaviour ``name`` (its parameters ``cfg``) is said free of the road user it was
+    given to: not placed in the road (``after``: the words from its verb's last word on), not joined
+    to a move before by "then" in its sentence and not said with the road user's own noun right
+    before it (``before``: the words before its verb; ``own_noun``: whether a word names that road
+    user). Speeding up ("he accelerated") is no reaction."""
+    if name not in _SLOWING:
+        return False
+    if name == "change_speed" and float(cfg.get("speed_delta_mps", -1.0)) > 0:
+        return False
+    if placed_in_road(after) or "then" in _this_sentence(before):
+        return False
+    return not any(own_noun(w) for w in before[-2:])
+
+
+def drop_egos_reactions(behaviours: list) -> list:
+    """``behaviours`` (name, cfg, criticality, link) as read, without the slowing ones said free (see
+    :func:`said_free`) right after a move across the ego's path: those are the ego's reaction to it.
+    The mark is taken off the ones kept."""
+    out: list = []
+    for name, cfg, crit, link in behaviours:
+        free = cfg.pop(MARK, None)
+        last_move = next((b[0] for b in reversed(out) if b[0] not in _SLOWING | _GOING_ON), None)
+        if free and last_move in CROSSING:
+            continue  # ("pulled out right in front of her. She braked": hers)
+        out.append((name, cfg, crit, link))
+    return out
+
+
+def _this_sentence(before: list[str]) -> list[str]:
+    """The words of ``before`` after its last full stop: those of the sentence the verb is in."""
+    ends = [k for k, w in enumerate(before) if w in _SENTENCE_ENDS]
+    return before[ends[-1] + 1 :] if ends else before
