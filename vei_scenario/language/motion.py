@@ -1886,15 +1886,32 @@ def _across_the_ego(tokens: list[str], j: int) -> bool:
         j += 1
     if j >= len(tokens) or tokens[j] != "across":
         return False
-    if tokens[j + 1 : j + 2] in (["me"], ["us"], ["ego"]) or tokens[j + 1 : j + 3] == ["the", "ego"]:
+    if tokens[j + 1 : j + 2] in (["me"], ["us"], ["ego"], *_TOLD_OF) or tokens[j + 1 : j + 3] == ["the", "ego"]:
         return True
     if tokens[j + 1 : j + 2] == ["the"] and _in_front_of_the_ego(tokens, j + 3):
         return True  # ("across the tracks in front of me": the one thing crossed, where the ego is)
+    if tokens[j + 1 : j + 4] == ["the", "front", "of"]:
+        return _ego_named(tokens, j + 4)  # ("across the front of my car", "... of her")
     said = " ".join(tokens[j + 1 : j + 5]).replace(" 's", "'s").split()
     for n, owner in enumerate(said[:3]):
-        if owner in _EGO_OWNER_WORDS and n + 1 < len(said) and said[n + 1] in _ACROSS_WAYS:
+        if owner in _EGO_OWNER_WORDS | _TOLD_OF_OWNER and n + 1 < len(said) and said[n + 1] in _ACROSS_WAYS:
             return n == 0 or said[:n] == ["the"]
     return False
+
+
+#: The ego told of in the third person as what a turn crosses ("turned right across her", "across
+#: his path"): an oncoming road user's turn across a person is across that person's way.
+_TOLD_OF = (["him"], ["her"], ["them"])
+_TOLD_OF_OWNER = frozenset(("his", "her", "their"))
+
+
+def _ego_named(tokens: list[str], j: int) -> bool:
+    """Whether the ego or its vehicle is named at ``tokens[j]`` ("me", "us", "her", "my car", "his
+    bike", "the ego"): what "the front of" is of, in "across the front of my car"."""
+    said = tokens[j : j + 2]
+    return said[:1] in (["me"], ["us"], ["ego"], *_TOLD_OF) or said == ["the", "ego"] or (
+        len(said) == 2 and said[0] in _EGO_OWNER_WORDS | _TOLD_OF_OWNER
+    )
 
 
 def _in_front_of_the_ego(tokens: list[str], j: int) -> bool:
