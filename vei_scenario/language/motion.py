@@ -1909,8 +1909,10 @@ def _ego_named(tokens: list[str], j: int) -> bool:
     """Whether the ego or its vehicle is named at ``tokens[j]`` ("me", "us", "her", "my car", "his
     bike", "the ego"): what "the front of" is of, in "across the front of my car"."""
     said = tokens[j : j + 2]
-    return said[:1] in (["me"], ["us"], ["ego"], *_TOLD_OF) or said == ["the", "ego"] or (
-        len(said) == 2 and said[0] in _EGO_OWNER_WORDS | _TOLD_OF_OWNER
+    return (
+        said[:1] in (["me"], ["us"], ["ego"], *_TOLD_OF)
+        or said == ["the", "ego"]
+        or (len(said) == 2 and said[0] in _EGO_OWNER_WORDS | _TOLD_OF_OWNER)
     )
 
 
