@@ -826,3 +826,35 @@ NOT_HEAD_ON_ON_THE_EGO_S_SIDE = [
 @pytest.mark.parametrize("text", NOT_HEAD_ON_ON_THE_EGO_S_SIDE)
 def test_riding_towards_the_ego_elsewhere_is_not_the_wrong_way(text):
     assert "wrong_way" not in _names(text)
+
+
+# a move into the ego's lane over the line that divides the two ways ("drifted over the centre line
+# into my lane", "veered across the white line") or onto the ego's half of the road ("swung onto our
+# side of the road"): it comes from the other way's half, so it is head-on, not a cut-in from beside
+OVER_TO_THE_EGO_S_HALF = [
+    "At 60 km/h a van veered across the centre line into my lane.",
+    "Doing 45 mph, a pickup drifted over the center line into my lane.",
+    "We were at 50 kph when a bus swerved onto our side of the road.",
+    "On the bend at 50 km/h a lorry cut the corner onto our side of the road.",
+    "At 40 mph a tractor swung onto my side of the road on the bend.",
+    "At 60 km/h a van came over the white line into my lane.",
+]
+
+
+@pytest.mark.parametrize("text", OVER_TO_THE_EGO_S_HALF)
+def test_a_move_over_to_the_ego_s_half_is_head_on(text):
+    assert _names(text)[:1] == ["wrong_way"]
+
+
+# near misses: from a lane beside (its side said, or over a lane line), and onto the road's edge
+NOT_OVER_TO_THE_EGO_S_HALF = [
+    "At 40 mph a car on my right drifted into my lane.",
+    "On the motorway at 70 mph a car from the left lane moved over into my lane.",
+    "At 40 mph a car in the next lane drifted across the lane line into my lane.",
+    "At 40 mph a van on my left swerved onto my side of the road.",
+]
+
+
+@pytest.mark.parametrize("text", NOT_OVER_TO_THE_EGO_S_HALF)
+def test_a_move_into_the_ego_lane_from_beside_is_no_head_on(text):
+    assert "wrong_way" not in _names(text)

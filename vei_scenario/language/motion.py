@@ -1523,7 +1523,7 @@ def chains(clauses: list, tokens: list[str]) -> list:
     clauses = with_a_thing_out_into_the_road(out_across_the_road(clauses, tokens), tokens)
     clauses = on_a_foot_crossing(out_of_a_place_then_across(clauses), tokens)
     clauses = out_of_the_ego_lane(into_a_lane(into_another_lane(clauses, tokens), tokens), tokens)
-    clauses = into_the_lane_the_ego_is_in(clauses, tokens)
+    clauses = over_to_the_ego_half(into_the_lane_the_ego_is_in(clauses, tokens), tokens)
     return walkers_cross(slowing_into_a_stop(lets_the_ego_go(clauses, tokens)))
 
 
@@ -1825,6 +1825,70 @@ def coming_in_the_ego_lane(clauses: list) -> list:
                 continue  # ("came up behind us in our lane", "came from the left into my lane")
             towards = replace(lane, value="oncoming", words="towards")
             kept.insert(kept.index(lane), towards)
+            break
+        out.append((link, kept))
+    return out
+
+
+#: The lines that divide the two ways of a road ("the centre line"): first words, and the phrases.
+_DIVIDING = frozenset(("centre", "center", "centreline", "centerline", "white", "dividing", "double"))
+#: Where a move into a lane says it came from beside the ego, not from the other way's half.
+_FROM_BESIDE = frozenset(("side", "lane_side", "kerb", "kerb_side"))
+
+
+def _over_the_dividing_line(tokens: list[str], m) -> bool:
+    """Whether move ``m`` goes over the line between the two ways ("drifted over the centre line",
+    "veered across the white line"): its last word or the next one is "over" / "across", then "the"
+    and a dividing line (not "the lane line": a line between lanes of one way)."""
+    j = m.end
+    if m.words.split()[-1] not in ("over", "across"):
+        if tokens[j : j + 1] not in (["over"], ["across"]):
+            return False
+        j += 1
+    line = tokens[j + 1 : j + 3]
+    return tokens[j : j + 1] == ["the"] and bool(line) and line[0] in _DIVIDING and "lane" not in line
+
+
+def _onto_the_ego_half(tokens: list[str], j: int) -> bool:
+    """Whether the ego's half of the road is entered from ``tokens[j]`` ("onto our side of the road",
+    "onto my side", "on to our half"): "onto" / "on to" and a side or half owned by the ego."""
+    if tokens[j : j + 2] == ["on", "to"]:
+        j += 1
+    if tokens[j : j + 1] != ["onto"] and tokens[j : j + 1] != ["to"]:
+        return False
+    said = tokens[j + 1 : j + 3]
+    return len(said) == 2 and said[0] in _EGO_OWNER_WORDS and said[1] in ("side", "half")
+
+
+def over_to_the_ego_half(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a road user's move into a lane over the line dividing the two ways ("drifted
+    over the centre line into my lane") or onto the ego's half of the road ("swung onto our side of
+    the road") read as coming at the ego in its lane: the two ways are split by that line, so who
+    crosses it into the ego's half comes from the other way's half, head-on, whatever verb of
+    moving across says it. One said to be beside the ego (a side, a lane, a kerb: "a car on my
+    right drifted into my lane") moves in from there: a cut-in."""
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k, m in enumerate(mentions):
+            if not (m.slot == "behaviour" and m.value[0] in ("cut_in", "change_lane")):
+                continue
+            subject = next((x for x in reversed(mentions[:k]) if x.slot in ("actor", "pronoun")), None)
+            if subject is None or subject.value == "ego":
+                continue
+            between = mentions[mentions.index(subject) + 1 : k]
+            if any(x.slot in _FROM_BESIDE or x.slot == "relation" for x in between):
+                continue  # ("a car on my right drifted into my lane": from beside the ego)
+            nxt = mentions[k + 1] if k + 1 < len(mentions) else None
+            over = _over_the_dividing_line(tokens, m) or (nxt is not None and nxt.slot == "over_line")
+            cut = nxt is not None and nxt.slot == "map" and nxt.start <= m.end + 1  # ("cut the corner onto ...")
+            onto = _onto_the_ego_half(tokens, nxt.end if cut else m.end)
+            if not (over or onto):
+                continue
+            towards = replace(m, slot="relation", value="oncoming", words="towards")
+            placed = replace(m, slot="over_line", value=None, words="over the line")
+            at = kept.index(nxt) + 1 if cut else kept.index(m) + 1  # (past the corner it cuts)
+            kept[at:at] = [towards, placed]
             break
         out.append((link, kept))
     return out
