@@ -791,3 +791,70 @@ def test_the_oncoming_lane_of_one_from_behind_is_where_it_overtakes(text, expect
 )  # fmt: skip
 def test_a_side_taken_back_is_the_side_put_right(text, expected):
     assert relation(text) == expected
+
+
+def _names(text: str) -> list[str]:
+    return [b[0] for b in read(text).actors[0].behaviours]
+
+
+# a rider travelling on the ego's half of the road ("on my side of the road", "on our side") at the
+# ego, or a verb of riding or driving right before "at" + the ego ("rode at me"): it comes head-on in
+# the ego's lane; "side" owned by someone is a half of the road, not the edge one keeps to
+HEAD_ON_ON_THE_EGO_S_SIDE = [
+    "I was going about 40 and a lad on a scooter was riding on my side of the road straight at me.",
+    "Doing 30 mph on the lane, a cyclist pedalling along on our side of the road straight towards us.",
+    "A kid on an e-scooter rode at me in my lane while I was doing 20 mph.",
+    "We were at 50 km/h when a cyclist on our side of the road rode directly at us.",
+    "At 25 km/h an e-scooter rider zoomed at us on our side of the road with no lights.",
+]
+
+
+@pytest.mark.parametrize("text", HEAD_ON_ON_THE_EGO_S_SIDE)
+def test_riding_at_the_ego_on_its_side_is_the_wrong_way(text):
+    assert _names(text) == ["wrong_way"]
+
+
+# near misses: along the edge of the road towards the ego (it keeps to its kerb), on its own side
+# (oncoming in its own lane), and a verb that is no travel before "at" the ego
+NOT_HEAD_ON_ON_THE_EGO_S_SIDE = [
+    "I was doing 30 mph and a cyclist riding down the side of the road towards me kept to the kerb.",
+    "I was doing 30 mph and a cyclist on his side of the road came towards me.",
+    "I was doing 30 mph and a cyclist on the pavement waved at me.",
+]
+
+
+@pytest.mark.parametrize("text", NOT_HEAD_ON_ON_THE_EGO_S_SIDE)
+def test_riding_towards_the_ego_elsewhere_is_not_the_wrong_way(text):
+    assert "wrong_way" not in _names(text)
+
+
+# a move into the ego's lane over the line that divides the two ways ("drifted over the centre line
+# into my lane", "veered across the white line") or onto the ego's half of the road ("swung onto our
+# side of the road"): it comes from the other way's half, so it is head-on, not a cut-in from beside
+OVER_TO_THE_EGO_S_HALF = [
+    "At 60 km/h a van veered across the centre line into my lane.",
+    "Doing 45 mph, a pickup drifted over the center line into my lane.",
+    "We were at 50 kph when a bus swerved onto our side of the road.",
+    "On the bend at 50 km/h a lorry cut the corner onto our side of the road.",
+    "At 40 mph a tractor swung onto my side of the road on the bend.",
+    "At 60 km/h a van came over the white line into my lane.",
+]
+
+
+@pytest.mark.parametrize("text", OVER_TO_THE_EGO_S_HALF)
+def test_a_move_over_to_the_ego_s_half_is_head_on(text):
+    assert _names(text)[:1] == ["wrong_way"]
+
+
+# near misses: from a lane beside (its side said, or over a lane line), and onto the road's edge
+NOT_OVER_TO_THE_EGO_S_HALF = [
+    "At 40 mph a car on my right drifted into my lane.",
+    "On the motorway at 70 mph a car from the left lane moved over into my lane.",
+    "At 40 mph a car in the next lane drifted across the lane line into my lane.",
+    "At 40 mph a van on my left swerved onto my side of the road.",
+]
+
+
+@pytest.mark.parametrize("text", NOT_OVER_TO_THE_EGO_S_HALF)
+def test_a_move_into_the_ego_lane_from_beside_is_no_head_on(text):
+    assert "wrong_way" not in _names(text)

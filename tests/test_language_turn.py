@@ -146,3 +146,39 @@ def test_a_right_taken_in_front_of_the_ego_is_the_turn(text, turn):
     (actor,) = read(text).actors
     first = actor.behaviours[0]
     assert first[0] == "forced_turn" and first[1].get("turn") == turn
+
+
+# the ego told of in the third person ("my sister was driving ...", a claim, a news item): a road
+# user coming the other way that turns across her or his path, or across the front of the ego's
+# vehicle, turns across the ego's path whichever side it turns to, as "across my path" does
+ACROSS_THE_EGO_TOLD_OF = [
+    "My dad was doing 30 mph through the lights when an oncoming taxi turned right across him.",
+    "The claimant drove straight on at 40 km/h; a lorry coming the other way turned right across her path.",
+    "Our son was riding home at 20 km/h and a car coming towards him swung right across his lane.",
+    "My parents were going straight through the junction at 25 mph when a van coming the other way turned"
+    " right across them.",
+    "He was cycling at 15 mph when an oncoming bus swung right across his way into a depot.",
+    "At the crossroads I went straight on at 30 mph and an oncoming pickup turned right across the front of my car.",
+    "At the lights I drove straight at 50 km/h when a cab coming towards us turned right across the front of us.",
+]
+
+
+@pytest.mark.parametrize("text", ACROSS_THE_EGO_TOLD_OF)
+def test_a_turn_across_the_ego_told_of_is_the_turn_across(text):
+    actor, names = _only(text)
+    assert names[:1] == ["turn_across"]
+
+
+# near misses: a turn to the near side with nothing crossed, across another road's traffic by a road
+# user going the ego's way, and across a road named by its place
+NOT_ACROSS_THE_EGO_TOLD_OF = [
+    "My dad was doing 30 mph through the lights when an oncoming taxi turned right into a side street.",
+    "My dad was doing 30 mph when the taxi ahead of him turned right across the traffic.",
+    "My dad was doing 30 mph when an oncoming taxi turned right across the car park entrance.",
+]
+
+
+@pytest.mark.parametrize("text", NOT_ACROSS_THE_EGO_TOLD_OF)
+def test_a_turn_across_no_ego_is_not_the_turn_across(text):
+    actor, names = _only(text)
+    assert "turn_across" not in names

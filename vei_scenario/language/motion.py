@@ -1523,7 +1523,7 @@ def chains(clauses: list, tokens: list[str]) -> list:
     clauses = with_a_thing_out_into_the_road(out_across_the_road(clauses, tokens), tokens)
     clauses = on_a_foot_crossing(out_of_a_place_then_across(clauses), tokens)
     clauses = out_of_the_ego_lane(into_a_lane(into_another_lane(clauses, tokens), tokens), tokens)
-    clauses = into_the_lane_the_ego_is_in(clauses, tokens)
+    clauses = over_to_the_ego_half(into_the_lane_the_ego_is_in(clauses, tokens), tokens)
     return walkers_cross(slowing_into_a_stop(lets_the_ego_go(clauses, tokens)))
 
 
@@ -1830,6 +1830,70 @@ def coming_in_the_ego_lane(clauses: list) -> list:
     return out
 
 
+#: The lines that divide the two ways of a road ("the centre line"): first words, and the phrases.
+_DIVIDING = frozenset(("centre", "center", "centreline", "centerline", "white", "dividing", "double"))
+#: Where a move into a lane says it came from beside the ego, not from the other way's half.
+_FROM_BESIDE = frozenset(("side", "lane_side", "kerb", "kerb_side"))
+
+
+def _over_the_dividing_line(tokens: list[str], m) -> bool:
+    """Whether move ``m`` goes over the line between the two ways ("drifted over the centre line",
+    "veered across the white line"): its last word or the next one is "over" / "across", then "the"
+    and a dividing line (not "the lane line": a line between lanes of one way)."""
+    j = m.end
+    if m.words.split()[-1] not in ("over", "across"):
+        if tokens[j : j + 1] not in (["over"], ["across"]):
+            return False
+        j += 1
+    line = tokens[j + 1 : j + 3]
+    return tokens[j : j + 1] == ["the"] and bool(line) and line[0] in _DIVIDING and "lane" not in line
+
+
+def _onto_the_ego_half(tokens: list[str], j: int) -> bool:
+    """Whether the ego's half of the road is entered from ``tokens[j]`` ("onto our side of the road",
+    "onto my side", "on to our half"): "onto" / "on to" and a side or half owned by the ego."""
+    if tokens[j : j + 2] == ["on", "to"]:
+        j += 1
+    if tokens[j : j + 1] != ["onto"] and tokens[j : j + 1] != ["to"]:
+        return False
+    said = tokens[j + 1 : j + 3]
+    return len(said) == 2 and said[0] in _EGO_OWNER_WORDS and said[1] in ("side", "half")
+
+
+def over_to_the_ego_half(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a road user's move into a lane over the line dividing the two ways ("drifted
+    over the centre line into my lane") or onto the ego's half of the road ("swung onto our side of
+    the road") read as coming at the ego in its lane: the two ways are split by that line, so who
+    crosses it into the ego's half comes from the other way's half, head-on, whatever verb of
+    moving across says it. One said to be beside the ego (a side, a lane, a kerb: "a car on my
+    right drifted into my lane") moves in from there: a cut-in."""
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k, m in enumerate(mentions):
+            if not (m.slot == "behaviour" and m.value[0] in ("cut_in", "change_lane")):
+                continue
+            subject = next((x for x in reversed(mentions[:k]) if x.slot in ("actor", "pronoun")), None)
+            if subject is None or subject.value == "ego":
+                continue
+            between = mentions[mentions.index(subject) + 1 : k]
+            if any(x.slot in _FROM_BESIDE or x.slot == "relation" for x in between):
+                continue  # ("a car on my right drifted into my lane": from beside the ego)
+            nxt = mentions[k + 1] if k + 1 < len(mentions) else None
+            over = _over_the_dividing_line(tokens, m) or (nxt is not None and nxt.slot == "over_line")
+            cut = nxt is not None and nxt.slot == "map" and nxt.start <= m.end + 1  # ("cut the corner onto ...")
+            onto = _onto_the_ego_half(tokens, nxt.end if cut else m.end)
+            if not (over or onto):
+                continue
+            towards = replace(m, slot="relation", value="oncoming", words="towards")
+            placed = replace(m, slot="over_line", value=None, words="over the line")
+            at = kept.index(nxt) + 1 if cut else kept.index(m) + 1  # (past the corner it cuts)
+            kept[at:at] = [towards, placed]
+            break
+        out.append((link, kept))
+    return out
+
+
 #: What of the ego a turn crosses, after "across" and its owner ("across my path", "across our bonnet"):
 #: its way, or the front of the vehicle that meets what turns over it.
 _ACROSS_WAYS = frozenset(("path", "way", "lane", "lanes", "side", "front", "nose", "bonnet", "hood"))
@@ -1886,15 +1950,34 @@ def _across_the_ego(tokens: list[str], j: int) -> bool:
         j += 1
     if j >= len(tokens) or tokens[j] != "across":
         return False
-    if tokens[j + 1 : j + 2] in (["me"], ["us"], ["ego"]) or tokens[j + 1 : j + 3] == ["the", "ego"]:
+    if tokens[j + 1 : j + 2] in (["me"], ["us"], ["ego"], *_TOLD_OF) or tokens[j + 1 : j + 3] == ["the", "ego"]:
         return True
     if tokens[j + 1 : j + 2] == ["the"] and _in_front_of_the_ego(tokens, j + 3):
         return True  # ("across the tracks in front of me": the one thing crossed, where the ego is)
+    if tokens[j + 1 : j + 4] == ["the", "front", "of"]:
+        return _ego_named(tokens, j + 4)  # ("across the front of my car", "... of her")
     said = " ".join(tokens[j + 1 : j + 5]).replace(" 's", "'s").split()
     for n, owner in enumerate(said[:3]):
-        if owner in _EGO_OWNER_WORDS and n + 1 < len(said) and said[n + 1] in _ACROSS_WAYS:
+        if owner in _EGO_OWNER_WORDS | _TOLD_OF_OWNER and n + 1 < len(said) and said[n + 1] in _ACROSS_WAYS:
             return n == 0 or said[:n] == ["the"]
     return False
+
+
+#: The ego told of in the third person as what a turn crosses ("turned right across her", "across
+#: his path"): an oncoming road user's turn across a person is across that person's way.
+_TOLD_OF = (["him"], ["her"], ["them"])
+_TOLD_OF_OWNER = frozenset(("his", "her", "their"))
+
+
+def _ego_named(tokens: list[str], j: int) -> bool:
+    """Whether the ego or its vehicle is named at ``tokens[j]`` ("me", "us", "her", "my car", "his
+    bike", "the ego"): what "the front of" is of, in "across the front of my car"."""
+    said = tokens[j : j + 2]
+    return (
+        said[:1] in (["me"], ["us"], ["ego"], *_TOLD_OF)
+        or said == ["the", "ego"]
+        or (len(said) == 2 and said[0] in _EGO_OWNER_WORDS | _TOLD_OF_OWNER)
+    )
 
 
 def _in_front_of_the_ego(tokens: list[str], j: int) -> bool:

@@ -778,12 +778,27 @@ def coming_at_the_ego(tokens: list[str], i: int) -> int | None:
     else:
         return None
     for k in range(i - 1, max(-1, i - _REACH - 1), -1):
-        if tokens[k] in _NOT_ALONG or tokens[k] in _EDGE:
+        if tokens[k] in _NOT_ALONG or (tokens[k] in _EDGE and not _a_half_of_the_road(tokens, k)):
             return None  # (not "riding down the side of the road toward me": along the edge, its kerb's)
         verbs = set(lemmas(tokens[k]).get("VERB", ()))
         if verbs & _TRAVEL and (tokens[i] != "for" or "head" in verbs):
-            return end if k < i - 1 else None  # (right after the verb the lexicon's phrase reads it)
+            said_by_the_lexicon = k == i - 1 and bool(verbs & _LEXICON_TOWARDS.get(tokens[i], set()))
+            return None if said_by_the_lexicon else end  # (right after "came" the lexicon's "come at" reads it)
     return None
+
+
+#: The verbs the lexicon's own oncoming phrases put right before "at" / "towards" ("come at", "drive
+#: towards"): with nothing between, the lexicon reads them, verb and all.
+_LEXICON_TOWARDS = {"at": {"come"}, "towards": {"come", "drive", "head"}, "toward": {"come"}}
+#: Who owns a half of the road ("my side of the road", "their side"), or which half it is ("the wrong side").
+_HALF_OWNERS = frozenset({"my", "our", "your", "his", "her", "their", "its", "wrong", "other", "opposite", "own"})
+
+
+def _a_half_of_the_road(tokens: list[str], k: int) -> bool:
+    """Whether "side" at token ``k`` is a half of the road one travels on ("on my side of the road",
+    "on our side"), owned or named so, not the road's edge ("down the side of the road"): travelling
+    on the ego's half at the ego is coming head-on, and on one's own half is oncoming."""
+    return tokens[k] == "side" and k > 0 and tokens[k - 1] in _HALF_OWNERS
 
 
 #: Places on the road that hide what comes the other way: coming round or over one, a road user
