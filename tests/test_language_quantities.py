@@ -170,8 +170,8 @@ def test_a_gap_said_as_a_range_or_in_car_lengths_is_metres(text, gap):
 @pytest.mark.parametrize(
     "text, ego",
     [
-        ("We were at a gentle 35 when a fox ran out from the left.", 35 * KPH),
-        ("Ego at a constant 45, a jogger steps out from the right.", 45 * KPH),
+        ("We were at a gentle 30 when a fox ran out from the left.", 30 * KPH),
+        ("Ego at a constant 40, a jogger steps out from the right.", 40 * KPH),
         ("I was going at around forty when a dog shot out from the left.", 40 * KPH),
     ],
     ids=["gentle", "constant", "around-words"],

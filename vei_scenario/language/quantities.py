@@ -219,7 +219,7 @@ def _bare_range(m: re.Match) -> str:
     low, high = float(m.group(3)), float(m.group(5))
     if (m.group(4) == "and" and "between" not in m.group(2)) or not 3 <= low < high <= 250 or high > 2 * low + 10:
         return m.group(0)
-    return f"{m.group(1)} about {(low + high) / 2:g}"
+    return f"{m.group(1)} about {(low + high) / 2:.1f}"  # (with its decimal: no value a writer rounded to)
 
 
 #: "30 mph-ish": a hedge on the unit.
@@ -465,8 +465,33 @@ def carried_unit(tokens: list[str], i: int, imperial: bool = False, metric: bool
             return V.SPEED_UNITS[tokens[k]]
     if metric or metric_country(tokens):
         return 1 / 3.6
-    miles = imperial or miles_country(tokens) or free_motorway_speed(tokens, i)
+    miles = imperial or miles_country(tokens) or free_motorway_speed(tokens, i) or miles_limit_speed(tokens, i)
     return V.SPEED_UNITS["mph"] if miles else 1 / 3.6
+
+
+#: Bare speeds only a mile-per-hour limit rounds to (:data:`_MILES_LIMITS` above a walker's or rider's 15):
+#: where km/h is signed, limits are multiples of ten and a driver rounds to them.
+_MILES_ONLY_SPEEDS = frozenset({25, 35, 45, 55, 65, 75})
+#: Words of riding a bike or scooter: a rider's bare 25 is the km/h an e-bike or e-scooter is held to.
+_RIDING = frozenset(
+    {"ride", "rides", "riding", "rode", "cycle", "cycles", "cycling", "cycled", "scooting", "scooted", "pedalling",
+     "pedaling", "pedalled", "pedaled"}
+)  # fmt: skip
+
+
+def miles_limit_speed(tokens: list[str], i: int) -> bool:
+    """Whether the bare speed at ``i`` is one only a mile-per-hour limit rounds to ("doing about 35",
+        "at a steady 55"): a driver gives the speed they hold by their limits, and km/h limits are multiples
+        of ten, so a bare 25, 35, 45 ... is said where miles are signed. Not a rider's (a bare "riding at 25"
+        is the e-scooter's 25 km/h), not "45 speed", the km/h of Indian English, and not the middle of a range
+    ("doing 30-40" is "doing about 35.0"), which no writer rounded."""
+    value = float(tokens[i])
+    if not tokens[i].isdigit() or int(value) not in _MILES_ONLY_SPEEDS or tokens[i + 1 : i + 2] == ["speed"]:
+        return False
+    start = i
+    while start > 0 and tokens[start - 1] not in _STOPS:
+        start -= 1
+    return not any(t in _RIDING for t in tokens[start:i])
 
 
 #: Words of slow traffic ("heavy traffic", "jammed", "rush hour", "roadworks"): at them a motorway's
