@@ -135,6 +135,28 @@ def test_a_bare_speed_not_only_of_mph_limits_keeps_its_unit(text, kph):
     assert _ego(text) == pytest.approx(kph * KPH)
 
 
+# --- a change of speed in a crash (delta-v, EES) is no speed anyone travels at --------------------------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("V1 was travelling at about 80 km/h when V2 pulled out from the left; delta-v V1 = 30 km/h.", 80),
+        ("The car was doing approximately 60 km/h before impact. Delta V for the car was 25 km/h.", 60),
+        ("Ego at 50 km/h, a van pulls out from the right; estimated delta-v of the ego 20 km/h.", 50),
+        ("I was doing 70 km/h when a truck pulled out. Reconstruction: my car's EES was 35 km/h.", 70),
+        ("Vehicle 1 at approx. 90 km/h, the other car turned across it. dV vehicle 1: 40 km/h.", 90),
+    ],
+    ids=["delta-v-equals", "delta-v-spaced", "delta-v-of", "ees", "dv"],
+)
+def test_a_crash_change_of_speed_is_not_the_egos_speed(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH)
+
+
+def test_a_car_named_delta_keeps_its_speed():
+    reading = read("A Lancia Delta doing 40 km/h pulled out in front of me while I was at 60 km/h.")
+    assert reading.ego_speed_mps == pytest.approx(60 * KPH)
+    assert [a.speed_mps for a in reading.actors] == [pytest.approx(40 * KPH)]
+
+
 # --- a sentence opening with a participle of driving: its speed is the narrator's --------------------------
 @pytest.mark.parametrize(
     "text, kph",

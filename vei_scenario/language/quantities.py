@@ -350,6 +350,25 @@ def other_measure(tokens: list[str], i: int) -> bool:
     return nxt in OTHER_MEASURES or (clock and not (i + 3 < len(tokens) and tokens[i + 3] in V.SPEED_UNITS))
 
 
+#: Names of a change of speed in a crash, as reconstruction reports write them: "delta-v" (also "delta v",
+#: "dV") and the energy equivalent speed, "EES": how much speed the crash took, not a speed travelled.
+_CRASH_CHANGES = frozenset({"delta-v", "deltav", "dv", "d-v", "ees"})
+#: How far back from a number its crash measure may stand ("delta-v of the ego was approx. 38 km/h").
+_CRASH_CHANGE_REACH = 6
+
+
+def crash_change_of_speed(tokens: list[str], i: int) -> bool:
+    """Whether the number at ``i`` measures a change of speed in a crash ("delta-v V1 = 38 km/h", "Delta V
+    for the car was 25 km/h", "the EES was 35 km/h"): a crash measure names it before, within its clause.
+    Why: it says how hard the crash was, so it is the speed of no one (not "a Lancia Delta at 40 km/h")."""
+    for k in range(i - 1, max(i - 1 - _CRASH_CHANGE_REACH, -1), -1):
+        if tokens[k] in _STOPS or tokens[k] == ",":
+            return False
+        if tokens[k] in _CRASH_CHANGES or (tokens[k] == "v" and k and tokens[k - 1] == "delta"):
+            return True
+    return False
+
+
 #: Words after "<number> speed" that end its phrase ("going 40 speed only", "coming 50 speed, ...", "with
 #: 60 speed on the flyover"): the number is then a speed, not a thing of speeds ("a 40 speed limit", "a 5
 #: speed gearbox", "3 speed bumps").

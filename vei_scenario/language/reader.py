@@ -664,6 +664,8 @@ def _number(tokens: list[str], i: int, imperial: bool = False, metric: bool = Fa
     is set where km/h is signed, so a bare speed is in km/h)."""
     value = float(tokens[i])
     nxt = tokens[i + 1] if i + 1 < len(tokens) else ""
+    if Q.crash_change_of_speed(tokens, i):  # ("delta-v V1 = 38 km/h": how hard it hit, no one's speed)
+        return "skip", value, 2 if nxt in V.SPEED_UNITS else 1
     if nxt in V.SPEED_UNITS:
         return "speed", value * V.SPEED_UNITS[nxt], 2
     if nxt in ("m", "meters", "metres", "meter", "metre"):
