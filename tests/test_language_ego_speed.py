@@ -157,6 +157,28 @@ def test_a_car_named_delta_keeps_its_speed():
     assert [a.speed_mps for a in reading.actors] == [pytest.approx(40 * KPH)]
 
 
+# --- "<speed> down to <speed>": the speed it had, then the one it braked to ---------------------------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("I slammed on, 70 down to 30 km/h, as the van cut in.", 70),
+        ("Speed dropped from 60 down to 20 km/h when the cyclist swerved.", 60),
+        ("We went 50 down to 10 mph in about two seconds when a deer ran out.", 50 * 1.609344),
+        ("Ego brakes 80 down to 40 km/h behind the truck that cut in.", 80),
+        ("Had to scrub off speed fast, 100 down to 60 km/h, because a car pulled out.", 100),
+    ],
+    ids=["slammed", "from-down-to", "mph", "spec", "scrub"],
+)
+def test_a_speed_said_down_to_another_is_the_first(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH, rel=1e-3)
+
+
+def test_a_number_counted_down_to_another_is_no_speed():
+    assert _ego("The lights counted 10 down to 1 while I was doing 40 km/h and a cyclist crossed.") == pytest.approx(
+        40 * KPH
+    )
+
+
 # --- a sentence opening with a participle of driving: its speed is the narrator's --------------------------
 @pytest.mark.parametrize(
     "text, kph",

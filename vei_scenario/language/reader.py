@@ -688,6 +688,10 @@ def _number(tokens: list[str], i: int, imperial: bool = False, metric: bool = Fa
         unit = tokens[i + 3]
         if unit in V.SPEED_UNITS:  # "from 50 to 20 km/h": the speed, then the one it goes to
             return "speed_range", (value * V.SPEED_UNITS[unit], float(tokens[i + 2]) * V.SPEED_UNITS[unit]), 4
+    if nxt == "down" and tokens[i + 2 : i + 3] == ["to"] and i + 4 < len(tokens) and Q.is_number(tokens[i + 3]):
+        unit = tokens[i + 4]
+        if unit in V.SPEED_UNITS:  # "70 down to 30 km/h": the speed it had, then the one it braked to
+            return "speed_range", (value * V.SPEED_UNITS[unit], float(tokens[i + 3]) * V.SPEED_UNITS[unit]), 5
     if Q.number_speed(tokens, i):  # ("I was going 40 speed only", "at 60 speed on the flyover")
         return "speed", value * Q.carried_unit(tokens, i, imperial, metric), 2
     if Q.clock_hour(tokens, i):  # ("Today morning, around 7, ...", "at 9 last night"): an hour, no speed
