@@ -14,7 +14,7 @@ from vei_scenario.language.reader import read
 @pytest.mark.parametrize(
     ("text", "kind", "ego_kph"),
     [
-        ("Bus was doing around 40 when a cyclist swerved in front of it from the left lane.", "bicycle", 40),
+        ("Bus was doing around 45 when a cyclist swerved in front of it from the left lane.", "bicycle", 45),
         (
             "The school minibus was doing about thirty when a lorry pulled out of a farm gate on the left"
             " into its path.",

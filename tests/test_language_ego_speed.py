@@ -108,12 +108,12 @@ def test_a_bare_speed_stays_kmh_without_a_sign_of_miles(text, kph):
     [
         ("Was doing about 35 when a lad on a scooter pulled out of the side road.", 35),
         ("hey so i was going like 25 and this guy on a bike just swerves in front of me lol", 25),
-        ("V1 travelling at approx 45 when the pedestrian stepped out from the nearside.", 45),
-        ("Cruising at 65 in the fast lane, a sedan merged in without signalling.", 65),
+        ("My car was travelling at approx 45 when the pedestrian stepped out from the nearside.", 45),
+        ("Cruising at 65 in the fast lane when a sedan merged in front of me without signalling.", 65),
         ("My wife was only doing 25ish, thank god, when the kid darted out between the cars.", 25),
-        ("Coming over the brow at a steady 55, a tractor was turning in ahead.", 55),
+        ("Coming over the brow at a steady 55, we saw a tractor turning in ahead.", 55),
     ],
-    ids=["uk-text", "us-message", "police-note", "us-fast-lane", "hedged", "steady"],
+    ids=["uk-text", "us-message", "my-car", "us-fast-lane", "hedged", "steady"],
 )
 def test_a_bare_speed_at_a_value_only_mph_limits_have_is_mph(text, mph):
     assert _ego(text) == pytest.approx(mph * MPH)
@@ -128,8 +128,10 @@ def test_a_bare_speed_at_a_value_only_mph_limits_have_is_mph(text, mph):
         ("Doing 45 in the ute when a cyclist swerved out in front.", 45),
         ("I was riding my e-scooter at 25 when a car door opened right in front of me.", 25),
         ("I was going 45 speed only near the flyover when an auto cut in.", 45),
+        ("The test car was doing about 35 when the pedestrian dummy stepped out.", 35),
+        ("Witness says the van was going around 45 when it hit the cyclist.", 45),
     ],
-    ids=["round-30", "round-50", "unit-said-before", "metric-country", "rider", "number-speed"],
+    ids=["round-30", "round-50", "unit-said-before", "metric-country", "rider", "number-speed", "spec", "witness"],
 )
 def test_a_bare_speed_not_only_of_mph_limits_keeps_its_unit(text, kph):
     assert _ego(text) == pytest.approx(kph * KPH)

@@ -468,14 +468,17 @@ def after_ego(tokens: list[str], i: int) -> bool:
 Mentions = Callable[[int], "int | None"]
 
 
-def carried_unit(tokens: list[str], i: int, imperial: bool = False, metric: bool = False) -> float:
+def carried_unit(
+    tokens: list[str], i: int, imperial: bool = False, metric: bool = False, narrated: bool = False
+) -> float:
     """The factor to m/s of a bare speed at ``i`` ("I'm at 50"): the unit of the last speed said with
     one before it, else of the first said after it, else mph on a road of a country that signs miles
     (:func:`miles_country`; ``imperial``: the text measured a length in feet or yards, see
     :func:`imperial_lengths`), else km/h (the unit of a test engineer who gives none; a motorway says
     neither: in heavy traffic 60 km/h is as likely there as 60 mph). ``metric``: the text as written was
     set where km/h is signed (:func:`metric_country` of its tokens before the reader named the ego's
-    own vehicle "the ego": "in the ute")."""
+    own vehicle "the ego": "in the ute"). ``narrated``: the text is told in the first person, whose bare
+    speeds a value only mph limits round to makes mph (:func:`miles_limit_speed`)."""
     for k in range(i - 1, 0, -1):
         if tokens[k] in V.SPEED_UNITS and tokens[k - 1].replace(".", "", 1).isdigit():
             return V.SPEED_UNITS[tokens[k]]
@@ -484,7 +487,12 @@ def carried_unit(tokens: list[str], i: int, imperial: bool = False, metric: bool
             return V.SPEED_UNITS[tokens[k]]
     if metric or metric_country(tokens):
         return 1 / 3.6
-    miles = imperial or miles_country(tokens) or free_motorway_speed(tokens, i) or miles_limit_speed(tokens, i)
+    miles = (
+        imperial
+        or miles_country(tokens)
+        or free_motorway_speed(tokens, i)
+        or (narrated and miles_limit_speed(tokens, i))
+    )
     return V.SPEED_UNITS["mph"] if miles else 1 / 3.6
 
 
@@ -499,11 +507,13 @@ _RIDING = frozenset(
 
 
 def miles_limit_speed(tokens: list[str], i: int) -> bool:
-    """Whether the bare speed at ``i`` is one only a mile-per-hour limit rounds to ("doing about 35",
-        "at a steady 55"): a driver gives the speed they hold by their limits, and km/h limits are multiples
-        of ten, so a bare 25, 35, 45 ... is said where miles are signed. Not a rider's (a bare "riding at 25"
-        is the e-scooter's 25 km/h), not "45 speed", the km/h of Indian English, and not the middle of a range
-    ("doing 30-40" is "doing about 35.0"), which no writer rounded."""
+    """Whether the bare speed at ``i`` is one only a mile-per-hour limit rounds to ("doing about 35", "at a
+    steady 55"): a driver gives the speed they hold by their limits, and km/h limits are multiples of ten,
+    so a bare 25, 35, 45 ... is said where miles are signed. Not a rider's (a bare "riding at 25" is the
+    e-scooter's 25 km/h), not "45 speed", the km/h of Indian English, and not the middle of a range ("doing
+    30-40" is "doing about 35.0"), which no writer rounded. The caller asks only in a story told in the
+    first person: a narrator reads their own speedometer; a third party's bare number is an estimate or a
+    spec's, in km/h as a test engineer gives it."""
     value = float(tokens[i])
     if not tokens[i].isdigit() or int(value) not in _MILES_ONLY_SPEEDS or tokens[i + 1 : i + 2] == ["speed"]:
         return False
