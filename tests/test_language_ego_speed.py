@@ -102,6 +102,85 @@ def test_a_bare_speed_stays_kmh_without_a_sign_of_miles(text, kph):
     assert _ego(text) == pytest.approx(kph * KPH)
 
 
+# --- a bare speed only a mile-per-hour limit rounds to: mph ----------------------------------------------
+@pytest.mark.parametrize(
+    "text, mph",
+    [
+        ("Was doing about 35 when a lad on a scooter pulled out of the side road.", 35),
+        ("hey so i was going like 25 and this guy on a bike just swerves in front of me lol", 25),
+        ("My car was travelling at approx 45 when the pedestrian stepped out from the nearside.", 45),
+        ("Cruising at 65 in the fast lane when a sedan merged in front of me without signalling.", 65),
+        ("My wife was only doing 25ish, thank god, when the kid darted out between the cars.", 25),
+        ("Coming over the brow at a steady 55, we saw a tractor turning in ahead.", 55),
+    ],
+    ids=["uk-text", "us-message", "my-car", "us-fast-lane", "hedged", "steady"],
+)
+def test_a_bare_speed_at_a_value_only_mph_limits_have_is_mph(text, mph):
+    assert _ego(text) == pytest.approx(mph * MPH)
+
+
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("Was doing about 30 when a lad on a scooter pulled out of the side road.", 30),
+        ("Was doing about 50 when a lad on a scooter pulled out of the side road.", 50),
+        ("A cyclist was doing 20 km/h beside me and I was at 35.", 35),
+        ("Doing 45 in the ute when a cyclist swerved out in front.", 45),
+        ("I was riding my e-scooter at 25 when a car door opened right in front of me.", 25),
+        ("I was going 45 speed only near the flyover when an auto cut in.", 45),
+        ("The test car was doing about 35 when the pedestrian dummy stepped out.", 35),
+        ("Witness says the van was going around 45 when it hit the cyclist.", 45),
+    ],
+    ids=["round-30", "round-50", "unit-said-before", "metric-country", "rider", "number-speed", "spec", "witness"],
+)
+def test_a_bare_speed_not_only_of_mph_limits_keeps_its_unit(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH)
+
+
+# --- a change of speed in a crash (delta-v, EES) is no speed anyone travels at --------------------------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("V1 was travelling at about 80 km/h when V2 pulled out from the left; delta-v V1 = 30 km/h.", 80),
+        ("The car was doing approximately 60 km/h before impact. Delta V for the car was 25 km/h.", 60),
+        ("Ego at 50 km/h, a van pulls out from the right; estimated delta-v of the ego 20 km/h.", 50),
+        ("I was doing 70 km/h when a truck pulled out. Reconstruction: my car's EES was 35 km/h.", 70),
+        ("Vehicle 1 at approx. 90 km/h, the other car turned across it. dV vehicle 1: 40 km/h.", 90),
+    ],
+    ids=["delta-v-equals", "delta-v-spaced", "delta-v-of", "ees", "dv"],
+)
+def test_a_crash_change_of_speed_is_not_the_egos_speed(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH)
+
+
+def test_a_car_named_delta_keeps_its_speed():
+    reading = read("A Lancia Delta doing 40 km/h pulled out in front of me while I was at 60 km/h.")
+    assert reading.ego_speed_mps == pytest.approx(60 * KPH)
+    assert [a.speed_mps for a in reading.actors] == [pytest.approx(40 * KPH)]
+
+
+# --- "<speed> down to <speed>": the speed it had, then the one it braked to ---------------------------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("I slammed on, 70 down to 30 km/h, as the van cut in.", 70),
+        ("Speed dropped from 60 down to 20 km/h when the cyclist swerved.", 60),
+        ("We went 50 down to 10 mph in about two seconds when a deer ran out.", 50 * 1.609344),
+        ("Ego brakes 80 down to 40 km/h behind the truck that cut in.", 80),
+        ("Had to scrub off speed fast, 100 down to 60 km/h, because a car pulled out.", 100),
+    ],
+    ids=["slammed", "from-down-to", "mph", "spec", "scrub"],
+)
+def test_a_speed_said_down_to_another_is_the_first(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH, rel=1e-3)
+
+
+def test_a_number_counted_down_to_another_is_no_speed():
+    assert _ego("The lights counted 10 down to 1 while I was doing 40 km/h and a cyclist crossed.") == pytest.approx(
+        40 * KPH
+    )
+
+
 # --- a sentence opening with a participle of driving: its speed is the narrator's --------------------------
 @pytest.mark.parametrize(
     "text, kph",

@@ -170,14 +170,30 @@ def test_a_gap_said_as_a_range_or_in_car_lengths_is_metres(text, gap):
 @pytest.mark.parametrize(
     "text, ego",
     [
-        ("We were at a gentle 35 when a fox ran out from the left.", 35 * KPH),
-        ("Ego at a constant 45, a jogger steps out from the right.", 45 * KPH),
+        ("We were at a gentle 30 when a fox ran out from the left.", 30 * KPH),
+        ("Ego at a constant 40, a jogger steps out from the right.", 40 * KPH),
         ("I was going at around forty when a dog shot out from the left.", 40 * KPH),
+        ("We were following the bus at a careful thirty when it stopped dead.", 30 * KPH),
+        ("Doing a steady sixty in the outside lane, a van drifted across.", 60 * KPH),
+        ("I was at an easy fifty when a moped pulled out of the side road.", 50 * KPH),
+        ("Rolling along at a sensible twenty, a boy on a bike shot out.", 20 * KPH),
     ],
-    ids=["gentle", "constant", "around-words"],
+    ids=["gentle", "constant", "around-words", "careful-words", "steady-words", "easy-words", "sensible-words"],
 )
 def test_a_speed_after_at_and_a_modifier_is_read(text, ego):
     assert read(text).ego_speed_mps == pytest.approx(ego)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was doing a good twenty minutes of driving before a cyclist swerved in front of me.",
+        "At a guess three cars were queued when a scooter cut in front of me.",
+    ],
+    ids=["minutes", "small-count"],
+)
+def test_a_number_in_words_after_an_article_and_a_modifier_that_is_no_speed_is_not_read(text):
+    assert read(text).ego_speed_mps is None
 
 
 @pytest.mark.parametrize(

@@ -218,7 +218,7 @@ def test_a_speed_before_a_place_is_still_a_speed(text, kph):
         ("Lead car at 50, me at 60, 2 second gap, and it brakes hard.", 60),
         ("Truck ahead at 80, us at 100, it pulls out to pass a caravan.", 100),
         ("Him at 30, me at 50, he turned right across my lane.", 50),
-        ("Bus in front at 40. Me at 45. It stopped without warning.", 45),
+        ("Bus in front at 40. Me at 50. It stopped without warning.", 50),
         ("Ego at 70, target at 40, cut-in at 20 m.", 70),
     ],
 )

@@ -219,7 +219,7 @@ def _bare_range(m: re.Match) -> str:
     low, high = float(m.group(3)), float(m.group(5))
     if (m.group(4) == "and" and "between" not in m.group(2)) or not 3 <= low < high <= 250 or high > 2 * low + 10:
         return m.group(0)
-    return f"{m.group(1)} about {(low + high) / 2:g}"
+    return f"{m.group(1)} about {(low + high) / 2:.1f}"  # (with its decimal: no value a writer rounded to)
 
 
 #: "30 mph-ish": a hedge on the unit.
@@ -350,6 +350,25 @@ def other_measure(tokens: list[str], i: int) -> bool:
     return nxt in OTHER_MEASURES or (clock and not (i + 3 < len(tokens) and tokens[i + 3] in V.SPEED_UNITS))
 
 
+#: Names of a change of speed in a crash, as reconstruction reports write them: "delta-v" (also "delta v",
+#: "dV") and the energy equivalent speed, "EES": how much speed the crash took, not a speed travelled.
+_CRASH_CHANGES = frozenset({"delta-v", "deltav", "dv", "d-v", "ees"})
+#: How far back from a number its crash measure may stand ("delta-v of the ego was approx. 38 km/h").
+_CRASH_CHANGE_REACH = 6
+
+
+def crash_change_of_speed(tokens: list[str], i: int) -> bool:
+    """Whether the number at ``i`` measures a change of speed in a crash ("delta-v V1 = 38 km/h", "Delta V
+    for the car was 25 km/h", "the EES was 35 km/h"): a crash measure names it before, within its clause.
+    Why: it says how hard the crash was, so it is the speed of no one (not "a Lancia Delta at 40 km/h")."""
+    for k in range(i - 1, max(i - 1 - _CRASH_CHANGE_REACH, -1), -1):
+        if tokens[k] in _STOPS or tokens[k] == ",":
+            return False
+        if tokens[k] in _CRASH_CHANGES or (tokens[k] == "v" and k and tokens[k - 1] == "delta"):
+            return True
+    return False
+
+
 #: Words after "<number> speed" that end its phrase ("going 40 speed only", "coming 50 speed, ...", "with
 #: 60 speed on the flyover"): the number is then a speed, not a thing of speeds ("a 40 speed limit", "a 5
 #: speed gearbox", "3 speed bumps").
@@ -449,14 +468,17 @@ def after_ego(tokens: list[str], i: int) -> bool:
 Mentions = Callable[[int], "int | None"]
 
 
-def carried_unit(tokens: list[str], i: int, imperial: bool = False, metric: bool = False) -> float:
+def carried_unit(
+    tokens: list[str], i: int, imperial: bool = False, metric: bool = False, narrated: bool = False
+) -> float:
     """The factor to m/s of a bare speed at ``i`` ("I'm at 50"): the unit of the last speed said with
     one before it, else of the first said after it, else mph on a road of a country that signs miles
     (:func:`miles_country`; ``imperial``: the text measured a length in feet or yards, see
     :func:`imperial_lengths`), else km/h (the unit of a test engineer who gives none; a motorway says
     neither: in heavy traffic 60 km/h is as likely there as 60 mph). ``metric``: the text as written was
     set where km/h is signed (:func:`metric_country` of its tokens before the reader named the ego's
-    own vehicle "the ego": "in the ute")."""
+    own vehicle "the ego": "in the ute"). ``narrated``: the text is told in the first person, whose bare
+    speeds a value only mph limits round to makes mph (:func:`miles_limit_speed`)."""
     for k in range(i - 1, 0, -1):
         if tokens[k] in V.SPEED_UNITS and tokens[k - 1].replace(".", "", 1).isdigit():
             return V.SPEED_UNITS[tokens[k]]
@@ -465,8 +487,40 @@ def carried_unit(tokens: list[str], i: int, imperial: bool = False, metric: bool
             return V.SPEED_UNITS[tokens[k]]
     if metric or metric_country(tokens):
         return 1 / 3.6
-    miles = imperial or miles_country(tokens) or free_motorway_speed(tokens, i)
+    miles = (
+        imperial
+        or miles_country(tokens)
+        or free_motorway_speed(tokens, i)
+        or (narrated and miles_limit_speed(tokens, i))
+    )
     return V.SPEED_UNITS["mph"] if miles else 1 / 3.6
+
+
+#: Bare speeds only a mile-per-hour limit rounds to (:data:`_MILES_LIMITS` above a walker's or rider's 15):
+#: where km/h is signed, limits are multiples of ten and a driver rounds to them.
+_MILES_ONLY_SPEEDS = frozenset({25, 35, 45, 55, 65, 75})
+#: Words of riding a bike or scooter: a rider's bare 25 is the km/h an e-bike or e-scooter is held to.
+_RIDING = frozenset(
+    {"ride", "rides", "riding", "rode", "cycle", "cycles", "cycling", "cycled", "scooting", "scooted", "pedalling",
+     "pedaling", "pedalled", "pedaled"}
+)  # fmt: skip
+
+
+def miles_limit_speed(tokens: list[str], i: int) -> bool:
+    """Whether the bare speed at ``i`` is one only a mile-per-hour limit rounds to ("doing about 35", "at a
+    steady 55"): a driver gives the speed they hold by their limits, and km/h limits are multiples of ten,
+    so a bare 25, 35, 45 ... is said where miles are signed. Not a rider's (a bare "riding at 25" is the
+    e-scooter's 25 km/h), not "45 speed", the km/h of Indian English, and not the middle of a range ("doing
+    30-40" is "doing about 35.0"), which no writer rounded. The caller asks only in a story told in the
+    first person: a narrator reads their own speedometer; a third party's bare number is an estimate or a
+    spec's, in km/h as a test engineer gives it."""
+    value = float(tokens[i])
+    if not tokens[i].isdigit() or int(value) not in _MILES_ONLY_SPEEDS or tokens[i + 1 : i + 2] == ["speed"]:
+        return False
+    start = i
+    while start > 0 and tokens[start - 1] not in _STOPS:
+        start -= 1
+    return not any(t in _RIDING for t in tokens[start:i])
 
 
 #: Words of slow traffic ("heavy traffic", "jammed", "rush hour", "roadworks"): at them a motorway's

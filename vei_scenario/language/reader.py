@@ -659,12 +659,16 @@ def _adverb(word: str) -> bool:
     return word.endswith("ly") or word in ("hard", "fast", "straight", "just", "then")
 
 
-def _number(tokens: list[str], i: int, imperial: bool = False, metric: bool = False) -> tuple[str, float, int] | None:
+def _number(
+    tokens: list[str], i: int, imperial: bool = False, metric: bool = False, narrated: bool = False
+) -> tuple[str, float, int] | None:
     """(kind, value SI, tokens used) of a number at ``i``: a speed, a distance, or something to skip
     (``imperial``: the text measures lengths in feet or yards, so a bare speed is in mph; ``metric``: it
-    is set where km/h is signed, so a bare speed is in km/h)."""
+    is set where km/h is signed, so a bare speed is in km/h; ``narrated``: told in the first person)."""
     value = float(tokens[i])
     nxt = tokens[i + 1] if i + 1 < len(tokens) else ""
+    if Q.crash_change_of_speed(tokens, i):  # ("delta-v V1 = 38 km/h": how hard it hit, no one's speed)
+        return "skip", value, 2 if nxt in V.SPEED_UNITS else 1
     if nxt in V.SPEED_UNITS:
         return "speed", value * V.SPEED_UNITS[nxt], 2
     if nxt in ("m", "meters", "metres", "meter", "metre"):
@@ -687,8 +691,12 @@ def _number(tokens: list[str], i: int, imperial: bool = False, metric: bool = Fa
         unit = tokens[i + 3]
         if unit in V.SPEED_UNITS:  # "from 50 to 20 km/h": the speed, then the one it goes to
             return "speed_range", (value * V.SPEED_UNITS[unit], float(tokens[i + 2]) * V.SPEED_UNITS[unit]), 4
+    if nxt == "down" and tokens[i + 2 : i + 3] == ["to"] and i + 4 < len(tokens) and Q.is_number(tokens[i + 3]):
+        unit = tokens[i + 4]
+        if unit in V.SPEED_UNITS:  # "70 down to 30 km/h": the speed it had, then the one it braked to
+            return "speed_range", (value * V.SPEED_UNITS[unit], float(tokens[i + 3]) * V.SPEED_UNITS[unit]), 5
     if Q.number_speed(tokens, i):  # ("I was going 40 speed only", "at 60 speed on the flyover")
-        return "speed", value * Q.carried_unit(tokens, i, imperial, metric), 2
+        return "speed", value * Q.carried_unit(tokens, i, imperial, metric, narrated), 2
     if Q.clock_hour(tokens, i):  # ("Today morning, around 7, ...", "at 9 last night"): an hour, no speed
         return "skip", value, 1
     if (count := counted_in_figures(tokens, i, _kind_at)) is not None:  # ("2 escooters riding side by side")
@@ -708,14 +716,14 @@ def _number(tokens: list[str], i: int, imperial: bool = False, metric: bool = Fa
     at = at or ego_speed.cruise_setting(tokens, i)  # ("Cruise set to 100")
     if at and 3 <= value <= 250:
         # "at 120", "at a steady 50": in the unit said before
-        return "speed", value * Q.carried_unit(tokens, i, imperial, metric), 1
+        return "speed", value * Q.carried_unit(tokens, i, imperial, metric, narrated), 1
     ends = nxt in ("", ".", ",", ";", "!", "?", "and", "then", "when", "while", "but")
     hedged = prev != tokens[i - 1]  # ("going well over 60 passes me": a speed, however the clause goes on)
     where = prev in _MOTION_BEFORE_SPEED and nxt in Q.WHERE_AFTER_SPEED  # ("going 40 down the high street")
     if i == 1 and tokens[0] in _HEADING_VERBS:
         return "skip", value, 1  # ("Drive 3 - please read": the heading's number, no speed)
     if (prev in _MOTION_BEFORE_SPEED or Q.after_ego(tokens, i)) and 3 <= value <= 250 and (ends or hedged or where):
-        return "speed", value * Q.carried_unit(tokens, i, imperial, metric), 1
+        return "speed", value * Q.carried_unit(tokens, i, imperial, metric, narrated), 1
     return "unknown", value, 1
 
 
@@ -774,6 +782,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
     left_hand, ring = sides.drives_on_left(tokens, text), "roundabout" in tokens
     imperial = Q.imperial_lengths(text.lower())  # ("ten feet ahead": a writer whose bare speeds are mph)
     imperial = imperial or Q.road_number_written_whole(text.lower())  # ("A46 towards Lincoln": a British road)
+    narrated = motion.told_in_the_first_person(text, tokens)  # (whose bare speeds are off their own speedometer)
 
     def ending_at(k: int) -> int | None:  # the start of the road-user mention whose last word is token k
         return next(
@@ -800,7 +809,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             continue
         if re.fullmatch(r"\d+(?:\.\d+)?", tok) and not (sides.lanes_away(tokens, i) or S.lanes_moved(tokens, i)):
             # (not "2 lanes to our left", "moved over 1 lane": a place or a move, not the road's lanes)
-            kind, value, used = _number(tokens, i, imperial, metric)
+            kind, value, used = _number(tokens, i, imperial, metric, narrated)
             words = " ".join(tokens[i : i + used])
             if kind in ("speed", "distance", "speed_range") and Q.lateral(tokens, i, used):
                 kind = "skip"  # ("a lateral velocity of 1 m/s", "1.5 m clearance"): across the road, no travel
