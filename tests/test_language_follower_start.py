@@ -53,6 +53,12 @@ def _starts(text: str) -> list[tuple[str, str | None, str | None]]:
             None,
         ),
         (
+            "Test spec: an e-bike tailgates the delivery van that pulls out of the side street on the right;"
+            " ego at 40 km/h.",
+            "junction_right",
+            None,
+        ),
+        (
             "A woman crossed from the left kerb with a little boy running behind her. I was doing 30 km/h.",
             "roadside_left",
             "cross_in_front",
@@ -67,20 +73,27 @@ def test_the_follower_starts_where_the_followed_one_does(text: str, start: str, 
 
 
 @pytest.mark.parametrize(
-    ("text", "start"),
+    ("text", "kind", "start"),
     [
         # behind the ego, not behind the one that came out
-        ("A car pulled out of a side road on the left. A van behind us hooted. I was at 30 km/h.", "behind"),
+        ("A car pulled out of a side road on the left. A van behind us hooted. I was at 30 km/h.", "van", "behind"),
+        # following the ego: behind it, whoever else comes out
+        (
+            "A car was following me and a van pulled out of a side road on the left. I was doing 30 km/h.",
+            "car",
+            "behind",
+        ),
         # a side of its own: its own start
         (
             "A car pulled out of the side road on the left, and a cyclist behind it came from the right."
             " I was doing 30 km/h.",
+            "bicycle",
             "junction_right",
         ),
     ],
 )
-def test_a_follower_placed_otherwise_keeps_its_start(text: str, start: str) -> None:
-    assert _starts(text)[1][1] == start
+def test_a_follower_placed_otherwise_keeps_its_start(text: str, kind: str, start: str) -> None:
+    assert [s for k, s, _ in _starts(text) if k == kind] == [start]
 
 
 def test_one_behind_a_car_on_the_egos_road_is_not_moved() -> None:

@@ -7,11 +7,12 @@ it"), not by the ego, so it comes from the same side road or kerb and does what 
 (comes out, crosses). Read alone it has no start of its own, or the ego's "behind" / "ahead", and a
 follower of the ego that never comes out.
 
-The one it follows is the road user named last before it (what "it", "him", "her" point back to). It
-is taken so only where:
+The one it follows is the object of its verb of following ("a cyclist followed a van out of the side
+road"), or, said behind a pronoun, the road user named last before it (what "it", "him", "her" point
+back to). It is taken so only where:
 
-- the follower is said behind or after another road user, with a pronoun ("behind it", "follows
-  her"): "behind us" places it behind the ego, and that reading stays;
+- the follower is said to follow another road user, or to be behind one with a pronoun ("behind it",
+  "follows her"): "behind us" or "following me" places it behind the ego, and that reading stays;
 - nothing else places the follower (no side, lane, kerb or arm of its own): a side said of it is its
   own start;
 - the one followed comes onto the ego's road from a side road or a kerb (its start is a junction arm
@@ -37,6 +38,7 @@ class _Said(Protocol):
     """What the reader gathered of a road user, as far as this module reads it."""
 
     said: set
+    object_of: object
     side: str | None
     lane_side: str | None
     kerb: bool
@@ -55,14 +57,26 @@ def _only_follows(spec: ActorSpec) -> bool:
     return all(b[0] in _FOLLOWING for b in spec.behaviours)
 
 
+def _the_followed(actors: list[_Said], k: int) -> int | None:
+    """The index of the road user road user ``k`` is said to follow: the object of its verb of following
+    ("a cyclist followed a van out"), else, said behind a pronoun ("right behind it", "follows her"),
+    the one named last before it. None where it follows no other road user (the ego, or none)."""
+    a = actors[k]
+    if "follows_other" in a.said:
+        return next((j for j, x in enumerate(actors) if j != k and x.object_of is a), None)
+    return k - 1 if "behind_other" in a.said and k > 0 else None
+
+
 def starts_with_the_followed(actors: list[_Said], specs: list[ActorSpec]) -> None:
     """Give each road user said right behind the one named before it (and placed by nothing else) that
     one's start and its act of coming on, where that one comes onto the ego's road from a side road or
     a kerb. ``actors`` are the reader's road users, ``specs`` their readings, in the same order."""
-    for k in range(1, min(len(actors), len(specs))):
-        a, spec, leader = actors[k], specs[k], specs[k - 1]
-        if "behind_other" not in a.said or _placed_by_itself(a) or not _only_follows(spec):
+    for k in range(min(len(actors), len(specs))):
+        a, spec = actors[k], specs[k]
+        j = _the_followed(actors, k)
+        if j is None or _placed_by_itself(a) or not _only_follows(spec):
             continue
+        leader = specs[j]
         if leader.relation not in _FROM_A_SIDE or not leader.behaviours:
             continue
         act = leader.behaviours[0]

@@ -3737,6 +3737,8 @@ def _apply(m, who, r, link, added) -> None:
             a.went_by = a.went_by or (name == "overtake" and _going_by(m.words) and m.next_ in _NO_OBJECT)
             if name == "follow_vehicle" and m.next_ in ("it", "him", "her", "them"):
                 a.said.add("behind_other")  # ("a cyclist followed it out": behind another road user)
+            elif name == "follow_vehicle":
+                a.said.add("follows_other")  # (whom: the road user its verb takes as object, if any)
             a.behaviours.append((name, dict(cfg, _words=said, _end=m.end), None, link if not added else "sequence"))
             added.append((a, len(a.behaviours) - 1))
         elif m.slot == "turn":
