@@ -39,6 +39,7 @@ from vei_scenario.language import (
     ego_speed,
     ego_turner,
     experiencer,
+    follower_start,
     from_cover,
     generic_ego,
     junctions,
@@ -2696,6 +2697,7 @@ def _read(text: str) -> Reading:
                 spec.facing = "against"  # (a walker or rider along the road, ahead: coming the other way)
             elif other.relation in ("oncoming", "junction_opposite"):
                 spec.relation = other.relation
+    follower_start.starts_with_the_followed(actors, r.actors)  # ("... and a scooter came out right behind it")
     if ego_follows and actors and r.ego_speed_mps is None and actors[0].speed_mps:
         r.ego_speed_mps = actors[0].speed_mps  # "Following a truck at 60 km/h": both at that speed
     ego_named = ego_double.names_the_ego(text)  # ("... ahead of the ego": no other vehicle is taken for it)
@@ -3751,6 +3753,10 @@ def _apply(m, who, r, link, added) -> None:
                 continue  # ("brakes ... and stops": said twice over)
             said = m.words if not _adverb(m.next_) else f"{m.words} {m.next_}"  # ("brakes moderately")
             a.went_by = a.went_by or (name == "overtake" and _going_by(m.words) and m.next_ in _NO_OBJECT)
+            if name == "follow_vehicle" and m.next_ in ("it", "him", "her", "them"):
+                a.said.add("behind_other")  # ("a cyclist followed it out": behind another road user)
+            elif name == "follow_vehicle":
+                a.said.add("follows_other")  # (whom: the road user its verb takes as object, if any)
             a.behaviours.append(
                 (name, dict(cfg, _words=said, _end=m.end, _start=m.start), None, link if not added else "sequence")
             )
@@ -3786,6 +3792,8 @@ def _apply(m, who, r, link, added) -> None:
             a.end_gap = sides.gap_where_it_ends(a.behaviours)
         elif m.slot == "relation" and m.value in ("ahead", "behind") and m.next_ in ("it", "him", "her", "them"):
             a.said.add("near_other")  # "a car behind it swerves": behind another road user, not the ego
+            if m.value == "behind":
+                a.said.add("behind_other")  # (where it starts is where that one does: follower_start)
         elif m.slot == "relation" and sides.lane_it_passes_in(m.value, m.words, m.next_, a.said):
             a.said.add("passes_oncoming")  # ("a car from behind overtakes us in the oncoming lane")
         elif m.slot == "relation" and sides.waits_elsewhere(m.value, m.prev, a.lane_side):
