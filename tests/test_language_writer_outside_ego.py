@@ -78,6 +78,15 @@ def test_a_writer_in_the_scene_keeps_the_new_vehicle_a_road_user(text, expected)
     assert kinds(text) == expected
 
 
+def test_a_text_that_says_you_has_named_the_ego():
+    """The reader reads "your" as its narrator's word; the text as written addressed its reader."""
+    text = (
+        "A car doing 30 mph braked for a cyclist crossing ahead and a van behind it ran into it. Explain your answer."
+    )
+    assert "car" in kinds(text)
+    assert ego_double.addressed(text) and not ego_double.addressed("We act for the family of the young rider.")
+
+
 def test_the_writer_s_own_words_name_no_ego_only_when_they_are_outside():
     tokens = "we are told a taxi doing 30 was hit".split()
     assert not ego_double.ego_unnamed(tokens, [])

@@ -112,12 +112,22 @@ def ego_unnamed(tokens: list[str], clauses: list, writer_outside: bool = False) 
     return not ego_phrase(clauses, _WRITER if writer_outside else frozenset()) and not (naming & set(tokens))
 
 
+#: "you" in the text as written (the reader's own tokens may read it as the narrator's "I").
+_YOU = re.compile(r"\byou(?:r|rs|rself|rselves)?\b", re.IGNORECASE)
+
+
+def addressed(text: str) -> bool:
+    """Whether ``text`` as written says "you" to its reader ("Explain your answer", "you are doing 30"):
+    the reader addressed is the ego, whom a writer outside the scene does not leave unnamed."""
+    return _YOU.search(text) is not None
+
+
 def ego_phrase(clauses: list, but: frozenset[str] = frozenset()) -> bool:
     """Whether the reader's ``clauses`` name the ego by a phrase ("the host vehicle", "the VUT"): a
     vehicle brought in as new beside it is someone else. A mention said only in words of ``but`` (a
     writer outside the scene: "we") does not count."""
     return any(
-        m.slot == "actor" and m.value == "ego" and not set(m.words.split()) <= but
+        m.slot == "actor" and m.value == "ego" and not (but and set(m.words.split()) <= but)
         for _, mentions in clauses
         for m in mentions
     )
