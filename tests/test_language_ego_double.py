@@ -258,7 +258,7 @@ def test_a_new_vehicle_stays_a_road_user_where_the_ego_is_named(text, kinds):
 def test_without_the_unnamed_ego_a_report_keeps_its_vehicle(monkeypatch):
     """The first report needs the reading of a text that names no ego ("a ..." would set the vehicle
     apart); the others the reader frames as the ego before (a speed of its own, struck by)."""
-    monkeypatch.setattr(ego_double, "ego_unnamed", lambda tokens, clauses: False)
+    monkeypatch.setattr(ego_double, "ego_unnamed", lambda tokens, clauses, writer_outside=False: False)
     assert [len(read(text).actors) for text, _, _ in REPORTS] == [2, 1, 1, 1, 1]
 
 

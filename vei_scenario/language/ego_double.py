@@ -65,6 +65,8 @@ _IN_THE_PATH = frozenset(
 NEW = frozenset(("a", "an", "another", "some", "one"))
 #: Words that name the ego in the reader's tokens: the narrator, the reader addressed, the ego framed.
 _NAMING_THE_EGO = frozenset(("i", "we", "me", "us", "my", "our", "you", "your", "yourself", "ego"))
+#: The writer's own words among them: they name the ego only where the writer is in the scene.
+_WRITER = frozenset(("i", "we", "me", "us", "my", "our"))
 #: The kinds the ego may be (it drives or rides: never on foot).
 _EGO_KINDS = frozenset(("car", "van", "truck", "bicycle", "e-scooter"))
 #: The nouns for whoever is at a wheel, said of a person and no vehicle (a closed class).
@@ -98,18 +100,37 @@ class _Said(Protocol):
     said: set
 
 
-def ego_unnamed(tokens: list[str], clauses: list) -> bool:
+def ego_unnamed(tokens: list[str], clauses: list, writer_outside: bool = False) -> bool:
     """Whether the reader's ``tokens`` and ``clauses`` name no ego at all: no narrator in the scene, no
     "you", no ego phrase ("the host vehicle", "the VUT") and none framed as "the ego". A third-person
     report then brings its own vehicle in as new ("a resident driving home at 30 mph was hit when
-    ..."), and "new" no longer sets a vehicle apart from the ego."""
-    return not ego_phrase(clauses) and not (_NAMING_THE_EGO & set(tokens))
+    ..."), and "new" no longer sets a vehicle apart from the ego. ``writer_outside``: the text's
+    first-person writer is in no vehicle of their own (:mod:`vei_scenario.language.narrator_outside`:
+    "we the undersigned", "my grandson was hit by"): their "I" and "we" name no one in the scene, and
+    the story is told as a report with no narrator is ("you" and an ego phrase still name the ego)."""
+    naming = _NAMING_THE_EGO - _WRITER if writer_outside else _NAMING_THE_EGO
+    return not ego_phrase(clauses, _WRITER if writer_outside else frozenset()) and not (naming & set(tokens))
 
 
-def ego_phrase(clauses: list) -> bool:
+#: "you" in the text as written (the reader's own tokens may read it as the narrator's "I").
+_YOU = re.compile(r"\byou(?:r|rs|rself|rselves)?\b", re.IGNORECASE)
+
+
+def addressed(text: str) -> bool:
+    """Whether ``text`` as written says "you" to its reader ("Explain your answer", "you are doing 30"):
+    the reader addressed is the ego, whom a writer outside the scene does not leave unnamed."""
+    return _YOU.search(text) is not None
+
+
+def ego_phrase(clauses: list, but: frozenset[str] = frozenset()) -> bool:
     """Whether the reader's ``clauses`` name the ego by a phrase ("the host vehicle", "the VUT"): a
-    vehicle brought in as new beside it is someone else."""
-    return any(m.slot == "actor" and m.value == "ego" for _, mentions in clauses for m in mentions)
+    vehicle brought in as new beside it is someone else. A mention said only in words of ``but`` (a
+    writer outside the scene: "we") does not count."""
+    return any(
+        m.slot == "actor" and m.value == "ego" and not (but and set(m.words.split()) <= but)
+        for _, mentions in clauses
+        for m in mentions
+    )
 
 
 def perceived(verb: str) -> bool:

@@ -15,7 +15,7 @@ may be at a wheel, or on foot beside the one it happened to, when
   over"), or have a speed of their own ("I was doing 30", "we were at 40 km/h");
 - an act meets them ("in front of me", "came at us", "behind me"): they are in the scene, at a wheel
   or on foot beside the one it happened to;
-- they are placed on the road, behind, beside or ahead of someone or in its traffic ("I was behind my
+- they are placed on the road, behind, beside or ahead of someone, in its traffic or at its lights ("I was behind my
   neighbour's car", "we were stuck in traffic behind a bus").
 """
 
@@ -52,9 +52,11 @@ AT_THE_WHEEL = frozenset(
 AT_A_SPEED = frozenset({"do", "go", "travel", "cruise"})
 #: First-person words of one an act meets ("in front of me", "towards us").
 MET = frozenset({"me", "us", "myself", "ourselves"})
-#: Words that place their subject on the road beside a road user or in its traffic ("I was behind my
-#: neighbour's car", "we were stuck in traffic behind a bus", "we sat in the queue").
-ON_THE_ROAD = frozenset({"behind", "beside", "alongside", "ahead", "next", "traffic", "queue", "queueing", "queuing"})
+#: Words that place their subject on the road beside a road user, in its traffic or at its signals ("I was
+#: behind my neighbour's car", "we were stuck in traffic behind a bus", "we were waiting at the lights").
+ON_THE_ROAD = frozenset(
+    {"behind", "beside", "alongside", "ahead", "next", "traffic", "queue", "queueing", "queuing", "lights", "signals"}
+)
 #: What ends the clause a writer is the subject of, for the words that place them.
 _CLAUSE_END = frozenset({".", ",", ";", ":", "!", "?", "when", "while", "and", "but", "as", "until"})
 #: Possessives of the writer.
