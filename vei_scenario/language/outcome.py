@@ -698,12 +698,36 @@ def _denied_after(words: list[str], i: int) -> str | None:
     """A contact noun at ``i`` as the subject of a passive denying verb after it in its clause
     ("collision avoided", "a crash was narrowly averted"): "hedged" with a hedge, else "denied"."""
     after = words[i + 1 : i + 5]
+    if _never_occurred(words[i + 1 : i + 6]):
+        return "denied"  # ("a collision did not take place", "the crash never happened")
     for k, x in enumerate(after):
         if x.endswith("ed") and _lemmas(x) & _DENYING_VERBS:
             return "hedged" if set(after[:k]) & (HEDGES | {"just"}) else "denied"
         if x not in ("was", "is", "were", "been", "being", "be", "has", "had", "only", "just") and x not in HEDGES:
             return None
     return None
+
+
+#: Verbs (lemmas) of an event's happening: a contact noun as their denied subject did not happen.
+_OCCURRING = frozenset(("happen", "occur", "take", "result", "ensue", "materialise", "materialize", "eventuate"))
+#: Auxiliaries between an event's noun and the negator of its verb ("did not", "has not", "had never").
+_AUXILIARIES = frozenset(("did", "does", "do", "has", "have", "had", "was", "were", "is", "thankfully", "luckily"))
+
+
+def _never_occurred(after: list[str]) -> bool:
+    """Whether the words ``after`` a contact noun deny that it happened: auxiliaries, a negator, then
+    a verb of happening ("did not take place", "didn't happen", "has not occurred", "never
+    happened", "never came" at its clause's end); not "did not stop him", whose verb says what the
+    contact did."""
+    k = 0
+    while k < len(after) and after[k] in _AUXILIARIES:
+        k += 1
+    if k >= len(after) or after[k] not in ("not", "never"):
+        return False
+    verb = after[k + 1 : k + 2]
+    if verb and _lemmas(verb[0]) & {"come"}:
+        return len(after) == k + 2  # ("the impact never came"; not "never came to court")
+    return bool(verb) and bool(_lemmas(verb[0]) & _OCCURRING) and (verb[0] != "take" or "place" in after)
 
 
 def _miss(words: list[str], i: int) -> bool:
