@@ -1090,3 +1090,21 @@ NEVER_OCCURRED = [
 @pytest.mark.parametrize(("text", "intent"), NEVER_OCCURRED)
 def test_a_contact_that_never_occurred(text: str, intent: str) -> None:
     assert _intent(text) == intent
+
+
+# a passive of a denying verb said of trouble, or of a pronoun after the ego's escape: what was coming
+# did not happen; near-miss negatives: a route avoided, and no escape said before the pronoun
+AVERTED = [
+    ("A moped came past the bus. I stepped on the brake and it was avoided.", "near_miss"),
+    ("Lorry pulled out, I braked and thankfully it was avoided.", "near_miss"),
+    ("The rider swerved in front; disaster was averted by my quick braking.", "near_miss"),
+    ("A child ran out, I braked and tragedy was avoided.", "near_miss"),
+    ("I slowed down and the danger was avoided.", "near_miss"),
+    ("The motorway was closed so it was avoided.", None),
+    ("A cyclist was ahead of me; it was avoided.", None),
+]
+
+
+@pytest.mark.parametrize(("text", "intent"), AVERTED)
+def test_trouble_averted(text: str, intent: str | None) -> None:
+    assert _intent(text) == intent

@@ -730,6 +730,31 @@ def _never_occurred(after: list[str]) -> bool:
     return bool(verb) and bool(_lemmas(verb[0]) & _OCCURRING) and (verb[0] != "take" or "place" in after)
 
 
+#: Pronouns that stand for what a sentence told was coming ("I braked and it was avoided").
+_THAT_EVENT = frozenset(("it", "this", "that", "which"))
+
+
+def _averted(words: list[str], i: int, before: list[str]) -> bool:
+    """A passive of a denying verb at ``i`` whose subject is trouble or a pronoun for it ("disaster
+    was averted", "the danger was avoided", "I stepped on the brake and it was avoided"): what was
+    coming did not happen. A pronoun stands for a contact only after an escape in its sentence
+    (``before``: its words up to ``i``); "the motorway was closed so it was avoided" is a route."""
+    if not (words[i].endswith("ed") and _lemmas(words[i]) & _DENYING_VERBS):
+        return False
+    j = i - 1
+    while j >= 0 and (words[j] in HEDGES or words[j] in ("just", "only", "luckily", "thankfully", "fortunately")):
+        j -= 1
+    if j < 1 or words[j] not in ("was", "were", "been", "is", "got", "be"):
+        return False
+    k = j - 1
+    while k >= 0 and words[k] in ("has", "had", "have", "could", "would"):
+        k -= 1
+    subject = words[k] if k >= 0 else ""
+    if subject in _TROUBLE | _DISASTERS | _HARM_NOUNS:
+        return True
+    return subject in _THAT_EVENT and any(_lemmas(x) & _ESCAPING and _is_verb(x) for x in before)
+
+
 def _miss(words: list[str], i: int) -> bool:
     """A verb of missing whose object is someone ("missed him", "missed each other", "miss the cyclist")."""
     if "miss" not in _lemmas(words[i]) or i > 0 and words[i - 1] == "near":
@@ -1732,6 +1757,9 @@ def outcome_cues(said: str) -> list[Cue]:
                 continue
             if w in _UNHURT and _person_subject(words, i):
                 add("denied")  # ("the kid was fine": unhurt, however close it was)
+                continue
+            if _averted(words, i, sentence[: len(sentence) - len(words) + i]):
+                add("hedged" if _scoped(words, i, HEDGES, 3) else "denied")  # ("I braked and it was avoided")
                 continue
             if _relief(words, i):
                 add("lucky")
